@@ -1,0 +1,28 @@
+// Everything a command needs before it starts: prm -> Model -> M, K ->
+// per-building modes -> Rayleigh C. Built once; read-only afterwards.
+#ifndef poundfe_analysis_analysis_h
+#define poundfe_analysis_analysis_h
+
+#include <poundfe/analysis/modal.h>
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/model/model.h>
+#include <poundfe/model/parameters.h>
+
+#include <vector>
+
+namespace poundfe
+{
+  struct Analysis
+  {
+    InputParameters    input;
+    Model              model;
+    LinearSystem       system;
+    std::vector<Modes> building_modes; // for Rayleigh damping and reports
+    Modes              modes;          // whole model
+  };
+
+  /// Throws InputError (bad input) or NumericalError (e.g. a mechanism).
+  Analysis prepare_analysis(const InputParameters &input);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,52 @@
+// The commands: time history (`run`), `modal`, `ground-motion`.
+#ifndef poundfe_analysis_run_h
+#define poundfe_analysis_run_h
+
+#include <poundfe/analysis/analysis.h>
+#include <poundfe/excitation/excitation.h>
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct RunOptions
+  {
+    std::string output_directory; // empty: no files at all (benchmarks, tests)
+    std::string linear_solver;    // empty: the input's choice
+    bool        csv   = true;
+    bool        vtu   = true;
+    bool        plots = true;
+  };
+
+  struct RunResult
+  {
+    bool                completed = false;
+    std::string         message;
+    unsigned long       steps     = 0;
+    double              end_time  = 0;
+    double              wall_time = 0; // s, stepping loop with outputs
+    std::vector<double> peak_drift_ratio;   // FloorResponse layout
+    std::vector<double> peak_acceleration;
+    std::vector<double> peak_displacement;
+    std::vector<std::string> files;
+  };
+
+  /// Linear time history with Newmark; writes the outputs of RunOptions.
+  /// A NumericalError during stepping is caught: the results so far are
+  /// written and `completed` is false.
+  RunResult run_time_history(const Analysis &analysis, const Excitation &excitation,
+                             const RunOptions &options);
+
+  /// The `run` command: returns the exit status (0, or 2 on numerical failure).
+  int run_command(const Analysis &analysis, const std::string &output_directory);
+  /// The `modal` command.
+  int modal_command(const Analysis &analysis, const std::string &output_directory);
+  /// The `ground-motion` command.
+  int ground_motion_command(const InputParameters &input, const std::string &output_directory);
+
+  /// The excitation the input describes.
+  Excitation make_excitation(const Analysis &analysis);
+} // namespace poundfe
+
+#endif

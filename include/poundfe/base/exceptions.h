@@ -1,0 +1,50 @@
+// Errors that reach the user. Bad input is an InputError (exit status 1), a
+// numerical breakdown during a run is a NumericalError (exit status 2).
+#ifndef poundfe_base_exceptions_h
+#define poundfe_base_exceptions_h
+
+#include <stdexcept>
+#include <string>
+
+namespace poundfe
+{
+  /// Bad input: names the file, the line where known, and the parameter.
+  class InputError : public std::runtime_error
+  {
+  public:
+    InputError(std::string file,
+               int         line,
+               std::string parameter,
+               std::string problem);
+
+    const std::string &file() const { return file_name; }
+    int line() const { return line_number; }
+    const std::string &parameter() const { return parameter_name; }
+    const std::string &problem() const { return problem_text; }
+
+  private:
+    std::string file_name;
+    int         line_number;
+    std::string parameter_name;
+    std::string problem_text;
+  };
+
+  /// A solver or integrator could not continue (e.g. singular matrix).
+  class NumericalError : public std::runtime_error
+  {
+  public:
+    explicit NumericalError(const std::string &what)
+      : std::runtime_error(what)
+    {}
+  };
+} // namespace poundfe
+
+/// Throw an InputError unless the condition holds.
+#define POUNDFE_INPUT_CHECK(cond, file, line, parameter, problem)        \
+  do                                                                      \
+    {                                                                     \
+      if (!(cond))                                                        \
+        throw ::poundfe::InputError((file), (line), (parameter), (problem)); \
+  } while (false)
+
+#endif

@@ -1,0 +1,49 @@
+// Two-node Euler-Bernoulli beam-column element in the plane, DOFs
+// (ux, uy, rz) at each end.
+//   Local stiffness: axial EA/L, bending 12EI/L^3, 6EI/L^2, 4EI/L, 2EI/L.
+//   Consistent mass: axial mL/6 [2 1; 1 2], bending mL/420 [156 22L 54 -13L; ...].
+//   Lumped mass: mL/2 on each end's translations, none on rotations.
+//   Global matrices: T^T k T with T the rotation by the member angle.
+// Source: Przemieniecki, Theory of Matrix Structural Analysis (1968), ch. 5 & 11;
+// Chopra, Dynamics of Structures, 4th ed., §16.
+#ifndef poundfe_elements_frame_element_h
+#define poundfe_elements_frame_element_h
+
+#include <poundfe/model/model.h>
+
+#include <Eigen/Core>
+
+namespace poundfe
+{
+  using Matrix6 = Eigen::Matrix<double, 6, 6>;
+  using Vector6 = Eigen::Matrix<double, 6, 1>;
+
+  class FrameElement
+  {
+  public:
+    FrameElement(const Point2 &start, const Point2 &end, const Section &section);
+
+    double length() const { return element_length; }
+
+    /// Stiffness in local axes (x along the member).
+    Matrix6 local_stiffness() const;
+    /// Global stiffness T^T k T.
+    Matrix6 stiffness() const;
+    /// Global mass matrix (translational mass is invariant under rotation
+    /// for the lumped form; the consistent form is rotated).
+    Matrix6 mass(MassMatrixType type) const;
+    /// Member end forces in local axes (N1, V1, M1, N2, V2, M2) from global
+    /// end displacements.
+    Vector6 local_end_forces(const Vector6 &global_displacements) const;
+    /// Global-to-local rotation T.
+    Matrix6 rotation() const;
+
+  private:
+    double  element_length;
+    double  cosine;
+    double  sine;
+    Section section;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,51 @@
+// The right-hand side p(t) = -M r a_g(t) + sum of nodal forces, on the
+// equations. Built once from the input; evaluated per step without allocation.
+#ifndef poundfe_excitation_excitation_h
+#define poundfe_excitation_excitation_h
+
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/excitation/ground_motion.h>
+#include <poundfe/model/model.h>
+#include <poundfe/model/parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct NodalForce
+  {
+    unsigned int        equation  = 0;
+    std::string         label;
+    bool                harmonic  = true;
+    double              amplitude = 0, omega = 0, phase = 0; // harmonic
+    std::vector<double> times, values; // tabulated
+
+    double value(double t) const;
+  };
+
+  class Excitation
+  {
+  public:
+    Excitation(const LinearSystem &system, GroundMotion ground, std::vector<NodalForce> forces);
+
+    /// p(t) into `load` (sized n_equations).
+    void load(double t, Vector &load) const;
+    double ground_acceleration(double t) const { return ground.value(t); }
+    const GroundMotion &ground_motion() const { return ground; }
+    const std::vector<NodalForce> &nodal_forces() const { return forces; }
+
+  private:
+    GroundMotion            ground;
+    std::vector<NodalForce> forces;
+    Vector                  mass_times_influence;
+  };
+
+  /// The ground motion the input asks for (generated, recorded or none).
+  GroundMotion make_ground_motion(const InputParameters &input);
+
+  /// Parse the 'Nodal forces' entries against the model. Throws InputError.
+  std::vector<NodalForce> make_nodal_forces(const InputParameters &input, const Model &model);
+} // namespace poundfe
+
+#endif

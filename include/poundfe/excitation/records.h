@@ -1,0 +1,36 @@
+// Recorded accelerograms: PEER .AT2 (NGA "NPTS=..., DT=..." header line and
+// the NGA-West2 "n dt NPTS, DT" style; any number of header lines before it;
+// values in g) and plain text with one (acceleration) or two (time,
+// acceleration) columns.
+#ifndef poundfe_excitation_records_h
+#define poundfe_excitation_records_h
+
+#include <poundfe/excitation/ground_motion.h>
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct RecordFormat
+  {
+    std::string format    = "auto"; // auto | at2 | text
+    std::string units     = "g";    // g | m/s^2 (AT2 files are always in g)
+    double      time_step = 0;      // for one-column text
+  };
+
+  /// Rows of one or two numeric columns (',', ';' or blanks between; '#'
+  /// comments; a leading header row of names is skipped).
+  struct ColumnTable
+  {
+    std::size_t         columns = 0;
+    std::vector<double> times; // first column when there are two
+    std::vector<double> values;
+  };
+  ColumnTable read_columns(const std::string &file);
+
+  /// Read a record; throws InputError naming the file and line.
+  GroundMotion read_record(const std::string &file, const RecordFormat &format);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,131 @@
+// Everything a parameter file (.prm or .json) can say, as plain data.
+// Parsing uses deal.II's ParameterHandler, kept out of this header.
+#ifndef poundfe_model_parameters_h
+#define poundfe_model_parameters_h
+
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct BuildingParameters
+  {
+    std::string name = "";
+    std::string type = "frame"; // frame | mesh | shear
+
+    // Generated frames and shear buildings.
+    unsigned int        n_storeys = 1;
+    unsigned int        n_bays    = 1;
+    std::vector<double> storey_heights{3.0};
+    std::vector<double> bay_widths{6.0};
+    std::vector<double> column_youngs_modulus{3.0e10};
+    std::vector<double> column_area{0.16};
+    std::vector<double> column_second_moment{2.133e-3};
+    std::vector<double> beam_youngs_modulus{3.0e10};
+    std::vector<double> beam_area{0.12};
+    std::vector<double> beam_second_moment{1.6e-3};
+    std::vector<double> column_mass_per_length{0.0};
+    std::vector<double> beam_mass_per_length{0.0};
+    std::vector<double> floor_masses{20000.0};
+    std::string         base_fixity         = "fixed"; // fixed | pinned
+    unsigned int        elements_per_member = 1;
+
+    // Shear buildings.
+    std::vector<double> storey_stiffnesses{5.0e6};
+    std::vector<double> storey_damping{0.0};
+    double              drawing_width = 0.0;
+
+    // Frames from a Gmsh mesh.
+    std::string               mesh_file = "";
+    std::vector<unsigned int> group_ids{1};
+    std::vector<double>       group_youngs_modulus{3.0e10};
+    std::vector<double>       group_area{0.16};
+    std::vector<double>       group_second_moment{2.133e-3};
+    std::vector<double>       group_mass_per_length{0.0};
+
+    // Rayleigh damping.
+    std::string               damping_type  = "modes"; // none|modes|coefficients
+    double                    damping_ratio = 0.05;
+    std::vector<unsigned int> damping_modes{1, 2};
+    double                    rayleigh_a0 = 0.0;
+    double                    rayleigh_a1 = 0.0;
+  };
+
+  struct GroundMotionParameters
+  {
+    std::string type         = "kanai-tajimi"; // kanai-tajimi|clough-penzien|record|none
+    double      scale_factor = 1.0;
+
+    // Recorded motions.
+    std::string record_file        = "";
+    std::string record_format      = "auto"; // auto | at2 | text
+    std::string record_units       = "g";    // g | m/s^2
+    double      record_time_step   = 0.0;
+    double      record_target_pga  = 0.0; // in g; 0 keeps the record's PGA
+
+    // Stochastic motions.
+    std::string  soil              = "medium"; // firm|medium|soft|custom
+    double       omega_g           = 10.0;
+    double       zeta_g            = 0.4;
+    double       omega_f           = 1.0;
+    double       zeta_f            = 0.6;
+    double       spectral_intensity = 0.0; // S0; 0 = from the target PGA
+    double       target_pga        = 0.3;  // in g
+    double       peak_factor       = 3.0;
+    double       duration          = 20.0;
+    double       sample_interval   = 0.0; // 0 = analysis time step
+    unsigned int seed              = 1;
+    unsigned int realization       = 0;
+
+    std::string envelope = "jennings"; // none|jennings|saragoni-hart|shinozuka-sato
+    double      jennings_rise_end     = 2.0;
+    double      jennings_plateau_end  = 10.0;
+    double      jennings_decay        = 0.3;
+    double      saragoni_b            = 2.0;
+    double      saragoni_c            = 0.5;
+    double      shinozuka_alpha       = 0.2;
+    double      shinozuka_beta        = 0.6;
+  };
+
+  struct InputParameters
+  {
+    std::string file;
+    std::string directory; // relative input paths are resolved against it
+
+    std::string                     mass_matrix = "lumped";
+    std::vector<double>             separations{0.05};
+    std::vector<BuildingParameters> buildings;
+    GroundMotionParameters          ground_motion;
+    std::vector<std::string>        harmonic_forces;
+    std::vector<std::string>        tabulated_forces;
+
+    double      time_step     = 0.001;
+    double      end_time      = 0.0; // 0 = length of the ground motion
+    double      newmark_gamma = 0.5;
+    double      newmark_beta  = 0.25;
+    std::string linear_solver = "eigen-ldlt";
+
+    std::string  output_directory = "results";
+    double       output_interval  = 0.0; // 0 = every step
+    double       vtu_interval     = 0.1; // 0 = no VTU
+    bool         plots            = true;
+    unsigned int n_modes          = 6;
+
+    /// Line of "set <path>" in the file (0 when unknown, e.g. JSON input).
+    int line_of(const std::string &path) const;
+    /// Path of an input file named in the parameter file.
+    std::string resolve(const std::string &relative) const;
+
+    std::map<std::string, int> lines;
+  };
+
+  /// Read and check a .prm or .json file. Throws InputError.
+  InputParameters read_parameters(const std::string &file);
+
+  /// Print every parameter with its documentation and default.
+  void print_parameters(std::ostream &out);
+} // namespace poundfe
+
+#endif

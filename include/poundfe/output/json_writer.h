@@ -1,0 +1,38 @@
+// A small JSON builder for summary.json (objects, arrays, numbers, strings).
+#ifndef poundfe_output_json_writer_h
+#define poundfe_output_json_writer_h
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class JsonWriter
+  {
+  public:
+    JsonWriter &begin_object(const std::string &key = "");
+    JsonWriter &end_object();
+    JsonWriter &begin_array(const std::string &key = "");
+    JsonWriter &end_array();
+    JsonWriter &value(const std::string &key, double x);
+    JsonWriter &value(const std::string &key, long x);
+    JsonWriter &value(const std::string &key, unsigned long x) { return value(key, long(x)); }
+    JsonWriter &value(const std::string &key, int x) { return value(key, long(x)); }
+    JsonWriter &value(const std::string &key, unsigned int x) { return value(key, long(x)); }
+    JsonWriter &value(const std::string &key, const std::string &x);
+    JsonWriter &value(const std::string &key, const char *x) { return value(key, std::string(x)); }
+    JsonWriter &value(const std::string &key, bool x);
+    JsonWriter &value(const std::string &key, const std::vector<double> &x);
+
+    std::string str() const { return text + "\n"; }
+
+  private:
+    void        prefix(const std::string &key);
+    std::string text;
+    std::vector<bool> first{true};
+  };
+
+  std::string json_escape(const std::string &s);
+} // namespace poundfe
+
+#endif

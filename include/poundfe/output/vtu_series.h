@@ -1,0 +1,40 @@
+// ParaView output: the model as a deal.II Triangulation<1,2> (members and
+// storey links are line cells, nodes are vertices) with FESystem(FE_Q(1), 3)
+// for (ux, uy, rz); DataOut<1,2> writes one .vtu per frame and a .pvd index.
+// Cell data: member end forces in local axes (N, V, M at both ends) or the
+// storey shear of a link. deal.II stays inside the implementation.
+#ifndef poundfe_output_vtu_series_h
+#define poundfe_output_vtu_series_h
+
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/model/model.h>
+
+#include <memory>
+#include <string>
+
+namespace poundfe
+{
+  class VtuSeries
+  {
+  public:
+    /// Frames go to <directory>/<name>/<name>-NNNNN.vtu, the index to
+    /// <directory>/<name>.pvd.
+    VtuSeries(const Model &model, const std::string &directory, const std::string &name);
+    ~VtuSeries();
+
+    /// One frame; `u` holds the equations' values; `label` is the time or
+    /// the mode number shown by ParaView.
+    void write(double label, const Vector &u, bool with_forces = true);
+    /// Write the .pvd index (atomically).
+    void finish();
+
+    unsigned int n_dofs() const;
+    unsigned int n_frames() const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl;
+  };
+} // namespace poundfe
+
+#endif

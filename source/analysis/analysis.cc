@@ -1,0 +1,55 @@
+#include <poundfe/analysis/analysis.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/model/model_builder.h>
+
+namespace poundfe
+{
+  Analysis
+  prepare_analysis(const InputParameters &input)
+  {
+    Analysis analysis;
+    analysis.input  = input;
+    analysis.model  = build_model(input);
+    analysis.system = assemble_mass_and_stiffness(analysis.model);
+    const Model  &model  = analysis.model;
+    LinearSystem &system = analysis.system;
+
+    std::vector<std::array<double, 2>> coefficients;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const Building &building = model.buildings[b];
+        const auto      range    = model.equation_range(b);
+        const unsigned  wanted =
+          std::max({input.n_modes, building.damping.first_mode, building.damping.second_mode});
+        analysis.building_modes.push_back(
+          compute_modes(block(system.mass, range), block(system.stiffness, range),
+                        system.influence.segment(range[0], range[1] - range[0]), wanted));
+        const Modes           &modes = analysis.building_modes.back();
+        const RayleighDamping &d     = building.damping;
+        switch (d.kind)
+          {
+            case RayleighDamping::Kind::none:
+              coefficients.push_back({{0, 0}});
+              break;
+            case RayleighDamping::Kind::coefficients:
+              coefficients.push_back({{d.a0, d.a1}});
+              break;
+            case RayleighDamping::Kind::modes:
+              {
+                const std::string path =
+                  "Building " + std::to_string(b + 1) + "/Damping/Modes";
+                if (std::max(d.first_mode, d.second_mode) > modes.n_modes())
+                  throw InputError(input.file, input.line_of(path), path,
+                                   "building '" + building.name + "' has only " +
+                                     std::to_string(modes.n_modes()) + " modes");
+                coefficients.push_back(rayleigh_coefficients(
+                  d.damping_ratio, modes.omega[d.first_mode - 1], modes.omega[d.second_mode - 1]));
+                break;
+              }
+          }
+      }
+    assemble_damping(model, coefficients, system);
+    analysis.modes = compute_modes(system.mass, system.stiffness, system.influence, input.n_modes);
+    return analysis;
+  }
+} // namespace poundfe

@@ -1,0 +1,69 @@
+#include <poundfe/assembly/linear_solver.h>
+#include <poundfe/base/exceptions.h>
+
+#include <Eigen/SparseCholesky>
+
+namespace poundfe
+{
+  namespace
+  {
+    class EigenLdltSolver : public LinearSolver
+    {
+    public:
+      void
+      analyze(const SparseMatrix &matrix) override
+      {
+        ldlt.analyzePattern(matrix);
+      }
+      void
+      factorize(const SparseMatrix &matrix) override
+      {
+        ldlt.factorize(matrix);
+        if (ldlt.info() != Eigen::Success)
+          throw NumericalError("Eigen LDLT: the effective matrix is singular");
+        const auto d = ldlt.vectorD();
+        if ((d.array() == 0).any())
+          throw NumericalError("Eigen LDLT: the effective matrix is singular");
+      }
+      void
+      solve(const Vector &b, Vector &x) override
+      {
+        x = ldlt.solve(b);
+      }
+      std::string
+      name() const override
+      {
+        return "eigen-ldlt";
+      }
+
+    private:
+      Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
+    };
+  } // namespace
+
+  std::unique_ptr<LinearSolver>
+  create_eigen_ldlt_solver()
+  {
+    return std::make_unique<EigenLdltSolver>();
+  }
+
+  std::vector<std::string>
+  linear_solver_names()
+  {
+    return {"eigen-ldlt", "umfpack", "petsc", "trilinos"};
+  }
+
+  std::unique_ptr<LinearSolver>
+  create_linear_solver(const std::string &name)
+  {
+    if (name == "eigen-ldlt")
+      return create_eigen_ldlt_solver();
+    if (name == "umfpack")
+      return create_umfpack_solver();
+    if (name == "petsc")
+      return create_petsc_solver();
+    if (name == "trilinos")
+      return create_trilinos_solver();
+    throw InputError("", 0, "Time integration/Linear solver", "unknown solver '" + name + "'");
+  }
+} // namespace poundfe

@@ -1,0 +1,192 @@
+#include <poundfe/base/exceptions.h>
+#include <poundfe/excitation/excitation.h>
+#include <poundfe/excitation/records.h>
+#include <poundfe/excitation/stochastic.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace poundfe
+{
+  double
+  NodalForce::value(const double t) const
+  {
+    if (harmonic)
+      return amplitude * std::sin(omega * t + phase);
+    if (times.empty() || t < times.front() || t > times.back())
+      return 0;
+    const auto   upper = std::upper_bound(times.begin(), times.end(), t);
+    if (upper == times.end())
+      return values.back();
+    const auto   i     = upper - times.begin() - 1;
+    const double f     = (t - times[i]) / (times[i + 1] - times[i]);
+    return (1 - f) * values[i] + f * values[i + 1];
+  }
+
+  Excitation::Excitation(const LinearSystem &system, GroundMotion ground_motion,
+                         std::vector<NodalForce> nodal_forces)
+    : ground(std::move(ground_motion))
+    , forces(std::move(nodal_forces))
+    , mass_times_influence(system.mass * system.influence)
+  {}
+
+  void
+  Excitation::load(const double t, Vector &load) const
+  {
+    load = (-ground.value(t)) * mass_times_influence;
+    for (const NodalForce &f : forces)
+      load[f.equation] += f.value(t);
+  }
+
+  GroundMotion
+  make_ground_motion(const InputParameters &input)
+  {
+    const GroundMotionParameters &g = input.ground_motion;
+    GroundMotion                  motion;
+    if (g.type == "record")
+      {
+        RecordFormat format;
+        format.format    = g.record_format;
+        format.units     = g.record_units;
+        format.time_step = g.record_time_step;
+        motion           = read_record(input.resolve(g.record_file), format);
+        if (g.record_target_pga > 0)
+          {
+            if (motion.peak() == 0)
+              throw InputError(input.file, input.line_of("Ground motion/Record/Target PGA"),
+                               "Ground motion/Record/Target PGA",
+                               "cannot scale a record of zero PGA");
+            motion.scale(g.record_target_pga * standard_gravity / motion.peak());
+            return motion;
+          }
+      }
+    else if (g.type == "kanai-tajimi" || g.type == "clough-penzien")
+      {
+        StochasticMotion s;
+        const bool       cp = g.type == "clough-penzien";
+        if (g.soil == "custom")
+          s.filter = FilterParameters{cp, g.omega_g, g.zeta_g, g.omega_f, g.zeta_f};
+        else
+          s.filter = soil_preset(g.soil, cp);
+        s.spectral_intensity =
+          g.spectral_intensity > 0 ?
+            g.spectral_intensity :
+            intensity_from_pga(s.filter, g.target_pga * standard_gravity, g.peak_factor);
+        s.duration        = g.duration;
+        s.sample_interval = g.sample_interval > 0 ? g.sample_interval : input.time_step;
+        s.envelope.kind   = g.envelope;
+        s.envelope.rise_end    = g.jennings_rise_end;
+        s.envelope.plateau_end = g.jennings_plateau_end;
+        s.envelope.decay       = g.jennings_decay;
+        s.envelope.b           = g.saragoni_b;
+        s.envelope.c           = g.saragoni_c;
+        s.envelope.alpha       = g.shinozuka_alpha;
+        s.envelope.beta        = g.shinozuka_beta;
+        s.seed                 = g.seed;
+        s.realization          = g.realization;
+        motion                 = generate_ground_motion(s);
+      }
+    motion.scale(g.scale_factor);
+    return motion;
+  }
+
+  namespace
+  {
+    struct ForceTarget
+    {
+      unsigned int equation;
+      std::string  label;
+    };
+
+    ForceTarget
+    find_target(const InputParameters &input, const Model &model, std::istringstream &fields,
+                const std::string &path, const std::string &entry)
+    {
+      const int    line = input.line_of(path);
+      unsigned int building = 0, floor = 0, node = 0;
+      std::string  dof;
+      if (!(fields >> building >> floor >> node >> dof))
+        throw InputError(input.file, line, path,
+                         "'" + entry + "': expected 'building floor node dof ...'");
+      if (building < 1 || building > model.buildings.size())
+        throw InputError(input.file, line, path,
+                         "'" + entry + "': building must be 1.." + std::to_string(model.buildings.size()));
+      const Building &b = model.buildings[building - 1];
+      if (floor < 1 || floor > b.floors.size())
+        throw InputError(input.file, line, path,
+                         "'" + entry + "': floor must be 1.." + std::to_string(b.floors.size()) +
+                           " (forces on the base act on supports)");
+      const Floor &f = b.floors[floor - 1];
+      if (node >= f.nodes.size())
+        throw InputError(input.file, line, path,
+                         "'" + entry + "': node must be 0.." + std::to_string(f.nodes.size() - 1));
+      Component c;
+      if (dof == "ux")
+        c = Component::ux;
+      else if (dof == "uy")
+        c = Component::uy;
+      else if (dof == "rz")
+        c = Component::rz;
+      else
+        throw InputError(input.file, line, path, "'" + entry + "': dof must be ux, uy or rz");
+      const int equation = model.equation(Model::dof(f.nodes[node], c));
+      if (equation < 0)
+        throw InputError(input.file, line, path, "'" + entry + "': that DOF is fixed");
+      return {static_cast<unsigned int>(equation),
+              b.name + " floor " + std::to_string(floor) + " node " + std::to_string(node) +
+                " " + dof};
+    }
+  } // namespace
+
+  std::vector<NodalForce>
+  make_nodal_forces(const InputParameters &input, const Model &model)
+  {
+    std::vector<NodalForce> forces;
+    const std::string       harmonic_path = "Nodal forces/Harmonic";
+    for (const std::string &entry : input.harmonic_forces)
+      {
+        if (entry.find_first_not_of(" \t") == std::string::npos)
+          continue;
+        std::istringstream fields(entry);
+        const ForceTarget  target = find_target(input, model, fields, harmonic_path, entry);
+        NodalForce         f;
+        f.equation = target.equation;
+        f.label    = target.label;
+        f.harmonic = true;
+        if (!(fields >> f.amplitude >> f.omega))
+          throw InputError(input.file, input.line_of(harmonic_path), harmonic_path,
+                           "'" + entry + "': expected '... amplitude omega [phase]'");
+        fields >> f.phase;
+        forces.push_back(f);
+      }
+    const std::string tabulated_path = "Nodal forces/Tabulated";
+    for (const std::string &entry : input.tabulated_forces)
+      {
+        if (entry.find_first_not_of(" \t") == std::string::npos)
+          continue;
+        std::istringstream fields(entry);
+        const ForceTarget  target = find_target(input, model, fields, tabulated_path, entry);
+        std::string        file;
+        if (!(fields >> file))
+          throw InputError(input.file, input.line_of(tabulated_path), tabulated_path,
+                           "'" + entry + "': expected '... file'");
+        const ColumnTable table = read_columns(input.resolve(file));
+        if (table.columns != 2)
+          throw InputError(input.resolve(file), 0, tabulated_path,
+                           "a force table has two columns: time, force");
+        for (std::size_t i = 1; i < table.times.size(); ++i)
+          if (!(table.times[i] > table.times[i - 1]))
+            throw InputError(input.resolve(file), 0, tabulated_path,
+                             "times must increase (row " + std::to_string(i + 1) + ")");
+        NodalForce f;
+        f.equation = target.equation;
+        f.label    = target.label;
+        f.harmonic = false;
+        f.times    = table.times;
+        f.values   = table.values;
+        forces.push_back(f);
+      }
+    return forces;
+  }
+} // namespace poundfe

@@ -1,0 +1,43 @@
+#include <poundfe/excitation/ground_motion.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace poundfe
+{
+  GroundMotion::GroundMotion(const double time_step, std::vector<double> acceleration,
+                             std::string description)
+    : dt(time_step)
+    , values(std::move(acceleration))
+    , text(std::move(description))
+  {}
+
+  double
+  GroundMotion::value(const double t) const
+  {
+    if (values.empty() || t < 0)
+      return 0;
+    const double       s = t / dt;
+    const std::size_t  i = static_cast<std::size_t>(s);
+    if (i + 1 >= values.size())
+      return (i + 1 == values.size() && s - i < 1e-9) ? values.back() : 0;
+    const double f = s - i;
+    return (1 - f) * values[i] + f * values[i + 1];
+  }
+
+  double
+  GroundMotion::peak() const
+  {
+    double pga = 0;
+    for (const double a : values)
+      pga = std::max(pga, std::abs(a));
+    return pga;
+  }
+
+  void
+  GroundMotion::scale(const double factor)
+  {
+    for (double &a : values)
+      a *= factor;
+  }
+} // namespace poundfe

@@ -1,0 +1,218 @@
+#include <poundfe/base/exceptions.h>
+#include <poundfe/excitation/stochastic.h>
+
+#include <Eigen/Dense>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <cmath>
+
+namespace poundfe
+{
+  namespace
+  {
+    using Matrix4 = Eigen::Matrix4d;
+    using Vector4 = Eigen::Vector4d;
+
+    /// State [xf, xf', xh, xh']: s' = A s + B w, output a = c^T s.
+    void
+    state_space(const FilterParameters &f, Matrix4 &a, Vector4 &b, Vector4 &c)
+    {
+      const double g1 = 2 * f.zeta_g * f.omega_g, g0 = f.omega_g * f.omega_g;
+      const double h1 = 2 * f.zeta_f * f.omega_f, h0 = f.omega_f * f.omega_f;
+      a.setZero();
+      b.setZero();
+      a(0, 1) = 1;
+      a(1, 0) = -g0;
+      a(1, 1) = -g1;
+      b(1)    = -1;
+      // KT output a_kt = -(g1 xf' + g0 xf)
+      Vector4 kt(-g0, -g1, 0, 0);
+      if (!f.clough_penzien)
+        {
+          c = kt;
+          return;
+        }
+      a(2, 3)       = 1;
+      a.row(3)      = kt.transpose();
+      a(3, 2)       = -h0;
+      a(3, 3)       = -h1;
+      c             = a.row(3).transpose(); // xh'' = a_kt - h1 xh' - h0 xh
+    }
+
+    std::uint64_t
+    splitmix64(std::uint64_t &x)
+    {
+      std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
+      z               = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      z               = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+      return z ^ (z >> 31);
+    }
+
+    std::uint64_t
+    rotl(const std::uint64_t x, const int k)
+    {
+      return (x << k) | (x >> (64 - k));
+    }
+  } // namespace
+
+  FilterParameters
+  soil_preset(const std::string &soil, const bool clough_penzien)
+  {
+    FilterParameters f;
+    f.clough_penzien = clough_penzien;
+    if (soil == "firm")
+      f.omega_g = 15, f.zeta_g = 0.6;
+    else if (soil == "medium")
+      f.omega_g = 10, f.zeta_g = 0.4;
+    else if (soil == "soft")
+      f.omega_g = 5, f.zeta_g = 0.2;
+    f.omega_f = f.omega_g / 10;
+    f.zeta_f  = 0.6;
+    return f;
+  }
+
+  double
+  filter_psd(const FilterParameters &f, const double w)
+  {
+    const double wg2 = f.omega_g * f.omega_g, w2 = w * w;
+    const double z   = 4 * f.zeta_g * f.zeta_g * wg2 * w2;
+    double       s   = (wg2 * wg2 + z) / ((wg2 - w2) * (wg2 - w2) + z);
+    if (f.clough_penzien)
+      {
+        const double wf2 = f.omega_f * f.omega_f;
+        s *= w2 * w2 / ((wf2 - w2) * (wf2 - w2) + 4 * f.zeta_f * f.zeta_f * wf2 * w2);
+      }
+    return s;
+  }
+
+  double
+  stationary_variance_per_unit_s0(const FilterParameters &f)
+  {
+    Matrix4 a;
+    Vector4 b, c;
+    state_space(f, a, b, c);
+    const int n = f.clough_penzien ? 4 : 2;
+    // A P + P A^T + q B B^T = 0 with q = 2 pi (unit S0), as a Kronecker system.
+    const Eigen::MatrixXd an = a.topLeftCorner(n, n);
+    const Eigen::MatrixXd id = Eigen::MatrixXd::Identity(n, n);
+    Eigen::MatrixXd       kron(n * n, n * n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        kron.block(i * n, j * n, n, n) = an(i, j) * id + (i == j ? an : Eigen::MatrixXd::Zero(n, n));
+    // vec(P) column-major: (I (x) A + A (x) I) vec(P) = -q vec(B B^T)
+    const Eigen::VectorXd bn = b.head(n);
+    Eigen::MatrixXd       q  = 2 * M_PI * bn * bn.transpose();
+    Eigen::VectorXd       rhs(n * n);
+    for (int j = 0; j < n; ++j)
+      rhs.segment(j * n, n) = -q.col(j);
+    // kron above is A (x) I + I (x) A in block form for column-major vec.
+    const Eigen::VectorXd p = kron.fullPivLu().solve(rhs);
+    Eigen::MatrixXd       pm(n, n);
+    for (int j = 0; j < n; ++j)
+      pm.col(j) = p.segment(j * n, n);
+    const Eigen::VectorXd cn = c.head(n);
+    return cn.dot(pm * cn);
+  }
+
+  double
+  intensity_from_pga(const FilterParameters &filter, const double pga, const double peak_factor)
+  {
+    return pga * pga / (peak_factor * peak_factor * stationary_variance_per_unit_s0(filter));
+  }
+
+  double
+  Envelope::operator()(const double t) const
+  {
+    if (t < 0)
+      return 0;
+    if (kind == "jennings")
+      {
+        if (t < rise_end)
+          return (t / rise_end) * (t / rise_end);
+        if (t <= plateau_end)
+          return 1;
+        return std::exp(-decay * (t - plateau_end));
+      }
+    if (kind == "saragoni-hart")
+      {
+        const double t_peak = b / c;
+        return std::pow(t / t_peak, b) * std::exp(-c * (t - t_peak));
+      }
+    if (kind == "shinozuka-sato")
+      {
+        const double t_peak = std::log(beta / alpha) / (beta - alpha);
+        const double peak   = std::exp(-alpha * t_peak) - std::exp(-beta * t_peak);
+        return (std::exp(-alpha * t) - std::exp(-beta * t)) / peak;
+      }
+    return 1;
+  }
+
+  NormalStream::NormalStream(const std::uint64_t seed, const std::uint64_t realization)
+  {
+    std::uint64_t x = seed ^ (0xd1b54a32d192ed03ULL * (realization + 1));
+    for (auto &s : state)
+      s = splitmix64(x);
+  }
+
+  std::uint64_t
+  NormalStream::uniform_bits()
+  {
+    const std::uint64_t result = rotl(state[1] * 5, 7) * 9;
+    const std::uint64_t t      = state[1] << 17;
+    state[2] ^= state[0];
+    state[3] ^= state[1];
+    state[1] ^= state[2];
+    state[0] ^= state[3];
+    state[2] ^= t;
+    state[3] = rotl(state[3], 45);
+    return result;
+  }
+
+  double
+  NormalStream::next()
+  {
+    if (has_spare)
+      {
+        has_spare = false;
+        return spare;
+      }
+    // uniform in (0, 1]: never log(0)
+    const double u1 = ((uniform_bits() >> 11) + 1) * 0x1.0p-53;
+    const double u2 = (uniform_bits() >> 11) * 0x1.0p-53;
+    const double r  = std::sqrt(-2 * std::log(u1));
+    spare           = r * std::sin(2 * M_PI * u2);
+    has_spare       = true;
+    return r * std::cos(2 * M_PI * u2);
+  }
+
+  GroundMotion
+  generate_ground_motion(const StochasticMotion &motion)
+  {
+    Matrix4 a;
+    Vector4 b, c;
+    state_space(motion.filter, a, b, c);
+    // exp([[A, B], [0, 0]] dt) = [[Phi, Gamma], [0, 1]]: exact for held input.
+    Eigen::Matrix<double, 5, 5> augmented = Eigen::Matrix<double, 5, 5>::Zero();
+    augmented.topLeftCorner<4, 4>()       = a * motion.sample_interval;
+    augmented.topRightCorner<4, 1>()      = b * motion.sample_interval;
+    const Eigen::Matrix<double, 5, 5> e   = augmented.exp();
+    const Matrix4                     phi   = e.topLeftCorner<4, 4>();
+    const Vector4                     gamma = e.topRightCorner<4, 1>();
+
+    const std::size_t   n = static_cast<std::size_t>(std::ceil(motion.duration / motion.sample_interval - 1e-9)) + 1;
+    std::vector<double> values(n);
+    NormalStream        normal(motion.seed, motion.realization);
+    const double        scale = std::sqrt(2 * M_PI * motion.spectral_intensity / motion.sample_interval);
+    Vector4             state = Vector4::Zero();
+    for (std::size_t k = 0; k < n; ++k)
+      {
+        const double t = k * motion.sample_interval;
+        values[k]      = motion.envelope(t) * c.dot(state);
+        state          = phi * state + gamma * (scale * normal.next());
+      }
+    return GroundMotion(motion.sample_interval, std::move(values),
+                        std::string(motion.filter.clough_penzien ? "Clough-Penzien" : "Kanai-Tajimi") +
+                          " sample (seed " + std::to_string(motion.seed) + ", realization " +
+                          std::to_string(motion.realization) + ")");
+  }
+} // namespace poundfe

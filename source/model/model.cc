@@ -1,0 +1,50 @@
+#include <poundfe/model/model.h>
+
+#include <cmath>
+
+namespace poundfe
+{
+  void
+  Model::number_equations()
+  {
+    equation_of_dof.assign(n_dofs(), -1);
+    first_equation_of_building.assign(buildings.size() + 1, 0);
+    n_free = 0;
+    for (unsigned int b = 0; b < buildings.size(); ++b)
+      {
+        first_equation_of_building[b] = n_free;
+        const Building &building = buildings[b];
+        for (unsigned int n = building.first_node;
+             n < building.first_node + building.n_nodes;
+             ++n)
+          for (unsigned int c = 0; c < n_dofs_per_node; ++c)
+            if (!nodes[n].fixed[c])
+              equation_of_dof[n_dofs_per_node * n + c] = n_free++;
+      }
+    first_equation_of_building[buildings.size()] = n_free;
+  }
+
+  std::array<unsigned int, 2>
+  Model::equation_range(const unsigned int b) const
+  {
+    return {{first_equation_of_building[b], first_equation_of_building[b + 1]}};
+  }
+
+  double
+  Model::total_mass(const unsigned int b) const
+  {
+    double mass = 0;
+    for (const NodalMass &m : masses)
+      if (nodes[m.node].building == b)
+        mass += m.mass;
+    for (const Member &member : members)
+      if (member.building == b)
+        {
+          const Point2 &p0 = nodes[member.nodes[0]].position;
+          const Point2 &p1 = nodes[member.nodes[1]].position;
+          mass += member.section.mass_per_length *
+                  std::hypot(p1.x - p0.x, p1.y - p0.y);
+        }
+    return mass;
+  }
+} // namespace poundfe

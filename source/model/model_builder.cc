@@ -1,0 +1,311 @@
+#include <poundfe/base/exceptions.h>
+#include <poundfe/mesh/line_mesh.h>
+#include <poundfe/model/model_builder.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace poundfe
+{
+  namespace
+  {
+    template <typename T>
+    T
+    value_for(const std::vector<T> &values, const unsigned int i)
+    {
+      return values.size() == 1 ? values[0] : values[i];
+    }
+
+    unsigned int
+    add_node(Model &model, const Point2 &p, const unsigned int building)
+    {
+      Node node;
+      node.position = p;
+      node.building = building;
+      model.nodes.push_back(node);
+      return model.nodes.size() - 1;
+    }
+
+    /// A straight member from node a to node b split into n elements.
+    void
+    add_member(Model &model, const unsigned int a, const unsigned int b,
+               const unsigned int n_elements, const Section &section,
+               const unsigned int building, const unsigned int group, const MemberKind kind)
+    {
+      const Point2 pa = model.nodes[a].position;
+      const Point2 pb = model.nodes[b].position;
+      unsigned int previous = a;
+      for (unsigned int e = 1; e <= n_elements; ++e)
+        {
+          const double       s    = double(e) / n_elements;
+          const unsigned int next = (e == n_elements) ?
+                                      b :
+                                      add_node(model,
+                                               {pa.x + s * (pb.x - pa.x), pa.y + s * (pb.y - pa.y)},
+                                               building);
+          Member member;
+          member.nodes    = {{previous, next}};
+          member.section  = section;
+          member.building = building;
+          member.group    = group;
+          member.kind     = kind;
+          model.members.push_back(member);
+          previous = next;
+        }
+    }
+
+    void
+    fix_base(Model &model, const unsigned int node, const std::string &fixity)
+    {
+      model.nodes[node].fixed = {{true, true, fixity == "fixed"}};
+    }
+
+    /// Lump a floor mass in equal shares at the floor's joints.
+    void
+    lump_floor_mass(Model &model, const Floor &floor, const double mass)
+    {
+      if (mass <= 0)
+        return;
+      for (const unsigned int n : floor.nodes)
+        model.masses.push_back({n, mass / floor.nodes.size()});
+    }
+
+    void
+    build_frame(Model &model, const BuildingParameters &p, const unsigned int b,
+                Building &building)
+    {
+      const unsigned int n_storeys = p.n_storeys;
+      const unsigned int n_lines   = p.n_bays + 1;
+      std::vector<double> x(n_lines, building.left);
+      for (unsigned int j = 1; j < n_lines; ++j)
+        x[j] = x[j - 1] + value_for(p.bay_widths, j - 1);
+      building.right = x.back();
+
+      std::vector<std::vector<unsigned int>> joint(n_storeys + 1,
+                                                   std::vector<unsigned int>(n_lines));
+      double level = 0;
+      for (unsigned int i = 0; i <= n_storeys; ++i)
+        {
+          if (i > 0)
+            level += value_for(p.storey_heights, i - 1);
+          for (unsigned int j = 0; j < n_lines; ++j)
+            joint[i][j] = add_node(model, {x[j], level}, b);
+        }
+      for (unsigned int j = 0; j < n_lines; ++j)
+        fix_base(model, joint[0][j], p.base_fixity);
+
+      for (unsigned int i = 1; i <= n_storeys; ++i)
+        {
+          const Section column{value_for(p.column_youngs_modulus, i - 1),
+                               value_for(p.column_area, i - 1),
+                               value_for(p.column_second_moment, i - 1),
+                               value_for(p.column_mass_per_length, i - 1)};
+          const Section beam{value_for(p.beam_youngs_modulus, i - 1),
+                             value_for(p.beam_area, i - 1),
+                             value_for(p.beam_second_moment, i - 1),
+                             value_for(p.beam_mass_per_length, i - 1)};
+          for (unsigned int j = 0; j < n_lines; ++j)
+            add_member(model, joint[i - 1][j], joint[i][j], p.elements_per_member, column, b,
+                       2 * i - 1, MemberKind::column);
+          for (unsigned int j = 0; j + 1 < n_lines; ++j)
+            add_member(model, joint[i][j], joint[i][j + 1], p.elements_per_member, beam, b,
+                       2 * i, MemberKind::beam);
+
+          Floor floor;
+          floor.level         = model.nodes[joint[i][0]].position.y;
+          floor.storey_height = value_for(p.storey_heights, i - 1);
+          floor.nodes         = joint[i];
+          building.floors.push_back(floor);
+          lump_floor_mass(model, floor, value_for(p.floor_masses, i - 1));
+        }
+    }
+
+    void
+    build_shear(Model &model, const BuildingParameters &p, const unsigned int b,
+                Building &building)
+    {
+      building.right     = building.left + p.drawing_width;
+      const double x     = building.left + 0.5 * p.drawing_width;
+      unsigned int below = add_node(model, {x, 0.0}, b);
+      model.nodes[below].fixed = {{true, true, true}};
+      double level = 0;
+      for (unsigned int i = 1; i <= p.n_storeys; ++i)
+        {
+          level += value_for(p.storey_heights, i - 1);
+          const unsigned int node = add_node(model, {x, level}, b);
+          model.nodes[node].fixed = {{false, true, true}};
+          StoreyLink link;
+          link.nodes     = {{below, node}};
+          link.stiffness = value_for(p.storey_stiffnesses, i - 1);
+          link.damping   = value_for(p.storey_damping, i - 1);
+          link.building  = b;
+          model.links.push_back(link);
+
+          Floor floor;
+          floor.level         = level;
+          floor.storey_height = value_for(p.storey_heights, i - 1);
+          floor.nodes         = {node};
+          building.floors.push_back(floor);
+          model.masses.push_back({node, value_for(p.floor_masses, i - 1)});
+          below = node;
+        }
+    }
+
+    void
+    build_from_mesh(Model &model, const InputParameters &input, const BuildingParameters &p,
+                    const unsigned int b, Building &building)
+    {
+      const std::string section_path =
+        "Building " + std::to_string(b + 1) + "/Mesh file";
+      const std::string file = input.resolve(p.mesh_file);
+      LineMesh          mesh;
+      try
+        {
+          mesh = read_line_mesh(file);
+        }
+      catch (const InputError &e)
+        {
+          throw InputError(input.file, input.line_of(section_path), section_path,
+                           e.what());
+        }
+
+      // Keep only vertices that cells use, in their order of first use.
+      std::vector<int> node_of_vertex(mesh.vertices.size(), -1);
+      double min_x = 1e300, max_x = -1e300, min_y = 1e300, max_y = -1e300;
+      for (const auto &cell : mesh.cells)
+        for (const unsigned int v : cell)
+          {
+            min_x = std::min(min_x, mesh.vertices[v].x);
+            max_x = std::max(max_x, mesh.vertices[v].x);
+            min_y = std::min(min_y, mesh.vertices[v].y);
+            max_y = std::max(max_y, mesh.vertices[v].y);
+          }
+      const double shift = building.left - min_x;
+      building.right     = max_x + shift;
+      building.base_level = min_y;
+      const double tolerance = 1e-6 * std::max(max_y - min_y, max_x - min_x);
+      for (const auto &cell : mesh.cells)
+        for (const unsigned int v : cell)
+          if (node_of_vertex[v] < 0)
+            node_of_vertex[v] =
+              add_node(model, {mesh.vertices[v].x + shift, mesh.vertices[v].y}, b);
+
+      std::map<double, std::vector<unsigned int>> joints_at_level; // nodes touching columns
+      std::vector<double>                         beam_levels;
+      for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+        {
+          const auto it = std::find(p.group_ids.begin(), p.group_ids.end(), mesh.material_ids[c]);
+          if (it == p.group_ids.end())
+            throw InputError(input.file, input.line_of("Building " + std::to_string(b + 1) + "/Group ids"),
+                             "Building " + std::to_string(b + 1) + "/Group ids",
+                             "the mesh " + file + " uses physical id " +
+                               std::to_string(mesh.material_ids[c]) + ", which is not listed");
+          const unsigned int g = it - p.group_ids.begin();
+          const Section section{value_for(p.group_youngs_modulus, g), value_for(p.group_area, g),
+                                value_for(p.group_second_moment, g),
+                                value_for(p.group_mass_per_length, g)};
+          const unsigned int n0 = node_of_vertex[mesh.cells[c][0]];
+          const unsigned int n1 = node_of_vertex[mesh.cells[c][1]];
+          const Point2       p0 = model.nodes[n0].position, p1 = model.nodes[n1].position;
+          MemberKind         kind = MemberKind::other;
+          if (std::abs(p1.x - p0.x) <= tolerance)
+            kind = MemberKind::column;
+          else if (std::abs(p1.y - p0.y) <= tolerance)
+            {
+              kind = MemberKind::beam;
+              beam_levels.push_back(p0.y);
+            }
+          add_member(model, n0, n1, 1, section, b, mesh.material_ids[c], kind);
+          if (kind == MemberKind::column)
+            for (const unsigned int n : {n0, n1})
+              joints_at_level[model.nodes[n].position.y].push_back(n);
+        }
+      for (unsigned int n = building.first_node; n < model.n_nodes(); ++n)
+        if (model.nodes[n].position.y <= min_y + tolerance)
+          fix_base(model, n, p.base_fixity);
+
+      std::sort(beam_levels.begin(), beam_levels.end());
+      double previous = min_y;
+      for (const double level : beam_levels)
+        {
+          if (level <= previous + tolerance)
+            continue;
+          Floor floor;
+          floor.level         = level;
+          floor.storey_height = level - previous;
+          for (const auto &[y, nodes] : joints_at_level)
+            if (std::abs(y - level) <= tolerance)
+              for (const unsigned int n : nodes)
+                if (std::find(floor.nodes.begin(), floor.nodes.end(), n) == floor.nodes.end())
+                  floor.nodes.push_back(n);
+          std::sort(floor.nodes.begin(), floor.nodes.end(), [&](unsigned int a, unsigned int c) {
+            return model.nodes[a].position.x < model.nodes[c].position.x;
+          });
+          if (!floor.nodes.empty())
+            building.floors.push_back(floor);
+          previous = level;
+        }
+      const std::string masses = "Building " + std::to_string(b + 1) + "/Floor masses";
+      if (p.floor_masses.size() != 1 && p.floor_masses.size() != building.floors.size())
+        throw InputError(input.file, input.line_of(masses), masses,
+                         "needs 1 value or " + std::to_string(building.floors.size()) +
+                           " (the mesh has that many floors), got " +
+                           std::to_string(p.floor_masses.size()));
+      for (unsigned int i = 0; i < building.floors.size(); ++i)
+        lump_floor_mass(model, building.floors[i], value_for(p.floor_masses, i));
+    }
+  } // namespace
+
+  Model
+  build_model(const InputParameters &input)
+  {
+    Model model;
+    model.mass_matrix =
+      input.mass_matrix == "consistent" ? MassMatrixType::consistent : MassMatrixType::lumped;
+    double left = 0;
+    for (unsigned int b = 0; b < input.buildings.size(); ++b)
+      {
+        const BuildingParameters &p = input.buildings[b];
+        Building                  building;
+        building.name       = p.name;
+        building.left       = left;
+        building.first_node = model.n_nodes();
+        if (p.type == "frame")
+          {
+            building.type = BuildingType::frame;
+            build_frame(model, p, b, building);
+          }
+        else if (p.type == "shear")
+          {
+            building.type = BuildingType::shear;
+            build_shear(model, p, b, building);
+          }
+        else
+          {
+            building.type = BuildingType::mesh;
+            build_from_mesh(model, input, p, b, building);
+          }
+        building.n_nodes = model.n_nodes() - building.first_node;
+
+        RayleighDamping &d = building.damping;
+        d.damping_ratio    = p.damping_ratio;
+        d.a0               = p.rayleigh_a0;
+        d.a1               = p.rayleigh_a1;
+        if (p.damping_type == "modes")
+          {
+            d.kind        = RayleighDamping::Kind::modes;
+            d.first_mode  = p.damping_modes[0];
+            d.second_mode = p.damping_modes[1];
+          }
+        else if (p.damping_type == "coefficients")
+          d.kind = RayleighDamping::Kind::coefficients;
+
+        if (b + 1 < input.buildings.size())
+          left = building.right + value_for(input.separations, b);
+        model.buildings.push_back(std::move(building));
+      }
+    model.number_equations();
+    return model;
+  }
+} // namespace poundfe

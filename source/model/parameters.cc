@@ -1,0 +1,489 @@
+#include <poundfe/base/exceptions.h>
+#include <poundfe/model/parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace poundfe
+{
+  namespace
+  {
+    using dealii::ParameterHandler;
+    namespace Patterns = dealii::Patterns;
+
+    void
+    declare_building(ParameterHandler &prm, BuildingParameters &b)
+    {
+      prm.add_parameter("Name", b.name, "Label used in reports; default 'B<n>'.");
+      prm.add_parameter("Type",
+                        b.type,
+                        "frame: regular frame generated from storeys and bays; "
+                        "mesh: frame read from a Gmsh mesh; shear: stick model.",
+                        Patterns::Selection("frame|mesh|shear"));
+      prm.add_parameter("Number of storeys", b.n_storeys, "Storeys (frame, shear).",
+                        Patterns::Integer(1));
+      prm.add_parameter("Number of bays", b.n_bays, "Bays (frame).", Patterns::Integer(1));
+      prm.add_parameter("Storey heights", b.storey_heights,
+                        "Storey heights in m, bottom up: one value for all or one per storey.");
+      prm.add_parameter("Bay widths", b.bay_widths,
+                        "Bay widths in m, left to right: one value for all or one per bay.");
+      prm.add_parameter("Column E", b.column_youngs_modulus,
+                        "Column Young's modulus in Pa, one value or one per storey.");
+      prm.add_parameter("Column A", b.column_area, "Column area in m^2, one or per storey.");
+      prm.add_parameter("Column I", b.column_second_moment,
+                        "Column second moment of area in m^4, one or per storey.");
+      prm.add_parameter("Beam E", b.beam_youngs_modulus,
+                        "Beam Young's modulus in Pa, one or per floor.");
+      prm.add_parameter("Beam A", b.beam_area, "Beam area in m^2, one or per floor.");
+      prm.add_parameter("Beam I", b.beam_second_moment,
+                        "Beam second moment of area in m^4, one or per floor.");
+      prm.add_parameter("Column mass per length", b.column_mass_per_length,
+                        "Distributed column mass in kg/m, one or per storey.");
+      prm.add_parameter("Beam mass per length", b.beam_mass_per_length,
+                        "Distributed beam mass in kg/m, one or per floor.");
+      prm.add_parameter("Floor masses", b.floor_masses,
+                        "Mass of each floor in kg, bottom up (roof last), lumped in equal "
+                        "shares at the floor's joints: one value for all or one per floor. "
+                        "For shear buildings, the floor mass.");
+      prm.add_parameter("Base fixity", b.base_fixity,
+                        "Support of the column bases.", Patterns::Selection("fixed|pinned"));
+      prm.add_parameter("Elements per member", b.elements_per_member,
+                        "Frame elements along each column and beam.", Patterns::Integer(1, 64));
+      prm.add_parameter("Storey stiffnesses", b.storey_stiffnesses,
+                        "Shear building storey stiffness in N/m, one or per storey.");
+      prm.add_parameter("Storey damping", b.storey_damping,
+                        "Shear building storey dashpot in N s/m, one or per storey "
+                        "(added to the Rayleigh damping).");
+      prm.add_parameter("Drawing width", b.drawing_width,
+                        "Shear building: width in m used for placement and pictures.");
+      prm.add_parameter("Mesh file", b.mesh_file,
+                        "Gmsh .msh file (line elements; physical ids are member groups), "
+                        "relative to this parameter file.");
+      prm.add_parameter("Group ids", b.group_ids, "Mesh member group (physical) ids.");
+      prm.add_parameter("Group E", b.group_youngs_modulus, "Young's modulus per group, Pa.");
+      prm.add_parameter("Group A", b.group_area, "Area per group, m^2.");
+      prm.add_parameter("Group I", b.group_second_moment, "Second moment per group, m^4.");
+      prm.add_parameter("Group mass per length", b.group_mass_per_length,
+                        "Distributed mass per group, kg/m.");
+      prm.enter_subsection("Damping");
+      prm.add_parameter("Type", b.damping_type,
+                        "Rayleigh damping C = a0 M + a1 K of this building: from a damping "
+                        "ratio at two modes, from given coefficients, or none.",
+                        Patterns::Selection("none|modes|coefficients"));
+      prm.add_parameter("Damping ratio", b.damping_ratio, "Damping ratio at both modes.");
+      prm.add_parameter("Modes", b.damping_modes,
+                        "The two modes (1-based) of this building that get the ratio.");
+      prm.add_parameter("a0", b.rayleigh_a0, "Mass-proportional coefficient, 1/s.");
+      prm.add_parameter("a1", b.rayleigh_a1, "Stiffness-proportional coefficient, s.");
+      prm.leave_subsection();
+    }
+
+    void
+    declare_ground_motion(ParameterHandler &prm, GroundMotionParameters &g)
+    {
+      prm.enter_subsection("Ground motion");
+      prm.add_parameter("Type", g.type,
+                        "Horizontal ground acceleration: a generated Kanai-Tajimi or "
+                        "Clough-Penzien sample, a record, or none.",
+                        Patterns::Selection("kanai-tajimi|clough-penzien|record|none"));
+      prm.add_parameter("Scale factor", g.scale_factor, "Multiplies the motion.");
+      prm.enter_subsection("Record");
+      prm.add_parameter("File", g.record_file,
+                        "PEER .AT2, or text with one (acceleration) or two (time, "
+                        "acceleration) columns; relative to this parameter file.");
+      prm.add_parameter("Format", g.record_format, "", Patterns::Selection("auto|at2|text"));
+      prm.add_parameter("Units", g.record_units, "Units of the values in the file.",
+                        Patterns::Selection("g|m/s^2"));
+      prm.add_parameter("Time step", g.record_time_step,
+                        "Sample interval of a one-column text record, s.");
+      prm.add_parameter("Target PGA", g.record_target_pga,
+                        "Scale the record to this PGA in g (0: keep it).");
+      prm.leave_subsection();
+      prm.enter_subsection("Stochastic");
+      prm.add_parameter("Soil", g.soil,
+                        "Filter parameters preset (Der Kiureghian & Neuenhofer 1992): firm "
+                        "15 rad/s, 0.6; medium 10, 0.4; soft 5, 0.2; custom uses omega_g, "
+                        "zeta_g. Clough-Penzien presets use omega_f = omega_g/10, zeta_f 0.6.",
+                        Patterns::Selection("firm|medium|soft|custom"));
+      prm.add_parameter("omega_g", g.omega_g, "Ground filter frequency, rad/s (custom).");
+      prm.add_parameter("zeta_g", g.zeta_g, "Ground filter damping ratio (custom).");
+      prm.add_parameter("omega_f", g.omega_f, "Clough-Penzien high-pass frequency, rad/s (custom).");
+      prm.add_parameter("zeta_f", g.zeta_f, "Clough-Penzien high-pass damping (custom).");
+      prm.add_parameter("S0", g.spectral_intensity,
+                        "Two-sided PSD intensity of the white noise, m^2/s^3; 0: from the "
+                        "target PGA and peak factor.");
+      prm.add_parameter("Target PGA", g.target_pga, "Target PGA in g (used when S0 = 0).");
+      prm.add_parameter("Peak factor", g.peak_factor, "PGA / standard deviation.");
+      prm.add_parameter("Duration", g.duration, "Length of the sample, s.");
+      prm.add_parameter("Sample interval", g.sample_interval,
+                        "White-noise sample interval, s (0: the analysis time step).");
+      prm.add_parameter("Seed", g.seed, "Random seed.");
+      prm.add_parameter("Realization", g.realization,
+                        "Realization index: (seed, index) fixes the sample.");
+      prm.add_parameter("Envelope", g.envelope, "Amplitude modulation.",
+                        Patterns::Selection("none|jennings|saragoni-hart|shinozuka-sato"));
+      prm.add_parameter("Rise end", g.jennings_rise_end, "Jennings: end of (t/t1)^2 rise, s.");
+      prm.add_parameter("Plateau end", g.jennings_plateau_end, "Jennings: end of plateau, s.");
+      prm.add_parameter("Decay rate", g.jennings_decay, "Jennings: exp(-c (t - t2)) rate, 1/s.");
+      prm.add_parameter("Saragoni b", g.saragoni_b, "Saragoni-Hart t^b e^(-ct): b.");
+      prm.add_parameter("Saragoni c", g.saragoni_c, "Saragoni-Hart t^b e^(-ct): c, 1/s.");
+      prm.add_parameter("Shinozuka alpha", g.shinozuka_alpha, "e^(-at)-e^(-bt): a, 1/s.");
+      prm.add_parameter("Shinozuka beta", g.shinozuka_beta, "e^(-at)-e^(-bt): b, 1/s.");
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+    void
+    declare_all(ParameterHandler &prm, InputParameters &p)
+    {
+      prm.enter_subsection("Model");
+      unsigned int n_buildings = p.buildings.size();
+      prm.add_parameter("Number of buildings", n_buildings,
+                        "Buildings side by side, left to right; each has a subsection "
+                        "'Building <i>'.", Patterns::Integer(1, 100));
+      prm.add_parameter("Mass matrix", p.mass_matrix,
+                        "Distributed member mass: lumped or consistent.",
+                        Patterns::Selection("lumped|consistent"));
+      prm.add_parameter("Separations", p.separations,
+                        "Clear distance in m between building i and i+1 (one value for "
+                        "all pairs or one per pair).");
+      prm.leave_subsection();
+      for (unsigned int b = 0; b < p.buildings.size(); ++b)
+        {
+          prm.enter_subsection("Building " + std::to_string(b + 1));
+          declare_building(prm, p.buildings[b]);
+          prm.leave_subsection();
+        }
+      declare_ground_motion(prm, p.ground_motion);
+      prm.enter_subsection("Nodal forces");
+      prm.add_parameter("Harmonic", p.harmonic_forces,
+                        "Harmonic forces 'building floor node dof amplitude omega phase', "
+                        "separated by ';'. floor 0 is the base, node counts from the left "
+                        "(0-based), dof ux|uy|rz, amplitude in N (N m), omega in rad/s.",
+                        Patterns::List(Patterns::Anything(), 0, 1000, ";"));
+      prm.add_parameter("Tabulated", p.tabulated_forces,
+                        "Tabulated forces 'building floor node dof file' separated by ';'; "
+                        "the file has two columns: time, force (linear in between, zero "
+                        "outside).",
+                        Patterns::List(Patterns::Anything(), 0, 1000, ";"));
+      prm.leave_subsection();
+      prm.enter_subsection("Time integration");
+      prm.add_parameter("Time step", p.time_step, "Analysis time step, s.");
+      prm.add_parameter("End time", p.end_time, "0: the length of the ground motion.");
+      prm.add_parameter("Newmark gamma", p.newmark_gamma, "");
+      prm.add_parameter("Newmark beta", p.newmark_beta, "");
+      prm.add_parameter("Linear solver", p.linear_solver,
+                        "Direct solver of the effective matrix (factorised once).",
+                        Patterns::Selection("eigen-ldlt|umfpack|petsc|trilinos"));
+      prm.leave_subsection();
+      prm.enter_subsection("Output");
+      prm.add_parameter("Directory", p.output_directory,
+                        "Results directory (relative to the working directory).");
+      prm.add_parameter("Output interval", p.output_interval,
+                        "Interval of CSV rows, s (0: every step).");
+      prm.add_parameter("VTU interval", p.vtu_interval,
+                        "Interval of VTU frames, s (0: none).");
+      prm.add_parameter("Plots", p.plots, "Make PNG plots with gnuplot.");
+      prm.add_parameter("Number of modes", p.n_modes, "Modes reported.", Patterns::Integer(1));
+      prm.leave_subsection();
+    }
+
+    std::string
+    collapse_whitespace(const std::string &text)
+    {
+      std::string out;
+      bool        space = false;
+      for (const char c : text)
+        if (std::isspace(static_cast<unsigned char>(c)))
+          space = !out.empty();
+        else
+          {
+            if (space)
+              out += ' ';
+            out += c;
+            space = false;
+          }
+      return out;
+    }
+
+    /// deal.II's messages carry "Line <n> of file <f>": turn them into ours.
+    [[noreturn]] void
+    rethrow_parse_error(const std::string &file, const dealii::ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      std::string text = collapse_whitespace(info.str());
+      int         line = 0;
+      std::smatch match;
+      static const std::regex where("Line <([0-9]+)> of file <[^>]*>:? ?");
+      if (std::regex_search(text, match, where))
+        {
+          line = std::stoi(match[1]);
+          text = match.prefix().str() + match.suffix().str();
+        }
+      if (text.empty())
+        text = collapse_whitespace(e.what());
+      throw InputError(file, line, "", text);
+    }
+
+    void
+    index_lines(InputParameters &p)
+    {
+      std::ifstream            in(p.file);
+      std::string              line;
+      std::vector<std::string> sections;
+      static const std::regex  subsection("^\\s*subsection\\s+(.*?)\\s*$");
+      static const std::regex  end("^\\s*end\\s*$");
+      static const std::regex  set("^\\s*set\\s+(.*?)\\s*=.*$");
+      for (int number = 1; std::getline(in, line); ++number)
+        {
+          const auto hash = line.find('#');
+          if (hash != std::string::npos)
+            line.erase(hash);
+          std::smatch m;
+          if (std::regex_match(line, m, subsection))
+            sections.push_back(m[1]);
+          else if (std::regex_match(line, end) && !sections.empty())
+            sections.pop_back();
+          else if (std::regex_match(line, m, set))
+            {
+              std::string path;
+              for (const auto &s : sections)
+                path += s + "/";
+              p.lines[path + m[1].str()] = number;
+            }
+        }
+    }
+
+    void
+    parse(ParameterHandler &prm, const std::string &file, const bool skip_undefined)
+    {
+      try
+        {
+          prm.parse_input(file, "", skip_undefined);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          rethrow_parse_error(file, e);
+        }
+    }
+
+    // --- checks of values that no Pattern expresses ---
+
+    struct Checker
+    {
+      const InputParameters &p;
+
+      [[noreturn]] void
+      fail(const std::string &path, const std::string &problem) const
+      {
+        throw InputError(p.file, p.line_of(path), path, problem);
+      }
+      void
+      positive(const std::string &path, const double v) const
+      {
+        if (!(v > 0) || !std::isfinite(v))
+          fail(path, "must be positive and finite, got " + std::to_string(v));
+      }
+      void
+      non_negative(const std::string &path, const double v) const
+      {
+        if (!(v >= 0) || !std::isfinite(v))
+          fail(path, "must be zero or positive, got " + std::to_string(v));
+      }
+      template <typename T>
+      void
+      list(const std::string &path, const std::vector<T> &values, const std::size_t n,
+           const bool allow_zero, const std::string &what) const
+      {
+        if (values.size() != 1 && values.size() != n)
+          fail(path, "needs 1 value or " + std::to_string(n) + " (" + what + "), got " +
+                       std::to_string(values.size()));
+        for (const T v : values)
+          allow_zero ? non_negative(path, v) : positive(path, v);
+      }
+    };
+
+    void
+    check(const InputParameters &p)
+    {
+      const Checker c{p};
+      for (unsigned int i = 0; i < p.buildings.size(); ++i)
+        {
+          const BuildingParameters &b = p.buildings[i];
+          const std::string         s = "Building " + std::to_string(i + 1) + "/";
+          const unsigned int        n = b.n_storeys;
+          if (b.type == "frame" || b.type == "shear")
+            {
+              c.list(s + "Storey heights", b.storey_heights, n, false, "one per storey");
+              c.list(s + "Floor masses", b.floor_masses, n, false, "one per floor");
+            }
+          if (b.type == "frame")
+            {
+              c.list(s + "Bay widths", b.bay_widths, b.n_bays, false, "one per bay");
+              c.list(s + "Column E", b.column_youngs_modulus, n, false, "one per storey");
+              c.list(s + "Column A", b.column_area, n, false, "one per storey");
+              c.list(s + "Column I", b.column_second_moment, n, false, "one per storey");
+              c.list(s + "Beam E", b.beam_youngs_modulus, n, false, "one per floor");
+              c.list(s + "Beam A", b.beam_area, n, false, "one per floor");
+              c.list(s + "Beam I", b.beam_second_moment, n, false, "one per floor");
+              c.list(s + "Column mass per length", b.column_mass_per_length, n, true,
+                     "one per storey");
+              c.list(s + "Beam mass per length", b.beam_mass_per_length, n, true,
+                     "one per floor");
+            }
+          if (b.type == "shear")
+            {
+              c.list(s + "Storey stiffnesses", b.storey_stiffnesses, n, false, "one per storey");
+              c.list(s + "Storey damping", b.storey_damping, n, true, "one per storey");
+              c.non_negative(s + "Drawing width", b.drawing_width);
+            }
+          if (b.type == "mesh")
+            {
+              if (b.mesh_file.empty())
+                c.fail(s + "Mesh file", "a mesh building needs a mesh file");
+              const std::size_t g = b.group_ids.size();
+              c.list(s + "Group E", b.group_youngs_modulus, g, false, "one per group id");
+              c.list(s + "Group A", b.group_area, g, false, "one per group id");
+              c.list(s + "Group I", b.group_second_moment, g, false, "one per group id");
+              c.list(s + "Group mass per length", b.group_mass_per_length, g, true,
+                     "one per group id");
+              for (const double m : b.floor_masses)
+                c.non_negative(s + "Floor masses", m);
+            }
+          if (b.damping_type == "modes")
+            {
+              if (!(b.damping_ratio >= 0 && b.damping_ratio < 1))
+                c.fail(s + "Damping/Damping ratio",
+                       "must lie in [0, 1), got " + std::to_string(b.damping_ratio));
+              if (b.damping_modes.size() != 2 || b.damping_modes[0] < 1 ||
+                  b.damping_modes[1] < 1 || b.damping_modes[0] == b.damping_modes[1])
+                c.fail(s + "Damping/Modes", "needs two different mode numbers >= 1");
+            }
+          if (b.damping_type == "coefficients")
+            {
+              c.non_negative(s + "Damping/a0", b.rayleigh_a0);
+              c.non_negative(s + "Damping/a1", b.rayleigh_a1);
+            }
+        }
+      if (p.buildings.size() > 1)
+        c.list("Model/Separations", p.separations, p.buildings.size() - 1, true,
+               "one per neighbouring pair");
+
+      const GroundMotionParameters &g = p.ground_motion;
+      const std::string             gm = "Ground motion/";
+      if (g.type == "record" && g.record_file.empty())
+        c.fail(gm + "Record/File", "a record ground motion needs a file");
+      c.non_negative(gm + "Record/Time step", g.record_time_step);
+      c.non_negative(gm + "Record/Target PGA", g.record_target_pga);
+      if (!std::isfinite(g.scale_factor))
+        c.fail(gm + "Scale factor", "must be finite");
+      if (g.type == "kanai-tajimi" || g.type == "clough-penzien")
+        {
+          const std::string st = gm + "Stochastic/";
+          c.positive(st + "omega_g", g.omega_g);
+          if (!(g.zeta_g > 0 && g.zeta_g < 1))
+            c.fail(st + "zeta_g", "must lie in (0, 1)");
+          c.positive(st + "omega_f", g.omega_f);
+          if (!(g.zeta_f > 0 && g.zeta_f < 1))
+            c.fail(st + "zeta_f", "must lie in (0, 1)");
+          c.non_negative(st + "S0", g.spectral_intensity);
+          c.non_negative(st + "Target PGA", g.target_pga);
+          c.positive(st + "Peak factor", g.peak_factor);
+          c.positive(st + "Duration", g.duration);
+          c.non_negative(st + "Sample interval", g.sample_interval);
+          c.positive(st + "Rise end", g.jennings_rise_end);
+          if (g.jennings_plateau_end < g.jennings_rise_end)
+            c.fail(st + "Plateau end", "must not be before the rise end");
+          c.non_negative(st + "Decay rate", g.jennings_decay);
+          c.positive(st + "Saragoni b", g.saragoni_b);
+          c.positive(st + "Saragoni c", g.saragoni_c);
+          c.positive(st + "Shinozuka alpha", g.shinozuka_alpha);
+          if (!(g.shinozuka_beta > g.shinozuka_alpha))
+            c.fail(st + "Shinozuka beta", "must exceed Shinozuka alpha");
+        }
+      c.positive("Time integration/Time step", p.time_step);
+      c.non_negative("Time integration/End time", p.end_time);
+      if (!(p.newmark_gamma >= 0.5))
+        c.fail("Time integration/Newmark gamma", "must be >= 1/2 for stability");
+      if (!(p.newmark_beta >= 0.25 * (0.5 + p.newmark_gamma) * (0.5 + p.newmark_gamma) - 1e-12))
+        c.fail("Time integration/Newmark beta",
+               "must be >= (1/2 + gamma)^2 / 4 for unconditional stability");
+      c.non_negative("Output/Output interval", p.output_interval);
+      c.non_negative("Output/VTU interval", p.vtu_interval);
+      if (p.output_directory.empty())
+        c.fail("Output/Directory", "must not be empty");
+    }
+  } // namespace
+
+  int
+  InputParameters::line_of(const std::string &path) const
+  {
+    const auto it = lines.find(path);
+    return it == lines.end() ? 0 : it->second;
+  }
+
+  std::string
+  InputParameters::resolve(const std::string &relative) const
+  {
+    const std::filesystem::path path(relative);
+    if (path.is_absolute() || directory.empty())
+      return relative;
+    return (std::filesystem::path(directory) / path).lexically_normal().string();
+  }
+
+  InputParameters
+  read_parameters(const std::string &file)
+  {
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw InputError(file, 0, "", "cannot open the parameter file");
+    }
+    const std::string extension = std::filesystem::path(file).extension().string();
+    if (extension != ".prm" && extension != ".json")
+      throw InputError(file, 0, "", "parameter files end in .prm or .json");
+
+    InputParameters p;
+    p.file      = file;
+    p.directory = std::filesystem::path(file).parent_path().string();
+    if (extension == ".prm")
+      index_lines(p);
+
+    // First pass: only the number of buildings, which shapes the declarations.
+    unsigned int n_buildings = 1;
+    {
+      ParameterHandler prm;
+      prm.enter_subsection("Model");
+      prm.add_parameter("Number of buildings", n_buildings, "", Patterns::Integer(1, 100));
+      prm.leave_subsection();
+      parse(prm, file, true);
+    }
+    p.buildings.resize(n_buildings);
+    ParameterHandler prm;
+    declare_all(prm, p);
+    parse(prm, file, false);
+    for (unsigned int b = 0; b < p.buildings.size(); ++b)
+      if (p.buildings[b].name.empty())
+        p.buildings[b].name = "B" + std::to_string(b + 1);
+    check(p);
+    return p;
+  }
+
+  void
+  print_parameters(std::ostream &out)
+  {
+    InputParameters p;
+    p.buildings.resize(1);
+    ParameterHandler prm;
+    declare_all(prm, p);
+    out << "# poundfe parameters. 'Building 1' stands for every 'Building <i>',\n"
+        << "# i = 1 .. Number of buildings. Lists are comma separated.\n";
+    prm.print_parameters(out, ParameterHandler::PRM);
+  }
+} // namespace poundfe

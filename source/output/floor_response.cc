@@ -1,0 +1,68 @@
+#include <poundfe/output/floor_response.h>
+
+#include <cmath>
+
+namespace poundfe
+{
+  FloorResponse::FloorResponse(const Model &model)
+    : model(model)
+  {
+    for (const Building &building : model.buildings)
+      {
+        first.push_back(floor_equations.size());
+        for (unsigned int f = 0; f < building.floors.size(); ++f)
+          {
+            const Floor     &floor = building.floors[f];
+            std::vector<int> equations;
+            for (const unsigned int node : floor.nodes)
+              equations.push_back(model.equation(Model::dof(node, Component::ux)));
+            floor_equations.push_back(equations);
+            inverse_height.push_back(1 / floor.storey_height);
+            is_bottom_floor.push_back(f == 0);
+          }
+      }
+    const unsigned int n = floor_equations.size();
+    for (auto *v : {&floor_displacement, &drift, &acceleration, &peak_u, &peak_drift,
+                    &peak_drift_at, &peak_a})
+      v->assign(n, 0.0);
+  }
+
+  void
+  FloorResponse::evaluate(const double time, const Vector &u, const Vector &a,
+                          const double ground_acceleration)
+  {
+    for (unsigned int i = 0; i < floor_equations.size(); ++i)
+      {
+        double sum_u = 0, sum_a = 0;
+        for (const int e : floor_equations[i])
+          if (e >= 0)
+            {
+              sum_u += u[e];
+              sum_a += a[e];
+            }
+        const double weight   = 1.0 / floor_equations[i].size();
+        floor_displacement[i] = sum_u * weight;
+        acceleration[i]       = sum_a * weight + ground_acceleration;
+        const double below    = is_bottom_floor[i] ? 0.0 : floor_displacement[i - 1];
+        drift[i]              = (floor_displacement[i] - below) * inverse_height[i];
+
+        peak_u[i] = std::max(peak_u[i], std::abs(floor_displacement[i]));
+        peak_a[i] = std::max(peak_a[i], std::abs(acceleration[i]));
+        if (std::abs(drift[i]) > peak_drift[i])
+          {
+            peak_drift[i]    = std::abs(drift[i]);
+            peak_drift_at[i] = time;
+          }
+      }
+  }
+
+  std::vector<std::string>
+  FloorResponse::column_names(const std::string &what) const
+  {
+    std::vector<std::string> names;
+    for (const Building &building : model.buildings)
+      for (unsigned int f = 1; f <= building.floors.size(); ++f)
+        names.push_back(building.name + "_" + what + std::to_string(f));
+    return names;
+  }
+} // namespace poundfe

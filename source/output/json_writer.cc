@@ -1,0 +1,130 @@
+#include <poundfe/output/json_writer.h>
+
+#include <charconv>
+#include <cmath>
+
+namespace poundfe
+{
+  namespace
+  {
+    std::string
+    number(const double x)
+    {
+      if (!std::isfinite(x))
+        return "null";
+      char buffer[32];
+      return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
+    }
+  } // namespace
+
+  std::string
+  json_escape(const std::string &s)
+  {
+    std::string out = "\"";
+    for (const char c : s)
+      switch (c)
+        {
+          case '"':
+            out += "\\\"";
+            break;
+          case '\\':
+            out += "\\\\";
+            break;
+          case '\n':
+            out += "\\n";
+            break;
+          default:
+            out += c;
+        }
+    return out + "\"";
+  }
+
+  void
+  JsonWriter::prefix(const std::string &key)
+  {
+    if (!first.back())
+      text += ",";
+    first.back() = false;
+    text += "\n" + std::string(2 * (first.size() - 1), ' ');
+    if (!key.empty())
+      text += json_escape(key) + ": ";
+  }
+
+  JsonWriter &
+  JsonWriter::begin_object(const std::string &key)
+  {
+    if (!text.empty())
+      prefix(key);
+    text += "{";
+    first.push_back(true);
+    return *this;
+  }
+
+  JsonWriter &
+  JsonWriter::end_object()
+  {
+    first.pop_back();
+    text += "\n" + std::string(2 * (first.size() - 1), ' ') + "}";
+    return *this;
+  }
+
+  JsonWriter &
+  JsonWriter::begin_array(const std::string &key)
+  {
+    prefix(key);
+    text += "[";
+    first.push_back(true);
+    return *this;
+  }
+
+  JsonWriter &
+  JsonWriter::end_array()
+  {
+    first.pop_back();
+    text += "\n" + std::string(2 * (first.size() - 1), ' ') + "]";
+    return *this;
+  }
+
+  JsonWriter &
+  JsonWriter::value(const std::string &key, const double x)
+  {
+    prefix(key);
+    text += number(x);
+    return *this;
+  }
+
+  JsonWriter &
+  JsonWriter::value(const std::string &key, const long x)
+  {
+    prefix(key);
+    text += std::to_string(x);
+    return *this;
+  }
+
+  JsonWriter &
+  JsonWriter::value(const std::string &key, const std::string &x)
+  {
+    prefix(key);
+    text += json_escape(x);
+    return *this;
+  }
+
+  JsonWriter &
+  JsonWriter::value(const std::string &key, const bool x)
+  {
+    prefix(key);
+    text += x ? "true" : "false";
+    return *this;
+  }
+
+  JsonWriter &
+  JsonWriter::value(const std::string &key, const std::vector<double> &x)
+  {
+    prefix(key);
+    text += "[";
+    for (std::size_t i = 0; i < x.size(); ++i)
+      text += (i ? ", " : "") + number(x[i]);
+    text += "]";
+    return *this;
+  }
+} // namespace poundfe

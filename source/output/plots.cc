@@ -1,0 +1,78 @@
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/plots.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace poundfe
+{
+  namespace
+  {
+    std::string
+    quoted(const std::string &s)
+    {
+      std::string out = "'";
+      for (const char c : s)
+        out += (c == '\'') ? std::string("''") : std::string(1, c);
+      return out + "'";
+    }
+  } // namespace
+
+  std::vector<std::string>
+  draw_plots(const std::string &directory, const std::vector<Plot> &plots)
+  {
+    std::vector<std::string> written;
+    if (plots.empty())
+      return written;
+    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+      {
+        std::cerr << "poundfe: warning: gnuplot not found; no PNG plots written\n";
+        return written;
+      }
+    std::ostringstream script;
+    script << "set datafile separator ','\nset key autotitle columnhead\n"
+           << "set terminal pngcairo size 900,600 enhanced font 'Sans,11'\nset grid\n";
+    for (const Plot &plot : plots)
+      {
+        script << "set output " << quoted(plot.file + ".tmp") << "\n"
+               << "set title " << quoted(plot.title) << " noenhanced\n"
+               << "set xlabel " << quoted(plot.x_label) << "\n"
+               << "set ylabel " << quoted(plot.y_label) << "\n"
+               << "plot ";
+        for (std::size_t i = 0; i < plot.series.size(); ++i)
+          {
+            const PlotSeries &s = plot.series[i];
+            script << (i ? ", " : "") << quoted(s.data_file) << " using " << s.using_spec
+                   << " with " << s.style << " title " << quoted(s.title) << " noenhanced";
+          }
+        script << "\nunset output\n";
+      }
+    const std::string script_file = directory + "/.plots.gp";
+    write_file_atomically(script_file, script.str());
+    const std::string command =
+      "cd " + quoted(directory) + " && gnuplot .plots.gp > .plots.log 2>&1";
+    const int status = std::system(command.c_str());
+    for (const Plot &plot : plots)
+      {
+        const std::string temporary = directory + "/" + plot.file + ".tmp";
+        if (status == 0 && std::filesystem::exists(temporary))
+          {
+            std::filesystem::rename(temporary, directory + "/" + plot.file);
+            written.push_back(plot.file);
+          }
+        else
+          std::remove(temporary.c_str());
+      }
+    if (status != 0)
+      std::cerr << "poundfe: warning: gnuplot failed; see " << directory << "/.plots.log\n";
+    else
+      {
+        std::remove(script_file.c_str());
+        std::remove((directory + "/.plots.log").c_str());
+      }
+    return written;
+  }
+} // namespace poundfe
