@@ -50,7 +50,15 @@ namespace poundfe
         format.format    = g.record_format;
         format.units     = g.record_units;
         format.time_step = g.record_time_step;
-        motion           = read_record(input.resolve(g.record_file), format);
+        const std::string path = "Ground motion/Record/File";
+        try
+          {
+            motion = read_record(input.resolve(g.record_file), format);
+          }
+        catch (const InputError &e)
+          {
+            throw InputError(input.file, input.line_of(path), path, e.what());
+          }
         if (g.record_target_pga > 0)
           {
             if (motion.peak() == 0)

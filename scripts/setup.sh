@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Install the Debian packages poundfe needs (only those missing) and build
+# Release into build/. Idempotent and non-interactive.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(libdeal.ii-dev libeigen3-dev libboost-test-dev numdiff gmsh gnuplot-nox cmake g++ make)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
+cmake --build build -j2 >> build.log 2>&1 || { tail -50 build.log; exit 1; }
+rm -f build.log
+echo "setup: build/poundfe is ready"

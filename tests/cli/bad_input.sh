@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Every bad-input class: exit status 1, one message naming the file and what
+# was wrong (the '# expect:' line of each file), and no output directory.
+# A missing parameter file, and a numerical failure (exit 2), as well.
+set -u
+poundfe=$1
+dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+check() { # file expected_status expected_text
+  local file=$1 status=$2 text=$3 out="$work/out"
+  rm -rf "$out"
+  "$poundfe" run "$file" --output "$out" > "$work/stdout" 2> "$work/stderr"
+  local got=$?
+  local message
+  message=$(cat "$work/stderr")
+  if [ "$got" -ne "$status" ]; then
+    echo "FAIL $file: exit $got, expected $status: $message"; failures=$((failures + 1)); return
+  fi
+  if ! grep -qF -- "$text" "$work/stderr"; then
+    echo "FAIL $file: message lacks '$text': $message"; failures=$((failures + 1)); return
+  fi
+  if [ "$(wc -l < "$work/stderr")" -ne 1 ]; then
+    echo "FAIL $file: expected one line of message: $message"; failures=$((failures + 1)); return
+  fi
+  if [ "$status" -eq 1 ] && [ -e "$out" ]; then
+    echo "FAIL $file: output written despite bad input"; failures=$((failures + 1)); return
+  fi
+  echo "ok   $(basename "$file"): $message"
+}
+n=0
+for file in "$dir"/*.prm; do
+  expected=$(sed -n '1s/^# expect: //p' "$file")
+  check "$file" 1 "$expected"
+  check "$file" 1 "$(basename "$file")"
+  n=$((n + 1))
+done
+check "$dir/does-not-exist.prm" 1 "cannot open the parameter file"
+check "$dir/../mechanism.prm" 2 "singular"
+echo "$n bad-input files, $failures failures"
+[ "$failures" -eq 0 ]

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Every example in input/ runs to completion (modal and run) and writes its
+# outputs; the summary's status is 'completed'.
+set -eu
+poundfe=$1 input=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+for file in "$input"/*.prm; do
+  name=$(basename "$file" .prm)
+  "$poundfe" modal "$file" --output "$work/$name/modal" > /dev/null
+  "$poundfe" run "$file" --output "$work/$name" > /dev/null
+  for f in summary.json drift.csv floor_acceleration.csv floor_displacement.csv; do
+    [ -s "$work/$name/$f" ] || { echo "FAIL $name: no $f"; exit 1; }
+  done
+  grep -q '"status": "completed"' "$work/$name/summary.json" || { echo "FAIL $name: not completed"; exit 1; }
+  if ls "$work/$name" | grep -q '\.tmp$'; then echo "FAIL $name: temporary files left"; exit 1; fi
+  echo "ok   $name"
+done

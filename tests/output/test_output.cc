@@ -1,0 +1,64 @@
+// Output writers: CSV round trip and atomic replacement.
+#define BOOST_TEST_MODULE output
+#include <poundfe/output/csv_writer.h>
+#include <poundfe/output/json_writer.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <boost/test/unit_test.hpp>
+
+using namespace poundfe;
+
+BOOST_AUTO_TEST_CASE(csv_round_trips_doubles_exactly)
+{
+  const std::string path = "/tmp/poundfe-test-roundtrip.csv";
+  std::filesystem::remove(path);
+  {
+    CsvWriter csv(path, {"time", "x"});
+    for (int i = 0; i < 20000; ++i) // more than one buffer
+      {
+        csv.begin_row(i * 0.1);
+        csv.add(1.0 / (i + 3));
+        csv.end_row();
+      }
+    BOOST_TEST(!std::filesystem::exists(path)); // nothing until commit
+    csv.commit();
+  }
+  std::ifstream in(path);
+  std::string   line;
+  std::getline(in, line);
+  BOOST_TEST(line == "time,x");
+  int i = 0;
+  while (std::getline(in, line))
+    {
+      const double x = std::stod(line.substr(line.find(',') + 1));
+      BOOST_TEST(x == 1.0 / (i + 3)); // shortest round-trip form is exact
+      ++i;
+    }
+  BOOST_TEST(i == 20000);
+}
+
+BOOST_AUTO_TEST_CASE(uncommitted_files_leave_nothing)
+{
+  const std::string path = "/tmp/poundfe-test-uncommitted.csv";
+  std::filesystem::remove(path);
+  {
+    CsvWriter csv(path, {"a"});
+    csv.begin_row(1);
+    csv.end_row();
+  }
+  BOOST_TEST(!std::filesystem::exists(path));
+  BOOST_TEST(!std::filesystem::exists(path + ".tmp"));
+}
+
+BOOST_AUTO_TEST_CASE(json_is_well_formed)
+{
+  JsonWriter json;
+  json.begin_object().value("a", 1.5).value("s", "q\"uote").begin_array("list");
+  json.begin_object().value("n", 2).end_object().end_array().end_object();
+  const std::string text = json.str();
+  BOOST_TEST(text.find("\"a\": 1.5") != std::string::npos);
+  BOOST_TEST(text.find("\"s\": \"q\\\"uote\"") != std::string::npos);
+}

@@ -1,0 +1,75 @@
+// Helpers shared by the unit tests: MPI set-up and hand-built models.
+#ifndef poundfe_tests_test_utilities_h
+#define poundfe_tests_test_utilities_h
+
+#include <poundfe/model/model.h>
+#include <poundfe/model/parameters.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <boost/test/unit_test.hpp>
+
+namespace poundfe_test
+{
+  /// PETSc and Trilinos need MPI initialised once per process.
+  struct MpiFixture
+  {
+    MpiFixture()
+      : mpi(boost::unit_test::framework::master_test_suite().argc,
+            boost::unit_test::framework::master_test_suite().argv, 1)
+    {}
+    dealii::Utilities::MPI::MPI_InitFinalize mpi;
+  };
+
+  /// A straight member from `start` to `end` in n elements, one building.
+  inline poundfe::Model
+  straight_member(const poundfe::Point2 &start, const poundfe::Point2 &end,
+                  const poundfe::Section &section, const unsigned int n_elements)
+  {
+    poundfe::Model model;
+    for (unsigned int i = 0; i <= n_elements; ++i)
+      {
+        poundfe::Node node;
+        const double  s = double(i) / n_elements;
+        node.position   = {start.x + s * (end.x - start.x), start.y + s * (end.y - start.y)};
+        model.nodes.push_back(node);
+      }
+    for (unsigned int i = 0; i < n_elements; ++i)
+      {
+        poundfe::Member m;
+        m.nodes   = {{i, i + 1}};
+        m.section = section;
+        model.members.push_back(m);
+      }
+    poundfe::Building b;
+    b.first_node = 0;
+    b.n_nodes    = model.nodes.size();
+    model.buildings.push_back(b);
+    return model;
+  }
+
+  /// Input for an n-storey shear building with equal storeys.
+  inline poundfe::InputParameters
+  shear_building_input(const unsigned int n, const double mass, const double stiffness,
+                       const double damping_ratio)
+  {
+    poundfe::InputParameters p;
+    p.file = "test";
+    p.buildings.resize(1);
+    auto &b              = p.buildings[0];
+    b.name               = "S";
+    b.type               = "shear";
+    b.n_storeys          = n;
+    b.floor_masses       = {mass};
+    b.storey_stiffnesses = {stiffness};
+    b.storey_heights     = {3.0};
+    b.damping_type       = damping_ratio > 0 ? "modes" : "none";
+    b.damping_ratio      = damping_ratio;
+    b.damping_modes      = {1, 2};
+    p.ground_motion.type = "none";
+    p.n_modes            = n;
+    return p;
+  }
+} // namespace poundfe_test
+
+#endif
