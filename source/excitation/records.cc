@@ -75,7 +75,10 @@ namespace poundfe
         throw InputError(file, header_end, "", "NPTS must be at least 2 and DT positive");
       std::vector<double> values, numbers;
       values.reserve(npts);
-      for (std::size_t i = header_end; i < lines.size(); ++i)
+      // Some files close with a trailer ("*** End Data ***"): stop at NPTS.
+      for (std::size_t i = header_end;
+           i < lines.size() && static_cast<long>(values.size()) < npts;
+           ++i)
         {
           if (!parse_numbers(lines[i], numbers))
             throw InputError(file, i + 1, "", "not a list of numbers: '" + lines[i] + "'");

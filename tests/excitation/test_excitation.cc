@@ -44,7 +44,7 @@ BOOST_AUTO_TEST_CASE(at2_long_header_and_west2_style)
 {
   const std::string long_header = write_temporary(
     "long.at2", "Data for El Centro\n1559 points\nformat 8F10.5\nunits g\n*** Begin data ***\n"
-                "NPTS=  4, DT= .01000 SEC\n   0.00630   0.00364   0.00099   0.00428\n");
+                "NPTS=  4, DT= .01000 SEC\n   0.00630   0.00364   0.00099   0.00428\n*** End Data ***\n");
   GroundMotion g = read_record(long_header, RecordFormat());
   BOOST_TEST(g.samples().size() == 4u);
   BOOST_TEST(g.time_step() == 0.01);

@@ -7,7 +7,10 @@
 #include <poundfe/integration/newmark.h>
 #include <poundfe/model/parameters.h>
 
+#include <poundfe/base/exceptions.h>
+
 #include <cmath>
+#include <fstream>
 
 #include "test_utilities.h"
 
@@ -147,4 +150,24 @@ BOOST_AUTO_TEST_CASE(step_ground_acceleration_gives_the_closed_form)
     }
   // 10 cycles, phase error ~ 10 * 2 pi (2 pi / 500)^2 / 12 ~ 8e-4 rad
   BOOST_TEST(worst < 2e-3 * A / (omega * omega));
+}
+
+BOOST_AUTO_TEST_CASE(nodal_forces_from_the_input_reach_their_equation)
+{
+  InputParameters p  = poundfe_test::shear_building_input(3, 1000, 5e6, 0);
+  p.harmonic_forces  = {"1 2 0 ux 800 30 0.5"};
+  const std::string table = "/tmp/poundfe-test-force.csv";
+  std::ofstream(table) << "time,force\n0 0\n0.5 1000\n1.5 -1000\n";
+  p.tabulated_forces = {"1 3 0 ux " + table};
+  const Analysis   a = prepare_analysis(p);
+  const Excitation excitation(a.system, GroundMotion(), make_nodal_forces(p, a.model));
+  Vector           load(3);
+  excitation.load(0.75, load);
+  BOOST_TEST(load[0] == 0.0);
+  BOOST_TEST(load[1] == 800 * std::sin(30 * 0.75 + 0.5), boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(load[2] == 500.0, boost::test_tools::tolerance(1e-14)); // linear between rows
+  excitation.load(2.0, load);
+  BOOST_TEST(load[2] == 0.0); // zero after the table
+  p.harmonic_forces = {"1 4 0 ux 800 30"};
+  BOOST_CHECK_THROW(make_nodal_forces(p, a.model), InputError);
 }
