@@ -23,7 +23,6 @@ namespace poundfe
     dealii::FESystem<1, 2>                fe{dealii::FE_Q<1, 2>(1), 3};
     dealii::DoFHandler<1, 2>              dof_handler;
     std::vector<int>                      equation_of_dealii_dof; // -1: fixed
-    std::vector<unsigned int>             model_dof_of_dealii_dof;
     std::vector<std::pair<double, std::string>> frames;
 
     Impl(const Model &model, const std::string &directory, const std::string &name)
@@ -50,14 +49,12 @@ namespace poundfe
       dof_handler.distribute_dofs(fe);
 
       equation_of_dealii_dof.assign(dof_handler.n_dofs(), -1);
-      model_dof_of_dealii_dof.assign(dof_handler.n_dofs(), 0);
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (unsigned int v = 0; v < 2; ++v)
           for (unsigned int c = 0; c < 3; ++c)
             {
               const auto         i    = cell->vertex_dof_index(v, c);
               const unsigned int node = cell->vertex_index(v);
-              model_dof_of_dealii_dof[i] = n_dofs_per_node * node + c;
               equation_of_dealii_dof[i]  = model.equation(n_dofs_per_node * node + c);
             }
     }

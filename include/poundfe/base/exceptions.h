@@ -39,12 +39,4 @@ namespace poundfe
   };
 } // namespace poundfe
 
-/// Throw an InputError unless the condition holds.
-#define POUNDFE_INPUT_CHECK(cond, file, line, parameter, problem)        \
-  do                                                                      \
-    {                                                                     \
-      if (!(cond))                                                        \
-        throw ::poundfe::InputError((file), (line), (parameter), (problem)); \
-  } while (false)
-
 #endif
