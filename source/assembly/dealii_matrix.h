@@ -29,6 +29,25 @@ namespace poundfe
       for (SparseMatrix::InnerIterator it(matrix, column); it; ++it)
         target.set(it.row(), it.col(), it.value());
   }
+
+  /// Copy an Eigen vector into a wrapper vector with operator[] (PETSc,
+  /// Trilinos), and back.
+  template <typename TargetVector>
+  void
+  copy_to(const Vector &source, TargetVector &target)
+  {
+    for (unsigned int i = 0; i < source.size(); ++i)
+      target[i] = source[i];
+  }
+
+  template <typename SourceVector>
+  void
+  copy_from(const SourceVector &source, Vector &target, const unsigned int n)
+  {
+    target.resize(n);
+    for (unsigned int i = 0; i < n; ++i)
+      target[i] = source[i];
+  }
 } // namespace poundfe
 
 #endif

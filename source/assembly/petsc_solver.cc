@@ -47,13 +47,10 @@ namespace poundfe
       void
       solve(const Vector &b, Vector &x) override
       {
-        for (unsigned int i = 0; i < b.size(); ++i)
-          rhs[i] = b[i];
+        copy_to(b, rhs);
         rhs.compress(dealii::VectorOperation::insert);
         lu->vmult(solution, rhs);
-        x.resize(b.size());
-        for (unsigned int i = 0; i < b.size(); ++i)
-          x[i] = solution[i];
+        copy_from(solution, x, b.size());
       }
       std::string
       name() const override

@@ -47,12 +47,9 @@ namespace poundfe
       void
       solve(const Vector &b, Vector &x) override
       {
-        for (unsigned int i = 0; i < b.size(); ++i)
-          rhs[i] = b[i];
+        copy_to(b, rhs);
         direct.solve(solution, rhs);
-        x.resize(b.size());
-        for (unsigned int i = 0; i < b.size(); ++i)
-          x[i] = solution[i];
+        copy_from(solution, x, b.size());
       }
       std::string
       name() const override
