@@ -1,4 +1,5 @@
 #include <poundfe/analysis/run.h>
+#include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/output/atomic_file.h>
@@ -13,6 +14,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 namespace poundfe
 {
@@ -69,6 +71,53 @@ namespace poundfe
       return interval <= 0 ? 1 : std::max(1u, static_cast<unsigned int>(std::lround(interval / dt)));
     }
 
+    const char *
+    component_name(const unsigned int c)
+    {
+      return c == 0 ? "ux" : (c == 1 ? "uy" : "rz");
+    }
+
+    /// "A3 node 12 (6, 3) rz" for each equation (the first DOF that maps to it).
+    std::vector<std::string>
+    equation_names(const Model &model)
+    {
+      std::vector<std::string> names(model.n_equations());
+      for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
+        {
+          const int eq = model.equation(dof);
+          if (eq < 0 || !names[eq].empty())
+            continue;
+          const Node        &node = model.nodes[dof / n_dofs_per_node];
+          std::ostringstream s;
+          s << model.buildings[node.building].name << " node " << dof / n_dofs_per_node
+            << " at (" << node.position.x << ", " << node.position.y << ") "
+            << component_name(dof % n_dofs_per_node);
+          names[eq] = s.str();
+        }
+      return names;
+    }
+
+    NewmarkParameters
+    newmark_parameters(const InputParameters &input)
+    {
+      NewmarkParameters p;
+      p.time_step                 = input.time_step;
+      p.gamma                     = input.newmark_gamma;
+      p.beta                      = input.newmark_beta;
+      p.newton.residual_tolerance = input.newton_residual_tolerance;
+      p.newton.energy_tolerance   = input.newton_energy_tolerance;
+      p.newton.max_iterations     = input.newton_max_iterations;
+      p.newton.max_step_cuts      = input.max_step_cuts;
+      p.newton.tangent_update     = input.tangent_update;
+      return p;
+    }
+
+    const char *
+    kind_name(const ElementKind kind)
+    {
+      return kind == ElementKind::hinge ? "hinge" : (kind == ElementKind::storey ? "storey" : "gap");
+    }
+
     double
     end_time_of(const InputParameters &input, const Excitation &excitation)
     {
@@ -99,18 +148,26 @@ namespace poundfe
                        "needs a positive end time when there is no ground motion");
     const unsigned long n_steps = static_cast<unsigned long>(std::llround(end / dt));
 
-    auto solver = create_linear_solver(options.linear_solver.empty() ? input.linear_solver :
-                                                                        options.linear_solver);
-    NewmarkIntegrator integrator(analysis.system, *solver,
-                                 {dt, input.newmark_gamma, input.newmark_beta});
+    UniaxialElements  elements = make_nonlinear_elements(model);
+    NewmarkIntegrator integrator(analysis.system,
+                                 options.linear_solver.empty() ? input.linear_solver :
+                                                                 options.linear_solver,
+                                 newmark_parameters(input), &elements);
+    integrator.set_equation_names(equation_names(model));
     Vector load(analysis.system.n_equations());
     excitation.load(0, load);
     integrator.initialize(load);
+    const LoadFunction load_at = [&excitation](const double t, Vector &p) { excitation.load(t, p); };
+
+    const unsigned int  n_elements = elements.size();
+    std::vector<double> peak_deformation(n_elements, 0.0), peak_force(n_elements, 0.0),
+      time_of_peak(n_elements, 0.0);
 
     FloorResponse response(model);
     const bool    files = !options.output_directory.empty();
     const std::string &dir = options.output_directory;
-    std::optional<CsvWriter> drift_csv, acceleration_csv, displacement_csv, ground_csv;
+    std::optional<CsvWriter> drift_csv, acceleration_csv, displacement_csv, ground_csv,
+      hinges_csv, energy_csv;
     std::unique_ptr<VtuSeries> vtu;
     if (files)
       {
@@ -128,6 +185,18 @@ namespace poundfe
             displacement_csv.emplace(dir + "/floor_displacement.csv", header("floor", "time"));
             ground_csv.emplace(dir + "/ground_motion.csv",
                                std::vector<std::string>{"time", "ground_acceleration"});
+            energy_csv.emplace(dir + "/energy.csv",
+                               std::vector<std::string>{"time", "input", "kinetic", "damping",
+                                                        "strain", "hysteretic", "contact",
+                                                        "balance_error"});
+            if (n_elements > 0)
+              {
+                std::vector<std::string> h{"time"};
+                for (const UniaxialElement &e : elements)
+                  for (const char *what : {"_force", "_deformation", "_z"})
+                    h.push_back(e.label + what);
+                hinges_csv.emplace(dir + "/hinges.csv", h);
+              }
           }
         if (options.vtu && input.vtu_interval > 0)
           vtu = std::make_unique<VtuSeries>(model, dir, "solution");
@@ -139,8 +208,36 @@ namespace poundfe
       const double t  = step * dt;
       const double ag = excitation.ground_acceleration(t);
       response.evaluate(t, integrator.displacement(), integrator.acceleration(), ag);
+      for (unsigned int h = 0; h < n_elements; ++h)
+        {
+          const double d = std::abs(elements[h].deformation(integrator.displacement()));
+          if (d > peak_deformation[h])
+            {
+              peak_deformation[h] = d;
+              time_of_peak[h]     = t;
+            }
+          peak_force[h] = std::max(peak_force[h], std::abs(elements[h].law->force()));
+        }
       if (drift_csv && step % csv_every == 0)
         {
+          const EnergyBalance e = integrator.energy();
+          energy_csv->begin_row(t);
+          for (const double x :
+               {e.input, e.kinetic, e.damping, e.strain, e.hysteretic, e.contact,
+                integrator.max_energy_error()})
+            energy_csv->add(x);
+          energy_csv->end_row();
+          if (hinges_csv)
+            {
+              hinges_csv->begin_row(t);
+              for (const UniaxialElement &e : elements)
+                {
+                  hinges_csv->add(e.law->force());
+                  hinges_csv->add(e.deformation(integrator.displacement()));
+                  hinges_csv->add(e.law->history_variable());
+                }
+              hinges_csv->end_row();
+            }
           const std::pair<CsvWriter *, const std::vector<double> *> rows[] = {
             {&*drift_csv, &response.drift_ratio()},
             {&*acceleration_csv, &response.absolute_acceleration()},
@@ -167,8 +264,7 @@ namespace poundfe
       {
         for (unsigned long step = 1; step <= n_steps; ++step)
           {
-            excitation.load(step * dt, load);
-            integrator.advance(load);
+            integrator.advance(load_at);
             record(step);
           }
         result.completed = true;
@@ -183,10 +279,21 @@ namespace poundfe
     result.peak_drift_ratio  = response.peak_drift_ratio();
     result.peak_acceleration = response.peak_acceleration();
     result.peak_displacement = response.peak_displacement();
+    result.statistics        = integrator.statistics();
+    result.energy            = integrator.energy();
+    result.max_energy_error  = integrator.max_energy_error();
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        const double yield = elements[h].law->yield_deformation();
+        result.element_labels.push_back(elements[h].label);
+        result.peak_element_deformation.push_back(peak_deformation[h]);
+        result.element_ductility.push_back(yield > 0 ? peak_deformation[h] / yield : 0.0);
+      }
     if (!files)
       return result;
 
-    for (auto *writer : {&drift_csv, &acceleration_csv, &displacement_csv, &ground_csv})
+    for (auto *writer : {&drift_csv, &acceleration_csv, &displacement_csv, &ground_csv,
+                         &energy_csv, &hinges_csv})
       if (*writer)
         {
           (*writer)->commit();
@@ -260,6 +367,48 @@ namespace poundfe
         json.end_array().end_object();
       }
     json.end_array();
+    if (n_elements > 0)
+      {
+        json.begin_array("hinges");
+        for (unsigned int h = 0; h < n_elements; ++h)
+          {
+            const UniaxialElement &e = elements[h];
+            json.begin_object()
+              .value("label", e.label)
+              .value("kind", kind_name(e.kind))
+              .value("building", model.buildings[e.building].name)
+              .value("yield_deformation", e.law->yield_deformation())
+              .value("peak_deformation", peak_deformation[h])
+              .value("time_of_peak_deformation_s", time_of_peak[h])
+              .value("ductility", result.element_ductility[h])
+              .value("peak_force", peak_force[h])
+              .value("dissipated_energy_J",
+                     integrator.element_work(h) - e.law->stored_energy())
+              .end_object();
+          }
+        json.end_array();
+      }
+    const EnergyBalance &energy = result.energy;
+    json.begin_object("energy")
+      .value("input_J", energy.input)
+      .value("kinetic_J", energy.kinetic)
+      .value("damping_J", energy.damping)
+      .value("strain_J", energy.strain)
+      .value("hysteretic_J", energy.hysteretic)
+      .value("contact_J", energy.contact)
+      .value("max_relative_balance_error", result.max_energy_error)
+      .end_object();
+    const IterationStatistics &stats = result.statistics;
+    json.begin_object("newton")
+      .value("nonlinear_elements", n_elements)
+      .value("tangent_update", n_elements > 0 ? integrator.tangent_update() : "none")
+      .value("mean_iterations_per_step",
+             stats.steps > 0 ? double(stats.iterations) / stats.steps : 0.0)
+      .value("max_iterations_per_step", stats.max_iterations)
+      .value("step_cuts", static_cast<unsigned long>(stats.step_cuts))
+      .value("smallest_time_step_s", stats.smallest_time_step)
+      .value("steps_including_substeps", static_cast<unsigned long>(stats.steps))
+      .end_object();
     json.begin_object("analysis")
       .value("integrator", "Newmark")
       .value("gamma", input.newmark_gamma)
@@ -267,7 +416,7 @@ namespace poundfe
       .value("time_step_s", dt)
       .value("end_time_s", result.end_time)
       .value("steps", result.steps)
-      .value("linear_solver", solver->name())
+      .value("linear_solver", integrator.linear_solver_name())
       .value("wall_time_s", result.wall_time)
       .value("steps_per_second", result.steps / std::max(result.wall_time, 1e-12))
       .end_object();
@@ -298,7 +447,35 @@ namespace poundfe
         Plot ground{"ground_motion.png", excitation.ground_motion().description(), "time (s)",
                     "ground acceleration (m/s^2)",
                     {{"ground_motion.csv", "1:2", "a_g", "lines"}}};
-        for (const auto &f : draw_plots(dir, {drift, accel, roof, ground}))
+        Plot energy_plot{"energy.png", "Energy balance (relative coordinates)", "time (s)",
+                         "energy (J)", {}};
+        const char *terms[] = {"input", "kinetic", "damping", "strain", "hysteretic", "contact"};
+        for (unsigned int i = 0; i < 6; ++i)
+          energy_plot.series.push_back(
+            {"energy.csv", "1:" + std::to_string(i + 2), terms[i], "lines"});
+        std::vector<Plot> all{drift, accel, roof, ground, energy_plot};
+        // Hysteresis loops of the (up to four) most demanded elements.
+        std::vector<unsigned int> order(n_elements);
+        for (unsigned int h = 0; h < n_elements; ++h)
+          order[h] = h;
+        std::stable_sort(order.begin(), order.end(), [&](unsigned int x, unsigned int y) {
+          return result.element_ductility[x] > result.element_ductility[y];
+        });
+        for (unsigned int i = 0; i < std::min(4u, n_elements); ++i)
+          {
+            const unsigned int     h = order[i];
+            const UniaxialElement &e = elements[h];
+            const bool             hinge = e.kind == ElementKind::hinge;
+            std::ostringstream     title;
+            title << e.label << " (ductility " << result.element_ductility[h] << ")";
+            all.push_back(Plot{"hysteresis_" + e.label + ".png", title.str(),
+                               hinge ? "rotation (rad)" : "drift (m)",
+                               hinge ? "moment (N m)" : "force (N)",
+                               {{"hinges.csv",
+                                 std::to_string(3 * h + 3) + ":" + std::to_string(3 * h + 2),
+                                 e.label, "lines"}}});
+          }
+        for (const auto &f : draw_plots(dir, all))
           result.files.push_back(dir + "/" + f);
       }
     return result;
@@ -313,8 +490,16 @@ namespace poundfe
     const RunResult result   = run_time_history(analysis, excitation, options);
     std::cout << "poundfe run: " << result.steps << " steps to t = " << result.end_time
               << " s in " << result.wall_time << " s\n";
+    if (!result.element_labels.empty())
+      std::cout << result.element_labels.size() << " nonlinear elements; Newton "
+                << double(result.statistics.iterations) / std::max(1ul, result.statistics.steps)
+                << " iterations per step (max " << result.statistics.max_iterations << "), "
+                << result.statistics.step_cuts << " step cuts\n";
+    std::cout << "energy balance error " << result.max_energy_error << " (max relative)\n";
     std::cout << "results in " << output_directory << "/ (summary.json, drift.csv, "
-              << "floor_acceleration.csv, floor_displacement.csv, solution.pvd, *.png)\n";
+              << "floor_acceleration.csv, floor_displacement.csv, energy.csv"
+              << (result.element_labels.empty() ? "" : ", hinges.csv")
+              << ", solution.pvd, *.png)\n";
     if (!result.completed)
       {
         std::cerr << "poundfe: numerical failure: " << result.message

@@ -77,6 +77,13 @@ namespace poundfe
       }
     for (const StoreyLink &link : model.links)
       scatter(model, link_dofs(link), two_node_spring(link.stiffness), k_triplets);
+    // Hinges enter with their initial stiffness: the linear part of K (and of
+    // stiffness-proportional damping) is the elastic structure.
+    for (const Hinge &hinge : model.hinges)
+      scatter(model,
+              {Model::dof(hinge.member_node, Component::rz),
+               Model::dof(hinge.joint_node, Component::rz)},
+              two_node_spring(hinge.law.stiffness), k_triplets);
     for (const NodalMass &mass : model.masses)
       for (const Component c : {Component::ux, Component::uy})
         {

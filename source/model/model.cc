@@ -18,8 +18,16 @@ namespace poundfe
              n < building.first_node + building.n_nodes;
              ++n)
           for (unsigned int c = 0; c < n_dofs_per_node; ++c)
-            if (!nodes[n].fixed[c])
+            if (!nodes[n].fixed[c] && (nodes[n].tied_to < 0 || c == 2))
               equation_of_dof[n_dofs_per_node * n + c] = n_free++;
+        // Hinge nodes share their joint's translations.
+        for (unsigned int n = building.first_node;
+             n < building.first_node + building.n_nodes;
+             ++n)
+          if (nodes[n].tied_to >= 0)
+            for (unsigned int c = 0; c < 2; ++c)
+              equation_of_dof[n_dofs_per_node * n + c] =
+                equation_of_dof[n_dofs_per_node * nodes[n].tied_to + c];
       }
     first_equation_of_building[buildings.size()] = n_free;
   }

@@ -50,6 +50,8 @@ namespace poundfe
           member.building = building;
           member.group    = group;
           member.kind     = kind;
+          member.at_joint = {{e == 1, e == n_elements}};
+          member.member_length = std::hypot(pb.x - pa.x, pb.y - pa.y);
           model.members.push_back(member);
           previous = next;
         }
@@ -69,6 +71,127 @@ namespace poundfe
         return;
       for (const unsigned int n : floor.nodes)
         model.masses.push_back({n, mass / floor.nodes.size()});
+    }
+
+    /// 1-based rank of x among sorted distinct values (within tolerance).
+    unsigned int
+    rank_of(const std::vector<double> &sorted, const double x, const double tolerance)
+    {
+      unsigned int rank = 0;
+      for (const double v : sorted)
+        if (v < x - tolerance)
+          ++rank;
+      return rank + 1;
+    }
+
+    /// Put Bouc-Wen rotational hinges at the selected member ends of building
+    /// b: the member end moves to a new node that shares the joint's
+    /// translations, and a rotational spring joins the two rotations.
+    void
+    insert_hinges(Model &model, const BuildingParameters &p, const unsigned int b,
+                  const Building &building, const unsigned int first_member)
+    {
+      if (p.hinge_locations.empty())
+        return;
+      auto wants = [&](const char *location) {
+        return std::find(p.hinge_locations.begin(), p.hinge_locations.end(), location) !=
+               p.hinge_locations.end();
+      };
+      const unsigned int last_member = model.members.size();
+      double             extent      = 0;
+      std::vector<double> column_lines;
+      for (unsigned int m = first_member; m < last_member; ++m)
+        for (const unsigned int n : model.members[m].nodes)
+          extent = std::max({extent, std::abs(model.nodes[n].position.x - building.left),
+                             std::abs(model.nodes[n].position.y - building.base_level)});
+      const double tolerance = 1e-6 * std::max(extent, 1.0);
+      for (unsigned int m = first_member; m < last_member; ++m)
+        if (model.members[m].kind == MemberKind::column)
+          {
+            const double x = model.nodes[model.members[m].nodes[0]].position.x;
+            if (std::none_of(column_lines.begin(), column_lines.end(),
+                             [&](double v) { return std::abs(v - x) <= tolerance; }))
+              column_lines.push_back(x);
+          }
+      std::sort(column_lines.begin(), column_lines.end());
+      auto floor_above = [&](const double y) { // 1-based storey containing level y
+        unsigned int f = 0;
+        while (f + 1 < building.floors.size() && building.floors[f].level < y - tolerance)
+          ++f;
+        return f + 1;
+      };
+
+      for (unsigned int m = first_member; m < last_member; ++m)
+        {
+          const Member member = model.members[m];
+          unsigned int group_index = 0;
+          if (!p.hinge_groups.empty())
+            {
+              const auto it = std::find(p.hinge_groups.begin(), p.hinge_groups.end(), member.group);
+              if (it == p.hinge_groups.end())
+                continue;
+              group_index = it - p.hinge_groups.begin();
+            }
+          const Point2 p0 = model.nodes[member.nodes[0]].position;
+          const Point2 p1 = model.nodes[member.nodes[1]].position;
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              if (!member.at_joint[k])
+                continue;
+              const unsigned int joint = member.nodes[k];
+              const Node        &jn    = model.nodes[joint];
+              const bool supported     = jn.fixed[0] || jn.fixed[1];
+              if (supported && !jn.fixed[2])
+                continue; // a pinned support already releases the rotation
+              const Point2 here  = k == 0 ? p0 : p1;
+              const Point2 there = k == 0 ? p1 : p0;
+              std::string  where;
+              if (member.kind == MemberKind::column)
+                {
+                  const bool bottom = here.y < there.y;
+                  if (!((wants("column ends")) || (wants("column tops") && !bottom) ||
+                        (wants("column bases") && bottom && supported)))
+                    continue;
+                  where = "C" + std::to_string(floor_above(std::max(here.y, there.y))) + "." +
+                          std::to_string(rank_of(column_lines, here.x, tolerance)) +
+                          (bottom ? "_bottom" : "_top");
+                }
+              else if (member.kind == MemberKind::beam)
+                {
+                  if (!wants("beam ends"))
+                    continue;
+                  const bool left = here.x < there.x;
+                  where = "B" + std::to_string(floor_above(here.y)) + "." +
+                          std::to_string(rank_of(column_lines, std::min(here.x, there.x) +
+                                                                 tolerance, tolerance)) +
+                          (left ? "_left" : "_right");
+                }
+              else
+                continue;
+
+              const double k_given = value_for(p.hinge_stiffnesses, group_index);
+              const double stiffness =
+                k_given > 0 ? k_given :
+                              p.hinge_stiffness_factor * 6 * member.section.youngs_modulus *
+                                member.section.second_moment / member.member_length;
+              const double yield_moment = value_for(p.hinge_yield_moments, group_index);
+              Hinge        hinge;
+              hinge.joint_node  = joint;
+              hinge.member_node = add_node(model, here, b);
+              hinge.member      = m;
+              hinge.building    = b;
+              hinge.label       = p.name + "_" + where;
+              hinge.law         = p.hysteresis;
+              hinge.law.stiffness = stiffness;
+              hinge.law.yield_deformation =
+                yield_moment > 0 ? yield_moment / stiffness :
+                                   value_for(p.hinge_yield_rotations, group_index);
+              model.nodes[hinge.member_node].tied_to = joint;
+              model.nodes[hinge.member_node].fixed   = {{jn.fixed[0], jn.fixed[1], false}};
+              model.members[m].nodes[k]              = hinge.member_node;
+              model.hinges.push_back(hinge);
+            }
+        }
     }
 
     void
@@ -140,6 +263,15 @@ namespace poundfe
           link.stiffness = value_for(p.storey_stiffnesses, i - 1);
           link.damping   = value_for(p.storey_damping, i - 1);
           link.building  = b;
+          const double yield_drift =
+            p.storey_yield_drifts.empty() ? 0.0 : value_for(p.storey_yield_drifts, i - 1);
+          if (yield_drift > 0)
+            {
+              link.hysteretic                   = true;
+              link.hysteresis                   = p.hysteresis;
+              link.hysteresis.stiffness         = link.stiffness;
+              link.hysteresis.yield_deformation = yield_drift;
+            }
           model.links.push_back(link);
 
           Floor floor;
@@ -271,6 +403,7 @@ namespace poundfe
         building.name       = p.name;
         building.left       = left;
         building.first_node = model.n_nodes();
+        const unsigned int first_member = model.members.size();
         if (p.type == "frame")
           {
             building.type = BuildingType::frame;
@@ -286,6 +419,7 @@ namespace poundfe
             building.type = BuildingType::mesh;
             build_from_mesh(model, input, p, b, building);
           }
+        insert_hinges(model, p, b, building, first_member);
         building.n_nodes = model.n_nodes() - building.first_node;
 
         RayleighDamping &d = building.damping;

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -70,6 +71,44 @@ namespace poundfe
       prm.add_parameter("Group I", b.group_second_moment, "Second moment per group, m^4.");
       prm.add_parameter("Group mass per length", b.group_mass_per_length,
                         "Distributed mass per group, kg/m.");
+      prm.enter_subsection("Hinges");
+      prm.add_parameter("Locations", b.hinge_locations,
+                        "Frames: member ends that get a Bouc-Wen rotational hinge. column "
+                        "bases: bottom of the ground-storey columns on clamped supports; "
+                        "column tops / column ends: top / both ends of every column; beam "
+                        "ends: both ends of every beam. Empty: an elastic frame.",
+                        Patterns::List(Patterns::Selection(
+                          "column bases|column tops|column ends|beam ends")));
+      prm.add_parameter("Groups", b.hinge_groups,
+                        "Member groups that get hinges (empty: all). Generated frames: "
+                        "group 2i-1 holds the columns of storey i, group 2i the beams of "
+                        "floor i; meshes: the physical ids.");
+      prm.add_parameter("Yield moment", b.hinge_yield_moments,
+                        "Yield moment M_y in N m, one value or one per entry of Groups; "
+                        "the yield rotation is M_y / k.");
+      prm.add_parameter("Yield rotation", b.hinge_yield_rotations,
+                        "Yield rotation in rad, used where the yield moment is 0.");
+      prm.add_parameter("Stiffness", b.hinge_stiffnesses,
+                        "Elastic rotational stiffness k in N m/rad, one value or one per "
+                        "entry of Groups; 0: Stiffness factor x 6 E I / L of the member.");
+      prm.add_parameter("Stiffness factor", b.hinge_stiffness_factor,
+                        "k = factor x 6 E I / L where Stiffness is 0 (stiff hinges keep the "
+                        "elastic frame nearly unchanged; Ibarra & Krawinkler use 10).");
+      prm.leave_subsection();
+      prm.add_parameter("Storey yield drifts", b.storey_yield_drifts,
+                        "Shear buildings: yield drift u_y in m of a Bouc-Wen storey (force "
+                        "k u_y at yield), one value or one per storey; empty or 0: elastic.");
+      prm.enter_subsection("Bouc-Wen");
+      BoucWenParameters &h = b.hysteresis;
+      prm.add_parameter("alpha", h.alpha, "Post-yield to elastic stiffness ratio.");
+      prm.add_parameter("A", h.A, "A0 (1 with beta + gamma = 1 keeps |z| <= 1).");
+      prm.add_parameter("beta", h.beta, "Loop shape.");
+      prm.add_parameter("gamma", h.gamma, "Loop shape.");
+      prm.add_parameter("n", h.n, "Sharpness of the yield transition (>= 1).");
+      prm.add_parameter("delta A", h.delta_A, "Baber-Noori strength degradation of A.");
+      prm.add_parameter("delta nu", h.delta_nu, "Baber-Noori strength degradation (nu).");
+      prm.add_parameter("delta eta", h.delta_eta, "Baber-Noori stiffness degradation (eta).");
+      prm.leave_subsection();
       prm.enter_subsection("Damping");
       prm.add_parameter("Type", b.damping_type,
                         "Rayleigh damping C = a0 M + a1 K of this building: from a damping "
@@ -180,6 +219,33 @@ namespace poundfe
       prm.add_parameter("Linear solver", p.linear_solver,
                         "Direct solver of the effective matrix (factorised once).",
                         Patterns::Selection("eigen-ldlt|umfpack|petsc|trilinos"));
+      prm.add_parameter("Newton residual tolerance", p.newton_residual_tolerance,
+                        "A nonlinear step has converged when the residual norm is below this "
+                        "times the norm of the effective load ...");
+      prm.add_parameter("Newton energy tolerance", p.newton_energy_tolerance,
+                        "... and the work of the residual on the last correction is below "
+                        "this times that of the first iteration.");
+      prm.add_parameter("Newton maximum iterations", p.newton_max_iterations,
+                        "Iterations before the step is cut.", Patterns::Integer(1, 1000));
+      prm.add_parameter("Maximum step cuts", p.max_step_cuts,
+                        "A step that fails is halved and retried, down to Time step / "
+                        "2^cuts; then the run stops (exit 2).", Patterns::Integer(0, 40));
+      prm.add_parameter("Tangent update", p.tangent_update,
+                        "How the tangent of nonlinear elements enters the solve: woodbury "
+                        "keeps the one factorisation of the linear part and adds a dense "
+                        "correction of rank = number of nonlinear elements; refactorize "
+                        "refactorises every iteration; auto picks woodbury for up to 400 "
+                        "nonlinear elements.",
+                        Patterns::Selection("auto|woodbury|refactorize"));
+      prm.add_parameter("Hysteresis integration", p.hysteresis_integration,
+                        "Bouc-Wen z over a step: trapezoidal (second order) or "
+                        "backward-euler (first order, most robust).",
+                        Patterns::Selection("trapezoidal|backward-euler"));
+      prm.add_parameter("Law tolerance", p.law_tolerance,
+                        "Tolerance of the local Newton iteration of a law (on z).");
+      prm.add_parameter("Law maximum iterations", p.law_max_iterations,
+                        "Local iterations before the law reports failure.",
+                        Patterns::Integer(1, 1000));
       prm.leave_subsection();
       prm.enter_subsection("Output");
       prm.add_parameter("Directory", p.output_directory,
@@ -356,6 +422,43 @@ namespace poundfe
               for (const double m : b.floor_masses)
                 c.non_negative(s + "Floor masses", m);
             }
+          const std::size_t n_groups = std::max<std::size_t>(1, b.hinge_groups.size());
+          if (b.type != "shear" && !b.hinge_locations.empty())
+            {
+              c.list(s + "Hinges/Yield moment", b.hinge_yield_moments, n_groups, true,
+                     "one per hinge group");
+              c.list(s + "Hinges/Yield rotation", b.hinge_yield_rotations, n_groups, true,
+                     "one per hinge group");
+              c.list(s + "Hinges/Stiffness", b.hinge_stiffnesses, n_groups, true,
+                     "one per hinge group");
+              c.positive(s + "Hinges/Stiffness factor", b.hinge_stiffness_factor);
+              for (std::size_t g = 0; g < n_groups; ++g)
+                if (b.hinge_yield_moments[b.hinge_yield_moments.size() == 1 ? 0 : g] == 0 &&
+                    b.hinge_yield_rotations[b.hinge_yield_rotations.size() == 1 ? 0 : g] == 0)
+                  c.fail(s + "Hinges/Yield moment",
+                         "hinges need a yield moment or a yield rotation (both are 0)");
+            }
+          if (b.type == "shear" && !b.storey_yield_drifts.empty())
+            c.list(s + "Storey yield drifts", b.storey_yield_drifts, n, true, "one per storey");
+          const bool hysteretic = (b.type != "shear" && !b.hinge_locations.empty()) ||
+                                  (b.type == "shear" && !b.storey_yield_drifts.empty());
+          if (hysteretic)
+            {
+              const BoucWenParameters &h  = b.hysteresis;
+              const std::string        bw = s + "Bouc-Wen/";
+              if (!(h.alpha >= 0 && h.alpha <= 1))
+                c.fail(bw + "alpha", "must lie in [0, 1], got " + std::to_string(h.alpha));
+              c.positive(bw + "A", h.A);
+              if (!(h.n >= 1) || !std::isfinite(h.n))
+                c.fail(bw + "n", "must be >= 1, got " + std::to_string(h.n));
+              if (!(h.beta + h.gamma > 0))
+                c.fail(bw + "beta", "beta + gamma must be positive (|z| stays bounded)");
+              if (!(h.beta >= std::abs(h.gamma)) && !(h.gamma >= std::abs(h.beta)))
+                c.fail(bw + "gamma", "needs beta >= |gamma| or gamma >= |beta|");
+              c.non_negative(bw + "delta A", h.delta_A);
+              c.non_negative(bw + "delta nu", h.delta_nu);
+              c.non_negative(bw + "delta eta", h.delta_eta);
+            }
           if (b.damping_type == "modes")
             {
               if (!(b.damping_ratio >= 0 && b.damping_ratio < 1))
@@ -414,6 +517,9 @@ namespace poundfe
       if (!(p.newmark_beta >= 0.25 * (0.5 + p.newmark_gamma) * (0.5 + p.newmark_gamma) - 1e-12))
         c.fail("Time integration/Newmark beta",
                "must be >= (1/2 + gamma)^2 / 4 for unconditional stability");
+      c.positive("Time integration/Newton residual tolerance", p.newton_residual_tolerance);
+      c.positive("Time integration/Newton energy tolerance", p.newton_energy_tolerance);
+      c.positive("Time integration/Law tolerance", p.law_tolerance);
       c.non_negative("Output/Output interval", p.output_interval);
       c.non_negative("Output/VTU interval", p.vtu_interval);
       if (p.output_directory.empty())
@@ -469,8 +575,14 @@ namespace poundfe
     declare_all(prm, p);
     parse(prm, file, false);
     for (unsigned int b = 0; b < p.buildings.size(); ++b)
-      if (p.buildings[b].name.empty())
-        p.buildings[b].name = "B" + std::to_string(b + 1);
+      {
+        BuildingParameters &building = p.buildings[b];
+        if (building.name.empty())
+          building.name = "B" + std::to_string(b + 1);
+        building.hysteresis.theta = p.hysteresis_integration == "trapezoidal" ? 0.5 : 1.0;
+        building.hysteresis.tolerance      = p.law_tolerance;
+        building.hysteresis.max_iterations = p.law_max_iterations;
+      }
     check(p);
     return p;
   }

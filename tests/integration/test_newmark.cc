@@ -4,6 +4,7 @@
 #define BOOST_TEST_MODULE integration
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/excitation/excitation.h>
+#include <poundfe/assembly/linear_solver.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/model/parameters.h>
 
@@ -39,8 +40,7 @@ BOOST_AUTO_TEST_CASE(harmonic_steady_state_amplitude)
     {
       const double big_omega = r * omega;
       const double dt        = 2 * M_PI / omega / 400;
-      auto         solver    = create_eigen_ldlt_solver();
-      NewmarkIntegrator integrator(a.system, *solver, {dt, 0.5, 0.25});
+      NewmarkIntegrator integrator(a.system, "eigen-ldlt", {dt, 0.5, 0.25, {}});
       Vector load = Vector::Zero(1);
       integrator.initialize(load);
       const unsigned int n = std::lround(8.0 / dt); // e^{-zeta omega 8} ~ 1e-12
@@ -65,8 +65,7 @@ BOOST_AUTO_TEST_CASE(free_vibration_decays_with_the_damping_ratio)
   const double omega = std::sqrt(k / m), omega_d = omega * std::sqrt(1 - zeta * zeta);
   const Analysis a   = sdof(m, k, zeta);
   const double   dt  = 2 * M_PI / omega / 1000;
-  auto           solver = create_eigen_ldlt_solver();
-  NewmarkIntegrator integrator(a.system, *solver, {dt, 0.5, 0.25});
+  NewmarkIntegrator integrator(a.system, "eigen-ldlt", {dt, 0.5, 0.25, {}});
   const Vector zero = Vector::Zero(1);
   integrator.initialize(zero, Vector::Constant(1, u0), zero);
   double worst = 0;
@@ -109,8 +108,7 @@ BOOST_AUTO_TEST_CASE(undamped_free_vibration_conserves_energy)
     solver->analyze_and_factorize(a.system.stiffness);
     solver->solve(a.system.mass * a.system.influence, u0);
   }
-  auto              solver = create_eigen_ldlt_solver();
-  NewmarkIntegrator integrator(a.system, *solver, {0.005, 0.5, 0.25});
+  NewmarkIntegrator integrator(a.system, "eigen-ldlt", {0.005, 0.5, 0.25, {}});
   const Vector      zero = Vector::Zero(n);
   integrator.initialize(zero, u0, zero);
   const double e0 = integrator.kinetic_energy() + integrator.strain_energy();
@@ -134,8 +132,7 @@ BOOST_AUTO_TEST_CASE(step_ground_acceleration_gives_the_closed_form)
   const double   dt  = 2 * M_PI / omega / 500;
   const Excitation excitation(a.system, GroundMotion(dt, std::vector<double>(5001, A), "step"),
                               {});
-  auto              solver = create_eigen_ldlt_solver();
-  NewmarkIntegrator integrator(a.system, *solver, {dt, 0.5, 0.25});
+  NewmarkIntegrator integrator(a.system, "eigen-ldlt", {dt, 0.5, 0.25, {}});
   Vector            load(1);
   excitation.load(0, load);
   integrator.initialize(load);

@@ -4,6 +4,7 @@
 
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/excitation/excitation.h>
+#include <poundfe/integration/newmark.h>
 
 #include <string>
 #include <vector>
@@ -29,10 +30,17 @@ namespace poundfe
     std::vector<double> peak_drift_ratio;   // FloorResponse layout
     std::vector<double> peak_acceleration;
     std::vector<double> peak_displacement;
+    // Nonlinear elements (hinges, Bouc-Wen storeys), in model order.
+    std::vector<std::string> element_labels;
+    std::vector<double>      peak_element_deformation;
+    std::vector<double>      element_ductility;
+    IterationStatistics      statistics;
+    EnergyBalance            energy;
+    double                   max_energy_error = 0;
     std::vector<std::string> files;
   };
 
-  /// Linear time history with Newmark; writes the outputs of RunOptions.
+  /// Time history with Newmark (Newton on the nonlinear elements); writes the outputs of RunOptions.
   /// A NumericalError during stepping is caught: the results so far are
   /// written and `completed` is false.
   RunResult run_time_history(const Analysis &analysis, const Excitation &excitation,

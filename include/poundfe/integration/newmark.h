@@ -1,60 +1,156 @@
-// Newmark time stepping of M u'' + C u' + K u = p(t) (Newmark 1959).
+// Newmark time stepping of M u'' + C u' + K u + f(u, u') = p(t) (Newmark 1959)
+// with Newton-Raphson on the nonlinear elements f = sum_h b_h (F_h - k_h d_h).
 //   a_{n+1} = (u_{n+1} - u_n)/(beta dt^2) - v_n/(beta dt) - (1/(2 beta) - 1) a_n
 //   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1})
-//   K_eff = K + gamma/(beta dt) C + 1/(beta dt^2) M, factorised once.
-// Average acceleration (gamma = 1/2, beta = 1/4) conserves the energy of
-// undamped free vibration exactly. The initial acceleration solves
-// M a_0 = p_0 - C v_0 - K u_0 on the equations that carry mass; massless
-// equations (rotations under lumped mass) are static and get a_0 = 0.
-// Source: Chopra, Dynamics of Structures, 4th ed., §5.4 and Table 5.4.2.
+//   K_eff = K + gamma/(beta dt) C + 1/(beta dt^2) M  (factorised once)
+//   tangent = K_eff + sum_h b_h (k_t,h - k_h + gamma/(beta dt) c_t,h) b_h^T
+// The tangent is solved by the Woodbury identity on the one factorisation
+// of K_eff (or, for many elements, by refactorising). A step that does not
+// converge is halved and retried down to dt / 2^max_cuts. Without nonlinear
+// elements a step is one solve. Average acceleration (gamma = 1/2,
+// beta = 1/4) conserves the energy of undamped free vibration exactly, and
+// the trapezoidal work sums below then balance to the Newton tolerance.
+// The initial acceleration solves M a_0 = p_0 - C v_0 - K u_0 - f_0 on the
+// equations that carry mass; massless equations (rotations under lumped
+// mass) are static and get a_0 = 0.
+// Sources: Chopra, Dynamics of Structures, 4th ed., §5.4, Table 5.7.2;
+// Belytschko, Liu & Moran, Nonlinear Finite Elements, §6.3 (energy balance).
 #ifndef poundfe_integration_newmark_h
 #define poundfe_integration_newmark_h
 
-#include <poundfe/assembly/linear_solver.h>
 #include <poundfe/assembly/linear_system.h>
+#include <poundfe/elements/uniaxial_element.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace poundfe
 {
+  struct NewtonParameters
+  {
+    double       residual_tolerance = 1e-8;
+    double       energy_tolerance   = 1e-12;
+    unsigned int max_iterations     = 20;
+    unsigned int max_step_cuts      = 10;
+    std::string  tangent_update     = "auto"; // auto | woodbury | refactorize
+  };
+
   struct NewmarkParameters
   {
-    double time_step = 0.01;
-    double gamma     = 0.5;
-    double beta      = 0.25;
+    double           time_step = 0.01;
+    double           gamma     = 0.5;
+    double           beta      = 0.25;
+    NewtonParameters newton;
   };
+
+  /// Work and energy terms of the relative-coordinate energy balance, J:
+  /// input = kinetic + damping + strain + hysteretic + contact.
+  struct EnergyBalance
+  {
+    double input      = 0; // int u'^T p dt (p includes -M r a_g)
+    double kinetic    = 0;
+    double damping    = 0; // int u'^T C u' dt
+    double strain     = 0; // recoverable: elastic structure and laws
+    double hysteretic = 0; // dissipated by hinges and storeys
+    double contact    = 0; // dissipated by gaps
+
+    double stored_and_dissipated() const
+    {
+      return kinetic + damping + strain + hysteretic + contact;
+    }
+  };
+
+  struct IterationStatistics
+  {
+    unsigned long steps      = 0; // accepted steps and sub-steps
+    unsigned long iterations = 0; // Newton iterations (solves) in them
+    unsigned int  max_iterations = 0;
+    unsigned long step_cuts  = 0;
+    double        smallest_time_step = 0;
+  };
+
+  /// p(t) into the vector.
+  using LoadFunction = std::function<void(double, Vector &)>;
 
   class NewmarkIntegrator
   {
   public:
-    NewmarkIntegrator(const LinearSystem &system, LinearSolver &solver,
-                      const NewmarkParameters &parameters);
+    /// `elements` may be null (a linear model); they are updated in place.
+    NewmarkIntegrator(const LinearSystem &system, const std::string &linear_solver,
+                      const NewmarkParameters &parameters,
+                      UniaxialElements        *elements = nullptr);
+    ~NewmarkIntegrator();
 
     /// Start at time 0 from (u0, v0) under load p0.
     void initialize(const Vector &load, const Vector &u0, const Vector &v0);
     /// Start from rest.
     void initialize(const Vector &load);
 
-    /// Advance one step; `load` is p(t_{n+1}). Throws NumericalError if the
-    /// solution stops being finite.
+    /// Advance one step to t + dt, cutting it if Newton fails; `load(t, p)`
+    /// gives p at any time in the step. Throws NumericalError (with the
+    /// time, the step size reached and where) if even the smallest step fails.
+    void advance(const LoadFunction &load);
+    /// Advance one step under p(t_{n+1}) = load (constant over a cut step).
     void advance(const Vector &load);
 
-    double time() const { return step_count * parameters.time_step; }
+    double        time() const { return current_time; }
     unsigned long steps() const { return step_count; }
     const Vector &displacement() const { return u; }
     const Vector &velocity() const { return v; }
     const Vector &acceleration() const { return a; }
 
     double kinetic_energy() const;
+    /// Recoverable strain energy: elastic structure plus the laws' stored energy.
     double strain_energy() const;
+    /// The energy terms at the current time.
+    EnergyBalance energy() const;
+    /// max over the run so far of |input - sum| / max(|input|, sum) with the
+    /// denominator's running maximum (so the start of the motion, where
+    /// both are tiny, is not divided by nearly zero).
+    double max_energy_error() const { return max_balance_error; }
+
+    const IterationStatistics &statistics() const { return stats; }
+    bool                       has_nonlinear_elements() const { return n_elements > 0; }
+    /// Work done on element h so far (trapezoidal), J.
+    double element_work(unsigned int h) const { return work[h]; }
+    /// Names of the equations, used in failure messages ("A3 (6, 3) ux").
+    void set_equation_names(std::vector<std::string> names) { equation_names = std::move(names); }
+    std::string tangent_update() const { return use_woodbury ? "woodbury" : "refactorize"; }
+    std::string linear_solver_name() const;
 
   private:
+    struct Level;
+    Level &level(unsigned int cuts);
+    bool   try_step(Level &L, const Vector &load_next);
+    void   accept(const Level &L, const Vector &load_next);
+    void   advance_from(unsigned int cuts, double t0, const LoadFunction &load);
+    bool   evaluate_elements(const Vector &u_trial, const Vector &v_trial, const Level &L);
+    void   update_energy_error();
+
     const LinearSystem &system;
-    LinearSolver       &solver;
+    std::string         solver_name;
     NewmarkParameters   parameters;
-    double              c_mass_u, c_mass_v, c_mass_a; // M (c_u u + c_v v + c_a a)
-    double              c_damp_u, c_damp_v, c_damp_a; // C (...)
-    SparseMatrix        effective;
-    Vector              u, v, a, u_next, rhs, work;
-    unsigned long       step_count = 0;
+    UniaxialElements   *elements   = nullptr;
+    unsigned int        n_elements = 0;
+    bool                use_woodbury = true;
+    std::vector<std::unique_ptr<Level>> levels;
+
+    Vector u, v, a, load_now;
+    Vector u_next, v_next, a_next, rhs, residual, increment, work_vector, load_next;
+    // Per element: trial correction F - k_ref d, tangent change, committed
+    // deformation and force, accumulated work.
+    std::vector<double> correction, tangent_change, committed_deformation, committed_force,
+      work;
+    std::string failure;
+    std::vector<std::string> equation_names;
+    double      current_time = 0;
+    unsigned long step_count = 0;
+    IterationStatistics stats;
+    EnergyBalance       balance;
+    double              energy_scale      = 0;
+    double              max_balance_error = 0;
   };
 } // namespace poundfe
 

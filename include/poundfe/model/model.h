@@ -4,6 +4,8 @@
 #ifndef poundfe_model_model_h
 #define poundfe_model_model_h
 
+#include <poundfe/laws/bouc_wen.h>
+
 #include <array>
 #include <string>
 #include <vector>
@@ -40,6 +42,8 @@ namespace poundfe
     Point2                   position;
     unsigned int             building = 0;
     std::array<bool, 3>      fixed{{false, false, false}};
+    /// A hinge node shares the translations (ux, uy) of this node; -1: none.
+    int                      tied_to = -1;
   };
 
   enum class MemberKind
@@ -57,6 +61,10 @@ namespace poundfe
     unsigned int                building = 0;
     unsigned int                group    = 0;
     MemberKind                  kind     = MemberKind::other;
+    /// Whether each end is an end of the whole member (a joint or support)
+    /// rather than a node inside a member split into several elements.
+    std::array<bool, 2>         at_joint{{true, true}};
+    double                      member_length = 0; // whole member
   };
 
   /// Shear-building storey: a horizontal spring and dashpot between floors.
@@ -66,6 +74,22 @@ namespace poundfe
     double                      stiffness = 0;
     double                      damping   = 0;
     unsigned int                building  = 0;
+    /// Bouc-Wen storey (stiffness = hysteresis.stiffness) or elastic.
+    bool                        hysteretic = false;
+    BoucWenParameters           hysteresis;
+  };
+
+  /// A rotational Bouc-Wen spring at a member end: between the rotation of
+  /// the member-side node (a copy of the joint that shares its translations)
+  /// and the joint's rotation (absent when the joint is clamped).
+  struct Hinge
+  {
+    unsigned int      member_node = 0;
+    unsigned int      joint_node  = 0;
+    unsigned int      member      = 0; // the element that carries the hinge
+    unsigned int      building    = 0;
+    std::string       label;
+    BoucWenParameters law;
   };
 
   /// Translational mass lumped at a node (acts on ux and uy).
@@ -133,6 +157,7 @@ namespace poundfe
     std::vector<Node>       nodes;
     std::vector<Member>     members;
     std::vector<StoreyLink> links;
+    std::vector<Hinge>      hinges;
     std::vector<NodalMass>  masses;
     std::vector<Building>   buildings;
     MassMatrixType          mass_matrix = MassMatrixType::lumped;

@@ -3,6 +3,8 @@
 #ifndef poundfe_model_parameters_h
 #define poundfe_model_parameters_h
 
+#include <poundfe/laws/bouc_wen.h>
+
 #include <iosfwd>
 #include <map>
 #include <string>
@@ -44,6 +46,16 @@ namespace poundfe
     std::vector<double>       group_area{0.16};
     std::vector<double>       group_second_moment{2.133e-3};
     std::vector<double>       group_mass_per_length{0.0};
+
+    // Bouc-Wen hinges at member ends (frames) and hysteretic storeys (shear).
+    std::vector<std::string>  hinge_locations;  // column bases|column tops|column ends|beam ends
+    std::vector<unsigned int> hinge_groups;     // empty: every group
+    std::vector<double>       hinge_yield_moments{0.0};
+    std::vector<double>       hinge_yield_rotations{0.0};
+    std::vector<double>       hinge_stiffnesses{0.0}; // 0: factor 6 E I / L
+    double                    hinge_stiffness_factor = 10.0;
+    std::vector<double>       storey_yield_drifts; // empty or 0: elastic storey
+    BoucWenParameters         hysteresis;          // shape; k and u_y come per spring
 
     // Rayleigh damping.
     std::string               damping_type  = "modes"; // none|modes|coefficients
@@ -106,6 +118,16 @@ namespace poundfe
     double      newmark_gamma = 0.5;
     double      newmark_beta  = 0.25;
     std::string linear_solver = "eigen-ldlt";
+
+    // Newton-Raphson of nonlinear steps.
+    double       newton_residual_tolerance = 1e-8;
+    double       newton_energy_tolerance   = 1e-12;
+    unsigned int newton_max_iterations     = 20;
+    unsigned int max_step_cuts             = 10;
+    std::string  tangent_update            = "auto"; // auto | woodbury | refactorize
+    std::string  hysteresis_integration    = "trapezoidal"; // trapezoidal | backward-euler
+    double       law_tolerance             = 1e-12;
+    unsigned int law_max_iterations        = 30;
 
     std::string  output_directory = "results";
     double       output_interval  = 0.0; // 0 = every step

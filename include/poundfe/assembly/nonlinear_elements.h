@@ -1,0 +1,14 @@
+// The nonlinear elements of a model (Bouc-Wen hinges and storeys), with
+// their equations, in the order hinges then storeys.
+#ifndef poundfe_assembly_nonlinear_elements_h
+#define poundfe_assembly_nonlinear_elements_h
+
+#include <poundfe/elements/uniaxial_element.h>
+#include <poundfe/model/model.h>
+
+namespace poundfe
+{
+  UniaxialElements make_nonlinear_elements(const Model &model);
+} // namespace poundfe
+
+#endif

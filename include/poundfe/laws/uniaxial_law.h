@@ -1,0 +1,53 @@
+// The interface of a history-dependent force-deformation law of one
+// deformation measure d (a hinge rotation, a storey drift, a gap closure),
+// after OpenSees's UniaxialMaterial (setTrialStrain / getStress / getTangent /
+// commitState / revertToLastCommit / revertToStart):
+//   set_trial(d, d_dot)  -> force(), tangent() = dF/dd, damping_tangent() = dF/dd_dot
+//   commit()             -> the trial state becomes the committed state
+//   revert()             -> the trial state is the committed state again, exactly
+// A law never changes its committed state except in commit(), so a rejected
+// Newton iteration or a cut step costs nothing but a revert().
+#ifndef poundfe_laws_uniaxial_law_h
+#define poundfe_laws_uniaxial_law_h
+
+#include <memory>
+#include <string>
+
+namespace poundfe
+{
+  class UniaxialLaw
+  {
+  public:
+    virtual ~UniaxialLaw() = default;
+
+    /// Evaluate the trial state at the end of the step. Returns false when
+    /// the law's own iteration fails; failure() then says why, and the
+    /// trial state must not be used (revert() or a new set_trial()).
+    virtual bool set_trial(double deformation, double rate) = 0;
+
+    virtual double force() const = 0;
+    /// dF/dd at the trial state, consistent with the law's integration.
+    virtual double tangent() const = 0;
+    /// dF/dd_dot at the trial state (rate-dependent laws only).
+    virtual double damping_tangent() const { return 0; }
+    /// Recoverable energy of the trial state; the work done on the law minus
+    /// this is what the law dissipated.
+    virtual double stored_energy() const = 0;
+    /// A law-specific internal variable reported in outputs (Bouc-Wen: z).
+    virtual double history_variable() const { return 0; }
+    /// Deformation at which the law yields (for ductility); 0 if none.
+    virtual double yield_deformation() const { return 0; }
+    /// Initial stiffness dF/dd at the virgin state.
+    virtual double initial_stiffness() const = 0;
+
+    virtual void commit() = 0;
+    virtual void revert() = 0;
+    /// Back to the virgin state.
+    virtual void reset() = 0;
+
+    virtual std::string failure() const { return {}; }
+    virtual std::unique_ptr<UniaxialLaw> clone() const = 0;
+  };
+} // namespace poundfe
+
+#endif

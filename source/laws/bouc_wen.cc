@@ -1,0 +1,143 @@
+#include <poundfe/laws/bouc_wen.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace poundfe
+{
+  BoucWen::BoucWen(const BoucWenParameters &parameters)
+    : p(parameters)
+  {
+    reset();
+  }
+
+  BoucWen::Rate
+  BoucWen::rate_of(const double z, const double epsilon, const double direction) const
+  {
+    const double a     = std::abs(z);
+    const double sz    = (z > 0) - (z < 0);
+    const double a_n1  = (a == 0) ? 0.0 : std::pow(a, p.n - 1);
+    const double a_n   = a_n1 * a;
+    const double psi   = p.beta * direction * sz + p.gamma;
+    const double A     = p.A - p.delta_A * epsilon;
+    const double nu    = 1 + p.delta_nu * epsilon;
+    const double eta   = 1 + p.delta_eta * epsilon;
+    const double phi   = A - nu * a_n * psi;
+    Rate         r;
+    r.g         = phi / eta;
+    r.g_z       = -nu * p.n * a_n1 * sz * psi / eta;
+    r.g_epsilon = (-p.delta_A - p.delta_nu * a_n * psi) / eta - phi * p.delta_eta / (eta * eta);
+    return r;
+  }
+
+  double
+  BoucWen::force_of(const double deformation, const double z) const
+  {
+    return p.alpha * p.stiffness * deformation + (1 - p.alpha) * p.stiffness * p.yield_deformation * z;
+  }
+
+  bool
+  BoucWen::set_trial(const double deformation, const double /*rate*/)
+  {
+    const double uy = p.yield_deformation, k = p.stiffness, th = p.theta;
+    const double du = deformation - committed.deformation;
+    const double c  = du / uy;
+    const double s  = du > 0 ? 1.0 : (du < 0 ? -1.0 : committed.direction);
+    const double z0 = committed.z, e0 = committed.epsilon;
+    const double g0 = rate_of(z0, e0, s).g;
+
+    // Residual of the discrete map and its derivative in z1.
+    auto residual = [&](const double z1, Rate &r1, double &e1) {
+      e1 = e0 + 0.5 * c * (z0 + z1);
+      r1 = rate_of(z1, e1, s);
+      return z1 - z0 - c * ((1 - th) * g0 + th * r1.g);
+    };
+
+    double z = z0, e1 = e0;
+    Rate   r1{};
+    double R         = residual(z, r1, e1);
+    bool   converged = std::abs(R) <= p.tolerance;
+    for (unsigned int it = 0; it < p.max_iterations && !converged; ++it)
+      {
+        const double dR = 1 - c * th * (r1.g_z + 0.5 * c * r1.g_epsilon);
+        if (!(std::abs(dR) > 0))
+          break;
+        double step = -R / dR;
+        // Backtrack until the residual decreases (the map is monotone in z1
+        // for beta >= gamma, so this only matters for exotic parameters).
+        for (unsigned int half = 0; half < 30; ++half)
+          {
+            Rate         r_try;
+            double       e_try;
+            const double R_try = residual(z + step, r_try, e_try);
+            if (std::abs(R_try) < std::abs(R) || half == 29)
+              {
+                z  = z + step;
+                R  = R_try;
+                r1 = r_try;
+                e1 = e_try;
+                break;
+              }
+            step *= 0.5;
+          }
+        converged = std::abs(R) <= p.tolerance;
+      }
+    if (!converged || !std::isfinite(z))
+      {
+        std::ostringstream message;
+        message << "Bouc-Wen: the local Newton iteration for z did not converge in "
+                << p.max_iterations << " iterations (increment " << du << ", z0 = " << z0
+                << ", |residual| = " << std::abs(R) << ")";
+        failure_message = message.str();
+        return false;
+      }
+
+    const double dR   = 1 - c * th * (r1.g_z + 0.5 * c * r1.g_epsilon);
+    const double dR_c = -((1 - th) * g0 + th * r1.g) - c * th * r1.g_epsilon * 0.5 * (z0 + z);
+    const double dz_du = -dR_c / dR / uy;
+
+    trial.deformation = deformation;
+    trial.z           = z;
+    trial.epsilon     = e1;
+    trial.direction   = (du != 0) ? s : committed.direction;
+    trial_force       = force_of(deformation, z);
+    trial_tangent     = p.alpha * k + (1 - p.alpha) * k * uy * dz_du;
+    return true;
+  }
+
+  double
+  BoucWen::stored_energy() const
+  {
+    const double k = p.stiffness, uy = p.yield_deformation;
+    return 0.5 * p.alpha * k * trial.deformation * trial.deformation +
+           0.5 * (1 - p.alpha) * k * uy * uy * trial.z * trial.z;
+  }
+
+  void
+  BoucWen::commit()
+  {
+    committed = trial;
+  }
+
+  void
+  BoucWen::revert()
+  {
+    trial         = committed;
+    trial_force   = force_of(trial.deformation, trial.z);
+    trial_tangent = p.stiffness * (p.alpha + (1 - p.alpha) * rate_of(trial.z, trial.epsilon,
+                                                                      trial.direction).g);
+  }
+
+  void
+  BoucWen::reset()
+  {
+    committed = State();
+    revert();
+  }
+
+  std::unique_ptr<UniaxialLaw>
+  BoucWen::clone() const
+  {
+    return std::make_unique<BoucWen>(*this);
+  }
+} // namespace poundfe
