@@ -1,8 +1,13 @@
-// Steps per second of the linear Newmark run for each solver backend:
-//   - the default example (input/two-buildings.prm) with every output but
-//     VTU on (CSV rows every output interval, peaks every step);
+// Steps per second and Newton iterations per step of the Newmark run, with
+// every output but VTU on (CSV rows every output interval, peaks and energy
+// balance every step):
+//   - the default example (input/two-buildings.prm, Bouc-Wen hinges) for each
+//     solver backend and both tangent updates, and its elastic twin;
+//   - the hinge examples input/three-storey-frame-hinges.prm and
+//     input/bouc-wen-sdof.prm;
 //   - two 10-storey, 3-bay frames side by side (a larger model).
 // Usage: build/poundfe-bench [input/two-buildings.prm] [repeats]
+// (run from the repository root).
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
 #include <poundfe/analysis/analysis.h>
@@ -44,14 +49,15 @@ namespace
   }
 
   void
-  measure(const char *label, const InputParameters &input, const unsigned int repeats)
+  measure(const char *label, const InputParameters &input, const unsigned int repeats,
+          const std::vector<std::string> &solvers = linear_solver_names())
   {
     const auto     t0       = std::chrono::steady_clock::now();
     const Analysis analysis = prepare_analysis(input);
     const double   setup    = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const Excitation excitation = make_excitation(analysis);
     const std::string dir = std::filesystem::temp_directory_path() / "poundfe-bench";
-    for (const std::string &solver : linear_solver_names())
+    for (const std::string &solver : solvers)
       {
         double best = 1e300;
         RunResult result;
@@ -65,9 +71,13 @@ namespace
             result = run_time_history(analysis, excitation, options);
             best   = std::min(best, result.wall_time);
           }
-        std::printf("%-28s %6u eqs  %-10s %8lu steps  %9.0f steps/s  (set-up %.3f s)\n", label,
-                    analysis.model.n_equations(), solver.c_str(), result.steps,
-                    result.steps / best, setup);
+        const IterationStatistics &s = result.statistics;
+        std::printf("%-34s %4u eqs %3zu nl  %-10s %-11s %7lu steps %9.0f steps/s  %5.2f it/step"
+                    "  %lu cuts  (set-up %.3f s)\n",
+                    label, analysis.model.n_equations(), result.element_labels.size(),
+                    solver.c_str(), input.tangent_update.c_str(), result.steps,
+                    result.steps / best, s.steps ? double(s.iterations) / s.steps : 0.0,
+                    s.step_cuts, setup);
       }
     std::filesystem::remove_all(dir);
   }
@@ -80,7 +90,17 @@ main(int argc, char **argv)
   const std::string  file    = argc > 1 ? argv[1] : "input/two-buildings.prm";
   const unsigned int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   const InputParameters input = read_parameters(file);
-  measure("default example", input, repeats);
-  measure("two 10-storey 3-bay frames", ten_storey_pair(input), repeats);
+  measure("default example (hinges)", input, repeats);
+  InputParameters refactorize = input;
+  refactorize.tangent_update  = "refactorize";
+  measure("default example (hinges)", refactorize, repeats, {"eigen-ldlt", "umfpack"});
+  InputParameters elastic = input;
+  for (auto &b : elastic.buildings)
+    b.hinge_locations.clear();
+  measure("default example, elastic", elastic, repeats, {"eigen-ldlt"});
+  measure("three-storey frame (hinges)", read_parameters("input/three-storey-frame-hinges.prm"),
+          repeats, {"eigen-ldlt"});
+  measure("Bouc-Wen SDOF", read_parameters("input/bouc-wen-sdof.prm"), repeats, {"eigen-ldlt"});
+  measure("two 10-storey 3-bay frames (hinges)", ten_storey_pair(input), repeats);
   return 0;
 }

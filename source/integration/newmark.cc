@@ -316,6 +316,37 @@ namespace poundfe
   }
 
   void
+  NewmarkIntegrator::residual_and_tangent(const Vector &load, const Vector &u_trial,
+                                          Vector &residual_out, Eigen::MatrixXd &tangent_out)
+  {
+    Level       &L  = level(0);
+    const double g  = parameters.gamma;
+    Vector       an = L.c_mass_u * (u_trial - u) - L.c_mass_v * v - L.c_mass_a * a;
+    Vector       vn = v + L.dt * ((1 - g) * a + g * an);
+    if (!evaluate_elements(u_trial, vn, L))
+      throw NumericalError(failure);
+    if (!use_woodbury)
+      std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
+    residual_out = load - system.mass * an - system.damping * vn - system.stiffness * u_trial;
+    tangent_out  = Eigen::MatrixXd(L.effective);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        const UniaxialElement &e = (*elements)[h];
+        for (unsigned int i = 0; i < 2; ++i)
+          if (e.equations[i] >= 0)
+            {
+              residual_out[e.equations[i]] -= e.signs[i] * correction[h];
+              for (unsigned int j = 0; j < 2; ++j)
+                if (e.equations[j] >= 0)
+                  tangent_out(e.equations[i], e.equations[j]) +=
+                    tangent_change[h] * e.signs[i] * e.signs[j];
+            }
+      }
+    for (unsigned int h = 0; h < n_elements; ++h)
+      (*elements)[h].law->revert();
+  }
+
+  void
   NewmarkIntegrator::accept(const Level &L, const Vector &p)
   {
     // Trapezoidal work of the step; exact for the average-acceleration rule.

@@ -38,5 +38,10 @@ for file in "$dir"/*.prm; do
 done
 check "$dir/does-not-exist.prm" 1 "cannot open the parameter file"
 check "$dir/../mechanism.prm" 2 "singular"
+check "$dir/../newton-failure.prm" 2 "failed even at dt"
+for f in summary.json hinges.csv energy.csv drift.csv; do
+  [ -s "$work/out/$f" ] || { echo "FAIL newton-failure: results so far not kept ($f)"; failures=$((failures + 1)); }
+done
+grep -q '"status": "failed"' "$work/out/summary.json" || { echo "FAIL newton-failure: status"; failures=$((failures + 1)); }
 echo "$n bad-input files, $failures failures"
 [ "$failures" -eq 0 ]

@@ -115,6 +115,12 @@ namespace poundfe
     bool                       has_nonlinear_elements() const { return n_elements > 0; }
     /// Work done on element h so far (trapezoidal), J.
     double element_work(unsigned int h) const { return work[h]; }
+    /// The residual R(u_trial) of the next step under p(t_{n+1}) = load, and
+    /// the dense tangent -dR/du that Newton uses (for checks and
+    /// diagnostics; the laws are reverted afterwards).
+    void residual_and_tangent(const Vector &load, const Vector &u_trial, Vector &residual_out,
+                              Eigen::MatrixXd &tangent_out);
+
     /// Names of the equations, used in failure messages ("A3 (6, 3) ux").
     void set_equation_names(std::vector<std::string> names) { equation_names = std::move(names); }
     std::string tangent_update() const { return use_woodbury ? "woodbury" : "refactorize"; }
