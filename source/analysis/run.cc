@@ -161,7 +161,7 @@ namespace poundfe
 
     const unsigned int  n_elements = elements.size();
     std::vector<double> peak_deformation(n_elements, 0.0), peak_force(n_elements, 0.0),
-      time_of_peak(n_elements, 0.0);
+      time_of_peak(n_elements, 0.0), peak_plastic(n_elements, 0.0);
 
     FloorResponse response(model);
     const bool    files = !options.output_directory.empty();
@@ -216,7 +216,14 @@ namespace poundfe
               peak_deformation[h] = d;
               time_of_peak[h]     = t;
             }
-          peak_force[h] = std::max(peak_force[h], std::abs(elements[h].law->force()));
+          const double f = elements[h].law->force();
+          peak_force[h]  = std::max(peak_force[h], std::abs(f));
+          // plastic part: the deformation left after elastic unloading
+          const double k0 = elements[h].law->initial_stiffness();
+          if (k0 > 0)
+            peak_plastic[h] = std::max(
+              peak_plastic[h],
+              std::abs(elements[h].deformation(integrator.displacement()) - f / k0));
         }
       if (drift_csv && step % csv_every == 0)
         {
@@ -381,6 +388,7 @@ namespace poundfe
               .value("peak_deformation", peak_deformation[h])
               .value("time_of_peak_deformation_s", time_of_peak[h])
               .value("ductility", result.element_ductility[h])
+              .value("peak_plastic_deformation", peak_plastic[h])
               .value("peak_force", peak_force[h])
               .value("dissipated_energy_J",
                      integrator.element_work(h) - e.law->stored_energy())

@@ -58,3 +58,25 @@ BOOST_AUTO_TEST_CASE(single_storey_frequency_is_sqrt_k_over_m)
   const Analysis a = prepare_analysis(poundfe_test::shear_building_input(1, 2500, 8e6, 0));
   BOOST_TEST(a.modes.omega[0] == std::sqrt(8e6 / 2500), boost::test_tools::tolerance(1e-12));
 }
+
+BOOST_AUTO_TEST_CASE(rigid_hinges_leave_the_modes_of_the_elastic_frame)
+{
+  // A hinge is a rotational spring in series with the member end: as its
+  // stiffness grows the frame tends to the one without hinges.
+  InputParameters hinged = read_parameters("input/three-storey-frame-hinges.prm");
+  InputParameters plain  = read_parameters("input/three-storey-frame.prm");
+  const Analysis  elastic = prepare_analysis(plain);
+  double          previous_error = 1;
+  for (const double factor : {10.0, 1e3, 1e5})
+    {
+      hinged.buildings[0].hinge_stiffness_factor = factor;
+      const Analysis a = prepare_analysis(hinged);
+      const double   error =
+        std::abs(a.modes.frequency(0) - elastic.modes.frequency(0)) / elastic.modes.frequency(0);
+      BOOST_TEST_MESSAGE("factor " << factor << ": first-mode difference " << error);
+      BOOST_TEST(a.modes.frequency(0) < elastic.modes.frequency(0)); // springs soften
+      BOOST_TEST(error < previous_error);
+      previous_error = error;
+    }
+  BOOST_TEST(previous_error < 1e-4); // ~ 1/factor
+}

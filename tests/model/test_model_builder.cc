@@ -70,3 +70,52 @@ BOOST_AUTO_TEST_CASE(elements_per_member_subdivide_members)
   BOOST_TEST(model.n_nodes() == 4u + 9u);
   BOOST_TEST(model.buildings[0].floors[0].nodes.size() == 2u); // joints only
 }
+
+BOOST_AUTO_TEST_CASE(hinges_at_column_bases_and_beam_ends)
+{
+  // three-storey, one-bay frame: 2 column bases + 3 floors x 2 beam ends
+  const InputParameters p = read_parameters("input/three-storey-frame-hinges.prm");
+  const Model           model = build_model(p);
+  BOOST_TEST(model.hinges.size() == 8u);
+  const BuildingParameters &b = p.buildings[0];
+  for (const Hinge &h : model.hinges)
+    {
+      // the member-side node shares the joint's translations only
+      for (const Component c : {Component::ux, Component::uy})
+        BOOST_TEST(model.equation(Model::dof(h.member_node, c)) ==
+                   model.equation(Model::dof(h.joint_node, c)));
+      BOOST_TEST(model.equation(Model::dof(h.member_node, Component::rz)) >= 0);
+      BOOST_TEST(model.equation(Model::dof(h.member_node, Component::rz)) !=
+                 model.equation(Model::dof(h.joint_node, Component::rz)));
+      const Member &m = model.members[h.member];
+      BOOST_TEST((m.nodes[0] == h.member_node || m.nodes[1] == h.member_node));
+      // k = factor 6 E I / L and theta_y = M_y / k
+      const double k = b.hinge_stiffness_factor * 6 * m.section.youngs_modulus *
+                       m.section.second_moment / m.member_length;
+      BOOST_TEST(h.law.stiffness == k, boost::test_tools::tolerance(1e-12));
+      const bool   column = m.kind == MemberKind::column;
+      const double my     = column ? 200e3 : (h.label.find("_B3") != std::string::npos ? 120e3 : 150e3);
+      BOOST_TEST(h.law.yield_deformation == my / k, boost::test_tools::tolerance(1e-12));
+    }
+  // column-base hinges sit on the clamped supports (joint rotation fixed)
+  unsigned int bases = 0;
+  for (const Hinge &h : model.hinges)
+    if (h.label.find("_bottom") != std::string::npos)
+      {
+        ++bases;
+        BOOST_TEST(model.equation(Model::dof(h.joint_node, Component::rz)) < 0);
+      }
+  BOOST_TEST(bases == 2u);
+  BOOST_TEST(model.hinges[0].label.rfind("frame3_", 0) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(bouc_wen_storeys_from_yield_drifts)
+{
+  InputParameters p = poundfe_test::shear_building_input(3, 1000, 5e6, 0.02);
+  p.buildings[0].storey_yield_drifts = {0.01, 0.0, 0.02};
+  const Model model                 = build_model(p);
+  BOOST_TEST(model.links[0].hysteretic);
+  BOOST_TEST(!model.links[1].hysteretic);
+  BOOST_TEST(model.links[2].hysteresis.yield_deformation == 0.02);
+  BOOST_TEST(model.links[2].hysteresis.stiffness == 5e6);
+}
