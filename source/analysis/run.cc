@@ -109,6 +109,7 @@ namespace poundfe
       p.newton.max_iterations     = input.newton_max_iterations;
       p.newton.max_step_cuts      = input.max_step_cuts;
       p.newton.tangent_update     = input.tangent_update;
+      p.newton.event_refinement   = input.contact.event_refinement;
       return p;
     }
 
@@ -160,6 +161,11 @@ namespace poundfe
     const LoadFunction load_at = [&excitation](const double t, Vector &p) { excitation.load(t, p); };
 
     const unsigned int  n_elements = elements.size();
+    // elements are hinges and storeys first, then gaps
+    unsigned int n_hysteretic = 0;
+    while (n_hysteretic < n_elements && elements[n_hysteretic].kind != ElementKind::gap)
+      ++n_hysteretic;
+    const unsigned int n_gaps = n_elements - n_hysteretic;
     std::vector<double> peak_deformation(n_elements, 0.0), peak_force(n_elements, 0.0),
       time_of_peak(n_elements, 0.0), peak_plastic(n_elements, 0.0);
 
@@ -167,7 +173,7 @@ namespace poundfe
     const bool    files = !options.output_directory.empty();
     const std::string &dir = options.output_directory;
     std::optional<CsvWriter> drift_csv, acceleration_csv, displacement_csv, ground_csv,
-      hinges_csv, energy_csv;
+      hinges_csv, energy_csv, contact_csv;
     std::unique_ptr<VtuSeries> vtu;
     if (files)
       {
@@ -189,13 +195,21 @@ namespace poundfe
                                std::vector<std::string>{"time", "input", "kinetic", "damping",
                                                         "strain", "hysteretic", "contact",
                                                         "balance_error"});
-            if (n_elements > 0)
+            if (n_hysteretic > 0)
               {
                 std::vector<std::string> h{"time"};
-                for (const UniaxialElement &e : elements)
+                for (unsigned int i = 0; i < n_hysteretic; ++i)
                   for (const char *what : {"_force", "_deformation", "_z"})
-                    h.push_back(e.label + what);
+                    h.push_back(elements[i].label + what);
                 hinges_csv.emplace(dir + "/hinges.csv", h);
+              }
+            if (n_gaps > 0)
+              {
+                std::vector<std::string> h{"time"};
+                for (unsigned int i = n_hysteretic; i < n_elements; ++i)
+                  for (const char *what : {"_force", "_penetration"})
+                    h.push_back(elements[i].label + what);
+                contact_csv.emplace(dir + "/contact_force.csv", h);
               }
           }
         if (options.vtu && input.vtu_interval > 0)
@@ -237,13 +251,24 @@ namespace poundfe
           if (hinges_csv)
             {
               hinges_csv->begin_row(t);
-              for (const UniaxialElement &e : elements)
+              for (unsigned int i = 0; i < n_hysteretic; ++i)
                 {
+                  const UniaxialElement &e = elements[i];
                   hinges_csv->add(e.law->force());
                   hinges_csv->add(e.deformation(integrator.displacement()));
                   hinges_csv->add(e.law->history_variable());
                 }
               hinges_csv->end_row();
+            }
+          if (contact_csv)
+            {
+              contact_csv->begin_row(t);
+              for (unsigned int i = n_hysteretic; i < n_elements; ++i)
+                {
+                  contact_csv->add(elements[i].law->force());
+                  contact_csv->add(elements[i].law->history_variable());
+                }
+              contact_csv->end_row();
             }
           const std::pair<CsvWriter *, const std::vector<double> *> rows[] = {
             {&*drift_csv, &response.drift_ratio()},
@@ -289,7 +314,8 @@ namespace poundfe
     result.statistics        = integrator.statistics();
     result.energy            = integrator.energy();
     result.max_energy_error  = integrator.max_energy_error();
-    for (unsigned int h = 0; h < n_elements; ++h)
+    result.impacts = integrator.impact_log().impacts();
+    for (unsigned int h = 0; h < n_hysteretic; ++h)
       {
         const double yield = elements[h].law->yield_deformation();
         result.element_labels.push_back(elements[h].label);
@@ -300,7 +326,7 @@ namespace poundfe
       return result;
 
     for (auto *writer : {&drift_csv, &acceleration_csv, &displacement_csv, &ground_csv,
-                         &energy_csv, &hinges_csv})
+                         &energy_csv, &hinges_csv, &contact_csv})
       if (*writer)
         {
           (*writer)->commit();
@@ -374,10 +400,10 @@ namespace poundfe
         json.end_array().end_object();
       }
     json.end_array();
-    if (n_elements > 0)
+    if (n_hysteretic > 0)
       {
         json.begin_array("hinges");
-        for (unsigned int h = 0; h < n_elements; ++h)
+        for (unsigned int h = 0; h < n_hysteretic; ++h)
           {
             const UniaxialElement &e = elements[h];
             json.begin_object()
@@ -392,6 +418,67 @@ namespace poundfe
               .value("peak_force", peak_force[h])
               .value("dissipated_energy_J",
                      integrator.element_work(h) - e.law->stored_energy())
+              .end_object();
+          }
+        json.end_array();
+      }
+    if (n_gaps > 0)
+      {
+        const ContactLawParameters &law = model.contact;
+        json.begin_object("contact")
+          .value("law", law.law)
+          .value("stiffness", law.stiffness)
+          .value("damping_parameter", law.damping)
+          .value("damping_from", input.contact.damping_from)
+          .value("coefficient_of_restitution", input.contact.restitution)
+          .end_object();
+        std::string impacts_csv = "gap,buildings,level,start_time,max_penetration_time,end_time,"
+                                  "approach_velocity,separation_velocity,max_penetration,"
+                                  "peak_force,impulse\n";
+        std::vector<unsigned int> count(n_gaps, 0);
+        std::vector<double>       peak(n_gaps, 0.0), penetration(n_gaps, 0.0), impulse(n_gaps, 0.0);
+        for (const Impact &impact : result.impacts)
+          {
+            const unsigned int g   = impact.element - n_hysteretic;
+            const Gap         &gap = model.gaps[g];
+            ++count[g];
+            peak[g]        = std::max(peak[g], impact.peak_force);
+            penetration[g] = std::max(penetration[g], impact.max_penetration);
+            impulse[g] += impact.impulse;
+            std::ostringstream row;
+            row.precision(10);
+            row << gap.label << "," << model.buildings[gap.buildings[0]].name;
+            if (gap.nodes[0] >= 0 && gap.nodes[1] >= 0)
+              row << "|" << model.buildings[gap.buildings[1]].name;
+            else
+              row << "|barrier";
+            row << "," << gap.level << "," << impact.start_time << ","
+                << impact.max_penetration_time << ",";
+            if (impact.end_time >= 0)
+              row << impact.end_time;
+            row << "," << impact.approach_velocity << "," << impact.separation_velocity << ","
+                << impact.max_penetration << "," << impact.peak_force << "," << impact.impulse
+                << "\n";
+            impacts_csv += row.str();
+          }
+        write_file_atomically(dir + "/impacts.csv", impacts_csv);
+        result.files.push_back(dir + "/impacts.csv");
+        json.begin_array("gaps");
+        for (unsigned int g = 0; g < n_gaps; ++g)
+          {
+            const Gap             &gap = model.gaps[g];
+            const UniaxialElement &e   = elements[n_hysteretic + g];
+            json.begin_object()
+              .value("label", gap.label)
+              .value("level_m", gap.level)
+              .value("initial_gap_m", gap.initial_gap)
+              .value("effective_mass_kg", gap.effective_mass)
+              .value("impacts", count[g])
+              .value("peak_force_N", peak[g])
+              .value("max_penetration_m", penetration[g])
+              .value("total_impulse_N_s", impulse[g])
+              .value("dissipated_energy_J",
+                     integrator.element_work(n_hysteretic + g) - e.law->stored_energy())
               .end_object();
           }
         json.end_array();
@@ -414,6 +501,7 @@ namespace poundfe
              stats.steps > 0 ? double(stats.iterations) / stats.steps : 0.0)
       .value("max_iterations_per_step", stats.max_iterations)
       .value("step_cuts", static_cast<unsigned long>(stats.step_cuts))
+      .value("event_refinements", static_cast<unsigned long>(stats.event_refinements))
       .value("smallest_time_step_s", stats.smallest_time_step)
       .value("steps_including_substeps", static_cast<unsigned long>(stats.steps))
       .end_object();
@@ -463,13 +551,13 @@ namespace poundfe
             {"energy.csv", "1:" + std::to_string(i + 2), terms[i], "lines"});
         std::vector<Plot> all{drift, accel, roof, ground, energy_plot};
         // Hysteresis loops of the (up to four) most demanded elements.
-        std::vector<unsigned int> order(n_elements);
-        for (unsigned int h = 0; h < n_elements; ++h)
+        std::vector<unsigned int> order(n_hysteretic);
+        for (unsigned int h = 0; h < n_hysteretic; ++h)
           order[h] = h;
         std::stable_sort(order.begin(), order.end(), [&](unsigned int x, unsigned int y) {
           return result.element_ductility[x] > result.element_ductility[y];
         });
-        for (unsigned int i = 0; i < std::min(4u, n_elements); ++i)
+        for (unsigned int i = 0; i < std::min(4u, n_hysteretic); ++i)
           {
             const unsigned int     h = order[i];
             const UniaxialElement &e = elements[h];
@@ -482,6 +570,14 @@ namespace poundfe
                                {{"hinges.csv",
                                  std::to_string(3 * h + 3) + ":" + std::to_string(3 * h + 2),
                                  e.label, "lines"}}});
+          }
+        if (n_gaps > 0)
+          {
+            Plot contact{"contact_force.png", "Contact forces", "time (s)", "force (N)", {}};
+            for (unsigned int g = 0; g < n_gaps; ++g)
+              contact.series.push_back({"contact_force.csv", "1:" + std::to_string(2 * g + 2),
+                                        model.gaps[g].label, "lines"});
+            all.push_back(contact);
           }
         for (const auto &f : draw_plots(dir, all))
           result.files.push_back(dir + "/" + f);
@@ -503,6 +599,9 @@ namespace poundfe
                 << double(result.statistics.iterations) / std::max(1ul, result.statistics.steps)
                 << " iterations per step (max " << result.statistics.max_iterations << "), "
                 << result.statistics.step_cuts << " step cuts\n";
+    if (!analysis.model.gaps.empty())
+      std::cout << analysis.model.gaps.size() << " gap elements, " << result.impacts.size()
+                << " impacts (impacts.csv)\n";
     std::cout << "energy balance error " << result.max_energy_error << " (max relative)\n";
     std::cout << "results in " << output_directory << "/ (summary.json, drift.csv, "
               << "floor_acceleration.csv, floor_displacement.csv, energy.csv"

@@ -1,5 +1,6 @@
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/laws/bouc_wen.h>
+#include <poundfe/laws/contact_law.h>
 
 namespace poundfe
 {
@@ -33,6 +34,21 @@ namespace poundfe
                         model.equation(Model::dof(link.nodes[0], Component::ux))}};
         e.reference_stiffness = link.stiffness;
         e.law                 = std::make_unique<BoucWen>(link.hysteresis);
+        elements.push_back(std::move(e));
+      }
+    for (const Gap &gap : model.gaps)
+      {
+        UniaxialElement e;
+        e.kind     = ElementKind::gap;
+        e.building = gap.buildings[0];
+        e.label    = gap.label;
+        for (unsigned int i = 0; i < 2; ++i)
+          e.equations[i] =
+            gap.nodes[i] < 0 ? -1 : model.equation(Model::dof(gap.nodes[i], Component::ux));
+        ContactLawParameters law = model.contact;
+        law.initial_gap          = gap.initial_gap;
+        law.effective_mass       = gap.effective_mass;
+        e.law                    = make_contact_law(law);
         elements.push_back(std::move(e));
       }
     return elements;

@@ -43,8 +43,12 @@ namespace poundfe
     for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &rhs, &residual,
                       &increment, &work_vector, &load_next})
       x->setZero(n);
-    for (auto *x : {&correction, &tangent_change, &committed_deformation, &committed_force, &work})
+    for (auto *x : {&correction, &tangent_change, &committed_deformation, &committed_force,
+                    &committed_history, &committed_rate, &work})
       x->assign(n_elements, 0.0);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      if ((*elements)[h].kind == ElementKind::gap)
+        gap_elements.push_back(h);
     level(0);
   }
 
@@ -134,6 +138,7 @@ namespace poundfe
     stats        = IterationStatistics();
     stats.smallest_time_step = parameters.time_step;
     balance           = EnergyBalance();
+    impacts.reset(n_elements);
     energy_scale      = 0;
     max_balance_error = 0;
     Vector r = load - system.damping * v0 - system.stiffness * u0;
@@ -147,6 +152,8 @@ namespace poundfe
         e.law->commit();
         committed_deformation[h] = d;
         committed_force[h]       = e.law->force();
+        committed_history[h]     = e.law->history_variable();
+        committed_rate[h]        = e.deformation(v0);
         work[h]                  = e.law->stored_energy();
         const double f           = e.law->force() - e.reference_stiffness * d;
         for (unsigned int i = 0; i < 2; ++i)
@@ -349,6 +356,13 @@ namespace poundfe
   void
   NewmarkIntegrator::accept(const Level &L, const Vector &p)
   {
+    for (const unsigned int h : gap_elements)
+      {
+        const UniaxialElement &e = (*elements)[h];
+        impacts.record(h, current_time, current_time + L.dt,
+                       {committed_history[h], committed_rate[h], committed_force[h]},
+                       {e.law->history_variable(), e.deformation(v_next), e.law->force()});
+      }
     // Trapezoidal work of the step; exact for the average-acceleration rule.
     work_vector = u_next - u;
     balance.input += 0.5 * work_vector.dot(load_now + p);
@@ -361,6 +375,8 @@ namespace poundfe
         e.law->commit();
         committed_deformation[h] = d;
         committed_force[h]       = e.law->force();
+        committed_history[h]     = e.law->history_variable();
+        committed_rate[h]        = e.deformation(v_next);
       }
     u.swap(u_next);
     v.swap(v_next);
@@ -378,7 +394,12 @@ namespace poundfe
     const double t1 = (cuts == 0) ? (step_count + 1) * parameters.time_step : t0 + L.dt;
     load(t1, load_next);
     const Vector p = load_next; // load_next is reused by the sub-steps
-    if (try_step(L, p))
+    const bool converged = try_step(L, p);
+    bool       event     = false;
+    if (converged && cuts < parameters.newton.event_refinement)
+      for (const unsigned int h : gap_elements)
+        event = event || (*elements)[h].law->is_active() != (*elements)[h].law->was_active();
+    if (converged && !event)
       {
         accept(L, p);
         current_time = t1;
@@ -386,6 +407,13 @@ namespace poundfe
       }
     for (unsigned int h = 0; h < n_elements; ++h)
       (*elements)[h].law->revert();
+    if (event)
+      {
+        ++stats.event_refinements;
+        advance_from(cuts + 1, t0, load);
+        advance_from(cuts + 1, t0 + 0.5 * L.dt, load);
+        return;
+      }
     if (cuts >= parameters.newton.max_step_cuts)
       {
         std::ostringstream message;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 namespace poundfe
 {
@@ -387,6 +388,190 @@ namespace poundfe
       for (unsigned int i = 0; i < building.floors.size(); ++i)
         lump_floor_mass(model, building.floors[i], value_for(p.floor_masses, i));
     }
+    double
+    floor_mass(const Model &model, const Floor &floor)
+    {
+      double mass = 0;
+      for (const NodalMass &m : model.masses)
+        if (std::find(floor.nodes.begin(), floor.nodes.end(), m.node) != floor.nodes.end())
+          mass += m.mass;
+      return mass;
+    }
+
+    /// The joint of a floor that faces the neighbour: rightmost or leftmost.
+    unsigned int
+    facing_node(const Model &model, const Floor &floor, const bool right_side)
+    {
+      unsigned int best = floor.nodes.front();
+      for (const unsigned int n : floor.nodes)
+        if (right_side ? model.nodes[n].position.x > model.nodes[best].position.x :
+                         model.nodes[n].position.x < model.nodes[best].position.x)
+          best = n;
+      return best;
+    }
+
+    /// A node of building b's facing column line at `level`, splitting the
+    /// column element that spans it; -1 if there is none.
+    int
+    node_on_facing_column(Model &model, const unsigned int b, const bool right_side,
+                          const double level, const double tolerance)
+    {
+      const Building &building = model.buildings[b];
+      const double    x        = right_side ? building.right : building.left;
+      for (unsigned int n = 0; n < model.n_nodes(); ++n)
+        if (model.nodes[n].building == b && model.nodes[n].tied_to < 0 &&
+            std::abs(model.nodes[n].position.x - x) <= tolerance &&
+            std::abs(model.nodes[n].position.y - level) <= tolerance)
+          return n;
+      for (unsigned int m = 0; m < model.members.size(); ++m)
+        {
+          const Member member = model.members[m];
+          if (member.building != b || member.kind != MemberKind::column)
+            continue;
+          const Point2 p0 = model.nodes[member.nodes[0]].position;
+          const Point2 p1 = model.nodes[member.nodes[1]].position;
+          if (std::abs(p0.x - x) > tolerance || std::abs(p1.x - x) > tolerance)
+            continue;
+          if (!(std::min(p0.y, p1.y) < level - tolerance && std::max(p0.y, p1.y) > level + tolerance))
+            continue;
+          const unsigned int node = add_node(model, {x, level}, b);
+          Member             upper = member;
+          upper.nodes[0]           = node;
+          upper.at_joint[0]        = false;
+          model.members[m].nodes[1]    = node;
+          model.members[m].at_joint[1] = false;
+          model.members.push_back(upper);
+          // a hinge at the far end now belongs to the new element
+          for (Hinge &h : model.hinges)
+            if (h.member == m && h.member_node == upper.nodes[1])
+              h.member = model.members.size() - 1;
+          return node;
+        }
+      return -1;
+    }
+
+    void
+    add_gaps_between(Model &model, const ContactParameters &contact, const unsigned int left,
+                     const unsigned int right, const double separation)
+    {
+      const Building &L = model.buildings[left], &R = model.buildings[right];
+      if (L.floors.empty() || R.floors.empty())
+        return;
+      const double tolerance = 1e-6 * std::max(L.floors.back().level, R.floors.back().level);
+      // every level of either building up to the lower roof
+      std::vector<double> levels;
+      const double        top = std::min(L.floors.back().level, R.floors.back().level);
+      for (const Building *b : {&L, &R})
+        for (const Floor &f : b->floors)
+          if (f.level <= top + tolerance &&
+              std::none_of(levels.begin(), levels.end(),
+                           [&](double y) { return std::abs(y - f.level) <= tolerance; }))
+            levels.push_back(f.level);
+      std::sort(levels.begin(), levels.end());
+      for (const double level : levels)
+        {
+          auto floor_at = [&](const Building &b) -> const Floor * {
+            for (const Floor &f : b.floors)
+              if (std::abs(f.level - level) <= tolerance)
+                return &f;
+            return nullptr;
+          };
+          const Floor *fl = floor_at(L), *fr = floor_at(R);
+          if ((!fl || !fr) && !contact.floor_to_column)
+            continue;
+          const int nl = fl ? int(facing_node(model, *fl, true)) :
+                              (L.type == BuildingType::shear ?
+                                 -1 :
+                                 node_on_facing_column(model, left, true, level, tolerance));
+          const int nr = fr ? int(facing_node(model, *fr, false)) :
+                              (R.type == BuildingType::shear ?
+                                 -1 :
+                                 node_on_facing_column(model, right, false, level, tolerance));
+          if (nl < 0 || nr < 0)
+            continue;
+          // colliding masses: the floors at this level, or the nearest floor
+          auto mass_near = [&](const Building &b) {
+            const Floor *best = &b.floors.front();
+            for (const Floor &f : b.floors)
+              if (std::abs(f.level - level) < std::abs(best->level - level))
+                best = &f;
+            return floor_mass(model, *best);
+          };
+          const double m1 = mass_near(model.buildings[left]), m2 = mass_near(model.buildings[right]);
+          Gap gap;
+          gap.nodes          = {{nl, nr}};
+          gap.buildings      = {{left, right}};
+          gap.level          = level;
+          gap.initial_gap    = separation;
+          gap.effective_mass = contact.effective_mass > 0 ? contact.effective_mass :
+                                                             m1 * m2 / (m1 + m2);
+          std::ostringstream label;
+          label << model.buildings[left].name << "-" << model.buildings[right].name << "@"
+                << level << (fl && fr ? "" : "c");
+          gap.label = label.str();
+          model.gaps.push_back(gap);
+        }
+    }
+
+    void
+    add_barrier(Model &model, const InputParameters &input, const std::string &entry)
+    {
+      const std::string path = "Contact/Barriers";
+      std::istringstream in(entry);
+      unsigned int       b = 0, f = 0;
+      std::string        side;
+      double             gap = 0;
+      if (!(in >> b >> f >> side >> gap) || (side != "left" && side != "right") || !(gap >= 0))
+        throw InputError(input.file, input.line_of(path), path,
+                         "'" + entry + "': expected 'building floor left|right gap' with gap >= 0");
+      if (b < 1 || b > model.buildings.size())
+        throw InputError(input.file, input.line_of(path), path,
+                         "'" + entry + "': building must be 1 to " +
+                           std::to_string(model.buildings.size()));
+      const Building &building = model.buildings[b - 1];
+      if (f < 1 || f > building.floors.size())
+        throw InputError(input.file, input.line_of(path), path,
+                         "'" + entry + "': floor must be 1 to " +
+                           std::to_string(building.floors.size()));
+      const Floor &floor = building.floors[f - 1];
+      const int    node  = facing_node(model, floor, side == "right");
+      Gap          g;
+      g.nodes          = side == "right" ? std::array<int, 2>{{node, -1}} : std::array<int, 2>{{-1, node}};
+      g.buildings      = {{b - 1, b - 1}};
+      g.level          = floor.level;
+      g.initial_gap    = gap;
+      g.effective_mass = input.contact.effective_mass > 0 ? input.contact.effective_mass :
+                                                             floor_mass(model, floor);
+      g.label          = building.name + "@" + std::to_string(f) + "-barrier-" + side;
+      model.gaps.push_back(g);
+    }
+
+    void
+    add_contact(Model &model, const InputParameters &input)
+    {
+      const ContactParameters &contact = input.contact;
+      if (contact.law == "none")
+        return;
+      if (contact.between_buildings)
+        for (unsigned int b = 0; b + 1 < model.buildings.size(); ++b)
+          add_gaps_between(model, contact, b, b + 1, value_for(input.separations, b));
+      for (const std::string &entry : contact.barriers)
+        add_barrier(model, input, entry);
+
+      ContactLawParameters &law = model.contact;
+      law.law                   = contact.law;
+      law.stiffness             = contact.stiffness;
+      law.effective_mass = model.gaps.empty() ? 1.0 : model.gaps.front().effective_mass;
+      if (!contact_law_is_damped(contact.law))
+        law.damping = 0;
+      else if (contact.damping_from == "given")
+        law.damping = contact.damping;
+      else if (contact.damping_from == "formula")
+        law.damping = damping_from_restitution_formula(contact.law, contact.restitution,
+                                                       contact.hertz_damp_formula);
+      else // the damping parameters are dimensionless: one calibration serves every gap
+        law.damping = calibrate_damping(law, contact.restitution, contact.calibration_velocity);
+    }
   } // namespace
 
   Model
@@ -439,6 +624,7 @@ namespace poundfe
           left = building.right + value_for(input.separations, b);
         model.buildings.push_back(std::move(building));
       }
+    add_contact(model, input);
     model.number_equations();
     return model;
   }

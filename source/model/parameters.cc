@@ -199,6 +199,55 @@ namespace poundfe
           prm.leave_subsection();
         }
       declare_ground_motion(prm, p.ground_motion);
+      prm.enter_subsection("Contact");
+      ContactParameters &k = p.contact;
+      prm.add_parameter("Law", k.law,
+                        "Gap elements between neighbouring buildings (and at barriers): none, "
+                        "linear (k d), kelvin-voigt (k d + c d'), modified-kelvin-voigt "
+                        "(damping only while approaching), hertz (k d^1.5), hertz-damp "
+                        "(k d^1.5 (1 + xi d'/v0)), jankowski (beta d^1.5 + c(d) d' while "
+                        "approaching).",
+                        Patterns::Selection("none|linear|kelvin-voigt|modified-kelvin-voigt|"
+                                            "hertz|hertz-damp|jankowski"));
+      prm.add_parameter("Stiffness", k.stiffness,
+                        "k in N/m (linear laws) or k_h, beta in N/m^1.5 (Hertz laws, "
+                        "Jankowski; concrete ~2.75e9).");
+      prm.add_parameter("Damping from", k.damping_from,
+                        "given: the value of Damping; formula: the law's literature formula "
+                        "from the coefficient of restitution; calibrated: the value for "
+                        "which one impact of the effective mass on a rigid wall returns "
+                        "exactly that coefficient.",
+                        Patterns::Selection("given|formula|calibrated"));
+      prm.add_parameter("Damping", k.damping,
+                        "xi (Kelvin-Voigt laws, Jankowski) or xi_bar (Hertz-damp) when given.");
+      prm.add_parameter("Coefficient of restitution", k.restitution,
+                        "e in (0, 1]; concrete ~0.65.");
+      prm.add_parameter("Hertz-damp formula", k.hertz_damp_formula,
+                        "xi_bar from e: 3(1 - e^2)/4 (Muthukumar & DesRoches) or "
+                        "8(1 - e)/(5e) (Ye, Li & Zhu).",
+                        Patterns::Selection("muthukumar-desroches|ye-li-zhu"));
+      prm.add_parameter("Effective mass", k.effective_mass,
+                        "m_e in kg; 0: m1 m2/(m1 + m2) of the colliding floor masses (the "
+                        "floor mass against a barrier).");
+      prm.add_parameter("Calibration velocity", k.calibration_velocity,
+                        "Approach velocity of the calibration impact, m/s.");
+      prm.add_parameter("Between buildings", k.between_buildings,
+                        "Gap elements between neighbouring buildings at every floor level "
+                        "the lower one has (initial gap: Model/Separations).");
+      prm.add_parameter("Floor to column", k.floor_to_column,
+                        "Where a floor of one building has no floor of its neighbour at "
+                        "the same level, the contact point is on the neighbour's facing "
+                        "column at that height (frames).");
+      prm.add_parameter("Barriers", k.barriers,
+                        "Rigid barriers 'building floor side gap' separated by ';': the "
+                        "floor's facing joint touches a barrier on the left or right side "
+                        "once it has moved by gap (m) towards it.",
+                        Patterns::List(Patterns::Anything(), 0, 1000, ";"));
+      prm.add_parameter("Event refinement", k.event_refinement,
+                        "A step in which a contact starts or ends is redone in 2^r "
+                        "sub-steps around the event, which is then located inside the "
+                        "sub-step by interpolation.", Patterns::Integer(0, 12));
+      prm.leave_subsection();
       prm.enter_subsection("Nodal forces");
       prm.add_parameter("Harmonic", p.harmonic_forces,
                         "Harmonic forces 'building floor node dof amplitude omega phase', "
@@ -517,6 +566,17 @@ namespace poundfe
       if (!(p.newmark_beta >= 0.25 * (0.5 + p.newmark_gamma) * (0.5 + p.newmark_gamma) - 1e-12))
         c.fail("Time integration/Newmark beta",
                "must be >= (1/2 + gamma)^2 / 4 for unconditional stability");
+      if (p.contact.law != "none")
+        {
+          const ContactParameters &k = p.contact;
+          c.positive("Contact/Stiffness", k.stiffness);
+          if (!(k.restitution > 0 && k.restitution <= 1))
+            c.fail("Contact/Coefficient of restitution",
+                   "must lie in (0, 1], got " + std::to_string(k.restitution));
+          c.non_negative("Contact/Damping", k.damping);
+          c.non_negative("Contact/Effective mass", k.effective_mass);
+          c.positive("Contact/Calibration velocity", k.calibration_velocity);
+        }
       c.positive("Time integration/Newton residual tolerance", p.newton_residual_tolerance);
       c.positive("Time integration/Newton energy tolerance", p.newton_energy_tolerance);
       c.positive("Time integration/Law tolerance", p.law_tolerance);

@@ -37,6 +37,7 @@ namespace poundfe
     IterationStatistics      statistics;
     EnergyBalance            energy;
     double                   max_energy_error = 0;
+    std::vector<Impact>      impacts; // every contact episode
     std::vector<std::string> files;
   };
 

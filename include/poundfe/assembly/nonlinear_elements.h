@@ -1,5 +1,5 @@
-// The nonlinear elements of a model (Bouc-Wen hinges and storeys), with
-// their equations, in the order hinges then storeys.
+// The nonlinear elements of a model, with their equations, in the order
+// Bouc-Wen hinges, Bouc-Wen storeys, gaps (in model.gaps order).
 #ifndef poundfe_assembly_nonlinear_elements_h
 #define poundfe_assembly_nonlinear_elements_h
 

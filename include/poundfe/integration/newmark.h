@@ -20,6 +20,7 @@
 
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/elements/uniaxial_element.h>
+#include <poundfe/integration/impact_log.h>
 
 #include <functional>
 #include <memory>
@@ -35,6 +36,9 @@ namespace poundfe
     unsigned int max_iterations     = 20;
     unsigned int max_step_cuts      = 10;
     std::string  tangent_update     = "auto"; // auto | woodbury | refactorize
+    /// A step in which a gap opens or closes is redone as 2^r sub-steps
+    /// around the event.
+    unsigned int event_refinement   = 4;
   };
 
   struct NewmarkParameters
@@ -68,6 +72,7 @@ namespace poundfe
     unsigned long iterations = 0; // Newton iterations (solves) in them
     unsigned int  max_iterations = 0;
     unsigned long step_cuts  = 0;
+    unsigned long event_refinements = 0; // steps cut to locate a contact event
     double        smallest_time_step = 0;
   };
 
@@ -123,6 +128,8 @@ namespace poundfe
 
     /// Names of the equations, used in failure messages ("A3 (6, 3) ux").
     void set_equation_names(std::vector<std::string> names) { equation_names = std::move(names); }
+    /// Every contact episode of the gap elements so far.
+    const ImpactLog &impact_log() const { return impacts; }
     std::string tangent_update() const { return use_woodbury ? "woodbury" : "refactorize"; }
     std::string linear_solver_name() const;
 
@@ -148,7 +155,9 @@ namespace poundfe
     // Per element: trial correction F - k_ref d, tangent change, committed
     // deformation and force, accumulated work.
     std::vector<double> correction, tangent_change, committed_deformation, committed_force,
-      work;
+      committed_history, committed_rate, work;
+    std::vector<unsigned int> gap_elements;
+    ImpactLog                 impacts;
     std::string failure;
     std::vector<std::string> equation_names;
     double      current_time = 0;

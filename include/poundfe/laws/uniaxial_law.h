@@ -39,6 +39,11 @@ namespace poundfe
     virtual double yield_deformation() const { return 0; }
     /// Initial stiffness dF/dd at the virgin state.
     virtual double initial_stiffness() const = 0;
+    /// Contact laws: whether the trial / committed state carries force.
+    /// A change between them within a step is an event the integrator
+    /// locates by cutting the step.
+    virtual bool is_active() const { return false; }
+    virtual bool was_active() const { return false; }
 
     virtual void commit() = 0;
     virtual void revert() = 0;

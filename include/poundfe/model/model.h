@@ -5,6 +5,7 @@
 #define poundfe_model_model_h
 
 #include <poundfe/laws/bouc_wen.h>
+#include <poundfe/laws/contact_law.h>
 
 #include <array>
 #include <string>
@@ -93,6 +94,20 @@ namespace poundfe
   };
 
   /// Translational mass lumped at a node (acts on ux and uy).
+  /// A gap element: contact between a node of one building and a node of
+  /// its right-hand neighbour (closure = ux_left - ux_right), or between a
+  /// node and a rigid barrier (closure = +ux for a barrier on the right,
+  /// -ux on the left).
+  struct Gap
+  {
+    std::array<int, 2>          nodes{{-1, -1}}; // left, right; -1: the barrier
+    std::array<unsigned int, 2> buildings{{0, 0}};
+    double                      level          = 0;
+    double                      initial_gap    = 0;
+    double                      effective_mass = 0;
+    std::string                 label;
+  };
+
   struct NodalMass
   {
     unsigned int node = 0;
@@ -158,6 +173,9 @@ namespace poundfe
     std::vector<Member>     members;
     std::vector<StoreyLink> links;
     std::vector<Hinge>      hinges;
+    std::vector<Gap>        gaps;
+    /// The contact law of every gap (its gap and m_e are set per gap).
+    ContactLawParameters    contact;
     std::vector<NodalMass>  masses;
     std::vector<Building>   buildings;
     MassMatrixType          mass_matrix = MassMatrixType::lumped;

@@ -101,6 +101,22 @@ namespace poundfe
     double      shinozuka_beta        = 0.6;
   };
 
+  struct ContactParameters
+  {
+    std::string law                  = "none"; // none or a contact law name
+    double      stiffness            = 2.75e9;
+    std::string damping_from         = "calibrated"; // given|formula|calibrated
+    double      damping              = 0.0; // xi or xi_bar when given
+    double      restitution          = 0.65;
+    std::string hertz_damp_formula   = "muthukumar-desroches"; // or ye-li-zhu
+    double      effective_mass       = 0.0; // 0: from the floor masses
+    double      calibration_velocity = 1.0;
+    bool        between_buildings    = true;
+    bool        floor_to_column      = true;
+    std::vector<std::string> barriers; // "building floor side gap"
+    unsigned int event_refinement    = 4; // a step with a contact change: 2^r sub-steps
+  };
+
   struct InputParameters
   {
     std::string file;
@@ -112,6 +128,7 @@ namespace poundfe
     GroundMotionParameters          ground_motion;
     std::vector<std::string>        harmonic_forces;
     std::vector<std::string>        tabulated_forces;
+    ContactParameters               contact;
 
     double      time_step     = 0.001;
     double      end_time      = 0.0; // 0 = length of the ground motion

@@ -1,0 +1,48 @@
+// The impact log: one record per contact episode of each gap element, fed
+// with every accepted (sub-)step. Onset and release are located inside the
+// step by linear interpolation of the penetration to zero (the integrator
+// has already cut the step around the event, see Event refinement), the
+// velocities at those instants by interpolating the rate. The impulse is
+// the trapezoidal integral of the contact force.
+#ifndef poundfe_integration_impact_log_h
+#define poundfe_integration_impact_log_h
+
+#include <vector>
+
+namespace poundfe
+{
+  struct Impact
+  {
+    unsigned int element              = 0; // index among the nonlinear elements
+    double       start_time           = 0;
+    double       max_penetration_time = 0;
+    double       end_time             = -1; // < 0: still in contact at the end
+    double       approach_velocity    = 0;
+    double       separation_velocity  = 0;
+    double       max_penetration      = 0;
+    double       peak_force           = 0;
+    double       impulse              = 0;
+  };
+
+  class ImpactLog
+  {
+  public:
+    /// State of a gap at one end of a step.
+    struct GapState
+    {
+      double penetration = 0, rate = 0, force = 0;
+    };
+
+    void reset(unsigned int n_elements);
+    /// An accepted step of element h from t0 to t1.
+    void record(unsigned int h, double t0, double t1, const GapState &start, const GapState &end);
+
+    const std::vector<Impact> &impacts() const { return log; }
+
+  private:
+    std::vector<Impact> log;
+    std::vector<int>    open; // per element: index of its open impact, or -1
+  };
+} // namespace poundfe
+
+#endif

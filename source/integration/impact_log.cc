@@ -1,0 +1,53 @@
+#include <poundfe/integration/impact_log.h>
+
+#include <algorithm>
+
+namespace poundfe
+{
+  void
+  ImpactLog::reset(const unsigned int n_elements)
+  {
+    log.clear();
+    open.assign(n_elements, -1);
+  }
+
+  void
+  ImpactLog::record(const unsigned int h, const double t0, const double t1, const GapState &a,
+                    const GapState &b)
+  {
+    const double dt = t1 - t0;
+    // fraction of the step at which the penetration crosses zero
+    auto crossing = [&](const double d0, const double d1) {
+      return (d0 != d1) ? std::clamp(-d0 / (d1 - d0), 0.0, 1.0) : 0.0;
+    };
+    if (open[h] < 0 && b.force > 0)
+      {
+        Impact impact;
+        impact.element           = h;
+        const double s           = a.penetration <= 0 ? crossing(a.penetration, b.penetration) : 0;
+        impact.start_time        = t0 + s * dt;
+        impact.approach_velocity = a.rate + s * (b.rate - a.rate);
+        open[h]                  = log.size();
+        log.push_back(impact);
+      }
+    if (open[h] < 0)
+      return;
+    Impact &impact = log[open[h]];
+    impact.impulse += 0.5 * (a.force + b.force) * dt;
+    impact.peak_force = std::max(impact.peak_force, b.force);
+    if (b.penetration > impact.max_penetration)
+      {
+        impact.max_penetration      = b.penetration;
+        impact.max_penetration_time = t1;
+      }
+    if (!(b.force > 0))
+      {
+        // released: at the zero of the penetration, or (a damped law whose
+        // force was clipped while still penetrating) at the step's end
+        const double s = b.penetration <= 0 ? crossing(a.penetration, b.penetration) : 1;
+        impact.end_time            = t0 + s * dt;
+        impact.separation_velocity = -(a.rate + s * (b.rate - a.rate));
+        open[h]                    = -1;
+      }
+  }
+} // namespace poundfe
