@@ -485,6 +485,7 @@ namespace poundfe
       }
     const EnergyBalance &energy = result.energy;
     json.begin_object("energy")
+      .value("initial_J", energy.initial)
       .value("input_J", energy.input)
       .value("kinetic_J", energy.kinetic)
       .value("damping_J", energy.damping)

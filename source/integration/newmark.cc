@@ -192,8 +192,9 @@ namespace poundfe
     for (unsigned int i = 0; i < n; ++i)
       if (reduced[i] >= 0)
         a[i] = a_massive[reduced[i]];
-    balance.strain = strain_energy();
+    balance.strain  = strain_energy();
     balance.kinetic = kinetic_energy();
+    balance.initial = balance.strain + balance.kinetic;
   }
 
   bool
@@ -456,10 +457,10 @@ namespace poundfe
     balance.hysteretic = dissipated_hysteretic;
     balance.contact    = dissipated_contact;
     const double sum   = balance.stored_and_dissipated();
-    energy_scale       = std::max({energy_scale, std::abs(balance.input), sum});
+    const double supplied = balance.initial + balance.input;
+    energy_scale          = std::max({energy_scale, std::abs(supplied), sum});
     if (energy_scale > 0)
-      max_balance_error =
-        std::max(max_balance_error, std::abs(balance.input - sum) / energy_scale);
+      max_balance_error = std::max(max_balance_error, std::abs(supplied - sum) / energy_scale);
   }
 
   EnergyBalance

@@ -50,9 +50,10 @@ namespace poundfe
   };
 
   /// Work and energy terms of the relative-coordinate energy balance, J:
-  /// input = kinetic + damping + strain + hysteretic + contact.
+  /// initial + input = kinetic + damping + strain + hysteretic + contact.
   struct EnergyBalance
   {
+    double initial    = 0; // kinetic + strain at t = 0
     double input      = 0; // int u'^T p dt (p includes -M r a_g)
     double kinetic    = 0;
     double damping    = 0; // int u'^T C u' dt
