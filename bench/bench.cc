@@ -1,8 +1,11 @@
 // Steps per second and Newton iterations per step of the Newmark run, with
 // every output but VTU on (CSV rows every output interval, peaks and energy
 // balance every step):
-//   - the default example (input/two-buildings.prm, Bouc-Wen hinges) for each
-//     solver backend and both tangent updates, and its elastic twin;
+//   - the default example (input/two-buildings.prm: Bouc-Wen hinges and
+//     Hertz-damp contact) for each solver backend and both tangent updates,
+//     without contact, and elastic;
+//   - the pounding examples floor-to-column, three-buildings-row and
+//     spillway-abutment;
 //   - the hinge examples input/three-storey-frame-hinges.prm and
 //     input/bouc-wen-sdof.prm;
 //   - two 10-storey, 3-bay frames side by side (a larger model).
@@ -72,12 +75,13 @@ namespace
             best   = std::min(best, result.wall_time);
           }
         const IterationStatistics &s = result.statistics;
-        std::printf("%-34s %4u eqs %3zu nl  %-10s %-11s %7lu steps %9.0f steps/s  %5.2f it/step"
-                    "  %lu cuts  (set-up %.3f s)\n",
+        std::printf("%-34s %4u eqs %3zu nl %2zu gaps %-10s %-11s %7lu steps %9.0f steps/s  %5.2f "
+                    "it/step  %lu cuts %4zu impacts (set-up %.3f s)\n",
                     label, analysis.model.n_equations(), result.element_labels.size(),
+                    analysis.model.gaps.size(),
                     solver.c_str(), input.tangent_update.c_str(), result.steps,
                     result.steps / best, s.steps ? double(s.iterations) / s.steps : 0.0,
-                    s.step_cuts, setup);
+                    s.step_cuts, result.impacts.size(), setup);
       }
     std::filesystem::remove_all(dir);
   }
@@ -90,14 +94,23 @@ main(int argc, char **argv)
   const std::string  file    = argc > 1 ? argv[1] : "input/two-buildings.prm";
   const unsigned int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   const InputParameters input = read_parameters(file);
-  measure("default example (hinges)", input, repeats);
+  measure("default example (hinges, contact)", input, repeats);
   InputParameters refactorize = input;
   refactorize.tangent_update  = "refactorize";
-  measure("default example (hinges)", refactorize, repeats, {"eigen-ldlt", "umfpack"});
-  InputParameters elastic = input;
+  measure("default example (hinges, contact)", refactorize, repeats, {"eigen-ldlt", "umfpack"});
+  InputParameters no_contact = input;
+  no_contact.contact.law     = "none";
+  measure("default example (hinges only)", no_contact, repeats, {"eigen-ldlt"});
+  InputParameters elastic = no_contact;
   for (auto &b : elastic.buildings)
     b.hinge_locations.clear();
   measure("default example, elastic", elastic, repeats, {"eigen-ldlt"});
+  measure("floor-to-column (hinges, contact)", read_parameters("input/floor-to-column.prm"),
+          repeats, {"eigen-ldlt"});
+  measure("three-building row", read_parameters("input/three-buildings-row.prm"), repeats,
+          {"eigen-ldlt"});
+  measure("spillway-abutment (Jankowski)", read_parameters("input/spillway-abutment.prm"),
+          repeats, {"eigen-ldlt"});
   measure("three-storey frame (hinges)", read_parameters("input/three-storey-frame-hinges.prm"),
           repeats, {"eigen-ldlt"});
   measure("Bouc-Wen SDOF", read_parameters("input/bouc-wen-sdof.prm"), repeats, {"eigen-ldlt"});
