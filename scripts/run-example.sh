@@ -11,9 +11,13 @@ build/poundfe run "$input" --output "$out"
 cat <<TXT
 
 Results of $input are in $out/:
-  summary.json               model size, modes, peak drift and floor acceleration per storey
+  summary.json               model size, modes, peak drift and floor acceleration per storey,
+                             hinge peaks, impacts per gap, energy balance, Newton statistics
+  impacts.csv                the impact log: one row per impact
   drift.csv, floor_acceleration.csv, floor_displacement.csv, ground_motion.csv
-  drift_profile.png, acceleration_profile.png, roof_displacement.png, ground_motion.png
+  hinges.csv, energy.csv, contact_force.csv
+  drift_profile.png, acceleration_profile.png, roof_displacement.png, ground_motion.png,
+  energy.png, contact_force.png, hysteresis_<hinge>.png
   solution.pvd               open in ParaView (Warp By Vector on 'displacement')
   modal/summary.json, modal/modes.pvd   frequencies, periods, mass ratios and mode shapes
 TXT
