@@ -97,22 +97,6 @@ namespace poundfe
       return names;
     }
 
-    NewmarkParameters
-    newmark_parameters(const InputParameters &input)
-    {
-      NewmarkParameters p;
-      p.time_step                 = input.time_step;
-      p.gamma                     = input.newmark_gamma;
-      p.beta                      = input.newmark_beta;
-      p.newton.residual_tolerance = input.newton_residual_tolerance;
-      p.newton.energy_tolerance   = input.newton_energy_tolerance;
-      p.newton.max_iterations     = input.newton_max_iterations;
-      p.newton.max_step_cuts      = input.max_step_cuts;
-      p.newton.tangent_update     = input.tangent_update;
-      p.newton.event_refinement   = input.contact.event_refinement;
-      return p;
-    }
-
     const char *
     kind_name(const ElementKind kind)
     {
@@ -127,6 +111,22 @@ namespace poundfe
       return excitation.ground_motion().duration();
     }
   } // namespace
+
+  NewmarkParameters
+  newmark_parameters(const InputParameters &input)
+  {
+    NewmarkParameters p;
+    p.time_step                 = input.time_step;
+    p.gamma                     = input.newmark_gamma;
+    p.beta                      = input.newmark_beta;
+    p.newton.residual_tolerance = input.newton_residual_tolerance;
+    p.newton.energy_tolerance   = input.newton_energy_tolerance;
+    p.newton.max_iterations     = input.newton_max_iterations;
+    p.newton.max_step_cuts      = input.max_step_cuts;
+    p.newton.tangent_update     = input.tangent_update;
+    p.newton.event_refinement   = input.contact.event_refinement;
+    return p;
+  }
 
   Excitation
   make_excitation(const Analysis &analysis)
@@ -224,10 +224,10 @@ namespace poundfe
       response.evaluate(t, integrator.displacement(), integrator.acceleration(), ag);
       for (unsigned int h = 0; h < n_elements; ++h)
         {
-          const double d = std::abs(elements[h].deformation(integrator.displacement()));
-          if (d > peak_deformation[h])
+          const double d = elements[h].deformation(integrator.displacement());
+          if (std::abs(d) > peak_deformation[h])
             {
-              peak_deformation[h] = d;
+              peak_deformation[h] = std::abs(d);
               time_of_peak[h]     = t;
             }
           const double f = elements[h].law->force();
@@ -235,9 +235,7 @@ namespace poundfe
           // plastic part: the deformation left after elastic unloading
           const double k0 = elements[h].law->initial_stiffness();
           if (k0 > 0)
-            peak_plastic[h] = std::max(
-              peak_plastic[h],
-              std::abs(elements[h].deformation(integrator.displacement()) - f / k0));
+            peak_plastic[h] = std::max(peak_plastic[h], std::abs(d - f / k0));
         }
       if (drift_csv && step % csv_every == 0)
         {

@@ -18,9 +18,8 @@ namespace poundfe
     S.resize(m, m);
     y.resize(n_rows);
     rhs_small.resize(m);
-    column.resize(n_rows);
     active.reserve(m);
-    Vector w(n_rows);
+    Vector w(n_rows), column(n_rows);
     for (unsigned int h = 0; h < m; ++h)
       {
         column.setZero();

@@ -217,6 +217,18 @@ namespace poundfe
     return true;
   }
 
+  void
+  NewmarkIntegrator::subtract_element_forces(Vector &r) const
+  {
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        const UniaxialElement &e = (*elements)[h];
+        for (unsigned int i = 0; i < 2; ++i)
+          if (e.equations[i] >= 0)
+            r[e.equations[i]] -= e.signs[i] * correction[h];
+      }
+  }
+
   bool
   NewmarkIntegrator::try_step(Level &L, const Vector &p)
   {
@@ -258,13 +270,7 @@ namespace poundfe
         if (!use_woodbury) // L.effective holds the last tangent: restore K_eff
           std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
         residual.noalias() = rhs - L.effective * u_next;
-        for (unsigned int h = 0; h < n_elements; ++h)
-          {
-            const UniaxialElement &e = (*elements)[h];
-            for (unsigned int i = 0; i < 2; ++i)
-              if (e.equations[i] >= 0)
-                residual[e.equations[i]] -= e.signs[i] * correction[h];
-          }
+        subtract_element_forces(residual);
         const double norm = residual.norm();
         if (!std::isfinite(norm))
           {
@@ -336,14 +342,14 @@ namespace poundfe
     if (!use_woodbury)
       std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
     residual_out = load - system.mass * an - system.damping * vn - system.stiffness * u_trial;
-    tangent_out  = Eigen::MatrixXd(L.effective);
+    subtract_element_forces(residual_out);
+    tangent_out = Eigen::MatrixXd(L.effective);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         const UniaxialElement &e = (*elements)[h];
         for (unsigned int i = 0; i < 2; ++i)
           if (e.equations[i] >= 0)
             {
-              residual_out[e.equations[i]] -= e.signs[i] * correction[h];
               for (unsigned int j = 0; j < 2; ++j)
                 if (e.equations[j] >= 0)
                   tangent_out(e.equations[i], e.equations[j]) +=

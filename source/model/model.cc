@@ -13,15 +13,13 @@ namespace poundfe
     for (unsigned int b = 0; b < buildings.size(); ++b)
       {
         first_equation_of_building[b] = n_free;
-        const Building &building = buildings[b];
-        (void)building;
-        // nodes of a building need not be contiguous (contact splits columns
-        // after all buildings are built)
+        // A building's nodes need not be contiguous: contact splits columns
+        // after all buildings are built.
         for (unsigned int n = 0; n < nodes.size(); ++n)
           if (nodes[n].building == b)
-          for (unsigned int c = 0; c < n_dofs_per_node; ++c)
-            if (!nodes[n].fixed[c] && (nodes[n].tied_to < 0 || c == 2))
-              equation_of_dof[n_dofs_per_node * n + c] = n_free++;
+            for (unsigned int c = 0; c < n_dofs_per_node; ++c)
+              if (!nodes[n].fixed[c] && (nodes[n].tied_to < 0 || c == 2))
+                equation_of_dof[n_dofs_per_node * n + c] = n_free++;
         // Hinge nodes share their joint's translations.
         for (unsigned int n = 0; n < nodes.size(); ++n)
           if (nodes[n].building == b && nodes[n].tied_to >= 0)

@@ -21,19 +21,6 @@ using namespace poundfe;
 
 namespace
 {
-  NewmarkParameters
-  parameters_of(const InputParameters &input)
-  {
-    NewmarkParameters p;
-    p.time_step                 = input.time_step;
-    p.newton.residual_tolerance = input.newton_residual_tolerance;
-    p.newton.energy_tolerance   = input.newton_energy_tolerance;
-    p.newton.max_iterations     = input.newton_max_iterations;
-    p.newton.max_step_cuts      = input.max_step_cuts;
-    p.newton.tangent_update     = input.tangent_update;
-    return p;
-  }
-
   /// Displacement history u(i dt) of the first equation, i = 0..n.
   std::vector<double>
   run_history(const InputParameters &input, IterationStatistics *stats = nullptr,
@@ -42,7 +29,7 @@ namespace
     const Analysis   analysis   = prepare_analysis(input);
     const Excitation excitation = make_excitation(analysis);
     UniaxialElements elements   = make_nonlinear_elements(analysis.model);
-    NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", parameters_of(input), &elements);
+    NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", newmark_parameters(input), &elements);
     Vector load(analysis.system.n_equations());
     excitation.load(0, load);
     integrator.initialize(load);
@@ -162,7 +149,7 @@ BOOST_AUTO_TEST_CASE(global_tangent_matches_central_differences)
       const Analysis   analysis   = prepare_analysis(input);
       const Excitation excitation = make_excitation(analysis);
       UniaxialElements elements   = make_nonlinear_elements(analysis.model);
-      NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", parameters_of(input), &elements);
+      NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", newmark_parameters(input), &elements);
       const unsigned int n = analysis.system.n_equations();
       Vector             load(n);
       excitation.load(0, load);

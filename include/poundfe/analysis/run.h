@@ -54,6 +54,10 @@ namespace poundfe
   /// The `ground-motion` command.
   int ground_motion_command(const InputParameters &input, const std::string &output_directory);
 
+  /// The Newmark and Newton settings of the input's Time integration and
+  /// Contact sections.
+  NewmarkParameters newmark_parameters(const InputParameters &input);
+
   /// The excitation the input describes.
   Excitation make_excitation(const Analysis &analysis);
 } // namespace poundfe

@@ -45,7 +45,7 @@ namespace poundfe
     LinearSolver             *base = nullptr;
     std::vector<SparseColumn> columns;
     Eigen::MatrixXd           W, G, S;
-    Vector                    y, rhs_small, column;
+    Vector                    y, rhs_small;
     std::vector<unsigned int> active;
   };
 } // namespace poundfe

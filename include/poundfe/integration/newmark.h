@@ -142,6 +142,8 @@ namespace poundfe
     void   advance_from(unsigned int cuts, double t0, const LoadFunction &load);
     bool   evaluate_elements(const Vector &u_trial, const Vector &v_trial, const Level &L);
     void   update_energy_error();
+    /// r -= sum_h b_h (F_h - k_h d_h) at the last evaluated trial state.
+    void   subtract_element_forces(Vector &r) const;
 
     const LinearSystem &system;
     std::string         solver_name;

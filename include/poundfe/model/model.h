@@ -152,7 +152,7 @@ namespace poundfe
     std::string        name;
     BuildingType       type = BuildingType::frame;
     unsigned int       first_node = 0;
-    unsigned int       n_nodes    = 0;
+    unsigned int       n_nodes    = 0; // made by its generator; contact may add more
     double             left  = 0; // horizontal extent, for placement
     double             right = 0;
     double             base_level = 0;
