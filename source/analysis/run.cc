@@ -1,6 +1,7 @@
 #include <poundfe/analysis/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -131,13 +133,37 @@ namespace poundfe
   Excitation
   make_excitation(const Analysis &analysis)
   {
-    return Excitation(analysis.system, make_ground_motion(analysis.input),
-                      make_nodal_forces(analysis.input, analysis.model));
+    Excitation excitation(analysis.system, make_ground_motion(analysis.input),
+                          make_nodal_forces(analysis.input, analysis.model));
+    if (!analysis.input.white_noise_forces.empty())
+      {
+        const StochasticLoad load(analysis.input, analysis.model);
+        std::vector<double>  xi;
+        load.standard_normals(analysis.input.ground_motion.realization, xi);
+        load.apply(xi, excitation);
+      }
+    return excitation;
+  }
+
+  TimeHistory::TimeHistory(const Analysis &analysis_, const std::string &linear_solver)
+    : analysis(analysis_)
+    , elements(make_nonlinear_elements(analysis_.model))
+    , integrator(analysis_.system,
+                 linear_solver.empty() ? analysis_.input.linear_solver : linear_solver,
+                 newmark_parameters(analysis_.input), &elements)
+  {
+    integrator.set_equation_names(equation_names(analysis_.model));
   }
 
   RunResult
   run_time_history(const Analysis &analysis, const Excitation &excitation,
                    const RunOptions &options)
+  {
+    return TimeHistory(analysis, options.linear_solver).run(excitation, options);
+  }
+
+  RunResult
+  TimeHistory::run(const Excitation &excitation, const RunOptions &options)
   {
     const InputParameters &input = analysis.input;
     const Model           &model = analysis.model;
@@ -149,12 +175,6 @@ namespace poundfe
                        "needs a positive end time when there is no ground motion");
     const unsigned long n_steps = static_cast<unsigned long>(std::llround(end / dt));
 
-    UniaxialElements  elements = make_nonlinear_elements(model);
-    NewmarkIntegrator integrator(analysis.system,
-                                 options.linear_solver.empty() ? input.linear_solver :
-                                                                 options.linear_solver,
-                                 newmark_parameters(input), &elements);
-    integrator.set_equation_names(equation_names(model));
     Vector load(analysis.system.n_equations());
     excitation.load(0, load);
     integrator.initialize(load);
@@ -168,6 +188,7 @@ namespace poundfe
     const unsigned int n_gaps = n_elements - n_hysteretic;
     std::vector<double> peak_deformation(n_elements, 0.0), peak_force(n_elements, 0.0),
       time_of_peak(n_elements, 0.0), peak_plastic(n_elements, 0.0);
+    double min_clearance = std::numeric_limits<double>::infinity();
 
     FloorResponse response(model);
     const bool    files = !options.output_directory.empty();
@@ -232,6 +253,8 @@ namespace poundfe
             }
           const double f = elements[h].law->force();
           peak_force[h]  = std::max(peak_force[h], std::abs(f));
+          if (h >= n_hysteretic) // a gap: its opening is minus its penetration
+            min_clearance = std::min(min_clearance, -elements[h].law->history_variable());
           // plastic part: the deformation left after elastic unloading
           const double k0 = elements[h].law->initial_stiffness();
           if (k0 > 0)
@@ -313,6 +336,9 @@ namespace poundfe
     result.energy            = integrator.energy();
     result.max_energy_error  = integrator.max_energy_error();
     result.impacts = integrator.impact_log().impacts();
+    result.min_clearance = min_clearance;
+    for (const Impact &impact : result.impacts) // the log locates the deepest point within steps
+      result.min_clearance = std::min(result.min_clearance, -impact.max_penetration);
     for (unsigned int h = 0; h < n_hysteretic; ++h)
       {
         const double yield = elements[h].law->yield_deformation();

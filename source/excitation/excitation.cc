@@ -12,8 +12,13 @@ namespace poundfe
   double
   NodalForce::value(const double t) const
   {
-    if (harmonic)
+    if (kind == Kind::harmonic)
       return amplitude * std::sin(omega * t + phase);
+    if (kind == Kind::white_noise)
+      {
+        const double k = t / sample_interval + 1e-9; // t = k dt may land just below
+        return k >= 0 && k < values.size() ? values[static_cast<std::size_t>(k)] : 0;
+      }
     if (times.empty() || t < times.front() || t > times.back())
       return 0;
     const auto   upper = std::upper_bound(times.begin(), times.end(), t);
@@ -37,6 +42,43 @@ namespace poundfe
     load = (-ground.value(t)) * mass_times_influence;
     for (const NodalForce &f : forces)
       load[f.equation] += f.value(t);
+  }
+
+  MotionGenerator
+  make_motion_generator(const InputParameters &input)
+  {
+    const GroundMotionParameters &g = input.ground_motion;
+    StochasticMotion              s;
+    const bool                    cp = g.type == "clough-penzien";
+    if (g.soil == "custom")
+      s.filter = FilterParameters{cp, g.omega_g, g.zeta_g, g.omega_f, g.zeta_f};
+    else
+      s.filter = soil_preset(g.soil, cp);
+    if (g.type == "white-noise")
+      s.method = StochasticMethod::white_noise;
+    else if (g.method == "spectral-representation")
+      s.method = StochasticMethod::spectral_representation;
+    s.spectral_intensity =
+      g.spectral_intensity > 0 ?
+        g.spectral_intensity :
+        (g.noise_intensity_d > 0 ?
+           g.noise_intensity_d / M_PI :
+           intensity_from_pga(s.filter, g.target_pga * standard_gravity, g.peak_factor));
+    s.duration               = g.duration;
+    s.sample_interval        = g.sample_interval > 0 ? g.sample_interval : input.time_step;
+    s.cutoff_frequency       = g.cutoff_frequency;
+    s.n_frequencies          = g.n_frequencies;
+    s.envelope.kind          = g.envelope;
+    s.envelope.rise_end      = g.jennings_rise_end;
+    s.envelope.plateau_end   = g.jennings_plateau_end;
+    s.envelope.decay         = g.jennings_decay;
+    s.envelope.b             = g.saragoni_b;
+    s.envelope.c             = g.saragoni_c;
+    s.envelope.alpha         = g.shinozuka_alpha;
+    s.envelope.beta          = g.shinozuka_beta;
+    s.seed                   = g.seed;
+    s.realization            = g.realization;
+    return MotionGenerator(s);
   }
 
   GroundMotion
@@ -69,32 +111,8 @@ namespace poundfe
             return motion;
           }
       }
-    else if (g.type == "kanai-tajimi" || g.type == "clough-penzien")
-      {
-        StochasticMotion s;
-        const bool       cp = g.type == "clough-penzien";
-        if (g.soil == "custom")
-          s.filter = FilterParameters{cp, g.omega_g, g.zeta_g, g.omega_f, g.zeta_f};
-        else
-          s.filter = soil_preset(g.soil, cp);
-        s.spectral_intensity =
-          g.spectral_intensity > 0 ?
-            g.spectral_intensity :
-            intensity_from_pga(s.filter, g.target_pga * standard_gravity, g.peak_factor);
-        s.duration        = g.duration;
-        s.sample_interval = g.sample_interval > 0 ? g.sample_interval : input.time_step;
-        s.envelope.kind   = g.envelope;
-        s.envelope.rise_end    = g.jennings_rise_end;
-        s.envelope.plateau_end = g.jennings_plateau_end;
-        s.envelope.decay       = g.jennings_decay;
-        s.envelope.b           = g.saragoni_b;
-        s.envelope.c           = g.saragoni_c;
-        s.envelope.alpha       = g.shinozuka_alpha;
-        s.envelope.beta        = g.shinozuka_beta;
-        s.seed                 = g.seed;
-        s.realization          = g.realization;
-        motion                 = generate_ground_motion(s);
-      }
+    else if (g.type != "none")
+      motion = make_motion_generator(input).ground_motion();
     motion.scale(g.scale_factor);
     return motion;
   }
@@ -161,7 +179,7 @@ namespace poundfe
         NodalForce         f;
         f.equation = target.equation;
         f.label    = target.label;
-        f.harmonic = true;
+        f.kind     = NodalForce::Kind::harmonic;
         if (!(fields >> f.amplitude >> f.omega))
           throw InputError(input.file, input.line_of(harmonic_path), harmonic_path,
                            "'" + entry + "': expected '... amplitude omega [phase]'");
@@ -190,9 +208,30 @@ namespace poundfe
         NodalForce f;
         f.equation = target.equation;
         f.label    = target.label;
-        f.harmonic = false;
+        f.kind     = NodalForce::Kind::tabulated;
         f.times    = table.times;
         f.values   = table.values;
+        forces.push_back(f);
+      }
+    const std::string noise_path = "Nodal forces/White noise";
+    const GroundMotionParameters &g = input.ground_motion;
+    for (const std::string &entry : input.white_noise_forces)
+      {
+        if (entry.find_first_not_of(" \t") == std::string::npos)
+          continue;
+        std::istringstream fields(entry);
+        const ForceTarget  target = find_target(input, model, fields, noise_path, entry);
+        NodalForce         f;
+        f.equation = target.equation;
+        f.label    = target.label;
+        f.kind     = NodalForce::Kind::white_noise;
+        if (!(fields >> f.intensity) || !(f.intensity > 0))
+          throw InputError(input.file, input.line_of(noise_path), noise_path,
+                           "'" + entry + "': expected '... S0' with S0 > 0");
+        f.sample_interval = g.sample_interval > 0 ? g.sample_interval : input.time_step;
+        // the white-noise forces last as long as the stochastic ground motion would
+        f.values.assign(static_cast<std::size_t>(std::ceil(g.duration / f.sample_interval - 1e-9)) + 1,
+                        0.0);
         forces.push_back(f);
       }
     return forces;

@@ -6,10 +6,11 @@
 namespace poundfe
 {
   GroundMotion::GroundMotion(const double time_step, std::vector<double> acceleration,
-                             std::string description)
+                             std::string description, const bool held_samples)
     : dt(time_step)
     , values(std::move(acceleration))
     , text(std::move(description))
+    , held(held_samples)
   {}
 
   double
@@ -18,6 +19,12 @@ namespace poundfe
     if (values.empty() || t < 0)
       return 0;
     const double       s = t / dt;
+    if (held)
+      {
+        // t = k dt in floating point may land just below k dt
+        const std::size_t k = static_cast<std::size_t>(s + 1e-9);
+        return k < values.size() ? values[k] : 0;
+      }
     const std::size_t  i = static_cast<std::size_t>(s);
     if (i + 1 >= values.size())
       return (i + 1 == values.size() && s - i < 1e-9) ? values.back() : 0;

@@ -4,7 +4,9 @@
 #include <Eigen/Dense>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace poundfe
 {
@@ -185,34 +187,183 @@ namespace poundfe
     return r * std::cos(2 * M_PI * u2);
   }
 
+  double
+  standard_normal_cdf(const double x)
+  {
+    return 0.5 * std::erfc(-x / std::sqrt(2.0));
+  }
+
+  void
+  standard_normals(const std::uint64_t seed, const std::uint64_t realization,
+                   std::vector<double> &xi)
+  {
+    NormalStream normal(seed, realization);
+    for (double &x : xi)
+      x = normal.next();
+  }
+
+  MotionGenerator::MotionGenerator(const StochasticMotion &motion)
+    : settings(motion)
+  {
+    const double dt = motion.sample_interval;
+    n_points = static_cast<unsigned int>(std::ceil(motion.duration / dt - 1e-9)) + 1;
+    envelope_values.resize(n_points);
+    for (unsigned int k = 0; k < n_points; ++k)
+      envelope_values[k] = motion.envelope(k * dt);
+    cutoff = M_PI / dt;
+    switch (motion.method)
+      {
+        case StochasticMethod::white_noise:
+          n_random    = n_points;
+          noise_scale = std::sqrt(2 * M_PI * motion.spectral_intensity / dt);
+          break;
+        case StochasticMethod::filtered_white_noise:
+          {
+            Matrix4 a;
+            Vector4 b, c;
+            state_space(motion.filter, a, b, c);
+            // exp([[A, B], [0, 0]] dt) = [[Phi, Gamma], [0, 1]]: exact for held input.
+            Eigen::Matrix<double, 5, 5> augmented = Eigen::Matrix<double, 5, 5>::Zero();
+            augmented.topLeftCorner<4, 4>()       = a * dt;
+            augmented.topRightCorner<4, 1>()      = b * dt;
+            const Eigen::Matrix<double, 5, 5> e   = augmented.exp();
+            n_states = motion.filter.clough_penzien ? 4 : 2;
+            for (unsigned int i = 0; i < 4; ++i)
+              {
+                noise_gain[i] = e(i, 4);
+                output[i]     = c[i];
+                for (unsigned int j = 0; j < 4; ++j)
+                  propagator[4 * i + j] = e(i, j);
+              }
+            // the noise of the last sample would only act after the motion ends
+            n_random    = n_points - 1;
+            noise_scale = std::sqrt(2 * M_PI * motion.spectral_intensity / dt);
+            break;
+          }
+        case StochasticMethod::spectral_representation:
+          {
+            cutoff = motion.cutoff_frequency > 0 ? motion.cutoff_frequency :
+                                                   std::min(M_PI / dt, 25 * motion.filter.omega_g);
+            if (cutoff > M_PI / dt * (1 + 1e-12))
+              throw std::invalid_argument("spectral representation needs dt <= pi / w_u");
+            // period 2 pi / dw of at least twice the duration: no repetition
+            n_random = motion.n_frequencies > 0 ?
+                         motion.n_frequencies :
+                         static_cast<unsigned int>(std::ceil(cutoff * motion.duration / M_PI));
+            const double dw = cutoff / n_random;
+            omegas.resize(n_random);
+            amplitudes.resize(n_random);
+            for (unsigned int k = 0; k < n_random; ++k)
+              {
+                omegas[k]     = (k + 0.5) * dw;
+                amplitudes[k] = 2 * std::sqrt(target_psd(omegas[k]) * dw);
+              }
+            break;
+          }
+      }
+  }
+
+  double
+  MotionGenerator::target_psd(const double omega) const
+  {
+    if (settings.method == StochasticMethod::white_noise)
+      return settings.spectral_intensity;
+    return settings.spectral_intensity * filter_psd(settings.filter, omega);
+  }
+
+  std::string
+  MotionGenerator::description() const
+  {
+    std::string kind;
+    switch (settings.method)
+      {
+        case StochasticMethod::white_noise:
+          kind = "white noise";
+          break;
+        case StochasticMethod::filtered_white_noise:
+          kind = "filtered white noise";
+          break;
+        default:
+          kind = "spectral representation";
+      }
+    const std::string process =
+      settings.method == StochasticMethod::white_noise ?
+        "" :
+        std::string(settings.filter.clough_penzien ? "Clough-Penzien " : "Kanai-Tajimi ");
+    return process + kind + " sample (seed " + std::to_string(settings.seed) + ", realization " +
+           std::to_string(settings.realization) + ")";
+  }
+
+  void
+  MotionGenerator::generate(const double *normals, std::vector<double> &values) const
+  {
+    values.resize(n_points);
+    switch (settings.method)
+      {
+        case StochasticMethod::white_noise:
+          for (unsigned int k = 0; k < n_points; ++k)
+            values[k] = envelope_values[k] * noise_scale * normals[k];
+          return;
+        case StochasticMethod::filtered_white_noise:
+          {
+            double state[4] = {0, 0, 0, 0}, next[4];
+            for (unsigned int k = 0; k < n_points; ++k)
+              {
+                double a = 0;
+                for (unsigned int i = 0; i < n_states; ++i)
+                  a += output[i] * state[i];
+                values[k] = envelope_values[k] * a;
+                if (k + 1 == n_points)
+                  break;
+                const double w = noise_scale * normals[k];
+                for (unsigned int i = 0; i < n_states; ++i)
+                  {
+                    double x = noise_gain[i] * w;
+                    for (unsigned int j = 0; j < n_states; ++j)
+                      x += propagator[4 * i + j] * state[j];
+                    next[i] = x;
+                  }
+                std::copy(next, next + n_states, state);
+              }
+            return;
+          }
+        case StochasticMethod::spectral_representation:
+          {
+            std::fill(values.begin(), values.end(), 0.0);
+            const double dt = settings.sample_interval;
+            for (unsigned int k = 0; k < n_random; ++k)
+              {
+                // cos(w t + phi) by rotating a unit phasor: no trigonometry per sample
+                const double phase = 2 * M_PI * standard_normal_cdf(normals[k]);
+                double       re = amplitudes[k] * std::cos(phase), im = amplitudes[k] * std::sin(phase);
+                const double c = std::cos(omegas[k] * dt), s = std::sin(omegas[k] * dt);
+                for (unsigned int n = 0; n < n_points; ++n)
+                  {
+                    values[n] += re;
+                    const double r = re * c - im * s;
+                    im             = re * s + im * c;
+                    re             = r;
+                  }
+              }
+            for (unsigned int n = 0; n < n_points; ++n)
+              values[n] *= envelope_values[n];
+            return;
+          }
+      }
+  }
+
+  GroundMotion
+  MotionGenerator::ground_motion() const
+  {
+    std::vector<double> xi(n_random), values;
+    standard_normals(settings.seed, settings.realization, xi);
+    generate(xi.data(), values);
+    return GroundMotion(settings.sample_interval, std::move(values), description(), held());
+  }
+
   GroundMotion
   generate_ground_motion(const StochasticMotion &motion)
   {
-    Matrix4 a;
-    Vector4 b, c;
-    state_space(motion.filter, a, b, c);
-    // exp([[A, B], [0, 0]] dt) = [[Phi, Gamma], [0, 1]]: exact for held input.
-    Eigen::Matrix<double, 5, 5> augmented = Eigen::Matrix<double, 5, 5>::Zero();
-    augmented.topLeftCorner<4, 4>()       = a * motion.sample_interval;
-    augmented.topRightCorner<4, 1>()      = b * motion.sample_interval;
-    const Eigen::Matrix<double, 5, 5> e   = augmented.exp();
-    const Matrix4                     phi   = e.topLeftCorner<4, 4>();
-    const Vector4                     gamma = e.topRightCorner<4, 1>();
-
-    const std::size_t   n = static_cast<std::size_t>(std::ceil(motion.duration / motion.sample_interval - 1e-9)) + 1;
-    std::vector<double> values(n);
-    NormalStream        normal(motion.seed, motion.realization);
-    const double        scale = std::sqrt(2 * M_PI * motion.spectral_intensity / motion.sample_interval);
-    Vector4             state = Vector4::Zero();
-    for (std::size_t k = 0; k < n; ++k)
-      {
-        const double t = k * motion.sample_interval;
-        values[k]      = motion.envelope(t) * c.dot(state);
-        state          = phi * state + gamma * (scale * normal.next());
-      }
-    return GroundMotion(motion.sample_interval, std::move(values),
-                        std::string(motion.filter.clough_penzien ? "Clough-Penzien" : "Kanai-Tajimi") +
-                          " sample (seed " + std::to_string(motion.seed) + ", realization " +
-                          std::to_string(motion.realization) + ")");
+    return MotionGenerator(motion).ground_motion();
   }
 } // namespace poundfe

@@ -128,8 +128,9 @@ namespace poundfe
       prm.enter_subsection("Ground motion");
       prm.add_parameter("Type", g.type,
                         "Horizontal ground acceleration: a generated Kanai-Tajimi or "
-                        "Clough-Penzien sample, a record, or none.",
-                        Patterns::Selection("kanai-tajimi|clough-penzien|record|none"));
+                        "Clough-Penzien sample, plain white noise (intensity S0 or D, held "
+                        "over the sample interval), a record, or none.",
+                        Patterns::Selection("kanai-tajimi|clough-penzien|white-noise|record|none"));
       prm.add_parameter("Scale factor", g.scale_factor, "Multiplies the motion.");
       prm.enter_subsection("Record");
       prm.add_parameter("File", g.record_file,
@@ -153,9 +154,23 @@ namespace poundfe
       prm.add_parameter("zeta_g", g.zeta_g, "Ground filter damping ratio (custom).");
       prm.add_parameter("omega_f", g.omega_f, "Clough-Penzien high-pass frequency, rad/s (custom).");
       prm.add_parameter("zeta_f", g.zeta_f, "Clough-Penzien high-pass damping (custom).");
+      prm.add_parameter("Method", g.method,
+                        "Kanai-Tajimi/Clough-Penzien samples: white noise through the filter "
+                        "(exact over each held interval), or the spectral representation "
+                        "(sum of cosines with random phases).",
+                        Patterns::Selection("filtered-white-noise|spectral-representation"));
+      prm.add_parameter("Cutoff frequency", g.cutoff_frequency,
+                        "Spectral representation: upper frequency w_u, rad/s (0: min(pi/dt, "
+                        "25 omega_g)); needs dt <= pi/w_u.");
+      prm.add_parameter("Number of frequencies", g.n_frequencies,
+                        "Spectral representation: N (0: w_u duration / pi, so the sample "
+                        "does not repeat within twice its duration).");
       prm.add_parameter("S0", g.spectral_intensity,
-                        "Two-sided PSD intensity of the white noise, m^2/s^3; 0: from the "
-                        "target PGA and peak factor.");
+                        "Two-sided PSD intensity of the white noise, m^2/s^3; 0: from D, or "
+                        "from the target PGA and peak factor.");
+      prm.add_parameter("D", g.noise_intensity_d,
+                        "White-noise intensity in the thesis's convention <w(t) w(t')> = "
+                        "2 D delta(t - t'), D = pi S0 (used when S0 = 0).");
       prm.add_parameter("Target PGA", g.target_pga, "Target PGA in g (used when S0 = 0).");
       prm.add_parameter("Peak factor", g.peak_factor, "PGA / standard deviation.");
       prm.add_parameter("Duration", g.duration, "Length of the sample, s.");
@@ -259,6 +274,11 @@ namespace poundfe
                         "the file has two columns: time, force (linear in between, zero "
                         "outside).",
                         Patterns::List(Patterns::Anything(), 0, 1000, ";"));
+      prm.add_parameter("White noise", p.white_noise_forces,
+                        "Random forces 'building floor node dof S0' separated by ';': white "
+                        "noise of two-sided intensity S0 (N^2 s), held over the sample "
+                        "interval of Ground motion/Stochastic; part of each realization.",
+                        Patterns::List(Patterns::Anything(), 0, 1000, ";"));
       prm.leave_subsection();
       prm.enter_subsection("Time integration");
       prm.add_parameter("Time step", p.time_step, "Analysis time step, s.");
@@ -305,6 +325,52 @@ namespace poundfe
                         "Interval of VTU frames, s (0: none).");
       prm.add_parameter("Plots", p.plots, "Make PNG plots with gnuplot.");
       prm.add_parameter("Number of modes", p.n_modes, "Modes reported.", Patterns::Integer(1));
+      prm.leave_subsection();
+
+      prm.enter_subsection("Monte Carlo");
+      MonteCarloParameters &mc = p.monte_carlo;
+      prm.add_parameter("Realizations", mc.realizations,
+                        "Number of realizations (seed and index 0..N-1 fix each one).",
+                        Patterns::Integer(1));
+      prm.add_parameter("Drift limits", mc.drift_limits,
+                        "Inter-storey drift ratios whose exceedance probability is reported "
+                        "(largest over every storey of every building).",
+                        Patterns::List(Patterns::Double(0), 0, 100, ","));
+      prm.add_parameter("Histogram bins", mc.histogram_bins, "Bins of the PDF estimates.",
+                        Patterns::Integer(2, 1000));
+      prm.leave_subsection();
+
+      prm.enter_subsection("Subset simulation");
+      SubsetParameters &ss = p.subset;
+      prm.add_parameter("Response", ss.response, "The response whose exceedance is estimated.",
+                        Patterns::Selection(
+                          "peak drift ratio|peak roof displacement|peak contact force"));
+      prm.add_parameter("Building", ss.building, "Building of the response (1-based).",
+                        Patterns::Integer(1));
+      prm.add_parameter("Storey", ss.storey,
+                        "Storey of the drift ratio (1-based; 0: largest over the storeys).",
+                        Patterns::Integer(0));
+      prm.add_parameter("Threshold", ss.threshold,
+                        "Failure: response > threshold (drift ratio, m, or N).");
+      prm.add_parameter("Samples per level", ss.samples_per_level, "N.", Patterns::Integer(2));
+      prm.add_parameter("Conditional probability", ss.conditional_probability,
+                        "p0: the level thresholds are the (1 - p0) quantiles; p0 N and 1/p0 "
+                        "must be whole numbers.");
+      prm.add_parameter("Maximum levels", ss.max_levels, "Stop after this many levels.",
+                        Patterns::Integer(1, 100));
+      prm.add_parameter("Proposal spread", ss.proposal_spread,
+                        "Standard deviation of the component-wise Gaussian proposal of the "
+                        "modified Metropolis algorithm.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Fragility");
+      FragilityParameters &fr = p.fragility;
+      prm.add_parameter("PGA levels", fr.pga_levels,
+                        "Intensity levels: target PGA in g (S0 from the PGA and peak factor).",
+                        Patterns::List(Patterns::Double(0), 1, 1000, ","));
+      prm.add_parameter("Realizations per level", fr.realizations_per_level,
+                        "Monte Carlo realizations at each level (the same seeds at every level).",
+                        Patterns::Integer(1));
       prm.leave_subsection();
     }
 
@@ -535,9 +601,17 @@ namespace poundfe
       c.non_negative(gm + "Record/Target PGA", g.record_target_pga);
       if (!std::isfinite(g.scale_factor))
         c.fail(gm + "Scale factor", "must be finite");
-      if (g.type == "kanai-tajimi" || g.type == "clough-penzien")
+      if (g.type == "white-noise" && !(g.spectral_intensity > 0 || g.noise_intensity_d > 0))
+        c.fail(gm + "Stochastic/S0", "white noise needs S0 > 0 or D > 0 (it has no finite PGA)");
+      if (g.type == "kanai-tajimi" || g.type == "clough-penzien" || g.type == "white-noise")
         {
           const std::string st = gm + "Stochastic/";
+          c.non_negative(st + "D", g.noise_intensity_d);
+          c.non_negative(st + "Cutoff frequency", g.cutoff_frequency);
+          const double dt = g.sample_interval > 0 ? g.sample_interval : p.time_step;
+          if (g.method == "spectral-representation" && g.cutoff_frequency * dt > M_PI)
+            c.fail(st + "Cutoff frequency",
+                   "exceeds pi / sample interval = " + std::to_string(M_PI / dt) + " rad/s");
           c.positive(st + "omega_g", g.omega_g);
           if (!(g.zeta_g > 0 && g.zeta_g < 1))
             c.fail(st + "zeta_g", "must lie in (0, 1)");
@@ -580,6 +654,34 @@ namespace poundfe
       c.positive("Time integration/Newton residual tolerance", p.newton_residual_tolerance);
       c.positive("Time integration/Newton energy tolerance", p.newton_energy_tolerance);
       c.positive("Time integration/Law tolerance", p.law_tolerance);
+      for (const double limit : p.monte_carlo.drift_limits)
+        if (!(limit > 0))
+          c.fail("Monte Carlo/Drift limits", "every limit must be positive");
+      {
+        const SubsetParameters &ss = p.subset;
+        const std::string       sp = "Subset simulation/";
+        c.positive(sp + "Threshold", ss.threshold);
+        c.positive(sp + "Proposal spread", ss.proposal_spread);
+        const double p0 = ss.conditional_probability;
+        if (!(p0 > 0 && p0 < 1))
+          c.fail(sp + "Conditional probability", "must lie in (0, 1)");
+        const double n_seeds = p0 * ss.samples_per_level, chain = 1 / p0;
+        if (std::abs(n_seeds - std::round(n_seeds)) > 1e-9 * n_seeds ||
+            std::abs(chain - std::round(chain)) > 1e-9 * chain || std::round(n_seeds) < 1)
+          c.fail(sp + "Conditional probability",
+                 "p0 N and 1/p0 must be whole numbers (N = " +
+                   std::to_string(ss.samples_per_level) + ")");
+        if (ss.building > p.buildings.size())
+          c.fail(sp + "Building", "there are " + std::to_string(p.buildings.size()) + " buildings");
+        else if (ss.storey > p.buildings[ss.building - 1].n_storeys &&
+                 p.buildings[ss.building - 1].type != "mesh")
+          c.fail(sp + "Storey", "building " + std::to_string(ss.building) + " has " +
+                                  std::to_string(p.buildings[ss.building - 1].n_storeys) +
+                                  " storeys");
+      }
+      for (const double pga : p.fragility.pga_levels)
+        if (!(pga > 0))
+          c.fail("Fragility/PGA levels", "every level must be positive");
       c.non_negative("Output/Output interval", p.output_interval);
       c.non_negative("Output/VTU interval", p.vtu_interval);
       if (p.output_directory.empty())

@@ -38,7 +38,26 @@ namespace poundfe
     EnergyBalance            energy;
     double                   max_energy_error = 0;
     std::vector<Impact>      impacts; // every contact episode
+    double min_clearance = 0; // smallest gap opening (negative: penetration); inf without gaps
     std::vector<std::string> files;
+  };
+
+  /// The time-history engine of one model: the nonlinear elements and the
+  /// integrator (with its factorisations) are set up once, and each run()
+  /// starts again from rest. Monte Carlo runs every realization through one.
+  class TimeHistory
+  {
+  public:
+    explicit TimeHistory(const Analysis &analysis, const std::string &linear_solver = "");
+    TimeHistory(const TimeHistory &) = delete;
+    TimeHistory &operator=(const TimeHistory &) = delete;
+
+    RunResult run(const Excitation &excitation, const RunOptions &options);
+
+  private:
+    const Analysis   &analysis;
+    UniaxialElements  elements; // before the integrator, which points to them
+    NewmarkIntegrator integrator;
   };
 
   /// Time history with Newmark (Newton on the nonlinear elements); writes the outputs of RunOptions.

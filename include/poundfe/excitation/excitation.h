@@ -5,6 +5,7 @@
 
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/excitation/ground_motion.h>
+#include <poundfe/excitation/stochastic.h>
 #include <poundfe/model/model.h>
 #include <poundfe/model/parameters.h>
 
@@ -15,11 +16,18 @@ namespace poundfe
 {
   struct NodalForce
   {
+    enum class Kind
+    {
+      harmonic,
+      tabulated,
+      white_noise
+    };
     unsigned int        equation  = 0;
     std::string         label;
-    bool                harmonic  = true;
+    Kind                kind      = Kind::harmonic;
     double              amplitude = 0, omega = 0, phase = 0; // harmonic
-    std::vector<double> times, values; // tabulated
+    std::vector<double> times, values; // tabulated (linear), white noise (held)
+    double              sample_interval = 0, intensity = 0; // white noise: dt, S0
 
     double value(double t) const;
   };
@@ -34,6 +42,9 @@ namespace poundfe
     double ground_acceleration(double t) const { return ground.value(t); }
     const GroundMotion &ground_motion() const { return ground; }
     const std::vector<NodalForce> &nodal_forces() const { return forces; }
+    /// In-place access for a new realization (StochasticLoad).
+    GroundMotion            &ground_motion_for_update() { return ground; }
+    std::vector<NodalForce> &nodal_forces_for_update() { return forces; }
 
   private:
     GroundMotion            ground;
@@ -43,6 +54,10 @@ namespace poundfe
 
   /// The ground motion the input asks for (generated, recorded or none).
   GroundMotion make_ground_motion(const InputParameters &input);
+
+  /// The generator of the input's stochastic ground motion (kanai-tajimi,
+  /// clough-penzien or white-noise types).
+  MotionGenerator make_motion_generator(const InputParameters &input);
 
   /// Parse the 'Nodal forces' entries against the model. Throws InputError.
   std::vector<NodalForce> make_nodal_forces(const InputParameters &input, const Model &model);

@@ -1,5 +1,6 @@
 // A horizontal ground acceleration history on a uniform time grid, in m/s^2,
-// linear between samples and zero outside [0, duration].
+// linear between samples (or held over each interval: white noise) and zero
+// outside [0, duration].
 #ifndef poundfe_excitation_ground_motion_h
 #define poundfe_excitation_ground_motion_h
 
@@ -14,7 +15,8 @@ namespace poundfe
   {
   public:
     GroundMotion() = default;
-    GroundMotion(double time_step, std::vector<double> acceleration, std::string description);
+    GroundMotion(double time_step, std::vector<double> acceleration, std::string description,
+                 bool held = false);
 
     double value(double t) const;
     double time_step() const { return dt; }
@@ -24,11 +26,15 @@ namespace poundfe
     const std::string &description() const { return text; }
     void scale(double factor);
     bool empty() const { return values.empty(); }
+    bool is_held() const { return held; }
+    /// In-place access for a new realization of the same grid.
+    std::vector<double> &samples_for_update() { return values; }
 
   private:
     double              dt = 1;
     std::vector<double> values;
     std::string         text;
+    bool                held = false;
   };
 } // namespace poundfe
 

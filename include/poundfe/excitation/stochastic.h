@@ -10,7 +10,16 @@
 //     filter is advanced exactly over each interval (matrix exponential).
 //   S0 from a target PGA: PGA = p sigma with sigma^2 the stationary variance
 //     (Lyapunov equation of the filter; for KT pi S0 wg (1 + 4 zg^2)/(2 zg)).
+//   Spectral representation (Shinozuka & Deodatis 1991):
+//     a(t) = sum_k 2 sqrt(S(w_k) dw) cos(w_k t + phi_k), w_k = (k + 1/2) dw,
+//     k < N, N dw = w_u, phases uniform on [0, 2 pi); its variance is the
+//     band-limited integral of S over [-w_u, w_u].
+//   Plain white noise: w_k = sqrt(2 pi S0 / dt) N(0,1) held over the sample
+//     interval (the thesis's intensity D = pi S0).
 //   Envelopes: Jennings/Amin-Ang, Saragoni-Hart, Shinozuka-Sato, peak 1.
+//   Every sample is a function of a vector of independent standard normals
+//   (the phases are phi = 2 pi Phi(xi)), which is what Monte Carlo draws from
+//   (seed, realization) and what Subset Simulation moves by Markov chains.
 // Sources: Kanai (1957), Tajimi (1960), Clough & Penzien (1975); Der Kiureghian
 // & Neuenhofer (1992) for soil presets; Jennings et al. (1968).
 #ifndef poundfe_excitation_stochastic_h
@@ -18,8 +27,10 @@
 
 #include <poundfe/excitation/ground_motion.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace poundfe
 {
@@ -67,18 +78,70 @@ namespace poundfe
     double        spare     = 0;
   };
 
+  enum class StochasticMethod
+  {
+    filtered_white_noise,
+    spectral_representation,
+    white_noise
+  };
+
   struct StochasticMotion
   {
+    StochasticMethod method = StochasticMethod::filtered_white_noise;
     FilterParameters filter;
     double           spectral_intensity = 0; // S0, m^2/s^3
     double           duration           = 20;
     double           sample_interval    = 0.01;
+    double           cutoff_frequency   = 0; // spectral representation, rad/s; 0: default
+    unsigned int     n_frequencies      = 0; // spectral representation; 0: default
     Envelope         envelope;
     std::uint64_t    seed        = 1;
     std::uint64_t    realization = 0;
   };
 
-  /// One sample of filtered white noise, modulated by the envelope.
+  /// Standard normal CDF.
+  double standard_normal_cdf(double x);
+
+  /// xi.size() standard normals of realization `realization`.
+  void standard_normals(std::uint64_t seed, std::uint64_t realization, std::vector<double> &xi);
+
+  /// Turns standard normals into samples of one stochastic motion. Set up
+  /// once (filter propagator, frequencies); generate() allocates nothing.
+  class MotionGenerator
+  {
+  public:
+    explicit MotionGenerator(const StochasticMotion &motion);
+
+    unsigned int n_variables() const { return n_random; }
+    unsigned int n_samples() const { return n_points; }
+    /// Held (piecewise constant) rather than linear between samples.
+    bool held() const { return settings.method == StochasticMethod::white_noise; }
+    /// Two-sided PSD of the stationary (unmodulated) process, m^2/s^3.
+    double target_psd(double omega) const;
+    /// Highest frequency represented (spectral representation: the cutoff;
+    /// otherwise the Nyquist frequency pi / dt).
+    double cutoff_frequency() const { return cutoff; }
+    const StochasticMotion &motion() const { return settings; }
+    std::string description() const;
+
+    /// values (resized to n_samples()) from n_variables() normals.
+    void generate(const double *normals, std::vector<double> &values) const;
+    /// The sample of (seed, realization) of the settings.
+    GroundMotion ground_motion() const;
+
+  private:
+    StochasticMotion       settings;
+    unsigned int           n_points = 0, n_random = 0;
+    double                 cutoff   = 0;
+    double                 noise_scale = 0;
+    std::array<double, 16> propagator{};   // filter state over one interval
+    std::array<double, 4>  noise_gain{};   // response to a held unit input
+    std::array<double, 4>  output{};       // a = output . state
+    unsigned int           n_states = 2;
+    std::vector<double>    omegas, amplitudes, envelope_values;
+  };
+
+  /// One sample of the motion (all methods), modulated by the envelope.
   GroundMotion generate_ground_motion(const StochasticMotion &motion);
 
   /// S0 giving the target PGA with peak factor p: PGA^2 / (p^2 sigma^2(S0=1)).

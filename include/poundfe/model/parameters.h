@@ -67,7 +67,7 @@ namespace poundfe
 
   struct GroundMotionParameters
   {
-    std::string type         = "kanai-tajimi"; // kanai-tajimi|clough-penzien|record|none
+    std::string type         = "kanai-tajimi"; // kanai-tajimi|clough-penzien|white-noise|record|none
     double      scale_factor = 1.0;
 
     // Recorded motions.
@@ -83,7 +83,11 @@ namespace poundfe
     double       zeta_g            = 0.4;
     double       omega_f           = 1.0;
     double       zeta_f            = 0.6;
-    double       spectral_intensity = 0.0; // S0; 0 = from the target PGA
+    std::string  method            = "filtered-white-noise"; // or spectral-representation
+    double       cutoff_frequency  = 0.0; // spectral representation, rad/s; 0: min(pi/dt, 25 omega_g)
+    unsigned int n_frequencies     = 0;   // spectral representation; 0: cutoff * duration / pi
+    double       spectral_intensity = 0.0; // S0; 0 = from the target PGA (or from D)
+    double       noise_intensity_d = 0.0;  // D = pi S0 (white noise, thesis convention)
     double       target_pga        = 0.3;  // in g
     double       peak_factor       = 3.0;
     double       duration          = 20.0;
@@ -117,6 +121,31 @@ namespace poundfe
     unsigned int event_refinement    = 4; // a step with a contact change: 2^r sub-steps
   };
 
+  struct MonteCarloParameters
+  {
+    unsigned int        realizations = 100;
+    std::vector<double> drift_limits{0.005, 0.01, 0.02}; // drift ratios
+    unsigned int        histogram_bins = 20;
+  };
+
+  struct SubsetParameters
+  {
+    std::string  response  = "peak drift ratio"; // |peak roof displacement|peak contact force
+    unsigned int building  = 1;
+    unsigned int storey    = 0; // 0: the largest over the building's storeys
+    double       threshold = 0.01;
+    unsigned int samples_per_level       = 500;
+    double       conditional_probability = 0.1;
+    unsigned int max_levels              = 10;
+    double       proposal_spread         = 1.0;
+  };
+
+  struct FragilityParameters
+  {
+    std::vector<double> pga_levels{0.1, 0.2, 0.3, 0.4, 0.5}; // g
+    unsigned int        realizations_per_level = 50;
+  };
+
   struct InputParameters
   {
     std::string file;
@@ -128,6 +157,10 @@ namespace poundfe
     GroundMotionParameters          ground_motion;
     std::vector<std::string>        harmonic_forces;
     std::vector<std::string>        tabulated_forces;
+    std::vector<std::string>        white_noise_forces;
+    MonteCarloParameters            monte_carlo;
+    SubsetParameters                subset;
+    FragilityParameters             fragility;
     ContactParameters               contact;
 
     double      time_step     = 0.001;

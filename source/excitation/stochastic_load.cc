@@ -1,0 +1,63 @@
+#include <poundfe/base/exceptions.h>
+#include <poundfe/excitation/stochastic_load.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <cmath>
+
+namespace poundfe
+{
+  StochasticLoad::StochasticLoad(const InputParameters &input, const Model &model)
+    : random_seed(input.ground_motion.seed)
+  {
+    const std::string &type = input.ground_motion.type;
+    if (type == "kanai-tajimi" || type == "clough-penzien" || type == "white-noise")
+      {
+        ground.emplace(make_motion_generator(input));
+        ground_scale = input.ground_motion.scale_factor;
+        n_random     = ground->n_variables();
+      }
+    const std::vector<NodalForce> forces = make_nodal_forces(input, model);
+    for (unsigned int i = 0; i < forces.size(); ++i)
+      if (forces[i].kind == NodalForce::Kind::white_noise)
+        {
+          noise_forces.push_back(i);
+          noise_scales.push_back(std::sqrt(2 * M_PI * forces[i].intensity / forces[i].sample_interval));
+          noise_lengths.push_back(forces[i].values.size());
+          n_random += forces[i].values.size();
+        }
+  }
+
+  void
+  StochasticLoad::standard_normals(const std::uint64_t realization, std::vector<double> &xi) const
+  {
+    xi.resize(n_random);
+    poundfe::standard_normals(random_seed, realization, xi);
+  }
+
+  void
+  StochasticLoad::apply(const std::vector<double> &xi, Excitation &excitation,
+                        const double amplitude_factor) const
+  {
+    Assert(xi.size() == n_random, dealii::ExcInternalError());
+    unsigned int offset = 0;
+    if (ground)
+      {
+        std::vector<double> &samples = excitation.ground_motion_for_update().samples_for_update();
+        ground->generate(xi.data(), samples);
+        const double factor = ground_scale * amplitude_factor;
+        for (double &a : samples)
+          a *= factor;
+        offset = ground->n_variables();
+      }
+    std::vector<NodalForce> &forces = excitation.nodal_forces_for_update();
+    for (unsigned int i = 0; i < noise_forces.size(); ++i)
+      {
+        std::vector<double> &values = forces[noise_forces[i]].values;
+        const double         scale  = noise_scales[i] * amplitude_factor;
+        for (unsigned int k = 0; k < noise_lengths[i]; ++k)
+          values[k] = scale * xi[offset + k];
+        offset += noise_lengths[i];
+      }
+  }
+} // namespace poundfe
