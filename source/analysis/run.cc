@@ -112,6 +112,73 @@ namespace poundfe
         return input.end_time;
       return excitation.ground_motion().duration();
     }
+
+    /// `ground-motion --realizations N`: the samples of realizations 0..N-1
+    /// and their ensemble PSD against the target.
+    int
+    ensemble_command(const InputParameters &input, const std::string &directory,
+                     const unsigned int n_realizations)
+    {
+      const std::string &type = input.ground_motion.type;
+      if (type != "kanai-tajimi" && type != "clough-penzien" && type != "white-noise")
+        throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
+                         "--realizations needs a stochastic ground motion, got '" + type + "'");
+      const MotionGenerator generator = make_motion_generator(input);
+      const double          scale     = input.ground_motion.scale_factor;
+      create_directories(directory);
+      std::vector<std::string> header{"time"};
+      for (unsigned int r = 0; r < n_realizations; ++r)
+        header.push_back("realization_" + std::to_string(r));
+      std::vector<std::vector<double>> samples(n_realizations);
+      std::vector<double>              xi(generator.n_variables());
+      double                           variance = 0;
+      for (unsigned int r = 0; r < n_realizations; ++r)
+        {
+          standard_normals(generator.motion().seed, r, xi);
+          generator.generate(xi.data(), samples[r]);
+          for (double &a : samples[r])
+            a *= scale, variance += a * a / (n_realizations * generator.n_samples());
+        }
+      CsvWriter csv(directory + "/ground_motion_samples.csv", header);
+      for (unsigned int k = 0; k < generator.n_samples(); ++k)
+        {
+          csv.begin_row(k * generator.motion().sample_interval);
+          for (unsigned int r = 0; r < n_realizations; ++r)
+            csv.add(samples[r][k]);
+          csv.end_row();
+        }
+      csv.commit();
+      // about 200 points between 0 and the cutoff
+      const double       dw   = 2 * M_PI / (generator.n_samples() * generator.motion().sample_interval);
+      const unsigned int band = std::max(1u, static_cast<unsigned int>(generator.cutoff_frequency() / dw / 200));
+      const EnsemblePsd  psd  = ensemble_psd(generator, n_realizations, band);
+      CsvWriter          out(directory + "/ensemble_psd.csv",
+                             {"omega", "estimated_psd", "target_psd", "ratio"});
+      for (std::size_t i = 0; i < psd.omega.size(); ++i)
+        {
+          out.begin_row(psd.omega[i]);
+          out.add(psd.estimate[i] * scale * scale);
+          out.add(psd.target[i] * scale * scale);
+          out.add(psd.estimate[i] / psd.target[i]);
+          out.end_row();
+        }
+      out.commit();
+      if (input.plots)
+        draw_plots(directory,
+                   {Plot{"ensemble_psd.png",
+                         "ensemble PSD of " + std::to_string(n_realizations) + " realizations",
+                         "omega (rad/s)", "two-sided PSD (m^2/s^3)",
+                         {{"ensemble_psd.csv", "1:2", "estimate", "lines"},
+                          {"ensemble_psd.csv", "1:3", "target", "lines"}}, true},
+                    Plot{"ground_motion_samples.png", generator.description(), "time (s)",
+                         "ground acceleration (m/s^2)",
+                         {{"ground_motion_samples.csv", "1:2", "realization 0", "lines"}}}});
+      std::cout << n_realizations << " realizations of " << generator.description()
+                << ": " << generator.n_samples() << " samples each, " << generator.n_variables()
+                << " random variables; ensemble mean square " << variance << " m^2/s^4\n"
+                << "written to " << directory << "/ground_motion_samples.csv and ensemble_psd.csv\n";
+      return 0;
+    }
   } // namespace
 
   NewmarkParameters
@@ -675,8 +742,11 @@ namespace poundfe
   }
 
   int
-  ground_motion_command(const InputParameters &input, const std::string &output_directory)
+  ground_motion_command(const InputParameters &input, const std::string &output_directory,
+                        const unsigned int n_realizations)
   {
+    if (n_realizations > 0)
+      return ensemble_command(input, output_directory, n_realizations);
     const GroundMotion motion = make_ground_motion(input);
     if (motion.empty())
       throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",

@@ -2,9 +2,11 @@
 #include <poundfe/excitation/stochastic.h>
 
 #include <Eigen/Dense>
+#include <unsupported/Eigen/FFT>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <algorithm>
+#include <complex>
 #include <cmath>
 #include <stdexcept>
 
@@ -365,5 +367,43 @@ namespace poundfe
   generate_ground_motion(const StochasticMotion &motion)
   {
     return MotionGenerator(motion).ground_motion();
+  }
+
+  EnsemblePsd
+  ensemble_psd(const MotionGenerator &generator, const unsigned int n_realizations,
+               const unsigned int band)
+  {
+    const StochasticMotion &motion = generator.motion();
+    const double            dt     = motion.sample_interval;
+    const unsigned int      n      = generator.n_samples();
+    double                  envelope_square = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      envelope_square += motion.envelope(k * dt) * motion.envelope(k * dt) / n;
+    std::vector<double>               xi(generator.n_variables()), values, power(n / 2 + 1, 0.0);
+    std::vector<std::complex<double>> spectrum;
+    Eigen::FFT<double>                fft;
+    for (unsigned int r = 0; r < n_realizations; ++r)
+      {
+        standard_normals(motion.seed, r, xi);
+        generator.generate(xi.data(), values);
+        fft.fwd(spectrum, values);
+        for (unsigned int k = 0; k <= n / 2; ++k)
+          power[k] += std::norm(spectrum[k]) * dt / (2 * M_PI * n) /
+                      (n_realizations * envelope_square);
+      }
+    EnsemblePsd  psd;
+    const double dw = 2 * M_PI / (n * dt);
+    for (unsigned int k = 1; k + band <= n / 2 + 1; k += band) // skip the mean (k = 0)
+      {
+        double w = 0, p = 0;
+        for (unsigned int i = k; i < k + band; ++i)
+          w += i * dw / band, p += power[i] / band;
+        if (w > generator.cutoff_frequency())
+          break;
+        psd.omega.push_back(w);
+        psd.estimate.push_back(p);
+        psd.target.push_back(generator.target_psd(w));
+      }
+    return psd;
   }
 } // namespace poundfe

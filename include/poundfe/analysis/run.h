@@ -70,8 +70,10 @@ namespace poundfe
   int run_command(const Analysis &analysis, const std::string &output_directory);
   /// The `modal` command.
   int modal_command(const Analysis &analysis, const std::string &output_directory);
-  /// The `ground-motion` command.
-  int ground_motion_command(const InputParameters &input, const std::string &output_directory);
+  /// The `ground-motion` command; with n_realizations > 0, the samples of
+  /// realizations 0..n-1 and their ensemble PSD against the target.
+  int ground_motion_command(const InputParameters &input, const std::string &output_directory,
+                            unsigned int n_realizations = 0);
 
   /// The Newmark and Newton settings of the input's Time integration and
   /// Contact sections.

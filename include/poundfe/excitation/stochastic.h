@@ -141,6 +141,20 @@ namespace poundfe
     std::vector<double>    omegas, amplitudes, envelope_values;
   };
 
+  struct EnsemblePsd
+  {
+    std::vector<double> omega;    // rad/s, 0 .. cutoff
+    std::vector<double> estimate; // two-sided, m^2/s^3
+    std::vector<double> target;   // S(omega) of the generator
+  };
+
+  /// Averaged periodogram S(w_k) = dt / (2 pi n) |sum_j a_j e^(-i w_k t_j)|^2
+  /// of realizations 0..n_realizations-1, divided by the mean square of the
+  /// envelope (so a slowly varying envelope leaves the stationary PSD), and
+  /// averaged over `band` neighbouring frequencies.
+  EnsemblePsd ensemble_psd(const MotionGenerator &generator, unsigned int n_realizations,
+                           unsigned int band);
+
   /// One sample of the motion (all methods), modulated by the envelope.
   GroundMotion generate_ground_motion(const StochasticMotion &motion);
 

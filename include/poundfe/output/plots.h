@@ -21,6 +21,8 @@ namespace poundfe
     std::string             file; // PNG name in the output directory
     std::string             title, x_label, y_label;
     std::vector<PlotSeries> series;
+    bool                    log_y      = false;
+    bool                    style_fill = false; // filled boxes (histograms)
   };
 
   /// Draw the plots; returns the files written. Writes each PNG atomically.

@@ -1,0 +1,55 @@
+// One realization of the random loading through the model, and the scalar
+// responses the probabilistic analyses use. The model, the excitation and
+// the time-history engine are built once; a realization only rewrites the
+// random samples (StochasticLoad::apply) and restarts from rest.
+#ifndef poundfe_analysis_realization_h
+#define poundfe_analysis_realization_h
+
+#include <poundfe/analysis/run.h>
+#include <poundfe/excitation/stochastic_load.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class RealizationRunner
+  {
+  public:
+    /// Throws InputError when the input has no random loading.
+    explicit RealizationRunner(const Analysis &analysis);
+
+    unsigned int n_variables() const { return load.n_variables(); }
+    const StochasticLoad &stochastic_load() const { return load; }
+    bool has_gaps() const { return !analysis.model.gaps.empty(); }
+
+    /// Names of the response columns (realizations.csv, after 'realization,completed').
+    const std::vector<std::string> &response_names() const { return names; }
+    /// Column of a named response; throws std::out_of_range if absent.
+    unsigned int column(const std::string &name) const;
+    /// Columns of the peak drift ratios of a building's storeys (building 1-based).
+    std::vector<unsigned int> drift_columns(unsigned int building) const;
+    unsigned int roof_displacement_column(unsigned int building) const;
+
+    /// Runs the sample of xi (amplitudes times amplitude_factor); fills
+    /// `responses` in the order of response_names(); returns false when the
+    /// integration failed (the responses are then those reached so far).
+    bool run(const std::vector<double> &xi, std::vector<double> &responses,
+             double amplitude_factor = 1);
+    /// The same for the normals of (seed, realization).
+    bool run(std::uint64_t realization, std::vector<double> &responses, double amplitude_factor = 1);
+
+  private:
+    const Analysis          &analysis;
+    StochasticLoad           load;
+    Excitation               excitation;
+    TimeHistory              history;
+    std::vector<std::string> names;
+    std::vector<double>      xi;
+    std::vector<unsigned int> roof_floor; // FloorResponse index of each building's roof
+    unsigned int first_floor_column = 0, first_roof_column = 0, max_drift_column = 0;
+  };
+} // namespace poundfe
+
+#endif

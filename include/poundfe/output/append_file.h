@@ -1,0 +1,32 @@
+// A results file that grows one line at a time and survives being killed:
+// each line goes out in a single write() on an O_APPEND descriptor and is
+// synced, so after a crash the file holds complete lines and at most one
+// partial last line (which its reader must drop).
+#ifndef poundfe_output_append_file_h
+#define poundfe_output_append_file_h
+
+#include <string>
+
+namespace poundfe
+{
+  class AppendFile
+  {
+  public:
+    explicit AppendFile(const std::string &path);
+    ~AppendFile();
+    AppendFile(const AppendFile &) = delete;
+    AppendFile &operator=(const AppendFile &) = delete;
+
+    /// Appends `line` (which must end with '\n') and syncs it to disk.
+    void append(const std::string &line);
+
+  private:
+    std::string path;
+    int         descriptor = -1;
+  };
+
+  /// Appends x in the shortest form that reads back to the same double.
+  void append_number(std::string &text, double x);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,109 @@
+#include <poundfe/analysis/realization.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/output/floor_response.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <deal.II/base/exceptions.h>
+
+namespace poundfe
+{
+  RealizationRunner::RealizationRunner(const Analysis &analysis_)
+    : analysis(analysis_)
+    , load(analysis_.input, analysis_.model)
+    , excitation(make_excitation(analysis_))
+    , history(analysis_)
+  {
+    if (load.n_variables() == 0)
+      throw InputError(analysis.input.file, analysis.input.line_of("Ground motion/Type"),
+                       "Ground motion/Type",
+                       "a probabilistic analysis needs random loading: a kanai-tajimi, "
+                       "clough-penzien or white-noise ground motion, or white-noise nodal forces");
+    const FloorResponse floors(analysis.model);
+    for (const std::string &n : floors.column_names("S"))
+      names.push_back("peak_drift_ratio_" + n);
+    first_floor_column = names.size();
+    for (const std::string &n : floors.column_names("F"))
+      names.push_back("peak_floor_acceleration_" + n);
+    first_roof_column = names.size();
+    for (unsigned int b = 0; b < analysis.model.buildings.size(); ++b)
+      {
+        names.push_back("peak_roof_displacement_" + analysis.model.buildings[b].name);
+        roof_floor.push_back(floors.index(b, analysis.model.buildings[b].floors.size() - 1));
+      }
+    max_drift_column = names.size();
+    names.push_back("max_drift_ratio");
+    names.push_back("max_floor_acceleration");
+    if (has_gaps())
+      for (const char *n : {"n_impacts", "peak_contact_force", "min_clearance", "pounded"})
+        names.push_back(n);
+  }
+
+  unsigned int
+  RealizationRunner::column(const std::string &name) const
+  {
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end())
+      throw std::out_of_range("no response '" + name + "'");
+    return it - names.begin();
+  }
+
+  std::vector<unsigned int>
+  RealizationRunner::drift_columns(const unsigned int building) const
+  {
+    // drift columns come first, in FloorResponse order
+    const FloorResponse       floors(analysis.model);
+    std::vector<unsigned int> columns;
+    for (unsigned int f = 0; f < analysis.model.buildings.at(building - 1).floors.size(); ++f)
+      columns.push_back(floors.index(building - 1, f));
+    return columns;
+  }
+
+  unsigned int
+  RealizationRunner::roof_displacement_column(const unsigned int building) const
+  {
+    return first_roof_column + building - 1;
+  }
+
+  bool
+  RealizationRunner::run(const std::uint64_t realization, std::vector<double> &responses,
+                         const double amplitude_factor)
+  {
+    load.standard_normals(realization, xi);
+    return run(xi, responses, amplitude_factor);
+  }
+
+  bool
+  RealizationRunner::run(const std::vector<double> &normals, std::vector<double> &responses,
+                         const double amplitude_factor)
+  {
+    load.apply(normals, excitation, amplitude_factor);
+    RunOptions options; // no files
+    const RunResult result = history.run(excitation, options);
+
+    responses.assign(names.size(), 0.0);
+    const unsigned int n_floors = result.peak_drift_ratio.size();
+    std::copy(result.peak_drift_ratio.begin(), result.peak_drift_ratio.end(), responses.begin());
+    std::copy(result.peak_acceleration.begin(), result.peak_acceleration.end(),
+              responses.begin() + first_floor_column);
+    for (unsigned int b = 0; b < roof_floor.size(); ++b)
+      responses[first_roof_column + b] = result.peak_displacement[roof_floor[b]];
+    responses[max_drift_column] =
+      *std::max_element(result.peak_drift_ratio.begin(), result.peak_drift_ratio.begin() + n_floors);
+    responses[max_drift_column + 1] =
+      *std::max_element(result.peak_acceleration.begin(), result.peak_acceleration.end());
+    if (has_gaps())
+      {
+        double peak_force = 0;
+        for (const Impact &impact : result.impacts)
+          peak_force = std::max(peak_force, impact.peak_force);
+        unsigned int c = max_drift_column + 2;
+        responses[c++] = result.impacts.size();
+        responses[c++] = peak_force;
+        responses[c++] = result.min_clearance;
+        responses[c++] = result.impacts.empty() ? 0 : 1;
+      }
+    return result.completed;
+  }
+} // namespace poundfe
