@@ -148,10 +148,13 @@ namespace poundfe
           csv.end_row();
         }
       csv.commit();
-      // about 200 points between 0 and the cutoff
-      const double       dw   = 2 * M_PI / (generator.n_samples() * generator.motion().sample_interval);
-      const unsigned int band = std::max(1u, static_cast<unsigned int>(generator.cutoff_frequency() / dw / 200));
-      const EnsemblePsd  psd  = ensemble_psd(generator, n_realizations, band);
+      // about 200 points up to 10 omega_g (filtered) or the cutoff (white noise)
+      const double top = type == "white-noise" ?
+                           generator.cutoff_frequency() :
+                           std::min(generator.cutoff_frequency(), 10 * generator.motion().filter.omega_g);
+      const double dw  = 2 * M_PI / (generator.n_samples() * generator.motion().sample_interval);
+      const unsigned int band = std::max(1u, static_cast<unsigned int>(top / dw / 200));
+      const EnsemblePsd  psd  = ensemble_psd(generator, n_realizations, band, top);
       CsvWriter          out(directory + "/ensemble_psd.csv",
                              {"omega", "estimated_psd", "target_psd", "ratio"});
       for (std::size_t i = 0; i < psd.omega.size(); ++i)

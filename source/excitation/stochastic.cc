@@ -371,7 +371,7 @@ namespace poundfe
 
   EnsemblePsd
   ensemble_psd(const MotionGenerator &generator, const unsigned int n_realizations,
-               const unsigned int band)
+               const unsigned int band, const double max_omega)
   {
     const StochasticMotion &motion = generator.motion();
     const double            dt     = motion.sample_interval;
@@ -398,7 +398,7 @@ namespace poundfe
         double w = 0, p = 0;
         for (unsigned int i = k; i < k + band; ++i)
           w += i * dw / band, p += power[i] / band;
-        if (w > generator.cutoff_frequency())
+        if (w > std::min(max_omega, generator.cutoff_frequency()))
           break;
         psd.omega.push_back(w);
         psd.estimate.push_back(p);

@@ -151,9 +151,9 @@ namespace poundfe
   /// Averaged periodogram S(w_k) = dt / (2 pi n) |sum_j a_j e^(-i w_k t_j)|^2
   /// of realizations 0..n_realizations-1, divided by the mean square of the
   /// envelope (so a slowly varying envelope leaves the stationary PSD), and
-  /// averaged over `band` neighbouring frequencies.
+  /// averaged over `band` neighbouring frequencies, up to max_omega.
   EnsemblePsd ensemble_psd(const MotionGenerator &generator, unsigned int n_realizations,
-                           unsigned int band);
+                           unsigned int band, double max_omega);
 
   /// One sample of the motion (all methods), modulated by the envelope.
   GroundMotion generate_ground_motion(const StochasticMotion &motion);

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Monte Carlo, Subset Simulation and fragility from the command line:
+#  - one rank and two (mpirun -np 2) give the same realizations and numbers;
+#  - a run killed (SIGKILL, every process) while it runs and started again
+#    completes without losing or duplicating a realization, to the same numbers;
+#  - Subset Simulation and fragility on two ranks equal one rank;
+#  - ground-motion --realizations writes the samples and the ensemble PSD;
+#  - command-specific bad input: exit 1, one message, nothing written.
+set -eu
+poundfe=$1 mpirun=$2 input=$3
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d)
+trap 'pkill -9 -f "$work" 2> /dev/null || true; rm -rf "$work"' EXIT
+fail() { echo "FAIL $*"; exit 1; }
+# summary.json without what depends on the number of ranks or the clock
+strip() { grep -v -e wall_time -e realizations_per_second -e '"ranks"' -e realizations_run_now "$1"; }
+same_summary() {
+  diff <(strip "$1") <(strip "$2") > "$work/diff" || { cat "$work/diff" | head; fail "$3"; }
+}
+rows() { tail -n +2 "$1" | sort -t, -k1,1n; }
+
+"$poundfe" montecarlo "$input" --output "$work/one" > /dev/null
+"$mpirun" -np 2 "$poundfe" montecarlo "$input" --output "$work/two" > /dev/null
+n=$(rows "$work/one/realizations.csv" | wc -l)
+[ "$n" -eq 8 ] || fail "montecarlo: $n realizations instead of 8"
+diff <(rows "$work/one/realizations.csv") <(rows "$work/two/realizations.csv") > /dev/null ||
+  fail "montecarlo: the realizations differ between 1 and 2 ranks"
+same_summary "$work/one/summary.json" "$work/two/summary.json" "montecarlo: summary differs between 1 and 2 ranks"
+for f in pdf_max_drift_ratio.csv cdf_max_drift_ratio.csv pdf_peak_contact_force.csv cdf_min_clearance.csv; do
+  [ -s "$work/one/$f" ] || fail "montecarlo: no $f"
+done
+grep -q '"pounding"' "$work/one/summary.json" || fail "montecarlo: no pounding probability"
+echo "ok   montecarlo: -np 2 gives the realizations and summary of one rank"
+
+# Kill every process of a two-rank run once two realizations are in, then resume.
+"$mpirun" -np 2 "$poundfe" montecarlo "$input" --output "$work/killed" > "$work/killed.log" 2>&1 &
+for i in $(seq 1 1200); do
+  [ -f "$work/killed/realizations.csv" ] && [ "$(wc -l < "$work/killed/realizations.csv")" -ge 3 ] && break
+  sleep 0.02
+done
+pkill -9 -f "$work/killed" || true
+{ wait; } 2> /dev/null || true
+before=$(($(wc -l < "$work/killed/realizations.csv") - 1))
+[ -e "$work/killed/summary.json" ] && fail "resume: the kill came after the end (test too slow to kill)"
+"$poundfe" montecarlo "$input" --output "$work/killed" > "$work/resumed.log"
+grep -q "resuming: $before of 8" "$work/resumed.log" || fail "resume: did not resume from $before rows: $(cat "$work/resumed.log")"
+[ -z "$(rows "$work/killed/realizations.csv" | cut -d, -f1 | uniq -d)" ] || fail "resume: duplicated realizations"
+diff <(rows "$work/one/realizations.csv") <(rows "$work/killed/realizations.csv") > /dev/null ||
+  fail "resume: the realizations differ from an uninterrupted run"
+same_summary "$work/one/summary.json" "$work/killed/summary.json" "resume: summary differs from an uninterrupted run"
+echo "ok   montecarlo: killed after $before of 8 realizations, resumed to the same results"
+
+"$poundfe" subset "$input" --output "$work/subset-one" > /dev/null
+"$mpirun" -np 2 "$poundfe" subset "$input" --output "$work/subset-two" > /dev/null
+same_summary "$work/subset-one/summary.json" "$work/subset-two/summary.json" "subset: differs between 1 and 2 ranks"
+grep -q '"failure_probability"' "$work/subset-one/summary.json" || fail "subset: no estimate"
+echo "ok   subset: -np 2 gives the estimate of one rank"
+
+"$poundfe" fragility "$input" --output "$work/fragility-one" > /dev/null
+"$mpirun" -np 2 "$poundfe" fragility "$input" --output "$work/fragility-two" > /dev/null
+same_summary "$work/fragility-one/summary.json" "$work/fragility-two/summary.json" "fragility: differs between 1 and 2 ranks"
+diff "$work/fragility-one/fragility_points.csv" "$work/fragility-two/fragility_points.csv" > /dev/null ||
+  fail "fragility: counts differ between 1 and 2 ranks"
+[ -s "$work/fragility-one/fragility_curves.csv" ] || fail "fragility: no curves"
+echo "ok   fragility: -np 2 gives the curves of one rank"
+
+"$poundfe" ground-motion "$input" --realizations 4 --output "$work/gm" > /dev/null
+[ "$(head -1 "$work/gm/ground_motion_samples.csv" | tr ',' '\n' | wc -l)" -eq 5 ] || fail "ground-motion: not 4 sample columns"
+[ "$(wc -l < "$work/gm/ensemble_psd.csv")" -gt 50 ] || fail "ground-motion: short ensemble PSD"
+echo "ok   ground-motion --realizations"
+
+# Bad input of the probabilistic commands.
+expect_bad() { # expected-text command args...
+  local text=$1
+  shift
+  rm -rf "$work/bad"
+  if "$@" --output "$work/bad" > /dev/null 2> "$work/stderr"; then fail "$* succeeded"; fi
+  local status=$?
+  grep -qF -- "$text" "$work/stderr" || fail "$*: message lacks '$text': $(cat "$work/stderr")"
+  [ "$(wc -l < "$work/stderr")" -eq 1 ] || fail "$*: not one line: $(cat "$work/stderr")"
+  [ -e "$work/bad" ] && fail "$*: output written despite bad input"
+  echo "ok   bad input: $(cat "$work/stderr")"
+}
+sed 's/set Type = kanai-tajimi/set Type = none/' "$input" > "$work/no-random.prm"
+expect_bad "needs random loading" "$poundfe" montecarlo "$work/no-random.prm"
+sed 's/set Type = kanai-tajimi/set Type = white-noise/; s/set Target PGA  = 0.35/set S0 = 0.01/' "$input" > "$work/white.prm"
+expect_bad "scale a Kanai-Tajimi or Clough-Penzien" "$poundfe" fragility "$work/white.prm"
+expect_bad "needs a whole number" "$poundfe" ground-motion "$input" --realizations 0
+# a results directory of another seed is not silently mixed in
+sed 's/set Seed        = 2026/set Seed        = 7/' "$input" > "$work/other-seed.prm"
+if "$poundfe" montecarlo "$work/other-seed.prm" --output "$work/one" > /dev/null 2> "$work/stderr"; then
+  fail "montecarlo: resumed a directory of another seed"
+fi
+grep -q "seed 2026" "$work/stderr" || fail "montecarlo: other seed: $(cat "$work/stderr")"
+echo "ok   bad input: $(cat "$work/stderr")"
