@@ -11,9 +11,16 @@
 //   - two 10-storey, 3-bay frames side by side (a larger model).
 // Usage: build/poundfe-bench [input/two-buildings.prm] [repeats]
 // (run from the repository root).
+// Monte Carlo: [mpirun -np P] build/poundfe-bench --montecarlo FILE N
+//   times one realization (best of 3, on rank 0) and N realizations of FILE
+//   through the montecarlo driver (realizations.csv in a fresh temporary
+//   directory), and prints realizations per second on P ranks;
+//   bench/montecarlo.sh runs it on 1 and 2 ranks and prints the speed-up.
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
 #include <poundfe/analysis/analysis.h>
+#include <poundfe/analysis/montecarlo.h>
+#include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/model/parameters.h>
@@ -85,12 +92,51 @@ namespace
       }
     std::filesystem::remove_all(dir);
   }
+
+  int
+  measure_monte_carlo(const std::string &file, const unsigned long n)
+  {
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const auto         t0      = std::chrono::steady_clock::now();
+    const Analysis     analysis = prepare_analysis(read_parameters(file));
+    RealizationRunner  runner(analysis);
+    const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double       one   = 1e300;
+    std::vector<double> responses;
+    if (rank == 0)
+      for (unsigned int r = 0; r < 3; ++r)
+        {
+          const auto start = std::chrono::steady_clock::now();
+          runner.run(r, responses);
+          one = std::min(one, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+    const std::string dir = std::filesystem::temp_directory_path() /
+                            ("poundfe-bench-mc-" + std::to_string(n_ranks));
+    if (rank == 0)
+      {
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir);
+      }
+    const MonteCarloTable table = run_monte_carlo(runner, n, 1.0, dir + "/realizations.csv", "  ");
+    if (rank == 0)
+      {
+        std::filesystem::remove_all(dir);
+        std::printf("montecarlo %s: %u variables, one realization %.3f s (best of 3, set-up "
+                    "%.3f s once); %lu realizations on %u rank%s in %.2f s: %.2f realizations/s\n",
+                    file.c_str(), runner.n_variables(), one, setup, n, n_ranks,
+                    n_ranks > 1 ? "s" : "", table.wall_time, n / table.wall_time);
+      }
+    return 0;
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  if (argc > 3 && std::string(argv[1]) == "--montecarlo")
+    return measure_monte_carlo(argv[2], std::stoul(argv[3]));
   const std::string  file    = argc > 1 ? argv[1] : "input/two-buildings.prm";
   const unsigned int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   const InputParameters input = read_parameters(file);
