@@ -32,9 +32,12 @@ done
 grep -q '"pounding"' "$work/one/summary.json" || fail "montecarlo: no pounding probability"
 echo "ok   montecarlo: -np 2 gives the realizations and summary of one rank"
 
-# Kill every process of a two-rank run once two realizations are in, then resume.
-"$mpirun" -np 2 "$poundfe" montecarlo "$input" --output "$work/killed" > "$work/killed.log" 2>&1 &
-for i in $(seq 1 1200); do
+# Kill every process of a two-rank run of 20 realizations once two are in,
+# then resume; compare with an uninterrupted one-rank run.
+sed 's/set Realizations   = 8/set Realizations   = 20/' "$input" > "$work/twenty.prm"
+"$poundfe" montecarlo "$work/twenty.prm" --output "$work/twenty" > /dev/null
+"$mpirun" -np 2 "$poundfe" montecarlo "$work/twenty.prm" --output "$work/killed" > "$work/killed.log" 2>&1 &
+for i in $(seq 1 1500); do
   [ -f "$work/killed/realizations.csv" ] && [ "$(wc -l < "$work/killed/realizations.csv")" -ge 3 ] && break
   sleep 0.02
 done
@@ -42,13 +45,16 @@ pkill -9 -f "$work/killed" || true
 { wait; } 2> /dev/null || true
 before=$(($(wc -l < "$work/killed/realizations.csv") - 1))
 [ -e "$work/killed/summary.json" ] && fail "resume: the kill came after the end (test too slow to kill)"
-"$poundfe" montecarlo "$input" --output "$work/killed" > "$work/resumed.log"
-grep -q "resuming: $before of 8" "$work/resumed.log" || fail "resume: did not resume from $before rows: $(cat "$work/resumed.log")"
+# as if the kill had cut a row in the middle: the resumed run must drop it
+printf '19,2026,1,0.0123' >> "$work/killed/realizations.csv"
+"$poundfe" montecarlo "$work/twenty.prm" --output "$work/killed" > "$work/resumed.log"
+grep -q "resuming: $before of 20" "$work/resumed.log" || fail "resume: did not resume from $before rows: $(cat "$work/resumed.log")"
 [ -z "$(rows "$work/killed/realizations.csv" | cut -d, -f1 | uniq -d)" ] || fail "resume: duplicated realizations"
-diff <(rows "$work/one/realizations.csv") <(rows "$work/killed/realizations.csv") > /dev/null ||
+[ "$(rows "$work/killed/realizations.csv" | wc -l)" -eq 20 ] || fail "resume: not 20 realizations"
+diff <(rows "$work/twenty/realizations.csv") <(rows "$work/killed/realizations.csv") > /dev/null ||
   fail "resume: the realizations differ from an uninterrupted run"
-same_summary "$work/one/summary.json" "$work/killed/summary.json" "resume: summary differs from an uninterrupted run"
-echo "ok   montecarlo: killed after $before of 8 realizations, resumed to the same results"
+same_summary "$work/twenty/summary.json" "$work/killed/summary.json" "resume: summary differs from an uninterrupted run"
+echo "ok   montecarlo: killed after $before of 20 realizations, resumed to the same results"
 
 "$poundfe" subset "$input" --output "$work/subset-one" > /dev/null
 "$mpirun" -np 2 "$poundfe" subset "$input" --output "$work/subset-two" > /dev/null
