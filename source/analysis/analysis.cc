@@ -1,4 +1,5 @@
 #include <poundfe/analysis/analysis.h>
+#include <poundfe/output/json_writer.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/model/model_builder.h>
 
@@ -51,5 +52,16 @@ namespace poundfe
     assemble_damping(model, coefficients, system);
     analysis.modes = compute_modes(system.mass, system.stiffness, system.influence, input.n_modes);
     return analysis;
+  }
+
+  void
+  begin_summary(JsonWriter &json, const std::string &command, const InputParameters &input,
+                const std::string &status)
+  {
+    json.begin_object()
+      .value("program", "poundfe")
+      .value("command", command)
+      .value("input", input.file)
+      .value("status", status);
   }
 } // namespace poundfe

@@ -365,12 +365,8 @@ namespace poundfe
     const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
     const Exceedances   e = count_exceedances(table, runner, input.monte_carlo.drift_limits);
     JsonWriter          json;
-    json.begin_object()
-      .value("program", "poundfe")
-      .value("command", "montecarlo")
-      .value("input", input.file)
-      .value("status", "completed")
-      .value("realizations", n)
+    begin_summary(json, "montecarlo", input);
+    json.value("realizations", n)
       .value("completed_realizations", n_completed)
       .value("failed_realizations", n - n_completed)
       .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()))
@@ -572,12 +568,8 @@ namespace poundfe
     write_file_atomically(directory + "/fragility_curves.csv", fitted);
 
     JsonWriter json;
-    json.begin_object()
-      .value("program", "poundfe")
-      .value("command", "fragility")
-      .value("input", input.file)
-      .value("status", "completed")
-      .value("intensity_measure", "PGA (g)")
+    begin_summary(json, "fragility", input);
+    json.value("intensity_measure", "PGA (g)")
       .value("pga_levels_g", levels)
       .value("realizations_per_level", input.fragility.realizations_per_level)
       .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));

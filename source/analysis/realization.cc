@@ -11,8 +11,8 @@ namespace poundfe
 {
   RealizationRunner::RealizationRunner(const Analysis &analysis_)
     : analysis(analysis_)
-    , load(analysis_.input, analysis_.model)
     , excitation(make_excitation(analysis_))
+    , load(analysis_.input, excitation)
     , history(analysis_)
   {
     if (load.n_variables() == 0)

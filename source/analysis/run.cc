@@ -207,7 +207,7 @@ namespace poundfe
                           make_nodal_forces(analysis.input, analysis.model));
     if (!analysis.input.white_noise_forces.empty())
       {
-        const StochasticLoad load(analysis.input, analysis.model);
+        const StochasticLoad load(analysis.input, excitation);
         std::vector<double>  xi;
         load.standard_normals(analysis.input.ground_motion.realization, xi);
         load.apply(xi, excitation);
@@ -450,11 +450,7 @@ namespace poundfe
     write_file_atomically(dir + "/acceleration_profile.csv", accel_profile);
 
     JsonWriter json;
-    json.begin_object()
-      .value("program", "poundfe")
-      .value("command", "run")
-      .value("input", input.file)
-      .value("status", result.completed ? "completed" : "failed");
+    begin_summary(json, "run", input, result.completed ? "completed" : "failed");
     if (!result.completed)
       json.value("message", result.message);
     write_model(json, analysis);

@@ -132,24 +132,24 @@ namespace poundfe
     auto f      = [&](const Point &x) {
       return negative_log_likelihood(x, intensity, n_failures, n_trials);
     };
-    std::array<Point, 3>  simplex{{{log_mean, std::log(0.5)},
-                                   {log_mean + 0.5, std::log(0.5)},
-                                   {log_mean, std::log(0.5) + 0.5}}};
-    std::array<double, 3> value{f(simplex[0]), f(simplex[1]), f(simplex[2])};
+    // a + t (b - a)
+    auto between = [](const Point &a, const Point &b, const double t) {
+      return Point{{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])}};
+    };
+    std::array<Point, 3>  simplex{{{{log_mean, std::log(0.5)}},
+                                   {{log_mean + 0.5, std::log(0.5)}},
+                                   {{log_mean, std::log(0.5) + 0.5}}}};
+    std::array<double, 3> value{{f(simplex[0]), f(simplex[1]), f(simplex[2])}};
     for (unsigned int iteration = 0; iteration < 2000; ++iteration)
       {
-        std::array<int, 3> order{0, 1, 2};
+        std::array<int, 3> order{{0, 1, 2}};
         std::sort(order.begin(), order.end(), [&](int a, int b) { return value[a] < value[b]; });
         const int best = order[0], middle = order[1], worst = order[2];
         if (std::abs(value[worst] - value[best]) < 1e-12 * (1 + std::abs(value[best])) &&
             std::abs(simplex[worst][0] - simplex[best][0]) + std::abs(simplex[worst][1] - simplex[best][1]) < 1e-10)
           break;
-        const Point centroid{(simplex[best][0] + simplex[middle][0]) / 2,
-                             (simplex[best][1] + simplex[middle][1]) / 2};
-        auto along = [&](const double t) {
-          return Point{centroid[0] + t * (simplex[worst][0] - centroid[0]),
-                       centroid[1] + t * (simplex[worst][1] - centroid[1])};
-        };
+        const Point centroid = between(simplex[best], simplex[middle], 0.5);
+        auto along = [&](const double t) { return between(centroid, simplex[worst], t); };
         const Point  reflected = along(-1);
         const double fr        = f(reflected);
         if (fr < value[best])
@@ -170,8 +170,7 @@ namespace poundfe
             else
               for (const int i : {middle, worst}) // shrink towards the best
                 {
-                  simplex[i] = Point{(simplex[i][0] + simplex[best][0]) / 2,
-                                     (simplex[i][1] + simplex[best][1]) / 2};
+                  simplex[i] = between(simplex[i], simplex[best], 0.5);
                   value[i]   = f(simplex[i]);
                 }
           }

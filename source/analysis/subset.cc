@@ -302,12 +302,8 @@ namespace poundfe
     write_file_atomically(directory + "/subset_levels.csv", csv);
 
     JsonWriter json;
-    json.begin_object()
-      .value("program", "poundfe")
-      .value("command", "subset")
-      .value("input", input.file)
-      .value("status", "completed")
-      .value("response", ss.response)
+    begin_summary(json, "subset", input);
+    json.value("response", ss.response)
       .value("building", ss.building)
       .value("storey", ss.storey)
       .value("threshold", ss.threshold)

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace poundfe
@@ -65,7 +66,7 @@ namespace poundfe
            g.noise_intensity_d / M_PI :
            intensity_from_pga(s.filter, g.target_pga * standard_gravity, g.peak_factor));
     s.duration               = g.duration;
-    s.sample_interval        = g.sample_interval > 0 ? g.sample_interval : input.time_step;
+    s.sample_interval        = stochastic_sample_interval(input);
     s.cutoff_frequency       = g.cutoff_frequency;
     s.n_frequencies          = g.n_frequencies;
     s.envelope.kind          = g.envelope;
@@ -165,75 +166,73 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// Each non-blank entry of `entries`: the force with its target set, and
+    /// the fields after 'building floor node dof' for `read_rest`.
+    void
+    parse_forces(const InputParameters &input, const Model &model,
+                 const std::vector<std::string> &entries, const std::string &path,
+                 const NodalForce::Kind kind, std::vector<NodalForce> &forces,
+                 const std::function<void(std::istringstream &, const std::string &, NodalForce &)>
+                   &read_rest)
+    {
+      for (const std::string &entry : entries)
+        {
+          if (entry.find_first_not_of(" \t") == std::string::npos)
+            continue;
+          std::istringstream fields(entry);
+          const ForceTarget  target = find_target(input, model, fields, path, entry);
+          NodalForce         f;
+          f.equation = target.equation;
+          f.label    = target.label;
+          f.kind     = kind;
+          read_rest(fields, entry, f);
+          forces.push_back(std::move(f));
+        }
+    }
+  } // namespace
+
   std::vector<NodalForce>
   make_nodal_forces(const InputParameters &input, const Model &model)
   {
     std::vector<NodalForce> forces;
     const std::string       harmonic_path = "Nodal forces/Harmonic";
-    for (const std::string &entry : input.harmonic_forces)
-      {
-        if (entry.find_first_not_of(" \t") == std::string::npos)
-          continue;
-        std::istringstream fields(entry);
-        const ForceTarget  target = find_target(input, model, fields, harmonic_path, entry);
-        NodalForce         f;
-        f.equation = target.equation;
-        f.label    = target.label;
-        f.kind     = NodalForce::Kind::harmonic;
-        if (!(fields >> f.amplitude >> f.omega))
-          throw InputError(input.file, input.line_of(harmonic_path), harmonic_path,
-                           "'" + entry + "': expected '... amplitude omega [phase]'");
-        fields >> f.phase;
-        forces.push_back(f);
-      }
+    parse_forces(input, model, input.harmonic_forces, harmonic_path, NodalForce::Kind::harmonic,
+                 forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
+                   if (!(fields >> f.amplitude >> f.omega))
+                     throw InputError(input.file, input.line_of(harmonic_path), harmonic_path,
+                                      "'" + entry + "': expected '... amplitude omega [phase]'");
+                   fields >> f.phase;
+                 });
     const std::string tabulated_path = "Nodal forces/Tabulated";
-    for (const std::string &entry : input.tabulated_forces)
-      {
-        if (entry.find_first_not_of(" \t") == std::string::npos)
-          continue;
-        std::istringstream fields(entry);
-        const ForceTarget  target = find_target(input, model, fields, tabulated_path, entry);
-        std::string        file;
-        if (!(fields >> file))
-          throw InputError(input.file, input.line_of(tabulated_path), tabulated_path,
-                           "'" + entry + "': expected '... file'");
-        const ColumnTable table = read_columns(input.resolve(file));
-        if (table.columns != 2)
-          throw InputError(input.resolve(file), 0, tabulated_path,
-                           "a force table has two columns: time, force");
-        for (std::size_t i = 1; i < table.times.size(); ++i)
-          if (!(table.times[i] > table.times[i - 1]))
-            throw InputError(input.resolve(file), 0, tabulated_path,
-                             "times must increase (row " + std::to_string(i + 1) + ")");
-        NodalForce f;
-        f.equation = target.equation;
-        f.label    = target.label;
-        f.kind     = NodalForce::Kind::tabulated;
-        f.times    = table.times;
-        f.values   = table.values;
-        forces.push_back(f);
-      }
+    parse_forces(input, model, input.tabulated_forces, tabulated_path, NodalForce::Kind::tabulated,
+                 forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
+                   std::string file;
+                   if (!(fields >> file))
+                     throw InputError(input.file, input.line_of(tabulated_path), tabulated_path,
+                                      "'" + entry + "': expected '... file'");
+                   const ColumnTable table = read_columns(input.resolve(file));
+                   if (table.columns != 2)
+                     throw InputError(input.resolve(file), 0, tabulated_path,
+                                      "a force table has two columns: time, force");
+                   for (std::size_t i = 1; i < table.times.size(); ++i)
+                     if (!(table.times[i] > table.times[i - 1]))
+                       throw InputError(input.resolve(file), 0, tabulated_path,
+                                        "times must increase (row " + std::to_string(i + 1) + ")");
+                   f.times  = table.times;
+                   f.values = table.values;
+                 });
     const std::string noise_path = "Nodal forces/White noise";
-    const GroundMotionParameters &g = input.ground_motion;
-    for (const std::string &entry : input.white_noise_forces)
-      {
-        if (entry.find_first_not_of(" \t") == std::string::npos)
-          continue;
-        std::istringstream fields(entry);
-        const ForceTarget  target = find_target(input, model, fields, noise_path, entry);
-        NodalForce         f;
-        f.equation = target.equation;
-        f.label    = target.label;
-        f.kind     = NodalForce::Kind::white_noise;
-        if (!(fields >> f.intensity) || !(f.intensity > 0))
-          throw InputError(input.file, input.line_of(noise_path), noise_path,
-                           "'" + entry + "': expected '... S0' with S0 > 0");
-        f.sample_interval = g.sample_interval > 0 ? g.sample_interval : input.time_step;
-        // the white-noise forces last as long as the stochastic ground motion would
-        f.values.assign(static_cast<std::size_t>(std::ceil(g.duration / f.sample_interval - 1e-9)) + 1,
-                        0.0);
-        forces.push_back(f);
-      }
+    parse_forces(input, model, input.white_noise_forces, noise_path, NodalForce::Kind::white_noise,
+                 forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
+                   if (!(fields >> f.intensity) || !(f.intensity > 0))
+                     throw InputError(input.file, input.line_of(noise_path), noise_path,
+                                      "'" + entry + "': expected '... S0' with S0 > 0");
+                   f.sample_interval = stochastic_sample_interval(input);
+                   // the white-noise forces last as long as the stochastic ground motion would
+                   f.values.assign(n_samples(input.ground_motion.duration, f.sample_interval), 0.0);
+                 });
     return forces;
   }
 } // namespace poundfe

@@ -189,6 +189,12 @@ namespace poundfe
     return r * std::cos(2 * M_PI * u2);
   }
 
+  unsigned int
+  n_samples(const double duration, const double interval)
+  {
+    return static_cast<unsigned int>(std::ceil(duration / interval - 1e-9)) + 1;
+  }
+
   double
   standard_normal_cdf(const double x)
   {
@@ -208,7 +214,7 @@ namespace poundfe
     : settings(motion)
   {
     const double dt = motion.sample_interval;
-    n_points = static_cast<unsigned int>(std::ceil(motion.duration / dt - 1e-9)) + 1;
+    n_points = poundfe::n_samples(motion.duration, dt);
     envelope_values.resize(n_points);
     for (unsigned int k = 0; k < n_points; ++k)
       envelope_values[k] = motion.envelope(k * dt);

@@ -7,7 +7,7 @@
 
 namespace poundfe
 {
-  StochasticLoad::StochasticLoad(const InputParameters &input, const Model &model)
+  StochasticLoad::StochasticLoad(const InputParameters &input, const Excitation &excitation)
     : random_seed(input.ground_motion.seed)
   {
     const std::string &type = input.ground_motion.type;
@@ -17,7 +17,7 @@ namespace poundfe
         ground_scale = input.ground_motion.scale_factor;
         n_random     = ground->n_variables();
       }
-    const std::vector<NodalForce> forces = make_nodal_forces(input, model);
+    const std::vector<NodalForce> &forces = excitation.nodal_forces();
     for (unsigned int i = 0; i < forces.size(); ++i)
       if (forces[i].kind == NodalForce::Kind::white_noise)
         {

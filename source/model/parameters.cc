@@ -608,7 +608,7 @@ namespace poundfe
           const std::string st = gm + "Stochastic/";
           c.non_negative(st + "D", g.noise_intensity_d);
           c.non_negative(st + "Cutoff frequency", g.cutoff_frequency);
-          const double dt = g.sample_interval > 0 ? g.sample_interval : p.time_step;
+          const double dt = stochastic_sample_interval(p);
           if (g.method == "spectral-representation" && g.cutoff_frequency * dt > M_PI)
             c.fail(st + "Cutoff frequency",
                    "exceeds pi / sample interval = " + std::to_string(M_PI / dt) + " rad/s");
@@ -688,6 +688,13 @@ namespace poundfe
         c.fail("Output/Directory", "must not be empty");
     }
   } // namespace
+
+  double
+  stochastic_sample_interval(const InputParameters &input)
+  {
+    return input.ground_motion.sample_interval > 0 ? input.ground_motion.sample_interval :
+                                                     input.time_step;
+  }
 
   int
   InputParameters::line_of(const std::string &path) const

@@ -223,8 +223,8 @@ namespace
   stationary_mean_square(const InputParameters &input)
   {
     const Analysis       analysis = prepare_analysis(input);
-    const StochasticLoad load(input, analysis.model);
     Excitation           excitation = make_excitation(analysis);
+    const StochasticLoad load(input, excitation);
     NewmarkIntegrator    integrator(analysis.system, "eigen-ldlt", newmark_parameters(input));
     const LoadFunction   p = [&](double t, Vector &f) { excitation.load(t, f); };
     std::vector<double>  xi;

@@ -8,10 +8,13 @@
 #include <poundfe/model/model.h>
 #include <poundfe/model/parameters.h>
 
+#include <string>
 #include <vector>
 
 namespace poundfe
 {
+  class JsonWriter;
+
   struct Analysis
   {
     InputParameters    input;
@@ -23,6 +26,10 @@ namespace poundfe
 
   /// Throws InputError (bad input) or NumericalError (e.g. a mechanism).
   Analysis prepare_analysis(const InputParameters &input);
+
+  /// Opens a command's summary.json with program, command, input and status.
+  void begin_summary(JsonWriter &json, const std::string &command, const InputParameters &input,
+                     const std::string &status = "completed");
 } // namespace poundfe
 
 #endif

@@ -42,8 +42,8 @@ namespace poundfe
 
   private:
     const Analysis          &analysis;
-    StochasticLoad           load;
     Excitation               excitation;
+    StochasticLoad           load; // after the excitation it is made from
     TimeHistory              history;
     std::vector<std::string> names;
     std::vector<double>      xi;

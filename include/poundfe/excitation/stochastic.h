@@ -99,6 +99,9 @@ namespace poundfe
     std::uint64_t    realization = 0;
   };
 
+  /// Samples of a motion of `duration` on a grid of `interval`, both ends included.
+  unsigned int n_samples(double duration, double interval);
+
   /// Standard normal CDF.
   double standard_normal_cdf(double x);
 

@@ -19,7 +19,8 @@ namespace poundfe
   class StochasticLoad
   {
   public:
-    StochasticLoad(const InputParameters &input, const Model &model);
+    /// The random parts of `excitation`, which was made from `input`.
+    StochasticLoad(const InputParameters &input, const Excitation &excitation);
 
     unsigned int  n_variables() const { return n_random; }
     std::uint64_t seed() const { return random_seed; }

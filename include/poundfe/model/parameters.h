@@ -193,6 +193,10 @@ namespace poundfe
     std::map<std::string, int> lines;
   };
 
+  /// Interval of the generated white noise: Ground motion/Stochastic/Sample
+  /// interval, or the analysis time step when that is 0.
+  double stochastic_sample_interval(const InputParameters &input);
+
   /// Read and check a .prm or .json file. Throws InputError.
   InputParameters read_parameters(const std::string &file);
 
