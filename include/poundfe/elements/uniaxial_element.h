@@ -48,6 +48,14 @@ namespace poundfe
       return d;
     }
 
+    // What observers and outputs read (the law's trial state, which is the
+    // committed state between steps).
+    double force() const { return law->force(); }
+    double history_variable() const { return law->history_variable(); }
+    double stored_energy() const { return law->stored_energy(); }
+    double yield_deformation() const { return law->yield_deformation(); }
+    double initial_stiffness() const { return law->initial_stiffness(); }
+
     /// A copy with its own law in the same state.
     UniaxialElement clone() const;
   };
