@@ -79,16 +79,16 @@ namespace
             options.vtu              = false;
             options.plots            = false;
             result = run_time_history(analysis, excitation, options);
-            best   = std::min(best, result.wall_time);
+            best   = std::min(best, result.status.wall_time);
           }
         const IterationStatistics &s = result.statistics;
-        std::printf("%-34s %4u eqs %3zu nl %2zu gaps %-10s %-11s %7lu steps %9.0f steps/s  %5.2f "
+        std::printf("%-34s %4u eqs %3u nl %2zu gaps %-10s %-11s %7lu steps %9.0f steps/s  %5.2f "
                     "it/step  %lu cuts %4zu impacts (set-up %.3f s)\n",
-                    label, analysis.model.n_equations(), result.element_labels.size(),
+                    label, analysis.model.n_equations(), result.n_nonlinear_elements,
                     analysis.model.gaps.size(),
-                    solver.c_str(), input.tangent_update.c_str(), result.steps,
-                    result.steps / best, s.steps ? double(s.iterations) / s.steps : 0.0,
-                    s.step_cuts, result.impacts.size(), setup);
+                    solver.c_str(), input.tangent_update.c_str(), result.status.steps,
+                    result.status.steps / best, s.steps ? double(s.iterations) / s.steps : 0.0,
+                    s.step_cuts, result.n_impacts, setup);
       }
     std::filesystem::remove_all(dir);
   }

@@ -14,6 +14,7 @@ namespace poundfe
     , excitation(make_excitation(analysis_))
     , load(analysis_.input, excitation)
     , history(analysis_)
+    , peaks(analysis_.model, history.nonlinear_elements())
   {
     if (load.n_variables() == 0)
       throw InputError(analysis.input.file, analysis.input.line_of("Ground motion/Type"),
@@ -21,11 +22,10 @@ namespace poundfe
                        "a probabilistic analysis needs random loading: a kanai-tajimi, "
                        "clough-penzien or white-noise ground motion, or white-noise nodal forces");
     const FloorResponse floors(analysis.model);
-    for (const std::string &n : floors.column_names("S"))
-      names.push_back("peak_drift_ratio_" + n);
+    names = floors.column_names("storey", "peak_drift_ratio");
     first_floor_column = names.size();
-    for (const std::string &n : floors.column_names("F"))
-      names.push_back("peak_floor_acceleration_" + n);
+    for (const std::string &n : floors.column_names("floor", "peak_acc_m_s2"))
+      names.push_back(n);
     first_roof_column = names.size();
     for (unsigned int b = 0; b < analysis.model.buildings.size(); ++b)
       {
@@ -79,31 +79,30 @@ namespace poundfe
                          const double amplitude_factor)
   {
     load.apply(normals, excitation, amplitude_factor);
-    RunOptions options; // no files
-    const RunResult result = history.run(excitation, options);
+    const RunStatus      status = history.run(excitation, {&peaks});
+    const FloorResponse &floors = peaks.floors();
 
     responses.assign(names.size(), 0.0);
-    const unsigned int n_floors = result.peak_drift_ratio.size();
-    std::copy(result.peak_drift_ratio.begin(), result.peak_drift_ratio.end(), responses.begin());
-    std::copy(result.peak_acceleration.begin(), result.peak_acceleration.end(),
-              responses.begin() + first_floor_column);
+    const std::vector<double> &drift = floors.peak_drift_ratio();
+    const std::vector<double> &acceleration = floors.peak_acceleration();
+    std::copy(drift.begin(), drift.end(), responses.begin());
+    std::copy(acceleration.begin(), acceleration.end(), responses.begin() + first_floor_column);
     for (unsigned int b = 0; b < roof_floor.size(); ++b)
-      responses[first_roof_column + b] = result.peak_displacement[roof_floor[b]];
-    responses[max_drift_column] =
-      *std::max_element(result.peak_drift_ratio.begin(), result.peak_drift_ratio.begin() + n_floors);
-    responses[max_drift_column + 1] =
-      *std::max_element(result.peak_acceleration.begin(), result.peak_acceleration.end());
+      responses[first_roof_column + b] = floors.peak_displacement()[roof_floor[b]];
+    responses[max_drift_column]     = *std::max_element(drift.begin(), drift.end());
+    responses[max_drift_column + 1] = *std::max_element(acceleration.begin(), acceleration.end());
     if (has_gaps())
       {
-        double peak_force = 0;
-        for (const Impact &impact : result.impacts)
+        const std::vector<Impact> &impacts = history.state().impact_log().impacts();
+        double                     peak_force = 0;
+        for (const Impact &impact : impacts)
           peak_force = std::max(peak_force, impact.peak_force);
         unsigned int c = max_drift_column + 2;
-        responses[c++] = result.impacts.size();
+        responses[c++] = impacts.size();
         responses[c++] = peak_force;
-        responses[c++] = result.min_clearance;
-        responses[c++] = result.impacts.empty() ? 0 : 1;
+        responses[c++] = peaks.min_clearance();
+        responses[c++] = impacts.empty() ? 0 : 1;
       }
-    return result.completed;
+    return status.completed();
   }
 } // namespace poundfe

@@ -85,19 +85,13 @@ namespace poundfe
       return rank + 1;
     }
 
-    /// Put Bouc-Wen rotational hinges at the selected member ends of building
-    /// b: the member end moves to a new node that shares the joint's
-    /// translations, and a rotational spring joins the two rotations.
+    /// Label every member of a building by its place: C<storey>.<column line>
+    /// for columns, B<floor>.<bay> for beams (lines and bays counted from the
+    /// left, 1-based), M<n> for other members. The pieces of a member split
+    /// into several elements share its label.
     void
-    insert_hinges(Model &model, const BuildingParameters &p, const unsigned int b,
-                  const Building &building, const unsigned int first_member)
+    label_members(Model &model, const Building &building, const unsigned int first_member)
     {
-      if (p.hinge_locations.empty())
-        return;
-      auto wants = [&](const char *location) {
-        return std::find(p.hinge_locations.begin(), p.hinge_locations.end(), location) !=
-               p.hinge_locations.end();
-      };
       const unsigned int last_member = model.members.size();
       double             extent      = 0;
       std::vector<double> column_lines;
@@ -121,7 +115,40 @@ namespace poundfe
           ++f;
         return f + 1;
       };
+      for (unsigned int m = first_member; m < last_member; ++m)
+        {
+          Member      &member = model.members[m];
+          const Point2 p0     = model.nodes[member.nodes[0]].position;
+          const Point2 p1     = model.nodes[member.nodes[1]].position;
+          std::string  where;
+          if (member.kind == MemberKind::column)
+            where = "C" + std::to_string(floor_above(std::max(p0.y, p1.y))) + "." +
+                    std::to_string(rank_of(column_lines, p0.x, tolerance));
+          else if (member.kind == MemberKind::beam)
+            where = "B" + std::to_string(floor_above(p0.y)) + "." +
+                    std::to_string(rank_of(column_lines, std::min(p0.x, p1.x) + tolerance,
+                                           tolerance));
+          else
+            where = "M" + std::to_string(m - first_member + 1);
+          member.label = building.name + "_" + where;
+        }
+    }
 
+    /// Put Bouc-Wen rotational hinges at the selected member ends of building
+    /// b: the member end moves to a new node that shares the joint's
+    /// translations, and a rotational spring joins the two rotations. The
+    /// hinge is labelled by its member and end (A3_C1.2_bottom, A3_B1.1_left).
+    void
+    insert_hinges(Model &model, const BuildingParameters &p, const unsigned int b,
+                  const unsigned int first_member)
+    {
+      if (p.hinge_locations.empty())
+        return;
+      auto wants = [&](const char *location) {
+        return std::find(p.hinge_locations.begin(), p.hinge_locations.end(), location) !=
+               p.hinge_locations.end();
+      };
+      const unsigned int last_member = model.members.size();
       for (unsigned int m = first_member; m < last_member; ++m)
         {
           const Member member = model.members[m];
@@ -153,19 +180,14 @@ namespace poundfe
                   if (!((wants("column ends")) || (wants("column tops") && !bottom) ||
                         (wants("column bases") && bottom && supported)))
                     continue;
-                  where = "C" + std::to_string(floor_above(std::max(here.y, there.y))) + "." +
-                          std::to_string(rank_of(column_lines, here.x, tolerance)) +
-                          (bottom ? "_bottom" : "_top");
+                  where = bottom ? "_bottom" : "_top";
                 }
               else if (member.kind == MemberKind::beam)
                 {
                   if (!wants("beam ends"))
                     continue;
                   const bool left = here.x < there.x;
-                  where = "B" + std::to_string(floor_above(here.y)) + "." +
-                          std::to_string(rank_of(column_lines, std::min(here.x, there.x) +
-                                                                 tolerance, tolerance)) +
-                          (left ? "_left" : "_right");
+                  where = left ? "_left" : "_right";
                 }
               else
                 continue;
@@ -181,7 +203,7 @@ namespace poundfe
               hinge.member_node = add_node(model, here, b);
               hinge.member      = m;
               hinge.building    = b;
-              hinge.label       = p.name + "_" + where;
+              hinge.label       = member.label + where;
               hinge.law         = p.hysteresis;
               hinge.law.stiffness = stiffness;
               hinge.law.yield_deformation =
@@ -604,7 +626,8 @@ namespace poundfe
             building.type = BuildingType::mesh;
             build_from_mesh(model, input, p, b, building);
           }
-        insert_hinges(model, p, b, building, first_member);
+        label_members(model, building, first_member);
+        insert_hinges(model, p, b, first_member);
         building.n_nodes = model.n_nodes() - building.first_node;
 
         RayleighDamping &d = building.damping;

@@ -325,6 +325,9 @@ namespace poundfe
                         "Interval of VTU frames, s (0: none).");
       prm.add_parameter("Plots", p.plots, "Make PNG plots with gnuplot.");
       prm.add_parameter("Number of modes", p.n_modes, "Modes reported.", Patterns::Integer(1));
+      prm.enter_subsection("Recorders");
+      p.recorders.declare(prm);
+      prm.leave_subsection();
       prm.leave_subsection();
 
       prm.enter_subsection("Monte Carlo");
@@ -752,6 +755,7 @@ namespace poundfe
         building.hysteresis.tolerance      = p.law_tolerance;
         building.hysteresis.max_iterations = p.law_max_iterations;
       }
+    p.recorders.finalize(file, p.line_of("Output/Recorders/Record"), p.output_interval);
     check(p);
     return p;
   }

@@ -1,5 +1,6 @@
 #include <poundfe/output/floor_response.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace poundfe
@@ -22,26 +23,36 @@ namespace poundfe
           }
       }
     const unsigned int n = floor_equations.size();
-    for (auto *v : {&floor_displacement, &drift, &acceleration, &peak_u, &peak_drift,
+    for (auto *v : {&floor_displacement, &floor_velocity, &drift, &acceleration, &peak_u, &peak_drift,
                     &peak_drift_at, &peak_a})
       v->assign(n, 0.0);
   }
 
   void
-  FloorResponse::evaluate(const double time, const Vector &u, const Vector &a,
+  FloorResponse::reset()
+  {
+    for (auto *v : {&floor_displacement, &floor_velocity, &drift, &acceleration, &peak_u,
+                    &peak_drift, &peak_drift_at, &peak_a})
+      std::fill(v->begin(), v->end(), 0.0);
+  }
+
+  void
+  FloorResponse::evaluate(const double time, const Vector &u, const Vector &v, const Vector &a,
                           const double ground_acceleration)
   {
     for (unsigned int i = 0; i < floor_equations.size(); ++i)
       {
-        double sum_u = 0, sum_a = 0;
+        double sum_u = 0, sum_v = 0, sum_a = 0;
         for (const int e : floor_equations[i])
           if (e >= 0)
             {
               sum_u += u[e];
+              sum_v += v[e];
               sum_a += a[e];
             }
         const double weight   = 1.0 / floor_equations[i].size();
         floor_displacement[i] = sum_u * weight;
+        floor_velocity[i]     = sum_v * weight;
         acceleration[i]       = sum_a * weight + ground_acceleration;
         const double below    = is_bottom_floor[i] ? 0.0 : floor_displacement[i - 1];
         drift[i]              = (floor_displacement[i] - below) * inverse_height[i];
@@ -57,12 +68,13 @@ namespace poundfe
   }
 
   std::vector<std::string>
-  FloorResponse::column_names(const std::string &what) const
+  FloorResponse::column_names(const std::string &what, const std::string &suffix) const
   {
     std::vector<std::string> names;
     for (const Building &building : model.buildings)
       for (unsigned int f = 1; f <= building.floors.size(); ++f)
-        names.push_back(building.name + "_" + what + std::to_string(f));
+        names.push_back(building.name + "_" + what + std::to_string(f) +
+                        (suffix.empty() ? "" : "_" + suffix));
     return names;
   }
 } // namespace poundfe

@@ -68,18 +68,6 @@ namespace poundfe
 
   VtuSeries::~VtuSeries() = default;
 
-  unsigned int
-  VtuSeries::n_dofs() const
-  {
-    return impl->dof_handler.n_dofs();
-  }
-
-  unsigned int
-  VtuSeries::n_frames() const
-  {
-    return impl->frames.size();
-  }
-
   void
   VtuSeries::write(const double label, const Vector &u, const bool with_forces)
   {

@@ -6,7 +6,9 @@
 
 A digest line is `key value`. Keys name the file and the place of the
 number: `summary:buildings.0.storeys.1.peak_drift_ratio`,
-`impacts.csv:3:peak_force`, `drift.csv@t=2.5:A3_storey1_drift_ratio`.
+`impacts.csv:3:peak_force`, `drift.csv@t=2.5:A3_storey1_drift_ratio`. The reference digests in
+reference/ were taken before the engine was reshaped (issue 10); RENAMED
+maps their keys to today's names.
 Taken: every number of summary.json except those of the clock; every row
 of impacts.csv and realizations.csv; of each time series (every CSV whose
 first column is `time`) the rows at 41 evenly spaced row indices and the
@@ -32,9 +34,47 @@ SKIPPED = re.compile(r"(wall_time|steps_per_second|realizations_per_second|set_u
                      r"\.input$|\.ranks$|realizations_run_now)")
 SAMPLES = 41
 
-# old key pattern -> new key (re.sub), applied to the reference before
-# comparing. Each rename of an output column or summary field goes here.
+# (digest file pattern, old key pattern, new key or None to drop), applied
+# with re.sub to the reference before comparing. Each rename of an output
+# column or summary field goes here.
+HINGE_FILES = r"^(?!bouc-wen-sdof|subset-drift)"  # examples whose hysteretic elements are hinges
+STOREY_FILES = r"^(bouc-wen-sdof|subset-drift)"   # ... Bouc-Wen storeys
 RENAMED = [
+    # issue 10: every CSV column carries its unit, profiles name the building
+    ("", r"^(drift\.csv@[^:]*:.*_storey\d+)$", r"\1_drift_ratio"),
+    ("", r"^(floor_acceleration\.csv@[^:]*:.*_floor\d+)$", r"\1_acc_m_s2"),
+    ("", r"^(floor_displacement\.csv@[^:]*:.*_floor\d+)$", r"\1_disp_m"),
+    ("", r"^(ground_motion\.csv@[^:]*:ground_acceleration)$", r"\1_m_s2"),
+    ("", r"^(energy\.csv@[^:]*:(input|kinetic|damping|strain|hysteretic|contact))$", r"\1_J"),
+    ("", r"^(hinges\.csv@[^:]*:.*_S\d+)_force$", r"\1_force_N"),
+    ("", r"^(hinges\.csv@[^:]*:.*_S\d+)_deformation$", r"\1_drift_m"),
+    ("", r"^(hinges\.csv@[^:]*:.*)_force$", r"\1_moment_N_m"),
+    ("", r"^(hinges\.csv@[^:]*:.*)_deformation$", r"\1_rotation_rad"),
+    ("", r"^(contact_force\.csv@[^:]*:.*)_force$", r"\1_force_N"),
+    ("", r"^(contact_force\.csv@[^:]*:.*)_penetration$", r"\1_penetration_m"),
+    ("", r"^(drift_profile|acceleration_profile)\.csv:\d+:building$", None),
+    ("", r"^(drift_profile\.csv:\d+:time_of_peak)$", r"\1_s"),
+    ("", r"^(acceleration_profile\.csv:\d+:)peak_absolute_acceleration$", r"\1peak_absolute_acc_m_s2"),
+    ("", r"^(acceleration_profile\.csv:\d+:)peak_displacement$", r"\1peak_floor_disp_m"),
+    ("", r"^(impacts\.csv:\d+:level)$", r"\1_m"),
+    ("", r"^(impacts\.csv:\d+:(start|max_penetration|end)_time)$", r"\1_s"),
+    ("", r"^(impacts\.csv:\d+:(approach|separation)_velocity)$", r"\1_m_s"),
+    ("", r"^(impacts\.csv:\d+:max_penetration)$", r"\1_m"),
+    ("", r"^(impacts\.csv:\d+:peak_force)$", r"\1_N"),
+    ("", r"^(impacts\.csv:\d+:impulse)$", r"\1_N_s"),
+    ("", r"^(realizations\.csv:\d+:)peak_drift_ratio_(.+)_S(\d+)$", r"\1\2_storey\3_peak_drift_ratio"),
+    ("", r"^(realizations\.csv:\d+:)peak_floor_acceleration_(.+)_F(\d+)$", r"\1\2_floor\3_peak_acc_m_s2"),
+    ("", r"^(summary:statistics\.)peak_drift_ratio_(.+)_S(\d+)\.", r"\1\2_storey\3_peak_drift_ratio."),
+    ("", r"^(summary:statistics\.)peak_floor_acceleration_(.+)_F(\d+)\.", r"\1\2_floor\3_peak_acc_m_s2."),
+    # a hinge's force is a moment, its deformation a rotation
+    (HINGE_FILES, r"^(summary:hinges\.\d+\.)yield_deformation$", r"\1yield_rotation_rad"),
+    (HINGE_FILES, r"^(summary:hinges\.\d+\.)peak_deformation$", r"\1peak_rotation_rad"),
+    (HINGE_FILES, r"^(summary:hinges\.\d+\.)peak_plastic_deformation$", r"\1peak_plastic_rotation_rad"),
+    (HINGE_FILES, r"^(summary:hinges\.\d+\.)peak_force$", r"\1peak_moment_N_m"),
+    (STOREY_FILES, r"^(summary:hinges\.\d+\.)yield_deformation$", r"\1yield_drift_m"),
+    (STOREY_FILES, r"^(summary:hinges\.\d+\.)peak_deformation$", r"\1peak_drift_m"),
+    (STOREY_FILES, r"^(summary:hinges\.\d+\.)peak_plastic_deformation$", r"\1peak_plastic_drift_m"),
+    (STOREY_FILES, r"^(summary:hinges\.\d+\.)peak_force$", r"\1peak_force_N"),
 ]
 
 
@@ -69,7 +109,7 @@ def table(path, name, out, sample):
         picked = sorted({round(i * step) for i in range(SAMPLES)} | {len(body) - 1})
     else:
         picked = range(len(body))
-    time_keyed = header and header[0] == "time"
+    time_keyed = header and header[0] in ("time", "time_s")
     for i in picked:
         row = body[i]
         where = f"@t={row[0]}" if time_keyed else f":{i}"
@@ -91,7 +131,7 @@ def digest(directory):
         elif name.endswith(".csv"):
             with open(path) as f:
                 first = f.readline()
-            table(path, name, out, sample=first.startswith("time,"))
+            table(path, name, out, sample=first.startswith(("time,", "time_s,")))
     return out
 
 
@@ -111,8 +151,14 @@ def column_of(key):
 
 def compare(reference_path, actual_path):
     reference = read(reference_path)
-    for old, new in RENAMED:
-        reference = {re.sub(old, new, k): v for k, v in reference.items()}
+    name = os.path.basename(reference_path)
+    for files, old, new in RENAMED:
+        if not re.search(files, name):
+            continue
+        if new is None:
+            reference = {k: v for k, v in reference.items() if not re.search(old, k)}
+        else:
+            reference = {re.sub(old, new, k): v for k, v in reference.items()}
     actual = read(actual_path)
     scale = {}
     for key, value in reference.items():

@@ -7,6 +7,7 @@
 
 #include <poundfe/analysis/run.h>
 #include <poundfe/excitation/stochastic_load.h>
+#include <poundfe/output/peak_response.h>
 
 #include <cstdint>
 #include <string>
@@ -45,6 +46,7 @@ namespace poundfe
     Excitation               excitation;
     StochasticLoad           load; // after the excitation it is made from
     TimeHistory              history;
+    PeakResponse             peaks; // the one observer of a realization
     std::vector<std::string> names;
     std::vector<double>      xi;
     std::vector<unsigned int> roof_floor; // FloorResponse index of each building's roof

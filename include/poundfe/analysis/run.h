@@ -1,10 +1,11 @@
-// The commands: time history (`run`), `modal`, `ground-motion`.
+// The time loop and the commands: time history (`run`), `modal`, `ground-motion`.
 #ifndef poundfe_analysis_run_h
 #define poundfe_analysis_run_h
 
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/integration/newmark.h>
+#include <poundfe/output/observer.h>
 
 #include <string>
 #include <vector>
@@ -15,31 +16,20 @@ namespace poundfe
   {
     std::string output_directory; // empty: no files at all (benchmarks, tests)
     std::string linear_solver;    // empty: the input's choice
-    bool        csv   = true;
+    bool        csv   = true;     // the recorders of the input (Output/Recorders)
     bool        vtu   = true;
     bool        plots = true;
   };
 
+  /// What a run with the standard observers reports to its caller.
   struct RunResult
   {
-    bool                completed = false;
-    std::string         message;
-    unsigned long       steps     = 0;
-    double              end_time  = 0;
-    double              wall_time = 0; // s, stepping loop with outputs
-    std::vector<double> peak_drift_ratio;   // FloorResponse layout
-    std::vector<double> peak_acceleration;
-    std::vector<double> peak_displacement;
-    // Nonlinear elements (hinges, Bouc-Wen storeys), in model order.
-    std::vector<std::string> element_labels;
-    std::vector<double>      peak_element_deformation;
-    std::vector<double>      element_ductility;
-    IterationStatistics      statistics;
-    EnergyBalance            energy;
-    double                   max_energy_error = 0;
-    std::vector<Impact>      impacts; // every contact episode
-    double min_clearance = 0; // smallest gap opening (negative: penetration); inf without gaps
-    std::vector<std::string> files;
+    RunStatus           status;
+    IterationStatistics statistics;
+    EnergyBalance       energy;
+    double              max_energy_error   = 0;
+    unsigned int        n_nonlinear_elements = 0;
+    std::size_t         n_impacts          = 0;
   };
 
   /// The time-history engine of one model: the nonlinear elements and the
@@ -52,17 +42,29 @@ namespace poundfe
     TimeHistory(const TimeHistory &) = delete;
     TimeHistory &operator=(const TimeHistory &) = delete;
 
-    RunResult run(const Excitation &excitation, const RunOptions &options);
+    /// From rest to the end time under `excitation`; the observers see the
+    /// initial state, every step and the end. A NumericalError ends the
+    /// run with status failed; SIGINT/SIGTERM with status interrupted.
+    RunStatus run(const Excitation &excitation, const Observers &observers);
+
+    /// The view observers read; valid for the life of this object.
+    const ResponseView &state() const { return view; }
+    const UniaxialElements &nonlinear_elements() const { return elements; }
+    std::string tangent_update() const { return integrator.tangent_update(); }
+    std::string linear_solver_name() const { return integrator.linear_solver_name(); }
 
   private:
+    unsigned long n_steps(const Excitation &excitation) const;
+
     const Analysis   &analysis;
     UniaxialElements  elements; // before the integrator, which points to them
     NewmarkIntegrator integrator;
+    ResponseView      view;
   };
 
-  /// Time history with Newmark (Newton on the nonlinear elements); writes the outputs of RunOptions.
-  /// A NumericalError during stepping is caught: the results so far are
-  /// written and `completed` is false.
+  /// A time history with the standard observers: peaks, and with an output
+  /// directory the input's recorders, the VTU series and the summary
+  /// (summary.json, impacts.csv, profiles, plots).
   RunResult run_time_history(const Analysis &analysis, const Excitation &excitation,
                              const RunOptions &options);
 

@@ -66,6 +66,9 @@ namespace poundfe
     /// rather than a node inside a member split into several elements.
     std::array<bool, 2>         at_joint{{true, true}};
     double                      member_length = 0; // whole member
+    /// Building and place, e.g. A3_C1.2 (storey 1, column line 2) or
+    /// A3_B2.1 (floor 2, bay 1); the pieces of a split member share it.
+    std::string                 label;
   };
 
   /// Shear-building storey: a horizontal spring and dashpot between floors.

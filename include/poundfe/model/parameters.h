@@ -4,6 +4,7 @@
 #define poundfe_model_parameters_h
 
 #include <poundfe/laws/bouc_wen.h>
+#include <poundfe/output/recorder_parameters.h>
 
 #include <iosfwd>
 #include <map>
@@ -184,6 +185,7 @@ namespace poundfe
     double       vtu_interval     = 0.1; // 0 = no VTU
     bool         plots            = true;
     unsigned int n_modes          = 6;
+    RecorderParameters recorders;
 
     /// Line of "set <path>" in the file (0 when unknown, e.g. JSON input).
     int line_of(const std::string &path) const;

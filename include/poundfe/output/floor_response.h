@@ -1,5 +1,6 @@
 // Floor response of each building from the equations' values:
 //   floor displacement x_i = mean ux of the floor's joints (relative to ground),
+//   floor velocity = mean relative ux',
 //   inter-storey drift ratio IDR_i = (x_i - x_{i-1}) / h_i (x_0 = 0, the base),
 //   absolute floor acceleration = mean relative ux'' + a_g.
 // Peaks (max over time of |.|) are tracked at every step, not just at the
@@ -20,13 +21,18 @@ namespace poundfe
   public:
     explicit FloorResponse(const Model &model);
 
-    void evaluate(double time, const Vector &u, const Vector &a, double ground_acceleration);
+    void evaluate(double time, const Vector &u, const Vector &v, const Vector &a,
+                  double ground_acceleration);
+
+    /// Forget the peaks (a new run).
+    void reset();
 
     unsigned int n_floors() const { return floor_equations.size(); }
     /// Index of floor f (0-based, bottom up) of building b in the flat arrays.
     unsigned int index(unsigned int b, unsigned int f) const { return first[b] + f; }
 
     const std::vector<double> &displacement() const { return floor_displacement; }
+    const std::vector<double> &velocity() const { return floor_velocity; }
     const std::vector<double> &drift_ratio() const { return drift; }
     const std::vector<double> &absolute_acceleration() const { return acceleration; }
 
@@ -35,8 +41,11 @@ namespace poundfe
     const std::vector<double> &peak_drift_time() const { return peak_drift_at; }
     const std::vector<double> &peak_acceleration() const { return peak_a; }
 
-    /// "B1_floor1", ... or "B1_storey1", ...
-    std::vector<std::string> column_names(const std::string &what) const;
+    /// "<building>_<what><n>_<suffix>" for every floor (what = "floor") or
+    /// storey (what = "storey"), e.g. A3_storey1_drift_ratio; no suffix:
+    /// A3_storey1.
+    std::vector<std::string> column_names(const std::string &what,
+                                          const std::string &suffix = "") const;
 
   private:
     const Model                    &model;
@@ -44,7 +53,7 @@ namespace poundfe
     std::vector<std::vector<int>>   floor_equations; // ux equations; fixed nodes: -1
     std::vector<double>             inverse_height;
     std::vector<bool>               is_bottom_floor;
-    std::vector<double>             floor_displacement, drift, acceleration;
+    std::vector<double>             floor_displacement, floor_velocity, drift, acceleration;
     std::vector<double>             peak_u, peak_drift, peak_drift_at, peak_a;
   };
 } // namespace poundfe

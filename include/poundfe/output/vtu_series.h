@@ -8,6 +8,7 @@
 
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/model/model.h>
+#include <poundfe/output/observer.h>
 
 #include <memory>
 #include <string>
@@ -28,12 +29,30 @@ namespace poundfe
     /// Write the .pvd index (atomically).
     void finish();
 
-    unsigned int n_dofs() const;
-    unsigned int n_frames() const;
-
   private:
     struct Impl;
     std::unique_ptr<Impl> impl;
+  };
+
+  /// A time history as a VTU series (solution.pvd): a frame every `every` steps.
+  class VtuRecorder : public StepObserver
+  {
+  public:
+    VtuRecorder(const Model &model, const std::string &directory, unsigned int every)
+      : series(model, directory, "solution")
+      , every(every)
+    {}
+    void
+    observe_step(const ResponseView &state) override
+    {
+      if (state.step() % every == 0)
+        series.write(state.time(), state.displacement());
+    }
+    void finish(const ResponseView &, const RunStatus &) override { series.finish(); }
+
+  private:
+    VtuSeries          series;
+    const unsigned int every;
   };
 } // namespace poundfe
 

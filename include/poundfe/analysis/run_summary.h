@@ -1,0 +1,50 @@
+// The run's closing outputs, written when the time history ends (also
+// after a failure or an interruption): summary.json, impacts.csv, the peak
+// profiles (drift_profile.csv, acceleration_profile.csv) and the PNG plots
+// of whatever time series the recorders wrote.
+#ifndef poundfe_analysis_run_summary_h
+#define poundfe_analysis_run_summary_h
+
+#include <poundfe/analysis/analysis.h>
+#include <poundfe/excitation/excitation.h>
+#include <poundfe/output/observer.h>
+
+#include <string>
+
+namespace poundfe
+{
+  class JsonWriter;
+  class PeakResponse;
+
+  /// The model's size and whole-model modes (run and modal summaries).
+  void write_model(JsonWriter &json, const Analysis &analysis);
+  /// Frequencies, periods and participating mass ratios under `key`.
+  void write_modes(JsonWriter &json, const std::string &key, const Modes &modes);
+
+  class RunSummary : public StepObserver
+  {
+  public:
+    /// `solver` and `tangent_update` name the integrator's choices.
+    RunSummary(const Analysis &analysis, const Excitation &excitation, const PeakResponse &peaks,
+               const std::string &directory, bool plots, const std::string &solver,
+               const std::string &tangent_update);
+
+    void observe_step(const ResponseView &) override {}
+    void finish(const ResponseView &state, const RunStatus &status) override;
+
+  private:
+    void write_profiles() const;
+    void write_impacts(const ResponseView &state) const;
+    void write_json(const ResponseView &state, const RunStatus &status) const;
+    void draw(const ResponseView &state) const;
+
+    const Analysis     &analysis;
+    const Excitation   &excitation;
+    const PeakResponse &peaks;
+    const std::string   directory;
+    const bool          plots;
+    const std::string   solver, tangent_update;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,95 @@
+// What watches a time history: observers of the accepted steps.
+//
+// The time loop (TimeHistory::run, analysis/run.cc) advances the integrator
+// one step at a time and, after each step, hands every observer the same
+// read-only ResponseView of the state: time, u, v, a (relative to the
+// ground), the ground acceleration, the nonlinear elements, and the
+// integrator's running energy balance, impact log and Newton statistics.
+// An observer never changes the state and never reaches into the
+// integrator; peaks, recorders, VTU frames, the summary and the console
+// progress are all observers. The pattern follows deal.II's step-23/26
+// (set up, step, output) with the output split into independent parts.
+#ifndef poundfe_output_observer_h
+#define poundfe_output_observer_h
+
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/integration/newmark.h>
+#include <poundfe/model/model.h>
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  /// How a time history ended.
+  struct RunStatus
+  {
+    enum class Kind
+    {
+      completed,
+      failed,     // a numerical failure: results up to end_time are kept
+      interrupted // SIGINT/SIGTERM: stopped at the end of a step
+    };
+    Kind          kind      = Kind::completed;
+    std::string   message;       // the failure, when failed
+    unsigned long steps     = 0; // steps of the analysis time step reached
+    double        end_time  = 0; // s
+    double        wall_time = 0; // s, the stepping loop with its observers
+
+    bool completed() const { return kind == Kind::completed; }
+    /// "completed", "failed" or "interrupted" (summary.json's status).
+    const char *name() const;
+  };
+
+  /// The state after an accepted step, read-only.
+  class ResponseView
+  {
+  public:
+    ResponseView(const Model &model, const LinearSystem &system,
+                 const UniaxialElements &elements, const NewmarkIntegrator &integrator);
+
+    /// Called by the time loop once per step, before the observers.
+    void set_step(unsigned long step, double ground_acceleration);
+
+    unsigned long step() const { return step_index; }
+    double        time() const { return integrator.time(); }
+    double        ground_acceleration() const { return ground; }
+    const Vector &displacement() const { return integrator.displacement(); }
+    const Vector &velocity() const { return integrator.velocity(); }
+    const Vector &acceleration() const { return integrator.acceleration(); }
+
+    const Model            &model;
+    const LinearSystem     &system;
+    const UniaxialElements &elements;
+
+    EnergyBalance              energy() const { return integrator.energy(); }
+    double                     max_energy_error() const { return integrator.max_energy_error(); }
+    /// Work done on nonlinear element h so far, J.
+    double                     element_work(unsigned int h) const { return integrator.element_work(h); }
+    /// Energy element h has dissipated so far: its work minus its stored energy, J.
+    double                     dissipated_energy(unsigned int h) const;
+    const ImpactLog           &impact_log() const { return integrator.impact_log(); }
+    const IterationStatistics &statistics() const { return integrator.statistics(); }
+
+  private:
+    const NewmarkIntegrator &integrator;
+    unsigned long            step_index = 0;
+    double                   ground     = 0;
+  };
+
+  /// Watches a time history: initialize() sees the initial state (step 0),
+  /// observe_step() every accepted step, finish() the final state and how
+  /// the run ended (also after a failure or an interruption).
+  class StepObserver
+  {
+  public:
+    virtual ~StepObserver() = default;
+    virtual void initialize(const ResponseView &state) { observe_step(state); }
+    virtual void observe_step(const ResponseView &state) = 0;
+    virtual void finish(const ResponseView &, const RunStatus &) {}
+  };
+
+  using Observers = std::vector<StepObserver *>;
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,50 @@
+// Peaks of a time history, tracked at every accepted step: floor
+// displacement, inter-storey drift ratio (and its time), absolute floor
+// acceleration (FloorResponse), and per nonlinear element the peak |d| (and
+// its time), peak |F|, peak plastic part |d - F/k0| and, for gaps, the
+// smallest opening. The impact log adds the deepest points that fall
+// between steps to the smallest opening at the end.
+#ifndef poundfe_output_peak_response_h
+#define poundfe_output_peak_response_h
+
+#include <poundfe/output/floor_response.h>
+#include <poundfe/output/observer.h>
+
+#include <vector>
+
+namespace poundfe
+{
+  class PeakResponse : public StepObserver
+  {
+  public:
+    PeakResponse(const Model &model, const UniaxialElements &elements);
+
+    /// Forgets the peaks of an earlier run, then observes the initial state.
+    void initialize(const ResponseView &state) override;
+    void observe_step(const ResponseView &state) override;
+    void finish(const ResponseView &state, const RunStatus &status) override;
+
+    /// The floor response at the last observed step and its peaks.
+    const FloorResponse &floors() const { return floor_response; }
+
+    /// Elements are hinges and storeys first, then gaps (make_nonlinear_elements).
+    unsigned int n_hysteretic() const { return n_hysteretic_elements; }
+    const std::vector<double> &peak_deformation() const { return peak_d; }
+    const std::vector<double> &time_of_peak_deformation() const { return peak_d_at; }
+    const std::vector<double> &peak_force() const { return peak_f; }
+    const std::vector<double> &peak_plastic_deformation() const { return peak_plastic; }
+    /// Peak |d| / yield deformation of element h (0 without a yield deformation).
+    double ductility(unsigned int h) const;
+    /// Smallest gap opening over the run (negative: penetration); +inf without gaps.
+    double min_clearance() const { return smallest_clearance; }
+
+  private:
+    const UniaxialElements &elements;
+    FloorResponse           floor_response;
+    unsigned int            n_hysteretic_elements = 0;
+    std::vector<double>     peak_d, peak_d_at, peak_f, peak_plastic;
+    double                  smallest_clearance = 0;
+  };
+} // namespace poundfe
+
+#endif

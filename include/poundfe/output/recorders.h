@@ -1,0 +1,29 @@
+// Recorders: the time-history files a user chooses (recorder_parameters.h
+// has the input), as observers of the time loop.
+#ifndef poundfe_output_recorders_h
+#define poundfe_output_recorders_h
+
+#include <poundfe/output/observer.h>
+#include <poundfe/output/recorder_parameters.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class PeakResponse;
+
+  /// Steps between rows for an interval in s (0: every step).
+  unsigned int steps_per_interval(double interval, double time_step);
+
+  /// The requested recorders plus the defaults, as observers writing into
+  /// `directory`. They read the floor response of `peaks`, which must be
+  /// observed before them. Throws InputError for an unknown member label.
+  std::vector<std::unique_ptr<StepObserver>>
+  make_recorders(const RecorderParameters &parameters, const std::string &input_file,
+                 const ResponseView &state, const PeakResponse &peaks, double time_step,
+                 const std::string &directory);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,71 @@
+// Storey shears and member end forces from the element forces.
+//
+// The shear of storey i of a building is the horizontal force carried
+// across a horizontal cut at mid-height of the storey, positive when it
+// resists a positive drift:
+//   frames:  V_i = -sum over the elements crossing the cut of f_x at their
+//            lower node, with f = K_e u_e the element's end forces in
+//            global axes (no distributed load acts on an element, so the
+//            shear is the same anywhere along it);
+//   shear buildings: V_i = F_i + c_i d'_i, the storey spring (k_i d_i, or
+//            the Bouc-Wen force) plus the storey dashpot.
+// The base shear is V_1. Rayleigh damping forces are not element forces:
+// horizontal equilibrium of the building reads
+//   sum_x (M a_abs) + sum_x (C u') + V_1 = 0
+// (sums over the building's ux equations; exact for a shear building with
+// storey dashpots only, and for any building once the Rayleigh part is
+// added; doc/theory.md §10).
+// Member end forces are the local (N, V, M) at both ends of a whole member
+// (its first and last element when it is split), Przemieniecki (1968) ch. 5.
+#ifndef poundfe_output_storey_forces_h
+#define poundfe_output_storey_forces_h
+
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/elements/frame_element.h>
+#include <poundfe/elements/uniaxial_element.h>
+#include <poundfe/model/model.h>
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class StoreyForces
+  {
+  public:
+    StoreyForces(const Model &model, const UniaxialElements &elements);
+
+    /// Storey shears of every building, in FloorResponse order (building by
+    /// building, storeys bottom up), N.
+    void storey_shears(const Vector &u, const Vector &v, std::vector<double> &shear) const;
+    /// Index of storey s (0-based) of building b in that layout.
+    unsigned int index(unsigned int b, unsigned int s) const { return first[b] + s; }
+
+    /// The whole members with this label (A3_C1.2); empty if none.
+    bool has_member(const std::string &label) const;
+    /// Local end forces (N1, V1, M1, N2, V2, M2) of the labelled member.
+    Vector6 member_end_forces(const std::string &label, const Vector &u) const;
+
+  private:
+    struct CutElement
+    {
+      std::array<int, 6> equations; // global DOFs of the element; -1: fixed
+      Matrix6            stiffness; // global K_e
+      unsigned int       lower;     // 0 or 1: the node below the cut
+    };
+    struct Storey
+    {
+      std::vector<CutElement> elements;
+      int                     link = -1;      // shear building: the StoreyLink
+      int                     hysteretic = -1; // its Bouc-Wen element, if any
+    };
+    Vector6 end_displacements(const std::array<int, 6> &equations, const Vector &u) const;
+
+    const Model               &model;
+    const UniaxialElements    &nonlinear;
+    std::vector<unsigned int> first;
+    std::vector<Storey>       storeys;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,386 @@
+#include <poundfe/analysis/run_summary.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/peak_response.h>
+#include <poundfe/output/plots.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace poundfe
+{
+  namespace
+  {
+    const char *
+    type_name(const BuildingType type)
+    {
+      switch (type)
+        {
+          case BuildingType::frame:
+            return "frame";
+          case BuildingType::mesh:
+            return "mesh";
+          case BuildingType::shear:
+            return "shear";
+        }
+      throw std::logic_error("type_name: unknown building type");
+    }
+
+    /// Keys and units of a hysteretic element: a hinge acts on a rotation
+    /// with a moment, a Bouc-Wen storey on a drift with a force.
+    struct ElementUnits
+    {
+      const char *kind, *yield, *peak, *plastic, *force;
+    };
+
+    ElementUnits
+    units_of(const ElementKind kind)
+    {
+      switch (kind)
+        {
+          case ElementKind::hinge:
+            return {"hinge", "yield_rotation_rad", "peak_rotation_rad",
+                    "peak_plastic_rotation_rad", "peak_moment_N_m"};
+          case ElementKind::storey:
+            return {"storey", "yield_drift_m", "peak_drift_m", "peak_plastic_drift_m",
+                    "peak_force_N"};
+          case ElementKind::gap:
+            return {"gap", "yield_deformation_m", "peak_penetration_m", "peak_plastic_m",
+                    "peak_force_N"};
+        }
+      throw std::logic_error("units_of: unknown element kind");
+    }
+
+    bool
+    exists(const std::string &directory, const char *file)
+    {
+      return std::filesystem::exists(directory + "/" + file);
+    }
+  } // namespace
+
+  void
+  write_modes(JsonWriter &json, const std::string &key, const Modes &modes)
+  {
+    std::vector<double> f, T;
+    for (unsigned int i = 0; i < modes.n_modes(); ++i)
+      {
+        f.push_back(modes.frequency(i));
+        T.push_back(modes.period(i));
+      }
+    json.begin_object(key)
+      .value("frequencies_hz", f)
+      .value("periods_s", T)
+      .value("participating_mass_ratio_x", modes.participating_mass_ratio)
+      .end_object();
+  }
+
+  void
+  write_model(JsonWriter &json, const Analysis &analysis)
+  {
+    const Model &model = analysis.model;
+    json.begin_object("model")
+      .value("nodes", model.n_nodes())
+      .value("dofs", model.n_dofs())
+      .value("equations", model.n_equations())
+      .value("members", static_cast<unsigned int>(model.members.size()))
+      .value("storey_links", static_cast<unsigned int>(model.links.size()))
+      .value("buildings", static_cast<unsigned int>(model.buildings.size()))
+      .end_object();
+    write_modes(json, "modes", analysis.modes);
+  }
+
+  RunSummary::RunSummary(const Analysis &analysis, const Excitation &excitation,
+                         const PeakResponse &peaks, const std::string &directory,
+                         const bool plots, const std::string &solver,
+                         const std::string &tangent_update)
+    : analysis(analysis)
+    , excitation(excitation)
+    , peaks(peaks)
+    , directory(directory)
+    , plots(plots)
+    , solver(solver)
+    , tangent_update(tangent_update)
+  {}
+
+  void
+  RunSummary::finish(const ResponseView &state, const RunStatus &status)
+  {
+    write_profiles();
+    if (!analysis.model.gaps.empty())
+      write_impacts(state);
+    write_json(state, status);
+    if (plots)
+      draw(state);
+  }
+
+  void
+  RunSummary::write_profiles() const
+  {
+    const Model         &model  = analysis.model;
+    const FloorResponse &floors = peaks.floors();
+    std::string drift = "building,storey,peak_drift_ratio,time_of_peak_s\n";
+    std::string accel = "building,floor,peak_absolute_acc_m_s2,peak_floor_disp_m\n";
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      for (unsigned int f = 0; f < model.buildings[b].floors.size(); ++f)
+        {
+          const unsigned int i    = floors.index(b, f);
+          const std::string  name = model.buildings[b].name + "," + std::to_string(f + 1) + ",";
+          drift += name + std::to_string(floors.peak_drift_ratio()[i]) + "," +
+                   std::to_string(floors.peak_drift_time()[i]) + "\n";
+          accel += name + std::to_string(floors.peak_acceleration()[i]) + "," +
+                   std::to_string(floors.peak_displacement()[i]) + "\n";
+        }
+    write_file_atomically(directory + "/drift_profile.csv", drift);
+    write_file_atomically(directory + "/acceleration_profile.csv", accel);
+  }
+
+  void
+  RunSummary::write_impacts(const ResponseView &state) const
+  {
+    const Model       &model = analysis.model;
+    const unsigned int first = peaks.n_hysteretic();
+    std::string csv = "gap,buildings,level_m,start_time_s,max_penetration_time_s,end_time_s,"
+                      "approach_velocity_m_s,separation_velocity_m_s,max_penetration_m,"
+                      "peak_force_N,impulse_N_s\n";
+    for (const Impact &impact : state.impact_log().impacts())
+      {
+        const Gap         &gap = model.gaps[impact.element - first];
+        std::ostringstream row;
+        row.precision(10);
+        row << gap.label << "," << model.buildings[gap.buildings[0]].name << "|"
+            << (gap.nodes[0] >= 0 && gap.nodes[1] >= 0 ? model.buildings[gap.buildings[1]].name :
+                                                         "barrier")
+            << "," << gap.level << "," << impact.start_time << "," << impact.max_penetration_time
+            << ",";
+        if (impact.end_time >= 0)
+          row << impact.end_time;
+        row << "," << impact.approach_velocity << "," << impact.separation_velocity << ","
+            << impact.max_penetration << "," << impact.peak_force << "," << impact.impulse << "\n";
+        csv += row.str();
+      }
+    write_file_atomically(directory + "/impacts.csv", csv);
+  }
+
+  void
+  RunSummary::write_json(const ResponseView &state, const RunStatus &status) const
+  {
+    const Model           &model  = analysis.model;
+    const InputParameters &input  = analysis.input;
+    const FloorResponse   &floors = peaks.floors();
+    JsonWriter             json;
+    begin_summary(json, "run", input, status.name());
+    if (status.kind == RunStatus::Kind::failed)
+      json.value("message", status.message);
+    write_model(json, analysis);
+    const GroundMotion &motion = excitation.ground_motion();
+    json.begin_object("ground_motion")
+      .value("description", motion.description())
+      .value("pga_m_s2", motion.peak())
+      .value("pga_g", motion.peak() / standard_gravity)
+      .value("duration_s", motion.duration())
+      .value("time_step_s", motion.time_step())
+      .end_object();
+    json.begin_array("buildings");
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const Building &building = model.buildings[b];
+        json.begin_object()
+          .value("name", building.name)
+          .value("type", type_name(building.type))
+          .value("storeys", static_cast<unsigned int>(building.floors.size()))
+          .value("rayleigh_a0", analysis.system.rayleigh[b][0])
+          .value("rayleigh_a1", analysis.system.rayleigh[b][1]);
+        write_modes(json, "modes", analysis.building_modes[b]);
+        const unsigned int roof = floors.index(b, building.floors.size() - 1);
+        json.value("peak_roof_displacement_m", floors.peak_displacement()[roof]);
+        json.begin_array("storeys");
+        for (unsigned int f = 0; f < building.floors.size(); ++f)
+          {
+            const unsigned int i = floors.index(b, f);
+            json.begin_object()
+              .value("storey", f + 1)
+              .value("height_m", building.floors[f].storey_height)
+              .value("peak_drift_ratio", floors.peak_drift_ratio()[i])
+              .value("time_of_peak_drift_s", floors.peak_drift_time()[i])
+              .value("residual_drift_ratio", floors.drift_ratio()[i])
+              .value("peak_absolute_floor_acceleration_m_s2", floors.peak_acceleration()[i])
+              .value("peak_floor_displacement_m", floors.peak_displacement()[i])
+              .end_object();
+          }
+        json.end_array().end_object();
+      }
+    json.end_array();
+
+    const unsigned int n_hysteretic = peaks.n_hysteretic();
+    const unsigned int n_gaps       = state.elements.size() - n_hysteretic;
+    if (n_hysteretic > 0)
+      {
+        json.begin_array("hinges");
+        for (unsigned int h = 0; h < n_hysteretic; ++h)
+          {
+            const UniaxialElement &e     = state.elements[h];
+            const ElementUnits     units = units_of(e.kind);
+            json.begin_object()
+              .value("label", e.label)
+              .value("kind", units.kind)
+              .value("building", model.buildings[e.building].name)
+              .value(units.yield, e.yield_deformation())
+              .value(units.peak, peaks.peak_deformation()[h])
+              .value("time_of_peak_deformation_s", peaks.time_of_peak_deformation()[h])
+              .value("ductility", peaks.ductility(h))
+              .value(units.plastic, peaks.peak_plastic_deformation()[h])
+              .value(units.force, peaks.peak_force()[h])
+              .value("dissipated_energy_J", state.dissipated_energy(h))
+              .end_object();
+          }
+        json.end_array();
+      }
+    if (n_gaps > 0)
+      {
+        const ContactLawParameters &law = model.contact;
+        json.begin_object("contact")
+          .value("law", law.law)
+          .value("stiffness", law.stiffness)
+          .value("damping_parameter", law.damping)
+          .value("damping_from", input.contact.damping_from)
+          .value("coefficient_of_restitution", input.contact.restitution)
+          .end_object();
+        std::vector<unsigned int> count(n_gaps, 0);
+        std::vector<double>       peak(n_gaps, 0.0), penetration(n_gaps, 0.0), impulse(n_gaps, 0.0);
+        for (const Impact &impact : state.impact_log().impacts())
+          {
+            const unsigned int g = impact.element - n_hysteretic;
+            ++count[g];
+            peak[g]        = std::max(peak[g], impact.peak_force);
+            penetration[g] = std::max(penetration[g], impact.max_penetration);
+            impulse[g] += impact.impulse;
+          }
+        json.begin_array("gaps");
+        for (unsigned int g = 0; g < n_gaps; ++g)
+          {
+            const Gap &gap = model.gaps[g];
+            json.begin_object()
+              .value("label", gap.label)
+              .value("level_m", gap.level)
+              .value("initial_gap_m", gap.initial_gap)
+              .value("effective_mass_kg", gap.effective_mass)
+              .value("impacts", count[g])
+              .value("peak_force_N", peak[g])
+              .value("max_penetration_m", penetration[g])
+              .value("total_impulse_N_s", impulse[g])
+              .value("dissipated_energy_J", state.dissipated_energy(n_hysteretic + g))
+              .end_object();
+          }
+        json.end_array();
+      }
+    const EnergyBalance energy = state.energy();
+    json.begin_object("energy")
+      .value("initial_J", energy.initial)
+      .value("input_J", energy.input)
+      .value("kinetic_J", energy.kinetic)
+      .value("damping_J", energy.damping)
+      .value("strain_J", energy.strain)
+      .value("hysteretic_J", energy.hysteretic)
+      .value("contact_J", energy.contact)
+      .value("max_relative_balance_error", state.max_energy_error())
+      .end_object();
+    const IterationStatistics &stats = state.statistics();
+    json.begin_object("newton")
+      .value("nonlinear_elements", static_cast<unsigned int>(state.elements.size()))
+      .value("tangent_update", state.elements.size() > 0 ? tangent_update : "none")
+      .value("mean_iterations_per_step",
+             stats.steps > 0 ? double(stats.iterations) / stats.steps : 0.0)
+      .value("max_iterations_per_step", stats.max_iterations)
+      .value("step_cuts", static_cast<unsigned long>(stats.step_cuts))
+      .value("event_refinements", static_cast<unsigned long>(stats.event_refinements))
+      .value("smallest_time_step_s", stats.smallest_time_step)
+      .value("steps_including_substeps", static_cast<unsigned long>(stats.steps))
+      .end_object();
+    json.begin_object("analysis")
+      .value("integrator", "Newmark")
+      .value("gamma", input.newmark_gamma)
+      .value("beta", input.newmark_beta)
+      .value("time_step_s", input.time_step)
+      .value("end_time_s", status.end_time)
+      .value("steps", status.steps)
+      .value("linear_solver", solver)
+      .value("wall_time_s", status.wall_time)
+      .value("steps_per_second", status.steps / std::max(status.wall_time, 1e-12))
+      .end_object();
+    json.end_object();
+    write_file_atomically(directory + "/summary.json", json.str());
+  }
+
+  void
+  RunSummary::draw(const ResponseView &state) const
+  {
+    const Model &model = analysis.model;
+    Plot drift{"drift_profile.png", "Peak inter-storey drift ratio", "peak |IDR|", "storey", {}};
+    Plot accel{"acceleration_profile.png", "Peak absolute floor acceleration",
+               "peak |a| (m/s^2)", "floor", {}};
+    Plot roof{"roof_displacement.png", "Roof displacement (relative to the ground)", "time (s)",
+              "displacement (m)", {}};
+    unsigned int column = 2;
+    for (const Building &building : model.buildings)
+      {
+        const std::string select = "(strcol(1) eq \"" + building.name + "\" ? $3 : NaN):2";
+        drift.series.push_back({"drift_profile.csv", select, building.name, "linespoints"});
+        accel.series.push_back({"acceleration_profile.csv", select, building.name, "linespoints"});
+        column += building.floors.size();
+        roof.series.push_back(
+          {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
+      }
+    std::vector<Plot> all{drift, accel};
+    if (exists(directory, "floor_displacement.csv"))
+      all.push_back(roof);
+    if (exists(directory, "ground_motion.csv"))
+      all.push_back(Plot{"ground_motion.png", excitation.ground_motion().description(),
+                         "time (s)", "ground acceleration (m/s^2)",
+                         {{"ground_motion.csv", "1:2", "a_g", "lines"}}});
+    if (exists(directory, "energy.csv"))
+      {
+        Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)",
+                    "energy (J)", {}};
+        const char *terms[] = {"input", "kinetic", "damping", "strain", "hysteretic", "contact"};
+        for (unsigned int i = 0; i < 6; ++i)
+          energy.series.push_back({"energy.csv", "1:" + std::to_string(i + 2), terms[i], "lines"});
+        all.push_back(energy);
+      }
+    // Hysteresis loops of the (up to four) most demanded elements.
+    const unsigned int n_hysteretic = peaks.n_hysteretic();
+    if (exists(directory, "hinges.csv"))
+      {
+        std::vector<unsigned int> order(n_hysteretic);
+        for (unsigned int h = 0; h < n_hysteretic; ++h)
+          order[h] = h;
+        std::stable_sort(order.begin(), order.end(), [&](unsigned int x, unsigned int y) {
+          return peaks.ductility(x) > peaks.ductility(y);
+        });
+        for (unsigned int i = 0; i < std::min(4u, n_hysteretic); ++i)
+          {
+            const unsigned int     h     = order[i];
+            const UniaxialElement &e     = state.elements[h];
+            const bool             hinge = e.kind == ElementKind::hinge;
+            std::ostringstream     title;
+            title << e.label << " (ductility " << peaks.ductility(h) << ")";
+            all.push_back(Plot{"hysteresis_" + e.label + ".png", title.str(),
+                               hinge ? "rotation (rad)" : "drift (m)",
+                               hinge ? "moment (N m)" : "force (N)",
+                               {{"hinges.csv",
+                                 std::to_string(3 * h + 3) + ":" + std::to_string(3 * h + 2),
+                                 e.label, "lines"}}});
+          }
+      }
+    if (exists(directory, "contact_force.csv"))
+      {
+        Plot contact{"contact_force.png", "Contact forces", "time (s)", "force (N)", {}};
+        for (unsigned int g = 0; g < model.gaps.size(); ++g)
+          contact.series.push_back({"contact_force.csv", "1:" + std::to_string(2 * g + 2),
+                                    model.gaps[g].label, "lines"});
+        all.push_back(contact);
+      }
+    draw_plots(directory, all);
+  }
+} // namespace poundfe

@@ -1,0 +1,41 @@
+#include <poundfe/output/observer.h>
+
+namespace poundfe
+{
+  const char *
+  RunStatus::name() const
+  {
+    switch (kind)
+      {
+        case Kind::completed:
+          return "completed";
+        case Kind::failed:
+          return "failed";
+        case Kind::interrupted:
+          return "interrupted";
+      }
+    return "unknown"; // unreachable: every Kind is listed above
+  }
+
+  ResponseView::ResponseView(const Model &model_, const LinearSystem &system_,
+                             const UniaxialElements &elements_,
+                             const NewmarkIntegrator &integrator_)
+    : model(model_)
+    , system(system_)
+    , elements(elements_)
+    , integrator(integrator_)
+  {}
+
+  void
+  ResponseView::set_step(const unsigned long step, const double ground_acceleration)
+  {
+    step_index = step;
+    ground     = ground_acceleration;
+  }
+
+  double
+  ResponseView::dissipated_energy(const unsigned int h) const
+  {
+    return integrator.element_work(h) - elements[h].stored_energy();
+  }
+} // namespace poundfe

@@ -1,0 +1,430 @@
+#include <poundfe/base/exceptions.h>
+#include <poundfe/output/csv_writer.h>
+#include <poundfe/output/peak_response.h>
+#include <poundfe/output/recorders.h>
+#include <poundfe/output/storey_forces.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace poundfe
+{
+  namespace
+  {
+    struct QuantityInfo
+    {
+      RecordedQuantity quantity;
+      const char      *name; // in `Record`
+      const char      *file;
+    };
+
+    const QuantityInfo quantities[] = {
+      {RecordedQuantity::floor_displacement, "floor displacement", "floor_displacement.csv"},
+      {RecordedQuantity::floor_velocity, "floor velocity", "floor_velocity.csv"},
+      {RecordedQuantity::floor_acceleration, "floor acceleration", "floor_acceleration.csv"},
+      {RecordedQuantity::drift_ratio, "storey drift ratio", "drift.csv"},
+      {RecordedQuantity::storey_shear, "storey shear", "storey_shear.csv"},
+      {RecordedQuantity::base_shear, "base shear", "base_shear.csv"},
+      {RecordedQuantity::residual_drift, "residual drift", "residual_drift.csv"},
+      {RecordedQuantity::member_forces, "member end forces", "member_forces.csv"},
+      {RecordedQuantity::hinge_states, "hinge states", "hinges.csv"},
+      {RecordedQuantity::gap_states, "gap states", "contact_force.csv"},
+      {RecordedQuantity::energy, "energy", "energy.csv"},
+      {RecordedQuantity::ground_motion, "ground motion", "ground_motion.csv"}};
+
+    const QuantityInfo &
+    info(const RecordedQuantity q)
+    {
+      return quantities[static_cast<unsigned int>(q)];
+    }
+
+    std::string
+    trim(const std::string &s)
+    {
+      const auto begin = s.find_first_not_of(" \t");
+      if (begin == std::string::npos)
+        return "";
+      return s.substr(begin, s.find_last_not_of(" \t") - begin + 1);
+    }
+
+    /// Fills the values of one row from the state.
+    using RowFunction = std::function<void(const ResponseView &, std::vector<double> &)>;
+
+    /// A time series: a row (time, values...) every `every` steps.
+    class CsvRecorder : public StepObserver
+    {
+    public:
+      CsvRecorder(const std::string &path, const std::vector<std::string> &columns,
+                  const unsigned int every, RowFunction row)
+        : csv(path, with_time(columns))
+        , every(every)
+        , row(std::move(row))
+      {}
+
+      void
+      observe_step(const ResponseView &state) override
+      {
+        if (state.step() % every != 0)
+          return;
+        row(state, values);
+        csv.begin_row(state.time());
+        for (const double v : values)
+          csv.add(v);
+        csv.end_row();
+      }
+
+      void
+      finish(const ResponseView &, const RunStatus &) override
+      {
+        csv.commit();
+      }
+
+    private:
+      static std::vector<std::string>
+      with_time(const std::vector<std::string> &columns)
+      {
+        std::vector<std::string> header{"time_s"};
+        header.insert(header.end(), columns.begin(), columns.end());
+        return header;
+      }
+
+      CsvWriter           csv;
+      const unsigned int  every;
+      RowFunction         row;
+      std::vector<double> values;
+    };
+
+    /// The drift ratios at the end of the run (after a failure or an
+    /// interruption: at the last step reached).
+    class ResidualDriftRecorder : public StepObserver
+    {
+    public:
+      ResidualDriftRecorder(const std::string &path, const PeakResponse &peaks)
+        : path(path)
+        , peaks(peaks)
+      {}
+      void observe_step(const ResponseView &) override {}
+      void
+      finish(const ResponseView &state, const RunStatus &) override
+      {
+        std::string text = "building,storey,residual_drift_ratio,residual_floor_disp_m\n";
+        for (unsigned int b = 0; b < state.model.buildings.size(); ++b)
+          for (unsigned int f = 0; f < state.model.buildings[b].floors.size(); ++f)
+            {
+              const unsigned int i = peaks.floors().index(b, f);
+              std::ostringstream row;
+              row.precision(17);
+              row << state.model.buildings[b].name << "," << f + 1 << ","
+                  << peaks.floors().drift_ratio()[i] << ","
+                  << peaks.floors().displacement()[i] << "\n";
+              text += row.str();
+            }
+        write_file_atomically(path, text);
+      }
+
+    private:
+      const std::string   path;
+      const PeakResponse &peaks;
+    };
+
+    /// Columns and row of a time-series quantity.
+    struct Series
+    {
+      std::vector<std::string> columns;
+      RowFunction              row;
+    };
+
+    Series
+    series_of(const RecorderRequest &request, const ResponseView &state, const PeakResponse &peaks,
+              const std::shared_ptr<const StoreyForces> &forces, const std::string &input_file,
+              const int line)
+    {
+      const FloorResponse    &floors   = peaks.floors();
+      const UniaxialElements &elements = state.elements;
+      const unsigned int      n_hyst   = peaks.n_hysteretic();
+      auto copy = [](const std::vector<double> &from) {
+        return [&from](const ResponseView &, std::vector<double> &to) { to = from; };
+      };
+      switch (request.quantity)
+        {
+          case RecordedQuantity::floor_displacement:
+            return {floors.column_names("floor", "disp_m"), copy(floors.displacement())};
+          case RecordedQuantity::floor_velocity:
+            return {floors.column_names("floor", "vel_m_s"), copy(floors.velocity())};
+          case RecordedQuantity::floor_acceleration:
+            return {floors.column_names("floor", "acc_m_s2"), copy(floors.absolute_acceleration())};
+          case RecordedQuantity::drift_ratio:
+            return {floors.column_names("storey", "drift_ratio"), copy(floors.drift_ratio())};
+          case RecordedQuantity::storey_shear:
+            return {floors.column_names("storey", "shear_N"),
+                    [forces](const ResponseView &s, std::vector<double> &to) {
+                      forces->storey_shears(s.displacement(), s.velocity(), to);
+                    }};
+          case RecordedQuantity::base_shear:
+            {
+              std::vector<std::string> columns;
+              for (const Building &b : state.model.buildings)
+                columns.push_back(b.name + "_base_shear_N");
+              const unsigned int n_buildings = state.model.buildings.size();
+              auto shears = std::make_shared<std::vector<double>>();
+              return {columns, [forces, shears, n_buildings](const ResponseView &s,
+                                                            std::vector<double> &to) {
+                        forces->storey_shears(s.displacement(), s.velocity(), *shears);
+                        to.resize(n_buildings);
+                        for (unsigned int b = 0; b < n_buildings; ++b)
+                          to[b] = (*shears)[forces->index(b, 0)];
+                      }};
+            }
+          case RecordedQuantity::member_forces:
+            {
+              std::vector<std::string> columns;
+              for (const std::string &label : request.labels)
+                {
+                  if (!forces->has_member(label))
+                    throw InputError(input_file, line, "Output/Recorders/Record",
+                                     "no member is labelled '" + label +
+                                       "' (members are named like A3_C1.2: building, C<storey>.<column line> "
+                                       "or B<floor>.<bay>)");
+                  for (const char *c : {"_N1_N", "_V1_N", "_M1_N_m", "_N2_N", "_V2_N", "_M2_N_m"})
+                    columns.push_back(label + c);
+                }
+              const std::vector<std::string> labels = request.labels;
+              return {columns, [forces, labels](const ResponseView &s, std::vector<double> &to) {
+                        to.resize(6 * labels.size());
+                        for (unsigned int m = 0; m < labels.size(); ++m)
+                          {
+                            const Vector6 f = forces->member_end_forces(labels[m], s.displacement());
+                            for (unsigned int k = 0; k < 6; ++k)
+                              to[6 * m + k] = f[k];
+                          }
+                      }};
+            }
+          case RecordedQuantity::hinge_states:
+            {
+              std::vector<std::string> columns;
+              for (unsigned int h = 0; h < n_hyst; ++h)
+                {
+                  const bool hinge = elements[h].kind == ElementKind::hinge;
+                  columns.push_back(elements[h].label + (hinge ? "_moment_N_m" : "_force_N"));
+                  columns.push_back(elements[h].label + (hinge ? "_rotation_rad" : "_drift_m"));
+                  columns.push_back(elements[h].label + "_z");
+                }
+              return {columns, [n_hyst](const ResponseView &s, std::vector<double> &to) {
+                        to.resize(3 * n_hyst);
+                        for (unsigned int h = 0; h < n_hyst; ++h)
+                          {
+                            const UniaxialElement &e = s.elements[h];
+                            to[3 * h]     = e.force();
+                            to[3 * h + 1] = e.deformation(s.displacement());
+                            to[3 * h + 2] = e.history_variable();
+                          }
+                      }};
+            }
+          case RecordedQuantity::gap_states:
+            {
+              std::vector<std::string> columns;
+              for (unsigned int h = n_hyst; h < elements.size(); ++h)
+                {
+                  columns.push_back(elements[h].label + "_force_N");
+                  columns.push_back(elements[h].label + "_penetration_m");
+                }
+              return {columns, [n_hyst](const ResponseView &s, std::vector<double> &to) {
+                        to.clear();
+                        for (unsigned int h = n_hyst; h < s.elements.size(); ++h)
+                          {
+                            to.push_back(s.elements[h].force());
+                            to.push_back(s.elements[h].history_variable());
+                          }
+                      }};
+            }
+          case RecordedQuantity::energy:
+            return {{"input_J", "kinetic_J", "damping_J", "strain_J", "hysteretic_J", "contact_J",
+                     "balance_error"},
+                    [](const ResponseView &s, std::vector<double> &to) {
+                      const EnergyBalance e = s.energy();
+                      to = {e.input, e.kinetic, e.damping, e.strain, e.hysteretic, e.contact,
+                            s.max_energy_error()};
+                    }};
+          case RecordedQuantity::ground_motion:
+            return {{"ground_acceleration_m_s2"}, [](const ResponseView &s, std::vector<double> &to) {
+                      to.assign(1, s.ground_acceleration());
+                    }};
+          case RecordedQuantity::residual_drift:
+            break; // not a time series
+        }
+      throw std::logic_error("series_of: not a time series");
+    }
+  } // namespace
+
+  unsigned int
+  steps_per_interval(const double interval, const double dt)
+  {
+    return interval <= 0 ? 1 : std::max(1u, static_cast<unsigned int>(std::lround(interval / dt)));
+  }
+
+  std::vector<std::string>
+  recorded_quantity_names()
+  {
+    std::vector<std::string> names;
+    for (const QuantityInfo &q : quantities)
+      names.push_back(q.name);
+    return names;
+  }
+
+  void
+  RecorderParameters::declare(dealii::ParameterHandler &prm)
+  {
+    std::string names;
+    for (const QuantityInfo &q : quantities)
+      names += std::string(names.empty() ? "" : ", ") + q.name + " (" + q.file + ")";
+    prm.add_parameter("Default files", default_files,
+                      "Write the default time series: floor displacement, floor acceleration, "
+                      "storey drift ratio, hinge states (with hinges or Bouc-Wen storeys), gap "
+                      "states (with gaps), energy, ground motion, every Output interval.");
+    prm.add_parameter("Record", record,
+                      "Further recorders, separated by ';'. Each is '<quantity> [of <labels>] "
+                      "[every <seconds>]'; without 'every', rows come every Output interval "
+                      "('every 0': every step). A quantity listed here replaces its default. "
+                      "Quantities (files): " + names + ". 'member end forces' needs the members, "
+                      "e.g. 'member end forces of A3_C1.1, A3_B2.1' (building, C<storey>.<column "
+                      "line> or B<floor>.<bay>). Storey and base shear are element forces "
+                      "(Rayleigh damping excluded, storey dashpots included).");
+  }
+
+  void
+  RecorderParameters::finalize(const std::string &file, const int line_of_record,
+                               const double interval)
+  {
+    line            = line_of_record;
+    output_interval = interval;
+    try
+      {
+        requests = parse(record);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError(file, line, "Output/Recorders/Record", e.what());
+      }
+  }
+
+  std::vector<RecorderRequest>
+  RecorderParameters::parse(const std::string &text)
+  {
+    std::vector<RecorderRequest> requests;
+    std::istringstream           items(text);
+    std::string                  item;
+    while (std::getline(items, item, ';'))
+      {
+        item = trim(item);
+        if (item.empty() || item == "none")
+          continue;
+        RecorderRequest request;
+        const auto      every = item.rfind(" every ");
+        if (every != std::string::npos)
+          {
+            const std::string value = trim(item.substr(every + 7));
+            std::size_t       end   = 0;
+            try
+              {
+                request.interval = std::stod(value, &end);
+              }
+            catch (const std::exception &)
+              {
+                end = 0;
+              }
+            if (end == 0 || end != value.size() || !std::isfinite(request.interval) ||
+                request.interval < 0 || request.interval > 1e6)
+              throw std::invalid_argument("'" + item + "': 'every' needs an interval in s (>= 0), got '" +
+                                          value + "'");
+            item = trim(item.substr(0, every));
+          }
+        const auto of = item.find(" of ");
+        const std::string name = trim(of == std::string::npos ? item : item.substr(0, of));
+        bool              known = false;
+        for (const QuantityInfo &q : quantities)
+          if (name == q.name)
+            request.quantity = q.quantity, known = true;
+        if (!known)
+          {
+            std::string list;
+            for (const QuantityInfo &q : quantities)
+              list += (list.empty() ? "" : ", ") + std::string(q.name);
+            throw std::invalid_argument("unknown quantity '" + name + "' (one of: " + list + ")");
+          }
+        if (of != std::string::npos)
+          {
+            std::istringstream labels(item.substr(of + 4));
+            std::string        label;
+            while (std::getline(labels, label, ','))
+              if (!trim(label).empty())
+                request.labels.push_back(trim(label));
+          }
+        const bool takes_labels = request.quantity == RecordedQuantity::member_forces;
+        if (takes_labels && request.labels.empty())
+          throw std::invalid_argument("'" + name + "' needs the members: '" + name +
+                                      " of A3_C1.1, A3_B1.1'");
+        if (!takes_labels && !request.labels.empty())
+          throw std::invalid_argument("'" + name + "' takes no 'of' list");
+        for (const RecorderRequest &r : requests)
+          if (r.quantity == request.quantity)
+            throw std::invalid_argument("'" + name + "' is recorded twice");
+        requests.push_back(request);
+      }
+    return requests;
+  }
+
+  std::vector<std::unique_ptr<StepObserver>>
+  make_recorders(const RecorderParameters &parameters, const std::string &input_file,
+                 const ResponseView &state, const PeakResponse &peaks, const double time_step,
+                 const std::string &directory)
+  {
+    const bool has_hysteretic = peaks.n_hysteretic() > 0;
+    const bool has_gaps       = peaks.n_hysteretic() < state.elements.size();
+    std::vector<RecorderRequest> requests;
+    if (parameters.default_files)
+      for (const RecordedQuantity q :
+           {RecordedQuantity::drift_ratio, RecordedQuantity::floor_acceleration,
+            RecordedQuantity::floor_displacement, RecordedQuantity::ground_motion,
+            RecordedQuantity::energy, RecordedQuantity::hinge_states, RecordedQuantity::gap_states})
+        if ((q != RecordedQuantity::hinge_states || has_hysteretic) &&
+            (q != RecordedQuantity::gap_states || has_gaps))
+          requests.push_back({q, {}, -1.0});
+    for (const RecorderRequest &r : parameters.requests)
+      {
+        auto same = std::find_if(requests.begin(), requests.end(),
+                                 [&](const RecorderRequest &d) { return d.quantity == r.quantity; });
+        if (same != requests.end())
+          *same = r; // a request overrides the default of the same quantity
+        else
+          requests.push_back(r);
+        if ((r.quantity == RecordedQuantity::hinge_states && !has_hysteretic) ||
+            (r.quantity == RecordedQuantity::gap_states && !has_gaps))
+          throw InputError(input_file, parameters.line, "Output/Recorders/Record",
+                           std::string("'") + info(r.quantity).name + "': the model has no " +
+                             (has_hysteretic ? "gap elements" : "hinges or Bouc-Wen storeys"));
+      }
+
+    auto forces = std::make_shared<const StoreyForces>(state.model, state.elements);
+    std::vector<std::unique_ptr<StepObserver>> recorders;
+    for (const RecorderRequest &r : requests)
+      {
+        const std::string path = directory + "/" + info(r.quantity).file;
+        if (r.quantity == RecordedQuantity::residual_drift)
+          {
+            recorders.push_back(std::make_unique<ResidualDriftRecorder>(path, peaks));
+            continue;
+          }
+        Series series = series_of(r, state, peaks, forces, input_file, parameters.line);
+        const double interval = r.interval >= 0 ? r.interval : parameters.output_interval;
+        recorders.push_back(std::make_unique<CsvRecorder>(
+          path, series.columns, steps_per_interval(interval, time_step), std::move(series.row)));
+      }
+    return recorders;
+  }
+} // namespace poundfe

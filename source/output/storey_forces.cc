@@ -1,0 +1,125 @@
+#include <poundfe/output/storey_forces.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace poundfe
+{
+  namespace
+  {
+    std::array<int, 6>
+    element_equations(const Model &model, const Member &member)
+    {
+      std::array<int, 6> equations;
+      for (unsigned int k = 0; k < 6; ++k)
+        equations[k] = model.equation(n_dofs_per_node * member.nodes[k / 3] + k % 3);
+      return equations;
+    }
+  } // namespace
+
+  StoreyForces::StoreyForces(const Model &model_, const UniaxialElements &elements)
+    : model(model_)
+    , nonlinear(elements)
+  {
+    for (const Building &building : model.buildings)
+      {
+        first.push_back(storeys.size());
+        storeys.resize(storeys.size() + building.floors.size());
+      }
+    // Frame elements crossing each storey's mid-height cut.
+    for (const Member &member : model.members)
+      {
+        const Building &building = model.buildings[member.building];
+        const double    y0       = model.nodes[member.nodes[0]].position.y;
+        const double    y1       = model.nodes[member.nodes[1]].position.y;
+        for (unsigned int s = 0; s < building.floors.size(); ++s)
+          {
+            const double below = s == 0 ? building.base_level : building.floors[s - 1].level;
+            const double cut   = 0.5 * (below + building.floors[s].level);
+            if (std::min(y0, y1) < cut && cut < std::max(y0, y1))
+              {
+                const FrameElement element(model.nodes[member.nodes[0]].position,
+                                           model.nodes[member.nodes[1]].position,
+                                           member.section);
+                storeys[index(member.building, s)].elements.push_back(
+                  {element_equations(model, member), element.stiffness(), y0 < y1 ? 0u : 1u});
+              }
+          }
+      }
+    // Shear-building storeys: the k-th link of a building is its storey k;
+    // Bouc-Wen storeys are the nonlinear elements of kind storey, in link order.
+    std::vector<unsigned int> storey_of_building(model.buildings.size(), 0);
+    std::vector<int>          storey_elements;
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      if (elements[h].kind == ElementKind::storey)
+        storey_elements.push_back(h);
+    unsigned int next_hysteretic = 0;
+    for (unsigned int l = 0; l < model.links.size(); ++l)
+      {
+        const StoreyLink &link = model.links[l];
+        Storey &storey = storeys[index(link.building, storey_of_building[link.building]++)];
+        storey.link    = l;
+        if (link.hysteretic)
+          storey.hysteretic = storey_elements.at(next_hysteretic++);
+      }
+  }
+
+  Vector6
+  StoreyForces::end_displacements(const std::array<int, 6> &equations, const Vector &u) const
+  {
+    Vector6 ue;
+    for (unsigned int k = 0; k < 6; ++k)
+      ue[k] = equations[k] >= 0 ? u[equations[k]] : 0.0;
+    return ue;
+  }
+
+  void
+  StoreyForces::storey_shears(const Vector &u, const Vector &v, std::vector<double> &shear) const
+  {
+    shear.resize(storeys.size());
+    for (unsigned int i = 0; i < storeys.size(); ++i)
+      {
+        const Storey &storey = storeys[i];
+        double        V      = 0;
+        for (const CutElement &e : storey.elements)
+          V -= e.stiffness.row(3 * e.lower).dot(end_displacements(e.equations, u));
+        if (storey.link >= 0)
+          {
+            const StoreyLink &link = model.links[storey.link];
+            auto drift = [&](const Vector &x) {
+              const int top = model.equation(Model::dof(link.nodes[1], Component::ux));
+              const int bottom = model.equation(Model::dof(link.nodes[0], Component::ux));
+              return (top >= 0 ? x[top] : 0.0) - (bottom >= 0 ? x[bottom] : 0.0);
+            };
+            V += storey.hysteretic >= 0 ? nonlinear[storey.hysteretic].force() :
+                                          link.stiffness * drift(u);
+            V += link.damping * drift(v);
+          }
+        shear[i] = V;
+      }
+  }
+
+  bool
+  StoreyForces::has_member(const std::string &label) const
+  {
+    return std::any_of(model.members.begin(), model.members.end(),
+                       [&](const Member &m) { return m.label == label; });
+  }
+
+  Vector6
+  StoreyForces::member_end_forces(const std::string &label, const Vector &u) const
+  {
+    Vector6 forces = Vector6::Zero();
+    for (const Member &member : model.members)
+      if (member.label == label && (member.at_joint[0] || member.at_joint[1]))
+        {
+          const FrameElement element(model.nodes[member.nodes[0]].position,
+                                     model.nodes[member.nodes[1]].position, member.section);
+          const Vector6 f = element.local_end_forces(end_displacements(element_equations(model, member), u));
+          for (unsigned int end = 0; end < 2; ++end)
+            if (member.at_joint[end])
+              forces.segment<3>(3 * end) = f.segment<3>(3 * end);
+        }
+    return forces;
+  }
+} // namespace poundfe
