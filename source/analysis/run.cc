@@ -232,11 +232,11 @@ namespace poundfe
     const std::string &directory = options.output_directory;
     if (!directory.empty())
       {
-        create_directories(directory);
         const InputParameters &input = analysis.input;
-        if (options.csv)
+        if (options.csv) // first: it checks its input before anything is written
           outputs = make_recorders(input.recorders, input.file, history.state(), peaks,
                                    input.time_step, directory);
+        create_directories(directory);
         if (options.vtu && input.vtu_interval > 0)
           outputs.push_back(std::make_unique<VtuRecorder>(
             analysis.model, directory, steps_per_interval(input.vtu_interval, input.time_step)));

@@ -410,8 +410,16 @@ namespace poundfe
                              (has_hysteretic ? "gap elements" : "hinges or Bouc-Wen storeys"));
       }
 
+    // Every request is checked (series_of throws on an unknown member)
+    // before a file or the directory is made: bad input writes nothing.
     auto forces = std::make_shared<const StoreyForces>(state.model, state.elements);
+    std::vector<Series> series;
+    for (const RecorderRequest &r : requests)
+      if (r.quantity != RecordedQuantity::residual_drift)
+        series.push_back(series_of(r, state, peaks, forces, input_file, parameters.line));
+    create_directories(directory);
     std::vector<std::unique_ptr<StepObserver>> recorders;
+    auto next = series.begin();
     for (const RecorderRequest &r : requests)
       {
         const std::string path = directory + "/" + info(r.quantity).file;
@@ -420,10 +428,10 @@ namespace poundfe
             recorders.push_back(std::make_unique<ResidualDriftRecorder>(path, peaks));
             continue;
           }
-        Series series = series_of(r, state, peaks, forces, input_file, parameters.line);
         const double interval = r.interval >= 0 ? r.interval : parameters.output_interval;
         recorders.push_back(std::make_unique<CsvRecorder>(
-          path, series.columns, steps_per_interval(interval, time_step), std::move(series.row)));
+          path, next->columns, steps_per_interval(interval, time_step), std::move(next->row)));
+        ++next;
       }
     return recorders;
   }

@@ -19,7 +19,8 @@ namespace poundfe
 
   /// The requested recorders plus the defaults, as observers writing into
   /// `directory`. They read the floor response of `peaks`, which must be
-  /// observed before them. Throws InputError for an unknown member label.
+  /// observed before them. Checks every request (InputError for an
+  /// unknown member label) before it makes the directory or a file.
   std::vector<std::unique_ptr<StepObserver>>
   make_recorders(const RecorderParameters &parameters, const std::string &input_file,
                  const ResponseView &state, const PeakResponse &peaks, double time_step,
