@@ -1,5 +1,5 @@
 // Modal analysis against the closed-form three-storey shear building
-// (physics.md §1: 5.0085, 14.0335, 20.2789 Hz, quoted to 4 decimals, so the
+// (doc/theory.md §1: 5.0085, 14.0335, 20.2789 Hz, quoted to 4 decimals, so the
 // tolerance is 1e-5 relative), and a frame with very stiff beams and axially
 // rigid columns, whose storey stiffness tends to n_columns * 12 EI / h^3.
 #define BOOST_TEST_MODULE analysis

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # deal.II-style output comparison: the modal frequencies of the three-storey
-# shear building against the closed-form values of physics.md §1
+# shear building against the closed-form values of doc/theory.md §1
 # (4 decimals given, so numdiff's relative tolerance is 1e-5).
 set -eu
 poundfe=$1 input=$2 expected=$3 numdiff=$4

@@ -1,4 +1,4 @@
-// The generators against their target spectra (physics.md §5), with the
+// The generators against their target spectra (doc/theory.md §5), with the
 // estimates written here, independently of the library:
 //   - ensemble PSD: averaged periodogram at the DFT frequencies (Eigen's FFT),
 //     averaged over bands, against the analytic Kanai-Tajimi
