@@ -55,9 +55,6 @@ namespace poundfe
     double stored_energy() const { return law->stored_energy(); }
     double yield_deformation() const { return law->yield_deformation(); }
     double initial_stiffness() const { return law->initial_stiffness(); }
-
-    /// A copy with its own law in the same state.
-    UniaxialElement clone() const;
   };
 
   using UniaxialElements = std::vector<UniaxialElement>;

@@ -118,7 +118,6 @@ namespace poundfe
     double max_energy_error() const { return max_balance_error; }
 
     const IterationStatistics &statistics() const { return stats; }
-    bool                       has_nonlinear_elements() const { return n_elements > 0; }
     /// Work done on element h so far (trapezoidal), J.
     double element_work(unsigned int h) const { return work[h]; }
     /// The residual R(u_trial) of the next step under p(t_{n+1}) = load, and
