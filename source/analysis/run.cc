@@ -321,12 +321,12 @@ namespace poundfe
               peak_deformation[h] = std::abs(d);
               time_of_peak[h]     = t;
             }
-          const double f = elements[h].law->force();
+          const double f = elements[h].force();
           peak_force[h]  = std::max(peak_force[h], std::abs(f));
           if (h >= n_hysteretic) // a gap: its opening is minus its penetration
-            min_clearance = std::min(min_clearance, -elements[h].law->history_variable());
+            min_clearance = std::min(min_clearance, -elements[h].history_variable());
           // plastic part: the deformation left after elastic unloading
-          const double k0 = elements[h].law->initial_stiffness();
+          const double k0 = elements[h].initial_stiffness();
           if (k0 > 0)
             peak_plastic[h] = std::max(peak_plastic[h], std::abs(d - f / k0));
         }
@@ -344,10 +344,10 @@ namespace poundfe
               hinges_csv->begin_row(t);
               for (unsigned int i = 0; i < n_hysteretic; ++i)
                 {
-                  const UniaxialElement &e = elements[i];
-                  hinges_csv->add(e.law->force());
+                  const NonlinearElement &e = elements[i];
+                  hinges_csv->add(e.force());
                   hinges_csv->add(e.deformation(integrator.displacement()));
-                  hinges_csv->add(e.law->history_variable());
+                  hinges_csv->add(e.history_variable());
                 }
               hinges_csv->end_row();
             }
@@ -356,8 +356,8 @@ namespace poundfe
               contact_csv->begin_row(t);
               for (unsigned int i = n_hysteretic; i < n_elements; ++i)
                 {
-                  contact_csv->add(elements[i].law->force());
-                  contact_csv->add(elements[i].law->history_variable());
+                  contact_csv->add(elements[i].force());
+                  contact_csv->add(elements[i].history_variable());
                 }
               contact_csv->end_row();
             }
@@ -411,7 +411,7 @@ namespace poundfe
       result.min_clearance = std::min(result.min_clearance, -impact.max_penetration);
     for (unsigned int h = 0; h < n_hysteretic; ++h)
       {
-        const double yield = elements[h].law->yield_deformation();
+        const double yield = elements[h].yield_deformation();
         result.element_labels.push_back(elements[h].label);
         result.peak_element_deformation.push_back(peak_deformation[h]);
         result.element_ductility.push_back(yield > 0 ? peak_deformation[h] / yield : 0.0);
@@ -495,19 +495,19 @@ namespace poundfe
         json.begin_array("hinges");
         for (unsigned int h = 0; h < n_hysteretic; ++h)
           {
-            const UniaxialElement &e = elements[h];
+            const NonlinearElement &e = elements[h];
             json.begin_object()
               .value("label", e.label)
               .value("kind", kind_name(e.kind))
               .value("building", model.buildings[e.building].name)
-              .value("yield_deformation", e.law->yield_deformation())
+              .value("yield_deformation", e.yield_deformation())
               .value("peak_deformation", peak_deformation[h])
               .value("time_of_peak_deformation_s", time_of_peak[h])
               .value("ductility", result.element_ductility[h])
               .value("peak_plastic_deformation", peak_plastic[h])
               .value("peak_force", peak_force[h])
               .value("dissipated_energy_J",
-                     integrator.element_work(h) - e.law->stored_energy())
+                     integrator.element_work(h) - e.stored_energy())
               .end_object();
           }
         json.end_array();
@@ -557,7 +557,7 @@ namespace poundfe
         for (unsigned int g = 0; g < n_gaps; ++g)
           {
             const Gap             &gap = model.gaps[g];
-            const UniaxialElement &e   = elements[n_hysteretic + g];
+            const NonlinearElement &e   = elements[n_hysteretic + g];
             json.begin_object()
               .value("label", gap.label)
               .value("level_m", gap.level)
@@ -568,7 +568,7 @@ namespace poundfe
               .value("max_penetration_m", penetration[g])
               .value("total_impulse_N_s", impulse[g])
               .value("dissipated_energy_J",
-                     integrator.element_work(n_hysteretic + g) - e.law->stored_energy())
+                     integrator.element_work(n_hysteretic + g) - e.stored_energy())
               .end_object();
           }
         json.end_array();
@@ -651,7 +651,7 @@ namespace poundfe
         for (unsigned int i = 0; i < std::min(4u, n_hysteretic); ++i)
           {
             const unsigned int     h = order[i];
-            const UniaxialElement &e = elements[h];
+            const NonlinearElement &e = elements[h];
             const bool             hinge = e.kind == ElementKind::hinge;
             std::ostringstream     title;
             title << e.label << " (ductility " << result.element_ductility[h] << ")";

@@ -56,7 +56,7 @@ namespace poundfe
 
   private:
     const Analysis   &analysis;
-    UniaxialElements  elements; // before the integrator, which points to them
+    NonlinearElements elements; // before the integrator, which points to them
     NewmarkIntegrator integrator;
   };
 
