@@ -220,7 +220,7 @@ namespace poundfe
         json.begin_array("hinges");
         for (unsigned int h = 0; h < n_hysteretic; ++h)
           {
-            const UniaxialElement &e     = state.elements[h];
+            const NonlinearElement &e     = state.elements[h];
             const ElementUnits     units = units_of(e.kind);
             json.begin_object()
               .value("label", e.label)
@@ -361,7 +361,7 @@ namespace poundfe
         for (unsigned int i = 0; i < std::min(4u, n_hysteretic); ++i)
           {
             const unsigned int     h     = order[i];
-            const UniaxialElement &e     = state.elements[h];
+            const NonlinearElement &e     = state.elements[h];
             const bool             hinge = e.kind == ElementKind::hinge;
             std::ostringstream     title;
             title << e.label << " (ductility " << peaks.ductility(h) << ")";

@@ -1,53 +1,98 @@
 #include <poundfe/assembly/low_rank_update.h>
 #include <poundfe/base/exceptions.h>
 
+#include <deal.II/base/exceptions.h>
+
 #include <cmath>
 
 namespace poundfe
 {
   void
-  LowRankUpdateSolver::initialize(LinearSolver &factorised,
-                                  const std::vector<SparseColumn> &columns_of_b,
-                                  const unsigned int n_rows)
+  LowRankUpdateSolver::initialize(LinearSolver                    &factorised,
+                                  const std::vector<SparseColumn> &columns,
+                                  const unsigned int               n_rows,
+                                  const std::vector<unsigned int> &block_sizes)
   {
-    base    = &factorised;
-    columns = columns_of_b;
+    base                 = &factorised;
     const unsigned int m = columns.size();
+    column_start.assign(1, 0);
+    entry_row.clear();
+    entry_value.clear();
+    for (const SparseColumn &column : columns)
+      {
+        AssertDimension(column.rows.size(), column.values.size());
+        for (unsigned int i = 0; i < column.rows.size(); ++i)
+          if (column.rows[i] >= 0)
+            {
+              entry_row.push_back(column.rows[i]);
+              entry_value.push_back(column.values[i]);
+            }
+        column_start.push_back(entry_row.size());
+      }
+
+    block_start.assign(1, 0);
+    d_offset.assign(1, 0);
+    column_block.resize(m);
+    const std::vector<unsigned int> sizes =
+      block_sizes.empty() ? std::vector<unsigned int>(m, 1) : block_sizes;
+    for (const unsigned int size : sizes)
+      {
+        for (unsigned int c = block_start.back(); c < block_start.back() + size && c < m; ++c)
+          column_block[c] = block_start.size() - 1;
+        block_start.push_back(block_start.back() + size);
+        d_offset.push_back(d_offset.back() + size * size);
+      }
+    AssertThrow(block_start.back() == m,
+                dealii::ExcMessage("the block sizes must add up to the number of columns"));
+
     W.resize(n_rows, m);
     G.resize(m, m);
     S.resize(m, m);
     y.resize(n_rows);
+    bty.resize(m);
     rhs_small.resize(m);
     active.reserve(m);
     Vector w(n_rows), column(n_rows);
-    for (unsigned int h = 0; h < m; ++h)
+    for (unsigned int c = 0; c < m; ++c)
       {
         column.setZero();
-        for (unsigned int i = 0; i < 2; ++i)
-          if (columns[h].rows[i] >= 0)
-            column[columns[h].rows[i]] += columns[h].values[i];
+        for (unsigned int q = column_start[c]; q < column_start[c + 1]; ++q)
+          column[entry_row[q]] += entry_value[q];
         base->solve(column, w);
-        W.col(h) = w;
+        W.col(c) = w;
       }
-    for (unsigned int h = 0; h < m; ++h)
+    for (unsigned int c = 0; c < m; ++c)
       for (unsigned int g = 0; g < m; ++g)
-        {
-          double value = 0;
-          for (unsigned int i = 0; i < 2; ++i)
-            if (columns[h].rows[i] >= 0)
-              value += columns[h].values[i] * W(columns[h].rows[i], g);
-          G(h, g) = value;
-        }
+        G(c, g) = column_dot(c, W.col(g));
+  }
+
+  double
+  LowRankUpdateSolver::column_dot(const unsigned int c, const Eigen::Ref<const Vector> &v) const
+  {
+    double value = 0;
+    for (unsigned int q = column_start[c]; q < column_start[c + 1]; ++q)
+      value += entry_value[q] * v[entry_row[q]];
+    return value;
   }
 
   void
   LowRankUpdateSolver::solve(const Vector &r, const std::vector<double> &d, Vector &x)
   {
+    AssertDimension(d.size(), d_offset.back());
     base->solve(r, y);
     active.clear();
-    for (unsigned int h = 0; h < columns.size(); ++h)
-      if (d[h] != 0)
-        active.push_back(h);
+    for (unsigned int e = 0; e + 1 < block_start.size(); ++e)
+      {
+        const double *block = d.data() + d_offset[e];
+        const unsigned int n_entries = d_offset[e + 1] - d_offset[e];
+        for (unsigned int q = 0; q < n_entries; ++q)
+          if (block[q] != 0)
+            {
+              for (unsigned int c = block_start[e]; c < block_start[e + 1]; ++c)
+                active.push_back(c);
+              break;
+            }
+      }
     const unsigned int k = active.size();
     if (k == 0)
       {
@@ -55,19 +100,45 @@ namespace poundfe
         return;
       }
 
-    // S = I + D_a G_aa and rhs = D_a B_a^T y, then LU with partial pivoting
-    // in place (the leading k x k block of the preallocated S).
+    // S = I + D_a G_aa and rhs = D_a B_a^T y. Row a is row i of its block
+    // D_e, whose columns are the active positions first, ..., first + r_e - 1.
+    // Each sum starts from its first term, so that for r_e = 1 the entries
+    // are d G and d b^T y exactly.
+    for (unsigned int a = 0; a < k; ++a)
+      bty[a] = column_dot(active[a], y);
     for (unsigned int a = 0; a < k; ++a)
       {
-        const unsigned int h = active[a];
-        double             bty = 0;
-        for (unsigned int i = 0; i < 2; ++i)
-          if (columns[h].rows[i] >= 0)
-            bty += columns[h].values[i] * y[columns[h].rows[i]];
-        rhs_small[a] = d[h] * bty;
-        for (unsigned int b = 0; b < k; ++b)
-          S(a, b) = (a == b ? 1.0 : 0.0) + d[h] * G(h, active[b]);
+        const unsigned int c = active[a], e = column_block[c];
+        const unsigned int size  = block_start[e + 1] - block_start[e];
+        const unsigned int i     = c - block_start[e];
+        const unsigned int first = a - i;
+        const double      *D     = d.data() + d_offset[e]; // D(i, j) = D[i + j size]
+        double             rhs   = D[i] * bty[first];
+        for (unsigned int j = 1; j < size; ++j)
+          rhs += D[i + j * size] * bty[first + j];
+        rhs_small[a] = rhs;
+        if (size == 1) // the common case, kept lean
+          for (unsigned int b = 0; b < k; ++b)
+            S(a, b) = (a == b ? 1.0 : 0.0) + D[0] * G(c, active[b]);
+        else
+          for (unsigned int b = 0; b < k; ++b)
+            {
+              double value = D[i] * G(block_start[e], active[b]);
+              for (unsigned int j = 1; j < size; ++j)
+                value += D[i + j * size] * G(block_start[e] + j, active[b]);
+              S(a, b) = (a == b ? 1.0 : 0.0) + value;
+            }
       }
+    solve_capacitance(k);
+    x = y;
+    for (unsigned int a = 0; a < k; ++a)
+      x.noalias() -= rhs_small[a] * W.col(active[a]);
+  }
+
+  void
+  LowRankUpdateSolver::solve_capacitance(const unsigned int k)
+  {
+    // in place in the leading k x k block of the preallocated S
     for (unsigned int j = 0; j < k; ++j)
       {
         unsigned int p = j;
@@ -101,8 +172,5 @@ namespace poundfe
           value -= S(i, c) * rhs_small[c];
         rhs_small[i] = value / S(i, i);
       }
-    x = y;
-    for (unsigned int a = 0; a < k; ++a)
-      x.noalias() -= rhs_small[a] * W.col(active[a]);
   }
 } // namespace poundfe

@@ -1,18 +1,105 @@
+#include <poundfe/base/exceptions.h>
 #include <poundfe/elements/uniaxial_element.h>
+
+#include <deal.II/base/exceptions.h>
 
 namespace poundfe
 {
-  UniaxialElement
-  UniaxialElement::clone() const
+  UniaxialElement::UniaxialElement(const ElementKind kind, const unsigned int building,
+                                   std::string label, const std::array<int, 2> &equations,
+                                   std::unique_ptr<UniaxialLaw> law,
+                                   const double                 reference_stiffness,
+                                   const std::array<double, 2> &signs)
+    : NonlinearElement(kind, building, std::move(label), {equations[0], equations[1]})
+    , signs(signs)
+    , reference_stiffness(reference_stiffness)
+    , law(std::move(law))
   {
-    UniaxialElement copy;
-    copy.kind                = kind;
-    copy.building            = building;
-    copy.label               = label;
-    copy.equations           = equations;
-    copy.signs               = signs;
-    copy.reference_stiffness = reference_stiffness;
-    copy.law                 = law ? law->clone() : nullptr;
-    return copy;
+    Assert(this->law, dealii::ExcMessage("a uniaxial element needs a law"));
+    reset();
+  }
+
+  Eigen::MatrixXd
+  UniaxialElement::tangent_basis() const
+  {
+    Eigen::MatrixXd b(2, 1);
+    b << signs[0], signs[1];
+    return b;
+  }
+
+  double
+  UniaxialElement::local_deformation(const LocalVector &x) const
+  {
+    double d = 0;
+    for (unsigned int i = 0; i < 2; ++i)
+      if (equations()[i] >= 0)
+        d += signs[i] * x[i];
+    return d;
+  }
+
+  double
+  UniaxialElement::deformation(const Eigen::VectorXd &u) const
+  {
+    double d = 0;
+    for (unsigned int i = 0; i < 2; ++i)
+      if (equations()[i] >= 0)
+        d += signs[i] * u[equations()[i]];
+    return d;
+  }
+
+  bool
+  UniaxialElement::set_trial(const LocalVector &u, const LocalVector &v)
+  {
+    trial_deformation = local_deformation(u);
+    return law->set_trial(trial_deformation, local_deformation(v));
+  }
+
+  void
+  UniaxialElement::force_correction(LocalVectorOut f) const
+  {
+    const double correction = law->force() - reference_stiffness * trial_deformation;
+    for (unsigned int i = 0; i < 2; ++i)
+      f[i] = signs[i] * correction;
+  }
+
+  void
+  UniaxialElement::tangent_change(const double damping_factor, LocalMatrixOut d) const
+  {
+    d(0, 0) = law->tangent() - reference_stiffness + damping_factor * law->damping_tangent();
+  }
+
+  double
+  UniaxialElement::work_increment() const
+  {
+    return 0.5 * (committed_force + law->force()) * (trial_deformation - committed_deformation);
+  }
+
+  double
+  UniaxialElement::reference_energy() const
+  {
+    return 0.5 * reference_stiffness * trial_deformation * trial_deformation;
+  }
+
+  void
+  UniaxialElement::commit()
+  {
+    law->commit();
+    committed_deformation = trial_deformation;
+    committed_force       = law->force();
+  }
+
+  void
+  UniaxialElement::revert()
+  {
+    law->revert();
+    trial_deformation = committed_deformation;
+  }
+
+  void
+  UniaxialElement::reset()
+  {
+    law->reset();
+    committed_deformation = trial_deformation = 0;
+    committed_force                           = law->force();
   }
 } // namespace poundfe

@@ -3,6 +3,8 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>
 
+#include <deal.II/base/exceptions.h>
+
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
@@ -23,32 +25,56 @@ namespace poundfe
     std::vector<double>           base_values;
     std::unique_ptr<LinearSolver> solver;
     LowRankUpdateSolver           woodbury;
-    // refactorize: positions of each element's entries in effective's values
-    std::vector<std::array<int, 4>> entry_index;
+    // refactorize: position of entry (i, j) of each element in effective's
+    // values at [i n_dofs + j], -1 for the ground
+    std::vector<std::vector<int>> entry_index;
   };
 
   NewmarkIntegrator::NewmarkIntegrator(const LinearSystem &system,
                                        const std::string  &linear_solver,
                                        const NewmarkParameters &parameters,
-                                       UniaxialElements        *elements)
+                                       NonlinearElements       *elements)
     : system(system)
     , solver_name(linear_solver)
     , parameters(parameters)
     , elements(elements)
     , n_elements(elements ? elements->size() : 0)
   {
+    dof_start.assign(1, 0);
+    d_start.assign(1, 0);
+    unsigned int total_rank = 0;
+    bool         symmetric  = true;
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        const NonlinearElement &e = (*elements)[h];
+        basis.push_back(e.tangent_basis());
+        AssertThrow(basis[h].rows() == e.n_dofs() && basis[h].cols() == e.rank(),
+                    dealii::ExcMessage(e.label + ": B_e must be n_dofs x rank"));
+        dof_start.push_back(dof_start.back() + e.n_dofs());
+        local_equation.insert(local_equation.end(), e.equations().begin(), e.equations().end());
+        d_start.push_back(d_start.back() + e.rank() * e.rank());
+        total_rank += e.rank();
+        symmetric = symmetric && e.has_symmetric_tangent();
+        if (e.kind == ElementKind::gap)
+          gap_elements.push_back(h);
+      }
+    // auto: Woodbury while its dense capacitance matrix, of size the total
+    // rank (one per uniaxial element), stays small.
     const std::string &mode = parameters.newton.tangent_update;
-    use_woodbury = mode == "woodbury" || (mode == "auto" && n_elements <= 100);
+    use_woodbury = mode == "woodbury" || (mode == "auto" && total_rank <= 100);
+    if (!use_woodbury && !symmetric && solver_name == "eigen-ldlt")
+      throw InputError("", 0, "Time integration/Linear solver",
+                       "refactorising a nonsymmetric element tangent needs an LU solver "
+                       "(umfpack, petsc or trilinos), not eigen-ldlt");
     const unsigned int n = system.n_equations();
     for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &rhs, &residual,
                       &increment, &work_vector, &load_next})
       x->setZero(n);
-    for (auto *x : {&correction, &tangent_change, &committed_deformation, &committed_force,
-                    &committed_history, &committed_rate, &work})
+    for (Vector *x : {&local_u, &local_v, &correction})
+      x->setZero(dof_start.back());
+    tangent_change.assign(d_start.back(), 0.0);
+    for (auto *x : {&work, &committed_force, &committed_history, &committed_rate})
       x->assign(n_elements, 0.0);
-    for (unsigned int h = 0; h < n_elements; ++h)
-      if ((*elements)[h].kind == ElementKind::gap)
-        gap_elements.push_back(h);
     level(0);
   }
 
@@ -82,8 +108,8 @@ namespace poundfe
       {
         // Every coupling of a nonlinear element must be in the pattern.
         for (unsigned int h = 0; h < n_elements; ++h)
-          for (const int i : (*elements)[h].equations)
-            for (const int j : (*elements)[h].equations)
+          for (const int i : (*elements)[h].equations())
+            for (const int j : (*elements)[h].equations())
               if (i >= 0 && j >= 0)
                 L->effective.coeffRef(i, j) += 0.0;
       }
@@ -92,13 +118,26 @@ namespace poundfe
     L->solver->analyze_and_factorize(L->effective);
     if (n_elements > 0 && use_woodbury)
       {
-        std::vector<SparseColumn> columns(n_elements);
+        // B: the columns of every B_e on the element's equations
+        std::vector<SparseColumn> columns;
+        std::vector<unsigned int> ranks;
         for (unsigned int h = 0; h < n_elements; ++h)
           {
-            columns[h].rows   = (*elements)[h].equations;
-            columns[h].values = (*elements)[h].signs;
+            const std::vector<int> &equations = (*elements)[h].equations();
+            for (unsigned int c = 0; c < basis[h].cols(); ++c)
+              {
+                SparseColumn column;
+                for (unsigned int i = 0; i < equations.size(); ++i)
+                  if (equations[i] >= 0 && basis[h](i, c) != 0)
+                    {
+                      column.rows.push_back(equations[i]);
+                      column.values.push_back(basis[h](i, c));
+                    }
+                columns.push_back(std::move(column));
+              }
+            ranks.push_back(basis[h].cols());
           }
-        L->woodbury.initialize(*L->solver, columns, system.n_equations());
+        L->woodbury.initialize(*L->solver, columns, system.n_equations(), ranks);
       }
     else if (n_elements > 0)
       {
@@ -107,13 +146,12 @@ namespace poundfe
         L->entry_index.resize(n_elements);
         for (unsigned int h = 0; h < n_elements; ++h)
           {
-            const auto &eq = (*elements)[h].equations;
-            for (unsigned int i = 0; i < 2; ++i)
-              for (unsigned int j = 0; j < 2; ++j)
-                L->entry_index[h][2 * i + j] =
-                  (eq[i] >= 0 && eq[j] >= 0) ?
-                    &L->effective.coeffRef(eq[i], eq[j]) - L->effective.valuePtr() :
-                    -1;
+            const std::vector<int> &eq = (*elements)[h].equations();
+            for (const int i : eq)
+              for (const int j : eq)
+                L->entry_index[h].push_back(
+                  (i >= 0 && j >= 0) ? &L->effective.coeffRef(i, j) - L->effective.valuePtr() :
+                                       -1);
           }
       }
     levels[cuts] = std::move(L);
@@ -142,24 +180,23 @@ namespace poundfe
     energy_scale      = 0;
     max_balance_error = 0;
     Vector r = load - system.damping * v0 - system.stiffness * u0;
+    gather(u0, local_u);
+    gather(v0, local_v);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
-        UniaxialElement &e = (*elements)[h];
-        e.law->reset();
-        const double d = e.deformation(u0);
-        if (!e.law->set_trial(d, e.deformation(v0)))
-          throw NumericalError("initial state: " + e.label + ": " + e.law->failure());
-        e.law->commit();
-        committed_deformation[h] = d;
-        committed_force[h]       = e.law->force();
-        committed_history[h]     = e.law->history_variable();
-        committed_rate[h]        = e.deformation(v0);
-        work[h]                  = e.law->stored_energy();
-        const double f           = e.law->force() - e.reference_stiffness * d;
-        for (unsigned int i = 0; i < 2; ++i)
-          if (e.equations[i] >= 0)
-            r[e.equations[i]] -= e.signs[i] * f;
+        NonlinearElement  &e = (*elements)[h];
+        const unsigned int s = dof_start[h], k = e.n_dofs();
+        e.reset();
+        if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
+          throw NumericalError("initial state: " + e.label + ": " + e.failure());
+        e.commit();
+        committed_force[h]   = e.force();
+        committed_history[h] = e.history_variable();
+        committed_rate[h]    = e.deformation(v0);
+        work[h]              = e.stored_energy();
+        e.force_correction(correction.segment(s, k));
       }
+    subtract_element_forces(r);
 
     // Equations that carry mass: any nonzero in their row of M.
     const unsigned int n = system.n_equations();
@@ -197,22 +234,31 @@ namespace poundfe
     balance.initial = balance.strain + balance.kinetic;
   }
 
+  void
+  NewmarkIntegrator::gather(const Vector &global, Vector &local) const
+  {
+    for (unsigned int q = 0; q < local_equation.size(); ++q)
+      local[q] = local_equation[q] >= 0 ? global[local_equation[q]] : 0.0;
+  }
+
   bool
   NewmarkIntegrator::evaluate_elements(const Vector &u_trial, const Vector &v_trial,
                                        const Level &L)
   {
+    gather(u_trial, local_u);
+    gather(v_trial, local_v);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
-        UniaxialElement &e = (*elements)[h];
-        const double     d = e.deformation(u_trial);
-        if (!e.law->set_trial(d, e.deformation(v_trial)))
+        NonlinearElement  &e = (*elements)[h];
+        const unsigned int s = dof_start[h], k = e.n_dofs(), r = e.rank();
+        if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
           {
-            failure = e.label + ": " + e.law->failure();
+            failure = e.label + ": " + e.failure();
             return false;
           }
-        correction[h] = e.law->force() - e.reference_stiffness * d;
-        tangent_change[h] =
-          e.law->tangent() - e.reference_stiffness + L.c_damp_u * e.law->damping_tangent();
+        e.force_correction(correction.segment(s, k));
+        e.tangent_change(L.c_damp_u,
+                         Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h], r, r));
       }
     return true;
   }
@@ -220,13 +266,24 @@ namespace poundfe
   void
   NewmarkIntegrator::subtract_element_forces(Vector &r) const
   {
-    for (unsigned int h = 0; h < n_elements; ++h)
-      {
-        const UniaxialElement &e = (*elements)[h];
-        for (unsigned int i = 0; i < 2; ++i)
-          if (e.equations[i] >= 0)
-            r[e.equations[i]] -= e.signs[i] * correction[h];
-      }
+    for (unsigned int q = 0; q < local_equation.size(); ++q)
+      if (local_equation[q] >= 0)
+        r[local_equation[q]] -= correction[q];
+  }
+
+  double
+  NewmarkIntegrator::tangent_change_entry(const unsigned int h, const unsigned int i,
+                                          const unsigned int j) const
+  {
+    const Eigen::MatrixXd &B = basis[h];
+    const unsigned int     r = B.cols();
+    const double          *D = tangent_change.data() + d_start[h]; // D(a, b) = D[a + b r]
+    // from the first term, so that a rank-one element adds exactly d b_i b_j
+    double value = D[0] * B(i, 0) * B(j, 0);
+    for (unsigned int b = 0; b < r; ++b)
+      for (unsigned int a = (b == 0 ? 1 : 0); a < r; ++a)
+        value += D[a + b * r] * B(i, a) * B(j, b);
+    return value;
   }
 
   bool
@@ -314,11 +371,11 @@ namespace poundfe
             double *values = L.effective.valuePtr();
             for (unsigned int h = 0; h < n_elements; ++h)
               {
-                const auto &s = (*elements)[h].signs;
-                for (unsigned int i = 0; i < 2; ++i)
-                  for (unsigned int j = 0; j < 2; ++j)
-                    if (L.entry_index[h][2 * i + j] >= 0)
-                      values[L.entry_index[h][2 * i + j]] += tangent_change[h] * s[i] * s[j];
+                const unsigned int k = (*elements)[h].n_dofs();
+                for (unsigned int i = 0; i < k; ++i)
+                  for (unsigned int j = 0; j < k; ++j)
+                    if (const int index = L.entry_index[h][i * k + j]; index >= 0)
+                      values[index] += tangent_change_entry(h, i, j);
               }
             L.solver->factorize(L.effective);
             L.solver->solve(residual, increment);
@@ -346,18 +403,14 @@ namespace poundfe
     tangent_out = Eigen::MatrixXd(L.effective);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
-        const UniaxialElement &e = (*elements)[h];
-        for (unsigned int i = 0; i < 2; ++i)
-          if (e.equations[i] >= 0)
-            {
-              for (unsigned int j = 0; j < 2; ++j)
-                if (e.equations[j] >= 0)
-                  tangent_out(e.equations[i], e.equations[j]) +=
-                    tangent_change[h] * e.signs[i] * e.signs[j];
-            }
+        const std::vector<int> &equations = (*elements)[h].equations();
+        for (unsigned int i = 0; i < equations.size(); ++i)
+          for (unsigned int j = 0; j < equations.size(); ++j)
+            if (equations[i] >= 0 && equations[j] >= 0)
+              tangent_out(equations[i], equations[j]) += tangent_change_entry(h, i, j);
       }
     for (unsigned int h = 0; h < n_elements; ++h)
-      (*elements)[h].law->revert();
+      (*elements)[h].revert();
   }
 
   void
@@ -365,10 +418,10 @@ namespace poundfe
   {
     for (const unsigned int h : gap_elements)
       {
-        const UniaxialElement &e = (*elements)[h];
+        const NonlinearElement &e = (*elements)[h];
         impacts.record(h, current_time, current_time + L.dt,
                        {committed_history[h], committed_rate[h], committed_force[h]},
-                       {e.law->history_variable(), e.deformation(v_next), e.law->force()});
+                       {e.history_variable(), e.deformation(v_next), e.force()});
       }
     // Trapezoidal work of the step; exact for the average-acceleration rule.
     work_vector = u_next - u;
@@ -376,14 +429,12 @@ namespace poundfe
     balance.damping += 0.5 * work_vector.dot(system.damping * (v + v_next));
     for (unsigned int h = 0; h < n_elements; ++h)
       {
-        UniaxialElement &e = (*elements)[h];
-        const double     d = e.deformation(u_next);
-        work[h] += 0.5 * (committed_force[h] + e.law->force()) * (d - committed_deformation[h]);
-        e.law->commit();
-        committed_deformation[h] = d;
-        committed_force[h]       = e.law->force();
-        committed_history[h]     = e.law->history_variable();
-        committed_rate[h]        = e.deformation(v_next);
+        NonlinearElement &e = (*elements)[h];
+        work[h] += e.work_increment();
+        e.commit();
+        committed_force[h]   = e.force();
+        committed_history[h] = e.history_variable();
+        committed_rate[h]    = e.deformation(v_next);
       }
     u.swap(u_next);
     v.swap(v_next);
@@ -405,7 +456,7 @@ namespace poundfe
     bool       event     = false;
     if (converged && cuts < parameters.newton.event_refinement)
       for (const unsigned int h : gap_elements)
-        event = event || (*elements)[h].law->is_active() != (*elements)[h].law->was_active();
+        event = event || (*elements)[h].is_active() != (*elements)[h].was_active();
     if (converged && !event)
       {
         accept(L, p);
@@ -413,7 +464,7 @@ namespace poundfe
         return;
       }
     for (unsigned int h = 0; h < n_elements; ++h)
-      (*elements)[h].law->revert();
+      (*elements)[h].revert();
     if (event)
       {
         ++stats.event_refinements;
@@ -456,8 +507,8 @@ namespace poundfe
     double dissipated_hysteretic = 0, dissipated_contact = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
       {
-        const UniaxialElement &e         = (*elements)[h];
-        const double           dissipated = work[h] - e.law->stored_energy();
+        const NonlinearElement &e          = (*elements)[h];
+        const double            dissipated = work[h] - e.stored_energy();
         (e.kind == ElementKind::gap ? dissipated_contact : dissipated_hysteretic) += dissipated;
       }
     balance.hysteretic = dissipated_hysteretic;
@@ -485,12 +536,9 @@ namespace poundfe
   NewmarkIntegrator::strain_energy() const
   {
     double energy = 0.5 * u.dot(system.stiffness * u);
+    // the elements' trial state is the committed state at u
     for (unsigned int h = 0; h < n_elements; ++h)
-      {
-        const UniaxialElement &e = (*elements)[h];
-        const double           d = e.deformation(u);
-        energy += e.law->stored_energy() - 0.5 * e.reference_stiffness * d * d;
-      }
+      energy += (*elements)[h].stored_energy() - (*elements)[h].reference_energy();
     return energy;
   }
 } // namespace poundfe

@@ -134,10 +134,4 @@ namespace poundfe
     committed = State();
     revert();
   }
-
-  std::unique_ptr<UniaxialLaw>
-  BoucWen::clone() const
-  {
-    return std::make_unique<BoucWen>(*this);
-  }
 } // namespace poundfe

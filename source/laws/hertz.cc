@@ -5,10 +5,8 @@
 namespace poundfe
 {
   ContactLaw::Response
-  Hertz::respond(const double delta, const double rate, const double approach_velocity) const
+  Hertz::respond(const double delta, double /*rate*/, double /*approach_velocity*/) const
   {
-    (void)approach_velocity;
-    (void)rate;
     const double root = std::sqrt(delta);
     return {p.stiffness * delta * root, 1.5 * p.stiffness * root, 0.0};
   }

@@ -7,8 +7,6 @@ namespace poundfe
   ContactLaw::Response
   HertzDamp::respond(const double delta, const double rate, const double approach_velocity) const
   {
-    (void)approach_velocity;
-    (void)rate;
     const double root = std::sqrt(delta), factor = 1 + p.damping * rate / approach_velocity;
     return {p.stiffness * delta * root * factor, 1.5 * p.stiffness * root * factor,
             p.stiffness * delta * root * p.damping / approach_velocity};

@@ -5,10 +5,8 @@
 namespace poundfe
 {
   ContactLaw::Response
-  Jankowski::respond(const double delta, const double rate, const double approach_velocity) const
+  Jankowski::respond(const double delta, const double rate, double /*approach_velocity*/) const
   {
-    (void)approach_velocity;
-    (void)rate;
     const double root = std::sqrt(delta), elastic = p.stiffness * delta * root;
     if (!(rate > 0))
       return {elastic, 1.5 * p.stiffness * root, 0.0};

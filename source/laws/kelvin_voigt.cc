@@ -5,10 +5,8 @@
 namespace poundfe
 {
   ContactLaw::Response
-  KelvinVoigt::respond(const double delta, const double rate, const double approach_velocity) const
+  KelvinVoigt::respond(const double delta, const double rate, double /*approach_velocity*/) const
   {
-    (void)approach_velocity;
-    (void)rate;
     const double c = 2 * p.damping * std::sqrt(p.stiffness * p.effective_mass);
     return {p.stiffness * delta + c * rate, p.stiffness, c};
   }

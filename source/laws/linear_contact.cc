@@ -5,10 +5,8 @@
 namespace poundfe
 {
   ContactLaw::Response
-  LinearContact::respond(const double delta, const double rate, const double approach_velocity) const
+  LinearContact::respond(const double delta, double /*rate*/, double /*approach_velocity*/) const
   {
-    (void)approach_velocity;
-    (void)rate;
     return {p.stiffness * delta, p.stiffness, 0.0};
   }
 

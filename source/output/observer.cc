@@ -18,7 +18,7 @@ namespace poundfe
   }
 
   ResponseView::ResponseView(const Model &model_, const LinearSystem &system_,
-                             const UniaxialElements &elements_,
+                             const NonlinearElements &elements_,
                              const NewmarkIntegrator &integrator_)
     : model(model_)
     , system(system_)

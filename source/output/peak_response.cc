@@ -5,7 +5,7 @@
 
 namespace poundfe
 {
-  PeakResponse::PeakResponse(const Model &model, const UniaxialElements &elements_)
+  PeakResponse::PeakResponse(const Model &model, const NonlinearElements &elements_)
     : elements(elements_)
     , floor_response(model)
   {
@@ -32,7 +32,7 @@ namespace poundfe
                             state.ground_acceleration());
     for (unsigned int h = 0; h < elements.size(); ++h)
       {
-        const UniaxialElement &e = elements[h];
+        const NonlinearElement &e = elements[h];
         const double           d = e.deformation(state.displacement());
         if (std::abs(d) > peak_d[h])
           {

@@ -146,7 +146,7 @@ namespace poundfe
               const int line)
     {
       const FloorResponse    &floors   = peaks.floors();
-      const UniaxialElements &elements = state.elements;
+      const NonlinearElements &elements = state.elements;
       const unsigned int      n_hyst   = peaks.n_hysteretic();
       auto copy = [](const std::vector<double> &from) {
         return [&from](const ResponseView &, std::vector<double> &to) { to = from; };
@@ -219,7 +219,7 @@ namespace poundfe
                         to.resize(3 * n_hyst);
                         for (unsigned int h = 0; h < n_hyst; ++h)
                           {
-                            const UniaxialElement &e = s.elements[h];
+                            const NonlinearElement &e = s.elements[h];
                             to[3 * h]     = e.force();
                             to[3 * h + 1] = e.deformation(s.displacement());
                             to[3 * h + 2] = e.history_variable();

@@ -17,7 +17,7 @@ namespace poundfe
     }
   } // namespace
 
-  StoreyForces::StoreyForces(const Model &model_, const UniaxialElements &elements)
+  StoreyForces::StoreyForces(const Model &model_, const NonlinearElements &elements)
     : model(model_)
     , nonlinear(elements)
   {

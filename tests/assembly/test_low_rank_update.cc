@@ -26,8 +26,8 @@ BOOST_AUTO_TEST_CASE(woodbury_solve_matches_dense_solve)
   std::vector<SparseColumn>          columns(12);
   for (unsigned int h = 0; h < columns.size(); ++h)
     {
-      columns[h].rows   = {{row(random), h % 4 == 0 ? -1 : row(random)}};
-      columns[h].values = {{1.0, -1.0}};
+      columns[h].rows   = {row(random), h % 4 == 0 ? -1 : row(random)};
+      columns[h].values = {1.0, -1.0};
       if (columns[h].rows[0] == columns[h].rows[1])
         columns[h].rows[1] = -1;
     }

@@ -53,7 +53,7 @@ namespace
       const unsigned int refinement = 4)
   {
     const Analysis    analysis = prepare_analysis(input);
-    UniaxialElements  elements = make_nonlinear_elements(analysis.model);
+    NonlinearElements elements = make_nonlinear_elements(analysis.model);
     NewmarkParameters parameters;
     parameters.time_step               = dt;
     parameters.newton.event_refinement = refinement;
@@ -166,7 +166,7 @@ BOOST_AUTO_TEST_CASE(event_times_converge_as_the_step_is_halved)
       const Analysis   analysis   = prepare_analysis(input);
       const Excitation excitation(analysis.system, GroundMotion(),
                                   make_nodal_forces(input, analysis.model));
-      UniaxialElements  elements = make_nonlinear_elements(analysis.model);
+      NonlinearElements elements = make_nonlinear_elements(analysis.model);
       NewmarkParameters parameters;
       parameters.time_step = dt;
       NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", parameters, &elements);

@@ -49,7 +49,7 @@ namespace poundfe
 
     /// The view observers read; valid for the life of this object.
     const ResponseView &state() const { return view; }
-    const UniaxialElements &nonlinear_elements() const { return elements; }
+    const NonlinearElements &nonlinear_elements() const { return elements; }
     std::string tangent_update() const { return integrator.tangent_update(); }
     std::string linear_solver_name() const { return integrator.linear_solver_name(); }
 
@@ -57,7 +57,7 @@ namespace poundfe
     unsigned long n_steps(const Excitation &excitation) const;
 
     const Analysis   &analysis;
-    UniaxialElements  elements; // before the integrator, which points to them
+    NonlinearElements elements; // before the integrator, which points to them
     NewmarkIntegrator integrator;
     ResponseView      view;
   };

@@ -1,11 +1,14 @@
 // Solves (A + B D B^T) x = r with A factorised once and B = [b_1 ... b_m]
-// fixed (each b_h has at most two nonzeros), D = diag(d_h) changing every
-// call, by the Woodbury identity (Hager, SIAM Review 31 (1989) 221):
+// fixed (sparse columns), D = diag(D_1, ..., D_p) block diagonal (each D_e
+// dense r_e x r_e, any sign or symmetry, over r_e consecutive columns of B)
+// changing every call, by the Woodbury identity (Hager, SIAM Review 31
+// (1989) 221):
 //   y = A^{-1} r,  (I + D_a G_aa) z = D_a B_a^T y,  x = y - W_a z,
-// with W = A^{-1} B and G = B^T W computed once, and a = {h : d_h != 0}
-// the active terms. The form with I + D G (rather than D^{-1} + G) stays
-// valid when some d_h vanish or change sign. Per call: one solve with A and
-// a dense LU of size |a|; nothing is allocated.
+// with W = A^{-1} B and G = B^T W computed once, and a the columns of the
+// active blocks (those with any nonzero entry). The form with I + D G
+// (rather than D^{-1} + G) stays valid when some D_e are singular, vanish
+// or change sign. Per call: one solve with A and a dense LU of size
+// sum_a r_e; nothing is allocated.
 #ifndef poundfe_assembly_low_rank_update_h
 #define poundfe_assembly_low_rank_update_h
 
@@ -13,39 +16,53 @@
 
 #include <Eigen/Core>
 
-#include <array>
 #include <vector>
 
 namespace poundfe
 {
-  /// A column b of B: rows < 0 are ignored.
+  /// A column b of B: entries with rows < 0 are ignored.
   struct SparseColumn
   {
-    std::array<int, 2>    rows{{-1, -1}};
-    std::array<double, 2> values{{0.0, 0.0}};
+    std::vector<int>    rows;
+    std::vector<double> values;
   };
 
   class LowRankUpdateSolver
   {
   public:
     /// `factorised` must hold the factorisation of A for as long as this
-    /// object is used.
+    /// object is used. `block_sizes` (r_e, summing to the number of
+    /// columns) groups consecutive columns into the blocks of D; empty:
+    /// every block has one column (D diagonal).
     void initialize(LinearSolver &factorised, const std::vector<SparseColumn> &columns,
-                    unsigned int n_rows);
+                    unsigned int n_rows, const std::vector<unsigned int> &block_sizes = {});
 
-    /// x = (A + B diag(d) B^T)^{-1} r. Throws NumericalError if the
-    /// capacitance matrix is singular.
+    /// x = (A + B D B^T)^{-1} r; `d` holds the blocks D_e one after
+    /// another, each column-major. Throws NumericalError if the capacitance
+    /// matrix is singular.
     void solve(const Vector &r, const std::vector<double> &d, Vector &x);
 
-    unsigned int n_columns() const { return columns.size(); }
-    /// Active terms in the last solve.
+    unsigned int n_columns() const { return column_block.size(); }
+    /// Columns of the active blocks in the last solve.
     unsigned int n_active() const { return active.size(); }
 
   private:
-    LinearSolver             *base = nullptr;
-    std::vector<SparseColumn> columns;
+    /// b^T v of column c.
+    double column_dot(unsigned int c, const Eigen::Ref<const Vector> &v) const;
+    /// Gaussian elimination with partial pivoting of the leading k x k
+    /// block of S, applied to rhs_small, which becomes z.
+    void   solve_capacitance(unsigned int k);
+
+    LinearSolver *base = nullptr;
+    // B in compressed columns: column c's entries are [column_start[c], column_start[c + 1]).
+    std::vector<unsigned int> column_start;
+    std::vector<int>          entry_row;
+    std::vector<double>       entry_value;
+    // Block e has columns [block_start[e], block_start[e + 1]) and its D_e
+    // at d[d_offset[e]]; column c is in block column_block[c].
+    std::vector<unsigned int> block_start, d_offset, column_block;
     Eigen::MatrixXd           W, G, S;
-    Vector                    y, rhs_small;
+    Vector                    y, bty, rhs_small;
     std::vector<unsigned int> active;
   };
 } // namespace poundfe

@@ -3,12 +3,12 @@
 #ifndef poundfe_assembly_nonlinear_elements_h
 #define poundfe_assembly_nonlinear_elements_h
 
-#include <poundfe/elements/uniaxial_element.h>
+#include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/model/model.h>
 
 namespace poundfe
 {
-  UniaxialElements make_nonlinear_elements(const Model &model);
+  NonlinearElements make_nonlinear_elements(const Model &model);
 } // namespace poundfe
 
 #endif

@@ -2,65 +2,66 @@
 //   d = s0 u[e0] + s1 u[e1]        (an equation < 0 is the ground),
 // with a history-dependent law F(d, d_dot). Its contribution to the
 // equations is b F with b = (s0 at e0, s1 at e1), and its tangent is the
-// rank-one term b (dF/dd + gamma/(beta dt) dF/dd_dot) b^T. The part
-// k_ref b b^T (the law's initial stiffness, for hinges and storeys) is
-// assembled into the linear K once; only F - k_ref d and the tangent change
-// k_t - k_ref are evaluated per iteration.
+// rank-one term b (dF/dd + c dF/dd_dot) b^T, c = gamma/(beta dt): in the
+// terms of elements/nonlinear_element.h, B_e = b and D_e the scalar
+// k_t - k_ref + c c_t. The part k_ref b b^T (the law's initial stiffness,
+// for hinges and storeys) is assembled into the linear K once; only
+// F - k_ref d and the tangent change are evaluated per iteration.
 #ifndef poundfe_elements_uniaxial_element_h
 #define poundfe_elements_uniaxial_element_h
 
+#include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/laws/uniaxial_law.h>
-
-#include <Eigen/Core>
 
 #include <array>
 #include <memory>
 #include <string>
-#include <vector>
 
 namespace poundfe
 {
-  enum class ElementKind
+  class UniaxialElement : public NonlinearElement
   {
-    hinge,  // moment-rotation at a member end
-    storey, // force-drift of a shear-building storey
-    gap     // contact
-  };
+  public:
+    /// `reference_stiffness`: k_ref, the part of the law's stiffness that is
+    /// in the linear K.
+    UniaxialElement(ElementKind kind, unsigned int building, std::string label,
+                    const std::array<int, 2> &equations, std::unique_ptr<UniaxialLaw> law,
+                    double reference_stiffness = 0,
+                    const std::array<double, 2> &signs = {{1.0, -1.0}});
 
-  struct UniaxialElement
-  {
-    ElementKind                  kind     = ElementKind::hinge;
-    unsigned int                 building = 0;
-    std::string                  label;
-    std::array<int, 2>           equations{{-1, -1}};
-    std::array<double, 2>        signs{{1.0, -1.0}};
-    double                       reference_stiffness = 0; // in the linear K
+    unsigned int    rank() const override { return 1; }
+    Eigen::MatrixXd tangent_basis() const override;
+    bool            has_symmetric_tangent() const override { return true; }
+
+    bool   set_trial(const LocalVector &u, const LocalVector &v) override;
+    void   force_correction(LocalVectorOut f) const override;
+    void   tangent_change(double damping_factor, LocalMatrixOut d) const override;
+    double work_increment() const override;
+    double reference_energy() const override;
+    void   commit() override;
+    void   revert() override;
+    void   reset() override;
+    std::string failure() const override { return law->failure(); }
+    bool   is_active() const override { return law->is_active(); }
+    bool   was_active() const override { return law->was_active(); }
+
+    double force() const override { return law->force(); }
+    double deformation(const Eigen::VectorXd &u) const override;
+    double history_variable() const override { return law->history_variable(); }
+    double stored_energy() const override { return law->stored_energy(); }
+    double yield_deformation() const override { return law->yield_deformation(); }
+    double initial_stiffness() const override { return law->initial_stiffness(); }
+
+  private:
+    /// b^T x of a local vector (ground DOFs skipped, as in deformation()).
+    double local_deformation(const LocalVector &x) const;
+
+    std::array<double, 2>        signs;
+    double                       reference_stiffness;
     std::unique_ptr<UniaxialLaw> law;
-
-    template <typename VectorType>
-    double
-    deformation(const VectorType &u) const
-    {
-      double d = 0;
-      for (unsigned int i = 0; i < 2; ++i)
-        if (equations[i] >= 0)
-          d += signs[i] * u[equations[i]];
-      return d;
-    }
-
-    // What observers and outputs read (the law's trial state, which is the
-    // committed state between steps).
-    double force() const { return law->force(); }
-    double history_variable() const { return law->history_variable(); }
-    double stored_energy() const { return law->stored_energy(); }
-    double yield_deformation() const { return law->yield_deformation(); }
-    double initial_stiffness() const { return law->initial_stiffness(); }
-
-    /// A copy with its own law in the same state.
-    UniaxialElement clone() const;
+    // For the work of a step: the committed deformation and force, the trial deformation.
+    double committed_deformation = 0, committed_force = 0, trial_deformation = 0;
   };
-
-  using UniaxialElements = std::vector<UniaxialElement>;
 } // namespace poundfe
 
 #endif

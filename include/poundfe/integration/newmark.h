@@ -1,11 +1,14 @@
 // Newmark time stepping of M u'' + C u' + K u + f(u, u') = p(t) (Newmark 1959)
-// with Newton-Raphson on the nonlinear elements f = sum_h b_h (F_h - k_h d_h).
+// with Newton-Raphson on the nonlinear elements f = sum_e (f_e - K_ref,e u_e)
+// (elements/nonlinear_element.h).
 //   a_{n+1} = (u_{n+1} - u_n)/(beta dt^2) - v_n/(beta dt) - (1/(2 beta) - 1) a_n
 //   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1})
 //   K_eff = K + gamma/(beta dt) C + 1/(beta dt^2) M  (factorised once)
-//   tangent = K_eff + sum_h b_h (k_t,h - k_h + gamma/(beta dt) c_t,h) b_h^T
+//   tangent = K_eff + sum_e B_e D_e B_e^T,
+//   B_e D_e B_e^T = K_t,e - K_ref,e + gamma/(beta dt) C_t,e  (rank r_e, D_e dense)
 // The tangent is solved by the Woodbury identity on the one factorisation
-// of K_eff (or, for many elements, by refactorising). A step that does not
+// of K_eff (assembly/low_rank_update.h, total rank sum_e r_e) or by adding
+// the B_e D_e B_e^T into K_eff and refactorising. A step that does not
 // converge is halved and retried down to dt / 2^max_cuts. Without nonlinear
 // elements a step is one solve. Average acceleration (gamma = 1/2,
 // beta = 1/4) conserves the energy of undamped free vibration exactly, and
@@ -19,7 +22,7 @@
 #define poundfe_integration_newmark_h
 
 #include <poundfe/assembly/linear_system.h>
-#include <poundfe/elements/uniaxial_element.h>
+#include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/integration/impact_log.h>
 
 #include <functional>
@@ -84,9 +87,11 @@ namespace poundfe
   {
   public:
     /// `elements` may be null (a linear model); they are updated in place.
+    /// Refactorising a nonsymmetric element tangent needs an LU backend
+    /// (not eigen-ldlt): InputError otherwise.
     NewmarkIntegrator(const LinearSystem &system, const std::string &linear_solver,
                       const NewmarkParameters &parameters,
-                      UniaxialElements        *elements = nullptr);
+                      NonlinearElements       *elements = nullptr);
     ~NewmarkIntegrator();
 
     /// Start at time 0 from (u0, v0) under load p0.
@@ -118,7 +123,6 @@ namespace poundfe
     double max_energy_error() const { return max_balance_error; }
 
     const IterationStatistics &statistics() const { return stats; }
-    bool                       has_nonlinear_elements() const { return n_elements > 0; }
     /// Work done on element h so far (trapezoidal), J.
     double element_work(unsigned int h) const { return work[h]; }
     /// The residual R(u_trial) of the next step under p(t_{n+1}) = load, and
@@ -142,23 +146,35 @@ namespace poundfe
     void   advance_from(unsigned int cuts, double t0, const LoadFunction &load);
     bool   evaluate_elements(const Vector &u_trial, const Vector &v_trial, const Level &L);
     void   update_energy_error();
-    /// r -= sum_h b_h (F_h - k_h d_h) at the last evaluated trial state.
+    /// The elements' local vectors (0 on ground DOFs) of a global vector.
+    void   gather(const Vector &global, Vector &local) const;
+    /// r -= sum_e (f_e - K_ref,e u_e) at the last evaluated trial state.
     void   subtract_element_forces(Vector &r) const;
+    /// Entry (i, j) of element h's B_e D_e B_e^T at the last evaluation.
+    double tangent_change_entry(unsigned int h, unsigned int i, unsigned int j) const;
 
     const LinearSystem &system;
     std::string         solver_name;
     NewmarkParameters   parameters;
-    UniaxialElements   *elements   = nullptr;
+    NonlinearElements  *elements   = nullptr;
     unsigned int        n_elements = 0;
     bool                use_woodbury = true;
+    // Element h's local DOFs are [dof_start[h], dof_start[h + 1]) of the
+    // local vectors, its D_e is at tangent_change[d_start[h]] (column-major),
+    // its B_e is basis[h]; local DOF q has the equation local_equation[q].
+    std::vector<unsigned int>    dof_start, d_start;
+    std::vector<int>             local_equation;
+    std::vector<Eigen::MatrixXd> basis;
     std::vector<std::unique_ptr<Level>> levels;
 
     Vector u, v, a, load_now;
     Vector u_next, v_next, a_next, rhs, residual, increment, work_vector, load_next;
-    // Per element: trial correction F - k_ref d, tangent change, committed
-    // deformation and force, accumulated work.
-    std::vector<double> correction, tangent_change, committed_deformation, committed_force,
-      committed_history, committed_rate, work;
+    // Local vectors of every element: displacement, velocity, force correction.
+    Vector local_u, local_v, correction;
+    std::vector<double> tangent_change;
+    // Per element: accumulated work; for the impact log, the committed
+    // force, history variable and rate.
+    std::vector<double> work, committed_force, committed_history, committed_rate;
     std::vector<unsigned int> gap_elements;
     ImpactLog                 impacts;
     std::string failure;

@@ -12,7 +12,7 @@
 // from an arbitrary guess), safeguarded by backtracking. The tangent dF/du
 // is the exact derivative of that discrete map (implicit function theorem),
 // so the global Newton iteration converges quadratically.
-// Sources: physics.md §2; Y.K. Wen, J. Eng. Mech. Div. ASCE 102 (1976) 249;
+// Sources: doc/theory.md §2; Y.K. Wen, J. Eng. Mech. Div. ASCE 102 (1976) 249;
 // T.T. Baber & M.N. Noori, J. Eng. Mech. 111 (1985) 1010.
 #ifndef poundfe_laws_bouc_wen_h
 #define poundfe_laws_bouc_wen_h
@@ -54,7 +54,6 @@ namespace poundfe
     void   revert() override;
     void   reset() override;
     std::string failure() const override { return failure_message; }
-    std::unique_ptr<UniaxialLaw> clone() const override;
 
     /// Normalised dissipated energy eps of the trial state.
     double normalised_energy() const { return trial.epsilon; }

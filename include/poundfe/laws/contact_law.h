@@ -6,7 +6,7 @@
 // Each law lives in its own file and implements respond(delta, delta_dot):
 // force, dF/d delta and dF/d delta_dot of the unclipped law for delta > 0.
 // The damping parameter is given, or derived from a coefficient of
-// restitution e by the law's literature formula (physics.md §4) or by an
+// restitution e by the law's literature formula (doc/theory.md §4) or by an
 // exact calibration: the value for which a single impact of the effective
 // mass on a rigid wall, simulated with this very law, returns e.
 #ifndef poundfe_laws_contact_law_h
@@ -48,8 +48,6 @@ namespace poundfe
     void   revert() override { trial = committed; }
     void   reset() override;
 
-    double penetration() const { return trial.penetration; }
-    double rate() const { return trial.rate; }
     const ContactLawParameters &parameters() const { return p; }
 
     struct Response
@@ -83,7 +81,7 @@ namespace poundfe
   /// Whether the law has a damping parameter (linear and Hertz have none).
   bool contact_law_is_damped(const std::string &law);
 
-  /// The literature formula for the damping parameter from e (physics.md
+  /// The literature formula for the damping parameter from e (doc/theory.md
   /// §4): Kelvin-Voigt xi = -ln e / sqrt(pi^2 + ln^2 e) (Anagnostopoulos);
   /// modified Kelvin-Voigt xi = (1 - e^2) / (e (e (pi - 2) + 2)) (Mahmoud &
   /// Jankowski 2011); Hertz-damp xi_bar = 3 (1 - e^2) / 4 (Muthukumar &

@@ -2,7 +2,7 @@
 // Elastic impact of m on a rigid wall at v0: delta_max = (5 m v0^2/(4 k_h))^(2/5),
 // F_max = k_h delta_max^(3/2), contact time 2.9432 delta_max / v0.
 // Source: Goldsmith, Impact (1960); Davis, J. Struct. Eng. 118 (1992);
-// physics.md §4.
+// doc/theory.md §4.
 #ifndef poundfe_laws_hertz_h
 #define poundfe_laws_hertz_h
 
@@ -16,7 +16,6 @@ namespace poundfe
     using ContactLaw::ContactLaw;
     Response respond(double penetration, double rate, double approach_velocity) const override;
     double   elastic_energy(double penetration) const override;
-    std::unique_ptr<UniaxialLaw> clone() const override { return std::make_unique<Hertz>(*this); }
   };
 } // namespace poundfe
 

@@ -4,7 +4,7 @@
 //   c(delta) = 2 xi sqrt(beta sqrt(delta) m_e);
 // xi from e: 9 sqrt(5) (1 - e^2) / (2 e (e (9 pi - 16) + 16)).
 // Source: R. Jankowski, Earthquake Eng. Struct. Dyn. 34 (2005) 595;
-// physics.md §4 and §8 (the thesis's spillway).
+// doc/theory.md §4 and §8 (the thesis's spillway).
 #ifndef poundfe_laws_jankowski_h
 #define poundfe_laws_jankowski_h
 
@@ -18,7 +18,6 @@ namespace poundfe
     using ContactLaw::ContactLaw;
     Response respond(double penetration, double rate, double approach_velocity) const override;
     double   elastic_energy(double penetration) const override;
-    std::unique_ptr<UniaxialLaw> clone() const override { return std::make_unique<Jankowski>(*this); }
   };
 } // namespace poundfe
 

@@ -2,7 +2,7 @@
 // c = 2 xi sqrt(k m_e), clipped at zero during restitution.
 // xi from e: -ln e / sqrt(pi^2 + ln^2 e).
 // Source: Anagnostopoulos, Earthquake Eng. Struct. Dyn. 16 (1988) 443;
-// physics.md §4.
+// doc/theory.md §4.
 #ifndef poundfe_laws_kelvin_voigt_h
 #define poundfe_laws_kelvin_voigt_h
 
@@ -16,7 +16,6 @@ namespace poundfe
     using ContactLaw::ContactLaw;
     Response respond(double penetration, double rate, double approach_velocity) const override;
     double   elastic_energy(double penetration) const override;
-    std::unique_ptr<UniaxialLaw> clone() const override { return std::make_unique<KelvinVoigt>(*this); }
   };
 } // namespace poundfe
 

@@ -1,6 +1,6 @@
 // Linear (elastic spring) contact: F = k delta for delta > 0.
 // Source: Maison & Kasai, Earthquake Eng. Struct. Dyn. 19 (1990) 1035;
-// physics.md §4.
+// doc/theory.md §4.
 #ifndef poundfe_laws_linear_contact_h
 #define poundfe_laws_linear_contact_h
 
@@ -14,7 +14,6 @@ namespace poundfe
     using ContactLaw::ContactLaw;
     Response respond(double penetration, double rate, double approach_velocity) const override;
     double   elastic_energy(double penetration) const override;
-    std::unique_ptr<UniaxialLaw> clone() const override { return std::make_unique<LinearContact>(*this); }
   };
 } // namespace poundfe
 

@@ -3,7 +3,7 @@
 // c = 2 xi sqrt(k m_e); no tensile force can arise.
 // xi from e: (1 - e^2) / (e (e (pi - 2) + 2)).
 // Source: Mahmoud & Jankowski, Advances in Structural Engineering 14 (2011);
-// physics.md §4.
+// doc/theory.md §4.
 #ifndef poundfe_laws_modified_kelvin_voigt_h
 #define poundfe_laws_modified_kelvin_voigt_h
 
@@ -17,7 +17,6 @@ namespace poundfe
     using ContactLaw::ContactLaw;
     Response respond(double penetration, double rate, double approach_velocity) const override;
     double   elastic_energy(double penetration) const override;
-    std::unique_ptr<UniaxialLaw> clone() const override { return std::make_unique<ModifiedKelvinVoigt>(*this); }
   };
 } // namespace poundfe
 

@@ -10,7 +10,6 @@
 #ifndef poundfe_laws_uniaxial_law_h
 #define poundfe_laws_uniaxial_law_h
 
-#include <memory>
 #include <string>
 
 namespace poundfe
@@ -51,7 +50,6 @@ namespace poundfe
     virtual void reset() = 0;
 
     virtual std::string failure() const { return {}; }
-    virtual std::unique_ptr<UniaxialLaw> clone() const = 0;
   };
 } // namespace poundfe
 

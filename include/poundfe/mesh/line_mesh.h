@@ -4,7 +4,7 @@
 #ifndef poundfe_mesh_line_mesh_h
 #define poundfe_mesh_line_mesh_h
 
-#include <poundfe/model/model.h>
+#include <poundfe/base/point.h>
 
 #include <array>
 #include <string>

@@ -4,6 +4,7 @@
 #ifndef poundfe_model_model_h
 #define poundfe_model_model_h
 
+#include <poundfe/base/point.h>
 #include <poundfe/laws/bouc_wen.h>
 #include <poundfe/laws/contact_law.h>
 
@@ -21,12 +22,6 @@ namespace poundfe
     ux = 0,
     uy = 1,
     rz = 2
-  };
-
-  struct Point2
-  {
-    double x = 0;
-    double y = 0;
   };
 
   /// Elastic section of a frame member; mass per unit length may be zero.
@@ -96,7 +91,6 @@ namespace poundfe
     BoucWenParameters law;
   };
 
-  /// Translational mass lumped at a node (acts on ux and uy).
   /// A gap element: contact between a node of one building and a node of
   /// its right-hand neighbour (closure = ux_left - ux_right), or between a
   /// node and a rigid barrier (closure = +ux for a barrier on the right,
@@ -111,6 +105,7 @@ namespace poundfe
     std::string                 label;
   };
 
+  /// Translational mass lumped at a node (acts on ux and uy).
   struct NodalMass
   {
     unsigned int node = 0;

@@ -46,7 +46,7 @@ namespace poundfe
   {
   public:
     ResponseView(const Model &model, const LinearSystem &system,
-                 const UniaxialElements &elements, const NewmarkIntegrator &integrator);
+                 const NonlinearElements &elements, const NewmarkIntegrator &integrator);
 
     /// Called by the time loop once per step, before the observers.
     void set_step(unsigned long step, double ground_acceleration);
@@ -60,7 +60,7 @@ namespace poundfe
 
     const Model            &model;
     const LinearSystem     &system;
-    const UniaxialElements &elements;
+    const NonlinearElements &elements;
 
     EnergyBalance              energy() const { return integrator.energy(); }
     double                     max_energy_error() const { return integrator.max_energy_error(); }

@@ -17,7 +17,7 @@ namespace poundfe
   class PeakResponse : public StepObserver
   {
   public:
-    PeakResponse(const Model &model, const UniaxialElements &elements);
+    PeakResponse(const Model &model, const NonlinearElements &elements);
 
     /// Forgets the peaks of an earlier run, then observes the initial state.
     void initialize(const ResponseView &state) override;
@@ -39,7 +39,7 @@ namespace poundfe
     double min_clearance() const { return smallest_clearance; }
 
   private:
-    const UniaxialElements &elements;
+    const NonlinearElements &elements;
     FloorResponse           floor_response;
     unsigned int            n_hysteretic_elements = 0;
     std::vector<double>     peak_d, peak_d_at, peak_f, peak_plastic;

@@ -22,7 +22,7 @@
 
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/elements/frame_element.h>
-#include <poundfe/elements/uniaxial_element.h>
+#include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/model/model.h>
 
 #include <string>
@@ -33,7 +33,7 @@ namespace poundfe
   class StoreyForces
   {
   public:
-    StoreyForces(const Model &model, const UniaxialElements &elements);
+    StoreyForces(const Model &model, const NonlinearElements &elements);
 
     /// Storey shears of every building, in FloorResponse order (building by
     /// building, storeys bottom up), N.
@@ -62,7 +62,7 @@ namespace poundfe
     Vector6 end_displacements(const std::array<int, 6> &equations, const Vector &u) const;
 
     const Model               &model;
-    const UniaxialElements    &nonlinear;
+    const NonlinearElements    &nonlinear;
     std::vector<unsigned int> first;
     std::vector<Storey>       storeys;
   };

@@ -1,0 +1,182 @@
+// A nonlinear element on k DOFs u_e (its equations; -1 is the ground, where
+// u = 0) with an internal force f_e(u_e, u_e') and the consistent tangents
+// K_t = df_e/du_e, C_t = df_e/du_e', neither necessarily symmetric.
+// A part K_ref,e of its stiffness may be assembled once into the linear K
+// (the initial stiffness of hinges and storeys); the element then gives the
+// integrator only
+//   the force correction  f_e - K_ref,e u_e                  (k entries), and
+//   the tangent change    K_t - K_ref,e + c C_t = B_e D_e B_e^T,
+// c = gamma/(beta dt), with B_e a constant k x r_e matrix (r_e the element's
+// rank: 1 for a uniaxial element, 2 for one coupling two directions) and
+// D_e a dense r_e x r_e matrix of any sign or symmetry. The integrator
+// solves with sum_e B_e D_e B_e^T either by the Woodbury identity on the one
+// factorisation of K_eff (B fixed, so A^-1 B is computed once) or by adding
+// it into K_eff and refactorising; see integration/newmark.h.
+// State follows OpenSees's UniaxialMaterial (setTrialStrain / commitState /
+// revertToLastCommit / revertToStart): set_trial -> force and tangent ->
+// commit() or revert(); a rejected iteration or cut step costs a revert(),
+// which restores the committed state exactly.
+#ifndef poundfe_elements_nonlinear_element_h
+#define poundfe_elements_nonlinear_element_h
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace poundfe
+{
+  enum class ElementKind
+  {
+    hinge,  // moment-rotation at a member end
+    storey, // force-drift of a shear-building storey
+    gap     // contact
+  };
+
+  class NonlinearElement
+  {
+  public:
+    /// Local vectors are views of contiguous storage (no copies).
+    using LocalVector    = Eigen::Ref<const Eigen::VectorXd>;
+    using LocalVectorOut = Eigen::Ref<Eigen::VectorXd>;
+    using LocalMatrixOut = Eigen::Ref<Eigen::MatrixXd>;
+
+    NonlinearElement(const ElementKind kind, const unsigned int building, std::string label,
+                     std::vector<int> equations)
+      : kind(kind)
+      , building(building)
+      , label(std::move(label))
+      , dof_equations(std::move(equations))
+    {}
+    virtual ~NonlinearElement() = default;
+
+    ElementKind  kind     = ElementKind::hinge;
+    unsigned int building = 0;
+    std::string  label;
+
+    /// The equation of each local DOF; -1: the ground.
+    const std::vector<int> &equations() const { return dof_equations; }
+    unsigned int n_dofs() const { return dof_equations.size(); }
+
+    /// r_e, the number of columns of B_e.
+    virtual unsigned int rank() const = 0;
+    /// B_e (n_dofs x rank). Constant: the Woodbury path factorises with it.
+    virtual Eigen::MatrixXd tangent_basis() const = 0;
+    /// Whether B_e D_e B_e^T is always symmetric (Eigen's LDLT can then
+    /// refactorise the tangent; otherwise an LU backend must).
+    virtual bool has_symmetric_tangent() const = 0;
+
+    /// Evaluate the trial state at local displacements and velocities (0 on
+    /// ground DOFs). Returns false when the element's own iteration fails;
+    /// failure() then says why, and the trial state must not be used.
+    virtual bool set_trial(const LocalVector &u, const LocalVector &v) = 0;
+    /// f_e - K_ref,e u_e at the trial state.
+    virtual void force_correction(LocalVectorOut f) const = 0;
+    /// D_e at the trial state for c = damping_factor (r_e x r_e).
+    virtual void tangent_change(double damping_factor, LocalMatrixOut d) const = 0;
+    /// Work done on the element from the committed to the trial state
+    /// (trapezoidal; exact for the average-acceleration rule).
+    virtual double work_increment() const = 0;
+    /// u_e^T K_ref,e u_e / 2 at the trial state: the part of
+    /// stored_energy() that the linear K already counts.
+    virtual double reference_energy() const = 0;
+
+    virtual void commit() = 0;
+    virtual void revert() = 0;
+    /// Back to the virgin state.
+    virtual void reset() = 0;
+    virtual std::string failure() const { return {}; }
+
+    /// Contact: whether the trial / committed state carries force. A change
+    /// between them within a step is an event the integrator locates by
+    /// cutting the step.
+    virtual bool is_active() const { return false; }
+    virtual bool was_active() const { return false; }
+
+    // What observers and outputs read: scalar measures of the trial state,
+    // which is the committed state between steps.
+    virtual double force() const = 0;
+    /// The element's deformation measure at global displacements u.
+    virtual double deformation(const Eigen::VectorXd &u) const = 0;
+    virtual double history_variable() const { return 0; }
+    /// Recoverable energy; the work done minus this is what was dissipated.
+    virtual double stored_energy() const = 0;
+    /// Deformation at which the element yields (for ductility); 0 if none.
+    virtual double yield_deformation() const { return 0; }
+    virtual double initial_stiffness() const { return 0; }
+
+  private:
+    std::vector<int> dof_equations;
+  };
+
+  /// The nonlinear elements of a model, owned, indexed as elements[h].
+  class NonlinearElements
+  {
+    using Storage = std::vector<std::unique_ptr<NonlinearElement>>;
+
+    /// Iterates over the elements rather than the pointers.
+    template <typename BaseIterator, typename Element>
+    class Iterator
+    {
+    public:
+      using iterator_category = std::forward_iterator_tag;
+      using value_type        = Element;
+      using difference_type   = std::ptrdiff_t;
+      using pointer           = Element *;
+      using reference         = Element &;
+
+      explicit Iterator(BaseIterator it)
+        : it(it)
+      {}
+      reference operator*() const { return **it; }
+      pointer   operator->() const { return it->get(); }
+      Iterator &operator++()
+      {
+        ++it;
+        return *this;
+      }
+      bool operator==(const Iterator &other) const { return it == other.it; }
+      bool operator!=(const Iterator &other) const { return it != other.it; }
+
+    private:
+      BaseIterator it;
+    };
+
+  public:
+    using iterator       = Iterator<Storage::iterator, NonlinearElement>;
+    using const_iterator = Iterator<Storage::const_iterator, const NonlinearElement>;
+
+    unsigned int size() const { return elements.size(); }
+    bool         empty() const { return elements.empty(); }
+
+    NonlinearElement       &operator[](const unsigned int h) { return *elements[h]; }
+    const NonlinearElement &operator[](const unsigned int h) const { return *elements[h]; }
+
+    void push_back(std::unique_ptr<NonlinearElement> element)
+    {
+      elements.push_back(std::move(element));
+    }
+    template <typename Element, typename... Arguments>
+    Element &emplace_back(Arguments &&...arguments)
+    {
+      auto element       = std::make_unique<Element>(std::forward<Arguments>(arguments)...);
+      Element &reference = *element;
+      elements.push_back(std::move(element));
+      return reference;
+    }
+
+    iterator       begin() { return iterator(elements.begin()); }
+    iterator       end() { return iterator(elements.end()); }
+    const_iterator begin() const { return const_iterator(elements.begin()); }
+    const_iterator end() const { return const_iterator(elements.end()); }
+
+  private:
+    Storage elements;
+  };
+} // namespace poundfe
+
+#endif
