@@ -114,11 +114,11 @@ main(int argc, char **argv)
       if (command == "modal")
         return poundfe::modal_command(analysis, directory);
       if (command == "montecarlo")
-        return poundfe::montecarlo_command(analysis, directory);
+        return poundfe::montecarlo_command(analysis, directory, MPI_COMM_WORLD);
       if (command == "subset")
-        return poundfe::subset_command(analysis, directory);
+        return poundfe::subset_command(analysis, directory, MPI_COMM_WORLD);
       if (command == "fragility")
-        return poundfe::fragility_command(analysis, directory);
+        return poundfe::fragility_command(analysis, directory, MPI_COMM_WORLD);
       return poundfe::run_command(analysis, directory);
     }
   catch (const poundfe::InputError &e)

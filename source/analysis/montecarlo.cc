@@ -7,7 +7,9 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plots.h>
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -145,11 +147,11 @@ namespace poundfe
 
   MonteCarloTable
   run_monte_carlo(RealizationRunner &runner, const unsigned long n, const double amplitude_factor,
-                  const std::string &file, const std::string &label)
+                  const std::string &file, const MPI_Comm comm, const std::string &label)
   {
-    const MPI_Comm     comm    = MPI_COMM_WORLD;
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
     const auto         start   = std::chrono::steady_clock::now();
     const std::vector<std::string> &names = runner.response_names();
     const std::string  header = header_of(names);
@@ -196,8 +198,8 @@ namespace poundfe
       throw InputError(file, dealii::Utilities::MPI::broadcast(comm, error_line, 0),
                        dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
     todo = dealii::Utilities::MPI::broadcast(comm, todo, 0);
-    if (rank == 0 && rows.size() > 0 && !todo.empty())
-      std::cout << label << "resuming: " << (n - todo.size()) << " of " << n
+    if (rows.size() > 0 && !todo.empty())
+      pcout << label << "resuming: " << (n - todo.size()) << " of " << n
                 << " realizations are in " << file << "\n";
 
     std::vector<double> responses, message(n_responses + 2);
@@ -211,7 +213,7 @@ namespace poundfe
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
       if (n_done % step == 0 || n_done == n)
-        std::cout << label << n_done << " / " << n << " realizations" << std::endl;
+        pcout << label << n_done << " / " << n << " realizations" << std::endl;
     };
     auto receive = [&](const MPI_Status &status) {
       MPI_Recv(message.data(), message.size(), MPI_DOUBLE, status.MPI_SOURCE, status.MPI_TAG,
@@ -349,18 +351,27 @@ namespace poundfe
   } // namespace
 
   int
-  montecarlo_command(const Analysis &analysis, const std::string &directory)
+  montecarlo_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
   {
-    const InputParameters &input = analysis.input;
-    const unsigned int     rank  = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    const unsigned int n_ranks   = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    RealizationRunner      runner(analysis);
+    const InputParameters     &input   = analysis.input;
+    const unsigned int         rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int         n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    // rank 0's own times: the other ranks leave before the output section
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    timer.enter_subsection("set-up");
+    RealizationRunner runner(analysis);
     if (rank == 0)
       create_directories(directory);
-    const unsigned long   n     = input.monte_carlo.realizations;
-    const MonteCarloTable table = run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv");
+    timer.leave_subsection();
+    const unsigned long n = input.monte_carlo.realizations;
+    timer.enter_subsection("realizations");
+    const MonteCarloTable table =
+      run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv", comm);
+    timer.leave_subsection();
     if (rank != 0)
       return 0;
+    timer.enter_subsection("statistics and output");
 
     const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
     const Exceedances   e = count_exceedances(table, runner, input.monte_carlo.drift_limits);
@@ -451,27 +462,29 @@ namespace poundfe
     if (input.plots)
       draw_plots(directory, plots);
     write_file_atomically(directory + "/summary.json", json.str());
+    timer.leave_subsection();
 
-    std::cout << "Monte Carlo: " << n_completed << " of " << n << " realizations completed";
+    pcout << "Monte Carlo: " << n_completed << " of " << n << " realizations completed";
     if (table.n_run_now > 0)
-      std::cout << " (" << table.n_run_now << " run now on " << n_ranks << " rank"
+      pcout << " (" << table.n_run_now << " run now on " << n_ranks << " rank"
                 << (n_ranks > 1 ? "s" : "") << ", " << rounded(table.n_run_now / table.wall_time)
                 << " realizations/s)";
-    std::cout << "\n";
+    pcout << "\n";
     if (runner.has_gaps())
-      std::cout << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
+      pcout << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
                 << rounded(e.pounding.coefficient_of_variation) << ")\n";
     for (std::size_t i = 0; i < e.drift.size(); ++i)
-      std::cout << "P(max drift ratio > " << input.monte_carlo.drift_limits[i]
+      pcout << "P(max drift ratio > " << input.monte_carlo.drift_limits[i]
                 << ") = " << rounded(e.drift[i].probability) << " (CoV "
                 << rounded(e.drift[i].coefficient_of_variation) << ")\n";
-    std::cout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
+    pcout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
               << (input.plots ? ", *.png" : "") << ")\n";
+    print_timing(timer);
     return 0;
   }
 
   int
-  fragility_command(const Analysis &analysis, const std::string &directory)
+  fragility_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
   {
     const InputParameters        &input = analysis.input;
     const GroundMotionParameters &g     = input.ground_motion;
@@ -479,7 +492,10 @@ namespace poundfe
       throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
                        "fragility curves scale a Kanai-Tajimi or Clough-Penzien motion to "
                        "each PGA level; got '" + g.type + "'");
-    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    timer.enter_subsection("set-up");
     RealizationRunner  runner(analysis);
     // S0 is proportional to PGA^2, so amplitudes scale with PGA / PGA of the input's S0.
     const MotionGenerator &generator = *runner.stochastic_load().ground_generator();
@@ -489,9 +505,11 @@ namespace poundfe
       g.scale_factor / standard_gravity;
     if (rank == 0)
       create_directories(directory);
+    timer.leave_subsection();
     const std::vector<double> &levels = input.fragility.pga_levels;
     const std::vector<double> &limits = input.monte_carlo.drift_limits;
     std::vector<Exceedances>   counts;
+    timer.enter_subsection("realizations");
     for (std::size_t j = 0; j < levels.size(); ++j)
       {
         const std::string level_directory = directory + "/pga_" + rounded(levels[j], 6) + "g";
@@ -500,12 +518,14 @@ namespace poundfe
         const MonteCarloTable table =
           run_monte_carlo(runner, input.fragility.realizations_per_level,
                           levels[j] / reference_pga, level_directory + "/realizations.csv",
-                          "PGA " + rounded(levels[j]) + " g: ");
+                          comm, "PGA " + rounded(levels[j]) + " g: ");
         if (rank == 0)
           counts.push_back(count_exceedances(table, runner, limits));
       }
+    timer.leave_subsection();
     if (rank != 0)
       return 0;
+    timer.enter_subsection("fit and output");
 
     // One curve for pounding (if there are gaps) and one per drift limit.
     std::vector<std::string>                     curve_names;
@@ -593,20 +613,22 @@ namespace poundfe
         if (c.fitted)
           plot.series.push_back({"fragility_curves.csv", "1:" + std::to_string(i + 2),
                                  curve_names[i] + " fit", "lines"});
-        std::cout << curve_names[i] << ": ";
+        pcout << curve_names[i] << ": ";
         if (c.fitted)
-          std::cout << "theta = " << rounded(c.theta) << " g, beta = " << rounded(c.beta);
+          pcout << "theta = " << rounded(c.theta) << " g, beta = " << rounded(c.beta);
         else
-          std::cout << "not fitted (" << c.note << ")";
-        std::cout << "\n";
+          pcout << "not fitted (" << c.note << ")";
+        pcout << "\n";
       }
     json.end_array().end_object();
     if (input.plots)
       draw_plots(directory, {plot});
     write_file_atomically(directory + "/summary.json", json.str());
-    std::cout << "results in " << directory
+    timer.leave_subsection();
+    pcout << "results in " << directory
               << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
               << (input.plots ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
+    print_timing(timer);
     return 0;
   }
 } // namespace poundfe

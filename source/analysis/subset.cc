@@ -6,7 +6,9 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plots.h>
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -79,9 +81,8 @@ namespace poundfe
 
   SubsetResult
   subset_simulation(const ResponseFunction &response, const unsigned int n_variables,
-                    const double threshold, const SubsetSettings &settings)
+                    const double threshold, const SubsetSettings &settings, const MPI_Comm comm)
   {
-    const MPI_Comm     comm    = MPI_COMM_WORLD;
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     const unsigned int N       = settings.samples_per_level;
@@ -236,12 +237,16 @@ namespace poundfe
   }
 
   int
-  subset_command(const Analysis &analysis, const std::string &directory)
+  subset_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
   {
-    const InputParameters  &input = analysis.input;
-    const SubsetParameters &ss    = input.subset;
-    const unsigned int      rank  = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    RealizationRunner       runner(analysis);
+    const InputParameters     &input = analysis.input;
+    const SubsetParameters    &ss    = input.subset;
+    const unsigned int         rank  = dealii::Utilities::MPI::this_mpi_process(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    // rank 0's own times: the other ranks leave before the output section
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    timer.enter_subsection("set-up");
+    RealizationRunner runner(analysis);
     std::vector<unsigned int> columns;
     std::string               unit;
     if (ss.response == "peak drift ratio")
@@ -262,6 +267,7 @@ namespace poundfe
       }
     if (rank == 0)
       create_directories(directory);
+    timer.leave_subsection();
 
     std::vector<double> responses;
     unsigned long       failed_runs = 0;
@@ -279,12 +285,16 @@ namespace poundfe
     settings.max_levels              = ss.max_levels;
     settings.proposal_spread         = ss.proposal_spread;
     settings.seed                    = runner.stochastic_load().seed();
-    const auto         start  = std::chrono::steady_clock::now();
-    const SubsetResult result = subset_simulation(response, runner.n_variables(), ss.threshold, settings);
+    timer.enter_subsection("levels");
+    const auto         start = std::chrono::steady_clock::now();
+    const SubsetResult result =
+      subset_simulation(response, runner.n_variables(), ss.threshold, settings, comm);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    failed_runs       = dealii::Utilities::MPI::sum(failed_runs, MPI_COMM_WORLD);
+    failed_runs       = dealii::Utilities::MPI::sum(failed_runs, comm);
+    timer.leave_subsection();
     if (rank != 0)
       return 0;
+    timer.enter_subsection("output");
 
     std::string csv = "level,threshold,conditional_probability,exceedance_probability,"
                       "acceptance_rate,coefficient_of_variation\n";
@@ -315,7 +325,7 @@ namespace poundfe
       .value("reached_threshold", result.reached_threshold)
       .value("model_runs", result.model_runs)
       .value("failed_model_runs", failed_runs)
-      .value("ranks", dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))
+      .value("ranks", dealii::Utilities::MPI::n_mpi_processes(comm))
       .value("wall_time_s", wall);
     json.begin_array("levels");
     for (const SubsetLevel &L : result.levels)
@@ -332,13 +342,15 @@ namespace poundfe
                                   ss.response + unit, "exceedance probability (log)",
                                   {{"subset_levels.csv", "2:4", "levels", "linespoints"}},
                                   true}});
+    timer.leave_subsection();
 
-    std::cout << "Subset Simulation: P(" << ss.response << " > " << ss.threshold << unit
+    pcout << "Subset Simulation: P(" << ss.response << " > " << ss.threshold << unit
               << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
               << "), " << result.levels.size() << " levels, " << result.model_runs
               << " model runs" << (result.reached_threshold ? "" : " (stopped at Maximum levels)")
               << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
               << (input.plots ? ", subset_levels.png" : "") << ")\n";
+    print_timing(timer);
     return 0;
   }
 } // namespace poundfe

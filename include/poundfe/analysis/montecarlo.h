@@ -11,6 +11,8 @@
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/analysis/realization.h>
 
+#include <mpi.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -31,16 +33,18 @@ namespace poundfe
   };
 
   /// Runs the realizations 0..n-1 that `file` does not hold yet over the
-  /// ranks of MPI_COMM_WORLD, appending each to `file` as it finishes.
-  /// Returns the table of 0..n-1 on rank 0 and an empty one elsewhere.
+  /// ranks of `comm` (each must call it), appending each to `file` as it
+  /// finishes. Returns the table of 0..n-1 on rank 0 and an empty one elsewhere.
   MonteCarloTable run_monte_carlo(RealizationRunner &runner, unsigned long n,
                                   double amplitude_factor, const std::string &file,
-                                  const std::string &label = "");
+                                  MPI_Comm comm, const std::string &label = "");
 
-  /// The `montecarlo` command.
-  int montecarlo_command(const Analysis &analysis, const std::string &output_directory);
-  /// The `fragility` command.
-  int fragility_command(const Analysis &analysis, const std::string &output_directory);
+  /// The `montecarlo` command, on every rank of `comm`.
+  int montecarlo_command(const Analysis &analysis, const std::string &output_directory,
+                         MPI_Comm comm);
+  /// The `fragility` command, on every rank of `comm`.
+  int fragility_command(const Analysis &analysis, const std::string &output_directory,
+                        MPI_Comm comm);
 } // namespace poundfe
 
 #endif

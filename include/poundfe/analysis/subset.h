@@ -17,6 +17,8 @@
 
 #include <poundfe/analysis/analysis.h>
 
+#include <mpi.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -53,13 +55,14 @@ namespace poundfe
   /// Y(xi) of one sample; called on the rank that owns the chain.
   using ResponseFunction = std::function<double(const std::vector<double> &)>;
 
-  /// Runs over the ranks of MPI_COMM_WORLD (each rank must call it); the
-  /// result is the same on every rank.
+  /// Runs over the ranks of `comm` (each rank must call it); the result is
+  /// the same on every rank.
   SubsetResult subset_simulation(const ResponseFunction &response, unsigned int n_variables,
-                                 double threshold, const SubsetSettings &settings);
+                                 double threshold, const SubsetSettings &settings, MPI_Comm comm);
 
-  /// The `subset` command.
-  int subset_command(const Analysis &analysis, const std::string &output_directory);
+  /// The `subset` command, on every rank of `comm`.
+  int subset_command(const Analysis &analysis, const std::string &output_directory,
+                     MPI_Comm comm);
 } // namespace poundfe
 
 #endif
