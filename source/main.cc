@@ -5,6 +5,7 @@
 #include <poundfe/analysis/run.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/model/parameters.h>
 
 #include <deal.II/base/exceptions.h>
@@ -33,7 +34,11 @@ namespace
     "  subset FILE         Subset Simulation of a small exceedance probability (MPI)\n"
     "  fragility FILE      Monte Carlo over PGA levels, lognormal fragility curves (MPI)\n"
     "  print-parameters    every parameter with its documentation and default\n"
-    "--output DIR overrides the file's 'Output/Directory'.\n";
+    "--output DIR overrides the file's 'Output/Directory'.\n"
+    "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset and fragility after the\n"
+    "realizations under way, with the results so far (status \"interrupted\", exit\n"
+    "status 128 + signal); the same command resumes montecarlo and fragility.\n"
+    "A second signal kills. Progress shows on a terminal (POUNDFE_PROGRESS=1: always).\n";
 
   /// The arguments without the options, and the options' values.
   struct CommandLine
@@ -83,7 +88,9 @@ namespace
     return line;
   }
 
-  /// The commands that split their work over MPI ranks.
+  /// The commands that split their work over MPI ranks; they also stop
+  /// cleanly on SIGINT or SIGTERM. (A handler that no loop polls would only
+  /// delay Ctrl-C, so the other commands keep the default action.)
   bool
   runs_over_mpi(const std::string &command)
   {
@@ -119,6 +126,8 @@ main(int argc, char **argv)
       std::cout << usage;
       return args.empty() ? 1 : 0;
     }
+  if (runs_over_mpi(command))
+    poundfe::install_interruption_handlers();
   try
     {
       if (command == "print-parameters")

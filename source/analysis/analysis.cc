@@ -72,7 +72,9 @@ namespace poundfe
   void
   print_timing(const dealii::TimerOutput &timer)
   {
-    if (::isatty(STDOUT_FILENO) == 1)
+    // both: under Open MPI's mpirun a rank's stdout is a pseudo-terminal even
+    // when mpirun's goes to a file, its stderr a pipe
+    if (::isatty(STDOUT_FILENO) == 1 && ::isatty(STDERR_FILENO) == 1)
       timer.print_summary();
   }
 } // namespace poundfe

@@ -1,6 +1,8 @@
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/statistics.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/progress.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
@@ -22,12 +24,13 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace poundfe
 {
   namespace
   {
-    constexpr int row_tag = 1, done_tag = 2;
+    constexpr int row_tag = 1, done_tag = 2, stop_tag = 3;
 
     std::string
     header_of(const std::vector<std::string> &names)
@@ -147,7 +150,8 @@ namespace poundfe
 
   MonteCarloTable
   run_monte_carlo(RealizationRunner &runner, const unsigned long n, const double amplitude_factor,
-                  const std::string &file, const MPI_Comm comm, const std::string &label)
+                  const std::string &file, const MPI_Comm comm, const std::string &label,
+                  Progress *const progress, const unsigned long progress_offset)
   {
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
@@ -206,31 +210,85 @@ namespace poundfe
     std::unique_ptr<AppendFile> out;
     if (rank == 0)
       out = std::make_unique<AppendFile>(file);
-    unsigned long n_done = n - todo.size();
-    auto          store  = [&](Row row) {
+    unsigned long n_done        = n - todo.size();
+    const bool    show_progress = rank == 0 && progress != nullptr && progress->active();
+    if (show_progress)
+      progress->update(progress_offset + n_done);
+    auto store = [&](Row row) {
       out->append(format_row(row, seed));
       rows.emplace(row.realization, std::move(row));
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
-      if (n_done % step == 0 || n_done == n)
+      if (show_progress)
+        progress->update(progress_offset + n_done);
+      else if (n_done % step == 0 || n_done == n)
         pcout << label << n_done << " / " << n << " realizations" << std::endl;
     };
+
+    // Stopping early (SIGINT or SIGTERM on any rank): no rank starts another
+    // realization, and every finished one is written. Rank 0 sends each
+    // worker exactly one stop message: when it stops, or else in answer to
+    // the worker's done message, which the worker waits for; a worker that
+    // stops on its own signal says so in its done message, and rank 0 then
+    // stops the others. Rank 0 receives until every worker is done.
+    bool                     stop = false; // rank 0: no new realization anywhere
+    std::vector<char>        stop_sent(n_ranks, 0);
+    std::vector<MPI_Request> stop_requests;
+    auto send_stop = [&](const unsigned int worker) {
+      if (stop_sent[worker])
+        return;
+      stop_sent[worker] = 1;
+      stop_requests.emplace_back();
+      MPI_Isend(nullptr, 0, MPI_DOUBLE, worker, stop_tag, comm, &stop_requests.back());
+    };
+    auto stop_all = [&]() {
+      stop = true;
+      for (unsigned int worker = 1; worker < n_ranks; ++worker)
+        send_stop(worker);
+    };
+    unsigned int n_finished = 0; // workers done
     auto receive = [&](const MPI_Status &status) {
       MPI_Recv(message.data(), message.size(), MPI_DOUBLE, status.MPI_SOURCE, status.MPI_TAG,
                comm, MPI_STATUS_IGNORE);
       if (status.MPI_TAG == done_tag)
-        return false;
+        {
+          ++n_finished;
+          if (message[0] != 0 && !stop) // it stopped with realizations left
+            stop_all();
+          send_stop(status.MPI_SOURCE);
+          return;
+        }
       Row row;
       row.realization = static_cast<std::uint64_t>(message[0]);
       row.completed   = message[1] != 0;
       row.responses.assign(message.begin() + 2, message.end());
       store(std::move(row));
-      return true;
     };
 
-    unsigned long n_run = 0;
-    for (std::size_t i = rank; i < todo.size(); i += n_ranks)
+    unsigned long n_run    = 0;
+    bool          released = false; // a worker: has its stop message
+    std::size_t   i        = rank;
+    for (; i < todo.size(); i += n_ranks)
       {
+        if (rank == 0)
+          {
+            if (interruption_requested() && !stop)
+              stop_all();
+            if (stop)
+              break;
+          }
+        else
+          {
+            int stopped = 0;
+            MPI_Iprobe(0, stop_tag, comm, &stopped, MPI_STATUS_IGNORE);
+            if (stopped)
+              {
+                MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
+                released = true;
+              }
+            if (released || interruption_requested())
+              break;
+          }
         Row row;
         row.realization = todo[i];
         row.completed   = runner.run(row.realization, row.responses, amplitude_factor);
@@ -241,7 +299,7 @@ namespace poundfe
             int        waiting = 0;
             MPI_Status status;
             // write what the workers finished meanwhile
-            while (MPI_Iprobe(MPI_ANY_SOURCE, row_tag, comm, &waiting, &status), waiting)
+            while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status), waiting)
               receive(status);
           }
         else
@@ -253,18 +311,33 @@ namespace poundfe
           }
       }
     if (rank != 0)
-      MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, done_tag, comm);
+      {
+        message[0] = i < todo.size();
+        MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, done_tag, comm);
+        if (!released)
+          MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
+      }
     else
-      for (unsigned int finished = 0; finished + 1 < n_ranks;)
-        {
-          MPI_Status status;
-          MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &status);
-          if (!receive(status))
-            ++finished;
-        }
+      {
+        // polled rather than a blocking probe, to see a signal that comes meanwhile
+        while (n_finished + 1 < n_ranks)
+          {
+            if (interruption_requested() && !stop)
+              stop_all();
+            int        waiting = 0;
+            MPI_Status status;
+            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status);
+            if (waiting)
+              receive(status);
+            else
+              std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          }
+        MPI_Waitall(stop_requests.size(), stop_requests.data(), MPI_STATUSES_IGNORE);
+      }
 
     MonteCarloTable table;
-    table.n_run_now = dealii::Utilities::MPI::sum(n_run, comm);
+    table.n_run_now   = dealii::Utilities::MPI::sum(n_run, comm);
+    table.interrupted = dealii::Utilities::MPI::broadcast(comm, rank == 0 && n_done < n, 0);
     table.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (rank != 0)
       return table;
@@ -366,20 +439,25 @@ namespace poundfe
     timer.leave_subsection();
     const unsigned long n = input.monte_carlo.realizations;
     timer.enter_subsection("realizations");
+    Progress              progress(std::cerr, "realizations", n);
     const MonteCarloTable table =
-      run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv", comm);
+      run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv", comm, "", &progress);
+    progress.finish();
     timer.leave_subsection();
+    const int status = table.interrupted ? interrupted_exit_status() : 0;
     if (rank != 0)
-      return 0;
+      return status;
     timer.enter_subsection("statistics and output");
 
+    const unsigned long n_done      = table.realizations.size();
     const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
     const Exceedances   e = count_exceedances(table, runner, input.monte_carlo.drift_limits);
     JsonWriter          json;
-    begin_summary(json, "montecarlo", input);
+    begin_summary(json, "montecarlo", input, table.interrupted ? "interrupted" : "completed");
     json.value("realizations", n)
+      .value("realizations_done", n_done)
       .value("completed_realizations", n_completed)
-      .value("failed_realizations", n - n_completed)
+      .value("failed_realizations", n_done - n_completed)
       .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()))
       .value("random_variables_per_realization", runner.n_variables())
       .value("ranks", n_ranks)
@@ -459,11 +537,14 @@ namespace poundfe
                              "P(X <= x)", {{"cdf_" + d.stem + ".csv", "1:2", "ECDF", "steps"}}});
       }
     json.end_array().end_object();
-    if (input.plots)
+    if (input.plots && !table.interrupted) // stop soon: the resumed run draws them
       draw_plots(directory, plots);
     write_file_atomically(directory + "/summary.json", json.str());
     timer.leave_subsection();
 
+    if (table.interrupted)
+      pcout << "Monte Carlo interrupted after " << n_done << " of " << n
+            << " realizations: the results are over these; the same command runs the rest\n";
     pcout << "Monte Carlo: " << n_completed << " of " << n << " realizations completed";
     if (table.n_run_now > 0)
       pcout << " (" << table.n_run_now << " run now on " << n_ranks << " rank"
@@ -478,9 +559,9 @@ namespace poundfe
                 << ") = " << rounded(e.drift[i].probability) << " (CoV "
                 << rounded(e.drift[i].coefficient_of_variation) << ")\n";
     pcout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
-              << (input.plots ? ", *.png" : "") << ")\n";
+          << (input.plots && !table.interrupted ? ", *.png" : "") << ")\n";
     print_timing(timer);
-    return 0;
+    return status;
   }
 
   int
@@ -506,26 +587,51 @@ namespace poundfe
     if (rank == 0)
       create_directories(directory);
     timer.leave_subsection();
-    const std::vector<double> &levels = input.fragility.pga_levels;
-    const std::vector<double> &limits = input.monte_carlo.drift_limits;
-    std::vector<Exceedances>   counts;
+    const std::vector<double> &all_levels = input.fragility.pga_levels;
+    const std::vector<double> &limits     = input.monte_carlo.drift_limits;
+    const unsigned long        per_level  = input.fragility.realizations_per_level;
+    std::vector<Exceedances>   counts; // of the levels done
+    bool                       interrupted = false;
     timer.enter_subsection("realizations");
-    for (std::size_t j = 0; j < levels.size(); ++j)
+    Progress progress(std::cerr, "realizations", all_levels.size() * per_level);
+    for (std::size_t j = 0; j < all_levels.size() && !interrupted; ++j)
       {
-        const std::string level_directory = directory + "/pga_" + rounded(levels[j], 6) + "g";
+        const std::string level_directory = directory + "/pga_" + rounded(all_levels[j], 6) + "g";
         if (rank == 0)
           create_directories(level_directory);
         const MonteCarloTable table =
-          run_monte_carlo(runner, input.fragility.realizations_per_level,
-                          levels[j] / reference_pga, level_directory + "/realizations.csv",
-                          comm, "PGA " + rounded(levels[j]) + " g: ");
-        if (rank == 0)
+          run_monte_carlo(runner, per_level, all_levels[j] / reference_pga,
+                          level_directory + "/realizations.csv", comm,
+                          "PGA " + rounded(all_levels[j]) + " g: ", &progress, j * per_level);
+        interrupted = table.interrupted; // the same on every rank
+        if (rank == 0 && !interrupted)
           counts.push_back(count_exceedances(table, runner, limits));
       }
+    progress.finish();
     timer.leave_subsection();
+    const int status = interrupted ? interrupted_exit_status() : 0;
     if (rank != 0)
-      return 0;
+      return status;
     timer.enter_subsection("fit and output");
+
+    // Interrupted: the points and curves of the levels done.
+    const std::vector<double> levels(all_levels.begin(), all_levels.begin() + counts.size());
+    if (interrupted)
+      pcout << "fragility interrupted after " << levels.size() << " of " << all_levels.size()
+            << " PGA levels: the points and curves are of these; the same command runs the rest\n";
+    JsonWriter json;
+    begin_summary(json, "fragility", input, interrupted ? "interrupted" : "completed");
+    json.value("intensity_measure", "PGA (g)")
+      .value("pga_levels_g", all_levels)
+      .value("completed_levels", levels.size())
+      .value("realizations_per_level", per_level)
+      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
+    if (levels.empty()) // nothing to fit
+      {
+        json.end_object();
+        write_file_atomically(directory + "/summary.json", json.str());
+        return status;
+      }
 
     // One curve for pounding (if there are gaps) and one per drift limit.
     std::vector<std::string>                     curve_names;
@@ -587,12 +693,6 @@ namespace poundfe
     write_file_atomically(directory + "/fragility_points.csv", points);
     write_file_atomically(directory + "/fragility_curves.csv", fitted);
 
-    JsonWriter json;
-    begin_summary(json, "fragility", input);
-    json.value("intensity_measure", "PGA (g)")
-      .value("pga_levels_g", levels)
-      .value("realizations_per_level", input.fragility.realizations_per_level)
-      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
     json.begin_array("curves");
     Plot plot{"fragility.png", "lognormal fragility (maximum likelihood)", "PGA (g)",
               "P(exceedance | PGA)", {}};
@@ -621,14 +721,14 @@ namespace poundfe
         pcout << "\n";
       }
     json.end_array().end_object();
-    if (input.plots)
+    if (input.plots && !interrupted) // stop soon: the resumed run draws it
       draw_plots(directory, {plot});
     write_file_atomically(directory + "/summary.json", json.str());
     timer.leave_subsection();
     pcout << "results in " << directory
-              << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
-              << (input.plots ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
+          << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
+          << (input.plots && !interrupted ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
     print_timing(timer);
-    return 0;
+    return status;
   }
 } // namespace poundfe

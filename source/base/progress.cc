@@ -41,11 +41,12 @@ namespace poundfe
         return false;
       if (const char *forced = std::getenv("POUNDFE_PROGRESS"); forced && *forced)
         return std::string(forced) != "0";
-      if (&out == &std::cerr || &out == &std::clog)
-        return ::isatty(STDERR_FILENO) == 1;
-      if (&out == &std::cout)
-        return ::isatty(STDOUT_FILENO) == 1;
-      return false;
+      // Open MPI's mpirun gives ranks a pseudo-terminal as stdout even when
+      // its own goes to a file, but a pipe as stderr: stderr decides.
+      if (::isatty(STDERR_FILENO) != 1)
+        return false;
+      return &out == &std::cerr || &out == &std::clog ||
+             (&out == &std::cout && ::isatty(STDOUT_FILENO) == 1);
     }
   } // namespace
 

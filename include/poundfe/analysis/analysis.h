@@ -36,7 +36,8 @@ namespace poundfe
   void begin_summary(JsonWriter &json, const std::string &command, const InputParameters &input,
                      const std::string &status = "completed");
 
-  /// A command's timer table, on a terminal only (pipes and tests see nothing).
+  /// A command's timer table, on a terminal only (stdout and stderr are
+  /// terminals: pipes, log files and tests see nothing).
   void print_timing(const dealii::TimerOutput &timer);
 } // namespace poundfe
 

@@ -5,6 +5,9 @@
 //   give the same numbers. Each finished realization is appended to
 //   realizations.csv by rank 0 (workers send their rows to it), so a killed
 //   run started again with the same command runs only the missing ones.
+//   SIGINT or SIGTERM stops a run after the realizations under way; it then
+//   writes its results over the rows it has with status "interrupted" and
+//   exits with 128 + the signal.
 #ifndef poundfe_analysis_montecarlo_h
 #define poundfe_analysis_montecarlo_h
 
@@ -19,6 +22,8 @@
 
 namespace poundfe
 {
+  class Progress;
+
   struct MonteCarloTable
   {
     std::vector<std::string>         columns;      // response names
@@ -27,6 +32,9 @@ namespace poundfe
     std::vector<std::vector<double>> responses;
     unsigned long                    n_run_now = 0; // realizations run by this call
     double                           wall_time = 0; // s
+    /// Stopped by SIGINT or SIGTERM (on every rank): realizations are missing,
+    /// and a later call with the same file runs them.
+    bool interrupted = false;
 
     /// Values of column c over the completed realizations.
     std::vector<double> completed_values(unsigned int c) const;
@@ -34,10 +42,15 @@ namespace poundfe
 
   /// Runs the realizations 0..n-1 that `file` does not hold yet over the
   /// ranks of `comm` (each must call it), appending each to `file` as it
-  /// finishes. Returns the table of 0..n-1 on rank 0 and an empty one elsewhere.
+  /// finishes; on SIGINT or SIGTERM (interruption.h) it stops after the
+  /// realizations under way. Returns the table of the realizations of 0..n-1
+  /// done on rank 0 and an empty one elsewhere. Rank 0 reports to `progress`
+  /// (as progress_offset + realizations done) or, when that does not show,
+  /// prints a line every tenth.
   MonteCarloTable run_monte_carlo(RealizationRunner &runner, unsigned long n,
                                   double amplitude_factor, const std::string &file,
-                                  MPI_Comm comm, const std::string &label = "");
+                                  MPI_Comm comm, const std::string &label = "",
+                                  Progress *progress = nullptr, unsigned long progress_offset = 0);
 
   /// The `montecarlo` command, on every rank of `comm`.
   int montecarlo_command(const Analysis &analysis, const std::string &output_directory,

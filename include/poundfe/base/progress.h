@@ -1,10 +1,10 @@
 // A one-line progress report for long loops, rewritten in place ('\r') with
 // the rate and the time left:
 //   "  run: 12000/20000 steps, 52,000 steps/s, ETA 0.2 s"
-// It shows only on a terminal (the stream is std::cerr or std::clog and
-// stderr is one, or std::cout and stdout is one), so tests, pipes and log
+// It shows only on a terminal (stderr is one, and the stream is std::cerr,
+// std::clog, or std::cout when stdout is one too), so tests, pipes and log
 // files see nothing; POUNDFE_PROGRESS=1 forces it on (e.g. under mpirun,
-// whose ranks write to pipes), POUNDFE_PROGRESS=0 off.
+// whose ranks write stderr to a pipe), POUNDFE_PROGRESS=0 off.
 #ifndef poundfe_base_progress_h
 #define poundfe_base_progress_h
 
