@@ -94,10 +94,10 @@ namespace
   }
 
   int
-  measure_monte_carlo(const std::string &file, const unsigned long n)
+  measure_monte_carlo(const std::string &file, const unsigned long n, const MPI_Comm comm)
   {
-    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     const auto         t0      = std::chrono::steady_clock::now();
     const Analysis     analysis = prepare_analysis(read_parameters(file));
     RealizationRunner  runner(analysis);
@@ -118,7 +118,7 @@ namespace
         std::filesystem::remove_all(dir);
         std::filesystem::create_directories(dir);
       }
-    const MonteCarloTable table = run_monte_carlo(runner, n, 1.0, dir + "/realizations.csv", "  ");
+    const MonteCarloTable table = run_monte_carlo(runner, n, 1.0, dir + "/realizations.csv", comm, "  ");
     if (rank == 0)
       {
         std::filesystem::remove_all(dir);
@@ -134,9 +134,11 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // --montecarlo runs over MPI, and the solver comparison includes PETSc and
+  // Trilinos, which need it initialised: both modes initialise it.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   if (argc > 3 && std::string(argv[1]) == "--montecarlo")
-    return measure_monte_carlo(argv[2], std::stoul(argv[3]));
+    return measure_monte_carlo(argv[2], std::stoul(argv[3]), MPI_COMM_WORLD);
   const std::string  file    = argc > 1 ? argv[1] : "input/two-buildings.prm";
   const unsigned int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   const InputParameters input = read_parameters(file);

@@ -3,13 +3,17 @@
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/subset.h>
 #include <poundfe/analysis/run.h>
+#include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/model/parameters.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,58 +34,100 @@ namespace
     "  subset FILE         Subset Simulation of a small exceedance probability (MPI)\n"
     "  fragility FILE      Monte Carlo over PGA levels, lognormal fragility curves (MPI)\n"
     "  print-parameters    every parameter with its documentation and default\n"
-    "--output DIR overrides the file's 'Output/Directory'.\n";
-}
+    "--output DIR overrides the file's 'Output/Directory'.\n"
+    "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset and fragility after the\n"
+    "realizations under way, with the results so far (status \"interrupted\", exit\n"
+    "status 128 + signal); the same command resumes montecarlo and fragility.\n"
+    "A second signal kills. Progress shows on a terminal (POUNDFE_PROGRESS=1: always).\n";
+
+  /// The arguments without the options, and the options' values.
+  struct CommandLine
+  {
+    std::vector<std::string> args;
+    std::string              output;
+    unsigned int             n_realizations = 0;
+    std::string              error; // not empty: the message for bad options
+  };
+
+  CommandLine
+  parse_command_line(std::vector<std::string> args)
+  {
+    CommandLine line;
+    std::string realizations;
+    for (std::size_t i = 0; i < args.size(); ++i)
+      if (args[i] == "--output" || args[i] == "--realizations")
+        {
+          if (i + 1 >= args.size())
+            {
+              line.error = "poundfe: error: " + args[i] + " needs a value\n" + usage;
+              return line;
+            }
+          (args[i] == "--output" ? line.output : realizations) = args[i + 1];
+          args.erase(args.begin() + i, args.begin() + i + 2);
+          --i;
+        }
+    line.args = std::move(args);
+    if (!realizations.empty())
+      {
+        std::size_t end = 0;
+        long        n   = 0;
+        try
+          {
+            n = std::stol(realizations, &end);
+          }
+        catch (const std::exception &)
+          {
+            end = 0;
+          }
+        if (end != realizations.size() || n < 1 || n > 100000)
+          line.error = "poundfe: error: --realizations needs a whole number in 1..100000, got '" +
+                       realizations + "'\n";
+        else
+          line.n_realizations = n;
+      }
+    return line;
+  }
+
+  /// The commands that split their work over MPI ranks; they also stop
+  /// cleanly on SIGINT or SIGTERM. (A handler that no loop polls would only
+  /// delay Ctrl-C, so the other commands keep the default action.)
+  bool
+  runs_over_mpi(const std::string &command)
+  {
+    return command == "montecarlo" || command == "subset" || command == "fragility";
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const CommandLine line    = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
+  const std::string command = line.args.empty() ? "" : line.args[0];
+  // MPI_InitFinalize (MPI, PETSc, Trilinos) costs ~0.5 s at start: only the
+  // commands that run over MPI initialise it here, and any command whose
+  // linear solver needs it once the input is read.
+  std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+  if (runs_over_mpi(command))
+    mpi.emplace(argc, argv, 1);
+  else
+    dealii::MultithreadInfo::set_thread_limit(1); // what MPI_InitFinalize(argc, argv, 1) sets
   dealii::deal_II_exceptions::disable_abort_on_exception();
   // Every rank reads the same input and fails the same way: rank 0 speaks.
-  const bool               root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::ostream            &err  = root ? std::cerr : silent;
-  std::vector<std::string> args(argv + 1, argv + argc);
-  std::string              output, realizations;
-  for (std::size_t i = 0; i < args.size(); ++i)
-    if (args[i] == "--output" || args[i] == "--realizations")
-      {
-        if (i + 1 >= args.size())
-          {
-            err << "poundfe: error: " << args[i] << " needs a value\n" << usage;
-            return 1;
-          }
-        (args[i] == "--output" ? output : realizations) = args[i + 1];
-        args.erase(args.begin() + i, args.begin() + i + 2);
-        --i;
-      }
-  unsigned int n_realizations = 0;
-  if (!realizations.empty())
+  const bool    root = !mpi || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::ostream &err  = root ? std::cerr : silent;
+  if (!line.error.empty())
     {
-      std::size_t end = 0;
-      long        n   = 0;
-      try
-        {
-          n = std::stol(realizations, &end);
-        }
-      catch (const std::exception &)
-        {
-          end = 0;
-        }
-      if (end != realizations.size() || n < 1 || n > 100000)
-        {
-          err << "poundfe: error: --realizations needs a whole number in 1..100000, got '"
-              << realizations << "'\n";
-          return 1;
-        }
-      n_realizations = n;
+      err << line.error;
+      return 1;
     }
+  const std::vector<std::string> &args = line.args;
   if (args.empty() || args[0] == "--help" || args[0] == "-h")
     {
       std::cout << usage;
       return args.empty() ? 1 : 0;
     }
-  const std::string command = args[0];
+  if (runs_over_mpi(command))
+    poundfe::install_interruption_handlers();
   try
     {
       if (command == "print-parameters")
@@ -102,10 +148,12 @@ main(int argc, char **argv)
           return 1;
         }
       const poundfe::InputParameters input = poundfe::read_parameters(args[1]);
-      const std::string directory = output.empty() ? input.output_directory : output;
+      if (!mpi && poundfe::linear_solver_needs_mpi(input.linear_solver))
+        mpi.emplace(argc, argv, 1);
+      const std::string directory = line.output.empty() ? input.output_directory : line.output;
       if (command == "ground-motion")
-        return poundfe::ground_motion_command(input, directory, n_realizations);
-      if (n_realizations > 0)
+        return poundfe::ground_motion_command(input, directory, line.n_realizations);
+      if (line.n_realizations > 0)
         {
           err << "poundfe: error: --realizations belongs to ground-motion\n";
           return 1;
@@ -114,11 +162,11 @@ main(int argc, char **argv)
       if (command == "modal")
         return poundfe::modal_command(analysis, directory);
       if (command == "montecarlo")
-        return poundfe::montecarlo_command(analysis, directory);
+        return poundfe::montecarlo_command(analysis, directory, MPI_COMM_WORLD);
       if (command == "subset")
-        return poundfe::subset_command(analysis, directory);
+        return poundfe::subset_command(analysis, directory, MPI_COMM_WORLD);
       if (command == "fragility")
-        return poundfe::fragility_command(analysis, directory);
+        return poundfe::fragility_command(analysis, directory, MPI_COMM_WORLD);
       return poundfe::run_command(analysis, directory);
     }
   catch (const poundfe::InputError &e)
@@ -135,7 +183,7 @@ main(int argc, char **argv)
     {
       // not necessarily on every rank: the others may wait forever
       std::cerr << "poundfe: error: " << e.what() << "\n";
-      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      if (mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
         MPI_Abort(MPI_COMM_WORLD, 1);
       return 1;
     }

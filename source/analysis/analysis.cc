@@ -3,6 +3,10 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/model/model_builder.h>
 
+#include <deal.II/base/timer.h>
+
+#include <unistd.h>
+
 namespace poundfe
 {
   Analysis
@@ -63,5 +67,14 @@ namespace poundfe
       .value("command", command)
       .value("input", input.file)
       .value("status", status);
+  }
+
+  void
+  print_timing(const dealii::TimerOutput &timer)
+  {
+    // both: under Open MPI's mpirun a rank's stdout is a pseudo-terminal even
+    // when mpirun's goes to a file, its stderr a pipe
+    if (::isatty(STDOUT_FILENO) == 1 && ::isatty(STDERR_FILENO) == 1)
+      timer.print_summary();
   }
 } // namespace poundfe

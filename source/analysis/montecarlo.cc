@@ -1,13 +1,17 @@
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/statistics.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/progress.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plots.h>
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -20,12 +24,13 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace poundfe
 {
   namespace
   {
-    constexpr int row_tag = 1, done_tag = 2;
+    constexpr int row_tag = 1, done_tag = 2, stop_tag = 3;
 
     std::string
     header_of(const std::vector<std::string> &names)
@@ -145,11 +150,12 @@ namespace poundfe
 
   MonteCarloTable
   run_monte_carlo(RealizationRunner &runner, const unsigned long n, const double amplitude_factor,
-                  const std::string &file, const std::string &label)
+                  const std::string &file, const MPI_Comm comm, const std::string &label,
+                  Progress *const progress, const unsigned long progress_offset)
   {
-    const MPI_Comm     comm    = MPI_COMM_WORLD;
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
     const auto         start   = std::chrono::steady_clock::now();
     const std::vector<std::string> &names = runner.response_names();
     const std::string  header = header_of(names);
@@ -196,39 +202,93 @@ namespace poundfe
       throw InputError(file, dealii::Utilities::MPI::broadcast(comm, error_line, 0),
                        dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
     todo = dealii::Utilities::MPI::broadcast(comm, todo, 0);
-    if (rank == 0 && rows.size() > 0 && !todo.empty())
-      std::cout << label << "resuming: " << (n - todo.size()) << " of " << n
+    if (rows.size() > 0 && !todo.empty())
+      pcout << label << "resuming: " << (n - todo.size()) << " of " << n
                 << " realizations are in " << file << "\n";
 
     std::vector<double> responses, message(n_responses + 2);
     std::unique_ptr<AppendFile> out;
     if (rank == 0)
       out = std::make_unique<AppendFile>(file);
-    unsigned long n_done = n - todo.size();
-    auto          store  = [&](Row row) {
+    unsigned long n_done        = n - todo.size();
+    const bool    show_progress = rank == 0 && progress != nullptr && progress->active();
+    if (show_progress)
+      progress->update(progress_offset + n_done);
+    auto store = [&](Row row) {
       out->append(format_row(row, seed));
       rows.emplace(row.realization, std::move(row));
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
-      if (n_done % step == 0 || n_done == n)
-        std::cout << label << n_done << " / " << n << " realizations" << std::endl;
+      if (show_progress)
+        progress->update(progress_offset + n_done);
+      else if (n_done % step == 0 || n_done == n)
+        pcout << label << n_done << " / " << n << " realizations" << std::endl;
     };
+
+    // Stopping early (SIGINT or SIGTERM on any rank): no rank starts another
+    // realization, and every finished one is written. Rank 0 sends each
+    // worker exactly one stop message: when it stops, or else in answer to
+    // the worker's done message, which the worker waits for; a worker that
+    // stops on its own signal says so in its done message, and rank 0 then
+    // stops the others. Rank 0 receives until every worker is done.
+    bool                     stop = false; // rank 0: no new realization anywhere
+    std::vector<char>        stop_sent(n_ranks, 0);
+    std::vector<MPI_Request> stop_requests;
+    auto send_stop = [&](const unsigned int worker) {
+      if (stop_sent[worker])
+        return;
+      stop_sent[worker] = 1;
+      stop_requests.emplace_back();
+      MPI_Isend(nullptr, 0, MPI_DOUBLE, worker, stop_tag, comm, &stop_requests.back());
+    };
+    auto stop_all = [&]() {
+      stop = true;
+      for (unsigned int worker = 1; worker < n_ranks; ++worker)
+        send_stop(worker);
+    };
+    unsigned int n_finished = 0; // workers done
     auto receive = [&](const MPI_Status &status) {
       MPI_Recv(message.data(), message.size(), MPI_DOUBLE, status.MPI_SOURCE, status.MPI_TAG,
                comm, MPI_STATUS_IGNORE);
       if (status.MPI_TAG == done_tag)
-        return false;
+        {
+          ++n_finished;
+          if (message[0] != 0 && !stop) // it stopped with realizations left
+            stop_all();
+          send_stop(status.MPI_SOURCE);
+          return;
+        }
       Row row;
       row.realization = static_cast<std::uint64_t>(message[0]);
       row.completed   = message[1] != 0;
       row.responses.assign(message.begin() + 2, message.end());
       store(std::move(row));
-      return true;
     };
 
-    unsigned long n_run = 0;
-    for (std::size_t i = rank; i < todo.size(); i += n_ranks)
+    unsigned long n_run    = 0;
+    bool          released = false; // a worker: has its stop message
+    std::size_t   i        = rank;
+    for (; i < todo.size(); i += n_ranks)
       {
+        if (rank == 0)
+          {
+            if (interruption_requested() && !stop)
+              stop_all();
+            if (stop)
+              break;
+          }
+        else
+          {
+            int stopped = 0;
+            MPI_Iprobe(0, stop_tag, comm, &stopped, MPI_STATUS_IGNORE);
+            if (stopped)
+              {
+                MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
+                released = true;
+              }
+            if (released || interruption_requested())
+              break;
+          }
         Row row;
         row.realization = todo[i];
         row.completed   = runner.run(row.realization, row.responses, amplitude_factor);
@@ -239,7 +299,7 @@ namespace poundfe
             int        waiting = 0;
             MPI_Status status;
             // write what the workers finished meanwhile
-            while (MPI_Iprobe(MPI_ANY_SOURCE, row_tag, comm, &waiting, &status), waiting)
+            while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status), waiting)
               receive(status);
           }
         else
@@ -251,18 +311,33 @@ namespace poundfe
           }
       }
     if (rank != 0)
-      MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, done_tag, comm);
+      {
+        message[0] = i < todo.size();
+        MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, done_tag, comm);
+        if (!released)
+          MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
+      }
     else
-      for (unsigned int finished = 0; finished + 1 < n_ranks;)
-        {
-          MPI_Status status;
-          MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &status);
-          if (!receive(status))
-            ++finished;
-        }
+      {
+        // polled rather than a blocking probe, to see a signal that comes meanwhile
+        while (n_finished + 1 < n_ranks)
+          {
+            if (interruption_requested() && !stop)
+              stop_all();
+            int        waiting = 0;
+            MPI_Status status;
+            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status);
+            if (waiting)
+              receive(status);
+            else
+              std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          }
+        MPI_Waitall(stop_requests.size(), stop_requests.data(), MPI_STATUSES_IGNORE);
+      }
 
     MonteCarloTable table;
-    table.n_run_now = dealii::Utilities::MPI::sum(n_run, comm);
+    table.n_run_now   = dealii::Utilities::MPI::sum(n_run, comm);
+    table.interrupted = dealii::Utilities::MPI::broadcast(comm, rank == 0 && n_done < n, 0);
     table.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (rank != 0)
       return table;
@@ -349,26 +424,40 @@ namespace poundfe
   } // namespace
 
   int
-  montecarlo_command(const Analysis &analysis, const std::string &directory)
+  montecarlo_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
   {
-    const InputParameters &input = analysis.input;
-    const unsigned int     rank  = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    const unsigned int n_ranks   = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    RealizationRunner      runner(analysis);
+    const InputParameters     &input   = analysis.input;
+    const unsigned int         rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int         n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    // rank 0's own times: the other ranks leave before the output section
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    timer.enter_subsection("set-up");
+    RealizationRunner runner(analysis);
     if (rank == 0)
       create_directories(directory);
-    const unsigned long   n     = input.monte_carlo.realizations;
-    const MonteCarloTable table = run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv");
+    timer.leave_subsection();
+    const unsigned long n = input.monte_carlo.realizations;
+    timer.enter_subsection("realizations");
+    Progress              progress(std::cerr, "realizations", n);
+    const MonteCarloTable table =
+      run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv", comm, "", &progress);
+    progress.finish();
+    timer.leave_subsection();
+    const int status = table.interrupted ? interrupted_exit_status() : 0;
     if (rank != 0)
-      return 0;
+      return status;
+    timer.enter_subsection("statistics and output");
 
+    const unsigned long n_done      = table.realizations.size();
     const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
     const Exceedances   e = count_exceedances(table, runner, input.monte_carlo.drift_limits);
     JsonWriter          json;
-    begin_summary(json, "montecarlo", input);
+    begin_summary(json, "montecarlo", input, table.interrupted ? "interrupted" : "completed");
     json.value("realizations", n)
+      .value("realizations_done", n_done)
       .value("completed_realizations", n_completed)
-      .value("failed_realizations", n - n_completed)
+      .value("failed_realizations", n_done - n_completed)
       .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()))
       .value("random_variables_per_realization", runner.n_variables())
       .value("ranks", n_ranks)
@@ -448,30 +537,35 @@ namespace poundfe
                              "P(X <= x)", {{"cdf_" + d.stem + ".csv", "1:2", "ECDF", "steps"}}});
       }
     json.end_array().end_object();
-    if (input.plots)
+    if (input.plots && !table.interrupted) // stop soon: the resumed run draws them
       draw_plots(directory, plots);
     write_file_atomically(directory + "/summary.json", json.str());
+    timer.leave_subsection();
 
-    std::cout << "Monte Carlo: " << n_completed << " of " << n << " realizations completed";
+    if (table.interrupted)
+      pcout << "Monte Carlo interrupted after " << n_done << " of " << n
+            << " realizations: the results are over these; the same command runs the rest\n";
+    pcout << "Monte Carlo: " << n_completed << " of " << n << " realizations completed";
     if (table.n_run_now > 0)
-      std::cout << " (" << table.n_run_now << " run now on " << n_ranks << " rank"
+      pcout << " (" << table.n_run_now << " run now on " << n_ranks << " rank"
                 << (n_ranks > 1 ? "s" : "") << ", " << rounded(table.n_run_now / table.wall_time)
                 << " realizations/s)";
-    std::cout << "\n";
+    pcout << "\n";
     if (runner.has_gaps())
-      std::cout << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
+      pcout << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
                 << rounded(e.pounding.coefficient_of_variation) << ")\n";
     for (std::size_t i = 0; i < e.drift.size(); ++i)
-      std::cout << "P(max drift ratio > " << input.monte_carlo.drift_limits[i]
+      pcout << "P(max drift ratio > " << input.monte_carlo.drift_limits[i]
                 << ") = " << rounded(e.drift[i].probability) << " (CoV "
                 << rounded(e.drift[i].coefficient_of_variation) << ")\n";
-    std::cout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
-              << (input.plots ? ", *.png" : "") << ")\n";
-    return 0;
+    pcout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
+          << (input.plots && !table.interrupted ? ", *.png" : "") << ")\n";
+    print_timing(timer);
+    return status;
   }
 
   int
-  fragility_command(const Analysis &analysis, const std::string &directory)
+  fragility_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
   {
     const InputParameters        &input = analysis.input;
     const GroundMotionParameters &g     = input.ground_motion;
@@ -479,7 +573,10 @@ namespace poundfe
       throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
                        "fragility curves scale a Kanai-Tajimi or Clough-Penzien motion to "
                        "each PGA level; got '" + g.type + "'");
-    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    timer.enter_subsection("set-up");
     RealizationRunner  runner(analysis);
     // S0 is proportional to PGA^2, so amplitudes scale with PGA / PGA of the input's S0.
     const MotionGenerator &generator = *runner.stochastic_load().ground_generator();
@@ -489,23 +586,52 @@ namespace poundfe
       g.scale_factor / standard_gravity;
     if (rank == 0)
       create_directories(directory);
-    const std::vector<double> &levels = input.fragility.pga_levels;
-    const std::vector<double> &limits = input.monte_carlo.drift_limits;
-    std::vector<Exceedances>   counts;
-    for (std::size_t j = 0; j < levels.size(); ++j)
+    timer.leave_subsection();
+    const std::vector<double> &all_levels = input.fragility.pga_levels;
+    const std::vector<double> &limits     = input.monte_carlo.drift_limits;
+    const unsigned long        per_level  = input.fragility.realizations_per_level;
+    std::vector<Exceedances>   counts; // of the levels done
+    bool                       interrupted = false;
+    timer.enter_subsection("realizations");
+    Progress progress(std::cerr, "realizations", all_levels.size() * per_level);
+    for (std::size_t j = 0; j < all_levels.size() && !interrupted; ++j)
       {
-        const std::string level_directory = directory + "/pga_" + rounded(levels[j], 6) + "g";
+        const std::string level_directory = directory + "/pga_" + rounded(all_levels[j], 6) + "g";
         if (rank == 0)
           create_directories(level_directory);
         const MonteCarloTable table =
-          run_monte_carlo(runner, input.fragility.realizations_per_level,
-                          levels[j] / reference_pga, level_directory + "/realizations.csv",
-                          "PGA " + rounded(levels[j]) + " g: ");
-        if (rank == 0)
+          run_monte_carlo(runner, per_level, all_levels[j] / reference_pga,
+                          level_directory + "/realizations.csv", comm,
+                          "PGA " + rounded(all_levels[j]) + " g: ", &progress, j * per_level);
+        interrupted = table.interrupted; // the same on every rank
+        if (rank == 0 && !interrupted)
           counts.push_back(count_exceedances(table, runner, limits));
       }
+    progress.finish();
+    timer.leave_subsection();
+    const int status = interrupted ? interrupted_exit_status() : 0;
     if (rank != 0)
-      return 0;
+      return status;
+    timer.enter_subsection("fit and output");
+
+    // Interrupted: the points and curves of the levels done.
+    const std::vector<double> levels(all_levels.begin(), all_levels.begin() + counts.size());
+    if (interrupted)
+      pcout << "fragility interrupted after " << levels.size() << " of " << all_levels.size()
+            << " PGA levels: the points and curves are of these; the same command runs the rest\n";
+    JsonWriter json;
+    begin_summary(json, "fragility", input, interrupted ? "interrupted" : "completed");
+    json.value("intensity_measure", "PGA (g)")
+      .value("pga_levels_g", all_levels)
+      .value("completed_levels", levels.size())
+      .value("realizations_per_level", per_level)
+      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
+    if (levels.empty()) // nothing to fit
+      {
+        json.end_object();
+        write_file_atomically(directory + "/summary.json", json.str());
+        return status;
+      }
 
     // One curve for pounding (if there are gaps) and one per drift limit.
     std::vector<std::string>                     curve_names;
@@ -567,12 +693,6 @@ namespace poundfe
     write_file_atomically(directory + "/fragility_points.csv", points);
     write_file_atomically(directory + "/fragility_curves.csv", fitted);
 
-    JsonWriter json;
-    begin_summary(json, "fragility", input);
-    json.value("intensity_measure", "PGA (g)")
-      .value("pga_levels_g", levels)
-      .value("realizations_per_level", input.fragility.realizations_per_level)
-      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
     json.begin_array("curves");
     Plot plot{"fragility.png", "lognormal fragility (maximum likelihood)", "PGA (g)",
               "P(exceedance | PGA)", {}};
@@ -593,20 +713,22 @@ namespace poundfe
         if (c.fitted)
           plot.series.push_back({"fragility_curves.csv", "1:" + std::to_string(i + 2),
                                  curve_names[i] + " fit", "lines"});
-        std::cout << curve_names[i] << ": ";
+        pcout << curve_names[i] << ": ";
         if (c.fitted)
-          std::cout << "theta = " << rounded(c.theta) << " g, beta = " << rounded(c.beta);
+          pcout << "theta = " << rounded(c.theta) << " g, beta = " << rounded(c.beta);
         else
-          std::cout << "not fitted (" << c.note << ")";
-        std::cout << "\n";
+          pcout << "not fitted (" << c.note << ")";
+        pcout << "\n";
       }
     json.end_array().end_object();
-    if (input.plots)
+    if (input.plots && !interrupted) // stop soon: the resumed run draws it
       draw_plots(directory, {plot});
     write_file_atomically(directory + "/summary.json", json.str());
-    std::cout << "results in " << directory
-              << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
-              << (input.plots ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
-    return 0;
+    timer.leave_subsection();
+    pcout << "results in " << directory
+          << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
+          << (input.plots && !interrupted ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
+    print_timing(timer);
+    return status;
   }
 } // namespace poundfe

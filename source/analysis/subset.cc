@@ -1,17 +1,22 @@
 #include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/subset.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/progress.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plots.h>
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <numeric>
 #include <sstream>
 
@@ -19,6 +24,9 @@ namespace poundfe
 {
   namespace
   {
+    /// Where the ranks other than 0 send their progress.
+    std::ostream silent(nullptr);
+
     /// Stream of chain j at level l: independent of the level-0 stream (seed, i).
     std::uint64_t
     chain_seed(const std::uint64_t seed, const unsigned int level)
@@ -79,9 +87,8 @@ namespace poundfe
 
   SubsetResult
   subset_simulation(const ResponseFunction &response, const unsigned int n_variables,
-                    const double threshold, const SubsetSettings &settings)
+                    const double threshold, const SubsetSettings &settings, const MPI_Comm comm)
   {
-    const MPI_Comm     comm    = MPI_COMM_WORLD;
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     const unsigned int N       = settings.samples_per_level;
@@ -89,24 +96,41 @@ namespace poundfe
     SubsetResult       result;
     unsigned long      runs = 0;
 
+    // On a terminal: rank 0's samples of each level (the others run as many).
+    const auto level_progress = [&](const unsigned int l, const unsigned long total) {
+      return std::make_unique<Progress>(rank == 0 ? std::cerr : silent,
+                                        "level " + std::to_string(l) +
+                                          (n_ranks > 1 ? " (rank 0): samples" : ": samples"),
+                                        total);
+    };
+    // A rank that receives SIGINT or SIGTERM stops its samples; at the end
+    // of the level, where all ranks meet anyway, they agree to drop it.
+    bool stopped = false;
+
     // Level 0: direct Monte Carlo, sample i on rank i mod P.
     LevelSamples level;
     level.response.assign(N, 0.0);
     level.chain_length.assign(N, 1);
+    std::unique_ptr<Progress> progress = level_progress(0, (N + n_ranks - 1) / n_ranks);
     for (unsigned int i = rank; i < N; i += n_ranks)
       {
+        if ((stopped = interruption_requested()))
+          break;
         std::vector<double> xi(n_variables);
         standard_normals(settings.seed, i, xi);
         level.response[i] = response(xi);
         ++runs;
         level.owned.push_back(i);
         level.xi.push_back(std::move(xi));
+        progress->update(level.owned.size());
       }
+    progress->finish();
     MPI_Allreduce(MPI_IN_PLACE, level.response.data(), N, MPI_DOUBLE, MPI_SUM, comm);
+    result.interrupted = dealii::Utilities::MPI::logical_or(stopped, comm);
 
     double probability = 1, variance = 0;
     double acceptance  = 0;
-    for (unsigned int l = 0;; ++l)
+    for (unsigned int l = 0; !result.interrupted; ++l)
       {
         // order: largest response first, ties by id (the same on every rank)
         std::vector<unsigned int> order(N);
@@ -185,7 +209,11 @@ namespace poundfe
               }
           }
         level.xi.clear();
-        for (unsigned int j = rank, mine = 0; j < n_chains; j += n_ranks, ++mine)
+        unsigned long my_states = 0;
+        for (unsigned int j = rank; j < n_chains; j += n_ranks)
+          my_states += next.chain_length[j];
+        progress = level_progress(l + 1, my_states);
+        for (unsigned int j = rank, mine = 0; j < n_chains && !stopped; j += n_ranks, ++mine)
           {
             state = std::move(my_seeds[mine]);
             // modified Metropolis from the seed, with the stream of (seed, level, chain)
@@ -195,6 +223,8 @@ namespace poundfe
               {
                 if (k > 0)
                   {
+                    if ((stopped = interruption_requested()))
+                      break;
                     bool moved = false;
                     for (unsigned int c = 0; c < n_variables; ++c)
                       {
@@ -221,9 +251,12 @@ namespace poundfe
                 next.response[start[j] + k] = y;
                 next.owned.push_back(start[j] + k);
                 next.xi.push_back(state);
+                progress->update(next.owned.size());
               }
           }
+        progress->finish();
         MPI_Allreduce(MPI_IN_PLACE, next.response.data(), N, MPI_DOUBLE, MPI_SUM, comm);
+        result.interrupted = dealii::Utilities::MPI::logical_or(stopped, comm);
         accepted      = dealii::Utilities::MPI::sum(accepted, comm);
         proposed      = dealii::Utilities::MPI::sum(proposed, comm);
         acceptance    = proposed > 0 ? static_cast<double>(accepted) / proposed : 0;
@@ -236,12 +269,16 @@ namespace poundfe
   }
 
   int
-  subset_command(const Analysis &analysis, const std::string &directory)
+  subset_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
   {
-    const InputParameters  &input = analysis.input;
-    const SubsetParameters &ss    = input.subset;
-    const unsigned int      rank  = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    RealizationRunner       runner(analysis);
+    const InputParameters     &input = analysis.input;
+    const SubsetParameters    &ss    = input.subset;
+    const unsigned int         rank  = dealii::Utilities::MPI::this_mpi_process(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    // rank 0's own times: the other ranks leave before the output section
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    timer.enter_subsection("set-up");
+    RealizationRunner runner(analysis);
     std::vector<unsigned int> columns;
     std::string               unit;
     if (ss.response == "peak drift ratio")
@@ -262,6 +299,7 @@ namespace poundfe
       }
     if (rank == 0)
       create_directories(directory);
+    timer.leave_subsection();
 
     std::vector<double> responses;
     unsigned long       failed_runs = 0;
@@ -279,12 +317,17 @@ namespace poundfe
     settings.max_levels              = ss.max_levels;
     settings.proposal_spread         = ss.proposal_spread;
     settings.seed                    = runner.stochastic_load().seed();
-    const auto         start  = std::chrono::steady_clock::now();
-    const SubsetResult result = subset_simulation(response, runner.n_variables(), ss.threshold, settings);
+    timer.enter_subsection("levels");
+    const auto         start = std::chrono::steady_clock::now();
+    const SubsetResult result =
+      subset_simulation(response, runner.n_variables(), ss.threshold, settings, comm);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    failed_runs       = dealii::Utilities::MPI::sum(failed_runs, MPI_COMM_WORLD);
+    failed_runs       = dealii::Utilities::MPI::sum(failed_runs, comm);
+    timer.leave_subsection();
+    const int status = result.interrupted ? interrupted_exit_status() : 0;
     if (rank != 0)
-      return 0;
+      return status;
+    timer.enter_subsection("output");
 
     std::string csv = "level,threshold,conditional_probability,exceedance_probability,"
                       "acceptance_rate,coefficient_of_variation\n";
@@ -302,20 +345,21 @@ namespace poundfe
     write_file_atomically(directory + "/subset_levels.csv", csv);
 
     JsonWriter json;
-    begin_summary(json, "subset", input);
+    begin_summary(json, "subset", input, result.interrupted ? "interrupted" : "completed");
     json.value("response", ss.response)
       .value("building", ss.building)
       .value("storey", ss.storey)
       .value("threshold", ss.threshold)
       .value("samples_per_level", ss.samples_per_level)
       .value("conditional_probability", ss.conditional_probability)
-      .value("random_variables", runner.n_variables())
-      .value("failure_probability", result.probability)
-      .value("coefficient_of_variation", result.coefficient_of_variation)
-      .value("reached_threshold", result.reached_threshold)
+      .value("random_variables", runner.n_variables());
+    if (!result.interrupted) // otherwise there is no estimate at the threshold
+      json.value("failure_probability", result.probability)
+        .value("coefficient_of_variation", result.coefficient_of_variation);
+    json.value("reached_threshold", result.reached_threshold)
       .value("model_runs", result.model_runs)
       .value("failed_model_runs", failed_runs)
-      .value("ranks", dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))
+      .value("ranks", dealii::Utilities::MPI::n_mpi_processes(comm))
       .value("wall_time_s", wall);
     json.begin_array("levels");
     for (const SubsetLevel &L : result.levels)
@@ -327,18 +371,25 @@ namespace poundfe
         .end_object();
     json.end_array().end_object();
     write_file_atomically(directory + "/summary.json", json.str());
-    if (input.plots)
+    if (input.plots && !result.interrupted) // stop soon
       draw_plots(directory, {Plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
                                   ss.response + unit, "exceedance probability (log)",
                                   {{"subset_levels.csv", "2:4", "levels", "linespoints"}},
                                   true}});
+    timer.leave_subsection();
 
-    std::cout << "Subset Simulation: P(" << ss.response << " > " << ss.threshold << unit
-              << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
-              << "), " << result.levels.size() << " levels, " << result.model_runs
-              << " model runs" << (result.reached_threshold ? "" : " (stopped at Maximum levels)")
-              << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
-              << (input.plots ? ", subset_levels.png" : "") << ")\n";
-    return 0;
+    if (result.interrupted)
+      pcout << "Subset Simulation interrupted after " << result.levels.size()
+            << " levels (no estimate at the threshold; subset_levels.csv has the levels), "
+            << result.model_runs << " model runs";
+    else
+      pcout << "Subset Simulation: P(" << ss.response << " > " << ss.threshold << unit
+            << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
+            << "), " << result.levels.size() << " levels, " << result.model_runs << " model runs"
+            << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
+    pcout << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
+          << (input.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
+    print_timing(timer);
+    return status;
   }
 } // namespace poundfe

@@ -3,6 +3,10 @@
 
 #include <Eigen/SparseCholesky>
 
+#include <mpi.h>
+
+#include <stdexcept>
+
 namespace poundfe
 {
   namespace
@@ -53,9 +57,18 @@ namespace poundfe
     return {"eigen-ldlt", "umfpack", "petsc", "trilinos"};
   }
 
+  bool
+  linear_solver_needs_mpi(const std::string &name)
+  {
+    return name == "petsc" || name == "trilinos";
+  }
+
   std::unique_ptr<LinearSolver>
   create_linear_solver(const std::string &name)
   {
+    int initialized = 0;
+    if (linear_solver_needs_mpi(name) && (MPI_Initialized(&initialized), !initialized))
+      throw std::logic_error("the " + name + " solver needs MPI initialised (MPI_InitFinalize)");
     if (name == "eigen-ldlt")
       return create_eigen_ldlt_solver();
     if (name == "umfpack")

@@ -113,7 +113,7 @@ namespace
         SubsetSettings settings;
         settings.samples_per_level = samples_per_level;
         settings.seed              = 100 + r;
-        const SubsetResult result  = subset_simulation(y, n, beta, settings);
+        const SubsetResult result  = subset_simulation(y, n, beta, settings, MPI_COMM_WORLD);
         BOOST_TEST(result.reached_threshold);
         estimates.push_back(result.probability);
         reported += result.coefficient_of_variation / runs;
@@ -164,7 +164,7 @@ BOOST_AUTO_TEST_CASE(subset_simulation_against_crude_monte_carlo_on_the_oscillat
   std::filesystem::remove_all(directory);
   std::filesystem::create_directories(directory);
   const unsigned long   n_mc  = 6000;
-  const MonteCarloTable table = run_monte_carlo(runner, n_mc, 1.0, directory + "/realizations.csv");
+  const MonteCarloTable table = run_monte_carlo(runner, n_mc, 1.0, directory + "/realizations.csv", MPI_COMM_WORLD);
   std::filesystem::remove_all(directory);
   const std::vector<double> peaks = table.completed_values(drift);
   BOOST_TEST(peaks.size() == n_mc);
@@ -199,7 +199,7 @@ BOOST_AUTO_TEST_CASE(subset_simulation_against_crude_monte_carlo_on_the_oscillat
       SubsetSettings settings;
       settings.samples_per_level = 1000;
       settings.seed              = 40 + r;
-      const SubsetResult result  = subset_simulation(y, runner.n_variables(), threshold, settings);
+      const SubsetResult result  = subset_simulation(y, runner.n_variables(), threshold, settings, MPI_COMM_WORLD);
       ss += result.probability / 3;
       ss_variance += std::pow(result.coefficient_of_variation * result.probability / 3, 2);
       runs += result.model_runs;

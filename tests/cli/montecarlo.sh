@@ -11,13 +11,7 @@ poundfe=$1 mpirun=$2 input=$3
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d)
 trap 'pkill -9 -f "$work" 2> /dev/null || true; rm -rf "$work"' EXIT
-fail() { echo "FAIL $*"; exit 1; }
-# summary.json without what depends on the number of ranks or the clock
-strip() { grep -v -e wall_time -e realizations_per_second -e '"ranks"' -e realizations_run_now "$1"; }
-same_summary() {
-  diff <(strip "$1") <(strip "$2") > "$work/diff" || { cat "$work/diff" | head; fail "$3"; }
-}
-rows() { tail -n +2 "$1" | sort -t, -k1,1n; }
+. "$(dirname "$0")/helpers.sh"
 
 "$poundfe" montecarlo "$input" --output "$work/one" > /dev/null
 "$mpirun" -np 2 "$poundfe" montecarlo "$input" --output "$work/two" > /dev/null
@@ -37,10 +31,7 @@ echo "ok   montecarlo: -np 2 gives the realizations and summary of one rank"
 sed 's/set Realizations   = 8/set Realizations   = 20/' "$input" > "$work/twenty.prm"
 "$poundfe" montecarlo "$work/twenty.prm" --output "$work/twenty" > /dev/null
 "$mpirun" -np 2 "$poundfe" montecarlo "$work/twenty.prm" --output "$work/killed" > "$work/killed.log" 2>&1 &
-for i in $(seq 1 1500); do
-  [ -f "$work/killed/realizations.csv" ] && [ "$(wc -l < "$work/killed/realizations.csv")" -ge 3 ] && break
-  sleep 0.02
-done
+wait_for_rows "$work/killed/realizations.csv" 2
 pkill -9 -f "$work/killed" || true
 { wait; } 2> /dev/null || true
 before=$(($(wc -l < "$work/killed/realizations.csv") - 1))

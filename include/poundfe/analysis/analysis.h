@@ -11,6 +11,11 @@
 #include <string>
 #include <vector>
 
+namespace dealii
+{
+  class TimerOutput;
+}
+
 namespace poundfe
 {
   class JsonWriter;
@@ -30,6 +35,10 @@ namespace poundfe
   /// Opens a command's summary.json with program, command, input and status.
   void begin_summary(JsonWriter &json, const std::string &command, const InputParameters &input,
                      const std::string &status = "completed");
+
+  /// A command's timer table, on a terminal only (stdout and stderr are
+  /// terminals: pipes, log files and tests see nothing).
+  void print_timing(const dealii::TimerOutput &timer);
 } // namespace poundfe
 
 #endif

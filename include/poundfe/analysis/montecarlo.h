@@ -5,11 +5,16 @@
 //   give the same numbers. Each finished realization is appended to
 //   realizations.csv by rank 0 (workers send their rows to it), so a killed
 //   run started again with the same command runs only the missing ones.
+//   SIGINT or SIGTERM stops a run after the realizations under way; it then
+//   writes its results over the rows it has with status "interrupted" and
+//   exits with 128 + the signal.
 #ifndef poundfe_analysis_montecarlo_h
 #define poundfe_analysis_montecarlo_h
 
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/analysis/realization.h>
+
+#include <mpi.h>
 
 #include <cstdint>
 #include <string>
@@ -17,6 +22,8 @@
 
 namespace poundfe
 {
+  class Progress;
+
   struct MonteCarloTable
   {
     std::vector<std::string>         columns;      // response names
@@ -25,22 +32,32 @@ namespace poundfe
     std::vector<std::vector<double>> responses;
     unsigned long                    n_run_now = 0; // realizations run by this call
     double                           wall_time = 0; // s
+    /// Stopped by SIGINT or SIGTERM (on every rank): realizations are missing,
+    /// and a later call with the same file runs them.
+    bool interrupted = false;
 
     /// Values of column c over the completed realizations.
     std::vector<double> completed_values(unsigned int c) const;
   };
 
   /// Runs the realizations 0..n-1 that `file` does not hold yet over the
-  /// ranks of MPI_COMM_WORLD, appending each to `file` as it finishes.
-  /// Returns the table of 0..n-1 on rank 0 and an empty one elsewhere.
+  /// ranks of `comm` (each must call it), appending each to `file` as it
+  /// finishes; on SIGINT or SIGTERM (interruption.h) it stops after the
+  /// realizations under way. Returns the table of the realizations of 0..n-1
+  /// done on rank 0 and an empty one elsewhere. Rank 0 reports to `progress`
+  /// (as progress_offset + realizations done) or, when that does not show,
+  /// prints a line every tenth.
   MonteCarloTable run_monte_carlo(RealizationRunner &runner, unsigned long n,
                                   double amplitude_factor, const std::string &file,
-                                  const std::string &label = "");
+                                  MPI_Comm comm, const std::string &label = "",
+                                  Progress *progress = nullptr, unsigned long progress_offset = 0);
 
-  /// The `montecarlo` command.
-  int montecarlo_command(const Analysis &analysis, const std::string &output_directory);
-  /// The `fragility` command.
-  int fragility_command(const Analysis &analysis, const std::string &output_directory);
+  /// The `montecarlo` command, on every rank of `comm`.
+  int montecarlo_command(const Analysis &analysis, const std::string &output_directory,
+                         MPI_Comm comm);
+  /// The `fragility` command, on every rank of `comm`.
+  int fragility_command(const Analysis &analysis, const std::string &output_directory,
+                        MPI_Comm comm);
 } // namespace poundfe
 
 #endif

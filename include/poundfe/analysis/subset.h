@@ -17,6 +17,8 @@
 
 #include <poundfe/analysis/analysis.h>
 
+#include <mpi.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -48,18 +50,23 @@ namespace poundfe
     std::vector<SubsetLevel> levels;
     unsigned long            model_runs = 0;
     bool                     reached_threshold = false; // false: stopped at max_levels
+    /// Stopped by SIGINT or SIGTERM: `levels` are the thresholds reached
+    /// (none when level 0 was cut), `probability` is P(Y > levels.back().threshold).
+    bool interrupted = false;
   };
 
   /// Y(xi) of one sample; called on the rank that owns the chain.
   using ResponseFunction = std::function<double(const std::vector<double> &)>;
 
-  /// Runs over the ranks of MPI_COMM_WORLD (each rank must call it); the
-  /// result is the same on every rank.
+  /// Runs over the ranks of `comm` (each rank must call it); the result is
+  /// the same on every rank. Stops at the next sample on SIGINT or SIGTERM
+  /// (interruption.h) and drops the level under way.
   SubsetResult subset_simulation(const ResponseFunction &response, unsigned int n_variables,
-                                 double threshold, const SubsetSettings &settings);
+                                 double threshold, const SubsetSettings &settings, MPI_Comm comm);
 
-  /// The `subset` command.
-  int subset_command(const Analysis &analysis, const std::string &output_directory);
+  /// The `subset` command, on every rank of `comm`.
+  int subset_command(const Analysis &analysis, const std::string &output_directory,
+                     MPI_Comm comm);
 } // namespace poundfe
 
 #endif

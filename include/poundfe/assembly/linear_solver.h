@@ -40,6 +40,10 @@ namespace poundfe
   /// Names accepted by create_linear_solver.
   std::vector<std::string> linear_solver_names();
 
+  /// Whether the solver needs MPI, PETSc and Trilinos initialised first
+  /// (dealii::Utilities::MPI::MPI_InitFinalize): "petsc" and "trilinos".
+  bool linear_solver_needs_mpi(const std::string &name);
+
   std::unique_ptr<LinearSolver> create_eigen_ldlt_solver();
   std::unique_ptr<LinearSolver> create_umfpack_solver();
   std::unique_ptr<LinearSolver> create_petsc_solver();

@@ -1,0 +1,62 @@
+#include <poundfe/base/interruption.h>
+
+#include <csignal>
+
+namespace poundfe
+{
+  namespace
+  {
+    constexpr int signals[] = {SIGINT, SIGTERM};
+
+    /// The first signal that arrived, 0: none.
+    volatile std::sig_atomic_t received = 0;
+    /// Whether the handler is installed for signals[i] (not when ignored).
+    bool installed[2] = {false, false};
+
+    extern "C" void
+    on_signal(const int signal)
+    {
+      received = signal;
+      // Only sigaction here (async-signal-safe): the next signal of either
+      // kind takes the default action, so a user can still kill.
+      struct sigaction action = {};
+      action.sa_handler       = SIG_DFL;
+      sigemptyset(&action.sa_mask);
+      for (int i = 0; i < 2; ++i)
+        if (installed[i])
+          sigaction(signals[i], &action, nullptr);
+    }
+  } // namespace
+
+  void
+  install_interruption_handlers()
+  {
+    for (int i = 0; i < 2; ++i)
+      {
+        struct sigaction old = {}, action = {};
+        if (sigaction(signals[i], nullptr, &old) != 0 || old.sa_handler == SIG_IGN)
+          continue;
+        action.sa_handler = on_signal;
+        // the other signal waits while the handler runs
+        sigemptyset(&action.sa_mask);
+        for (const int s : signals)
+          sigaddset(&action.sa_mask, s);
+        // the I/O under way when it arrives simply continues
+        action.sa_flags = SA_RESTART;
+        installed[i]    = true;
+        sigaction(signals[i], &action, nullptr);
+      }
+  }
+
+  bool
+  interruption_requested()
+  {
+    return received != 0;
+  }
+
+  int
+  interrupted_exit_status()
+  {
+    return 128 + (received != 0 ? static_cast<int>(received) : SIGINT);
+  }
+} // namespace poundfe
