@@ -88,9 +88,7 @@ namespace
     return line;
   }
 
-  /// The commands that split their work over MPI ranks; they also stop
-  /// cleanly on SIGINT or SIGTERM. (A handler that no loop polls would only
-  /// delay Ctrl-C, so the other commands keep the default action.)
+  /// The commands that split their work over MPI ranks.
   bool
   runs_over_mpi(const std::string &command)
   {
@@ -126,7 +124,10 @@ main(int argc, char **argv)
       std::cout << usage;
       return args.empty() ? 1 : 0;
     }
-  if (runs_over_mpi(command))
+  // The commands whose loops poll for SIGINT/SIGTERM and stop cleanly. (A
+  // handler that no loop polls would only delay Ctrl-C, so modal and
+  // ground-motion keep the default action.)
+  if (runs_over_mpi(command) || command == "run")
     poundfe::install_interruption_handlers();
   try
     {

@@ -2,6 +2,8 @@
 #include <poundfe/analysis/run_summary.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/progress.h>
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/output/atomic_file.h>
@@ -184,7 +186,8 @@ namespace poundfe
   }
 
   RunStatus
-  TimeHistory::run(const Excitation &excitation, const Observers &observers)
+  TimeHistory::run(const Excitation &excitation, const Observers &observers,
+                   const bool interruptible)
   {
     const unsigned long n = n_steps(excitation);
     const double        dt = analysis.input.time_step;
@@ -202,6 +205,11 @@ namespace poundfe
       {
         for (unsigned long step = 1; step <= n; ++step)
           {
+            if (interruptible && interruption_requested())
+              {
+                status.kind = RunStatus::Kind::interrupted;
+                break;
+              }
             integrator.advance(load);
             view.set_step(step, excitation.ground_acceleration(step * dt));
             for (StepObserver *observer : observers)
@@ -220,6 +228,28 @@ namespace poundfe
       observer->finish(view, status);
     return status;
   }
+
+  namespace
+  {
+    /// Steps done, their rate and the time left, on a terminal.
+    class ProgressReport : public StepObserver
+    {
+    public:
+      explicit ProgressReport(const unsigned long n_steps)
+        : progress(std::cerr, "run: steps", n_steps)
+      {}
+      void
+      observe_step(const ResponseView &state) override
+      {
+        if (state.step() % 64 == 0) // the clock is read in update(): not every step
+          progress.update(state.step());
+      }
+      void finish(const ResponseView &, const RunStatus &) override { progress.finish(); }
+
+    private:
+      Progress progress;
+    };
+  } // namespace
 
   RunResult
   run_time_history(const Analysis &analysis, const Excitation &excitation,
@@ -244,11 +274,13 @@ namespace poundfe
           analysis, excitation, peaks, directory, options.plots && input.plots,
           history.linear_solver_name(), history.tangent_update()));
       }
+    if (options.progress)
+      outputs.push_back(std::make_unique<ProgressReport>(history.n_steps(excitation)));
     for (const auto &output : outputs)
       observers.push_back(output.get());
 
     RunResult result;
-    result.status               = history.run(excitation, observers);
+    result.status               = history.run(excitation, observers, options.interruptible);
     const ResponseView &state   = history.state();
     result.statistics           = state.statistics();
     result.energy               = state.energy();
@@ -264,6 +296,8 @@ namespace poundfe
     const Excitation excitation = make_excitation(analysis);
     RunOptions       options;
     options.output_directory = output_directory;
+    options.progress         = true;
+    options.interruptible    = true;
     const RunResult  result  = run_time_history(analysis, excitation, options);
     const RunStatus &status  = result.status;
     std::cout << "poundfe run: " << status.steps << " steps to t = " << status.end_time << " s in "
@@ -284,6 +318,12 @@ namespace poundfe
         std::cerr << "poundfe: numerical failure: " << status.message
                   << " (results up to that time are written)\n";
         return 2;
+      }
+    if (status.kind == RunStatus::Kind::interrupted)
+      {
+        std::cerr << "poundfe: interrupted at t = " << status.end_time
+                  << " s (results up to that time are written)\n";
+        return interrupted_exit_status();
       }
     return 0;
   }

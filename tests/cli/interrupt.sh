@@ -119,3 +119,26 @@ same_summary "$work/fragility-reference/summary.json" "$d/summary.json" "fragili
 diff "$work/fragility-reference/fragility_points.csv" "$d/fragility_points.csv" > /dev/null ||
   fail "fragility: resumed points differ from uninterrupted"
 echo "ok   fragility, SIGINT in the second level: exit status 130, one level done, resumed as uninterrupted"
+
+# run: a long free vibration after the motion, stopped with SIGINT after a
+# second: the loop stops at the end of a step, every file is complete and
+# the time series end at the summary's end time.
+d=$work/run status=0
+sed 's/^subsection Time integration/subsection Time integration\n  set End time = 2000/
+     s/set VTU interval *= .*/set VTU interval = 0/; s/set Output interval *= .*/set Output interval = 0.1/' \
+  "$input" > "$work/long.prm"
+grep -q "End time = 2000" "$work/long.prm" || fail "run: could not make the long input"
+"$poundfe" run "$work/long.prm" --output "$d" > "$d.log" 2>&1 &
+job=$!
+for _ in $(seq 1 1500); do [ -d "$d" ] && break; sleep 0.02; done
+sleep 1
+kill -INT "$job"
+wait "$job" 2> /dev/null || status=$?
+check_interrupted "$d" 130 "$status"
+end=$(sed -n 's/.*"end_time_s": \([0-9.e+-]*\).*/\1/p' "$d/summary.json")
+last=$(tail -n 1 "$d/drift.csv" | cut -d, -f1)
+awk -v e="$end" 'BEGIN { exit !(e > 0 && e < 2000) }' || fail "run: end time $end"
+# the last row is at the last output time before the end
+awk -v e="$end" -v l="$last" 'BEGIN { exit !(l <= e && e - l < 0.1 + 1e-9) }' || fail "run: last row at $last, end $end"
+grep -q "interrupted at t = " "$d.log" || fail "run: no message: $(cat "$d.log")"
+echo "ok   run, SIGINT: exit status 130, interrupted at t = $end s, files complete"

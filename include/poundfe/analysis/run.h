@@ -19,6 +19,8 @@ namespace poundfe
     bool        csv   = true;     // the recorders of the input (Output/Recorders)
     bool        vtu   = true;
     bool        plots = true;
+    bool        progress      = false; // steps, rate and ETA on a terminal
+    bool        interruptible = false; // SIGINT/SIGTERM end the run after the current step
   };
 
   /// What a run with the standard observers reports to its caller.
@@ -44,8 +46,12 @@ namespace poundfe
 
     /// From rest to the end time under `excitation`; the observers see the
     /// initial state, every step and the end. A NumericalError ends the
-    /// run with status failed; SIGINT/SIGTERM with status interrupted.
-    RunStatus run(const Excitation &excitation, const Observers &observers);
+    /// run with status failed; when `interruptible`, SIGINT/SIGTERM end it
+    /// after the current step with status interrupted. (A realization of a
+    /// probabilistic analysis is not interruptible: its driver stops
+    /// between realizations, so no partial realization is ever recorded.)
+    RunStatus run(const Excitation &excitation, const Observers &observers,
+                  bool interruptible = false);
 
     /// The view observers read; valid for the life of this object.
     const ResponseView &state() const { return view; }
@@ -53,9 +59,10 @@ namespace poundfe
     std::string tangent_update() const { return integrator.tangent_update(); }
     std::string linear_solver_name() const { return integrator.linear_solver_name(); }
 
-  private:
+    /// Steps of the analysis time step to the end time.
     unsigned long n_steps(const Excitation &excitation) const;
 
+  private:
     const Analysis   &analysis;
     NonlinearElements elements; // before the integrator, which points to them
     NewmarkIntegrator integrator;
