@@ -339,6 +339,14 @@ namespace poundfe
       all.push_back(Plot{"ground_motion.png", excitation.ground_motion().description(),
                          "time (s)", "ground acceleration (m/s^2)",
                          {{"ground_motion.csv", "1:2", "a_g", "lines"}}});
+    if (exists(directory, "base_shear.csv"))
+      {
+        Plot shear{"base_shear.png", "Base shear (element forces)", "time (s)", "base shear (N)", {}};
+        for (unsigned int b = 0; b < model.buildings.size(); ++b)
+          shear.series.push_back(
+            {"base_shear.csv", "1:" + std::to_string(b + 2), model.buildings[b].name, "lines"});
+        all.push_back(shear);
+      }
     if (exists(directory, "energy.csv"))
       {
         Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)",
