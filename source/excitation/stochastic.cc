@@ -291,8 +291,9 @@ namespace poundfe
         case StochasticMethod::filtered_white_noise:
           kind = "filtered white noise";
           break;
-        default:
+        case StochasticMethod::spectral_representation:
           kind = "spectral representation";
+          break;
       }
     const std::string process =
       settings.method == StochasticMethod::white_noise ?
