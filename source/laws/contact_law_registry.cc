@@ -1,10 +1,10 @@
 // The contact law registry: every law the input may name, with its factory,
 // its damping formula and its impact time scale (ContactLawType).
 // Adding a built-in law: its file source/laws/<law>.cc, which defines the
-// class and contact_laws::<law>(), and its name in the two lists below.
-// (The built-in laws are listed rather than registered by static objects in
-// their own files because the core is a static library: the linker drops
-// an object file that nothing refers to, registrar and all.)
+// class and contact_laws::<law>() (its ContactLawType), and LAW(<law>) in
+// the one list below. (Built-in laws are listed rather than registered by
+// static objects in their own files because the core is a static library:
+// the linker drops an object file that nothing refers to, registrar and all.)
 #include <poundfe/laws/contact_law.h>
 
 #include <algorithm>
@@ -12,10 +12,16 @@
 
 namespace poundfe
 {
+// The built-in laws, in the order the input's documentation lists them.
+#define POUNDFE_BUILT_IN_CONTACT_LAWS(LAW)                                                    \
+  LAW(linear) LAW(kelvin_voigt) LAW(modified_kelvin_voigt) LAW(hertz) LAW(hertz_damp)        \
+    LAW(jankowski)
+
   namespace contact_laws
   {
-    ContactLawType linear(), kelvin_voigt(), modified_kelvin_voigt(), hertz(), hertz_damp(),
-      jankowski();
+#define POUNDFE_DECLARE_CONTACT_LAW(law) ContactLawType law();
+    POUNDFE_BUILT_IN_CONTACT_LAWS(POUNDFE_DECLARE_CONTACT_LAW)
+#undef POUNDFE_DECLARE_CONTACT_LAW
   } // namespace contact_laws
 
   namespace
@@ -24,12 +30,10 @@ namespace poundfe
     registry()
     {
       // built on first use, so registrars in other files may run in any order
-      static std::vector<ContactLawType> types{contact_laws::linear(),
-                                               contact_laws::kelvin_voigt(),
-                                               contact_laws::modified_kelvin_voigt(),
-                                               contact_laws::hertz(),
-                                               contact_laws::hertz_damp(),
-                                               contact_laws::jankowski()};
+#define POUNDFE_CONTACT_LAW_TYPE(law) contact_laws::law(),
+      static std::vector<ContactLawType> types{
+        POUNDFE_BUILT_IN_CONTACT_LAWS(POUNDFE_CONTACT_LAW_TYPE)};
+#undef POUNDFE_CONTACT_LAW_TYPE
       return types;
     }
 
