@@ -308,9 +308,9 @@ namespace poundfe
       prm.add_parameter("Tangent update", p.tangent_update,
                         "How the tangent of nonlinear elements enters the solve: woodbury "
                         "keeps the one factorisation of the linear part and adds a dense "
-                        "correction of rank = number of nonlinear elements; refactorize "
-                        "refactorises every iteration; auto picks woodbury for up to 400 "
-                        "nonlinear elements.",
+                        "correction of rank = the elements' total rank (one per uniaxial "
+                        "element); refactorize refactorises every iteration; auto picks "
+                        "woodbury up to a total rank of 100.",
                         Patterns::Selection("auto|woodbury|refactorize"));
       prm.add_parameter("Hysteresis integration", p.hysteresis_integration,
                         "Bouc-Wen z over a step: trapezoidal (second order) or "
