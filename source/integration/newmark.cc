@@ -48,8 +48,8 @@ namespace poundfe
       {
         const NonlinearElement &e = (*elements)[h];
         basis.push_back(e.tangent_basis());
-        AssertThrow(basis[h].rows() == e.n_dofs() && basis[h].cols() == e.rank(),
-                    dealii::ExcMessage(e.label + ": B_e must be n_dofs x rank"));
+        AssertThrow(e.rank() > 0 && basis[h].rows() == e.n_dofs() && basis[h].cols() == e.rank(),
+                    dealii::ExcMessage(e.label + ": B_e must be n_dofs x rank, rank > 0"));
         dof_start.push_back(dof_start.back() + e.n_dofs());
         local_equation.insert(local_equation.end(), e.equations().begin(), e.equations().end());
         d_start.push_back(d_start.back() + e.rank() * e.rank());
