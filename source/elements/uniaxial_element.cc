@@ -14,6 +14,7 @@ namespace poundfe
     , signs(signs)
     , reference_stiffness(reference_stiffness)
     , law(std::move(law))
+    , on_ground{{equations[0] < 0, equations[1] < 0}}
   {
     Assert(this->law, dealii::ExcMessage("a uniaxial element needs a law"));
     reset();
@@ -32,7 +33,7 @@ namespace poundfe
   {
     double d = 0;
     for (unsigned int i = 0; i < 2; ++i)
-      if (equations()[i] >= 0)
+      if (!on_ground[i])
         d += signs[i] * x[i];
     return d;
   }

@@ -48,8 +48,8 @@ namespace poundfe
       {
         const NonlinearElement &e = (*elements)[h];
         basis.push_back(e.tangent_basis());
-        AssertThrow(basis[h].rows() == e.n_dofs() && basis[h].cols() == e.rank(),
-                    dealii::ExcMessage(e.label + ": B_e must be n_dofs x rank"));
+        AssertThrow(e.rank() > 0 && basis[h].rows() == e.n_dofs() && basis[h].cols() == e.rank(),
+                    dealii::ExcMessage(e.label + ": B_e must be n_dofs x rank, rank > 0"));
         dof_start.push_back(dof_start.back() + e.n_dofs());
         local_equation.insert(local_equation.end(), e.equations().begin(), e.equations().end());
         d_start.push_back(d_start.back() + e.rank() * e.rank());
@@ -180,8 +180,7 @@ namespace poundfe
     energy_scale      = 0;
     max_balance_error = 0;
     Vector r = load - system.damping * v0 - system.stiffness * u0;
-    gather(u0, local_u);
-    gather(v0, local_v);
+    gather(u0, v0);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         NonlinearElement  &e = (*elements)[h];
@@ -235,22 +234,27 @@ namespace poundfe
   }
 
   void
-  NewmarkIntegrator::gather(const Vector &global, Vector &local) const
+  NewmarkIntegrator::gather(const Vector &u_global, const Vector &v_global)
   {
     for (unsigned int q = 0; q < local_equation.size(); ++q)
-      local[q] = local_equation[q] >= 0 ? global[local_equation[q]] : 0.0;
+      if (const int i = local_equation[q]; i >= 0)
+        {
+          local_u[q] = u_global[i];
+          local_v[q] = v_global[i];
+        }
+      else
+        local_u[q] = local_v[q] = 0.0;
   }
 
   bool
   NewmarkIntegrator::evaluate_elements(const Vector &u_trial, const Vector &v_trial,
                                        const Level &L)
   {
-    gather(u_trial, local_u);
-    gather(v_trial, local_v);
+    gather(u_trial, v_trial);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         NonlinearElement  &e = (*elements)[h];
-        const unsigned int s = dof_start[h], k = e.n_dofs(), r = e.rank();
+        const unsigned int s = dof_start[h], k = dof_start[h + 1] - s, r = basis[h].cols();
         if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
           {
             failure = e.label + ": " + e.failure();

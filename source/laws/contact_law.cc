@@ -1,14 +1,7 @@
 #include <poundfe/laws/contact_law.h>
-#include <poundfe/laws/hertz.h>
-#include <poundfe/laws/hertz_damp.h>
-#include <poundfe/laws/jankowski.h>
-#include <poundfe/laws/kelvin_voigt.h>
-#include <poundfe/laws/linear_contact.h>
-#include <poundfe/laws/modified_kelvin_voigt.h>
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 namespace poundfe
 {
@@ -56,52 +49,6 @@ namespace poundfe
     return trial.penetration > 0 ? elastic_energy(trial.penetration) : 0.0;
   }
 
-  std::vector<std::string>
-  contact_law_names()
-  {
-    return {"linear", "kelvin-voigt", "modified-kelvin-voigt", "hertz", "hertz-damp", "jankowski"};
-  }
-
-  bool
-  contact_law_is_damped(const std::string &law)
-  {
-    return law != "linear" && law != "hertz";
-  }
-
-  std::unique_ptr<ContactLaw>
-  make_contact_law(const ContactLawParameters &parameters)
-  {
-    const std::string &law = parameters.law;
-    if (law == "linear")
-      return std::make_unique<LinearContact>(parameters);
-    if (law == "kelvin-voigt")
-      return std::make_unique<KelvinVoigt>(parameters);
-    if (law == "modified-kelvin-voigt")
-      return std::make_unique<ModifiedKelvinVoigt>(parameters);
-    if (law == "hertz")
-      return std::make_unique<Hertz>(parameters);
-    if (law == "hertz-damp")
-      return std::make_unique<HertzDamp>(parameters);
-    if (law == "jankowski")
-      return std::make_unique<Jankowski>(parameters);
-    throw std::invalid_argument("unknown contact law '" + law + "'");
-  }
-
-  double
-  damping_from_restitution_formula(const std::string &law, const double e,
-                                   const std::string &variant)
-  {
-    if (law == "kelvin-voigt")
-      return -std::log(e) / std::sqrt(M_PI * M_PI + std::log(e) * std::log(e));
-    if (law == "modified-kelvin-voigt")
-      return (1 - e * e) / (e * (e * (M_PI - 2) + 2));
-    if (law == "hertz-damp")
-      return variant == "ye-li-zhu" ? 8 * (1 - e) / (5 * e) : 3 * (1 - e * e) / 4;
-    if (law == "jankowski")
-      return 9 * std::sqrt(5.0) * (1 - e * e) / (2 * e * (e * (9 * M_PI - 16) + 16));
-    return 0;
-  }
-
   double
   simulate_restitution(const ContactLawParameters &parameters, const double v0)
   {
@@ -111,8 +58,7 @@ namespace poundfe
     const double m         = q.effective_mass;
     // Duration scale of the elastic impact (linear: pi sqrt(m/k); Hertz:
     // 2.94 delta_max / v0), resolved by 20000 steps.
-    const bool   linear = q.law == "linear" || q.law == "kelvin-voigt" ||
-                        q.law == "modified-kelvin-voigt";
+    const bool   linear = contact_law_type(q.law).linear_impact_duration;
     const double duration =
       linear ? M_PI * std::sqrt(m / q.stiffness) :
                2.9432 * std::pow(1.25 * m * v0 * v0 / q.stiffness, 0.4) / v0;

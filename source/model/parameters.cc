@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/laws/contact_law.h>
 #include <poundfe/model/parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -216,14 +217,19 @@ namespace poundfe
       declare_ground_motion(prm, p.ground_motion);
       prm.enter_subsection("Contact");
       ContactParameters &k = p.contact;
-      prm.add_parameter("Law", k.law,
-                        "Gap elements between neighbouring buildings (and at barriers): none, "
-                        "linear (k d), kelvin-voigt (k d + c d'), modified-kelvin-voigt "
-                        "(damping only while approaching), hertz (k d^1.5), hertz-damp "
-                        "(k d^1.5 (1 + xi d'/v0)), jankowski (beta d^1.5 + c(d) d' while "
-                        "approaching).",
-                        Patterns::Selection("none|linear|kelvin-voigt|modified-kelvin-voigt|"
-                                            "hertz|hertz-damp|jankowski"));
+      {
+        // every registered law (laws/contact_law.h)
+        std::string names = "none", laws;
+        for (const std::string &name : contact_law_names())
+          {
+            names += "|" + name;
+            laws += ", " + name + " (" + contact_law_type(name).formula + ")";
+          }
+        prm.add_parameter("Law", k.law,
+                          "Gap elements between neighbouring buildings (and at barriers): "
+                          "none" + laws + ".",
+                          Patterns::Selection(names));
+      }
       prm.add_parameter("Stiffness", k.stiffness,
                         "k in N/m (linear laws) or k_h, beta in N/m^1.5 (Hertz laws, "
                         "Jankowski; concrete ~2.75e9).");
@@ -302,9 +308,9 @@ namespace poundfe
       prm.add_parameter("Tangent update", p.tangent_update,
                         "How the tangent of nonlinear elements enters the solve: woodbury "
                         "keeps the one factorisation of the linear part and adds a dense "
-                        "correction of rank = number of nonlinear elements; refactorize "
-                        "refactorises every iteration; auto picks woodbury for up to 400 "
-                        "nonlinear elements.",
+                        "correction of rank = the elements' total rank (one per uniaxial "
+                        "element); refactorize refactorises every iteration; auto picks "
+                        "woodbury up to a total rank of 100.",
                         Patterns::Selection("auto|woodbury|refactorize"));
       prm.add_parameter("Hysteresis integration", p.hysteresis_integration,
                         "Bouc-Wen z over a step: trapezoidal (second order) or "

@@ -64,3 +64,72 @@ BOOST_AUTO_TEST_CASE(woodbury_solve_matches_dense_solve)
         }
     }
 }
+
+BOOST_AUTO_TEST_CASE(woodbury_solve_with_nonsymmetric_blocks_matches_dense_lu)
+{
+  // D block diagonal with blocks of 1, 2 and 3 columns, dense and
+  // nonsymmetric, one of them singular, some of them zero (inactive); the
+  // columns have up to three nonzeros, some on the ground (row -1).
+  const Analysis     analysis = prepare_analysis(read_parameters("input/two-buildings.prm"));
+  const SparseMatrix A        = analysis.system.stiffness + 1e4 * analysis.system.mass;
+  const unsigned int n        = A.rows();
+  std::mt19937       random(17);
+  std::uniform_int_distribution<int> row(0, n - 1);
+  std::uniform_real_distribution<>   unit(-1, 1);
+  const std::vector<unsigned int>    sizes{1, 2, 3, 1, 2, 3, 2};
+  std::vector<SparseColumn>          columns;
+  for (const unsigned int size : sizes)
+    for (unsigned int j = 0; j < size; ++j)
+      {
+        SparseColumn column;
+        column.rows   = {row(random), columns.size() % 5 == 0 ? -1 : row(random), row(random)};
+        column.values = {unit(random), unit(random), unit(random)};
+        columns.push_back(column);
+      }
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, columns.size());
+  for (unsigned int c = 0; c < columns.size(); ++c)
+    for (unsigned int i = 0; i < 3; ++i)
+      if (columns[c].rows[i] >= 0)
+        B(columns[c].rows[i], c) += columns[c].values[i];
+  Vector r(n);
+  for (unsigned int i = 0; i < n; ++i)
+    r[i] = unit(random);
+  const double scale = A.diagonal().maxCoeff();
+  for (const std::string &name : {std::string("eigen-ldlt"), std::string("umfpack")})
+    {
+      auto solver = create_linear_solver(name);
+      solver->analyze_and_factorize(A);
+      LowRankUpdateSolver woodbury;
+      woodbury.initialize(*solver, columns, n, sizes);
+      BOOST_TEST(woodbury.n_columns() == 14u);
+      for (unsigned int trial = 0; trial < 3; ++trial)
+        {
+          std::vector<double> d;
+          Eigen::MatrixXd     D = Eigen::MatrixXd::Zero(columns.size(), columns.size());
+          unsigned int        first = 0, n_active = 0;
+          for (unsigned int e = 0; e < sizes.size(); ++e)
+            {
+              const unsigned int s = sizes[e];
+              Eigen::MatrixXd    block(s, s);
+              for (unsigned int q = 0; q < s * s; ++q)
+                block.data()[q] = (e % 3 == trial) ? 0.0 : 0.3 * scale * unit(random);
+              if (e == 5 && trial != 2) // a singular block: rank 2 of 3
+                block.col(2) = block.col(0) + block.col(1);
+              if (e % 3 != trial)
+                n_active += s;
+              d.insert(d.end(), block.data(), block.data() + s * s);
+              D.block(first, first, s, s) = block;
+              first += s;
+            }
+          const Eigen::MatrixXd dense    = Eigen::MatrixXd(A) + B * D * B.transpose();
+          const Vector          expected = dense.partialPivLu().solve(r);
+          Vector                x;
+          woodbury.solve(r, d, x);
+          BOOST_TEST_INFO(name << " trial " << trial);
+          const double error = (x - expected).norm() / expected.norm();
+          BOOST_TEST_MESSAGE(name << " trial " << trial << ": relative difference " << error);
+          BOOST_TEST(error < 1e-8);
+          BOOST_TEST(woodbury.n_active() == n_active);
+        }
+    }
+}

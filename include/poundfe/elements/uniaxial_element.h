@@ -19,7 +19,7 @@
 
 namespace poundfe
 {
-  class UniaxialElement : public NonlinearElement
+  class UniaxialElement final : public NonlinearElement
   {
   public:
     /// `reference_stiffness`: k_ref, the part of the law's stiffness that is
@@ -59,6 +59,7 @@ namespace poundfe
     std::array<double, 2>        signs;
     double                       reference_stiffness;
     std::unique_ptr<UniaxialLaw> law;
+    std::array<bool, 2>          on_ground; // equation < 0
     // For the work of a step: the committed deformation and force, the trial deformation.
     double committed_deformation = 0, committed_force = 0, trial_deformation = 0;
   };

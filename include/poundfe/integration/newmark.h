@@ -146,8 +146,8 @@ namespace poundfe
     void   advance_from(unsigned int cuts, double t0, const LoadFunction &load);
     bool   evaluate_elements(const Vector &u_trial, const Vector &v_trial, const Level &L);
     void   update_energy_error();
-    /// The elements' local vectors (0 on ground DOFs) of a global vector.
-    void   gather(const Vector &global, Vector &local) const;
+    /// local_u, local_v: the elements' local vectors (0 on ground DOFs).
+    void   gather(const Vector &u_global, const Vector &v_global);
     /// r -= sum_e (f_e - K_ref,e u_e) at the last evaluated trial state.
     void   subtract_element_forces(Vector &r) const;
     /// Entry (i, j) of element h's B_e D_e B_e^T at the last evaluation.

@@ -3,8 +3,10 @@
 // delta_dot > 0 while the bodies approach. The force is zero for delta <= 0
 // and is never tensile: a damped law whose force would turn negative during
 // restitution is clipped to zero (Anagnostopoulos 1988 and later).
-// Each law lives in its own file and implements respond(delta, delta_dot):
-// force, dF/d delta and dF/d delta_dot of the unclipped law for delta > 0.
+// Each law lives in its own file, source/laws/<law>.cc, and implements
+// respond(delta, delta_dot): force, dF/d delta and dF/d delta_dot of the
+// unclipped law for delta > 0; that file also defines the law's registry
+// entry (ContactLawType below).
 // The damping parameter is given, or derived from a coefficient of
 // restitution e by the law's literature formula (doc/theory.md §4) or by an
 // exact calibration: the value for which a single impact of the effective
@@ -14,15 +16,17 @@
 
 #include <poundfe/laws/uniaxial_law.h>
 
+#include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace poundfe
 {
   struct ContactLawParameters
   {
-    std::string law = "hertz-damp"; // linear|kelvin-voigt|modified-kelvin-voigt|hertz|hertz-damp|jankowski
+    std::string law = "hertz-damp"; // a registered name: contact_law_names()
     double      stiffness      = 0; // k (N/m) or k_h, beta (N/m^1.5)
     double      damping        = 0; // xi (Kelvin-Voigt, Jankowski) or xi_bar (Hertz-damp)
     double      effective_mass = 0; // m_e, kg (Kelvin-Voigt, Jankowski)
@@ -73,7 +77,40 @@ namespace poundfe
     State committed, trial;
   };
 
-  /// Law names accepted by make_contact_law.
+  /// A contact law as the program knows it: the registry holds one per
+  /// name. A law is one file, source/laws/<law>.cc, that defines its class
+  /// and its type; built-in laws are listed in source/laws/contact_law_registry.cc,
+  /// others (tests, extensions) register through a ContactLawRegistrar.
+  struct ContactLawType
+  {
+    std::string name;
+    /// The force, for the input documentation ("k d^1.5").
+    std::string formula;
+    std::function<std::unique_ptr<ContactLaw>(const ContactLawParameters &)> make;
+    /// The damping parameter from a coefficient of restitution e by the
+    /// law's literature formula (`variant`: Contact/Hertz-damp formula);
+    /// empty for a law without damping.
+    std::function<double(double e, const std::string &variant)> damping_from_restitution;
+    /// Whether an elastic impact lasts pi sqrt(m/k) (a linear spring)
+    /// rather than 2.94 delta_max / v0 (Hertz): simulate_restitution's scale.
+    bool linear_impact_duration = false;
+  };
+
+  /// Add a law to the registry; a name can be registered once.
+  void register_contact_law(ContactLawType type);
+
+  /// Registers a law at static initialisation: one object per law, e.g.
+  ///   const ContactLawRegistrar quadratic({"quadratic", "k d^2", make, {}, false});
+  struct ContactLawRegistrar
+  {
+    explicit ContactLawRegistrar(ContactLawType type) { register_contact_law(std::move(type)); }
+  };
+
+  /// The registered law of that name; std::invalid_argument if none.
+  const ContactLawType &contact_law_type(const std::string &name);
+
+  /// Registered law names: the built-in laws, then the others in the order
+  /// they were registered.
   std::vector<std::string> contact_law_names();
 
   std::unique_ptr<ContactLaw> make_contact_law(const ContactLawParameters &parameters);
@@ -81,13 +118,9 @@ namespace poundfe
   /// Whether the law has a damping parameter (linear and Hertz have none).
   bool contact_law_is_damped(const std::string &law);
 
-  /// The literature formula for the damping parameter from e (doc/theory.md
-  /// §4): Kelvin-Voigt xi = -ln e / sqrt(pi^2 + ln^2 e) (Anagnostopoulos);
-  /// modified Kelvin-Voigt xi = (1 - e^2) / (e (e (pi - 2) + 2)) (Mahmoud &
-  /// Jankowski 2011); Hertz-damp xi_bar = 3 (1 - e^2) / 4 (Muthukumar &
-  /// DesRoches 2006) or 8 (1 - e) / (5 e) (Ye, Li & Zhu 2009, variant
-  /// "ye-li-zhu"); Jankowski xi = 9 sqrt(5) (1 - e^2) / (2 e (e (9 pi - 16)
-  /// + 16)) (Jankowski 2005).
+  /// The law's literature formula for the damping parameter from e
+  /// (doc/theory.md §4; each law's file names its source); 0 for a law
+  /// without damping.
   double damping_from_restitution_formula(const std::string &law, double e,
                                           const std::string &variant = "");
 
