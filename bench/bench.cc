@@ -23,7 +23,7 @@
 #include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/assembly/linear_solver.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -40,11 +40,11 @@ namespace
   ten_storey_pair(const InputParameters &base)
   {
     InputParameters p = base;
-    p.buildings.resize(2);
+    p.model.buildings.resize(2);
     for (unsigned int b = 0; b < 2; ++b)
       {
-        BuildingParameters &x = p.buildings[b];
-        x                     = base.buildings[0];
+        BuildingParameters &x = p.model.buildings[b];
+        x                     = base.model.buildings[0];
         x.name                = b == 0 ? "T10a" : "T10b";
         x.n_storeys           = 10;
         x.n_bays              = 3;
@@ -54,7 +54,7 @@ namespace
         x.column_second_moment = {b == 0 ? 1.08e-2 : 5.2e-3};
         x.damping_modes       = {1, 3};
       }
-    p.separations = {0.1};
+    p.model.separations = {0.1};
     return p;
   }
 
@@ -86,7 +86,7 @@ namespace
                     "it/step  %lu cuts %4zu impacts (set-up %.3f s)\n",
                     label, analysis.model.n_equations(), result.n_nonlinear_elements,
                     analysis.model.gaps.size(),
-                    solver.c_str(), input.tangent_update.c_str(), result.status.steps,
+                    solver.c_str(), tangent_update_names().name(input.time_integration.newmark.newton.tangent_update).c_str(), result.status.steps,
                     result.status.steps / best, s.steps ? double(s.iterations) / s.steps : 0.0,
                     s.step_cuts, result.n_impacts, setup);
       }
@@ -144,13 +144,13 @@ main(int argc, char **argv)
   const InputParameters input = read_parameters(file);
   measure("default example (hinges, contact)", input, repeats);
   InputParameters refactorize = input;
-  refactorize.tangent_update  = "refactorize";
+  refactorize.time_integration.newmark.newton.tangent_update = TangentUpdate::refactorize;
   measure("default example (hinges, contact)", refactorize, repeats, {"eigen-ldlt", "umfpack"});
   InputParameters no_contact = input;
   no_contact.contact.law     = "none";
   measure("default example (hinges only)", no_contact, repeats, {"eigen-ldlt"});
   InputParameters elastic = no_contact;
-  for (auto &b : elastic.buildings)
+  for (auto &b : elastic.model.buildings)
     b.hinge_locations.clear();
   measure("default example, elastic", elastic, repeats, {"eigen-ldlt"});
   measure("floor-to-column (hinges, contact)", read_parameters("input/floor-to-column.prm"),

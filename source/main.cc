@@ -149,9 +149,9 @@ main(int argc, char **argv)
           return 1;
         }
       const poundfe::InputParameters input = poundfe::read_parameters(args[1]);
-      if (!mpi && poundfe::linear_solver_needs_mpi(input.linear_solver))
+      if (!mpi && poundfe::linear_solver_needs_mpi(input.time_integration.linear_solver))
         mpi.emplace(argc, argv, 1);
-      const std::string directory = line.output.empty() ? input.output_directory : line.output;
+      const std::string directory = line.output.empty() ? input.output.directory : line.output;
       if (command == "ground-motion")
         return poundfe::ground_motion_command(input, directory, line.n_realizations);
       if (line.n_realizations > 0)

@@ -3,7 +3,7 @@
 #define poundfe_tests_test_utilities_h
 
 #include <poundfe/model/model.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -55,19 +55,20 @@ namespace poundfe_test
   {
     poundfe::InputParameters p;
     p.file = "test";
-    p.buildings.resize(1);
-    auto &b              = p.buildings[0];
+    p.model.buildings.resize(1);
+    auto &b              = p.model.buildings[0];
     b.name               = "S";
-    b.type               = "shear";
+    b.type               = poundfe::BuildingType::shear;
     b.n_storeys          = n;
     b.floor_masses       = {mass};
     b.storey_stiffnesses = {stiffness};
     b.storey_heights     = {3.0};
-    b.damping_type       = damping_ratio > 0 ? "modes" : "none";
+    b.damping_type       = damping_ratio > 0 ? poundfe::RayleighDamping::Kind::modes :
+                                             poundfe::RayleighDamping::Kind::none;
     b.damping_ratio      = damping_ratio;
     b.damping_modes      = {1, 2};
-    p.ground_motion.type = "none";
-    p.n_modes            = n;
+    p.ground_motion.type = poundfe::GroundMotionType::none;
+    p.output.n_modes            = n;
     return p;
   }
 } // namespace poundfe_test

@@ -14,7 +14,7 @@ namespace poundfe
   {
     Analysis analysis;
     analysis.input  = input;
-    analysis.model  = build_model(input);
+    analysis.model  = build_model(input.model, input.contact, input);
     analysis.system = assemble_mass_and_stiffness(analysis.model);
     const Model  &model  = analysis.model;
     LinearSystem &system = analysis.system;
@@ -25,7 +25,7 @@ namespace poundfe
         const Building &building = model.buildings[b];
         const auto      range    = model.equation_range(b);
         const unsigned  wanted =
-          std::max({input.n_modes, building.damping.first_mode, building.damping.second_mode});
+          std::max({input.output.n_modes, building.damping.first_mode, building.damping.second_mode});
         analysis.building_modes.push_back(
           compute_modes(block(system.mass, range), block(system.stiffness, range),
                         system.influence.segment(range[0], range[1] - range[0]), wanted));
@@ -54,7 +54,7 @@ namespace poundfe
           }
       }
     assemble_damping(model, coefficients, system);
-    analysis.modes = compute_modes(system.mass, system.stiffness, system.influence, input.n_modes);
+    analysis.modes = compute_modes(system.mass, system.stiffness, system.influence, input.output.n_modes);
     return analysis;
   }
 

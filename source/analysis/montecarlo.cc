@@ -537,7 +537,7 @@ namespace poundfe
                              "P(X <= x)", {{"cdf_" + d.stem + ".csv", "1:2", "ECDF", "steps"}}});
       }
     json.end_array().end_object();
-    if (input.plots && !table.interrupted) // stop soon: the resumed run draws them
+    if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
       draw_plots(directory, plots);
     write_file_atomically(directory + "/summary.json", json.str());
     timer.leave_subsection();
@@ -559,7 +559,7 @@ namespace poundfe
                 << ") = " << rounded(e.drift[i].probability) << " (CoV "
                 << rounded(e.drift[i].coefficient_of_variation) << ")\n";
     pcout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
-          << (input.plots && !table.interrupted ? ", *.png" : "") << ")\n";
+          << (input.output.plots && !table.interrupted ? ", *.png" : "") << ")\n";
     print_timing(timer);
     return status;
   }
@@ -569,10 +569,10 @@ namespace poundfe
   {
     const InputParameters        &input = analysis.input;
     const GroundMotionParameters &g     = input.ground_motion;
-    if (g.type != "kanai-tajimi" && g.type != "clough-penzien")
+    if (g.type != GroundMotionType::kanai_tajimi && g.type != GroundMotionType::clough_penzien)
       throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
                        "fragility curves scale a Kanai-Tajimi or Clough-Penzien motion to "
-                       "each PGA level; got '" + g.type + "'");
+                       "each PGA level; got '" + ground_motion_type_names().name(g.type) + "'");
     const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
     dealii::ConditionalOStream pcout(std::cout, rank == 0);
     dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
@@ -721,13 +721,13 @@ namespace poundfe
         pcout << "\n";
       }
     json.end_array().end_object();
-    if (input.plots && !interrupted) // stop soon: the resumed run draws it
+    if (input.output.plots && !interrupted) // stop soon: the resumed run draws it
       draw_plots(directory, {plot});
     write_file_atomically(directory + "/summary.json", json.str());
     timer.leave_subsection();
     pcout << "results in " << directory
           << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
-          << (input.plots && !interrupted ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
+          << (input.output.plots && !interrupted ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
     print_timing(timer);
     return status;
   }

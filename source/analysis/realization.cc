@@ -12,7 +12,8 @@ namespace poundfe
   RealizationRunner::RealizationRunner(const Analysis &analysis_)
     : analysis(analysis_)
     , excitation(make_excitation(analysis_))
-    , load(analysis_.input, excitation)
+    , load(analysis_.input.ground_motion, analysis_.input.time_integration.newmark.time_step,
+           excitation)
     , history(analysis_)
     , peaks(analysis_.model, history.nonlinear_elements())
   {

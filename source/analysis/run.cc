@@ -55,8 +55,8 @@ namespace poundfe
     double
     end_time_of(const InputParameters &input, const Excitation &excitation)
     {
-      if (input.end_time > 0)
-        return input.end_time;
+      if (input.time_integration.end_time > 0)
+        return input.time_integration.end_time;
       return excitation.ground_motion().duration();
     }
 
@@ -66,11 +66,12 @@ namespace poundfe
     ensemble_command(const InputParameters &input, const std::string &directory,
                      const unsigned int n_realizations)
     {
-      const std::string &type = input.ground_motion.type;
-      if (type != "kanai-tajimi" && type != "clough-penzien" && type != "white-noise")
-        throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
-                         "--realizations needs a stochastic ground motion, got '" + type + "'");
-      const MotionGenerator generator = make_motion_generator(input);
+      const GroundMotionType type = input.ground_motion.type;
+      if (!input.ground_motion.is_stochastic())
+        input.fail("Ground motion/Type", "--realizations needs a stochastic ground motion, got '" +
+                                           ground_motion_type_names().name(type) + "'");
+      const MotionGenerator generator =
+        make_motion_generator(input.ground_motion, input.time_integration.newmark.time_step);
       const double          scale     = input.ground_motion.scale_factor;
       create_directories(directory);
       std::vector<std::string> header{"time"};
@@ -96,7 +97,7 @@ namespace poundfe
         }
       csv.commit();
       // about 200 points up to 10 omega_g (filtered) or the cutoff (white noise)
-      const double top = type == "white-noise" ?
+      const double top = type == GroundMotionType::white_noise ?
                            generator.cutoff_frequency() :
                            std::min(generator.cutoff_frequency(), 10 * generator.motion().filter.omega_g);
       const double dw  = 2 * M_PI / (generator.n_samples() * generator.motion().sample_interval);
@@ -113,7 +114,7 @@ namespace poundfe
           out.end_row();
         }
       out.commit();
-      if (input.plots)
+      if (input.output.plots)
         draw_plots(directory,
                    {Plot{"ensemble_psd.png",
                          "ensemble PSD of " + std::to_string(n_realizations) + " realizations",
@@ -131,32 +132,19 @@ namespace poundfe
     }
   } // namespace
 
-  NewmarkParameters
-  newmark_parameters(const InputParameters &input)
-  {
-    NewmarkParameters p;
-    p.time_step                 = input.time_step;
-    p.gamma                     = input.newmark_gamma;
-    p.beta                      = input.newmark_beta;
-    p.newton.residual_tolerance = input.newton_residual_tolerance;
-    p.newton.energy_tolerance   = input.newton_energy_tolerance;
-    p.newton.max_iterations     = input.newton_max_iterations;
-    p.newton.max_step_cuts      = input.max_step_cuts;
-    p.newton.tangent_update     = input.tangent_update;
-    p.newton.event_refinement   = input.contact.event_refinement;
-    return p;
-  }
-
   Excitation
   make_excitation(const Analysis &analysis)
   {
-    Excitation excitation(analysis.system, make_ground_motion(analysis.input),
-                          make_nodal_forces(analysis.input, analysis.model));
-    if (!analysis.input.white_noise_forces.empty())
+    const InputParameters &input = analysis.input;
+    const double           dt    = input.time_integration.newmark.time_step;
+    Excitation             excitation(analysis.system, make_ground_motion(input.ground_motion, input, dt),
+                          make_nodal_forces(input.nodal_forces, input.ground_motion, dt, input,
+                                            analysis.model));
+    if (!analysis.input.nodal_forces.white_noise.empty())
       {
-        const StochasticLoad load(analysis.input, excitation);
+        const StochasticLoad load(input.ground_motion, dt, excitation);
         std::vector<double>  xi;
-        load.standard_normals(analysis.input.ground_motion.realization, xi);
+        load.standard_normals(input.ground_motion.realization, xi);
         load.apply(xi, excitation);
       }
     return excitation;
@@ -166,8 +154,8 @@ namespace poundfe
     : analysis(analysis_)
     , elements(make_nonlinear_elements(analysis_.model))
     , integrator(analysis_.system,
-                 linear_solver.empty() ? analysis_.input.linear_solver : linear_solver,
-                 newmark_parameters(analysis_.input), &elements)
+                 linear_solver.empty() ? analysis_.input.time_integration.linear_solver : linear_solver,
+                 analysis_.input.time_integration.newmark, &elements)
     , view(analysis_.model, analysis_.system, elements, integrator)
   {
     integrator.set_equation_names(equation_names(analysis_.model));
@@ -182,7 +170,7 @@ namespace poundfe
       throw InputError(input.file, input.line_of("Time integration/End time"),
                        "Time integration/End time",
                        "needs a positive end time when there is no ground motion");
-    return static_cast<unsigned long>(std::llround(end / input.time_step));
+    return static_cast<unsigned long>(std::llround(end / input.time_integration.newmark.time_step));
   }
 
   RunStatus
@@ -190,7 +178,7 @@ namespace poundfe
                    const bool interruptible)
   {
     const unsigned long n = n_steps(excitation);
-    const double        dt = analysis.input.time_step;
+    const double        dt = analysis.input.time_integration.newmark.time_step;
     const LoadFunction  load = [&excitation](const double t, Vector &p) { excitation.load(t, p); };
     Vector p0(analysis.system.n_equations());
     load(0, p0);
@@ -264,14 +252,14 @@ namespace poundfe
       {
         const InputParameters &input = analysis.input;
         if (options.csv) // first: it checks its input before anything is written
-          outputs = make_recorders(input.recorders, input.file, history.state(), peaks,
-                                   input.time_step, directory);
+          outputs = make_recorders(input.output.recorders, input.file, history.state(), peaks,
+                                   input.time_integration.newmark.time_step, directory);
         create_directories(directory);
-        if (options.vtu && input.vtu_interval > 0)
+        if (options.vtu && input.output.vtu_interval > 0)
           outputs.push_back(std::make_unique<VtuRecorder>(
-            analysis.model, directory, steps_per_interval(input.vtu_interval, input.time_step)));
+            analysis.model, directory, steps_per_interval(input.output.vtu_interval, input.time_integration.newmark.time_step)));
         outputs.push_back(std::make_unique<RunSummary>(
-          analysis, excitation, peaks, directory, options.plots && input.plots,
+          analysis, excitation, peaks, directory, options.plots && input.output.plots,
           history.linear_solver_name(), history.tangent_update()));
       }
     if (options.progress)
@@ -367,7 +355,8 @@ namespace poundfe
   {
     if (n_realizations > 0)
       return ensemble_command(input, output_directory, n_realizations);
-    const GroundMotion motion = make_ground_motion(input);
+    const GroundMotion motion =
+      make_ground_motion(input.ground_motion, input, input.time_integration.newmark.time_step);
     if (motion.empty())
       throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
                        "there is no ground motion to write (type none)");
@@ -382,7 +371,7 @@ namespace poundfe
         }
       csv.commit();
     }
-    if (input.plots)
+    if (input.output.plots)
       draw_plots(output_directory, {Plot{"ground_motion.png", motion.description(), "time (s)",
                                          "ground acceleration (m/s^2)",
                                          {{"ground_motion.csv", "1:2", "a_g", "lines"}}}});

@@ -13,20 +13,6 @@ namespace poundfe
 {
   namespace
   {
-    const char *
-    type_name(const BuildingType type)
-    {
-      switch (type)
-        {
-          case BuildingType::frame:
-            return "frame";
-          case BuildingType::mesh:
-            return "mesh";
-          case BuildingType::shear:
-            return "shear";
-        }
-      throw std::logic_error("type_name: unknown building type");
-    }
 
     /// Keys and units of a hysteretic element: a hinge acts on a rotation
     /// with a moment, a Bouc-Wen storey on a drift with a force.
@@ -188,7 +174,7 @@ namespace poundfe
         const Building &building = model.buildings[b];
         json.begin_object()
           .value("name", building.name)
-          .value("type", type_name(building.type))
+          .value("type", building_type_names().name(building.type))
           .value("storeys", static_cast<unsigned int>(building.floors.size()))
           .value("rayleigh_a0", analysis.system.rayleigh[b][0])
           .value("rayleigh_a1", analysis.system.rayleigh[b][1]);
@@ -244,7 +230,7 @@ namespace poundfe
           .value("law", law.law)
           .value("stiffness", law.stiffness)
           .value("damping_parameter", law.damping)
-          .value("damping_from", input.contact.damping_from)
+          .value("damping_from", contact_damping_from_names().name(input.contact.damping_from))
           .value("coefficient_of_restitution", input.contact.restitution)
           .end_object();
         std::vector<unsigned int> count(n_gaps, 0);
@@ -300,9 +286,9 @@ namespace poundfe
       .end_object();
     json.begin_object("analysis")
       .value("integrator", "Newmark")
-      .value("gamma", input.newmark_gamma)
-      .value("beta", input.newmark_beta)
-      .value("time_step_s", input.time_step)
+      .value("gamma", input.time_integration.newmark.gamma)
+      .value("beta", input.time_integration.newmark.beta)
+      .value("time_step_s", input.time_integration.newmark.time_step)
       .value("end_time_s", status.end_time)
       .value("steps", status.steps)
       .value("linear_solver", solver)

@@ -281,13 +281,14 @@ namespace poundfe
     RealizationRunner runner(analysis);
     std::vector<unsigned int> columns;
     std::string               unit;
-    if (ss.response == "peak drift ratio")
+    const std::string        &response_name = subset_response_names().name(ss.response);
+    if (ss.response == SubsetResponse::peak_drift_ratio)
       {
         columns = runner.drift_columns(ss.building);
         if (ss.storey > 0)
           columns = {columns.at(ss.storey - 1)};
       }
-    else if (ss.response == "peak roof displacement")
+    else if (ss.response == SubsetResponse::peak_roof_displacement)
       columns = {runner.roof_displacement_column(ss.building)}, unit = " m";
     else
       {
@@ -346,7 +347,7 @@ namespace poundfe
 
     JsonWriter json;
     begin_summary(json, "subset", input, result.interrupted ? "interrupted" : "completed");
-    json.value("response", ss.response)
+    json.value("response", response_name)
       .value("building", ss.building)
       .value("storey", ss.storey)
       .value("threshold", ss.threshold)
@@ -371,9 +372,9 @@ namespace poundfe
         .end_object();
     json.end_array().end_object();
     write_file_atomically(directory + "/summary.json", json.str());
-    if (input.plots && !result.interrupted) // stop soon
+    if (input.output.plots && !result.interrupted) // stop soon
       draw_plots(directory, {Plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
-                                  ss.response + unit, "exceedance probability (log)",
+                                  response_name + unit, "exceedance probability (log)",
                                   {{"subset_levels.csv", "2:4", "levels", "linespoints"}},
                                   true}});
     timer.leave_subsection();
@@ -383,12 +384,12 @@ namespace poundfe
             << " levels (no estimate at the threshold; subset_levels.csv has the levels), "
             << result.model_runs << " model runs";
     else
-      pcout << "Subset Simulation: P(" << ss.response << " > " << ss.threshold << unit
+      pcout << "Subset Simulation: P(" << response_name << " > " << ss.threshold << unit
             << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
             << "), " << result.levels.size() << " levels, " << result.model_runs << " model runs"
             << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
     pcout << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
-          << (input.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
+          << (input.output.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
     print_timing(timer);
     return status;
   }

@@ -46,19 +46,15 @@ namespace poundfe
   }
 
   MotionGenerator
-  make_motion_generator(const InputParameters &input)
+  make_motion_generator(const GroundMotionParameters &g, const double time_step)
   {
-    const GroundMotionParameters &g = input.ground_motion;
-    StochasticMotion              s;
-    const bool                    cp = g.type == "clough-penzien";
-    if (g.soil == "custom")
+    StochasticMotion s;
+    const bool       cp = g.type == GroundMotionType::clough_penzien;
+    if (g.soil == Soil::custom)
       s.filter = FilterParameters{cp, g.omega_g, g.zeta_g, g.omega_f, g.zeta_f};
     else
       s.filter = soil_preset(g.soil, cp);
-    if (g.type == "white-noise")
-      s.method = StochasticMethod::white_noise;
-    else if (g.method == "spectral-representation")
-      s.method = StochasticMethod::spectral_representation;
+    s.method = g.type == GroundMotionType::white_noise ? StochasticMethod::white_noise : g.method;
     s.spectral_intensity =
       g.spectral_intensity > 0 ?
         g.spectral_intensity :
@@ -66,7 +62,7 @@ namespace poundfe
            g.noise_intensity_d / M_PI :
            intensity_from_pga(s.filter, g.target_pga * standard_gravity, g.peak_factor));
     s.duration               = g.duration;
-    s.sample_interval        = stochastic_sample_interval(input);
+    s.sample_interval        = g.held_interval(time_step);
     s.cutoff_frequency       = g.cutoff_frequency;
     s.n_frequencies          = g.n_frequencies;
     s.envelope.kind          = g.envelope;
@@ -83,11 +79,11 @@ namespace poundfe
   }
 
   GroundMotion
-  make_ground_motion(const InputParameters &input)
+  make_ground_motion(const GroundMotionParameters &g, const InputFile &input,
+                     const double time_step)
   {
-    const GroundMotionParameters &g = input.ground_motion;
-    GroundMotion                  motion;
-    if (g.type == "record")
+    GroundMotion motion;
+    if (g.type == GroundMotionType::record)
       {
         RecordFormat format;
         format.format    = g.record_format;
@@ -112,8 +108,8 @@ namespace poundfe
             return motion;
           }
       }
-    else if (g.type != "none")
-      motion = make_motion_generator(input).ground_motion();
+    else if (g.type != GroundMotionType::none)
+      motion = make_motion_generator(g, time_step).ground_motion();
     motion.scale(g.scale_factor);
     return motion;
   }
@@ -127,7 +123,7 @@ namespace poundfe
     };
 
     ForceTarget
-    find_target(const InputParameters &input, const Model &model, std::istringstream &fields,
+    find_target(const InputFile &input, const Model &model, std::istringstream &fields,
                 const std::string &path, const std::string &entry)
     {
       const int    line = input.line_of(path);
@@ -171,7 +167,7 @@ namespace poundfe
     /// Each non-blank entry of `entries`: the force with its target set, and
     /// the fields after 'building floor node dof' for `read_rest`.
     void
-    parse_forces(const InputParameters &input, const Model &model,
+    parse_forces(const InputFile &input, const Model &model,
                  const std::vector<std::string> &entries, const std::string &path,
                  const NodalForce::Kind kind, std::vector<NodalForce> &forces,
                  const std::function<void(std::istringstream &, const std::string &, NodalForce &)>
@@ -194,11 +190,12 @@ namespace poundfe
   } // namespace
 
   std::vector<NodalForce>
-  make_nodal_forces(const InputParameters &input, const Model &model)
+  make_nodal_forces(const NodalForceParameters &parameters, const GroundMotionParameters &ground_motion,
+                    const double time_step, const InputFile &input, const Model &model)
   {
     std::vector<NodalForce> forces;
     const std::string       harmonic_path = "Nodal forces/Harmonic";
-    parse_forces(input, model, input.harmonic_forces, harmonic_path, NodalForce::Kind::harmonic,
+    parse_forces(input, model, parameters.harmonic, harmonic_path, NodalForce::Kind::harmonic,
                  forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
                    if (!(fields >> f.amplitude >> f.omega))
                      throw InputError(input.file, input.line_of(harmonic_path), harmonic_path,
@@ -206,7 +203,7 @@ namespace poundfe
                    fields >> f.phase;
                  });
     const std::string tabulated_path = "Nodal forces/Tabulated";
-    parse_forces(input, model, input.tabulated_forces, tabulated_path, NodalForce::Kind::tabulated,
+    parse_forces(input, model, parameters.tabulated, tabulated_path, NodalForce::Kind::tabulated,
                  forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
                    std::string file;
                    if (!(fields >> file))
@@ -224,14 +221,14 @@ namespace poundfe
                    f.values = table.values;
                  });
     const std::string noise_path = "Nodal forces/White noise";
-    parse_forces(input, model, input.white_noise_forces, noise_path, NodalForce::Kind::white_noise,
+    parse_forces(input, model, parameters.white_noise, noise_path, NodalForce::Kind::white_noise,
                  forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
                    if (!(fields >> f.intensity) || !(f.intensity > 0))
                      throw InputError(input.file, input.line_of(noise_path), noise_path,
                                       "'" + entry + "': expected '... S0' with S0 > 0");
-                   f.sample_interval = stochastic_sample_interval(input);
+                   f.sample_interval = ground_motion.held_interval(time_step);
                    // the white-noise forces last as long as the stochastic ground motion would
-                   f.values.assign(n_samples(input.ground_motion.duration, f.sample_interval), 0.0);
+                   f.values.assign(n_samples(ground_motion.duration, f.sample_interval), 0.0);
                  });
     return forces;
   }

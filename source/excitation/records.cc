@@ -112,7 +112,7 @@ namespace poundfe
       else if (!(dt > 0))
         throw InputError(file, 0, "Ground motion/Record/Time step",
                          "a one-column record needs a positive time step");
-      if (format.units == "g")
+      if (format.units == RecordUnits::g)
         for (double &a : values)
           a *= standard_gravity;
       return GroundMotion(dt, std::move(values), file);
@@ -160,14 +160,15 @@ namespace poundfe
   GroundMotion
   read_record(const std::string &file, const RecordFormat &format)
   {
-    std::string kind  = format.format;
-    if (kind == "auto")
+    RecordFileFormat kind = format.format;
+    if (kind == RecordFileFormat::automatic)
       {
         std::string extension = file.substr(file.find_last_of('.') + 1);
         for (char &c : extension)
           c = std::tolower(static_cast<unsigned char>(c));
-        kind = (extension == "at2") ? "at2" : "text";
+        kind = (extension == "at2") ? RecordFileFormat::at2 : RecordFileFormat::text;
       }
-    return kind == "at2" ? read_at2(file, read_lines(file)) : read_text(file, format);
+    return kind == RecordFileFormat::at2 ? read_at2(file, read_lines(file)) :
+                                           read_text(file, format);
   }
 } // namespace poundfe

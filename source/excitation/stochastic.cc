@@ -60,15 +60,15 @@ namespace poundfe
   } // namespace
 
   FilterParameters
-  soil_preset(const std::string &soil, const bool clough_penzien)
+  soil_preset(const Soil soil, const bool clough_penzien)
   {
     FilterParameters f;
     f.clough_penzien = clough_penzien;
-    if (soil == "firm")
+    if (soil == Soil::firm)
       f.omega_g = 15, f.zeta_g = 0.6;
-    else if (soil == "medium")
+    else if (soil == Soil::medium)
       f.omega_g = 10, f.zeta_g = 0.4;
-    else if (soil == "soft")
+    else if (soil == Soil::soft)
       f.omega_g = 5, f.zeta_g = 0.2;
     f.omega_f = f.omega_g / 10;
     f.zeta_f  = 0.6;
@@ -129,7 +129,7 @@ namespace poundfe
   {
     if (t < 0)
       return 0;
-    if (kind == "jennings")
+    if (kind == EnvelopeKind::jennings)
       {
         if (t < rise_end)
           return (t / rise_end) * (t / rise_end);
@@ -137,12 +137,12 @@ namespace poundfe
           return 1;
         return std::exp(-decay * (t - plateau_end));
       }
-    if (kind == "saragoni-hart")
+    if (kind == EnvelopeKind::saragoni_hart)
       {
         const double t_peak = b / c;
         return std::pow(t / t_peak, b) * std::exp(-c * (t - t_peak));
       }
-    if (kind == "shinozuka-sato")
+    if (kind == EnvelopeKind::shinozuka_sato)
       {
         const double t_peak = std::log(beta / alpha) / (beta - alpha);
         const double peak   = std::exp(-alpha * t_peak) - std::exp(-beta * t_peak);

@@ -7,14 +7,14 @@
 
 namespace poundfe
 {
-  StochasticLoad::StochasticLoad(const InputParameters &input, const Excitation &excitation)
-    : random_seed(input.ground_motion.seed)
+  StochasticLoad::StochasticLoad(const GroundMotionParameters &ground_motion, const double time_step,
+                                 const Excitation &excitation)
+    : random_seed(ground_motion.seed)
   {
-    const std::string &type = input.ground_motion.type;
-    if (type == "kanai-tajimi" || type == "clough-penzien" || type == "white-noise")
+    if (ground_motion.is_stochastic())
       {
-        ground.emplace(make_motion_generator(input));
-        ground_scale = input.ground_motion.scale_factor;
+        ground.emplace(make_motion_generator(ground_motion, time_step));
+        ground_scale = ground_motion.scale_factor;
         n_random     = ground->n_variables();
       }
     const std::vector<NodalForce> &forces = excitation.nodal_forces();

@@ -60,8 +60,9 @@ namespace poundfe
       }
     // auto: Woodbury while its dense capacitance matrix, of size the total
     // rank (one per uniaxial element), stays small.
-    const std::string &mode = parameters.newton.tangent_update;
-    use_woodbury = mode == "woodbury" || (mode == "auto" && total_rank <= 100);
+    const TangentUpdate mode = parameters.newton.tangent_update;
+    use_woodbury             = mode == TangentUpdate::woodbury ||
+                   (mode == TangentUpdate::automatic && total_rank <= 100);
     if (!use_woodbury && !symmetric && solver_name == "eigen-ldlt")
       throw InputError("", 0, "Time integration/Linear solver",
                        "refactorising a nonsymmetric element tangent needs an LU solver "
@@ -79,6 +80,15 @@ namespace poundfe
   }
 
   NewmarkIntegrator::~NewmarkIntegrator() = default;
+
+  const NameTable<TangentUpdate> &
+  tangent_update_names()
+  {
+    static const NameTable<TangentUpdate> table({{TangentUpdate::automatic, "auto"},
+                                                 {TangentUpdate::woodbury, "woodbury"},
+                                                 {TangentUpdate::refactorize, "refactorize"}});
+    return table;
+  }
 
   std::string
   NewmarkIntegrator::linear_solver_name() const

@@ -59,9 +59,9 @@ namespace poundfe
     }
 
     void
-    fix_base(Model &model, const unsigned int node, const std::string &fixity)
+    fix_base(Model &model, const unsigned int node, const BaseFixity fixity)
     {
-      model.nodes[node].fixed = {{true, true, fixity == "fixed"}};
+      model.nodes[node].fixed = {{true, true, fixity == BaseFixity::fixed}};
     }
 
     /// Lump a floor mass in equal shares at the floor's joints.
@@ -308,7 +308,7 @@ namespace poundfe
     }
 
     void
-    build_from_mesh(Model &model, const InputParameters &input, const BuildingParameters &p,
+    build_from_mesh(Model &model, const InputFile &input, const BuildingParameters &p,
                     const unsigned int b, Building &building)
     {
       const std::string section_path =
@@ -536,7 +536,8 @@ namespace poundfe
     }
 
     void
-    add_barrier(Model &model, const InputParameters &input, const std::string &entry)
+    add_barrier(Model &model, const InputFile &input, const ContactParameters &contact,
+                const std::string &entry)
     {
       const std::string path = "Contact/Barriers";
       std::istringstream in(entry);
@@ -562,23 +563,23 @@ namespace poundfe
       g.buildings      = {{b - 1, b - 1}};
       g.level          = floor.level;
       g.initial_gap    = gap;
-      g.effective_mass = input.contact.effective_mass > 0 ? input.contact.effective_mass :
+      g.effective_mass = contact.effective_mass > 0 ? contact.effective_mass :
                                                              floor_mass(model, floor);
       g.label          = building.name + "@" + std::to_string(f) + "-barrier-" + side;
       model.gaps.push_back(g);
     }
 
     void
-    add_contact(Model &model, const InputParameters &input)
+    add_contact(Model &model, const ModelParameters &parameters, const ContactParameters &contact,
+                const InputFile &input)
     {
-      const ContactParameters &contact = input.contact;
       if (contact.law == "none")
         return;
       if (contact.between_buildings)
         for (unsigned int b = 0; b + 1 < model.buildings.size(); ++b)
-          add_gaps_between(model, contact, b, b + 1, value_for(input.separations, b));
+          add_gaps_between(model, contact, b, b + 1, value_for(parameters.separations, b));
       for (const std::string &entry : contact.barriers)
-        add_barrier(model, input, entry);
+        add_barrier(model, input, contact, entry);
 
       ContactLawParameters &law = model.contact;
       law.law                   = contact.law;
@@ -586,45 +587,43 @@ namespace poundfe
       law.effective_mass = model.gaps.empty() ? 1.0 : model.gaps.front().effective_mass;
       if (!contact_law_is_damped(contact.law))
         law.damping = 0;
-      else if (contact.damping_from == "given")
+      else if (contact.damping_from == ContactDampingFrom::given)
         law.damping = contact.damping;
-      else if (contact.damping_from == "formula")
+      else if (contact.damping_from == ContactDampingFrom::formula)
         law.damping = damping_from_restitution_formula(contact.law, contact.restitution,
-                                                       contact.hertz_damp_formula);
+                                                       hertz_damp_formula_names().name(contact.hertz_damp_formula));
       else // the damping parameters are dimensionless: one calibration serves every gap
         law.damping = calibrate_damping(law, contact.restitution, contact.calibration_velocity);
     }
   } // namespace
 
   Model
-  build_model(const InputParameters &input)
+  build_model(const ModelParameters &parameters, const ContactParameters &contact,
+              const InputFile &input)
   {
     Model model;
-    model.mass_matrix =
-      input.mass_matrix == "consistent" ? MassMatrixType::consistent : MassMatrixType::lumped;
+    model.mass_matrix = parameters.mass_matrix;
     double left = 0;
-    for (unsigned int b = 0; b < input.buildings.size(); ++b)
+    for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
       {
-        const BuildingParameters &p = input.buildings[b];
+        const BuildingParameters &p = parameters.buildings[b];
         Building                  building;
         building.name       = p.name;
         building.left       = left;
         building.first_node = model.n_nodes();
+        building.type       = p.type;
         const unsigned int first_member = model.members.size();
-        if (p.type == "frame")
+        switch (p.type)
           {
-            building.type = BuildingType::frame;
-            build_frame(model, p, b, building);
-          }
-        else if (p.type == "shear")
-          {
-            building.type = BuildingType::shear;
-            build_shear(model, p, b, building);
-          }
-        else
-          {
-            building.type = BuildingType::mesh;
-            build_from_mesh(model, input, p, b, building);
+            case BuildingType::frame:
+              build_frame(model, p, b, building);
+              break;
+            case BuildingType::shear:
+              build_shear(model, p, b, building);
+              break;
+            case BuildingType::mesh:
+              build_from_mesh(model, input, p, b, building);
+              break;
           }
         label_members(model, building, first_member);
         insert_hinges(model, p, b, first_member);
@@ -634,20 +633,18 @@ namespace poundfe
         d.damping_ratio    = p.damping_ratio;
         d.a0               = p.rayleigh_a0;
         d.a1               = p.rayleigh_a1;
-        if (p.damping_type == "modes")
+        d.kind             = p.damping_type;
+        if (p.damping_type == RayleighDamping::Kind::modes)
           {
-            d.kind        = RayleighDamping::Kind::modes;
             d.first_mode  = p.damping_modes[0];
             d.second_mode = p.damping_modes[1];
           }
-        else if (p.damping_type == "coefficients")
-          d.kind = RayleighDamping::Kind::coefficients;
 
-        if (b + 1 < input.buildings.size())
-          left = building.right + value_for(input.separations, b);
+        if (b + 1 < parameters.buildings.size())
+          left = building.right + value_for(parameters.separations, b);
         model.buildings.push_back(std::move(building));
       }
-    add_contact(model, input);
+    add_contact(model, parameters, contact, input);
     model.number_equations();
     return model;
   }

@@ -30,10 +30,10 @@ BOOST_AUTO_TEST_CASE(frame_with_rigid_beams_tends_to_the_shear_building)
   const double    h  = 3.0;
   const double    EI = 5e6 * h * h * h / 24;
   InputParameters p  = poundfe_test::shear_building_input(3, 1000, 5e6, 0);
-  BuildingParameters &b    = p.buildings[0];
+  BuildingParameters &b    = p.model.buildings[0];
   b                        = BuildingParameters();
   b.name                   = "F";
-  b.type                   = "frame";
+  b.type                   = BuildingType::frame;
   b.n_storeys              = 3;
   b.storey_heights         = {h};
   b.column_youngs_modulus  = {1.0};
@@ -43,8 +43,8 @@ BOOST_AUTO_TEST_CASE(frame_with_rigid_beams_tends_to_the_shear_building)
   b.beam_second_moment     = {1e6 * EI};  // flexurally rigid
   b.beam_area              = {1e6 * EI};
   b.floor_masses           = {1000};
-  b.damping_type           = "none";
-  p.n_modes                = 3;
+  b.damping_type           = RayleighDamping::Kind::none;
+  p.output.n_modes                = 3;
   const Analysis a         = prepare_analysis(p);
   const double   reference[3] = {5.0085, 14.0335, 20.2789};
   // The remaining beam and column flexibility is ~1e-6 relative; the
@@ -69,7 +69,7 @@ BOOST_AUTO_TEST_CASE(rigid_hinges_leave_the_modes_of_the_elastic_frame)
   double          previous_error = 1;
   for (const double factor : {10.0, 1e3, 1e5})
     {
-      hinged.buildings[0].hinge_stiffness_factor = factor;
+      hinged.model.buildings[0].hinge_stiffness_factor = factor;
       const Analysis a = prepare_analysis(hinged);
       const double   error =
         std::abs(a.modes.frequency(0) - elastic.modes.frequency(0)) / elastic.modes.frequency(0);

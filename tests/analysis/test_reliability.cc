@@ -21,7 +21,7 @@
 #include <poundfe/analysis/subset.h>
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/excitation/stochastic.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <cmath>
 #include <filesystem>
@@ -224,8 +224,9 @@ namespace
   {
     const Analysis       analysis = prepare_analysis(input);
     Excitation           excitation = make_excitation(analysis);
-    const StochasticLoad load(input, excitation);
-    NewmarkIntegrator    integrator(analysis.system, "eigen-ldlt", newmark_parameters(input));
+    const StochasticLoad load(input.ground_motion, input.time_integration.newmark.time_step,
+                              excitation);
+    NewmarkIntegrator    integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark);
     const LoadFunction   p = [&](double t, Vector &f) { excitation.load(t, f); };
     std::vector<double>  xi;
     Vector               f(analysis.system.n_equations());
@@ -258,9 +259,9 @@ BOOST_AUTO_TEST_CASE(white_noise_base_and_force_give_the_closed_form_variance)
   const double expected = M_PI * s0 / (2 * zeta * w * w * w);
 
   InputParameters force       = base;
-  force.ground_motion.type    = "none";
-  force.end_time              = 30;
-  force.white_noise_forces    = {"1 1 0 ux " + std::to_string(1000.0 * 1000.0 * s0)};
+  force.ground_motion.type    = GroundMotionType::none;
+  force.time_integration.end_time              = 30;
+  force.nodal_forces.white_noise    = {"1 1 0 ux " + std::to_string(1000.0 * 1000.0 * s0)};
   const double base_variance  = stationary_mean_square(base);
   const double force_variance = stationary_mean_square(force);
   BOOST_TEST_MESSAGE("stationary drift variance: closed form " << expected << ", base white noise "

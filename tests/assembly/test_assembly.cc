@@ -2,7 +2,7 @@
 #define BOOST_TEST_MODULE assembly
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/assembly/linear_solver.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <cmath>
 
@@ -26,7 +26,7 @@ BOOST_AUTO_TEST_CASE(assembled_damping_is_modal_at_the_target_modes)
 {
   // Second method: phi_n^T C phi_n = 2 zeta_n omega_n for mass-normalised modes.
   InputParameters p = poundfe_test::shear_building_input(3, 1000, 5e6, 0.04);
-  p.buildings[0].damping_modes = {1, 3};
+  p.model.buildings[0].damping_modes = {1, 3};
   const Analysis a = prepare_analysis(p);
   for (const unsigned int n : {0u, 2u})
     {

@@ -5,7 +5,7 @@
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/assembly/low_rank_update.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <Eigen/Dense>
 

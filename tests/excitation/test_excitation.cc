@@ -78,7 +78,7 @@ BOOST_AUTO_TEST_CASE(text_records_one_and_two_columns)
 {
   const std::string two = write_temporary("two.txt", "time,acc\n0 0.1\n0.01 0.2\n0.02 -0.3\n");
   RecordFormat      format;
-  format.units   = "m/s^2";
+  format.units   = RecordUnits::m_per_s2;
   GroundMotion g = read_record(two, format);
   BOOST_TEST(g.time_step() == 0.01, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(g.value(0.015) == -0.05, boost::test_tools::tolerance(1e-12)); // linear
@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_CASE(text_records_one_and_two_columns)
 
 BOOST_AUTO_TEST_CASE(kanai_tajimi_variance_formula)
 {
-  for (const char *soil : {"firm", "medium", "soft"})
+  for (const Soil soil : {Soil::firm, Soil::medium, Soil::soft})
     {
       const FilterParameters f = soil_preset(soil, false);
       const double           z = f.zeta_g, w = f.omega_g;
@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(clough_penzien_variance_is_the_psd_integral)
 {
   // Second method: sigma^2 = 2 int_0^inf S(w) dw by the trapezoidal rule in
   // the substitution w = tan(s); error < 1e-6 relative with 2e5 panels.
-  const FilterParameters f = soil_preset("medium", true);
+  const FilterParameters f = soil_preset(Soil::medium, true);
   const unsigned int     n = 200000;
   double                 integral = 0;
   for (unsigned int i = 1; i < n; ++i)
@@ -123,7 +123,7 @@ BOOST_AUTO_TEST_CASE(kanai_tajimi_ensemble_variance)
   // 400 stationary samples (no envelope) of 30 s at dt = 2 ms; the variance
   // over t in [5, 30] s (past the start-up transient, e^{-2 zeta w 5} < 1e-17).
   StochasticMotion motion;
-  motion.filter             = soil_preset("medium", false);
+  motion.filter             = soil_preset(Soil::medium, false);
   motion.spectral_intensity = 0.01;
   motion.duration           = 30;
   motion.sample_interval    = 0.002;
@@ -191,13 +191,13 @@ BOOST_AUTO_TEST_CASE(normal_stream_moments)
 BOOST_AUTO_TEST_CASE(envelopes_peak_at_one)
 {
   Envelope e;
-  e.kind = "jennings";
+  e.kind = EnvelopeKind::jennings;
   BOOST_TEST(e(1.0) == 0.25);
   BOOST_TEST(e(5.0) == 1.0);
   BOOST_TEST(e(12.0) == std::exp(-0.3 * 2), boost::test_tools::tolerance(1e-14));
-  e.kind = "saragoni-hart";
+  e.kind = EnvelopeKind::saragoni_hart;
   BOOST_TEST(e(e.b / e.c) == 1.0, boost::test_tools::tolerance(1e-14));
-  e.kind = "shinozuka-sato";
+  e.kind = EnvelopeKind::shinozuka_sato;
   const double t_peak = std::log(e.beta / e.alpha) / (e.beta - e.alpha);
   BOOST_TEST(e(t_peak) == 1.0, boost::test_tools::tolerance(1e-14));
   BOOST_TEST(e(t_peak * 1.1) < 1.0);

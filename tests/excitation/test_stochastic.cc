@@ -9,7 +9,7 @@
 //     distance of thinned (nearly independent) samples.
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/stochastic.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -48,12 +48,12 @@ namespace
   {
     StochasticMotion m;
     m.method             = method;
-    m.filter             = soil_preset("medium", clough_penzien);
+    m.filter             = soil_preset(Soil::medium, clough_penzien);
     m.spectral_intensity = 0.02;
     m.duration           = 50;
     m.cutoff_frequency   = 100; // spectral representation: N = 100 * 50 / pi = 1592 frequencies
     m.sample_interval    = 0.01;
-    m.envelope.kind      = "none";
+    m.envelope.kind      = EnvelopeKind::none;
     m.seed               = 11;
     return m;
   }
@@ -261,11 +261,11 @@ BOOST_AUTO_TEST_CASE(white_noise_is_held_and_has_intensity_s0)
 BOOST_AUTO_TEST_CASE(white_noise_intensity_d_is_pi_s0)
 {
   InputParameters input;
-  input.ground_motion.type              = "white-noise";
+  input.ground_motion.type              = GroundMotionType::white_noise;
   input.ground_motion.noise_intensity_d = 0.3;
-  input.ground_motion.envelope          = "none";
-  input.time_step                       = 0.01;
-  const MotionGenerator g = make_motion_generator(input);
+  input.ground_motion.envelope          = EnvelopeKind::none;
+  input.time_integration.newmark.time_step                       = 0.01;
+  const MotionGenerator g = make_motion_generator(input.ground_motion, input.time_integration.newmark.time_step);
   BOOST_TEST(g.motion().spectral_intensity == 0.3 / M_PI, boost::test_tools::tolerance(1e-15));
   BOOST_TEST(g.held());
   BOOST_TEST(g.n_variables() == g.n_samples());

@@ -8,7 +8,7 @@
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -26,17 +26,17 @@ namespace
                const std::string &law, const double stiffness, const double e)
   {
     InputParameters p = poundfe_test::shear_building_input(1, masses[0], support_stiffness, 0);
-    p.buildings.resize(masses.size(), p.buildings[0]);
+    p.model.buildings.resize(masses.size(), p.model.buildings[0]);
     for (unsigned int b = 0; b < masses.size(); ++b)
       {
-        p.buildings[b].name         = "M" + std::to_string(b + 1);
-        p.buildings[b].floor_masses = {masses[b]};
+        p.model.buildings[b].name         = "M" + std::to_string(b + 1);
+        p.model.buildings[b].floor_masses = {masses[b]};
       }
-    p.separations                 = {0.001};
+    p.model.separations                 = {0.001};
     p.contact.law                 = law;
     p.contact.stiffness           = stiffness;
     p.contact.restitution         = e;
-    p.contact.damping_from        = "calibrated";
+    p.contact.damping_from        = ContactDampingFrom::calibrated;
     return p;
   }
 
@@ -162,10 +162,12 @@ BOOST_AUTO_TEST_CASE(event_times_converge_as_the_step_is_halved)
   std::vector<double> starts, ends;
   for (const double dt : {8e-4, 4e-4, 2e-4, 1e-4})
     {
-      input.time_step = dt;
+      input.time_integration.newmark.time_step = dt;
       const Analysis   analysis   = prepare_analysis(input);
       const Excitation excitation(analysis.system, GroundMotion(),
-                                  make_nodal_forces(input, analysis.model));
+                                  make_nodal_forces(input.nodal_forces, input.ground_motion,
+                                                    input.time_integration.newmark.time_step, input,
+                                                    analysis.model));
       NonlinearElements elements = make_nonlinear_elements(analysis.model);
       NewmarkParameters parameters;
       parameters.time_step = dt;

@@ -103,7 +103,7 @@ BOOST_AUTO_TEST_CASE(a_registered_law_runs_through_the_integrator)
   const Analysis        analysis = prepare_analysis(input);
   NonlinearElements     elements = make_nonlinear_elements(analysis.model);
   BOOST_REQUIRE(elements.size() == 1u);
-  NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", newmark_parameters(input),
+  NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark,
                                &elements);
   const double m = 1000, k = 1e10, v0 = 0.5;
   const Vector zero = Vector::Zero(1);

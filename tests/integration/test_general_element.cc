@@ -112,9 +112,10 @@ namespace
   building_input(const std::string &tangent_update)
   {
     InputParameters p = poundfe_test::shear_building_input(3, 1e4, 2e7, 0.02);
-    p.buildings[0].storey_yield_drifts = {0.004};
-    p.time_step      = 0.005;
-    p.tangent_update = tangent_update;
+    p.model.buildings[0].storey_yield_drifts = {0.004};
+    p.time_integration.newmark.time_step             = 0.005;
+    p.time_integration.newmark.newton.tangent_update =
+      tangent_update_names().value(tangent_update);
     return p;
   }
 
@@ -127,12 +128,13 @@ namespace
     return elements;
   }
 
+  /// The input's Newmark settings, with the defaults' Newton settings otherwise.
   NewmarkParameters
   newmark_of(const InputParameters &input)
   {
     NewmarkParameters parameters;
-    parameters.time_step             = input.time_step;
-    parameters.newton.tangent_update = input.tangent_update;
+    parameters.time_step             = input.time_integration.newmark.time_step;
+    parameters.newton.tangent_update = input.time_integration.newmark.newton.tangent_update;
     return parameters;
   }
 
@@ -156,7 +158,7 @@ namespace
     const Analysis        analysis = prepare_analysis(input);
     NonlinearElements     elements = elements_of(analysis);
     NewmarkIntegrator integrator(analysis.system, solver, newmark_of(input), &elements);
-    BOOST_TEST(integrator.tangent_update() == tangent_update);
+    BOOST_TEST(tangent_update_names().name(integrator.tangent_update()) == tangent_update);
     Vector load(analysis.system.n_equations());
     harmonic_load(0, load);
     integrator.initialize(load);
@@ -190,7 +192,7 @@ BOOST_AUTO_TEST_CASE(woodbury_step_matches_newton_with_a_dense_lu)
     z = std::max(z, std::abs(elements[h].history_variable()));
   BOOST_TEST(z > 0.5); // the storeys have yielded
 
-  harmonic_load(151 * input.time_step, load);
+  harmonic_load(151 * input.time_integration.newmark.time_step, load);
   Vector          u = integrator.displacement(), r;
   Eigen::MatrixXd tangent;
   for (unsigned int it = 0; it < 20; ++it)
@@ -257,7 +259,7 @@ BOOST_AUTO_TEST_CASE(global_tangent_of_the_nonsymmetric_element_matches_central_
       integrator.initialize(load);
       for (unsigned int i = 0; i < 150; ++i)
         integrator.advance(harmonic_load);
-      harmonic_load(151 * input.time_step, load);
+      harmonic_load(151 * input.time_integration.newmark.time_step, load);
       std::mt19937                     random(5);
       std::uniform_real_distribution<> uniform(-1, 1);
       Vector                           u = integrator.displacement();

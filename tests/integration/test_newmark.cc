@@ -6,7 +6,7 @@
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <poundfe/base/exceptions.h>
 
@@ -25,8 +25,8 @@ namespace
   sdof(const double m, const double k, const double zeta)
   {
     InputParameters p        = poundfe_test::shear_building_input(1, m, k, 0);
-    p.buildings[0].damping_type = "coefficients";
-    p.buildings[0].rayleigh_a0  = 2 * zeta * std::sqrt(k / m);
+    p.model.buildings[0].damping_type = RayleighDamping::Kind::coefficients;
+    p.model.buildings[0].rayleigh_a0  = 2 * zeta * std::sqrt(k / m);
     return prepare_analysis(p);
   }
 } // namespace
@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(undamped_free_vibration_conserves_energy)
 {
   // A frame with lumped mass (massless rotations) from the examples.
   InputParameters p = read_parameters("input/three-storey-frame.prm");
-  p.buildings[0].damping_type = "none";
+  p.model.buildings[0].damping_type = RayleighDamping::Kind::none;
   const Analysis a  = prepare_analysis(p);
   const unsigned int n = a.system.n_equations();
   Vector u0 = Vector::Zero(n);
@@ -152,12 +152,12 @@ BOOST_AUTO_TEST_CASE(step_ground_acceleration_gives_the_closed_form)
 BOOST_AUTO_TEST_CASE(nodal_forces_from_the_input_reach_their_equation)
 {
   InputParameters p  = poundfe_test::shear_building_input(3, 1000, 5e6, 0);
-  p.harmonic_forces  = {"1 2 0 ux 800 30 0.5"};
+  p.nodal_forces.harmonic  = {"1 2 0 ux 800 30 0.5"};
   const std::string table = "/tmp/poundfe-test-force.csv";
   std::ofstream(table) << "time,force\n0 0\n0.5 1000\n1.5 -1000\n";
-  p.tabulated_forces = {"1 3 0 ux " + table};
+  p.nodal_forces.tabulated = {"1 3 0 ux " + table};
   const Analysis   a = prepare_analysis(p);
-  const Excitation excitation(a.system, GroundMotion(), make_nodal_forces(p, a.model));
+  const Excitation excitation(a.system, GroundMotion(), make_nodal_forces(p.nodal_forces, p.ground_motion, p.time_integration.newmark.time_step, p, a.model));
   Vector           load(3);
   excitation.load(0.75, load);
   BOOST_TEST(load[0] == 0.0);
@@ -165,6 +165,6 @@ BOOST_AUTO_TEST_CASE(nodal_forces_from_the_input_reach_their_equation)
   BOOST_TEST(load[2] == 500.0, boost::test_tools::tolerance(1e-14)); // linear between rows
   excitation.load(2.0, load);
   BOOST_TEST(load[2] == 0.0); // zero after the table
-  p.harmonic_forces = {"1 4 0 ux 800 30"};
-  BOOST_CHECK_THROW(make_nodal_forces(p, a.model), InputError);
+  p.nodal_forces.harmonic = {"1 4 0 ux 800 30"};
+  BOOST_CHECK_THROW(make_nodal_forces(p.nodal_forces, p.ground_motion, p.time_integration.newmark.time_step, p, a.model), InputError);
 }

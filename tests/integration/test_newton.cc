@@ -9,7 +9,7 @@
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -29,11 +29,11 @@ namespace
     const Analysis   analysis   = prepare_analysis(input);
     const Excitation excitation = make_excitation(analysis);
     NonlinearElements elements  = make_nonlinear_elements(analysis.model);
-    NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", newmark_parameters(input), &elements);
+    NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark, &elements);
     Vector load(analysis.system.n_equations());
     excitation.load(0, load);
     integrator.initialize(load);
-    const unsigned int  n = std::lround(input.end_time / input.time_step);
+    const unsigned int  n = std::lround(input.time_integration.end_time / input.time_integration.newmark.time_step);
     std::vector<double> u{0.0};
     for (unsigned int i = 1; i <= n; ++i)
       {
@@ -143,13 +143,13 @@ namespace
 BOOST_AUTO_TEST_CASE(global_tangent_matches_central_differences)
 {
   InputParameters input = read_parameters("input/three-storey-frame-hinges.prm");
-  for (const std::string update : {"woodbury", "refactorize"})
+  for (const TangentUpdate update : {TangentUpdate::woodbury, TangentUpdate::refactorize})
     {
-      input.tangent_update        = update;
+      input.time_integration.newmark.newton.tangent_update        = update;
       const Analysis   analysis   = prepare_analysis(input);
       const Excitation excitation = make_excitation(analysis);
       NonlinearElements elements  = make_nonlinear_elements(analysis.model);
-      NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", newmark_parameters(input), &elements);
+      NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark, &elements);
       const unsigned int n = analysis.system.n_equations();
       Vector             load(n);
       excitation.load(0, load);
@@ -162,7 +162,7 @@ BOOST_AUTO_TEST_CASE(global_tangent_matches_central_differences)
         ductility = std::max(ductility, std::abs(e.history_variable()));
       BOOST_TEST(ductility > 0.5); // |z| well into the nonlinear range
 
-      excitation.load(2001 * input.time_step, load);
+      excitation.load(2001 * input.time_integration.newmark.time_step, load);
       std::mt19937                     random(3);
       std::uniform_real_distribution<> uniform(-1, 1);
       Vector                           u = integrator.displacement();
@@ -183,7 +183,7 @@ BOOST_AUTO_TEST_CASE(global_tangent_matches_central_differences)
           const Vector fd = -(r_plus - r_minus) / (2 * h);
           worst = std::max(worst, (fd - tangent.col(j)).norm() / tangent.col(j).norm());
         }
-      BOOST_TEST_MESSAGE(update << ": worst column error " << worst);
+      BOOST_TEST_MESSAGE(tangent_update_names().name(update) << ": worst column error " << worst);
       // O(h^2) truncation and round-off of ~1e-16 |K_eff u| / h
       BOOST_TEST(worst < 1e-5);
     }
@@ -195,13 +195,13 @@ BOOST_AUTO_TEST_CASE(bouc_wen_sdof_matches_runge_kutta)
   double          errors[2];
   for (unsigned int refinement = 0; refinement < 2; ++refinement)
     {
-      input.time_step = 5e-4 / (1 << refinement);
+      input.time_integration.newmark.time_step = 5e-4 / (1 << refinement);
       double                    energy_error = 1;
       const std::vector<double> u = run_history(input, nullptr, &energy_error);
       const std::vector<double> reference =
-        runge_kutta_reference(input.time_step, u.size() - 1);
+        runge_kutta_reference(input.time_integration.newmark.time_step, u.size() - 1);
       errors[refinement] = max_difference(u, reference) / max_abs(reference);
-      BOOST_TEST_MESSAGE("dt = " << input.time_step << ": max |u - u_RK| / max |u_RK| = "
+      BOOST_TEST_MESSAGE("dt = " << input.time_integration.newmark.time_step << ": max |u - u_RK| / max |u_RK| = "
                                  << errors[refinement] << ", peak " << max_abs(reference)
                                  << ", energy balance error " << energy_error);
       BOOST_TEST(energy_error < 1e-6);
@@ -217,18 +217,18 @@ BOOST_AUTO_TEST_CASE(hard_steps_are_cut_and_recover)
   // at most 2 Newton iterations per attempt: steps at the yield knees and
   // reversals fail and are cut, and the run still completes.
   InputParameters input       = read_parameters("input/three-storey-frame-hinges.prm");
-  input.newton_max_iterations = 2;
-  input.end_time              = 8;
+  input.time_integration.newmark.newton.max_iterations = 2;
+  input.time_integration.end_time              = 8;
   IterationStatistics       stats;
   double                    energy_error = 1;
   const std::vector<double> u = run_history(input, &stats, &energy_error);
   BOOST_TEST_MESSAGE("cuts " << stats.step_cuts << ", smallest step " << stats.smallest_time_step
                              << ", energy balance error " << energy_error);
   BOOST_TEST(stats.step_cuts > 0u);
-  BOOST_TEST(stats.smallest_time_step < input.time_step);
+  BOOST_TEST(stats.smallest_time_step < input.time_integration.newmark.time_step);
   BOOST_TEST(energy_error < 1e-6);
   // the same run with ample iterations (few or no cuts)
-  input.newton_max_iterations = 50;
+  input.time_integration.newmark.newton.max_iterations = 50;
   IterationStatistics       stats_ample;
   const std::vector<double> ample = run_history(input, &stats_ample);
   BOOST_TEST(stats_ample.step_cuts < stats.step_cuts);
@@ -242,9 +242,9 @@ BOOST_AUTO_TEST_CASE(hard_steps_are_cut_and_recover)
 BOOST_AUTO_TEST_CASE(failure_after_the_last_cut_is_a_numerical_error)
 {
   InputParameters input = read_parameters("input/bouc-wen-sdof.prm");
-  input.newton_max_iterations = 1;
-  input.max_step_cuts         = 0;
-  input.end_time              = 1;
+  input.time_integration.newmark.newton.max_iterations = 1;
+  input.time_integration.newmark.newton.max_step_cuts         = 0;
+  input.time_integration.end_time              = 1;
   try
     {
       run_history(input);
@@ -262,11 +262,11 @@ BOOST_AUTO_TEST_CASE(failure_after_the_last_cut_is_a_numerical_error)
 BOOST_AUTO_TEST_CASE(woodbury_and_refactorisation_agree)
 {
   InputParameters input = read_parameters("input/two-buildings.prm");
-  input.end_time        = 4;
-  input.tangent_update  = "woodbury";
+  input.time_integration.end_time        = 4;
+  input.time_integration.newmark.newton.tangent_update  = TangentUpdate::woodbury;
   IterationStatistics       s1, s2;
   const std::vector<double> a = run_history(input, &s1);
-  input.tangent_update        = "refactorize";
+  input.time_integration.newmark.newton.tangent_update        = TangentUpdate::refactorize;
   const std::vector<double> b = run_history(input, &s2);
   BOOST_TEST(max_difference(a, b) < 1e-9 * max_abs(a));
   // round-off decides a handful of borderline convergence checks

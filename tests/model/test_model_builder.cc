@@ -11,21 +11,21 @@ using namespace poundfe;
 BOOST_AUTO_TEST_CASE(frame_and_shear_building_side_by_side)
 {
   InputParameters p = poundfe_test::shear_building_input(2, 1000, 5e6, 0);
-  p.buildings.resize(2);
-  BuildingParameters &frame = p.buildings[0];
+  p.model.buildings.resize(2);
+  BuildingParameters &frame = p.model.buildings[0];
   frame                     = BuildingParameters();
   frame.name                = "F";
-  frame.type                = "frame";
+  frame.type                = BuildingType::frame;
   frame.n_storeys           = 3;
   frame.n_bays              = 2;
   frame.bay_widths          = {5.0, 7.0};
   frame.storey_heights      = {4.0, 3.0, 3.0};
   frame.floor_masses        = {3000};
-  BuildingParameters &shear = p.buildings[1];
-  shear                     = poundfe_test::shear_building_input(2, 1000, 5e6, 0).buildings[0];
+  BuildingParameters &shear = p.model.buildings[1];
+  shear                     = poundfe_test::shear_building_input(2, 1000, 5e6, 0).model.buildings[0];
   shear.drawing_width       = 2.0;
-  p.separations             = {0.1};
-  const Model model         = build_model(p);
+  p.model.separations             = {0.1};
+  const Model model         = build_model(p.model, p.contact, p);
 
   BOOST_TEST(model.buildings.size() == 2u);
   // frame: 3 lines x 4 levels; shear: base + 2 floors
@@ -49,11 +49,11 @@ BOOST_AUTO_TEST_CASE(frame_and_shear_building_side_by_side)
 BOOST_AUTO_TEST_CASE(pinned_base_frees_base_rotations)
 {
   InputParameters p = poundfe_test::shear_building_input(1, 1000, 5e6, 0);
-  p.buildings[0]            = BuildingParameters();
-  p.buildings[0].type       = "frame";
-  p.buildings[0].name       = "F";
-  p.buildings[0].base_fixity = "pinned";
-  const Model model = build_model(p);
+  p.model.buildings[0]            = BuildingParameters();
+  p.model.buildings[0].type       = BuildingType::frame;
+  p.model.buildings[0].name       = "F";
+  p.model.buildings[0].base_fixity = BaseFixity::pinned;
+  const Model model = build_model(p.model, p.contact, p);
   // 2 base nodes keep rz, 2 top nodes have 3 DOFs each
   BOOST_TEST(model.n_equations() == 2u + 6u);
 }
@@ -61,11 +61,11 @@ BOOST_AUTO_TEST_CASE(pinned_base_frees_base_rotations)
 BOOST_AUTO_TEST_CASE(elements_per_member_subdivide_members)
 {
   InputParameters p = poundfe_test::shear_building_input(1, 1000, 5e6, 0);
-  p.buildings[0]                     = BuildingParameters();
-  p.buildings[0].type                = "frame";
-  p.buildings[0].name                = "F";
-  p.buildings[0].elements_per_member = 4;
-  const Model model = build_model(p);
+  p.model.buildings[0]                     = BuildingParameters();
+  p.model.buildings[0].type                = BuildingType::frame;
+  p.model.buildings[0].name                = "F";
+  p.model.buildings[0].elements_per_member = 4;
+  const Model model = build_model(p.model, p.contact, p);
   BOOST_TEST(model.members.size() == 12u);
   BOOST_TEST(model.n_nodes() == 4u + 9u);
   BOOST_TEST(model.buildings[0].floors[0].nodes.size() == 2u); // joints only
@@ -75,9 +75,9 @@ BOOST_AUTO_TEST_CASE(hinges_at_column_bases_and_beam_ends)
 {
   // three-storey, one-bay frame: 2 column bases + 3 floors x 2 beam ends
   const InputParameters p = read_parameters("input/three-storey-frame-hinges.prm");
-  const Model           model = build_model(p);
+  const Model           model = build_model(p.model, p.contact, p);
   BOOST_TEST(model.hinges.size() == 8u);
-  const BuildingParameters &b = p.buildings[0];
+  const BuildingParameters &b = p.model.buildings[0];
   for (const Hinge &h : model.hinges)
     {
       // the member-side node shares the joint's translations only
@@ -112,8 +112,8 @@ BOOST_AUTO_TEST_CASE(hinges_at_column_bases_and_beam_ends)
 BOOST_AUTO_TEST_CASE(bouc_wen_storeys_from_yield_drifts)
 {
   InputParameters p = poundfe_test::shear_building_input(3, 1000, 5e6, 0.02);
-  p.buildings[0].storey_yield_drifts = {0.01, 0.0, 0.02};
-  const Model model                 = build_model(p);
+  p.model.buildings[0].storey_yield_drifts = {0.01, 0.0, 0.02};
+  const Model model                 = build_model(p.model, p.contact, p);
   BOOST_TEST(model.links[0].hysteretic);
   BOOST_TEST(!model.links[1].hysteretic);
   BOOST_TEST(model.links[2].hysteresis.yield_deformation == 0.02);

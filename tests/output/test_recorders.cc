@@ -252,8 +252,8 @@ BOOST_AUTO_TEST_CASE(frame_base_shear_differs_from_inertia_by_the_damping_share)
   TimeHistory      history(analysis);
   PeakResponse     peaks(analysis.model, history.nonlinear_elements());
   EquilibriumTerms terms;
-  auto recorders = make_recorders(analysis.input.recorders, analysis.input.file, history.state(),
-                                  peaks, analysis.input.time_step, dir);
+  auto recorders = make_recorders(analysis.input.output.recorders, analysis.input.file, history.state(),
+                                  peaks, analysis.input.time_integration.newmark.time_step, dir);
   Observers observers{&peaks, &terms};
   for (const auto &r : recorders)
     observers.push_back(r.get());

@@ -6,7 +6,7 @@
 #include <poundfe/analysis/modal.h>
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/model/model.h>
-#include <poundfe/model/parameters.h>
+#include <poundfe/analysis/input_parameters.h>
 
 #include <string>
 #include <vector>

@@ -56,7 +56,10 @@ namespace poundfe
     /// The view observers read; valid for the life of this object.
     const ResponseView &state() const { return view; }
     const NonlinearElements &nonlinear_elements() const { return elements; }
-    std::string tangent_update() const { return integrator.tangent_update(); }
+    std::string tangent_update() const
+    {
+      return tangent_update_names().name(integrator.tangent_update());
+    }
     std::string linear_solver_name() const { return integrator.linear_solver_name(); }
 
     /// Steps of the analysis time step to the end time.
@@ -83,10 +86,6 @@ namespace poundfe
   /// realizations 0..n-1 and their ensemble PSD against the target.
   int ground_motion_command(const InputParameters &input, const std::string &output_directory,
                             unsigned int n_realizations = 0);
-
-  /// The Newmark and Newton settings of the input's Time integration and
-  /// Contact sections.
-  NewmarkParameters newmark_parameters(const InputParameters &input);
 
   /// The excitation the input describes.
   Excitation make_excitation(const Analysis &analysis);

@@ -4,10 +4,11 @@
 #define poundfe_excitation_excitation_h
 
 #include <poundfe/assembly/linear_system.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/excitation/excitation_parameters.h>
 #include <poundfe/excitation/ground_motion.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/model/model.h>
-#include <poundfe/model/parameters.h>
 
 #include <string>
 #include <vector>
@@ -52,15 +53,23 @@ namespace poundfe
     Vector                  mass_times_influence;
   };
 
-  /// The ground motion the input asks for (generated, recorded or none).
-  GroundMotion make_ground_motion(const InputParameters &input);
+  /// The ground motion of `Ground motion` (generated, recorded or none);
+  /// `time_step` is the analysis time step, `input` names the file in
+  /// messages and resolves the record's path.
+  GroundMotion make_ground_motion(const GroundMotionParameters &parameters, const InputFile &input,
+                                  double time_step);
 
   /// The generator of the input's stochastic ground motion (kanai-tajimi,
   /// clough-penzien or white-noise types).
-  MotionGenerator make_motion_generator(const InputParameters &input);
+  MotionGenerator make_motion_generator(const GroundMotionParameters &parameters, double time_step);
 
   /// Parse the 'Nodal forces' entries against the model. Throws InputError.
-  std::vector<NodalForce> make_nodal_forces(const InputParameters &input, const Model &model);
+  /// White-noise forces are held over the stochastic ground motion's sample
+  /// interval and last its duration.
+  std::vector<NodalForce> make_nodal_forces(const NodalForceParameters   &parameters,
+                                            const GroundMotionParameters &ground_motion,
+                                            double time_step, const InputFile &input,
+                                            const Model &model);
 } // namespace poundfe
 
 #endif

@@ -12,10 +12,23 @@
 
 namespace poundfe
 {
+  enum class RecordFileFormat
+  {
+    automatic, // from the extension: .at2 (any case) or text
+    at2,
+    text
+  };
+
+  enum class RecordUnits
+  {
+    g,
+    m_per_s2 // AT2 files are always in g
+  };
+
   struct RecordFormat
   {
-    std::string format    = "auto"; // auto | at2 | text
-    std::string units     = "g";    // g | m/s^2 (AT2 files are always in g)
+    RecordFileFormat format    = RecordFileFormat::automatic;
+    RecordUnits      units     = RecordUnits::g;
     double      time_step = 0;      // for one-column text
   };
 

@@ -43,8 +43,16 @@ namespace poundfe
     double zeta_f         = 0.6;
   };
 
-  /// Preset of Der Kiureghian & Neuenhofer (1992): "firm", "medium", "soft".
-  FilterParameters soil_preset(const std::string &soil, bool clough_penzien);
+  enum class Soil
+  {
+    firm,
+    medium,
+    soft,
+    custom // omega_g, zeta_g given
+  };
+
+  /// Preset of Der Kiureghian & Neuenhofer (1992): firm, medium, soft.
+  FilterParameters soil_preset(Soil soil, bool clough_penzien);
 
   /// Two-sided PSD at circular frequency omega for unit S0.
   double filter_psd(const FilterParameters &filter, double omega);
@@ -53,9 +61,17 @@ namespace poundfe
   /// Lyapunov equation of the filter's state-space form).
   double stationary_variance_per_unit_s0(const FilterParameters &filter);
 
+  enum class EnvelopeKind
+  {
+    none,
+    jennings,
+    saragoni_hart,
+    shinozuka_sato
+  };
+
   struct Envelope
   {
-    std::string kind = "none"; // none | jennings | saragoni-hart | shinozuka-sato
+    EnvelopeKind kind = EnvelopeKind::none;
     double      rise_end = 2, plateau_end = 10, decay = 0.3; // Jennings
     double      b = 2, c = 0.5;                                // Saragoni-Hart
     double      alpha = 0.2, beta = 0.6;                        // Shinozuka-Sato

@@ -19,8 +19,10 @@ namespace poundfe
   class StochasticLoad
   {
   public:
-    /// The random parts of `excitation`, which was made from `input`.
-    StochasticLoad(const InputParameters &input, const Excitation &excitation);
+    /// The random parts of `excitation`, which was made from `ground_motion`
+    /// (and nodal forces) with the analysis time step `time_step`.
+    StochasticLoad(const GroundMotionParameters &ground_motion, double time_step,
+                   const Excitation &excitation);
 
     unsigned int  n_variables() const { return n_random; }
     std::uint64_t seed() const { return random_seed; }

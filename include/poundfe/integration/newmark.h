@@ -22,6 +22,7 @@
 #define poundfe_integration_newmark_h
 
 #include <poundfe/assembly/linear_system.h>
+#include <poundfe/base/choices.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/integration/impact_log.h>
 
@@ -32,13 +33,23 @@
 
 namespace poundfe
 {
+  /// How the tangent of the nonlinear elements enters the solve.
+  enum class TangentUpdate
+  {
+    automatic,  // woodbury up to a total tangent rank of 100, else refactorize
+    woodbury,   // one factorisation of K_eff and a dense low-rank correction
+    refactorize // add the element tangents to K_eff and refactorise
+  };
+
+  const NameTable<TangentUpdate> &tangent_update_names();
+
   struct NewtonParameters
   {
     double       residual_tolerance = 1e-8;
     double       energy_tolerance   = 1e-12;
     unsigned int max_iterations     = 20;
     unsigned int max_step_cuts      = 10;
-    std::string  tangent_update     = "auto"; // auto | woodbury | refactorize
+    TangentUpdate tangent_update    = TangentUpdate::automatic;
     /// A step in which a gap opens or closes is redone as 2^r sub-steps
     /// around the event.
     unsigned int event_refinement   = 4;
@@ -135,7 +146,11 @@ namespace poundfe
     void set_equation_names(std::vector<std::string> names) { equation_names = std::move(names); }
     /// Every contact episode of the gap elements so far.
     const ImpactLog &impact_log() const { return impacts; }
-    std::string tangent_update() const { return use_woodbury ? "woodbury" : "refactorize"; }
+    /// The update in use (never automatic).
+    TangentUpdate tangent_update() const
+    {
+      return use_woodbury ? TangentUpdate::woodbury : TangentUpdate::refactorize;
+    }
     std::string linear_solver_name() const;
 
   private:

@@ -1,0 +1,52 @@
+// Everything a parameter file (.prm or .json) says: the sections of every
+// module, each declared and checked by its own struct, and where the file
+// is (for messages and relative paths). Only the commands see this whole;
+// the engine gets the parts it needs (e.g. TimeIntegrationParameters).
+#ifndef poundfe_analysis_input_parameters_h
+#define poundfe_analysis_input_parameters_h
+
+#include <poundfe/analysis/reliability_parameters.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/excitation/excitation_parameters.h>
+#include <poundfe/integration/time_integration_parameters.h>
+#include <poundfe/model/contact_parameters.h>
+#include <poundfe/model/parameters.h>
+#include <poundfe/output/output_parameters.h>
+
+#include <iosfwd>
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  struct InputParameters : InputFile
+  {
+    ModelParameters           model;       // Model, Building <i>
+    ContactParameters         contact;     // Contact
+    GroundMotionParameters    ground_motion;
+    NodalForceParameters      nodal_forces;
+    TimeIntegrationParameters time_integration; // and Contact/Event refinement
+    OutputParameters          output;
+    MonteCarloParameters      monte_carlo;
+    SubsetParameters          subset;
+    FragilityParameters       fragility;
+
+    /// Declare every section, with `model.buildings.size()` buildings.
+    void declare(dealii::ParameterHandler &prm);
+    /// After parsing: hand the hysteresis settings of Time integration to
+    /// the buildings' laws, then check every section. Throws InputError.
+    void finalize();
+  };
+
+  /// Read and check a .prm or .json file. Throws InputError.
+  InputParameters read_parameters(const std::string &file);
+
+  /// Print every parameter with its documentation and default.
+  void print_parameters(std::ostream &out);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,37 @@
+// Where parameters came from, for messages and relative paths, and the few
+// checks every section needs (positive, non-negative, "one or one per").
+// Each module checks its own section with these (deal.II step-33 style);
+// the aggregate (analysis/input_parameters.h) fills the line index.
+#ifndef poundfe_base_input_file_h
+#define poundfe_base_input_file_h
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct InputFile
+  {
+    std::string file;
+    std::string directory; // relative input paths are resolved against it
+    /// Line of "set <section/.../entry>" (only .prm files are indexed).
+    std::map<std::string, int> lines;
+
+    /// Line of "set <path>" in the file (0 when unknown, e.g. JSON input).
+    int line_of(const std::string &path) const;
+    /// Path of an input file named in the parameter file.
+    std::string resolve(const std::string &relative) const;
+
+    /// InputError naming the file, the line of `path` and `path`.
+    [[noreturn]] void fail(const std::string &path, const std::string &problem) const;
+    void positive(const std::string &path, double value) const;
+    void non_negative(const std::string &path, double value) const;
+    /// One value for all or n values, each positive (or >= 0 with allow_zero).
+    void list(const std::string &path, const std::vector<double> &values, std::size_t n,
+              bool allow_zero, const std::string &what) const;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,52 @@
+// The `Time integration` section: the Newmark and Newton settings the
+// integrator takes as they are, the end time, the linear solver, and the
+// local iteration of the hysteretic laws. `Contact/Event refinement` also
+// belongs here (it sets how the integrator refines a step with a contact
+// event), although users find it in the Contact section.
+#ifndef poundfe_integration_time_integration_parameters_h
+#define poundfe_integration_time_integration_parameters_h
+
+#include <poundfe/base/choices.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/integration/newmark.h>
+
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  /// Bouc-Wen z over a step: the theta of the one-step rule.
+  enum class HysteresisIntegration
+  {
+    trapezoidal,   // theta = 1/2, second order
+    backward_euler // theta = 1, first order, most robust
+  };
+
+  const NameTable<HysteresisIntegration> &hysteresis_integration_names();
+
+  struct TimeIntegrationParameters
+  {
+    NewmarkParameters     newmark{0.001, 0.5, 0.25, NewtonParameters()};
+    double                end_time      = 0.0; // 0 = length of the ground motion
+    std::string           linear_solver = "eigen-ldlt"; // one of linear_solver_names()
+    HysteresisIntegration hysteresis_integration = HysteresisIntegration::trapezoidal;
+    double                law_tolerance          = 1e-12;
+    unsigned int          law_max_iterations     = 30;
+
+    /// theta of the hysteretic laws' one-step rule.
+    double hysteresis_theta() const;
+
+    /// Declare the `Time integration` section (entered and left here).
+    void declare(dealii::ParameterHandler &prm);
+    /// `Event refinement`, in the current subsection (`Contact`).
+    void declare_event_refinement(dealii::ParameterHandler &prm);
+    /// Throws InputError.
+    void check(const InputFile &input) const;
+  };
+} // namespace poundfe
+
+#endif

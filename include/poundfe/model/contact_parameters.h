@@ -1,0 +1,60 @@
+// The `Contact` section: the law of the gap elements the model builder
+// makes between buildings and at barriers. `Event refinement`, also in this
+// section, belongs to the integrator (integration/time_integration_parameters.h).
+#ifndef poundfe_model_contact_parameters_h
+#define poundfe_model_contact_parameters_h
+
+#include <poundfe/base/choices.h>
+#include <poundfe/base/input_file.h>
+
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  /// Where the damping parameter of a damped law comes from.
+  enum class ContactDampingFrom
+  {
+    given,      // the value of Damping
+    formula,    // the law's literature formula of e
+    calibrated  // one simulated impact returns e exactly
+  };
+
+  /// The literature formula of xi_bar of the Hertz-damp law.
+  enum class HertzDampFormula
+  {
+    muthukumar_desroches,
+    ye_li_zhu
+  };
+
+  const NameTable<ContactDampingFrom> &contact_damping_from_names();
+  /// Also the `variant` names of damping_from_restitution_formula.
+  const NameTable<HertzDampFormula> &hertz_damp_formula_names();
+
+  struct ContactParameters
+  {
+    std::string        law       = "none"; // none or one of contact_law_names()
+    double             stiffness = 2.75e9;
+    ContactDampingFrom damping_from = ContactDampingFrom::calibrated;
+    double             damping      = 0.0; // xi or xi_bar when given
+    double             restitution  = 0.65;
+    HertzDampFormula   hertz_damp_formula   = HertzDampFormula::muthukumar_desroches;
+    double             effective_mass       = 0.0; // 0: from the floor masses
+    double             calibration_velocity = 1.0;
+    bool               between_buildings    = true;
+    bool               floor_to_column      = true;
+    std::vector<std::string> barriers; // "building floor side gap"
+
+    /// Declare this section's entries in the current subsection (`Contact`).
+    void declare(dealii::ParameterHandler &prm);
+    /// Throws InputError.
+    void check(const InputFile &input) const;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,34 @@
+// The `Output` section: where and how often results are written, with its
+// `Recorders` subsection (output/recorder_parameters.h).
+#ifndef poundfe_output_output_parameters_h
+#define poundfe_output_output_parameters_h
+
+#include <poundfe/base/input_file.h>
+#include <poundfe/output/recorder_parameters.h>
+
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  struct OutputParameters
+  {
+    std::string        directory    = "results";
+    double             interval     = 0.0; // of CSV rows, s; 0 = every step
+    double             vtu_interval = 0.1; // 0 = no VTU
+    bool               plots        = true;
+    unsigned int       n_modes      = 6;
+    RecorderParameters recorders;
+
+    /// Declare the `Output` section (entered and left here).
+    void declare(dealii::ParameterHandler &prm);
+    /// Parse the recorders and check. Throws InputError.
+    void finalize(const InputFile &input);
+  };
+} // namespace poundfe
+
+#endif

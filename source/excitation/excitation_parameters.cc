@@ -1,0 +1,220 @@
+#include <poundfe/excitation/excitation_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
+
+namespace poundfe
+{
+  namespace Patterns = dealii::Patterns;
+
+  const NameTable<GroundMotionType> &
+  ground_motion_type_names()
+  {
+    static const NameTable<GroundMotionType> table(
+      {{GroundMotionType::kanai_tajimi, "kanai-tajimi"},
+       {GroundMotionType::clough_penzien, "clough-penzien"},
+       {GroundMotionType::white_noise, "white-noise"},
+       {GroundMotionType::record, "record"},
+       {GroundMotionType::none, "none"}});
+    return table;
+  }
+
+  const NameTable<StochasticMethod> &
+  stochastic_method_names()
+  {
+    static const NameTable<StochasticMethod> table(
+      {{StochasticMethod::filtered_white_noise, "filtered-white-noise"},
+       {StochasticMethod::spectral_representation, "spectral-representation"}});
+    return table;
+  }
+
+  const NameTable<EnvelopeKind> &
+  envelope_names()
+  {
+    static const NameTable<EnvelopeKind> table({{EnvelopeKind::none, "none"},
+                                                {EnvelopeKind::jennings, "jennings"},
+                                                {EnvelopeKind::saragoni_hart, "saragoni-hart"},
+                                                {EnvelopeKind::shinozuka_sato, "shinozuka-sato"}});
+    return table;
+  }
+
+  const NameTable<Soil> &
+  soil_names()
+  {
+    static const NameTable<Soil> table(
+      {{Soil::firm, "firm"}, {Soil::medium, "medium"}, {Soil::soft, "soft"}, {Soil::custom, "custom"}});
+    return table;
+  }
+
+  const NameTable<RecordFileFormat> &
+  record_format_names()
+  {
+    static const NameTable<RecordFileFormat> table({{RecordFileFormat::automatic, "auto"},
+                                                    {RecordFileFormat::at2, "at2"},
+                                                    {RecordFileFormat::text, "text"}});
+    return table;
+  }
+
+  const NameTable<RecordUnits> &
+  record_units_names()
+  {
+    static const NameTable<RecordUnits> table(
+      {{RecordUnits::g, "g"}, {RecordUnits::m_per_s2, "m/s^2"}});
+    return table;
+  }
+
+  bool
+  GroundMotionParameters::is_stochastic() const
+  {
+    return type == GroundMotionType::kanai_tajimi || type == GroundMotionType::clough_penzien ||
+           type == GroundMotionType::white_noise;
+  }
+
+  double
+  GroundMotionParameters::held_interval(const double time_step) const
+  {
+    return sample_interval > 0 ? sample_interval : time_step;
+  }
+
+  void
+  GroundMotionParameters::declare(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Ground motion");
+    add_choice(prm, "Type", type,
+               "Horizontal ground acceleration: a generated Kanai-Tajimi or "
+               "Clough-Penzien sample, plain white noise (intensity S0 or D, held "
+               "over the sample interval), a record, or none.",
+               ground_motion_type_names());
+    prm.add_parameter("Scale factor", scale_factor, "Multiplies the motion.");
+    prm.enter_subsection("Record");
+    prm.add_parameter("File", record_file,
+                      "PEER .AT2, or text with one (acceleration) or two (time, "
+                      "acceleration) columns; relative to this parameter file.");
+    add_choice(prm, "Format", record_format,
+               "auto: PEER AT2 for a .at2 file (any case), text otherwise.",
+               record_format_names());
+    add_choice(prm, "Units", record_units,
+               "Units of the values in a text file (AT2 files are in g).",
+               record_units_names());
+    prm.add_parameter("Time step", record_time_step,
+                      "Sample interval of a one-column text record, s.");
+    prm.add_parameter("Target PGA", record_target_pga,
+                      "Scale the record to this PGA in g (0: keep it).");
+    prm.leave_subsection();
+    prm.enter_subsection("Stochastic");
+    add_choice(prm, "Soil", soil,
+               "Filter parameters preset (Der Kiureghian & Neuenhofer 1992): firm "
+               "15 rad/s, 0.6; medium 10, 0.4; soft 5, 0.2; custom uses omega_g, "
+               "zeta_g. Clough-Penzien presets use omega_f = omega_g/10, zeta_f 0.6.",
+               soil_names());
+    prm.add_parameter("omega_g", omega_g, "Ground filter frequency, rad/s (custom).");
+    prm.add_parameter("zeta_g", zeta_g, "Ground filter damping ratio (custom).");
+    prm.add_parameter("omega_f", omega_f, "Clough-Penzien high-pass frequency, rad/s (custom).");
+    prm.add_parameter("zeta_f", zeta_f, "Clough-Penzien high-pass damping (custom).");
+    add_choice(prm, "Method", method,
+               "Kanai-Tajimi/Clough-Penzien samples: white noise through the filter "
+               "(exact over each held interval), or the spectral representation "
+               "(sum of cosines with random phases).",
+               stochastic_method_names());
+    prm.add_parameter("Cutoff frequency", cutoff_frequency,
+                      "Spectral representation: upper frequency w_u, rad/s (0: min(pi/dt, "
+                      "25 omega_g)); needs dt <= pi/w_u.");
+    prm.add_parameter("Number of frequencies", n_frequencies,
+                      "Spectral representation: N (0: w_u duration / pi, so the sample "
+                      "does not repeat within twice its duration).");
+    prm.add_parameter("S0", spectral_intensity,
+                      "Two-sided PSD intensity of the white noise, m^2/s^3; 0: from D, or "
+                      "from the target PGA and peak factor.");
+    prm.add_parameter("D", noise_intensity_d,
+                      "White-noise intensity in the thesis's convention <w(t) w(t')> = "
+                      "2 D delta(t - t'), D = pi S0 (used when S0 = 0).");
+    prm.add_parameter("Target PGA", target_pga, "Target PGA in g (used when S0 = 0).");
+    prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation.");
+    prm.add_parameter("Duration", duration, "Length of the sample, s.");
+    prm.add_parameter("Sample interval", sample_interval,
+                      "White-noise sample interval, s (0: the analysis time step).");
+    prm.add_parameter("Seed", seed, "Random seed.");
+    prm.add_parameter("Realization", realization,
+                      "Realization index: (seed, index) fixes the sample.");
+    add_choice(prm, "Envelope", envelope,
+               "Amplitude modulation: Jennings et al. (1968) trapezoid, Saragoni-Hart "
+               "t^b e^(-ct), Shinozuka-Sato e^(-at) - e^(-bt), or none.",
+               envelope_names());
+    prm.add_parameter("Rise end", jennings_rise_end, "Jennings: end of (t/t1)^2 rise, s.");
+    prm.add_parameter("Plateau end", jennings_plateau_end, "Jennings: end of plateau, s.");
+    prm.add_parameter("Decay rate", jennings_decay, "Jennings: exp(-c (t - t2)) rate, 1/s.");
+    prm.add_parameter("Saragoni b", saragoni_b, "Saragoni-Hart t^b e^(-ct): b.");
+    prm.add_parameter("Saragoni c", saragoni_c, "Saragoni-Hart t^b e^(-ct): c, 1/s.");
+    prm.add_parameter("Shinozuka alpha", shinozuka_alpha, "e^(-at)-e^(-bt): a, 1/s.");
+    prm.add_parameter("Shinozuka beta", shinozuka_beta, "e^(-at)-e^(-bt): b, 1/s.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  void
+  GroundMotionParameters::check(const InputFile &input, const double time_step) const
+  {
+    const std::string gm = "Ground motion/";
+    if (type == GroundMotionType::record && record_file.empty())
+      input.fail(gm + "Record/File", "a record ground motion needs a file");
+    input.non_negative(gm + "Record/Time step", record_time_step);
+    input.non_negative(gm + "Record/Target PGA", record_target_pga);
+    if (!std::isfinite(scale_factor))
+      input.fail(gm + "Scale factor", "must be finite");
+    if (type == GroundMotionType::white_noise && !(spectral_intensity > 0 || noise_intensity_d > 0))
+      input.fail(gm + "Stochastic/S0", "white noise needs S0 > 0 or D > 0 (it has no finite PGA)");
+    if (is_stochastic())
+      {
+        const std::string st = gm + "Stochastic/";
+        input.non_negative(st + "D", noise_intensity_d);
+        input.non_negative(st + "Cutoff frequency", cutoff_frequency);
+        const double dt = held_interval(time_step);
+        if (method == StochasticMethod::spectral_representation && cutoff_frequency * dt > M_PI)
+          input.fail(st + "Cutoff frequency",
+                 "exceeds pi / sample interval = " + std::to_string(M_PI / dt) + " rad/s");
+        input.positive(st + "omega_g", omega_g);
+        if (!(zeta_g > 0 && zeta_g < 1))
+          input.fail(st + "zeta_g", "must lie in (0, 1)");
+        input.positive(st + "omega_f", omega_f);
+        if (!(zeta_f > 0 && zeta_f < 1))
+          input.fail(st + "zeta_f", "must lie in (0, 1)");
+        input.non_negative(st + "S0", spectral_intensity);
+        input.non_negative(st + "Target PGA", target_pga);
+        input.positive(st + "Peak factor", peak_factor);
+        input.positive(st + "Duration", duration);
+        input.non_negative(st + "Sample interval", sample_interval);
+        input.positive(st + "Rise end", jennings_rise_end);
+        if (jennings_plateau_end < jennings_rise_end)
+          input.fail(st + "Plateau end", "must not be before the rise end");
+        input.non_negative(st + "Decay rate", jennings_decay);
+        input.positive(st + "Saragoni b", saragoni_b);
+        input.positive(st + "Saragoni c", saragoni_c);
+        input.positive(st + "Shinozuka alpha", shinozuka_alpha);
+        if (!(shinozuka_beta > shinozuka_alpha))
+          input.fail(st + "Shinozuka beta", "must exceed Shinozuka alpha");
+      }
+  }
+
+  void
+  NodalForceParameters::declare(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nodal forces");
+    prm.add_parameter("Harmonic", harmonic,
+                      "Harmonic forces 'building floor node dof amplitude omega phase', "
+                      "separated by ';'. floor 0 is the base, node counts from the left "
+                      "(0-based), dof ux|uy|rz, amplitude in N (N m), omega in rad/s.",
+                      Patterns::List(Patterns::Anything(), 0, 1000, ";"));
+    prm.add_parameter("Tabulated", tabulated,
+                      "Tabulated forces 'building floor node dof file' separated by ';'; "
+                      "the file has two columns: time, force (linear in between, zero "
+                      "outside).",
+                      Patterns::List(Patterns::Anything(), 0, 1000, ";"));
+    prm.add_parameter("White noise", white_noise,
+                      "Random forces 'building floor node dof S0' separated by ';': white "
+                      "noise of two-sided intensity S0 (N^2 s), held over the sample "
+                      "interval of Ground motion/Stochastic; part of each realization.",
+                      Patterns::List(Patterns::Anything(), 0, 1000, ";"));
+    prm.leave_subsection();
+  }
+} // namespace poundfe

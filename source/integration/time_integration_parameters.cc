@@ -1,0 +1,93 @@
+#include <poundfe/assembly/linear_solver.h>
+#include <poundfe/integration/time_integration_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace poundfe
+{
+  namespace Patterns = dealii::Patterns;
+
+  const NameTable<HysteresisIntegration> &
+  hysteresis_integration_names()
+  {
+    static const NameTable<HysteresisIntegration> table(
+      {{HysteresisIntegration::trapezoidal, "trapezoidal"},
+       {HysteresisIntegration::backward_euler, "backward-euler"}});
+    return table;
+  }
+
+  double
+  TimeIntegrationParameters::hysteresis_theta() const
+  {
+    return hysteresis_integration == HysteresisIntegration::trapezoidal ? 0.5 : 1.0;
+  }
+
+  void
+  TimeIntegrationParameters::declare(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    prm.add_parameter("Time step", newmark.time_step, "Analysis time step, s.");
+    prm.add_parameter("End time", end_time, "0: the length of the ground motion.");
+    prm.add_parameter("Newmark gamma", newmark.gamma,
+                      "gamma >= 1/2 (1/2: no numerical damping).");
+    prm.add_parameter("Newmark beta", newmark.beta,
+                      "beta >= (1/2 + gamma)^2 / 4 (1/4 with gamma = 1/2: average "
+                      "acceleration).");
+    add_choice(prm, "Linear solver", linear_solver,
+               "Direct solver of the effective matrix (factorised once); petsc and "
+               "trilinos need MPI.",
+               linear_solver_names());
+    prm.add_parameter("Newton residual tolerance", newmark.newton.residual_tolerance,
+                      "A nonlinear step has converged when the residual norm is below this "
+                      "times the norm of the effective load ...");
+    prm.add_parameter("Newton energy tolerance", newmark.newton.energy_tolerance,
+                      "... and the work of the residual on the last correction is below "
+                      "this times that of the first iteration.");
+    prm.add_parameter("Newton maximum iterations", newmark.newton.max_iterations,
+                      "Iterations before the step is cut.", Patterns::Integer(1, 1000));
+    prm.add_parameter("Maximum step cuts", newmark.newton.max_step_cuts,
+                      "A step that fails is halved and retried, down to Time step / "
+                      "2^cuts; then the run stops (exit 2).", Patterns::Integer(0, 40));
+    add_choice(prm, "Tangent update", newmark.newton.tangent_update,
+               "How the tangent of nonlinear elements enters the solve: woodbury "
+               "keeps the one factorisation of the linear part and adds a dense "
+               "correction whose rank is the total tangent rank of the nonlinear "
+               "elements (one per uniaxial element); refactorize refactorises every "
+               "iteration; auto picks woodbury up to a total rank of 100.",
+               tangent_update_names());
+    add_choice(prm, "Hysteresis integration", hysteresis_integration,
+               "Bouc-Wen z over a step: trapezoidal (second order) or "
+               "backward-euler (first order, most robust).",
+               hysteresis_integration_names());
+    prm.add_parameter("Law tolerance", law_tolerance,
+                      "Tolerance of the local Newton iteration of a law (on z).");
+    prm.add_parameter("Law maximum iterations", law_max_iterations,
+                      "Local iterations before the law reports failure.",
+                      Patterns::Integer(1, 1000));
+    prm.leave_subsection();
+  }
+
+  void
+  TimeIntegrationParameters::declare_event_refinement(dealii::ParameterHandler &prm)
+  {
+    prm.add_parameter("Event refinement", newmark.newton.event_refinement,
+                      "A step in which a contact starts or ends is redone in 2^r "
+                      "sub-steps around the event, which is then located inside the "
+                      "sub-step by interpolation.", Patterns::Integer(0, 12));
+  }
+
+  void
+  TimeIntegrationParameters::check(const InputFile &input) const
+  {
+    input.positive("Time integration/Time step", newmark.time_step);
+    input.non_negative("Time integration/End time", end_time);
+    if (!(newmark.gamma >= 0.5))
+      input.fail("Time integration/Newmark gamma", "must be >= 1/2 for stability");
+    if (!(newmark.beta >= 0.25 * (0.5 + newmark.gamma) * (0.5 + newmark.gamma) - 1e-12))
+      input.fail("Time integration/Newmark beta",
+             "must be >= (1/2 + gamma)^2 / 4 for unconditional stability");
+    input.positive("Time integration/Newton residual tolerance", newmark.newton.residual_tolerance);
+    input.positive("Time integration/Newton energy tolerance", newmark.newton.energy_tolerance);
+    input.positive("Time integration/Law tolerance", law_tolerance);
+  }
+} // namespace poundfe

@@ -1,0 +1,91 @@
+#include <poundfe/laws/contact_law.h>
+#include <poundfe/model/contact_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace poundfe
+{
+  namespace Patterns = dealii::Patterns;
+
+  const NameTable<ContactDampingFrom> &
+  contact_damping_from_names()
+  {
+    static const NameTable<ContactDampingFrom> table({{ContactDampingFrom::given, "given"},
+                                                      {ContactDampingFrom::formula, "formula"},
+                                                      {ContactDampingFrom::calibrated, "calibrated"}});
+    return table;
+  }
+
+  const NameTable<HertzDampFormula> &
+  hertz_damp_formula_names()
+  {
+    static const NameTable<HertzDampFormula> table(
+      {{HertzDampFormula::muthukumar_desroches, "muthukumar-desroches"},
+       {HertzDampFormula::ye_li_zhu, "ye-li-zhu"}});
+    return table;
+  }
+
+  void
+  ContactParameters::declare(dealii::ParameterHandler &prm)
+  {
+    // every registered law, with its formula (laws/contact_law.h)
+    std::vector<std::string> laws{"none"};
+    std::string              formulas;
+    for (const std::string &name : contact_law_names())
+      {
+        laws.push_back(name);
+        formulas += ", " + name + " (" + contact_law_type(name).formula + ")";
+      }
+    add_choice(prm, "Law", law,
+               "Gap elements between neighbouring buildings (and at barriers): none" + formulas +
+                 ".",
+               laws);
+    prm.add_parameter("Stiffness", stiffness,
+                      "k in N/m (linear laws) or k_h, beta in N/m^1.5 (Hertz laws, "
+                      "Jankowski; concrete ~2.75e9).");
+    add_choice(prm, "Damping from", damping_from,
+               "given: the value of Damping; formula: the law's literature formula "
+               "from the coefficient of restitution; calibrated: the value for "
+               "which one impact of the effective mass on a rigid wall returns "
+               "exactly that coefficient.",
+               contact_damping_from_names());
+    prm.add_parameter("Damping", damping,
+                      "xi (Kelvin-Voigt laws, Jankowski) or xi_bar (Hertz-damp) when given.");
+    prm.add_parameter("Coefficient of restitution", restitution, "e in (0, 1]; concrete ~0.65.");
+    add_choice(prm, "Hertz-damp formula", hertz_damp_formula,
+               "xi_bar from e: 3(1 - e^2)/4 (Muthukumar & DesRoches) or "
+               "8(1 - e)/(5e) (Ye, Li & Zhu).",
+               hertz_damp_formula_names());
+    prm.add_parameter("Effective mass", effective_mass,
+                      "m_e in kg; 0: m1 m2/(m1 + m2) of the colliding floor masses (the "
+                      "floor mass against a barrier).");
+    prm.add_parameter("Calibration velocity", calibration_velocity,
+                      "Approach velocity of the calibration impact, m/s.");
+    prm.add_parameter("Between buildings", between_buildings,
+                      "Gap elements between neighbouring buildings at every floor level "
+                      "the lower one has (initial gap: Model/Separations).");
+    prm.add_parameter("Floor to column", floor_to_column,
+                      "Where a floor of one building has no floor of its neighbour at "
+                      "the same level, the contact point is on the neighbour's facing "
+                      "column at that height (frames).");
+    prm.add_parameter("Barriers", barriers,
+                      "Rigid barriers 'building floor side gap' separated by ';': the "
+                      "floor's facing joint touches a barrier on the left or right side "
+                      "once it has moved by gap (m) towards it.",
+                      Patterns::List(Patterns::Anything(), 0, 1000, ";"));
+  }
+
+  void
+  ContactParameters::check(const InputFile &input) const
+  {
+    if (law == "none")
+      return;
+    input.positive("Contact/Stiffness", stiffness);
+    if (!(restitution > 0 && restitution <= 1))
+      input.fail("Contact/Coefficient of restitution",
+                 "must lie in (0, 1], got " + std::to_string(restitution));
+    input.non_negative("Contact/Damping", damping);
+    input.non_negative("Contact/Effective mass", effective_mass);
+    input.positive("Contact/Calibration velocity", calibration_velocity);
+  }
+} // namespace poundfe

@@ -1,0 +1,33 @@
+#include <poundfe/output/output_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace poundfe
+{
+  void
+  OutputParameters::declare(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.add_parameter("Directory", directory,
+                      "Results directory (relative to the working directory).");
+    prm.add_parameter("Output interval", interval, "Interval of CSV rows, s (0: every step).");
+    prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none).");
+    prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot.");
+    prm.add_parameter("Number of modes", n_modes, "Modes reported.",
+                      dealii::Patterns::Integer(1));
+    prm.enter_subsection("Recorders");
+    recorders.declare(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::finalize(const InputFile &input)
+  {
+    recorders.finalize(input.file, input.line_of("Output/Recorders/Record"), interval);
+    input.non_negative("Output/Output interval", interval);
+    input.non_negative("Output/VTU interval", vtu_interval);
+    if (directory.empty())
+      input.fail("Output/Directory", "must not be empty");
+  }
+} // namespace poundfe
