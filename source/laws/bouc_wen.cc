@@ -16,7 +16,12 @@ namespace poundfe
   {
     const double a     = std::abs(z);
     const double sz    = (z > 0) - (z < 0);
-    const double a_n1  = (a == 0) ? 0.0 : std::pow(a, p.n - 1);
+    // |z|^(n-1); the usual n = 2 and n = 1 without pow (pow(a, 1) = a and
+    // pow(a, 0) = 1 exactly, so the results are the same to the bit)
+    const double a_n1  = (a == 0)    ? 0.0 :
+                         (p.n == 2) ? a :
+                         (p.n == 1) ? 1.0 :
+                                      std::pow(a, p.n - 1);
     const double a_n   = a_n1 * a;
     const double psi   = p.beta * direction * sz + p.gamma;
     const double A     = p.A - p.delta_A * epsilon;
