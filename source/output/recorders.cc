@@ -68,10 +68,19 @@ namespace poundfe
       {}
 
       void
+      initialize(const ResponseView &state) override
+      {
+        next_row = 0;
+        observe_step(state);
+      }
+
+      void
       observe_step(const ResponseView &state) override
       {
-        if (state.step() % every != 0)
+        // a comparison, not a division, on the steps without a row
+        if (state.step() != next_row)
           return;
+        next_row += every;
         row(state, values);
         csv.begin_row(state.time());
         for (const double v : values)
@@ -96,6 +105,7 @@ namespace poundfe
 
       CsvWriter           csv;
       const unsigned int  every;
+      unsigned long       next_row = 0; // the step of the next row
       RowFunction         row;
       std::vector<double> values;
     };

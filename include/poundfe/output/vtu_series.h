@@ -43,16 +43,25 @@ namespace poundfe
       , every(every)
     {}
     void
+    initialize(const ResponseView &state) override
+    {
+      next_frame = 0;
+      observe_step(state);
+    }
+    void
     observe_step(const ResponseView &state) override
     {
-      if (state.step() % every == 0)
-        series.write(state.time(), state.displacement());
+      if (state.step() != next_frame) // a comparison, not a division, per step
+        return;
+      next_frame += every;
+      series.write(state.time(), state.displacement());
     }
     void finish(const ResponseView &, const RunStatus &) override { series.finish(); }
 
   private:
     VtuSeries          series;
     const unsigned int every;
+    unsigned long      next_frame = 0;
   };
 } // namespace poundfe
 
