@@ -28,6 +28,9 @@ namespace poundfe
     // refactorize: position of entry (i, j) of each element in effective's
     // values at [i n_dofs + j], -1 for the ground
     std::vector<std::vector<int>> entry_index;
+    /// p at the end of a step of this size; the sub-steps of a cut step
+    /// use their own level's, so it stays valid across them.
+    Vector load_end;
   };
 
   NewmarkIntegrator::NewmarkIntegrator(const LinearSystem &system,
@@ -69,7 +72,7 @@ namespace poundfe
                        "(umfpack, petsc or trilinos), not eigen-ldlt");
     const unsigned int n = system.n_equations();
     for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &rhs, &residual,
-                      &increment, &work_vector, &load_next})
+                      &increment, &work_vector, &velocity_sum, &product})
       x->setZero(n);
     for (Vector *x : {&local_u, &local_v, &correction})
       x->setZero(dof_start.back());
@@ -107,6 +110,7 @@ namespace poundfe
     const double dt = parameters.time_step / std::ldexp(1.0, cuts);
     const double g = parameters.gamma, b = parameters.beta;
     L->dt       = dt;
+    L->load_end.setZero(system.n_equations());
     L->c_mass_u = 1 / (b * dt * dt);
     L->c_mass_v = 1 / (b * dt);
     L->c_mass_a = 1 / (2 * b) - 1;
@@ -440,7 +444,9 @@ namespace poundfe
     // Trapezoidal work of the step; exact for the average-acceleration rule.
     work_vector = u_next - u;
     balance.input += 0.5 * work_vector.dot(load_now + p);
-    balance.damping += 0.5 * work_vector.dot(system.damping * (v + v_next));
+    velocity_sum = v + v_next;
+    product.noalias() = system.damping * velocity_sum;
+    balance.damping += 0.5 * work_vector.dot(product);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         NonlinearElement &e = (*elements)[h];
@@ -464,8 +470,8 @@ namespace poundfe
   {
     Level       &L  = level(cuts);
     const double t1 = (cuts == 0) ? (step_count + 1) * parameters.time_step : t0 + L.dt;
-    load(t1, load_next);
-    const Vector p = load_next; // load_next is reused by the sub-steps
+    Vector &p = L.load_end; // no allocation per step
+    load(t1, p);
     const bool converged = try_step(L, p);
     bool       event     = false;
     if (converged && cuts < parameters.newton.event_refinement)
@@ -543,13 +549,15 @@ namespace poundfe
   double
   NewmarkIntegrator::kinetic_energy() const
   {
-    return 0.5 * v.dot(system.mass * v);
+    product.noalias() = system.mass * v; // no temporary per step
+    return 0.5 * v.dot(product);
   }
 
   double
   NewmarkIntegrator::strain_energy() const
   {
-    double energy = 0.5 * u.dot(system.stiffness * u);
+    product.noalias() = system.stiffness * u;
+    double energy     = 0.5 * u.dot(product);
     // the elements' trial state is the committed state at u
     for (unsigned int h = 0; h < n_elements; ++h)
       energy += (*elements)[h].stored_energy() - (*elements)[h].reference_energy();

@@ -183,7 +183,9 @@ namespace poundfe
     std::vector<std::unique_ptr<Level>> levels;
 
     Vector u, v, a, load_now;
-    Vector u_next, v_next, a_next, rhs, residual, increment, work_vector, load_next;
+    Vector u_next, v_next, a_next, rhs, residual, increment, work_vector, velocity_sum;
+    /// Sparse products of the energy terms, so a step allocates nothing.
+    mutable Vector product;
     // Local vectors of every element: displacement, velocity, force correction.
     Vector local_u, local_v, correction;
     std::vector<double> tangent_change;
