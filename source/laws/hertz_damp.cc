@@ -2,7 +2,7 @@
 // approach velocity at first contact; clipped at zero during restitution.
 // xi_bar from e: 3 (1 - e^2)/4 (Muthukumar & DesRoches, Earthquake Eng.
 // Struct. Dyn. 35 (2006) 811) or 8 (1 - e)/(5 e) (Ye, Li & Zhu, Earthquake
-// Eng. Struct. Dyn. 38 (2009) 1089); doc/theory.md §4.
+// Eng. Struct. Dyn. 38 (2009) 1135); doc/theory.md §4.
 #include <poundfe/laws/contact_law.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Linear (elastic spring) contact: F = k delta for delta > 0.
-// Source: Maison & Kasai, Earthquake Eng. Struct. Dyn. 19 (1990) 1035;
+// Source: Maison & Kasai, J. Struct. Eng. 116(4) (1990) 957;
 // doc/theory.md §4.
 #include <poundfe/laws/contact_law.h>
 

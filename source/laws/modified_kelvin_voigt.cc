@@ -2,7 +2,7 @@
 //   F = k delta + c delta_dot (delta_dot > 0),  F = k delta (delta_dot <= 0),
 // c = 2 xi sqrt(k m_e); no tensile force can arise.
 // xi from e: (1 - e^2) / (e (e (pi - 2) + 2)).
-// Source: Mahmoud & Jankowski, Advances in Structural Engineering 14 (2011);
+// Source: Mahmoud & Jankowski (2011), see doc/theory.md §11;
 // doc/theory.md §4.
 #include <poundfe/laws/contact_law.h>
 
