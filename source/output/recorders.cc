@@ -275,7 +275,11 @@ namespace poundfe
   unsigned int
   steps_per_interval(const double interval, const double dt)
   {
-    return interval <= 0 ? 1 : std::max(1u, static_cast<unsigned int>(std::lround(interval / dt)));
+    if (!(interval > 0))
+      return 1;
+    // clamped, so that an interval far longer than the run cannot overflow
+    const double steps = std::min(std::round(interval / dt), 4.0e9);
+    return std::max(1u, static_cast<unsigned int>(steps));
   }
 
   std::vector<std::string>
@@ -354,7 +358,7 @@ namespace poundfe
                                           value + "'");
             item = trim(item.substr(0, every));
           }
-        const auto of = item.find(" of ");
+        const auto of = (item + " ").find(" of "); // also a trailing " of" with no list
         const std::string name = trim(of == std::string::npos ? item : item.substr(0, of));
         bool              known = false;
         for (const QuantityInfo &q : quantities)
@@ -369,7 +373,7 @@ namespace poundfe
           }
         if (of != std::string::npos)
           {
-            std::istringstream labels(item.substr(of + 4));
+            std::istringstream labels(of + 4 <= item.size() ? item.substr(of + 4) : "");
             std::string        label;
             while (std::getline(labels, label, ','))
               if (!trim(label).empty())
@@ -379,7 +383,7 @@ namespace poundfe
         if (takes_labels && request.labels.empty())
           throw std::invalid_argument("'" + name + "' needs the members: '" + name +
                                       " of A3_C1.1, A3_B1.1'");
-        if (!takes_labels && !request.labels.empty())
+        if (!takes_labels && of != std::string::npos)
           throw std::invalid_argument("'" + name + "' takes no 'of' list");
         for (const RecorderRequest &r : requests)
           if (r.quantity == request.quantity)
