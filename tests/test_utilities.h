@@ -2,12 +2,17 @@
 #ifndef poundfe_tests_test_utilities_h
 #define poundfe_tests_test_utilities_h
 
-#include <poundfe/model/model.h>
 #include <poundfe/analysis/input_parameters.h>
+#include <poundfe/integration/newmark.h>
+#include <poundfe/model/model.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
 
 namespace poundfe_test
 {
@@ -70,6 +75,36 @@ namespace poundfe_test
     p.ground_motion.type = poundfe::GroundMotionType::none;
     p.output.n_modes            = n;
     return p;
+  }
+  /// The largest relative column error of the integrator's Newton tangent
+  /// against central differences of its residual, at the current
+  /// displacements perturbed by up to 2e-4 of each (random, from `seed`),
+  /// under the load `load` at the end of the next step.
+  inline double
+  tangent_error_by_central_differences(poundfe::NewmarkIntegrator &integrator,
+                                       const poundfe::Vector &load, const unsigned int seed)
+  {
+    std::mt19937                     random(seed);
+    std::uniform_real_distribution<> uniform(-1, 1);
+    poundfe::Vector                  u = integrator.displacement();
+    for (Eigen::Index i = 0; i < u.size(); ++i)
+      u[i] += 2e-4 * uniform(random) * std::max(std::abs(u[i]), 1e-3);
+    poundfe::Vector r, r_plus, r_minus;
+    Eigen::MatrixXd tangent, unused;
+    integrator.residual_and_tangent(load, u, r, tangent);
+    double worst = 0;
+    for (Eigen::Index j = 0; j < u.size(); ++j)
+      {
+        const double    h = 1e-7 * std::max(std::abs(u[j]), 1e-4);
+        poundfe::Vector x = u;
+        x[j] += h;
+        integrator.residual_and_tangent(load, x, r_plus, unused);
+        x[j] -= 2 * h;
+        integrator.residual_and_tangent(load, x, r_minus, unused);
+        const poundfe::Vector fd = -(r_plus - r_minus) / (2 * h);
+        worst = std::max(worst, (fd - tangent.col(j)).norm() / tangent.col(j).norm());
+      }
+    return worst;
   }
 } // namespace poundfe_test
 

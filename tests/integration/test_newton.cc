@@ -13,9 +13,10 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "test_utilities.h"
+
 #include <array>
 #include <cmath>
-#include <random>
 
 using namespace poundfe;
 
@@ -163,26 +164,7 @@ BOOST_AUTO_TEST_CASE(global_tangent_matches_central_differences)
       BOOST_TEST(ductility > 0.5); // |z| well into the nonlinear range
 
       excitation.load(2001 * input.time_integration.newmark.time_step, load);
-      std::mt19937                     random(3);
-      std::uniform_real_distribution<> uniform(-1, 1);
-      Vector                           u = integrator.displacement();
-      for (unsigned int i = 0; i < n; ++i)
-        u[i] += 2e-4 * uniform(random) * std::max(std::abs(u[i]), 1e-3);
-      Vector          r, r_plus, r_minus;
-      Eigen::MatrixXd tangent, unused;
-      integrator.residual_and_tangent(load, u, r, tangent);
-      double worst = 0;
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          const double h = 1e-7 * std::max(std::abs(u[j]), 1e-4);
-          Vector       x = u;
-          x[j] += h;
-          integrator.residual_and_tangent(load, x, r_plus, unused);
-          x[j] -= 2 * h;
-          integrator.residual_and_tangent(load, x, r_minus, unused);
-          const Vector fd = -(r_plus - r_minus) / (2 * h);
-          worst = std::max(worst, (fd - tangent.col(j)).norm() / tangent.col(j).norm());
-        }
+      const double worst = poundfe_test::tangent_error_by_central_differences(integrator, load, 3);
       BOOST_TEST_MESSAGE(tangent_update_names().name(update) << ": worst column error " << worst);
       // O(h^2) truncation and round-off of ~1e-16 |K_eff u| / h
       BOOST_TEST(worst < 1e-5);
