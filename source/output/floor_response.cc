@@ -73,8 +73,7 @@ namespace poundfe
     std::vector<std::string> names;
     for (const Building &building : model.buildings)
       for (unsigned int f = 1; f <= building.floors.size(); ++f)
-        names.push_back(building.name + "_" + what + std::to_string(f) +
-                        (suffix.empty() ? "" : "_" + suffix));
+        names.push_back(building.name + "_" + what + std::to_string(f) + "_" + suffix);
     return names;
   }
 } // namespace poundfe

@@ -42,10 +42,9 @@ namespace poundfe
     const std::vector<double> &peak_acceleration() const { return peak_a; }
 
     /// "<building>_<what><n>_<suffix>" for every floor (what = "floor") or
-    /// storey (what = "storey"), e.g. A3_storey1_drift_ratio; no suffix:
-    /// A3_storey1.
+    /// storey (what = "storey"), e.g. A3_storey1_drift_ratio.
     std::vector<std::string> column_names(const std::string &what,
-                                          const std::string &suffix = "") const;
+                                          const std::string &suffix) const;
 
   private:
     const Model                    &model;
