@@ -3,6 +3,7 @@
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/subset.h>
 #include <poundfe/analysis/run.h>
+#include <poundfe/analysis/stationary_pdf.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
@@ -33,11 +34,13 @@ namespace
     "  montecarlo FILE     Monte Carlo over the random loading (MPI: mpirun -np P ...)\n"
     "  subset FILE         Subset Simulation of a small exceedance probability (MPI)\n"
     "  fragility FILE      Monte Carlo over PGA levels, lognormal fragility curves (MPI)\n"
+    "  stationary-pdf FILE stationary PDFs of a noisy response: histogram, kernel density,\n"
+    "                      peaks, joint p(x, v) (MPI)\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "--output DIR overrides the file's 'Output/Directory'.\n"
-    "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset and fragility after the\n"
-    "realizations under way, with the results so far (status \"interrupted\", exit\n"
-    "status 128 + signal); the same command resumes montecarlo and fragility.\n"
+    "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility and stationary-pdf\n"
+    "after the realizations under way, with the results so far (status \"interrupted\",\n"
+    "exit status 128 + signal); the same command resumes all but subset.\n"
     "A second signal kills. Progress shows on a terminal (POUNDFE_PROGRESS=1: always).\n";
 
   /// The arguments without the options, and the options' values.
@@ -92,7 +95,8 @@ namespace
   bool
   runs_over_mpi(const std::string &command)
   {
-    return command == "montecarlo" || command == "subset" || command == "fragility";
+    return command == "montecarlo" || command == "subset" || command == "fragility" ||
+           command == "stationary-pdf";
   }
 } // namespace
 
@@ -137,7 +141,7 @@ main(int argc, char **argv)
           return 0;
         }
       if (command != "run" && command != "modal" && command != "ground-motion" &&
-          command != "montecarlo" && command != "subset" && command != "fragility")
+          !runs_over_mpi(command))
         {
           err << "poundfe: error: unknown command '" << command << "'\n" << usage;
           return 1;
@@ -152,6 +156,8 @@ main(int argc, char **argv)
       if (!mpi && poundfe::linear_solver_needs_mpi(input.time_integration.linear_solver))
         mpi.emplace(argc, argv, 1);
       const std::string directory = line.output.empty() ? input.output.directory : line.output;
+      if (command == "stationary-pdf" && line.n_realizations == 0)
+        return poundfe::stationary_pdf_command(input, directory, MPI_COMM_WORLD);
       if (command == "ground-motion")
         return poundfe::ground_motion_command(input, directory, line.n_realizations);
       if (line.n_realizations > 0)

@@ -110,6 +110,7 @@ namespace poundfe
     monte_carlo.declare(prm);
     subset.declare(prm);
     fragility.declare(prm);
+    stationary_pdf.declare(prm);
   }
 
   void
@@ -129,6 +130,7 @@ namespace poundfe
     monte_carlo.check(*this);
     subset.check(*this, model);
     fragility.check(*this);
+    stationary_pdf.check(*this, time_integration.newmark.time_step);
   }
 
   InputParameters

@@ -153,13 +153,25 @@ namespace poundfe
                   const std::string &file, const MPI_Comm comm, const std::string &label,
                   Progress *const progress, const unsigned long progress_offset)
   {
+    const RealizationJob job{runner.response_names(), runner.stochastic_load().seed(),
+                             [&](const std::uint64_t r, std::vector<double> &row) {
+                               return runner.run(r, row, amplitude_factor);
+                             }};
+    return run_realizations(job, n, file, comm, label, progress, progress_offset);
+  }
+
+  MonteCarloTable
+  run_realizations(const RealizationJob &job, const unsigned long n, const std::string &file,
+                   const MPI_Comm comm, const std::string &label, Progress *const progress,
+                   const unsigned long progress_offset)
+  {
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     dealii::ConditionalOStream pcout(std::cout, rank == 0);
     const auto         start   = std::chrono::steady_clock::now();
-    const std::vector<std::string> &names = runner.response_names();
+    const std::vector<std::string> &names = job.names;
     const std::string  header = header_of(names);
-    const std::uint64_t seed  = runner.stochastic_load().seed();
+    const std::uint64_t seed  = job.seed;
     const unsigned int n_responses = names.size();
 
     // Rank 0 reads what an earlier run left and decides what is missing.
@@ -291,7 +303,7 @@ namespace poundfe
           }
         Row row;
         row.realization = todo[i];
-        row.completed   = runner.run(row.realization, row.responses, amplitude_factor);
+        row.completed   = job.run(row.realization, row.responses);
         ++n_run;
         if (rank == 0)
           {

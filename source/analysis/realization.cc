@@ -76,6 +76,14 @@ namespace poundfe
   }
 
   bool
+  RealizationRunner::run(const std::uint64_t realization, const Observers &observers)
+  {
+    load.standard_normals(realization, xi);
+    load.apply(xi, excitation);
+    return history.run(excitation, observers).completed();
+  }
+
+  bool
   RealizationRunner::run(const std::vector<double> &normals, std::vector<double> &responses,
                          const double amplitude_factor)
   {

@@ -2,7 +2,7 @@
 # interrupt.sh); source after setting $work, a scratch directory.
 fail() { echo "FAIL $*"; exit 1; }
 # summary.json without what depends on the number of ranks or the clock
-strip() { grep -v -e wall_time -e realizations_per_second -e '"ranks"' -e realizations_run_now "$1"; }
+strip() { grep -v -e wall_time -e realizations_per_second -e samples_per_second -e '"ranks"' -e realizations_run_now "$1"; }
 same_summary() {
   diff <(strip "$1") <(strip "$2") > "$work/diff" || { head "$work/diff"; fail "$3"; }
 }

@@ -6,6 +6,7 @@
 #define poundfe_analysis_input_parameters_h
 
 #include <poundfe/analysis/reliability_parameters.h>
+#include <poundfe/analysis/stationary_pdf_parameters.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/excitation/excitation_parameters.h>
 #include <poundfe/integration/time_integration_parameters.h>
@@ -34,6 +35,7 @@ namespace poundfe
     MonteCarloParameters      monte_carlo;
     SubsetParameters          subset;
     FragilityParameters       fragility;
+    StationaryPdfParameters   stationary_pdf;
 
     /// Declare every section, with `model.buildings.size()` buildings.
     void declare(dealii::ParameterHandler &prm);

@@ -17,6 +17,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,13 +41,31 @@ namespace poundfe
     std::vector<double> completed_values(unsigned int c) const;
   };
 
-  /// Runs the realizations 0..n-1 that `file` does not hold yet over the
-  /// ranks of `comm` (each must call it), appending each to `file` as it
+  /// What each realization of a run computes: a row of values named `names`
+  /// (realizations.csv's columns after 'realization,seed,completed') from
+  /// the noise of (seed, realization); `run` returns false when the
+  /// integration failed.
+  struct RealizationJob
+  {
+    std::vector<std::string>                                       names;
+    std::uint64_t                                                  seed = 1;
+    std::function<bool(std::uint64_t realization, std::vector<double> &row)> run;
+  };
+
+  /// Runs the realizations 0..n-1 of `job` that `file` does not hold yet over
+  /// the ranks of `comm` (each must call it), appending each to `file` as it
   /// finishes; on SIGINT or SIGTERM (interruption.h) it stops after the
   /// realizations under way. Returns the table of the realizations of 0..n-1
   /// done on rank 0 and an empty one elsewhere. Rank 0 reports to `progress`
   /// (as progress_offset + realizations done) or, when that does not show,
   /// prints a line every tenth.
+  MonteCarloTable run_realizations(const RealizationJob &job, unsigned long n,
+                                   const std::string &file, MPI_Comm comm,
+                                   const std::string &label = "", Progress *progress = nullptr,
+                                   unsigned long progress_offset = 0);
+
+  /// run_realizations of the runner's peak responses (amplitudes times
+  /// amplitude_factor).
   MonteCarloTable run_monte_carlo(RealizationRunner &runner, unsigned long n,
                                   double amplitude_factor, const std::string &file,
                                   MPI_Comm comm, const std::string &label = "",

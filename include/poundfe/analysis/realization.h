@@ -41,6 +41,12 @@ namespace poundfe
     /// The same for the normals of (seed, realization).
     bool run(std::uint64_t realization, std::vector<double> &responses, double amplitude_factor = 1);
 
+    /// Runs the noise of (seed, realization) with `observers` in place of
+    /// the peak responses; returns false when the integration failed.
+    bool run(std::uint64_t realization, const Observers &observers);
+    /// Steps of the analysis time step in a realization.
+    unsigned long n_steps() const { return history.n_steps(excitation); }
+
   private:
     const Analysis          &analysis;
     Excitation               excitation;

@@ -10,6 +10,7 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/model/model.h>
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,18 @@ namespace poundfe
   /// Parse the 'Nodal forces' entries against the model. Throws InputError.
   /// White-noise forces are held over the stochastic ground motion's sample
   /// interval and last its duration.
+  /// A free DOF named 'building floor node dof' (building and floor 1-based,
+  /// node 0-based, dof ux, uy or rz), read from the start of `fields`.
+  struct DofTarget
+  {
+    unsigned int equation;
+    std::string  label; // "<building> floor <f> node <n> <dof>"
+  };
+
+  /// Throws InputError naming `path` and `entry` when the DOF does not exist.
+  DofTarget find_dof_target(const InputFile &input, const Model &model, std::istringstream &fields,
+                            const std::string &path, const std::string &entry);
+
   std::vector<NodalForce> make_nodal_forces(const NodalForceParameters   &parameters,
                                             const GroundMotionParameters &ground_motion,
                                             double time_step, const InputFile &input,

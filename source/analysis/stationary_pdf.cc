@@ -1,0 +1,469 @@
+// The stationary PDF of a noisy system's response (method in
+// include/poundfe/analysis/stationary_pdf.h, estimators in density.h).
+//   Amplitude: a = sqrt(x^2 + v^2 / omega^2) (the energy-like envelope of a
+//   linear oscillator of natural frequency omega).
+#include <poundfe/analysis/density.h>
+#include <poundfe/analysis/montecarlo.h>
+#include <poundfe/analysis/stationary_pdf.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/progress.h>
+#include <poundfe/excitation/excitation.h>
+#include <poundfe/output/append_file.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/plots.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <sstream>
+
+namespace poundfe
+{
+  namespace
+  {
+    /// Samples x and v of one equation at steps first, first + every, ... <= last.
+    class StationarySampler : public StepObserver
+    {
+    public:
+      StationarySampler(const unsigned int equation, const unsigned long first,
+                        const unsigned long every, const unsigned long last)
+        : equation(equation), first(first), every(every), last(last)
+      {}
+
+      void
+      initialize(const ResponseView &state) override
+      {
+        x.clear();
+        v.clear();
+        observe_step(state);
+      }
+
+      void
+      observe_step(const ResponseView &state) override
+      {
+        const unsigned long s = state.step();
+        if (s >= first && s <= last && (s - first) % every == 0)
+          {
+            x.push_back(state.displacement()[equation]);
+            v.push_back(state.velocity()[equation]);
+          }
+      }
+
+      std::vector<double> x, v;
+
+    private:
+      const unsigned int  equation;
+      const unsigned long first, every, last;
+    };
+
+    const std::array<const char *, 3> quantity      = {{"x", "v", "a"}};
+    const std::array<const char *, 3> value_unit    = {{"m", "m_s", "m"}};
+    const std::array<const char *, 3> density_unit  = {{"1_m", "s_m", "1_m"}};
+    const std::array<const char *, 3> quantity_name = {
+      {"displacement x (m)", "velocity v (m/s)", "amplitude a (m)"}};
+
+    std::string
+    number(const double x)
+    {
+      std::string s;
+      append_number(s, x);
+      return s;
+    }
+
+    /// The grids of x, v and a and where each count goes in a realization's row:
+    ///   n, sum x, sum x^2, sum v, sum v^2, sum a, sum a^2,
+    ///   for x, v, a: below, bins..., above; then the joint (x, v) bins, x-major.
+    struct PdfLayout
+    {
+      std::array<BinGrid, 3> grids;
+      double                 omega = 1;
+      std::string            steps; // 'first:every:last', part of the header
+
+      unsigned int histogram(const unsigned int q) const { return 7 + q * (grids[0].n_bins + 2); }
+      unsigned int joint() const { return histogram(3); }
+      unsigned int size() const { return joint() + grids[0].n_bins * grids[1].n_bins; }
+      double amplitude(const double x, const double v) const
+      {
+        return std::sqrt(x * x + v * v / (omega * omega));
+      }
+
+      std::vector<std::string> names() const;
+      void accumulate(const std::vector<double> &x, const std::vector<double> &v,
+                      std::vector<double> &row) const;
+    };
+
+    std::vector<std::string>
+    PdfLayout::names() const
+    {
+      std::vector<std::string> n{"samples_steps_" + steps};
+      for (unsigned int q = 0; q < 3; ++q)
+        for (const char *power : {"sum_", "sum_squares_"})
+          n.push_back(std::string(power) + quantity[q]);
+      for (unsigned int q = 0; q < 3; ++q)
+        {
+          n.push_back(std::string(quantity[q]) + "_below_" + number(grids[q].low));
+          for (unsigned int i = 0; i < grids[q].n_bins; ++i)
+            n.push_back(std::string(quantity[q]) + "_bin" + std::to_string(i));
+          n.push_back(std::string(quantity[q]) + "_above_" + number(grids[q].high));
+        }
+      for (unsigned int i = 0; i < grids[0].n_bins; ++i)
+        for (unsigned int j = 0; j < grids[1].n_bins; ++j)
+          n.push_back("xv_bin" + std::to_string(i) + "_" + std::to_string(j));
+      return n;
+    }
+
+    void
+    PdfLayout::accumulate(const std::vector<double> &x, const std::vector<double> &v,
+                          std::vector<double> &row) const
+    {
+      row.assign(size(), 0.0);
+      row[0] = x.size();
+      for (std::size_t k = 0; k < x.size(); ++k)
+        {
+          const std::array<double, 3> value{{x[k], v[k], amplitude(x[k], v[k])}};
+          std::array<int, 3>          bin{};
+          for (unsigned int q = 0; q < 3; ++q)
+            {
+              row[1 + 2 * q] += value[q];
+              row[2 + 2 * q] += value[q] * value[q];
+              bin[q] = grids[q].bin(value[q]);
+              row[histogram(q) + 1 + bin[q]] += 1;
+            }
+          const int n_x = grids[0].n_bins, n_v = grids[1].n_bins;
+          if (bin[0] >= 0 && bin[0] < n_x && bin[1] >= 0 && bin[1] < n_v)
+            row[joint() + bin[0] * n_v + bin[1]] += 1;
+        }
+    }
+
+    /// Everything a realization needs, set up once per command.
+    struct Sampling
+    {
+      unsigned int  equation = 0;
+      std::string   label;
+      unsigned long first = 0, every = 1, last = 0; // steps
+    };
+
+    Sampling
+    make_sampling(const Analysis &analysis, const RealizationRunner &runner)
+    {
+      const InputParameters         &input = analysis.input;
+      const StationaryPdfParameters &p     = input.stationary_pdf;
+      const std::string              path  = "Stationary PDF/Response";
+      std::istringstream             words(p.response);
+      const std::vector<std::string> fields_given{std::istream_iterator<std::string>(words), {}};
+      if (fields_given.size() != 3)
+        input.fail(path, "'" + p.response + "': expected 'building floor node' (the DOF is ux)");
+      std::istringstream fields(p.response + " ux");
+      const DofTarget target = find_dof_target(input, analysis.model, fields, path, p.response);
+      const double dt = input.time_integration.newmark.time_step;
+      Sampling     s{target.equation, target.label, static_cast<unsigned long>(std::llround(p.burn_in / dt)),
+                 p.interval_steps(dt), runner.n_steps()};
+      if (s.first >= s.last)
+        input.fail("Stationary PDF/Burn-in time",
+                   "the runs end at " + number(s.last * dt) + " s, before the burn-in ends");
+      const GroundMotionParameters &g = input.ground_motion;
+      if (g.is_stochastic() && g.duration < s.last * dt * (1 - 1e-12))
+        input.fail(p.sampling_time > 0 ? "Stationary PDF/Sampling time" : "Time integration/End time",
+                   "the runs last " + number(s.last * dt) + " s but the noise ends at " +
+                     number(g.duration) + " s (Ground motion/Stochastic/Duration)");
+      return s;
+    }
+
+    double
+    first_natural_frequency(const Analysis &analysis)
+    {
+      const StationaryPdfParameters &p = analysis.input.stationary_pdf;
+      if (p.omega > 0)
+        return p.omega;
+      if (analysis.modes.n_modes() == 0)
+        analysis.input.fail("Stationary PDF/Omega", "the model has no computed mode: give omega");
+      return analysis.modes.omega[0];
+    }
+
+    /// [low, high] of the values widened by a quarter of their span on each side.
+    BinGrid
+    widened(const std::vector<double> &values, const unsigned int bins, const double floor)
+    {
+      const auto [low, high] = std::minmax_element(values.begin(), values.end());
+      const double span      = *high - *low;
+      if (!(span > 0))
+        throw NumericalError("the pilot realization's response does not vary: give "
+                             "'Stationary PDF/Range'");
+      return {std::max(floor, *low - span / 4), *high + span / 4, bins};
+    }
+
+    PdfLayout
+    make_layout(const Analysis &analysis, RealizationRunner &runner, const Sampling &s)
+    {
+      const StationaryPdfParameters &p = analysis.input.stationary_pdf;
+      PdfLayout                      layout;
+      layout.omega = first_natural_frequency(analysis);
+      layout.steps = std::to_string(s.first) + ":" + std::to_string(s.every) + ":" +
+                     std::to_string(s.last);
+      const double lowest = -std::numeric_limits<double>::infinity();
+      if (p.range.size() == 4)
+        {
+          layout.grids[0] = {p.range[0], p.range[1], p.bins};
+          layout.grids[1] = {p.range[2], p.range[3], p.bins};
+          const double x = std::max(std::abs(p.range[0]), std::abs(p.range[1]));
+          const double v = std::max(std::abs(p.range[2]), std::abs(p.range[3]));
+          layout.grids[2] = {0, layout.amplitude(x, v), p.bins};
+          return layout;
+        }
+      // the pilot: realization 0, the same on every rank
+      StationarySampler pilot(s.equation, s.first, s.every, s.last);
+      if (!runner.run(0, {&pilot}))
+        throw NumericalError("the pilot realization (0) failed: see Time integration");
+      std::vector<double> a(pilot.x.size());
+      for (std::size_t k = 0; k < a.size(); ++k)
+        a[k] = layout.amplitude(pilot.x[k], pilot.v[k]);
+      layout.grids = {{widened(pilot.x, p.bins, lowest), widened(pilot.v, p.bins, lowest),
+                       widened(a, p.bins, 0.0)}};
+      return layout;
+    }
+
+    /// The estimates of one quantity from the summed rows.
+    struct QuantityEstimate
+    {
+      double              mean = 0, variance = 0, outside = 0, bandwidth = 0;
+      bool                silverman = true;
+      bool                widened   = false; // raised to the bin width
+      std::vector<double> histogram, kde;
+      std::vector<Peak>   peaks;
+    };
+
+    QuantityEstimate
+    estimate(const PdfLayout &layout, const std::vector<double> &total, const unsigned int q,
+             const StationaryPdfParameters &p)
+    {
+      const BinGrid &grid = layout.grids[q];
+      const double   n    = total[0];
+      const auto     first = total.begin() + layout.histogram(q);
+      const std::vector<double> counts(first + 1, first + 1 + grid.n_bins);
+      QuantityEstimate          e;
+      e.mean     = total[1 + 2 * q] / n;
+      e.variance = std::max(0.0, total[2 + 2 * q] / n - e.mean * e.mean);
+      e.outside  = (first[0] + first[grid.n_bins + 1]) / n;
+      e.bandwidth = p.bandwidths[p.bandwidths.size() == 3 ? q : 0];
+      e.silverman = !(e.bandwidth > 0);
+      if (e.silverman)
+        e.bandwidth = silverman_bandwidth(std::sqrt(e.variance),
+                                          binned_quantile(grid, counts, first[0], n, 0.75) -
+                                            binned_quantile(grid, counts, first[0], n, 0.25),
+                                          n);
+      e.widened   = e.bandwidth < grid.width();
+      e.bandwidth = std::max(e.bandwidth, grid.width());
+      e.histogram = histogram_density(grid, counts, n);
+      e.kde       = kernel_density(grid, counts, n, e.bandwidth);
+      e.peaks     = find_peaks(grid, e.kde, p.peak_threshold);
+      return e;
+    }
+
+    /// The completed rows summed in realization order.
+    std::vector<double>
+    summed_rows(const MonteCarloTable &table, const unsigned int size)
+    {
+      std::vector<double> total(size, 0.0);
+      for (std::size_t r = 0; r < table.responses.size(); ++r)
+        if (table.completed[r])
+          for (unsigned int j = 0; j < size; ++j)
+            total[j] += table.responses[r][j];
+      return total;
+    }
+
+    void
+    write_pdf_csv(const std::string &directory, const PdfLayout &layout,
+                  const std::array<QuantityEstimate, 3> &e)
+    {
+      std::string text;
+      for (unsigned int q = 0; q < 3; ++q)
+        text += std::string(q ? "," : "") + quantity[q] + "_" + value_unit[q] + ",p_" +
+                quantity[q] + "_histogram_" + density_unit[q] + ",p_" + quantity[q] + "_kde_" +
+                density_unit[q];
+      text += "\n";
+      for (unsigned int i = 0; i < layout.grids[0].n_bins; ++i)
+        for (unsigned int q = 0; q < 3; ++q)
+          {
+            for (const double x : {layout.grids[q].center(i), e[q].histogram[i]})
+              append_number(text, x), text += ',';
+            append_number(text, e[q].kde[i]);
+            text += q < 2 ? "," : "\n";
+          }
+      write_file_atomically(directory + "/pdf.csv", text);
+    }
+
+    /// p(x, v) = c_ij / (N w_x w_v); a blank line after each x (gnuplot's grid).
+    void
+    write_joint_csv(const std::string &directory, const PdfLayout &layout,
+                    const std::vector<double> &total)
+    {
+      const BinGrid &gx = layout.grids[0], &gv = layout.grids[1];
+      const double   scale = 1 / (total[0] * gx.width() * gv.width());
+      std::string    text  = "x_m,v_m_s,p_xv_s_m2\n";
+      for (unsigned int i = 0; i < gx.n_bins; ++i)
+        {
+          for (unsigned int j = 0; j < gv.n_bins; ++j)
+            {
+              for (const double x : {gx.center(i), gv.center(j)})
+                append_number(text, x), text += ',';
+              append_number(text, total[layout.joint() + i * gv.n_bins + j] * scale);
+              text += '\n';
+            }
+          text += '\n';
+        }
+      write_file_atomically(directory + "/joint_pdf.csv", text);
+    }
+
+    std::vector<double>
+    peak_values(const std::vector<Peak> &peaks, const bool locations)
+    {
+      std::vector<double> values;
+      for (const Peak &peak : peaks)
+        values.push_back(locations ? peak.location : peak.height);
+      return values;
+    }
+
+    void
+    write_estimates(JsonWriter &json, const PdfLayout &layout,
+                    const std::array<QuantityEstimate, 3> &e)
+    {
+      for (unsigned int q = 0; q < 3; ++q)
+        json.begin_object(quantity[q])
+          .value("mean", e[q].mean)
+          .value("variance", e[q].variance)
+          .value("standard_deviation", std::sqrt(e[q].variance))
+          .value("range", std::vector<double>{layout.grids[q].low, layout.grids[q].high})
+          .value("fraction_outside_range", e[q].outside)
+          .value("kernel_bandwidth", e[q].bandwidth)
+          .value("bandwidth_rule", std::string(e[q].silverman ? "Silverman" : "given") +
+                                     (e[q].widened ? ", raised to the bin width" : ""))
+          .value("n_peaks", e[q].peaks.size())
+          .value("peak_locations", peak_values(e[q].peaks, true))
+          .value("peak_densities", peak_values(e[q].peaks, false))
+          .end_object();
+    }
+
+    std::vector<Plot>
+    pdf_plots(const unsigned long n_samples, const unsigned long n_realizations)
+    {
+      Plot pdf{"pdf.png",
+               "stationary PDFs: histogram and Gaussian KDE, " + std::to_string(n_samples) +
+                 " samples of " + std::to_string(n_realizations) + " realizations",
+               "x (m), v (m/s), a (m)", "probability density", {}};
+      for (unsigned int q = 0; q < 3; ++q)
+        {
+          const std::string c = std::to_string(3 * q + 1);
+          pdf.series.push_back({"pdf.csv", c + ":" + std::to_string(3 * q + 2),
+                                std::string(quantity[q]) + " histogram", "histeps"});
+          pdf.series.push_back({"pdf.csv", c + ":" + std::to_string(3 * q + 3),
+                                std::string(quantity[q]) + " KDE", "lines lw 2"});
+        }
+      Plot joint{"joint_pdf.png", "joint PDF p(x, v) (2-D histogram)", quantity_name[0],
+                 quantity_name[1], {{"joint_pdf.csv", "1:2:3", "", "image"}}};
+      return {pdf, joint};
+    }
+  } // namespace
+
+  namespace
+  {
+    /// Rank 0: pdf.csv, joint_pdf.csv, summary.json and the plots.
+    void
+    write_results(const Analysis &analysis, const Sampling &s, const PdfLayout &layout,
+                  const MonteCarloTable &table, const std::uint64_t seed,
+                  const std::string &directory, const unsigned int n_ranks)
+    {
+      const InputParameters &input   = analysis.input;
+      const unsigned long    n_done  = table.realizations.size();
+      const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
+      const std::vector<double> total = summed_rows(table, layout.size());
+      const unsigned long       n_samples = total[0];
+      const double              dt        = input.time_integration.newmark.time_step;
+      JsonWriter                json;
+      begin_summary(json, "stationary-pdf", input, table.interrupted ? "interrupted" : "completed");
+      json.value("response", s.label)
+        .value("realizations", input.stationary_pdf.realizations)
+        .value("realizations_done", n_done)
+        .value("completed_realizations", n_completed)
+        .value("seed", static_cast<unsigned long>(seed))
+        .value("burn_in_s", s.first * dt)
+        .value("end_time_s", s.last * dt)
+        .value("sample_interval_s", s.every * dt)
+        .value("samples", n_samples)
+        .value("omega_rad_s", layout.omega)
+        .value("bins", layout.grids[0].n_bins)
+        .value("kernel_density", "Gaussian kernel on the bin centres from the binned samples")
+        .value("peak_threshold", input.stationary_pdf.peak_threshold)
+        .value("ranks", n_ranks)
+        .value("realizations_run_now", table.n_run_now)
+        .value("wall_time_s", table.wall_time)
+        .value("samples_per_second", table.wall_time > 0 && n_completed > 0
+                                       ? double(n_samples) / n_completed * table.n_run_now /
+                                           table.wall_time
+                                       : 0.0);
+      if (n_samples > 0)
+        {
+          std::array<QuantityEstimate, 3> e;
+          for (unsigned int q = 0; q < 3; ++q)
+            e[q] = estimate(layout, total, q, input.stationary_pdf);
+          write_estimates(json, layout, e);
+          write_pdf_csv(directory, layout, e);
+          write_joint_csv(directory, layout, total);
+          if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
+            draw_plots(directory, pdf_plots(n_samples, n_completed));
+        }
+      json.end_object();
+      write_file_atomically(directory + "/summary.json", json.str());
+    }
+  } // namespace
+
+  int
+  stationary_pdf_command(const InputParameters &file_input, const std::string &directory,
+                         const MPI_Comm comm)
+  {
+    InputParameters                input = file_input;
+    const StationaryPdfParameters &p     = input.stationary_pdf;
+    if (p.sampling_time > 0)
+      input.time_integration.end_time = p.burn_in + p.sampling_time;
+    const Analysis     analysis = prepare_analysis(input);
+    const unsigned int rank     = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks  = dealii::Utilities::MPI::n_mpi_processes(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    RealizationRunner          runner(analysis);
+    const Sampling             sampling = make_sampling(analysis, runner);
+    const PdfLayout            layout   = make_layout(analysis, runner, sampling);
+    if (rank == 0)
+      create_directories(directory);
+
+    StationarySampler    sampler(sampling.equation, sampling.first, sampling.every, sampling.last);
+    const RealizationJob job{layout.names(), runner.stochastic_load().seed(),
+                             [&](const std::uint64_t r, std::vector<double> &row) {
+                               const bool completed = runner.run(r, {&sampler});
+                               layout.accumulate(sampler.x, sampler.v, row);
+                               return completed;
+                             }};
+    Progress              progress(std::cerr, "realizations", p.realizations);
+    const MonteCarloTable table =
+      run_realizations(job, p.realizations, directory + "/realizations.csv", comm, "", &progress);
+    progress.finish();
+    const int status = table.interrupted ? interrupted_exit_status() : 0;
+    if (rank != 0)
+      return status;
+    write_results(analysis, sampling, layout, table, runner.stochastic_load().seed(), directory,
+                  n_ranks);
+    if (table.interrupted)
+      pcout << "stationary PDF interrupted after " << table.realizations.size() << " of "
+            << p.realizations << " realizations: the estimates are over these; the same "
+            << "command runs the rest\n";
+    pcout << "stationary PDF of " << sampling.label << ": " << table.realizations.size()
+          << " realizations; results in " << directory
+          << "/ (summary.json, pdf.csv, joint_pdf.csv, realizations.csv)\n";
+    return status;
+  }
+} // namespace poundfe

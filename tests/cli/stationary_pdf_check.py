@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Checks a stationary-pdf result against an exact stationary density.
+
+usage: stationary_pdf_check.py DIR linear D c omega0
+       stationary_pdf_check.py DIR sd D c alpha
+
+The number of effectively independent samples is N_eff = T / (2 tau_c),
+T the sampled time summed over the realizations and tau_c the correlation
+time (1 / (zeta omega0) for the linear oscillator, given for the SD
+oscillator). With it: the relative standard error of a variance estimate
+is sqrt(2 / N_eff), and that of a bin probability P is
+sqrt(P (1 - P) / N_eff). Tolerances: 4 standard errors.
+"""
+import csv
+import json
+import math
+import sys
+
+
+def fail(message):
+    print("FAIL " + message)
+    sys.exit(1)
+
+
+def read(directory):
+    with open(directory + "/summary.json") as f:
+        summary = json.load(f)
+    with open(directory + "/pdf.csv") as f:
+        rows = list(csv.DictReader(f))
+    return summary, rows
+
+
+def effective_samples(summary, tau_c):
+    sampled = summary["end_time_s"] - summary["burn_in_s"]
+    return summary["completed_realizations"] * sampled / (2 * tau_c)
+
+
+def check_bins(rows, column, value, cdf, n_eff, what):
+    """Histogram bin probabilities against the exact CDF, within 4 SE."""
+    centers = [float(r[value]) for r in rows]
+    w = centers[1] - centers[0]
+    worst = 0.0
+    for r, x in zip(rows, centers):
+        p = cdf(x + w / 2) - cdf(x - w / 2)
+        se = math.sqrt(max(p, 1.0 / n_eff) * (1 - p) / n_eff)
+        worst = max(worst, abs(float(r[column]) * w - p) / se)
+    if worst > 4:
+        fail("%s: a histogram bin is %.2f standard errors from the exact density" % (what, worst))
+    print("ok   %s histogram: largest bin deviation %.2f standard errors (<= 4)" % (what, worst))
+
+
+def check_variance(estimate, exact, n_eff, what):
+    se = math.sqrt(2 / n_eff)
+    error = abs(estimate / exact - 1)
+    if error > 4 * se:
+        fail("%s: variance %.5g, exact %.5g (relative error %.3g > %.3g)" % (what, estimate, exact, error, 4 * se))
+    print("ok   %s variance %.5g, exact %.5g (relative error %.3g <= 4 SE = %.3g)" % (what, estimate, exact, error, 4 * se))
+
+
+def normal_cdf(sigma):
+    return lambda x: 0.5 * (1 + math.erf(x / (sigma * math.sqrt(2))))
+
+
+def linear(directory, D, c, omega0):
+    summary, rows = read(directory)
+    zeta = c / (2 * omega0)
+    n_eff = effective_samples(summary, 1 / (zeta * omega0))
+    var_x, var_v = D / (c * omega0 ** 2), D / c
+    check_variance(summary["x"]["variance"], var_x, n_eff, "x")
+    check_variance(summary["v"]["variance"], var_v, n_eff, "v")
+    check_bins(rows, "p_x_histogram_1_m", "x_m", normal_cdf(math.sqrt(var_x)), n_eff, "x")
+    check_bins(rows, "p_v_histogram_s_m", "v_m_s", normal_cdf(math.sqrt(var_v)), n_eff, "v")
+    # x and v / omega0 are independent with equal variance: a is Rayleigh
+    rayleigh = lambda a: 1 - math.exp(-max(a, 0) ** 2 / (2 * var_x))
+    check_bins(rows, "p_a_histogram_1_m", "a_m", rayleigh, n_eff, "amplitude")
+    for q in ("x", "v"):
+        peaks = summary[q]["peak_locations"]
+        sigma = math.sqrt(var_x if q == "x" else var_v)
+        if len(peaks) != 1 or abs(peaks[0]) > 0.3 * sigma:
+            fail("%s: peaks %s, expected one within 0.3 sigma of 0" % (q, peaks))
+        print("ok   %s: one peak, at %.3g (|.| <= 0.3 sigma = %.3g)" % (q, peaks[0], 0.3 * sigma))
+
+
+def sd_potential(alpha):
+    return lambda x: x * x / 2 - math.sqrt(x * x + alpha * alpha) + alpha
+
+
+def sd(directory, D, c, alpha, tau_c):
+    """p(x) ~ exp(-(c/D) U(x)), normalised numerically (Simpson, 20001 points)."""
+    summary, rows = read(directory)
+    n_eff = effective_samples(summary, tau_c)
+    U = sd_potential(alpha)
+    top = 1 + 12 * math.sqrt(D / c) + 2
+    n = 20000
+    h = 2 * top / n
+    xs = [-top + i * h for i in range(n + 1)]
+    f = [math.exp(-(c / D) * U(x)) for x in xs]
+    cumulative = [0.0]
+    for i in range(n):  # trapezoid per cell: the CDF on the grid
+        cumulative.append(cumulative[-1] + h * (f[i] + f[i + 1]) / 2)
+    total = cumulative[-1]
+    cdf = lambda x: cumulative[min(n, max(0, int(round((x + top) / h))))] / total
+    check_bins(rows, "p_x_histogram_1_m", "x_m", cdf, n_eff, "SD x")
+    check_bins(rows, "p_v_histogram_s_m", "v_m_s", normal_cdf(math.sqrt(D / c)), n_eff, "SD v")
+    peaks = summary["x"]["peak_locations"]
+    expected = math.sqrt(1 - alpha * alpha)
+    w = float(rows[1]["x_m"]) - float(rows[0]["x_m"])
+    if len(peaks) != 2 or any(abs(abs(p) - expected) > 0.15 for p in peaks) or peaks[0] * peaks[1] > 0:
+        fail("SD x: peaks %s, expected two at +-%.4f (within 0.15)" % (peaks, expected))
+    print("ok   SD x: two peaks at %.3f, %.3f (exact +-%.4f, within 0.15; bin width %.3f)" % (peaks[0], peaks[1], expected, w))
+
+
+if __name__ == "__main__":
+    kind, directory = sys.argv[2], sys.argv[1]
+    values = [float(v) for v in sys.argv[3:]]
+    linear(directory, *values) if kind == "linear" else sd(directory, *values)
