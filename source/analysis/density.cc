@@ -29,23 +29,33 @@ namespace poundfe
 
   std::vector<double>
   kernel_density(const BinGrid &grid, const std::vector<double> &counts, const double n_total,
-                 const double bandwidth)
+                 const double bandwidth, const std::vector<double> &points)
   {
     const double        norm = 1 / (n_total * bandwidth * std::sqrt(2 * M_PI));
-    std::vector<double> f(grid.n_bins, 0.0);
+    std::vector<double> f(points.size(), 0.0);
     if (!(n_total > 0))
       return f;
-    for (unsigned int j = 0; j < grid.n_bins; ++j)
+    for (std::size_t j = 0; j < points.size(); ++j)
       {
         double sum = 0;
         for (unsigned int i = 0; i < grid.n_bins; ++i)
           {
-            const double u = (grid.center(j) - grid.center(i)) / bandwidth;
+            const double u = (points[j] - grid.center(i)) / bandwidth;
             sum += counts[i] * std::exp(-0.5 * u * u);
           }
         f[j] = norm * sum;
       }
     return f;
+  }
+
+  std::vector<double>
+  kernel_density(const BinGrid &grid, const std::vector<double> &counts, const double n_total,
+                 const double bandwidth)
+  {
+    std::vector<double> centers(grid.n_bins);
+    for (unsigned int i = 0; i < grid.n_bins; ++i)
+      centers[i] = grid.center(i);
+    return kernel_density(grid, counts, n_total, bandwidth, centers);
   }
 
   double

@@ -163,14 +163,16 @@ namespace poundfe
       std::istringstream fields(p.response + " ux");
       const DofTarget target = find_dof_target(input, analysis.model, fields, path, p.response);
       const double dt = input.time_integration.newmark.time_step;
-      Sampling     s{target.equation, target.label, static_cast<unsigned long>(std::llround(p.burn_in / dt)),
-                 p.interval_steps(dt), runner.n_steps()};
+      const Sampling s{target.equation, target.label,
+                       static_cast<unsigned long>(std::llround(p.burn_in / dt)),
+                       p.interval_steps(dt), runner.n_steps()};
       if (s.first >= s.last)
         input.fail("Stationary PDF/Burn-in time",
                    "the runs end at " + number(s.last * dt) + " s, before the burn-in ends");
       const GroundMotionParameters &g = input.ground_motion;
       if (g.is_stochastic() && g.duration < s.last * dt * (1 - 1e-12))
-        input.fail(p.sampling_time > 0 ? "Stationary PDF/Sampling time" : "Time integration/End time",
+        input.fail(p.sampling_time > 0 ? "Stationary PDF/Sampling time" :
+                                         "Time integration/End time",
                    "the runs last " + number(s.last * dt) + " s but the noise ends at " +
                      number(g.duration) + " s (Ground motion/Stochastic/Duration)");
       return s;
@@ -187,16 +189,19 @@ namespace poundfe
       return analysis.modes.omega[0];
     }
 
-    /// [low, high] of the values widened by a quarter of their span on each side.
+    /// [-m, m] (or [0, m] for amplitudes), m = 1.25 max |value|: symmetric
+    /// about the rest position, so a pilot that stayed in one well of a
+    /// double well still spans both.
     BinGrid
-    widened(const std::vector<double> &values, const unsigned int bins, const double floor)
+    pilot_grid(const std::vector<double> &values, const unsigned int bins, const bool symmetric)
     {
-      const auto [low, high] = std::minmax_element(values.begin(), values.end());
-      const double span      = *high - *low;
-      if (!(span > 0))
-        throw NumericalError("the pilot realization's response does not vary: give "
+      double largest = 0;
+      for (const double v : values)
+        largest = std::max(largest, std::abs(v));
+      if (!(largest > 0))
+        throw NumericalError("the pilot realization's response is zero: give "
                              "'Stationary PDF/Range'");
-      return {std::max(floor, *low - span / 4), *high + span / 4, bins};
+      return {symmetric ? -1.25 * largest : 0.0, 1.25 * largest, bins};
     }
 
     PdfLayout
@@ -207,7 +212,6 @@ namespace poundfe
       layout.omega = first_natural_frequency(analysis);
       layout.steps = std::to_string(s.first) + ":" + std::to_string(s.every) + ":" +
                      std::to_string(s.last);
-      const double lowest = -std::numeric_limits<double>::infinity();
       if (p.range.size() == 4)
         {
           layout.grids[0] = {p.range[0], p.range[1], p.bins};
@@ -224,8 +228,8 @@ namespace poundfe
       std::vector<double> a(pilot.x.size());
       for (std::size_t k = 0; k < a.size(); ++k)
         a[k] = layout.amplitude(pilot.x[k], pilot.v[k]);
-      layout.grids = {{widened(pilot.x, p.bins, lowest), widened(pilot.v, p.bins, lowest),
-                       widened(a, p.bins, 0.0)}};
+      layout.grids = {{pilot_grid(pilot.x, p.bins, true), pilot_grid(pilot.v, p.bins, true),
+                       pilot_grid(a, p.bins, false)}};
       return layout;
     }
 
@@ -373,15 +377,28 @@ namespace poundfe
 
   namespace
   {
+    /// What a P-bifurcation needs of one run: the binned x and its kernel
+    /// density's bandwidth and peaks (rank 0), and whether it was stopped
+    /// (every rank).
+    struct XDensity
+    {
+      bool                interrupted = false;
+      BinGrid             grid;
+      std::vector<double> counts;
+      double              n = 0, bandwidth = 1;
+      std::vector<Peak>   peaks;
+    };
+
     /// Rank 0: pdf.csv, joint_pdf.csv, summary.json and the plots.
-    void
+    XDensity
     write_results(const Analysis &analysis, const Sampling &s, const PdfLayout &layout,
                   const MonteCarloTable &table, const std::uint64_t seed,
                   const std::string &directory, const unsigned int n_ranks)
     {
       const InputParameters &input   = analysis.input;
       const unsigned long    n_done  = table.realizations.size();
-      const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
+      const unsigned long    n_completed =
+        std::count(table.completed.begin(), table.completed.end(), true);
       const std::vector<double> total = summed_rows(table, layout.size());
       const unsigned long       n_samples = total[0];
       const double              dt        = input.time_integration.newmark.time_step;
@@ -407,6 +424,9 @@ namespace poundfe
                                        ? double(n_samples) / n_completed * table.n_run_now /
                                            table.wall_time
                                        : 0.0);
+      XDensity x;
+      x.interrupted = table.interrupted;
+      x.grid        = layout.grids[0];
       if (n_samples > 0)
         {
           std::array<QuantityEstimate, 3> e;
@@ -417,53 +437,74 @@ namespace poundfe
           write_joint_csv(directory, layout, total);
           if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
             draw_plots(directory, pdf_plots(n_samples, n_completed));
+          const auto first = total.begin() + layout.histogram(0) + 1;
+          x.counts.assign(first, first + x.grid.n_bins);
+          x.n         = total[0];
+          x.bandwidth = e[0].bandwidth;
+          x.peaks     = e[0].peaks;
         }
       json.end_object();
       write_file_atomically(directory + "/summary.json", json.str());
+      return x;
+    }
+
+    /// One stationary-PDF analysis of `file_input` into `directory`, on every
+    /// rank of `comm`; progress counts from `offset`. With a sampling time the
+    /// runs end at burn-in + sampling time.
+    XDensity
+    run_stationary_pdf(const InputParameters &file_input, const std::string &directory,
+                       const MPI_Comm comm, const std::string &label, Progress &progress,
+                       const unsigned long offset)
+    {
+      InputParameters                input = file_input;
+      const StationaryPdfParameters &p     = input.stationary_pdf;
+      if (p.sampling_time > 0)
+        input.time_integration.end_time = p.burn_in + p.sampling_time;
+      const Analysis     analysis = prepare_analysis(input);
+      const unsigned int rank     = dealii::Utilities::MPI::this_mpi_process(comm);
+      dealii::ConditionalOStream pcout(std::cout, rank == 0);
+      RealizationRunner          runner(analysis);
+      const Sampling             sampling = make_sampling(analysis, runner);
+      const PdfLayout            layout   = make_layout(analysis, runner, sampling);
+      if (rank == 0)
+        create_directories(directory);
+
+      StationarySampler sampler(sampling.equation, sampling.first, sampling.every, sampling.last);
+      const RealizationJob job{layout.names(), runner.stochastic_load().seed(),
+                               [&](const std::uint64_t r, std::vector<double> &row) {
+                                 const bool completed = runner.run(r, {&sampler});
+                                 layout.accumulate(sampler.x, sampler.v, row);
+                                 return completed;
+                               }};
+      const MonteCarloTable table = run_realizations(
+        job, p.realizations, directory + "/realizations.csv", comm, label, &progress, offset);
+      if (rank != 0)
+        {
+          XDensity stopped;
+          stopped.interrupted = table.interrupted;
+          return stopped;
+        }
+      const XDensity x = write_results(analysis, sampling, layout, table,
+                                       runner.stochastic_load().seed(), directory,
+                                       dealii::Utilities::MPI::n_mpi_processes(comm));
+      if (table.interrupted)
+        pcout << label << "stationary PDF interrupted after " << table.realizations.size()
+              << " of " << p.realizations << " realizations: the estimates are over these; "
+              << "the same command runs the rest\n";
+      pcout << label << "stationary PDF of " << sampling.label << ": "
+            << table.realizations.size() << " realizations; results in " << directory
+            << "/ (summary.json, pdf.csv, joint_pdf.csv, realizations.csv)\n";
+      return x;
     }
   } // namespace
 
   int
-  stationary_pdf_command(const InputParameters &file_input, const std::string &directory,
+  stationary_pdf_command(const InputParameters &input, const std::string &directory,
                          const MPI_Comm comm)
   {
-    InputParameters                input = file_input;
-    const StationaryPdfParameters &p     = input.stationary_pdf;
-    if (p.sampling_time > 0)
-      input.time_integration.end_time = p.burn_in + p.sampling_time;
-    const Analysis     analysis = prepare_analysis(input);
-    const unsigned int rank     = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks  = dealii::Utilities::MPI::n_mpi_processes(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
-    RealizationRunner          runner(analysis);
-    const Sampling             sampling = make_sampling(analysis, runner);
-    const PdfLayout            layout   = make_layout(analysis, runner, sampling);
-    if (rank == 0)
-      create_directories(directory);
-
-    StationarySampler    sampler(sampling.equation, sampling.first, sampling.every, sampling.last);
-    const RealizationJob job{layout.names(), runner.stochastic_load().seed(),
-                             [&](const std::uint64_t r, std::vector<double> &row) {
-                               const bool completed = runner.run(r, {&sampler});
-                               layout.accumulate(sampler.x, sampler.v, row);
-                               return completed;
-                             }};
-    Progress              progress(std::cerr, "realizations", p.realizations);
-    const MonteCarloTable table =
-      run_realizations(job, p.realizations, directory + "/realizations.csv", comm, "", &progress);
+    Progress       progress(std::cerr, "realizations", input.stationary_pdf.realizations);
+    const XDensity x = run_stationary_pdf(input, directory, comm, "", progress, 0);
     progress.finish();
-    const int status = table.interrupted ? interrupted_exit_status() : 0;
-    if (rank != 0)
-      return status;
-    write_results(analysis, sampling, layout, table, runner.stochastic_load().seed(), directory,
-                  n_ranks);
-    if (table.interrupted)
-      pcout << "stationary PDF interrupted after " << table.realizations.size() << " of "
-            << p.realizations << " realizations: the estimates are over these; the same "
-            << "command runs the rest\n";
-    pcout << "stationary PDF of " << sampling.label << ": " << table.realizations.size()
-          << " realizations; results in " << directory
-          << "/ (summary.json, pdf.csv, joint_pdf.csv, realizations.csv)\n";
-    return status;
+    return x.interrupted ? interrupted_exit_status() : 0;
   }
 } // namespace poundfe

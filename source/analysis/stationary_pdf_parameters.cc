@@ -34,8 +34,9 @@ namespace poundfe
                       Patterns::Integer(4, 400));
     prm.add_parameter("Range", range,
                       "'x_low, x_high, v_low, v_high' (m, m/s) of the histograms (the amplitude "
-                      "from 0 to its largest value on that box); empty: from a pilot run (the "
-                      "span of realization 0's samples widened by a quarter on each side).",
+                      "from 0 to its largest value on that box); empty: from a pilot run "
+                      "(realization 0): -m..m with m = 1.25 times its largest |x| (|v|), the "
+                      "amplitude 0..1.25 times its largest.",
                       Patterns::List(Patterns::Double(), 0, 4, ","));
     prm.add_parameter("Omega", omega,
                       "omega of the amplitude a = sqrt(x^2 + v^2/omega^2), rad/s (0: the "

@@ -36,7 +36,11 @@ namespace poundfe
   std::vector<double> histogram_density(const BinGrid &grid, const std::vector<double> &counts,
                                         double n_total);
 
-  /// Gaussian kernel density of the binned data at the bin centres.
+  /// Gaussian kernel density of the binned data at `points`.
+  std::vector<double> kernel_density(const BinGrid &grid, const std::vector<double> &counts,
+                                     double n_total, double bandwidth,
+                                     const std::vector<double> &points);
+  /// The same at the bin centres.
   std::vector<double> kernel_density(const BinGrid &grid, const std::vector<double> &counts,
                                      double n_total, double bandwidth);
 
