@@ -161,7 +161,7 @@ namespace poundfe
       if (fields_given.size() != 3)
         input.fail(path, "'" + p.response + "': expected 'building floor node' (the DOF is ux)");
       std::istringstream fields(p.response + " ux");
-      const DofTarget target = find_dof_target(input, analysis.model, fields, path, p.response);
+      const NodeDof  target = find_node_dof(input, analysis.model, fields, path, p.response);
       const double dt = input.time_integration.newmark.time_step;
       const Sampling s{target.equation, target.label,
                        static_cast<unsigned long>(std::llround(p.burn_in / dt)),

@@ -114,9 +114,9 @@ namespace poundfe
     return motion;
   }
 
-  DofTarget
-  find_dof_target(const InputFile &input, const Model &model, std::istringstream &fields,
-                  const std::string &path, const std::string &entry)
+  NodeDof
+  find_node_dof(const InputFile &input, const Model &model, std::istringstream &fields,
+                const std::string &path, const std::string &entry)
   {
     const int    line = input.line_of(path);
     unsigned int building = 0, floor = 0, node = 0;
@@ -150,7 +150,7 @@ namespace poundfe
       throw InputError(input.file, line, path, "'" + entry + "': that DOF is fixed");
     return {static_cast<unsigned int>(equation),
             b.name + " floor " + std::to_string(floor) + " node " + std::to_string(node) +
-                " " + dof};
+              " " + dof};
   }
 
   namespace
@@ -169,7 +169,7 @@ namespace poundfe
           if (entry.find_first_not_of(" \t") == std::string::npos)
             continue;
           std::istringstream fields(entry);
-          const DofTarget    target = find_dof_target(input, model, fields, path, entry);
+          const NodeDof      target = find_node_dof(input, model, fields, path, entry);
           NodalForce         f;
           f.equation = target.equation;
           f.label    = target.label;

@@ -64,21 +64,22 @@ namespace poundfe
   /// clough-penzien or white-noise types).
   MotionGenerator make_motion_generator(const GroundMotionParameters &parameters, double time_step);
 
+  /// A DOF named 'building floor node dof' (building and floor 1-based,
+  /// node 0-based from the left, dof ux|uy|rz) and its label.
+  struct NodeDof
+  {
+    unsigned int equation;
+    std::string  label; // "A3 floor 2 node 0 ux"
+  };
+
+  /// The DOF whose name starts `fields` (the text `entry` of parameter
+  /// `path`, for messages). Throws InputError for a bad or fixed DOF.
+  NodeDof find_node_dof(const InputFile &input, const Model &model, std::istringstream &fields,
+                        const std::string &path, const std::string &entry);
+
   /// Parse the 'Nodal forces' entries against the model. Throws InputError.
   /// White-noise forces are held over the stochastic ground motion's sample
   /// interval and last its duration.
-  /// A free DOF named 'building floor node dof' (building and floor 1-based,
-  /// node 0-based, dof ux, uy or rz), read from the start of `fields`.
-  struct DofTarget
-  {
-    unsigned int equation;
-    std::string  label; // "<building> floor <f> node <n> <dof>"
-  };
-
-  /// Throws InputError naming `path` and `entry` when the DOF does not exist.
-  DofTarget find_dof_target(const InputFile &input, const Model &model, std::istringstream &fields,
-                            const std::string &path, const std::string &entry);
-
   std::vector<NodalForce> make_nodal_forces(const NodalForceParameters   &parameters,
                                             const GroundMotionParameters &ground_motion,
                                             double time_step, const InputFile &input,
