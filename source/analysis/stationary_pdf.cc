@@ -8,7 +8,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/progress.h>
-#include <poundfe/excitation/excitation.h>
+#include <poundfe/model/model_builder.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <sstream>
 
 namespace poundfe
@@ -156,14 +155,17 @@ namespace poundfe
       const InputParameters         &input = analysis.input;
       const StationaryPdfParameters &p     = input.stationary_pdf;
       const std::string              path  = "Stationary PDF/Response";
-      std::istringstream             words(p.response);
-      const std::vector<std::string> fields_given{std::istream_iterator<std::string>(words), {}};
-      if (fields_given.size() != 3)
+      std::istringstream             fields(p.response);
+      const FloorNode at = read_floor_node(input, analysis.model, fields, path, p.response,
+                                           "building floor node (the DOF is ux)");
+      std::string rest;
+      if (fields >> rest)
         input.fail(path, "'" + p.response + "': expected 'building floor node' (the DOF is ux)");
-      std::istringstream fields(p.response + " ux");
-      const NodeDof  target = find_node_dof(input, analysis.model, fields, path, p.response);
+      const int equation = analysis.model.equation(Model::dof(at.node, Component::ux));
+      if (equation < 0)
+        input.fail(path, "'" + p.response + "': its ux is fixed");
       const double dt = input.time_integration.newmark.time_step;
-      const Sampling s{target.equation, target.label,
+      const Sampling s{static_cast<unsigned int>(equation), at.label + " ux",
                        static_cast<unsigned long>(std::llround(p.burn_in / dt)),
                        p.interval_steps(dt), runner.n_steps()};
       if (s.first >= s.last)

@@ -4,13 +4,17 @@
 #    Gaussian stationary densities (stationary_pdf_check.py: variances and
 #    histograms within 4 standard errors of N_eff = T / (2 tau_c) effectively
 #    independent samples; one peak; the amplitude against the Rayleigh law);
+#  - the frictionless SD oscillator (alpha = 0.4) against its exact
+#    Fokker-Planck density: histograms of x and v bin by bin within 4
+#    standard errors of the scatter of the realizations; two peaks at
+#    +-sqrt(1 - alpha^2) within one bin;
 #  - mpirun -np 2 gives byte-identical pdf.csv, joint_pdf.csv and
 #    realizations, and the summary of one rank;
 #  - SIGINT stops a run after the realizations under way (exit status 130,
 #    "interrupted"); the same command resumes to the uninterrupted bytes;
 #  - bad input of the section: exit 1, one message, nothing written.
 set -eu
-poundfe=$1 mpirun=$2 input=$3
+poundfe=$1 mpirun=$2 input=$3 sd=$4
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 here=$(dirname "$0")
 work=$(mktemp -d)
@@ -21,6 +25,8 @@ set -m # background jobs receive SIGINT
 "$poundfe" stationary-pdf "$input" --output "$work/one" > /dev/null
 python3 "$here/stationary_pdf_check.py" "$work/one" linear 0.1 1 1
 for f in pdf.png joint_pdf.png; do [ -s "$work/one/$f" ] || fail "no $f"; done
+"$poundfe" stationary-pdf "$sd" --output "$work/sd" > /dev/null
+python3 "$here/stationary_pdf_check.py" "$work/sd" sd 0.05 0.25 0.4
 
 "$mpirun" -np 2 "$poundfe" stationary-pdf "$input" --output "$work/two" > /dev/null
 for f in pdf.csv joint_pdf.csv; do

@@ -148,12 +148,12 @@ def sd(directory, D, c, alpha):
     expected = math.sqrt(1 - alpha * alpha) if alpha < 1 else 0
     w = x[1] - x[0]
     if alpha < 1:
-        good = len(peaks) == 2 and peaks[0] < 0 < peaks[1] and all(abs(abs(p) - expected) <= 2 * w for p in peaks)
+        good = len(peaks) == 2 and peaks[0] < 0 < peaks[1] and all(abs(abs(p) - expected) <= w for p in peaks)
     else:
-        good = len(peaks) == 1 and abs(peaks[0]) <= 2 * w
+        good = len(peaks) == 1 and abs(peaks[0]) <= w
     if not good:
-        fail("SD x: peaks %s, expected at +-%.4f (within 2 bins, %.3f)" % (peaks, expected, 2 * w))
-    print("ok   SD x: peaks %s (exact +-%.4f, within 2 bins = %.3f)" % (["%.3f" % p for p in peaks], expected, 2 * w))
+        fail("SD x: peaks %s, expected at +-%.4f (within one bin, %.3f)" % (peaks, expected, w))
+    print("ok   SD x: peaks %s (exact +-%.4f, within one bin = %.3f)" % (["%.3f" % p for p in peaks], expected, w))
 
 
 if __name__ == "__main__":
