@@ -207,6 +207,7 @@ namespace poundfe
     subset.declare(prm);
     fragility.declare(prm);
     sweep.declare(prm);
+    bifurcation.declare(prm);
   }
 
   void
@@ -227,6 +228,7 @@ namespace poundfe
     subset.check(*this, model);
     fragility.check(*this);
     sweep.check(*this);
+    bifurcation.check(*this);
   }
 
   InputParameters
@@ -244,6 +246,7 @@ namespace poundfe
     InputParameters p;
     p.file      = file;
     p.directory = std::filesystem::path(file).parent_path().string();
+    p.overrides = overrides;
     if (extension == ".prm")
       index_lines(p);
 

@@ -164,6 +164,16 @@ namespace poundfe
     return read_parameters(file, overrides);
   }
 
+  InputParameters
+  SweepParameters::input_for(const InputParameters &input, const double value,
+                             const std::vector<ParameterOverride> &more) const
+  {
+    std::vector<ParameterOverride> overrides = input.overrides;
+    overrides.push_back({parameter, format_value(value)});
+    overrides.insert(overrides.end(), more.begin(), more.end());
+    return read_parameters(input.file, overrides);
+  }
+
   std::string
   SweepParameters::column_name() const
   {
@@ -308,7 +318,7 @@ namespace poundfe
     const std::vector<double> values = sweep.values();
     std::vector<InputParameters> inputs; // all read first: bad input writes nothing
     for (const double value : values)
-      inputs.push_back(sweep.input_for(input.file, value));
+      inputs.push_back(sweep.input_for(input, value));
 
     const auto start = std::chrono::steady_clock::now();
     SweepTable table;

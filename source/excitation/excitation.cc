@@ -114,53 +114,44 @@ namespace poundfe
     return motion;
   }
 
-  namespace
-  {
-    struct ForceTarget
-    {
-      unsigned int equation;
-      std::string  label;
-    };
-
-    ForceTarget
-    find_target(const InputFile &input, const Model &model, std::istringstream &fields,
+  NodeDof
+  find_node_dof(const InputFile &input, const Model &model, std::istringstream &fields,
                 const std::string &path, const std::string &entry)
-    {
-      const int    line = input.line_of(path);
-      unsigned int building = 0, floor = 0, node = 0;
-      std::string  dof;
-      if (!(fields >> building >> floor >> node >> dof))
-        throw InputError(input.file, line, path,
-                         "'" + entry + "': expected 'building floor node dof ...'");
-      if (building < 1 || building > model.buildings.size())
-        throw InputError(input.file, line, path,
-                         "'" + entry + "': building must be 1.." + std::to_string(model.buildings.size()));
-      const Building &b = model.buildings[building - 1];
-      if (floor < 1 || floor > b.floors.size())
-        throw InputError(input.file, line, path,
-                         "'" + entry + "': floor must be 1.." + std::to_string(b.floors.size()) +
-                           " (forces on the base act on supports)");
-      const Floor &f = b.floors[floor - 1];
-      if (node >= f.nodes.size())
-        throw InputError(input.file, line, path,
-                         "'" + entry + "': node must be 0.." + std::to_string(f.nodes.size() - 1));
-      Component c;
-      if (dof == "ux")
-        c = Component::ux;
-      else if (dof == "uy")
-        c = Component::uy;
-      else if (dof == "rz")
-        c = Component::rz;
-      else
-        throw InputError(input.file, line, path, "'" + entry + "': dof must be ux, uy or rz");
-      const int equation = model.equation(Model::dof(f.nodes[node], c));
-      if (equation < 0)
-        throw InputError(input.file, line, path, "'" + entry + "': that DOF is fixed");
-      return {static_cast<unsigned int>(equation),
-              b.name + " floor " + std::to_string(floor) + " node " + std::to_string(node) +
-                " " + dof};
-    }
-  } // namespace
+  {
+    const int    line = input.line_of(path);
+    unsigned int building = 0, floor = 0, node = 0;
+    std::string  dof;
+    if (!(fields >> building >> floor >> node >> dof))
+      throw InputError(input.file, line, path,
+                       "'" + entry + "': expected 'building floor node dof ...'");
+    if (building < 1 || building > model.buildings.size())
+      throw InputError(input.file, line, path,
+                       "'" + entry + "': building must be 1.." + std::to_string(model.buildings.size()));
+    const Building &b = model.buildings[building - 1];
+    if (floor < 1 || floor > b.floors.size())
+      throw InputError(input.file, line, path,
+                       "'" + entry + "': floor must be 1.." + std::to_string(b.floors.size()) +
+                         " (forces on the base act on supports)");
+    const Floor &f = b.floors[floor - 1];
+    if (node >= f.nodes.size())
+      throw InputError(input.file, line, path,
+                       "'" + entry + "': node must be 0.." + std::to_string(f.nodes.size() - 1));
+    Component c;
+    if (dof == "ux")
+      c = Component::ux;
+    else if (dof == "uy")
+      c = Component::uy;
+    else if (dof == "rz")
+      c = Component::rz;
+    else
+      throw InputError(input.file, line, path, "'" + entry + "': dof must be ux, uy or rz");
+    const int equation = model.equation(Model::dof(f.nodes[node], c));
+    if (equation < 0)
+      throw InputError(input.file, line, path, "'" + entry + "': that DOF is fixed");
+    return {static_cast<unsigned int>(equation),
+            b.name + " floor " + std::to_string(floor) + " node " + std::to_string(node) +
+              " " + dof};
+  }
 
   namespace
   {
@@ -178,7 +169,7 @@ namespace poundfe
           if (entry.find_first_not_of(" \t") == std::string::npos)
             continue;
           std::istringstream fields(entry);
-          const ForceTarget  target = find_target(input, model, fields, path, entry);
+          const NodeDof      target = find_node_dof(input, model, fields, path, entry);
           NodalForce         f;
           f.equation = target.equation;
           f.label    = target.label;

@@ -29,8 +29,8 @@ namespace poundfe
     /// The section whose entries these are ("Sweep", "Bifurcation", ...),
     /// for messages.
     std::string section = "Sweep";
-    std::string parameter;   // an override path, e.g. "Model/Separations"
-    std::string values_text; // as written
+    std::string parameter{};   // an override path, e.g. "Model/Separations"
+    std::string values_text{}; // as written
     std::string command = "run"; // Sweep only: whose model runs
 
     /// Parameter and Values in the subsection `prm` is in.
@@ -49,6 +49,10 @@ namespace poundfe
     InputParameters input_for(const std::string &file, double value) const;
     InputParameters input_for(const std::string &file, double value,
                               const std::vector<ParameterOverride> &more) const;
+    /// The same for the file `input` was read from, with the overrides it
+    /// was read with first.
+    InputParameters input_for(const InputParameters &input, double value,
+                              const std::vector<ParameterOverride> &more = {}) const;
     /// The parameter as a CSV column name: "Model/Separations" -> "Model_Separations".
     std::string column_name() const;
   };
