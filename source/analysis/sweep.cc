@@ -159,9 +159,9 @@ namespace poundfe
   SweepParameters::input_for(const std::string &file, const double value,
                              const std::vector<ParameterOverride> &more) const
   {
-    std::vector<ParameterOverride> overrides{{parameter, format_value(value)}};
-    overrides.insert(overrides.end(), more.begin(), more.end());
-    return read_parameters(file, overrides);
+    InputParameters input;
+    input.file = file;
+    return input_for(input, value, more);
   }
 
   InputParameters
@@ -171,7 +171,16 @@ namespace poundfe
     std::vector<ParameterOverride> overrides = input.overrides;
     overrides.push_back({parameter, format_value(value)});
     overrides.insert(overrides.end(), more.begin(), more.end());
-    return read_parameters(input.file, overrides);
+    try
+      {
+        return read_parameters(input.file, overrides);
+      }
+    catch (const InputError &e) // say which value of the sweep it was
+      {
+        throw InputError(e.file(), e.line(), e.parameter(),
+                         "at " + section + " value " + parameter + " = " + format_value(value) +
+                           ": " + e.problem());
+      }
   }
 
   std::string
