@@ -4,9 +4,10 @@
 //   lambda = (1 / (K T)) sum_{k=1..K} ln(d_k / d0),
 // the second trajectory put back at distance d0 along the separation after
 // every period (Benettin, Galgani, Giorgilli & Strelcyn 1980, Meccanica
-// 15:9-20; Wolf, Swift, Swinney & Vastano 1985, Physica D 16:285-317; for
-// impacting systems Müller 1995, Chaos Solitons Fractals 5:1671-1681).
-// See analysis/bifurcation.h and doc/theory.md.
+// 15:9-20; Wolf, Swift, Swinney & Vastano 1985, Physica D 16:285-317),
+// both trajectories integrated through the discontinuities (cf. Müller
+// 1995, Chaos Solitons Fractals 5:1671-1681, for the variational route).
+// See analysis/bifurcation.h and doc/theory.md §8.4.
 #include <poundfe/analysis/bifurcation.h>
 #include <poundfe/analysis/input_parameters.h>
 #include <poundfe/analysis/run.h>

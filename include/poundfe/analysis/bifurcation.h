@@ -1,5 +1,4 @@
-// Bifurcation diagrams of a harmonically forced model (doc/theory.md §
-// "Poincaré sections and Lyapunov exponents").
+// Bifurcation diagrams of a harmonically forced model (doc/theory.md §8.4).
 //   Poincaré section: x_k = x(k T), T = 2 pi / omega the forcing period,
 //     sampled exactly: the time step is dt' = T / round(T / dt) (dt the
 //     input's), so the steps land on every k T.
@@ -13,10 +12,9 @@
 //     lambda = sum_k ln(d_k / d0) / (K T) over the K sampled periods.
 //     Distance: |(du, dv / omega)| over all equations; d0 = delta |(u, v /
 //     omega)| of the first trajectory at the renormalisation (delta 1e-8).
-//     Renormalising by restarting an integrator (NewmarkIntegrator::restart)
-//     is Müller's (1995, Chaos Solitons Fractals 5:1671) point for
-//     non-smooth systems: the flow, with its impacts, is integrated, never
-//     linearised.
+//     Both trajectories are integrated through impacts and yielding (no
+//     variational equations, whose transition conditions at each
+//     discontinuity Müller 1995, Chaos Solitons Fractals 5:1671, derives).
 #ifndef poundfe_analysis_bifurcation_h
 #define poundfe_analysis_bifurcation_h
 
