@@ -234,58 +234,76 @@ namespace poundfe
                  "is 0, and the first harmonic nodal force gives no omega > 0 to take it from");
     }
 
-    /// The input at `value` with dt' = T / round(T / dt) and the end time
+    /// A value's input with dt' = T / round(T / dt) and the end time
     /// (transient + sampled) T, so that steps land on every k T.
-    InputParameters
-    input_at(const InputParameters &input, const double value, double &period,
-             unsigned long &steps_per_period)
+    struct ValueInput
+    {
+      double          value = 0, period = 0;
+      unsigned long   steps_per_period = 1;
+      InputParameters input;
+    };
+
+    ValueInput
+    input_at(const InputParameters &input, const double value)
     {
       const SweepParameters &sweep = input.bifurcation.sweep;
       const InputParameters  at    = sweep.input_for(input, value);
-      period = forcing_period_of(at);
-      const double dt  = at.time_integration.newmark.time_step;
-      steps_per_period = std::max(1.0, std::round(period / dt));
+      ValueInput             v;
+      v.value            = value;
+      v.period           = forcing_period_of(at);
+      v.steps_per_period = std::max(1.0, std::round(v.period / at.time_integration.newmark.time_step));
       const unsigned int n_periods =
         at.bifurcation.transient_periods + at.bifurcation.sampled_periods;
-      return sweep.input_for(input, value,
-                             {{"Time integration/Time step", format_value(period / steps_per_period)},
-                              {"Time integration/End time", format_value(n_periods * period)}});
+      v.input = sweep.input_for(input, value,
+                                {{"Time integration/Time step",
+                                  format_value(v.period / v.steps_per_period)},
+                                 {"Time integration/End time", format_value(n_periods * v.period)}});
+      return v;
+    }
+
+    /// The model of `v` prepared once and run once with the Poincaré
+    /// sampler (and the second trajectory).
+    BifurcationPoint
+    run_point(const ValueInput &v)
+    {
+      const auto                   start = std::chrono::steady_clock::now();
+      const InputParameters       &at    = v.input;
+      const BifurcationParameters &b     = at.bifurcation;
+      const unsigned long          n     = v.steps_per_period;
+      const Analysis     analysis   = prepare_analysis(at);
+      const Excitation   excitation = make_excitation(analysis);
+      std::istringstream fields(b.response);
+      const NodeDof dof = find_node_dof(at, analysis.model, fields, "Bifurcation/Response", b.response);
+
+      TimeHistory     history(analysis);
+      PoincareSampler sampler(dof.equation, b.quantity == "velocity", n, b.transient_periods,
+                              b.sampled_periods);
+      Observers       observers{&sampler};
+      std::optional<LyapunovEstimator> lyapunov;
+      if (b.lyapunov_exponent)
+        observers.push_back(&lyapunov.emplace(analysis, excitation, n, b.transient_periods,
+                                              v.period, b.perturbation));
+      BifurcationPoint point;
+      point.value          = v.value;
+      point.forcing_period = v.period;
+      point.time_step      = at.time_integration.newmark.time_step;
+      point.completed      = history.run(excitation, observers).completed();
+      point.samples        = sampler.samples;
+      point.response_range = sampler.samples.empty() ? 0 : sampler.highest - sampler.lowest;
+      point.period = point.completed ?
+                       poincare_period(point.samples, b.period_tolerance * point.response_range) :
+                       0;
+      point.lyapunov_exponent = lyapunov ? lyapunov->exponent() : 0;
+      point.wall_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return point;
     }
   } // namespace
 
   BifurcationPoint
   bifurcation_point(const InputParameters &input, const double value)
   {
-    const auto       start = std::chrono::steady_clock::now();
-    BifurcationPoint point;
-    unsigned long    n = 1;
-    point.value                  = value;
-    const InputParameters    at  = input_at(input, value, point.forcing_period, n);
-    const BifurcationParameters &b = at.bifurcation;
-    point.time_step              = at.time_integration.newmark.time_step;
-    const Analysis   analysis    = prepare_analysis(at);
-    const Excitation excitation  = make_excitation(analysis);
-    std::istringstream fields(b.response);
-    const NodeDof    dof = find_node_dof(at, analysis.model, fields, "Bifurcation/Response", b.response);
-
-    TimeHistory     history(analysis);
-    PoincareSampler sampler(dof.equation, b.quantity == "velocity", n, b.transient_periods,
-                            b.sampled_periods);
-    Observers       observers{&sampler};
-    std::optional<LyapunovEstimator> lyapunov;
-    if (b.lyapunov_exponent)
-      observers.push_back(&lyapunov.emplace(analysis, excitation, n, b.transient_periods,
-                                            point.forcing_period, b.perturbation));
-    point.completed      = history.run(excitation, observers).completed();
-    point.samples        = sampler.samples;
-    point.response_range = sampler.samples.empty() ? 0 : sampler.highest - sampler.lowest;
-    point.period = point.completed ?
-                     poincare_period(point.samples, b.period_tolerance * point.response_range) :
-                     0;
-    point.lyapunov_exponent = lyapunov ? lyapunov->exponent() : 0;
-    point.wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return point;
+    return run_point(input_at(input, value));
   }
 
   namespace
@@ -396,19 +414,16 @@ namespace poundfe
     const BifurcationParameters &b = input.bifurcation;
     b.sweep.require(input);
     const std::vector<double> values = b.sweep.values();
-    for (const double value : values) // every value's input checked before any work
-      {
-        double        period = 0;
-        unsigned long n      = 0;
-        input_at(input, value, period, n);
-      }
+    std::vector<ValueInput> inputs; // every value's input checked before any work
+    for (const double value : values)
+      inputs.push_back(input_at(input, value));
     const auto                    start = std::chrono::steady_clock::now();
     std::vector<BifurcationPoint> points;
     {
       Progress progress(std::cerr, "bifurcation: values", values.size());
-      for (const double value : values)
+      for (const ValueInput &v : inputs)
         {
-          points.push_back(bifurcation_point(input, value));
+          points.push_back(run_point(v));
           progress.update(points.size());
         }
     }
