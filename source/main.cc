@@ -1,7 +1,9 @@
 // poundfe command line: poundfe <command> [FILE] [--output DIR]
 #include <poundfe/analysis/analysis.h>
+#include <poundfe/analysis/bifurcation.h>
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/subset.h>
+#include <poundfe/analysis/sweep.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
@@ -33,6 +35,10 @@ namespace
     "  montecarlo FILE     Monte Carlo over the random loading (MPI: mpirun -np P ...)\n"
     "  subset FILE         Subset Simulation of a small exceedance probability (MPI)\n"
     "  fragility FILE      Monte Carlo over PGA levels, lognormal fragility curves (MPI)\n"
+    "  sweep FILE          the run's peaks against the values of the Sweep section's\n"
+    "                      parameter (sweep.csv, sweep.png, summary.json)\n"
+    "  bifurcation FILE    Poincare samples, their period and the largest Lyapunov\n"
+    "                      exponent against the Bifurcation section's parameter\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "--output DIR overrides the file's 'Output/Directory'.\n"
     "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset and fragility after the\n"
@@ -137,7 +143,8 @@ main(int argc, char **argv)
           return 0;
         }
       if (command != "run" && command != "modal" && command != "ground-motion" &&
-          command != "montecarlo" && command != "subset" && command != "fragility")
+          command != "montecarlo" && command != "subset" && command != "fragility" &&
+          command != "sweep" && command != "bifurcation")
         {
           err << "poundfe: error: unknown command '" << command << "'\n" << usage;
           return 1;
@@ -159,6 +166,10 @@ main(int argc, char **argv)
           err << "poundfe: error: --realizations belongs to ground-motion\n";
           return 1;
         }
+      if (command == "sweep") // an analysis per value
+        return poundfe::sweep_command(input, directory);
+      if (command == "bifurcation")
+        return poundfe::bifurcation_command(input, directory);
       const poundfe::Analysis analysis = poundfe::prepare_analysis(input);
       if (command == "modal")
         return poundfe::modal_command(analysis, directory);

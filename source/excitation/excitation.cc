@@ -115,40 +115,31 @@ namespace poundfe
     return motion;
   }
 
-  namespace
-  {
-    struct ForceTarget
-    {
-      unsigned int equation;
-      std::string  label;
-    };
-
-    ForceTarget
-    find_target(const InputFile &input, const Model &model, std::istringstream &fields,
+  NodeDof
+  find_node_dof(const InputFile &input, const Model &model, std::istringstream &fields,
                 const std::string &path, const std::string &entry)
-    {
-      const FloorNode at =
-        read_floor_node(input, model, fields, path, entry, "building floor node dof ...");
-      const int   line = input.line_of(path);
-      std::string dof;
-      Component   c;
-      if (!(fields >> dof))
-        throw InputError(input.file, line, path,
-                         "'" + entry + "': expected 'building floor node dof ...'");
-      if (dof == "ux")
-        c = Component::ux;
-      else if (dof == "uy")
-        c = Component::uy;
-      else if (dof == "rz")
-        c = Component::rz;
-      else
-        throw InputError(input.file, line, path, "'" + entry + "': dof must be ux, uy or rz");
-      const int equation = model.equation(Model::dof(at.node, c));
-      if (equation < 0)
-        throw InputError(input.file, line, path, "'" + entry + "': that DOF is fixed");
-      return {static_cast<unsigned int>(equation), at.label + " " + dof};
-    }
-  } // namespace
+  {
+    const FloorNode at =
+      read_floor_node(input, model, fields, path, entry, "building floor node dof ...");
+    const int   line = input.line_of(path);
+    std::string dof;
+    Component   c;
+    if (!(fields >> dof))
+      throw InputError(input.file, line, path,
+                       "'" + entry + "': expected 'building floor node dof ...'");
+    if (dof == "ux")
+      c = Component::ux;
+    else if (dof == "uy")
+      c = Component::uy;
+    else if (dof == "rz")
+      c = Component::rz;
+    else
+      throw InputError(input.file, line, path, "'" + entry + "': dof must be ux, uy or rz");
+    const int equation = model.equation(Model::dof(at.node, c));
+    if (equation < 0)
+      throw InputError(input.file, line, path, "'" + entry + "': that DOF is fixed");
+    return {static_cast<unsigned int>(equation), at.label + " " + dof};
+  }
 
   namespace
   {
@@ -166,7 +157,7 @@ namespace poundfe
           if (entry.find_first_not_of(" \t") == std::string::npos)
             continue;
           std::istringstream fields(entry);
-          const ForceTarget  target = find_target(input, model, fields, path, entry);
+          const NodeDof      target = find_node_dof(input, model, fields, path, entry);
           NodalForce         f;
           f.equation = target.equation;
           f.label    = target.label;

@@ -10,6 +10,7 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/model/model.h>
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,19 @@ namespace poundfe
   /// The generator of the input's stochastic ground motion (kanai-tajimi,
   /// clough-penzien or white-noise types).
   MotionGenerator make_motion_generator(const GroundMotionParameters &parameters, double time_step);
+
+  /// A DOF named 'building floor node dof' (building and floor 1-based,
+  /// node 0-based from the left, dof ux|uy|rz) and its label.
+  struct NodeDof
+  {
+    unsigned int equation;
+    std::string  label; // "A3 floor 2 node 0 ux"
+  };
+
+  /// The DOF whose name starts `fields` (the text `entry` of parameter
+  /// `path`, for messages). Throws InputError for a bad or fixed DOF.
+  NodeDof find_node_dof(const InputFile &input, const Model &model, std::istringstream &fields,
+                        const std::string &path, const std::string &entry);
 
   /// Parse the 'Nodal forces' entries against the model. Throws InputError.
   /// White-noise forces are held over the stochastic ground motion's sample
