@@ -16,9 +16,14 @@
 //   through the montecarlo driver (realizations.csv in a fresh temporary
 //   directory), and prints realizations per second on P ranks;
 //   bench/montecarlo.sh runs it on 1 and 2 ranks and prints the speed-up.
+// Bifurcation: build/poundfe-bench --bifurcation FILE
+//   times the points of FILE's Bifurcation section (each: read, prepare,
+//   transient + sampled periods, and the second trajectory when asked) and
+//   prints the points per second and the steps per second.
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
 #include <poundfe/analysis/analysis.h>
+#include <poundfe/analysis/bifurcation.h>
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/run.h>
@@ -129,6 +134,29 @@ namespace
       }
     return 0;
   }
+
+  int
+  measure_bifurcation(const std::string &file)
+  {
+    const InputParameters     input  = read_parameters(file);
+    const BifurcationParameters &b   = input.bifurcation;
+    const std::vector<double> values = b.sweep.values();
+    const auto                start  = std::chrono::steady_clock::now();
+    double                    steps = 0, in_points = 0;
+    for (const double value : values)
+      {
+        const BifurcationPoint point = bifurcation_point(input, value);
+        steps += std::round(point.forcing_period / point.time_step) *
+                 (b.transient_periods + b.sampled_periods) * (b.lyapunov_exponent ? 2 : 1);
+        in_points += point.wall_time;
+      }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("bifurcation %s: %zu values in %.3f s (%.1f values/s; reading the inputs "
+                "%.3f s); %.3g integrator steps%s, %.3g steps/s\n",
+                file.c_str(), values.size(), wall, values.size() / wall, wall - in_points, steps,
+                b.lyapunov_exponent ? " (both trajectories)" : "", steps / in_points);
+    return 0;
+  }
 } // namespace
 
 int
@@ -139,6 +167,8 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   if (argc > 3 && std::string(argv[1]) == "--montecarlo")
     return measure_monte_carlo(argv[2], std::stoul(argv[3]), MPI_COMM_WORLD);
+  if (argc > 2 && std::string(argv[1]) == "--bifurcation")
+    return measure_bifurcation(argv[2]);
   const std::string  file    = argc > 1 ? argv[1] : "input/two-buildings.prm";
   const unsigned int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   const InputParameters input = read_parameters(file);

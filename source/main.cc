@@ -1,7 +1,9 @@
 // poundfe command line: poundfe <command> [FILE] [--output DIR]
 #include <poundfe/analysis/analysis.h>
+#include <poundfe/analysis/bifurcation.h>
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/subset.h>
+#include <poundfe/analysis/sweep.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/stationary_pdf.h>
 #include <poundfe/assembly/linear_solver.h>
@@ -36,6 +38,10 @@ namespace
     "  fragility FILE      Monte Carlo over PGA levels, lognormal fragility curves (MPI)\n"
     "  stationary-pdf FILE stationary PDFs of a noisy response: histogram, kernel density,\n"
     "                      peaks, joint p(x, v) (MPI)\n"
+    "  sweep FILE          the run's peaks against the values of the Sweep section's\n"
+    "                      parameter (sweep.csv, sweep.png, summary.json)\n"
+    "  bifurcation FILE    Poincare samples, their period and the largest Lyapunov\n"
+    "                      exponent against the Bifurcation section's parameter\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "--output DIR overrides the file's 'Output/Directory'.\n"
     "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility and stationary-pdf\n"
@@ -141,7 +147,7 @@ main(int argc, char **argv)
           return 0;
         }
       if (command != "run" && command != "modal" && command != "ground-motion" &&
-          !runs_over_mpi(command))
+          command != "sweep" && command != "bifurcation" && !runs_over_mpi(command))
         {
           err << "poundfe: error: unknown command '" << command << "'\n" << usage;
           return 1;
@@ -165,6 +171,10 @@ main(int argc, char **argv)
           err << "poundfe: error: --realizations belongs to ground-motion\n";
           return 1;
         }
+      if (command == "sweep") // an analysis per value
+        return poundfe::sweep_command(input, directory);
+      if (command == "bifurcation")
+        return poundfe::bifurcation_command(input, directory);
       const poundfe::Analysis analysis = poundfe::prepare_analysis(input);
       if (command == "modal")
         return poundfe::modal_command(analysis, directory);

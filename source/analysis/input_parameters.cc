@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 
@@ -81,17 +82,112 @@ namespace poundfe
         }
     }
 
-    void
-    parse(ParameterHandler &prm, const std::string &file, const bool skip_undefined)
+    /// An override's path taken apart: "A/B/Entry:k" is sections {A, B},
+    /// entry "Entry" and field k (0: the whole value).
+    struct OverridePath
     {
+      std::vector<std::string> sections;
+      std::string              entry;
+      unsigned int             field = 0;
+    };
+
+    OverridePath
+    split_override_path(const InputFile &p, const std::string &path)
+    {
+      OverridePath split;
+      std::string  rest = path;
+      static const std::regex with_field("^(.*):([0-9]+)$");
+      std::smatch             m;
+      if (std::regex_match(path, m, with_field))
+        {
+          rest        = m[1];
+          split.field = std::stoul(m[2].str().substr(0, 6));
+          if (split.field == 0)
+            p.fail(path, "override: fields count from 1");
+        }
+      for (std::size_t slash; (slash = rest.find('/')) != std::string::npos;
+           rest.erase(0, slash + 1))
+        split.sections.push_back(rest.substr(0, slash));
+      split.entry = rest;
+      if (split.sections.empty() || split.entry.empty())
+        p.fail(path, "override: a path is 'Section/.../Entry' or 'Section/.../Entry:k'");
+      return split;
+    }
+
+    /// `list` ("f1 f2 ...; item 2; ...") with field k of the first item set to `value`.
+    std::string
+    replace_field(const InputFile &p, const std::string &path, const std::string &list,
+                  const unsigned int k, const std::string &value)
+    {
+      const std::size_t semicolon = list.find(';');
+      std::istringstream        first(list.substr(0, semicolon));
+      std::vector<std::string>  fields{std::istream_iterator<std::string>(first), {}};
+      if (k > fields.size())
+        p.fail(path, "override: the first item '" + collapse_whitespace(list.substr(0, semicolon)) +
+                       "' has " + std::to_string(fields.size()) + " fields, not " +
+                       std::to_string(k));
+      fields[k - 1] = value;
+      std::string out;
+      for (const std::string &f : fields)
+        out += (out.empty() ? "" : " ") + f;
+      return semicolon == std::string::npos ? out : out + list.substr(semicolon);
+    }
+
+    /// Set one override in `prm` (at its top level). With `skip_undeclared`
+    /// (the first pass, which declares only the number of buildings) a path
+    /// not declared is left alone; otherwise it is an InputError. (A failed
+    /// override leaves `prm` inside the sections: it is thrown away then.)
+    void
+    apply_override(ParameterHandler &prm, InputFile &p, const ParameterOverride &o,
+                   const bool skip_undeclared)
+    {
+      const OverridePath split = split_override_path(p, o.path);
+      if (!prm.subsection_path_exists(split.sections))
+        {
+          if (skip_undeclared)
+            return;
+          p.fail(o.path, "override: there is no such section");
+        }
+      for (const std::string &section : split.sections)
+        prm.enter_subsection(section);
       try
         {
-          prm.parse_input(file, "", skip_undefined);
+          const std::string current = prm.get(split.entry); // throws when undeclared
+          prm.set(split.entry, split.field == 0 ?
+                                 o.value :
+                                 replace_field(p, o.path, current, split.field, o.value));
+        }
+      catch (const dealii::ParameterHandler::ExcEntryUndeclared &)
+        {
+          if (!skip_undeclared)
+            p.fail(o.path, "override: there is no such parameter");
         }
       catch (const dealii::ExceptionBase &e)
         {
-          rethrow_parse_error(file, e);
+          std::ostringstream info;
+          e.print_info(info);
+          p.fail(o.path, "override value '" + o.value + "' is not allowed: " +
+                           collapse_whitespace(info.str()));
         }
+      for (std::size_t i = 0; i < split.sections.size(); ++i)
+        prm.leave_subsection();
+      p.lines.erase(o.path.substr(0, o.path.rfind(':'))); // not the file's value any more
+    }
+
+    void
+    parse(ParameterHandler &prm, InputFile &p, const std::vector<ParameterOverride> &overrides,
+          const bool skip_undefined)
+    {
+      try
+        {
+          prm.parse_input(p.file, "", skip_undefined);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          rethrow_parse_error(p.file, e);
+        }
+      for (const ParameterOverride &o : overrides)
+        apply_override(prm, p, o, skip_undefined);
     }
   } // namespace
 
@@ -117,6 +213,8 @@ namespace poundfe
     subset.declare(prm);
     fragility.declare(prm);
     stationary_pdf.declare(prm);
+    sweep.declare(prm);
+    bifurcation.declare(prm);
   }
 
   void
@@ -138,10 +236,12 @@ namespace poundfe
     subset.check(*this, model);
     fragility.check(*this);
     stationary_pdf.check(*this, time_integration.newmark.time_step);
+    sweep.check(*this);
+    bifurcation.check(*this);
   }
 
   InputParameters
-  read_parameters(const std::string &file)
+  read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
   {
     {
       std::ifstream in(file);
@@ -155,6 +255,7 @@ namespace poundfe
     InputParameters p;
     p.file      = file;
     p.directory = std::filesystem::path(file).parent_path().string();
+    p.overrides = overrides;
     if (extension == ".prm")
       index_lines(p);
 
@@ -163,14 +264,20 @@ namespace poundfe
     {
       ParameterHandler prm;
       ModelParameters::declare_number_of_buildings(prm, n_buildings);
-      parse(prm, file, true);
+      parse(prm, p, overrides, true);
     }
     p.model.buildings.resize(n_buildings);
     ParameterHandler prm;
     p.declare(prm);
-    parse(prm, file, false);
+    parse(prm, p, overrides, false);
     p.finalize();
     return p;
+  }
+
+  InputParameters
+  read_parameters(const std::string &file)
+  {
+    return read_parameters(file, {});
   }
 
   void

@@ -5,6 +5,7 @@
 #include <poundfe/analysis/density.h>
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/stationary_pdf.h>
+#include <poundfe/analysis/sweep.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/progress.h>
@@ -356,21 +357,24 @@ namespace poundfe
           .end_object();
     }
 
+    /// pdf.png: one panel per quantity, histogram and kernel density.
     std::vector<Plot>
     pdf_plots(const unsigned long n_samples, const unsigned long n_realizations)
     {
-      Plot pdf{"pdf.png",
-               "stationary PDFs: histogram and Gaussian KDE, " + std::to_string(n_samples) +
-                 " samples of " + std::to_string(n_realizations) + " realizations",
-               "x (m), v (m/s), a (m)", "probability density", {}};
+      std::array<Plot, 3> panel;
       for (unsigned int q = 0; q < 3; ++q)
         {
           const std::string c = std::to_string(3 * q + 1);
-          pdf.series.push_back({"pdf.csv", c + ":" + std::to_string(3 * q + 2),
-                                std::string(quantity[q]) + " histogram", "histeps"});
-          pdf.series.push_back({"pdf.csv", c + ":" + std::to_string(3 * q + 3),
-                                std::string(quantity[q]) + " KDE", "lines lw 2"});
+          panel[q]            = Plot{"", "", quantity_name[q], "probability density",
+                          {{"pdf.csv", c + ":" + std::to_string(3 * q + 2), "histogram", "histeps"},
+                           {"pdf.csv", c + ":" + std::to_string(3 * q + 3), "Gaussian KDE",
+                            "lines lw 2"}}};
         }
+      Plot pdf       = panel[0];
+      pdf.file       = "pdf.png";
+      pdf.title      = "stationary PDFs, " + std::to_string(n_samples) + " samples of " +
+                  std::to_string(n_realizations) + " realizations";
+      pdf.below      = {panel[1], panel[2]};
       Plot joint{"joint_pdf.png", "joint PDF p(x, v) (2-D histogram)", quantity_name[0],
                  quantity_name[1], {{"joint_pdf.csv", "1:2:3", "", "image"}}};
       return {pdf, joint};
@@ -498,12 +502,160 @@ namespace poundfe
             << "/ (summary.json, pdf.csv, joint_pdf.csv, realizations.csv)\n";
       return x;
     }
+
+    /// p_bifurcation_density.csv: the kernel density of x of every value on
+    /// one x grid (the union of the values' ranges), with the cell each
+    /// point fills in the image (halfway to the neighbouring values: they
+    /// need not be equally spaced). At least two values.
+    void
+    write_density_map(const std::string &directory, const std::string &column,
+                      const std::vector<double> &values, const std::vector<XDensity> &x)
+    {
+      BinGrid common = x[0].grid;
+      for (const XDensity &d : x)
+        common = {std::min(common.low, d.grid.low), std::max(common.high, d.grid.high),
+                  std::max(common.n_bins, d.grid.n_bins)};
+      std::vector<double> points(common.n_bins);
+      for (unsigned int i = 0; i < common.n_bins; ++i)
+        points[i] = common.center(i);
+      std::string text = column + ",x_m,p_x_kde_1_m," + column + "_low," + column +
+                         "_high,x_low_m,x_high_m\n";
+      const std::size_t n = x.size();
+      for (std::size_t j = 0; j < n; ++j)
+        {
+          const double low  = j > 0 ? (values[j - 1] + values[j]) / 2
+                                    : 1.5 * values[0] - 0.5 * values[1];
+          const double high = j + 1 < n ? (values[j] + values[j + 1]) / 2
+                                        : 1.5 * values[n - 1] - 0.5 * values[n - 2];
+          const std::vector<double> f =
+            kernel_density(x[j].grid, x[j].counts, x[j].n, x[j].bandwidth, points);
+          for (unsigned int i = 0; i < common.n_bins; ++i)
+            {
+              const double half = common.width() / 2;
+              for (const double v : {values[j], points[i], f[i], low, high, points[i] - half})
+                append_number(text, v), text += ',';
+              append_number(text, points[i] + half);
+              text += '\n';
+            }
+        }
+      write_file_atomically(directory + "/p_bifurcation_density.csv", text);
+    }
+
+    /// p_bifurcation.csv (value, number of peaks, their locations) and the
+    /// summary's entries; returns the most peaks of a value.
+    std::size_t
+    write_peaks(const std::string &directory, const std::string &column,
+                const std::vector<double> &values, const std::vector<XDensity> &x, JsonWriter &json)
+    {
+      std::size_t most = 1;
+      for (const XDensity &d : x)
+        most = std::max(most, d.peaks.size());
+      std::string text = column + ",n_peaks";
+      for (std::size_t k = 1; k <= most; ++k)
+        text += ",peak" + std::to_string(k) + "_x_m";
+      text += '\n';
+      json.begin_array("values");
+      for (std::size_t j = 0; j < x.size(); ++j)
+        {
+          append_number(text, values[j]);
+          text += ',' + std::to_string(x[j].peaks.size());
+          for (std::size_t k = 0; k < most; ++k)
+            {
+              text += ',';
+              if (k < x[j].peaks.size())
+                append_number(text, x[j].peaks[k].location);
+            }
+          text += '\n';
+          json.begin_object()
+            .value("value", values[j])
+            .value("n_peaks", x[j].peaks.size())
+            .value("peak_locations", peak_values(x[j].peaks, true))
+            .end_object();
+        }
+      json.end_array().begin_array("peak_count_changes");
+      for (std::size_t j = 1; j < x.size(); ++j)
+        if (x[j].peaks.size() != x[j - 1].peaks.size())
+          json.begin_object()
+            .value("between", std::vector<double>{values[j - 1], values[j]})
+            .value("n_peaks", std::vector<double>{double(x[j - 1].peaks.size()),
+                                                  double(x[j].peaks.size())})
+            .end_object();
+      json.end_array();
+      write_file_atomically(directory + "/p_bifurcation.csv", text);
+      return most;
+    }
+
+    Plot
+    p_bifurcation_plot(const std::string &parameter, const std::size_t most_peaks)
+    {
+      Plot plot{"p_bifurcation.png",
+                "P-bifurcation: kernel density of x against " + parameter + " (green: peaks)",
+                parameter, "displacement x (m)",
+                {{"p_bifurcation_density.csv", "1:2:4:5:6:7:3", "",
+                  "boxxyerror fs solid 1.0 noborder fc palette"}}};
+      for (std::size_t k = 0; k < most_peaks; ++k)
+        plot.series.push_back({"p_bifurcation.csv", "1:" + std::to_string(k + 3),
+                               "", "points pt 7 ps 0.8 lc rgb 'green'"});
+      return plot;
+    }
+  } // namespace
+
+  namespace
+  {
+    /// The P-bifurcation: one stationary-PDF run per value, each in its own
+    /// directory (resumable), then the density of x against the value.
+    int
+    p_bifurcation_command(const InputParameters &input, const std::string &directory,
+                          const MPI_Comm comm)
+    {
+      const SweepParameters     &sweep  = input.stationary_pdf.sweep;
+      const std::vector<double>  values = sweep.values();
+      std::vector<InputParameters> inputs; // every value checked before anything runs
+      for (const double v : values)
+        inputs.push_back(sweep.input_for(input, v));
+      const unsigned long  per_value = input.stationary_pdf.realizations;
+      Progress             progress(std::cerr, "realizations", values.size() * per_value);
+      std::vector<XDensity> done;
+      for (std::size_t j = 0; j < values.size(); ++j)
+        {
+          const std::string name  = sweep.column_name() + "_" + format_value(values[j]);
+          XDensity          x     = run_stationary_pdf(inputs[j], directory + "/" + name, comm,
+                                                 name + ": ", progress, j * per_value);
+          if (x.interrupted)
+            break;
+          done.push_back(std::move(x));
+        }
+      progress.finish();
+      const bool interrupted = done.size() < values.size();
+      const int  status      = interrupted ? interrupted_exit_status() : 0;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
+        return status;
+      JsonWriter json;
+      begin_summary(json, "stationary-pdf", input, interrupted ? "interrupted" : "completed");
+      json.value("parameter", sweep.parameter).value("values_done", done.size());
+      const std::vector<double> swept(values.begin(), values.begin() + done.size());
+      if (done.size() >= 2)
+        {
+          const std::size_t most = write_peaks(directory, sweep.column_name(), swept, done, json);
+          write_density_map(directory, sweep.column_name(), swept, done);
+          if (input.output.plots && !interrupted)
+            draw_plots(directory, {p_bifurcation_plot(sweep.parameter, most)});
+        }
+      json.end_object();
+      write_file_atomically(directory + "/summary.json", json.str());
+      std::cout << "P-bifurcation over " << sweep.parameter << ": " << done.size() << " of "
+                << values.size() << " values; results in " << directory
+                << "/ (summary.json, p_bifurcation.csv, p_bifurcation_density.csv)\n";
+      return status;
+    }
   } // namespace
 
   int
   stationary_pdf_command(const InputParameters &input, const std::string &directory,
                          const MPI_Comm comm)
   {
+    if (!input.stationary_pdf.sweep.values().empty())
+      return p_bifurcation_command(input, directory, comm);
     Progress       progress(std::cerr, "realizations", input.stationary_pdf.realizations);
     const XDensity x = run_stationary_pdf(input, directory, comm, "", progress, 0);
     progress.finish();

@@ -50,6 +50,7 @@ namespace poundfe
                       "A peak of a kernel density is a local maximum whose height and "
                       "prominence are at least this fraction of the global maximum.",
                       Patterns::Double(0, 1));
+    sweep.declare_entries(prm);
     prm.leave_subsection();
   }
 
@@ -67,6 +68,11 @@ namespace poundfe
                                            std::to_string(bandwidths.size()));
     if (!(peak_threshold > 0 && peak_threshold < 1))
       input.fail(s + "Peak threshold", "must lie in (0, 1)");
+    sweep.check(input);
+    if (sweep.values().size() == 1)
+      input.fail(s + "Values", "a P-bifurcation needs at least 2 values");
+    if (!sweep.values().empty())
+      sweep.require(input);
     const double steps = sample_interval / time_step;
     if (sample_interval > 0 && (steps < 0.5 || std::abs(steps - std::round(steps)) > 1e-6 * steps))
       input.fail(s + "Sample interval", "must be a whole number of time steps (" +

@@ -200,20 +200,41 @@ namespace poundfe
     std::fill(supplied_work.begin(), supplied_work.end(), 0.0);
     energy_scale      = 0;
     max_balance_error = 0;
-    Vector r = load - system.damping * v0 - system.stiffness * u0;
-    gather(u0, v0);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      (*elements)[h].reset();
+    set_consistent_acceleration(load);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      work[h] = (*elements)[h].stored_energy();
+    balance.strain  = strain_energy();
+    balance.kinetic = kinetic_energy();
+    balance.initial = balance.strain + balance.kinetic;
+  }
+
+  void
+  NewmarkIntegrator::restart(const Vector &load, const Vector &u_new, const Vector &v_new)
+  {
+    u        = u_new;
+    v        = v_new;
+    load_now = load;
+    set_consistent_acceleration(load);
+  }
+
+  void
+  NewmarkIntegrator::set_consistent_acceleration(const Vector &load)
+  {
+    Vector r = load - system.damping * v - system.stiffness * u;
+    gather(u, v);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         NonlinearElement  &e = (*elements)[h];
         const unsigned int s = dof_start[h], k = e.n_dofs();
-        e.reset();
         if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
-          throw NumericalError("initial state: " + e.label + ": " + e.failure());
+          throw NumericalError("state at t = " + std::to_string(current_time) + ": " + e.label +
+                               ": " + e.failure());
         e.commit();
         committed_force[h]   = e.force();
         committed_history[h] = e.history_variable();
-        committed_rate[h]    = e.deformation(v0);
-        work[h]              = e.stored_energy();
+        committed_rate[h]    = e.deformation(v);
         e.force_correction(correction.segment(s, k));
       }
     subtract_element_forces(r);
@@ -249,9 +270,6 @@ namespace poundfe
     for (unsigned int i = 0; i < n; ++i)
       if (reduced[i] >= 0)
         a[i] = a_massive[reduced[i]];
-    balance.strain  = strain_energy();
-    balance.kinetic = kinetic_energy();
-    balance.initial = balance.strain + balance.kinetic;
   }
 
   void

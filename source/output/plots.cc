@@ -19,6 +19,25 @@ namespace poundfe
         out += (c == '\'') ? std::string("''") : std::string(1, c);
       return out + "'";
     }
+
+    /// Title, labels, scales and the plot command of one panel.
+    void
+    write_panel(std::ostream &script, const Plot &plot)
+    {
+      script << "set title " << quoted(plot.title) << " noenhanced\n"
+             << "set xlabel " << quoted(plot.x_label) << "\n"
+             << "set ylabel " << quoted(plot.y_label) << "\n"
+             << (plot.log_y ? "set logscale y\n" : "unset logscale y\n")
+             << (plot.style_fill ? "set style fill solid 0.5 border\n" : "set style fill empty\n")
+             << "plot ";
+      for (std::size_t i = 0; i < plot.series.size(); ++i)
+        {
+          const PlotSeries &s = plot.series[i];
+          script << (i ? ", " : "") << quoted(s.data_file) << " using " << s.using_spec
+                 << " with " << s.style << " title " << quoted(s.title) << " noenhanced";
+        }
+      script << "\n";
+    }
   } // namespace
 
   std::vector<std::string>
@@ -33,24 +52,19 @@ namespace poundfe
         return written;
       }
     std::ostringstream script;
-    script << "set datafile separator ','\nset key autotitle columnhead\n"
-           << "set terminal pngcairo size 900,600 enhanced font 'Sans,11'\nset grid\n";
+    script << "set datafile separator ','\nset key autotitle columnhead\nset grid\n";
     for (const Plot &plot : plots)
       {
-        script << "set output " << quoted(plot.file + ".tmp") << "\n"
-               << "set title " << quoted(plot.title) << " noenhanced\n"
-               << "set xlabel " << quoted(plot.x_label) << "\n"
-               << "set ylabel " << quoted(plot.y_label) << "\n"
-               << (plot.log_y ? "set logscale y\n" : "unset logscale y\n")
-               << (plot.style_fill ? "set style fill solid 0.5 border\n" : "set style fill empty\n")
-               << "plot ";
-        for (std::size_t i = 0; i < plot.series.size(); ++i)
-          {
-            const PlotSeries &s = plot.series[i];
-            script << (i ? ", " : "") << quoted(s.data_file) << " using " << s.using_spec
-                   << " with " << s.style << " title " << quoted(s.title) << " noenhanced";
-          }
-        script << "\nunset output\n";
+        const std::size_t n_panels = 1 + plot.below.size();
+        script << "set terminal pngcairo size 900," << 600 + 300 * (n_panels - 1)
+               << " enhanced font 'Sans,11'\n"
+               << "set output " << quoted(plot.file + ".tmp") << "\n";
+        if (n_panels > 1)
+          script << "set multiplot layout " << n_panels << ",1\n";
+        write_panel(script, plot);
+        for (const Plot &panel : plot.below)
+          write_panel(script, panel);
+        script << (n_panels > 1 ? "unset multiplot\n" : "") << "unset output\n";
       }
     const std::string script_file = directory + "/.plots.gp";
     write_file_atomically(script_file, script.str());

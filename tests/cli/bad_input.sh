@@ -2,6 +2,7 @@
 # Every bad-input class: exit status 1, one message naming the file and what
 # was wrong (the '# expect:' line of each file), and no output directory.
 # A missing parameter file, and a numerical failure (exit 2), as well.
+# A file's '# command:' line names the command to run it with (run by default).
 set -u
 poundfe=$1
 dir=$2
@@ -9,9 +10,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 check() { # file expected_status expected_text
-  local file=$1 status=$2 text=$3 out="$work/out"
+  local file=$1 status=$2 text=$3 out="$work/out" command
+  command=$(sed -n 's/^# command: //p' "$file" 2> /dev/null)
   rm -rf "$out"
-  "$poundfe" run "$file" --output "$out" > "$work/stdout" 2> "$work/stderr"
+  "$poundfe" "${command:-run}" "$file" --output "$out" > "$work/stdout" 2> "$work/stderr"
   local got=$?
   local message
   message=$(cat "$work/stderr")

@@ -7,7 +7,9 @@
 #  - the frictionless SD oscillator (alpha = 0.4) against its exact
 #    Fokker-Planck density: histograms of x and v bin by bin within 4
 #    standard errors of the scatter of the realizations; two peaks at
-#    +-sqrt(1 - alpha^2) within one bin;
+#    +-sqrt(1 - alpha^2) within one bin; over alpha = 0.4, 0.5, 1.2, 1.5 (a
+#    sweep) two peaks below alpha = 1 and one above, the change between 0.5
+#    and 1.2 (exact: alpha = 1);
 #  - mpirun -np 2 gives byte-identical pdf.csv, joint_pdf.csv and
 #    realizations, and the summary of one rank;
 #  - SIGINT stops a run after the realizations under way (exit status 130,
@@ -27,6 +29,15 @@ python3 "$here/stationary_pdf_check.py" "$work/one" linear 0.1 1 1
 for f in pdf.png joint_pdf.png; do [ -s "$work/one/$f" ] || fail "no $f"; done
 "$poundfe" stationary-pdf "$sd" --output "$work/sd" > /dev/null
 python3 "$here/stationary_pdf_check.py" "$work/sd" sd 0.05 0.25 0.4
+# P-bifurcation over alpha (the SD spring's H): 8 realizations per value
+sed 's/  set Bins                   = 40/  set Bins = 40\n  set Parameter = Springs\/SD springs:6\n  set Values = 0.4, 0.5, 1.2, 1.5/
+     s/set Number of realizations = 32/set Number of realizations = 8/' "$sd" > "$work/alpha.prm"
+"$poundfe" stationary-pdf "$work/alpha.prm" --output "$work/alpha" > /dev/null
+python3 "$here/stationary_pdf_check.py" "$work/alpha" p-bifurcation 0.4 0.5 1.2 1.5
+for f in p_bifurcation.csv p_bifurcation_density.csv p_bifurcation.png; do
+  [ -s "$work/alpha/$f" ] || fail "P-bifurcation: no $f"
+done
+[ "$(wc -l < "$work/alpha/p_bifurcation.csv")" -eq 5 ] || fail "P-bifurcation: not 4 rows"
 
 "$mpirun" -np 2 "$poundfe" stationary-pdf "$input" --output "$work/two" > /dev/null
 for f in pdf.csv joint_pdf.csv; do
@@ -81,3 +92,5 @@ expect_bad "needs 4 values" "$(bad range 's/set Bins                   = 40/set 
 expect_bad "must be a whole number of time steps" \
   "$(bad interval 's/set Sample interval        = 0.1/set Sample interval = 0.07/')"
 expect_bad "needs random loading" "$(bad none 's/set Type = white-noise/set Type = none/')"
+expect_bad "a P-bifurcation needs at least 2 values" \
+  "$(bad one-value 's/set Bins                   = 40/set Parameter = Ground motion\/Stochastic\/D\n  set Values = 0.1/')"

@@ -3,6 +3,7 @@
 
 usage: stationary_pdf_check.py DIR linear D c omega0
        stationary_pdf_check.py DIR sd D c alpha
+       stationary_pdf_check.py DIR p-bifurcation alpha1 alpha2 ...
 
 The number of effectively independent samples is N_eff = T / (2 tau_c),
 T the sampled time summed over the realizations and tau_c the correlation
@@ -156,7 +157,31 @@ def sd(directory, D, c, alpha):
     print("ok   SD x: peaks %s (exact +-%.4f, within one bin = %.3f)" % (["%.3f" % p for p in peaks], expected, w))
 
 
+def p_bifurcation(directory, *alphas):
+    """The SD oscillator's p(x) is bimodal exactly when alpha < 1 (U''(0) =
+    1 - 1/alpha): the number of peaks per value, peaks of the bimodal values
+    at +-sqrt(1 - alpha^2) within one bin, and the one change bracketing 1."""
+    with open(directory + "/summary.json") as f:
+        summary = json.load(f)
+    got = [v["n_peaks"] for v in summary["values"]]
+    expected = [2 if a < 1 else 1 for a in alphas]
+    if got != expected:
+        fail("P-bifurcation: peaks %s at alpha %s, expected %s" % (got, list(alphas), expected))
+    for a, v in zip(alphas, summary["values"]):
+        with open("%s/Springs_SD_springs_6_%s/pdf.csv" % (directory, v["value"] if v["value"] != int(v["value"]) else int(v["value"]))) as f:
+            rows = list(csv.DictReader(f))
+        w = float(rows[1]["x_m"]) - float(rows[0]["x_m"])
+        target = [-math.sqrt(1 - a * a), math.sqrt(1 - a * a)] if a < 1 else [0.0]
+        if any(abs(p - t) > w for p, t in zip(v["peak_locations"], target)):
+            fail("P-bifurcation: alpha %g: peaks %s, exact %s (one bin %.3f)" % (a, v["peak_locations"], target, w))
+    changes = summary["peak_count_changes"]
+    if len(changes) != 1 or not (changes[0]["between"][0] < 1 < changes[0]["between"][1]):
+        fail("P-bifurcation: changes %s, expected one bracketing alpha = 1" % changes)
+    print("ok   P-bifurcation: peaks %s at alpha %s (exact: 2 below 1, 1 above), change between %s" %
+          (got, list(alphas), changes[0]["between"]))
+
+
 if __name__ == "__main__":
     kind, directory = sys.argv[2], sys.argv[1]
     values = [float(v) for v in sys.argv[3:]]
-    linear(directory, *values) if kind == "linear" else sd(directory, *values)
+    {"linear": linear, "sd": sd, "p-bifurcation": p_bifurcation}[kind](directory, *values)

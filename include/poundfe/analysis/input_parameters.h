@@ -5,8 +5,10 @@
 #ifndef poundfe_analysis_input_parameters_h
 #define poundfe_analysis_input_parameters_h
 
+#include <poundfe/analysis/bifurcation.h>
 #include <poundfe/analysis/reliability_parameters.h>
 #include <poundfe/analysis/stationary_pdf_parameters.h>
+#include <poundfe/analysis/sweep.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/excitation/excitation_parameters.h>
 #include <poundfe/integration/time_integration_parameters.h>
@@ -17,6 +19,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -25,6 +28,16 @@ namespace dealii
 
 namespace poundfe
 {
+  /// A change to a parameter file's value applied before the file is checked:
+  /// path "Section/Subsection/Entry" names a numeric entry; "Section/Entry:k"
+  /// the k-th (1-based) whitespace-separated field of the first ';'-separated
+  /// item of a list entry (e.g. "Nodal forces/Harmonic:5", the amplitude).
+  struct ParameterOverride
+  {
+    std::string path;
+    std::string value;
+  };
+
   struct InputParameters : InputFile
   {
     ModelParameters           model;       // Model, Building <i>
@@ -39,6 +52,10 @@ namespace poundfe
     SubsetParameters          subset;
     FragilityParameters       fragility;
     StationaryPdfParameters   stationary_pdf;
+    SweepParameters           sweep;
+    BifurcationParameters     bifurcation;
+    /// The overrides the file was read with (a sweep adds its own to them).
+    std::vector<ParameterOverride> overrides;
 
     /// Declare every section, with `model.buildings.size()` buildings.
     void declare(dealii::ParameterHandler &prm);
@@ -49,6 +66,13 @@ namespace poundfe
 
   /// Read and check a .prm or .json file. Throws InputError.
   InputParameters read_parameters(const std::string &file);
+
+  /// Read a .prm or .json file, set the overrides (in order, each through
+  /// the entry's pattern), then check everything as for the file alone. An
+  /// unknown path or a value the entry refuses is an InputError naming the
+  /// path. (Used by sweeps: one InputParameters per swept value.)
+  InputParameters read_parameters(const std::string &file,
+                                  const std::vector<ParameterOverride> &overrides);
 
   /// Print every parameter with its documentation and default.
   void print_parameters(std::ostream &out);

@@ -3,6 +3,7 @@
 #ifndef poundfe_analysis_stationary_pdf_parameters_h
 #define poundfe_analysis_stationary_pdf_parameters_h
 
+#include <poundfe/analysis/sweep.h>
 #include <poundfe/base/input_file.h>
 
 #include <string>
@@ -27,6 +28,8 @@ namespace poundfe
     double              omega          = 0; // rad/s; 0: the first natural frequency
     std::vector<double> bandwidths{0.0};  // x, v, a (one for all); 0: Silverman's rule
     double              peak_threshold = 0.05;
+    /// P-bifurcation: `Parameter` and `Values` of this section; empty: one run.
+    SweepParameters sweep{"Stationary PDF"};
 
     /// Declare the section (entered and left here).
     void declare(dealii::ParameterHandler &prm);

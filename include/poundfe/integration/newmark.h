@@ -114,6 +114,12 @@ namespace poundfe
     void initialize(const Vector &load, const Vector &u0, const Vector &v0);
     /// Start from rest.
     void initialize(const Vector &load);
+    /// Continue from (u_new, v_new) at the current time under p = load
+    /// (e.g. a perturbed trajectory renormalised for a Lyapunov exponent):
+    /// time, statistics, energy terms and each element's history are kept,
+    /// the elements are set to the new state and committed, and a is the
+    /// consistent acceleration, as initialize() computes a_0.
+    void restart(const Vector &load, const Vector &u_new, const Vector &v_new);
 
     /// Advance one step to t + dt, cutting it if Newton fails; `load(t, p)`
     /// gives p at any time in the step. Throws NumericalError (with the
@@ -170,6 +176,9 @@ namespace poundfe
     void   advance_from(unsigned int cuts, double t0, const LoadFunction &load);
     bool   evaluate_elements(const Vector &u_trial, const Vector &v_trial, const Level &L);
     void   update_energy_error();
+    /// a from M a = p - C v - K u - f(u, v) at the current u, v (the
+    /// elements set to them and committed); massless equations get a = 0.
+    void   set_consistent_acceleration(const Vector &load);
     /// local_u, local_v: the elements' local vectors (0 on ground DOFs).
     void   gather(const Vector &u_global, const Vector &v_global);
     /// r -= sum_e (f_e - K_ref,e u_e) at the last evaluated trial state.

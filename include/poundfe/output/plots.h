@@ -23,6 +23,9 @@ namespace poundfe
     std::vector<PlotSeries> series;
     bool                    log_y      = false;
     bool                    style_fill = false; // filled boxes (histograms)
+    /// Panels drawn under this one in the same PNG (gnuplot multiplot, one
+    /// column); their own `file` and `below` are not used.
+    std::vector<Plot>       below{};
   };
 
   /// Draw the plots; returns the files written. Writes each PNG atomically.

@@ -1,0 +1,79 @@
+// Bifurcation diagrams (analysis/bifurcation.h) against independent
+// references:
+//  - the period classification of constructed sequences (period 1, 2, 3,
+//    quasi-periodic);
+//  - a linear damped oscillator m x'' + c x' + k x = F sin(w t): its steady
+//    state x(t) = X sin(w t - phi), X = F / sqrt((k - m w^2)^2 + (c w)^2),
+//    phi = atan2(c w, k - m w^2) (Chopra, Dynamics of Structures, §3.2), so
+//    every Poincaré sample is x(k T) = -X sin(phi) and the response is
+//    period 1; its largest Lyapunov exponent is the decay rate of free
+//    vibration, -zeta w0 = -c / (2 m).
+#include <poundfe/analysis/bifurcation.h>
+#include <poundfe/analysis/input_parameters.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace poundfe;
+
+BOOST_AUTO_TEST_CASE(poincare_period_of_constructed_sequences)
+{
+  std::vector<double> one(40, 0.3), two, three, quasi;
+  for (unsigned int k = 0; k < 40; ++k)
+    {
+      two.push_back(k % 2 ? 1.0 : -0.5);
+      three.push_back(std::vector<double>{0.1, 0.7, -0.2}[k % 3]);
+      quasi.push_back(std::sin(k * std::sqrt(2.0))); // never repeats
+    }
+  BOOST_TEST(poincare_period(one, 0) == 1u);
+  BOOST_TEST(poincare_period(two, 1e-12) == 2u);
+  BOOST_TEST(poincare_period(three, 1e-12) == 3u);
+  BOOST_TEST(poincare_period(quasi, 1e-6) == 0u);
+  // a perturbation above the tolerance breaks the period, below it does not
+  two[31] += 2e-6;
+  BOOST_TEST(poincare_period(two, 1e-6) == 0u);
+  BOOST_TEST(poincare_period(two, 1e-5) == 2u);
+  // period n needs 2 n samples
+  BOOST_TEST(poincare_period(std::vector<double>(three.begin(), three.begin() + 5), 1e-12) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(linear_oscillator_is_period_one_at_its_steady_state)
+{
+  // input/linear-bifurcation.prm: the oscillator and the force
+  const double m = 1000, k = 1e5, c = 1000, F = 1000;
+  const std::string     file  = "input/linear-bifurcation.prm";
+  const InputParameters input = read_parameters(file, {{"Bifurcation/Sampled periods", "128"}});
+  const BuildingParameters &b = input.model.buildings.at(0);
+  BOOST_TEST_REQUIRE(b.floor_masses == std::vector<double>{m});
+  BOOST_TEST_REQUIRE(b.storey_stiffnesses == std::vector<double>{k});
+  BOOST_TEST_REQUIRE(b.storey_damping == std::vector<double>{c});
+  BOOST_TEST_REQUIRE(input.nodal_forces.harmonic.at(0).find("1 1 0 ux 1000 ") == 0u);
+  BOOST_TEST_REQUIRE(input.bifurcation.sweep.parameter == "Nodal forces/Harmonic:6");
+
+  const double w0 = std::sqrt(k / m), zeta = c / (2 * std::sqrt(k * m));
+  for (const double w : {5.0, 9.5, 10.0, 12.0, 15.0})
+    {
+      const BifurcationPoint point = bifurcation_point(input, w);
+      const double X   = F / std::hypot(k - m * w * w, c * w);
+      const double phi = std::atan2(c * w, k - m * w * w);
+      // Newmark's (trapezoidal) frequency error (w dt)^2 / 12 at the larger
+      // of w and w0, amplified at most 1 / (2 zeta) near resonance; twice that.
+      const double dt = point.time_step, w_max = std::max(w, w0);
+      const double tolerance = 2 * (w_max * dt) * (w_max * dt) / 12 / (2 * zeta) * X;
+      BOOST_TEST(point.completed);
+      BOOST_TEST(point.forcing_period == 2 * M_PI / w, boost::test_tools::tolerance(1e-14));
+      BOOST_TEST(std::abs(point.forcing_period / dt - std::round(point.forcing_period / dt)) < 1e-9);
+      BOOST_TEST(point.period == 1u, "w = " << w);
+      BOOST_TEST_REQUIRE(point.samples.size() == 128u);
+      for (const double x : point.samples)
+        BOOST_TEST(std::abs(x - (-X * std::sin(phi))) <= tolerance,
+                   "w = " << w << ": " << x << " against " << -X * std::sin(phi));
+      // the range of x(t) over the sampled periods is 2 X
+      BOOST_TEST(std::abs(point.response_range - 2 * X) <= 2 * tolerance + 0.01 * X);
+      // Benettin's estimate over 128 periods: 3 %
+      BOOST_TEST(point.lyapunov_exponent == -zeta * w0, boost::test_tools::tolerance(0.03));
+    }
+}
