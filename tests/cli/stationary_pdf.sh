@@ -27,6 +27,16 @@ set -m # background jobs receive SIGINT
 "$poundfe" stationary-pdf "$input" --output "$work/one" > /dev/null
 python3 "$here/stationary_pdf_check.py" "$work/one" linear 0.1 1 1
 for f in pdf.png joint_pdf.png; do [ -s "$work/one/$f" ] || fail "no $f"; done
+# a given Range: the grid is that range, and the estimates still match
+sed 's/  set Bins                   = 40/  set Bins = 32\n  set Range = -1.6, 1.6, -2, 2/' "$input" > "$work/given-range.prm"
+"$poundfe" stationary-pdf "$work/given-range.prm" --output "$work/given-range" > /dev/null
+python3 "$here/stationary_pdf_check.py" "$work/given-range" linear 0.1 1 1 > /dev/null
+# first bin centres: low + width/2 of x, v and a (a: 0 .. sqrt(1.6^2 + 2^2/omega^2), omega = 1)
+sed -n 2p "$work/given-range/pdf.csv" | awk -F, '{
+  x = -1.6 + 3.2 / 64; v = -2 + 4 / 64; a = sqrt(1.6^2 + 2^2) / 64
+  exit !(($1 - x)^2 + ($4 - v)^2 + ($7 - a)^2 < 1e-24) }' ||
+  fail "Range: first bin centres $(sed -n 2p "$work/given-range/pdf.csv" | cut -d, -f1,4,7)"
+echo "ok   a given Range: the bins span it (x, v, and a to its corner), estimates match"
 "$poundfe" stationary-pdf "$sd" --output "$work/sd" > /dev/null
 python3 "$here/stationary_pdf_check.py" "$work/sd" sd 0.05 0.25 0.4
 # P-bifurcation over alpha (the SD spring's H): 8 realizations per value
@@ -38,6 +48,11 @@ for f in p_bifurcation.csv p_bifurcation_density.csv p_bifurcation.png; do
   [ -s "$work/alpha/$f" ] || fail "P-bifurcation: no $f"
 done
 [ "$(wc -l < "$work/alpha/p_bifurcation.csv")" -eq 5 ] || fail "P-bifurcation: not 4 rows"
+"$mpirun" -np 2 "$poundfe" stationary-pdf "$work/alpha.prm" --output "$work/alpha-two" > /dev/null
+for f in p_bifurcation.csv p_bifurcation_density.csv; do
+  cmp -s "$work/alpha/$f" "$work/alpha-two/$f" || fail "P-bifurcation -np 2: $f differs from one rank"
+done
+echo "ok   P-bifurcation -np 2: p_bifurcation.csv and p_bifurcation_density.csv of one rank"
 
 "$mpirun" -np 2 "$poundfe" stationary-pdf "$input" --output "$work/two" > /dev/null
 for f in pdf.csv joint_pdf.csv; do
