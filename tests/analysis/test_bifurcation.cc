@@ -13,6 +13,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -76,4 +77,43 @@ BOOST_AUTO_TEST_CASE(linear_oscillator_is_period_one_at_its_steady_state)
       // Benettin's estimate over 128 periods: 3 %
       BOOST_TEST(point.lyapunov_exponent == -zeta * w0, boost::test_tools::tolerance(0.03));
     }
+}
+
+BOOST_AUTO_TEST_CASE(continuation_starts_from_the_previous_final_state)
+{
+  // Without a transient, the second of two equal values continued from the
+  // first goes on along the same trajectory: its samples are samples
+  // K+1..2K of one run of 2K periods from rest (the reference). Without
+  // continuation it starts again from rest: its samples are the first
+  // run's. Tolerance: round-off over 2K periods (the restart at t = 0
+  // instead of K T changes sin(w t) by ~1e-15 and recomputes a from
+  // equilibrium, which linear Newmark satisfies at every step).
+  const std::string file = "input/linear-bifurcation.prm";
+  const unsigned int K = 16;
+  const InputParameters twice = read_parameters(
+    file, {{"Bifurcation/Values", "8, 8"}, {"Bifurcation/Transient periods", "0"},
+           {"Bifurcation/Sampled periods", std::to_string(K)},
+           {"Bifurcation/Lyapunov exponent", "false"}, {"Bifurcation/Continuation", "true"}});
+  const std::vector<BifurcationPoint> continued = bifurcation_points(twice);
+  const BifurcationPoint long_run = bifurcation_point(
+    read_parameters(file, {{"Bifurcation/Transient periods", "0"},
+                           {"Bifurcation/Sampled periods", std::to_string(2 * K)},
+                           {"Bifurcation/Lyapunov exponent", "false"}}),
+    8);
+  BOOST_TEST_REQUIRE(continued.size() == 2u);
+  BOOST_TEST_REQUIRE(long_run.samples.size() == 2 * K);
+  const double scale = *std::max_element(long_run.samples.begin(), long_run.samples.end());
+  for (unsigned int k = 0; k < K; ++k)
+    {
+      BOOST_TEST(std::abs(continued[0].samples[k] - long_run.samples[k]) <= 1e-12 * scale);
+      BOOST_TEST(std::abs(continued[1].samples[k] - long_run.samples[K + k]) <= 1e-10 * scale);
+    }
+  // the transient is still decaying: the continued samples differ from the first run's
+  BOOST_TEST(std::abs(continued[1].samples[0] - continued[0].samples[0]) > 1e-6 * scale);
+
+  std::vector<ParameterOverride> overrides = twice.overrides;
+  overrides.push_back({"Bifurcation/Continuation", "false"});
+  const std::vector<BifurcationPoint> from_rest = bifurcation_points(read_parameters(file, overrides));
+  for (unsigned int k = 0; k < K; ++k)
+    BOOST_TEST(from_rest[1].samples[k] == from_rest[0].samples[k]);
 }
