@@ -5,19 +5,46 @@
 
 #include <deal.II/base/timer.h>
 
+#include <cmath>
 #include <unistd.h>
 
 namespace poundfe
 {
+  namespace
+  {
+    /// A friction element's automatic stick stiffness (0 in the input):
+    /// 1e4 times the linear stiffness at its node, so stick deflects
+    /// 1e-4 of what the structure does under the same force; and its stick
+    /// dashpot, critical for the node's mass on the stick spring.
+    void
+    set_stick_stiffnesses(const InputFile &input, const LinearSystem &system, Model &model)
+    {
+      for (FrictionSurface &surface : model.friction_surfaces)
+        {
+          FrictionLawParameters &law      = surface.law;
+          const int equation = model.equation(Model::dof(surface.node, Component::ux));
+          if (law.stick_stiffness == 0)
+            law.stick_stiffness = 1e4 * system.stiffness.coeff(equation, equation);
+          if (!(law.stick_stiffness > 0))
+            input.fail("Friction/Stick stiffness",
+                       surface.label + ": no linear stiffness at the node to take the "
+                                       "automatic stick stiffness from; give one");
+          law.stick_damping =
+            2 * std::sqrt(law.stick_stiffness * system.mass.coeff(equation, equation));
+        }
+    }
+  } // namespace
+
   Analysis
   prepare_analysis(const InputParameters &input)
   {
     Analysis analysis;
     analysis.input  = input;
-    analysis.model  = build_model(input.model, input.contact, input);
+    analysis.model  = build_model(input.model, input.contact, input, input.springs, input.friction);
     analysis.system = assemble_mass_and_stiffness(analysis.model);
     const Model  &model  = analysis.model;
     LinearSystem &system = analysis.system;
+    set_stick_stiffnesses(input, system, analysis.model);
 
     std::vector<std::array<double, 2>> coefficients;
     for (unsigned int b = 0; b < model.buildings.size(); ++b)

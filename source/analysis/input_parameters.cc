@@ -200,6 +200,12 @@ namespace poundfe
     contact.declare(prm);
     time_integration.declare_event_refinement(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Springs");
+    springs.declare(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Friction");
+    friction.declare(prm);
+    prm.leave_subsection();
     nodal_forces.declare(prm);
     time_integration.declare(prm);
     output.declare(prm);
@@ -224,6 +230,7 @@ namespace poundfe
     ground_motion.check(*this, time_integration.newmark.time_step);
     time_integration.check(*this);
     contact.check(*this);
+    friction.check(*this);
     monte_carlo.check(*this);
     subset.check(*this, model);
     fragility.check(*this);

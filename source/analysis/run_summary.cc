@@ -1,4 +1,5 @@
 #include <poundfe/analysis/run_summary.h>
+#include <poundfe/output/stick_slip_report.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/peak_response.h>
@@ -34,6 +35,12 @@ namespace poundfe
                     "peak_force_N"};
           case ElementKind::gap:
             return {"gap", "yield_deformation_m", "peak_penetration_m", "peak_plastic_m",
+                    "peak_force_N"};
+          case ElementKind::spring:
+            return {"spring", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
+                    "peak_force_N"};
+          case ElementKind::friction:
+            return {"friction", "yield_deformation_m", "peak_displacement_m", "peak_slip_m",
                     "peak_force_N"};
         }
       throw std::logic_error("units_of: unknown element kind");
@@ -96,6 +103,8 @@ namespace poundfe
     write_profiles();
     if (!analysis.model.gaps.empty())
       write_impacts(state);
+    if (!analysis.model.friction_surfaces.empty())
+      write_friction_episodes(directory, state, status.end_time);
     write_json(state, status);
     if (plots)
       draw(state);
@@ -200,7 +209,7 @@ namespace poundfe
     json.end_array();
 
     const unsigned int n_hysteretic = peaks.n_hysteretic();
-    const unsigned int n_gaps       = state.elements.size() - n_hysteretic;
+    const unsigned int n_gaps       = peaks.n_gaps();
     if (n_hysteretic > 0)
       {
         json.begin_array("hinges");
@@ -261,6 +270,7 @@ namespace poundfe
           }
         json.end_array();
       }
+    write_springs_and_friction(json, state, peaks, status.end_time);
     const EnergyBalance energy = state.energy();
     json.begin_object("energy")
       .value("initial_J", energy.initial)
@@ -270,6 +280,8 @@ namespace poundfe
       .value("strain_J", energy.strain)
       .value("hysteretic_J", energy.hysteretic)
       .value("contact_J", energy.contact)
+      .value("friction_J", energy.friction)
+      .value("belt_J", energy.belt)
       .value("max_relative_balance_error", state.max_energy_error())
       .end_object();
     const IterationStatistics &stats = state.statistics();
@@ -340,6 +352,9 @@ namespace poundfe
         const char *terms[] = {"input", "kinetic", "damping", "strain", "hysteretic", "contact"};
         for (unsigned int i = 0; i < 6; ++i)
           energy.series.push_back({"energy.csv", "1:" + std::to_string(i + 2), terms[i], "lines"});
+        if (!model.friction_surfaces.empty()) // columns 9, 10: after the balance error
+          for (const auto &[column, term] : {std::pair{9, "friction"}, std::pair{10, "belt"}})
+            energy.series.push_back({"energy.csv", "1:" + std::to_string(column), term, "lines"});
         all.push_back(energy);
       }
     // Hysteresis loops of the (up to four) most demanded elements.

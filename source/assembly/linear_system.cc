@@ -77,6 +77,10 @@ namespace poundfe
       }
     for (const StoreyLink &link : model.links)
       scatter(model, link_dofs(link), two_node_spring(link.stiffness), k_triplets);
+    // The linear part of the nonlinear springs to the ground (SD: K, Duffing: k1).
+    for (const Spring &spring : model.springs)
+      scatter(model, {Model::dof(spring.node, Component::ux)},
+              Eigen::Matrix<double, 1, 1>(spring.law.stiffness), k_triplets);
     // Hinges enter with their initial stiffness: the linear part of K (and of
     // stiffness-proportional damping) is the elastic structure.
     for (const Hinge &hinge : model.hinges)

@@ -2,6 +2,8 @@
 #include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/laws/bouc_wen.h>
 #include <poundfe/laws/contact_law.h>
+#include <poundfe/laws/elastic_springs.h>
+#include <poundfe/laws/friction.h>
 
 namespace poundfe
 {
@@ -39,6 +41,18 @@ namespace poundfe
         law.effective_mass       = gap.effective_mass;
         elements.emplace_back<UniaxialElement>(ElementKind::gap, gap.buildings[0], gap.label,
                                                equations, make_contact_law(law));
+      }
+    for (const Spring &spring : model.springs)
+      elements.emplace_back<UniaxialElement>(
+        ElementKind::spring, spring.building, spring.label,
+        std::array<int, 2>{{model.equation(Model::dof(spring.node, Component::ux)), -1}},
+        std::make_unique<ElasticSpring>(spring.law), spring.law.stiffness);
+    for (const FrictionSurface &surface : model.friction_surfaces)
+      {
+        const int equation = model.equation(Model::dof(surface.node, Component::ux));
+        elements.emplace_back<UniaxialElement>(ElementKind::friction, surface.building,
+                                               surface.label, std::array<int, 2>{{equation, -1}},
+                                               std::make_unique<Friction>(surface.law));
       }
     return elements;
   }

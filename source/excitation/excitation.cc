@@ -1,5 +1,6 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/excitation/excitation.h>
+#include <poundfe/model/model_builder.h>
 #include <poundfe/excitation/records.h>
 #include <poundfe/excitation/stochastic.h>
 
@@ -118,25 +119,14 @@ namespace poundfe
   find_node_dof(const InputFile &input, const Model &model, std::istringstream &fields,
                 const std::string &path, const std::string &entry)
   {
-    const int    line = input.line_of(path);
-    unsigned int building = 0, floor = 0, node = 0;
-    std::string  dof;
-    if (!(fields >> building >> floor >> node >> dof))
+    const FloorNode at =
+      read_floor_node(input, model, fields, path, entry, "building floor node dof ...");
+    const int   line = input.line_of(path);
+    std::string dof;
+    Component   c;
+    if (!(fields >> dof))
       throw InputError(input.file, line, path,
                        "'" + entry + "': expected 'building floor node dof ...'");
-    if (building < 1 || building > model.buildings.size())
-      throw InputError(input.file, line, path,
-                       "'" + entry + "': building must be 1.." + std::to_string(model.buildings.size()));
-    const Building &b = model.buildings[building - 1];
-    if (floor < 1 || floor > b.floors.size())
-      throw InputError(input.file, line, path,
-                       "'" + entry + "': floor must be 1.." + std::to_string(b.floors.size()) +
-                         " (forces on the base act on supports)");
-    const Floor &f = b.floors[floor - 1];
-    if (node >= f.nodes.size())
-      throw InputError(input.file, line, path,
-                       "'" + entry + "': node must be 0.." + std::to_string(f.nodes.size() - 1));
-    Component c;
     if (dof == "ux")
       c = Component::ux;
     else if (dof == "uy")
@@ -145,12 +135,10 @@ namespace poundfe
       c = Component::rz;
     else
       throw InputError(input.file, line, path, "'" + entry + "': dof must be ux, uy or rz");
-    const int equation = model.equation(Model::dof(f.nodes[node], c));
+    const int equation = model.equation(Model::dof(at.node, c));
     if (equation < 0)
       throw InputError(input.file, line, path, "'" + entry + "': that DOF is fixed");
-    return {static_cast<unsigned int>(equation),
-            b.name + " floor " + std::to_string(floor) + " node " + std::to_string(node) +
-              " " + dof};
+    return {static_cast<unsigned int>(equation), at.label + " " + dof};
   }
 
   namespace

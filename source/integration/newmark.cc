@@ -60,6 +60,11 @@ namespace poundfe
         symmetric = symmetric && e.has_symmetric_tangent();
         if (e.kind == ElementKind::gap)
           gap_elements.push_back(h);
+        if (e.kind == ElementKind::friction)
+          friction_elements.push_back(h);
+        if (e.kind == ElementKind::gap || e.kind == ElementKind::friction ||
+            e.kind == ElementKind::spring)
+          event_elements.push_back(h);
       }
     // auto: Woodbury while its dense capacitance matrix, of size the total
     // rank (one per uniaxial element), stays small.
@@ -77,7 +82,7 @@ namespace poundfe
     for (Vector *x : {&local_u, &local_v, &correction})
       x->setZero(dof_start.back());
     tangent_change.assign(d_start.back(), 0.0);
-    for (auto *x : {&work, &committed_force, &committed_history, &committed_rate})
+    for (auto *x : {&work, &supplied_work, &committed_force, &committed_history, &committed_rate})
       x->assign(n_elements, 0.0);
     level(0);
   }
@@ -191,6 +196,8 @@ namespace poundfe
     stats.smallest_time_step = parameters.time_step;
     balance           = EnergyBalance();
     impacts.reset(n_elements);
+    stick_slip.reset(n_elements);
+    std::fill(supplied_work.begin(), supplied_work.end(), 0.0);
     energy_scale      = 0;
     max_balance_error = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
@@ -353,7 +360,15 @@ namespace poundfe
       }
 
     const NewtonParameters &newton = parameters.newton;
-    u_next                         = u; // predictor
+    // Predictor: the last displacement; with friction, the last velocity
+    // carried over the step, so a mass stuck to a moving belt starts its
+    // iteration stuck (from u_n its stick spring would see the belt's whole
+    // step, v0 dt, and the first iterate would break away; with static >
+    // kinetic friction the slip it starts can be a converged discrete
+    // solution too, and the mass would break away early).
+    u_next = u;
+    if (!friction_elements.empty())
+      u_next.noalias() += L.dt * v;
     double first_residual = 0, first_energy = 0;
     for (unsigned int it = 0;; ++it)
       {
@@ -459,6 +474,13 @@ namespace poundfe
                        {committed_history[h], committed_rate[h], committed_force[h]},
                        {e.history_variable(), e.deformation(v_next), e.force()});
       }
+    for (const unsigned int h : friction_elements)
+      {
+        const NonlinearElement &e = (*elements)[h];
+        stick_slip.record(h, current_time, current_time + L.dt,
+                          {e.was_active(), committed_rate[h]},
+                          {e.is_active(), e.deformation(v_next)});
+      }
     // Trapezoidal work of the step; exact for the average-acceleration rule.
     work_vector = u_next - u;
     balance.input += 0.5 * work_vector.dot(load_now + p);
@@ -469,6 +491,8 @@ namespace poundfe
       {
         NonlinearElement &e = (*elements)[h];
         work[h] += e.work_increment();
+        supplied_work[h] += e.supplied_work_increment();
+        balance.belt += e.supplied_work_increment();
         e.commit();
         committed_force[h]   = e.force();
         committed_history[h] = e.history_variable();
@@ -490,11 +514,13 @@ namespace poundfe
     const double t1 = (cuts == 0) ? (step_count + 1) * parameters.time_step : t0 + L.dt;
     Vector &p = L.load_end; // no allocation per step
     load(t1, p);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      (*elements)[h].set_trial_time(t1);
     const bool converged = try_step(L, p);
     bool       event     = false;
     if (converged && cuts < parameters.newton.event_refinement)
-      for (const unsigned int h : gap_elements)
-        event = event || (*elements)[h].is_active() != (*elements)[h].was_active();
+      for (const unsigned int h : event_elements)
+        event = event || (*elements)[h].phase() != (*elements)[h].committed_phase();
     if (converged && !event)
       {
         accept(L, p);
@@ -542,17 +568,25 @@ namespace poundfe
   {
     balance.kinetic = kinetic_energy();
     balance.strain  = strain_energy();
-    double dissipated_hysteretic = 0, dissipated_contact = 0;
+    balance.hysteretic = balance.contact = balance.friction = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         const NonlinearElement &e          = (*elements)[h];
-        const double            dissipated = work[h] - e.stored_energy();
-        (e.kind == ElementKind::gap ? dissipated_contact : dissipated_hysteretic) += dissipated;
+        const double dissipated = work[h] - e.stored_energy() + supplied_work[h];
+        switch (e.kind)
+          {
+            case ElementKind::gap:
+              balance.contact += dissipated;
+              break;
+            case ElementKind::friction:
+              balance.friction += dissipated;
+              break;
+            default: // hinges, storeys; elastic springs dissipate nothing
+              balance.hysteretic += dissipated;
+          }
       }
-    balance.hysteretic = dissipated_hysteretic;
-    balance.contact    = dissipated_contact;
-    const double sum   = balance.stored_and_dissipated();
-    const double supplied = balance.initial + balance.input;
+    const double sum      = balance.stored_and_dissipated();
+    const double supplied = balance.supplied();
     energy_scale          = std::max({energy_scale, std::abs(supplied), sum});
     if (energy_scale > 0)
       max_balance_error = std::max(max_balance_error, std::abs(supplied - sum) / energy_scale);

@@ -599,7 +599,8 @@ namespace poundfe
 
   Model
   build_model(const ModelParameters &parameters, const ContactParameters &contact,
-              const InputFile &input)
+              const InputFile &input, const SpringParameters &springs,
+              const FrictionParameters &friction)
   {
     Model model;
     model.mass_matrix = parameters.mass_matrix;
@@ -646,6 +647,9 @@ namespace poundfe
       }
     add_contact(model, parameters, contact, input);
     model.number_equations();
+    add_springs(model, springs, input);
+    check_storeys_held(model, input);
+    add_friction_surfaces(model, friction, input);
     return model;
   }
 } // namespace poundfe

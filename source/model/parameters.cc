@@ -81,7 +81,8 @@ namespace poundfe
     prm.add_parameter("Elements per member", elements_per_member,
                       "Frame elements along each column and beam.", Patterns::Integer(1, 64));
     prm.add_parameter("Storey stiffnesses", storey_stiffnesses,
-                      "Shear building storey stiffness in N/m, one or per storey.");
+                      "Shear building storey stiffness in N/m, one or per storey; 0 "
+                      "where only Springs hold the floor (the SD or Duffing oscillator).");
     prm.add_parameter("Storey damping", storey_damping,
                       "Shear building storey dashpot in N s/m, one or per storey "
                       "(added to the Rayleigh damping).");
@@ -175,7 +176,7 @@ namespace poundfe
       }
     if (type == BuildingType::shear)
       {
-        input.list(s + "Storey stiffnesses", storey_stiffnesses, n, false, "one per storey");
+        input.list(s + "Storey stiffnesses", storey_stiffnesses, n, true, "one per storey");
         input.list(s + "Storey damping", storey_damping, n, true, "one per storey");
         input.non_negative(s + "Drawing width", drawing_width);
       }

@@ -36,6 +36,7 @@ namespace poundfe
   double
   ResponseView::dissipated_energy(const unsigned int h) const
   {
-    return integrator.element_work(h) - elements[h].stored_energy();
+    return integrator.element_work(h) - elements[h].stored_energy() +
+           integrator.element_supplied_work(h);
   }
 } // namespace poundfe

@@ -9,9 +9,11 @@ namespace poundfe
     : elements(elements_)
     , floor_response(model)
   {
-    while (n_hysteretic_elements < elements.size() &&
-           elements[n_hysteretic_elements].kind != ElementKind::gap)
-      ++n_hysteretic_elements;
+    for (const NonlinearElement &e : elements)
+      {
+        n_hysteretic_elements += e.kind == ElementKind::hinge || e.kind == ElementKind::storey;
+        n_gap_elements += e.kind == ElementKind::gap;
+      }
   }
 
   void
@@ -41,7 +43,7 @@ namespace poundfe
           }
         const double f = e.force();
         peak_f[h]      = std::max(peak_f[h], std::abs(f));
-        if (h >= n_hysteretic_elements) // a gap: its opening is minus its penetration
+        if (e.kind == ElementKind::gap) // its opening is minus its penetration
           smallest_clearance = std::min(smallest_clearance, -e.history_variable());
         // plastic part: the deformation left after elastic unloading
         const double k0 = e.initial_stiffness();

@@ -239,14 +239,15 @@ namespace poundfe
           case RecordedQuantity::gap_states:
             {
               std::vector<std::string> columns;
-              for (unsigned int h = n_hyst; h < elements.size(); ++h)
+              const unsigned int end = n_hyst + peaks.n_gaps();
+              for (unsigned int h = n_hyst; h < end; ++h)
                 {
                   columns.push_back(elements[h].label + "_force_N");
                   columns.push_back(elements[h].label + "_penetration_m");
                 }
-              return {columns, [n_hyst](const ResponseView &s, std::vector<double> &to) {
+              return {columns, [n_hyst, end](const ResponseView &s, std::vector<double> &to) {
                         to.clear();
-                        for (unsigned int h = n_hyst; h < s.elements.size(); ++h)
+                        for (unsigned int h = n_hyst; h < end; ++h)
                           {
                             to.push_back(s.elements[h].force());
                             to.push_back(s.elements[h].history_variable());
@@ -255,11 +256,11 @@ namespace poundfe
             }
           case RecordedQuantity::energy:
             return {{"input_J", "kinetic_J", "damping_J", "strain_J", "hysteretic_J", "contact_J",
-                     "balance_error"},
+                     "balance_error", "friction_J", "belt_J"},
                     [](const ResponseView &s, std::vector<double> &to) {
                       const EnergyBalance e = s.energy();
                       to = {e.input, e.kinetic, e.damping, e.strain, e.hysteretic, e.contact,
-                            s.max_energy_error()};
+                            s.max_energy_error(), e.friction, e.belt};
                     }};
           case RecordedQuantity::ground_motion:
             return {{"ground_acceleration_m_s2"}, [](const ResponseView &s, std::vector<double> &to) {
@@ -399,7 +400,7 @@ namespace poundfe
                  const std::string &directory)
   {
     const bool has_hysteretic = peaks.n_hysteretic() > 0;
-    const bool has_gaps       = peaks.n_hysteretic() < state.elements.size();
+    const bool has_gaps       = peaks.n_gaps() > 0;
     std::vector<RecorderRequest> requests;
     if (parameters.default_files)
       for (const RecordedQuantity q :

@@ -12,6 +12,7 @@
 #include <poundfe/excitation/excitation_parameters.h>
 #include <poundfe/integration/time_integration_parameters.h>
 #include <poundfe/model/contact_parameters.h>
+#include <poundfe/model/friction_parameters.h>
 #include <poundfe/model/parameters.h>
 #include <poundfe/output/output_parameters.h>
 
@@ -40,6 +41,8 @@ namespace poundfe
   {
     ModelParameters           model;       // Model, Building <i>
     ContactParameters         contact;     // Contact
+    SpringParameters          springs;     // Springs
+    FrictionParameters        friction;    // Friction
     GroundMotionParameters    ground_motion;
     NodalForceParameters      nodal_forces;
     TimeIntegrationParameters time_integration; // and Contact/Event refinement

@@ -34,7 +34,9 @@ namespace poundfe
   {
     hinge,  // moment-rotation at a member end
     storey, // force-drift of a shear-building storey
-    gap     // contact
+    gap,    // contact
+    spring, // nonlinear elastic spring to the ground (SD, Duffing)
+    friction // dry friction against the ground or a moving belt
   };
 
   class NonlinearElement
@@ -70,6 +72,8 @@ namespace poundfe
     /// refactorise the tangent; otherwise an LU backend must).
     virtual bool has_symmetric_tangent() const = 0;
 
+    /// The time at the end of the step about to be tried (before set_trial).
+    virtual void set_trial_time(double) {}
     /// Evaluate the trial state at local displacements and velocities (0 on
     /// ground DOFs). Returns false when the element's own iteration fails;
     /// failure() then says why, and the trial state must not be used.
@@ -81,6 +85,9 @@ namespace poundfe
     /// Work done on the element from the committed to the trial state
     /// (trapezoidal; exact for the average-acceleration rule).
     virtual double work_increment() const = 0;
+    /// Work done on the structure from the committed to the trial state by
+    /// what drives the element (a moving belt under a friction element).
+    virtual double supplied_work_increment() const { return 0; }
     /// u_e^T K_ref,e u_e / 2 at the trial state: the part of
     /// stored_energy() that the linear K already counts.
     virtual double reference_energy() const = 0;
@@ -96,6 +103,11 @@ namespace poundfe
     /// cutting the step.
     virtual bool is_active() const { return false; }
     virtual bool was_active() const { return false; }
+    /// The branch of a piecewise element at the trial / committed state
+    /// (friction: stick 0, slip -1 or +1); a change within a step is an
+    /// event, located by cutting the step.
+    virtual int phase() const { return is_active(); }
+    virtual int committed_phase() const { return was_active(); }
 
     // What observers and outputs read: scalar measures of the trial state,
     // which is the committed state between steps.

@@ -33,17 +33,21 @@ namespace poundfe
     Eigen::MatrixXd tangent_basis() const override;
     bool            has_symmetric_tangent() const override { return true; }
 
+    void   set_trial_time(double time) override { law->set_trial_time(time); }
     bool   set_trial(const LocalVector &u, const LocalVector &v) override;
     void   force_correction(LocalVectorOut f) const override;
     void   tangent_change(double damping_factor, LocalMatrixOut d) const override;
     double work_increment() const override;
     double reference_energy() const override;
+    double supplied_work_increment() const override { return law->supplied_work_increment(); }
     void   commit() override;
     void   revert() override;
     void   reset() override;
     std::string failure() const override { return law->failure(); }
     bool   is_active() const override { return law->is_active(); }
     bool   was_active() const override { return law->was_active(); }
+    int    phase() const override { return law->phase(); }
+    int    committed_phase() const override { return law->committed_phase(); }
 
     double force() const override { return law->force(); }
     double deformation(const Eigen::VectorXd &u) const override;

@@ -25,6 +25,7 @@
 #include <poundfe/base/choices.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/integration/impact_log.h>
+#include <poundfe/integration/stick_slip_log.h>
 
 #include <functional>
 #include <memory>
@@ -64,20 +65,24 @@ namespace poundfe
   };
 
   /// Work and energy terms of the relative-coordinate energy balance, J:
-  /// initial + input = kinetic + damping + strain + hysteretic + contact.
+  /// initial + input + belt = kinetic + damping + strain + hysteretic +
+  /// contact + friction.
   struct EnergyBalance
   {
     double initial    = 0; // kinetic + strain at t = 0
     double input      = 0; // int u'^T p dt (p includes -M r a_g)
+    double belt       = 0; // done on the structure by moving belts under friction
     double kinetic    = 0;
     double damping    = 0; // int u'^T C u' dt
     double strain     = 0; // recoverable: elastic structure and laws
     double hysteretic = 0; // dissipated by hinges and storeys
     double contact    = 0; // dissipated by gaps
+    double friction   = 0; // dissipated by friction, int F (x' - v0) dt
 
+    double supplied() const { return initial + input + belt; }
     double stored_and_dissipated() const
     {
-      return kinetic + damping + strain + hysteretic + contact;
+      return kinetic + damping + strain + hysteretic + contact + friction;
     }
   };
 
@@ -87,7 +92,7 @@ namespace poundfe
     unsigned long iterations = 0; // Newton iterations (solves) in them
     unsigned int  max_iterations = 0;
     unsigned long step_cuts  = 0;
-    unsigned long event_refinements = 0; // steps cut to locate a contact event
+    unsigned long event_refinements = 0; // steps cut to locate a contact or stick-slip event
     double        smallest_time_step = 0;
   };
 
@@ -142,6 +147,8 @@ namespace poundfe
     const IterationStatistics &statistics() const { return stats; }
     /// Work done on element h so far (trapezoidal), J.
     double element_work(unsigned int h) const { return work[h]; }
+    /// Work done on the structure by what drives element h (a belt) so far, J.
+    double element_supplied_work(unsigned int h) const { return supplied_work[h]; }
     /// The residual R(u_trial) of the next step under p(t_{n+1}) = load, and
     /// the dense tangent -dR/du that Newton uses (for checks and
     /// diagnostics; the laws are reverted afterwards).
@@ -152,6 +159,8 @@ namespace poundfe
     void set_equation_names(std::vector<std::string> names) { equation_names = std::move(names); }
     /// Every contact episode of the gap elements so far.
     const ImpactLog &impact_log() const { return impacts; }
+    /// Every stick and slip episode of the friction elements so far.
+    const StickSlipLog &stick_slip_log() const { return stick_slip; }
     /// The update in use (never automatic).
     TangentUpdate tangent_update() const
     {
@@ -200,9 +209,12 @@ namespace poundfe
     std::vector<double> tangent_change;
     // Per element: accumulated work; for the impact log, the committed
     // force, history variable and rate.
-    std::vector<double> work, committed_force, committed_history, committed_rate;
-    std::vector<unsigned int> gap_elements;
+    std::vector<double> work, supplied_work, committed_force, committed_history, committed_rate;
+    // Gaps (impacts), friction (stick-slip) and discontinuous springs: a
+    // change of is_active() within a step is an event.
+    std::vector<unsigned int> gap_elements, friction_elements, event_elements;
     ImpactLog                 impacts;
+    StickSlipLog              stick_slip;
     std::string failure;
     std::vector<std::string> equation_names;
     double      current_time = 0;

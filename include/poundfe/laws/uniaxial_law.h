@@ -19,6 +19,9 @@ namespace poundfe
   public:
     virtual ~UniaxialLaw() = default;
 
+    /// The time at the end of the step about to be tried (laws driven by a
+    /// moving surface need it; set before set_trial).
+    virtual void set_trial_time(double) {}
     /// Evaluate the trial state at the end of the step. Returns false when
     /// the law's own iteration fails; failure() then says why, and the
     /// trial state must not be used (revert() or a new set_trial()).
@@ -32,6 +35,9 @@ namespace poundfe
     /// Recoverable energy of the trial state; the work done on the law minus
     /// this is what the law dissipated.
     virtual double stored_energy() const = 0;
+    /// Work done on the structure, from the committed to the trial state, by
+    /// what drives the law (a moving belt); 0 for passive laws.
+    virtual double supplied_work_increment() const { return 0; }
     /// A law-specific internal variable reported in outputs (Bouc-Wen: z).
     virtual double history_variable() const { return 0; }
     /// Deformation at which the law yields (for ductility); 0 if none.
@@ -43,6 +49,11 @@ namespace poundfe
     /// locates by cutting the step.
     virtual bool is_active() const { return false; }
     virtual bool was_active() const { return false; }
+    /// The branch of a piecewise law at the trial / committed state (a gap:
+    /// open 0, closed 1; friction: stick 0, slip -1 or +1). A change within
+    /// a step is an event the integrator locates by cutting the step.
+    virtual int phase() const { return is_active(); }
+    virtual int committed_phase() const { return was_active(); }
 
     virtual void commit() = 0;
     virtual void revert() = 0;

@@ -7,6 +7,8 @@
 #include <poundfe/base/point.h>
 #include <poundfe/laws/bouc_wen.h>
 #include <poundfe/laws/contact_law.h>
+#include <poundfe/laws/elastic_springs.h>
+#include <poundfe/laws/friction.h>
 
 #include <array>
 #include <string>
@@ -106,6 +108,24 @@ namespace poundfe
   };
 
   /// Translational mass lumped at a node (acts on ux and uy).
+  /// A nonlinear elastic spring between a node's ux and the ground.
+  struct Spring
+  {
+    unsigned int        node     = 0;
+    unsigned int        building = 0;
+    SpringLawParameters law;
+    std::string         label;
+  };
+
+  /// A friction element between a node's ux and the ground or a belt.
+  struct FrictionSurface
+  {
+    unsigned int          node     = 0;
+    unsigned int          building = 0;
+    FrictionLawParameters law; // k_s: set by prepare_analysis when 0 (automatic)
+    std::string           label;
+  };
+
   struct NodalMass
   {
     unsigned int node = 0;
@@ -172,6 +192,8 @@ namespace poundfe
     std::vector<StoreyLink> links;
     std::vector<Hinge>      hinges;
     std::vector<Gap>        gaps;
+    std::vector<Spring>          springs;
+    std::vector<FrictionSurface> friction_surfaces;
     /// The contact law of every gap (its gap and m_e are set per gap).
     ContactLawParameters    contact;
     std::vector<NodalMass>  masses;

@@ -5,6 +5,7 @@
 
 #include <poundfe/base/input_file.h>
 #include <poundfe/model/contact_parameters.h>
+#include <poundfe/model/friction_parameters.h>
 #include <poundfe/model/model.h>
 #include <poundfe/model/parameters.h>
 
@@ -13,7 +14,35 @@ namespace poundfe
   /// Build the model and number its equations; `input` names the file in
   /// messages and resolves mesh files. Throws InputError.
   Model build_model(const ModelParameters &parameters, const ContactParameters &contact,
-                    const InputFile &input);
+                    const InputFile &input, const SpringParameters &springs = {},
+                    const FrictionParameters &friction = {});
+
+  /// A node named 'building floor node' (counted from 1, 1 and 0).
+  struct FloorNode
+  {
+    unsigned int node     = 0; // in the model
+    unsigned int building = 0;
+    unsigned int floor    = 1; // as read
+    unsigned int index    = 0; // on the floor, as read
+    std::string  label;        // "A3 floor 2 node 0"
+  };
+  /// Read 'building floor node' from `fields`; `form` is the whole entry's
+  /// expected form for the message. Throws InputError naming `path` and `entry`.
+  FloorNode read_floor_node(const InputFile &input, const Model &model, std::istream &fields,
+                            const std::string &path, const std::string &entry,
+                            const std::string &form);
+
+  /// The springs of the `Springs` section, at floor nodes of `model`
+  /// (source/model/springs_and_friction.cc). Throws InputError.
+  void add_springs(Model &model, const SpringParameters &springs, const InputFile &input);
+  /// A storey of zero stiffness is allowed only where a spring holds the
+  /// floor on top of it (the SD or Duffing oscillator); after add_springs.
+  /// Throws InputError.
+  void check_storeys_held(const Model &model, const InputFile &input);
+  /// The friction elements of the `Friction` section; after add_springs
+  /// (N may take an SD spring's reaction). Throws InputError.
+  void add_friction_surfaces(Model &model, const FrictionParameters &friction,
+                             const InputFile &input);
 } // namespace poundfe
 
 #endif

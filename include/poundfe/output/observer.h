@@ -66,9 +66,11 @@ namespace poundfe
     double                     max_energy_error() const { return integrator.max_energy_error(); }
     /// Work done on nonlinear element h so far, J.
     double                     element_work(unsigned int h) const { return integrator.element_work(h); }
-    /// Energy element h has dissipated so far: its work minus its stored energy, J.
+    /// Energy element h has dissipated so far: its work minus its stored
+    /// energy plus what its drive (a belt) supplied, J.
     double                     dissipated_energy(unsigned int h) const;
     const ImpactLog           &impact_log() const { return integrator.impact_log(); }
+    const StickSlipLog        &stick_slip_log() const { return integrator.stick_slip_log(); }
     const IterationStatistics &statistics() const { return integrator.statistics(); }
 
   private:

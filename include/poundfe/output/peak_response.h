@@ -27,8 +27,11 @@ namespace poundfe
     /// The floor response at the last observed step and its peaks.
     const FloorResponse &floors() const { return floor_response; }
 
-    /// Elements are hinges and storeys first, then gaps (make_nonlinear_elements).
+    /// Elements are hinges and storeys first, then gaps, then springs and
+    /// friction elements (make_nonlinear_elements).
     unsigned int n_hysteretic() const { return n_hysteretic_elements; }
+    /// The gaps are elements [n_hysteretic(), n_hysteretic() + n_gaps()).
+    unsigned int n_gaps() const { return n_gap_elements; }
     const std::vector<double> &peak_deformation() const { return peak_d; }
     const std::vector<double> &time_of_peak_deformation() const { return peak_d_at; }
     const std::vector<double> &peak_force() const { return peak_f; }
@@ -41,7 +44,7 @@ namespace poundfe
   private:
     const NonlinearElements &elements;
     FloorResponse           floor_response;
-    unsigned int            n_hysteretic_elements = 0;
+    unsigned int            n_hysteretic_elements = 0, n_gap_elements = 0;
     std::vector<double>     peak_d, peak_d_at, peak_f, peak_plastic;
     double                  smallest_clearance = 0;
   };
