@@ -112,8 +112,11 @@ BOOST_AUTO_TEST_CASE(sweep_values_and_one_input_per_value)
   sweep.values_text = "linspace 0.01 0.05 5";
   const std::vector<double> v = sweep.values();
   BOOST_TEST_REQUIRE(v.size() == 5u);
-  for (unsigned int i = 0; i < 5; ++i) // a + i (b - a) / (n - 1), to rounding
+  for (unsigned int i = 0; i < 5; ++i) // a + i (b - a) / (n - 1), rounded to 15 digits
     BOOST_TEST(v[i] == 0.01 + i * 0.01, boost::test_tools::tolerance(1e-15));
+  sweep.values_text = "linspace 0.70 0.84 29"; // the decimal values, not their sums
+  BOOST_TEST(sweep.values().at(15) == 0.775);
+  BOOST_TEST(sweep.values().at(28) == 0.84);
   sweep.values_text = " 3, -1.5e-2 ,7";
   BOOST_TEST(sweep.values() == (std::vector<double>{3, -1.5e-2, 7}));
 
