@@ -55,6 +55,9 @@ namespace poundfe
     prm.add_parameter("Period tolerance", period_tolerance,
                       "Samples n periods apart are equal within this fraction of the "
                       "response's range over the sampled periods.", Patterns::Double(0));
+    prm.add_parameter("Continuation", continuation,
+                      "Start each value from the previous value's final state (follow a "
+                      "branch) instead of from rest.");
     prm.add_parameter("Lyapunov exponent", lyapunov_exponent,
                       "Also the largest Lyapunov exponent (a second, perturbed trajectory: "
                       "twice the work).");
@@ -127,8 +130,16 @@ namespace poundfe
           samples.push_back(x);
       }
 
+      void
+      finish(const ResponseView &state, const RunStatus &) override
+      {
+        final_u = state.displacement();
+        final_v = state.velocity();
+      }
+
       std::vector<double> samples;
       double              lowest = 0, highest = 0;
+      Vector              final_u, final_v; // the state at the end
 
     private:
       const unsigned int  equation;
@@ -158,10 +169,10 @@ namespace poundfe
       {}
 
       void
-      initialize(const ResponseView &) override
+      initialize(const ResponseView &state) override
       {
         load(0, p);
-        shadow.initialize(p); // from rest, as the observed run
+        shadow.initialize(p, state.displacement(), state.velocity()); // as the observed run
         d0 = 0, sum = 0, n_periods = 0;
       }
 
@@ -261,10 +272,17 @@ namespace poundfe
       return v;
     }
 
+    /// A state to start from: the previous value's final one (Continuation).
+    struct ModelState
+    {
+      Vector u, v;
+    };
+
     /// The model of `v` prepared once and run once with the Poincaré
-    /// sampler (and the second trajectory).
+    /// sampler (and the second trajectory), from `state` when it is given
+    /// and not empty, else from rest; `state` becomes the final state.
     BifurcationPoint
-    run_point(const ValueInput &v)
+    run_point(const ValueInput &v, ModelState *state = nullptr)
     {
       const auto                   start = std::chrono::steady_clock::now();
       const InputParameters       &at    = v.input;
@@ -274,6 +292,10 @@ namespace poundfe
       const Excitation   excitation = make_excitation(analysis);
       std::istringstream fields(b.response);
       const NodeDof dof = find_node_dof(at, analysis.model, fields, "Bifurcation/Response", b.response);
+      const bool from_state = state && state->u.size() > 0;
+      if (from_state && state->u.size() != analysis.system.n_equations())
+        at.fail("Bifurcation/Continuation", "the model's equations change at " +
+                                              format_value(v.value) + ": cannot continue");
 
       TimeHistory     history(analysis);
       PoincareSampler sampler(dof.equation, b.quantity == "velocity", n, b.transient_periods,
@@ -283,11 +305,15 @@ namespace poundfe
       if (b.lyapunov_exponent)
         observers.push_back(&lyapunov.emplace(analysis, excitation, n, b.transient_periods,
                                               v.period, b.perturbation));
+      const RunStatus status = from_state ? history.run(state->u, state->v, excitation, observers) :
+                                            history.run(excitation, observers);
+      if (state) // after a failure the next value starts from rest
+        *state = status.completed() ? ModelState{sampler.final_u, sampler.final_v} : ModelState{};
       BifurcationPoint point;
       point.value          = v.value;
       point.forcing_period = v.period;
       point.time_step      = at.time_integration.newmark.time_step;
-      point.completed      = history.run(excitation, observers).completed();
+      point.completed      = status.completed();
       point.samples        = sampler.samples;
       point.response_range = sampler.samples.empty() ? 0 : sampler.highest - sampler.lowest;
       point.period = point.completed ?
@@ -380,6 +406,7 @@ namespace poundfe
         .value("period_rule", "smallest n <= 16 with |x_{k+n} - x_k| <= tolerance * range "
                               "for every sample; 0: non-periodic")
         .value("period_tolerance", b.period_tolerance)
+        .value("continuation", b.continuation)
         .value("lyapunov_exponent", b.lyapunov_exponent)
         .value("lyapunov_method", "Benettin two-trajectory, renormalised every period, "
                                   "d0 = perturbation * |(u, v / omega)|")
@@ -408,25 +435,31 @@ namespace poundfe
     }
   } // namespace
 
-  int
-  bifurcation_command(const InputParameters &input, const std::string &directory)
+  std::vector<BifurcationPoint>
+  bifurcation_points(const InputParameters &input)
   {
     const BifurcationParameters &b = input.bifurcation;
     b.sweep.require(input);
-    const std::vector<double> values = b.sweep.values();
     std::vector<ValueInput> inputs; // every value's input checked before any work
-    for (const double value : values)
+    for (const double value : b.sweep.values())
       inputs.push_back(input_at(input, value));
-    const auto                    start = std::chrono::steady_clock::now();
     std::vector<BifurcationPoint> points;
-    {
-      Progress progress(std::cerr, "bifurcation: values", values.size());
-      for (const ValueInput &v : inputs)
-        {
-          points.push_back(run_point(v));
-          progress.update(points.size());
-        }
-    }
+    Progress   progress(std::cerr, "bifurcation: values", inputs.size());
+    ModelState state; // empty: from rest
+    for (const ValueInput &v : inputs)
+      {
+        points.push_back(run_point(v, b.continuation ? &state : nullptr));
+        progress.update(points.size());
+      }
+    return points;
+  }
+
+  int
+  bifurcation_command(const InputParameters &input, const std::string &directory)
+  {
+    const BifurcationParameters  &b     = input.bifurcation;
+    const auto                    start = std::chrono::steady_clock::now();
+    const std::vector<BifurcationPoint> points = bifurcation_points(input);
     const double wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     create_directories(directory);
@@ -437,7 +470,7 @@ namespace poundfe
 
     const auto n_failed = std::count_if(points.begin(), points.end(),
                                         [](const BifurcationPoint &p) { return !p.completed; });
-    std::cout << "poundfe bifurcation: " << values.size() << " values of " << b.sweep.parameter
+    std::cout << "poundfe bifurcation: " << points.size() << " values of " << b.sweep.parameter
               << " in " << wall_time << " s\nresults in " << directory
               << "/ (bifurcation.csv, bifurcation_classification.csv, summary.json, "
                  "bifurcation.png)\n";

@@ -177,12 +177,20 @@ namespace poundfe
   TimeHistory::run(const Excitation &excitation, const Observers &observers,
                    const bool interruptible)
   {
+    const Vector rest = Vector::Zero(analysis.system.n_equations());
+    return run(rest, rest, excitation, observers, interruptible);
+  }
+
+  RunStatus
+  TimeHistory::run(const Vector &u0, const Vector &v0, const Excitation &excitation,
+                   const Observers &observers, const bool interruptible)
+  {
     const unsigned long n = n_steps(excitation);
     const double        dt = analysis.input.time_integration.newmark.time_step;
     const LoadFunction  load = [&excitation](const double t, Vector &p) { excitation.load(t, p); };
     Vector p0(analysis.system.n_equations());
     load(0, p0);
-    integrator.initialize(p0);
+    integrator.initialize(p0, u0, v0);
     view.set_step(0, excitation.ground_acceleration(0));
     for (StepObserver *observer : observers)
       observer->initialize(view);

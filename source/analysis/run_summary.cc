@@ -312,6 +312,32 @@ namespace poundfe
   }
 
   void
+  RunSummary::draw_phase_portraits(std::vector<Plot> &plots) const
+  {
+    // phase_portrait.csv: time, (u, u') per equation, then each friction
+    // element's phase; stick (phase 0) is marked on the element's equation
+    const Model       &model = analysis.model;
+    const unsigned int n     = model.n_equations();
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        const std::string x = std::to_string(2 * q + 2), v = std::to_string(2 * q + 3);
+        Plot plot{"phase_portrait" + (n > 1 ? "_" + std::to_string(q + 1) : std::string()) + ".png",
+                  "Phase portrait", "displacement (m)", "velocity (m/s)",
+                  {{"phase_portrait.csv", x + ":" + v, "trajectory", "lines"}}};
+        for (unsigned int i = 0; i < model.friction_surfaces.size(); ++i)
+          if (model.equation(Model::dof(model.friction_surfaces[i].node, Component::ux)) == int(q))
+            {
+              const std::string phase = std::to_string(2 * n + 2 + i);
+              plot.series.push_back({"phase_portrait.csv",
+                                     x + ":($" + phase + "==0?$" + v + ":1/0)",
+                                     "stick (" + model.friction_surfaces[i].label + ")",
+                                     "points pt 7 ps 0.6"});
+            }
+        plots.push_back(plot);
+      }
+  }
+
+  void
   RunSummary::draw(const ResponseView &state) const
   {
     const Model &model = analysis.model;
@@ -382,6 +408,8 @@ namespace poundfe
                                  e.label, "lines"}}});
           }
       }
+    if (exists(directory, "phase_portrait.csv"))
+      draw_phase_portraits(all);
     if (exists(directory, "contact_force.csv"))
       {
         Plot contact{"contact_force.png", "Contact forces", "time (s)", "force (N)", {}};

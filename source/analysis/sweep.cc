@@ -19,6 +19,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <sstream>
 
@@ -67,8 +68,12 @@ namespace poundfe
                       "(n = 1 needs a = b), got '" + text + "'";
               return {};
             }
-          for (unsigned int i = 0; i < n; ++i)
-            values.push_back(n == 1 ? a : a + (b - a) * i / (n - 1));
+          for (unsigned int i = 0; i < n; ++i) // to 15 digits: 0.775, not 0.7749999999999999
+            {
+              char buffer[32];
+              std::snprintf(buffer, sizeof(buffer), "%.15g", n == 1 ? a : a + (b - a) * i / (n - 1));
+              values.push_back(std::stod(buffer));
+            }
           return values;
         }
       std::istringstream items(text);

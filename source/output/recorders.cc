@@ -36,7 +36,22 @@ namespace poundfe
       {RecordedQuantity::hinge_states, "hinge states", "hinges.csv"},
       {RecordedQuantity::gap_states, "gap states", "contact_force.csv"},
       {RecordedQuantity::energy, "energy", "energy.csv"},
-      {RecordedQuantity::ground_motion, "ground motion", "ground_motion.csv"}};
+      {RecordedQuantity::ground_motion, "ground motion", "ground_motion.csv"},
+      {RecordedQuantity::phase_portrait, "phase portrait", "phase_portrait.csv"}};
+
+    /// "<building>_node<n>_<ux|uy|rz>" of each equation.
+    std::vector<std::string>
+    equation_labels(const Model &model)
+    {
+      std::vector<std::string> labels(model.n_equations());
+      const char              *components[] = {"ux", "uy", "rz"};
+      for (unsigned int node = 0; node < model.n_nodes(); ++node)
+        for (unsigned int c = 0; c < n_dofs_per_node; ++c)
+          if (const int q = model.equation(n_dofs_per_node * node + c); q >= 0)
+            labels[q] = model.buildings[model.nodes[node].building].name + "_node" +
+                        std::to_string(node) + "_" + components[c];
+      return labels;
+    }
 
     const QuantityInfo &
     info(const RecordedQuantity q)
@@ -266,6 +281,33 @@ namespace poundfe
             return {{"ground_acceleration_m_s2"}, [](const ResponseView &s, std::vector<double> &to) {
                       to.assign(1, s.ground_acceleration());
                     }};
+          case RecordedQuantity::phase_portrait:
+            {
+              std::vector<std::string> columns;
+              for (const std::string &label : equation_labels(state.model))
+                {
+                  columns.push_back(label + "_m");
+                  columns.push_back(label + "_velocity_m_s");
+                }
+              std::vector<unsigned int> friction;
+              for (unsigned int h = 0; h < elements.size(); ++h)
+                if (elements[h].kind == ElementKind::friction)
+                  {
+                    friction.push_back(h);
+                    columns.push_back(elements[h].label + "_phase");
+                  }
+              return {columns, [friction](const ResponseView &s, std::vector<double> &to) {
+                        const Vector &u = s.displacement(), &v = s.velocity();
+                        to.resize(2 * u.size() + friction.size());
+                        for (Eigen::Index q = 0; q < u.size(); ++q)
+                          {
+                            to[2 * q]     = u[q];
+                            to[2 * q + 1] = v[q];
+                          }
+                        for (std::size_t i = 0; i < friction.size(); ++i)
+                          to[2 * u.size() + i] = s.elements[friction[i]].phase();
+                      }};
+            }
           case RecordedQuantity::residual_drift:
             break; // not a time series
         }
@@ -406,9 +448,11 @@ namespace poundfe
       for (const RecordedQuantity q :
            {RecordedQuantity::drift_ratio, RecordedQuantity::floor_acceleration,
             RecordedQuantity::floor_displacement, RecordedQuantity::ground_motion,
-            RecordedQuantity::energy, RecordedQuantity::hinge_states, RecordedQuantity::gap_states})
+            RecordedQuantity::energy, RecordedQuantity::hinge_states, RecordedQuantity::gap_states,
+            RecordedQuantity::phase_portrait})
         if ((q != RecordedQuantity::hinge_states || has_hysteretic) &&
-            (q != RecordedQuantity::gap_states || has_gaps))
+            (q != RecordedQuantity::gap_states || has_gaps) &&
+            (q != RecordedQuantity::phase_portrait || state.model.n_equations() <= 2))
           requests.push_back({q, {}, -1.0});
     for (const RecorderRequest &r : parameters.requests)
       {

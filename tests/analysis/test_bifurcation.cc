@@ -7,17 +7,66 @@
 //    phi = atan2(c w, k - m w^2) (Chopra, Dynamics of Structures, §3.2), so
 //    every Poincaré sample is x(k T) = -X sin(phi) and the response is
 //    period 1; its largest Lyapunov exponent is the decay rate of free
-//    vibration, -zeta w0 = -c / (2 m).
+//    vibration, -zeta w0 = -c / (2 m);
+//  - the Duffing oscillator x'' + 0.2 x' + x + x^3 = 20 cos(w t) from rest
+//    (input/duffing-bifurcation.prm): period 2 at w = 0.77 and period 1 at
+//    w = 0.81, its Poincaré points those of a classical Runge-Kutta
+//    integration written here (2000 steps per period).
 #include <poundfe/analysis/bifurcation.h>
 #include <poundfe/analysis/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
 using namespace poundfe;
+
+namespace
+{
+  /// Poincaré samples x(k T), k = n_transient + 1 .. n_transient + n_sampled,
+  /// of x'' + d x' + x + x^3 = f cos(w t) from rest by classical RK4 with
+  /// n_steps steps per period (Hairer, Norsett & Wanner, §II.1).
+  std::vector<double>
+  duffing_samples(const double d, const double f, const double w, const unsigned int n_steps,
+                  const unsigned int n_transient, const unsigned int n_sampled)
+  {
+    const auto rhs = [&](const double t, const std::array<double, 2> &x) {
+      return std::array<double, 2>{{x[1], -d * x[1] - x[0] - x[0] * x[0] * x[0] + f * std::cos(w * t)}};
+    };
+    const double          h = 2 * M_PI / w / n_steps;
+    std::array<double, 2> x{{0, 0}};
+    std::vector<double>   samples;
+    for (unsigned int k = 1; k <= n_transient + n_sampled; ++k)
+      {
+        for (unsigned int j = 0; j < n_steps; ++j)
+          {
+            const double t  = ((k - 1) * n_steps + j) * h;
+            const auto   k1 = rhs(t, x);
+            const auto   k2 = rhs(t + h / 2, {{x[0] + h / 2 * k1[0], x[1] + h / 2 * k1[1]}});
+            const auto   k3 = rhs(t + h / 2, {{x[0] + h / 2 * k2[0], x[1] + h / 2 * k2[1]}});
+            const auto   k4 = rhs(t + h, {{x[0] + h * k3[0], x[1] + h * k3[1]}});
+            for (unsigned int i = 0; i < 2; ++i)
+              x[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+          }
+        if (k > n_transient)
+          samples.push_back(x[0]);
+      }
+    return samples;
+  }
+
+  /// The first n samples, sorted (a period-n orbit's points, whatever its phase).
+  std::vector<double>
+  orbit(const std::vector<double> &samples, const unsigned int n)
+  {
+    std::vector<double> points(samples.begin(), samples.begin() + n);
+    std::sort(points.begin(), points.end());
+    return points;
+  }
+} // namespace
 
 BOOST_AUTO_TEST_CASE(poincare_period_of_constructed_sequences)
 {
@@ -75,5 +124,84 @@ BOOST_AUTO_TEST_CASE(linear_oscillator_is_period_one_at_its_steady_state)
       BOOST_TEST(std::abs(point.response_range - 2 * X) <= 2 * tolerance + 0.01 * X);
       // Benettin's estimate over 128 periods: 3 %
       BOOST_TEST(point.lyapunov_exponent == -zeta * w0, boost::test_tools::tolerance(0.03));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(continuation_starts_from_the_previous_final_state)
+{
+  // Without a transient, the second of two equal values continued from the
+  // first goes on along the same trajectory: its samples are samples
+  // K+1..2K of one run of 2K periods from rest (the reference). Without
+  // continuation it starts again from rest: its samples are the first
+  // run's. Tolerance: round-off over 2K periods (the restart at t = 0
+  // instead of K T changes sin(w t) by ~1e-15 and recomputes a from
+  // equilibrium, which linear Newmark satisfies at every step).
+  const std::string file = "input/linear-bifurcation.prm";
+  const unsigned int K = 16;
+  const InputParameters twice = read_parameters(
+    file, {{"Bifurcation/Values", "8, 8"}, {"Bifurcation/Transient periods", "0"},
+           {"Bifurcation/Sampled periods", std::to_string(K)},
+           {"Bifurcation/Lyapunov exponent", "false"}, {"Bifurcation/Continuation", "true"}});
+  const std::vector<BifurcationPoint> continued = bifurcation_points(twice);
+  const BifurcationPoint long_run = bifurcation_point(
+    read_parameters(file, {{"Bifurcation/Transient periods", "0"},
+                           {"Bifurcation/Sampled periods", std::to_string(2 * K)},
+                           {"Bifurcation/Lyapunov exponent", "false"}}),
+    8);
+  BOOST_TEST_REQUIRE(continued.size() == 2u);
+  BOOST_TEST_REQUIRE(long_run.samples.size() == 2 * K);
+  const double scale = *std::max_element(long_run.samples.begin(), long_run.samples.end());
+  for (unsigned int k = 0; k < K; ++k)
+    {
+      BOOST_TEST(std::abs(continued[0].samples[k] - long_run.samples[k]) <= 1e-12 * scale);
+      BOOST_TEST(std::abs(continued[1].samples[k] - long_run.samples[K + k]) <= 1e-10 * scale);
+    }
+  // the transient is still decaying: the continued samples differ from the first run's
+  BOOST_TEST(std::abs(continued[1].samples[0] - continued[0].samples[0]) > 1e-6 * scale);
+
+  std::vector<ParameterOverride> overrides = twice.overrides;
+  overrides.push_back({"Bifurcation/Continuation", "false"});
+  const std::vector<BifurcationPoint> from_rest = bifurcation_points(read_parameters(file, overrides));
+  for (unsigned int k = 0; k < K; ++k)
+    BOOST_TEST(from_rest[1].samples[k] == from_rest[0].samples[k]);
+}
+
+BOOST_AUTO_TEST_CASE(duffing_period_two_window_against_runge_kutta)
+{
+  // Tolerance of a Poincaré point: the Newmark error estimated by Richardson
+  // extrapolation from a run at half the step (second order: the error of
+  // the run at dt is about 4/3 of its difference from the run at dt/2),
+  // three times, plus the RK4 error (1e-8, from its own halving below).
+  const std::string     file  = "input/duffing-bifurcation.prm";
+  const InputParameters input = read_parameters(file, {{"Bifurcation/Lyapunov exponent", "false"}});
+  const InputParameters fine  = read_parameters(
+    file, {{"Bifurcation/Lyapunov exponent", "false"}, {"Time integration/Time step", "0.01"}});
+  BOOST_TEST_REQUIRE(input.model.buildings.at(0).storey_damping == std::vector<double>{0.2});
+  BOOST_TEST_REQUIRE(input.nodal_forces.harmonic.at(0).find("1 1 0 ux 20 ") == 0u);
+  const unsigned int n_transient = input.bifurcation.transient_periods;
+  const unsigned int n_sampled   = input.bifurcation.sampled_periods;
+  for (const auto &[w, period] : std::vector<std::pair<double, unsigned int>>{{0.77, 2}, {0.81, 1}})
+    {
+      const std::vector<double> rk = duffing_samples(0.2, 20, w, 2000, n_transient, n_sampled);
+      const std::vector<double> rk_fine = duffing_samples(0.2, 20, w, 4000, n_transient, n_sampled);
+      BOOST_TEST_REQUIRE(poincare_period(rk, 1e-6) == period); // the reference's own period
+      const BifurcationPoint coarse = bifurcation_point(input, w);
+      const BifurcationPoint halved = bifurcation_point(fine, w);
+      BOOST_TEST(coarse.period == period, "w = " << w);
+      BOOST_TEST(halved.period == period, "w = " << w);
+      const std::vector<double> reference = orbit(rk, period), points = orbit(coarse.samples, period),
+                                points_fine = orbit(halved.samples, period), check = orbit(rk_fine, period);
+      for (unsigned int i = 0; i < period; ++i)
+        {
+          BOOST_TEST(std::abs(check[i] - reference[i]) < 1e-8); // RK4 converged
+          const double tolerance = 3 * 4.0 / 3 * std::abs(points[i] - points_fine[i]) + 1e-8;
+          BOOST_TEST_MESSAGE("w = " << w << ": point " << points[i] << ", reference "
+                                    << reference[i] << ", tolerance " << tolerance);
+          BOOST_TEST(std::abs(points[i] - reference[i]) <= tolerance,
+                     "w = " << w << ": point " << points[i] << " against " << reference[i]
+                            << " (tolerance " << tolerance << ")");
+        }
+      if (period == 2) // two distinct points, far beyond the tolerance
+        BOOST_TEST(reference[1] - reference[0] > 0.01);
     }
 }

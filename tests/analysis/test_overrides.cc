@@ -18,6 +18,8 @@ namespace
   const std::string two_buildings = "input/two-buildings.prm";
   const std::string sdof          = "input/bouc-wen-sdof.prm";
   const std::string json          = "tests/cli/three-storey-shear.json";
+  const std::string sd            = "input/sd-oscillator.prm";
+  const std::string duffing       = "input/duffing-bifurcation.prm";
 
   /// The InputError of reading `file` with one override (an empty error when none).
   InputError
@@ -51,6 +53,25 @@ BOOST_AUTO_TEST_CASE(overrides_set_numeric_entries_in_any_section)
   BOOST_TEST(p.time_integration.newmark.time_step == 0.004);
   // everything else is the file's
   BOOST_TEST(p.model.buildings.at(0).floor_masses == file.model.buildings.at(0).floor_masses);
+}
+
+BOOST_AUTO_TEST_CASE(overrides_reach_ground_motion_friction_and_springs)
+{
+  const InputParameters motion =
+    read_parameters(two_buildings, {{"Ground motion/Scale factor", "0.5"},
+                                    {"Ground motion/Stochastic/S0", "0.02"}});
+  BOOST_TEST(motion.ground_motion.scale_factor == 0.5);
+  BOOST_TEST(motion.ground_motion.spectral_intensity == 0.02);
+  const InputParameters friction =
+    read_parameters(sd, {{"Friction/Static coefficient", "0.25"},
+                         {"Friction/Kinetic coefficient", "0.2"}});
+  BOOST_TEST(friction.friction.law.static_coefficient == 0.25);
+  BOOST_TEST(friction.friction.law.kinetic_coefficient == 0.2);
+  const InputParameters spring = read_parameters(duffing, {{"Springs/Cubic springs:5", "3"}});
+  BOOST_TEST(spring.springs.cubic.at(0) == "1 1 0 1 3");
+  // the section's own check: mu_k > mu_s is refused, naming the entry
+  const InputError e = error_of(sd, "Friction/Kinetic coefficient", "0.5");
+  BOOST_TEST(e.parameter().find("Friction/") == 0u, e.what());
 }
 
 BOOST_AUTO_TEST_CASE(overrides_work_for_json_input)
@@ -112,8 +133,11 @@ BOOST_AUTO_TEST_CASE(sweep_values_and_one_input_per_value)
   sweep.values_text = "linspace 0.01 0.05 5";
   const std::vector<double> v = sweep.values();
   BOOST_TEST_REQUIRE(v.size() == 5u);
-  for (unsigned int i = 0; i < 5; ++i) // a + i (b - a) / (n - 1), to rounding
+  for (unsigned int i = 0; i < 5; ++i) // a + i (b - a) / (n - 1), rounded to 15 digits
     BOOST_TEST(v[i] == 0.01 + i * 0.01, boost::test_tools::tolerance(1e-15));
+  sweep.values_text = "linspace 0.70 0.84 29"; // the decimal values, not their sums
+  BOOST_TEST(sweep.values().at(15) == 0.775);
+  BOOST_TEST(sweep.values().at(28) == 0.84);
   sweep.values_text = " 3, -1.5e-2 ,7";
   BOOST_TEST(sweep.values() == (std::vector<double>{3, -1.5e-2, 7}));
 

@@ -5,6 +5,8 @@
 //   Period n: the smallest n <= 16 with |x_{k+n} - x_k| <= eps R for every
 //     sampled k, R the range of the response over the sampled periods and
 //     eps the Period tolerance (1e-6); none: non-periodic (period 0).
+//   Continuation: each value starts from the previous value's final state
+//     (a branch is followed through a multistable range) instead of rest.
 //   Largest Lyapunov exponent (Benettin et al. 1980, Meccanica 15:9-20;
 //     Wolf et al. 1985, Physica D 16:285): a second trajectory starts at a
 //     distance d0 from the first; every period its distance d_k is measured
@@ -41,6 +43,7 @@ namespace poundfe
     unsigned int    transient_periods = 200;
     unsigned int    sampled_periods   = 64;
     double          period_tolerance  = 1e-6;
+    bool            continuation      = false; // start from the previous value's final state
     bool            lyapunov_exponent = true;
     double          perturbation      = 1e-8; // delta: d0 relative to the state
 
@@ -72,6 +75,11 @@ namespace poundfe
   /// read with the parameter at `value`, the forcing period's time step and
   /// end time; prepared once and run once. Throws InputError.
   BifurcationPoint bifurcation_point(const InputParameters &input, double value);
+
+  /// Every value of the input's Bifurcation section, in order (each input
+  /// read and checked before any is run; with Continuation each value
+  /// starts from the previous one's final state). Throws InputError.
+  std::vector<BifurcationPoint> bifurcation_points(const InputParameters &input);
 
   /// The `bifurcation` command: bifurcation.csv, bifurcation_classification.csv,
   /// bifurcation.png and summary.json. Returns the exit status.

@@ -52,6 +52,10 @@ namespace poundfe
     /// between realizations, so no partial realization is ever recorded.)
     RunStatus run(const Excitation &excitation, const Observers &observers,
                   bool interruptible = false);
+    /// The same from (u0, v0) at t = 0 instead of rest (e.g. a
+    /// continuation from an earlier run's final state).
+    RunStatus run(const Vector &u0, const Vector &v0, const Excitation &excitation,
+                  const Observers &observers, bool interruptible = false);
 
     /// The view observers read; valid for the life of this object.
     const ResponseView &state() const { return view; }

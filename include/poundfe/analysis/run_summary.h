@@ -9,6 +9,8 @@
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/output/observer.h>
 
+#include <poundfe/output/plots.h>
+
 #include <string>
 
 namespace poundfe
@@ -37,6 +39,8 @@ namespace poundfe
     void write_impacts(const ResponseView &state) const;
     void write_json(const ResponseView &state, const RunStatus &status) const;
     void draw(const ResponseView &state) const;
+    /// x against x' of each equation of a one- or two-DOF model, stick marked.
+    void draw_phase_portraits(std::vector<Plot> &plots) const;
 
     const Analysis     &analysis;
     const Excitation   &excitation;

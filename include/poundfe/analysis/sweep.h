@@ -60,8 +60,6 @@ namespace poundfe
   /// The shortest text that reads back as `value`.
   std::string format_value(double value);
 
-  struct Analysis;
-
   /// The `sweep` command: for each value, the time history of the input
   /// with the override; the summary scalars against the value in
   /// sweep.csv, sweep.png and summary.json. Returns the exit status.

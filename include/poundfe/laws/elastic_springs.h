@@ -15,7 +15,7 @@
 // Sources: Q. Cao, M. Wiercigroch, E.E. Pavlovskaia, C. Grebogi &
 // J.M.T. Thompson, Phys. Rev. E 74 (2006) 046218 (the SD oscillator);
 // I. Kovacic & M.J. Brennan (eds.), The Duffing Equation, Wiley 2011;
-// doc/theory.md §12.
+// doc/theory.md §8.2.
 #ifndef poundfe_laws_elastic_springs_h
 #define poundfe_laws_elastic_springs_h
 

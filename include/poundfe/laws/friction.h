@@ -37,7 +37,7 @@
 // Sources: C.A. Coulomb 1785; R. Stribeck 1902; J.C. Simo & T.J.R. Hughes,
 // Computational Inelasticity, Springer 1998, §1.2-1.4 (return mapping of the
 // frictional slider); OpenSees FlatSliderBearing / Coulomb frictionModel;
-// D. Karnopp, J. Dyn. Syst. Meas. Control 107 (1985) 100; doc/theory.md §12.
+// D. Karnopp, J. Dyn. Syst. Meas. Control 107 (1985) 100; doc/theory.md §8.2.
 #ifndef poundfe_laws_friction_h
 #define poundfe_laws_friction_h
 

@@ -40,7 +40,9 @@ namespace poundfe
     hinge_states,       // hinges.csv: moment or force, rotation or drift, z
     gap_states,         // contact_force.csv: force (N) and penetration (m)
     energy,             // energy.csv, J
-    ground_motion       // ground_motion.csv, m/s^2
+    ground_motion,      // ground_motion.csv, m/s^2
+    phase_portrait      // phase_portrait.csv: u (m), u' (m/s) of every equation
+                        // and each friction element's phase (0 stick, +-1 slip)
   };
 
   struct RecorderRequest
