@@ -1,6 +1,7 @@
 #include <poundfe/laws/elastic_springs.h>
 
 #include <cmath>
+#include <string>
 
 namespace poundfe
 {
@@ -47,6 +48,13 @@ namespace poundfe
     trial_force       = p.force(deformation);
     trial_tangent     = p.tangent(deformation);
     return std::isfinite(trial_force);
+  }
+
+  std::string
+  ElasticSpring::failure() const
+  {
+    return "the spring force is not finite at a deformation of " +
+           std::to_string(trial_deformation) + " m";
   }
 
   void

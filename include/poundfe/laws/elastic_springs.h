@@ -21,6 +21,8 @@
 
 #include <poundfe/laws/uniaxial_law.h>
 
+#include <string>
+
 namespace poundfe
 {
   enum class SpringKind
@@ -63,6 +65,7 @@ namespace poundfe
     void commit() override;
     void revert() override;
     void reset() override;
+    std::string failure() const override;
 
   private:
     SpringLawParameters p;
