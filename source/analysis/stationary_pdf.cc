@@ -17,7 +17,6 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <array>
