@@ -424,10 +424,10 @@ namespace poundfe
       const BifurcationParameters &b = input.bifurcation;
       const std::string label = b.quantity + " (" + response_unit(b) + ")";
       Plot diagram{"bifurcation.png", "bifurcation diagram: Poincare samples of " + b.response +
-                                        " " + b.quantity, b.sweep.parameter, label,
+                                        " " + b.quantity, b.sweep.axis_label(), label,
                    {{"bifurcation.csv", "1:3", "x(kT)", "points pt 7 ps 0.3"}}};
       if (b.lyapunov_exponent)
-        diagram.below.push_back(Plot{"", "largest Lyapunov exponent", b.sweep.parameter,
+        diagram.below.push_back(Plot{"", "largest Lyapunov exponent", b.sweep.axis_label(),
                                      "lambda (1/s)",
                                      {{"bifurcation_classification.csv", "1:3", "lambda",
                                        "linespoints"}}});

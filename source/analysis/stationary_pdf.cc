@@ -638,7 +638,7 @@ namespace poundfe
           const std::size_t most = write_peaks(directory, sweep.column_name(), swept, done, json);
           write_density_map(directory, sweep.column_name(), swept, done);
           if (input.output.plots && !interrupted)
-            draw_plots(directory, {p_bifurcation_plot(sweep.parameter, most)});
+            draw_plots(directory, {p_bifurcation_plot(sweep.axis_label(), most)});
         }
       json.end_object();
       write_file_atomically(directory + "/summary.json", json.str());

@@ -111,6 +111,9 @@ namespace poundfe
                       "the forcing frequency).");
     prm.add_parameter("Values", values_text,
                       "The values: 'v1, v2, ...' or 'linspace a b n' (n values from a to b).");
+    prm.add_parameter("Label", label,
+                      "The parameter's name on the plots' axes, e.g. 'forcing amplitude f (N)' "
+                      "(empty: its path).");
   }
 
   void
@@ -186,6 +189,12 @@ namespace poundfe
                          "at " + section + " value " + parameter + " = " + format_value(value) +
                            ": " + e.problem());
       }
+  }
+
+  std::string
+  SweepParameters::axis_label() const
+  {
+    return label.empty() ? parameter : label;
   }
 
   std::string
@@ -315,8 +324,8 @@ namespace poundfe
 
       if (!input.output.plots)
         return;
-      Plot plot{"sweep.png", "peak inter-storey drift ratio against " + sweep.parameter,
-                sweep.parameter, "peak drift ratio", {}};
+      Plot plot{"sweep.png", "peak inter-storey drift ratio against " + sweep.axis_label(),
+                sweep.axis_label(), "peak drift ratio", {}};
       for (unsigned int s = 0; s < table.n_storeys; ++s)
         plot.series.push_back({"sweep.csv", "1:" + std::to_string(3 + s), table.names[s],
                                "linespoints"});

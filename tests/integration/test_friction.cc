@@ -148,11 +148,11 @@ BOOST_AUTO_TEST_CASE(frictionless_sd_oscillator_against_dormand_prince)
   // Newmark's average acceleration is second order: dt = 1e-3 -> ~1e-6 x
   const History h = simulate(p, 0.5, 0, 1e-3, end, [&](double t) { return f * std::cos(omega * t); });
   auto rhs = [&](const double t, const State &y) -> State {
-    return {y[1], f * std::cos(omega * t) - c * y[1] -
-                    y[0] * (1 - 1 / std::sqrt(y[0] * y[0] + alpha * alpha))};
+    return {{y[1], f * std::cos(omega * t) - c * y[1] -
+                     y[0] * (1 - 1 / std::sqrt(y[0] * y[0] + alpha * alpha))}};
   };
   double worst = 0;
-  State  y     = {0.5, 0};
+  State  y     = {{0.5, 0}};
   for (std::size_t i = 1000; i < h.t.size(); i += 1000) // every second
     {
       y     = dormand_prince(rhs, y, h.t[i - 1000], h.t[i], 1e-11);

@@ -31,6 +31,7 @@ namespace poundfe
     std::string section = "Sweep";
     std::string parameter{};   // an override path, e.g. "Model/Separations"
     std::string values_text{}; // as written
+    std::string label{};       // the parameter's name on plot axes ("": its path)
     std::string command = "run"; // Sweep only: whose model runs
 
     /// Parameter and Values in the subsection `prm` is in.
@@ -53,6 +54,8 @@ namespace poundfe
     /// was read with first.
     InputParameters input_for(const InputParameters &input, double value,
                               const std::vector<ParameterOverride> &more = {}) const;
+    /// The parameter's name on plot axes: Label, or the path when none is given.
+    std::string axis_label() const;
     /// The parameter as a CSV column name: "Model/Separations" -> "Model_Separations".
     std::string column_name() const;
   };

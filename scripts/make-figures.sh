@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Regenerate the figures the README shows (doc/figures/*.png) from the
+# examples in input/, with the build in build/. About 30 s.
+#   phase-portrait-sd.png   poundfe run input/sd-oscillator.prm (thesis Fig. 3.1 form)
+#   bifurcation-sd.png      poundfe bifurcation input/sd-bifurcation.prm (Fig. 3.2 form)
+#   p-bifurcation-sd.png    poundfe stationary-pdf input/sd-oscillator-noise.prm swept over
+#                           alpha = Springs/SD springs:6 (Figs. 3.3-3.4 form)
+#   spillway-sliding.png    poundfe run input/spillway-sliding.prm (phase portrait)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+poundfe=build/poundfe
+[ -x "$poundfe" ] || { echo "make-figures.sh: build first (scripts/setup.sh)" >&2; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p doc/figures
+
+"$poundfe" run input/sd-oscillator.prm --output "$work/sd" > /dev/null
+cp "$work/sd/phase_portrait.png" doc/figures/phase-portrait-sd.png
+
+"$poundfe" bifurcation input/sd-bifurcation.prm --output "$work/bifurcation" > /dev/null
+cp "$work/bifurcation/bifurcation.png" doc/figures/bifurcation-sd.png
+
+# The noisy SD oscillator's Stationary PDF section, made a sweep over alpha.
+sed '/^subsection Stationary PDF/a\
+  set Parameter = Springs/SD springs:6\
+  set Label     = alpha = H / L of the SD spring\
+  set Values    = linspace 0.3 1.5 13' input/sd-oscillator-noise.prm > "$work/p-bifurcation.prm"
+"$poundfe" stationary-pdf "$work/p-bifurcation.prm" --output "$work/p-bifurcation" > /dev/null
+cp "$work/p-bifurcation/p_bifurcation.png" doc/figures/p-bifurcation-sd.png
+
+"$poundfe" run input/spillway-sliding.prm --output "$work/spillway" > /dev/null
+cp "$work/spillway/phase_portrait.png" doc/figures/spillway-sliding.png
+ls -l doc/figures
