@@ -195,11 +195,22 @@ namespace poundfe
     for (StepObserver *observer : observers)
       observer->initialize(view);
 
-    RunStatus  status;
+    RunStatus     status;
+    unsigned long step = 0;
+    integrator.set_substep_callback([&]() {
+      view.set_step(step, excitation.ground_acceleration(integrator.time()));
+      for (StepObserver *observer : observers)
+        observer->observe_substep(view);
+    });
+    struct Forget // the callback refers to this call's locals
+    {
+      NewmarkIntegrator &integrator;
+      ~Forget() { integrator.set_substep_callback(nullptr); }
+    } forget{integrator};
     const auto start = std::chrono::steady_clock::now();
     try
       {
-        for (unsigned long step = 1; step <= n; ++step)
+        for (step = 1; step <= n; ++step)
           {
             if (interruptible && interruption_requested())
               {

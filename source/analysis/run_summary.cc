@@ -143,7 +143,7 @@ namespace poundfe
       {
         const Gap         &gap = model.gaps[impact.element - first];
         std::ostringstream row;
-        row.precision(10);
+        row.precision(17); // times to the nanosecond at any length of run
         row << gap.label << "," << model.buildings[gap.buildings[0]].name << "|"
             << (gap.nodes[0] >= 0 && gap.nodes[1] >= 0 ? model.buildings[gap.buildings[1]].name :
                                                          "barrier")
@@ -293,6 +293,7 @@ namespace poundfe
       .value("max_iterations_per_step", stats.max_iterations)
       .value("step_cuts", static_cast<unsigned long>(stats.step_cuts))
       .value("event_refinements", static_cast<unsigned long>(stats.event_refinements))
+      .value("contact_refinements", static_cast<unsigned long>(stats.contact_refinements))
       .value("smallest_time_step_s", stats.smallest_time_step)
       .value("steps_including_substeps", static_cast<unsigned long>(stats.steps))
       .end_object();

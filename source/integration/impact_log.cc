@@ -40,6 +40,20 @@ namespace poundfe
         impact.max_penetration      = b.penetration;
         impact.max_penetration_time = t1;
       }
+    if (a.rate > 0 && b.rate <= 0)
+      {
+        // The peak inside the step: where the linearly interpolated rate
+        // vanishes, on the cubic Hermite interpolant of the penetration
+        // through both ends' values and rates.
+        const double s = a.rate / (a.rate - b.rate), s2 = s * s, s3 = s2 * s;
+        const double peak = (2 * s3 - 3 * s2 + 1) * a.penetration + (s3 - 2 * s2 + s) * dt * a.rate +
+                            (3 * s2 - 2 * s3) * b.penetration + (s3 - s2) * dt * b.rate;
+        if (peak > impact.max_penetration)
+          {
+            impact.max_penetration      = peak;
+            impact.max_penetration_time = t0 + s * dt;
+          }
+      }
     if (!(b.force > 0))
       {
         // released: at the zero of the penetration, or (a damped law whose

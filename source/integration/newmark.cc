@@ -506,11 +506,39 @@ namespace poundfe
     stats.smallest_time_step = std::min(stats.smallest_time_step, L.dt);
   }
 
+  bool
+  NewmarkIntegrator::contact_needs_shorter_step(const Level &L) const
+  {
+    const unsigned int n = parameters.newton.steps_per_contact;
+    for (const unsigned int h : gap_elements)
+      {
+        const NonlinearElement &e = (*elements)[h];
+        // Closed, or closing within the step at the committed rate (the
+        // gap's history variable is its penetration, negative while open).
+        double duration = 0;
+        if (e.was_active())
+          duration = e.contact_duration(0);
+        else if (committed_history[h] + committed_rate[h] * L.dt > 0)
+          duration = e.contact_duration(committed_rate[h]);
+        if (duration > 0 && n * L.dt > duration)
+          return true;
+      }
+    return false;
+  }
+
   void
   NewmarkIntegrator::advance_from(const unsigned int cuts, const double t0,
                                   const LoadFunction &load)
   {
-    Level       &L  = level(cuts);
+    Level &L = level(cuts);
+    if (parameters.newton.steps_per_contact > 0 && cuts < parameters.newton.max_step_cuts &&
+        contact_needs_shorter_step(L))
+      {
+        ++stats.contact_refinements;
+        advance_from(cuts + 1, t0, load);
+        advance_from(cuts + 1, t0 + 0.5 * L.dt, load);
+        return;
+      }
     const double t1 = (cuts == 0) ? (step_count + 1) * parameters.time_step : t0 + L.dt;
     Vector &p = L.load_end; // no allocation per step
     load(t1, p);
@@ -525,6 +553,8 @@ namespace poundfe
       {
         accept(L, p);
         current_time = t1;
+        if (cuts > 0 && substep_callback)
+          substep_callback();
         return;
       }
     for (unsigned int h = 0; h < n_elements; ++h)

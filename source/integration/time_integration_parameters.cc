@@ -74,6 +74,13 @@ namespace poundfe
                       "A step in which a contact starts or ends is redone in 2^r "
                       "sub-steps around the event, which is then located inside the "
                       "sub-step by interpolation.", Patterns::Integer(0, 12));
+    prm.add_parameter("Steps per contact", newmark.newton.steps_per_contact,
+                      "While a gap is closed, or about to close, the step is halved until "
+                      "the impact's duration spans at least this many steps (the duration "
+                      "of an elastic impact of the effective mass: pi sqrt(m_e / k) for the "
+                      "linear laws, 2.94 delta_max / v0 for the Hertz laws and Jankowski's, "
+                      "at the approach velocity v0); at most Time integration/Maximum step "
+                      "cuts halvings. 0: off.", Patterns::Integer(0, 10000));
   }
 
   void

@@ -49,6 +49,33 @@ namespace poundfe
     return trial.penetration > 0 ? elastic_energy(trial.penetration) : 0.0;
   }
 
+  namespace
+  {
+    double
+    impact_duration(const ContactLawParameters &p, const bool linear, const double v0)
+    {
+      const double m = p.effective_mass;
+      if (linear)
+        return M_PI * std::sqrt(m / p.stiffness);
+      return v0 > 0 ? 2.9432 * std::pow(1.25 * m * v0 * v0 / p.stiffness, 0.4) / v0 : 0.0;
+    }
+  } // namespace
+
+  double
+  elastic_impact_duration(const ContactLawParameters &p, const double v0)
+  {
+    return impact_duration(p, contact_law_type(p.law).linear_impact_duration, v0);
+  }
+
+  double
+  ContactLaw::contact_duration(const double closing_rate) const
+  {
+    if (linear_impact < 0) // looked up once: the registry search compares names
+      linear_impact = contact_law_type(p.law).linear_impact_duration;
+    return impact_duration(p, linear_impact > 0,
+                           was_active() ? committed.approach_velocity : closing_rate);
+  }
+
   double
   simulate_restitution(const ContactLawParameters &parameters, const double v0)
   {
@@ -56,13 +83,8 @@ namespace poundfe
     q.initial_gap          = 0;
     auto         law       = make_contact_law(q);
     const double m         = q.effective_mass;
-    // Duration scale of the elastic impact (linear: pi sqrt(m/k); Hertz:
-    // 2.94 delta_max / v0), resolved by 20000 steps.
-    const bool   linear = contact_law_type(q.law).linear_impact_duration;
-    const double duration =
-      linear ? M_PI * std::sqrt(m / q.stiffness) :
-               2.9432 * std::pow(1.25 * m * v0 * v0 / q.stiffness, 0.4) / v0;
-    const double h = duration / 20000;
+    // The elastic impact, resolved by 20000 steps.
+    const double h = elastic_impact_duration(q, v0) / 20000;
     // approach from just outside the wall: delta = 0, rate v0
     law->set_trial(0, v0);
     law->commit();

@@ -108,6 +108,11 @@ namespace poundfe
     /// event, located by cutting the step.
     virtual int phase() const { return is_active(); }
     virtual int committed_phase() const { return was_active(); }
+    /// Contact: the duration of an impact, which the integrator resolves by
+    /// `Steps per contact` steps. At the committed state: of the contact
+    /// under way, or, when open, of one that would begin at `closing_rate`
+    /// (m/s, > 0 approaching). 0: not a contact, or no impact at that rate.
+    virtual double contact_duration(double /*closing_rate*/) const { return 0; }
 
     // What observers and outputs read: scalar measures of the trial state,
     // which is the committed state between steps.

@@ -48,6 +48,10 @@ namespace poundfe
     bool   was_active() const override { return law->was_active(); }
     int    phase() const override { return law->phase(); }
     int    committed_phase() const override { return law->committed_phase(); }
+    double contact_duration(const double closing_rate) const override
+    {
+      return law->contact_duration(closing_rate);
+    }
 
     double force() const override { return law->force(); }
     double deformation(const Eigen::VectorXd &u) const override;

@@ -2,8 +2,11 @@
 // with every accepted (sub-)step. Onset and release are located inside the
 // step by linear interpolation of the penetration to zero (the integrator
 // has already cut the step around the event, see Event refinement), the
-// velocities at those instants by interpolating the rate. The impulse is
-// the trapezoidal integral of the contact force.
+// velocities at those instants by interpolating the rate. The maximum
+// penetration and its time are those of the cubic Hermite interpolant of
+// the penetration (values and rates at both ends) where the interpolated
+// rate vanishes. The impulse is the trapezoidal integral of the contact
+// force.
 #ifndef poundfe_integration_impact_log_h
 #define poundfe_integration_impact_log_h
 

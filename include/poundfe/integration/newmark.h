@@ -54,6 +54,10 @@ namespace poundfe
     /// A step in which a gap opens or closes is redone as 2^r sub-steps
     /// around the event.
     unsigned int event_refinement   = 4;
+    /// While a gap is closed, or about to close within the step, the step
+    /// is halved until the impact's duration (NonlinearElement::
+    /// contact_duration) spans at least this many steps; 0: off.
+    unsigned int steps_per_contact  = 20;
   };
 
   struct NewmarkParameters
@@ -93,6 +97,7 @@ namespace poundfe
     unsigned int  max_iterations = 0;
     unsigned long step_cuts  = 0;
     unsigned long event_refinements = 0; // steps cut to locate a contact or stick-slip event
+    unsigned long contact_refinements = 0; // steps halved to resolve a contact in time
     double        smallest_time_step = 0;
   };
 
@@ -125,6 +130,13 @@ namespace poundfe
     /// gives p at any time in the step. Throws NumericalError (with the
     /// time, the step size reached and where) if even the smallest step fails.
     void advance(const LoadFunction &load);
+    /// Called after every accepted sub-step of a step that was cut (to
+    /// resolve a contact, locate an event or converge), the state being
+    /// that sub-step's end; peaks between the steps come from there.
+    void set_substep_callback(std::function<void()> callback)
+    {
+      substep_callback = std::move(callback);
+    }
     /// Advance one step under p(t_{n+1}) = load (constant over a cut step).
     void advance(const Vector &load);
 
@@ -174,6 +186,10 @@ namespace poundfe
     bool   try_step(Level &L, const Vector &load_next);
     void   accept(const Level &L, const Vector &load_next);
     void   advance_from(unsigned int cuts, double t0, const LoadFunction &load);
+    /// Whether a step of L.dt from the committed state would not resolve a
+    /// contact under way, or one predicted to begin in it, by Steps per
+    /// contact steps.
+    bool   contact_needs_shorter_step(const Level &L) const;
     bool   evaluate_elements(const Vector &u_trial, const Vector &v_trial, const Level &L);
     void   update_energy_error();
     /// a from M a = p - C v - K u - f(u, v) at the current u, v (the
@@ -216,6 +232,7 @@ namespace poundfe
     ImpactLog                 impacts;
     StickSlipLog              stick_slip;
     std::string failure;
+    std::function<void()> substep_callback;
     std::vector<std::string> equation_names;
     double      current_time = 0;
     unsigned long step_count = 0;

@@ -48,6 +48,9 @@ namespace poundfe
     double initial_stiffness() const override { return 0; }
     bool   is_active() const override { return trial.force > 0; }
     bool   was_active() const override { return committed.force > 0; }
+    /// elastic_impact_duration at the approach velocity of the committed
+    /// contact, or at `closing_rate` when open.
+    double contact_duration(double closing_rate) const override;
     void   commit() override { committed = trial; }
     void   revert() override { trial = committed; }
     void   reset() override;
@@ -75,6 +78,8 @@ namespace poundfe
       double approach_velocity = 0;
     };
     State committed, trial;
+    /// Whether the registry says impacts last pi sqrt(m/k); -1: not looked up yet.
+    mutable int linear_impact = -1;
   };
 
   /// A contact law as the program knows it: the registry holds one per
@@ -95,6 +100,13 @@ namespace poundfe
     /// rather than 2.94 delta_max / v0 (Hertz): simulate_restitution's scale.
     bool linear_impact_duration = false;
   };
+
+  /// The duration of an elastic impact of the effective mass m on the law's
+  /// spring at approach velocity v0: pi sqrt(m / k) for a linear law, and
+  /// for a Hertz law (k delta^1.5) 2.9432 delta_max / v0 with delta_max =
+  /// (5 m v0^2 / (4 k))^(2/5) (Goldsmith 1960, Impact, §4.2). 0 if v0 <= 0
+  /// for a Hertz law.
+  double elastic_impact_duration(const ContactLawParameters &parameters, double v0);
 
   /// Add a law to the registry; a name can be registered once.
   void register_contact_law(ContactLawType type);

@@ -53,6 +53,9 @@ namespace poundfe
     /// open 0, closed 1; friction: stick 0, slip -1 or +1). A change within
     /// a step is an event the integrator locates by cutting the step.
     virtual int phase() const { return is_active(); }
+    /// Contact: how long an impact lasts, for the integrator to resolve it
+    /// (see NonlinearElement::contact_duration); 0: not a contact.
+    virtual double contact_duration(double /*closing_rate*/) const { return 0; }
     virtual int committed_phase() const { return was_active(); }
 
     virtual void commit() = 0;

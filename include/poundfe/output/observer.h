@@ -88,6 +88,10 @@ namespace poundfe
     virtual ~StepObserver() = default;
     virtual void initialize(const ResponseView &state) { observe_step(state); }
     virtual void observe_step(const ResponseView &state) = 0;
+    /// The end of a sub-step inside a step that was cut (a contact resolved
+    /// in time, an event located, a step halved to converge): for what
+    /// must not miss a peak between steps. Recorders keep to the steps.
+    virtual void observe_substep(const ResponseView &) {}
     virtual void finish(const ResponseView &, const RunStatus &) {}
   };
 

@@ -22,6 +22,8 @@ namespace poundfe
     /// Forgets the peaks of an earlier run, then observes the initial state.
     void initialize(const ResponseView &state) override;
     void observe_step(const ResponseView &state) override;
+    /// Peaks inside a contact fall between the steps.
+    void observe_substep(const ResponseView &state) override { observe_step(state); }
     void finish(const ResponseView &state, const RunStatus &status) override;
 
     /// The floor response at the last observed step and its peaks.
