@@ -294,6 +294,8 @@ namespace poundfe
       .value("step_cuts", static_cast<unsigned long>(stats.step_cuts))
       .value("event_refinements", static_cast<unsigned long>(stats.event_refinements))
       .value("contact_refinements", static_cast<unsigned long>(stats.contact_refinements))
+      .value("woodbury_solves", static_cast<unsigned long>(stats.woodbury_solves))
+      .value("refactorizations", static_cast<unsigned long>(stats.refactorizations))
       .value("smallest_time_step_s", stats.smallest_time_step)
       .value("steps_including_substeps", static_cast<unsigned long>(stats.steps))
       .end_object();

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace poundfe
@@ -11,7 +12,8 @@ namespace poundfe
   LowRankUpdateSolver::initialize(LinearSolver                    &factorised,
                                   const std::vector<SparseColumn> &columns,
                                   const unsigned int               n_rows,
-                                  const std::vector<unsigned int> &block_sizes)
+                                  const std::vector<unsigned int> &block_sizes,
+                                  const unsigned int               max_columns)
   {
     base                 = &factorised;
     const unsigned int m = columns.size();
@@ -45,25 +47,74 @@ namespace poundfe
     AssertThrow(block_start.back() == m,
                 dealii::ExcMessage("the block sizes must add up to the number of columns"));
 
-    W.resize(n_rows, m);
-    G.resize(m, m);
-    S.resize(m, m);
+    const unsigned int n_slots = (max_columns == 0 || max_columns >= m) ? m : max_columns;
+    W.resize(n_rows, n_slots);
+    G.resize(n_slots, n_slots);
+    S.resize(std::min(m, n_slots), std::min(m, n_slots));
     y.resize(n_rows);
     bty.resize(m);
     rhs_small.resize(m);
+    column_buffer.resize(n_rows);
+    w_buffer.resize(n_rows);
     active.reserve(m);
-    Vector w(n_rows), column(n_rows);
-    for (unsigned int c = 0; c < m; ++c)
+    is_active.assign(m, 0);
+    slot_of.assign(m, -1);
+    column_in.assign(n_slots, -1);
+    columns_computed = 0;
+    if (n_slots == m) // every column in its own slot, computed now
       {
-        column.setZero();
-        for (unsigned int q = column_start[c]; q < column_start[c + 1]; ++q)
-          column[entry_row[q]] += entry_value[q];
-        base->solve(column, w);
-        W.col(c) = w;
+        for (unsigned int c = 0; c < m; ++c)
+          {
+            column_buffer.setZero();
+            for (unsigned int q = column_start[c]; q < column_start[c + 1]; ++q)
+              column_buffer[entry_row[q]] += entry_value[q];
+            base->solve(column_buffer, w_buffer);
+            W.col(c)     = w_buffer;
+            slot_of[c]   = c;
+            column_in[c] = c;
+          }
+        for (unsigned int c = 0; c < m; ++c)
+          for (unsigned int g = 0; g < m; ++g)
+            G(c, g) = column_dot(c, W.col(g));
+        columns_computed = m;
       }
-    for (unsigned int c = 0; c < m; ++c)
-      for (unsigned int g = 0; g < m; ++g)
-        G(c, g) = column_dot(c, W.col(g));
+  }
+
+  void
+  LowRankUpdateSolver::compute_column(const unsigned int c, const unsigned int slot)
+  {
+    if (const int old = column_in[slot]; old >= 0)
+      slot_of[old] = -1;
+    column_buffer.setZero();
+    for (unsigned int q = column_start[c]; q < column_start[c + 1]; ++q)
+      column_buffer[entry_row[q]] += entry_value[q];
+    base->solve(column_buffer, w_buffer);
+    W.col(slot)     = w_buffer;
+    slot_of[c]      = slot;
+    column_in[slot] = c;
+    ++columns_computed;
+    for (unsigned int t = 0; t < column_in.size(); ++t)
+      if (const int g = column_in[t]; g >= 0)
+        {
+          G(slot, t) = column_dot(c, W.col(t));
+          G(t, slot) = column_dot(g, W.col(slot));
+        }
+  }
+
+  bool
+  LowRankUpdateSolver::fill_slots()
+  {
+    if (active.size() > column_in.size())
+      return false;
+    unsigned int next = 0; // slots are searched once, in order, for room
+    for (const unsigned int c : active)
+      if (slot_of[c] < 0)
+        {
+          while (column_in[next] >= 0 && is_active[column_in[next]])
+            ++next;
+          compute_column(c, next++);
+        }
+    return true;
   }
 
   double
@@ -75,11 +126,12 @@ namespace poundfe
     return value;
   }
 
-  void
+  bool
   LowRankUpdateSolver::solve(const Vector &r, const std::vector<double> &d, Vector &x)
   {
     AssertDimension(d.size(), d_offset.back());
-    base->solve(r, y);
+    for (const unsigned int c : active)
+      is_active[c] = 0;
     active.clear();
     for (unsigned int e = 0; e + 1 < block_start.size(); ++e)
       {
@@ -93,11 +145,16 @@ namespace poundfe
               break;
             }
       }
+    for (const unsigned int c : active)
+      is_active[c] = 1;
+    if (!fill_slots())
+      return false;
+    base->solve(r, y);
     const unsigned int k = active.size();
     if (k == 0)
       {
         x = y;
-        return;
+        return true;
       }
 
     // S = I + D_a G_aa and rhs = D_a B_a^T y. Row a is row i of its block
@@ -118,21 +175,26 @@ namespace poundfe
           rhs += D[i + j * size] * bty[first + j];
         rhs_small[a] = rhs;
         if (size == 1) // the common case, kept lean
-          for (unsigned int b = 0; b < k; ++b)
-            S(a, b) = (a == b ? 1.0 : 0.0) + D[0] * G(c, active[b]);
+          {
+            const int row = slot_of[c];
+            for (unsigned int b = 0; b < k; ++b)
+              S(a, b) = (a == b ? 1.0 : 0.0) + D[0] * G(row, slot_of[active[b]]);
+          }
         else
           for (unsigned int b = 0; b < k; ++b)
             {
-              double value = D[i] * G(block_start[e], active[b]);
+              const int column = slot_of[active[b]];
+              double    value  = D[i] * G(slot_of[block_start[e]], column);
               for (unsigned int j = 1; j < size; ++j)
-                value += D[i + j * size] * G(block_start[e] + j, active[b]);
+                value += D[i + j * size] * G(slot_of[block_start[e] + j], column);
               S(a, b) = (a == b ? 1.0 : 0.0) + value;
             }
       }
     solve_capacitance(k);
     x = y;
     for (unsigned int a = 0; a < k; ++a)
-      x.noalias() -= rhs_small[a] * W.col(active[a]);
+      x.noalias() -= rhs_small[a] * W.col(slot_of[active[a]]);
+    return true;
   }
 
   void

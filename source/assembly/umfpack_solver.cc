@@ -1,47 +1,59 @@
+// UMFPACK (Davis 2004, ACM TOMS 30(2):196-199) on the effective matrix
+// through its C interface: the symbolic analysis (column ordering and
+// elimination tree) once per pattern in analyze(), a numeric factorisation
+// in each factorize() that reuses it. That is what the refactorising
+// tangent updates need: a model with thousands of nonlinear elements
+// refactorises in every Newton iteration, always with the same pattern.
+// (deal.II's SparseDirectUMFPACK redoes the symbolic analysis each time.)
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/vector.h>
+#include <suitesparse/umfpack.h>
 
-#include "dealii_matrix.h"
+#include <vector>
 
 namespace poundfe
 {
   namespace
   {
-    // deal.II's UMFPACK wrapper redoes the symbolic analysis in every
-    // factorize(); we only factorise once per run, so that is acceptable.
     class UmfpackSolver : public LinearSolver
     {
     public:
+      UmfpackSolver() { umfpack_di_defaults(control); }
+      ~UmfpackSolver() override { release(); }
+
       void
       analyze(const SparseMatrix &matrix) override
       {
-        copy_pattern(matrix, pattern);
-        values.reinit(pattern);
-        rhs.reinit(matrix.rows());
+        release();
+        // Eigen's compressed column storage is UMFPACK's: sorted rows per column.
+        const int n = matrix.rows();
+        column_start.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + n + 1);
+        row.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
+        value.assign(matrix.valuePtr(), matrix.valuePtr() + matrix.nonZeros());
+        if (umfpack_di_symbolic(n, n, column_start.data(), row.data(), value.data(), &symbolic,
+                                control, nullptr) != UMFPACK_OK)
+          throw NumericalError("UMFPACK: the symbolic analysis of the effective matrix failed");
       }
       void
       factorize(const SparseMatrix &matrix) override
       {
-        copy_values(matrix, values);
-        try
-          {
-            umfpack.initialize(values);
-          }
-        catch (const dealii::ExceptionBase &)
-          {
-            throw NumericalError("UMFPACK: the effective matrix is singular");
-          }
+        value.assign(matrix.valuePtr(), matrix.valuePtr() + matrix.nonZeros());
+        if (numeric)
+          umfpack_di_free_numeric(&numeric);
+        const int status = umfpack_di_numeric(column_start.data(), row.data(), value.data(),
+                                              symbolic, &numeric, control, nullptr);
+        if (status != UMFPACK_OK)
+          throw NumericalError(status == UMFPACK_WARNING_singular_matrix ?
+                                 "UMFPACK: the effective matrix is singular" :
+                                 "UMFPACK: the numeric factorisation failed");
       }
       void
       solve(const Vector &b, Vector &x) override
       {
-        std::copy(b.data(), b.data() + b.size(), rhs.begin());
-        umfpack.solve(rhs);
         x.resize(b.size());
-        std::copy(rhs.begin(), rhs.end(), x.data());
+        umfpack_di_solve(UMFPACK_A, column_start.data(), row.data(), value.data(), x.data(),
+                         b.data(), numeric, control, nullptr);
       }
       std::string
       name() const override
@@ -50,10 +62,21 @@ namespace poundfe
       }
 
     private:
-      dealii::SparsityPattern      pattern;
-      dealii::SparseMatrix<double> values;
-      dealii::SparseDirectUMFPACK  umfpack;
-      dealii::Vector<double>       rhs;
+      void
+      release()
+      {
+        if (numeric)
+          umfpack_di_free_numeric(&numeric);
+        if (symbolic)
+          umfpack_di_free_symbolic(&symbolic);
+        numeric = symbolic = nullptr;
+      }
+
+      double           control[UMFPACK_CONTROL];
+      std::vector<int> column_start, row;
+      std::vector<double> value; // the factorised values (iterative refinement uses them)
+      void            *symbolic = nullptr;
+      void            *numeric  = nullptr;
     };
   } // namespace
 

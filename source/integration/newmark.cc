@@ -24,10 +24,14 @@ namespace poundfe
     SparseMatrix                  effective;
     std::vector<double>           base_values;
     std::unique_ptr<LinearSolver> solver;
+    /// hybrid: the assembled tangent's factorisation (same pattern).
+    std::unique_ptr<LinearSolver> tangent_solver;
     LowRankUpdateSolver           woodbury;
     // refactorize: position of entry (i, j) of each element in effective's
     // values at [i n_dofs + j], -1 for the ground
     std::vector<std::vector<int>> entry_index;
+    /// `effective` holds an assembled tangent, not K_eff (refactorize, hybrid).
+    bool holds_tangent = false;
     /// p at the end of a step of this size; the sub-steps of a cut step
     /// use their own level's, so it stays valid across them.
     Vector load_end;
@@ -70,7 +74,10 @@ namespace poundfe
     // rank (one per uniaxial element), stays small.
     const TangentUpdate mode = parameters.newton.tangent_update;
     use_woodbury             = mode == TangentUpdate::woodbury ||
-                   (mode == TangentUpdate::automatic && total_rank <= 100);
+                   (mode == TangentUpdate::automatic &&
+                    total_rank <= parameters.newton.woodbury_columns);
+    use_hybrid = n_elements > 0 && !use_woodbury &&
+                 (mode == TangentUpdate::hybrid || mode == TangentUpdate::automatic);
     if (!use_woodbury && !symmetric && solver_name == "eigen-ldlt")
       throw InputError("", 0, "Time integration/Linear solver",
                        "refactorising a nonsymmetric element tangent needs an LU solver "
@@ -82,6 +89,7 @@ namespace poundfe
     for (Vector *x : {&local_u, &local_v, &correction})
       x->setZero(dof_start.back());
     tangent_change.assign(d_start.back(), 0.0);
+    frozen_tangent_change.assign(d_start.back(), 0.0);
     for (auto *x : {&work, &supplied_work, &committed_force, &committed_history, &committed_rate})
       x->assign(n_elements, 0.0);
     level(0);
@@ -94,7 +102,8 @@ namespace poundfe
   {
     static const NameTable<TangentUpdate> table({{TangentUpdate::automatic, "auto"},
                                                  {TangentUpdate::woodbury, "woodbury"},
-                                                 {TangentUpdate::refactorize, "refactorize"}});
+                                                 {TangentUpdate::refactorize, "refactorize"},
+                                                 {TangentUpdate::hybrid, "hybrid"}});
     return table;
   }
 
@@ -135,7 +144,7 @@ namespace poundfe
     L->effective.makeCompressed();
     L->solver = create_linear_solver(solver_name);
     L->solver->analyze_and_factorize(L->effective);
-    if (n_elements > 0 && use_woodbury)
+    if (n_elements > 0 && (use_woodbury || use_hybrid))
       {
         // B: the columns of every B_e on the element's equations
         std::vector<SparseColumn> columns;
@@ -156,10 +165,16 @@ namespace poundfe
               }
             ranks.push_back(basis[h].cols());
           }
-        L->woodbury.initialize(*L->solver, columns, system.n_equations(), ranks);
+        L->woodbury.initialize(*L->solver, columns, system.n_equations(), ranks,
+                               use_hybrid ? parameters.newton.woodbury_columns : 0);
       }
-    else if (n_elements > 0)
+    if (n_elements > 0 && !use_woodbury)
       {
+        if (use_hybrid) // the tangent gets its own factorisation; K_eff's stays
+          {
+            L->tangent_solver = create_linear_solver(solver_name);
+            L->tangent_solver->analyze(L->effective);
+          }
         L->base_values.assign(L->effective.valuePtr(),
                               L->effective.valuePtr() + L->effective.nonZeros());
         L->entry_index.resize(n_elements);
@@ -315,12 +330,12 @@ namespace poundfe
   }
 
   double
-  NewmarkIntegrator::tangent_change_entry(const unsigned int h, const unsigned int i,
-                                          const unsigned int j) const
+  NewmarkIntegrator::tangent_change_entry(const std::vector<double> &d, const unsigned int h,
+                                          const unsigned int i, const unsigned int j) const
   {
     const Eigen::MatrixXd &B = basis[h];
     const unsigned int     r = B.cols();
-    const double          *D = tangent_change.data() + d_start[h]; // D(a, b) = D[a + b r]
+    const double          *D = d.data() + d_start[h]; // D(a, b) = D[a + b r]
     // from the first term, so that a rank-one element adds exactly d b_i b_j
     double value = D[0] * B(i, 0) * B(j, 0);
     for (unsigned int b = 0; b < r; ++b)
@@ -370,13 +385,17 @@ namespace poundfe
     if (!friction_elements.empty())
       u_next.noalias() += L.dt * v;
     double first_residual = 0, first_energy = 0;
+    bool   tangent_factorised = false; // this step's, for modified Newton
     for (unsigned int it = 0;; ++it)
       {
         kinematics();
         if (!evaluate_elements(u_next, v_next, L))
           return false;
-        if (!use_woodbury) // L.effective holds the last tangent: restore K_eff
-          std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
+        if (L.holds_tangent) // restore K_eff
+          {
+            std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
+            L.holds_tangent = false;
+          }
         residual.noalias() = rhs - L.effective * u_next;
         subtract_element_forces(residual);
         const double norm = residual.norm();
@@ -415,26 +434,49 @@ namespace poundfe
             return false;
           }
 
-        if (use_woodbury)
-          L.woodbury.solve(residual, tangent_change, increment);
-        else
+        // Modified Newton: the step's first tangent for all its iterations.
+        const bool modified = newton.modified_newton;
+        if (modified && it == 0)
+          frozen_tangent_change = tangent_change;
+        const std::vector<double> &d = modified ? frozen_tangent_change : tangent_change;
+        bool solved = false;
+        if (use_woodbury || use_hybrid)
           {
-            double *values = L.effective.valuePtr();
-            for (unsigned int h = 0; h < n_elements; ++h)
-              {
-                const unsigned int k = (*elements)[h].n_dofs();
-                for (unsigned int i = 0; i < k; ++i)
-                  for (unsigned int j = 0; j < k; ++j)
-                    if (const int index = L.entry_index[h][i * k + j]; index >= 0)
-                      values[index] += tangent_change_entry(h, i, j);
-              }
-            L.solver->factorize(L.effective);
-            L.solver->solve(residual, increment);
+            solved = L.woodbury.solve(residual, d, increment);
+            stats.woodbury_solves += solved;
+          }
+        if (!solved)
+          {
+            solve_with_assembled_tangent(L, d, modified && tangent_factorised);
+            tangent_factorised = true;
           }
         if (it == 0)
           first_energy = std::abs(increment.dot(residual));
         u_next += increment;
       }
+  }
+
+  void
+  NewmarkIntegrator::solve_with_assembled_tangent(Level &L, const std::vector<double> &d,
+                                                  const bool reuse)
+  {
+    LinearSolver &solver = use_hybrid ? *L.tangent_solver : *L.solver;
+    if (!reuse)
+      {
+        double *values = L.effective.valuePtr();
+        for (unsigned int h = 0; h < n_elements; ++h)
+          {
+            const unsigned int k = (*elements)[h].n_dofs();
+            for (unsigned int i = 0; i < k; ++i)
+              for (unsigned int j = 0; j < k; ++j)
+                if (const int index = L.entry_index[h][i * k + j]; index >= 0)
+                  values[index] += tangent_change_entry(d, h, i, j);
+          }
+        L.holds_tangent = true;
+        solver.factorize(L.effective);
+        ++stats.refactorizations;
+      }
+    solver.solve(residual, increment);
   }
 
   void
@@ -447,8 +489,11 @@ namespace poundfe
     Vector       vn = v + L.dt * ((1 - g) * a + g * an);
     if (!evaluate_elements(u_trial, vn, L))
       throw NumericalError(failure);
-    if (!use_woodbury)
-      std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
+    if (L.holds_tangent)
+      {
+        std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
+        L.holds_tangent = false;
+      }
     residual_out = load - system.mass * an - system.damping * vn - system.stiffness * u_trial;
     subtract_element_forces(residual_out);
     tangent_out = Eigen::MatrixXd(L.effective);
@@ -458,7 +503,7 @@ namespace poundfe
         for (unsigned int i = 0; i < equations.size(); ++i)
           for (unsigned int j = 0; j < equations.size(); ++j)
             if (equations[i] >= 0 && equations[j] >= 0)
-              tangent_out(equations[i], equations[j]) += tangent_change_entry(h, i, j);
+              tangent_out(equations[i], equations[j]) += tangent_change_entry(tangent_change, h, i, j);
       }
     for (unsigned int h = 0; h < n_elements; ++h)
       (*elements)[h].revert();

@@ -52,9 +52,22 @@ namespace poundfe
                "How the tangent of nonlinear elements enters the solve: woodbury "
                "keeps the one factorisation of the linear part and adds a dense "
                "correction whose rank is the total tangent rank of the nonlinear "
-               "elements (one per uniaxial element); refactorize refactorises every "
-               "iteration; auto picks woodbury up to a total rank of 100.",
+               "elements (one per uniaxial element); refactorize adds the tangents "
+               "into the matrix and refactorises every iteration (the symbolic "
+               "analysis done once); hybrid uses woodbury while the elements whose "
+               "tangent differs from their initial one (the active rank) fit in "
+               "Woodbury columns, and refactorises when they do not; auto picks "
+               "woodbury up to a total rank of Woodbury columns, else hybrid.",
                tangent_update_names());
+    prm.add_parameter("Woodbury columns", newmark.newton.woodbury_columns,
+                      "The most columns of A^-1 B the Woodbury update keeps (a dense "
+                      "equations x columns block, 8 bytes each): the limit of auto and "
+                      "hybrid.", Patterns::Integer(1, 100000));
+    prm.add_parameter("Modified Newton", newmark.newton.modified_newton,
+                      "Form and factorise the tangent at the first iteration of a step and "
+                      "reuse it for the step's other iterations: no refactorisation after "
+                      "the first, but linear instead of quadratic convergence (raise "
+                      "Newton maximum iterations).");
     add_choice(prm, "Hysteresis integration", hysteresis_integration,
                "Bouc-Wen z over a step: trapezoidal (second order) or "
                "backward-euler (first order, most robust).",

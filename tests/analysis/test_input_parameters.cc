@@ -37,7 +37,7 @@ BOOST_AUTO_TEST_CASE(help_lists_the_allowed_values)
         "Allowed: none, jennings, saragoni-hart, shinozuka-sato.", "Allowed: g, m/s^2.",
         "Allowed: eigen-ldlt, umfpack, petsc, trilinos.",
         "Allowed: peak drift ratio, peak roof displacement, peak contact force.",
-        "Allowed: auto, woodbury, refactorize.", "up to a total rank of 100"})
+        "Allowed: auto, woodbury, refactorize, hybrid.", "up to a total rank of Woodbury columns"})
     BOOST_TEST(help.find(allowed) != std::string::npos, allowed);
 }
 

@@ -9,6 +9,12 @@
 // (rather than D^{-1} + G) stays valid when some D_e are singular, vanish
 // or change sign. Per call: one solve with A and a dense LU of size
 // sum_a r_e; nothing is allocated.
+// With many elements, W (n x m, dense) would not fit: then at most
+// `max_columns` columns of W (and their entries of G) are kept, each
+// computed the first time its block is active (one solve with A), and a
+// column whose block is inactive makes room for a new one. A call whose
+// active columns exceed max_columns returns false: the caller solves with
+// the assembled tangent instead (Newmark's `hybrid` tangent update).
 #ifndef poundfe_assembly_low_rank_update_h
 #define poundfe_assembly_low_rank_update_h
 
@@ -34,21 +40,33 @@ namespace poundfe
     /// object is used. `block_sizes` (r_e, summing to the number of
     /// columns) groups consecutive columns into the blocks of D; empty:
     /// every block has one column (D diagonal).
+    /// `max_columns` (0: all) bounds the columns of W kept; all are
+    /// computed here when it covers them, else each when first needed.
     void initialize(LinearSolver &factorised, const std::vector<SparseColumn> &columns,
-                    unsigned int n_rows, const std::vector<unsigned int> &block_sizes = {});
+                    unsigned int n_rows, const std::vector<unsigned int> &block_sizes = {},
+                    unsigned int max_columns = 0);
 
     /// x = (A + B D B^T)^{-1} r; `d` holds the blocks D_e one after
-    /// another, each column-major. Throws NumericalError if the capacitance
-    /// matrix is singular.
-    void solve(const Vector &r, const std::vector<double> &d, Vector &x);
+    /// another, each column-major. Returns false (x untouched) when the
+    /// active columns exceed max_columns. Throws NumericalError if the
+    /// capacitance matrix is singular.
+    bool solve(const Vector &r, const std::vector<double> &d, Vector &x);
 
     unsigned int n_columns() const { return column_block.size(); }
     /// Columns of the active blocks in the last solve.
     unsigned int n_active() const { return active.size(); }
+    /// Columns of W computed so far (each one solve with A).
+    unsigned long n_columns_computed() const { return columns_computed; }
 
   private:
     /// b^T v of column c.
     double column_dot(unsigned int c, const Eigen::Ref<const Vector> &v) const;
+    /// A slot of W for each active column, computing the missing ones.
+    /// False if they do not fit.
+    bool   fill_slots();
+    /// Column c of W into `slot`, with its entries of G against the
+    /// columns in the other slots.
+    void   compute_column(unsigned int c, unsigned int slot);
     /// Gaussian elimination with partial pivoting of the leading k x k
     /// block of S, applied to rhs_small, which becomes z.
     void   solve_capacitance(unsigned int k);
@@ -61,9 +79,13 @@ namespace poundfe
     // Block e has columns [block_start[e], block_start[e + 1]) and its D_e
     // at d[d_offset[e]]; column c is in block column_block[c].
     std::vector<unsigned int> block_start, d_offset, column_block;
+    // W and G by slot: slot_of[c] (-1: not kept), column_in[s] (-1: free)
     Eigen::MatrixXd           W, G, S;
-    Vector                    y, bty, rhs_small;
+    Vector                    y, bty, rhs_small, column_buffer, w_buffer;
     std::vector<unsigned int> active;
+    std::vector<int>          slot_of, column_in;
+    std::vector<char>         is_active;
+    unsigned long             columns_computed = 0;
   };
 } // namespace poundfe
 

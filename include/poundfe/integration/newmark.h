@@ -37,9 +37,10 @@ namespace poundfe
   /// How the tangent of the nonlinear elements enters the solve.
   enum class TangentUpdate
   {
-    automatic,  // woodbury up to a total tangent rank of 100, else refactorize
-    woodbury,   // one factorisation of K_eff and a dense low-rank correction
-    refactorize // add the element tangents to K_eff and refactorise
+    automatic,   // woodbury up to a total tangent rank of Woodbury columns, else hybrid
+    woodbury,    // one factorisation of K_eff and a dense low-rank correction
+    refactorize, // add the element tangents to K_eff and refactorise
+    hybrid       // woodbury while the active rank fits Woodbury columns, else refactorise
   };
 
   const NameTable<TangentUpdate> &tangent_update_names();
@@ -51,6 +52,12 @@ namespace poundfe
     unsigned int max_iterations     = 20;
     unsigned int max_step_cuts      = 10;
     TangentUpdate tangent_update    = TangentUpdate::automatic;
+    /// The most columns of A^-1 B the Woodbury update keeps (n x this,
+    /// dense): the limit of `automatic` and `hybrid`.
+    unsigned int woodbury_columns   = 100;
+    /// Factorise the tangent at a step's first iteration only and reuse it
+    /// for the step's other iterations (modified Newton).
+    bool         modified_newton    = false;
     /// A step in which a gap opens or closes is redone as 2^r sub-steps
     /// around the event.
     unsigned int event_refinement   = 4;
@@ -98,6 +105,8 @@ namespace poundfe
     unsigned long step_cuts  = 0;
     unsigned long event_refinements = 0; // steps cut to locate a contact or stick-slip event
     unsigned long contact_refinements = 0; // steps halved to resolve a contact in time
+    unsigned long woodbury_solves  = 0; // Newton iterations solved by the Woodbury update
+    unsigned long refactorizations = 0; // numeric factorisations of the tangent
     double        smallest_time_step = 0;
   };
 
@@ -176,7 +185,8 @@ namespace poundfe
     /// The update in use (never automatic).
     TangentUpdate tangent_update() const
     {
-      return use_woodbury ? TangentUpdate::woodbury : TangentUpdate::refactorize;
+      return use_woodbury ? TangentUpdate::woodbury :
+                            (use_hybrid ? TangentUpdate::hybrid : TangentUpdate::refactorize);
     }
     std::string linear_solver_name() const;
 
@@ -200,7 +210,13 @@ namespace poundfe
     /// r -= sum_e (f_e - K_ref,e u_e) at the last evaluated trial state.
     void   subtract_element_forces(Vector &r) const;
     /// Entry (i, j) of element h's B_e D_e B_e^T at the last evaluation.
-    double tangent_change_entry(unsigned int h, unsigned int i, unsigned int j) const;
+    /// Entry (i, j) of element h's B_e D_e B_e^T, D from `d` (laid out as
+    /// tangent_change).
+    double tangent_change_entry(const std::vector<double> &d, unsigned int h, unsigned int i,
+                                unsigned int j) const;
+    /// Solve the Newton correction with the assembled tangent D = `d`:
+    /// add it into K_eff and factorise (unless `reuse`), then solve.
+    void   solve_with_assembled_tangent(Level &L, const std::vector<double> &d, bool reuse);
 
     const LinearSystem &system;
     std::string         solver_name;
@@ -208,6 +224,7 @@ namespace poundfe
     NonlinearElements  *elements   = nullptr;
     unsigned int        n_elements = 0;
     bool                use_woodbury = true;
+    bool                use_hybrid   = false;
     // Element h's local DOFs are [dof_start[h], dof_start[h + 1]) of the
     // local vectors, its D_e is at tangent_change[d_start[h]] (column-major),
     // its B_e is basis[h]; local DOF q has the equation local_equation[q].
@@ -223,6 +240,7 @@ namespace poundfe
     // Local vectors of every element: displacement, velocity, force correction.
     Vector local_u, local_v, correction;
     std::vector<double> tangent_change;
+    std::vector<double> frozen_tangent_change; // modified Newton: the step's first
     // Per element: accumulated work; for the impact log, the committed
     // force, history variable and rate.
     std::vector<double> work, supplied_work, committed_force, committed_history, committed_rate;
