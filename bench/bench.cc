@@ -20,6 +20,13 @@
 //   times the points of FILE's Bifurcation section (each: read, prepare,
 //   transient + sampled periods, and the second trajectory when asked) and
 //   prints the points per second and the steps per second.
+// Output speed (issue 12): build/poundfe-bench --output [repeats]
+//   times the four models of the issue (bench/shear-pair-linear.prm,
+//   bench/shear-pair-jankowski.prm, input/three-storey-frame.prm,
+//   input/bouc-wen-sdof.prm) with every default output written at every
+//   step (Output interval = Time step, no VTU, no plots) as CSV and as
+//   NumPy .npy (Output/Format), against the same run without an output
+//   directory (peaks only); best of `repeats` (10).
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
 #include <poundfe/analysis/analysis.h>
@@ -98,6 +105,77 @@ namespace
     std::filesystem::remove_all(dir);
   }
 
+  /// Best steps/s of `repeats` runs of `analysis` writing into `directory`
+  /// (empty: no output).
+  double
+  best_steps_per_second(const Analysis &analysis, const Excitation &excitation,
+                        const std::string &directory, const unsigned int repeats,
+                        unsigned long &steps)
+  {
+    double best = 0;
+    for (unsigned int r = 0; r < repeats; ++r)
+      {
+        RunOptions options;
+        options.output_directory = directory;
+        options.vtu              = false;
+        options.plots            = false;
+        const RunResult result   = run_time_history(analysis, excitation, options);
+        steps                    = result.status.steps;
+        best = std::max(best, result.status.steps / result.status.wall_time);
+      }
+    return best;
+  }
+
+  /// Steps/s with every default output at every step in `format`, and the
+  /// megabytes written.
+  std::pair<double, double>
+  output_speed(InputParameters input, const OutputFormat format, const unsigned int repeats,
+               unsigned long &steps)
+  {
+    input.output.recorders.format = format;
+    const Analysis    analysis    = prepare_analysis(input);
+    const Excitation  excitation  = make_excitation(analysis);
+    const std::string dir = std::filesystem::temp_directory_path() / "poundfe-bench-output";
+    std::filesystem::remove_all(dir);
+    const double   speed = best_steps_per_second(analysis, excitation, dir, repeats, steps);
+    std::uintmax_t bytes = 0;
+    for (const auto &file : std::filesystem::directory_iterator(dir))
+      bytes += file.file_size();
+    std::filesystem::remove_all(dir);
+    return {speed, bytes / 1e6};
+  }
+
+  /// Steps/s with every default output at every step, and without output.
+  void
+  measure_output_speed(const char *label, InputParameters input, const unsigned int repeats)
+  {
+    input.output.interval                  = input.time_integration.newmark.time_step;
+    input.output.recorders.output_interval = input.output.interval;
+    unsigned long steps = 0;
+    const auto    csv   = output_speed(input, OutputFormat::csv, repeats, steps);
+    const auto    npy   = output_speed(input, OutputFormat::npy, repeats, steps);
+    const Analysis   analysis   = prepare_analysis(input);
+    const double     none       = best_steps_per_second(analysis, make_excitation(analysis), "",
+                                                        repeats, steps);
+    std::printf("%-30s %3u eqs %7lu steps  no output %9.0f steps/s  csv %9.0f steps/s (%5.1f MB)"
+                "  npy %9.0f steps/s (%5.1f MB)\n",
+                label, analysis.model.n_equations(), steps, none, csv.first, csv.second,
+                npy.first, npy.second);
+  }
+
+  int
+  measure_output(const unsigned int repeats)
+  {
+    measure_output_speed("3+2 shear pair, linear gaps", read_parameters("bench/shear-pair-linear.prm"),
+                         repeats);
+    measure_output_speed("3+2 shear pair, Jankowski gaps",
+                         read_parameters("bench/shear-pair-jankowski.prm"), repeats);
+    measure_output_speed("3-storey 1-bay elastic frame",
+                         read_parameters("input/three-storey-frame.prm"), repeats);
+    measure_output_speed("Bouc-Wen SDOF", read_parameters("input/bouc-wen-sdof.prm"), repeats);
+    return 0;
+  }
+
   int
   measure_monte_carlo(const std::string &file, const unsigned long n, const MPI_Comm comm)
   {
@@ -169,6 +247,8 @@ main(int argc, char **argv)
     return measure_monte_carlo(argv[2], std::stoul(argv[3]), MPI_COMM_WORLD);
   if (argc > 2 && std::string(argv[1]) == "--bifurcation")
     return measure_bifurcation(argv[2]);
+  if (argc > 1 && std::string(argv[1]) == "--output")
+    return measure_output(argc > 2 ? std::stoi(argv[2]) : 10);
   const std::string  file    = argc > 1 ? argv[1] : "input/two-buildings.prm";
   const unsigned int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   const InputParameters input = read_parameters(file);

@@ -269,17 +269,26 @@ namespace poundfe
     const std::string &directory = options.output_directory;
     if (!directory.empty())
       {
-        const InputParameters &input = analysis.input;
+        const InputParameters   &input = analysis.input;
+        std::vector<std::string> files; // of the recorders and VTU, for summary.json
         if (options.csv) // first: it checks its input before anything is written
-          outputs = make_recorders(input.output.recorders, input.file, history.state(), peaks,
-                                   input.time_integration.newmark.time_step, directory);
+          {
+            Recorders recorders = make_recorders(input.output.recorders, input.file, history.state(),
+                                                 peaks, input.time_integration.newmark.time_step,
+                                                 directory);
+            outputs = std::move(recorders.observers);
+            files   = std::move(recorders.files);
+          }
         create_directories(directory);
         if (options.vtu && input.output.vtu_interval > 0)
-          outputs.push_back(std::make_unique<VtuRecorder>(
-            analysis.model, directory, steps_per_interval(input.output.vtu_interval, input.time_integration.newmark.time_step)));
+          {
+            outputs.push_back(std::make_unique<VtuRecorder>(
+              analysis.model, directory, steps_per_interval(input.output.vtu_interval, input.time_integration.newmark.time_step)));
+            files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
+          }
         outputs.push_back(std::make_unique<RunSummary>(
           analysis, excitation, peaks, directory, options.plots && input.output.plots,
-          history.linear_solver_name(), history.tangent_update()));
+          history.linear_solver_name(), history.tangent_update(), files));
       }
     if (options.progress)
       outputs.push_back(std::make_unique<ProgressReport>(history.n_steps(excitation)));
@@ -318,8 +327,7 @@ namespace poundfe
       std::cout << analysis.model.gaps.size() << " gap elements, " << result.n_impacts
                 << " impacts (impacts.csv)\n";
     std::cout << "energy balance error " << result.max_energy_error << " (max relative)\n";
-    std::cout << "results in " << output_directory << "/ (summary.json, CSV of the recorders, "
-              << "solution.pvd, *.png)\n";
+    std::cout << "results in " << output_directory << "/ (summary.json lists the files)\n";
     if (status.kind == RunStatus::Kind::failed)
       {
         std::cerr << "poundfe: numerical failure: " << status.message

@@ -45,12 +45,6 @@ namespace poundfe
         }
       throw std::logic_error("units_of: unknown element kind");
     }
-
-    bool
-    exists(const std::string &directory, const char *file)
-    {
-      return std::filesystem::exists(directory + "/" + file);
-    }
   } // namespace
 
   void
@@ -87,7 +81,7 @@ namespace poundfe
   RunSummary::RunSummary(const Analysis &analysis, const Excitation &excitation,
                          const PeakResponse &peaks, const std::string &directory,
                          const bool plots, const std::string &solver,
-                         const std::string &tangent_update)
+                         const std::string &tangent_update, std::vector<std::string> files)
     : analysis(analysis)
     , excitation(excitation)
     , peaks(peaks)
@@ -95,19 +89,37 @@ namespace poundfe
     , plots(plots)
     , solver(solver)
     , tangent_update(tangent_update)
+    , files(std::move(files))
   {}
+
+  bool
+  RunSummary::writes(const std::string &file) const
+  {
+    return std::find(files.begin(), files.end(), file) != files.end();
+  }
 
   void
   RunSummary::finish(const ResponseView &state, const RunStatus &status)
   {
+    // the order of summary.json's `files`: the time series, then these
+    std::vector<std::string> written = files;
     write_profiles();
+    written.insert(written.end(), {"drift_profile.csv", "acceleration_profile.csv"});
     if (!analysis.model.gaps.empty())
-      write_impacts(state);
+      {
+        write_impacts(state);
+        written.push_back("impacts.csv");
+      }
     if (!analysis.model.friction_surfaces.empty())
-      write_friction_episodes(directory, state, status.end_time);
-    write_json(state, status);
-    if (plots)
-      draw(state);
+      {
+        write_friction_episodes(directory, state, status.end_time);
+        written.push_back("friction_episodes.csv");
+      }
+    if (plots) // before summary.json, which lists them
+      for (const std::string &png : draw(state))
+        written.push_back(png);
+    written.push_back("summary.json");
+    write_json(state, status, written);
   }
 
   void
@@ -159,7 +171,8 @@ namespace poundfe
   }
 
   void
-  RunSummary::write_json(const ResponseView &state, const RunStatus &status) const
+  RunSummary::write_json(const ResponseView &state, const RunStatus &status,
+                         const std::vector<std::string> &written) const
   {
     const Model           &model  = analysis.model;
     const InputParameters &input  = analysis.input;
@@ -310,6 +323,10 @@ namespace poundfe
       .value("wall_time_s", status.wall_time)
       .value("steps_per_second", status.steps / std::max(status.wall_time, 1e-12))
       .end_object();
+    json.begin_object("output")
+      .value("format", output_format_names().name(input.output.recorders.format))
+      .value("files", written)
+      .end_object();
     json.end_object();
     write_file_atomically(directory + "/summary.json", json.str());
   }
@@ -340,7 +357,7 @@ namespace poundfe
       }
   }
 
-  void
+  std::vector<std::string>
   RunSummary::draw(const ResponseView &state) const
   {
     const Model &model = analysis.model;
@@ -360,13 +377,13 @@ namespace poundfe
           {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
       }
     std::vector<Plot> all{drift, accel};
-    if (exists(directory, "floor_displacement.csv"))
+    if (writes("floor_displacement.csv"))
       all.push_back(roof);
-    if (exists(directory, "ground_motion.csv"))
+    if (writes("ground_motion.csv"))
       all.push_back(Plot{"ground_motion.png", excitation.ground_motion().description(),
                          "time (s)", "ground acceleration (m/s^2)",
                          {{"ground_motion.csv", "1:2", "a_g", "lines"}}});
-    if (exists(directory, "base_shear.csv"))
+    if (writes("base_shear.csv"))
       {
         Plot shear{"base_shear.png", "Base shear (element forces)", "time (s)", "base shear (N)", {}};
         for (unsigned int b = 0; b < model.buildings.size(); ++b)
@@ -374,7 +391,7 @@ namespace poundfe
             {"base_shear.csv", "1:" + std::to_string(b + 2), model.buildings[b].name, "lines"});
         all.push_back(shear);
       }
-    if (exists(directory, "energy.csv"))
+    if (writes("energy.csv"))
       {
         Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)",
                     "energy (J)", {}};
@@ -388,7 +405,7 @@ namespace poundfe
       }
     // Hysteresis loops of the (up to four) most demanded elements.
     const unsigned int n_hysteretic = peaks.n_hysteretic();
-    if (exists(directory, "hinges.csv"))
+    if (writes("hinges.csv"))
       {
         std::vector<unsigned int> order(n_hysteretic);
         for (unsigned int h = 0; h < n_hysteretic; ++h)
@@ -411,9 +428,9 @@ namespace poundfe
                                  e.label, "lines"}}});
           }
       }
-    if (exists(directory, "phase_portrait.csv"))
+    if (writes("phase_portrait.csv"))
       draw_phase_portraits(all);
-    if (exists(directory, "contact_force.csv"))
+    if (writes("contact_force.csv"))
       {
         Plot contact{"contact_force.png", "Contact forces", "time (s)", "force (N)", {}};
         for (unsigned int g = 0; g < model.gaps.size(); ++g)
@@ -421,6 +438,6 @@ namespace poundfe
                                     model.gaps[g].label, "lines"});
         all.push_back(contact);
       }
-    draw_plots(directory, all);
+    return draw_plots(directory, all);
   }
 } // namespace poundfe

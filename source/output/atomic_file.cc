@@ -1,46 +1,76 @@
 #include <poundfe/output/atomic_file.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace poundfe
 {
   AtomicFile::AtomicFile(std::string path)
     : final_path(std::move(path))
     , temporary_path(final_path + ".tmp")
+    , descriptor(::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666))
   {
-    file = std::fopen(temporary_path.c_str(), "wb");
-    if (file == nullptr)
-      throw std::runtime_error("cannot write " + temporary_path);
-    std::setvbuf(file, nullptr, _IOFBF, 1 << 16);
+    if (descriptor < 0)
+      throw std::runtime_error("cannot write " + temporary_path + ": " + std::strerror(errno));
   }
 
   AtomicFile::~AtomicFile()
   {
-    if (file != nullptr)
+    if (descriptor >= 0)
       {
-        std::fclose(file);
+        ::close(descriptor);
         std::remove(temporary_path.c_str());
       }
   }
 
   void
-  AtomicFile::write(const char *data, const std::size_t size)
+  AtomicFile::write(const char *data, std::size_t size)
   {
-    if (std::fwrite(data, 1, size, file) != size)
-      throw std::runtime_error("write failed: " + temporary_path);
+    while (size > 0)
+      {
+        const ssize_t written = ::write(descriptor, data, size);
+        if (written < 0 && errno == EINTR)
+          continue;
+        if (written < 0)
+          throw std::runtime_error("cannot write " + temporary_path + ": " + std::strerror(errno));
+        data += written;
+        size -= written;
+      }
+  }
+
+  void
+  AtomicFile::overwrite(std::size_t offset, const char *data, std::size_t size)
+  {
+    while (size > 0)
+      {
+        const ssize_t written = ::pwrite(descriptor, data, size, offset);
+        if (written < 0 && errno == EINTR)
+          continue;
+        if (written < 0)
+          throw std::runtime_error("cannot write " + temporary_path + ": " + std::strerror(errno));
+        data += written;
+        offset += written;
+        size -= written;
+      }
   }
 
   void
   AtomicFile::commit()
   {
-    if (file == nullptr)
+    if (descriptor < 0)
       return;
-    const bool ok = std::fflush(file) == 0;
-    std::fclose(file);
-    file = nullptr;
-    if (!ok || std::rename(temporary_path.c_str(), final_path.c_str()) != 0)
-      throw std::runtime_error("cannot write " + final_path);
+    const bool closed = ::close(descriptor) == 0;
+    descriptor        = -1;
+    if (!closed || std::rename(temporary_path.c_str(), final_path.c_str()) != 0)
+      {
+        std::remove(temporary_path.c_str());
+        throw std::runtime_error("cannot write " + final_path);
+      }
   }
 
   void

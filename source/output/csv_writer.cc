@@ -1,18 +1,22 @@
 #include <poundfe/output/csv_writer.h>
+#include <poundfe/output/number_text.h>
 
-#include <charconv>
+#include <deal.II/base/exceptions.h>
 
 namespace poundfe
 {
   namespace
   {
-    constexpr std::size_t buffer_size = 1 << 16;
-    constexpr std::size_t max_number  = 32; // to_chars of a double needs <= 24
+    constexpr std::size_t block = 1 << 16; // bytes per write(2) at least
+    constexpr std::size_t cell  = NumberText::max_length + 1; // a number and its separator
   } // namespace
 
-  CsvWriter::CsvWriter(const std::string &path, const std::vector<std::string> &header)
+  CsvWriter::CsvWriter(const std::string &path, const std::vector<std::string> &header,
+                       std::shared_ptr<NumberText> shared_text)
     : file(path)
-    , buffer(buffer_size, '\0')
+    , text(shared_text ? std::move(shared_text) : std::make_shared<NumberText>())
+    // room for a block and a whole row (add_row checks once per row)
+    , buffer(block + header.size() * cell, '\0')
   {
     std::string line;
     for (std::size_t i = 0; i < header.size(); ++i)
@@ -22,43 +26,62 @@ namespace poundfe
   }
 
   void
-  CsvWriter::flush_buffer()
+  CsvWriter::make_room(const std::size_t size)
   {
-    file.write(buffer.data(), used);
-    used = 0;
+    if (used + size > buffer.size())
+      {
+        file.write(buffer.data(), used);
+        used = 0;
+      }
   }
 
   void
   CsvWriter::begin_row(const double first)
   {
-    if (used + max_number > buffer_size)
-      flush_buffer();
-    used = std::to_chars(buffer.data() + used, buffer.data() + buffer_size, first).ptr -
-           buffer.data();
+    make_room(cell);
+    used = text->write(buffer.data() + used, first) - buffer.data();
   }
 
   void
   CsvWriter::add(const double value)
   {
-    if (used + max_number + 1 > buffer_size)
-      flush_buffer();
+    make_room(cell);
     buffer[used++] = ',';
-    used = std::to_chars(buffer.data() + used, buffer.data() + buffer_size, value).ptr -
-           buffer.data();
+    used = text->write(buffer.data() + used, value) - buffer.data();
   }
 
   void
   CsvWriter::end_row()
   {
-    if (used + 1 > buffer_size)
-      flush_buffer();
+    make_room(1);
     buffer[used++] = '\n';
+  }
+
+  void
+  CsvWriter::add_row(const double first, const std::vector<double> &values)
+  {
+    Assert(buffer.size() >= block + (values.size() + 1) * cell,
+           dealii::ExcMessage("a row wider than the header"));
+    if (used > block) // the whole row fits after `block` (see the constructor)
+      {
+        file.write(buffer.data(), used);
+        used = 0;
+      }
+    char *out = text->write(buffer.data() + used, first);
+    for (const double v : values)
+      {
+        *out++ = ',';
+        out    = text->write(out, v);
+      }
+    *out++ = '\n';
+    used   = out - buffer.data();
   }
 
   void
   CsvWriter::commit()
   {
-    flush_buffer();
+    file.write(buffer.data(), used);
+    used = 0;
     file.commit();
   }
 } // namespace poundfe

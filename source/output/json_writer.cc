@@ -127,4 +127,15 @@ namespace poundfe
     text += "]";
     return *this;
   }
+
+  JsonWriter &
+  JsonWriter::value(const std::string &key, const std::vector<std::string> &x)
+  {
+    prefix(key);
+    text += "[";
+    for (std::size_t i = 0; i < x.size(); ++i)
+      text += (i ? ", " : "") + json_escape(x[i]);
+    text += "]";
+    return *this;
+  }
 } // namespace poundfe

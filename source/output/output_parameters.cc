@@ -10,7 +10,15 @@ namespace poundfe
     prm.enter_subsection("Output");
     prm.add_parameter("Directory", directory,
                       "Results directory (relative to the working directory).");
-    prm.add_parameter("Output interval", interval, "Interval of CSV rows, s (0: every step).");
+    prm.add_parameter("Output interval", interval,
+                      "Interval of the time series' rows, s (0: every step); rounded to a whole "
+                      "number of time steps.");
+    add_choice(prm, "Format", recorders.format,
+               "Format of the time series: csv (<name>.csv: a header line, then numbers in the "
+               "shortest form that reads back exactly) or npy (<name>.npy: NumPy format 1.0, "
+               "float64 rows x columns, little-endian, C order, with the column names in "
+               "<name>.columns.txt; for long or large runs; no plots of time series).",
+               output_format_names());
     prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none).");
     prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot.");
     prm.add_parameter("Number of modes", n_modes, "Modes reported.",

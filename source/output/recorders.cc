@@ -1,5 +1,6 @@
 #include <poundfe/base/exceptions.h>
-#include <poundfe/output/csv_writer.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/number_text.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
 #include <poundfe/output/storey_forces.h>
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -21,23 +23,23 @@ namespace poundfe
     {
       RecordedQuantity quantity;
       const char      *name; // in `Record`
-      const char      *file;
+      const char      *stem; // of its file(s): output/table_writer.h
     };
 
     const QuantityInfo quantities[] = {
-      {RecordedQuantity::floor_displacement, "floor displacement", "floor_displacement.csv"},
-      {RecordedQuantity::floor_velocity, "floor velocity", "floor_velocity.csv"},
-      {RecordedQuantity::floor_acceleration, "floor acceleration", "floor_acceleration.csv"},
-      {RecordedQuantity::drift_ratio, "storey drift ratio", "drift.csv"},
-      {RecordedQuantity::storey_shear, "storey shear", "storey_shear.csv"},
-      {RecordedQuantity::base_shear, "base shear", "base_shear.csv"},
-      {RecordedQuantity::residual_drift, "residual drift", "residual_drift.csv"},
-      {RecordedQuantity::member_forces, "member end forces", "member_forces.csv"},
-      {RecordedQuantity::hinge_states, "hinge states", "hinges.csv"},
-      {RecordedQuantity::gap_states, "gap states", "contact_force.csv"},
-      {RecordedQuantity::energy, "energy", "energy.csv"},
-      {RecordedQuantity::ground_motion, "ground motion", "ground_motion.csv"},
-      {RecordedQuantity::phase_portrait, "phase portrait", "phase_portrait.csv"}};
+      {RecordedQuantity::floor_displacement, "floor displacement", "floor_displacement"},
+      {RecordedQuantity::floor_velocity, "floor velocity", "floor_velocity"},
+      {RecordedQuantity::floor_acceleration, "floor acceleration", "floor_acceleration"},
+      {RecordedQuantity::drift_ratio, "storey drift ratio", "drift"},
+      {RecordedQuantity::storey_shear, "storey shear", "storey_shear"},
+      {RecordedQuantity::base_shear, "base shear", "base_shear"},
+      {RecordedQuantity::residual_drift, "residual drift", "residual_drift"},
+      {RecordedQuantity::member_forces, "member end forces", "member_forces"},
+      {RecordedQuantity::hinge_states, "hinge states", "hinges"},
+      {RecordedQuantity::gap_states, "gap states", "contact_force"},
+      {RecordedQuantity::energy, "energy", "energy"},
+      {RecordedQuantity::ground_motion, "ground motion", "ground_motion"},
+      {RecordedQuantity::phase_portrait, "phase portrait", "phase_portrait"}};
 
     /// "<building>_node<n>_<ux|uy|rz>" of each equation.
     std::vector<std::string>
@@ -72,12 +74,11 @@ namespace poundfe
     using RowFunction = std::function<void(const ResponseView &, std::vector<double> &)>;
 
     /// A time series: a row (time, values...) every `every` steps.
-    class CsvRecorder : public StepObserver
+    class SeriesRecorder : public StepObserver
     {
     public:
-      CsvRecorder(const std::string &path, const std::vector<std::string> &columns,
-                  const unsigned int every, RowFunction row)
-        : csv(path, with_time(columns))
+      SeriesRecorder(std::unique_ptr<TableWriter> table, const unsigned int every, RowFunction row)
+        : table(std::move(table))
         , every(every)
         , row(std::move(row))
       {}
@@ -97,32 +98,21 @@ namespace poundfe
           return;
         next_row += every;
         row(state, values);
-        csv.begin_row(state.time());
-        for (const double v : values)
-          csv.add(v);
-        csv.end_row();
+        table->add_row(state.time(), values);
       }
 
       void
       finish(const ResponseView &, const RunStatus &) override
       {
-        csv.commit();
+        table->commit();
       }
 
     private:
-      static std::vector<std::string>
-      with_time(const std::vector<std::string> &columns)
-      {
-        std::vector<std::string> header{"time_s"};
-        header.insert(header.end(), columns.begin(), columns.end());
-        return header;
-      }
-
-      CsvWriter           csv;
-      const unsigned int  every;
-      unsigned long       next_row = 0; // the step of the next row
-      RowFunction         row;
-      std::vector<double> values;
+      std::unique_ptr<TableWriter> table;
+      const unsigned int           every;
+      unsigned long                next_row = 0; // the step of the next row
+      RowFunction                  row;
+      std::vector<double>          values;
     };
 
     /// The drift ratios at the end of the run (after a failure or an
@@ -313,6 +303,72 @@ namespace poundfe
         }
       throw std::logic_error("series_of: not a time series");
     }
+
+    /// The defaults (unless `Default files = false`) with the requests of
+    /// `Record` over them. Throws InputError for a quantity the model lacks.
+    std::vector<RecorderRequest>
+    requests_of(const RecorderParameters &parameters, const std::string &input_file,
+                const ResponseView &state, const PeakResponse &peaks)
+    {
+      const bool has_hysteretic = peaks.n_hysteretic() > 0;
+      const bool has_gaps       = peaks.n_gaps() > 0;
+      std::vector<RecorderRequest> requests;
+      if (parameters.default_files)
+        for (const RecordedQuantity q :
+             {RecordedQuantity::drift_ratio, RecordedQuantity::floor_acceleration,
+              RecordedQuantity::floor_displacement, RecordedQuantity::ground_motion,
+              RecordedQuantity::energy, RecordedQuantity::hinge_states, RecordedQuantity::gap_states,
+              RecordedQuantity::phase_portrait})
+          if ((q != RecordedQuantity::hinge_states || has_hysteretic) &&
+              (q != RecordedQuantity::gap_states || has_gaps) &&
+              (q != RecordedQuantity::phase_portrait || state.model.n_equations() <= 2))
+            requests.push_back({q, {}, -1.0});
+      for (const RecorderRequest &r : parameters.requests)
+        {
+          auto same = std::find_if(requests.begin(), requests.end(),
+                                   [&](const RecorderRequest &d) { return d.quantity == r.quantity; });
+          if (same != requests.end())
+            *same = r; // a request overrides the default of the same quantity
+          else
+            requests.push_back(r);
+          if ((r.quantity == RecordedQuantity::hinge_states && !has_hysteretic) ||
+              (r.quantity == RecordedQuantity::gap_states && !has_gaps))
+            throw InputError(input_file, parameters.line, "Output/Recorders/Record",
+                             std::string("'") + info(r.quantity).name + "': the model has no " +
+                               (has_hysteretic ? "gap elements" : "hinges or Bouc-Wen storeys"));
+        }
+      return requests;
+    }
+
+    /// The files of a quantity: residual drift is a small table, CSV in
+    /// either format.
+    std::vector<std::string>
+    files_of(const RecordedQuantity quantity, const OutputFormat format)
+    {
+      const char *stem = info(quantity).stem;
+      if (quantity == RecordedQuantity::residual_drift)
+        return {stem + std::string(".csv")};
+      return table_files(format, stem);
+    }
+
+    /// Removes what an earlier run's recorders left in `directory` (files of
+    /// either format, and temporaries of a killed run) that this run does
+    /// not write, so that the directory never mixes two runs' results: a
+    /// switch to npy leaves no older CSV behind, and the plots draw only
+    /// this run's files.
+    void
+    remove_stale_files(const std::string &directory, const std::vector<std::string> &files)
+    {
+      for (const QuantityInfo &q : quantities)
+        for (const OutputFormat format : {OutputFormat::csv, OutputFormat::npy})
+          for (const std::string &name : files_of(q.quantity, format))
+            {
+              std::error_code ignored; // most of them do not exist
+              if (std::find(files.begin(), files.end(), name) == files.end())
+                std::filesystem::remove(directory + "/" + name, ignored);
+              std::filesystem::remove(directory + "/" + name + ".tmp", ignored);
+            }
+    }
   } // namespace
 
   unsigned int
@@ -339,7 +395,7 @@ namespace poundfe
   {
     std::string names;
     for (const QuantityInfo &q : quantities)
-      names += std::string(names.empty() ? "" : ", ") + q.name + " (" + q.file + ")";
+      names += std::string(names.empty() ? "" : ", ") + q.name + " (" + q.stem + ".csv)";
     prm.add_parameter("Default files", default_files,
                       "Write the default time series: floor displacement, floor acceleration, "
                       "storey drift ratio, hinge states (with hinges or Bouc-Wen storeys), gap "
@@ -436,39 +492,12 @@ namespace poundfe
     return requests;
   }
 
-  std::vector<std::unique_ptr<StepObserver>>
+  Recorders
   make_recorders(const RecorderParameters &parameters, const std::string &input_file,
                  const ResponseView &state, const PeakResponse &peaks, const double time_step,
                  const std::string &directory)
   {
-    const bool has_hysteretic = peaks.n_hysteretic() > 0;
-    const bool has_gaps       = peaks.n_gaps() > 0;
-    std::vector<RecorderRequest> requests;
-    if (parameters.default_files)
-      for (const RecordedQuantity q :
-           {RecordedQuantity::drift_ratio, RecordedQuantity::floor_acceleration,
-            RecordedQuantity::floor_displacement, RecordedQuantity::ground_motion,
-            RecordedQuantity::energy, RecordedQuantity::hinge_states, RecordedQuantity::gap_states,
-            RecordedQuantity::phase_portrait})
-        if ((q != RecordedQuantity::hinge_states || has_hysteretic) &&
-            (q != RecordedQuantity::gap_states || has_gaps) &&
-            (q != RecordedQuantity::phase_portrait || state.model.n_equations() <= 2))
-          requests.push_back({q, {}, -1.0});
-    for (const RecorderRequest &r : parameters.requests)
-      {
-        auto same = std::find_if(requests.begin(), requests.end(),
-                                 [&](const RecorderRequest &d) { return d.quantity == r.quantity; });
-        if (same != requests.end())
-          *same = r; // a request overrides the default of the same quantity
-        else
-          requests.push_back(r);
-        if ((r.quantity == RecordedQuantity::hinge_states && !has_hysteretic) ||
-            (r.quantity == RecordedQuantity::gap_states && !has_gaps))
-          throw InputError(input_file, parameters.line, "Output/Recorders/Record",
-                           std::string("'") + info(r.quantity).name + "': the model has no " +
-                             (has_hysteretic ? "gap elements" : "hinges or Bouc-Wen storeys"));
-      }
-
+    const std::vector<RecorderRequest> requests = requests_of(parameters, input_file, state, peaks);
     // Every request is checked (series_of throws on an unknown member)
     // before a file or the directory is made: bad input writes nothing.
     auto forces = std::make_shared<const StoreyForces>(state.model, state.elements);
@@ -477,19 +506,29 @@ namespace poundfe
       if (r.quantity != RecordedQuantity::residual_drift)
         series.push_back(series_of(r, state, peaks, forces, input_file, parameters.line));
     create_directories(directory);
-    std::vector<std::unique_ptr<StepObserver>> recorders;
+    Recorders recorders;
+    for (const RecorderRequest &r : requests)
+      for (const std::string &file : files_of(r.quantity, parameters.format))
+        recorders.files.push_back(file);
+    remove_stale_files(directory, recorders.files); // before this run's temporaries exist
+
+    auto text = std::make_shared<NumberText>(); // shared by the CSV files of the run
     auto next = series.begin();
     for (const RecorderRequest &r : requests)
       {
-        const std::string path = directory + "/" + info(r.quantity).file;
+        const QuantityInfo &q = info(r.quantity);
         if (r.quantity == RecordedQuantity::residual_drift)
           {
-            recorders.push_back(std::make_unique<ResidualDriftRecorder>(path, peaks));
+            recorders.observers.push_back(std::make_unique<ResidualDriftRecorder>(
+              directory + "/" + files_of(r.quantity, parameters.format).front(), peaks));
             continue;
           }
+        std::vector<std::string> header{"time_s"};
+        header.insert(header.end(), next->columns.begin(), next->columns.end());
         const double interval = r.interval >= 0 ? r.interval : parameters.output_interval;
-        recorders.push_back(std::make_unique<CsvRecorder>(
-          path, next->columns, steps_per_interval(interval, time_step), std::move(next->row)));
+        recorders.observers.push_back(std::make_unique<SeriesRecorder>(
+          make_table_writer(parameters.format, directory, q.stem, header, text),
+          steps_per_interval(interval, time_step), std::move(next->row)));
         ++next;
       }
     return recorders;

@@ -255,7 +255,7 @@ BOOST_AUTO_TEST_CASE(frame_base_shear_differs_from_inertia_by_the_damping_share)
   auto recorders = make_recorders(analysis.input.output.recorders, analysis.input.file, history.state(),
                                   peaks, analysis.input.time_integration.newmark.time_step, dir);
   Observers observers{&peaks, &terms};
-  for (const auto &r : recorders)
+  for (const auto &r : recorders.observers)
     observers.push_back(r.get());
   const RunStatus status = history.run(excitation, observers);
   BOOST_REQUIRE(status.completed());

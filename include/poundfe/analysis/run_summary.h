@@ -1,7 +1,8 @@
 // The run's closing outputs, written when the time history ends (also
 // after a failure or an interruption): summary.json, impacts.csv, the peak
 // profiles (drift_profile.csv, acceleration_profile.csv) and the PNG plots
-// of whatever time series the recorders wrote.
+// of whatever CSV time series the recorders wrote. summary.json's `files`
+// lists every file the run wrote.
 #ifndef poundfe_analysis_run_summary_h
 #define poundfe_analysis_run_summary_h
 
@@ -12,6 +13,7 @@
 #include <poundfe/output/plots.h>
 
 #include <string>
+#include <vector>
 
 namespace poundfe
 {
@@ -26,10 +28,11 @@ namespace poundfe
   class RunSummary : public StepObserver
   {
   public:
-    /// `solver` and `tangent_update` name the integrator's choices.
+    /// `solver` and `tangent_update` name the integrator's choices; `files`
+    /// are those the other observers write (recorders, VTU index).
     RunSummary(const Analysis &analysis, const Excitation &excitation, const PeakResponse &peaks,
                const std::string &directory, bool plots, const std::string &solver,
-               const std::string &tangent_update);
+               const std::string &tangent_update, std::vector<std::string> files);
 
     void observe_step(const ResponseView &) override {}
     void finish(const ResponseView &state, const RunStatus &status) override;
@@ -37,8 +40,12 @@ namespace poundfe
   private:
     void write_profiles() const;
     void write_impacts(const ResponseView &state) const;
-    void write_json(const ResponseView &state, const RunStatus &status) const;
-    void draw(const ResponseView &state) const;
+    void write_json(const ResponseView &state, const RunStatus &status,
+                    const std::vector<std::string> &files) const;
+    /// The plots; returns the files drawn.
+    std::vector<std::string> draw(const ResponseView &state) const;
+    /// Whether this run writes `file` (not: whether it exists).
+    bool writes(const std::string &file) const;
     /// x against x' of each equation of a one- or two-DOF model, stick marked.
     void draw_phase_portraits(std::vector<Plot> &plots) const;
 
@@ -48,6 +55,7 @@ namespace poundfe
     const std::string   directory;
     const bool          plots;
     const std::string   solver, tangent_update;
+    const std::vector<std::string> files;
   };
 } // namespace poundfe
 

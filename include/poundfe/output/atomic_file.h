@@ -1,9 +1,12 @@
 // Files appear complete or not at all: written to "<name>.tmp" and renamed
 // into place on commit. An uncommitted file is removed when destroyed.
+// Unbuffered: its writers (CsvWriter, NpyWriter) keep one buffer per file
+// and hand it over whole, so each block is one write(2) and no second
+// buffer copies it again.
 #ifndef poundfe_output_atomic_file_h
 #define poundfe_output_atomic_file_h
 
-#include <cstdio>
+#include <cstddef>
 #include <string>
 
 namespace poundfe
@@ -16,16 +19,20 @@ namespace poundfe
     AtomicFile(const AtomicFile &) = delete;
     AtomicFile &operator=(const AtomicFile &) = delete;
 
+    /// Appends. Throws std::runtime_error on I/O failure.
     void write(const char *data, std::size_t size);
     void write(const std::string &text) { write(text.data(), text.size()); }
-    /// Flush, close and rename into place. Throws std::runtime_error on I/O failure.
+    /// Overwrites `size` bytes at `offset` of what was written (a header
+    /// whose content is known only at the end).
+    void overwrite(std::size_t offset, const char *data, std::size_t size);
+    /// Close and rename into place. Throws std::runtime_error on I/O failure.
     void commit();
     const std::string &path() const { return final_path; }
 
   private:
     std::string final_path;
     std::string temporary_path;
-    std::FILE  *file = nullptr;
+    int         descriptor = -1;
   };
 
   /// Write a whole file atomically.

@@ -23,6 +23,7 @@ namespace poundfe
     JsonWriter &value(const std::string &key, const char *x) { return value(key, std::string(x)); }
     JsonWriter &value(const std::string &key, bool x);
     JsonWriter &value(const std::string &key, const std::vector<double> &x);
+    JsonWriter &value(const std::string &key, const std::vector<std::string> &x);
 
     std::string str() const { return text + "\n"; }
 

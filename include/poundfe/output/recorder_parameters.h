@@ -13,9 +13,13 @@
 // without `every`, the rows come every Output interval (every 0: every
 // step). The default files (floor displacement, floor acceleration, storey
 // drift ratio, hinge states, gap states, energy, ground motion) are written
-// unless `Default files = false`. Every column carries its unit.
+// unless `Default files = false`. Every column carries its unit. The time
+// series are CSV or, with Output/Format = npy, NumPy tables
+// (output/table_writer.h).
 #ifndef poundfe_output_recorder_parameters_h
 #define poundfe_output_recorder_parameters_h
+
+#include <poundfe/output/table_writer.h>
 
 #include <string>
 #include <vector>
@@ -63,6 +67,7 @@ namespace poundfe
     std::string                  record;       // the text of `Record`
     std::vector<RecorderRequest> requests;     // parsed from it
     double                       output_interval = 0; // Output/Output interval, s
+    OutputFormat                 format = OutputFormat::csv; // Output/Format
     int                          line            = 0; // of `Record`, for messages
 
     /// Declare `Default files` and `Record` in the current subsection.

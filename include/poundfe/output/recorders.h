@@ -17,11 +17,21 @@ namespace poundfe
   /// Steps between rows for an interval in s (0: every step).
   unsigned int steps_per_interval(double interval, double time_step);
 
+  /// The recorders of a run and the files they write (names in its
+  /// directory, each table before its columns file).
+  struct Recorders
+  {
+    std::vector<std::unique_ptr<StepObserver>> observers;
+    std::vector<std::string>                   files;
+  };
+
   /// The requested recorders plus the defaults, as observers writing into
-  /// `directory`. They read the floor response of `peaks`, which must be
-  /// observed before them. Checks every request (InputError for an
-  /// unknown member label) before it makes the directory or a file.
-  std::vector<std::unique_ptr<StepObserver>>
+  /// `directory` in `parameters.format`. They read the floor response of
+  /// `peaks`, which must be observed before them. Checks every request
+  /// (InputError for an unknown member label) before it makes the
+  /// directory or a file; removes the recorder files of an earlier run
+  /// that this one does not write.
+  Recorders
   make_recorders(const RecorderParameters &parameters, const std::string &input_file,
                  const ResponseView &state, const PeakResponse &peaks, double time_step,
                  const std::string &directory);
