@@ -1,7 +1,7 @@
 // The sparse modal solver (the theory is in include/poundfe/analysis/modal.h
 // and doc/theory.md §1.8). ARPACK's symmetric driver in shift-invert mode 3
 // with shift 0 finds the largest nu of K^-1 M x = nu x in the M inner
-// product, nu = 1/omega^2; M may be singular (ARPACK Users' Guide §3.2: mode
+// product, nu = 1/omega^2; M may be singular (ARPACK Users' Guide, mode
 // 3 needs M positive semidefinite only). Its Lanczos vectors stay in the
 // range of K^-1 M, which is where the eigenvectors with finite omega live,
 // so the massless rotations come out statically condensed.

@@ -35,6 +35,13 @@ namespace poundfe
         }
     }
 
+    FrameElement
+    element_of(const Model &model, const Member &member)
+    {
+      return {model.nodes[member.nodes[0]].position, model.nodes[member.nodes[1]].position,
+              member.section};
+    }
+
     std::vector<unsigned int>
     member_dofs(const Member &member)
     {
@@ -87,8 +94,7 @@ namespace poundfe
     Triplets           k_triplets, m_triplets;
     for (const Member &member : model.members)
       {
-        const FrameElement element(model.nodes[member.nodes[0]].position,
-                                   model.nodes[member.nodes[1]].position, member.section);
+        const FrameElement element = element_of(model, member);
         const auto dofs = member_dofs(member);
         scatter(model, dofs, element.stiffness(), k_triplets);
         scatter(model, dofs, element.mass(model.mass_matrix), m_triplets);
@@ -146,8 +152,7 @@ namespace poundfe
     vertical << 0, 1, 0, 0, 1, 0;
     for (const Member &member : model.members)
       {
-        const FrameElement element(model.nodes[member.nodes[0]].position,
-                                   model.nodes[member.nodes[1]].position, member.section);
+        const FrameElement element = element_of(model, member);
         const Vector6 weight = -model.gravity * (element.mass(model.mass_matrix) * vertical);
         const auto    dofs   = member_dofs(member);
         for (unsigned int i = 0; i < 6; ++i)
@@ -169,8 +174,7 @@ namespace poundfe
     std::vector<double> forces;
     for (const Member &member : model.members)
       {
-        const FrameElement element(model.nodes[member.nodes[0]].position,
-                                   model.nodes[member.nodes[1]].position, member.section);
+        const FrameElement element = element_of(model, member);
         const auto dofs = member_dofs(member);
         Vector6    end_displacements;
         for (unsigned int i = 0; i < 6; ++i)
@@ -212,8 +216,7 @@ namespace poundfe
     for (unsigned int m = 0; m < model.members.size(); ++m)
       {
         const Member      &member = model.members[m];
-        const FrameElement element(model.nodes[member.nodes[0]].position,
-                                   model.nodes[member.nodes[1]].position, member.section);
+        const FrameElement element = element_of(model, member);
         scatter(model, member_dofs(member), element.geometric_stiffness(axial_forces[m]),
                 triplets);
       }

@@ -20,7 +20,7 @@
 //     3.1e-10; modes 2-6 agree to 3e-11;
 //   - a cantilever column of 100 elements against the Euler-Bernoulli
 //     frequencies (beta_j L)^2 sqrt(EI/(m L^4)) (Chopra, Dynamics of
-//     Structures, 4th ed., §16.2), consistent mass (non-diagonal M) to 1e-6
+//     Structures, 4th ed., ch. 16), consistent mass (non-diagonal M) to 1e-6
 //     (cubic elements: O(h^4) error, measured 2.8e-7 for mode 5) and lumped
 //     mass to 1e-3 (O(h^2), measured 4.7e-4). A finely meshed single member
 //     is the ill-conditioned case: K's condition number grows as n^4, and

@@ -11,10 +11,10 @@
 //    projection (source/analysis/modal_sparse.cc).
 // Participation: Gamma_n = phi_n^T M r (phi mass-normalised), effective modal
 // mass Gamma_n^2, ratio Gamma_n^2 / (r^T M r) (Chopra, §13.2).
-// Sources: Bathe, Finite Element Procedures (1996), §10.2 (shift) and §11.6
+// Sources: Bathe, Finite Element Procedures (1996), §11.6
 // (subspace iteration, Rayleigh-Ritz); Ericsson & Ruhe, Math. Comp. 35
 // (1980) 1251-1268 (spectral transformation Lanczos, singular M); Lehoucq,
-// Sorensen & Yang, ARPACK Users' Guide (SIAM 1998), §3.2 (mode 3).
+// Sorensen & Yang, ARPACK Users' Guide (SIAM 1998) (mode 3, shift-invert).
 #ifndef poundfe_analysis_modal_h
 #define poundfe_analysis_modal_h
 

@@ -9,7 +9,7 @@
 // Shear-building storeys: -P/h [1 -1; -1 1] on the two floors' ux, P the
 // weight of the floors above the storey (the overturning P Delta balanced by
 // a storey shear P Delta / h).
-// Sources: Przemieniecki (1968) ch. 15; McGuire, Gallagher & Ziemian, Matrix
+// Sources: Przemieniecki (1968) (geometric stiffness); McGuire, Gallagher & Ziemian, Matrix
 // Structural Analysis, 2nd ed. (2000), §9.3; Wilson & Habibullah, Earthquake
 // Spectra 3 (1987) 289-298 (the linearised P-Delta of buildings).
 #ifndef poundfe_assembly_linear_system_h

@@ -8,9 +8,10 @@
 //   DOFs (v1, rz1, v2, rz2): N/(30L) [36 3L -36 3L; 3L 4L^2 -3L -L^2;
 //   -36 -3L 36 -3L; 3L -L^2 -3L 4L^2], from the same cubic shape functions
 //   (consistent); no terms on the axial DOFs (their relative size is N/EA).
-// Source: Przemieniecki, Theory of Matrix Structural Analysis (1968), ch. 5,
-// 11 & 15; McGuire, Gallagher & Ziemian, Matrix Structural Analysis, 2nd ed.
-// (2000), eq. 9.19; Chopra, Dynamics of Structures, 4th ed., §16.
+// Source: Przemieniecki, Theory of Matrix Structural Analysis (1968), ch. 5
+// & 11 and its geometric (stability) matrices; McGuire, Gallagher & Ziemian,
+// Matrix Structural Analysis, 2nd ed. (2000), eq. 9.19 (its transverse
+// part); Chopra, Dynamics of Structures, 4th ed., §16.
 #ifndef poundfe_elements_frame_element_h
 #define poundfe_elements_frame_element_h
 
