@@ -27,19 +27,27 @@
 //   step (Output interval = Time step, no VTU, no plots) as CSV and as
 //   NumPy .npy (Output/Format), against the same run without an output
 //   directory (peaks only); best of `repeats` (10).
+// Modes: build/poundfe-bench --modes [storeys ...]
+//   times the dense and the sparse eigensolver (6 modes, best of 3; the dense
+//   one once above 1000 equations) on generated 3-bay frames with 2 elements
+//   per member (33 equations per storey; default 15 30 60 150 storeys, i.e.
+//   495 to 4950 equations), and prints the largest frequency difference.
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/analysis/bifurcation.h>
+#include <poundfe/analysis/modal.h>
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/analysis/input_parameters.h>
+#include <poundfe/model/model_builder.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -235,6 +243,53 @@ namespace
                 b.lyapunov_exponent ? " (both trajectories)" : "", steps / in_points);
     return 0;
   }
+
+  /// Best wall time of `repeats` calls of `f`.
+  template <typename Function>
+  double
+  best_time(const unsigned int repeats, const Function &f)
+  {
+    double best = 1e300;
+    for (unsigned int r = 0; r < repeats; ++r)
+      {
+        const auto start = std::chrono::steady_clock::now();
+        f();
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      }
+    return best;
+  }
+
+  int
+  measure_modes(std::vector<unsigned int> storeys)
+  {
+    if (storeys.empty())
+      storeys = {15, 30, 60, 150};
+    for (const unsigned int n_storeys : storeys)
+      {
+        InputParameters     p = read_parameters("input/three-storey-frame.prm");
+        BuildingParameters &b = p.model.buildings[0];
+        b.n_storeys           = n_storeys;
+        b.n_bays              = 3;
+        b.elements_per_member = 2;
+        const Model model = build_model(p.model, p.contact, p, p.springs, p.friction);
+        const LinearSystem s = assemble_mass_and_stiffness(model);
+        Modes              dense, sparse;
+        const double       t_sparse = best_time(3, [&] {
+          sparse = compute_modes_sparse(s.mass, s.stiffness, s.influence, 6);
+        });
+        const double t_dense = best_time(s.n_equations() > 1000 ? 1 : 3, [&] {
+          dense = compute_modes_dense(s.mass, s.stiffness, s.influence, 6);
+        });
+        double difference = 0;
+        for (unsigned int j = 0; j < 6; ++j)
+          difference = std::max(difference, std::abs(sparse.omega[j] / dense.omega[j] - 1));
+        std::printf("modes: %3u storeys, %5u equations: dense %9.3f s, sparse %7.3f s "
+                    "(%.0fx), frequencies differ by %.1e\n",
+                    n_storeys, s.n_equations(), t_dense, t_sparse, t_dense / t_sparse, difference);
+        std::fflush(stdout);
+      }
+    return 0;
+  }
 } // namespace
 
 int
@@ -249,6 +304,13 @@ main(int argc, char **argv)
     return measure_bifurcation(argv[2]);
   if (argc > 1 && std::string(argv[1]) == "--output")
     return measure_output(argc > 2 ? std::stoi(argv[2]) : 10);
+  if (argc > 1 && std::string(argv[1]) == "--modes")
+    {
+      std::vector<unsigned int> storeys;
+      for (int i = 2; i < argc; ++i)
+        storeys.push_back(std::stoul(argv[i]));
+      return measure_modes(storeys);
+    }
   const std::string  file    = argc > 1 ? argv[1] : "input/two-buildings.prm";
   const unsigned int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
   const InputParameters input = read_parameters(file);

@@ -6,6 +6,7 @@
 #include <deal.II/base/timer.h>
 
 #include <cmath>
+#include <sstream>
 #include <unistd.h>
 
 namespace poundfe
@@ -33,6 +34,43 @@ namespace poundfe
             2 * std::sqrt(law.stick_stiffness * system.mass.coeff(equation, equation));
         }
     }
+
+    /// P-Delta must leave every building stable under its own weight: a
+    /// K_E + K_G without a Cholesky factor means gravity above the buckling
+    /// load, where the linearised model has no meaning.
+    void
+    check_stable_under_gravity(const InputParameters &input, const Model &model,
+                               const LinearSystem &system)
+    {
+      if (model.geometric_nonlinearity != GeometricNonlinearity::p_delta)
+        return;
+      std::ostringstream g;
+      g << model.gravity;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        if (!is_positive_definite(block(system.stiffness, model.equation_range(b))))
+          input.fail("Model/Geometric nonlinearity",
+                     "building '" + model.buildings[b].name +
+                       "' buckles under its own weight: with the P-Delta stiffness of its "
+                       "gravity loads (g = " + g.str() +
+                       " m/s^2) K is not positive definite, the weight exceeds the elastic "
+                       "critical load (stiffen the columns or storeys, or check the masses)");
+    }
+
+    /// The modes of one building (`what`) or of the whole model, by the
+    /// input's eigensolver; a forced sparse solver that cannot give `n`
+    /// modes is bad input.
+    Modes
+    modes_of(const InputParameters &input, const SparseMatrix &mass, const SparseMatrix &stiffness,
+             const Vector &influence, const unsigned int n, const std::string &what)
+    {
+      if (input.modal.eigensolver == Eigensolver::sparse && n > max_sparse_modes(mass))
+        input.fail("Modal analysis/Eigensolver",
+                   "the sparse eigensolver finds at most " +
+                     std::to_string(max_sparse_modes(mass)) + " modes of " + what + " (" +
+                     std::to_string(mass.rows()) + " equations), " + std::to_string(n) +
+                     " are wanted (Output/Number of modes, Damping/Modes); use dense or auto");
+      return compute_modes(mass, stiffness, influence, n, input.modal.eigensolver);
+    }
   } // namespace
 
   Analysis
@@ -44,6 +82,7 @@ namespace poundfe
     analysis.system = assemble_mass_and_stiffness(analysis.model);
     const Model  &model  = analysis.model;
     LinearSystem &system = analysis.system;
+    check_stable_under_gravity(input, model, system);
     set_stick_stiffnesses(input, system, analysis.model);
 
     std::vector<std::array<double, 2>> coefficients;
@@ -54,8 +93,9 @@ namespace poundfe
         const unsigned  wanted =
           std::max({input.output.n_modes, building.damping.first_mode, building.damping.second_mode});
         analysis.building_modes.push_back(
-          compute_modes(block(system.mass, range), block(system.stiffness, range),
-                        system.influence.segment(range[0], range[1] - range[0]), wanted));
+          modes_of(input, block(system.mass, range), block(system.stiffness, range),
+                   system.influence.segment(range[0], range[1] - range[0]), wanted,
+                   "building '" + building.name + "'"));
         const Modes           &modes = analysis.building_modes.back();
         const RayleighDamping &d     = building.damping;
         switch (d.kind)
@@ -81,7 +121,8 @@ namespace poundfe
           }
       }
     assemble_damping(model, coefficients, system);
-    analysis.modes = compute_modes(system.mass, system.stiffness, system.influence, input.output.n_modes);
+    analysis.modes = modes_of(input, system.mass, system.stiffness, system.influence,
+                              input.output.n_modes, "the model");
     return analysis;
   }
 

@@ -209,6 +209,7 @@ namespace poundfe
     nodal_forces.declare(prm);
     time_integration.declare(prm);
     output.declare(prm);
+    modal.declare(prm);
     monte_carlo.declare(prm);
     subset.declare(prm);
     fragility.declare(prm);

@@ -1,5 +1,12 @@
 #include <poundfe/assembly/linear_system.h>
+#include <poundfe/base/exceptions.h>
 #include <poundfe/elements/frame_element.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <cmath>
 
 namespace poundfe
 {
@@ -26,6 +33,13 @@ namespace poundfe
                 triplets.emplace_back(row, column, matrix(i, j));
             }
         }
+    }
+
+    FrameElement
+    element_of(const Model &model, const Member &member)
+    {
+      return {model.nodes[member.nodes[0]].position, model.nodes[member.nodes[1]].position,
+              member.section};
     }
 
     std::vector<unsigned int>
@@ -60,6 +74,17 @@ namespace poundfe
       matrix.makeCompressed();
       return matrix;
     }
+
+    /// K = K_E + K_G from the gravity loads (the header's P-Delta).
+    void
+    add_p_delta(const Model &model, LinearSystem &system)
+    {
+      const Vector loads         = gravity_loads(model);
+      system.geometric_stiffness = geometric_stiffness(
+        model, member_axial_forces(model, system.stiffness, loads), storey_gravity_loads(model));
+      system.stiffness += system.geometric_stiffness;
+      system.stiffness.makeCompressed();
+    }
   } // namespace
 
   LinearSystem
@@ -69,8 +94,7 @@ namespace poundfe
     Triplets           k_triplets, m_triplets;
     for (const Member &member : model.members)
       {
-        const FrameElement element(model.nodes[member.nodes[0]].position,
-                                   model.nodes[member.nodes[1]].position, member.section);
+        const FrameElement element = element_of(model, member);
         const auto dofs = member_dofs(member);
         scatter(model, dofs, element.stiffness(), k_triplets);
         scatter(model, dofs, element.mass(model.mass_matrix), m_triplets);
@@ -107,7 +131,111 @@ namespace poundfe
         if (row >= 0)
           system.influence[row] = 1;
       }
+    if (model.geometric_nonlinearity == GeometricNonlinearity::p_delta)
+      add_p_delta(model, system);
     return system;
+  }
+
+  Vector
+  gravity_loads(const Model &model)
+  {
+    Vector loads = Vector::Zero(model.n_equations());
+    const auto add = [&](const unsigned int dof, const double value) {
+      const int row = model.equation(dof);
+      if (row >= 0)
+        loads[row] += value;
+    };
+    // Element by element, so that a member's weight shared with a support
+    // goes there (M r_y restricted to the free DOFs would lose the coupling
+    // terms of a consistent mass to the supported ones).
+    Vector6 vertical;
+    vertical << 0, 1, 0, 0, 1, 0;
+    for (const Member &member : model.members)
+      {
+        const FrameElement element = element_of(model, member);
+        const Vector6 weight = -model.gravity * (element.mass(model.mass_matrix) * vertical);
+        const auto    dofs   = member_dofs(member);
+        for (unsigned int i = 0; i < 6; ++i)
+          add(dofs[i], weight[i]);
+      }
+    for (const NodalMass &mass : model.masses)
+      add(Model::dof(mass.node, Component::uy), -model.gravity * mass.mass);
+    return loads;
+  }
+
+  std::vector<double>
+  member_axial_forces(const Model &model, const SparseMatrix &stiffness, const Vector &loads)
+  {
+    const Eigen::SimplicialLLT<SparseMatrix> cholesky(stiffness);
+    if (cholesky.info() != Eigen::Success)
+      throw NumericalError("P-Delta gravity analysis: the stiffness matrix is singular or not "
+                           "positive definite (is the structure a mechanism? check the supports)");
+    const Vector        u = cholesky.solve(loads);
+    std::vector<double> forces;
+    for (const Member &member : model.members)
+      {
+        const FrameElement element = element_of(model, member);
+        const auto dofs = member_dofs(member);
+        Vector6    end_displacements;
+        for (unsigned int i = 0; i < 6; ++i)
+          {
+            const int equation   = model.equation(dofs[i]);
+            end_displacements[i] = equation >= 0 ? u[equation] : 0.0;
+          }
+        forces.push_back(element.axial_force(end_displacements));
+      }
+    return forces;
+  }
+
+  std::vector<double>
+  storey_gravity_loads(const Model &model)
+  {
+    std::vector<double> compressions;
+    for (const StoreyLink &link : model.links)
+      {
+        const Point2 &top    = model.nodes[link.nodes[1]].position;
+        const Point2 &bottom = model.nodes[link.nodes[0]].position;
+        const double  height = top.y - bottom.y;
+        double        mass   = 0;
+        for (const NodalMass &m : model.masses)
+          if (model.nodes[m.node].building == link.building &&
+              model.nodes[m.node].position.y >= top.y - 1e-9 * std::abs(height))
+            mass += m.mass;
+        compressions.push_back(model.gravity * mass);
+      }
+    return compressions;
+  }
+
+  SparseMatrix
+  geometric_stiffness(const Model &model, const std::vector<double> &axial_forces,
+                      const std::vector<double> &storey_compressions)
+  {
+    AssertDimension(axial_forces.size(), model.members.size());
+    AssertDimension(storey_compressions.size(), model.links.size());
+    Triplets triplets;
+    for (unsigned int m = 0; m < model.members.size(); ++m)
+      {
+        const Member      &member = model.members[m];
+        const FrameElement element = element_of(model, member);
+        scatter(model, member_dofs(member), element.geometric_stiffness(axial_forces[m]),
+                triplets);
+      }
+    for (unsigned int l = 0; l < model.links.size(); ++l)
+      {
+        const StoreyLink &link   = model.links[l];
+        const double      height = model.nodes[link.nodes[1]].position.y -
+                              model.nodes[link.nodes[0]].position.y;
+        Assert(height > 0, dealii::ExcMessage("a storey link of zero height"));
+        scatter(model, link_dofs(link), two_node_spring(-storey_compressions[l] / height),
+                triplets);
+      }
+    return from_triplets(model.n_equations(), triplets);
+  }
+
+  bool
+  is_positive_definite(const SparseMatrix &matrix)
+  {
+    return Eigen::SimplicialLLT<SparseMatrix>(matrix).info() == Eigen::Success;
   }
 
   std::array<double, 2>

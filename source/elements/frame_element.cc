@@ -81,6 +81,32 @@ namespace poundfe
     return t.transpose() * mass * t;
   }
 
+  Matrix6
+  FrameElement::geometric_stiffness(const double axial_force) const
+  {
+    const double L = element_length;
+    const double a = axial_force / (30 * L);
+    Matrix6      k = Matrix6::Zero();
+    // clang-format off
+    const double transverse[4][4] = {{ 36,     3*L,  -36,    3*L},
+                                     { 3*L,  4*L*L, -3*L,   -L*L},
+                                     {-36,    -3*L,   36,   -3*L},
+                                     { 3*L,   -L*L, -3*L,  4*L*L}};
+    // clang-format on
+    const unsigned int dof[4] = {1, 2, 4, 5}; // v1, rz1, v2, rz2 in local axes
+    for (unsigned int i = 0; i < 4; ++i)
+      for (unsigned int j = 0; j < 4; ++j)
+        k(dof[i], dof[j]) = a * transverse[i][j];
+    const Matrix6 t = rotation();
+    return t.transpose() * k * t;
+  }
+
+  double
+  FrameElement::axial_force(const Vector6 &global_displacements) const
+  {
+    return local_end_forces(global_displacements)[3]; // N2 = EA (u2 - u1) / L
+  }
+
   Vector6
   FrameElement::local_end_forces(const Vector6 &global_displacements) const
   {

@@ -603,7 +603,9 @@ namespace poundfe
               const FrictionParameters &friction)
   {
     Model model;
-    model.mass_matrix = parameters.mass_matrix;
+    model.mass_matrix            = parameters.mass_matrix;
+    model.geometric_nonlinearity = parameters.geometric_nonlinearity;
+    model.gravity                = parameters.gravity;
     double left = 0;
     for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
       {

@@ -43,6 +43,14 @@ namespace poundfe
     return table;
   }
 
+  const NameTable<GeometricNonlinearity> &
+  geometric_nonlinearity_names()
+  {
+    static const NameTable<GeometricNonlinearity> table(
+      {{GeometricNonlinearity::none, "none"}, {GeometricNonlinearity::p_delta, "p-delta"}});
+    return table;
+  }
+
   void
   BuildingParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -264,6 +272,14 @@ namespace poundfe
     declare_number_of_buildings(prm, n_buildings);
     prm.enter_subsection("Model");
     add_choice(prm, "Mass matrix", mass_matrix, "Distributed member mass.", mass_matrix_names());
+    add_choice(prm, "Geometric nonlinearity", geometric_nonlinearity,
+               "p-delta: the geometric stiffness of the gravity loads (every mass times "
+               "Gravity), linearised and added to K once: frame members from their axial "
+               "forces in a linear static gravity analysis, shear-building storeys -P/h "
+               "with P the weight above. none: small displacements.",
+               geometric_nonlinearity_names());
+    prm.add_parameter("Gravity", gravity,
+                      "Acceleration of gravity in m/s^2 for the P-Delta loads.");
     prm.add_parameter("Separations", separations,
                       "Clear distance in m between building i and i+1 (one value for "
                       "all pairs or one per pair).");
@@ -281,6 +297,7 @@ namespace poundfe
   {
     for (unsigned int b = 0; b < buildings.size(); ++b)
       buildings[b].finalize(input, b + 1);
+    input.positive("Model/Gravity", gravity);
     if (buildings.size() > 1)
       input.list("Model/Separations", separations, buildings.size() - 1, true,
                  "one per neighbouring pair");

@@ -6,6 +6,7 @@
 #define poundfe_analysis_input_parameters_h
 
 #include <poundfe/analysis/bifurcation.h>
+#include <poundfe/analysis/modal_parameters.h>
 #include <poundfe/analysis/reliability_parameters.h>
 #include <poundfe/analysis/stationary_pdf_parameters.h>
 #include <poundfe/analysis/sweep.h>
@@ -48,6 +49,7 @@ namespace poundfe
     NodalForceParameters      nodal_forces;
     TimeIntegrationParameters time_integration; // and Contact/Event refinement
     OutputParameters          output;
+    ModalParameters           modal;       // Modal analysis
     MonteCarloParameters      monte_carlo;
     SubsetParameters          subset;
     FragilityParameters       fragility;

@@ -1,5 +1,17 @@
 // The linear part of the equations of motion on the free DOFs (equations):
 // M, K and C = sum_b (a0_b M_b + a1_b K_b) + storey dashpots. Assembled once.
+// With P-Delta (Model::geometric_nonlinearity) K = K_E + K_G: the geometric
+// stiffness of the gravity loads f_g = -g M r_y (r_y = 1 on every uy: the
+// floor weights, and the members' self-weight as M distributes it), linearised
+// about the undeformed shape. Members: the consistent k_G of their axial
+// force N under f_g in a linear static analysis K_E u = f_g (statics, not
+// tributary areas: beams shed load to the columns as the frame deforms).
+// Shear-building storeys: -P/h [1 -1; -1 1] on the two floors' ux, P the
+// weight of the floors above the storey (the overturning P Delta balanced by
+// a storey shear P Delta / h).
+// Sources: Przemieniecki (1968) (geometric stiffness); McGuire, Gallagher & Ziemian, Matrix
+// Structural Analysis, 2nd ed. (2000), §9.3; Wilson & Habibullah, Earthquake
+// Spectra 3 (1987) 289-298 (the linearised P-Delta of buildings).
 #ifndef poundfe_assembly_linear_system_h
 #define poundfe_assembly_linear_system_h
 
@@ -19,7 +31,9 @@ namespace poundfe
   struct LinearSystem
   {
     SparseMatrix mass;
-    SparseMatrix stiffness;
+    SparseMatrix stiffness; // K_E, plus K_G with P-Delta
+    /// K_G, the P-Delta part of `stiffness` (0 x 0 without P-Delta).
+    SparseMatrix geometric_stiffness;
     SparseMatrix damping;
     /// Influence vector of a horizontal ground motion: 1 on every ux equation.
     Vector influence;
@@ -29,8 +43,34 @@ namespace poundfe
     unsigned int n_equations() const { return stiffness.rows(); }
   };
 
-  /// Assemble M and K (and the influence vector); C is left empty.
+  /// Assemble M and K (and the influence vector); C is left empty. With
+  /// P-Delta, K includes K_G. Throws NumericalError if the gravity analysis
+  /// meets a singular K_E (a mechanism).
   LinearSystem assemble_mass_and_stiffness(const Model &model);
+
+  /// The gravity loads -g M r_y on the equations (g = model.gravity), from
+  /// every mass: nodal weights, and the members' self-weight as their mass
+  /// matrix distributes it (lumped: mL/2 per end; consistent: also the end
+  /// moments mL/12 of a beam).
+  Vector gravity_loads(const Model &model);
+
+  /// Axial force (tension positive) of every member under `loads`, from the
+  /// linear static analysis `stiffness` u = loads. Throws NumericalError if
+  /// `stiffness` is not positive definite.
+  std::vector<double> member_axial_forces(const Model &model, const SparseMatrix &stiffness,
+                                          const Vector &loads);
+
+  /// Compression P of every storey link: g times the nodal masses of its
+  /// building at and above the link's top node.
+  std::vector<double> storey_gravity_loads(const Model &model);
+
+  /// K_G of the members under `axial_forces` (tension positive) and of the
+  /// storey links under `storey_compressions`.
+  SparseMatrix geometric_stiffness(const Model &model, const std::vector<double> &axial_forces,
+                                   const std::vector<double> &storey_compressions);
+
+  /// Whether a symmetric matrix has a Cholesky factor.
+  bool is_positive_definite(const SparseMatrix &matrix);
 
   /// a0 = 2 zeta w_i w_j / (w_i + w_j), a1 = 2 zeta / (w_i + w_j)
   /// (Chopra, Dynamics of Structures, eq. 11.4.9).

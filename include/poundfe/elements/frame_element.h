@@ -4,8 +4,14 @@
 //   Consistent mass: axial mL/6 [2 1; 1 2], bending mL/420 [156 22L 54 -13L; ...].
 //   Lumped mass: mL/2 on each end's translations, none on rotations.
 //   Global matrices: T^T k T with T the rotation by the member angle.
-// Source: Przemieniecki, Theory of Matrix Structural Analysis (1968), ch. 5 & 11;
-// Chopra, Dynamics of Structures, 4th ed., §16.
+//   Geometric stiffness under an axial force N (tension +), on the transverse
+//   DOFs (v1, rz1, v2, rz2): N/(30L) [36 3L -36 3L; 3L 4L^2 -3L -L^2;
+//   -36 -3L 36 -3L; 3L -L^2 -3L 4L^2], from the same cubic shape functions
+//   (consistent); no terms on the axial DOFs (their relative size is N/EA).
+// Source: Przemieniecki, Theory of Matrix Structural Analysis (1968), ch. 5
+// & 11 and its geometric (stability) matrices; McGuire, Gallagher & Ziemian,
+// Matrix Structural Analysis, 2nd ed. (2000), eq. 9.19 (its transverse
+// part); Chopra, Dynamics of Structures, 4th ed., §16.
 #ifndef poundfe_elements_frame_element_h
 #define poundfe_elements_frame_element_h
 
@@ -35,6 +41,11 @@ namespace poundfe
     /// Member end forces in local axes (N1, V1, M1, N2, V2, M2) from global
     /// end displacements.
     Vector6 local_end_forces(const Vector6 &global_displacements) const;
+    /// Global geometric stiffness T^T k_G T under the axial force N
+    /// (tension positive: compression softens the member).
+    Matrix6 geometric_stiffness(double axial_force) const;
+    /// Axial force (tension positive) from global end displacements.
+    double axial_force(const Vector6 &global_displacements) const;
     /// Global-to-local rotation T.
     Matrix6 rotation() const;
 

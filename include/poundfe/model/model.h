@@ -184,6 +184,14 @@ namespace poundfe
     consistent
   };
 
+  /// p_delta: the geometric stiffness of the gravity loads, linearised and
+  /// part of K (assembly/linear_system.h).
+  enum class GeometricNonlinearity
+  {
+    none,
+    p_delta
+  };
+
   class Model
   {
   public:
@@ -199,6 +207,8 @@ namespace poundfe
     std::vector<NodalMass>  masses;
     std::vector<Building>   buildings;
     MassMatrixType          mass_matrix = MassMatrixType::lumped;
+    GeometricNonlinearity   geometric_nonlinearity = GeometricNonlinearity::none;
+    double                  gravity                = 9.81; // m/s^2, for P-Delta
 
     unsigned int n_nodes() const { return nodes.size(); }
     unsigned int n_dofs() const { return n_dofs_per_node * nodes.size(); }

@@ -30,6 +30,7 @@ namespace poundfe
   const NameTable<BaseFixity>            &base_fixity_names();
   const NameTable<RayleighDamping::Kind> &damping_type_names();
   const NameTable<MassMatrixType>        &mass_matrix_names();
+  const NameTable<GeometricNonlinearity> &geometric_nonlinearity_names();
 
   struct BuildingParameters
   {
@@ -94,6 +95,8 @@ namespace poundfe
   struct ModelParameters
   {
     MassMatrixType                  mass_matrix = MassMatrixType::lumped;
+    GeometricNonlinearity           geometric_nonlinearity = GeometricNonlinearity::none;
+    double                          gravity                = 9.81;
     std::vector<double>             separations{0.05};
     std::vector<BuildingParameters> buildings; // one per `Building <i>`
 
