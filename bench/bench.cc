@@ -20,6 +20,13 @@
 //   times the points of FILE's Bifurcation section (each: read, prepare,
 //   transient + sampled periods, and the second trajectory when asked) and
 //   prints the points per second and the steps per second.
+// Distributed solve: [mpirun -np P] build/poundfe-bench --distributed FILE
+//   the run of FILE (its solver, e.g. petsc-mumps on input/city-block.prm)
+//   with the CSV outputs on rank 0: equations, set-up (reading and assembly;
+//   the engine with the analysis and first factorisation), steps/s, where
+//   the stepping time goes (numeric factorisations, solves, the rest) and
+//   the peak resident memory per rank; bench/city_block.sh runs it on 1 and
+//   2 ranks.
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
 #include <poundfe/analysis/analysis.h>
@@ -31,6 +38,8 @@
 #include <poundfe/analysis/input_parameters.h>
 
 #include <deal.II/base/mpi.h>
+
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -135,6 +144,91 @@ namespace
     return 0;
   }
 
+  double
+  seconds_since(const std::chrono::steady_clock::time_point start)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  /// after - before, counts and times.
+  DistributedSolverProfile
+  difference(const DistributedSolverProfile &after, const DistributedSolverProfile &before)
+  {
+    DistributedSolverProfile d = after;
+    d.analyses -= before.analyses;
+    d.factorizations -= before.factorizations;
+    d.solves -= before.solves;
+    d.analysis_time -= before.analysis_time;
+    d.factorization_time -= before.factorization_time;
+    d.solve_time -= before.solve_time;
+    return d;
+  }
+
+  int
+  measure_distributed(const std::string &file, const MPI_Comm comm)
+  {
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    auto               start   = std::chrono::steady_clock::now();
+    const Analysis     analysis   = prepare_analysis(read_parameters(file));
+    const Excitation   excitation = make_excitation(analysis);
+    const double       prepare    = seconds_since(start);
+    // The engine alone (elements, K_eff, MUMPS analysis and first
+    // factorisation), to separate its set-up from the stepping below.
+    const DistributedSolverProfile before_engine = distributed_solver_profile();
+    start = std::chrono::steady_clock::now();
+    {
+      TimeHistory history(analysis);
+    }
+    const double engine = seconds_since(start);
+    const DistributedSolverProfile in_engine =
+      difference(distributed_solver_profile(), before_engine);
+
+    const std::string dir = std::filesystem::temp_directory_path() / "poundfe-bench-distributed";
+    RunOptions        options;
+    options.output_directory = rank == 0 ? dir : "";
+    options.vtu              = false;
+    options.plots            = false;
+    const DistributedSolverProfile before_run = distributed_solver_profile();
+    const RunResult result = run_time_history(analysis, excitation, options);
+    const DistributedSolverProfile in_steps =
+      difference(difference(distributed_solver_profile(), before_run), in_engine);
+    if (rank == 0)
+      std::filesystem::remove_all(dir);
+
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    const double rss = usage.ru_maxrss / 1024.0; // MiB
+    const double max_rss = dealii::Utilities::MPI::max(rss, comm);
+    const double sum_rss = dealii::Utilities::MPI::sum(rss, comm);
+    const double steps   = result.status.wall_time;
+    const double other   = steps - in_steps.analysis_time - in_steps.factorization_time - in_steps.solve_time;
+    const IterationStatistics &s = result.statistics;
+    if (rank == 0)
+      {
+        std::printf("distributed %s on %u rank%s (%s): %u equations, %u nonlinear elements, %zu gaps\n",
+                    file.c_str(), n_ranks, n_ranks > 1 ? "s" : "", result.status.kind == RunStatus::Kind::completed ? "completed" : "NOT completed",
+                    analysis.model.n_equations(), result.n_nonlinear_elements, analysis.model.gaps.size());
+        std::printf("  set-up: read and assemble %.2f s; engine %.2f s (MUMPS analysis %.2f s, first factorisation %.2f s)\n",
+                    prepare, engine, in_engine.analysis_time, in_engine.factorization_time);
+        std::printf("  MUMPS factors: %.3g entries, %.0f MB on the largest rank, %.0f MB in all\n",
+                    in_engine.factor_entries, in_engine.factor_megabytes_per_rank, in_engine.factor_megabytes_total);
+        std::printf("  stepping: %lu steps in %.2f s: %.3f steps/s; %.2f Newton iterations/step, %lu step cuts, %zu impacts\n",
+                    result.status.steps, steps, result.status.steps / steps,
+                    s.steps ? double(s.iterations) / s.steps : 0.0, s.step_cuts, result.n_impacts);
+        std::printf("  where the stepping time goes: %lu numeric factorisations %.2f s (%.1f %%, %.3f s each), "
+                    "%lu solves %.2f s (%.1f %%), %lu analyses (new step sizes) %.2f s (%.1f %%), "
+                    "the rest (elements, residuals, outputs) %.2f s (%.1f %%)\n",
+                    in_steps.factorizations, in_steps.factorization_time, 100 * in_steps.factorization_time / steps,
+                    in_steps.factorizations ? in_steps.factorization_time / in_steps.factorizations : 0.0,
+                    in_steps.solves, in_steps.solve_time, 100 * in_steps.solve_time / steps,
+                    in_steps.analyses, in_steps.analysis_time, 100 * in_steps.analysis_time / steps,
+                    other, 100 * other / steps);
+        std::printf("  peak resident memory: %.0f MiB on the largest rank, %.0f MiB in all\n", max_rss, sum_rss);
+      }
+    return 0;
+  }
+
   int
   measure_bifurcation(const std::string &file)
   {
@@ -167,6 +261,8 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   if (argc > 3 && std::string(argv[1]) == "--montecarlo")
     return measure_monte_carlo(argv[2], std::stoul(argv[3]), MPI_COMM_WORLD);
+  if (argc > 2 && std::string(argv[1]) == "--distributed")
+    return measure_distributed(argv[2], MPI_COMM_WORLD);
   if (argc > 2 && std::string(argv[1]) == "--bifurcation")
     return measure_bifurcation(argv[2]);
   const std::string  file    = argc > 1 ? argv[1] : "input/two-buildings.prm";

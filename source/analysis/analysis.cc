@@ -53,9 +53,13 @@ namespace poundfe
         const auto      range    = model.equation_range(b);
         const unsigned  wanted =
           std::max({input.output.n_modes, building.damping.first_mode, building.damping.second_mode});
+        // no modes reported nor needed for damping: no eigenproblem (a large
+        // model with given Rayleigh coefficients)
         analysis.building_modes.push_back(
-          compute_modes(block(system.mass, range), block(system.stiffness, range),
-                        system.influence.segment(range[0], range[1] - range[0]), wanted));
+          wanted == 0 ? Modes() :
+                        compute_modes(block(system.mass, range), block(system.stiffness, range),
+                                      system.influence.segment(range[0], range[1] - range[0]),
+                                      wanted));
         const Modes           &modes = analysis.building_modes.back();
         const RayleighDamping &d     = building.damping;
         switch (d.kind)
@@ -81,7 +85,9 @@ namespace poundfe
           }
       }
     assemble_damping(model, coefficients, system);
-    analysis.modes = compute_modes(system.mass, system.stiffness, system.influence, input.output.n_modes);
+    if (input.output.n_modes > 0)
+      analysis.modes =
+        compute_modes(system.mass, system.stiffness, system.influence, input.output.n_modes);
     return analysis;
   }
 
