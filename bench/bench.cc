@@ -198,34 +198,40 @@ namespace
 
     rusage usage;
     getrusage(RUSAGE_SELF, &usage);
-    const double rss = usage.ru_maxrss / 1024.0; // MiB
+    const double rss     = usage.ru_maxrss / 1024.0; // MiB
     const double max_rss = dealii::Utilities::MPI::max(rss, comm);
     const double sum_rss = dealii::Utilities::MPI::sum(rss, comm);
-    const double steps   = result.status.wall_time;
-    const double other   = steps - in_steps.analysis_time - in_steps.factorization_time - in_steps.solve_time;
-    const IterationStatistics &s = result.statistics;
-    if (rank == 0)
-      {
-        std::printf("distributed %s on %u rank%s (%s): %u equations, %u nonlinear elements, %zu gaps\n",
-                    file.c_str(), n_ranks, n_ranks > 1 ? "s" : "", result.status.kind == RunStatus::Kind::completed ? "completed" : "NOT completed",
-                    analysis.model.n_equations(), result.n_nonlinear_elements, analysis.model.gaps.size());
-        std::printf("  set-up: read and assemble %.2f s; engine %.2f s (MUMPS analysis %.2f s, first factorisation %.2f s)\n",
-                    prepare, engine, in_engine.analysis_time, in_engine.factorization_time);
-        std::printf("  MUMPS factors: %.3g entries, %.0f MB on the largest rank, %.0f MB in all\n",
-                    in_engine.factor_entries, in_engine.factor_megabytes_per_rank, in_engine.factor_megabytes_total);
-        std::printf("  stepping: %lu steps in %.2f s: %.3f steps/s; %.2f Newton iterations/step, %lu step cuts, %zu impacts\n",
-                    result.status.steps, steps, result.status.steps / steps,
-                    s.steps ? double(s.iterations) / s.steps : 0.0, s.step_cuts, result.n_impacts);
-        std::printf("  where the stepping time goes: %lu numeric factorisations %.2f s (%.1f %%, %.3f s each), "
-                    "%lu solves %.2f s (%.1f %%), %lu analyses (new step sizes) %.2f s (%.1f %%), "
-                    "the rest (elements, residuals, outputs) %.2f s (%.1f %%)\n",
-                    in_steps.factorizations, in_steps.factorization_time, 100 * in_steps.factorization_time / steps,
-                    in_steps.factorizations ? in_steps.factorization_time / in_steps.factorizations : 0.0,
-                    in_steps.solves, in_steps.solve_time, 100 * in_steps.solve_time / steps,
-                    in_steps.analyses, in_steps.analysis_time, 100 * in_steps.analysis_time / steps,
-                    other, 100 * other / steps);
-        std::printf("  peak resident memory: %.0f MiB on the largest rank, %.0f MiB in all\n", max_rss, sum_rss);
-      }
+    if (rank != 0)
+      return 0;
+    const double               wall  = result.status.wall_time;
+    const DistributedSolverProfile &p = in_steps;
+    const double rest  = wall - p.analysis_time - p.factorization_time - p.solve_time;
+    const IterationStatistics &s     = result.statistics;
+    const bool completed = result.status.kind == RunStatus::Kind::completed;
+    std::printf("distributed %s on %u rank(s)%s: %u equations, %u nonlinear elements, %zu gaps\n",
+                file.c_str(), n_ranks, completed ? "" : " (NOT completed)",
+                analysis.model.n_equations(), result.n_nonlinear_elements,
+                analysis.model.gaps.size());
+    std::printf("  set-up: read and assemble %.2f s; engine %.2f s (MUMPS analysis %.2f s, "
+                "first factorisation %.2f s)\n",
+                prepare, engine, in_engine.analysis_time, in_engine.factorization_time);
+    std::printf("  MUMPS factors: %.3g entries, %.0f MB on the largest rank, %.0f MB in all\n",
+                in_engine.factor_entries, in_engine.factor_megabytes_per_rank,
+                in_engine.factor_megabytes_total);
+    std::printf("  stepping: %lu steps (%lu with sub-steps) in %.2f s: %.3f steps/s; %.2f Newton "
+                "iterations/step, %lu step cuts, %zu impacts\n",
+                result.status.steps, s.steps, wall, result.status.steps / wall,
+                s.steps ? double(s.iterations) / s.steps : 0.0, s.step_cuts, result.n_impacts);
+    const auto share = [wall](const double t) { return 100 * t / wall; };
+    std::printf("  stepping time: %lu numeric factorisations %.2f s (%.1f %%, %.3f s each), "
+                "%lu solves %.2f s (%.1f %%, %.4f s each), %lu analyses (new step sizes) "
+                "%.2f s (%.1f %%), the rest (elements, residuals, outputs) %.2f s (%.1f %%)\n",
+                p.factorizations, p.factorization_time, share(p.factorization_time),
+                p.factorizations ? p.factorization_time / p.factorizations : 0.0, p.solves,
+                p.solve_time, share(p.solve_time), p.solves ? p.solve_time / p.solves : 0.0,
+                p.analyses, p.analysis_time, share(p.analysis_time), rest, share(rest));
+    std::printf("  peak resident memory: %.0f MiB on the largest rank, %.0f MiB in all\n",
+                max_rss, sum_rss);
     return 0;
   }
 

@@ -51,8 +51,10 @@ namespace poundfe
       {
         const Building &building = model.buildings[b];
         const auto      range    = model.equation_range(b);
+        const bool      for_damping = building.damping.kind == RayleighDamping::Kind::modes;
         const unsigned  wanted =
-          std::max({input.output.n_modes, building.damping.first_mode, building.damping.second_mode});
+          std::max({input.output.n_modes, for_damping ? building.damping.first_mode : 0u,
+                    for_damping ? building.damping.second_mode : 0u});
         // no modes reported nor needed for damping: no eigenproblem (a large
         // model with given Rayleigh coefficients)
         analysis.building_modes.push_back(

@@ -59,8 +59,8 @@ namespace poundfe
       }
 
     private:
-      double                                      &total;
-      std::chrono::steady_clock::time_point        start;
+      double                               &total;
+      std::chrono::steady_clock::time_point start;
     };
 
     class PetscMumpsSolver : public LinearSolver
@@ -124,23 +124,28 @@ namespace poundfe
       }
 
     private:
-      /// This rank's rows [first_row, end_row) of `matrix` in CSR form, with
-      /// the position of each entry in the Eigen (column-major) values;
-      /// creates the PETSc matrix with that pattern and these values, the
-      /// vectors, the gather and the MUMPS factor.
+      /// This rank's block of rows [first_row, end_row): contiguous, about
+      /// n / P rows each, as PETSc would split them.
       void
-      copy_local_rows(const SparseMatrix &matrix)
+      split_rows(const PetscInt n)
       {
-        PetscInt n = matrix.rows(), n_local = PETSC_DECIDE;
-        check(PetscSplitOwnership(communicator, &n_local, &n), "PetscSplitOwnership");
-        first_row = 0; // MPI_Exscan leaves rank 0's result undefined
+        PetscInt n_local = PETSC_DECIDE, n_global = n;
+        check(PetscSplitOwnership(communicator, &n_local, &n_global), "PetscSplitOwnership");
+        first_row = 0;
         MPI_Exscan(&n_local, &first_row, 1, MPIU_INT, MPI_SUM, communicator);
         int rank = 0;
         MPI_Comm_rank(communicator, &rank);
         if (rank == 0)
-          first_row = 0;
+          first_row = 0; // MPI_Exscan leaves rank 0's result undefined
         end_row = first_row + n_local;
+      }
 
+      /// This rank's rows of `matrix` in CSR form (row_start, columns), with
+      /// the position of each entry in the Eigen (column-major) values.
+      void
+      copy_local_pattern(const SparseMatrix &matrix)
+      {
+        const PetscInt n_local = end_row - first_row;
         row_start.assign(n_local + 1, 0);
         for (int column = 0; column < matrix.outerSize(); ++column)
           for (SparseMatrix::InnerIterator it(matrix, column); it; ++it)
@@ -162,11 +167,22 @@ namespace poundfe
                 source[k]        = &it.value() - matrix.valuePtr();
               }
         n_nonzeros = matrix.nonZeros();
-        gather_values(matrix);
+      }
 
+      /// The PETSc matrix of this rank's rows with `matrix`'s pattern and
+      /// values, the vectors, the gather to all ranks and the MUMPS factor.
+      void
+      copy_local_rows(const SparseMatrix &matrix)
+      {
+        const PetscInt n = matrix.rows();
+        split_rows(n);
+        copy_local_pattern(matrix);
+        gather_values(matrix);
+        const PetscInt n_local = end_row - first_row;
         check(MatCreate(communicator, &petsc_matrix), "MatCreate");
         check(MatSetSizes(petsc_matrix, n_local, n_local, n, n), "MatSetSizes");
         check(MatSetType(petsc_matrix, MATAIJ), "MatSetType");
+        // one of the two applies: sequential AIJ on one rank, MPI AIJ on more
         check(MatSeqAIJSetPreallocationCSR(petsc_matrix, row_start.data(), columns.data(),
                                            values.data()),
               "MatSeqAIJSetPreallocationCSR");
