@@ -32,6 +32,13 @@
 //   one once above 1000 equations) on generated 3-bay frames with 2 elements
 //   per member (33 equations per storey; default 15 30 60 150 storeys, i.e.
 //   495 to 4950 equations), and prints the largest frequency difference.
+// Distributed solve: [mpirun -np P] build/poundfe-bench --distributed FILE
+//   the run of FILE (its solver, e.g. petsc-mumps on input/city-block.prm)
+//   with the CSV outputs on rank 0: equations, set-up (reading and assembly;
+//   the engine with the analysis and first factorisation), steps/s, where
+//   the stepping time goes (numeric factorisations, solves, the rest) and
+//   the peak resident memory per rank; bench/city_block.sh runs it on 1 and
+//   2 ranks.
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
 #include <poundfe/analysis/analysis.h>
@@ -45,6 +52,8 @@
 #include <poundfe/model/model_builder.h>
 
 #include <deal.II/base/mpi.h>
+
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -221,6 +230,97 @@ namespace
     return 0;
   }
 
+  double
+  seconds_since(const std::chrono::steady_clock::time_point start)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  /// after - before, counts and times.
+  DistributedSolverProfile
+  difference(const DistributedSolverProfile &after, const DistributedSolverProfile &before)
+  {
+    DistributedSolverProfile d = after;
+    d.analyses -= before.analyses;
+    d.factorizations -= before.factorizations;
+    d.solves -= before.solves;
+    d.analysis_time -= before.analysis_time;
+    d.factorization_time -= before.factorization_time;
+    d.solve_time -= before.solve_time;
+    return d;
+  }
+
+  int
+  measure_distributed(const std::string &file, const MPI_Comm comm)
+  {
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    auto               start   = std::chrono::steady_clock::now();
+    const Analysis     analysis   = prepare_analysis(read_parameters(file));
+    const Excitation   excitation = make_excitation(analysis);
+    const double       prepare    = seconds_since(start);
+    // The engine alone (elements, K_eff, MUMPS analysis and first
+    // factorisation), to separate its set-up from the stepping below.
+    const DistributedSolverProfile before_engine = distributed_solver_profile();
+    start = std::chrono::steady_clock::now();
+    {
+      TimeHistory history(analysis);
+    }
+    const double engine = seconds_since(start);
+    const DistributedSolverProfile in_engine =
+      difference(distributed_solver_profile(), before_engine);
+
+    const std::string dir = std::filesystem::temp_directory_path() / "poundfe-bench-distributed";
+    RunOptions        options;
+    options.output_directory = rank == 0 ? dir : "";
+    options.vtu              = false;
+    options.plots            = false;
+    const DistributedSolverProfile before_run = distributed_solver_profile();
+    const RunResult result = run_time_history(analysis, excitation, options);
+    const DistributedSolverProfile in_steps =
+      difference(difference(distributed_solver_profile(), before_run), in_engine);
+    if (rank == 0)
+      std::filesystem::remove_all(dir);
+
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    const double rss     = usage.ru_maxrss / 1024.0; // MiB
+    const double max_rss = dealii::Utilities::MPI::max(rss, comm);
+    const double sum_rss = dealii::Utilities::MPI::sum(rss, comm);
+    if (rank != 0)
+      return 0;
+    const double               wall  = result.status.wall_time;
+    const DistributedSolverProfile &p = in_steps;
+    const double rest  = wall - p.analysis_time - p.factorization_time - p.solve_time;
+    const IterationStatistics &s     = result.statistics;
+    const bool completed = result.status.kind == RunStatus::Kind::completed;
+    std::printf("distributed %s on %u rank(s)%s: %u equations, %u nonlinear elements, %zu gaps\n",
+                file.c_str(), n_ranks, completed ? "" : " (NOT completed)",
+                analysis.model.n_equations(), result.n_nonlinear_elements,
+                analysis.model.gaps.size());
+    std::printf("  set-up: read and assemble %.2f s; engine %.2f s (MUMPS analysis %.2f s, "
+                "first factorisation %.2f s)\n",
+                prepare, engine, in_engine.analysis_time, in_engine.factorization_time);
+    std::printf("  MUMPS factors: %.3g entries, %.0f MB on the largest rank, %.0f MB in all\n",
+                in_engine.factor_entries, in_engine.factor_megabytes_per_rank,
+                in_engine.factor_megabytes_total);
+    std::printf("  stepping: %lu steps (%lu with sub-steps) in %.2f s: %.3f steps/s; %.2f Newton "
+                "iterations/step, %lu step cuts, %zu impacts\n",
+                result.status.steps, s.steps, wall, result.status.steps / wall,
+                s.steps ? double(s.iterations) / s.steps : 0.0, s.step_cuts, result.n_impacts);
+    const auto share = [wall](const double t) { return 100 * t / wall; };
+    std::printf("  stepping time: %lu numeric factorisations %.2f s (%.1f %%, %.3f s each), "
+                "%lu solves %.2f s (%.1f %%, %.4f s each), %lu analyses (new step sizes) "
+                "%.2f s (%.1f %%), the rest (elements, residuals, outputs) %.2f s (%.1f %%)\n",
+                p.factorizations, p.factorization_time, share(p.factorization_time),
+                p.factorizations ? p.factorization_time / p.factorizations : 0.0, p.solves,
+                p.solve_time, share(p.solve_time), p.solves ? p.solve_time / p.solves : 0.0,
+                p.analyses, p.analysis_time, share(p.analysis_time), rest, share(rest));
+    std::printf("  peak resident memory: %.0f MiB on the largest rank, %.0f MiB in all\n",
+                max_rss, sum_rss);
+    return 0;
+  }
+
   int
   measure_bifurcation(const std::string &file)
   {
@@ -300,6 +400,8 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   if (argc > 3 && std::string(argv[1]) == "--montecarlo")
     return measure_monte_carlo(argv[2], std::stoul(argv[3]), MPI_COMM_WORLD);
+  if (argc > 2 && std::string(argv[1]) == "--distributed")
+    return measure_distributed(argv[2], MPI_COMM_WORLD);
   if (argc > 2 && std::string(argv[1]) == "--bifurcation")
     return measure_bifurcation(argv[2]);
   if (argc > 1 && std::string(argv[1]) == "--output")

@@ -161,6 +161,14 @@ main(int argc, char **argv)
       const poundfe::InputParameters input = poundfe::read_parameters(args[1]);
       if (!mpi && poundfe::linear_solver_needs_mpi(input.time_integration.linear_solver))
         mpi.emplace(argc, argv, 1);
+      // A distributed solver needs every rank in the same analysis: `run`
+      // (the probabilistic commands give each rank its own realizations).
+      if (mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
+          poundfe::linear_solver_is_distributed(input.time_integration.linear_solver) &&
+          command != "run")
+        input.fail("Time integration/Linear solver",
+                   input.time_integration.linear_solver + " spreads one run over the MPI ranks: "
+                   "on more than one rank only 'run' can use it, not '" + command + "'");
       const std::string directory = line.output.empty() ? input.output.directory : line.output;
       if (command == "stationary-pdf" && line.n_realizations == 0)
         return poundfe::stationary_pdf_command(input, directory, MPI_COMM_WORLD);

@@ -90,12 +90,17 @@ namespace poundfe
       {
         const Building &building = model.buildings[b];
         const auto      range    = model.equation_range(b);
+        const bool      for_damping = building.damping.kind == RayleighDamping::Kind::modes;
         const unsigned  wanted =
-          std::max({input.output.n_modes, building.damping.first_mode, building.damping.second_mode});
+          std::max({input.output.n_modes, for_damping ? building.damping.first_mode : 0u,
+                    for_damping ? building.damping.second_mode : 0u});
+        // no modes reported nor needed for damping: no eigenproblem (a large
+        // model with given Rayleigh coefficients)
         analysis.building_modes.push_back(
-          modes_of(input, block(system.mass, range), block(system.stiffness, range),
-                   system.influence.segment(range[0], range[1] - range[0]), wanted,
-                   "building '" + building.name + "'"));
+          wanted == 0 ? Modes() :
+                        modes_of(input, block(system.mass, range), block(system.stiffness, range),
+                                 system.influence.segment(range[0], range[1] - range[0]), wanted,
+                                 "building '" + building.name + "'"));
         const Modes           &modes = analysis.building_modes.back();
         const RayleighDamping &d     = building.damping;
         switch (d.kind)
@@ -121,8 +126,9 @@ namespace poundfe
           }
       }
     assemble_damping(model, coefficients, system);
-    analysis.modes = modes_of(input, system.mass, system.stiffness, system.influence,
-                              input.output.n_modes, "the model");
+    if (input.output.n_modes > 0)
+      analysis.modes = modes_of(input, system.mass, system.stiffness, system.influence,
+                                input.output.n_modes, "the model");
     return analysis;
   }
 

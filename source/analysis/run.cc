@@ -14,6 +14,8 @@
 #include <poundfe/output/plots.h>
 #include <poundfe/output/vtu_series.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -50,6 +52,31 @@ namespace poundfe
           names[eq] = s.str();
         }
       return names;
+    }
+
+    /// Whether this process writes files and messages: rank 0 of
+    /// MPI_COMM_WORLD, or the only process when MPI is not initialised.
+    /// (With a solver that needs MPI, every rank of `mpirun -np P poundfe
+    /// run` runs the same analysis; rank 0 alone writes.)
+    bool
+    writes_outputs()
+    {
+      int initialized = 0;
+      MPI_Initialized(&initialized);
+      return !initialized || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    }
+
+    /// SIGINT/SIGTERM, agreed by every rank (mpirun may deliver it to the
+    /// ranks at different steps; a rank that stopped alone would leave the
+    /// others waiting in the distributed solver).
+    bool
+    stop_requested()
+    {
+      int initialized = 0;
+      MPI_Initialized(&initialized);
+      if (!initialized || dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
+        return interruption_requested();
+      return dealii::Utilities::MPI::logical_or(interruption_requested(), MPI_COMM_WORLD);
     }
 
     double
@@ -212,7 +239,7 @@ namespace poundfe
       {
         for (step = 1; step <= n; ++step)
           {
-            if (interruptible && interruption_requested())
+            if (interruptible && stop_requested())
               {
                 status.kind = RunStatus::Kind::interrupted;
                 break;
@@ -310,12 +337,16 @@ namespace poundfe
   run_command(const Analysis &analysis, const std::string &output_directory)
   {
     const Excitation excitation = make_excitation(analysis);
+    const bool       root       = writes_outputs();
     RunOptions       options;
-    options.output_directory = output_directory;
-    options.progress         = true;
+    options.output_directory = root ? output_directory : "";
+    options.progress         = root;
     options.interruptible    = true;
     const RunResult  result  = run_time_history(analysis, excitation, options);
     const RunStatus &status  = result.status;
+    if (!root)
+      return status.kind == RunStatus::Kind::failed ? 2 :
+             status.kind == RunStatus::Kind::interrupted ? interrupted_exit_status() : 0;
     std::cout << "poundfe run: " << status.steps << " steps to t = " << status.end_time << " s in "
               << status.wall_time << " s\n";
     if (result.n_nonlinear_elements > 0)

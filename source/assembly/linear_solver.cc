@@ -70,13 +70,19 @@ namespace poundfe
   std::vector<std::string>
   linear_solver_names()
   {
-    return {"eigen-ldlt", "umfpack", "petsc", "trilinos"};
+    return {"eigen-ldlt", "umfpack", "petsc", "trilinos", "petsc-mumps"};
   }
 
   bool
   linear_solver_needs_mpi(const std::string &name)
   {
-    return name == "petsc" || name == "trilinos";
+    return name == "petsc" || name == "trilinos" || linear_solver_is_distributed(name);
+  }
+
+  bool
+  linear_solver_is_distributed(const std::string &name)
+  {
+    return name == "petsc-mumps";
   }
 
   std::unique_ptr<LinearSolver>
@@ -93,6 +99,8 @@ namespace poundfe
       return create_petsc_solver();
     if (name == "trilinos")
       return create_trilinos_solver();
+    if (name == "petsc-mumps")
+      return create_petsc_mumps_solver();
     throw InputError("", 0, "Time integration/Linear solver", "unknown solver '" + name + "'");
   }
 } // namespace poundfe

@@ -35,7 +35,9 @@ namespace poundfe
                       "acceleration).");
     add_choice(prm, "Linear solver", linear_solver,
                "Direct solver of the effective matrix (factorised once); petsc and "
-               "trilinos need MPI.",
+               "trilinos need MPI; petsc-mumps (MUMPS through PETSc) splits the matrix and "
+               "its factorisation over the ranks of mpirun -np P poundfe run (each rank "
+               "keeps the whole state; rank 0 writes).",
                linear_solver_names());
     prm.add_parameter("Newton residual tolerance", newmark.newton.residual_tolerance,
                       "A nonlinear step has converged when the residual norm is below this "

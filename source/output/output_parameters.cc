@@ -21,8 +21,10 @@ namespace poundfe
                output_format_names());
     prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none).");
     prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot.");
-    prm.add_parameter("Number of modes", n_modes, "Modes reported.",
-                      dealii::Patterns::Integer(1));
+    prm.add_parameter("Number of modes", n_modes,
+                      "Modes reported (0: no modal analysis, for a large model whose "
+                      "damping needs no modes).",
+                      dealii::Patterns::Integer(0));
     prm.enter_subsection("Recorders");
     recorders.declare(prm);
     prm.leave_subsection();

@@ -3,6 +3,7 @@
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/analysis/input_parameters.h>
+#include <poundfe/base/exceptions.h>
 
 #include <cmath>
 
@@ -69,4 +70,19 @@ BOOST_AUTO_TEST_CASE(all_solver_backends_agree)
       solver->solve(b, half);
       BOOST_TEST((2.0 * half - x).norm() <= 1e-9 * x.norm());
     }
+}
+
+// MUMPS's global status: a singular effective matrix (a mechanism) is a
+// NumericalError, as with the other backends (theory §3.5a).
+BOOST_AUTO_TEST_CASE(petsc_mumps_reports_a_singular_matrix)
+{
+  SparseMatrix singular(3, 3);
+  singular.insert(0, 0) = 1;
+  singular.insert(0, 1) = 1;
+  singular.insert(1, 0) = 1;
+  singular.insert(1, 1) = 1; // rows 0 and 1 equal
+  singular.insert(2, 2) = 1;
+  singular.makeCompressed();
+  auto solver = create_linear_solver("petsc-mumps");
+  BOOST_CHECK_THROW(solver->analyze_and_factorize(singular), NumericalError);
 }

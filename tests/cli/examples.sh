@@ -7,6 +7,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for file in "$input"/*.prm; do
   name=$(basename "$file" .prm)
+  # 116k equations, minutes per run: too long for CI. Its small variant,
+  # tests/cli/city-block-small.prm, runs in cli/distributed-run.
+  [ "$name" = city-block ] && continue
   "$poundfe" modal "$file" --output "$work/$name/modal" > /dev/null
   "$poundfe" run "$file" --output "$work/$name" > /dev/null
   for f in summary.json drift.csv floor_acceleration.csv floor_displacement.csv; do

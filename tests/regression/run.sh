@@ -20,6 +20,9 @@ check() { # name directory
 }
 for file in "$input"/*.prm; do
   name=$(basename "$file" .prm)
+  # 116k equations, minutes per run: too long for CI. Its small variant,
+  # tests/cli/city-block-small.prm, runs in cli/distributed-run.
+  [ "$name" = city-block ] && continue
   "$poundfe" run "$file" --output "$work/$name" > /dev/null 2>&1 || true
   check "$name" "$work/$name"
 done

@@ -34,20 +34,40 @@ namespace poundfe
     }
   };
 
-  /// "eigen-ldlt", "umfpack", "petsc" or "trilinos".
+  /// "eigen-ldlt", "umfpack", "petsc", "trilinos" or "petsc-mumps".
   std::unique_ptr<LinearSolver> create_linear_solver(const std::string &name);
 
   /// Names accepted by create_linear_solver.
   std::vector<std::string> linear_solver_names();
 
   /// Whether the solver needs MPI, PETSc and Trilinos initialised first
-  /// (dealii::Utilities::MPI::MPI_InitFinalize): "petsc" and "trilinos".
+  /// (dealii::Utilities::MPI::MPI_InitFinalize): "petsc", "trilinos" and
+  /// "petsc-mumps".
   bool linear_solver_needs_mpi(const std::string &name);
+
+  /// Whether the solver spreads one factorisation over the ranks of
+  /// MPI_COMM_WORLD ("petsc-mumps"): then every rank must run the same
+  /// analysis in step, and only rank 0 writes.
+  bool linear_solver_is_distributed(const std::string &name);
+
+  /// What the distributed solver did in this process, over all its
+  /// instances (one per time step size): counts, wall seconds on this rank,
+  /// and MUMPS's memory and factor size (largest seen).
+  struct DistributedSolverProfile
+  {
+    unsigned long analyses = 0, factorizations = 0, solves = 0;
+    double        analysis_time = 0, factorization_time = 0, solve_time = 0;
+    double        factor_megabytes_per_rank = 0; // MUMPS INFOG(21)
+    double        factor_megabytes_total    = 0; // MUMPS INFOG(22)
+    double        factor_entries            = 0; // MUMPS INFOG(29)
+  };
+  const DistributedSolverProfile &distributed_solver_profile();
 
   std::unique_ptr<LinearSolver> create_eigen_ldlt_solver();
   std::unique_ptr<LinearSolver> create_umfpack_solver();
   std::unique_ptr<LinearSolver> create_petsc_solver();
   std::unique_ptr<LinearSolver> create_trilinos_solver();
+  std::unique_ptr<LinearSolver> create_petsc_mumps_solver();
 } // namespace poundfe
 
 #endif

@@ -1,0 +1,291 @@
+// The distributed direct solver "petsc-mumps": the effective matrix as a
+// PETSc MPI AIJ matrix split by contiguous blocks of rows over the ranks of
+// MPI_COMM_WORLD, factorised by MUMPS (Amestoy et al. 2001, SIAM J. Matrix
+// Anal. Appl. 23(1):15-41) through PETSc's MatGetFactor interface (Balay et
+// al., PETSc Users Manual, "Using External Linear Solvers").
+//
+// Every rank holds the whole Eigen matrix and vectors (the integrator's state
+// is replicated); each rank copies only its own rows into PETSc (the
+// distributed assembly of K_eff and of every refactorised tangent), MUMPS's
+// analysis (ordering, symbolic factorisation) runs once in analyze() and each
+// factorize() is a numeric factorisation on that analysis. A solve scatters
+// nothing in (each rank takes its rows of b from its own copy) and gathers
+// the solution to every rank (VecScatterCreateToAll). On one rank it is
+// sequential MUMPS. Every call is collective: all ranks must make the same
+// calls in the same order, which the replicated time stepping guarantees.
+#include <poundfe/assembly/linear_solver.h>
+#include <poundfe/base/exceptions.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <petscmat.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  namespace
+  {
+    DistributedSolverProfile profile;
+
+    /// PETSc calls that fail are programming or installation errors: the
+    /// caller (main) aborts all ranks.
+    void
+    check(const PetscErrorCode code, const char *call)
+    {
+      if (code != 0)
+        throw std::runtime_error(std::string("PETSc: ") + call + " failed (error " +
+                                 std::to_string(code) + ")");
+    }
+
+    /// Seconds since `start`, added to `total`.
+    class ScopedTime
+    {
+    public:
+      explicit ScopedTime(double &total)
+        : total(total)
+        , start(std::chrono::steady_clock::now())
+      {}
+      ~ScopedTime()
+      {
+        total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
+
+    private:
+      double                               &total;
+      std::chrono::steady_clock::time_point start;
+    };
+
+    class PetscMumpsSolver : public LinearSolver
+    {
+    public:
+      PetscMumpsSolver()
+        : communicator(MPI_COMM_WORLD)
+      {}
+      ~PetscMumpsSolver() override { destroy(); }
+
+      void
+      analyze(const SparseMatrix &matrix) override
+      {
+        ScopedTime time(profile.analysis_time);
+        destroy();
+        copy_local_rows(matrix);
+        check(MatLUFactorSymbolic(factor, petsc_matrix, nullptr, nullptr, &info),
+              "MatLUFactorSymbolic");
+        throw_if_failed("analysis");
+        ++profile.analyses;
+      }
+
+      void
+      factorize(const SparseMatrix &matrix) override
+      {
+        ScopedTime time(profile.factorization_time);
+        Assert(petsc_matrix != nullptr, dealii::ExcMessage("analyze() first"));
+        AssertDimension(matrix.nonZeros(), static_cast<long>(n_nonzeros));
+        set_values(matrix);
+        check(MatLUFactorNumeric(factor, petsc_matrix, &info), "MatLUFactorNumeric");
+        throw_if_failed("factorisation");
+        record_memory();
+        ++profile.factorizations;
+      }
+
+      void
+      solve(const Vector &b, Vector &x) override
+      {
+        ScopedTime time(profile.solve_time);
+        PetscScalar *local = nullptr;
+        check(VecGetArray(rhs, &local), "VecGetArray");
+        for (PetscInt i = first_row; i < end_row; ++i)
+          local[i - first_row] = b[i];
+        check(VecRestoreArray(rhs, &local), "VecRestoreArray");
+        check(MatSolve(factor, rhs, solution), "MatSolve");
+        check(VecScatterBegin(to_all, solution, gathered, INSERT_VALUES, SCATTER_FORWARD),
+              "VecScatterBegin");
+        check(VecScatterEnd(to_all, solution, gathered, INSERT_VALUES, SCATTER_FORWARD),
+              "VecScatterEnd");
+        const PetscScalar *all = nullptr;
+        check(VecGetArrayRead(gathered, &all), "VecGetArrayRead");
+        x = Eigen::Map<const Vector>(all, b.size());
+        check(VecRestoreArrayRead(gathered, &all), "VecRestoreArrayRead");
+        ++profile.solves;
+      }
+
+      std::string
+      name() const override
+      {
+        return "petsc-mumps";
+      }
+
+    private:
+      /// This rank's block of rows [first_row, end_row): contiguous, about
+      /// n / P rows each, as PETSc would split them.
+      void
+      split_rows(const PetscInt n)
+      {
+        PetscInt n_local = PETSC_DECIDE, n_global = n;
+        check(PetscSplitOwnership(communicator, &n_local, &n_global), "PetscSplitOwnership");
+        first_row = 0;
+        MPI_Exscan(&n_local, &first_row, 1, MPIU_INT, MPI_SUM, communicator);
+        int rank = 0;
+        MPI_Comm_rank(communicator, &rank);
+        if (rank == 0)
+          first_row = 0; // MPI_Exscan leaves rank 0's result undefined
+        end_row = first_row + n_local;
+      }
+
+      /// This rank's rows of `matrix` in CSR form (row_start, columns), with
+      /// the position of each entry in the Eigen (column-major) values.
+      void
+      copy_local_pattern(const SparseMatrix &matrix)
+      {
+        const PetscInt n_local = end_row - first_row;
+        row_start.assign(n_local + 1, 0);
+        for (int column = 0; column < matrix.outerSize(); ++column)
+          for (SparseMatrix::InnerIterator it(matrix, column); it; ++it)
+            if (it.row() >= first_row && it.row() < end_row)
+              ++row_start[it.row() - first_row + 1];
+        for (PetscInt i = 0; i < n_local; ++i)
+          row_start[i + 1] += row_start[i];
+        columns.resize(row_start[n_local]);
+        source.resize(row_start[n_local]);
+        values.resize(row_start[n_local]);
+        std::vector<PetscInt> next(row_start.begin(), row_start.end() - 1);
+        // columns in increasing order: each row's entries come out sorted
+        for (int column = 0; column < matrix.outerSize(); ++column)
+          for (SparseMatrix::InnerIterator it(matrix, column); it; ++it)
+            if (it.row() >= first_row && it.row() < end_row)
+              {
+                const PetscInt k = next[it.row() - first_row]++;
+                columns[k]       = column;
+                source[k]        = &it.value() - matrix.valuePtr();
+              }
+        n_nonzeros = matrix.nonZeros();
+      }
+
+      /// The PETSc matrix of this rank's rows with `matrix`'s pattern and
+      /// values, the vectors, the gather to all ranks and the MUMPS factor.
+      void
+      copy_local_rows(const SparseMatrix &matrix)
+      {
+        const PetscInt n = matrix.rows();
+        split_rows(n);
+        copy_local_pattern(matrix);
+        gather_values(matrix);
+        const PetscInt n_local = end_row - first_row;
+        check(MatCreate(communicator, &petsc_matrix), "MatCreate");
+        check(MatSetSizes(petsc_matrix, n_local, n_local, n, n), "MatSetSizes");
+        check(MatSetType(petsc_matrix, MATAIJ), "MatSetType");
+        // one of the two applies: sequential AIJ on one rank, MPI AIJ on more
+        check(MatSeqAIJSetPreallocationCSR(petsc_matrix, row_start.data(), columns.data(),
+                                           values.data()),
+              "MatSeqAIJSetPreallocationCSR");
+        check(MatMPIAIJSetPreallocationCSR(petsc_matrix, row_start.data(), columns.data(),
+                                           values.data()),
+              "MatMPIAIJSetPreallocationCSR");
+        check(MatSetOption(petsc_matrix, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE),
+              "MatSetOption");
+        check(MatCreateVecs(petsc_matrix, &solution, &rhs), "MatCreateVecs");
+        check(VecScatterCreateToAll(solution, &to_all, &gathered), "VecScatterCreateToAll");
+        check(MatGetFactor(petsc_matrix, MATSOLVERMUMPS, MAT_FACTOR_LU, &factor),
+              "MatGetFactor (is PETSc built with MUMPS?)");
+        check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
+      }
+
+      void
+      gather_values(const SparseMatrix &matrix)
+      {
+        const double *all = matrix.valuePtr();
+        for (std::size_t k = 0; k < source.size(); ++k)
+          values[k] = all[source[k]];
+      }
+
+      /// The new values of this rank's rows (same pattern) into PETSc.
+      void
+      set_values(const SparseMatrix &matrix)
+      {
+        gather_values(matrix);
+        for (PetscInt i = 0; i < end_row - first_row; ++i)
+          {
+            const PetscInt row = first_row + i;
+            check(MatSetValues(petsc_matrix, 1, &row, row_start[i + 1] - row_start[i],
+                               columns.data() + row_start[i], values.data() + row_start[i],
+                               INSERT_VALUES),
+                  "MatSetValues");
+          }
+        check(MatAssemblyBegin(petsc_matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+        check(MatAssemblyEnd(petsc_matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+      }
+
+      /// MUMPS's global status INFOG(1) (the same on every rank): negative
+      /// is a failure; -10 a numerically singular matrix.
+      void
+      throw_if_failed(const char *phase) const
+      {
+        PetscInt status = 0;
+        check(MatMumpsGetInfog(factor, 1, &status), "MatMumpsGetInfog");
+        if (status == -10 || status == -6)
+          throw NumericalError("MUMPS: the effective matrix is singular");
+        if (status < 0)
+          throw NumericalError(std::string("MUMPS ") + phase + " failed (INFOG(1) = " +
+                               std::to_string(status) + ")");
+      }
+
+      /// INFOG(21), INFOG(22): MB of the factorisation on the largest rank
+      /// and on all ranks; INFOG(29): entries in the factors (negative:
+      /// millions).
+      void
+      record_memory() const
+      {
+        PetscInt largest = 0, total = 0, entries = 0;
+        check(MatMumpsGetInfog(factor, 21, &largest), "MatMumpsGetInfog");
+        check(MatMumpsGetInfog(factor, 22, &total), "MatMumpsGetInfog");
+        check(MatMumpsGetInfog(factor, 29, &entries), "MatMumpsGetInfog");
+        profile.factor_megabytes_per_rank = std::max<double>(profile.factor_megabytes_per_rank, largest);
+        profile.factor_megabytes_total    = std::max<double>(profile.factor_megabytes_total, total);
+        profile.factor_entries = std::max<double>(profile.factor_entries,
+                                                  entries < 0 ? -1e6 * entries : double(entries));
+      }
+
+      void
+      destroy()
+      {
+        MatDestroy(&factor);
+        VecScatterDestroy(&to_all);
+        VecDestroy(&gathered);
+        VecDestroy(&solution);
+        VecDestroy(&rhs);
+        MatDestroy(&petsc_matrix);
+      }
+
+      const MPI_Comm        communicator;
+      PetscInt              first_row = 0, end_row = 0;
+      long                  n_nonzeros = 0;
+      std::vector<PetscInt> row_start, columns;
+      std::vector<long>     source; // position in the Eigen values of each local entry
+      std::vector<double>   values;
+      Mat                   petsc_matrix = nullptr, factor = nullptr;
+      Vec                   rhs = nullptr, solution = nullptr, gathered = nullptr;
+      VecScatter            to_all = nullptr;
+      MatFactorInfo         info;
+    };
+  } // namespace
+
+  const DistributedSolverProfile &
+  distributed_solver_profile()
+  {
+    return profile;
+  }
+
+  std::unique_ptr<LinearSolver>
+  create_petsc_mumps_solver()
+  {
+    return std::make_unique<PetscMumpsSolver>();
+  }
+} // namespace poundfe
