@@ -4,9 +4,15 @@
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/vtu_series.h>
 
+#include <deal.II/base/exceptions.h>
+
+#include <zlib.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <map>
 
 namespace poundfe
@@ -24,41 +30,85 @@ namespace poundfe
       hinge         = 3
     };
 
-    /// Text of one DataArray of doubles (`n_components` per tuple).
-    class ArrayText
+    static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+                  "the VTU files declare byte_order=\"LittleEndian\"");
+
+    /// Base64 (RFC 4648) of `n` bytes, appended to `out`.
+    void
+    append_base64(std::string &out, const unsigned char *data, const std::size_t n)
+    {
+      static const char digits[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+      for (std::size_t i = 0; i < n; i += 3)
+        {
+          const unsigned int b = (data[i] << 16) | (i + 1 < n ? data[i + 1] << 8 : 0) |
+                                 (i + 2 < n ? data[i + 2] : 0);
+          out += digits[(b >> 18) & 63];
+          out += digits[(b >> 12) & 63];
+          out += i + 1 < n ? digits[(b >> 6) & 63] : '=';
+          out += i + 2 < n ? digits[b & 63] : '=';
+        }
+    }
+
+    /// One DataArray in VTK's compressed binary form: the values' bytes
+    /// (little endian, as declared in the file) deflated by zlib in one
+    /// block, written as base64 of the header {1 block, size, size,
+    /// compressed size} (UInt64) followed by base64 of the block.
+    class DataArrayWriter
     {
     public:
-      explicit ArrayText(std::string &out)
+      explicit DataArrayWriter(std::string &out)
         : out(out)
       {}
       void
       begin(const char *type, const char *name, const unsigned int n_components)
       {
+        this->type = type;
+        raw.clear();
         out += "<DataArray type=\"";
         out += type;
         out += "\" Name=\"";
         out += name;
         out += "\" NumberOfComponents=\"" + std::to_string(n_components) +
-               "\" format=\"ascii\">\n";
+               "\" format=\"binary\">\n";
       }
-      void
-      number(const double x)
-      {
-        char buffer[NumberText::max_length];
-        out.append(buffer, text.write(buffer, x));
-        out += ' ';
-      }
+      void number(const double x) { append(x); }
       void
       whole(const long x)
       {
-        out += std::to_string(x);
-        out += ' ';
+        if (std::strcmp(type, "Int32") == 0)
+          append(static_cast<std::int32_t>(x));
+        else if (std::strcmp(type, "UInt8") == 0)
+          append(static_cast<std::uint8_t>(x));
+        else
+          append(static_cast<std::int64_t>(x));
       }
-      void end() { out += "\n</DataArray>\n"; }
+      void
+      end()
+      {
+        uLongf compressed_size = compressBound(raw.size());
+        compressed.resize(compressed_size);
+        const int status =
+          compress2(compressed.data(), &compressed_size,
+                    reinterpret_cast<const Bytef *>(raw.data()), raw.size(), Z_BEST_SPEED);
+        AssertThrow(status == Z_OK, dealii::ExcMessage("zlib failed to compress a VTU array"));
+        const std::uint64_t header[4] = {1, raw.size(), raw.size(), compressed_size};
+        append_base64(out, reinterpret_cast<const unsigned char *>(header), sizeof header);
+        append_base64(out, compressed.data(), compressed_size);
+        out += "\n</DataArray>\n";
+      }
 
     private:
-      std::string &out;
-      NumberText   text;
+      template <typename T>
+      void
+      append(const T x)
+      {
+        raw.append(reinterpret_cast<const char *>(&x), sizeof x); // x86/ARM: little endian
+      }
+      std::string               &out;
+      const char                *type = "";
+      std::string                raw;
+      std::vector<unsigned char> compressed;
     };
   } // namespace
 
@@ -190,7 +240,7 @@ namespace poundfe
       }
     model_size = std::max(x_max - x_min, y_max - y_min);
 
-    ArrayText text(static_cell_data);
+    DataArrayWriter text(static_cell_data);
     const std::pair<const char *, const std::vector<int> *> ids[] = {
       {"kind", &kinds}, {"building", &buildings}, {"member", &members}};
     for (const auto &[array_name, values] : ids)
@@ -201,7 +251,7 @@ namespace poundfe
         text.end();
       }
 
-    ArrayText g(geometry);
+    DataArrayWriter g(geometry);
     geometry += "<Points>\n";
     g.begin("Float64", "Points", 3);
     for (const Point2 &p : points)
@@ -278,12 +328,13 @@ namespace poundfe
     xml.reserve(geometry.size() + static_cell_data.size() + cell_arrays.size() +
                 60 * points.size() + 1024);
     xml += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-           "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n";
+           "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
+           "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n";
     xml += field_data;
     xml += "<Piece NumberOfPoints=\"" + std::to_string(points.size()) + "\" NumberOfCells=\"" +
            std::to_string(n_cells) + "\">\n<PointData Vectors=\"displacement\">\n";
     const auto d = point_displacements(u);
-    ArrayText  text(xml);
+    DataArrayWriter  text(xml);
     text.begin("Float64", "displacement", 3);
     for (const auto &p : d)
       {
@@ -379,7 +430,7 @@ namespace poundfe
       }
 
     std::string cell_arrays;
-    ArrayText   text(cell_arrays);
+    DataArrayWriter   text(cell_arrays);
     static const char *end_force_names[6] = {"N_start", "V_start", "M_start",
                                              "N_end",   "V_end",   "M_end"};
     for (unsigned int k = 0; k < 6; ++k)
@@ -405,7 +456,7 @@ namespace poundfe
     text.end();
 
     std::string field_data;
-    ArrayText   field(field_data);
+    DataArrayWriter   field(field_data);
     field_data += "<FieldData>\n";
     field.begin("Float64", "TIME", 1);
     field.number(time);
@@ -423,7 +474,7 @@ namespace poundfe
     const double scale = largest > 0 ? mode_amplitude * impl->model_size / largest : 1.0;
 
     std::string field_data;
-    ArrayText   field(field_data);
+    DataArrayWriter   field(field_data);
     field_data += "<FieldData>\n";
     const std::pair<const char *, double> values[] = {
       {"mode", mode}, {"frequency_Hz", frequency}, {"period_s", frequency > 0 ? 1 / frequency : 0.0}, {"scale", scale}};

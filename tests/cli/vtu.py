@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The VTU output of `run` and `modal` (theory §9.3), read with Python's own XML
-parser and checked against the run's other outputs and against beam theory:
+"""The VTU output of `run` and `modal` (theory §10), read with Python's own XML
+parser, base64 and zlib, and checked against the run's other outputs and against beam theory:
 
   usage: vtu.py POUNDFE FILE.prm [FILE.prm ...]
 
@@ -21,14 +21,17 @@ where neither end is hinged, which needs a model with such elements)
 - modes: each file's frequency is summary.json's, and the largest
   translation is 5 % of the model's largest dimension (1e-12).
 """
+import base64
 import csv
 import json
 import math
 import os
+import struct
 import subprocess
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
+import zlib
 
 failures = []
 
@@ -38,20 +41,44 @@ def check(condition, message):
         failures.append(message)
 
 
+COMPRESSED = [False]  # the file being read declares vtkZLibDataCompressor
+
+
 def arrays(section):
     out = {}
     if section is None:
         return out
     for a in section.findall("DataArray"):
-        text = (a.text or "").split()
-        kind = a.get("type")
-        values = [int(v) for v in text] if kind.startswith(("Int", "UInt")) else [float(v) for v in text]
-        out[a.get("Name")] = (int(a.get("NumberOfComponents", "1")), values)
+        out[a.get("Name")] = (int(a.get("NumberOfComponents", "1")), decode(a))
     return out
+
+
+FORMATS = {"Float64": "d", "Int64": "q", "Int32": "i", "UInt8": "B"}
+
+
+def decode(array):
+    """A DataArray's values: ascii, or VTK's compressed binary (base64 of the
+    UInt64 header {blocks, block size, last block size, compressed sizes...}
+    then base64 of the zlib blocks)."""
+    kind, text = array.get("type"), (array.text or "").strip()
+    if array.get("format") == "ascii":
+        return [int(v) if kind.startswith(("Int", "UInt")) else float(v) for v in text.split()]
+    check(COMPRESSED[0], f"array {array.get('Name')}: binary, but the file declares no compressor")
+    n_blocks = struct.unpack("<Q", base64.b64decode(text[:12])[:8])[0]
+    header_chars = 4 * math.ceil(8 * (3 + n_blocks) / 3)
+    header = struct.unpack(f"<{3 + n_blocks}Q", base64.b64decode(text[:header_chars]))
+    raw = zlib.decompress(base64.b64decode(text[header_chars:]))
+    check(len(raw) == header[1] * (n_blocks - 1) + (header[2] or header[1]),
+          f"array {array.get('Name')}: {len(raw)} bytes against its header {header}")
+    code = FORMATS[kind]
+    return list(struct.unpack(f"<{len(raw) // struct.calcsize(code)}{code}", raw))
 
 
 def read_vtu(path):
     root = ET.parse(path).getroot()
+    check(root.get("header_type") == "UInt64" and root.get("byte_order") == "LittleEndian",
+          f"{path}: header type or byte order")
+    COMPRESSED[0] = root.get("compressor") == "vtkZLibDataCompressor"
     grid = root.find("UnstructuredGrid")
     piece = grid.find("Piece")
     n_points, n_cells = int(piece.get("NumberOfPoints")), int(piece.get("NumberOfCells"))

@@ -18,6 +18,8 @@
 //   (1 while a gap is closed), `penetration`, the Bouc-Wen variable `z` and
 //   the plastic deformation (hinge rotation or storey drift minus force over
 //   initial stiffness) of hinges and hysteretic storeys.
+// Arrays are written in VTK's compressed binary form (zlib, base64), as
+// deal.II's DataOut does by default.
 // deal.II's DataOut writes every cell's vertices again (duplicated points)
 // and interpolates cell data to points; this writer does neither.
 #ifndef poundfe_output_vtu_series_h
