@@ -1,4 +1,5 @@
 #include <poundfe/analysis/run_summary.h>
+#include <poundfe/output/drift_limits.h>
 #include <poundfe/output/stick_slip_report.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
@@ -217,7 +218,9 @@ namespace poundfe
               .value("peak_floor_displacement_m", floors.peak_displacement()[i])
               .end_object();
           }
-        json.end_array().end_object();
+        json.end_array();
+        write_drift_checks(json, b);
+        json.end_object();
       }
     json.end_array();
 
@@ -331,6 +334,35 @@ namespace poundfe
     write_file_atomically(directory + "/summary.json", json.str());
   }
 
+  std::vector<DriftCheck>
+  RunSummary::drift_checks(const unsigned int b) const
+  {
+    const FloorResponse &floors = peaks.floors();
+    std::vector<double>  peak;
+    for (unsigned int f = 0; f < analysis.model.buildings[b].floors.size(); ++f)
+      peak.push_back(floors.peak_drift_ratio()[floors.index(b, f)]);
+    return check_drift_limits(analysis.input.drift_limits.limits(), peak);
+  }
+
+  void
+  RunSummary::write_drift_checks(JsonWriter &json, const unsigned int b) const
+  {
+    if (analysis.input.drift_limits.limits().empty())
+      return; // the summary of a run without limits is unchanged
+    json.begin_array("drift_limits");
+    for (const DriftCheck &check : drift_checks(b))
+      json.begin_object()
+        .value("name", check.limit.name)
+        .value("drift_ratio_limit", check.limit.drift_ratio)
+        .value("peak_drift_ratio", check.peak_drift_ratio)
+        .value("storey_of_peak", check.storey_of_peak)
+        .value("storeys_exceeding",
+               std::vector<double>(check.storeys_exceeding.begin(), check.storeys_exceeding.end()))
+        .value("passes", check.passes)
+        .end_object();
+    json.end_array();
+  }
+
   void
   RunSummary::draw_phase_portraits(std::vector<Plot> &plots) const
   {
@@ -375,6 +407,14 @@ namespace poundfe
         column += building.floors.size();
         roof.series.push_back(
           {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
+      }
+    // each limit a vertical line over the storeys (drawn through the rows)
+    for (const DriftLimit &limit : analysis.input.drift_limits.limits())
+      {
+        std::ostringstream x;
+        x.precision(17);
+        x << "(" << limit.drift_ratio << "):2";
+        drift.series.push_back({"drift_profile.csv", x.str(), limit.name, "lines dt 2 lw 2"});
       }
     std::vector<Plot> all{drift, accel};
     if (writes("floor_displacement.csv"))
