@@ -408,13 +408,21 @@ namespace poundfe
         roof.series.push_back(
           {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
       }
-    // each limit a vertical line over the storeys (drawn through the rows)
+    // each limit a vertical line over the storeys (drawn through the rows),
+    // the axis from 0 to past the largest limit, the legend under the plot
+    double largest = 0;
+    for (const double peak : peaks.floors().peak_drift_ratio())
+      largest = std::max(largest, peak);
     for (const DriftLimit &limit : analysis.input.drift_limits.limits())
       {
-        std::ostringstream x;
+        largest = std::max(largest, limit.drift_ratio);
+        std::ostringstream x, range;
         x.precision(17);
         x << "(" << limit.drift_ratio << "):2";
         drift.series.push_back({"drift_profile.csv", x.str(), limit.name, "lines dt 2 lw 2"});
+        range << "[0:" << 1.15 * largest << "]";
+        drift.x_range = range.str();
+        drift.key     = "below";
       }
     std::vector<Plot> all{drift, accel};
     if (writes("floor_displacement.csv"))

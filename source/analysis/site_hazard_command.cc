@@ -1,6 +1,7 @@
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/analysis/input_parameters.h>
 #include <poundfe/analysis/site_hazard_command.h>
+#include <poundfe/analysis/sweep.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/excitation/ground_motion.h>
 #include <poundfe/output/append_file.h>
@@ -8,6 +9,8 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plots.h>
 
+// property_tree includes boost/bind.hpp, which asks for this (a note at every build)
+#define BOOST_BIND_GLOBAL_PLACEHOLDERS
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
@@ -17,6 +20,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -25,15 +29,6 @@ namespace poundfe
   namespace
   {
     const char *catalogue_parameter = "Site hazard/Catalogue file";
-
-    std::string
-    trimmed(const std::string &text)
-    {
-      const auto first = text.find_first_not_of(" \t\r");
-      if (first == std::string::npos)
-        return "";
-      return text.substr(first, text.find_last_not_of(" \t\r") + 1 - first);
-    }
 
     std::vector<std::string>
     split_fields(const std::string &line)
@@ -72,15 +67,6 @@ namespace poundfe
       if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
         return std::nan("");
       return value;
-    }
-
-    std::string
-    rounded(const double x, const int digits = 3)
-    {
-      std::ostringstream s;
-      s.precision(digits);
-      s << x;
-      return s.str();
     }
 
     double
@@ -145,7 +131,7 @@ namespace poundfe
           const double r = std::hypot(delta, p.focal_depth);
           if (r < 1.0)
             throw InputError(file, e.line, catalogue_parameter,
-                             "the event of " + e.date + " is " + rounded(r) +
+                             "the event of " + e.date + " is " + format_value(r) +
                                " km from the site: Cornell's ln r needs r >= 1 km (give a "
                                "Focal depth)");
           site.push_back({e, delta, cornell_intensity(e.magnitude, r)});
@@ -203,16 +189,6 @@ namespace poundfe
                                         "distance with intensity >= the Minimum intensity)");
         }
       return hazard;
-    }
-
-    /// The fragility of the section: typed in or read from a file.
-    LognormalCurve
-    fragility_of(const InputParameters &input)
-    {
-      const SiteHazardParameters &p = input.site_hazard;
-      if (p.fragility_median > 0)
-        return {p.fragility_median, p.fragility_beta};
-      return read_fragility_summary(input.resolve(p.fragility_file), p.fragility_curve);
     }
 
     void
@@ -365,6 +341,84 @@ namespace poundfe
         }
       json.end_array();
     }
+    /// A fragility convolved with the hazard.
+    struct Convolution
+    {
+      LognormalCurve fragility;
+      double         minimum_pga = 0;          // g
+      double         annual_failure_rate = 0;  // lambda_F, 1/year
+      double         probability = 0;          // over the exposure
+    };
+
+    std::optional<Convolution>
+    convolve(const InputParameters &input, const IntensityHazard &hazard)
+    {
+      const SiteHazardParameters &p = input.site_hazard;
+      if (!p.has_fragility())
+        return std::nullopt;
+      Convolution c;
+      c.fragility = p.fragility_median > 0 ?
+                      LognormalCurve{p.fragility_median, p.fragility_beta} :
+                      read_fragility_summary(input.resolve(p.fragility_file), p.fragility_curve);
+      // the hazard in PGA: lambda(a) = lambda_I(I(a)), I the Trifunac-Brady inverse
+      const auto rate_of_pga = [&hazard](const double a_g) {
+        return hazard.annual_rate(trifunac_brady_intensity(a_g * standard_gravity * 100));
+      };
+      c.minimum_pga         = pga_g(p.minimum_intensity);
+      c.annual_failure_rate = annual_failure_rate(rate_of_pga, c.minimum_pga, c.fragility);
+      c.probability         = probability_in_years(c.annual_failure_rate, p.exposure_years);
+      return c;
+    }
+
+    void
+    write_convolution(JsonWriter &json, const InputParameters &input, const Convolution &c)
+    {
+      const SiteHazardParameters &p = input.site_hazard;
+      json.begin_object("fragility")
+        .value("source", p.fragility_file.empty() ? std::string("Median PGA and Beta") :
+                                                    p.fragility_file + " (" + p.fragility_curve + ")")
+        .value("theta_g", c.fragility.theta)
+        .value("beta", c.fragility.beta)
+        .value("minimum_pga_g", c.minimum_pga)
+        .value("annual_failure_rate", c.annual_failure_rate)
+        .value("exposure_years", p.exposure_years)
+        .value("probability_over_exposure", c.probability)
+        .end_object();
+    }
+
+    void
+    print_report(std::ostream &out, const InputParameters &input, const Period &period,
+                 const std::vector<CatalogueEvent> &catalogue,
+                 const std::vector<SiteEvent> &events, const IntensityHazard &hazard,
+                 const std::optional<Convolution> &failure)
+    {
+      const SiteHazardParameters &p = input.site_hazard;
+      std::ostringstream          text;
+      text.precision(3);
+      text << events.size() << " of " << catalogue.size() << " events within the distance, "
+           << period.years() << " years (" << period.first << "-" << period.last << "); "
+           << hazard_model_names().name(hazard.model) << " fit: ";
+      if (hazard.model == IntensityHazard::Model::gumbel)
+        text << "u = " << hazard.gumbel.location << " +- " << hazard.gumbel.location_standard_error
+             << ", s = " << hazard.gumbel.scale << " +- " << hazard.gumbel.scale_standard_error
+             << "\n";
+      else
+        text << "nu0 = " << hazard.poisson.rate_above_threshold << "/year above I = "
+             << p.minimum_intensity << ", b = " << hazard.poisson.b << " +- "
+             << hazard.poisson.b_standard_error << "\n";
+      for (const double T : p.return_periods)
+        {
+          const double x = hazard.intensity_for_return_period(T);
+          text << "  T = " << T << " years: I = " << x << ", PGA = " << pga_g(x) << " g ("
+               << trifunac_brady_acceleration(x) / 100 << " m/s^2)\n";
+        }
+      if (failure)
+        text << "fragility theta = " << failure->fragility.theta
+             << " g, beta = " << failure->fragility.beta << ": annual rate of failure "
+             << failure->annual_failure_rate << ", probability in " << p.exposure_years
+             << " years " << failure->probability << "\n";
+      out << text.str();
+    }
   } // namespace
 
   std::vector<CatalogueEvent>
@@ -480,8 +534,7 @@ namespace poundfe
     const Period                      period    = observation_period(input, catalogue, file);
     const std::vector<SiteEvent>      events    = site_events(input, catalogue, file, period);
     const IntensityHazard             hazard    = fit_hazard(input, events, period);
-    const bool                        convolve  = p.has_fragility();
-    const LognormalCurve              fragility = convolve ? fragility_of(input) : LognormalCurve{};
+    const std::optional<Convolution>  failure   = convolve(input, hazard);
 
     create_directories(directory);
     double top = p.minimum_intensity + 1;
@@ -492,52 +545,6 @@ namespace poundfe
     write_events(directory + "/hazard.csv", events);
     write_curve(directory + "/hazard_curve.csv", hazard, p.minimum_intensity, top + 0.5);
     write_return_periods(directory + "/return_periods.csv", p.return_periods, hazard);
-    JsonWriter json;
-    begin_summary(json, "site-hazard", input);
-    write_summary(json, input, period, catalogue, events, hazard);
-    std::cout << events.size() << " of " << catalogue.size() << " events within the distance, "
-              << period.years() << " years (" << period.first << "-" << period.last << "); "
-              << hazard_model_names().name(hazard.model) << " fit: ";
-    if (hazard.model == IntensityHazard::Model::gumbel)
-      std::cout << "u = " << rounded(hazard.gumbel.location) << " +- "
-                << rounded(hazard.gumbel.location_standard_error, 2)
-                << ", s = " << rounded(hazard.gumbel.scale) << " +- "
-                << rounded(hazard.gumbel.scale_standard_error, 2) << "\n";
-    else
-      std::cout << "nu0 = " << rounded(hazard.poisson.rate_above_threshold)
-                << "/year above I = " << p.minimum_intensity << ", b = " << rounded(hazard.poisson.b)
-                << " +- " << rounded(hazard.poisson.b_standard_error, 2) << "\n";
-    for (const double T : p.return_periods)
-      {
-        const double x = hazard.intensity_for_return_period(T);
-        std::cout << "  T = " << T << " years: I = " << rounded(x) << ", PGA = "
-                  << rounded(pga_g(x)) << " g (" << rounded(trifunac_brady_acceleration(x) / 100)
-                  << " m/s^2)\n";
-      }
-    if (convolve)
-      {
-        // the hazard in PGA: lambda(a) = lambda_I(I(a)), I the Trifunac-Brady inverse
-        const auto rate_of_pga = [&hazard](const double a_g) {
-          return hazard.annual_rate(trifunac_brady_intensity(a_g * standard_gravity * 100));
-        };
-        const double minimum_pga = pga_g(p.minimum_intensity);
-        const double rate        = annual_failure_rate(rate_of_pga, minimum_pga, fragility);
-        const double probability = probability_in_years(rate, p.exposure_years);
-        json.begin_object("fragility")
-          .value("source", p.fragility_file.empty() ? std::string("Median PGA and Beta") :
-                                                      p.fragility_file + " (" + p.fragility_curve + ")")
-          .value("theta_g", fragility.theta)
-          .value("beta", fragility.beta)
-          .value("minimum_pga_g", minimum_pga)
-          .value("annual_failure_rate", rate)
-          .value("exposure_years", p.exposure_years)
-          .value("probability_over_exposure", probability)
-          .end_object();
-        std::cout << "fragility theta = " << rounded(fragility.theta) << " g, beta = "
-                  << rounded(fragility.beta) << ": annual rate of failure " << rounded(rate)
-                  << ", probability in " << p.exposure_years << " years " << rounded(probability)
-                  << "\n";
-      }
     std::vector<std::string> files{"hazard.csv", "hazard_curve.csv", "return_periods.csv"};
     if (input.output.plots)
       for (const std::string &png : draw_plots(directory, {hazard_plot(hazard)}))
@@ -545,9 +552,15 @@ namespace poundfe
     else
       std::remove((directory + "/hazard.png").c_str()); // not an earlier run's
     files.push_back("summary.json");
+    JsonWriter json;
+    begin_summary(json, "site-hazard", input);
+    write_summary(json, input, period, catalogue, events, hazard);
+    if (failure)
+      write_convolution(json, input, *failure);
     json.begin_object("output").value("files", files).end_object();
     json.end_object();
     write_file_atomically(directory + "/summary.json", json.str());
+    print_report(std::cout, input, period, catalogue, events, hazard, failure);
     std::cout << "results in " << directory << "/ (summary.json lists the files)\n";
     return 0;
   }

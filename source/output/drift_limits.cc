@@ -11,15 +11,6 @@ namespace poundfe
   namespace
   {
     std::string
-    trimmed(const std::string &text)
-    {
-      const auto first = text.find_first_not_of(" \t");
-      if (first == std::string::npos)
-        return "";
-      return text.substr(first, text.find_last_not_of(" \t") + 1 - first);
-    }
-
-    std::string
     shortest(const double x)
     {
       std::ostringstream s;
@@ -121,7 +112,8 @@ namespace poundfe
     std::vector<DriftCheck> checks;
     for (const DriftLimit &limit : limits)
       {
-        DriftCheck check{limit};
+        DriftCheck check;
+        check.limit = limit;
         for (unsigned int s = 0; s < peak_drift_ratios.size(); ++s)
           {
             if (s == 0 || peak_drift_ratios[s] > check.peak_drift_ratio)
