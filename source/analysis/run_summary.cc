@@ -409,7 +409,7 @@ namespace poundfe
           {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
       }
     // each limit a vertical line over the storeys (drawn through the rows),
-    // the axis from 0 to past the largest limit, the legend under the plot
+    // the axis from 0 to past the largest limit, the legend beside the plot
     double largest = 0;
     for (const double peak : peaks.floors().peak_drift_ratio())
       largest = std::max(largest, peak);
@@ -422,7 +422,7 @@ namespace poundfe
         drift.series.push_back({"drift_profile.csv", x.str(), limit.name, "lines dt 2 lw 2"});
         range << "[0:" << 1.15 * largest << "]";
         drift.x_range = range.str();
-        drift.key     = "below";
+        drift.key     = "outside right top";
       }
     std::vector<Plot> all{drift, accel};
     if (writes("floor_displacement.csv"))

@@ -27,7 +27,7 @@ namespace poundfe
     /// column); their own `file` and `below` are not used.
     std::vector<Plot>       below{};
     std::string             x_range{}; // gnuplot's "[min:max]"; empty: autoscaled
-    std::string             key{};     // where the legend goes, e.g. "below"; empty: top right
+    std::string             key{};     // gnuplot key placement, e.g. "outside right top"; empty: inside, top right
   };
 
   /// Draw the plots; returns the files written. Writes each PNG atomically.
