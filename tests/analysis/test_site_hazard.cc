@@ -14,6 +14,7 @@
 //     hazard and a lognormal fragility (Cornell et al. 2002);
 //   - the catalogue reader's messages (file, line) on bad rows, and the
 //     fragility summary reader on the format `poundfe fragility` writes.
+#include <poundfe/analysis/input_parameters.h>
 #include <poundfe/analysis/site_hazard.h>
 #include <poundfe/analysis/site_hazard_command.h>
 #include <poundfe/base/exceptions.h>
@@ -28,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 
 using namespace poundfe;
 
@@ -289,4 +291,15 @@ BOOST_AUTO_TEST_CASE(fragility_summary_reader)
   const std::string bad = temporary_file("bad.json", "{ \"command\": ");
   BOOST_CHECK_THROW(read_fragility_summary(bad, "pounding"), InputError);
   std::remove(bad.c_str());
+}
+
+BOOST_AUTO_TEST_CASE(fit_choice_names)
+{
+  // the help lists the choices; the names read back (summary.json uses them)
+  for (const std::string &name : hazard_model_names().names())
+    BOOST_TEST(hazard_model_names().name(hazard_model_names().value(name)) == name);
+  std::ostringstream out;
+  print_parameters(out);
+  BOOST_TEST(out.str().find("Allowed: gumbel, poisson.") != std::string::npos);
+  BOOST_TEST(out.str().find("subsection Site hazard") != std::string::npos);
 }

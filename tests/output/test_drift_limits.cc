@@ -8,9 +8,11 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace poundfe;
 
@@ -99,4 +101,20 @@ BOOST_AUTO_TEST_CASE(pass_and_fail_per_limit)
       BOOST_TEST(c.peak_drift_ratio == 0.012);
       BOOST_TEST(c.storey_of_peak == 2u);
     }
+}
+
+BOOST_AUTO_TEST_CASE(code_choice_names)
+{
+  for (const std::string &name : drift_code_names().names())
+    BOOST_TEST(drift_code_names().name(drift_code_names().value(name)) == name);
+  std::ostringstream out;
+  print_parameters(out);
+  std::string help; // PRM output wraps comments: join the lines
+  for (const char c : out.str())
+    if (c != '\n' && c != '#')
+      help += c;
+  help.erase(std::unique(help.begin(), help.end(),
+                         [](char a, char b) { return a == ' ' && b == ' '; }),
+             help.end());
+  BOOST_TEST(help.find("Allowed: none, asce-7, eurocode-8.") != std::string::npos);
 }
