@@ -499,7 +499,8 @@ namespace poundfe
       }
     catch (const boost::property_tree::json_parser_error &e)
       {
-        throw InputError(file, e.line(), parameter, "not a JSON file: " + e.message());
+        throw InputError(file, e.line(), parameter,
+                         "cannot read it as a fragility summary.json: " + e.message());
       }
     if (tree.get<std::string>("command", "") != "fragility")
       throw InputError(file, 0, parameter, "not a summary.json of `poundfe fragility`");
