@@ -5,6 +5,7 @@
 #include <poundfe/analysis/subset.h>
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/analysis/run.h>
+#include <poundfe/analysis/site_hazard_command.h>
 #include <poundfe/analysis/stationary_pdf.h>
 #include <poundfe/analysis/templates.h>
 #include <poundfe/assembly/linear_solver.h>
@@ -43,6 +44,8 @@ namespace
     "                      parameter (sweep.csv, sweep.png, summary.json)\n"
     "  bifurcation FILE    Poincare samples, their period and the largest Lyapunov\n"
     "                      exponent against the Bifurcation section's parameter\n"
+    "  site-hazard FILE    site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
+    "                      Poisson fit, return periods, fragility x hazard\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "  template KIND       a commented starting file on standard output, KIND one of\n"
     "                      frame, shear, mesh, pounding, stochastic\n"
@@ -171,7 +174,8 @@ main(int argc, char **argv)
       if (command == "template")
         return template_command(args, err);
       if (command != "run" && command != "modal" && command != "ground-motion" &&
-          command != "sweep" && command != "bifurcation" && !runs_over_mpi(command))
+          command != "sweep" && command != "bifurcation" && command != "site-hazard" &&
+          !runs_over_mpi(command))
         {
           err << "poundfe: error: unknown command '" << command << "'\n" << usage;
           return 1;
@@ -207,6 +211,8 @@ main(int argc, char **argv)
         return poundfe::sweep_command(input, directory);
       if (command == "bifurcation")
         return poundfe::bifurcation_command(input, directory);
+      if (command == "site-hazard") // no model
+        return poundfe::site_hazard_command(input, directory);
       const poundfe::Analysis analysis = poundfe::prepare_analysis(input);
       if (command == "modal")
         return poundfe::modal_command(analysis, directory);

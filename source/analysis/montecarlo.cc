@@ -6,6 +6,7 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/drift_limits.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plots.h>
 
@@ -464,7 +465,12 @@ namespace poundfe
 
     const unsigned long n_done      = table.realizations.size();
     const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
-    const Exceedances   e = count_exceedances(table, runner, input.monte_carlo.drift_limits);
+    // the Monte Carlo section's limits, then the Drift limits section's (named)
+    const std::vector<DriftLimit> &named  = input.drift_limits.limits();
+    std::vector<double>            limits = input.monte_carlo.drift_limits;
+    for (const DriftLimit &limit : named)
+      limits.push_back(limit.drift_ratio);
+    const Exceedances   e = count_exceedances(table, runner, limits);
     JsonWriter          json;
     begin_summary(json, "montecarlo", input, table.interrupted ? "interrupted" : "completed");
     json.value("realizations", n)
@@ -503,7 +509,9 @@ namespace poundfe
     json.begin_array("drift_limit_exceedance");
     for (std::size_t i = 0; i < e.drift.size(); ++i)
       {
-        json.begin_object().value("drift_ratio_limit", input.monte_carlo.drift_limits[i]);
+        json.begin_object().value("drift_ratio_limit", limits[i]);
+        if (i >= input.monte_carlo.drift_limits.size())
+          json.value("name", named[i - input.monte_carlo.drift_limits.size()].name);
         write_probability(json, e.drift[i]);
         json.end_object();
       }
@@ -569,7 +577,7 @@ namespace poundfe
       pcout << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
                 << rounded(e.pounding.coefficient_of_variation) << ")\n";
     for (std::size_t i = 0; i < e.drift.size(); ++i)
-      pcout << "P(max drift ratio > " << input.monte_carlo.drift_limits[i]
+      pcout << "P(max drift ratio > " << limits[i]
                 << ") = " << rounded(e.drift[i].probability) << " (CoV "
                 << rounded(e.drift[i].coefficient_of_variation) << ")\n";
     pcout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"

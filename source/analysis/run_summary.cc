@@ -1,4 +1,5 @@
 #include <poundfe/analysis/run_summary.h>
+#include <poundfe/output/drift_limits.h>
 #include <poundfe/output/stick_slip_report.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
@@ -218,7 +219,9 @@ namespace poundfe
               .value("peak_floor_displacement_m", floors.peak_displacement()[i])
               .end_object();
           }
-        json.end_array().end_object();
+        json.end_array();
+        write_drift_checks(json, b);
+        json.end_object();
       }
     json.end_array();
 
@@ -330,6 +333,35 @@ namespace poundfe
       .end_object();
     json.end_object();
     write_file_atomically(directory + "/summary.json", json.str());
+  }
+
+  std::vector<DriftCheck>
+  RunSummary::drift_checks(const unsigned int b) const
+  {
+    const FloorResponse &floors = peaks.floors();
+    std::vector<double>  peak;
+    for (unsigned int f = 0; f < analysis.model.buildings[b].floors.size(); ++f)
+      peak.push_back(floors.peak_drift_ratio()[floors.index(b, f)]);
+    return check_drift_limits(analysis.input.drift_limits.limits(), peak);
+  }
+
+  void
+  RunSummary::write_drift_checks(JsonWriter &json, const unsigned int b) const
+  {
+    if (analysis.input.drift_limits.limits().empty())
+      return; // the summary of a run without limits is unchanged
+    json.begin_array("drift_limits");
+    for (const DriftCheck &check : drift_checks(b))
+      json.begin_object()
+        .value("name", check.limit.name)
+        .value("drift_ratio_limit", check.limit.drift_ratio)
+        .value("peak_drift_ratio", check.peak_drift_ratio)
+        .value("storey_of_peak", check.storey_of_peak)
+        .value("storeys_exceeding",
+               std::vector<double>(check.storeys_exceeding.begin(), check.storeys_exceeding.end()))
+        .value("passes", check.passes)
+        .end_object();
+    json.end_array();
   }
 
   void
@@ -448,9 +480,10 @@ namespace poundfe
           {
             const Floor       &floor = building.floors[f];
             const unsigned int i     = floors.index(b, f);
-            d << floors.peak_drift_ratio()[i] << ',' << floor.level - floor.storey_height << '\n'
-              << floors.peak_drift_ratio()[i] << ',' << floor.level << '\n';
-            a << floors.peak_acceleration()[i] << ',' << floor.level << '\n';
+            const double       top   = floor.level - building.base_level; // above the ground
+            d << floors.peak_drift_ratio()[i] << ',' << top - floor.storey_height << '\n'
+              << floors.peak_drift_ratio()[i] << ',' << top << '\n';
+            a << floors.peak_acceleration()[i] << ',' << top << '\n';
           }
         drift.data_blocks += d.str() + "EOD\n";
         accel.data_blocks += a.str() + "EOD\n";
@@ -459,6 +492,28 @@ namespace poundfe
         column += building.floors.size();
         roof.series.push_back(
           {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
+      }
+    // each limit a dashed vertical line over the height of the tallest
+    // building, the axis from 0 to past the largest limit
+    double largest = 0, height = 0;
+    for (const double peak : peaks.floors().peak_drift_ratio())
+      largest = std::max(largest, peak);
+    for (const Building &building : model.buildings)
+      if (!building.floors.empty())
+        height = std::max(height, building.floors.back().level - building.base_level);
+    unsigned int n_limits = 0;
+    for (const DriftLimit &limit : analysis.input.drift_limits.limits())
+      {
+        largest = std::max(largest, limit.drift_ratio);
+        const std::string  name = "$limit" + std::to_string(++n_limits);
+        std::ostringstream block, range;
+        block.precision(17);
+        block << name << " << EOD\ndrift,height\n"
+              << limit.drift_ratio << ",0\n" << limit.drift_ratio << ',' << height << "\nEOD\n";
+        drift.data_blocks += block.str();
+        drift.series.push_back({name, "1:2", limit.name, "lines dt 2 lw 2"});
+        range << "set xrange [0:" << 1.15 * largest << "]\nset yrange [0:*]\n";
+        drift.settings = range.str();
       }
     std::vector<Plot> all{drift, accel};
     if (writes("floor_displacement.csv"))
