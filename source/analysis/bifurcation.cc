@@ -9,6 +9,7 @@
 // 1995, Chaos Solitons Fractals 5:1671-1681, for the variational route).
 // See analysis/bifurcation.h and doc/theory.md §8.4.
 #include <poundfe/analysis/bifurcation.h>
+#include <poundfe/base/choices.h>
 #include <poundfe/analysis/input_parameters.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
@@ -40,9 +41,9 @@ namespace poundfe
     prm.add_parameter("Response", response,
                       "The sampled DOF: 'building floor node dof' (building and floor "
                       "1-based, node 0-based from the left, dof ux|uy|rz).");
-    prm.add_parameter("Response quantity", quantity,
-                      "Displacement (relative to the ground) or velocity of the DOF.",
-                      Patterns::Selection("displacement|velocity"));
+    add_choice(prm, "Response quantity", quantity,
+               "Displacement (relative to the ground, m) or velocity (m/s) of the DOF.",
+               {"displacement", "velocity"});
     prm.add_parameter("Forcing period", forcing_period,
                       "T in s, the Poincaré section's period; 0: 2 pi / omega of the first "
                       "harmonic nodal force of the input at each value (so sweeping the "

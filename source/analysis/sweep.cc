@@ -5,6 +5,7 @@
 #include <poundfe/analysis/input_parameters.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/sweep.h>
+#include <poundfe/base/choices.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/output/atomic_file.h>
@@ -121,10 +122,10 @@ namespace poundfe
   {
     prm.enter_subsection("Sweep");
     declare_entries(prm);
-    prm.add_parameter("Command", command,
-                      "`poundfe sweep`: the command whose model runs at each value (its "
-                      "time history; run is the one so far).",
-                      dealii::Patterns::Selection("run"));
+    add_choice(prm, "Command", command,
+               "`poundfe sweep`: the command whose model runs at each value (its "
+               "time history; run is the one so far).",
+               {"run"});
     prm.leave_subsection();
   }
 

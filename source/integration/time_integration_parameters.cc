@@ -27,7 +27,8 @@ namespace poundfe
   {
     prm.enter_subsection("Time integration");
     prm.add_parameter("Time step", newmark.time_step, "Analysis time step, s.");
-    prm.add_parameter("End time", end_time, "0: the length of the ground motion.");
+    prm.add_parameter("End time", end_time,
+                      "s; 0: the length of the ground motion.");
     prm.add_parameter("Newmark gamma", newmark.gamma,
                       "gamma >= 1/2 (1/2: no numerical damping).");
     prm.add_parameter("Newmark beta", newmark.beta,

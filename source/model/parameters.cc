@@ -110,7 +110,9 @@ namespace poundfe
                       "Frames: member ends that get a Bouc-Wen rotational hinge. column "
                       "bases: bottom of the ground-storey columns on clamped supports; "
                       "column tops / column ends: top / both ends of every column; beam "
-                      "ends: both ends of every beam. Empty: an elastic frame.",
+                      "ends: both ends of every beam. Empty: an elastic frame. Allowed: a "
+                      "comma-separated list of column bases, column tops, column ends, "
+                      "beam ends.",
                       Patterns::List(Patterns::Selection(
                         "column bases|column tops|column ends|beam ends")));
     prm.add_parameter("Groups", hinge_groups,
