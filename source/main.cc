@@ -5,6 +5,7 @@
 #include <poundfe/analysis/subset.h>
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/analysis/run.h>
+#include <poundfe/analysis/separation.h>
 #include <poundfe/analysis/stationary_pdf.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
@@ -42,6 +43,9 @@ namespace
     "                      parameter (sweep.csv, sweep.png, summary.json)\n"
     "  bifurcation FILE    Poincare samples, their period and the largest Lyapunov\n"
     "                      exponent against the Bifurcation section's parameter\n"
+    "  separation FILE     joint width of adjacent buildings: ABS, SRSS, DDC, EC8 and\n"
+    "                      ASCE 7 rules against the time history without contact; with\n"
+    "                      random loading, P(pounding) against the gap (MPI)\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "--output DIR overrides the file's 'Output/Directory'.\n"
     "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility and stationary-pdf\n"
@@ -102,7 +106,7 @@ namespace
   runs_over_mpi(const std::string &command)
   {
     return command == "montecarlo" || command == "subset" || command == "fragility" ||
-           command == "stationary-pdf";
+           command == "stationary-pdf" || command == "separation";
   }
 } // namespace
 
@@ -179,6 +183,8 @@ main(int argc, char **argv)
           err << "poundfe: error: --realizations belongs to ground-motion\n";
           return 1;
         }
+      if (command == "separation") // builds its model without contact
+        return poundfe::separation_command(input, directory, MPI_COMM_WORLD);
       if (command == "sweep") // an analysis per value
         return poundfe::sweep_command(input, directory);
       if (command == "bifurcation")

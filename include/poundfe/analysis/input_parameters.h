@@ -8,6 +8,7 @@
 #include <poundfe/analysis/bifurcation.h>
 #include <poundfe/analysis/modal_parameters.h>
 #include <poundfe/analysis/reliability_parameters.h>
+#include <poundfe/analysis/separation_parameters.h>
 #include <poundfe/analysis/stationary_pdf_parameters.h>
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/base/input_file.h>
@@ -56,6 +57,7 @@ namespace poundfe
     StationaryPdfParameters   stationary_pdf;
     SweepParameters           sweep;
     BifurcationParameters     bifurcation;
+    SeparationParameters      separation;
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
 
