@@ -14,10 +14,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/helpers.sh"
 
-"$poundfe" run "$input" --output "$work/run" > /dev/null
-"$poundfe" separation "$input" --output "$work/sep" > "$work/sep.log"
-grep -q "governing code rule" "$work/sep.log" || fail "separation: no governing rule on the console"
-read -r d u1 u2 < <(python3 - "$work/run/floor_displacement.csv" "$work/sep/separation.csv" <<'PY'
+# the time-history minimum and peaks of `separation` on $1 against `run`'s
+# floor_displacement.csv; prints the minimum, u_left, u_right
+against_run() {
+  "$poundfe" run "$1" --output "$work/$2-run" > /dev/null
+  "$poundfe" separation "$1" --output "$work/$2" > "$work/$2.log"
+  grep -q "governing code rule" "$work/$2.log" || fail "separation: no governing rule on the console"
+  python3 - "$work/$2-run/floor_displacement.csv" "$work/$2/separation.csv" <<'PY'
 import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))
 head = rows[0]
@@ -37,8 +40,18 @@ for name, mine, theirs in (("time-history minimum", float(s["time_history_m"]), 
         sys.exit(f"FAIL separation: {name} {mine} differs from the run's {theirs}")
 print(repr(d), repr(u1), repr(u2))
 PY
-) || fail "separation: against the run's floor displacements"
+}
+read -r d u1 u2 < <(against_run "$input" sep) || fail "separation: against the run's floor displacements"
 echo "ok   separation: time-history minimum $d m = max(u1 - u2) of the run's floor_displacement.csv"
+
+# a deterministic load (no ground motion, a harmonic force on each building): one time history
+sed -e 's/set Type = white-noise/set Type = none/' \
+    -e 's/^subsection Output/subsection Nodal forces\n  set Harmonic = 1 1 0 ux 2000 9 0; 2 1 0 ux 1500 6 1\nend\n\nsubsection Time integration\n  set Time step = 0.005\n  set End time  = 6\nend\n\nsubsection Output/' \
+    -e '/^subsection Time integration/,/^end/d' "$input" > "$work/harmonic.prm"
+read -r dh _ < <(against_run "$work/harmonic.prm" harmonic) || fail "separation (harmonic force): against the run"
+grep -q '"method": "time history without contact"' "$work/harmonic/summary.json" || fail "separation (harmonic force): not one time history"
+[ -e "$work/harmonic/pounding_probability.csv" ] && fail "separation (harmonic force): a probability without random loading"
+echo "ok   separation: one time history (harmonic force): minimum $dh m = max(u1 - u2) of the run"
 
 below=$(python3 -c "print(repr($d * (1 - 1e-9)))") above=$(python3 -c "print(repr($d * (1 + 1e-9)))")
 sed "s/^subsection Output/subsection Separation\n  set Gap values = $below, $d, $above\nend\n\nsubsection Output/" \
