@@ -12,7 +12,9 @@
 //     approach (P = 1 just below, 0 at and above), and the Wilson interval
 //     against published values;
 //   - the Monte Carlo band of the stationary point-in-time probability
-//     P(|u_1 - u_2| > g) = 2 (1 - Phi(g / sigma)) against its closed form.
+//     P(|u_1 - u_2| > g) = 2 (1 - Phi(g / sigma)) against its closed form;
+//   - the common levels of buildings whose floors differ and the height
+//     interpolation weights, worked by hand (input/floor-to-column.prm).
 #include <poundfe/analysis/input_parameters.h>
 #include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/run.h>
@@ -203,4 +205,41 @@ BOOST_AUTO_TEST_CASE(monte_carlo_band_covers_the_stationary_white_noise_probabil
       BOOST_TEST(p.lower <= exact);
       BOOST_TEST(exact <= p.upper);
     }
+}
+
+BOOST_AUTO_TEST_CASE(levels_where_floors_differ_are_interpolated_in_height)
+{
+  // input/floor-to-column.prm: A3's floors at 3.5, 6.5, 9.5 m, B2's at 4.5
+  // and 8 m. Common levels up to the lower roof: 3.5, 4.5, 6.5, 8; at 3.5 m
+  // B2 lies 3.5/4.5 of the way from its base to its first floor, at 4.5 m A3
+  // (4.5 - 3.5)/3 = 1/3 from its first floor to its second, at 8 m
+  // (8 - 6.5)/3 = 1/2 from its second to its roof.
+  InputParameters input = read_parameters("input/floor-to-column.prm");
+  input.contact.law     = "none";
+  const Analysis                  analysis = prepare_analysis(input);
+  const FloorResponse             floors(analysis.model);
+  const std::vector<AdjacentPair> pairs = adjacent_pairs(analysis.model);
+  BOOST_TEST_REQUIRE(pairs.size() == 1u);
+  const std::vector<CommonLevel> &levels = pairs[0].levels;
+  BOOST_TEST_REQUIRE(levels.size() == 4u);
+  const double expected_level[] = {3.5, 4.5, 6.5, 8.0};
+  for (unsigned int l = 0; l < 4; ++l)
+    BOOST_TEST(levels[l].level == expected_level[l], boost::test_tools::tolerance(1e-12));
+  for (const CommonLevel &level : levels)
+    BOOST_TEST(!level.floors_coincide);
+  // 3.5 m: A3's floor 1; B2 between its base and floor 1
+  BOOST_TEST(levels[0].sides[0].below == int(floors.index(0, 0)));
+  BOOST_TEST(levels[0].sides[0].above == int(floors.index(0, 0)));
+  BOOST_TEST(levels[0].sides[1].below == -1);
+  BOOST_TEST(levels[0].sides[1].above == int(floors.index(1, 0)));
+  BOOST_TEST(levels[0].sides[1].weight == 3.5 / 4.5, boost::test_tools::tolerance(1e-12));
+  // 4.5 m: A3 between floors 1 and 2
+  BOOST_TEST(levels[1].sides[0].below == int(floors.index(0, 0)));
+  BOOST_TEST(levels[1].sides[0].above == int(floors.index(0, 1)));
+  BOOST_TEST(levels[1].sides[0].weight == 1.0 / 3, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(levels[1].sides[1].below == int(floors.index(1, 0)));
+  // 8 m: A3 between floors 2 and 3
+  BOOST_TEST(levels[3].sides[0].below == int(floors.index(0, 1)));
+  BOOST_TEST(levels[3].sides[0].above == int(floors.index(0, 2)));
+  BOOST_TEST(levels[3].sides[0].weight == 0.5, boost::test_tools::tolerance(1e-12));
 }
