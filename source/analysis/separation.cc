@@ -351,6 +351,30 @@ namespace poundfe
       return sample[k]; // k values lie above it (ties aside)
     }
 
+    /// The joint of a pair: each rule's and the time history's largest
+    /// requirement over the levels.
+    struct Joint
+    {
+      std::array<double, 5> required{};
+      double                time_history = 0;
+      /// The larger of the two code rules: EC8 (3) or ASCE 7 (4).
+      unsigned int governing_code_rule() const { return required[3] >= required[4] ? 3 : 4; }
+    };
+
+    Joint
+    joint_of(const PairResult &result)
+    {
+      Joint joint;
+      for (const LevelResult &level : result.levels)
+        {
+          const auto values = rule_values(level.rules);
+          for (unsigned int c = 0; c < 5; ++c)
+            joint.required[c] = std::max(joint.required[c], values[c]);
+          joint.time_history = std::max(joint.time_history, level.time_history);
+        }
+      return joint;
+    }
+
     std::string
     percent_of(const double value, const double reference)
     {
@@ -467,6 +491,65 @@ namespace poundfe
       plots.push_back(plot);
     }
 
+    /// One pair's object of summary.json.
+    void
+    write_pair(JsonWriter &json, const SeparationParameters &s, const Model &model,
+               const AdjacentPair &pair, const PairResult &r)
+    {
+      json.begin_object()
+        .value("pair", pair.name)
+        .value("left", model.buildings[pair.left].name)
+        .value("right", model.buildings[pair.right].name)
+        .value("existing_gap_m", pair.existing_gap)
+        .value("left_period_s", 2 * M_PI / r.left_mode.omega)
+        .value("left_damping_ratio", r.left_mode.damping_ratio)
+        .value("right_period_s", 2 * M_PI / r.right_mode.omega)
+        .value("right_damping_ratio", r.right_mode.damping_ratio)
+        .value("correlation_rho", r.rho);
+      const Joint joint = joint_of(r);
+      json.value("time_history_m", joint.time_history).begin_object("required_m");
+      for (unsigned int c = 0; c < 5; ++c)
+        json.value(rule_names[c], joint.required[c]);
+      json.end_object().begin_object("relative_to_time_history");
+      for (unsigned int c = 0; c < 5; ++c)
+        json.value(rule_names[c], joint.time_history > 0 ?
+                                    joint.required[c] / joint.time_history - 1 :
+                                    std::numeric_limits<double>::quiet_NaN());
+      json.end_object().value("governing_code_rule", rule_names[joint.governing_code_rule()]);
+      json.begin_array("levels");
+      for (std::size_t l = 0; l < r.levels.size(); ++l)
+        {
+          const LevelResult &level = r.levels[l];
+          json.begin_object()
+            .value("level_m", pair.levels[l].level)
+            .value("floors_coincide", pair.levels[l].floors_coincide)
+            .value("u_left_m", level.u_left)
+            .value("u_right_m", level.u_right)
+            .value("time_history_m", level.time_history);
+          const auto values = rule_values(level.rules);
+          for (unsigned int c = 0; c < 5; ++c)
+            json.value(rule_names[c], values[c]);
+          json.end_object();
+        }
+      json.end_array();
+      if (!r.largest_approach.empty())
+        {
+          const auto at_gap =
+            exceedance_curve(r.largest_approach, {pair.existing_gap}, s.confidence_level)[0];
+          json.begin_object("pounding")
+            .value("probability_at_existing_gap", at_gap.probability)
+            .value("lower", at_gap.lower)
+            .value("upper", at_gap.upper)
+            .value("gap_for_target_probability_m",
+                   gap_for_probability(r.largest_approach, s.target_probability))
+            .value("gap_for_target_probability_upper_band_m",
+                   gap_for_probability_upper(r.largest_approach, s.target_probability,
+                                             s.confidence_level))
+            .end_object();
+        }
+      json.end_object();
+    }
+
     void
     write_summary(const std::string &directory, const InputParameters &input,
                   const Model &model, const std::vector<AdjacentPair> &pairs,
@@ -484,71 +567,7 @@ namespace poundfe
         .value("coinciding_levels_factor", s.coinciding_levels_factor);
       json.begin_array("pairs");
       for (std::size_t p = 0; p < pairs.size(); ++p)
-        {
-          const AdjacentPair &pair = pairs[p];
-          const PairResult   &r    = results[p];
-          json.begin_object()
-            .value("pair", pair.name)
-            .value("left", model.buildings[pair.left].name)
-            .value("right", model.buildings[pair.right].name)
-            .value("existing_gap_m", pair.existing_gap)
-            .value("left_period_s", 2 * M_PI / r.left_mode.omega)
-            .value("left_damping_ratio", r.left_mode.damping_ratio)
-            .value("right_period_s", 2 * M_PI / r.right_mode.omega)
-            .value("right_damping_ratio", r.right_mode.damping_ratio)
-            .value("correlation_rho", r.rho);
-          // the joint: the largest requirement over the levels
-          std::array<double, 5> required{};
-          double                time_history = 0;
-          for (const LevelResult &level : r.levels)
-            {
-              const auto values = rule_values(level.rules);
-              for (unsigned int c = 0; c < 5; ++c)
-                required[c] = std::max(required[c], values[c]);
-              time_history = std::max(time_history, level.time_history);
-            }
-          json.value("time_history_m", time_history);
-          json.begin_object("required_m");
-          for (unsigned int c = 0; c < 5; ++c)
-            json.value(rule_names[c], required[c]);
-          json.end_object().begin_object("relative_to_time_history");
-          for (unsigned int c = 0; c < 5; ++c)
-            json.value(rule_names[c], time_history > 0 ? required[c] / time_history - 1 :
-                                                         std::numeric_limits<double>::quiet_NaN());
-          json.end_object().value("governing_code_rule", required[3] >= required[4] ? "EC8" : "ASCE7");
-          json.begin_array("levels");
-          for (std::size_t l = 0; l < r.levels.size(); ++l)
-            {
-              const LevelResult &level = r.levels[l];
-              json.begin_object()
-                .value("level_m", pair.levels[l].level)
-                .value("floors_coincide", pair.levels[l].floors_coincide)
-                .value("u_left_m", level.u_left)
-                .value("u_right_m", level.u_right)
-                .value("time_history_m", level.time_history);
-              const auto values = rule_values(level.rules);
-              for (unsigned int c = 0; c < 5; ++c)
-                json.value(rule_names[c], values[c]);
-              json.end_object();
-            }
-          json.end_array();
-          if (!r.largest_approach.empty())
-            {
-              const auto at_gap = exceedance_curve(r.largest_approach, {pair.existing_gap},
-                                                   s.confidence_level)[0];
-              json.begin_object("pounding")
-                .value("probability_at_existing_gap", at_gap.probability)
-                .value("lower", at_gap.lower)
-                .value("upper", at_gap.upper)
-                .value("gap_for_target_probability_m",
-                       gap_for_probability(r.largest_approach, s.target_probability))
-                .value("gap_for_target_probability_upper_band_m",
-                       gap_for_probability_upper(r.largest_approach, s.target_probability,
-                                                 s.confidence_level))
-                .end_object();
-            }
-          json.end_object();
-        }
+        write_pair(json, s, model, pairs[p], results[p]);
       json.end_array().end_object();
       write_file_atomically(directory + "/summary.json", json.str());
     }
@@ -569,30 +588,24 @@ namespace poundfe
               << rounded(r.left_mode.damping_ratio) << ") and "
               << rounded(2 * M_PI / r.right_mode.omega) << " s (zeta "
               << rounded(r.right_mode.damping_ratio) << "), rho = " << rounded(r.rho) << "\n";
-          std::array<double, 5> required{};
-          double                time_history = 0;
           for (std::size_t l = 0; l < r.levels.size(); ++l)
             {
-              const LevelResult &level  = r.levels[l];
-              const auto         values = rule_values(level.rules);
+              const auto values = rule_values(r.levels[l].rules);
               out << "  level " << rounded(pair.levels[l].level) << " m"
                   << (pair.levels[l].floors_coincide ? "" : " (floors differ)")
-                  << ": time history " << rounded(level.time_history) << " m";
+                  << ": time history " << rounded(r.levels[l].time_history) << " m";
               for (unsigned int c = 0; c < 5; ++c)
-                {
-                  out << ", " << rule_names[c] << " " << rounded(values[c]) << " ("
-                      << percent_of(values[c], level.time_history) << ")";
-                  required[c] = std::max(required[c], values[c]);
-                }
+                out << ", " << rule_names[c] << " " << rounded(values[c]) << " ("
+                    << percent_of(values[c], r.levels[l].time_history) << ")";
               out << "\n";
-              time_history = std::max(time_history, level.time_history);
             }
-          const bool ec8 = required[3] >= required[4];
-          out << "  joint (largest over the levels): time history " << rounded(time_history)
-              << " m; governing code rule " << (ec8 ? "EC8 " : "ASCE 7 ")
-              << rounded(required[ec8 ? 3 : 4]) << " m; EC8 "
-              << percent_of(required[3], time_history) << ", ASCE 7 "
-              << percent_of(required[4], time_history) << " of the time history\n";
+          const Joint        joint     = joint_of(r);
+          const unsigned int governing = joint.governing_code_rule();
+          out << "  joint (largest over the levels): time history " << rounded(joint.time_history)
+              << " m; governing code rule " << (governing == 3 ? "EC8 " : "ASCE 7 ")
+              << rounded(joint.required[governing]) << " m; EC8 "
+              << percent_of(joint.required[3], joint.time_history) << ", ASCE 7 "
+              << percent_of(joint.required[4], joint.time_history) << " of the time history\n";
           if (!r.largest_approach.empty())
             {
               const auto at_gap = exceedance_curve(r.largest_approach, {pair.existing_gap},
@@ -611,7 +624,7 @@ namespace poundfe
         }
     }
 
-    /// Pair results from peaks: rho from the fundamental modes, then the rules.
+    /// The results before any run: each building's fundamental mode, rho, the levels.
     std::vector<PairResult>
     empty_results(const Analysis &analysis, const std::vector<AdjacentPair> &pairs)
     {
