@@ -415,7 +415,6 @@ namespace poundfe
                      "required separation of " + pair.name + " against level",
                      "separation (m)", "level (m)", {}};
           const std::string only = "(($1==" + std::to_string(p + 1) + ")?$";
-          panel.key = "outside right top";
           for (unsigned int c = 0; c < rule_names.size(); ++c) // ASCE 7 dashed: it may equal SRSS
             panel.series.push_back(
               {"separation.csv", only + std::to_string(8 + c) + ":1/0):4", rule_names[c],

@@ -29,7 +29,6 @@ namespace poundfe
              << "set ylabel " << quoted(plot.y_label) << "\n"
              << (plot.log_y ? "set logscale y\n" : "unset logscale y\n")
              << (plot.style_fill ? "set style fill solid 0.5 border\n" : "set style fill empty\n")
-             << "set key " << (plot.key.empty() ? "right top" : plot.key) << "\n"
              << "plot ";
       for (std::size_t i = 0; i < plot.series.size(); ++i)
         {

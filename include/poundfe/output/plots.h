@@ -26,8 +26,6 @@ namespace poundfe
     /// Panels drawn under this one in the same PNG (gnuplot multiplot, one
     /// column); their own `file` and `below` are not used.
     std::vector<Plot>       below{};
-    /// gnuplot's `set key` position, e.g. "outside right top"; empty: right top.
-    std::string             key{};
   };
 
   /// Draw the plots; returns the files written. Writes each PNG atomically.
