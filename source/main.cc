@@ -6,6 +6,7 @@
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/site_hazard_command.h>
+#include <poundfe/analysis/separation.h>
 #include <poundfe/analysis/stationary_pdf.h>
 #include <poundfe/analysis/templates.h>
 #include <poundfe/assembly/linear_solver.h>
@@ -46,12 +47,16 @@ namespace
     "                      exponent against the Bifurcation section's parameter\n"
     "  site-hazard FILE    site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
     "                      Poisson fit, return periods, fragility x hazard\n"
+    "  separation FILE     joint width of adjacent buildings: ABS, SRSS, DDC, EC8 and\n"
+    "                      ASCE 7 rules against the time history without contact; with\n"
+    "                      random loading, P(pounding) against the gap (MPI)\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "  template KIND       a commented starting file on standard output, KIND one of\n"
     "                      frame, shear, mesh, pounding, stochastic\n"
     "                      (poundfe template frame > my-frame.prm)\n"
     "--output DIR overrides the file's 'Output/Directory'.\n"
-    "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility and stationary-pdf\n"
+    "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility, stationary-pdf and\n"
+    "separation "
     "after the realizations under way, with the results so far (status \"interrupted\",\n"
     "exit status 128 + signal); the same command resumes all but subset.\n"
     "A second signal kills. Progress shows on a terminal (POUNDFE_PROGRESS=1: always).\n";
@@ -127,7 +132,7 @@ namespace
   runs_over_mpi(const std::string &command)
   {
     return command == "montecarlo" || command == "subset" || command == "fragility" ||
-           command == "stationary-pdf";
+           command == "stationary-pdf" || command == "separation";
   }
 } // namespace
 
@@ -207,6 +212,8 @@ main(int argc, char **argv)
           err << "poundfe: error: --realizations belongs to ground-motion\n";
           return 1;
         }
+      if (command == "separation") // builds its model without contact
+        return poundfe::separation_command(input, directory, MPI_COMM_WORLD);
       if (command == "sweep") // an analysis per value
         return poundfe::sweep_command(input, directory);
       if (command == "bifurcation")

@@ -218,6 +218,7 @@ namespace poundfe
     bifurcation.declare(prm);
     site_hazard.declare(prm);
     drift_limits.declare(prm);
+    separation.declare(prm);
   }
 
   void
@@ -243,6 +244,7 @@ namespace poundfe
     bifurcation.check(*this);
     site_hazard.check(*this);
     drift_limits.finalize(*this);
+    separation.check(*this, model.buildings.size());
   }
 
   InputParameters

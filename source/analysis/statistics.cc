@@ -1,6 +1,8 @@
 #include <poundfe/analysis/statistics.h>
 #include <poundfe/excitation/stochastic.h>
 
+#include <boost/math/distributions/normal.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,6 +21,19 @@ namespace poundfe
     if (i + 1 >= sorted.size())
       return sorted.back();
     return sorted[i] + (h - i) * (sorted[i + 1] - sorted[i]);
+  }
+
+  ProbabilityInterval
+  wilson_interval(const unsigned long k, const unsigned long n, const double confidence)
+  {
+    if (n == 0)
+      return {0, 1};
+    const double z      = boost::math::quantile(boost::math::normal(), 0.5 * (1 + confidence));
+    const double p      = double(k) / n;
+    const double z2n    = z * z / n;
+    const double centre = (p + z2n / 2) / (1 + z2n);
+    const double half   = z * std::sqrt(p * (1 - p) / n + z2n / (4 * n)) / (1 + z2n);
+    return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
   }
 
   SampleStatistics

@@ -9,6 +9,7 @@
 #include <poundfe/analysis/modal_parameters.h>
 #include <poundfe/analysis/reliability_parameters.h>
 #include <poundfe/analysis/site_hazard_parameters.h>
+#include <poundfe/analysis/separation_parameters.h>
 #include <poundfe/analysis/stationary_pdf_parameters.h>
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/base/input_file.h>
@@ -60,6 +61,7 @@ namespace poundfe
     BifurcationParameters     bifurcation;
     SiteHazardParameters      site_hazard;
     DriftLimitParameters      drift_limits;
+    SeparationParameters      separation;
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
 

@@ -2,6 +2,10 @@
 //   Quantiles: linear interpolation between order statistics (Hyndman & Fan
 //     1996, type 7, as R and NumPy by default).
 //   Monte Carlo: Pf = n_f / N, CoV = sqrt((1 - Pf) / (N Pf)).
+//   Wilson score interval of a binomial proportion p = k / n at confidence
+//     c, z = Phi^-1((1 + c) / 2): (p + z^2/(2n) -+ z sqrt(p(1 - p)/n +
+//     z^2/(4n^2))) / (1 + z^2/n) (Wilson 1927, JASA 22(158); Brown, Cai &
+//     DasGupta 2001, Statistical Science 16(2)).
 //   Fragility: P(fail | x) = Phi(ln(x / theta) / beta), theta and beta by
 //     maximum likelihood over binomial counts (Shinozuka et al. 2000;
 //     Baker 2015, Earthquake Spectra 31(1)).
@@ -34,6 +38,15 @@ namespace poundfe
   };
 
   ProbabilityEstimate estimate_probability(unsigned long n_failures, unsigned long n);
+
+  /// Confidence interval [lower, upper] of a probability.
+  struct ProbabilityInterval
+  {
+    double lower = 0, upper = 1;
+  };
+
+  /// Wilson score interval of k successes in n > 0 trials at `confidence` in (0, 1).
+  ProbabilityInterval wilson_interval(unsigned long k, unsigned long n, double confidence);
 
   struct Histogram
   {

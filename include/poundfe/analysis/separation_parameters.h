@@ -1,0 +1,37 @@
+// The `Separation` section: the code-rule factors of the `separation`
+// command (Eurocode 8 §4.4.2.7, ASCE 7-16 §12.12.3) and its probability of
+// pounding against the gap width (target probability, gap grid, band).
+#ifndef poundfe_analysis_separation_parameters_h
+#define poundfe_analysis_separation_parameters_h
+
+#include <poundfe/base/input_file.h>
+
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  struct SeparationParameters
+  {
+    /// One value for every building or one per building.
+    std::vector<double> deflection_amplification{1.0}; // ASCE 7 C_d
+    std::vector<double> importance_factor{1.0};        // ASCE 7 I_e
+    std::vector<double> behaviour_factor{1.0};         // EC8 q (d_s = q d_e)
+    double              coinciding_levels_factor = 0.7; // EC8 §4.4.2.7(4)
+    double              target_probability       = 0.1; // of pounding, per event
+    unsigned int        n_gap_values             = 200;
+    std::vector<double> gap_values;                     // m; empty: the grid
+    double              confidence_level         = 0.95;
+
+    /// Declare the section (entered and left here).
+    void declare(dealii::ParameterHandler &prm);
+    /// `n_buildings`: the length of a per-building list. Throws InputError.
+    void check(const InputFile &input, unsigned int n_buildings) const;
+  };
+} // namespace poundfe
+
+#endif
