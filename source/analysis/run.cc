@@ -275,7 +275,8 @@ namespace poundfe
         }
       catch (const OutputError &e)
         {
-          status.message += std::string(status.output_failed ? "; " : "") + e.what();
+          if (status.message.find(e.what()) == std::string::npos) // not a file's second word
+            status.message += std::string(status.output_failed ? "; " : "") + e.what();
           status.kind          = RunStatus::Kind::failed;
           status.output_failed = true;
         }
@@ -388,8 +389,8 @@ namespace poundfe
     if (status.output_failed)
       {
         std::cerr << "poundfe: error: " << status.message << " (the run stopped at t = "
-                  << status.end_time << " s; the files that could be written are complete, "
-                  << "summary.json says what failed unless it is named above)\n";
+                  << status.end_time << " s; every other file is complete to that time, "
+                  << "and summary.json says what failed unless it is the file named)\n";
         return 1;
       }
     if (status.kind == RunStatus::Kind::failed)

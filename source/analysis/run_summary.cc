@@ -117,7 +117,8 @@ namespace poundfe
         }
       catch (const OutputError &e)
         {
-          reported.message += std::string(reported.message.empty() ? "" : "; ") + e.what();
+          if (reported.message.find(e.what()) == std::string::npos)
+            reported.message += std::string(reported.message.empty() ? "" : "; ") + e.what();
           reported.kind          = RunStatus::Kind::failed;
           reported.output_failed = true;
           return false;

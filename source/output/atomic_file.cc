@@ -39,15 +39,15 @@ namespace poundfe
         std::remove(temporary_path.c_str());
         descriptor = -1;
       }
-    failed = true;
+    failed_with = error_number;
     throw OutputError("write", final_path, error_number);
   }
 
   void
   AtomicFile::write(const char *data, std::size_t size)
   {
-    if (failed)
-      throw OutputError("write", final_path, EIO);
+    if (failed_with != 0) // the first failure again, already reported by its caller
+      throw OutputError("write", final_path, failed_with);
     while (size > 0)
       {
         const ssize_t written = ::write(descriptor, data, size);
@@ -63,8 +63,8 @@ namespace poundfe
   void
   AtomicFile::overwrite(std::size_t offset, const char *data, std::size_t size)
   {
-    if (failed)
-      throw OutputError("write", final_path, EIO);
+    if (failed_with != 0) // the first failure again, already reported by its caller
+      throw OutputError("write", final_path, failed_with);
     while (size > 0)
       {
         const ssize_t written = ::pwrite(descriptor, data, size, offset);
@@ -81,8 +81,8 @@ namespace poundfe
   void
   AtomicFile::commit()
   {
-    if (failed)
-      throw OutputError("write", final_path, EIO);
+    if (failed_with != 0) // the first failure again, already reported by its caller
+      throw OutputError("write", final_path, failed_with);
     if (descriptor < 0)
       return;
     const int closed = ::close(descriptor);
@@ -91,7 +91,7 @@ namespace poundfe
       {
         const int error_number = errno; // before remove() may change it
         std::remove(temporary_path.c_str());
-        failed = true;
+        failed_with = error_number;
         throw OutputError("write", final_path, error_number);
       }
   }

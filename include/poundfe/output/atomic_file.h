@@ -23,7 +23,7 @@ namespace poundfe
     AtomicFile &operator=(const AtomicFile &) = delete;
 
     /// Appends. Throws OutputError on I/O failure, after removing the
-    /// temporary; every later call throws too.
+    /// temporary; every later call throws the same error again.
     void write(const char *data, std::size_t size);
     void write(const std::string &text) { write(text.data(), text.size()); }
     /// Overwrites `size` bytes at `offset` of what was written (a header
@@ -40,7 +40,7 @@ namespace poundfe
     std::string final_path;
     std::string temporary_path;
     int         descriptor = -1;
-    bool        failed     = false;
+    int         failed_with = 0; // errno of the first failure, 0: none
   };
 
   /// Write a whole file atomically.
