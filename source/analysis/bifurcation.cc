@@ -18,6 +18,7 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -463,7 +464,7 @@ namespace poundfe
     const std::vector<BifurcationPoint> points = bifurcation_points(input);
     const double wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    create_directories(directory);
+    prepare_output_directory(directory);
     write_tables(input, points, directory);
     write_summary(input, points, directory, wall_time);
     if (input.output.plots)

@@ -1,4 +1,5 @@
 #include <poundfe/analysis/montecarlo.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/analysis/statistics.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
@@ -448,8 +449,8 @@ namespace poundfe
     dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
     timer.enter_subsection("set-up");
     RealizationRunner runner(analysis);
-    if (rank == 0)
-      create_directories(directory);
+    if (rank == 0) // an earlier run's realizations stay: it resumes from them
+      prepare_output_directory(directory, {"realizations.csv"});
     timer.leave_subsection();
     const unsigned long n = input.monte_carlo.realizations;
     timer.enter_subsection("realizations");
@@ -606,8 +607,8 @@ namespace poundfe
       g.peak_factor * std::sqrt(generator.motion().spectral_intensity *
                                 stationary_variance_per_unit_s0(generator.motion().filter)) *
       g.scale_factor / standard_gravity;
-    if (rank == 0)
-      create_directories(directory);
+    if (rank == 0) // an earlier run's realizations stay: it resumes from them
+      prepare_output_directory(directory, {"realizations.csv"});
     timer.leave_subsection();
     const std::vector<double> &all_levels = input.fragility.pga_levels;
     const std::vector<double> &limits     = input.monte_carlo.drift_limits;

@@ -10,7 +10,9 @@
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
+#include <poundfe/output/response_range.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/output/vtu_series.h>
 
@@ -100,7 +102,7 @@ namespace poundfe
       const MotionGenerator generator =
         make_motion_generator(input.ground_motion, input.time_integration.newmark.time_step);
       const double          scale     = input.ground_motion.scale_factor;
-      create_directories(directory);
+      prepare_output_directory(directory);
       std::vector<std::string> header{"time"};
       for (unsigned int r = 0; r < n_realizations; ++r)
         header.push_back("realization_" + std::to_string(r));
@@ -255,11 +257,29 @@ namespace poundfe
         status.kind    = RunStatus::Kind::failed;
         status.message = e.what();
       }
+    catch (const OutputError &e) // a full disk: stop, and say so in what still fits
+      {
+        status.kind          = RunStatus::Kind::failed;
+        status.output_failed = true;
+        status.message       = e.what();
+      }
     status.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     status.steps     = integrator.steps();
     status.end_time  = integrator.time();
+    // Every observer finishes (or removes) its files even when one cannot:
+    // the summary, last, then reports the file that failed.
     for (StepObserver *observer : observers)
-      observer->finish(view, status);
+      try
+        {
+          observer->finish(view, status);
+        }
+      catch (const OutputError &e)
+        {
+          if (status.message.find(e.what()) == std::string::npos) // not a file's second word
+            status.message += std::string(status.output_failed ? "; " : "") + e.what();
+          status.kind          = RunStatus::Kind::failed;
+          status.output_failed = true;
+        }
     return status;
   }
 
@@ -290,8 +310,10 @@ namespace poundfe
                    const RunOptions &options)
   {
     TimeHistory  history(analysis, options.linear_solver);
-    PeakResponse peaks(analysis.model, history.nonlinear_elements());
-    Observers    observers{&peaks}; // first: the recorders read its floor response
+    PeakResponse  peaks(analysis.model, history.nonlinear_elements());
+    ResponseRange range(analysis.model, peaks, analysis.input.output.drift_warning,
+                        analysis.input.output.rotation_warning);
+    Observers     observers{&peaks, &range}; // first: the recorders read the floor response
     std::vector<std::unique_ptr<StepObserver>> outputs;
     const std::string &directory = options.output_directory;
     if (!directory.empty())
@@ -306,7 +328,8 @@ namespace poundfe
             outputs = std::move(recorders.observers);
             files   = std::move(recorders.files);
           }
-        create_directories(directory);
+        else // the recorders prepare it after checking their input
+          prepare_output_directory(directory);
         if (options.vtu && input.output.vtu_interval > 0)
           {
             outputs.push_back(std::make_unique<VtuRecorder>(
@@ -314,7 +337,7 @@ namespace poundfe
             files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
           }
         outputs.push_back(std::make_unique<RunSummary>(
-          analysis, excitation, peaks, directory, options.plots && input.output.plots,
+          analysis, excitation, peaks, range, directory, options.plots && input.output.plots,
           history.linear_solver_name(), history.tangent_update(), files));
       }
     if (options.progress)
@@ -330,6 +353,7 @@ namespace poundfe
     result.max_energy_error     = state.max_energy_error();
     result.n_nonlinear_elements = state.elements.size();
     result.n_impacts            = state.impact_log().impacts().size();
+    result.warnings             = range.warnings();
     return result;
   }
 
@@ -345,7 +369,8 @@ namespace poundfe
     const RunResult  result  = run_time_history(analysis, excitation, options);
     const RunStatus &status  = result.status;
     if (!root)
-      return status.kind == RunStatus::Kind::failed ? 2 :
+      return status.output_failed ? 1 :
+             status.kind == RunStatus::Kind::failed ? 2 :
              status.kind == RunStatus::Kind::interrupted ? interrupted_exit_status() : 0;
     std::cout << "poundfe run: " << status.steps << " steps to t = " << status.end_time << " s in "
               << status.wall_time << " s\n";
@@ -358,7 +383,16 @@ namespace poundfe
       std::cout << analysis.model.gaps.size() << " gap elements, " << result.n_impacts
                 << " impacts (impacts.csv)\n";
     std::cout << "energy balance error " << result.max_energy_error << " (max relative)\n";
+    for (const std::string &warning : result.warnings)
+      std::cerr << "poundfe: warning: " << warning << "\n";
     std::cout << "results in " << output_directory << "/ (summary.json lists the files)\n";
+    if (status.output_failed)
+      {
+        std::cerr << "poundfe: error: " << status.message << " (the run stopped at t = "
+                  << status.end_time << " s; every other file is complete to that time, "
+                  << "and summary.json says what failed unless it is the file named)\n";
+        return 1;
+      }
     if (status.kind == RunStatus::Kind::failed)
       {
         std::cerr << "poundfe: numerical failure: " << status.message
@@ -377,7 +411,7 @@ namespace poundfe
   int
   modal_command(const Analysis &analysis, const std::string &output_directory)
   {
-    create_directories(output_directory);
+    prepare_output_directory(output_directory);
     JsonWriter json;
     json.begin_object().value("program", "poundfe").value("command", "modal").value(
       "input", analysis.input.file);
@@ -418,7 +452,7 @@ namespace poundfe
     if (motion.empty())
       throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
                        "there is no ground motion to write (type none)");
-    create_directories(output_directory);
+    prepare_output_directory(output_directory);
     {
       CsvWriter csv(output_directory + "/ground_motion.csv", {"time", "ground_acceleration"});
       for (std::size_t i = 0; i < motion.samples().size(); ++i)

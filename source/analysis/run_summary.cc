@@ -1,10 +1,12 @@
 #include <poundfe/analysis/run_summary.h>
 #include <poundfe/output/drift_limits.h>
+#include <poundfe/base/exceptions.h>
 #include <poundfe/output/stick_slip_report.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/plots.h>
+#include <poundfe/output/response_range.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -81,12 +83,14 @@ namespace poundfe
   }
 
   RunSummary::RunSummary(const Analysis &analysis, const Excitation &excitation,
-                         const PeakResponse &peaks, const std::string &directory,
-                         const bool plots, const std::string &solver,
-                         const std::string &tangent_update, std::vector<std::string> files)
+                         const PeakResponse &peaks, const ResponseRange &range,
+                         const std::string &directory, const bool plots,
+                         const std::string &solver, const std::string &tangent_update,
+                         std::vector<std::string> files)
     : analysis(analysis)
     , excitation(excitation)
     , peaks(peaks)
+    , range(range)
     , directory(directory)
     , plots(plots)
     , solver(solver)
@@ -103,25 +107,38 @@ namespace poundfe
   void
   RunSummary::finish(const ResponseView &state, const RunStatus &status)
   {
+    // What a file that cannot be written (a full disk) changes in the
+    // summary: the status, and the message names the file and the reason.
+    RunStatus reported = status;
+    auto      attempt  = [&](const auto &write) {
+      try
+        {
+          write();
+          return true;
+        }
+      catch (const OutputError &e)
+        {
+          if (reported.message.find(e.what()) == std::string::npos)
+            reported.message += std::string(reported.message.empty() ? "" : "; ") + e.what();
+          reported.kind          = RunStatus::Kind::failed;
+          reported.output_failed = true;
+          return false;
+        }
+    };
     // the order of summary.json's `files`: the time series, then these
     std::vector<std::string> written = files;
-    write_profiles();
-    written.insert(written.end(), {"drift_profile.csv", "acceleration_profile.csv"});
-    if (!analysis.model.gaps.empty())
-      {
-        write_impacts(state);
-        written.push_back("impacts.csv");
-      }
-    if (!analysis.model.friction_surfaces.empty())
-      {
-        write_friction_episodes(directory, state, status.end_time);
-        written.push_back("friction_episodes.csv");
-      }
-    if (plots) // before summary.json, which lists them
+    if (attempt([&]() { write_profiles(); }))
+      written.insert(written.end(), {"drift_profile.csv", "acceleration_profile.csv"});
+    if (!analysis.model.gaps.empty() && attempt([&]() { write_impacts(state); }))
+      written.push_back("impacts.csv");
+    if (!analysis.model.friction_surfaces.empty() &&
+        attempt([&]() { write_friction_episodes(directory, state, status.end_time); }))
+      written.push_back("friction_episodes.csv");
+    if (plots && !reported.output_failed) // before summary.json, which lists them
       for (const std::string &png : draw(state))
         written.push_back(png);
     written.push_back("summary.json");
-    write_json(state, status, written);
+    write_json(state, reported, written); // its own failure goes to the caller
   }
 
   void
@@ -183,6 +200,7 @@ namespace poundfe
     begin_summary(json, "run", input, status.name());
     if (status.kind == RunStatus::Kind::failed)
       json.value("message", status.message);
+    json.value("warnings", range.warnings());
     write_model(json, analysis);
     const GroundMotion &motion = excitation.ground_motion();
     json.begin_object("ground_motion")

@@ -8,6 +8,7 @@
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/output/append_file.h>
@@ -471,8 +472,8 @@ namespace poundfe
       RealizationRunner          runner(analysis);
       const Sampling             sampling = make_sampling(analysis, runner);
       const PdfLayout            layout   = make_layout(analysis, runner, sampling);
-      if (rank == 0)
-        create_directories(directory);
+      if (rank == 0) // an earlier run's realizations stay: it resumes from them
+        prepare_output_directory(directory, {"realizations.csv"});
 
       StationarySampler sampler(sampling.equation, sampling.first, sampling.every, sampling.last);
       const RealizationJob job{layout.names(), runner.stochastic_load().seed(),
@@ -612,6 +613,8 @@ namespace poundfe
       std::vector<InputParameters> inputs; // every value checked before anything runs
       for (const double v : values)
         inputs.push_back(sweep.input_for(input, v));
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0) // each value's directory resumes
+        prepare_output_directory(directory);
       const unsigned long  per_value = input.stationary_pdf.realizations;
       Progress             progress(std::cerr, "realizations", values.size() * per_value);
       std::vector<XDensity> done;

@@ -2,6 +2,7 @@
 #include <poundfe/analysis/subset.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/atomic_file.h>
@@ -331,7 +332,7 @@ namespace poundfe
         columns = {runner.column("peak_contact_force")}, unit = " N";
       }
     if (rank == 0)
-      create_directories(directory);
+      prepare_output_directory(directory);
     timer.leave_subsection();
 
     std::vector<double> responses;

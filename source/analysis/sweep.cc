@@ -11,6 +11,7 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/plots.h>
 
@@ -290,7 +291,7 @@ namespace poundfe
                 const std::string &directory, const double wall_time)
     {
       const SweepParameters &sweep = input.sweep;
-      create_directories(directory);
+      prepare_output_directory(directory);
       std::vector<std::string> header{sweep.column_name(), "completed"};
       header.insert(header.end(), table.names.begin(), table.names.end());
       CsvWriter csv(directory + "/sweep.csv", header);

@@ -1,5 +1,8 @@
 #include <poundfe/base/exceptions.h>
 
+#include <cerrno>
+#include <cstring>
+
 namespace poundfe
 {
   namespace
@@ -29,5 +32,12 @@ namespace poundfe
     , line_number(line)
     , parameter_name(std::move(parameter))
     , problem_text(std::move(problem))
+  {}
+
+  OutputError::OutputError(const std::string &action, const std::string &path,
+                           const int error_number)
+    : std::runtime_error(
+        std::string(error_number == ENOSPC || error_number == EDQUOT ? "disk full: " : "") +
+        "cannot " + action + " " + path + ": " + std::strerror(error_number))
   {}
 } // namespace poundfe

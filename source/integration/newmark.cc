@@ -14,6 +14,37 @@
 
 namespace poundfe
 {
+  namespace
+  {
+    /// The convergence criteria at Newton iterate i >= 1 (theory §3.4).
+    struct NewtonCheck
+    {
+      double residual;       // ||R_i||
+      double residual_ratio; // ||R_i|| / ||R_0||
+      double energy;         // |du_i . R_i|, the work of the residual on the last correction
+      double energy_ratio;   // |du_i . R_i| / |du_1 . R_0|
+      bool   residual_met;   // ratio <= residual tolerance, or ||R_i|| at round-off
+      bool   energy_met;     // ratio <= energy tolerance, or ||R_i|| at round-off
+
+      bool converged() const { return residual_met && energy_met; }
+
+      /// Each criterion's value against its tolerance, for a failure message.
+      std::string
+      describe(const NewtonParameters &newton) const
+      {
+        std::ostringstream s;
+        s.precision(3);
+        s << "residual norm " << residual << " = " << residual_ratio
+          << " of the first (Newton residual tolerance " << newton.residual_tolerance << ": "
+          << (residual_met ? "met" : "not met") << "); work of the residual on the last "
+          << "correction " << energy << " J = " << energy_ratio
+          << " of the first iteration's (Newton energy tolerance " << newton.energy_tolerance
+          << ": " << (energy_met ? "met" : "not met") << ")";
+        return s.str();
+      }
+    };
+  } // namespace
+
   /// Everything that depends on the step size: Newmark coefficients, the
   /// effective matrix and its factorisation. Level c has dt / 2^c.
   struct NewmarkIntegrator::Level
@@ -407,29 +438,38 @@ namespace poundfe
         if (it == 0)
           first_residual = norm;
         const double floor = 1e-13 * rhs.norm();
-        const bool   small = norm <= std::max(newton.residual_tolerance * first_residual, floor);
-        if (it > 0 && small &&
-            (std::abs(increment.dot(residual)) <= newton.energy_tolerance * first_energy ||
-             norm <= floor))
-          {
-            stats.iterations += it;
-            stats.max_iterations = std::max(stats.max_iterations, it);
-            return true;
-          }
         if (it == 0 && norm <= floor)
           return true;
+        NewtonCheck check{};
+        if (it > 0)
+          {
+            check.residual       = norm;
+            check.residual_ratio = norm / std::max(first_residual, 1e-300);
+            check.energy         = std::abs(increment.dot(residual));
+            check.energy_ratio   = check.energy / std::max(first_energy, 1e-300);
+            check.residual_met =
+              norm <= std::max(newton.residual_tolerance * first_residual, floor);
+            check.energy_met =
+              check.energy <= newton.energy_tolerance * first_energy || norm <= floor;
+            if (check.converged())
+              {
+                stats.iterations += it;
+                stats.max_iterations = std::max(stats.max_iterations, it);
+                return true;
+              }
+          }
         if (it == newton.max_iterations)
           {
-            // Where the equations are most out of balance, for the message.
+            // Which criterion failed, and where the equations are most out
+            // of balance, for the message.
             Eigen::Index worst = 0;
             residual.cwiseAbs().maxCoeff(&worst);
             std::ostringstream message;
-            message << "Newton did not converge in " << it << " iterations (residual "
-                    << norm << ", " << norm / std::max(first_residual, 1e-300)
-                    << " of the first; largest at equation " << worst;
+            message << "Newton did not converge in " << it << " iterations: "
+                    << check.describe(newton) << "; the largest residual is at equation "
+                    << worst;
             if (static_cast<std::size_t>(worst) < equation_names.size())
               message << ", " << equation_names[worst];
-            message << ")";
             failure = message.str();
             return false;
           }

@@ -45,7 +45,7 @@ namespace poundfe
                       "times the norm of the effective load ...");
     prm.add_parameter("Newton energy tolerance", newmark.newton.energy_tolerance,
                       "... and the work of the residual on the last correction is below "
-                      "this times that of the first iteration.");
+                      "this times that of the first iteration (theory §3.4).");
     prm.add_parameter("Newton maximum iterations", newmark.newton.max_iterations,
                       "Iterations before the step is cut.", Patterns::Integer(1, 1000));
     prm.add_parameter("Maximum step cuts", newmark.newton.max_step_cuts,

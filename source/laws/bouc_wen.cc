@@ -60,8 +60,14 @@ namespace poundfe
 
     double z = z0, e1 = e0;
     Rate   r1{};
-    double R         = residual(z, r1, e1);
-    bool   converged = std::abs(R) <= p.tolerance;
+    double R = residual(z, r1, e1);
+    // At least one Newton step whenever the deformation changed: z1 = z0
+    // would already pass the tolerance for an increment below about
+    // tolerance * u_y, and the force would then ignore (1 - alpha) k du
+    // although the tangent below includes it. The global Newton iteration
+    // (theory §3.3) then converges only linearly, or not at all on the
+    // massless hinge rotations of an undamped frame (issue 14 item 7).
+    bool converged = du == 0;
     for (unsigned int it = 0; it < p.max_iterations && !converged; ++it)
       {
         const double dR = 1 - c * th * (r1.g_z + 0.5 * c * r1.g_epsilon);

@@ -1,4 +1,6 @@
+#include <poundfe/base/exceptions.h>
 #include <poundfe/output/append_file.h>
+#include <poundfe/output/output_directory.h>
 
 #include <cerrno>
 #include <charconv>
@@ -11,10 +13,11 @@ namespace poundfe
 {
   AppendFile::AppendFile(const std::string &file)
     : path(file)
-    , descriptor(::open(file.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644))
   {
+    register_output(path); // listed before it exists (output_directory.h)
+    descriptor = ::open(file.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
     if (descriptor < 0)
-      throw std::runtime_error("cannot open " + path + " for appending: " + std::strerror(errno));
+      throw OutputError("open for appending", path, errno);
   }
 
   AppendFile::~AppendFile()
@@ -35,7 +38,7 @@ namespace poundfe
           {
             if (errno == EINTR)
               continue;
-            throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+            throw OutputError("write", path, errno);
           }
         data += written;
         left -= written;

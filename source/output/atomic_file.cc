@@ -1,11 +1,12 @@
+#include <poundfe/base/exceptions.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/output_directory.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
-#include <stdexcept>
 #include <unistd.h>
 
 namespace poundfe
@@ -13,10 +14,11 @@ namespace poundfe
   AtomicFile::AtomicFile(std::string path)
     : final_path(std::move(path))
     , temporary_path(final_path + ".tmp")
-    , descriptor(::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666))
   {
+    register_output(final_path); // listed before it exists (output_directory.h)
+    descriptor = ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (descriptor < 0)
-      throw std::runtime_error("cannot write " + temporary_path + ": " + std::strerror(errno));
+      throw OutputError("write", temporary_path, errno);
   }
 
   AtomicFile::~AtomicFile()
@@ -29,15 +31,30 @@ namespace poundfe
   }
 
   void
+  AtomicFile::fail(const int error_number)
+  {
+    if (descriptor >= 0)
+      {
+        ::close(descriptor);
+        std::remove(temporary_path.c_str());
+        descriptor = -1;
+      }
+    failed_with = error_number;
+    throw OutputError("write", final_path, error_number);
+  }
+
+  void
   AtomicFile::write(const char *data, std::size_t size)
   {
+    if (failed_with != 0) // the first failure again, already reported by its caller
+      throw OutputError("write", final_path, failed_with);
     while (size > 0)
       {
         const ssize_t written = ::write(descriptor, data, size);
         if (written < 0 && errno == EINTR)
           continue;
         if (written < 0)
-          throw std::runtime_error("cannot write " + temporary_path + ": " + std::strerror(errno));
+          fail(errno);
         data += written;
         size -= written;
       }
@@ -46,13 +63,15 @@ namespace poundfe
   void
   AtomicFile::overwrite(std::size_t offset, const char *data, std::size_t size)
   {
+    if (failed_with != 0) // the first failure again, already reported by its caller
+      throw OutputError("write", final_path, failed_with);
     while (size > 0)
       {
         const ssize_t written = ::pwrite(descriptor, data, size, offset);
         if (written < 0 && errno == EINTR)
           continue;
         if (written < 0)
-          throw std::runtime_error("cannot write " + temporary_path + ": " + std::strerror(errno));
+          fail(errno);
         data += written;
         offset += written;
         size -= written;
@@ -62,14 +81,18 @@ namespace poundfe
   void
   AtomicFile::commit()
   {
+    if (failed_with != 0) // the first failure again, already reported by its caller
+      throw OutputError("write", final_path, failed_with);
     if (descriptor < 0)
       return;
-    const bool closed = ::close(descriptor) == 0;
-    descriptor        = -1;
-    if (!closed || std::rename(temporary_path.c_str(), final_path.c_str()) != 0)
+    const int closed = ::close(descriptor);
+    descriptor       = -1;
+    if (closed != 0 || std::rename(temporary_path.c_str(), final_path.c_str()) != 0)
       {
+        const int error_number = errno; // before remove() may change it
         std::remove(temporary_path.c_str());
-        throw std::runtime_error("cannot write " + final_path);
+        failed_with = error_number;
+        throw OutputError("write", final_path, error_number);
       }
   }
 
@@ -84,9 +107,10 @@ namespace poundfe
   void
   create_directories(const std::string &path)
   {
+    register_output(path); // listed before it exists (output_directory.h)
     std::error_code error;
     std::filesystem::create_directories(path, error);
     if (error)
-      throw std::runtime_error("cannot create directory " + path + ": " + error.message());
+      throw OutputError("create directory", path, error.value());
   }
 } // namespace poundfe

@@ -1,4 +1,5 @@
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 
 #include <cstdio>
@@ -77,6 +78,10 @@ namespace poundfe
           write_panel(script, panel);
         script << (n_panels > 1 ? "unset multiplot\n" : "") << "unset output\n";
       }
+    // gnuplot writes these itself: listed first (output_directory.h)
+    for (const Plot &plot : plots)
+      register_output(directory + "/" + plot.file);
+    register_output(directory + "/.plots.log");
     const std::string script_file = directory + "/.plots.gp";
     write_file_atomically(script_file, script.str());
     const std::string command =

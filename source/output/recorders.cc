@@ -1,6 +1,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/number_text.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
 #include <poundfe/output/storey_forces.h>
@@ -505,7 +506,7 @@ namespace poundfe
     for (const RecorderRequest &r : requests)
       if (r.quantity != RecordedQuantity::residual_drift)
         series.push_back(series_of(r, state, peaks, forces, input_file, parameters.line));
-    create_directories(directory);
+    prepare_output_directory(directory);
     Recorders recorders;
     for (const RecorderRequest &r : requests)
       for (const std::string &file : files_of(r.quantity, parameters.format))

@@ -32,6 +32,8 @@ namespace poundfe
     double              max_energy_error   = 0;
     unsigned int        n_nonlinear_elements = 0;
     std::size_t         n_impacts          = 0;
+    /// Where the response left the model's range (output/response_range.h).
+    std::vector<std::string> warnings;
   };
 
   /// The time-history engine of one model: the nonlinear elements and the

@@ -20,6 +20,7 @@ namespace poundfe
 {
   class JsonWriter;
   class PeakResponse;
+  class ResponseRange;
 
   /// The model's size and whole-model modes (run and modal summaries).
   void write_model(JsonWriter &json, const Analysis &analysis);
@@ -30,10 +31,12 @@ namespace poundfe
   {
   public:
     /// `solver` and `tangent_update` name the integrator's choices; `files`
-    /// are those the other observers write (recorders, VTU index).
+    /// are those the other observers write (recorders, VTU index); `range`'s
+    /// warnings go to "warnings".
     RunSummary(const Analysis &analysis, const Excitation &excitation, const PeakResponse &peaks,
-               const std::string &directory, bool plots, const std::string &solver,
-               const std::string &tangent_update, std::vector<std::string> files);
+               const ResponseRange &range, const std::string &directory, bool plots,
+               const std::string &solver, const std::string &tangent_update,
+               std::vector<std::string> files);
 
     void observe_step(const ResponseView &) override {}
     void finish(const ResponseView &state, const RunStatus &status) override;
@@ -62,6 +65,7 @@ namespace poundfe
     const Analysis     &analysis;
     const Excitation   &excitation;
     const PeakResponse &peaks;
+    const ResponseRange &range;
     const std::string   directory;
     const bool          plots;
     const std::string   solver, tangent_update;

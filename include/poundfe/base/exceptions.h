@@ -1,5 +1,6 @@
 // Errors that reach the user. Bad input is an InputError (exit status 1), a
-// numerical breakdown during a run is a NumericalError (exit status 2).
+// numerical breakdown during a run is a NumericalError (exit status 2), a
+// results file that cannot be written is an OutputError (exit status 1).
 #ifndef poundfe_base_exceptions_h
 #define poundfe_base_exceptions_h
 
@@ -36,6 +37,16 @@ namespace poundfe
     explicit NumericalError(const std::string &what)
       : std::runtime_error(what)
     {}
+  };
+
+  /// A results file could not be written: "cannot <action> <path>: <the
+  /// operating system's reason>", prefixed "disk full: " when it is (ENOSPC,
+  /// EDQUOT), so the user sees at once what to free.
+  class OutputError : public std::runtime_error
+  {
+  public:
+    /// `error_number`: the errno of the failed call.
+    OutputError(const std::string &action, const std::string &path, int error_number);
   };
 } // namespace poundfe
 

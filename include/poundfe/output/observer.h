@@ -27,11 +27,14 @@ namespace poundfe
     enum class Kind
     {
       completed,
-      failed,     // a numerical failure: results up to end_time are kept
+      failed,     // a numerical failure or an output error: results up to end_time are kept
       interrupted // SIGINT/SIGTERM: stopped at the end of a step
     };
     Kind          kind      = Kind::completed;
     std::string   message;       // the failure, when failed
+    /// failed because a results file could not be written (OutputError:
+    /// disk full, ...), not numerically; `message` says which and why
+    bool          output_failed = false;
     unsigned long steps     = 0; // steps of the analysis time step reached
     double        end_time  = 0; // s
     double        wall_time = 0; // s, the stepping loop with its observers

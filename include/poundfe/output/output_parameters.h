@@ -23,6 +23,9 @@ namespace poundfe
     bool               plots        = true;
     unsigned int       n_modes      = 6;
     RecorderParameters recorders;
+    /// Output/Warnings (output/response_range.h); 0: no warning.
+    double             drift_warning    = 0.10; // storey drift ratio, roof displacement / height
+    double             rotation_warning = 0.10; // rad, of any node
 
     /// Declare the `Output` section (entered and left here).
     void declare(dealii::ParameterHandler &prm);

@@ -28,9 +28,10 @@ namespace poundfe
   /// The requested recorders plus the defaults, as observers writing into
   /// `directory` in `parameters.format`. They read the floor response of
   /// `peaks`, which must be observed before them. Checks every request
-  /// (InputError for an unknown member label) before it makes the
-  /// directory or a file; removes the recorder files of an earlier run
-  /// that this one does not write.
+  /// (InputError for an unknown member label) before it prepares the
+  /// directory (prepare_output_directory: what an earlier command wrote there
+  /// is removed) or makes a file; also removes the recorder files of either
+  /// format that an earlier run left without a manifest.
   Recorders
   make_recorders(const RecorderParameters &parameters, const std::string &input_file,
                  const ResponseView &state, const PeakResponse &peaks, double time_step,

@@ -1,0 +1,180 @@
+#include <poundfe/base/exceptions.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/output_directory.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace poundfe
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    /// A prepared output directory and its open manifest.
+    struct Manifest
+    {
+      fs::path              directory; // absolute, normal
+      int                   descriptor = -1;
+      std::set<std::string> listed;
+
+      ~Manifest()
+      {
+        if (descriptor >= 0)
+          ::close(descriptor);
+      }
+
+      /// Appends `entry` unless listed already. One write(2) per line, no
+      /// sync: what matters is that a killed process's files are listed,
+      /// which the kernel keeps without it.
+      void
+      add(const std::string &entry)
+      {
+        if (!listed.insert(entry).second)
+          return;
+        const std::string line = entry + "\n";
+        for (std::size_t done = 0; done < line.size();)
+          {
+            const ssize_t n = ::write(descriptor, line.data() + done, line.size() - done);
+            if (n < 0 && errno == EINTR)
+              continue;
+            if (n < 0)
+              throw OutputError("write", (directory / output_manifest_name).string(), errno);
+            done += n;
+          }
+      }
+    };
+
+    /// The directories prepared by this process (several in a test).
+    std::vector<std::unique_ptr<Manifest>> &
+    manifests()
+    {
+      static std::vector<std::unique_ptr<Manifest>> all;
+      return all;
+    }
+
+    fs::path
+    normal(const std::string &path)
+    {
+      return fs::absolute(fs::path(path)).lexically_normal();
+    }
+
+    /// `path` relative to `directory` when it lies inside it, else empty.
+    std::string
+    inside(const fs::path &path, const fs::path &directory)
+    {
+      const fs::path relative = path.lexically_relative(directory);
+      if (relative.empty() || relative == "." || *relative.begin() == "..")
+        return "";
+      std::string text = relative.generic_string();
+      while (!text.empty() && text.back() == '/')
+        text.pop_back();
+      return text;
+    }
+
+    /// Whether a manifest line names something poundfe may remove: a
+    /// relative path inside the directory (a damaged or edited manifest must
+    /// not reach outside it) other than the manifest itself.
+    bool
+    removable(const std::string &entry)
+    {
+      const fs::path p(entry);
+      if (entry.empty() || p.is_absolute() || entry == output_manifest_name)
+        return false;
+      for (const fs::path &part : p)
+        if (part == "..")
+          return false;
+      return true;
+    }
+  } // namespace
+
+  void
+  prepare_output_directory(const std::string &directory, const std::vector<std::string> &resumed)
+  {
+    create_directories(directory);
+    const fs::path root = normal(directory);
+    auto          &all  = manifests();
+    all.erase(std::remove_if(all.begin(), all.end(),
+                             [&](const auto &m) { return m->directory == root; }),
+              all.end());
+
+    // What the last command listed: files now, then the subdirectories
+    // that are left empty, deepest first.
+    std::vector<std::string> kept, directories;
+    std::ifstream            old(root / output_manifest_name);
+    for (std::string entry; std::getline(old, entry);)
+      {
+        if (!removable(entry))
+          continue;
+        const fs::path  path = root / entry;
+        std::error_code error;
+        if (fs::is_directory(fs::symlink_status(path, error)))
+          {
+            directories.push_back(entry);
+            continue;
+          }
+        if (std::find(resumed.begin(), resumed.end(), path.filename().string()) != resumed.end())
+          {
+            if (fs::exists(fs::symlink_status(path, error)))
+              kept.push_back(entry);
+            continue;
+          }
+        for (const fs::path &file : {path, fs::path(path.string() + ".tmp")})
+          if (!fs::remove(file, error) && error && error != std::errc::no_such_file_or_directory)
+            throw OutputError("remove the earlier run's file", file.string(), error.value());
+      }
+    std::sort(directories.begin(), directories.end(),
+              [](const std::string &a, const std::string &b) { return a.size() > b.size(); });
+    for (const std::string &entry : directories)
+      {
+        std::error_code error; // not empty: the user's files, or resumed ones
+        if (!fs::remove(root / entry, error))
+          kept.push_back(entry);
+      }
+
+    auto manifest       = std::make_unique<Manifest>();
+    manifest->directory = root;
+    const std::string name = (root / output_manifest_name).string();
+    manifest->descriptor =
+      ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0666);
+    if (manifest->descriptor < 0)
+      throw OutputError("write", name, errno);
+    // parents before what they hold, so a later removal empties them first
+    std::sort(kept.begin(), kept.end());
+    for (const std::string &entry : kept)
+      manifest->add(entry);
+    all.push_back(std::move(manifest));
+  }
+
+  void
+  register_output(const std::string &path)
+  {
+    auto &all = manifests();
+    if (all.empty())
+      return;
+    const fs::path p = normal(path);
+    // the innermost prepared directory that holds it
+    Manifest   *owner = nullptr;
+    std::string entry;
+    for (const auto &manifest : all)
+      if (std::string relative = inside(p, manifest->directory);
+          !relative.empty() && (!owner || relative.size() < entry.size()))
+        owner = manifest.get(), entry = std::move(relative);
+    if (!owner)
+      return;
+    // its parents first ("solution" before "solution/solution-00000.vtu"),
+    // so that they are removed once empty
+    for (std::size_t slash = entry.find('/'); slash != std::string::npos;
+         slash = entry.find('/', slash + 1))
+      owner->add(entry.substr(0, slash));
+    owner->add(entry);
+  }
+} // namespace poundfe

@@ -1,0 +1,150 @@
+// One command's results per output directory (output/output_directory.h)
+// and files that fail cleanly (output/atomic_file.h), issue 14 items 11-12:
+//  - every writer lists its file in the manifest before creating it, so a
+//    second command removes exactly what the first one wrote (with a killed
+//    command's temporaries), keeps the user's files and the files it resumes
+//    from, and removes the subdirectories it emptied;
+//  - a damaged manifest cannot make it delete outside the directory;
+//  - a write to a full device (/dev/full) throws OutputError naming the file
+//    and "No space left on device", prefixed "disk full", and leaves no
+//    temporary; a commit over a directory says "Is a directory".
+// The reference is the file system itself: what exists afterwards.
+#include <poundfe/base/exceptions.h>
+#include <poundfe/output/append_file.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/output_directory.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+using namespace poundfe;
+namespace fs = std::filesystem;
+
+namespace
+{
+  std::string
+  fresh_directory(const std::string &name)
+  {
+    const std::string dir = fs::temp_directory_path() / ("poundfe-" + name);
+    fs::remove_all(dir);
+    return dir;
+  }
+
+  /// Every file and directory under `directory`, relative, sorted.
+  std::set<std::string>
+  tree(const std::string &directory)
+  {
+    std::set<std::string> names;
+    for (const auto &entry : fs::recursive_directory_iterator(directory))
+      names.insert(fs::relative(entry.path(), directory).generic_string());
+    return names;
+  }
+
+  void
+  touch(const std::string &path, const std::string &text = "x")
+  {
+    std::ofstream(path) << text;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(a_second_command_removes_what_the_first_wrote_and_nothing_else)
+{
+  const std::string dir = fresh_directory("reused");
+  prepare_output_directory(dir);
+  write_file_atomically(dir + "/summary.json", "{}");
+  write_file_atomically(dir + "/contact_force.csv", "time\n");
+  create_directories(dir + "/solution");
+  for (const char *frame : {"solution-00000.vtu", "solution-00001.vtu", "solution-00002.vtu"})
+    write_file_atomically(dir + "/solution/" + frame, "<VTKFile/>");
+  AppendFile(dir + "/realizations.csv").append("realization\n");
+  {
+    AtomicFile killed(dir + "/hinges.csv"); // listed when made
+  }
+  touch(dir + "/hinges.csv.tmp"); // what a process killed while writing it leaves
+  touch(dir + "/notes.txt");                // the user's
+  touch(dir + "/solution/user-frame.vtu");  // the user's, in a directory poundfe made
+  fs::create_directories(dir + "/modal");   // another command's directory, not listed
+  touch(dir + "/modal/summary.json");
+
+  // the second command resumes from realizations.csv and writes one frame
+  prepare_output_directory(dir, {"realizations.csv"});
+  write_file_atomically(dir + "/solution/solution-00000.vtu", "<VTKFile/>");
+  const std::set<std::string> expected{".poundfe-files",
+                                       "modal",
+                                       "modal/summary.json",
+                                       "notes.txt",
+                                       "realizations.csv",
+                                       "solution",
+                                       "solution/solution-00000.vtu",
+                                       "solution/user-frame.vtu"};
+  BOOST_TEST(tree(dir) == expected, boost::test_tools::per_element());
+
+  // a third command that does not resume: what the second listed goes,
+  // including the kept realizations.csv; the emptied directory goes too
+  fs::remove(dir + "/solution/user-frame.vtu");
+  prepare_output_directory(dir);
+  const std::set<std::string> left{".poundfe-files", "modal", "modal/summary.json", "notes.txt"};
+  BOOST_TEST(tree(dir) == left, boost::test_tools::per_element());
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(a_damaged_manifest_cannot_reach_outside_the_directory)
+{
+  const std::string parent = fresh_directory("manifest-outside");
+  const std::string dir    = parent + "/results";
+  fs::create_directories(dir);
+  touch(parent + "/precious.txt");
+  touch(dir + "/inside.csv");
+  std::ofstream(dir + "/" + output_manifest_name)
+    << "../precious.txt\n" << fs::absolute(parent + "/precious.txt").string() << "\n"
+    << "inside.csv\n\n.poundfe-files\n";
+  prepare_output_directory(dir);
+  BOOST_TEST(fs::exists(parent + "/precious.txt"));
+  BOOST_TEST(!fs::exists(dir + "/inside.csv"));
+  BOOST_TEST(fs::exists(dir + "/" + output_manifest_name));
+  fs::remove_all(parent);
+}
+
+BOOST_AUTO_TEST_CASE(a_full_device_is_reported_with_its_reason_and_leaves_no_temporary)
+{
+  const std::string dir = fresh_directory("full");
+  prepare_output_directory(dir);
+  // the temporary of drift.csv is /dev/full: every write fails with ENOSPC
+  fs::create_symlink("/dev/full", dir + "/drift.csv.tmp");
+  try
+    {
+      AtomicFile file(dir + "/drift.csv");
+      file.write(std::string(1000, 'x'));
+      file.commit();
+      BOOST_FAIL("a write to /dev/full succeeded");
+    }
+  catch (const OutputError &e)
+    {
+      const std::string message = e.what();
+      BOOST_TEST_MESSAGE(message);
+      BOOST_TEST(message.rfind("disk full: cannot write " + dir + "/drift.csv: ", 0) == 0);
+      BOOST_TEST(message.find("No space left on device") != std::string::npos);
+    }
+  BOOST_TEST(!fs::exists(fs::symlink_status(dir + "/drift.csv.tmp")));
+  BOOST_TEST(!fs::exists(dir + "/drift.csv"));
+
+  // summary.json cannot replace a directory: the reason, no temporary
+  fs::create_directories(dir + "/summary.json");
+  try
+    {
+      write_file_atomically(dir + "/summary.json", "{}");
+      BOOST_FAIL("renamed over a directory");
+    }
+  catch (const OutputError &e)
+    {
+      const std::string message = e.what();
+      BOOST_TEST_MESSAGE(message);
+      BOOST_TEST(message == "cannot write " + dir + "/summary.json: Is a directory");
+    }
+  BOOST_TEST(!fs::exists(dir + "/summary.json.tmp"));
+  fs::remove_all(dir);
+}
