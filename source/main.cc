@@ -20,6 +20,12 @@
 #include <string>
 #include <vector>
 
+namespace poundfe
+{
+  /// `git describe` of the sources, written by scripts/revision.cmake at build time.
+  extern const char *const git_revision;
+} // namespace poundfe
+
 namespace
 {
   /// Where the ranks other than 0 send their messages.
@@ -27,6 +33,7 @@ namespace
 
   const char *usage =
     "usage: poundfe <command> [FILE] [--output DIR]\n"
+    "       poundfe --help | --version\n"
     "commands:\n"
     "  run FILE            time-history analysis (summary.json, CSV, VTU, PNG)\n"
     "  modal FILE          frequencies, periods, participating masses, modes.pvd\n"
@@ -43,7 +50,9 @@ namespace
     "  bifurcation FILE    Poincare samples, their period and the largest Lyapunov\n"
     "                      exponent against the Bifurcation section's parameter\n"
     "  print-parameters    every parameter with its documentation and default\n"
-    "--output DIR overrides the file's 'Output/Directory'.\n"
+    "--output DIR overrides the file's 'Output/Directory'. Any other option is an error.\n"
+    "Exit status: 0 done, 1 bad input or command line (one message, nothing written),\n"
+    "2 numerical failure (results so far kept), 128 + signal when interrupted.\n"
     "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility and stationary-pdf\n"
     "after the realizations under way, with the results so far (status \"interrupted\",\n"
     "exit status 128 + signal); the same command resumes all but subset.\n"
@@ -56,6 +65,8 @@ namespace
     std::string              output;
     unsigned int             n_realizations = 0;
     std::string              error; // not empty: the message for bad options
+    bool                     help    = false;
+    bool                     version = false;
   };
 
   CommandLine
@@ -66,7 +77,7 @@ namespace
     for (std::size_t i = 0; i < args.size(); ++i)
       if (args[i] == "--output" || args[i] == "--realizations")
         {
-          if (i + 1 >= args.size())
+          if (i + 1 >= args.size() || args[i + 1].empty())
             {
               line.error = "poundfe: error: " + args[i] + " needs a value\n" + usage;
               return line;
@@ -74,6 +85,15 @@ namespace
           (args[i] == "--output" ? line.output : realizations) = args[i + 1];
           args.erase(args.begin() + i, args.begin() + i + 2);
           --i;
+        }
+      else if (args[i] == "--help" || args[i] == "-h")
+        line.help = true;
+      else if (args[i] == "--version")
+        line.version = true;
+      else if (args[i].size() > 1 && args[i][0] == '-')
+        {
+          line.error = "poundfe: error: unknown option '" + args[i] + "' (see poundfe --help)\n";
+          return line;
         }
     line.args = std::move(args);
     if (!realizations.empty())
@@ -129,10 +149,16 @@ main(int argc, char **argv)
       return 1;
     }
   const std::vector<std::string> &args = line.args;
-  if (args.empty() || args[0] == "--help" || args[0] == "-h")
+  if (line.version)
     {
-      std::cout << usage;
-      return args.empty() ? 1 : 0;
+      std::cout << "poundfe (git " << poundfe::git_revision << "), deal.II "
+                << DEAL_II_PACKAGE_VERSION << "\n";
+      return 0;
+    }
+  if (args.empty() || line.help)
+    {
+      (line.help ? std::cout : err) << usage;
+      return line.help ? 0 : 1;
     }
   // The commands whose loops poll for SIGINT/SIGTERM and stop cleanly. (A
   // handler that no loop polls would only delay Ctrl-C, so modal and
@@ -143,6 +169,12 @@ main(int argc, char **argv)
     {
       if (command == "print-parameters")
         {
+          if (args.size() != 1)
+            {
+              err << "poundfe: error: 'print-parameters' takes no argument, got '" << args[1]
+                  << "'\n";
+              return 1;
+            }
           poundfe::print_parameters(std::cout);
           return 0;
         }

@@ -1,5 +1,6 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/input_file.h>
+#include <poundfe/base/numbers.h>
 
 #include <cmath>
 #include <filesystem>
@@ -32,14 +33,14 @@ namespace poundfe
   InputFile::positive(const std::string &path, const double v) const
   {
     if (!(v > 0) || !std::isfinite(v))
-      fail(path, "must be positive and finite, got " + std::to_string(v));
+      fail(path, "must be positive and finite, got " + number_text(v));
   }
 
   void
   InputFile::non_negative(const std::string &path, const double v) const
   {
     if (!(v >= 0) || !std::isfinite(v))
-      fail(path, "must be zero or positive, got " + std::to_string(v));
+      fail(path, "must be zero or positive, got " + number_text(v));
   }
 
   void
