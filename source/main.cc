@@ -79,7 +79,7 @@ namespace
         {
           if (i + 1 >= args.size() || args[i + 1].empty())
             {
-              line.error = "poundfe: error: " + args[i] + " needs a value\n" + usage;
+              line.error = "poundfe: error: " + args[i] + " needs a value (see poundfe --help)\n";
               return line;
             }
           (args[i] == "--output" ? line.output : realizations) = args[i + 1];

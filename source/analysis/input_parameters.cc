@@ -1,10 +1,12 @@
 #include <poundfe/analysis/input_parameters.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/input_text.h>
+#include <poundfe/base/numbers.h>
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -237,6 +239,7 @@ namespace poundfe
     model.finalize(*this);
     ground_motion.check(*this, time_integration.newmark.time_step);
     time_integration.check(*this);
+    check_stochastic_samples();
     contact.check(*this);
     friction.check(*this);
     monte_carlo.check(*this);
@@ -245,6 +248,21 @@ namespace poundfe
     stationary_pdf.check(*this, time_integration.newmark.time_step);
     sweep.check(*this);
     bifurcation.check(*this);
+  }
+
+  void
+  InputParameters::check_stochastic_samples() const
+  {
+    if (!ground_motion.is_stochastic() && nodal_forces.white_noise.empty())
+      return;
+    const double interval  = ground_motion.held_interval(time_integration.newmark.time_step);
+    const double n_samples = ground_motion.duration / interval;
+    if (!(n_samples <= time_integration.max_steps))
+      fail("Ground motion/Stochastic/Duration",
+           "needs " + count_text(n_samples) + " samples of " + number_text(interval) +
+             " s to last " + number_text(ground_motion.duration) +
+             " s, more than Time integration/Maximum number of steps = " +
+             std::to_string(time_integration.max_steps) + " (raise it if the run is meant)");
   }
 
   InputParameters

@@ -9,24 +9,34 @@
 namespace poundfe
 {
   std::string
-  read_input_text(const std::string &file)
+  read_input_text(const std::string &file, const std::string &what)
   {
     std::error_code error;
     if (std::filesystem::is_directory(file, error))
-      throw InputError(file, 0, "", "is a directory, not a parameter file");
+      throw InputError(file, 0, "", "is a directory, not a " + what);
     std::ifstream in(file, std::ios::binary);
     if (!in)
-      throw InputError(file, 0, "", "cannot open the parameter file");
+      throw InputError(file, 0, "", "cannot open the " + what);
     const std::string bytes{std::istreambuf_iterator<char>(in), {}};
     if (in.bad())
-      throw InputError(file, 0, "", "cannot read the parameter file");
+      throw InputError(file, 0, "", "cannot read the " + what);
     std::string text;
     text.reserve(bytes.size());
     for (std::size_t i = 0; i < bytes.size(); ++i)
       if (bytes[i] != '\r')
         text += bytes[i];
-      else if (i + 1 >= bytes.size() || bytes[i + 1] != '\n')
-        text += '\n'; // a lone CR ends a line; CR LF keeps its LF
+      else
+        {
+          // CRs before an LF belong to it (CR LF, and CR CR LF of files
+          // converted twice); a CR alone (old Mac files) ends a line itself
+          std::size_t last = i;
+          while (last + 1 < bytes.size() && bytes[last + 1] == '\r')
+            ++last;
+          if (last + 1 < bytes.size() && bytes[last + 1] == '\n')
+            i = last; // the LF comes next
+          else
+            text += '\n';
+        }
     return text;
   }
 
@@ -185,8 +195,7 @@ namespace poundfe
             if (c != '{')
               throw InputError(file, line, "",
                                "a JSON parameter file is an object { \"Section\": { ... } }, "
-                               "not '" + text.substr(i, std::min<std::size_t>(16, text.size() - i)) +
-                                 "'");
+                               "not '" + text.substr(i, std::min(text.find_first_of("\n\r", i), i + 16) - i) + "'");
             if (next != std::string::npos && text[next] == '}')
               throw InputError(file, line, "",
                                "the file sets no parameter (an empty object); refused rather "

@@ -89,6 +89,16 @@ namespace poundfe
   }
 
   std::string
+  count_text(const double n)
+  {
+    if (!std::isfinite(n))
+      return "unboundedly many";
+    if (std::abs(n) < 1e15)
+      return std::to_string(static_cast<long long>(std::llround(n)));
+    return number_text(n);
+  }
+
+  std::string
   number_text(const double x)
   {
     char buffer[32];

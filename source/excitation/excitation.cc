@@ -198,7 +198,7 @@ namespace poundfe
                  forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
                    std::string rest;
                    if (!read_number(read_number(fields, f.amplitude), f.omega) ||
-                       ((fields >> std::ws).peek() != EOF && !read_number(fields, f.phase)) ||
+                       (!(fields >> std::ws).eof() && !read_number(fields, f.phase)) ||
                        (fields >> rest))
                      throw InputError(input.file, input.line_of(harmonic_path), harmonic_path,
                                       "'" + entry + "': expected '... amplitude omega [phase]' "

@@ -1,12 +1,11 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/excitation/records.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
-#include <algorithm>
-#include <filesystem>
 #include <optional>
 #include <sstream>
 
@@ -14,25 +13,14 @@ namespace poundfe
 {
   namespace
   {
+    /// The lines of a record file (LF, CR LF or CR line ends).
     std::vector<std::string>
     read_lines(const std::string &file)
     {
-      std::error_code error;
-      if (std::filesystem::is_directory(file, error))
-        throw InputError(file, 0, "", "is a directory, not a record file");
-      std::ifstream in(file, std::ios::binary);
-      if (!in)
-        throw InputError(file, 0, "", "cannot open the record file");
+      std::istringstream       in(read_input_text(file, "record file"));
       std::vector<std::string> lines;
-      std::string              line;
-      while (std::getline(in, line))
-        {
-          while (!line.empty() && (line.back() == '\r' || line.back() == '\n'))
-            line.pop_back();
-          lines.push_back(line);
-        }
-      if (in.bad())
-        throw InputError(file, 0, "", "cannot read the record file");
+      for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
       return lines;
     }
 
@@ -48,6 +36,8 @@ namespace poundfe
         {
           if (token.back() == ',')
             token.pop_back();
+          if (token.empty())
+            continue; // a lone separator
           const std::optional<double> value = parse_number(token, Exponent::e_or_fortran_d);
           if (!value)
             return false;

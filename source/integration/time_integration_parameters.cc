@@ -113,7 +113,7 @@ namespace poundfe
   {
     const double n = end / newmark.time_step;
     if (!(n <= max_steps))
-      input.fail(end_path, "needs " + (std::isfinite(n) ? number_text(std::round(n)) : "unboundedly many") +
+      input.fail(end_path, "needs " + count_text(n) +
                              " steps of " +
                              number_text(newmark.time_step) + " s to reach " + number_text(end) +
                              " s, more than Time integration/Maximum number of steps = " +

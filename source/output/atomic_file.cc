@@ -68,8 +68,9 @@ namespace poundfe
     descriptor        = -1;
     if (!closed || std::rename(temporary_path.c_str(), final_path.c_str()) != 0)
       {
+        const std::string reason = std::strerror(errno); // e.g. "No space left on device"
         std::remove(temporary_path.c_str());
-        throw std::runtime_error("cannot write " + final_path);
+        throw std::runtime_error("cannot write " + final_path + ": " + reason);
       }
   }
 

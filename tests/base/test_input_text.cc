@@ -140,7 +140,7 @@ BOOST_AUTO_TEST_CASE(json_text_is_an_object_of_bounded_depth)
 BOOST_AUTO_TEST_CASE(line_ends_cr_lf_and_cr_alone)
 {
   const std::string file = "test_input_text_cr.prm";
-  for (const std::string end : {"\n", "\r\n", "\r"})
+  for (const std::string end : {"\n", "\r\n", "\r", "\r\r\n"})
     {
       {
         std::ofstream out(file, std::ios::binary);

@@ -9,12 +9,15 @@ unbalanced subsection/end, very long lines, deep JSON nesting. Each mutant
 goes through `poundfe modal` (parameter files) or `poundfe ground-motion`
 (records) with a timeout. Every run must end by itself with exit status 0,
 1 or 2 (no signal, no hang), and a failing run must say why in one line
-starting with 'poundfe: '.
+starting with 'poundfe: '. Two mutants run at a time. POUNDFE_KEEP_MUTANTS=DIR
+copies the failing mutants to DIR.
 
 usage: mutation.py POUNDFE SOURCE_DIR [N_PARAMETER_MUTANTS N_RECORD_MUTANTS]
 """
+import concurrent.futures
 import os
 import random
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -91,30 +94,32 @@ def mutate_record(text):
     return mutate_text(text, False) if rng.random() < 0.5 else text
 
 
-def run(command, file, work):
-    out = os.path.join(work, "out")
+def run(job):
+    command, file, label = job
+    out = file + ".out"
     try:
         r = subprocess.run([poundfe, command, file, "--output", out], capture_output=True,
                            timeout=timeout)
     except subprocess.TimeoutExpired:
-        return "hang (no exit within %d s)" % timeout
+        return label, "hang (no exit within %d s)" % timeout
     message = r.stderr.decode("utf-8", "replace").strip().split("\n")
     if r.returncode not in (0, 1, 2):
-        return "exit status %d: %s" % (r.returncode, message[-1][:300])
+        return label, "exit status %d: %s" % (r.returncode, message[-1][:300])
     if r.returncode != 0 and (len(message) != 1 or not message[0].startswith("poundfe: ")):
-        return "exit %d without a one-line message: %r" % (r.returncode, message[:3])
-    return None
+        return label, "exit %d without a one-line message: %r" % (r.returncode, message[:3])
+    return label, None
 
 
 def main():
-    failures, counts = [], {0: 0, 1: 0, 2: 0}
     seeds = [(os.path.join(source, "input", "three-storey-shear.prm"), False),
              (os.path.join(source, "tests", "cli", "three-storey-shear.json"), True),
              (os.path.join(source, "tests", "cli", "bad", "bad-barrier.prm"), False),
              (os.path.join(source, "tests", "cli", "bad", "bad-force.prm"), False)]
-    records = sorted(f for f in os.listdir(os.path.join(source, "tests", "fuzz", "seeds-at2"))
-                     if f.endswith(".at2"))
+    at2 = os.path.join(source, "tests", "fuzz", "seeds-at2")
+    records = sorted(f for f in os.listdir(at2) if f.endswith(".at2"))
+    keep = os.environ.get("POUNDFE_KEEP_MUTANTS")  # a directory: failing mutants are copied there
     with tempfile.TemporaryDirectory() as work:
+        jobs = []  # every mutant is written first (the random stream stays fixed), then run
         for n in range(n_parameter_mutants):
             seed, json = seeds[n % len(seeds)]
             text = open(seed, encoding="latin-1").read()
@@ -123,26 +128,27 @@ def main():
             file = os.path.join(work, "mutant%d%s" % (n, ".json" if json else ".prm"))
             with open(file, "w", encoding="latin-1") as f:
                 f.write(text)
-            problem = run("modal", file, work)
-            if problem:
-                failures.append((file, problem))
-                os.rename(file, file + ".kept")
-        record_file = os.path.join(work, "record.at2")
-        prm = os.path.join(work, "record.prm")
-        with open(prm, "w") as f:
-            f.write("subsection Ground motion\n  set Type = record\n  subsection Record\n"
-                    "    set File = record.at2\n    set Target PGA = 0.3\n  end\nend\n"
-                    "subsection Output\n  set Plots = false\nend\n")
+            jobs.append(("modal", file, file))
         for n in range(n_record_mutants):
             name = records[n % len(records)]
-            text = open(os.path.join(source, "tests", "fuzz", "seeds-at2", name)).read()
-            with open(record_file, "w", encoding="latin-1") as f:
+            text = open(os.path.join(at2, name), encoding="latin-1").read()
+            record = os.path.join(work, "record%d.at2" % n)
+            with open(record, "w", encoding="latin-1") as f:
                 f.write(mutate_record(text))
-            problem = run("ground-motion", prm, work)
-            if problem:
-                failures.append(("record from " + name, problem))
-    for file, problem in failures:
-        print("FAIL %s: %s" % (file, problem))
+            prm = os.path.join(work, "record%d.prm" % n)
+            with open(prm, "w") as f:
+                f.write("subsection Ground motion\n  set Type = record\n  subsection Record\n"
+                        "    set File = record%d.at2\n    set Target PGA = 0.3\n  end\nend\n"
+                        "subsection Output\n  set Plots = false\nend\n" % n)
+            jobs.append(("ground-motion", prm, record))
+        with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+            results = list(pool.map(run, jobs))
+        failures = [(label, problem) for label, problem in results if problem]
+        for label, problem in failures:
+            print("FAIL %s: %s" % (os.path.basename(label), problem))
+            if keep:
+                os.makedirs(keep, exist_ok=True)
+                shutil.copy(label, keep)
     print("%d parameter mutants, %d record mutants, %d failures"
           % (n_parameter_mutants, n_record_mutants, len(failures)))
     return 1 if failures else 0

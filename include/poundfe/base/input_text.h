@@ -1,6 +1,6 @@
 // The text of a parameter file checked before deal.II's ParameterHandler
 // reads it, so that no file can crash the reader or be silently misread:
-//  - line ends: CR LF and a lone CR (old Mac files) both end a line;
+//  - line ends: LF, CR LF (and CR CR LF), and a lone CR (old Mac files);
 //  - comments ('#' to the end of the line) are removed here, so a backslash
 //    in a comment does not join the next line to it (ParameterHandler joins
 //    a line ending in '\' with the next before it strips comments);
@@ -21,9 +21,9 @@
 
 namespace poundfe
 {
-  /// The file's bytes with every line end ("\r\n" or "\r") made "\n".
-  /// Throws InputError when it cannot be read.
-  std::string read_input_text(const std::string &file);
+  /// The file's bytes with every line end ("\r\n", "\r\r\n" or "\r") made "\n".
+  /// Throws InputError, calling the file `what`, when it cannot be read.
+  std::string read_input_text(const std::string &file, const std::string &what = "parameter file");
 
   /// A .prm file prepared for ParameterHandler.
   struct PrmText

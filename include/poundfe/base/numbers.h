@@ -41,6 +41,10 @@ namespace poundfe
 
   /// Shortest round-trip text of x: "0.015", "-1e-300", "1e+308", "inf", "nan".
   std::string number_text(double x);
+
+  /// A count that may be huge: "100000000" below 10^15, "1e+311" above,
+  /// "unboundedly many" when infinite.
+  std::string count_text(double n);
 } // namespace poundfe
 
 #endif
