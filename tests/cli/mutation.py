@@ -23,8 +23,8 @@ import sys
 import tempfile
 
 poundfe, source = sys.argv[1], sys.argv[2]
-n_parameter_mutants = int(sys.argv[3]) if len(sys.argv) > 3 else 200
-n_record_mutants = int(sys.argv[4]) if len(sys.argv) > 4 else 120
+n_parameter_mutants = int(sys.argv[3]) if len(sys.argv) > 3 else 150
+n_record_mutants = int(sys.argv[4]) if len(sys.argv) > 4 else 90
 rng = random.Random(14)  # fixed: the same mutants every run
 timeout = 30  # s; the slowest mutant takes well under 2 s
 
