@@ -77,6 +77,12 @@ shear > long-noise.prm
 printf 'subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Duration = 1e308\n  end\nend\n' >> long-noise.prm
 expect 1 "long-noise.prm:15: parameter 'Ground motion/Stochastic/Duration': needs unboundedly many samples of 0.001 s" run long-noise.prm --output out
 
+shear > frames.prm
+printf 'subsection Time integration\n  set End time = 1\nend\nsubsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Duration = 1\n  end\nend\nsubsection Output\n  set VTU interval = 0.001\n  set Maximum VTU frames = 10\nend\n' >> frames.prm
+expect 0 "Output/VTU interval = 0.001 s would write 1001 VTU frames, more than Output/Maximum VTU frames = 10: writing one every 0.112 s instead" run frames.prm --output out
+frames=$(ls out/solution/*.vtu 2> /dev/null | wc -l)
+[ "$frames" -ge 2 ] && [ "$frames" -le 10 ] || fail "frames.prm: $frames VTU frames, expected 2 to 10"
+
 # 3. AT2 headers: Fortran D exponents, malformed numbers, absurd NPTS and DT
 record() { # $1: header line; the record prm reads record.at2
   printf 'SYNTHETIC\nUNITS OF G\n%s\n 0.1 -0.2 0.3\n 0.1D-01 -0.2 0.3\n' "$1" > record.at2
