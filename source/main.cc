@@ -6,6 +6,7 @@
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/stationary_pdf.h>
+#include <poundfe/analysis/templates.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
@@ -50,6 +51,9 @@ namespace
     "  bifurcation FILE    Poincare samples, their period and the largest Lyapunov\n"
     "                      exponent against the Bifurcation section's parameter\n"
     "  print-parameters    every parameter with its documentation and default\n"
+    "  template KIND       a commented starting file on standard output, KIND one of\n"
+    "                      frame, shear, mesh, pounding, stochastic\n"
+    "                      (poundfe template frame > my-frame.prm)\n"
     "--output DIR overrides the file's 'Output/Directory'. Any other option is an error.\n"
     "Exit status: 0 done, 1 bad input or command line (one message, nothing written),\n"
     "2 numerical failure (results so far kept), 128 + signal when interrupted.\n"
@@ -117,6 +121,24 @@ namespace
     return line;
   }
 
+  /// `poundfe template KIND`: the starting file on standard output.
+  int
+  template_command(const std::vector<std::string> &args, std::ostream &err)
+  {
+    std::string kinds;
+    for (const std::string &kind : poundfe::template_kinds())
+      kinds += (kinds.empty() ? "" : ", ") + kind;
+    const std::string *text = args.size() == 2 ? poundfe::input_template(args[1]) : nullptr;
+    if (text == nullptr)
+      {
+        err << "poundfe: error: 'template' needs one kind of model, one of: " << kinds
+            << (args.size() == 2 ? " (not '" + args[1] + "')" : std::string()) << "\n";
+        return 1;
+      }
+    std::cout << *text;
+    return 0;
+  }
+
   /// The commands that split their work over MPI ranks.
   bool
   runs_over_mpi(const std::string &command)
@@ -178,6 +200,8 @@ main(int argc, char **argv)
           poundfe::print_parameters(std::cout);
           return 0;
         }
+      if (command == "template")
+        return template_command(args, err);
       if (command != "run" && command != "modal" && command != "ground-motion" &&
           command != "sweep" && command != "bifurcation" && !runs_over_mpi(command))
         {

@@ -48,6 +48,11 @@ namespace poundfe
     bool writes(const std::string &file) const;
     /// x against x' of each equation of a one- or two-DOF model, stick marked.
     void draw_phase_portraits(std::vector<Plot> &plots) const;
+    /// energy.png: the terms, and a panel with contact/friction energy and
+    /// the balance error.
+    Plot energy_plot() const;
+    /// hysteresis_<label>.png: one loop per building.
+    void draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const;
 
     const Analysis     &analysis;
     const Excitation   &excitation;
