@@ -200,6 +200,8 @@ namespace poundfe
               continue; // a header row of names
             throw InputError(file, i + 1, "", "not a list of numbers: '" + lines[i] + "'");
           }
+        if (numbers.empty())
+          continue; // other blanks only (form feed, vertical tab): found by tests/fuzz
         if (table.columns == 0)
           table.columns = numbers.size();
         if (numbers.size() != table.columns || table.columns > 2)

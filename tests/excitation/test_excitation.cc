@@ -118,6 +118,10 @@ BOOST_AUTO_TEST_CASE(text_records_one_and_two_columns)
   BOOST_TEST(g.time_step() == 0.01, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(g.value(0.015) == -0.05, boost::test_tools::tolerance(1e-12)); // linear
   BOOST_TEST(g.value(1.0) == 0.0);
+  // a line of other blanks (a form feed) is blank, not a row without columns
+  // (it indexed an empty row: found by tests/fuzz/fuzz_at2.cc)
+  const std::string form_feed = write_temporary("form-feed.txt", "# t a\n\f\n0 0.1\n\v\n0.01 0.2\n");
+  BOOST_TEST(read_record(form_feed, format).samples().size() == 2u);
   const std::string one = write_temporary("one.txt", "0.1\n0.2\n");
   BOOST_CHECK_THROW(read_record(one, format), InputError); // needs a time step
   format.time_step = 0.02;

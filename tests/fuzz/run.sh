@@ -46,7 +46,8 @@ libraries=$(sed -e 's/^[^ ]* //' -e 's#CMakeFiles/poundfe.dir/source/main.cc.o##
                 -e "s#libpoundfe_core.a#$build/libpoundfe_core.a#" \
                 -e 's#CMakeFiles/poundfe.dir/__/revision.cc.o##; s#CMakeFiles/poundfe.dir/revision.cc.o##' \
                 "$build/CMakeFiles/poundfe.dir/link.txt")
-for target in parameters at2; do
+targets=${FUZZ_TARGETS:-parameters at2} # e.g. FUZZ_TARGETS=at2: that one alone
+for target in $targets; do
   # shellcheck disable=SC2086
   nice -n 10 "$cxx" -fsanitize=fuzzer,address "$work/objects/tests_fuzz_fuzz_$target.cc.o" \
     "${objects[@]}" $libraries -o "$work/fuzz_$target" 2>&1 |
@@ -56,7 +57,7 @@ done
 cp "$src"/input/*.prm "$src"/tests/cli/bad/*.prm "$src"/tests/cli/*.json "$work/seeds-parameters/"
 export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
 status=0
-for target in parameters at2; do
+for target in $targets; do
   seeds=$work/seeds-parameters
   [ "$target" = at2 ] && seeds=$src/tests/fuzz/seeds-at2
   echo "fuzz_$target: $runs executions or $max_time s"
