@@ -23,6 +23,12 @@
 #include <string>
 #include <vector>
 
+namespace poundfe
+{
+  /// `git describe` of the sources, written by scripts/revision.cmake at build time.
+  extern const char *const git_revision;
+} // namespace poundfe
+
 namespace
 {
   /// Where the ranks other than 0 send their messages.
@@ -30,6 +36,7 @@ namespace
 
   const char *usage =
     "usage: poundfe <command> [FILE] [--output DIR]\n"
+    "       poundfe --help | --version\n"
     "commands:\n"
     "  run FILE            time-history analysis (summary.json, CSV, VTU, PNG)\n"
     "  modal FILE          frequencies, periods, participating masses, modes.pvd\n"
@@ -54,7 +61,9 @@ namespace
     "  template KIND       a commented starting file on standard output, KIND one of\n"
     "                      frame, shear, mesh, pounding, stochastic\n"
     "                      (poundfe template frame > my-frame.prm)\n"
-    "--output DIR overrides the file's 'Output/Directory'.\n"
+    "--output DIR overrides the file's 'Output/Directory'. Any other option is an error.\n"
+    "Exit status: 0 done, 1 bad input or command line (one message, nothing written),\n"
+    "2 numerical failure (results so far kept), 128 + signal when interrupted.\n"
     "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility, stationary-pdf and\n"
     "separation "
     "after the realizations under way, with the results so far (status \"interrupted\",\n"
@@ -68,6 +77,8 @@ namespace
     std::string              output;
     unsigned int             n_realizations = 0;
     std::string              error; // not empty: the message for bad options
+    bool                     help    = false;
+    bool                     version = false;
   };
 
   CommandLine
@@ -78,14 +89,23 @@ namespace
     for (std::size_t i = 0; i < args.size(); ++i)
       if (args[i] == "--output" || args[i] == "--realizations")
         {
-          if (i + 1 >= args.size())
+          if (i + 1 >= args.size() || args[i + 1].empty())
             {
-              line.error = "poundfe: error: " + args[i] + " needs a value\n" + usage;
+              line.error = "poundfe: error: " + args[i] + " needs a value (see poundfe --help)\n";
               return line;
             }
           (args[i] == "--output" ? line.output : realizations) = args[i + 1];
           args.erase(args.begin() + i, args.begin() + i + 2);
           --i;
+        }
+      else if (args[i] == "--help" || args[i] == "-h")
+        line.help = true;
+      else if (args[i] == "--version")
+        line.version = true;
+      else if (args[i].size() > 1 && args[i][0] == '-')
+        {
+          line.error = "poundfe: error: unknown option '" + args[i] + "' (see poundfe --help)\n";
+          return line;
         }
     line.args = std::move(args);
     if (!realizations.empty())
@@ -159,10 +179,16 @@ main(int argc, char **argv)
       return 1;
     }
   const std::vector<std::string> &args = line.args;
-  if (args.empty() || args[0] == "--help" || args[0] == "-h")
+  if (line.version)
     {
-      std::cout << usage;
-      return args.empty() ? 1 : 0;
+      std::cout << "poundfe (git " << poundfe::git_revision << "), deal.II "
+                << DEAL_II_PACKAGE_VERSION << "\n";
+      return 0;
+    }
+  if (args.empty() || line.help)
+    {
+      (line.help ? std::cout : err) << usage;
+      return line.help ? 0 : 1;
     }
   // The commands whose loops poll for SIGINT/SIGTERM and stop cleanly. (A
   // handler that no loop polls would only delay Ctrl-C, so modal and
@@ -173,6 +199,12 @@ main(int argc, char **argv)
     {
       if (command == "print-parameters")
         {
+          if (args.size() != 1)
+            {
+              err << "poundfe: error: 'print-parameters' takes no argument, got '" << args[1]
+                  << "'\n";
+              return 1;
+            }
           poundfe::print_parameters(std::cout);
           return 0;
         }

@@ -14,6 +14,7 @@
 #include <poundfe/analysis/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
@@ -238,7 +239,8 @@ namespace poundfe
           std::istringstream fields(entry); // building floor node dof amplitude omega phase
           std::string        skip;
           double             amplitude = 0, omega = 0;
-          if (fields >> skip >> skip >> skip >> skip >> amplitude >> omega && omega > 0)
+          if (read_number(read_number(fields >> skip >> skip >> skip >> skip, amplitude), omega) &&
+              omega > 0)
             return 2 * M_PI / omega;
           if (entry.find_first_not_of(" \t") != std::string::npos)
             break;

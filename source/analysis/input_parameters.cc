@@ -1,12 +1,16 @@
 #include <poundfe/analysis/input_parameters.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
+#include <poundfe/base/numbers.h>
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <regex>
 #include <sstream>
 
 namespace poundfe
@@ -33,53 +37,52 @@ namespace poundfe
       return out;
     }
 
-    /// deal.II's messages carry "Line <n> of file <f>": turn them into ours.
+    /// deal.II's names of its patterns, in the words a user expects.
+    std::string
+    plain_patterns(std::string text)
+    {
+      static const std::pair<const char *, const char *> names[] = {
+        {"[List of <[Double -MAX_DOUBLE...MAX_DOUBLE (inclusive)]> of length "
+         "0...4294967295 (inclusive)]",
+         "a comma-separated list of numbers"},
+        {"[Double -MAX_DOUBLE...MAX_DOUBLE (inclusive)]", "a number"},
+        {"[Bool]", "true or false"}};
+      for (const auto &[deal_ii, plain] : names)
+        for (std::size_t at; (at = text.find(deal_ii)) != std::string::npos;)
+          text.replace(at, std::string(deal_ii).size(), plain);
+      return text;
+    }
+
+    /// deal.II's messages carry "Line <n> of file <f>:" (sometimes without
+    /// the closing '>'): turn them into ours, blaming file f, which is an
+    /// included file when the error is in one.
     [[noreturn]] void
     rethrow_parse_error(const std::string &file, const dealii::ExceptionBase &e)
     {
       std::ostringstream info;
       e.print_info(info);
-      std::string text = collapse_whitespace(info.str());
-      int         line = 0;
-      std::smatch match;
-      static const std::regex where("Line <([0-9]+)> of file <[^>]*>:? ?");
-      if (std::regex_search(text, match, where))
+      std::string       text = collapse_whitespace(info.str());
+      std::string       blamed = file;
+      int               line   = 0;
+      const std::size_t where  = text.find("Line <");
+      const std::size_t of     = text.find("> of file <", where);
+      if (where != std::string::npos && of != std::string::npos)
         {
-          line = std::stoi(match[1]);
-          text = match.prefix().str() + match.suffix().str();
+          const std::string digits = text.substr(where + 6, of - where - 6);
+          line = std::atoi(digits.substr(0, 9).c_str());
+          const std::size_t name  = of + 11;
+          const std::size_t close = std::min(text.find(">", name), text.find(": ", name));
+          const std::size_t rest  = close == std::string::npos ? text.size() : close;
+          blamed                  = text.substr(name, rest - name);
+          std::size_t after       = rest;
+          while (after < text.size() && (text[after] == '>' || text[after] == ':' ||
+                                         text[after] == ' '))
+            ++after;
+          text = text.substr(0, where) + text.substr(after);
         }
       if (text.empty())
         text = collapse_whitespace(e.what());
-      throw InputError(file, line, "", text);
-    }
-
-    void
-    index_lines(InputFile &p)
-    {
-      std::ifstream            in(p.file);
-      std::string              line;
-      std::vector<std::string> sections;
-      static const std::regex  subsection("^\\s*subsection\\s+(.*?)\\s*$");
-      static const std::regex  end("^\\s*end\\s*$");
-      static const std::regex  set("^\\s*set\\s+(.*?)\\s*=.*$");
-      for (int number = 1; std::getline(in, line); ++number)
-        {
-          const auto hash = line.find('#');
-          if (hash != std::string::npos)
-            line.erase(hash);
-          std::smatch m;
-          if (std::regex_match(line, m, subsection))
-            sections.push_back(m[1]);
-          else if (std::regex_match(line, end) && !sections.empty())
-            sections.pop_back();
-          else if (std::regex_match(line, m, set))
-            {
-              std::string path;
-              for (const auto &s : sections)
-                path += s + "/";
-              p.lines[path + m[1].str()] = number;
-            }
-        }
+      throw InputError(blamed.empty() ? file : blamed, line, "", plain_patterns(text));
     }
 
     /// An override's path taken apart: "A/B/Entry:k" is sections {A, B},
@@ -95,13 +98,13 @@ namespace poundfe
     split_override_path(const InputFile &p, const std::string &path)
     {
       OverridePath split;
-      std::string  rest = path;
-      static const std::regex with_field("^(.*):([0-9]+)$");
-      std::smatch             m;
-      if (std::regex_match(path, m, with_field))
+      std::string  rest  = path;
+      const auto   colon = path.rfind(':');
+      if (colon != std::string::npos && colon + 1 < path.size() &&
+          path.find_first_not_of("0123456789", colon + 1) == std::string::npos)
         {
-          rest        = m[1];
-          split.field = std::stoul(m[2].str().substr(0, 6));
+          rest        = path.substr(0, colon);
+          split.field = std::atoi(path.substr(colon + 1, 6).c_str());
           if (split.field == 0)
             p.fail(path, "override: fields count from 1");
         }
@@ -174,13 +177,18 @@ namespace poundfe
       p.lines.erase(o.path.substr(0, o.path.rfind(':'))); // not the file's value any more
     }
 
+    /// Parse `text` (a prepared .prm text, or JSON) into `prm`, then the overrides.
     void
-    parse(ParameterHandler &prm, InputFile &p, const std::vector<ParameterOverride> &overrides,
-          const bool skip_undefined)
+    parse(ParameterHandler &prm, InputFile &p, const std::string &text, const bool json,
+          const std::vector<ParameterOverride> &overrides, const bool skip_undefined)
     {
       try
         {
-          prm.parse_input(p.file, "", skip_undefined);
+          std::istringstream in(text);
+          if (json)
+            prm.parse_input_from_json(in, skip_undefined);
+          else
+            prm.parse_input(in, p.file, "", skip_undefined);
         }
       catch (const dealii::ExceptionBase &e)
         {
@@ -234,6 +242,7 @@ namespace poundfe
     model.finalize(*this);
     ground_motion.check(*this, time_integration.newmark.time_step);
     time_integration.check(*this);
+    check_stochastic_samples();
     contact.check(*this);
     friction.check(*this);
     monte_carlo.check(*this);
@@ -245,6 +254,21 @@ namespace poundfe
     site_hazard.check(*this);
     drift_limits.finalize(*this);
     separation.check(*this, model.buildings.size());
+  }
+
+  void
+  InputParameters::check_stochastic_samples() const
+  {
+    if (!ground_motion.is_stochastic() && nodal_forces.white_noise.empty())
+      return;
+    const double interval  = ground_motion.held_interval(time_integration.newmark.time_step);
+    const double n_samples = ground_motion.duration / interval;
+    if (!(n_samples <= time_integration.max_steps))
+      fail("Ground motion/Stochastic/Duration",
+           "needs " + count_text(n_samples) + " samples of " + number_text(interval) +
+             " s to last " + number_text(ground_motion.duration) +
+             " s, more than Time integration/Maximum number of steps = " +
+             std::to_string(time_integration.max_steps) + " (raise it if the run is meant)");
   }
 
   InputParameters
@@ -263,20 +287,27 @@ namespace poundfe
     p.file      = file;
     p.directory = std::filesystem::path(file).parent_path().string();
     p.overrides = overrides;
+    std::string text = read_input_text(file);
     if (extension == ".prm")
-      index_lines(p);
+      {
+        PrmText prm = prepare_prm_text(file, text);
+        p.lines     = std::move(prm.lines);
+        text        = std::move(prm.text);
+      }
+    else
+      check_json_text(file, text);
 
     // First pass: only the number of buildings, which shapes the declarations.
     unsigned int n_buildings = 1;
     {
       ParameterHandler prm;
       ModelParameters::declare_number_of_buildings(prm, n_buildings);
-      parse(prm, p, overrides, true);
+      parse(prm, p, text, extension == ".json", overrides, true);
     }
     p.model.buildings.resize(n_buildings);
     ParameterHandler prm;
     p.declare(prm);
-    parse(prm, p, overrides, false);
+    parse(prm, p, text, extension == ".json", overrides, false);
     p.finalize();
     return p;
   }

@@ -14,6 +14,7 @@
 // of every pair (Bathe, Finite Element Procedures, §11.6).
 #include <poundfe/analysis/modal.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 
 #include <deal.II/lac/arpack_solver.h>
 #include <deal.II/lac/solver_control.h>
@@ -150,7 +151,7 @@ namespace poundfe
         if (!(lambda > 0) || !(residual < 1e-3))
           throw NumericalError("modal analysis: the sparse eigensolver did not converge (mode " +
                                std::to_string(j + 1) + ", residual " +
-                               std::to_string(residual) +
+                               number_text(residual) +
                                "; set Modal analysis/Eigensolver = dense)");
         append_mode(modes, phi, std::sqrt(lambda), mass, influence);
       }

@@ -3,6 +3,7 @@
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/integration/newmark.h>
@@ -79,6 +80,26 @@ namespace poundfe
       if (!initialized || dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
         return interruption_requested();
       return dealii::Utilities::MPI::logical_or(interruption_requested(), MPI_COMM_WORLD);
+    }
+
+    /// Steps between VTU frames: Output/VTU interval, widened (with a note
+    /// on the console) so that a run of `n_steps` writes at most
+    /// Output/Maximum VTU frames frames.
+    unsigned int
+    vtu_steps_per_frame(const InputParameters &input, const unsigned long n_steps)
+    {
+      const double        dt       = input.time_integration.newmark.time_step;
+      const unsigned long max      = input.output.max_vtu_frames;
+      const unsigned int  every    = steps_per_interval(input.output.vtu_interval, dt);
+      const unsigned long n_frames = n_steps / every + 1;
+      if (n_frames <= max)
+        return every;
+      const unsigned long wider = (n_steps + max - 2) / (max - 1); // n_steps / wider + 1 <= max
+      std::cout << "poundfe: note: Output/VTU interval = " << number_text(input.output.vtu_interval)
+                << " s would write " << n_frames << " VTU frames, more than Output/Maximum VTU "
+                << "frames = " << max << ": writing one every " << number_text(wider * dt)
+                << " s instead\n";
+      return static_cast<unsigned int>(std::min<unsigned long>(wider, 4000000000ul));
     }
 
     double
@@ -199,7 +220,12 @@ namespace poundfe
       throw InputError(input.file, input.line_of("Time integration/End time"),
                        "Time integration/End time",
                        "needs a positive end time when there is no ground motion");
-    return static_cast<unsigned long>(std::llround(end / input.time_integration.newmark.time_step));
+    // what set the end: End time, else the record or the stochastic motion's duration
+    const std::string end_path = input.time_integration.end_time > 0 ? "Time integration/End time" :
+                                 input.ground_motion.type == GroundMotionType::record ?
+                                                                     "Ground motion/Record/File" :
+                                                                     "Ground motion/Stochastic/Duration";
+    return input.time_integration.n_steps_to(end, input, end_path);
   }
 
   RunStatus
@@ -310,6 +336,7 @@ namespace poundfe
                    const RunOptions &options)
   {
     TimeHistory  history(analysis, options.linear_solver);
+    const unsigned long n_steps = history.n_steps(excitation); // refused before any output
     PeakResponse  peaks(analysis.model, history.nonlinear_elements());
     ResponseRange range(analysis.model, peaks, analysis.input.output.drift_warning,
                         analysis.input.output.rotation_warning);
@@ -333,7 +360,7 @@ namespace poundfe
         if (options.vtu && input.output.vtu_interval > 0)
           {
             outputs.push_back(std::make_unique<VtuRecorder>(
-              analysis.model, directory, steps_per_interval(input.output.vtu_interval, input.time_integration.newmark.time_step)));
+              analysis.model, directory, vtu_steps_per_frame(input, n_steps)));
             files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
           }
         outputs.push_back(std::make_unique<RunSummary>(
@@ -341,7 +368,7 @@ namespace poundfe
           history.linear_solver_name(), history.tangent_update(), files));
       }
     if (options.progress)
-      outputs.push_back(std::make_unique<ProgressReport>(history.n_steps(excitation)));
+      outputs.push_back(std::make_unique<ProgressReport>(n_steps));
     for (const auto &output : outputs)
       observers.push_back(output.get());
 

@@ -1,4 +1,5 @@
 #include <poundfe/analysis/stationary_pdf_parameters.h>
+#include <poundfe/base/numbers.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -76,7 +77,7 @@ namespace poundfe
     const double steps = sample_interval / time_step;
     if (sample_interval > 0 && (steps < 0.5 || std::abs(steps - std::round(steps)) > 1e-6 * steps))
       input.fail(s + "Sample interval", "must be a whole number of time steps (" +
-                                          std::to_string(time_step) + " s)");
+                                          number_text(time_step) + " s)");
   }
 
   unsigned long

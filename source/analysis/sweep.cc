@@ -7,6 +7,7 @@
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/base/choices.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
@@ -18,36 +19,25 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace poundfe
 {
   namespace
   {
-    /// A whole number or a finite double, the whole of `text` (blanks around allowed).
+    /// A finite number, the whole of `text` (blanks around allowed).
     bool
-    read_number(std::string text, double &x)
+    read_number(const std::string &text, double &x)
     {
-      const auto first = text.find_first_not_of(" \t");
-      const auto last  = text.find_last_not_of(" \t");
-      if (first == std::string::npos)
-        return false;
-      text = text.substr(first, last - first + 1);
-      std::size_t end = 0;
-      try
-        {
-          x = std::stod(text, &end);
-        }
-      catch (const std::exception &)
-        {
-          return false;
-        }
-      return end == text.size() && std::isfinite(x);
+      const std::optional<double> value = parse_number(text);
+      if (value)
+        x = *value;
+      return value.has_value();
     }
 
     /// The values of `text`; on a syntax error an empty list and `error` says why.
@@ -98,9 +88,7 @@ namespace poundfe
   std::string
   format_value(const double value)
   {
-    char       buffer[32];
-    const auto end = std::to_chars(buffer, buffer + sizeof(buffer), value).ptr;
-    return std::string(buffer, end);
+    return number_text(value);
   }
 
   void

@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/excitation/records.h>
@@ -79,6 +80,22 @@ namespace poundfe
     return MotionGenerator(s);
   }
 
+  namespace
+  {
+    /// A scaled record whose samples overflow, or underflow into denormals,
+    /// is refused, naming the parameter that scaled it.
+    void
+    check_scaled(const GroundMotion &motion, const InputFile &input, const std::string &path)
+    {
+      const std::size_t i = motion.first_unusable_sample();
+      if (i < motion.samples().size())
+        input.fail(path, "scales sample " + std::to_string(i + 1) + " of the ground motion to " +
+                           number_text(motion.samples()[i]) +
+                           " m/s^2: not a finite, normal number (check the record's values "
+                           "and units)");
+    }
+  } // namespace
+
   GroundMotion
   make_ground_motion(const GroundMotionParameters &g, const InputFile &input,
                      const double time_step)
@@ -106,12 +123,15 @@ namespace poundfe
                                "Ground motion/Record/Target PGA",
                                "cannot scale a record of zero PGA");
             motion.scale(g.record_target_pga * standard_gravity / motion.peak());
+            check_scaled(motion, input, "Ground motion/Record/Target PGA");
             return motion;
           }
       }
     else if (g.type != GroundMotionType::none)
       motion = make_motion_generator(g, time_step).ground_motion();
     motion.scale(g.scale_factor);
+    if (g.type == GroundMotionType::record) // generated motions may underflow harmlessly
+      check_scaled(motion, input, "Ground motion/Scale factor");
     return motion;
   }
 
@@ -176,10 +196,13 @@ namespace poundfe
     const std::string       harmonic_path = "Nodal forces/Harmonic";
     parse_forces(input, model, parameters.harmonic, harmonic_path, NodalForce::Kind::harmonic,
                  forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
-                   if (!(fields >> f.amplitude >> f.omega))
+                   std::string rest;
+                   if (!read_number(read_number(fields, f.amplitude), f.omega) ||
+                       (!(fields >> std::ws).eof() && !read_number(fields, f.phase)) ||
+                       (fields >> rest))
                      throw InputError(input.file, input.line_of(harmonic_path), harmonic_path,
-                                      "'" + entry + "': expected '... amplitude omega [phase]'");
-                   fields >> f.phase;
+                                      "'" + entry + "': expected '... amplitude omega [phase]' "
+                                      "(numbers, nothing after them)");
                  });
     const std::string tabulated_path = "Nodal forces/Tabulated";
     parse_forces(input, model, parameters.tabulated, tabulated_path, NodalForce::Kind::tabulated,
@@ -202,9 +225,12 @@ namespace poundfe
     const std::string noise_path = "Nodal forces/White noise";
     parse_forces(input, model, parameters.white_noise, noise_path, NodalForce::Kind::white_noise,
                  forces, [&](std::istringstream &fields, const std::string &entry, NodalForce &f) {
-                   if (!(fields >> f.intensity) || !(f.intensity > 0))
+                   std::string rest;
+                   if (!read_number(fields, f.intensity) || (fields >> rest) ||
+                       !(f.intensity > 0))
                      throw InputError(input.file, input.line_of(noise_path), noise_path,
-                                      "'" + entry + "': expected '... S0' with S0 > 0");
+                                      "'" + entry + "': expected '... S0' with S0 > 0 (a "
+                                      "number, nothing after it)");
                    f.sample_interval = ground_motion.held_interval(time_step);
                    // the white-noise forces last as long as the stochastic ground motion would
                    f.values.assign(n_samples(ground_motion.duration, f.sample_interval), 0.0);

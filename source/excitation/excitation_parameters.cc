@@ -1,3 +1,4 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/excitation/excitation_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -172,7 +173,7 @@ namespace poundfe
         const double dt = held_interval(time_step);
         if (method == StochasticMethod::spectral_representation && cutoff_frequency * dt > M_PI)
           input.fail(st + "Cutoff frequency",
-                 "exceeds pi / sample interval = " + std::to_string(M_PI / dt) + " rad/s");
+                 "exceeds pi / sample interval = " + number_text(M_PI / dt) + " rad/s");
         input.positive(st + "omega_g", omega_g);
         if (!(zeta_g > 0 && zeta_g < 1))
           input.fail(st + "zeta_g", "must lie in (0, 1)");
@@ -191,8 +192,11 @@ namespace poundfe
         input.positive(st + "Saragoni b", saragoni_b);
         input.positive(st + "Saragoni c", saragoni_c);
         input.positive(st + "Shinozuka alpha", shinozuka_alpha);
-        if (!(shinozuka_beta > shinozuka_alpha))
-          input.fail(st + "Shinozuka beta", "must exceed Shinozuka alpha");
+        if (!(shinozuka_beta > shinozuka_alpha)) // blame the one set last in the file
+          input.fail(st + (input.line_of(st + "Shinozuka alpha") > input.line_of(st + "Shinozuka beta") ?
+                             "Shinozuka alpha" : "Shinozuka beta"),
+                     "needs Shinozuka alpha < Shinozuka beta, got alpha = " +
+                       number_text(shinozuka_alpha) + ", beta = " + number_text(shinozuka_beta));
       }
   }
 

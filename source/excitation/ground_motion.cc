@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace poundfe
 {
@@ -46,5 +47,15 @@ namespace poundfe
   {
     for (double &a : values)
       a *= factor;
+  }
+
+  std::size_t
+  GroundMotion::first_unusable_sample() const
+  {
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values[i]) ||
+          (values[i] != 0 && std::abs(values[i]) < std::numeric_limits<double>::min()))
+        return i;
+    return values.size();
   }
 } // namespace poundfe

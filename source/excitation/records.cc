@@ -1,34 +1,31 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/excitation/records.h>
 
-#include <charconv>
+#include <algorithm>
+#include <cctype>
 #include <cmath>
-#include <fstream>
-#include <regex>
+#include <optional>
 #include <sstream>
 
 namespace poundfe
 {
   namespace
   {
+    /// The lines of a record file (LF, CR LF or CR line ends).
     std::vector<std::string>
     read_lines(const std::string &file)
     {
-      std::ifstream in(file, std::ios::binary);
-      if (!in)
-        throw InputError(file, 0, "", "cannot open the record file");
+      std::istringstream       in(read_input_text(file, "record file"));
       std::vector<std::string> lines;
-      std::string              line;
-      while (std::getline(in, line))
-        {
-          while (!line.empty() && (line.back() == '\r' || line.back() == '\n'))
-            line.pop_back();
-          lines.push_back(line);
-        }
+      for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
       return lines;
     }
 
-    /// Split a line into numbers; false if a token is not a number.
+    /// Split a line into numbers (Fortran D exponents allowed); false if a
+    /// field is not wholly a finite number.
     bool
     parse_numbers(const std::string &line, std::vector<double> &numbers)
     {
@@ -39,59 +36,119 @@ namespace poundfe
         {
           if (token.back() == ',')
             token.pop_back();
-          char  *end   = nullptr;
-          double value = std::strtod(token.c_str(), &end);
-          if (end != token.c_str() + token.size() || !std::isfinite(value))
+          if (token.empty())
+            continue; // a lone separator
+          const std::optional<double> value = parse_number(token, Exponent::e_or_fortran_d);
+          if (!value)
             return false;
-          numbers.push_back(value);
+          numbers.push_back(*value);
         }
       return true;
     }
 
+    /// `motion` if every sample is finite and normal after the conversion
+    /// to m/s^2 (`from` says from what); else an InputError.
+    GroundMotion
+    checked(const std::string &file, GroundMotion motion, const std::string &from)
+    {
+      const std::size_t i = motion.first_unusable_sample();
+      if (i < motion.samples().size())
+        throw InputError(file, 0, "", "value " + std::to_string(i + 1) + " becomes " +
+                                        number_text(motion.samples()[i]) + " m/s^2 " + from +
+                                        ": not a finite, normal number (check the units)");
+      return motion;
+    }
+
+    /// The field of `line` that starts at `from` (blanks skipped) and ends
+    /// at a blank or a comma.
+    std::string
+    field_at(const std::string &line, std::size_t from)
+    {
+      from = std::min(line.find_first_not_of(" \t", from), line.size());
+      const std::size_t end = std::min(line.find_first_of(" \t,", from), line.size());
+      return line.substr(from, end - from);
+    }
+
+    /// The AT2 header's NPTS and DT fields, as written.
+    struct At2Header
+    {
+      std::size_t line = 0; // 1-based; 0: none found
+      std::string npts, dt;
+    };
+
+    /// The first header line within the first 64: NGA "NPTS= 5590, DT= .005
+    /// SEC" (any case, blanks optional) or NGA-West2 "5590 0.005 NPTS, DT".
+    At2Header
+    find_at2_header(const std::vector<std::string> &lines)
+    {
+      for (std::size_t i = 0; i < lines.size() && i < 64; ++i)
+        {
+          std::string upper = lines[i];
+          for (char &c : upper)
+            c = std::toupper(static_cast<unsigned char>(c));
+          const std::size_t npts = upper.find("NPTS");
+          if (npts == std::string::npos)
+            continue;
+          const std::size_t equals = upper.find_first_not_of(" \t", npts + 4);
+          if (equals != std::string::npos && upper[equals] == '=')
+            {
+              const std::size_t dt = upper.find("DT", equals);
+              const std::size_t dt_equals =
+                dt == std::string::npos ? dt : upper.find_first_not_of(" \t", dt + 2);
+              return {i + 1, field_at(lines[i], equals + 1),
+                      dt_equals != std::string::npos && upper[dt_equals] == '=' ?
+                        field_at(lines[i], dt_equals + 1) : ""};
+            }
+          std::istringstream fields(lines[i].substr(0, npts)); // "n dt NPTS, DT"
+          std::string        n, dt, extra;
+          fields >> n >> dt;
+          if (fields >> extra)
+            n.clear(); // not the West2 form: refused below with this line
+          return {i + 1, n, dt};
+        }
+      return {};
+    }
+
+    /// Most points an AT2 record may have: 10^8 values (800 MB), far above
+    /// any recording (hours at 200 Hz are ~10^6), far below what would fail
+    /// to allocate on a workstation.
+    constexpr unsigned long max_record_points = 100000000;
+
     GroundMotion
     read_at2(const std::string &file, const std::vector<std::string> &lines)
     {
-      static const std::regex nga("NPTS\\s*=\\s*([0-9]+)\\s*,?\\s*DT\\s*=\\s*([-+0-9.eEdD]+)",
-                                  std::regex::icase);
-      static const std::regex west2("^\\s*([0-9]+)\\s+([-+0-9.eE]+)\\s+NPTS", std::regex::icase);
-      std::size_t header_end = lines.size();
-      long        npts       = -1;
-      double      dt         = 0;
-      for (std::size_t i = 0; i < lines.size() && i < 64; ++i)
-        {
-          std::smatch m;
-          if (std::regex_search(lines[i], m, nga) || std::regex_search(lines[i], m, west2))
-            {
-              npts       = std::stol(m[1]);
-              dt         = std::stod(m[2]);
-              header_end = i + 1;
-              break;
-            }
-        }
-      if (npts < 0)
+      const At2Header header = find_at2_header(lines);
+      if (header.line == 0)
         throw InputError(file, 0, "", "no 'NPTS=..., DT=...' header line in the first 64 "
                                       "lines: not a PEER AT2 file");
-      if (!(dt > 0) || npts < 2)
-        throw InputError(file, header_end, "", "NPTS must be at least 2 and DT positive");
+      const int                          line = header.line;
+      const std::optional<unsigned long> npts = parse_count(header.npts, max_record_points);
+      if (!npts || *npts < 2)
+        throw InputError(file, line, "", "header field NPTS: expected a whole number of points "
+                                         "from 2 to " + std::to_string(max_record_points) +
+                                           ", got '" + header.npts + "'");
+      const std::optional<double> dt = parse_number(header.dt, Exponent::e_or_fortran_d);
+      if (!dt || !(*dt > 0))
+        throw InputError(file, line, "", "header field DT: expected a positive time step in s "
+                                         "(e.g. 0.005 or .5D-02), got '" + header.dt + "'");
       std::vector<double> values, numbers;
-      values.reserve(npts);
       // Some files close with a trailer ("*** End Data ***"): stop at NPTS.
-      for (std::size_t i = header_end;
-           i < lines.size() && static_cast<long>(values.size()) < npts;
-           ++i)
+      for (std::size_t i = header.line; i < lines.size() && values.size() < *npts; ++i)
         {
           if (!parse_numbers(lines[i], numbers))
-            throw InputError(file, i + 1, "", "not a list of numbers: '" + lines[i] + "'");
+            throw InputError(file, i + 1, "", "not a list of numbers: '" + lines[i].substr(0, 80) +
+                                                (lines[i].size() > 80 ? "...'" : "'"));
           values.insert(values.end(), numbers.begin(), numbers.end());
         }
-      if (static_cast<long>(values.size()) < npts)
+      if (values.size() < *npts)
         throw InputError(file, lines.size(), "",
-                         "the header promises NPTS = " + std::to_string(npts) + " values, found " +
+                         "the header (line " + std::to_string(line) + ") promises NPTS = " +
+                           std::to_string(*npts) + " values, found " +
                            std::to_string(values.size()));
-      values.resize(npts);
+      values.resize(*npts);
       for (double &a : values)
         a *= standard_gravity;
-      return GroundMotion(dt, std::move(values), file);
+      return checked(file, GroundMotion(*dt, std::move(values), file), "in g (AT2)");
     }
 
     GroundMotion
@@ -115,7 +172,8 @@ namespace poundfe
       if (format.units == RecordUnits::g)
         for (double &a : values)
           a *= standard_gravity;
-      return GroundMotion(dt, std::move(values), file);
+      return checked(file, GroundMotion(dt, std::move(values), file),
+                     format.units == RecordUnits::g ? "in g" : "as given");
     }
   } // namespace
 
@@ -142,6 +200,8 @@ namespace poundfe
               continue; // a header row of names
             throw InputError(file, i + 1, "", "not a list of numbers: '" + lines[i] + "'");
           }
+        if (numbers.empty())
+          continue; // other blanks only (form feed, vertical tab): found by tests/fuzz
         if (table.columns == 0)
           table.columns = numbers.size();
         if (numbers.size() != table.columns || table.columns > 2)

@@ -1,7 +1,10 @@
 #include <poundfe/assembly/linear_solver.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/integration/time_integration_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
 
 namespace poundfe
 {
@@ -29,6 +32,12 @@ namespace poundfe
     prm.add_parameter("Time step", newmark.time_step, "Analysis time step, s.");
     prm.add_parameter("End time", end_time,
                       "s; 0: the length of the ground motion.");
+    prm.add_parameter("Maximum number of steps", max_steps,
+                      "A run whose End time / Time step (or ground-motion duration / Time "
+                      "step) exceeds this is refused before it starts (a guard against "
+                      "End time = 1e308 or a record's DT typed in ms); raise it for a "
+                      "genuinely long run.",
+                      Patterns::Integer(1));
     prm.add_parameter("Newmark gamma", newmark.gamma,
                       "gamma >= 1/2 (1/2: no numerical damping).");
     prm.add_parameter("Newmark beta", newmark.beta,
@@ -99,11 +108,27 @@ namespace poundfe
                       "cuts halvings. 0: off.", Patterns::Integer(0, 10000));
   }
 
+  unsigned long
+  TimeIntegrationParameters::n_steps_to(const double end, const InputFile &input,
+                                        const std::string &end_path) const
+  {
+    const double n = end / newmark.time_step;
+    if (!(n <= max_steps))
+      input.fail(end_path, "needs " + count_text(n) +
+                             " steps of " +
+                             number_text(newmark.time_step) + " s to reach " + number_text(end) +
+                             " s, more than Time integration/Maximum number of steps = " +
+                             std::to_string(max_steps) + " (raise it if the run is meant)");
+    return static_cast<unsigned long>(std::llround(n));
+  }
+
   void
   TimeIntegrationParameters::check(const InputFile &input) const
   {
     input.positive("Time integration/Time step", newmark.time_step);
     input.non_negative("Time integration/End time", end_time);
+    if (end_time > 0)
+      n_steps_to(end_time, input, "Time integration/End time");
     if (!(newmark.gamma >= 0.5))
       input.fail("Time integration/Newmark gamma", "must be >= 1/2 for stability");
     if (!(newmark.beta >= 0.25 * (0.5 + newmark.gamma) * (0.5 + newmark.gamma) - 1e-12))

@@ -1,3 +1,4 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/laws/elastic_springs.h>
 
 #include <cmath>
@@ -54,7 +55,7 @@ namespace poundfe
   ElasticSpring::failure() const
   {
     return "the spring force is not finite at a deformation of " +
-           std::to_string(trial_deformation) + " m";
+           number_text(trial_deformation) + " m";
   }
 
   void

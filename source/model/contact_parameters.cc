@@ -1,3 +1,4 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/laws/contact_law.h>
 #include <poundfe/model/contact_parameters.h>
 
@@ -83,7 +84,7 @@ namespace poundfe
     input.positive("Contact/Stiffness", stiffness);
     if (!(restitution > 0 && restitution <= 1))
       input.fail("Contact/Coefficient of restitution",
-                 "must lie in (0, 1], got " + std::to_string(restitution));
+                 "must lie in (0, 1], got " + number_text(restitution));
     input.non_negative("Contact/Damping", damping);
     input.non_negative("Contact/Effective mass", effective_mass);
     input.positive("Contact/Calibration velocity", calibration_velocity);

@@ -1,3 +1,4 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/model/friction_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -84,8 +85,8 @@ namespace poundfe
     if (law.kinetic_coefficient > law.static_coefficient)
       input.fail("Friction/Kinetic coefficient",
                  "must not exceed the static coefficient " +
-                   std::to_string(law.static_coefficient) + ", got " +
-                   std::to_string(law.kinetic_coefficient));
+                   number_text(law.static_coefficient) + ", got " +
+                   number_text(law.kinetic_coefficient));
     input.non_negative("Friction/Stribeck velocity", law.stribeck_velocity);
     input.non_negative("Friction/Normal force", law.normal.constant);
     input.non_negative("Friction/Stick stiffness", law.stick_stiffness);

@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/mesh/line_mesh.h>
 #include <poundfe/model/model_builder.h>
 
@@ -542,11 +543,13 @@ namespace poundfe
       const std::string path = "Contact/Barriers";
       std::istringstream in(entry);
       unsigned int       b = 0, f = 0;
-      std::string        side;
+      std::string        side, rest;
       double             gap = 0;
-      if (!(in >> b >> f >> side >> gap) || (side != "left" && side != "right") || !(gap >= 0))
+      if (!read_number(read_number(in, b), f) || !(in >> side) || !read_number(in, gap) ||
+          (in >> rest) || (side != "left" && side != "right") || !(gap >= 0))
         throw InputError(input.file, input.line_of(path), path,
-                         "'" + entry + "': expected 'building floor left|right gap' with gap >= 0");
+                         "'" + entry + "': expected 'building floor left|right gap' (whole "
+                         "numbers, a side, a gap in m >= 0, nothing after it)");
       if (b < 1 || b > model.buildings.size())
         throw InputError(input.file, input.line_of(path), path,
                          "'" + entry + "': building must be 1 to " +

@@ -1,3 +1,4 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/model/parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -228,10 +229,10 @@ namespace poundfe
         const BoucWenParameters &h  = hysteresis;
         const std::string        bw = s + "Bouc-Wen/";
         if (!(h.alpha >= 0 && h.alpha <= 1))
-          input.fail(bw + "alpha", "must lie in [0, 1], got " + std::to_string(h.alpha));
+          input.fail(bw + "alpha", "must lie in [0, 1], got " + number_text(h.alpha));
         input.positive(bw + "A", h.A);
         if (!(h.n >= 1) || !std::isfinite(h.n))
-          input.fail(bw + "n", "must be >= 1, got " + std::to_string(h.n));
+          input.fail(bw + "n", "must be >= 1, got " + number_text(h.n));
         if (!(h.beta + h.gamma > 0))
           input.fail(bw + "beta", "beta + gamma must be positive (|z| stays bounded)");
         if (!(h.beta >= std::abs(h.gamma)) && !(h.gamma >= std::abs(h.beta)))
@@ -244,7 +245,7 @@ namespace poundfe
       {
         if (!(damping_ratio >= 0 && damping_ratio < 1))
           input.fail(s + "Damping/Damping ratio",
-                 "must lie in [0, 1), got " + std::to_string(damping_ratio));
+                 "must lie in [0, 1), got " + number_text(damping_ratio));
         if (damping_modes.size() != 2 || damping_modes[0] < 1 ||
             damping_modes[1] < 1 || damping_modes[0] == damping_modes[1])
           input.fail(s + "Damping/Modes", "needs two different mode numbers >= 1");

@@ -1,5 +1,6 @@
 // Placing the `Springs` and `Friction` sections' elements at floor nodes.
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/model/model_builder.h>
 
 #include <cmath>
@@ -14,7 +15,7 @@ namespace poundfe
   {
     const int    line     = input.line_of(path);
     unsigned int building = 0, floor = 0, node = 0;
-    if (!(fields >> building >> floor >> node))
+    if (!read_number(read_number(read_number(fields, building), floor), node))
       throw InputError(input.file, line, path, "'" + entry + "': expected '" + form + "'");
     if (building < 1 || building > model.buildings.size())
       throw InputError(input.file, line, path,
@@ -70,7 +71,9 @@ namespace poundfe
       std::string rest;
       if (law.kind == SpringKind::sd)
         {
-          if (!(fields >> law.stiffness >> law.length >> law.height) || (fields >> rest))
+          if (!read_number(read_number(read_number(fields, law.stiffness), law.length),
+                           law.height) ||
+              (fields >> rest))
             throw InputError(input.file, line, path,
                              "'" + entry + "': expected 'building floor node K L H'");
           if (!(law.stiffness > 0 && law.length >= 0 && law.height >= 0) ||
@@ -79,7 +82,7 @@ namespace poundfe
                              "'" + entry + "': K must be positive, L and H zero or positive");
           return;
         }
-      if (!(fields >> law.stiffness >> law.cubic) || (fields >> rest))
+      if (!read_number(read_number(fields, law.stiffness), law.cubic) || (fields >> rest))
         throw InputError(input.file, line, path,
                          "'" + entry + "': expected 'building floor node k1 k3'");
       if (!(law.stiffness > 0) || !std::isfinite(law.stiffness + law.cubic))

@@ -20,6 +20,10 @@ namespace poundfe
                "<name>.columns.txt; for long or large runs; no plots of time series).",
                output_format_names());
     prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none).");
+    prm.add_parameter("Maximum VTU frames", max_vtu_frames,
+                      "Most VTU frames a run writes: when End time / VTU interval would give "
+                      "more, the interval is widened to fit and the console says so.",
+                      dealii::Patterns::Integer(2));
     prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot.");
     prm.add_parameter("Number of modes", n_modes,
                       "Modes reported (0: no modal analysis, for a large model whose "

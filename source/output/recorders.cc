@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/output_directory.h>
@@ -443,17 +444,9 @@ namespace poundfe
         if (every != std::string::npos)
           {
             const std::string value = trim(item.substr(every + 7));
-            std::size_t       end   = 0;
-            try
-              {
-                request.interval = std::stod(value, &end);
-              }
-            catch (const std::exception &)
-              {
-                end = 0;
-              }
-            if (end == 0 || end != value.size() || !std::isfinite(request.interval) ||
-                request.interval < 0 || request.interval > 1e6)
+            const std::optional<double> interval = parse_number(value);
+            request.interval                     = interval.value_or(-1);
+            if (!interval || request.interval < 0 || request.interval > 1e6)
               throw std::invalid_argument("'" + item + "': 'every' needs an interval in s (>= 0), got '" +
                                           value + "'");
             item = trim(item.substr(0, every));

@@ -74,6 +74,41 @@ BOOST_AUTO_TEST_CASE(malformed_at2_files_are_reported_with_their_line)
   BOOST_CHECK_THROW(read_record(no_header, RecordFormat()), InputError);
 }
 
+BOOST_AUTO_TEST_CASE(at2_fortran_exponents_and_malformed_headers)
+{
+  // DT = 2.0D-02 is 0.02 s, not 2 s (issue 14 item 3); values with D too
+  const std::string fortran = write_temporary(
+    "fortran.at2", "FORTRAN\nUNITS OF G\nNPTS=    3, DT= 2.0D-02 SEC\n .1D-01 -.2D-01 3.0d-2\n");
+  GroundMotion g = read_record(fortran, RecordFormat());
+  BOOST_TEST(g.time_step() == 0.02);
+  BOOST_TEST(g.samples()[1] == -0.02 * standard_gravity, boost::test_tools::tolerance(1e-15));
+  const std::string short_d = write_temporary("short-d.at2", "X\nNPTS= 2, DT= .2D-01\n 1 2\n");
+  BOOST_TEST(read_record(short_d, RecordFormat()).time_step() == 0.02);
+  // each malformed header names the record, its line and the field
+  const std::pair<const char *, const char *> cases[] = {
+    {"NPTS= 2, DT= 0.02.5", "header field DT"},  {"NPTS= 2, DT= 2e-2e", "header field DT"},
+    {"NPTS= 2, DT= 1e999", "header field DT"},   {"NPTS= 2, DT= -0.01", "header field DT"},
+    {"NPTS=-5, DT= 0.01", "header field NPTS"},  {"NPTS= 2.5, DT= 0.01", "header field NPTS"},
+    {"NPTS= 999999999999999999999, DT= 0.01", "header field NPTS"},
+    {"NPTS= 100000001, DT= 0.01", "header field NPTS"}};
+  for (const auto &[header, field] : cases)
+    {
+      const std::string file =
+        write_temporary("bad-header.at2", std::string("TITLE\n") + header + "\n 1 2\n");
+      BOOST_CHECK_EXCEPTION(read_record(file, RecordFormat()), InputError,
+                            [&](const InputError &e) {
+                              BOOST_TEST_MESSAGE(e.what());
+                              return e.line() == 2 && e.file() == file &&
+                                     std::string(e.what()).find(field) != std::string::npos;
+                            });
+    }
+  // values that the units make non-finite
+  const std::string huge = write_temporary("huge.at2", "X\nNPTS= 2, DT= .01\n 1e308 0\n");
+  BOOST_CHECK_EXCEPTION(read_record(huge, RecordFormat()), InputError, [](const InputError &e) {
+    return std::string(e.what()).find("value 1 becomes inf m/s^2") != std::string::npos;
+  });
+}
+
 BOOST_AUTO_TEST_CASE(text_records_one_and_two_columns)
 {
   const std::string two = write_temporary("two.txt", "time,acc\n0 0.1\n0.01 0.2\n0.02 -0.3\n");
@@ -83,6 +118,10 @@ BOOST_AUTO_TEST_CASE(text_records_one_and_two_columns)
   BOOST_TEST(g.time_step() == 0.01, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(g.value(0.015) == -0.05, boost::test_tools::tolerance(1e-12)); // linear
   BOOST_TEST(g.value(1.0) == 0.0);
+  // a line of other blanks (a form feed) is blank, not a row without columns
+  // (it indexed an empty row: found by tests/fuzz/fuzz_at2.cc)
+  const std::string form_feed = write_temporary("form-feed.txt", "# t a\n\f\n0 0.1\n\v\n0.01 0.2\n");
+  BOOST_TEST(read_record(form_feed, format).samples().size() == 2u);
   const std::string one = write_temporary("one.txt", "0.1\n0.2\n");
   BOOST_CHECK_THROW(read_record(one, format), InputError); // needs a time step
   format.time_step = 0.02;

@@ -70,6 +70,9 @@ namespace poundfe
     /// After parsing: hand the hysteresis settings of Time integration to
     /// the buildings' laws, then check every section. Throws InputError.
     void finalize();
+    /// A stochastic motion (or white-noise force) is generated whole before
+    /// a run: its samples are bounded like the steps (Maximum number of steps).
+    void check_stochastic_samples() const;
   };
 
   /// Read and check a .prm or .json file. Throws InputError.

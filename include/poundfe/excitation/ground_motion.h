@@ -25,6 +25,10 @@ namespace poundfe
     const std::vector<double> &samples() const { return values; }
     const std::string &description() const { return text; }
     void scale(double factor);
+    /// Index of the first sample that is not finite or is denormal (nonzero
+    /// below DBL_MIN in magnitude: a unit or scale factor gone wrong), or
+    /// samples().size() when every sample is usable.
+    std::size_t first_unusable_sample() const;
     bool empty() const { return values.empty(); }
     bool is_held() const { return held; }
     /// In-place access for a new realization of the same grid.

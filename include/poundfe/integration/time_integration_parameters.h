@@ -36,6 +36,13 @@ namespace poundfe
     HysteresisIntegration hysteresis_integration = HysteresisIntegration::trapezoidal;
     double                law_tolerance          = 1e-12;
     unsigned int          law_max_iterations     = 30;
+    /// Most time steps a run may take: End time / Time step (or the
+    /// record's duration / Time step) beyond it is refused before the run.
+    unsigned int          max_steps = 10000000;
+
+    /// The number of steps to `end` (s): refused, naming `end_path` (what
+    /// set the end), when it is not finite or exceeds max_steps.
+    unsigned long n_steps_to(double end, const InputFile &input, const std::string &end_path) const;
 
     /// theta of the hysteretic laws' one-step rule.
     double hysteresis_theta() const;

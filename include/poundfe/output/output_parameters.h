@@ -20,6 +20,7 @@ namespace poundfe
     std::string        directory    = "results";
     double             interval     = 0.0; // of CSV rows, s; 0 = every step
     double             vtu_interval = 0.1; // 0 = no VTU
+    unsigned int       max_vtu_frames = 2000; // a longer run widens the VTU interval
     bool               plots        = true;
     unsigned int       n_modes      = 6;
     RecorderParameters recorders;

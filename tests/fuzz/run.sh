@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Build and run the libFuzzer targets of the parameter reader
+# (fuzz_parameters.cc) and the record reader (fuzz_at2.cc).
+#
+#   tests/fuzz/run.sh [BUILD_DIR] [RUNS] [MAX_SECONDS]
+#
+# BUILD_DIR is a configured and built poundfe build (default: build): its
+# libpoundfe_core.a (gcc) supplies the engine, and the reader sources are
+# compiled again with clang++ -fsanitize=fuzzer-no-link,address so that
+# libFuzzer sees their coverage and AddressSanitizer checks them (the
+# whole-file clang objects come first on the link line, so the archive's
+# copies of them are never pulled in). Needs clang-14 and libclang-rt-14-dev
+# (Debian: apt-get install clang-14 libclang-rt-14-dev). Not part of the
+# default build. Each target runs RUNS executions (default 10^6) or
+# MAX_SECONDS (default 3600), whichever comes first, under nice -n 10;
+# seeds: input/*.prm, tests/cli/*.json, tests/cli/bad/*.prm and
+# tests/fuzz/seeds-at2/. Exit 0 when neither target found anything.
+set -euo pipefail
+src=$(cd "$(dirname "$0")/../.." && pwd)
+build=$(cd "${1:-$src/build}" && pwd)
+runs=${2:-1000000}
+max_time=${3:-3600}
+work=$build/fuzz
+mkdir -p "$work/objects" "$work/corpus-parameters" "$work/corpus-at2" "$work/seeds-parameters"
+cxx=${CXX_FUZZ:-clang++-14}
+
+flags=$(sed -n 's/^CXX_DEFINES = //p; s/^CXX_INCLUDES = //p' "$build/CMakeFiles/poundfe_core.dir/flags.make" | tr '\n' ' ')
+# the readers themselves; the sections' declarations and checks
+# (source/*/*_parameters.cc) run from the gcc archive, uninstrumented
+instrumented=(source/base/input_text.cc source/base/numbers.cc source/base/input_file.cc
+              source/base/exceptions.cc source/analysis/input_parameters.cc
+              source/excitation/records.cc source/excitation/ground_motion.cc)
+objects=()
+for file in $(printf '%s\n' "${instrumented[@]}" | sort -u) tests/fuzz/fuzz_parameters.cc tests/fuzz/fuzz_at2.cc; do
+  object=$work/objects/$(echo "$file" | tr / _).o
+  if [ ! -e "$object" ] || [ "$src/$file" -nt "$object" ]; then
+    rm -f "$object"
+    echo "clang: $file"
+    # shellcheck disable=SC2086
+    nice -n 10 "$cxx" -std=c++17 -O1 -gline-tables-only -fsanitize=fuzzer-no-link,address $flags -c "$src/$file" -o "$object"
+  fi
+  case $file in tests/fuzz/*) ;; *) objects+=("$object") ;; esac
+done
+# the engine's link line (libraries of deal.II and its dependencies)
+libraries=$(sed -e 's/^[^ ]* //' -e 's#CMakeFiles/poundfe.dir/source/main.cc.o##' -e 's#-o poundfe##' \
+                -e "s#libpoundfe_core.a#$build/libpoundfe_core.a#" \
+                -e 's#CMakeFiles/poundfe.dir/__/revision.cc.o##; s#CMakeFiles/poundfe.dir/revision.cc.o##' \
+                "$build/CMakeFiles/poundfe.dir/link.txt")
+targets=${FUZZ_TARGETS:-parameters at2} # e.g. FUZZ_TARGETS=at2: that one alone
+for target in $targets; do
+  # shellcheck disable=SC2086
+  nice -n 10 "$cxx" -fsanitize=fuzzer,address "$work/objects/tests_fuzz_fuzz_$target.cc.o" \
+    "${objects[@]}" $libraries -o "$work/fuzz_$target" 2>&1 |
+    grep -v "Cannot export local symbol '__asan" || true # gold on -rdynamic: harmless
+done
+
+cp "$src"/input/*.prm "$src"/tests/cli/bad/*.prm "$src"/tests/cli/*.json "$work/seeds-parameters/"
+export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
+status=0
+for target in $targets; do
+  seeds=$work/seeds-parameters
+  [ "$target" = at2 ] && seeds=$src/tests/fuzz/seeds-at2
+  echo "fuzz_$target: $runs executions or $max_time s"
+  (cd "$work" && nice -n 10 ./fuzz_$target -runs="$runs" -max_total_time="$max_time" \
+     -max_len=40000 -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
+     "corpus-$target" "$seeds") > "$work/fuzz_$target.log" 2>&1 || status=1
+  grep -E "^Done|stat::number_of_executed_units|ERROR|SUMMARY|crash-|timeout-|oom-" "$work/fuzz_$target.log" || true
+done
+exit $status
