@@ -216,6 +216,7 @@ namespace poundfe
     stationary_pdf.declare(prm);
     sweep.declare(prm);
     bifurcation.declare(prm);
+    spectrum.declare(prm);
   }
 
   void
@@ -239,6 +240,7 @@ namespace poundfe
     stationary_pdf.check(*this, time_integration.newmark.time_step);
     sweep.check(*this);
     bifurcation.check(*this);
+    spectrum.check(*this);
   }
 
   InputParameters

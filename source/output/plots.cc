@@ -28,6 +28,7 @@ namespace poundfe
              << "set xlabel " << quoted(plot.x_label) << "\n"
              << "set ylabel " << quoted(plot.y_label) << "\n"
              << (plot.log_y ? "set logscale y\n" : "unset logscale y\n")
+             << (plot.log_x ? "set logscale x\n" : "unset logscale x\n")
              << (plot.style_fill ? "set style fill solid 0.5 border\n" : "set style fill empty\n")
              << "plot ";
       for (std::size_t i = 0; i < plot.series.size(); ++i)

@@ -12,6 +12,7 @@
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/excitation/excitation_parameters.h>
+#include <poundfe/excitation/spectrum_parameters.h>
 #include <poundfe/integration/time_integration_parameters.h>
 #include <poundfe/model/contact_parameters.h>
 #include <poundfe/model/friction_parameters.h>
@@ -56,6 +57,7 @@ namespace poundfe
     StationaryPdfParameters   stationary_pdf;
     SweepParameters           sweep;
     BifurcationParameters     bifurcation;
+    SpectrumParameters        spectrum;    // Spectrum (response spectra)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
 

@@ -48,6 +48,8 @@ namespace poundfe
     bool writes(const std::string &file) const;
     /// x against x' of each equation of a one- or two-DOF model, stick marked.
     void draw_phase_portraits(std::vector<Plot> &plots) const;
+    /// PSA of every floor and of the ground against the period (floor_spectra.csv).
+    Plot floor_spectra_plot() const;
 
     const Analysis     &analysis;
     const Excitation   &excitation;

@@ -22,6 +22,7 @@ namespace poundfe
     double             vtu_interval = 0.1; // 0 = no VTU
     bool               plots        = true;
     unsigned int       n_modes      = 6;
+    bool               floor_spectra = false; // floor_spectra.csv of a run
     RecorderParameters recorders;
 
     /// Declare the `Output` section (entered and left here).

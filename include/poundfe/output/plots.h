@@ -26,6 +26,7 @@ namespace poundfe
     /// Panels drawn under this one in the same PNG (gnuplot multiplot, one
     /// column); their own `file` and `below` are not used.
     std::vector<Plot>       below{};
+    bool                    log_x = false; // e.g. periods of a spectrum
   };
 
   /// Draw the plots; returns the files written. Writes each PNG atomically.
