@@ -366,6 +366,7 @@ namespace poundfe
     Plot plot{"floor_spectra.png", title.str(), "period (s)", "pseudo-acceleration (m/s^2)",
               {{"floor_spectra.csv", "1:2", "ground", "lines dt 2 lc rgb 'black'"}}};
     plot.log_x         = true;
+    plot.key           = "below"; // one curve per floor
     unsigned int column = 3; // floor_spectra.csv: period, ground, the floors (first damping)
     for (const Building &building : analysis.model.buildings)
       for (unsigned int f = 1; f <= building.floors.size(); ++f)

@@ -68,6 +68,7 @@ namespace poundfe
     {
       Plot plot{file, title, "period (s)", "pseudo-acceleration PSA (m/s^2)", std::move(series)};
       plot.log_x = true;
+      plot.key   = "below"; // the curves fill the frame
       return plot;
     }
 
@@ -355,7 +356,7 @@ namespace poundfe
         {
           std::cout << "at T1 = " << t1 << " s (" << t1_source << "): mean PSA " << mean_t1
                     << " m/s^2, target " << target_t1 << " m/s^2: multiply S0 by " << s0_factor
-                    << " (Spectral intensity = " << s0_factor * generator.motion().spectral_intensity
+                    << " (Ground motion/Stochastic/S0 = " << s0_factor * generator.motion().spectral_intensity
                     << " m^2/s^3";
           if (g.spectral_intensity == 0 && g.noise_intensity_d == 0)
             std::cout << ", or Target PGA = " << amplitude * g.target_pga << " g";

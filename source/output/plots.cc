@@ -29,6 +29,7 @@ namespace poundfe
              << "set ylabel " << quoted(plot.y_label) << "\n"
              << (plot.log_y ? "set logscale y\n" : "unset logscale y\n")
              << (plot.log_x ? "set logscale x\n" : "unset logscale x\n")
+             << "set key " << (plot.key.empty() ? "inside top right" : plot.key) << "\n"
              << (plot.style_fill ? "set style fill solid 0.5 border\n" : "set style fill empty\n")
              << "plot ";
       for (std::size_t i = 0; i < plot.series.size(); ++i)

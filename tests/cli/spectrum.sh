@@ -18,7 +18,7 @@ check single "$work/single"
 
 "$poundfe" spectrum "$input" --realizations 6 --output "$work/ensemble" > /dev/null
 read -r s0 period < <(check s0 "$work/ensemble")
-sed -e "s/^\(\s*subsection Stochastic\)/\1\n    set Spectral intensity = $s0/" \
+sed -e "s/^\(\s*subsection Stochastic\)/\1\n    set S0 = $s0/" \
     -e "s/^\(\s*subsection Spectrum\)/\1\n  set Matching period = $period/" "$input" > "$work/matched.prm"
 "$poundfe" spectrum "$work/matched.prm" --realizations 6 --output "$work/matched" > /dev/null
 check matched "$work/matched"

@@ -27,6 +27,9 @@ namespace poundfe
     /// column); their own `file` and `below` are not used.
     std::vector<Plot>       below{};
     bool                    log_x = false; // e.g. periods of a spectrum
+    /// gnuplot's key position for this panel, e.g. "below" (many curves
+    /// that fill the frame); empty: inside, top right.
+    std::string             key{};
   };
 
   /// Draw the plots; returns the files written. Writes each PNG atomically.
