@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <utility>
 #include <sstream>
 #include <stdexcept>
 
@@ -248,6 +249,41 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// max |v| and max |d| over a step of h from (v0, d0) under a0 -> a1
+    /// (linear): the ends and the interior extrema, where a = 0 (of v) and
+    /// v = 0 (of d).
+    std::pair<double, double>
+    step_peaks(const double v0, const double d0, const double a0, const double a1, const double h)
+    {
+      const double slope = (a1 - a0) / h;
+      auto v = [&](const double s) { return v0 + a0 * s + slope * s * s / 2; };
+      auto d = [&](const double s) { return d0 + v0 * s + a0 * s * s / 2 + slope * s * s * s / 6; };
+      double peak_v = std::max(std::abs(v(0)), std::abs(v(h)));
+      double peak_d = std::max(std::abs(d(0)), std::abs(d(h)));
+      if (slope != 0 && a0 * a1 < 0) // a = 0 inside
+        peak_v = std::max(peak_v, std::abs(v(-a0 / slope)));
+      // v(s) = slope/2 s^2 + a0 s + v0 = 0 inside the step
+      std::array<double, 2> roots{{-1, -1}};
+      if (slope == 0)
+        roots[0] = a0 != 0 ? -v0 / a0 : -1;
+      else
+        {
+          const double discriminant = a0 * a0 - 2 * slope * v0;
+          if (discriminant >= 0)
+            {
+              const double q = -0.5 * (a0 + std::copysign(std::sqrt(discriminant), a0));
+              roots      = {{q != 0 ? v0 / q : -1, q / (slope / 2)}};
+            }
+        }
+      for (const double s : roots)
+        if (s > 0 && s < h)
+          peak_d = std::max(peak_d, std::abs(d(s)));
+      return {peak_v, peak_d};
+    }
+  } // namespace
+
   GroundMotionIntensity
   ground_motion_intensity(const GroundMotion &motion)
   {
@@ -263,12 +299,13 @@ namespace poundfe
     double velocity = 0, displacement = 0, energy = 0;
     for (std::size_t k = 0; k < n_intervals; ++k)
       {
-        const double a1 = held ? a[k] : a[k + 1];
+        const double a1    = held ? a[k] : a[k + 1];
+        const auto   peaks = step_peaks(velocity, displacement, a[k], a1, h);
+        result.pgv         = std::max(result.pgv, peaks.first);
+        result.pgd         = std::max(result.pgd, peaks.second);
         displacement += h * velocity + h * h * (2 * a[k] + a1) / 6;
         velocity += 0.5 * h * (a[k] + a1);
         energy += partial_energy(a[k], a1, h, h);
-        result.pgv = std::max(result.pgv, std::abs(velocity));
-        result.pgd = std::max(result.pgd, std::abs(displacement));
       }
     result.arias_intensity = M_PI / (2 * standard_gravity) * energy;
     if (energy > 0)

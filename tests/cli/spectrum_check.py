@@ -32,7 +32,8 @@ def floors(directory):
     # Every step is in floor_acceleration.csv (Output interval = 0) and the
     # single building has no contact: the steps are uniform. RK4 with 10
     # sub-steps samples the peak >= 400 times per period; poundfe samples it
-    # >= 50 times (0.2 % low at most) and ends with the run: tolerance 0.3 %.
+    # >= 200 times (1.2e-4 low at most) and ends with the run. Tolerance 1e-3:
+    # RK4's own error is O((w h)^4) ~ 1e-8; the rest is the peaks' sampling.
     header, rows = read_csv(os.path.join(directory, "floor_acceleration.csv"))
     times = [r[0] for r in rows]
     dt = times[1] - times[0]
@@ -42,7 +43,7 @@ def floors(directory):
     if "floor_spectra.csv" not in files:
         fail("floor_spectra.csv not listed in summary.json")
     zeta = 0.05
-    checked = 0
+    checked, worst = 0, 0.0
     for name in header[1:]:
         floor = name[: -len("_acc_m_s2")]
         column = s_header.index(floor + "_psa_m_s2_5pct")
@@ -50,10 +51,11 @@ def floors(directory):
         for row in s_rows[:: max(1, len(s_rows) // 4)]:
             period = row[0]
             reference = (2 * math.pi / period) ** 2 * rk4_peak(a, dt, period, zeta, 10, False)
-            if abs(row[column] / reference - 1) > 3e-3:
+            if abs(row[column] / reference - 1) > 1e-3:
                 fail(f"{floor} T = {period}: poundfe {row[column]}, RK4 {reference}")
             checked += 1
-    print(f"ok   floor spectra: {checked} ordinates within 0.3 % of RK4")
+            worst = max(worst, abs(row[column] / reference - 1))
+    print(f"ok   floor spectra: {checked} ordinates within 0.1 % of RK4 (largest {worst:.1e})")
 
 
 def single(directory):

@@ -95,7 +95,8 @@ BOOST_AUTO_TEST_CASE(peaks_match_newmark)
   // Newmark (gamma 1/2, beta 1/4) at h = dt/40 = 2.5e-4 s: its period error
   // (omega h)^2/12 is below 3e-5 at T = 0.1 s, and its peaks are sampled
   // 400 times per period or more; the spectrum's peaks are sampled at least
-  // 50 times per period (at most 0.2 % low). Tolerance 0.3 %.
+  // 200 times per period (at most 1.2e-4 low). Tolerance 1e-3: the Newmark
+  // period error accumulates into phase over the 14 s (measured: 1.5e-4 at most).
   const GroundMotion        motion = broadband_motion(0.01, 12);
   const std::vector<double> periods{0.1, 0.5, 1.0, 2.0};
   const std::vector<double> zetas{0.02, 0.05};
@@ -106,7 +107,7 @@ BOOST_AUTO_TEST_CASE(peaks_match_newmark)
         const double reference = newmark_peak(motion, periods[i], zetas[d], 40, 2.0);
         BOOST_TEST_MESSAGE("T = " << periods[i] << " s, zeta = " << zetas[d] << ": Sd "
                                   << spectrum.sd(d, i) << " m, Newmark " << reference << " m");
-        BOOST_TEST(spectrum.sd(d, i) == reference, boost::test_tools::tolerance(3e-3));
+        BOOST_TEST(spectrum.sd(d, i) == reference, boost::test_tools::tolerance(1e-3));
         BOOST_TEST(spectrum.psa(d, i) == std::pow(2 * M_PI / periods[i], 2) * spectrum.sd(d, i),
                    boost::test_tools::tolerance(1e-14));
       }
@@ -157,14 +158,14 @@ BOOST_AUTO_TEST_CASE(held_step_overshoot)
 {
   // A constant acceleration a0 held for 20 periods: the step response peaks
   // at (a0 / w^2) (1 + exp(-zeta pi / sqrt(1 - zeta^2))). The held samples
-  // take the same path as white noise. Tolerance 0.2 %: the peak is sampled
-  // 50 times per period at least (1 - cos(pi/50)).
+  // take the same path as white noise. Tolerance 2e-4: the peak is sampled
+  // 200 times per period at least (1 - cos(pi/200) = 1.2e-4).
   const double        a0 = 0.8, T = 0.5, zeta = 0.1, w = 2 * M_PI / T;
   std::vector<double> a(int(20 * T / 0.05), a0);
   const ResponseSpectrum spectrum =
     response_spectrum(GroundMotion(0.05, a, "step", true), {T}, {zeta});
   const double expected = a0 / (w * w) * (1 + std::exp(-zeta * M_PI / std::sqrt(1 - zeta * zeta)));
-  BOOST_TEST(spectrum.sd(0, 0) == expected, boost::test_tools::tolerance(2e-3));
+  BOOST_TEST(spectrum.sd(0, 0) == expected, boost::test_tools::tolerance(2e-4));
 }
 
 BOOST_AUTO_TEST_CASE(varying_step_is_exact)
@@ -295,4 +296,26 @@ BOOST_AUTO_TEST_CASE(eurocode_8_corner_values)
       BOOST_TEST(p2.TC == TC2[g]);
       BOOST_TEST(p2.TD == 1.2);
     }
+}
+
+BOOST_AUTO_TEST_CASE(velocity_and_displacement_peaks_inside_a_step)
+{
+  // a = 1 -> -1 over one step of 1 s, then 0 -> ... : v(s) = s - s^2 peaks at
+  // s = 1/2 with 1/4 (v is 0 at both samples); then a = -1 -> 1 over the next
+  // step: v(s) = -s + s^2 (from 0) and d(s) = 1/6 - s^2/2 + s^3/3 reaches 0
+  // at s = 1 while v = 0 at s = 0 and 1 only. By hand: PGV = 1/4, PGD = 1/6.
+  const GroundMotionIntensity m = ground_motion_intensity(GroundMotion(1.0, {1, -1, 1}, "pulse"));
+  BOOST_TEST(m.pgv == 0.25, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(m.pgd == 1.0 / 6, boost::test_tools::tolerance(1e-14));
+  // held: a = 2 for 1 s then -2 for 1 s: v = 2s then 2 - 2s; d peaks at the
+  // end, 1 + (2 s - s^2) at s = 1: 2
+  const GroundMotionIntensity held = ground_motion_intensity(GroundMotion(1.0, {2, -2}, "held", true));
+  BOOST_TEST(held.pgv == 2.0, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(held.pgd == 2.0, boost::test_tools::tolerance(1e-14));
+  // a = -1 -> 1 from v0 = 0.5 (a = 1 held, then this): v = 0 inside, d's peak inside
+  const GroundMotionIntensity inside = ground_motion_intensity(GroundMotion(1.0, {0.5, -1.5}, "ramp"));
+  // v(s) = 0.5 s - s^2, zero at s = 0.5, d(s) = 0.25 s^2 - s^3/3: d(0.5) = 1/48
+  // is a maximum, d(1) = -1/12 the larger |d|
+  BOOST_TEST(inside.pgv == 0.5, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(inside.pgd == 1.0 / 12, boost::test_tools::tolerance(1e-14));
 }

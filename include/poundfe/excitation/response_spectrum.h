@@ -15,9 +15,9 @@
 // closed forms lose digits to cancellation (their terms grow like
 // 1/(omega h)^3 while B shrinks like h^2: a sub-step of a contact, h = 1e-6 s,
 // would leave no correct digit).
-// Peaks are taken at the samples and at least 50 times per period T (a step
-// longer than T/50 is cut into equal sub-steps, still exact since a(t) stays
-// linear), so a sampled peak is at most 1 - cos(pi/50) = 0.2 % below the
+// Peaks are taken at the samples and at least 200 times per period T (a step
+// longer than T/200 is cut into equal sub-steps, still exact since a(t) stays
+// linear), so a sampled peak is at most 1 - cos(pi/200) = 1.2e-4 below the
 // true one. After the record ends the oscillator keeps vibrating freely:
 // response_spectrum() follows it for one more longest period (a(t) = 0).
 //   Sd = max_t |u|,  PSV = omega Sd,  PSA = omega^2 Sd,
@@ -28,7 +28,8 @@
 // interval for white noise):
 //   PGA = max |a|;  v(t) = int_0^t a,  d(t) = int_0^t v, both exact for the
 //   piecewise-linear a (v: the trapezoidal rule; d_{i+1} = d_i + h v_i +
-//   h^2 (2 a_i + a_{i+1}) / 6); PGV = max |v|, PGD = max |d|, with NO
+//   h^2 (2 a_i + a_{i+1}) / 6); PGV = max |v|, PGD = max |d|, exact: the
+//   extrema inside a step (where a = 0, where v = 0) included; with NO
 //   baseline correction (a record's PGD then includes the drift of its
 //   baseline; a generated motion's that of its random walk).
 //   Arias intensity I_A = pi / (2 g) int_0^T a^2 dt (Arias 1970), m/s;
@@ -84,7 +85,7 @@ namespace poundfe
   OscillatorStep nigam_jennings_series(double omega, double zeta, double h);
 
   /// Samples per period at which peaks are looked for (at least).
-  constexpr unsigned int spectrum_samples_per_period = 50;
+  constexpr unsigned int spectrum_samples_per_period = 200;
 
   /// A bank of spectral oscillators (every period for every damping ratio)
   /// driven by one acceleration history that arrives a sample at a time, at
