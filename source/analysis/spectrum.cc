@@ -131,7 +131,8 @@ namespace poundfe
           if (target)
             series.push_back({"spectrum.csv", "1:" + std::to_string(1 + per_damping),
                               "target " + design_spectrum_names().name(s.target) + ", ground " +
-                                ground_type_names().name(s.ground_type),
+                                ground_type_names().name(s.ground_type) + ", " +
+                                percent(s.damping_ratios.front()),
                               "lines dt 2 lw 2 lc rgb 'black'"});
           for (const std::string &png :
                draw_plots(directory, {spectrum_plot("spectrum.png",
@@ -290,7 +291,7 @@ namespace poundfe
               matched << "mean with S0 x " << s0_factor << " (matched at T = " << t1 << " s)";
               series.push_back({"ensemble_spectrum.csv", "1:6",
                                 "target " + design_spectrum_names().name(s.target) +
-                                  ", ground " + ground_type_names().name(s.ground_type),
+                                  ", ground " + ground_type_names().name(s.ground_type) + ", " + z,
                                 "lines dt 2 lw 2 lc rgb 'black'"});
               series.push_back({"ensemble_spectrum.csv", "1:" + std::to_string(header.size()),
                                 matched.str(), "lines lw 2 lc rgb 'red'"});
