@@ -6,6 +6,8 @@
 #   p-bifurcation-sd.png    poundfe stationary-pdf input/sd-oscillator-noise.prm swept over
 #                           alpha = Springs/SD springs:6 (Figs. 3.3-3.4 form)
 #   spillway-sliding.png    poundfe run input/spillway-sliding.prm (phase portrait)
+#   default-*.png           poundfe run input/two-buildings.prm (the default example):
+#                           drift profile, energy balance, contact forces, a hinge's loop
 set -euo pipefail
 cd "$(dirname "$0")/.."
 poundfe=build/poundfe
@@ -30,4 +32,9 @@ cp "$work/p-bifurcation/p_bifurcation.png" doc/figures/p-bifurcation-sd.png
 
 "$poundfe" run input/spillway-sliding.prm --output "$work/spillway" > /dev/null
 cp "$work/spillway/phase_portrait.png" doc/figures/spillway-sliding.png
+"$poundfe" run input/two-buildings.prm --output "$work/default" > /dev/null
+for plot in drift_profile energy contact_force; do
+  cp "$work/default/$plot.png" "doc/figures/default-${plot//_/-}.png"
+done
+cp "$work/default"/hysteresis_A3_*.png doc/figures/default-hysteresis.png
 ls -l doc/figures

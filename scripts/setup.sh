@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(libdeal.ii-dev libeigen3-dev libboost-test-dev numdiff gmsh gnuplot-nox cmake g++ make python3)
+packages=(libdeal.ii-dev libeigen3-dev zlib1g-dev libboost-test-dev numdiff gmsh gnuplot-nox cmake g++ make python3)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

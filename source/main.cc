@@ -6,7 +6,9 @@
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/spectrum.h>
+#include <poundfe/analysis/site_hazard_command.h>
 #include <poundfe/analysis/stationary_pdf.h>
+#include <poundfe/analysis/templates.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
@@ -47,7 +49,12 @@ namespace
     "                      parameter (sweep.csv, sweep.png, summary.json)\n"
     "  bifurcation FILE    Poincare samples, their period and the largest Lyapunov\n"
     "                      exponent against the Bifurcation section's parameter\n"
+    "  site-hazard FILE    site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
+    "                      Poisson fit, return periods, fragility x hazard\n"
     "  print-parameters    every parameter with its documentation and default\n"
+    "  template KIND       a commented starting file on standard output, KIND one of\n"
+    "                      frame, shear, mesh, pounding, stochastic\n"
+    "                      (poundfe template frame > my-frame.prm)\n"
     "--output DIR overrides the file's 'Output/Directory'.\n"
     "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility and stationary-pdf\n"
     "after the realizations under way, with the results so far (status \"interrupted\",\n"
@@ -102,6 +109,24 @@ namespace
     return line;
   }
 
+  /// `poundfe template KIND`: the starting file on standard output.
+  int
+  template_command(const std::vector<std::string> &args, std::ostream &err)
+  {
+    std::string kinds;
+    for (const std::string &kind : poundfe::template_kinds())
+      kinds += (kinds.empty() ? "" : ", ") + kind;
+    const std::string *text = args.size() == 2 ? poundfe::input_template(args[1]) : nullptr;
+    if (text == nullptr)
+      {
+        err << "poundfe: error: 'template' needs one kind of model, one of: " << kinds
+            << (args.size() == 2 ? " (not '" + args[1] + "')" : std::string()) << "\n";
+        return 1;
+      }
+    std::cout << *text;
+    return 0;
+  }
+
   /// The commands that split their work over MPI ranks.
   bool
   runs_over_mpi(const std::string &command)
@@ -151,9 +176,12 @@ main(int argc, char **argv)
           poundfe::print_parameters(std::cout);
           return 0;
         }
+      if (command == "template")
+        return template_command(args, err);
       if (command != "run" && command != "modal" && command != "ground-motion" &&
           command != "spectrum" &&
-          command != "sweep" && command != "bifurcation" && !runs_over_mpi(command))
+          command != "sweep" && command != "bifurcation" && command != "site-hazard" &&
+          !runs_over_mpi(command))
         {
           err << "poundfe: error: unknown command '" << command << "'\n" << usage;
           return 1;
@@ -191,6 +219,8 @@ main(int argc, char **argv)
         return poundfe::sweep_command(input, directory);
       if (command == "bifurcation")
         return poundfe::bifurcation_command(input, directory);
+      if (command == "site-hazard") // no model
+        return poundfe::site_hazard_command(input, directory);
       const poundfe::Analysis analysis = poundfe::prepare_analysis(input);
       if (command == "modal")
         return poundfe::modal_command(analysis, directory);

@@ -216,6 +216,8 @@ namespace poundfe
     stationary_pdf.declare(prm);
     sweep.declare(prm);
     bifurcation.declare(prm);
+    site_hazard.declare(prm);
+    drift_limits.declare(prm);
     spectrum.declare(prm);
   }
 
@@ -240,6 +242,8 @@ namespace poundfe
     stationary_pdf.check(*this, time_integration.newmark.time_step);
     sweep.check(*this);
     bifurcation.check(*this);
+    site_hazard.check(*this);
+    drift_limits.finalize(*this);
     spectrum.check(*this);
   }
 

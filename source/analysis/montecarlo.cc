@@ -6,6 +6,7 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/drift_limits.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plots.h>
 
@@ -371,6 +372,7 @@ namespace poundfe
     {
       unsigned int column;
       std::string  stem, label;
+      bool         is_count = false; // whole numbers: bins centred on them
     };
 
     std::vector<Distribution>
@@ -385,7 +387,7 @@ namespace poundfe
           d.push_back({runner.column(name), name, "peak roof displacement (m)"});
       if (runner.has_gaps())
         {
-          d.push_back({runner.column("n_impacts"), "n_impacts", "number of impacts"});
+          d.push_back({runner.column("n_impacts"), "n_impacts", "number of impacts", true});
           d.push_back({runner.column("peak_contact_force"), "peak_contact_force",
                        "peak contact force (N)"});
           d.push_back({runner.column("min_clearance"), "min_clearance",
@@ -463,7 +465,12 @@ namespace poundfe
 
     const unsigned long n_done      = table.realizations.size();
     const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
-    const Exceedances   e = count_exceedances(table, runner, input.monte_carlo.drift_limits);
+    // the Monte Carlo section's limits, then the Drift limits section's (named)
+    const std::vector<DriftLimit> &named  = input.drift_limits.limits();
+    std::vector<double>            limits = input.monte_carlo.drift_limits;
+    for (const DriftLimit &limit : named)
+      limits.push_back(limit.drift_ratio);
+    const Exceedances   e = count_exceedances(table, runner, limits);
     JsonWriter          json;
     begin_summary(json, "montecarlo", input, table.interrupted ? "interrupted" : "completed");
     json.value("realizations", n)
@@ -502,7 +509,9 @@ namespace poundfe
     json.begin_array("drift_limit_exceedance");
     for (std::size_t i = 0; i < e.drift.size(); ++i)
       {
-        json.begin_object().value("drift_ratio_limit", input.monte_carlo.drift_limits[i]);
+        json.begin_object().value("drift_ratio_limit", limits[i]);
+        if (i >= input.monte_carlo.drift_limits.size())
+          json.value("name", named[i - input.monte_carlo.drift_limits.size()].name);
         write_probability(json, e.drift[i]);
         json.end_object();
       }
@@ -514,7 +523,8 @@ namespace poundfe
     for (const Distribution &d : distributions(runner))
       {
         std::vector<double> values = table.completed_values(d.column);
-        const Histogram     h      = histogram(values, input.monte_carlo.histogram_bins);
+        const Histogram     h      = d.is_count ? count_histogram(values, input.monte_carlo.histogram_bins) :
+                                                 histogram(values, input.monte_carlo.histogram_bins);
         std::string         pdf    = "bin_low,bin_high,bin_center,count,density\n";
         for (std::size_t i = 0; i < h.counts.size(); ++i)
           {
@@ -567,7 +577,7 @@ namespace poundfe
       pcout << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
                 << rounded(e.pounding.coefficient_of_variation) << ")\n";
     for (std::size_t i = 0; i < e.drift.size(); ++i)
-      pcout << "P(max drift ratio > " << input.monte_carlo.drift_limits[i]
+      pcout << "P(max drift ratio > " << limits[i]
                 << ") = " << rounded(e.drift[i].probability) << " (CoV "
                 << rounded(e.drift[i].coefficient_of_variation) << ")\n";
     pcout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
@@ -706,8 +716,14 @@ namespace poundfe
     write_file_atomically(directory + "/fragility_curves.csv", fitted);
 
     json.begin_array("curves");
+    std::ostringstream range[2];
+    range[0].precision(17), range[1].precision(17);
+    range[0] << *std::min_element(levels.begin(), levels.end());
+    range[1] << *std::max_element(levels.begin(), levels.end());
+    const std::string lowest = range[0].str(), highest = range[1].str();
     Plot plot{"fragility.png", "lognormal fragility (maximum likelihood)", "PGA (g)",
               "P(exceedance | PGA)", {}};
+    plot.settings = "set xrange [0:" + highest + " * 1.1]\nset yrange [0:1]\n";
     for (std::size_t i = 0; i < curves.size(); ++i)
       {
         const LognormalFragility &c = curves[i];
@@ -720,11 +736,16 @@ namespace poundfe
         for (const ProbabilityEstimate &p : data[i])
           fractions.push_back(p.probability);
         json.value("observed_fraction", fractions).end_object();
+        // points and fit in one colour; the fit drawn over the PGA levels run
         const std::string column = std::to_string(3 + 2 * i + 1);
-        plot.series.push_back({"fragility_points.csv", "1:" + column, curve_names[i] + " (MC)", "points"});
+        const std::string colour = " lc " + std::to_string(i + 1);
+        plot.series.push_back({"fragility_points.csv", "1:" + column, curve_names[i] + " (MC)",
+                               "points pt 7 ps 1.2" + colour});
         if (c.fitted)
-          plot.series.push_back({"fragility_curves.csv", "1:" + std::to_string(i + 2),
-                                 curve_names[i] + " fit", "lines"});
+          plot.series.push_back({"fragility_curves.csv",
+                                 "1:(($1 >= " + lowest + " && $1 <= " + highest + ") ? $" +
+                                   std::to_string(i + 2) + " : 1/0)",
+                                 curve_names[i] + " fit", "lines lw 2" + colour});
         pcout << curve_names[i] << ": ";
         if (c.fitted)
           pcout << "theta = " << rounded(c.theta) << " g, beta = " << rounded(c.beta);

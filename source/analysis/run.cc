@@ -402,7 +402,7 @@ namespace poundfe
 
     VtuSeries modes(analysis.model, output_directory, "modes");
     for (unsigned int i = 0; i < analysis.modes.n_modes(); ++i)
-      modes.write(i + 1, analysis.modes.shapes.col(i), false);
+      modes.write_mode(i + 1, analysis.modes.frequency(i), analysis.modes.shapes.col(i));
     modes.finish();
     write_file_atomically(output_directory + "/summary.json", json.str());
 

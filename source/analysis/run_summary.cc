@@ -1,4 +1,5 @@
 #include <poundfe/analysis/run_summary.h>
+#include <poundfe/output/drift_limits.h>
 #include <poundfe/output/stick_slip_report.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -217,7 +219,9 @@ namespace poundfe
               .value("peak_floor_displacement_m", floors.peak_displacement()[i])
               .end_object();
           }
-        json.end_array().end_object();
+        json.end_array();
+        write_drift_checks(json, b);
+        json.end_object();
       }
     json.end_array();
 
@@ -331,6 +335,35 @@ namespace poundfe
     write_file_atomically(directory + "/summary.json", json.str());
   }
 
+  std::vector<DriftCheck>
+  RunSummary::drift_checks(const unsigned int b) const
+  {
+    const FloorResponse &floors = peaks.floors();
+    std::vector<double>  peak;
+    for (unsigned int f = 0; f < analysis.model.buildings[b].floors.size(); ++f)
+      peak.push_back(floors.peak_drift_ratio()[floors.index(b, f)]);
+    return check_drift_limits(analysis.input.drift_limits.limits(), peak);
+  }
+
+  void
+  RunSummary::write_drift_checks(JsonWriter &json, const unsigned int b) const
+  {
+    if (analysis.input.drift_limits.limits().empty())
+      return; // the summary of a run without limits is unchanged
+    json.begin_array("drift_limits");
+    for (const DriftCheck &check : drift_checks(b))
+      json.begin_object()
+        .value("name", check.limit.name)
+        .value("drift_ratio_limit", check.limit.drift_ratio)
+        .value("peak_drift_ratio", check.peak_drift_ratio)
+        .value("storey_of_peak", check.storey_of_peak)
+        .value("storeys_exceeding",
+               std::vector<double>(check.storeys_exceeding.begin(), check.storeys_exceeding.end()))
+        .value("passes", check.passes)
+        .end_object();
+    json.end_array();
+  }
+
   void
   RunSummary::draw_phase_portraits(std::vector<Plot> &plots) const
   {
@@ -358,6 +391,67 @@ namespace poundfe
   }
 
   Plot
+  RunSummary::energy_plot() const
+  {
+    // energy.csv: time, input, kinetic, damping, strain, hysteretic, contact,
+    // balance error, then friction and belt with friction elements. Contact
+    // and friction energies are small beside the input: a panel of their own,
+    // with the balance error against the right-hand axis.
+    Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)", "energy (J)",
+                {}};
+    const char *terms[] = {"input", "kinetic", "damping", "strain", "hysteretic"};
+    for (unsigned int i = 0; i < 5; ++i)
+      energy.series.push_back({"energy.csv", "1:" + std::to_string(i + 2), terms[i], "lines"});
+    Plot small{"", "Contact and friction energy, and the balance error", "time (s)",
+               "energy (J)", {{"energy.csv", "1:7", "contact", "lines lw 2"}}};
+    if (!analysis.model.friction_surfaces.empty())
+      for (const auto &[column, term] : {std::pair{9, "friction"}, std::pair{10, "belt"}})
+        {
+          const PlotSeries series{"energy.csv", "1:" + std::to_string(column), term, "lines"};
+          energy.series.push_back(series);
+          small.series.push_back(series);
+        }
+    small.y2_label = "balance error (relative)";
+    small.series.push_back({"energy.csv", "1:8", "balance error", "lines dt 2", "x1y2"});
+    energy.below.push_back(small);
+    return energy;
+  }
+
+  void
+  RunSummary::draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const
+  {
+    // One loop per building: its hinge or storey with the largest peak
+    // plastic deformation (|d - F/k0|; mirror-image hinges of a symmetric
+    // frame tie, and the first is kept), moments in kN m, forces in kN.
+    const Model &model = analysis.model;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        int chosen = -1;
+        for (unsigned int h = 0; h < peaks.n_hysteretic(); ++h)
+          if (state.elements[h].building == b &&
+              (chosen < 0 ||
+               peaks.peak_plastic_deformation()[h] > peaks.peak_plastic_deformation()[chosen]))
+            chosen = h;
+        if (chosen < 0)
+          continue;
+        const NonlinearElement &e     = state.elements[chosen];
+        const bool              hinge = e.kind == ElementKind::hinge;
+        std::ostringstream      title;
+        title << std::setprecision(3) << (hinge ? "Hinge " : "Storey ") << e.label << " of " << model.buildings[b].name
+              << ": peak plastic " << (hinge ? "rotation " : "drift ")
+              << peaks.peak_plastic_deformation()[chosen] << (hinge ? " rad" : " m")
+              << ", ductility " << peaks.ductility(chosen);
+        plots.push_back(Plot{"hysteresis_" + e.label + ".png", title.str(),
+                             hinge ? "rotation (rad)" : "drift (m)",
+                             hinge ? "moment (kN m)" : "force (kN)",
+                             {{"hinges.csv",
+                               std::to_string(3 * chosen + 3) + ":($" +
+                                 std::to_string(3 * chosen + 2) + "/1000)",
+                               e.label, "lines"}}});
+      }
+  }
+
+  Plot
   RunSummary::floor_spectra_plot() const
   {
     const double zeta = analysis.input.spectrum.damping_ratios.front();
@@ -378,83 +472,98 @@ namespace poundfe
   std::vector<std::string>
   RunSummary::draw(const ResponseView &state) const
   {
-    const Model &model = analysis.model;
-    Plot drift{"drift_profile.png", "Peak inter-storey drift ratio", "peak |IDR|", "storey", {}};
-    Plot accel{"acceleration_profile.png", "Peak absolute floor acceleration",
-               "peak |a| (m/s^2)", "floor", {}};
+    const Model         &model  = analysis.model;
+    const FloorResponse &floors = peaks.floors();
+    // Profiles against the height above the ground: a storey's drift ratio
+    // holds over the storey (a step), a floor's acceleration belongs to its
+    // level, joined to the ground's PGA.
+    Plot drift{"drift_profile.png", "Peak inter-storey drift ratio against height",
+               "peak |inter-storey drift ratio|", "height above the ground (m)", {}};
+    Plot accel{"acceleration_profile.png", "Peak absolute floor acceleration against height",
+               "peak |absolute acceleration| (m/s^2)", "height above the ground (m)", {}};
+    drift.settings = accel.settings = "set xrange [0:*]\nset yrange [0:*]\n";
     Plot roof{"roof_displacement.png", "Roof displacement (relative to the ground)", "time (s)",
               "displacement (m)", {}};
-    unsigned int column = 2;
-    for (const Building &building : model.buildings)
+    const double pga     = excitation.ground_motion().empty() ? 0 : excitation.ground_motion().peak();
+    unsigned int column  = 2;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
-        const std::string select = "(strcol(1) eq \"" + building.name + "\" ? $3 : NaN):2";
-        drift.series.push_back({"drift_profile.csv", select, building.name, "linespoints"});
-        accel.series.push_back({"acceleration_profile.csv", select, building.name, "linespoints"});
+        const Building    &building = model.buildings[b];
+        const std::string  id       = std::to_string(b + 1);
+        std::ostringstream d, a;
+        d << std::setprecision(10) << "$drift" << id << " << EOD\ndrift,height\n";
+        a << std::setprecision(10) << "$accel" << id << " << EOD\nacceleration,height\n"
+          << pga << ",0\n";
+        for (unsigned int f = 0; f < building.floors.size(); ++f)
+          {
+            const Floor       &floor = building.floors[f];
+            const unsigned int i     = floors.index(b, f);
+            const double       top   = floor.level - building.base_level; // above the ground
+            d << floors.peak_drift_ratio()[i] << ',' << top - floor.storey_height << '\n'
+              << floors.peak_drift_ratio()[i] << ',' << top << '\n';
+            a << floors.peak_acceleration()[i] << ',' << top << '\n';
+          }
+        drift.data_blocks += d.str() + "EOD\n";
+        accel.data_blocks += a.str() + "EOD\n";
+        drift.series.push_back({"$drift" + id, "1:2", building.name, "lines lw 2"});
+        accel.series.push_back({"$accel" + id, "1:2", building.name, "linespoints lw 2 pt 7"});
         column += building.floors.size();
         roof.series.push_back(
           {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
       }
+    // each limit a dashed vertical line over the height of the tallest
+    // building, the axis from 0 to past the largest limit
+    double largest = 0, height = 0;
+    for (const double peak : peaks.floors().peak_drift_ratio())
+      largest = std::max(largest, peak);
+    for (const Building &building : model.buildings)
+      if (!building.floors.empty())
+        height = std::max(height, building.floors.back().level - building.base_level);
+    unsigned int n_limits = 0;
+    for (const DriftLimit &limit : analysis.input.drift_limits.limits())
+      {
+        largest = std::max(largest, limit.drift_ratio);
+        const std::string  name = "$limit" + std::to_string(++n_limits);
+        std::ostringstream block, range;
+        block.precision(17);
+        block << name << " << EOD\ndrift,height\n"
+              << limit.drift_ratio << ",0\n" << limit.drift_ratio << ',' << height << "\nEOD\n";
+        drift.data_blocks += block.str();
+        drift.series.push_back({name, "1:2", limit.name, "lines dt 2 lw 2"});
+        range << "set xrange [0:" << 1.15 * largest << "]\nset yrange [0:*]\n";
+        drift.settings = range.str();
+      }
     std::vector<Plot> all{drift, accel};
     if (writes("floor_displacement.csv"))
       all.push_back(roof);
-    if (writes("ground_motion.csv"))
+    if (writes("ground_motion.csv") && pga > 0) // not for force-driven runs
       all.push_back(Plot{"ground_motion.png", excitation.ground_motion().description(),
                          "time (s)", "ground acceleration (m/s^2)",
                          {{"ground_motion.csv", "1:2", "a_g", "lines"}}});
     if (writes("base_shear.csv"))
       {
-        Plot shear{"base_shear.png", "Base shear (element forces)", "time (s)", "base shear (N)", {}};
+        Plot shear{"base_shear.png", "Base shear (element forces)", "time (s)", "base shear (kN)",
+                   {}};
         for (unsigned int b = 0; b < model.buildings.size(); ++b)
-          shear.series.push_back(
-            {"base_shear.csv", "1:" + std::to_string(b + 2), model.buildings[b].name, "lines"});
+          shear.series.push_back({"base_shear.csv", "1:($" + std::to_string(b + 2) + "/1000)",
+                                  model.buildings[b].name, "lines"});
         all.push_back(shear);
       }
     if (writes("energy.csv"))
-      {
-        Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)",
-                    "energy (J)", {}};
-        const char *terms[] = {"input", "kinetic", "damping", "strain", "hysteretic", "contact"};
-        for (unsigned int i = 0; i < 6; ++i)
-          energy.series.push_back({"energy.csv", "1:" + std::to_string(i + 2), terms[i], "lines"});
-        if (!model.friction_surfaces.empty()) // columns 9, 10: after the balance error
-          for (const auto &[column, term] : {std::pair{9, "friction"}, std::pair{10, "belt"}})
-            energy.series.push_back({"energy.csv", "1:" + std::to_string(column), term, "lines"});
-        all.push_back(energy);
-      }
-    // Hysteresis loops of the (up to four) most demanded elements.
-    const unsigned int n_hysteretic = peaks.n_hysteretic();
+      all.push_back(energy_plot());
     if (writes("hinges.csv"))
-      {
-        std::vector<unsigned int> order(n_hysteretic);
-        for (unsigned int h = 0; h < n_hysteretic; ++h)
-          order[h] = h;
-        std::stable_sort(order.begin(), order.end(), [&](unsigned int x, unsigned int y) {
-          return peaks.ductility(x) > peaks.ductility(y);
-        });
-        for (unsigned int i = 0; i < std::min(4u, n_hysteretic); ++i)
-          {
-            const unsigned int     h     = order[i];
-            const NonlinearElement &e     = state.elements[h];
-            const bool             hinge = e.kind == ElementKind::hinge;
-            std::ostringstream     title;
-            title << e.label << " (ductility " << peaks.ductility(h) << ")";
-            all.push_back(Plot{"hysteresis_" + e.label + ".png", title.str(),
-                               hinge ? "rotation (rad)" : "drift (m)",
-                               hinge ? "moment (N m)" : "force (N)",
-                               {{"hinges.csv",
-                                 std::to_string(3 * h + 3) + ":" + std::to_string(3 * h + 2),
-                                 e.label, "lines"}}});
-          }
-      }
+      draw_hysteresis(state, all);
     if (writes("floor_spectra.csv"))
       all.push_back(floor_spectra_plot());
     if (writes("phase_portrait.csv"))
       draw_phase_portraits(all);
     if (writes("contact_force.csv"))
       {
-        Plot contact{"contact_force.png", "Contact forces", "time (s)", "force (N)", {}};
+        Plot contact{"contact_force.png", "Contact forces of the gap elements", "time (s)",
+                     "contact force (kN)", {}};
         for (unsigned int g = 0; g < model.gaps.size(); ++g)
-          contact.series.push_back({"contact_force.csv", "1:" + std::to_string(2 * g + 2),
+          contact.series.push_back({"contact_force.csv",
+                                    "1:($" + std::to_string(2 * g + 2) + "/1000)",
                                     model.gaps[g].label, "lines"});
         all.push_back(contact);
       }

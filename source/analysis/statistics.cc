@@ -78,6 +78,26 @@ namespace poundfe
     return h;
   }
 
+  Histogram
+  count_histogram(const std::vector<double> &values, const unsigned int max_bins)
+  {
+    Histogram h;
+    if (values.empty() || max_bins == 0)
+      return h;
+    const auto [lo_it, hi_it] = std::minmax_element(values.begin(), values.end());
+    const double lo = std::round(*lo_it), hi = std::round(*hi_it);
+    const double width = std::max(1.0, std::ceil((hi - lo + 1) / max_bins));
+    const auto   bins  = static_cast<unsigned int>(std::ceil((hi - lo + 1) / width));
+    for (unsigned int i = 0; i <= bins; ++i)
+      h.edges.push_back(lo - 0.5 + i * width);
+    h.counts.assign(bins, 0);
+    for (const double x : values)
+      ++h.counts[std::min<unsigned int>(bins - 1, (std::round(x) - lo) / width)];
+    for (const unsigned long count : h.counts)
+      h.density.push_back(count / (values.size() * width));
+    return h;
+  }
+
   double
   fragility(const LognormalFragility &curve, const double intensity)
   {

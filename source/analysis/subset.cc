@@ -24,6 +24,38 @@ namespace poundfe
 {
   namespace
   {
+
+    /// subset_levels.png: P(Y > b_k) at each level's threshold, with bars of
+    /// +-1 CoV (the levels' CoVs combined as sqrt(sum delta_i^2), as for the
+    /// estimate itself (Au & Beck 2001): the correlation between levels is ignored), and the
+    /// target threshold as a vertical line.
+    Plot
+    subset_plot(const SubsetResult &result, const double target, const std::string &label)
+    {
+      std::ostringstream block;
+      block.precision(10);
+      block << "$levels << EOD\nthreshold,probability,low,high\n";
+      double probability = 1, variance = 0;
+      for (const SubsetLevel &L : result.levels)
+        {
+          probability *= L.conditional_probability;
+          variance += L.coefficient_of_variation * L.coefficient_of_variation;
+          const double cov = std::sqrt(variance);
+          block << L.threshold << ',' << probability << ',' << probability * std::max(1 - cov, 1e-3)
+                << ',' << probability * (1 + cov) << '\n';
+        }
+      Plot plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
+                label, "exceedance probability", {{"$levels", "1:2:3:4", "levels (bars: +-1 CoV)",
+                                                   "yerrorlines pt 7"}}, true};
+      plot.data_blocks = block.str() + "EOD\n";
+      std::ostringstream arrow;
+      arrow.precision(10);
+      arrow << "set arrow from " << target << ", graph 0 to " << target
+            << ", graph 1 nohead dt 2 lw 2\nset label 'threshold' at " << target
+            << ", graph 0.95 right offset -0.5, 0\n";
+      plot.settings = arrow.str();
+      return plot;
+    }
     /// Where the ranks other than 0 send their progress.
     std::ostream silent(nullptr);
 
@@ -373,10 +405,7 @@ namespace poundfe
     json.end_array().end_object();
     write_file_atomically(directory + "/summary.json", json.str());
     if (input.output.plots && !result.interrupted) // stop soon
-      draw_plots(directory, {Plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
-                                  response_name + unit, "exceedance probability (log)",
-                                  {{"subset_levels.csv", "2:4", "levels", "linespoints"}},
-                                  true}});
+      draw_plots(directory, {subset_plot(result, ss.threshold, response_name + unit)});
     timer.leave_subsection();
 
     if (result.interrupted)

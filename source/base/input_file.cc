@@ -52,4 +52,13 @@ namespace poundfe
     for (const double v : values)
       allow_zero ? non_negative(path, v) : positive(path, v);
   }
+
+  std::string
+  trimmed(const std::string &text)
+  {
+    const auto first = text.find_first_not_of(" \t\r");
+    if (first == std::string::npos)
+      return "";
+    return text.substr(first, text.find_last_not_of(" \t\r") + 1 - first);
+  }
 } // namespace poundfe

@@ -112,4 +112,19 @@ namespace poundfe
   {
     return local_stiffness() * (rotation() * global_displacements);
   }
+
+  std::array<double, 3>
+  FrameElement::displacement_at(const Vector6 &global_displacements, const double xi) const
+  {
+    const Vector6 local = rotation() * global_displacements; // u1 v1 r1 u2 v2 r2
+    const double  L     = element_length;
+    const double  axial = (1 - xi) * local[0] + xi * local[3];
+    const double  xi2 = xi * xi, xi3 = xi2 * xi;
+    const double  transverse = (1 - 3 * xi2 + 2 * xi3) * local[1] +
+                              (xi - 2 * xi2 + xi3) * L * local[2] +
+                              (3 * xi2 - 2 * xi3) * local[4] + (xi3 - xi2) * L * local[5];
+    const double slope = (-6 * xi + 6 * xi2) / L * local[1] + (1 - 4 * xi + 3 * xi2) * local[2] +
+                         (6 * xi - 6 * xi2) / L * local[4] + (3 * xi2 - 2 * xi) * local[5];
+    return {{cosine * axial - sine * transverse, sine * axial + cosine * transverse, slope}};
+  }
 } // namespace poundfe

@@ -24,19 +24,28 @@ namespace poundfe
     void
     write_panel(std::ostream &script, const Plot &plot)
     {
-      script << "set title " << quoted(plot.title) << " noenhanced\n"
+      // what an earlier panel may have set
+      script << "set autoscale\nunset arrow\nunset label\n";
+      if (plot.y2_label.empty())
+        script << "unset y2label\nunset y2tics\nset ytics mirror\n";
+      else
+        script << "set y2label " << quoted(plot.y2_label) << "\nset y2tics\nset ytics nomirror\n";
+      script << plot.data_blocks << "set title " << quoted(plot.title) << " noenhanced\n"
              << "set xlabel " << quoted(plot.x_label) << "\n"
              << "set ylabel " << quoted(plot.y_label) << "\n"
              << (plot.log_y ? "set logscale y\n" : "unset logscale y\n")
              << (plot.log_x ? "set logscale x\n" : "unset logscale x\n")
-             << "set key " << (plot.key.empty() ? "inside top right" : plot.key) << "\n"
+             << (plot.x_range.empty() ? "set autoscale x\n" : "set xrange " + plot.x_range + "\n")
+             << "set key " << (plot.key.empty() ? "below" : plot.key) << "\n"
              << (plot.style_fill ? "set style fill solid 0.5 border\n" : "set style fill empty\n")
-             << "plot ";
+             << plot.settings << "plot ";
       for (std::size_t i = 0; i < plot.series.size(); ++i)
         {
           const PlotSeries &s = plot.series[i];
-          script << (i ? ", " : "") << quoted(s.data_file) << " using " << s.using_spec
-                 << " with " << s.style << " title " << quoted(s.title) << " noenhanced";
+          const bool block = !s.data_file.empty() && s.data_file[0] == '$';
+          script << (i ? ", " : "") << (block ? s.data_file : quoted(s.data_file)) << " using "
+                 << s.using_spec << (s.axes.empty() ? "" : " axes " + s.axes) << " with "
+                 << s.style << " title " << quoted(s.title) << " noenhanced";
         }
       script << "\n";
     }
@@ -54,7 +63,8 @@ namespace poundfe
         return written;
       }
     std::ostringstream script;
-    script << "set datafile separator ','\nset key autotitle columnhead\nset grid\n";
+    script << "set datafile separator ','\nset key autotitle columnhead below\n"
+              "set grid\n";
     for (const Plot &plot : plots)
       {
         const std::size_t n_panels = 1 + plot.below.size();

@@ -1,64 +1,365 @@
 #include <poundfe/elements/frame_element.h>
+#include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/number_text.h>
 #include <poundfe/output/vtu_series.h>
 
-#include <deal.II/base/data_out_base.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/vector.h>
-#include <deal.II/numerics/data_out.h>
+#include <deal.II/base/exceptions.h>
 
+#include <zlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <sstream>
+#include <cstring>
+#include <map>
 
 namespace poundfe
 {
+  namespace
+  {
+    // VTK cell types (vtkCellType.h)
+    constexpr int vtk_vertex = 1, vtk_line = 3, vtk_poly_line = 4;
+
+    enum CellKind : int
+    {
+      frame_element = 0,
+      storey        = 1,
+      gap           = 2,
+      hinge         = 3
+    };
+
+    static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+                  "the VTU files declare byte_order=\"LittleEndian\"");
+
+    /// Base64 (RFC 4648) of `n` bytes, appended to `out`.
+    void
+    append_base64(std::string &out, const unsigned char *data, const std::size_t n)
+    {
+      static const char digits[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+      for (std::size_t i = 0; i < n; i += 3)
+        {
+          const unsigned int b = (data[i] << 16) | (i + 1 < n ? data[i + 1] << 8 : 0) |
+                                 (i + 2 < n ? data[i + 2] : 0);
+          out += digits[(b >> 18) & 63];
+          out += digits[(b >> 12) & 63];
+          out += i + 1 < n ? digits[(b >> 6) & 63] : '=';
+          out += i + 2 < n ? digits[b & 63] : '=';
+        }
+    }
+
+    /// One DataArray in VTK's compressed binary form: the values' bytes
+    /// (little endian, as declared in the file) deflated by zlib in one
+    /// block, written as base64 of the header {1 block, size, size,
+    /// compressed size} (UInt64) followed by base64 of the block.
+    class DataArrayWriter
+    {
+    public:
+      explicit DataArrayWriter(std::string &out)
+        : out(out)
+      {}
+      void
+      begin(const char *type, const char *name, const unsigned int n_components)
+      {
+        this->type = type;
+        raw.clear();
+        out += "<DataArray type=\"";
+        out += type;
+        out += "\" Name=\"";
+        out += name;
+        out += "\" NumberOfComponents=\"" + std::to_string(n_components) +
+               "\" format=\"binary\">\n";
+      }
+      void number(const double x) { append(x); }
+      void
+      whole(const long x)
+      {
+        if (std::strcmp(type, "Int32") == 0)
+          append(static_cast<std::int32_t>(x));
+        else if (std::strcmp(type, "UInt8") == 0)
+          append(static_cast<std::uint8_t>(x));
+        else
+          append(static_cast<std::int64_t>(x));
+      }
+      void
+      end()
+      {
+        uLongf compressed_size = compressBound(raw.size());
+        compressed.resize(compressed_size);
+        const int status =
+          compress2(compressed.data(), &compressed_size,
+                    reinterpret_cast<const Bytef *>(raw.data()), raw.size(), Z_BEST_SPEED);
+        AssertThrow(status == Z_OK, dealii::ExcMessage("zlib failed to compress a VTU array"));
+        const std::uint64_t header[4] = {1, raw.size(), raw.size(), compressed_size};
+        append_base64(out, reinterpret_cast<const unsigned char *>(header), sizeof header);
+        append_base64(out, compressed.data(), compressed_size);
+        out += "\n</DataArray>\n";
+      }
+
+    private:
+      template <typename T>
+      void
+      append(const T x)
+      {
+        raw.append(reinterpret_cast<const char *>(&x), sizeof x); // x86/ARM: little endian
+      }
+      std::string               &out;
+      const char                *type = "";
+      std::string                raw;
+      std::vector<unsigned char> compressed;
+    };
+  } // namespace
+
   struct VtuSeries::Impl
   {
-    const Model                          &model;
-    std::string                           directory, name;
-    dealii::Triangulation<1, 2>           triangulation;
-    dealii::FESystem<1, 2>                fe{dealii::FE_Q<1, 2>(1), 3};
-    dealii::DoFHandler<1, 2>              dof_handler;
-    std::vector<int>                      equation_of_dealii_dof; // -1: fixed
+    const Model &model;
+    std::string  directory, name;
+
+    /// Where each point's displacement comes from.
+    struct PointSource
+    {
+      int    node    = -1; // a node's own DOFs; -1: inside an element or a barrier
+      int    element = -1; // the frame element (model.members index) it lies in
+      double xi      = 0;  // its place along that element
+    };
+    std::vector<Point2>       points;
+    std::vector<PointSource>  sources;
+    std::vector<unsigned int> point_of_node;
+
+    unsigned int n_cells = 0;
+    unsigned int first_gap_cell = 0, first_hinge_cell = 0;
+    /// The cell of each hysteretic storey, in the order of the elements.
+    std::vector<unsigned int> hysteretic_storey_cells;
+    /// The static part of every file: cell ids (CellData), points and cells.
+    std::string static_cell_data, geometry;
+    double      model_size = 0; // largest extent, m
+
     std::vector<std::pair<double, std::string>> frames;
 
-    Impl(const Model &model, const std::string &directory, const std::string &name)
-      : model(model)
-      , directory(directory)
-      , name(name)
-    {
-      std::vector<dealii::Point<2>> vertices;
-      for (const Node &node : model.nodes)
-        vertices.emplace_back(node.position.x, node.position.y);
-      std::vector<dealii::CellData<1>> cells;
-      auto add_cell = [&](const std::array<unsigned int, 2> &nodes) {
-        dealii::CellData<1> cell;
-        cell.vertices    = {nodes[0], nodes[1]};
-        cell.material_id = cells.size(); // index: members first, then links
-        cells.push_back(cell);
-      };
-      for (const Member &member : model.members)
-        add_cell(member.nodes);
-      for (const StoreyLink &link : model.links)
-        add_cell(link.nodes);
-      triangulation.create_triangulation(vertices, cells, dealii::SubCellData());
-      dof_handler.reinit(triangulation);
-      dof_handler.distribute_dofs(fe);
+    Impl(const Model &model, const std::string &directory, const std::string &name);
 
-      equation_of_dealii_dof.assign(dof_handler.n_dofs(), -1);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        for (unsigned int v = 0; v < 2; ++v)
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              const auto         i    = cell->vertex_dof_index(v, c);
-              const unsigned int node = cell->vertex_index(v);
-              equation_of_dealii_dof[i]  = model.equation(n_dofs_per_node * node + c);
-            }
-    }
+    unsigned int add_point(const Point2 &position, const PointSource &source);
+    /// Global (ux, uy, rz) of every point.
+    std::vector<std::array<double, 3>> point_displacements(const Vector &u) const;
+    Vector6 element_displacements(const Member &member, const Vector &u) const;
+    double  dof_value(const Vector &u, unsigned int node, Component c) const;
+    /// Writes one file; `cell_arrays` adds the time-dependent CellData.
+    void write_file(const std::string &field_data, const Vector &u, double point_scale,
+                    const std::string &cell_arrays, double label);
   };
+
+  unsigned int
+  VtuSeries::Impl::add_point(const Point2 &position, const PointSource &source)
+  {
+    points.push_back(position);
+    sources.push_back(source);
+    return points.size() - 1;
+  }
+
+  VtuSeries::Impl::Impl(const Model &model, const std::string &directory, const std::string &name)
+    : model(model)
+    , directory(directory)
+    , name(name)
+  {
+    // one point per node; a hinge's member-side node is drawn at its joint
+    point_of_node.assign(model.nodes.size(), 0);
+    for (unsigned int n = 0; n < model.nodes.size(); ++n)
+      if (model.nodes[n].tied_to < 0)
+        point_of_node[n] = add_point(model.nodes[n].position, {static_cast<int>(n), -1, 0});
+    for (unsigned int n = 0; n < model.nodes.size(); ++n)
+      if (model.nodes[n].tied_to >= 0)
+        point_of_node[n] = point_of_node[model.nodes[n].tied_to];
+
+    std::vector<long> connectivity, offsets;
+    std::vector<int>  types, kinds, buildings, members;
+    auto              add_cell = [&](const std::vector<long> &cell_points, const int type,
+                        const CellKind kind, const unsigned int building, const int member) {
+      connectivity.insert(connectivity.end(), cell_points.begin(), cell_points.end());
+      offsets.push_back(connectivity.size());
+      types.push_back(type);
+      kinds.push_back(kind);
+      buildings.push_back(building + 1);
+      members.push_back(member);
+    };
+
+    std::map<std::string, int> member_id; // the pieces of a member share its label
+    for (unsigned int e = 0; e < model.members.size(); ++e)
+      {
+        const Member &m     = model.members[e];
+        const Point2 &start = model.nodes[m.nodes[0]].position;
+        const Point2 &end   = model.nodes[m.nodes[1]].position;
+        std::vector<long> cell{point_of_node[m.nodes[0]]};
+        for (unsigned int i = 1; i < n_member_subdivisions; ++i)
+          {
+            const double xi = double(i) / n_member_subdivisions;
+            cell.push_back(add_point({start.x + xi * (end.x - start.x),
+                                      start.y + xi * (end.y - start.y)},
+                                     {-1, static_cast<int>(e), xi}));
+          }
+        cell.push_back(point_of_node[m.nodes[1]]);
+        const int id = member_id.emplace(m.label, member_id.size() + 1).first->second;
+        add_cell(cell, vtk_poly_line, frame_element, m.building, id);
+      }
+    for (const StoreyLink &link : model.links)
+      {
+        if (link.hysteretic)
+          hysteretic_storey_cells.push_back(types.size());
+        add_cell({point_of_node[link.nodes[0]], point_of_node[link.nodes[1]]}, vtk_line, storey,
+                 link.building, 0);
+      }
+    first_gap_cell = types.size();
+    for (const Gap &g : model.gaps)
+      {
+        std::array<long, 2> ends{{-1, -1}};
+        for (unsigned int side = 0; side < 2; ++side)
+          if (g.nodes[side] >= 0)
+            ends[side] = point_of_node[g.nodes[side]];
+        for (unsigned int side = 0; side < 2; ++side)
+          if (ends[side] < 0) // the barrier, at the gap's width from the node
+            {
+              const Point2 &at = model.nodes[g.nodes[1 - side]].position;
+              ends[side] = add_point({at.x + (side == 1 ? 1 : -1) * g.initial_gap, at.y}, {});
+            }
+        add_cell({ends[0], ends[1]}, vtk_line, gap, g.buildings[0], 0);
+      }
+    first_hinge_cell = types.size();
+    for (const Hinge &h : model.hinges)
+      add_cell({point_of_node[h.joint_node]}, vtk_vertex, hinge, h.building,
+               members[h.member]);
+    n_cells = types.size();
+
+    double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        x_min = p == 0 ? points[p].x : std::min(x_min, points[p].x);
+        x_max = p == 0 ? points[p].x : std::max(x_max, points[p].x);
+        y_min = p == 0 ? points[p].y : std::min(y_min, points[p].y);
+        y_max = p == 0 ? points[p].y : std::max(y_max, points[p].y);
+      }
+    model_size = std::max(x_max - x_min, y_max - y_min);
+
+    DataArrayWriter text(static_cell_data);
+    const std::pair<const char *, const std::vector<int> *> ids[] = {
+      {"kind", &kinds}, {"building", &buildings}, {"member", &members}};
+    for (const auto &[array_name, values] : ids)
+      {
+        text.begin("Int32", array_name, 1);
+        for (const int v : *values)
+          text.whole(v);
+        text.end();
+      }
+
+    DataArrayWriter g(geometry);
+    geometry += "<Points>\n";
+    g.begin("Float64", "Points", 3);
+    for (const Point2 &p : points)
+      {
+        g.number(p.x);
+        g.number(p.y);
+        g.number(0);
+      }
+    g.end();
+    geometry += "</Points>\n<Cells>\n";
+    g.begin("Int64", "connectivity", 1);
+    for (const long c : connectivity)
+      g.whole(c);
+    g.end();
+    g.begin("Int64", "offsets", 1);
+    for (const long o : offsets)
+      g.whole(o);
+    g.end();
+    g.begin("UInt8", "types", 1);
+    for (const int t : types)
+      g.whole(t);
+    g.end();
+    geometry += "</Cells>\n";
+  }
+
+  double
+  VtuSeries::Impl::dof_value(const Vector &u, const unsigned int node, const Component c) const
+  {
+    const int equation = model.equation(Model::dof(node, c));
+    return equation >= 0 ? u[equation] : 0.0;
+  }
+
+  Vector6
+  VtuSeries::Impl::element_displacements(const Member &member, const Vector &u) const
+  {
+    Vector6 ue;
+    for (unsigned int k = 0; k < 6; ++k)
+      ue[k] = dof_value(u, member.nodes[k / 3], static_cast<Component>(k % 3));
+    return ue;
+  }
+
+  std::vector<std::array<double, 3>>
+  VtuSeries::Impl::point_displacements(const Vector &u) const
+  {
+    std::vector<std::array<double, 3>> d(points.size(), {{0, 0, 0}});
+    for (unsigned int p = 0; p < points.size(); ++p)
+      if (sources[p].node >= 0)
+        for (unsigned int c = 0; c < 3; ++c)
+          d[p][c] = dof_value(u, sources[p].node, static_cast<Component>(c));
+    int     element = -1;
+    Vector6 ue;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      if (sources[p].element >= 0)
+        {
+          const Member &m = model.members[sources[p].element];
+          if (sources[p].element != element) // interior points come element by element
+            {
+              element = sources[p].element;
+              ue      = element_displacements(m, u);
+            }
+          const FrameElement frame(model.nodes[m.nodes[0]].position,
+                                   model.nodes[m.nodes[1]].position, m.section);
+          d[p] = frame.displacement_at(ue, sources[p].xi);
+        }
+    return d;
+  }
+
+  void
+  VtuSeries::Impl::write_file(const std::string &field_data, const Vector &u,
+                              const double point_scale, const std::string &cell_arrays,
+                              const double label)
+  {
+    std::string xml;
+    xml.reserve(geometry.size() + static_cell_data.size() + cell_arrays.size() +
+                60 * points.size() + 1024);
+    xml += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+           "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
+           "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n";
+    xml += field_data;
+    xml += "<Piece NumberOfPoints=\"" + std::to_string(points.size()) + "\" NumberOfCells=\"" +
+           std::to_string(n_cells) + "\">\n<PointData Vectors=\"displacement\">\n";
+    const auto d = point_displacements(u);
+    DataArrayWriter  text(xml);
+    text.begin("Float64", "displacement", 3);
+    for (const auto &p : d)
+      {
+        text.number(point_scale * p[0]);
+        text.number(point_scale * p[1]);
+        text.number(0);
+      }
+    text.end();
+    text.begin("Float64", "rotation", 1);
+    for (const auto &p : d)
+      text.number(point_scale * p[2]);
+    text.end();
+    xml += "</PointData>\n<CellData Scalars=\"kind\">\n";
+    xml += static_cell_data;
+    xml += cell_arrays;
+    xml += "</CellData>\n";
+    xml += geometry;
+    xml += "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+
+    char file_name[64];
+    std::snprintf(file_name, sizeof file_name, "%s-%05u.vtu", name.c_str(),
+                  static_cast<unsigned int>(frames.size()));
+    write_file_atomically(directory + "/" + name + "/" + file_name, xml);
+    frames.emplace_back(label, name + "/" + file_name);
+  }
 
   VtuSeries::VtuSeries(const Model &model, const std::string &directory, const std::string &name)
     : impl(std::make_unique<Impl>(model, directory, name))
@@ -69,81 +370,137 @@ namespace poundfe
   VtuSeries::~VtuSeries() = default;
 
   void
-  VtuSeries::write(const double label, const Vector &u, const bool with_forces)
+  VtuSeries::write(const double time, const Vector &u, const NonlinearElements &elements)
   {
-    const Model           &model = impl->model;
-    dealii::Vector<double> solution(impl->dof_handler.n_dofs());
-    for (unsigned int i = 0; i < solution.size(); ++i)
-      if (impl->equation_of_dealii_dof[i] >= 0)
-        solution[i] = u[impl->equation_of_dealii_dof[i]];
+    const Model        &model = impl->model;
+    const unsigned int  n     = impl->n_cells;
+    // end forces N V M at both ends, then force, contact, penetration, z,
+    // plastic deformation
+    std::vector<std::array<double, 6>> end_forces(n, {{0, 0, 0, 0, 0, 0}});
+    std::vector<double> force(n, 0), penetration(n, 0), z(n, 0), plastic(n, 0);
+    std::vector<int>    contact(n, 0);
+    for (unsigned int e = 0; e < model.members.size(); ++e)
+      {
+        const Member      &m = model.members[e];
+        const FrameElement element(model.nodes[m.nodes[0]].position,
+                                   model.nodes[m.nodes[1]].position, m.section);
+        const Vector6      f = element.local_end_forces(impl->element_displacements(m, u));
+        for (unsigned int k = 0; k < 6; ++k)
+          end_forces[e][k] = f[k];
+      }
+    for (unsigned int l = 0; l < model.links.size(); ++l)
+      {
+        const StoreyLink &link  = model.links[l];
+        const unsigned int cell = model.members.size() + l;
+        if (!link.hysteretic) // a hysteretic storey's force comes from its element
+          force[cell] = link.stiffness * (impl->dof_value(u, link.nodes[1], Component::ux) -
+                                          impl->dof_value(u, link.nodes[0], Component::ux));
+      }
+    unsigned int n_hinges = 0, n_storeys = 0, n_gaps = 0;
+    for (const NonlinearElement &element : elements)
+      {
+        unsigned int cell = 0;
+        switch (element.kind)
+          {
+            case ElementKind::hinge:
+              cell = impl->first_hinge_cell + n_hinges++;
+              break;
+            case ElementKind::storey:
+              cell = impl->hysteretic_storey_cells[n_storeys++];
+              break;
+            case ElementKind::gap:
+              cell = impl->first_gap_cell + n_gaps++;
+              contact[cell]     = element.is_active();
+              penetration[cell] = std::max(0.0, element.history_variable());
+              force[cell]       = element.force();
+              continue;
+            default: // springs and friction to the ground: not drawn
+              continue;
+          }
+        force[cell] = element.force();
+        z[cell]     = element.history_variable();
+        if (element.initial_stiffness() > 0)
+          plastic[cell] = element.deformation(u) - element.force() / element.initial_stiffness();
+      }
+    for (unsigned int l = 0; l < model.links.size(); ++l) // a storey's shear as V
+      {
+        const unsigned int cell = model.members.size() + l;
+        end_forces[cell][1]     = force[cell];
+        end_forces[cell][4]     = -force[cell];
+      }
 
-    // Displacements of all model DOFs (fixed ones are zero).
-    std::vector<double> model_u(model.n_dofs(), 0.0);
-    for (unsigned int d = 0; d < model.n_dofs(); ++d)
-      if (model.equation(d) >= 0)
-        model_u[d] = u[model.equation(d)];
+    std::string cell_arrays;
+    DataArrayWriter   text(cell_arrays);
+    static const char *end_force_names[6] = {"N_start", "V_start", "M_start",
+                                             "N_end",   "V_end",   "M_end"};
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        text.begin("Float64", end_force_names[k], 1);
+        for (const auto &f : end_forces)
+          text.number(f[k]);
+        text.end();
+      }
+    const std::pair<const char *, const std::vector<double> *> arrays[] = {
+      {"force", &force}, {"penetration", &penetration}, {"z", &z},
+      {"plastic_deformation", &plastic}};
+    for (const auto &[array_name, values] : arrays)
+      {
+        text.begin("Float64", array_name, 1);
+        for (const double v : *values)
+          text.number(v);
+        text.end();
+      }
+    text.begin("Int32", "contact", 1);
+    for (const int c : contact)
+      text.whole(c);
+    text.end();
 
-    const unsigned int                 n_cells = impl->triangulation.n_active_cells();
-    std::vector<dealii::Vector<double>> forces(6, dealii::Vector<double>(n_cells));
-    if (with_forces)
-      for (const auto &cell : impl->triangulation.active_cell_iterators())
-        {
-          const unsigned int index = cell->material_id();
-          const unsigned int slot  = cell->active_cell_index();
-          if (index < model.members.size())
-            {
-              const Member      &m = model.members[index];
-              const FrameElement element(model.nodes[m.nodes[0]].position,
-                                         model.nodes[m.nodes[1]].position, m.section);
-              Vector6            ue;
-              for (unsigned int k = 0; k < 6; ++k)
-                ue[k] = model_u[n_dofs_per_node * m.nodes[k / 3] + k % 3];
-              const Vector6 f = element.local_end_forces(ue);
-              for (unsigned int k = 0; k < 6; ++k)
-                forces[k][slot] = f[k];
-            }
-          else
-            {
-              const StoreyLink &link = model.links[index - model.members.size()];
-              const double      shear =
-                link.stiffness * (model_u[Model::dof(link.nodes[1], Component::ux)] -
-                                  model_u[Model::dof(link.nodes[0], Component::ux)]);
-              forces[1][slot] = shear;
-              forces[4][slot] = -shear;
-            }
-        }
+    std::string field_data;
+    DataArrayWriter   field(field_data);
+    field_data += "<FieldData>\n";
+    field.begin("Float64", "TIME", 1);
+    field.number(time);
+    field.end();
+    field_data += "</FieldData>\n";
+    impl->write_file(field_data, u, 1.0, cell_arrays, time);
+  }
 
-    dealii::DataOut<1, 2> data_out;
-    data_out.attach_dof_handler(impl->dof_handler);
-    const std::vector<std::string> names{"displacement", "displacement", "rotation"};
-    const std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>
-      interpretation{dealii::DataComponentInterpretation::component_is_part_of_vector,
-                     dealii::DataComponentInterpretation::component_is_part_of_vector,
-                     dealii::DataComponentInterpretation::component_is_scalar};
-    data_out.add_data_vector(solution, names, dealii::DataOut<1, 2>::type_dof_data,
-                             interpretation);
-    static const char *force_names[6] = {"N_start", "V_start", "M_start",
-                                         "N_end",   "V_end",   "M_end"};
-    if (with_forces)
-      for (unsigned int k = 0; k < 6; ++k)
-        data_out.add_data_vector(forces[k], force_names[k],
-                                 dealii::DataOut<1, 2>::type_cell_data);
-    data_out.build_patches();
+  void
+  VtuSeries::write_mode(const unsigned int mode, const double frequency, const Vector &shape)
+  {
+    double largest = 0; // translation of the shape
+    for (const auto &d : impl->point_displacements(shape))
+      largest = std::max(largest, std::hypot(d[0], d[1]));
+    const double scale = largest > 0 ? mode_amplitude * impl->model_size / largest : 1.0;
 
-    char file_name[64];
-    std::snprintf(file_name, sizeof file_name, "%s-%05u.vtu", impl->name.c_str(),
-                  static_cast<unsigned int>(impl->frames.size()));
-    std::ostringstream vtu;
-    data_out.write_vtu(vtu);
-    write_file_atomically(impl->directory + "/" + impl->name + "/" + file_name, vtu.str());
-    impl->frames.emplace_back(label, impl->name + "/" + file_name);
+    std::string field_data;
+    DataArrayWriter   field(field_data);
+    field_data += "<FieldData>\n";
+    const std::pair<const char *, double> values[] = {
+      {"mode", mode}, {"frequency_Hz", frequency}, {"period_s", frequency > 0 ? 1 / frequency : 0.0}, {"scale", scale}};
+    for (const auto &[field_name, value] : values)
+      {
+        field.begin("Float64", field_name, 1);
+        field.number(value);
+        field.end();
+      }
+    field_data += "</FieldData>\n";
+    impl->write_file(field_data, shape, scale, {}, mode);
   }
 
   void
   VtuSeries::finish()
   {
-    std::ostringstream pvd;
-    dealii::DataOutBase::write_pvd_record(pvd, impl->frames);
-    write_file_atomically(impl->directory + "/" + impl->name + ".pvd", pvd.str());
+    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
+                      "byte_order=\"LittleEndian\">\n<Collection>\n";
+    NumberText text;
+    for (const auto &[label, file] : impl->frames)
+      {
+        char buffer[NumberText::max_length];
+        pvd += "  <DataSet timestep=\"" + std::string(buffer, text.write(buffer, label)) +
+               "\" group=\"\" part=\"0\" file=\"" + file + "\"/>\n";
+      }
+    pvd += "</Collection>\n</VTKFile>\n";
+    write_file_atomically(impl->directory + "/" + impl->name + ".pvd", pvd);
   }
 } // namespace poundfe

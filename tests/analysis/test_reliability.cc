@@ -56,6 +56,28 @@ BOOST_AUTO_TEST_CASE(sample_statistics_and_quantiles)
   BOOST_TEST(integral == 1.0, boost::test_tools::tolerance(1e-14));
 }
 
+// Counts (numbers of impacts) get one bin per whole number, centred on it,
+// or w whole numbers per bin when the range needs more than max_bins bins.
+// Reference: the counts by hand. Exact.
+BOOST_AUTO_TEST_CASE(count_histogram_has_bins_centred_on_whole_numbers)
+{
+  const std::vector<double> counts{0, 0, 1, 3, 3, 3, 7};
+  const Histogram           h = count_histogram(counts, 20);
+  BOOST_TEST(h.edges.size() == 9u);
+  BOOST_TEST(h.edges.front() == -0.5);
+  BOOST_TEST(h.edges.back() == 7.5);
+  const std::vector<unsigned long> expected{2, 1, 0, 3, 0, 0, 0, 1};
+  BOOST_TEST(h.counts == expected, boost::test_tools::per_element());
+  BOOST_TEST(std::accumulate(h.density.begin(), h.density.end(), 0.0) == 1.0,
+             boost::test_tools::tolerance(1e-15));
+  const Histogram w = count_histogram(counts, 3); // 8 whole numbers in 3 bins: w = 3
+  const std::vector<double>        edges{-0.5, 2.5, 5.5, 8.5};
+  const std::vector<unsigned long> grouped{3, 3, 1};
+  BOOST_TEST(w.edges == edges, boost::test_tools::per_element());
+  BOOST_TEST(w.counts == grouped, boost::test_tools::per_element());
+  BOOST_TEST(w.density[0] == 3.0 / (7 * 3), boost::test_tools::tolerance(1e-15));
+}
+
 BOOST_AUTO_TEST_CASE(lognormal_fragility_maximum_likelihood)
 {
   const std::vector<double> im{0.1, 0.2, 0.3, 0.4, 0.6, 0.8};

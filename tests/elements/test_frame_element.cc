@@ -69,6 +69,43 @@ BOOST_AUTO_TEST_CASE(inclined_cantilever_gives_the_same_deflection_normal_to_its
   BOOST_TEST(normal == P * L * L * L / (3 * EI), boost::test_tools::tolerance(tol));
 }
 
+// The displaced shape inside one element (what the VTU draws between nodes):
+// an inclined cantilever of ONE element under a tip load normal to it and an
+// axial one; the deflection at x is P x^2 (3L - x) / (6EI), its slope
+// P x (2L - x) / (2EI), the axial displacement F x / EA (closed forms of
+// beam theory; the cubic element is exact for end loads: round-off).
+BOOST_AUTO_TEST_CASE(displacement_inside_an_element_is_the_elastic_curve)
+{
+  const double L = 3.0, P = 5.0e3, F = 2.0e5, angle = 0.6;
+  const double EI = section.youngs_modulus * section.second_moment;
+  const double EA = section.youngs_modulus * section.area;
+  const double cx = std::cos(angle), cy = std::sin(angle);
+  Model model = poundfe_test::straight_member({1, 2}, {1 + L * cx, 2 + L * cy}, section, 1);
+  model.nodes[0].fixed = {{true, true, true}};
+  model.number_equations();
+  LinearSystem system = assemble_mass_and_stiffness(model);
+  Vector       f      = Vector::Zero(system.n_equations());
+  f[model.equation(Model::dof(1, Component::ux))] = -P * cy + F * cx;
+  f[model.equation(Model::dof(1, Component::uy))] = P * cx + F * cy;
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt(system.stiffness);
+  const Vector u = ldlt.solve(f);
+  Vector6      ue = Vector6::Zero();
+  for (unsigned int c = 0; c < 3; ++c)
+    ue[3 + c] = u[model.equation(Model::dof(1, static_cast<Component>(c)))];
+  const FrameElement element(model.nodes[0].position, model.nodes[1].position, section);
+  for (const double xi : {0.0, 0.25, 0.5, 0.8, 1.0})
+    {
+      const double x        = xi * L;
+      const auto   d        = element.displacement_at(ue, xi);
+      const double normal   = -d[0] * cy + d[1] * cx;
+      const double axial    = d[0] * cx + d[1] * cy;
+      const double deflection = P * x * x * (3 * L - x) / (6 * EI);
+      BOOST_TEST(normal == deflection, boost::test_tools::tolerance(tol));
+      BOOST_TEST(d[2] == P * x * (2 * L - x) / (2 * EI), boost::test_tools::tolerance(tol));
+      BOOST_TEST(axial == F * x / EA, boost::test_tools::tolerance(tol));
+    }
+}
+
 BOOST_AUTO_TEST_CASE(fixed_fixed_column_lateral_stiffness_is_12EI_over_L3)
 {
   const double L = 3.5, P = 1.0e4, EI = section.youngs_modulus * section.second_moment;

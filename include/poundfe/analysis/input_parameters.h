@@ -8,6 +8,7 @@
 #include <poundfe/analysis/bifurcation.h>
 #include <poundfe/analysis/modal_parameters.h>
 #include <poundfe/analysis/reliability_parameters.h>
+#include <poundfe/analysis/site_hazard_parameters.h>
 #include <poundfe/analysis/stationary_pdf_parameters.h>
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/base/input_file.h>
@@ -17,6 +18,7 @@
 #include <poundfe/model/contact_parameters.h>
 #include <poundfe/model/friction_parameters.h>
 #include <poundfe/model/parameters.h>
+#include <poundfe/output/drift_limits.h>
 #include <poundfe/output/output_parameters.h>
 
 #include <iosfwd>
@@ -57,6 +59,8 @@ namespace poundfe
     StationaryPdfParameters   stationary_pdf;
     SweepParameters           sweep;
     BifurcationParameters     bifurcation;
+    SiteHazardParameters      site_hazard;
+    DriftLimitParameters      drift_limits;
     SpectrumParameters        spectrum;    // Spectrum (response spectra)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;

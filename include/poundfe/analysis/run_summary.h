@@ -8,6 +8,7 @@
 
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/excitation/excitation.h>
+#include <poundfe/output/drift_limits.h>
 #include <poundfe/output/observer.h>
 
 #include <poundfe/output/plots.h>
@@ -46,8 +47,17 @@ namespace poundfe
     std::vector<std::string> draw(const ResponseView &state) const;
     /// Whether this run writes `file` (not: whether it exists).
     bool writes(const std::string &file) const;
+    /// The drift limits of the input against building b's peak drift ratios.
+    std::vector<DriftCheck> drift_checks(unsigned int b) const;
+    /// Building b's "drift_limits" in summary.json (nothing without limits).
+    void write_drift_checks(JsonWriter &json, unsigned int b) const;
     /// x against x' of each equation of a one- or two-DOF model, stick marked.
     void draw_phase_portraits(std::vector<Plot> &plots) const;
+    /// energy.png: the terms, and a panel with contact/friction energy and
+    /// the balance error.
+    Plot energy_plot() const;
+    /// hysteresis_<label>.png: one loop per building.
+    void draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const;
     /// PSA of every floor and of the ground against the period (floor_spectra.csv).
     Plot floor_spectra_plot() const;
 

@@ -45,6 +45,11 @@ namespace poundfe
   /// Equal-width bins over [min, max] (a single value gets a unit-width bin).
   Histogram histogram(const std::vector<double> &values, unsigned int bins);
 
+  /// Bins for whole numbers (counts): each bin holds w consecutive integers,
+  /// edges half-way between integers, w = 1 unless the range needs more than
+  /// `max_bins` bins.
+  Histogram count_histogram(const std::vector<double> &values, unsigned int max_bins);
+
   struct LognormalFragility
   {
     double theta = 0, beta = 0; // median and logarithmic standard deviation

@@ -32,6 +32,9 @@ namespace poundfe
     void list(const std::string &path, const std::vector<double> &values, std::size_t n,
               bool allow_zero, const std::string &what) const;
   };
+
+  /// `text` without its leading and trailing blanks (spaces, tabs, CR).
+  std::string trimmed(const std::string &text);
 } // namespace poundfe
 
 #endif

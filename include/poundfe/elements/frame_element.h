@@ -8,6 +8,9 @@
 //   DOFs (v1, rz1, v2, rz2): N/(30L) [36 3L -36 3L; 3L 4L^2 -3L -L^2;
 //   -36 -3L 36 -3L; 3L -L^2 -3L 4L^2], from the same cubic shape functions
 //   (consistent); no terms on the axial DOFs (their relative size is N/EA).
+//   Displacement inside: u(xi) = (1 - xi) u1 + xi u2 (axial), v(xi) = N1 v1 +
+//   N2 L r1 + N3 v2 + N4 L r2, N1 = 1 - 3xi^2 + 2xi^3, N2 = xi - 2xi^2 + xi^3,
+//   N3 = 3xi^2 - 2xi^3, N4 = xi^3 - xi^2 (xi = x/L).
 // Source: Przemieniecki, Theory of Matrix Structural Analysis (1968), ch. 5
 // & 11 and its geometric (stability) matrices; McGuire, Gallagher & Ziemian,
 // Matrix Structural Analysis, 2nd ed. (2000), eq. 9.19 (its transverse
@@ -18,6 +21,8 @@
 #include <poundfe/model/model.h>
 
 #include <Eigen/Core>
+
+#include <array>
 
 namespace poundfe
 {
@@ -48,6 +53,11 @@ namespace poundfe
     double axial_force(const Vector6 &global_displacements) const;
     /// Global-to-local rotation T.
     Matrix6 rotation() const;
+    /// Global displacement (ux, uy, rz) at x = xi L along the member from
+    /// the global end displacements: the axial displacement linear, the
+    /// transverse one by the cubic Hermite shape functions of the stiffness
+    /// (exact for a member loaded at its ends), rz its slope.
+    std::array<double, 3> displacement_at(const Vector6 &global_displacements, double xi) const;
 
   private:
     double  element_length;

@@ -1,5 +1,6 @@
 // PNG plots drawn by gnuplot from the CSV files of a run. Plots are optional:
-// without gnuplot a warning is printed and the run still succeeds.
+// without gnuplot a warning is printed and the run still succeeds. Legends
+// go below the plot area, so they never cover the data.
 #ifndef poundfe_output_plots_h
 #define poundfe_output_plots_h
 
@@ -14,6 +15,7 @@ namespace poundfe
     std::string using_spec; // gnuplot "using" clause, e.g. "1:3"
     std::string title;
     std::string style = "lines";
+    std::string axes  = ""; // "x1y2": against the right-hand axis
   };
 
   struct Plot
@@ -23,13 +25,19 @@ namespace poundfe
     std::vector<PlotSeries> series;
     bool                    log_y      = false;
     bool                    style_fill = false; // filled boxes (histograms)
+    /// Label of the right-hand axis (series with axes = "x1y2"); empty: none.
+    std::string             y2_label{};
+    /// gnuplot datablocks the series can name as data ("$name"), each with
+    /// a header row: data not in any CSV (e.g. profiles against height).
+    std::string             data_blocks{};
+    /// Further gnuplot settings of this panel (ranges, reference lines).
+    std::string             settings{};
     /// Panels drawn under this one in the same PNG (gnuplot multiplot, one
     /// column); their own `file` and `below` are not used.
     std::vector<Plot>       below{};
     bool                    log_x = false; // e.g. periods of a spectrum
-    /// gnuplot's key position for this panel, e.g. "below" (many curves
-    /// that fill the frame); empty: inside, top right.
-    std::string             key{};
+    std::string             x_range{}; // gnuplot's "[min:max]"; empty: autoscaled
+    std::string             key{};     // gnuplot key placement, e.g. "outside right top"; empty: below
   };
 
   /// Draw the plots; returns the files written. Writes each PNG atomically.

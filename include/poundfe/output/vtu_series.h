@@ -1,8 +1,27 @@
-// ParaView output: the model as a deal.II Triangulation<1,2> (members and
-// storey links are line cells, nodes are vertices) with FESystem(FE_Q(1), 3)
-// for (ux, uy, rz); DataOut<1,2> writes one .vtu per frame and a .pvd index.
-// Cell data: member end forces in local axes (N, V, M at both ends) or the
-// storey shear of a link. deal.II stays inside the implementation.
+// ParaView output: VTK XML unstructured grids (.vtu), one per frame, and a
+// .pvd index (Kitware, "VTK File Formats", VTK User's Guide 11th ed., ch. 19:
+// XML UnstructuredGrid, PVD collection).
+//   Points: one per node (a hinge's member-side node is its joint: they share
+//   the translations), plus `n_member_subdivisions` - 1 interior points per
+//   frame element and one point per rigid barrier. Point data: the
+//   displacement (ux, uy, 0) relative to the ground, for Warp By Vector, and
+//   the rotation rz. Inside an element the displacement is the element's own
+//   interpolation (axial linear, transverse cubic Hermite:
+//   FrameElement::displacement_at), so warped members show their curvature.
+//   Cells: each frame element a poly-line through its points; each storey of
+//   a shear building a line; each gap a line between its two nodes (or its
+//   node and its barrier); each hinge a vertex at its joint.
+//   Cell data: kind (0 frame element, 1 storey, 2 gap, 3 hinge), building and
+//   member ids (1-based; a member split into several elements keeps one id),
+//   member end forces in local axes (N, V, M at both ends; a storey's shear
+//   as V), `force` (storey shear, contact force, hinge moment), `contact`
+//   (1 while a gap is closed), `penetration`, the Bouc-Wen variable `z` and
+//   the plastic deformation (hinge rotation or storey drift minus force over
+//   initial stiffness) of hinges and hysteretic storeys.
+// Arrays are written in VTK's compressed binary form (zlib, base64), as
+// deal.II's DataOut does by default.
+// deal.II's DataOut writes every cell's vertices again (duplicated points)
+// and interpolates cell data to points; this writer does neither.
 #ifndef poundfe_output_vtu_series_h
 #define poundfe_output_vtu_series_h
 
@@ -15,19 +34,32 @@
 
 namespace poundfe
 {
+  class NonlinearElements;
+
   class VtuSeries
   {
   public:
+    /// Interior subdivisions of each frame element in the drawing.
+    static constexpr unsigned int n_member_subdivisions = 4;
+
     /// Frames go to <directory>/<name>/<name>-NNNNN.vtu, the index to
     /// <directory>/<name>.pvd.
     VtuSeries(const Model &model, const std::string &directory, const std::string &name);
     ~VtuSeries();
 
-    /// One frame; `u` holds the equations' values; `label` is the time or
-    /// the mode number shown by ParaView.
-    void write(double label, const Vector &u, bool with_forces = true);
+    /// A frame of a time history: `u` holds the equations' values; the
+    /// member end forces from u, the gaps', hinges' and storeys' states from
+    /// `elements` (their committed state).
+    void write(double time, const Vector &u, const NonlinearElements &elements);
+    /// A mode shape, scaled so that its largest translation is
+    /// `mode_amplitude` of the model's largest dimension (the factor is in
+    /// the file's field data `scale`, with `mode`, `frequency_Hz` and
+    /// `period_s`); no forces or states.
+    void write_mode(unsigned int mode, double frequency, const Vector &shape);
     /// Write the .pvd index (atomically).
     void finish();
+
+    static constexpr double mode_amplitude = 0.05;
 
   private:
     struct Impl;
@@ -54,7 +86,7 @@ namespace poundfe
       if (state.step() != next_frame) // a comparison, not a division, per step
         return;
       next_frame += every;
-      series.write(state.time(), state.displacement());
+      series.write(state.time(), state.displacement(), state.elements);
     }
     void finish(const ResponseView &, const RunStatus &) override { series.finish(); }
 
