@@ -5,6 +5,7 @@
 #include <poundfe/analysis/subset.h>
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/analysis/run.h>
+#include <poundfe/analysis/spectrum.h>
 #include <poundfe/analysis/site_hazard_command.h>
 #include <poundfe/analysis/separation.h>
 #include <poundfe/analysis/stationary_pdf.h>
@@ -43,6 +44,10 @@ namespace
     "  ground-motion FILE [--realizations N]\n"
     "                      the ground acceleration a run would use (CSV, PNG); with N,\n"
     "                      realizations 0..N-1 and their ensemble PSD against the target\n"
+    "  spectrum FILE [--realizations N]\n"
+    "                      response spectrum (Sd, PSV, PSA), PGA/PGV/PGD, Arias intensity,\n"
+    "                      D5-95 of the ground motion; with N, the ensemble mean spectrum\n"
+    "                      against the Spectrum section's target and the S0 that matches it\n"
     "  montecarlo FILE     Monte Carlo over the random loading (MPI: mpirun -np P ...)\n"
     "  subset FILE         Subset Simulation of a small exceedance probability (MPI)\n"
     "  fragility FILE      Monte Carlo over PGA levels, lognormal fragility curves (MPI)\n"
@@ -211,6 +216,7 @@ main(int argc, char **argv)
       if (command == "template")
         return template_command(args, err);
       if (command != "run" && command != "modal" && command != "ground-motion" &&
+          command != "spectrum" &&
           command != "sweep" && command != "bifurcation" && command != "site-hazard" &&
           !runs_over_mpi(command))
         {
@@ -239,9 +245,11 @@ main(int argc, char **argv)
         return poundfe::stationary_pdf_command(input, directory, MPI_COMM_WORLD);
       if (command == "ground-motion")
         return poundfe::ground_motion_command(input, directory, line.n_realizations);
+      if (command == "spectrum")
+        return poundfe::spectrum_command(input, directory, line.n_realizations);
       if (line.n_realizations > 0)
         {
-          err << "poundfe: error: --realizations belongs to ground-motion\n";
+          err << "poundfe: error: --realizations belongs to ground-motion and spectrum\n";
           return 1;
         }
       if (command == "separation") // builds its model without contact

@@ -227,6 +227,7 @@ namespace poundfe
     site_hazard.declare(prm);
     drift_limits.declare(prm);
     separation.declare(prm);
+    spectrum.declare(prm);
   }
 
   void
@@ -254,6 +255,7 @@ namespace poundfe
     site_hazard.check(*this);
     drift_limits.finalize(*this);
     separation.check(*this, model.buildings.size());
+    spectrum.check(*this);
   }
 
   void

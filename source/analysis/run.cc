@@ -9,6 +9,7 @@
 #include <poundfe/integration/newmark.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
+#include <poundfe/output/floor_spectra.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
 #include <poundfe/output/response_range.h>
@@ -357,6 +358,12 @@ namespace poundfe
           }
         else // the recorders prepare it after checking their input
           prepare_output_directory(directory);
+        if (options.csv && input.output.floor_spectra)
+          {
+            outputs.push_back(std::make_unique<FloorSpectra>(
+              peaks, input.spectrum.periods(), input.spectrum.damping_ratios, directory));
+            files.push_back(FloorSpectra::file_name);
+          }
         if (options.vtu && input.output.vtu_interval > 0)
           {
             outputs.push_back(std::make_unique<VtuRecorder>(

@@ -469,6 +469,24 @@ namespace poundfe
       }
   }
 
+  Plot
+  RunSummary::floor_spectra_plot() const
+  {
+    const double zeta = analysis.input.spectrum.damping_ratios.front();
+    std::ostringstream title;
+    title << "Floor response spectra (" << 100 * zeta << " % damping)";
+    Plot plot{"floor_spectra.png", title.str(), "period (s)", "pseudo-acceleration (m/s^2)",
+              {{"floor_spectra.csv", "1:2", "ground", "lines dt 2 lc rgb 'black'"}}};
+    plot.log_x         = true;
+    plot.key           = "below"; // one curve per floor
+    unsigned int column = 3; // floor_spectra.csv: period, ground, the floors (first damping)
+    for (const Building &building : analysis.model.buildings)
+      for (unsigned int f = 1; f <= building.floors.size(); ++f)
+        plot.series.push_back({"floor_spectra.csv", "1:" + std::to_string(column++),
+                               building.name + " floor " + std::to_string(f), "lines"});
+    return plot;
+  }
+
   std::vector<std::string>
   RunSummary::draw(const ResponseView &state) const
   {
@@ -553,6 +571,8 @@ namespace poundfe
       all.push_back(energy_plot());
     if (writes("hinges.csv"))
       draw_hysteresis(state, all);
+    if (writes("floor_spectra.csv"))
+      all.push_back(floor_spectra_plot());
     if (writes("phase_portrait.csv"))
       draw_phase_portraits(all);
     if (writes("contact_force.csv"))

@@ -25,6 +25,11 @@ namespace poundfe
                       "more, the interval is widened to fit and the console says so.",
                       dealii::Patterns::Integer(2));
     prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot.");
+    prm.add_parameter("Floor spectra", floor_spectra,
+                      "A run also writes floor_spectra.csv (and floor_spectra.png): the "
+                      "response spectra of every floor's absolute acceleration (and of the "
+                      "ground) at the periods and damping ratios of the Spectrum section, "
+                      "computed while the run steps (sub-steps included).");
     prm.add_parameter("Number of modes", n_modes,
                       "Modes reported (0: no modal analysis, for a large model whose "
                       "damping needs no modes).",

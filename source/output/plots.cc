@@ -35,6 +35,7 @@ namespace poundfe
              << "set xlabel " << quoted(plot.x_label) << "\n"
              << "set ylabel " << quoted(plot.y_label) << "\n"
              << (plot.log_y ? "set logscale y\n" : "unset logscale y\n")
+             << (plot.log_x ? "set logscale x\n" : "unset logscale x\n")
              << (plot.x_range.empty() ? "set autoscale x\n" : "set xrange " + plot.x_range + "\n")
              << "set key " << (plot.key.empty() ? "below" : plot.key) << "\n"
              << (plot.style_fill ? "set style fill solid 0.5 border\n" : "set style fill empty\n")

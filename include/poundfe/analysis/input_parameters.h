@@ -14,6 +14,7 @@
 #include <poundfe/analysis/sweep.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/excitation/excitation_parameters.h>
+#include <poundfe/excitation/spectrum_parameters.h>
 #include <poundfe/integration/time_integration_parameters.h>
 #include <poundfe/model/contact_parameters.h>
 #include <poundfe/model/friction_parameters.h>
@@ -62,6 +63,7 @@ namespace poundfe
     SiteHazardParameters      site_hazard;
     DriftLimitParameters      drift_limits;
     SeparationParameters      separation;
+    SpectrumParameters        spectrum;    // Spectrum (response spectra)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
 

@@ -61,6 +61,8 @@ namespace poundfe
     Plot energy_plot() const;
     /// hysteresis_<label>.png: one loop per building.
     void draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const;
+    /// PSA of every floor and of the ground against the period (floor_spectra.csv).
+    Plot floor_spectra_plot() const;
 
     const Analysis     &analysis;
     const Excitation   &excitation;

@@ -23,6 +23,7 @@ namespace poundfe
     unsigned int       max_vtu_frames = 2000; // a longer run widens the VTU interval
     bool               plots        = true;
     unsigned int       n_modes      = 6;
+    bool               floor_spectra = false; // floor_spectra.csv of a run
     RecorderParameters recorders;
     /// Output/Warnings (output/response_range.h); 0: no warning.
     double             drift_warning    = 0.10; // storey drift ratio, roof displacement / height

@@ -35,6 +35,7 @@ namespace poundfe
     /// Panels drawn under this one in the same PNG (gnuplot multiplot, one
     /// column); their own `file` and `below` are not used.
     std::vector<Plot>       below{};
+    bool                    log_x = false; // e.g. periods of a spectrum
     std::string             x_range{}; // gnuplot's "[min:max]"; empty: autoscaled
     std::string             key{};     // gnuplot key placement, e.g. "outside right top"; empty: below
   };
