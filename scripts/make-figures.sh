@@ -8,6 +8,14 @@
 #   spillway-sliding.png    poundfe run input/spillway-sliding.prm (phase portrait)
 #   default-*.png           poundfe run input/two-buildings.prm (the default example):
 #                           drift profile, energy balance, contact forces, a hinge's loop
+#   site-hazard.png         poundfe site-hazard input/site-hazard.prm
+#   drift-limits.png        poundfe run input/site-hazard.prm (drift profile with limits)
+#   spectrum-kt.png, ensemble-spectrum-ec8.png, floor-spectra.png
+#                           poundfe spectrum input/floor-spectra.prm [--realizations 50],
+#                           poundfe run input/floor-spectra.prm
+#   separation.png, pounding-probability.png
+#                           poundfe separation input/separation.prm (100 realizations,
+#                           about a minute)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 poundfe=build/poundfe
@@ -37,4 +45,19 @@ for plot in drift_profile energy contact_force; do
   cp "$work/default/$plot.png" "doc/figures/default-${plot//_/-}.png"
 done
 cp "$work/default"/hysteresis_A3_*.png doc/figures/default-hysteresis.png
+"$poundfe" site-hazard input/site-hazard.prm --output "$work/hazard" > /dev/null
+cp "$work/hazard/hazard.png" doc/figures/site-hazard.png
+"$poundfe" run input/site-hazard.prm --output "$work/limits" > /dev/null
+cp "$work/limits/drift_profile.png" doc/figures/drift-limits.png
+
+"$poundfe" spectrum input/floor-spectra.prm --output "$work/spectrum" > /dev/null
+cp "$work/spectrum/spectrum.png" doc/figures/spectrum-kt.png
+"$poundfe" spectrum input/floor-spectra.prm --realizations 50 --output "$work/ensemble" > /dev/null
+cp "$work/ensemble/ensemble_spectrum.png" doc/figures/ensemble-spectrum-ec8.png
+"$poundfe" run input/floor-spectra.prm --output "$work/floors" > /dev/null
+cp "$work/floors/floor_spectra.png" doc/figures/floor-spectra.png
+
+"$poundfe" separation input/separation.prm --output "$work/separation" > /dev/null
+cp "$work/separation/separation.png" doc/figures/separation.png
+cp "$work/separation/pounding_probability.png" doc/figures/pounding-probability.png
 ls -l doc/figures
