@@ -24,7 +24,10 @@ namespace
   {
     const std::string file =
       (std::filesystem::temp_directory_path() / "poundfe_drift_limits.prm").string();
-    std::ofstream(file) << "subsection Drift limits\n" << section << "end\n";
+    // a parameter outside the section too: a file that sets nothing is refused
+    std::ofstream(file) << "subsection Drift limits\n"
+                        << section << "end\nsubsection Time integration\n"
+                        << "  set Time step = 0.01\nend\n";
     try
       {
         const InputParameters input = read_parameters(file);
