@@ -2,6 +2,7 @@
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/stick_slip_report.h>
+#include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/peak_response.h>
@@ -153,10 +154,18 @@ namespace poundfe
         {
           const unsigned int i    = floors.index(b, f);
           const std::string  name = model.buildings[b].name + "," + std::to_string(f + 1) + ",";
-          drift += name + std::to_string(floors.peak_drift_ratio()[i]) + "," +
-                   std::to_string(floors.peak_drift_time()[i]) + "\n";
-          accel += name + std::to_string(floors.peak_acceleration()[i]) + "," +
-                   std::to_string(floors.peak_displacement()[i]) + "\n";
+          // every number in the shortest text that reads back exactly
+          // (std::to_string kept 6 decimals: 3 digits of a drift ratio)
+          drift += name;
+          append_number(drift, floors.peak_drift_ratio()[i]);
+          drift += ',';
+          append_number(drift, floors.peak_drift_time()[i]);
+          drift += '\n';
+          accel += name;
+          append_number(accel, floors.peak_acceleration()[i]);
+          accel += ',';
+          append_number(accel, floors.peak_displacement()[i]);
+          accel += '\n';
         }
     write_file_atomically(directory + "/drift_profile.csv", drift);
     write_file_atomically(directory + "/acceleration_profile.csv", accel);
