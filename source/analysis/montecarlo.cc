@@ -1,6 +1,7 @@
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/analysis/statistics.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/progress.h>
@@ -130,14 +131,6 @@ namespace poundfe
       return rows;
     }
 
-    std::string
-    rounded(const double x, const int digits = 3)
-    {
-      std::ostringstream s;
-      s.precision(digits);
-      s << x;
-      return s.str();
-    }
   } // namespace
 
   std::vector<double>

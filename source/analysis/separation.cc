@@ -6,6 +6,7 @@
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/separation.h>
 #include <poundfe/analysis/statistics.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/progress.h>
@@ -91,14 +92,6 @@ namespace poundfe
       return where;
     }
 
-    std::string
-    rounded(const double x, const int digits = 3)
-    {
-      std::ostringstream s;
-      s.precision(digits);
-      s << x;
-      return s.str();
-    }
   } // namespace
 
   std::vector<AdjacentPair>

@@ -1,5 +1,7 @@
 #include <poundfe/base/numbers.h>
 
+#include <sstream>
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -103,5 +105,13 @@ namespace poundfe
   {
     char buffer[32];
     return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
+  }
+  std::string
+  rounded(const double x, const int digits)
+  {
+    std::ostringstream s;
+    s.precision(digits);
+    s << x;
+    return s.str();
   }
 } // namespace poundfe

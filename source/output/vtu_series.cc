@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <optional>
 
 namespace poundfe
 {
@@ -301,20 +302,21 @@ namespace poundfe
       if (sources[p].node >= 0)
         for (unsigned int c = 0; c < 3; ++c)
           d[p][c] = dof_value(u, sources[p].node, static_cast<Component>(c));
-    int     element = -1;
-    Vector6 ue;
+    int                         element = -1;
+    Vector6                     ue;
+    std::optional<FrameElement> frame;
     for (unsigned int p = 0; p < points.size(); ++p)
       if (sources[p].element >= 0)
         {
-          const Member &m = model.members[sources[p].element];
           if (sources[p].element != element) // interior points come element by element
             {
-              element = sources[p].element;
-              ue      = element_displacements(m, u);
+              element         = sources[p].element;
+              const Member &m = model.members[element];
+              ue              = element_displacements(m, u);
+              frame.emplace(model.nodes[m.nodes[0]].position, model.nodes[m.nodes[1]].position,
+                            m.section);
             }
-          const FrameElement frame(model.nodes[m.nodes[0]].position,
-                                   model.nodes[m.nodes[1]].position, m.section);
-          d[p] = frame.displacement_at(ue, sources[p].xi);
+          d[p] = frame->displacement_at(ue, sources[p].xi);
         }
     return d;
   }

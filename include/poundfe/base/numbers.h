@@ -42,6 +42,9 @@ namespace poundfe
   /// Shortest round-trip text of x: "0.015", "-1e-300", "1e+308", "inf", "nan".
   std::string number_text(double x);
 
+  /// x to `digits` significant digits, for the console ("0.0151", "2.5e-05").
+  std::string rounded(double x, int digits = 3);
+
   /// A count that may be huge: "100000000" below 10^15, "1e+311" above,
   /// "unboundedly many" when infinite.
   std::string count_text(double n);
