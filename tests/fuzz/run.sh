@@ -15,6 +15,10 @@
 # MAX_SECONDS (default 3600), whichever comes first, under nice -n 10;
 # seeds: input/*.prm, tests/cli/*.json, tests/cli/bad/*.prm and
 # tests/fuzz/seeds-at2/. Exit 0 when neither target found anything.
+# FUZZ_TARGETS=at2 (or parameters) runs one target; FUZZ_FORK=2 runs two
+# worker processes per target. Measured (README, "Fuzzing"):
+#   FUZZ_TARGETS=at2 nice -n 19 tests/fuzz/run.sh build 1000000 4200
+#   FUZZ_FORK=2 FUZZ_TARGETS=parameters nice -n 19 tests/fuzz/run.sh build 1000000 4000
 set -euo pipefail
 src=$(cd "$(dirname "$0")/../.." && pwd)
 build=$(cd "${1:-$src/build}" && pwd)
