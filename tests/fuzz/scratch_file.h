@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <sys/stat.h>
@@ -27,6 +28,14 @@ namespace poundfe_fuzz
         std::abort(); // no scratch directory: nothing can be fuzzed
       return pattern;
     }();
+    // removed when the process exits (each -fork job is a process of its own)
+    static const bool removed_at_exit = [] {
+      return std::atexit([] {
+               std::error_code ignored;
+               std::filesystem::remove_all(directory, ignored);
+             }) == 0;
+    }();
+    (void)removed_at_exit;
     const std::string file = directory + "/" + name;
     std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char *>(data),
                                                 static_cast<std::streamsize>(size));
