@@ -414,7 +414,8 @@ namespace poundfe
               csv += '\n';
             }
           Plot panel{"separation.png",
-                     "required separation of " + pair.name + " against level",
+                     "required separation of " + pair.name + " against level" +
+                       (spectrum ? " (response spectrum)" : ""),
                      "separation (m)", "level (m)", {}};
           const std::string only = "(($1==" + std::to_string(p + 1) + ")?$";
           for (unsigned int c = 0; c < rule_names.size(); ++c) // ASCE 7 dashed: it may equal SRSS

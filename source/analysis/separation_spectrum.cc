@@ -1,7 +1,7 @@
 // The response-spectrum route of the `separation` command: modal peaks of
 // the Eurocode 8 elastic spectrum combined by SRSS and CQC. Equations and
 // sources in include/poundfe/analysis/separation_spectrum.h and
-// doc/theory.md §7.2.
+// doc/theory.md §7.1b.
 #include <poundfe/analysis/separation_spectrum.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>

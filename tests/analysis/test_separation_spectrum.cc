@@ -1,4 +1,4 @@
-// The response-spectrum route of `separation` (theory §7.2) against
+// The response-spectrum route of `separation` (theory §7.1b) against
 // references computed here, independently of the code under test:
 //   - the Eurocode 8 type 1 spectrum on ground B written out from EN 1998-1
 //     Table 3.2 and eq. 3.2-3.6 (S = 1.2, TB = 0.15 s, TC = 0.5 s, TD = 2 s);

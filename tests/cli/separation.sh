@@ -80,7 +80,7 @@ done
 same_summary "$work/one/summary.json" "$work/two/summary.json" "separation: summary differs between 1 and 2 ranks"
 echo "ok   separation: -np 2 gives the tables of one rank"
 
-# the response-spectrum route (theory §7.2): each one-storey building's peak is
+# the response-spectrum route (theory §7.1b): each one-storey building's peak is
 # Sd = Se(T, zeta) (T / 2 pi)^2 of EN 1998-1 (type 1, ground B: S 1.2, TC 0.5 s,
 # TD 2 s), written out here, at its own T and zeta (0.5 s, 0.05; 0.8 s, 0.03);
 # the run removes the earlier Monte Carlo's probability files of $work/one

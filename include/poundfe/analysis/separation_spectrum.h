@@ -22,8 +22,8 @@
 //   Modes: a given number, or the fewest whose effective masses sum to at
 //   least 90 % of the mass and that include every mode above 5 % (EN 1998-1
 //   §4.3.3.3.1(3)).
-// Sources: CEN, EN 1998-1:2004 Eurocode 8, Part 1, §3.2.2.2, §3.2.2.5
-// (eq. 3.7), §4.3.3.3; Der Kiureghian, A. (1981), A response spectrum method
+// Sources: CEN, EN 1998-1:2004 Eurocode 8, Part 1, §3.2.2.2 (eq. 3.2-3.7),
+// §4.3.3.3, §4.4.2.7; Der Kiureghian, A. (1981), A response spectrum method
 // for random vibration analysis of MDF systems, Earthquake Engineering and
 // Structural Dynamics 9, 419-435; Chopra, A. K., Dynamics of Structures,
 // 4th ed. (2012), §13.2 and §13.7.
