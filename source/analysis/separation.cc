@@ -779,6 +779,9 @@ namespace poundfe
                                          !input.nodal_forces.white_noise.empty());
     const unsigned int         rank = dealii::Utilities::MPI::this_mpi_process(comm);
     dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    std::optional<SpectrumPeaks> spectrum; // before any output: it may find bad input
+    if (by_spectrum && rank == 0)
+      spectrum = spectrum_peaks(analysis, pairs);
     if (rank == 0)
       create_directories(directory);
     if (rank == 0 && !by_spectrum) // not this run's
@@ -788,13 +791,11 @@ namespace poundfe
     std::string             status  = "completed", method;
     unsigned long           n_completed = 0;
     int                     exit_status = 0;
-    std::optional<SpectrumPeaks> spectrum;
     if (by_spectrum)
       {
         if (rank != 0)
           return 0;
-        spectrum = spectrum_peaks(analysis, pairs);
-        method   = spectrum->method;
+        method = spectrum->method;
         fill_from_spectrum(*spectrum, input.separation.modal_combination, results);
         for (const char *stale : {"pounding_probability.csv", "pounding_probability.png"})
           std::filesystem::remove(directory + "/" + stale);

@@ -100,8 +100,14 @@ namespace poundfe
       const Vector        influence = system.influence.segment(range[0], range[1] - range[0]);
       const Eigensolver   solver    = analysis.input.modal.eigensolver;
       const unsigned int  most      = solver == Eigensolver::sparse ?
-                                        std::max(1u, max_sparse_modes(mass)) :
+                                        max_sparse_modes(mass) :
                                         static_cast<unsigned int>(mass.rows());
+      if (most == 0)
+        analysis.input.fail("Modal analysis/Eigensolver",
+                            "the sparse eigensolver finds no mode of building '" +
+                              analysis.model.buildings[b].name + "' (" +
+                              std::to_string(mass.rows()) +
+                              " equations) for the response spectrum; use dense or auto");
       if (n_wanted > 0)
         return compute_modes(mass, stiffness, influence, std::min(n_wanted, most), solver);
       for (unsigned int n = std::min(12u, most);; n = std::min(2 * n, most))
