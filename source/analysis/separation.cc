@@ -404,12 +404,12 @@ namespace poundfe
               for (const double x : rule_values(r.rules))
                 csv += ',', append_number(csv, x);
               if (spectrum)
-                for (const CombinedDisplacement &u : spectrum->levels[p][l])
-                  csv += ',', append_number(csv, u.srss);
-              if (spectrum)
-                for (const CombinedDisplacement &u : spectrum->levels[p][l])
-                  csv += ',', append_number(csv, u.cqc);
-              if (!spectrum)
+                {
+                  const auto &[left, right] = spectrum->levels[p][l];
+                  for (const double x : {left.srss, right.srss, left.cqc, right.cqc})
+                    csv += ',', append_number(csv, x);
+                }
+              else
                 csv += ',', append_number(csv, r.time_history);
               csv += '\n';
             }
