@@ -21,6 +21,9 @@
 //   linearly in height between its floors below and above (its base: 0) at
 //   every step; u_i is the peak of that history. Floor displacement: the
 //   mean ux of the floor's joints (output/floor_response.h).
+//   Response-spectrum route (Separation/Peak displacements): u_i by modal
+//   combination of the Eurocode 8 spectrum, no time history
+//   (analysis/separation_spectrum.h).
 //   With random loading: Monte Carlo without contact; u_i and the
 //   time-history value are the means over the realizations (EN 1998-1
 //   §4.3.3.4.3(3) takes the average of the response histories), and the
@@ -81,6 +84,9 @@ namespace poundfe
     double weight = 0;
   };
 
+  /// The value at `where` of per-floor values x (FloorResponse order).
+  double value_at(const std::vector<double> &floor_values, const LevelInterpolation &where);
+
   struct CommonLevel
   {
     double                            level           = 0; // m
@@ -132,8 +138,6 @@ namespace poundfe
     const std::vector<std::vector<LevelResponse>> &responses() const { return levels; }
 
   private:
-    double displacement_at(const LevelInterpolation &where) const;
-
     const std::vector<AdjacentPair>        &pairs;
     FloorResponse                           floors;
     std::vector<std::vector<LevelResponse>> levels;
