@@ -2,6 +2,7 @@
 // the probability of pounding against the gap width. Equations and sources
 // in include/poundfe/analysis/separation.h and doc/theory.md §7.1.
 #include <poundfe/analysis/montecarlo.h>
+#include <poundfe/analysis/pounding_hazard.h>
 #include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/separation.h>
@@ -24,6 +25,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace poundfe
@@ -206,6 +208,18 @@ namespace poundfe
         }
   }
 
+  std::vector<double>
+  gap_grid(const SeparationParameters &p, const double largest)
+  {
+    if (!p.gap_values.empty())
+      return p.gap_values;
+    const double        top = largest > 0 ? 1.2 * largest : 1.0;
+    std::vector<double> gaps;
+    for (unsigned int k = 0; k < p.n_gap_values; ++k)
+      gaps.push_back(top * k / (p.n_gap_values - 1));
+    return gaps;
+  }
+
   std::vector<ExceedancePoint>
   exceedance_curve(const std::vector<double> &sample, const std::vector<double> &gaps,
                    const double confidence)
@@ -297,14 +311,11 @@ namespace poundfe
       return names;
     }
 
-    /// The gaps of the exceedance curve: the input's, or an even grid from 0
-    /// past the largest approach and the existing gaps.
+    /// The gaps of the exceedance curve: past the largest approach and the existing gaps.
     std::vector<double>
     gap_grid(const SeparationParameters &p, const std::vector<AdjacentPair> &pairs,
              const std::vector<PairResult> &results)
     {
-      if (!p.gap_values.empty())
-        return p.gap_values;
       double top = 0;
       for (std::size_t i = 0; i < pairs.size(); ++i)
         {
@@ -312,11 +323,7 @@ namespace poundfe
           for (const double d : results[i].largest_approach)
             top = std::max(top, d);
         }
-      top = top > 0 ? 1.2 * top : 1.0;
-      std::vector<double> gaps;
-      for (unsigned int k = 0; k < p.n_gap_values; ++k)
-        gaps.push_back(top * k / (p.n_gap_values - 1));
-      return gaps;
+      return poundfe::gap_grid(p, top);
     }
 
     /// The gap whose P(D > g) is the target, interpolated (type-7 quantile).
@@ -546,7 +553,8 @@ namespace poundfe
     write_summary(const std::string &directory, const InputParameters &input,
                   const Model &model, const std::vector<AdjacentPair> &pairs,
                   const std::vector<PairResult> &results, const std::string &status,
-                  const std::string &method, const unsigned long n_realizations)
+                  const std::string &method, const unsigned long n_realizations,
+                  const std::optional<PoundingHazard> &hazard)
     {
       const SeparationParameters &s = input.separation;
       JsonWriter                  json;
@@ -560,7 +568,10 @@ namespace poundfe
       json.begin_array("pairs");
       for (std::size_t p = 0; p < pairs.size(); ++p)
         write_pair(json, s, model, pairs[p], results[p]);
-      json.end_array().end_object();
+      json.end_array();
+      if (hazard)
+        write_pounding_hazard_json(json, input, pairs, *hazard);
+      json.end_object();
       write_file_atomically(directory + "/summary.json", json.str());
     }
 
@@ -720,6 +731,9 @@ namespace poundfe
                    "buildings " + pair.name + " have no level in common (a floor of either "
                    "above both bases and up to the lower roof)");
     const bool random = input.ground_motion.is_stochastic() || !input.nodal_forces.white_noise.empty();
+    std::optional<PoundingHazard> hazard; // read and checked before any output
+    if (input.separation.hazard.given())
+      hazard = prepare_pounding_hazard(analysis);
     const unsigned int         rank = dealii::Utilities::MPI::this_mpi_process(comm);
     dealii::ConditionalOStream pcout(std::cout, rank == 0);
     if (rank == 0)
@@ -733,7 +747,9 @@ namespace poundfe
       {
         const MonteCarloTable table =
           run_realizations_without_contact(analysis, pairs, directory, comm, results);
-        if (table.interrupted)
+        if (hazard && !table.interrupted)
+          run_pounding_hazard(analysis, pairs, directory, comm, *hazard);
+        if (table.interrupted || (hazard && hazard->interrupted))
           status = "interrupted", exit_status = interrupted_exit_status();
         if (rank != 0)
           return exit_status;
@@ -769,14 +785,23 @@ namespace poundfe
     write_separation_table(directory, analysis.model, pairs, results, plots);
     if (random)
       write_probability_table(directory, input, pairs, results, plots);
+    if (hazard && !hazard->interrupted)
+      write_pounding_hazard(directory, input, pairs, *hazard, plots);
+    else // no stale site-hazard files of an earlier run
+      for (const char *stale : {"pounding_hazard.csv", "pounding_given_pga.csv", "pounding_hazard.png"})
+        std::filesystem::remove(directory + "/" + stale);
     if (input.output.plots && status == "completed")
       draw_plots(directory, plots);
-    write_summary(directory, input, analysis.model, pairs, results, status, method, n_completed);
+    write_summary(directory, input, analysis.model, pairs, results, status, method, n_completed,
+                  hazard);
 
     pcout << "poundfe separation: " << method << "\n";
     report(std::cout, input, pairs, results);
+    if (hazard && rank == 0)
+      report_pounding_hazard(std::cout, input, pairs, *hazard);
     pcout << "results in " << directory << "/ (summary.json, separation.csv"
           << (random ? ", pounding_probability.csv, realizations.csv" : "")
+          << (hazard ? ", pounding_hazard.csv, pounding_given_pga.csv, pga_*g/" : "")
           << (input.output.plots && status == "completed" ? ", *.png" : "") << ")\n";
     return exit_status;
   }

@@ -46,6 +46,7 @@ namespace poundfe
                       "Of the pointwise Wilson score band of the probability of pounding, "
                       "in (0, 1).",
                       Patterns::Double(0, 1));
+    hazard.declare(prm);
     prm.leave_subsection();
   }
 
@@ -65,5 +66,6 @@ namespace poundfe
     for (std::size_t i = 1; i < gap_values.size(); ++i)
       if (!(gap_values[i] > gap_values[i - 1]))
         input.fail(s + "Gap values", "must be ascending");
+    hazard.check(input);
   }
 } // namespace poundfe

@@ -153,6 +153,10 @@ namespace poundfe
                                                 const std::vector<double> &gaps,
                                                 double                     confidence);
 
+  /// The gaps of an exceedance curve: the input's Gap values, or Number of
+  /// gap values evenly from 0 to 1.2 `largest` (1 m when largest <= 0).
+  std::vector<double> gap_grid(const SeparationParameters &p, double largest);
+
   /// The `separation` command on every rank of `comm` (the Monte Carlo of
   /// random loading splits over them; a ground motion without randomness
   /// runs on rank 0). Returns the exit status.

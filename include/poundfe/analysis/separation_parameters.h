@@ -4,6 +4,7 @@
 #ifndef poundfe_analysis_separation_parameters_h
 #define poundfe_analysis_separation_parameters_h
 
+#include <poundfe/analysis/pounding_hazard_parameters.h>
 #include <poundfe/base/input_file.h>
 
 #include <vector>
@@ -26,6 +27,7 @@ namespace poundfe
     unsigned int        n_gap_values             = 200;
     std::vector<double> gap_values;                     // m; empty: the grid
     double              confidence_level         = 0.95;
+    PoundingHazardParameters hazard; // the subsection Site hazard
 
     /// Declare the section (entered and left here).
     void declare(dealii::ParameterHandler &prm);
