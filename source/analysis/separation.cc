@@ -747,7 +747,9 @@ namespace poundfe
       {
         const MonteCarloTable table =
           run_realizations_without_contact(analysis, pairs, directory, comm, results);
-        if (hazard && !table.interrupted)
+        if (hazard && table.interrupted) // the levels not begun: the same command runs them
+          hazard->interrupted = true;
+        else if (hazard)
           run_pounding_hazard(analysis, pairs, directory, comm, *hazard);
         if (table.interrupted || (hazard && hazard->interrupted))
           status = "interrupted", exit_status = interrupted_exit_status();
