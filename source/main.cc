@@ -62,6 +62,8 @@ namespace
     "  separation FILE     joint width of adjacent buildings: ABS, SRSS, DDC, EC8 and\n"
     "                      ASCE 7 rules against the time history without contact; with\n"
     "                      random loading, P(pounding) against the gap (MPI)\n"
+    "                      and, with a site hazard, P(pounding in T years) and the gap\n"
+    "                      for a target (Separation/Site hazard)\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "  template KIND       a commented starting file on standard output, KIND one of\n"
     "                      frame, shear, mesh, pounding, stochastic\n"

@@ -17,7 +17,8 @@ namespace poundfe
                       "The site's hazard curve, relative to this parameter file: the "
                       "hazard_curve.csv (columns pga_g and annual_rate_per_year, interpolated "
                       "linearly in log-log) or the summary.json (its Gumbel or Poisson fit) "
-                      "that `poundfe site-hazard` writes. Empty: none, or the power law below. "
+                      "that `poundfe site-hazard` writes. Empty: none, or the power law of "
+                      "Annual rate at 1 g and Exponent. "
                       "With a hazard, separation runs its Monte Carlo at each PGA level and "
                       "reports the annual rate and the probability over the Exposure of "
                       "pounding against the gap width.",
