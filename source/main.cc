@@ -63,6 +63,8 @@ namespace
     "                      ASCE 7 rules against the time history without contact (or\n"
     "                      by response spectrum, Separation/Peak displacements); with\n"
     "                      random loading, P(pounding) against the gap (MPI)\n"
+    "                      and, with a site hazard, P(pounding in T years) and the gap\n"
+    "                      for a target (Separation/Site hazard)\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "  template KIND       a commented starting file on standard output, KIND one of\n"
     "                      frame, shear, mesh, pounding, stochastic\n"

@@ -2,6 +2,7 @@
 // the probability of pounding against the gap width. Equations and sources
 // in include/poundfe/analysis/separation.h and doc/theory.md §7.1.
 #include <poundfe/analysis/montecarlo.h>
+#include <poundfe/analysis/pounding_hazard.h>
 #include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/separation.h>
@@ -206,6 +207,18 @@ namespace poundfe
         }
   }
 
+  std::vector<double>
+  gap_grid(const SeparationParameters &p, const double largest)
+  {
+    if (!p.gap_values.empty())
+      return p.gap_values;
+    const double        top = largest > 0 ? 1.2 * largest : 1.0;
+    std::vector<double> gaps;
+    for (unsigned int k = 0; k < p.n_gap_values; ++k)
+      gaps.push_back(top * k / (p.n_gap_values - 1));
+    return gaps;
+  }
+
   std::vector<ExceedancePoint>
   exceedance_curve(const std::vector<double> &sample, const std::vector<double> &gaps,
                    const double confidence)
@@ -297,14 +310,11 @@ namespace poundfe
       return names;
     }
 
-    /// The gaps of the exceedance curve: the input's, or an even grid from 0
-    /// past the largest approach and the existing gaps.
+    /// The gaps of the exceedance curve: past the largest approach and the existing gaps.
     std::vector<double>
     gap_grid(const SeparationParameters &p, const std::vector<AdjacentPair> &pairs,
              const std::vector<PairResult> &results)
     {
-      if (!p.gap_values.empty())
-        return p.gap_values;
       double top = 0;
       for (std::size_t i = 0; i < pairs.size(); ++i)
         {
@@ -312,11 +322,7 @@ namespace poundfe
           for (const double d : results[i].largest_approach)
             top = std::max(top, d);
         }
-      top = top > 0 ? 1.2 * top : 1.0;
-      std::vector<double> gaps;
-      for (unsigned int k = 0; k < p.n_gap_values; ++k)
-        gaps.push_back(top * k / (p.n_gap_values - 1));
-      return gaps;
+      return poundfe::gap_grid(p, top);
     }
 
     /// The gap whose P(D > g) is the target, interpolated (type-7 quantile).
@@ -566,7 +572,7 @@ namespace poundfe
                   const Model &model, const std::vector<AdjacentPair> &pairs,
                   const std::vector<PairResult> &results, const std::string &status,
                   const std::string &method, const unsigned long n_realizations,
-                  const SpectrumPeaks *spectrum)
+                  const SpectrumPeaks *spectrum, const std::optional<PoundingHazard> &hazard)
     {
       const SeparationParameters &s = input.separation;
       JsonWriter                  json;
@@ -583,7 +589,10 @@ namespace poundfe
       json.begin_array("pairs");
       for (std::size_t p = 0; p < pairs.size(); ++p)
         write_pair(json, s, model, pairs[p], results[p], spectrum == nullptr);
-      json.end_array().end_object();
+      json.end_array();
+      if (hazard)
+        write_pounding_hazard_json(json, input, pairs, *hazard);
+      json.end_object();
       write_file_atomically(directory + "/summary.json", json.str());
     }
 
@@ -777,6 +786,15 @@ namespace poundfe
                  "(ec8-type-1 or ec8-type-2)");
     const bool random = !by_spectrum && (input.ground_motion.is_stochastic() ||
                                          !input.nodal_forces.white_noise.empty());
+    std::optional<PoundingHazard> hazard; // read and checked before any output
+    if (by_spectrum && input.separation.hazard.given())
+      input.fail(input.separation.hazard.hazard_file.empty() ?
+                   "Separation/Site hazard/Annual rate at 1 g" :
+                   "Separation/Site hazard/File",
+                 "a site hazard needs the time-history route (Monte Carlo of a random "
+                 "ground motion at its PGA levels), not Peak displacements = response spectrum");
+    if (input.separation.hazard.given())
+      hazard = prepare_pounding_hazard(analysis);
     const unsigned int         rank = dealii::Utilities::MPI::this_mpi_process(comm);
     dealii::ConditionalOStream pcout(std::cout, rank == 0);
     std::optional<SpectrumPeaks> spectrum; // before any output: it may find bad input
@@ -804,7 +822,11 @@ namespace poundfe
       {
         const MonteCarloTable table =
           run_realizations_without_contact(analysis, pairs, directory, comm, results);
-        if (table.interrupted)
+        if (hazard && table.interrupted) // the levels not begun: the same command runs them
+          hazard->interrupted = true;
+        else if (hazard)
+          run_pounding_hazard(analysis, pairs, directory, comm, *hazard);
+        if (table.interrupted || (hazard && hazard->interrupted))
           status = "interrupted", exit_status = interrupted_exit_status();
         if (rank != 0)
           return exit_status;
@@ -843,16 +865,24 @@ namespace poundfe
       write_spectrum_modes(directory, analysis.model, *by_modes);
     if (random)
       write_probability_table(directory, input, pairs, results, plots);
+    if (hazard && !hazard->interrupted)
+      write_pounding_hazard(directory, input, pairs, *hazard, plots);
+    else // no stale site-hazard files of an earlier run
+      for (const char *stale : {"pounding_hazard.csv", "pounding_given_pga.csv", "pounding_hazard.png"})
+        std::filesystem::remove(directory + "/" + stale);
     if (input.output.plots && status == "completed")
       draw_plots(directory, plots);
     write_summary(directory, input, analysis.model, pairs, results, status, method, n_completed,
-                  by_modes);
+                  by_modes, hazard);
 
     pcout << "poundfe separation: " << method << "\n";
     report(std::cout, input, pairs, results, !by_spectrum);
+    if (hazard && rank == 0)
+      report_pounding_hazard(std::cout, input, pairs, *hazard);
     pcout << "results in " << directory << "/ (summary.json, separation.csv"
           << (random ? ", pounding_probability.csv, realizations.csv" : "")
           << (by_spectrum ? ", spectrum_modes.csv" : "")
+          << (hazard ? ", pounding_hazard.csv, pounding_given_pga.csv, pga_*g/" : "")
           << (input.output.plots && status == "completed" ? ", *.png" : "") << ")\n";
     return exit_status;
   }

@@ -82,6 +82,7 @@ namespace poundfe
                       "whose effective masses sum to at least 90 % of the building's mass and "
                       "that include every mode above 5 % (EN 1998-1 §4.3.3.3.1(3)).",
                       Patterns::Integer(0, 10000));
+    hazard.declare(prm);
     prm.leave_subsection();
   }
 
@@ -101,5 +102,6 @@ namespace poundfe
     for (std::size_t i = 1; i < gap_values.size(); ++i)
       if (!(gap_values[i] > gap_values[i - 1]))
         input.fail(s + "Gap values", "must be ascending");
+    hazard.check(input);
   }
 } // namespace poundfe

@@ -7,6 +7,7 @@
 #define poundfe_analysis_separation_parameters_h
 
 #include <poundfe/base/choices.h>
+#include <poundfe/analysis/pounding_hazard_parameters.h>
 #include <poundfe/base/input_file.h>
 
 #include <vector>
@@ -48,6 +49,7 @@ namespace poundfe
     PeakDisplacements   peak_displacements       = PeakDisplacements::time_history;
     ModalCombination    modal_combination        = ModalCombination::cqc;
     unsigned int        n_spectrum_modes         = 0; // 0: EN 1998-1 §4.3.3.3.1(3)
+    PoundingHazardParameters hazard; // the subsection Site hazard
 
     /// Declare the section (entered and left here).
     void declare(dealii::ParameterHandler &prm);
