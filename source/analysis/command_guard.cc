@@ -47,8 +47,9 @@ namespace poundfe
       catch (const OutputError &e)
         {
           remove_temporaries(c.directory); // what a full disk allows
-          std::cerr << "poundfe: error: the summary of the " << status << " " << c.command
-                    << " could not be written either: " << e.what() << "\n";
+          if (e.what() != message) // not the same error (the directory) twice
+            std::cerr << "poundfe: error: the summary of the " << status << " " << c.command
+                      << " could not be written either: " << e.what() << "\n";
           return "no summary.json";
         }
     }
