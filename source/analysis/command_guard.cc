@@ -17,7 +17,8 @@ namespace poundfe
     /// "failed" with `message`), after removing its temporaries; prepares
     /// the directory first when the command had not (so the earlier run's
     /// files do not stay beside it) unless `only_if_begun`. Says on stderr
-    /// when even this cannot be written. Returns what it wrote, for the
+    /// when even this cannot be written (unless for the very error being
+    /// reported: the directory). Returns what it wrote, for the
     /// console ("summary.json", or why not).
     std::string
     leave_summary(const GuardedCommand &c, const std::string &status,
