@@ -148,3 +148,24 @@ BOOST_AUTO_TEST_CASE(an_overflowing_gap_is_named_with_its_cause)
   BOOST_TEST(cause.find("is not finite") != std::string::npos);
   BOOST_TEST(cause.back() != ' ');
 }
+
+BOOST_AUTO_TEST_CASE(the_reported_empty_cause_is_a_contact_force_that_overflows)
+{
+  // The symptom of issue 14 item 8 reproduced: a Hertz gap of stiffness
+  // 1e300 under a motion scaled by 1e60 (the residual's norm stays finite):
+  // before, "failed even at dt = 6.25e-05 s (4 step cuts): shear3-shear2@3: "
+  // and nothing more.
+  InputParameters input = read_parameters("input/shear-pair-pounding.prm");
+  input.contact.law                                   = "hertz";
+  input.contact.stiffness                             = 1e300;
+  input.ground_motion.scale_factor                    = 1e60;
+  input.time_integration.end_time                     = 1;
+  input.time_integration.newmark.newton.max_step_cuts = 4;
+  const std::string message = failure_of(input);
+  BOOST_TEST_MESSAGE(message);
+  const std::string cause = cause_of(message);
+  BOOST_TEST(cause.find("shear3-shear2@3: the hertz contact force is not finite (inf N) at "
+                        "closure ") == 0u);
+  BOOST_TEST(cause.find("the stiffness 1e+300 or the motion is out of range") !=
+             std::string::npos);
+}
