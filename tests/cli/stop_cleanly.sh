@@ -42,12 +42,20 @@ interrupt() {
   echo "ok   SIGTERM mid-$name after $after s: exit status 143, summary.json interrupted, no *.tmp, the earlier files gone"
 }
 
+# Inputs long enough that a fast machine still receives the signal
+# mid-command (measured 2026-11-23, 2 cores: a 4-value sweep finished within
+# the 1.5 s; the 29-value bifurcation took 3.2 s and 200 spectrum
+# realizations 5.8 s): 100 sweep values, 290 bifurcation values, 2000
+# realizations.
 { cat "$input/two-buildings.prm"
-  printf 'subsection Sweep\n  set Parameter = Model/Separations\n  set Values = 0, 0.005, 0.01, 0.02\nend\n'
+  printf 'subsection Sweep\n  set Parameter = Model/Separations\n  set Values = linspace 0 0.02 100\nend\n'
 } > "$work/sweep.prm"
+sed 's/set Values            = linspace 0.70 0.84 29/set Values = linspace 0.70 0.84 290/' \
+  "$input/duffing-bifurcation.prm" > "$work/bifurcation.prm"
+grep -q 'linspace 0.70 0.84 290' "$work/bifurcation.prm" || fail "the bifurcation input was not lengthened"
 interrupt sweep 1.5 "$poundfe" sweep "$work/sweep.prm"
-interrupt bifurcation 1.5 "$poundfe" bifurcation "$input/duffing-bifurcation.prm"
-interrupt spectrum 1.5 "$poundfe" spectrum "$input/two-buildings.prm" --realizations 200
+interrupt bifurcation 1.5 "$poundfe" bifurcation "$work/bifurcation.prm"
+interrupt spectrum 1.5 "$poundfe" spectrum "$input/two-buildings.prm" --realizations 2000
 
 # --- modal, summary.json blocked -----------------------------------------
 d=$work/blocked
