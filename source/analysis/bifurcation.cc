@@ -41,8 +41,9 @@ namespace poundfe
     prm.enter_subsection("Bifurcation");
     sweep.declare_entries(prm);
     prm.add_parameter("Response", response,
-                      "The sampled DOF: 'building floor node dof' (building and floor "
-                      "1-based, node 0-based from the left, dof ux|uy|rz). Unit: -.");
+                      "The sampled DOF: 'building floor node dof' (building: its number, "
+                      "1-based, or its Name; floor 1-based, node 0-based from the left, dof "
+                      "ux|uy|rz). Unit: -.");
     add_choice(prm, "Response quantity", quantity,
                "Displacement (relative to the ground, m) or velocity (m/s) of the DOF. Unit: -.",
                {"displacement", "velocity"});
@@ -67,8 +68,8 @@ namespace poundfe
                       "Also the largest Lyapunov exponent (a second, perturbed trajectory: "
                       "twice the work). Unit: -.");
     prm.add_parameter("Perturbation", perturbation,
-                      "d0 of the Lyapunov exponent relative to the state's norm. Unit: "
-                      "dimensionless.",
+                      "d0 of the Lyapunov exponent relative to the state's norm. "
+                      "Unit: dimensionless.",
                       Patterns::Double(0));
     prm.leave_subsection();
   }

@@ -18,8 +18,8 @@ namespace poundfe
                       "elastic analysis at the reduced design forces. Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Importance factor", importance_factor,
-                      "ASCE 7-16 I_e of each building (one for all, or one per building). Unit: "
-                      "dimensionless.",
+                      "ASCE 7-16 I_e of each building (one for all, or one per building). "
+                      "Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Behaviour factor", behaviour_factor,
                       "Eurocode 8 q of each building (one for all, or one per building): "
@@ -28,13 +28,13 @@ namespace poundfe
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Coinciding levels factor", coinciding_levels_factor,
                       "Eurocode 8 §4.4.2.7(4): the SRSS separation is multiplied by this "
-                      "where both buildings have a floor at the level (EN 1998-1: 0.7). Unit: "
-                      "dimensionless.",
+                      "where both buildings have a floor at the level (EN 1998-1: 0.7). "
+                      "Unit: dimensionless.",
                       Patterns::Double(0, 1));
     prm.add_parameter("Target probability", target_probability,
                       "Probability of pounding per event (one realization of the random "
-                      "ground motion) for which the gap is reported, in (0, 1). Unit: "
-                      "dimensionless.",
+                      "ground motion) for which the gap is reported, in (0, 1). "
+                      "Unit: dimensionless.",
                       Patterns::Double(0, 1));
     prm.add_parameter("Number of gap values", n_gap_values,
                       "Gap widths of the exceedance curve, equally spaced from 0 to 1.2 times "

@@ -34,8 +34,8 @@ namespace poundfe
                       "Unit: year.",
                       Patterns::Integer(0));
     prm.add_parameter("Last year", last_year,
-                      "Last year of the observation period (0: the year of the last event). Unit: "
-                      "year.",
+                      "Last year of the observation period (0: the year of the last event). "
+                      "Unit: year.",
                       Patterns::Integer(0));
     add_choice(prm, "Fit", fit,
                "gumbel: Gumbel type I of the annual maxima of the site intensity (maximum "
@@ -66,9 +66,8 @@ namespace poundfe
                       "theta of a lognormal fragility P(F | a) = Phi(ln(a/theta)/beta), g "
                       "(0: none, or the File's). Unit: g.",
                       Patterns::Double(0));
-    prm.add_parameter("Beta", fragility_beta, "beta of the typed-in fragility. Unit: "
-                      "dimensionless.",
-                      
+    prm.add_parameter("Beta", fragility_beta,
+                      "beta of the typed-in fragility. Unit: dimensionless.",
                       Patterns::Double(0));
     prm.add_parameter("File", fragility_file,
                       "summary.json written by `poundfe fragility` (relative to this parameter "

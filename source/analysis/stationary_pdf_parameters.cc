@@ -15,7 +15,8 @@ namespace poundfe
     prm.enter_subsection("Stationary PDF");
     prm.add_parameter("Response", response,
                       "'building floor node' whose horizontal displacement x (ux) and "
-                      "velocity are sampled (building and floor 1-based, node 0-based). Unit: -.");
+                      "velocity are sampled (building: its number, 1-based, or its Name; "
+                      "floor 1-based, node 0-based). Unit: -.");
     prm.add_parameter("Burn-in time", burn_in, "Time from rest before sampling starts. Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Sampling time", sampling_time,
@@ -50,8 +51,8 @@ namespace poundfe
                       Patterns::List(Patterns::Double(0), 1, 3, ","));
     prm.add_parameter("Peak threshold", peak_threshold,
                       "A peak of a kernel density is a local maximum whose height and "
-                      "prominence are at least this fraction of the global maximum. Unit: "
-                      "dimensionless.",
+                      "prominence are at least this fraction of the global maximum. "
+                      "Unit: dimensionless.",
                       Patterns::Double(0, 1));
     sweep.declare_entries(prm);
     prm.leave_subsection();

@@ -100,8 +100,8 @@ namespace poundfe
                       "first ';'-separated item of a list entry (e.g. Nodal forces/Harmonic:6, "
                       "the forcing frequency). Unit: -.");
     prm.add_parameter("Values", values_text,
-                      "The values: 'v1, v2, ...' or 'linspace a b n' (n values from a to b). Unit: "
-                      "that of Parameter.");
+                      "The values: 'v1, v2, ...' or 'linspace a b n' (n values from a to b). "
+                      "Unit: that of Parameter.");
     prm.add_parameter("Label", label,
                       "The parameter's name on the plots' axes, e.g. 'forcing amplitude f (N)' "
                       "(empty: its path). Unit: -.");

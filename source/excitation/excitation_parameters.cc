@@ -110,12 +110,12 @@ namespace poundfe
                "zeta_g. Clough-Penzien presets use omega_f = omega_g/10, zeta_f 0.6. Unit: -.",
                soil_names());
     prm.add_parameter("omega_g", omega_g, "Ground filter frequency, rad/s (custom). Unit: rad/s.");
-    prm.add_parameter("zeta_g", zeta_g, "Ground filter damping ratio (custom). Unit: "
-                      "dimensionless.");
+    prm.add_parameter("zeta_g", zeta_g, "Ground filter damping ratio (custom). "
+                      "Unit: dimensionless.");
     prm.add_parameter("omega_f", omega_f, "Clough-Penzien high-pass frequency, rad/s (custom). "
                       "Unit: rad/s.");
-    prm.add_parameter("zeta_f", zeta_f, "Clough-Penzien high-pass damping (custom). Unit: "
-                      "dimensionless.");
+    prm.add_parameter("zeta_f", zeta_f, "Clough-Penzien high-pass damping (custom). "
+                      "Unit: dimensionless.");
     add_choice(prm, "Method", method,
                "Kanai-Tajimi/Clough-Penzien samples: white noise through the filter "
                "(exact over each held interval), or the spectral representation "
@@ -148,8 +148,8 @@ namespace poundfe
     prm.add_parameter("Rise end", jennings_rise_end, "Jennings: end of (t/t1)^2 rise. Unit: s.");
     prm.add_parameter("Plateau end", jennings_plateau_end, "Jennings: end of plateau. Unit: s.");
     prm.add_parameter("Decay rate", jennings_decay, "Jennings: exp(-c (t - t2)) rate. Unit: 1/s.");
-    prm.add_parameter("Saragoni b", saragoni_b, "Saragoni-Hart t^b e^(-ct): b. Unit: "
-                      "dimensionless.");
+    prm.add_parameter("Saragoni b", saragoni_b, "Saragoni-Hart t^b e^(-ct): b. "
+                      "Unit: dimensionless.");
     prm.add_parameter("Saragoni c", saragoni_c, "Saragoni-Hart t^b e^(-ct): c. Unit: 1/s.");
     prm.add_parameter("Shinozuka alpha", shinozuka_alpha, "e^(-at)-e^(-bt): a. Unit: 1/s.");
     prm.add_parameter("Shinozuka beta", shinozuka_beta, "e^(-at)-e^(-bt): b. Unit: 1/s.");
@@ -210,20 +210,21 @@ namespace poundfe
     prm.enter_subsection("Nodal forces");
     prm.add_parameter("Harmonic", harmonic,
                       "Harmonic forces 'building floor node dof amplitude omega phase', "
-                      "separated by ';'. floor 0 is the base, node counts from the left "
-                      "(0-based), dof ux|uy|rz, amplitude in N (N m), omega in rad/s. Unit: per "
-                      "field.",
+                      "separated by ';', e.g. '1 3 0 ux 1e4 12; B 2 0 ux 5e3 20 0.5'. The "
+                      "building: its number (1-based) or its Name; floor 1-based, node "
+                      "0-based from the left, dof ux|uy|rz, amplitude in N (N m), omega in "
+                      "rad/s, phase in rad (optional, 0). Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Tabulated", tabulated,
                       "Tabulated forces 'building floor node dof file' separated by ';'; "
                       "the file has two columns: time, force (linear in between, zero "
-                      "outside). Unit: per field.",
+                      "outside); building, floor, node, dof as in Harmonic. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("White noise", white_noise,
                       "Random forces 'building floor node dof S0' separated by ';': white "
                       "noise of two-sided intensity S0 (N^2 s), held over the sample "
-                      "interval of Ground motion/Stochastic; part of each realization. Unit: per "
-                      "field.",
+                      "interval of Ground motion/Stochastic; part of each realization; "
+                      "building, floor, node, dof as in Harmonic. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.leave_subsection();
   }

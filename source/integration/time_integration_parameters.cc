@@ -87,8 +87,8 @@ namespace poundfe
                "backward-euler (first order, most robust). Unit: -.",
                hysteresis_integration_names());
     prm.add_parameter("Law tolerance", law_tolerance,
-                      "Tolerance of the local Newton iteration of a law (on z). Unit: "
-                      "dimensionless.");
+                      "Tolerance of the local Newton iteration of a law (on z). "
+                      "Unit: dimensionless.");
     prm.add_parameter("Law maximum iterations", law_max_iterations,
                       "Local iterations before the law reports failure. Unit: count.",
                       Patterns::Integer(1, 1000));

@@ -51,8 +51,8 @@ namespace poundfe
                "exactly that coefficient. Unit: -.",
                contact_damping_from_names());
     prm.add_parameter("Damping", damping,
-                      "xi (Kelvin-Voigt laws, Jankowski) or xi_bar (Hertz-damp) when given. Unit: "
-                      "dimensionless.");
+                      "xi (Kelvin-Voigt laws, Jankowski) or xi_bar (Hertz-damp) when given. "
+                      "Unit: dimensionless.");
     prm.add_parameter("Coefficient of restitution", restitution, "e in (0, 1]; concrete ~0.65. "
                       "Unit: dimensionless.");
     add_choice(prm, "Hertz-damp formula", hertz_damp_formula,
@@ -72,9 +72,11 @@ namespace poundfe
                       "the same level, the contact point is on the neighbour's facing "
                       "column at that height (frames). Unit: -.");
     prm.add_parameter("Barriers", barriers,
-                      "Rigid barriers 'building floor side gap' separated by ';': the "
-                      "floor's facing joint touches a barrier on the left or right side "
-                      "once it has moved by gap (m) towards it. Unit: per field.",
+                      "Rigid barriers 'building floor side gap' separated by ';', e.g. "
+                      "'1 2 right 0.015; B 3 left 0.02': the floor's facing joint touches "
+                      "a barrier on the left or right side once it has moved by gap (m) "
+                      "towards it. The building: its number (1-based) or its Name; the "
+                      "floor 1-based. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
   }
 

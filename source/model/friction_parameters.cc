@@ -25,14 +25,15 @@ namespace poundfe
                       "Smooth-and-discontinuous springs 'building floor node K L H' "
                       "separated by ';', between the node's ux and the ground: "
                       "F = K x (1 - L/sqrt(x^2 + H^2)) (K in N/m, L and H in m; H = 0 is "
-                      "the discontinuous limit). K is assembled into the linear K. Unit: per "
-                      "field.",
-                      
+                      "the discontinuous limit). K is assembled into the linear K. The "
+                      "building: its number (1-based) or its Name; floor 1-based, node "
+                      "0-based from the left. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Cubic springs", cubic,
                       "Duffing springs 'building floor node k1 k3' separated by ';', "
                       "between the node's ux and the ground: F = k1 x + k3 x^3 (N/m, "
-                      "N/m^3). k1 is assembled into the linear K. Unit: per field.",
+                      "N/m^3). k1 is assembled into the linear K. The building: its number "
+                      "or its Name. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
   }
 
@@ -43,7 +44,8 @@ namespace poundfe
                       "Friction elements 'building floor node' separated by ';': the "
                       "node's ux slides on the ground or on a belt moving at Belt "
                       "velocity (a base sliding on its foundation, a floor on a "
-                      "bearing, a mass on a belt). Unit: -.",
+                      "bearing, a mass on a belt). The building: its number (1-based) or "
+                      "its Name. Unit: -.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     add_choice(prm, "Model", law.model,
                "elastic-plastic: Coulomb slider with a stiff stick spring, by return "
@@ -54,18 +56,18 @@ namespace poundfe
     prm.add_parameter("Static coefficient", law.static_coefficient,
                       "mu_s: stick holds while |F| <= mu_s N. Unit: dimensionless.");
     prm.add_parameter("Kinetic coefficient", law.kinetic_coefficient,
-                      "mu_k: F = mu_k N in slip (without a Stribeck curve); mu_k <= mu_s. Unit: "
-                      "dimensionless.");
+                      "mu_k: F = mu_k N in slip (without a Stribeck curve); mu_k <= mu_s. "
+                      "Unit: dimensionless.");
     prm.add_parameter("Stribeck velocity", law.stribeck_velocity,
                       "v_s in m/s: mu = mu_k + (mu_s - mu_k) exp(-|v_slip|/v_s) in slip; "
                       "0: no Stribeck curve. Unit: m/s.");
     prm.add_parameter("Belt velocity", law.belt_velocity,
-                      "v0 in m/s: the surface's velocity; the slip velocity is x' - v0. Unit: "
-                      "m/s.");
+                      "v0 in m/s: the surface's velocity; the slip velocity is x' - v0. "
+                      "Unit: m/s.");
     prm.add_parameter("Normal force", law.normal.constant, "C0. Unit: N.");
     prm.add_parameter("Normal force per displacement", law.normal.per_displacement,
-                      "C1 in N/m: N = C0 + C1 |x| + C2 |x'| (N < 0: lift-off, no friction). Unit: "
-                      "N/m.");
+                      "C1 in N/m: N = C0 + C1 |x| + C2 |x'| (N < 0: lift-off, no friction). "
+                      "Unit: N/m.");
     prm.add_parameter("Normal force per velocity", law.normal.per_velocity, "C2. Unit: N s/m.");
     prm.add_parameter("Normal force from SD spring", normal_force_from_sd_spring,
                       "N also carries the vertical reaction of the SD spring at the same "

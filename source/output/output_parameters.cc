@@ -19,8 +19,8 @@ namespace poundfe
                "float64 rows x columns, little-endian, C order, with the column names in "
                "<name>.columns.txt; for long or large runs; no plots of time series). Unit: -.",
                output_format_names());
-    prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none). Unit: "
-                      "s.");
+    prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none). "
+                      "Unit: s.");
     prm.add_parameter("Maximum VTU frames", max_vtu_frames,
                       "Most VTU frames a run writes: when End time / VTU interval would give "
                       "more, the interval is widened to fit and the console says so. Unit: count.",
@@ -44,8 +44,8 @@ namespace poundfe
                       "drift ratio, or a building's peak roof displacement over its height, "
                       "exceeds this: 2.5 times the collapse-prevention drift of concrete "
                       "frames (0.04, FEMA 356 Table C1-3), which the elastic members and the "
-                      "Bouc-Wen hinges (no strength loss) cannot represent. 0: no warning. Unit: "
-                      "dimensionless.",
+                      "Bouc-Wen hinges (no strength loss) cannot represent. 0: no warning. "
+                      "Unit: dimensionless.",
                       dealii::Patterns::Double(0));
     prm.add_parameter("Rotation", rotation_warning,
                       "A run warns when a node of a frame rotates more than this, rad: the frame "

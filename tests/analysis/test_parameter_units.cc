@@ -56,7 +56,8 @@ namespace
     if (at == std::string::npos || documentation.find("Unit: ", at + 1) != std::string::npos)
       return "";
     const std::size_t end = documentation.find(". ", at);
-    std::string unit = documentation.substr(at + 6, end == std::string::npos ? std::string::npos : end - at - 6);
+    std::string unit =
+      documentation.substr(at + 6, end == std::string::npos ? std::string::npos : end - at - 6);
     if (end == std::string::npos && !unit.empty() && unit.back() == '.')
       unit.pop_back();
     return unit;
@@ -68,7 +69,7 @@ namespace
   {
     std::string out;
     for (std::size_t i = 0; i < name.size(); ++i)
-      if (name[i] == '_' && i + 2 < name.size() + 0 && std::isxdigit(name[i + 1]) &&
+      if (name[i] == '_' && i + 2 < name.size() && std::isxdigit(name[i + 1]) &&
           std::isxdigit(name[i + 2]))
         {
           out += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
