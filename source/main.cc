@@ -1,6 +1,7 @@
 // poundfe command line: poundfe <command> [FILE] [--output DIR]
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/analysis/bifurcation.h>
+#include <poundfe/analysis/command_guard.h>
 #include <poundfe/analysis/montecarlo.h>
 #include <poundfe/analysis/subset.h>
 #include <poundfe/analysis/sweep.h>
@@ -60,8 +61,11 @@ namespace
     "  site-hazard FILE    site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
     "                      Poisson fit, return periods, fragility x hazard\n"
     "  separation FILE     joint width of adjacent buildings: ABS, SRSS, DDC, EC8 and\n"
-    "                      ASCE 7 rules against the time history without contact; with\n"
+    "                      ASCE 7 rules against the time history without contact (or\n"
+    "                      by response spectrum, Separation/Peak displacements); with\n"
     "                      random loading, P(pounding) against the gap (MPI)\n"
+    "                      and, with a site hazard, P(pounding in T years) and the gap\n"
+    "                      for a target (Separation/Site hazard)\n"
     "  print-parameters    every parameter with its documentation and default\n"
     "  template KIND       a commented starting file on standard output, KIND one of\n"
     "                      frame, shear, mesh, pounding, stochastic\n"
@@ -69,10 +73,12 @@ namespace
     "--output DIR overrides the file's 'Output/Directory'. Any other option is an error.\n"
     "Exit status: 0 done, 1 bad input or command line (one message, nothing written),\n"
     "2 numerical failure (results so far kept), 128 + signal when interrupted.\n"
-    "SIGINT (Ctrl-C) or SIGTERM stops montecarlo, subset, fragility, stationary-pdf and\n"
-    "separation "
-    "after the realizations under way, with the results so far (status \"interrupted\",\n"
-    "exit status 128 + signal); the same command resumes all but subset.\n"
+    "SIGINT (Ctrl-C) or SIGTERM stops run, montecarlo, subset, fragility, stationary-pdf\n"
+    "and separation after the step or realizations under way, with the results so far\n"
+    "(status \"interrupted\", exit status 128 + signal); the same command resumes all but\n"
+    "run and subset. Any other command stops at its next file write or time step: no\n"
+    "*.tmp left, summary.json says \"interrupted\". A file that cannot be written (full\n"
+    "disk) exits 1 with summary.json \"failed\" and the reason, when it still fits.\n"
     "A second signal kills. Progress shows on a terminal (POUNDFE_PROGRESS=1: always).\n";
 
   /// The arguments without the options, and the options' values.
@@ -195,10 +201,9 @@ main(int argc, char **argv)
       (line.help ? std::cout : err) << usage;
       return line.help ? 0 : 1;
     }
-  // The commands whose loops poll for SIGINT/SIGTERM and stop cleanly. (A
-  // handler that no loop polls would only delay Ctrl-C, so modal and
-  // ground-motion keep the default action.)
-  if (runs_over_mpi(command) || command == "run")
+  // Every command that writes files stops cleanly on SIGINT/SIGTERM: at its
+  // own safe points, or at the next file write (analysis/command_guard.h).
+  if (command != "print-parameters" && command != "template")
     poundfe::install_interruption_handlers();
   try
     {
@@ -241,35 +246,40 @@ main(int argc, char **argv)
                    input.time_integration.linear_solver + " spreads one run over the MPI ranks: "
                    "on more than one rank only 'run' can use it, not '" + command + "'");
       const std::string directory = line.output.empty() ? input.output.directory : line.output;
-      if (command == "stationary-pdf" && line.n_realizations == 0)
-        return poundfe::stationary_pdf_command(input, directory, MPI_COMM_WORLD);
-      if (command == "ground-motion")
-        return poundfe::ground_motion_command(input, directory, line.n_realizations);
-      if (command == "spectrum")
-        return poundfe::spectrum_command(input, directory, line.n_realizations);
-      if (line.n_realizations > 0)
-        {
-          err << "poundfe: error: --realizations belongs to ground-motion and spectrum\n";
-          return 1;
-        }
-      if (command == "separation") // builds its model without contact
-        return poundfe::separation_command(input, directory, MPI_COMM_WORLD);
-      if (command == "sweep") // an analysis per value
-        return poundfe::sweep_command(input, directory);
-      if (command == "bifurcation")
-        return poundfe::bifurcation_command(input, directory);
-      if (command == "site-hazard") // no model
-        return poundfe::site_hazard_command(input, directory);
-      const poundfe::Analysis analysis = poundfe::prepare_analysis(input);
-      if (command == "modal")
-        return poundfe::modal_command(analysis, directory);
-      if (command == "montecarlo")
-        return poundfe::montecarlo_command(analysis, directory, MPI_COMM_WORLD);
-      if (command == "subset")
-        return poundfe::subset_command(analysis, directory, MPI_COMM_WORLD);
-      if (command == "fragility")
-        return poundfe::fragility_command(analysis, directory, MPI_COMM_WORLD);
-      return poundfe::run_command(analysis, directory);
+      const bool writes = !mpi || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const poundfe::GuardedCommand guarded{
+        command, input, directory, writes, !poundfe::handles_interruption_itself(command)};
+      return poundfe::guard_command(guarded, [&]() -> int {
+        if (command == "stationary-pdf" && line.n_realizations == 0)
+          return poundfe::stationary_pdf_command(input, directory, MPI_COMM_WORLD);
+        if (command == "ground-motion")
+          return poundfe::ground_motion_command(input, directory, line.n_realizations);
+        if (command == "spectrum")
+          return poundfe::spectrum_command(input, directory, line.n_realizations);
+        if (line.n_realizations > 0)
+          {
+            err << "poundfe: error: --realizations belongs to ground-motion and spectrum\n";
+            return 1;
+          }
+        if (command == "separation") // builds its model without contact
+          return poundfe::separation_command(input, directory, MPI_COMM_WORLD);
+        if (command == "sweep") // an analysis per value
+          return poundfe::sweep_command(input, directory);
+        if (command == "bifurcation")
+          return poundfe::bifurcation_command(input, directory);
+        if (command == "site-hazard") // no model
+          return poundfe::site_hazard_command(input, directory);
+        const poundfe::Analysis analysis = poundfe::prepare_analysis(input);
+        if (command == "modal")
+          return poundfe::modal_command(analysis, directory);
+        if (command == "montecarlo")
+          return poundfe::montecarlo_command(analysis, directory, MPI_COMM_WORLD);
+        if (command == "subset")
+          return poundfe::subset_command(analysis, directory, MPI_COMM_WORLD);
+        if (command == "fragility")
+          return poundfe::fragility_command(analysis, directory, MPI_COMM_WORLD);
+        return poundfe::run_command(analysis, directory);
+      });
     }
   catch (const poundfe::InputError &e)
     {

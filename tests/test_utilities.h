@@ -12,7 +12,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <random>
+#include <string>
 
 namespace poundfe_test
 {
@@ -105,6 +108,16 @@ namespace poundfe_test
         worst = std::max(worst, (fd - tangent.col(j)).norm() / tangent.col(j).norm());
       }
     return worst;
+  }
+
+  /// Writes `contents` to poundfe_<name> in the system's temporary directory; returns its path.
+  inline std::string
+  temporary_file(const std::string &name, const std::string &contents)
+  {
+    const std::string path =
+      (std::filesystem::temp_directory_path() / ("poundfe_" + name)).string();
+    std::ofstream(path) << contents;
+    return path;
   }
 } // namespace poundfe_test
 

@@ -583,23 +583,13 @@ namespace poundfe
   int
   fragility_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
   {
-    const InputParameters        &input = analysis.input;
-    const GroundMotionParameters &g     = input.ground_motion;
-    if (g.type != GroundMotionType::kanai_tajimi && g.type != GroundMotionType::clough_penzien)
-      throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
-                       "fragility curves scale a Kanai-Tajimi or Clough-Penzien motion to "
-                       "each PGA level; got '" + ground_motion_type_names().name(g.type) + "'");
-    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+    const InputParameters     &input = analysis.input;
+    const unsigned int         rank  = dealii::Utilities::MPI::this_mpi_process(comm);
     dealii::ConditionalOStream pcout(std::cout, rank == 0);
     dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
     timer.enter_subsection("set-up");
     RealizationRunner  runner(analysis);
-    // S0 is proportional to PGA^2, so amplitudes scale with PGA / PGA of the input's S0.
-    const MotionGenerator &generator = *runner.stochastic_load().ground_generator();
-    const double reference_pga =
-      g.peak_factor * std::sqrt(generator.motion().spectral_intensity *
-                                stationary_variance_per_unit_s0(generator.motion().filter)) *
-      g.scale_factor / standard_gravity;
+    const double       reference_pga = runner.reference_pga("fragility curves");
     if (rank == 0) // an earlier run's realizations stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});
     timer.leave_subsection();

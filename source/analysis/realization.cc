@@ -1,8 +1,10 @@
 #include <poundfe/analysis/realization.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/floor_response.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <deal.II/base/exceptions.h>
@@ -76,11 +78,28 @@ namespace poundfe
   }
 
   bool
-  RealizationRunner::run(const std::uint64_t realization, const Observers &observers)
+  RealizationRunner::run(const std::uint64_t realization, const Observers &observers,
+                         const double amplitude_factor)
   {
     load.standard_normals(realization, xi);
-    load.apply(xi, excitation);
+    load.apply(xi, excitation, amplitude_factor);
     return history.run(excitation, observers).completed();
+  }
+
+  double
+  RealizationRunner::reference_pga(const std::string &purpose) const
+  {
+    const InputParameters        &input = analysis.input;
+    const GroundMotionParameters &g     = input.ground_motion;
+    if (g.type != GroundMotionType::kanai_tajimi && g.type != GroundMotionType::clough_penzien)
+      throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
+                       purpose + " scale a Kanai-Tajimi or Clough-Penzien motion to each PGA "
+                       "level; got '" + ground_motion_type_names().name(g.type) + "'");
+    const MotionGenerator &generator = *load.ground_generator();
+    return g.peak_factor *
+           std::sqrt(generator.motion().spectral_intensity *
+                     stationary_variance_per_unit_s0(generator.motion().filter)) *
+           g.scale_factor / standard_gravity;
   }
 
   bool

@@ -121,6 +121,7 @@ namespace poundfe
       double                           variance = 0;
       for (unsigned int r = 0; r < n_realizations; ++r)
         {
+          throw_if_interrupted();
           standard_normals(generator.motion().seed, r, xi);
           generator.generate(xi.data(), samples[r]);
           for (double &a : samples[r])
@@ -261,6 +262,7 @@ namespace poundfe
                 status.kind = RunStatus::Kind::interrupted;
                 break;
               }
+            throw_if_interrupted(); // a command that stops at safe points (sweep, ...)
             integrator.advance(load);
             view.set_step(step, excitation.ground_acceleration(step * dt));
             for (StepObserver *observer : observers)

@@ -2,9 +2,11 @@
 // the probability of pounding against the gap width. Equations and sources
 // in include/poundfe/analysis/separation.h and doc/theory.md §7.1.
 #include <poundfe/analysis/montecarlo.h>
+#include <poundfe/analysis/pounding_hazard.h>
 #include <poundfe/analysis/realization.h>
 #include <poundfe/analysis/run.h>
 #include <poundfe/analysis/separation.h>
+#include <poundfe/analysis/separation_spectrum.h>
 #include <poundfe/analysis/statistics.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/base/exceptions.h>
@@ -24,6 +26,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace poundfe
@@ -156,9 +159,8 @@ namespace poundfe
       }
     FundamentalMode mode;
     mode.omega              = modes->omega[0];
-    const Eigen::VectorXd phi     = modes->shapes.col(0); // mass-normalised
-    const Eigen::VectorXd c_phi   = block(system.damping, range) * phi;
-    mode.damping_ratio            = phi.dot(c_phi) / (2 * mode.omega);
+    mode.damping_ratio = modal_damping_ratio(block(system.damping, range),
+                                             modes->shapes.col(0), mode.omega);
     return mode;
   }
 
@@ -171,9 +173,8 @@ namespace poundfe
   }
 
   double
-  SeparationObserver::displacement_at(const LevelInterpolation &where) const
+  value_at(const std::vector<double> &x, const LevelInterpolation &where)
   {
-    const std::vector<double> &x = floors.displacement();
     const double below = where.below < 0 ? 0.0 : x[where.below];
     return where.below == where.above ? below : (1 - where.weight) * below + where.weight * x[where.above];
   }
@@ -197,13 +198,25 @@ namespace poundfe
         {
           const CommonLevel &where = pairs[p].levels[l];
           LevelResponse     &r     = levels[p][l];
-          const double       u_left  = displacement_at(where.sides[0]);
-          const double       u_right = displacement_at(where.sides[1]);
+          const double       u_left  = value_at(floors.displacement(), where.sides[0]);
+          const double       u_right = value_at(floors.displacement(), where.sides[1]);
           r.peak_left    = std::max(r.peak_left, std::abs(u_left));
           r.peak_right   = std::max(r.peak_right, std::abs(u_right));
           r.approach     = u_left - u_right;
           r.max_approach = std::max(r.max_approach, r.approach);
         }
+  }
+
+  std::vector<double>
+  gap_grid(const SeparationParameters &p, const double largest)
+  {
+    if (!p.gap_values.empty())
+      return p.gap_values;
+    const double        top = largest > 0 ? 1.2 * largest : 1.0;
+    std::vector<double> gaps;
+    for (unsigned int k = 0; k < p.n_gap_values; ++k)
+      gaps.push_back(top * k / (p.n_gap_values - 1));
+    return gaps;
   }
 
   std::vector<ExceedancePoint>
@@ -297,14 +310,11 @@ namespace poundfe
       return names;
     }
 
-    /// The gaps of the exceedance curve: the input's, or an even grid from 0
-    /// past the largest approach and the existing gaps.
+    /// The gaps of the exceedance curve: past the largest approach and the existing gaps.
     std::vector<double>
     gap_grid(const SeparationParameters &p, const std::vector<AdjacentPair> &pairs,
              const std::vector<PairResult> &results)
     {
-      if (!p.gap_values.empty())
-        return p.gap_values;
       double top = 0;
       for (std::size_t i = 0; i < pairs.size(); ++i)
         {
@@ -312,11 +322,7 @@ namespace poundfe
           for (const double d : results[i].largest_approach)
             top = std::max(top, d);
         }
-      top = top > 0 ? 1.2 * top : 1.0;
-      std::vector<double> gaps;
-      for (unsigned int k = 0; k < p.n_gap_values; ++k)
-        gaps.push_back(top * k / (p.n_gap_values - 1));
-      return gaps;
+      return poundfe::gap_grid(p, top);
     }
 
     /// The gap whose P(D > g) is the target, interpolated (type-7 quantile).
@@ -381,10 +387,13 @@ namespace poundfe
     void
     write_separation_table(const std::string &directory, const Model &model,
                            const std::vector<AdjacentPair> &pairs,
-                           const std::vector<PairResult> &results, std::vector<Plot> &plots)
+                           const std::vector<PairResult> &results, std::vector<Plot> &plots,
+                           const SpectrumPeaks *spectrum)
     {
       std::string csv = "pair,left,right,level_m,floors_coincide,u_left_m,u_right_m,abs_m,srss_m,"
-                        "ddc_m,ec8_m,asce7_m,time_history_m\n";
+                        "ddc_m,ec8_m,asce7_m,";
+      csv += spectrum ? "u_left_srss_m,u_right_srss_m,u_left_cqc_m,u_right_cqc_m\n" :
+                        "time_history_m\n";
       Plot        plot;
       for (std::size_t p = 0; p < pairs.size(); ++p)
         {
@@ -400,20 +409,28 @@ namespace poundfe
                 csv += ',', append_number(csv, x);
               for (const double x : rule_values(r.rules))
                 csv += ',', append_number(csv, x);
-              csv += ',';
-              append_number(csv, r.time_history);
+              if (spectrum)
+                {
+                  const auto &[left, right] = spectrum->levels[p][l];
+                  for (const double x : {left.srss, right.srss, left.cqc, right.cqc})
+                    csv += ',', append_number(csv, x);
+                }
+              else
+                csv += ',', append_number(csv, r.time_history);
               csv += '\n';
             }
           Plot panel{"separation.png",
-                     "required separation of " + pair.name + " against level",
+                     "required separation of " + pair.name + " against level" +
+                       (spectrum ? " (response spectrum)" : ""),
                      "separation (m)", "level (m)", {}};
           const std::string only = "(($1==" + std::to_string(p + 1) + ")?$";
           for (unsigned int c = 0; c < rule_names.size(); ++c) // ASCE 7 dashed: it may equal SRSS
             panel.series.push_back(
               {"separation.csv", only + std::to_string(8 + c) + ":1/0):4", rule_names[c],
                c == 4 ? "linespoints dt 2" : "linespoints"});
-          panel.series.push_back({"separation.csv", only + "13:1/0):4",
-                                  "time history (no contact)", "linespoints lw 3 lc rgb 'black'"});
+          if (!spectrum)
+            panel.series.push_back({"separation.csv", only + "13:1/0):4",
+                                    "time history (no contact)", "linespoints lw 3 lc rgb 'black'"});
           panel.series.push_back({"separation.csv", "(($1==" + std::to_string(p + 1) + ")?" +
                                                       std::to_string(pair.existing_gap) + ":1/0):4",
                                   "existing gap", "lines dt 2 lc rgb 'gray40'"});
@@ -486,7 +503,7 @@ namespace poundfe
     /// One pair's object of summary.json.
     void
     write_pair(JsonWriter &json, const SeparationParameters &s, const Model &model,
-               const AdjacentPair &pair, const PairResult &r)
+               const AdjacentPair &pair, const PairResult &r, const bool time_history)
     {
       json.begin_object()
         .value("pair", pair.name)
@@ -499,15 +516,22 @@ namespace poundfe
         .value("right_damping_ratio", r.right_mode.damping_ratio)
         .value("correlation_rho", r.rho);
       const Joint joint = joint_of(r);
-      json.value("time_history_m", joint.time_history).begin_object("required_m");
+      if (time_history)
+        json.value("time_history_m", joint.time_history);
+      json.begin_object("required_m");
       for (unsigned int c = 0; c < 5; ++c)
         json.value(rule_names[c], joint.required[c]);
-      json.end_object().begin_object("relative_to_time_history");
-      for (unsigned int c = 0; c < 5; ++c)
-        json.value(rule_names[c], joint.time_history > 0 ?
-                                    joint.required[c] / joint.time_history - 1 :
-                                    std::numeric_limits<double>::quiet_NaN());
-      json.end_object().value("governing_code_rule", rule_names[joint.governing_code_rule()]);
+      json.end_object();
+      if (time_history)
+        {
+          json.begin_object("relative_to_time_history");
+          for (unsigned int c = 0; c < 5; ++c)
+            json.value(rule_names[c], joint.time_history > 0 ?
+                                        joint.required[c] / joint.time_history - 1 :
+                                        std::numeric_limits<double>::quiet_NaN());
+          json.end_object();
+        }
+      json.value("governing_code_rule", rule_names[joint.governing_code_rule()]);
       json.begin_array("levels");
       for (std::size_t l = 0; l < r.levels.size(); ++l)
         {
@@ -516,8 +540,9 @@ namespace poundfe
             .value("level_m", pair.levels[l].level)
             .value("floors_coincide", pair.levels[l].floors_coincide)
             .value("u_left_m", level.u_left)
-            .value("u_right_m", level.u_right)
-            .value("time_history_m", level.time_history);
+            .value("u_right_m", level.u_right);
+          if (time_history)
+            json.value("time_history_m", level.time_history);
           const auto values = rule_values(level.rules);
           for (unsigned int c = 0; c < 5; ++c)
             json.value(rule_names[c], values[c]);
@@ -546,12 +571,16 @@ namespace poundfe
     write_summary(const std::string &directory, const InputParameters &input,
                   const Model &model, const std::vector<AdjacentPair> &pairs,
                   const std::vector<PairResult> &results, const std::string &status,
-                  const std::string &method, const unsigned long n_realizations)
+                  const std::string &method, const unsigned long n_realizations,
+                  const SpectrumPeaks *spectrum, const std::optional<PoundingHazard> &hazard)
     {
       const SeparationParameters &s = input.separation;
       JsonWriter                  json;
       begin_summary(json, "separation", input, status);
-      json.value("method", method);
+      json.value("method", method)
+        .value("peak_displacements", peak_displacements_names().name(s.peak_displacements));
+      if (spectrum)
+        write_spectrum_summary(json, input, model, *spectrum);
       if (n_realizations > 0)
         json.value("completed_realizations", n_realizations);
       json.value("target_probability", s.target_probability)
@@ -559,8 +588,11 @@ namespace poundfe
         .value("coinciding_levels_factor", s.coinciding_levels_factor);
       json.begin_array("pairs");
       for (std::size_t p = 0; p < pairs.size(); ++p)
-        write_pair(json, s, model, pairs[p], results[p]);
-      json.end_array().end_object();
+        write_pair(json, s, model, pairs[p], results[p], spectrum == nullptr);
+      json.end_array();
+      if (hazard)
+        write_pounding_hazard_json(json, input, pairs, *hazard);
+      json.end_object();
       write_file_atomically(directory + "/summary.json", json.str());
     }
 
@@ -568,7 +600,7 @@ namespace poundfe
     /// history, the governing rule and the probability of pounding.
     void
     report(std::ostream &out, const InputParameters &input, const std::vector<AdjacentPair> &pairs,
-           const std::vector<PairResult> &results)
+           const std::vector<PairResult> &results, const bool time_history)
     {
       const SeparationParameters &s = input.separation;
       for (std::size_t p = 0; p < pairs.size(); ++p)
@@ -584,20 +616,31 @@ namespace poundfe
             {
               const auto values = rule_values(r.levels[l].rules);
               out << "  level " << rounded(pair.levels[l].level) << " m"
-                  << (pair.levels[l].floors_coincide ? "" : " (floors differ)")
-                  << ": time history " << rounded(r.levels[l].time_history) << " m";
+                  << (pair.levels[l].floors_coincide ? "" : " (floors differ)");
+              if (time_history)
+                out << ": time history " << rounded(r.levels[l].time_history) << " m";
+              else
+                out << ": u " << rounded(r.levels[l].u_left) << " and "
+                    << rounded(r.levels[l].u_right) << " m";
               for (unsigned int c = 0; c < 5; ++c)
-                out << ", " << rule_names[c] << " " << rounded(values[c]) << " ("
-                    << percent_of(values[c], r.levels[l].time_history) << ")";
+                {
+                  out << ", " << rule_names[c] << " " << rounded(values[c]);
+                  if (time_history)
+                    out << " (" << percent_of(values[c], r.levels[l].time_history) << ")";
+                }
               out << "\n";
             }
           const Joint        joint     = joint_of(r);
           const unsigned int governing = joint.governing_code_rule();
-          out << "  joint (largest over the levels): time history " << rounded(joint.time_history)
-              << " m; governing code rule " << (governing == 3 ? "EC8 " : "ASCE 7 ")
-              << rounded(joint.required[governing]) << " m; EC8 "
-              << percent_of(joint.required[3], joint.time_history) << ", ASCE 7 "
-              << percent_of(joint.required[4], joint.time_history) << " of the time history\n";
+          out << "  joint (largest over the levels): ";
+          if (time_history)
+            out << "time history " << rounded(joint.time_history) << " m; ";
+          out << "governing code rule " << (governing == 3 ? "EC8 " : "ASCE 7 ")
+              << rounded(joint.required[governing]) << " m";
+          if (time_history)
+            out << "; EC8 " << percent_of(joint.required[3], joint.time_history) << ", ASCE 7 "
+                << percent_of(joint.required[4], joint.time_history) << " of the time history";
+          out << "\n";
           if (!r.largest_approach.empty())
             {
               const auto at_gap = exceedance_curve(r.largest_approach, {pair.existing_gap},
@@ -653,6 +696,22 @@ namespace poundfe
             results[p].levels[l].time_history = response.max_approach;
           }
       return status;
+    }
+
+    /// The response-spectrum route's peaks, by `combination`, into the
+    /// levels (no time-history value).
+    void
+    fill_from_spectrum(const SpectrumPeaks &spectrum, const ModalCombination combination,
+                       std::vector<PairResult> &results)
+    {
+      for (std::size_t p = 0; p < results.size(); ++p)
+        for (std::size_t l = 0; l < results[p].levels.size(); ++l)
+          {
+            LevelResult &level = results[p].levels[l];
+            level.u_left       = spectrum.levels[p][l][0].of(combination);
+            level.u_right      = spectrum.levels[p][l][1].of(combination);
+            level.time_history = std::numeric_limits<double>::quiet_NaN();
+          }
     }
 
     /// Monte Carlo over the random loading: the means of the peaks and the
@@ -719,21 +778,55 @@ namespace poundfe
         input.fail("Model/Number of buildings",
                    "buildings " + pair.name + " have no level in common (a floor of either "
                    "above both bases and up to the lower roof)");
-    const bool random = input.ground_motion.is_stochastic() || !input.nodal_forces.white_noise.empty();
+    const bool by_spectrum =
+      input.separation.peak_displacements == PeakDisplacements::response_spectrum;
+    if (by_spectrum && input.spectrum.target == DesignSpectrum::none)
+      input.fail("Separation/Peak displacements",
+                 "response spectrum needs a design spectrum: set Spectrum/Target "
+                 "(ec8-type-1 or ec8-type-2)");
+    const bool random = !by_spectrum && (input.ground_motion.is_stochastic() ||
+                                         !input.nodal_forces.white_noise.empty());
+    std::optional<PoundingHazard> hazard; // read and checked before any output
+    if (by_spectrum && input.separation.hazard.given())
+      input.fail(input.separation.hazard.hazard_file.empty() ?
+                   "Separation/Site hazard/Annual rate at 1 g" :
+                   "Separation/Site hazard/File",
+                 "a site hazard needs the time-history route (Monte Carlo of a random "
+                 "ground motion at its PGA levels), not Peak displacements = response spectrum");
+    if (input.separation.hazard.given())
+      hazard = prepare_pounding_hazard(analysis);
     const unsigned int         rank = dealii::Utilities::MPI::this_mpi_process(comm);
     dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    std::optional<SpectrumPeaks> spectrum; // before any output: it may find bad input
+    if (by_spectrum && rank == 0)
+      spectrum = spectrum_peaks(analysis, pairs);
     if (rank == 0)
       create_directories(directory);
+    if (rank == 0 && !by_spectrum) // not this run's
+      std::filesystem::remove(directory + "/spectrum_modes.csv");
 
     std::vector<PairResult> results = empty_results(analysis, pairs);
     std::string             status  = "completed", method;
     unsigned long           n_completed = 0;
     int                     exit_status = 0;
-    if (random)
+    if (by_spectrum)
+      {
+        if (rank != 0)
+          return 0;
+        method = spectrum->method;
+        fill_from_spectrum(*spectrum, input.separation.modal_combination, results);
+        for (const char *stale : {"pounding_probability.csv", "pounding_probability.png"})
+          std::filesystem::remove(directory + "/" + stale);
+      }
+    else if (random)
       {
         const MonteCarloTable table =
           run_realizations_without_contact(analysis, pairs, directory, comm, results);
-        if (table.interrupted)
+        if (hazard && table.interrupted) // the levels not begun: the same command runs them
+          hazard->interrupted = true;
+        else if (hazard)
+          run_pounding_hazard(analysis, pairs, directory, comm, *hazard);
+        if (table.interrupted || (hazard && hazard->interrupted))
           status = "interrupted", exit_status = interrupted_exit_status();
         if (rank != 0)
           return exit_status;
@@ -766,17 +859,30 @@ namespace poundfe
       apply_rules(input, pairs[p], results[p]);
 
     std::vector<Plot> plots;
-    write_separation_table(directory, analysis.model, pairs, results, plots);
+    const SpectrumPeaks *by_modes = spectrum ? &*spectrum : nullptr;
+    write_separation_table(directory, analysis.model, pairs, results, plots, by_modes);
+    if (by_modes)
+      write_spectrum_modes(directory, analysis.model, *by_modes);
     if (random)
       write_probability_table(directory, input, pairs, results, plots);
+    if (hazard && !hazard->interrupted)
+      write_pounding_hazard(directory, input, pairs, *hazard, plots);
+    else // no stale site-hazard files of an earlier run
+      for (const char *stale : {"pounding_hazard.csv", "pounding_given_pga.csv", "pounding_hazard.png"})
+        std::filesystem::remove(directory + "/" + stale);
     if (input.output.plots && status == "completed")
       draw_plots(directory, plots);
-    write_summary(directory, input, analysis.model, pairs, results, status, method, n_completed);
+    write_summary(directory, input, analysis.model, pairs, results, status, method, n_completed,
+                  by_modes, hazard);
 
     pcout << "poundfe separation: " << method << "\n";
-    report(std::cout, input, pairs, results);
+    report(std::cout, input, pairs, results, !by_spectrum);
+    if (hazard && rank == 0)
+      report_pounding_hazard(std::cout, input, pairs, *hazard);
     pcout << "results in " << directory << "/ (summary.json, separation.csv"
           << (random ? ", pounding_probability.csv, realizations.csv" : "")
+          << (by_spectrum ? ", spectrum_modes.csv" : "")
+          << (hazard ? ", pounding_hazard.csv, pounding_given_pga.csv, pga_*g/" : "")
           << (input.output.plots && status == "completed" ? ", *.png" : "") << ")\n";
     return exit_status;
   }

@@ -1,4 +1,5 @@
 #include <poundfe/analysis/site_hazard.h>
+#include <poundfe/excitation/ground_motion.h>
 
 #include <boost/math/tools/minima.hpp>
 
@@ -210,6 +211,18 @@ namespace poundfe
       return gumbel.location - gumbel.scale * std::log(-std::log1p(-1.0 / years));
     return poisson.threshold +
            std::log(poisson.rate_above_threshold * years) / poisson.b;
+  }
+
+  double
+  trifunac_brady_pga_g(const double intensity)
+  {
+    return trifunac_brady_acceleration(intensity) / 100.0 / standard_gravity;
+  }
+
+  double
+  annual_rate_of_pga(const IntensityHazard &hazard, const double pga_g)
+  {
+    return hazard.annual_rate(trifunac_brady_intensity(pga_g * standard_gravity * 100));
   }
 
   double

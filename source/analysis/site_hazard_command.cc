@@ -69,12 +69,6 @@ namespace poundfe
       return value;
     }
 
-    double
-    pga_g(const double intensity)
-    {
-      return trifunac_brady_acceleration(intensity) / 100.0 / standard_gravity;
-    }
-
     /// An event with its site values.
     struct SiteEvent
     {
@@ -201,7 +195,7 @@ namespace poundfe
           csv += s.event.date + "," + std::to_string(s.event.year);
           for (const double x : {s.event.epicentre.latitude, s.event.epicentre.longitude,
                                  s.event.magnitude, s.distance_km, s.intensity,
-                                 trifunac_brady_acceleration(s.intensity), pga_g(s.intensity)})
+                                 trifunac_brady_acceleration(s.intensity), trifunac_brady_pga_g(s.intensity)})
             {
               csv += ",";
               append_number(csv, x);
@@ -225,7 +219,7 @@ namespace poundfe
         {
           const double x = low + (high - low) * k / n;
           for (const double v :
-               {x, trifunac_brady_acceleration(x), pga_g(x), hazard.annual_rate(x),
+               {x, trifunac_brady_acceleration(x), trifunac_brady_pga_g(x), hazard.annual_rate(x),
                 hazard.annual_exceedance_probability(x), hazard.return_period(x)})
             {
               append_number(csv, v);
@@ -245,7 +239,7 @@ namespace poundfe
       for (const double T : periods)
         {
           const double x = hazard.intensity_for_return_period(T);
-          for (const double v : {T, x, trifunac_brady_acceleration(x), pga_g(x),
+          for (const double v : {T, x, trifunac_brady_acceleration(x), trifunac_brady_pga_g(x),
                                  trifunac_brady_acceleration(x) / 100, hazard.annual_rate(x)})
             {
               append_number(csv, v);
@@ -360,11 +354,8 @@ namespace poundfe
       c.fragility = p.fragility_median > 0 ?
                       LognormalCurve{p.fragility_median, p.fragility_beta} :
                       read_fragility_summary(input.resolve(p.fragility_file), p.fragility_curve);
-      // the hazard in PGA: lambda(a) = lambda_I(I(a)), I the Trifunac-Brady inverse
-      const auto rate_of_pga = [&hazard](const double a_g) {
-        return hazard.annual_rate(trifunac_brady_intensity(a_g * standard_gravity * 100));
-      };
-      c.minimum_pga         = pga_g(p.minimum_intensity);
+      const auto rate_of_pga = [&hazard](const double a_g) { return annual_rate_of_pga(hazard, a_g); };
+      c.minimum_pga         = trifunac_brady_pga_g(p.minimum_intensity);
       c.annual_failure_rate = annual_failure_rate(rate_of_pga, c.minimum_pga, c.fragility);
       c.probability         = probability_in_years(c.annual_failure_rate, p.exposure_years);
       return c;
@@ -409,7 +400,7 @@ namespace poundfe
       for (const double T : p.return_periods)
         {
           const double x = hazard.intensity_for_return_period(T);
-          text << "  T = " << T << " years: I = " << x << ", PGA = " << pga_g(x) << " g ("
+          text << "  T = " << T << " years: I = " << x << ", PGA = " << trifunac_brady_pga_g(x) << " g ("
                << trifunac_brady_acceleration(x) / 100 << " m/s^2)\n";
         }
       if (failure)

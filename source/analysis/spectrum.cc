@@ -1,6 +1,7 @@
 #include <poundfe/analysis/analysis.h>
 #include <poundfe/analysis/spectrum.h>
 #include <poundfe/analysis/statistics.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/response_spectrum.h>
 #include <poundfe/output/atomic_file.h>
@@ -234,6 +235,7 @@ namespace poundfe
       std::vector<double>              xi(generator.n_variables()), samples;
       for (unsigned int r = 0; r < n_realizations; ++r)
         {
+          throw_if_interrupted();
           standard_normals(generator.motion().seed, r, xi);
           generator.generate(xi.data(), samples);
           GroundMotion motion(generator.motion().sample_interval, samples,

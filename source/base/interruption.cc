@@ -12,6 +12,8 @@ namespace poundfe
     volatile std::sig_atomic_t received = 0;
     /// Whether the handler is installed for signals[i] (not when ignored).
     bool installed[2] = {false, false};
+    /// set_stop_at_safe_points
+    bool stop_at_safe_points = false;
 
     extern "C" void
     on_signal(const int signal)
@@ -52,6 +54,19 @@ namespace poundfe
   interruption_requested()
   {
     return received != 0;
+  }
+
+  void
+  set_stop_at_safe_points(const bool stop)
+  {
+    stop_at_safe_points = stop;
+  }
+
+  void
+  throw_if_interrupted()
+  {
+    if (stop_at_safe_points && received != 0)
+      throw Interrupted();
   }
 
   int

@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/elements/uniaxial_element.h>
 
 #include <deal.II/base/exceptions.h>
@@ -53,6 +54,16 @@ namespace poundfe
   {
     trial_deformation = local_deformation(u);
     return law->set_trial(trial_deformation, local_deformation(v));
+  }
+
+  std::string
+  UniaxialElement::failure() const
+  {
+    const std::string why = law->failure();
+    if (!why.empty())
+      return why;
+    return "its law refused a deformation of " + number_text(trial_deformation) +
+           " (it gave no reason)";
   }
 
   void

@@ -1,6 +1,7 @@
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/assembly/low_rank_update.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/integration/newmark.h>
 
 #include <deal.II/base/exceptions.h>
@@ -43,6 +44,26 @@ namespace poundfe
         return s.str();
       }
     };
+
+    /// "equation 12, A3 (6, 3) ux" for a message.
+    std::string
+    equation_text(const Eigen::Index i, const std::vector<std::string> &names)
+    {
+      std::string text = "equation " + std::to_string(i);
+      if (i >= 0 && static_cast<std::size_t>(i) < names.size())
+        text += ", " + names[i];
+      return text;
+    }
+
+    /// The first equation whose entry of `x` is not finite, -1 if none.
+    Eigen::Index
+    first_non_finite(const Vector &x)
+    {
+      for (Eigen::Index i = 0; i < x.size(); ++i)
+        if (!std::isfinite(x[i]))
+          return i;
+      return -1;
+    }
   } // namespace
 
   /// Everything that depends on the step size: Newmark coefficients, the
@@ -275,7 +296,7 @@ namespace poundfe
         NonlinearElement  &e = (*elements)[h];
         const unsigned int s = dof_start[h], k = e.n_dofs();
         if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
-          throw NumericalError("state at t = " + std::to_string(current_time) + ": " + e.label +
+          throw NumericalError("state at t = " + number_text(current_time) + " s: " + e.label +
                                ": " + e.failure());
         e.commit();
         committed_force[h]   = e.force();
@@ -342,7 +363,10 @@ namespace poundfe
         const unsigned int s = dof_start[h], k = dof_start[h + 1] - s, r = basis[h].cols();
         if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
           {
-            failure = e.label + ": " + e.failure();
+            const std::string why = e.failure();
+            failure = e.label + ": " +
+                      (why.empty() ? "the element refused its trial state (it gave no reason)" :
+                                     why);
             return false;
           }
         e.force_correction(correction.segment(s, k));
@@ -397,9 +421,10 @@ namespace poundfe
         kinematics();
         ++stats.iterations;
         stats.max_iterations = std::max(stats.max_iterations, 1u);
-        if (!std::isfinite(u_next.squaredNorm()))
+        if (const Eigen::Index i = first_non_finite(u_next); i >= 0)
           {
-            failure = "the displacement became non-finite";
+            failure = "the displacement became non-finite (" + number_text(u_next[i]) + " at " +
+                      equation_text(i, equation_names) + ")";
             return false;
           }
         return true;
@@ -429,11 +454,17 @@ namespace poundfe
           }
         residual.noalias() = rhs - L.effective * u_next;
         subtract_element_forces(residual);
-        const double norm = residual.norm();
+        double norm = residual.norm();
         if (!std::isfinite(norm))
           {
-            failure = "the residual became non-finite";
-            return false;
+            if (const Eigen::Index i = first_non_finite(residual); i >= 0)
+              {
+                failure = "Newton iteration " + std::to_string(it) +
+                          ": the residual became non-finite (" + number_text(residual[i]) +
+                          " at " + equation_text(i, equation_names) + ")";
+                return false;
+              }
+            norm = residual.stableNorm(); // finite entries whose squares overflow
           }
         if (it == 0)
           first_residual = norm;
@@ -464,13 +495,9 @@ namespace poundfe
             // of balance, for the message.
             Eigen::Index worst = 0;
             residual.cwiseAbs().maxCoeff(&worst);
-            std::ostringstream message;
-            message << "Newton did not converge in " << it << " iterations: "
-                    << check.describe(newton) << "; the largest residual is at equation "
-                    << worst;
-            if (static_cast<std::size_t>(worst) < equation_names.size())
-              message << ", " << equation_names[worst];
-            failure = message.str();
+            failure = "Newton did not converge in " + std::to_string(it) +
+                      (it == 1 ? " iteration: " : " iterations: ") + check.describe(newton) + "; the largest residual is at " +
+                      equation_text(worst, equation_names);
             return false;
           }
 
@@ -486,10 +513,17 @@ namespace poundfe
             stats.woodbury_solves += solved;
           }
         if (!solved)
-          {
-            solve_with_assembled_tangent(L, d, modified && tangent_factorised);
-            tangent_factorised = true;
-          }
+          try
+            {
+              solve_with_assembled_tangent(L, d, modified && tangent_factorised);
+              tangent_factorised = true;
+            }
+          catch (const NumericalError &e) // a singular tangent at this iterate: cut the step
+            {
+              L.holds_tangent = true; // the values hold a partial tangent: restore them
+              failure = "Newton iteration " + std::to_string(it) + ": " + e.what();
+              return false;
+            }
         if (it == 0)
           first_energy = std::abs(increment.dot(residual));
         u_next += increment;
@@ -653,10 +687,13 @@ namespace poundfe
       }
     if (cuts >= parameters.newton.max_step_cuts)
       {
-        std::ostringstream message;
-        message << "the step from t = " << t0 << " s failed even at dt = " << L.dt << " s ("
-                << cuts << " step cuts): " << failure;
-        throw NumericalError(message.str());
+        // the exact times: a cut step's dt = Time step / 2^cuts and its
+        // start are not round numbers, and 6 digits could print "0"
+        throw NumericalError("the step from t = " + number_text(t0) + " s to " +
+                             number_text(t1) + " s failed even at dt = " + number_text(L.dt) +
+                             " s (" + std::to_string(cuts) + " step cuts, Maximum step cuts = " +
+                             std::to_string(parameters.newton.max_step_cuts) + "): " +
+                             (failure.empty() ? "no cause recorded" : failure));
       }
     ++stats.step_cuts;
     advance_from(cuts + 1, t0, load);

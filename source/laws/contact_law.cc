@@ -1,3 +1,4 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/laws/contact_law.h>
 
 #include <cmath>
@@ -25,6 +26,7 @@ namespace poundfe
     trial             = State();
     trial.penetration = closure - p.initial_gap;
     trial.rate        = rate;
+    trial.closure     = closure;
     if (!(trial.penetration > 0))
       return std::isfinite(closure) && std::isfinite(rate);
     // The approach velocity of this contact: kept while it lasts; at onset
@@ -41,6 +43,20 @@ namespace poundfe
         trial.damping   = r.damping;
       }
     return std::isfinite(r.force);
+  }
+
+  std::string
+  ContactLaw::failure() const
+  {
+    const std::string state = "closure " + number_text(trial.closure) + " m (initial gap " +
+                              number_text(p.initial_gap) + " m), closing rate " +
+                              number_text(trial.rate) + " m/s";
+    if (!std::isfinite(trial.closure) || !std::isfinite(trial.rate))
+      return "the " + p.law + " contact's deformation is not finite: " + state;
+    const Response r = respond(trial.penetration, trial.rate, trial.approach_velocity);
+    return "the " + p.law + " contact force is not finite (" + number_text(r.force) +
+           " N) at " + state + ", penetration " + number_text(trial.penetration) +
+           " m: the stiffness " + number_text(p.stiffness) + " or the motion is out of range";
   }
 
   double

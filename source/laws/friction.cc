@@ -1,3 +1,4 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/laws/friction.h>
 
 #include <cmath>
@@ -54,11 +55,23 @@ namespace poundfe
   {
     const double             slip_velocity = rate - p.belt_velocity;
     const NormalForce::Value n             = p.normal(deformation, rate);
+    trial_deformation                      = deformation;
+    trial_rate                             = rate;
+    trial_normal                           = n.n;
     if (p.model == FrictionModel::regularized)
       regularized(slip_velocity, n);
     else
       elastic_plastic(deformation - p.belt_velocity * trial_time, slip_velocity, n);
     return std::isfinite(trial.force) && std::isfinite(trial.tangent);
+  }
+
+  std::string
+  Friction::failure() const
+  {
+    return "the friction force is not finite (force " + number_text(trial.force) +
+           " N, tangent " + number_text(trial.tangent) + " N/m) at a displacement of " +
+           number_text(trial_deformation) + " m, velocity " + number_text(trial_rate) +
+           " m/s, normal force " + number_text(trial_normal) + " N";
   }
 
   void

@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/output_directory.h>
 
@@ -15,6 +16,7 @@ namespace poundfe
     : final_path(std::move(path))
     , temporary_path(final_path + ".tmp")
   {
+    throw_if_interrupted(); // a safe point: nothing of this file exists yet
     register_output(final_path); // listed before it exists (output_directory.h)
     descriptor = ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (descriptor < 0)
@@ -48,6 +50,7 @@ namespace poundfe
   {
     if (failed_with != 0) // the first failure again, already reported by its caller
       throw OutputError("write", final_path, failed_with);
+    throw_if_interrupted(); // the destructor removes the temporary
     while (size > 0)
       {
         const ssize_t written = ::write(descriptor, data, size);
@@ -85,6 +88,7 @@ namespace poundfe
       throw OutputError("write", final_path, failed_with);
     if (descriptor < 0)
       return;
+    throw_if_interrupted(); // before the rename: an interrupted file never appears
     const int closed = ::close(descriptor);
     descriptor       = -1;
     if (closed != 0 || std::rename(temporary_path.c_str(), final_path.c_str()) != 0)

@@ -25,6 +25,7 @@ namespace poundfe
       fs::path              directory; // absolute, normal
       int                   descriptor = -1;
       std::set<std::string> listed;
+      std::vector<std::string> order; // `listed` in the order they were added
 
       ~Manifest()
       {
@@ -40,6 +41,7 @@ namespace poundfe
       {
         if (!listed.insert(entry).second)
           return;
+        order.push_back(entry);
         const std::string line = entry + "\n";
         for (std::size_t done = 0; done < line.size();)
           {
@@ -176,5 +178,43 @@ namespace poundfe
          slash = entry.find('/', slash + 1))
       owner->add(entry.substr(0, slash));
     owner->add(entry);
+  }
+
+  namespace
+  {
+    /// The manifest of the prepared `directory`, nullptr if none.
+    Manifest *
+    manifest_of(const std::string &directory)
+    {
+      const fs::path root = normal(directory);
+      for (const auto &manifest : manifests())
+        if (manifest->directory == root)
+          return manifest.get();
+      return nullptr;
+    }
+  } // namespace
+
+  bool
+  output_directory_prepared(const std::string &directory)
+  {
+    return manifest_of(directory) != nullptr;
+  }
+
+  std::vector<std::string>
+  remove_temporaries(const std::string &directory)
+  {
+    std::vector<std::string> present;
+    const Manifest *manifest = manifest_of(directory);
+    if (!manifest)
+      return present;
+    for (const std::string &entry : manifest->order)
+      {
+        const fs::path  path = manifest->directory / entry;
+        std::error_code error;
+        fs::remove(fs::path(path.string() + ".tmp"), error); // gone already: fine
+        if (fs::is_regular_file(fs::symlink_status(path, error)))
+          present.push_back(entry);
+      }
+    return present;
   }
 } // namespace poundfe

@@ -1,3 +1,4 @@
+#include <poundfe/base/interruption.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
@@ -58,6 +59,7 @@ namespace poundfe
     std::vector<std::string> written;
     if (plots.empty())
       return written;
+    throw_if_interrupted(); // gnuplot can take seconds: a safe point before it
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
       {
         std::cerr << "poundfe: warning: gnuplot not found; no PNG plots written\n";

@@ -6,7 +6,7 @@
 //   per field          a list whose fields' units the text states
 //   that of <entry>    the unit of another entry (Sweep/Values)
 //   a unit expression  SI symbols and the few others input uses (g, km,
-//                      degrees, year), with ^, / and blanks, alternatives
+//                      degrees, year(s), 1/year), with ^, / and blanks, alternatives
 //                      joined by ' or ', optionally followed by a note
 //                      in parentheses, e.g. 'N/m or N/m^1.5', 'm^2/s^3'.
 // The walk goes over the parameters as declared (ParameterHandler's JSON
@@ -33,7 +33,7 @@ namespace
   {
     static const std::regex symbol_expression(
       "(1|m|s|kg|N|Pa|rad|Hz|g|km|degrees|years?)(\\^[0-9.]+)?"
-      "(( |/)(m|s|kg|N|Pa|rad|Hz|g|km)(\\^[0-9.]+)?)*");
+      "(( |/)(m|s|kg|N|Pa|rad|Hz|g|km|year)(\\^[0-9.]+)?)*");
     static const std::regex note(" \\([^()]*\\)$");
     std::string bare = std::regex_replace(unit, note, "");
     if (bare == "-" || bare == "dimensionless" || bare == "count" || bare == "per field")
@@ -117,7 +117,7 @@ BOOST_AUTO_TEST_CASE(the_unit_marker_is_recognised_strictly)
   BOOST_TEST(unit_of("Soil. Unit: -. Allowed: firm, soft.") == "-");
   BOOST_TEST(unit_of("Unit: s. Unit: m.") == "");
   for (const char *good : {"-", "dimensionless", "count", "per field", "m/s^2", "N s/m",
-                           "N m/rad", "m^2/s^3", "1/s", "N/m or N/m^1.5", "year", "degrees",
+                           "N m/rad", "m^2/s^3", "1/s", "1/year", "N/m or N/m^1.5", "year", "degrees",
                            "that of Parameter", "dimensionless (a macroseismic intensity)"})
     BOOST_TEST(valid_unit(good), good);
   for (const char *bad : {"", "meters", "m/", "s s s.", "unitless", "N/mm", "kN", "per"})

@@ -31,20 +31,14 @@
 #include <random>
 #include <sstream>
 
+#include "test_utilities.h"
+
 using namespace poundfe;
+using poundfe_test::temporary_file;
 
 namespace
 {
   const double pi = 3.14159265358979323846;
-
-  std::string
-  temporary_file(const std::string &name, const std::string &contents)
-  {
-    const std::string path =
-      (std::filesystem::temp_directory_path() / ("poundfe_site_hazard_" + name)).string();
-    std::ofstream(path) << contents;
-    return path;
-  }
 
   /// The line an InputError from reading `contents` as a catalogue names.
   int
@@ -228,9 +222,7 @@ BOOST_AUTO_TEST_CASE(fragility_times_power_law_hazard)
   poisson.poisson.threshold            = 1.0;
   poisson.poisson.rate_above_threshold = 0.3;
   poisson.poisson.b                    = 1.5;
-  const auto rate_of_pga = [&poisson](const double a_g) {
-    return poisson.annual_rate(trifunac_brady_intensity(a_g * standard_gravity * 100));
-  };
+  const auto rate_of_pga = [&poisson](const double a_g) { return annual_rate_of_pga(poisson, a_g); };
   const double k  = 1.5 / (0.3 * std::log(10.0));
   const double k0 = 0.3 * std::exp(1.5 * 1.0 + 0.014 * 1.5 / 0.3) *
                     std::pow(100 * standard_gravity, -k);

@@ -6,6 +6,9 @@
 #  - the probability of pounding at gaps just below, at and just above that
 #    value is 1, 0, 0 (one realization);
 #  - one rank and two give the same realizations and tables;
+#  - the response-spectrum route: u = Sd(T, zeta) of each one-storey building
+#    (EC8 written out in Python), stale files of the other route removed, no
+#    Spectrum/Target: bad input;
 #  - one building: exit 1, one message, nothing written.
 set -eu
 poundfe=$1 mpirun=$2 input=$3
@@ -76,6 +79,47 @@ for f in separation.csv pounding_probability.csv; do
 done
 same_summary "$work/one/summary.json" "$work/two/summary.json" "separation: summary differs between 1 and 2 ranks"
 echo "ok   separation: -np 2 gives the tables of one rank"
+
+# the response-spectrum route (theory §7.1b): each one-storey building's peak is
+# Sd = Se(T, zeta) (T / 2 pi)^2 of EN 1998-1 (type 1, ground B: S 1.2, TC 0.5 s,
+# TD 2 s), written out here, at its own T and zeta (0.5 s, 0.05; 0.8 s, 0.03);
+# the run removes the earlier Monte Carlo's probability files of $work/one
+spectrum_sections='subsection Separation\n  set Peak displacements = response spectrum\nend\n\nsubsection Spectrum\n  set Target = ec8-type-1\n  set Ground type = B\n  set Design ground acceleration = 0.3\nend\n\nsubsection Output'
+sed "s/^subsection Output/$spectrum_sections/" "$input" > "$work/spectrum.prm"
+"$poundfe" separation "$work/spectrum.prm" --output "$work/one" > "$work/spectrum.log"
+grep -q "^poundfe separation: response spectrum" "$work/spectrum.log" || fail "separation (spectrum): the route is not named on the console"
+grep -q '"peak_displacements": "response spectrum"' "$work/one/summary.json" || fail "separation (spectrum): the route is not named in summary.json"
+for stale in pounding_probability.csv pounding_probability.png; do
+  [ -e "$work/one/$stale" ] && fail "separation (spectrum): the earlier run's $stale is left"
+done
+python3 - "$work/one/separation.csv" <<'PY' || fail "separation (spectrum): u against Sd(T, zeta) by hand"
+import csv, math, sys
+def sd(T, zeta):
+    ag, S, TC, TD = 0.3 * 9.80665, 1.2, 0.5, 2.0
+    eta = max(0.55, math.sqrt(10 / (5 + 100 * zeta)))
+    se = 2.5 * ag * S * eta * (1 if T <= TC else TC / T)
+    return se * (T / (2 * math.pi)) ** 2
+row = list(csv.DictReader(open(sys.argv[1])))[0]
+u1, u2 = sd(0.5, 0.05), sd(0.8, 0.03)
+for name, mine, theirs in (("u_left", float(row["u_left_m"]), u1), ("u_right", float(row["u_right_m"]), u2),
+                           ("u_left_srss", float(row["u_left_srss_m"]), u1),
+                           ("EC8", float(row["ec8_m"]), 0.7 * math.hypot(u1, u2))):
+    if abs(mine - theirs) > 1e-12 * theirs:
+        sys.exit(f"FAIL separation (spectrum): {name} {mine} differs from {theirs}")
+PY
+"$poundfe" separation "$work/spectrum.prm" --output "$work/switch" > /dev/null
+"$poundfe" separation "$input" --output "$work/switch" > /dev/null
+[ -e "$work/switch/spectrum_modes.csv" ] && fail "separation (time history): the earlier spectrum_modes.csv is left"
+echo "ok   separation: response spectrum: u = Sd(T, zeta) of each one-storey building (EC8 by hand, 1e-12)"
+
+sed 's/set Target = ec8-type-1/set Target = none/' "$work/spectrum.prm" > "$work/no-target.prm"
+status=0
+"$poundfe" separation "$work/no-target.prm" --output "$work/bad" > "$work/bad.log" 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "separation (spectrum) without a target: exit $status, not 1"
+[ "$(wc -l < "$work/bad.log")" -eq 1 ] || fail "separation (spectrum) without a target: not one message"
+grep -q "Peak displacements" "$work/bad.log" || fail "separation (spectrum) without a target: message does not name the parameter"
+[ -e "$work/bad" ] && fail "separation (spectrum) without a target: output written"
+echo "ok   separation: response spectrum without Spectrum/Target is bad input (exit 1, nothing written)"
 
 sed -e 's/set Number of buildings = 2/set Number of buildings = 1/' -e '/^subsection Building 2/,/^end/d' \
   "$input" > "$work/one-building.prm"

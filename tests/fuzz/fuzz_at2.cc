@@ -5,22 +5,19 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/excitation/records.h>
 
+#include "scratch_file.h"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 
 extern "C" int
 LLVMFuzzerTestOneInput(const std::uint8_t *data, const std::size_t size)
 {
-  static const std::string directory = [] {
-    char pattern[] = "/tmp/poundfe-fuzz-XXXXXX";
-    return std::string(mkdtemp(pattern));
-  }();
   const bool        text = size > 0 && data[0] == '#';
-  const std::string file = directory + (text ? "/record.txt" : "/record.at2");
-  std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char *>(data), size);
+  const std::string file =
+    poundfe_fuzz::write_scratch_file(data, size, text ? "record.txt" : "record.at2");
   poundfe::RecordFormat format;
   format.time_step = 0.01; // for one-column text
   try

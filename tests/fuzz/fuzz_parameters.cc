@@ -9,29 +9,20 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include "scratch_file.h"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 
 namespace
 {
-  std::string
-  scratch_file(const char *extension)
-  {
-    static const std::string directory = [] {
-      char pattern[] = "/tmp/poundfe-fuzz-XXXXXX";
-      return std::string(mkdtemp(pattern));
-    }();
-    return directory + "/input" + extension;
-  }
-
   void
   read_as(const std::uint8_t *data, const std::size_t size, const char *extension)
   {
-    const std::string file = scratch_file(extension);
-    std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char *>(data), size);
+    const std::string file =
+      poundfe_fuzz::write_scratch_file(data, size, std::string("input") + extension);
     try
       {
         poundfe::read_parameters(file);

@@ -15,6 +15,10 @@
 # MAX_SECONDS (default 3600), whichever comes first, under nice -n 10;
 # seeds: input/*.prm, tests/cli/*.json, tests/cli/bad/*.prm and
 # tests/fuzz/seeds-at2/. Exit 0 when neither target found anything.
+# FUZZ_TARGETS=at2 (or parameters) runs one target; FUZZ_FORK=2 runs two
+# worker processes per target. Measured (README, "Fuzzing"):
+#   FUZZ_TARGETS=at2 nice -n 19 tests/fuzz/run.sh build 1000000 4200
+#   FUZZ_FORK=2 FUZZ_TARGETS=parameters nice -n 19 tests/fuzz/run.sh build 1000000 4000
 set -euo pipefail
 src=$(cd "$(dirname "$0")/../.." && pwd)
 build=$(cd "${1:-$src/build}" && pwd)
@@ -33,7 +37,8 @@ instrumented=(source/base/input_text.cc source/base/numbers.cc source/base/input
 objects=()
 for file in $(printf '%s\n' "${instrumented[@]}" | sort -u) tests/fuzz/fuzz_parameters.cc tests/fuzz/fuzz_at2.cc; do
   object=$work/objects/$(echo "$file" | tr / _).o
-  if [ ! -e "$object" ] || [ "$src/$file" -nt "$object" ]; then
+  if [ ! -e "$object" ] || [ "$src/$file" -nt "$object" ] ||
+     { [[ $file == tests/fuzz/* ]] && [ "$src/tests/fuzz/scratch_file.h" -nt "$object" ]; }; then
     rm -f "$object"
     echo "clang: $file"
     # shellcheck disable=SC2086
@@ -55,15 +60,27 @@ for target in $targets; do
 done
 
 cp "$src"/input/*.prm "$src"/tests/cli/bad/*.prm "$src"/tests/cli/*.json "$work/seeds-parameters/"
-export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
+# malloc_context_size=0: no stack is recorded per allocation (declaring the
+# parameters allocates ~33 000 times per execution; recording cost ~20 % of
+# the time). Detection is unchanged; a report then lacks the allocation and
+# free stacks: rerun its input (./fuzz_TARGET crash-...) with ASAN_OPTIONS
+# set to detect_leaks=0 to see them.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0:allocator_may_return_null=1:malloc_context_size=0}
+# FUZZ_FORK=N: N worker processes (libFuzzer -fork=N; it stops after RUNS
+# executions in all). On a shared machine two niced workers get twice one's
+# share of the cores.
+fork=${FUZZ_FORK:+-fork=$FUZZ_FORK}
 status=0
 for target in $targets; do
   seeds=$work/seeds-parameters
   [ "$target" = at2 ] && seeds=$src/tests/fuzz/seeds-at2
   echo "fuzz_$target: $runs executions or $max_time s"
+  # shellcheck disable=SC2086
   (cd "$work" && nice -n 10 ./fuzz_$target -runs="$runs" -max_total_time="$max_time" \
-     -max_len=40000 -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
+     -max_len=40000 -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 $fork \
      "corpus-$target" "$seeds") > "$work/fuzz_$target.log" 2>&1 || status=1
-  grep -E "^Done|stat::number_of_executed_units|ERROR|SUMMARY|crash-|timeout-|oom-" "$work/fuzz_$target.log" || true
+  grep -E "^Done|stat::number_of_executed_units|ERROR|SUMMARY|crash-|timeout-|oom-|INFO: fuzzed for|INFO: exiting" \
+    "$work/fuzz_$target.log" || true
+  [ -n "$fork" ] && { grep -E "^#[0-9]+: cov" "$work/fuzz_$target.log" | tail -1 || true; }
 done
 exit $status

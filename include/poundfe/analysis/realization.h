@@ -41,9 +41,18 @@ namespace poundfe
     /// The same for the normals of (seed, realization).
     bool run(std::uint64_t realization, std::vector<double> &responses, double amplitude_factor = 1);
 
-    /// Runs the noise of (seed, realization) with `observers` in place of
-    /// the peak responses; returns false when the integration failed.
-    bool run(std::uint64_t realization, const Observers &observers);
+    /// Runs the noise of (seed, realization) (amplitudes times
+    /// amplitude_factor) with `observers` in place of the peak responses;
+    /// returns false when the integration failed.
+    bool run(std::uint64_t realization, const Observers &observers, double amplitude_factor = 1);
+
+    /// The PGA (g) of the input's Kanai-Tajimi or Clough-Penzien motion at
+    /// amplitude factor 1: peak factor x its stationary standard deviation
+    /// at the input's S0 x scale factor. S0 is proportional to PGA^2, so the
+    /// amplitude factor a / reference_pga() gives PGA a. Throws InputError
+    /// for another ground motion; `purpose` (e.g. "fragility curves") says
+    /// what needs the scaling.
+    double reference_pga(const std::string &purpose) const;
     /// Steps of the analysis time step in a realization.
     unsigned long n_steps() const { return history.n_steps(excitation); }
 

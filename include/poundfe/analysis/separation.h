@@ -21,6 +21,9 @@
 //   linearly in height between its floors below and above (its base: 0) at
 //   every step; u_i is the peak of that history. Floor displacement: the
 //   mean ux of the floor's joints (output/floor_response.h).
+//   Response-spectrum route (Separation/Peak displacements): u_i by modal
+//   combination of the Eurocode 8 spectrum, no time history
+//   (analysis/separation_spectrum.h).
 //   With random loading: Monte Carlo without contact; u_i and the
 //   time-history value are the means over the realizations (EN 1998-1
 //   §4.3.3.4.3(3) takes the average of the response histories), and the
@@ -28,6 +31,9 @@
 //   P(D > g) of D = max over the pair's common levels of the largest
 //   approach, with a pointwise Wilson score band; the gap for a target
 //   probability p is the type-7 (1 - p) quantile of D (statistics.h).
+//   With a site hazard (Separation/Site hazard): the probability of
+//   pounding over an exposure time and the gap for a target, from the
+//   Monte Carlo at several PGA levels (analysis/pounding_hazard.h).
 // Sources: Der Kiureghian, EESD 9 (1981) 419-435; Jeng, Kasai & Maison,
 // Earthquake Spectra 8(2) (1992) 201-223; Penzien, EESD 26 (1997) 849-858;
 // Lopez Garcia, Proc. 13th WCEE, Vancouver (2004) (DDC for yielding
@@ -81,6 +87,9 @@ namespace poundfe
     double weight = 0;
   };
 
+  /// The value at `where` of per-floor values x (FloorResponse order).
+  double value_at(const std::vector<double> &floor_values, const LevelInterpolation &where);
+
   struct CommonLevel
   {
     double                            level           = 0; // m
@@ -132,8 +141,6 @@ namespace poundfe
     const std::vector<std::vector<LevelResponse>> &responses() const { return levels; }
 
   private:
-    double displacement_at(const LevelInterpolation &where) const;
-
     const std::vector<AdjacentPair>        &pairs;
     FloorResponse                           floors;
     std::vector<std::vector<LevelResponse>> levels;
@@ -152,6 +159,10 @@ namespace poundfe
   std::vector<ExceedancePoint> exceedance_curve(const std::vector<double> &sample,
                                                 const std::vector<double> &gaps,
                                                 double                     confidence);
+
+  /// The gaps of an exceedance curve: the input's Gap values, or Number of
+  /// gap values evenly from 0 to 1.2 `largest` (1 m when largest <= 0).
+  std::vector<double> gap_grid(const SeparationParameters &p, double largest);
 
   /// The `separation` command on every rank of `comm` (the Monte Carlo of
   /// random loading splits over them; a ground motion without randomness

@@ -115,6 +115,13 @@ namespace poundfe
     double intensity_for_return_period(double years) const;
   };
 
+  /// The Trifunac-Brady PGA of intensity I, g.
+  double trifunac_brady_pga_g(double intensity);
+
+  /// The hazard in PGA: the annual rate of exceeding a (g), lambda(a) =
+  /// lambda_I(I(a)), I(a) the Trifunac-Brady inverse.
+  double annual_rate_of_pga(const IntensityHazard &hazard, double pga_g);
+
   /// Lognormal fragility P(F | a) = Phi(ln(a/theta)/beta), theta in g.
   struct LognormalCurve
   {

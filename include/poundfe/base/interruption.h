@@ -2,11 +2,25 @@
 // the first SIGINT or SIGTERM only sets a flag, which the command polls at
 // its safe points (between realizations, between levels) to finish its
 // files and exit; a second one (of either kind) kills as usual.
+// A command with no results worth finishing early (modal, spectrum, sweep,
+// ...) instead turns on stops at safe points: the file layer (every
+// AtomicFile write, each plot) and the long loops then throw Interrupted,
+// which unwinds (removing the uncommitted temporaries) to the command's
+// guard (analysis/command_guard.h), which writes the summary.
 #ifndef poundfe_base_interruption_h
 #define poundfe_base_interruption_h
 
+#include <exception>
+
 namespace poundfe
 {
+  /// Thrown by throw_if_interrupted(): a signal stopped the command.
+  class Interrupted : public std::exception
+  {
+  public:
+    const char *what() const noexcept override { return "interrupted by a signal"; }
+  };
+
   /// Catches the first SIGINT or SIGTERM (the handler then restores the
   /// default action of both). A signal ignored at start-up (e.g. SIGINT in a
   /// background job of a script) stays ignored.
@@ -19,6 +33,14 @@ namespace poundfe
   /// reports a process killed by it (130 for SIGINT, 143 for SIGTERM); 130
   /// when this process received none (an MPI rank stopped by another).
   int interrupted_exit_status();
+
+  /// Whether throw_if_interrupted() throws once a signal has arrived (off
+  /// at start: a command that finishes its own files keeps control).
+  void set_stop_at_safe_points(bool stop);
+
+  /// Throws Interrupted when a signal has arrived and stops at safe points
+  /// are on; a cheap flag test, for every file write and every time step.
+  void throw_if_interrupted();
 } // namespace poundfe
 
 #endif

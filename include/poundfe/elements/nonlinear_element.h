@@ -96,6 +96,8 @@ namespace poundfe
     virtual void revert() = 0;
     /// Back to the virgin state.
     virtual void reset() = 0;
+    /// Why set_trial returned false; empty: no reason given (the
+    /// integrator then says so rather than print nothing).
     virtual std::string failure() const { return {}; }
 
     /// Contact: whether the trial / committed state carries force. A change

@@ -43,7 +43,8 @@ namespace poundfe
     void   commit() override;
     void   revert() override;
     void   reset() override;
-    std::string failure() const override { return law->failure(); }
+    /// The law's reason, or the deformation it refused when it gives none.
+    std::string failure() const override;
     bool   is_active() const override { return law->is_active(); }
     bool   was_active() const override { return law->was_active(); }
     int    phase() const override { return law->phase(); }

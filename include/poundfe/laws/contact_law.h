@@ -43,6 +43,9 @@ namespace poundfe
     double tangent() const final { return trial.stiffness; }
     double damping_tangent() const final { return trial.damping; }
     double stored_energy() const final;
+    /// Why set_trial refused its state: the closure, its rate or the force
+    /// not finite, with the values.
+    std::string failure() const final;
     /// Penetration beyond the initial gap (negative: open).
     double history_variable() const override { return trial.penetration; }
     double initial_stiffness() const override { return 0; }
@@ -76,6 +79,8 @@ namespace poundfe
     {
       double penetration = 0, rate = 0, force = 0, stiffness = 0, damping = 0;
       double approach_velocity = 0;
+      /// set_trial's arguments, for failure()
+      double closure = 0;
     };
     State committed, trial;
     /// Whether the registry says impacts last pi sqrt(m/k); -1: not looked up yet.

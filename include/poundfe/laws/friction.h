@@ -92,6 +92,9 @@ namespace poundfe
     double damping_tangent() const override { return trial.damping_tangent; }
     double stored_energy() const override;
     double supplied_work_increment() const override;
+    /// Why set_trial refused its state: the force or tangent not finite, with
+    /// the deformation, rate and normal force.
+    std::string failure() const override;
     /// The slip s (the slider's position relative to the belt), m.
     double history_variable() const override { return trial.slip; }
     double initial_stiffness() const override { return p.stick_stiffness; }
@@ -127,6 +130,8 @@ namespace poundfe
     FrictionLawParameters p;
     State                 trial, committed;
     double                trial_time = 0, committed_time = 0;
+    /// set_trial's arguments and normal force, for failure()
+    double trial_deformation = 0, trial_rate = 0, trial_normal = 0;
   };
 } // namespace poundfe
 

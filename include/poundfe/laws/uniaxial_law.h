@@ -63,6 +63,8 @@ namespace poundfe
     /// Back to the virgin state.
     virtual void reset() = 0;
 
+    /// Why set_trial returned false, with the values (a law whose
+    /// set_trial can refuse overrides it); empty: the law gave no reason.
     virtual std::string failure() const { return {}; }
   };
 } // namespace poundfe

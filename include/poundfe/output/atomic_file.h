@@ -2,7 +2,8 @@
 // into place on commit. An uncommitted file is removed when destroyed, and
 // at once when a write fails (a full disk gets its space back for the
 // summary that reports it). Failures throw OutputError (base/exceptions.h)
-// with the operating system's reason.
+// with the operating system's reason. Each call is a safe point where a
+// command that stops at them (base/interruption.h) throws Interrupted.
 // Unbuffered: its writers (CsvWriter, NpyWriter) keep one buffer per file
 // and hand it over whole, so each block is one write(2) and no second
 // buffer copies it again.

@@ -35,6 +35,14 @@ namespace poundfe
   /// of the prepared output directory that contains it; does nothing for a
   /// path outside every prepared directory (a test's scratch file).
   void register_output(const std::string &path);
+
+  /// Whether this process has prepared `directory` (prepare_output_directory).
+  bool output_directory_prepared(const std::string &directory);
+
+  /// Removes the "<name>.tmp" of every file the manifest of the prepared
+  /// `directory` lists (a command that stops early: analysis/command_guard.h).
+  /// Returns the listed files that exist, relative to it, in listing order.
+  std::vector<std::string> remove_temporaries(const std::string &directory);
 } // namespace poundfe
 
 #endif

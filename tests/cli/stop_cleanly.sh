@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Every command stops cleanly (issue 14 item 12), through the shared guard
+# (source/analysis/command_guard.cc):
+#  - SIGTERM mid-sweep, mid-bifurcation and mid-spectrum (ensemble): exit
+#    status 143, summary.json "interrupted", no *.tmp, and none of the
+#    earlier command's files left in the directory;
+#  - modal with its summary.json blocked (a directory in its place): exit
+#    status 1, one line on stderr naming summary.json with the OS reason
+#    (the guard's retry of the summary fails the same way and is not said
+#    twice), no *.tmp;
+#  - ground-motion --realizations on a full disk (a small tmpfs; needs root,
+#    skipped otherwise): exit status 1, summary.json "failed" with "disk
+#    full: ... No space left on device", no *.tmp.
+set -eu
+poundfe=$1 input=$2
+work=$(mktemp -d)
+trap 'umount "$work/small" 2> /dev/null || true; rm -rf "$work"' EXIT
+fail() { echo "FAIL $*"; exit 1; }
+no_temporaries() {
+  [ -z "$(find "$1" -name '*.tmp')" ] || fail "$1: temporary files left: $(find "$1" -name '*.tmp')"
+}
+
+# <name> <seconds> <command...>: run it into $work/<name> (after a quick
+# ground-motion there, whose files must go), SIGTERM it after <seconds>
+interrupt() {
+  local name=$1 after=$2 d=$work/$1 status=0
+  shift 2
+  "$poundfe" ground-motion "$input/two-buildings.prm" --output "$d" > /dev/null ||
+    fail "$name: the first command failed"
+  "$@" --output "$d" > "$d.log" 2>&1 &
+  local job=$!
+  sleep "$after"
+  kill -0 "$job" 2> /dev/null || fail "$name: finished before the signal; give it a longer input"
+  kill -TERM "$job"
+  wait "$job" 2> /dev/null || status=$?
+  [ "$status" -eq 143 ] || fail "$name: exit status $status: $(cat "$d.log")"
+  grep -q '"status": "interrupted"' "$d/summary.json" || fail "$name: summary.json not interrupted"
+  grep -q "poundfe: $name interrupted ($d/summary.json says interrupted)" "$d.log" ||
+    fail "$name: no word on stderr: $(cat "$d.log")"
+  no_temporaries "$d"
+  [ ! -e "$d/ground_motion.csv" ] || fail "$name: the earlier command's ground_motion.csv left"
+  echo "ok   SIGTERM mid-$name after $after s: exit status 143, summary.json interrupted, no *.tmp, the earlier files gone"
+}
+
+{ cat "$input/two-buildings.prm"
+  printf 'subsection Sweep\n  set Parameter = Model/Separations\n  set Values = 0, 0.005, 0.01, 0.02\nend\n'
+} > "$work/sweep.prm"
+interrupt sweep 1.5 "$poundfe" sweep "$work/sweep.prm"
+interrupt bifurcation 1.5 "$poundfe" bifurcation "$input/duffing-bifurcation.prm"
+interrupt spectrum 1.5 "$poundfe" spectrum "$input/two-buildings.prm" --realizations 200
+
+# --- modal, summary.json blocked -----------------------------------------
+d=$work/blocked
+mkdir -p "$d/summary.json"
+status=0
+"$poundfe" modal "$input/two-buildings.prm" --output "$d" > "$d.log" 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "blocked: exit status $status"
+grep -q "poundfe: error: cannot write .*summary.json: Is a directory" "$d.log" ||
+  fail "blocked: no reason on stderr: $(cat "$d.log")"
+# the summary's own retry fails the same way: one line, not the same twice
+[ "$(wc -l < "$d.log")" -eq 1 ] || fail "blocked: not one line on stderr: $(cat "$d.log")"
+no_temporaries "$d"
+echo "ok   modal, summary.json blocked: exit status 1, one line on stderr naming summary.json and the reason, no *.tmp"
+
+# --- ground-motion, full disk ---------------------------------------------
+mkdir -p "$work/small"
+if [ "$(id -u)" -ne 0 ] || ! mount -t tmpfs -o size=256k tmpfs "$work/small" 2> /dev/null; then
+  echo "skip full disk: needs root to mount a small tmpfs"
+  exit 0
+fi
+d=$work/small/ground-motion
+status=0
+"$poundfe" ground-motion "$input/two-buildings.prm" --realizations 20 --output "$d" > "$work/full.log" 2>&1 ||
+  status=$?
+[ "$status" -eq 1 ] || fail "full disk: exit status $status: $(cat "$work/full.log")"
+grep -q "disk full: cannot write .*: No space left on device" "$work/full.log" ||
+  fail "full disk: no reason on stderr: $(cat "$work/full.log")"
+no_temporaries "$d"
+grep -q '"status": "failed"' "$d/summary.json" || fail "full disk: summary not failed"
+grep -q '"message": "disk full: cannot write .*No space left on device' "$d/summary.json" ||
+  fail "full disk: the summary does not say the disk is full"
+echo "ok   ground-motion on a full disk (256 kB tmpfs): exit status 1, summary.json failed, 'disk full: ...', no *.tmp"
