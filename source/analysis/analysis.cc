@@ -3,9 +3,15 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/model/model_builder.h>
 
+#include <poundfe/base/numbers.h>
+
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -71,7 +77,99 @@ namespace poundfe
                      " are wanted (Output/Number of modes, Damping/Modes); use dense or auto");
       return compute_modes(mass, stiffness, influence, n, input.modal.eigensolver);
     }
+
+    /// The share of mode `i`'s kinetic energy in vertical motion,
+    /// (phi_y^T M phi_y) / (phi^T M phi) with phi_y the mode's uy entries:
+    /// 0 for a sway mode of a frame with lumped floor masses, near 1 for a
+    /// beam's bending mode.
+    double
+    vertical_energy_share(const Model &model, const unsigned int b, const SparseMatrix &mass,
+                          const Modes &modes, const unsigned int i)
+    {
+      const Building &building = model.buildings[b];
+      const auto      range    = model.equation_range(b);
+      const Vector    phi      = modes.shapes.col(i);
+      Vector          vertical = Vector::Zero(phi.size());
+      for (unsigned int node = building.first_node; node < building.first_node + building.n_nodes;
+           ++node)
+        {
+          const int equation = model.equation(Model::dof(node, Component::uy));
+          if (equation >= int(range[0]) && equation < int(range[1]))
+            vertical[equation - range[0]] = phi[equation - range[0]];
+        }
+      const double total = phi.dot(mass * phi);
+      return total > 0 ? vertical.dot(mass * vertical) / total : 0;
+    }
+
+    /// "2.5 %" for the ratio 0.025.
+    std::string
+    percent(const double ratio)
+    {
+      return rounded(100 * ratio) + " %";
+    }
   } // namespace
+
+  std::vector<std::string>
+  damping_warnings(const Analysis &analysis)
+  {
+    const Model             &model = analysis.model;
+    const InputFile         &input = analysis.input;
+    std::vector<std::string> warnings;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const RayleighDamping &d       = model.buildings[b].damping;
+        const Modes           &modes   = analysis.building_modes[b];
+        const std::string      section = "Building " + std::to_string(b + 1) + "/Damping/";
+        const std::string      where   = "building '" + model.buildings[b].name + "': ";
+        const auto             set     = [&](const std::string &entry) {
+          return input.line_of(section + entry) > 0;
+        };
+        const std::vector<std::string> used =
+          d.kind == RayleighDamping::Kind::modes ?
+            std::vector<std::string>{"Damping ratio", "Modes"} :
+          d.kind == RayleighDamping::Kind::coefficients ? std::vector<std::string>{"a0", "a1"} :
+                                                          std::vector<std::string>{};
+        for (const std::string entry : {"Damping ratio", "Modes", "a0", "a1"})
+          if (std::find(used.begin(), used.end(), entry) == used.end() && set(entry))
+            warnings.push_back(where + section + entry + " (line " +
+                               std::to_string(input.line_of(section + entry)) +
+                               ") is ignored: Type = " + damping_type_names().name(d.kind));
+        if (d.kind == RayleighDamping::Kind::modes)
+          {
+            const SparseMatrix mass = block(analysis.system.mass, model.equation_range(b));
+            for (const unsigned int mode : {d.first_mode, d.second_mode})
+              {
+                const double share = vertical_energy_share(model, b, mass, modes, mode - 1);
+                if (share > 0.5)
+                  warnings.push_back(
+                    where + section + "Modes fits the damping ratio at mode " +
+                    std::to_string(mode) + " (" + rounded(modes.frequency(mode - 1)) +
+                    " Hz), a vertical mode (" + percent(share) +
+                    " of its kinetic energy in vertical motion): the sway modes that carry "
+                    "the horizontal response then get damping ratios other than the one "
+                    "intended; fit it at two sway modes (poundfe modal lists the modes "
+                    "with their horizontal mass ratios)");
+              }
+          }
+        if (d.kind == RayleighDamping::Kind::coefficients && d.a0 == 0 && d.a1 == 0)
+          warnings.push_back(where + section + "a0 and a1 are both 0: the building has no "
+                             "Rayleigh damping (Type = none says so; a damping ratio needs "
+                             "Type = modes)");
+        else if (d.kind == RayleighDamping::Kind::coefficients && d.a1 == 0)
+          {
+            std::string ratios;
+            if (modes.n_modes() > 1)
+              ratios = " (here " + percent(d.a0 / (2 * modes.omega.front())) + " at mode 1, " +
+                       percent(d.a0 / (2 * modes.omega.back())) + " at mode " +
+                       std::to_string(modes.n_modes()) + ")";
+            warnings.push_back(where + section + "a1 = 0, mass-proportional damping only: the "
+                               "damping ratio a0/(2 omega) falls as the frequency rises" +
+                               ratios + ", the higher modes are nearly undamped; give a1 too "
+                               "(or Type = modes)");
+          }
+      }
+    return warnings;
+  }
 
   Analysis
   prepare_analysis(const InputParameters &input)
@@ -129,7 +227,22 @@ namespace poundfe
     if (input.output.n_modes > 0)
       analysis.modes = modes_of(input, system.mass, system.stiffness, system.influence,
                                 input.output.n_modes, "the model");
+    analysis.warnings = damping_warnings(analysis);
+    // once per process: a sweep prepares an analysis per value
+    static std::set<std::string> said;
+    if (writes_outputs())
+      for (const std::string &warning : analysis.warnings)
+        if (said.insert(warning).second)
+          std::cerr << "poundfe: warning: " << warning << "\n";
     return analysis;
+  }
+
+  bool
+  writes_outputs()
+  {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    return !initialized || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   }
 
   void

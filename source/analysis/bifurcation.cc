@@ -41,31 +41,35 @@ namespace poundfe
     prm.enter_subsection("Bifurcation");
     sweep.declare_entries(prm);
     prm.add_parameter("Response", response,
-                      "The sampled DOF: 'building floor node dof' (building and floor "
-                      "1-based, node 0-based from the left, dof ux|uy|rz).");
+                      "The sampled DOF: 'building floor node dof' (building: its number, "
+                      "1-based, or its Name; floor 1-based, node 0-based from the left, dof "
+                      "ux|uy|rz). Unit: -.");
     add_choice(prm, "Response quantity", quantity,
-               "Displacement (relative to the ground, m) or velocity (m/s) of the DOF.",
+               "Displacement (relative to the ground, m) or velocity (m/s) of the DOF. Unit: -.",
                {"displacement", "velocity"});
     prm.add_parameter("Forcing period", forcing_period,
                       "T in s, the Poincaré section's period; 0: 2 pi / omega of the first "
                       "harmonic nodal force of the input at each value (so sweeping the "
-                      "frequency moves the section).", Patterns::Double(0));
+                      "frequency moves the section). Unit: s.", Patterns::Double(0));
     prm.add_parameter("Transient periods", transient_periods,
-                      "Forcing periods integrated before sampling.", Patterns::Integer(0));
+                      "Forcing periods integrated before sampling. Unit: count.",
+                      Patterns::Integer(0));
     prm.add_parameter("Sampled periods", sampled_periods,
                       "Poincaré samples per value (one per period; >= 32 to tell periods "
-                      "up to 16).", Patterns::Integer(1, 100000));
+                      "up to 16). Unit: count.", Patterns::Integer(1, 100000));
     prm.add_parameter("Period tolerance", period_tolerance,
                       "Samples n periods apart are equal within this fraction of the "
-                      "response's range over the sampled periods.", Patterns::Double(0));
+                      "response's range over the sampled periods. Unit: dimensionless.",
+                      Patterns::Double(0));
     prm.add_parameter("Continuation", continuation,
                       "Start each value from the previous value's final state (follow a "
-                      "branch) instead of from rest.");
+                      "branch) instead of from rest. Unit: -.");
     prm.add_parameter("Lyapunov exponent", lyapunov_exponent,
                       "Also the largest Lyapunov exponent (a second, perturbed trajectory: "
-                      "twice the work).");
+                      "twice the work). Unit: -.");
     prm.add_parameter("Perturbation", perturbation,
-                      "d0 of the Lyapunov exponent relative to the state's norm.",
+                      "d0 of the Lyapunov exponent relative to the state's norm. "
+                      "Unit: dimensionless.",
                       Patterns::Double(0));
     prm.leave_subsection();
   }

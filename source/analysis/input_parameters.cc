@@ -327,8 +327,12 @@ namespace poundfe
     p.model.buildings.resize(1);
     ParameterHandler prm;
     p.declare(prm);
-    out << "# poundfe parameters. 'Building 1' stands for every 'Building <i>',\n"
-        << "# i = 1 .. Number of buildings. Lists are comma separated.\n";
-    prm.print_parameters(out, ParameterHandler::PRM);
+    out << "# poundfe parameters, in the order the program declares them. 'Building 1'\n"
+        << "# stands for every 'Building <i>', i = 1 .. Number of buildings; its entries\n"
+        << "# tagged [frame], [shear] or [mesh] apply only to buildings of that Type,\n"
+        << "# untagged ones to every Type. Each entry says its unit ('Unit: -' for\n"
+        << "# names, choices and switches). Lists are comma separated.\n";
+    const auto style = ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder;
+    prm.print_parameters(out, ParameterHandler::OutputStyle(style));
   }
 } // namespace poundfe

@@ -23,7 +23,7 @@ namespace poundfe
                "Modes (output and Rayleigh damping): dense (every mode, O(n^3)), sparse "
                "(shift-invert Lanczos, ARPACK, for the few lowest modes of large models), or "
                "auto: dense up to " +
-                 std::to_string(dense_eigensolver_limit) + " equations, sparse above.",
+                 std::to_string(dense_eigensolver_limit) + " equations, sparse above. Unit: -.",
                eigensolver_names());
     prm.leave_subsection();
   }

@@ -21,32 +21,35 @@ namespace poundfe
                       "Annual rate at 1 g and Exponent. "
                       "With a hazard, separation runs its Monte Carlo at each PGA level and "
                       "reports the annual rate and the probability over the Exposure of "
-                      "pounding against the gap width.",
+                      "pounding against the gap width. Unit: -.",
                       Patterns::Anything());
     prm.add_parameter("Annual rate at 1 g", power_law_coefficient,
                       "k0 of a typed-in power-law hazard lambda(a) = k0 a^-k (a the PGA in g), "
-                      "1/year; 0: none (the File's hazard).",
+                      "1/year; 0: none (the File's hazard). Unit: 1/year.",
                       Patterns::Double(0));
     prm.add_parameter("Exponent", power_law_exponent,
-                      "k > 0 of the typed-in power-law hazard (typically 1 to 4).",
+                      "k > 0 of the typed-in power-law hazard (typically 1 to 4). "
+                      "Unit: dimensionless.",
                       Patterns::Double(0));
     prm.add_parameter("Minimum PGA", minimum_pga,
                       "g: events of a smaller PGA are not counted (the lower limit of the hazard "
                       "integral). 0: the PGA of the summary.json's minimum intensity or the "
-                      "first row of the hazard_curve.csv; the power law needs one > 0.",
+                      "first row of the hazard_curve.csv; the power law needs one > 0. "
+                      "Unit: g.",
                       Patterns::Double(0));
     prm.add_parameter("PGA levels", pga_levels,
                       "g, two or more distinct: the Monte Carlo without contact runs at each "
                       "(the stochastic motion's S0 scaled to the PGA, the same realizations at "
                       "every level); they should bracket the PGAs of return periods of about "
-                      "100 to 2500 years, which govern the result.",
+                      "100 to 2500 years, which govern the result. Unit: g.",
                       Patterns::List(Patterns::Double(0), 1, 1000, ","));
     prm.add_parameter("Exposure", exposure_years,
-                      "T, years: the probability of pounding in T years is 1 - exp(-T lambda).",
+                      "T: the probability of pounding in T years is 1 - exp(-T lambda). "
+                      "Unit: years.",
                       Patterns::Double(0));
     prm.add_parameter("Target probability", target_probability,
                       "Probability of pounding in the Exposure for which the gap is reported, "
-                      "in (0, 1) (0.1: 10 % in 50 years).",
+                      "in (0, 1) (0.1: 10 % in 50 years). Unit: dimensionless.",
                       Patterns::Double(0, 1));
     prm.leave_subsection();
   }

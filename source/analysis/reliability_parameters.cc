@@ -13,13 +13,13 @@ namespace poundfe
   {
     prm.enter_subsection("Monte Carlo");
     prm.add_parameter("Realizations", realizations,
-                      "Number of realizations (seed and index 0..N-1 fix each one).",
+                      "Number of realizations (seed and index 0..N-1 fix each one). Unit: count.",
                       Patterns::Integer(1));
     prm.add_parameter("Drift limits", drift_limits,
                       "Inter-storey drift ratios whose exceedance probability is reported "
-                      "(largest over every storey of every building).",
+                      "(largest over every storey of every building). Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 0, 100, ","));
-    prm.add_parameter("Histogram bins", histogram_bins, "Bins of the PDF estimates.",
+    prm.add_parameter("Histogram bins", histogram_bins, "Bins of the PDF estimates. Unit: count.",
                       Patterns::Integer(2, 1000));
     prm.leave_subsection();
   }
@@ -48,24 +48,26 @@ namespace poundfe
     prm.enter_subsection("Subset simulation");
     add_choice(prm, "Response", response,
                "The response whose exceedance is estimated: the peak inter-storey drift "
-               "ratio, the peak roof displacement (m) or the peak contact force (N).",
+               "ratio, the peak roof displacement (m) or the peak contact force (N). Unit: -.",
                subset_response_names());
-    prm.add_parameter("Building", building, "Building of the response (1-based).",
+    prm.add_parameter("Building", building, "Building of the response (1-based). Unit: -.",
                       Patterns::Integer(1));
     prm.add_parameter("Storey", storey,
-                      "Storey of the drift ratio (1-based; 0: largest over the storeys).",
+                      "Storey of the drift ratio (1-based; 0: largest over the storeys). Unit: -.",
                       Patterns::Integer(0));
     prm.add_parameter("Threshold", threshold,
-                      "Failure: response > threshold (drift ratio, m, or N).");
-    prm.add_parameter("Samples per level", samples_per_level, "N.", Patterns::Integer(2));
+                      "Failure: response > threshold (drift ratio, m, or N). Unit: that of "
+                      "Response (dimensionless, m or N).");
+    prm.add_parameter("Samples per level", samples_per_level, "N. Unit: count.",
+                      Patterns::Integer(2));
     prm.add_parameter("Conditional probability", conditional_probability,
                       "p0: the level thresholds are the (1 - p0) quantiles; p0 N and 1/p0 "
-                      "must be whole numbers.");
-    prm.add_parameter("Maximum levels", max_levels, "Stop after this many levels.",
+                      "must be whole numbers. Unit: dimensionless.");
+    prm.add_parameter("Maximum levels", max_levels, "Stop after this many levels. Unit: count.",
                       Patterns::Integer(1, 100));
     prm.add_parameter("Proposal spread", proposal_spread,
                       "Standard deviation of the component-wise Gaussian proposal of the "
-                      "modified Metropolis algorithm.");
+                      "modified Metropolis algorithm. Unit: dimensionless.");
     prm.leave_subsection();
   }
 
@@ -98,10 +100,12 @@ namespace poundfe
   {
     prm.enter_subsection("Fragility");
     prm.add_parameter("PGA levels", pga_levels,
-                      "Intensity levels: target PGA in g (S0 from the PGA and peak factor).",
+                      "Intensity levels: target PGA in g (S0 from the PGA and peak factor). "
+                      "Unit: g.",
                       Patterns::List(Patterns::Double(0), 1, 1000, ","));
     prm.add_parameter("Realizations per level", realizations_per_level,
-                      "Monte Carlo realizations at each level (the same seeds at every level).",
+                      "Monte Carlo realizations at each level (the same seeds at every level). "
+                      "Unit: count.",
                       Patterns::Integer(1));
     prm.leave_subsection();
   }

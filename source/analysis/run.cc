@@ -58,18 +58,6 @@ namespace poundfe
       return names;
     }
 
-    /// Whether this process writes files and messages: rank 0 of
-    /// MPI_COMM_WORLD, or the only process when MPI is not initialised.
-    /// (With a solver that needs MPI, every rank of `mpirun -np P poundfe
-    /// run` runs the same analysis; rank 0 alone writes.)
-    bool
-    writes_outputs()
-    {
-      int initialized = 0;
-      MPI_Initialized(&initialized);
-      return !initialized || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    }
-
     /// SIGINT/SIGTERM, agreed by every rank (mpirun may deliver it to the
     /// ranks at different steps; a rank that stopped alone would leave the
     /// others waiting in the distributed solver).

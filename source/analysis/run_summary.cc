@@ -209,7 +209,10 @@ namespace poundfe
     begin_summary(json, "run", input, status.name());
     if (status.kind == RunStatus::Kind::failed)
       json.value("message", status.message);
-    json.value("warnings", range.warnings());
+    std::vector<std::string> warnings = analysis.warnings; // the input's, then the response's
+    for (const std::string &warning : range.warnings())
+      warnings.push_back(warning);
+    json.value("warnings", warnings);
     write_model(json, analysis);
     const GroundMotion &motion = excitation.ground_motion();
     json.begin_object("ground_motion")

@@ -98,12 +98,13 @@ namespace poundfe
                       "The swept parameter: 'Section/.../Entry' (a numeric entry, e.g. "
                       "Model/Separations) or 'Section/.../Entry:k', field k (1-based) of the "
                       "first ';'-separated item of a list entry (e.g. Nodal forces/Harmonic:6, "
-                      "the forcing frequency).");
+                      "the forcing frequency). Unit: -.");
     prm.add_parameter("Values", values_text,
-                      "The values: 'v1, v2, ...' or 'linspace a b n' (n values from a to b).");
+                      "The values: 'v1, v2, ...' or 'linspace a b n' (n values from a to b). "
+                      "Unit: that of Parameter.");
     prm.add_parameter("Label", label,
                       "The parameter's name on the plots' axes, e.g. 'forcing amplitude f (N)' "
-                      "(empty: its path).");
+                      "(empty: its path). Unit: -.");
   }
 
   void
@@ -113,7 +114,7 @@ namespace poundfe
     declare_entries(prm);
     add_choice(prm, "Command", command,
                "`poundfe sweep`: the command whose model runs at each value (its "
-               "time history; run is the one so far).",
+               "time history; run is the one so far). Unit: -.",
                {"run"});
     prm.leave_subsection();
   }

@@ -85,70 +85,74 @@ namespace poundfe
     add_choice(prm, "Type", type,
                "Horizontal ground acceleration: a generated Kanai-Tajimi or "
                "Clough-Penzien sample, plain white noise (intensity S0 or D, held "
-               "over the sample interval), a record, or none.",
+               "over the sample interval), a record, or none. Unit: -.",
                ground_motion_type_names());
-    prm.add_parameter("Scale factor", scale_factor, "Multiplies the motion.");
+    prm.add_parameter("Scale factor", scale_factor, "Multiplies the motion. Unit: dimensionless.");
     prm.enter_subsection("Record");
     prm.add_parameter("File", record_file,
                       "PEER .AT2, or text with one (acceleration) or two (time, "
-                      "acceleration) columns; relative to this parameter file.");
+                      "acceleration) columns; relative to this parameter file. Unit: -.");
     add_choice(prm, "Format", record_format,
-               "auto: PEER AT2 for a .at2 file (any case), text otherwise.",
+               "auto: PEER AT2 for a .at2 file (any case), text otherwise. Unit: -.",
                record_format_names());
     add_choice(prm, "Units", record_units,
-               "Units of the values in a text file (AT2 files are in g).",
+               "Units of the values in a text file (AT2 files are in g). Unit: -.",
                record_units_names());
     prm.add_parameter("Time step", record_time_step,
-                      "Sample interval of a one-column text record, s.");
+                      "Sample interval of a one-column text record. Unit: s.");
     prm.add_parameter("Target PGA", record_target_pga,
-                      "Scale the record to this PGA in g (0: keep it).");
+                      "Scale the record to this PGA in g (0: keep it). Unit: g.");
     prm.leave_subsection();
     prm.enter_subsection("Stochastic");
     add_choice(prm, "Soil", soil,
                "Filter parameters preset (Der Kiureghian & Neuenhofer 1992): firm "
                "15 rad/s, 0.6; medium 10, 0.4; soft 5, 0.2; custom uses omega_g, "
-               "zeta_g. Clough-Penzien presets use omega_f = omega_g/10, zeta_f 0.6.",
+               "zeta_g. Clough-Penzien presets use omega_f = omega_g/10, zeta_f 0.6. Unit: -.",
                soil_names());
-    prm.add_parameter("omega_g", omega_g, "Ground filter frequency, rad/s (custom).");
-    prm.add_parameter("zeta_g", zeta_g, "Ground filter damping ratio (custom).");
-    prm.add_parameter("omega_f", omega_f, "Clough-Penzien high-pass frequency, rad/s (custom).");
-    prm.add_parameter("zeta_f", zeta_f, "Clough-Penzien high-pass damping (custom).");
+    prm.add_parameter("omega_g", omega_g, "Ground filter frequency, rad/s (custom). Unit: rad/s.");
+    prm.add_parameter("zeta_g", zeta_g, "Ground filter damping ratio (custom). "
+                      "Unit: dimensionless.");
+    prm.add_parameter("omega_f", omega_f, "Clough-Penzien high-pass frequency, rad/s (custom). "
+                      "Unit: rad/s.");
+    prm.add_parameter("zeta_f", zeta_f, "Clough-Penzien high-pass damping (custom). "
+                      "Unit: dimensionless.");
     add_choice(prm, "Method", method,
                "Kanai-Tajimi/Clough-Penzien samples: white noise through the filter "
                "(exact over each held interval), or the spectral representation "
-               "(sum of cosines with random phases).",
+               "(sum of cosines with random phases). Unit: -.",
                stochastic_method_names());
     prm.add_parameter("Cutoff frequency", cutoff_frequency,
                       "Spectral representation: upper frequency w_u, rad/s (0: min(pi/dt, "
-                      "25 omega_g)); needs dt <= pi/w_u.");
+                      "25 omega_g)); needs dt <= pi/w_u. Unit: rad/s.");
     prm.add_parameter("Number of frequencies", n_frequencies,
                       "Spectral representation: N (0: w_u duration / pi, so the sample "
-                      "does not repeat within twice its duration).");
+                      "does not repeat within twice its duration). Unit: count.");
     prm.add_parameter("S0", spectral_intensity,
                       "Two-sided PSD intensity of the white noise, m^2/s^3; 0: from D, or "
-                      "from the target PGA and peak factor.");
+                      "from the target PGA and peak factor. Unit: m^2/s^3.");
     prm.add_parameter("D", noise_intensity_d,
                       "White-noise intensity in the thesis's convention <w(t) w(t')> = "
-                      "2 D delta(t - t'), D = pi S0 (used when S0 = 0).");
-    prm.add_parameter("Target PGA", target_pga, "Target PGA in g (used when S0 = 0).");
-    prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation.");
-    prm.add_parameter("Duration", duration, "Length of the sample, s.");
+                      "2 D delta(t - t'), D = pi S0 (used when S0 = 0). Unit: m^2/s^3.");
+    prm.add_parameter("Target PGA", target_pga, "Target PGA in g (used when S0 = 0). Unit: g.");
+    prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation. Unit: dimensionless.");
+    prm.add_parameter("Duration", duration, "Length of the sample. Unit: s.");
     prm.add_parameter("Sample interval", sample_interval,
-                      "White-noise sample interval, s (0: the analysis time step).");
-    prm.add_parameter("Seed", seed, "Random seed.");
+                      "White-noise sample interval, s (0: the analysis time step). Unit: s.");
+    prm.add_parameter("Seed", seed, "Random seed. Unit: -.");
     prm.add_parameter("Realization", realization,
-                      "Realization index: (seed, index) fixes the sample.");
+                      "Realization index: (seed, index) fixes the sample. Unit: -.");
     add_choice(prm, "Envelope", envelope,
                "Amplitude modulation: Jennings et al. (1968) trapezoid, Saragoni-Hart "
-               "t^b e^(-ct), Shinozuka-Sato e^(-at) - e^(-bt), or none.",
+               "t^b e^(-ct), Shinozuka-Sato e^(-at) - e^(-bt), or none. Unit: -.",
                envelope_names());
-    prm.add_parameter("Rise end", jennings_rise_end, "Jennings: end of (t/t1)^2 rise, s.");
-    prm.add_parameter("Plateau end", jennings_plateau_end, "Jennings: end of plateau, s.");
-    prm.add_parameter("Decay rate", jennings_decay, "Jennings: exp(-c (t - t2)) rate, 1/s.");
-    prm.add_parameter("Saragoni b", saragoni_b, "Saragoni-Hart t^b e^(-ct): b.");
-    prm.add_parameter("Saragoni c", saragoni_c, "Saragoni-Hart t^b e^(-ct): c, 1/s.");
-    prm.add_parameter("Shinozuka alpha", shinozuka_alpha, "e^(-at)-e^(-bt): a, 1/s.");
-    prm.add_parameter("Shinozuka beta", shinozuka_beta, "e^(-at)-e^(-bt): b, 1/s.");
+    prm.add_parameter("Rise end", jennings_rise_end, "Jennings: end of (t/t1)^2 rise. Unit: s.");
+    prm.add_parameter("Plateau end", jennings_plateau_end, "Jennings: end of plateau. Unit: s.");
+    prm.add_parameter("Decay rate", jennings_decay, "Jennings: exp(-c (t - t2)) rate. Unit: 1/s.");
+    prm.add_parameter("Saragoni b", saragoni_b, "Saragoni-Hart t^b e^(-ct): b. "
+                      "Unit: dimensionless.");
+    prm.add_parameter("Saragoni c", saragoni_c, "Saragoni-Hart t^b e^(-ct): c. Unit: 1/s.");
+    prm.add_parameter("Shinozuka alpha", shinozuka_alpha, "e^(-at)-e^(-bt): a. Unit: 1/s.");
+    prm.add_parameter("Shinozuka beta", shinozuka_beta, "e^(-at)-e^(-bt): b. Unit: 1/s.");
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -206,18 +210,21 @@ namespace poundfe
     prm.enter_subsection("Nodal forces");
     prm.add_parameter("Harmonic", harmonic,
                       "Harmonic forces 'building floor node dof amplitude omega phase', "
-                      "separated by ';'. floor 0 is the base, node counts from the left "
-                      "(0-based), dof ux|uy|rz, amplitude in N (N m), omega in rad/s.",
+                      "separated by ';', e.g. '1 3 0 ux 1e4 12; B 2 0 ux 5e3 20 0.5'. The "
+                      "building: its number (1-based) or its Name; floor 1-based, node "
+                      "0-based from the left, dof ux|uy|rz, amplitude in N (N m), omega in "
+                      "rad/s, phase in rad (optional, 0). Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Tabulated", tabulated,
                       "Tabulated forces 'building floor node dof file' separated by ';'; "
                       "the file has two columns: time, force (linear in between, zero "
-                      "outside).",
+                      "outside); building, floor, node, dof as in Harmonic. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("White noise", white_noise,
                       "Random forces 'building floor node dof S0' separated by ';': white "
                       "noise of two-sided intensity S0 (N^2 s), held over the sample "
-                      "interval of Ground motion/Stochastic; part of each realization.",
+                      "interval of Ground motion/Stochastic; part of each realization; "
+                      "building, floor, node, dof as in Harmonic. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.leave_subsection();
   }

@@ -33,35 +33,40 @@ namespace poundfe
   {
     prm.enter_subsection("Spectrum");
     prm.add_parameter("Minimum period", min_period,
-                      "Shortest period of the response spectra, s (> 0).", Patterns::Double(0));
-    prm.add_parameter("Maximum period", max_period, "Longest period of the response spectra, s.",
+                      "Shortest period of the response spectra, s (> 0). Unit: s.",
+                      Patterns::Double(0));
+    prm.add_parameter("Maximum period", max_period, "Longest period of the response spectra. "
+                      "Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Number of periods", n_periods,
-                      "Periods from the minimum to the maximum, both included.",
+                      "Periods from the minimum to the maximum, both included. Unit: count.",
                       Patterns::Integer(1, 10000));
     add_choice(prm, "Spacing", logarithmic ? "logarithmic" : "linear",
-               "Spacing of the periods.", {"logarithmic", "linear"},
+               "Spacing of the periods. Unit: -.", {"logarithmic", "linear"},
                [this](const std::string &s) { logarithmic = s == "logarithmic"; });
     prm.add_parameter("Damping ratios", damping_ratios,
                       "Damping ratios of the spectral oscillators, fractions of critical in "
-                      "[0, 0.9], comma separated (the first is the one plotted and matched).",
+                      "[0, 0.9], comma separated (the first is the one plotted and matched). "
+                      "Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1, 20, ","));
     add_choice(prm, "Target", target,
                "Design spectrum drawn with the spectra and matched by a stochastic motion's "
                "intensity: none, or the horizontal elastic spectrum of EN 1998-1 section "
                "3.2.2.2, type 1 (Table 3.2; large earthquakes, Ms > 5.5) or type 2 "
-               "(Table 3.3).",
+               "(Table 3.3). Unit: -.",
                design_spectrum_names());
     add_choice(prm, "Ground type", ground_type,
                "Ground type of EN 1998-1 Table 3.1 (A rock ... E shallow alluvium on rock): "
-               "the soil factor S and corner periods TB, TC, TD of the target.",
+               "the soil factor S and corner periods TB, TC, TD of the target. Unit: -.",
                ground_type_names());
     prm.add_parameter("Design ground acceleration", design_ground_acceleration,
-                      "a_g of the target on type A ground, in g (EN 1998-1: gamma_I a_gR).",
+                      "a_g of the target on type A ground (EN 1998-1: gamma_I a_gR). "
+                      "Unit: g.",
                       Patterns::Double(0));
     prm.add_parameter("Matching period", matching_period,
                       "Period at which `spectrum --realizations N` matches the ensemble's mean "
-                      "pseudo-acceleration to the target, s (0: the model's first period).",
+                      "pseudo-acceleration to the target (0: the model's first period). "
+                      "Unit: s.",
                       Patterns::Double(0));
     prm.leave_subsection();
   }

@@ -29,37 +29,39 @@ namespace poundfe
   TimeIntegrationParameters::declare(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Time integration");
-    prm.add_parameter("Time step", newmark.time_step, "Analysis time step, s.");
+    prm.add_parameter("Time step", newmark.time_step, "Analysis time step. Unit: s.");
     prm.add_parameter("End time", end_time,
-                      "s; 0: the length of the ground motion.");
+                      "s; 0: the length of the ground motion. Unit: s.");
     prm.add_parameter("Maximum number of steps", max_steps,
                       "A run whose End time / Time step (or ground-motion duration / Time "
                       "step) exceeds this is refused before it starts (a guard against "
                       "End time = 1e308 or a record's DT typed in ms); raise it for a "
-                      "genuinely long run.",
+                      "genuinely long run. Unit: count.",
                       Patterns::Integer(1));
     prm.add_parameter("Newmark gamma", newmark.gamma,
-                      "gamma >= 1/2 (1/2: no numerical damping).");
+                      "gamma >= 1/2 (1/2: no numerical damping). Unit: dimensionless.");
     prm.add_parameter("Newmark beta", newmark.beta,
                       "beta >= (1/2 + gamma)^2 / 4 (1/4 with gamma = 1/2: average "
-                      "acceleration).");
+                      "acceleration). Unit: dimensionless.");
     add_choice(prm, "Linear solver", linear_solver,
                "Direct solver of the effective matrix (factorised once); petsc and "
                "trilinos need MPI; petsc-mumps (MUMPS through PETSc) splits the matrix and "
                "its factorisation over the ranks of mpirun -np P poundfe run (each rank "
-               "keeps the whole state; rank 0 writes).",
+               "keeps the whole state; rank 0 writes). Unit: -.",
                linear_solver_names());
     prm.add_parameter("Newton residual tolerance", newmark.newton.residual_tolerance,
                       "A nonlinear step has converged when the residual norm is below this "
-                      "times the norm of the effective load ...");
+                      "times the norm of the effective load ... Unit: dimensionless.");
     prm.add_parameter("Newton energy tolerance", newmark.newton.energy_tolerance,
                       "... and the work of the residual on the last correction is below "
-                      "this times that of the first iteration (theory §3.4).");
+                      "this times that of the first iteration (theory §3.4). Unit: dimensionless.");
     prm.add_parameter("Newton maximum iterations", newmark.newton.max_iterations,
-                      "Iterations before the step is cut.", Patterns::Integer(1, 1000));
+                      "Iterations before the step is cut. Unit: count.",
+                      Patterns::Integer(1, 1000));
     prm.add_parameter("Maximum step cuts", newmark.newton.max_step_cuts,
                       "A step that fails is halved and retried, down to Time step / "
-                      "2^cuts; then the run stops (exit 2).", Patterns::Integer(0, 40));
+                      "2^cuts; then the run stops (exit 2). Unit: count.",
+                      Patterns::Integer(0, 40));
     add_choice(prm, "Tangent update", newmark.newton.tangent_update,
                "How the tangent of nonlinear elements enters the solve: woodbury "
                "keeps the one factorisation of the linear part and adds a dense "
@@ -69,25 +71,26 @@ namespace poundfe
                "analysis done once); hybrid uses woodbury while the elements whose "
                "tangent differs from their initial one (the active rank) fit in "
                "Woodbury columns, and refactorises when they do not; auto picks "
-               "woodbury up to a total rank of Woodbury columns, else hybrid.",
+               "woodbury up to a total rank of Woodbury columns, else hybrid. Unit: -.",
                tangent_update_names());
     prm.add_parameter("Woodbury columns", newmark.newton.woodbury_columns,
                       "The most columns of A^-1 B the Woodbury update keeps (a dense "
                       "equations x columns block, 8 bytes each): the limit of auto and "
-                      "hybrid.", Patterns::Integer(1, 100000));
+                      "hybrid. Unit: count.", Patterns::Integer(1, 100000));
     prm.add_parameter("Modified Newton", newmark.newton.modified_newton,
                       "Form and factorise the tangent at the first iteration of a step and "
                       "reuse it for the step's other iterations: no refactorisation after "
                       "the first, but linear instead of quadratic convergence (raise "
-                      "Newton maximum iterations).");
+                      "Newton maximum iterations). Unit: -.");
     add_choice(prm, "Hysteresis integration", hysteresis_integration,
                "Bouc-Wen z over a step: trapezoidal (second order) or "
-               "backward-euler (first order, most robust).",
+               "backward-euler (first order, most robust). Unit: -.",
                hysteresis_integration_names());
     prm.add_parameter("Law tolerance", law_tolerance,
-                      "Tolerance of the local Newton iteration of a law (on z).");
+                      "Tolerance of the local Newton iteration of a law (on z). "
+                      "Unit: dimensionless.");
     prm.add_parameter("Law maximum iterations", law_max_iterations,
-                      "Local iterations before the law reports failure.",
+                      "Local iterations before the law reports failure. Unit: count.",
                       Patterns::Integer(1, 1000));
     prm.leave_subsection();
   }
@@ -98,14 +101,14 @@ namespace poundfe
     prm.add_parameter("Event refinement", newmark.newton.event_refinement,
                       "A step in which a contact starts or ends is redone in 2^r "
                       "sub-steps around the event, which is then located inside the "
-                      "sub-step by interpolation.", Patterns::Integer(0, 12));
+                      "sub-step by interpolation. Unit: count.", Patterns::Integer(0, 12));
     prm.add_parameter("Steps per contact", newmark.newton.steps_per_contact,
                       "While a gap is closed, or about to close, the step is halved until "
                       "the impact's duration spans at least this many steps (the duration "
                       "of an elastic impact of the effective mass: pi sqrt(m_e / k) for the "
                       "linear laws, 2.94 delta_max / v0 for the Hertz laws and Jankowski's, "
                       "at the approach velocity v0); at most Time integration/Maximum step "
-                      "cuts halvings. 0: off.", Patterns::Integer(0, 10000));
+                      "cuts halvings. 0: off. Unit: count.", Patterns::Integer(0, 10000));
   }
 
   unsigned long

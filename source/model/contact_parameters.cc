@@ -39,40 +39,44 @@ namespace poundfe
       }
     add_choice(prm, "Law", law,
                "Gap elements between neighbouring buildings (and at barriers): none" + formulas +
-                 ".",
+                 ". Unit: -.",
                laws);
     prm.add_parameter("Stiffness", stiffness,
                       "k in N/m (linear laws) or k_h, beta in N/m^1.5 (Hertz laws, "
-                      "Jankowski; concrete ~2.75e9).");
+                      "Jankowski; concrete ~2.75e9). Unit: N/m or N/m^1.5.");
     add_choice(prm, "Damping from", damping_from,
                "given: the value of Damping; formula: the law's literature formula "
                "from the coefficient of restitution; calibrated: the value for "
                "which one impact of the effective mass on a rigid wall returns "
-               "exactly that coefficient.",
+               "exactly that coefficient. Unit: -.",
                contact_damping_from_names());
     prm.add_parameter("Damping", damping,
-                      "xi (Kelvin-Voigt laws, Jankowski) or xi_bar (Hertz-damp) when given.");
-    prm.add_parameter("Coefficient of restitution", restitution, "e in (0, 1]; concrete ~0.65.");
+                      "xi (Kelvin-Voigt laws, Jankowski) or xi_bar (Hertz-damp) when given. "
+                      "Unit: dimensionless.");
+    prm.add_parameter("Coefficient of restitution", restitution, "e in (0, 1]; concrete ~0.65. "
+                      "Unit: dimensionless.");
     add_choice(prm, "Hertz-damp formula", hertz_damp_formula,
                "xi_bar from e: 3(1 - e^2)/4 (Muthukumar & DesRoches) or "
-               "8(1 - e)/(5e) (Ye, Li & Zhu).",
+               "8(1 - e)/(5e) (Ye, Li & Zhu). Unit: -.",
                hertz_damp_formula_names());
     prm.add_parameter("Effective mass", effective_mass,
                       "m_e in kg; 0: m1 m2/(m1 + m2) of the colliding floor masses (the "
-                      "floor mass against a barrier).");
+                      "floor mass against a barrier). Unit: kg.");
     prm.add_parameter("Calibration velocity", calibration_velocity,
-                      "Approach velocity of the calibration impact, m/s.");
+                      "Approach velocity of the calibration impact. Unit: m/s.");
     prm.add_parameter("Between buildings", between_buildings,
                       "Gap elements between neighbouring buildings at every floor level "
-                      "the lower one has (initial gap: Model/Separations).");
+                      "the lower one has (initial gap: Model/Separations). Unit: -.");
     prm.add_parameter("Floor to column", floor_to_column,
                       "Where a floor of one building has no floor of its neighbour at "
                       "the same level, the contact point is on the neighbour's facing "
-                      "column at that height (frames).");
+                      "column at that height (frames). Unit: -.");
     prm.add_parameter("Barriers", barriers,
-                      "Rigid barriers 'building floor side gap' separated by ';': the "
-                      "floor's facing joint touches a barrier on the left or right side "
-                      "once it has moved by gap (m) towards it.",
+                      "Rigid barriers 'building floor side gap' separated by ';', e.g. "
+                      "'1 2 right 0.015; B 3 left 0.02': the floor's facing joint touches "
+                      "a barrier on the left or right side once it has moved by gap (m) "
+                      "towards it. The building: its number (1-based) or its Name; the "
+                      "floor 1-based. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
   }
 

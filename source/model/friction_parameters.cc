@@ -25,12 +25,15 @@ namespace poundfe
                       "Smooth-and-discontinuous springs 'building floor node K L H' "
                       "separated by ';', between the node's ux and the ground: "
                       "F = K x (1 - L/sqrt(x^2 + H^2)) (K in N/m, L and H in m; H = 0 is "
-                      "the discontinuous limit). K is assembled into the linear K.",
+                      "the discontinuous limit). K is assembled into the linear K. The "
+                      "building: its number (1-based) or its Name; floor 1-based, node "
+                      "0-based from the left. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Cubic springs", cubic,
                       "Duffing springs 'building floor node k1 k3' separated by ';', "
                       "between the node's ux and the ground: F = k1 x + k3 x^3 (N/m, "
-                      "N/m^3). k1 is assembled into the linear K.",
+                      "N/m^3). k1 is assembled into the linear K. The building: its number "
+                      "or its Name. Unit: per field.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
   }
 
@@ -41,35 +44,39 @@ namespace poundfe
                       "Friction elements 'building floor node' separated by ';': the "
                       "node's ux slides on the ground or on a belt moving at Belt "
                       "velocity (a base sliding on its foundation, a floor on a "
-                      "bearing, a mass on a belt).",
+                      "bearing, a mass on a belt). The building: its number (1-based) or "
+                      "its Name. Unit: -.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     add_choice(prm, "Model", law.model,
                "elastic-plastic: Coulomb slider with a stiff stick spring, by return "
                "mapping (stick and slip exact up to the stick spring's deflection "
                "mu_s N/k_s); regularized: F = mu N tanh(v_slip/eps), as in the "
-               "thesis.",
+               "thesis. Unit: -.",
                friction_model_names());
     prm.add_parameter("Static coefficient", law.static_coefficient,
-                      "mu_s: stick holds while |F| <= mu_s N.");
+                      "mu_s: stick holds while |F| <= mu_s N. Unit: dimensionless.");
     prm.add_parameter("Kinetic coefficient", law.kinetic_coefficient,
-                      "mu_k: F = mu_k N in slip (without a Stribeck curve); mu_k <= mu_s.");
+                      "mu_k: F = mu_k N in slip (without a Stribeck curve); mu_k <= mu_s. "
+                      "Unit: dimensionless.");
     prm.add_parameter("Stribeck velocity", law.stribeck_velocity,
                       "v_s in m/s: mu = mu_k + (mu_s - mu_k) exp(-|v_slip|/v_s) in slip; "
-                      "0: no Stribeck curve.");
+                      "0: no Stribeck curve. Unit: m/s.");
     prm.add_parameter("Belt velocity", law.belt_velocity,
-                      "v0 in m/s: the surface's velocity; the slip velocity is x' - v0.");
-    prm.add_parameter("Normal force", law.normal.constant, "C0 in N.");
+                      "v0 in m/s: the surface's velocity; the slip velocity is x' - v0. "
+                      "Unit: m/s.");
+    prm.add_parameter("Normal force", law.normal.constant, "C0. Unit: N.");
     prm.add_parameter("Normal force per displacement", law.normal.per_displacement,
-                      "C1 in N/m: N = C0 + C1 |x| + C2 |x'| (N < 0: lift-off, no friction).");
-    prm.add_parameter("Normal force per velocity", law.normal.per_velocity, "C2 in N s/m.");
+                      "C1 in N/m: N = C0 + C1 |x| + C2 |x'| (N < 0: lift-off, no friction). "
+                      "Unit: N/m.");
+    prm.add_parameter("Normal force per velocity", law.normal.per_velocity, "C2. Unit: N s/m.");
     prm.add_parameter("Normal force from SD spring", normal_force_from_sd_spring,
                       "N also carries the vertical reaction of the SD spring at the same "
-                      "node: C0 - K H (1 - L/sqrt(x^2 + H^2)) (the thesis's eq. 2.7).");
+                      "node: C0 - K H (1 - L/sqrt(x^2 + H^2)) (the thesis's eq. 2.7). Unit: -.");
     prm.add_parameter("Stick stiffness", law.stick_stiffness,
                       "k_s in N/m of the elastic-plastic model; 0: 1e4 times the "
-                      "linear stiffness at the node (the diagonal of K).");
+                      "linear stiffness at the node (the diagonal of K). Unit: N/m.");
     prm.add_parameter("Regularization velocity", law.regularization_velocity,
-                      "eps in m/s of the regularized model.");
+                      "eps in m/s of the regularized model. Unit: m/s.");
   }
 
   void

@@ -542,19 +542,17 @@ namespace poundfe
     {
       const std::string path = "Contact/Barriers";
       std::istringstream in(entry);
-      unsigned int       b = 0, f = 0;
-      std::string        side, rest;
+      unsigned int       f = 0;
+      std::string        building_field, side, rest;
       double             gap = 0;
-      if (!read_number(read_number(in, b), f) || !(in >> side) || !read_number(in, gap) ||
+      if (!read_number(in >> building_field, f) || !(in >> side) || !read_number(in, gap) ||
           (in >> rest) || (side != "left" && side != "right") || !(gap >= 0))
         throw InputError(input.file, input.line_of(path), path,
-                         "'" + entry + "': expected 'building floor left|right gap' (whole "
-                         "numbers, a side, a gap in m >= 0, nothing after it)");
-      if (b < 1 || b > model.buildings.size())
-        throw InputError(input.file, input.line_of(path), path,
-                         "'" + entry + "': building must be 1 to " +
-                           std::to_string(model.buildings.size()));
-      const Building &building = model.buildings[b - 1];
+                         "'" + entry + "': expected 'building floor left|right gap' (a "
+                         "building number or name, a whole number, a side, a gap in m >= 0, "
+                         "nothing after it)");
+      const unsigned int b = read_building(input, model, building_field, path, entry) + 1;
+      const Building    &building = model.buildings[b - 1];
       if (f < 1 || f > building.floors.size())
         throw InputError(input.file, input.line_of(path), path,
                          "'" + entry + "': floor must be 1 to " +

@@ -55,107 +55,142 @@ namespace poundfe
   void
   BuildingParameters::declare(dealii::ParameterHandler &prm)
   {
-    prm.add_parameter("Name", name, "Label used in reports; default 'B<n>'.");
+    // Declared (and printed: print_parameters keeps this order) by the kind
+    // of building they apply to, each tagged [frame], [shear], [mesh] or a
+    // combination; untagged entries apply to every Type.
+    prm.add_parameter("Name", name,
+                      "Label used in reports, and to name the building in entries that "
+                      "take a building (Barriers, Nodal forces, Springs, Friction: its "
+                      "number or its Name); default 'B<n>'. Unit: -.");
     add_choice(prm, "Type", type,
                "frame: regular frame generated from storeys and bays; "
-               "mesh: frame read from a Gmsh mesh; shear: stick model.",
+               "mesh: frame read from a Gmsh mesh; shear: stick model. The entries "
+               "tagged [frame], [shear] or [mesh] apply only to that Type. Unit: -.",
                building_type_names());
-    prm.add_parameter("Number of storeys", n_storeys, "Storeys (frame, shear).",
-                      Patterns::Integer(1));
-    prm.add_parameter("Number of bays", n_bays, "Bays (frame).", Patterns::Integer(1));
-    prm.add_parameter("Storey heights", storey_heights,
-                      "Storey heights in m, bottom up: one value for all or one per storey.");
-    prm.add_parameter("Bay widths", bay_widths,
-                      "Bay widths in m, left to right: one value for all or one per bay.");
-    prm.add_parameter("Column E", column_youngs_modulus,
-                      "Column Young's modulus in Pa, one value or one per storey.");
-    prm.add_parameter("Column A", column_area, "Column area in m^2, one or per storey.");
-    prm.add_parameter("Column I", column_second_moment,
-                      "Column second moment of area in m^4, one or per storey.");
-    prm.add_parameter("Beam E", beam_youngs_modulus,
-                      "Beam Young's modulus in Pa, one or per floor.");
-    prm.add_parameter("Beam A", beam_area, "Beam area in m^2, one or per floor.");
-    prm.add_parameter("Beam I", beam_second_moment,
-                      "Beam second moment of area in m^4, one or per floor.");
-    prm.add_parameter("Column mass per length", column_mass_per_length,
-                      "Distributed column mass in kg/m, one or per storey.");
-    prm.add_parameter("Beam mass per length", beam_mass_per_length,
-                      "Distributed beam mass in kg/m, one or per floor.");
     prm.add_parameter("Floor masses", floor_masses,
-                      "Mass of each floor in kg, bottom up (roof last), lumped in equal "
-                      "shares at the floor's joints: one value for all or one per floor. "
-                      "For shear buildings, the floor mass.");
-    add_choice(prm, "Base fixity", base_fixity,
-               "Support of the column bases: fixed (clamped) or pinned.", base_fixity_names());
+                      "Mass of each floor, bottom up (roof last): one value for all or one "
+                      "per floor. Frames: lumped in equal shares at the floor's joints; "
+                      "shear buildings: the floor mass. Unit: kg.");
+
+    prm.add_parameter("Number of storeys", n_storeys, "[frame, shear] Storeys. Unit: count.",
+                      Patterns::Integer(1));
+    prm.add_parameter("Storey heights", storey_heights,
+                      "[frame, shear] Storey heights, bottom up: one value for all or one "
+                      "per storey. Unit: m.");
+
+    prm.add_parameter("Number of bays", n_bays, "[frame] Bays. Unit: count.",
+                      Patterns::Integer(1));
+    prm.add_parameter("Bay widths", bay_widths,
+                      "[frame] Bay widths, left to right: one value for all or one per bay. "
+                      "Unit: m.");
+    prm.add_parameter("Column E", column_youngs_modulus,
+                      "[frame] Column Young's modulus, one value or one per storey. Unit: Pa.");
+    prm.add_parameter("Column A", column_area,
+                      "[frame] Column area, one or per storey. Unit: m^2.");
+    prm.add_parameter("Column I", column_second_moment,
+                      "[frame] Column second moment of area, one or per storey. Unit: m^4.");
+    prm.add_parameter("Beam E", beam_youngs_modulus,
+                      "[frame] Beam Young's modulus, one or per floor. Unit: Pa.");
+    prm.add_parameter("Beam A", beam_area, "[frame] Beam area, one or per floor. Unit: m^2.");
+    prm.add_parameter("Beam I", beam_second_moment,
+                      "[frame] Beam second moment of area, one or per floor. Unit: m^4.");
+    prm.add_parameter("Column mass per length", column_mass_per_length,
+                      "[frame] Distributed column mass, one or per storey. Unit: kg/m.");
+    prm.add_parameter("Beam mass per length", beam_mass_per_length,
+                      "[frame] Distributed beam mass, one or per floor. Unit: kg/m.");
     prm.add_parameter("Elements per member", elements_per_member,
-                      "Frame elements along each column and beam.", Patterns::Integer(1, 64));
-    prm.add_parameter("Storey stiffnesses", storey_stiffnesses,
-                      "Shear building storey stiffness in N/m, one or per storey; 0 "
-                      "where only Springs hold the floor (the SD or Duffing oscillator).");
-    prm.add_parameter("Storey damping", storey_damping,
-                      "Shear building storey dashpot in N s/m, one or per storey "
-                      "(added to the Rayleigh damping).");
-    prm.add_parameter("Drawing width", drawing_width,
-                      "Shear building: width in m used for placement and pictures.");
+                      "[frame] Frame elements along each column and beam. Unit: count.",
+                      Patterns::Integer(1, 64));
+    add_choice(prm, "Base fixity", base_fixity,
+               "[frame, mesh] Support of the column bases: fixed (clamped) or pinned. "
+               "Unit: -.",
+               base_fixity_names());
+
     prm.add_parameter("Mesh file", mesh_file,
-                      "Gmsh .msh file (line elements; physical ids are member groups), "
-                      "relative to this parameter file.");
-    prm.add_parameter("Group ids", group_ids, "Mesh member group (physical) ids.");
-    prm.add_parameter("Group E", group_youngs_modulus, "Young's modulus per group, Pa.");
-    prm.add_parameter("Group A", group_area, "Area per group, m^2.");
-    prm.add_parameter("Group I", group_second_moment, "Second moment per group, m^4.");
+                      "[mesh] Gmsh .msh file (line elements; physical ids are member groups), "
+                      "relative to this parameter file. Unit: -.");
+    prm.add_parameter("Group ids", group_ids, "[mesh] Mesh member group (physical) ids. Unit: -.");
+    prm.add_parameter("Group E", group_youngs_modulus,
+                      "[mesh] Young's modulus per group. Unit: Pa.");
+    prm.add_parameter("Group A", group_area, "[mesh] Area per group. Unit: m^2.");
+    prm.add_parameter("Group I", group_second_moment,
+                      "[mesh] Second moment of area per group. Unit: m^4.");
     prm.add_parameter("Group mass per length", group_mass_per_length,
-                      "Distributed mass per group, kg/m.");
+                      "[mesh] Distributed mass per group. Unit: kg/m.");
+
+    prm.add_parameter("Storey stiffnesses", storey_stiffnesses,
+                      "[shear] Storey stiffness, one or per storey; 0 where only Springs "
+                      "hold the floor (the SD or Duffing oscillator). Unit: N/m.");
+    prm.add_parameter("Storey damping", storey_damping,
+                      "[shear] Storey dashpot, one or per storey (added to the Rayleigh "
+                      "damping). Unit: N s/m.");
+    prm.add_parameter("Storey yield drifts", storey_yield_drifts,
+                      "[shear] Yield drift u_y of a Bouc-Wen storey (force k u_y at yield), "
+                      "one value or one per storey; empty or 0: elastic. Unit: m.");
+    prm.add_parameter("Drawing width", drawing_width,
+                      "[shear] Width used for placement and pictures. Unit: m.");
+
     prm.enter_subsection("Hinges");
     prm.add_parameter("Locations", hinge_locations,
-                      "Frames: member ends that get a Bouc-Wen rotational hinge. column "
+                      "[frame, mesh] Member ends that get a Bouc-Wen rotational hinge. column "
                       "bases: bottom of the ground-storey columns on clamped supports; "
                       "column tops / column ends: top / both ends of every column; beam "
-                      "ends: both ends of every beam. Empty: an elastic frame. Allowed: a "
-                      "comma-separated list of column bases, column tops, column ends, "
-                      "beam ends.",
+                      "ends: both ends of every beam. Empty: an elastic frame. Unit: -. "
+                      "Allowed: a comma-separated list of column bases, column tops, column "
+                      "ends, beam ends.",
                       Patterns::List(Patterns::Selection(
                         "column bases|column tops|column ends|beam ends")));
     prm.add_parameter("Groups", hinge_groups,
-                      "Member groups that get hinges (empty: all). Generated frames: "
-                      "group 2i-1 holds the columns of storey i, group 2i the beams of "
-                      "floor i; meshes: the physical ids.");
+                      "[frame, mesh] Member groups that get hinges (empty: all). Generated "
+                      "frames: group 2i-1 holds the columns of storey i, group 2i the beams "
+                      "of floor i; meshes: the physical ids. Unit: -.");
     prm.add_parameter("Yield moment", hinge_yield_moments,
-                      "Yield moment M_y in N m, one value or one per entry of Groups; "
-                      "the yield rotation is M_y / k.");
+                      "[frame, mesh] Yield moment M_y, one value or one per entry of Groups; "
+                      "the yield rotation is M_y / k. Unit: N m.");
     prm.add_parameter("Yield rotation", hinge_yield_rotations,
-                      "Yield rotation in rad, used where the yield moment is 0.");
+                      "[frame, mesh] Yield rotation, used where the yield moment is 0. "
+                      "Unit: rad.");
     prm.add_parameter("Stiffness", hinge_stiffnesses,
-                      "Elastic rotational stiffness k in N m/rad, one value or one per "
-                      "entry of Groups; 0: Stiffness factor x 6 E I / L of the member.");
+                      "[frame, mesh] Elastic rotational stiffness k, one value or one per "
+                      "entry of Groups; 0: Stiffness factor x 6 E I / L of the member. "
+                      "Unit: N m/rad.");
     prm.add_parameter("Stiffness factor", hinge_stiffness_factor,
-                      "k = factor x 6 E I / L where Stiffness is 0 (stiff hinges keep the "
-                      "elastic frame nearly unchanged; Ibarra & Krawinkler use 10).");
+                      "[frame, mesh] k = factor x 6 E I / L where Stiffness is 0 (stiff "
+                      "hinges keep the elastic frame nearly unchanged; Ibarra & Krawinkler "
+                      "use 10). Unit: dimensionless.");
     prm.leave_subsection();
-    prm.add_parameter("Storey yield drifts", storey_yield_drifts,
-                      "Shear buildings: yield drift u_y in m of a Bouc-Wen storey (force "
-                      "k u_y at yield), one value or one per storey; empty or 0: elastic.");
     prm.enter_subsection("Bouc-Wen");
     BoucWenParameters &h = hysteresis;
-    prm.add_parameter("alpha", h.alpha, "Post-yield to elastic stiffness ratio.");
-    prm.add_parameter("A", h.A, "A0 (1 with beta + gamma = 1 keeps |z| <= 1).");
-    prm.add_parameter("beta", h.beta, "Loop shape.");
-    prm.add_parameter("gamma", h.gamma, "Loop shape.");
-    prm.add_parameter("n", h.n, "Sharpness of the yield transition (>= 1).");
-    prm.add_parameter("delta A", h.delta_A, "Baber-Noori strength degradation of A.");
-    prm.add_parameter("delta nu", h.delta_nu, "Baber-Noori strength degradation (nu).");
-    prm.add_parameter("delta eta", h.delta_eta, "Baber-Noori stiffness degradation (eta).");
+    prm.add_parameter("alpha", h.alpha,
+                      "Of the hinges [frame, mesh] and hysteretic storeys [shear]: post-yield "
+                      "to elastic stiffness ratio. Unit: dimensionless.");
+    prm.add_parameter("A", h.A,
+                      "A0 (1 with beta + gamma = 1 keeps |z| <= 1). Unit: dimensionless.");
+    prm.add_parameter("beta", h.beta, "Loop shape. Unit: dimensionless.");
+    prm.add_parameter("gamma", h.gamma, "Loop shape. Unit: dimensionless.");
+    prm.add_parameter("n", h.n,
+                      "Sharpness of the yield transition (>= 1). Unit: dimensionless.");
+    prm.add_parameter("delta A", h.delta_A,
+                      "Baber-Noori strength degradation of A. Unit: dimensionless.");
+    prm.add_parameter("delta nu", h.delta_nu,
+                      "Baber-Noori strength degradation (nu). Unit: dimensionless.");
+    prm.add_parameter("delta eta", h.delta_eta,
+                      "Baber-Noori stiffness degradation (eta). Unit: dimensionless.");
     prm.leave_subsection();
     prm.enter_subsection("Damping");
     add_choice(prm, "Type", damping_type,
                "Rayleigh damping C = a0 M + a1 K of this building: from a damping "
-               "ratio at two modes, from given coefficients, or none.",
+               "ratio at two modes, from given coefficients, or none. Unit: -.",
                damping_type_names());
-    prm.add_parameter("Damping ratio", damping_ratio, "Damping ratio at both modes.");
+    prm.add_parameter("Damping ratio", damping_ratio,
+                      "Damping ratio at both modes (Type = modes). Unit: dimensionless.");
     prm.add_parameter("Modes", damping_modes,
-                      "The two modes (1-based) of this building that get the ratio.");
-    prm.add_parameter("a0", rayleigh_a0, "Mass-proportional coefficient, 1/s.");
-    prm.add_parameter("a1", rayleigh_a1, "Stiffness-proportional coefficient, s.");
+                      "The two modes (1-based) of this building that get the ratio (Type = "
+                      "modes); two sway modes, not vertical ones. Unit: -.");
+    prm.add_parameter("a0", rayleigh_a0,
+                      "Mass-proportional coefficient (Type = coefficients). Unit: 1/s.");
+    prm.add_parameter("a1", rayleigh_a1,
+                      "Stiffness-proportional coefficient (Type = coefficients). Unit: s.");
     prm.leave_subsection();
   }
 
@@ -264,7 +299,7 @@ namespace poundfe
     prm.enter_subsection("Model");
     prm.add_parameter("Number of buildings", n_buildings,
                       "Buildings side by side, left to right; each has a subsection "
-                      "'Building <i>'.", Patterns::Integer(1, 100));
+                      "'Building <i>'. Unit: count.", Patterns::Integer(1, 100));
     prm.leave_subsection();
   }
 
@@ -274,18 +309,19 @@ namespace poundfe
     unsigned int n_buildings = buildings.size(); // read by the first pass
     declare_number_of_buildings(prm, n_buildings);
     prm.enter_subsection("Model");
-    add_choice(prm, "Mass matrix", mass_matrix, "Distributed member mass.", mass_matrix_names());
+    add_choice(prm, "Mass matrix", mass_matrix, "Distributed member mass. Unit: -.",
+               mass_matrix_names());
     add_choice(prm, "Geometric nonlinearity", geometric_nonlinearity,
                "p-delta: the geometric stiffness of the gravity loads (every mass times "
                "Gravity), linearised and added to K once: frame members from their axial "
                "forces in a linear static gravity analysis, shear-building storeys -P/h "
-               "with P the weight above. none: small displacements.",
+               "with P the weight above. none: small displacements. Unit: -.",
                geometric_nonlinearity_names());
     prm.add_parameter("Gravity", gravity,
-                      "Acceleration of gravity in m/s^2 for the P-Delta loads.");
+                      "Acceleration of gravity in m/s^2 for the P-Delta loads. Unit: m/s^2.");
     prm.add_parameter("Separations", separations,
                       "Clear distance in m between building i and i+1 (one value for "
-                      "all pairs or one per pair).");
+                      "all pairs or one per pair). Unit: m.");
     prm.leave_subsection();
     for (unsigned int b = 0; b < buildings.size(); ++b)
       {

@@ -6,22 +6,53 @@
 #include <cmath>
 #include <istream>
 #include <sstream>
+#include <vector>
 
 namespace poundfe
 {
+  unsigned int
+  read_building(const InputFile &input, const Model &model, const std::string &token,
+                const std::string &path, const std::string &entry)
+  {
+    const unsigned int n = model.buildings.size();
+    if (const std::optional<unsigned long> number = parse_count(token, n))
+      {
+        if (*number >= 1)
+          return *number - 1;
+      }
+    else if (!parse_number(token))
+      {
+        std::vector<unsigned int> named;
+        for (unsigned int b = 0; b < n; ++b)
+          if (model.buildings[b].name == token)
+            named.push_back(b);
+        if (named.size() == 1)
+          return named.front();
+        if (named.size() > 1)
+          throw InputError(input.file, input.line_of(path), path,
+                           "'" + entry + "': buildings " + std::to_string(named[0] + 1) +
+                             " and " + std::to_string(named[1] + 1) + " are both named '" +
+                             token + "'; give the building's number");
+      }
+    std::string names;
+    for (unsigned int b = 0; b < n; ++b)
+      names += (b == 0 ? "'" : ", '") + model.buildings[b].name + "'";
+    throw InputError(input.file, input.line_of(path), path,
+                     "'" + entry + "': building must be 1.." + std::to_string(n) +
+                       " or a Name (" + names + "), got '" + token + "'");
+  }
+
   FloorNode
   read_floor_node(const InputFile &input, const Model &model, std::istream &fields,
                   const std::string &path, const std::string &entry, const std::string &form)
   {
-    const int    line     = input.line_of(path);
-    unsigned int building = 0, floor = 0, node = 0;
-    if (!read_number(read_number(read_number(fields, building), floor), node))
+    const int    line = input.line_of(path);
+    std::string  building_field;
+    unsigned int floor = 0, node = 0;
+    if (!read_number(read_number(fields >> building_field, floor), node))
       throw InputError(input.file, line, path, "'" + entry + "': expected '" + form + "'");
-    if (building < 1 || building > model.buildings.size())
-      throw InputError(input.file, line, path,
-                       "'" + entry + "': building must be 1.." +
-                         std::to_string(model.buildings.size()));
-    const Building &b = model.buildings[building - 1];
+    const unsigned int building = read_building(input, model, building_field, path, entry) + 1;
+    const Building    &b        = model.buildings[building - 1];
     if (floor < 1 || floor > b.floors.size())
       throw InputError(input.file, line, path,
                        "'" + entry + "': floor must be 1.." + std::to_string(b.floors.size()) +

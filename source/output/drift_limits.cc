@@ -38,23 +38,23 @@ namespace poundfe
                       "Peak inter-storey drift ratios to check every storey of every building "
                       "against, as ratios (0.005, 0.01) or percentages (0.5 %, 1 %); empty: "
                       "none. Pass/fail per building and limit in summary.json, lines on "
-                      "drift_profile.png.");
+                      "drift_profile.png. Unit: dimensionless.");
     add_choice(prm, "Code", code,
                "A code's limit checked as well: asce-7 (Table 12.12-1, all other "
                "structures: 0.020/0.015/0.010 for risk categories I-II/III/IV), eurocode-8 "
                "(4.4.3.2 damage limitation: d_r nu <= 0.005/0.0075/0.010 h for brittle/"
-               "ductile/no interfering non-structural elements).",
+               "ductile/no interfering non-structural elements). Unit: -.",
                drift_code_names());
-    prm.add_parameter("Risk category", risk_category, "ASCE 7 risk category.",
+    prm.add_parameter("Risk category", risk_category, "ASCE 7 risk category. Unit: -.",
                       Patterns::Selection("I|II|III|IV"));
     prm.add_parameter("Non-structural elements", non_structural,
                       "Eurocode 8: brittle, ductile, or none (none, or fixed so as not to "
-                      "interfere with the structural deformations).",
+                      "interfere with the structural deformations). Unit: -.",
                       Patterns::Selection("brittle|ductile|none"));
     prm.add_parameter("nu", nu,
                       "Eurocode 8 reduction factor for the damage-limitation action (0.5 for "
                       "importance classes I-II, 0.4 for III-IV; 1 if the run is at the "
-                      "damage-limitation action itself).",
+                      "damage-limitation action itself). Unit: dimensionless.",
                       Patterns::Double(0, 1));
     prm.leave_subsection();
   }

@@ -9,30 +9,31 @@ namespace poundfe
   {
     prm.enter_subsection("Output");
     prm.add_parameter("Directory", directory,
-                      "Results directory (relative to the working directory).");
+                      "Results directory (relative to the working directory). Unit: -.");
     prm.add_parameter("Output interval", interval,
                       "Interval of the time series' rows, s (0: every step); rounded to a whole "
-                      "number of time steps.");
+                      "number of time steps. Unit: s.");
     add_choice(prm, "Format", recorders.format,
                "Format of the time series: csv (<name>.csv: a header line, then numbers in the "
                "shortest form that reads back exactly) or npy (<name>.npy: NumPy format 1.0, "
                "float64 rows x columns, little-endian, C order, with the column names in "
-               "<name>.columns.txt; for long or large runs; no plots of time series).",
+               "<name>.columns.txt; for long or large runs; no plots of time series). Unit: -.",
                output_format_names());
-    prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none).");
+    prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none). "
+                      "Unit: s.");
     prm.add_parameter("Maximum VTU frames", max_vtu_frames,
                       "Most VTU frames a run writes: when End time / VTU interval would give "
-                      "more, the interval is widened to fit and the console says so.",
+                      "more, the interval is widened to fit and the console says so. Unit: count.",
                       dealii::Patterns::Integer(2));
-    prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot.");
+    prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot. Unit: -.");
     prm.add_parameter("Floor spectra", floor_spectra,
                       "A run also writes floor_spectra.csv (and floor_spectra.png): the "
                       "response spectra of every floor's absolute acceleration (and of the "
                       "ground) at the periods and damping ratios of the Spectrum section, "
-                      "computed while the run steps (sub-steps included).");
+                      "computed while the run steps (sub-steps included). Unit: -.");
     prm.add_parameter("Number of modes", n_modes,
                       "Modes reported (0: no modal analysis, for a large model whose "
-                      "damping needs no modes).",
+                      "damping needs no modes). Unit: count.",
                       dealii::Patterns::Integer(0));
     prm.enter_subsection("Recorders");
     recorders.declare(prm);
@@ -43,12 +44,13 @@ namespace poundfe
                       "drift ratio, or a building's peak roof displacement over its height, "
                       "exceeds this: 2.5 times the collapse-prevention drift of concrete "
                       "frames (0.04, FEMA 356 Table C1-3), which the elastic members and the "
-                      "Bouc-Wen hinges (no strength loss) cannot represent. 0: no warning.",
+                      "Bouc-Wen hinges (no strength loss) cannot represent. 0: no warning. "
+                      "Unit: dimensionless.",
                       dealii::Patterns::Double(0));
     prm.add_parameter("Rotation", rotation_warning,
                       "A run warns when a node of a frame rotates more than this, rad: the frame "
                       "elements assume small displacements (at 0.1 rad sin(theta) differs from "
-                      "theta by 0.17 % and a chord shortens by 0.5 %). 0: no warning.",
+                      "theta by 0.17 % and a chord shortens by 0.5 %). 0: no warning. Unit: rad.",
                       dealii::Patterns::Double(0));
     prm.leave_subsection();
     prm.leave_subsection();

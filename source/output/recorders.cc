@@ -401,7 +401,7 @@ namespace poundfe
     prm.add_parameter("Default files", default_files,
                       "Write the default time series: floor displacement, floor acceleration, "
                       "storey drift ratio, hinge states (with hinges or Bouc-Wen storeys), gap "
-                      "states (with gaps), energy, ground motion, every Output interval.");
+                      "states (with gaps), energy, ground motion, every Output interval. Unit: -.");
     prm.add_parameter("Record", record,
                       "Further recorders, separated by ';'. Each is '<quantity> [of <labels>] "
                       "[every <seconds>]'; without 'every', rows come every Output interval "
@@ -409,7 +409,7 @@ namespace poundfe
                       "Quantities (files): " + names + ". 'member end forces' needs the members, "
                       "e.g. 'member end forces of A3_C1.1, A3_B2.1' (building, C<storey>.<column "
                       "line> or B<floor>.<bay>). Storey and base shear are element forces "
-                      "(Rayleigh damping excluded, storey dashpots included).");
+                      "(Rayleigh damping excluded, storey dashpots included). Unit: -.");
   }
 
   void

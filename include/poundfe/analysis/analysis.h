@@ -27,10 +27,27 @@ namespace poundfe
     LinearSystem       system;
     std::vector<Modes> building_modes; // for Rayleigh damping and reports
     Modes              modes;          // whole model
+    /// Input that is valid but probably not what was meant (damping_warnings).
+    std::vector<std::string> warnings;
   };
 
   /// Throws InputError (bad input) or NumericalError (e.g. a mechanism).
+  /// Prints each of the analysis' warnings once per process, on stderr
+  /// ("poundfe: warning: ..."), where writes_outputs().
   Analysis prepare_analysis(const InputParameters &input);
+
+  /// The suspicious damping choices of each building: Rayleigh damping
+  /// fitted at a mode whose kinetic energy is mostly vertical (a beam or
+  /// column mode of a frame, not a storey mode), mass-proportional damping
+  /// alone (a1 = 0: the higher modes nearly undamped), given coefficients
+  /// both 0 (no damping), and damping entries the chosen Type ignores.
+  std::vector<std::string> damping_warnings(const Analysis &analysis);
+
+  /// Whether this process writes files and messages: rank 0 of
+  /// MPI_COMM_WORLD, or the only process when MPI is not initialised.
+  /// (With a solver that needs MPI, every rank of `mpirun -np P poundfe
+  /// run` runs the same analysis; rank 0 alone writes.)
+  bool writes_outputs();
 
   /// Opens a command's summary.json with program, command, input and status.
   void begin_summary(JsonWriter &json, const std::string &command, const InputParameters &input,

@@ -17,7 +17,15 @@ namespace poundfe
                     const InputFile &input, const SpringParameters &springs = {},
                     const FrictionParameters &friction = {});
 
-  /// A node named 'building floor node' (counted from 1, 1 and 0).
+  /// The building (0-based) that the field `token` of `entry` names: its
+  /// number, 1-based (a field that is a whole number is always a number),
+  /// or its Name (case-sensitive). Throws InputError naming `path`, the
+  /// entry and the numbers and names that exist.
+  unsigned int read_building(const InputFile &input, const Model &model, const std::string &token,
+                             const std::string &path, const std::string &entry);
+
+  /// A node named 'building floor node' (counted from 1, 1 and 0; the
+  /// building by number or name, read_building).
   struct FloorNode
   {
     unsigned int node     = 0; // in the model
