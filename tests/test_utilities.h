@@ -3,6 +3,7 @@
 #define poundfe_tests_test_utilities_h
 
 #include <poundfe/analysis/input_parameters.h>
+#include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/model/model.h>
 
@@ -118,6 +119,22 @@ namespace poundfe_test
       (std::filesystem::temp_directory_path() / ("poundfe_" + name)).string();
     std::ofstream(path) << contents;
     return path;
+  }
+
+  /// The message of the poundfe::InputError `f` throws ("" when it throws none).
+  template <typename F>
+  std::string
+  input_error_of(F &&f)
+  {
+    try
+      {
+        f();
+      }
+    catch (const poundfe::InputError &e)
+      {
+        return e.what();
+      }
+    return "";
   }
 } // namespace poundfe_test
 

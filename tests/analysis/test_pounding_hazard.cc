@@ -42,21 +42,6 @@ namespace
   const PowerLawDemand demand{0.03, 1.2, 0.45, 0}; // c = 3 cm at 1 g, b, beta_D
   const double         k0 = 2e-4, k = 2.5;
 
-  /// The message of the InputError `f` throws ("" when it throws none).
-  template <typename F>
-  std::string
-  input_error_of(F &&f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        return e.what();
-      }
-    return "";
-  }
 } // namespace
 
 BOOST_AUTO_TEST_CASE(hazard_integral_against_cornells_closed_form)
@@ -196,21 +181,21 @@ BOOST_AUTO_TEST_CASE(linear_pair_at_three_levels_obeys_the_scaling_identity)
 BOOST_AUTO_TEST_CASE(bad_hazard_input_is_reported)
 {
   const std::string parameter = "Separation/Site hazard/File";
-  BOOST_TEST(input_error_of([&] { read_pga_hazard("/nonexistent/hazard_curve.csv", parameter); })
+  BOOST_TEST(poundfe_test::input_error_of([&] { read_pga_hazard("/nonexistent/hazard_curve.csv", parameter); })
                .find("cannot open the hazard file") != std::string::npos);
   const std::string rising = temporary_file(
     "pounding_rising.csv", "pga_g,annual_rate_per_year\n0.1,0.01\n0.2,0.02\n0.3,0.001\n");
-  const std::string message = input_error_of([&] { read_pga_hazard(rising, parameter); });
+  const std::string message = poundfe_test::input_error_of([&] { read_pga_hazard(rising, parameter); });
   std::remove(rising.c_str());
   BOOST_TEST(message.find("not monotone") != std::string::npos);
   const std::string no_column =
     temporary_file("pounding_no_column.csv", "pga,rate\n0.1,0.01\n0.2,0.001\n");
-  BOOST_TEST(input_error_of([&] { read_pga_hazard(no_column, parameter); }).find("pga_g") !=
+  BOOST_TEST(poundfe_test::input_error_of([&] { read_pga_hazard(no_column, parameter); }).find("pga_g") !=
              std::string::npos);
   std::remove(no_column.c_str());
   const std::string not_site_hazard =
     temporary_file("pounding_summary.json", "{\"command\": \"fragility\"}\n");
-  BOOST_TEST(input_error_of([&] { read_pga_hazard(not_site_hazard, parameter); })
+  BOOST_TEST(poundfe_test::input_error_of([&] { read_pga_hazard(not_site_hazard, parameter); })
                .find("not a summary.json of `poundfe site-hazard`") != std::string::npos);
   std::remove(not_site_hazard.c_str());
 
@@ -222,14 +207,14 @@ BOOST_AUTO_TEST_CASE(bad_hazard_input_is_reported)
   for (const double target : {0.0, 1.0, -0.1})
     {
       p.target_probability = target;
-      BOOST_TEST(input_error_of([&] { p.check(file); }).find("Target probability") !=
+      BOOST_TEST(poundfe_test::input_error_of([&] { p.check(file); }).find("Target probability") !=
                  std::string::npos);
     }
   p.target_probability = 0.1;
   p.minimum_pga        = 0;
-  BOOST_TEST(input_error_of([&] { p.check(file); }).find("Minimum PGA") != std::string::npos);
+  BOOST_TEST(poundfe_test::input_error_of([&] { p.check(file); }).find("Minimum PGA") != std::string::npos);
   p.minimum_pga = 0.01;
   p.pga_levels  = {0.2, 0.2};
-  BOOST_TEST(input_error_of([&] { p.check(file); }).find("two or more distinct") !=
+  BOOST_TEST(poundfe_test::input_error_of([&] { p.check(file); }).find("two or more distinct") !=
              std::string::npos);
 }

@@ -4,6 +4,8 @@
 #include <poundfe/base/input_text.h>
 #include <poundfe/base/numbers.h>
 
+#include "test_utilities.h"
+
 #include <cfloat>
 #include <cstdio>
 #include <cstdlib>
@@ -14,25 +16,6 @@
 #include <boost/test/unit_test.hpp>
 
 using namespace poundfe;
-
-namespace
-{
-  /// The message of the InputError `f` throws ("" if none).
-  template <typename F>
-  std::string
-  message_of(F f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        return e.what();
-      }
-    return "";
-  }
-} // namespace
 
 BOOST_AUTO_TEST_CASE(numbers_are_read_whole_or_refused)
 {
@@ -108,15 +91,15 @@ BOOST_AUTO_TEST_CASE(parameter_text_is_scanned_by_lines)
                                 std::string(200000, '1') + "\nend\n";
   BOOST_TEST(prepare_prm_text("f.prm", long_line).lines.at("Model/Separations") == 2);
 
-  BOOST_TEST(message_of([] { prepare_prm_text("f.prm", ""); }).find("sets no parameter") !=
+  BOOST_TEST(poundfe_test::input_error_of([] { prepare_prm_text("f.prm", ""); }).find("sets no parameter") !=
              std::string::npos);
-  BOOST_TEST(message_of([] { prepare_prm_text("f.prm", "# nothing \n\n"); })
+  BOOST_TEST(poundfe_test::input_error_of([] { prepare_prm_text("f.prm", "# nothing \n\n"); })
                .find("f.prm: the file sets no parameter") == 0);
-  BOOST_TEST(message_of([] { prepare_prm_text("f.prm", "set a = 1\nend\n"); }) ==
+  BOOST_TEST(poundfe_test::input_error_of([] { prepare_prm_text("f.prm", "set a = 1\nend\n"); }) ==
              "f.prm:2: 'end' without an open 'subsection'");
-  BOOST_TEST(message_of([] { prepare_prm_text("f.prm", "subsection A\nset a = 1\n"); }) ==
+  BOOST_TEST(poundfe_test::input_error_of([] { prepare_prm_text("f.prm", "subsection A\nset a = 1\n"); }) ==
              "f.prm:1: 'subsection A' is never closed by 'end'");
-  BOOST_TEST(message_of([] { prepare_prm_text("f.prm", "set a = 1 \\"); }).find("f.prm:1:") ==
+  BOOST_TEST(poundfe_test::input_error_of([] { prepare_prm_text("f.prm", "set a = 1 \\"); }).find("f.prm:1:") ==
              0);
 }
 
@@ -124,17 +107,17 @@ BOOST_AUTO_TEST_CASE(json_text_is_an_object_of_bounded_depth)
 {
   check_json_text("f.json", "{ \"Model\": { \"Number of buildings\": \"1\" } }");
   check_json_text("f.json", "{ \"A\": \"}{][\\\"\" }"); // brackets in strings do not count
-  BOOST_TEST(message_of([] { check_json_text("f.json", "null"); }).find("f.json:1: a JSON") == 0);
-  BOOST_TEST(message_of([] { check_json_text("f.json", " \n{ }"); }).find("sets no parameter") !=
+  BOOST_TEST(poundfe_test::input_error_of([] { check_json_text("f.json", "null"); }).find("f.json:1: a JSON") == 0);
+  BOOST_TEST(poundfe_test::input_error_of([] { check_json_text("f.json", " \n{ }"); }).find("sets no parameter") !=
              std::string::npos);
-  BOOST_TEST(message_of([] { check_json_text("f.json", ""); }).find("sets no parameter") !=
+  BOOST_TEST(poundfe_test::input_error_of([] { check_json_text("f.json", ""); }).find("sets no parameter") !=
              std::string::npos);
   const std::string deep = "{\"a\": " + std::string(30000, '[') + std::string(30000, ']') + "}";
-  BOOST_TEST(message_of([&] { check_json_text("f.json", deep); }) ==
+  BOOST_TEST(poundfe_test::input_error_of([&] { check_json_text("f.json", deep); }) ==
              "f.json:1: nested more than 64 levels deep");
   std::string fine = "{\"a\": " + std::string(60, '[') + std::string(60, ']') + "}";
   check_json_text("f.json", fine);
-  BOOST_TEST(message_of([] { check_json_text("f.json", "{\"a\": [}"); }) ==
+  BOOST_TEST(poundfe_test::input_error_of([] { check_json_text("f.json", "{\"a\": [}"); }) ==
              "f.json:1: unexpected '}'");
 }
 
@@ -153,5 +136,5 @@ BOOST_AUTO_TEST_CASE(line_ends_cr_lf_and_cr_alone)
       BOOST_TEST(prepare_prm_text(file, text).lines.at("Model/Gravity") == 3);
     }
   std::remove(file.c_str());
-  BOOST_TEST(message_of([] { read_input_text("."); }) == ".: is a directory, not a parameter file");
+  BOOST_TEST(poundfe_test::input_error_of([] { read_input_text("."); }) == ".: is a directory, not a parameter file");
 }
