@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerate the figures the README shows (doc/figures/*.png) from the
-# examples in input/, with the build in build/. About 30 s.
+# examples in input/, with the build in build/. About 2 minutes.
 #   phase-portrait-sd.png   poundfe run input/sd-oscillator.prm (thesis Fig. 3.1 form)
 #   bifurcation-sd.png      poundfe bifurcation input/sd-bifurcation.prm (Fig. 3.2 form)
 #   p-bifurcation-sd.png    poundfe stationary-pdf input/sd-oscillator-noise.prm swept over
@@ -16,6 +16,8 @@
 #   separation.png, pounding-probability.png
 #                           poundfe separation input/separation.prm (100 realizations,
 #                           about a minute)
+#   separation-spectrum.png poundfe separation input/separation-spectrum.prm (response spectrum)
+#   pounding-hazard.png     poundfe separation input/separation-hazard.prm (site hazard)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 poundfe=build/poundfe
@@ -60,4 +62,8 @@ cp "$work/floors/floor_spectra.png" doc/figures/floor-spectra.png
 "$poundfe" separation input/separation.prm --output "$work/separation" > /dev/null
 cp "$work/separation/separation.png" doc/figures/separation.png
 cp "$work/separation/pounding_probability.png" doc/figures/pounding-probability.png
+"$poundfe" separation input/separation-spectrum.prm --output "$work/separation-spectrum" > /dev/null
+cp "$work/separation-spectrum/separation.png" doc/figures/separation-spectrum.png
+"$poundfe" separation input/separation-hazard.prm --output "$work/separation-hazard" > /dev/null
+cp "$work/separation-hazard/pounding_hazard.png" doc/figures/pounding-hazard.png
 ls -l doc/figures
