@@ -1,4 +1,6 @@
 #include <poundfe/analysis/reliability_parameters.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/model/model_builder.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -50,8 +52,9 @@ namespace poundfe
                "The response whose exceedance is estimated: the peak inter-storey drift "
                "ratio, the peak roof displacement (m) or the peak contact force (N). Unit: -.",
                subset_response_names());
-    prm.add_parameter("Building", building, "Building of the response (1-based). Unit: -.",
-                      Patterns::Integer(1));
+    prm.add_parameter("Building", building_field,
+                      "Building of the response: its number (1-based) or its Name. Unit: -.",
+                      Patterns::Anything());
     prm.add_parameter("Storey", storey,
                       "Storey of the drift ratio (1-based; 0: largest over the storeys). Unit: -.",
                       Patterns::Integer(0));
@@ -72,9 +75,14 @@ namespace poundfe
   }
 
   void
-  SubsetParameters::check(const InputFile &input, const ModelParameters &model) const
+  SubsetParameters::check(const InputFile &input, const ModelParameters &model)
   {
     const std::string sp = "Subset simulation/";
+    std::vector<std::string> names;
+    for (const BuildingParameters &b : model.buildings)
+      names.push_back(b.name);
+    building = read_building(input, names, trimmed(building_field), sp + "Building",
+                             building_field) + 1;
     input.positive(sp + "Threshold", threshold);
     input.positive(sp + "Proposal spread", proposal_spread);
     const double p0 = conditional_probability;
@@ -86,9 +94,7 @@ namespace poundfe
       input.fail(sp + "Conditional probability",
              "p0 N and 1/p0 must be whole numbers (N = " +
                std::to_string(samples_per_level) + ")");
-    if (building > model.buildings.size())
-      input.fail(sp + "Building", "there are " + std::to_string(model.buildings.size()) + " buildings");
-    else if (storey > model.buildings[building - 1].n_storeys &&
+    if (storey > model.buildings[building - 1].n_storeys &&
              model.buildings[building - 1].type != BuildingType::mesh)
       input.fail(sp + "Storey", "building " + std::to_string(building) + " has " +
                               std::to_string(model.buildings[building - 1].n_storeys) +

@@ -14,7 +14,17 @@ namespace poundfe
   read_building(const InputFile &input, const Model &model, const std::string &token,
                 const std::string &path, const std::string &entry)
   {
-    const unsigned int n = model.buildings.size();
+    std::vector<std::string> names;
+    for (const Building &b : model.buildings)
+      names.push_back(b.name);
+    return read_building(input, names, token, path, entry);
+  }
+
+  unsigned int
+  read_building(const InputFile &input, const std::vector<std::string> &names,
+                const std::string &token, const std::string &path, const std::string &entry)
+  {
+    const unsigned int n = names.size();
     if (const std::optional<unsigned long> number = parse_count(token, n))
       {
         if (*number >= 1)
@@ -24,7 +34,7 @@ namespace poundfe
       {
         std::vector<unsigned int> named;
         for (unsigned int b = 0; b < n; ++b)
-          if (model.buildings[b].name == token)
+          if (names[b] == token)
             named.push_back(b);
         if (named.size() == 1)
           return named.front();
@@ -34,12 +44,12 @@ namespace poundfe
                              " and " + std::to_string(named[1] + 1) + " are both named '" +
                              token + "'; give the building's number");
       }
-    std::string names;
+    std::string listed;
     for (unsigned int b = 0; b < n; ++b)
-      names += (b == 0 ? "'" : ", '") + model.buildings[b].name + "'";
+      listed += (b == 0 ? "'" : ", '") + names[b] + "'";
     throw InputError(input.file, input.line_of(path), path,
                      "'" + entry + "': building must be 1.." + std::to_string(n) +
-                       " or a Name (" + names + "), got '" + token + "'");
+                       " or a Name (" + listed + "), got '" + token + "'");
   }
 
   FloorNode

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Entries that name a building (Contact/Barriers, Nodal forces, Springs,
-# Friction: 'building floor ...') take its number or its Name (issue 14
-# item 15): the same two-building model written with numbers and with names
-# gives byte-identical results; a name no building has is refused with the
+# Friction: 'building floor ...', Subset simulation/Building) take its
+# number or its Name (issue 14 item 15): the same two-building model written
+# with numbers and with names gives byte-identical results, and so does the
+# subset example with its building named; a name no building has is refused with the
 # names that exist; a name two buildings share is refused as ambiguous.
 set -eu
-poundfe=$1
+poundfe=$1 input=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -78,3 +79,14 @@ sed 's/set Name               = east/set Name               = west/' names.prm >
 refused shared-name.prm "buildings 1 and 2 are both named 'west'; give the building's number"
 sed 's/Barriers = west 2/Barriers = 3 2/' names.prm > number-too-large.prm
 refused number-too-large.prm "building must be 1..2 or a Name ('west', 'east'), got '3'"
+
+# Subset simulation/Building: input/subset-drift.prm names its building S1
+sed 's/set Building                = 1/set Building                = S1/' "$input/subset-drift.prm" > subset-name.prm
+grep -q 'Building  *= S1' subset-name.prm || fail "the subset building was not named"
+"$poundfe" subset "$input/subset-drift.prm" --output subset-number > /dev/null || fail "subset by number: exit $?"
+"$poundfe" subset subset-name.prm --output subset-name > /dev/null || fail "subset by name: exit $?"
+cmp -s subset-number/subset_levels.csv subset-name/subset_levels.csv ||
+  fail "subset_levels.csv differs between the building's number and its Name"
+echo "ok   Subset simulation/Building = S1: subset_levels.csv identical to Building = 1"
+sed 's/set Building                = 1/set Building                = S2/' "$input/subset-drift.prm" > subset-unknown.prm
+refused subset-unknown.prm "parameter 'Subset simulation/Building': 'S2': building must be 1..1 or a Name ('S1'), got 'S2'"

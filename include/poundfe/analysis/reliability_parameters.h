@@ -41,7 +41,8 @@ namespace poundfe
   struct SubsetParameters
   {
     SubsetResponse response  = SubsetResponse::peak_drift_ratio;
-    unsigned int   building  = 1;
+    std::string    building_field = "1"; // as read: a number or a Name
+    unsigned int   building  = 1;        // 1-based, resolved by check()
     unsigned int   storey    = 0; // 0: the largest over the building's storeys
     double         threshold = 0.01;
     unsigned int   samples_per_level       = 500;
@@ -50,8 +51,9 @@ namespace poundfe
     double         proposal_spread         = 1.0;
 
     void declare(dealii::ParameterHandler &prm);
-    /// `model`: the building and storey must exist. Throws InputError.
-    void check(const InputFile &input, const ModelParameters &model) const;
+    /// `model`: the building and storey must exist; resolves `building`.
+    /// Throws InputError.
+    void check(const InputFile &input, const ModelParameters &model);
   };
 
   struct FragilityParameters

@@ -23,6 +23,10 @@ namespace poundfe
   /// entry and the numbers and names that exist.
   unsigned int read_building(const InputFile &input, const Model &model, const std::string &token,
                              const std::string &path, const std::string &entry);
+  /// The same, among buildings named `names` (in order).
+  unsigned int read_building(const InputFile &input, const std::vector<std::string> &names,
+                             const std::string &token, const std::string &path,
+                             const std::string &entry);
 
   /// A node named 'building floor node' (counted from 1, 1 and 0; the
   /// building by number or name, read_building).
