@@ -33,7 +33,9 @@ namespace poundfe
     const double z2n    = z * z / n;
     const double centre = (p + z2n / 2) / (1 + z2n);
     const double half   = z * std::sqrt(p * (1 - p) / n + z2n / (4 * n)) / (1 + z2n);
-    return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
+    // exact at the ends: k = 0 (k = n) puts the lower (upper) limit at 0 (1),
+    // which centre -/+ half reaches only to round-off (2.8e-17 was printed)
+    return {k == 0 ? 0.0 : std::max(0.0, centre - half), k == n ? 1.0 : std::min(1.0, centre + half)};
   }
 
   SampleStatistics

@@ -162,8 +162,11 @@ BOOST_AUTO_TEST_CASE(wilson_interval_against_published_values)
   // Brown, Cai & DasGupta (2001) and Newcombe (1998, Stat. Med. 17, table II):
   // 0 of 10 at 95 %: [0, 0.2775]; 5 of 10: [0.2366, 0.7634]; 81 of 263: [0.2553, 0.3662]
   const ProbabilityInterval a = wilson_interval(0, 10, 0.95);
-  BOOST_TEST(a.lower < 1e-12);
+  BOOST_TEST(a.lower == 0.0); // exactly: a printed 2.8e-17 misled
   BOOST_TEST(a.upper == 0.2775, boost::test_tools::tolerance(3e-4));
+  const ProbabilityInterval all = wilson_interval(10, 10, 0.95); // the mirror of a
+  BOOST_TEST(all.upper == 1.0);
+  BOOST_TEST(all.lower == 1 - 0.2775, boost::test_tools::tolerance(3e-4));
   const ProbabilityInterval b = wilson_interval(5, 10, 0.95);
   BOOST_TEST(b.lower == 0.2366, boost::test_tools::tolerance(3e-4));
   BOOST_TEST(b.upper == 0.7634, boost::test_tools::tolerance(3e-4));
