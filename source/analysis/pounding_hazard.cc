@@ -315,6 +315,30 @@ namespace poundfe
           row.push_back(largest);
         }
     }
+
+    /// The demand model of each pair and its gap for the target (rank 0).
+    void
+    fit_demand_and_gaps(const std::vector<AdjacentPair> &pairs, const PoundingHazardParameters &p,
+                        PoundingHazard &result)
+    {
+      for (std::size_t i = 0; i < pairs.size(); ++i)
+        {
+          std::vector<double> pga, demand;
+          for (std::size_t k = 0; k < result.pga_levels.size(); ++k)
+            for (const double d : result.largest_approach[i][k])
+              pga.push_back(result.pga_levels[k]), demand.push_back(d);
+          try
+            {
+              result.demand.push_back(fit_power_law_demand(pga, demand));
+            }
+          catch (const std::invalid_argument &e)
+            {
+              throw NumericalError("pair " + pairs[i].name + ": " + e.what());
+            }
+          result.gap_for_target.push_back(gap_for_probability_in_years(
+            result.hazard, result.demand.back(), p.exposure_years, p.target_probability));
+        }
+    }
   } // namespace
 
   void
@@ -357,22 +381,15 @@ namespace poundfe
     if (rank != 0 || result.interrupted)
       return;
     const PoundingHazardParameters &p = input.separation.hazard;
-    for (std::size_t i = 0; i < pairs.size(); ++i)
+    try
       {
-        std::vector<double> pga, demand;
-        for (std::size_t k = 0; k < result.pga_levels.size(); ++k)
-          for (const double d : result.largest_approach[i][k])
-            pga.push_back(result.pga_levels[k]), demand.push_back(d);
-        try
-          {
-            result.demand.push_back(fit_power_law_demand(pga, demand));
-          }
-        catch (const std::invalid_argument &e)
-          {
-            throw NumericalError("pair " + pairs[i].name + ": " + e.what());
-          }
-        result.gap_for_target.push_back(gap_for_probability_in_years(
-          result.hazard, result.demand.back(), p.exposure_years, p.target_probability));
+        fit_demand_and_gaps(pairs, p, result);
+      }
+    catch (const NumericalError &e)
+      {
+        result.failure = e.what();
+        result.demand.clear();
+        result.gap_for_target.clear();
       }
   }
 
@@ -528,7 +545,9 @@ namespace poundfe
       .value("demand_model", "ln D | a normal: median c a^b, dispersion beta_D (least squares)")
       .value("exposure_years", p.exposure_years)
       .value("target_probability", p.target_probability)
-      .value("status", result.interrupted ? "interrupted" : "completed");
+      .value("status", result.interrupted ? "interrupted" : result.failure.empty() ? "completed" : "failed");
+    if (!result.failure.empty())
+      json.value("message", result.failure);
     json.begin_array("pairs");
     for (std::size_t i = 0; i < result.demand.size(); ++i)
       {
@@ -556,6 +575,11 @@ namespace poundfe
     if (result.interrupted)
       {
         out << "site hazard: interrupted during the PGA levels; the same command runs the rest\n";
+        return;
+      }
+    if (!result.failure.empty())
+      {
+        out << "site hazard: failed: " << result.failure << "\n";
         return;
       }
     out << "site hazard (" << result.hazard.source << ", PGA > " << rounded(result.hazard.minimum_pga)

@@ -577,6 +577,8 @@ namespace poundfe
       const SeparationParameters &s = input.separation;
       JsonWriter                  json;
       begin_summary(json, "separation", input, status);
+      if (hazard && !hazard->failure.empty())
+        json.value("message", "site hazard: " + hazard->failure);
       json.value("method", method)
         .value("peak_displacements", peak_displacements_names().name(s.peak_displacements));
       if (spectrum)
@@ -828,6 +830,13 @@ namespace poundfe
           run_pounding_hazard(analysis, pairs, directory, comm, *hazard);
         if (table.interrupted || (hazard && hazard->interrupted))
           status = "interrupted", exit_status = interrupted_exit_status();
+        else if (hazard && !hazard->failure.empty()) // the per-event results stand
+          {
+            status = "failed", exit_status = 2;
+            if (rank == 0)
+              std::cerr << "poundfe: numerical failure: site hazard: " << hazard->failure
+                        << " (the per-event results and the levels' realizations are written)\n";
+          }
         if (rank != 0)
           return exit_status;
         n_completed = results[0].largest_approach.size();
@@ -865,7 +874,7 @@ namespace poundfe
       write_spectrum_modes(directory, analysis.model, *by_modes);
     if (random)
       write_probability_table(directory, input, pairs, results, plots);
-    if (hazard && !hazard->interrupted)
+    if (hazard && !hazard->interrupted && hazard->failure.empty())
       write_pounding_hazard(directory, input, pairs, *hazard, plots);
     else // no stale site-hazard files of an earlier run
       for (const char *stale : {"pounding_hazard.csv", "pounding_given_pga.csv", "pounding_hazard.png"})
@@ -882,7 +891,8 @@ namespace poundfe
     pcout << "results in " << directory << "/ (summary.json, separation.csv"
           << (random ? ", pounding_probability.csv, realizations.csv" : "")
           << (by_spectrum ? ", spectrum_modes.csv" : "")
-          << (hazard ? ", pounding_hazard.csv, pounding_given_pga.csv, pga_*g/" : "")
+          << (hazard && hazard->failure.empty() ? ", pounding_hazard.csv, pounding_given_pga.csv" : "")
+          << (hazard ? ", pga_*g/" : "")
           << (input.output.plots && status == "completed" ? ", *.png" : "") << ")\n";
     return exit_status;
   }

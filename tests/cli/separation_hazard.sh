@@ -9,7 +9,10 @@
 #    (pounding_hazard.csv interpolated here, 2 %: the grid's spacing);
 #  - without a hazard, no pounding_hazard.csv;
 #  - a missing hazard file and a target outside (0, 1): exit 1, one message,
-#    nothing written.
+#    nothing written;
+#  - twin buildings (identical, so they move in phase: the largest approach
+#    is 0 and the lognormal demand cannot be fitted): exit 2, the cause on
+#    stderr and in summary.json ("failed"), the per-event results written.
 set -eu
 poundfe=$1 pair=$2 site=$3
 work=$(mktemp -d)
@@ -17,8 +20,8 @@ trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/helpers.sh"
 
 "$poundfe" site-hazard "$site" --output "$work/hazard" > /dev/null || fail "site-hazard"
-with_hazard() { # file, target -> a parameter file
-  { cat "$pair"; printf 'subsection Separation\n  subsection Site hazard\n    set File = %s\n    set PGA levels = 0.02, 0.05, 0.1\n    set Target probability = %s\n  end\nend\n' "$1" "$2"; } > "$work/$3.prm"
+with_hazard() { # file, target, name[, model file] -> a parameter file
+  { cat "${4:-$pair}"; printf 'subsection Separation\n  subsection Site hazard\n    set File = %s\n    set PGA levels = 0.02, 0.05, 0.1\n    set Target probability = %s\n  end\nend\n' "$1" "$2"; } > "$work/$3.prm"
   echo "$work/$3.prm"
 }
 gap_of() { python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["site_hazard"]["pairs"][0]["gap_for_target_probability_m"])' "$1"; }
@@ -57,3 +60,29 @@ expect_input_error() { # prm, message
 expect_input_error "$(with_hazard "$work/missing.csv" 0.1 missing)" "cannot open the hazard file"
 expect_input_error "$(with_hazard "$work/hazard/summary.json" 1.5 target)" "Target probability"
 echo "ok   separation with a missing hazard file or a target outside (0, 1): exit 1, nothing written"
+
+# Twins: building 2 made a copy of building 1 (named twin)
+python3 - "$pair" "$work/twins-base.prm" <<'PY'
+import sys
+s = open(sys.argv[1]).read()
+one = s[s.index("subsection Building 1"):s.index("subsection Building 2")]
+twin = one.replace("Building 1", "Building 2").replace("shear3", "twin")
+s = s[:s.index("subsection Building 2")] + twin + s[s.index("subsection Ground motion"):]
+open(sys.argv[2], "w").write(s)
+PY
+twins=$(with_hazard "$work/hazard/hazard_curve.csv" 0.1 twins "$work/twins-base.prm")
+status=0
+"$poundfe" separation "$twins" --output "$work/twins" > "$work/twins.log" 2> "$work/twins.err" || status=$?
+[ "$status" -eq 2 ] || fail "twins: exit status $status"
+grep -q "numerical failure: site hazard: pair shear3-twin: a realization whose buildings never approach" "$work/twins.err" ||
+  fail "twins: no cause on stderr: $(cat "$work/twins.err")"
+python3 - "$work/twins/summary.json" <<'PY' || fail "twins: summary.json"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["status"] == "failed", s["status"]
+assert "never approach" in s["message"] and s["site_hazard"]["status"] == "failed"
+assert s["pairs"][0]["levels"], "no per-event levels"
+PY
+[ -s "$work/twins/separation.csv" ] && [ -s "$work/twins/pounding_probability.csv" ] || fail "twins: per-event results not written"
+[ ! -e "$work/twins/pounding_hazard.csv" ] || fail "twins: a pounding_hazard.csv without a fit"
+echo "ok   twin buildings (largest approach 0): exit 2, the cause on stderr and in summary.json, per-event results kept"

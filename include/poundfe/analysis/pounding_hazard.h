@@ -103,6 +103,7 @@ namespace poundfe
     std::vector<PowerLawDemand> demand;         // per pair
     std::vector<double>         gap_for_target; // per pair, m
     bool                        interrupted = false;
+    std::string                 failure; // why the demand fit or the gap failed ("" if not)
   };
 
   /// The hazard of Separation/Site hazard and the input motion's PGA, read
@@ -114,7 +115,8 @@ namespace poundfe
   /// level on every rank of `comm` (realizations.csv in directory/pga_<a>g/,
   /// resumed as `fragility` does; the same realizations at every level) and,
   /// on rank 0, fits the demand of each pair and finds the gap for the
-  /// target. Throws NumericalError when a fit fails.
+  /// target. A fit or a gap that fails leaves `failure` (the realizations
+  /// stay on disk and the per-event results are still written).
   void run_pounding_hazard(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
                            const std::string &directory, MPI_Comm comm, PoundingHazard &result);
 
