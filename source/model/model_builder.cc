@@ -555,7 +555,7 @@ namespace poundfe
       const Building    &building = model.buildings[b - 1];
       if (f < 1 || f > building.floors.size())
         throw InputError(input.file, input.line_of(path), path,
-                         "'" + entry + "': floor must be 1 to " +
+                         "'" + entry + "': floor must be 1.." +
                            std::to_string(building.floors.size()));
       const Floor &floor = building.floors[f - 1];
       const int    node  = facing_node(model, floor, side == "right");
