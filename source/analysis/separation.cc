@@ -240,6 +240,18 @@ namespace poundfe
 
   namespace
   {
+    /// Removes `names` from `directory`; an absent file is no error.
+    void
+    remove_files(const std::string &directory, const std::vector<const char *> &names)
+    {
+      for (const char *name : names)
+        std::filesystem::remove(directory + "/" + name);
+    }
+
+    const std::vector<const char *> pounding_hazard_files{"pounding_hazard.csv",
+                                                          "pounding_given_pga.csv",
+                                                          "pounding_hazard.png"};
+
     /// One value for every building or one per building.
     double
     of_building(const std::vector<double> &values, const unsigned int b)
@@ -803,9 +815,16 @@ namespace poundfe
     if (by_spectrum && rank == 0)
       spectrum = spectrum_peaks(analysis, pairs);
     if (rank == 0)
-      create_directories(directory);
-    if (rank == 0 && !by_spectrum) // not this run's
-      std::filesystem::remove(directory + "/spectrum_modes.csv");
+      {
+        create_directories(directory);
+        // an earlier run's files that this run does not write
+        if (!by_spectrum)
+          remove_files(directory, {"spectrum_modes.csv"});
+        if (!random)
+          remove_files(directory, {"pounding_probability.csv", "pounding_probability.png"});
+        if (!hazard)
+          remove_files(directory, pounding_hazard_files);
+      }
 
     std::vector<PairResult> results = empty_results(analysis, pairs);
     std::string             status  = "completed", method;
@@ -817,8 +836,6 @@ namespace poundfe
           return 0;
         method = spectrum->method;
         fill_from_spectrum(*spectrum, input.separation.modal_combination, results);
-        for (const char *stale : {"pounding_probability.csv", "pounding_probability.png"})
-          std::filesystem::remove(directory + "/" + stale);
       }
     else if (random)
       {
@@ -860,9 +877,6 @@ namespace poundfe
           }
         else if (run.kind == RunStatus::Kind::interrupted)
           exit_status = interrupted_exit_status();
-        // no stale probability files of an earlier stochastic run here
-        for (const char *stale : {"pounding_probability.csv", "pounding_probability.png"})
-          std::filesystem::remove(directory + "/" + stale);
       }
     for (std::size_t p = 0; p < pairs.size(); ++p)
       apply_rules(input, pairs[p], results[p]);
@@ -876,9 +890,8 @@ namespace poundfe
       write_probability_table(directory, input, pairs, results, plots);
     if (hazard && !hazard->interrupted && hazard->failure.empty())
       write_pounding_hazard(directory, input, pairs, *hazard, plots);
-    else // no stale site-hazard files of an earlier run
-      for (const char *stale : {"pounding_hazard.csv", "pounding_given_pga.csv", "pounding_hazard.png"})
-        std::filesystem::remove(directory + "/" + stale);
+    else if (hazard) // interrupted or failed: no table of an earlier run beside it
+      remove_files(directory, pounding_hazard_files);
     if (input.output.plots && status == "completed")
       draw_plots(directory, plots);
     write_summary(directory, input, analysis.model, pairs, results, status, method, n_completed,
