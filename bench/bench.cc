@@ -41,14 +41,14 @@
 //   2 ranks.
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
-#include <poundfe/analysis/analysis.h>
-#include <poundfe/analysis/bifurcation.h>
-#include <poundfe/analysis/modal.h>
-#include <poundfe/analysis/montecarlo.h>
-#include <poundfe/analysis/realization.h>
-#include <poundfe/analysis/run.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/bifurcation.h>
+#include <poundfe/dynamics/modal.h>
+#include <poundfe/reliability/montecarlo.h>
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/linear_solver.h>
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/model/model_builder.h>
 
 #include <deal.II/base/mpi.h>

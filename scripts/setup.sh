@@ -17,7 +17,12 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
-cmake --build build -j2 >> build.log 2>&1 || { tail -50 build.log; exit 1; }
-rm -f build.log
+# The log stays inside build/ (the tree stays clean); ccache, where installed,
+# makes a rebuild of unchanged files instant.
+launcher=()
+command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+mkdir -p build
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" > build/build.log 2>&1 ||
+  { cat build/build.log; exit 1; }
+cmake --build build -j2 >> build/build.log 2>&1 || { tail -50 build/build.log; exit 1; }
 echo "setup: build/poundfe is ready"

@@ -2,7 +2,7 @@
 #ifndef poundfe_tests_test_utilities_h
 #define poundfe_tests_test_utilities_h
 
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/model/model.h>

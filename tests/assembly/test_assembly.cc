@@ -1,8 +1,7 @@
 // Rayleigh damping and the direct solver backends.
-#define BOOST_TEST_MODULE assembly
-#include <poundfe/analysis/analysis.h>
+#include <poundfe/dynamics/analysis.h>
 #include <poundfe/assembly/linear_solver.h>
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/base/exceptions.h>
 
 #include <cmath>

@@ -2,10 +2,10 @@
 // matrix formed explicitly, with zero, positive and negative d_h (softening
 // and stiffening), columns that touch the ground (one nonzero), and every
 // solver backend as the factorisation of A.
-#include <poundfe/analysis/analysis.h>
+#include <poundfe/dynamics/analysis.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/assembly/low_rank_update.h>
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 
 #include <Eigen/Dense>
 

@@ -1,6 +1,5 @@
 // Progress lines (rate, ETA, durations), when Progress prints, and the
 // interruption flag.
-#define BOOST_TEST_MODULE base
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/progress.h>
 

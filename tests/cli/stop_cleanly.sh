@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every command stops cleanly (issue 14 item 12), through the shared guard
-# (source/analysis/command_guard.cc):
+# (source/commands/command_guard.cc):
 #  - SIGTERM mid-sweep, mid-bifurcation and mid-spectrum (ensemble): exit
 #    status 143, summary.json "interrupted", no *.tmp, and none of the
 #    earlier command's files left in the directory;

@@ -1,6 +1,5 @@
 // Frame element against closed forms of beam theory (Euler-Bernoulli cubic
 // elements are exact for end loads, so the tolerances are round-off level).
-#define BOOST_TEST_MODULE elements
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/elements/frame_element.h>
 

@@ -1,6 +1,5 @@
 // Ground motion: AT2 and text parsing, and the Kanai-Tajimi / Clough-Penzien
 // generator against the stationary variance formula and the PSD integral.
-#define BOOST_TEST_MODULE excitation
 #include <poundfe/base/exceptions.h>
 #include <poundfe/excitation/records.h>
 #include <poundfe/excitation/stochastic.h>

@@ -9,7 +9,7 @@
 //     distance of thinned (nearly independent) samples.
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/stochastic.h>
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>
 

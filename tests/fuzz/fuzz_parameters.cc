@@ -4,7 +4,7 @@
 // report, a hang or an exception that is not poundfe's own InputError
 // (main.cc would print it, but it means a check is missing). Built and run
 // by tests/fuzz/run.sh.
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/base/exceptions.h>
 
 #include <deal.II/base/exceptions.h>

@@ -32,7 +32,7 @@ flags=$(sed -n 's/^CXX_DEFINES = //p; s/^CXX_INCLUDES = //p' "$build/CMakeFiles/
 # the readers themselves; the sections' declarations and checks
 # (source/*/*_parameters.cc) run from the gcc archive, uninstrumented
 instrumented=(source/base/input_text.cc source/base/numbers.cc source/base/input_file.cc
-              source/base/exceptions.cc source/analysis/input_parameters.cc
+              source/base/exceptions.cc source/input/input_parameters.cc
               source/excitation/records.cc source/excitation/ground_motion.cc)
 objects=()
 for file in $(printf '%s\n' "${instrumented[@]}" | sort -u) tests/fuzz/fuzz_parameters.cc tests/fuzz/fuzz_at2.cc; do

@@ -4,11 +4,11 @@
 // calibrated laws measured from the run; momentum conservation and the
 // stereo-mechanical velocities of two colliding masses; convergence of the
 // event times as the step is halved.
-#include <poundfe/analysis/analysis.h>
+#include <poundfe/dynamics/analysis.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>
 

@@ -13,9 +13,9 @@
 //  - Jankowski's law (beta = 2.75e9 N/m^1.5) at dt = 1e-2 s: no step cut and
 //    at most 4 Newton iterations in any step; at dt = 1e-3 s within 0.5 % of
 //    dt = 1e-4 s.
-#include <poundfe/analysis/analysis.h>
-#include <poundfe/analysis/input_parameters.h>
-#include <poundfe/analysis/run.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/dynamics/run.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/output/peak_response.h>
 

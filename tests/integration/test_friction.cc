@@ -7,8 +7,8 @@
 // oscillator in continuous sliding; the belt-driven stick-slip limit cycle in
 // closed form (stick at v0, slip arcs of the harmonic oscillator); the energy
 // balance with the friction dissipation and the belt's work.
-#include <poundfe/analysis/analysis.h>
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/integration/newmark.h>
 

@@ -11,9 +11,9 @@
 //    within the Newton tolerance (1e-6 of the peak: each step's residual is
 //    below 1e-8 of its first, and the steps' errors add up over the run),
 //    with one factorisation per step.
-#include <poundfe/analysis/analysis.h>
-#include <poundfe/analysis/input_parameters.h>
-#include <poundfe/analysis/run.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/integration/newmark.h>

@@ -1,12 +1,11 @@
 // Newmark average acceleration against closed-form SDOF responses
 // (Chopra, Dynamics of Structures, ch. 2-3) and against exact energy
 // conservation in undamped free vibration.
-#define BOOST_TEST_MODULE integration
-#include <poundfe/analysis/analysis.h>
+#include <poundfe/dynamics/analysis.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 
 #include <poundfe/base/exceptions.h>
 

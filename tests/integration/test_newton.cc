@@ -4,12 +4,12 @@
 // the Bouc-Wen SDOF example against an adaptive Dormand-Prince integration
 // of [u, u', z] written in this file; step cutting on a deliberately hard
 // case; the two tangent updates against each other.
-#include <poundfe/analysis/analysis.h>
-#include <poundfe/analysis/run.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>
 

@@ -6,9 +6,9 @@
 // tolerance, and the times are the exact ones (number_text), not 6 digits.
 // Reference: the cause is known by construction in each case (an overflow
 // built into the input, one Newton iteration allowed).
-#include <poundfe/analysis/analysis.h>
-#include <poundfe/analysis/input_parameters.h>
-#include <poundfe/analysis/run.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>

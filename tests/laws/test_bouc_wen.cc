@@ -2,7 +2,6 @@
 // differences of its tangent, the linear limit alpha = 1, the bilinear
 // (elastic-perfectly-plastic) limit of large n, the area of a closed loop
 // from a Runge-Kutta integration of dz/du written here, and exact revert.
-#define BOOST_TEST_MODULE laws
 #include <poundfe/laws/bouc_wen.h>
 
 #include <boost/test/unit_test.hpp>

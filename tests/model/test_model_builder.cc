@@ -1,6 +1,5 @@
 // Generated frames, shear buildings and placement, checked against counts
 // and positions worked out by hand.
-#define BOOST_TEST_MODULE model
 #include <poundfe/base/exceptions.h>
 #include <poundfe/model/model_builder.h>
 

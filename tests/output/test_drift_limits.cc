@@ -2,7 +2,7 @@
 // 12.12-1, Eurocode 8 4.4.3.2) as printed in the codes, the user's limits
 // as ratios or percentages, bad limits named with their line, and the
 // pass/fail of a building against hand-made peak drift ratios.
-#include <poundfe/analysis/input_parameters.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/drift_limits.h>
 

@@ -1,5 +1,4 @@
 // Output writers: CSV round trip and atomic replacement.
-#define BOOST_TEST_MODULE output
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
 

@@ -17,8 +17,8 @@
 //    (N1 + N2 = 0, V1 + V2 = 0, M1 + M2 = L V1) and sum, over the base
 //    columns, to the base shear; residual drift equals the last row of the
 //    drift recorder.
-#include <poundfe/analysis/analysis.h>
-#include <poundfe/analysis/run.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/run.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>

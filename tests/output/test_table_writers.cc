@@ -15,8 +15,8 @@
 // Every comparison is exact: both formats are exact encodings of the same
 // doubles (CSV: the shortest text that strtod reads back to the same
 // double; glibc's strtod rounds correctly), so any difference is a bug.
-#include <poundfe/analysis/analysis.h>
-#include <poundfe/analysis/run.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/run.h>
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/npy_writer.h>
 #include <poundfe/output/number_text.h>

@@ -1,0 +1,94 @@
+// Everything a parameter file (.prm or .json) says: the sections of every
+// module, each declared and checked by its own struct, and where the file
+// is (for messages and relative paths). Only the commands see this whole;
+// the engine gets the parts it needs (e.g. TimeIntegrationParameters).
+#ifndef poundfe_input_input_parameters_h
+#define poundfe_input_input_parameters_h
+
+#include <poundfe/dynamics/bifurcation.h>
+#include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/reliability/reliability_parameters.h>
+#include <poundfe/hazard/site_hazard_parameters.h>
+#include <poundfe/separation/separation_parameters.h>
+#include <poundfe/reliability/stationary_pdf_parameters.h>
+#include <poundfe/input/sweep.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/excitation/excitation_parameters.h>
+#include <poundfe/excitation/spectrum_parameters.h>
+#include <poundfe/integration/time_integration_parameters.h>
+#include <poundfe/model/contact_parameters.h>
+#include <poundfe/model/friction_parameters.h>
+#include <poundfe/model/parameters.h>
+#include <poundfe/output/drift_limits.h>
+#include <poundfe/output/output_parameters.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  /// A change to a parameter file's value applied before the file is checked:
+  /// path "Section/Subsection/Entry" names a numeric entry; "Section/Entry:k"
+  /// the k-th (1-based) whitespace-separated field of the first ';'-separated
+  /// item of a list entry (e.g. "Nodal forces/Harmonic:5", the amplitude).
+  struct ParameterOverride
+  {
+    std::string path;
+    std::string value;
+  };
+
+  struct InputParameters : InputFile
+  {
+    ModelParameters           model;       // Model, Building <i>
+    ContactParameters         contact;     // Contact
+    SpringParameters          springs;     // Springs
+    FrictionParameters        friction;    // Friction
+    GroundMotionParameters    ground_motion;
+    NodalForceParameters      nodal_forces;
+    TimeIntegrationParameters time_integration; // and Contact/Event refinement
+    OutputParameters          output;
+    ModalParameters           modal;       // Modal analysis
+    MonteCarloParameters      monte_carlo;
+    SubsetParameters          subset;
+    FragilityParameters       fragility;
+    StationaryPdfParameters   stationary_pdf;
+    SweepParameters           sweep;
+    BifurcationParameters     bifurcation;
+    SiteHazardParameters      site_hazard;
+    DriftLimitParameters      drift_limits;
+    SeparationParameters      separation;
+    SpectrumParameters        spectrum;    // Spectrum (response spectra)
+    /// The overrides the file was read with (a sweep adds its own to them).
+    std::vector<ParameterOverride> overrides;
+
+    /// Declare every section, with `model.buildings.size()` buildings.
+    void declare(dealii::ParameterHandler &prm);
+    /// After parsing: hand the hysteresis settings of Time integration to
+    /// the buildings' laws, then check every section. Throws InputError.
+    void finalize();
+    /// A stochastic motion (or white-noise force) is generated whole before
+    /// a run: its samples are bounded like the steps (Maximum number of steps).
+    void check_stochastic_samples() const;
+  };
+
+  /// Read and check a .prm or .json file. Throws InputError.
+  InputParameters read_parameters(const std::string &file);
+
+  /// Read a .prm or .json file, set the overrides (in order, each through
+  /// the entry's pattern), then check everything as for the file alone. An
+  /// unknown path or a value the entry refuses is an InputError naming the
+  /// path. (Used by sweeps: one InputParameters per swept value.)
+  InputParameters read_parameters(const std::string &file,
+                                  const std::vector<ParameterOverride> &overrides);
+
+  /// Print every parameter with its documentation and default.
+  void print_parameters(std::ostream &out);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,44 @@
+// The `Stationary PDF` section: long runs of a noisy system, burn-in then
+// sampling of one DOF, over several independent realizations.
+#ifndef poundfe_reliability_stationary_pdf_parameters_h
+#define poundfe_reliability_stationary_pdf_parameters_h
+
+#include <poundfe/input/sweep.h>
+#include <poundfe/base/input_file.h>
+
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  struct StationaryPdfParameters
+  {
+    std::string         response        = "1 1 0"; // 'building floor node' (its ux)
+    double              burn_in         = 0;       // s
+    double              sampling_time   = 0;       // s; 0: to the end of the run
+    double              sample_interval = 0;       // s; 0: every time step
+    unsigned int        realizations    = 4;
+    unsigned int        bins            = 50;
+    std::vector<double> range;            // x_low, x_high, v_low, v_high; empty: from a pilot
+    double              omega          = 0; // rad/s; 0: the first natural frequency
+    std::vector<double> bandwidths{0.0};  // x, v, a (one for all); 0: Silverman's rule
+    double              peak_threshold = 0.05;
+    /// P-bifurcation: `Parameter` and `Values` of this section; empty: one run.
+    SweepParameters sweep{"Stationary PDF"};
+
+    /// Declare the section (entered and left here).
+    void declare(dealii::ParameterHandler &prm);
+    /// `time_step`: the analysis time step. Throws InputError.
+    void check(const InputFile &input, double time_step) const;
+
+    /// Steps of the analysis time step between samples.
+    unsigned long interval_steps(double time_step) const;
+  };
+} // namespace poundfe
+
+#endif

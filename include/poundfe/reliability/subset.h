@@ -1,0 +1,72 @@
+// Subset Simulation (Au & Beck 2001, Probabilistic Engineering Mechanics
+// 16(4)) of P(Y(xi) > b) with xi independent standard normals.
+//   Level 0: N direct samples. Level i: the threshold b_i is the (1 - p0)
+//   quantile of Y; the p0 N samples above it seed Markov chains of 1/p0
+//   states each (the seed is the first state), grown by the modified
+//   Metropolis algorithm: component-wise Gaussian proposal xi_k + s N(0,1),
+//   accepted with min(1, phi(candidate) / phi(xi_k)); the candidate vector is
+//   then kept only if Y > b_i, otherwise the chain repeats its state.
+//   Pf = p0^(m-1) P(Y > b | level m-1).
+//   CoV: delta_i^2 = (1 - P_i)/(N P_i) (1 + gamma_i), gamma_i from the
+//   correlation of the indicators along the chains (Au & Beck 2001, eq. 27-29);
+//   the total is sqrt(sum delta_i^2) (levels taken as uncorrelated).
+// Parallel: chain j runs on rank j mod P from a random stream of (seed,
+// level, j), so the estimate does not depend on the number of ranks.
+#ifndef poundfe_reliability_subset_h
+#define poundfe_reliability_subset_h
+
+#include <poundfe/dynamics/analysis.h>
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct SubsetSettings
+  {
+    unsigned int  samples_per_level       = 1000;
+    double        conditional_probability = 0.1;
+    unsigned int  max_levels              = 10;
+    double        proposal_spread         = 1.0;
+    std::uint64_t seed                    = 1;
+  };
+
+  struct SubsetLevel
+  {
+    double threshold              = 0; // b_i (the final level: the target)
+    double conditional_probability = 0; // P_i
+    double acceptance_rate        = 0; // of the chain moves that produced it (0 at level 0)
+    double coefficient_of_variation = 0; // delta_i
+  };
+
+  struct SubsetResult
+  {
+    double                   probability = 0;
+    double                   coefficient_of_variation = 0;
+    std::vector<SubsetLevel> levels;
+    unsigned long            model_runs = 0;
+    bool                     reached_threshold = false; // false: stopped at max_levels
+    /// Stopped by SIGINT or SIGTERM: `levels` are the thresholds reached
+    /// (none when level 0 was cut), `probability` is P(Y > levels.back().threshold).
+    bool interrupted = false;
+  };
+
+  /// Y(xi) of one sample; called on the rank that owns the chain.
+  using ResponseFunction = std::function<double(const std::vector<double> &)>;
+
+  /// Runs over the ranks of `comm` (each rank must call it); the result is
+  /// the same on every rank. Stops at the next sample on SIGINT or SIGTERM
+  /// (interruption.h) and drops the level under way.
+  SubsetResult subset_simulation(const ResponseFunction &response, unsigned int n_variables,
+                                 double threshold, const SubsetSettings &settings, MPI_Comm comm);
+
+  /// The `subset` command, on every rank of `comm`.
+  int subset_command(const Analysis &analysis, const std::string &output_directory,
+                     MPI_Comm comm);
+} // namespace poundfe
+
+#endif

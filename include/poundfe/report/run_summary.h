@@ -1,0 +1,78 @@
+// The run's closing outputs, written when the time history ends (also
+// after a failure or an interruption): summary.json, impacts.csv, the peak
+// profiles (drift_profile.csv, acceleration_profile.csv) and the PNG plots
+// of whatever CSV time series the recorders wrote. summary.json's `files`
+// lists every file the run wrote.
+#ifndef poundfe_report_run_summary_h
+#define poundfe_report_run_summary_h
+
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/excitation/excitation.h>
+#include <poundfe/output/drift_limits.h>
+#include <poundfe/output/observer.h>
+
+#include <poundfe/output/plots.h>
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class JsonWriter;
+  class PeakResponse;
+  class ResponseRange;
+
+  /// The model's size and whole-model modes (run and modal summaries).
+  void write_model(JsonWriter &json, const Analysis &analysis);
+  /// Frequencies, periods and participating mass ratios under `key`.
+  void write_modes(JsonWriter &json, const std::string &key, const Modes &modes);
+
+  class RunSummary : public StepObserver
+  {
+  public:
+    /// `solver` and `tangent_update` name the integrator's choices; `files`
+    /// are those the other observers write (recorders, VTU index); `range`'s
+    /// warnings go to "warnings".
+    RunSummary(const Analysis &analysis, const Excitation &excitation, const PeakResponse &peaks,
+               const ResponseRange &range, const std::string &directory, bool plots,
+               const std::string &solver, const std::string &tangent_update,
+               std::vector<std::string> files);
+
+    void observe_step(const ResponseView &) override {}
+    void finish(const ResponseView &state, const RunStatus &status) override;
+
+  private:
+    void write_profiles() const;
+    void write_impacts(const ResponseView &state) const;
+    void write_json(const ResponseView &state, const RunStatus &status,
+                    const std::vector<std::string> &files) const;
+    /// The plots; returns the files drawn.
+    std::vector<std::string> draw(const ResponseView &state) const;
+    /// Whether this run writes `file` (not: whether it exists).
+    bool writes(const std::string &file) const;
+    /// The drift limits of the input against building b's peak drift ratios.
+    std::vector<DriftCheck> drift_checks(unsigned int b) const;
+    /// Building b's "drift_limits" in summary.json (nothing without limits).
+    void write_drift_checks(JsonWriter &json, unsigned int b) const;
+    /// x against x' of each equation of a one- or two-DOF model, stick marked.
+    void draw_phase_portraits(std::vector<Plot> &plots) const;
+    /// energy.png: the terms, and a panel with contact/friction energy and
+    /// the balance error.
+    Plot energy_plot() const;
+    /// hysteresis_<label>.png: one loop per building.
+    void draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const;
+    /// PSA of every floor and of the ground against the period (floor_spectra.csv).
+    Plot floor_spectra_plot() const;
+
+    const Analysis     &analysis;
+    const Excitation   &excitation;
+    const PeakResponse &peaks;
+    const ResponseRange &range;
+    const std::string   directory;
+    const bool          plots;
+    const std::string   solver, tangent_update;
+    const std::vector<std::string> files;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,267 @@
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/model/model_builder.h>
+
+#include <poundfe/base/numbers.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace poundfe
+{
+  namespace
+  {
+    /// A friction element's automatic stick stiffness (0 in the input):
+    /// 1e4 times the linear stiffness at its node, so stick deflects
+    /// 1e-4 of what the structure does under the same force; and its stick
+    /// dashpot, critical for the node's mass on the stick spring.
+    void
+    set_stick_stiffnesses(const InputFile &input, const LinearSystem &system, Model &model)
+    {
+      for (FrictionSurface &surface : model.friction_surfaces)
+        {
+          FrictionLawParameters &law      = surface.law;
+          const int equation = model.equation(Model::dof(surface.node, Component::ux));
+          if (law.stick_stiffness == 0)
+            law.stick_stiffness = 1e4 * system.stiffness.coeff(equation, equation);
+          if (!(law.stick_stiffness > 0))
+            input.fail("Friction/Stick stiffness",
+                       surface.label + ": no linear stiffness at the node to take the "
+                                       "automatic stick stiffness from; give one");
+          law.stick_damping =
+            2 * std::sqrt(law.stick_stiffness * system.mass.coeff(equation, equation));
+        }
+    }
+
+    /// P-Delta must leave every building stable under its own weight: a
+    /// K_E + K_G without a Cholesky factor means gravity above the buckling
+    /// load, where the linearised model has no meaning.
+    void
+    check_stable_under_gravity(const InputParameters &input, const Model &model,
+                               const LinearSystem &system)
+    {
+      if (model.geometric_nonlinearity != GeometricNonlinearity::p_delta)
+        return;
+      std::ostringstream g;
+      g << model.gravity;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        if (!is_positive_definite(block(system.stiffness, model.equation_range(b))))
+          input.fail("Model/Geometric nonlinearity",
+                     "building '" + model.buildings[b].name +
+                       "' buckles under its own weight: with the P-Delta stiffness of its "
+                       "gravity loads (g = " + g.str() +
+                       " m/s^2) K is not positive definite, the weight exceeds the elastic "
+                       "critical load (stiffen the columns or storeys, or check the masses)");
+    }
+
+    /// The modes of one building (`what`) or of the whole model, by the
+    /// input's eigensolver; a forced sparse solver that cannot give `n`
+    /// modes is bad input.
+    Modes
+    modes_of(const InputParameters &input, const SparseMatrix &mass, const SparseMatrix &stiffness,
+             const Vector &influence, const unsigned int n, const std::string &what)
+    {
+      if (input.modal.eigensolver == Eigensolver::sparse && n > max_sparse_modes(mass))
+        input.fail("Modal analysis/Eigensolver",
+                   "the sparse eigensolver finds at most " +
+                     std::to_string(max_sparse_modes(mass)) + " modes of " + what + " (" +
+                     std::to_string(mass.rows()) + " equations), " + std::to_string(n) +
+                     " are wanted (Output/Number of modes, Damping/Modes); use dense or auto");
+      return compute_modes(mass, stiffness, influence, n, input.modal.eigensolver);
+    }
+
+    /// The share of mode `i`'s kinetic energy in vertical motion,
+    /// (phi_y^T M phi_y) / (phi^T M phi) with phi_y the mode's uy entries:
+    /// 0 for a sway mode of a frame with lumped floor masses, near 1 for a
+    /// beam's bending mode.
+    double
+    vertical_energy_share(const Model &model, const unsigned int b, const SparseMatrix &mass,
+                          const Modes &modes, const unsigned int i)
+    {
+      const Building &building = model.buildings[b];
+      const auto      range    = model.equation_range(b);
+      const Vector    phi      = modes.shapes.col(i);
+      Vector          vertical = Vector::Zero(phi.size());
+      for (unsigned int node = building.first_node; node < building.first_node + building.n_nodes;
+           ++node)
+        {
+          const int equation = model.equation(Model::dof(node, Component::uy));
+          if (equation >= int(range[0]) && equation < int(range[1]))
+            vertical[equation - range[0]] = phi[equation - range[0]];
+        }
+      const double total = phi.dot(mass * phi);
+      return total > 0 ? vertical.dot(mass * vertical) / total : 0;
+    }
+
+    /// "2.5 %" for the ratio 0.025.
+    std::string
+    percent(const double ratio)
+    {
+      return rounded(100 * ratio) + " %";
+    }
+  } // namespace
+
+  std::vector<std::string>
+  damping_warnings(const Analysis &analysis)
+  {
+    const Model             &model = analysis.model;
+    const InputFile         &input = analysis.input;
+    std::vector<std::string> warnings;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const RayleighDamping &d       = model.buildings[b].damping;
+        const Modes           &modes   = analysis.building_modes[b];
+        const std::string      section = "Building " + std::to_string(b + 1) + "/Damping/";
+        const std::string      where   = "building '" + model.buildings[b].name + "': ";
+        const auto             set     = [&](const std::string &entry) {
+          return input.line_of(section + entry) > 0;
+        };
+        const std::vector<std::string> used =
+          d.kind == RayleighDamping::Kind::modes ?
+            std::vector<std::string>{"Damping ratio", "Modes"} :
+          d.kind == RayleighDamping::Kind::coefficients ? std::vector<std::string>{"a0", "a1"} :
+                                                          std::vector<std::string>{};
+        for (const std::string entry : {"Damping ratio", "Modes", "a0", "a1"})
+          if (std::find(used.begin(), used.end(), entry) == used.end() && set(entry))
+            warnings.push_back(where + section + entry + " (line " +
+                               std::to_string(input.line_of(section + entry)) +
+                               ") is ignored: Type = " + damping_type_names().name(d.kind));
+        if (d.kind == RayleighDamping::Kind::modes)
+          {
+            const SparseMatrix mass = block(analysis.system.mass, model.equation_range(b));
+            for (const unsigned int mode : {d.first_mode, d.second_mode})
+              {
+                const double share = vertical_energy_share(model, b, mass, modes, mode - 1);
+                if (share > 0.5)
+                  warnings.push_back(
+                    where + section + "Modes fits the damping ratio at mode " +
+                    std::to_string(mode) + " (" + rounded(modes.frequency(mode - 1)) +
+                    " Hz), a vertical mode (" + percent(share) +
+                    " of its kinetic energy in vertical motion): the sway modes that carry "
+                    "the horizontal response then get damping ratios other than the one "
+                    "intended; fit it at two sway modes (poundfe modal lists the modes "
+                    "with their horizontal mass ratios)");
+              }
+          }
+        if (d.kind == RayleighDamping::Kind::coefficients && d.a0 == 0 && d.a1 == 0)
+          warnings.push_back(where + section + "a0 and a1 are both 0: the building has no "
+                             "Rayleigh damping (Type = none says so; a damping ratio needs "
+                             "Type = modes)");
+        else if (d.kind == RayleighDamping::Kind::coefficients && d.a1 == 0)
+          {
+            std::string ratios;
+            if (modes.n_modes() > 1)
+              ratios = " (here " + percent(d.a0 / (2 * modes.omega.front())) + " at mode 1, " +
+                       percent(d.a0 / (2 * modes.omega.back())) + " at mode " +
+                       std::to_string(modes.n_modes()) + ")";
+            warnings.push_back(where + section + "a1 = 0, mass-proportional damping only: the "
+                               "damping ratio a0/(2 omega) falls as the frequency rises" +
+                               ratios + ", the higher modes are nearly undamped; give a1 too "
+                               "(or Type = modes)");
+          }
+      }
+    return warnings;
+  }
+
+  Analysis
+  prepare_analysis(const InputParameters &input)
+  {
+    Analysis analysis;
+    analysis.input  = input;
+    analysis.model  = build_model(input.model, input.contact, input, input.springs, input.friction);
+    analysis.system = assemble_mass_and_stiffness(analysis.model);
+    const Model  &model  = analysis.model;
+    LinearSystem &system = analysis.system;
+    check_stable_under_gravity(input, model, system);
+    set_stick_stiffnesses(input, system, analysis.model);
+
+    std::vector<std::array<double, 2>> coefficients;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const Building &building = model.buildings[b];
+        const auto      range    = model.equation_range(b);
+        const bool      for_damping = building.damping.kind == RayleighDamping::Kind::modes;
+        const unsigned  wanted =
+          std::max({input.output.n_modes, for_damping ? building.damping.first_mode : 0u,
+                    for_damping ? building.damping.second_mode : 0u});
+        // no modes reported nor needed for damping: no eigenproblem (a large
+        // model with given Rayleigh coefficients)
+        analysis.building_modes.push_back(
+          wanted == 0 ? Modes() :
+                        modes_of(input, block(system.mass, range), block(system.stiffness, range),
+                                 system.influence.segment(range[0], range[1] - range[0]), wanted,
+                                 "building '" + building.name + "'"));
+        const Modes           &modes = analysis.building_modes.back();
+        const RayleighDamping &d     = building.damping;
+        switch (d.kind)
+          {
+            case RayleighDamping::Kind::none:
+              coefficients.push_back({{0, 0}});
+              break;
+            case RayleighDamping::Kind::coefficients:
+              coefficients.push_back({{d.a0, d.a1}});
+              break;
+            case RayleighDamping::Kind::modes:
+              {
+                const std::string path =
+                  "Building " + std::to_string(b + 1) + "/Damping/Modes";
+                if (std::max(d.first_mode, d.second_mode) > modes.n_modes())
+                  throw InputError(input.file, input.line_of(path), path,
+                                   "building '" + building.name + "' has only " +
+                                     std::to_string(modes.n_modes()) + " modes");
+                coefficients.push_back(rayleigh_coefficients(
+                  d.damping_ratio, modes.omega[d.first_mode - 1], modes.omega[d.second_mode - 1]));
+                break;
+              }
+          }
+      }
+    assemble_damping(model, coefficients, system);
+    if (input.output.n_modes > 0)
+      analysis.modes = modes_of(input, system.mass, system.stiffness, system.influence,
+                                input.output.n_modes, "the model");
+    analysis.warnings = damping_warnings(analysis);
+    // once per process: a sweep prepares an analysis per value
+    static std::set<std::string> said;
+    if (writes_outputs())
+      for (const std::string &warning : analysis.warnings)
+        if (said.insert(warning).second)
+          std::cerr << "poundfe: warning: " << warning << "\n";
+    return analysis;
+  }
+
+  bool
+  writes_outputs()
+  {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    return !initialized || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  }
+
+  void
+  begin_summary(JsonWriter &json, const std::string &command, const InputParameters &input,
+                const std::string &status)
+  {
+    json.begin_object()
+      .value("program", "poundfe")
+      .value("command", command)
+      .value("input", input.file)
+      .value("status", status);
+  }
+
+  void
+  print_timing(const dealii::TimerOutput &timer)
+  {
+    // both: under Open MPI's mpirun a rank's stdout is a pseudo-terminal even
+    // when mpirun's goes to a file, its stderr a pipe
+    if (::isatty(STDOUT_FILENO) == 1 && ::isatty(STDERR_FILENO) == 1)
+      timer.print_summary();
+  }
+} // namespace poundfe

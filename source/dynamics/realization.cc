@@ -1,0 +1,136 @@
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/excitation/stochastic.h>
+#include <poundfe/output/floor_response.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <deal.II/base/exceptions.h>
+
+namespace poundfe
+{
+  RealizationRunner::RealizationRunner(const Analysis &analysis_)
+    : analysis(analysis_)
+    , excitation(make_excitation(analysis_))
+    , load(analysis_.input.ground_motion, analysis_.input.time_integration.newmark.time_step,
+           excitation)
+    , history(analysis_)
+    , peaks(analysis_.model, history.nonlinear_elements())
+  {
+    if (load.n_variables() == 0)
+      throw InputError(analysis.input.file, analysis.input.line_of("Ground motion/Type"),
+                       "Ground motion/Type",
+                       "a probabilistic analysis needs random loading: a kanai-tajimi, "
+                       "clough-penzien or white-noise ground motion, or white-noise nodal forces");
+    const FloorResponse floors(analysis.model);
+    names = floors.column_names("storey", "peak_drift_ratio");
+    first_floor_column = names.size();
+    for (const std::string &n : floors.column_names("floor", "peak_acc_m_s2"))
+      names.push_back(n);
+    first_roof_column = names.size();
+    for (unsigned int b = 0; b < analysis.model.buildings.size(); ++b)
+      {
+        names.push_back("peak_roof_displacement_" + analysis.model.buildings[b].name);
+        roof_floor.push_back(floors.index(b, analysis.model.buildings[b].floors.size() - 1));
+      }
+    max_drift_column = names.size();
+    names.push_back("max_drift_ratio");
+    names.push_back("max_floor_acceleration");
+    if (has_gaps())
+      for (const char *n : {"n_impacts", "peak_contact_force", "min_clearance", "pounded"})
+        names.push_back(n);
+  }
+
+  unsigned int
+  RealizationRunner::column(const std::string &name) const
+  {
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end())
+      throw std::out_of_range("no response '" + name + "'");
+    return it - names.begin();
+  }
+
+  std::vector<unsigned int>
+  RealizationRunner::drift_columns(const unsigned int building) const
+  {
+    // drift columns come first, in FloorResponse order
+    const FloorResponse       floors(analysis.model);
+    std::vector<unsigned int> columns;
+    for (unsigned int f = 0; f < analysis.model.buildings.at(building - 1).floors.size(); ++f)
+      columns.push_back(floors.index(building - 1, f));
+    return columns;
+  }
+
+  unsigned int
+  RealizationRunner::roof_displacement_column(const unsigned int building) const
+  {
+    return first_roof_column + building - 1;
+  }
+
+  bool
+  RealizationRunner::run(const std::uint64_t realization, std::vector<double> &responses,
+                         const double amplitude_factor)
+  {
+    load.standard_normals(realization, xi);
+    return run(xi, responses, amplitude_factor);
+  }
+
+  bool
+  RealizationRunner::run(const std::uint64_t realization, const Observers &observers,
+                         const double amplitude_factor)
+  {
+    load.standard_normals(realization, xi);
+    load.apply(xi, excitation, amplitude_factor);
+    return history.run(excitation, observers).completed();
+  }
+
+  double
+  RealizationRunner::reference_pga(const std::string &purpose) const
+  {
+    const InputParameters        &input = analysis.input;
+    const GroundMotionParameters &g     = input.ground_motion;
+    if (g.type != GroundMotionType::kanai_tajimi && g.type != GroundMotionType::clough_penzien)
+      throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
+                       purpose + " scale a Kanai-Tajimi or Clough-Penzien motion to each PGA "
+                       "level; got '" + ground_motion_type_names().name(g.type) + "'");
+    const MotionGenerator &generator = *load.ground_generator();
+    return g.peak_factor *
+           std::sqrt(generator.motion().spectral_intensity *
+                     stationary_variance_per_unit_s0(generator.motion().filter)) *
+           g.scale_factor / standard_gravity;
+  }
+
+  bool
+  RealizationRunner::run(const std::vector<double> &normals, std::vector<double> &responses,
+                         const double amplitude_factor)
+  {
+    load.apply(normals, excitation, amplitude_factor);
+    const RunStatus      status = history.run(excitation, {&peaks});
+    const FloorResponse &floors = peaks.floors();
+
+    responses.assign(names.size(), 0.0);
+    const std::vector<double> &drift = floors.peak_drift_ratio();
+    const std::vector<double> &acceleration = floors.peak_acceleration();
+    std::copy(drift.begin(), drift.end(), responses.begin());
+    std::copy(acceleration.begin(), acceleration.end(), responses.begin() + first_floor_column);
+    for (unsigned int b = 0; b < roof_floor.size(); ++b)
+      responses[first_roof_column + b] = floors.peak_displacement()[roof_floor[b]];
+    responses[max_drift_column]     = *std::max_element(drift.begin(), drift.end());
+    responses[max_drift_column + 1] = *std::max_element(acceleration.begin(), acceleration.end());
+    if (has_gaps())
+      {
+        const std::vector<Impact> &impacts = history.state().impact_log().impacts();
+        double                     peak_force = 0;
+        for (const Impact &impact : impacts)
+          peak_force = std::max(peak_force, impact.peak_force);
+        unsigned int c = max_drift_column + 2;
+        responses[c++] = impacts.size();
+        responses[c++] = peak_force;
+        responses[c++] = peaks.min_clearance();
+        responses[c++] = impacts.empty() ? 0 : 1;
+      }
+    return status.completed();
+  }
+} // namespace poundfe

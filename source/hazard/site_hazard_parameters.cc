@@ -1,0 +1,107 @@
+#include <poundfe/hazard/site_hazard_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
+
+namespace poundfe
+{
+  namespace Patterns = dealii::Patterns;
+
+  const NameTable<IntensityHazard::Model> &
+  hazard_model_names()
+  {
+    static const NameTable<IntensityHazard::Model> table(
+      {{IntensityHazard::Model::gumbel, "gumbel"}, {IntensityHazard::Model::poisson, "poisson"}});
+    return table;
+  }
+
+  void
+  SiteHazardParameters::declare(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Site hazard");
+    prm.add_parameter("Catalogue file", catalogue_file,
+                      "CSV of historical earthquakes, relative to this parameter file: a header "
+                      "naming the columns date (YYYY, YYYY-MM or YYYY-MM-DD), latitude (degrees "
+                      "north), longitude (degrees east) and magnitude, in any order (other "
+                      "columns are kept out); lines starting with # are comments. Unit: -.");
+    prm.add_parameter("Site latitude", site.latitude, "Degrees north of the site. Unit: degrees.",
+                      Patterns::Double(-90, 90));
+    prm.add_parameter("Site longitude", site.longitude, "Degrees east of the site. Unit: degrees.",
+                      Patterns::Double(-180, 360));
+    prm.add_parameter("First year", first_year,
+                      "First year of the observation period (0: the year of the first event). "
+                      "Unit: year.",
+                      Patterns::Integer(0));
+    prm.add_parameter("Last year", last_year,
+                      "Last year of the observation period (0: the year of the last event). "
+                      "Unit: year.",
+                      Patterns::Integer(0));
+    add_choice(prm, "Fit", fit,
+               "gumbel: Gumbel type I of the annual maxima of the site intensity (maximum "
+               "likelihood, years without an event above the minimum intensity censored at "
+               "it); poisson: Poisson occurrences with an exponential (Gutenberg-Richter) law "
+               "of the intensities above the minimum (Aki's maximum-likelihood b). Unit: -.",
+               hazard_model_names());
+    prm.add_parameter("Return periods", return_periods,
+                      "Years (each > 1) whose site intensity and PGA are reported. Unit: years.",
+                      Patterns::List(Patterns::Double(0), 1, 100, ","));
+    prm.add_parameter("Minimum intensity", minimum_intensity,
+                      "Site intensities below this are not counted (and censor the Gumbel "
+                      "years without a larger one). Unit: dimensionless (a macroseismic "
+                      "intensity).");
+    prm.add_parameter("Focal depth", focal_depth,
+                      "h, km: Cornell's r = sqrt(Delta^2 + h^2), Delta the epicentral distance "
+                      "(0: r = Delta, as the thesis does). Unit: km.",
+                      Patterns::Double(0));
+    prm.add_parameter("Maximum distance", maximum_distance,
+                      "Events farther than this (km) are left out (0: none). Unit: km.",
+                      Patterns::Double(0));
+    prm.add_parameter("Exposure", exposure_years,
+                      "Years of the reported probability of failure, 1 - exp(-years lambda_F). "
+                      "Unit: years.",
+                      Patterns::Double(0));
+    prm.enter_subsection("Fragility");
+    prm.add_parameter("Median PGA", fragility_median,
+                      "theta of a lognormal fragility P(F | a) = Phi(ln(a/theta)/beta), g "
+                      "(0: none, or the File's). Unit: g.",
+                      Patterns::Double(0));
+    prm.add_parameter("Beta", fragility_beta,
+                      "beta of the typed-in fragility. Unit: dimensionless.",
+                      Patterns::Double(0));
+    prm.add_parameter("File", fragility_file,
+                      "summary.json written by `poundfe fragility` (relative to this parameter "
+                      "file); its curve named Curve is used. Unit: -.");
+    prm.add_parameter("Curve", fragility_curve,
+                      "Name of the curve in File: pounding, or drift_<limit> (e.g. drift_0.01). "
+                      "Unit: -.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  void
+  SiteHazardParameters::check(const InputFile &input) const
+  {
+    for (const double T : return_periods)
+      if (!(T > 1) || !std::isfinite(T))
+        input.fail("Site hazard/Return periods", "every return period must exceed 1 year");
+    if (first_year > 0 && last_year > 0 && last_year < first_year)
+      input.fail("Site hazard/Last year", "is before the First year");
+    if (!std::isfinite(minimum_intensity))
+      input.fail("Site hazard/Minimum intensity", "must be finite");
+    if (fragility_median > 0 && !fragility_file.empty())
+      input.fail("Site hazard/Fragility/File",
+                 "give a fragility either by Median PGA and Beta or by File, not both");
+    if (fragility_median > 0 && !(fragility_beta > 0))
+      input.fail("Site hazard/Fragility/Beta", "a typed-in fragility needs Beta > 0");
+    if (!has_fragility() && fragility_beta > 0)
+      input.fail("Site hazard/Fragility/Median PGA", "Beta is given without a Median PGA");
+  }
+
+  void
+  SiteHazardParameters::require(const InputFile &input) const
+  {
+    if (catalogue_file.empty())
+      input.fail("Site hazard/Catalogue file", "site-hazard needs a catalogue of earthquakes");
+  }
+} // namespace poundfe

@@ -1,0 +1,338 @@
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
+#include <poundfe/base/numbers.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace poundfe
+{
+  namespace
+  {
+    using dealii::ParameterHandler;
+
+    std::string
+    collapse_whitespace(const std::string &text)
+    {
+      std::string out;
+      bool        space = false;
+      for (const char c : text)
+        if (std::isspace(static_cast<unsigned char>(c)))
+          space = !out.empty();
+        else
+          {
+            if (space)
+              out += ' ';
+            out += c;
+            space = false;
+          }
+      return out;
+    }
+
+    /// deal.II's names of its patterns, in the words a user expects.
+    std::string
+    plain_patterns(std::string text)
+    {
+      static const std::pair<const char *, const char *> names[] = {
+        {"[List of <[Double -MAX_DOUBLE...MAX_DOUBLE (inclusive)]> of length "
+         "0...4294967295 (inclusive)]",
+         "a comma-separated list of numbers"},
+        {"[Double -MAX_DOUBLE...MAX_DOUBLE (inclusive)]", "a number"},
+        {"[Bool]", "true or false"}};
+      for (const auto &[deal_ii, plain] : names)
+        for (std::size_t at; (at = text.find(deal_ii)) != std::string::npos;)
+          text.replace(at, std::string(deal_ii).size(), plain);
+      return text;
+    }
+
+    /// deal.II's messages carry "Line <n> of file <f>:" (sometimes without
+    /// the closing '>'): turn them into ours, blaming file f, which is an
+    /// included file when the error is in one.
+    [[noreturn]] void
+    rethrow_parse_error(const std::string &file, const dealii::ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      std::string       text = collapse_whitespace(info.str());
+      std::string       blamed = file;
+      int               line   = 0;
+      const std::size_t where  = text.find("Line <");
+      const std::size_t of     = text.find("> of file <", where);
+      if (where != std::string::npos && of != std::string::npos)
+        {
+          const std::string digits = text.substr(where + 6, of - where - 6);
+          line = std::atoi(digits.substr(0, 9).c_str());
+          const std::size_t name  = of + 11;
+          const std::size_t close = std::min(text.find(">", name), text.find(": ", name));
+          const std::size_t rest  = close == std::string::npos ? text.size() : close;
+          blamed                  = text.substr(name, rest - name);
+          std::size_t after       = rest;
+          while (after < text.size() && (text[after] == '>' || text[after] == ':' ||
+                                         text[after] == ' '))
+            ++after;
+          text = text.substr(0, where) + text.substr(after);
+        }
+      if (text.empty())
+        text = collapse_whitespace(e.what());
+      throw InputError(blamed.empty() ? file : blamed, line, "", plain_patterns(text));
+    }
+
+    /// An override's path taken apart: "A/B/Entry:k" is sections {A, B},
+    /// entry "Entry" and field k (0: the whole value).
+    struct OverridePath
+    {
+      std::vector<std::string> sections;
+      std::string              entry;
+      unsigned int             field = 0;
+    };
+
+    OverridePath
+    split_override_path(const InputFile &p, const std::string &path)
+    {
+      OverridePath split;
+      std::string  rest  = path;
+      const auto   colon = path.rfind(':');
+      if (colon != std::string::npos && colon + 1 < path.size() &&
+          path.find_first_not_of("0123456789", colon + 1) == std::string::npos)
+        {
+          rest        = path.substr(0, colon);
+          split.field = std::atoi(path.substr(colon + 1, 6).c_str());
+          if (split.field == 0)
+            p.fail(path, "override: fields count from 1");
+        }
+      for (std::size_t slash; (slash = rest.find('/')) != std::string::npos;
+           rest.erase(0, slash + 1))
+        split.sections.push_back(rest.substr(0, slash));
+      split.entry = rest;
+      if (split.sections.empty() || split.entry.empty())
+        p.fail(path, "override: a path is 'Section/.../Entry' or 'Section/.../Entry:k'");
+      return split;
+    }
+
+    /// `list` ("f1 f2 ...; item 2; ...") with field k of the first item set to `value`.
+    std::string
+    replace_field(const InputFile &p, const std::string &path, const std::string &list,
+                  const unsigned int k, const std::string &value)
+    {
+      const std::size_t semicolon = list.find(';');
+      std::istringstream        first(list.substr(0, semicolon));
+      std::vector<std::string>  fields{std::istream_iterator<std::string>(first), {}};
+      if (k > fields.size())
+        p.fail(path, "override: the first item '" + collapse_whitespace(list.substr(0, semicolon)) +
+                       "' has " + std::to_string(fields.size()) + " fields, not " +
+                       std::to_string(k));
+      fields[k - 1] = value;
+      std::string out;
+      for (const std::string &f : fields)
+        out += (out.empty() ? "" : " ") + f;
+      return semicolon == std::string::npos ? out : out + list.substr(semicolon);
+    }
+
+    /// Set one override in `prm` (at its top level). With `skip_undeclared`
+    /// (the first pass, which declares only the number of buildings) a path
+    /// not declared is left alone; otherwise it is an InputError. (A failed
+    /// override leaves `prm` inside the sections: it is thrown away then.)
+    void
+    apply_override(ParameterHandler &prm, InputFile &p, const ParameterOverride &o,
+                   const bool skip_undeclared)
+    {
+      const OverridePath split = split_override_path(p, o.path);
+      if (!prm.subsection_path_exists(split.sections))
+        {
+          if (skip_undeclared)
+            return;
+          p.fail(o.path, "override: there is no such section");
+        }
+      for (const std::string &section : split.sections)
+        prm.enter_subsection(section);
+      try
+        {
+          const std::string current = prm.get(split.entry); // throws when undeclared
+          prm.set(split.entry, split.field == 0 ?
+                                 o.value :
+                                 replace_field(p, o.path, current, split.field, o.value));
+        }
+      catch (const dealii::ParameterHandler::ExcEntryUndeclared &)
+        {
+          if (!skip_undeclared)
+            p.fail(o.path, "override: there is no such parameter");
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          p.fail(o.path, "override value '" + o.value + "' is not allowed: " +
+                           collapse_whitespace(info.str()));
+        }
+      for (std::size_t i = 0; i < split.sections.size(); ++i)
+        prm.leave_subsection();
+      p.lines.erase(o.path.substr(0, o.path.rfind(':'))); // not the file's value any more
+    }
+
+    /// Parse `text` (a prepared .prm text, or JSON) into `prm`, then the overrides.
+    void
+    parse(ParameterHandler &prm, InputFile &p, const std::string &text, const bool json,
+          const std::vector<ParameterOverride> &overrides, const bool skip_undefined)
+    {
+      try
+        {
+          std::istringstream in(text);
+          if (json)
+            prm.parse_input_from_json(in, skip_undefined);
+          else
+            prm.parse_input(in, p.file, "", skip_undefined);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          rethrow_parse_error(p.file, e);
+        }
+      for (const ParameterOverride &o : overrides)
+        apply_override(prm, p, o, skip_undefined);
+    }
+  } // namespace
+
+  void
+  InputParameters::declare(ParameterHandler &prm)
+  {
+    model.declare(prm);
+    ground_motion.declare(prm);
+    prm.enter_subsection("Contact");
+    contact.declare(prm);
+    time_integration.declare_event_refinement(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Springs");
+    springs.declare(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Friction");
+    friction.declare(prm);
+    prm.leave_subsection();
+    nodal_forces.declare(prm);
+    time_integration.declare(prm);
+    output.declare(prm);
+    modal.declare(prm);
+    monte_carlo.declare(prm);
+    subset.declare(prm);
+    fragility.declare(prm);
+    stationary_pdf.declare(prm);
+    sweep.declare(prm);
+    bifurcation.declare(prm);
+    site_hazard.declare(prm);
+    drift_limits.declare(prm);
+    separation.declare(prm);
+    spectrum.declare(prm);
+  }
+
+  void
+  InputParameters::finalize()
+  {
+    for (BuildingParameters &building : model.buildings)
+      {
+        building.hysteresis.theta          = time_integration.hysteresis_theta();
+        building.hysteresis.tolerance      = time_integration.law_tolerance;
+        building.hysteresis.max_iterations = time_integration.law_max_iterations;
+      }
+    output.finalize(*this);
+    model.finalize(*this);
+    ground_motion.check(*this, time_integration.newmark.time_step);
+    time_integration.check(*this);
+    check_stochastic_samples();
+    contact.check(*this);
+    friction.check(*this);
+    monte_carlo.check(*this);
+    subset.check(*this, model);
+    fragility.check(*this);
+    stationary_pdf.check(*this, time_integration.newmark.time_step);
+    sweep.check(*this);
+    bifurcation.check(*this);
+    site_hazard.check(*this);
+    drift_limits.finalize(*this);
+    separation.check(*this, model.buildings.size());
+    spectrum.check(*this);
+  }
+
+  void
+  InputParameters::check_stochastic_samples() const
+  {
+    if (!ground_motion.is_stochastic() && nodal_forces.white_noise.empty())
+      return;
+    const double interval  = ground_motion.held_interval(time_integration.newmark.time_step);
+    const double n_samples = ground_motion.duration / interval;
+    if (!(n_samples <= time_integration.max_steps))
+      fail("Ground motion/Stochastic/Duration",
+           "needs " + count_text(n_samples) + " samples of " + number_text(interval) +
+             " s to last " + number_text(ground_motion.duration) +
+             " s, more than Time integration/Maximum number of steps = " +
+             std::to_string(time_integration.max_steps) + " (raise it if the run is meant)");
+  }
+
+  InputParameters
+  read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
+  {
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw InputError(file, 0, "", "cannot open the parameter file");
+    }
+    const std::string extension = std::filesystem::path(file).extension().string();
+    if (extension != ".prm" && extension != ".json")
+      throw InputError(file, 0, "", "parameter files end in .prm or .json");
+
+    InputParameters p;
+    p.file      = file;
+    p.directory = std::filesystem::path(file).parent_path().string();
+    p.overrides = overrides;
+    std::string text = read_input_text(file);
+    if (extension == ".prm")
+      {
+        PrmText prm = prepare_prm_text(file, text);
+        p.lines     = std::move(prm.lines);
+        text        = std::move(prm.text);
+      }
+    else
+      check_json_text(file, text);
+
+    // First pass: only the number of buildings, which shapes the declarations.
+    unsigned int n_buildings = 1;
+    {
+      ParameterHandler prm;
+      ModelParameters::declare_number_of_buildings(prm, n_buildings);
+      parse(prm, p, text, extension == ".json", overrides, true);
+    }
+    p.model.buildings.resize(n_buildings);
+    ParameterHandler prm;
+    p.declare(prm);
+    parse(prm, p, text, extension == ".json", overrides, false);
+    p.finalize();
+    return p;
+  }
+
+  InputParameters
+  read_parameters(const std::string &file)
+  {
+    return read_parameters(file, {});
+  }
+
+  void
+  print_parameters(std::ostream &out)
+  {
+    InputParameters p;
+    p.model.buildings.resize(1);
+    ParameterHandler prm;
+    p.declare(prm);
+    out << "# poundfe parameters, in the order the program declares them. 'Building 1'\n"
+        << "# stands for every 'Building <i>', i = 1 .. Number of buildings; its entries\n"
+        << "# tagged [frame], [shear] or [mesh] apply only to buildings of that Type,\n"
+        << "# untagged ones to every Type. Each entry says its unit ('Unit: -' for\n"
+        << "# names, choices and switches). Lists are comma separated.\n";
+    const auto style = ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder;
+    prm.print_parameters(out, ParameterHandler::OutputStyle(style));
+  }
+} // namespace poundfe

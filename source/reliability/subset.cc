@@ -1,0 +1,426 @@
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/reliability/subset.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/output/output_directory.h>
+#include <poundfe/base/progress.h>
+#include <poundfe/excitation/stochastic.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/plots.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <numeric>
+#include <sstream>
+
+namespace poundfe
+{
+  namespace
+  {
+
+    /// subset_levels.png: P(Y > b_k) at each level's threshold, with bars of
+    /// +-1 CoV (the levels' CoVs combined as sqrt(sum delta_i^2), as for the
+    /// estimate itself (Au & Beck 2001): the correlation between levels is ignored), and the
+    /// target threshold as a vertical line.
+    Plot
+    subset_plot(const SubsetResult &result, const double target, const std::string &label)
+    {
+      std::ostringstream block;
+      block.precision(10);
+      block << "$levels << EOD\nthreshold,probability,low,high\n";
+      double probability = 1, variance = 0;
+      for (const SubsetLevel &L : result.levels)
+        {
+          probability *= L.conditional_probability;
+          variance += L.coefficient_of_variation * L.coefficient_of_variation;
+          const double cov = std::sqrt(variance);
+          block << L.threshold << ',' << probability << ',' << probability * std::max(1 - cov, 1e-3)
+                << ',' << probability * (1 + cov) << '\n';
+        }
+      Plot plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
+                label, "exceedance probability", {{"$levels", "1:2:3:4", "levels (bars: +-1 CoV)",
+                                                   "yerrorlines pt 7"}}, true};
+      plot.data_blocks = block.str() + "EOD\n";
+      std::ostringstream arrow;
+      arrow.precision(10);
+      arrow << "set arrow from " << target << ", graph 0 to " << target
+            << ", graph 1 nohead dt 2 lw 2\nset label 'threshold' at " << target
+            << ", graph 0.95 right offset -0.5, 0\n";
+      plot.settings = arrow.str();
+      return plot;
+    }
+    /// Where the ranks other than 0 send their progress.
+    std::ostream silent(nullptr);
+
+    /// Stream of chain j at level l: independent of the level-0 stream (seed, i).
+    std::uint64_t
+    chain_seed(const std::uint64_t seed, const unsigned int level)
+    {
+      return seed ^ (0x9e3779b97f4a7c15ULL * (level + 1));
+    }
+
+    /// The samples of one level: responses of all (in global order), the
+    /// vectors of this rank's samples.
+    struct LevelSamples
+    {
+      std::vector<double>              response;       // global
+      std::vector<unsigned int>        chain_length;   // per chain; level 0: all 1
+      std::vector<unsigned int>        owned;          // global ids held here
+      std::vector<std::vector<double>> xi;             // of `owned`
+    };
+
+    /// delta_i^2 of P(Y > b) from a level's chains (gamma = 0 when all chains
+    /// have length 1, i.e. direct Monte Carlo).
+    double
+    level_variance(const LevelSamples &level, const double b, const double p)
+    {
+      const double n = level.response.size();
+      if (p <= 0)
+        return std::numeric_limits<double>::infinity();
+      if (p >= 1)
+        return 0;
+      const unsigned int longest =
+        *std::max_element(level.chain_length.begin(), level.chain_length.end());
+      double gamma = 0;
+      for (unsigned int lag = 1; lag < longest; ++lag)
+        {
+          double       sum = 0, pairs = 0;
+          unsigned int start = 0;
+          for (const unsigned int length : level.chain_length)
+            {
+              for (unsigned int k = 0; k + lag < length; ++k)
+                sum += (level.response[start + k] > b) * (level.response[start + k + lag] > b);
+              pairs += length > lag ? length - lag : 0;
+              start += length;
+            }
+          const double rho = (sum / pairs - p * p) / (p * (1 - p));
+          gamma += 2 * (pairs / n) * rho;
+        }
+      return (1 - p) / (n * p) * (1 + gamma);
+    }
+
+    /// Global ids in chain order, the owner of chain j is rank j mod P.
+    std::vector<unsigned int>
+    chain_starts(const std::vector<unsigned int> &lengths)
+    {
+      std::vector<unsigned int> start(lengths.size() + 1, 0);
+      for (std::size_t j = 0; j < lengths.size(); ++j)
+        start[j + 1] = start[j] + lengths[j];
+      return start;
+    }
+  } // namespace
+
+  SubsetResult
+  subset_simulation(const ResponseFunction &response, const unsigned int n_variables,
+                    const double threshold, const SubsetSettings &settings, const MPI_Comm comm)
+  {
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int N       = settings.samples_per_level;
+    const unsigned int n_seeds = std::lround(settings.conditional_probability * N);
+    SubsetResult       result;
+    unsigned long      runs = 0;
+
+    // On a terminal: rank 0's samples of each level (the others run as many).
+    const auto level_progress = [&](const unsigned int l, const unsigned long total) {
+      return std::make_unique<Progress>(rank == 0 ? std::cerr : silent,
+                                        "level " + std::to_string(l) +
+                                          (n_ranks > 1 ? " (rank 0): samples" : ": samples"),
+                                        total);
+    };
+    // A rank that receives SIGINT or SIGTERM stops its samples; at the end
+    // of the level, where all ranks meet anyway, they agree to drop it.
+    bool stopped = false;
+
+    // Level 0: direct Monte Carlo, sample i on rank i mod P.
+    LevelSamples level;
+    level.response.assign(N, 0.0);
+    level.chain_length.assign(N, 1);
+    std::unique_ptr<Progress> progress = level_progress(0, (N + n_ranks - 1) / n_ranks);
+    for (unsigned int i = rank; i < N; i += n_ranks)
+      {
+        if ((stopped = interruption_requested()))
+          break;
+        std::vector<double> xi(n_variables);
+        standard_normals(settings.seed, i, xi);
+        level.response[i] = response(xi);
+        ++runs;
+        level.owned.push_back(i);
+        level.xi.push_back(std::move(xi));
+        progress->update(level.owned.size());
+      }
+    progress->finish();
+    MPI_Allreduce(MPI_IN_PLACE, level.response.data(), N, MPI_DOUBLE, MPI_SUM, comm);
+    result.interrupted = dealii::Utilities::MPI::logical_or(stopped, comm);
+
+    double probability = 1, variance = 0;
+    double acceptance  = 0;
+    for (unsigned int l = 0; !result.interrupted; ++l)
+      {
+        // order: largest response first, ties by id (the same on every rank)
+        std::vector<unsigned int> order(N);
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+          return level.response[a] > level.response[b];
+        });
+        const double b = 0.5 * (level.response[order[n_seeds - 1]] + level.response[order[n_seeds]]);
+        SubsetLevel  info;
+        info.acceptance_rate = acceptance;
+        if (b >= threshold || l + 1 == settings.max_levels)
+          {
+            const double n_fail = std::count_if(level.response.begin(), level.response.end(),
+                                                [&](double y) { return y > threshold; });
+            info.threshold               = threshold;
+            info.conditional_probability = n_fail / N;
+            info.coefficient_of_variation =
+              std::sqrt(level_variance(level, threshold, info.conditional_probability));
+            result.levels.push_back(info);
+            probability *= info.conditional_probability;
+            variance += info.coefficient_of_variation * info.coefficient_of_variation;
+            result.reached_threshold = b >= threshold;
+            break;
+          }
+        // Seeds: the samples strictly above b (fewer than p0 N on ties).
+        std::vector<unsigned int> seeds;
+        for (const unsigned int id : order)
+          if (level.response[id] > b)
+            seeds.push_back(id);
+        if (seeds.empty())
+          throw NumericalError("subset simulation: level " + std::to_string(l) +
+                               ": the response does not vary above its quantile " +
+                               std::to_string(b) + "; cannot form the next level");
+        info.threshold               = b;
+        info.conditional_probability = static_cast<double>(seeds.size()) / N;
+        info.coefficient_of_variation =
+          std::sqrt(level_variance(level, b, info.conditional_probability));
+        result.levels.push_back(info);
+        probability *= info.conditional_probability;
+        variance += info.coefficient_of_variation * info.coefficient_of_variation;
+
+        // Chains: N states in all, 1/p0 per seed when there are p0 N seeds.
+        LevelSamples next;
+        const unsigned int n_chains = seeds.size();
+        next.chain_length.assign(n_chains, N / n_chains);
+        for (unsigned int j = 0; j < N % n_chains; ++j)
+          ++next.chain_length[j];
+        const std::vector<unsigned int> start = chain_starts(next.chain_length);
+        next.response.assign(N, 0.0);
+        unsigned long accepted = 0, proposed = 0;
+        const std::vector<unsigned int> old_start = chain_starts(level.chain_length);
+        std::vector<double> state(n_variables), candidate(n_variables);
+        // First move every seed from the rank of its chain to the rank of its
+        // new chain (all ranks in the same order), then run the chains.
+        std::vector<std::vector<double>> my_seeds;
+        for (unsigned int j = 0; j < n_chains; ++j)
+          {
+            const unsigned int old_chain =
+              std::upper_bound(old_start.begin(), old_start.end(), seeds[j]) - old_start.begin() - 1;
+            const unsigned int from = old_chain % n_ranks, to = j % n_ranks;
+            if (rank == from)
+              {
+                const auto at = std::lower_bound(level.owned.begin(), level.owned.end(), seeds[j]);
+                Assert(at != level.owned.end() && *at == seeds[j], dealii::ExcInternalError());
+                if (to == from)
+                  my_seeds.push_back(level.xi[at - level.owned.begin()]);
+                else
+                  MPI_Send(level.xi[at - level.owned.begin()].data(), n_variables, MPI_DOUBLE, to,
+                           3, comm);
+              }
+            else if (rank == to)
+              {
+                my_seeds.emplace_back(n_variables);
+                MPI_Recv(my_seeds.back().data(), n_variables, MPI_DOUBLE, from, 3, comm,
+                         MPI_STATUS_IGNORE);
+              }
+          }
+        level.xi.clear();
+        unsigned long my_states = 0;
+        for (unsigned int j = rank; j < n_chains; j += n_ranks)
+          my_states += next.chain_length[j];
+        progress = level_progress(l + 1, my_states);
+        for (unsigned int j = rank, mine = 0; j < n_chains && !stopped; j += n_ranks, ++mine)
+          {
+            state = std::move(my_seeds[mine]);
+            // modified Metropolis from the seed, with the stream of (seed, level, chain)
+            NormalStream random(chain_seed(settings.seed, l + 1), j);
+            double       y = level.response[seeds[j]];
+            for (unsigned int k = 0; k < next.chain_length[j]; ++k)
+              {
+                if (k > 0)
+                  {
+                    if ((stopped = interruption_requested()))
+                      break;
+                    bool moved = false;
+                    for (unsigned int c = 0; c < n_variables; ++c)
+                      {
+                        const double x     = state[c];
+                        const double xi    = x + settings.proposal_spread * random.next();
+                        const double ratio = std::exp(0.5 * (x * x - xi * xi));
+                        const double u     = standard_normal_cdf(random.next());
+                        candidate[c]       = u < ratio ? xi : x;
+                        moved |= u < ratio;
+                      }
+                    ++proposed;
+                    if (moved)
+                      {
+                        const double y_candidate = response(candidate);
+                        ++runs;
+                        if (y_candidate > b)
+                          {
+                            state.swap(candidate);
+                            y = y_candidate;
+                            ++accepted;
+                          }
+                      }
+                  }
+                next.response[start[j] + k] = y;
+                next.owned.push_back(start[j] + k);
+                next.xi.push_back(state);
+                progress->update(next.owned.size());
+              }
+          }
+        progress->finish();
+        MPI_Allreduce(MPI_IN_PLACE, next.response.data(), N, MPI_DOUBLE, MPI_SUM, comm);
+        result.interrupted = dealii::Utilities::MPI::logical_or(stopped, comm);
+        accepted      = dealii::Utilities::MPI::sum(accepted, comm);
+        proposed      = dealii::Utilities::MPI::sum(proposed, comm);
+        acceptance    = proposed > 0 ? static_cast<double>(accepted) / proposed : 0;
+        level = std::move(next);
+      }
+    result.probability              = probability;
+    result.coefficient_of_variation = std::sqrt(variance);
+    result.model_runs               = dealii::Utilities::MPI::sum(runs, comm);
+    return result;
+  }
+
+  int
+  subset_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
+  {
+    const InputParameters     &input = analysis.input;
+    const SubsetParameters    &ss    = input.subset;
+    const unsigned int         rank  = dealii::Utilities::MPI::this_mpi_process(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    // rank 0's own times: the other ranks leave before the output section
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    timer.enter_subsection("set-up");
+    RealizationRunner runner(analysis);
+    std::vector<unsigned int> columns;
+    std::string               unit;
+    const std::string        &response_name = subset_response_names().name(ss.response);
+    if (ss.response == SubsetResponse::peak_drift_ratio)
+      {
+        columns = runner.drift_columns(ss.building);
+        if (ss.storey > 0)
+          columns = {columns.at(ss.storey - 1)};
+      }
+    else if (ss.response == SubsetResponse::peak_roof_displacement)
+      columns = {runner.roof_displacement_column(ss.building)}, unit = " m";
+    else
+      {
+        if (!runner.has_gaps())
+          throw InputError(input.file, input.line_of("Subset simulation/Response"),
+                           "Subset simulation/Response",
+                           "peak contact force needs contact elements (Contact/Law)");
+        columns = {runner.column("peak_contact_force")}, unit = " N";
+      }
+    if (rank == 0)
+      prepare_output_directory(directory);
+    timer.leave_subsection();
+
+    std::vector<double> responses;
+    unsigned long       failed_runs = 0;
+    const auto          response = [&](const std::vector<double> &xi) {
+      if (!runner.run(xi, responses))
+        ++failed_runs;
+      double y = 0;
+      for (const unsigned int c : columns)
+        y = std::max(y, responses[c]);
+      return y;
+    };
+    SubsetSettings settings;
+    settings.samples_per_level       = ss.samples_per_level;
+    settings.conditional_probability = ss.conditional_probability;
+    settings.max_levels              = ss.max_levels;
+    settings.proposal_spread         = ss.proposal_spread;
+    settings.seed                    = runner.stochastic_load().seed();
+    timer.enter_subsection("levels");
+    const auto         start = std::chrono::steady_clock::now();
+    const SubsetResult result =
+      subset_simulation(response, runner.n_variables(), ss.threshold, settings, comm);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    failed_runs       = dealii::Utilities::MPI::sum(failed_runs, comm);
+    timer.leave_subsection();
+    const int status = result.interrupted ? interrupted_exit_status() : 0;
+    if (rank != 0)
+      return status;
+    timer.enter_subsection("output");
+
+    std::string csv = "level,threshold,conditional_probability,exceedance_probability,"
+                      "acceptance_rate,coefficient_of_variation\n";
+    double      cumulative = 1;
+    for (std::size_t i = 0; i < result.levels.size(); ++i)
+      {
+        const SubsetLevel &L = result.levels[i];
+        cumulative *= L.conditional_probability;
+        std::ostringstream row;
+        row.precision(10);
+        row << i << "," << L.threshold << "," << L.conditional_probability << "," << cumulative
+            << "," << L.acceptance_rate << "," << L.coefficient_of_variation << "\n";
+        csv += row.str();
+      }
+    write_file_atomically(directory + "/subset_levels.csv", csv);
+
+    JsonWriter json;
+    begin_summary(json, "subset", input, result.interrupted ? "interrupted" : "completed");
+    json.value("response", response_name)
+      .value("building", ss.building)
+      .value("storey", ss.storey)
+      .value("threshold", ss.threshold)
+      .value("samples_per_level", ss.samples_per_level)
+      .value("conditional_probability", ss.conditional_probability)
+      .value("random_variables", runner.n_variables());
+    if (!result.interrupted) // otherwise there is no estimate at the threshold
+      json.value("failure_probability", result.probability)
+        .value("coefficient_of_variation", result.coefficient_of_variation);
+    json.value("reached_threshold", result.reached_threshold)
+      .value("model_runs", result.model_runs)
+      .value("failed_model_runs", failed_runs)
+      .value("ranks", dealii::Utilities::MPI::n_mpi_processes(comm))
+      .value("wall_time_s", wall);
+    json.begin_array("levels");
+    for (const SubsetLevel &L : result.levels)
+      json.begin_object()
+        .value("threshold", L.threshold)
+        .value("conditional_probability", L.conditional_probability)
+        .value("acceptance_rate", L.acceptance_rate)
+        .value("coefficient_of_variation", L.coefficient_of_variation)
+        .end_object();
+    json.end_array().end_object();
+    write_file_atomically(directory + "/summary.json", json.str());
+    if (input.output.plots && !result.interrupted) // stop soon
+      draw_plots(directory, {subset_plot(result, ss.threshold, response_name + unit)});
+    timer.leave_subsection();
+
+    if (result.interrupted)
+      pcout << "Subset Simulation interrupted after " << result.levels.size()
+            << " levels (no estimate at the threshold; subset_levels.csv has the levels), "
+            << result.model_runs << " model runs";
+    else
+      pcout << "Subset Simulation: P(" << response_name << " > " << ss.threshold << unit
+            << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
+            << "), " << result.levels.size() << " levels, " << result.model_runs << " model runs"
+            << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
+    pcout << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
+          << (input.output.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
+    print_timing(timer);
+    return status;
+  }
+} // namespace poundfe

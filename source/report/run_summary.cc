@@ -1,0 +1,602 @@
+#include <poundfe/report/run_summary.h>
+#include <poundfe/output/drift_limits.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/output/stick_slip_report.h>
+#include <poundfe/output/append_file.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/peak_response.h>
+#include <poundfe/output/plots.h>
+#include <poundfe/output/response_range.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace poundfe
+{
+  namespace
+  {
+
+    /// Keys and units of a hysteretic element: a hinge acts on a rotation
+    /// with a moment, a Bouc-Wen storey on a drift with a force.
+    struct ElementUnits
+    {
+      const char *kind, *yield, *peak, *plastic, *force;
+    };
+
+    ElementUnits
+    units_of(const ElementKind kind)
+    {
+      switch (kind)
+        {
+          case ElementKind::hinge:
+            return {"hinge", "yield_rotation_rad", "peak_rotation_rad",
+                    "peak_plastic_rotation_rad", "peak_moment_N_m"};
+          case ElementKind::storey:
+            return {"storey", "yield_drift_m", "peak_drift_m", "peak_plastic_drift_m",
+                    "peak_force_N"};
+          case ElementKind::gap:
+            return {"gap", "yield_deformation_m", "peak_penetration_m", "peak_plastic_m",
+                    "peak_force_N"};
+          case ElementKind::spring:
+            return {"spring", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
+                    "peak_force_N"};
+          case ElementKind::friction:
+            return {"friction", "yield_deformation_m", "peak_displacement_m", "peak_slip_m",
+                    "peak_force_N"};
+        }
+      throw std::logic_error("units_of: unknown element kind");
+    }
+  } // namespace
+
+  void
+  write_modes(JsonWriter &json, const std::string &key, const Modes &modes)
+  {
+    std::vector<double> f, T;
+    for (unsigned int i = 0; i < modes.n_modes(); ++i)
+      {
+        f.push_back(modes.frequency(i));
+        T.push_back(modes.period(i));
+      }
+    json.begin_object(key)
+      .value("frequencies_hz", f)
+      .value("periods_s", T)
+      .value("participating_mass_ratio_x", modes.participating_mass_ratio)
+      .end_object();
+  }
+
+  void
+  write_model(JsonWriter &json, const Analysis &analysis)
+  {
+    const Model &model = analysis.model;
+    json.begin_object("model")
+      .value("nodes", model.n_nodes())
+      .value("dofs", model.n_dofs())
+      .value("equations", model.n_equations())
+      .value("members", static_cast<unsigned int>(model.members.size()))
+      .value("storey_links", static_cast<unsigned int>(model.links.size()))
+      .value("buildings", static_cast<unsigned int>(model.buildings.size()))
+      .end_object();
+    write_modes(json, "modes", analysis.modes);
+  }
+
+  RunSummary::RunSummary(const Analysis &analysis, const Excitation &excitation,
+                         const PeakResponse &peaks, const ResponseRange &range,
+                         const std::string &directory, const bool plots,
+                         const std::string &solver, const std::string &tangent_update,
+                         std::vector<std::string> files)
+    : analysis(analysis)
+    , excitation(excitation)
+    , peaks(peaks)
+    , range(range)
+    , directory(directory)
+    , plots(plots)
+    , solver(solver)
+    , tangent_update(tangent_update)
+    , files(std::move(files))
+  {}
+
+  bool
+  RunSummary::writes(const std::string &file) const
+  {
+    return std::find(files.begin(), files.end(), file) != files.end();
+  }
+
+  void
+  RunSummary::finish(const ResponseView &state, const RunStatus &status)
+  {
+    // What a file that cannot be written (a full disk) changes in the
+    // summary: the status, and the message names the file and the reason.
+    RunStatus reported = status;
+    auto      attempt  = [&](const auto &write) {
+      try
+        {
+          write();
+          return true;
+        }
+      catch (const OutputError &e)
+        {
+          if (reported.message.find(e.what()) == std::string::npos)
+            reported.message += std::string(reported.message.empty() ? "" : "; ") + e.what();
+          reported.kind          = RunStatus::Kind::failed;
+          reported.output_failed = true;
+          return false;
+        }
+    };
+    // the order of summary.json's `files`: the time series, then these
+    std::vector<std::string> written = files;
+    if (attempt([&]() { write_profiles(); }))
+      written.insert(written.end(), {"drift_profile.csv", "acceleration_profile.csv"});
+    if (!analysis.model.gaps.empty() && attempt([&]() { write_impacts(state); }))
+      written.push_back("impacts.csv");
+    if (!analysis.model.friction_surfaces.empty() &&
+        attempt([&]() { write_friction_episodes(directory, state, status.end_time); }))
+      written.push_back("friction_episodes.csv");
+    if (plots && !reported.output_failed) // before summary.json, which lists them
+      for (const std::string &png : draw(state))
+        written.push_back(png);
+    written.push_back("summary.json");
+    write_json(state, reported, written); // its own failure goes to the caller
+  }
+
+  void
+  RunSummary::write_profiles() const
+  {
+    const Model         &model  = analysis.model;
+    const FloorResponse &floors = peaks.floors();
+    std::string drift = "building,storey,peak_drift_ratio,time_of_peak_s\n";
+    std::string accel = "building,floor,peak_absolute_acc_m_s2,peak_floor_disp_m\n";
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      for (unsigned int f = 0; f < model.buildings[b].floors.size(); ++f)
+        {
+          const unsigned int i    = floors.index(b, f);
+          const std::string  name = model.buildings[b].name + "," + std::to_string(f + 1) + ",";
+          // every number in the shortest text that reads back exactly
+          // (std::to_string kept 6 decimals: 3 digits of a drift ratio)
+          drift += name;
+          append_number(drift, floors.peak_drift_ratio()[i]);
+          drift += ',';
+          append_number(drift, floors.peak_drift_time()[i]);
+          drift += '\n';
+          accel += name;
+          append_number(accel, floors.peak_acceleration()[i]);
+          accel += ',';
+          append_number(accel, floors.peak_displacement()[i]);
+          accel += '\n';
+        }
+    write_file_atomically(directory + "/drift_profile.csv", drift);
+    write_file_atomically(directory + "/acceleration_profile.csv", accel);
+  }
+
+  void
+  RunSummary::write_impacts(const ResponseView &state) const
+  {
+    const Model       &model = analysis.model;
+    const unsigned int first = peaks.n_hysteretic();
+    std::string csv = "gap,buildings,level_m,start_time_s,max_penetration_time_s,end_time_s,"
+                      "approach_velocity_m_s,separation_velocity_m_s,max_penetration_m,"
+                      "peak_force_N,impulse_N_s\n";
+    for (const Impact &impact : state.impact_log().impacts())
+      {
+        const Gap         &gap = model.gaps[impact.element - first];
+        std::ostringstream row;
+        row.precision(17); // times to the nanosecond at any length of run
+        row << gap.label << "," << model.buildings[gap.buildings[0]].name << "|"
+            << (gap.nodes[0] >= 0 && gap.nodes[1] >= 0 ? model.buildings[gap.buildings[1]].name :
+                                                         "barrier")
+            << "," << gap.level << "," << impact.start_time << "," << impact.max_penetration_time
+            << ",";
+        if (impact.end_time >= 0)
+          row << impact.end_time;
+        row << "," << impact.approach_velocity << "," << impact.separation_velocity << ","
+            << impact.max_penetration << "," << impact.peak_force << "," << impact.impulse << "\n";
+        csv += row.str();
+      }
+    write_file_atomically(directory + "/impacts.csv", csv);
+  }
+
+  void
+  RunSummary::write_json(const ResponseView &state, const RunStatus &status,
+                         const std::vector<std::string> &written) const
+  {
+    const Model           &model  = analysis.model;
+    const InputParameters &input  = analysis.input;
+    const FloorResponse   &floors = peaks.floors();
+    JsonWriter             json;
+    begin_summary(json, "run", input, status.name());
+    if (status.kind == RunStatus::Kind::failed)
+      json.value("message", status.message);
+    std::vector<std::string> warnings = analysis.warnings; // the input's, then the response's
+    for (const std::string &warning : range.warnings())
+      warnings.push_back(warning);
+    json.value("warnings", warnings);
+    write_model(json, analysis);
+    const GroundMotion &motion = excitation.ground_motion();
+    json.begin_object("ground_motion")
+      .value("description", motion.description())
+      .value("pga_m_s2", motion.peak())
+      .value("pga_g", motion.peak() / standard_gravity)
+      .value("duration_s", motion.duration())
+      .value("time_step_s", motion.time_step())
+      .end_object();
+    json.begin_array("buildings");
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const Building &building = model.buildings[b];
+        json.begin_object()
+          .value("name", building.name)
+          .value("type", building_type_names().name(building.type))
+          .value("storeys", static_cast<unsigned int>(building.floors.size()))
+          .value("rayleigh_a0", analysis.system.rayleigh[b][0])
+          .value("rayleigh_a1", analysis.system.rayleigh[b][1]);
+        write_modes(json, "modes", analysis.building_modes[b]);
+        const unsigned int roof = floors.index(b, building.floors.size() - 1);
+        json.value("peak_roof_displacement_m", floors.peak_displacement()[roof]);
+        json.begin_array("storeys");
+        for (unsigned int f = 0; f < building.floors.size(); ++f)
+          {
+            const unsigned int i = floors.index(b, f);
+            json.begin_object()
+              .value("storey", f + 1)
+              .value("height_m", building.floors[f].storey_height)
+              .value("peak_drift_ratio", floors.peak_drift_ratio()[i])
+              .value("time_of_peak_drift_s", floors.peak_drift_time()[i])
+              .value("residual_drift_ratio", floors.drift_ratio()[i])
+              .value("peak_absolute_floor_acceleration_m_s2", floors.peak_acceleration()[i])
+              .value("peak_floor_displacement_m", floors.peak_displacement()[i])
+              .end_object();
+          }
+        json.end_array();
+        write_drift_checks(json, b);
+        json.end_object();
+      }
+    json.end_array();
+
+    const unsigned int n_hysteretic = peaks.n_hysteretic();
+    const unsigned int n_gaps       = peaks.n_gaps();
+    if (n_hysteretic > 0)
+      {
+        json.begin_array("hinges");
+        for (unsigned int h = 0; h < n_hysteretic; ++h)
+          {
+            const NonlinearElement &e     = state.elements[h];
+            const ElementUnits     units = units_of(e.kind);
+            json.begin_object()
+              .value("label", e.label)
+              .value("kind", units.kind)
+              .value("building", model.buildings[e.building].name)
+              .value(units.yield, e.yield_deformation())
+              .value(units.peak, peaks.peak_deformation()[h])
+              .value("time_of_peak_deformation_s", peaks.time_of_peak_deformation()[h])
+              .value("ductility", peaks.ductility(h))
+              .value(units.plastic, peaks.peak_plastic_deformation()[h])
+              .value(units.force, peaks.peak_force()[h])
+              .value("dissipated_energy_J", state.dissipated_energy(h))
+              .end_object();
+          }
+        json.end_array();
+      }
+    if (n_gaps > 0)
+      {
+        const ContactLawParameters &law = model.contact;
+        json.begin_object("contact")
+          .value("law", law.law)
+          .value("stiffness", law.stiffness)
+          .value("damping_parameter", law.damping)
+          .value("damping_from", contact_damping_from_names().name(input.contact.damping_from))
+          .value("coefficient_of_restitution", input.contact.restitution)
+          .end_object();
+        std::vector<unsigned int> count(n_gaps, 0);
+        std::vector<double>       peak(n_gaps, 0.0), penetration(n_gaps, 0.0), impulse(n_gaps, 0.0);
+        for (const Impact &impact : state.impact_log().impacts())
+          {
+            const unsigned int g = impact.element - n_hysteretic;
+            ++count[g];
+            peak[g]        = std::max(peak[g], impact.peak_force);
+            penetration[g] = std::max(penetration[g], impact.max_penetration);
+            impulse[g] += impact.impulse;
+          }
+        json.begin_array("gaps");
+        for (unsigned int g = 0; g < n_gaps; ++g)
+          {
+            const Gap &gap = model.gaps[g];
+            json.begin_object()
+              .value("label", gap.label)
+              .value("level_m", gap.level)
+              .value("initial_gap_m", gap.initial_gap)
+              .value("effective_mass_kg", gap.effective_mass)
+              .value("impacts", count[g])
+              .value("peak_force_N", peak[g])
+              .value("max_penetration_m", penetration[g])
+              .value("total_impulse_N_s", impulse[g])
+              .value("dissipated_energy_J", state.dissipated_energy(n_hysteretic + g))
+              .end_object();
+          }
+        json.end_array();
+      }
+    write_springs_and_friction(json, state, peaks, status.end_time);
+    const EnergyBalance energy = state.energy();
+    json.begin_object("energy")
+      .value("initial_J", energy.initial)
+      .value("input_J", energy.input)
+      .value("kinetic_J", energy.kinetic)
+      .value("damping_J", energy.damping)
+      .value("strain_J", energy.strain)
+      .value("hysteretic_J", energy.hysteretic)
+      .value("contact_J", energy.contact)
+      .value("friction_J", energy.friction)
+      .value("belt_J", energy.belt)
+      .value("max_relative_balance_error", state.max_energy_error())
+      .end_object();
+    const IterationStatistics &stats = state.statistics();
+    json.begin_object("newton")
+      .value("nonlinear_elements", static_cast<unsigned int>(state.elements.size()))
+      .value("tangent_update", state.elements.size() > 0 ? tangent_update : "none")
+      .value("mean_iterations_per_step",
+             stats.steps > 0 ? double(stats.iterations) / stats.steps : 0.0)
+      .value("max_iterations_per_step", stats.max_iterations)
+      .value("step_cuts", static_cast<unsigned long>(stats.step_cuts))
+      .value("event_refinements", static_cast<unsigned long>(stats.event_refinements))
+      .value("contact_refinements", static_cast<unsigned long>(stats.contact_refinements))
+      .value("woodbury_solves", static_cast<unsigned long>(stats.woodbury_solves))
+      .value("refactorizations", static_cast<unsigned long>(stats.refactorizations))
+      .value("smallest_time_step_s", stats.smallest_time_step)
+      .value("steps_including_substeps", static_cast<unsigned long>(stats.steps))
+      .end_object();
+    json.begin_object("analysis")
+      .value("integrator", "Newmark")
+      .value("gamma", input.time_integration.newmark.gamma)
+      .value("beta", input.time_integration.newmark.beta)
+      .value("time_step_s", input.time_integration.newmark.time_step)
+      .value("end_time_s", status.end_time)
+      .value("steps", status.steps)
+      .value("linear_solver", solver)
+      .value("wall_time_s", status.wall_time)
+      .value("steps_per_second", status.steps / std::max(status.wall_time, 1e-12))
+      .end_object();
+    json.begin_object("output")
+      .value("format", output_format_names().name(input.output.recorders.format))
+      .value("files", written)
+      .end_object();
+    json.end_object();
+    write_file_atomically(directory + "/summary.json", json.str());
+  }
+
+  std::vector<DriftCheck>
+  RunSummary::drift_checks(const unsigned int b) const
+  {
+    const FloorResponse &floors = peaks.floors();
+    std::vector<double>  peak;
+    for (unsigned int f = 0; f < analysis.model.buildings[b].floors.size(); ++f)
+      peak.push_back(floors.peak_drift_ratio()[floors.index(b, f)]);
+    return check_drift_limits(analysis.input.drift_limits.limits(), peak);
+  }
+
+  void
+  RunSummary::write_drift_checks(JsonWriter &json, const unsigned int b) const
+  {
+    if (analysis.input.drift_limits.limits().empty())
+      return; // the summary of a run without limits is unchanged
+    json.begin_array("drift_limits");
+    for (const DriftCheck &check : drift_checks(b))
+      json.begin_object()
+        .value("name", check.limit.name)
+        .value("drift_ratio_limit", check.limit.drift_ratio)
+        .value("peak_drift_ratio", check.peak_drift_ratio)
+        .value("storey_of_peak", check.storey_of_peak)
+        .value("storeys_exceeding",
+               std::vector<double>(check.storeys_exceeding.begin(), check.storeys_exceeding.end()))
+        .value("passes", check.passes)
+        .end_object();
+    json.end_array();
+  }
+
+  void
+  RunSummary::draw_phase_portraits(std::vector<Plot> &plots) const
+  {
+    // phase_portrait.csv: time, (u, u') per equation, then each friction
+    // element's phase; stick (phase 0) is marked on the element's equation
+    const Model       &model = analysis.model;
+    const unsigned int n     = model.n_equations();
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        const std::string x = std::to_string(2 * q + 2), v = std::to_string(2 * q + 3);
+        Plot plot{"phase_portrait" + (n > 1 ? "_" + std::to_string(q + 1) : std::string()) + ".png",
+                  "Phase portrait", "displacement (m)", "velocity (m/s)",
+                  {{"phase_portrait.csv", x + ":" + v, "trajectory", "lines"}}};
+        for (unsigned int i = 0; i < model.friction_surfaces.size(); ++i)
+          if (model.equation(Model::dof(model.friction_surfaces[i].node, Component::ux)) == int(q))
+            {
+              const std::string phase = std::to_string(2 * n + 2 + i);
+              plot.series.push_back({"phase_portrait.csv",
+                                     x + ":($" + phase + "==0?$" + v + ":1/0)",
+                                     "stick (" + model.friction_surfaces[i].label + ")",
+                                     "points pt 7 ps 0.6"});
+            }
+        plots.push_back(plot);
+      }
+  }
+
+  Plot
+  RunSummary::energy_plot() const
+  {
+    // energy.csv: time, input, kinetic, damping, strain, hysteretic, contact,
+    // balance error, then friction and belt with friction elements. Contact
+    // and friction energies are small beside the input: a panel of their own,
+    // with the balance error against the right-hand axis.
+    Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)", "energy (J)",
+                {}};
+    const char *terms[] = {"input", "kinetic", "damping", "strain", "hysteretic"};
+    for (unsigned int i = 0; i < 5; ++i)
+      energy.series.push_back({"energy.csv", "1:" + std::to_string(i + 2), terms[i], "lines"});
+    Plot small{"", "Contact and friction energy, and the balance error", "time (s)",
+               "energy (J)", {{"energy.csv", "1:7", "contact", "lines lw 2"}}};
+    if (!analysis.model.friction_surfaces.empty())
+      for (const auto &[column, term] : {std::pair{9, "friction"}, std::pair{10, "belt"}})
+        {
+          const PlotSeries series{"energy.csv", "1:" + std::to_string(column), term, "lines"};
+          energy.series.push_back(series);
+          small.series.push_back(series);
+        }
+    small.y2_label = "balance error (relative)";
+    small.series.push_back({"energy.csv", "1:8", "balance error", "lines dt 2", "x1y2"});
+    energy.below.push_back(small);
+    return energy;
+  }
+
+  void
+  RunSummary::draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const
+  {
+    // One loop per building: its hinge or storey with the largest peak
+    // plastic deformation (|d - F/k0|; mirror-image hinges of a symmetric
+    // frame tie, and the first is kept), moments in kN m, forces in kN.
+    const Model &model = analysis.model;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        int chosen = -1;
+        for (unsigned int h = 0; h < peaks.n_hysteretic(); ++h)
+          if (state.elements[h].building == b &&
+              (chosen < 0 ||
+               peaks.peak_plastic_deformation()[h] > peaks.peak_plastic_deformation()[chosen]))
+            chosen = h;
+        if (chosen < 0)
+          continue;
+        const NonlinearElement &e     = state.elements[chosen];
+        const bool              hinge = e.kind == ElementKind::hinge;
+        std::ostringstream      title;
+        title << std::setprecision(3) << (hinge ? "Hinge " : "Storey ") << e.label << " of " << model.buildings[b].name
+              << ": peak plastic " << (hinge ? "rotation " : "drift ")
+              << peaks.peak_plastic_deformation()[chosen] << (hinge ? " rad" : " m")
+              << ", ductility " << peaks.ductility(chosen);
+        plots.push_back(Plot{"hysteresis_" + e.label + ".png", title.str(),
+                             hinge ? "rotation (rad)" : "drift (m)",
+                             hinge ? "moment (kN m)" : "force (kN)",
+                             {{"hinges.csv",
+                               std::to_string(3 * chosen + 3) + ":($" +
+                                 std::to_string(3 * chosen + 2) + "/1000)",
+                               e.label, "lines"}}});
+      }
+  }
+
+  Plot
+  RunSummary::floor_spectra_plot() const
+  {
+    const double zeta = analysis.input.spectrum.damping_ratios.front();
+    std::ostringstream title;
+    title << "Floor response spectra (" << 100 * zeta << " % damping)";
+    Plot plot{"floor_spectra.png", title.str(), "period (s)", "pseudo-acceleration (m/s^2)",
+              {{"floor_spectra.csv", "1:2", "ground", "lines dt 2 lc rgb 'black'"}}};
+    plot.log_x         = true;
+    plot.key           = "below"; // one curve per floor
+    unsigned int column = 3; // floor_spectra.csv: period, ground, the floors (first damping)
+    for (const Building &building : analysis.model.buildings)
+      for (unsigned int f = 1; f <= building.floors.size(); ++f)
+        plot.series.push_back({"floor_spectra.csv", "1:" + std::to_string(column++),
+                               building.name + " floor " + std::to_string(f), "lines"});
+    return plot;
+  }
+
+  std::vector<std::string>
+  RunSummary::draw(const ResponseView &state) const
+  {
+    const Model         &model  = analysis.model;
+    const FloorResponse &floors = peaks.floors();
+    // Profiles against the height above the ground: a storey's drift ratio
+    // holds over the storey (a step), a floor's acceleration belongs to its
+    // level, joined to the ground's PGA.
+    Plot drift{"drift_profile.png", "Peak inter-storey drift ratio against height",
+               "peak |inter-storey drift ratio|", "height above the ground (m)", {}};
+    Plot accel{"acceleration_profile.png", "Peak absolute floor acceleration against height",
+               "peak |absolute acceleration| (m/s^2)", "height above the ground (m)", {}};
+    drift.settings = accel.settings = "set xrange [0:*]\nset yrange [0:*]\n";
+    Plot roof{"roof_displacement.png", "Roof displacement (relative to the ground)", "time (s)",
+              "displacement (m)", {}};
+    const double pga     = excitation.ground_motion().empty() ? 0 : excitation.ground_motion().peak();
+    unsigned int column  = 2;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const Building    &building = model.buildings[b];
+        const std::string  id       = std::to_string(b + 1);
+        std::ostringstream d, a;
+        d << std::setprecision(10) << "$drift" << id << " << EOD\ndrift,height\n";
+        a << std::setprecision(10) << "$accel" << id << " << EOD\nacceleration,height\n"
+          << pga << ",0\n";
+        for (unsigned int f = 0; f < building.floors.size(); ++f)
+          {
+            const Floor       &floor = building.floors[f];
+            const unsigned int i     = floors.index(b, f);
+            const double       top   = floor.level - building.base_level; // above the ground
+            d << floors.peak_drift_ratio()[i] << ',' << top - floor.storey_height << '\n'
+              << floors.peak_drift_ratio()[i] << ',' << top << '\n';
+            a << floors.peak_acceleration()[i] << ',' << top << '\n';
+          }
+        drift.data_blocks += d.str() + "EOD\n";
+        accel.data_blocks += a.str() + "EOD\n";
+        drift.series.push_back({"$drift" + id, "1:2", building.name, "lines lw 2"});
+        accel.series.push_back({"$accel" + id, "1:2", building.name, "linespoints lw 2 pt 7"});
+        column += building.floors.size();
+        roof.series.push_back(
+          {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
+      }
+    // each limit a dashed vertical line over the height of the tallest
+    // building, the axis from 0 to past the largest limit
+    double largest = 0, height = 0;
+    for (const double peak : peaks.floors().peak_drift_ratio())
+      largest = std::max(largest, peak);
+    for (const Building &building : model.buildings)
+      if (!building.floors.empty())
+        height = std::max(height, building.floors.back().level - building.base_level);
+    unsigned int n_limits = 0;
+    for (const DriftLimit &limit : analysis.input.drift_limits.limits())
+      {
+        largest = std::max(largest, limit.drift_ratio);
+        const std::string  name = "$limit" + std::to_string(++n_limits);
+        std::ostringstream block, range;
+        block.precision(17);
+        block << name << " << EOD\ndrift,height\n"
+              << limit.drift_ratio << ",0\n" << limit.drift_ratio << ',' << height << "\nEOD\n";
+        drift.data_blocks += block.str();
+        drift.series.push_back({name, "1:2", limit.name, "lines dt 2 lw 2"});
+        range << "set xrange [0:" << 1.15 * largest << "]\nset yrange [0:*]\n";
+        drift.settings = range.str();
+      }
+    std::vector<Plot> all{drift, accel};
+    if (writes("floor_displacement.csv"))
+      all.push_back(roof);
+    if (writes("ground_motion.csv") && pga > 0) // not for force-driven runs
+      all.push_back(Plot{"ground_motion.png", excitation.ground_motion().description(),
+                         "time (s)", "ground acceleration (m/s^2)",
+                         {{"ground_motion.csv", "1:2", "a_g", "lines"}}});
+    if (writes("base_shear.csv"))
+      {
+        Plot shear{"base_shear.png", "Base shear (element forces)", "time (s)", "base shear (kN)",
+                   {}};
+        for (unsigned int b = 0; b < model.buildings.size(); ++b)
+          shear.series.push_back({"base_shear.csv", "1:($" + std::to_string(b + 2) + "/1000)",
+                                  model.buildings[b].name, "lines"});
+        all.push_back(shear);
+      }
+    if (writes("energy.csv"))
+      all.push_back(energy_plot());
+    if (writes("hinges.csv"))
+      draw_hysteresis(state, all);
+    if (writes("floor_spectra.csv"))
+      all.push_back(floor_spectra_plot());
+    if (writes("phase_portrait.csv"))
+      draw_phase_portraits(all);
+    if (writes("contact_force.csv"))
+      {
+        Plot contact{"contact_force.png", "Contact forces of the gap elements", "time (s)",
+                     "contact force (kN)", {}};
+        for (unsigned int g = 0; g < model.gaps.size(); ++g)
+          contact.series.push_back({"contact_force.csv",
+                                    "1:($" + std::to_string(2 * g + 2) + "/1000)",
+                                    model.gaps[g].label, "lines"});
+        all.push_back(contact);
+      }
+    return draw_plots(directory, all);
+  }
+} // namespace poundfe
