@@ -20,13 +20,13 @@
 #ifndef poundfe_commands_command_guard_h
 #define poundfe_commands_command_guard_h
 
-#include <poundfe/model/parameters.h>
-
 #include <functional>
 #include <string>
 
 namespace poundfe
 {
+  struct InputParameters;
+
   struct GuardedCommand
   {
     std::string            command;   // "modal"
