@@ -48,6 +48,7 @@
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/linear_solver.h>
+#include <poundfe/base/exceptions.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/model/model_builder.h>
 
@@ -59,6 +60,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
+#include <set>
 #include <string>
 
 using namespace poundfe;
@@ -392,9 +395,37 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  const char *const bench_usage =
+    "usage: poundfe-bench [FILE [REPEATS]]      steps/s of FILE (default input/two-buildings.prm)\n"
+    "                                          and of the benchmark models, per linear solver\n"
+    "       poundfe-bench --output [REPEATS]    every output at every step, CSV and .npy\n"
+    "       poundfe-bench --montecarlo FILE N   N realizations of FILE (mpirun -np P ...)\n"
+    "       poundfe-bench --distributed FILE    one model over the MPI ranks (bench/city_block.sh)\n"
+    "       poundfe-bench --bifurcation FILE    the values of FILE's Bifurcation section\n"
+    "       poundfe-bench --modes [STOREYS...]  dense against sparse eigensolver\n"
+    "       poundfe-bench --help\n"
+    "Run from the repository root (the inputs are named relative to it); Release build.\n";
+} // namespace
+
 int
 main(int argc, char **argv)
+try
 {
+  if (argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h"))
+    {
+      std::cout << bench_usage;
+      return 0;
+    }
+  if (argc > 1 && argv[1][0] == '-' &&
+      !std::set<std::string>{"--montecarlo", "--distributed", "--bifurcation", "--output",
+                             "--modes"}
+         .count(argv[1]))
+    {
+      std::cerr << "poundfe-bench: unknown option '" << argv[1] << "'\n" << bench_usage;
+      return 1;
+    }
   // --montecarlo runs over MPI, and the solver comparison includes PETSc and
   // Trilinos, which need it initialised: both modes initialise it.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -438,4 +469,14 @@ main(int argc, char **argv)
   measure("Bouc-Wen SDOF", read_parameters("input/bouc-wen-sdof.prm"), repeats, {"eigen-ldlt"});
   measure("two 10-storey 3-bay frames (hinges)", ten_storey_pair(input), repeats);
   return 0;
+}
+catch (const InputError &e)
+{
+  std::cerr << "poundfe-bench: error: " << e.what() << "\n";
+  return 1;
+}
+catch (const std::exception &e) // std::stoul of a bad count, a failed run
+{
+  std::cerr << "poundfe-bench: error: " << e.what() << "\n" << bench_usage;
+  return 1;
 }

@@ -7,7 +7,7 @@
 // 15:9-20; Wolf, Swift, Swinney & Vastano 1985, Physica D 16:285-317),
 // both trajectories integrated through the discontinuities (cf. Müller
 // 1995, Chaos Solitons Fractals 5:1671-1681, for the variational route).
-// See analysis/bifurcation.h and doc/theory.md §8.4.
+// See dynamics/bifurcation.h and doc/theory.md §8.4.
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/base/choices.h>
 #include <poundfe/input/input_parameters.h>

@@ -28,8 +28,13 @@ namespace poundfe
   unsigned int
   max_sparse_modes(const SparseMatrix &mass)
   {
-    const Eigen::Index n_massive = (mass.diagonal().array() != 0).count();
-    const Eigen::Index basis     = std::min(n_massive, mass.rows() - 1);
+    return (mass.diagonal().array() != 0).count();
+  }
+
+  unsigned int
+  lanczos_mode_limit(const SparseMatrix &mass)
+  {
+    const Eigen::Index basis = std::min<Eigen::Index>(max_sparse_modes(mass), mass.rows() - 1);
     return basis >= 4 ? (basis - 2) / 2 : 0;
   }
 
@@ -38,7 +43,7 @@ namespace poundfe
   {
     if (requested != Eigensolver::automatic)
       return requested;
-    return mass.rows() > dense_eigensolver_limit && n <= max_sparse_modes(mass) ?
+    return mass.rows() > dense_eigensolver_limit && n <= lanczos_mode_limit(mass) ?
              Eigensolver::sparse :
              Eigensolver::dense;
   }

@@ -75,7 +75,7 @@ namespace poundfe
     unsigned int
     lanczos_basis_size(const SparseMatrix &mass, const unsigned int nev)
     {
-      const unsigned int limit = 2 * max_sparse_modes(mass) + 2;
+      const unsigned int limit = 2 * lanczos_mode_limit(mass) + 2;
       return std::min(limit, std::max(2 * nev + 2, nev + 20));
     }
 
@@ -109,13 +109,28 @@ namespace poundfe
         x.col(j) = view(eigenvectors[j]);
       return x;
     }
+
+    /// A unit vector on every DOF that carries mass: K^-1 M of them spans
+    /// the whole range of K^-1 M, so the Rayleigh-Ritz step below is exact
+    /// (static condensation onto the massive DOFs). For models too small
+    /// for a Lanczos basis (a one-storey building, an oscillator).
+    Eigen::MatrixXd
+    massive_unit_vectors(const SparseMatrix &mass)
+    {
+      Eigen::MatrixXd x = Eigen::MatrixXd::Zero(mass.rows(), max_sparse_modes(mass));
+      Eigen::Index    column = 0;
+      for (Eigen::Index i = 0; i < mass.rows(); ++i)
+        if (mass.coeff(i, i) != 0)
+          x(i, column++) = 1;
+      return x;
+    }
   } // namespace
 
   Modes
   compute_modes_sparse(const SparseMatrix &mass, const SparseMatrix &stiffness,
-                       const Vector &influence, const unsigned int n)
+                       const Vector &influence, unsigned int n)
   {
-    Assert(n <= max_sparse_modes(mass), dealii::ExcIndexRange(n, 0, max_sparse_modes(mass) + 1));
+    n = std::min(n, max_sparse_modes(mass)); // the finite modes
     Modes modes;
     modes.shapes.resize(mass.rows(), 0);
     if (n == 0)
@@ -125,7 +140,8 @@ namespace poundfe
       throw NumericalError(stiffness_not_positive_definite);
 
     // Subspace iteration step and Rayleigh-Ritz: K_r z = omega^2 M_r z.
-    const Eigen::MatrixXd x = lanczos_vectors(mass, cholesky, n);
+    const Eigen::MatrixXd x = n <= lanczos_mode_limit(mass) ? lanczos_vectors(mass, cholesky, n) :
+                                                              massive_unit_vectors(mass);
     const Eigen::MatrixXd y = cholesky.solve(Eigen::MatrixXd(mass * x));
     const Eigen::MatrixXd k_r = y.transpose() * (stiffness * y);
     const Eigen::MatrixXd m_r = y.transpose() * (mass * y);

@@ -124,11 +124,13 @@ namespace poundfe
                                "cannot scale a record of zero PGA");
             motion.scale(g.record_target_pga * standard_gravity / motion.peak());
             check_scaled(motion, input, "Ground motion/Record/Target PGA");
-            return motion;
           }
       }
     else if (g.type != GroundMotionType::none)
       motion = make_motion_generator(g, time_step).ground_motion();
+    // The Scale factor multiplies the motion after any Target PGA, for a
+    // record as for a generated motion (whose Target PGA sets S0): the PGA
+    // is Target PGA x Scale factor either way.
     motion.scale(g.scale_factor);
     if (g.type == GroundMotionType::record) // generated motions may underflow harmlessly
       check_scaled(motion, input, "Ground motion/Scale factor");

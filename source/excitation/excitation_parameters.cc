@@ -87,7 +87,8 @@ namespace poundfe
                "Clough-Penzien sample, plain white noise (intensity S0 or D, held "
                "over the sample interval), a record, or none. Unit: -.",
                ground_motion_type_names());
-    prm.add_parameter("Scale factor", scale_factor, "Multiplies the motion. Unit: dimensionless.");
+    prm.add_parameter("Scale factor", scale_factor, "Multiplies the motion, after any Target PGA (a record's or a stochastic "
+                      "motion's: the PGA is then Target PGA x Scale factor). Unit: dimensionless.");
     prm.enter_subsection("Record");
     prm.add_parameter("File", record_file,
                       "PEER .AT2, or text with one (acceleration) or two (time, "
@@ -101,7 +102,8 @@ namespace poundfe
     prm.add_parameter("Time step", record_time_step,
                       "Sample interval of a one-column text record. Unit: s.");
     prm.add_parameter("Target PGA", record_target_pga,
-                      "Scale the record to this PGA in g (0: keep it). Unit: g.");
+                      "Scale the record to this PGA (0: keep it); the Scale factor multiplies "
+                      "it. Unit: g.");
     prm.leave_subsection();
     prm.enter_subsection("Stochastic");
     add_choice(prm, "Soil", soil,

@@ -1,4 +1,4 @@
-// Parameter sweeps (analysis/sweep.h): the values of a Sweep-like section,
+// Parameter sweeps (input/sweep.h): the values of a Sweep-like section,
 // one checked input per value (read_parameters with an override), and the
 // `sweep` command, which runs each value's time history with the peak
 // observer only and tabulates the run's scalars against the value.

@@ -104,5 +104,12 @@ namespace poundfe
           std::pair{"Normal force per velocity", law.normal.per_velocity}})
       if (!std::isfinite(value))
         input.fail(std::string("Friction/") + entry, "must be a finite number");
+    // A belt (or ground) surface faster than sound in air is no physical
+    // input, and at |v0| ~ 1e150 the slip velocity's square overflows.
+    if (std::abs(law.belt_velocity) > maximum_belt_velocity)
+      input.fail("Friction/Belt velocity",
+                 "|v0| = " + number_text(std::abs(law.belt_velocity)) +
+                   " m/s is beyond any physical surface velocity (at most " +
+                   number_text(maximum_belt_velocity) + " m/s)");
   }
 } // namespace poundfe

@@ -1,4 +1,4 @@
-// Bifurcation diagrams (analysis/bifurcation.h) against independent
+// Bifurcation diagrams (dynamics/bifurcation.h) against independent
 // references:
 //  - the period classification of constructed sequences (period 1, 2, 3,
 //    quasi-periodic);

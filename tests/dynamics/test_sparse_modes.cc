@@ -221,3 +221,34 @@ BOOST_AUTO_TEST_CASE(automatic_choice_is_dense_up_to_the_limit)
   BOOST_TEST((choose_eigensolver(Eigensolver::dense, large.mass, 6) == Eigensolver::dense));
   BOOST_TEST((choose_eigensolver(Eigensolver::sparse, small.mass, 6) == Eigensolver::sparse));
 }
+
+// Models too small for ARPACK's Lanczos basis (issue 27: the sparse solver
+// on a one-DOF model refused): the sparse solver projects on every massive
+// DOF, exact. One storey: omega = sqrt(k/m) to round-off; two to five
+// storeys: every mode equals the dense solver's (1e-12), including asking
+// for more modes than there are (both return all of them).
+BOOST_AUTO_TEST_CASE(sparse_modes_of_models_too_small_for_lanczos)
+{
+  const double       m = 2e5, k = 3e8;
+  const LinearSystem one = system_of(poundfe_test::shear_building_input(1, m, k, 0));
+  BOOST_REQUIRE(lanczos_mode_limit(one.mass) == 0u);
+  BOOST_REQUIRE(max_sparse_modes(one.mass) == 1u);
+  const Modes single = compute_modes_sparse(one.mass, one.stiffness, one.influence, 1);
+  BOOST_REQUIRE(single.n_modes() == 1u);
+  BOOST_TEST(std::abs(single.omega[0] / std::sqrt(k / m) - 1) < 1e-14);
+  BOOST_TEST(std::abs(single.participating_mass_ratio[0] - 1) < 1e-14);
+  for (unsigned int n_storeys = 2; n_storeys <= 5; ++n_storeys)
+    {
+      const LinearSystem s = system_of(poundfe_test::shear_building_input(n_storeys, m, k, 0));
+      const Modes        dense  = compute_modes_dense(s.mass, s.stiffness, s.influence, 10);
+      const Modes        sparse = compute_modes_sparse(s.mass, s.stiffness, s.influence, 10);
+      BOOST_REQUIRE(sparse.n_modes() == n_storeys);
+      BOOST_REQUIRE(dense.n_modes() == n_storeys);
+      for (unsigned int j = 0; j < n_storeys; ++j)
+        {
+          BOOST_TEST(std::abs(sparse.omega[j] / dense.omega[j] - 1) < 1e-12);
+          BOOST_TEST((sparse.shapes.col(j) - dense.shapes.col(j)).norm() <
+                     1e-10 * dense.shapes.col(j).norm());
+        }
+    }
+}

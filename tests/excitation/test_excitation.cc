@@ -1,6 +1,9 @@
 // Ground motion: AT2 and text parsing, and the Kanai-Tajimi / Clough-Penzien
 // generator against the stationary variance formula and the PSD integral.
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/excitation/excitation.h>
+#include <poundfe/excitation/excitation_parameters.h>
 #include <poundfe/excitation/records.h>
 #include <poundfe/excitation/stochastic.h>
 
@@ -239,4 +242,37 @@ BOOST_AUTO_TEST_CASE(envelopes_peak_at_one)
   const double t_peak = std::log(e.beta / e.alpha) / (e.beta - e.alpha);
   BOOST_TEST(e(t_peak) == 1.0, boost::test_tools::tolerance(1e-14));
   BOOST_TEST(e(t_peak * 1.1) < 1.0);
+}
+
+// Ground motion/Scale factor multiplies the motion after any Target PGA, for
+// a record as for a generated motion (issue 27: it was dropped for a record
+// with a Target PGA). Reference: the record's own samples times
+// target / peak times the factor, and the generated motion of factor 1
+// times the factor; exact up to one rounding (1e-15).
+BOOST_AUTO_TEST_CASE(scale_factor_multiplies_a_target_pga_for_records_and_generated_motions)
+{
+  const std::string file = write_temporary("scaled.txt", "0 0.1\n0.01 -0.4\n0.02 0.3\n");
+  InputFile         input;
+  input.file = "test.prm";
+  GroundMotionParameters g;
+  g.type              = GroundMotionType::record;
+  g.record_file       = file;
+  g.record_units      = RecordUnits::g;
+  g.record_target_pga = 0.2;
+  g.scale_factor      = 1.5;
+  const GroundMotion record = make_ground_motion(g, input, 0.01);
+  BOOST_TEST(record.peak() / standard_gravity == 0.3, boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(record.value(0.0) / standard_gravity == 0.1 * 0.2 / 0.4 * 1.5,
+             boost::test_tools::tolerance(1e-15));
+
+  g.type              = GroundMotionType::kanai_tajimi;
+  g.duration          = 2.0;
+  g.scale_factor      = 1.0;
+  const GroundMotion unscaled = make_ground_motion(g, input, 0.01);
+  g.scale_factor      = 1.5;
+  const GroundMotion scaled = make_ground_motion(g, input, 0.01);
+  BOOST_REQUIRE(scaled.samples().size() == unscaled.samples().size());
+  for (std::size_t i = 0; i < scaled.samples().size(); ++i)
+    BOOST_TEST(scaled.samples()[i] == 1.5 * unscaled.samples()[i],
+               boost::test_tools::tolerance(1e-15));
 }

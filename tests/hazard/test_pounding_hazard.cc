@@ -1,5 +1,5 @@
 // The probability of pounding over an exposure time from a site hazard
-// (analysis/pounding_hazard.h, theory §7.1) against independent references:
+// (hazard/pounding_hazard.h, theory §7.1) against independent references:
 //   - the hazard integral of the lognormal demand model and a power-law
 //     hazard against Cornell's closed form k0 theta^-k exp(k^2 beta^2 / 2)
 //     (Cornell et al. 2002), also through a hazard_curve.csv of the same

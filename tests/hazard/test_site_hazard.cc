@@ -1,4 +1,4 @@
-// Site hazard (analysis/site_hazard.h) against independent references:
+// Site hazard (hazard/site_hazard.h) against independent references:
 //   - Cornell's intensity and Trifunac-Brady's acceleration of the thesis's
 //     three historical events near the Memve'ele site, against values worked
 //     out by hand to one decimal (the precision of the thesis's table);
@@ -264,7 +264,7 @@ BOOST_AUTO_TEST_CASE(catalogue_reader)
 
 BOOST_AUTO_TEST_CASE(fragility_summary_reader)
 {
-  // The keys `poundfe fragility` writes (analysis/montecarlo.cc, fragility_command).
+  // The keys `poundfe fragility` writes (reliability/montecarlo.cc, fragility_command).
   JsonWriter json;
   json.begin_object().value("program", "poundfe").value("command", "fragility");
   json.begin_array("curves");

@@ -1,4 +1,4 @@
-// Density estimation (analysis/density.h) against independent references:
+// Density estimation (reliability/density.h) against independent references:
 //   - the binned kernel density of exact N(0, 1) bin probabilities against
 //     the N(0, 1 + h^2 + w^2/12) density (the convolution of the Gaussian
 //     with the kernel and with the binning's uniform error), to 2e-3 of the peak;

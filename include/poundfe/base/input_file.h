@@ -1,7 +1,7 @@
 // Where parameters came from, for messages and relative paths, and the few
 // checks every section needs (positive, non-negative, "one or one per").
 // Each module checks its own section with these (deal.II step-33 style);
-// the aggregate (analysis/input_parameters.h) fills the line index.
+// the aggregate (input/input_parameters.h) fills the line index.
 #ifndef poundfe_base_input_file_h
 #define poundfe_base_input_file_h
 

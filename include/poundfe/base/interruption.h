@@ -6,7 +6,7 @@
 // ...) instead turns on stops at safe points: the file layer (every
 // AtomicFile write, each plot) and the long loops then throw Interrupted,
 // which unwinds (removing the uncommitted temporaries) to the command's
-// guard (analysis/command_guard.h), which writes the summary.
+// guard (commands/command_guard.h), which writes the summary.
 #ifndef poundfe_base_interruption_h
 #define poundfe_base_interruption_h
 

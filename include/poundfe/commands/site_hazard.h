@@ -1,5 +1,5 @@
 // The readers of `poundfe site-hazard FILE` (source/commands/site_hazard.cc): the site intensity and PGA of each event of a
-// catalogue (analysis/site_hazard.h has the formulas and their sources), the
+// catalogue (hazard/site_hazard.h has the formulas and their sources), the
 // annual rate of exceeding each intensity, a Gumbel or Poisson fit, the
 // intensity and PGA of chosen return periods and, with a fragility, the
 // annual probability of failure. Writes hazard.csv, hazard_curve.csv,

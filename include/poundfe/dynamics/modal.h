@@ -8,7 +8,7 @@
 //    with M semidefinite: its massless directions have eigenvalue 0, the
 //    far end of the spectrum), a sparse Cholesky factor of K, the few
 //    lowest modes; then one subspace-iteration step and a Rayleigh-Ritz
-//    projection (source/analysis/modal_sparse.cc).
+//    projection (source/dynamics/modal_sparse.cc).
 // Participation: Gamma_n = phi_n^T M r (phi mass-normalised), effective modal
 // mass Gamma_n^2, ratio Gamma_n^2 / (r^T M r) (Chopra, §13.2).
 // Sources: Bathe, Finite Element Procedures (1996), §11.6
@@ -38,17 +38,21 @@ namespace poundfe
     double period(unsigned int i) const;         // s
   };
 
-  /// The most modes the sparse solver can return: its Lanczos basis needs
-  /// more than 2n + 1 vectors, all within the DOFs that carry mass.
+  /// The most modes the sparse solver can return: one per DOF that carries
+  /// mass (the rank of K^-1 M; the other eigenvalues are infinite).
   unsigned int max_sparse_modes(const SparseMatrix &mass);
+
+  /// The most modes ARPACK's Lanczos iteration can find: its basis needs
+  /// more than 2n + 1 vectors, all within the DOFs that carry mass. Beyond
+  /// it (small models) the sparse solver projects on every massive DOF.
+  unsigned int lanczos_mode_limit(const SparseMatrix &mass);
 
   /// The solver `automatic` stands for with this model and n modes wanted
   /// (dense or sparse); others are returned as they are.
   Eigensolver choose_eigensolver(Eigensolver requested, const SparseMatrix &mass,
                                  unsigned int n);
 
-  /// The n lowest modes (all if n exceeds the count; the sparse solver
-  /// needs n <= max_sparse_modes(mass)). Throws NumericalError if K is
+  /// The n lowest modes (all if n exceeds the count). Throws NumericalError if K is
   /// singular or not positive definite (a mechanism), or if the sparse
   /// solver does not converge.
   Modes compute_modes(const SparseMatrix &mass, const SparseMatrix &stiffness,

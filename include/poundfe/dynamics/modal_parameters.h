@@ -1,5 +1,5 @@
 // The `Modal analysis` section: which eigensolver computes the modes (for
-// the output and for Rayleigh damping). Kept apart from analysis/modal.h so
+// the output and for Rayleigh damping). Kept apart from dynamics/modal.h so
 // that the input aggregate does not pull in the sparse matrix headers.
 #ifndef poundfe_dynamics_modal_parameters_h
 #define poundfe_dynamics_modal_parameters_h

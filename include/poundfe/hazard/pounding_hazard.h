@@ -16,7 +16,7 @@
 //                  `poundfe site-hazard` interpolated linearly in log-log
 //                  (extrapolated along its last segment), or its fit;
 //   rate           lambda(g) = int_{a_min}^inf P(D > g | a) |d lambda/da| da
-//                  (Cornell et al. 2002; analysis/site_hazard.h's
+//                  (Cornell et al. 2002; hazard/site_hazard.h's
 //                  annual_failure_rate), closed form for the power law
 //                  without a lower limit: k0 theta(g)^-k exp(k^2 beta^2 / 2);
 //   over T years   P_T(g) = 1 - exp(-T lambda(g)) (Poisson events);

@@ -1,7 +1,7 @@
 // The `Separation/Site hazard` subsection: the site hazard with which the
 // `separation` command turns its Monte Carlo at several PGA levels into the
 // annual rate and the probability over an exposure time of pounding against
-// the gap width (analysis/pounding_hazard.h).
+// the gap width (hazard/pounding_hazard.h).
 #ifndef poundfe_hazard_pounding_hazard_parameters_h
 #define poundfe_hazard_pounding_hazard_parameters_h
 

@@ -33,6 +33,10 @@ namespace poundfe
     void declare(dealii::ParameterHandler &prm);
   };
 
+  /// The largest |Belt velocity| accepted, m/s (the speed of sound in air:
+  /// no belt or ground surface moves faster).
+  constexpr double maximum_belt_velocity = 343.0;
+
   struct FrictionParameters
   {
     std::vector<std::string> surfaces; // 'building floor node'

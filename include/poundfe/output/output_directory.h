@@ -40,7 +40,7 @@ namespace poundfe
   bool output_directory_prepared(const std::string &directory);
 
   /// Removes the "<name>.tmp" of every file the manifest of the prepared
-  /// `directory` lists (a command that stops early: analysis/command_guard.h).
+  /// `directory` lists (a command that stops early: commands/command_guard.h).
   /// Returns the listed files that exist, relative to it, in listing order.
   std::vector<std::string> remove_temporaries(const std::string &directory);
 } // namespace poundfe

@@ -10,8 +10,8 @@
 //   estimates come from the rows summed in realization order, so one rank
 //   and many give the same bytes. Densities: histogram, and the Gaussian
 //   kernel density of the binned data with Silverman's bandwidth; peaks
-//   above a threshold (analysis/density.h). With `Parameter` and `Values`
-//   (a SweepParameters, analysis/sweep.h) it is a P-bifurcation study: one
+//   above a threshold (reliability/density.h). With `Parameter` and `Values`
+//   (a SweepParameters, input/sweep.h) it is a P-bifurcation study: one
 //   such run per value, then the density of x and its peaks against the
 //   value. Theory: doc/theory.md §6.5.
 #ifndef poundfe_reliability_stationary_pdf_h

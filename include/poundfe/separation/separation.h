@@ -23,7 +23,7 @@
 //   mean ux of the floor's joints (output/floor_response.h).
 //   Response-spectrum route (Separation/Peak displacements): u_i by modal
 //   combination of the Eurocode 8 spectrum, no time history
-//   (analysis/separation_spectrum.h).
+//   (separation/separation_spectrum.h).
 //   With random loading: Monte Carlo without contact; u_i and the
 //   time-history value are the means over the realizations (EN 1998-1
 //   §4.3.3.4.3(3) takes the average of the response histories), and the
@@ -33,7 +33,7 @@
 //   probability p is the type-7 (1 - p) quantile of D (statistics.h).
 //   With a site hazard (Separation/Site hazard): the probability of
 //   pounding over an exposure time and the gap for a target, from the
-//   Monte Carlo at several PGA levels (analysis/pounding_hazard.h).
+//   Monte Carlo at several PGA levels (hazard/pounding_hazard.h).
 // Sources: Der Kiureghian, EESD 9 (1981) 419-435; Jeng, Kasai & Maison,
 // Earthquake Spectra 8(2) (1992) 201-223; Penzien, EESD 26 (1997) 849-858;
 // Lopez Garcia, Proc. 13th WCEE, Vancouver (2004) (DDC for yielding

@@ -2,7 +2,7 @@
 // command (Eurocode 8 §4.4.2.7, ASCE 7-16 §12.12.3), its probability of
 // pounding against the gap width (target probability, gap grid, band) and
 // where the peak displacements come from (a time history, or the modal
-// combination of the Eurocode 8 spectrum: analysis/separation_spectrum.h).
+// combination of the Eurocode 8 spectrum: separation/separation_spectrum.h).
 #ifndef poundfe_separation_separation_parameters_h
 #define poundfe_separation_separation_parameters_h
 

@@ -4,7 +4,7 @@
 // elastic spectrum, no time history.
 //
 //   Modes of building b on its own equations (K phi = w^2 M phi, phi
-//   mass-normalised, analysis/modal.h), r = 1 on every ux equation:
+//   mass-normalised, dynamics/modal.h), r = 1 on every ux equation:
 //     Gamma_i = phi_i^T M r / phi_i^T M phi_i = phi_i^T M r,
 //     effective mass ratio Gamma_i^2 / r^T M r,
 //     zeta_i  = phi_i^T C phi_i / (2 w_i)  (the modal damping of the assembled C),
