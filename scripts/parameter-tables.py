@@ -5,10 +5,10 @@
     python3 scripts/parameter-tables.py --update FILE   # rewrite the tables inside FILE
 
 print-parameters writes deal.II's PRM listing: `subsection NAME` ... `end`, and before
-each `set ENTRY = DEFAULT` the entry's help as `# ` comment lines. Each help ends with
-`Unit: <u>.`; entries of Building <i> that apply to one kind of building start with a tag
-such as `[frame]`. This script turns each section's entries into a table: entry, default,
-unit, help.
+each `set ENTRY = DEFAULT` the entry's help as `# ` comment lines. Each help says its
+unit, `Unit: <u>.` (a choice also its values, `Allowed: ...`); entries of Building <i>
+that apply to one kind of building start with a tag such as `[frame]`. This script turns
+each section's entries into a table: entry (with its tag), default, unit, help.
 
 With --update, every block of FILE between a line `<!-- parameters: SECTION -->` and the
 next `<!-- end parameters -->` is replaced by the table of SECTION (its path, e.g.
@@ -26,7 +26,7 @@ import subprocess
 import sys
 from collections import OrderedDict
 
-UNIT = re.compile(r"\s*Unit:\s*(.*?)\.?\s*$")
+UNIT = re.compile(r"\s*Unit:\s*(.+?)\.(?=\s|$)")
 TAG = re.compile(r"^\s*(\[[a-z, ]+\])\s*")
 BLOCK = re.compile(r"(<!-- parameters: (.+?) -->\n)(.*?)(<!-- end parameters -->)", re.S)
 
@@ -69,7 +69,8 @@ def parse_sections(text):
 
 
 def cell(text):
-    return text.replace("|", "\\|").strip()
+    """Text safe inside a markdown table cell (no column breaks, no HTML tags)."""
+    return text.replace("|", "\\|").replace("<", "&lt;").replace(">", "&gt;").strip()
 
 
 def table(entries):
@@ -80,7 +81,7 @@ def table(entries):
         match = UNIT.search(help_text)
         if match:
             unit = match.group(1)
-            help_text = help_text[:match.start()]
+            help_text = (help_text[:match.start()] + help_text[match.end():]).strip()
         tag = ""
         match = TAG.match(help_text)
         if match:
@@ -107,7 +108,7 @@ def update(path, sections):
             rest = [s for s, e in sections.items() if s not in named and e]
             body = "".join(f"\n#### {s}\n\n{table(sections[s])}" for s in rest) or \
                 "(every section's table is in its chapter)\n"
-        return match.group(1) + body + match.group(4)
+        return match.group(1) + "\n" + body + "\n" + match.group(4)
 
     new_text = BLOCK.sub(replacement, text)
     if new_text != text:
