@@ -4,7 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(libdeal.ii-dev libeigen3-dev zlib1g-dev libboost-test-dev numdiff gmsh gnuplot-nox cmake g++ make python3)
+packages=(libdeal.ii-dev libeigen3-dev zlib1g-dev libboost-test-dev numdiff gmsh gnuplot-nox cmake g++ make python3
+          pybind11-dev python3-pybind11 python3-dev python3-numpy python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -25,4 +26,4 @@ mkdir -p build
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" > build/build.log 2>&1 ||
   { cat build/build.log; exit 1; }
 cmake --build build -j2 >> build/build.log 2>&1 || { tail -50 build/build.log; exit 1; }
-echo "setup: build/poundfe is ready"
+echo "setup: build/poundfe is ready; Python: PYTHONPATH=build/python python3 -c 'import poundfe'"

@@ -368,6 +368,7 @@ namespace poundfe
       outputs.push_back(std::make_unique<ProgressReport>(n_steps));
     for (const auto &output : outputs)
       observers.push_back(output.get());
+    observers.insert(observers.end(), options.observers.begin(), options.observers.end());
 
     RunResult result;
     result.status               = history.run(excitation, observers, options.interruptible);

@@ -43,20 +43,6 @@ namespace poundfe
       {RecordedQuantity::ground_motion, "ground motion", "ground_motion"},
       {RecordedQuantity::phase_portrait, "phase portrait", "phase_portrait"}};
 
-    /// "<building>_node<n>_<ux|uy|rz>" of each equation.
-    std::vector<std::string>
-    equation_labels(const Model &model)
-    {
-      std::vector<std::string> labels(model.n_equations());
-      const char              *components[] = {"ux", "uy", "rz"};
-      for (unsigned int node = 0; node < model.n_nodes(); ++node)
-        for (unsigned int c = 0; c < n_dofs_per_node; ++c)
-          if (const int q = model.equation(n_dofs_per_node * node + c); q >= 0)
-            labels[q] = model.buildings[model.nodes[node].building].name + "_node" +
-                        std::to_string(node) + "_" + components[c];
-      return labels;
-    }
-
     const QuantityInfo &
     info(const RecordedQuantity q)
     {
@@ -372,6 +358,19 @@ namespace poundfe
             }
     }
   } // namespace
+
+  std::vector<std::string>
+  equation_labels(const Model &model)
+  {
+    std::vector<std::string> labels(model.n_equations());
+    const char              *components[] = {"ux", "uy", "rz"};
+    for (unsigned int node = 0; node < model.n_nodes(); ++node)
+      for (unsigned int c = 0; c < n_dofs_per_node; ++c)
+        if (const int q = model.equation(n_dofs_per_node * node + c); q >= 0)
+          labels[q] = model.buildings[model.nodes[node].building].name + "_node" +
+                      std::to_string(node) + "_" + components[c];
+    return labels;
+  }
 
   unsigned int
   steps_per_interval(const double interval, const double dt)

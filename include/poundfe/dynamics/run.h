@@ -21,6 +21,9 @@ namespace poundfe
     bool        plots = true;
     bool        progress      = false; // steps, rate and ETA on a terminal
     bool        interruptible = false; // SIGINT/SIGTERM end the run after the current step
+    /// The caller's own observers, after the standard ones (e.g. the Python
+    /// module's callback every N steps).
+    Observers   observers;
   };
 
   /// What a run with the standard observers reports to its caller.

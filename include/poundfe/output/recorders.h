@@ -14,6 +14,10 @@ namespace poundfe
 {
   class PeakResponse;
 
+  /// "<building>_node<n>_<ux|uy|rz>" of each equation (the columns of
+  /// phase_portrait.csv; the rows of a mode shape in Python).
+  std::vector<std::string> equation_labels(const Model &model);
+
   /// Steps between rows for an interval in s (0: every step).
   unsigned int steps_per_interval(double interval, double time_step);
 

@@ -1,0 +1,208 @@
+// The compiled part of the Python module `poundfe` (poundfe._core): the
+// errors as Python exceptions, the parameter file as an `Input` object and
+// the modal analysis. The time history and the commands are in run.cc; the
+// Pythonic layer (results as numpy arrays, the model builder) is in
+// source/python/poundfe/*.py.
+//
+// Every entry point reads its input through the command line's reader
+// (read_parameters, with overrides): a Python user gets the same checks and
+// the same messages. The GIL is released while poundfe computes.
+#include "module.h"
+
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/output/recorders.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
+
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace poundfe::python
+{
+  namespace
+  {
+    /// The exception types, made once at import (the module keeps them
+    /// alive: handles, so nothing is released after Python has finalised).
+    py::handle input_error_type, numerical_error_type, output_error_type;
+
+    /// poundfe's errors as Python exceptions with the same message (the
+    /// command line prints "poundfe: error: " before it). InputError also
+    /// carries file, line, parameter and problem as attributes.
+    void
+    translate_exception(std::exception_ptr error)
+    {
+      try
+        {
+          if (error)
+            std::rethrow_exception(error);
+        }
+      catch (const InputError &e)
+        {
+          py::object exception   = input_error_type(e.what());
+          exception.attr("file")      = e.file();
+          exception.attr("line")      = e.line();
+          exception.attr("parameter") = e.parameter();
+          exception.attr("problem")   = e.problem();
+          PyErr_SetObject(input_error_type.ptr(), exception.ptr());
+        }
+      catch (const NumericalError &e)
+        {
+          PyErr_SetString(numerical_error_type.ptr(), e.what());
+        }
+      catch (const OutputError &e)
+        {
+          PyErr_SetString(output_error_type.ptr(), e.what());
+        }
+      catch (const Interrupted &e)
+        {
+          PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
+        }
+    }
+
+    /// An exception type `name` of the module, derived from `base`.
+    py::handle
+    exception_type(py::module_ &m, const char *name, PyObject *base, const char *doc)
+    {
+      const std::string qualified = std::string("poundfe.") + name;
+      py::object type = py::reinterpret_steal<py::object>(
+        PyErr_NewExceptionWithDoc(qualified.c_str(), doc, base, nullptr));
+      if (!type)
+        throw py::error_already_set();
+      m.attr(name) = type;
+      return type.release();
+    }
+
+    std::vector<ParameterOverride>
+    overrides_of(const std::vector<std::pair<std::string, std::string>> &pairs)
+    {
+      std::vector<ParameterOverride> overrides;
+      for (const auto &[path, value] : pairs)
+        overrides.push_back({path, value});
+      return overrides;
+    }
+
+    /// Frequencies, periods, participating mass ratios and shapes.
+    py::dict
+    modes_dict(const Modes &modes)
+    {
+      std::vector<double> frequency, period;
+      for (unsigned int i = 0; i < modes.n_modes(); ++i)
+        frequency.push_back(modes.frequency(i)), period.push_back(modes.period(i));
+      py::dict d;
+      d["omega_rad_s"]                = modes.omega;
+      d["frequencies_hz"]             = frequency;
+      d["periods_s"]                  = period;
+      d["participating_mass_ratio_x"] = modes.participating_mass_ratio;
+      d["shapes"]                     = modes.shapes; // one mode per column, a copy
+      return d;
+    }
+  } // namespace
+
+  std::shared_ptr<const Analysis>
+  prepare(const InputParameters &input)
+  {
+    py::gil_scoped_release release;
+    return std::make_shared<const Analysis>(prepare_analysis(input));
+  }
+
+  py::dict
+  modes_of(const Analysis &analysis)
+  {
+    py::dict result = modes_dict(analysis.modes);
+    result["equations"] = equation_labels(analysis.model);
+    py::list buildings;
+    for (unsigned int b = 0; b < analysis.model.buildings.size(); ++b)
+      {
+        py::dict building = modes_dict(analysis.building_modes[b]);
+        building["name"]        = analysis.model.buildings[b].name;
+        building["rayleigh_a0"] = analysis.system.rayleigh[b][0];
+        building["rayleigh_a1"] = analysis.system.rayleigh[b][1];
+        buildings.append(building);
+      }
+    result["buildings"] = buildings;
+    return result;
+  }
+
+  namespace
+  {
+    void
+    bind_input(py::module_ &m)
+    {
+      py::class_<InputParameters, std::shared_ptr<InputParameters>>(
+        m, "Input", "A parameter file, read and checked (poundfe.read).")
+        .def_property_readonly("file", [](const InputParameters &p) { return p.file; })
+        .def_property_readonly("directory", [](const InputParameters &p) { return p.directory; })
+        .def_property_readonly("overrides",
+                               [](const InputParameters &p) {
+                                 std::vector<std::pair<std::string, std::string>> pairs;
+                                 for (const ParameterOverride &o : p.overrides)
+                                   pairs.emplace_back(o.path, o.value);
+                                 return pairs;
+                               })
+        .def_property_readonly("buildings",
+                               [](const InputParameters &p) {
+                                 std::vector<std::string> names;
+                                 for (const BuildingParameters &b : p.model.buildings)
+                                   names.push_back(b.name);
+                                 return names;
+                               },
+                               "The buildings' names, in order.")
+        .def_property_readonly("separations",
+                               [](const InputParameters &p) { return p.model.separations; },
+                               "Model/Separations, m.")
+        .def_property_readonly(
+          "time_step", [](const InputParameters &p) { return p.time_integration.newmark.time_step; })
+        .def_property_readonly("output_directory",
+                               [](const InputParameters &p) { return p.output.directory; })
+        .def("__repr__", [](const InputParameters &p) {
+          std::string text = "<poundfe.Input '" + p.file + "'";
+          for (const ParameterOverride &o : p.overrides)
+            text += " " + o.path + "=" + o.value;
+          return text + ">";
+        });
+
+      m.def(
+        "read",
+        [](const std::string &file, const std::vector<std::pair<std::string, std::string>> &pairs) {
+          py::gil_scoped_release release;
+          return std::make_shared<InputParameters>(read_parameters(file, overrides_of(pairs)));
+        },
+        py::arg("file"), py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
+        "Read and check a .prm or .json file, with (path, value) overrides.");
+
+      m.def(
+        "modal", [](const InputParameters &input) { return modes_of(*prepare(input)); },
+        py::arg("input"), "The whole model's modes and each building's, as a dict.");
+    }
+  } // namespace
+} // namespace poundfe::python
+
+PYBIND11_MODULE(_core, m)
+{
+  using namespace poundfe::python;
+  m.doc() = "poundfe's compiled core; use the package poundfe.";
+  // As main.cc: deal.II's errors are exceptions, and one thread (the
+  // numbers do not depend on a thread count).
+  dealii::deal_II_exceptions::disable_abort_on_exception();
+  dealii::MultithreadInfo::set_thread_limit(1);
+
+  input_error_type = exception_type(
+    m, "InputError", PyExc_ValueError,
+    "Bad input: the message names the file, the line where known and the parameter "
+    "(attributes file, line, parameter, problem).");
+  numerical_error_type = exception_type(
+    m, "NumericalError", PyExc_RuntimeError,
+    "A solver or the integrator could not continue (the command line's exit status 2).");
+  output_error_type =
+    exception_type(m, "OutputError", PyExc_OSError, "A results file could not be written.");
+  py::register_exception_translator(&translate_exception);
+
+  bind_input(m);
+  bind_run(m);
+}

@@ -1,0 +1,168 @@
+"""A run's results as NumPy arrays, read from the files the command line's
+own observers wrote (the recorders' tables, impacts.csv, summary.json):
+what Python gets is what `poundfe run` writes, to the last digit."""
+
+import csv
+import json
+import os
+
+import numpy as np
+
+
+class Table:
+    """A recorder's time series: `time` (s) and one column per name, e.g.
+    drift["A3_storey1_drift_ratio"]; `values` is the 2-D array of every
+    column but time (one row per recorded step)."""
+
+    def __init__(self, names, data):
+        self.names = list(names)          # the file's header, time_s first
+        self.data = np.asarray(data, dtype=float).reshape(-1, len(self.names))
+
+    @property
+    def time(self):
+        return self.data[:, 0]
+
+    @property
+    def columns(self):
+        return self.names[1:]
+
+    @property
+    def values(self):
+        return self.data[:, 1:]
+
+    def __getitem__(self, name):
+        try:
+            return self.data[:, self.names.index(name)]
+        except ValueError:
+            raise KeyError(f"no column '{name}' (columns: {', '.join(self.columns)})") from None
+
+    def __len__(self):
+        return self.data.shape[0]
+
+    def __repr__(self):
+        return f"<poundfe.Table {len(self)} rows x {len(self.columns)} columns>"
+
+
+def _number_or_text(texts):
+    """A column of a CSV table: float64 when every entry is a number."""
+    try:
+        return np.array([float(t) for t in texts], dtype=float)
+    except ValueError:
+        return np.array(texts, dtype=str)
+
+
+def read_csv(path):
+    """A CSV file with a header: a Table when its first column is time_s,
+    otherwise a structured array (one field per column, numbers as float64,
+    the rest as text)."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    names, rows = rows[0], rows[1:]
+    if names[0] == "time_s":
+        return Table(names, [[float(x) for x in row] for row in rows])
+    columns = [_number_or_text([row[i] for row in rows]) for i in range(len(names))]
+    array = np.zeros(len(rows), dtype=[(n, c.dtype) for n, c in zip(names, columns)])
+    for name, column in zip(names, columns):
+        array[name] = column
+    return array
+
+
+def read_npy(path):
+    """A recorder's NumPy table and its names (<stem>.columns.txt)."""
+    with open(path[:-4] + ".columns.txt") as f:
+        names = f.read().split("\n")
+    return Table([n for n in names if n], np.load(path))
+
+
+class Modes:
+    """Undamped modes (poundfe.modal, Results.modes): omega (rad/s),
+    frequencies (Hz), periods (s), participating_mass_ratio (x), shapes
+    (mass-normalised, one column per mode, one row per equation named in
+    `equations`); `buildings` holds each building's own modes (with name,
+    rayleigh_a0, rayleigh_a1)."""
+
+    def __init__(self, raw):
+        self.omega = np.array(raw["omega_rad_s"])
+        self.frequencies = np.array(raw["frequencies_hz"])
+        self.periods = np.array(raw["periods_s"])
+        self.participating_mass_ratio = np.array(raw["participating_mass_ratio_x"])
+        self.shapes = np.array(raw["shapes"])
+        self.equations = raw.get("equations")
+        self.name = raw.get("name")
+        self.rayleigh = (raw["rayleigh_a0"], raw["rayleigh_a1"]) if "rayleigh_a0" in raw else None
+        self.buildings = [Modes(b) for b in raw.get("buildings", [])]
+
+    def __repr__(self):
+        hz = ", ".join(f"{f:.4g}" for f in self.frequencies)
+        return f"<poundfe.Modes {self.name or 'model'}: {hz} Hz>"
+
+
+class Results:
+    """A time history's results.
+
+    status ("completed", "failed", "interrupted"), message, steps, end_time;
+    series: {stem: Table} of every recorder (floor_displacement, drift,
+    floor_acceleration, contact_force, hinges, energy, ground_motion, ... as
+    the input's Output/Recorders ask), also as attributes (results.drift);
+    impacts: the impact log, a structured array (gap, start_time_s, ...,
+    peak_force_N, impulse_N_s: impacts.csv's columns);
+    peaks: {building: {drift_ratio, floor_acceleration, floor_displacement,
+    residual_drift_ratio (arrays per storey), roof_displacement}};
+    gaps: {label: summary.json's entry (impacts, peak_force_N, ...)};
+    summary: summary.json as a dict; modes: Modes; tables: the other tables
+    (drift_profile, acceleration_profile, residual_drift, ...)."""
+
+    def __init__(self, directory, raw):
+        self.status = raw["status"]
+        self.message = raw["message"]
+        self.steps = raw["steps"]
+        self.end_time = raw["end_time"]
+        self.wall_time = raw["wall_time"]
+        self.warnings = list(raw["warnings"])
+        self.modes = Modes(raw["modes"])
+        with open(os.path.join(directory, "summary.json")) as f:
+            self.summary = json.load(f)
+        self.series, self.tables = {}, {}
+        for name in self.summary["output"]["files"]:
+            path = os.path.join(directory, name)
+            stem, extension = os.path.splitext(name)
+            if extension == ".npy":
+                self.series[stem] = read_npy(path)
+            elif extension == ".csv":
+                table = read_csv(path)
+                (self.series if isinstance(table, Table) else self.tables)[stem] = table
+        self.impacts = self.tables.pop("impacts", None)
+        self.peaks = {b["name"]: self._peaks_of(b) for b in self.summary["buildings"]}
+        self.gaps = {g["label"]: g for g in self.summary.get("gaps", [])}
+
+    @staticmethod
+    def _peaks_of(building):
+        storeys = building["storeys"]
+
+        def column(key):
+            return np.array([s[key] for s in storeys], dtype=float)
+
+        return {"drift_ratio": column("peak_drift_ratio"),
+                "time_of_peak_drift": column("time_of_peak_drift_s"),
+                "residual_drift_ratio": column("residual_drift_ratio"),
+                "floor_acceleration": column("peak_absolute_floor_acceleration_m_s2"),
+                "floor_displacement": column("peak_floor_displacement_m"),
+                "roof_displacement": building["peak_roof_displacement_m"]}
+
+    @property
+    def time(self):
+        """The times of the default rows (Output/Output interval), s."""
+        for table in self.series.values():
+            return table.time
+        return np.zeros(0)
+
+    def __getattr__(self, name):
+        series = self.__dict__.get("series", {})
+        if name in series:
+            return series[name]
+        raise AttributeError(f"no attribute or recorded series '{name}' "
+                             f"(series: {', '.join(series)})")
+
+    def __repr__(self):
+        return (f"<poundfe.Results {self.status}, {self.steps} steps to t = {self.end_time} s, "
+                f"{0 if self.impacts is None else len(self.impacts)} impacts>")

@@ -1,0 +1,229 @@
+// poundfe._core's time history and commands: the command line's own
+// run_time_history (the same observers, files and numbers) with one more
+// observer that calls Python back every N steps, and any command of the
+// command table run as main.cc runs it. The GIL is released while poundfe
+// steps; the observer takes it back for the callback and, every few hundred
+// steps, to let Ctrl-C (KeyboardInterrupt) stop a run.
+#include "module.h"
+
+#include <poundfe/assembly/linear_solver.h>
+#include <poundfe/commands/command_guard.h>
+#include <poundfe/commands/command_table.h>
+#include <poundfe/dynamics/run.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/output/floor_response.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <iostream>
+
+namespace py = pybind11;
+
+namespace poundfe::python
+{
+  namespace
+  {
+    /// What the callback sees at a step: copies, so that the callback may
+    /// keep them.
+    struct StepState
+    {
+      unsigned long       step = 0;
+      double              time = 0, ground_acceleration = 0;
+      Eigen::VectorXd     displacement, velocity, acceleration; // per equation, relative
+      std::vector<double> floor_displacement, drift_ratio, floor_acceleration;
+      std::size_t         n_impacts = 0;
+    };
+
+    /// Calls `callback(state)` at step 0 and every `every` steps; checks for
+    /// Ctrl-C every `signal_steps` steps (a Python exception raised by
+    /// either unwinds the run).
+    class CallbackObserver : public StepObserver
+    {
+    public:
+      CallbackObserver(py::object callback, const unsigned int every, const Model &model)
+        : callback(std::move(callback))
+        , every(std::max(1u, every))
+        , floors(model)
+      {}
+
+      void
+      observe_step(const ResponseView &state) override
+      {
+        const bool call  = !callback.is_none() && state.step() % every == 0;
+        const bool check = state.step() % signal_steps == 0;
+        if (!call && !check)
+          return;
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0)
+          throw py::error_already_set();
+        if (call)
+          callback(py::cast(state_of(state)));
+      }
+
+    private:
+      static constexpr unsigned int signal_steps = 256;
+
+      StepState
+      state_of(const ResponseView &view)
+      {
+        floors.evaluate(view.time(), view.displacement(), view.velocity(), view.acceleration(),
+                        view.ground_acceleration());
+        StepState s;
+        s.step                = view.step();
+        s.time                = view.time();
+        s.ground_acceleration = view.ground_acceleration();
+        s.displacement        = view.displacement();
+        s.velocity            = view.velocity();
+        s.acceleration        = view.acceleration();
+        s.floor_displacement  = floors.displacement();
+        s.drift_ratio         = floors.drift_ratio();
+        s.floor_acceleration  = floors.absolute_acceleration();
+        s.n_impacts           = view.impact_log().impacts().size();
+        return s;
+      }
+
+      py::object         callback;
+      const unsigned int every;
+      FloorResponse      floors;
+    };
+
+    /// A time history through run_time_history into `directory`: the
+    /// recorders' tables (as NumPy .npy with `npy`), summary.json and
+    /// impacts.csv; VTU frames and plots only with `vtu_and_plots`.
+    py::dict
+    run_time_history_into(const InputParameters &input, const std::string &directory,
+                          const bool npy, const bool vtu_and_plots, py::object callback,
+                          const unsigned int every)
+    {
+      InputParameters run_input = input;
+      if (npy)
+        run_input.output.recorders.format = OutputFormat::npy;
+      const std::shared_ptr<const Analysis> analysis = prepare(run_input);
+      CallbackObserver observer(std::move(callback), every, analysis->model);
+      RunResult        result;
+      {
+        py::gil_scoped_release release;
+        const Excitation excitation = make_excitation(*analysis);
+        RunOptions       options;
+        options.output_directory = directory;
+        options.vtu = options.plots = vtu_and_plots;
+        options.observers        = {&observer};
+        result                   = run_time_history(*analysis, excitation, options);
+      }
+      py::dict d;
+      d["status"]               = result.status.name();
+      d["message"]              = result.status.message;
+      d["output_failed"]        = result.status.output_failed;
+      d["steps"]                = result.status.steps;
+      d["end_time"]             = result.status.end_time;
+      d["wall_time"]            = result.status.wall_time;
+      d["n_impacts"]            = result.n_impacts;
+      d["n_nonlinear_elements"] = result.n_nonlinear_elements;
+      d["max_energy_error"]     = result.max_energy_error;
+      d["warnings"]             = result.warnings;
+      d["modes"]                = modes_of(*analysis);
+      return d;
+    }
+
+    /// MPI (and PETSc) for the commands that need it, initialised once on
+    /// demand as main.cc does, and finalised when Python exits.
+    dealii::Utilities::MPI::MPI_InitFinalize *mpi = nullptr;
+
+    void
+    ensure_mpi()
+    {
+      if (mpi != nullptr)
+        return;
+      static int   argc     = 1;
+      static char  name[]   = "python";
+      static char *words[]  = {name, nullptr};
+      static char **argv    = words;
+      mpi = new dealii::Utilities::MPI::MPI_InitFinalize(argc, argv, 1);
+    }
+
+    /// The commands that take --realizations, for the message.
+    std::string
+    commands_taking_realizations()
+    {
+      std::string names;
+      for (const Command &c : command_table())
+        if (c.takes_realizations)
+          names += (names.empty() ? "" : " and ") + c.name;
+      return names;
+    }
+
+    /// `poundfe NAME ARGUMENTS... [--output DIR] [--realizations N]` as
+    /// main.cc runs it: the table's row, the input read and checked, MPI
+    /// when needed, the output guard. Bad input raises InputError instead of
+    /// exit status 1; returns the exit status otherwise.
+    int
+    run_command_of_table(const std::string &name, const std::vector<std::string> &arguments,
+                         const std::string &output, const unsigned int n_realizations)
+    {
+      const Command *command = find_command(name);
+      if (command == nullptr)
+        throw py::value_error("unknown command '" + name + "'\n" + usage_text());
+      if (n_realizations > 0 && !command->takes_realizations)
+        throw py::value_error("realizations belongs to " + commands_taking_realizations());
+      if (command->reads_parameters && arguments.size() != 1)
+        throw py::value_error("'" + name + "' needs exactly one parameter file");
+      int status = 0;
+      {
+        py::gil_scoped_release release;
+        if (!command->reads_parameters) // print-parameters, template
+          status = command->run({arguments, nullptr, output, 0, MPI_COMM_SELF, std::cerr});
+        else
+          {
+            const InputParameters input = read_parameters(arguments[0]);
+            if (command->runs_over_mpi || linear_solver_needs_mpi(input.time_integration.linear_solver))
+              ensure_mpi();
+            const std::string directory = output.empty() ? input.output.directory : output;
+            const GuardedCommand guarded{
+              command->name, input, directory, true, !command->handles_interruption_itself};
+            status = guard_command(guarded, [&]() {
+              return command->run({arguments, &input, directory, n_realizations,
+                                   mpi ? MPI_COMM_WORLD : MPI_COMM_SELF, std::cerr});
+            });
+          }
+        std::cout.flush();
+      }
+      return status;
+    }
+  } // namespace
+
+  void
+  bind_run(py::module_ &m)
+  {
+    py::class_<StepState>(m, "StepState", "The state at a step, handed to a run's callback.")
+      .def_readonly("step", &StepState::step)
+      .def_readonly("time", &StepState::time, "s")
+      .def_readonly("ground_acceleration", &StepState::ground_acceleration, "m/s^2")
+      .def_readonly("displacement", &StepState::displacement, "per equation, m or rad, relative")
+      .def_readonly("velocity", &StepState::velocity, "per equation, relative")
+      .def_readonly("acceleration", &StepState::acceleration, "per equation, relative")
+      .def_readonly("floor_displacement", &StepState::floor_displacement,
+                    "per floor (building by building, bottom up), m, relative")
+      .def_readonly("drift_ratio", &StepState::drift_ratio, "per storey")
+      .def_readonly("floor_acceleration", &StepState::floor_acceleration,
+                    "per floor, m/s^2, absolute")
+      .def_readonly("n_impacts", &StepState::n_impacts, "impacts so far")
+      .def("__repr__", [](const StepState &s) {
+        return "<poundfe.StepState step " + std::to_string(s.step) + ", t = " +
+               std::to_string(s.time) + " s>";
+      });
+
+    m.def("run_time_history", &run_time_history_into, py::arg("input"), py::arg("directory"),
+          py::arg("npy"), py::arg("vtu_and_plots"), py::arg("callback") = py::none(),
+          py::arg("every") = 1, "A time history into `directory`; use poundfe.run.");
+    m.def("command", &run_command_of_table, py::arg("name"), py::arg("arguments"),
+          py::arg("output") = "", py::arg("realizations") = 0,
+          "A command of the command table; use poundfe.command.");
+    py::module_::import("atexit").attr("register")(py::cpp_function([]() {
+      delete mpi;
+      mpi = nullptr;
+    }));
+  }
+} // namespace poundfe::python
