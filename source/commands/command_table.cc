@@ -19,6 +19,7 @@ namespace poundfe
     int bifurcation(const CommandRun &);    // bifurcation.cc
     int site_hazard(const CommandRun &);    // site_hazard.cc
     int separation(const CommandRun &);     // separation.cc
+    int reliability(const CommandRun &);    // reliability.cc
     int print_parameters(const CommandRun &); // print_parameters.cc
     int input_template(const CommandRun &); // template.cc
   } // namespace commands
@@ -72,6 +73,10 @@ namespace poundfe
        "and, with a site hazard, P(pounding in T years) and the gap\n"
        "for a target (Separation/Site hazard)",
        true, true, true, false, commands::separation},
+      {"reliability", "FILE",
+       "failure probability of algebraic limit states (Reliability\n"
+       "section): FORM, SORM, importance sampling, Monte Carlo, subset",
+       true, true, true, false, commands::reliability},
       {"print-parameters", "", "every parameter with its documentation and default",
        false, false, false, false, commands::print_parameters},
       {"template", "KIND",
