@@ -440,3 +440,41 @@ BOOST_AUTO_TEST_CASE(cantilever_methods_agree)
   BOOST_TEST(std::abs(so.tvedt - ref) < 4 * ref_sd + 0.03 * ref);
   BOOST_TEST(std::abs(f.probability - ref) < 0.25 * ref);
 }
+
+// Subset Simulation with the thesis's (p0, N) pairs (Table 2.5: 0.10/950,
+// 0.15/925, 0.20/900, 0.35/825), whose p0 N or 1/p0 is not whole, on
+// G = beta - sum(u_i)/sqrt(n), n = 10, beta = 3 (Pf = Phi(-3) = 1.35e-3,
+// exact): the mean of 12 independent runs lies within 3 standard errors of
+// Pf, the standard error taken from the runs' own scatter.
+BOOST_AUTO_TEST_CASE(subset_any_conditional_probability)
+{
+  const unsigned int n = 10;
+  const double       exact = standard_normal_cdf(-3.0);
+  const std::pair<double, unsigned int> cases[] = {{0.10, 950}, {0.15, 925}, {0.20, 900}, {0.35, 825}};
+  for (const auto &[p0, N] : cases)
+    {
+      double sum = 0, sum2 = 0;
+      const unsigned int runs = 12;
+      for (unsigned int r = 0; r < runs; ++r)
+        {
+          SubsetSettings s;
+          s.samples_per_level       = N;
+          s.conditional_probability = p0;
+          s.seed                    = 100 + r;
+          const SubsetResult result = subset_simulation(
+            [&](const std::vector<double> &u) {
+              double t = 0;
+              for (const double x : u)
+                t += x;
+              return t / std::sqrt(double(n)) - 3.0;
+            },
+            n, 0.0, s, MPI_COMM_SELF);
+          BOOST_TEST(result.reached_threshold);
+          sum += result.probability, sum2 += result.probability * result.probability;
+        }
+      const double mean = sum / runs, sd = std::sqrt((sum2 - sum * sum / runs) / (runs - 1));
+      BOOST_TEST_MESSAGE("subset p0 = " << p0 << ", N = " << N << ": mean Pf " << mean
+                                        << " (exact " << exact << "), run COV " << sd / mean);
+      BOOST_TEST(std::abs(mean - exact) < 3 * sd / std::sqrt(double(runs)));
+    }
+}
