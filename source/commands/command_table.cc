@@ -142,9 +142,10 @@ namespace poundfe
         << names_of(&Command::handles_interruption_itself)
         << "\nafter the step or realizations under way, with the results so far\n"
            "(status \"interrupted\", exit status 128 + signal); the same command resumes all but\n"
-           "run and subset. Any other command stops at its next file write or time step: no\n"
-           "*.tmp left, summary.json says \"interrupted\". A file that cannot be written (full\n"
-           "disk) exits 1 with summary.json \"failed\" and the reason, when it still fits.\n"
+           "run, subset and reliability. Any other command stops at its next file write or\n"
+           "time step: no *.tmp left, summary.json says \"interrupted\". A file that cannot be\n"
+           "written (full disk) exits 1 with summary.json \"failed\" and the reason, when it\n"
+           "still fits.\n"
            "A second signal kills. Progress shows on a terminal (POUNDFE_PROGRESS=1: always).\n";
     return out.str();
   }
