@@ -32,6 +32,12 @@
 //   one once above 1000 equations) on generated 3-bay frames with 2 elements
 //   per member (33 equations per storey; default 15 30 60 150 storeys, i.e.
 //   495 to 4950 equations), and prints the largest frequency difference.
+// Reliability: build/poundfe-bench --reliability [FILE]
+//   (input/thesis-cantilever-reliability.prm by default): evaluations per
+//   second of the file's first limit-state expression alone (muParser byte
+//   code, values copied in), of g(T(u)) with the transformation and the
+//   random numbers (crude Monte Carlo), and FORM's iterations, gradients
+//   and evaluations on every limit state (best of 3 for the rates).
 // Distributed solve: [mpirun -np P] build/poundfe-bench --distributed FILE
 //   the run of FILE (its solver, e.g. petsc-mumps on input/city-block.prm)
 //   with the CSV outputs on rank 0: equations, set-up (reading and assembly;
@@ -55,6 +61,10 @@
 #include <deal.II/base/mpi.h>
 
 #include <sys/resource.h>
+
+#include <poundfe/reliability/form.h>
+#include <poundfe/reliability/limit_state.h>
+#include <poundfe/reliability/sampling.h>
 
 #include <chrono>
 #include <cmath>
@@ -393,6 +403,54 @@ namespace
       }
     return 0;
   }
+  int
+  measure_reliability(const std::string &file)
+  {
+    const InputParameters                input = read_parameters(file);
+    const ReliabilityAnalysisParameters &p     = input.reliability;
+    p.require_problem(input);
+    const LimitStateExpression g(p.expressions[0], p.variable_names, p.constants);
+    std::vector<double>        x;
+    for (const Distribution &d : p.distributions)
+      x.push_back(d.mean());
+    const unsigned long n   = 2000000;
+    double              sum = 0;
+    const double        t_expression = best_time(3, [&] {
+      for (unsigned long i = 0; i < n; ++i)
+        {
+          x[0] += 1e-12; // a new value each time, as in sampling
+          sum += g(x);
+        }
+    });
+    ReliabilityProblem problem{NatafTransformation(p.distributions, p.correlation),
+                               {[&](const std::vector<double> &v) { return g(v); }},
+                               SystemType::series};
+    SamplingSettings   settings;
+    settings.max_samples = n;
+    SamplingResult mc;
+    const double   t_sampling = best_time(3, [&] { mc = monte_carlo(problem, settings); });
+    std::printf("reliability %s: expression '%s'\n  %.3g evaluations/s of the expression "
+                "alone, %.3g samples/s of crude Monte Carlo (g(T(u)) with the random "
+                "numbers; Pf = %.4g)\n",
+                file.c_str(), p.expressions[0].c_str(), n / t_expression, n / t_sampling,
+                mc.probability);
+    ReliabilityProblem all{NatafTransformation(p.distributions, p.correlation), {}, p.system};
+    std::vector<std::unique_ptr<LimitStateExpression>> parsers;
+    for (const std::string &e : p.expressions)
+      {
+        parsers.push_back(std::make_unique<LimitStateExpression>(e, p.variable_names, p.constants));
+        LimitStateExpression *parser = parsers.back().get();
+        all.limit_states.push_back([parser](const std::vector<double> &v) { return (*parser)(v); });
+      }
+    for (unsigned int k = 0; k < all.limit_states.size(); ++k)
+      {
+        const FormResult f = form(all, k);
+        std::printf("  FORM on %s: beta %.6f, %u iterations, %u gradients, %lu evaluations%s\n",
+                    p.limit_state_names[k].c_str(), f.beta, f.iterations, f.n_gradients,
+                    f.n_evaluations, f.converged ? "" : " (not converged)");
+      }
+    return sum == 12345.678; // keeps `sum` alive
+  }
 } // namespace
 
 namespace
@@ -435,6 +493,8 @@ try
     return measure_distributed(argv[2], MPI_COMM_WORLD);
   if (argc > 2 && std::string(argv[1]) == "--bifurcation")
     return measure_bifurcation(argv[2]);
+  if (argc > 1 && std::string(argv[1]) == "--reliability")
+    return measure_reliability(argc > 2 ? argv[2] : "input/thesis-cantilever-reliability.prm");
   if (argc > 1 && std::string(argv[1]) == "--output")
     return measure_output(argc > 2 ? std::stoi(argv[2]) : 10);
   if (argc > 1 && std::string(argv[1]) == "--modes")

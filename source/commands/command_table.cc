@@ -19,6 +19,7 @@ namespace poundfe
     int bifurcation(const CommandRun &);    // bifurcation.cc
     int site_hazard(const CommandRun &);    // site_hazard.cc
     int separation(const CommandRun &);     // separation.cc
+    int reliability(const CommandRun &);    // reliability.cc
     int print_parameters(const CommandRun &); // print_parameters.cc
     int input_template(const CommandRun &); // template.cc
   } // namespace commands
@@ -72,6 +73,10 @@ namespace poundfe
        "and, with a site hazard, P(pounding in T years) and the gap\n"
        "for a target (Separation/Site hazard)",
        true, true, true, false, commands::separation},
+      {"reliability", "FILE",
+       "failure probability of algebraic limit states (Reliability\n"
+       "section): FORM, SORM, importance sampling, Monte Carlo, subset",
+       true, true, true, false, commands::reliability},
       {"print-parameters", "", "every parameter with its documentation and default",
        false, false, false, false, commands::print_parameters},
       {"template", "KIND",
@@ -137,9 +142,10 @@ namespace poundfe
         << names_of(&Command::handles_interruption_itself)
         << "\nafter the step or realizations under way, with the results so far\n"
            "(status \"interrupted\", exit status 128 + signal); the same command resumes all but\n"
-           "run and subset. Any other command stops at its next file write or time step: no\n"
-           "*.tmp left, summary.json says \"interrupted\". A file that cannot be written (full\n"
-           "disk) exits 1 with summary.json \"failed\" and the reason, when it still fits.\n"
+           "run, subset and reliability. Any other command stops at its next file write or\n"
+           "time step: no *.tmp left, summary.json says \"interrupted\". A file that cannot be\n"
+           "written (full disk) exits 1 with summary.json \"failed\" and the reason, when it\n"
+           "still fits.\n"
            "A second signal kills. Progress shows on a terminal (POUNDFE_PROGRESS=1: always).\n";
     return out.str();
   }

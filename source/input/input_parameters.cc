@@ -222,6 +222,7 @@ namespace poundfe
     subset.declare(prm);
     fragility.declare(prm);
     stationary_pdf.declare(prm);
+    reliability.declare(prm);
     sweep.declare(prm);
     bifurcation.declare(prm);
     site_hazard.declare(prm);
@@ -248,6 +249,7 @@ namespace poundfe
     friction.check(*this);
     monte_carlo.check(*this);
     subset.check(*this, model);
+    reliability.check(*this);
     fragility.check(*this);
     stationary_pdf.check(*this, time_integration.newmark.time_step);
     sweep.check(*this);

@@ -362,17 +362,17 @@ namespace poundfe
   namespace
   {
     /// Quantities with a PDF and CDF: (column, file stem, axis label).
-    struct Distribution
+    struct ResponseDistribution
     {
       unsigned int column;
       std::string  stem, label;
       bool         is_count = false; // whole numbers: bins centred on them
     };
 
-    std::vector<Distribution>
+    std::vector<ResponseDistribution>
     distributions(const RealizationRunner &runner)
     {
-      std::vector<Distribution> d{
+      std::vector<ResponseDistribution> d{
         {runner.column("max_drift_ratio"), "max_drift_ratio", "largest peak drift ratio"},
         {runner.column("max_floor_acceleration"), "max_floor_acceleration",
          "largest peak absolute floor acceleration (m/s^2)"}};
@@ -514,7 +514,7 @@ namespace poundfe
     // PDFs and empirical CDFs.
     std::vector<Plot> plots;
     json.begin_array("distributions");
-    for (const Distribution &d : distributions(runner))
+    for (const ResponseDistribution &d : distributions(runner))
       {
         std::vector<double> values = table.completed_values(d.column);
         const Histogram     h      = d.is_count ? count_histogram(values, input.monte_carlo.histogram_bins) :

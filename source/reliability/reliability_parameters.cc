@@ -1,5 +1,6 @@
 #include <poundfe/reliability/reliability_parameters.h>
 #include <poundfe/base/input_file.h>
+#include <poundfe/input/sweep.h>
 #include <poundfe/model/model_builder.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -64,8 +65,9 @@ namespace poundfe
     prm.add_parameter("Samples per level", samples_per_level, "N. Unit: count.",
                       Patterns::Integer(2));
     prm.add_parameter("Conditional probability", conditional_probability,
-                      "p0: the level thresholds are the (1 - p0) quantiles; p0 N and 1/p0 "
-                      "must be whole numbers. Unit: dimensionless.");
+                      "p0 in (0, 0.5]: the level thresholds are the (1 - p0) quantiles; "
+                      "round(p0 N) seeds grow chains of N/round(p0 N) states (unequal "
+                      "lengths when that is not whole). Unit: dimensionless.");
     prm.add_parameter("Maximum levels", max_levels, "Stop after this many levels. Unit: count.",
                       Patterns::Integer(1, 100));
     prm.add_parameter("Proposal spread", proposal_spread,
@@ -85,15 +87,18 @@ namespace poundfe
                              building_field) + 1;
     input.positive(sp + "Threshold", threshold);
     input.positive(sp + "Proposal spread", proposal_spread);
+    // Any p0 in (0, 0.5] (Au & Beck 2001 use 0.1; Papaioannou et al. 2015
+    // recommend 0.1-0.3): round(p0 N) seeds, chains of N/seeds states with
+    // the remainder spread one each over the first chains (subset.cc).
     const double p0 = conditional_probability;
-    if (!(p0 > 0 && p0 < 1))
-      input.fail(sp + "Conditional probability", "must lie in (0, 1)");
-    const double n_seeds = p0 * samples_per_level, chain = 1 / p0;
-    if (std::abs(n_seeds - std::round(n_seeds)) > 1e-9 * n_seeds ||
-        std::abs(chain - std::round(chain)) > 1e-9 * chain || std::round(n_seeds) < 1)
+    if (!(p0 > 0 && p0 <= 0.5))
+      input.fail(sp + "Conditional probability", "must lie in (0, 0.5]");
+    const double n_seeds = std::round(p0 * samples_per_level);
+    if (n_seeds < 1 || n_seeds >= samples_per_level)
       input.fail(sp + "Conditional probability",
-             "p0 N and 1/p0 must be whole numbers (N = " +
-               std::to_string(samples_per_level) + ")");
+                 "p0 N = " + format_value(p0 * samples_per_level) +
+                   " must round to at least one seed and fewer than N = " +
+                   std::to_string(samples_per_level) + " (more samples per level)");
     if (storey > model.buildings[building - 1].n_storeys &&
              model.buildings[building - 1].type != BuildingType::mesh)
       input.fail(sp + "Storey", "building " + std::to_string(building) + " has " +

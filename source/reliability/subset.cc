@@ -205,7 +205,8 @@ namespace poundfe
         probability *= info.conditional_probability;
         variance += info.coefficient_of_variation * info.coefficient_of_variation;
 
-        // Chains: N states in all, 1/p0 per seed when there are p0 N seeds.
+        // Chains: N states in all, N/n_s per seed, the first N mod n_s one longer
+        // (p0 N or 1/p0 not whole: chains of unequal length).
         LevelSamples next;
         const unsigned int n_chains = seeds.size();
         next.chain_length.assign(n_chains, N / n_chains);

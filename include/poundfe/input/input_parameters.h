@@ -7,6 +7,7 @@
 
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/reliability/reliability_analysis_parameters.h>
 #include <poundfe/reliability/reliability_parameters.h>
 #include <poundfe/hazard/site_hazard_parameters.h>
 #include <poundfe/separation/separation_parameters.h>
@@ -56,6 +57,7 @@ namespace poundfe
     ModalParameters           modal;       // Modal analysis
     MonteCarloParameters      monte_carlo;
     SubsetParameters          subset;
+    ReliabilityAnalysisParameters reliability; // Reliability (algebraic limit states)
     FragilityParameters       fragility;
     StationaryPdfParameters   stationary_pdf;
     SweepParameters           sweep;

@@ -1,8 +1,10 @@
 // Subset Simulation (Au & Beck 2001, Probabilistic Engineering Mechanics
 // 16(4)) of P(Y(xi) > b) with xi independent standard normals.
 //   Level 0: N direct samples. Level i: the threshold b_i is the (1 - p0)
-//   quantile of Y; the p0 N samples above it seed Markov chains of 1/p0
-//   states each (the seed is the first state), grown by the modified
+//   quantile of Y; the n_s = round(p0 N) samples above it seed Markov chains
+//   of N/n_s states each (the seed is the first state; when N/n_s is not
+//   whole, the first N mod n_s chains have one state more: Papaioannou et al.
+//   2015, Probabilistic Engineering Mechanics 41, sec. 3), grown by the modified
 //   Metropolis algorithm: component-wise Gaussian proposal xi_k + s N(0,1),
 //   accepted with min(1, phi(candidate) / phi(xi_k)); the candidate vector is
 //   then kept only if Y > b_i, otherwise the chain repeats its state.

@@ -1,0 +1,59 @@
+// The `reliability` analysis of algebraic limit states (no time history):
+// the problem of the Reliability section (reliability_analysis_parameters.h)
+// solved by the chosen methods, FORM and SORM per limit state, the others on
+// the series/parallel system of all of them (with one limit state, on it).
+// Equations: form.h, sorm.h, sampling.h, system_bounds.h, subset.h.
+#ifndef poundfe_reliability_reliability_analysis_h
+#define poundfe_reliability_reliability_analysis_h
+
+#include <poundfe/reliability/form.h>
+#include <poundfe/reliability/reliability_analysis_parameters.h>
+#include <poundfe/reliability/sorm.h>
+#include <poundfe/reliability/system_bounds.h>
+
+#include <mpi.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct LimitStateReliability
+  {
+    std::string               name, expression;
+    std::optional<FormResult> form;
+    std::optional<SormResult> sorm;
+  };
+
+  /// An estimate of the system's failure probability by one method.
+  struct SystemEstimate
+  {
+    std::string   method;
+    double        probability = 0;
+    double        coefficient_of_variation = 0; // 0 for FORM/SORM (no sampling error)
+    unsigned long n_evaluations = 0;            // of limit-state functions
+    double        wall_time_s   = 0;
+  };
+
+  struct ReliabilityReport
+  {
+    std::vector<LimitStateReliability> limit_states;
+    /// FORM bounds of the system (more than one limit state and FORM run).
+    std::optional<SystemBounds>  bounds;
+    std::vector<SystemEstimate>  estimates;
+    /// Non-empty when a method failed (FORM did not converge): the methods
+    /// after it did not run; what ran is kept.
+    std::string                  failure;
+    bool                         interrupted = false;
+  };
+
+  /// Runs the methods of `parameters` in the order FORM, SORM, importance
+  /// sampling, Monte Carlo, subset (the last over the ranks of `comm`; the
+  /// others run on every rank alike).
+  ReliabilityReport run_reliability_analysis(const ReliabilityAnalysisParameters &parameters,
+                                             MPI_Comm                             comm);
+
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,161 @@
+// The methods of the `reliability` command in turn (reliability_analysis.h).
+#include <poundfe/base/interruption.h>
+#include <poundfe/excitation/stochastic.h>
+#include <poundfe/reliability/limit_state.h>
+#include <poundfe/reliability/reliability_analysis.h>
+#include <poundfe/reliability/sampling.h>
+#include <poundfe/reliability/subset.h>
+
+#include <chrono>
+#include <memory>
+
+namespace poundfe
+{
+  namespace
+  {
+    bool
+    has(const ReliabilityAnalysisParameters &p, const ReliabilityMethod m)
+    {
+      return std::find(p.methods.begin(), p.methods.end(), m) != p.methods.end();
+    }
+
+    double
+    seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+
+    /// FORM (and SORM) of every limit state; false when FORM did not converge.
+    bool
+    run_form(const ReliabilityAnalysisParameters &p, const ReliabilityProblem &problem,
+             ReliabilityReport &report)
+    {
+      FormSettings settings;
+      settings.max_iterations     = p.form_max_iterations;
+      settings.tolerance_g        = p.form_tolerance;
+      settings.tolerance_u        = p.form_tolerance;
+      settings.gradient_step      = p.gradient_step;
+      settings.central_difference = p.central_difference;
+      for (unsigned int k = 0; k < problem.limit_states.size(); ++k)
+        {
+          LimitStateReliability &ls = report.limit_states[k];
+          ls.form                   = form(problem, k, settings);
+          if (!ls.form->converged)
+            {
+              report.failure = "FORM did not converge on limit state '" + ls.name + "' in " +
+                               std::to_string(ls.form->iterations) +
+                               " iterations (Reliability/FORM/Maximum iterations; a limit "
+                               "state without a design point, e.g. never failing, or a "
+                               "gradient that vanishes)";
+              return false;
+            }
+          if (has(p, ReliabilityMethod::sorm))
+            ls.sorm = sorm(problem, k, *ls.form, p.hessian_step);
+        }
+      return true;
+    }
+
+    void
+    add_form_estimates(const ReliabilityAnalysisParameters &p, const ReliabilityProblem &problem,
+                       ReliabilityReport &report)
+    {
+      std::vector<double>              betas;
+      std::vector<std::vector<double>> alphas;
+      unsigned long                    form_evaluations = 0, sorm_evaluations = 0;
+      for (const LimitStateReliability &ls : report.limit_states)
+        {
+          betas.push_back(ls.form->beta);
+          alphas.push_back(ls.form->alpha);
+          form_evaluations += ls.form->n_evaluations;
+          if (ls.sorm)
+            sorm_evaluations += ls.sorm->n_evaluations;
+        }
+      if (betas.size() > 1)
+        report.bounds = system_bounds(problem.system, betas, alphas);
+      else
+        {
+          report.estimates.push_back({"FORM", report.limit_states[0].form->probability, 0,
+                                      form_evaluations, 0});
+          if (has(p, ReliabilityMethod::sorm))
+            {
+              report.estimates.push_back({"SORM Breitung", report.limit_states[0].sorm->breitung,
+                                          0, sorm_evaluations, 0});
+              report.estimates.push_back({"SORM Tvedt", report.limit_states[0].sorm->tvedt, 0,
+                                          sorm_evaluations, 0});
+            }
+        }
+    }
+  } // namespace
+
+  ReliabilityReport
+  run_reliability_analysis(const ReliabilityAnalysisParameters &p, const MPI_Comm comm)
+  {
+    ReliabilityReport report;
+    // one parser per limit state, shared by the methods (run one at a time)
+    std::vector<std::shared_ptr<LimitStateExpression>> parsers;
+    ReliabilityProblem problem{NatafTransformation(p.distributions, p.correlation), {}, p.system};
+    for (std::size_t k = 0; k < p.expressions.size(); ++k)
+      {
+        parsers.push_back(
+          std::make_shared<LimitStateExpression>(p.expressions[k], p.variable_names, p.constants));
+        const std::shared_ptr<LimitStateExpression> g = parsers.back();
+        problem.limit_states.push_back([g](const std::vector<double> &x) { return (*g)(x); });
+        report.limit_states.push_back({p.limit_state_names[k], p.expressions[k], {}, {}});
+      }
+    const bool needs_form = has(p, ReliabilityMethod::form) || has(p, ReliabilityMethod::sorm) ||
+                            has(p, ReliabilityMethod::importance_sampling);
+    if (needs_form)
+      {
+        if (!run_form(p, problem, report))
+          return report;
+        add_form_estimates(p, problem, report);
+      }
+    SamplingSettings sampling;
+    sampling.target_cov = p.target_cov;
+    sampling.seed       = p.seed;
+    const auto add      = [&](const std::string &method, const SamplingResult &r,
+                         const std::chrono::steady_clock::time_point start) {
+      report.estimates.push_back(
+        {method, r.probability, r.coefficient_of_variation, r.n_evaluations, seconds_since(start)});
+      report.interrupted |= r.interrupted;
+    };
+    if (has(p, ReliabilityMethod::importance_sampling) && !report.interrupted)
+      {
+        const auto start     = std::chrono::steady_clock::now();
+        sampling.max_samples = p.importance_samples;
+        std::vector<std::vector<double>> centres;
+        for (const LimitStateReliability &ls : report.limit_states)
+          centres.push_back(ls.form->design_point_u);
+        add("importance sampling", importance_sampling(problem, centres, sampling), start);
+      }
+    if (has(p, ReliabilityMethod::monte_carlo) && !report.interrupted)
+      {
+        const auto start     = std::chrono::steady_clock::now();
+        sampling.max_samples = p.monte_carlo_samples;
+        add("Monte Carlo", monte_carlo(problem, sampling), start);
+      }
+    if (has(p, ReliabilityMethod::subset) && !report.interrupted)
+      {
+        const auto     start = std::chrono::steady_clock::now();
+        SubsetSettings settings;
+        settings.samples_per_level       = p.subset_samples_per_level;
+        settings.conditional_probability = p.subset_conditional_probability;
+        settings.max_levels              = p.subset_max_levels;
+        settings.proposal_spread         = p.subset_proposal_spread;
+        settings.seed                    = p.seed;
+        const StandardSpaceLimitStates G(problem);
+        // Y = -G_system: Subset Simulation estimates P(Y > 0) = P(G_system < 0)
+        const SubsetResult r = subset_simulation(
+          [&](const std::vector<double> &u) { return -G.system_value(u); },
+          problem.transformation.n_variables(), 0.0, settings, comm);
+        report.estimates.push_back({"subset", r.probability, r.coefficient_of_variation,
+                                    r.model_runs * problem.limit_states.size(),
+                                    seconds_since(start)});
+        report.interrupted |= r.interrupted;
+        if (!r.reached_threshold && !r.interrupted)
+          report.failure = "Subset Simulation stopped at Reliability/Subset/Maximum levels "
+                           "before reaching the failure domain";
+      }
+    return report;
+  }
+} // namespace poundfe

@@ -1,0 +1,317 @@
+#include <poundfe/base/choices.h>
+#include <poundfe/reliability/limit_state.h>
+#include <poundfe/reliability/reliability_analysis_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace poundfe
+{
+  namespace
+  {
+    const std::string section = "Reliability/";
+
+    const NameTable<ReliabilityMethod> &
+    method_names()
+    {
+      static const NameTable<ReliabilityMethod> table(
+        {{ReliabilityMethod::form, "FORM"},
+         {ReliabilityMethod::sorm, "SORM"},
+         {ReliabilityMethod::importance_sampling, "importance sampling"},
+         {ReliabilityMethod::monte_carlo, "Monte Carlo"},
+         {ReliabilityMethod::subset, "subset"}});
+      return table;
+    }
+
+    const NameTable<SystemType> &
+    system_names()
+    {
+      static const NameTable<SystemType> table(
+        {{SystemType::series, "series"}, {SystemType::parallel, "parallel"}});
+      return table;
+    }
+
+    /// The non-empty trimmed items of `text` separated by `separator`.
+    std::vector<std::string>
+    items(const std::string &text, const char separator)
+    {
+      std::vector<std::string> result;
+      std::stringstream        in(text);
+      std::string              item;
+      while (std::getline(in, item, separator))
+        if (!trimmed(item).empty())
+          result.push_back(trimmed(item));
+      return result;
+    }
+
+    std::vector<std::string>
+    words(const std::string &text)
+    {
+      std::vector<std::string> result;
+      std::istringstream       in(text);
+      for (std::string w; in >> w;)
+        result.push_back(w);
+      return result;
+    }
+
+    double
+    number(const InputFile &input, const std::string &entry, const std::string &text,
+           const std::string &what)
+    {
+      char        *end   = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+        input.fail(section + entry, what + ": '" + text + "' is not a number");
+      return value;
+    }
+
+    /// The native parameter names of each distribution, in from_native's order.
+    std::vector<std::string>
+    native_keys(const DistributionType type)
+    {
+      switch (type)
+        {
+          case DistributionType::normal:
+            return {"mu", "sigma"};
+          case DistributionType::lognormal:
+            return {"lambda", "zeta"};
+          case DistributionType::uniform:
+            return {"lower", "upper"};
+          case DistributionType::truncated_normal:
+            return {"mu", "sigma", "lower", "upper"};
+          case DistributionType::gumbel:
+            return {"location", "scale"};
+          case DistributionType::weibull:
+            return {"shape", "scale"};
+        }
+      return {};
+    }
+
+    /// One item "NAME DISTRIBUTION KEY VALUE ..." of Random variables.
+    Distribution
+    parse_variable(const InputFile &input, const std::vector<std::string> &w,
+                   const std::string &name)
+    {
+      const std::string entry = "Random variables";
+      if (w.size() < 2)
+        input.fail(section + entry, "'" + name + "' needs a distribution and its parameters");
+      // "truncated normal" is two words
+      const bool        two  = w.size() > 2 && w[1] == "truncated" && w[2] == "normal";
+      const std::string kind = two ? "truncated normal" : w[1];
+      DistributionType  type = DistributionType::normal;
+      try
+        {
+          type = distribution_type(kind);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          input.fail(section + entry, "variable '" + name + "': " + e.what());
+        }
+      std::map<std::string, double> given;
+      for (std::size_t i = two ? 3 : 2; i < w.size(); i += 2)
+        {
+          if (i + 1 >= w.size())
+            input.fail(section + entry, "variable '" + name + "': '" + w[i] + "' has no value");
+          if (!given.emplace(w[i], number(input, entry, w[i + 1], "variable '" + name + "'")).second)
+            input.fail(section + entry, "variable '" + name + "': '" + w[i] + "' given twice");
+        }
+      const std::vector<std::string> keys = native_keys(type);
+      std::string                    native_list;
+      for (const std::string &k : keys)
+        native_list += " " + k;
+      try
+        {
+          if (given.count("mean") && (given.count("sd") || given.count("cov")) && given.size() == 2)
+            {
+              const double mean = given["mean"];
+              const double sd   = given.count("sd") ? given["sd"] : given["cov"] * std::abs(mean);
+              return Distribution::from_moments(type, mean, sd);
+            }
+          std::vector<double> p;
+          for (const std::string &k : keys)
+            if (given.count(k))
+              p.push_back(given[k]);
+          if (p.size() == keys.size() && given.size() == keys.size())
+            return Distribution::from_native(type, p);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          input.fail(section + entry, "variable '" + name + "' (" + kind + "): " + e.what());
+        }
+      input.fail(section + entry,
+                 "variable '" + name + "' (" + kind + ") takes 'mean M sd S', 'mean M cov C'" +
+                   (type == DistributionType::truncated_normal ? " (not for this one)" : "") +
+                   " or its native parameters" + native_list);
+    }
+  } // namespace
+
+  const std::string &
+  reliability_method_name(const ReliabilityMethod method)
+  {
+    return method_names().name(method);
+  }
+
+  void
+  ReliabilityAnalysisParameters::declare(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    prm.enter_subsection("Reliability");
+    prm.add_parameter("Random variables", random_variables_text,
+                      "'NAME DISTRIBUTION KEY VALUE ...' separated by ';'. Distributions: "
+                      "normal, lognormal, uniform, truncated normal, Gumbel, Weibull. Keys: "
+                      "'mean M sd S' or 'mean M cov C' (all but truncated normal), or the "
+                      "native parameters: normal mu sigma; lognormal lambda zeta (of ln X); "
+                      "uniform lower upper; truncated normal mu sigma lower upper (the parent "
+                      "normal's); Gumbel location scale; Weibull shape scale. Unit: those of "
+                      "the variable.");
+    prm.add_parameter("Correlation", correlation_text,
+                      "Correlation matrix of the random variables in their order, rows "
+                      "separated by ';' (empty: independent); symmetric positive definite. "
+                      "Nataf transformation. Unit: dimensionless.");
+    prm.add_parameter("Constants", constants_text,
+                      "'NAME VALUE' separated by ';': named numbers for the expressions. "
+                      "Unit: those of the constant.");
+    prm.add_parameter("Limit states", limit_states_text,
+                      "'NAME: EXPRESSION' separated by ';'; failure when the expression is "
+                      "<= 0. muParser syntax (+ - * / ^, sqrt, exp, ln, log10, abs, min, max, "
+                      "sin, ...) over the random variables and constants. Unit: that of the "
+                      "expression.");
+    add_choice(prm, "System", system,
+               "How several limit states combine: series (failure when any fails) or "
+               "parallel (when all fail). Unit: -.",
+               system_names());
+    prm.add_parameter("Methods", methods_text,
+                      "Comma-separated: FORM, SORM (needs FORM's design point), importance "
+                      "sampling (around the design points), Monte Carlo, subset. Unit: -.");
+    prm.add_parameter("Seed", seed, "Seed of the random streams of the sampling methods. "
+                      "Unit: -.", Integer(0));
+    prm.enter_subsection("FORM");
+    prm.add_parameter("Maximum iterations", form_max_iterations,
+                      "HL-RF steps before FORM gives up (exit 2). Unit: count.", Integer(1));
+    prm.add_parameter("Tolerance", form_tolerance,
+                      "e1 = e2: |G|/|G(u0)| and the distance of u from the line of alpha. "
+                      "Unit: dimensionless (standard deviations for e2).", Double(1e-14, 0.1));
+    prm.add_parameter("Gradient step", gradient_step,
+                      "Finite-difference step in the standard normal space. Unit: standard "
+                      "deviations.", Double(1e-10, 0.5));
+    prm.add_parameter("Central differences", central_difference,
+                      "Central (2n evaluations) rather than forward (n) differences for the "
+                      "gradient. Unit: -.");
+    prm.add_parameter("Hessian step", hessian_step,
+                      "SORM: finite-difference step of the Hessian at the design point. Unit: "
+                      "standard deviations.", Double(1e-8, 0.5));
+    prm.leave_subsection();
+    prm.enter_subsection("Sampling");
+    prm.add_parameter("Monte Carlo samples", monte_carlo_samples,
+                      "Largest number of crude Monte Carlo samples. Unit: count.", Integer(1));
+    prm.add_parameter("Importance samples", importance_samples,
+                      "Largest number of importance samples. Unit: count.", Integer(1));
+    prm.add_parameter("Target COV", target_cov,
+                      "Stop sampling once the estimator's COV reaches this (0: all samples). "
+                      "Unit: dimensionless.", Double(0, 1));
+    prm.leave_subsection();
+    prm.enter_subsection("Subset");
+    prm.add_parameter("Samples per level", subset_samples_per_level, "N. Unit: count.",
+                      Integer(2));
+    prm.add_parameter("Conditional probability", subset_conditional_probability,
+                      "p0 in (0, 0.5]. Unit: dimensionless.", Double(0, 0.5));
+    prm.add_parameter("Maximum levels", subset_max_levels, "Unit: count.", Integer(1, 100));
+    prm.add_parameter("Proposal spread", subset_proposal_spread,
+                      "Standard deviation of the modified Metropolis proposal. Unit: "
+                      "dimensionless.", Double(1e-3, 10));
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  void
+  ReliabilityAnalysisParameters::check(const InputFile &input)
+  {
+    variable_names.clear(), distributions.clear(), correlation.clear(), constants.clear();
+    limit_state_names.clear(), expressions.clear(), methods.clear();
+    for (const std::string &item : items(random_variables_text, ';'))
+      {
+        const std::vector<std::string> w = words(item);
+        if (!is_identifier(w[0]))
+          input.fail(section + "Random variables", "'" + w[0] + "' cannot name a variable "
+                                                   "(a letter or '_', then letters, digits, '_')");
+        for (const std::string &n : variable_names)
+          if (n == w[0])
+            input.fail(section + "Random variables", "'" + n + "' is named twice");
+        distributions.push_back(parse_variable(input, w, w[0]));
+        variable_names.push_back(w[0]);
+      }
+    for (const std::string &item : items(constants_text, ';'))
+      {
+        const std::vector<std::string> w = words(item);
+        if (w.size() != 2 || !is_identifier(w[0]))
+          input.fail(section + "Constants", "'" + item + "' is not 'NAME VALUE'");
+        constants.emplace_back(w[0], number(input, "Constants", w[1], "constant " + w[0]));
+      }
+    for (const std::string &row : items(correlation_text, ';'))
+      {
+        correlation.emplace_back();
+        for (const std::string &x : words(row))
+          correlation.back().push_back(number(input, "Correlation", x, "correlation"));
+      }
+    try
+      {
+        NatafTransformation(distributions, correlation);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        input.fail(section + "Correlation", e.what());
+      }
+    for (const std::string &item : items(limit_states_text, ';'))
+      {
+        const std::size_t colon = item.find(':');
+        const std::string name  = colon == std::string::npos ? "" : trimmed(item.substr(0, colon));
+        if (!is_identifier(name))
+          input.fail(section + "Limit states", "'" + item + "' is not 'NAME: EXPRESSION'");
+        const std::string expression = trimmed(item.substr(colon + 1));
+        try
+          {
+            LimitStateExpression(expression, variable_names, constants);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            input.fail(section + "Limit states", "limit state '" + name + "': " + e.what());
+          }
+        limit_state_names.push_back(name);
+        expressions.push_back(expression);
+      }
+    for (const std::string &m : items(methods_text, ','))
+      {
+        try
+          {
+            methods.push_back(method_names().value(m));
+          }
+        catch (const std::invalid_argument &)
+          {
+            input.fail(section + "Methods", "unknown method '" + m +
+                                              "' (FORM, SORM, importance sampling, Monte "
+                                              "Carlo, subset)");
+          }
+      }
+    const double n_seeds = std::round(subset_conditional_probability * subset_samples_per_level);
+    if (n_seeds < 1 || n_seeds >= subset_samples_per_level)
+      input.fail(section + "Subset/Conditional probability",
+                 "p0 N must round to at least one seed and fewer than N = " +
+                   std::to_string(subset_samples_per_level));
+  }
+
+  void
+  ReliabilityAnalysisParameters::require_problem(const InputFile &input) const
+  {
+    if (distributions.empty())
+      input.fail(section + "Random variables", "the reliability command needs at least one");
+    if (expressions.empty())
+      input.fail(section + "Limit states", "the reliability command needs at least one");
+    if (methods.empty())
+      input.fail(section + "Methods", "the reliability command needs at least one");
+  }
+} // namespace poundfe
