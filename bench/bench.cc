@@ -463,6 +463,7 @@ namespace
     "       poundfe-bench --distributed FILE    one model over the MPI ranks (bench/city_block.sh)\n"
     "       poundfe-bench --bifurcation FILE    the values of FILE's Bifurcation section\n"
     "       poundfe-bench --modes [STOREYS...]  dense against sparse eigensolver\n"
+    "       poundfe-bench --reliability [FILE]  limit-state evaluations per second\n"
     "       poundfe-bench --help\n"
     "Run from the repository root (the inputs are named relative to it); Release build.\n";
 } // namespace
@@ -478,7 +479,7 @@ try
     }
   if (argc > 1 && argv[1][0] == '-' &&
       !std::set<std::string>{"--montecarlo", "--distributed", "--bifurcation", "--output",
-                             "--modes"}
+                             "--modes", "--reliability"}
          .count(argv[1]))
     {
       std::cerr << "poundfe-bench: unknown option '" << argv[1] << "'\n" << bench_usage;
