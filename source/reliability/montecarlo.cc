@@ -8,13 +8,9 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
-#include <poundfe/output/drift_limits.h>
-#include <poundfe/output/json_writer.h>
-#include <poundfe/output/plots.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -359,393 +355,76 @@ namespace poundfe
     return table;
   }
 
-  namespace
+  Exceedances
+  count_exceedances(const MonteCarloTable &table, const RealizationRunner &runner,
+                    const std::vector<double> &drift_limits)
   {
-    /// Quantities with a PDF and CDF: (column, file stem, axis label).
-    struct Distribution
-    {
-      unsigned int column;
-      std::string  stem, label;
-      bool         is_count = false; // whole numbers: bins centred on them
-    };
-
-    std::vector<Distribution>
-    distributions(const RealizationRunner &runner)
-    {
-      std::vector<Distribution> d{
-        {runner.column("max_drift_ratio"), "max_drift_ratio", "largest peak drift ratio"},
-        {runner.column("max_floor_acceleration"), "max_floor_acceleration",
-         "largest peak absolute floor acceleration (m/s^2)"}};
-      for (const std::string &name : runner.response_names())
-        if (name.rfind("peak_roof_displacement_", 0) == 0)
-          d.push_back({runner.column(name), name, "peak roof displacement (m)"});
-      if (runner.has_gaps())
-        {
-          d.push_back({runner.column("n_impacts"), "n_impacts", "number of impacts", true});
-          d.push_back({runner.column("peak_contact_force"), "peak_contact_force",
-                       "peak contact force (N)"});
-          d.push_back({runner.column("min_clearance"), "min_clearance",
-                       "minimum clearance (m; negative: penetration)"});
-        }
-      return d;
-    }
-
-    void
-    write_probability(JsonWriter &json, const ProbabilityEstimate &p)
-    {
-      json.value("probability", p.probability)
-        .value("coefficient_of_variation", p.coefficient_of_variation)
-        .value("failures", p.n_failures)
-        .value("realizations", p.n);
-    }
-
-    /// Pounding and drift-limit exceedance counts of a table.
-    struct Exceedances
-    {
-      ProbabilityEstimate              pounding;
-      std::vector<ProbabilityEstimate> drift;
-    };
-
-    Exceedances
-    count_exceedances(const MonteCarloTable &table, const RealizationRunner &runner,
-                      const std::vector<double> &drift_limits)
-    {
-      Exceedances         e;
-      const auto          drift = table.completed_values(runner.column("max_drift_ratio"));
-      const unsigned long n     = drift.size();
-      if (runner.has_gaps())
-        {
-          const auto pounded = table.completed_values(runner.column("pounded"));
-          e.pounding = estimate_probability(std::count(pounded.begin(), pounded.end(), 1.0), n);
-        }
-      for (const double limit : drift_limits)
-        e.drift.push_back(estimate_probability(
-          std::count_if(drift.begin(), drift.end(), [limit](double x) { return x > limit; }), n));
-      return e;
-    }
-
-    std::string
-    limit_name(const double limit)
-    {
-      return "drift_" + rounded(limit, 6);
-    }
-  } // namespace
-
-  int
-  montecarlo_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
-  {
-    const InputParameters     &input   = analysis.input;
-    const unsigned int         rank    = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int         n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
-    // rank 0's own times: the other ranks leave before the output section
-    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-    timer.enter_subsection("set-up");
-    RealizationRunner runner(analysis);
-    if (rank == 0) // an earlier run's realizations stay: it resumes from them
-      prepare_output_directory(directory, {"realizations.csv"});
-    timer.leave_subsection();
-    const unsigned long n = input.monte_carlo.realizations;
-    timer.enter_subsection("realizations");
-    Progress              progress(std::cerr, "realizations", n);
-    const MonteCarloTable table =
-      run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv", comm, "", &progress);
-    progress.finish();
-    timer.leave_subsection();
-    const int status = table.interrupted ? interrupted_exit_status() : 0;
-    if (rank != 0)
-      return status;
-    timer.enter_subsection("statistics and output");
-
-    const unsigned long n_done      = table.realizations.size();
-    const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
-    // the Monte Carlo section's limits, then the Drift limits section's (named)
-    const std::vector<DriftLimit> &named  = input.drift_limits.limits();
-    std::vector<double>            limits = input.monte_carlo.drift_limits;
-    for (const DriftLimit &limit : named)
-      limits.push_back(limit.drift_ratio);
-    const Exceedances   e = count_exceedances(table, runner, limits);
-    JsonWriter          json;
-    begin_summary(json, "montecarlo", input, table.interrupted ? "interrupted" : "completed");
-    json.value("realizations", n)
-      .value("realizations_done", n_done)
-      .value("completed_realizations", n_completed)
-      .value("failed_realizations", n_done - n_completed)
-      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()))
-      .value("random_variables_per_realization", runner.n_variables())
-      .value("ranks", n_ranks)
-      .value("realizations_run_now", table.n_run_now)
-      .value("wall_time_s", table.wall_time)
-      .value("realizations_per_second",
-             table.n_run_now > 0 ? table.n_run_now / table.wall_time : 0.0);
-    json.begin_object("statistics");
-    for (unsigned int c = 0; c < table.columns.size(); ++c)
-      {
-        const SampleStatistics st = describe(table.completed_values(c));
-        json.begin_object(table.columns[c])
-          .value("mean", st.mean)
-          .value("standard_deviation", st.standard_deviation)
-          .value("median", st.median)
-          .value("percentile_16", st.percentile_16)
-          .value("percentile_84", st.percentile_84)
-          .value("min", st.min)
-          .value("max", st.max)
-          .end_object();
-      }
-    json.end_object();
-    json.begin_object("probabilities");
+    Exceedances         e;
+    const auto          drift = table.completed_values(runner.column("max_drift_ratio"));
+    const unsigned long n     = drift.size();
     if (runner.has_gaps())
       {
-        json.begin_object("pounding");
-        write_probability(json, e.pounding);
-        json.end_object();
+        const auto pounded = table.completed_values(runner.column("pounded"));
+        e.pounding = estimate_probability(std::count(pounded.begin(), pounded.end(), 1.0), n);
       }
-    json.begin_array("drift_limit_exceedance");
-    for (std::size_t i = 0; i < e.drift.size(); ++i)
-      {
-        json.begin_object().value("drift_ratio_limit", limits[i]);
-        if (i >= input.monte_carlo.drift_limits.size())
-          json.value("name", named[i - input.monte_carlo.drift_limits.size()].name);
-        write_probability(json, e.drift[i]);
-        json.end_object();
-      }
-    json.end_array().end_object();
-
-    // PDFs and empirical CDFs.
-    std::vector<Plot> plots;
-    json.begin_array("distributions");
-    for (const Distribution &d : distributions(runner))
-      {
-        std::vector<double> values = table.completed_values(d.column);
-        const Histogram     h      = d.is_count ? count_histogram(values, input.monte_carlo.histogram_bins) :
-                                                 histogram(values, input.monte_carlo.histogram_bins);
-        std::string         pdf    = "bin_low,bin_high,bin_center,count,density\n";
-        for (std::size_t i = 0; i < h.counts.size(); ++i)
-          {
-            for (const double x : {h.edges[i], h.edges[i + 1], (h.edges[i] + h.edges[i + 1]) / 2})
-              append_number(pdf, x), pdf += ',';
-            pdf += std::to_string(h.counts[i]) + ",";
-            append_number(pdf, h.density[i]);
-            pdf += '\n';
-          }
-        std::sort(values.begin(), values.end());
-        std::string cdf = "value,probability\n";
-        for (std::size_t i = 0; i < values.size(); ++i)
-          {
-            append_number(cdf, values[i]);
-            cdf += ',';
-            append_number(cdf, (i + 1.0) / values.size());
-            cdf += '\n';
-          }
-        write_file_atomically(directory + "/pdf_" + d.stem + ".csv", pdf);
-        write_file_atomically(directory + "/cdf_" + d.stem + ".csv", cdf);
-        json.begin_object()
-          .value("response", d.stem)
-          .value("pdf", "pdf_" + d.stem + ".csv")
-          .value("cdf", "cdf_" + d.stem + ".csv")
-          .end_object();
-        plots.push_back(Plot{"pdf_" + d.stem + ".png", "PDF (histogram), " + std::to_string(values.size()) + " realizations",
-                             d.label, "probability density",
-                             {{"pdf_" + d.stem + ".csv", "3:5", "histogram", "boxes"}},
-                             false,
-                             true});
-        plots.push_back(Plot{"cdf_" + d.stem + ".png", "empirical CDF", d.label,
-                             "P(X <= x)", {{"cdf_" + d.stem + ".csv", "1:2", "ECDF", "steps"}}});
-      }
-    json.end_array().end_object();
-    if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
-      draw_plots(directory, plots);
-    write_file_atomically(directory + "/summary.json", json.str());
-    timer.leave_subsection();
-
-    if (table.interrupted)
-      pcout << "Monte Carlo interrupted after " << n_done << " of " << n
-            << " realizations: the results are over these; the same command runs the rest\n";
-    pcout << "Monte Carlo: " << n_completed << " of " << n << " realizations completed";
-    if (table.n_run_now > 0)
-      pcout << " (" << table.n_run_now << " run now on " << n_ranks << " rank"
-                << (n_ranks > 1 ? "s" : "") << ", " << rounded(table.n_run_now / table.wall_time)
-                << " realizations/s)";
-    pcout << "\n";
-    if (runner.has_gaps())
-      pcout << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
-                << rounded(e.pounding.coefficient_of_variation) << ")\n";
-    for (std::size_t i = 0; i < e.drift.size(); ++i)
-      pcout << "P(max drift ratio > " << limits[i]
-                << ") = " << rounded(e.drift[i].probability) << " (CoV "
-                << rounded(e.drift[i].coefficient_of_variation) << ")\n";
-    pcout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
-          << (input.output.plots && !table.interrupted ? ", *.png" : "") << ")\n";
-    print_timing(timer);
-    return status;
+    for (const double limit : drift_limits)
+      e.drift.push_back(estimate_probability(
+        std::count_if(drift.begin(), drift.end(), [limit](double x) { return x > limit; }), n));
+    return e;
   }
 
-  int
-  fragility_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
+  FragilityLevels
+  run_fragility_levels(RealizationRunner &runner, const FragilityParameters &parameters,
+                       const std::vector<double> &drift_limits, const double reference_pga,
+                       const std::string &directory, const MPI_Comm comm, Progress &progress)
   {
-    const InputParameters     &input = analysis.input;
-    const unsigned int         rank  = dealii::Utilities::MPI::this_mpi_process(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
-    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-    timer.enter_subsection("set-up");
-    RealizationRunner  runner(analysis);
-    const double       reference_pga = runner.reference_pga("fragility curves");
-    if (rank == 0) // an earlier run's realizations stay: it resumes from them
-      prepare_output_directory(directory, {"realizations.csv"});
-    timer.leave_subsection();
-    const std::vector<double> &all_levels = input.fragility.pga_levels;
-    const std::vector<double> &limits     = input.monte_carlo.drift_limits;
-    const unsigned long        per_level  = input.fragility.realizations_per_level;
-    std::vector<Exceedances>   counts; // of the levels done
-    bool                       interrupted = false;
-    timer.enter_subsection("realizations");
-    Progress progress(std::cerr, "realizations", all_levels.size() * per_level);
-    for (std::size_t j = 0; j < all_levels.size() && !interrupted; ++j)
+    const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
+    const std::vector<double> &levels    = parameters.pga_levels;
+    const unsigned long        per_level = parameters.realizations_per_level;
+    FragilityLevels            result;
+    for (std::size_t j = 0; j < levels.size() && !result.interrupted; ++j)
       {
-        const std::string level_directory = directory + "/pga_" + rounded(all_levels[j], 6) + "g";
+        const std::string level_directory = directory + "/pga_" + rounded(levels[j], 6) + "g";
         if (rank == 0)
           create_directories(level_directory);
         const MonteCarloTable table =
-          run_monte_carlo(runner, per_level, all_levels[j] / reference_pga,
+          run_monte_carlo(runner, per_level, levels[j] / reference_pga,
                           level_directory + "/realizations.csv", comm,
-                          "PGA " + rounded(all_levels[j]) + " g: ", &progress, j * per_level);
-        interrupted = table.interrupted; // the same on every rank
-        if (rank == 0 && !interrupted)
-          counts.push_back(count_exceedances(table, runner, limits));
-      }
-    progress.finish();
-    timer.leave_subsection();
-    const int status = interrupted ? interrupted_exit_status() : 0;
-    if (rank != 0)
-      return status;
-    timer.enter_subsection("fit and output");
-
-    // Interrupted: the points and curves of the levels done.
-    const std::vector<double> levels(all_levels.begin(), all_levels.begin() + counts.size());
-    if (interrupted)
-      pcout << "fragility interrupted after " << levels.size() << " of " << all_levels.size()
-            << " PGA levels: the points and curves are of these; the same command runs the rest\n";
-    JsonWriter json;
-    begin_summary(json, "fragility", input, interrupted ? "interrupted" : "completed");
-    json.value("intensity_measure", "PGA (g)")
-      .value("pga_levels_g", all_levels)
-      .value("completed_levels", levels.size())
-      .value("realizations_per_level", per_level)
-      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
-    if (levels.empty()) // nothing to fit
-      {
-        json.end_object();
-        write_file_atomically(directory + "/summary.json", json.str());
-        return status;
-      }
-
-    // One curve for pounding (if there are gaps) and one per drift limit.
-    std::vector<std::string>                     curve_names;
-    std::vector<std::vector<ProbabilityEstimate>> data;
-    if (runner.has_gaps())
-      {
-        curve_names.push_back("pounding");
-        data.emplace_back();
-        for (const Exceedances &e : counts)
-          data.back().push_back(e.pounding);
-      }
-    for (std::size_t i = 0; i < limits.size(); ++i)
-      {
-        curve_names.push_back(limit_name(limits[i]));
-        data.emplace_back();
-        for (const Exceedances &e : counts)
-          data.back().push_back(e.drift[i]);
-      }
-    std::vector<LognormalFragility> curves;
-    std::string points = "pga_g,realizations";
-    for (const std::string &name : curve_names)
-      points += "," + name + "_failures," + name + "_fraction";
-    points += "\n";
-    for (std::size_t j = 0; j < levels.size(); ++j)
-      {
-        append_number(points, levels[j]);
-        points += "," + std::to_string(data.empty() ? 0 : data[0][j].n);
-        for (const auto &curve : data)
+                          "PGA " + rounded(levels[j]) + " g: ", &progress, j * per_level);
+        result.interrupted = table.interrupted; // the same on every rank
+        if (rank == 0 && !result.interrupted)
           {
-            points += "," + std::to_string(curve[j].n_failures) + ",";
-            append_number(points, curve[j].probability);
+            result.levels.push_back(levels[j]);
+            result.counts.push_back(count_exceedances(table, runner, drift_limits));
           }
-        points += "\n";
       }
-    for (const auto &curve : data)
+    return result;
+  }
+
+  std::vector<FragilityCurve>
+  fit_fragility_curves(const FragilityLevels &levels, const std::vector<double> &drift_limits,
+                       const bool has_gaps)
+  {
+    std::vector<FragilityCurve> curves;
+    if (has_gaps)
+      {
+        curves.push_back({"pounding", {}, {}});
+        for (const Exceedances &e : levels.counts)
+          curves.back().observed.push_back(e.pounding);
+      }
+    for (std::size_t i = 0; i < drift_limits.size(); ++i)
+      {
+        curves.push_back({"drift_" + rounded(drift_limits[i], 6), {}, {}});
+        for (const Exceedances &e : levels.counts)
+          curves.back().observed.push_back(e.drift[i]);
+      }
+    for (FragilityCurve &curve : curves)
       {
         std::vector<unsigned long> failures, trials;
-        for (const ProbabilityEstimate &p : curve)
+        for (const ProbabilityEstimate &p : curve.observed)
           failures.push_back(p.n_failures), trials.push_back(p.n);
-        curves.push_back(fit_lognormal_fragility(levels, failures, trials));
+        curve.fit = fit_lognormal_fragility(levels.levels, failures, trials);
       }
-    std::string fitted = "pga_g";
-    for (const std::string &name : curve_names)
-      fitted += "," + name;
-    fitted += "\n";
-    const double top = 1.5 * *std::max_element(levels.begin(), levels.end());
-    for (unsigned int k = 1; k <= 200; ++k)
-      {
-        const double x = top * k / 200;
-        append_number(fitted, x);
-        for (const LognormalFragility &c : curves)
-          {
-            fitted += ',';
-            if (c.fitted)
-              append_number(fitted, fragility(c, x));
-          }
-        fitted += "\n";
-      }
-    write_file_atomically(directory + "/fragility_points.csv", points);
-    write_file_atomically(directory + "/fragility_curves.csv", fitted);
-
-    json.begin_array("curves");
-    std::ostringstream range[2];
-    range[0].precision(17), range[1].precision(17);
-    range[0] << *std::min_element(levels.begin(), levels.end());
-    range[1] << *std::max_element(levels.begin(), levels.end());
-    const std::string lowest = range[0].str(), highest = range[1].str();
-    Plot plot{"fragility.png", "lognormal fragility (maximum likelihood)", "PGA (g)",
-              "P(exceedance | PGA)", {}};
-    plot.settings = "set xrange [0:" + highest + " * 1.1]\nset yrange [0:1]\n";
-    for (std::size_t i = 0; i < curves.size(); ++i)
-      {
-        const LognormalFragility &c = curves[i];
-        json.begin_object().value("name", curve_names[i]).value("fitted", c.fitted);
-        if (c.fitted)
-          json.value("theta_g", c.theta).value("beta", c.beta).value("log_likelihood", c.log_likelihood);
-        if (!c.note.empty())
-          json.value("note", c.note);
-        std::vector<double> fractions;
-        for (const ProbabilityEstimate &p : data[i])
-          fractions.push_back(p.probability);
-        json.value("observed_fraction", fractions).end_object();
-        // points and fit in one colour; the fit drawn over the PGA levels run
-        const std::string column = std::to_string(3 + 2 * i + 1);
-        const std::string colour = " lc " + std::to_string(i + 1);
-        plot.series.push_back({"fragility_points.csv", "1:" + column, curve_names[i] + " (MC)",
-                               "points pt 7 ps 1.2" + colour});
-        if (c.fitted)
-          plot.series.push_back({"fragility_curves.csv",
-                                 "1:(($1 >= " + lowest + " && $1 <= " + highest + ") ? $" +
-                                   std::to_string(i + 2) + " : 1/0)",
-                                 curve_names[i] + " fit", "lines lw 2" + colour});
-        pcout << curve_names[i] << ": ";
-        if (c.fitted)
-          pcout << "theta = " << rounded(c.theta) << " g, beta = " << rounded(c.beta);
-        else
-          pcout << "not fitted (" << c.note << ")";
-        pcout << "\n";
-      }
-    json.end_array().end_object();
-    if (input.output.plots && !interrupted) // stop soon: the resumed run draws it
-      draw_plots(directory, {plot});
-    write_file_atomically(directory + "/summary.json", json.str());
-    timer.leave_subsection();
-    pcout << "results in " << directory
-          << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
-          << (input.output.plots && !interrupted ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
-    print_timing(timer);
-    return status;
+    return curves;
   }
 } // namespace poundfe
