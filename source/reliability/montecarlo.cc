@@ -29,8 +29,6 @@ namespace poundfe
 {
   namespace
   {
-    constexpr int row_tag = 1, done_tag = 2, stop_tag = 3;
-
     std::string
     header_of(const std::vector<std::string> &names)
     {
@@ -151,74 +149,141 @@ namespace poundfe
     return run_realizations(job, n, file, comm, label, progress, progress_offset);
   }
 
-  MonteCarloTable
-  run_realizations(const RealizationJob &job, const unsigned long n, const std::string &file,
-                   const MPI_Comm comm, const std::string &label, Progress *const progress,
-                   const unsigned long progress_offset)
+  namespace
   {
-    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
-    const auto         start   = std::chrono::steady_clock::now();
-    const std::vector<std::string> &names = job.names;
-    const std::string  header = header_of(names);
-    const std::uint64_t seed  = job.seed;
-    const unsigned int n_responses = names.size();
+    /// The run of one call of run_realizations, in phases: read what an
+    /// earlier run left (resume), run this rank's share, let rank 0 gather
+    /// the workers' rows until every worker is done (finish), then the table.
+    ///   Stopping early (SIGINT or SIGTERM on any rank): no rank starts
+    ///   another realization, and every finished one is written. Rank 0 sends
+    ///   each worker exactly one stop message: when it stops, or else in
+    ///   answer to the worker's done message, which the worker waits for; a
+    ///   worker that stops on its own signal says so in its done message, and
+    ///   rank 0 then stops the others. Rank 0 receives until every worker is done.
+    class RealizationScheduler
+    {
+    public:
+      RealizationScheduler(const RealizationJob &job, const unsigned long n,
+                           const std::string &file, const MPI_Comm comm,
+                           const std::string &label, Progress *const progress,
+                           const unsigned long progress_offset)
+        : job(job)
+        , n(n)
+        , file(file)
+        , comm(comm)
+        , label(label)
+        , progress(progress)
+        , progress_offset(progress_offset)
+        , rank(dealii::Utilities::MPI::this_mpi_process(comm))
+        , n_ranks(dealii::Utilities::MPI::n_mpi_processes(comm))
+        , pcout(std::cout, rank == 0)
+        , header(header_of(job.names))
+        , message(job.names.size() + 2)
+        , stop_sent(n_ranks, 0)
+      {}
 
-    // Rank 0 reads what an earlier run left and decides what is missing.
-    std::map<std::uint64_t, Row> rows;
-    std::vector<unsigned long>   todo;
-    std::string                  error, error_parameter;
-    int                          error_line = 0;
-    if (rank == 0)
-      {
-        try
-          {
-            if (std::filesystem::exists(file))
-              {
-                bool damaged = false;
-                rows         = read_rows(file, header, seed, n_responses, damaged);
-                if (damaged) // keep only the complete rows, atomically
-                  {
-                    std::string text = header + "\n";
-                    for (const auto &[r, row] : rows)
-                      text += format_row(row, seed);
-                    write_file_atomically(file, text);
-                  }
-              }
-            else
-              write_file_atomically(file, header + "\n");
-          }
-        catch (const InputError &e)
-          {
-            error           = e.problem();
-            error_parameter = e.parameter();
-            error_line      = e.line();
-          }
-        for (unsigned long r = 0; r < n; ++r)
-          if (!rows.count(r))
-            todo.push_back(r);
-      }
-    // Every rank learns the verdict and the missing realizations.
-    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
-    if (!error.empty())
-      throw InputError(file, dealii::Utilities::MPI::broadcast(comm, error_line, 0),
-                       dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
-    todo = dealii::Utilities::MPI::broadcast(comm, todo, 0);
-    if (rows.size() > 0 && !todo.empty())
-      pcout << label << "resuming: " << (n - todo.size()) << " of " << n
-                << " realizations are in " << file << "\n";
+      /// Rank 0 reads what an earlier run left and decides what is missing;
+      /// every rank learns the verdict and the missing realizations.
+      void resume();
+      /// This rank's share of the missing realizations (every n_ranks-th).
+      void run_share();
+      /// Workers say they are done; rank 0 gathers rows until all are.
+      void finish();
+      /// The realizations of 0..n-1 done (rank 0; empty elsewhere), with
+      /// the wall time since `start`.
+      MonteCarloTable table(std::chrono::steady_clock::time_point start);
 
-    std::vector<double> responses, message(n_responses + 2);
-    std::unique_ptr<AppendFile> out;
-    if (rank == 0)
-      out = std::make_unique<AppendFile>(file);
-    unsigned long n_done        = n - todo.size();
-    const bool    show_progress = rank == 0 && progress != nullptr && progress->active();
-    if (show_progress)
-      progress->update(progress_offset + n_done);
-    auto store = [&](Row row) {
-      out->append(format_row(row, seed));
+    private:
+      static constexpr int row_tag = 1, done_tag = 2, stop_tag = 3;
+
+      const RealizationJob      &job;
+      const unsigned long        n;
+      const std::string         &file;
+      const MPI_Comm             comm;
+      const std::string         &label;
+      Progress *const            progress;
+      const unsigned long        progress_offset;
+      const unsigned int         rank, n_ranks;
+      dealii::ConditionalOStream pcout;
+      const std::string          header;
+
+      std::map<std::uint64_t, Row> rows; // rank 0
+      std::vector<unsigned long>   todo;
+      std::unique_ptr<AppendFile>  out; // rank 0
+      unsigned long                n_done        = 0;
+      bool                         show_progress = false;
+      std::vector<double>          message;
+
+      bool                     stop = false; // rank 0: no new realization anywhere
+      std::vector<char>        stop_sent;
+      std::vector<MPI_Request> stop_requests;
+      unsigned int             n_finished = 0; // workers done
+      unsigned long            n_run      = 0; // by this rank
+      bool                     released   = false; // a worker: has its stop message
+      std::size_t              next       = 0;     // this rank's next index into todo
+
+      void store(Row row);
+      void send_stop(unsigned int worker);
+      void stop_all();
+      void receive(const MPI_Status &status);
+      /// Whether this rank starts no more realizations.
+      bool stopping();
+    };
+
+    void
+    RealizationScheduler::resume()
+    {
+      std::string error, error_parameter;
+      int         error_line = 0;
+      if (rank == 0)
+        {
+          try
+            {
+              if (std::filesystem::exists(file))
+                {
+                  bool damaged = false;
+                  rows = read_rows(file, header, job.seed, job.names.size(), damaged);
+                  if (damaged) // keep only the complete rows, atomically
+                    {
+                      std::string text = header + "\n";
+                      for (const auto &[r, row] : rows)
+                        text += format_row(row, job.seed);
+                      write_file_atomically(file, text);
+                    }
+                }
+              else
+                write_file_atomically(file, header + "\n");
+            }
+          catch (const InputError &e)
+            {
+              error           = e.problem();
+              error_parameter = e.parameter();
+              error_line      = e.line();
+            }
+          for (unsigned long r = 0; r < n; ++r)
+            if (!rows.count(r))
+              todo.push_back(r);
+        }
+      error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+      if (!error.empty())
+        throw InputError(file, dealii::Utilities::MPI::broadcast(comm, error_line, 0),
+                         dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
+      todo = dealii::Utilities::MPI::broadcast(comm, todo, 0);
+      if (rows.size() > 0 && !todo.empty())
+        pcout << label << "resuming: " << (n - todo.size()) << " of " << n
+              << " realizations are in " << file << "\n";
+      if (rank == 0)
+        out = std::make_unique<AppendFile>(file);
+      n_done        = n - todo.size();
+      show_progress = rank == 0 && progress != nullptr && progress->active();
+      if (show_progress)
+        progress->update(progress_offset + n_done);
+    }
+
+    void
+    RealizationScheduler::store(Row row)
+    {
+      out->append(format_row(row, job.seed));
       rows.emplace(row.realization, std::move(row));
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
@@ -226,31 +291,29 @@ namespace poundfe
         progress->update(progress_offset + n_done);
       else if (n_done % step == 0 || n_done == n)
         pcout << label << n_done << " / " << n << " realizations" << std::endl;
-    };
+    }
 
-    // Stopping early (SIGINT or SIGTERM on any rank): no rank starts another
-    // realization, and every finished one is written. Rank 0 sends each
-    // worker exactly one stop message: when it stops, or else in answer to
-    // the worker's done message, which the worker waits for; a worker that
-    // stops on its own signal says so in its done message, and rank 0 then
-    // stops the others. Rank 0 receives until every worker is done.
-    bool                     stop = false; // rank 0: no new realization anywhere
-    std::vector<char>        stop_sent(n_ranks, 0);
-    std::vector<MPI_Request> stop_requests;
-    auto send_stop = [&](const unsigned int worker) {
+    void
+    RealizationScheduler::send_stop(const unsigned int worker)
+    {
       if (stop_sent[worker])
         return;
       stop_sent[worker] = 1;
       stop_requests.emplace_back();
       MPI_Isend(nullptr, 0, MPI_DOUBLE, worker, stop_tag, comm, &stop_requests.back());
-    };
-    auto stop_all = [&]() {
+    }
+
+    void
+    RealizationScheduler::stop_all()
+    {
       stop = true;
       for (unsigned int worker = 1; worker < n_ranks; ++worker)
         send_stop(worker);
-    };
-    unsigned int n_finished = 0; // workers done
-    auto receive = [&](const MPI_Status &status) {
+    }
+
+    void
+    RealizationScheduler::receive(const MPI_Status &status)
+    {
       MPI_Recv(message.data(), message.size(), MPI_DOUBLE, status.MPI_SOURCE, status.MPI_TAG,
                comm, MPI_STATUS_IGNORE);
       if (status.MPI_TAG == done_tag)
@@ -266,93 +329,117 @@ namespace poundfe
       row.completed   = message[1] != 0;
       row.responses.assign(message.begin() + 2, message.end());
       store(std::move(row));
-    };
+    }
 
-    unsigned long n_run    = 0;
-    bool          released = false; // a worker: has its stop message
-    std::size_t   i        = rank;
-    for (; i < todo.size(); i += n_ranks)
-      {
-        if (rank == 0)
-          {
-            if (interruption_requested() && !stop)
-              stop_all();
-            if (stop)
-              break;
-          }
-        else
-          {
-            int stopped = 0;
-            MPI_Iprobe(0, stop_tag, comm, &stopped, MPI_STATUS_IGNORE);
-            if (stopped)
-              {
-                MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
-                released = true;
-              }
-            if (released || interruption_requested())
-              break;
-          }
-        Row row;
-        row.realization = todo[i];
-        row.completed   = job.run(row.realization, row.responses);
-        ++n_run;
-        if (rank == 0)
-          {
-            store(std::move(row));
-            int        waiting = 0;
-            MPI_Status status;
-            // write what the workers finished meanwhile
-            while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status), waiting)
-              receive(status);
-          }
-        else
-          {
-            message[0] = row.realization;
-            message[1] = row.completed;
-            std::copy(row.responses.begin(), row.responses.end(), message.begin() + 2);
-            MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, row_tag, comm);
-          }
-      }
-    if (rank != 0)
-      {
-        message[0] = i < todo.size();
-        MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, done_tag, comm);
-        if (!released)
-          MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
-      }
-    else
-      {
-        // polled rather than a blocking probe, to see a signal that comes meanwhile
-        while (n_finished + 1 < n_ranks)
-          {
-            if (interruption_requested() && !stop)
-              stop_all();
-            int        waiting = 0;
-            MPI_Status status;
-            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status);
-            if (waiting)
-              receive(status);
-            else
-              std::this_thread::sleep_for(std::chrono::milliseconds(1));
-          }
-        MPI_Waitall(stop_requests.size(), stop_requests.data(), MPI_STATUSES_IGNORE);
-      }
-
-    MonteCarloTable table;
-    table.n_run_now   = dealii::Utilities::MPI::sum(n_run, comm);
-    table.interrupted = dealii::Utilities::MPI::broadcast(comm, rank == 0 && n_done < n, 0);
-    table.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (rank != 0)
-      return table;
-    table.columns = names;
-    for (auto &[r, row] : rows)
-      if (r < n)
+    bool
+    RealizationScheduler::stopping()
+    {
+      if (rank == 0)
         {
-          table.realizations.push_back(r);
-          table.completed.push_back(row.completed);
-          table.responses.push_back(std::move(row.responses));
+          if (interruption_requested() && !stop)
+            stop_all();
+          return stop;
         }
-    return table;
+      int stopped = 0;
+      MPI_Iprobe(0, stop_tag, comm, &stopped, MPI_STATUS_IGNORE);
+      if (stopped)
+        {
+          MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
+          released = true;
+        }
+      return released || interruption_requested();
+    }
+
+    void
+    RealizationScheduler::run_share()
+    {
+      for (next = rank; next < todo.size(); next += n_ranks)
+        {
+          if (stopping())
+            break;
+          Row row;
+          row.realization = todo[next];
+          row.completed   = job.run(row.realization, row.responses);
+          ++n_run;
+          if (rank == 0)
+            {
+              store(std::move(row));
+              int        waiting = 0;
+              MPI_Status status;
+              // write what the workers finished meanwhile
+              while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status), waiting)
+                receive(status);
+            }
+          else
+            {
+              message[0] = row.realization;
+              message[1] = row.completed;
+              std::copy(row.responses.begin(), row.responses.end(), message.begin() + 2);
+              MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, row_tag, comm);
+            }
+        }
+    }
+
+    void
+    RealizationScheduler::finish()
+    {
+      if (rank != 0)
+        {
+          message[0] = next < todo.size();
+          MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, done_tag, comm);
+          if (!released)
+            MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
+          return;
+        }
+      // polled rather than a blocking probe, to see a signal that comes meanwhile
+      while (n_finished + 1 < n_ranks)
+        {
+          if (interruption_requested() && !stop)
+            stop_all();
+          int        waiting = 0;
+          MPI_Status status;
+          MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status);
+          if (waiting)
+            receive(status);
+          else
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+      MPI_Waitall(stop_requests.size(), stop_requests.data(), MPI_STATUSES_IGNORE);
+    }
+
+    MonteCarloTable
+    RealizationScheduler::table(const std::chrono::steady_clock::time_point start)
+    {
+      MonteCarloTable table;
+      table.n_run_now   = dealii::Utilities::MPI::sum(n_run, comm);
+      table.interrupted = dealii::Utilities::MPI::broadcast(comm, rank == 0 && n_done < n, 0);
+      table.wall_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (rank != 0)
+        return table;
+      table.columns = job.names;
+      for (auto &[r, row] : rows)
+        if (r < n)
+          {
+            table.realizations.push_back(r);
+            table.completed.push_back(row.completed);
+            table.responses.push_back(std::move(row.responses));
+          }
+      return table;
+    }
+  } // namespace
+
+  MonteCarloTable
+  run_realizations(const RealizationJob &job, const unsigned long n, const std::string &file,
+                   const MPI_Comm comm, const std::string &label, Progress *const progress,
+                   const unsigned long progress_offset)
+  {
+    const auto           start = std::chrono::steady_clock::now();
+    RealizationScheduler scheduler(job, n, file, comm, label, progress, progress_offset);
+    scheduler.resume();
+    scheduler.run_share();
+    scheduler.finish();
+    return scheduler.table(start);
   }
 
   Exceedances

@@ -29,6 +29,10 @@
 
 using namespace poundfe;
 using poundfe_test::temporary_file;
+// run_pounding_hazard runs over MPI_COMM_WORLD (one fixture per executable:
+// this module's other files have none)
+using poundfe_test::MpiFixture;
+BOOST_GLOBAL_FIXTURE(MpiFixture);
 
 namespace
 {
