@@ -1,12 +1,195 @@
-// `poundfe fragility`: Monte Carlo over PGA levels and lognormal fragility curves.
+// `poundfe fragility`: Monte Carlo at each PGA level (reliability/montecarlo.h)
+// and the lognormal fragility curves fitted to it; rank 0 writes the
+// points, the curves, their plot and summary.json.
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/numbers.h>
+#include <poundfe/base/progress.h>
 #include <poundfe/commands/command.h>
+#include <poundfe/excitation/stochastic.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/output/append_file.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
+#include <poundfe/output/plots.h>
 #include <poundfe/reliability/montecarlo.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <iostream>
+#include <sstream>
 
 namespace poundfe::commands
 {
+  namespace
+  {
+    /// fragility_points.csv: the observed fractions at each level done.
+    void
+    write_points(const std::string &directory, const std::vector<double> &levels,
+                 const std::vector<FragilityCurve> &curves)
+    {
+      std::string points = "pga_g,realizations";
+      for (const FragilityCurve &curve : curves)
+        points += "," + curve.name + "_failures," + curve.name + "_fraction";
+      points += "\n";
+      for (std::size_t j = 0; j < levels.size(); ++j)
+        {
+          append_number(points, levels[j]);
+          points += "," + std::to_string(curves.empty() ? 0 : curves[0].observed[j].n);
+          for (const FragilityCurve &curve : curves)
+            {
+              points += "," + std::to_string(curve.observed[j].n_failures) + ",";
+              append_number(points, curve.observed[j].probability);
+            }
+          points += "\n";
+        }
+      write_file_atomically(directory + "/fragility_points.csv", points);
+    }
+
+    /// fragility_curves.csv: the fits from 0 to 1.5 times the highest level.
+    void
+    write_fitted(const std::string &directory, const std::vector<double> &levels,
+                 const std::vector<FragilityCurve> &curves)
+    {
+      std::string fitted = "pga_g";
+      for (const FragilityCurve &curve : curves)
+        fitted += "," + curve.name;
+      fitted += "\n";
+      const double top = 1.5 * *std::max_element(levels.begin(), levels.end());
+      for (unsigned int k = 1; k <= 200; ++k)
+        {
+          const double x = top * k / 200;
+          append_number(fitted, x);
+          for (const FragilityCurve &curve : curves)
+            {
+              fitted += ',';
+              if (curve.fit.fitted)
+                append_number(fitted, fragility(curve.fit, x));
+            }
+          fitted += "\n";
+        }
+      write_file_atomically(directory + "/fragility_curves.csv", fitted);
+    }
+
+    /// The curves in summary.json and the console, and fragility.png's series.
+    Plot
+    write_curves(JsonWriter &json, const dealii::ConditionalOStream &out,
+                 const std::vector<double> &levels, const std::vector<FragilityCurve> &curves)
+    {
+      json.begin_array("curves");
+      std::ostringstream range[2];
+      range[0].precision(17), range[1].precision(17);
+      range[0] << *std::min_element(levels.begin(), levels.end());
+      range[1] << *std::max_element(levels.begin(), levels.end());
+      const std::string lowest = range[0].str(), highest = range[1].str();
+      Plot plot{"fragility.png", "lognormal fragility (maximum likelihood)", "PGA (g)",
+                "P(exceedance | PGA)", {}};
+      plot.settings = "set xrange [0:" + highest + " * 1.1]\nset yrange [0:1]\n";
+      for (std::size_t i = 0; i < curves.size(); ++i)
+        {
+          const LognormalFragility &c = curves[i].fit;
+          const std::string        &name = curves[i].name;
+          json.begin_object().value("name", name).value("fitted", c.fitted);
+          if (c.fitted)
+            json.value("theta_g", c.theta).value("beta", c.beta).value("log_likelihood", c.log_likelihood);
+          if (!c.note.empty())
+            json.value("note", c.note);
+          std::vector<double> fractions;
+          for (const ProbabilityEstimate &p : curves[i].observed)
+            fractions.push_back(p.probability);
+          json.value("observed_fraction", fractions).end_object();
+          // points and fit in one colour; the fit drawn over the PGA levels run
+          const std::string column = std::to_string(3 + 2 * i + 1);
+          const std::string colour = " lc " + std::to_string(i + 1);
+          plot.series.push_back({"fragility_points.csv", "1:" + column, name + " (MC)",
+                                 "points pt 7 ps 1.2" + colour});
+          if (c.fitted)
+            plot.series.push_back({"fragility_curves.csv",
+                                   "1:(($1 >= " + lowest + " && $1 <= " + highest + ") ? $" +
+                                     std::to_string(i + 2) + " : 1/0)",
+                                   name + " fit", "lines lw 2" + colour});
+          out << name << ": ";
+          if (c.fitted)
+            out << "theta = " << rounded(c.theta) << " g, beta = " << rounded(c.beta);
+          else
+            out << "not fitted (" << c.note << ")";
+          out << "\n";
+        }
+      json.end_array();
+      return plot;
+    }
+  } // namespace
+
   int
   fragility(const CommandRun &run)
   {
-    return fragility_command(prepare_analysis(*run.input), run.directory, run.communicator);
+    const InputParameters     &input     = *run.input;
+    const std::string         &directory = run.directory;
+    const MPI_Comm             comm      = run.communicator;
+    const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+
+    timer.enter_subsection("set-up");
+    const Analysis    analysis = prepare_analysis(input);
+    RealizationRunner runner(analysis);
+    const double      reference_pga = runner.reference_pga("fragility curves");
+    if (rank == 0) // an earlier run's realizations stay: it resumes from them
+      prepare_output_directory(directory, {"realizations.csv"});
+    timer.leave_subsection();
+
+    timer.enter_subsection("realizations");
+    const std::vector<double> &all_levels = input.fragility.pga_levels;
+    const std::vector<double> &limits     = input.monte_carlo.drift_limits;
+    const unsigned long        per_level  = input.fragility.realizations_per_level;
+    Progress progress(std::cerr, "realizations", all_levels.size() * per_level);
+    const FragilityLevels done = run_fragility_levels(runner, input.fragility, limits,
+                                                      reference_pga, directory, comm, progress);
+    progress.finish();
+    timer.leave_subsection();
+    const int status = done.interrupted ? interrupted_exit_status() : 0;
+    if (rank != 0)
+      return status;
+
+    timer.enter_subsection("fit and output");
+    // Interrupted: the points and curves of the levels done.
+    const std::vector<double> &levels = done.levels;
+    if (done.interrupted)
+      pcout << "fragility interrupted after " << levels.size() << " of " << all_levels.size()
+            << " PGA levels: the points and curves are of these; the same command runs the rest\n";
+    JsonWriter json;
+    begin_summary(json, "fragility", input, done.interrupted ? "interrupted" : "completed");
+    json.value("intensity_measure", "PGA (g)")
+      .value("pga_levels_g", all_levels)
+      .value("completed_levels", levels.size())
+      .value("realizations_per_level", per_level)
+      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
+    if (levels.empty()) // nothing to fit
+      {
+        json.end_object();
+        write_file_atomically(directory + "/summary.json", json.str());
+        return status;
+      }
+    // One curve for pounding (if there are gaps) and one per drift limit.
+    const std::vector<FragilityCurve> curves =
+      fit_fragility_curves(done, limits, runner.has_gaps());
+    write_points(directory, levels, curves);
+    write_fitted(directory, levels, curves);
+    const Plot plot = write_curves(json, pcout, levels, curves);
+    json.end_object();
+    if (input.output.plots && !done.interrupted) // stop soon: the resumed run draws it
+      draw_plots(directory, {plot});
+    write_file_atomically(directory + "/summary.json", json.str());
+    timer.leave_subsection();
+
+    pcout << "results in " << directory
+          << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
+          << (input.output.plots && !done.interrupted ? ", fragility.png" : "")
+          << ", pga_*/realizations.csv)\n";
+    print_timing(timer);
+    return status;
   }
 } // namespace poundfe::commands

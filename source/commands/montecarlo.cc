@@ -1,12 +1,265 @@
-// `poundfe montecarlo`: Monte Carlo over the random loading, on the MPI ranks.
+// `poundfe montecarlo`: Monte Carlo over the random loading, on the MPI
+// ranks (reliability/montecarlo.h runs the realizations); rank 0 writes the
+// statistics, the exceedance probabilities and the PDFs and CDFs.
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/numbers.h>
+#include <poundfe/base/progress.h>
 #include <poundfe/commands/command.h>
+#include <poundfe/excitation/stochastic.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/output/append_file.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/drift_limits.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
+#include <poundfe/output/plots.h>
 #include <poundfe/reliability/montecarlo.h>
+#include <poundfe/reliability/statistics.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <iostream>
 
 namespace poundfe::commands
 {
+  namespace
+  {
+    /// Quantities with a PDF and CDF: (column, file stem, axis label).
+    struct ResponseDistribution
+    {
+      unsigned int column;
+      std::string  stem, label;
+      bool         is_count = false; // whole numbers: bins centred on them
+    };
+
+    std::vector<ResponseDistribution>
+    distributions(const RealizationRunner &runner)
+    {
+      std::vector<ResponseDistribution> d{
+        {runner.column("max_drift_ratio"), "max_drift_ratio", "largest peak drift ratio"},
+        {runner.column("max_floor_acceleration"), "max_floor_acceleration",
+         "largest peak absolute floor acceleration (m/s^2)"}};
+      for (const std::string &name : runner.response_names())
+        if (name.rfind("peak_roof_displacement_", 0) == 0)
+          d.push_back({runner.column(name), name, "peak roof displacement (m)"});
+      if (runner.has_gaps())
+        {
+          d.push_back({runner.column("n_impacts"), "n_impacts", "number of impacts", true});
+          d.push_back({runner.column("peak_contact_force"), "peak_contact_force",
+                       "peak contact force (N)"});
+          d.push_back({runner.column("min_clearance"), "min_clearance",
+                       "minimum clearance (m; negative: penetration)"});
+        }
+      return d;
+    }
+
+    void
+    write_probability(JsonWriter &json, const ProbabilityEstimate &p)
+    {
+      json.value("probability", p.probability)
+        .value("coefficient_of_variation", p.coefficient_of_variation)
+        .value("failures", p.n_failures)
+        .value("realizations", p.n);
+    }
+
+    /// The drift limits of the Monte Carlo section, then the Drift limits
+    /// section's (named).
+    std::vector<double>
+    all_drift_limits(const InputParameters &input)
+    {
+      std::vector<double> limits = input.monte_carlo.drift_limits;
+      for (const DriftLimit &limit : input.drift_limits.limits())
+        limits.push_back(limit.drift_ratio);
+      return limits;
+    }
+
+    /// summary.json's run, statistics and probabilities (the object left open).
+    void
+    write_statistics(JsonWriter &json, const InputParameters &input,
+                     const RealizationRunner &runner, const MonteCarloTable &table,
+                     const std::vector<double> &limits, const Exceedances &e,
+                     const unsigned int n_ranks)
+    {
+      const unsigned long n      = input.monte_carlo.realizations;
+      const unsigned long n_done = table.realizations.size();
+      const unsigned long n_completed =
+        std::count(table.completed.begin(), table.completed.end(), true);
+      const std::vector<DriftLimit> &named = input.drift_limits.limits();
+      begin_summary(json, "montecarlo", input, table.interrupted ? "interrupted" : "completed");
+      json.value("realizations", n)
+        .value("realizations_done", n_done)
+        .value("completed_realizations", n_completed)
+        .value("failed_realizations", n_done - n_completed)
+        .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()))
+        .value("random_variables_per_realization", runner.n_variables())
+        .value("ranks", n_ranks)
+        .value("realizations_run_now", table.n_run_now)
+        .value("wall_time_s", table.wall_time)
+        .value("realizations_per_second",
+               table.n_run_now > 0 ? table.n_run_now / table.wall_time : 0.0);
+      json.begin_object("statistics");
+      for (unsigned int c = 0; c < table.columns.size(); ++c)
+        {
+          const SampleStatistics st = describe(table.completed_values(c));
+          json.begin_object(table.columns[c])
+            .value("mean", st.mean)
+            .value("standard_deviation", st.standard_deviation)
+            .value("median", st.median)
+            .value("percentile_16", st.percentile_16)
+            .value("percentile_84", st.percentile_84)
+            .value("min", st.min)
+            .value("max", st.max)
+            .end_object();
+        }
+      json.end_object();
+      json.begin_object("probabilities");
+      if (runner.has_gaps())
+        {
+          json.begin_object("pounding");
+          write_probability(json, e.pounding);
+          json.end_object();
+        }
+      json.begin_array("drift_limit_exceedance");
+      for (std::size_t i = 0; i < e.drift.size(); ++i)
+        {
+          json.begin_object().value("drift_ratio_limit", limits[i]);
+          if (i >= input.monte_carlo.drift_limits.size())
+            json.value("name", named[i - input.monte_carlo.drift_limits.size()].name);
+          write_probability(json, e.drift[i]);
+          json.end_object();
+        }
+      json.end_array().end_object();
+    }
+
+    /// pdf_*.csv and cdf_*.csv of each distribution, their entries in
+    /// summary.json and their plots.
+    std::vector<Plot>
+    write_distributions(JsonWriter &json, const std::string &directory,
+                        const RealizationRunner &runner, const MonteCarloTable &table,
+                        const unsigned int histogram_bins)
+    {
+      std::vector<Plot> plots;
+      json.begin_array("distributions");
+      for (const ResponseDistribution &d : distributions(runner))
+        {
+          std::vector<double> values = table.completed_values(d.column);
+          const Histogram     h      = d.is_count ? count_histogram(values, histogram_bins) :
+                                                   histogram(values, histogram_bins);
+          std::string         pdf    = "bin_low,bin_high,bin_center,count,density\n";
+          for (std::size_t i = 0; i < h.counts.size(); ++i)
+            {
+              for (const double x : {h.edges[i], h.edges[i + 1], (h.edges[i] + h.edges[i + 1]) / 2})
+                append_number(pdf, x), pdf += ',';
+              pdf += std::to_string(h.counts[i]) + ",";
+              append_number(pdf, h.density[i]);
+              pdf += '\n';
+            }
+          std::sort(values.begin(), values.end());
+          std::string cdf = "value,probability\n";
+          for (std::size_t i = 0; i < values.size(); ++i)
+            {
+              append_number(cdf, values[i]);
+              cdf += ',';
+              append_number(cdf, (i + 1.0) / values.size());
+              cdf += '\n';
+            }
+          write_file_atomically(directory + "/pdf_" + d.stem + ".csv", pdf);
+          write_file_atomically(directory + "/cdf_" + d.stem + ".csv", cdf);
+          json.begin_object()
+            .value("response", d.stem)
+            .value("pdf", "pdf_" + d.stem + ".csv")
+            .value("cdf", "cdf_" + d.stem + ".csv")
+            .end_object();
+          plots.push_back(Plot{"pdf_" + d.stem + ".png",
+                               "PDF (histogram), " + std::to_string(values.size()) + " realizations",
+                               d.label, "probability density",
+                               {{"pdf_" + d.stem + ".csv", "3:5", "histogram", "boxes"}},
+                               false,
+                               true});
+          plots.push_back(Plot{"cdf_" + d.stem + ".png", "empirical CDF", d.label,
+                               "P(X <= x)", {{"cdf_" + d.stem + ".csv", "1:2", "ECDF", "steps"}}});
+        }
+      json.end_array();
+      return plots;
+    }
+
+    /// The console lines of rank 0.
+    void
+    report(const dealii::ConditionalOStream &out, const InputParameters &input, const RealizationRunner &runner,
+           const MonteCarloTable &table, const std::vector<double> &limits, const Exceedances &e,
+           const std::string &directory, const unsigned int n_ranks)
+    {
+      const unsigned long n      = input.monte_carlo.realizations;
+      const unsigned long n_completed =
+        std::count(table.completed.begin(), table.completed.end(), true);
+      if (table.interrupted)
+        out << "Monte Carlo interrupted after " << table.realizations.size() << " of " << n
+            << " realizations: the results are over these; the same command runs the rest\n";
+      out << "Monte Carlo: " << n_completed << " of " << n << " realizations completed";
+      if (table.n_run_now > 0)
+        out << " (" << table.n_run_now << " run now on " << n_ranks << " rank"
+            << (n_ranks > 1 ? "s" : "") << ", " << rounded(table.n_run_now / table.wall_time)
+            << " realizations/s)";
+      out << "\n";
+      if (runner.has_gaps())
+        out << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
+            << rounded(e.pounding.coefficient_of_variation) << ")\n";
+      for (std::size_t i = 0; i < e.drift.size(); ++i)
+        out << "P(max drift ratio > " << limits[i] << ") = " << rounded(e.drift[i].probability)
+            << " (CoV " << rounded(e.drift[i].coefficient_of_variation) << ")\n";
+      out << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
+          << (input.output.plots && !table.interrupted ? ", *.png" : "") << ")\n";
+    }
+  } // namespace
+
   int
   montecarlo(const CommandRun &run)
   {
-    return montecarlo_command(prepare_analysis(*run.input), run.directory, run.communicator);
+    const InputParameters     &input     = *run.input;
+    const std::string         &directory = run.directory;
+    const MPI_Comm             comm      = run.communicator;
+    const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int         n_ranks   = dealii::Utilities::MPI::n_mpi_processes(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    // rank 0's own times: the other ranks leave before the output section
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+
+    timer.enter_subsection("set-up");
+    const Analysis    analysis = prepare_analysis(input);
+    RealizationRunner runner(analysis);
+    if (rank == 0) // an earlier run's realizations stay: it resumes from them
+      prepare_output_directory(directory, {"realizations.csv"});
+    timer.leave_subsection();
+
+    timer.enter_subsection("realizations");
+    const unsigned long   n = input.monte_carlo.realizations;
+    Progress              progress(std::cerr, "realizations", n);
+    const MonteCarloTable table =
+      run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv", comm, "", &progress);
+    progress.finish();
+    timer.leave_subsection();
+    const int status = table.interrupted ? interrupted_exit_status() : 0;
+    if (rank != 0)
+      return status;
+
+    timer.enter_subsection("statistics and output");
+    const std::vector<double> limits = all_drift_limits(input);
+    const Exceedances         e      = count_exceedances(table, runner, limits);
+    JsonWriter                json;
+    write_statistics(json, input, runner, table, limits, e, n_ranks);
+    const std::vector<Plot> plots =
+      write_distributions(json, directory, runner, table, input.monte_carlo.histogram_bins);
+    json.end_object();
+    if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
+      draw_plots(directory, plots);
+    write_file_atomically(directory + "/summary.json", json.str());
+    timer.leave_subsection();
+
+    report(pcout, input, runner, table, limits, e, directory, n_ranks);
+    print_timing(timer);
+    return status;
   }
 } // namespace poundfe::commands

@@ -1,12 +1,239 @@
-// `poundfe subset`: Subset Simulation of a small exceedance probability.
+// `poundfe subset`: Subset Simulation (reliability/subset.h) of the
+// probability that a peak response of the random loading exceeds a
+// threshold; rank 0 writes subset_levels.csv, summary.json and the plot.
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/commands/command.h>
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/excitation/stochastic.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
+#include <poundfe/output/plots.h>
 #include <poundfe/reliability/subset.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
 
 namespace poundfe::commands
 {
+  namespace
+  {
+    /// subset_levels.png: P(Y > b_k) at each level's threshold, with bars of
+    /// +-1 CoV (the levels' CoVs combined as sqrt(sum delta_i^2), as for the
+    /// estimate itself (Au & Beck 2001): the correlation between levels is ignored), and the
+    /// target threshold as a vertical line.
+    Plot
+    subset_plot(const SubsetResult &result, const double target, const std::string &label)
+    {
+      std::ostringstream block;
+      block.precision(10);
+      block << "$levels << EOD\nthreshold,probability,low,high\n";
+      double probability = 1, variance = 0;
+      for (const SubsetLevel &L : result.levels)
+        {
+          probability *= L.conditional_probability;
+          variance += L.coefficient_of_variation * L.coefficient_of_variation;
+          const double cov = std::sqrt(variance);
+          block << L.threshold << ',' << probability << ',' << probability * std::max(1 - cov, 1e-3)
+                << ',' << probability * (1 + cov) << '\n';
+        }
+      Plot plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
+                label, "exceedance probability", {{"$levels", "1:2:3:4", "levels (bars: +-1 CoV)",
+                                                   "yerrorlines pt 7"}}, true};
+      plot.data_blocks = block.str() + "EOD\n";
+      std::ostringstream arrow;
+      arrow.precision(10);
+      arrow << "set arrow from " << target << ", graph 0 to " << target
+            << ", graph 1 nohead dt 2 lw 2\nset label 'threshold' at " << target
+            << ", graph 0.95 right offset -0.5, 0\n";
+      plot.settings = arrow.str();
+      return plot;
+    }
+
+    /// The response columns whose largest value is Y, and its unit.
+    std::vector<unsigned int>
+    response_columns(const InputParameters &input, const RealizationRunner &runner,
+                     std::string &unit)
+    {
+      const SubsetParameters   &ss = input.subset;
+      std::vector<unsigned int> columns;
+      if (ss.response == SubsetResponse::peak_drift_ratio)
+        {
+          columns = runner.drift_columns(ss.building);
+          if (ss.storey > 0)
+            columns = {columns.at(ss.storey - 1)};
+        }
+      else if (ss.response == SubsetResponse::peak_roof_displacement)
+        columns = {runner.roof_displacement_column(ss.building)}, unit = " m";
+      else
+        {
+          if (!runner.has_gaps())
+            throw InputError(input.file, input.line_of("Subset simulation/Response"),
+                             "Subset simulation/Response",
+                             "peak contact force needs contact elements (Contact/Law)");
+          columns = {runner.column("peak_contact_force")}, unit = " N";
+        }
+      return columns;
+    }
+
+    SubsetSettings
+    settings_of(const SubsetParameters &ss, const RealizationRunner &runner)
+    {
+      SubsetSettings settings;
+      settings.samples_per_level       = ss.samples_per_level;
+      settings.conditional_probability = ss.conditional_probability;
+      settings.max_levels              = ss.max_levels;
+      settings.proposal_spread         = ss.proposal_spread;
+      settings.seed                    = runner.stochastic_load().seed();
+      return settings;
+    }
+
+    /// subset_levels.csv: each level's threshold and probabilities.
+    void
+    write_levels(const std::string &directory, const SubsetResult &result)
+    {
+      std::string csv = "level,threshold,conditional_probability,exceedance_probability,"
+                        "acceptance_rate,coefficient_of_variation\n";
+      double      cumulative = 1;
+      for (std::size_t i = 0; i < result.levels.size(); ++i)
+        {
+          const SubsetLevel &L = result.levels[i];
+          cumulative *= L.conditional_probability;
+          std::ostringstream row;
+          row.precision(10);
+          row << i << "," << L.threshold << "," << L.conditional_probability << "," << cumulative
+              << "," << L.acceptance_rate << "," << L.coefficient_of_variation << "\n";
+          csv += row.str();
+        }
+      write_file_atomically(directory + "/subset_levels.csv", csv);
+    }
+
+    /// The run's facts besides the result (summary.json).
+    struct SubsetRun
+    {
+      std::string   response_name;
+      unsigned int  n_variables = 0;
+      unsigned long failed_runs = 0;
+      unsigned int  n_ranks     = 1;
+      double        wall_time   = 0; // s
+    };
+
+    void
+    write_summary(const std::string &directory, const InputParameters &input,
+                  const SubsetRun &run, const SubsetResult &result)
+    {
+      const SubsetParameters &ss = input.subset;
+      JsonWriter              json;
+      begin_summary(json, "subset", input, result.interrupted ? "interrupted" : "completed");
+      json.value("response", run.response_name)
+        .value("building", ss.building)
+        .value("storey", ss.storey)
+        .value("threshold", ss.threshold)
+        .value("samples_per_level", ss.samples_per_level)
+        .value("conditional_probability", ss.conditional_probability)
+        .value("random_variables", run.n_variables);
+      if (!result.interrupted) // otherwise there is no estimate at the threshold
+        json.value("failure_probability", result.probability)
+          .value("coefficient_of_variation", result.coefficient_of_variation);
+      json.value("reached_threshold", result.reached_threshold)
+        .value("model_runs", result.model_runs)
+        .value("failed_model_runs", run.failed_runs)
+        .value("ranks", run.n_ranks)
+        .value("wall_time_s", run.wall_time);
+      json.begin_array("levels");
+      for (const SubsetLevel &L : result.levels)
+        json.begin_object()
+          .value("threshold", L.threshold)
+          .value("conditional_probability", L.conditional_probability)
+          .value("acceptance_rate", L.acceptance_rate)
+          .value("coefficient_of_variation", L.coefficient_of_variation)
+          .end_object();
+      json.end_array().end_object();
+      write_file_atomically(directory + "/summary.json", json.str());
+    }
+
+    void
+    report(const dealii::ConditionalOStream &out, const InputParameters &input,
+           const std::string &directory, const SubsetRun &run, const std::string &unit,
+           const SubsetResult &result)
+    {
+      if (result.interrupted)
+        out << "Subset Simulation interrupted after " << result.levels.size()
+            << " levels (no estimate at the threshold; subset_levels.csv has the levels), "
+            << result.model_runs << " model runs";
+      else
+        out << "Subset Simulation: P(" << run.response_name << " > " << input.subset.threshold
+            << unit << ") = " << result.probability << " (CoV "
+            << result.coefficient_of_variation << "), " << result.levels.size() << " levels, "
+            << result.model_runs << " model runs"
+            << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
+      out << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
+          << (input.output.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
+    }
+  } // namespace
+
   int
   subset(const CommandRun &run)
   {
-    return subset_command(prepare_analysis(*run.input), run.directory, run.communicator);
+    const InputParameters     &input     = *run.input;
+    const std::string         &directory = run.directory;
+    const MPI_Comm             comm      = run.communicator;
+    const SubsetParameters    &ss        = input.subset;
+    const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
+    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    // rank 0's own times: the other ranks leave before the output section
+    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+
+    timer.enter_subsection("set-up");
+    const Analysis    analysis = prepare_analysis(input);
+    RealizationRunner runner(analysis);
+    std::string       unit;
+    const std::vector<unsigned int> columns = response_columns(input, runner, unit);
+    if (rank == 0)
+      prepare_output_directory(directory);
+    timer.leave_subsection();
+
+    timer.enter_subsection("levels");
+    SubsetRun           facts{subset_response_names().name(ss.response), runner.n_variables(), 0,
+                    dealii::Utilities::MPI::n_mpi_processes(comm), 0};
+    std::vector<double> responses;
+    const auto          response = [&](const std::vector<double> &xi) {
+      if (!runner.run(xi, responses))
+        ++facts.failed_runs;
+      double y = 0;
+      for (const unsigned int c : columns)
+        y = std::max(y, responses[c]);
+      return y;
+    };
+    const auto         start  = std::chrono::steady_clock::now();
+    const SubsetResult result = subset_simulation(response, runner.n_variables(), ss.threshold,
+                                                  settings_of(ss, runner), comm);
+    facts.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    facts.failed_runs = dealii::Utilities::MPI::sum(facts.failed_runs, comm);
+    timer.leave_subsection();
+    const int status = result.interrupted ? interrupted_exit_status() : 0;
+    if (rank != 0)
+      return status;
+
+    timer.enter_subsection("output");
+    write_levels(directory, result);
+    write_summary(directory, input, facts, result);
+    if (input.output.plots && !result.interrupted) // stop soon
+      draw_plots(directory, {subset_plot(result, ss.threshold, facts.response_name + unit)});
+    timer.leave_subsection();
+
+    report(pcout, input, directory, facts, unit, result);
+    print_timing(timer);
+    return status;
   }
 } // namespace poundfe::commands

@@ -3,15 +3,13 @@
 // doc/theory.md §7.1.
 #include <poundfe/reliability/montecarlo.h>
 #include <poundfe/hazard/pounding_hazard.h>
-#include <poundfe/dynamics/realization.h>
 #include <poundfe/hazard/site_hazard_parameters.h>
 #include <poundfe/reliability/statistics.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
-#include <poundfe/excitation/stochastic.h>
-#include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/excitation/stochastic.h>
 
 // property_tree includes boost/bind.hpp, which asks for this (a note at every build)
 #define BOOST_BIND_GLOBAL_PLACEHOLDERS
@@ -279,12 +277,11 @@ namespace poundfe
   }
 
   PoundingHazard
-  prepare_pounding_hazard(const Analysis &analysis)
+  prepare_pounding_hazard(const PoundingHazardParameters &p, const InputFile &input,
+                          const double reference_pga)
   {
-    const InputParameters          &input = analysis.input;
-    const PoundingHazardParameters &p     = input.separation.hazard;
-    const std::string               s     = "Separation/Site hazard/";
-    PoundingHazard                  result;
+    const std::string s = "Separation/Site hazard/";
+    PoundingHazard    result;
     result.hazard = p.hazard_file.empty() ?
                       power_law_hazard(p.power_law_coefficient, p.power_law_exponent, p.minimum_pga) :
                       read_pga_hazard(input.resolve(p.hazard_file), s + "File");
@@ -295,33 +292,19 @@ namespace poundfe
                                           rounded(result.hazard.lowest_pga) + " g");
         result.hazard.minimum_pga = p.minimum_pga;
       }
-    result.reference_pga = RealizationRunner(analysis).reference_pga("the PGA levels of a site hazard");
+    result.reference_pga = reference_pga;
     result.pga_levels    = p.pga_levels;
     return result;
   }
 
   namespace
   {
-    /// The largest approach over each pair's levels in one realization.
-    void
-    largest_approach_of(const SeparationObserver &observer, std::vector<double> &row)
-    {
-      row.clear();
-      for (const auto &pair : observer.responses())
-        {
-          double largest = -std::numeric_limits<double>::infinity();
-          for (const SeparationObserver::LevelResponse &level : pair)
-            largest = std::max(largest, level.max_approach);
-          row.push_back(largest);
-        }
-    }
-
     /// The demand model of each pair and its gap for the target (rank 0).
     void
-    fit_demand_and_gaps(const std::vector<AdjacentPair> &pairs, const PoundingHazardParameters &p,
-                        PoundingHazard &result)
+    fit_demand_and_gaps(const std::vector<std::string> &pair_names,
+                        const PoundingHazardParameters &p, PoundingHazard &result)
     {
-      for (std::size_t i = 0; i < pairs.size(); ++i)
+      for (std::size_t i = 0; i < pair_names.size(); ++i)
         {
           std::vector<double> pga, demand;
           for (std::size_t k = 0; k < result.pga_levels.size(); ++k)
@@ -333,7 +316,7 @@ namespace poundfe
             }
           catch (const std::invalid_argument &e)
             {
-              throw NumericalError("pair " + pairs[i].name + ": " + e.what());
+              throw NumericalError("pair " + pair_names[i] + ": " + e.what());
             }
           result.gap_for_target.push_back(gap_for_probability_in_years(
             result.hazard, result.demand.back(), p.exposure_years, p.target_probability));
@@ -342,25 +325,21 @@ namespace poundfe
   } // namespace
 
   void
-  run_pounding_hazard(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
-                      const std::string &directory, const MPI_Comm comm, PoundingHazard &result)
+  run_pounding_hazard(const ApproachJob &approach, const unsigned long n,
+                      const PoundingHazardParameters &p, const std::string &directory,
+                      const MPI_Comm comm, PoundingHazard &result)
   {
-    const InputParameters &input = analysis.input;
-    RealizationRunner      runner(analysis);
-    SeparationObserver     observer(analysis.model, pairs);
-    double                 amplitude_factor = 1;
-    RealizationJob         job;
-    for (const AdjacentPair &pair : pairs)
-      job.names.push_back(pair.name + "_largest_approach_m");
-    job.seed = runner.stochastic_load().seed();
+    const std::vector<std::string> &pair_names       = approach.pair_names;
+    double                          amplitude_factor = 1;
+    RealizationJob                  job;
+    for (const std::string &name : pair_names)
+      job.names.push_back(name + "_largest_approach_m");
+    job.seed = approach.seed;
     job.run  = [&](const std::uint64_t r, std::vector<double> &row) {
-      const bool completed = runner.run(r, Observers{&observer}, amplitude_factor);
-      largest_approach_of(observer, row);
-      return completed;
+      return approach.run(r, amplitude_factor, row);
     };
-    const unsigned long n    = input.monte_carlo.realizations;
-    const unsigned int  rank = dealii::Utilities::MPI::this_mpi_process(comm);
-    result.largest_approach.assign(pairs.size(), {});
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+    result.largest_approach.assign(pair_names.size(), {});
     Progress progress(std::cerr, "realizations at the PGA levels", result.pga_levels.size() * n);
     for (std::size_t k = 0; k < result.pga_levels.size() && !result.interrupted; ++k)
       {
@@ -374,230 +353,21 @@ namespace poundfe
                                                        &progress, k * n);
         result.interrupted = table.interrupted; // the same on every rank
         if (rank == 0 && !result.interrupted)
-          for (std::size_t p = 0; p < pairs.size(); ++p)
-            result.largest_approach[p].push_back(table.completed_values(p));
+          for (std::size_t i = 0; i < pair_names.size(); ++i)
+            result.largest_approach[i].push_back(table.completed_values(i));
       }
     progress.finish();
     if (rank != 0 || result.interrupted)
       return;
-    const PoundingHazardParameters &p = input.separation.hazard;
     try
       {
-        fit_demand_and_gaps(pairs, p, result);
+        fit_demand_and_gaps(pair_names, p, result);
       }
     catch (const NumericalError &e)
       {
         result.failure = e.what();
         result.demand.clear();
         result.gap_for_target.clear();
-      }
-  }
-
-  namespace
-  {
-    /// The gaps of pounding_hazard.csv: past every realization, the existing
-    /// gap and the gap for the target.
-    std::vector<double>
-    hazard_gaps(const InputParameters &input, const std::vector<AdjacentPair> &pairs,
-                const PoundingHazard &result)
-    {
-      double top = 0;
-      for (std::size_t i = 0; i < pairs.size(); ++i)
-        {
-          // P_T well below the target too
-          top = std::max({top, pairs[i].existing_gap, 2.5 * result.gap_for_target[i]});
-          for (const std::vector<double> &level : result.largest_approach[i])
-            for (const double d : level)
-              top = std::max(top, d);
-        }
-      return gap_grid(input.separation, top);
-    }
-
-    std::string
-    years_text(const double years)
-    {
-      return rounded(years) + " years";
-    }
-
-    /// pounding_given_pga.csv and a panel per pair: the empirical P(D > g | a_k) and the model's.
-    void
-    write_conditional(const std::string &directory, const InputParameters &input,
-                      const std::vector<AdjacentPair> &pairs, const PoundingHazard &result,
-                      const std::vector<double> &gaps, Plot &plot)
-    {
-      const double confidence = input.separation.confidence_level;
-      std::string  csv        = "gap_m";
-      std::vector<std::vector<std::vector<ExceedancePoint>>> curves(pairs.size());
-      for (std::size_t i = 0; i < pairs.size(); ++i)
-        for (std::size_t k = 0; k < result.pga_levels.size(); ++k)
-          {
-            curves[i].push_back(exceedance_curve(result.largest_approach[i][k], gaps, confidence));
-            const std::string stem = pairs[i].name + "@" + rounded(result.pga_levels[k], 6) + "g_";
-            for (const char *what : {"probability", "lower", "upper", "model"})
-              csv += "," + stem + what;
-          }
-      csv += '\n';
-      for (std::size_t j = 0; j < gaps.size(); ++j)
-        {
-          append_number(csv, gaps[j]);
-          for (std::size_t i = 0; i < pairs.size(); ++i)
-            for (std::size_t k = 0; k < result.pga_levels.size(); ++k)
-              {
-                const ExceedancePoint &e = curves[i][k][j];
-                const LognormalCurve   f = pounding_fragility(result.demand[i], gaps[j]);
-                const double model =
-                  gaps[j] > 0 ? standard_normal_cdf(std::log(result.pga_levels[k] / f.theta) / f.beta) : 1.0;
-                for (const double x : {e.probability, e.lower, e.upper, model})
-                  csv += ',', append_number(csv, x);
-              }
-          csv += '\n';
-        }
-      write_file_atomically(directory + "/pounding_given_pga.csv", csv);
-
-      const std::size_t n_levels = result.pga_levels.size();
-      for (std::size_t i = 0; i < pairs.size(); ++i)
-        {
-          Plot panel{"", "P(pounding | PGA) of " + pairs[i].name + ", " +
-                           std::to_string(result.largest_approach[i][0].size()) +
-                           " realizations per level",
-                     "gap width g (m)", "P(largest relative approach > g | PGA)", {}};
-          for (std::size_t k = 0; k < n_levels; ++k)
-            {
-              const std::size_t column = 2 + 4 * (i * n_levels + k);
-              const std::string colour = " lc " + std::to_string(k + 1);
-              panel.series.push_back({"pounding_given_pga.csv", "1:" + std::to_string(column),
-                                      "Monte Carlo, PGA " + rounded(result.pga_levels[k]) + " g",
-                                      "lines lw 2" + colour});
-              panel.series.push_back({"pounding_given_pga.csv", "1:" + std::to_string(column + 3),
-                                      k == 0 ? "(dashed: lognormal demand model)" : "",
-                                      "lines dt 2" + colour});
-            }
-          panel.settings = "set yrange [0:1]\n";
-          if (i == 0 && plot.file.empty())
-            plot = panel, plot.file = "pounding_hazard.png";
-          else
-            plot.below.push_back(panel);
-        }
-    }
-  } // namespace
-
-  void
-  write_pounding_hazard(const std::string &directory, const InputParameters &input,
-                        const std::vector<AdjacentPair> &pairs, const PoundingHazard &result,
-                        std::vector<Plot> &plots)
-  {
-    const PoundingHazardParameters &p    = input.separation.hazard;
-    const std::vector<double>       gaps = hazard_gaps(input, pairs, result);
-    std::string                     csv  = "gap_m";
-    for (const AdjacentPair &pair : pairs)
-      csv += "," + pair.name + "_annual_rate_per_year," + pair.name + "_probability_in_exposure";
-    csv += '\n';
-    for (const double g : gaps)
-      {
-        append_number(csv, g);
-        for (const PowerLawDemand &demand : result.demand)
-          {
-            const double rate = annual_pounding_rate(result.hazard, demand, g);
-            for (const double x : {rate, probability_in_years(rate, p.exposure_years)})
-              csv += ',', append_number(csv, x);
-          }
-        csv += '\n';
-      }
-    write_file_atomically(directory + "/pounding_hazard.csv", csv);
-
-    Plot plot;
-    write_conditional(directory, input, pairs, result, gaps, plot);
-    const std::string target = rounded(p.target_probability);
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-      {
-        Plot panel{"", "probability of pounding of " + pairs[i].name + " in " +
-                         years_text(p.exposure_years) + " (" + result.hazard.source + ")",
-                   "gap width g (m)", "P(pounding in " + years_text(p.exposure_years) + ")", {}};
-        panel.log_y    = true;
-        panel.settings = "set yrange [1e-4:1]\n";
-        const std::string gap = rounded(result.gap_for_target[i]);
-        panel.series   = {
-          {"pounding_hazard.csv", "1:" + std::to_string(3 + 2 * i), "1 - exp(-T lambda(g))",
-           "lines lw 2 lc rgb 'navy'"},
-          {"pounding_hazard.csv", "1:(" + target + ")", "target " + target,
-           "lines dt 2 lc rgb 'gray40'"},
-          {"pounding_hazard.csv", "(" + gap + "):(10**(-4 + 4 * $0 / " +
-                                    std::to_string(std::max<std::size_t>(1, gaps.size() - 1)) + ".0))",
-           "gap for the target " + gap + " m", "lines dt 3 lw 2 lc rgb 'dark-green'"},
-          {"pounding_hazard.csv", "(" + rounded(pairs[i].existing_gap) + "):(10**(-4 + 4 * $0 / " +
-                                    std::to_string(std::max<std::size_t>(1, gaps.size() - 1)) + ".0))",
-           "existing gap " + rounded(pairs[i].existing_gap) + " m", "lines dt 2 lc rgb 'red'"}};
-        plot.below.push_back(panel);
-      }
-    plots.push_back(plot);
-  }
-
-  void
-  write_pounding_hazard_json(JsonWriter &json, const InputParameters &input,
-                             const std::vector<AdjacentPair> &pairs, const PoundingHazard &result)
-  {
-    const PoundingHazardParameters &p = input.separation.hazard;
-    json.begin_object("site_hazard")
-      .value("hazard", result.hazard.source)
-      .value("minimum_pga_g", result.hazard.minimum_pga)
-      .value("pga_levels_g", result.pga_levels)
-      .value("input_motion_pga_g", result.reference_pga)
-      .value("demand_model", "ln D | a normal: median c a^b, dispersion beta_D (least squares)")
-      .value("exposure_years", p.exposure_years)
-      .value("target_probability", p.target_probability)
-      .value("status", result.interrupted ? "interrupted" : result.failure.empty() ? "completed" : "failed");
-    if (!result.failure.empty())
-      json.value("message", result.failure);
-    json.begin_array("pairs");
-    for (std::size_t i = 0; i < result.demand.size(); ++i)
-      {
-        const double rate = annual_pounding_rate(result.hazard, result.demand[i], pairs[i].existing_gap);
-        json.begin_object()
-          .value("pair", pairs[i].name)
-          .value("realizations_per_level", result.largest_approach[i][0].size())
-          .value("median_at_1g_m", result.demand[i].median_at_1g)
-          .value("exponent_b", result.demand[i].exponent)
-          .value("dispersion_beta_d", result.demand[i].dispersion)
-          .value("annual_rate_at_existing_gap", rate)
-          .value("probability_in_exposure_at_existing_gap",
-                 probability_in_years(rate, p.exposure_years))
-          .value("gap_for_target_probability_m", result.gap_for_target[i])
-          .end_object();
-      }
-    json.end_array().end_object();
-  }
-
-  void
-  report_pounding_hazard(std::ostream &out, const InputParameters &input,
-                         const std::vector<AdjacentPair> &pairs, const PoundingHazard &result)
-  {
-    const PoundingHazardParameters &p = input.separation.hazard;
-    if (result.interrupted)
-      {
-        out << "site hazard: interrupted during the PGA levels; the same command runs the rest\n";
-        return;
-      }
-    if (!result.failure.empty())
-      {
-        out << "site hazard: failed: " << result.failure << "\n";
-        return;
-      }
-    out << "site hazard (" << result.hazard.source << ", PGA > " << rounded(result.hazard.minimum_pga)
-        << " g), Monte Carlo at PGA " ;
-    for (std::size_t k = 0; k < result.pga_levels.size(); ++k)
-      out << (k ? ", " : "") << rounded(result.pga_levels[k]);
-    out << " g:\n";
-    for (std::size_t i = 0; i < result.demand.size(); ++i)
-      {
-        const PowerLawDemand &d    = result.demand[i];
-        const double          rate = annual_pounding_rate(result.hazard, d, pairs[i].existing_gap);
-        out << "  " << pairs[i].name << ": median largest approach " << rounded(d.median_at_1g)
-            << " m a^" << rounded(d.exponent) << " (a in g), beta_D " << rounded(d.dispersion)
-            << "; at the existing gap " << rounded(rate) << " poundings/year, P = "
-            << rounded(probability_in_years(rate, p.exposure_years)) << " in "
-            << years_text(p.exposure_years) << "; gap for P = " << rounded(p.target_probability)
-            << " in " << years_text(p.exposure_years) << ": " << rounded(result.gap_for_target[i])
-            << " m\n";
       }
   }
 } // namespace poundfe

@@ -8,13 +8,9 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
-#include <poundfe/output/drift_limits.h>
-#include <poundfe/output/json_writer.h>
-#include <poundfe/output/plots.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -33,8 +29,6 @@ namespace poundfe
 {
   namespace
   {
-    constexpr int row_tag = 1, done_tag = 2, stop_tag = 3;
-
     std::string
     header_of(const std::vector<std::string> &names)
     {
@@ -155,74 +149,141 @@ namespace poundfe
     return run_realizations(job, n, file, comm, label, progress, progress_offset);
   }
 
-  MonteCarloTable
-  run_realizations(const RealizationJob &job, const unsigned long n, const std::string &file,
-                   const MPI_Comm comm, const std::string &label, Progress *const progress,
-                   const unsigned long progress_offset)
+  namespace
   {
-    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
-    const auto         start   = std::chrono::steady_clock::now();
-    const std::vector<std::string> &names = job.names;
-    const std::string  header = header_of(names);
-    const std::uint64_t seed  = job.seed;
-    const unsigned int n_responses = names.size();
+    /// The run of one call of run_realizations, in phases: read what an
+    /// earlier run left (resume), run this rank's share, let rank 0 gather
+    /// the workers' rows until every worker is done (finish), then the table.
+    ///   Stopping early (SIGINT or SIGTERM on any rank): no rank starts
+    ///   another realization, and every finished one is written. Rank 0 sends
+    ///   each worker exactly one stop message: when it stops, or else in
+    ///   answer to the worker's done message, which the worker waits for; a
+    ///   worker that stops on its own signal says so in its done message, and
+    ///   rank 0 then stops the others. Rank 0 receives until every worker is done.
+    class RealizationScheduler
+    {
+    public:
+      RealizationScheduler(const RealizationJob &job, const unsigned long n,
+                           const std::string &file, const MPI_Comm comm,
+                           const std::string &label, Progress *const progress,
+                           const unsigned long progress_offset)
+        : job(job)
+        , n(n)
+        , file(file)
+        , comm(comm)
+        , label(label)
+        , progress(progress)
+        , progress_offset(progress_offset)
+        , rank(dealii::Utilities::MPI::this_mpi_process(comm))
+        , n_ranks(dealii::Utilities::MPI::n_mpi_processes(comm))
+        , pcout(std::cout, rank == 0)
+        , header(header_of(job.names))
+        , message(job.names.size() + 2)
+        , stop_sent(n_ranks, 0)
+      {}
 
-    // Rank 0 reads what an earlier run left and decides what is missing.
-    std::map<std::uint64_t, Row> rows;
-    std::vector<unsigned long>   todo;
-    std::string                  error, error_parameter;
-    int                          error_line = 0;
-    if (rank == 0)
-      {
-        try
-          {
-            if (std::filesystem::exists(file))
-              {
-                bool damaged = false;
-                rows         = read_rows(file, header, seed, n_responses, damaged);
-                if (damaged) // keep only the complete rows, atomically
-                  {
-                    std::string text = header + "\n";
-                    for (const auto &[r, row] : rows)
-                      text += format_row(row, seed);
-                    write_file_atomically(file, text);
-                  }
-              }
-            else
-              write_file_atomically(file, header + "\n");
-          }
-        catch (const InputError &e)
-          {
-            error           = e.problem();
-            error_parameter = e.parameter();
-            error_line      = e.line();
-          }
-        for (unsigned long r = 0; r < n; ++r)
-          if (!rows.count(r))
-            todo.push_back(r);
-      }
-    // Every rank learns the verdict and the missing realizations.
-    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
-    if (!error.empty())
-      throw InputError(file, dealii::Utilities::MPI::broadcast(comm, error_line, 0),
-                       dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
-    todo = dealii::Utilities::MPI::broadcast(comm, todo, 0);
-    if (rows.size() > 0 && !todo.empty())
-      pcout << label << "resuming: " << (n - todo.size()) << " of " << n
-                << " realizations are in " << file << "\n";
+      /// Rank 0 reads what an earlier run left and decides what is missing;
+      /// every rank learns the verdict and the missing realizations.
+      void resume();
+      /// This rank's share of the missing realizations (every n_ranks-th).
+      void run_share();
+      /// Workers say they are done; rank 0 gathers rows until all are.
+      void finish();
+      /// The realizations of 0..n-1 done (rank 0; empty elsewhere), with
+      /// the wall time since `start`.
+      MonteCarloTable table(std::chrono::steady_clock::time_point start);
 
-    std::vector<double> responses, message(n_responses + 2);
-    std::unique_ptr<AppendFile> out;
-    if (rank == 0)
-      out = std::make_unique<AppendFile>(file);
-    unsigned long n_done        = n - todo.size();
-    const bool    show_progress = rank == 0 && progress != nullptr && progress->active();
-    if (show_progress)
-      progress->update(progress_offset + n_done);
-    auto store = [&](Row row) {
-      out->append(format_row(row, seed));
+    private:
+      static constexpr int row_tag = 1, done_tag = 2, stop_tag = 3;
+
+      const RealizationJob      &job;
+      const unsigned long        n;
+      const std::string         &file;
+      const MPI_Comm             comm;
+      const std::string         &label;
+      Progress *const            progress;
+      const unsigned long        progress_offset;
+      const unsigned int         rank, n_ranks;
+      dealii::ConditionalOStream pcout;
+      const std::string          header;
+
+      std::map<std::uint64_t, Row> rows; // rank 0
+      std::vector<unsigned long>   todo;
+      std::unique_ptr<AppendFile>  out; // rank 0
+      unsigned long                n_done        = 0;
+      bool                         show_progress = false;
+      std::vector<double>          message;
+
+      bool                     stop = false; // rank 0: no new realization anywhere
+      std::vector<char>        stop_sent;
+      std::vector<MPI_Request> stop_requests;
+      unsigned int             n_finished = 0; // workers done
+      unsigned long            n_run      = 0; // by this rank
+      bool                     released   = false; // a worker: has its stop message
+      std::size_t              next       = 0;     // this rank's next index into todo
+
+      void store(Row row);
+      void send_stop(unsigned int worker);
+      void stop_all();
+      void receive(const MPI_Status &status);
+      /// Whether this rank starts no more realizations.
+      bool stopping();
+    };
+
+    void
+    RealizationScheduler::resume()
+    {
+      std::string error, error_parameter;
+      int         error_line = 0;
+      if (rank == 0)
+        {
+          try
+            {
+              if (std::filesystem::exists(file))
+                {
+                  bool damaged = false;
+                  rows = read_rows(file, header, job.seed, job.names.size(), damaged);
+                  if (damaged) // keep only the complete rows, atomically
+                    {
+                      std::string text = header + "\n";
+                      for (const auto &[r, row] : rows)
+                        text += format_row(row, job.seed);
+                      write_file_atomically(file, text);
+                    }
+                }
+              else
+                write_file_atomically(file, header + "\n");
+            }
+          catch (const InputError &e)
+            {
+              error           = e.problem();
+              error_parameter = e.parameter();
+              error_line      = e.line();
+            }
+          for (unsigned long r = 0; r < n; ++r)
+            if (!rows.count(r))
+              todo.push_back(r);
+        }
+      error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+      if (!error.empty())
+        throw InputError(file, dealii::Utilities::MPI::broadcast(comm, error_line, 0),
+                         dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
+      todo = dealii::Utilities::MPI::broadcast(comm, todo, 0);
+      if (rows.size() > 0 && !todo.empty())
+        pcout << label << "resuming: " << (n - todo.size()) << " of " << n
+              << " realizations are in " << file << "\n";
+      if (rank == 0)
+        out = std::make_unique<AppendFile>(file);
+      n_done        = n - todo.size();
+      show_progress = rank == 0 && progress != nullptr && progress->active();
+      if (show_progress)
+        progress->update(progress_offset + n_done);
+    }
+
+    void
+    RealizationScheduler::store(Row row)
+    {
+      out->append(format_row(row, job.seed));
       rows.emplace(row.realization, std::move(row));
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
@@ -230,31 +291,29 @@ namespace poundfe
         progress->update(progress_offset + n_done);
       else if (n_done % step == 0 || n_done == n)
         pcout << label << n_done << " / " << n << " realizations" << std::endl;
-    };
+    }
 
-    // Stopping early (SIGINT or SIGTERM on any rank): no rank starts another
-    // realization, and every finished one is written. Rank 0 sends each
-    // worker exactly one stop message: when it stops, or else in answer to
-    // the worker's done message, which the worker waits for; a worker that
-    // stops on its own signal says so in its done message, and rank 0 then
-    // stops the others. Rank 0 receives until every worker is done.
-    bool                     stop = false; // rank 0: no new realization anywhere
-    std::vector<char>        stop_sent(n_ranks, 0);
-    std::vector<MPI_Request> stop_requests;
-    auto send_stop = [&](const unsigned int worker) {
+    void
+    RealizationScheduler::send_stop(const unsigned int worker)
+    {
       if (stop_sent[worker])
         return;
       stop_sent[worker] = 1;
       stop_requests.emplace_back();
       MPI_Isend(nullptr, 0, MPI_DOUBLE, worker, stop_tag, comm, &stop_requests.back());
-    };
-    auto stop_all = [&]() {
+    }
+
+    void
+    RealizationScheduler::stop_all()
+    {
       stop = true;
       for (unsigned int worker = 1; worker < n_ranks; ++worker)
         send_stop(worker);
-    };
-    unsigned int n_finished = 0; // workers done
-    auto receive = [&](const MPI_Status &status) {
+    }
+
+    void
+    RealizationScheduler::receive(const MPI_Status &status)
+    {
       MPI_Recv(message.data(), message.size(), MPI_DOUBLE, status.MPI_SOURCE, status.MPI_TAG,
                comm, MPI_STATUS_IGNORE);
       if (status.MPI_TAG == done_tag)
@@ -270,482 +329,189 @@ namespace poundfe
       row.completed   = message[1] != 0;
       row.responses.assign(message.begin() + 2, message.end());
       store(std::move(row));
-    };
+    }
 
-    unsigned long n_run    = 0;
-    bool          released = false; // a worker: has its stop message
-    std::size_t   i        = rank;
-    for (; i < todo.size(); i += n_ranks)
-      {
-        if (rank == 0)
-          {
-            if (interruption_requested() && !stop)
-              stop_all();
-            if (stop)
-              break;
-          }
-        else
-          {
-            int stopped = 0;
-            MPI_Iprobe(0, stop_tag, comm, &stopped, MPI_STATUS_IGNORE);
-            if (stopped)
-              {
-                MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
-                released = true;
-              }
-            if (released || interruption_requested())
-              break;
-          }
-        Row row;
-        row.realization = todo[i];
-        row.completed   = job.run(row.realization, row.responses);
-        ++n_run;
-        if (rank == 0)
-          {
-            store(std::move(row));
-            int        waiting = 0;
-            MPI_Status status;
-            // write what the workers finished meanwhile
-            while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status), waiting)
-              receive(status);
-          }
-        else
-          {
-            message[0] = row.realization;
-            message[1] = row.completed;
-            std::copy(row.responses.begin(), row.responses.end(), message.begin() + 2);
-            MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, row_tag, comm);
-          }
-      }
-    if (rank != 0)
-      {
-        message[0] = i < todo.size();
-        MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, done_tag, comm);
-        if (!released)
+    bool
+    RealizationScheduler::stopping()
+    {
+      if (rank == 0)
+        {
+          if (interruption_requested() && !stop)
+            stop_all();
+          return stop;
+        }
+      int stopped = 0;
+      MPI_Iprobe(0, stop_tag, comm, &stopped, MPI_STATUS_IGNORE);
+      if (stopped)
+        {
           MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
-      }
-    else
-      {
-        // polled rather than a blocking probe, to see a signal that comes meanwhile
-        while (n_finished + 1 < n_ranks)
-          {
-            if (interruption_requested() && !stop)
-              stop_all();
-            int        waiting = 0;
-            MPI_Status status;
-            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status);
-            if (waiting)
-              receive(status);
-            else
-              std::this_thread::sleep_for(std::chrono::milliseconds(1));
-          }
-        MPI_Waitall(stop_requests.size(), stop_requests.data(), MPI_STATUSES_IGNORE);
-      }
-
-    MonteCarloTable table;
-    table.n_run_now   = dealii::Utilities::MPI::sum(n_run, comm);
-    table.interrupted = dealii::Utilities::MPI::broadcast(comm, rank == 0 && n_done < n, 0);
-    table.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (rank != 0)
-      return table;
-    table.columns = names;
-    for (auto &[r, row] : rows)
-      if (r < n)
-        {
-          table.realizations.push_back(r);
-          table.completed.push_back(row.completed);
-          table.responses.push_back(std::move(row.responses));
+          released = true;
         }
-    return table;
-  }
-
-  namespace
-  {
-    /// Quantities with a PDF and CDF: (column, file stem, axis label).
-    struct ResponseDistribution
-    {
-      unsigned int column;
-      std::string  stem, label;
-      bool         is_count = false; // whole numbers: bins centred on them
-    };
-
-    std::vector<ResponseDistribution>
-    distributions(const RealizationRunner &runner)
-    {
-      std::vector<ResponseDistribution> d{
-        {runner.column("max_drift_ratio"), "max_drift_ratio", "largest peak drift ratio"},
-        {runner.column("max_floor_acceleration"), "max_floor_acceleration",
-         "largest peak absolute floor acceleration (m/s^2)"}};
-      for (const std::string &name : runner.response_names())
-        if (name.rfind("peak_roof_displacement_", 0) == 0)
-          d.push_back({runner.column(name), name, "peak roof displacement (m)"});
-      if (runner.has_gaps())
-        {
-          d.push_back({runner.column("n_impacts"), "n_impacts", "number of impacts", true});
-          d.push_back({runner.column("peak_contact_force"), "peak_contact_force",
-                       "peak contact force (N)"});
-          d.push_back({runner.column("min_clearance"), "min_clearance",
-                       "minimum clearance (m; negative: penetration)"});
-        }
-      return d;
+      return released || interruption_requested();
     }
 
     void
-    write_probability(JsonWriter &json, const ProbabilityEstimate &p)
+    RealizationScheduler::run_share()
     {
-      json.value("probability", p.probability)
-        .value("coefficient_of_variation", p.coefficient_of_variation)
-        .value("failures", p.n_failures)
-        .value("realizations", p.n);
-    }
-
-    /// Pounding and drift-limit exceedance counts of a table.
-    struct Exceedances
-    {
-      ProbabilityEstimate              pounding;
-      std::vector<ProbabilityEstimate> drift;
-    };
-
-    Exceedances
-    count_exceedances(const MonteCarloTable &table, const RealizationRunner &runner,
-                      const std::vector<double> &drift_limits)
-    {
-      Exceedances         e;
-      const auto          drift = table.completed_values(runner.column("max_drift_ratio"));
-      const unsigned long n     = drift.size();
-      if (runner.has_gaps())
+      for (next = rank; next < todo.size(); next += n_ranks)
         {
-          const auto pounded = table.completed_values(runner.column("pounded"));
-          e.pounding = estimate_probability(std::count(pounded.begin(), pounded.end(), 1.0), n);
+          if (stopping())
+            break;
+          Row row;
+          row.realization = todo[next];
+          row.completed   = job.run(row.realization, row.responses);
+          ++n_run;
+          if (rank == 0)
+            {
+              store(std::move(row));
+              int        waiting = 0;
+              MPI_Status status;
+              // write what the workers finished meanwhile
+              while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status), waiting)
+                receive(status);
+            }
+          else
+            {
+              message[0] = row.realization;
+              message[1] = row.completed;
+              std::copy(row.responses.begin(), row.responses.end(), message.begin() + 2);
+              MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, row_tag, comm);
+            }
         }
-      for (const double limit : drift_limits)
-        e.drift.push_back(estimate_probability(
-          std::count_if(drift.begin(), drift.end(), [limit](double x) { return x > limit; }), n));
-      return e;
     }
 
-    std::string
-    limit_name(const double limit)
+    void
+    RealizationScheduler::finish()
     {
-      return "drift_" + rounded(limit, 6);
+      if (rank != 0)
+        {
+          message[0] = next < todo.size();
+          MPI_Send(message.data(), message.size(), MPI_DOUBLE, 0, done_tag, comm);
+          if (!released)
+            MPI_Recv(nullptr, 0, MPI_DOUBLE, 0, stop_tag, comm, MPI_STATUS_IGNORE);
+          return;
+        }
+      // polled rather than a blocking probe, to see a signal that comes meanwhile
+      while (n_finished + 1 < n_ranks)
+        {
+          if (interruption_requested() && !stop)
+            stop_all();
+          int        waiting = 0;
+          MPI_Status status;
+          MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status);
+          if (waiting)
+            receive(status);
+          else
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+      MPI_Waitall(stop_requests.size(), stop_requests.data(), MPI_STATUSES_IGNORE);
+    }
+
+    MonteCarloTable
+    RealizationScheduler::table(const std::chrono::steady_clock::time_point start)
+    {
+      MonteCarloTable table;
+      table.n_run_now   = dealii::Utilities::MPI::sum(n_run, comm);
+      table.interrupted = dealii::Utilities::MPI::broadcast(comm, rank == 0 && n_done < n, 0);
+      table.wall_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (rank != 0)
+        return table;
+      table.columns = job.names;
+      for (auto &[r, row] : rows)
+        if (r < n)
+          {
+            table.realizations.push_back(r);
+            table.completed.push_back(row.completed);
+            table.responses.push_back(std::move(row.responses));
+          }
+      return table;
     }
   } // namespace
 
-  int
-  montecarlo_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
+  MonteCarloTable
+  run_realizations(const RealizationJob &job, const unsigned long n, const std::string &file,
+                   const MPI_Comm comm, const std::string &label, Progress *const progress,
+                   const unsigned long progress_offset)
   {
-    const InputParameters     &input   = analysis.input;
-    const unsigned int         rank    = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int         n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
-    // rank 0's own times: the other ranks leave before the output section
-    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-    timer.enter_subsection("set-up");
-    RealizationRunner runner(analysis);
-    if (rank == 0) // an earlier run's realizations stay: it resumes from them
-      prepare_output_directory(directory, {"realizations.csv"});
-    timer.leave_subsection();
-    const unsigned long n = input.monte_carlo.realizations;
-    timer.enter_subsection("realizations");
-    Progress              progress(std::cerr, "realizations", n);
-    const MonteCarloTable table =
-      run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv", comm, "", &progress);
-    progress.finish();
-    timer.leave_subsection();
-    const int status = table.interrupted ? interrupted_exit_status() : 0;
-    if (rank != 0)
-      return status;
-    timer.enter_subsection("statistics and output");
-
-    const unsigned long n_done      = table.realizations.size();
-    const unsigned long n_completed = std::count(table.completed.begin(), table.completed.end(), true);
-    // the Monte Carlo section's limits, then the Drift limits section's (named)
-    const std::vector<DriftLimit> &named  = input.drift_limits.limits();
-    std::vector<double>            limits = input.monte_carlo.drift_limits;
-    for (const DriftLimit &limit : named)
-      limits.push_back(limit.drift_ratio);
-    const Exceedances   e = count_exceedances(table, runner, limits);
-    JsonWriter          json;
-    begin_summary(json, "montecarlo", input, table.interrupted ? "interrupted" : "completed");
-    json.value("realizations", n)
-      .value("realizations_done", n_done)
-      .value("completed_realizations", n_completed)
-      .value("failed_realizations", n_done - n_completed)
-      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()))
-      .value("random_variables_per_realization", runner.n_variables())
-      .value("ranks", n_ranks)
-      .value("realizations_run_now", table.n_run_now)
-      .value("wall_time_s", table.wall_time)
-      .value("realizations_per_second",
-             table.n_run_now > 0 ? table.n_run_now / table.wall_time : 0.0);
-    json.begin_object("statistics");
-    for (unsigned int c = 0; c < table.columns.size(); ++c)
-      {
-        const SampleStatistics st = describe(table.completed_values(c));
-        json.begin_object(table.columns[c])
-          .value("mean", st.mean)
-          .value("standard_deviation", st.standard_deviation)
-          .value("median", st.median)
-          .value("percentile_16", st.percentile_16)
-          .value("percentile_84", st.percentile_84)
-          .value("min", st.min)
-          .value("max", st.max)
-          .end_object();
-      }
-    json.end_object();
-    json.begin_object("probabilities");
-    if (runner.has_gaps())
-      {
-        json.begin_object("pounding");
-        write_probability(json, e.pounding);
-        json.end_object();
-      }
-    json.begin_array("drift_limit_exceedance");
-    for (std::size_t i = 0; i < e.drift.size(); ++i)
-      {
-        json.begin_object().value("drift_ratio_limit", limits[i]);
-        if (i >= input.monte_carlo.drift_limits.size())
-          json.value("name", named[i - input.monte_carlo.drift_limits.size()].name);
-        write_probability(json, e.drift[i]);
-        json.end_object();
-      }
-    json.end_array().end_object();
-
-    // PDFs and empirical CDFs.
-    std::vector<Plot> plots;
-    json.begin_array("distributions");
-    for (const ResponseDistribution &d : distributions(runner))
-      {
-        std::vector<double> values = table.completed_values(d.column);
-        const Histogram     h      = d.is_count ? count_histogram(values, input.monte_carlo.histogram_bins) :
-                                                 histogram(values, input.monte_carlo.histogram_bins);
-        std::string         pdf    = "bin_low,bin_high,bin_center,count,density\n";
-        for (std::size_t i = 0; i < h.counts.size(); ++i)
-          {
-            for (const double x : {h.edges[i], h.edges[i + 1], (h.edges[i] + h.edges[i + 1]) / 2})
-              append_number(pdf, x), pdf += ',';
-            pdf += std::to_string(h.counts[i]) + ",";
-            append_number(pdf, h.density[i]);
-            pdf += '\n';
-          }
-        std::sort(values.begin(), values.end());
-        std::string cdf = "value,probability\n";
-        for (std::size_t i = 0; i < values.size(); ++i)
-          {
-            append_number(cdf, values[i]);
-            cdf += ',';
-            append_number(cdf, (i + 1.0) / values.size());
-            cdf += '\n';
-          }
-        write_file_atomically(directory + "/pdf_" + d.stem + ".csv", pdf);
-        write_file_atomically(directory + "/cdf_" + d.stem + ".csv", cdf);
-        json.begin_object()
-          .value("response", d.stem)
-          .value("pdf", "pdf_" + d.stem + ".csv")
-          .value("cdf", "cdf_" + d.stem + ".csv")
-          .end_object();
-        plots.push_back(Plot{"pdf_" + d.stem + ".png", "PDF (histogram), " + std::to_string(values.size()) + " realizations",
-                             d.label, "probability density",
-                             {{"pdf_" + d.stem + ".csv", "3:5", "histogram", "boxes"}},
-                             false,
-                             true});
-        plots.push_back(Plot{"cdf_" + d.stem + ".png", "empirical CDF", d.label,
-                             "P(X <= x)", {{"cdf_" + d.stem + ".csv", "1:2", "ECDF", "steps"}}});
-      }
-    json.end_array().end_object();
-    if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
-      draw_plots(directory, plots);
-    write_file_atomically(directory + "/summary.json", json.str());
-    timer.leave_subsection();
-
-    if (table.interrupted)
-      pcout << "Monte Carlo interrupted after " << n_done << " of " << n
-            << " realizations: the results are over these; the same command runs the rest\n";
-    pcout << "Monte Carlo: " << n_completed << " of " << n << " realizations completed";
-    if (table.n_run_now > 0)
-      pcout << " (" << table.n_run_now << " run now on " << n_ranks << " rank"
-                << (n_ranks > 1 ? "s" : "") << ", " << rounded(table.n_run_now / table.wall_time)
-                << " realizations/s)";
-    pcout << "\n";
-    if (runner.has_gaps())
-      pcout << "P(pounding) = " << rounded(e.pounding.probability) << " (CoV "
-                << rounded(e.pounding.coefficient_of_variation) << ")\n";
-    for (std::size_t i = 0; i < e.drift.size(); ++i)
-      pcout << "P(max drift ratio > " << limits[i]
-                << ") = " << rounded(e.drift[i].probability) << " (CoV "
-                << rounded(e.drift[i].coefficient_of_variation) << ")\n";
-    pcout << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
-          << (input.output.plots && !table.interrupted ? ", *.png" : "") << ")\n";
-    print_timing(timer);
-    return status;
+    const auto           start = std::chrono::steady_clock::now();
+    RealizationScheduler scheduler(job, n, file, comm, label, progress, progress_offset);
+    scheduler.resume();
+    scheduler.run_share();
+    scheduler.finish();
+    return scheduler.table(start);
   }
 
-  int
-  fragility_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
+  Exceedances
+  count_exceedances(const MonteCarloTable &table, const RealizationRunner &runner,
+                    const std::vector<double> &drift_limits)
   {
-    const InputParameters     &input = analysis.input;
-    const unsigned int         rank  = dealii::Utilities::MPI::this_mpi_process(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
-    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-    timer.enter_subsection("set-up");
-    RealizationRunner  runner(analysis);
-    const double       reference_pga = runner.reference_pga("fragility curves");
-    if (rank == 0) // an earlier run's realizations stay: it resumes from them
-      prepare_output_directory(directory, {"realizations.csv"});
-    timer.leave_subsection();
-    const std::vector<double> &all_levels = input.fragility.pga_levels;
-    const std::vector<double> &limits     = input.monte_carlo.drift_limits;
-    const unsigned long        per_level  = input.fragility.realizations_per_level;
-    std::vector<Exceedances>   counts; // of the levels done
-    bool                       interrupted = false;
-    timer.enter_subsection("realizations");
-    Progress progress(std::cerr, "realizations", all_levels.size() * per_level);
-    for (std::size_t j = 0; j < all_levels.size() && !interrupted; ++j)
+    Exceedances         e;
+    const auto          drift = table.completed_values(runner.column("max_drift_ratio"));
+    const unsigned long n     = drift.size();
+    if (runner.has_gaps())
       {
-        const std::string level_directory = directory + "/pga_" + rounded(all_levels[j], 6) + "g";
+        const auto pounded = table.completed_values(runner.column("pounded"));
+        e.pounding = estimate_probability(std::count(pounded.begin(), pounded.end(), 1.0), n);
+      }
+    for (const double limit : drift_limits)
+      e.drift.push_back(estimate_probability(
+        std::count_if(drift.begin(), drift.end(), [limit](double x) { return x > limit; }), n));
+    return e;
+  }
+
+  FragilityLevels
+  run_fragility_levels(RealizationRunner &runner, const FragilityParameters &parameters,
+                       const std::vector<double> &drift_limits, const double reference_pga,
+                       const std::string &directory, const MPI_Comm comm, Progress &progress)
+  {
+    const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
+    const std::vector<double> &levels    = parameters.pga_levels;
+    const unsigned long        per_level = parameters.realizations_per_level;
+    FragilityLevels            result;
+    for (std::size_t j = 0; j < levels.size() && !result.interrupted; ++j)
+      {
+        const std::string level_directory = directory + "/pga_" + rounded(levels[j], 6) + "g";
         if (rank == 0)
           create_directories(level_directory);
         const MonteCarloTable table =
-          run_monte_carlo(runner, per_level, all_levels[j] / reference_pga,
+          run_monte_carlo(runner, per_level, levels[j] / reference_pga,
                           level_directory + "/realizations.csv", comm,
-                          "PGA " + rounded(all_levels[j]) + " g: ", &progress, j * per_level);
-        interrupted = table.interrupted; // the same on every rank
-        if (rank == 0 && !interrupted)
-          counts.push_back(count_exceedances(table, runner, limits));
-      }
-    progress.finish();
-    timer.leave_subsection();
-    const int status = interrupted ? interrupted_exit_status() : 0;
-    if (rank != 0)
-      return status;
-    timer.enter_subsection("fit and output");
-
-    // Interrupted: the points and curves of the levels done.
-    const std::vector<double> levels(all_levels.begin(), all_levels.begin() + counts.size());
-    if (interrupted)
-      pcout << "fragility interrupted after " << levels.size() << " of " << all_levels.size()
-            << " PGA levels: the points and curves are of these; the same command runs the rest\n";
-    JsonWriter json;
-    begin_summary(json, "fragility", input, interrupted ? "interrupted" : "completed");
-    json.value("intensity_measure", "PGA (g)")
-      .value("pga_levels_g", all_levels)
-      .value("completed_levels", levels.size())
-      .value("realizations_per_level", per_level)
-      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
-    if (levels.empty()) // nothing to fit
-      {
-        json.end_object();
-        write_file_atomically(directory + "/summary.json", json.str());
-        return status;
-      }
-
-    // One curve for pounding (if there are gaps) and one per drift limit.
-    std::vector<std::string>                     curve_names;
-    std::vector<std::vector<ProbabilityEstimate>> data;
-    if (runner.has_gaps())
-      {
-        curve_names.push_back("pounding");
-        data.emplace_back();
-        for (const Exceedances &e : counts)
-          data.back().push_back(e.pounding);
-      }
-    for (std::size_t i = 0; i < limits.size(); ++i)
-      {
-        curve_names.push_back(limit_name(limits[i]));
-        data.emplace_back();
-        for (const Exceedances &e : counts)
-          data.back().push_back(e.drift[i]);
-      }
-    std::vector<LognormalFragility> curves;
-    std::string points = "pga_g,realizations";
-    for (const std::string &name : curve_names)
-      points += "," + name + "_failures," + name + "_fraction";
-    points += "\n";
-    for (std::size_t j = 0; j < levels.size(); ++j)
-      {
-        append_number(points, levels[j]);
-        points += "," + std::to_string(data.empty() ? 0 : data[0][j].n);
-        for (const auto &curve : data)
+                          "PGA " + rounded(levels[j]) + " g: ", &progress, j * per_level);
+        result.interrupted = table.interrupted; // the same on every rank
+        if (rank == 0 && !result.interrupted)
           {
-            points += "," + std::to_string(curve[j].n_failures) + ",";
-            append_number(points, curve[j].probability);
+            result.levels.push_back(levels[j]);
+            result.counts.push_back(count_exceedances(table, runner, drift_limits));
           }
-        points += "\n";
       }
-    for (const auto &curve : data)
+    return result;
+  }
+
+  std::vector<FragilityCurve>
+  fit_fragility_curves(const FragilityLevels &levels, const std::vector<double> &drift_limits,
+                       const bool has_gaps)
+  {
+    std::vector<FragilityCurve> curves;
+    if (has_gaps)
+      {
+        curves.push_back({"pounding", {}, {}});
+        for (const Exceedances &e : levels.counts)
+          curves.back().observed.push_back(e.pounding);
+      }
+    for (std::size_t i = 0; i < drift_limits.size(); ++i)
+      {
+        curves.push_back({"drift_" + rounded(drift_limits[i], 6), {}, {}});
+        for (const Exceedances &e : levels.counts)
+          curves.back().observed.push_back(e.drift[i]);
+      }
+    for (FragilityCurve &curve : curves)
       {
         std::vector<unsigned long> failures, trials;
-        for (const ProbabilityEstimate &p : curve)
+        for (const ProbabilityEstimate &p : curve.observed)
           failures.push_back(p.n_failures), trials.push_back(p.n);
-        curves.push_back(fit_lognormal_fragility(levels, failures, trials));
+        curve.fit = fit_lognormal_fragility(levels.levels, failures, trials);
       }
-    std::string fitted = "pga_g";
-    for (const std::string &name : curve_names)
-      fitted += "," + name;
-    fitted += "\n";
-    const double top = 1.5 * *std::max_element(levels.begin(), levels.end());
-    for (unsigned int k = 1; k <= 200; ++k)
-      {
-        const double x = top * k / 200;
-        append_number(fitted, x);
-        for (const LognormalFragility &c : curves)
-          {
-            fitted += ',';
-            if (c.fitted)
-              append_number(fitted, fragility(c, x));
-          }
-        fitted += "\n";
-      }
-    write_file_atomically(directory + "/fragility_points.csv", points);
-    write_file_atomically(directory + "/fragility_curves.csv", fitted);
-
-    json.begin_array("curves");
-    std::ostringstream range[2];
-    range[0].precision(17), range[1].precision(17);
-    range[0] << *std::min_element(levels.begin(), levels.end());
-    range[1] << *std::max_element(levels.begin(), levels.end());
-    const std::string lowest = range[0].str(), highest = range[1].str();
-    Plot plot{"fragility.png", "lognormal fragility (maximum likelihood)", "PGA (g)",
-              "P(exceedance | PGA)", {}};
-    plot.settings = "set xrange [0:" + highest + " * 1.1]\nset yrange [0:1]\n";
-    for (std::size_t i = 0; i < curves.size(); ++i)
-      {
-        const LognormalFragility &c = curves[i];
-        json.begin_object().value("name", curve_names[i]).value("fitted", c.fitted);
-        if (c.fitted)
-          json.value("theta_g", c.theta).value("beta", c.beta).value("log_likelihood", c.log_likelihood);
-        if (!c.note.empty())
-          json.value("note", c.note);
-        std::vector<double> fractions;
-        for (const ProbabilityEstimate &p : data[i])
-          fractions.push_back(p.probability);
-        json.value("observed_fraction", fractions).end_object();
-        // points and fit in one colour; the fit drawn over the PGA levels run
-        const std::string column = std::to_string(3 + 2 * i + 1);
-        const std::string colour = " lc " + std::to_string(i + 1);
-        plot.series.push_back({"fragility_points.csv", "1:" + column, curve_names[i] + " (MC)",
-                               "points pt 7 ps 1.2" + colour});
-        if (c.fitted)
-          plot.series.push_back({"fragility_curves.csv",
-                                 "1:(($1 >= " + lowest + " && $1 <= " + highest + ") ? $" +
-                                   std::to_string(i + 2) + " : 1/0)",
-                                 curve_names[i] + " fit", "lines lw 2" + colour});
-        pcout << curve_names[i] << ": ";
-        if (c.fitted)
-          pcout << "theta = " << rounded(c.theta) << " g, beta = " << rounded(c.beta);
-        else
-          pcout << "not fitted (" << c.note << ")";
-        pcout << "\n";
-      }
-    json.end_array().end_object();
-    if (input.output.plots && !interrupted) // stop soon: the resumed run draws it
-      draw_plots(directory, {plot});
-    write_file_atomically(directory + "/summary.json", json.str());
-    timer.leave_subsection();
-    pcout << "results in " << directory
-          << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
-          << (input.output.plots && !interrupted ? ", fragility.png" : "") << ", pga_*/realizations.csv)\n";
-    print_timing(timer);
-    return status;
+    return curves;
   }
 } // namespace poundfe

@@ -2,25 +2,16 @@
 // include/poundfe/reliability/stationary_pdf.h, estimators in density.h).
 //   Amplitude: a = sqrt(x^2 + v^2 / omega^2) (the energy-like envelope of a
 //   linear oscillator of natural frequency omega).
-#include <poundfe/reliability/density.h>
-#include <poundfe/reliability/montecarlo.h>
 #include <poundfe/reliability/stationary_pdf.h>
-#include <poundfe/input/sweep.h>
 #include <poundfe/base/exceptions.h>
-#include <poundfe/base/interruption.h>
-#include <poundfe/output/output_directory.h>
-#include <poundfe/base/progress.h>
+#include <poundfe/excitation/excitation_parameters.h>
+#include <poundfe/excitation/stochastic.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/output/append_file.h>
-#include <poundfe/output/atomic_file.h>
-#include <poundfe/output/json_writer.h>
-#include <poundfe/output/plots.h>
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -63,12 +54,6 @@ namespace poundfe
       const unsigned long first, every, last;
     };
 
-    const std::array<const char *, 3> quantity      = {{"x", "v", "a"}};
-    const std::array<const char *, 3> value_unit    = {{"m", "m_s", "m"}};
-    const std::array<const char *, 3> density_unit  = {{"1_m", "s_m", "1_m"}};
-    const std::array<const char *, 3> quantity_name = {
-      {"displacement x (m)", "velocity v (m/s)", "amplitude a (m)"}};
-
     std::string
     number(const double x)
     {
@@ -77,84 +62,11 @@ namespace poundfe
       return s;
     }
 
-    /// The grids of x, v and a and where each count goes in a realization's row:
-    ///   n, sum x, sum x^2, sum v, sum v^2, sum a, sum a^2,
-    ///   for x, v, a: below, bins..., above; then the joint (x, v) bins, x-major.
-    struct PdfLayout
+    PdfSampling
+    make_sampling(const Analysis &analysis, const RealizationRunner &runner,
+                  const StationaryPdfParameters &p, const InputFile &input, const double dt,
+                  const GroundMotionParameters &g)
     {
-      std::array<BinGrid, 3> grids;
-      double                 omega = 1;
-      std::string            steps; // 'first:every:last', part of the header
-
-      unsigned int histogram(const unsigned int q) const { return 7 + q * (grids[0].n_bins + 2); }
-      unsigned int joint() const { return histogram(3); }
-      unsigned int size() const { return joint() + grids[0].n_bins * grids[1].n_bins; }
-      double amplitude(const double x, const double v) const
-      {
-        return std::sqrt(x * x + v * v / (omega * omega));
-      }
-
-      std::vector<std::string> names() const;
-      void accumulate(const std::vector<double> &x, const std::vector<double> &v,
-                      std::vector<double> &row) const;
-    };
-
-    std::vector<std::string>
-    PdfLayout::names() const
-    {
-      std::vector<std::string> n{"samples_steps_" + steps};
-      for (unsigned int q = 0; q < 3; ++q)
-        for (const char *power : {"sum_", "sum_squares_"})
-          n.push_back(std::string(power) + quantity[q]);
-      for (unsigned int q = 0; q < 3; ++q)
-        {
-          n.push_back(std::string(quantity[q]) + "_below_" + number(grids[q].low));
-          for (unsigned int i = 0; i < grids[q].n_bins; ++i)
-            n.push_back(std::string(quantity[q]) + "_bin" + std::to_string(i));
-          n.push_back(std::string(quantity[q]) + "_above_" + number(grids[q].high));
-        }
-      for (unsigned int i = 0; i < grids[0].n_bins; ++i)
-        for (unsigned int j = 0; j < grids[1].n_bins; ++j)
-          n.push_back("xv_bin" + std::to_string(i) + "_" + std::to_string(j));
-      return n;
-    }
-
-    void
-    PdfLayout::accumulate(const std::vector<double> &x, const std::vector<double> &v,
-                          std::vector<double> &row) const
-    {
-      row.assign(size(), 0.0);
-      row[0] = x.size();
-      for (std::size_t k = 0; k < x.size(); ++k)
-        {
-          const std::array<double, 3> value{{x[k], v[k], amplitude(x[k], v[k])}};
-          std::array<int, 3>          bin{};
-          for (unsigned int q = 0; q < 3; ++q)
-            {
-              row[1 + 2 * q] += value[q];
-              row[2 + 2 * q] += value[q] * value[q];
-              bin[q] = grids[q].bin(value[q]);
-              row[histogram(q) + 1 + bin[q]] += 1;
-            }
-          const int n_x = grids[0].n_bins, n_v = grids[1].n_bins;
-          if (bin[0] >= 0 && bin[0] < n_x && bin[1] >= 0 && bin[1] < n_v)
-            row[joint() + bin[0] * n_v + bin[1]] += 1;
-        }
-    }
-
-    /// Everything a realization needs, set up once per command.
-    struct Sampling
-    {
-      unsigned int  equation = 0;
-      std::string   label;
-      unsigned long first = 0, every = 1, last = 0; // steps
-    };
-
-    Sampling
-    make_sampling(const Analysis &analysis, const RealizationRunner &runner)
-    {
-      const InputParameters         &input = analysis.input;
-      const StationaryPdfParameters &p     = input.stationary_pdf;
       const std::string              path  = "Stationary PDF/Response";
       std::istringstream             fields(p.response);
       const FloorNode at = read_floor_node(input, analysis.model, fields, path, p.response,
@@ -165,14 +77,12 @@ namespace poundfe
       const int equation = analysis.model.equation(Model::dof(at.node, Component::ux));
       if (equation < 0)
         input.fail(path, "'" + p.response + "': its ux is fixed");
-      const double dt = input.time_integration.newmark.time_step;
-      const Sampling s{static_cast<unsigned int>(equation), at.label + " ux",
+      const PdfSampling s{static_cast<unsigned int>(equation), at.label + " ux",
                        static_cast<unsigned long>(std::llround(p.burn_in / dt)),
                        p.interval_steps(dt), runner.n_steps()};
       if (s.first >= s.last)
         input.fail("Stationary PDF/Burn-in time",
                    "the runs end at " + number(s.last * dt) + " s, before the burn-in ends");
-      const GroundMotionParameters &g = input.ground_motion;
       if (g.is_stochastic() && g.duration < s.last * dt * (1 - 1e-12))
         input.fail(p.sampling_time > 0 ? "Stationary PDF/Sampling time" :
                                          "Time integration/End time",
@@ -182,13 +92,13 @@ namespace poundfe
     }
 
     double
-    first_natural_frequency(const Analysis &analysis)
+    first_natural_frequency(const Analysis &analysis, const StationaryPdfParameters &p,
+                            const InputFile &input)
     {
-      const StationaryPdfParameters &p = analysis.input.stationary_pdf;
       if (p.omega > 0)
         return p.omega;
       if (analysis.modes.n_modes() == 0)
-        analysis.input.fail("Stationary PDF/Omega", "the model has no computed mode: give omega");
+        input.fail("Stationary PDF/Omega", "the model has no computed mode: give omega");
       return analysis.modes.omega[0];
     }
 
@@ -208,11 +118,11 @@ namespace poundfe
     }
 
     PdfLayout
-    make_layout(const Analysis &analysis, RealizationRunner &runner, const Sampling &s)
+    make_layout(const Analysis &analysis, RealizationRunner &runner, const PdfSampling &s,
+                const StationaryPdfParameters &p, const InputFile &input)
     {
-      const StationaryPdfParameters &p = analysis.input.stationary_pdf;
-      PdfLayout                      layout;
-      layout.omega = first_natural_frequency(analysis);
+      PdfLayout layout;
+      layout.omega = first_natural_frequency(analysis, p, input);
       layout.steps = std::to_string(s.first) + ":" + std::to_string(s.every) + ":" +
                      std::to_string(s.last);
       if (p.range.size() == 4)
@@ -236,43 +146,6 @@ namespace poundfe
       return layout;
     }
 
-    /// The estimates of one quantity from the summed rows.
-    struct QuantityEstimate
-    {
-      double              mean = 0, variance = 0, outside = 0, bandwidth = 0;
-      bool                silverman = true;
-      bool                widened   = false; // raised to the bin width
-      std::vector<double> histogram, kde;
-      std::vector<Peak>   peaks;
-    };
-
-    QuantityEstimate
-    estimate(const PdfLayout &layout, const std::vector<double> &total, const unsigned int q,
-             const StationaryPdfParameters &p)
-    {
-      const BinGrid &grid = layout.grids[q];
-      const double   n    = total[0];
-      const auto     first = total.begin() + layout.histogram(q);
-      const std::vector<double> counts(first + 1, first + 1 + grid.n_bins);
-      QuantityEstimate          e;
-      e.mean     = total[1 + 2 * q] / n;
-      e.variance = std::max(0.0, total[2 + 2 * q] / n - e.mean * e.mean);
-      e.outside  = (first[0] + first[grid.n_bins + 1]) / n;
-      e.bandwidth = p.bandwidths[p.bandwidths.size() == 3 ? q : 0];
-      e.silverman = !(e.bandwidth > 0);
-      if (e.silverman)
-        e.bandwidth = silverman_bandwidth(std::sqrt(e.variance),
-                                          binned_quantile(grid, counts, first[0], n, 0.75) -
-                                            binned_quantile(grid, counts, first[0], n, 0.25),
-                                          n);
-      e.widened   = e.bandwidth < grid.width();
-      e.bandwidth = std::max(e.bandwidth, grid.width());
-      e.histogram = histogram_density(grid, counts, n);
-      e.kde       = kernel_density(grid, counts, n, e.bandwidth);
-      e.peaks     = find_peaks(grid, e.kde, p.peak_threshold);
-      return e;
-    }
-
     /// The completed rows summed in realization order.
     std::vector<double>
     summed_rows(const MonteCarloTable &table, const unsigned int size)
@@ -284,383 +157,115 @@ namespace poundfe
             total[j] += table.responses[r][j];
       return total;
     }
+  } // namespace
 
-    void
-    write_pdf_csv(const std::string &directory, const PdfLayout &layout,
-                  const std::array<QuantityEstimate, 3> &e)
-    {
-      std::string text;
-      for (unsigned int q = 0; q < 3; ++q)
-        text += std::string(q ? "," : "") + quantity[q] + "_" + value_unit[q] + ",p_" +
-                quantity[q] + "_histogram_" + density_unit[q] + ",p_" + quantity[q] + "_kde_" +
-                density_unit[q];
-      text += "\n";
-      for (unsigned int i = 0; i < layout.grids[0].n_bins; ++i)
+  std::vector<std::string>
+  PdfLayout::names() const
+  {
+    std::vector<std::string> n{"samples_steps_" + steps};
+    for (unsigned int q = 0; q < 3; ++q)
+      for (const char *power : {"sum_", "sum_squares_"})
+        n.push_back(std::string(power) + pdf_quantities[q]);
+    for (unsigned int q = 0; q < 3; ++q)
+      {
+        n.push_back(std::string(pdf_quantities[q]) + "_below_" + number(grids[q].low));
+        for (unsigned int i = 0; i < grids[q].n_bins; ++i)
+          n.push_back(std::string(pdf_quantities[q]) + "_bin" + std::to_string(i));
+        n.push_back(std::string(pdf_quantities[q]) + "_above_" + number(grids[q].high));
+      }
+    for (unsigned int i = 0; i < grids[0].n_bins; ++i)
+      for (unsigned int j = 0; j < grids[1].n_bins; ++j)
+        n.push_back("xv_bin" + std::to_string(i) + "_" + std::to_string(j));
+    return n;
+  }
+
+  void
+  PdfLayout::accumulate(const std::vector<double> &x, const std::vector<double> &v,
+                        std::vector<double> &row) const
+  {
+    row.assign(size(), 0.0);
+    row[0] = x.size();
+    for (std::size_t k = 0; k < x.size(); ++k)
+      {
+        const std::array<double, 3> value{{x[k], v[k], amplitude(x[k], v[k])}};
+        std::array<int, 3>          bin{};
         for (unsigned int q = 0; q < 3; ++q)
           {
-            for (const double x : {layout.grids[q].center(i), e[q].histogram[i]})
-              append_number(text, x), text += ',';
-            append_number(text, e[q].kde[i]);
-            text += q < 2 ? "," : "\n";
+            row[1 + 2 * q] += value[q];
+            row[2 + 2 * q] += value[q] * value[q];
+            bin[q] = grids[q].bin(value[q]);
+            row[histogram(q) + 1 + bin[q]] += 1;
           }
-      write_file_atomically(directory + "/pdf.csv", text);
-    }
+        const int n_x = grids[0].n_bins, n_v = grids[1].n_bins;
+        if (bin[0] >= 0 && bin[0] < n_x && bin[1] >= 0 && bin[1] < n_v)
+          row[joint() + bin[0] * n_v + bin[1]] += 1;
+      }
+  }
 
-    /// p(x, v) = c_ij / (N w_x w_v); a blank line after each x (gnuplot's grid).
-    void
-    write_joint_csv(const std::string &directory, const PdfLayout &layout,
-                    const std::vector<double> &total)
-    {
-      const BinGrid &gx = layout.grids[0], &gv = layout.grids[1];
-      const double   scale = 1 / (total[0] * gx.width() * gv.width());
-      std::string    text  = "x_m,v_m_s,p_xv_s_m2\n";
-      for (unsigned int i = 0; i < gx.n_bins; ++i)
-        {
-          for (unsigned int j = 0; j < gv.n_bins; ++j)
-            {
-              for (const double x : {gx.center(i), gv.center(j)})
-                append_number(text, x), text += ',';
-              append_number(text, total[layout.joint() + i * gv.n_bins + j] * scale);
-              text += '\n';
-            }
-          text += '\n';
-        }
-      write_file_atomically(directory + "/joint_pdf.csv", text);
-    }
+  QuantityEstimate
+  estimate_quantity(const PdfLayout &layout, const std::vector<double> &total, const unsigned int q,
+           const StationaryPdfParameters &p)
+  {
+    const BinGrid &grid = layout.grids[q];
+    const double   n    = total[0];
+    const auto     first = total.begin() + layout.histogram(q);
+    const std::vector<double> counts(first + 1, first + 1 + grid.n_bins);
+    QuantityEstimate          e;
+    e.mean     = total[1 + 2 * q] / n;
+    e.variance = std::max(0.0, total[2 + 2 * q] / n - e.mean * e.mean);
+    e.outside  = (first[0] + first[grid.n_bins + 1]) / n;
+    e.bandwidth = p.bandwidths[p.bandwidths.size() == 3 ? q : 0];
+    e.silverman = !(e.bandwidth > 0);
+    if (e.silverman)
+      e.bandwidth = silverman_bandwidth(std::sqrt(e.variance),
+                                        binned_quantile(grid, counts, first[0], n, 0.75) -
+                                          binned_quantile(grid, counts, first[0], n, 0.25),
+                                        n);
+    e.widened   = e.bandwidth < grid.width();
+    e.bandwidth = std::max(e.bandwidth, grid.width());
+    e.histogram = histogram_density(grid, counts, n);
+    e.kde       = kernel_density(grid, counts, n, e.bandwidth);
+    e.peaks     = find_peaks(grid, e.kde, p.peak_threshold);
+    return e;
+  }
 
-    std::vector<double>
-    peak_values(const std::vector<Peak> &peaks, const bool locations)
-    {
-      std::vector<double> values;
-      for (const Peak &peak : peaks)
-        values.push_back(locations ? peak.location : peak.height);
-      return values;
-    }
+  StationaryPdfSetup
+  setup_stationary_pdf(const Analysis &analysis, RealizationRunner &runner,
+                       const StationaryPdfParameters &parameters, const InputFile &input,
+                       const double time_step, const GroundMotionParameters &ground_motion)
+  {
+    StationaryPdfSetup setup;
+    setup.sampling =
+      make_sampling(analysis, runner, parameters, input, time_step, ground_motion);
+    setup.layout = make_layout(analysis, runner, setup.sampling, parameters, input);
+    return setup;
+  }
 
-    void
-    write_estimates(JsonWriter &json, const PdfLayout &layout,
-                    const std::array<QuantityEstimate, 3> &e)
-    {
+  StationaryPdfResult
+  run_stationary_pdf(const StationaryPdfSetup &setup, RealizationRunner &runner,
+                     const StationaryPdfParameters &parameters, const std::string &file,
+                     const MPI_Comm comm, const std::string &label, Progress &progress,
+                     const unsigned long offset)
+  {
+    const PdfSampling &sampling = setup.sampling;
+    const PdfLayout   &layout   = setup.layout;
+    StationarySampler  sampler(sampling.equation, sampling.first, sampling.every, sampling.last);
+    const RealizationJob job{layout.names(), runner.stochastic_load().seed(),
+                             [&](const std::uint64_t r, std::vector<double> &row) {
+                               const bool completed = runner.run(r, {&sampler});
+                               layout.accumulate(sampler.x, sampler.v, row);
+                               return completed;
+                             }};
+    StationaryPdfResult result;
+    result.table = run_realizations(job, parameters.realizations, file, comm, label, &progress,
+                                    offset);
+    if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
+      return result;
+    result.total     = summed_rows(result.table, layout.size());
+    result.n_samples = result.total[0];
+    if (result.n_samples > 0)
       for (unsigned int q = 0; q < 3; ++q)
-        json.begin_object(quantity[q])
-          .value("mean", e[q].mean)
-          .value("variance", e[q].variance)
-          .value("standard_deviation", std::sqrt(e[q].variance))
-          .value("range", std::vector<double>{layout.grids[q].low, layout.grids[q].high})
-          .value("fraction_outside_range", e[q].outside)
-          .value("kernel_bandwidth", e[q].bandwidth)
-          .value("bandwidth_rule", std::string(e[q].silverman ? "Silverman" : "given") +
-                                     (e[q].widened ? ", raised to the bin width" : ""))
-          .value("n_peaks", e[q].peaks.size())
-          .value("peak_locations", peak_values(e[q].peaks, true))
-          .value("peak_densities", peak_values(e[q].peaks, false))
-          .end_object();
-    }
-
-    /// pdf.png: one panel per quantity, histogram and kernel density.
-    std::vector<Plot>
-    pdf_plots(const unsigned long n_samples, const unsigned long n_realizations)
-    {
-      std::array<Plot, 3> panel;
-      for (unsigned int q = 0; q < 3; ++q)
-        {
-          const std::string c = std::to_string(3 * q + 1);
-          panel[q]            = Plot{"", "", quantity_name[q], "probability density",
-                          {{"pdf.csv", c + ":" + std::to_string(3 * q + 2), "histogram", "histeps"},
-                           {"pdf.csv", c + ":" + std::to_string(3 * q + 3), "Gaussian KDE",
-                            "lines lw 2"}}};
-        }
-      Plot pdf       = panel[0];
-      pdf.file       = "pdf.png";
-      pdf.title      = "stationary PDFs, " + std::to_string(n_samples) + " samples of " +
-                  std::to_string(n_realizations) + " realizations";
-      pdf.below      = {panel[1], panel[2]};
-      Plot joint{"joint_pdf.png", "joint PDF p(x, v) (2-D histogram)", quantity_name[0],
-                 quantity_name[1], {{"joint_pdf.csv", "1:2:3", "", "image"}}};
-      return {pdf, joint};
-    }
-  } // namespace
-
-  namespace
-  {
-    /// What a P-bifurcation needs of one run: the binned x and its kernel
-    /// density's bandwidth and peaks (rank 0), and whether it was stopped
-    /// (every rank).
-    struct XDensity
-    {
-      bool                interrupted = false;
-      BinGrid             grid;
-      std::vector<double> counts;
-      double              n = 0, bandwidth = 1;
-      std::vector<Peak>   peaks;
-    };
-
-    /// Rank 0: pdf.csv, joint_pdf.csv, summary.json and the plots.
-    XDensity
-    write_results(const Analysis &analysis, const Sampling &s, const PdfLayout &layout,
-                  const MonteCarloTable &table, const std::uint64_t seed,
-                  const std::string &directory, const unsigned int n_ranks)
-    {
-      const InputParameters &input   = analysis.input;
-      const unsigned long    n_done  = table.realizations.size();
-      const unsigned long    n_completed =
-        std::count(table.completed.begin(), table.completed.end(), true);
-      const std::vector<double> total = summed_rows(table, layout.size());
-      const unsigned long       n_samples = total[0];
-      const double              dt        = input.time_integration.newmark.time_step;
-      JsonWriter                json;
-      begin_summary(json, "stationary-pdf", input, table.interrupted ? "interrupted" : "completed");
-      json.value("response", s.label)
-        .value("realizations", input.stationary_pdf.realizations)
-        .value("realizations_done", n_done)
-        .value("completed_realizations", n_completed)
-        .value("seed", static_cast<unsigned long>(seed))
-        .value("burn_in_s", s.first * dt)
-        .value("end_time_s", s.last * dt)
-        .value("sample_interval_s", s.every * dt)
-        .value("samples", n_samples)
-        .value("omega_rad_s", layout.omega)
-        .value("bins", layout.grids[0].n_bins)
-        .value("kernel_density", "Gaussian kernel on the bin centres from the binned samples")
-        .value("peak_threshold", input.stationary_pdf.peak_threshold)
-        .value("ranks", n_ranks)
-        .value("realizations_run_now", table.n_run_now)
-        .value("wall_time_s", table.wall_time)
-        .value("samples_per_second", table.wall_time > 0 && n_completed > 0
-                                       ? double(n_samples) / n_completed * table.n_run_now /
-                                           table.wall_time
-                                       : 0.0);
-      XDensity x;
-      x.interrupted = table.interrupted;
-      x.grid        = layout.grids[0];
-      if (n_samples > 0)
-        {
-          std::array<QuantityEstimate, 3> e;
-          for (unsigned int q = 0; q < 3; ++q)
-            e[q] = estimate(layout, total, q, input.stationary_pdf);
-          write_estimates(json, layout, e);
-          write_pdf_csv(directory, layout, e);
-          write_joint_csv(directory, layout, total);
-          if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
-            draw_plots(directory, pdf_plots(n_samples, n_completed));
-          const auto first = total.begin() + layout.histogram(0) + 1;
-          x.counts.assign(first, first + x.grid.n_bins);
-          x.n         = total[0];
-          x.bandwidth = e[0].bandwidth;
-          x.peaks     = e[0].peaks;
-        }
-      json.end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
-      return x;
-    }
-
-    /// One stationary-PDF analysis of `file_input` into `directory`, on every
-    /// rank of `comm`; progress counts from `offset`. With a sampling time the
-    /// runs end at burn-in + sampling time.
-    XDensity
-    run_stationary_pdf(const InputParameters &file_input, const std::string &directory,
-                       const MPI_Comm comm, const std::string &label, Progress &progress,
-                       const unsigned long offset)
-    {
-      InputParameters                input = file_input;
-      const StationaryPdfParameters &p     = input.stationary_pdf;
-      if (p.sampling_time > 0)
-        input.time_integration.end_time = p.burn_in + p.sampling_time;
-      const Analysis     analysis = prepare_analysis(input);
-      const unsigned int rank     = dealii::Utilities::MPI::this_mpi_process(comm);
-      dealii::ConditionalOStream pcout(std::cout, rank == 0);
-      RealizationRunner          runner(analysis);
-      const Sampling             sampling = make_sampling(analysis, runner);
-      const PdfLayout            layout   = make_layout(analysis, runner, sampling);
-      if (rank == 0) // an earlier run's realizations stay: it resumes from them
-        prepare_output_directory(directory, {"realizations.csv"});
-
-      StationarySampler sampler(sampling.equation, sampling.first, sampling.every, sampling.last);
-      const RealizationJob job{layout.names(), runner.stochastic_load().seed(),
-                               [&](const std::uint64_t r, std::vector<double> &row) {
-                                 const bool completed = runner.run(r, {&sampler});
-                                 layout.accumulate(sampler.x, sampler.v, row);
-                                 return completed;
-                               }};
-      const MonteCarloTable table = run_realizations(
-        job, p.realizations, directory + "/realizations.csv", comm, label, &progress, offset);
-      if (rank != 0)
-        {
-          XDensity stopped;
-          stopped.interrupted = table.interrupted;
-          return stopped;
-        }
-      const XDensity x = write_results(analysis, sampling, layout, table,
-                                       runner.stochastic_load().seed(), directory,
-                                       dealii::Utilities::MPI::n_mpi_processes(comm));
-      if (table.interrupted)
-        pcout << label << "stationary PDF interrupted after " << table.realizations.size()
-              << " of " << p.realizations << " realizations: the estimates are over these; "
-              << "the same command runs the rest\n";
-      pcout << label << "stationary PDF of " << sampling.label << ": "
-            << table.realizations.size() << " realizations; results in " << directory
-            << "/ (summary.json, pdf.csv, joint_pdf.csv, realizations.csv)\n";
-      return x;
-    }
-
-    /// p_bifurcation_density.csv: the kernel density of x of every value on
-    /// one x grid (the union of the values' ranges), with the cell each
-    /// point fills in the image (halfway to the neighbouring values: they
-    /// need not be equally spaced). At least two values.
-    void
-    write_density_map(const std::string &directory, const std::string &column,
-                      const std::vector<double> &values, const std::vector<XDensity> &x)
-    {
-      BinGrid common = x[0].grid;
-      for (const XDensity &d : x)
-        common = {std::min(common.low, d.grid.low), std::max(common.high, d.grid.high),
-                  std::max(common.n_bins, d.grid.n_bins)};
-      std::vector<double> points(common.n_bins);
-      for (unsigned int i = 0; i < common.n_bins; ++i)
-        points[i] = common.center(i);
-      std::string text = column + ",x_m,p_x_kde_1_m," + column + "_low," + column +
-                         "_high,x_low_m,x_high_m\n";
-      const std::size_t n = x.size();
-      for (std::size_t j = 0; j < n; ++j)
-        {
-          const double low  = j > 0 ? (values[j - 1] + values[j]) / 2
-                                    : 1.5 * values[0] - 0.5 * values[1];
-          const double high = j + 1 < n ? (values[j] + values[j + 1]) / 2
-                                        : 1.5 * values[n - 1] - 0.5 * values[n - 2];
-          const std::vector<double> f =
-            kernel_density(x[j].grid, x[j].counts, x[j].n, x[j].bandwidth, points);
-          for (unsigned int i = 0; i < common.n_bins; ++i)
-            {
-              const double half = common.width() / 2;
-              for (const double v : {values[j], points[i], f[i], low, high, points[i] - half})
-                append_number(text, v), text += ',';
-              append_number(text, points[i] + half);
-              text += '\n';
-            }
-        }
-      write_file_atomically(directory + "/p_bifurcation_density.csv", text);
-    }
-
-    /// p_bifurcation.csv (value, number of peaks, their locations) and the
-    /// summary's entries; returns the most peaks of a value.
-    std::size_t
-    write_peaks(const std::string &directory, const std::string &column,
-                const std::vector<double> &values, const std::vector<XDensity> &x, JsonWriter &json)
-    {
-      std::size_t most = 1;
-      for (const XDensity &d : x)
-        most = std::max(most, d.peaks.size());
-      std::string text = column + ",n_peaks";
-      for (std::size_t k = 1; k <= most; ++k)
-        text += ",peak" + std::to_string(k) + "_x_m";
-      text += '\n';
-      json.begin_array("values");
-      for (std::size_t j = 0; j < x.size(); ++j)
-        {
-          append_number(text, values[j]);
-          text += ',' + std::to_string(x[j].peaks.size());
-          for (std::size_t k = 0; k < most; ++k)
-            {
-              text += ',';
-              if (k < x[j].peaks.size())
-                append_number(text, x[j].peaks[k].location);
-            }
-          text += '\n';
-          json.begin_object()
-            .value("value", values[j])
-            .value("n_peaks", x[j].peaks.size())
-            .value("peak_locations", peak_values(x[j].peaks, true))
-            .end_object();
-        }
-      json.end_array().begin_array("peak_count_changes");
-      for (std::size_t j = 1; j < x.size(); ++j)
-        if (x[j].peaks.size() != x[j - 1].peaks.size())
-          json.begin_object()
-            .value("between", std::vector<double>{values[j - 1], values[j]})
-            .value("n_peaks", std::vector<double>{double(x[j - 1].peaks.size()),
-                                                  double(x[j].peaks.size())})
-            .end_object();
-      json.end_array();
-      write_file_atomically(directory + "/p_bifurcation.csv", text);
-      return most;
-    }
-
-    Plot
-    p_bifurcation_plot(const std::string &parameter, const std::size_t most_peaks)
-    {
-      Plot plot{"p_bifurcation.png",
-                "P-bifurcation: kernel density of x against " + parameter + " (green: peaks)",
-                parameter, "displacement x (m)",
-                {{"p_bifurcation_density.csv", "1:2:4:5:6:7:3", "",
-                  "boxxyerror fs solid 1.0 noborder fc palette"}}};
-      for (std::size_t k = 0; k < most_peaks; ++k)
-        plot.series.push_back({"p_bifurcation.csv", "1:" + std::to_string(k + 3),
-                               "", "points pt 7 ps 0.8 lc rgb 'green'"});
-      return plot;
-    }
-  } // namespace
-
-  namespace
-  {
-    /// The P-bifurcation: one stationary-PDF run per value, each in its own
-    /// directory (resumable), then the density of x against the value.
-    int
-    p_bifurcation_command(const InputParameters &input, const std::string &directory,
-                          const MPI_Comm comm)
-    {
-      const SweepParameters     &sweep  = input.stationary_pdf.sweep;
-      const std::vector<double>  values = sweep.values();
-      std::vector<InputParameters> inputs; // every value checked before anything runs
-      for (const double v : values)
-        inputs.push_back(sweep.input_for(input, v));
-      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0) // each value's directory resumes
-        prepare_output_directory(directory);
-      const unsigned long  per_value = input.stationary_pdf.realizations;
-      Progress             progress(std::cerr, "realizations", values.size() * per_value);
-      std::vector<XDensity> done;
-      for (std::size_t j = 0; j < values.size(); ++j)
-        {
-          const std::string name  = sweep.column_name() + "_" + format_value(values[j]);
-          XDensity          x     = run_stationary_pdf(inputs[j], directory + "/" + name, comm,
-                                                 name + ": ", progress, j * per_value);
-          if (x.interrupted)
-            break;
-          done.push_back(std::move(x));
-        }
-      progress.finish();
-      const bool interrupted = done.size() < values.size();
-      const int  status      = interrupted ? interrupted_exit_status() : 0;
-      if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
-        return status;
-      JsonWriter json;
-      begin_summary(json, "stationary-pdf", input, interrupted ? "interrupted" : "completed");
-      json.value("parameter", sweep.parameter).value("values_done", done.size());
-      const std::vector<double> swept(values.begin(), values.begin() + done.size());
-      if (done.size() >= 2)
-        {
-          const std::size_t most = write_peaks(directory, sweep.column_name(), swept, done, json);
-          write_density_map(directory, sweep.column_name(), swept, done);
-          if (input.output.plots && !interrupted)
-            draw_plots(directory, {p_bifurcation_plot(sweep.axis_label(), most)});
-        }
-      json.end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
-      std::cout << "P-bifurcation over " << sweep.parameter << ": " << done.size() << " of "
-                << values.size() << " values; results in " << directory
-                << "/ (summary.json, p_bifurcation.csv, p_bifurcation_density.csv)\n";
-      return status;
-    }
-  } // namespace
-
-  int
-  stationary_pdf_command(const InputParameters &input, const std::string &directory,
-                         const MPI_Comm comm)
-  {
-    if (!input.stationary_pdf.sweep.values().empty())
-      return p_bifurcation_command(input, directory, comm);
-    Progress       progress(std::cerr, "realizations", input.stationary_pdf.realizations);
-    const XDensity x = run_stationary_pdf(input, directory, comm, "", progress, 0);
-    progress.finish();
-    return x.interrupted ? interrupted_exit_status() : 0;
+        result.estimates[q] = estimate_quantity(layout, result.total, q, parameters);
+    return result;
   }
 } // namespace poundfe

@@ -1,17 +1,11 @@
-#include <poundfe/dynamics/realization.h>
 #include <poundfe/reliability/subset.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
-#include <poundfe/output/output_directory.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/excitation/stochastic.h>
-#include <poundfe/output/atomic_file.h>
-#include <poundfe/output/json_writer.h>
-#include <poundfe/output/plots.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -26,37 +20,6 @@ namespace poundfe
   namespace
   {
 
-    /// subset_levels.png: P(Y > b_k) at each level's threshold, with bars of
-    /// +-1 CoV (the levels' CoVs combined as sqrt(sum delta_i^2), as for the
-    /// estimate itself (Au & Beck 2001): the correlation between levels is ignored), and the
-    /// target threshold as a vertical line.
-    Plot
-    subset_plot(const SubsetResult &result, const double target, const std::string &label)
-    {
-      std::ostringstream block;
-      block.precision(10);
-      block << "$levels << EOD\nthreshold,probability,low,high\n";
-      double probability = 1, variance = 0;
-      for (const SubsetLevel &L : result.levels)
-        {
-          probability *= L.conditional_probability;
-          variance += L.coefficient_of_variation * L.coefficient_of_variation;
-          const double cov = std::sqrt(variance);
-          block << L.threshold << ',' << probability << ',' << probability * std::max(1 - cov, 1e-3)
-                << ',' << probability * (1 + cov) << '\n';
-        }
-      Plot plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
-                label, "exceedance probability", {{"$levels", "1:2:3:4", "levels (bars: +-1 CoV)",
-                                                   "yerrorlines pt 7"}}, true};
-      plot.data_blocks = block.str() + "EOD\n";
-      std::ostringstream arrow;
-      arrow.precision(10);
-      arrow << "set arrow from " << target << ", graph 0 to " << target
-            << ", graph 1 nohead dt 2 lw 2\nset label 'threshold' at " << target
-            << ", graph 0.95 right offset -0.5, 0\n";
-      plot.settings = arrow.str();
-      return plot;
-    }
     /// Where the ranks other than 0 send their progress.
     std::ostream silent(nullptr);
 
@@ -302,126 +265,4 @@ namespace poundfe
     return result;
   }
 
-  int
-  subset_command(const Analysis &analysis, const std::string &directory, const MPI_Comm comm)
-  {
-    const InputParameters     &input = analysis.input;
-    const SubsetParameters    &ss    = input.subset;
-    const unsigned int         rank  = dealii::Utilities::MPI::this_mpi_process(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
-    // rank 0's own times: the other ranks leave before the output section
-    dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-    timer.enter_subsection("set-up");
-    RealizationRunner runner(analysis);
-    std::vector<unsigned int> columns;
-    std::string               unit;
-    const std::string        &response_name = subset_response_names().name(ss.response);
-    if (ss.response == SubsetResponse::peak_drift_ratio)
-      {
-        columns = runner.drift_columns(ss.building);
-        if (ss.storey > 0)
-          columns = {columns.at(ss.storey - 1)};
-      }
-    else if (ss.response == SubsetResponse::peak_roof_displacement)
-      columns = {runner.roof_displacement_column(ss.building)}, unit = " m";
-    else
-      {
-        if (!runner.has_gaps())
-          throw InputError(input.file, input.line_of("Subset simulation/Response"),
-                           "Subset simulation/Response",
-                           "peak contact force needs contact elements (Contact/Law)");
-        columns = {runner.column("peak_contact_force")}, unit = " N";
-      }
-    if (rank == 0)
-      prepare_output_directory(directory);
-    timer.leave_subsection();
-
-    std::vector<double> responses;
-    unsigned long       failed_runs = 0;
-    const auto          response = [&](const std::vector<double> &xi) {
-      if (!runner.run(xi, responses))
-        ++failed_runs;
-      double y = 0;
-      for (const unsigned int c : columns)
-        y = std::max(y, responses[c]);
-      return y;
-    };
-    SubsetSettings settings;
-    settings.samples_per_level       = ss.samples_per_level;
-    settings.conditional_probability = ss.conditional_probability;
-    settings.max_levels              = ss.max_levels;
-    settings.proposal_spread         = ss.proposal_spread;
-    settings.seed                    = runner.stochastic_load().seed();
-    timer.enter_subsection("levels");
-    const auto         start = std::chrono::steady_clock::now();
-    const SubsetResult result =
-      subset_simulation(response, runner.n_variables(), ss.threshold, settings, comm);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    failed_runs       = dealii::Utilities::MPI::sum(failed_runs, comm);
-    timer.leave_subsection();
-    const int status = result.interrupted ? interrupted_exit_status() : 0;
-    if (rank != 0)
-      return status;
-    timer.enter_subsection("output");
-
-    std::string csv = "level,threshold,conditional_probability,exceedance_probability,"
-                      "acceptance_rate,coefficient_of_variation\n";
-    double      cumulative = 1;
-    for (std::size_t i = 0; i < result.levels.size(); ++i)
-      {
-        const SubsetLevel &L = result.levels[i];
-        cumulative *= L.conditional_probability;
-        std::ostringstream row;
-        row.precision(10);
-        row << i << "," << L.threshold << "," << L.conditional_probability << "," << cumulative
-            << "," << L.acceptance_rate << "," << L.coefficient_of_variation << "\n";
-        csv += row.str();
-      }
-    write_file_atomically(directory + "/subset_levels.csv", csv);
-
-    JsonWriter json;
-    begin_summary(json, "subset", input, result.interrupted ? "interrupted" : "completed");
-    json.value("response", response_name)
-      .value("building", ss.building)
-      .value("storey", ss.storey)
-      .value("threshold", ss.threshold)
-      .value("samples_per_level", ss.samples_per_level)
-      .value("conditional_probability", ss.conditional_probability)
-      .value("random_variables", runner.n_variables());
-    if (!result.interrupted) // otherwise there is no estimate at the threshold
-      json.value("failure_probability", result.probability)
-        .value("coefficient_of_variation", result.coefficient_of_variation);
-    json.value("reached_threshold", result.reached_threshold)
-      .value("model_runs", result.model_runs)
-      .value("failed_model_runs", failed_runs)
-      .value("ranks", dealii::Utilities::MPI::n_mpi_processes(comm))
-      .value("wall_time_s", wall);
-    json.begin_array("levels");
-    for (const SubsetLevel &L : result.levels)
-      json.begin_object()
-        .value("threshold", L.threshold)
-        .value("conditional_probability", L.conditional_probability)
-        .value("acceptance_rate", L.acceptance_rate)
-        .value("coefficient_of_variation", L.coefficient_of_variation)
-        .end_object();
-    json.end_array().end_object();
-    write_file_atomically(directory + "/summary.json", json.str());
-    if (input.output.plots && !result.interrupted) // stop soon
-      draw_plots(directory, {subset_plot(result, ss.threshold, response_name + unit)});
-    timer.leave_subsection();
-
-    if (result.interrupted)
-      pcout << "Subset Simulation interrupted after " << result.levels.size()
-            << " levels (no estimate at the threshold; subset_levels.csv has the levels), "
-            << result.model_runs << " model runs";
-    else
-      pcout << "Subset Simulation: P(" << response_name << " > " << ss.threshold << unit
-            << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
-            << "), " << result.levels.size() << " levels, " << result.model_runs << " model runs"
-            << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
-    pcout << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
-          << (input.output.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
-    print_timing(timer);
-    return status;
-  }
 } // namespace poundfe

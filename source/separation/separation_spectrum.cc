@@ -5,14 +5,12 @@
 #include <poundfe/separation/separation_spectrum.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
-#include <poundfe/output/append_file.h>
-#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/floor_response.h>
-#include <poundfe/output/json_writer.h>
 
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <numeric>
 
@@ -91,23 +89,22 @@ namespace poundfe
     /// EN 1998-1 §4.3.3.3.1(3), doubling the count asked of the solver
     /// until the mass rule can tell (the dense solver gives every mode at once).
     Modes
-    modes_for_spectrum(const Analysis &analysis, const unsigned int b, const unsigned int n_wanted)
+    modes_for_spectrum(const Analysis &analysis, const unsigned int b, const unsigned int n_wanted,
+                       const Eigensolver solver, const InputFile &input)
     {
       const LinearSystem &system    = analysis.system;
       const auto          range     = analysis.model.equation_range(b);
       const SparseMatrix  mass      = block(system.mass, range);
       const SparseMatrix  stiffness = block(system.stiffness, range);
       const Vector        influence = system.influence.segment(range[0], range[1] - range[0]);
-      const Eigensolver   solver    = analysis.input.modal.eigensolver;
       const unsigned int  most      = solver == Eigensolver::sparse ?
                                         max_sparse_modes(mass) :
                                         static_cast<unsigned int>(mass.rows());
       if (most == 0)
-        analysis.input.fail("Modal analysis/Eigensolver",
-                            "the sparse eigensolver finds no mode of building '" +
-                              analysis.model.buildings[b].name + "' (" +
-                              std::to_string(mass.rows()) +
-                              " equations) for the response spectrum; use dense or auto");
+        input.fail("Modal analysis/Eigensolver",
+                   "the sparse eigensolver finds no mode of building '" +
+                     analysis.model.buildings[b].name + "' (" + std::to_string(mass.rows()) +
+                     " equations) for the response spectrum; use dense or auto");
       if (n_wanted > 0)
         return compute_modes(mass, stiffness, influence, std::min(n_wanted, most), solver);
       for (unsigned int n = std::min(12u, most);; n = std::min(2 * n, most))
@@ -128,12 +125,12 @@ namespace poundfe
 
   SpectrumModalResponse
   spectrum_modal_response(const Analysis &analysis, const unsigned int b,
-                          const unsigned int n_modes)
+                          const unsigned int n_modes, const SpectrumParameters &target,
+                          const Eigensolver eigensolver, const InputFile &input)
   {
-    const LinearSystem       &system = analysis.system;
-    const SpectrumParameters &target = analysis.input.spectrum;
-    const auto                range  = analysis.model.equation_range(b);
-    const Modes               modes  = modes_for_spectrum(analysis, b, n_modes);
+    const LinearSystem &system = analysis.system;
+    const auto          range  = analysis.model.equation_range(b);
+    const Modes         modes  = modes_for_spectrum(analysis, b, n_modes, eigensolver, input);
     const SparseMatrix        mass   = block(system.mass, range);
     const SparseMatrix damping = system.damping.rows() ? block(system.damping, range) : SparseMatrix();
     const Vector       influence = system.influence.segment(range[0], range[1] - range[0]);
@@ -173,13 +170,14 @@ namespace poundfe
   }
 
   SpectrumPeaks
-  spectrum_peaks(const Analysis &analysis, const std::vector<AdjacentPair> &pairs)
+  spectrum_peaks(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
+                 const SpectrumParameters &s, const SeparationParameters &separation,
+                 const Eigensolver eigensolver, const InputFile &input)
   {
-    const InputParameters &input = analysis.input;
-    SpectrumPeaks          peaks;
+    SpectrumPeaks peaks;
     for (unsigned int b = 0; b < analysis.model.buildings.size(); ++b)
-      peaks.buildings.push_back(
-        spectrum_modal_response(analysis, b, input.separation.n_spectrum_modes));
+      peaks.buildings.push_back(spectrum_modal_response(analysis, b, separation.n_spectrum_modes,
+                                                        s, eigensolver, input));
     for (const AdjacentPair &pair : pairs)
       {
         peaks.levels.emplace_back();
@@ -188,11 +186,10 @@ namespace poundfe
             {{combined_displacement(peaks.buildings[pair.left], level.sides[0]),
               combined_displacement(peaks.buildings[pair.right], level.sides[1])}});
       }
-    const SpectrumParameters &s = input.spectrum;
     peaks.method = "response spectrum: EN 1998-1 " + design_spectrum_names().name(s.target) +
                    ", ground " + ground_type_names().name(s.ground_type) + ", a_g " +
                    number_text(s.design_ground_acceleration) + " g; " +
-                   modal_combination_names().name(input.separation.modal_combination) +
+                   modal_combination_names().name(separation.modal_combination) +
                    " of the modes (";
     for (unsigned int b = 0; b < peaks.buildings.size(); ++b)
       {
@@ -206,69 +203,20 @@ namespace poundfe
     return peaks;
   }
 
+  /// The response-spectrum route's peaks, by `combination`, into the
+  /// levels (no time-history value).
   void
-  write_spectrum_modes(const std::string &directory, const Model &model, const SpectrumPeaks &peaks)
+  fill_from_spectrum(const SpectrumPeaks &spectrum, const ModalCombination combination,
+                     std::vector<PairResult> &results)
   {
-    std::string csv = "building,mode,period_s,damping_ratio,participation_factor,"
-                      "effective_mass_ratio,cumulative_mass_ratio,Se_m_s2,Sd_m\n";
-    for (unsigned int b = 0; b < peaks.buildings.size(); ++b)
-      {
-        const SpectrumModalResponse &r   = peaks.buildings[b];
-        double                       sum = 0;
-        for (unsigned int i = 0; i < r.n_modes(); ++i)
-          {
-            sum += r.effective_mass_ratio[i];
-            csv += model.buildings[b].name + "," + std::to_string(i + 1);
-            for (const double x : {2 * M_PI / r.omega[i], r.damping_ratio[i], r.participation[i],
-                                   r.effective_mass_ratio[i], sum, r.spectral_acceleration[i],
-                                   r.spectral_displacement[i]})
-              csv += ',', append_number(csv, x);
-            csv += '\n';
-          }
-      }
-    write_file_atomically(directory + "/spectrum_modes.csv", csv);
+    for (std::size_t p = 0; p < results.size(); ++p)
+      for (std::size_t l = 0; l < results[p].levels.size(); ++l)
+        {
+          LevelResult &level = results[p].levels[l];
+          level.u_left       = spectrum.levels[p][l][0].of(combination);
+          level.u_right      = spectrum.levels[p][l][1].of(combination);
+          level.time_history = std::numeric_limits<double>::quiet_NaN();
+        }
   }
 
-  void
-  write_spectrum_summary(JsonWriter &json, const InputParameters &input, const Model &model,
-                         const SpectrumPeaks &peaks)
-  {
-    const SpectrumParameters &s = input.spectrum;
-    json.begin_object("response_spectrum")
-      .value("spectrum", design_spectrum_names().name(s.target))
-      .value("ground_type", ground_type_names().name(s.ground_type))
-      .value("design_ground_acceleration_g", s.design_ground_acceleration)
-      .value("modal_combination", modal_combination_names().name(input.separation.modal_combination))
-      .begin_array("buildings");
-    for (unsigned int b = 0; b < peaks.buildings.size(); ++b)
-      {
-        const SpectrumModalResponse &r = peaks.buildings[b];
-        std::vector<double>          periods;
-        for (const double w : r.omega)
-          periods.push_back(2 * M_PI / w);
-        json.begin_object()
-          .value("name", model.buildings[b].name)
-          .value("n_modes", r.n_modes())
-          .value("cumulative_mass_ratio", r.cumulative_mass_ratio())
-          .value("periods_s", periods)
-          .value("damping_ratios", r.damping_ratio)
-          .value("Sd_m", r.spectral_displacement)
-          .end_object();
-      }
-    json.end_array();
-    json.begin_array("pairs");
-    for (const auto &pair : peaks.levels)
-      {
-        json.begin_object().begin_array("levels");
-        for (const auto &level : pair)
-          json.begin_object()
-            .value("u_left_srss_m", level[0].srss)
-            .value("u_right_srss_m", level[1].srss)
-            .value("u_left_cqc_m", level[0].cqc)
-            .value("u_right_cqc_m", level[1].cqc)
-            .end_object();
-        json.end_array().end_object();
-      }
-    json.end_array().end_object();
-  }
 } // namespace poundfe

@@ -29,6 +29,10 @@
 
 using namespace poundfe;
 using poundfe_test::temporary_file;
+// run_pounding_hazard runs over MPI_COMM_WORLD (one fixture per executable:
+// this module's other files have none)
+using poundfe_test::MpiFixture;
+BOOST_GLOBAL_FIXTURE(MpiFixture);
 
 namespace
 {
@@ -139,13 +143,21 @@ BOOST_AUTO_TEST_CASE(linear_pair_at_three_levels_obeys_the_scaling_identity)
   input.contact.law                             = "none";
   const Analysis                  analysis = prepare_analysis(input);
   const std::vector<AdjacentPair> pairs    = adjacent_pairs(analysis.model);
-  PoundingHazard                  result   = prepare_pounding_hazard(analysis);
+  PoundingHazard                  result   = prepare_pounding_hazard(
+    input.separation.hazard, input,
+    RealizationRunner(analysis).reference_pga("the PGA levels of a site hazard"));
   // the peak factor times sigma of S0 from the Target PGA: the Target PGA
   BOOST_TEST(result.reference_pga == 0.15, boost::test_tools::tolerance(1e-12));
   const std::string directory =
     (std::filesystem::temp_directory_path() / "poundfe_pounding_hazard_levels").string();
   std::filesystem::remove_all(directory);
-  run_pounding_hazard(analysis, pairs, directory, MPI_COMM_WORLD, result);
+  {
+    RealizationRunner  runner(analysis);
+    SeparationObserver observer(analysis.model, pairs);
+    run_pounding_hazard(largest_approach_job(runner, observer, pairs),
+                        input.monte_carlo.realizations, input.separation.hazard, directory,
+                        MPI_COMM_WORLD, result);
+  }
   std::filesystem::remove_all(directory);
 
   // One run of each realization at the input's own PGA, here.

@@ -16,7 +16,7 @@
 //     fragility summary reader on the format `poundfe fragility` writes.
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/hazard/site_hazard.h>
-#include <poundfe/commands/site_hazard.h>
+#include <poundfe/hazard/catalogue.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/excitation/ground_motion.h>
 #include <poundfe/output/json_writer.h>

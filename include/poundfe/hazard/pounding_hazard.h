@@ -31,13 +31,13 @@
 #ifndef poundfe_hazard_pounding_hazard_h
 #define poundfe_hazard_pounding_hazard_h
 
-#include <poundfe/separation/separation.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/hazard/pounding_hazard_parameters.h>
 #include <poundfe/hazard/site_hazard.h>
-#include <poundfe/output/json_writer.h>
-#include <poundfe/output/plots.h>
 
 #include <mpi.h>
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -106,35 +106,35 @@ namespace poundfe
     std::string                 failure; // why the demand fit or the gap failed ("" if not)
   };
 
-  /// The hazard of Separation/Site hazard and the input motion's PGA, read
-  /// and checked before anything is run or written. Throws InputError (a
-  /// missing or bad hazard file, a motion that cannot be scaled to a PGA).
-  PoundingHazard prepare_pounding_hazard(const Analysis &analysis);
+  /// The hazard of Separation/Site hazard (`parameters`, paths relative to
+  /// `input`) and the input motion's PGA `reference_pga` (g), read and
+  /// checked before anything is run or written. Throws InputError (a
+  /// missing or bad hazard file, a Minimum PGA below the curve).
+  PoundingHazard prepare_pounding_hazard(const PoundingHazardParameters &parameters,
+                                         const InputFile &input, double reference_pga);
 
-  /// Runs the realizations of Monte Carlo/Number of realizations at each
-  /// level on every rank of `comm` (realizations.csv in directory/pga_<a>g/,
-  /// resumed as `fragility` does; the same realizations at every level) and,
-  /// on rank 0, fits the demand of each pair and finds the gap for the
-  /// target. A fit or a gap that fails leaves `failure` (the realizations
-  /// stay on disk and the per-event results are still written).
-  void run_pounding_hazard(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
+  /// One realization of the demand without contact: the largest approach of
+  /// each pair (m, in the order of pair_names) under the noise of (seed,
+  /// realization) with its amplitudes times amplitude_factor; `run` returns
+  /// false when the integration failed.
+  struct ApproachJob
+  {
+    std::vector<std::string> pair_names; // "A3-B2"
+    std::uint64_t            seed = 1;
+    std::function<bool(std::uint64_t realization, double amplitude_factor,
+                       std::vector<double> &largest_approach)>
+      run;
+  };
+
+  /// Runs `n_realizations` realizations of `job` at each level on every rank
+  /// of `comm` (realizations.csv in directory/pga_<a>g/, resumed as
+  /// `fragility` does; the same realizations at every level) and, on rank 0,
+  /// fits the demand of each pair and finds the gap for the target of
+  /// `parameters`. A fit or a gap that fails leaves `failure` (the
+  /// realizations stay on disk and the per-event results are still written).
+  void run_pounding_hazard(const ApproachJob &job, unsigned long n_realizations,
+                           const PoundingHazardParameters &parameters,
                            const std::string &directory, MPI_Comm comm, PoundingHazard &result);
-
-  /// pounding_hazard.csv (lambda and P_T against the gap),
-  /// pounding_given_pga.csv (empirical P(D > g | a_k) with its Wilson band
-  /// and the model's) and their plot.
-  void write_pounding_hazard(const std::string &directory, const InputParameters &input,
-                             const std::vector<AdjacentPair> &pairs, const PoundingHazard &result,
-                             std::vector<Plot> &plots);
-
-  /// The object "site_hazard" of summary.json.
-  void write_pounding_hazard_json(JsonWriter &json, const InputParameters &input,
-                                  const std::vector<AdjacentPair> &pairs,
-                                  const PoundingHazard &result);
-
-  /// The console lines.
-  void report_pounding_hazard(std::ostream &out, const InputParameters &input,
-                              const std::vector<AdjacentPair> &pairs, const PoundingHazard &result);
 } // namespace poundfe
 
 #endif

@@ -11,8 +11,9 @@
 #ifndef poundfe_reliability_montecarlo_h
 #define poundfe_reliability_montecarlo_h
 
-#include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/realization.h>
+#include <poundfe/reliability/reliability_parameters.h>
+#include <poundfe/reliability/statistics.h>
 
 #include <mpi.h>
 
@@ -71,12 +72,51 @@ namespace poundfe
                                   MPI_Comm comm, const std::string &label = "",
                                   Progress *progress = nullptr, unsigned long progress_offset = 0);
 
-  /// The `montecarlo` command, on every rank of `comm`.
-  int montecarlo_command(const Analysis &analysis, const std::string &output_directory,
-                         MPI_Comm comm);
-  /// The `fragility` command, on every rank of `comm`.
-  int fragility_command(const Analysis &analysis, const std::string &output_directory,
-                        MPI_Comm comm);
+  /// Pounding and drift-limit exceedances of a table's completed realizations.
+  struct Exceedances
+  {
+    ProbabilityEstimate              pounding; // when the runner has gaps
+    std::vector<ProbabilityEstimate> drift;    // one per limit
+  };
+
+  /// The realizations of `table` that pounded and those whose largest drift
+  /// ratio exceeds each of `drift_limits`.
+  Exceedances count_exceedances(const MonteCarloTable &table, const RealizationRunner &runner,
+                                const std::vector<double> &drift_limits);
+
+  /// The Monte Carlo at each PGA level of a fragility analysis.
+  struct FragilityLevels
+  {
+    std::vector<double>      levels;      // g: the levels done (rank 0)
+    std::vector<Exceedances> counts;      // at each of them (rank 0)
+    bool                     interrupted = false; // on every rank
+  };
+
+  /// Runs `parameters.realizations_per_level` realizations at each PGA level
+  /// in turn (amplitudes scaled by level / reference_pga) over the ranks of
+  /// `comm`, each level in directory/pga_<a>g/realizations.csv (resumed as
+  /// run_realizations does); stops after a level that was interrupted.
+  /// Rank 0 counts the exceedances of `drift_limits` at the levels done.
+  FragilityLevels run_fragility_levels(RealizationRunner &runner,
+                                       const FragilityParameters &parameters,
+                                       const std::vector<double> &drift_limits,
+                                       double reference_pga, const std::string &directory,
+                                       MPI_Comm comm, Progress &progress);
+
+  /// One fragility curve: the observed exceedances at each level and the
+  /// lognormal maximum-likelihood fit (statistics.h).
+  struct FragilityCurve
+  {
+    std::string                      name; // "pounding" or "drift_<limit>"
+    std::vector<ProbabilityEstimate> observed;
+    LognormalFragility               fit;
+  };
+
+  /// The curve of pounding (with gaps) and one per drift limit, fitted over
+  /// the levels done.
+  std::vector<FragilityCurve> fit_fragility_curves(const FragilityLevels     &levels,
+                                                   const std::vector<double> &drift_limits,
+                                                   bool                       has_gaps);
 } // namespace poundfe
 
 #endif

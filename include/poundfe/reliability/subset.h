@@ -17,8 +17,6 @@
 #ifndef poundfe_reliability_subset_h
 #define poundfe_reliability_subset_h
 
-#include <poundfe/dynamics/analysis.h>
-
 #include <mpi.h>
 
 #include <cstdint>
@@ -65,10 +63,6 @@ namespace poundfe
   /// (interruption.h) and drops the level under way.
   SubsetResult subset_simulation(const ResponseFunction &response, unsigned int n_variables,
                                  double threshold, const SubsetSettings &settings, MPI_Comm comm);
-
-  /// The `subset` command, on every rank of `comm`.
-  int subset_command(const Analysis &analysis, const std::string &output_directory,
-                     MPI_Comm comm);
 } // namespace poundfe
 
 #endif

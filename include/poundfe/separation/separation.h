@@ -43,8 +43,13 @@
 #define poundfe_separation_separation_h
 
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/hazard/pounding_hazard.h>
 #include <poundfe/output/floor_response.h>
 #include <poundfe/output/observer.h>
+#include <poundfe/reliability/montecarlo.h>
+#include <poundfe/separation/separation_parameters.h>
 
 #include <mpi.h>
 
@@ -115,7 +120,10 @@ namespace poundfe
   {
     double omega = 0, damping_ratio = 0;
   };
-  FundamentalMode fundamental_mode(const Analysis &analysis, unsigned int building);
+  /// Uses the modes prepare_analysis computed, else computes the first by
+  /// `eigensolver` (Modal analysis/Eigensolver).
+  FundamentalMode fundamental_mode(const Analysis &analysis, unsigned int building,
+                                   Eigensolver eigensolver = Eigensolver::automatic);
 
   /// Watches the pairs in a time history: at every step and sub-step the
   /// displacements of both buildings at each common level, their peaks
@@ -164,11 +172,85 @@ namespace poundfe
   /// gap values evenly from 0 to 1.2 `largest` (1 m when largest <= 0).
   std::vector<double> gap_grid(const SeparationParameters &p, double largest);
 
-  /// The `separation` command on every rank of `comm` (the Monte Carlo of
-  /// random loading splits over them; a ground motion without randomness
-  /// runs on rank 0). Returns the exit status.
-  int separation_command(const InputParameters &input, const std::string &output_directory,
-                         MPI_Comm comm);
+  /// The values of one common level: peaks, time-history value, rules.
+  struct LevelResult
+  {
+    double          u_left = 0, u_right = 0, time_history = 0;
+    SeparationRules rules;
+  };
+
+  /// A pair's fundamental modes, their correlation and its levels.
+  struct PairResult
+  {
+    FundamentalMode          left_mode, right_mode;
+    double                   rho = 0;
+    std::vector<LevelResult> levels;
+    /// Monte Carlo: per completed realization, the largest approach over
+    /// the pair's levels.
+    std::vector<double> largest_approach;
+  };
+
+  /// The rule values and their names, in the order of separation.csv.
+  inline const std::array<const char *, 5> rule_names{{"ABS", "SRSS", "DDC", "EC8", "ASCE7"}};
+
+  inline std::array<double, 5>
+  rule_values(const SeparationRules &r)
+  {
+    return {{r.abs, r.srss, r.ddc, r.ec8, r.asce7}};
+  }
+
+  /// The results before any run: each building's fundamental mode, rho, the levels.
+  std::vector<PairResult> pair_results_before_run(const Analysis                  &analysis,
+                                                  const std::vector<AdjacentPair> &pairs,
+                                                  Eigensolver                      eigensolver);
+
+  /// One time history of the analysis' (deterministic) excitation without
+  /// contact: the peaks and largest approach into each level of `results`.
+  RunStatus run_without_contact(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
+                                std::vector<PairResult> &results);
+
+  /// Monte Carlo of realizations 0..n-1 over the random loading on every rank
+  /// of `comm` (run_realizations: directory/realizations.csv, resumed): the
+  /// means of the peaks and the largest approach of every realization into
+  /// `results` (rank 0). Returns the table (rank 0).
+  MonteCarloTable run_realizations_without_contact(const Analysis                  &analysis,
+                                                   const std::vector<AdjacentPair> &pairs,
+                                                   unsigned long n, const std::string &directory,
+                                                   MPI_Comm comm, std::vector<PairResult> &results);
+
+  /// The pounding hazard's realization (hazard/pounding_hazard.h): `runner`
+  /// with `observer` watching `pairs`; the largest approach over each pair's
+  /// levels. `runner` and `observer` must outlive the job.
+  ApproachJob largest_approach_job(RealizationRunner &runner, SeparationObserver &observer,
+                                   const std::vector<AdjacentPair> &pairs);
+
+  /// Fill the rules of every level from its u_left, u_right.
+  void apply_rules(const SeparationParameters &p, const AdjacentPair &pair, PairResult &result);
+
+  /// The gaps of the exceedance curve: past the largest approach and the existing gaps.
+  std::vector<double> gap_grid(const SeparationParameters &p, const std::vector<AdjacentPair> &pairs,
+                               const std::vector<PairResult> &results);
+
+  /// The gap whose P(D > g) is the target, interpolated (type-7 quantile).
+  double gap_for_probability(std::vector<double> sample, double probability);
+
+  /// The smallest gap at which the band's upper limit is at most the
+  /// target: no more than k exceedances with wilson(k, n).upper <= p;
+  /// NaN when even none is not enough (too few realizations).
+  double gap_for_probability_upper(std::vector<double> sample, double probability,
+                                   double confidence);
+
+  /// The joint of a pair: each rule's and the time history's largest
+  /// requirement over the levels.
+  struct Joint
+  {
+    std::array<double, 5> required{};
+    double                time_history = 0;
+    /// The larger of the two code rules: EC8 (3) or ASCE 7 (4).
+    unsigned int governing_code_rule() const { return required[3] >= required[4] ? 3 : 4; }
+  };
+
+  Joint joint_of(const PairResult &result);
 } // namespace poundfe
 
 #endif

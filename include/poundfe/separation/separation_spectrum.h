@@ -40,8 +40,6 @@
 
 namespace poundfe
 {
-  class JsonWriter;
-
   /// Sd(T, zeta) = Se(T, zeta) (T / 2 pi)^2 of the Spectrum section's target, m.
   double spectral_displacement(const SpectrumParameters &spectrum, double period, double zeta);
 
@@ -77,9 +75,13 @@ namespace poundfe
   };
 
   /// Building b's modes, `n_modes` of them (0: EN 1998-1 §4.3.3.3.1(3)),
-  /// by the eigensolver of the Modal analysis section.
+  /// by `eigensolver` (Modal analysis/Eigensolver), under the spectrum
+  /// `target`. Throws InputError naming `input` when the sparse solver
+  /// finds no mode.
   SpectrumModalResponse spectrum_modal_response(const Analysis &analysis, unsigned int building,
-                                                unsigned int n_modes);
+                                                unsigned int n_modes,
+                                                const SpectrumParameters &target,
+                                                Eigensolver eigensolver, const InputFile &input);
 
   /// The combined peak displacement at a floor or common level.
   struct CombinedDisplacement
@@ -101,15 +103,17 @@ namespace poundfe
     std::vector<std::vector<std::array<CombinedDisplacement, 2>>> levels;
     std::string                                                   method; // for the reports
   };
-  SpectrumPeaks spectrum_peaks(const Analysis &analysis, const std::vector<AdjacentPair> &pairs);
+  /// The route of the spectrum `target`, Separation/Number of modes and
+  /// Modal combination of `separation`, by `eigensolver`.
+  SpectrumPeaks spectrum_peaks(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
+                               const SpectrumParameters &target,
+                               const SeparationParameters &separation, Eigensolver eigensolver,
+                               const InputFile &input);
 
-  /// spectrum_modes.csv: per building and mode the period, damping ratio,
-  /// participation, effective mass (and its running sum), Se and Sd.
-  void write_spectrum_modes(const std::string &directory, const Model &model,
-                            const SpectrumPeaks &peaks);
-  /// The "response_spectrum" object of summary.json.
-  void write_spectrum_summary(JsonWriter &json, const InputParameters &input, const Model &model,
-                              const SpectrumPeaks &peaks);
+  /// The route's peaks, by `combination`, into the levels of `results` (no
+  /// time-history value: NaN).
+  void fill_from_spectrum(const SpectrumPeaks &spectrum, ModalCombination combination,
+                          std::vector<PairResult> &results);
 } // namespace poundfe
 
 #endif
