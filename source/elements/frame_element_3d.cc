@@ -106,6 +106,16 @@ namespace poundfe
       return c * symmetric(a11, L / 10, -a11, L / 10, a22, -L / 10, a24, a11, -L / 10, a22);
     }
 
+    /// Φ = 12 EI/(G Av L²), 0 without a shear area (Euler-Bernoulli).
+    double
+    timoshenko_parameter(const Section3D &s, const double second_moment, const double shear_area,
+                         const double L)
+    {
+      return shear_area > 0 ?
+               12 * s.youngs_modulus * second_moment / (s.shear_modulus * shear_area * L * L) :
+               0.;
+    }
+
     void
     check_section(const Section3D &s)
     {
@@ -168,19 +178,15 @@ namespace poundfe
   double
   FrameElement3D::shear_parameter_y() const
   {
-    const double L = element_length;
-    return section.shear_area_y > 0 ? 12 * section.youngs_modulus * section.second_moment_z /
-                                        (section.shear_modulus * section.shear_area_y * L * L) :
-                                      0.;
+    return timoshenko_parameter(section, section.second_moment_z, section.shear_area_y,
+                                element_length);
   }
 
   double
   FrameElement3D::shear_parameter_z() const
   {
-    const double L = element_length;
-    return section.shear_area_z > 0 ? 12 * section.youngs_modulus * section.second_moment_y /
-                                        (section.shear_modulus * section.shear_area_z * L * L) :
-                                      0.;
+    return timoshenko_parameter(section, section.second_moment_y, section.shear_area_z,
+                                element_length);
   }
 
   Matrix12

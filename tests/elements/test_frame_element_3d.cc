@@ -13,12 +13,12 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include <boost/test/unit_test.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <vector>
+
+#include "test_utilities.h"
 
 using namespace poundfe;
 
@@ -76,15 +76,6 @@ namespace
   relative_difference(const Eigen::MatrixXd &a, const Eigen::MatrixXd &b)
   {
     return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
-  }
-
-  /// Generalised eigenvalues of (A, B), B positive definite, ascending.
-  Eigen::VectorXd
-  eigenvalues(const Eigen::MatrixXd &a, const Eigen::MatrixXd &b)
-  {
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(a, b);
-    BOOST_REQUIRE(solver.info() == Eigen::Success);
-    return solver.eigenvalues();
   }
 
   /// The element of `values` nearest to `target`, relative to it.
@@ -459,7 +450,9 @@ BOOST_AUTO_TEST_CASE(frame3d_cantilever_frequencies_converge_to_the_closed_forms
         return e.mass(MassMatrixType::consistent);
       };
       const Eigen::VectorXd omega =
-        eigenvalues(clamped_stiffness(elements), clamped(elements, consistent)).cwiseSqrt();
+        poundfe_test::generalized_eigenvalues(clamped_stiffness(elements),
+                                              clamped(elements, consistent))
+          .cwiseSqrt();
       const double error_z = nearest_relative_error(omega, omega_z);
       const double error_y = nearest_relative_error(omega, omega_y);
       const double h = L / n, theta = M_PI / (2 * n);
