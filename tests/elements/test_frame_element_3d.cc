@@ -327,7 +327,7 @@ namespace
   }
 } // namespace
 
-// With shear deformation (Φ ≈ 0.07 and 0.38 for a short member): each bending
+// With shear deformation (Φ = 0.087 and 0.50 for a short member): each bending
 // block of the local stiffness, consistent mass (translation + rotary
 // inertia) and geometric stiffness equals the quadrature of the Timoshenko
 // shape functions: ∫ EI ψ'² + G Av (v' - ψ)², ∫ m̄ v² + ρI ψ², ∫ N v'².
