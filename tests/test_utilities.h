@@ -11,6 +11,8 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -135,6 +137,15 @@ namespace poundfe_test
         return e.what();
       }
     return "";
+  }
+
+  /// The eigenvalues of A x = λ B x, B positive definite, ascending.
+  inline Eigen::VectorXd
+  generalized_eigenvalues(const Eigen::MatrixXd &a, const Eigen::MatrixXd &b)
+  {
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(a, b);
+    BOOST_REQUIRE(solver.info() == Eigen::Success);
+    return solver.eigenvalues();
   }
 } // namespace poundfe_test
 
