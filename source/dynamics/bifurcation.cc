@@ -48,7 +48,7 @@ namespace poundfe
                "Displacement (relative to the ground, m) or velocity (m/s) of the DOF. Unit: -.",
                {"displacement", "velocity"});
     prm.add_parameter("Forcing period", forcing_period,
-                      "T in s, the Poincaré section's period; 0: 2 pi / omega of the first "
+                      "T, the Poincaré section's period; 0: 2 pi / omega of the first "
                       "harmonic nodal force of the input at each value (so sweeping the "
                       "frequency moves the section). Unit: s.", Patterns::Double(0));
     prm.add_parameter("Transient periods", transient_periods,

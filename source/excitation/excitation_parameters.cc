@@ -111,10 +111,10 @@ namespace poundfe
                "15 rad/s, 0.6; medium 10, 0.4; soft 5, 0.2; custom uses omega_g, "
                "zeta_g. Clough-Penzien presets use omega_f = omega_g/10, zeta_f 0.6. Unit: -.",
                soil_names());
-    prm.add_parameter("omega_g", omega_g, "Ground filter frequency, rad/s (custom). Unit: rad/s.");
+    prm.add_parameter("omega_g", omega_g, "Ground filter frequency (custom). Unit: rad/s.");
     prm.add_parameter("zeta_g", zeta_g, "Ground filter damping ratio (custom). "
                       "Unit: dimensionless.");
-    prm.add_parameter("omega_f", omega_f, "Clough-Penzien high-pass frequency, rad/s (custom). "
+    prm.add_parameter("omega_f", omega_f, "Clough-Penzien high-pass frequency (custom). "
                       "Unit: rad/s.");
     prm.add_parameter("zeta_f", zeta_f, "Clough-Penzien high-pass damping (custom). "
                       "Unit: dimensionless.");
@@ -124,22 +124,22 @@ namespace poundfe
                "(sum of cosines with random phases). Unit: -.",
                stochastic_method_names());
     prm.add_parameter("Cutoff frequency", cutoff_frequency,
-                      "Spectral representation: upper frequency w_u, rad/s (0: min(pi/dt, "
+                      "Spectral representation: upper frequency w_u (0: min(pi/dt, "
                       "25 omega_g)); needs dt <= pi/w_u. Unit: rad/s.");
     prm.add_parameter("Number of frequencies", n_frequencies,
                       "Spectral representation: N (0: w_u duration / pi, so the sample "
                       "does not repeat within twice its duration). Unit: count.");
     prm.add_parameter("S0", spectral_intensity,
-                      "Two-sided PSD intensity of the white noise, m^2/s^3; 0: from D, or "
+                      "Two-sided PSD intensity of the white noise; 0: from D, or "
                       "from the target PGA and peak factor. Unit: m^2/s^3.");
     prm.add_parameter("D", noise_intensity_d,
                       "White-noise intensity in the thesis's convention <w(t) w(t')> = "
                       "2 D delta(t - t'), D = pi S0 (used when S0 = 0). Unit: m^2/s^3.");
-    prm.add_parameter("Target PGA", target_pga, "Target PGA in g (used when S0 = 0). Unit: g.");
+    prm.add_parameter("Target PGA", target_pga, "Target PGA (used when S0 = 0). Unit: g.");
     prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation. Unit: dimensionless.");
     prm.add_parameter("Duration", duration, "Length of the sample. Unit: s.");
     prm.add_parameter("Sample interval", sample_interval,
-                      "White-noise sample interval, s (0: the analysis time step). Unit: s.");
+                      "White-noise sample interval (0: the analysis time step). Unit: s.");
     prm.add_parameter("Seed", seed, "Random seed. Unit: -.");
     prm.add_parameter("Realization", realization,
                       "Realization index: (seed, index) fixes the sample. Unit: -.");

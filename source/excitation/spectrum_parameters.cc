@@ -33,7 +33,7 @@ namespace poundfe
   {
     prm.enter_subsection("Spectrum");
     prm.add_parameter("Minimum period", min_period,
-                      "Shortest period of the response spectra, s (> 0). Unit: s.",
+                      "Shortest period of the response spectra (> 0). Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Maximum period", max_period, "Longest period of the response spectra. "
                       "Unit: s.",

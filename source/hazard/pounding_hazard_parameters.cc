@@ -25,7 +25,7 @@ namespace poundfe
                       Patterns::Anything());
     prm.add_parameter("Annual rate at 1 g", power_law_coefficient,
                       "k0 of a typed-in power-law hazard lambda(a) = k0 a^-k (a the PGA in g), "
-                      "1/year; 0: none (the File's hazard). Unit: 1/year.",
+                      "0: none (the File's hazard). Unit: 1/year.",
                       Patterns::Double(0));
     prm.add_parameter("Exponent", power_law_exponent,
                       "k > 0 of the typed-in power-law hazard (typically 1 to 4). "

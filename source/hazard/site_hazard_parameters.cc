@@ -51,11 +51,11 @@ namespace poundfe
                       "years without a larger one). Unit: dimensionless (a macroseismic "
                       "intensity).");
     prm.add_parameter("Focal depth", focal_depth,
-                      "h, km: Cornell's r = sqrt(Delta^2 + h^2), Delta the epicentral distance "
+                      "h: Cornell's r = sqrt(Delta^2 + h^2), Delta the epicentral distance "
                       "(0: r = Delta, as the thesis does). Unit: km.",
                       Patterns::Double(0));
     prm.add_parameter("Maximum distance", maximum_distance,
-                      "Events farther than this (km) are left out (0: none). Unit: km.",
+                      "Events farther than this are left out (0: none). Unit: km.",
                       Patterns::Double(0));
     prm.add_parameter("Exposure", exposure_years,
                       "Years of the reported probability of failure, 1 - exp(-years lambda_F). "
@@ -63,7 +63,7 @@ namespace poundfe
                       Patterns::Double(0));
     prm.enter_subsection("Fragility");
     prm.add_parameter("Median PGA", fragility_median,
-                      "theta of a lognormal fragility P(F | a) = Phi(ln(a/theta)/beta), g "
+                      "theta of a lognormal fragility P(F | a) = Phi(ln(a/theta)/beta) "
                       "(0: none, or the File's). Unit: g.",
                       Patterns::Double(0));
     prm.add_parameter("Beta", fragility_beta,

@@ -60,7 +60,7 @@ namespace poundfe
                "8(1 - e)/(5e) (Ye, Li & Zhu). Unit: -.",
                hertz_damp_formula_names());
     prm.add_parameter("Effective mass", effective_mass,
-                      "m_e in kg; 0: m1 m2/(m1 + m2) of the colliding floor masses (the "
+                      "m_e; 0: m1 m2/(m1 + m2) of the colliding floor masses (the "
                       "floor mass against a barrier). Unit: kg.");
     prm.add_parameter("Calibration velocity", calibration_velocity,
                       "Approach velocity of the calibration impact. Unit: m/s.");

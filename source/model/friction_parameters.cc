@@ -59,24 +59,24 @@ namespace poundfe
                       "mu_k: F = mu_k N in slip (without a Stribeck curve); mu_k <= mu_s. "
                       "Unit: dimensionless.");
     prm.add_parameter("Stribeck velocity", law.stribeck_velocity,
-                      "v_s in m/s: mu = mu_k + (mu_s - mu_k) exp(-|v_slip|/v_s) in slip; "
+                      "v_s: mu = mu_k + (mu_s - mu_k) exp(-|v_slip|/v_s) in slip; "
                       "0: no Stribeck curve. Unit: m/s.");
     prm.add_parameter("Belt velocity", law.belt_velocity,
-                      "v0 in m/s: the surface's velocity; the slip velocity is x' - v0. "
+                      "v0: the surface's velocity; the slip velocity is x' - v0. "
                       "Unit: m/s.");
     prm.add_parameter("Normal force", law.normal.constant, "C0. Unit: N.");
     prm.add_parameter("Normal force per displacement", law.normal.per_displacement,
-                      "C1 in N/m: N = C0 + C1 |x| + C2 |x'| (N < 0: lift-off, no friction). "
+                      "C1: N = C0 + C1 |x| + C2 |x'| (N < 0: lift-off, no friction). "
                       "Unit: N/m.");
     prm.add_parameter("Normal force per velocity", law.normal.per_velocity, "C2. Unit: N s/m.");
     prm.add_parameter("Normal force from SD spring", normal_force_from_sd_spring,
                       "N also carries the vertical reaction of the SD spring at the same "
                       "node: C0 - K H (1 - L/sqrt(x^2 + H^2)) (the thesis's eq. 2.7). Unit: -.");
     prm.add_parameter("Stick stiffness", law.stick_stiffness,
-                      "k_s in N/m of the elastic-plastic model; 0: 1e4 times the "
+                      "k_s of the elastic-plastic model; 0: 1e4 times the "
                       "linear stiffness at the node (the diagonal of K). Unit: N/m.");
     prm.add_parameter("Regularization velocity", law.regularization_velocity,
-                      "eps in m/s of the regularized model. Unit: m/s.");
+                      "eps of the regularized model. Unit: m/s.");
   }
 
   void

@@ -318,9 +318,9 @@ namespace poundfe
                "with P the weight above. none: small displacements. Unit: -.",
                geometric_nonlinearity_names());
     prm.add_parameter("Gravity", gravity,
-                      "Acceleration of gravity in m/s^2 for the P-Delta loads. Unit: m/s^2.");
+                      "Acceleration of gravity for the P-Delta loads. Unit: m/s^2.");
     prm.add_parameter("Separations", separations,
-                      "Clear distance in m between building i and i+1 (one value for "
+                      "Clear distance between building i and i+1 (one value for "
                       "all pairs or one per pair). Unit: m.");
     prm.leave_subsection();
     for (unsigned int b = 0; b < buildings.size(); ++b)

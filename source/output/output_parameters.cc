@@ -11,7 +11,7 @@ namespace poundfe
     prm.add_parameter("Directory", directory,
                       "Results directory (relative to the working directory). Unit: -.");
     prm.add_parameter("Output interval", interval,
-                      "Interval of the time series' rows, s (0: every step); rounded to a whole "
+                      "Interval of the time series' rows (0: every step); rounded to a whole "
                       "number of time steps. Unit: s.");
     add_choice(prm, "Format", recorders.format,
                "Format of the time series: csv (<name>.csv: a header line, then numbers in the "
@@ -19,7 +19,7 @@ namespace poundfe
                "float64 rows x columns, little-endian, C order, with the column names in "
                "<name>.columns.txt; for long or large runs; no plots of time series). Unit: -.",
                output_format_names());
-    prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames, s (0: none). "
+    prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames (0: none). "
                       "Unit: s.");
     prm.add_parameter("Maximum VTU frames", max_vtu_frames,
                       "Most VTU frames a run writes: when End time / VTU interval would give "

@@ -111,7 +111,7 @@ namespace poundfe
   {
     prm.enter_subsection("Fragility");
     prm.add_parameter("PGA levels", pga_levels,
-                      "Intensity levels: target PGA in g (S0 from the PGA and peak factor). "
+                      "Intensity levels: target PGA (S0 from the PGA and peak factor). "
                       "Unit: g.",
                       Patterns::List(Patterns::Double(0), 1, 1000, ","));
     prm.add_parameter("Realizations per level", realizations_per_level,

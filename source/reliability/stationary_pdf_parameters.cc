@@ -20,12 +20,12 @@ namespace poundfe
     prm.add_parameter("Burn-in time", burn_in, "Time from rest before sampling starts. Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Sampling time", sampling_time,
-                      "Time sampled after the burn-in, s; the runs then end at burn-in + "
+                      "Time sampled after the burn-in; the runs then end at burn-in + "
                       "sampling time (0: sample to the end of the run, Time integration/End "
                       "time or the ground motion's length). Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Sample interval", sample_interval,
-                      "Time between samples, s (a whole number of time steps; 0: every step). "
+                      "Time between samples (a whole number of time steps; 0: every step). "
                       "Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Number of realizations", realizations,
@@ -42,7 +42,7 @@ namespace poundfe
                       "amplitude 0..1.25 times its largest. Unit: per field.",
                       Patterns::List(Patterns::Double(), 0, 4, ","));
     prm.add_parameter("Omega", omega,
-                      "omega of the amplitude a = sqrt(x^2 + v^2/omega^2), rad/s (0: the "
+                      "omega of the amplitude a = sqrt(x^2 + v^2/omega^2) (0: the "
                       "model's first natural frequency). Unit: rad/s.",
                       Patterns::Double(0));
     prm.add_parameter("Kernel bandwidth", bandwidths,

@@ -59,7 +59,7 @@ namespace poundfe
                       "gap if larger), when Gap values is empty. Unit: count.",
                       Patterns::Integer(2, 100000));
     prm.add_parameter("Gap values", gap_values,
-                      "Gap widths g of the exceedance curve P(max relative approach > g), m, "
+                      "Gap widths g of the exceedance curve P(max relative approach > g), "
                       "ascending; empty: the grid of Number of gap values. Unit: m.",
                       Patterns::List(Patterns::Double(0), 0));
     prm.add_parameter("Confidence level", confidence_level,
