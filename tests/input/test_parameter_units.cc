@@ -149,3 +149,37 @@ BOOST_AUTO_TEST_CASE(building_entries_use_the_type_tags)
       }
   BOOST_TEST(n_tagged > 25u);
 }
+
+namespace
+{
+  /// Whether the text before 'Unit: u.' names the unit again, as "in u",
+  /// ", u", "(u)" or "u:" — e.g. "Clear distance in m ... Unit: m." (issue 27:
+  /// help texts without doubled units). Only plain units: '-', counts and
+  /// dimensionless numbers cannot double.
+  bool
+  says_its_unit_twice(const std::string &documentation)
+  {
+    const std::string unit = unit_of(documentation);
+    if (unit.empty() || unit == "-" || unit == "dimensionless" || unit == "count" ||
+        unit.find(' ') != std::string::npos)
+      return false;
+    const std::string text = documentation.substr(0, documentation.find("Unit: "));
+    for (const std::string &form : {" in " + unit + " ", " in " + unit + ":", ", " + unit + " ",
+                                    ", " + unit + ";", ", " + unit + ",", "(" + unit + ")",
+                                    " " + unit + ": "})
+      if (text.find(form) != std::string::npos)
+        return true;
+    return false;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(no_entry_says_its_unit_twice)
+{
+  // the checker itself
+  BOOST_TEST(says_its_unit_twice("Clear distance in m between buildings. Unit: m."));
+  BOOST_TEST(says_its_unit_twice("Interval of rows, s (0: every step). Unit: s."));
+  BOOST_TEST(!says_its_unit_twice("Clear distance between buildings. Unit: m."));
+  BOOST_TEST(!says_its_unit_twice("Scale the record (in g when Units = g). Unit: dimensionless."));
+  for (const auto &[path, documentation] : declared_entries())
+    BOOST_TEST(!says_its_unit_twice(documentation), path << ": '" << documentation << "'");
+}
