@@ -78,25 +78,29 @@ namespace poundfe
   {
     shear.resize(storeys.size());
     for (unsigned int i = 0; i < storeys.size(); ++i)
+      shear[i] = storey_shear(i, u, v);
+  }
+
+  double
+  StoreyForces::storey_shear(const unsigned int index, const Vector &u, const Vector &v) const
+  {
+    const Storey &storey = storeys[index];
+    double        V      = 0;
+    for (const CutElement &e : storey.elements)
+      V -= e.stiffness.row(3 * e.lower).dot(end_displacements(e.equations, u));
+    if (storey.link >= 0)
       {
-        const Storey &storey = storeys[i];
-        double        V      = 0;
-        for (const CutElement &e : storey.elements)
-          V -= e.stiffness.row(3 * e.lower).dot(end_displacements(e.equations, u));
-        if (storey.link >= 0)
-          {
-            const StoreyLink &link = model.links[storey.link];
-            auto drift = [&](const Vector &x) {
-              const int top = model.equation(Model::dof(link.nodes[1], Component::ux));
-              const int bottom = model.equation(Model::dof(link.nodes[0], Component::ux));
-              return (top >= 0 ? x[top] : 0.0) - (bottom >= 0 ? x[bottom] : 0.0);
-            };
-            V += storey.hysteretic >= 0 ? nonlinear[storey.hysteretic].force() :
-                                          link.stiffness * drift(u);
-            V += link.damping * drift(v);
-          }
-        shear[i] = V;
+        const StoreyLink &link = model.links[storey.link];
+        auto drift = [&](const Vector &x) {
+          const int top    = model.equation(Model::dof(link.nodes[1], Component::ux));
+          const int bottom = model.equation(Model::dof(link.nodes[0], Component::ux));
+          return (top >= 0 ? x[top] : 0.0) - (bottom >= 0 ? x[bottom] : 0.0);
+        };
+        V += storey.hysteretic >= 0 ? nonlinear[storey.hysteretic].force() :
+                                      link.stiffness * drift(u);
+        V += link.damping * drift(v);
       }
+    return V;
   }
 
   bool
@@ -121,5 +125,33 @@ namespace poundfe
               forces.segment<3>(3 * end) = f.segment<3>(3 * end);
         }
     return forces;
+  }
+} // namespace poundfe
+
+namespace poundfe
+{
+  void
+  BaseShearPeaks::initialize(const ResponseView &state)
+  {
+    forces.emplace(state.model, state.elements);
+    const unsigned int n_buildings = state.model.buildings.size();
+    peak_shear.assign(n_buildings, 0.0);
+    peak_time.assign(n_buildings, state.time());
+    observe_step(state);
+  }
+
+  void
+  BaseShearPeaks::observe_step(const ResponseView &state)
+  {
+    for (unsigned int b = 0; b < peak_shear.size(); ++b)
+      {
+        const double V = std::abs(
+          forces->storey_shear(forces->index(b, 0), state.displacement(), state.velocity()));
+        if (V > peak_shear[b])
+          {
+            peak_shear[b] = V;
+            peak_time[b]  = state.time();
+          }
+      }
   }
 } // namespace poundfe

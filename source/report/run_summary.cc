@@ -10,6 +10,7 @@
 #include <poundfe/output/response_range.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -235,6 +236,13 @@ namespace poundfe
         write_modes(json, "modes", analysis.building_modes[b]);
         const unsigned int roof = floors.index(b, building.floors.size() - 1);
         json.value("peak_roof_displacement_m", floors.peak_displacement()[roof]);
+        double residual = 0; // the largest residual drift ratio of the building
+        for (unsigned int f = 0; f < building.floors.size(); ++f)
+          residual = std::max(residual, std::abs(floors.drift_ratio()[floors.index(b, f)]));
+        if (b < base_shears.peak().size()) // observed (not a run stopped before its start)
+          json.value("peak_base_shear_N", base_shears.peak()[b])
+            .value("time_of_peak_base_shear_s", base_shears.time_of_peak()[b]);
+        json.value("max_residual_drift_ratio", residual);
         json.begin_array("storeys");
         for (unsigned int f = 0; f < building.floors.size(); ++f)
           {

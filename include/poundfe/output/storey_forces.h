@@ -24,6 +24,9 @@
 #include <poundfe/elements/frame_element.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/model/model.h>
+#include <poundfe/output/observer.h>
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -38,6 +41,8 @@ namespace poundfe
     /// Storey shears of every building, in FloorResponse order (building by
     /// building, storeys bottom up), N.
     void storey_shears(const Vector &u, const Vector &v, std::vector<double> &shear) const;
+    /// The shear of one storey (`index` in that layout), N.
+    double storey_shear(unsigned int index, const Vector &u, const Vector &v) const;
     /// Index of storey s (0-based) of building b in that layout.
     unsigned int index(unsigned int b, unsigned int s) const { return first[b] + s; }
 
@@ -65,6 +70,24 @@ namespace poundfe
     const NonlinearElements    &nonlinear;
     std::vector<unsigned int> first;
     std::vector<Storey>       storeys;
+  };
+
+  /// The largest |base shear| V_1 of every building over a run and when it
+  /// occurred, at every step and sub-step (summary.json, whatever the
+  /// recorders): only the first storey's cut is evaluated.
+  class BaseShearPeaks : public StepObserver
+  {
+  public:
+    void initialize(const ResponseView &state) override;
+    void observe_step(const ResponseView &state) override;
+    void observe_substep(const ResponseView &state) override { observe_step(state); }
+    /// Per building, N and s.
+    const std::vector<double> &peak() const { return peak_shear; }
+    const std::vector<double> &time_of_peak() const { return peak_time; }
+
+  private:
+    std::optional<StoreyForces> forces;
+    std::vector<double>         peak_shear, peak_time;
   };
 } // namespace poundfe
 

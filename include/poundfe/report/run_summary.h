@@ -12,6 +12,7 @@
 #include <poundfe/output/observer.h>
 
 #include <poundfe/output/plots.h>
+#include <poundfe/output/storey_forces.h>
 
 #include <string>
 #include <vector>
@@ -38,7 +39,9 @@ namespace poundfe
                const std::string &solver, const std::string &tangent_update,
                std::vector<std::string> files);
 
-    void observe_step(const ResponseView &) override {}
+    void initialize(const ResponseView &state) override { base_shears.initialize(state); }
+    void observe_step(const ResponseView &state) override { base_shears.observe_step(state); }
+    void observe_substep(const ResponseView &state) override { base_shears.observe_substep(state); }
     void finish(const ResponseView &state, const RunStatus &status) override;
 
   private:
@@ -72,6 +75,8 @@ namespace poundfe
     const bool          plots;
     const std::string   solver, tangent_update;
     const std::vector<std::string> files;
+    /// Each building's peak base shear, for summary.json.
+    BaseShearPeaks base_shears;
   };
 } // namespace poundfe
 
