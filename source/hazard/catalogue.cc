@@ -233,9 +233,12 @@ namespace poundfe
         if (!(e.epicentre.longitude >= -180 && e.epicentre.longitude <= 360))
           throw InputError(file, number, catalogue_parameter,
                            "longitude '" + fields[column[2]] + "' is not a number in [-180, 360]");
-        if (!(e.magnitude > -3 && e.magnitude < 10))
+        // A negative magnitude is a micro-earthquake, never felt at a site:
+        // in a hazard catalogue it is a typing error (issue 27); none on
+        // Earth has reached 10.
+        if (!(e.magnitude >= 0 && e.magnitude < 10))
           throw InputError(file, number, catalogue_parameter,
-                           "magnitude '" + fields[column[3]] + "' is not a number in (-3, 10)");
+                           "magnitude '" + fields[column[3]] + "' is not a number in [0, 10)");
         events.push_back(e);
       }
     if (n_fields == 0)

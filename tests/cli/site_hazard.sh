@@ -145,6 +145,10 @@ bad bad-latitude "$header
 1960,3,10,4
 1961,-91,10,4
 " "bad-latitude.csv:3"
+bad negative-magnitude "$header
+1960,3,10,4
+1961,3,10.2,-1.5
+" "negative-magnitude.csv:3"
 bad no-magnitude "date,latitude,longitude
 1960,3,10
 " "no-magnitude.csv:1"
