@@ -56,11 +56,11 @@ namespace poundfe
       {"sweep", "FILE",
        "the run's peaks against the values of the Sweep section's\n"
        "parameter (sweep.csv, sweep.png, summary.json)",
-       true, false, false, false, commands::sweep},
+       true, false, true, false, commands::sweep},
       {"bifurcation", "FILE",
        "Poincare samples, their period and the largest Lyapunov\n"
        "exponent against the Bifurcation section's parameter",
-       true, false, false, false, commands::bifurcation},
+       true, false, true, false, commands::bifurcation},
       {"site-hazard", "FILE",
        "site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
        "Poisson fit, return periods, fragility x hazard",
@@ -140,9 +140,10 @@ namespace poundfe
            "2 numerical failure (results so far kept), 128 + signal when interrupted.\n"
            "SIGINT (Ctrl-C) or SIGTERM stops "
         << names_of(&Command::handles_interruption_itself)
-        << "\nafter the step or realizations under way, with the results so far\n"
-           "(status \"interrupted\", exit status 128 + signal); the same command resumes all but\n"
-           "run, subset and reliability. Any other command stops at its next file write or\n"
+        << "\nafter the step, value or realizations under way, with the results so far\n"
+           "(status \"interrupted\", exit status 128 + signal); montecarlo, fragility,\n"
+           "stationary-pdf and separation resume when run again, the others start over.\n"
+           "Any other command stops at its next file write or\n"
            "time step: no *.tmp left, summary.json says \"interrupted\". A file that cannot be\n"
            "written (full disk) exits 1 with summary.json \"failed\" and the reason, when it\n"
            "still fits.\n"

@@ -9,6 +9,7 @@
 // 1995, Chaos Solitons Fractals 5:1671-1681, for the variational route).
 // See dynamics/bifurcation.h and doc/theory.md §8.4.
 #include <poundfe/dynamics/bifurcation.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/base/choices.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/run.h>
@@ -393,7 +394,7 @@ namespace poundfe
     /// period (0: non-periodic) and the Lyapunov exponent.
     void
     write_summary(const InputParameters &input, const std::vector<BifurcationPoint> &points,
-                  const std::string &directory, const double wall_time)
+                  const std::string &directory, const double wall_time, const bool interrupted)
     {
       const BifurcationParameters &b = input.bifurcation;
       std::vector<double> values, periods, exponents, forcing, steps;
@@ -405,7 +406,8 @@ namespace poundfe
           steps.push_back(point.time_step), all = all && point.completed;
         }
       JsonWriter json;
-      begin_summary(json, "bifurcation", input, all ? "completed" : "failed");
+      begin_summary(json, "bifurcation", input,
+                    interrupted ? "interrupted" : all ? "completed" : "failed");
       json.value("parameter", b.sweep.parameter).value("response", b.response)
         .value("response_quantity", b.quantity).value("transient_periods", b.transient_periods)
         .value("sampled_periods", b.sampled_periods)
@@ -456,6 +458,8 @@ namespace poundfe
     ModelState state; // empty: from rest
     for (const ValueInput &v : inputs)
       {
+        if (interruption_requested()) // the values done so far are the result
+          break;
         points.push_back(run_point(v, b.continuation ? &state : nullptr));
         progress.update(points.size());
       }
@@ -470,11 +474,21 @@ namespace poundfe
     const std::vector<BifurcationPoint> points = bifurcation_points(input);
     const double wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // SIGINT/SIGTERM stop between values: the values finished are written
+    // (status "interrupted"), as a Monte Carlo writes its realizations.
+    const bool interrupted = interruption_requested();
     prepare_output_directory(directory);
     write_tables(input, points, directory);
-    write_summary(input, points, directory, wall_time);
-    if (input.output.plots)
+    write_summary(input, points, directory, wall_time, interrupted);
+    if (input.output.plots && !points.empty())
       draw_diagram(input, directory);
+    if (interrupted)
+      {
+        std::cerr << "poundfe: bifurcation interrupted (" << directory
+                  << "/summary.json says interrupted): " << points.size() << " of "
+                  << b.sweep.values().size() << " values kept in bifurcation.csv\n";
+        return interrupted_exit_status();
+      }
 
     const auto n_failed = std::count_if(points.begin(), points.end(),
                                         [](const BifurcationPoint &p) { return !p.completed; });

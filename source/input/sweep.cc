@@ -5,6 +5,7 @@
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/input/sweep.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/base/choices.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
@@ -252,14 +253,18 @@ namespace poundfe
     };
 
     /// One run of the value's input with the peak observer; its row in `table`.
-    void
+    /// Runs one value and adds its row; false (no row) when a signal
+    /// stopped the run.
+    bool
     run_value(const InputParameters &input, const double value, SweepTable &table)
     {
       const Analysis     analysis = prepare_analysis(input);
       const Excitation   excitation = make_excitation(analysis);
       TimeHistory        history(analysis);
       PeakResponse       peaks(analysis.model, history.nonlinear_elements());
-      const RunStatus    status = history.run(excitation, {&peaks});
+      const RunStatus    status = history.run(excitation, {&peaks}, true);
+      if (status.kind == RunStatus::Kind::interrupted)
+        return false;
       const std::vector<std::string> names = scalar_names(analysis);
       if (table.rows.empty())
         {
@@ -273,11 +278,12 @@ namespace poundfe
       table.values.push_back(value);
       table.completed.push_back(status.completed());
       table.rows.push_back(scalars(analysis, peaks, history.state()));
+      return true;
     }
 
     void
     write_sweep(const InputParameters &input, const SweepTable &table,
-                const std::string &directory, const double wall_time)
+                const std::string &directory, const double wall_time, const bool interrupted)
     {
       const SweepParameters &sweep = input.sweep;
       prepare_output_directory(directory);
@@ -297,7 +303,7 @@ namespace poundfe
       JsonWriter json;
       const bool all = std::all_of(table.completed.begin(), table.completed.end(),
                                    [](const bool c) { return c; });
-      begin_summary(json, "sweep", input, all ? "completed" : "failed");
+      begin_summary(json, "sweep", input, interrupted ? "interrupted" : all ? "completed" : "failed");
       json.value("parameter", sweep.parameter).value("command_swept", sweep.command)
         .value("n_values", table.values.size()).value("wall_time_s", wall_time)
         .begin_object("table").value(sweep.column_name(), table.values);
@@ -313,7 +319,7 @@ namespace poundfe
       json.end_object().end_object();
       write_file_atomically(directory + "/summary.json", json.str());
 
-      if (!input.output.plots)
+      if (!input.output.plots || table.rows.empty())
         return;
       Plot plot{"sweep.png", "peak inter-storey drift ratio against " + sweep.axis_label(),
                 sweep.axis_label(), "peak drift ratio", {}};
@@ -336,17 +342,25 @@ namespace poundfe
 
     const auto start = std::chrono::steady_clock::now();
     SweepTable table;
+    bool       interrupted = false; // SIGINT/SIGTERM: the values finished are the result
     {
       Progress progress(std::cerr, "sweep: values", values.size());
-      for (std::size_t i = 0; i < values.size(); ++i)
+      for (std::size_t i = 0; i < values.size() && !interrupted; ++i)
         {
-          run_value(inputs[i], values[i], table);
+          interrupted = interruption_requested() || !run_value(inputs[i], values[i], table);
           progress.update(i + 1);
         }
     }
     const double wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_sweep(input, table, directory, wall_time);
+    write_sweep(input, table, directory, wall_time, interrupted);
+    if (interrupted)
+      {
+        std::cerr << "poundfe: sweep interrupted (" << directory
+                  << "/summary.json says interrupted): " << table.values.size() << " of "
+                  << values.size() << " values kept in sweep.csv\n";
+        return interrupted_exit_status();
+      }
     const auto n_failed = std::count(table.completed.begin(), table.completed.end(), false);
     std::cout << "poundfe sweep: " << values.size() << " values of " << sweep.parameter << " in "
               << wall_time << " s\nresults in " << directory

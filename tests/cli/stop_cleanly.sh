@@ -55,6 +55,24 @@ sed 's/set Values            = linspace 0.70 0.84 29/set Values = linspace 0.70 
 grep -q 'linspace 0.70 0.84 290' "$work/bifurcation.prm" || fail "the bifurcation input was not lengthened"
 interrupt sweep 1.5 "$poundfe" sweep "$work/sweep.prm"
 interrupt bifurcation 1.5 "$poundfe" bifurcation "$work/bifurcation.prm"
+# sweep and bifurcation keep the values they finished (issue 27): the CSV
+# holds as many values as stderr says, summary.json lists them
+kept() { # name csv
+  local d=$work/$1 n
+  n=$(sed -n 's/.* \([0-9]*\) of [0-9]* values kept in .*/\1/p' "$d.log")
+  [ -n "$n" ] || fail "$1: stderr does not say how many values were kept: $(cat "$d.log")"
+  [ -s "$d/$2" ] || fail "$1: no $2"
+  python3 - "$d/$2" "$d/summary.json" "$n" <<'PY' || fail "$1: the kept values disagree"
+import csv, json, sys
+values = sorted({row[0] for row in list(csv.reader(open(sys.argv[1])))[1:]})
+summary = json.load(open(sys.argv[2]))
+assert len(values) == int(sys.argv[3]), (len(values), sys.argv[3])
+assert "sweep.csv" in sys.argv[1] or len(summary["values"]) == int(sys.argv[3])
+PY
+  echo "ok   $1 interrupted keeps its $n finished values in $2"
+}
+kept sweep sweep.csv
+kept bifurcation bifurcation.csv
 interrupt spectrum 1.5 "$poundfe" spectrum "$input/two-buildings.prm" --realizations 2000
 
 # --- modal, summary.json blocked -----------------------------------------
