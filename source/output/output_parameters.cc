@@ -48,7 +48,7 @@ namespace poundfe
                       "Unit: dimensionless.",
                       dealii::Patterns::Double(0));
     prm.add_parameter("Rotation", rotation_warning,
-                      "A run warns when a node of a frame rotates more than this, rad: the frame "
+                      "A run warns when a node of a frame rotates more than this: the frame "
                       "elements assume small displacements (at 0.1 rad sin(theta) differs from "
                       "theta by 0.17 % and a chord shortens by 0.5 %). 0: no warning. Unit: rad.",
                       dealii::Patterns::Double(0));

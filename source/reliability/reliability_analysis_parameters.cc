@@ -167,15 +167,15 @@ namespace poundfe
                       "'mean M sd S' or 'mean M cov C' (all but truncated normal), or the "
                       "native parameters: normal mu sigma; lognormal lambda zeta (of ln X); "
                       "uniform lower upper; truncated normal mu sigma lower upper (the parent "
-                      "normal's); Gumbel location scale; Weibull shape scale. Unit: those of "
-                      "the variable.");
+                      "normal's); Gumbel location scale; Weibull shape scale. Unit: per field "
+                      "(each variable's own).");
     prm.add_parameter("Correlation", correlation_text,
                       "Correlation matrix of the random variables in their order, rows "
                       "separated by ';' (empty: independent); symmetric positive definite. "
                       "Nataf transformation. Unit: dimensionless.");
     prm.add_parameter("Constants", constants_text,
                       "'NAME VALUE' separated by ';': named numbers for the expressions. "
-                      "Unit: those of the constant.");
+                      "Unit: per field (each constant's own).");
     prm.add_parameter("Limit states", limit_states_text,
                       "'NAME: EXPRESSION' separated by ';'; failure when the expression is "
                       "<= 0. muParser syntax (+ - * / ^, sqrt, exp, ln, log10, abs, min, max, "
@@ -197,14 +197,14 @@ namespace poundfe
                       "e1 = e2: |G|/|G(u0)| and the distance of u from the line of alpha. "
                       "Unit: dimensionless (standard deviations for e2).", Double(1e-14, 0.1));
     prm.add_parameter("Gradient step", gradient_step,
-                      "Finite-difference step in the standard normal space. Unit: standard "
-                      "deviations.", Double(1e-10, 0.5));
+                      "Finite-difference step in the standard normal space. Unit: "
+                      "dimensionless (standard deviations).", Double(1e-10, 0.5));
     prm.add_parameter("Central differences", central_difference,
                       "Central (2n evaluations) rather than forward (n) differences for the "
                       "gradient. Unit: -.");
     prm.add_parameter("Hessian step", hessian_step,
                       "SORM: finite-difference step of the Hessian at the design point. Unit: "
-                      "standard deviations.", Double(1e-8, 0.5));
+                      "dimensionless (standard deviations).", Double(1e-8, 0.5));
     prm.leave_subsection();
     prm.enter_subsection("Sampling");
     prm.add_parameter("Monte Carlo samples", monte_carlo_samples,
