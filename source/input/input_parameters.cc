@@ -276,11 +276,7 @@ namespace poundfe
   InputParameters
   read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
   {
-    {
-      std::ifstream in(file);
-      if (!in)
-        throw InputError(file, 0, "", "cannot open the parameter file");
-    }
+    check_input_file(file, "parameter file");
     const std::string extension = std::filesystem::path(file).extension().string();
     if (extension != ".prm" && extension != ".json")
       throw InputError(file, 0, "", "parameter files end in .prm or .json");
@@ -309,7 +305,21 @@ namespace poundfe
     p.model.buildings.resize(n_buildings);
     ParameterHandler prm;
     p.declare(prm);
-    parse(prm, p, text, extension == ".json", overrides, false);
+    try
+      {
+        parse(prm, p, text, extension == ".json", overrides, false);
+      }
+    catch (const InputError &e)
+      {
+        // deal.II's words for a building beyond the number declared
+        const std::string undeclared = "There is no such subsection to be entered: Building ";
+        if (e.problem().rfind(undeclared, 0) != 0)
+          throw;
+        throw InputError(e.file(), e.line(), "",
+                         "'subsection Building " + e.problem().substr(undeclared.size()) +
+                           "', but Model/Number of buildings is " + std::to_string(n_buildings) +
+                           " (raise it, or remove the section)");
+      }
     p.finalize();
     return p;
   }
