@@ -9,10 +9,11 @@
 #   scaling, messages that blame the right file and print numbers exactly.
 set -u
 poundfe=$1
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
-. "$(dirname "$(readlink -f "$0")")/expect.sh"
+. "$here/expect.sh"
 
 # 1. long lines: a list of 6,000 values, a 30,000-character subsection name
 heights=$(python3 -c 'print(", ".join(["3.0"] * 6000))')

@@ -17,11 +17,12 @@
 #            directory, a `Building 2` section with one building.
 #   hostile_input_28.sh POUNDFE INPUT_DIR SEPARATION_PAIR_PRM
 set -u
-poundfe=$1 inputs=$2 pair=$3
+poundfe=$(readlink -f "$1") inputs=$(readlink -f "$2") pair=$(readlink -f "$3")
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'chmod -R u+w "$work"; rm -rf "$work"' EXIT
 cd "$work" || exit 1
-. "$(dirname "$(readlink -f "$0")")/expect.sh"
+. "$here/expect.sh"
 
 cp "$inputs/site-hazard.prm" "$inputs/memvele-catalogue-illustrative.csv" .
 sed -i 's/^\(subsection Output\)$/\1\n  set Plots = false/' site-hazard.prm
@@ -89,7 +90,7 @@ expect 0 "6 samples" ground-motion trailer.prm --output out
 shear '  set Floor masses = 2000' > twice.prm
 expect 1 "twice.prm:6: parameter 'Building 1/Floor masses': is set a second time; the first is at line 4" modal twice.prm --output out
 { shear; printf 'subsection Output\n  set Number of modes = 2\nend\n'; } > section-twice.prm
-expect 1 "section-twice.prm:11: 'subsection Output' (Output) is entered a second time; the first is at line 7" modal section-twice.prm --output out
+expect 1 "section-twice.prm:12: 'subsection Output' (Output) is entered a second time; the first is at line 8" modal section-twice.prm --output out
 printf '{ "Building 1": { "Type": "shear", "Number of storeys": "3" },\n  "Building 1": { "Floor masses": "1000" } }\n' > key-twice.json
 expect 1 "key-twice.json:2: the key \"Building 1\" appears a second time in one object; the first is at line 1" modal key-twice.json --output out
 shear > fine.prm
@@ -103,7 +104,7 @@ expect 1 "parameter 'Site hazard/Return periods': lists 475 twice (values 2 and 
 expect 1 "parameter 'Spectrum/Damping ratios': lists 0.05 twice (values 1 and 3)" spectrum ratios-twice.prm --output out
 
 # --- class 9: messages that say the true cause
-head -c 4096 "$poundfe" > binary.prm
+printf '\177ELF\002\001\001\000\000\000' > binary.prm # an executable's first bytes
 expect 1 "binary.prm:1: a NUL byte (column 8): a binary file, not a text parameter file" modal binary.prm --output out
 printf '\xef\xbb\xbf' > bom.csv
 cat memvele-catalogue-illustrative.csv >> bom.csv
@@ -124,7 +125,7 @@ fi
 poundfe=$as_user expect 1 "poundfe: error: permission denied: cannot write in the output directory $work/read-only" modal fine.prm --output "$work/read-only"
 poundfe=$as_user expect 1 "poundfe: error: permission denied: cannot create directory read-only/out" modal fine.prm --output read-only/out
 { shear; printf 'subsection Building 2\n  set Type = shear\nend\n'; } > building2.prm
-expect 1 "building2.prm:11: 'subsection Building 2', but Model/Number of buildings is 1 (raise it, or remove the section)" modal building2.prm --output out
+expect 1 "building2.prm:12: 'subsection Building 2', but Model/Number of buildings is 1 (raise it, or remove the section)" modal building2.prm --output out
 
 # --- class 2: one realization per level (the issue's case)
 sed 's/set Realizations = 12/set Realizations = 1/' "$pair" > one-pair.prm
