@@ -260,13 +260,20 @@ namespace poundfe
       for (unsigned int i = 0; i < max_panels; ++i)
         {
           const double top = z_beyond - i, bottom = std::max(z_min, top - 1);
-          const double panel = Rule::integrate(integrand, bottom, top, 12, 1e-15);
+          const double panel = Rule::integrate(integrand, bottom, top, 12, 1e-13);
           sum += panel;
+          if (!std::isfinite(sum))
+            throw NumericalError("the hazard x fragility integral overflows: the annual rate "
+                                 "exceeds the largest double within the fragility's spread "
+                                 "(theta " + std::to_string(fragility.theta) + " g, beta " +
+                                 std::to_string(fragility.beta) + ")");
           if (bottom <= z_min)
             return sum;
           const bool past_the_peak = bottom < 0 && integrand(bottom) < integrand(top);
           if (past_the_peak && sum > 0 && panel < 1e-18 * sum)
             return sum;
+          if (sum == 0 && bottom <= -z_beyond) // lambda is 0 (underflow) where phi is not
+            return 0;
         }
       throw NumericalError("the hazard x fragility integral has not converged " +
                            std::to_string(max_panels) + " standard deviations below the "

@@ -120,6 +120,12 @@ BOOST_AUTO_TEST_CASE(step_fragility_and_its_limit)
              boost::test_tools::tolerance(1e-14));
   BOOST_TEST(annual_failure_rate(hazard, 0.5, {0.3, 1e-12}) == hazard(0.5),
              boost::test_tools::tolerance(1e-14));
+  // a hazard that underflows to 0 across the whole curve: 0, found at once
+  const auto none_above_1g = [](const double a) { return a < 1 ? 1e-3 : 0.0; };
+  BOOST_TEST(annual_failure_rate(none_above_1g, 0.01, {100, 0.01}) == 0);
+  // one that overflows within the curve's spread: refused, not inf
+  const auto steep = [](const double a) { return std::pow(a, -3.0); };
+  BOOST_CHECK_THROW(annual_failure_rate(steep, 1e-200, {1, 10}), NumericalError);
 }
 
 BOOST_AUTO_TEST_CASE(gap_of_a_demand_without_scatter)
