@@ -44,8 +44,8 @@ shear > long-noise.prm
 printf 'subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Duration = 1e308\n  end\nend\n' >> long-noise.prm
 expect 1 "long-noise.prm:15: parameter 'Ground motion/Stochastic/Duration': needs unboundedly many samples of 0.001 s" run long-noise.prm --output out
 
-shear > frames.prm
-printf 'subsection Time integration\n  set End time = 1\nend\nsubsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Duration = 1\n  end\nend\nsubsection Output\n  set VTU interval = 0.001\n  set Maximum VTU frames = 10\nend\n' >> frames.prm
+shear | sed 's/^\(subsection Output\)$/\1\n  set VTU interval = 0.001\n  set Maximum VTU frames = 10/' > frames.prm # one Output section (issue 28)
+printf 'subsection Time integration\n  set End time = 1\nend\nsubsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Duration = 1\n  end\nend\n' >> frames.prm
 expect 0 "Output/VTU interval = 0.001 s would write 1001 VTU frames, more than Output/Maximum VTU frames = 10: writing one every 0.112 s instead" run frames.prm --output out
 frames=$(ls out/solution/*.vtu 2> /dev/null | wc -l)
 [ "$frames" -ge 2 ] && [ "$frames" -le 10 ] || fail "frames.prm: $frames VTU frames, expected 2 to 10"
@@ -137,8 +137,8 @@ shear > extra-end.prm
 echo end >> extra-end.prm
 expect 1 "extra-end.prm:12: 'end' without an open 'subsection'" modal extra-end.prm --output out
 
-shear '  set Floor masses = 4.9e-324' > tiny-mass.prm
-expect 1 "tiny-mass.prm:6: parameter 'Building 1/Floor masses': got 5e-324, below the smallest normal double" modal tiny-mass.prm --output out
+shear | sed 's/Floor masses = 1000/Floor masses = 4.9e-324/' > tiny-mass.prm
+expect 1 "tiny-mass.prm:4: parameter 'Building 1/Floor masses': got 5e-324, below the smallest normal double" modal tiny-mass.prm --output out
 shear > shinozuka.prm
 printf 'subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Envelope = shinozuka-sato\n    set Shinozuka beta = 0.5\n    set Shinozuka alpha = 0.9\n  end\nend\n' >> shinozuka.prm
 expect 1 "shinozuka.prm:17: parameter 'Ground motion/Stochastic/Shinozuka alpha': needs Shinozuka alpha < Shinozuka beta, got alpha = 0.9, beta = 0.5" modal shinozuka.prm --output out
