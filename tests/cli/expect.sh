@@ -14,7 +14,7 @@ expect() {
   shift 2
   n=$((n + 1))
   rm -rf out
-  timeout 60 "$poundfe" "$@" > stdout 2> stderr
+  timeout -k 5 60 "$poundfe" "$@" > stdout 2> stderr # -k: a reader blocked on a FIFO ignored SIGTERM
   local got=$?
   local said
   said=$(cat stderr stdout)

@@ -131,7 +131,7 @@ expect 1 "building2.prm:12: 'subsection Building 2', but Model/Number of buildin
 sed 's/set Realizations = 12/set Realizations = 1/' "$pair" > one-pair.prm
 { cat one-pair.prm; printf 'subsection Separation\n  subsection Site hazard\n    set File = hazard/summary.json\n    set PGA levels = 0.02, 0.05, 0.1\n  end\nend\n'; } > one.prm
 n=$((n + 1))
-if timeout 120 "$poundfe" separation one.prm --output one > one.log 2> one.err; then
+if timeout -k 5 120 "$poundfe" separation one.prm --output one > one.log 2> one.err; then
   python3 - one/summary.json hazard/summary.json <<'PY' && echo "ok   one realization per level: the gap of the closed form, and a warning" || fail "one realization per level"
 import json, math, sys
 s = json.load(open(sys.argv[1])); h = json.load(open(sys.argv[2]))
