@@ -273,6 +273,30 @@ namespace poundfe
              std::to_string(time_integration.max_steps) + " (raise it if the run is meant)");
   }
 
+  namespace
+  {
+    /// The number k of the first key "Building k" of a JSON text with k >
+    /// n_buildings, and its line; "" if there is none.
+    std::string
+    building_beyond(const std::string &text, const unsigned int n_buildings, int &line)
+    {
+      const std::string key = "\"Building ";
+      for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1))
+        {
+          const std::size_t digits = at + key.size();
+          const std::size_t end    = text.find_first_not_of("0123456789", digits);
+          if (end == digits || end == std::string::npos || text[end] != '"' || end - digits > 9)
+            continue;
+          if (std::stoul(text.substr(digits, end - digits)) > n_buildings)
+            {
+              line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+              return text.substr(digits, end - digits);
+            }
+        }
+      return "";
+    }
+  } // namespace
+
   InputParameters
   read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
   {
@@ -311,14 +335,20 @@ namespace poundfe
       }
     catch (const InputError &e)
       {
-        // deal.II's words for a building beyond the number declared
+        // a building beyond the number declared: deal.II's words for it
+        // (.prm), or a "Building <k>" key whose entries it cannot find (JSON)
         const std::string undeclared = "There is no such subsection to be entered: Building ";
-        if (e.problem().rfind(undeclared, 0) != 0)
+        std::string       building;
+        int               line = e.line();
+        if (e.problem().rfind(undeclared, 0) == 0)
+          building = e.problem().substr(undeclared.size());
+        else if (extension == ".json")
+          building = building_beyond(text, n_buildings, line);
+        if (building.empty())
           throw;
-        throw InputError(e.file(), e.line(), "",
-                         "'subsection Building " + e.problem().substr(undeclared.size()) +
-                           "', but Model/Number of buildings is " + std::to_string(n_buildings) +
-                           " (raise it, or remove the section)");
+        throw InputError(e.file(), line, "",
+                         "'Building " + building + "' is given, but Model/Number of buildings is " +
+                           std::to_string(n_buildings) + " (raise it, or remove the section)");
       }
     p.finalize();
     return p;

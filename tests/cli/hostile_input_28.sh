@@ -125,7 +125,9 @@ fi
 poundfe=$as_user expect 1 "poundfe: error: permission denied: cannot write in the output directory $work/read-only" modal fine.prm --output "$work/read-only"
 poundfe=$as_user expect 1 "poundfe: error: permission denied: cannot create directory read-only/out" modal fine.prm --output read-only/out
 { shear; printf 'subsection Building 2\n  set Type = shear\nend\n'; } > building2.prm
-expect 1 "building2.prm:12: 'subsection Building 2', but Model/Number of buildings is 1 (raise it, or remove the section)" modal building2.prm --output out
+expect 1 "building2.prm:12: 'Building 2' is given, but Model/Number of buildings is 1 (raise it, or remove the section)" modal building2.prm --output out
+printf '{ "Building 1": { "Type": "shear", "Number of storeys": "3", "Floor masses": "1000", "Storey stiffnesses": "5e6" },\n  "Building 2": { "Type": "shear" } }\n' > building2.json
+expect 1 "building2.json:2: 'Building 2' is given, but Model/Number of buildings is 1 (raise it, or remove the section)" modal building2.json --output out
 
 # --- class 2: one realization per level (the case)
 sed 's/set Realizations = 12/set Realizations = 1/' "$pair" > one-pair.prm
