@@ -12,6 +12,7 @@
 
 #include <iostream>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,29 +41,40 @@ namespace
   CommandLine
   parse_command_line(std::vector<std::string> args)
   {
-    CommandLine line;
-    std::string realizations;
+    CommandLine           line;
+    std::string           realizations;
+    std::set<std::string> given; // the options seen (-h is --help)
     for (std::size_t i = 0; i < args.size(); ++i)
-      if (args[i] == "--output" || args[i] == "--realizations")
-        {
-          if (i + 1 >= args.size() || args[i + 1].empty())
-            {
-              line.error = "poundfe: error: " + args[i] + " needs a value (see poundfe --help)\n";
-              return line;
-            }
-          (args[i] == "--output" ? line.output : realizations) = args[i + 1];
-          args.erase(args.begin() + i, args.begin() + i + 2);
-          --i;
-        }
-      else if (args[i] == "--help" || args[i] == "-h")
-        line.help = true;
-      else if (args[i] == "--version")
-        line.version = true;
-      else if (args[i].size() > 1 && args[i][0] == '-')
-        {
-          line.error = "poundfe: error: unknown option '" + args[i] + "' (see poundfe --help)\n";
-          return line;
-        }
+      {
+        const bool        option = args[i].size() > 1 && args[i][0] == '-';
+        const std::string name   = args[i] == "-h" ? "--help" : args[i];
+        if (option && !given.insert(name).second)
+          {
+            // which of two values was meant cannot be known
+            line.error = "poundfe: error: " + name + " is given twice (see poundfe --help)\n";
+            return line;
+          }
+        if (args[i] == "--output" || args[i] == "--realizations")
+          {
+            if (i + 1 >= args.size() || args[i + 1].empty())
+              {
+                line.error = "poundfe: error: " + args[i] + " needs a value (see poundfe --help)\n";
+                return line;
+              }
+            (args[i] == "--output" ? line.output : realizations) = args[i + 1];
+            args.erase(args.begin() + i, args.begin() + i + 2);
+            --i;
+          }
+        else if (name == "--help")
+          line.help = true;
+        else if (args[i] == "--version")
+          line.version = true;
+        else if (option)
+          {
+            line.error = "poundfe: error: unknown option '" + args[i] + "' (see poundfe --help)\n";
+            return line;
+          }
+      }
     line.args = std::move(args);
     if (!realizations.empty())
       {

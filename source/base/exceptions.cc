@@ -34,10 +34,27 @@ namespace poundfe
     , problem_text(std::move(problem))
   {}
 
+  namespace
+  {
+    /// The cause first where the user has to act on it: the disk, the
+    /// permissions, a read-only file system.
+    std::string
+    compose_output_error(const std::string &action, const std::string &path,
+                         const int error_number)
+    {
+      const std::string what = "cannot " + action + " " + path;
+      if (error_number == ENOSPC || error_number == EDQUOT)
+        return "disk full: " + what + ": " + std::strerror(error_number);
+      if (error_number == EACCES || error_number == EPERM)
+        return "permission denied: " + what;
+      if (error_number == EROFS)
+        return "read-only file system: " + what;
+      return what + ": " + std::strerror(error_number);
+    }
+  } // namespace
+
   OutputError::OutputError(const std::string &action, const std::string &path,
                            const int error_number)
-    : std::runtime_error(
-        std::string(error_number == ENOSPC || error_number == EDQUOT ? "disk full: " : "") +
-        "cannot " + action + " " + path + ": " + std::strerror(error_number))
+    : std::runtime_error(compose_output_error(action, path, error_number))
   {}
 } // namespace poundfe

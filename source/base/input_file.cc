@@ -72,6 +72,16 @@ namespace poundfe
       allow_zero ? non_negative(path, v) : positive(path, v);
   }
 
+  void
+  InputFile::distinct(const std::string &path, const std::vector<double> &values) const
+  {
+    for (std::size_t i = 0; i < values.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (values[j] == values[i])
+          fail(path, "lists " + number_text(values[i]) + " twice (values " + std::to_string(j + 1) +
+                       " and " + std::to_string(i + 1) + "): give each once");
+  }
+
   std::string
   trimmed(const std::string &text)
   {

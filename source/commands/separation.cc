@@ -326,6 +326,8 @@ namespace poundfe::commands
               << " in " << years_text(p.exposure_years) << ": " << rounded(result.gap_for_target[i])
               << " m\n";
         }
+      for (const std::string &warning : result.warnings)
+        out << "  warning: " << warning << "\n";
     }
     /// separation.csv and its plot (one panel per pair).
     void
@@ -523,6 +525,8 @@ namespace poundfe::commands
       begin_summary(json, "separation", input, status);
       if (hazard && !hazard->failure.empty())
         json.value("message", "site hazard: " + hazard->failure);
+      if (hazard && !hazard->warnings.empty())
+        json.value("warnings", hazard->warnings);
       json.value("method", method)
         .value("peak_displacements", peak_displacements_names().name(s.peak_displacements));
       if (spectrum)

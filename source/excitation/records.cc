@@ -132,20 +132,27 @@ namespace poundfe
         throw InputError(file, line, "", "header field DT: expected a positive time step in s "
                                          "(e.g. 0.005 or .5D-02), got '" + header.dt + "'");
       std::vector<double> values, numbers;
-      // Some files close with a trailer ("*** End Data ***"): stop at NPTS.
-      for (std::size_t i = header.line; i < lines.size() && values.size() < *npts; ++i)
+      // Some files close with a trailer ("*** End Data ***"): the values
+      // end at the first line after NPTS of them that is not numbers.
+      std::size_t i = header.line;
+      for (; i < lines.size(); ++i)
         {
           if (!parse_numbers(lines[i], numbers))
-            throw InputError(file, i + 1, "", "not a list of numbers: '" + lines[i].substr(0, 80) +
-                                                (lines[i].size() > 80 ? "...'" : "'"));
+            {
+              if (values.size() >= *npts)
+                break;
+              throw InputError(file, i + 1, "", "not a list of numbers: '" + lines[i].substr(0, 80) +
+                                                  (lines[i].size() > 80 ? "...'" : "'"));
+            }
           values.insert(values.end(), numbers.begin(), numbers.end());
         }
-      if (values.size() < *npts)
-        throw InputError(file, lines.size(), "",
+      // fewer or more values than NPTS: the header or the data is wrong,
+      // and which of them cannot be told
+      if (values.size() != *npts)
+        throw InputError(file, i, "",
                          "the header (line " + std::to_string(line) + ") promises NPTS = " +
                            std::to_string(*npts) + " values, found " +
                            std::to_string(values.size()));
-      values.resize(*npts);
       for (double &a : values)
         a *= standard_gravity;
       return checked(file, GroundMotion(*dt, std::move(values), file), "in g (AT2)");

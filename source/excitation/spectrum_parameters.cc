@@ -83,6 +83,7 @@ namespace poundfe
     for (const double zeta : damping_ratios)
       if (!(zeta >= 0 && zeta <= 0.9))
         input.fail(s + "Damping ratios", "each must lie in [0, 0.9]");
+    input.distinct(s + "Damping ratios", damping_ratios);
     if (target != DesignSpectrum::none)
       input.positive(s + "Design ground acceleration", design_ground_acceleration);
     input.non_negative(s + "Matching period", matching_period);

@@ -3,6 +3,7 @@
 // their annual exceedance rates and the Gumbel or Poisson fit.
 #include <poundfe/hazard/catalogue.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/excitation/ground_motion.h>
 
@@ -181,9 +182,7 @@ namespace poundfe
   std::vector<CatalogueEvent>
   read_catalogue(const std::string &file)
   {
-    std::ifstream in(file);
-    if (!in)
-      throw InputError(file, 0, catalogue_parameter, "cannot open the catalogue");
+    std::istringstream in(read_input_text(file, "catalogue", catalogue_parameter));
     const std::vector<std::string> required{"date", "latitude", "longitude", "magnitude"};
     std::vector<int>               column(required.size(), -1);
     std::size_t                    n_fields = 0;
@@ -255,7 +254,8 @@ namespace poundfe
     boost::property_tree::ptree tree;
     try
       {
-        boost::property_tree::read_json(file, tree);
+        std::istringstream in(read_json_text(file, "fragility file", parameter));
+        boost::property_tree::read_json(in, tree);
       }
     catch (const boost::property_tree::json_parser_error &e)
       {

@@ -6,6 +6,7 @@
 #include <poundfe/hazard/site_hazard_parameters.h>
 #include <poundfe/reliability/statistics.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/output/atomic_file.h>
@@ -21,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -78,10 +78,8 @@ namespace poundfe
     PgaHazard
     read_hazard_curve_csv(const std::string &file, const std::string &parameter)
     {
-      std::ifstream in(file);
-      if (!in)
-        throw InputError(file, 0, parameter, "cannot open the hazard curve");
-      std::string line;
+      std::istringstream in(read_input_text(file, "hazard file", parameter));
+      std::string        line;
       if (!std::getline(in, line))
         throw InputError(file, 0, parameter, "the hazard curve is empty");
       std::vector<std::string> names;
@@ -136,7 +134,8 @@ namespace poundfe
       boost::property_tree::ptree tree;
       try
         {
-          boost::property_tree::read_json(file, tree);
+          std::istringstream in(read_json_text(file, "hazard file", parameter));
+          boost::property_tree::read_json(in, tree);
         }
       catch (const boost::property_tree::json_parser_error &e)
         {
@@ -184,8 +183,7 @@ namespace poundfe
   read_pga_hazard(const std::string &file, const std::string &parameter)
   {
     const bool json = file.size() >= 5 && file.compare(file.size() - 5, 5, ".json") == 0;
-    if (!std::ifstream(file))
-      throw InputError(file, 0, parameter, "cannot open the hazard file");
+    check_input_file(file, "hazard file", parameter);
     return json ? read_hazard_summary(file, parameter) : read_hazard_curve_csv(file, parameter);
   }
 
@@ -238,10 +236,9 @@ namespace poundfe
   {
     if (!(gap > 0))
       return hazard.annual_rate(hazard.minimum_pga);
-    const LognormalCurve fragility = pounding_fragility(demand, gap);
-    if (!(fragility.beta > 0)) // D = c a^b exactly: pounding above a = theta
-      return hazard.annual_rate(std::max(hazard.minimum_pga, fragility.theta));
-    return annual_failure_rate(hazard.annual_rate, hazard.minimum_pga, fragility);
+    // beta_D = 0 (D = c a^b exactly): pounding above a = theta, the step
+    return annual_failure_rate(hazard.annual_rate, hazard.minimum_pga,
+                               pounding_fragility(demand, gap));
   }
 
   double
@@ -299,6 +296,32 @@ namespace poundfe
 
   namespace
   {
+    /// A warning when pair i's demand fit's dispersion holds no
+    /// record-to-record scatter: one realization per level (the scatter
+    /// about a line through one motion's responses), or realizations that
+    /// do not scatter. Its P(pounding) is then a step at the median demand
+    /// and its gap unconservative (issue 28).
+    void
+    warn_of_a_thin_demand_fit(const std::string &pair, const std::size_t i, PoundingHazard &result)
+    {
+      std::size_t fewest = std::numeric_limits<std::size_t>::max();
+      for (const std::vector<double> &level : result.largest_approach[i])
+        fewest = std::min(fewest, level.size());
+      const double      beta = result.demand[i].dispersion;
+      const std::string unconservative =
+        ": P(pounding) and the gap for the target are unconservative (raise Monte "
+        "Carlo/Realizations; a stochastic ground motion gives each realization its own motion)";
+      if (fewest < 2)
+        result.warnings.push_back("pair " + pair + ": the demand's dispersion beta_D = " +
+                                  rounded(beta) + " rests on " + std::to_string(fewest) +
+                                  " realization at a PGA level, so it holds no record-to-record "
+                                  "scatter" + unconservative);
+      else if (beta < 1e-6)
+        result.warnings.push_back("pair " + pair + ": the demand's dispersion beta_D = " +
+                                  rounded(beta) + ": the realizations do not scatter" +
+                                  unconservative);
+    }
+
     /// The demand model of each pair and its gap for the target (rank 0).
     void
     fit_demand_and_gaps(const std::vector<std::string> &pair_names,
@@ -320,6 +343,7 @@ namespace poundfe
             }
           result.gap_for_target.push_back(gap_for_probability_in_years(
             result.hazard, result.demand.back(), p.exposure_years, p.target_probability));
+          warn_of_a_thin_demand_fit(pair_names[i], i, result);
         }
     }
   } // namespace
@@ -368,6 +392,7 @@ namespace poundfe
         result.failure = e.what();
         result.demand.clear();
         result.gap_for_target.clear();
+        result.warnings.clear();
       }
   }
 } // namespace poundfe

@@ -71,6 +71,7 @@ namespace poundfe
     for (const double a : pga_levels)
       if (!(a > 0) || !std::isfinite(a))
         input.fail(s + "PGA levels", "every level must be positive");
+    input.distinct(s + "PGA levels", pga_levels);
     std::vector<double> sorted = pga_levels;
     std::sort(sorted.begin(), sorted.end());
     if (std::unique(sorted.begin(), sorted.end()) - sorted.begin() < 2)

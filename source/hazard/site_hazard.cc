@@ -1,6 +1,10 @@
 #include <poundfe/hazard/site_hazard.h>
 #include <poundfe/excitation/ground_motion.h>
+#include <poundfe/base/exceptions.h>
 
+#include <deal.II/base/exceptions.h>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/minima.hpp>
 
 #include <algorithm>
@@ -225,38 +229,77 @@ namespace poundfe
     return hazard.annual_rate(trifunac_brady_intensity(pga_g * standard_gravity * 100));
   }
 
+  namespace
+  {
+    /// The Gaussian of z beyond which nothing counts: phi(40) ~ 1e-349 is
+    /// zero in double precision.
+    constexpr double z_beyond = 40;
+
+    /// J = int_{z_min}^inf lambda(theta e^(beta z)) phi(z) dz over unit panels
+    /// from z_beyond down (Gauss-Kronrod 31, bisected where its error estimate
+    /// asks: a tabulated hazard has kinks). lambda decreases, so the
+    /// integrand's peak is at z <= 0 (at z = -k beta for a power law); the
+    /// panels stop at z_min or, below 0 and past the peak, once a panel adds
+    /// less than 1e-18 of the sum. The panels are in z, not in ln a: their
+    /// width follows the fragility's spread whatever beta is (a grid in ln a
+    /// of a fixed number of steps misses a narrow lognormal).
+    double
+    hazard_times_fragility_density(const std::function<double(double)> &annual_rate_of_pga,
+                                   const double z_min, const LognormalCurve &fragility)
+    {
+      const auto integrand = [&](const double z) {
+        const double density = standard_normal_pdf(z);
+        // lambda may overflow where phi is already 0 (inf * 0)
+        return density > 0 ? annual_rate_of_pga(fragility.theta * std::exp(fragility.beta * z)) *
+                               density :
+                             0.0;
+      };
+      using Rule                    = boost::math::quadrature::gauss_kronrod<double, 31>;
+      const unsigned int max_panels = 100000; // down to z = -99960: any hazard has peaked
+      double             sum        = 0;
+      for (unsigned int i = 0; i < max_panels; ++i)
+        {
+          const double top = z_beyond - i, bottom = std::max(z_min, top - 1);
+          const double panel = Rule::integrate(integrand, bottom, top, 12, 1e-13);
+          sum += panel;
+          if (!std::isfinite(sum))
+            throw NumericalError("the hazard x fragility integral overflows: the annual rate "
+                                 "exceeds the largest double within the fragility's spread "
+                                 "(theta " + std::to_string(fragility.theta) + " g, beta " +
+                                 std::to_string(fragility.beta) + ")");
+          if (bottom <= z_min)
+            return sum;
+          const bool past_the_peak = bottom < 0 && integrand(bottom) < integrand(top);
+          if (past_the_peak && sum > 0 && panel < 1e-18 * sum)
+            return sum;
+          if (sum == 0 && bottom <= -z_beyond) // lambda is 0 (underflow) where phi is not
+            return 0;
+        }
+      throw NumericalError("the hazard x fragility integral has not converged " +
+                           std::to_string(max_panels) + " standard deviations below the "
+                           "fragility's median: the hazard grows faster than a lognormal "
+                           "decays");
+    }
+  } // namespace
+
   double
   annual_failure_rate(const std::function<double(double)> &annual_rate_of_pga,
                       const double minimum_pga, const LognormalCurve &fragility)
   {
-    const double log_theta = std::log(fragility.theta), beta = fragility.beta;
-    const auto   P         = [&](const double u) { return standard_normal_cdf((u - log_theta) / beta); };
-    const auto   dP        = [&](const double u) {
-      return standard_normal_pdf((u - log_theta) / beta) / beta;
-    };
-    const double u_min = std::log(minimum_pga);
-    const double u_max = std::max(u_min, log_theta + 8 * beta);
-    // int_{a_min}^inf P |d lambda| = P(a_min) lambda(a_min) + int lambda dP
-    // (by parts), the tail beyond a_max taken with P = 1 there
-    double total = P(u_min) * annual_rate_of_pga(minimum_pga) +
-                   (1 - P(u_max)) * annual_rate_of_pga(std::exp(u_max));
-    if (u_max > u_min)
-      {
-        const double step = beta / 40;
-        unsigned long n = std::max(2.0, std::ceil((u_max - u_min) / step));
-        n += n % 2;
-        n = std::min(n, 2000000ul);
-        const double h   = (u_max - u_min) / n;
-        double       sum = 0;
-        for (unsigned long i = 0; i <= n; ++i)
-          {
-            const double u      = u_min + i * h;
-            const double weight = (i == 0 || i == n) ? 1 : (i % 2 == 1 ? 4 : 2);
-            sum += weight * annual_rate_of_pga(std::exp(u)) * dP(u);
-          }
-        total += sum * h / 3;
-      }
-    return total;
+    Assert(minimum_pga > 0 && fragility.theta >= 0 && fragility.beta >= 0,
+           dealii::ExcMessage("a positive minimum PGA, a median and a beta >= 0"));
+    // beta = 0: failure exactly above theta, the limit of beta -> 0
+    if (!(fragility.beta > 0))
+      return annual_rate_of_pga(std::max(minimum_pga, fragility.theta));
+    // by parts in z = ln(a/theta)/beta: int_{a_min}^inf P(F | a) |d lambda| =
+    // P(a_min) lambda(a_min) + int_{z_min}^inf lambda(theta e^(beta z)) phi(z) dz
+    const double z_min =
+      (std::log(minimum_pga) - std::log(fragility.theta)) / fragility.beta;
+    const double below = standard_normal_cdf(z_min); // P(F | a_min)
+    const double total = below > 0 ? below * annual_rate_of_pga(minimum_pga) : 0.0;
+    if (z_min >= z_beyond)
+      return total;
+    return total + hazard_times_fragility_density(annual_rate_of_pga, z_min, fragility);
   }
 
   double

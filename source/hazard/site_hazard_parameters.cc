@@ -85,6 +85,7 @@ namespace poundfe
     for (const double T : return_periods)
       if (!(T > 1) || !std::isfinite(T))
         input.fail("Site hazard/Return periods", "every return period must exceed 1 year");
+    input.distinct("Site hazard/Return periods", return_periods);
     if (first_year > 0 && last_year > 0 && last_year < first_year)
       input.fail("Site hazard/Last year", "is before the First year");
     if (!std::isfinite(minimum_intensity))

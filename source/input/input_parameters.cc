@@ -275,14 +275,34 @@ namespace poundfe
              std::to_string(time_integration.max_steps) + " (raise it if the run is meant)");
   }
 
+  namespace
+  {
+    /// The number k of the first key "Building k" of a JSON text with k >
+    /// n_buildings, and its line; "" if there is none.
+    std::string
+    building_beyond(const std::string &text, const unsigned int n_buildings, int &line)
+    {
+      const std::string key = "\"Building ";
+      for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1))
+        {
+          const std::size_t digits = at + key.size();
+          const std::size_t end    = text.find_first_not_of("0123456789", digits);
+          if (end == digits || end == std::string::npos || text[end] != '"' || end - digits > 9)
+            continue;
+          if (std::stoul(text.substr(digits, end - digits)) > n_buildings)
+            {
+              line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+              return text.substr(digits, end - digits);
+            }
+        }
+      return "";
+    }
+  } // namespace
+
   InputParameters
   read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
   {
-    {
-      std::ifstream in(file);
-      if (!in)
-        throw InputError(file, 0, "", "cannot open the parameter file");
-    }
+    check_input_file(file, "parameter file");
     const std::string extension = std::filesystem::path(file).extension().string();
     if (extension != ".prm" && extension != ".json")
       throw InputError(file, 0, "", "parameter files end in .prm or .json");
@@ -311,7 +331,27 @@ namespace poundfe
     p.model.buildings.resize(n_buildings);
     ParameterHandler prm;
     p.declare(prm);
-    parse(prm, p, text, extension == ".json", overrides, false);
+    try
+      {
+        parse(prm, p, text, extension == ".json", overrides, false);
+      }
+    catch (const InputError &e)
+      {
+        // a building beyond the number declared: deal.II's words for it
+        // (.prm), or a "Building <k>" key whose entries it cannot find (JSON)
+        const std::string undeclared = "There is no such subsection to be entered: Building ";
+        std::string       building;
+        int               line = e.line();
+        if (e.problem().rfind(undeclared, 0) == 0)
+          building = e.problem().substr(undeclared.size());
+        else if (extension == ".json")
+          building = building_beyond(text, n_buildings, line);
+        if (building.empty())
+          throw;
+        throw InputError(e.file(), line, "",
+                         "'Building " + building + "' is given, but Model/Number of buildings is " +
+                           std::to_string(n_buildings) + " (raise it, or remove the section)");
+      }
     p.finalize();
     return p;
   }

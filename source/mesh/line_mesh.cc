@@ -1,10 +1,10 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
 #include <poundfe/mesh/line_mesh.h>
 
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
-#include <fstream>
 #include <sstream>
 
 namespace poundfe
@@ -12,9 +12,7 @@ namespace poundfe
   LineMesh
   read_line_mesh(const std::string &file)
   {
-    std::ifstream in(file);
-    if (!in)
-      throw InputError(file, 0, "", "cannot open the mesh file");
+    std::istringstream in(read_input_text(file, "mesh file"));
 
     dealii::Triangulation<1, 2> triangulation;
     dealii::GridIn<1, 2>        grid_in;

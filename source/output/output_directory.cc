@@ -147,8 +147,8 @@ namespace poundfe
     const std::string name = (root / output_manifest_name).string();
     manifest->descriptor =
       ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0666);
-    if (manifest->descriptor < 0)
-      throw OutputError("write", name, errno);
+    if (manifest->descriptor < 0) // the first file written here: say it of the directory
+      throw OutputError("write in the output directory", root.string(), errno);
     // parents before what they hold, so a later removal empties them first
     std::sort(kept.begin(), kept.end());
     for (const std::string &entry : kept)

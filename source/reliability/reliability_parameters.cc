@@ -33,6 +33,7 @@ namespace poundfe
     for (const double limit : drift_limits)
       if (!(limit > 0))
         input.fail("Monte Carlo/Drift limits", "every limit must be positive");
+    input.distinct("Monte Carlo/Drift limits", drift_limits);
   }
 
   const NameTable<SubsetResponse> &
@@ -127,5 +128,6 @@ namespace poundfe
     for (const double pga : pga_levels)
       if (!(pga > 0))
         input.fail("Fragility/PGA levels", "every level must be positive");
+    input.distinct("Fragility/PGA levels", pga_levels);
   }
 } // namespace poundfe

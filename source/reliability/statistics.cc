@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <set>
 
 namespace poundfe
 {
@@ -158,6 +159,13 @@ namespace poundfe
     if (failures == 0 || failures == trials)
       {
         curve.note = failures == 0 ? "no failure at any level" : "failure at every level";
+        return curve;
+      }
+    // one level fixes only Phi(ln(a/theta)/beta) there: theta and beta trade
+    // along a ridge and the optimiser would stop anywhere on it
+    if (std::set<double>(intensity.begin(), intensity.end()).size() < 2)
+      {
+        curve.note = "one PGA level: theta and beta need two or more distinct levels";
         return curve;
       }
     // Start: the median at the geometric mean of the levels, beta = 0.5.

@@ -9,11 +9,14 @@
 #include <cfloat>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include <boost/test/unit_test.hpp>
+
+#include <sys/stat.h>
 
 using namespace poundfe;
 
@@ -137,4 +140,55 @@ BOOST_AUTO_TEST_CASE(line_ends_cr_lf_and_cr_alone)
     }
   std::remove(file.c_str());
   BOOST_TEST(poundfe_test::input_error_of([] { read_input_text("."); }) == ".: is a directory, not a parameter file");
+}
+
+// Issue 28 classes 1, 8, 9: the reader every input file goes through.
+BOOST_AUTO_TEST_CASE(every_reader_is_bounded)
+{
+  using poundfe_test::input_error_of;
+  // a byte-order mark is dropped, a NUL byte refused with its line and column
+  const std::string bom = poundfe_test::temporary_file("bom.csv", "\xEF\xBB\xBF" "date,x\n1950,1\n");
+  BOOST_TEST(read_input_text(bom, "catalogue") == "date,x\n1950,1\n");
+  const std::string binary =
+    poundfe_test::temporary_file("binary.prm", std::string("set a = 1\nELF\x7f", 14) + '\0' + "x");
+  BOOST_TEST(input_error_of([&] { read_input_text(binary); }) ==
+             binary + ":2: a NUL byte (column 5): a binary file, not a text parameter file");
+  // a line of max_line_length + 1 characters, with the parameter named
+  const std::string wide =
+    poundfe_test::temporary_file("wide.csv", "a\n" + std::string(max_line_length + 1, 'x') + "\n");
+  BOOST_TEST(input_error_of([&] { read_input_text(wide, "catalogue", "Site hazard/Catalogue file"); }) ==
+             wide + ":2: parameter 'Site hazard/Catalogue file': a line of 1048577 characters, "
+                    "more than the 1048576 a line may have");
+  // devices and FIFOs are refused before they are opened (no wait, no endless read)
+  BOOST_TEST(input_error_of([] { read_input_text("/dev/zero", "record file"); }) ==
+             "/dev/zero: is a device (like /dev/zero), not a regular file: the record file must be "
+             "a file whose end can be known");
+  const std::string fifo = std::filesystem::temp_directory_path() / "poundfe_test_fifo.json";
+  std::remove(fifo.c_str());
+  BOOST_TEST(mkfifo(fifo.c_str(), 0600) == 0);
+  BOOST_TEST(input_error_of([&] { read_json_text(fifo, "hazard file", "Separation/Site hazard/File"); })
+               .find(fifo + ": parameter 'Separation/Site hazard/File': is a named pipe (FIFO)") == 0);
+  BOOST_TEST(input_error_of([] { read_input_text("/no/such/file.at2", "record file"); }) ==
+             "/no/such/file.at2: cannot open the record file (no such file)");
+  for (const std::string &f : {bom, binary, wide, fifo})
+    std::remove(f.c_str());
+}
+
+BOOST_AUTO_TEST_CASE(duplicates_are_errors)
+{
+  using poundfe_test::input_error_of;
+  BOOST_TEST(input_error_of([] {
+               prepare_prm_text("f.prm", "subsection A\n  set x = 1\n  set y = 2\n  set x = 3\nend\n");
+             }) == "f.prm:4: parameter 'A/x': is set a second time; the first is at line 2 (the last "
+                   "would win silently)");
+  BOOST_TEST(input_error_of([] {
+               prepare_prm_text("f.prm", "subsection A\n  set x = 1\nend\nsubsection A\n  set y = 1\nend\n");
+             }) == "f.prm:4: 'subsection A' (A) is entered a second time; the first is at line 1 (set "
+                   "its entries in one place)");
+  // the same entry in two sections, the same section in two parents: fine
+  prepare_prm_text("f.prm", "subsection A\n  subsection D\n    set x = 1\n  end\nend\n"
+                            "subsection B\n  subsection D\n    set x = 1\n  end\nend\n");
+  BOOST_TEST(input_error_of([] { check_json_text("f.json", "{ \"A\": { \"x\": 1,\n \"x\": 2 } }"); }) ==
+             "f.json:2: the key \"x\" appears a second time in one object; the first is at line 1");
+  check_json_text("f.json", "{ \"A\": { \"x\": 1 }, \"B\": { \"x\": [\"x\", \"x\"] } }");
 }

@@ -9,44 +9,11 @@
 #   scaling, messages that blame the right file and print numbers exactly.
 set -u
 poundfe=$1
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
-failures=0
-n=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-
-# expect STATUS TEXT COMMAND...: exit status, a message (stderr, one line on
-# failure; stdout on success) containing TEXT, no output directory on 1.
-expect() {
-  local status=$1 text=$2
-  shift 2
-  n=$((n + 1))
-  rm -rf out
-  timeout 60 "$poundfe" "$@" > stdout 2> stderr
-  local got=$?
-  local said
-  said=$(cat stderr stdout)
-  if [ "$got" -ne "$status" ]; then
-    fail "$*: exit $got, expected $status: $(head -c 400 stderr)"; return
-  fi
-  if ! grep -qF -- "$text" stderr stdout; then
-    fail "$*: no '$text' in: $(echo "$said" | head -c 400)"; return
-  fi
-  if [ "$status" -ne 0 ] && [ "$(wc -l < stderr)" -ne 1 ]; then
-    fail "$*: expected one line: $(head -c 400 stderr)"; return
-  fi
-  if [ "$status" -eq 1 ] && [ -e out ]; then
-    fail "$*: output written despite bad input"; return
-  fi
-  echo "ok   $*: $(head -c 200 stderr)"
-}
-
-shear() { # a three-storey shear building; $1: extra text inside Building 1
-  printf 'subsection Building 1\n  set Type = shear\n  set Number of storeys = 3\n'
-  printf '  set Floor masses = 1000\n  set Storey stiffnesses = 5e6\n%s\nend\n' "${1:-}"
-  printf 'subsection Output\n  set Plots = false\n  set Number of modes = 3\nend\n'
-}
+. "$here/expect.sh"
 
 # 1. long lines: a list of 6,000 values, a 30,000-character subsection name
 heights=$(python3 -c 'print(", ".join(["3.0"] * 6000))')
@@ -77,8 +44,8 @@ shear > long-noise.prm
 printf 'subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Duration = 1e308\n  end\nend\n' >> long-noise.prm
 expect 1 "long-noise.prm:15: parameter 'Ground motion/Stochastic/Duration': needs unboundedly many samples of 0.001 s" run long-noise.prm --output out
 
-shear > frames.prm
-printf 'subsection Time integration\n  set End time = 1\nend\nsubsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Duration = 1\n  end\nend\nsubsection Output\n  set VTU interval = 0.001\n  set Maximum VTU frames = 10\nend\n' >> frames.prm
+shear | sed 's/^\(subsection Output\)$/\1\n  set VTU interval = 0.001\n  set Maximum VTU frames = 10/' > frames.prm # one Output section (issue 28)
+printf 'subsection Time integration\n  set End time = 1\nend\nsubsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Duration = 1\n  end\nend\n' >> frames.prm
 expect 0 "Output/VTU interval = 0.001 s would write 1001 VTU frames, more than Output/Maximum VTU frames = 10: writing one every 0.112 s instead" run frames.prm --output out
 frames=$(ls out/solution/*.vtu 2> /dev/null | wc -l)
 [ "$frames" -ge 2 ] && [ "$frames" -le 10 ] || fail "frames.prm: $frames VTU frames, expected 2 to 10"
@@ -170,11 +137,11 @@ shear > extra-end.prm
 echo end >> extra-end.prm
 expect 1 "extra-end.prm:12: 'end' without an open 'subsection'" modal extra-end.prm --output out
 
-shear '  set Floor masses = 4.9e-324' > tiny-mass.prm
-expect 1 "tiny-mass.prm:6: parameter 'Building 1/Floor masses': got 5e-324, below the smallest normal double" modal tiny-mass.prm --output out
+shear | sed 's/Floor masses = 1000/Floor masses = 4.9e-324/' > tiny-mass.prm
+expect 1 "tiny-mass.prm:4: parameter 'Building 1/Floor masses': got 5e-324, below the smallest normal double" modal tiny-mass.prm --output out
 shear > shinozuka.prm
-printf 'subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Envelope = shinozuka-sato\n    set Shinozuka alpha = 0.1\n    set Shinozuka beta = 0.5\n    set Shinozuka alpha = 0.9\n  end\nend\n' >> shinozuka.prm
-expect 1 "shinozuka.prm:18: parameter 'Ground motion/Stochastic/Shinozuka alpha': needs Shinozuka alpha < Shinozuka beta, got alpha = 0.9, beta = 0.5" modal shinozuka.prm --output out
+printf 'subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Envelope = shinozuka-sato\n    set Shinozuka beta = 0.5\n    set Shinozuka alpha = 0.9\n  end\nend\n' >> shinozuka.prm
+expect 1 "shinozuka.prm:17: parameter 'Ground motion/Stochastic/Shinozuka alpha': needs Shinozuka alpha < Shinozuka beta, got alpha = 0.9, beta = 0.5" modal shinozuka.prm --output out
 
 # 10. record values that units or scaling make non-finite or denormal
 printf 'NPTS=  3, DT= .01 SEC\n 0.1 1e308 0.3\n' > huge.at2
@@ -187,5 +154,4 @@ printf 'NPTS=  3, DT= .01 SEC\n 1e10 0 -1e10\n' > strong.at2
 sed -e 's/record.at2/strong.at2/' -e 's/^  end/  end\n  set Scale factor = 1e300/' record.prm > strong.prm
 expect 1 "strong.prm:6: parameter 'Ground motion/Scale factor': scales sample 1 of the ground motion to inf m/s^2" ground-motion strong.prm --output out
 
-echo "$n hostile-input cases, $failures failures"
-[ "$failures" -eq 0 ]
+report hostile-input

@@ -226,7 +226,10 @@ BOOST_AUTO_TEST_CASE(bad_hazard_input_is_reported)
   p.minimum_pga        = 0;
   BOOST_TEST(poundfe_test::input_error_of([&] { p.check(file); }).find("Minimum PGA") != std::string::npos);
   p.minimum_pga = 0.01;
-  p.pga_levels  = {0.2, 0.2};
+  p.pga_levels  = {0.2};
   BOOST_TEST(poundfe_test::input_error_of([&] { p.check(file); }).find("two or more distinct") !=
+             std::string::npos);
+  p.pga_levels = {0.2, 0.3, 0.2}; // issue 28: a level twice is an error of its own
+  BOOST_TEST(poundfe_test::input_error_of([&] { p.check(file); }).find("lists 0.2 twice (values 1 and 3)") !=
              std::string::npos);
 }

@@ -31,6 +31,9 @@ namespace poundfe
     /// One value for all or n values, each positive (or >= 0 with allow_zero).
     void list(const std::string &path, const std::vector<double> &values, std::size_t n,
               bool allow_zero, const std::string &what) const;
+    /// A list of levels, ratios or periods: a value given twice is refused
+    /// (it would be run or reported twice, or mean a typo).
+    void distinct(const std::string &path, const std::vector<double> &values) const;
   };
 
   /// `text` without its leading and trailing blanks (spaces, tabs, CR).

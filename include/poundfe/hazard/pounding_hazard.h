@@ -104,6 +104,9 @@ namespace poundfe
     std::vector<double>         gap_for_target; // per pair, m
     bool                        interrupted = false;
     std::string                 failure; // why the demand fit or the gap failed ("" if not)
+    /// What makes the results doubtful (a demand fit without scatter), for
+    /// the console and summary.json's "warnings".
+    std::vector<std::string> warnings;
   };
 
   /// The hazard of Separation/Site hazard (`parameters`, paths relative to
