@@ -612,7 +612,7 @@ namespace poundfe
       const std::vector<double>  values = sweep.values();
       std::vector<InputParameters> inputs; // every value checked before anything runs
       for (const double v : values)
-        inputs.push_back(sweep.input_for(input, v));
+        inputs.push_back(sweep_input(sweep, input, v));
       if (dealii::Utilities::MPI::this_mpi_process(comm) == 0) // each value's directory resumes
         prepare_output_directory(directory);
       const unsigned long  per_value = input.stationary_pdf.realizations;

@@ -19,6 +19,9 @@ namespace poundfe
   {
   public:
     /// Throws InputError when the input has no random loading.
+    RealizationRunner(const Analysis &analysis, const TimeHistoryParameters &parameters);
+    /// TRANSITIONAL (issue 27): the parameters of Analysis::input; defined
+    /// in source/input/engine_parameters.cc, goes with that member.
     explicit RealizationRunner(const Analysis &analysis);
 
     unsigned int n_variables() const { return load.n_variables(); }
@@ -58,6 +61,7 @@ namespace poundfe
 
   private:
     const Analysis          &analysis;
+    const TimeHistoryParameters parameters;
     Excitation               excitation;
     StochasticLoad           load; // after the excitation it is made from
     TimeHistory              history;
