@@ -245,14 +245,15 @@ BOOST_AUTO_TEST_CASE(shear_building_storey_shears_balance_the_floor_inertia)
 
 BOOST_AUTO_TEST_CASE(frame_base_shear_differs_from_inertia_by_the_damping_share)
 {
-  const Analysis   analysis   = prepare_analysis(read_parameters(write_input("frame", frame)));
-  const Excitation excitation = make_excitation(analysis);
+  const InputParameters input      = read_parameters(write_input("frame", frame));
+  const Analysis        analysis   = prepare_analysis(input);
+  const Excitation      excitation = make_excitation(analysis, input);
   const std::string dir = std::filesystem::temp_directory_path() / "poundfe-recorders-frame";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
 
   // The time loop with the input's recorders and a test observer.
-  TimeHistory      history(analysis);
+  TimeHistory      history(analysis, time_history_parameters(input));
   PeakResponse     peaks(analysis.model, history.nonlinear_elements());
   EquilibriumTerms terms;
   auto recorders = make_recorders(analysis.input.output.recorders, analysis.input.file, history.state(),
