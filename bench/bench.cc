@@ -55,8 +55,11 @@
 #include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/input/bifurcation_input.h>
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/model/model_builder.h>
+#include <poundfe/report/run_outputs.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -107,7 +110,8 @@ namespace
     const auto     t0       = std::chrono::steady_clock::now();
     const Analysis analysis = prepare_analysis(input);
     const double   setup    = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const Excitation excitation = make_excitation(analysis);
+    const RunParameters parameters = run_parameters(input);
+    const Excitation excitation = make_excitation(analysis, parameters.time_history);
     const std::string dir = std::filesystem::temp_directory_path() / "poundfe-bench";
     for (const std::string &solver : solvers)
       {
@@ -120,7 +124,7 @@ namespace
             options.linear_solver    = solver;
             options.vtu              = false;
             options.plots            = false;
-            result = run_time_history(analysis, excitation, options);
+            result = run_time_history(analysis, parameters, excitation, options);
             best   = std::min(best, result.status.wall_time);
           }
         const IterationStatistics &s = result.statistics;
@@ -138,9 +142,9 @@ namespace
   /// Best steps/s of `repeats` runs of `analysis` writing into `directory`
   /// (empty: no output).
   double
-  best_steps_per_second(const Analysis &analysis, const Excitation &excitation,
-                        const std::string &directory, const unsigned int repeats,
-                        unsigned long &steps)
+  best_steps_per_second(const Analysis &analysis, const RunParameters &parameters,
+                        const Excitation &excitation, const std::string &directory,
+                        const unsigned int repeats, unsigned long &steps)
   {
     double best = 0;
     for (unsigned int r = 0; r < repeats; ++r)
@@ -149,7 +153,7 @@ namespace
         options.output_directory = directory;
         options.vtu              = false;
         options.plots            = false;
-        const RunResult result   = run_time_history(analysis, excitation, options);
+        const RunResult result   = run_time_history(analysis, parameters, excitation, options);
         steps                    = result.status.steps;
         best = std::max(best, result.status.steps / result.status.wall_time);
       }
@@ -163,11 +167,13 @@ namespace
                unsigned long &steps)
   {
     input.output.recorders.format = format;
-    const Analysis    analysis    = prepare_analysis(input);
-    const Excitation  excitation  = make_excitation(analysis);
+    const Analysis      analysis   = prepare_analysis(input);
+    const RunParameters parameters = run_parameters(input);
+    const Excitation    excitation = make_excitation(analysis, parameters.time_history);
     const std::string dir = std::filesystem::temp_directory_path() / "poundfe-bench-output";
     std::filesystem::remove_all(dir);
-    const double   speed = best_steps_per_second(analysis, excitation, dir, repeats, steps);
+    const double   speed =
+      best_steps_per_second(analysis, parameters, excitation, dir, repeats, steps);
     std::uintmax_t bytes = 0;
     for (const auto &file : std::filesystem::directory_iterator(dir))
       bytes += file.file_size();
@@ -185,8 +191,9 @@ namespace
     const auto    csv   = output_speed(input, OutputFormat::csv, repeats, steps);
     const auto    npy   = output_speed(input, OutputFormat::npy, repeats, steps);
     const Analysis   analysis   = prepare_analysis(input);
-    const double     none       = best_steps_per_second(analysis, make_excitation(analysis), "",
-                                                        repeats, steps);
+    const RunParameters parameters = run_parameters(input);
+    const double        none       = best_steps_per_second(
+      analysis, parameters, make_excitation(analysis, parameters.time_history), "", repeats, steps);
     std::printf("%-30s %3u eqs %7lu steps  no output %9.0f steps/s  csv %9.0f steps/s (%5.1f MB)"
                 "  npy %9.0f steps/s (%5.1f MB)\n",
                 label, analysis.model.n_equations(), steps, none, csv.first, csv.second,
@@ -212,8 +219,9 @@ namespace
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     const auto         t0      = std::chrono::steady_clock::now();
-    const Analysis     analysis = prepare_analysis(read_parameters(file));
-    RealizationRunner  runner(analysis);
+    const InputParameters input    = read_parameters(file);
+    const Analysis        analysis = prepare_analysis(input);
+    RealizationRunner     runner(analysis, time_history_parameters(input));
     const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     double       one   = 1e300;
     std::vector<double> responses;
@@ -269,15 +277,17 @@ namespace
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     auto               start   = std::chrono::steady_clock::now();
-    const Analysis     analysis   = prepare_analysis(read_parameters(file));
-    const Excitation   excitation = make_excitation(analysis);
-    const double       prepare    = seconds_since(start);
+    const InputParameters input      = read_parameters(file);
+    const Analysis        analysis   = prepare_analysis(input);
+    const RunParameters   parameters = run_parameters(input);
+    const Excitation      excitation = make_excitation(analysis, parameters.time_history);
+    const double          prepare    = seconds_since(start);
     // The engine alone (elements, K_eff, MUMPS analysis and first
     // factorisation), to separate its set-up from the stepping below.
     const DistributedSolverProfile before_engine = distributed_solver_profile();
     start = std::chrono::steady_clock::now();
     {
-      TimeHistory history(analysis);
+      TimeHistory history(analysis, parameters.time_history);
     }
     const double engine = seconds_since(start);
     const DistributedSolverProfile in_engine =
@@ -289,7 +299,7 @@ namespace
     options.vtu              = false;
     options.plots            = false;
     const DistributedSolverProfile before_run = distributed_solver_profile();
-    const RunResult result = run_time_history(analysis, excitation, options);
+    const RunResult result = run_time_history(analysis, parameters, excitation, options);
     const DistributedSolverProfile in_steps =
       difference(difference(distributed_solver_profile(), before_run), in_engine);
     if (rank == 0)

@@ -140,7 +140,7 @@ main(int argc, char **argv)
     }
   const std::vector<std::string> arguments(line.args.begin() + 1, line.args.end());
   if (!command->reads_parameters) // print-parameters, template
-    return command->run({arguments, nullptr, line.output, 0, MPI_COMM_SELF, err});
+    return command->run({arguments, nullptr, line.output, 0, MPI_COMM_SELF, err, std::cout});
   // Every command that writes files stops cleanly on SIGINT/SIGTERM: at its
   // own safe points, or at the next file write (commands/command_guard.h).
   install_interruption_handlers();
@@ -174,7 +174,8 @@ main(int argc, char **argv)
             return 1;
           }
         return command->run({arguments, &input, directory, line.n_realizations,
-                             mpi ? MPI_COMM_WORLD : MPI_COMM_SELF, err});
+                             mpi ? MPI_COMM_WORLD : MPI_COMM_SELF, err,
+                             writes ? std::cout : silent});
       });
     }
   catch (const InputError &e)

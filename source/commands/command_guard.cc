@@ -1,5 +1,6 @@
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/commands/command_guard.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/output/atomic_file.h>

@@ -1,6 +1,7 @@
 // `poundfe fragility`: Monte Carlo at each PGA level (reliability/montecarlo.h)
 // and the lognormal fragility curves fitted to it; rank 0 writes the
 // points, the curves, their plot and summary.json.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
@@ -130,12 +131,12 @@ namespace poundfe::commands
     const std::string         &directory = run.directory;
     const MPI_Comm             comm      = run.communicator;
     const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    dealii::ConditionalOStream pcout(run.out, rank == 0);
     dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
 
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
-    RealizationRunner runner(analysis);
+    RealizationRunner runner(analysis, time_history_parameters(input));
     const double      reference_pga = runner.reference_pga("fragility curves");
     if (rank == 0) // an earlier run's realizations stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});

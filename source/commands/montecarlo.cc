@@ -1,6 +1,7 @@
 // `poundfe montecarlo`: Monte Carlo over the random loading, on the MPI
 // ranks (reliability/montecarlo.h runs the realizations); rank 0 writes the
 // statistics, the exceedance probabilities and the PDFs and CDFs.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
@@ -223,13 +224,13 @@ namespace poundfe::commands
     const MPI_Comm             comm      = run.communicator;
     const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int         n_ranks   = dealii::Utilities::MPI::n_mpi_processes(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    dealii::ConditionalOStream pcout(run.out, rank == 0);
     // rank 0's own times: the other ranks leave before the output section
     dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
 
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
-    RealizationRunner runner(analysis);
+    RealizationRunner runner(analysis, time_history_parameters(input));
     if (rank == 0) // an earlier run's realizations stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});
     timer.leave_subsection();

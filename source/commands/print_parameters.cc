@@ -2,7 +2,7 @@
 #include <poundfe/commands/command.h>
 #include <poundfe/input/input_parameters.h>
 
-#include <iostream>
+#include <ostream>
 
 namespace poundfe::commands
 {
@@ -15,7 +15,7 @@ namespace poundfe::commands
                 << run.arguments[0] << "'\n";
         return 1;
       }
-    poundfe::print_parameters(std::cout);
+    poundfe::print_parameters(run.out);
     return 0;
   }
 } // namespace poundfe::commands

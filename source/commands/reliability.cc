@@ -179,7 +179,7 @@ namespace poundfe::commands
       out << e.method << ": Pf = " << e.probability
           << (e.coefficient_of_variation > 0 ? " (COV " + std::to_string(e.coefficient_of_variation) + ")" : "")
           << ", " << e.n_evaluations << " evaluations\n";
-    std::cout << out.str() << "results in " << run.directory
+    run.out << out.str() << "results in " << run.directory
               << "/ (summary.json, design_points.csv, estimates.csv)\n";
     if (!report.failure.empty())
       run.err << "poundfe: numerical failure: " << report.failure << "\n";

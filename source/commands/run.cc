@@ -1,12 +1,107 @@
-// `poundfe run`: the time history of the model, with every output of the Output section.
+// `poundfe run`: the time history of the model, with every output of the
+// Output section (recorders, floor spectra, VTU series, summary.json, plots).
+//   set-up:       the analysis (model, M, K, modes, C) and the excitation
+//   time history: the run with the standard observers (report/run_outputs.h)
+//   report:       the run's scalars on the console; the exit status
+#include <poundfe/base/console.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/commands/command.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/report/run_outputs.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <ostream>
+
+namespace poundfe
+{
+  namespace
+  {
+    /// The run's steps, Newton iterations, impacts and energy balance, its
+    /// warnings on `err`, and where the results are.
+    void
+    report_run(const Analysis &analysis, const RunResult &result, const std::string &directory,
+               std::ostream &out, std::ostream &err)
+    {
+      const RunStatus &status = result.status;
+      out << "poundfe run: " << status.steps << " steps to t = " << status.end_time << " s in "
+          << status.wall_time << " s\n";
+      if (result.n_nonlinear_elements > 0)
+        out << result.n_nonlinear_elements << " nonlinear elements; Newton "
+            << double(result.statistics.iterations) / std::max(1ul, result.statistics.steps)
+            << " iterations per step (max " << result.statistics.max_iterations << "), "
+            << result.statistics.step_cuts << " step cuts\n";
+      if (!analysis.model.gaps.empty())
+        out << analysis.model.gaps.size() << " gap elements, " << result.n_impacts
+            << " impacts (impacts.csv)\n";
+      out << "energy balance error " << result.max_energy_error << " (max relative)\n";
+      for (const std::string &warning : result.warnings)
+        err << "poundfe: warning: " << warning << "\n";
+      out << "results in " << directory << "/ (summary.json lists the files)\n";
+    }
+
+    /// 1 when a file could not be written, 2 on a numerical failure, 128 +
+    /// signal when interrupted, else 0; what stopped the run on `err`.
+    int
+    exit_status(const RunStatus &status, std::ostream *err)
+    {
+      if (status.output_failed)
+        {
+          if (err)
+            *err << "poundfe: error: " << status.message << " (the run stopped at t = "
+                 << status.end_time << " s; every other file is complete to that time, "
+                 << "and summary.json says what failed unless it is the file named)\n";
+          return 1;
+        }
+      if (status.kind == RunStatus::Kind::failed)
+        {
+          if (err)
+            *err << "poundfe: numerical failure: " << status.message
+                 << " (results up to that time are written)\n";
+          return 2;
+        }
+      if (status.kind == RunStatus::Kind::interrupted)
+        {
+          if (err)
+            *err << "poundfe: interrupted at t = " << status.end_time
+                 << " s (results up to that time are written)\n";
+          return interrupted_exit_status();
+        }
+      return 0;
+    }
+  } // namespace
+} // namespace poundfe
 
 namespace poundfe::commands
 {
   int
   run(const CommandRun &run)
   {
-    return run_command(prepare_analysis(*run.input), run.directory);
+    const InputParameters &input = *run.input;
+    // every rank of a distributed solver runs the analysis; rank 0 writes
+    const bool          root = writes_outputs();
+    dealii::TimerOutput timer(run.out, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+
+    timer.enter_subsection("set-up");
+    const Analysis      analysis   = prepare_analysis(input);
+    const RunParameters parameters = run_parameters(input);
+    const Excitation    excitation = make_excitation(analysis, parameters.time_history);
+    timer.leave_subsection();
+
+    timer.enter_subsection("time history");
+    RunOptions options;
+    options.output_directory = root ? run.directory : "";
+    options.progress         = root;
+    options.interruptible    = true;
+    options.console          = &run.out;
+    const RunResult result   = run_time_history(analysis, parameters, excitation, options);
+    timer.leave_subsection();
+    if (!root)
+      return exit_status(result.status, nullptr);
+
+    report_run(analysis, result, run.directory, run.out, run.err);
+    print_timing(timer);
+    return exit_status(result.status, &run.err);
   }
 } // namespace poundfe::commands

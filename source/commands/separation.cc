@@ -6,6 +6,7 @@
 // hazard/pounding_hazard.h). Rank 0 writes separation.csv,
 // pounding_probability.csv, spectrum_modes.csv, pounding_hazard.csv,
 // pounding_given_pga.csv, the plots and summary.json.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/numbers.h>
@@ -688,12 +689,13 @@ namespace poundfe::commands
     {
       const unsigned int    rank  = dealii::Utilities::MPI::this_mpi_process(comm);
       const MonteCarloTable table = run_realizations_without_contact(
-        analysis, pairs, input.monte_carlo.realizations, directory, comm, outcome.results);
+        analysis, time_history_parameters(input), pairs, input.monte_carlo.realizations, directory,
+        comm, outcome.results);
       if (hazard && table.interrupted) // the levels not begun: the same command runs them
         hazard->interrupted = true;
       else if (hazard)
         {
-          RealizationRunner  runner(analysis);
+          RealizationRunner  runner(analysis, time_history_parameters(input));
           SeparationObserver observer(analysis.model, pairs);
           run_pounding_hazard(largest_approach_job(runner, observer, pairs),
                               input.monte_carlo.realizations, input.separation.hazard, directory,
@@ -719,10 +721,11 @@ namespace poundfe::commands
 
     /// One time history without contact (rank 0).
     void
-    run_deterministic(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
-                      Outcome &outcome)
+    run_deterministic(const InputParameters &input, const Analysis &analysis,
+                      const std::vector<AdjacentPair> &pairs, Outcome &outcome)
     {
-      const RunStatus run = run_without_contact(analysis, pairs, outcome.results);
+      const RunStatus run =
+        run_without_contact(analysis, time_history_parameters(input), pairs, outcome.results);
       outcome.status      = run.name();
       outcome.method      = "time history without contact";
       if (run.kind == RunStatus::Kind::failed)
@@ -766,7 +769,7 @@ namespace poundfe::commands
     const std::string         &directory = run.directory;
     const MPI_Comm             comm      = run.communicator;
     const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    dealii::ConditionalOStream pcout(run.out, rank == 0);
 
     // Set-up: everything read and checked before any output.
     const InputParameters           input    = free_input(*run.input);
@@ -777,7 +780,7 @@ namespace poundfe::commands
     if (input.separation.hazard.given())
       hazard = prepare_pounding_hazard(
         input.separation.hazard, input,
-        RealizationRunner(analysis).reference_pga("the PGA levels of a site hazard"));
+        RealizationRunner(analysis, time_history_parameters(input)).reference_pga("the PGA levels of a site hazard"));
     std::optional<SpectrumPeaks> spectrum; // it may find bad input
     if (route.by_spectrum && rank == 0)
       spectrum = spectrum_peaks(analysis, pairs, input.spectrum, input.separation,
@@ -805,7 +808,7 @@ namespace poundfe::commands
       {
         if (rank != 0)
           return 0;
-        run_deterministic(analysis, pairs, outcome);
+        run_deterministic(input, analysis, pairs, outcome);
       }
     for (std::size_t p = 0; p < pairs.size(); ++p)
       apply_rules(input.separation, pairs[p], outcome.results[p]);

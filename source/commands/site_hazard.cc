@@ -269,7 +269,7 @@ namespace poundfe::commands
     json.begin_object("output").value("files", files).end_object();
     json.end_object();
     write_file_atomically(directory + "/summary.json", json.str());
-    const dealii::ConditionalOStream pcout(std::cout, writes_outputs());
+    const dealii::ConditionalOStream pcout(run.out, writes_outputs());
     print_report(pcout, input, period, catalogue, events, hazard, failure);
     pcout << "results in " << directory << "/ (summary.json lists the files)\n";
     return 0;

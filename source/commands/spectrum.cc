@@ -1,8 +1,10 @@
-#include <poundfe/dynamics/analysis.h>
+// `poundfe spectrum`: the response spectrum and intensity measures of the
+// input's ground motion; with --realizations N, the ensemble mean spectrum
+// (reliability/ensemble_spectrum.h) against the Spectrum section's target
+// and the S0 that matches it.
 #include <poundfe/commands/command.h>
-#include <poundfe/input/input_parameters.h>
-#include <poundfe/reliability/statistics.h>
-#include <poundfe/base/interruption.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/reliability/ensemble_spectrum.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/response_spectrum.h>
 #include <poundfe/output/atomic_file.h>
@@ -11,7 +13,7 @@
 #include <poundfe/output/plots.h>
 
 #include <cmath>
-#include <iostream>
+#include <ostream>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -141,7 +143,7 @@ namespace poundfe
 
     /// One motion: spectrum.csv, spectrum.png, summary.json.
     int
-    single_spectrum(const InputParameters &input, const std::string &directory)
+    single_spectrum(const InputParameters &input, const std::string &directory, std::ostream &out)
     {
       const GroundMotion motion =
         make_ground_motion(input.ground_motion, input, input.time_integration.newmark.time_step);
@@ -185,15 +187,15 @@ namespace poundfe
       json.value("files", files).end_object();
       write_file_atomically(directory + "/summary.json", json.str());
 
-      std::cout << motion.description() << ": PGA " << intensity.pga << " m/s^2 ("
-                << intensity.pga / standard_gravity << " g), PGV " << intensity.pgv
-                << " m/s, PGD " << intensity.pgd << " m (no baseline correction)\n"
-                << "Arias intensity " << intensity.arias_intensity << " m/s, D5-95 "
-                << intensity.significant_duration << " s (" << intensity.t5 << " to "
-                << intensity.t95 << " s)\n"
-                << "peak PSA (" << percent(s.damping_ratios.front()) << ") "
-                << spectrum.psa(0, peak) << " m/s^2 at T = " << spectrum.periods[peak] << " s\n"
-                << "results in " << directory << "/ (spectrum.csv, summary.json)\n";
+      out << motion.description() << ": PGA " << intensity.pga << " m/s^2 ("
+          << intensity.pga / standard_gravity << " g), PGV " << intensity.pgv
+          << " m/s, PGD " << intensity.pgd << " m (no baseline correction)\n"
+          << "Arias intensity " << intensity.arias_intensity << " m/s, D5-95 "
+          << intensity.significant_duration << " s (" << intensity.t5 << " to "
+          << intensity.t95 << " s)\n"
+          << "peak PSA (" << percent(s.damping_ratios.front()) << ") "
+          << spectrum.psa(0, peak) << " m/s^2 at T = " << spectrum.periods[peak] << " s\n"
+          << "results in " << directory << "/ (spectrum.csv, summary.json)\n";
       return 0;
     }
 
@@ -202,92 +204,20 @@ namespace poundfe
     matching_period(const InputParameters &input)
     {
       if (input.spectrum.matching_period > 0)
-        return {input.spectrum.matching_period, "Spectrum/Matching period"};
+        return {input.spectrum.matching_period, "Spectrum/SpectrumMatching period"};
       const Analysis analysis = prepare_analysis(input);
       if (analysis.modes.n_modes() == 0)
-        input.fail("Spectrum/Matching period",
+        input.fail("Spectrum/SpectrumMatching period",
                    "is 0 (the model's first period) but the model has no modes "
                    "(Output/Number of modes = 0): give the period");
       return {analysis.modes.period(0), "first mode of the model"};
     }
 
-    /// The spectra and intensity measures of realizations 0..N-1.
-    struct Ensemble
-    {
-      std::vector<double>           periods; // the grid, then T1 when matching
-      unsigned int                  n_grid = 0;
-      std::vector<SampleStatistics> psa;      // index d * periods.size() + i
-      std::vector<SampleStatistics> measures; // PGA, PGV, PGD, Arias, D5-95
-
-      const SampleStatistics &at(const unsigned int d, const unsigned int i) const
-      {
-        return psa[d * periods.size() + i];
-      }
-    };
-
-    Ensemble
-    compute_ensemble(const MotionGenerator &generator, const double scale_factor,
-                     std::vector<double> periods, const std::vector<double> &damping_ratios,
-                     const unsigned int n_realizations)
-    {
-      Ensemble                         ensemble;
-      const unsigned int               n_columns = damping_ratios.size() * periods.size();
-      std::vector<std::vector<double>> psa(n_columns), measures(5);
-      std::vector<double>              xi(generator.n_variables()), samples;
-      for (unsigned int r = 0; r < n_realizations; ++r)
-        {
-          throw_if_interrupted();
-          standard_normals(generator.motion().seed, r, xi);
-          generator.generate(xi.data(), samples);
-          GroundMotion motion(generator.motion().sample_interval, samples,
-                              generator.description(), generator.held());
-          motion.scale(scale_factor);
-          const ResponseSpectrum spectrum = response_spectrum(motion, periods, damping_ratios);
-          for (unsigned int d = 0; d < damping_ratios.size(); ++d)
-            for (unsigned int i = 0; i < periods.size(); ++i)
-              psa[d * periods.size() + i].push_back(spectrum.psa(d, i));
-          const GroundMotionIntensity m = ground_motion_intensity(motion);
-          const double values[] = {m.pga, m.pgv, m.pgd, m.arias_intensity, m.significant_duration};
-          for (unsigned int k = 0; k < 5; ++k)
-            measures[k].push_back(values[k]);
-        }
-      for (const std::vector<double> &values : psa)
-        ensemble.psa.push_back(describe(values));
-      for (const std::vector<double> &values : measures)
-        ensemble.measures.push_back(describe(values));
-      ensemble.periods = std::move(periods);
-      return ensemble;
-    }
-
-    /// The factor on S0 that brings the mean PSA (first damping ratio) to the target at T1.
-    struct Matching
-    {
-      double      period = 0, damping_ratio = 0;
-      std::string source;
-      double      target_psa = 0, mean_psa = 0, std_psa = 0;
-      double      s0_factor = 0;
-    };
-
-    Matching
-    match_target(const Ensemble &ensemble, const SpectrumParameters &s, const double t1,
-                 const std::string &source)
-    {
-      Matching m;
-      m.period     = t1;
-      m.source     = source;
-      m.damping_ratio = s.damping_ratios.front();
-      m.target_psa = s.target_psa(s.damping_ratios.front(), t1);
-      m.mean_psa   = ensemble.at(0, ensemble.n_grid).mean; // T1 follows the grid
-      m.std_psa    = ensemble.at(0, ensemble.n_grid).standard_deviation;
-      m.s0_factor  = m.mean_psa > 0 ? std::pow(m.target_psa / m.mean_psa, 2) : 0;
-      return m;
-    }
-
     /// ensemble_spectrum.csv: per damping ratio the mean, std, mean -+ std
     /// and the target; the matched mean (first damping ratio).
     void
-    write_ensemble_csv(const std::string &file, const Ensemble &ensemble,
-                       const SpectrumParameters &s, const Matching *matching)
+    write_ensemble_csv(const std::string &file, const EnsembleSpectrum &ensemble,
+                       const SpectrumParameters &s, const SpectrumMatching *matching)
     {
       std::vector<std::string> header{"period_s"};
       for (const double z : s.damping_ratios)
@@ -325,7 +255,7 @@ namespace poundfe
     /// ensemble_spectrum.png from ensemble_spectrum.csv (first damping ratio).
     std::vector<std::string>
     draw_ensemble(const std::string &directory, const std::string &title,
-                  const SpectrumParameters &s, const Matching *matching)
+                  const SpectrumParameters &s, const SpectrumMatching *matching)
     {
       const std::string       file = "ensemble_spectrum.csv";
       const std::string       z    = percent(s.damping_ratios.front());
@@ -346,7 +276,7 @@ namespace poundfe
     }
 
     void
-    write_matching(JsonWriter &json, const Matching &m, const GroundMotionParameters &g,
+    write_matching(JsonWriter &json, const SpectrumMatching &m, const GroundMotionParameters &g,
                    const double s0)
     {
       json.begin_object("matching")
@@ -367,7 +297,7 @@ namespace poundfe
     /// `spectrum --realizations N`: ensemble_spectrum.csv/png, summary.json.
     int
     ensemble_spectrum(const InputParameters &input, const std::string &directory,
-                      const unsigned int n_realizations)
+                      const unsigned int n_realizations, std::ostream &out)
     {
       const GroundMotionParameters &g = input.ground_motion;
       if (!g.is_stochastic())
@@ -384,13 +314,13 @@ namespace poundfe
       std::vector<double> periods = s.periods();
       if (target)
         periods.push_back(t1.first);
-      Ensemble ensemble =
-        compute_ensemble(generator, g.scale_factor, periods, s.damping_ratios, n_realizations);
+      EnsembleSpectrum ensemble =
+        compute_ensemble_spectrum(generator, g.scale_factor, periods, s.damping_ratios, n_realizations);
       ensemble.n_grid = s.periods().size();
-      Matching matching;
+      SpectrumMatching matching;
       if (target)
         matching = match_target(ensemble, s, t1.first, t1.second);
-      const Matching *matched = target ? &matching : nullptr;
+      const SpectrumMatching *matched = target ? &matching : nullptr;
       const double    s0      = generator.motion().spectral_intensity;
 
       create_directories(directory);
@@ -436,19 +366,19 @@ namespace poundfe
       json.value("files", files).end_object();
       write_file_atomically(directory + "/summary.json", json.str());
 
-      std::cout << n_realizations << " realizations of " << generator.description() << "\n";
+      out << n_realizations << " realizations of " << generator.description() << "\n";
       if (target)
         {
-          std::cout << "at T1 = " << matching.period << " s (" << matching.source
-                    << "): mean PSA " << matching.mean_psa << " m/s^2, target "
-                    << matching.target_psa << " m/s^2: multiply S0 by " << matching.s0_factor
-                    << " (Ground motion/Stochastic/S0 = " << matching.s0_factor * s0 << " m^2/s^3";
+          out << "at T1 = " << matching.period << " s (" << matching.source
+              << "): mean PSA " << matching.mean_psa << " m/s^2, target "
+              << matching.target_psa << " m/s^2: multiply S0 by " << matching.s0_factor
+              << " (Ground motion/Stochastic/S0 = " << matching.s0_factor * s0 << " m^2/s^3";
           if (g.spectral_intensity == 0 && g.noise_intensity_d == 0)
-            std::cout << ", or Target PGA = " << std::sqrt(matching.s0_factor) * g.target_pga
-                      << " g";
-          std::cout << ")\n";
+            out << ", or Target PGA = " << std::sqrt(matching.s0_factor) * g.target_pga
+                << " g";
+          out << ")\n";
         }
-      std::cout << "results in " << directory << "/ (ensemble_spectrum.csv, summary.json)\n";
+      out << "results in " << directory << "/ (ensemble_spectrum.csv, summary.json)\n";
       return 0;
     }
   } // namespace
@@ -461,7 +391,7 @@ namespace poundfe::commands
   spectrum(const CommandRun &run)
   {
     if (run.n_realizations > 0)
-      return ensemble_spectrum(*run.input, run.directory, run.n_realizations);
-    return single_spectrum(*run.input, run.directory);
+      return ensemble_spectrum(*run.input, run.directory, run.n_realizations, run.out);
+    return single_spectrum(*run.input, run.directory, run.out);
   }
 } // namespace poundfe::commands

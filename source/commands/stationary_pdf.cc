@@ -2,6 +2,7 @@
 // (reliability/stationary_pdf.h computes them); rank 0 writes pdf.csv,
 // joint_pdf.csv, summary.json and the plots. With the section's Parameter
 // and Values, one such analysis per value and the P-bifurcation diagram.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/commands/command.h>
@@ -211,7 +212,7 @@ namespace poundfe::commands
         input.time_integration.end_time = p.burn_in + p.sampling_time;
       const Analysis           analysis = prepare_analysis(input);
       const unsigned int       rank     = dealii::Utilities::MPI::this_mpi_process(comm);
-      RealizationRunner        runner(analysis);
+      RealizationRunner        runner(analysis, time_history_parameters(input));
       const StationaryPdfSetup setup =
         setup_stationary_pdf(analysis, runner, p, input, input.time_integration.newmark.time_step,
                              input.ground_motion);
@@ -347,7 +348,7 @@ namespace poundfe::commands
       const std::vector<double>  values = sweep.values();
       std::vector<InputParameters> inputs; // every value checked before anything runs
       for (const double v : values)
-        inputs.push_back(sweep.input_for(input, v));
+        inputs.push_back(sweep_input(sweep, input, v));
       if (dealii::Utilities::MPI::this_mpi_process(comm) == 0) // each value's directory resumes
         prepare_output_directory(directory);
       const unsigned long  per_value = input.stationary_pdf.realizations;
@@ -391,7 +392,7 @@ namespace poundfe::commands
   stationary_pdf(const CommandRun &run)
   {
     const InputParameters     &input = *run.input;
-    dealii::ConditionalOStream pcout(std::cout,
+    dealii::ConditionalOStream pcout(run.out,
                                      dealii::Utilities::MPI::this_mpi_process(run.communicator) == 0);
     if (!input.stationary_pdf.sweep.values().empty())
       return p_bifurcation(input, run.directory, run.communicator, pcout);

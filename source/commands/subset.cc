@@ -1,6 +1,7 @@
 // `poundfe subset`: Subset Simulation (reliability/subset.h) of the
 // probability that a peak response of the random loading exceeds a
 // threshold; rank 0 writes subset_levels.csv, summary.json and the plot.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/commands/command.h>
@@ -12,6 +13,7 @@
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/subset.h>
+#include <poundfe/reliability/subset_journal.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
@@ -146,6 +148,7 @@ namespace poundfe::commands
           .value("coefficient_of_variation", result.coefficient_of_variation);
       json.value("reached_threshold", result.reached_threshold)
         .value("model_runs", result.model_runs)
+        .value("resumed_model_runs", result.resumed_runs)
         .value("failed_model_runs", run.failed_runs)
         .value("ranks", run.n_ranks)
         .value("wall_time_s", run.wall_time);
@@ -169,14 +172,17 @@ namespace poundfe::commands
       if (result.interrupted)
         out << "Subset Simulation interrupted after " << result.levels.size()
             << " levels (no estimate at the threshold; subset_levels.csv has the levels), "
-            << result.model_runs << " model runs";
+            << result.model_runs << " model runs; the same command resumes from "
+            << "subset_runs.csv";
       else
         out << "Subset Simulation: P(" << run.response_name << " > " << input.subset.threshold
             << unit << ") = " << result.probability << " (CoV "
             << result.coefficient_of_variation << "), " << result.levels.size() << " levels, "
             << result.model_runs << " model runs"
             << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
-      out << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
+      if (result.resumed_runs > 0)
+        out << " (and " << result.resumed_runs << " resumed from subset_runs.csv)";
+      out << "\nresults in " << directory << "/ (summary.json, subset_levels.csv, subset_runs.csv"
           << (input.output.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
     }
   } // namespace
@@ -189,17 +195,24 @@ namespace poundfe::commands
     const MPI_Comm             comm      = run.communicator;
     const SubsetParameters    &ss        = input.subset;
     const unsigned int         rank      = dealii::Utilities::MPI::this_mpi_process(comm);
-    dealii::ConditionalOStream pcout(std::cout, rank == 0);
+    dealii::ConditionalOStream pcout(run.out, rank == 0);
     // rank 0's own times: the other ranks leave before the output section
     dealii::TimerOutput timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
 
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
-    RealizationRunner runner(analysis);
+    RealizationRunner runner(analysis, time_history_parameters(input));
     std::string       unit;
     const std::vector<unsigned int> columns = response_columns(input, runner, unit);
-    if (rank == 0)
-      prepare_output_directory(directory);
+    const SubsetSettings settings = settings_of(ss, runner);
+    if (rank == 0) // an earlier run's journal stays: this run resumes from it
+      prepare_output_directory(directory, subset_journal_files(directory));
+    SubsetRunsFile journal(directory,
+                           subset_journal_settings(settings, runner.n_variables(), ss.threshold),
+                           comm);
+    if (journal.n_resumed() > 0)
+      pcout << "subset: resuming: " << journal.n_resumed()
+            << " model runs of an earlier run are in " << directory << "/subset_runs.csv\n";
     timer.leave_subsection();
 
     timer.enter_subsection("levels");
@@ -208,18 +221,18 @@ namespace poundfe::commands
     std::vector<double> responses;
     const auto          response = [&](const std::vector<double> &xi) {
       if (!runner.run(xi, responses))
-        ++facts.failed_runs;
+        journal.mark_failed();
       double y = 0;
       for (const unsigned int c : columns)
         y = std::max(y, responses[c]);
       return y;
     };
     const auto         start  = std::chrono::steady_clock::now();
-    const SubsetResult result = subset_simulation(response, runner.n_variables(), ss.threshold,
-                                                  settings_of(ss, runner), comm);
+    const SubsetResult result =
+      subset_simulation(response, runner.n_variables(), ss.threshold, settings, comm, &journal);
     facts.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    facts.failed_runs = dealii::Utilities::MPI::sum(facts.failed_runs, comm);
+    facts.failed_runs = journal.finish(); // of this run and the runs it resumed
     timer.leave_subsection();
     const int status = result.interrupted ? interrupted_exit_status() : 0;
     if (rank != 0)

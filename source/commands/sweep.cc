@@ -1,12 +1,222 @@
 // `poundfe sweep`: the run's peaks against the values of one parameter.
+//   read:   every value's input (input/sweep.h), all checked before any run
+//   runs:   each value's time history with the peak observer only, its
+//           scalars one row of the table
+//   output: sweep.csv, summary.json, sweep.png; the console report
+#include <poundfe/base/console.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/progress.h>
 #include <poundfe/commands/command.h>
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/sweep.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/csv_writer.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
+#include <poundfe/output/peak_response.h>
+#include <poundfe/output/plots.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <iostream>
+
+namespace poundfe
+{
+  namespace
+  {
+    /// The scalars of one run, named with their units: the peak drift ratio
+    /// of each storey, the peak displacement (m) and absolute acceleration
+    /// (m/s^2) of each floor, the largest drift ratio, with gaps the impacts,
+    /// the peak contact force (N) and the smallest clearance (m), and the
+    /// energy balance error.
+    std::vector<std::string>
+    scalar_names(const Analysis &analysis)
+    {
+      const FloorResponse      floors(analysis.model);
+      std::vector<std::string> names = floors.column_names("storey", "peak_drift_ratio");
+      for (const char *what : {"peak_displacement_m", "peak_acc_m_s2"})
+        for (const std::string &name : floors.column_names("floor", what))
+          names.push_back(name);
+      names.push_back("max_drift_ratio");
+      if (!analysis.model.gaps.empty())
+        for (const char *name : {"n_impacts", "peak_contact_force_N", "min_clearance_m"})
+          names.push_back(name);
+      names.push_back("max_energy_error");
+      return names;
+    }
+
+    std::vector<double>
+    scalars(const Analysis &analysis, const PeakResponse &peaks, const ResponseView &state)
+    {
+      const FloorResponse &floors = peaks.floors();
+      std::vector<double>  row    = floors.peak_drift_ratio();
+      for (const std::vector<double> *v : {&floors.peak_displacement(), &floors.peak_acceleration()})
+        row.insert(row.end(), v->begin(), v->end());
+      row.push_back(*std::max_element(floors.peak_drift_ratio().begin(),
+                                      floors.peak_drift_ratio().end()));
+      if (!analysis.model.gaps.empty())
+        {
+          double peak_force = 0;
+          for (const Impact &impact : state.impact_log().impacts())
+            peak_force = std::max(peak_force, impact.peak_force);
+          row.push_back(state.impact_log().impacts().size());
+          row.push_back(peak_force);
+          row.push_back(peaks.min_clearance());
+        }
+      row.push_back(state.max_energy_error());
+      return row;
+    }
+
+    struct SweepTable
+    {
+      std::vector<std::string>         names;
+      std::vector<double>              values;
+      std::vector<bool>                completed;
+      std::vector<std::vector<double>> rows;
+      unsigned int                     n_storeys = 0; // the first columns
+      bool interrupted = false; // SIGINT/SIGTERM: the values finished are the result
+    };
+
+    /// One run of the value's input with the peak observer; its row in
+    /// `table`. False (no row) when a signal stopped the run.
+    bool
+    run_value(const InputParameters &input, const double value, SweepTable &table)
+    {
+      const Analysis              analysis   = prepare_analysis(input);
+      const TimeHistoryParameters parameters = time_history_parameters(input);
+      const Excitation            excitation = make_excitation(analysis, parameters);
+      TimeHistory                 history(analysis, parameters);
+      PeakResponse       peaks(analysis.model, history.nonlinear_elements());
+      const RunStatus    status = history.run(excitation, {&peaks}, true);
+      if (status.kind == RunStatus::Kind::interrupted)
+        return false;
+      const std::vector<std::string> names = scalar_names(analysis);
+      if (table.rows.empty())
+        {
+          table.names     = names;
+          table.n_storeys = peaks.floors().n_floors();
+        }
+      else if (names != table.names)
+        input.fail(input.sweep.section + "/Parameter",
+                   "changes the model's floors or gaps at " + format_value(value) +
+                     ": every value needs the same table columns");
+      table.values.push_back(value);
+      table.completed.push_back(status.completed());
+      table.rows.push_back(scalars(analysis, peaks, history.state()));
+      return true;
+    }
+
+    void
+    write_sweep(const InputParameters &input, const SweepTable &table,
+                const std::string &directory, const double wall_time, const bool interrupted)
+    {
+      const SweepParameters &sweep = input.sweep;
+      prepare_output_directory(directory);
+      std::vector<std::string> header{sweep.column_name(), "completed"};
+      header.insert(header.end(), table.names.begin(), table.names.end());
+      CsvWriter csv(directory + "/sweep.csv", header);
+      for (std::size_t i = 0; i < table.rows.size(); ++i)
+        {
+          csv.begin_row(table.values[i]);
+          csv.add(table.completed[i] ? 1 : 0);
+          for (const double x : table.rows[i])
+            csv.add(x);
+          csv.end_row();
+        }
+      csv.commit();
+
+      JsonWriter json;
+      const bool all = std::all_of(table.completed.begin(), table.completed.end(),
+                                   [](const bool c) { return c; });
+      begin_summary(json, "sweep", input, interrupted ? "interrupted" : all ? "completed" : "failed");
+      json.value("parameter", sweep.parameter).value("command_swept", sweep.command)
+        .value("n_values", table.values.size()).value("wall_time_s", wall_time)
+        .begin_object("table").value(sweep.column_name(), table.values);
+      std::vector<double> completed(table.completed.begin(), table.completed.end());
+      json.value("completed", completed);
+      for (std::size_t c = 0; c < table.names.size(); ++c)
+        {
+          std::vector<double> column;
+          for (const std::vector<double> &row : table.rows)
+            column.push_back(row[c]);
+          json.value(table.names[c], column);
+        }
+      json.end_object().end_object();
+      write_file_atomically(directory + "/summary.json", json.str());
+
+      if (!input.output.plots || table.rows.empty())
+        return;
+      Plot plot{"sweep.png", "peak inter-storey drift ratio against " + sweep.axis_label(),
+                sweep.axis_label(), "peak drift ratio", {}};
+      for (unsigned int s = 0; s < table.n_storeys; ++s)
+        plot.series.push_back({"sweep.csv", "1:" + std::to_string(3 + s), table.names[s],
+                               "linespoints"});
+      draw_plots(directory, {plot});
+    }
+
+    /// Each value's run, in order, with a progress line on a terminal.
+    SweepTable
+    run_values(const std::vector<InputParameters> &inputs, const std::vector<double> &values)
+    {
+      SweepTable table;
+      Progress   progress(std::cerr, "sweep: values", values.size());
+      for (std::size_t i = 0; i < values.size() && !table.interrupted; ++i)
+        {
+          table.interrupted = interruption_requested() || !run_value(inputs[i], values[i], table);
+          progress.update(i + 1);
+        }
+      return table;
+    }
+  } // namespace
+
+} // namespace poundfe
 
 namespace poundfe::commands
 {
   int
   sweep(const CommandRun &run)
   {
-    return sweep_command(*run.input, run.directory);
+    const InputParameters &input = *run.input;
+    const SweepParameters &sweep = input.sweep;
+    dealii::TimerOutput timer(run.out, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+
+    timer.enter_subsection("read");
+    sweep.require(input);
+    const std::vector<double> values = sweep.values();
+    std::vector<InputParameters> inputs; // all read first: bad input writes nothing
+    for (const double value : values)
+      inputs.push_back(sweep_input(sweep, input, value));
+    timer.leave_subsection();
+
+    timer.enter_subsection("runs");
+    const SweepTable table = run_values(inputs, values);
+    timer.leave_subsection();
+    const double wall_time =
+      timer.get_summary_data(dealii::TimerOutput::total_wall_time).at("runs");
+
+    timer.enter_subsection("output");
+    write_sweep(input, table, run.directory, wall_time, table.interrupted);
+    timer.leave_subsection();
+    if (table.interrupted)
+      {
+        run.err << "poundfe: sweep interrupted (" << run.directory
+                << "/summary.json says interrupted): " << table.values.size() << " of "
+                << values.size() << " values kept in sweep.csv\n";
+        return interrupted_exit_status();
+      }
+
+    const auto n_failed = std::count(table.completed.begin(), table.completed.end(), false);
+    run.out << "poundfe sweep: " << values.size() << " values of " << sweep.parameter << " in "
+            << wall_time << " s\nresults in " << run.directory
+            << "/ (sweep.csv, summary.json, sweep.png)\n";
+    print_timing(timer);
+    if (n_failed > 0)
+      {
+        run.err << "poundfe: numerical failure at " << n_failed
+                << " values (completed = 0 in sweep.csv)\n";
+        return 2;
+      }
+    return 0;
   }
 } // namespace poundfe::commands

@@ -2,7 +2,7 @@
 #include <poundfe/commands/command.h>
 #include <poundfe/input/templates.h>
 
-#include <iostream>
+#include <ostream>
 
 namespace poundfe::commands
 {
@@ -21,7 +21,7 @@ namespace poundfe::commands
                 << "\n";
         return 1;
       }
-    std::cout << *text;
+    run.out << *text;
     return 0;
   }
 } // namespace poundfe::commands

@@ -5,15 +5,9 @@
 
 #include <poundfe/base/numbers.h>
 
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/timer.h>
-
 #include <algorithm>
 #include <cmath>
-#include <iostream>
-#include <set>
 #include <sstream>
-#include <unistd.h>
 
 namespace poundfe
 {
@@ -45,7 +39,7 @@ namespace poundfe
     /// K_E + K_G without a Cholesky factor means gravity above the buckling
     /// load, where the linearised model has no meaning.
     void
-    check_stable_under_gravity(const InputParameters &input, const Model &model,
+    check_stable_under_gravity(const InputFile &input, const Model &model,
                                const LinearSystem &system)
     {
       if (model.geometric_nonlinearity != GeometricNonlinearity::p_delta)
@@ -66,16 +60,17 @@ namespace poundfe
     /// input's eigensolver; a forced sparse solver that cannot give `n`
     /// modes is bad input.
     Modes
-    modes_of(const InputParameters &input, const SparseMatrix &mass, const SparseMatrix &stiffness,
-             const Vector &influence, const unsigned int n, const std::string &what)
+    modes_of(const InputFile &input, const ModalParameters &modal, const SparseMatrix &mass,
+             const SparseMatrix &stiffness, const Vector &influence, const unsigned int n,
+             const std::string &what)
     {
-      if (input.modal.eigensolver == Eigensolver::sparse && n > max_sparse_modes(mass))
+      if (modal.eigensolver == Eigensolver::sparse && n > max_sparse_modes(mass))
         input.fail("Modal analysis/Eigensolver",
                    "the sparse eigensolver finds at most " +
                      std::to_string(max_sparse_modes(mass)) + " modes of " + what + " (" +
                      std::to_string(mass.rows()) + " equations), " + std::to_string(n) +
                      " are wanted (Output/Number of modes, Damping/Modes); use dense or auto");
-      return compute_modes(mass, stiffness, influence, n, input.modal.eigensolver);
+      return compute_modes(mass, stiffness, influence, n, modal.eigensolver);
     }
 
     /// The share of mode `i`'s kinetic energy in vertical motion,
@@ -101,6 +96,31 @@ namespace poundfe
       return total > 0 ? vertical.dot(mass * vertical) / total : 0;
     }
 
+    /// Building b's Rayleigh coefficients (a0, a1): none, given, or fitted
+    /// to its damping ratio at two of its `modes`.
+    std::array<double, 2>
+    rayleigh_coefficients_of(const InputFile &input, const Building &building,
+                             const unsigned int b, const Modes &modes)
+    {
+      const RayleighDamping &d = building.damping;
+      switch (d.kind)
+        {
+          case RayleighDamping::Kind::none:
+            return {{0, 0}};
+          case RayleighDamping::Kind::coefficients:
+            return {{d.a0, d.a1}};
+          case RayleighDamping::Kind::modes:
+            break;
+        }
+      const std::string path = "Building " + std::to_string(b + 1) + "/Damping/Modes";
+      if (std::max(d.first_mode, d.second_mode) > modes.n_modes())
+        throw InputError(input.file, input.line_of(path), path,
+                         "building '" + building.name + "' has only " +
+                           std::to_string(modes.n_modes()) + " modes");
+      return rayleigh_coefficients(d.damping_ratio, modes.omega[d.first_mode - 1],
+                                   modes.omega[d.second_mode - 1]);
+    }
+
     /// "2.5 %" for the ratio 0.025.
     std::string
     percent(const double ratio)
@@ -110,10 +130,9 @@ namespace poundfe
   } // namespace
 
   std::vector<std::string>
-  damping_warnings(const Analysis &analysis)
+  damping_warnings(const Analysis &analysis, const InputFile &input)
   {
     const Model             &model = analysis.model;
-    const InputFile         &input = analysis.input;
     std::vector<std::string> warnings;
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
@@ -172,11 +191,13 @@ namespace poundfe
   }
 
   Analysis
-  prepare_analysis(const InputParameters &input)
+  prepare_analysis(const InputFile &input, const ModelParameters &model_parameters,
+                   const ContactParameters &contact, const SpringParameters &springs,
+                   const FrictionParameters &friction, const ModalParameters &modal,
+                   const unsigned int n_modes)
   {
     Analysis analysis;
-    analysis.input  = input;
-    analysis.model  = build_model(input.model, input.contact, input, input.springs, input.friction);
+    analysis.model  = build_model(model_parameters, contact, input, springs, friction);
     analysis.system = assemble_mass_and_stiffness(analysis.model);
     const Model  &model  = analysis.model;
     LinearSystem &system = analysis.system;
@@ -190,78 +211,24 @@ namespace poundfe
         const auto      range    = model.equation_range(b);
         const bool      for_damping = building.damping.kind == RayleighDamping::Kind::modes;
         const unsigned  wanted =
-          std::max({input.output.n_modes, for_damping ? building.damping.first_mode : 0u,
+          std::max({n_modes, for_damping ? building.damping.first_mode : 0u,
                     for_damping ? building.damping.second_mode : 0u});
         // no modes reported nor needed for damping: no eigenproblem (a large
         // model with given Rayleigh coefficients)
         analysis.building_modes.push_back(
           wanted == 0 ? Modes() :
-                        modes_of(input, block(system.mass, range), block(system.stiffness, range),
+                        modes_of(input, modal, block(system.mass, range),
+                                 block(system.stiffness, range),
                                  system.influence.segment(range[0], range[1] - range[0]), wanted,
                                  "building '" + building.name + "'"));
-        const Modes           &modes = analysis.building_modes.back();
-        const RayleighDamping &d     = building.damping;
-        switch (d.kind)
-          {
-            case RayleighDamping::Kind::none:
-              coefficients.push_back({{0, 0}});
-              break;
-            case RayleighDamping::Kind::coefficients:
-              coefficients.push_back({{d.a0, d.a1}});
-              break;
-            case RayleighDamping::Kind::modes:
-              {
-                const std::string path =
-                  "Building " + std::to_string(b + 1) + "/Damping/Modes";
-                if (std::max(d.first_mode, d.second_mode) > modes.n_modes())
-                  throw InputError(input.file, input.line_of(path), path,
-                                   "building '" + building.name + "' has only " +
-                                     std::to_string(modes.n_modes()) + " modes");
-                coefficients.push_back(rayleigh_coefficients(
-                  d.damping_ratio, modes.omega[d.first_mode - 1], modes.omega[d.second_mode - 1]));
-                break;
-              }
-          }
+        coefficients.push_back(
+          rayleigh_coefficients_of(input, building, b, analysis.building_modes.back()));
       }
     assemble_damping(model, coefficients, system);
-    if (input.output.n_modes > 0)
-      analysis.modes = modes_of(input, system.mass, system.stiffness, system.influence,
-                                input.output.n_modes, "the model");
-    analysis.warnings = damping_warnings(analysis);
-    // once per process: a sweep prepares an analysis per value
-    static std::set<std::string> said;
-    if (writes_outputs())
-      for (const std::string &warning : analysis.warnings)
-        if (said.insert(warning).second)
-          std::cerr << "poundfe: warning: " << warning << "\n";
+    if (n_modes > 0)
+      analysis.modes = modes_of(input, modal, system.mass, system.stiffness, system.influence,
+                                n_modes, "the model");
+    analysis.warnings = damping_warnings(analysis, input);
     return analysis;
-  }
-
-  bool
-  writes_outputs()
-  {
-    int initialized = 0;
-    MPI_Initialized(&initialized);
-    return !initialized || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  }
-
-  void
-  begin_summary(JsonWriter &json, const std::string &command, const InputParameters &input,
-                const std::string &status)
-  {
-    json.begin_object()
-      .value("program", "poundfe")
-      .value("command", command)
-      .value("input", input.file)
-      .value("status", status);
-  }
-
-  void
-  print_timing(const dealii::TimerOutput &timer)
-  {
-    // both: under Open MPI's mpirun a rank's stdout is a pseudo-terminal even
-    // when mpirun's goes to a file, its stderr a pipe
-    if (::isatty(STDOUT_FILENO) == 1 && ::isatty(STDERR_FILENO) == 1)
-      timer.print_summary();
   }
 } // namespace poundfe

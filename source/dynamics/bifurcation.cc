@@ -7,28 +7,19 @@
 // 15:9-20; Wolf, Swift, Swinney & Vastano 1985, Physica D 16:285-317),
 // both trajectories integrated through the discontinuities (cf. Müller
 // 1995, Chaos Solitons Fractals 5:1671-1681, for the variational route).
-// See dynamics/bifurcation.h and doc/theory.md §8.4.
+// See dynamics/bifurcation.h and doc/theory.md §8.4. (Each value's input is
+// read in input/bifurcation_input.h; the command is commands/bifurcation.cc.)
 #include <poundfe/dynamics/bifurcation.h>
-#include <poundfe/base/interruption.h>
-#include <poundfe/base/choices.h>
-#include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
+#include <poundfe/base/choices.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
-#include <poundfe/base/progress.h>
-#include <poundfe/output/atomic_file.h>
-#include <poundfe/output/csv_writer.h>
-#include <poundfe/output/json_writer.h>
-#include <poundfe/output/output_directory.h>
-#include <poundfe/output/plots.h>
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <iostream>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -161,12 +152,13 @@ namespace poundfe
     class LyapunovEstimator : public StepObserver
     {
     public:
-      LyapunovEstimator(const Analysis &analysis, const Excitation &excitation,
-                        const unsigned long steps_per_period, const unsigned int n_transient,
-                        const double period, const double perturbation)
+      LyapunovEstimator(const Analysis &analysis, const TimeIntegrationParameters &time_integration,
+                        const Excitation &excitation, const unsigned long steps_per_period,
+                        const unsigned int n_transient, const double period,
+                        const double perturbation)
         : elements(make_nonlinear_elements(analysis.model))
-        , shadow(analysis.system, analysis.input.time_integration.linear_solver,
-                 analysis.input.time_integration.newmark, &elements)
+        , shadow(analysis.system, time_integration.linear_solver, time_integration.newmark,
+                 &elements)
         , load([&excitation](const double t, Vector &p) { excitation.load(t, p); })
         , steps_per_period(steps_per_period)
         , first_step(steps_per_period * n_transient)
@@ -232,276 +224,68 @@ namespace poundfe
       unsigned long       n_periods = 0;
     };
 
-    /// T: the Forcing period, or 2 pi / omega of the first harmonic force.
-    double
-    forcing_period_of(const InputParameters &input)
-    {
-      const BifurcationParameters &b = input.bifurcation;
-      if (b.forcing_period > 0)
-        return b.forcing_period;
-      for (const std::string &entry : input.nodal_forces.harmonic)
-        {
-          std::istringstream fields(entry); // building floor node dof amplitude omega phase
-          std::string        skip;
-          double             amplitude = 0, omega = 0;
-          if (read_number(read_number(fields >> skip >> skip >> skip >> skip, amplitude), omega) &&
-              omega > 0)
-            return 2 * M_PI / omega;
-          if (entry.find_first_not_of(" \t") != std::string::npos)
-            break;
-        }
-      input.fail("Bifurcation/Forcing period",
-                 "is 0, and the first harmonic nodal force gives no omega > 0 to take it from");
-    }
-
-    /// A value's input with dt' = T / round(T / dt) and the end time
-    /// (transient + sampled) T, so that steps land on every k T.
-    struct ValueInput
-    {
-      double          value = 0, period = 0;
-      unsigned long   steps_per_period = 1;
-      InputParameters input;
-    };
-
-    ValueInput
-    input_at(const InputParameters &input, const double value)
-    {
-      const SweepParameters &sweep = input.bifurcation.sweep;
-      const InputParameters  at    = sweep.input_for(input, value);
-      ValueInput             v;
-      v.value            = value;
-      v.period           = forcing_period_of(at);
-      v.steps_per_period = std::max(1.0, std::round(v.period / at.time_integration.newmark.time_step));
-      const unsigned int n_periods =
-        at.bifurcation.transient_periods + at.bifurcation.sampled_periods;
-      v.input = sweep.input_for(input, value,
-                                {{"Time integration/Time step",
-                                  format_value(v.period / v.steps_per_period)},
-                                 {"Time integration/End time", format_value(n_periods * v.period)}});
-      return v;
-    }
-
-    /// A state to start from: the previous value's final one (Continuation).
-    struct ModelState
-    {
-      Vector u, v;
-    };
-
-    /// The model of `v` prepared once and run once with the Poincaré
-    /// sampler (and the second trajectory), from `state` when it is given
-    /// and not empty, else from rest; `state` becomes the final state.
-    BifurcationPoint
-    run_point(const ValueInput &v, ModelState *state = nullptr)
-    {
-      const auto                   start = std::chrono::steady_clock::now();
-      const InputParameters       &at    = v.input;
-      const BifurcationParameters &b     = at.bifurcation;
-      const unsigned long          n     = v.steps_per_period;
-      const Analysis     analysis   = prepare_analysis(at);
-      const Excitation   excitation = make_excitation(analysis);
-      std::istringstream fields(b.response);
-      const NodeDof dof = find_node_dof(at, analysis.model, fields, "Bifurcation/Response", b.response);
-      const bool from_state = state && state->u.size() > 0;
-      if (from_state && state->u.size() != analysis.system.n_equations())
-        at.fail("Bifurcation/Continuation", "the model's equations change at " +
-                                              format_value(v.value) + ": cannot continue");
-
-      TimeHistory     history(analysis);
-      PoincareSampler sampler(dof.equation, b.quantity == "velocity", n, b.transient_periods,
-                              b.sampled_periods);
-      Observers       observers{&sampler};
-      std::optional<LyapunovEstimator> lyapunov;
-      if (b.lyapunov_exponent)
-        observers.push_back(&lyapunov.emplace(analysis, excitation, n, b.transient_periods,
-                                              v.period, b.perturbation));
-      const RunStatus status = from_state ? history.run(state->u, state->v, excitation, observers) :
-                                            history.run(excitation, observers);
-      if (state) // after a failure the next value starts from rest
-        *state = status.completed() ? ModelState{sampler.final_u, sampler.final_v} : ModelState{};
-      BifurcationPoint point;
-      point.value          = v.value;
-      point.forcing_period = v.period;
-      point.time_step      = at.time_integration.newmark.time_step;
-      point.completed      = status.completed();
-      point.samples        = sampler.samples;
-      point.response_range = sampler.samples.empty() ? 0 : sampler.highest - sampler.lowest;
-      point.period = point.completed ?
-                       poincare_period(point.samples, b.period_tolerance * point.response_range) :
-                       0;
-      point.lyapunov_exponent = lyapunov ? lyapunov->exponent() : 0;
-      point.wall_time =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return point;
-    }
   } // namespace
+
+  double
+  forcing_period(const BifurcationParameters &b, const NodalForceParameters &nodal_forces,
+                 const InputFile &input)
+  {
+    if (b.forcing_period > 0)
+      return b.forcing_period;
+    for (const std::string &entry : nodal_forces.harmonic)
+      {
+        std::istringstream fields(entry); // building floor node dof amplitude omega phase
+        std::string        skip;
+        double             amplitude = 0, omega = 0;
+        if (read_number(read_number(fields >> skip >> skip >> skip >> skip, amplitude), omega) &&
+            omega > 0)
+          return 2 * M_PI / omega;
+        if (entry.find_first_not_of(" \t") != std::string::npos)
+          break;
+      }
+    input.fail("Bifurcation/Forcing period",
+               "is 0, and the first harmonic nodal force gives no omega > 0 to take it from");
+  }
 
   BifurcationPoint
-  bifurcation_point(const InputParameters &input, const double value)
+  bifurcation_point(const Analysis &analysis, const TimeHistoryParameters &parameters,
+                    const BifurcationParameters &b, const double value, const double period,
+                    const unsigned long steps_per_period, BifurcationState *state)
   {
-    return run_point(input_at(input, value));
-  }
+    const InputFile   &input      = parameters.input;
+    const unsigned long n         = steps_per_period;
+    const Excitation   excitation = make_excitation(analysis, parameters);
+    std::istringstream fields(b.response);
+    const NodeDof dof = find_node_dof(input, analysis.model, fields, "Bifurcation/Response", b.response);
+    const bool from_state = state && state->u.size() > 0;
+    if (from_state && state->u.size() != analysis.system.n_equations())
+      input.fail("Bifurcation/Continuation", "the model's equations change at " +
+                                               format_value(value) + ": cannot continue");
 
-  namespace
-  {
-    /// "m", "m/s", "rad" or "rad/s".
-    std::string
-    response_unit(const BifurcationParameters &b)
-    {
-      const bool rotation = b.response.find("rz") != std::string::npos;
-      return std::string(rotation ? "rad" : "m") + (b.quantity == "velocity" ? "/s" : "");
-    }
-
-    /// The response's CSV column: "displacement_m", "velocity_rad_s", ...
-    std::string
-    response_column(const BifurcationParameters &b)
-    {
-      std::string unit = response_unit(b);
-      std::replace(unit.begin(), unit.end(), '/', '_');
-      return b.quantity + "_" + unit;
-    }
-
-    void
-    write_tables(const InputParameters &input, const std::vector<BifurcationPoint> &points,
-                 const std::string &directory)
-    {
-      const BifurcationParameters &b = input.bifurcation;
-      const std::string x = b.sweep.column_name();
-      CsvWriter samples(directory + "/bifurcation.csv", {x, "sample", response_column(b)});
-      CsvWriter classes(directory + "/bifurcation_classification.csv",
-                        {x, "period", "lyapunov_exponent_1_s", "forcing_period_s", "time_step_s",
-                         "response_range", "completed"});
-      for (const BifurcationPoint &point : points)
-        {
-          for (std::size_t k = 0; k < point.samples.size(); ++k)
-            {
-              samples.begin_row(point.value);
-              samples.add(k + 1);
-              samples.add(point.samples[k]);
-              samples.end_row();
-            }
-          classes.begin_row(point.value);
-          for (const double c : {double(point.period), point.lyapunov_exponent,
-                                 point.forcing_period, point.time_step, point.response_range,
-                                 point.completed ? 1.0 : 0.0})
-            classes.add(c);
-          classes.end_row();
-        }
-      samples.commit();
-      classes.commit();
-    }
-
-    /// summary.json: the settings, how time was stepped, and per value the
-    /// period (0: non-periodic) and the Lyapunov exponent.
-    void
-    write_summary(const InputParameters &input, const std::vector<BifurcationPoint> &points,
-                  const std::string &directory, const double wall_time, const bool interrupted)
-    {
-      const BifurcationParameters &b = input.bifurcation;
-      std::vector<double> values, periods, exponents, forcing, steps;
-      bool                all = true;
-      for (const BifurcationPoint &point : points)
-        {
-          values.push_back(point.value), periods.push_back(point.period);
-          exponents.push_back(point.lyapunov_exponent), forcing.push_back(point.forcing_period);
-          steps.push_back(point.time_step), all = all && point.completed;
-        }
-      JsonWriter json;
-      begin_summary(json, "bifurcation", input,
-                    interrupted ? "interrupted" : all ? "completed" : "failed");
-      json.value("parameter", b.sweep.parameter).value("response", b.response)
-        .value("response_quantity", b.quantity).value("transient_periods", b.transient_periods)
-        .value("sampled_periods", b.sampled_periods)
-        .value("time_step_rule", "dt = T / round(T / dt_input): steps land on every k T, "
-                                 "no interpolation")
-        .value("period_rule", "smallest n <= 16 with |x_{k+n} - x_k| <= tolerance * range "
-                              "for every sample; 0: non-periodic")
-        .value("period_tolerance", b.period_tolerance)
-        .value("continuation", b.continuation)
-        .value("lyapunov_exponent", b.lyapunov_exponent)
-        .value("lyapunov_method", "Benettin two-trajectory, renormalised every period, "
-                                  "d0 = perturbation * |(u, v / omega)|")
-        .value("perturbation", b.perturbation).value("wall_time_s", wall_time)
-        .value("values", values).value("periods", periods).value("lyapunov_exponents_1_s", exponents)
-        .value("forcing_periods_s", forcing).value("time_steps_s", steps).end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
-    }
-
-    /// The diagram (Poincaré samples as dots against the value) with the
-    /// Lyapunov exponent in a panel under it.
-    void
-    draw_diagram(const InputParameters &input, const std::string &directory)
-    {
-      const BifurcationParameters &b = input.bifurcation;
-      const std::string label = b.quantity + " (" + response_unit(b) + ")";
-      Plot diagram{"bifurcation.png", "bifurcation diagram: Poincare samples of " + b.response +
-                                        " " + b.quantity, b.sweep.axis_label(), label,
-                   {{"bifurcation.csv", "1:3", "x(kT)", "points pt 7 ps 0.3"}}};
-      if (b.lyapunov_exponent)
-        diagram.below.push_back(Plot{"", "largest Lyapunov exponent", b.sweep.axis_label(),
-                                     "lambda (1/s)",
-                                     {{"bifurcation_classification.csv", "1:3", "lambda",
-                                       "linespoints"}}});
-      draw_plots(directory, {diagram});
-    }
-  } // namespace
-
-  std::vector<BifurcationPoint>
-  bifurcation_points(const InputParameters &input)
-  {
-    const BifurcationParameters &b = input.bifurcation;
-    b.sweep.require(input);
-    std::vector<ValueInput> inputs; // every value's input checked before any work
-    for (const double value : b.sweep.values())
-      inputs.push_back(input_at(input, value));
-    std::vector<BifurcationPoint> points;
-    Progress   progress(std::cerr, "bifurcation: values", inputs.size());
-    ModelState state; // empty: from rest
-    for (const ValueInput &v : inputs)
-      {
-        if (interruption_requested()) // the values done so far are the result
-          break;
-        points.push_back(run_point(v, b.continuation ? &state : nullptr));
-        progress.update(points.size());
-      }
-    return points;
-  }
-
-  int
-  bifurcation_command(const InputParameters &input, const std::string &directory)
-  {
-    const BifurcationParameters  &b     = input.bifurcation;
-    const auto                    start = std::chrono::steady_clock::now();
-    const std::vector<BifurcationPoint> points = bifurcation_points(input);
-    const double wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // SIGINT/SIGTERM stop between values: the values finished are written
-    // (status "interrupted"), as a Monte Carlo writes its realizations.
-    const bool interrupted = interruption_requested();
-    prepare_output_directory(directory);
-    write_tables(input, points, directory);
-    write_summary(input, points, directory, wall_time, interrupted);
-    if (input.output.plots && !points.empty())
-      draw_diagram(input, directory);
-    if (interrupted)
-      {
-        std::cerr << "poundfe: bifurcation interrupted (" << directory
-                  << "/summary.json says interrupted): " << points.size() << " of "
-                  << b.sweep.values().size() << " values kept in bifurcation.csv\n";
-        return interrupted_exit_status();
-      }
-
-    const auto n_failed = std::count_if(points.begin(), points.end(),
-                                        [](const BifurcationPoint &p) { return !p.completed; });
-    std::cout << "poundfe bifurcation: " << points.size() << " values of " << b.sweep.parameter
-              << " in " << wall_time << " s\nresults in " << directory
-              << "/ (bifurcation.csv, bifurcation_classification.csv, summary.json, "
-                 "bifurcation.png)\n";
-    if (n_failed > 0)
-      {
-        std::cerr << "poundfe: numerical failure at " << n_failed
-                  << " values (completed = 0 in bifurcation_classification.csv)\n";
-        return 2;
-      }
-    return 0;
+    TimeHistory     history(analysis, parameters);
+    PoincareSampler sampler(dof.equation, b.quantity == "velocity", n, b.transient_periods,
+                            b.sampled_periods);
+    Observers       observers{&sampler};
+    std::optional<LyapunovEstimator> lyapunov;
+    if (b.lyapunov_exponent)
+      observers.push_back(&lyapunov.emplace(analysis, parameters.time_integration, excitation, n,
+                                            b.transient_periods, period, b.perturbation));
+    const RunStatus status = from_state ? history.run(state->u, state->v, excitation, observers) :
+                                          history.run(excitation, observers);
+    if (state) // after a failure the next value starts from rest
+      *state = status.completed() ? BifurcationState{sampler.final_u, sampler.final_v} :
+                                    BifurcationState{};
+    BifurcationPoint point;
+    point.value          = value;
+    point.forcing_period = period;
+    point.time_step      = parameters.time_integration.newmark.time_step;
+    point.completed      = status.completed();
+    point.samples        = sampler.samples;
+    point.response_range = sampler.samples.empty() ? 0 : sampler.highest - sampler.lowest;
+    point.period = point.completed ?
+                     poincare_period(point.samples, b.period_tolerance * point.response_range) :
+                     0;
+    point.lyapunov_exponent = lyapunov ? lyapunov->exponent() : 0;
+    return point;
   }
 } // namespace poundfe

@@ -11,16 +11,18 @@
 
 namespace poundfe
 {
-  RealizationRunner::RealizationRunner(const Analysis &analysis_)
+  RealizationRunner::RealizationRunner(const Analysis &analysis_,
+                                       const TimeHistoryParameters &parameters_)
     : analysis(analysis_)
-    , excitation(make_excitation(analysis_))
-    , load(analysis_.input.ground_motion, analysis_.input.time_integration.newmark.time_step,
-           excitation)
-    , history(analysis_)
+    , parameters(parameters_)
+    , excitation(make_excitation(analysis_, parameters_))
+    , load(parameters_.ground_motion, parameters_.time_integration.newmark.time_step, excitation)
+    , history(analysis_, parameters_)
     , peaks(analysis_.model, history.nonlinear_elements())
   {
+    const InputFile &input = parameters.input;
     if (load.n_variables() == 0)
-      throw InputError(analysis.input.file, analysis.input.line_of("Ground motion/Type"),
+      throw InputError(input.file, input.line_of("Ground motion/Type"),
                        "Ground motion/Type",
                        "a probabilistic analysis needs random loading: a kanai-tajimi, "
                        "clough-penzien or white-noise ground motion, or white-noise nodal forces");
@@ -89,8 +91,8 @@ namespace poundfe
   double
   RealizationRunner::reference_pga(const std::string &purpose) const
   {
-    const InputParameters        &input = analysis.input;
-    const GroundMotionParameters &g     = input.ground_motion;
+    const InputFile              &input = parameters.input;
+    const GroundMotionParameters &g     = parameters.ground_motion;
     if (g.type != GroundMotionType::kanai_tajimi && g.type != GroundMotionType::clough_penzien)
       throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
                        purpose + " scale a Kanai-Tajimi or Clough-Penzien motion to each PGA "

@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/excitation/stochastic.h>
 
 #include <Eigen/Dense>
@@ -374,6 +375,25 @@ namespace poundfe
   generate_ground_motion(const StochasticMotion &motion)
   {
     return MotionGenerator(motion).ground_motion();
+  }
+
+  MotionSamples
+  sample_realizations(const MotionGenerator &generator, const unsigned int n_realizations,
+                      const double scale)
+  {
+    MotionSamples samples;
+    samples.realizations.resize(n_realizations);
+    std::vector<double> xi(generator.n_variables());
+    for (unsigned int r = 0; r < n_realizations; ++r)
+      {
+        throw_if_interrupted();
+        standard_normals(generator.motion().seed, r, xi);
+        generator.generate(xi.data(), samples.realizations[r]);
+        for (double &a : samples.realizations[r])
+          a *= scale,
+            samples.mean_square += a * a / (n_realizations * generator.n_samples());
+      }
+    return samples;
   }
 
   EnsemblePsd

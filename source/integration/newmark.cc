@@ -399,36 +399,101 @@ namespace poundfe
     return value;
   }
 
-  bool
-  NewmarkIntegrator::try_step(Level &L, const Vector &p)
+  void
+  NewmarkIntegrator::set_step_load(const Level &L, const Vector &p)
   {
-    const double g = parameters.gamma, dt = L.dt;
     // rhs = p + M (c_u u + c_v v + c_a a) + C (c_u' u + c_v' v + c_a' a)
     rhs                   = p;
     work_vector.noalias() = L.c_mass_u * u + L.c_mass_v * v + L.c_mass_a * a;
     rhs.noalias() += system.mass * work_vector;
     work_vector.noalias() = L.c_damp_u * u + L.c_damp_v * v + L.c_damp_a * a;
     rhs.noalias() += system.damping * work_vector;
+  }
 
-    auto kinematics = [&]() {
-      a_next.noalias() = L.c_mass_u * (u_next - u) - L.c_mass_v * v - L.c_mass_a * a;
-      v_next.noalias() = v + dt * ((1 - g) * a + g * a_next);
-    };
+  void
+  NewmarkIntegrator::update_kinematics(const Level &L)
+  {
+    const double g = parameters.gamma, dt = L.dt;
+    a_next.noalias() = L.c_mass_u * (u_next - u) - L.c_mass_v * v - L.c_mass_a * a;
+    v_next.noalias() = v + dt * ((1 - g) * a + g * a_next);
+  }
 
-    if (n_elements == 0)
+  bool
+  NewmarkIntegrator::solve_linear_step(const Level &L)
+  {
+    L.solver->solve(rhs, u_next);
+    update_kinematics(L);
+    ++stats.iterations;
+    stats.max_iterations = std::max(stats.max_iterations, 1u);
+    if (const Eigen::Index i = first_non_finite(u_next); i >= 0)
       {
-        L.solver->solve(rhs, u_next);
-        kinematics();
-        ++stats.iterations;
-        stats.max_iterations = std::max(stats.max_iterations, 1u);
-        if (const Eigen::Index i = first_non_finite(u_next); i >= 0)
+        failure = "the displacement became non-finite (" + number_text(u_next[i]) + " at " +
+                  equation_text(i, equation_names) + ")";
+        return false;
+      }
+    return true;
+  }
+
+  bool
+  NewmarkIntegrator::newton_residual(Level &L, const unsigned int it, double &norm)
+  {
+    if (L.holds_tangent) // restore K_eff
+      {
+        std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
+        L.holds_tangent = false;
+      }
+    residual.noalias() = rhs - L.effective * u_next;
+    subtract_element_forces(residual);
+    norm = residual.norm();
+    if (!std::isfinite(norm))
+      {
+        if (const Eigen::Index i = first_non_finite(residual); i >= 0)
           {
-            failure = "the displacement became non-finite (" + number_text(u_next[i]) + " at " +
-                      equation_text(i, equation_names) + ")";
+            failure = "Newton iteration " + std::to_string(it) +
+                      ": the residual became non-finite (" + number_text(residual[i]) +
+                      " at " + equation_text(i, equation_names) + ")";
             return false;
           }
-        return true;
+        norm = residual.stableNorm(); // finite entries whose squares overflow
       }
+    return true;
+  }
+
+  bool
+  NewmarkIntegrator::newton_increment(Level &L, const unsigned int it, bool &tangent_factorised)
+  {
+    // Modified Newton: the step's first tangent for all its iterations.
+    const bool modified = parameters.newton.modified_newton;
+    if (modified && it == 0)
+      frozen_tangent_change = tangent_change;
+    const std::vector<double> &d = modified ? frozen_tangent_change : tangent_change;
+    bool solved = false;
+    if (use_woodbury || use_hybrid)
+      {
+        solved = L.woodbury.solve(residual, d, increment);
+        stats.woodbury_solves += solved;
+      }
+    if (!solved)
+      try
+        {
+          solve_with_assembled_tangent(L, d, modified && tangent_factorised);
+          tangent_factorised = true;
+        }
+      catch (const NumericalError &e) // a singular tangent at this iterate: cut the step
+        {
+          L.holds_tangent = true; // the values hold a partial tangent: restore them
+          failure = "Newton iteration " + std::to_string(it) + ": " + e.what();
+          return false;
+        }
+    return true;
+  }
+
+  bool
+  NewmarkIntegrator::try_step(Level &L, const Vector &p)
+  {
+    set_step_load(L, p);
+    if (n_elements == 0)
+      return solve_linear_step(L);
 
     const NewtonParameters &newton = parameters.newton;
     // Predictor: the last displacement; with friction, the last velocity
@@ -444,28 +509,12 @@ namespace poundfe
     bool   tangent_factorised = false; // this step's, for modified Newton
     for (unsigned int it = 0;; ++it)
       {
-        kinematics();
+        update_kinematics(L);
         if (!evaluate_elements(u_next, v_next, L))
           return false;
-        if (L.holds_tangent) // restore K_eff
-          {
-            std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
-            L.holds_tangent = false;
-          }
-        residual.noalias() = rhs - L.effective * u_next;
-        subtract_element_forces(residual);
-        double norm = residual.norm();
-        if (!std::isfinite(norm))
-          {
-            if (const Eigen::Index i = first_non_finite(residual); i >= 0)
-              {
-                failure = "Newton iteration " + std::to_string(it) +
-                          ": the residual became non-finite (" + number_text(residual[i]) +
-                          " at " + equation_text(i, equation_names) + ")";
-                return false;
-              }
-            norm = residual.stableNorm(); // finite entries whose squares overflow
-          }
+        double norm = 0;
+        if (!newton_residual(L, it, norm))
+          return false;
         if (it == 0)
           first_residual = norm;
         const double floor = 1e-13 * rhs.norm();
@@ -496,34 +545,12 @@ namespace poundfe
             Eigen::Index worst = 0;
             residual.cwiseAbs().maxCoeff(&worst);
             failure = "Newton did not converge in " + std::to_string(it) +
-                      (it == 1 ? " iteration: " : " iterations: ") + check.describe(newton) + "; the largest residual is at " +
-                      equation_text(worst, equation_names);
+                      (it == 1 ? " iteration: " : " iterations: ") + check.describe(newton) +
+                      "; the largest residual is at " + equation_text(worst, equation_names);
             return false;
           }
-
-        // Modified Newton: the step's first tangent for all its iterations.
-        const bool modified = newton.modified_newton;
-        if (modified && it == 0)
-          frozen_tangent_change = tangent_change;
-        const std::vector<double> &d = modified ? frozen_tangent_change : tangent_change;
-        bool solved = false;
-        if (use_woodbury || use_hybrid)
-          {
-            solved = L.woodbury.solve(residual, d, increment);
-            stats.woodbury_solves += solved;
-          }
-        if (!solved)
-          try
-            {
-              solve_with_assembled_tangent(L, d, modified && tangent_factorised);
-              tangent_factorised = true;
-            }
-          catch (const NumericalError &e) // a singular tangent at this iterate: cut the step
-            {
-              L.holds_tangent = true; // the values hold a partial tangent: restore them
-              failure = "Newton iteration " + std::to_string(it) + ": " + e.what();
-              return false;
-            }
+        if (!newton_increment(L, it, tangent_factorised))
+          return false;
         if (it == 0)
           first_energy = std::abs(increment.dot(residual));
         u_next += increment;

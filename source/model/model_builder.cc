@@ -308,6 +308,37 @@ namespace poundfe
         }
     }
 
+    /// The floors of a mesh building: one at each distinct beam level above
+    /// the base (within `tolerance`), holding the column joints at that
+    /// level, left to right.
+    void
+    add_mesh_floors(const Model &model, std::vector<double> beam_levels,
+                    const std::map<double, std::vector<unsigned int>> &joints_at_level,
+                    const double base_level, const double tolerance, Building &building)
+    {
+      std::sort(beam_levels.begin(), beam_levels.end());
+      double previous = base_level;
+      for (const double level : beam_levels)
+        {
+          if (level <= previous + tolerance)
+            continue;
+          Floor floor;
+          floor.level         = level;
+          floor.storey_height = level - previous;
+          for (const auto &[y, nodes] : joints_at_level)
+            if (std::abs(y - level) <= tolerance)
+              for (const unsigned int n : nodes)
+                if (std::find(floor.nodes.begin(), floor.nodes.end(), n) == floor.nodes.end())
+                  floor.nodes.push_back(n);
+          std::sort(floor.nodes.begin(), floor.nodes.end(), [&](unsigned int a, unsigned int c) {
+            return model.nodes[a].position.x < model.nodes[c].position.x;
+          });
+          if (!floor.nodes.empty())
+            building.floors.push_back(floor);
+          previous = level;
+        }
+    }
+
     void
     build_from_mesh(Model &model, const InputFile &input, const BuildingParameters &p,
                     const unsigned int b, Building &building)
@@ -381,27 +412,7 @@ namespace poundfe
         if (model.nodes[n].position.y <= min_y + tolerance)
           fix_base(model, n, p.base_fixity);
 
-      std::sort(beam_levels.begin(), beam_levels.end());
-      double previous = min_y;
-      for (const double level : beam_levels)
-        {
-          if (level <= previous + tolerance)
-            continue;
-          Floor floor;
-          floor.level         = level;
-          floor.storey_height = level - previous;
-          for (const auto &[y, nodes] : joints_at_level)
-            if (std::abs(y - level) <= tolerance)
-              for (const unsigned int n : nodes)
-                if (std::find(floor.nodes.begin(), floor.nodes.end(), n) == floor.nodes.end())
-                  floor.nodes.push_back(n);
-          std::sort(floor.nodes.begin(), floor.nodes.end(), [&](unsigned int a, unsigned int c) {
-            return model.nodes[a].position.x < model.nodes[c].position.x;
-          });
-          if (!floor.nodes.empty())
-            building.floors.push_back(floor);
-          previous = level;
-        }
+      add_mesh_floors(model, beam_levels, joints_at_level, min_y, tolerance, building);
       const std::string masses = "Building " + std::to_string(b + 1) + "/Floor masses";
       if (p.floor_masses.size() != 1 && p.floor_masses.size() != building.floors.size())
         throw InputError(input.file, input.line_of(masses), masses,
@@ -411,6 +422,7 @@ namespace poundfe
       for (unsigned int i = 0; i < building.floors.size(); ++i)
         lump_floor_mass(model, building.floors[i], value_for(p.floor_masses, i));
     }
+
     double
     floor_mass(const Model &model, const Floor &floor)
     {

@@ -71,7 +71,17 @@ namespace poundfe
                       "Mass of each floor, bottom up (roof last): one value for all or one "
                       "per floor. Frames: lumped in equal shares at the floor's joints; "
                       "shear buildings: the floor mass. Unit: kg.");
+    declare_frame_entries(prm);
+    declare_mesh_entries(prm);
+    declare_shear_entries(prm);
+    declare_hinges(prm);
+    declare_bouc_wen(prm);
+    declare_damping(prm);
+  }
 
+  void
+  BuildingParameters::declare_frame_entries(dealii::ParameterHandler &prm)
+  {
     prm.add_parameter("Number of storeys", n_storeys, "[frame, shear] Storeys. Unit: count.",
                       Patterns::Integer(1));
     prm.add_parameter("Storey heights", storey_heights,
@@ -105,7 +115,11 @@ namespace poundfe
                "[frame, mesh] Support of the column bases: fixed (clamped) or pinned. "
                "Unit: -.",
                base_fixity_names());
+  }
 
+  void
+  BuildingParameters::declare_mesh_entries(dealii::ParameterHandler &prm)
+  {
     prm.add_parameter("Mesh file", mesh_file,
                       "[mesh] Gmsh .msh file (line elements; physical ids are member groups), "
                       "relative to this parameter file. Unit: -.");
@@ -117,7 +131,11 @@ namespace poundfe
                       "[mesh] Second moment of area per group. Unit: m^4.");
     prm.add_parameter("Group mass per length", group_mass_per_length,
                       "[mesh] Distributed mass per group. Unit: kg/m.");
+  }
 
+  void
+  BuildingParameters::declare_shear_entries(dealii::ParameterHandler &prm)
+  {
     prm.add_parameter("Storey stiffnesses", storey_stiffnesses,
                       "[shear] Storey stiffness, one or per storey; 0 where only Springs "
                       "hold the floor (the SD or Duffing oscillator). Unit: N/m.");
@@ -129,7 +147,11 @@ namespace poundfe
                       "one value or one per storey; empty or 0: elastic. Unit: m.");
     prm.add_parameter("Drawing width", drawing_width,
                       "[shear] Width used for placement and pictures. Unit: m.");
+  }
 
+  void
+  BuildingParameters::declare_hinges(dealii::ParameterHandler &prm)
+  {
     prm.enter_subsection("Hinges");
     prm.add_parameter("Locations", hinge_locations,
                       "[frame, mesh] Member ends that get a Bouc-Wen rotational hinge. column "
@@ -159,6 +181,11 @@ namespace poundfe
                       "hinges keep the elastic frame nearly unchanged; Ibarra & Krawinkler "
                       "use 10). Unit: dimensionless.");
     prm.leave_subsection();
+  }
+
+  void
+  BuildingParameters::declare_bouc_wen(dealii::ParameterHandler &prm)
+  {
     prm.enter_subsection("Bouc-Wen");
     BoucWenParameters &h = hysteresis;
     prm.add_parameter("alpha", h.alpha,
@@ -177,6 +204,11 @@ namespace poundfe
     prm.add_parameter("delta eta", h.delta_eta,
                       "Baber-Noori stiffness degradation (eta). Unit: dimensionless.");
     prm.leave_subsection();
+  }
+
+  void
+  BuildingParameters::declare_damping(dealii::ParameterHandler &prm)
+  {
     prm.enter_subsection("Damping");
     add_choice(prm, "Type", damping_type,
                "Rayleigh damping C = a0 M + a1 K of this building: from a damping "

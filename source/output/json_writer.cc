@@ -1,4 +1,5 @@
 #include <poundfe/output/json_writer.h>
+#include <poundfe/base/input_file.h>
 
 #include <charconv>
 #include <cmath>
@@ -137,5 +138,16 @@ namespace poundfe
       text += (i ? ", " : "") + json_escape(x[i]);
     text += "]";
     return *this;
+  }
+
+  void
+  begin_summary(JsonWriter &json, const std::string &command, const InputFile &input,
+                const std::string &status)
+  {
+    json.begin_object()
+      .value("program", "poundfe")
+      .value("command", command)
+      .value("input", input.file)
+      .value("status", status);
   }
 } // namespace poundfe

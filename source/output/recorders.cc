@@ -143,6 +143,131 @@ namespace poundfe
       RowFunction              row;
     };
 
+    /// One column per building: the shear of its first storey.
+    Series
+    base_shear_series(const ResponseView &state, const std::shared_ptr<const StoreyForces> &forces)
+    {
+      std::vector<std::string> columns;
+      for (const Building &b : state.model.buildings)
+        columns.push_back(b.name + "_base_shear_N");
+      const unsigned int n_buildings = state.model.buildings.size();
+      auto shears = std::make_shared<std::vector<double>>();
+      return {columns, [forces, shears, n_buildings](const ResponseView &s,
+                                                    std::vector<double> &to) {
+                forces->storey_shears(s.displacement(), s.velocity(), *shears);
+                to.resize(n_buildings);
+                for (unsigned int b = 0; b < n_buildings; ++b)
+                  to[b] = (*shears)[forces->index(b, 0)];
+              }};
+    }
+
+    /// The six end forces of each requested member; an unknown label is bad input.
+    Series
+    member_force_series(const RecorderRequest &request,
+                        const std::shared_ptr<const StoreyForces> &forces,
+                        const std::string &input_file, const int line)
+    {
+      std::vector<std::string> columns;
+      for (const std::string &label : request.labels)
+        {
+          if (!forces->has_member(label))
+            throw InputError(input_file, line, "Output/Recorders/Record",
+                             "no member is labelled '" + label +
+                               "' (members are named like A3_C1.2: building, C<storey>.<column line> "
+                               "or B<floor>.<bay>)");
+          for (const char *c : {"_N1_N", "_V1_N", "_M1_N_m", "_N2_N", "_V2_N", "_M2_N_m"})
+            columns.push_back(label + c);
+        }
+      const std::vector<std::string> labels = request.labels;
+      return {columns, [forces, labels](const ResponseView &s, std::vector<double> &to) {
+                to.resize(6 * labels.size());
+                for (unsigned int m = 0; m < labels.size(); ++m)
+                  {
+                    const Vector6 f = forces->member_end_forces(labels[m], s.displacement());
+                    for (unsigned int k = 0; k < 6; ++k)
+                      to[6 * m + k] = f[k];
+                  }
+              }};
+    }
+
+    /// Force (moment), deformation (drift, rotation) and z of each hysteretic element.
+    Series
+    hinge_state_series(const NonlinearElements &elements, const unsigned int n_hyst)
+    {
+      std::vector<std::string> columns;
+      for (unsigned int h = 0; h < n_hyst; ++h)
+        {
+          const bool hinge = elements[h].kind == ElementKind::hinge;
+          columns.push_back(elements[h].label + (hinge ? "_moment_N_m" : "_force_N"));
+          columns.push_back(elements[h].label + (hinge ? "_rotation_rad" : "_drift_m"));
+          columns.push_back(elements[h].label + "_z");
+        }
+      return {columns, [n_hyst](const ResponseView &s, std::vector<double> &to) {
+                to.resize(3 * n_hyst);
+                for (unsigned int h = 0; h < n_hyst; ++h)
+                  {
+                    const NonlinearElement &e = s.elements[h];
+                    to[3 * h]     = e.force();
+                    to[3 * h + 1] = e.deformation(s.displacement());
+                    to[3 * h + 2] = e.history_variable();
+                  }
+              }};
+    }
+
+    /// Force and penetration of each gap element (after the hysteretic ones).
+    Series
+    gap_state_series(const NonlinearElements &elements, const unsigned int n_hyst,
+                     const unsigned int n_gaps)
+    {
+      std::vector<std::string> columns;
+      const unsigned int end = n_hyst + n_gaps;
+      for (unsigned int h = n_hyst; h < end; ++h)
+        {
+          columns.push_back(elements[h].label + "_force_N");
+          columns.push_back(elements[h].label + "_penetration_m");
+        }
+      return {columns, [n_hyst, end](const ResponseView &s, std::vector<double> &to) {
+                to.clear();
+                for (unsigned int h = n_hyst; h < end; ++h)
+                  {
+                    to.push_back(s.elements[h].force());
+                    to.push_back(s.elements[h].history_variable());
+                  }
+              }};
+    }
+
+    /// u and v of every equation, and the stick/slip phase of each friction element.
+    Series
+    phase_portrait_series(const ResponseView &state)
+    {
+      std::vector<std::string> columns;
+      for (const std::string &label : equation_labels(state.model))
+        {
+          columns.push_back(label + "_m");
+          columns.push_back(label + "_velocity_m_s");
+        }
+      const NonlinearElements  &elements = state.elements;
+      std::vector<unsigned int> friction;
+      for (unsigned int h = 0; h < elements.size(); ++h)
+        if (elements[h].kind == ElementKind::friction)
+          {
+            friction.push_back(h);
+            columns.push_back(elements[h].label + "_phase");
+          }
+      return {columns, [friction](const ResponseView &s, std::vector<double> &to) {
+                const Vector &u = s.displacement(), &v = s.velocity();
+                to.resize(2 * u.size() + friction.size());
+                for (Eigen::Index q = 0; q < u.size(); ++q)
+                  {
+                    to[2 * q]     = u[q];
+                    to[2 * q + 1] = v[q];
+                  }
+                for (std::size_t i = 0; i < friction.size(); ++i)
+                  to[2 * u.size() + i] = s.elements[friction[i]].phase();
+              }};
+    }
+
+    /// The columns and the row function of one recorded quantity.
     Series
     series_of(const RecorderRequest &request, const ResponseView &state, const PeakResponse &peaks,
               const std::shared_ptr<const StoreyForces> &forces, const std::string &input_file,
@@ -170,83 +295,13 @@ namespace poundfe
                       forces->storey_shears(s.displacement(), s.velocity(), to);
                     }};
           case RecordedQuantity::base_shear:
-            {
-              std::vector<std::string> columns;
-              for (const Building &b : state.model.buildings)
-                columns.push_back(b.name + "_base_shear_N");
-              const unsigned int n_buildings = state.model.buildings.size();
-              auto shears = std::make_shared<std::vector<double>>();
-              return {columns, [forces, shears, n_buildings](const ResponseView &s,
-                                                            std::vector<double> &to) {
-                        forces->storey_shears(s.displacement(), s.velocity(), *shears);
-                        to.resize(n_buildings);
-                        for (unsigned int b = 0; b < n_buildings; ++b)
-                          to[b] = (*shears)[forces->index(b, 0)];
-                      }};
-            }
+            return base_shear_series(state, forces);
           case RecordedQuantity::member_forces:
-            {
-              std::vector<std::string> columns;
-              for (const std::string &label : request.labels)
-                {
-                  if (!forces->has_member(label))
-                    throw InputError(input_file, line, "Output/Recorders/Record",
-                                     "no member is labelled '" + label +
-                                       "' (members are named like A3_C1.2: building, C<storey>.<column line> "
-                                       "or B<floor>.<bay>)");
-                  for (const char *c : {"_N1_N", "_V1_N", "_M1_N_m", "_N2_N", "_V2_N", "_M2_N_m"})
-                    columns.push_back(label + c);
-                }
-              const std::vector<std::string> labels = request.labels;
-              return {columns, [forces, labels](const ResponseView &s, std::vector<double> &to) {
-                        to.resize(6 * labels.size());
-                        for (unsigned int m = 0; m < labels.size(); ++m)
-                          {
-                            const Vector6 f = forces->member_end_forces(labels[m], s.displacement());
-                            for (unsigned int k = 0; k < 6; ++k)
-                              to[6 * m + k] = f[k];
-                          }
-                      }};
-            }
+            return member_force_series(request, forces, input_file, line);
           case RecordedQuantity::hinge_states:
-            {
-              std::vector<std::string> columns;
-              for (unsigned int h = 0; h < n_hyst; ++h)
-                {
-                  const bool hinge = elements[h].kind == ElementKind::hinge;
-                  columns.push_back(elements[h].label + (hinge ? "_moment_N_m" : "_force_N"));
-                  columns.push_back(elements[h].label + (hinge ? "_rotation_rad" : "_drift_m"));
-                  columns.push_back(elements[h].label + "_z");
-                }
-              return {columns, [n_hyst](const ResponseView &s, std::vector<double> &to) {
-                        to.resize(3 * n_hyst);
-                        for (unsigned int h = 0; h < n_hyst; ++h)
-                          {
-                            const NonlinearElement &e = s.elements[h];
-                            to[3 * h]     = e.force();
-                            to[3 * h + 1] = e.deformation(s.displacement());
-                            to[3 * h + 2] = e.history_variable();
-                          }
-                      }};
-            }
+            return hinge_state_series(elements, n_hyst);
           case RecordedQuantity::gap_states:
-            {
-              std::vector<std::string> columns;
-              const unsigned int end = n_hyst + peaks.n_gaps();
-              for (unsigned int h = n_hyst; h < end; ++h)
-                {
-                  columns.push_back(elements[h].label + "_force_N");
-                  columns.push_back(elements[h].label + "_penetration_m");
-                }
-              return {columns, [n_hyst, end](const ResponseView &s, std::vector<double> &to) {
-                        to.clear();
-                        for (unsigned int h = n_hyst; h < end; ++h)
-                          {
-                            to.push_back(s.elements[h].force());
-                            to.push_back(s.elements[h].history_variable());
-                          }
-                      }};
-            }
+            return gap_state_series(elements, n_hyst, peaks.n_gaps());
           case RecordedQuantity::energy:
             return {{"input_J", "kinetic_J", "damping_J", "strain_J", "hysteretic_J", "contact_J",
                      "balance_error", "friction_J", "belt_J"},
@@ -260,32 +315,7 @@ namespace poundfe
                       to.assign(1, s.ground_acceleration());
                     }};
           case RecordedQuantity::phase_portrait:
-            {
-              std::vector<std::string> columns;
-              for (const std::string &label : equation_labels(state.model))
-                {
-                  columns.push_back(label + "_m");
-                  columns.push_back(label + "_velocity_m_s");
-                }
-              std::vector<unsigned int> friction;
-              for (unsigned int h = 0; h < elements.size(); ++h)
-                if (elements[h].kind == ElementKind::friction)
-                  {
-                    friction.push_back(h);
-                    columns.push_back(elements[h].label + "_phase");
-                  }
-              return {columns, [friction](const ResponseView &s, std::vector<double> &to) {
-                        const Vector &u = s.displacement(), &v = s.velocity();
-                        to.resize(2 * u.size() + friction.size());
-                        for (Eigen::Index q = 0; q < u.size(); ++q)
-                          {
-                            to[2 * q]     = u[q];
-                            to[2 * q + 1] = v[q];
-                          }
-                        for (std::size_t i = 0; i < friction.size(); ++i)
-                          to[2 * u.size() + i] = s.elements[friction[i]].phase();
-                      }};
-            }
+            return phase_portrait_series(state);
           case RecordedQuantity::residual_drift:
             break; // not a time series
         }

@@ -111,6 +111,25 @@ namespace poundfe
       std::string                raw;
       std::vector<unsigned char> compressed;
     };
+    /// The cells of a VTU file as its arrays: connectivity, offsets, VTK
+    /// types, and the CellData ids (kind, building 1-based, member).
+    struct Cells
+    {
+      std::vector<long> connectivity, offsets;
+      std::vector<int>  types, kinds, buildings, members;
+
+      void
+      add(const std::vector<long> &cell_points, const int type, const CellKind kind,
+          const unsigned int building, const int member)
+      {
+        connectivity.insert(connectivity.end(), cell_points.begin(), cell_points.end());
+        offsets.push_back(connectivity.size());
+        types.push_back(type);
+        kinds.push_back(kind);
+        buildings.push_back(building + 1);
+        members.push_back(member);
+      }
+    };
   } // namespace
 
   struct VtuSeries::Impl
@@ -142,6 +161,12 @@ namespace poundfe
     Impl(const Model &model, const std::string &directory, const std::string &name);
 
     unsigned int add_point(const Point2 &position, const PointSource &source);
+    // the constructor's phases: points of the nodes, the cells (adding the
+    // points inside members and at barriers), the extent, the static text
+    void  add_node_points();
+    Cells make_cells();
+    void  set_model_size();
+    void  write_static_text(const Cells &cells);
     /// Global (ux, uy, rz) of every point.
     std::vector<std::array<double, 3>> point_displacements(const Vector &u) const;
     Vector6 element_displacements(const Member &member, const Vector &u) const;
@@ -164,6 +189,16 @@ namespace poundfe
     , directory(directory)
     , name(name)
   {
+    add_node_points();
+    const Cells cells = make_cells();
+    n_cells           = cells.types.size();
+    set_model_size();
+    write_static_text(cells);
+  }
+
+  void
+  VtuSeries::Impl::add_node_points()
+  {
     // one point per node; a hinge's member-side node is drawn at its joint
     point_of_node.assign(model.nodes.size(), 0);
     for (unsigned int n = 0; n < model.nodes.size(); ++n)
@@ -172,19 +207,12 @@ namespace poundfe
     for (unsigned int n = 0; n < model.nodes.size(); ++n)
       if (model.nodes[n].tied_to >= 0)
         point_of_node[n] = point_of_node[model.nodes[n].tied_to];
+  }
 
-    std::vector<long> connectivity, offsets;
-    std::vector<int>  types, kinds, buildings, members;
-    auto              add_cell = [&](const std::vector<long> &cell_points, const int type,
-                        const CellKind kind, const unsigned int building, const int member) {
-      connectivity.insert(connectivity.end(), cell_points.begin(), cell_points.end());
-      offsets.push_back(connectivity.size());
-      types.push_back(type);
-      kinds.push_back(kind);
-      buildings.push_back(building + 1);
-      members.push_back(member);
-    };
-
+  Cells
+  VtuSeries::Impl::make_cells()
+  {
+    Cells cells;
     std::map<std::string, int> member_id; // the pieces of a member share its label
     for (unsigned int e = 0; e < model.members.size(); ++e)
       {
@@ -201,16 +229,16 @@ namespace poundfe
           }
         cell.push_back(point_of_node[m.nodes[1]]);
         const int id = member_id.emplace(m.label, member_id.size() + 1).first->second;
-        add_cell(cell, vtk_poly_line, frame_element, m.building, id);
+        cells.add(cell, vtk_poly_line, frame_element, m.building, id);
       }
     for (const StoreyLink &link : model.links)
       {
         if (link.hysteretic)
-          hysteretic_storey_cells.push_back(types.size());
-        add_cell({point_of_node[link.nodes[0]], point_of_node[link.nodes[1]]}, vtk_line, storey,
-                 link.building, 0);
+          hysteretic_storey_cells.push_back(cells.types.size());
+        cells.add({point_of_node[link.nodes[0]], point_of_node[link.nodes[1]]}, vtk_line, storey,
+                  link.building, 0);
       }
-    first_gap_cell = types.size();
+    first_gap_cell = cells.types.size();
     for (const Gap &g : model.gaps)
       {
         std::array<long, 2> ends{{-1, -1}};
@@ -223,14 +251,18 @@ namespace poundfe
               const Point2 &at = model.nodes[g.nodes[1 - side]].position;
               ends[side] = add_point({at.x + (side == 1 ? 1 : -1) * g.initial_gap, at.y}, {});
             }
-        add_cell({ends[0], ends[1]}, vtk_line, gap, g.buildings[0], 0);
+        cells.add({ends[0], ends[1]}, vtk_line, gap, g.buildings[0], 0);
       }
-    first_hinge_cell = types.size();
+    first_hinge_cell = cells.types.size();
     for (const Hinge &h : model.hinges)
-      add_cell({point_of_node[h.joint_node]}, vtk_vertex, hinge, h.building,
-               members[h.member]);
-    n_cells = types.size();
+      cells.add({point_of_node[h.joint_node]}, vtk_vertex, hinge, h.building,
+                cells.members[h.member]);
+    return cells;
+  }
 
+  void
+  VtuSeries::Impl::set_model_size()
+  {
     double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
     for (unsigned int p = 0; p < points.size(); ++p)
       {
@@ -240,10 +272,14 @@ namespace poundfe
         y_max = p == 0 ? points[p].y : std::max(y_max, points[p].y);
       }
     model_size = std::max(x_max - x_min, y_max - y_min);
+  }
 
+  void
+  VtuSeries::Impl::write_static_text(const Cells &cells)
+  {
     DataArrayWriter text(static_cell_data);
     const std::pair<const char *, const std::vector<int> *> ids[] = {
-      {"kind", &kinds}, {"building", &buildings}, {"member", &members}};
+      {"kind", &cells.kinds}, {"building", &cells.buildings}, {"member", &cells.members}};
     for (const auto &[array_name, values] : ids)
       {
         text.begin("Int32", array_name, 1);
@@ -264,15 +300,15 @@ namespace poundfe
     g.end();
     geometry += "</Points>\n<Cells>\n";
     g.begin("Int64", "connectivity", 1);
-    for (const long c : connectivity)
+    for (const long c : cells.connectivity)
       g.whole(c);
     g.end();
     g.begin("Int64", "offsets", 1);
-    for (const long o : offsets)
+    for (const long o : cells.offsets)
       g.whole(o);
     g.end();
     g.begin("UInt8", "types", 1);
-    for (const int t : types)
+    for (const int t : cells.types)
       g.whole(t);
     g.end();
     geometry += "</Cells>\n";

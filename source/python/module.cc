@@ -9,6 +9,7 @@
 // the same messages. The GIL is released while poundfe computes.
 #include "module.h"
 
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/dynamics/analysis.h>

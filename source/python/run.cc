@@ -10,6 +10,8 @@
 #include <poundfe/commands/command_guard.h>
 #include <poundfe/commands/command_table.h>
 #include <poundfe/dynamics/run.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/report/run_outputs.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/floor_response.h>
 
@@ -106,12 +108,13 @@ namespace poundfe::python
       RunResult        result;
       {
         py::gil_scoped_release release;
-        const Excitation excitation = make_excitation(*analysis);
-        RunOptions       options;
+        const RunParameters parameters = run_parameters(run_input);
+        const Excitation    excitation = make_excitation(*analysis, parameters.time_history);
+        RunOptions          options;
         options.output_directory = directory;
         options.vtu = options.plots = vtu_and_plots;
         options.observers        = {&observer};
-        result                   = run_time_history(*analysis, excitation, options);
+        result                   = run_time_history(*analysis, parameters, excitation, options);
       }
       py::dict d;
       d["status"]               = result.status.name();
@@ -174,7 +177,7 @@ namespace poundfe::python
       {
         py::gil_scoped_release release;
         if (!command->reads_parameters) // print-parameters, template
-          status = command->run({arguments, nullptr, output, 0, MPI_COMM_SELF, std::cerr});
+          status = command->run({arguments, nullptr, output, 0, MPI_COMM_SELF, std::cerr, std::cout});
         else
           {
             const InputParameters input = read_parameters(arguments[0]);
@@ -185,7 +188,7 @@ namespace poundfe::python
               command->name, input, directory, true, !command->handles_interruption_itself};
             status = guard_command(guarded, [&]() {
               return command->run({arguments, &input, directory, n_realizations,
-                                   mpi ? MPI_COMM_WORLD : MPI_COMM_SELF, std::cerr});
+                                   mpi ? MPI_COMM_WORLD : MPI_COMM_SELF, std::cerr, std::cout});
             });
           }
         std::cout.flush();

@@ -1,6 +1,6 @@
 #include <poundfe/reliability/reliability_parameters.h>
 #include <poundfe/base/input_file.h>
-#include <poundfe/input/sweep.h>
+#include <poundfe/base/sweep_parameters.h>
 #include <poundfe/model/model_builder.h>
 
 #include <deal.II/base/parameter_handler.h>

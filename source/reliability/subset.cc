@@ -79,189 +79,277 @@ namespace poundfe
         start[j + 1] = start[j] + lengths[j];
       return start;
     }
-  } // namespace
 
-  SubsetResult
-  subset_simulation(const ResponseFunction &response, const unsigned int n_variables,
-                    const double threshold, const SubsetSettings &settings, const MPI_Comm comm)
-  {
-    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int N       = settings.samples_per_level;
-    const unsigned int n_seeds = std::lround(settings.conditional_probability * N);
-    SubsetResult       result;
-    unsigned long      runs = 0;
+    /// One Subset Simulation, phase by phase (deal.II step-26 style): the
+    /// direct samples of level 0, then per level its threshold, the seeds
+    /// moved to the ranks of their chains, and the chains.
+    class SubsetRun
+    {
+    public:
+      SubsetRun(const ResponseFunction &response, const unsigned int n_variables,
+                const SubsetSettings &settings, const MPI_Comm comm, SubsetJournal *journal)
+        : response(response)
+        , n_variables(n_variables)
+        , settings(settings)
+        , comm(comm)
+        , journal(journal)
+        , rank(dealii::Utilities::MPI::this_mpi_process(comm))
+        , n_ranks(dealii::Utilities::MPI::n_mpi_processes(comm))
+        , N(settings.samples_per_level)
+      {}
 
-    // On a terminal: rank 0's samples of each level (the others run as many).
-    const auto level_progress = [&](const unsigned int l, const unsigned long total) {
+      SubsetResult run(double threshold);
+
+    private:
+      const ResponseFunction &response;
+      const unsigned int      n_variables;
+      const SubsetSettings   &settings;
+      const MPI_Comm          comm;
+      SubsetJournal *const    journal;
+      const unsigned int      rank, n_ranks, N;
+      SubsetResult            result;
+      LevelSamples            level;      // the current level
+      double                  acceptance = 0; // of the moves that produced it
+      bool                    stopped    = false; // this rank saw SIGINT/SIGTERM
+
+      double evaluate(unsigned int l, unsigned int sample, const std::vector<double> &xi);
+      std::unique_ptr<Progress> level_progress(unsigned int l, unsigned long total) const;
+      void   sample_level_0();
+      /// The level's exceedance of b (its probability and CoV) appended to the result.
+      void   add_level(double b, double p);
+      std::vector<std::vector<double>> move_seeds(const std::vector<unsigned int> &seeds) const;
+      void   run_chains(unsigned int l, double b, const std::vector<unsigned int> &seeds);
+      /// Every rank's responses of `next`; true when all ranks went on.
+      bool   gather(LevelSamples &next);
+    };
+
+    double
+    SubsetRun::evaluate(const unsigned int l, const unsigned int sample,
+                        const std::vector<double> &xi)
+    {
+      double y = 0;
+      if (journal && journal->find(l, sample, y))
+        {
+          ++result.resumed_runs;
+          return y;
+        }
+      y = response(xi);
+      ++result.model_runs;
+      if (journal)
+        journal->record(l, sample, y);
+      return y;
+    }
+
+    std::unique_ptr<Progress>
+    SubsetRun::level_progress(const unsigned int l, const unsigned long total) const
+    {
+      // On a terminal: rank 0's samples of each level (the others run as many).
       return std::make_unique<Progress>(rank == 0 ? std::cerr : silent,
                                         "level " + std::to_string(l) +
                                           (n_ranks > 1 ? " (rank 0): samples" : ": samples"),
                                         total);
-    };
-    // A rank that receives SIGINT or SIGTERM stops its samples; at the end
-    // of the level, where all ranks meet anyway, they agree to drop it.
-    bool stopped = false;
+    }
 
-    // Level 0: direct Monte Carlo, sample i on rank i mod P.
-    LevelSamples level;
-    level.response.assign(N, 0.0);
-    level.chain_length.assign(N, 1);
-    std::unique_ptr<Progress> progress = level_progress(0, (N + n_ranks - 1) / n_ranks);
-    for (unsigned int i = rank; i < N; i += n_ranks)
-      {
-        if ((stopped = interruption_requested()))
-          break;
-        std::vector<double> xi(n_variables);
-        standard_normals(settings.seed, i, xi);
-        level.response[i] = response(xi);
-        ++runs;
-        level.owned.push_back(i);
-        level.xi.push_back(std::move(xi));
-        progress->update(level.owned.size());
-      }
-    progress->finish();
-    MPI_Allreduce(MPI_IN_PLACE, level.response.data(), N, MPI_DOUBLE, MPI_SUM, comm);
-    result.interrupted = dealii::Utilities::MPI::logical_or(stopped, comm);
-
-    double probability = 1, variance = 0;
-    double acceptance  = 0;
-    for (unsigned int l = 0; !result.interrupted; ++l)
-      {
-        // order: largest response first, ties by id (the same on every rank)
-        std::vector<unsigned int> order(N);
-        std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
-          return level.response[a] > level.response[b];
-        });
-        const double b = 0.5 * (level.response[order[n_seeds - 1]] + level.response[order[n_seeds]]);
-        SubsetLevel  info;
-        info.acceptance_rate = acceptance;
-        if (b >= threshold || l + 1 == settings.max_levels)
-          {
-            const double n_fail = std::count_if(level.response.begin(), level.response.end(),
-                                                [&](double y) { return y > threshold; });
-            info.threshold               = threshold;
-            info.conditional_probability = n_fail / N;
-            info.coefficient_of_variation =
-              std::sqrt(level_variance(level, threshold, info.conditional_probability));
-            result.levels.push_back(info);
-            probability *= info.conditional_probability;
-            variance += info.coefficient_of_variation * info.coefficient_of_variation;
-            result.reached_threshold = b >= threshold;
+    void
+    SubsetRun::sample_level_0()
+    {
+      // Direct Monte Carlo, sample i on rank i mod P.
+      level.response.assign(N, 0.0);
+      level.chain_length.assign(N, 1);
+      const std::unique_ptr<Progress> progress = level_progress(0, (N + n_ranks - 1) / n_ranks);
+      for (unsigned int i = rank; i < N; i += n_ranks)
+        {
+          if ((stopped = interruption_requested()))
             break;
-          }
-        // Seeds: the samples strictly above b (fewer than p0 N on ties).
-        std::vector<unsigned int> seeds;
-        for (const unsigned int id : order)
-          if (level.response[id] > b)
-            seeds.push_back(id);
-        if (seeds.empty())
-          throw NumericalError("subset simulation: level " + std::to_string(l) +
-                               ": the response does not vary above its quantile " +
-                               std::to_string(b) + "; cannot form the next level");
-        info.threshold               = b;
-        info.conditional_probability = static_cast<double>(seeds.size()) / N;
-        info.coefficient_of_variation =
-          std::sqrt(level_variance(level, b, info.conditional_probability));
-        result.levels.push_back(info);
-        probability *= info.conditional_probability;
-        variance += info.coefficient_of_variation * info.coefficient_of_variation;
+          std::vector<double> xi(n_variables);
+          standard_normals(settings.seed, i, xi);
+          level.response[i] = evaluate(0, i, xi);
+          level.owned.push_back(i);
+          level.xi.push_back(std::move(xi));
+          progress->update(level.owned.size());
+        }
+      progress->finish();
+    }
 
-        // Chains: N states in all, N/n_s per seed, the first N mod n_s one longer
-        // (p0 N or 1/p0 not whole: chains of unequal length).
-        LevelSamples next;
-        const unsigned int n_chains = seeds.size();
-        next.chain_length.assign(n_chains, N / n_chains);
-        for (unsigned int j = 0; j < N % n_chains; ++j)
-          ++next.chain_length[j];
-        const std::vector<unsigned int> start = chain_starts(next.chain_length);
-        next.response.assign(N, 0.0);
-        unsigned long accepted = 0, proposed = 0;
-        const std::vector<unsigned int> old_start = chain_starts(level.chain_length);
-        std::vector<double> state(n_variables), candidate(n_variables);
-        // First move every seed from the rank of its chain to the rank of its
-        // new chain (all ranks in the same order), then run the chains.
-        std::vector<std::vector<double>> my_seeds;
-        for (unsigned int j = 0; j < n_chains; ++j)
-          {
-            const unsigned int old_chain =
-              std::upper_bound(old_start.begin(), old_start.end(), seeds[j]) - old_start.begin() - 1;
-            const unsigned int from = old_chain % n_ranks, to = j % n_ranks;
-            if (rank == from)
-              {
-                const auto at = std::lower_bound(level.owned.begin(), level.owned.end(), seeds[j]);
-                Assert(at != level.owned.end() && *at == seeds[j], dealii::ExcInternalError());
-                if (to == from)
-                  my_seeds.push_back(level.xi[at - level.owned.begin()]);
-                else
-                  MPI_Send(level.xi[at - level.owned.begin()].data(), n_variables, MPI_DOUBLE, to,
-                           3, comm);
-              }
-            else if (rank == to)
-              {
-                my_seeds.emplace_back(n_variables);
-                MPI_Recv(my_seeds.back().data(), n_variables, MPI_DOUBLE, from, 3, comm,
-                         MPI_STATUS_IGNORE);
-              }
-          }
-        level.xi.clear();
-        unsigned long my_states = 0;
-        for (unsigned int j = rank; j < n_chains; j += n_ranks)
-          my_states += next.chain_length[j];
-        progress = level_progress(l + 1, my_states);
-        for (unsigned int j = rank, mine = 0; j < n_chains && !stopped; j += n_ranks, ++mine)
-          {
-            state = std::move(my_seeds[mine]);
-            // modified Metropolis from the seed, with the stream of (seed, level, chain)
-            NormalStream random(chain_seed(settings.seed, l + 1), j);
-            double       y = level.response[seeds[j]];
-            for (unsigned int k = 0; k < next.chain_length[j]; ++k)
-              {
-                if (k > 0)
-                  {
-                    if ((stopped = interruption_requested()))
-                      break;
-                    bool moved = false;
-                    for (unsigned int c = 0; c < n_variables; ++c)
-                      {
-                        const double x     = state[c];
-                        const double xi    = x + settings.proposal_spread * random.next();
-                        const double ratio = std::exp(0.5 * (x * x - xi * xi));
-                        const double u     = standard_normal_cdf(random.next());
-                        candidate[c]       = u < ratio ? xi : x;
-                        moved |= u < ratio;
-                      }
-                    ++proposed;
-                    if (moved)
-                      {
-                        const double y_candidate = response(candidate);
-                        ++runs;
-                        if (y_candidate > b)
-                          {
-                            state.swap(candidate);
-                            y = y_candidate;
-                            ++accepted;
-                          }
-                      }
-                  }
-                next.response[start[j] + k] = y;
-                next.owned.push_back(start[j] + k);
-                next.xi.push_back(state);
-                progress->update(next.owned.size());
-              }
-          }
-        progress->finish();
-        MPI_Allreduce(MPI_IN_PLACE, next.response.data(), N, MPI_DOUBLE, MPI_SUM, comm);
-        result.interrupted = dealii::Utilities::MPI::logical_or(stopped, comm);
-        accepted      = dealii::Utilities::MPI::sum(accepted, comm);
-        proposed      = dealii::Utilities::MPI::sum(proposed, comm);
-        acceptance    = proposed > 0 ? static_cast<double>(accepted) / proposed : 0;
-        level = std::move(next);
-      }
-    result.probability              = probability;
-    result.coefficient_of_variation = std::sqrt(variance);
-    result.model_runs               = dealii::Utilities::MPI::sum(runs, comm);
+    bool
+    SubsetRun::gather(LevelSamples &next)
+    {
+      MPI_Allreduce(MPI_IN_PLACE, next.response.data(), N, MPI_DOUBLE, MPI_SUM, comm);
+      // A rank that receives SIGINT or SIGTERM stops its samples; at the end
+      // of the level, where all ranks meet anyway, they agree to drop it.
+      result.interrupted = dealii::Utilities::MPI::logical_or(stopped, comm);
+      return !result.interrupted;
+    }
+
+    void
+    SubsetRun::add_level(const double b, const double p)
+    {
+      SubsetLevel info;
+      info.acceptance_rate          = acceptance;
+      info.threshold                = b;
+      info.conditional_probability  = p;
+      info.coefficient_of_variation = std::sqrt(level_variance(level, b, p));
+      result.levels.push_back(info);
+    }
+
+    std::vector<std::vector<double>>
+    SubsetRun::move_seeds(const std::vector<unsigned int> &seeds) const
+    {
+      // Every seed from the rank of its chain to the rank of its new chain
+      // (all ranks in the same order).
+      const std::vector<unsigned int> old_start = chain_starts(level.chain_length);
+      std::vector<std::vector<double>> my_seeds;
+      for (unsigned int j = 0; j < seeds.size(); ++j)
+        {
+          const unsigned int old_chain =
+            std::upper_bound(old_start.begin(), old_start.end(), seeds[j]) - old_start.begin() - 1;
+          const unsigned int from = old_chain % n_ranks, to = j % n_ranks;
+          if (rank == from)
+            {
+              const auto at = std::lower_bound(level.owned.begin(), level.owned.end(), seeds[j]);
+              Assert(at != level.owned.end() && *at == seeds[j], dealii::ExcInternalError());
+              if (to == from)
+                my_seeds.push_back(level.xi[at - level.owned.begin()]);
+              else
+                MPI_Send(level.xi[at - level.owned.begin()].data(), n_variables, MPI_DOUBLE, to, 3,
+                         comm);
+            }
+          else if (rank == to)
+            {
+              my_seeds.emplace_back(n_variables);
+              MPI_Recv(my_seeds.back().data(), n_variables, MPI_DOUBLE, from, 3, comm,
+                       MPI_STATUS_IGNORE);
+            }
+        }
+      return my_seeds;
+    }
+
+    void
+    SubsetRun::run_chains(const unsigned int l, const double b,
+                          const std::vector<unsigned int> &seeds)
+    {
+      // N states in all, N/n_s per seed, the first N mod n_s one longer
+      // (p0 N or 1/p0 not whole: chains of unequal length).
+      LevelSamples       next;
+      const unsigned int n_chains = seeds.size();
+      next.chain_length.assign(n_chains, N / n_chains);
+      for (unsigned int j = 0; j < N % n_chains; ++j)
+        ++next.chain_length[j];
+      const std::vector<unsigned int> start = chain_starts(next.chain_length);
+      next.response.assign(N, 0.0);
+      std::vector<std::vector<double>> my_seeds = move_seeds(seeds);
+      level.xi.clear();
+
+      unsigned long accepted = 0, proposed = 0, my_states = 0;
+      for (unsigned int j = rank; j < n_chains; j += n_ranks)
+        my_states += next.chain_length[j];
+      const std::unique_ptr<Progress> progress = level_progress(l, my_states);
+      std::vector<double> candidate(n_variables);
+      for (unsigned int j = rank, mine = 0; j < n_chains && !stopped; j += n_ranks, ++mine)
+        {
+          std::vector<double> state = std::move(my_seeds[mine]);
+          // modified Metropolis from the seed, with the stream of (seed, level, chain)
+          NormalStream random(chain_seed(settings.seed, l), j);
+          double       y = level.response[seeds[j]];
+          for (unsigned int k = 0; k < next.chain_length[j]; ++k)
+            {
+              if (k > 0)
+                {
+                  if ((stopped = interruption_requested()))
+                    break;
+                  bool moved = false;
+                  for (unsigned int c = 0; c < n_variables; ++c)
+                    {
+                      const double x     = state[c];
+                      const double xi    = x + settings.proposal_spread * random.next();
+                      const double ratio = std::exp(0.5 * (x * x - xi * xi));
+                      const double u     = standard_normal_cdf(random.next());
+                      candidate[c]       = u < ratio ? xi : x;
+                      moved |= u < ratio;
+                    }
+                  ++proposed;
+                  if (moved)
+                    {
+                      const double y_candidate = evaluate(l, start[j] + k, candidate);
+                      if (y_candidate > b)
+                        {
+                          state.swap(candidate);
+                          y = y_candidate;
+                          ++accepted;
+                        }
+                    }
+                }
+              next.response[start[j] + k] = y;
+              next.owned.push_back(start[j] + k);
+              next.xi.push_back(state);
+              progress->update(next.owned.size());
+            }
+        }
+      progress->finish();
+      if (!gather(next))
+        return;
+      accepted   = dealii::Utilities::MPI::sum(accepted, comm);
+      proposed   = dealii::Utilities::MPI::sum(proposed, comm);
+      acceptance = proposed > 0 ? static_cast<double>(accepted) / proposed : 0;
+      level      = std::move(next);
+    }
+
+    SubsetResult
+    SubsetRun::run(const double threshold)
+    {
+      const unsigned int n_seeds = std::lround(settings.conditional_probability * N);
+      sample_level_0();
+      gather(level); // interrupted at level 0: no level, P = 1
+      for (unsigned int l = 0; !result.interrupted; ++l)
+        {
+          // order: largest response first, ties by id (the same on every rank)
+          std::vector<unsigned int> order(N);
+          std::iota(order.begin(), order.end(), 0);
+          std::stable_sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+            return level.response[a] > level.response[b];
+          });
+          const double b =
+            0.5 * (level.response[order[n_seeds - 1]] + level.response[order[n_seeds]]);
+          if (b >= threshold || l + 1 == settings.max_levels)
+            {
+              const double n_fail = std::count_if(level.response.begin(), level.response.end(),
+                                                  [&](double y) { return y > threshold; });
+              add_level(threshold, n_fail / N);
+              result.reached_threshold = b >= threshold;
+              break;
+            }
+          // Seeds: the samples strictly above b (fewer than p0 N on ties).
+          std::vector<unsigned int> seeds;
+          for (const unsigned int id : order)
+            if (level.response[id] > b)
+              seeds.push_back(id);
+          if (seeds.empty())
+            throw NumericalError("subset simulation: level " + std::to_string(l) +
+                                 ": the response does not vary above its quantile " +
+                                 std::to_string(b) + "; cannot form the next level");
+          add_level(b, static_cast<double>(seeds.size()) / N);
+          run_chains(l + 1, b, seeds);
+        }
+      double variance = 0;
+      result.probability = 1;
+      for (const SubsetLevel &L : result.levels)
+        {
+          result.probability *= L.conditional_probability;
+          variance += L.coefficient_of_variation * L.coefficient_of_variation;
+        }
+      result.coefficient_of_variation = std::sqrt(variance);
+      return result;
+    }
+  } // namespace
+
+  SubsetResult
+  subset_simulation(const ResponseFunction &response, const unsigned int n_variables,
+                    const double threshold, const SubsetSettings &settings, const MPI_Comm comm,
+                    SubsetJournal *const journal)
+  {
+    SubsetResult result = SubsetRun(response, n_variables, settings, comm, journal).run(threshold);
+    result.model_runs   = dealii::Utilities::MPI::sum(result.model_runs, comm);
+    result.resumed_runs = dealii::Utilities::MPI::sum(result.resumed_runs, comm);
     return result;
   }
 

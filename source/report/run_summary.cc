@@ -84,12 +84,14 @@ namespace poundfe
     write_modes(json, "modes", analysis.modes);
   }
 
-  RunSummary::RunSummary(const Analysis &analysis, const Excitation &excitation,
-                         const PeakResponse &peaks, const ResponseRange &range,
+  RunSummary::RunSummary(const Analysis &analysis, const RunParameters &parameters,
+                         const Excitation &excitation, const PeakResponse &peaks,
+                         const ResponseRange &range,
                          const std::string &directory, const bool plots,
                          const std::string &solver, const std::string &tangent_update,
                          std::vector<std::string> files)
     : analysis(analysis)
+    , parameters(parameters)
     , excitation(excitation)
     , peaks(peaks)
     , range(range)
@@ -203,11 +205,8 @@ namespace poundfe
   RunSummary::write_json(const ResponseView &state, const RunStatus &status,
                          const std::vector<std::string> &written) const
   {
-    const Model           &model  = analysis.model;
-    const InputParameters &input  = analysis.input;
-    const FloorResponse   &floors = peaks.floors();
-    JsonWriter             json;
-    begin_summary(json, "run", input, status.name());
+    JsonWriter json;
+    begin_summary(json, "run", parameters.time_history.input, status.name());
     if (status.kind == RunStatus::Kind::failed)
       json.value("message", status.message);
     std::vector<std::string> warnings = analysis.warnings; // the input's, then the response's
@@ -223,6 +222,23 @@ namespace poundfe
       .value("duration_s", motion.duration())
       .value("time_step_s", motion.time_step())
       .end_object();
+    write_buildings(json);
+    if (peaks.n_hysteretic() > 0)
+      write_hinges(json, state);
+    if (peaks.n_gaps() > 0)
+      write_gaps(json, state);
+    write_springs_and_friction(json, state, peaks, status.end_time);
+    write_energy_and_newton(json, state);
+    write_run(json, status, written);
+    json.end_object();
+    write_file_atomically(directory + "/summary.json", json.str());
+  }
+
+  void
+  RunSummary::write_buildings(JsonWriter &json) const
+  {
+    const Model         &model  = analysis.model;
+    const FloorResponse &floors = peaks.floors();
     json.begin_array("buildings");
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
@@ -262,70 +278,80 @@ namespace poundfe
         json.end_object();
       }
     json.end_array();
+  }
 
+  void
+  RunSummary::write_hinges(JsonWriter &json, const ResponseView &state) const
+  {
+    const Model       &model        = analysis.model;
+    const unsigned int n_hysteretic = peaks.n_hysteretic();
+    json.begin_array("hinges");
+    for (unsigned int h = 0; h < n_hysteretic; ++h)
+      {
+        const NonlinearElement &e     = state.elements[h];
+        const ElementUnits     units = units_of(e.kind);
+        json.begin_object()
+          .value("label", e.label)
+          .value("kind", units.kind)
+          .value("building", model.buildings[e.building].name)
+          .value(units.yield, e.yield_deformation())
+          .value(units.peak, peaks.peak_deformation()[h])
+          .value("time_of_peak_deformation_s", peaks.time_of_peak_deformation()[h])
+          .value("ductility", peaks.ductility(h))
+          .value(units.plastic, peaks.peak_plastic_deformation()[h])
+          .value(units.force, peaks.peak_force()[h])
+          .value("dissipated_energy_J", state.dissipated_energy(h))
+          .end_object();
+      }
+    json.end_array();
+  }
+
+  void
+  RunSummary::write_gaps(JsonWriter &json, const ResponseView &state) const
+  {
+    const Model       &model        = analysis.model;
     const unsigned int n_hysteretic = peaks.n_hysteretic();
     const unsigned int n_gaps       = peaks.n_gaps();
-    if (n_hysteretic > 0)
+    const ContactLawParameters &law          = model.contact;
+    json.begin_object("contact")
+      .value("law", law.law)
+      .value("stiffness", law.stiffness)
+      .value("damping_parameter", law.damping)
+      .value("damping_from", contact_damping_from_names().name(parameters.contact.damping_from))
+      .value("coefficient_of_restitution", parameters.contact.restitution)
+      .end_object();
+    std::vector<unsigned int> count(n_gaps, 0);
+    std::vector<double>       peak(n_gaps, 0.0), penetration(n_gaps, 0.0), impulse(n_gaps, 0.0);
+    for (const Impact &impact : state.impact_log().impacts())
       {
-        json.begin_array("hinges");
-        for (unsigned int h = 0; h < n_hysteretic; ++h)
-          {
-            const NonlinearElement &e     = state.elements[h];
-            const ElementUnits     units = units_of(e.kind);
-            json.begin_object()
-              .value("label", e.label)
-              .value("kind", units.kind)
-              .value("building", model.buildings[e.building].name)
-              .value(units.yield, e.yield_deformation())
-              .value(units.peak, peaks.peak_deformation()[h])
-              .value("time_of_peak_deformation_s", peaks.time_of_peak_deformation()[h])
-              .value("ductility", peaks.ductility(h))
-              .value(units.plastic, peaks.peak_plastic_deformation()[h])
-              .value(units.force, peaks.peak_force()[h])
-              .value("dissipated_energy_J", state.dissipated_energy(h))
-              .end_object();
-          }
-        json.end_array();
+        const unsigned int g = impact.element - n_hysteretic;
+        ++count[g];
+        peak[g]        = std::max(peak[g], impact.peak_force);
+        penetration[g] = std::max(penetration[g], impact.max_penetration);
+        impulse[g] += impact.impulse;
       }
-    if (n_gaps > 0)
+    json.begin_array("gaps");
+    for (unsigned int g = 0; g < n_gaps; ++g)
       {
-        const ContactLawParameters &law = model.contact;
-        json.begin_object("contact")
-          .value("law", law.law)
-          .value("stiffness", law.stiffness)
-          .value("damping_parameter", law.damping)
-          .value("damping_from", contact_damping_from_names().name(input.contact.damping_from))
-          .value("coefficient_of_restitution", input.contact.restitution)
+        const Gap &gap = model.gaps[g];
+        json.begin_object()
+          .value("label", gap.label)
+          .value("level_m", gap.level)
+          .value("initial_gap_m", gap.initial_gap)
+          .value("effective_mass_kg", gap.effective_mass)
+          .value("impacts", count[g])
+          .value("peak_force_N", peak[g])
+          .value("max_penetration_m", penetration[g])
+          .value("total_impulse_N_s", impulse[g])
+          .value("dissipated_energy_J", state.dissipated_energy(n_hysteretic + g))
           .end_object();
-        std::vector<unsigned int> count(n_gaps, 0);
-        std::vector<double>       peak(n_gaps, 0.0), penetration(n_gaps, 0.0), impulse(n_gaps, 0.0);
-        for (const Impact &impact : state.impact_log().impacts())
-          {
-            const unsigned int g = impact.element - n_hysteretic;
-            ++count[g];
-            peak[g]        = std::max(peak[g], impact.peak_force);
-            penetration[g] = std::max(penetration[g], impact.max_penetration);
-            impulse[g] += impact.impulse;
-          }
-        json.begin_array("gaps");
-        for (unsigned int g = 0; g < n_gaps; ++g)
-          {
-            const Gap &gap = model.gaps[g];
-            json.begin_object()
-              .value("label", gap.label)
-              .value("level_m", gap.level)
-              .value("initial_gap_m", gap.initial_gap)
-              .value("effective_mass_kg", gap.effective_mass)
-              .value("impacts", count[g])
-              .value("peak_force_N", peak[g])
-              .value("max_penetration_m", penetration[g])
-              .value("total_impulse_N_s", impulse[g])
-              .value("dissipated_energy_J", state.dissipated_energy(n_hysteretic + g))
-              .end_object();
-          }
-        json.end_array();
       }
-    write_springs_and_friction(json, state, peaks, status.end_time);
+    json.end_array();
+  }
+
+  void
+  RunSummary::write_energy_and_newton(JsonWriter &json, const ResponseView &state) const
+  {
     const EnergyBalance energy = state.energy();
     json.begin_object("energy")
       .value("initial_J", energy.initial)
@@ -354,11 +380,18 @@ namespace poundfe
       .value("smallest_time_step_s", stats.smallest_time_step)
       .value("steps_including_substeps", static_cast<unsigned long>(stats.steps))
       .end_object();
+  }
+
+  void
+  RunSummary::write_run(JsonWriter &json, const RunStatus &status,
+                        const std::vector<std::string> &written) const
+  {
+    const NewmarkParameters &newmark = parameters.time_history.time_integration.newmark;
     json.begin_object("analysis")
       .value("integrator", "Newmark")
-      .value("gamma", input.time_integration.newmark.gamma)
-      .value("beta", input.time_integration.newmark.beta)
-      .value("time_step_s", input.time_integration.newmark.time_step)
+      .value("gamma", newmark.gamma)
+      .value("beta", newmark.beta)
+      .value("time_step_s", newmark.time_step)
       .value("end_time_s", status.end_time)
       .value("steps", status.steps)
       .value("linear_solver", solver)
@@ -366,11 +399,9 @@ namespace poundfe
       .value("steps_per_second", status.steps / std::max(status.wall_time, 1e-12))
       .end_object();
     json.begin_object("output")
-      .value("format", output_format_names().name(input.output.recorders.format))
+      .value("format", output_format_names().name(parameters.output.recorders.format))
       .value("files", written)
       .end_object();
-    json.end_object();
-    write_file_atomically(directory + "/summary.json", json.str());
   }
 
   std::vector<DriftCheck>
@@ -380,13 +411,13 @@ namespace poundfe
     std::vector<double>  peak;
     for (unsigned int f = 0; f < analysis.model.buildings[b].floors.size(); ++f)
       peak.push_back(floors.peak_drift_ratio()[floors.index(b, f)]);
-    return check_drift_limits(analysis.input.drift_limits.limits(), peak);
+    return check_drift_limits(parameters.drift_limits.limits(), peak);
   }
 
   void
   RunSummary::write_drift_checks(JsonWriter &json, const unsigned int b) const
   {
-    if (analysis.input.drift_limits.limits().empty())
+    if (parameters.drift_limits.limits().empty())
       return; // the summary of a run without limits is unchanged
     json.begin_array("drift_limits");
     for (const DriftCheck &check : drift_checks(b))
@@ -492,7 +523,7 @@ namespace poundfe
   Plot
   RunSummary::floor_spectra_plot() const
   {
-    const double zeta = analysis.input.spectrum.damping_ratios.front();
+    const double zeta = parameters.spectrum.damping_ratios.front();
     std::ostringstream title;
     title << "Floor response spectra (" << 100 * zeta << " % damping)";
     Plot plot{"floor_spectra.png", title.str(), "period (s)", "pseudo-acceleration (m/s^2)",
@@ -558,7 +589,7 @@ namespace poundfe
       if (!building.floors.empty())
         height = std::max(height, building.floors.back().level - building.base_level);
     unsigned int n_limits = 0;
-    for (const DriftLimit &limit : analysis.input.drift_limits.limits())
+    for (const DriftLimit &limit : parameters.drift_limits.limits())
       {
         largest = std::max(largest, limit.drift_ratio);
         const std::string  name = "$limit" + std::to_string(++n_limits);

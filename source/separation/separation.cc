@@ -361,12 +361,13 @@ namespace poundfe
 
   /// One time history of the file's (deterministic) excitation.
   RunStatus
-  run_without_contact(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
+  run_without_contact(const Analysis &analysis, const TimeHistoryParameters &parameters,
+                      const std::vector<AdjacentPair> &pairs,
            std::vector<PairResult> &results)
   {
-    TimeHistory        history(analysis);
+    TimeHistory        history(analysis, parameters);
     SeparationObserver observer(analysis.model, pairs);
-    const Excitation   excitation = make_excitation(analysis);
+    const Excitation   excitation = make_excitation(analysis, parameters);
     const RunStatus    status     = history.run(excitation, {&observer}, true);
     for (std::size_t p = 0; p < pairs.size(); ++p)
       for (std::size_t l = 0; l < pairs[p].levels.size(); ++l)
@@ -382,11 +383,12 @@ namespace poundfe
   /// Monte Carlo over the random loading: the means of the peaks and the
   /// largest approach of every realization. Returns the table (rank 0).
   MonteCarloTable
-  run_realizations_without_contact(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
+  run_realizations_without_contact(const Analysis &analysis, const TimeHistoryParameters &parameters,
+                                   const std::vector<AdjacentPair> &pairs,
                                    const unsigned long n, const std::string &directory,
                                    const MPI_Comm comm, std::vector<PairResult> &results)
   {
-    RealizationRunner  runner(analysis);
+    RealizationRunner  runner(analysis, parameters);
     SeparationObserver observer(analysis.model, pairs);
     RealizationJob     job;
     job.names = realization_columns(pairs);

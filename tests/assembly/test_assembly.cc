@@ -1,4 +1,5 @@
 // Rayleigh damping and the direct solver backends.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/input/input_parameters.h>

@@ -2,6 +2,7 @@
 // matrix formed explicitly, with zero, positive and negative d_h (softening
 // and stiffening), columns that touch the ground (one nonzero), and every
 // solver backend as the factorisation of A.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/assembly/low_rank_update.h>

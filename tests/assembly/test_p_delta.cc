@@ -19,6 +19,7 @@
 //     (P_i = g times the floor masses above, by hand, 1e-12), and a one-storey
 //     one has omega^2 = (k - m g / h) / m exactly (1e-12);
 //   - a model whose weight exceeds its buckling load is refused.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/model/model_builder.h>

@@ -25,6 +25,7 @@ sed 's/set Realizations   = 8/set Realizations   = 100/; s/set Duration    = 8/s
      s/set Samples per level = 20/set Samples per level = 40/' "$input" > "$work/short.prm"
 "$poundfe" montecarlo "$work/short.prm" --output "$work/reference" > /dev/null
 "$poundfe" fragility "$work/short.prm" --output "$work/fragility-reference" > /dev/null
+"$poundfe" subset "$work/short.prm" --output "$work/subset-reference" > /dev/null
 
 # pid of MPI rank $2 of the run writing to $1
 rank_pid() {
@@ -104,6 +105,22 @@ check_interrupted "$d" 130 "$status"
 grep -q '"failure_probability"' "$d/summary.json" && fail "subset: an estimate though interrupted"
 [ -f "$d/subset_levels.csv" ] || fail "subset: no subset_levels.csv"
 echo "ok   subset, SIGINT: exit status 130, interrupted after $(($(wc -l < "$d/subset_levels.csv") - 1)) levels"
+# resumed on two ranks from the journal of the runs done: the estimate and
+# every level of the uninterrupted one-rank run, to the last digit
+[ "$(($(wc -l < "$d/subset_runs.csv") - 2))" -gt 0 ] || fail "subset: no runs in subset_runs.csv"
+"$mpirun" -np 2 "$poundfe" subset "$work/short.prm" --output "$d" > "$d.resumed.log" 2>&1 ||
+  fail "subset: the resumed run failed: $(cat "$d.resumed.log")"
+grep -q "resuming: " "$d.resumed.log" || fail "subset: did not resume: $(cat "$d.resumed.log")"
+diff "$work/subset-reference/subset_levels.csv" "$d/subset_levels.csv" > /dev/null ||
+  fail "subset: resumed levels differ from uninterrupted"
+for key in failure_probability coefficient_of_variation; do
+  [ "$(grep "\"$key\"" "$d/summary.json")" = "$(grep "\"$key\"" "$work/subset-reference/summary.json")" ] ||
+    fail "subset: resumed $key differs from uninterrupted"
+done
+resumed=$(sed -n 's/.*"resumed_model_runs": \([0-9]*\).*/\1/p' "$d/summary.json")
+[ "${resumed:-0}" -gt 0 ] || fail "subset: no resumed model runs in summary.json"
+[ -z "$(find "$d" -name 'subset_runs.rank*')" ] || fail "subset: rank journals left after the end"
+echo "ok   subset resumed on 2 ranks ($resumed model runs from the journal): the levels and estimate of an uninterrupted run"
 
 d=$work/fragility status=0
 "$poundfe" fragility "$work/short.prm" --output "$d" > "$d.log" 2>&1 &

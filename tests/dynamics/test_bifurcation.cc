@@ -21,6 +21,7 @@
 //    Dynamics and Bifurcations of Non-Smooth Mechanical Systems, §2.4). The
 //    mass stays stuck for f < mu N(0); at f = 1.5 the orbit is period 3.
 #include <poundfe/dynamics/bifurcation.h>
+#include <poundfe/input/bifurcation_input.h>
 #include <poundfe/input/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>

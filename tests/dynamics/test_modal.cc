@@ -2,6 +2,7 @@
 // (doc/theory.md §1: 5.0085, 14.0335, 20.2789 Hz, quoted to 4 decimals, so the
 // tolerance is 1e-5 relative), and a frame with very stiff beams and axially
 // rigid columns, whose storey stiffness tends to n_columns * 12 EI / h^3.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 
 #include <cmath>

@@ -288,3 +288,33 @@ BOOST_AUTO_TEST_CASE(every_method_is_reproducible_from_seed_and_realization)
       BOOST_TEST(a != c);
     }
 }
+
+BOOST_AUTO_TEST_CASE(sample_realizations_are_the_scaled_realizations_and_their_mean_square)
+{
+  // `ground-motion --realizations N`'s samples: realization r is the
+  // generator's sample of the normals of (seed, r) (the test's own loop,
+  // ensemble() above) times the scale factor, exactly (one product each);
+  // the mean square is that of every sample, summed here in long double:
+  // 3 x 501 terms, relative 1e-12 covers the library's double sum.
+  StochasticMotion m = stationary_motion(false, StochasticMethod::filtered_white_noise);
+  m.duration         = 5;
+  const MotionGenerator generator(m);
+  const double          scale   = 2.5;
+  const MotionSamples   samples = sample_realizations(generator, 3, scale);
+  const auto            plain   = ensemble(generator, 3, 0);
+  BOOST_TEST_REQUIRE(samples.realizations.size() == 3u);
+  long double sum = 0;
+  std::size_t n   = 0;
+  for (unsigned int r = 0; r < 3; ++r)
+    {
+      BOOST_TEST_REQUIRE(samples.realizations[r].size() == plain[r].size());
+      for (std::size_t k = 0; k < plain[r].size(); ++k)
+        {
+          BOOST_TEST(samples.realizations[r][k] == plain[r][k] * scale);
+          sum += (long double)(plain[r][k] * scale) * (plain[r][k] * scale);
+          ++n;
+        }
+    }
+  BOOST_TEST(samples.mean_square == double(sum / n), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(samples.realizations[0] != samples.realizations[1]);
+}

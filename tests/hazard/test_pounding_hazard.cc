@@ -14,6 +14,7 @@
 //     input's Target PGA a_ref (D is linear in the amplitude);
 //   - the messages of a missing hazard file, a non-monotone curve, a target
 //     outside (0, 1) and a power law without a Minimum PGA.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/hazard/pounding_hazard.h>
 #include <poundfe/dynamics/realization.h>
@@ -145,14 +146,14 @@ BOOST_AUTO_TEST_CASE(linear_pair_at_three_levels_obeys_the_scaling_identity)
   const std::vector<AdjacentPair> pairs    = adjacent_pairs(analysis.model);
   PoundingHazard                  result   = prepare_pounding_hazard(
     input.separation.hazard, input,
-    RealizationRunner(analysis).reference_pga("the PGA levels of a site hazard"));
+    RealizationRunner(analysis, time_history_parameters(input)).reference_pga("the PGA levels of a site hazard"));
   // the peak factor times sigma of S0 from the Target PGA: the Target PGA
   BOOST_TEST(result.reference_pga == 0.15, boost::test_tools::tolerance(1e-12));
   const std::string directory =
     (std::filesystem::temp_directory_path() / "poundfe_pounding_hazard_levels").string();
   std::filesystem::remove_all(directory);
   {
-    RealizationRunner  runner(analysis);
+    RealizationRunner  runner(analysis, time_history_parameters(input));
     SeparationObserver observer(analysis.model, pairs);
     run_pounding_hazard(largest_approach_job(runner, observer, pairs),
                         input.monte_carlo.realizations, input.separation.hazard, directory,
@@ -161,7 +162,7 @@ BOOST_AUTO_TEST_CASE(linear_pair_at_three_levels_obeys_the_scaling_identity)
   std::filesystem::remove_all(directory);
 
   // One run of each realization at the input's own PGA, here.
-  RealizationRunner   runner(analysis);
+  RealizationRunner   runner(analysis, time_history_parameters(input));
   SeparationObserver  observer(analysis.model, pairs);
   std::vector<double> reference;
   for (unsigned int r = 0; r < 20; ++r)

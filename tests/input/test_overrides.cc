@@ -143,10 +143,10 @@ BOOST_AUTO_TEST_CASE(sweep_values_and_one_input_per_value)
 
   sweep.parameter = "Model/Separations";
   BOOST_TEST(sweep.column_name() == "Model_Separations");
-  const InputParameters p = sweep.input_for(two_buildings, 0.0625);
+  const InputParameters p = sweep_input(sweep, two_buildings, 0.0625);
   BOOST_TEST(p.model.separations == std::vector<double>{0.0625});
   // a value the entry's check refuses is the override's InputError
-  BOOST_CHECK_THROW(sweep.input_for(two_buildings, -1), InputError);
+  BOOST_CHECK_THROW(sweep_input(sweep, two_buildings, -1), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(bad_sweep_values_are_input_errors)

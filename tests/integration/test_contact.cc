@@ -4,6 +4,7 @@
 // calibrated laws measured from the run; momentum conservation and the
 // stereo-mechanical velocities of two colliding masses; convergence of the
 // event times as the step is halved.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/excitation/excitation.h>

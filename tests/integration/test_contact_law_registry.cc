@@ -5,6 +5,7 @@
 // One impact of a mass m at v0 on a barrier gives one logged impact, the
 // law's force at every step, and the closed form of an elastic impact with
 // F = k delta^2: m v0^2 / 2 = k delta_max^3 / 3.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>

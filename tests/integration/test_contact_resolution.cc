@@ -14,6 +14,7 @@
 //    at most 4 Newton iterations in any step; at dt = 1e-3 s within 0.5 % of
 //    dt = 1e-4 s.
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/excitation/excitation.h>
@@ -44,8 +45,8 @@ namespace
     overrides.push_back({"Time integration/Time step", std::to_string(dt)});
     const InputParameters input      = read_parameters("input/shear-pair-pounding.prm", overrides);
     const Analysis        analysis   = prepare_analysis(input);
-    const Excitation      excitation = make_excitation(analysis);
-    TimeHistory           history(analysis);
+    const Excitation      excitation = make_excitation(analysis, input);
+    TimeHistory           history(analysis, time_history_parameters(input));
     PeakResponse          peaks(analysis.model, history.nonlinear_elements());
     const RunStatus       status = history.run(excitation, {&peaks});
     BOOST_TEST_REQUIRE(status.completed());

@@ -7,6 +7,7 @@
 // oscillator in continuous sliding; the belt-driven stick-slip limit cycle in
 // closed form (stick at v0, slip arcs of the harmonic oscillator); the energy
 // balance with the friction dissipation and the belt's work.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/assembly/nonlinear_elements.h>

@@ -11,6 +11,7 @@
 // Woodbury step against Newton with a dense LU of the integrator's tangent;
 // the two tangent updates give the same trajectory and the same Newton
 // iterations; the global tangent against central differences.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>

@@ -12,6 +12,7 @@
 //    below 1e-8 of its first, and the steps' errors add up over the run),
 //    with one factorisation per step.
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
@@ -75,7 +76,7 @@ namespace
   run(const InputParameters &input, const std::string &solver)
   {
     const Analysis    analysis   = prepare_analysis(input);
-    const Excitation  excitation = make_excitation(analysis);
+    const Excitation  excitation = make_excitation(analysis, input);
     NonlinearElements elements   = make_nonlinear_elements(analysis.model);
     NewmarkIntegrator integrator(analysis.system, solver, input.time_integration.newmark,
                                  &elements);

@@ -1,6 +1,7 @@
 // Newmark average acceleration against closed-form SDOF responses
 // (Chopra, Dynamics of Structures, ch. 2-3) and against exact energy
 // conservation in undamped free vibration.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/assembly/linear_solver.h>

@@ -9,6 +9,7 @@
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 
 #include <boost/test/unit_test.hpp>
@@ -28,7 +29,7 @@ namespace
               double *energy_error = nullptr)
   {
     const Analysis   analysis   = prepare_analysis(input);
-    const Excitation excitation = make_excitation(analysis);
+    const Excitation excitation = make_excitation(analysis, input);
     NonlinearElements elements  = make_nonlinear_elements(analysis.model);
     NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark, &elements);
     Vector load(analysis.system.n_equations());
@@ -148,7 +149,7 @@ BOOST_AUTO_TEST_CASE(global_tangent_matches_central_differences)
     {
       input.time_integration.newmark.newton.tangent_update        = update;
       const Analysis   analysis   = prepare_analysis(input);
-      const Excitation excitation = make_excitation(analysis);
+      const Excitation excitation = make_excitation(analysis, input);
       NonlinearElements elements  = make_nonlinear_elements(analysis.model);
       NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark, &elements);
       const unsigned int n = analysis.system.n_equations();

@@ -7,6 +7,7 @@
 // Reference: the cause is known by construction in each case (an overflow
 // built into the input, one Newton iteration allowed).
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/assembly/nonlinear_elements.h>
@@ -31,7 +32,7 @@ namespace
   failure_of(const InputParameters &input)
   {
     const Analysis    analysis   = prepare_analysis(input);
-    const Excitation  excitation = make_excitation(analysis);
+    const Excitation  excitation = make_excitation(analysis, input);
     NonlinearElements elements   = make_nonlinear_elements(analysis.model);
     NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark,
                                  &elements);

@@ -19,6 +19,8 @@
 //    drift recorder.
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/run.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/report/run_outputs.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
@@ -179,13 +181,14 @@ end
 
 BOOST_AUTO_TEST_CASE(shear_building_storey_shears_balance_the_floor_inertia)
 {
-  const Analysis   analysis   = prepare_analysis(read_parameters(write_input("shear", shear_building)));
-  const Excitation excitation = make_excitation(analysis);
+  const InputParameters input      = read_parameters(write_input("shear", shear_building));
+  const Analysis        analysis   = prepare_analysis(input);
+  const Excitation      excitation = make_excitation(analysis, input);
   const std::string dir = std::filesystem::temp_directory_path() / "poundfe-recorders-shear";
   std::filesystem::remove_all(dir);
   RunOptions options;
   options.output_directory = dir;
-  const RunResult result   = run_time_history(analysis, excitation, options);
+  const RunResult result   = run_time_history(analysis, run_parameters(input), excitation, options);
   BOOST_REQUIRE(result.status.completed());
   BOOST_TEST(result.n_nonlinear_elements == 3u); // the storeys yield: a nonlinear check
 
@@ -242,18 +245,19 @@ BOOST_AUTO_TEST_CASE(shear_building_storey_shears_balance_the_floor_inertia)
 
 BOOST_AUTO_TEST_CASE(frame_base_shear_differs_from_inertia_by_the_damping_share)
 {
-  const Analysis   analysis   = prepare_analysis(read_parameters(write_input("frame", frame)));
-  const Excitation excitation = make_excitation(analysis);
+  const InputParameters input      = read_parameters(write_input("frame", frame));
+  const Analysis        analysis   = prepare_analysis(input);
+  const Excitation      excitation = make_excitation(analysis, input);
   const std::string dir = std::filesystem::temp_directory_path() / "poundfe-recorders-frame";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
 
   // The time loop with the input's recorders and a test observer.
-  TimeHistory      history(analysis);
+  TimeHistory      history(analysis, time_history_parameters(input));
   PeakResponse     peaks(analysis.model, history.nonlinear_elements());
   EquilibriumTerms terms;
-  auto recorders = make_recorders(analysis.input.output.recorders, analysis.input.file, history.state(),
-                                  peaks, analysis.input.time_integration.newmark.time_step, dir);
+  auto recorders = make_recorders(input.output.recorders, input.file, history.state(),
+                                  peaks, input.time_integration.newmark.time_step, dir);
   Observers observers{&peaks, &terms};
   for (const auto &r : recorders.observers)
     observers.push_back(r.get());
@@ -323,9 +327,12 @@ BOOST_AUTO_TEST_CASE(recorder_input_errors)
   // an unknown member is an input error naming the parameter
   std::string text = frame;
   text.replace(text.find("F_B2.1"), 6, "F_B9.9");
-  const Analysis analysis = prepare_analysis(read_parameters(write_input("bad-member", text)));
-  RunOptions     options;
+  const InputParameters input    = read_parameters(write_input("bad-member", text));
+  const Analysis        analysis = prepare_analysis(input);
+  RunOptions            options;
   options.output_directory = std::filesystem::temp_directory_path() / "poundfe-recorders-bad";
-  BOOST_CHECK_THROW(run_time_history(analysis, make_excitation(analysis), options), InputError);
+  BOOST_CHECK_THROW(run_time_history(analysis, run_parameters(input),
+                                     make_excitation(analysis, input), options),
+                    InputError);
   BOOST_TEST(!std::filesystem::exists(options.output_directory)); // nothing written
 }

@@ -17,6 +17,8 @@
 // double; glibc's strtod rounds correctly), so any difference is a bug.
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/run.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/report/run_outputs.h>
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/npy_writer.h>
 #include <poundfe/output/number_text.h>
@@ -179,7 +181,8 @@ namespace
     options.output_directory = directory;
     options.plots            = false;
     options.vtu              = false;
-    return run_time_history(analysis, make_excitation(analysis), options);
+    return run_time_history(analysis, run_parameters(input), make_excitation(analysis, input),
+                            options);
   }
 } // namespace
 

@@ -14,6 +14,7 @@
 //   - the random loading through the integrator: a linear oscillator under
 //     base white noise, and under the equivalent force, against the closed-
 //     form stationary variance.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/reliability/montecarlo.h>
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/reliability/statistics.h>
@@ -23,8 +24,10 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/input/input_parameters.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <numeric>
 
 #include "test_utilities.h"
@@ -177,7 +180,7 @@ BOOST_AUTO_TEST_CASE(subset_simulation_against_crude_monte_carlo_on_the_oscillat
 {
   const InputParameters input    = read_parameters("input/subset-drift.prm");
   const Analysis        analysis = prepare_analysis(input);
-  RealizationRunner     runner(analysis);
+  RealizationRunner     runner(analysis, time_history_parameters(input));
   const double          threshold = 0.125; // Pf near 1e-2
   const unsigned int    drift     = runner.drift_columns(1)[0];
 
@@ -245,7 +248,7 @@ namespace
   stationary_mean_square(const InputParameters &input)
   {
     const Analysis       analysis = prepare_analysis(input);
-    Excitation           excitation = make_excitation(analysis);
+    Excitation           excitation = make_excitation(analysis, input);
     const StochasticLoad load(input.ground_motion, input.time_integration.newmark.time_step,
                               excitation);
     NewmarkIntegrator    integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark);
@@ -295,4 +298,71 @@ BOOST_AUTO_TEST_CASE(white_noise_base_and_force_give_the_closed_form_variance)
   BOOST_TEST(std::abs(force_variance / expected - 1) < 0.09);
   // the same normals drive both: the two loads are one load
   BOOST_TEST(force_variance == base_variance, boost::test_tools::tolerance(1e-9));
+}
+
+namespace
+{
+  /// An in-memory journal: what a killed run left is a prefix of the
+  /// records of an uninterrupted one.
+  class MemoryJournal : public SubsetJournal
+  {
+  public:
+    std::vector<std::array<double, 3>> records; // level, sample, response, in order
+    std::map<std::pair<unsigned int, unsigned int>, double> earlier;
+    unsigned int n_found = 0;
+
+    bool find(const unsigned int level, const unsigned int sample, double &y) const override
+    {
+      const auto at = earlier.find({level, sample});
+      if (at == earlier.end())
+        return false;
+      y = at->second;
+      return true;
+    }
+    void record(const unsigned int level, const unsigned int sample, const double y) override
+    {
+      BOOST_TEST(!earlier.count({level, sample})); // a journalled sample is never run again
+      records.push_back({double(level), double(sample), y});
+    }
+  };
+} // namespace
+
+// Resumability (issue 27): Subset Simulation replayed with the first k
+// responses of a run taken from a journal gives the same estimate, levels
+// and acceptance rates to the last bit (the algorithm is deterministic
+// given the responses), and runs only the samples the journal lacks.
+BOOST_AUTO_TEST_CASE(subset_simulation_resumed_from_a_partial_journal_is_bit_identical)
+{
+  const unsigned int n = 20;
+  const auto         y = [n](const std::vector<double> &u) {
+    return std::accumulate(u.begin(), u.end(), 0.0) / std::sqrt(double(n));
+  };
+  SubsetSettings settings;
+  settings.samples_per_level       = 300;
+  settings.conditional_probability = 0.15; // chains of unequal length
+  settings.seed                    = 7;
+  MemoryJournal      full;
+  const SubsetResult reference = subset_simulation(y, n, 3.0, settings, MPI_COMM_WORLD, &full);
+  BOOST_TEST_REQUIRE(reference.levels.size() >= 3u);
+  BOOST_TEST(reference.model_runs == full.records.size());
+  for (const double fraction : {0.0, 0.1, 0.5, 0.93, 1.0})
+    {
+      MemoryJournal      partial;
+      const std::size_t  k = std::lround(fraction * full.records.size());
+      for (std::size_t i = 0; i < k; ++i)
+        partial.earlier[{unsigned(full.records[i][0]), unsigned(full.records[i][1])}] =
+          full.records[i][2];
+      const SubsetResult resumed = subset_simulation(y, n, 3.0, settings, MPI_COMM_WORLD, &partial);
+      BOOST_TEST(resumed.probability == reference.probability); // bit-identical
+      BOOST_TEST(resumed.coefficient_of_variation == reference.coefficient_of_variation);
+      BOOST_TEST_REQUIRE(resumed.levels.size() == reference.levels.size());
+      for (std::size_t l = 0; l < resumed.levels.size(); ++l)
+        {
+          BOOST_TEST(resumed.levels[l].threshold == reference.levels[l].threshold);
+          BOOST_TEST(resumed.levels[l].acceptance_rate == reference.levels[l].acceptance_rate);
+        }
+      BOOST_TEST(resumed.resumed_runs == k);
+      BOOST_TEST(resumed.model_runs == full.records.size() - k);
+      BOOST_TEST(partial.records.size() == full.records.size() - k);
+    }
 }

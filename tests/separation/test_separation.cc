@@ -15,6 +15,7 @@
 //     P(|u_1 - u_2| > g) = 2 (1 - Phi(g / sigma)) against its closed form;
 //   - the common levels of buildings whose floors differ and the height
 //     interpolation weights, worked by hand (input/floor-to-column.prm).
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/dynamics/run.h>
@@ -127,10 +128,10 @@ BOOST_AUTO_TEST_CASE(time_history_minimum_is_the_largest_approach_of_the_run)
   const InputParameters           input    = read_parameters(pair_file);
   const Analysis                  analysis = prepare_analysis(input);
   const std::vector<AdjacentPair> pairs    = adjacent_pairs(analysis.model);
-  TimeHistory                     history(analysis);
+  TimeHistory                     history(analysis, time_history_parameters(input));
   SeparationObserver              separation(analysis.model, pairs);
   FloorHistory                    floors(analysis.model);
-  const Excitation                excitation = make_excitation(analysis);
+  const Excitation                excitation = make_excitation(analysis, input);
   BOOST_TEST_REQUIRE(history.run(excitation, {&separation, &floors}).completed());
   double max_difference = -1e300, peak_left = 0, peak_right = 0;
   for (std::size_t i = 0; i < floors.u_left.size(); ++i)
@@ -189,7 +190,7 @@ BOOST_AUTO_TEST_CASE(monte_carlo_band_covers_the_stationary_white_noise_probabil
                           2 * white_noise_covariance(w1, z1, w2, z2, s0);
   const double sigma = std::sqrt(variance);
 
-  RealizationRunner               runner(analysis);
+  RealizationRunner               runner(analysis, time_history_parameters(input));
   const std::vector<AdjacentPair> pairs = adjacent_pairs(analysis.model);
   SeparationObserver              separation(analysis.model, pairs);
   std::vector<double>             at_end;

@@ -14,6 +14,7 @@
 //     2 |u1 u2| <= u1^2 + u2^2;
 //   - the mode count of EN 1998-1 §4.3.3.3.1(3) on effective masses worked
 //     by hand, and on a five-storey building.
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/separation/separation_spectrum.h>
 #include <poundfe/output/floor_response.h>

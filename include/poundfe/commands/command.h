@@ -32,6 +32,9 @@ namespace poundfe
     const MPI_Comm communicator;
     /// Where messages for the user go (silent on ranks other than 0).
     std::ostream &err;
+    /// Where the command's report goes: standard output on the process
+    /// that writes the results (writes_outputs()), silent on the others.
+    std::ostream &out;
   };
 
   struct Command

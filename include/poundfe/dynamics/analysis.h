@@ -3,26 +3,24 @@
 #ifndef poundfe_dynamics_analysis_h
 #define poundfe_dynamics_analysis_h
 
-#include <poundfe/dynamics/modal.h>
 #include <poundfe/assembly/linear_system.h>
+#include <poundfe/base/console.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/dynamics/modal.h>
+#include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/model/contact_parameters.h>
+#include <poundfe/model/friction_parameters.h>
 #include <poundfe/model/model.h>
-#include <poundfe/input/input_parameters.h>
+#include <poundfe/model/parameters.h>
+#include <poundfe/output/json_writer.h>
 
 #include <string>
 #include <vector>
 
-namespace dealii
-{
-  class TimerOutput;
-}
-
 namespace poundfe
 {
-  class JsonWriter;
-
   struct Analysis
   {
-    InputParameters    input;
     Model              model;
     LinearSystem       system;
     std::vector<Modes> building_modes; // for Rayleigh damping and reports
@@ -31,31 +29,24 @@ namespace poundfe
     std::vector<std::string> warnings;
   };
 
+  /// The model of the input's sections (`input` names the file in messages
+  /// and resolves mesh files), M and K, each building's modes (as many as
+  /// Output/Number of modes = `n_modes` and its Rayleigh damping need, by
+  /// `modal`'s eigensolver), C, and `n_modes` modes of the whole model.
   /// Throws InputError (bad input) or NumericalError (e.g. a mechanism).
-  /// Prints each of the analysis' warnings once per process, on stderr
-  /// ("poundfe: warning: ..."), where writes_outputs().
-  Analysis prepare_analysis(const InputParameters &input);
+  /// Says nothing: the warnings are in Analysis::warnings.
+  Analysis prepare_analysis(const InputFile &input, const ModelParameters &model,
+                            const ContactParameters &contact, const SpringParameters &springs,
+                            const FrictionParameters &friction, const ModalParameters &modal,
+                            unsigned int n_modes);
 
   /// The suspicious damping choices of each building: Rayleigh damping
   /// fitted at a mode whose kinetic energy is mostly vertical (a beam or
   /// column mode of a frame, not a storey mode), mass-proportional damping
   /// alone (a1 = 0: the higher modes nearly undamped), given coefficients
-  /// both 0 (no damping), and damping entries the chosen Type ignores.
-  std::vector<std::string> damping_warnings(const Analysis &analysis);
-
-  /// Whether this process writes files and messages: rank 0 of
-  /// MPI_COMM_WORLD, or the only process when MPI is not initialised.
-  /// (With a solver that needs MPI, every rank of `mpirun -np P poundfe
-  /// run` runs the same analysis; rank 0 alone writes.)
-  bool writes_outputs();
-
-  /// Opens a command's summary.json with program, command, input and status.
-  void begin_summary(JsonWriter &json, const std::string &command, const InputParameters &input,
-                     const std::string &status = "completed");
-
-  /// A command's timer table, on a terminal only (stdout and stderr are
-  /// terminals: pipes, log files and tests see nothing).
-  void print_timing(const dealii::TimerOutput &timer);
+  /// both 0 (no damping), and damping entries the chosen Type ignores
+  /// (set in `input`).
+  std::vector<std::string> damping_warnings(const Analysis &analysis, const InputFile &input);
 } // namespace poundfe
 
 #endif

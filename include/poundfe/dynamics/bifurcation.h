@@ -20,7 +20,8 @@
 #ifndef poundfe_dynamics_bifurcation_h
 #define poundfe_dynamics_bifurcation_h
 
-#include <poundfe/input/sweep.h>
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/base/sweep_parameters.h>
 
 #include <string>
 #include <vector>
@@ -32,7 +33,9 @@ namespace dealii
 
 namespace poundfe
 {
-  struct InputParameters;
+  struct Analysis;
+  struct NodalForceParameters;
+  struct TimeHistoryParameters;
 
   struct BifurcationParameters
   {
@@ -68,22 +71,31 @@ namespace poundfe
     unsigned int        period         = 0; // 0: non-periodic
     double              lyapunov_exponent = 0; // 1/s (0 when not computed)
     bool                completed      = true;
-    double              wall_time      = 0; // s
+    double              wall_time      = 0; // s (set by the caller that prepared the model)
   };
 
-  /// One point: the input `input` names (with its Bifurcation section),
-  /// read with the parameter at `value`, the forcing period's time step and
-  /// end time; prepared once and run once. Throws InputError.
-  BifurcationPoint bifurcation_point(const InputParameters &input, double value);
+  /// T: the Forcing period, or 2 pi / omega of the first harmonic nodal
+  /// force. Throws InputError when there is neither.
+  double forcing_period(const BifurcationParameters &b, const NodalForceParameters &nodal_forces,
+                        const InputFile &input);
 
-  /// Every value of the input's Bifurcation section, in order (each input
-  /// read and checked before any is run; with Continuation each value
-  /// starts from the previous one's final state). Throws InputError.
-  std::vector<BifurcationPoint> bifurcation_points(const InputParameters &input);
+  /// A state to start from: the previous value's final one (Continuation).
+  struct BifurcationState
+  {
+    Vector u, v;
+  };
 
-  /// The `bifurcation` command: bifurcation.csv, bifurcation_classification.csv,
-  /// bifurcation.png and summary.json. Returns the exit status.
-  int bifurcation_command(const InputParameters &input, const std::string &output_directory);
+  /// One point of the diagram at `value`: the model run once with the
+  /// Poincaré sampler (and the second trajectory), the forcing period
+  /// `period` being `steps_per_period` steps of the parameters' time step
+  /// (so steps land on every k T), from `state` when it is given and not
+  /// empty, else from rest; `state` becomes the final state (empty after a
+  /// failure). Throws InputError (e.g. a bad Response).
+  BifurcationPoint bifurcation_point(const Analysis &analysis,
+                                     const TimeHistoryParameters &parameters,
+                                     const BifurcationParameters &b, double value, double period,
+                                     unsigned long steps_per_period,
+                                     BifurcationState *state = nullptr);
 } // namespace poundfe
 
 #endif

@@ -19,7 +19,7 @@ namespace poundfe
   {
   public:
     /// Throws InputError when the input has no random loading.
-    explicit RealizationRunner(const Analysis &analysis);
+    RealizationRunner(const Analysis &analysis, const TimeHistoryParameters &parameters);
 
     unsigned int n_variables() const { return load.n_variables(); }
     const StochasticLoad &stochastic_load() const { return load; }
@@ -58,6 +58,7 @@ namespace poundfe
 
   private:
     const Analysis          &analysis;
+    const TimeHistoryParameters parameters;
     Excitation               excitation;
     StochasticLoad           load; // after the excitation it is made from
     TimeHistory              history;

@@ -1,10 +1,14 @@
-// The time loop and the commands: time history (`run`), `modal`, `ground-motion`.
+// The time loop: the time-history engine of one model and the excitation
+// it runs under. (A run with the standard outputs: report/run_outputs.h.)
 #ifndef poundfe_dynamics_run_h
 #define poundfe_dynamics_run_h
 
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/base/input_file.h>
 #include <poundfe/excitation/excitation.h>
+#include <poundfe/excitation/excitation_parameters.h>
 #include <poundfe/integration/newmark.h>
+#include <poundfe/integration/time_integration_parameters.h>
 #include <poundfe/output/observer.h>
 
 #include <string>
@@ -12,31 +16,15 @@
 
 namespace poundfe
 {
-  struct RunOptions
+  /// What a time history of the model reads from the input: how to
+  /// integrate, what loads it, and the file they came from (for messages).
+  /// Each part is its module's own section.
+  struct TimeHistoryParameters
   {
-    std::string output_directory; // empty: no files at all (benchmarks, tests)
-    std::string linear_solver;    // empty: the input's choice
-    bool        csv   = true;     // the recorders of the input (Output/Recorders)
-    bool        vtu   = true;
-    bool        plots = true;
-    bool        progress      = false; // steps, rate and ETA on a terminal
-    bool        interruptible = false; // SIGINT/SIGTERM end the run after the current step
-    /// The caller's own observers, after the standard ones (e.g. the Python
-    /// module's callback every N steps).
-    Observers   observers;
-  };
-
-  /// What a run with the standard observers reports to its caller.
-  struct RunResult
-  {
-    RunStatus           status;
-    IterationStatistics statistics;
-    EnergyBalance       energy;
-    double              max_energy_error   = 0;
-    unsigned int        n_nonlinear_elements = 0;
-    std::size_t         n_impacts          = 0;
-    /// Where the response left the model's range (output/response_range.h).
-    std::vector<std::string> warnings;
+    InputFile                 input;
+    TimeIntegrationParameters time_integration;
+    GroundMotionParameters    ground_motion;
+    NodalForceParameters      nodal_forces;
   };
 
   /// The time-history engine of one model: the nonlinear elements and the
@@ -45,7 +33,9 @@ namespace poundfe
   class TimeHistory
   {
   public:
-    explicit TimeHistory(const Analysis &analysis, const std::string &linear_solver = "");
+    /// `linear_solver` empty: the input's (Time integration/Linear solver).
+    TimeHistory(const Analysis &analysis, const TimeHistoryParameters &parameters,
+                const std::string &linear_solver = "");
     TimeHistory(const TimeHistory &) = delete;
     TimeHistory &operator=(const TimeHistory &) = delete;
 
@@ -76,28 +66,17 @@ namespace poundfe
 
   private:
     const Analysis   &analysis;
+    const InputFile   input;            // for messages about the end time
+    const TimeIntegrationParameters time_integration;
+    const std::string duration_path;    // the entry that sets the ground motion's duration
     NonlinearElements elements; // before the integrator, which points to them
     NewmarkIntegrator integrator;
     ResponseView      view;
   };
 
-  /// A time history with the standard observers: peaks, and with an output
-  /// directory the input's recorders, the VTU series and the summary
-  /// (summary.json, impacts.csv, profiles, plots).
-  RunResult run_time_history(const Analysis &analysis, const Excitation &excitation,
-                             const RunOptions &options);
-
-  /// The `run` command: returns the exit status (0, or 2 on numerical failure).
-  int run_command(const Analysis &analysis, const std::string &output_directory);
-  /// The `modal` command.
-  int modal_command(const Analysis &analysis, const std::string &output_directory);
-  /// The `ground-motion` command; with n_realizations > 0, the samples of
-  /// realizations 0..n-1 and their ensemble PSD against the target.
-  int ground_motion_command(const InputParameters &input, const std::string &output_directory,
-                            unsigned int n_realizations = 0);
-
-  /// The excitation the input describes.
-  Excitation make_excitation(const Analysis &analysis);
+  /// The excitation the input describes: the ground motion and the nodal
+  /// forces (with white-noise forces, the sample of Ground motion/Realization).
+  Excitation make_excitation(const Analysis &analysis, const TimeHistoryParameters &parameters);
 } // namespace poundfe
 
 #endif

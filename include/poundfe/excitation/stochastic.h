@@ -174,6 +174,18 @@ namespace poundfe
   EnsemblePsd ensemble_psd(const MotionGenerator &generator, unsigned int n_realizations,
                            unsigned int band, double max_omega);
 
+  /// Realizations 0..n-1 of a generator's motion, each sample times `scale`.
+  struct MotionSamples
+  {
+    std::vector<std::vector<double>> realizations; // [r][k], m/s^2
+    double mean_square = 0; // over every sample of every realization, m^2/s^4
+  };
+
+  /// The samples of realizations 0..n_realizations-1 (the standard normals
+  /// of (seed, r)), times `scale`. Stops between realizations on SIGINT/SIGTERM.
+  MotionSamples sample_realizations(const MotionGenerator &generator,
+                                    unsigned int n_realizations, double scale);
+
   /// One sample of the motion (all methods), modulated by the envelope.
   GroundMotion generate_ground_motion(const StochasticMotion &motion);
 

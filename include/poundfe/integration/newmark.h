@@ -194,6 +194,14 @@ namespace poundfe
     struct Level;
     Level &level(unsigned int cuts);
     bool   try_step(Level &L, const Vector &load_next);
+    // try_step's phases: the step's effective load, a and v of u_next, the
+    // linear solve (no nonlinear elements), a Newton iteration's residual
+    // (false when non-finite) and increment (false on a singular tangent)
+    void   set_step_load(const Level &L, const Vector &load_next);
+    void   update_kinematics(const Level &L);
+    bool   solve_linear_step(const Level &L);
+    bool   newton_residual(Level &L, unsigned int it, double &norm);
+    bool   newton_increment(Level &L, unsigned int it, bool &tangent_factorised);
     void   accept(const Level &L, const Vector &load_next);
     void   advance_from(unsigned int cuts, double t0, const LoadFunction &load);
     /// Whether a step of L.dt from the committed state would not resolve a

@@ -89,6 +89,15 @@ namespace poundfe
     /// Check the values of `Building <number>`; name it B<number> if unnamed.
     /// Throws InputError.
     void finalize(const InputFile &input, unsigned int number);
+
+  private:
+    // declare()'s groups, in the order print_parameters shows them
+    void declare_frame_entries(dealii::ParameterHandler &prm); // [frame]
+    void declare_mesh_entries(dealii::ParameterHandler &prm);  // [mesh]
+    void declare_shear_entries(dealii::ParameterHandler &prm); // [shear]
+    void declare_hinges(dealii::ParameterHandler &prm);        // Hinges
+    void declare_bouc_wen(dealii::ParameterHandler &prm);      // Bouc-Wen
+    void declare_damping(dealii::ParameterHandler &prm);       // Damping
   };
 
   /// The `Model` section and the buildings it announces.

@@ -7,6 +7,8 @@
 
 namespace poundfe
 {
+  struct InputFile;
+
   class JsonWriter
   {
   public:
@@ -34,6 +36,11 @@ namespace poundfe
   };
 
   std::string json_escape(const std::string &s);
+
+  /// Opens a command's summary.json with program, command, input (the
+  /// parameter file) and status.
+  void begin_summary(JsonWriter &json, const std::string &command, const InputFile &input,
+                     const std::string &status = "completed");
 } // namespace poundfe
 
 #endif

@@ -3,7 +3,7 @@
 #ifndef poundfe_reliability_stationary_pdf_parameters_h
 #define poundfe_reliability_stationary_pdf_parameters_h
 
-#include <poundfe/input/sweep.h>
+#include <poundfe/base/sweep_parameters.h>
 #include <poundfe/base/input_file.h>
 
 #include <string>

@@ -14,6 +14,8 @@
 //   the total is sqrt(sum delta_i^2) (levels taken as uncorrelated).
 // Parallel: chain j runs on rank j mod P from a random stream of (seed,
 // level, j), so the estimate does not depend on the number of ranks.
+// Resumable: with a journal (reliability/subset_journal.h) every response
+// is recorded, and one an earlier run recorded is taken, not recomputed.
 #ifndef poundfe_reliability_subset_h
 #define poundfe_reliability_subset_h
 
@@ -48,7 +50,8 @@ namespace poundfe
     double                   probability = 0;
     double                   coefficient_of_variation = 0;
     std::vector<SubsetLevel> levels;
-    unsigned long            model_runs = 0;
+    unsigned long            model_runs = 0;  // run by this call
+    unsigned long            resumed_runs = 0; // taken from the journal of an earlier run
     bool                     reached_threshold = false; // false: stopped at max_levels
     /// Stopped by SIGINT or SIGTERM: `levels` are the thresholds reached
     /// (none when level 0 was cut), `probability` is P(Y > levels.back().threshold).
@@ -58,11 +61,23 @@ namespace poundfe
   /// Y(xi) of one sample; called on the rank that owns the chain.
   using ResponseFunction = std::function<double(const std::vector<double> &)>;
 
+  /// The responses of earlier runs, by (level, sample: its place in the
+  /// level, chain by chain), and where each new one is recorded.
+  class SubsetJournal
+  {
+  public:
+    virtual ~SubsetJournal() = default;
+    /// Whether an earlier run computed this sample's response (then in `response`).
+    virtual bool find(unsigned int level, unsigned int sample, double &response) const = 0;
+    virtual void record(unsigned int level, unsigned int sample, double response) = 0;
+  };
+
   /// Runs over the ranks of `comm` (each rank must call it); the result is
   /// the same on every rank. Stops at the next sample on SIGINT or SIGTERM
   /// (interruption.h) and drops the level under way.
   SubsetResult subset_simulation(const ResponseFunction &response, unsigned int n_variables,
-                                 double threshold, const SubsetSettings &settings, MPI_Comm comm);
+                                 double threshold, const SubsetSettings &settings, MPI_Comm comm,
+                                 SubsetJournal *journal = nullptr);
 } // namespace poundfe
 
 #endif

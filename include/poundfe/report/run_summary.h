@@ -9,6 +9,7 @@
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/output/drift_limits.h>
+#include <poundfe/report/run_parameters.h>
 #include <poundfe/output/observer.h>
 
 #include <poundfe/output/plots.h>
@@ -34,7 +35,8 @@ namespace poundfe
     /// `solver` and `tangent_update` name the integrator's choices; `files`
     /// are those the other observers write (recorders, VTU index); `range`'s
     /// warnings go to "warnings".
-    RunSummary(const Analysis &analysis, const Excitation &excitation, const PeakResponse &peaks,
+    RunSummary(const Analysis &analysis, const RunParameters &parameters,
+               const Excitation &excitation, const PeakResponse &peaks,
                const ResponseRange &range, const std::string &directory, bool plots,
                const std::string &solver, const std::string &tangent_update,
                std::vector<std::string> files);
@@ -47,8 +49,22 @@ namespace poundfe
   private:
     void write_profiles() const;
     void write_impacts(const ResponseView &state) const;
+    /// summary.json, in the order of its keys: status, model, ground
+    /// motion, buildings, hinges, gaps, springs and friction, energy and
+    /// Newton, the analysis settings and the files.
     void write_json(const ResponseView &state, const RunStatus &status,
                     const std::vector<std::string> &files) const;
+    /// "buildings": Rayleigh coefficients, modes, peak storey responses, drift checks.
+    void write_buildings(JsonWriter &json) const;
+    /// "hinges": yield, peak and plastic deformation, ductility, force, energy.
+    void write_hinges(JsonWriter &json, const ResponseView &state) const;
+    /// "contact" (the law) and "gaps": impacts, peak force, penetration, impulse.
+    void write_gaps(JsonWriter &json, const ResponseView &state) const;
+    /// "energy" (the balance's terms) and "newton" (iteration statistics).
+    void write_energy_and_newton(JsonWriter &json, const ResponseView &state) const;
+    /// "analysis" (the integrator, steps, solver, wall time) and "output".
+    void write_run(JsonWriter &json, const RunStatus &status,
+                   const std::vector<std::string> &files) const;
     /// The plots; returns the files drawn.
     std::vector<std::string> draw(const ResponseView &state) const;
     /// Whether this run writes `file` (not: whether it exists).
@@ -67,7 +83,8 @@ namespace poundfe
     /// PSA of every floor and of the ground against the period (floor_spectra.csv).
     Plot floor_spectra_plot() const;
 
-    const Analysis     &analysis;
+    const Analysis      &analysis;
+    const RunParameters &parameters;
     const Excitation   &excitation;
     const PeakResponse &peaks;
     const ResponseRange &range;

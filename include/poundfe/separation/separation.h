@@ -206,7 +206,8 @@ namespace poundfe
 
   /// One time history of the analysis' (deterministic) excitation without
   /// contact: the peaks and largest approach into each level of `results`.
-  RunStatus run_without_contact(const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
+  RunStatus run_without_contact(const Analysis &analysis, const TimeHistoryParameters &parameters,
+                                const std::vector<AdjacentPair> &pairs,
                                 std::vector<PairResult> &results);
 
   /// Monte Carlo of realizations 0..n-1 over the random loading on every rank
@@ -214,6 +215,7 @@ namespace poundfe
   /// means of the peaks and the largest approach of every realization into
   /// `results` (rank 0). Returns the table (rank 0).
   MonteCarloTable run_realizations_without_contact(const Analysis                  &analysis,
+                                                   const TimeHistoryParameters &parameters,
                                                    const std::vector<AdjacentPair> &pairs,
                                                    unsigned long n, const std::string &directory,
                                                    MPI_Comm comm, std::vector<PairResult> &results);

@@ -1,0 +1,31 @@
+// The engines' parameter parts of a whole input: each engine takes only
+// the sections it reads (deal.II step-33 style), and the commands (and
+// tests) take them from the InputParameters they read here.
+#ifndef poundfe_input_engine_parameters_h
+#define poundfe_input_engine_parameters_h
+
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/run.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/report/run_parameters.h>
+
+namespace poundfe
+{
+  /// The analysis of the input's model (Model, Contact, Springs, Friction,
+  /// Modal analysis, Output/Number of modes), its warnings said once per
+  /// process on stderr ("poundfe: warning: ...") where writes_outputs().
+  Analysis prepare_analysis(const InputParameters &input);
+
+  /// What a time history of the input reads: the file, Time integration,
+  /// Ground motion, Nodal forces.
+  TimeHistoryParameters time_history_parameters(const InputParameters &input);
+
+  /// What a run with the standard outputs reads: the time history's parts,
+  /// Output, Spectrum, Drift limits, Contact.
+  RunParameters run_parameters(const InputParameters &input);
+
+  /// The excitation of the input's ground motion and nodal forces.
+  Excitation make_excitation(const Analysis &analysis, const InputParameters &input);
+} // namespace poundfe
+
+#endif

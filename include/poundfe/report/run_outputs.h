@@ -1,0 +1,52 @@
+// A time history with the standard observers: the peaks and the response
+// range, and with an output directory the input's recorders, the floor
+// spectra, the VTU series and the run's report (RunSummary).
+#ifndef poundfe_report_run_outputs_h
+#define poundfe_report_run_outputs_h
+
+#include <poundfe/report/run_parameters.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct RunOptions
+  {
+    std::string output_directory; // empty: no files at all (benchmarks, tests)
+    std::string linear_solver;    // empty: the input's choice
+    bool        csv   = true;     // the recorders of the input (Output/Recorders)
+    bool        vtu   = true;
+    bool        plots = true;
+    bool        progress      = false; // steps, rate and ETA on a terminal
+    bool        interruptible = false; // SIGINT/SIGTERM end the run after the current step
+    /// Where notes on the run's set-up go (e.g. VTU frames widened to keep
+    /// within Output/Maximum VTU frames); nullptr: nowhere.
+    std::ostream *console = nullptr;
+    /// The caller's own observers, after the standard ones (e.g. the Python
+    /// module's callback every N steps).
+    Observers observers;
+  };
+
+  /// What a run with the standard observers reports to its caller.
+  struct RunResult
+  {
+    RunStatus           status;
+    IterationStatistics statistics;
+    EnergyBalance       energy;
+    double              max_energy_error   = 0;
+    unsigned int        n_nonlinear_elements = 0;
+    std::size_t         n_impacts          = 0;
+    /// Where the response left the model's range (output/response_range.h).
+    std::vector<std::string> warnings;
+  };
+
+  /// A time history with the standard observers: peaks, and with an output
+  /// directory the input's recorders, the VTU series and the summary
+  /// (summary.json, impacts.csv, profiles, plots).
+  RunResult run_time_history(const Analysis &analysis, const RunParameters &parameters,
+                             const Excitation &excitation, const RunOptions &options);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,40 @@
+#include <poundfe/input/engine_parameters.h>
+
+#include <iostream>
+#include <set>
+
+namespace poundfe
+{
+  Analysis
+  prepare_analysis(const InputParameters &input)
+  {
+    Analysis analysis = prepare_analysis(input, input.model, input.contact, input.springs,
+                                         input.friction, input.modal, input.output.n_modes);
+    // once per process: a sweep prepares an analysis per value
+    static std::set<std::string> said;
+    if (writes_outputs())
+      for (const std::string &warning : analysis.warnings)
+        if (said.insert(warning).second)
+          std::cerr << "poundfe: warning: " << warning << "\n";
+    return analysis;
+  }
+
+  TimeHistoryParameters
+  time_history_parameters(const InputParameters &input)
+  {
+    return {input, input.time_integration, input.ground_motion, input.nodal_forces};
+  }
+
+  RunParameters
+  run_parameters(const InputParameters &input)
+  {
+    return {time_history_parameters(input), input.output, input.spectrum, input.drift_limits,
+            input.contact};
+  }
+
+  Excitation
+  make_excitation(const Analysis &analysis, const InputParameters &input)
+  {
+    return make_excitation(analysis, time_history_parameters(input));
+  }
+} // namespace poundfe

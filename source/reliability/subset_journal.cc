@@ -1,0 +1,198 @@
+// The journal of Subset Simulation's model runs (reliability/subset_journal.h).
+#include <poundfe/reliability/subset_journal.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/output/append_file.h>
+#include <poundfe/output/atomic_file.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <vector>
+
+namespace poundfe
+{
+  namespace
+  {
+    const char *const journal_name = "subset_runs.csv";
+    const char *const columns      = "level,sample,response,completed";
+
+    bool
+    is_journal(const std::filesystem::path &path)
+    {
+      const std::string name = path.filename().string();
+      return name == journal_name ||
+             (name.rfind("subset_runs.rank", 0) == 0 && path.extension() == ".csv");
+    }
+
+    /// The complete lines of a journal file after its settings line and
+    /// header; a line cut by a kill (no newline, or fields that do not
+    /// read) is dropped. Throws InputError when the settings differ.
+    void
+    read_journal(const std::string &file, const std::string &settings,
+                 std::map<std::pair<unsigned int, unsigned int>, std::pair<double, bool>> &runs)
+    {
+      std::ifstream in(file, std::ios::binary);
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      std::size_t start = 0;
+      for (unsigned int line_number = 1; start < text.size(); ++line_number)
+        {
+          const std::size_t end = text.find('\n', start);
+          if (end == std::string::npos)
+            break;
+          const std::string line = text.substr(start, end - start);
+          start                  = end + 1;
+          if (line_number == 1 && line != settings)
+            throw InputError(file, 1, "Subset simulation",
+                             "holds the model runs of other settings (" + line +
+                               "; this input: " + settings +
+                               "); remove it or choose another output directory");
+          if (line_number <= 2)
+            continue;
+          unsigned int level = 0, sample = 0;
+          double       response = 0;
+          int          completed = 0;
+          char         c1 = 0, c2 = 0, c3 = 0;
+          std::istringstream fields(line);
+          if ((fields >> level >> c1 >> sample >> c2 >> response >> c3 >> completed) &&
+              c1 == ',' && c2 == ',' && c3 == ',' && (fields >> std::ws).eof())
+            runs.emplace(std::make_pair(level, sample), std::make_pair(response, completed != 0));
+        }
+    }
+  } // namespace
+
+  std::vector<std::string>
+  subset_journal_files(const std::string &directory)
+  {
+    std::vector<std::string> names;
+    std::error_code          error; // no directory yet: no journal
+    for (const auto &entry : std::filesystem::directory_iterator(directory, error))
+      if (is_journal(entry.path()))
+        names.push_back(entry.path().filename().string());
+    return names;
+  }
+
+  std::string
+  subset_journal_settings(const SubsetSettings &s, const unsigned int n_variables,
+                          const double threshold)
+  {
+    std::string line = "# poundfe subset runs: seed ";
+    line += std::to_string(s.seed) + ", samples per level " +
+            std::to_string(s.samples_per_level) + ", conditional probability ";
+    append_number(line, s.conditional_probability);
+    line += ", proposal spread ";
+    append_number(line, s.proposal_spread);
+    line += ", maximum levels " + std::to_string(s.max_levels) + ", threshold ";
+    append_number(line, threshold);
+    line += ", random variables " + std::to_string(n_variables);
+    return line;
+  }
+
+  SubsetRunsFile::SubsetRunsFile(const std::string &directory, const std::string &settings,
+                                 const MPI_Comm comm)
+    : directory(directory)
+    , settings(settings)
+    , comm(comm)
+  {
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+    std::string        file, problem; // of a journal refused on rank 0
+    if (rank == 0)
+      try
+        {
+          merge();
+        }
+      catch (const InputError &e)
+        {
+          file = e.file(), problem = e.problem();
+        }
+    problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty()) // every rank throws: none waits for the others
+      throw InputError(dealii::Utilities::MPI::broadcast(comm, file, 0), 1, "Subset simulation",
+                       problem);
+    // every rank takes the responses the journal holds
+    std::vector<double> flat;
+    if (rank == 0)
+      for (const auto &[key, entry] : earlier)
+        flat.insert(flat.end(), {double(key.first), double(key.second), entry.response,
+                                 entry.completed ? 1.0 : 0.0});
+    flat = dealii::Utilities::MPI::broadcast(comm, flat, 0);
+    earlier.clear();
+    for (std::size_t i = 0; i + 3 < flat.size(); i += 4)
+      earlier[{unsigned(flat[i]), unsigned(flat[i + 1])}] = {flat[i + 2], flat[i + 3] != 0};
+    out = std::make_unique<AppendFile>(rank_file(rank));
+    out->append(settings + "\n" + columns + "\n");
+  }
+
+  SubsetRunsFile::~SubsetRunsFile() = default;
+
+  std::string
+  SubsetRunsFile::rank_file(const unsigned int rank) const
+  {
+    return directory + "/subset_runs.rank" + std::to_string(rank) + ".csv";
+  }
+
+  void
+  SubsetRunsFile::merge()
+  {
+    std::map<Key, std::pair<double, bool>> runs;
+    std::vector<std::filesystem::path>     rank_files;
+    if (std::filesystem::is_directory(directory))
+      for (const auto &entry : std::filesystem::directory_iterator(directory))
+        if (is_journal(entry.path()))
+          {
+            read_journal(entry.path().string(), settings, runs);
+            if (entry.path().filename() != journal_name)
+              rank_files.push_back(entry.path());
+          }
+    std::string text = settings + "\n" + columns + "\n";
+    earlier.clear();
+    for (const auto &[key, run] : runs)
+      {
+        earlier[key] = {run.first, run.second};
+        text += std::to_string(key.first) + "," + std::to_string(key.second) + ",";
+        append_number(text, run.first);
+        text += run.second ? ",1\n" : ",0\n";
+      }
+    write_file_atomically(directory + "/" + journal_name, text);
+    for (const auto &file : rank_files) // now in subset_runs.csv
+      std::filesystem::remove(file);
+  }
+
+  bool
+  SubsetRunsFile::find(const unsigned int level, const unsigned int sample, double &response) const
+  {
+    const auto at = earlier.find({level, sample});
+    if (at == earlier.end())
+      return false;
+    response = at->second.response;
+    return true;
+  }
+
+  void
+  SubsetRunsFile::record(const unsigned int level, const unsigned int sample, const double response)
+  {
+    Assert(out != nullptr, dealii::ExcMessage("record() after finish()"));
+    std::string line = std::to_string(level) + "," + std::to_string(sample) + ",";
+    append_number(line, response);
+    line += last_failed ? ",0\n" : ",1\n";
+    last_failed = false;
+    out->append(line);
+  }
+
+  unsigned long
+  SubsetRunsFile::finish()
+  {
+    out.reset();
+    MPI_Barrier(comm); // every rank's file is complete
+    if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
+      return 0;
+    merge();
+    unsigned long failed = 0;
+    for (const auto &[key, entry] : earlier)
+      failed += entry.completed ? 0 : 1;
+    return failed;
+  }
+} // namespace poundfe

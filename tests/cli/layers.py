@@ -1,0 +1,40 @@
+#!/usr/bin/env python3
+"""No include runs upward (issue 27): every #include <poundfe/M/...> in a
+module's sources and headers names a module of a lower layer than its own,
+or its own, with the layers read from the table of doc/architecture.md (so
+the drawing and the code cannot drift apart). Exit 1 listing every
+offending include."""
+import glob
+import os
+import re
+import sys
+
+root = sys.argv[1]
+table = open(os.path.join(root, "doc", "architecture.md"), encoding="utf-8").read()
+layer = {m.group(2): int(m.group(1))
+         for m in re.finditer(r"^\| (\d+) \| `(\w+)` \|", table, re.M)}
+if len(layer) < 10:
+    sys.exit("FAIL doc/architecture.md: no layer table found")
+bad = []
+files = glob.glob(os.path.join(root, "source", "*", "*.cc")) + \
+    glob.glob(os.path.join(root, "include", "poundfe", "*", "*.h"))
+for path in sorted(files):
+    module = os.path.basename(os.path.dirname(path))
+    if module not in layer:
+        if module != "python":
+            bad.append(f"{path}: module '{module}' is not in doc/architecture.md's table")
+        continue
+    for number, line in enumerate(open(path, encoding="utf-8"), 1):
+        m = re.match(r"#include <poundfe/(\w+)/", line)
+        if not m or m.group(1) == module:
+            continue
+        target = m.group(1)
+        if target not in layer:
+            bad.append(f"{path}:{number}: includes module '{target}', not in the table")
+        elif layer[target] >= layer[module]:
+            bad.append(f"{path}:{number}: {module} (layer {layer[module]}) includes "
+                       f"{target} (layer {layer[target]})")
+for b in bad:
+    print("FAIL", b)
+print(f"{len(files)} files, {len(layer)} modules: {len(bad)} includes against the layers")
+sys.exit(1 if bad else 0)
