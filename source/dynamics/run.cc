@@ -180,6 +180,8 @@ namespace poundfe
     Excitation             excitation(analysis.system, make_ground_motion(input.ground_motion, input, dt),
                           make_nodal_forces(input.nodal_forces, input.ground_motion, dt, input,
                                             analysis.model));
+    add_horizontal_component(excitation, analysis.system, analysis.model, input.ground_motion,
+                             input, dt);
     if (!analysis.input.nodal_forces.white_noise.empty())
       {
         const StochasticLoad load(input.ground_motion, dt, excitation);
