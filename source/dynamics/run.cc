@@ -460,10 +460,19 @@ namespace poundfe
     modes.finish();
     write_file_atomically(output_directory + "/summary.json", json.str());
 
-    std::cout << "mode  frequency (Hz)  period (s)  mass ratio (x)\n";
-    for (unsigned int i = 0; i < analysis.modes.n_modes(); ++i)
-      std::printf("%4u  %14.4f  %10.4f  %14.4f\n", i + 1, analysis.modes.frequency(i),
-                  analysis.modes.period(i), analysis.modes.participating_mass_ratio[i]);
+    const Modes &m     = analysis.modes;
+    const bool   plan  = !m.participating_mass_ratio_y.empty();
+    std::cout << "mode  frequency (Hz)  period (s)  mass ratio (x)"
+              << (plan ? "  mass ratio (y)  mass ratio (rz)\n" : "\n");
+    for (unsigned int i = 0; i < m.n_modes(); ++i)
+      {
+        std::printf("%4u  %14.4f  %10.4f  %14.4f", i + 1, m.frequency(i), m.period(i),
+                    m.participating_mass_ratio[i]);
+        if (plan)
+          std::printf("  %14.4f  %15.4f", m.participating_mass_ratio_y[i],
+                      m.participating_mass_ratio_rz[i]);
+        std::printf("\n");
+      }
     std::cout << "results in " << output_directory << "/ (summary.json, modes.pvd)\n";
     return 0;
   }

@@ -53,13 +53,13 @@ BOOST_AUTO_TEST_SUITE(plan_contact_element)
 
 BOOST_AUTO_TEST_CASE(tangent_matches_central_differences)
 {
-  // closed by 5 mm at a turned state, approaching: force, stiffness and
+  // closed by 10-30 mm at a turned state, approaching: force, stiffness and
   // damping all act. D(c) = df/du + c df/dv; h = 1e-8 m against forces of
   // 1e5..1e6 N: the central-difference error is ~1e-6 relative.
   for (const unsigned int end : {0u, 1u})
     {
       PlanContactElement e = element(end);
-      const Vector6 u(0.205, 0.01, 0.002, -0.0, -0.02, -0.001);
+      const Vector6 u(0.22, 0.01, 0.002, 0.0, -0.02, -0.001);
       const Vector6 v(0.3, 0.05, 0.01, -0.2, 0.0, -0.02);
       const double  c = 4 / 0.01 / 1.0; // gamma / (beta dt) for dt = 0.01 s
       BOOST_REQUIRE(e.set_trial(u, v));
