@@ -13,13 +13,6 @@ namespace poundfe
 {
   namespace
   {
-    template <typename T>
-    T
-    value_for(const std::vector<T> &values, const unsigned int i)
-    {
-      return values.size() == 1 ? values[0] : values[i];
-    }
-
     unsigned int
     add_node(Model &model, const Point2 &p, const unsigned int building)
     {

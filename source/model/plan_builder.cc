@@ -14,13 +14,6 @@ namespace poundfe
 {
   namespace
   {
-    template <typename T>
-    T
-    value_for(const std::vector<T> &values, const unsigned int i)
-    {
-      return values.size() == 1 ? values[0] : values[i];
-    }
-
     /// The building's frame on the site: x_site = centre + R (x_local).
     struct PlanFrame
     {

@@ -9,8 +9,18 @@
 #include <poundfe/model/model.h>
 #include <poundfe/model/parameters.h>
 
+#include <vector>
+
 namespace poundfe
 {
+  /// Entry i of a list given as one value for all or one value per item.
+  template <typename T>
+  T
+  value_for(const std::vector<T> &values, const unsigned int i)
+  {
+    return values.size() == 1 ? values[0] : values[i];
+  }
+
   /// Half the extent along the site's x of building p's rotated slab.
   double plan_half_width(const BuildingParameters &p);
 
