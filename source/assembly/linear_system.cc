@@ -75,6 +75,43 @@ namespace poundfe
       return matrix;
     }
 
+    /// The resisting planes (k a a^T) and the polar moments of 3D floors.
+    void
+    add_plan_terms(const Model &model, Triplets &k_triplets, Triplets &m_triplets)
+    {
+      for (const PlaneLink &link : model.plane_links)
+        {
+          std::vector<unsigned int> dofs;
+          for (const unsigned int node : link.nodes)
+            for (const Component c : {Component::ux, Component::uy, Component::rz})
+              dofs.push_back(Model::dof(node, c));
+          const Eigen::Map<const Eigen::Matrix<double, 6, 1>> a(link.coefficients.data());
+          scatter(model, dofs, Eigen::Matrix<double, 6, 6>(link.stiffness * a * a.transpose()),
+                  k_triplets);
+        }
+      for (const NodalMass &mass : model.masses)
+        if (mass.polar_moment != 0)
+          {
+            const int row = model.equation(Model::dof(mass.node, Component::rz));
+            if (row >= 0)
+              m_triplets.emplace_back(row, row, mass.polar_moment);
+          }
+    }
+
+    /// 1 on the free equations of component c of every node.
+    Vector
+    influence_of(const Model &model, const Component c)
+    {
+      Vector r = Vector::Zero(model.n_equations());
+      for (unsigned int node = 0; node < model.n_nodes(); ++node)
+        {
+          const int row = model.equation(Model::dof(node, c));
+          if (row >= 0)
+            r[row] = 1;
+        }
+      return r;
+    }
+
     /// K = K_E + K_G from the gravity loads (the header's P-Delta).
     void
     add_p_delta(const Model &model, LinearSystem &system)
@@ -119,17 +156,17 @@ namespace poundfe
           if (row >= 0)
             m_triplets.emplace_back(row, row, mass.mass);
         }
+    add_plan_terms(model, k_triplets, m_triplets);
 
     LinearSystem system;
     system.stiffness = from_triplets(n, k_triplets);
     system.mass      = from_triplets(n, m_triplets);
     system.damping   = SparseMatrix(n, n);
-    system.influence = Vector::Zero(n);
-    for (unsigned int node = 0; node < model.n_nodes(); ++node)
+    system.influence = influence_of(model, Component::ux);
+    if (model.dimension == 3)
       {
-        const int row = model.equation(Model::dof(node, Component::ux));
-        if (row >= 0)
-          system.influence[row] = 1;
+        system.influence_y  = influence_of(model, Component::uy);
+        system.influence_rz = influence_of(model, Component::rz);
       }
     if (model.geometric_nonlinearity == GeometricNonlinearity::p_delta)
       add_p_delta(model, system);

@@ -1,4 +1,5 @@
 #include <poundfe/assembly/nonlinear_elements.h>
+#include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/laws/bouc_wen.h>
 #include <poundfe/laws/contact_law.h>
@@ -30,6 +31,20 @@ namespace poundfe
                               model.equation(Model::dof(link.nodes[0], Component::ux))}},
           std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
       }
+    for (const PlaneLink &link : model.plane_links)
+      if (link.hysteretic)
+        {
+          std::vector<int> equations;
+          for (const unsigned int node : link.nodes)
+            for (const Component c : {Component::ux, Component::uy, Component::rz})
+              equations.push_back(model.equation(Model::dof(node, c)));
+          elements.emplace_back<UniaxialElement>(
+            ElementKind::storey, link.building,
+            model.buildings[link.building].name + "_S" + std::to_string(link.storey) + "P" +
+              std::to_string(link.plane),
+            equations, std::vector<double>(link.coefficients.begin(), link.coefficients.end()),
+            std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
+        }
     for (const Gap &gap : model.gaps)
       {
         std::array<int, 2> equations{{-1, -1}};
@@ -39,6 +54,17 @@ namespace poundfe
         ContactLawParameters law = model.contact;
         law.initial_gap          = gap.initial_gap;
         law.effective_mass       = gap.effective_mass;
+        if (gap.in_plan)
+          {
+            law.initial_gap = 0; // the element measures the gap itself
+            std::vector<int> equations;
+            for (const int node : gap.nodes)
+              for (const Component c : {Component::ux, Component::uy, Component::rz})
+                equations.push_back(model.equation(Model::dof(node, c)));
+            elements.emplace_back<PlanContactElement>(gap.buildings[0], gap.label, equations,
+                                                      gap.plan, make_contact_law(law));
+            continue;
+          }
         elements.emplace_back<UniaxialElement>(ElementKind::gap, gap.buildings[0], gap.label,
                                                equations, make_contact_law(law));
       }

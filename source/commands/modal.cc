@@ -41,13 +41,22 @@ namespace poundfe
     void
     print_modes(const Modes &modes, std::ostream &out)
     {
-      out << "mode  frequency (Hz)  period (s)  mass ratio (x)\n";
+      const bool plan = !modes.participating_mass_ratio_y.empty(); // a 3D model
+      out << "mode  frequency (Hz)  period (s)  mass ratio (x)"
+          << (plan ? "  mass ratio (y)  mass ratio (rz)\n" : "\n");
       for (unsigned int i = 0; i < modes.n_modes(); ++i)
         {
-          char line[80];
-          std::snprintf(line, sizeof(line), "%4u  %14.4f  %10.4f  %14.4f\n", i + 1,
+          char line[120];
+          std::snprintf(line, sizeof(line), "%4u  %14.4f  %10.4f  %14.4f", i + 1,
                         modes.frequency(i), modes.period(i), modes.participating_mass_ratio[i]);
           out << line;
+          if (plan)
+            {
+              std::snprintf(line, sizeof(line), "  %14.4f  %15.4f",
+                            modes.participating_mass_ratio_y[i], modes.participating_mass_ratio_rz[i]);
+              out << line;
+            }
+          out << "\n";
         }
     }
   } // namespace

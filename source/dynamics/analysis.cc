@@ -56,6 +56,23 @@ namespace poundfe
                        "critical load (stiffen the columns or storeys, or check the masses)");
     }
 
+    /// Dimension 3: the effective modal masses along y and about z of the
+    /// model's and each building's modes.
+    void
+    add_plan_participations(Analysis &analysis)
+    {
+      const LinearSystem &system = analysis.system;
+      add_plan_participation(analysis.modes, system.mass, system.influence_y, system.influence_rz);
+      for (unsigned int b = 0; b < analysis.building_modes.size(); ++b)
+        {
+          const auto range = analysis.model.equation_range(b);
+          const auto n     = range[1] - range[0];
+          add_plan_participation(analysis.building_modes[b], block(system.mass, range),
+                                 system.influence_y.segment(range[0], n),
+                                 system.influence_rz.segment(range[0], n));
+        }
+    }
+
     /// The modes of one building (`what`) or of the whole model, by the
     /// input's eigensolver; a forced sparse solver that cannot give `n`
     /// modes is bad input.
@@ -81,6 +98,8 @@ namespace poundfe
     vertical_energy_share(const Model &model, const unsigned int b, const SparseMatrix &mass,
                           const Modes &modes, const unsigned int i)
     {
+      if (model.dimension == 3) // uy is a horizontal (plan) translation
+        return 0;
       const Building &building = model.buildings[b];
       const auto      range    = model.equation_range(b);
       const Vector    phi      = modes.shapes.col(i);
@@ -228,6 +247,8 @@ namespace poundfe
     if (n_modes > 0)
       analysis.modes = modes_of(input, modal, system.mass, system.stiffness, system.influence,
                                 n_modes, "the model");
+    if (model.dimension == 3)
+      add_plan_participations(analysis);
     analysis.warnings = damping_warnings(analysis, input);
     return analysis;
   }

@@ -62,9 +62,31 @@ namespace poundfe
     modes.shapes.conservativeResize(phi.size(), column + 1);
     modes.shapes.col(column) = phi;
     modes.omega.push_back(omega);
+    modes.participating_mass_ratio.push_back(participating_mass_ratio(phi, mass, influence));
+  }
+
+  double
+  participating_mass_ratio(const Eigen::VectorXd &phi, const SparseMatrix &mass,
+                           const Vector &influence)
+  {
     const double total = influence.dot(mass * influence);
     const double gamma = phi.dot(mass * influence);
-    modes.participating_mass_ratio.push_back(total > 0 ? gamma * gamma / total : 0);
+    return total > 0 ? gamma * gamma / total : 0;
+  }
+
+  void
+  add_plan_participation(Modes &modes, const SparseMatrix &mass, const Vector &influence_y,
+                         const Vector &influence_rz)
+  {
+    modes.participating_mass_ratio_y.clear();
+    modes.participating_mass_ratio_rz.clear();
+    for (unsigned int i = 0; i < modes.n_modes(); ++i)
+      {
+        const Eigen::VectorXd phi = modes.shapes.col(i);
+        modes.participating_mass_ratio_y.push_back(participating_mass_ratio(phi, mass, influence_y));
+        modes.participating_mass_ratio_rz.push_back(
+          participating_mass_ratio(phi, mass, influence_rz));
+      }
   }
 
   Modes

@@ -84,6 +84,7 @@ namespace poundfe
     Excitation excitation(analysis.system, make_ground_motion(ground_motion, input, dt),
                           make_nodal_forces(parameters.nodal_forces, ground_motion, dt, input,
                                             analysis.model));
+    add_horizontal_component(excitation, analysis.system, analysis.model, ground_motion, input, dt);
     if (!parameters.nodal_forces.white_noise.empty())
       {
         const StochasticLoad load(ground_motion, dt, excitation);

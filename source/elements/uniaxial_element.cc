@@ -11,29 +11,38 @@ namespace poundfe
                                    std::unique_ptr<UniaxialLaw> law,
                                    const double                 reference_stiffness,
                                    const std::array<double, 2> &signs)
-    : NonlinearElement(kind, building, std::move(label), {equations[0], equations[1]})
-    , signs(signs)
+    : UniaxialElement(kind, building, std::move(label), {equations[0], equations[1]},
+                      {signs[0], signs[1]}, std::move(law), reference_stiffness)
+  {}
+
+  UniaxialElement::UniaxialElement(const ElementKind kind, const unsigned int building,
+                                   std::string label, const std::vector<int> &equations,
+                                   const std::vector<double>   &coefficients,
+                                   std::unique_ptr<UniaxialLaw> law,
+                                   const double                 reference_stiffness)
+    : NonlinearElement(kind, building, std::move(label), equations)
+    , signs(coefficients)
     , reference_stiffness(reference_stiffness)
     , law(std::move(law))
-    , on_ground{{equations[0] < 0, equations[1] < 0}}
   {
     Assert(this->law, dealii::ExcMessage("a uniaxial element needs a law"));
+    AssertDimension(equations.size(), coefficients.size());
+    for (const int e : equations)
+      on_ground.push_back(e < 0);
     reset();
   }
 
   Eigen::MatrixXd
   UniaxialElement::tangent_basis() const
   {
-    Eigen::MatrixXd b(2, 1);
-    b << signs[0], signs[1];
-    return b;
+    return Eigen::Map<const Eigen::VectorXd>(signs.data(), signs.size());
   }
 
   double
   UniaxialElement::local_deformation(const LocalVector &x) const
   {
     double d = 0;
-    for (unsigned int i = 0; i < 2; ++i)
+    for (unsigned int i = 0; i < signs.size(); ++i)
       if (!on_ground[i])
         d += signs[i] * x[i];
     return d;
@@ -43,7 +52,7 @@ namespace poundfe
   UniaxialElement::deformation(const Eigen::VectorXd &u) const
   {
     double d = 0;
-    for (unsigned int i = 0; i < 2; ++i)
+    for (unsigned int i = 0; i < signs.size(); ++i)
       if (equations()[i] >= 0)
         d += signs[i] * u[equations()[i]];
     return d;
@@ -70,7 +79,7 @@ namespace poundfe
   UniaxialElement::force_correction(LocalVectorOut f) const
   {
     const double correction = law->force() - reference_stiffness * trial_deformation;
-    for (unsigned int i = 0; i < 2; ++i)
+    for (unsigned int i = 0; i < signs.size(); ++i)
       f[i] = signs[i] * correction;
   }
 

@@ -1,5 +1,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
+
+#include <deal.II/base/exceptions.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/excitation/records.h>
@@ -40,9 +42,37 @@ namespace poundfe
   {}
 
   void
+  Excitation::set_horizontal_pair(const LinearSystem &system, GroundMotion second_motion,
+                                  const double angle)
+  {
+    Assert(system.influence_y.size() == system.mass.rows(),
+           dealii::ExcMessage("a horizontal pair needs a 3D model"));
+    pair                   = true;
+    second                 = std::move(second_motion);
+    cos_angle              = std::cos(angle);
+    sin_angle              = std::sin(angle);
+    mass_times_influence_y = system.mass * system.influence_y;
+  }
+
+  std::array<double, 2>
+  Excitation::horizontal_acceleration(const double t) const
+  {
+    if (!pair)
+      return {{ground.value(t), 0.0}};
+    const double g1 = ground.value(t), g2 = second.value(t);
+    return {{cos_angle * g1 - sin_angle * g2, sin_angle * g1 + cos_angle * g2}};
+  }
+
+  void
   Excitation::load(const double t, Vector &load) const
   {
-    load = (-ground.value(t)) * mass_times_influence;
+    if (pair)
+      {
+        const auto a = horizontal_acceleration(t);
+        load         = (-a[0]) * mass_times_influence - a[1] * mass_times_influence_y;
+      }
+    else
+      load = (-ground.value(t)) * mass_times_influence;
     for (const NodalForce &f : forces)
       load[f.equation] += f.value(t);
   }
@@ -100,6 +130,13 @@ namespace poundfe
   make_ground_motion(const GroundMotionParameters &g, const InputFile &input,
                      const double time_step)
   {
+    return make_ground_motion(g, input, time_step, "Ground motion/Record/File");
+  }
+
+  GroundMotion
+  make_ground_motion(const GroundMotionParameters &g, const InputFile &input,
+                     const double time_step, const std::string &path)
+  {
     GroundMotion motion;
     if (g.type == GroundMotionType::record)
       {
@@ -107,7 +144,6 @@ namespace poundfe
         format.format    = g.record_format;
         format.units     = g.record_units;
         format.time_step = g.record_time_step;
-        const std::string path = "Ground motion/Record/File";
         try
           {
             motion = read_record(input.resolve(g.record_file), format);
@@ -135,6 +171,28 @@ namespace poundfe
     if (g.type == GroundMotionType::record) // generated motions may underflow harmlessly
       check_scaled(motion, input, "Ground motion/Scale factor");
     return motion;
+  }
+
+  void
+  add_horizontal_component(Excitation &excitation, const LinearSystem &system, const Model &model,
+                           const GroundMotionParameters &g, const InputFile &input,
+                           const double time_step)
+  {
+    if (model.dimension != 3)
+      {
+        if (g.n_components == 2)
+          input.fail("Ground motion/Components", "two horizontal components need "
+                                                 "Model/Dimension = 3");
+        if (g.incidence_angle != 0)
+          input.fail("Ground motion/Incidence angle", "an incidence angle needs "
+                                                      "Model/Dimension = 3");
+        return;
+      }
+    GroundMotion second; // none: the first component alone, rotated
+    if (g.n_components == 2)
+      second = make_ground_motion(g.second_component(), input, time_step,
+                                  "Ground motion/Record/Second file");
+    excitation.set_horizontal_pair(system, std::move(second), g.incidence_angle * M_PI / 180);
   }
 
   NodeDof

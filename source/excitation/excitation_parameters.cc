@@ -89,7 +89,20 @@ namespace poundfe
                ground_motion_type_names());
     prm.add_parameter("Scale factor", scale_factor, "Multiplies the motion, after any Target PGA (a record's or a stochastic "
                       "motion's: the PGA is then Target PGA x Scale factor). Unit: dimensionless.");
+    prm.add_parameter("Components", n_components,
+                      "Horizontal components: 1 (along x), or 2 (x and y, Model/Dimension = "
+                      "3: Record/Second file, or a second independent stochastic sample "
+                      "from Stochastic/Second seed). Unit: count.",
+                      dealii::Patterns::Integer(1, 2));
+    prm.add_parameter("Incidence angle", incidence_angle,
+                      "Rotates the horizontal pair counter-clockwise in plan: a_x = cos a "
+                      "g_1 - sin a g_2, a_y = sin a g_1 + cos a g_2 (Model/Dimension = 3). "
+                      "Unit: degrees.");
     prm.enter_subsection("Record");
+    prm.add_parameter("Second file", second_record_file,
+                      "The second horizontal component (Components = 2), along y before "
+                      "the incidence rotation; same format, units and scaling as File. "
+                      "Unit: -.");
     prm.add_parameter("File", record_file,
                       "PEER .AT2, or text with one (acceleration) or two (time, "
                       "acceleration) columns; relative to this parameter file. Unit: -.");
@@ -141,6 +154,9 @@ namespace poundfe
     prm.add_parameter("Sample interval", sample_interval,
                       "White-noise sample interval (0: the analysis time step). Unit: s.");
     prm.add_parameter("Seed", seed, "Random seed. Unit: -.");
+    prm.add_parameter("Second seed", second_seed,
+                      "Seed of the second horizontal component (Components = 2): an "
+                      "independent sample of the same process; 0: Seed + 1. Unit: -.");
     prm.add_parameter("Realization", realization,
                       "Realization index: (seed, index) fixes the sample. Unit: -.");
     add_choice(prm, "Envelope", envelope,
@@ -159,12 +175,26 @@ namespace poundfe
     prm.leave_subsection();
   }
 
+  GroundMotionParameters
+  GroundMotionParameters::second_component() const
+  {
+    GroundMotionParameters second = *this;
+    second.record_file            = second_record_file;
+    second.seed                   = second_seed > 0 ? second_seed : seed + 1;
+    second.n_components           = 1;
+    return second;
+  }
+
   void
   GroundMotionParameters::check(const InputFile &input, const double time_step) const
   {
     const std::string gm = "Ground motion/";
     if (type == GroundMotionType::record && record_file.empty())
       input.fail(gm + "Record/File", "a record ground motion needs a file");
+    if (type == GroundMotionType::record && n_components == 2 && second_record_file.empty())
+      input.fail(gm + "Record/Second file", "Components = 2 with a record needs a second file");
+    if (!std::isfinite(incidence_angle))
+      input.fail(gm + "Incidence angle", "must be finite");
     input.non_negative(gm + "Record/Time step", record_time_step);
     input.non_negative(gm + "Record/Target PGA", record_target_pga);
     if (!std::isfinite(scale_factor))

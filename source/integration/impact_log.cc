@@ -34,7 +34,11 @@ namespace poundfe
       return;
     Impact &impact = log[open[h]];
     impact.impulse += 0.5 * (a.force + b.force) * dt;
-    impact.peak_force = std::max(impact.peak_force, b.force);
+    if (b.force > impact.peak_force)
+      {
+        impact.peak_force = b.force;
+        impact.point      = b.point;
+      }
     if (b.penetration > impact.max_penetration)
       {
         impact.max_penetration      = b.penetration;

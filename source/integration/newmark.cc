@@ -618,7 +618,8 @@ namespace poundfe
         const NonlinearElement &e = (*elements)[h];
         impacts.record(h, current_time, current_time + L.dt,
                        {committed_history[h], committed_rate[h], committed_force[h]},
-                       {e.history_variable(), e.deformation(v_next), e.force()});
+                       {e.history_variable(), e.deformation(v_next), e.force(),
+                        e.contact_point()});
       }
     for (const unsigned int h : friction_elements)
       {

@@ -2,6 +2,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/mesh/line_mesh.h>
 #include <poundfe/model/model_builder.h>
+#include <poundfe/model/plan_builder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,13 +13,6 @@ namespace poundfe
 {
   namespace
   {
-    template <typename T>
-    T
-    value_for(const std::vector<T> &values, const unsigned int i)
-    {
-      return values.size() == 1 ? values[0] : values[i];
-    }
-
     unsigned int
     add_node(Model &model, const Point2 &p, const unsigned int building)
     {
@@ -588,7 +582,11 @@ namespace poundfe
     {
       if (contact.law == "none")
         return;
-      if (contact.between_buildings)
+      if (model.dimension == 3 && !contact.barriers.empty())
+        input.fail("Contact/Barriers", "barriers are not available with Dimension = 3");
+      if (contact.between_buildings && model.dimension == 3)
+        add_plan_contacts(model, contact);
+      else if (contact.between_buildings)
         for (unsigned int b = 0; b + 1 < model.buildings.size(); ++b)
           add_gaps_between(model, contact, b, b + 1, value_for(parameters.separations, b));
       for (const std::string &entry : contact.barriers)
@@ -608,6 +606,15 @@ namespace poundfe
       else // the damping parameters are dimensionless: one calibration serves every gap
         law.damping = calibrate_damping(law, contact.restitution, contact.calibration_velocity);
     }
+
+    /// Dimension 3: the plan centre given, or the next in the row along x.
+    Point2
+    plan_centre(const BuildingParameters &p, const double left)
+    {
+      if (!p.plan.position.empty())
+        return {p.plan.position[0], p.plan.position[1]};
+      return {left + plan_half_width(p), 0.0};
+    }
   } // namespace
 
   Model
@@ -619,6 +626,7 @@ namespace poundfe
     model.mass_matrix            = parameters.mass_matrix;
     model.geometric_nonlinearity = parameters.geometric_nonlinearity;
     model.gravity                = parameters.gravity;
+    model.dimension              = parameters.dimension;
     double left = 0;
     for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
       {
@@ -635,7 +643,10 @@ namespace poundfe
               build_frame(model, p, b, building);
               break;
             case BuildingType::shear:
-              build_shear(model, p, b, building);
+              if (parameters.dimension == 3)
+                build_plan_building(model, p, b, building, plan_centre(p, left), input);
+              else
+                build_shear(model, p, b, building);
               break;
             case BuildingType::mesh:
               build_from_mesh(model, input, p, b, building);
@@ -660,6 +671,8 @@ namespace poundfe
           left = building.right + value_for(parameters.separations, b);
         model.buildings.push_back(std::move(building));
       }
+    if (model.dimension == 3)
+      check_plans_apart(model, parameters, input);
     add_contact(model, parameters, contact, input);
     model.number_equations();
     add_springs(model, springs, input);

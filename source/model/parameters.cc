@@ -224,6 +224,7 @@ namespace poundfe
     prm.add_parameter("a1", rayleigh_a1,
                       "Stiffness-proportional coefficient (Type = coefficients). Unit: s.");
     prm.leave_subsection();
+    plan.declare(prm);
   }
 
   void
@@ -325,6 +326,22 @@ namespace poundfe
   }
 
   void
+  ModelParameters::finalize_plan(const InputFile &input)
+  {
+    if (geometric_nonlinearity != GeometricNonlinearity::none)
+      input.fail("Model/Geometric nonlinearity",
+                 "P-Delta is not available with Dimension = 3 (shear buildings in plan)");
+    for (unsigned int b = 0; b < buildings.size(); ++b)
+      {
+        const std::string s = "Building " + std::to_string(b + 1) + "/";
+        if (buildings[b].type != BuildingType::shear)
+          input.fail(s + "Type", "Dimension = 3 takes shear buildings (3 DOFs per floor) "
+                                 "only; 3D frames are not yet in the input");
+        buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
+      }
+  }
+
+  void
   ModelParameters::declare_number_of_buildings(dealii::ParameterHandler &prm,
                                                unsigned int             &n_buildings)
   {
@@ -349,6 +366,12 @@ namespace poundfe
                "forces in a linear static gravity analysis, shear-building storeys -P/h "
                "with P the weight above. none: small displacements. Unit: -.",
                geometric_nonlinearity_names());
+    prm.add_parameter("Dimension", dimension,
+                      "2: planar frames and stick models (x horizontal, y up). 3: "
+                      "torsionally coupled shear buildings in plan (x, y horizontal; each "
+                      "floor a rigid diaphragm moving ux, uy, rz; Building <i>/Plan), with "
+                      "contact between the slab outlines. Unit: -.",
+                      Patterns::Integer(2, 3));
     prm.add_parameter("Gravity", gravity,
                       "Acceleration of gravity for the P-Delta loads. Unit: m/s^2.");
     prm.add_parameter("Separations", separations,
@@ -369,6 +392,8 @@ namespace poundfe
     for (unsigned int b = 0; b < buildings.size(); ++b)
       buildings[b].finalize(input, b + 1);
     input.positive("Model/Gravity", gravity);
+    if (dimension == 3)
+      finalize_plan(input);
     if (buildings.size() > 1)
       input.list("Model/Separations", separations, buildings.size() - 1, true,
                  "one per neighbouring pair");

@@ -18,14 +18,6 @@ namespace poundfe
       return Eigen::Vector2d(plane.direction.x, plane.direction.y).normalized();
     }
 
-    /// δ = a·(ux, uy, θz) of a rigid floor moving about `point`.
-    Eigen::Vector3d
-    plane_row(const ResistingPlane &plane, const Point2 &point)
-    {
-      const Eigen::Vector2d d = unit_direction(plane);
-      return {d.x(), d.y(),
-              d.y() * (plane.position.x - point.x) - d.x() * (plane.position.y - point.y)};
-    }
 
     std::string
     storey_name(const unsigned int floor)
@@ -51,6 +43,14 @@ namespace poundfe
         }
     }
   } // namespace
+
+  Eigen::Vector3d
+  plane_row(const ResistingPlane &plane, const Point2 &point)
+  {
+    const Eigen::Vector2d d = unit_direction(plane);
+    return {d.x(), d.y(),
+            d.y() * (plane.position.x - point.x) - d.x() * (plane.position.y - point.y)};
+  }
 
   Eigen::Matrix3d
   storey_stiffness(const std::vector<ResistingPlane> &planes, const Point2 &point)

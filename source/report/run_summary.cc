@@ -65,8 +65,11 @@ namespace poundfe
     json.begin_object(key)
       .value("frequencies_hz", f)
       .value("periods_s", T)
-      .value("participating_mass_ratio_x", modes.participating_mass_ratio)
-      .end_object();
+      .value("participating_mass_ratio_x", modes.participating_mass_ratio);
+    if (!modes.participating_mass_ratio_y.empty())
+      json.value("participating_mass_ratio_y", modes.participating_mass_ratio_y)
+        .value("participating_mass_ratio_rz", modes.participating_mass_ratio_rz);
+    json.end_object();
   }
 
   void
@@ -100,6 +103,7 @@ namespace poundfe
     , solver(solver)
     , tangent_update(tangent_update)
     , files(std::move(files))
+    , plan(analysis.model)
   {}
 
   bool
@@ -181,7 +185,8 @@ namespace poundfe
     const unsigned int first = peaks.n_hysteretic();
     std::string csv = "gap,buildings,level_m,start_time_s,max_penetration_time_s,end_time_s,"
                       "approach_velocity_m_s,separation_velocity_m_s,max_penetration_m,"
-                      "peak_force_N,impulse_N_s\n";
+                      "peak_force_N,impulse_N_s" +
+                      std::string(model.dimension == 3 ? ",plan_x_m,plan_y_m\n" : "\n");
     for (const Impact &impact : state.impact_log().impacts())
       {
         const Gap         &gap = model.gaps[impact.element - first];
@@ -195,7 +200,10 @@ namespace poundfe
         if (impact.end_time >= 0)
           row << impact.end_time;
         row << "," << impact.approach_velocity << "," << impact.separation_velocity << ","
-            << impact.max_penetration << "," << impact.peak_force << "," << impact.impulse << "\n";
+            << impact.max_penetration << "," << impact.peak_force << "," << impact.impulse;
+        if (model.dimension == 3)
+          row << "," << impact.point[0] << "," << impact.point[1];
+        row << "\n";
         csv += row.str();
       }
     write_file_atomically(directory + "/impacts.csv", csv);
@@ -259,6 +267,8 @@ namespace poundfe
           json.value("peak_base_shear_N", base_shears.peak()[b])
             .value("time_of_peak_base_shear_s", base_shears.time_of_peak()[b]);
         json.value("max_residual_drift_ratio", residual);
+        if (model.dimension == 3)
+          write_plan_response(json, plan, b);
         json.begin_array("storeys");
         for (unsigned int f = 0; f < building.floors.size(); ++f)
           {

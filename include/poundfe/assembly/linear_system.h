@@ -9,6 +9,8 @@
 // Shear-building storeys: -P/h [1 -1; -1 1] on the two floors' ux, P the
 // weight of the floors above the storey (the overturning P Delta balanced by
 // a storey shear P Delta / h).
+// Dimension 3: each resisting plane adds k a a^T (a its PlaneLink
+// coefficients) and each floor its polar moment on θz (doc/theory.md §1.12).
 // Sources: Przemieniecki (1968) (geometric stiffness); McGuire, Gallagher & Ziemian, Matrix
 // Structural Analysis, 2nd ed. (2000), §9.3; Wilson & Habibullah, Earthquake
 // Spectra 3 (1987) 289-298 (the linearised P-Delta of buildings).
@@ -37,6 +39,9 @@ namespace poundfe
     SparseMatrix damping;
     /// Influence vector of a horizontal ground motion: 1 on every ux equation.
     Vector influence;
+    /// Dimension 3 (empty in 2D): 1 on every uy (plan) equation, and 1 on
+    /// every θz equation (the rotation about Z, for effective modal masses).
+    Vector influence_y, influence_rz;
     /// Rayleigh coefficients (a0, a1) used for each building.
     std::vector<std::array<double, 2>> rayleigh;
 

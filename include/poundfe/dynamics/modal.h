@@ -32,6 +32,9 @@ namespace poundfe
     std::vector<double> omega;                   // rad/s, ascending
     Eigen::MatrixXd     shapes;                  // mass-normalised, one per column
     std::vector<double> participating_mass_ratio; // horizontal (x) direction
+    /// Dimension 3 (empty in 2D): along y, and about z (θz of every floor
+    /// about its mass centre: Gamma^2 / sum of the polar moments).
+    std::vector<double> participating_mass_ratio_y, participating_mass_ratio_rz;
 
     unsigned int n_modes() const { return omega.size(); }
     double frequency(unsigned int i) const;      // Hz
@@ -69,6 +72,14 @@ namespace poundfe
   /// Both solvers finish their modes here.
   void append_mode(Modes &modes, Eigen::VectorXd phi, double omega, const SparseMatrix &mass,
                    const Vector &influence);
+
+  /// Gamma^2 / (r^T M r), Gamma = phi^T M r, of a mass-normalised phi.
+  double participating_mass_ratio(const Eigen::VectorXd &phi, const SparseMatrix &mass,
+                                  const Vector &influence);
+
+  /// Dimension 3: the ratios along y and about z of every mode.
+  void add_plan_participation(Modes &modes, const SparseMatrix &mass, const Vector &influence_y,
+                              const Vector &influence_rz);
 
   /// What compute_modes throws when K has no Cholesky factor.
   extern const char *const stiffness_not_positive_definite;

@@ -21,6 +21,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
 #include <memory>
@@ -115,6 +117,13 @@ namespace poundfe
     /// under way, or, when open, of one that would begin at `closing_rate`
     /// (m/s, > 0 approaching). 0: not a contact, or no impact at that rate.
     virtual double contact_duration(double /*closing_rate*/) const { return 0; }
+
+    /// Contact in plan: where the force acts at the trial state (x, y);
+    /// NaN for elements without a point.
+    virtual std::array<double, 2> contact_point() const
+    {
+      return {{std::nan(""), std::nan("")}};
+    }
 
     // What observers and outputs read: scalar measures of the trial state,
     // which is the committed state between steps.

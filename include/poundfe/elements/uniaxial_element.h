@@ -1,5 +1,7 @@
-// A two-terminal nonlinear element acting on one deformation measure
-//   d = s0 u[e0] + s1 u[e1]        (an equation < 0 is the ground),
+// A nonlinear element acting on one deformation measure
+//   d = s0 u[e0] + s1 u[e1] (+ ...)  (an equation < 0 is the ground),
+// two-terminal (hinges, storeys, gaps) or on any number of DOFs (a resisting
+// plane of a 3D shear building: d = a · (q_bottom, q_top)),
 // with a history-dependent law F(d, d_dot). Its contribution to the
 // equations is b F with b = (s0 at e0, s1 at e1), and its tangent is the
 // rank-one term b (dF/dd + c dF/dd_dot) b^T, c = gamma/(beta dt): in the
@@ -16,6 +18,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace poundfe
 {
@@ -28,6 +31,10 @@ namespace poundfe
                     const std::array<int, 2> &equations, std::unique_ptr<UniaxialLaw> law,
                     double reference_stiffness = 0,
                     const std::array<double, 2> &signs = {{1.0, -1.0}});
+    /// On any number of DOFs: d = sum_i coefficients[i] u[equations[i]].
+    UniaxialElement(ElementKind kind, unsigned int building, std::string label,
+                    const std::vector<int> &equations, const std::vector<double> &coefficients,
+                    std::unique_ptr<UniaxialLaw> law, double reference_stiffness = 0);
 
     unsigned int    rank() const override { return 1; }
     Eigen::MatrixXd tangent_basis() const override;
@@ -65,10 +72,10 @@ namespace poundfe
     /// b^T x of a local vector (ground DOFs skipped, as in deformation()).
     double local_deformation(const LocalVector &x) const;
 
-    std::array<double, 2>        signs;
+    std::vector<double>          signs; // the coefficients of d
     double                       reference_stiffness;
     std::unique_ptr<UniaxialLaw> law;
-    std::array<bool, 2>          on_ground; // equation < 0
+    std::vector<bool>            on_ground; // equation < 0
     // For the work of a step: the committed deformation and force, the trial deformation.
     double committed_deformation = 0, committed_force = 0, trial_deformation = 0;
   };

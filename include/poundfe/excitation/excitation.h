@@ -10,6 +10,7 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/model/model.h>
 
+#include <array>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -39,9 +40,19 @@ namespace poundfe
   public:
     Excitation(const LinearSystem &system, GroundMotion ground, std::vector<NodalForce> forces);
 
+    /// Dimension 3: the second horizontal component g_2 and the incidence
+    /// angle a (rad); the load is then -M (r_x a_x + r_y a_y) with
+    /// (a_x, a_y) = R(a) (g_1, g_2).
+    void set_horizontal_pair(const LinearSystem &system, GroundMotion second, double angle);
+    /// (a_x, a_y) at t (a_y = 0 without a pair).
+    std::array<double, 2> horizontal_acceleration(double t) const;
+    bool has_horizontal_pair() const { return pair; }
+    const GroundMotion &second_ground_motion() const { return second; }
+
     /// p(t) into `load` (sized n_equations).
     void load(double t, Vector &load) const;
-    double ground_acceleration(double t) const { return ground.value(t); }
+    /// a_x(t): the first component, or the x component of a rotated pair.
+    double ground_acceleration(double t) const { return horizontal_acceleration(t)[0]; }
     const GroundMotion &ground_motion() const { return ground; }
     const std::vector<NodalForce> &nodal_forces() const { return forces; }
     /// In-place access for a new realization (StochasticLoad).
@@ -52,13 +63,27 @@ namespace poundfe
     GroundMotion            ground;
     std::vector<NodalForce> forces;
     Vector                  mass_times_influence;
+    bool                    pair = false;
+    GroundMotion            second;
+    double                  cos_angle = 1, sin_angle = 0;
+    Vector                  mass_times_influence_y;
   };
+
+  /// Model/Dimension = 3: the second horizontal component of `parameters`
+  /// and its incidence angle, onto `excitation`. Throws InputError (two
+  /// components asked of a 2D model, a bad second record).
+  void add_horizontal_component(Excitation &excitation, const LinearSystem &system,
+                                const Model &model, const GroundMotionParameters &parameters,
+                                const InputFile &input, double time_step);
 
   /// The ground motion of `Ground motion` (generated, recorded or none);
   /// `time_step` is the analysis time step, `input` names the file in
   /// messages and resolves the record's path.
   GroundMotion make_ground_motion(const GroundMotionParameters &parameters, const InputFile &input,
                                   double time_step);
+  /// The same, naming `record_path` (the record file's parameter) in messages.
+  GroundMotion make_ground_motion(const GroundMotionParameters &parameters, const InputFile &input,
+                                  double time_step, const std::string &record_path);
 
   /// The generator of the input's stochastic ground motion (kanai-tajimi,
   /// clough-penzien or white-noise types).

@@ -41,6 +41,12 @@ namespace poundfe
     GroundMotionType type         = GroundMotionType::kanai_tajimi;
     double           scale_factor = 1.0;
 
+    // Two horizontal components (Model/Dimension = 3).
+    unsigned int n_components       = 1;
+    double       incidence_angle    = 0.0; // degrees
+    std::string  second_record_file = "";
+    unsigned int second_seed        = 0; // 0: Seed + 1
+
     // Recorded motions.
     std::string      record_file       = "";
     RecordFileFormat record_format     = RecordFileFormat::automatic;
@@ -80,6 +86,10 @@ namespace poundfe
     /// Interval of the generated white noise: `Sample interval`, or the
     /// analysis time step when that is 0.
     double held_interval(double time_step) const;
+
+    /// The parameters of the second horizontal component: the second
+    /// record, or the same process with the second seed.
+    GroundMotionParameters second_component() const;
 
     /// Declare the `Ground motion` section (entered and left here).
     void declare(dealii::ParameterHandler &prm);

@@ -10,6 +10,8 @@
 #ifndef poundfe_integration_impact_log_h
 #define poundfe_integration_impact_log_h
 
+#include <array>
+#include <cmath>
 #include <vector>
 
 namespace poundfe
@@ -25,6 +27,8 @@ namespace poundfe
     double       max_penetration      = 0;
     double       peak_force           = 0;
     double       impulse              = 0;
+    /// Where the peak force acted in plan (3D plan contact; NaN otherwise).
+    std::array<double, 2> point{{std::nan(""), std::nan("")}};
   };
 
   class ImpactLog
@@ -34,6 +38,7 @@ namespace poundfe
     struct GapState
     {
       double penetration = 0, rate = 0, force = 0;
+      std::array<double, 2> point{{std::nan(""), std::nan("")}};
     };
 
     void reset(unsigned int n_elements);

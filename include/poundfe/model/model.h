@@ -1,5 +1,9 @@
 // The structural model: nodes with 3 DOFs (ux, uy, rz), frame members, storey
 // links, lumped masses, supports, grouped into buildings placed side by side.
+// Dimension 3 (torsionally coupled shear buildings, doc/theory.md §1.12): a
+// floor node's DOFs are the plan motion (ux, uy, θz) of its rigid diaphragm at
+// the mass centre; the node's position is (x of the mass centre, level), and
+// the plan (mass centres, slab outlines) is in Building::plan.
 // Plain data: no deal.II headers here, because nearly every file includes it.
 #ifndef poundfe_model_model_h
 #define poundfe_model_model_h
@@ -93,6 +97,17 @@ namespace poundfe
     BoucWenParameters law;
   };
 
+  /// Two facing slab edges in plan, at rest, site coordinates: the edge of
+  /// each floor (ends counter-clockwise along its own outline), each floor's
+  /// mass centre, and which end of the edges' overlap the gap watches (0:
+  /// the end at the start of the second floor's edge, 1: at its end).
+  struct PlanContactGeometry
+  {
+    std::array<std::array<Point2, 2>, 2> edges;
+    std::array<Point2, 2>                centres;
+    unsigned int                         end = 0;
+  };
+
   /// A gap element: contact between a node of one building and a node of
   /// its right-hand neighbour (closure = ux_left - ux_right), or between a
   /// node and a rigid barrier (closure = +ux for a barrier on the right,
@@ -105,6 +120,10 @@ namespace poundfe
     double                      initial_gap    = 0;
     double                      effective_mass = 0;
     std::string                 label;
+    /// Dimension 3: contact between the slab outlines of the two floors in
+    /// plan (elements/plan_contact.h); nodes are the two floors' nodes.
+    bool                        in_plan = false;
+    PlanContactGeometry         plan;
   };
 
   /// Translational mass lumped at a node (acts on ux and uy).
@@ -130,6 +149,30 @@ namespace poundfe
   {
     unsigned int node = 0;
     double       mass = 0;
+    /// Polar moment of inertia on rz (3D floors: about the mass centre), kg m².
+    double       polar_moment = 0;
+  };
+
+  /// A lateral-resisting plane of one storey of a 3D shear building: a
+  /// spring on the deformation d = coefficients · (q_bottom, q_top), q =
+  /// (ux, uy, θz) of the floors (the bottom one the ground for storey 1).
+  struct PlaneLink
+  {
+    std::array<unsigned int, 2> nodes{{0, 0}}; // bottom, top
+    std::array<double, 6>       coefficients{{0, 0, 0, 0, 0, 0}};
+    double                      stiffness = 0;
+    unsigned int                building  = 0;
+    unsigned int                storey    = 1; // 1-based
+    unsigned int                plane     = 1; // 1-based, as listed
+    bool                        hysteretic = false; // Bouc-Wen (stiffness = hysteresis.stiffness)
+    BoucWenParameters           hysteresis;
+  };
+
+  /// One floor of a 3D building in plan (site coordinates, at rest).
+  struct PlanFloor
+  {
+    Point2              mass_centre;
+    std::vector<Point2> outline; // the slab's corners, counter-clockwise
   };
 
   /// A floor: its level and the nodes on it; the storey below it has height
@@ -176,6 +219,8 @@ namespace poundfe
     double             base_level = 0;
     std::vector<Floor> floors; // bottom to top
     RayleighDamping    damping;
+    /// Dimension 3: one per floor, bottom to top; empty in 2D.
+    std::vector<PlanFloor> plan;
   };
 
   enum class MassMatrixType
@@ -198,6 +243,7 @@ namespace poundfe
     std::vector<Node>       nodes;
     std::vector<Member>     members;
     std::vector<StoreyLink> links;
+    std::vector<PlaneLink>  plane_links; // 3D shear buildings
     std::vector<Hinge>      hinges;
     std::vector<Gap>        gaps;
     std::vector<Spring>          springs;
@@ -209,6 +255,8 @@ namespace poundfe
     MassMatrixType          mass_matrix = MassMatrixType::lumped;
     GeometricNonlinearity   geometric_nonlinearity = GeometricNonlinearity::none;
     double                  gravity                = 9.81; // m/s^2, for P-Delta
+    /// 2: planar frames and stick models; 3: torsionally coupled shear buildings.
+    unsigned int            dimension              = 2;
 
     unsigned int n_nodes() const { return nodes.size(); }
     unsigned int n_dofs() const { return n_dofs_per_node * nodes.size(); }

@@ -9,6 +9,7 @@
 #include <poundfe/base/input_file.h>
 #include <poundfe/laws/bouc_wen.h>
 #include <poundfe/model/model.h>
+#include <poundfe/model/plan_parameters.h>
 
 #include <string>
 #include <vector>
@@ -84,6 +85,9 @@ namespace poundfe
     double                    rayleigh_a0 = 0.0;
     double                    rayleigh_a1 = 0.0;
 
+    /// The building in plan (Model/Dimension = 3).
+    PlanParameters plan;
+
     /// Declare the entries of one `Building <i>` subsection (the current one).
     void declare(dealii::ParameterHandler &prm);
     /// Check the values of `Building <number>`; name it B<number> if unnamed.
@@ -106,6 +110,7 @@ namespace poundfe
     MassMatrixType                  mass_matrix = MassMatrixType::lumped;
     GeometricNonlinearity           geometric_nonlinearity = GeometricNonlinearity::none;
     double                          gravity                = 9.81;
+    unsigned int                    dimension              = 2;
     std::vector<double>             separations{0.05};
     std::vector<BuildingParameters> buildings; // one per `Building <i>`
 
@@ -116,6 +121,10 @@ namespace poundfe
     void declare(dealii::ParameterHandler &prm);
     /// Check every building and the separations. Throws InputError.
     void finalize(const InputFile &input);
+
+  private:
+    /// Dimension 3: shear buildings with their Plan. Throws InputError.
+    void finalize_plan(const InputFile &input);
   };
 } // namespace poundfe
 

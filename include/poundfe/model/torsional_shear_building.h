@@ -68,6 +68,10 @@ namespace poundfe
   /// parallel, or all through one point: no torsional stiffness).
   void check_building(const TorsionalShearBuilding &building);
 
+  /// a(point): the plane's deformation δ = a·(ux, uy, θz) of a rigid floor
+  /// moving about `point`.
+  Eigen::Vector3d plane_row(const ResistingPlane &plane, const Point2 &point);
+
   /// The 3x3 stiffness of the rigid-floor motion (ux, uy, θz) about `point`
   /// from `planes`.
   Eigen::Matrix3d storey_stiffness(const std::vector<ResistingPlane> &planes, const Point2 &point);

@@ -12,6 +12,7 @@
 #include <poundfe/report/run_parameters.h>
 #include <poundfe/output/observer.h>
 
+#include <poundfe/output/plan_response.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/output/storey_forces.h>
 
@@ -41,8 +42,16 @@ namespace poundfe
                const std::string &solver, const std::string &tangent_update,
                std::vector<std::string> files);
 
-    void initialize(const ResponseView &state) override { base_shears.initialize(state); }
-    void observe_step(const ResponseView &state) override { base_shears.observe_step(state); }
+    void initialize(const ResponseView &state) override
+    {
+      base_shears.initialize(state);
+      plan.initialize(state);
+    }
+    void observe_step(const ResponseView &state) override
+    {
+      base_shears.observe_step(state);
+      plan.observe_step(state);
+    }
     void observe_substep(const ResponseView &state) override { base_shears.observe_substep(state); }
     void finish(const ResponseView &state, const RunStatus &status) override;
 
@@ -94,6 +103,8 @@ namespace poundfe
     const std::vector<std::string> files;
     /// Each building's peak base shear, for summary.json.
     BaseShearPeaks base_shears;
+    /// 3D buildings: rotations, irregularity ratios, base shears and torque.
+    PlanResponse plan;
   };
 } // namespace poundfe
 

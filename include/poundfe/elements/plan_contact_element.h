@@ -1,0 +1,73 @@
+// Contact between the slab outlines of two floors in plan (Model/Dimension
+// = 3): one end of the overlap of two facing edges, a corner of one floor
+// against the edge of the other (model/plan_contact_geometry.h gives the gap
+// g(q) and its derivatives), with any contact law F(δ, δ') of laws/ on the
+// penetration δ = -g:
+//   force on the equations   f = -F ∇g
+//   tangent                  df/dq + c df/dq' = (k_t + c c_t) ∇g ∇gᵀ
+//                                               + c_t ∇g (∇²g q')ᵀ - F ∇²g
+// (k_t = dF/dδ, c_t = dF/dδ', c = γ/(β Δt)). The normal turns with the
+// floors, so the tangent is not a fixed rank-one term: B_e is the identity
+// on the six DOFs (rank 6) and D_e the whole 6 x 6 tangent.
+// Source: Wriggers, Computational Contact Mechanics, 2nd ed. (2006), §4.1
+// (node-to-segment penalty contact and its linearisation); doc/theory.md §1.13.
+#ifndef poundfe_elements_plan_contact_element_h
+#define poundfe_elements_plan_contact_element_h
+
+#include <poundfe/elements/nonlinear_element.h>
+#include <poundfe/laws/contact_law.h>
+#include <poundfe/model/plan_contact_geometry.h>
+
+#include <memory>
+
+namespace poundfe
+{
+  class PlanContactElement final : public NonlinearElement
+  {
+  public:
+    /// `equations`: (ux, uy, θz) of floor 1, then of floor 2.
+    PlanContactElement(unsigned int building, std::string label, std::vector<int> equations,
+                       const PlanContactGeometry &geometry, std::unique_ptr<ContactLaw> law);
+
+    unsigned int    rank() const override { return 6; }
+    Eigen::MatrixXd tangent_basis() const override { return Eigen::MatrixXd::Identity(6, 6); }
+    bool            has_symmetric_tangent() const override { return false; }
+
+    bool   set_trial(const LocalVector &u, const LocalVector &v) override;
+    void   force_correction(LocalVectorOut f) const override;
+    void   tangent_change(double damping_factor, LocalMatrixOut d) const override;
+    double work_increment() const override;
+    double reference_energy() const override { return 0; }
+    void   commit() override;
+    void   revert() override;
+    void   reset() override;
+    std::string failure() const override { return law->failure(); }
+    bool   is_active() const override { return law->is_active(); }
+    bool   was_active() const override { return law->was_active(); }
+    double contact_duration(const double closing_rate) const override
+    {
+      return law->contact_duration(closing_rate);
+    }
+
+    double force() const override { return law->force(); }
+    /// The rate of penetration -∇g · x for a global velocity x (linearised
+    /// at the trial state, as the integrator's event and impact logic needs).
+    double deformation(const Eigen::VectorXd &x) const override;
+    double history_variable() const override { return law->history_variable(); }
+    double stored_energy() const override { return law->stored_energy(); }
+    /// The contact point (the corner) at the trial state.
+    std::array<double, 2> contact_point() const override
+    {
+      return {{state.point.x, state.point.y}};
+    }
+
+  private:
+    PlanContactGeometry         geometry;
+    std::unique_ptr<ContactLaw> law;
+    PlanContactState            state, committed_state;
+    Vector6                     velocity = Vector6::Zero();
+    double committed_penetration = 0, committed_force = 0;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,44 @@
+// prm -> Model for Model/Dimension = 3: torsionally coupled shear buildings
+// placed in plan (model/torsional_shear_building.h, doc/theory.md §1.12) and
+// the contacts between their slab outlines (doc/theory.md §1.13).
+#ifndef poundfe_model_plan_builder_h
+#define poundfe_model_plan_builder_h
+
+#include <poundfe/base/input_file.h>
+#include <poundfe/model/contact_parameters.h>
+#include <poundfe/model/model.h>
+#include <poundfe/model/parameters.h>
+
+#include <vector>
+
+namespace poundfe
+{
+  /// Entry i of a list given as one value for all or one value per item.
+  template <typename T>
+  T
+  value_for(const std::vector<T> &values, const unsigned int i)
+  {
+    return values.size() == 1 ? values[0] : values[i];
+  }
+
+  /// Half the extent along the site's x of building p's rotated slab.
+  double plan_half_width(const BuildingParameters &p);
+
+  /// Building b (0-based) with its plan centre at `centre` on the site: a
+  /// fixed base node, a node (ux, uy, θz) per floor at its mass centre with
+  /// its mass and polar moment, the resisting planes of every storey, the
+  /// slab outlines. Throws InputError (a singular diaphragm: planes all
+  /// parallel or through one point) naming `Building <b+1>/Plan/...`.
+  void build_plan_building(Model &model, const BuildingParameters &p, unsigned int b,
+                           Building &building, const Point2 &centre, const InputFile &input);
+
+  /// Throws InputError when two buildings' slabs overlap at rest.
+  void check_plans_apart(const Model &model, const ModelParameters &parameters,
+                         const InputFile &input);
+
+  /// One gap per end of the overlap of the facing edges of every pair of
+  /// floors at the same level of two buildings whose slabs face each other.
+  void add_plan_contacts(Model &model, const ContactParameters &contact);
+} // namespace poundfe
+
+#endif

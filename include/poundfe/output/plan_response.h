@@ -1,0 +1,61 @@
+// The plan response of 3D shear buildings (Model/Dimension = 3), tracked at
+// every step: per floor the peak twist |θz|; per storey the peak drifts
+// along x and y at every corner of the slab (rigid diaphragm, small
+// rotations: a point X of floor i moves u_x - θ (X_y - C_y),
+// u_y + θ (X_x - C_x)), and from them the torsional irregularity ratio
+//   Δmax / Δavg,  Δavg = (Δmax + Δmin) / 2
+// over the corners' peak drifts in each direction (ASCE/SEI 7-16 Table
+// 12.3-1, types 1a (> 1.2) and 1b (> 1.4); EN 1998-1 §4.3.3.2.2(6)); per
+// building the peak base shears V_x, V_y (the resisting planes of the first
+// storey: Σ F_j d_j) and the peak base torque about the first floor's mass
+// centre at rest, T = Σ (p_j - C_1) × F_j d_j.
+#ifndef poundfe_output_plan_response_h
+#define poundfe_output_plan_response_h
+
+#include <poundfe/output/observer.h>
+
+#include <array>
+#include <vector>
+
+namespace poundfe
+{
+  class PlanResponse final : public StepObserver
+  {
+  public:
+    explicit PlanResponse(const Model &model);
+
+    void observe_step(const ResponseView &state) override;
+
+    struct Storey
+    {
+      double                rotation = 0;              // peak |θz| of the floor on top, rad
+      std::vector<double>   corner_drift_x, corner_drift_y; // peaks, m
+      std::array<double, 2> irregularity_ratio{{1, 1}};   // x, y
+    };
+    struct BuildingPeaks
+    {
+      std::vector<Storey> storeys;
+      double base_shear_x = 0, base_shear_y = 0, base_torque = 0; // peaks of |.|
+    };
+    /// Per building (empty for 2D models).
+    const std::vector<BuildingPeaks> &buildings() const { return peaks; }
+
+  private:
+    /// The force of plane link l: k δ, or its Bouc-Wen element's force.
+    double plane_force(const ResponseView &state, unsigned int l) const;
+    void   storey_drifts(const Vector &u, unsigned int b);
+
+    const Model               &model;
+    std::vector<BuildingPeaks> peaks;
+    std::vector<int>           element_of_link; // -1: elastic
+  };
+
+  class JsonWriter;
+
+  /// The "plan" object of building b in summary.json: per storey the peak
+  /// floor rotation and the irregularity ratios in x and y, the peak base
+  /// shears and torque.
+  void write_plan_response(JsonWriter &json, const PlanResponse &plan, unsigned int b);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,95 @@
+// The plan contact element of include/poundfe/elements/plan_contact_element.h.
+#include <poundfe/elements/plan_contact_element.h>
+
+namespace poundfe
+{
+  namespace
+  {
+    /// Where the outlines do not face each other: open by far (m).
+    constexpr double far_apart = 1e3;
+  }
+
+  PlanContactElement::PlanContactElement(const unsigned int building, std::string label,
+                                         std::vector<int> equations,
+                                         const PlanContactGeometry &geometry,
+                                         std::unique_ptr<ContactLaw> law)
+    : NonlinearElement(ElementKind::gap, building, std::move(label), std::move(equations))
+    , geometry(geometry)
+    , law(std::move(law))
+  {
+    reset();
+  }
+
+  bool
+  PlanContactElement::set_trial(const LocalVector &u, const LocalVector &v)
+  {
+    state    = plan_contact_state(geometry, u);
+    velocity = v;
+    if (!state.defined)
+      {
+        state.gap = far_apart;
+        state.gradient.setZero();
+        state.hessian.setZero();
+      }
+    return law->set_trial(-state.gap, -state.gradient.dot(velocity));
+  }
+
+  void
+  PlanContactElement::force_correction(LocalVectorOut f) const
+  {
+    f = -law->force() * state.gradient;
+  }
+
+  void
+  PlanContactElement::tangent_change(const double damping_factor, LocalMatrixOut d) const
+  {
+    const double k = law->tangent(), c = law->damping_tangent();
+    d              = (k + damping_factor * c) * state.gradient * state.gradient.transpose() +
+        c * state.gradient * (state.hessian * velocity).transpose() - law->force() * state.hessian;
+  }
+
+  double
+  PlanContactElement::deformation(const Eigen::VectorXd &x) const
+  {
+    double rate = 0;
+    for (unsigned int i = 0; i < 6; ++i)
+      if (equations()[i] >= 0)
+        rate -= state.gradient[i] * x[equations()[i]];
+    return rate;
+  }
+
+  double
+  PlanContactElement::work_increment() const
+  {
+    return 0.5 * (committed_force + law->force()) *
+           (law->history_variable() - committed_penetration);
+  }
+
+  void
+  PlanContactElement::commit()
+  {
+    law->commit();
+    committed_state       = state;
+    committed_penetration = law->history_variable();
+    committed_force       = law->force();
+  }
+
+  void
+  PlanContactElement::revert()
+  {
+    law->revert();
+    state = committed_state;
+  }
+
+  void
+  PlanContactElement::reset()
+  {
+    law->reset();
+    velocity.setZero();
+    set_trial(Vector6::Zero(), velocity); // the penetration at rest: -(the gap)
+    law->commit();
+    committed_state       = state;
+    committed_penetration = law->history_variable();
+    committed_force       = law->force();
+  }
+} // namespace poundfe
