@@ -204,7 +204,11 @@ namespace poundfe
       }
     L->effective.makeCompressed();
     L->solver = create_linear_solver(solver_name);
-    L->solver->analyze_and_factorize(L->effective);
+    // every step size has K_eff's pattern: one symbolic analysis where the
+    // backend can share it (UMFPACK)
+    stats.shared_analyses +=
+      L->solver->analyze_or_reuse(cuts > 0 ? levels[0]->solver.get() : nullptr, L->effective);
+    L->solver->factorize(L->effective);
     if (n_elements > 0 && (use_woodbury || use_hybrid))
       {
         // B: the columns of every B_e on the element's equations
@@ -234,7 +238,8 @@ namespace poundfe
         if (use_hybrid) // the tangent gets its own factorisation; K_eff's stays
           {
             L->tangent_solver = create_linear_solver(solver_name);
-            L->tangent_solver->analyze(L->effective);
+            stats.shared_analyses +=
+              L->tangent_solver->analyze_or_reuse(L->solver.get(), L->effective);
           }
         L->base_values.assign(L->effective.valuePtr(),
                               L->effective.valuePtr() + L->effective.nonZeros());

@@ -120,6 +120,7 @@ namespace poundfe
     unsigned long refactorizations = 0; // numeric factorisations of the tangent
     unsigned long full_newton_retries = 0; // steps redone by full Newton after a cheaper method failed
     unsigned long line_searches = 0;    // iterations whose step the line search shortened or stretched
+    unsigned long shared_analyses = 0;  // symbolic analyses taken over from another step size's solver
     double        smallest_time_step = 0;
   };
 
