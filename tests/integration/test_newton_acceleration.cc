@@ -55,6 +55,30 @@ namespace
       }
     return max + 1;
   }
+  /// The correction of `update` (KrylovAcceleration or BfgsUpdate), which
+  /// records the step it returns.
+  template <typename Update>
+  auto
+  accelerated(Update &update, const InverseOperator &h0)
+  {
+    return [&update, &h0](const Vector &r) {
+      Vector d;
+      update.direction(r, h0, d);
+      update.record_step(d);
+      return d;
+    };
+  }
+
+  /// The modified-Newton correction H_0 R.
+  auto
+  frozen(const InverseOperator &h0)
+  {
+    return [&h0](const Vector &r) {
+      Vector d;
+      h0(r, d);
+      return d;
+    };
+  }
 } // namespace
 
 BOOST_AUTO_TEST_CASE(krylov_newton_solves_a_linear_system_in_n_plus_one_iterations)
@@ -69,40 +93,17 @@ BOOST_AUTO_TEST_CASE(krylov_newton_solves_a_linear_system_in_n_plus_one_iteratio
 
   KrylovAcceleration krylov(n);
   Vector             u(n);
-  const unsigned int k_iterations = iterate(
-    residual,
-    [&](const Vector &r) {
-      Vector d;
-      krylov.direction(r, h0, d);
-      krylov.record_step(d);
-      return d;
-    },
-    u, 50);
+  const unsigned int k_iterations = iterate(residual, accelerated(krylov, h0), u, 50);
   BOOST_TEST(k_iterations <= static_cast<unsigned int>(n + 1));
   BOOST_TEST((u - exact).norm() <= 1e-10 * exact.norm());
 
-  const unsigned int modified = iterate(
-    residual,
-    [&](const Vector &r) {
-      Vector d;
-      h0(r, d);
-      return d;
-    },
-    u, 10000);
+  const unsigned int modified = iterate(residual, frozen(h0), u, 10000);
   BOOST_TEST_MESSAGE("linear system of " << n << ": Krylov–Newton " << k_iterations
                                          << " iterations, modified Newton " << modified);
   BOOST_TEST(modified > 3 * k_iterations);
 
   BfgsUpdate   bfgs(n);
-  const unsigned int b_iterations = iterate(
-    residual,
-    [&](const Vector &r) {
-      Vector d;
-      bfgs.direction(r, h0, d);
-      bfgs.record_step(d);
-      return d;
-    },
-    u, 200);
+  const unsigned int b_iterations = iterate(residual, accelerated(bfgs, h0), u, 200);
   BOOST_TEST_MESSAGE("BFGS " << b_iterations << " iterations");
   BOOST_TEST(b_iterations < modified);
   BOOST_TEST((u - exact).norm() <= 1e-10 * exact.norm());
@@ -153,35 +154,12 @@ BOOST_AUTO_TEST_CASE(accelerated_corrections_find_the_newton_root_of_a_cubic_sys
   const InverseOperator h0 = [&](const Vector &x, Vector &y) { y = llt.solve(x); };
 
   Vector             u(n);
-  const unsigned int modified = iterate(
-    residual,
-    [&](const Vector &r) {
-      Vector d;
-      h0(r, d);
-      return d;
-    },
-    u, 10000);
+  const unsigned int modified = iterate(residual, frozen(h0), u, 10000);
   KrylovAcceleration krylov(5);
-  const unsigned int krylov_iterations = iterate(
-    residual,
-    [&](const Vector &r) {
-      Vector d;
-      krylov.direction(r, h0, d);
-      krylov.record_step(d);
-      return d;
-    },
-    u, 200);
+  const unsigned int krylov_iterations = iterate(residual, accelerated(krylov, h0), u, 200);
   BOOST_TEST((u - root).norm() <= 1e-10 * root.norm());
   BfgsUpdate         bfgs(5);
-  const unsigned int bfgs_iterations = iterate(
-    residual,
-    [&](const Vector &r) {
-      Vector d;
-      bfgs.direction(r, h0, d);
-      bfgs.record_step(d);
-      return d;
-    },
-    u, 200);
+  const unsigned int bfgs_iterations = iterate(residual, accelerated(bfgs, h0), u, 200);
   BOOST_TEST((u - root).norm() <= 1e-10 * root.norm());
   BOOST_TEST_MESSAGE("cubic system: modified Newton " << modified << ", Krylov–Newton "
                                                       << krylov_iterations << ", BFGS "
