@@ -5,11 +5,16 @@
 // tangent updates need: a model with thousands of nonlinear elements
 // refactorises in every Newton iteration, always with the same pattern.
 // (deal.II's SparseDirectUMFPACK redoes the symbolic analysis each time.)
+// The symbolic object is read-only in umfpack_di_numeric, so solvers of
+// matrices with one pattern (the effective matrices of every step size,
+// the tangent of the hybrid update) share one analysis (reuse_analysis).
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 
 #include <suitesparse/umfpack.h>
 
+#include <algorithm>
+#include <memory>
 #include <vector>
 
 namespace poundfe
@@ -31,9 +36,28 @@ namespace poundfe
         column_start.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + n + 1);
         row.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
         value.assign(matrix.valuePtr(), matrix.valuePtr() + matrix.nonZeros());
-        if (umfpack_di_symbolic(n, n, column_start.data(), row.data(), value.data(), &symbolic,
+        void *analysis = nullptr;
+        if (umfpack_di_symbolic(n, n, column_start.data(), row.data(), value.data(), &analysis,
                                 control, nullptr) != UMFPACK_OK)
           throw NumericalError("UMFPACK: the symbolic analysis of the effective matrix failed");
+        symbolic.reset(analysis, [](void *p) { umfpack_di_free_symbolic(&p); });
+      }
+      bool
+      reuse_analysis(const LinearSolver &analysed, const SparseMatrix &matrix) override
+      {
+        const auto *other = dynamic_cast<const UmfpackSolver *>(&analysed);
+        if (!other || !other->symbolic ||
+            other->column_start.size() != static_cast<std::size_t>(matrix.cols()) + 1 ||
+            other->row.size() != static_cast<std::size_t>(matrix.nonZeros()) ||
+            !std::equal(other->column_start.begin(), other->column_start.end(),
+                        matrix.outerIndexPtr()) ||
+            !std::equal(other->row.begin(), other->row.end(), matrix.innerIndexPtr()))
+          return false;
+        release();
+        column_start = other->column_start;
+        row          = other->row;
+        symbolic     = other->symbolic;
+        return true;
       }
       void
       factorize(const SparseMatrix &matrix) override
@@ -42,7 +66,7 @@ namespace poundfe
         if (numeric)
           umfpack_di_free_numeric(&numeric);
         const int status = umfpack_di_numeric(column_start.data(), row.data(), value.data(),
-                                              symbolic, &numeric, control, nullptr);
+                                              symbolic.get(), &numeric, control, nullptr);
         if (status != UMFPACK_OK)
           throw NumericalError(status == UMFPACK_WARNING_singular_matrix ?
                                  "UMFPACK: the effective matrix is singular" :
@@ -67,15 +91,14 @@ namespace poundfe
       {
         if (numeric)
           umfpack_di_free_numeric(&numeric);
-        if (symbolic)
-          umfpack_di_free_symbolic(&symbolic);
-        numeric = symbolic = nullptr;
+        numeric = nullptr;
+        symbolic.reset();
       }
 
       double           control[UMFPACK_CONTROL];
       std::vector<int> column_start, row;
       std::vector<double> value; // the factorised values (iterative refinement uses them)
-      void            *symbolic = nullptr;
+      std::shared_ptr<void> symbolic; // shared by the solvers of one pattern
       void            *numeric  = nullptr;
     };
   } // namespace

@@ -9,6 +9,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -87,6 +88,13 @@ namespace poundfe
     /// p at the end of a step of this size; the sub-steps of a cut step
     /// use their own level's, so it stays valid across them.
     Vector load_end;
+    /// The frozen tangent K_0 = K_eff + sum_e B_e D_0,e B_e^T of every
+    /// method but newton: D_0 (laid out as tangent_change), whether it is
+    /// set, whether the assembled K_0 is the factorisation held (the
+    /// Woodbury path needs none), and that factorisation's wall time (auto).
+    std::vector<double> frozen_d;
+    bool                frozen_set = false, frozen_factorised = false;
+    double              factorization_seconds = 0;
   };
 
   NewmarkIntegrator::NewmarkIntegrator(const LinearSystem &system,
@@ -98,6 +106,8 @@ namespace poundfe
     , parameters(parameters)
     , elements(elements)
     , n_elements(elements ? elements->size() : 0)
+    , krylov(std::max(parameters.newton.subspace_dimension, 1u))
+    , bfgs(std::max(parameters.newton.subspace_dimension, 1u))
   {
     dof_start.assign(1, 0);
     d_start.assign(1, 0);
@@ -141,7 +151,6 @@ namespace poundfe
     for (Vector *x : {&local_u, &local_v, &correction})
       x->setZero(dof_start.back());
     tangent_change.assign(d_start.back(), 0.0);
-    frozen_tangent_change.assign(d_start.back(), 0.0);
     for (auto *x : {&work, &supplied_work, &committed_force, &committed_history, &committed_rate})
       x->assign(n_elements, 0.0);
     level(0);
@@ -195,7 +204,11 @@ namespace poundfe
       }
     L->effective.makeCompressed();
     L->solver = create_linear_solver(solver_name);
-    L->solver->analyze_and_factorize(L->effective);
+    // every step size has K_eff's pattern: one symbolic analysis where the
+    // backend can share it (UMFPACK)
+    stats.shared_analyses +=
+      L->solver->analyze_or_reuse(cuts > 0 ? levels[0]->solver.get() : nullptr, L->effective);
+    L->solver->factorize(L->effective);
     if (n_elements > 0 && (use_woodbury || use_hybrid))
       {
         // B: the columns of every B_e on the element's equations
@@ -225,7 +238,8 @@ namespace poundfe
         if (use_hybrid) // the tangent gets its own factorisation; K_eff's stays
           {
             L->tangent_solver = create_linear_solver(solver_name);
-            L->tangent_solver->analyze(L->effective);
+            stats.shared_analyses +=
+              L->tangent_solver->analyze_or_reuse(L->solver.get(), L->effective);
           }
         L->base_values.assign(L->effective.valuePtr(),
                               L->effective.valuePtr() + L->effective.nonZeros());
@@ -460,24 +474,18 @@ namespace poundfe
   }
 
   bool
-  NewmarkIntegrator::newton_increment(Level &L, const unsigned int it, bool &tangent_factorised)
+  NewmarkIntegrator::newton_increment(Level &L, const unsigned int it)
   {
-    // Modified Newton: the step's first tangent for all its iterations.
-    const bool modified = parameters.newton.modified_newton;
-    if (modified && it == 0)
-      frozen_tangent_change = tangent_change;
-    const std::vector<double> &d = modified ? frozen_tangent_change : tangent_change;
     bool solved = false;
     if (use_woodbury || use_hybrid)
       {
-        solved = L.woodbury.solve(residual, d, increment);
+        solved = L.woodbury.solve(residual, tangent_change, increment);
         stats.woodbury_solves += solved;
       }
     if (!solved)
       try
         {
-          solve_with_assembled_tangent(L, d, modified && tangent_factorised);
-          tangent_factorised = true;
+          solve_with_assembled_tangent(L, tangent_change, false, residual, increment);
         }
       catch (const NumericalError &e) // a singular tangent at this iterate: cut the step
         {
@@ -486,6 +494,119 @@ namespace poundfe
           return false;
         }
     return true;
+  }
+
+  NonlinearSolver
+  NewmarkIntegrator::active_method() const
+  {
+    const NonlinearSolver method = parameters.newton.nonlinear_solver;
+    if (full_newton_now || (method == NonlinearSolver::automatic && use_woodbury))
+      return NonlinearSolver::newton;
+    return method;
+  }
+
+  bool
+  NewmarkIntegrator::reform_pays(const Level &L, const double norm, const double previous_norm,
+                                 const double target) const
+  {
+    const double contraction = norm / std::max(previous_norm, 1e-300);
+    if (!(contraction < 1)) // not contracting: only a new tangent can help
+      return true;
+    if (norm <= target)
+      return false;
+    // iterations still needed at this rate, against a factorisation and
+    // the two iterations full Newton would take from here
+    const double remaining = std::log(target / norm) / std::log(contraction);
+    return remaining * iteration_seconds > L.factorization_seconds + 2 * iteration_seconds;
+  }
+
+  void
+  NewmarkIntegrator::solve_frozen(Level &L, const Vector &b, Vector &x)
+  {
+    if ((use_woodbury || use_hybrid) && L.woodbury.solve(b, L.frozen_d, x))
+      {
+        ++stats.woodbury_solves;
+        return;
+      }
+    const bool reuse   = L.frozen_factorised;
+    const auto started = std::chrono::steady_clock::now();
+    solve_with_assembled_tangent(L, L.frozen_d, reuse, b, x);
+    L.frozen_factorised = true;
+    if (!reuse)
+      L.factorization_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  }
+
+  bool
+  NewmarkIntegrator::quasi_newton_increment(Level &L, const unsigned int it, const double norm,
+                                            const double previous_norm, const double target)
+  {
+    const NewtonParameters &newton = parameters.newton;
+    const NonlinearSolver   method = active_method();
+    bool reform = !L.frozen_set || (it == 0 && !newton.keep_tangent);
+    if (!reform && it > 0)
+      reform = method == NonlinearSolver::automatic ?
+                 reform_pays(L, norm, previous_norm, target) :
+                 norm > newton.refactorization_ratio * previous_norm;
+    if (reform) // K_0 from the tangent at this iterate: a Newton iteration
+      {
+        L.frozen_d          = tangent_change;
+        L.frozen_set        = true;
+        L.frozen_factorised = false;
+      }
+    if (reform || it == 0)
+      {
+        krylov.reset();
+        bfgs.reset();
+      }
+    const unsigned long factorizations = stats.refactorizations;
+    try
+      {
+        const InverseOperator h0 = [this, &L](const Vector &b, Vector &x) { solve_frozen(L, b, x); };
+        if (method == NonlinearSolver::modified_newton)
+          solve_frozen(L, residual, increment);
+        else if (method == NonlinearSolver::bfgs)
+          bfgs.direction(residual, h0, increment);
+        else // krylov-newton, auto
+          krylov.direction(residual, h0, increment);
+      }
+    catch (const NumericalError &e) // a singular K_0: cut the step
+      {
+        L.holds_tangent = true;
+        L.frozen_set = L.frozen_factorised = false;
+        failure = "Newton iteration " + std::to_string(it) + ": " + e.what();
+        return false;
+      }
+    // auto's cost of an iteration on K_0: evaluation and residual since the
+    // last increment, and this solve
+    const auto end = std::chrono::steady_clock::now();
+    if (it > 0 && stats.refactorizations == factorizations)
+      iteration_seconds = std::chrono::duration<double>(end - last_increment_end).count();
+    last_increment_end = end;
+    return true;
+  }
+
+  void
+  NewmarkIntegrator::search_line(Level &L, const unsigned int it)
+  {
+    const Vector start = u_next;
+    const double g0    = increment.dot(residual);
+    // G(s) = d . R(u + s d), NaN when the elements refuse the state
+    const auto g = [&](const double s) {
+      u_next = start + s * increment;
+      update_kinematics(L);
+      double norm = 0;
+      if (!evaluate_elements(u_next, v_next, L) || !newton_residual(L, it, norm))
+        return std::numeric_limits<double>::quiet_NaN();
+      return increment.dot(residual);
+    };
+    const double s = line_search(g0, g(1.0), g, parameters.newton.line_search_parameters);
+    u_next         = start;
+    if (s != 1.0)
+      {
+        increment *= s;
+        ++stats.line_searches;
+      }
   }
 
   bool
@@ -505,8 +626,8 @@ namespace poundfe
     u_next = u;
     if (!friction_elements.empty())
       u_next.noalias() += L.dt * v;
-    double first_residual = 0, first_energy = 0;
-    bool   tangent_factorised = false; // this step's, for modified Newton
+    double first_residual = 0, first_energy = 0, previous_norm = 0;
+    const NonlinearSolver method = active_method();
     for (unsigned int it = 0;; ++it)
       {
         update_kinematics(L);
@@ -549,17 +670,27 @@ namespace poundfe
                       "; the largest residual is at " + equation_text(worst, equation_names);
             return false;
           }
-        if (!newton_increment(L, it, tangent_factorised))
+        if (method == NonlinearSolver::newton ?
+              !newton_increment(L, it) :
+              !quasi_newton_increment(L, it, norm, previous_norm,
+                                      newton.residual_tolerance * first_residual))
           return false;
         if (it == 0)
           first_energy = std::abs(increment.dot(residual));
+        if (newton.line_search)
+          search_line(L, it);
+        if (method == NonlinearSolver::krylov_newton || method == NonlinearSolver::automatic)
+          krylov.record_step(increment);
+        if (method == NonlinearSolver::bfgs)
+          bfgs.record_step(increment);
         u_next += increment;
+        previous_norm = norm;
       }
   }
 
   void
   NewmarkIntegrator::solve_with_assembled_tangent(Level &L, const std::vector<double> &d,
-                                                  const bool reuse)
+                                                  const bool reuse, const Vector &b, Vector &x)
   {
     LinearSolver &solver = use_hybrid ? *L.tangent_solver : *L.solver;
     if (!reuse)
@@ -574,10 +705,11 @@ namespace poundfe
                   values[index] += tangent_change_entry(d, h, i, j);
           }
         L.holds_tangent = true;
+        L.frozen_factorised = false; // the factorisation held is this one
         solver.factorize(L.effective);
         ++stats.refactorizations;
       }
-    solver.solve(residual, increment);
+    solver.solve(b, x);
   }
 
   void
@@ -691,7 +823,19 @@ namespace poundfe
     load(t1, p);
     for (unsigned int h = 0; h < n_elements; ++h)
       (*elements)[h].set_trial_time(t1);
-    const bool converged = try_step(L, p);
+    bool converged = try_step(L, p);
+    if (!converged && active_method() != NonlinearSolver::newton)
+      {
+        // the cheaper iteration failed: full Newton on the same step before
+        // it is cut, and a fresh K_0 afterwards
+        for (unsigned int h = 0; h < n_elements; ++h)
+          (*elements)[h].revert();
+        ++stats.full_newton_retries;
+        full_newton_now = true;
+        converged       = try_step(L, p);
+        full_newton_now = false;
+        L.frozen_set    = false;
+      }
     bool       event     = false;
     if (converged && cuts < parameters.newton.event_refinement)
       for (const unsigned int h : event_elements)

@@ -77,11 +77,39 @@ namespace poundfe
                       "The most columns of A^-1 B the Woodbury update keeps (a dense "
                       "equations x columns block, 8 bytes each): the limit of auto and "
                       "hybrid. Unit: count.", Patterns::Integer(1, 100000));
-    prm.add_parameter("Modified Newton", newmark.newton.modified_newton,
-                      "Form and factorise the tangent at the first iteration of a step and "
-                      "reuse it for the step's other iterations: no refactorisation after "
-                      "the first, but linear instead of quadratic convergence (raise "
-                      "Newton maximum iterations). Unit: -.");
+    add_choice(prm, "Nonlinear solver", newmark.newton.nonlinear_solver,
+               "How a Newton iteration finds its correction (theory §3.4b): newton forms "
+               "and factorises the tangent at every iterate (quadratic convergence); "
+               "modified-newton reuses one factorised tangent K_0; krylov-newton "
+               "accelerates the modified-Newton correction in the subspace of the step's "
+               "last corrections (Carlson and Miller 1998, OpenSees's KrylovNewton); bfgs "
+               "updates the inverse of K_0 by BFGS (Matthies and Strang 1979); auto is "
+               "newton when no sparse factorisation is needed (Woodbury), else "
+               "krylov-newton re-forming K_0 when the measured cost of continuing exceeds "
+               "that of a factorisation. Every method but newton redoes a step it fails by "
+               "full Newton before the step is cut. Unit: -.",
+               nonlinear_solver_names());
+    prm.add_parameter("Keep tangent across steps", newmark.newton.keep_tangent,
+                      "Every Nonlinear solver but newton: keep the factorised tangent K_0 "
+                      "from step to step (false: form it at each step's first iteration). "
+                      "Unit: -.");
+    prm.add_parameter("Refactorisation ratio", newmark.newton.refactorization_ratio,
+                      "modified-newton, krylov-newton and bfgs: re-form and refactorise K_0 at "
+                      "the current iterate when an iteration reduces the residual norm by less "
+                      "than this factor (>= 1: only when the residual grows). Unit: "
+                      "dimensionless.");
+    prm.add_parameter("Subspace dimension", newmark.newton.subspace_dimension,
+                      "krylov-newton: the most earlier corrections spanning the subspace; "
+                      "bfgs: the most update pairs kept. Unit: count.",
+                      Patterns::Integer(1, 100));
+    prm.add_parameter("Line search", newmark.newton.line_search,
+                      "Scale each correction d by the secant line search on the work "
+                      "G(s) = d . R(u + s d), until |G(s)| <= Line search tolerance |G(0)| "
+                      "(s in [0.1, 10], at most 10 evaluations; Crisfield 1991 §9.3). "
+                      "Unit: -.");
+    prm.add_parameter("Line search tolerance", newmark.newton.line_search_parameters.tolerance,
+                      "eta of Line search. Unit: dimensionless.",
+                      Patterns::Double(0.01, 0.99));
     add_choice(prm, "Hysteresis integration", hysteresis_integration,
                "Bouc-Wen z over a step: trapezoidal (second order) or "
                "backward-euler (first order, most robust). Unit: -.",
@@ -140,5 +168,6 @@ namespace poundfe
     input.positive("Time integration/Newton residual tolerance", newmark.newton.residual_tolerance);
     input.positive("Time integration/Newton energy tolerance", newmark.newton.energy_tolerance);
     input.positive("Time integration/Law tolerance", law_tolerance);
+    input.positive("Time integration/Refactorisation ratio", newmark.newton.refactorization_ratio);
   }
 } // namespace poundfe

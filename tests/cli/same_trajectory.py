@@ -6,8 +6,12 @@ non-numeric field, and in every numeric column
 over the column (the column's own scale: a value that passes through zero
 is compared at the size of the response, not at its rounding noise).
 The energy balance error column is rounding noise itself and is skipped.
+With --common-scale every column is compared at the largest value of the
+whole file (energy.csv: the terms of one balance, where a term that is
+round-off of the others, the dissipation of an elastic gap, has no scale
+of its own).
 
-  same_trajectory.py TOLERANCE REFERENCE.csv CANDIDATE.csv
+  same_trajectory.py [--common-scale] TOLERANCE REFERENCE.csv CANDIDATE.csv
 Exit status 0 when they agree, 1 (with the worst column) when not.
 """
 import csv
@@ -24,7 +28,11 @@ def number(text):
 
 
 def main():
-    tolerance, reference, candidate = float(sys.argv[1]), sys.argv[2], sys.argv[3]
+    arguments = sys.argv[1:]
+    common = arguments[0] == "--common-scale"
+    if common:
+        arguments = arguments[1:]
+    tolerance, reference, candidate = float(arguments[0]), arguments[1], arguments[2]
     with open(reference) as f:
         a = list(csv.reader(f))
     with open(candidate) as f:
@@ -47,6 +55,8 @@ def main():
                 continue
             scale[c] = max(scale[c], abs(u))
             error[c] = max(error[c], abs(u - v))
+    if common:
+        scale = [max(scale)] * len(header)
     worst, name = 0.0, ""
     for c, column in enumerate(header):
         if column in SKIPPED or scale[c] == 0:

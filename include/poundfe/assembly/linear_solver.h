@@ -24,6 +24,16 @@ namespace poundfe
     virtual void factorize(const SparseMatrix &matrix) = 0;
     /// x = A^{-1} b with the last factorisation.
     virtual void solve(const Vector &b, Vector &x) = 0;
+    /// Take over the symbolic analysis of `analysed` (a solver of the same
+    /// backend that analysed a matrix of the pattern of `matrix`: the
+    /// effective matrix of another step size, or the tangent on K_eff's
+    /// pattern) instead of analyze(matrix). False when this backend cannot
+    /// share one or the patterns differ: then analyze().
+    virtual bool
+    reuse_analysis(const LinearSolver & /*analysed*/, const SparseMatrix & /*matrix*/)
+    {
+      return false;
+    }
     virtual std::string name() const = 0;
 
     void
@@ -31,6 +41,17 @@ namespace poundfe
     {
       analyze(matrix);
       factorize(matrix);
+    }
+
+    /// analyze(matrix) unless `analysed` (may be null) has done it already
+    /// on the same pattern; true when the analysis was reused.
+    bool
+    analyze_or_reuse(const LinearSolver *analysed, const SparseMatrix &matrix)
+    {
+      if (analysed && reuse_analysis(*analysed, matrix))
+        return true;
+      analyze(matrix);
+      return false;
     }
   };
 

@@ -25,8 +25,10 @@
 #include <poundfe/base/choices.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/integration/impact_log.h>
+#include <poundfe/integration/newton_acceleration.h>
 #include <poundfe/integration/stick_slip_log.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -55,9 +57,18 @@ namespace poundfe
     /// The most columns of A^-1 B the Woodbury update keeps (n x this,
     /// dense): the limit of `automatic` and `hybrid`.
     unsigned int woodbury_columns   = 100;
-    /// Factorise the tangent at a step's first iteration only and reuse it
-    /// for the step's other iterations (modified Newton).
-    bool         modified_newton    = false;
+    /// How each iteration's correction is found (newton_acceleration.h).
+    NonlinearSolver nonlinear_solver = NonlinearSolver::newton;
+    /// Every method but newton: the factorised tangent K_0 is kept from
+    /// step to step (false: formed at each step's first iteration).
+    bool         keep_tangent       = true;
+    /// ... and re-formed at the current iterate when an iteration reduces
+    /// the residual norm by less than this factor (auto: by measured cost).
+    double       refactorization_ratio = 0.5;
+    /// krylov-newton: subspace dimension; bfgs: pairs kept.
+    unsigned int subspace_dimension = 10;
+    bool                 line_search = false;
+    LineSearchParameters line_search_parameters;
     /// A step in which a gap opens or closes is redone as 2^r sub-steps
     /// around the event.
     unsigned int event_refinement   = 4;
@@ -107,6 +118,9 @@ namespace poundfe
     unsigned long contact_refinements = 0; // steps halved to resolve a contact in time
     unsigned long woodbury_solves  = 0; // Newton iterations solved by the Woodbury update
     unsigned long refactorizations = 0; // numeric factorisations of the tangent
+    unsigned long full_newton_retries = 0; // steps redone by full Newton after a cheaper method failed
+    unsigned long line_searches = 0;    // iterations whose step the line search shortened or stretched
+    unsigned long shared_analyses = 0;  // symbolic analyses taken over from another step size's solver
     double        smallest_time_step = 0;
   };
 
@@ -201,7 +215,7 @@ namespace poundfe
     void   update_kinematics(const Level &L);
     bool   solve_linear_step(const Level &L);
     bool   newton_residual(Level &L, unsigned int it, double &norm);
-    bool   newton_increment(Level &L, unsigned int it, bool &tangent_factorised);
+    bool   newton_increment(Level &L, unsigned int it);
     void   accept(const Level &L, const Vector &load_next);
     void   advance_from(unsigned int cuts, double t0, const LoadFunction &load);
     /// Whether a step of L.dt from the committed state would not resolve a
@@ -224,7 +238,23 @@ namespace poundfe
                                 unsigned int j) const;
     /// Solve the Newton correction with the assembled tangent D = `d`:
     /// add it into K_eff and factorise (unless `reuse`), then solve.
-    void   solve_with_assembled_tangent(Level &L, const std::vector<double> &d, bool reuse);
+    void   solve_with_assembled_tangent(Level &L, const std::vector<double> &d, bool reuse,
+                                        const Vector &b, Vector &x);
+    /// The method of this iteration: newton for auto when no sparse
+    /// refactorisation is ever needed (Woodbury), and in a retry.
+    NonlinearSolver active_method() const;
+    /// The increment on the level's frozen tangent K_0 (every method but
+    /// newton), re-formed when the iteration that led to ||R_it|| = `norm`
+    /// contracted too little; `target` is the converged residual norm.
+    bool   quasi_newton_increment(Level &L, unsigned int it, double norm, double previous_norm,
+                                  double target);
+    /// Whether auto should re-form K_0: continuing at the contraction
+    /// norm / previous_norm to `target` costs more than a factorisation.
+    bool   reform_pays(const Level &L, double norm, double previous_norm, double target) const;
+    /// x = K_0^{-1} b (Woodbury, or the assembled K_0 factorised once).
+    void   solve_frozen(Level &L, const Vector &b, Vector &x);
+    /// Scale the increment by the secant line search (Crisfield §9.3).
+    void   search_line(Level &L, unsigned int it);
 
     const LinearSystem &system;
     std::string         solver_name;
@@ -248,7 +278,14 @@ namespace poundfe
     // Local vectors of every element: displacement, velocity, force correction.
     Vector local_u, local_v, correction;
     std::vector<double> tangent_change;
-    std::vector<double> frozen_tangent_change; // modified Newton: the step's first
+    // The quasi-Newton corrections on the frozen tangent of a level.
+    KrylovAcceleration krylov;
+    BfgsUpdate         bfgs;
+    /// advance_from's retry of a failed step with full Newton.
+    bool full_newton_now = false;
+    /// auto: wall time of the last iteration without a factorisation (s).
+    double iteration_seconds = 0;
+    std::chrono::steady_clock::time_point last_increment_end;
     // Per element: accumulated work; for the impact log, the committed
     // force, history variable and rate.
     std::vector<double> work, supplied_work, committed_force, committed_history, committed_rate;
