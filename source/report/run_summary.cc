@@ -388,7 +388,7 @@ namespace poundfe
       .value("woodbury_solves", static_cast<unsigned long>(stats.woodbury_solves))
       .value("refactorizations", static_cast<unsigned long>(stats.refactorizations))
       .value("nonlinear_solver", nonlinear_solver_names().name(
-                                   input.time_integration.newmark.newton.nonlinear_solver))
+                                   parameters.time_history.time_integration.newmark.newton.nonlinear_solver))
       .value("full_newton_retries", static_cast<unsigned long>(stats.full_newton_retries))
       .value("line_searches", static_cast<unsigned long>(stats.line_searches))
       .value("smallest_time_step_s", stats.smallest_time_step)
