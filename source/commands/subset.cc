@@ -11,6 +11,7 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
+#include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/subset.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -21,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace poundfe::commands
@@ -74,6 +76,13 @@ namespace poundfe::commands
         }
       else if (ss.response == SubsetResponse::peak_roof_displacement)
         columns = {runner.roof_displacement_column(ss.building)}, unit = " m";
+      else if (ss.response == SubsetResponse::limit_state)
+        {
+          if (!input.random_parameters.has_limit_states())
+            throw InputError(input.file, input.line_of("Subset simulation/Response"),
+                             "Subset simulation/Response",
+                             "limit state needs Random parameters/Limit states");
+        }
       else
         {
           if (!runner.has_gaps())
@@ -122,6 +131,7 @@ namespace poundfe::commands
     {
       std::string   response_name;
       unsigned int  n_variables = 0;
+      unsigned int  n_parameters = 0; // of them, random model parameters
       unsigned long failed_runs = 0;
       unsigned int  n_ranks     = 1;
       double        wall_time   = 0; // s
@@ -141,6 +151,8 @@ namespace poundfe::commands
         .value("samples_per_level", ss.samples_per_level)
         .value("conditional_probability", ss.conditional_probability)
         .value("random_variables", run.n_variables);
+      if (run.n_parameters > 0)
+        json.value("random_model_parameters", run.n_parameters);
       if (!result.interrupted) // otherwise there is no estimate at the threshold
         json.value("failure_probability", result.probability)
           .value("coefficient_of_variation", result.coefficient_of_variation);
@@ -171,11 +183,17 @@ namespace poundfe::commands
             << " levels (no estimate at the threshold; subset_levels.csv has the levels), "
             << result.model_runs << " model runs";
       else
-        out << "Subset Simulation: P(" << run.response_name << " > " << input.subset.threshold
-            << unit << ") = " << result.probability << " (CoV "
-            << result.coefficient_of_variation << "), " << result.levels.size() << " levels, "
-            << result.model_runs << " model runs"
-            << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
+        {
+          out << "Subset Simulation: P(";
+          if (input.subset.response == SubsetResponse::limit_state)
+            out << "g <= 0";
+          else
+            out << run.response_name << " > " << input.subset.threshold << unit;
+          out << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
+              << "), " << result.levels.size() << " levels, " << result.model_runs
+              << " model runs"
+              << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
+        }
       out << "\nresults in " << directory << "/ (summary.json, subset_levels.csv"
           << (input.output.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
     }
@@ -196,26 +214,36 @@ namespace poundfe::commands
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
     RealizationRunner runner(analysis);
+    attach_random_parameters(runner, input.random_parameters, input, input.modal.eigensolver);
     std::string       unit;
     const std::vector<unsigned int> columns = response_columns(input, runner, unit);
+    // Response = limit state: Y = -g of the system, failure Y > 0
+    const bool limit_state = ss.response == SubsetResponse::limit_state;
+    const std::unique_ptr<const ResponseLimitStates> limit_states =
+      limit_state ? std::make_unique<const ResponseLimitStates>(
+                      input.random_parameters, runner.response_names(), input) :
+                    nullptr;
+    const double threshold = limit_state ? 0.0 : ss.threshold;
     if (rank == 0)
       prepare_output_directory(directory);
     timer.leave_subsection();
 
     timer.enter_subsection("levels");
-    SubsetRun           facts{subset_response_names().name(ss.response), runner.n_variables(), 0,
-                    dealii::Utilities::MPI::n_mpi_processes(comm), 0};
+    SubsetRun           facts{subset_response_names().name(ss.response), runner.n_variables(),
+                    runner.n_parameters(), 0, dealii::Utilities::MPI::n_mpi_processes(comm), 0};
     std::vector<double> responses;
     const auto          response = [&](const std::vector<double> &xi) {
       if (!runner.run(xi, responses))
         ++facts.failed_runs;
+      if (limit_state)
+        return -limit_states->system_value(responses);
       double y = 0;
       for (const unsigned int c : columns)
         y = std::max(y, responses[c]);
       return y;
     };
     const auto         start  = std::chrono::steady_clock::now();
-    const SubsetResult result = subset_simulation(response, runner.n_variables(), ss.threshold,
+    const SubsetResult result = subset_simulation(response, runner.n_variables(), threshold,
                                                   settings_of(ss, runner), comm);
     facts.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -229,7 +257,8 @@ namespace poundfe::commands
     write_levels(directory, result);
     write_summary(directory, input, facts, result);
     if (input.output.plots && !result.interrupted) // stop soon
-      draw_plots(directory, {subset_plot(result, ss.threshold, facts.response_name + unit)});
+      draw_plots(directory, {subset_plot(result, threshold, limit_state ? "-g (system)" :
+                                                                   facts.response_name + unit)});
     timer.leave_subsection();
 
     report(pcout, input, directory, facts, unit, result);
