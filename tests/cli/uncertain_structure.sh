@@ -87,3 +87,34 @@ set -e
   grep -q "peak_force" "$work/unknown-response.err" && [ ! -e "$work/unknown-response" ] ||
   fail "unknown response: exit $status, $(cat "$work/unknown-response.err")"
 echo "ok   bad input unknown-response: $(cat "$work/unknown-response.err")"
+
+# fragility with modelling uncertainty: the split of each curve's dispersion.
+# A random separation of buildings that never reach each other (1 m) changes
+# no response: the run with it and the nominal model's run (the same loading
+# normals) give the same curves, so beta_total = beta_record_to_record
+# exactly and beta_modelling = 0.
+frag() { # name, Variables line
+  awk -v v="$2" '/set Variables =/ { print "  set Variables = " v; skip = 1; next }
+       skip && /\\$/ { next } skip { skip = 0; next } { print }' "$input" |
+    sed -e '/set Correlation =/d' -e '/set Limit states =/,/peak_contact_force/d' \
+        -e 's/set Separations         = 0.01/set Separations         = 1/' \
+        -e 's/set Realizations = 40/set Drift limits = 0.0015/' > "$work/$1.prm"
+  cat >> "$work/$1.prm" << 'PRM'
+subsection Fragility
+  set PGA levels             = 0.25, 0.35, 0.45, 0.55
+  set Realizations per level = 10
+end
+PRM
+  "$poundfe" fragility "$work/$1.prm" --output "$work/$1" > "$work/$1.log"
+}
+frag null-parameter 'sep: Model/Separations[1] ~ lognormal mean 1 cov 0.1'
+python3 - "$work/null-parameter/summary.json" << 'PY' || fail "fragility: a parameter that changes nothing has a modelling dispersion"
+import json, sys
+d = json.load(open(sys.argv[1]))["dispersion"]
+drift = [x for x in d if x["name"].startswith("drift")][0]
+assert drift["beta_total"] == drift["beta_record_to_record"] and drift["beta_modelling"] == 0, drift
+PY
+[ -s "$work/null-parameter/record-to-record/pga_0.45g/realizations.csv" ] || fail "fragility: no record-to-record realizations"
+frag stiffness 'k1: Building 1/Storey stiffnesses ~ lognormal mean 4e6 cov 0.3; zeta: Building 1/Damping/Damping ratio ~ uniform lower 0.01 upper 0.05'
+grep -q "record-to-record +" "$work/stiffness.log" || fail "fragility: no dispersion split printed"
+echo "ok   fragility with random parameters: the dispersion split (a null parameter gives beta_modelling = 0): $(grep 'record-to-record +' "$work/stiffness.log" | head -1)"
