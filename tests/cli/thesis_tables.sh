@@ -27,6 +27,32 @@ cp "$inputs/memvele-events.csv" "$work/"
 "$poundfe" run "$inputs/table-3.1.prm" --output "$work/t31" > /dev/null
 python3 "$here/thesis_tables.py" check "$work/t22" "$work/t22u" "$work/t23" "$work/t31"
 
+# The intensity-frequency relation: the line log10 N_c = a - b I through the
+# thesis's two ISC points (100 years, I = 2.5; 250 years, 4.0), b =
+# log10(2.5)/1.5 and a = -2 + 2.5 b by hand, gives them back (1e-12) and,
+# with the OBE at the service life's period (100/ln 2 years, by hand), its
+# intensity (a + log10 T)/b there; nothing typed in.
+b=$(python3 -c 'import math; print(repr(math.log10(2.5) / 1.5))')
+a=$(python3 -c "print(repr(-2 + 2.5 * $b))")
+sed -e '/set Intensities/d' -e '/set OBE return period/d' \
+    -e "s/^\(    set Gravity .*\)/\1\n    set Relation a = $a\n    set Relation b = $b/" \
+    "$inputs/table-2.3.prm" > "$work/relation.prm"
+"$poundfe" site-hazard "$work/relation.prm" --output "$work/relation" > /dev/null
+python3 - "$work/relation/summary.json" "$a" "$b" <<'PY' || fail "intensity-frequency relation"
+import json, math, sys
+study = json.load(open(sys.argv[1]))["site_study"]
+a, b = float(sys.argv[2]), float(sys.argv[3])
+obe = 100 / math.log(2)
+want = {100: 2.5, 250: 4.0, obe: (a + math.log10(obe)) / b}
+rows = {r["return_period_years"]: r for r in study["rows"]}
+assert all(r["method"] == "N_c" for r in rows.values()), rows
+assert len(rows) == 3, rows
+for T, I in want.items():
+    got = [r for t, r in rows.items() if abs(t - T) <= 1e-9 * T]
+    assert len(got) == 1 and abs(got[0]["intensity"] - I) <= 1e-12, (T, got, I)
+assert abs(study["design_earthquakes"]["obe_return_period_years"] - obe) <= 1e-9
+PY
+
 # bad input: an intensity outside its scale, an unknown scale, no OBE entry
 bad() { # $1: name, $2: sed expression on table-2.3.prm, $3: text the message must hold
   sed "$2" "$inputs/table-2.3.prm" > "$work/$1.prm"
