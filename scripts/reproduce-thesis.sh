@@ -35,6 +35,7 @@ sed 's/^\( *set Intensity decimals *=\).*/\1 -1/' "$inputs/table-2.2.prm" > "$ou
 cp "$inputs/memvele-events.csv" "$out/"
 run site-hazard table-2.2-unrounded "$out/table-2.2-unrounded.prm"
 run site-hazard table-2.3
+run site-hazard table-2.3-catalogue
 run run table-3.1
 
 # Figures
