@@ -34,6 +34,11 @@ def catalogue_intensities():
                      f"{r['return_period_years']:.0f} years" for r in rows)
 
 
+def peaks_per_value(name, scale=1.0, digits=3):
+    values = summary(name)["values"]
+    return ", ".join(f"{v['value'] * scale:.{digits}g}: {v['n_peaks']}" for v in values)
+
+
 def period_counts(name):
     s = summary(name)
     counts = {}
@@ -107,7 +112,9 @@ print(f"""## Figures
 | Fig. 3.1 (a–c), §3.2: SD oscillator with dry friction, phase portraits for μ = 0, 0.1, 0.3 (c = 0.048, α = 0.4, g1 = 2, f0 = 0.85, Ω = 1/3) | ![](thesis-figures/fig-3.1a.png) ![](thesis-figures/fig-3.1b.png) ![](thesis-figures/fig-3.1c.png) | `run` of fig-3.1a/b/c.prm: the phase portrait (x, ẋ) of 20 forcing periods, stick points marked | initial state → rest; duration → 20 periods; belt → fixed (v0 = 0); normal force → eq. 2.7; Δt = 0.01 |
 | Fig. 3.2 (a, b), §3.2: bifurcation diagrams of x against f, static/kinetic friction 1.0/0.25, α = 0.4 and 0 | ![](thesis-figures/fig-3.2a.png) ![](thesis-figures/fig-3.2b.png) | `bifurcation` of fig-3.2a/b.prm, 100 values of f in 0.05–2.0: (a) {period_counts('fig-3.2a')}; (b) {period_counts('fig-3.2b')} | x0 = 1, y0 = 0 → rest (no initial conditions yet), then continuation; 50 transient and 32 sampled periods; the friction forces as a normal force 1 with μs = 1, μk = 0.25. Panels (c–e) need the Stribeck C3 term (issue 25 item 8) |
 | Fig. 3.3 (a, b), §3.2.1: stationary amplitude densities, D = 0.001, c = 0.048, f01 = 0.85, α = 0.4 and 0 | ![](thesis-figures/fig-3.3a.png) ![](thesis-figures/fig-3.3b.png) | `stationary-pdf` of fig-3.3a/b.prm: amplitude peaks at (a) {peaks('fig-3.3a')}; (b) {peaks('fig-3.3b')} | μ → 0.1; noise → nodal force of intensity S0 = D/π; amplitude with ω = 1; 4 realizations of 100 s burn-in + 600 s; α = 0 → constant normal force g1 (eq. 2.7's limit) |
+| Fig. 3.4 (a), §3.2.1: stationary densities for damping c = 0, 0.0141, 0.1 (α = 0.4, f01 = 0.85) | ![](thesis-figures/fig-3.4a.png) | `stationary-pdf` sweep of fig-3.4a.prm over c: density of x against c, peaks marked; peaks of x per c: {peaks_per_value('fig-3.4a')} | as Fig. 3.3 (a): μ = 0.1, D = 0.001 |
 | Fig. 3.5 (a), §3.3.1: spillway's stationary amplitude densities for D = 0.0001 and 0.001 | ![](thesis-figures/fig-3.5a-low.png) ![](thesis-figures/fig-3.5a-high.png) | `stationary-pdf` of fig-3.5a-low/high.prm: amplitude peaks (m) at D = 0.0001: {peaks('fig-3.5a-low')}; D = 0.001: {peaks('fig-3.5a-high')} | the Table 3.1 model plus white-noise force S0 = D/π; no friction (the smoothed α0 = μN term is not given in a usable form); 4 realizations of 3 + 30 s |
+| Fig. 3.6 (a–d), §3.3.3: spillway's stationary densities for D = 0.004 … 0.4 | ![](thesis-figures/fig-3.6.png) | `stationary-pdf` sweep of fig-3.6.prm over D: peaks of x per D: {peaks_per_value('fig-3.6', 3.141592653589793, 2)} (two peaks at intermediate noise, one at the highest) | as Fig. 3.5; the swept value S0 = D/π. Panels (e, f) (forcing amplitude p0 = 25 and 2) leave D unspecified |
 | Fig. 3.7 (c, f) and the §3.3.4 count (g1 crossed 12 times, g2 6 times in [0, 3] s) | ![](thesis-figures/table-3.1-phase.png) ![](thesis-figures/table-3.1-contact-force.png) | the Table 3.1 run: {n_impacts} impacts = {2 * n_impacts} crossings of g1 and {n_impacts} zeros of g2 (the thesis: 12 and 6) | the panels' own initial states (y0 = [3, 0]; ν = 0.5) are not reproducible yet: see below |
 | Fig. 3.9, §3.4.1: transient response of an elastic/inelastic system, hysteresis | ![](thesis-figures/fig-3.9-hysteresis.png) ![](thesis-figures/fig-3.9-phase.png) | `run` of fig-3.9.prm: Bouc-Wen hysteresis loop and phase portrait | every parameter → the Bouc-Wen single storey of input/bouc-wen-sdof.prm |
 | Fig. 3.12 (a), §2.3.2.1 and §3.4.2: two-bay two-storey frame, collapse mechanisms | (numbers, no plot) | `reliability` of fig-3.12.prm, series system of 5 mechanisms: """ +
@@ -124,7 +131,7 @@ print("""## Not yet reproducible
 | Table 3.1 to ≤ 2e-5 s of a converged reference | needs the event-driven Dormand–Prince integrator (item 3); Newmark meets the printed table (above) |
 | Table 2.1 (per-mode damping) | item 4 |
 | Fig. 3.2 (c–e), Fig. 3.4 (b) | the Stribeck friction with its C3 term (item 8) |
-| Fig. 3.4 (a, c–e), Fig. 3.6 | possible with today's commands (a sweep of `stationary-pdf` over c, α or D), not set up yet: the thesis's values of μ and of the forcing for these panels are not given |
+| Fig. 3.4 (c–e), Fig. 3.6 (e, f) | possible with today's commands (a `stationary-pdf` sweep over α, or over the forcing amplitude), not set up yet: the noise intensity and friction of these panels are not given |
 | Fig. 3.8 | the recorded peak accelerations of the spillway's foundation are not in the thesis |
 | Fig. 3.11 | the hysteretic SDOF under white noise (§2.3: ω = 7.85 rad/s, ζ = 0.02): its hysteresis parameters and noise intensity are not given |
 | Fig. 3.12 (e, f), Table 2.4 | the cantilever's spreads and loads (eq. 2.44, Table 2.4) and the CDF's model are not given (input/thesis-cantilever-reliability.prm chooses them for the cantilever) |

@@ -70,7 +70,7 @@ namespace poundfe
     for (const SiteStudyEntry &e : entries)
       {
         SiteStudyRow row{e, intensity_acceleration_gal(e.scale, e.intensity), 0};
-        row.coefficient = row.acceleration_gal / settings.gravity_gal;
+        row.coefficient = row.acceleration_gal / (100 * settings.gravity); // gal = cm/s^2
         result.rows.push_back(row);
         auto it    = largest.emplace(e.return_period, row.coefficient).first;
         it->second = std::max(it->second, row.coefficient);

@@ -56,15 +56,15 @@ namespace poundfe
                       "a of log10 N_c(I) = a - b I, N_c the annual number of site events of "
                       "ISC intensity >= I. Unit: dimensionless.");
     prm.add_parameter("Relation b", relation_b,
-                      "b of the intensity-frequency relation (0: none). Unit: per intensity "
-                      "unit.",
+                      "b of the intensity-frequency relation (0: none). Unit: dimensionless "
+                      "(per intensity unit).",
                       Patterns::Double(0));
     prm.add_parameter("From catalogue", from_catalogue,
                       "Also the ISC intensities of the Return periods from the catalogue's "
                       "Gumbel or Poisson fit (needs a Catalogue file). Unit: -.");
-    prm.add_parameter("Gravity", settings.gravity_gal,
-                      "g of the earthquake coefficient k = A/g (the thesis: 980). Unit: gal "
-                      "(cm/s^2).",
+    prm.add_parameter("Gravity", settings.gravity,
+                      "g of the earthquake coefficient k = A/g (the thesis's k = A/980 gal: "
+                      "9.80). Unit: m/s^2.",
                       Patterns::Double(0));
     prm.add_parameter("Coefficient decimals", settings.coefficient_decimals,
                       "The design k (the largest of a return period's methods) is rounded to "
@@ -131,7 +131,7 @@ namespace poundfe
       input.fail(section + "Relation a", "must be finite");
     if (!given())
       return;
-    input.positive(section + "Gravity", settings.gravity_gal);
+    input.positive(section + "Gravity", settings.gravity);
     input.positive(section + "Service life", settings.service_life);
     if (!(settings.exceedance_probability > 0 && settings.exceedance_probability < 1))
       input.fail(section + "Exceedance probability", "must lie strictly between 0 and 1");

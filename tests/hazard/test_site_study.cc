@@ -96,7 +96,7 @@ BOOST_AUTO_TEST_CASE(thesis_table_2_3)
                                             {"JMA", IntensityScale::jma, 250, 3.0},
                                             {"M.R.", IntensityScale::isc, 250, 5.0}};
   SiteStudySettings settings;
-  settings.gravity_gal       = 980; // the thesis's k = gal/980
+  settings.gravity           = 9.80; // the thesis's k = gal/980
   settings.obe_return_period = 250;
   const SiteStudyResult study = site_study(entries, settings);
   // printed to one decimal (JMA 250: to the unit, "14 gal"): half a unit

@@ -13,7 +13,7 @@
 //                         events of intensity >= I (a Gutenberg-Richter law in
 //                         intensity); the intensity of return period T solves
 //                         N_c(I) = 1/T: I_T = (a + log10 T)/b;
-//   earthquake coefficient k = A/g (the thesis: k = gal/980);
+//   earthquake coefficient k = A/g (the thesis: k = gal/980, g = 9.80 m/s^2);
 //   OBE                   50 % probability of exceedance in the service life L
 //                         (USACE ER 1110-2-1806, 1995): with Poisson
 //                         occurrences T = -L/ln(1 - p), 144.3 years for L = 100;
@@ -101,7 +101,7 @@ namespace poundfe
   /// The settings of a study (the parameters' values, without the file).
   struct SiteStudySettings
   {
-    double gravity_gal            = 980.665;
+    double gravity                = 9.80665; // m/s^2
     int    coefficient_decimals   = 2;  // < 0: no rounding
     double service_life           = 100; // years
     double exceedance_probability = 0.5;
