@@ -5,7 +5,7 @@
 # with the difference (tests/cli/thesis_tables.py, which cli/thesis-tables
 # also runs), each figure beside its regenerated plot (doc/thesis-figures/),
 # what the thesis leaves unspecified and what was chosen, and what cannot be
-# reproduced yet. About 3 minutes on one core.
+# reproduced yet. About 2–3 minutes.
 #   scripts/reproduce-thesis.sh BUILD_DIR [OUTPUT_DIR]   (OUTPUT_DIR: results/thesis)
 set -euo pipefail
 [ $# -ge 1 ] || { echo "usage: $0 BUILD_DIR [OUTPUT_DIR]" >&2; exit 1; }
