@@ -63,7 +63,8 @@ namespace poundfe
        true, false, true, false, commands::bifurcation},
       {"site-hazard", "FILE",
        "site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
-       "Poisson fit, return periods, fragility x hazard",
+       "Poisson fit, return periods, fragility x hazard; the earthquake\n"
+       "coefficient, OBE and MCE of a Site study",
        true, false, false, false, commands::site_hazard},
       {"separation", "FILE",
        "joint width of adjacent buildings: ABS, SRSS, DDC, EC8 and\n"

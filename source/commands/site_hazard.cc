@@ -9,6 +9,7 @@
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/excitation/ground_motion.h>
 #include <poundfe/hazard/catalogue.h>
+#include <poundfe/hazard/site_study.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
@@ -228,49 +229,153 @@ namespace poundfe::commands
              << " years " << failure->probability << "\n";
       out << text.str();
     }
+
+    /// hazard.csv, hazard_curve.csv, return_periods.csv and hazard.png of a
+    /// catalogue; returns the names written.
+    std::vector<std::string>
+    write_catalogue_outputs(const std::string &directory, const InputParameters &input,
+                            const SiteHazardOfCatalogue &site)
+    {
+      const SiteHazardParameters &p = input.site_hazard;
+      double top = p.minimum_intensity + 1;
+      for (const SiteEvent &s : site.events)
+        top = std::max(top, s.intensity);
+      for (const double T : p.return_periods)
+        top = std::max(top, site.hazard.intensity_for_return_period(T));
+      write_events(directory + "/hazard.csv", site.events);
+      write_curve(directory + "/hazard_curve.csv", site.hazard, p.minimum_intensity, top + 0.5);
+      write_return_periods(directory + "/return_periods.csv", p.return_periods, site.hazard);
+      std::vector<std::string> files{"hazard.csv", "hazard_curve.csv", "return_periods.csv"};
+      if (input.output.plots)
+        for (const std::string &png : draw_plots(directory, {hazard_plot(site.hazard)}))
+          files.push_back(png);
+      else
+        std::remove((directory + "/hazard.png").c_str()); // not an earlier run's
+      return files;
+    }
+
+    const char *
+    scale_name(const IntensityScale scale)
+    {
+      return scale == IntensityScale::isc ? "isc" : "jma";
+    }
+
+    void
+    write_study(const std::string &path, const SiteStudyResult &study)
+    {
+      std::string csv = "method,scale,return_period_years,intensity,acceleration_gal,"
+                        "coefficient_k\n";
+      for (const SiteStudyRow &row : study.rows)
+        {
+          csv += row.entry.method + "," + scale_name(row.entry.scale);
+          for (const double x : {row.entry.return_period, row.entry.intensity,
+                                 row.acceleration_gal, row.coefficient})
+            {
+              csv += ",";
+              append_number(csv, x);
+            }
+          csv += "\n";
+        }
+      write_file_atomically(path, csv);
+    }
+
+    void
+    write_study_summary(JsonWriter &json, const SiteStudyResult &study)
+    {
+      json.begin_object("site_study");
+      json.begin_array("rows");
+      for (const SiteStudyRow &row : study.rows)
+        json.begin_object()
+          .value("method", row.entry.method)
+          .value("scale", std::string(scale_name(row.entry.scale)))
+          .value("return_period_years", row.entry.return_period)
+          .value("intensity", row.entry.intensity)
+          .value("acceleration_gal", row.acceleration_gal)
+          .value("coefficient_k", row.coefficient)
+          .end_object();
+      json.end_array();
+      json.begin_array("design_coefficients");
+      for (const DesignCoefficient &c : study.coefficients)
+        json.begin_object()
+          .value("return_period_years", c.return_period)
+          .value("largest_k", c.coefficient)
+          .value("k", c.rounded)
+          .end_object();
+      json.end_array();
+      json.begin_object("design_earthquakes")
+        .value("service_life_return_period_years", study.design.service_life_return_period)
+        .value("obe_return_period_years", study.design.obe_return_period)
+        .value("obe_g", study.design.obe_g)
+        .value("mce_g", study.design.mce_g)
+        .end_object();
+      json.end_object();
+    }
+
+    void
+    print_study(const dealii::ConditionalOStream &out, const SiteStudyResult &study)
+    {
+      std::ostringstream text;
+      text.precision(3);
+      text << "site study (earthquake coefficient k = A/g):\n";
+      for (const SiteStudyRow &row : study.rows)
+        text << "  " << row.entry.method << " (" << scale_name(row.entry.scale) << ") T = "
+             << row.entry.return_period << " years: I = " << row.entry.intensity
+             << ", A = " << row.acceleration_gal << " gal, k = " << row.coefficient << "\n";
+      for (const DesignCoefficient &c : study.coefficients)
+        text << "  T = " << c.return_period << " years: k = " << c.rounded << " (largest "
+             << c.coefficient << ")\n";
+      text << "  OBE (T = " << study.design.obe_return_period << " years; the service life's "
+           << study.design.service_life_return_period << "): " << study.design.obe_g
+           << " g; MCE " << study.design.mce_g << " g\n";
+      out << text.str();
+    }
   } // namespace
 
   int
   site_hazard(const CommandRun &run)
   {
-    const InputParameters &input     = *run.input;
-    const std::string     &directory = run.directory;
-    const SiteHazardParameters &p = input.site_hazard;
+    const InputParameters     &input     = *run.input;
+    const std::string         &directory = run.directory;
+    const SiteHazardParameters &p        = input.site_hazard;
     p.require(input);
     // Everything read and checked before any file is written.
-    const SiteHazardOfCatalogue       site      = site_hazard_of_catalogue(p, input);
-    const std::vector<CatalogueEvent> &catalogue = site.catalogue;
-    const ObservationPeriod           &period    = site.period;
-    const std::vector<SiteEvent>      &events    = site.events;
-    const IntensityHazard             &hazard    = site.hazard;
-    const std::optional<Convolution>  &failure   = site.failure;
+    std::optional<SiteHazardOfCatalogue> site;
+    if (!p.catalogue_file.empty())
+      site = site_hazard_of_catalogue(p, input);
+    std::optional<SiteStudyResult> study;
+    if (p.study.given())
+      study = site_study(p.study.entries(input, site ? &site->hazard : nullptr),
+                         p.study.settings);
 
     create_directories(directory);
-    double top = p.minimum_intensity + 1;
-    for (const SiteEvent &s : events)
-      top = std::max(top, s.intensity);
-    for (const double T : p.return_periods)
-      top = std::max(top, hazard.intensity_for_return_period(T));
-    write_events(directory + "/hazard.csv", events);
-    write_curve(directory + "/hazard_curve.csv", hazard, p.minimum_intensity, top + 0.5);
-    write_return_periods(directory + "/return_periods.csv", p.return_periods, hazard);
-    std::vector<std::string> files{"hazard.csv", "hazard_curve.csv", "return_periods.csv"};
-    if (input.output.plots)
-      for (const std::string &png : draw_plots(directory, {hazard_plot(hazard)}))
-        files.push_back(png);
-    else
-      std::remove((directory + "/hazard.png").c_str()); // not an earlier run's
+    std::vector<std::string> files;
+    if (site)
+      files = write_catalogue_outputs(directory, input, *site);
+    if (study)
+      {
+        write_study(directory + "/site_study.csv", *study);
+        files.push_back("site_study.csv");
+      }
     files.push_back("summary.json");
     JsonWriter json;
     begin_summary(json, "site-hazard", input);
-    write_summary(json, input, period, catalogue, events, hazard);
-    if (failure)
-      write_convolution(json, input, *failure);
+    if (site)
+      {
+        write_summary(json, input, site->period, site->catalogue, site->events, site->hazard);
+        if (site->failure)
+          write_convolution(json, input, *site->failure);
+      }
+    if (study)
+      write_study_summary(json, *study);
     json.begin_object("output").value("files", files).end_object();
     json.end_object();
     write_file_atomically(directory + "/summary.json", json.str());
     const dealii::ConditionalOStream pcout(run.out, writes_outputs());
-    print_report(pcout, input, period, catalogue, events, hazard, failure);
+    if (site)
+      print_report(pcout, input, site->period, site->catalogue, site->events, site->hazard,
+                   site->failure);
+    if (study)
+      print_study(pcout, *study);
     pcout << "results in " << directory << "/ (summary.json lists the files)\n";
     return 0;
   }

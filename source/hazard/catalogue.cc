@@ -2,6 +2,7 @@
 // catalogue and fragility-summary readers, the events' site intensities,
 // their annual exceedance rates and the Gumbel or Poisson fit.
 #include <poundfe/hazard/catalogue.h>
+#include <poundfe/hazard/site_study.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/input_text.h>
 #include <poundfe/base/numbers.h>
@@ -105,7 +106,10 @@ namespace poundfe
                              "the event of " + e.date + " is " + number_text(r) +
                                " km from the site: Cornell's ln r needs r >= 1 km (give a "
                                "Focal depth)");
-          site.push_back({e, delta, cornell_intensity(e.magnitude, r)});
+          // rounded as a printed table is (Intensity decimals) before A_h
+          site.push_back({e, delta,
+                          rounded_to_decimals(cornell_intensity(e.magnitude, r),
+                                              p.intensity_decimals)});
         }
       // rate of exceeding x: the number of counted events with I >= x per year
       std::vector<double> counted;

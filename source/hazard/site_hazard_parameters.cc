@@ -61,6 +61,11 @@ namespace poundfe
                       "Years of the reported probability of failure, 1 - exp(-years lambda_F). "
                       "Unit: years.",
                       Patterns::Double(0));
+    prm.add_parameter("Intensity decimals", intensity_decimals,
+                      "Each event's site intensity is rounded to this many decimals before "
+                      "its acceleration and the fit (-1: not rounded; the thesis's Table 2.2 "
+                      "rounds to 1 for some rows). Unit: count.",
+                      Patterns::Integer(-1, 6));
     prm.enter_subsection("Fragility");
     prm.add_parameter("Median PGA", fragility_median,
                       "theta of a lognormal fragility P(F | a) = Phi(ln(a/theta)/beta) "
@@ -76,6 +81,7 @@ namespace poundfe
                       "Name of the curve in File: pounding, or drift_<limit> (e.g. drift_0.01). "
                       "Unit: -.");
     prm.leave_subsection();
+    study.declare(prm);
     prm.leave_subsection();
   }
 
@@ -97,12 +103,17 @@ namespace poundfe
       input.fail("Site hazard/Fragility/Beta", "a typed-in fragility needs Beta > 0");
     if (!has_fragility() && fragility_beta > 0)
       input.fail("Site hazard/Fragility/Median PGA", "Beta is given without a Median PGA");
+    study.check(input);
   }
 
   void
   SiteHazardParameters::require(const InputFile &input) const
   {
-    if (catalogue_file.empty())
-      input.fail("Site hazard/Catalogue file", "site-hazard needs a catalogue of earthquakes");
+    if (catalogue_file.empty() && !study.given())
+      input.fail("Site hazard/Catalogue file",
+                 "site-hazard needs a catalogue of earthquakes or a Site study");
+    if (catalogue_file.empty() && has_fragility())
+      input.fail("Site hazard/Fragility/Median PGA",
+                 "a fragility is convolved with a catalogue's hazard: give a Catalogue file");
   }
 } // namespace poundfe

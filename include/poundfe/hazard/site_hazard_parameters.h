@@ -6,6 +6,7 @@
 #define poundfe_hazard_site_hazard_parameters_h
 
 #include <poundfe/hazard/site_hazard.h>
+#include <poundfe/hazard/site_study_parameters.h>
 #include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
 
@@ -33,15 +34,17 @@ namespace poundfe
     double                  focal_depth       = 0.0; // km
     double                  maximum_distance  = 0.0; // km; 0: every event
     double                  exposure_years    = 50.0;
+    int                     intensity_decimals = -1; // < 0: the site intensity not rounded
     // Fragility: a median (g) and beta typed in, or a curve of a file
     double                  fragility_median = 0.0, fragility_beta = 0.0;
     std::string             fragility_file{}, fragility_curve = "pounding";
+    SiteStudyParameters     study{}; // Site study: the earthquake coefficient
 
     /// Declare the section (entered and left here).
     void declare(dealii::ParameterHandler &prm);
     /// The values that need no file. Throws InputError.
     void check(const InputFile &input) const;
-    /// For `site-hazard`: a catalogue is named. Throws InputError.
+    /// For `site-hazard`: a catalogue is named or a Site study given. Throws InputError.
     void require(const InputFile &input) const;
     /// Whether a fragility is given (typed in or from a file).
     bool has_fragility() const { return fragility_median > 0 || !fragility_file.empty(); }
