@@ -21,7 +21,10 @@ namespace poundfe
     value.n  = constant + per_displacement * std::abs(x) + per_velocity * std::abs(v);
     value.dx = per_displacement * sign(x);
     value.dv = per_velocity * sign(v);
-    if (sd_reaction)
+    // H = 0: the SD spring lies in the belt's plane and presses nothing (the
+    // limit of K H (1 - L/r) as H -> 0 at every x, including x = 0, where L/r
+    // alone would be infinite and the product NaN)
+    if (sd_reaction && sd_height != 0)
       {
         const double r = std::hypot(x, sd_height);
         value.n -= sd_stiffness * sd_height * (1 - sd_length / r);

@@ -105,6 +105,32 @@ BOOST_AUTO_TEST_CASE(friction_slip_tangent_by_central_differences)
     }
 }
 
+// alpha = 0 (thesis Figs. 3.2 b, 3.3 b): the SD spring lies flat and its
+// vertical reaction K H (1 - L/r) vanishes as H -> 0 at every x; at x = 0 the
+// formula alone is 0 * inf. The limit, checked against small H, is the
+// constant part of N.
+BOOST_AUTO_TEST_CASE(sd_normal_force_at_zero_height_is_the_limit_of_small_heights)
+{
+  NormalForce n;
+  n.constant     = 2;
+  n.sd_reaction  = true;
+  n.sd_stiffness = 1;
+  n.sd_length    = 1;
+  for (const double x : {0.0, 1e-12, -0.3, 0.7, 2.0})
+    {
+      n.sd_height              = 0;
+      const NormalForce::Value flat = n(x, 0.1);
+      BOOST_TEST(std::isfinite(flat.n));
+      BOOST_TEST(std::isfinite(flat.dx));
+      BOOST_TEST(flat.n == 2.0);
+      if (std::abs(x) > 0.1) // away from x = 0 the small-H values converge to it
+        {
+          n.sd_height = 1e-9;
+          BOOST_TEST(std::abs(n(x, 0.1).n - flat.n) < 1e-8);
+        }
+    }
+}
+
 BOOST_AUTO_TEST_CASE(return_mapping_is_coulombs_law_and_reverts_exactly)
 {
   FrictionLawParameters p;
