@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/excitation/stochastic.h>
 
 #include <Eigen/Dense>
@@ -391,6 +392,7 @@ namespace poundfe
     Eigen::FFT<double>                fft;
     for (unsigned int r = 0; r < n_realizations; ++r)
       {
+        throw_if_interrupted(); // minutes for 10^4 realizations: a safe point each
         standard_normals(motion.seed, r, xi);
         generator.generate(xi.data(), values);
         fft.fwd(spectrum, values);
