@@ -13,10 +13,21 @@
 #ifndef poundfe_output_finite_output_h
 #define poundfe_output_finite_output_h
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 namespace poundfe
 {
+  /// A quantity that is infinite by its definition, not by an overflow (the
+  /// coefficient of variation of an estimate 0: sigma/0) is not defined:
+  /// NaN, which a summary writes as null.
+  inline double
+  undefined_if_infinite(const double x)
+  {
+    return std::isinf(x) ? std::numeric_limits<double>::quiet_NaN() : x;
+  }
+
   /// Throws NumericalError: "<quantity> in <file> is inf: it overflowed ...".
   [[noreturn]] void throw_not_finite(double value, const std::string &quantity,
                                      const std::string &file);
