@@ -100,9 +100,24 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// expect_output_directory's directory, until it is prepared.
+    std::string &
+    expected_directory()
+    {
+      static std::string directory;
+      return directory;
+    }
+  } // namespace
+
   void
   prepare_output_directory(const std::string &directory, const std::vector<std::string> &resumed)
   {
+    // prepared now, by the command itself (with what it resumes): not again
+    // at its first file (its own create_directories below included)
+    if (!expected_directory().empty() && normal(expected_directory()) == normal(directory))
+      expected_directory().clear();
     create_directories(directory);
     const fs::path root = normal(directory);
     auto          &all  = manifests();
@@ -157,17 +172,6 @@ namespace poundfe
       manifest->add(entry);
     all.push_back(std::move(manifest));
   }
-
-  namespace
-  {
-    /// expect_output_directory's directory, until it is prepared.
-    std::string &
-    expected_directory()
-    {
-      static std::string directory;
-      return directory;
-    }
-  } // namespace
 
   void
   expect_output_directory(const std::string &directory)
