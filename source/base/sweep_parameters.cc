@@ -110,11 +110,10 @@ namespace poundfe
   {
     if (values_text.find_first_not_of(" \t") == std::string::npos)
       return;
-    std::string               error;
-    const std::vector<double> values = parse_values(values_text, error);
+    std::string error;
+    parse_values(values_text, error);
     if (!error.empty())
       input.fail(section + "/Values", error);
-    input.distinct(section + "/Values", values); // a value twice: the same run twice
   }
 
   void
