@@ -146,6 +146,39 @@ namespace poundfe
       in.integer("a physical tag", 0, most_int);
     }
 
+    /// A 4.1 section's first line: the numbers of blocks and of `item`s
+    /// (at least `tokens_each` tokens each), the smallest and largest tag.
+    std::pair<unsigned long, unsigned long>
+    read_blocks_line(MshTokens &in, const std::string &item, const unsigned int tokens_each)
+    {
+      const unsigned long n_blocks = in.count(item + " blocks", 4);
+      const unsigned long n        = in.count(item + "s", tokens_each);
+      in.integer("the smallest " + item + " tag", 0, most_int);
+      in.integer("the largest " + item + " tag", 0, most_int);
+      return {n_blocks, n};
+    }
+
+    /// Adds a 4.1 block's `m` items to `given`: more than the `n` announced
+    /// is an error (read_msh would write past its array of n).
+    void
+    add_block(MshTokens &in, const std::string &item, const unsigned long m, unsigned long &given,
+              const unsigned long n)
+    {
+      if ((given += m) > n)
+        in.fail(in.line(), "the " + item + " blocks hold more " + item + "s than the " +
+                             std::to_string(n) + " announced");
+    }
+
+    /// After the last 4.1 block: as many items as announced.
+    void
+    check_blocks_total(MshTokens &in, const std::string &item, const unsigned long given,
+                       const unsigned long n)
+    {
+      if (given != n)
+        in.fail(in.line(), "the " + item + " blocks hold " + std::to_string(given) + " " + item +
+                             "s, not the " + std::to_string(n) + " announced");
+    }
+
     /// $MeshFormat ... $EndMeshFormat; returns 22 or 41.
     int
     read_format(MshTokens &in)
@@ -227,10 +260,8 @@ namespace poundfe
           }
       else
         {
-          const unsigned long n_blocks = in.count("node blocks", 4), n = in.count("nodes", 4);
-          in.integer("the smallest node tag", 0, most_int);
-          in.integer("the largest node tag", 0, most_int);
-          unsigned long given = 0;
+          const auto [n_blocks, n] = read_blocks_line(in, "node", 4);
+          unsigned long given      = 0;
           for (unsigned long b = 0; b < n_blocks; ++b)
             {
               in.integer("a node block's entity dimension", 0, 3);
@@ -239,17 +270,13 @@ namespace poundfe
                 in.fail(in.line(), "parametric nodes: save the mesh without them "
                                    "(Mesh.SaveParametric = 0)");
               const unsigned long m = in.count("nodes of a block", 4);
-              if ((given += m) > n) // read_msh would write past its array of n
-                in.fail(in.line(), "the node blocks hold more nodes than the " +
-                                     std::to_string(n) + " announced");
+              add_block(in, "node", m, given, n);
               for (unsigned long i = 0; i < m; ++i)
                 add(in.integer("a node tag", 1, most_int));
               for (unsigned long i = 0; i < 3 * m; ++i)
                 in.real("a node coordinate");
             }
-          if (given != n)
-            in.fail(in.line(), "the node blocks hold " + std::to_string(given) + " nodes, not the " +
-                                 std::to_string(n) + " announced");
+          check_blocks_total(in, "node", given, n);
         }
       in.expect("$EndNodes");
       return tags;
@@ -303,10 +330,8 @@ namespace poundfe
           }
       else
         {
-          const unsigned long n_blocks = in.count("element blocks", 4), n = in.count("elements", 2);
-          in.integer("the smallest element tag", 0, most_int);
-          in.integer("the largest element tag", 0, most_int);
-          unsigned long given = 0;
+          const auto [n_blocks, n] = read_blocks_line(in, "element", 2);
+          unsigned long given      = 0;
           for (unsigned long b = 0; b < n_blocks; ++b)
             {
               const long dim = in.integer("an element block's entity dimension", 0, 3);
@@ -316,18 +341,14 @@ namespace poundfe
                 in.fail(in.line(), "element type " + std::to_string(type) +
                                      " in a block of entity dimension " + std::to_string(dim));
               const unsigned long m = in.count("elements of a block", 2);
-              if ((given += m) > n)
-                in.fail(in.line(), "the element blocks hold more elements than the " +
-                                     std::to_string(n) + " announced");
+              add_block(in, "element", m, given, n);
               for (unsigned long i = 0; i < m; ++i)
                 {
                   in.integer("an element tag", 0, most_int);
                   read_element_nodes(in, type, nodes, lines);
                 }
             }
-          if (given != n)
-            in.fail(in.line(), "the element blocks hold " + std::to_string(given) +
-                                 " elements, not the " + std::to_string(n) + " announced");
+          check_blocks_total(in, "element", given, n);
         }
       in.expect("$EndElements");
       if (lines.empty())

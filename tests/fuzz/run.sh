@@ -5,7 +5,7 @@
 #   catalogue   read_catalogue: the earthquake catalogue CSV (fuzz_catalogue.cc)
 #   hazard      read_pga_hazard: hazard_curve.csv or site-hazard summary.json (fuzz_hazard.cc)
 #   fragility   read_fragility_summary: fragility summary.json (fuzz_fragility.cc)
-#   mesh        read_line_mesh: Gmsh .msh (fuzz_mesh.cc)
+#   mesh        read_line_mesh: Gmsh .msh, checked by check_gmsh_text (fuzz_mesh.cc)
 #
 #   tests/fuzz/run.sh [BUILD_DIR] [RUNS] [MAX_SECONDS]
 #
@@ -45,7 +45,7 @@ instrumented=(source/base/input_text.cc source/base/numbers.cc source/base/input
               source/reliability/reliability_analysis_parameters.cc source/reliability/limit_state.cc
               source/excitation/records.cc source/excitation/ground_motion.cc
               source/hazard/catalogue.cc source/hazard/pounding_hazard.cc
-              source/hazard/site_hazard.cc source/mesh/line_mesh.cc)
+              source/hazard/site_hazard.cc source/mesh/gmsh_check.cc source/mesh/line_mesh.cc)
 harnesses=()
 for target in $all_targets; do harnesses+=("tests/fuzz/fuzz_$target.cc"); done
 objects=()
