@@ -6,6 +6,10 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
+#include <poundfe/output/plots.h>
+
+#include <fstream>
+#include <sstream>
 
 #include <algorithm>
 #include <iostream>
@@ -55,6 +59,39 @@ namespace poundfe
           return "no summary.json";
         }
     }
+
+    /// A command that finished but whose figures (some or all) were not
+    /// drawn: its summary.json says "completed with warnings" instead of
+    /// "completed" and lists them under "missing_figures" with the reason.
+    /// The one place for every command (plots.h remembers the figures).
+    void
+    note_missing_figures(const GuardedCommand &c)
+    {
+      std::vector<std::string> figures;
+      for (const MissingFigure &f : missing_figures())
+        figures.push_back(f.file + ": " + f.reason);
+      forget_missing_figures();
+      const std::string summary = c.directory + "/summary.json";
+      std::ifstream     in(summary);
+      if (!c.writes || figures.empty() || !in)
+        return;
+      std::ostringstream text;
+      text << in.rdbuf();
+      std::string       json   = text.str();
+      const std::string status = "\n  \"status\": \"";
+      const std::size_t at     = json.find(status); // the top level's (begin_summary)
+      if (at == std::string::npos)
+        return;
+      std::size_t end = json.find('"', at + status.size());
+      if (json.compare(at + status.size(), end - at - status.size(), "completed") == 0)
+        json.insert(end, " with warnings"), end += 14;
+      JsonWriter list; // the array alone, in the summary's layout
+      list.begin_object().value("missing_figures", figures).end_object();
+      const std::string array = list.str();
+      const std::size_t from  = array.find('\n');
+      json.insert(end + 1, "," + array.substr(from, array.rfind("\n}") - from));
+      write_file_atomically(summary, json);
+    }
   } // namespace
 
   int
@@ -68,7 +105,13 @@ namespace poundfe
     try
       {
         const Stops stops(c.stops_at_safe_points);
-        return body();
+        forget_missing_figures();
+        if (c.writes) // one rule for every command: its first file clears the earlier run's
+          expect_output_directory(c.directory);
+        const int status = body();
+        expect_output_directory("");
+        note_missing_figures(c);
+        return status;
       }
     catch (const Interrupted &)
       {

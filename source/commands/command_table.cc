@@ -137,8 +137,10 @@ namespace poundfe
         out << "\n";
       }
     out << "--output DIR overrides the file's 'Output/Directory'. Any other option is an error.\n"
-           "Exit status: 0 done, 1 bad input or command line (one message, nothing written),\n"
-           "2 numerical failure (results so far kept), 128 + signal when interrupted.\n"
+           "Exit status: 0 done (summary.json \"completed\", or \"completed with warnings\"\n"
+           "listing the figures gnuplot could not draw), 1 bad input or command line (one\n"
+           "message, nothing written), 2 numerical failure (results so far kept; also a\n"
+           "result that would be NaN or inf, named), 128 + signal when interrupted.\n"
            "SIGINT (Ctrl-C) or SIGTERM stops "
         << names_of(&Command::handles_interruption_itself)
         << "\nafter the step, value or realizations under way, with the results so far\n"
@@ -147,7 +149,7 @@ namespace poundfe
            "Any other command stops at its next file write or\n"
            "time step: no *.tmp left, summary.json says \"interrupted\". A file that cannot be\n"
            "written (full disk) exits 1 with summary.json \"failed\" and the reason, when it\n"
-           "still fits.\n"
+           "still fits; so does an output estimated larger than the free disk, before it starts.\n"
            "A second signal kills. Progress shows on a terminal (POUNDFE_PROGRESS=1: always).\n";
     return out.str();
   }

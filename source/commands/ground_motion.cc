@@ -82,6 +82,10 @@ namespace poundfe
       const MotionGenerator generator =
         make_motion_generator(input.ground_motion, input.time_integration.newmark.time_step);
       const double scale = input.ground_motion.scale_factor;
+      // all samples are held, then written: the guard before either
+      require_free_space(directory, csv_table_bytes(generator.n_samples(), n_realizations + 1.0),
+                         "ground-motion samples (" + std::to_string(generator.n_samples()) +
+                           " rows of " + std::to_string(n_realizations) + " realizations)");
       prepare_output_directory(directory);
       const MotionSamples samples = sample_realizations(generator, n_realizations, scale);
       write_samples(directory + "/ground_motion_samples.csv", generator, samples);

@@ -11,6 +11,7 @@
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/drift_limits.h>
+#include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
@@ -64,7 +65,7 @@ namespace poundfe::commands
     write_probability(JsonWriter &json, const ProbabilityEstimate &p)
     {
       json.value("probability", p.probability)
-        .value("coefficient_of_variation", p.coefficient_of_variation)
+        .value("coefficient_of_variation", undefined_if_infinite(p.coefficient_of_variation))
         .value("failures", p.n_failures)
         .value("realizations", p.n);
     }

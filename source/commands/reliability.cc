@@ -10,6 +10,7 @@
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/reliability/distribution.h>
@@ -135,7 +136,7 @@ namespace poundfe::commands
           .value("method", e.method)
           .value("failure_probability", e.probability)
           .value("generalized_beta", generalized_beta(e.probability))
-          .value("coefficient_of_variation", e.coefficient_of_variation)
+          .value("coefficient_of_variation", undefined_if_infinite(e.coefficient_of_variation))
           .value("limit_state_evaluations", e.n_evaluations)
           .value("wall_time_s", e.wall_time_s)
           .end_object();

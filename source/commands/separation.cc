@@ -17,6 +17,7 @@
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/statistics.h>
 #include <poundfe/separation/separation.h>
@@ -27,7 +28,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -37,18 +37,6 @@ namespace poundfe::commands
 {
   namespace
   {
-    /// Removes `names` from `directory`; an absent file is no error.
-    void
-    remove_files(const std::string &directory, const std::vector<const char *> &names)
-    {
-      for (const char *name : names)
-        std::filesystem::remove(directory + "/" + name);
-    }
-
-    const std::vector<const char *> pounding_hazard_files{"pounding_hazard.csv",
-                                                          "pounding_given_pga.csv",
-                                                          "pounding_hazard.png"};
-
     std::string
     percent_of(const double value, const double reference)
     {
@@ -658,20 +646,6 @@ namespace poundfe::commands
       return route;
     }
 
-    /// The output directory, without an earlier run's files that this run
-    /// does not write (rank 0).
-    void
-    prepare_directory(const std::string &directory, const Route &route, const bool hazard)
-    {
-      create_directories(directory);
-      if (!route.by_spectrum)
-        remove_files(directory, {"spectrum_modes.csv"});
-      if (!route.random)
-        remove_files(directory, {"pounding_probability.csv", "pounding_probability.png"});
-      if (!hazard)
-        remove_files(directory, pounding_hazard_files);
-    }
-
     /// What the runs leave for the output.
     struct Outcome
     {
@@ -754,8 +728,6 @@ namespace poundfe::commands
         write_probability_table(directory, input, pairs, outcome.results, plots);
       if (hazard && !hazard->interrupted && hazard->failure.empty())
         write_pounding_hazard(directory, input, pairs, *hazard, plots);
-      else if (hazard) // interrupted or failed: no table of an earlier run beside it
-        remove_files(directory, pounding_hazard_files);
       if (input.output.plots && outcome.status == "completed")
         draw_plots(directory, plots);
       write_summary(directory, input, analysis.model, pairs, outcome.results, outcome.status,
@@ -785,8 +757,9 @@ namespace poundfe::commands
     if (route.by_spectrum && rank == 0)
       spectrum = spectrum_peaks(analysis, pairs, input.spectrum, input.separation,
                                 input.modal.eigensolver, input);
-    if (rank == 0)
-      prepare_directory(directory, route, hazard.has_value());
+    if (rank == 0) // the earlier run's files go, but the realizations it resumes
+      prepare_output_directory(directory, route.random ? std::vector<std::string>{"realizations.csv"} :
+                                                         std::vector<std::string>{});
 
     // The peaks: by the spectrum, by Monte Carlo or by one time history.
     Outcome outcome;

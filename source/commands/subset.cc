@@ -9,6 +9,7 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
@@ -157,7 +158,7 @@ namespace poundfe::commands
         json.value("random_model_parameters", run.n_parameters);
       if (!result.interrupted) // otherwise there is no estimate at the threshold
         json.value("failure_probability", result.probability)
-          .value("coefficient_of_variation", result.coefficient_of_variation);
+          .value("coefficient_of_variation", undefined_if_infinite(result.coefficient_of_variation));
       json.value("reached_threshold", result.reached_threshold)
         .value("model_runs", result.model_runs)
         .value("resumed_model_runs", result.resumed_runs)
@@ -170,7 +171,7 @@ namespace poundfe::commands
           .value("threshold", L.threshold)
           .value("conditional_probability", L.conditional_probability)
           .value("acceptance_rate", L.acceptance_rate)
-          .value("coefficient_of_variation", L.coefficient_of_variation)
+          .value("coefficient_of_variation", undefined_if_infinite(L.coefficient_of_variation))
           .end_object();
       json.end_array().end_object();
       write_file_atomically(directory + "/summary.json", json.str());

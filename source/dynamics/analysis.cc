@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace poundfe
 {
@@ -71,6 +72,36 @@ namespace poundfe
                                  system.influence_y.segment(range[0], n),
                                  system.influence_rz.segment(range[0], n));
         }
+    }
+
+    /// Every entry of each building's K and M finite and at most 1e150 in
+    /// size: an absurd stiffness, modulus, section property or mass (1e308)
+    /// made K infinite and the eigensolver lose modes, reported as a
+    /// damping-modes problem. The eigensolvers square entries (norms), so
+    /// 1e150 is where they stop being safe; no structure comes near it.
+    void
+    check_matrices_in_range(const InputFile &input, const Model &model,
+                            const LinearSystem &system)
+    {
+      constexpr double largest = 1e150;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        for (const auto &[matrix, name, sources] :
+             {std::tuple{&system.stiffness, "stiffness", "a stiffness, modulus or section property"},
+              std::tuple{&system.mass, "mass", "a mass or density"}})
+          {
+            const SparseMatrix part = block(*matrix, model.equation_range(b));
+            for (int k = 0; k < part.outerSize(); ++k)
+              for (SparseMatrix::InnerIterator entry(part, k); entry; ++entry)
+                if (!(std::abs(entry.value()) <= largest))
+                  {
+                    std::ostringstream value;
+                    value << entry.value();
+                    throw InputError(input.file, 0, "Building " + std::to_string(b + 1),
+                                     "building '" + model.buildings[b].name + "' has a " + name +
+                                       " matrix entry of " + value.str() + " (at most 1e150): " +
+                                       sources + " is out of any physical range");
+                  }
+          }
     }
 
     /// The modes of one building (`what`) or of the whole model, by the
@@ -220,6 +251,7 @@ namespace poundfe
     analysis.system = assemble_mass_and_stiffness(analysis.model);
     const Model  &model  = analysis.model;
     LinearSystem &system = analysis.system;
+    check_matrices_in_range(input, model, system);
     check_stable_under_gravity(input, model, system);
     set_stick_stiffnesses(input, system, analysis.model);
 

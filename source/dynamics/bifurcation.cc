@@ -70,6 +70,8 @@ namespace poundfe
   BifurcationParameters::check(const InputFile &input) const
   {
     sweep.check(input);
+    if (!continuation) // continued, a value again goes on along the branch (up and back down)
+      input.distinct("Bifurcation/Values", sweep.values()); // from rest: the same point twice
     if (lyapunov_exponent && !(perturbation > 0 && perturbation <= 1e-3))
       input.fail("Bifurcation/Perturbation", "must lie in (0, 1e-3], got " +
                                                format_value(perturbation));

@@ -411,6 +411,7 @@ namespace poundfe
     Eigen::FFT<double>                fft;
     for (unsigned int r = 0; r < n_realizations; ++r)
       {
+        throw_if_interrupted(); // minutes for 10^4 realizations: a safe point each
         standard_normals(motion.seed, r, xi);
         generator.generate(xi.data(), values);
         fft.fwd(spectrum, values);

@@ -255,6 +255,7 @@ namespace poundfe
     fragility.check(*this);
     stationary_pdf.check(*this, time_integration.newmark.time_step);
     sweep.check(*this);
+    distinct("Sweep/Values", sweep.values()); // a value twice: the same run twice
     bifurcation.check(*this);
     site_hazard.check(*this);
     drift_limits.finalize(*this);

@@ -1,5 +1,6 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/input_text.h>
+#include <poundfe/mesh/gmsh_check.h>
 #include <poundfe/mesh/line_mesh.h>
 
 #include <deal.II/grid/grid_in.h>
@@ -12,7 +13,9 @@ namespace poundfe
   LineMesh
   read_line_mesh(const std::string &file)
   {
-    std::istringstream in(read_input_text(file, "mesh file"));
+    const std::string text = read_input_text(file, "mesh file");
+    check_gmsh_text(file, text); // read_msh trusts its input (mesh/gmsh_check.h)
+    std::istringstream in(text);
 
     dealii::Triangulation<1, 2> triangulation;
     dealii::GridIn<1, 2>        grid_in;

@@ -1,8 +1,11 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/append_file.h>
+#include <poundfe/output/finite_output.h>
 #include <poundfe/output/output_directory.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <charconv>
 #include <cstring>
 #include <fcntl.h>
@@ -49,6 +52,25 @@ namespace poundfe
   void
   append_number(std::string &text, const double x)
   {
+    if (!std::isfinite(x))
+      {
+        // a CSV built as text: its header is the first line, the column
+        // is the count of commas on the line under way
+        const std::size_t line_start = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+        const long        column =
+          std::count(text.begin() + line_start, text.end(), ',');
+        std::string header = text.substr(0, text.find('\n')), name = "a table value";
+        for (long c = 0, from = 0; c <= column && line_start > 0; ++c)
+          {
+            const std::size_t to = header.find(',', from);
+            if (c == column)
+              name = header.substr(from, to == std::string::npos ? std::string::npos : to - from);
+            if (to == std::string::npos)
+              break;
+            from = to + 1;
+          }
+        throw_not_finite(x, name, "");
+      }
     char buffer[32];
     text.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
   }

@@ -1,7 +1,10 @@
 #include <poundfe/output/csv_writer.h>
+#include <poundfe/output/finite_output.h>
 #include <poundfe/output/number_text.h>
 
 #include <deal.II/base/exceptions.h>
+
+#include <cmath>
 
 namespace poundfe
 {
@@ -14,6 +17,7 @@ namespace poundfe
   CsvWriter::CsvWriter(const std::string &path, const std::vector<std::string> &header,
                        std::shared_ptr<NumberText> shared_text)
     : file(path)
+    , columns(header)
     , text(shared_text ? std::move(shared_text) : std::make_shared<NumberText>())
     // room for a block and a whole row (add_row checks once per row)
     , buffer(block + header.size() * cell, '\0')
@@ -36,8 +40,17 @@ namespace poundfe
   }
 
   void
+  CsvWriter::check(const double value, const std::size_t column) const
+  {
+    if (!std::isfinite(value))
+      throw_not_finite(value, column < columns.size() ? columns[column] : "column " + std::to_string(column + 1),
+                       file.path());
+  }
+
+  void
   CsvWriter::begin_row(const double first)
   {
+    check(first, column = 0);
     make_room(cell);
     used = text->write(buffer.data() + used, first) - buffer.data();
   }
@@ -45,6 +58,7 @@ namespace poundfe
   void
   CsvWriter::add(const double value)
   {
+    check(value, ++column);
     make_room(cell);
     buffer[used++] = ',';
     used = text->write(buffer.data() + used, value) - buffer.data();
@@ -67,6 +81,9 @@ namespace poundfe
         file.write(buffer.data(), used);
         used = 0;
       }
+    check(first, 0);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      check(values[i], i + 1);
     char *out = text->write(buffer.data() + used, first);
     for (const double v : values)
       {

@@ -1,3 +1,4 @@
+#include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/base/input_file.h>
 
@@ -8,10 +9,14 @@ namespace poundfe
 {
   namespace
   {
+    /// `x` as JSON; NaN is null ("not defined"), an infinity a numerical
+    /// failure (output/finite_output.h).
     std::string
-    number(const double x)
+    number(const double x, const std::string &key)
     {
-      if (!std::isfinite(x))
+      if (std::isinf(x))
+        throw_not_finite(x, key, "summary.json");
+      if (std::isnan(x))
         return "null";
       char buffer[32];
       return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
@@ -90,7 +95,7 @@ namespace poundfe
   JsonWriter::value(const std::string &key, const double x)
   {
     prefix(key);
-    text += number(x);
+    text += number(x, key);
     return *this;
   }
 
@@ -124,7 +129,7 @@ namespace poundfe
     prefix(key);
     text += "[";
     for (std::size_t i = 0; i < x.size(); ++i)
-      text += (i ? ", " : "") + number(x[i]);
+      text += (i ? ", " : "") + number(x[i], key);
     text += "]";
     return *this;
   }

@@ -3,6 +3,7 @@
 #include <poundfe/output/output_directory.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -11,6 +12,7 @@
 #include <memory>
 #include <set>
 #include <stdexcept>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 namespace poundfe
@@ -98,9 +100,24 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// expect_output_directory's directory, until it is prepared.
+    std::string &
+    expected_directory()
+    {
+      static std::string directory;
+      return directory;
+    }
+  } // namespace
+
   void
   prepare_output_directory(const std::string &directory, const std::vector<std::string> &resumed)
   {
+    // prepared now, by the command itself (with what it resumes): not again
+    // at its first file (its own create_directories below included)
+    if (!expected_directory().empty() && normal(expected_directory()) == normal(directory))
+      expected_directory().clear();
     create_directories(directory);
     const fs::path root = normal(directory);
     auto          &all  = manifests();
@@ -157,8 +174,24 @@ namespace poundfe
   }
 
   void
+  expect_output_directory(const std::string &directory)
+  {
+    expected_directory() = directory;
+  }
+
+  void
   register_output(const std::string &path)
   {
+    if (const std::string expected = expected_directory(); !expected.empty())
+      {
+        const fs::path root = normal(expected), p = normal(path);
+        if (p == root || !inside(p, root).empty())
+          {
+            expected_directory().clear(); // before: preparing creates the directory
+            if (!output_directory_prepared(expected))
+              prepare_output_directory(expected);
+          }
+      }
     auto &all = manifests();
     if (all.empty())
       return;
@@ -216,5 +249,35 @@ namespace poundfe
           present.push_back(entry);
       }
     return present;
+  }
+
+  double
+  csv_table_bytes(const double rows, const double columns)
+  {
+    return rows * columns * 20;
+  }
+
+  void
+  require_free_space(const std::string &directory, const double bytes, const std::string &what)
+  {
+    fs::path        existing = normal(directory);
+    std::error_code error;
+    while (!fs::exists(existing, error) && existing.has_parent_path() && existing != existing.parent_path())
+      existing = existing.parent_path();
+    struct statvfs disk;
+    if (::statvfs(existing.c_str(), &disk) != 0)
+      return; // no answer (a network file system): the writes will tell
+    const double free = double(disk.f_bavail) * double(disk.f_frsize);
+    if (bytes <= free)
+      return;
+    const auto gigabytes = [](const double b) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g GB", b / 1e9);
+      return std::string(text);
+    };
+    // refused before a byte is written: said as the full disk it would end in
+    throw OutputError("write the " + what + " (about " + gigabytes(bytes) + "; " + gigabytes(free) +
+                        " free) in",
+                      existing.string(), ENOSPC);
   }
 } // namespace poundfe

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -53,6 +54,44 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    std::vector<MissingFigure> &
+    missing()
+    {
+      static std::vector<MissingFigure> figures;
+      return figures;
+    }
+
+    /// The first line of gnuplot's log that says what went wrong.
+    std::string
+    first_error(const std::string &log_file)
+    {
+      std::ifstream log(log_file);
+      std::string   first, line;
+      while (std::getline(log, line))
+        {
+          if (first.empty() && !line.empty())
+            first = line;
+          if (line.find("rror") != std::string::npos || line.find("arning") != std::string::npos)
+            return line.substr(0, 300);
+        }
+      return first.empty() ? "gnuplot failed without a message" : first.substr(0, 300);
+    }
+  } // namespace
+
+  const std::vector<MissingFigure> &
+  missing_figures()
+  {
+    return missing();
+  }
+
+  void
+  forget_missing_figures()
+  {
+    missing().clear();
+  }
+
   std::vector<std::string>
   draw_plots(const std::string &directory, const std::vector<Plot> &plots)
   {
@@ -63,6 +102,8 @@ namespace poundfe
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
       {
         std::cerr << "poundfe: warning: gnuplot not found; no PNG plots written\n";
+        for (const Plot &plot : plots)
+          missing().push_back({plot.file, directory, "gnuplot not found"});
         return written;
       }
     std::ostringstream script;
@@ -89,7 +130,9 @@ namespace poundfe
     write_file_atomically(script_file, script.str());
     const std::string command =
       "cd " + quoted(directory) + " && gnuplot .plots.gp > .plots.log 2>&1";
-    const int status = std::system(command.c_str());
+    const int         status  = std::system(command.c_str());
+    const std::string log     = directory + "/.plots.log";
+    const std::string problem = status == 0 ? "" : first_error(log);
     for (const Plot &plot : plots)
       {
         const std::string temporary = directory + "/" + plot.file + ".tmp";
@@ -99,15 +142,18 @@ namespace poundfe
             written.push_back(plot.file);
           }
         else
-          std::remove(temporary.c_str());
+          {
+            std::remove(temporary.c_str());
+            missing().push_back({plot.file, directory,
+                                 status == 0 ? "gnuplot wrote no file" : "gnuplot: " + problem});
+          }
       }
     if (status != 0)
-      std::cerr << "poundfe: warning: gnuplot failed; see " << directory << "/.plots.log\n";
-    else
-      {
-        std::remove(script_file.c_str());
-        std::remove((directory + "/.plots.log").c_str());
-      }
+      std::cerr << "poundfe: warning: gnuplot failed (" << problem << "); "
+                << plots.size() - written.size() << " figure(s) not drawn\n";
+    // helpers of gnuplot, not results (the reason is in the warning)
+    std::remove(script_file.c_str());
+    std::remove(log.c_str());
     return written;
   }
 } // namespace poundfe

@@ -73,6 +73,7 @@ namespace poundfe
     if (!(peak_threshold > 0 && peak_threshold < 1))
       input.fail(s + "Peak threshold", "must lie in (0, 1)");
     sweep.check(input);
+    input.distinct(s + "Values", sweep.values()); // a value twice: the same density twice
     if (sweep.values().size() == 1)
       input.fail(s + "Values", "a P-bifurcation needs at least 2 values");
     if (!sweep.values().empty())

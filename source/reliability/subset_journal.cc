@@ -1,16 +1,17 @@
 // The journal of Subset Simulation's model runs (reliability/subset_journal.h).
 #include <poundfe/reliability/subset_journal.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 
 #include <deal.II/base/mpi.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <sstream>
+#include <limits>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace poundfe
@@ -28,38 +29,79 @@ namespace poundfe
              (name.rfind("subset_runs.rank", 0) == 0 && path.extension() == ".csv");
     }
 
-    /// The complete lines of a journal file after its settings line and
-    /// header; a line cut by a kill (no newline, or fields that do not
-    /// read) is dropped. Throws InputError when the settings differ.
+    /// The first `n` characters of `line`, for a message.
+    std::string
+    excerpt(const std::string &line, const std::size_t n = 80)
+    {
+      return line.size() <= n ? line : line.substr(0, n) + "...";
+    }
+
+    /// One run of a journal line "level,sample,response,completed": whole
+    /// numbers, a finite response, completed 0 or 1; nothing otherwise.
+    std::optional<std::pair<std::pair<unsigned int, unsigned int>, std::pair<double, bool>>>
+    parse_run(const std::string &line)
+    {
+      std::vector<std::string_view> fields;
+      for (std::size_t start = 0;;)
+        {
+          const std::size_t comma = line.find(',', start);
+          fields.emplace_back(std::string_view(line).substr(start, comma - start));
+          if (comma == std::string::npos)
+            break;
+          start = comma + 1;
+        }
+      if (fields.size() != 4)
+        return std::nullopt;
+      constexpr unsigned long most = std::numeric_limits<unsigned int>::max();
+      const auto level = parse_count(fields[0], most), sample = parse_count(fields[1], most),
+                 completed = parse_count(fields[3], 1);
+      const std::optional<double> response = parse_number(fields[2]); // finite
+      if (!level || !sample || !completed || !response)
+        return std::nullopt;
+      return std::make_pair(std::make_pair(unsigned(*level), unsigned(*sample)),
+                            std::make_pair(*response, *completed != 0));
+    }
+
+    /// The runs of a journal file after its settings line and header, read
+    /// by the bounded reader of every input file (base/input_text.h: a
+    /// regular file of at most 1 GiB, no NUL byte, no line over 1 MiB). A
+    /// kill leaves at most its last line cut (no newline): that line is
+    /// dropped. Any other line that does not read as a run, or a wrong
+    /// header, is a damaged journal: InputError naming the file and the
+    /// line, as is a journal of other settings.
     void
     read_journal(const std::string &file, const std::string &settings,
                  std::map<std::pair<unsigned int, unsigned int>, std::pair<double, bool>> &runs)
     {
-      std::ifstream in(file, std::ios::binary);
-      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      const std::string text = read_input_text(file, "Subset simulation journal", "Subset simulation");
+      const std::string damaged = "; the journal of model runs is damaged: remove it (the runs "
+                                  "it holds are run again) or choose another output directory";
       std::size_t start = 0;
-      for (unsigned int line_number = 1; start < text.size(); ++line_number)
+      for (int line_number = 1; start < text.size(); ++line_number)
         {
           const std::size_t end = text.find('\n', start);
           if (end == std::string::npos)
-            break;
+            break; // cut by a kill
           const std::string line = text.substr(start, end - start);
           start                  = end + 1;
           if (line_number == 1 && line != settings)
             throw InputError(file, 1, "Subset simulation",
-                             "holds the model runs of other settings (" + line +
+                             "holds the model runs of other settings (" + excerpt(line, 300) +
                                "; this input: " + settings +
                                "); remove it or choose another output directory");
+          if (line_number == 2 && line != columns)
+            throw InputError(file, 2, "Subset simulation",
+                             "expected the header '" + std::string(columns) + "', got '" +
+                               excerpt(line) + "'" + damaged);
           if (line_number <= 2)
             continue;
-          unsigned int level = 0, sample = 0;
-          double       response = 0;
-          int          completed = 0;
-          char         c1 = 0, c2 = 0, c3 = 0;
-          std::istringstream fields(line);
-          if ((fields >> level >> c1 >> sample >> c2 >> response >> c3 >> completed) &&
-              c1 == ',' && c2 == ',' && c3 == ',' && (fields >> std::ws).eof())
-            runs.emplace(std::make_pair(level, sample), std::make_pair(response, completed != 0));
+          const auto run = parse_run(line);
+          if (!run)
+            throw InputError(file, line_number, "Subset simulation",
+                             "expected a model run 'level,sample,response,completed' (whole "
+                             "numbers, a finite response, completed 0 or 1), got '" +
+                               excerpt(line) + "'" + damaged);
+          runs.emplace(run->first, run->second);
         }
     }
   } // namespace
@@ -99,6 +141,7 @@ namespace poundfe
   {
     const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
     std::string        file, problem; // of a journal refused on rank 0
+    int                line = 0;
     if (rank == 0)
       try
         {
@@ -106,11 +149,12 @@ namespace poundfe
         }
       catch (const InputError &e)
         {
-          file = e.file(), problem = e.problem();
+          file = e.file(), problem = e.problem(), line = e.line();
         }
     problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty()) // every rank throws: none waits for the others
-      throw InputError(dealii::Utilities::MPI::broadcast(comm, file, 0), 1, "Subset simulation",
+      throw InputError(dealii::Utilities::MPI::broadcast(comm, file, 0),
+                       dealii::Utilities::MPI::broadcast(comm, line, 0), "Subset simulation",
                        problem);
     // every rank takes the responses the journal holds
     std::vector<double> flat;

@@ -11,6 +11,11 @@
 //  - a numerical failure (NumericalError) after the output has begun: the
 //    same with the failure in "message"; exit status 2, the files written
 //    so far kept.
+//  - before the body runs: the command's output directory is named
+//    (expect_output_directory), so its first file removes the earlier
+//    run's files, whatever the command;
+//  - after it returns: figures gnuplot did not draw turn summary.json's
+//    "completed" into "completed with warnings", with "missing_figures".
 // The summary lists in "files" the complete files the command left. When
 // even summary.json cannot be written, stderr says so. `run`, montecarlo,
 // subset, fragility, stationary-pdf and separation handle a signal

@@ -25,7 +25,8 @@ namespace poundfe
     int         descriptor = -1;
   };
 
-  /// Appends x in the shortest form that reads back to the same double.
+  /// Appends x in the shortest form that reads back to the same double;
+  /// NumericalError unless it is finite (output/finite_output.h).
   void append_number(std::string &text, double x);
 } // namespace poundfe
 

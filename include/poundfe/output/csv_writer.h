@@ -35,7 +35,13 @@ namespace poundfe
     /// Write out the buffer unless `size` more characters fit.
     void make_room(std::size_t size);
 
+    /// Throws NumericalError naming the column unless `value` is finite
+    /// (output/finite_output.h); `column` 0 is the first.
+    void check(double value, std::size_t column) const;
+
     AtomicFile                  file;
+    const std::vector<std::string> columns; // the header, for messages
+    std::size_t                 column = 0; // of begin_row/add
     std::shared_ptr<NumberText> text;
     std::string                 buffer;
     std::size_t                 used = 0;

@@ -43,6 +43,7 @@ namespace poundfe
 
     AtomicFile          file;
     const std::string   names; // the columns file's text
+    const std::vector<std::string> columns; // the header, for messages
     const std::size_t   n_columns;
     std::vector<double> buffer; // whole rows
     std::size_t         used = 0;

@@ -31,6 +31,14 @@ namespace poundfe
   void prepare_output_directory(const std::string              &directory,
                                 const std::vector<std::string> &resumed = {});
 
+  /// Names the output directory of the command under way (the command
+  /// guard does, for every command): the first file or directory created in
+  /// it prepares it (prepare_output_directory) unless the command prepared it
+  /// itself (those that resume files), so no command's results lie beside an
+  /// earlier run's, and bad input, refused before the first write, leaves
+  /// nothing. An empty `directory` ends it.
+  void expect_output_directory(const std::string &directory);
+
   /// Lists `path` (a file or a directory about to be created) in the manifest
   /// of the prepared output directory that contains it; does nothing for a
   /// path outside every prepared directory (a test's scratch file).
@@ -38,6 +46,18 @@ namespace poundfe
 
   /// Whether this process has prepared `directory` (prepare_output_directory).
   bool output_directory_prepared(const std::string &directory);
+
+  /// Bytes a CSV table of `rows` rows and `columns` numbers per row takes,
+  /// about: 20 characters a number (17 significant digits, sign, point,
+  /// separator), the estimate of the size guard below.
+  double csv_table_bytes(double rows, double columns);
+
+  /// The size guard: throws OutputError ("disk full: cannot write the ...
+  /// (about X GB; Y GB free) in D") when `bytes` exceed the space free to
+  /// this user on the file system that holds `directory` (or its nearest
+  /// existing parent). Call it before the output begins and before the
+  /// command allocates what it will write.
+  void require_free_space(const std::string &directory, double bytes, const std::string &what);
 
   /// Removes the "<name>.tmp" of every file the manifest of the prepared
   /// `directory` lists (a command that stops early: commands/command_guard.h).

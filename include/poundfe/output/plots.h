@@ -1,6 +1,10 @@
 // PNG plots drawn by gnuplot from the CSV files of a run. Plots are optional:
-// without gnuplot a warning is printed and the run still succeeds. Legends
-// go below the plot area, so they never cover the data.
+// without gnuplot, or when gnuplot fails, a warning is printed, the figures
+// that were not drawn are remembered (missing_figures()) and the command
+// still succeeds, but its summary.json says "completed with warnings" and
+// lists them (commands/command_guard.h). gnuplot's script and log are
+// removed either way: no helper file stays in the results. Legends go below
+// the plot area, so they never cover the data.
 #ifndef poundfe_output_plots_h
 #define poundfe_output_plots_h
 
@@ -42,6 +46,17 @@ namespace poundfe
 
   /// Draw the plots; returns the files written. Writes each PNG atomically.
   std::vector<std::string> draw_plots(const std::string &directory, const std::vector<Plot> &plots);
+
+  /// The figures draw_plots was asked for and did not write, in this
+  /// process, since forget_missing_figures(); with the reason for each.
+  struct MissingFigure
+  {
+    std::string file;   // relative to `directory`, e.g. "drift.png"
+    std::string directory;
+    std::string reason; // "gnuplot not found", gnuplot's first error line
+  };
+  const std::vector<MissingFigure> &missing_figures();
+  void                              forget_missing_figures();
 } // namespace poundfe
 
 #endif
