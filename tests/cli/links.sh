@@ -86,8 +86,8 @@ PY
 echo "ok   the linked example: balance, links' energy, impacts say what they touched"
 
 # 3. Maxwell and elastic-plastic links
-sed -e 's/set Viscous dampers .*/set Maxwell links = shear3 2 0 shear2 2 0 2e6 5e4/' \
-    -e 's/set Kelvin-Voigt links .*/set Elastic-plastic links = shear3 1 0 shear2 1 0 2e6 3e3 0.05/' \
+sed -e 's/set Viscous dampers .*/set Maxwell links = shear3 2 0 shear2 2 0 2e4 500/' \
+    -e 's/set Kelvin-Voigt links .*/set Elastic-plastic links = shear3 1 0 shear2 1 0 2e4 100 0.05/' \
     "$input/linked-shear-pair.prm" > "$work/other.prm"
 "$poundfe" run "$work/other.prm" --output "$work/other" > /dev/null
 python3 - "$work/other/summary.json" <<'PY' || fail "Maxwell and elastic-plastic links"
