@@ -31,6 +31,27 @@ namespace
     return p;
   }
 
+  LinkLawParameters
+  maxwell_link()
+  {
+    LinkLawParameters p;
+    p.kind      = LinkKind::maxwell;
+    p.stiffness = 3e7;
+    p.damping   = 1e6;
+    return p;
+  }
+
+  LinkLawParameters
+  plastic_link(const double hardening)
+  {
+    LinkLawParameters p;
+    p.kind        = LinkKind::elastic_plastic;
+    p.stiffness   = 1e7;
+    p.yield_force = 5e4;
+    p.hardening   = hardening;
+    return p;
+  }
+
   /// Drive a law along d = X sin(omega t) for `cycles` cycles of `per_cycle`
   /// steps, committing each; the work int F dd (trapezoidal) of the last cycle.
   double
@@ -173,16 +194,8 @@ BOOST_AUTO_TEST_CASE(elastic_plastic_loop)
 // dF/dd and dF/dv at states on every branch, after a committed history.
 BOOST_AUTO_TEST_CASE(finite_difference_tangents)
 {
-  LinkLawParameters maxwell, plastic;
-  maxwell.kind      = LinkKind::maxwell;
-  maxwell.stiffness = 3e7;
-  maxwell.damping   = 1e6;
-  plastic.kind        = LinkKind::elastic_plastic;
-  plastic.stiffness   = 1e7;
-  plastic.yield_force = 5e4;
-  plastic.hardening   = 0.05;
   std::vector<LinkLawParameters> laws{damper(1e6, 0.3), damper(1e6, 0.6, 2e7), damper(1e6, 1.0),
-                                      maxwell, plastic};
+                                      maxwell_link(), plastic_link(0.05)};
   for (const LinkLawParameters &p : laws)
     {
       auto law = make_link_law(p);
@@ -220,14 +233,7 @@ BOOST_AUTO_TEST_CASE(finite_difference_tangents)
 // revert() restores the committed state exactly (the next trial repeats).
 BOOST_AUTO_TEST_CASE(revert_is_exact)
 {
-  LinkLawParameters maxwell, plastic;
-  maxwell.kind      = LinkKind::maxwell;
-  maxwell.stiffness = 3e7;
-  maxwell.damping   = 1e6;
-  plastic.kind        = LinkKind::elastic_plastic;
-  plastic.stiffness   = 1e7;
-  plastic.yield_force = 5e4;
-  for (const LinkLawParameters &p : {maxwell, plastic})
+  for (const LinkLawParameters &p : {maxwell_link(), plastic_link(0)})
     {
       auto law = make_link_law(p);
       law->set_trial_time(0.01);
