@@ -2,9 +2,11 @@
 #include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/laws/bouc_wen.h>
+#include <poundfe/laws/bumper.h>
 #include <poundfe/laws/contact_law.h>
 #include <poundfe/laws/elastic_springs.h>
 #include <poundfe/laws/friction.h>
+#include <poundfe/laws/link_laws.h>
 
 namespace poundfe
 {
@@ -65,8 +67,11 @@ namespace poundfe
                                                       gap.plan, make_contact_law(law));
             continue;
           }
+        std::unique_ptr<UniaxialLaw> contact = make_contact_law(law);
+        if (model.bumper.law != BumperLaw::none)
+          contact = make_bumpered_contact(make_contact_law(law), model.bumper);
         elements.emplace_back<UniaxialElement>(ElementKind::gap, gap.buildings[0], gap.label,
-                                               equations, make_contact_law(law));
+                                               equations, std::move(contact));
       }
     for (const Spring &spring : model.springs)
       elements.emplace_back<UniaxialElement>(
@@ -80,6 +85,13 @@ namespace poundfe
                                                surface.label, std::array<int, 2>{{equation, -1}},
                                                std::make_unique<Friction>(surface.law));
       }
+    // links last: outputs count hysteretic elements, then gaps, from the start
+    for (const BuildingLink &link : model.building_links)
+      elements.emplace_back<UniaxialElement>(
+        ElementKind::link, link.buildings[0], link.label,
+        std::array<int, 2>{{model.equation(Model::dof(link.nodes[0], Component::ux)),
+                            model.equation(Model::dof(link.nodes[1], Component::ux))}},
+        make_link_law(link.law));
     return elements;
   }
 } // namespace poundfe

@@ -214,6 +214,12 @@ namespace poundfe
     prm.enter_subsection("Friction");
     friction.declare(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Links");
+    contact.links.declare(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Bumpers");
+    contact.bumpers.declare(prm);
+    prm.leave_subsection();
     nodal_forces.declare(prm);
     time_integration.declare(prm);
     output.declare(prm);
@@ -247,6 +253,8 @@ namespace poundfe
     time_integration.check(*this);
     check_stochastic_samples();
     contact.check(*this);
+    contact.links.check(*this);
+    contact.bumpers.finalize(*this, contact.law);
     friction.check(*this);
     monte_carlo.check(*this);
     subset.check(*this, model);

@@ -1,4 +1,5 @@
 #include <poundfe/integration/impact_log.h>
+#include <poundfe/laws/bumper.h>
 
 #include <algorithm>
 
@@ -34,6 +35,8 @@ namespace poundfe
       return;
     Impact &impact = log[open[h]];
     impact.impulse += 0.5 * (a.force + b.force) * dt;
+    impact.bumper    = impact.bumper || b.phase == bumper_contact;
+    impact.structure = impact.structure || b.phase == structure_contact;
     if (b.force > impact.peak_force)
       {
         impact.peak_force = b.force;

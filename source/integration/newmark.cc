@@ -751,7 +751,7 @@ namespace poundfe
         impacts.record(h, current_time, current_time + L.dt,
                        {committed_history[h], committed_rate[h], committed_force[h]},
                        {e.history_variable(), e.deformation(v_next), e.force(),
-                        e.contact_point()});
+                        e.contact_point(), e.phase()});
       }
     for (const unsigned int h : friction_elements)
       {
@@ -892,7 +892,7 @@ namespace poundfe
   {
     balance.kinetic = kinetic_energy();
     balance.strain  = strain_energy();
-    balance.hysteretic = balance.contact = balance.friction = 0;
+    balance.hysteretic = balance.contact = balance.friction = balance.links = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         const NonlinearElement &e          = (*elements)[h];
@@ -904,6 +904,9 @@ namespace poundfe
               break;
             case ElementKind::friction:
               balance.friction += dissipated;
+              break;
+            case ElementKind::link:
+              balance.links += dissipated;
               break;
             default: // hinges, storeys; elastic springs dissipate nothing
               balance.hysteretic += dissipated;

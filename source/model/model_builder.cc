@@ -678,6 +678,8 @@ namespace poundfe
     add_springs(model, springs, input);
     check_storeys_held(model, input);
     add_friction_surfaces(model, friction, input);
+    add_building_links(model, contact.links, input);
+    add_bumpers(model, contact.bumpers.bumper, input);
     return model;
   }
 } // namespace poundfe

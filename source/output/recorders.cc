@@ -304,11 +304,11 @@ namespace poundfe
             return gap_state_series(elements, n_hyst, peaks.n_gaps());
           case RecordedQuantity::energy:
             return {{"input_J", "kinetic_J", "damping_J", "strain_J", "hysteretic_J", "contact_J",
-                     "balance_error", "friction_J", "belt_J"},
+                     "balance_error", "friction_J", "belt_J", "links_J"},
                     [](const ResponseView &s, std::vector<double> &to) {
                       const EnergyBalance e = s.energy();
                       to = {e.input, e.kinetic, e.damping, e.strain, e.hysteretic, e.contact,
-                            s.max_energy_error(), e.friction, e.belt};
+                            s.max_energy_error(), e.friction, e.belt, e.links};
                     }};
           case RecordedQuantity::ground_motion:
             return {{"ground_acceleration_m_s2"}, [](const ResponseView &s, std::vector<double> &to) {

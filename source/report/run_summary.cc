@@ -2,6 +2,7 @@
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/stick_slip_report.h>
+#include <poundfe/output/link_report.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
@@ -47,6 +48,9 @@ namespace poundfe
                     "peak_force_N"};
           case ElementKind::friction:
             return {"friction", "yield_deformation_m", "peak_displacement_m", "peak_slip_m",
+                    "peak_force_N"};
+          case ElementKind::link:
+            return {"link", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
                     "peak_force_N"};
         }
       throw std::logic_error("units_of: unknown element kind");
@@ -182,11 +186,13 @@ namespace poundfe
   RunSummary::write_impacts(const ResponseView &state) const
   {
     const Model       &model = analysis.model;
-    const unsigned int first = peaks.n_hysteretic();
+    const unsigned int first   = peaks.n_hysteretic();
+    const bool         bumpers = model.bumper.law != BumperLaw::none;
     std::string csv = "gap,buildings,level_m,start_time_s,max_penetration_time_s,end_time_s,"
                       "approach_velocity_m_s,separation_velocity_m_s,max_penetration_m,"
                       "peak_force_N,impulse_N_s" +
-                      std::string(model.dimension == 3 ? ",plan_x_m,plan_y_m\n" : "\n");
+                      std::string(model.dimension == 3 ? ",plan_x_m,plan_y_m" : "") +
+                      std::string(bumpers ? ",touched\n" : "\n");
     for (const Impact &impact : state.impact_log().impacts())
       {
         const Gap         &gap = model.gaps[impact.element - first];
@@ -203,6 +209,9 @@ namespace poundfe
             << impact.max_penetration << "," << impact.peak_force << "," << impact.impulse;
         if (model.dimension == 3)
           row << "," << impact.point[0] << "," << impact.point[1];
+        if (bumpers) // which surface the impact reached
+          row << "," << (impact.structure ? (impact.bumper ? "bumper+structure" : "structure") :
+                                            "bumper");
         row << "\n";
         csv += row.str();
       }
@@ -236,6 +245,7 @@ namespace poundfe
     if (peaks.n_gaps() > 0)
       write_gaps(json, state);
     write_springs_and_friction(json, state, peaks, status.end_time);
+    write_links(json, state, peaks);
     write_energy_and_newton(json, state);
     write_run(json, status, written);
     json.end_object();
@@ -330,6 +340,7 @@ namespace poundfe
       .value("damping_from", contact_damping_from_names().name(parameters.contact.damping_from))
       .value("coefficient_of_restitution", parameters.contact.restitution)
       .end_object();
+    write_bumper(json, state);
     std::vector<unsigned int> count(n_gaps, 0);
     std::vector<double>       peak(n_gaps, 0.0), penetration(n_gaps, 0.0), impulse(n_gaps, 0.0);
     for (const Impact &impact : state.impact_log().impacts())
@@ -372,6 +383,7 @@ namespace poundfe
       .value("hysteretic_J", energy.hysteretic)
       .value("contact_J", energy.contact)
       .value("friction_J", energy.friction)
+      .value("links_J", energy.links)
       .value("belt_J", energy.belt)
       .value("max_relative_balance_error", state.max_energy_error())
       .end_object();

@@ -38,7 +38,8 @@ namespace poundfe
     storey, // force-drift of a shear-building storey
     gap,    // contact
     spring, // nonlinear elastic spring to the ground (SD, Duffing)
-    friction // dry friction against the ground or a moving belt
+    friction, // dry friction against the ground or a moving belt
+    link      // a damper or connector between floors of two buildings
   };
 
   class NonlinearElement

@@ -29,6 +29,9 @@ namespace poundfe
     double       impulse              = 0;
     /// Where the peak force acted in plan (3D plan contact; NaN otherwise).
     std::array<double, 2> point{{std::nan(""), std::nan("")}};
+    /// What was touched: a gap's bumper, the structure (laws/bumper.h's
+    /// ContactPhase at the ends of the impact's steps).
+    bool bumper = false, structure = false;
   };
 
   class ImpactLog
@@ -39,6 +42,8 @@ namespace poundfe
     {
       double penetration = 0, rate = 0, force = 0;
       std::array<double, 2> point{{std::nan(""), std::nan("")}};
+      /// The element's phase (laws/bumper.h: 1 structure, 2 bumper only).
+      int phase = 0;
     };
 
     void reset(unsigned int n_elements);

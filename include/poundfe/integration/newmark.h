@@ -100,11 +100,12 @@ namespace poundfe
     double hysteretic = 0; // dissipated by hinges and storeys
     double contact    = 0; // dissipated by gaps
     double friction   = 0; // dissipated by friction, int F (x' - v0) dt
+    double links      = 0; // dissipated by links between buildings (dampers)
 
     double supplied() const { return initial + input + belt; }
     double stored_and_dissipated() const
     {
-      return kinetic + damping + strain + hysteretic + contact + friction;
+      return kinetic + damping + strain + hysteretic + contact + friction + links;
     }
   };
 

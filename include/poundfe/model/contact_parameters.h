@@ -6,6 +6,7 @@
 
 #include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
+#include <poundfe/model/link_parameters.h>
 
 #include <string>
 #include <vector>
@@ -49,6 +50,10 @@ namespace poundfe
     bool               between_buildings    = true;
     bool               floor_to_column      = true;
     std::vector<std::string> barriers; // "building floor side gap"
+    /// The `Links` and `Bumpers` sections: what is put in and across the
+    /// gaps (declared in their own subsections by InputParameters).
+    LinkParameters        links;
+    BumperInputParameters bumpers;
 
     /// Declare this section's entries in the current subsection (`Contact`).
     void declare(dealii::ParameterHandler &prm);

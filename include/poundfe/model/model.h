@@ -10,9 +10,11 @@
 
 #include <poundfe/base/point.h>
 #include <poundfe/laws/bouc_wen.h>
+#include <poundfe/laws/bumper.h>
 #include <poundfe/laws/contact_law.h>
 #include <poundfe/laws/elastic_springs.h>
 #include <poundfe/laws/friction.h>
+#include <poundfe/laws/link_laws.h>
 
 #include <array>
 #include <string>
@@ -145,6 +147,16 @@ namespace poundfe
     std::string           label;
   };
 
+  /// A link (damper, connector) between two floor nodes, usually of two
+  /// adjacent buildings, on d = ux(nodes[0]) - ux(nodes[1]).
+  struct BuildingLink
+  {
+    std::array<unsigned int, 2> nodes{{0, 0}};
+    std::array<unsigned int, 2> buildings{{0, 0}};
+    LinkLawParameters           law;
+    std::string                 label;
+  };
+
   struct NodalMass
   {
     unsigned int node = 0;
@@ -248,6 +260,9 @@ namespace poundfe
     std::vector<Gap>        gaps;
     std::vector<Spring>          springs;
     std::vector<FrictionSurface> friction_surfaces;
+    std::vector<BuildingLink>    building_links;
+    /// A bumper in every 2D gap (law none: bare gaps).
+    BumperParameters             bumper;
     /// The contact law of every gap (its gap and m_e are set per gap).
     ContactLawParameters    contact;
     std::vector<NodalMass>  masses;

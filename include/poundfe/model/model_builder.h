@@ -53,6 +53,12 @@ namespace poundfe
   void check_storeys_held(const Model &model, const InputFile &input);
   /// The friction elements of the `Friction` section; after add_springs
   /// (N may take an SD spring's reaction). Throws InputError.
+  /// The links of the `Links` section between floor nodes of `model`, and
+  /// the bumper of the `Bumpers` section in its gaps
+  /// (source/model/building_links.cc). Throw InputError.
+  void add_building_links(Model &model, const LinkParameters &links, const InputFile &input);
+  void add_bumpers(Model &model, const BumperParameters &bumper, const InputFile &input);
+
   void add_friction_surfaces(Model &model, const FrictionParameters &friction,
                              const InputFile &input);
 } // namespace poundfe
