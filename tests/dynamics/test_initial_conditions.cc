@@ -5,6 +5,7 @@
 // the energy balance of a pounding pair started out of rest, and a gap
 // already closed at t = 0 (the consistent acceleration and the initial
 // energy include the contact spring).
+#include <poundfe/base/numbers.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/dynamics/run.h>
@@ -15,9 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "test_utilities.h"
+#include "time_history_helpers.h"
 
 using namespace poundfe;
+using poundfe_test::input_of;
+using Recorder = poundfe_test::StepRecorder;
 
 namespace
 {
@@ -39,41 +42,8 @@ namespace
            "\n  set End time = " + number_text(end) + "\nend\n" + extra;
   }
 
-  InputParameters
-  input_of(const std::string &name, const std::string &text)
-  {
-    return read_parameters(poundfe_test::temporary_file(name + ".prm", text));
-  }
 
-  /// Every step's time, u, v and a, and the energy balance at the end.
-  struct Recorder : StepObserver
-  {
-    std::vector<double> t;
-    std::vector<Vector> u, v, a;
-    double              max_energy_error = 0;
-    EnergyBalance       energy;
-    void
-    observe_step(const ResponseView &s) override
-    {
-      t.push_back(s.time());
-      u.push_back(s.displacement());
-      v.push_back(s.velocity());
-      a.push_back(s.acceleration());
-      max_energy_error = s.max_energy_error();
-      energy           = s.energy();
-    }
-  };
 
-  Recorder
-  run(const Analysis &analysis, const InputParameters &p)
-  {
-    const TimeHistoryParameters parameters = time_history_parameters(p);
-    const Excitation            excitation = make_excitation(analysis, parameters);
-    TimeHistory                 history(analysis, parameters);
-    Recorder                    recorder;
-    BOOST_REQUIRE(history.run(excitation, {&recorder}).completed());
-    return recorder;
-  }
 
   /// Damped free vibration of one mode from (q0, q0'):
   /// q = e^{-z w t} (q0 cos wd t + (q0' + z w q0)/wd sin wd t) and q'.
@@ -110,7 +80,7 @@ BOOST_AUTO_TEST_CASE(sdof_free_vibration_from_u0_and_v0_is_the_closed_form)
                                   "  set State = " + number_text(u0) + ", " + number_text(v0),
                                   dt, end));
   const Analysis analysis = prepare_analysis(p);
-  const Recorder r        = run(analysis, p);
+  const Recorder r        = poundfe_test::recorded_run(analysis, p);
   BOOST_TEST(r.u.front()[0] == u0);
   BOOST_TEST(r.v.front()[0] == v0);
   // a0 = -(c v0 + k u0)/m
@@ -136,17 +106,9 @@ BOOST_AUTO_TEST_CASE(shear_building_free_vibration_is_the_modal_superposition)
 {
   const unsigned int n = 3;
   const double       m = 1000, k = 5e6, zeta = 0.05;
-  // M = m I, K tridiagonal (fixed base, free top); modes by Eigen here.
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (unsigned int i = 0; i < n; ++i)
-    {
-      K(i, i) = (i + 1 < n ? 2 : 1) * k;
-      if (i + 1 < n)
-        K(i, i + 1) = K(i + 1, i) = -k;
-    }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(K / m);
-  Eigen::VectorXd omega = eigen.eigenvalues().cwiseSqrt();
-  Eigen::MatrixXd phi   = eigen.eigenvectors() / std::sqrt(m); // phi^T M phi = I
+  const poundfe_test::ShearBuildingModes modes(n, m, k); // by Eigen, here
+  const Eigen::VectorXd                 &omega = modes.omega;
+  const Eigen::MatrixXd                 &phi   = modes.phi;
   // Rayleigh fitted at modes 1 and 2 (Chopra eq. 11.4.9); zeta_i of each mode
   const double a0 = 2 * zeta * omega[0] * omega[1] / (omega[0] + omega[1]);
   const double a1 = 2 * zeta / (omega[0] + omega[1]);
@@ -160,7 +122,7 @@ BOOST_AUTO_TEST_CASE(shear_building_free_vibration_is_the_modal_superposition)
                           "  set Floor velocities = 1: all 0.1",
                           dt, end));
   const Analysis analysis = prepare_analysis(p);
-  const Recorder r        = run(analysis, p);
+  const Recorder r        = poundfe_test::recorded_run(analysis, p);
   BOOST_TEST((r.u.front() - u0).norm() == 0);
   BOOST_TEST((r.v.front() - v0).norm() == 0);
   double worst = 0, bound = 0;
@@ -207,7 +169,7 @@ BOOST_AUTO_TEST_CASE(pounding_pair_started_out_of_rest_balances_its_energy)
     "subsection Time integration\n  set Time step = 0.002\n  set End time = 3\nend\n";
   const InputParameters p        = input_of("ic_pair", text);
   const Analysis        analysis = prepare_analysis(p);
-  const Recorder        r        = run(analysis, p);
+  const Recorder        r        = poundfe_test::recorded_run(analysis, p);
   BOOST_TEST_MESSAGE("pounding pair from initial conditions: max energy error "
                      << r.max_energy_error << ", initial " << r.energy.initial << " J, contact "
                      << r.energy.contact << " J, hysteretic " << r.energy.hysteretic << " J");
@@ -232,7 +194,7 @@ BOOST_AUTO_TEST_CASE(a_gap_closed_at_t0_pushes_back_at_once)
                         "  set Equation displacements = 0 = " + number_text(u0), 1e-4, 0.05,
                         contact));
   const Analysis analysis = prepare_analysis(p);
-  const Recorder r        = run(analysis, p);
+  const Recorder r        = poundfe_test::recorded_run(analysis, p);
   const double   a0       = -(k * u0 + kc * (u0 - gap)) / m;
   BOOST_TEST(r.a.front()[0] == a0, boost::test_tools::tolerance(1e-12));
   const double e0 = 0.5 * k * u0 * u0 + 0.5 * kc * (u0 - gap) * (u0 - gap);

@@ -7,6 +7,7 @@
 // Woodbury update of the contact elements on top of the modal term, and
 // the refactorised tangent); frequency bands pick the modes they contain.
 #include <poundfe/assembly/modal_damping.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/input/engine_parameters.h>
@@ -16,9 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "test_utilities.h"
+#include "time_history_helpers.h"
 
 using namespace poundfe;
+using poundfe_test::input_of;
+using Recorder = poundfe_test::StepRecorder;
 
 namespace
 {
@@ -46,55 +49,17 @@ namespace
            "\n  set End time = " + number_text(end) + "\nend\n" + extra;
   }
 
-  InputParameters
-  input_of(const std::string &name, const std::string &text)
-  {
-    return read_parameters(poundfe_test::temporary_file(name + ".prm", text));
-  }
 
   /// The building's modes, computed here: M = m I, K tridiagonal;
   /// phi mass-normalised.
-  struct ReferenceModes
+  struct ReferenceModes : poundfe_test::ShearBuildingModes
   {
-    Eigen::VectorXd omega;
-    Eigen::MatrixXd phi;
     ReferenceModes()
-    {
-      Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n_storeys, n_storeys);
-      for (unsigned int i = 0; i < n_storeys; ++i)
-        {
-          K(i, i) = (i + 1 < n_storeys ? 2 : 1) * stiffness;
-          if (i + 1 < n_storeys)
-            K(i, i + 1) = K(i + 1, i) = -stiffness;
-        }
-      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(K / mass);
-      omega = eigen.eigenvalues().cwiseSqrt();
-      phi   = eigen.eigenvectors() / std::sqrt(mass);
-    }
+      : ShearBuildingModes(n_storeys, mass, stiffness)
+    {}
   };
 
-  struct Recorder : StepObserver
-  {
-    std::vector<double> t;
-    std::vector<Vector> u;
-    void
-    observe_step(const ResponseView &s) override
-    {
-      t.push_back(s.time());
-      u.push_back(s.displacement());
-    }
-  };
 
-  Recorder
-  run(const Analysis &analysis, const InputParameters &p)
-  {
-    const TimeHistoryParameters parameters = time_history_parameters(p);
-    const Excitation            excitation = make_excitation(analysis, parameters);
-    TimeHistory                 history(analysis, parameters);
-    Recorder                    recorder;
-    BOOST_REQUIRE(history.run(excitation, {&recorder}).completed());
-    return recorder;
-  }
 
   /// C as a dense matrix: the sparse part plus U D U^T.
   Eigen::MatrixXd
@@ -114,6 +79,20 @@ namespace
     for (Eigen::Index i = 0; i < x.size(); ++i)
       text += " " + number_text(x[i]);
     return text;
+  }
+
+  /// Damping lines of Rayleigh zeta = 0.05 at modes 1 and 3, and of modal
+  /// damping with the ratios it gives: 0.05, zeta_2, 0.05, zeta_2 =
+  /// a0/(2 w_2) + a1 w_2/2 (Chopra eq. 11.4.8) from the reference modes.
+  std::pair<std::string, std::string>
+  equivalent_damping()
+  {
+    const ReferenceModes ref;
+    const double zeta = 0.05, w1 = ref.omega[0], w2 = ref.omega[1], w3 = ref.omega[2];
+    const double a0 = 2 * zeta * w1 * w3 / (w1 + w3), a1 = 2 * zeta / (w1 + w3);
+    return {"    set Type = modes\n    set Damping ratio = 0.05\n    set Modes = 1, 3",
+            "    set Type = modal\n    set Modal ratios = 0.05, " +
+              number_text(a0 / (2 * w2) + a1 * w2 / 2) + ", 0.05"};
   }
 
   double
@@ -144,7 +123,7 @@ BOOST_AUTO_TEST_CASE(each_mode_decays_with_its_own_ratio)
                                     "  set Floor displacements = S:" + floor_list(shape), dt,
                                     cycles * period));
       const Analysis analysis = prepare_analysis(p);
-      const Recorder r        = run(analysis, p);
+      const Recorder r        = poundfe_test::recorded_run(analysis, p);
       // the modal coordinate q_i = phi_i^T M u, and what leaks into the others
       std::vector<double> q, peaks;
       double              leak = 0;
@@ -176,16 +155,7 @@ BOOST_AUTO_TEST_CASE(each_mode_decays_with_its_own_ratio)
 
 BOOST_AUTO_TEST_CASE(rayleigh_is_modal_damping_with_its_own_ratios)
 {
-  // Rayleigh at modes 1 and 3 with zeta; mode 2 then has
-  // zeta_2 = a0/(2 w_2) + a1 w_2/2 (Chopra eq. 11.4.8), computed here.
-  const ReferenceModes ref;
-  const double         zeta = 0.05, w1 = ref.omega[0], w2 = ref.omega[1], w3 = ref.omega[2];
-  const double         a0 = 2 * zeta * w1 * w3 / (w1 + w3), a1 = 2 * zeta / (w1 + w3);
-  const double         zeta2  = a0 / (2 * w2) + a1 * w2 / 2;
-  const std::string    rayleigh = "    set Type = modes\n    set Damping ratio = 0.05\n"
-                                  "    set Modes = 1, 3";
-  const std::string modal = "    set Type = modal\n    set Modal ratios = 0.05, " +
-                            number_text(zeta2) + ", 0.05";
+  const auto [rayleigh, modal] = equivalent_damping();
   const std::string initial = "  set Floor displacements = S: 0.01 0.02 0.04\n"
                               "  set Floor velocities = S: all -0.2";
   const std::string forces = "subsection Nodal forces\n  set Harmonic = 1 3 0 ux 2e4 30 0\nend\n";
@@ -196,7 +166,7 @@ BOOST_AUTO_TEST_CASE(rayleigh_is_modal_damping_with_its_own_ratios)
   BOOST_TEST(am.system.modal_damping.weights.size() == 3);
   const Eigen::MatrixXd Cr = dense_damping(ar.system), Cm = dense_damping(am.system);
   const double          c_error = (Cr - Cm).norm() / Cr.norm();
-  const double          u_error = max_difference(run(ar, pr), run(am, pm));
+  const double          u_error = max_difference(poundfe_test::recorded_run(ar, pr), poundfe_test::recorded_run(am, pm));
   BOOST_TEST_MESSAGE("Rayleigh vs modal: |C_R - C_m|/|C_R| = "
                      << c_error << ", response " << u_error);
   BOOST_TEST(c_error <= 1e-12); // round-off of the eigenvectors
@@ -207,14 +177,7 @@ BOOST_AUTO_TEST_CASE(pounding_with_modal_damping_matches_rayleigh)
 {
   // Two buildings pound; the contact elements' Woodbury update (or the
   // refactorised tangent) sits on the modal term's.
-  const ReferenceModes ref;
-  const double         zeta = 0.05, w1 = ref.omega[0], w3 = ref.omega[2], w2 = ref.omega[1];
-  const double         a0 = 2 * zeta * w1 * w3 / (w1 + w3), a1 = 2 * zeta / (w1 + w3);
-  const double         zeta2  = a0 / (2 * w2) + a1 * w2 / 2;
-  const std::string    rayleigh = "    set Type = modes\n    set Damping ratio = 0.05\n"
-                                  "    set Modes = 1, 3";
-  const std::string modal = "    set Type = modal\n    set Modal ratios = 0.05, " +
-                            number_text(zeta2) + ", 0.05";
+  const auto [rayleigh, modal] = equivalent_damping();
   const auto text = [&](const std::string &damping, const std::string &update) {
     return "subsection Model\n  set Number of buildings = 2\n  set Separations = 0.005\nend\n" +
            building(1, "A", damping) + building(2, "B", damping) +
@@ -229,7 +192,7 @@ BOOST_AUTO_TEST_CASE(pounding_with_modal_damping_matches_rayleigh)
       const InputParameters pr = input_of("pound_r", text(rayleigh, update));
       const InputParameters pm = input_of("pound_m", text(modal, update));
       const Analysis        ar = prepare_analysis(pr), am = prepare_analysis(pm);
-      const double error = max_difference(run(ar, pr), run(am, pm));
+      const double error = max_difference(poundfe_test::recorded_run(ar, pr), poundfe_test::recorded_run(am, pm));
       BOOST_TEST_MESSAGE("pounding, " << update << ": Rayleigh vs modal " << error);
       // Newton stops at its residual tolerance 1e-8: the two runs agree to
       // what it leaves, not to round-off.
