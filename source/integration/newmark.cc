@@ -462,6 +462,12 @@ namespace poundfe
         L.holds_tangent = false;
       }
     residual.noalias() = rhs - L.effective * u_next;
+    if (!system.modal_damping.empty()) // the modal part of K_eff: c U D U^T
+      {
+        product.setZero();
+        add_low_rank_damping_product(system.modal_damping, u_next, product);
+        residual.noalias() -= L.c_damp_u * product;
+      }
     subtract_element_forces(residual);
     norm = residual.norm();
     if (!std::isfinite(norm))

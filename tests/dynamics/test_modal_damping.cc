@@ -187,16 +187,16 @@ BOOST_AUTO_TEST_CASE(pounding_with_modal_damping_matches_rayleigh)
            "subsection Time integration\n  set Time step = 1e-3\n  set End time = 1\n"
            "  set Tangent update = " + update + "\nend\n";
   };
-  for (const std::string update : {"woodbury", "refactorize"})
+  for (const std::string update : {"woodbury", "refactorize", "hybrid"})
     {
       const InputParameters pr = input_of("pound_r", text(rayleigh, update));
       const InputParameters pm = input_of("pound_m", text(modal, update));
       const Analysis        ar = prepare_analysis(pr), am = prepare_analysis(pm);
       const double error = max_difference(poundfe_test::recorded_run(ar, pr), poundfe_test::recorded_run(am, pm));
       BOOST_TEST_MESSAGE("pounding, " << update << ": Rayleigh vs modal " << error);
-      // Newton stops at its residual tolerance 1e-8: the two runs agree to
-      // what it leaves, not to round-off.
-      BOOST_TEST(error <= 1e-6);
+      // The same C and the same iterations: round-off apart (measured
+      // ~1e-12); 1e-9 leaves room for an iteration count that differs.
+      BOOST_TEST(error <= 1e-9);
     }
 }
 
