@@ -243,3 +243,28 @@ BOOST_AUTO_TEST_CASE(bad_modal_damping_names_the_entry)
   BOOST_TEST(error_of("    set Type = bands\n    set Bands = 10 5 0.05\n    set Damped modes = 2")
                .find("needs 0 <= low < high") != std::string::npos);
 }
+
+BOOST_AUTO_TEST_CASE(a_large_building_keeps_c_low_rank)
+{
+  // 2000 storeys, 5 damped modes: C is the n x 5 factor U and 5 weights
+  // (a dense C would be 4e6 entries); a run from a leaning start balances.
+  const std::string text =
+    "subsection Model\n  set Number of buildings = 1\nend\n"
+    "subsection Building 1\n  set Name = S\n  set Type = shear\n  set Number of storeys = 2000\n"
+    "  set Storey heights = 3\n  set Floor masses = 1000\n  set Storey stiffnesses = 5e9\n"
+    "  subsection Damping\n    set Type = modal\n    set Modal ratios = 0.05, 0.05, 0.05, 0.05, 0.05\n"
+    "  end\nend\nsubsection Ground motion\n  set Type = none\nend\n"
+    "subsection Initial conditions\n  set Floor velocities = S: all 0.1\nend\n"
+    "subsection Time integration\n  set Time step = 0.01\n  set End time = 0.5\nend\n";
+  const InputParameters p = input_of("large_modal", text);
+  const Analysis        a = prepare_analysis(p);
+  BOOST_TEST(a.system.modal_damping.factor.rows() == 2000);
+  BOOST_TEST(a.system.modal_damping.factor.cols() == 5);
+  BOOST_TEST(a.system.damping.nonZeros() == 0);
+  const Recorder r = poundfe_test::recorded_run(a, p);
+  BOOST_TEST_MESSAGE("2000 storeys, 5 modal ratios: energy error " << r.max_energy_error
+                                                                   << ", damping " << r.energy.damping
+                                                                   << " J");
+  BOOST_TEST(r.energy.damping > 0);
+  BOOST_TEST(r.max_energy_error <= 1e-8);
+}
