@@ -1,4 +1,5 @@
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/assembly/modal_damping.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/model/model_builder.h>
@@ -156,6 +157,8 @@ namespace poundfe
       switch (d.kind)
         {
           case RayleighDamping::Kind::none:
+          case RayleighDamping::Kind::modal: // C is modal (add_modal_damping_of)
+          case RayleighDamping::Kind::bands:
             return {{0, 0}};
           case RayleighDamping::Kind::coefficients:
             return {{d.a0, d.a1}};
@@ -169,6 +172,62 @@ namespace poundfe
                            std::to_string(modes.n_modes()) + " modes");
       return rayleigh_coefficients(d.damping_ratio, modes.omega[d.first_mode - 1],
                                    modes.omega[d.second_mode - 1]);
+    }
+
+    /// The entry that sets how many modes building b's modal damping needs.
+    std::string
+    damped_modes_path(const RayleighDamping &d, const unsigned int b)
+    {
+      const std::string section = "Building " + std::to_string(b + 1) + "/Damping/";
+      return section + (d.kind == RayleighDamping::Kind::modal ? "Modal ratios" : "Damped modes");
+    }
+
+    /// A building's damping may not name a mode beyond its equations.
+    void
+    check_damped_modes(const InputFile &input, const Model &model, const unsigned int b)
+    {
+      const RayleighDamping &d     = model.buildings[b].damping;
+      const auto             range = model.equation_range(b);
+      const unsigned int     n     = range[1] - range[0];
+      if (d.is_modal() && d.n_modes_needed() > n) // Rayleigh's: rayleigh_coefficients_of
+        input.fail(damped_modes_path(d, b),
+                   "building '" + model.buildings[b].name + "' has only " + std::to_string(n) +
+                     " modes (one per equation), its damping names mode " +
+                     std::to_string(d.n_modes_needed()));
+    }
+
+    /// The ratio of each of the first modes of a building with modal
+    /// damping: as listed, or its frequency's band (0 outside every band).
+    std::vector<double>
+    modal_damping_ratios(const RayleighDamping &d, const Modes &modes)
+    {
+      if (d.kind == RayleighDamping::Kind::modal)
+        return d.modal_ratios;
+      std::vector<double> ratios(d.damped_modes, 0.0);
+      for (unsigned int i = 0; i < d.damped_modes; ++i)
+        for (const DampingBand &band : d.bands)
+          if (modes.frequency(i) >= band.low && modes.frequency(i) < band.high)
+            ratios[i] = band.damping_ratio;
+      return ratios;
+    }
+
+    /// The modal C = M Phi diag(2 zeta_i omega_i) Phi^T M of every building
+    /// whose damping is modal, as a low-rank term (assembly/modal_damping.h).
+    void
+    add_modal_damping_of(Analysis &analysis)
+    {
+      const Model &model = analysis.model;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        {
+          const RayleighDamping &d = model.buildings[b].damping;
+          if (!d.is_modal())
+            continue;
+          const auto   range = model.equation_range(b);
+          const Modes &modes = analysis.building_modes[b];
+          add_modal_damping(analysis.system.modal_damping, model.n_equations(), range,
+                            block(analysis.system.mass, range), modes.shapes, modes.omega,
+                            modal_damping_ratios(d, modes));
+        }
     }
 
     /// "2.5 %" for the ratio 0.025.
@@ -197,8 +256,12 @@ namespace poundfe
           d.kind == RayleighDamping::Kind::modes ?
             std::vector<std::string>{"Damping ratio", "Modes"} :
           d.kind == RayleighDamping::Kind::coefficients ? std::vector<std::string>{"a0", "a1"} :
-                                                          std::vector<std::string>{};
-        for (const std::string entry : {"Damping ratio", "Modes", "a0", "a1"})
+          d.kind == RayleighDamping::Kind::modal ? std::vector<std::string>{"Modal ratios"} :
+          d.kind == RayleighDamping::Kind::bands ?
+                                                   std::vector<std::string>{"Bands", "Damped modes"} :
+                                                   std::vector<std::string>{};
+        for (const std::string entry :
+             {"Damping ratio", "Modes", "a0", "a1", "Modal ratios", "Bands", "Damped modes"})
           if (std::find(used.begin(), used.end(), entry) == used.end() && set(entry))
             warnings.push_back(where + section + entry + " (line " +
                                std::to_string(input.line_of(section + entry)) +
@@ -260,10 +323,8 @@ namespace poundfe
       {
         const Building &building = model.buildings[b];
         const auto      range    = model.equation_range(b);
-        const bool      for_damping = building.damping.kind == RayleighDamping::Kind::modes;
-        const unsigned  wanted =
-          std::max({n_modes, for_damping ? building.damping.first_mode : 0u,
-                    for_damping ? building.damping.second_mode : 0u});
+        check_damped_modes(input, model, b);
+        const unsigned wanted = std::max(n_modes, building.damping.n_modes_needed());
         // no modes reported nor needed for damping: no eigenproblem (a large
         // model with given Rayleigh coefficients)
         analysis.building_modes.push_back(
@@ -276,6 +337,7 @@ namespace poundfe
           rayleigh_coefficients_of(input, building, b, analysis.building_modes.back()));
       }
     assemble_damping(model, coefficients, system);
+    add_modal_damping_of(analysis);
     if (n_modes > 0)
       analysis.modes = modes_of(input, modal, system.mass, system.stiffness, system.influence,
                                 n_modes, "the model");

@@ -106,6 +106,7 @@ namespace poundfe
                  linear_solver.empty() ? time_integration.linear_solver : linear_solver,
                  time_integration.newmark, &elements)
     , view(analysis_.model, analysis_.system, elements, integrator)
+    , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
   {
     integrator.set_equation_names(equation_names(analysis_.model));
   }
@@ -136,8 +137,7 @@ namespace poundfe
   TimeHistory::run(const Excitation &excitation, const Observers &observers,
                    const bool interruptible)
   {
-    const Vector rest = Vector::Zero(analysis.system.n_equations());
-    return run(rest, rest, excitation, observers, interruptible);
+    return run(initial.displacement, initial.velocity, excitation, observers, interruptible);
   }
 
   RunStatus

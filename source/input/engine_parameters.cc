@@ -22,7 +22,8 @@ namespace poundfe
   TimeHistoryParameters
   time_history_parameters(const InputParameters &input)
   {
-    return {input, input.time_integration, input.ground_motion, input.nodal_forces};
+    return {input, input.time_integration, input.ground_motion, input.nodal_forces,
+            input.initial_conditions};
   }
 
   RunParameters

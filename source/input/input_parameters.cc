@@ -222,6 +222,7 @@ namespace poundfe
     prm.leave_subsection();
     nodal_forces.declare(prm);
     time_integration.declare(prm);
+    initial_conditions.declare(prm);
     output.declare(prm);
     modal.declare(prm);
     monte_carlo.declare(prm);
@@ -251,6 +252,7 @@ namespace poundfe
     model.finalize(*this);
     ground_motion.check(*this, time_integration.newmark.time_step);
     time_integration.check(*this);
+    initial_conditions.finalize(*this);
     check_stochastic_samples();
     contact.check(*this);
     contact.links.check(*this);

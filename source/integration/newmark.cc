@@ -3,6 +3,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/integration/newmark.h>
+#include <poundfe/assembly/modal_damping.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -203,7 +204,9 @@ namespace poundfe
                 L->effective.coeffRef(i, j) += 0.0;
       }
     L->effective.makeCompressed();
-    L->solver = create_linear_solver(solver_name);
+    // modal damping: K_eff + c U D U^T by the Woodbury identity (assembly/modal_damping.h)
+    L->solver = with_low_rank_damping(create_linear_solver(solver_name), system.modal_damping,
+                                      L->c_damp_u);
     // every step size has K_eff's pattern: one symbolic analysis where the
     // backend can share it (UMFPACK)
     stats.shared_analyses +=
@@ -237,7 +240,8 @@ namespace poundfe
       {
         if (use_hybrid) // the tangent gets its own factorisation; K_eff's stays
           {
-            L->tangent_solver = create_linear_solver(solver_name);
+            L->tangent_solver = with_low_rank_damping(create_linear_solver(solver_name),
+                                                      system.modal_damping, L->c_damp_u);
             stats.shared_analyses +=
               L->tangent_solver->analyze_or_reuse(L->solver.get(), L->effective);
           }
@@ -303,7 +307,7 @@ namespace poundfe
   void
   NewmarkIntegrator::set_consistent_acceleration(const Vector &load)
   {
-    Vector r = load - system.damping * v - system.stiffness * u;
+    Vector r = load - damping_product(system, v) - system.stiffness * u;
     gather(u, v);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
@@ -422,6 +426,7 @@ namespace poundfe
     rhs.noalias() += system.mass * work_vector;
     work_vector.noalias() = L.c_damp_u * u + L.c_damp_v * v + L.c_damp_a * a;
     rhs.noalias() += system.damping * work_vector;
+    add_low_rank_damping_product(system.modal_damping, work_vector, rhs);
   }
 
   void
@@ -457,6 +462,12 @@ namespace poundfe
         L.holds_tangent = false;
       }
     residual.noalias() = rhs - L.effective * u_next;
+    if (!system.modal_damping.empty()) // the modal part of K_eff: c U D U^T
+      {
+        product.setZero();
+        add_low_rank_damping_product(system.modal_damping, u_next, product);
+        residual.noalias() -= L.c_damp_u * product;
+      }
     subtract_element_forces(residual);
     norm = residual.norm();
     if (!std::isfinite(norm))
@@ -727,9 +738,11 @@ namespace poundfe
         std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
         L.holds_tangent = false;
       }
-    residual_out = load - system.mass * an - system.damping * vn - system.stiffness * u_trial;
+    residual_out = load - system.mass * an - damping_product(system, vn) - system.stiffness * u_trial;
     subtract_element_forces(residual_out);
     tangent_out = Eigen::MatrixXd(L.effective);
+    if (const LowRankDamping &modal = system.modal_damping; !modal.empty())
+      tangent_out += L.c_damp_u * modal.factor * modal.weights.asDiagonal() * modal.factor.transpose();
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         const std::vector<int> &equations = (*elements)[h].equations();
@@ -765,6 +778,7 @@ namespace poundfe
     balance.input += 0.5 * work_vector.dot(load_now + p);
     velocity_sum = v + v_next;
     product.noalias() = system.damping * velocity_sum;
+    add_low_rank_damping_product(system.modal_damping, velocity_sum, product);
     balance.damping += 0.5 * work_vector.dot(product);
     for (unsigned int h = 0; h < n_elements; ++h)
       {

@@ -666,6 +666,9 @@ namespace poundfe
             d.first_mode  = p.damping_modes[0];
             d.second_mode = p.damping_modes[1];
           }
+        d.modal_ratios = p.modal_damping_ratios;
+        d.bands        = p.damping_bands;
+        d.damped_modes = p.damped_modes;
 
         if (b + 1 < parameters.buildings.size())
           left = building.right + value_for(parameters.separations, b);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace poundfe
 {
@@ -32,7 +33,9 @@ namespace poundfe
     static const NameTable<RayleighDamping::Kind> table(
       {{RayleighDamping::Kind::none, "none"},
        {RayleighDamping::Kind::modes, "modes"},
-       {RayleighDamping::Kind::coefficients, "coefficients"}});
+       {RayleighDamping::Kind::coefficients, "coefficients"},
+       {RayleighDamping::Kind::modal, "modal"},
+       {RayleighDamping::Kind::bands, "bands"}});
     return table;
   }
 
@@ -211,8 +214,10 @@ namespace poundfe
   {
     prm.enter_subsection("Damping");
     add_choice(prm, "Type", damping_type,
-               "Rayleigh damping C = a0 M + a1 K of this building: from a damping "
-               "ratio at two modes, from given coefficients, or none. Unit: -.",
+               "Damping of this building: Rayleigh C = a0 M + a1 K from a damping ratio "
+               "at two modes (modes) or from given coefficients (coefficients); modal "
+               "C = M Phi diag(2 zeta_i omega_i) Phi^T M over its first modes with a "
+               "ratio per mode (modal) or per frequency band (bands); or none. Unit: -.",
                damping_type_names());
     prm.add_parameter("Damping ratio", damping_ratio,
                       "Damping ratio at both modes (Type = modes). Unit: dimensionless.");
@@ -223,6 +228,18 @@ namespace poundfe
                       "Mass-proportional coefficient (Type = coefficients). Unit: 1/s.");
     prm.add_parameter("a1", rayleigh_a1,
                       "Stiffness-proportional coefficient (Type = coefficients). Unit: s.");
+    prm.add_parameter("Modal ratios", modal_damping_ratios,
+                      "Damping ratio of modes 1, 2, ... of this building (Type = modal); "
+                      "the modes beyond the list are undamped. Unit: dimensionless.");
+    prm.add_parameter("Bands", damping_band_entries,
+                      "Frequency bands 'low high ratio' (Hz, Hz, dimensionless), ';' between "
+                      "them (Type = bands): each of the first Damped modes modes whose "
+                      "frequency lies in [low, high) gets the band's ratio, the others none. "
+                      "Unit: per field.",
+                      dealii::Patterns::List(dealii::Patterns::Anything(), 0, 1000, ";"));
+    prm.add_parameter("Damped modes", damped_modes,
+                      "How many modes of this building the bands damp (Type = bands). "
+                      "Unit: -.");
     prm.leave_subsection();
     plan.declare(prm);
   }
@@ -322,6 +339,47 @@ namespace poundfe
       {
         input.non_negative(s + "Damping/a0", rayleigh_a0);
         input.non_negative(s + "Damping/a1", rayleigh_a1);
+      }
+    finalize_modal_damping(input, s + "Damping/");
+  }
+
+  void
+  BuildingParameters::finalize_modal_damping(const InputFile &input, const std::string &s)
+  {
+    const auto check_ratio = [&](const std::string &path, const double ratio) {
+      if (!(ratio >= 0 && ratio < 1))
+        input.fail(path, "a damping ratio must lie in [0, 1), got " + number_text(ratio));
+    };
+    if (damping_type == RayleighDamping::Kind::modal)
+      {
+        if (modal_damping_ratios.empty())
+          input.fail(s + "Modal ratios", "Type = modal needs a damping ratio per mode");
+        for (const double ratio : modal_damping_ratios)
+          check_ratio(s + "Modal ratios", ratio);
+      }
+    if (damping_type != RayleighDamping::Kind::bands)
+      return;
+    if (damping_band_entries.empty())
+      input.fail(s + "Bands", "Type = bands needs bands 'low high ratio'");
+    if (damped_modes < 1)
+      input.fail(s + "Damped modes", "Type = bands needs the number of modes it damps (>= 1)");
+    damping_bands.clear();
+    for (const std::string &entry : damping_band_entries)
+      {
+        std::istringstream words(entry);
+        DampingBand        band;
+        std::string        rest;
+        read_number(words, band.low);
+        read_number(words, band.high);
+        if (!read_number(words, band.damping_ratio) || (words >> rest))
+          input.fail(s + "Bands", "'" + trimmed(entry) + "' is not 'low high ratio'");
+        if (!(band.low >= 0 && band.high > band.low))
+          input.fail(s + "Bands", "'" + trimmed(entry) + "': needs 0 <= low < high (Hz)");
+        check_ratio(s + "Bands", band.damping_ratio);
+        for (const DampingBand &other : damping_bands)
+          if (band.low < other.high && other.low < band.high)
+            input.fail(s + "Bands", "'" + trimmed(entry) + "' overlaps another band");
+        damping_bands.push_back(band);
       }
   }
 

@@ -159,8 +159,7 @@ namespace poundfe
       }
     FundamentalMode mode;
     mode.omega              = modes->omega[0];
-    mode.damping_ratio = modal_damping_ratio(block(system.damping, range),
-                                             modes->shapes.col(0), mode.omega);
+    mode.damping_ratio = modal_damping_ratio(system, range, modes->shapes.col(0), mode.omega);
     return mode;
   }
 

@@ -3,6 +3,7 @@
 // sources in include/poundfe/separation/separation_spectrum.h and
 // doc/theory.md §7.1b.
 #include <poundfe/separation/separation_spectrum.h>
+#include <poundfe/assembly/modal_damping.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/output/floor_response.h>
@@ -30,6 +31,20 @@ namespace poundfe
     if (damping.rows() == 0) // no damping assembled
       return 0;
     return phi.dot(damping * phi) / (2 * omega);
+  }
+
+  double
+  modal_damping_ratio(const LinearSystem &system, const std::array<unsigned int, 2> range,
+                      const Eigen::VectorXd &phi, const double omega)
+  {
+    const double sparse =
+      system.damping.rows() ? modal_damping_ratio(block(system.damping, range), phi, omega) : 0;
+    if (system.modal_damping.empty())
+      return sparse;
+    Vector x = Vector::Zero(system.n_equations()), modal = Vector::Zero(system.n_equations());
+    x.segment(range[0], range[1] - range[0]) = phi;
+    add_low_rank_damping_product(system.modal_damping, x, modal);
+    return sparse + x.dot(modal) / (2 * omega);
   }
 
   unsigned int
@@ -132,7 +147,6 @@ namespace poundfe
     const auto          range  = analysis.model.equation_range(b);
     const Modes         modes  = modes_for_spectrum(analysis, b, n_modes, eigensolver, input);
     const SparseMatrix        mass   = block(system.mass, range);
-    const SparseMatrix damping = system.damping.rows() ? block(system.damping, range) : SparseMatrix();
     const Vector       influence = system.influence.segment(range[0], range[1] - range[0]);
 
     FloorResponse         floors(analysis.model);
@@ -142,7 +156,7 @@ namespace poundfe
       {
         const Eigen::VectorXd phi   = modes.shapes.col(i); // mass-normalised
         const double          omega = modes.omega[i];
-        const double          zeta  = modal_damping_ratio(damping, phi, omega);
+        const double          zeta  = modal_damping_ratio(system, range, phi, omega);
         const double          gamma = phi.dot(mass * influence);
         const double          sd    = spectral_displacement(target, 2 * M_PI / omega, zeta);
         response.omega.push_back(omega);

@@ -32,7 +32,7 @@ BOOST_AUTO_TEST_CASE(help_lists_the_allowed_values)
                          [](char a, char b) { return a == ' ' && b == ' '; }),
              help.end());
   for (const char *allowed :
-       {"Allowed: none, modes, coefficients.", "Allowed: fixed, pinned.",
+       {"Allowed: none, modes, coefficients, modal, bands.", "Allowed: fixed, pinned.",
         "Allowed: kanai-tajimi, clough-penzien, white-noise, record, none.",
         "Allowed: none, jennings, saragoni-hart, shinozuka-sato.", "Allowed: g, m/s^2.",
         "Allowed: eigen-ldlt, umfpack, petsc, trilinos, petsc-mumps.",

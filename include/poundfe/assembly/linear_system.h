@@ -30,13 +30,26 @@ namespace poundfe
   using SparseMatrix = Eigen::SparseMatrix<double>;
   using Vector       = Eigen::VectorXd;
 
+  /// The modal part of C, U diag(weights) U^T (assembly/modal_damping.h):
+  /// U = M Phi (n x m, dense; zero outside each damped building's rows),
+  /// weights 2 zeta_i omega_i. Empty without modal damping.
+  struct LowRankDamping
+  {
+    Eigen::MatrixXd factor;
+    Vector          weights;
+
+    bool empty() const { return weights.size() == 0; }
+  };
+
   struct LinearSystem
   {
     SparseMatrix mass;
     SparseMatrix stiffness; // K_E, plus K_G with P-Delta
     /// K_G, the P-Delta part of `stiffness` (0 x 0 without P-Delta).
     SparseMatrix geometric_stiffness;
-    SparseMatrix damping;
+    SparseMatrix damping; // Rayleigh and storey dashpots
+    /// Modal damping (Damping/Type = modal or bands): C = damping + this.
+    LowRankDamping modal_damping;
     /// Influence vector of a horizontal ground motion: 1 on every ux equation.
     Vector influence;
     /// Dimension 3 (empty in 2D): 1 on every uy (plan) equation, and 1 on

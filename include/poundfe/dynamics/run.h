@@ -4,6 +4,7 @@
 #define poundfe_dynamics_run_h
 
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/excitation_parameters.h>
@@ -25,11 +26,14 @@ namespace poundfe
     TimeIntegrationParameters time_integration;
     GroundMotionParameters    ground_motion;
     NodalForceParameters      nodal_forces;
+    /// The state at t = 0 (default: rest).
+    InitialConditionParameters initial_conditions;
   };
 
   /// The time-history engine of one model: the nonlinear elements and the
   /// integrator (with its factorisations) are set up once, and each run()
-  /// starts again from rest. Monte Carlo runs every realization through one.
+  /// starts again from the input's initial conditions (rest by default).
+  /// Monte Carlo runs every realization through one.
   class TimeHistory
   {
   public:
@@ -39,7 +43,8 @@ namespace poundfe
     TimeHistory(const TimeHistory &) = delete;
     TimeHistory &operator=(const TimeHistory &) = delete;
 
-    /// From rest to the end time under `excitation`; the observers see the
+    /// From the initial conditions to the end time under `excitation`
+    /// (initial_conditions.h); the observers see the
     /// initial state, every step and the end. A NumericalError ends the
     /// run with status failed; when `interruptible`, SIGINT/SIGTERM end it
     /// after the current step with status interrupted. (A realization of a
@@ -78,6 +83,7 @@ namespace poundfe
     NonlinearElements elements; // before the integrator, which points to them
     NewmarkIntegrator integrator;
     ResponseView      view;
+    const InitialState initial; // checked against the model on construction
   };
 
   /// The excitation the input describes: the ground motion and the nodal

@@ -6,6 +6,7 @@
 #define poundfe_input_input_parameters_h
 
 #include <poundfe/dynamics/bifurcation.h>
+#include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/dynamics/modal_parameters.h>
 #include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/reliability_analysis_parameters.h>
@@ -54,6 +55,7 @@ namespace poundfe
     GroundMotionParameters    ground_motion;
     NodalForceParameters      nodal_forces;
     TimeIntegrationParameters time_integration; // and Contact/Event refinement
+    InitialConditionParameters initial_conditions;
     OutputParameters          output;
     ModalParameters           modal;       // Modal analysis
     MonteCarloParameters      monte_carlo;

@@ -13,6 +13,9 @@
 // elements a step is one solve. Average acceleration (gamma = 1/2,
 // beta = 1/4) conserves the energy of undamped free vibration exactly, and
 // the trapezoidal work sums below then balance to the Newton tolerance.
+// C may carry a low-rank modal part U D U^T (assembly/modal_damping.h): its
+// products are taken as such, and every factorisation of K_eff (or of a
+// tangent) is wrapped by the Woodbury identity for it.
 // The initial acceleration solves M a_0 = p_0 - C v_0 - K u_0 - f_0 on the
 // equations that carry mass; massless equations (rotations under lumped
 // mass) are static and get a_0 = 0.

@@ -16,6 +16,7 @@
 #include <poundfe/laws/friction.h>
 #include <poundfe/laws/link_laws.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -203,14 +204,25 @@ namespace poundfe
     shear
   };
 
-  /// How the Rayleigh damping C = a0 M + a1 K of one building is defined.
+  /// A frequency band [low, high) (Hz) whose modes get one damping ratio.
+  struct DampingBand
+  {
+    double low = 0, high = 0, damping_ratio = 0;
+  };
+
+  /// How the damping of one building is defined: Rayleigh, C = a0 M + a1 K
+  /// (fitted at two modes or given), or modal, C = M Phi diag(2 zeta_i
+  /// omega_i) Phi^T M over its first modes (a ratio per mode, or per
+  /// frequency band; assembly/modal_damping.h).
   struct RayleighDamping
   {
     enum class Kind
     {
       none,
       modes,
-      coefficients
+      coefficients,
+      modal,
+      bands
     };
     Kind         kind          = Kind::none;
     double       damping_ratio = 0;
@@ -218,6 +230,21 @@ namespace poundfe
     unsigned int second_mode   = 2;
     double       a0            = 0;
     double       a1            = 0;
+    /// modal: the ratio of modes 1, 2, ... (as many modes as values).
+    std::vector<double>      modal_ratios;
+    /// bands: the bands, over the first `damped_modes` modes.
+    std::vector<DampingBand> bands;
+    unsigned int             damped_modes = 0;
+
+    /// Whether C is modal (low rank in the building's modes).
+    bool is_modal() const { return kind == Kind::modal || kind == Kind::bands; }
+    /// The modes the damping needs (0: none).
+    unsigned int n_modes_needed() const
+    {
+      return kind == Kind::modes ? std::max(first_mode, second_mode) :
+             kind == Kind::modal ? static_cast<unsigned int>(modal_ratios.size()) :
+             kind == Kind::bands ? damped_modes : 0u;
+    }
   };
 
   struct Building

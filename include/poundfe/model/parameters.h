@@ -84,6 +84,11 @@ namespace poundfe
     std::vector<unsigned int> damping_modes{1, 2};
     double                    rayleigh_a0 = 0.0;
     double                    rayleigh_a1 = 0.0;
+    // Modal damping.
+    std::vector<double>       modal_damping_ratios; // Type = modal
+    std::vector<std::string>  damping_band_entries; // Type = bands: 'low high ratio'
+    std::vector<DampingBand>  damping_bands;        // ... as finalize() reads them
+    unsigned int              damped_modes = 0;
 
     /// The building in plan (Model/Dimension = 3).
     PlanParameters plan;
@@ -102,6 +107,8 @@ namespace poundfe
     void declare_hinges(dealii::ParameterHandler &prm);        // Hinges
     void declare_bouc_wen(dealii::ParameterHandler &prm);      // Bouc-Wen
     void declare_damping(dealii::ParameterHandler &prm);       // Damping
+    /// Type = modal and bands: ratios in [0, 1), the bands read.
+    void finalize_modal_damping(const InputFile &input, const std::string &section);
   };
 
   /// The `Model` section and the buildings it announces.

@@ -46,6 +46,10 @@ namespace poundfe
   /// phi^T C phi / (2 omega) of a mass-normalised mode phi.
   double modal_damping_ratio(const SparseMatrix &damping, const Eigen::VectorXd &phi,
                              double omega);
+  /// The same for a mode phi of the building with the equations `range`,
+  /// C = its block of the sparse C plus its modal part (assembly/modal_damping.h).
+  double modal_damping_ratio(const LinearSystem &system, std::array<unsigned int, 2> range,
+                             const Eigen::VectorXd &phi, double omega);
 
   /// How many of the modes (their effective mass ratios, in order) EN 1998-1
   /// §4.3.3.3.1(3) takes: the fewest reaching `mass_fraction` (0.9) and every
