@@ -7,6 +7,7 @@
 
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/reliability_analysis_parameters.h>
 #include <poundfe/reliability/reliability_parameters.h>
 #include <poundfe/hazard/site_hazard_parameters.h>
@@ -58,6 +59,7 @@ namespace poundfe
     MonteCarloParameters      monte_carlo;
     SubsetParameters          subset;
     ReliabilityAnalysisParameters reliability; // Reliability (algebraic limit states)
+    RandomParameterParameters     random_parameters; // Random parameters (time histories)
     FragilityParameters       fragility;
     StationaryPdfParameters   stationary_pdf;
     SweepParameters           sweep;
