@@ -14,13 +14,16 @@
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/montecarlo.h>
+#include <poundfe/reliability/random_parameters.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace poundfe::commands
@@ -122,6 +125,42 @@ namespace poundfe::commands
       json.end_array();
       return plot;
     }
+
+    /// With random model parameters: each curve's total dispersion (the
+    /// run with them), its record-to-record part (the nominal model, the
+    /// same loading normals) and the modelling part
+    /// beta_M = sqrt(beta_T^2 - beta_RR^2) (theory §6.7).
+    void
+    write_dispersion_split(JsonWriter &json, const dealii::ConditionalOStream &out,
+                           const std::vector<FragilityCurve> &total,
+                           const std::vector<FragilityCurve> &nominal)
+    {
+      json.begin_array("dispersion");
+      for (std::size_t i = 0; i < total.size(); ++i)
+        {
+          const LognormalFragility &t = total[i].fit, &r = nominal[i].fit;
+          json.begin_object().value("name", total[i].name);
+          out << total[i].name << ": ";
+          if (!t.fitted || !r.fitted)
+            {
+              json.value("note", "not split: a curve is not fitted").end_object();
+              out << "dispersion not split (a curve is not fitted)\n";
+              continue;
+            }
+          const double modelling = std::sqrt(std::max(0.0, t.beta * t.beta - r.beta * r.beta));
+          json.value("beta_total", t.beta)
+            .value("beta_record_to_record", r.beta)
+            .value("beta_modelling", modelling)
+            .value("theta_nominal_g", r.theta);
+          if (t.beta < r.beta)
+            json.value("note", "beta_total < beta_record_to_record (sampling error): "
+                               "beta_modelling set to 0");
+          json.end_object();
+          out << "beta = " << rounded(t.beta) << " = sqrt(" << rounded(r.beta)
+              << "^2 record-to-record + " << rounded(modelling) << "^2 modelling)\n";
+        }
+      json.end_array();
+    }
   } // namespace
 
   int
@@ -136,7 +175,13 @@ namespace poundfe::commands
 
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
-    RealizationRunner runner(analysis, time_history_parameters(input));
+    const TimeHistoryParameters parameters = time_history_parameters(input);
+    RealizationRunner runner(analysis, parameters);
+    attach_random_parameters(runner, input.random_parameters, input, input.modal.eigensolver);
+    // with random parameters, the nominal model too: the record-to-record part
+    const std::unique_ptr<RealizationRunner> nominal =
+      runner.n_parameters() > 0 ? std::make_unique<RealizationRunner>(analysis, parameters) :
+                                  nullptr;
     const double      reference_pga = runner.reference_pga("fragility curves");
     if (rank == 0) // an earlier run's realizations stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});
@@ -146,23 +191,29 @@ namespace poundfe::commands
     const std::vector<double> &all_levels = input.fragility.pga_levels;
     const std::vector<double> &limits     = input.monte_carlo.drift_limits;
     const unsigned long        per_level  = input.fragility.realizations_per_level;
-    Progress progress(std::cerr, "realizations", all_levels.size() * per_level);
+    Progress progress(std::cerr, "realizations",
+                      (nominal ? 2 : 1) * all_levels.size() * per_level);
     const FragilityLevels done = run_fragility_levels(runner, input.fragility, limits,
                                                       reference_pga, directory, comm, progress);
+    FragilityLevels nominal_done;
+    if (nominal && !done.interrupted)
+      nominal_done = run_fragility_levels(*nominal, input.fragility, limits, reference_pga,
+                                          directory + "/record-to-record", comm, progress);
     progress.finish();
     timer.leave_subsection();
-    const int status = done.interrupted ? interrupted_exit_status() : 0;
+    const bool interrupted = done.interrupted || nominal_done.interrupted;
+    const int  status      = interrupted ? interrupted_exit_status() : 0;
     if (rank != 0)
       return status;
 
     timer.enter_subsection("fit and output");
     // Interrupted: the points and curves of the levels done.
     const std::vector<double> &levels = done.levels;
-    if (done.interrupted)
+    if (interrupted)
       pcout << "fragility interrupted after " << levels.size() << " of " << all_levels.size()
             << " PGA levels: the points and curves are of these; the same command runs the rest\n";
     JsonWriter json;
-    begin_summary(json, "fragility", input, done.interrupted ? "interrupted" : "completed");
+    begin_summary(json, "fragility", input, interrupted ? "interrupted" : "completed");
     json.value("intensity_measure", "PGA (g)")
       .value("pga_levels_g", all_levels)
       .value("completed_levels", levels.size())
@@ -180,15 +231,18 @@ namespace poundfe::commands
     write_points(directory, levels, curves);
     write_fitted(directory, levels, curves);
     const Plot plot = write_curves(json, pcout, levels, curves);
+    if (nominal && nominal_done.levels.size() == levels.size())
+      write_dispersion_split(json, pcout, curves,
+                             fit_fragility_curves(nominal_done, limits, runner.has_gaps()));
     json.end_object();
-    if (input.output.plots && !done.interrupted) // stop soon: the resumed run draws it
+    if (input.output.plots && !interrupted) // stop soon: the resumed run draws it
       draw_plots(directory, {plot});
     write_file_atomically(directory + "/summary.json", json.str());
     timer.leave_subsection();
 
     pcout << "results in " << directory
           << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
-          << (input.output.plots && !done.interrupted ? ", fragility.png" : "")
+          << (input.output.plots && !interrupted ? ", fragility.png" : "")
           << ", pga_*/realizations.csv)\n";
     print_timing(timer);
     return status;

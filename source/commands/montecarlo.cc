@@ -15,6 +15,8 @@
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/montecarlo.h>
+#include <poundfe/reliability/random_parameters.h>
+#include <poundfe/reliability/reliability_analysis_parameters.h>
 #include <poundfe/reliability/statistics.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -23,6 +25,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <memory>
 
 namespace poundfe::commands
 {
@@ -135,6 +138,44 @@ namespace poundfe::commands
       json.end_array().end_object();
     }
 
+    /// summary.json's random model parameters and the probabilities of the
+    /// limit states over the realizations (Random parameters).
+    void
+    write_limit_states(JsonWriter &json, const RandomParameterParameters &p,
+                       const ResponseLimitStates *limit_states, const MonteCarloTable &table,
+                       LimitStateProbabilities &probabilities)
+    {
+      if (p.has_variables())
+        {
+          json.begin_array("random_model_parameters");
+          for (unsigned int i = 0; i < p.names.size(); ++i)
+            json.begin_object()
+              .value("name", p.names[i])
+              .value("path", p.paths[i])
+              .value("distribution", distribution_name(p.distributions[i].type()))
+              .value("mean", p.distributions[i].mean())
+              .value("standard_deviation", p.distributions[i].standard_deviation())
+              .end_object();
+          json.end_array();
+        }
+      if (!limit_states)
+        return;
+      probabilities = limit_state_probabilities(*limit_states, table.responses, table.completed);
+      json.begin_object("limit_states").begin_array("limit_states");
+      for (unsigned int k = 0; k < limit_states->n_limit_states(); ++k)
+        {
+          json.begin_object()
+            .value("name", p.limit_state_names[k])
+            .value("expression", p.expressions[k]);
+          write_probability(json, probabilities.limit_states[k]);
+          json.end_object();
+        }
+      json.end_array().begin_object("system").value("type",
+                                                     system_names().name(p.system));
+      write_probability(json, probabilities.system);
+      json.end_object().end_object();
+    }
+
     /// pdf_*.csv and cdf_*.csv of each distribution, their entries in
     /// summary.json and their plots.
     std::vector<Plot>
@@ -231,6 +272,12 @@ namespace poundfe::commands
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
     RealizationRunner runner(analysis, time_history_parameters(input));
+    attach_random_parameters(runner, input.random_parameters, input, input.modal.eigensolver);
+    const std::unique_ptr<const ResponseLimitStates> limit_states =
+      input.random_parameters.has_limit_states() ?
+        std::make_unique<const ResponseLimitStates>(input.random_parameters,
+                                                    runner.response_names(), input) :
+        nullptr;
     if (rank == 0) // an earlier run's realizations stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});
     timer.leave_subsection();
@@ -251,6 +298,8 @@ namespace poundfe::commands
     const Exceedances         e      = count_exceedances(table, runner, limits);
     JsonWriter                json;
     write_statistics(json, input, runner, table, limits, e, n_ranks);
+    LimitStateProbabilities probabilities;
+    write_limit_states(json, input.random_parameters, limit_states.get(), table, probabilities);
     const std::vector<Plot> plots =
       write_distributions(json, directory, runner, table, input.monte_carlo.histogram_bins);
     json.end_object();
@@ -259,6 +308,14 @@ namespace poundfe::commands
     write_file_atomically(directory + "/summary.json", json.str());
     timer.leave_subsection();
 
+    for (unsigned int k = 0; k < probabilities.limit_states.size(); ++k)
+      pcout << "P(" << input.random_parameters.limit_state_names[k]
+            << " <= 0) = " << rounded(probabilities.limit_states[k].probability) << " (CoV "
+            << rounded(probabilities.limit_states[k].coefficient_of_variation) << ")\n";
+    if (probabilities.limit_states.size() > 1)
+      pcout << "P(" << system_names().name(input.random_parameters.system)
+            << " system fails) = " << rounded(probabilities.system.probability) << " (CoV "
+            << rounded(probabilities.system.coefficient_of_variation) << ")\n";
     report(pcout, input, runner, table, limits, e, directory, n_ranks);
     print_timing(timer);
     return status;

@@ -12,6 +12,7 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
+#include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/subset.h>
 #include <poundfe/reliability/subset_journal.h>
 
@@ -23,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace poundfe::commands
@@ -76,6 +78,13 @@ namespace poundfe::commands
         }
       else if (ss.response == SubsetResponse::peak_roof_displacement)
         columns = {runner.roof_displacement_column(ss.building)}, unit = " m";
+      else if (ss.response == SubsetResponse::limit_state)
+        {
+          if (!input.random_parameters.has_limit_states())
+            throw InputError(input.file, input.line_of("Subset simulation/Response"),
+                             "Subset simulation/Response",
+                             "limit state needs Random parameters/Limit states");
+        }
       else
         {
           if (!runner.has_gaps())
@@ -124,6 +133,7 @@ namespace poundfe::commands
     {
       std::string   response_name;
       unsigned int  n_variables = 0;
+      unsigned int  n_parameters = 0; // of them, random model parameters
       unsigned long failed_runs = 0;
       unsigned int  n_ranks     = 1;
       double        wall_time   = 0; // s
@@ -143,6 +153,8 @@ namespace poundfe::commands
         .value("samples_per_level", ss.samples_per_level)
         .value("conditional_probability", ss.conditional_probability)
         .value("random_variables", run.n_variables);
+      if (run.n_parameters > 0)
+        json.value("random_model_parameters", run.n_parameters);
       if (!result.interrupted) // otherwise there is no estimate at the threshold
         json.value("failure_probability", result.probability)
           .value("coefficient_of_variation", result.coefficient_of_variation);
@@ -175,11 +187,17 @@ namespace poundfe::commands
             << result.model_runs << " model runs; the same command resumes from "
             << "subset_runs.csv";
       else
-        out << "Subset Simulation: P(" << run.response_name << " > " << input.subset.threshold
-            << unit << ") = " << result.probability << " (CoV "
-            << result.coefficient_of_variation << "), " << result.levels.size() << " levels, "
-            << result.model_runs << " model runs"
-            << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
+        {
+          out << "Subset Simulation: P(";
+          if (input.subset.response == SubsetResponse::limit_state)
+            out << "g <= 0";
+          else
+            out << run.response_name << " > " << input.subset.threshold << unit;
+          out << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
+              << "), " << result.levels.size() << " levels, " << result.model_runs
+              << " model runs"
+              << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
+        }
       if (result.resumed_runs > 0)
         out << " (and " << result.resumed_runs << " resumed from subset_runs.csv)";
       out << "\nresults in " << directory << "/ (summary.json, subset_levels.csv, subset_runs.csv"
@@ -202,13 +220,21 @@ namespace poundfe::commands
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
     RealizationRunner runner(analysis, time_history_parameters(input));
+    attach_random_parameters(runner, input.random_parameters, input, input.modal.eigensolver);
     std::string       unit;
     const std::vector<unsigned int> columns = response_columns(input, runner, unit);
-    const SubsetSettings settings = settings_of(ss, runner);
+    // Response = limit state: Y = -g of the system, failure Y > 0
+    const bool limit_state = ss.response == SubsetResponse::limit_state;
+    const std::unique_ptr<const ResponseLimitStates> limit_states =
+      limit_state ? std::make_unique<const ResponseLimitStates>(
+                      input.random_parameters, runner.response_names(), input) :
+                    nullptr;
+    const double         threshold = limit_state ? 0.0 : ss.threshold;
+    const SubsetSettings settings  = settings_of(ss, runner);
     if (rank == 0) // an earlier run's journal stays: this run resumes from it
       prepare_output_directory(directory, subset_journal_files(directory));
     SubsetRunsFile journal(directory,
-                           subset_journal_settings(settings, runner.n_variables(), ss.threshold),
+                           subset_journal_settings(settings, runner.n_variables(), threshold),
                            comm);
     if (journal.n_resumed() > 0)
       pcout << "subset: resuming: " << journal.n_resumed()
@@ -216,12 +242,14 @@ namespace poundfe::commands
     timer.leave_subsection();
 
     timer.enter_subsection("levels");
-    SubsetRun           facts{subset_response_names().name(ss.response), runner.n_variables(), 0,
-                    dealii::Utilities::MPI::n_mpi_processes(comm), 0};
+    SubsetRun           facts{subset_response_names().name(ss.response), runner.n_variables(),
+                    runner.n_parameters(), 0, dealii::Utilities::MPI::n_mpi_processes(comm), 0};
     std::vector<double> responses;
     const auto          response = [&](const std::vector<double> &xi) {
       if (!runner.run(xi, responses))
         journal.mark_failed();
+      if (limit_state)
+        return -limit_states->system_value(responses);
       double y = 0;
       for (const unsigned int c : columns)
         y = std::max(y, responses[c]);
@@ -229,7 +257,7 @@ namespace poundfe::commands
     };
     const auto         start  = std::chrono::steady_clock::now();
     const SubsetResult result =
-      subset_simulation(response, runner.n_variables(), ss.threshold, settings, comm, &journal);
+      subset_simulation(response, runner.n_variables(), threshold, settings, comm, &journal);
     facts.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     facts.failed_runs = journal.finish(); // of this run and the runs it resumed
@@ -242,7 +270,8 @@ namespace poundfe::commands
     write_levels(directory, result);
     write_summary(directory, input, facts, result);
     if (input.output.plots && !result.interrupted) // stop soon
-      draw_plots(directory, {subset_plot(result, ss.threshold, facts.response_name + unit)});
+      draw_plots(directory, {subset_plot(result, threshold, limit_state ? "-g (system)" :
+                                                                   facts.response_name + unit)});
     timer.leave_subsection();
 
     report(pcout, input, directory, facts, unit, result);

@@ -17,8 +17,8 @@ namespace poundfe
     , parameters(parameters_)
     , excitation(make_excitation(analysis_, parameters_))
     , load(parameters_.ground_motion, parameters_.time_integration.newmark.time_step, excitation)
-    , history(analysis_, parameters_)
-    , peaks(analysis_.model, history.nonlinear_elements())
+    , history(std::make_unique<TimeHistory>(analysis_, parameters_))
+    , peaks(std::make_unique<PeakResponse>(analysis_.model, history->nonlinear_elements()))
   {
     const InputFile &input = parameters.input;
     if (load.n_variables() == 0)
@@ -43,6 +43,47 @@ namespace poundfe
     if (has_gaps())
       for (const char *n : {"n_impacts", "peak_contact_force", "min_clearance", "pounded"})
         names.push_back(n);
+    first_parameter_column = names.size();
+  }
+
+  RealizationRunner::~RealizationRunner() = default;
+
+  void
+  RealizationRunner::set_random_parameters(std::vector<ModelParameter>     random_parameters,
+                                           const std::vector<std::string> &parameter_names,
+                                           ParameterTransform              transform,
+                                           const Eigensolver               eigensolver)
+  {
+    Assert(!structure, dealii::ExcMessage("random parameters are set once"));
+    AssertDimension(random_parameters.size(), parameter_names.size());
+    if (random_parameters.empty())
+      return;
+    structure   = std::make_unique<ModelRealization>(analysis, std::move(random_parameters), eigensolver);
+    to_physical = std::move(transform);
+    names.insert(names.end(), parameter_names.begin(), parameter_names.end());
+    // the engine runs on the working model from now on
+    peaks.reset();
+    history = std::make_unique<TimeHistory>(structure->analysis(), parameters);
+    peaks   = std::make_unique<PeakResponse>(structure->analysis().model,
+                                           history->nonlinear_elements());
+  }
+
+  void
+  RealizationRunner::apply_parameters(const std::vector<double> &xi)
+  {
+    parameter_normals.assign(xi.begin() + load.n_variables(), xi.end());
+    to_physical(parameter_normals, parameter_values);
+    structure->apply(parameter_values);
+    const Analysis &working = structure->analysis();
+    if (structure->changes_linear_part())
+      { // new M, K, C: a new engine (the factorisations change)
+        peaks.reset();
+        history.reset();
+        history = std::make_unique<TimeHistory>(working, parameters);
+        peaks = std::make_unique<PeakResponse>(working.model, history->nonlinear_elements());
+      }
+    else // the same M, K, C and factorisations: new element laws only
+      history->replace_nonlinear_elements(working.model);
   }
 
   unsigned int
@@ -75,7 +116,8 @@ namespace poundfe
   RealizationRunner::run(const std::uint64_t realization, std::vector<double> &responses,
                          const double amplitude_factor)
   {
-    load.standard_normals(realization, xi);
+    xi.resize(n_variables());
+    standard_normals(load.seed(), realization, xi);
     return run(xi, responses, amplitude_factor);
   }
 
@@ -83,9 +125,9 @@ namespace poundfe
   RealizationRunner::run(const std::uint64_t realization, const Observers &observers,
                          const double amplitude_factor)
   {
-    load.standard_normals(realization, xi);
-    load.apply(xi, excitation, amplitude_factor);
-    return history.run(excitation, observers).completed();
+    xi.resize(n_variables());
+    standard_normals(load.seed(), realization, xi);
+    return run_with(xi, observers, amplitude_factor).completed();
   }
 
   double
@@ -108,9 +150,8 @@ namespace poundfe
   RealizationRunner::run(const std::vector<double> &normals, std::vector<double> &responses,
                          const double amplitude_factor)
   {
-    load.apply(normals, excitation, amplitude_factor);
-    const RunStatus      status = history.run(excitation, {&peaks});
-    const FloorResponse &floors = peaks.floors();
+    const RunStatus      status = run_with(normals, {peaks.get()}, amplitude_factor);
+    const FloorResponse &floors = peaks->floors();
 
     responses.assign(names.size(), 0.0);
     const std::vector<double> &drift = floors.peak_drift_ratio();
@@ -123,16 +164,30 @@ namespace poundfe
     responses[max_drift_column + 1] = *std::max_element(acceleration.begin(), acceleration.end());
     if (has_gaps())
       {
-        const std::vector<Impact> &impacts = history.state().impact_log().impacts();
+        const std::vector<Impact> &impacts = history->state().impact_log().impacts();
         double                     peak_force = 0;
         for (const Impact &impact : impacts)
           peak_force = std::max(peak_force, impact.peak_force);
         unsigned int c = max_drift_column + 2;
         responses[c++] = impacts.size();
         responses[c++] = peak_force;
-        responses[c++] = peaks.min_clearance();
+        responses[c++] = peaks->min_clearance();
         responses[c++] = impacts.empty() ? 0 : 1;
       }
+    std::copy(parameter_values.begin(), parameter_values.end(),
+              responses.begin() + first_parameter_column);
     return status.completed();
+  }
+
+  RunStatus
+  RealizationRunner::run_with(const std::vector<double> &normals, const Observers &observers,
+                              const double amplitude_factor)
+  {
+    AssertDimension(normals.size(), n_variables());
+    if (structure)
+      apply_parameters(normals);
+    load.apply(std::vector<double>(normals.begin(), normals.begin() + load.n_variables()),
+               excitation, amplitude_factor);
+    return history->run(excitation, observers);
   }
 } // namespace poundfe

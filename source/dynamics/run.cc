@@ -111,6 +111,14 @@ namespace poundfe
     integrator.set_equation_names(equation_names(analysis_.model));
   }
 
+  void
+  TimeHistory::replace_nonlinear_elements(const Model &model)
+  {
+    NonlinearElements fresh = make_nonlinear_elements(model);
+    AssertDimension(fresh.size(), elements.size());
+    elements = std::move(fresh); // the same object: the integrator points to it
+  }
+
   unsigned long
   TimeHistory::n_steps(const Excitation &excitation) const
   {

@@ -224,6 +224,7 @@ namespace poundfe
     fragility.declare(prm);
     stationary_pdf.declare(prm);
     reliability.declare(prm);
+    random_parameters.declare(prm);
     sweep.declare(prm);
     bifurcation.declare(prm);
     site_hazard.declare(prm);
@@ -252,6 +253,7 @@ namespace poundfe
     monte_carlo.check(*this);
     subset.check(*this, model);
     reliability.check(*this);
+    random_parameters.check(*this);
     fragility.check(*this);
     stationary_pdf.check(*this, time_integration.newmark.time_step);
     sweep.check(*this);

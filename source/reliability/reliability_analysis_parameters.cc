@@ -27,45 +27,15 @@ namespace poundfe
       return table;
     }
 
-    const NameTable<SystemType> &
-    system_names()
-    {
-      static const NameTable<SystemType> table(
-        {{SystemType::series, "series"}, {SystemType::parallel, "parallel"}});
-      return table;
-    }
-
-    /// The non-empty trimmed items of `text` separated by `separator`.
-    std::vector<std::string>
-    items(const std::string &text, const char separator)
-    {
-      std::vector<std::string> result;
-      std::stringstream        in(text);
-      std::string              item;
-      while (std::getline(in, item, separator))
-        if (!trimmed(item).empty())
-          result.push_back(trimmed(item));
-      return result;
-    }
-
-    std::vector<std::string>
-    words(const std::string &text)
-    {
-      std::vector<std::string> result;
-      std::istringstream       in(text);
-      for (std::string w; in >> w;)
-        result.push_back(w);
-      return result;
-    }
 
     double
-    number(const InputFile &input, const std::string &entry, const std::string &text,
+    number(const InputFile &input, const std::string &path, const std::string &text,
            const std::string &what)
     {
       char        *end   = nullptr;
       const double value = std::strtod(text.c_str(), &end);
       if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
-        input.fail(section + entry, what + ": '" + text + "' is not a number");
+        input.fail(path, what + ": '" + text + "' is not a number");
       return value;
     }
 
@@ -90,64 +60,115 @@ namespace poundfe
         }
       return {};
     }
-
-    /// One item "NAME DISTRIBUTION KEY VALUE ..." of Random variables.
-    Distribution
-    parse_variable(const InputFile &input, const std::vector<std::string> &w,
-                   const std::string &name)
-    {
-      const std::string entry = "Random variables";
-      if (w.size() < 2)
-        input.fail(section + entry, "'" + name + "' needs a distribution and its parameters");
-      // "truncated normal" is two words
-      const bool        two  = w.size() > 2 && w[1] == "truncated" && w[2] == "normal";
-      const std::string kind = two ? "truncated normal" : w[1];
-      DistributionType  type = DistributionType::normal;
-      try
-        {
-          type = distribution_type(kind);
-        }
-      catch (const std::invalid_argument &e)
-        {
-          input.fail(section + entry, "variable '" + name + "': " + e.what());
-        }
-      std::map<std::string, double> given;
-      for (std::size_t i = two ? 3 : 2; i < w.size(); i += 2)
-        {
-          if (i + 1 >= w.size())
-            input.fail(section + entry, "variable '" + name + "': '" + w[i] + "' has no value");
-          if (!given.emplace(w[i], number(input, entry, w[i + 1], "variable '" + name + "'")).second)
-            input.fail(section + entry, "variable '" + name + "': '" + w[i] + "' given twice");
-        }
-      const std::vector<std::string> keys = native_keys(type);
-      std::string                    native_list;
-      for (const std::string &k : keys)
-        native_list += " " + k;
-      try
-        {
-          if (given.count("mean") && (given.count("sd") || given.count("cov")) && given.size() == 2)
-            {
-              const double mean = given["mean"];
-              const double sd   = given.count("sd") ? given["sd"] : given["cov"] * std::abs(mean);
-              return Distribution::from_moments(type, mean, sd);
-            }
-          std::vector<double> p;
-          for (const std::string &k : keys)
-            if (given.count(k))
-              p.push_back(given[k]);
-          if (p.size() == keys.size() && given.size() == keys.size())
-            return Distribution::from_native(type, p);
-        }
-      catch (const std::invalid_argument &e)
-        {
-          input.fail(section + entry, "variable '" + name + "' (" + kind + "): " + e.what());
-        }
-      input.fail(section + entry,
-                 "variable '" + name + "' (" + kind + ") takes 'mean M sd S', 'mean M cov C'" +
-                   (type == DistributionType::truncated_normal ? " (not for this one)" : "") +
-                   " or its native parameters" + native_list);
-    }
   } // namespace
+
+  std::vector<std::string>
+  input_items(const std::string &text, const char separator)
+  {
+    std::vector<std::string> result;
+    std::stringstream        in(text);
+    std::string              item;
+    while (std::getline(in, item, separator))
+      if (!trimmed(item).empty())
+        result.push_back(trimmed(item));
+    return result;
+  }
+
+  std::vector<std::string>
+  input_words(const std::string &text)
+  {
+    std::vector<std::string> result;
+    std::istringstream       in(text);
+    for (std::string w; in >> w;)
+      result.push_back(w);
+    return result;
+  }
+
+  Distribution
+  parse_distribution(const InputFile &input, const std::string &path,
+                     const std::vector<std::string> &w)
+  {
+    const std::string &name = w.at(0);
+    if (w.size() < 2)
+      input.fail(path, "'" + name + "' needs a distribution and its parameters");
+    // "truncated normal" is two words
+    const bool        two  = w.size() > 2 && w[1] == "truncated" && w[2] == "normal";
+    const std::string kind = two ? "truncated normal" : w[1];
+    DistributionType  type = DistributionType::normal;
+    try
+      {
+        type = distribution_type(kind);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        input.fail(path, "variable '" + name + "': " + e.what());
+      }
+    std::map<std::string, double> given;
+    for (std::size_t i = two ? 3 : 2; i < w.size(); i += 2)
+      {
+        if (i + 1 >= w.size())
+          input.fail(path, "variable '" + name + "': '" + w[i] + "' has no value");
+        if (!given.emplace(w[i], number(input, path, w[i + 1], "variable '" + name + "'")).second)
+          input.fail(path, "variable '" + name + "': '" + w[i] + "' given twice");
+      }
+    const std::vector<std::string> keys = native_keys(type);
+    std::string                    native_list;
+    for (const std::string &k : keys)
+      native_list += " " + k;
+    try
+      {
+        if (given.count("mean") && (given.count("sd") || given.count("cov")) && given.size() == 2)
+          {
+            const double mean = given["mean"];
+            const double sd   = given.count("sd") ? given["sd"] : given["cov"] * std::abs(mean);
+            return Distribution::from_moments(type, mean, sd);
+          }
+        std::vector<double> p;
+        for (const std::string &k : keys)
+          if (given.count(k))
+            p.push_back(given[k]);
+        if (p.size() == keys.size() && given.size() == keys.size())
+          return Distribution::from_native(type, p);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        input.fail(path, "variable '" + name + "' (" + kind + "): " + e.what());
+      }
+    input.fail(path,
+               "variable '" + name + "' (" + kind + ") takes 'mean M sd S', 'mean M cov C'" +
+                 (type == DistributionType::truncated_normal ? " (not for this one)" : "") +
+                 " or its native parameters" + native_list);
+  }
+
+  DenseMatrix
+  parse_correlation(const InputFile &input, const std::string &path, const std::string &text,
+                    const std::vector<Distribution> &distributions)
+  {
+    DenseMatrix correlation;
+    for (const std::string &row : input_items(text, ';'))
+      {
+        correlation.emplace_back();
+        for (const std::string &x : input_words(row))
+          correlation.back().push_back(number(input, path, x, "correlation"));
+      }
+    try
+      {
+        NatafTransformation(distributions, correlation);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        input.fail(path, e.what());
+      }
+    return correlation;
+  }
+
+  const NameTable<SystemType> &
+  system_names()
+  {
+    static const NameTable<SystemType> table(
+      {{SystemType::series, "series"}, {SystemType::parallel, "parallel"}});
+    return table;
+  }
 
   const std::string &
   reliability_method_name(const ReliabilityMethod method)
@@ -233,40 +254,27 @@ namespace poundfe
   {
     variable_names.clear(), distributions.clear(), correlation.clear(), constants.clear();
     limit_state_names.clear(), expressions.clear(), methods.clear();
-    for (const std::string &item : items(random_variables_text, ';'))
+    for (const std::string &item : input_items(random_variables_text, ';'))
       {
-        const std::vector<std::string> w = words(item);
+        const std::vector<std::string> w = input_words(item);
         if (!is_identifier(w[0]))
           input.fail(section + "Random variables", "'" + w[0] + "' cannot name a variable "
                                                    "(a letter or '_', then letters, digits, '_')");
         for (const std::string &n : variable_names)
           if (n == w[0])
             input.fail(section + "Random variables", "'" + n + "' is named twice");
-        distributions.push_back(parse_variable(input, w, w[0]));
+        distributions.push_back(parse_distribution(input, section + "Random variables", w));
         variable_names.push_back(w[0]);
       }
-    for (const std::string &item : items(constants_text, ';'))
+    for (const std::string &item : input_items(constants_text, ';'))
       {
-        const std::vector<std::string> w = words(item);
+        const std::vector<std::string> w = input_words(item);
         if (w.size() != 2 || !is_identifier(w[0]))
           input.fail(section + "Constants", "'" + item + "' is not 'NAME VALUE'");
-        constants.emplace_back(w[0], number(input, "Constants", w[1], "constant " + w[0]));
+        constants.emplace_back(w[0], number(input, section + "Constants", w[1], "constant " + w[0]));
       }
-    for (const std::string &row : items(correlation_text, ';'))
-      {
-        correlation.emplace_back();
-        for (const std::string &x : words(row))
-          correlation.back().push_back(number(input, "Correlation", x, "correlation"));
-      }
-    try
-      {
-        NatafTransformation(distributions, correlation);
-      }
-    catch (const std::invalid_argument &e)
-      {
-        input.fail(section + "Correlation", e.what());
-      }
-    for (const std::string &item : items(limit_states_text, ';'))
+    correlation = parse_correlation(input, section + "Correlation", correlation_text, distributions);
+    for (const std::string &item : input_items(limit_states_text, ';'))
       {
         const std::size_t colon = item.find(':');
         const std::string name  = colon == std::string::npos ? "" : trimmed(item.substr(0, colon));
@@ -284,7 +292,7 @@ namespace poundfe
         limit_state_names.push_back(name);
         expressions.push_back(expression);
       }
-    for (const std::string &m : items(methods_text, ','))
+    for (const std::string &m : input_items(methods_text, ','))
       {
         try
           {

@@ -42,7 +42,8 @@ namespace poundfe
     static const NameTable<SubsetResponse> table(
       {{SubsetResponse::peak_drift_ratio, "peak drift ratio"},
        {SubsetResponse::peak_roof_displacement, "peak roof displacement"},
-       {SubsetResponse::peak_contact_force, "peak contact force"}});
+       {SubsetResponse::peak_contact_force, "peak contact force"},
+       {SubsetResponse::limit_state, "limit state"}});
     return table;
   }
 
@@ -52,7 +53,9 @@ namespace poundfe
     prm.enter_subsection("Subset simulation");
     add_choice(prm, "Response", response,
                "The response whose exceedance is estimated: the peak inter-storey drift "
-               "ratio, the peak roof displacement (m) or the peak contact force (N). Unit: -.",
+               "ratio, the peak roof displacement (m), the peak contact force (N), or limit "
+               "state: failure of the system of Random parameters/Limit states (Y = -g > 0; "
+               "Threshold is then not used). Unit: -.",
                subset_response_names());
     prm.add_parameter("Building", building_field,
                       "Building of the response: its number (1-based) or its Name. Unit: -.",
@@ -86,7 +89,8 @@ namespace poundfe
       names.push_back(b.name);
     building = read_building(input, names, trimmed(building_field), sp + "Building",
                              building_field) + 1;
-    input.positive(sp + "Threshold", threshold);
+    if (response != SubsetResponse::limit_state)
+      input.positive(sp + "Threshold", threshold);
     input.positive(sp + "Proposal spread", proposal_spread);
     // Any p0 in (0, 0.5] (Au & Beck 2001 use 0.1; Papaioannou et al. 2015
     // recommend 0.1-0.3): round(p0 N) seeds, chains of N/seeds states with

@@ -2,14 +2,23 @@
 // responses the probabilistic analyses use. The model, the excitation and
 // the time-history engine are built once; a realization only rewrites the
 // random samples (StochasticLoad::apply) and restarts from rest.
+// With random model parameters (set_random_parameters), a realization's
+// standard normals are those of the loading followed by one per parameter
+// (the loading's are the same with and without them); the parameters'
+// values are written into a working copy of the model
+// (dynamics/model_parameter.h): the time-history engine is made again only
+// when one enters M, K or C, otherwise only its nonlinear elements are.
 #ifndef poundfe_dynamics_realization_h
 #define poundfe_dynamics_realization_h
 
+#include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/dynamics/run.h>
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/output/peak_response.h>
 
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,10 +29,29 @@ namespace poundfe
   public:
     /// Throws InputError when the input has no random loading.
     RealizationRunner(const Analysis &analysis, const TimeHistoryParameters &parameters);
+    ~RealizationRunner();
 
-    unsigned int n_variables() const { return load.n_variables(); }
+    /// The standard normals of a realization: the loading's, then one per
+    /// random model parameter.
+    unsigned int n_variables() const { return load.n_variables() + n_parameters(); }
+    unsigned int n_load_variables() const { return load.n_variables(); }
+    unsigned int n_parameters() const { return structure ? structure->parameters().size() : 0; }
+
+    /// Maps the parameters' standard normals u to their values x.
+    using ParameterTransform =
+      std::function<void(const std::vector<double> &u, std::vector<double> &x)>;
+    /// Makes `parameters` random: their values are to_physical of the last
+    /// n_parameters() normals of each realization, and response columns
+    /// named `names` after the others. `eigensolver`: for the modes of a
+    /// building whose K and Rayleigh damping at modes change. Call once,
+    /// before any run.
+    void set_random_parameters(std::vector<ModelParameter> random_parameters,
+                               const std::vector<std::string> &names,
+                               ParameterTransform to_physical, Eigensolver eigensolver);
     const StochasticLoad &stochastic_load() const { return load; }
     bool has_gaps() const { return !analysis.model.gaps.empty(); }
+    /// The model as built (before any random parameter is applied).
+    const Model &model() const { return analysis.model; }
 
     /// Names of the response columns (realizations.csv, after 'realization,completed').
     const std::vector<std::string> &response_names() const { return names; }
@@ -54,19 +82,32 @@ namespace poundfe
     /// what needs the scaling.
     double reference_pga(const std::string &purpose) const;
     /// Steps of the analysis time step in a realization.
-    unsigned long n_steps() const { return history.n_steps(excitation); }
+    unsigned long n_steps() const { return history->n_steps(excitation); }
 
   private:
+    /// Writes the parameters of the normals xi[n_load_variables()...] into
+    /// the working model, remakes what they enter and records their values
+    /// in `parameter_values`.
+    void apply_parameters(const std::vector<double> &xi);
+    /// The time history of the normals xi (parameters applied first).
+    RunStatus run_with(const std::vector<double> &xi, const Observers &observers,
+                       double amplitude_factor);
+
     const Analysis          &analysis;
     const TimeHistoryParameters parameters;
     Excitation               excitation;
     StochasticLoad           load; // after the excitation it is made from
-    TimeHistory              history;
-    PeakResponse             peaks; // the one observer of a realization
+    std::unique_ptr<ModelRealization> structure; // random model parameters (or none)
+    ParameterTransform                to_physical;
+    std::vector<double>               parameter_normals, parameter_values;
+    /// on the working model of `structure` when there is one
+    std::unique_ptr<TimeHistory>  history;
+    std::unique_ptr<PeakResponse> peaks; // the one observer of a realization
     std::vector<std::string> names;
     std::vector<double>      xi;
     std::vector<unsigned int> roof_floor; // FloorResponse index of each building's roof
     unsigned int first_floor_column = 0, first_roof_column = 0, max_drift_column = 0;
+    unsigned int first_parameter_column = 0;
   };
 } // namespace poundfe
 

@@ -69,6 +69,12 @@ namespace poundfe
     /// Steps of the analysis time step to the end time.
     unsigned long n_steps(const Excitation &excitation) const;
 
+    /// The nonlinear elements made again from `model`, a copy of the
+    /// analysis' model whose nonlinear laws (not M, K, C, nor which DOFs an
+    /// element joins) differ: the integrator keeps its factorisations, which
+    /// depend on the elements' DOFs and tangent bases only.
+    void replace_nonlinear_elements(const Model &model);
+
   private:
     const Analysis   &analysis;
     const InputFile   input;            // for messages about the end time

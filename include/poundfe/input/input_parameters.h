@@ -8,6 +8,7 @@
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/reliability_analysis_parameters.h>
 #include <poundfe/reliability/reliability_parameters.h>
 #include <poundfe/hazard/site_hazard_parameters.h>
@@ -60,6 +61,7 @@ namespace poundfe
     MonteCarloParameters      monte_carlo;
     SubsetParameters          subset;
     ReliabilityAnalysisParameters reliability; // Reliability (algebraic limit states)
+    RandomParameterParameters     random_parameters; // Random parameters (time histories)
     FragilityParameters       fragility;
     StationaryPdfParameters   stationary_pdf;
     SweepParameters           sweep;

@@ -14,6 +14,7 @@
 #ifndef poundfe_reliability_reliability_analysis_parameters_h
 #define poundfe_reliability_reliability_analysis_parameters_h
 
+#include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/reliability/nataf.h>
 #include <poundfe/reliability/reliability_problem.h>
@@ -37,6 +38,28 @@ namespace poundfe
     monte_carlo,
     subset
   };
+
+  /// The non-empty trimmed items of `text` separated by `separator`.
+  std::vector<std::string> input_items(const std::string &text, char separator);
+  /// The words of `text` (separated by white space).
+  std::vector<std::string> input_words(const std::string &text);
+  /// The distribution of one random variable written as the words
+  /// "NAME DISTRIBUTION KEY VALUE ..." in the entry `path` (section/entry):
+  /// InputError naming the variable and what is wrong (an unknown
+  /// distribution or key, impossible parameters).
+  Distribution parse_distribution(const InputFile &input, const std::string &path,
+                                  const std::vector<std::string> &words);
+
+  /// The correlation matrix written in `text` (rows separated by ';'; empty:
+  /// independent) of variables with `distributions`: InputError at `path`
+  /// when it is not a matrix Nataf can take (not symmetric, not positive
+  /// definite, out of the marginals' reach).
+  DenseMatrix parse_correlation(const InputFile &input, const std::string &path,
+                                const std::string &text,
+                                const std::vector<Distribution> &distributions);
+
+  /// "series", "parallel".
+  const NameTable<SystemType> &system_names();
 
   /// "FORM", "SORM", "importance sampling", "Monte Carlo", "subset".
   const std::string &reliability_method_name(ReliabilityMethod method);

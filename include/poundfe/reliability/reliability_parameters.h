@@ -32,6 +32,7 @@ namespace poundfe
   {
     peak_drift_ratio,
     peak_roof_displacement,
+    limit_state, // the system of Random parameters/Limit states: Y = -g, failure Y > 0
     peak_contact_force
   };
 

@@ -1,0 +1,101 @@
+// Numeric parameters of a built model, named by the path of the input entry
+// they come from, and a realization of the model in which some of them take
+// sampled values (issue 24: uncertain structures).
+//   A path is an entry of the parameter file, optionally with a 1-based
+//   entry of a list in brackets:
+//     Building b/Storey stiffnesses[i]   k of storey i          (K; C through Rayleigh)
+//     Building b/Storey damping[i]       storey dashpot c       (C)
+//     Building b/Storey yield drifts[i]  Bouc-Wen u_y of storey i (nonlinear element)
+//     Building b/Hinges/Yield moment     M_y of every hinge of b: u_y = M_y / k (nonlinear)
+//     Building b/Damping/Damping ratio   zeta of b's Rayleigh damping (C)
+//     Model/Separations[i]               gap between buildings i and i+1 (nonlinear)
+//     Contact/Stiffness, Contact/Damping the contact law of every gap (nonlinear)
+//     Friction/Static coefficient, Friction/Kinetic coefficient (nonlinear)
+//   Without [i], a list entry takes the one value on every storey.
+// A realization writes the sampled values into a working copy of the built
+// Analysis (never the file, never the model builder). Only when a value
+// enters the linear part (K, C) are M, K (and, for Rayleigh damping fitted at
+// modes, the building's modes) and C assembled again; a value that enters a
+// nonlinear element only leaves M, K, C and their factorisations as they are.
+#ifndef poundfe_dynamics_model_parameter_h
+#define poundfe_dynamics_model_parameter_h
+
+#include <poundfe/dynamics/analysis.h>
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  struct ModelParameter
+  {
+    enum class Kind
+    {
+      storey_stiffness,
+      storey_damping,
+      storey_yield_drift,
+      hinge_yield_moment,
+      damping_ratio,
+      separation,
+      contact_stiffness,
+      contact_damping,
+      static_friction,
+      kinetic_friction
+    };
+    Kind         kind     = Kind::storey_stiffness;
+    std::string  path;          // as written
+    unsigned int building = 0;  // 0-based (storey, hinge, damping: the building; separation: the left one)
+    int          entry    = -1; // 0-based storey; -1: all
+
+    /// Whether the value enters M, K or C (else only nonlinear elements).
+    bool enters_linear_part() const;
+    /// Whether 0 is a value it can take (a damping, gap or friction
+    /// coefficient); otherwise only values > 0 are (a stiffness, yield
+    /// drift or moment, damping ratio). Negative values never are.
+    bool can_be_zero() const;
+  };
+
+  /// The parameter `path` names in `model`. Throws std::invalid_argument
+  /// saying what is wrong: no such entry, an entry that is not a number
+  /// poundfe can vary (with the list of those it can), a building or storey
+  /// out of range, a storey that is not hysteretic, no gaps, no hinges, ...
+  ModelParameter model_parameter(const std::string &path, const Model &model);
+
+  /// The value the built model has for `parameter` (its first storey, hinge
+  /// or gap when it names several).
+  double model_parameter_value(const ModelParameter &parameter, const Model &model);
+
+  /// The built model with some parameters sampled: owns a working copy of
+  /// the analysis the time history of a realization runs on.
+  class ModelRealization
+  {
+  public:
+    /// `eigensolver` recomputes a building's modes when its K changes and
+    /// its Rayleigh damping is fitted at modes.
+    ModelRealization(const Analysis &base, std::vector<ModelParameter> parameters,
+                     Eigensolver eigensolver);
+
+    const std::vector<ModelParameter> &parameters() const { return targets; }
+    /// The analysis with the values last applied (the base's before any).
+    const Analysis &analysis() const { return working; }
+    /// Whether any parameter enters the linear part.
+    bool changes_linear_part() const { return linear; }
+
+    /// Writes values[p] into parameter p; assembles M, K, C again when a
+    /// parameter enters them. Throws std::invalid_argument for a value the
+    /// model cannot take (a stiffness, yield drift, mass or ratio <= 0, a
+    /// negative damping or gap) naming the parameter, and NumericalError when
+    /// the sampled K has no modes (a mechanism).
+    void apply(const std::vector<double> &values);
+
+  private:
+    void assemble_linear_part(bool stiffness_changed);
+
+    Analysis                    working;
+    std::vector<ModelParameter> targets;
+    Eigensolver                 eigensolver;
+    bool                        linear = false;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,113 @@
+// The `Random parameters` section: numeric parameters of the model that are
+// random in the time-history sampling commands (montecarlo, subset,
+// fragility), and limit states over a realization's responses and those
+// parameters (issue 24, uncertain structures).
+//   set Variables    = NAME: PATH ~ DISTRIBUTION KEY VALUE ...; ...
+//       PATH: an input entry (dynamics/model_parameter.h lists them), a
+//       list entry with [i]; DISTRIBUTION and KEYs as Reliability/Random
+//       variables (reliability/distribution.h).
+//   set Correlation  = rows separated by ';' (Nataf; empty: independent)
+//   set Limit states = NAME: EXPRESSION; ...   failure: g <= 0
+//       over the response columns of realizations.csv (e.g.
+//       A_storey2_peak_drift_ratio, max_drift_ratio, peak_contact_force,
+//       n_impacts) and the variables' NAMEs (muParser, limit_state.h)
+//   set System       = series | parallel
+// A realization's standard normals are the loading's, then one per variable
+// (u), mapped by the Nataf transformation to the values x = T(u) that the
+// model takes (dynamics/realization.h): Subset Simulation moves in the
+// joint standard normal space of loading and structure.
+#ifndef poundfe_reliability_random_parameters_h
+#define poundfe_reliability_random_parameters_h
+
+#include <poundfe/base/input_file.h>
+#include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/reliability/limit_state.h>
+#include <poundfe/reliability/nataf.h>
+#include <poundfe/reliability/reliability_problem.h>
+#include <poundfe/reliability/statistics.h>
+
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  class RealizationRunner;
+
+  struct RandomParameterParameters
+  {
+    // as written
+    std::string variables_text, correlation_text, limit_states_text;
+    SystemType  system = SystemType::series;
+
+    // parsed by check()
+    std::vector<std::string>  names, paths;
+    std::vector<Distribution> distributions;
+    DenseMatrix               correlation; // empty: independent
+    std::vector<std::string>  limit_state_names, expressions;
+
+    void declare(dealii::ParameterHandler &prm);
+    /// Parses the section (InputError naming the entry: a variable not
+    /// 'NAME: PATH ~ DISTRIBUTION ...', impossible distribution parameters,
+    /// a correlation matrix that is not symmetric positive definite, a limit
+    /// state not 'NAME: EXPRESSION'). The paths and the expressions' names
+    /// are checked against the model by attach_random_parameters and
+    /// ResponseLimitStates.
+    void check(const InputFile &input);
+    bool has_variables() const { return !names.empty(); }
+    bool has_limit_states() const { return !expressions.empty(); }
+  };
+
+  /// Makes the section's variables random in `runner`: InputError at
+  /// Random parameters/Variables for a path the model does not have or
+  /// cannot vary, or a distribution that can sample values the parameter
+  /// cannot take (e.g. a normal stiffness: use a lognormal or a truncated
+  /// normal with lower >= 0).
+  void attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
+                                const InputFile &input, Eigensolver eigensolver);
+
+  /// The section's limit states g_k over a row of responses (the runner's
+  /// response_names(), which end with the variables' values).
+  class ResponseLimitStates
+  {
+  public:
+    /// InputError at Random parameters/Limit states for an expression that
+    /// names something that is neither a response nor a variable.
+    ResponseLimitStates(const RandomParameterParameters &p, const std::vector<std::string> &columns,
+                        const InputFile &input);
+
+    unsigned int n_limit_states() const { return limit_states.size(); }
+    const std::vector<std::string> &names() const { return limit_state_names; }
+    SystemType system() const { return system_type; }
+    /// g_k of a row.
+    double operator()(unsigned int k, const std::vector<double> &row) const;
+    /// min_k g_k (series) or max_k g_k (parallel): the system fails when <= 0.
+    double system_value(const std::vector<double> &row) const;
+
+  private:
+    std::vector<std::string>          limit_state_names;
+    std::vector<LimitStateExpression> limit_states;
+    std::vector<unsigned int>         used_columns; // of the row, in the expressions' order
+    SystemType                        system_type;
+    mutable std::vector<double>       values;
+  };
+
+  /// P(g_k <= 0) of each limit state and of the system over the rows of
+  /// `completed` realizations (crude Monte Carlo: failures / n, CoV
+  /// sqrt((1 - P)/(n P))).
+  struct LimitStateProbabilities
+  {
+    std::vector<ProbabilityEstimate> limit_states;
+    ProbabilityEstimate              system;
+  };
+  LimitStateProbabilities
+  limit_state_probabilities(const ResponseLimitStates                &limit_states,
+                            const std::vector<std::vector<double>> &rows,
+                            const std::vector<bool>                &completed);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,223 @@
+// The `Random parameters` section (reliability/random_parameters.h): random
+// model parameters through the Nataf transformation (Liu & Der Kiureghian
+// 1986; reliability/nataf.h) and limit states g(responses, x) <= 0 over the
+// rows of a time-history sampling run, estimated by crude Monte Carlo
+// P = n_f / n, CoV = sqrt((1 - P)/(n P)) (Melchers & Beck 2018, sec. 3.3).
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/reliability/random_parameters.h>
+#include <poundfe/reliability/reliability_analysis_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+namespace poundfe
+{
+  namespace
+  {
+    const std::string section = "Random parameters/";
+
+    /// Whether `d` can sample a value < 0 (or <= 0 when 0 is not allowed).
+    bool
+    samples_out_of_range(const Distribution &d, const bool zero_allowed)
+    {
+      const std::vector<double> &p      = d.parameters();
+      double                     lowest = 0;
+      switch (d.type())
+        {
+          case DistributionType::lognormal:
+          case DistributionType::weibull:
+            return false; // support (0, inf)
+          case DistributionType::uniform:
+            lowest = p[0];
+            break;
+          case DistributionType::truncated_normal:
+            lowest = p[2];
+            break;
+          case DistributionType::normal:
+          case DistributionType::gumbel:
+            return true;
+        }
+      return zero_allowed ? lowest < 0 : lowest <= 0;
+    }
+  } // namespace
+
+  void
+  RandomParameterParameters::declare(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Random parameters");
+    prm.add_parameter("Variables", variables_text,
+                      "Random model parameters of montecarlo, subset and fragility: 'NAME: PATH "
+                      "~ DISTRIBUTION KEY VALUE ...' separated by ';'. PATH: Building b/Storey "
+                      "stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
+                      "drifts[i] (without [i]: every storey), Building b/Hinges/Yield moment, "
+                      "Building b/Damping/Damping ratio, Model/Separations[i], Contact/Stiffness, "
+                      "Contact/Damping, Friction/Static coefficient, Friction/Kinetic "
+                      "coefficient. DISTRIBUTION and keys as Reliability/Random variables. Unit: "
+                      "that of the parameter.");
+    prm.add_parameter("Correlation", correlation_text,
+                      "Correlation matrix of the Variables in their order, rows separated by "
+                      "';' (empty: independent); Nataf transformation. Unit: dimensionless.");
+    prm.add_parameter("Limit states", limit_states_text,
+                      "'NAME: EXPRESSION' separated by ';', failure when <= 0: muParser "
+                      "expressions over the response columns of realizations.csv (e.g. "
+                      "max_drift_ratio, A_storey2_peak_drift_ratio, peak_contact_force, "
+                      "n_impacts) and the Variables' names. Unit: that of the expression.");
+    add_choice(prm, "System", system,
+               "How the Limit states combine: series (failure when any fails) or parallel "
+               "(when all fail). Unit: -.",
+               system_names());
+    prm.leave_subsection();
+  }
+
+  void
+  RandomParameterParameters::check(const InputFile &input)
+  {
+    names.clear(), paths.clear(), distributions.clear(), correlation.clear();
+    limit_state_names.clear(), expressions.clear();
+    const std::string entry = section + "Variables";
+    for (const std::string &item : input_items(variables_text, ';'))
+      {
+        const std::size_t colon = item.find(':'), tilde = item.find('~');
+        if (colon == std::string::npos || tilde == std::string::npos || tilde < colon)
+          input.fail(entry, "'" + item + "' is not 'NAME: PATH ~ DISTRIBUTION KEY VALUE ...'");
+        const std::string name = trimmed(item.substr(0, colon));
+        const std::string path = trimmed(item.substr(colon + 1, tilde - colon - 1));
+        if (!is_identifier(name))
+          input.fail(entry, "'" + name + "' cannot name a variable (a letter or '_', then "
+                            "letters, digits, '_')");
+        if (std::find(names.begin(), names.end(), name) != names.end())
+          input.fail(entry, "'" + name + "' is named twice");
+        if (path.empty())
+          input.fail(entry, "variable '" + name + "' names no parameter");
+        std::vector<std::string> words = input_words(item.substr(tilde + 1));
+        words.insert(words.begin(), name);
+        distributions.push_back(parse_distribution(input, entry, words));
+        names.push_back(name);
+        paths.push_back(path);
+      }
+    correlation = parse_correlation(input, section + "Correlation", correlation_text, distributions);
+    for (const std::string &item : input_items(limit_states_text, ';'))
+      {
+        const std::size_t colon = item.find(':');
+        const std::string name  = colon == std::string::npos ? "" : trimmed(item.substr(0, colon));
+        if (!is_identifier(name) || trimmed(item.substr(colon + 1)).empty())
+          input.fail(section + "Limit states", "'" + item + "' is not 'NAME: EXPRESSION'");
+        limit_state_names.push_back(name);
+        expressions.push_back(trimmed(item.substr(colon + 1)));
+      }
+  }
+
+  void
+  attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
+                           const InputFile &input, const Eigensolver eigensolver)
+  {
+    if (!p.has_variables())
+      return;
+    const std::string           entry = section + "Variables";
+    const Model                &model = runner.model();
+    std::vector<ModelParameter> parameters;
+    for (unsigned int i = 0; i < p.names.size(); ++i)
+      {
+        try
+          {
+            parameters.push_back(model_parameter(p.paths[i], model));
+          }
+        catch (const std::invalid_argument &e)
+          {
+            input.fail(entry, "variable '" + p.names[i] + "': " + e.what());
+          }
+        const ModelParameter &parameter = parameters.back();
+        if (samples_out_of_range(p.distributions[i], parameter.can_be_zero()))
+          input.fail(entry, "variable '" + p.names[i] + "': a " +
+                              distribution_name(p.distributions[i].type()) +
+                              " distribution can sample values " +
+                              (parameter.can_be_zero() ? "< 0" : "<= 0") + ", which '" +
+                              p.paths[i] + "' cannot take (use a lognormal or Weibull, or a "
+                              "uniform or truncated normal with lower " +
+                              (parameter.can_be_zero() ? ">= 0)" : "> 0)"));
+      }
+    const auto nataf = std::make_shared<const NatafTransformation>(p.distributions, p.correlation);
+    runner.set_random_parameters(
+      std::move(parameters), p.names,
+      [nataf](const std::vector<double> &u, std::vector<double> &x) { nataf->to_physical(u, x); },
+      eigensolver);
+  }
+
+  ResponseLimitStates::ResponseLimitStates(const RandomParameterParameters &p,
+                                           const std::vector<std::string>  &columns,
+                                           const InputFile                 &input)
+    : limit_state_names(p.limit_state_names)
+    , system_type(p.system)
+  {
+    // every column that can name a variable of an expression
+    std::vector<std::string> variables;
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      if (is_identifier(columns[c]))
+        {
+          variables.push_back(columns[c]);
+          used_columns.push_back(c);
+        }
+    for (unsigned int k = 0; k < p.expressions.size(); ++k)
+      {
+        try
+          {
+            limit_states.emplace_back(p.expressions[k], variables);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            input.fail(section + "Limit states",
+                       "limit state '" + p.limit_state_names[k] + "': " + e.what() +
+                         " (the names are the response columns of realizations.csv and the "
+                         "random parameters)");
+          }
+      }
+    values.resize(used_columns.size());
+  }
+
+  double
+  ResponseLimitStates::operator()(const unsigned int k, const std::vector<double> &row) const
+  {
+    for (unsigned int i = 0; i < used_columns.size(); ++i)
+      values[i] = row[used_columns[i]];
+    return limit_states[k](values);
+  }
+
+  double
+  ResponseLimitStates::system_value(const std::vector<double> &row) const
+  {
+    double value = (*this)(0, row);
+    for (unsigned int k = 1; k < limit_states.size(); ++k)
+      value = system_type == SystemType::series ? std::min(value, (*this)(k, row)) :
+                                                  std::max(value, (*this)(k, row));
+    return value;
+  }
+
+  LimitStateProbabilities
+  limit_state_probabilities(const ResponseLimitStates                &limit_states,
+                            const std::vector<std::vector<double>> &rows,
+                            const std::vector<bool>                &completed)
+  {
+    const unsigned int         n_k = limit_states.n_limit_states();
+    std::vector<unsigned long> failures(n_k, 0);
+    unsigned long              system_failures = 0, n = 0;
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      {
+        if (!completed[r])
+          continue;
+        ++n;
+        for (unsigned int k = 0; k < n_k; ++k)
+          failures[k] += limit_states(k, rows[r]) <= 0;
+        system_failures += limit_states.system_value(rows[r]) <= 0;
+      }
+    LimitStateProbabilities result;
+    for (unsigned int k = 0; k < n_k; ++k)
+      result.limit_states.push_back(estimate_probability(failures[k], n));
+    result.system = estimate_probability(system_failures, n);
+    return result;
+  }
+} // namespace poundfe
