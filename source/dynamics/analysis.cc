@@ -1,4 +1,5 @@
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/modal_damping_assembly.h>
 #include <poundfe/assembly/modal_damping.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/base/exceptions.h>
@@ -157,7 +158,7 @@ namespace poundfe
       switch (d.kind)
         {
           case RayleighDamping::Kind::none:
-          case RayleighDamping::Kind::modal: // C is modal (add_modal_damping_of)
+          case RayleighDamping::Kind::modal: // C is modal (assemble_modal_damping)
           case RayleighDamping::Kind::bands:
             return {{0, 0}};
           case RayleighDamping::Kind::coefficients:
@@ -211,25 +212,6 @@ namespace poundfe
       return ratios;
     }
 
-    /// The modal C = M Phi diag(2 zeta_i omega_i) Phi^T M of every building
-    /// whose damping is modal, as a low-rank term (assembly/modal_damping.h).
-    void
-    add_modal_damping_of(Analysis &analysis)
-    {
-      const Model &model = analysis.model;
-      for (unsigned int b = 0; b < model.buildings.size(); ++b)
-        {
-          const RayleighDamping &d = model.buildings[b].damping;
-          if (!d.is_modal())
-            continue;
-          const auto   range = model.equation_range(b);
-          const Modes &modes = analysis.building_modes[b];
-          add_modal_damping(analysis.system.modal_damping, model.n_equations(), range,
-                            block(analysis.system.mass, range), modes.shapes, modes.omega,
-                            modal_damping_ratios(d, modes));
-        }
-    }
-
     /// "2.5 %" for the ratio 0.025.
     std::string
     percent(const double ratio)
@@ -237,6 +219,24 @@ namespace poundfe
       return rounded(100 * ratio) + " %";
     }
   } // namespace
+
+  void
+  assemble_modal_damping(Analysis &analysis)
+  {
+    const Model &model = analysis.model;
+    analysis.system.modal_damping = LowRankDamping();
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const RayleighDamping &d = model.buildings[b].damping;
+        if (!d.is_modal())
+          continue;
+        const auto   range = model.equation_range(b);
+        const Modes &modes = analysis.building_modes[b];
+        add_modal_damping(analysis.system.modal_damping, model.n_equations(), range,
+                          block(analysis.system.mass, range), modes.shapes, modes.omega,
+                          modal_damping_ratios(d, modes));
+      }
+  }
 
   std::vector<std::string>
   damping_warnings(const Analysis &analysis, const InputFile &input)
@@ -337,7 +337,7 @@ namespace poundfe
           rayleigh_coefficients_of(input, building, b, analysis.building_modes.back()));
       }
     assemble_damping(model, coefficients, system);
-    add_modal_damping_of(analysis);
+    assemble_modal_damping(analysis);
     if (n_modes > 0)
       analysis.modes = modes_of(input, modal, system.mass, system.stiffness, system.influence,
                                 n_modes, "the model");

@@ -5,6 +5,7 @@
 // the model built from a file with that value (tests/dynamics/
 // test_model_parameters.cc checks exactly that).
 #include <poundfe/dynamics/model_parameter.h>
+#include <poundfe/dynamics/modal_damping_assembly.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -333,7 +334,7 @@ namespace poundfe
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
         const RayleighDamping &d = model.buildings[b].damping;
-        if (d.kind != RayleighDamping::Kind::modes)
+        if (d.kind != RayleighDamping::Kind::modes && !d.is_modal())
           continue;
         Modes &modes = working.building_modes[b];
         if (stiffness_changed)
@@ -343,9 +344,11 @@ namespace poundfe
                                   system.influence.segment(range[0], range[1] - range[0]),
                                   modes.n_modes(), eigensolver);
           }
-        coefficients[b] = rayleigh_coefficients(d.damping_ratio, modes.omega[d.first_mode - 1],
-                                                modes.omega[d.second_mode - 1]);
+        if (d.kind == RayleighDamping::Kind::modes)
+          coefficients[b] = rayleigh_coefficients(d.damping_ratio, modes.omega[d.first_mode - 1],
+                                                  modes.omega[d.second_mode - 1]);
       }
     assemble_damping(model, coefficients, system);
+    assemble_modal_damping(working); // modal buildings: from their new modes
   }
 } // namespace poundfe

@@ -1,0 +1,16 @@
+// The modal part of C of every building whose Damping/Type is modal or
+// bands, from its modes in Analysis::building_modes (theory §1.9a;
+// assembly/modal_damping.h). Used by prepare_analysis and, when random
+// structural parameters change the modes, by ModelRealization.
+#ifndef poundfe_dynamics_modal_damping_assembly_h
+#define poundfe_dynamics_modal_damping_assembly_h
+
+#include <poundfe/dynamics/analysis.h>
+
+namespace poundfe
+{
+  /// Replaces analysis.system.modal_damping by U D U^T of the modal buildings.
+  void assemble_modal_damping(Analysis &analysis);
+} // namespace poundfe
+
+#endif
