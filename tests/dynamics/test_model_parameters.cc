@@ -35,55 +35,87 @@ namespace
   }
 
   /// The overrides that give the file the values x of the file's variables
-  /// (k1, zeta, uy2, gap, kc in that order).
+  /// (k1, zeta, uy2, gap, kc in that order; zeta of building `damped`).
   std::vector<ParameterOverride>
-  overrides_of(const std::vector<double> &x)
+  overrides_of(const std::vector<double> &x, const unsigned int damped = 1)
   {
     return {{"Building 1/Storey stiffnesses", exact(x[0]) + ", 4e6, 3e6"},
-            {"Building 1/Damping/Damping ratio", exact(x[1])},
+            {"Building " + std::to_string(damped) + "/Damping/Damping ratio", exact(x[1])},
             {"Building 2/Storey yield drifts", exact(x[2]) + ", " + exact(x[2])},
             {"Model/Separations", exact(x[3])},
             {"Contact/Stiffness", exact(x[4])}};
+  }
+
+  /// Runs 6 realizations with the random parameters written in place and
+  /// compares every response with the file built with the sampled values
+  /// (and `base`, overrides that both routes share; zeta that of building
+  /// `damped`).
+  void
+  check_in_place_against_rebuilt(const std::vector<ParameterOverride> &base,
+                                 const unsigned int                    damped = 1)
+  {
+    const InputParameters input    = read_parameters(file, base);
+    const Analysis        analysis = prepare_analysis(input);
+    RealizationRunner     runner(analysis, time_history_parameters(input));
+    const unsigned int    n_load = runner.n_load_variables();
+    attach_random_parameters(runner, input.random_parameters, input, input.modal.eigensolver);
+    BOOST_TEST(runner.n_parameters() == 5u);
+    BOOST_TEST(runner.n_variables() == n_load + 5);
+    const unsigned int first_x = runner.response_names().size() - 5;
+    BOOST_TEST(runner.response_names()[first_x] == "k1");
+
+    unsigned int n_impacting = 0;
+    for (std::uint64_t r = 0; r < 6; ++r)
+      {
+        std::vector<double> responses;
+        BOOST_TEST(runner.run(r, responses));
+        const std::vector<double> x(responses.begin() + first_x, responses.end());
+
+        // the second route: the file with the sampled values, the same load normals
+        std::vector<ParameterOverride> with_values = base;
+        for (const ParameterOverride &o : overrides_of(x, damped))
+          with_values.push_back(o);
+        const InputParameters fixed = read_parameters(file, with_values);
+        const Analysis        fixed_analysis = prepare_analysis(fixed);
+        RealizationRunner     reference(fixed_analysis, time_history_parameters(fixed));
+        BOOST_TEST(reference.n_variables() == n_load);
+        std::vector<double> xi(n_load + 5);
+        standard_normals(reference.stochastic_load().seed(), r, xi);
+        xi.resize(n_load); // the loading's normals come first
+        std::vector<double> expected;
+        BOOST_TEST(reference.run(xi, expected));
+        BOOST_TEST_REQUIRE(expected.size() == first_x);
+        for (unsigned int c = 0; c < first_x; ++c)
+          BOOST_TEST(responses[c] == expected[c], boost::test_tools::tolerance(1e-9));
+        n_impacting += responses[runner.column("n_impacts")] > 0;
+      }
+    // the test exercises the contact law: some realizations pound, some not
+    BOOST_TEST_MESSAGE(n_impacting << " of 6 realizations pound");
+    BOOST_TEST(n_impacting > 0u);
   }
 } // namespace
 
 BOOST_AUTO_TEST_CASE(random_parameters_in_place_equal_the_model_built_with_them)
 {
-  const InputParameters input    = read_parameters(file);
-  const Analysis        analysis = prepare_analysis(input);
-  RealizationRunner     runner(analysis, time_history_parameters(input));
-  const unsigned int    n_load = runner.n_load_variables();
-  attach_random_parameters(runner, input.random_parameters, input, input.modal.eigensolver);
-  BOOST_TEST(runner.n_parameters() == 5u);
-  BOOST_TEST(runner.n_variables() == n_load + 5);
-  const unsigned int first_x = runner.response_names().size() - 5;
-  BOOST_TEST(runner.response_names()[first_x] == "k1");
+  check_in_place_against_rebuilt({});
+}
 
-  unsigned int n_impacting = 0;
-  for (std::uint64_t r = 0; r < 6; ++r)
-    {
-      std::vector<double> responses;
-      BOOST_TEST(runner.run(r, responses));
-      const std::vector<double> x(responses.begin() + first_x, responses.end());
-
-      // the second route: the file with the sampled values, the same load normals
-      const InputParameters fixed = read_parameters(file, overrides_of(x));
-      const Analysis        fixed_analysis = prepare_analysis(fixed);
-      RealizationRunner     reference(fixed_analysis, time_history_parameters(fixed));
-      BOOST_TEST(reference.n_variables() == n_load);
-      std::vector<double> xi(n_load + 5);
-      standard_normals(reference.stochastic_load().seed(), r, xi);
-      xi.resize(n_load); // the loading's normals come first
-      std::vector<double> expected;
-      BOOST_TEST(reference.run(xi, expected));
-      BOOST_TEST_REQUIRE(expected.size() == first_x);
-      for (unsigned int c = 0; c < first_x; ++c)
-        BOOST_TEST(responses[c] == expected[c], boost::test_tools::tolerance(1e-9));
-      n_impacting += responses[runner.column("n_impacts")] > 0;
-    }
-  // the test exercises the contact law: some realizations pound, some not
-  BOOST_TEST_MESSAGE(n_impacting << " of 6 realizations pound");
-  BOOST_TEST(n_impacting > 0u);
+// Per-mode damping (Damping/Type = modal) with a random storey stiffness: the
+// in-place route must rebuild C = M Phi diag(2 zeta omega) Phi^T M from the
+// new modes (assemble_modal_damping), as the file built with the sampled
+// stiffness does. (Building 1 has no damping ratio then: zeta is building 2's.)
+BOOST_AUTO_TEST_CASE(random_stiffness_with_modal_damping_rebuilds_the_modal_part)
+{
+  const std::string variables =
+    "k1: Building 1/Storey stiffnesses[1] ~ lognormal mean 5e6 cov 0.2; "
+    "zeta: Building 2/Damping/Damping ratio ~ uniform lower 0.01 upper 0.05; "
+    "uy2: Building 2/Storey yield drifts ~ truncated normal mu 0.003 sigma 0.001 lower 0.001 "
+    "upper 0.01; gap: Model/Separations[1] ~ lognormal mean 0.01 cov 0.5; "
+    "kc: Contact/Stiffness ~ Weibull mean 5e8 cov 0.3";
+  check_in_place_against_rebuilt({{"Building 1/Damping/Type", "modal"},
+                                  {"Building 1/Damping/Modal ratios", "0.02, 0.04, 0.05"},
+                                  {"Random parameters/Variables", variables}},
+                                 2);
 }
 
 BOOST_AUTO_TEST_CASE(random_parameter_values_follow_their_joint_distribution)
