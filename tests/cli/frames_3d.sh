@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# 3D frame buildings through the command line (doc/verification.md, "3D
+# frame buildings"): the example input/3d-torsional-pair.prm
+#  1. `modal` prints the mass ratios along y and about z of the frames;
+#  2. `run` completes, the slabs pound with their plan point in impacts.csv,
+#     the floors of both buildings turn (floor rotations in summary.json),
+#     the hinges report, and the energy balance closes (its error printed).
+set -eu
+poundfe=$1 input=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL $*"; exit 1; }
+
+"$poundfe" modal "$input/3d-torsional-pair.prm" --output "$work/modal" > "$work/modal.out"
+grep -q "mass ratio (y)" "$work/modal.out" || fail "modal prints no y mass ratios"
+grep -q '"participating_mass_ratio_rz"' "$work/modal/summary.json" || fail "no rz ratios"
+echo "ok   modal of the 3D frames"
+
+"$poundfe" run "$input/3d-torsional-pair.prm" --output "$work/pair" > /dev/null
+grep -q '"status": "completed"' "$work/pair/summary.json" || fail "not completed"
+head -1 "$work/pair/impacts.csv" | grep -q "plan_x_m,plan_y_m" || fail "impacts.csv without plan point"
+impacts=$(($(wc -l < "$work/pair/impacts.csv") - 1))
+[ "$impacts" -gt 0 ] || fail "the example pounds nowhere"
+[ -s "$work/pair/hinges.csv" ] || fail "no hinges.csv"
+error=$(sed -n 's/.*"max_relative_balance_error": \([^,}]*\).*/\1/p' "$work/pair/summary.json")
+awk -v e="$error" 'BEGIN { exit !(e != "" && e < 1e-6) }' || fail "energy balance error $error"
+echo "ok   the 3D frame pair pounds ($impacts impacts), energy balance error $error"
