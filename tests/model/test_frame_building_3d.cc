@@ -55,7 +55,8 @@ std::string frame_text(const unsigned int dimension,
           "  set Target PGA = 0.5\n  set Duration = 3\n  set Seed = 7\n"
           "  set Method = spectral-representation\n  set Cutoff frequency = "
           "100\n end\nend\n"
-          "subsection Time integration\n set Time step = 0.005\nend\n"
+          "subsection Time integration\n set Time step = 0.005\n"
+          " set Newton residual tolerance = 1e-12\nend\n"
           "subsection Output\n set Number of modes = 3\nend\n";
   return text;
 }
@@ -134,7 +135,9 @@ void check_equivalent(const bool hinges, const std::string &mass_matrix) {
              a2.model.n_equations() - (hinges ? a2.model.hinges.size() : 0));
   // tolerance: the same equations in another numbering and with the
   // out-of-plane DOFs (exactly 0) added: round-off, amplified by the
-  // time stepping and Newton's tolerance, stays far below 1e-10
+  // time stepping, stays far below 1e-10. With hinges Newton stops each
+  // step at its residual tolerance, here 1e-12 in both models (at the
+  // default 1e-8 the histories differ by ~2e-9 of their peaks).
   BOOST_TEST(worst_peak <= 1e-10);
   BOOST_TEST(worst_history <= 1e-10);
 }
@@ -266,13 +269,16 @@ BOOST_AUTO_TEST_CASE(hinge_tangent_matches_central_differences) {
     hinge.force_correction(minus);
     differences.col(j) = (plus - minus) / (2 * step);
   }
-  BOOST_TEST_MESSAGE("hinge tangent " << tangent.norm() << ", difference "
-                                      << (tangent - differences).norm());
+  // the ground entry (-1) is not a DOF: the element reads it as 0, so
+  // only the hinge's own equation (entry 0) is compared
+  BOOST_TEST_MESSAGE("hinge tangent change " << tangent(0, 0) << ", central differences "
+                                             << differences(0, 0) << ", initial stiffness "
+                                             << hinge.initial_stiffness());
   // tolerance: O(h^2) truncation and round-off ~1e-16 k u / h on a
-  // tangent of size k: 1e-6 relative
-  BOOST_TEST((tangent - differences).norm() <= 1e-6 * tangent.norm());
-  BOOST_TEST(tangent.norm() <
-             0.5 * hinge.initial_stiffness()); // it has yielded
+  // tangent of size k: 1e-6 relative to k
+  BOOST_TEST(std::abs(tangent(0, 0) - differences(0, 0)) <= 1e-6 * hinge.initial_stiffness());
+  // it has yielded: the tangent K_t = k + (K_t - k) is far below k
+  BOOST_TEST(hinge.initial_stiffness() + tangent(0, 0) < 0.2 * hinge.initial_stiffness());
 }
 
 BOOST_AUTO_TEST_CASE(bad_3d_frames_are_refused) {
