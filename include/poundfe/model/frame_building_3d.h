@@ -29,10 +29,11 @@
 #include <poundfe/model/model.h>
 #include <poundfe/model/parameters.h>
 
-namespace poundfe {
-/// Building b (0-based) of a 3D model with its plan centre at `centre`.
-void build_frame_3d(Model &model, const BuildingParameters &p, unsigned int b,
-                    Building &building, const Point2 &centre);
+namespace poundfe
+{
+  /// Building b (0-based) of a 3D model with its plan centre at `centre`.
+  void build_frame_3d(Model &model, const BuildingParameters &p, unsigned int b, Building &building,
+                      const Point2 &centre);
 } // namespace poundfe
 
 #endif
