@@ -1,6 +1,7 @@
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/frame_element.h>
+#include <poundfe/elements/frame_element_3d.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -98,6 +99,33 @@ namespace poundfe
           }
     }
 
+    /// The members of 3D frames (T_eᵀ K_e T_e, T_eᵀ M_e T_e over their model
+    /// DOFs: the diaphragm's master-slave reduction and the hinges), the
+    /// hinges' initial stiffness and the joints' vertical masses.
+    void
+    add_frame_3d_terms(const Model &model, Triplets &k_triplets, Triplets &m_triplets)
+    {
+      using RowMajor = Eigen::Matrix<double, 12, Eigen::Dynamic, Eigen::RowMajor>;
+      for (const Member3D &member : model.members_3d)
+        {
+          using Point3 = Eigen::Map<const Eigen::Vector3d>;
+          const FrameElement3D element(Point3(member.ends[0].data()),
+                                       Point3(member.ends[1].data()),
+                                       Point3(member.orientation.data()), member.section);
+          const Eigen::Map<const RowMajor> t(member.map.data(), 12, member.dofs.size());
+          scatter(model, member.dofs, Eigen::MatrixXd(t.transpose() * element.stiffness() * t),
+                  k_triplets);
+          scatter(model, member.dofs,
+                  Eigen::MatrixXd(t.transpose() * element.mass(model.mass_matrix) * t),
+                  m_triplets);
+        }
+      for (const Hinge3D &hinge : model.hinges_3d)
+        scatter(model, {n_dofs_per_node * hinge.node + hinge.slot},
+                Eigen::Matrix<double, 1, 1>(hinge.law.stiffness), k_triplets);
+      for (const DofMass &mass : model.dof_masses)
+        scatter(model, {mass.dof}, Eigen::Matrix<double, 1, 1>(mass.mass), m_triplets);
+    }
+
     /// 1 on the free equations of component c of every node.
     Vector
     influence_of(const Model &model, const Component c)
@@ -105,6 +133,8 @@ namespace poundfe
       Vector r = Vector::Zero(model.n_equations());
       for (unsigned int node = 0; node < model.n_nodes(); ++node)
         {
+          if (model.nodes[node].generalized) // not (ux, uy, rz): a 3D joint's (uz, rx, ry)
+            continue;
           const int row = model.equation(Model::dof(node, c));
           if (row >= 0)
             r[row] = 1;
@@ -157,6 +187,7 @@ namespace poundfe
             m_triplets.emplace_back(row, row, mass.mass);
         }
     add_plan_terms(model, k_triplets, m_triplets);
+    add_frame_3d_terms(model, k_triplets, m_triplets);
 
     LinearSystem system;
     system.stiffness = from_triplets(n, k_triplets);

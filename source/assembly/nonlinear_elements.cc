@@ -20,6 +20,11 @@ namespace poundfe
         std::array<int, 2>{{model.equation(Model::dof(hinge.member_node, Component::rz)),
                             model.equation(Model::dof(hinge.joint_node, Component::rz))}},
         std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
+    for (const Hinge3D &hinge : model.hinges_3d)
+      elements.emplace_back<UniaxialElement>(
+        ElementKind::hinge, hinge.building, hinge.label,
+        std::array<int, 2>{{model.equation(n_dofs_per_node * hinge.node + hinge.slot), -1}},
+        std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
     std::vector<unsigned int> storey_of_building(model.buildings.size(), 0);
     for (const StoreyLink &link : model.links)
       {

@@ -51,6 +51,12 @@ namespace poundfe
           mass += member.section.mass_per_length *
                   std::hypot(p1.x - p0.x, p1.y - p0.y);
         }
+    for (const Member3D &member : members_3d)
+      if (member.building == b)
+        mass += member.section.mass_per_length *
+                std::hypot(member.ends[1][0] - member.ends[0][0],
+                           member.ends[1][1] - member.ends[0][1],
+                           member.ends[1][2] - member.ends[0][2]);
     return mass;
   }
 } // namespace poundfe

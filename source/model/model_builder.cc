@@ -1,6 +1,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/mesh/line_mesh.h>
+#include <poundfe/model/frame_building_3d.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/model/plan_builder.h>
 
@@ -585,7 +586,14 @@ namespace poundfe
       if (model.dimension == 3 && !contact.barriers.empty())
         input.fail("Contact/Barriers", "barriers are not available with Dimension = 3");
       if (contact.between_buildings && model.dimension == 3)
-        add_plan_contacts(model, contact);
+        {
+          for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
+            if (parameters.buildings[b].type == BuildingType::frame &&
+                parameters.buildings[b].diaphragm == "none")
+              input.fail("Building " + std::to_string(b + 1) + "/Diaphragm",
+                         "contact in plan acts between slabs: it needs Diaphragm = rigid");
+          add_plan_contacts(model, contact);
+        }
       else if (contact.between_buildings)
         for (unsigned int b = 0; b + 1 < model.buildings.size(); ++b)
           add_gaps_between(model, contact, b, b + 1, value_for(parameters.separations, b));
@@ -640,7 +648,10 @@ namespace poundfe
         switch (p.type)
           {
             case BuildingType::frame:
-              build_frame(model, p, b, building);
+              if (parameters.dimension == 3)
+                build_frame_3d(model, p, b, building, plan_centre(p, left));
+              else
+                build_frame(model, p, b, building);
               break;
             case BuildingType::shear:
               if (parameters.dimension == 3)

@@ -75,6 +75,7 @@ namespace poundfe
                       "per floor. Frames: lumped in equal shares at the floor's joints; "
                       "shear buildings: the floor mass. Unit: kg.");
     declare_frame_entries(prm);
+    declare_frame_3d_entries(prm);
     declare_mesh_entries(prm);
     declare_shear_entries(prm);
     declare_hinges(prm);
@@ -392,9 +393,11 @@ namespace poundfe
     for (unsigned int b = 0; b < buildings.size(); ++b)
       {
         const std::string s = "Building " + std::to_string(b + 1) + "/";
-        if (buildings[b].type != BuildingType::shear)
-          input.fail(s + "Type", "Dimension = 3 takes shear buildings (3 DOFs per floor) "
-                                 "only; 3D frames are not yet in the input");
+        if (buildings[b].type == BuildingType::mesh)
+          input.fail(s + "Type", "Dimension = 3 takes shear buildings and frames; meshes "
+                                 "are planar");
+        if (buildings[b].type == BuildingType::frame)
+          buildings[b].finalize_frame_3d(input, s);
         buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
       }
   }
@@ -426,9 +429,9 @@ namespace poundfe
                geometric_nonlinearity_names());
     prm.add_parameter("Dimension", dimension,
                       "2: planar frames and stick models (x horizontal, y up). 3: "
-                      "torsionally coupled shear buildings in plan (x, y horizontal; each "
-                      "floor a rigid diaphragm moving ux, uy, rz; Building <i>/Plan), with "
-                      "contact between the slab outlines. Unit: -.",
+                      "torsionally coupled shear buildings and 3D frames in plan (x, y "
+                      "horizontal, z up; each floor a rigid diaphragm moving ux, uy, rz; "
+                      "Building <i>/Plan), with contact between the slab outlines. Unit: -.",
                       Patterns::Integer(2, 3));
     prm.add_parameter("Gravity", gravity,
                       "Acceleration of gravity for the P-Delta loads. Unit: m/s^2.");

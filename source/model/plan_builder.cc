@@ -14,24 +14,6 @@ namespace poundfe
 {
   namespace
   {
-    /// The building's frame on the site: x_site = centre + R (x_local).
-    struct PlanFrame
-    {
-      Point2 centre;
-      double angle = 0; // rad
-
-      Point2 place(const Point2 &x) const
-      {
-        const double c = std::cos(angle), s = std::sin(angle);
-        return {centre.x + c * x.x - s * x.y, centre.y + s * x.x + c * x.y};
-      }
-      Point2 turn(const Point2 &d) const
-      {
-        const double c = std::cos(angle), s = std::sin(angle);
-        return {c * d.x - s * d.y, s * d.x + c * d.y};
-      }
-    };
-
     /// The planes of storey i (building frame): as given, or four on the
     /// slab's edges sharing the storey stiffness equally per direction.
     std::vector<PlaneEntry>
@@ -77,7 +59,7 @@ namespace poundfe
 
     /// The same building on the site.
     TorsionalShearBuilding
-    placed(TorsionalShearBuilding building, const PlanFrame &frame)
+    placed(TorsionalShearBuilding building, const SitePlan &frame)
     {
       for (TorsionalFloor &floor : building.floors)
         {
@@ -92,7 +74,7 @@ namespace poundfe
     }
 
     std::vector<Point2>
-    slab_outline(const BuildingParameters &p, const PlanFrame &frame)
+    slab_outline(const BuildingParameters &p, const SitePlan &frame)
     {
       const double hx = 0.5 * p.plan.dimensions[0], hy = 0.5 * p.plan.dimensions[1];
       return {frame.place({-hx, -hy}), frame.place({hx, -hy}), frame.place({hx, hy}),
@@ -248,6 +230,31 @@ namespace poundfe
         }
   }
 
+  Point2
+  SitePlan::place(const Point2 &x) const
+  {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return {centre.x + c * x.x - s * x.y, centre.y + s * x.x + c * x.y};
+  }
+
+  Point2
+  SitePlan::turn(const Point2 &d) const
+  {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return {c * d.x - s * d.y, s * d.x + c * d.y};
+  }
+
+  SitePlan
+  site_plan(const BuildingParameters &p, const Point2 &centre)
+  {
+    SitePlan plan;
+    plan.centre   = centre;
+    plan.angle    = p.plan.rotation * M_PI / 180;
+    plan.building = placed(local_building(p), plan);
+    plan.outline  = slab_outline(p, plan);
+    return plan;
+  }
+
   double
   plan_half_width(const BuildingParameters &p)
   {
@@ -260,8 +267,8 @@ namespace poundfe
   build_plan_building(Model &model, const BuildingParameters &p, const unsigned int b,
                       Building &building, const Point2 &centre, const InputFile &input)
   {
-    const PlanFrame frame{centre, p.plan.rotation * M_PI / 180};
-    const TorsionalShearBuilding site = placed(local_building(p), frame);
+    const SitePlan               plan = site_plan(p, centre);
+    const TorsionalShearBuilding &site = plan.building;
     const std::string planes_path = "Building " + std::to_string(b + 1) + "/Plan/Resisting planes";
     try
       {
@@ -284,7 +291,7 @@ namespace poundfe
       return nodes.back();
     };
     model.nodes[add_node({centre.x, 0.0})].fixed = {{true, true, true}};
-    const std::vector<Point2> outline = slab_outline(p, frame);
+    const std::vector<Point2> &outline = plan.outline;
     double level = 0;
     for (unsigned int i = 0; i < site.n_floors(); ++i)
       {

@@ -16,28 +16,29 @@ namespace poundfe
     prm.enter_subsection("Plan");
     prm.add_parameter("Plan dimensions", dimensions,
                       "[3D shear] Slab rectangle L_x, L_y in the building's frame (the slab "
-                      "outline for contact, and the polar moments by default). Unit: m.");
+                      "outline for contact, and the polar moments by default); 3D frames: "
+                      "the column grid. Unit: m.");
     prm.add_parameter("Position", position,
-                      "[3D shear] Plan centre x, y on the site; empty: in a row along x, "
+                      "[3D] Plan centre x, y on the site; empty: in a row along x, "
                       "Model/Separations apart, centred on y = 0. Unit: m.");
     prm.add_parameter("Rotation", rotation,
-                      "[3D shear] Rotation of the building's frame on the site, counter-"
+                      "[3D] Rotation of the building's frame on the site, counter-"
                       "clockwise. Unit: degrees.");
     prm.add_parameter("Polar moments", polar_moments,
-                      "[3D shear] Polar moment of inertia of each floor about its mass "
+                      "[3D] Polar moment of inertia of each floor about its mass "
                       "centre, one or one per floor; empty: m (L_x^2 + L_y^2) / 12 (a "
                       "uniform slab). Unit: kg m^2.");
     prm.add_parameter("Mass eccentricity", mass_eccentricity,
-                      "[3D shear] Mass centre e_x, e_y from the plan centre, building frame. "
+                      "[3D] Mass centre e_x, e_y from the plan centre, building frame. "
                       "Unit: m.");
     prm.add_parameter("Accidental eccentricity", accidental,
-                      "[3D shear] The codes' accidental eccentricity (EN 1998-1 4.3.2, ASCE "
+                      "[3D] The codes' accidental eccentricity (EN 1998-1 4.3.2, ASCE "
                       "7-16 12.8.4.2): the mass centre moved by the ratio times the plan "
                       "dimension normal to the action: +x or -x (action along y, shift "
                       "along x), +y or -y (action along x, shift along y), or none. Unit: -.",
                       Patterns::Selection("none|+x|-x|+y|-y"));
     prm.add_parameter("Accidental eccentricity ratio", accidental_ratio,
-                      "[3D shear] The ratio of the accidental eccentricity. Unit: "
+                      "[3D] The ratio of the accidental eccentricity. Unit: "
                       "dimensionless.");
     prm.add_parameter("Resisting planes", planes_text,
                       "[3D shear] Lateral-resisting planes of every storey, separated by ';', "

@@ -50,20 +50,7 @@ namespace poundfe
   using Matrix12 = Eigen::Matrix<double, 12, 12>;
   using Vector12 = Eigen::Matrix<double, 12, 1>;
 
-  /// Elastic section of a member in space. A shear area of 0 means no shear
-  /// deformation in that plane (Euler-Bernoulli).
-  struct Section3D
-  {
-    double youngs_modulus   = 0;
-    double shear_modulus    = 0;
-    double area             = 0;
-    double second_moment_y  = 0; // Iy: bending in the local x-z plane
-    double second_moment_z  = 0; // Iz: bending in the local x-y plane
-    double torsion_constant = 0; // J (Saint-Venant)
-    double shear_area_y     = 0; // Avy: shear along local y
-    double shear_area_z     = 0; // Avz: shear along local z
-    double mass_per_length  = 0;
-  };
+  // Section3D: model/model.h (the model keeps the sections of its members).
 
   /// Whether the mass matrices carry the rotary inertia ρI of the bending
   /// rotations (the twist always carries its ρIp).

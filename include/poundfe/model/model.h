@@ -42,9 +42,28 @@ namespace poundfe
     double mass_per_length = 0;
   };
 
+  /// Elastic section of a member in space (elements/frame_element_3d.h). A
+  /// shear area of 0 means no shear deformation in that plane.
+  struct Section3D
+  {
+    double youngs_modulus   = 0;
+    double shear_modulus    = 0;
+    double area             = 0;
+    double second_moment_y  = 0; // Iy: bending in the local x-z plane
+    double second_moment_z  = 0; // Iz: bending in the local x-y plane
+    double torsion_constant = 0; // J (Saint-Venant)
+    double shear_area_y     = 0; // Avy: shear along local y
+    double shear_area_z     = 0; // Avz: shear along local z
+    double mass_per_length  = 0;
+  };
+
   struct Node
   {
     Point2                   position;
+    /// A node of a 3D frame whose three DOFs are not (ux, uy, rz): the
+    /// joint's (uz, rx, ry), or a hinge's two relative rotations (model/
+    /// frame_building_3d.h). The ground's influence skips it.
+    bool                     generalized = false;
     unsigned int             building = 0;
     std::array<bool, 3>      fixed{{false, false, false}};
     /// A hinge node shares the translations (ux, uy) of this node; -1: none.
@@ -98,6 +117,42 @@ namespace poundfe
     unsigned int      building    = 0;
     std::string       label;
     BoucWenParameters law;
+  };
+
+  /// A 3D beam-column of a frame building (Dimension 3; elements/
+  /// frame_element_3d.h): its 12 end DOFs (ux, uy, uz, rx, ry, rz per end,
+  /// site axes) are u_e = T q over the model DOFs `dofs`, T (12 x
+  /// dofs.size(), row-major in `map`) the exact master-slave reduction of
+  /// the rigid floor diaphragm and the hinge rotations; the ground is 0.
+  struct Member3D
+  {
+    std::array<std::array<double, 3>, 2> ends{};        // (x, y, z), site
+    std::array<double, 3>                orientation{}; // v_xz, in the local x-z plane
+    Section3D                            section;
+    unsigned int                         building = 0;
+    MemberKind                           kind     = MemberKind::other;
+    std::string                          label;
+    std::vector<unsigned int>            dofs;
+    std::vector<double>                  map;
+  };
+
+  /// A Bouc-Wen hinge of a 3D member end about one local bending axis: its
+  /// deformation is the relative rotation, DOF `slot` of `node` (a
+  /// generalized node); torsion and axial stay elastic.
+  struct Hinge3D
+  {
+    unsigned int      node     = 0;
+    unsigned int      slot     = 0; // 0: about the local y axis, 1: about z
+    unsigned int      building = 0;
+    std::string       label;
+    BoucWenParameters law;
+  };
+
+  /// A mass on one DOF (3D frames: a joint's vertical translation).
+  struct DofMass
+  {
+    unsigned int dof  = 0;
+    double       mass = 0;
   };
 
   /// Two facing slab edges in plan, at rest, site coordinates: the edge of
@@ -284,6 +339,9 @@ namespace poundfe
     std::vector<StoreyLink> links;
     std::vector<PlaneLink>  plane_links; // 3D shear buildings
     std::vector<Hinge>      hinges;
+    std::vector<Member3D>   members_3d; // 3D frame buildings
+    std::vector<Hinge3D>    hinges_3d;
+    std::vector<DofMass>    dof_masses;
     std::vector<Gap>        gaps;
     std::vector<Spring>          springs;
     std::vector<FrictionSurface> friction_surfaces;
@@ -297,7 +355,8 @@ namespace poundfe
     MassMatrixType          mass_matrix = MassMatrixType::lumped;
     GeometricNonlinearity   geometric_nonlinearity = GeometricNonlinearity::none;
     double                  gravity                = 9.81; // m/s^2, for P-Delta
-    /// 2: planar frames and stick models; 3: torsionally coupled shear buildings.
+    /// 2: planar frames and stick models; 3: torsionally coupled shear
+    /// buildings and 3D frames.
     unsigned int            dimension              = 2;
 
     unsigned int n_nodes() const { return nodes.size(); }

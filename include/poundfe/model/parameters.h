@@ -55,6 +55,20 @@ namespace poundfe
     BaseFixity          base_fixity         = BaseFixity::fixed;
     unsigned int        elements_per_member = 1;
 
+    // 3D frames (Model/Dimension = 3): bays along y, the sections' second
+    // axis and twist (Column I, Beam I: bending in the frame's vertical
+    // plane), the columns' local axes and the floor diaphragm.
+    unsigned int        n_bays_y = 1;
+    std::vector<double> bay_widths_y{6.0};
+    std::vector<double> column_shear_modulus;    // G; empty: not given
+    std::vector<double> column_second_moment_z;  // Iz
+    std::vector<double> column_torsion_constant; // J
+    double              column_angle = 0;        // degrees, local axes about the vertical
+    std::vector<double> beam_shear_modulus;
+    std::vector<double> beam_second_moment_z;
+    std::vector<double> beam_torsion_constant;
+    std::string         diaphragm = "rigid"; // rigid|none
+
     // Shear buildings.
     std::vector<double> storey_stiffnesses{5.0e6};
     std::vector<double> storey_damping{0.0};
@@ -98,10 +112,15 @@ namespace poundfe
     /// Check the values of `Building <number>`; name it B<number> if unnamed.
     /// Throws InputError.
     void finalize(const InputFile &input, unsigned int number);
+    /// Dimension 3, Type = frame: check the 3D entries of `<section>` (every
+    /// section list given), and set the Plan dimensions to the column grid.
+    /// Throws InputError (model/frame_building_3d_parameters.cc).
+    void finalize_frame_3d(const InputFile &input, const std::string &section);
 
   private:
     // declare()'s groups, in the order print_parameters shows them
     void declare_frame_entries(dealii::ParameterHandler &prm); // [frame]
+    void declare_frame_3d_entries(dealii::ParameterHandler &prm); // [3D frame]
     void declare_mesh_entries(dealii::ParameterHandler &prm);  // [mesh]
     void declare_shear_entries(dealii::ParameterHandler &prm); // [shear]
     void declare_hinges(dealii::ParameterHandler &prm);        // Hinges

@@ -8,6 +8,7 @@
 #include <poundfe/model/contact_parameters.h>
 #include <poundfe/model/model.h>
 #include <poundfe/model/parameters.h>
+#include <poundfe/model/torsional_shear_building.h>
 
 #include <vector>
 
@@ -20,6 +21,25 @@ namespace poundfe
   {
     return values.size() == 1 ? values[0] : values[i];
   }
+
+  /// A building placed on the site: its frame (plan centre, rotation), its
+  /// floors (mass, polar moment, mass centre with the eccentricities; the
+  /// resisting planes of a shear building) and its slab outline.
+  struct SitePlan
+  {
+    Point2                 centre;
+    double                 angle = 0; // rad, counter-clockwise
+    TorsionalShearBuilding building;
+    std::vector<Point2>    outline;
+
+    /// A point of the building's frame on the site.
+    Point2 place(const Point2 &x) const;
+    /// A direction of the building's frame on the site.
+    Point2 turn(const Point2 &d) const;
+  };
+
+  /// Building p with its plan centre at `centre`.
+  SitePlan site_plan(const BuildingParameters &p, const Point2 &centre);
 
   /// Half the extent along the site's x of building p's rotated slab.
   double plan_half_width(const BuildingParameters &p);
