@@ -184,9 +184,15 @@ namespace poundfe
         return;
       Plot plot{"sweep.png", "peak inter-storey drift ratio against " + sweep.axis_label(),
                 sweep.axis_label(), "peak drift ratio", {}};
-      for (unsigned int s = 0; s < table.n_storeys; ++s)
-        plot.series.push_back({"sweep.csv", "1:" + std::to_string(3 + s), table.names[s],
-                               "linespoints"});
+      const auto along_y = [](const std::string &name) { // a 3D model's drifts along y
+        const std::string suffix = "_peak_drift_ratio_y";
+        return name.size() > suffix.size() &&
+               name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+      };
+      for (unsigned int c = 0; c < table.names.size(); ++c)
+        if (c < table.n_storeys || along_y(table.names[c]))
+          plot.series.push_back({"sweep.csv", "1:" + std::to_string(3 + c), table.names[c],
+                                 "linespoints"});
       draw_plots(directory, {plot});
     }
 
