@@ -73,9 +73,7 @@ namespace poundfe::commands
       std::vector<unsigned int> columns;
       if (ss.response == SubsetResponse::peak_drift_ratio)
         {
-          columns = runner.drift_columns(ss.building);
-          if (ss.storey > 0)
-            columns = {columns.at(ss.storey - 1)};
+          columns = runner.drift_columns(ss.building, ss.storey);
         }
       else if (ss.response == SubsetResponse::peak_roof_displacement)
         columns = {runner.roof_displacement_column(ss.building)}, unit = " m";

@@ -42,6 +42,8 @@ namespace poundfe
       if (!analysis.model.gaps.empty())
         for (const char *name : {"n_impacts", "peak_contact_force_N", "min_clearance_m"})
           names.push_back(name);
+      for (const std::string &name : plan_scalar_names(analysis.model))
+        names.push_back(name);
       names.push_back("max_energy_error");
       return names;
     }
@@ -53,8 +55,7 @@ namespace poundfe
       std::vector<double>  row    = floors.peak_drift_ratio();
       for (const std::vector<double> *v : {&floors.peak_displacement(), &floors.peak_acceleration()})
         row.insert(row.end(), v->begin(), v->end());
-      row.push_back(*std::max_element(floors.peak_drift_ratio().begin(),
-                                      floors.peak_drift_ratio().end()));
+      row.push_back(peaks.largest_drift_ratio());
       if (!analysis.model.gaps.empty())
         {
           double peak_force = 0;
@@ -64,6 +65,7 @@ namespace poundfe
           row.push_back(peak_force);
           row.push_back(peaks.min_clearance());
         }
+      append_plan_scalars(analysis.model, peaks, row);
       row.push_back(state.max_energy_error());
       return row;
     }
@@ -107,6 +109,36 @@ namespace poundfe
       return true;
     }
 
+    /// A peak response's critical value of the swept parameter (e.g. the
+    /// critical incidence angle of a 3D model): the value of the completed
+    /// run with the largest peak.
+    struct Critical
+    {
+      std::string name;
+      double      value = 0, peak = 0;
+    };
+
+    /// The critical value of every peak column (not the smallest clearance
+    /// nor the energy error, whose extreme is not a demand); none when no
+    /// run completed.
+    std::vector<Critical>
+    critical_values(const SweepTable &table)
+    {
+      std::vector<Critical> critical;
+      for (std::size_t c = 0; c < table.names.size(); ++c)
+        {
+          if (table.names[c] == "min_clearance_m" || table.names[c] == "max_energy_error")
+            continue;
+          Critical best{table.names[c], 0, -1};
+          for (std::size_t i = 0; i < table.rows.size(); ++i)
+            if (table.completed[i] && table.rows[i][c] > best.peak)
+              best = {table.names[c], table.values[i], table.rows[i][c]};
+          if (best.peak >= 0)
+            critical.push_back(best);
+        }
+      return critical;
+    }
+
     void
     write_sweep(const InputParameters &input, const SweepTable &table,
                 const std::string &directory, const double wall_time, const bool interrupted)
@@ -142,6 +174,9 @@ namespace poundfe
             column.push_back(row[c]);
           json.value(table.names[c], column);
         }
+      json.end_object().begin_object("critical");
+      for (const Critical &c : critical_values(table))
+        json.begin_object(c.name).value("value", c.value).value("peak", c.peak).end_object();
       json.end_object().end_object();
       write_file_atomically(directory + "/summary.json", json.str());
 
@@ -149,9 +184,15 @@ namespace poundfe
         return;
       Plot plot{"sweep.png", "peak inter-storey drift ratio against " + sweep.axis_label(),
                 sweep.axis_label(), "peak drift ratio", {}};
-      for (unsigned int s = 0; s < table.n_storeys; ++s)
-        plot.series.push_back({"sweep.csv", "1:" + std::to_string(3 + s), table.names[s],
-                               "linespoints"});
+      const auto along_y = [](const std::string &name) { // a 3D model's drifts along y
+        const std::string suffix = "_peak_drift_ratio_y";
+        return name.size() > suffix.size() &&
+               name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+      };
+      for (unsigned int c = 0; c < table.names.size(); ++c)
+        if (c < table.n_storeys || along_y(table.names[c]))
+          plot.series.push_back({"sweep.csv", "1:" + std::to_string(3 + c), table.names[c],
+                                 "linespoints"});
       draw_plots(directory, {plot});
     }
 
@@ -210,6 +251,10 @@ namespace poundfe::commands
     run.out << "poundfe sweep: " << values.size() << " values of " << sweep.parameter << " in "
             << wall_time << " s\nresults in " << run.directory
             << "/ (sweep.csv, summary.json, sweep.png)\n";
+    for (const Critical &c : critical_values(table)) // the largest demands
+      if (c.name == "max_drift_ratio" || c.name.find("_max_corner_drift_ratio") != std::string::npos)
+        run.out << "critical " << sweep.parameter << " for " << c.name << ": " << c.value
+                << " (peak " << c.peak << ")\n";
     print_timing(timer);
     if (n_failed > 0)
       {

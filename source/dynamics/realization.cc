@@ -43,6 +43,9 @@ namespace poundfe
     if (has_gaps())
       for (const char *n : {"n_impacts", "peak_contact_force", "min_clearance", "pounded"})
         names.push_back(n);
+    first_plan_column = names.size();
+    for (const std::string &n : plan_scalar_names(analysis.model))
+      names.push_back(n);
     first_parameter_column = names.size();
   }
 
@@ -96,13 +99,19 @@ namespace poundfe
   }
 
   std::vector<unsigned int>
-  RealizationRunner::drift_columns(const unsigned int building) const
+  RealizationRunner::drift_columns(const unsigned int building, const unsigned int storey) const
   {
-    // drift columns come first, in FloorResponse order
+    // drift columns come first, in FloorResponse order; a 3D model's drifts
+    // along y are the first plan columns, in the same order
     const FloorResponse       floors(analysis.model);
     std::vector<unsigned int> columns;
     for (unsigned int f = 0; f < analysis.model.buildings.at(building - 1).floors.size(); ++f)
-      columns.push_back(floors.index(building - 1, f));
+      if (storey == 0 || f + 1 == storey)
+        {
+          columns.push_back(floors.index(building - 1, f));
+          if (analysis.model.dimension == 3)
+            columns.push_back(first_plan_column + floors.index(building - 1, f));
+        }
     return columns;
   }
 
@@ -117,7 +126,7 @@ namespace poundfe
                          const double amplitude_factor)
   {
     xi.resize(n_variables());
-    standard_normals(load.seed(), realization, xi);
+    load.standard_normals(realization, xi);
     return run(xi, responses, amplitude_factor);
   }
 
@@ -126,7 +135,7 @@ namespace poundfe
                          const double amplitude_factor)
   {
     xi.resize(n_variables());
-    standard_normals(load.seed(), realization, xi);
+    load.standard_normals(realization, xi);
     return run_with(xi, observers, amplitude_factor).completed();
   }
 
@@ -160,7 +169,7 @@ namespace poundfe
     std::copy(acceleration.begin(), acceleration.end(), responses.begin() + first_floor_column);
     for (unsigned int b = 0; b < roof_floor.size(); ++b)
       responses[first_roof_column + b] = floors.peak_displacement()[roof_floor[b]];
-    responses[max_drift_column]     = *std::max_element(drift.begin(), drift.end());
+    responses[max_drift_column]     = peaks->largest_drift_ratio();
     responses[max_drift_column + 1] = *std::max_element(acceleration.begin(), acceleration.end());
     if (has_gaps())
       {
@@ -174,6 +183,9 @@ namespace poundfe
         responses[c++] = peaks->min_clearance();
         responses[c++] = impacts.empty() ? 0 : 1;
       }
+    std::vector<double> plan;
+    append_plan_scalars(model(), *peaks, plan);
+    std::copy(plan.begin(), plan.end(), responses.begin() + first_plan_column);
     std::copy(parameter_values.begin(), parameter_values.end(),
               responses.begin() + first_parameter_column);
     return status.completed();

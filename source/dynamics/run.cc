@@ -150,14 +150,14 @@ namespace poundfe
     Vector p0(analysis.system.n_equations());
     load(0, p0);
     integrator.initialize(p0, u0, v0);
-    view.set_step(0, excitation.ground_acceleration(0));
+    view.set_step(0, excitation.horizontal_acceleration(0));
     for (StepObserver *observer : observers)
       observer->initialize(view);
 
     RunStatus     status;
     unsigned long step = 0;
     integrator.set_substep_callback([&]() {
-      view.set_step(step, excitation.ground_acceleration(integrator.time()));
+      view.set_step(step, excitation.horizontal_acceleration(integrator.time()));
       for (StepObserver *observer : observers)
         observer->observe_substep(view);
     });
@@ -178,7 +178,7 @@ namespace poundfe
               }
             throw_if_interrupted(); // a command that stops at safe points (sweep, ...)
             integrator.advance(load);
-            view.set_step(step, excitation.ground_acceleration(step * dt));
+            view.set_step(step, excitation.horizontal_acceleration(step * dt));
             for (StepObserver *observer : observers)
               observer->observe_step(view);
           }

@@ -174,6 +174,18 @@ namespace poundfe
   }
 
   void
+  correlate_second_component(const std::vector<double> &first, std::vector<double> &second,
+                             const double intensity_ratio, const double correlation)
+  {
+    AssertDimension(first.size(), second.size());
+    if (intensity_ratio == 1 && correlation == 0)
+      return; // independent components of equal intensity: as generated
+    const double independent = std::sqrt(1 - correlation * correlation);
+    for (std::size_t k = 0; k < second.size(); ++k)
+      second[k] = intensity_ratio * (correlation * first[k] + independent * second[k]);
+  }
+
+  void
   add_horizontal_component(Excitation &excitation, const LinearSystem &system, const Model &model,
                            const GroundMotionParameters &g, const InputFile &input,
                            const double time_step)
@@ -190,8 +202,14 @@ namespace poundfe
       }
     GroundMotion second; // none: the first component alone, rotated
     if (g.n_components == 2)
-      second = make_ground_motion(g.second_component(), input, time_step,
-                                  "Ground motion/Record/Second file");
+      {
+        second = make_ground_motion(g.second_component(), input, time_step,
+                                    "Ground motion/Record/Second file");
+        if (g.is_stochastic())
+          correlate_second_component(excitation.ground_motion().samples(),
+                                     second.samples_for_update(), g.intensity_ratio,
+                                     g.correlation);
+      }
     excitation.set_horizontal_pair(system, std::move(second), g.incidence_angle * M_PI / 180);
   }
 

@@ -157,6 +157,15 @@ namespace poundfe
     prm.add_parameter("Second seed", second_seed,
                       "Seed of the second horizontal component (Components = 2): an "
                       "independent sample of the same process; 0: Seed + 1. Unit: -.");
+    prm.add_parameter("Intensity ratio", intensity_ratio,
+                      "Components = 2: standard deviation of the second component over the "
+                      "first's, gamma (Penzien-Watabe 1975: about 0.5 to 1 along the principal "
+                      "axes). Unit: dimensionless.");
+    prm.add_parameter("Correlation", correlation,
+                      "Components = 2: correlation coefficient rho of the two components "
+                      "before the incidence rotation, in [-1, 1] (0: along their principal "
+                      "axes); g_2 = gamma (rho z_1 + sqrt(1 - rho^2) z_2) of two independent "
+                      "samples z_1 = g_1, z_2. Unit: dimensionless.");
     prm.add_parameter("Realization", realization,
                       "Realization index: (seed, index) fixes the sample. Unit: -.");
     add_choice(prm, "Envelope", envelope,
@@ -186,6 +195,24 @@ namespace poundfe
   }
 
   void
+  GroundMotionParameters::check_pair(const InputFile &input) const
+  {
+    const std::string st = "Ground motion/Stochastic/";
+    if (!(intensity_ratio >= 0 && intensity_ratio <= 1e3))
+      input.fail(st + "Intensity ratio", "must be a number in [0, 1000]");
+    if (!(std::abs(correlation) <= 1))
+      input.fail(st + "Correlation", "must be in [-1, 1]");
+    const bool correlated = intensity_ratio != 1 || correlation != 0;
+    if (correlated && n_components != 2)
+      input.fail(st + (correlation != 0 ? "Correlation" : "Intensity ratio"),
+                 "relates the two horizontal components: it needs Ground motion/Components = 2");
+    if (correlated && !is_stochastic())
+      input.fail(st + (correlation != 0 ? "Correlation" : "Intensity ratio"),
+                 "applies to generated (stochastic) components, not to '" +
+                   ground_motion_type_names().name(type) + "'");
+  }
+
+  void
   GroundMotionParameters::check(const InputFile &input, const double time_step) const
   {
     const std::string gm = "Ground motion/";
@@ -193,8 +220,9 @@ namespace poundfe
       input.fail(gm + "Record/File", "a record ground motion needs a file");
     if (type == GroundMotionType::record && n_components == 2 && second_record_file.empty())
       input.fail(gm + "Record/Second file", "Components = 2 with a record needs a second file");
-    if (!std::isfinite(incidence_angle))
-      input.fail(gm + "Incidence angle", "must be finite");
+    if (!(std::abs(incidence_angle) <= 360))
+      input.fail(gm + "Incidence angle", "must be a finite angle in [-360, 360] degrees");
+    check_pair(input);
     input.non_negative(gm + "Record/Time step", record_time_step);
     input.non_negative(gm + "Record/Target PGA", record_target_pga);
     if (!std::isfinite(scale_factor))

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace poundfe
@@ -16,6 +17,15 @@ namespace poundfe
         ground.emplace(make_motion_generator(ground_motion, time_step));
         ground_scale = ground_motion.scale_factor;
         n_random     = ground->n_variables();
+        if (excitation.has_horizontal_pair() && ground_motion.n_components == 2)
+          {
+            const GroundMotionParameters second = ground_motion.second_component();
+            second_ground.emplace(make_motion_generator(second, time_step));
+            second_seed     = second.seed;
+            intensity_ratio = ground_motion.intensity_ratio;
+            correlation     = ground_motion.correlation;
+            n_random += second_ground->n_variables();
+          }
       }
     const std::vector<NodalForce> &forces = excitation.nodal_forces();
     for (unsigned int i = 0; i < forces.size(); ++i)
@@ -31,8 +41,15 @@ namespace poundfe
   void
   StochasticLoad::standard_normals(const std::uint64_t realization, std::vector<double> &xi) const
   {
-    xi.resize(n_random);
+    if (xi.size() < n_random)
+      xi.resize(n_random);
     poundfe::standard_normals(random_seed, realization, xi);
+    if (second_ground)
+      {
+        std::vector<double> second(second_ground->n_variables());
+        poundfe::standard_normals(second_seed, realization, second);
+        std::copy(second.begin(), second.end(), xi.begin() + ground->n_variables());
+      }
   }
 
   void
@@ -49,6 +66,16 @@ namespace poundfe
         for (double &a : samples)
           a *= factor;
         offset = ground->n_variables();
+        if (second_ground)
+          {
+            std::vector<double> &second =
+              excitation.second_ground_motion_for_update().samples_for_update();
+            second_ground->generate(xi.data() + offset, second);
+            for (double &a : second)
+              a *= factor;
+            correlate_second_component(samples, second, intensity_ratio, correlation);
+            offset += second_ground->n_variables();
+          }
       }
     std::vector<NodalForce> &forces = excitation.nodal_forces_for_update();
     for (unsigned int i = 0; i < noise_forces.size(); ++i)

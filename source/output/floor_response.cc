@@ -5,7 +5,7 @@
 
 namespace poundfe
 {
-  FloorResponse::FloorResponse(const Model &model)
+  FloorResponse::FloorResponse(const Model &model, const Component direction)
     : model(model)
   {
     for (const Building &building : model.buildings)
@@ -16,7 +16,7 @@ namespace poundfe
             const Floor     &floor = building.floors[f];
             std::vector<int> equations;
             for (const unsigned int node : floor.nodes)
-              equations.push_back(model.equation(Model::dof(node, Component::ux)));
+              equations.push_back(model.equation(Model::dof(node, direction)));
             floor_equations.push_back(equations);
             inverse_height.push_back(1 / floor.storey_height);
             is_bottom_floor.push_back(f == 0);

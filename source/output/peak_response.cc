@@ -1,5 +1,6 @@
 #include <poundfe/output/peak_response.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -9,6 +10,11 @@ namespace poundfe
     : elements(elements_)
     , floor_response(model)
   {
+    if (model.dimension == 3)
+      {
+        floor_response_y = std::make_unique<FloorResponse>(model, Component::uy);
+        plan_response    = std::make_unique<PlanResponse>(model);
+      }
     for (const NonlinearElement &e : elements)
       {
         n_hysteretic_elements += e.kind == ElementKind::hinge || e.kind == ElementKind::storey;
@@ -20,6 +26,11 @@ namespace poundfe
   PeakResponse::initialize(const ResponseView &state)
   {
     floor_response.reset();
+    if (plan_response)
+      {
+        floor_response_y->reset();
+        plan_response->reset();
+      }
     for (auto *v : {&peak_d, &peak_d_at, &peak_f, &peak_plastic})
       v->assign(elements.size(), 0.0);
     smallest_clearance = std::numeric_limits<double>::infinity();
@@ -32,6 +43,12 @@ namespace poundfe
     const double t = state.time();
     floor_response.evaluate(t, state.displacement(), state.velocity(), state.acceleration(),
                             state.ground_acceleration());
+    if (plan_response)
+      {
+        floor_response_y->evaluate(t, state.displacement(), state.velocity(),
+                                   state.acceleration(), state.ground_acceleration_y());
+        plan_response->observe_step(state);
+      }
     for (unsigned int h = 0; h < elements.size(); ++h)
       {
         const NonlinearElement &e = elements[h];
@@ -58,6 +75,63 @@ namespace poundfe
     // the log locates the deepest point within steps
     for (const Impact &impact : state.impact_log().impacts())
       smallest_clearance = std::min(smallest_clearance, -impact.max_penetration);
+  }
+
+  double
+  PeakResponse::largest_drift_ratio() const
+  {
+    double largest = 0;
+    const FloorResponse *y = floor_response_y.get();
+    for (const FloorResponse *floors : {&floor_response, y})
+      if (floors)
+        for (const double d : floors->peak_drift_ratio())
+          largest = std::max(largest, d);
+    return largest;
+  }
+
+  std::vector<std::string>
+  plan_scalar_names(const Model &model)
+  {
+    std::vector<std::string> names;
+    if (model.dimension != 3)
+      return names;
+    const FloorResponse floors(model, Component::uy);
+    names = floors.column_names("storey", "peak_drift_ratio_y");
+    for (const std::string &name : floors.column_names("floor", "peak_acc_y_m_s2"))
+      names.push_back(name);
+    for (const Building &building : model.buildings)
+      for (const char *what : {"_max_corner_drift_ratio", "_peak_floor_rotation_rad",
+                               "_peak_base_shear_x_N", "_peak_base_shear_y_N",
+                               "_peak_base_torque_N_m"})
+        names.push_back(building.name + what);
+    return names;
+  }
+
+  void
+  append_plan_scalars(const Model &model, const PeakResponse &peaks, std::vector<double> &row)
+  {
+    if (!peaks.plan())
+      return;
+    const FloorResponse &y = *peaks.floors_y();
+    row.insert(row.end(), y.peak_drift_ratio().begin(), y.peak_drift_ratio().end());
+    row.insert(row.end(), y.peak_acceleration().begin(), y.peak_acceleration().end());
+    const auto &buildings = peaks.plan()->buildings();
+    for (unsigned int b = 0; b < buildings.size(); ++b)
+      {
+        double corner = 0, rotation = 0;
+        for (unsigned int i = 0; i < buildings[b].storeys.size(); ++i)
+          {
+            const PlanResponse::Storey &s = buildings[b].storeys[i];
+            const double height = model.buildings[b].floors[i].storey_height;
+            for (const std::vector<double> *drifts : {&s.corner_drift_x, &s.corner_drift_y})
+              for (const double d : *drifts)
+                corner = std::max(corner, d / height);
+            rotation = std::max(rotation, s.rotation);
+          }
+        for (const double v : {corner, rotation, buildings[b].base_shear_x,
+                               buildings[b].base_shear_y, buildings[b].base_torque})
+          row.push_back(v);
+      }
   }
 
   double

@@ -62,6 +62,22 @@ namespace poundfe
       element_of_link.push_back(link.hysteretic ? next++ : -1);
   }
 
+  void
+  PlanResponse::reset()
+  {
+    for (BuildingPeaks &b : peaks)
+      {
+        for (Storey &s : b.storeys)
+          {
+            s.rotation = 0;
+            std::fill(s.corner_drift_x.begin(), s.corner_drift_x.end(), 0.0);
+            std::fill(s.corner_drift_y.begin(), s.corner_drift_y.end(), 0.0);
+            s.irregularity_ratio = {{1, 1}};
+          }
+        b.base_shear_x = b.base_shear_y = b.base_torque = 0;
+      }
+  }
+
   double
   PlanResponse::plane_force(const ResponseView &state, const unsigned int l) const
   {

@@ -57,8 +57,10 @@ namespace poundfe
     const std::vector<std::string> &response_names() const { return names; }
     /// Column of a named response; throws std::out_of_range if absent.
     unsigned int column(const std::string &name) const;
-    /// Columns of the peak drift ratios of a building's storeys (building 1-based).
-    std::vector<unsigned int> drift_columns(unsigned int building) const;
+    /// Columns of the peak drift ratios of a building's storeys (building
+    /// 1-based), or of storey `storey` alone (1-based; 0: all): along x and,
+    /// for a 3D model, along y.
+    std::vector<unsigned int> drift_columns(unsigned int building, unsigned int storey = 0) const;
     unsigned int roof_displacement_column(unsigned int building) const;
 
     /// Runs the sample of xi (amplitudes times amplitude_factor); fills
@@ -107,7 +109,7 @@ namespace poundfe
     std::vector<double>      xi;
     std::vector<unsigned int> roof_floor; // FloorResponse index of each building's roof
     unsigned int first_floor_column = 0, first_roof_column = 0, max_drift_column = 0;
-    unsigned int first_parameter_column = 0;
+    unsigned int first_plan_column = 0, first_parameter_column = 0;
   };
 } // namespace poundfe
 

@@ -48,6 +48,8 @@ namespace poundfe
     std::array<double, 2> horizontal_acceleration(double t) const;
     bool has_horizontal_pair() const { return pair; }
     const GroundMotion &second_ground_motion() const { return second; }
+    /// In-place access for a new realization (StochasticLoad).
+    GroundMotion &second_ground_motion_for_update() { return second; }
 
     /// p(t) into `load` (sized n_equations).
     void load(double t, Vector &load) const;
@@ -68,6 +70,15 @@ namespace poundfe
     double                  cos_angle = 1, sin_angle = 0;
     Vector                  mass_times_influence_y;
   };
+
+  /// Penzien & Watabe (1975): the two horizontal components are uncorrelated
+  /// along their principal axes. From two independent samples z_1 = g_1 and
+  /// z_2 = g_2 of one process, g_2 becomes gamma (rho z_1 + sqrt(1 - rho^2)
+  /// z_2): Var g_2 = gamma^2 Var g_1 and the correlation of (g_1, g_2) is
+  /// rho (rho = 0: uncorrelated, the pair is along its principal axes with
+  /// the intensity ratio gamma). Both sample vectors have the same grid.
+  void correlate_second_component(const std::vector<double> &first, std::vector<double> &second,
+                                  double intensity_ratio, double correlation);
 
   /// Model/Dimension = 3: the second horizontal component of `parameters`
   /// and its incidence angle, onto `excitation`. Throws InputError (two

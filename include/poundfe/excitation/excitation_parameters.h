@@ -46,6 +46,8 @@ namespace poundfe
     double       incidence_angle    = 0.0; // degrees
     std::string  second_record_file = "";
     unsigned int second_seed        = 0; // 0: Seed + 1
+    double       intensity_ratio    = 1.0; // sigma_2 / sigma_1 (stochastic pair)
+    double       correlation        = 0.0; // of the stochastic pair before the rotation
 
     // Recorded motions.
     std::string      record_file       = "";
@@ -96,6 +98,10 @@ namespace poundfe
     /// `time_step`: the analysis time step (the default sample interval).
     /// Throws InputError.
     void check(const InputFile &input, double time_step) const;
+
+  private:
+    /// The intensity ratio and correlation of a stochastic pair.
+    void check_pair(const InputFile &input) const;
   };
 
   struct NodalForceParameters

@@ -1,6 +1,9 @@
 // The random part of an input's loading: the stochastic ground motion and the
 // white-noise nodal forces, as one function of a vector of independent
-// standard normals xi = [ground..., force 1..., force 2..., ...]. Monte Carlo
+// standard normals xi = [ground..., second ground..., force 1..., force 2...,
+// ...] (the second horizontal component of a 3D model's stochastic pair, its
+// normals those of (Second seed, realization), so that a realization is the
+// run of the same Realization). Monte Carlo
 // draws xi from (seed, realization); Subset Simulation moves it by Markov
 // chains. Set up once; apply() writes a realization into an Excitation in
 // place, so a new realization never rebuilds the model or the excitation.
@@ -29,7 +32,10 @@ namespace poundfe
     /// The input's stochastic ground motion, if any.
     const MotionGenerator *ground_generator() const { return ground ? &*ground : nullptr; }
 
-    /// xi (resized to n_variables()) of realization `realization`.
+    /// xi of realization `realization`, every entry from (Seed, realization)
+    /// but the second ground component's, from (Second seed, realization);
+    /// xi is resized to n_variables() if it is shorter (what follows is
+    /// the caller's: random model parameters).
     void standard_normals(std::uint64_t realization, std::vector<double> &xi) const;
 
     /// Writes the sample of xi into the excitation (built from the same input),
@@ -40,6 +46,9 @@ namespace poundfe
   private:
     std::optional<MotionGenerator> ground;
     double                         ground_scale = 1;
+    std::optional<MotionGenerator> second_ground; // a 3D model's stochastic pair
+    double                         intensity_ratio = 1, correlation = 0;
+    std::uint64_t                  second_seed = 0;
     std::vector<unsigned int>      noise_forces; // indices in Excitation::nodal_forces()
     std::vector<double>            noise_scales; // sqrt(2 pi S0 / dt)
     std::vector<unsigned int>      noise_lengths;

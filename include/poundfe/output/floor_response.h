@@ -1,4 +1,5 @@
-// Floor response of each building from the equations' values:
+// Floor response of each building from the equations' values (along x, or
+// along y for a 3D model's y direction: uy and a_y in place of ux and a_g):
 //   floor displacement x_i = mean ux of the floor's joints (relative to ground),
 //   floor velocity = mean relative ux',
 //   inter-storey drift ratio IDR_i = (x_i - x_{i-1}) / h_i (x_0 = 0, the base),
@@ -19,7 +20,7 @@ namespace poundfe
   class FloorResponse
   {
   public:
-    explicit FloorResponse(const Model &model);
+    explicit FloorResponse(const Model &model, Component direction = Component::ux);
 
     void evaluate(double time, const Vector &u, const Vector &v, const Vector &a,
                   double ground_acceleration);

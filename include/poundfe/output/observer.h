@@ -16,6 +16,7 @@
 #include <poundfe/integration/newmark.h>
 #include <poundfe/model/model.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -51,12 +52,15 @@ namespace poundfe
     ResponseView(const Model &model, const LinearSystem &system,
                  const NonlinearElements &elements, const NewmarkIntegrator &integrator);
 
-    /// Called by the time loop once per step, before the observers.
-    void set_step(unsigned long step, double ground_acceleration);
+    /// Called by the time loop once per step, before the observers, with
+    /// the ground acceleration (a_x, a_y) (a_y = 0 without a horizontal pair).
+    void set_step(unsigned long step, const std::array<double, 2> &ground_acceleration);
 
     unsigned long step() const { return step_index; }
     double        time() const { return integrator.time(); }
-    double        ground_acceleration() const { return ground; }
+    double        ground_acceleration() const { return ground[0]; }
+    /// a_y: a 3D model's ground acceleration along y (0 in 2D).
+    double        ground_acceleration_y() const { return ground[1]; }
     const Vector &displacement() const { return integrator.displacement(); }
     const Vector &velocity() const { return integrator.velocity(); }
     const Vector &acceleration() const { return integrator.acceleration(); }
@@ -79,7 +83,7 @@ namespace poundfe
   private:
     const NewmarkIntegrator &integrator;
     unsigned long            step_index = 0;
-    double                   ground     = 0;
+    std::array<double, 2>    ground{{0, 0}};
   };
 
   /// Watches a time history: initialize() sees the initial state (step 0),

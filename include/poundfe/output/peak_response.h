@@ -3,12 +3,19 @@
 // acceleration (FloorResponse), and per nonlinear element the peak |d| (and
 // its time), peak |F|, peak plastic part |d - F/k0| and, for gaps, the
 // smallest opening. The impact log adds the deepest points that fall
-// between steps to the smallest opening at the end.
+// between steps to the smallest opening at the end. A 3D model's peaks also
+// hold the floor response along y (drifts of the mass centres along y,
+// absolute accelerations with a_y) and the plan response (floor rotations,
+// corner drifts, base shears and torque: plan_response.h).
 #ifndef poundfe_output_peak_response_h
 #define poundfe_output_peak_response_h
 
 #include <poundfe/output/floor_response.h>
 #include <poundfe/output/observer.h>
+#include <poundfe/output/plan_response.h>
+
+#include <memory>
+#include <string>
 
 #include <vector>
 
@@ -28,6 +35,11 @@ namespace poundfe
 
     /// The floor response at the last observed step and its peaks.
     const FloorResponse &floors() const { return floor_response; }
+    /// A 3D model's floor response along y and its plan response (nullptr in 2D).
+    const FloorResponse *floors_y() const { return floor_response_y.get(); }
+    const PlanResponse  *plan() const { return plan_response.get(); }
+    /// The largest peak drift ratio of the mass centres (along x and, in 3D, y).
+    double largest_drift_ratio() const;
 
     /// Elements are hinges and storeys first, then gaps, then springs and
     /// friction elements (make_nonlinear_elements).
@@ -46,10 +58,22 @@ namespace poundfe
   private:
     const NonlinearElements &elements;
     FloorResponse           floor_response;
+    std::unique_ptr<FloorResponse> floor_response_y; // 3D models
+    std::unique_ptr<PlanResponse>  plan_response;    // 3D models
     unsigned int            n_hysteretic_elements = 0, n_gap_elements = 0;
     std::vector<double>     peak_d, peak_d_at, peak_f, peak_plastic;
     double                  smallest_clearance = 0;
   };
+
+  /// The scalars of a 3D model's run along y and in plan (empty for a 2D
+  /// model), named with their units: per storey the peak drift ratio along y
+  /// of the mass centres, per floor the peak absolute acceleration along y
+  /// (m/s^2), per building the largest corner drift ratio of any storey in x
+  /// or y, the peak floor rotation (rad), the peak base shears along x and y
+  /// (N) and the peak base torque (N m).
+  std::vector<std::string> plan_scalar_names(const Model &model);
+  /// Their values after a run observed by `peaks`, appended to `row`.
+  void append_plan_scalars(const Model &model, const PeakResponse &peaks, std::vector<double> &row);
 } // namespace poundfe
 
 #endif

@@ -25,6 +25,8 @@ namespace poundfe
     explicit PlanResponse(const Model &model);
 
     void observe_step(const ResponseView &state) override;
+    /// Forget the peaks (a new run).
+    void reset();
 
     struct Storey
     {
