@@ -242,6 +242,7 @@ namespace poundfe
                       "Unit: -.");
     prm.leave_subsection();
     plan.declare(prm);
+    foundation.declare(prm);
   }
 
   void
@@ -341,6 +342,7 @@ namespace poundfe
         input.non_negative(s + "Damping/a1", rayleigh_a1);
       }
     finalize_modal_damping(input, s + "Damping/");
+    foundation.finalize(input, s, type == BuildingType::shear);
   }
 
   void
@@ -396,6 +398,9 @@ namespace poundfe
           input.fail(s + "Type", "Dimension = 3 takes shear buildings (3 DOFs per floor) "
                                  "only; 3D frames are not yet in the input");
         buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
+        if (buildings[b].foundation.enabled())
+          input.fail(s + "Foundation/Type", "compliant foundations are for 2D models "
+                                            "(Dimension = 2) so far");
       }
   }
 

@@ -2,6 +2,7 @@
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/stick_slip_report.h>
+#include <poundfe/output/foundation_report.h>
 #include <poundfe/output/link_report.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
@@ -51,6 +52,9 @@ namespace poundfe
                     "peak_force_N"};
           case ElementKind::link:
             return {"link", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
+                    "peak_force_N"};
+          case ElementKind::foundation:
+            return {"foundation", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
                     "peak_force_N"};
         }
       throw std::logic_error("units_of: unknown element kind");
@@ -246,6 +250,7 @@ namespace poundfe
       write_gaps(json, state);
     write_springs_and_friction(json, state, peaks, status.end_time);
     write_links(json, state, peaks);
+    write_foundations(json, state, peaks);
     write_energy_and_newton(json, state);
     write_run(json, status, written);
     json.end_object();
@@ -384,7 +389,10 @@ namespace poundfe
       .value("contact_J", energy.contact)
       .value("friction_J", energy.friction)
       .value("links_J", energy.links)
-      .value("belt_J", energy.belt)
+      .value("belt_J", energy.belt);
+    if (!analysis.model.foundations.empty())
+      json.value("foundation_J", energy.foundation);
+    json
       .value("max_relative_balance_error", state.max_energy_error())
       .end_object();
     const IterationStatistics &stats = state.statistics();
