@@ -59,8 +59,18 @@ PY
 same_csv "$work/fixed/impacts.csv" "$work/stiff/impacts.csv" 1e-8 || fail "stiff soil: impacts"
 same_csv "$work/fixed/floor_displacement.csv" "$work/stiff/floor_displacement.csv" 1e-8 ||
   fail "stiff soil: floor displacements"
-cut -d, -f1-11 "$work/stiff/energy.csv" > "$work/stiff-energy.csv"
-same_csv "$work/fixed/energy.csv" "$work/stiff-energy.csv" 1e-8 || fail "stiff soil: energy"
+# the energies to 1e-8 of the input energy (a linear contact's energy is
+# round-off, ~1e-5 of the input, and so is the balance error: their own
+# peaks are no scale)
+python3 - "$work/fixed/energy.csv" "$work/stiff/energy.csv" <<'PY' || fail "stiff soil: energy"
+import csv, sys
+a, b = (list(csv.DictReader(open(p))) for p in sys.argv[1:3])
+scale = max(abs(float(r["input_J"])) for r in a)
+worst = max(abs(float(r[k]) - float(s[k])) for r, s in zip(a, b) for k in r
+            if k not in ("time_s", "balance_error"))
+print(f"energies: largest difference {worst / scale:.3g} of the input energy")
+sys.exit(0 if len(a) == len(b) and worst <= 1e-8 * scale else 1)
+PY
 echo "ok   very stiff soil reproduces the fixed base"
 
 # 2. the example
@@ -95,7 +105,8 @@ for p in json.load(open(sys.argv[1]))["foundations"]:
           f"{p['flexible_base_period_s']:.4f} s, ratio {p['period_ratio']:.4f}, "
           f"ASCE 7 {p['asce7_period_ratio']:.4f}")
     assert p["period_ratio"] > 1 and p["asce7_period_ratio"] > 1
-    # the code's formula neglects the foundation's mass: within 15 % here
-    assert abs(p["asce7_period_ratio"] / p["period_ratio"] - 1) < 0.15
+    # the code's formula neglects the foundation's mass and the higher
+    # modes: 0.2 % apart here, 2 % allowed
+    assert abs(p["asce7_period_ratio"] / p["period_ratio"] - 1) < 0.02
 PY
 echo "ok   modal: the periods lengthen on soft soil, beside ASCE 7's estimate"
