@@ -111,7 +111,8 @@ BOOST_AUTO_TEST_CASE(rigid_block_on_spring_and_dashpot_is_the_damped_oscillator)
     "subsection Model\n  set Number of buildings = 1\nend\n"
     "subsection Building 1\n  set Name = S\n  set Type = shear\n  set Number of storeys = 1\n"
     "  set Storey heights = 3\n  set Floor masses = " + number_text(m1) +
-      "\n  set Storey stiffnesses = 4e12\n" + foundation + "end\n"
+      "\n  set Storey stiffnesses = 4e12\n"
+      "  subsection Damping\n    set Type = none\n  end\n" + foundation + "end\n"
       "subsection Ground motion\n  set Type = none\nend\n"
       "subsection Initial conditions\n  set Equation displacements = 0 = 0.01; 2 = 0.01\nend\n"
       "subsection Time integration\n  set Time step = " + number_text(dt) +
@@ -137,5 +138,5 @@ BOOST_AUTO_TEST_CASE(rigid_block_on_spring_and_dashpot_is_the_damped_oscillator)
   BOOST_TEST(worst <= bound);
   // the dashpot took what the block lost: the balance closes
   BOOST_TEST(run.energy.foundation > 0.9 * 0.5 * k_x * u0 * u0);
-  BOOST_TEST(run.max_energy_error <= 1e-10);
+  BOOST_TEST(run.max_energy_error <= 1e-8); // the Newton tolerance (1e-8) bounds it
 }
