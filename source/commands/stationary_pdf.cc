@@ -97,7 +97,7 @@ namespace poundfe::commands
           .value("range", std::vector<double>{layout.grids[q].low, layout.grids[q].high})
           .value("fraction_outside_range", e[q].outside)
           .value("kernel_bandwidth", e[q].bandwidth)
-          .value("bandwidth_rule", std::string(e[q].silverman ? "Silverman" : "given") +
+          .value("bandwidth_rule", e[q].rule +
                                      (e[q].widened ? ", raised to the bin width" : ""))
           .value("n_peaks", e[q].peaks.size())
           .value("peak_locations", peak_values(e[q].peaks, true))

@@ -1,4 +1,5 @@
-// Histogram, binned Gaussian kernel density, Silverman's bandwidth and peaks
+// Histogram, binned Gaussian kernel density, Silverman's and Sheather-Jones's
+// bandwidths and peaks
 // (equations and source in include/poundfe/reliability/density.h).
 #include <poundfe/reliability/density.h>
 
@@ -84,6 +85,79 @@ namespace poundfe
 
   namespace
   {
+    /// Pair counts of the binned data by bin distance m = |k - l|:
+    /// D[m] = sum over ordered pairs of bins (k, l) at that distance of
+    /// c_k c_l, the diagonal pairs of samples (a sample with itself) out.
+    std::vector<double>
+    pair_counts(const std::vector<double> &c, const double n)
+    {
+      std::vector<double> d(c.size(), 0.0);
+      for (std::size_t k = 0; k < c.size(); ++k)
+        for (std::size_t l = k; l < c.size(); ++l)
+          d[l - k] += (l == k ? 1.0 : 2.0) * c[k] * c[l];
+      d[0] -= n;
+      return d;
+    }
+
+    /// sum_{i != j} phi_r(x_ij / g) / (N (N - 1) g^(r+1)), r = 4 or 6, from
+    /// the pair counts at bin distances m w.
+    double
+    density_functional(const std::vector<double> &pairs, const double w, const double n,
+                       const double g, const unsigned int r)
+    {
+      double sum = 0;
+      for (std::size_t m = 0; m < pairs.size(); ++m)
+        {
+          const double u2 = (m * w / g) * (m * w / g);
+          if (u2 > 80) // phi's factor e^(-40): nothing more to add
+            break;
+          const double polynomial = r == 4 ? (u2 - 6) * u2 + 3 : ((u2 - 15) * u2 + 45) * u2 - 15;
+          sum += pairs[m] * polynomial * std::exp(-0.5 * u2);
+        }
+      return sum / (std::sqrt(2 * M_PI) * n * (n - 1) * std::pow(g, r + 1));
+    }
+  } // namespace
+
+  double
+  sheather_jones_bandwidth(const BinGrid &grid, const std::vector<double> &counts, const double iqr)
+  {
+    double n = 0, mean = 0, square = 0;
+    for (unsigned int i = 0; i < grid.n_bins; ++i)
+      n += counts[i], mean += counts[i] * grid.center(i),
+        square += counts[i] * grid.center(i) * grid.center(i);
+    if (!(n >= 3) || !(iqr > 0))
+      return std::nan("");
+    mean /= n;
+    const double              sigma  = std::sqrt(std::max(0.0, square / n - mean * mean));
+    const std::vector<double> pairs  = pair_counts(counts, n);
+    const double              w      = grid.width();
+    const double              a      = 0.920 * iqr * std::pow(n, -1.0 / 7);
+    const double              b      = 0.912 * iqr * std::pow(n, -1.0 / 9);
+    const double              s_a    = density_functional(pairs, w, n, a, 4);
+    const double              t_b    = -density_functional(pairs, w, n, b, 6);
+    const double              r_k    = 1 / (2 * std::sqrt(M_PI));
+    if (!(s_a > 0) || !(t_b > 0))
+      return std::nan("");
+    const double ratio    = 1.357 * std::pow(s_a / t_b, 1.0 / 7);
+    const auto   residual = [&](const double h) {
+      const double s = density_functional(pairs, w, n, ratio * std::pow(h, 5.0 / 7), 4);
+      return s > 0 ? h - std::pow(r_k / (n * s), 0.2) : h; // S <= 0: h too large
+    };
+    // bisection between 1e-3 and 10 times the normal reference 1.06 sigma N^(-1/5)
+    const double reference = 1.06 * std::max(sigma, w) * std::pow(n, -0.2);
+    double       low = 1e-3 * reference, high = 10 * reference;
+    if (!(residual(low) < 0) || !(residual(high) > 0))
+      return std::nan("");
+    for (int k = 0; k < 100 && high - low > 1e-12 * high; ++k)
+      {
+        const double middle = 0.5 * (low + high);
+        (residual(middle) < 0 ? low : high) = middle;
+      }
+    return 0.5 * (low + high);
+  }
+
+  namespace
+  {
     /// The lowest value between j and the first value above f[j] in
     /// direction `step` (or the end of the range).
     double
@@ -111,6 +185,24 @@ namespace poundfe
         ++k;
       return k == static_cast<int>(f.size()) || f[k] < f[j];
     }
+
+    /// The peak at grid point j, moved to the vertex of the parabola
+    /// through j and its neighbours (an end point, or a plateau, stays).
+    Peak
+    refined_peak(const BinGrid &grid, const std::vector<double> &f, const int j)
+    {
+      Peak peak{static_cast<unsigned int>(j), grid.center(j), f[j]};
+      if (j == 0 || j + 1 == static_cast<int>(f.size()))
+        return peak;
+      const double left = f[j - 1], right = f[j + 1];
+      const double curvature = left - 2 * f[j] + right;
+      if (!(curvature < 0))
+        return peak;
+      const double offset = 0.5 * (left - right) / curvature; // in [-1/2, 1/2] at a maximum
+      peak.location += offset * grid.width();
+      peak.height = f[j] - 0.25 * (left - right) * offset;
+      return peak;
+    }
   } // namespace
 
   std::vector<Peak>
@@ -129,7 +221,7 @@ namespace poundfe
         const double base =
           std::max(lowest_before_higher(f, j, -1), lowest_before_higher(f, j, +1));
         if (f[j] - base >= threshold * top)
-          peaks.push_back({static_cast<unsigned int>(j), grid.center(j), f[j]});
+          peaks.push_back(refined_peak(grid, f, j));
       }
     return peaks;
   }

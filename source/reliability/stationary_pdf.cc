@@ -202,6 +202,37 @@ namespace poundfe
       }
   }
 
+  namespace
+  {
+    /// e.bandwidth and e.rule by p.bandwidth_rule (`below`: samples under
+    /// the grid; e.variance set).
+    void
+    choose_bandwidth(const BinGrid &grid, const std::vector<double> &counts, const double below,
+                     const double n, const StationaryPdfParameters &p, QuantityEstimate &e)
+    {
+      const double iqr = binned_quantile(grid, counts, below, n, 0.75) -
+                         binned_quantile(grid, counts, below, n, 0.25);
+      e.bandwidth      = silverman_bandwidth(std::sqrt(e.variance), iqr, n);
+      e.rule           = "Silverman";
+      if (p.bandwidth_rule == BandwidthRule::silverman)
+        return;
+      if (p.bandwidth_rule == BandwidthRule::automatic &&
+          find_peaks(grid,
+                     kernel_density(grid, counts, n, std::max(e.bandwidth, grid.width())),
+                     p.peak_threshold)
+              .size() < 2)
+        {
+          e.rule = "Silverman (one peak)";
+          return;
+        }
+      const double plug_in = sheather_jones_bandwidth(grid, counts, iqr);
+      if (std::isfinite(plug_in))
+        e.bandwidth = plug_in, e.rule = "Sheather-Jones";
+      else
+        e.rule = "Silverman (Sheather-Jones has no root)";
+    }
+  } // namespace
+
   QuantityEstimate
   estimate_quantity(const PdfLayout &layout, const std::vector<double> &total, const unsigned int q,
            const StationaryPdfParameters &p)
@@ -215,12 +246,10 @@ namespace poundfe
     e.variance = std::max(0.0, total[2 + 2 * q] / n - e.mean * e.mean);
     e.outside  = (first[0] + first[grid.n_bins + 1]) / n;
     e.bandwidth = p.bandwidths[p.bandwidths.size() == 3 ? q : 0];
-    e.silverman = !(e.bandwidth > 0);
-    if (e.silverman)
-      e.bandwidth = silverman_bandwidth(std::sqrt(e.variance),
-                                        binned_quantile(grid, counts, first[0], n, 0.75) -
-                                          binned_quantile(grid, counts, first[0], n, 0.25),
-                                        n);
+    if (e.bandwidth > 0)
+      e.rule = "given";
+    else
+      choose_bandwidth(grid, counts, first[0], n, p, e);
     e.widened   = e.bandwidth < grid.width();
     e.bandwidth = std::max(e.bandwidth, grid.width());
     e.histogram = histogram_density(grid, counts, n);

@@ -7,6 +7,15 @@
 
 namespace poundfe
 {
+  const NameTable<BandwidthRule> &
+  bandwidth_rule_names()
+  {
+    static const NameTable<BandwidthRule> table({{BandwidthRule::silverman, "silverman"},
+                                                 {BandwidthRule::sheather_jones, "sheather-jones"},
+                                                 {BandwidthRule::automatic, "auto"}});
+    return table;
+  }
+
   namespace Patterns = dealii::Patterns;
 
   void
@@ -47,8 +56,15 @@ namespace poundfe
                       Patterns::Double(0));
     prm.add_parameter("Kernel bandwidth", bandwidths,
                       "Gaussian kernel bandwidths of x (m), v (m/s) and a (m), or one for all; "
-                      "0: Silverman's rule 0.9 min(sigma, IQR/1.34) N^(-1/5). Unit: per field.",
+                      "0: chosen by Bandwidth rule. Unit: per field.",
                       Patterns::List(Patterns::Double(0), 1, 3, ","));
+    add_choice(prm, "Bandwidth rule", bandwidth_rule,
+               "A Kernel bandwidth of 0: silverman (0.9 min(sigma, IQR/1.34) N^(-1/5); "
+               "oversmooths a multimodal density), sheather-jones (Sheather and Jones's "
+               "plug-in rule, solve-the-equation; Silverman's where it has no root) or auto "
+               "(Silverman's, then Sheather-Jones's when that density has 2 or more peaks). "
+               "Unit: -.",
+               bandwidth_rule_names());
     prm.add_parameter("Peak threshold", peak_threshold,
                       "A peak of a kernel density is a local maximum whose height and "
                       "prominence are at least this fraction of the global maximum. "

@@ -39,6 +39,18 @@ sed -n 2p "$work/given-range/pdf.csv" | awk -F, '{
 echo "ok   a given Range: the bins span it (x, v, and a to its corner), estimates match"
 "$poundfe" stationary-pdf "$sd" --output "$work/sd" > /dev/null
 python3 "$here/stationary_pdf_check.py" "$work/sd" sd 0.05 0.25 0.4
+# Bandwidth rule = auto: Sheather-Jones for the bimodal x, Silverman for the
+# one-peaked v; the densities still meet the exact one
+sed 's/  set Bins                   = 40/  set Bins = 40\n  set Bandwidth rule = auto/' "$sd" > "$work/sd-auto.prm"
+"$poundfe" stationary-pdf "$work/sd-auto.prm" --output "$work/sd-auto" > /dev/null
+python3 "$here/stationary_pdf_check.py" "$work/sd-auto" sd 0.05 0.25 0.4 > /dev/null
+python3 - "$work/sd-auto/summary.json" <<'PY' || fail "Bandwidth rule = auto: wrong rules"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["x"]["bandwidth_rule"].startswith("Sheather-Jones"), s["x"]["bandwidth_rule"]
+assert s["v"]["bandwidth_rule"].startswith("Silverman (one peak)"), s["v"]["bandwidth_rule"]
+PY
+echo "ok   Bandwidth rule = auto: Sheather-Jones on the two-peaked x, Silverman on v"
 # P-bifurcation over alpha (the SD spring's H): 8 realizations per value
 sed 's/  set Bins                   = 40/  set Bins = 40\n  set Parameter = Springs\/SD springs:6\n  set Values = 0.4, 0.5, 1.2, 1.5/
      s/set Number of realizations = 32/set Number of realizations = 8/' "$sd" > "$work/alpha.prm"

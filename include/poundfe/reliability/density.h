@@ -9,10 +9,25 @@
 //     h >= w (Poisson summation): callers keep h at least the bin width.
 //   Silverman's rule of thumb (ibid., eq. 3.31):
 //       h = 0.9 min(sigma, IQR / 1.34) N^(-1/5).
+//   Sheather & Jones's plug-in bandwidth, "solve-the-equation" (S.J. Sheather
+//     & M.C. Jones, J. R. Statist. Soc. B 53 (1991) 683-690, §5; M.P. Wand &
+//     M.C. Jones, Kernel Smoothing, Chapman & Hall 1995, §3.6), for
+//     multimodal densities, which Silverman's rule oversmooths:
+//       h = [R(K) / (N S(alpha(h)))]^(1/5),  R(K) = 1/(2 sqrt(pi)),
+//       alpha(h) = 1.357 [S(a) / T(b)]^(1/7) h^(5/7),
+//       a = 0.920 IQR N^(-1/7),  b = 0.912 IQR N^(-1/9),
+//       S(g) = sum_{i != j} phi4((X_i - X_j)/g) / (N (N-1) g^5),
+//       T(g) = -sum_{i != j} phi6((X_i - X_j)/g) / (N (N-1) g^7),
+//     phi4, phi6 the 4th and 6th derivatives of the normal density; on
+//     binned data the pairs are those of the bin centres, the diagonal
+//     (each sample with itself) taken out.
 //   Peaks: local maxima of f whose height and whose prominence (the drop to
 //     the higher of the lowest points between it and a higher maximum on
 //     either side, or the range's end) are both at least `threshold` times
-//     the global maximum, so sampling noise on a flank is no peak.
+//     the global maximum, so sampling noise on a flank is no peak. An
+//     interior peak is located between grid points by the parabola through
+//     it and its two neighbours (vertex offset d = (f- - f+) / (2 (f- - 2 f0
+//     + f+)) grid widths, height f0 - (f- - f+) d / 4).
 #ifndef poundfe_reliability_density_h
 #define poundfe_reliability_density_h
 
@@ -52,11 +67,18 @@ namespace poundfe
   /// 0.9 min(sigma, iqr / 1.34) n^(-1/5) (sigma alone when iqr is 0).
   double silverman_bandwidth(double sigma, double iqr, double n);
 
+  /// Sheather and Jones's bandwidth of the binned data (see the header;
+  /// `iqr` the interquartile range): NaN when the equation has no root
+  /// between 1e-3 and 10 times the normal-reference bandwidth, or the
+  /// counts are too few (< 3) or the IQR is 0.
+  double sheather_jones_bandwidth(const BinGrid &grid, const std::vector<double> &counts,
+                                  double iqr);
+
   struct Peak
   {
     unsigned int index;    // bin
-    double       location; // bin centre
-    double       height;   // density
+    double       location; // vertex of the parabola through the bin and its neighbours
+    double       height;   // density there
   };
 
   /// Peaks of `density` on `grid` (see the header), in ascending location.

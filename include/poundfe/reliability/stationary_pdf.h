@@ -71,7 +71,7 @@ namespace poundfe
   struct QuantityEstimate
   {
     double              mean = 0, variance = 0, outside = 0, bandwidth = 0;
-    bool                silverman = true;
+    std::string         rule = "Silverman"; // how the bandwidth was chosen
     bool                widened   = false; // raised to the bin width
     std::vector<double> histogram, kde;
     std::vector<Peak>   peaks;

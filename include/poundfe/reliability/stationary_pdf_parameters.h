@@ -3,6 +3,7 @@
 #ifndef poundfe_reliability_stationary_pdf_parameters_h
 #define poundfe_reliability_stationary_pdf_parameters_h
 
+#include <poundfe/base/choices.h>
 #include <poundfe/base/sweep_parameters.h>
 #include <poundfe/base/input_file.h>
 
@@ -16,6 +17,15 @@ namespace dealii
 
 namespace poundfe
 {
+  /// How a kernel bandwidth of 0 is chosen (reliability/density.h).
+  enum class BandwidthRule
+  {
+    silverman,      // 0.9 min(sigma, IQR/1.34) N^(-1/5)
+    sheather_jones, // the plug-in rule, solve-the-equation
+    automatic       // Silverman's, then Sheather-Jones's if that density has 2+ peaks
+  };
+  const NameTable<BandwidthRule> &bandwidth_rule_names();
+
   struct StationaryPdfParameters
   {
     std::string         response        = "1 1 0"; // 'building floor node' (its ux)
@@ -26,7 +36,8 @@ namespace poundfe
     unsigned int        bins            = 50;
     std::vector<double> range;            // x_low, x_high, v_low, v_high; empty: from a pilot
     double              omega          = 0; // rad/s; 0: the first natural frequency
-    std::vector<double> bandwidths{0.0};  // x, v, a (one for all); 0: Silverman's rule
+    std::vector<double> bandwidths{0.0};  // x, v, a (one for all); 0: by `bandwidth_rule`
+    BandwidthRule       bandwidth_rule = BandwidthRule::silverman;
     double              peak_threshold = 0.05;
     /// P-bifurcation: `Parameter` and `Values` of this section; empty: one run.
     SweepParameters sweep{"Stationary PDF"};
