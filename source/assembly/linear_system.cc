@@ -67,6 +67,39 @@ namespace poundfe
       return m;
     }
 
+    /// A storey's spring or dashpot of constant k on its deformation: on
+    /// ux(bottom), ux(top) (fixed base), or on a compliant foundation also on
+    /// the base rotation θ, d = ux(top) - ux(bottom) - h θ (k a a^T).
+    void
+    scatter_storey(const Model &model, const StoreyLink &link, const double k,
+                   Triplets &triplets)
+    {
+      if (link.rocking_node < 0)
+        {
+          scatter(model, link_dofs(link), two_node_spring(k), triplets);
+          return;
+        }
+      const Eigen::Vector3d a(-1.0, 1.0, -link.rocking_arm);
+      scatter(model,
+              {Model::dof(link.nodes[0], Component::ux), Model::dof(link.nodes[1], Component::ux),
+               Model::dof(link.rocking_node, Component::rz)},
+              Eigen::Matrix3d(k * a * a.transpose()), triplets);
+    }
+
+    /// The foundations' springs (or, with `mass`, their masses and rotary
+    /// inertias) on the base nodes' sway and rocking.
+    void
+    add_foundation_terms(const Model &model, const bool mass, Triplets &triplets)
+    {
+      for (const Foundation &f : model.foundations)
+        {
+          const int u     = model.equation(Model::dof(f.node, Component::ux));
+          const int theta = model.equation(Model::dof(f.node, Component::rz));
+          triplets.emplace_back(u, u, mass ? f.mass : f.horizontal_stiffness);
+          triplets.emplace_back(theta, theta, mass ? f.rotary_inertia : f.rocking_stiffness);
+        }
+    }
+
     SparseMatrix
     from_triplets(const unsigned int n, const Triplets &triplets)
     {
@@ -151,6 +184,8 @@ namespace poundfe
         model, member_axial_forces(model, system.stiffness, loads), storey_gravity_loads(model));
       system.stiffness += system.geometric_stiffness;
       system.stiffness.makeCompressed();
+      if (system.structure_stiffness.rows() > 0)
+        system.structure_stiffness += system.geometric_stiffness;
     }
   } // namespace
 
@@ -167,7 +202,7 @@ namespace poundfe
         scatter(model, dofs, element.mass(model.mass_matrix), m_triplets);
       }
     for (const StoreyLink &link : model.links)
-      scatter(model, link_dofs(link), two_node_spring(link.stiffness), k_triplets);
+      scatter_storey(model, link, link.stiffness, k_triplets);
     // The linear part of the nonlinear springs to the ground (SD: K, Duffing: k1).
     for (const Spring &spring : model.springs)
       scatter(model, {Model::dof(spring.node, Component::ux)},
@@ -190,6 +225,13 @@ namespace poundfe
     add_frame_3d_terms(model, k_triplets, m_triplets);
 
     LinearSystem system;
+    if (!model.foundations.empty())
+      {
+        system.structure_stiffness = from_triplets(n, k_triplets);
+        system.structure_mass      = from_triplets(n, m_triplets);
+        add_foundation_terms(model, false, k_triplets);
+        add_foundation_terms(model, true, m_triplets);
+      }
     system.stiffness = from_triplets(n, k_triplets);
     system.mass      = from_triplets(n, m_triplets);
     system.damping   = SparseMatrix(n, n);
@@ -335,9 +377,14 @@ namespace poundfe
         for (unsigned int e = range[0]; e < range[1]; ++e)
           owner[e] = b;
       }
-    for (const SparseMatrix *matrix : {&system.mass, &system.stiffness})
+    // Rayleigh damping is the superstructure's: the soil's is its dashpots
+    // (foundation elements), so the foundations' M and K are left out.
+    const bool          structure = system.structure_mass.rows() > 0;
+    const SparseMatrix &mass      = structure ? system.structure_mass : system.mass;
+    const SparseMatrix &stiffness = structure ? system.structure_stiffness : system.stiffness;
+    for (const SparseMatrix *matrix : {&mass, &stiffness})
       {
-        const unsigned int which = (matrix == &system.mass) ? 0 : 1;
+        const unsigned int which = (matrix == &mass) ? 0 : 1;
         for (int column = 0; column < matrix->outerSize(); ++column)
           for (SparseMatrix::InnerIterator it(*matrix, column); it; ++it)
             {
@@ -348,7 +395,7 @@ namespace poundfe
       }
     for (const StoreyLink &link : model.links)
       if (link.damping > 0)
-        scatter(model, link_dofs(link), two_node_spring(link.damping), triplets);
+        scatter_storey(model, link, link.damping, triplets);
     system.damping = from_triplets(n, triplets);
     system.rayleigh = coefficients;
   }

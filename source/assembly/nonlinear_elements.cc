@@ -10,6 +10,38 @@
 
 namespace poundfe
 {
+  namespace
+  {
+    /// Each foundation's sway and rocking: a spring k (already in K, so the
+    /// element adds only its dashpot's force c v to the residual) and a
+    /// dashpot c in parallel (a Kelvin-Voigt law with alpha = 1), so that
+    /// their forces and the dashpots' energy are reported and balanced.
+    void
+    add_foundation_elements(const Model &model, NonlinearElements &elements)
+    {
+      for (const Foundation &f : model.foundations)
+        {
+          const std::string name = model.buildings[f.building].name;
+          const std::array<std::pair<Component, std::array<double, 2>>, 2> parts{
+            {{Component::ux, {{f.horizontal_stiffness, f.horizontal_damping}}},
+             {Component::rz, {{f.rocking_stiffness, f.rocking_damping}}}}};
+          for (const auto &[component, law] : parts)
+            {
+              LinkLawParameters p;
+              p.kind      = LinkKind::kelvin_voigt;
+              p.stiffness = law[0];
+              p.damping   = law[1];
+              p.exponent  = 1;
+              elements.emplace_back<UniaxialElement>(
+                ElementKind::foundation, f.building,
+                name + (component == Component::ux ? "_sway" : "_rocking"),
+                std::array<int, 2>{{model.equation(Model::dof(f.node, component)), -1}},
+                make_link_law(p), law[0]);
+            }
+        }
+    }
+  } // namespace
+
   NonlinearElements
   make_nonlinear_elements(const Model &model)
   {
@@ -31,12 +63,22 @@ namespace poundfe
         const unsigned int storey = ++storey_of_building[link.building];
         if (!link.hysteretic)
           continue;
-        elements.emplace_back<UniaxialElement>(
-          ElementKind::storey, link.building,
-          model.buildings[link.building].name + "_S" + std::to_string(storey),
-          std::array<int, 2>{{model.equation(Model::dof(link.nodes[1], Component::ux)),
-                              model.equation(Model::dof(link.nodes[0], Component::ux))}},
-          std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
+        const std::string label =
+          model.buildings[link.building].name + "_S" + std::to_string(storey);
+        const int top    = model.equation(Model::dof(link.nodes[1], Component::ux));
+        const int bottom = model.equation(Model::dof(link.nodes[0], Component::ux));
+        if (link.rocking_node >= 0) // d = u_top - u_bottom - h θ (sway-rocking)
+          elements.emplace_back<UniaxialElement>(
+            ElementKind::storey, link.building, label,
+            std::vector<int>{top, bottom,
+                             model.equation(Model::dof(link.rocking_node, Component::rz))},
+            std::vector<double>{1.0, -1.0, -link.rocking_arm},
+            std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
+        else
+          elements.emplace_back<UniaxialElement>(ElementKind::storey, link.building, label,
+                                                 std::array<int, 2>{{top, bottom}},
+                                                 std::make_unique<BoucWen>(link.hysteresis),
+                                                 link.stiffness);
       }
     for (const PlaneLink &link : model.plane_links)
       if (link.hysteretic)
@@ -97,6 +139,7 @@ namespace poundfe
         std::array<int, 2>{{model.equation(Model::dof(link.nodes[0], Component::ux)),
                             model.equation(Model::dof(link.nodes[1], Component::ux))}},
         make_link_law(link.law));
+    add_foundation_elements(model, elements);
     return elements;
   }
 } // namespace poundfe

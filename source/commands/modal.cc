@@ -1,6 +1,7 @@
 // `poundfe modal`: the frequencies, periods and participating masses of the
 // model and of each building (summary.json), and the mode shapes (modes.pvd).
 #include <poundfe/commands/command.h>
+#include <poundfe/dynamics/foundation_periods.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
@@ -15,10 +16,50 @@ namespace poundfe
 {
   namespace
   {
+    /// summary.json's `foundations`: each compliant base's first periods.
+    void
+    write_foundation_periods(JsonWriter &json, const Model &model,
+                             const std::vector<FoundationPeriods> &periods)
+    {
+      if (periods.empty())
+        return;
+      json.begin_array("foundations");
+      for (const FoundationPeriods &p : periods)
+        json.begin_object()
+          .value("building", model.buildings[p.building].name)
+          .value("fixed_base_period_s", p.fixed_base_period)
+          .value("flexible_base_period_s", p.flexible_base_period)
+          .value("period_ratio", p.ratio())
+          .value("asce7_period_ratio", p.code_ratio)
+          .value("effective_stiffness_N_m", p.effective_stiffness)
+          .value("effective_height_m", p.effective_height)
+          .end_object();
+      json.end_array();
+    }
+
+    /// The table of the first periods on fixed and compliant bases.
+    void
+    print_foundation_periods(const Model &model, const std::vector<FoundationPeriods> &periods,
+                             std::ostream &out)
+    {
+      if (periods.empty())
+        return;
+      out << "\nbuilding      T fixed (s)  T flexible (s)  T~/T  ASCE 7-16 19.2.1.1 T~/T\n";
+      for (const FoundationPeriods &p : periods)
+        {
+          char line[160];
+          std::snprintf(line, sizeof(line), "%-12s  %11.4f  %14.4f  %6.4f  %24.4f\n",
+                        model.buildings[p.building].name.c_str(), p.fixed_base_period,
+                        p.flexible_base_period, p.ratio(), p.code_ratio);
+          out << line;
+        }
+    }
+
     /// summary.json: the model, its modes, and each building's modes and
     /// Rayleigh coefficients.
     std::string
-    modal_summary(const Analysis &analysis, const InputFile &input)
+    modal_summary(const Analysis &analysis, const InputFile &input,
+                  const std::vector<FoundationPeriods> &periods)
     {
       JsonWriter json;
       json.begin_object().value("program", "poundfe").value("command", "modal").value(
@@ -32,7 +73,9 @@ namespace poundfe
           write_damping(json, analysis, b);
           json.end_object();
         }
-      json.end_array().end_object();
+      json.end_array();
+      write_foundation_periods(json, analysis.model, periods);
+      json.end_object();
       return json.str();
     }
 
@@ -68,7 +111,8 @@ namespace poundfe::commands
   {
     const Analysis analysis = prepare_analysis(*run.input);
     prepare_output_directory(run.directory);
-    const std::string summary = modal_summary(analysis, *run.input);
+    const std::vector<FoundationPeriods> periods = foundation_periods(analysis.model);
+    const std::string summary = modal_summary(analysis, *run.input, periods);
     VtuSeries         modes(analysis.model, run.directory, "modes");
     for (unsigned int i = 0; i < analysis.modes.n_modes(); ++i)
       modes.write_mode(i + 1, analysis.modes.frequency(i), analysis.modes.shapes.col(i));
@@ -76,6 +120,7 @@ namespace poundfe::commands
     write_file_atomically(run.directory + "/summary.json", summary);
 
     print_modes(analysis.modes, run.out);
+    print_foundation_periods(analysis.model, periods, run.out);
     run.out << "results in " << run.directory << "/ (summary.json, modes.pvd)\n";
     return 0;
   }

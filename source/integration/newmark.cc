@@ -907,6 +907,7 @@ namespace poundfe
     balance.kinetic = kinetic_energy();
     balance.strain  = strain_energy();
     balance.hysteretic = balance.contact = balance.friction = balance.links = 0;
+    balance.foundation = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         const NonlinearElement &e          = (*elements)[h];
@@ -921,6 +922,9 @@ namespace poundfe
               break;
             case ElementKind::link:
               balance.links += dissipated;
+              break;
+            case ElementKind::foundation:
+              balance.foundation += dissipated;
               break;
             default: // hinges, storeys; elastic springs dissipate nothing
               balance.hysteretic += dissipated;

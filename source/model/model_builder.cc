@@ -263,6 +263,24 @@ namespace poundfe
         }
     }
 
+    /// The base node on the foundation's springs: free in sway and rocking.
+    void
+    add_foundation(Model &model, const FoundationParameters &p, const unsigned int b,
+                   const unsigned int base)
+    {
+      model.nodes[base].fixed = {{false, true, false}};
+      Foundation f;
+      f.node                 = base;
+      f.building             = b;
+      f.horizontal_stiffness = p.impedance.horizontal_stiffness;
+      f.rocking_stiffness    = p.impedance.rocking_stiffness;
+      f.horizontal_damping   = p.impedance.horizontal_damping;
+      f.rocking_damping      = p.impedance.rocking_damping;
+      f.mass                 = p.mass;
+      f.rotary_inertia       = p.rotary_inertia;
+      model.foundations.push_back(f);
+    }
+
     void
     build_shear(Model &model, const BuildingParameters &p, const unsigned int b,
                 Building &building)
@@ -271,6 +289,9 @@ namespace poundfe
       const double x     = building.left + 0.5 * p.drawing_width;
       unsigned int below = add_node(model, {x, 0.0}, b);
       model.nodes[below].fixed = {{true, true, true}};
+      const unsigned int base = below;
+      if (p.foundation.enabled())
+        add_foundation(model, p.foundation, b, base);
       double level = 0;
       for (unsigned int i = 1; i <= p.n_storeys; ++i)
         {
@@ -282,6 +303,11 @@ namespace poundfe
           link.stiffness = value_for(p.storey_stiffnesses, i - 1);
           link.damping   = value_for(p.storey_damping, i - 1);
           link.building  = b;
+          if (p.foundation.enabled())
+            {
+              link.rocking_node = base;
+              link.rocking_arm  = value_for(p.storey_heights, i - 1);
+            }
           const double yield_drift =
             p.storey_yield_drifts.empty() ? 0.0 : value_for(p.storey_yield_drifts, i - 1);
           if (yield_drift > 0)

@@ -243,6 +243,7 @@ namespace poundfe
                       "Unit: -.");
     prm.leave_subsection();
     plan.declare(prm);
+    foundation.declare(prm);
   }
 
   void
@@ -342,6 +343,7 @@ namespace poundfe
         input.non_negative(s + "Damping/a1", rayleigh_a1);
       }
     finalize_modal_damping(input, s + "Damping/");
+    foundation.finalize(input, s, type == BuildingType::shear);
   }
 
   void
@@ -399,6 +401,9 @@ namespace poundfe
         if (buildings[b].type == BuildingType::frame)
           buildings[b].finalize_frame_3d(input, s);
         buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
+        if (buildings[b].foundation.enabled())
+          input.fail(s + "Foundation/Type", "compliant foundations are for 2D models "
+                                            "(Dimension = 2) so far");
       }
   }
 

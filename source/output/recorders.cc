@@ -303,13 +303,22 @@ namespace poundfe
           case RecordedQuantity::gap_states:
             return gap_state_series(elements, n_hyst, peaks.n_gaps());
           case RecordedQuantity::energy:
-            return {{"input_J", "kinetic_J", "damping_J", "strain_J", "hysteretic_J", "contact_J",
-                     "balance_error", "friction_J", "belt_J", "links_J"},
-                    [](const ResponseView &s, std::vector<double> &to) {
-                      const EnergyBalance e = s.energy();
-                      to = {e.input, e.kinetic, e.damping, e.strain, e.hysteretic, e.contact,
-                            s.max_energy_error(), e.friction, e.belt, e.links};
-                    }};
+            {
+              // a column for the foundations' dashpots only when there are some
+              const bool foundations = !state.model.foundations.empty();
+              std::vector<std::string> names{"input_J", "kinetic_J", "damping_J", "strain_J",
+                                             "hysteretic_J", "contact_J", "balance_error",
+                                             "friction_J", "belt_J", "links_J"};
+              if (foundations)
+                names.push_back("foundation_J");
+              return {names, [foundations](const ResponseView &s, std::vector<double> &to) {
+                        const EnergyBalance e = s.energy();
+                        to = {e.input, e.kinetic, e.damping, e.strain, e.hysteretic, e.contact,
+                              s.max_energy_error(), e.friction, e.belt, e.links};
+                        if (foundations)
+                          to.push_back(e.foundation);
+                      }};
+            }
           case RecordedQuantity::ground_motion:
             return {{"ground_acceleration_m_s2"}, [](const ResponseView &s, std::vector<double> &to) {
                       to.assign(1, s.ground_acceleration());

@@ -94,7 +94,11 @@ namespace poundfe
         auto drift = [&](const Vector &x) {
           const int top    = model.equation(Model::dof(link.nodes[1], Component::ux));
           const int bottom = model.equation(Model::dof(link.nodes[0], Component::ux));
-          return (top >= 0 ? x[top] : 0.0) - (bottom >= 0 ? x[bottom] : 0.0);
+          const double rocking = // the base rotation's share (sway-rocking)
+            link.rocking_node < 0 ?
+              0.0 :
+              link.rocking_arm * x[model.equation(Model::dof(link.rocking_node, Component::rz))];
+          return (top >= 0 ? x[top] : 0.0) - (bottom >= 0 ? x[bottom] : 0.0) - rocking;
         };
         V += storey.hysteretic >= 0 ? nonlinear[storey.hysteretic].force() :
                                       link.stiffness * drift(u);

@@ -4,6 +4,7 @@
 #include <poundfe/dynamics/modal_damping_assembly.h>
 #include <poundfe/model/parameters.h>
 #include <poundfe/output/stick_slip_report.h>
+#include <poundfe/output/foundation_report.h>
 #include <poundfe/output/link_report.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
@@ -53,6 +54,9 @@ namespace poundfe
                     "peak_force_N"};
           case ElementKind::link:
             return {"link", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
+                    "peak_force_N"};
+          case ElementKind::foundation:
+            return {"foundation", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
                     "peak_force_N"};
         }
       throw std::logic_error("units_of: unknown element kind");
@@ -259,6 +263,7 @@ namespace poundfe
       write_gaps(json, state);
     write_springs_and_friction(json, state, peaks, status.end_time);
     write_links(json, state, peaks);
+    write_foundations(json, state, peaks);
     write_energy_and_newton(json, state);
     write_run(json, status, written);
     json.end_object();
@@ -396,7 +401,10 @@ namespace poundfe
       .value("contact_J", energy.contact)
       .value("friction_J", energy.friction)
       .value("links_J", energy.links)
-      .value("belt_J", energy.belt)
+      .value("belt_J", energy.belt);
+    if (!analysis.model.foundations.empty())
+      json.value("foundation_J", energy.foundation);
+    json
       .value("max_relative_balance_error", state.max_energy_error())
       .end_object();
     const IterationStatistics &stats = state.statistics();

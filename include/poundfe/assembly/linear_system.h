@@ -48,6 +48,9 @@ namespace poundfe
     /// K_G, the P-Delta part of `stiffness` (0 x 0 without P-Delta).
     SparseMatrix geometric_stiffness;
     SparseMatrix damping; // Rayleigh and storey dashpots
+    /// With compliant foundations (empty without): M and K without the
+    /// foundations' terms, the superstructure's, for its Rayleigh damping.
+    SparseMatrix structure_mass, structure_stiffness;
     /// Modal damping (Damping/Type = modal or bands): C = damping + this.
     LowRankDamping modal_damping;
     /// Influence vector of a horizontal ground motion: 1 on every ux equation.

@@ -39,7 +39,8 @@ namespace poundfe
     gap,    // contact
     spring, // nonlinear elastic spring to the ground (SD, Duffing)
     friction, // dry friction against the ground or a moving belt
-    link      // a damper or connector between floors of two buildings
+    link,     // a damper or connector between floors of two buildings
+    foundation // a compliant foundation's sway or rocking spring and dashpot
   };
 
   class NonlinearElement

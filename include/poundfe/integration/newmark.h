@@ -104,11 +104,12 @@ namespace poundfe
     double contact    = 0; // dissipated by gaps
     double friction   = 0; // dissipated by friction, int F (x' - v0) dt
     double links      = 0; // dissipated by links between buildings (dampers)
+    double foundation = 0; // dissipated by the foundations' dashpots (soil radiation)
 
     double supplied() const { return initial + input + belt; }
     double stored_and_dissipated() const
     {
-      return kinetic + damping + strain + hysteretic + contact + friction + links;
+      return kinetic + damping + strain + hysteretic + contact + friction + links + foundation;
     }
   };
 

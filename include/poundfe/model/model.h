@@ -104,6 +104,23 @@ namespace poundfe
     /// Bouc-Wen storey (stiffness = hysteresis.stiffness) or elastic.
     bool                        hysteretic = false;
     BoucWenParameters           hysteresis;
+    /// On a compliant foundation: the base node whose rotation θ rocks the
+    /// storey, d = ux(top) - ux(bottom) - rocking_arm θ (-1: fixed base, d =
+    /// ux(top) - ux(bottom)); rocking_arm is the storey height.
+    int                         rocking_node = -1;
+    double                      rocking_arm  = 0;
+  };
+
+  /// A compliant foundation under a 2D shear building (doc/theory.md
+  /// §1.16): the base node's ux (sway u_0) and rz (rocking θ) on springs and
+  /// dashpots to the ground, with the foundation's mass and rotary inertia.
+  struct Foundation
+  {
+    unsigned int node     = 0;
+    unsigned int building = 0;
+    double       horizontal_stiffness = 0, rocking_stiffness = 0; // N/m, N m/rad
+    double       horizontal_damping = 0, rocking_damping = 0;     // N s/m, N m s/rad
+    double       mass = 0, rotary_inertia = 0;                    // kg, kg m²
   };
 
   /// A rotational Bouc-Wen spring at a member end: between the rotation of
@@ -346,6 +363,7 @@ namespace poundfe
     std::vector<Spring>          springs;
     std::vector<FrictionSurface> friction_surfaces;
     std::vector<BuildingLink>    building_links;
+    std::vector<Foundation>      foundations; // compliant bases of 2D shear buildings
     /// A bumper in every 2D gap (law none: bare gaps).
     BumperParameters             bumper;
     /// The contact law of every gap (its gap and m_e are set per gap).

@@ -8,6 +8,7 @@
 #include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/laws/bouc_wen.h>
+#include <poundfe/model/foundation_parameters.h>
 #include <poundfe/model/model.h>
 #include <poundfe/model/plan_parameters.h>
 
@@ -106,6 +107,8 @@ namespace poundfe
 
     /// The building in plan (Model/Dimension = 3).
     PlanParameters plan;
+    /// A compliant foundation (2D shear buildings; off by default).
+    FoundationParameters foundation;
 
     /// Declare the entries of one `Building <i>` subsection (the current one).
     void declare(dealii::ParameterHandler &prm);

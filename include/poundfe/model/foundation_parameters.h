@@ -1,0 +1,57 @@
+// The `Building <i>/Foundation` subsection: a compliant foundation under a
+// 2D shear building (the sway-rocking model, doc/theory.md §1.16): the
+// soil's shear-wave velocity, density and Poisson ratio and the
+// foundation's size and embedment give the springs and dashpots by Gazetas'
+// formulas or Wolf's cones (laws/foundation_impedance.h), or they are typed
+// in; the foundation's mass and rotary inertia. Off (Type = none) by default.
+#ifndef poundfe_model_foundation_parameters_h
+#define poundfe_model_foundation_parameters_h
+
+#include <poundfe/base/choices.h>
+#include <poundfe/base/input_file.h>
+#include <poundfe/laws/foundation_impedance.h>
+
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace poundfe
+{
+  enum class FoundationType
+  {
+    none,
+    gazetas,
+    cone,
+    given
+  };
+
+  const NameTable<FoundationType> &foundation_type_names();
+
+  struct FoundationParameters
+  {
+    FoundationType     type = FoundationType::none;
+    SoilProperties     soil;
+    FoundationGeometry geometry;
+    /// Type = given: the springs and dashpots as typed.
+    FoundationImpedance given;
+    double              mass           = 0; // kg, on the sway
+    double              rotary_inertia = 0; // kg m², about the base node
+
+    /// Set by finalize: the springs and dashpots in use (and Wolf's added
+    /// rotary inertia, already in rotary_inertia).
+    FoundationImpedance impedance;
+
+    bool enabled() const { return type != FoundationType::none; }
+
+    /// Declare the entries of `Foundation` (entered and left here).
+    void declare(dealii::ParameterHandler &prm);
+    /// Check `<section>Foundation/` and compute the impedance; `shear`: the
+    /// building is a shear building. Throws InputError.
+    void finalize(const InputFile &input, const std::string &section, bool shear);
+  };
+} // namespace poundfe
+
+#endif

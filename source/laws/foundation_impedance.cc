@@ -1,0 +1,79 @@
+// Gazetas (1991) and Wolf (1994) impedances: the equations and sources are
+// in include/poundfe/laws/foundation_impedance.h and doc/theory.md §1.16.
+#include <poundfe/laws/foundation_impedance.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace poundfe
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+  }
+
+  FoundationImpedance
+  gazetas_impedance(const SoilProperties &soil, const FoundationGeometry &foundation)
+  {
+    const double G  = soil.shear_modulus();
+    const double nu = soil.poisson_ratio;
+    const double L  = 0.5 * std::max(foundation.length, foundation.width);
+    const double B  = 0.5 * std::min(foundation.length, foundation.width);
+    const double chi = B / L;
+    // the plane of motion along the long side: sway along x, rocking about y
+    const bool   along_long = foundation.length >= foundation.width;
+    const double area       = 4 * B * L;
+    const double k_y        = 2 * G * L / (2 - nu) * (2 + 2.5 * std::pow(chi, 0.85));
+    const double k_x        = k_y - 0.2 * G * L * (1 - chi) / (0.75 - nu);
+    const double i_bx       = 2 * L * std::pow(2 * B, 3) / 12; // about the long axis
+    const double i_by       = 2 * B * std::pow(2 * L, 3) / 12; // about the short axis
+    const double k_rx = G / (1 - nu) * std::pow(i_bx, 0.75) * std::pow(L / B, 0.25) *
+                        (2.4 + 0.5 * chi);
+    const double k_ry = 3 * G / (1 - nu) * std::pow(i_by, 0.75) * std::pow(L / B, 0.15);
+
+    double sway_factor = 1, rocking_factor = 1;
+    const double D = foundation.embedment;
+    if (D > 0)
+      {
+        const double d = D, h = D - d / 2, wall_area = 4 * d * (B + L);
+        const double across = along_long ? L * B * B : B * L * L;
+        sway_factor = (1 + 0.15 * std::sqrt(D / B)) *
+                      (1 + 0.52 * std::pow(h * wall_area / across, 0.4));
+        rocking_factor =
+          along_long ?
+            1 + 0.92 * std::pow(d / L, 0.6) *
+                  (1.5 + std::pow(d / L, 1.9) * std::pow(d / D, -0.6)) :
+            1 + 1.26 * (d / B) * (1 + (d / B) * std::pow(d / D, -0.2) * std::sqrt(B / L));
+      }
+    const double analog_velocity = 3.4 * soil.shear_wave_velocity / (pi * (1 - nu));
+    FoundationImpedance z;
+    z.horizontal_stiffness = (along_long ? k_x : k_y) * sway_factor;
+    z.rocking_stiffness    = (along_long ? k_ry : k_rx) * rocking_factor;
+    z.horizontal_damping   = soil.density * soil.shear_wave_velocity * area;
+    z.rocking_damping      = soil.density * analog_velocity * (along_long ? i_by : i_bx);
+    return z;
+  }
+
+  FoundationImpedance
+  cone_impedance(const SoilProperties &soil, const FoundationGeometry &foundation)
+  {
+    const double G      = soil.shear_modulus();
+    const double nu     = soil.poisson_ratio;
+    const double vs     = soil.shear_wave_velocity;
+    const double area   = foundation.length * foundation.width;
+    const double moment = foundation.width * std::pow(foundation.length, 3) / 12;
+    const double r_h    = std::sqrt(area / pi);
+    const double r_r    = std::pow(4 * moment / pi, 0.25);
+    const double vp     = vs * std::sqrt(2 * (1 - nu) / (1 - 2 * nu));
+    const bool   nearly_incompressible = nu > 1.0 / 3;
+    FoundationImpedance z;
+    z.horizontal_stiffness = 8 * G * r_h / (2 - nu);
+    z.rocking_stiffness    = 8 * G * std::pow(r_r, 3) / (3 * (1 - nu));
+    z.horizontal_damping   = soil.density * vs * pi * r_h * r_h;
+    z.rocking_damping =
+      soil.density * (nearly_incompressible ? 2 * vs : vp) * pi * std::pow(r_r, 4) / 4;
+    if (nearly_incompressible)
+      z.added_rotary_inertia = 0.3 * pi * (nu - 1.0 / 3) * soil.density * std::pow(r_r, 5);
+    return z;
+  }
+} // namespace poundfe

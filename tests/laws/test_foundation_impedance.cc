@@ -1,0 +1,106 @@
+// Foundation impedances (laws/foundation_impedance.h) against published
+// values (doc/verification.md, "Compliant foundations"):
+//  - the exact static stiffnesses of a rigid disk on a half-space (Bycroft
+//    1956; Veletsos & Wei 1971), K_h = 8 G r/(2 - ν), K_r = 8 G r³/(3(1 - ν)):
+//    Wolf's cones reproduce them to rounding;
+//  - Gazetas' square foundation against the disk of the same area: 9 G L /
+//    (2 - ν) against 8 G (2L/sqrt(π))/(2 - ν), 0.3 % apart (Gazetas 1991 fits
+//    his formulas to within a few per cent of rigorous results);
+//  - Gazetas' long rectangle against his strip foundation per unit length
+//    (Gazetas 1991, Table 1, strip rows: K_h = 2 G/(2 - ν) (the fit's
+//    limit), K_r = π G B²/(2(1 - ν)), the exact strip value; the rectangle's
+//    rocking fit stays 5.2 % below it, so the tolerance is 6 %);
+//  - the embedment factors of Gazetas' Table 2 at one case evaluated by hand
+//    (D = B: 1 + 0.15 + ..., the numbers in the comments);
+//  - the dashpots: ρ V_s A for sway (Gazetas' and Wolf's agree), ρ V_La I
+//    and ρ V_p I (ν <= 1/3) or 2 ρ V_s I (ν > 1/3) for rocking.
+#include <poundfe/laws/foundation_impedance.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+using namespace poundfe;
+
+namespace
+{
+  const SoilProperties soil{150.0, 1900.0, 0.25}; // G = 42.75 MPa
+  const double         G = 1900.0 * 150.0 * 150.0;
+}
+
+BOOST_AUTO_TEST_CASE(cones_have_the_exact_static_stiffness_of_a_disk)
+{
+  // a square of side a as a disk of the same area (sway) and moment (rocking)
+  const double a = 4.0, r_h = a / std::sqrt(M_PI), r_r = std::pow(a * a * a * a / (3 * M_PI), 0.25);
+  const FoundationImpedance z = cone_impedance(soil, {a, a, 0});
+  BOOST_TEST(z.horizontal_stiffness == 8 * G * r_h / (2 - 0.25), boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(z.rocking_stiffness == 8 * G * std::pow(r_r, 3) / (3 * 0.75),
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(z.horizontal_damping == 1900.0 * 150.0 * a * a, boost::test_tools::tolerance(1e-14));
+  const double vp = 150.0 * std::sqrt(3.0); // ν = 1/4: V_p = sqrt(3) V_s
+  BOOST_TEST(z.rocking_damping == 1900.0 * vp * a * a * a * a / 12,
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(z.added_rotary_inertia == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(nearly_incompressible_cone_caps_the_velocity_and_traps_soil)
+{
+  const SoilProperties clay{100.0, 1800.0, 0.45};
+  const double         a = 3.0, r = std::pow(a * a * a * a / (3 * M_PI), 0.25);
+  const FoundationImpedance z = cone_impedance(clay, {a, a, 0});
+  BOOST_TEST(z.rocking_damping == 1800.0 * 200.0 * a * a * a * a / 12,
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(z.added_rotary_inertia == 0.3 * M_PI * (0.45 - 1.0 / 3) * 1800.0 * std::pow(r, 5),
+             boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(gazetas_square_is_the_disk_of_the_same_area)
+{
+  const double a = 6.0;
+  const FoundationImpedance z = gazetas_impedance(soil, {a, a, 0});
+  const double disk = 8 * G * (a / std::sqrt(M_PI)) / (2 - 0.25);
+  BOOST_TEST(z.horizontal_stiffness == 9 * G * (a / 2) / (2 - 0.25),
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(z.horizontal_stiffness == disk, boost::test_tools::tolerance(0.005));
+}
+
+BOOST_AUTO_TEST_CASE(gazetas_long_rectangle_tends_to_the_strip)
+{
+  // motion across a 2 m wide, 2 km long footing (in-plane side the short one)
+  const double B = 1.0, length = 2000.0;
+  const FoundationImpedance z = gazetas_impedance(soil, {2 * B, length, 0});
+  BOOST_TEST(z.horizontal_stiffness / length == 2 * G / (2 - 0.25),
+             boost::test_tools::tolerance(0.005));
+  BOOST_TEST(z.rocking_stiffness / length == M_PI * G * B * B / (2 * 0.75),
+             boost::test_tools::tolerance(0.06));
+}
+
+BOOST_AUTO_TEST_CASE(gazetas_embedment_factors_of_table_2)
+{
+  // 4 m x 6 m base, motion along the 6 m side (x: sway K_x, rocking K_ry),
+  // D = 2 m = B, full sidewall contact: h = 1 m, A_w = 4 D (B + L) = 40 m².
+  // sway:    [1 + 0.15 sqrt(2/2)] [1 + 0.52 (1 · 40 / (3 · 2²))^0.4] = 1.15 × 1.8417
+  // rocking: 1 + 0.92 (2/3)^0.6 (1.5 + (2/3)^1.9) = 2.4158
+  const FoundationImpedance surface  = gazetas_impedance(soil, {6, 4, 0});
+  const FoundationImpedance embedded = gazetas_impedance(soil, {6, 4, 2});
+  const double sway = 1.15 * (1 + 0.52 * std::pow(40.0 / 12.0, 0.4));
+  const double rock = 1 + 0.92 * std::pow(2.0 / 3, 0.6) * (1.5 + std::pow(2.0 / 3, 1.9));
+  BOOST_TEST(embedded.horizontal_stiffness / surface.horizontal_stiffness == sway,
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(embedded.rocking_stiffness / surface.rocking_stiffness == rock,
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(sway == 1.15 * 1.8417, boost::test_tools::tolerance(1e-4));
+  BOOST_TEST(rock == 2.4158, boost::test_tools::tolerance(1e-4));
+  // the surface values, Gazetas' Table 1 (L = 3, B = 2, χ = 2/3):
+  // K_x = 2 G 3/1.75 (2 + 2.5 χ^0.85) - 0.2 G 3 (1/3)/0.5, K_ry = 3 G/0.75 I_by^0.75 1.5^0.15
+  const double k_y = 2 * G * 3 / 1.75 * (2 + 2.5 * std::pow(2.0 / 3, 0.85));
+  BOOST_TEST(surface.horizontal_stiffness == k_y - 0.2 * G * 3 * (1.0 / 3) / 0.5,
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(surface.rocking_stiffness ==
+               3 * G / 0.75 * std::pow(4.0 * 216 / 12, 0.75) * std::pow(1.5, 0.15),
+             boost::test_tools::tolerance(1e-12));
+  // dashpots: ρ V_s A and ρ V_La I_by, V_La = 3.4 V_s/(π (1 - ν))
+  BOOST_TEST(surface.horizontal_damping == 1900.0 * 150.0 * 24, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(surface.rocking_damping == 1900.0 * 3.4 * 150.0 / (M_PI * 0.75) * 72,
+             boost::test_tools::tolerance(1e-14));
+}
