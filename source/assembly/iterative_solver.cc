@@ -42,7 +42,7 @@ namespace poundfe
     prm.add_parameter("Preconditioner rebuild factor", rebuild_factor,
                       "With Preconditioner reuse: rebuild it when a solve needs more than "
                       "this times the CG iterations of the first solve after the last "
-                      "build. Unit: dimensionless.",
+                      "build (counted as at least 5). Unit: dimensionless.",
                       Patterns::Double(1, 1000));
     prm.add_parameter("AMG strong threshold", strong_threshold,
                       "petsc-cg-boomeramg: hypre BoomerAMG's strength threshold (0.25 for "
@@ -150,7 +150,7 @@ namespace poundfe
       build();
     CgResult result = solve_once(b, x, tolerance);
     const bool slow =
-      result.iterations > setup.parameters.rebuild_factor * std::max(baseline_iterations, 1u);
+      result.iterations > setup.parameters.rebuild_factor * std::max(baseline_iterations, 5u);
     if (!fresh && values_since_build && (!result.converged || slow))
       {
         ++(result.converged ? counts.rebuilds_slow : counts.rebuilds_failed);

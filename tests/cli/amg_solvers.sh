@@ -52,13 +52,16 @@ reused() { # DIR LABEL: at least one build, fewer builds than solves
   b=$(value "$1/summary.json" preconditioner_builds) s=$(value "$1/summary.json" linear_solves)
   [ -n "$b" ] && [ "$b" -ge 1 ] && [ "$b" -lt "$s" ] || fail "$2: $b builds for $s solves"
 }
-cases="$here/newton-frame-pair.prm|Tangent update = refactorize
-$here/newton-shear-pair.prm|Tangent update = refactorize
-$here/city-block-small.prm|End time = 0.3; Tangent update = refactorize; Nonlinear solver = krylov-newton
-$input/two-buildings.prm|End time = 1"
-while IFS='|' read -r model settings; do
+# model | End time replacing the file's (empty: keep it) | settings
+cases="$here/newton-frame-pair.prm||Tangent update = refactorize
+$here/newton-shear-pair.prm||Tangent update = refactorize
+$here/city-block-small.prm|0.3|Tangent update = refactorize; Nonlinear solver = krylov-newton
+$input/two-buildings.prm||End time = 1"
+while IFS='|' read -r model end settings; do
   name=$(basename "$model" .prm)
-  with "$model" "Newton residual tolerance = $newton; $settings" > "$work/$name.prm"
+  sed -e "/^ *set Linear solver *=/d" -e "${end:+s/^\( *set End time *=\).*/\1 $end/}" "$model" \
+    > "$work/$name.base.prm"
+  with "$work/$name.base.prm" "Newton residual tolerance = $newton; $settings" > "$work/$name.prm"
   with "$work/$name.prm" "Linear solver = umfpack" > "$work/$name.umfpack.prm"
   "$poundfe" run "$work/$name.umfpack.prm" --output "$work/$name/umfpack" > /dev/null ||
     fail "$name umfpack: exit $?"
