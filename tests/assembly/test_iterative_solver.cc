@@ -86,11 +86,11 @@ BOOST_AUTO_TEST_CASE(solve_meets_the_relative_tolerance)
 BOOST_AUTO_TEST_CASE(preconditioner_is_kept_across_new_values)
 {
   const EffectiveSystem s;
-  SparseMatrix          changed = s.k_eff; // off-diagonals changed by up to 5 %, symmetric
-  for (int column = 0; column < changed.outerSize(); ++column)
-    for (SparseMatrix::InnerIterator it(changed, column); it; ++it)
-      if (it.row() != column)
-        it.valueRef() *= 1.0 + 0.05 * std::sin(0.3 * (it.row() + column));
+  // a diagonal shift of 0 to 10 % per equation: symmetric positive
+  // definite, the pattern kept, the values changed everywhere on the diagonal
+  SparseMatrix changed = s.k_eff;
+  for (int i = 0; i < changed.rows(); ++i)
+    changed.coeffRef(i, i) *= 1.0 + 0.05 * (1.0 + std::sin(0.7 * i));
   BOOST_REQUIRE(changed.nonZeros() == s.k_eff.nonZeros());
   const Vector reference = direct_solution(changed, s.b);
   for (const char *name : iterative_names)
@@ -130,7 +130,7 @@ BOOST_AUTO_TEST_CASE(non_converging_solve_is_a_numerical_error)
   for (const char *name : iterative_names)
     {
       IterativeSolverSetup setup;
-      setup.relative_tolerance        = 1e-14;
+      setup.relative_tolerance        = 1e-30; // below round-off: never met
       setup.parameters.max_iterations = 1;
       auto solver                     = create_linear_solver(name, setup);
       solver->analyze_and_factorize(s.k_eff);

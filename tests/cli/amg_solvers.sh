@@ -6,7 +6,7 @@
 # of its largest term), on a frame pair with hinges and Hertz-damp gaps and
 # a shear pair with Bouc-Wen storeys and Jankowski gaps (both with the
 # tangent refactorised, so the matrix changes under a kept preconditioner),
-# the small city block and a linear pair (one solve per step). All runs use
+# the small city block and the shipped two-building example. All runs use
 # Newton residual tolerance = NEWTON (1e-11, as nonlinear_solvers.sh), so CG
 # stops at 0.1 x 1e-11 of ||b||. Also: every Nonlinear solver with BoomerAMG
 # on the frame pair; the preconditioner is reused (builds < solves, and
