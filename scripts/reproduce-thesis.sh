@@ -5,7 +5,7 @@
 # with the difference (tests/cli/thesis_tables.py, which cli/thesis-tables
 # also runs), each figure beside its regenerated plot (doc/thesis-figures/),
 # what the thesis leaves unspecified and what was chosen, and what cannot be
-# reproduced yet. About 2–3 minutes.
+# reproduced yet. About 4–5 minutes.
 #   scripts/reproduce-thesis.sh BUILD_DIR [OUTPUT_DIR]   (OUTPUT_DIR: results/thesis)
 set -euo pipefail
 [ $# -ge 1 ] || { echo "usage: $0 BUILD_DIR [OUTPUT_DIR]" >&2; exit 1; }
@@ -37,21 +37,24 @@ run site-hazard table-2.2-unrounded "$out/table-2.2-unrounded.prm"
 run site-hazard table-2.3
 run site-hazard table-2.3-catalogue
 run run table-3.1
+run modal eq-2.36
 
 # Figures
 for f in fig-3.1a fig-3.1b fig-3.1c fig-3.9; do run run $f; done
-for f in fig-3.2a fig-3.2b; do run bifurcation $f; done
+run run fig-3.10c input/three-storey-free-vibration.prm
+for f in fig-3.2a fig-3.2b fig-3.2c fig-3.2d fig-3.2e; do run bifurcation $f; done
 for f in fig-3.3a fig-3.3b fig-3.4a fig-3.5a-low fig-3.5a-high fig-3.6; do run stationary-pdf $f; done
 run reliability fig-3.12
 
 copy() { cp "$out/$1" "$figures/$2"; }
 for f in fig-3.1a fig-3.1b fig-3.1c; do copy $f/phase_portrait.png $f.png; done
-for f in fig-3.2a fig-3.2b; do copy $f/bifurcation.png $f.png; done
+for f in fig-3.2a fig-3.2b fig-3.2c fig-3.2d fig-3.2e; do copy $f/bifurcation.png $f.png; done
 for f in fig-3.3a fig-3.3b fig-3.5a-low fig-3.5a-high; do copy $f/pdf.png $f.png; done
 copy table-3.1/phase_portrait.png table-3.1-phase.png
 copy table-3.1/contact_force.png table-3.1-contact-force.png
 copy fig-3.9/hysteresis_sdof_S1.png fig-3.9-hysteresis.png
 copy fig-3.9/phase_portrait.png fig-3.9-phase.png
+copy fig-3.10c/roof_displacement.png fig-3.10c.png
 for f in fig-3.4a fig-3.6; do copy $f/p_bifurcation.png $f.png; done
 
 python3 scripts/thesis_reproduction.py "$out" "$timing" > doc/thesis-reproduction.md.tmp

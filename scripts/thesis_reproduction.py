@@ -39,6 +39,16 @@ def peaks_per_value(name, scale=1.0, digits=3):
     return ", ".join(f"{v['value'] * scale:.{digits}g}: {v['n_peaks']}" for v in values)
 
 
+def free_vibration_text():
+    rows = list(csv.DictReader(open(f"{out}/fig-3.10c/floor_displacement.csv")))
+    roof = [c for c in rows[0] if c.endswith("floor3_disp_m")][0]
+    late = max(abs(float(r[roof])) for r in rows if float(r["time_s"]) >= 1.5)
+    modes = summary("fig-3.10c")["buildings"][0]["modes"]["frequencies_hz"]
+    return (f"modes {', '.join(f'{f:.2f}' for f in modes)} Hz; the roof's amplitude after 1.5 s "
+            f"{late:.3g} m; cli/free-vibration checks every floor against the closed-form "
+            "modal superposition (1e-3 of u0)")
+
+
 def period_counts(name):
     s = summary(name)
     counts = {}
@@ -56,14 +66,15 @@ figure of the thesis (../shared/thesis/thesis.md) that poundfe can set up today,
 inputs in `input/thesis/` (one per table or figure; each file's header says what the thesis
 leaves open and what was chosen). The tables are compared number by number with what the
 thesis prints; `ctest -R cli/thesis-tables` runs the same comparison (its tolerances:
-half a unit of the last printed digit for Tables 2.2 and 2.3; 2e-4 s and 2e-4 m/s for
-Table 3.1, issue 25). The thesis's figures exist only as captions in the text we have, so
+half a unit of the last printed digit for Tables 2.2 and 2.3 and eq. 2.36's frequencies;
+2e-4 s and 2e-4 m/s for Table 3.1, issue 25). The thesis's figures exist only as captions in the text we have, so
 each figure is described by its caption beside the plot poundfe draws.
 
 ## Tables
 """)
 comparison = thesis_tables.compare([f"{out}/table-2.2", f"{out}/table-2.2-unrounded",
-                                    f"{out}/table-2.3", f"{out}/table-3.1"])
+                                    f"{out}/table-2.3", f"{out}/table-3.1",
+                                    f"{out}/eq-2.36"])
 thesis_tables.markdown(comparison)
 status = "every compared value agrees" if not comparison.failures else \
     "DISAGREEMENTS: " + "; ".join(comparison.failures)
@@ -110,12 +121,14 @@ print(f"""## Figures
 | thesis figure (caption, in short) | regenerated | what poundfe shows | left open by the thesis → chosen |
 |---|---|---|---|
 | Fig. 3.1 (a–c), §3.2: SD oscillator with dry friction, phase portraits for μ = 0, 0.1, 0.3 (c = 0.048, α = 0.4, g1 = 2, f0 = 0.85, Ω = 1/3) | ![](thesis-figures/fig-3.1a.png) ![](thesis-figures/fig-3.1b.png) ![](thesis-figures/fig-3.1c.png) | `run` of fig-3.1a/b/c.prm: the phase portrait (x, ẋ) of 20 forcing periods, stick points marked | initial state → rest; duration → 20 periods; belt → fixed (v0 = 0); normal force → eq. 2.7; Δt = 0.01 |
-| Fig. 3.2 (a, b), §3.2: bifurcation diagrams of x against f, static/kinetic friction 1.0/0.25, α = 0.4 and 0 | ![](thesis-figures/fig-3.2a.png) ![](thesis-figures/fig-3.2b.png) | `bifurcation` of fig-3.2a/b.prm, 100 values of f in 0.05–2.0: (a) {period_counts('fig-3.2a')}; (b) {period_counts('fig-3.2b')} | x0 = 1, y0 = 0 → rest (no initial conditions yet), then continuation; 50 transient and 32 sampled periods; the friction forces as a normal force 1 with μs = 1, μk = 0.25. Panels (c–e) need the Stribeck C3 term (issue 25 item 8) |
+| Fig. 3.2 (a, b), §3.2: bifurcation diagrams of x against f, static/kinetic friction 1.0/0.25, α = 0.4 and 0 | ![](thesis-figures/fig-3.2a.png) ![](thesis-figures/fig-3.2b.png) | `bifurcation` of fig-3.2a/b.prm, 100 values of f in 0.05–2.0: (a) {period_counts('fig-3.2a')}; (b) {period_counts('fig-3.2b')} | the first f from the caption's x0 = 1, y0 = 0 (`Initial conditions/State`), then continuation; 50 transient and 32 sampled periods; the friction forces as a normal force 1 with μs = 1, μk = 0.25. |
+| Fig. 3.2 (c–e), §3.2: as (a) with C2 = 0.45, C3 = 0.5 (c); C2 = 0.015, C3 = 0.25 (d); C2 = 0, C3 = 0.25 (e) | ![](thesis-figures/fig-3.2c.png) ![](thesis-figures/fig-3.2d.png) ![](thesis-figures/fig-3.2e.png) | `bifurcation` of fig-3.2c/d/e.prm: (c) {period_counts('fig-3.2c')}; (d) {period_counts('fig-3.2d')}; (e) {period_counts('fig-3.2e')} | C3 is never defined in the thesis → the cubic speed term of eq. 2.4's bracket, N = C0 + C2 s + C3 s³, s the mass's speed (Popp & Stelter's cubic characteristic when C2 < 0); 'C1 ≠ 0' without a value → 0; the rest as (a) |
 | Fig. 3.3 (a, b), §3.2.1: stationary amplitude densities, D = 0.001, c = 0.048, f01 = 0.85, α = 0.4 and 0 | ![](thesis-figures/fig-3.3a.png) ![](thesis-figures/fig-3.3b.png) | `stationary-pdf` of fig-3.3a/b.prm: amplitude peaks at (a) {peaks('fig-3.3a')}; (b) {peaks('fig-3.3b')} | μ → 0.1; noise → nodal force of intensity S0 = D/π; amplitude with ω = 1; 4 realizations of 100 s burn-in + 600 s; α = 0 → constant normal force g1 (eq. 2.7's limit) |
 | Fig. 3.4 (a), §3.2.1: stationary densities for damping c = 0, 0.0141, 0.1 (α = 0.4, f01 = 0.85) | ![](thesis-figures/fig-3.4a.png) | `stationary-pdf` sweep of fig-3.4a.prm over c: density of x against c, peaks marked; peaks of x per c: {peaks_per_value('fig-3.4a')} | as Fig. 3.3 (a): μ = 0.1, D = 0.001 |
 | Fig. 3.5 (a), §3.3.1: spillway's stationary amplitude densities for D = 0.0001 and 0.001 | ![](thesis-figures/fig-3.5a-low.png) ![](thesis-figures/fig-3.5a-high.png) | `stationary-pdf` of fig-3.5a-low/high.prm: amplitude peaks (m) at D = 0.0001: {peaks('fig-3.5a-low')}; D = 0.001: {peaks('fig-3.5a-high')} | the Table 3.1 model plus white-noise force S0 = D/π; no friction (the smoothed α0 = μN term is not given in a usable form); 4 realizations of 3 + 30 s |
 | Fig. 3.6 (a–d), §3.3.3: spillway's stationary densities for D = 0.004 … 0.4 | ![](thesis-figures/fig-3.6.png) | `stationary-pdf` sweep of fig-3.6.prm over D: peaks of x per D: {peaks_per_value('fig-3.6', 3.141592653589793, 2)} (two peaks at intermediate noise, one at the highest) | as Fig. 3.5; the swept value S0 = D/π. Panels (e, f) (forcing amplitude p0 = 25 and 2) leave D unspecified |
-| Fig. 3.7 (c, f) and the §3.3.4 count (g1 crossed 12 times, g2 6 times in [0, 3] s) | ![](thesis-figures/table-3.1-phase.png) ![](thesis-figures/table-3.1-contact-force.png) | the Table 3.1 run: {n_impacts} impacts = {2 * n_impacts} crossings of g1 and {n_impacts} zeros of g2 (the thesis: 12 and 6) | the panels' own initial states (y0 = [3, 0]; ν = 0.5) are not reproducible yet: see below |
+| Fig. 3.7 (c, f) and the §3.3.4 count (g1 crossed 12 times, g2 6 times in [0, 3] s) | ![](thesis-figures/table-3.1-phase.png) ![](thesis-figures/table-3.1-contact-force.png) | the Table 3.1 run: {n_impacts} impacts = {2 * n_impacts} crossings of g1 and {n_impacts} zeros of g2 (the thesis: 12 and 6) | the panels' own initial state y0 = [3, 0] is not physical for this model: see below |
+| Fig. 3.10 (c), §3.4.1 with §2.3 eq. 2.35: free vibration of the three-storey building, u0 = [0.05; 0.05; 0.05], v0 = 0, no force | ![](thesis-figures/fig-3.10c.png) | `run` of input/three-storey-free-vibration.prm: the roof displacement against time; {free_vibration_text()} | M = diag(m, m, m/2), m = 1000 kg, k = 5e6 N/m (eq. 2.36's values); damping → Table 2.1's first three ratios per mode (0.03, 0.04, 0.05; the thesis names Rayleigh damping without coefficients); Δt = 2e-4 s, 2 s |
 | Fig. 3.9, §3.4.1: transient response of an elastic/inelastic system, hysteresis | ![](thesis-figures/fig-3.9-hysteresis.png) ![](thesis-figures/fig-3.9-phase.png) | `run` of fig-3.9.prm: Bouc-Wen hysteresis loop and phase portrait | every parameter → the Bouc-Wen single storey of input/bouc-wen-sdof.prm |
 | Fig. 3.12 (a), §2.3.2.1 and §3.4.2: two-bay two-storey frame, collapse mechanisms | (numbers, no plot) | `reliability` of fig-3.12.prm, series system of 5 mechanisms: """ +
       "; ".join(f"{e['method']} P_f = {float(e['failure_probability']):.3g}" for e in estimates) +
@@ -126,11 +139,12 @@ print("""## Not yet reproducible
 
 | item | why |
 |---|---|
-| Fig. 3.2 exactly (x0 = 1, y0 = 0), Fig. 3.7 (a–c) (y0 = [3, 0]), Fig. 3.10 (u0 = 0.05 on every floor), Fig. 2.10 and eq. 2.35 (x0 = [s0, s0, s0]) | need initial conditions (issue 25 item 1): every run starts from rest |
+| Fig. 3.7 (a–c) (y0 = [3, 0]) | the caption's model is the spillway (k = 210.125, contact stiffness 2.47e6, gap ν = 0.005 m): a mass released 3 m from rest sits 2.995 m inside its barrier, a contact force of order 2.47e6 · 3^1.5 ≈ 1.3e7 N on 2 kg. `Initial conditions/State = 3, 0` sets it up, but the panels must rest on units or a model the thesis does not print |
+| Fig. 3.10 (a, b), Fig. 2.10 | a single storey "in horizontal plan" and a two-storey two-bay frame under the three-component force [−0.05 sin t; 0.1 sin t; 0.1 cos t]: their masses, stiffnesses and what the three components act on are not given |
 | Table 3.2, the sliding segments of Fig. 3.7 (b, c, e, f) and Fig. 3.1 (d, e), Fig. 3.12 (b–d) | need the Filippov switching analysis (item 2: crossing / sliding / grazing classification, sliding by the convex method, switching log); Table 3.2's model and initial state are not printed either |
 | Table 3.1 to ≤ 2e-5 s of a converged reference | needs the event-driven Dormand–Prince integrator (item 3); Newmark meets the printed table (above) |
-| Table 2.1 (per-mode damping) | item 4 |
-| Fig. 3.2 (c–e), Fig. 3.4 (b) | the Stribeck friction with its C3 term (item 8) |
+| Table 2.1 (per-mode damping) | `Damping/Type = modal` or `bands` applies its ratios (Fig. 3.10 (c) above uses its first three); the model whose fixed-base frequencies it lists (0.46, 1.27, 1.98, 2.98, 4.10 Hz) is not given |
+| Fig. 3.4 (b) | possible now (C2 = 0.015, C3 = 0.25 in a `stationary-pdf` sweep over μ), not set up yet: the swept μ values and the noise intensity are not given |
 | Fig. 3.4 (c–e), Fig. 3.6 (e, f) | possible with today's commands (a `stationary-pdf` sweep over α, or over the forcing amplitude), not set up yet: the noise intensity and friction of these panels are not given |
 | Fig. 3.8 | the recorded peak accelerations of the spillway's foundation are not in the thesis |
 | Fig. 3.11 | the hysteretic SDOF under white noise (§2.3: ω = 7.85 rad/s, ζ = 0.02): its hysteresis parameters and noise intensity are not given |

@@ -29,9 +29,8 @@ namespace poundfe
         {
           json.begin_object().value("name", analysis.model.buildings[b].name);
           write_modes(json, "modes", analysis.building_modes[b]);
-          json.value("rayleigh_a0", analysis.system.rayleigh[b][0])
-            .value("rayleigh_a1", analysis.system.rayleigh[b][1])
-            .end_object();
+          write_damping(json, analysis, b);
+          json.end_object();
         }
       json.end_array().end_object();
       return json.str();

@@ -197,21 +197,6 @@ namespace poundfe
                      std::to_string(d.n_modes_needed()));
     }
 
-    /// The ratio of each of the first modes of a building with modal
-    /// damping: as listed, or its frequency's band (0 outside every band).
-    std::vector<double>
-    modal_damping_ratios(const RayleighDamping &d, const Modes &modes)
-    {
-      if (d.kind == RayleighDamping::Kind::modal)
-        return d.modal_ratios;
-      std::vector<double> ratios(d.damped_modes, 0.0);
-      for (unsigned int i = 0; i < d.damped_modes; ++i)
-        for (const DampingBand &band : d.bands)
-          if (modes.frequency(i) >= band.low && modes.frequency(i) < band.high)
-            ratios[i] = band.damping_ratio;
-      return ratios;
-    }
-
     /// "2.5 %" for the ratio 0.025.
     std::string
     percent(const double ratio)
@@ -219,6 +204,19 @@ namespace poundfe
       return rounded(100 * ratio) + " %";
     }
   } // namespace
+
+  std::vector<double>
+  modal_damping_ratios(const RayleighDamping &d, const Modes &modes)
+  {
+    if (d.kind == RayleighDamping::Kind::modal)
+      return d.modal_ratios;
+    std::vector<double> ratios(d.damped_modes, 0.0);
+    for (unsigned int i = 0; i < d.damped_modes; ++i)
+      for (const DampingBand &band : d.bands)
+        if (modes.frequency(i) >= band.low && modes.frequency(i) < band.high)
+          ratios[i] = band.damping_ratio;
+    return ratios;
+  }
 
   void
   assemble_modal_damping(Analysis &analysis)

@@ -203,8 +203,13 @@ namespace poundfe
         du = shadow.displacement() - state.displacement();
         dv = shadow.velocity() - state.velocity();
         double d = distance(du, dv);
+        // A perturbation that vanishes within a period (both trajectories
+        // stuck at the same point: a superstable orbit, exponent -inf) counts
+        // as contracted to round-off, ln(eps) per period, so the estimate
+        // is finite and an upper bound there.
         if (d0 > 0 && state.step() > first_step)
-          sum += std::log(d / d0), ++n_periods;
+          sum += std::log(std::max(d, std::numeric_limits<double>::epsilon() * d0) / d0),
+            ++n_periods;
         const double scale = delta * distance(state.displacement(), state.velocity());
         if (!(scale > 0))
           return; // at rest: nothing to be relative to yet

@@ -18,9 +18,11 @@ namespace poundfe
   NormalForce::operator()(const double x, const double v) const
   {
     Value value;
-    value.n  = constant + per_displacement * std::abs(x) + per_velocity * std::abs(v);
+    const double speed = std::abs(v);
+    value.n  = constant + per_displacement * std::abs(x) +
+              (per_velocity + per_velocity_cubed * speed * speed) * speed;
     value.dx = per_displacement * sign(x);
-    value.dv = per_velocity * sign(v);
+    value.dv = per_velocity * sign(v) + 3 * per_velocity_cubed * v * speed;
     // H = 0: the SD spring lies in the belt's plane and presses nothing (the
     // limit of K H (1 - L/r) as H -> 0 at every x, including x = 0, where L/r
     // alone would be infinite and the product NaN)

@@ -66,9 +66,13 @@ namespace poundfe
                       "Unit: m/s.");
     prm.add_parameter("Normal force", law.normal.constant, "C0. Unit: N.");
     prm.add_parameter("Normal force per displacement", law.normal.per_displacement,
-                      "C1: N = C0 + C1 |x| + C2 |x'| (N < 0: lift-off, no friction). "
-                      "Unit: N/m.");
-    prm.add_parameter("Normal force per velocity", law.normal.per_velocity, "C2. Unit: N s/m.");
+                      "C1: N = C0 + C1 |x| + C2 |x'| + C3 |x'|^3 (N < 0: lift-off, no "
+                      "friction). Unit: N/m.");
+    prm.add_parameter("Normal force per velocity", law.normal.per_velocity,
+                      "C2 (negative: friction falling with the speed). Unit: N s/m.");
+    prm.add_parameter("Normal force per velocity cubed", law.normal.per_velocity_cubed,
+                      "C3 (with C2 < 0 < C3: the cubic falling-rising friction "
+                      "characteristic). Unit: N s^3/m^3.");
     prm.add_parameter("Normal force from SD spring", normal_force_from_sd_spring,
                       "N also carries the vertical reaction of the SD spring at the same "
                       "node: C0 - K H (1 - L/sqrt(x^2 + H^2)) (the thesis's eq. 2.7). Unit: -.");
@@ -101,7 +105,8 @@ namespace poundfe
     for (const auto &[entry, value] :
          {std::pair{"Belt velocity", law.belt_velocity},
           std::pair{"Normal force per displacement", law.normal.per_displacement},
-          std::pair{"Normal force per velocity", law.normal.per_velocity}})
+          std::pair{"Normal force per velocity", law.normal.per_velocity},
+          std::pair{"Normal force per velocity cubed", law.normal.per_velocity_cubed}})
       if (!std::isfinite(value))
         input.fail(std::string("Friction/") + entry, "must be a finite number");
     // A belt (or ground) surface faster than sound in air is no physical

@@ -2,6 +2,8 @@
 #include <poundfe/assembly/iterative_solver.h>
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/dynamics/modal_damping_assembly.h>
+#include <poundfe/model/parameters.h>
 #include <poundfe/output/stick_slip_report.h>
 #include <poundfe/output/link_report.h>
 #include <poundfe/output/append_file.h>
@@ -75,6 +77,17 @@ namespace poundfe
       json.value("participating_mass_ratio_y", modes.participating_mass_ratio_y)
         .value("participating_mass_ratio_rz", modes.participating_mass_ratio_rz);
     json.end_object();
+  }
+
+  void
+  write_damping(JsonWriter &json, const Analysis &analysis, const unsigned int b)
+  {
+    const RayleighDamping &d = analysis.model.buildings[b].damping;
+    json.value("damping_type", damping_type_names().name(d.kind))
+      .value("rayleigh_a0", analysis.system.rayleigh[b][0])
+      .value("rayleigh_a1", analysis.system.rayleigh[b][1]);
+    if (d.is_modal())
+      json.value("modal_damping_ratios", modal_damping_ratios(d, analysis.building_modes[b]));
   }
 
   void
@@ -265,9 +278,8 @@ namespace poundfe
         json.begin_object()
           .value("name", building.name)
           .value("type", building_type_names().name(building.type))
-          .value("storeys", static_cast<unsigned int>(building.floors.size()))
-          .value("rayleigh_a0", analysis.system.rayleigh[b][0])
-          .value("rayleigh_a1", analysis.system.rayleigh[b][1]);
+          .value("storeys", static_cast<unsigned int>(building.floors.size()));
+        write_damping(json, analysis, b);
         write_modes(json, "modes", analysis.building_modes[b]);
         const unsigned int roof = floors.index(b, building.floors.size() - 1);
         json.value("peak_roof_displacement_m", floors.peak_displacement()[roof]);

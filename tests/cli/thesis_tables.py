@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The thesis's printed Tables 2.2, 2.3 and 3.1 against poundfe's outputs.
+"""The thesis's printed Tables 2.2, 2.3, 3.1 and eq. 2.36's frequencies
+against poundfe's outputs.
 
 The printed values are typed in below from the thesis (§2.3.1 Table 2.2 and
 Table 2.3; §3.3.2 Table 3.1). Each comparison has its tolerance:
@@ -8,15 +9,18 @@ Table 2.3; §3.3.2 Table 3.1). Each comparison has its tolerance:
   - Table 3.1: 2e-4 s and 2e-4 m/s (issue 25: the thesis's times come from
     Matlab's ode45 with event location, poundfe's from Newmark with event
     refinement at dt = 1e-4 s; 2e-4 s is two steps), the displacement at
-    the largest penetration to its printed digits (5e-5 m).
+    the largest penetration to its printed digits (5e-5 m);
+  - eq. 2.36 (§2.3): the three frequencies, printed rounded to the nearest
+    integer (20, 14, 5 Hz), to half a hertz.
 
-  thesis_tables.py check DIR22 DIR22_UNROUNDED DIR23 DIR31
+  thesis_tables.py check DIR22 DIR22_UNROUNDED DIR23 DIR31 DIR236
       exit 1 (with every failure listed) unless every value agrees
-  thesis_tables.py markdown DIR22 DIR22_UNROUNDED DIR23 DIR31
+  thesis_tables.py markdown DIR22 DIR22_UNROUNDED DIR23 DIR31 DIR236
       the tables side by side, in Markdown, on standard output
 DIR22: `site-hazard input/thesis/table-2.2.prm` (intensity rounded to one
 decimal); DIR22_UNROUNDED: the same with `Intensity decimals = -1`; DIR23:
-`site-hazard input/thesis/table-2.3.prm`; DIR31: `run input/thesis/table-3.1.prm`.
+`site-hazard input/thesis/table-2.3.prm`; DIR31: `run input/thesis/table-3.1.prm`;
+DIR236: `modal input/thesis/eq-2.36.prm`.
 """
 import csv
 import json
@@ -56,6 +60,11 @@ TABLE_3_1 = [
     (2.1798, 0.0050, 1, 0.2047), (2.1860, 0.0055, 2, 0.0000), (2.1958, 0.0050, 1, -0.0799),
     (2.6286, 0.0050, 1, 0.2049), (2.6348, 0.0055, 2, 0.0000), (2.6446, 0.0050, 1, -0.0799),
 ]
+# eq. 2.36 (§2.3): m = 1000 kg, k = 5e6 N/m; the roots "rounded to the
+# nearest integer, are 20, 14, and 5 Hz" (printed highest first).
+EQ_2_36_HZ = [5, 14, 20]
+EQ_2_36_TOLERANCE = 0.5     # Hz: half a unit of the printed integer
+
 TIME_TOLERANCE = 2e-4       # s
 VELOCITY_TOLERANCE = 2e-4   # m/s
 DISPLACEMENT_TOLERANCE = 5e-5  # m: half a unit of the printed 0.0055
@@ -144,18 +153,28 @@ def compare_table_3_1(c, directory):
               -float(impact["separation_velocity_m_s"]), VELOCITY_TOLERANCE)
 
 
+def compare_eq_2_36(c, directory):
+    frequencies = json.load(open(f"{directory}/summary.json"))["modes"]["frequencies_hz"]
+    for n, (printed, got) in enumerate(zip(EQ_2_36_HZ, frequencies), 1):
+        c.add("2.36", f"mode {n}, frequency (Hz)", printed, got, EQ_2_36_TOLERANCE)
+    if len(frequencies) < len(EQ_2_36_HZ):
+        c.failures.append(f"eq. 2.36: {len(frequencies)} modes, the thesis has 3")
+
+
 def compare(directories):
     c = Comparison()
     compare_table_2_2(c, directories[0], directories[1])
     compare_table_2_3(c, directories[2])
     compare_table_3_1(c, directories[3])
+    compare_eq_2_36(c, directories[4])
     return c
 
 
 def markdown(c):
     titles = {"2.2": "Table 2.2 (§2.3.1): historical earthquakes near the site",
               "2.3": "Table 2.3 (§2.3.1): earthquake coefficient",
-              "3.1": "Table 3.1 (§3.3.2): the spillway's switching points"}
+              "3.1": "Table 3.1 (§3.3.2): the spillway's switching points",
+              "2.36": "Eq. 2.36 (§2.3): natural frequencies of the three-storey building"}
     for table, rows in c.rows.items():
         print(f"#### {titles[table]}\n")
         print("| quantity | thesis | poundfe | difference | tolerance | agrees |")
@@ -168,7 +187,7 @@ def markdown(c):
 
 
 def main():
-    if len(sys.argv) != 6 or sys.argv[1] not in ("check", "markdown"):
+    if len(sys.argv) != 7 or sys.argv[1] not in ("check", "markdown"):
         sys.exit(__doc__)
     c = compare(sys.argv[2:])
     if sys.argv[1] == "markdown":

@@ -7,7 +7,8 @@
 #     (its rule for the first);
 #   Table 2.3: site-hazard's Site study: ISC, JMA and M.R. accelerations, k,
 #     the OBE's return period, OBE and MCE;
-#   Table 3.1: run of the spillway: the 18 switching points of its 6 impacts.
+#   Table 3.1: run of the spillway: the 18 switching points of its 6 impacts;
+#   eq. 2.36: modal of the three-storey building, its three frequencies.
 # Then bad input of the site study: exit 1, one message naming the file,
 # line and parameter, no output directory.
 set -eu
@@ -25,7 +26,8 @@ cp "$inputs/memvele-events.csv" "$work/"
 "$poundfe" site-hazard "$unrounded" --output "$work/t22u" > /dev/null
 "$poundfe" site-hazard "$inputs/table-2.3.prm" --output "$work/t23" > /dev/null
 "$poundfe" run "$inputs/table-3.1.prm" --output "$work/t31" > /dev/null
-python3 "$here/thesis_tables.py" check "$work/t22" "$work/t22u" "$work/t23" "$work/t31"
+"$poundfe" modal "$inputs/eq-2.36.prm" --output "$work/e236" > /dev/null
+python3 "$here/thesis_tables.py" check "$work/t22" "$work/t22u" "$work/t23" "$work/t31" "$work/e236"
 
 # The intensity-frequency relation: the line log10 N_c = a - b I through the
 # thesis's two ISC points (100 years, I = 2.5; 250 years, 4.0), b =

@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -360,4 +361,23 @@ BOOST_AUTO_TEST_CASE(sd_oscillator_with_friction_against_exact_stick)
         }
     }
   BOOST_TEST(exact[2] - exact[0] > 1); // three distinct points, far apart
+}
+
+BOOST_AUTO_TEST_CASE(stuck_oscillator_has_a_finite_negative_lyapunov_exponent)
+{
+  // The thesis's Fig. 3.2 (a) oscillator from rest at f = 0.05, below the
+  // static friction force 1: the mass sticks, both trajectories of
+  // Benettin's estimate can stop at the same point, and ln(d / d0) would be
+  // -inf (the run then failed with a non-finite output). The estimate
+  // counts such a period as contracted to round-off: finite, negative, and
+  // not below ln(eps) / T per period (T = 2 pi / Omega = 18.85 s).
+  const std::vector<ParameterOverride> from_rest{{"Initial conditions/State", ""},
+                                                 {"Bifurcation/Transient periods", "5"},
+                                                 {"Bifurcation/Sampled periods", "8"}};
+  const InputParameters  input = read_parameters("input/thesis/fig-3.2a.prm", from_rest);
+  const BifurcationPoint point = bifurcation_point(input, 0.05);
+  const double           floor = std::log(std::numeric_limits<double>::epsilon()) / (6 * M_PI);
+  BOOST_TEST(std::isfinite(point.lyapunov_exponent));
+  BOOST_TEST(point.lyapunov_exponent < 0);
+  BOOST_TEST(point.lyapunov_exponent >= floor * (1 + 1e-12));
 }

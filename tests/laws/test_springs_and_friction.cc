@@ -65,8 +65,9 @@ BOOST_AUTO_TEST_CASE(cubic_spring_tangent)
 
 BOOST_AUTO_TEST_CASE(friction_slip_tangent_by_central_differences)
 {
-  // Slip with a Stribeck curve and N = C0 - K H (1 - L/r) + C1 |x| + C2 |x'|:
-  // every term of dF/dx and dF/dx' is exercised.
+  // Slip with a Stribeck curve and N = C0 - K H (1 - L/r) + C1 |x| + C2 |x'|
+  // + C3 |x'|^3 (C2 < 0 < C3, the cubic characteristic): every term of dF/dx
+  // and dF/dx' is exercised.
   FrictionLawParameters p;
   p.static_coefficient       = 0.4;
   p.kinetic_coefficient      = 0.25;
@@ -74,7 +75,8 @@ BOOST_AUTO_TEST_CASE(friction_slip_tangent_by_central_differences)
   p.stick_stiffness          = 1e4;
   p.normal.constant          = 2;
   p.normal.per_displacement  = 0.3;
-  p.normal.per_velocity      = 0.2;
+  p.normal.per_velocity      = -0.2;
+  p.normal.per_velocity_cubed = 0.5;
   p.normal.sd_reaction       = true;
   p.normal.sd_stiffness      = 1;
   p.normal.sd_length         = 1;
@@ -172,4 +174,35 @@ BOOST_AUTO_TEST_CASE(return_mapping_is_coulombs_law_and_reverts_exactly)
   // the belt's work on the structure over the step: -F v0 dt (trapezoidal)
   BOOST_TEST(belt.supplied_work_increment() == -0.5 * (-2.0) * 0.1 * 0.2,
              boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(cubic_friction_characteristic_in_steady_slip)
+{
+  // Steady slip at x' against a fixed surface: F = mu_k (C0 + C2 |x'| +
+  // C3 |x'|^3) sgn(x') by hand (Popp & Stelter 1990's cubic characteristic,
+  // the thesis's Fig. 3.2 c-e). With C2 = -0.45, C3 = 0.5 the force is
+  // smallest at |x'| = sqrt(-C2 / (3 C3)) = 0.5477 and rises beyond.
+  FrictionLawParameters p;
+  p.model                     = FrictionModel::regularized;
+  p.regularization_velocity   = 1e-9;
+  p.static_coefficient        = 1.0;
+  p.kinetic_coefficient       = 0.25;
+  p.normal.constant           = 1;
+  p.normal.per_velocity       = -0.45;
+  p.normal.per_velocity_cubed = 0.5;
+  const auto slip_force = [&](const double v) {
+    Friction law(p);
+    law.set_trial_time(0.0);
+    BOOST_REQUIRE(law.set_trial(0.1, v));
+    return law.force();
+  };
+  for (const double v : {0.1, 0.5477225575051661, 1.0, -1.3})
+    {
+      const double s = std::abs(v);
+      BOOST_TEST(slip_force(v) == 0.25 * (1 - 0.45 * s + 0.5 * s * s * s) * (v > 0 ? 1 : -1),
+                 boost::test_tools::tolerance(1e-14));
+    }
+  const double v_min = std::sqrt(0.45 / 1.5);
+  BOOST_TEST(slip_force(v_min) < slip_force(0.9 * v_min));
+  BOOST_TEST(slip_force(v_min) < slip_force(1.1 * v_min));
 }

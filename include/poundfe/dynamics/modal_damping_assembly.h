@@ -11,6 +11,11 @@ namespace poundfe
 {
   /// Replaces analysis.system.modal_damping by U D U^T of the modal buildings.
   void assemble_modal_damping(Analysis &analysis);
+
+  /// The ratio of each of the first modes of a building with modal
+  /// damping (`modes` its modes): as listed, or its frequency's band (0
+  /// outside every band).
+  std::vector<double> modal_damping_ratios(const RayleighDamping &d, const Modes &modes);
 } // namespace poundfe
 
 #endif

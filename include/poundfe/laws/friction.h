@@ -1,10 +1,13 @@
 // Dry friction between a mass and a surface moving at the belt velocity v0
 // (v0 = 0: the fixed ground), on the relative displacement r = x - v0 t and
 // the slip velocity r' = x' - v0:
-//   normal force      N(x, x') = max(0, C0(x) + C1 |x| + C2 |x'|),
+//   normal force      N(x, x') = max(0, C0(x) + C1 |x| + C2 |x'| + C3 |x'|^3),
 //                     C0(x) = C0 - K H (1 - L / sqrt(x^2 + H^2)) when N takes
 //                     the vertical reaction of an SD spring (K, L, H) into
 //                     account (the thesis's eq. 2.7; elastic_springs.h);
+//                     C2 < 0 < C3 makes mu N fall and rise again with the
+//                     speed: the cubic friction characteristic of Popp &
+//                     Stelter (1990), the thesis's C2, C3 of Fig. 3.2 (c-e);
 //   coefficient       mu(r') = mu_k + (mu_s - mu_k) exp(-|r'| / v_s)
 //                     (Stribeck curve; v_s = 0: mu_k in slip, mu_s to break
 //                     away from stick);
@@ -37,7 +40,9 @@
 // Sources: C.A. Coulomb 1785; R. Stribeck 1902; J.C. Simo & T.J.R. Hughes,
 // Computational Inelasticity, Springer 1998, §1.2-1.4 (return mapping of the
 // frictional slider); OpenSees FlatSliderBearing / Coulomb frictionModel;
-// D. Karnopp, J. Dyn. Syst. Meas. Control 107 (1985) 100; doc/theory.md §8.2.
+// D. Karnopp, J. Dyn. Syst. Meas. Control 107 (1985) 100; K. Popp & P. Stelter,
+// Phil. Trans. R. Soc. Lond. A 332 (1990) 89-105 (the cubic characteristic);
+// doc/theory.md §8.2.
 #ifndef poundfe_laws_friction_h
 #define poundfe_laws_friction_h
 
@@ -57,6 +62,7 @@ namespace poundfe
     double constant           = 1; // C0, N
     double per_displacement   = 0; // C1, N/m
     double per_velocity       = 0; // C2, N s/m
+    double per_velocity_cubed = 0; // C3, N s^3/m^3
     bool   sd_reaction        = false; // subtract K H (1 - L/sqrt(x^2 + H^2))
     double sd_stiffness       = 0, sd_length = 0, sd_height = 0;
 

@@ -29,6 +29,9 @@ namespace poundfe
   void write_model(JsonWriter &json, const Analysis &analysis);
   /// Frequencies, periods and participating mass ratios under `key`.
   void write_modes(JsonWriter &json, const std::string &key, const Modes &modes);
+  /// Building b's damping: its Type, the Rayleigh coefficients (0 for modal
+  /// damping) and, for modal damping, the ratio it gives each damped mode.
+  void write_damping(JsonWriter &json, const Analysis &analysis, unsigned int b);
 
   class RunSummary : public StepObserver
   {
