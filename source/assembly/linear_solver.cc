@@ -1,3 +1,4 @@
+#include <poundfe/assembly/iterative_solver.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 
@@ -70,13 +71,15 @@ namespace poundfe
   std::vector<std::string>
   linear_solver_names()
   {
-    return {"eigen-ldlt", "umfpack", "petsc", "trilinos", "petsc-mumps"};
+    return {"eigen-ldlt", "umfpack", "petsc", "trilinos", "petsc-mumps", "petsc-cg-boomeramg",
+            "trilinos-cg-ml"};
   }
 
   bool
   linear_solver_needs_mpi(const std::string &name)
   {
-    return name == "petsc" || name == "trilinos" || linear_solver_is_distributed(name);
+    return name == "petsc" || name == "trilinos" || linear_solver_is_distributed(name) ||
+           linear_solver_is_iterative(name);
   }
 
   bool
@@ -86,7 +89,7 @@ namespace poundfe
   }
 
   std::unique_ptr<LinearSolver>
-  create_linear_solver(const std::string &name)
+  create_linear_solver(const std::string &name, const IterativeSolverSetup &setup)
   {
     int initialized = 0;
     if (linear_solver_needs_mpi(name) && (MPI_Initialized(&initialized), !initialized))
@@ -101,6 +104,16 @@ namespace poundfe
       return create_trilinos_solver();
     if (name == "petsc-mumps")
       return create_petsc_mumps_solver();
+    if (name == "petsc-cg-boomeramg")
+      return create_petsc_boomeramg_solver(setup);
+    if (name == "trilinos-cg-ml")
+      return create_trilinos_ml_solver(setup);
     throw InputError("", 0, "Time integration/Linear solver", "unknown solver '" + name + "'");
+  }
+
+  std::unique_ptr<LinearSolver>
+  create_linear_solver(const std::string &name)
+  {
+    return create_linear_solver(name, IterativeSolverSetup());
   }
 } // namespace poundfe

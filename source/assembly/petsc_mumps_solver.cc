@@ -22,6 +22,8 @@
 
 #include <Eigen/Core>
 
+#include "csr_copy.h"
+
 #include <algorithm>
 
 #include <chrono>
@@ -88,7 +90,7 @@ namespace poundfe
       {
         ScopedTime time(profile.factorization_time);
         Assert(petsc_matrix != nullptr, dealii::ExcMessage("analyze() first"));
-        AssertDimension(matrix.nonZeros(), static_cast<long>(n_nonzeros));
+        AssertDimension(matrix.nonZeros(), csr.n_nonzeros);
         set_values(matrix);
         check(MatLUFactorNumeric(factor, petsc_matrix, &info), "MatLUFactorNumeric");
         throw_if_failed("factorisation");
@@ -140,35 +142,6 @@ namespace poundfe
         end_row = first_row + n_local;
       }
 
-      /// This rank's rows of `matrix` in CSR form (row_start, columns), with
-      /// the position of each entry in the Eigen (column-major) values.
-      void
-      copy_local_pattern(const SparseMatrix &matrix)
-      {
-        const PetscInt n_local = end_row - first_row;
-        row_start.assign(n_local + 1, 0);
-        for (int column = 0; column < matrix.outerSize(); ++column)
-          for (SparseMatrix::InnerIterator it(matrix, column); it; ++it)
-            if (it.row() >= first_row && it.row() < end_row)
-              ++row_start[it.row() - first_row + 1];
-        for (PetscInt i = 0; i < n_local; ++i)
-          row_start[i + 1] += row_start[i];
-        columns.resize(row_start[n_local]);
-        source.resize(row_start[n_local]);
-        values.resize(row_start[n_local]);
-        std::vector<PetscInt> next(row_start.begin(), row_start.end() - 1);
-        // columns in increasing order: each row's entries come out sorted
-        for (int column = 0; column < matrix.outerSize(); ++column)
-          for (SparseMatrix::InnerIterator it(matrix, column); it; ++it)
-            if (it.row() >= first_row && it.row() < end_row)
-              {
-                const PetscInt k = next[it.row() - first_row]++;
-                columns[k]       = column;
-                source[k]        = &it.value() - matrix.valuePtr();
-              }
-        n_nonzeros = matrix.nonZeros();
-      }
-
       /// The PETSc matrix of this rank's rows with `matrix`'s pattern and
       /// values, the vectors, the gather to all ranks and the MUMPS factor.
       void
@@ -176,18 +149,17 @@ namespace poundfe
       {
         const PetscInt n = matrix.rows();
         split_rows(n);
-        copy_local_pattern(matrix);
-        gather_values(matrix);
+        csr.build(matrix, first_row, end_row);
         const PetscInt n_local = end_row - first_row;
         check(MatCreate(communicator, &petsc_matrix), "MatCreate");
         check(MatSetSizes(petsc_matrix, n_local, n_local, n, n), "MatSetSizes");
         check(MatSetType(petsc_matrix, MATAIJ), "MatSetType");
         // one of the two applies: sequential AIJ on one rank, MPI AIJ on more
-        check(MatSeqAIJSetPreallocationCSR(petsc_matrix, row_start.data(), columns.data(),
-                                           values.data()),
+        check(MatSeqAIJSetPreallocationCSR(petsc_matrix, csr.row_start.data(), csr.columns.data(),
+                                           csr.values.data()),
               "MatSeqAIJSetPreallocationCSR");
-        check(MatMPIAIJSetPreallocationCSR(petsc_matrix, row_start.data(), columns.data(),
-                                           values.data()),
+        check(MatMPIAIJSetPreallocationCSR(petsc_matrix, csr.row_start.data(), csr.columns.data(),
+                                           csr.values.data()),
               "MatMPIAIJSetPreallocationCSR");
         check(MatSetOption(petsc_matrix, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE),
               "MatSetOption");
@@ -198,24 +170,17 @@ namespace poundfe
         check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
       }
 
-      void
-      gather_values(const SparseMatrix &matrix)
-      {
-        const double *all = matrix.valuePtr();
-        for (std::size_t k = 0; k < source.size(); ++k)
-          values[k] = all[source[k]];
-      }
-
       /// The new values of this rank's rows (same pattern) into PETSc.
       void
       set_values(const SparseMatrix &matrix)
       {
-        gather_values(matrix);
+        csr.gather(matrix);
         for (PetscInt i = 0; i < end_row - first_row; ++i)
           {
             const PetscInt row = first_row + i;
-            check(MatSetValues(petsc_matrix, 1, &row, row_start[i + 1] - row_start[i],
-                               columns.data() + row_start[i], values.data() + row_start[i],
+            check(MatSetValues(petsc_matrix, 1, &row, csr.row_start[i + 1] - csr.row_start[i],
+                               csr.columns.data() + csr.row_start[i],
+                               csr.values.data() + csr.row_start[i],
                                INSERT_VALUES),
                   "MatSetValues");
           }
@@ -266,10 +231,7 @@ namespace poundfe
 
       const MPI_Comm        communicator;
       PetscInt              first_row = 0, end_row = 0;
-      long                  n_nonzeros = 0;
-      std::vector<PetscInt> row_start, columns;
-      std::vector<long>     source; // position in the Eigen values of each local entry
-      std::vector<double>   values;
+      CsrCopy<PetscInt>     csr; // this rank's rows
       Mat                   petsc_matrix = nullptr, factor = nullptr;
       Vec                   rhs = nullptr, solution = nullptr, gathered = nullptr;
       VecScatter            to_all = nullptr;

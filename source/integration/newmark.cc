@@ -145,6 +145,10 @@ namespace poundfe
       throw InputError("", 0, "Time integration/Linear solver",
                        "refactorising a nonsymmetric element tangent needs an LU solver "
                        "(umfpack, petsc or trilinos), not eigen-ldlt");
+    if (!use_woodbury && !symmetric && linear_solver_is_iterative(solver_name))
+      throw InputError("", 0, "Time integration/Linear solver",
+                       "conjugate gradients needs a symmetric tangent, and a nonlinear "
+                       "element's is not: use a direct solver or Tangent update = woodbury");
     const unsigned int n = system.n_equations();
     for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &rhs, &residual,
                       &increment, &work_vector, &velocity_sum, &product})
@@ -205,8 +209,13 @@ namespace poundfe
       }
     L->effective.makeCompressed();
     // modal damping: K_eff + c U D U^T by the Woodbury identity (assembly/modal_damping.h)
-    L->solver = with_low_rank_damping(create_linear_solver(solver_name), system.modal_damping,
-                                      L->c_damp_u);
+    // CG + AMG: eta = factor x Newton residual tolerance (iterative_solver.h)
+    const IterativeSolverSetup iterative{
+      parameters.iterative,
+      parameters.iterative.tolerance_factor * parameters.newton.residual_tolerance,
+      "Linear tolerance factor x Newton residual tolerance", &stats.linear};
+    L->solver = with_low_rank_damping(create_linear_solver(solver_name, iterative),
+                                      system.modal_damping, L->c_damp_u);
     // every step size has K_eff's pattern: one symbolic analysis where the
     // backend can share it (UMFPACK)
     stats.shared_analyses +=
@@ -240,7 +249,7 @@ namespace poundfe
       {
         if (use_hybrid) // the tangent gets its own factorisation; K_eff's stays
           {
-            L->tangent_solver = with_low_rank_damping(create_linear_solver(solver_name),
+            L->tangent_solver = with_low_rank_damping(create_linear_solver(solver_name, iterative),
                                                       system.modal_damping, L->c_damp_u);
             stats.shared_analyses +=
               L->tangent_solver->analyze_or_reuse(L->solver.get(), L->effective);
@@ -277,7 +286,9 @@ namespace poundfe
     load_now     = load;
     step_count   = 0;
     current_time = 0;
+    const IterativeSolveCounts linear = stats.linear; // the solvers outlive a run
     stats        = IterationStatistics();
+    stats.linear = linear;
     stats.smallest_time_step = parameters.time_step;
     balance           = EnergyBalance();
     impacts.reset(n_elements);
@@ -440,7 +451,15 @@ namespace poundfe
   bool
   NewmarkIntegrator::solve_linear_step(const Level &L)
   {
-    L.solver->solve(rhs, u_next);
+    try
+      {
+        L.solver->solve(rhs, u_next);
+      }
+    catch (const NumericalError &e) // an iterative solve that failed: cut the step
+      {
+        failure = e.what();
+        return false;
+      }
     update_kinematics(L);
     ++stats.iterations;
     stats.max_iterations = std::max(stats.max_iterations, 1u);

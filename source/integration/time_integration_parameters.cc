@@ -1,3 +1,4 @@
+#include <poundfe/assembly/iterative_solver.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/integration/time_integration_parameters.h>
@@ -44,10 +45,15 @@ namespace poundfe
                       "beta >= (1/2 + gamma)^2 / 4 (1/4 with gamma = 1/2: average "
                       "acceleration). Unit: dimensionless.");
     add_choice(prm, "Linear solver", linear_solver,
-               "Direct solver of the effective matrix (factorised once); petsc and "
-               "trilinos need MPI; petsc-mumps (MUMPS through PETSc) splits the matrix and "
-               "its factorisation over the ranks of mpirun -np P poundfe run (each rank "
-               "keeps the whole state; rank 0 writes). Unit: -.",
+               "Solver of the effective matrix: direct (factorised once) or conjugate "
+               "gradients with algebraic multigrid; petsc and trilinos need MPI; "
+               "petsc-mumps (MUMPS through PETSc) splits the matrix and its factorisation "
+               "over the ranks of mpirun -np P poundfe run (each rank keeps the whole "
+               "state; rank 0 writes); petsc-cg-boomeramg (PETSc CG, hypre BoomerAMG) and "
+               "trilinos-cg-ml (AztecOO CG, Trilinos ML) solve to a fraction of the Newton "
+               "tolerance and keep their preconditioner across iterations and steps "
+               "(Iterative solver; theory §3.5c); on P ranks each rank runs the whole "
+               "analysis. Unit: -.",
                linear_solver_names());
     prm.add_parameter("Newton residual tolerance", newmark.newton.residual_tolerance,
                       "A nonlinear step has converged when the residual norm is below this "
@@ -110,6 +116,7 @@ namespace poundfe
     prm.add_parameter("Line search tolerance", newmark.newton.line_search_parameters.tolerance,
                       "eta of Line search. Unit: dimensionless.",
                       Patterns::Double(0.01, 0.99));
+    newmark.iterative.declare(prm);
     add_choice(prm, "Hysteresis integration", hysteresis_integration,
                "Bouc-Wen z over a step: trapezoidal (second order) or "
                "backward-euler (first order, most robust). Unit: -.",
@@ -169,5 +176,8 @@ namespace poundfe
     input.positive("Time integration/Newton energy tolerance", newmark.newton.energy_tolerance);
     input.positive("Time integration/Law tolerance", law_tolerance);
     input.positive("Time integration/Refactorisation ratio", newmark.newton.refactorization_ratio);
+    if (const std::string why = linear_solver_unavailable(linear_solver); !why.empty())
+      input.fail("Time integration/Linear solver", linear_solver + " is not available: " + why);
+    newmark.iterative.check(input);
   }
 } // namespace poundfe

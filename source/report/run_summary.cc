@@ -1,4 +1,5 @@
 #include <poundfe/report/run_summary.h>
+#include <poundfe/assembly/iterative_solver.h>
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/dynamics/modal_damping_assembly.h>
@@ -426,6 +427,19 @@ namespace poundfe
       .value("smallest_time_step_s", stats.smallest_time_step)
       .value("steps_including_substeps", static_cast<unsigned long>(stats.steps))
       .end_object();
+    if (linear_solver_is_iterative(solver))
+      {
+        const IterativeSolveCounts &linear = stats.linear;
+        json.begin_object("iterative_solver")
+          .value("preconditioner_builds", linear.preconditioner_builds)
+          .value("rebuilds_for_slow_solves", linear.rebuilds_slow)
+          .value("rebuilds_for_failed_solves", linear.rebuilds_failed)
+          .value("linear_solves", linear.solves)
+          .value("mean_linear_iterations_per_solve",
+                 linear.solves > 0 ? double(linear.iterations) / linear.solves : 0.0)
+          .value("max_linear_iterations_per_solve", linear.max_iterations)
+          .end_object();
+      }
   }
 
   void

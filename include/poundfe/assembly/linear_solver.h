@@ -1,7 +1,9 @@
-// Direct solvers for the effective matrix, selected by name. The matrix is
-// factorised once and the factorisation reused for every solve; the sparsity
-// pattern is analysed in `analyze`, so a later refactorisation of a matrix
-// with the same pattern (the nonlinear case) skips that work.
+// Solvers for the effective matrix, selected by name. A direct solver
+// factorises the matrix once and reuses the factorisation for every solve;
+// the sparsity pattern is analysed in `analyze`, so a later refactorisation
+// of a matrix with the same pattern (the nonlinear case) skips that work.
+// The iterative ones (assembly/iterative_solver.h) take the same calls:
+// factorize() copies the values, solve() runs preconditioned CG.
 // Each backend lives in its own file so its heavy headers stay there.
 #ifndef poundfe_assembly_linear_solver_h
 #define poundfe_assembly_linear_solver_h
@@ -55,15 +57,21 @@ namespace poundfe
     }
   };
 
-  /// "eigen-ldlt", "umfpack", "petsc", "trilinos" or "petsc-mumps".
+  struct IterativeSolverSetup; // assembly/iterative_solver.h
+
+  /// "eigen-ldlt", "umfpack", "petsc", "trilinos", "petsc-mumps", or the
+  /// iterative "petsc-cg-boomeramg" and "trilinos-cg-ml" (set up by `setup`;
+  /// without it, to a relative residual near round-off).
   std::unique_ptr<LinearSolver> create_linear_solver(const std::string &name);
+  std::unique_ptr<LinearSolver> create_linear_solver(const std::string &name,
+                                                     const IterativeSolverSetup &setup);
 
   /// Names accepted by create_linear_solver.
   std::vector<std::string> linear_solver_names();
 
   /// Whether the solver needs MPI, PETSc and Trilinos initialised first
-  /// (dealii::Utilities::MPI::MPI_InitFinalize): "petsc", "trilinos" and
-  /// "petsc-mumps".
+  /// (dealii::Utilities::MPI::MPI_InitFinalize): all but "eigen-ldlt" and
+  /// "umfpack".
   bool linear_solver_needs_mpi(const std::string &name);
 
   /// Whether the solver spreads one factorisation over the ranks of

@@ -24,6 +24,7 @@
 #ifndef poundfe_integration_newmark_h
 #define poundfe_integration_newmark_h
 
+#include <poundfe/assembly/iterative_solver.h>
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/base/choices.h>
 #include <poundfe/elements/nonlinear_element.h>
@@ -87,6 +88,8 @@ namespace poundfe
     double           gamma     = 0.5;
     double           beta      = 0.25;
     NewtonParameters newton;
+    /// The CG + AMG linear solvers' options (Time integration/Iterative solver).
+    IterativeSolverParameters iterative;
   };
 
   /// Work and energy terms of the relative-coordinate energy balance, J:
@@ -127,6 +130,9 @@ namespace poundfe
     unsigned long line_searches = 0;    // iterations whose step the line search shortened or stretched
     unsigned long shared_analyses = 0;  // symbolic analyses taken over from another step size's solver
     double        smallest_time_step = 0;
+    /// CG + AMG solves and preconditioner builds, over the integrator's
+    /// life (the preconditioners outlive initialize()).
+    IterativeSolveCounts linear;
   };
 
   /// p(t) into the vector.

@@ -30,7 +30,7 @@ namespace poundfe
 
   struct TimeIntegrationParameters
   {
-    NewmarkParameters     newmark{0.001, 0.5, 0.25, NewtonParameters()};
+    NewmarkParameters     newmark{0.001, 0.5, 0.25, NewtonParameters(), IterativeSolverParameters()};
     double                end_time      = 0.0; // 0 = length of the ground motion
     std::string           linear_solver = "eigen-ldlt"; // one of linear_solver_names()
     HysteresisIntegration hysteresis_integration = HysteresisIntegration::trapezoidal;
