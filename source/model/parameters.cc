@@ -68,7 +68,9 @@ namespace poundfe
     add_choice(prm, "Type", type,
                "frame: regular frame generated from storeys and bays; "
                "mesh: frame read from a Gmsh mesh; shear: stick model. The entries "
-               "tagged [frame], [shear] or [mesh] apply only to that Type. Unit: -.",
+               "tagged [frame], [shear] or [mesh] apply only to that Type, those tagged "
+               "[3D] only with Model/Dimension = 3 ([3D frame], [3D shear]: and that "
+               "Type). Unit: -.",
                building_type_names());
     prm.add_parameter("Floor masses", floor_masses,
                       "Mass of each floor, bottom up (roof last): one value for all or one "

@@ -20,13 +20,7 @@ poundfe=$1 here=$2 input=$3 mpirun=${4:-} tolerance=${5:-1e-8} newton=${6:-1e-11
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL $*"; exit 1; }
-# FILE with "NAME = VALUE; ..." set in its Time integration section
-with() {
-  local lines
-  lines=$(echo "$2" | tr ';' '\n' | sed 's/^ *//; /^$/d; s/^/  set /' | sed ':a;N;$!ba;s/\n/\\n/g')
-  sed "/^subsection Time integration/a\\$lines" "$1"
-}
+. "$here/helpers.sh" # fail, with
 # FILE with "set NAME = VALUE" in a Time integration/Iterative solver subsection
 iterative() { sed "/^subsection Time integration/a\\  subsection Iterative solver\\n    set $2\\n  end" "$1"; }
 value() { grep -o "\"$2\": [0-9.e+-]*" "$1" | head -1 | cut -d' ' -f2; }

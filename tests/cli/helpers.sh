@@ -1,5 +1,5 @@
-# Shell helpers of the probabilistic command-line tests (montecarlo.sh,
-# interrupt.sh); source after setting $work, a scratch directory.
+# Shell helpers of the command-line tests (montecarlo.sh, interrupt.sh,
+# links.sh, soil.sh, ...); source after setting $work, a scratch directory.
 fail() { echo "FAIL $*"; exit 1; }
 # summary.json without what depends on the number of ranks or the clock
 strip() { grep -v -e wall_time -e realizations_per_second -e samples_per_second -e '"ranks"' -e realizations_run_now "$1"; }
@@ -15,4 +15,35 @@ wait_for_rows() {
     sleep 0.02
   done
   fail "no $2 rows in $1 after 30 s"
+}
+# Every numeric cell of two CSV files with the same header agrees to $3
+# relative to its column's largest magnitude; text cells are equal.
+same_csv() {
+  python3 - "$1" "$2" "$3" <<'PY'
+import csv, sys
+a, b = (list(csv.reader(open(p))) for p in sys.argv[1:3])
+tolerance = float(sys.argv[3])
+if a[0] != b[0] or len(a) != len(b):
+    sys.exit(f"different columns or rows: {sys.argv[1]} {sys.argv[2]}")
+worst = 0.0
+for j in range(len(a[0])):
+    try:
+        x = [float(r[j]) if r[j] else 0.0 for r in a[1:]]
+        y = [float(r[j]) if r[j] else 0.0 for r in b[1:]]
+    except ValueError:
+        if [r[j] for r in a[1:]] != [r[j] for r in b[1:]]:
+            sys.exit(f"column {a[0][j]} differs")
+        continue
+    scale = max([abs(v) for v in x] + [1e-300])
+    worst = max([worst] + [abs(u - v) / scale for u, v in zip(x, y)])
+print(f"largest relative difference {worst:.3g}")
+sys.exit(0 if worst <= tolerance else 1)
+PY
+}
+# FILE with "set NAME = VALUE" lines ("NAME = VALUE; ...") added to its
+# Time integration section
+with() {
+  local lines
+  lines=$(echo "$2" | tr ';' '\n' | sed 's/^ *//; /^$/d; s/^/  set /' | sed ':a;N;$!ba;s/\n/\\n/g')
+  sed "/^subsection Time integration/a\\$lines" "$1"
 }

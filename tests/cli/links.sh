@@ -15,32 +15,8 @@ set -eu
 poundfe=$1 input=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL $*"; exit 1; }
+. "$(dirname "$0")/helpers.sh" # fail, same_csv
 
-# Every numeric cell of two CSV files with the same header agrees to $3
-# relative to its column's largest magnitude; text cells are equal.
-same_csv() {
-  python3 - "$1" "$2" "$3" <<'PY'
-import csv, sys
-a, b = (list(csv.reader(open(p))) for p in sys.argv[1:3])
-tolerance = float(sys.argv[3])
-if a[0] != b[0] or len(a) != len(b):
-    sys.exit(f"different columns or rows: {sys.argv[1]} {sys.argv[2]}")
-worst = 0.0
-for j in range(len(a[0])):
-    try:
-        x = [float(r[j]) if r[j] else 0.0 for r in a[1:]]
-        y = [float(r[j]) if r[j] else 0.0 for r in b[1:]]
-    except ValueError:
-        if [r[j] for r in a[1:]] != [r[j] for r in b[1:]]:
-            sys.exit(f"column {a[0][j]} differs")
-        continue
-    scale = max([abs(v) for v in x] + [1e-300])
-    worst = max([worst] + [abs(u - v) / scale for u, v in zip(x, y)])
-print(f"largest relative difference {worst:.3g}")
-sys.exit(0 if worst <= tolerance else 1)
-PY
-}
 
 # 1. zero-thickness bumper = bare contact
 cp "$input/shear-pair-pounding.prm" "$work/bare.prm"

@@ -18,14 +18,7 @@ set -eu
 poundfe=$1 here=$2 input=$3 tolerance=${4:-1e-8} newton=${5:-1e-11}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL $*"; exit 1; }
-# FILE with "set NAME = VALUE" lines ("NAME = VALUE; ...") added to its
-# Time integration section
-with() {
-  local lines
-  lines=$(echo "$2" | tr ';' '\n' | sed 's/^ *//; /^$/d; s/^/  set /' | sed ':a;N;$!ba;s/\n/\\n/g')
-  sed "/^subsection Time integration/a\\$lines" "$1"
-}
+. "$here/helpers.sh" # fail, with
 counts() {
   for key in steps_including_substeps mean_iterations_per_step refactorizations; do
     printf '%s %s  ' "$key" "$(grep -o "\"$key\": [0-9.e+-]*" "$1" | head -1 | cut -d' ' -f2 | cut -c1-6)"
