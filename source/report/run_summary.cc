@@ -523,7 +523,7 @@ namespace poundfe
   RunSummary::energy_plot() const
   {
     // energy.csv: time, input, kinetic, damping, strain, hysteretic, contact,
-    // balance error, then friction and belt with friction elements. Contact
+    // balance error, friction, belt, links, foundation (with foundations). Contact
     // and friction energies are small beside the input: a panel of their own,
     // with the balance error against the right-hand axis.
     Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)", "energy (J)",
@@ -540,6 +540,12 @@ namespace poundfe
           energy.series.push_back(series);
           small.series.push_back(series);
         }
+    // links_J (column 11) and foundation_J (12, only with foundations):
+    // devices and soil dissipate as much as the structure's damping
+    if (!analysis.model.building_links.empty())
+      energy.series.push_back({"energy.csv", "1:11", "links", "lines"});
+    if (!analysis.model.foundations.empty())
+      energy.series.push_back({"energy.csv", "1:12", "foundation", "lines"});
     small.y2_label = "balance error (relative)";
     small.series.push_back({"energy.csv", "1:8", "balance error", "lines dt 2", "x1y2"});
     energy.below.push_back(small);
