@@ -78,6 +78,35 @@ namespace poundfe
     return sample_interval > 0 ? sample_interval : time_step;
   }
 
+  namespace
+  {
+    /// The Record subsection of Ground motion (a recorded accelerogram).
+    void
+    declare_record_entries(dealii::ParameterHandler &prm, GroundMotionParameters &p)
+    {
+      prm.enter_subsection("Record");
+      prm.add_parameter("Second file", p.second_record_file,
+                        "The second horizontal component (Components = 2), along y before "
+                        "the incidence rotation; same format, units and scaling as File. "
+                        "Unit: -.");
+      prm.add_parameter("File", p.record_file,
+                        "PEER .AT2, or text with one (acceleration) or two (time, "
+                        "acceleration) columns; relative to this parameter file. Unit: -.");
+      add_choice(prm, "Format", p.record_format,
+                 "auto: PEER AT2 for a .at2 file (any case), text otherwise. Unit: -.",
+                 record_format_names());
+      add_choice(prm, "Units", p.record_units,
+                 "Units of the values in a text file (AT2 files are in g). Unit: -.",
+                 record_units_names());
+      prm.add_parameter("Time step", p.record_time_step,
+                        "Sample interval of a one-column text record. Unit: s.");
+      prm.add_parameter("Target PGA", p.record_target_pga,
+                        "Scale the record to this PGA (0: keep it); the Scale factor multiplies "
+                        "it. Unit: g.");
+      prm.leave_subsection();
+    }
+  } // namespace
+
   void
   GroundMotionParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -98,26 +127,7 @@ namespace poundfe
                       "Rotates the horizontal pair counter-clockwise in plan: a_x = cos a "
                       "g_1 - sin a g_2, a_y = sin a g_1 + cos a g_2 (Model/Dimension = 3). "
                       "Unit: degrees.");
-    prm.enter_subsection("Record");
-    prm.add_parameter("Second file", second_record_file,
-                      "The second horizontal component (Components = 2), along y before "
-                      "the incidence rotation; same format, units and scaling as File. "
-                      "Unit: -.");
-    prm.add_parameter("File", record_file,
-                      "PEER .AT2, or text with one (acceleration) or two (time, "
-                      "acceleration) columns; relative to this parameter file. Unit: -.");
-    add_choice(prm, "Format", record_format,
-               "auto: PEER AT2 for a .at2 file (any case), text otherwise. Unit: -.",
-               record_format_names());
-    add_choice(prm, "Units", record_units,
-               "Units of the values in a text file (AT2 files are in g). Unit: -.",
-               record_units_names());
-    prm.add_parameter("Time step", record_time_step,
-                      "Sample interval of a one-column text record. Unit: s.");
-    prm.add_parameter("Target PGA", record_target_pga,
-                      "Scale the record to this PGA (0: keep it); the Scale factor multiplies "
-                      "it. Unit: g.");
-    prm.leave_subsection();
+    declare_record_entries(prm, *this);
     prm.enter_subsection("Stochastic");
     add_choice(prm, "Soil", soil,
                "Filter parameters preset (Der Kiureghian & Neuenhofer 1992): firm "

@@ -26,6 +26,77 @@ namespace poundfe
     return hysteresis_integration == HysteresisIntegration::trapezoidal ? 0.5 : 1.0;
   }
 
+  namespace
+  {
+    /// The entries of the Newton iteration (convergence, step cuts, tangent
+    /// update, nonlinear solver, line search), in the order of the listing.
+    void
+    declare_newton_entries(dealii::ParameterHandler &prm, NewtonParameters &newton)
+    {
+      prm.add_parameter("Newton residual tolerance", newton.residual_tolerance,
+                        "A nonlinear step has converged when the residual norm is below this "
+                        "times the norm of the effective load ... Unit: dimensionless.");
+      prm.add_parameter("Newton energy tolerance", newton.energy_tolerance,
+                        "... and the work of the residual on the last correction is below "
+                        "this times that of the first iteration (theory §3.4). Unit: dimensionless.");
+      prm.add_parameter("Newton maximum iterations", newton.max_iterations,
+                        "Iterations before the step is cut. Unit: count.",
+                        Patterns::Integer(1, 1000));
+      prm.add_parameter("Maximum step cuts", newton.max_step_cuts,
+                        "A step that fails is halved and retried, down to Time step / "
+                        "2^cuts; then the run stops (exit 2). Unit: count.",
+                        Patterns::Integer(0, 40));
+      add_choice(prm, "Tangent update", newton.tangent_update,
+                 "How the tangent of nonlinear elements enters the solve: woodbury "
+                 "keeps the one factorisation of the linear part and adds a dense "
+                 "correction whose rank is the total tangent rank of the nonlinear "
+                 "elements (one per uniaxial element); refactorize adds the tangents "
+                 "into the matrix and refactorises every iteration (the symbolic "
+                 "analysis done once); hybrid uses woodbury while the elements whose "
+                 "tangent differs from their initial one (the active rank) fit in "
+                 "Woodbury columns, and refactorises when they do not; auto picks "
+                 "woodbury up to a total rank of Woodbury columns, else hybrid. Unit: -.",
+                 tangent_update_names());
+      prm.add_parameter("Woodbury columns", newton.woodbury_columns,
+                        "The most columns of A^-1 B the Woodbury update keeps (a dense "
+                        "equations x columns block, 8 bytes each): the limit of auto and "
+                        "hybrid. Unit: count.", Patterns::Integer(1, 100000));
+      add_choice(prm, "Nonlinear solver", newton.nonlinear_solver,
+                 "How a Newton iteration finds its correction (theory §3.4b): newton forms "
+                 "and factorises the tangent at every iterate (quadratic convergence); "
+                 "modified-newton reuses one factorised tangent K_0; krylov-newton "
+                 "accelerates the modified-Newton correction in the subspace of the step's "
+                 "last corrections (Carlson and Miller 1998, OpenSees's KrylovNewton); bfgs "
+                 "updates the inverse of K_0 by BFGS (Matthies and Strang 1979); auto is "
+                 "newton when no sparse factorisation is needed (Woodbury), else "
+                 "krylov-newton re-forming K_0 when the measured cost of continuing exceeds "
+                 "that of a factorisation. Every method but newton redoes a step it fails by "
+                 "full Newton before the step is cut. Unit: -.",
+                 nonlinear_solver_names());
+      prm.add_parameter("Keep tangent across steps", newton.keep_tangent,
+                        "Every Nonlinear solver but newton: keep the factorised tangent K_0 "
+                        "from step to step (false: form it at each step's first iteration). "
+                        "Unit: -.");
+      prm.add_parameter("Refactorisation ratio", newton.refactorization_ratio,
+                        "modified-newton, krylov-newton and bfgs: re-form and refactorise K_0 at "
+                        "the current iterate when an iteration reduces the residual norm by less "
+                        "than this factor (>= 1: only when the residual grows). Unit: "
+                        "dimensionless.");
+      prm.add_parameter("Subspace dimension", newton.subspace_dimension,
+                        "krylov-newton: the most earlier corrections spanning the subspace; "
+                        "bfgs: the most update pairs kept. Unit: count.",
+                        Patterns::Integer(1, 100));
+      prm.add_parameter("Line search", newton.line_search,
+                        "Scale each correction d by the secant line search on the work "
+                        "G(s) = d . R(u + s d), until |G(s)| <= Line search tolerance |G(0)| "
+                        "(s in [0.1, 10], at most 10 evaluations; Crisfield 1991 §9.3). "
+                        "Unit: -.");
+      prm.add_parameter("Line search tolerance", newton.line_search_parameters.tolerance,
+                        "eta of Line search. Unit: dimensionless.",
+                        Patterns::Double(0.01, 0.99));
+    }
+  } // namespace
+
   void
   TimeIntegrationParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -55,67 +126,7 @@ namespace poundfe
                "(Iterative solver; theory §3.5c); on P ranks each rank runs the whole "
                "analysis. Unit: -.",
                linear_solver_names());
-    prm.add_parameter("Newton residual tolerance", newmark.newton.residual_tolerance,
-                      "A nonlinear step has converged when the residual norm is below this "
-                      "times the norm of the effective load ... Unit: dimensionless.");
-    prm.add_parameter("Newton energy tolerance", newmark.newton.energy_tolerance,
-                      "... and the work of the residual on the last correction is below "
-                      "this times that of the first iteration (theory §3.4). Unit: dimensionless.");
-    prm.add_parameter("Newton maximum iterations", newmark.newton.max_iterations,
-                      "Iterations before the step is cut. Unit: count.",
-                      Patterns::Integer(1, 1000));
-    prm.add_parameter("Maximum step cuts", newmark.newton.max_step_cuts,
-                      "A step that fails is halved and retried, down to Time step / "
-                      "2^cuts; then the run stops (exit 2). Unit: count.",
-                      Patterns::Integer(0, 40));
-    add_choice(prm, "Tangent update", newmark.newton.tangent_update,
-               "How the tangent of nonlinear elements enters the solve: woodbury "
-               "keeps the one factorisation of the linear part and adds a dense "
-               "correction whose rank is the total tangent rank of the nonlinear "
-               "elements (one per uniaxial element); refactorize adds the tangents "
-               "into the matrix and refactorises every iteration (the symbolic "
-               "analysis done once); hybrid uses woodbury while the elements whose "
-               "tangent differs from their initial one (the active rank) fit in "
-               "Woodbury columns, and refactorises when they do not; auto picks "
-               "woodbury up to a total rank of Woodbury columns, else hybrid. Unit: -.",
-               tangent_update_names());
-    prm.add_parameter("Woodbury columns", newmark.newton.woodbury_columns,
-                      "The most columns of A^-1 B the Woodbury update keeps (a dense "
-                      "equations x columns block, 8 bytes each): the limit of auto and "
-                      "hybrid. Unit: count.", Patterns::Integer(1, 100000));
-    add_choice(prm, "Nonlinear solver", newmark.newton.nonlinear_solver,
-               "How a Newton iteration finds its correction (theory §3.4b): newton forms "
-               "and factorises the tangent at every iterate (quadratic convergence); "
-               "modified-newton reuses one factorised tangent K_0; krylov-newton "
-               "accelerates the modified-Newton correction in the subspace of the step's "
-               "last corrections (Carlson and Miller 1998, OpenSees's KrylovNewton); bfgs "
-               "updates the inverse of K_0 by BFGS (Matthies and Strang 1979); auto is "
-               "newton when no sparse factorisation is needed (Woodbury), else "
-               "krylov-newton re-forming K_0 when the measured cost of continuing exceeds "
-               "that of a factorisation. Every method but newton redoes a step it fails by "
-               "full Newton before the step is cut. Unit: -.",
-               nonlinear_solver_names());
-    prm.add_parameter("Keep tangent across steps", newmark.newton.keep_tangent,
-                      "Every Nonlinear solver but newton: keep the factorised tangent K_0 "
-                      "from step to step (false: form it at each step's first iteration). "
-                      "Unit: -.");
-    prm.add_parameter("Refactorisation ratio", newmark.newton.refactorization_ratio,
-                      "modified-newton, krylov-newton and bfgs: re-form and refactorise K_0 at "
-                      "the current iterate when an iteration reduces the residual norm by less "
-                      "than this factor (>= 1: only when the residual grows). Unit: "
-                      "dimensionless.");
-    prm.add_parameter("Subspace dimension", newmark.newton.subspace_dimension,
-                      "krylov-newton: the most earlier corrections spanning the subspace; "
-                      "bfgs: the most update pairs kept. Unit: count.",
-                      Patterns::Integer(1, 100));
-    prm.add_parameter("Line search", newmark.newton.line_search,
-                      "Scale each correction d by the secant line search on the work "
-                      "G(s) = d . R(u + s d), until |G(s)| <= Line search tolerance |G(0)| "
-                      "(s in [0.1, 10], at most 10 evaluations; Crisfield 1991 §9.3). "
-                      "Unit: -.");
-    prm.add_parameter("Line search tolerance", newmark.newton.line_search_parameters.tolerance,
-                      "eta of Line search. Unit: dimensionless.",
-                      Patterns::Double(0.01, 0.99));
+    declare_newton_entries(prm, newmark.newton);
     newmark.iterative.declare(prm);
     add_choice(prm, "Hysteresis integration", hysteresis_integration,
                "Bouc-Wen z over a step: trapezoidal (second order) or "
