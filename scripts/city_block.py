@@ -128,8 +128,8 @@ def main():
                  "mpirun -np P poundfe run input/city-block.prm.")
         purpose = ("116 292 equations, 10 172 nonlinear elements (9 732 hinges, 440 gaps).\n"
                    "# Only the first {end} s of the motion (End time), so that the example runs "
-                   "in\n# minutes; see README, Speed. Not in the regression loop nor in "
-                   "tests/cli/examples.sh\n# (too long for CI): "
+                   "in\n# minutes; see README, Speed. Not run by "
+                   "cli/regression\n# (too long for CI): "
                    "tests/cli/city-block-small.prm is its small variant.").format(end=run["end"])
     for key, value in (("n", args.buildings), ("storeys", args.storeys)):
         if value is not None:

@@ -20,8 +20,14 @@ fi
 
 # The log stays inside build/ (the tree stays clean); ccache, where installed,
 # makes a rebuild of unchanged files instant.
+# Paths below the clone are hashed relative to it, so clones at other paths
+# share the cache; the precompiled header needs the two sloppiness options.
 launcher=()
-command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+if command -v ccache > /dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}" CCACHE_NOHASHDIR=1
+  export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
+fi
 mkdir -p build
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" > build/build.log 2>&1 ||
   { cat build/build.log; exit 1; }
