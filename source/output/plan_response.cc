@@ -1,6 +1,7 @@
 // The plan response of include/poundfe/output/plan_response.h.
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plan_response.h>
+#include <poundfe/output/storey_forces.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,13 +55,9 @@ namespace poundfe
           }
         peaks.push_back(b);
       }
-    // the hysteretic planes' elements follow the hinges and the storey links
-    int next = model.hinges.size() +
-               std::count_if(model.links.begin(), model.links.end(),
-                             [](const StoreyLink &l) { return l.hysteretic; });
-    for (const PlaneLink &link : model.plane_links)
-      element_of_link.push_back(link.hysteretic ? next++ : -1);
   }
+
+  PlanResponse::~PlanResponse() = default;
 
   void
   PlanResponse::reset()
@@ -76,22 +73,7 @@ namespace poundfe
           }
         b.base_shear_x = b.base_shear_y = b.base_torque = 0;
       }
-  }
-
-  double
-  PlanResponse::plane_force(const ResponseView &state, const unsigned int l) const
-  {
-    if (element_of_link[l] >= 0)
-      return state.elements[element_of_link[l]].force();
-    const PlaneLink &link = model.plane_links[l];
-    double           d    = 0;
-    for (unsigned int k = 0; k < 2; ++k)
-      {
-        const auto q = floor_motion(model, state.displacement(), link.nodes[k]);
-        for (unsigned int c = 0; c < 3; ++c)
-          d += link.coefficients[3 * k + c] * q[c];
-      }
-    return link.stiffness * d;
+    forces.reset();
   }
 
   void
@@ -126,24 +108,16 @@ namespace poundfe
   {
     for (unsigned int b = 0; b < peaks.size(); ++b)
       storey_drifts(state.displacement(), b);
-    std::vector<std::array<double, 3>> base(peaks.size(), {{0, 0, 0}});
-    for (unsigned int l = 0; l < model.plane_links.size(); ++l)
-      {
-        const PlaneLink &link = model.plane_links[l];
-        if (link.storey != 1)
-          continue;
-        // the top floor's coefficients are (d_x, d_y, d·(p - C_1) turned)
-        const double  f = plane_force(state, l);
-        auto         &v = base[link.building];
-        v[0] += f * link.coefficients[3];
-        v[1] += f * link.coefficients[4];
-        v[2] += f * link.coefficients[5];
-      }
+    if (peaks.empty())
+      return;
+    if (!forces)
+      forces = std::make_unique<StoreyForces>(model, state.elements);
     for (unsigned int b = 0; b < peaks.size(); ++b)
       {
-        keep_peak(peaks[b].base_shear_x, base[b][0]);
-        keep_peak(peaks[b].base_shear_y, base[b][1]);
-        keep_peak(peaks[b].base_torque, base[b][2]);
+        const auto base = forces->plan_forces(forces->index(b, 0), state.displacement());
+        keep_peak(peaks[b].base_shear_x, base[0]);
+        keep_peak(peaks[b].base_shear_y, base[1]);
+        keep_peak(peaks[b].base_torque, base[2]);
       }
   }
 

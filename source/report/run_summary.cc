@@ -102,10 +102,11 @@ namespace poundfe
       .value("nodes", model.n_nodes())
       .value("dofs", model.n_dofs())
       .value("equations", model.n_equations())
-      .value("members", static_cast<unsigned int>(model.members.size()))
-      .value("storey_links", static_cast<unsigned int>(model.links.size()))
-      .value("buildings", static_cast<unsigned int>(model.buildings.size()))
-      .end_object();
+      .value("members", static_cast<unsigned int>(model.members.size() + model.members_3d.size()))
+      .value("storey_links", static_cast<unsigned int>(model.links.size()));
+    if (model.dimension == 3) // the storeys of 3D shear buildings
+      json.value("resisting_planes", static_cast<unsigned int>(model.plane_links.size()));
+    json.value("buildings", static_cast<unsigned int>(model.buildings.size())).end_object();
     write_modes(json, "modes", analysis.modes);
   }
 
