@@ -11,6 +11,7 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/peak_response.h>
+#include <poundfe/output/plan_plot.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/output/response_range.h>
 
@@ -703,6 +704,8 @@ namespace poundfe
                                     model.gaps[g].label, "lines"});
         all.push_back(contact);
       }
+    if (model.dimension == 3 && !model.gaps.empty())
+      all.push_back(impact_plan_plot(model, state.impact_log().impacts()));
     return draw_plots(directory, all);
   }
 } // namespace poundfe
