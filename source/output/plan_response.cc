@@ -29,6 +29,23 @@ namespace poundfe
       peak = std::max(peak, std::abs(value));
     }
 
+    /// At one instant, the corners' drifts δ: whether max_k |δ_k| beats
+    /// `peak`; if so it becomes the peak and `ratio` Δmax/Δavg of these
+    /// drifts, Δavg = s (max_k s δ_k + min_k s δ_k) / 2 with s the sign of
+    /// the largest (a pure twist: Δavg = 0, the ratio left as it was).
+    void
+    keep_instant(const std::vector<double> &drifts, double &peak, double &ratio)
+    {
+      const auto [lo, hi] = std::minmax_element(drifts.begin(), drifts.end());
+      const double largest = std::max(std::abs(*lo), std::abs(*hi));
+      if (!(largest > peak))
+        return;
+      peak                 = largest;
+      const double average = std::abs(*hi) >= std::abs(*lo) ? 0.5 * (*hi + *lo) : -0.5 * (*hi + *lo);
+      if (average > 0)
+        ratio = largest / average;
+    }
+
     /// Δmax / ((Δmax + Δmin) / 2) of the corners' peak drifts; 1 when still.
     double
     irregularity(const std::vector<double> &drifts)
@@ -69,7 +86,8 @@ namespace poundfe
             s.rotation = 0;
             std::fill(s.corner_drift_x.begin(), s.corner_drift_x.end(), 0.0);
             std::fill(s.corner_drift_y.begin(), s.corner_drift_y.end(), 0.0);
-            s.irregularity_ratio = {{1, 1}};
+            s.irregularity_ratio = s.ratio_at_peak = {{1, 1}};
+            s.peak_drift         = {{0, 0}};
           }
         b.base_shear_x = b.base_shear_y = b.base_torque = 0;
       }
@@ -89,15 +107,21 @@ namespace poundfe
         Storey       &s      = peaks[b].storeys[i];
         keep_peak(s.rotation, q[2]);
         const std::vector<Point2> &corners = building.plan[i].outline;
+        std::array<std::vector<double>, 2> drift{{std::vector<double>(corners.size()),
+                                                 std::vector<double>(corners.size())}};
         for (unsigned int k = 0; k < corners.size(); ++k)
           {
             const Point2 &x = corners[k];
-            keep_peak(s.corner_drift_x[k], (q[0] - q[2] * (x.y - centre.y)) -
-                                             (below[0] - below[2] * (x.y - below_centre.y)));
-            keep_peak(s.corner_drift_y[k], (q[1] + q[2] * (x.x - centre.x)) -
-                                             (below[1] + below[2] * (x.x - below_centre.x)));
+            drift[0][k]     = (q[0] - q[2] * (x.y - centre.y)) -
+                          (below[0] - below[2] * (x.y - below_centre.y));
+            drift[1][k] = (q[1] + q[2] * (x.x - centre.x)) -
+                          (below[1] + below[2] * (x.x - below_centre.x));
+            keep_peak(s.corner_drift_x[k], drift[0][k]);
+            keep_peak(s.corner_drift_y[k], drift[1][k]);
           }
         s.irregularity_ratio = {{irregularity(s.corner_drift_x), irregularity(s.corner_drift_y)}};
+        for (unsigned int d = 0; d < 2; ++d)
+          keep_instant(drift[d], s.peak_drift[d], s.ratio_at_peak[d]);
         below        = q;
         below_centre = centre;
       }
@@ -125,17 +149,21 @@ namespace poundfe
   write_plan_response(JsonWriter &json, const PlanResponse &plan, const unsigned int b)
   {
     const PlanResponse::BuildingPeaks &peaks = plan.buildings()[b];
-    std::vector<double> rotation, ratio_x, ratio_y;
+    std::vector<double> rotation, ratio_x, ratio_y, instant_x, instant_y;
     for (const PlanResponse::Storey &s : peaks.storeys)
       {
         rotation.push_back(s.rotation);
         ratio_x.push_back(s.irregularity_ratio[0]);
         ratio_y.push_back(s.irregularity_ratio[1]);
+        instant_x.push_back(s.ratio_at_peak[0]);
+        instant_y.push_back(s.ratio_at_peak[1]);
       }
     json.begin_object("plan")
       .value("peak_floor_rotation_rad", rotation)
       .value("torsional_irregularity_x", ratio_x)
       .value("torsional_irregularity_y", ratio_y)
+      .value("torsional_irregularity_at_peak_x", instant_x)
+      .value("torsional_irregularity_at_peak_y", instant_y)
       .value("peak_base_shear_x_N", peaks.base_shear_x)
       .value("peak_base_shear_y_N", peaks.base_shear_y)
       .value("peak_base_torque_N_m", peaks.base_torque)
