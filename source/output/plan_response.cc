@@ -1,6 +1,7 @@
 // The plan response of include/poundfe/output/plan_response.h.
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plan_response.h>
+#include <poundfe/output/storey_forces.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,23 @@ namespace poundfe
     keep_peak(double &peak, const double value)
     {
       peak = std::max(peak, std::abs(value));
+    }
+
+    /// At one instant, the corners' drifts δ: whether max_k |δ_k| beats
+    /// `peak`; if so it becomes the peak and `ratio` Δmax/Δavg of these
+    /// drifts, Δavg = s (max_k s δ_k + min_k s δ_k) / 2 with s the sign of
+    /// the largest (a pure twist: Δavg = 0, the ratio left as it was).
+    void
+    keep_instant(const std::vector<double> &drifts, double &peak, double &ratio)
+    {
+      const auto [lo, hi] = std::minmax_element(drifts.begin(), drifts.end());
+      const double largest = std::max(std::abs(*lo), std::abs(*hi));
+      if (!(largest > peak))
+        return;
+      peak                 = largest;
+      const double average = std::abs(*hi) >= std::abs(*lo) ? 0.5 * (*hi + *lo) : -0.5 * (*hi + *lo);
+      if (average > 0)
+        ratio = largest / average;
     }
 
     /// Δmax / ((Δmax + Δmin) / 2) of the corners' peak drifts; 1 when still.
@@ -54,13 +72,9 @@ namespace poundfe
           }
         peaks.push_back(b);
       }
-    // the hysteretic planes' elements follow the hinges and the storey links
-    int next = model.hinges.size() +
-               std::count_if(model.links.begin(), model.links.end(),
-                             [](const StoreyLink &l) { return l.hysteretic; });
-    for (const PlaneLink &link : model.plane_links)
-      element_of_link.push_back(link.hysteretic ? next++ : -1);
   }
+
+  PlanResponse::~PlanResponse() = default;
 
   void
   PlanResponse::reset()
@@ -72,26 +86,12 @@ namespace poundfe
             s.rotation = 0;
             std::fill(s.corner_drift_x.begin(), s.corner_drift_x.end(), 0.0);
             std::fill(s.corner_drift_y.begin(), s.corner_drift_y.end(), 0.0);
-            s.irregularity_ratio = {{1, 1}};
+            s.irregularity_ratio = s.ratio_at_peak = {{1, 1}};
+            s.peak_drift         = {{0, 0}};
           }
         b.base_shear_x = b.base_shear_y = b.base_torque = 0;
       }
-  }
-
-  double
-  PlanResponse::plane_force(const ResponseView &state, const unsigned int l) const
-  {
-    if (element_of_link[l] >= 0)
-      return state.elements[element_of_link[l]].force();
-    const PlaneLink &link = model.plane_links[l];
-    double           d    = 0;
-    for (unsigned int k = 0; k < 2; ++k)
-      {
-        const auto q = floor_motion(model, state.displacement(), link.nodes[k]);
-        for (unsigned int c = 0; c < 3; ++c)
-          d += link.coefficients[3 * k + c] * q[c];
-      }
-    return link.stiffness * d;
+    forces.reset();
   }
 
   void
@@ -107,15 +107,21 @@ namespace poundfe
         Storey       &s      = peaks[b].storeys[i];
         keep_peak(s.rotation, q[2]);
         const std::vector<Point2> &corners = building.plan[i].outline;
+        std::array<std::vector<double>, 2> drift{{std::vector<double>(corners.size()),
+                                                 std::vector<double>(corners.size())}};
         for (unsigned int k = 0; k < corners.size(); ++k)
           {
             const Point2 &x = corners[k];
-            keep_peak(s.corner_drift_x[k], (q[0] - q[2] * (x.y - centre.y)) -
-                                             (below[0] - below[2] * (x.y - below_centre.y)));
-            keep_peak(s.corner_drift_y[k], (q[1] + q[2] * (x.x - centre.x)) -
-                                             (below[1] + below[2] * (x.x - below_centre.x)));
+            drift[0][k]     = (q[0] - q[2] * (x.y - centre.y)) -
+                          (below[0] - below[2] * (x.y - below_centre.y));
+            drift[1][k] = (q[1] + q[2] * (x.x - centre.x)) -
+                          (below[1] + below[2] * (x.x - below_centre.x));
+            keep_peak(s.corner_drift_x[k], drift[0][k]);
+            keep_peak(s.corner_drift_y[k], drift[1][k]);
           }
         s.irregularity_ratio = {{irregularity(s.corner_drift_x), irregularity(s.corner_drift_y)}};
+        for (unsigned int d = 0; d < 2; ++d)
+          keep_instant(drift[d], s.peak_drift[d], s.ratio_at_peak[d]);
         below        = q;
         below_centre = centre;
       }
@@ -126,24 +132,16 @@ namespace poundfe
   {
     for (unsigned int b = 0; b < peaks.size(); ++b)
       storey_drifts(state.displacement(), b);
-    std::vector<std::array<double, 3>> base(peaks.size(), {{0, 0, 0}});
-    for (unsigned int l = 0; l < model.plane_links.size(); ++l)
-      {
-        const PlaneLink &link = model.plane_links[l];
-        if (link.storey != 1)
-          continue;
-        // the top floor's coefficients are (d_x, d_y, d·(p - C_1) turned)
-        const double  f = plane_force(state, l);
-        auto         &v = base[link.building];
-        v[0] += f * link.coefficients[3];
-        v[1] += f * link.coefficients[4];
-        v[2] += f * link.coefficients[5];
-      }
+    if (peaks.empty())
+      return;
+    if (!forces)
+      forces = std::make_unique<StoreyForces>(model, state.elements);
     for (unsigned int b = 0; b < peaks.size(); ++b)
       {
-        keep_peak(peaks[b].base_shear_x, base[b][0]);
-        keep_peak(peaks[b].base_shear_y, base[b][1]);
-        keep_peak(peaks[b].base_torque, base[b][2]);
+        const auto base = forces->plan_forces(forces->index(b, 0), state.displacement());
+        keep_peak(peaks[b].base_shear_x, base[0]);
+        keep_peak(peaks[b].base_shear_y, base[1]);
+        keep_peak(peaks[b].base_torque, base[2]);
       }
   }
 
@@ -151,17 +149,21 @@ namespace poundfe
   write_plan_response(JsonWriter &json, const PlanResponse &plan, const unsigned int b)
   {
     const PlanResponse::BuildingPeaks &peaks = plan.buildings()[b];
-    std::vector<double> rotation, ratio_x, ratio_y;
+    std::vector<double> rotation, ratio_x, ratio_y, instant_x, instant_y;
     for (const PlanResponse::Storey &s : peaks.storeys)
       {
         rotation.push_back(s.rotation);
         ratio_x.push_back(s.irregularity_ratio[0]);
         ratio_y.push_back(s.irregularity_ratio[1]);
+        instant_x.push_back(s.ratio_at_peak[0]);
+        instant_y.push_back(s.ratio_at_peak[1]);
       }
     json.begin_object("plan")
       .value("peak_floor_rotation_rad", rotation)
       .value("torsional_irregularity_x", ratio_x)
       .value("torsional_irregularity_y", ratio_y)
+      .value("torsional_irregularity_at_peak_x", instant_x)
+      .value("torsional_irregularity_at_peak_y", instant_y)
       .value("peak_base_shear_x_N", peaks.base_shear_x)
       .value("peak_base_shear_y_N", peaks.base_shear_y)
       .value("peak_base_torque_N_m", peaks.base_torque)

@@ -1,3 +1,4 @@
+#include <poundfe/elements/frame_element_3d.h>
 #include <poundfe/output/storey_forces.h>
 
 #include <algorithm>
@@ -62,6 +63,93 @@ namespace poundfe
         if (link.hysteretic)
           storey.hysteretic = storey_elements.at(next_hysteretic++);
       }
+    if (model.dimension != 3)
+      return;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      for (unsigned int s = 0; s < model.buildings[b].floors.size(); ++s)
+        if (s < model.buildings[b].plan.size())
+          storeys[index(b, s)].centre = model.buildings[b].plan[s].mass_centre;
+    add_members_3d();
+    add_planes();
+  }
+
+  void
+  StoreyForces::add_members_3d()
+  {
+    using RowMajor = Eigen::Matrix<double, 12, Eigen::Dynamic, Eigen::RowMajor>;
+    using Point3   = Eigen::Map<const Eigen::Vector3d>;
+    for (const Member3D &member : model.members_3d)
+      {
+        const Building    &building = model.buildings[member.building];
+        const double       z0 = member.ends[0][2], z1 = member.ends[1][2];
+        const unsigned int lower = z0 < z1 ? 0 : 1;
+        for (unsigned int s = 0; s < building.floors.size(); ++s)
+          {
+            const double below = s == 0 ? building.base_level : building.floors[s - 1].level;
+            const double cut   = 0.5 * (below + building.floors[s].level);
+            if (!(std::min(z0, z1) < cut && cut < std::max(z0, z1)))
+              continue;
+            const FrameElement3D element(Point3(member.ends[0].data()),
+                                         Point3(member.ends[1].data()),
+                                         Point3(member.orientation.data()), member.section);
+            const Eigen::Map<const RowMajor> t(member.map.data(), 12, member.dofs.size());
+            CutMember3D cut_member;
+            for (const unsigned int dof : member.dofs)
+              cut_member.equations.push_back(model.equation(dof));
+            cut_member.forces = (element.stiffness() * t).middleRows<6>(6 * lower);
+            cut_member.at     = {member.ends[lower][0], member.ends[lower][1]};
+            storeys[index(member.building, s)].members_3d.push_back(std::move(cut_member));
+          }
+      }
+  }
+
+  void
+  StoreyForces::add_planes()
+  {
+    // the hysteretic planes' elements follow the hinges and the storey links
+    int next = model.hinges.size() + std::count_if(model.links.begin(), model.links.end(),
+                                                   [](const StoreyLink &l) { return l.hysteretic; });
+    for (unsigned int l = 0; l < model.plane_links.size(); ++l)
+      {
+        const PlaneLink &link = model.plane_links[l];
+        storeys[index(link.building, link.storey - 1)].planes.push_back(
+          {{static_cast<int>(l), link.hysteretic ? next++ : -1}});
+      }
+  }
+
+  std::array<double, 3>
+  StoreyForces::plan_forces(const unsigned int i, const Vector &u) const
+  {
+    const Storey         &storey = storeys[i];
+    std::array<double, 3> V{{0, 0, 0}};
+    for (const CutMember3D &m : storey.members_3d)
+      {
+        Eigen::VectorXd q(m.equations.size());
+        for (unsigned int k = 0; k < m.equations.size(); ++k)
+          q[k] = m.equations[k] >= 0 ? u[m.equations[k]] : 0.0;
+        const Eigen::Matrix<double, 6, 1> f = m.forces * q;
+        V[0] -= f[0];
+        V[1] -= f[1];
+        V[2] -= (m.at.x - storey.centre.x) * f[1] - (m.at.y - storey.centre.y) * f[0] + f[5];
+      }
+    for (const auto &[l, element] : storey.planes)
+      {
+        const PlaneLink &link = model.plane_links[l];
+        double           F    = 0; // k δ, or the Bouc-Wen force
+        if (element >= 0)
+          F = nonlinear[element].force();
+        else
+          for (unsigned int k = 0; k < 6; ++k)
+            {
+              const unsigned int c = k % 3;
+              const int e = model.equation(Model::dof(link.nodes[k / 3], static_cast<Component>(c)));
+              F += e >= 0 ? link.stiffness * link.coefficients[k] * u[e] : 0.0;
+            }
+        // the top floor's coefficients are (d_x, d_y, (p - C) × d)
+        for (unsigned int c = 0; c < 3; ++c)
+          V[c] += F * link.coefficients[3 + c];
+      }
+    return V;
   }
 
   Vector6
@@ -85,7 +173,7 @@ namespace poundfe
   StoreyForces::storey_shear(const unsigned int index, const Vector &u, const Vector &v) const
   {
     const Storey &storey = storeys[index];
-    double        V      = 0;
+    double        V      = model.dimension == 3 ? plan_forces(index, u)[0] : 0.0;
     for (const CutElement &e : storey.elements)
       V -= e.stiffness.row(3 * e.lower).dot(end_displacements(e.equations, u));
     if (storey.link >= 0)

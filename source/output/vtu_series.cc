@@ -4,6 +4,8 @@
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/vtu_series.h>
 
+#include "vtu_arrays.h"
+
 #include <deal.II/base/exceptions.h>
 
 #include <zlib.h>
@@ -18,119 +20,7 @@
 
 namespace poundfe
 {
-  namespace
-  {
-    // VTK cell types (vtkCellType.h)
-    constexpr int vtk_vertex = 1, vtk_line = 3, vtk_poly_line = 4;
-
-    enum CellKind : int
-    {
-      frame_element = 0,
-      storey        = 1,
-      gap           = 2,
-      hinge         = 3
-    };
-
-    static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
-                  "the VTU files declare byte_order=\"LittleEndian\"");
-
-    /// Base64 (RFC 4648) of `n` bytes, appended to `out`.
-    void
-    append_base64(std::string &out, const unsigned char *data, const std::size_t n)
-    {
-      static const char digits[] =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-      for (std::size_t i = 0; i < n; i += 3)
-        {
-          const unsigned int b = (data[i] << 16) | (i + 1 < n ? data[i + 1] << 8 : 0) |
-                                 (i + 2 < n ? data[i + 2] : 0);
-          out += digits[(b >> 18) & 63];
-          out += digits[(b >> 12) & 63];
-          out += i + 1 < n ? digits[(b >> 6) & 63] : '=';
-          out += i + 2 < n ? digits[b & 63] : '=';
-        }
-    }
-
-    /// One DataArray in VTK's compressed binary form: the values' bytes
-    /// (little endian, as declared in the file) deflated by zlib in one
-    /// block, written as base64 of the header {1 block, size, size,
-    /// compressed size} (UInt64) followed by base64 of the block.
-    class DataArrayWriter
-    {
-    public:
-      explicit DataArrayWriter(std::string &out)
-        : out(out)
-      {}
-      void
-      begin(const char *type, const char *name, const unsigned int n_components)
-      {
-        this->type = type;
-        raw.clear();
-        out += "<DataArray type=\"";
-        out += type;
-        out += "\" Name=\"";
-        out += name;
-        out += "\" NumberOfComponents=\"" + std::to_string(n_components) +
-               "\" format=\"binary\">\n";
-      }
-      void number(const double x) { append(x); }
-      void
-      whole(const long x)
-      {
-        if (std::strcmp(type, "Int32") == 0)
-          append(static_cast<std::int32_t>(x));
-        else if (std::strcmp(type, "UInt8") == 0)
-          append(static_cast<std::uint8_t>(x));
-        else
-          append(static_cast<std::int64_t>(x));
-      }
-      void
-      end()
-      {
-        uLongf compressed_size = compressBound(raw.size());
-        compressed.resize(compressed_size);
-        const int status =
-          compress2(compressed.data(), &compressed_size,
-                    reinterpret_cast<const Bytef *>(raw.data()), raw.size(), Z_BEST_SPEED);
-        AssertThrow(status == Z_OK, dealii::ExcMessage("zlib failed to compress a VTU array"));
-        const std::uint64_t header[4] = {1, raw.size(), raw.size(), compressed_size};
-        append_base64(out, reinterpret_cast<const unsigned char *>(header), sizeof header);
-        append_base64(out, compressed.data(), compressed_size);
-        out += "\n</DataArray>\n";
-      }
-
-    private:
-      template <typename T>
-      void
-      append(const T x)
-      {
-        raw.append(reinterpret_cast<const char *>(&x), sizeof x); // x86/ARM: little endian
-      }
-      std::string               &out;
-      const char                *type = "";
-      std::string                raw;
-      std::vector<unsigned char> compressed;
-    };
-    /// The cells of a VTU file as its arrays: connectivity, offsets, VTK
-    /// types, and the CellData ids (kind, building 1-based, member).
-    struct Cells
-    {
-      std::vector<long> connectivity, offsets;
-      std::vector<int>  types, kinds, buildings, members;
-
-      void
-      add(const std::vector<long> &cell_points, const int type, const CellKind kind,
-          const unsigned int building, const int member)
-      {
-        connectivity.insert(connectivity.end(), cell_points.begin(), cell_points.end());
-        offsets.push_back(connectivity.size());
-        types.push_back(type);
-        kinds.push_back(kind);
-        buildings.push_back(building + 1);
-        members.push_back(member);
-      }
-    };
-  } // namespace
+  using namespace vtu;
 
   struct VtuSeries::Impl
   {
@@ -157,6 +47,8 @@ namespace poundfe
     double      model_size = 0; // largest extent, m
 
     std::vector<std::pair<double, std::string>> frames;
+    /// Dimension 3: the spatial drawing (the planar members above are none).
+    std::unique_ptr<VtuGeometry3D> space;
 
     Impl(const Model &model, const std::string &directory, const std::string &name);
 
@@ -171,9 +63,10 @@ namespace poundfe
     std::vector<std::array<double, 3>> point_displacements(const Vector &u) const;
     Vector6 element_displacements(const Member &member, const Vector &u) const;
     double  dof_value(const Vector &u, unsigned int node, Component c) const;
-    /// Writes one file; `cell_arrays` adds the time-dependent CellData.
-    void write_file(const std::string &field_data, const Vector &u, double point_scale,
-                    const std::string &cell_arrays, double label);
+    /// The <Piece> of a planar model; `cell_arrays` adds the time-dependent CellData.
+    std::string piece(const Vector &u, double point_scale, const std::string &cell_arrays) const;
+    /// Writes one file around its field data and piece.
+    void write_file(const std::string &field_data, const std::string &piece, double label);
   };
 
   unsigned int
@@ -189,6 +82,11 @@ namespace poundfe
     , directory(directory)
     , name(name)
   {
+    if (model.dimension == 3)
+      {
+        space = std::make_unique<VtuGeometry3D>(model);
+        return;
+      }
     add_node_points();
     const Cells cells = make_cells();
     n_cells           = cells.types.size();
@@ -275,9 +173,9 @@ namespace poundfe
   }
 
   void
-  VtuSeries::Impl::write_static_text(const Cells &cells)
+  vtu::write_cell_ids(std::string &out, const Cells &cells)
   {
-    DataArrayWriter text(static_cell_data);
+    DataArrayWriter text(out);
     const std::pair<const char *, const std::vector<int> *> ids[] = {
       {"kind", &cells.kinds}, {"building", &cells.buildings}, {"member", &cells.members}};
     for (const auto &[array_name, values] : ids)
@@ -287,18 +185,20 @@ namespace poundfe
           text.whole(v);
         text.end();
       }
+  }
 
-    DataArrayWriter g(geometry);
-    geometry += "<Points>\n";
+  void
+  vtu::write_geometry(std::string &out, const std::vector<std::array<double, 3>> &points,
+                      const Cells &cells)
+  {
+    DataArrayWriter g(out);
+    out += "<Points>\n";
     g.begin("Float64", "Points", 3);
-    for (const Point2 &p : points)
-      {
-        g.number(p.x);
-        g.number(p.y);
-        g.number(0);
-      }
+    for (const auto &p : points)
+      for (const double x : p)
+        g.number(x);
     g.end();
-    geometry += "</Points>\n<Cells>\n";
+    out += "</Points>\n<Cells>\n";
     g.begin("Int64", "connectivity", 1);
     for (const long c : cells.connectivity)
       g.whole(c);
@@ -311,7 +211,17 @@ namespace poundfe
     for (const int t : cells.types)
       g.whole(t);
     g.end();
-    geometry += "</Cells>\n";
+    out += "</Cells>\n";
+  }
+
+  void
+  VtuSeries::Impl::write_static_text(const Cells &cells)
+  {
+    write_cell_ids(static_cell_data, cells);
+    std::vector<std::array<double, 3>> at;
+    for (const Point2 &p : points)
+      at.push_back({{p.x, p.y, 0}});
+    write_geometry(geometry, at, cells);
   }
 
   double
@@ -357,18 +267,13 @@ namespace poundfe
     return d;
   }
 
-  void
-  VtuSeries::Impl::write_file(const std::string &field_data, const Vector &u,
-                              const double point_scale, const std::string &cell_arrays,
-                              const double label)
+  std::string
+  VtuSeries::Impl::piece(const Vector &u, const double point_scale,
+                         const std::string &cell_arrays) const
   {
     std::string xml;
     xml.reserve(geometry.size() + static_cell_data.size() + cell_arrays.size() +
                 60 * points.size() + 1024);
-    xml += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-           "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
-           "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n";
-    xml += field_data;
     xml += "<Piece NumberOfPoints=\"" + std::to_string(points.size()) + "\" NumberOfCells=\"" +
            std::to_string(n_cells) + "\">\n<PointData Vectors=\"displacement\">\n";
     const auto d = point_displacements(u);
@@ -390,7 +295,20 @@ namespace poundfe
     xml += cell_arrays;
     xml += "</CellData>\n";
     xml += geometry;
-    xml += "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    xml += "</Piece>\n";
+    return xml;
+  }
+
+  void
+  VtuSeries::Impl::write_file(const std::string &field_data, const std::string &piece,
+                              const double label)
+  {
+    std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+                      "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
+                      "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n";
+    xml += field_data;
+    xml += piece;
+    xml += "</UnstructuredGrid>\n</VTKFile>\n";
 
     char file_name[64];
     std::snprintf(file_name, sizeof file_name, "%s-%05u.vtu", name.c_str(),
@@ -407,9 +325,29 @@ namespace poundfe
 
   VtuSeries::~VtuSeries() = default;
 
+  namespace
+  {
+    /// The FieldData of a time frame: TIME.
+    std::string
+    time_field(const double time)
+    {
+      std::string     field_data = "<FieldData>\n";
+      DataArrayWriter field(field_data);
+      field.begin("Float64", "TIME", 1);
+      field.number(time);
+      field.end();
+      return field_data + "</FieldData>\n";
+    }
+  } // namespace
+
   void
   VtuSeries::write(const double time, const Vector &u, const NonlinearElements &elements)
   {
+    if (impl->space)
+      {
+        impl->write_file(time_field(time), impl->space->piece(u, 1.0, &elements), time);
+        return;
+      }
     const Model        &model = impl->model;
     const unsigned int  n     = impl->n_cells;
     // end forces N V M at both ends, then force, contact, penetration, z,
@@ -493,23 +431,20 @@ namespace poundfe
       text.whole(c);
     text.end();
 
-    std::string field_data;
-    DataArrayWriter   field(field_data);
-    field_data += "<FieldData>\n";
-    field.begin("Float64", "TIME", 1);
-    field.number(time);
-    field.end();
-    field_data += "</FieldData>\n";
-    impl->write_file(field_data, u, 1.0, cell_arrays, time);
+    impl->write_file(time_field(time), impl->piece(u, 1.0, cell_arrays), time);
   }
 
   void
   VtuSeries::write_mode(const unsigned int mode, const double frequency, const Vector &shape)
   {
     double largest = 0; // translation of the shape
-    for (const auto &d : impl->point_displacements(shape))
-      largest = std::max(largest, std::hypot(d[0], d[1]));
-    const double scale = largest > 0 ? mode_amplitude * impl->model_size / largest : 1.0;
+    if (impl->space)
+      largest = impl->space->largest_translation(shape);
+    else
+      for (const auto &d : impl->point_displacements(shape))
+        largest = std::max(largest, std::hypot(d[0], d[1]));
+    const double size  = impl->space ? impl->space->size() : impl->model_size;
+    const double scale = largest > 0 ? mode_amplitude * size / largest : 1.0;
 
     std::string field_data;
     DataArrayWriter   field(field_data);
@@ -523,7 +458,10 @@ namespace poundfe
         field.end();
       }
     field_data += "</FieldData>\n";
-    impl->write_file(field_data, shape, scale, {}, mode);
+    impl->write_file(field_data,
+                     impl->space ? impl->space->piece(shape, scale, nullptr) :
+                                   impl->piece(shape, scale, {}),
+                     mode);
   }
 
   void

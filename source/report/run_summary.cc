@@ -11,6 +11,7 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/peak_response.h>
+#include <poundfe/output/plan_plot.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/output/response_range.h>
 
@@ -102,10 +103,11 @@ namespace poundfe
       .value("nodes", model.n_nodes())
       .value("dofs", model.n_dofs())
       .value("equations", model.n_equations())
-      .value("members", static_cast<unsigned int>(model.members.size()))
-      .value("storey_links", static_cast<unsigned int>(model.links.size()))
-      .value("buildings", static_cast<unsigned int>(model.buildings.size()))
-      .end_object();
+      .value("members", static_cast<unsigned int>(model.members.size() + model.members_3d.size()))
+      .value("storey_links", static_cast<unsigned int>(model.links.size()));
+    if (model.dimension == 3) // the storeys of 3D shear buildings
+      json.value("resisting_planes", static_cast<unsigned int>(model.plane_links.size()));
+    json.value("buildings", static_cast<unsigned int>(model.buildings.size())).end_object();
     write_modes(json, "modes", analysis.modes);
   }
 
@@ -702,6 +704,8 @@ namespace poundfe
                                     model.gaps[g].label, "lines"});
         all.push_back(contact);
       }
+    if (model.dimension == 3 && !model.gaps.empty())
+      all.push_back(impact_plan_plot(model, state.impact_log().impacts()));
     return draw_plots(directory, all);
   }
 } // namespace poundfe

@@ -5,6 +5,7 @@
 #  2. `run` completes, the slabs pound with their plan point in impacts.csv,
 #     the floors turn (floor rotations and Δmax/Δavg in summary.json),
 #     the hinges report, and the energy balance closes (its error printed);
+#     impacts_plan.png is written and listed;
 set -eu
 poundfe=$1 input=$2
 work=$(mktemp -d)
@@ -27,6 +28,12 @@ grep -q '"torsional_irregularity_x"' "$work/pair/summary.json" || fail "no irreg
 error=$(sed -n 's/.*"max_relative_balance_error": \([^,}]*\).*/\1/p' "$work/pair/summary.json")
 awk -v e="$error" 'BEGIN { exit !(e != "" && e < 1e-6) }' || fail "energy balance error $error"
 echo "ok   the 3D frame pair pounds ($impacts impacts), energy balance error $error"
+# the plan view of the impacts: a PNG, listed in summary.json (its picture
+# checked by eye: doc/verification.md, "Plan-view impact plot")
+head -c 8 "$work/pair/impacts_plan.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" ||
+  fail "no impacts_plan.png"
+grep -q '"impacts_plan.png"' "$work/pair/summary.json" || fail "impacts_plan.png not listed"
+echo "ok   impacts_plan.png"
 
 # 3. the energy balance of the pounding run with hinges to 1e-8 when each
 #    impact is resolved by 40 steps (10 as shipped leave 2.8e-8)

@@ -207,11 +207,12 @@ def check_file(poundfe, prm, work):
           f"{n_contact_frames} gap-frames in contact, {len(modes)} modes")
 
 
-poundfe = sys.argv[1]
-for prm in sys.argv[2:]:
-    with tempfile.TemporaryDirectory() as work:
-        check_file(poundfe, prm, work)
-for f in failures[:20]:
-    print("FAIL", f)
-print(f"{len(failures)} failures")
-sys.exit(1 if failures else 0)
+if __name__ == "__main__":  # tests/cli/vtu_3d.py imports the readers
+    poundfe = sys.argv[1]
+    for prm in sys.argv[2:]:
+        with tempfile.TemporaryDirectory() as work:
+            check_file(poundfe, prm, work)
+    for f in failures[:20]:
+        print("FAIL", f)
+    print(f"{len(failures)} failures")
+    sys.exit(1 if failures else 0)

@@ -5,24 +5,31 @@
 // u_y + θ (X_x - C_x)), and from them the torsional irregularity ratio
 //   Δmax / Δavg,  Δavg = (Δmax + Δmin) / 2
 // over the corners' peak drifts in each direction (ASCE/SEI 7-16 Table
-// 12.3-1, types 1a (> 1.2) and 1b (> 1.4); EN 1998-1 §4.3.3.2.2(6)); per
-// building the peak base shears V_x, V_y (the resisting planes of the first
-// storey: Σ F_j d_j) and the peak base torque about the first floor's mass
-// centre at rest, T = Σ (p_j - C_1) × F_j d_j.
+// 12.3-1, types 1a (> 1.2) and 1b (> 1.4); EN 1998-1 §4.3.3.2.2(6)), and
+// the same ratio at the instant when the storey's largest corner drift
+// peaks (doc/theory.md §1.12: the code's ratio is of one deformed shape); per
+// building the peak base shears V_x, V_y and the peak base torque about the
+// first floor's mass centre at rest (output/storey_forces.h: the resisting
+// planes of the first storey, T = Σ (p_j - C_1) × F_j d_j, or the element
+// forces of a 3D frame's ground-storey columns).
 #ifndef poundfe_output_plan_response_h
 #define poundfe_output_plan_response_h
 
 #include <poundfe/output/observer.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace poundfe
 {
+  class StoreyForces;
+
   class PlanResponse final : public StepObserver
   {
   public:
     explicit PlanResponse(const Model &model);
+    ~PlanResponse();
 
     void observe_step(const ResponseView &state) override;
     /// Forget the peaks (a new run).
@@ -33,6 +40,12 @@ namespace poundfe
       double                rotation = 0;              // peak |θz| of the floor on top, rad
       std::vector<double>   corner_drift_x, corner_drift_y; // peaks, m
       std::array<double, 2> irregularity_ratio{{1, 1}};   // x, y
+      /// The same ratio taken at one instant: when the storey's largest
+      /// corner drift max_k |δ_k(t)| peaks (x, y), with the signed drifts
+      /// of that instant, Δavg = s (max_k s δ_k + min_k s δ_k) / 2, s the
+      /// sign of the largest; that largest drift, m.
+      std::array<double, 2> ratio_at_peak{{1, 1}};
+      std::array<double, 2> peak_drift{{0, 0}};
     };
     struct BuildingPeaks
     {
@@ -43,13 +56,12 @@ namespace poundfe
     const std::vector<BuildingPeaks> &buildings() const { return peaks; }
 
   private:
-    /// The force of plane link l: k δ, or its Bouc-Wen element's force.
-    double plane_force(const ResponseView &state, unsigned int l) const;
-    void   storey_drifts(const Vector &u, unsigned int b);
+    void storey_drifts(const Vector &u, unsigned int b);
 
-    const Model               &model;
-    std::vector<BuildingPeaks> peaks;
-    std::vector<int>           element_of_link; // -1: elastic
+    const Model                  &model;
+    std::vector<BuildingPeaks>    peaks;
+    /// Of the run's elements: made at its first step, forgotten by reset.
+    std::unique_ptr<StoreyForces> forces;
   };
 
   class JsonWriter;

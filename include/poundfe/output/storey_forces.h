@@ -15,6 +15,15 @@
 // (sums over the building's ux equations; exact for a shear building with
 // storey dashpots only, and for any building once the Rayleigh part is
 // added; doc/theory.md §10).
+// Dimension 3 (doc/theory.md §1.15, §10): the storey's forces in plan, the
+// shears V_x, V_y and the torque T about the mass centre at rest C of the
+// floor on top of the storey, from
+//   3D frames: f = K_e T_e q, the global end forces of each column crossing
+//            the cut at its lower end (x, y): V = -Σ f_x,y,
+//            T = -Σ ((x - C_x) f_y - (y - C_y) f_x + m_z);
+//   shear buildings: each resisting plane j of the storey, force F_j along
+//            d_j at p_j: V = Σ F_j d_j, T = Σ (p_j - C) × F_j d_j;
+// V_x is the storey shear above (as in 2D, along x).
 // Member end forces are the local (N, V, M) at both ends of a whole member
 // (its first and last element when it is split), Przemieniecki (1968) ch. 5.
 #ifndef poundfe_output_storey_forces_h
@@ -43,6 +52,8 @@ namespace poundfe
     void storey_shears(const Vector &u, const Vector &v, std::vector<double> &shear) const;
     /// The shear of one storey (`index` in that layout), N.
     double storey_shear(unsigned int index, const Vector &u, const Vector &v) const;
+    /// Dimension 3: (V_x, V_y, T) of one storey (`index` as above), N and N m.
+    std::array<double, 3> plan_forces(unsigned int index, const Vector &u) const;
     /// Index of storey s (0-based) of building b in that layout.
     unsigned int index(unsigned int b, unsigned int s) const { return first[b] + s; }
 
@@ -58,13 +69,26 @@ namespace poundfe
       Matrix6            stiffness; // global K_e
       unsigned int       lower;     // 0 or 1: the node below the cut
     };
+    /// A 3D member crossing a cut: the global forces (fx, fy, fz, mx, my,
+    /// mz) at its lower end are `forces` times its model DOFs' values.
+    struct CutMember3D
+    {
+      std::vector<int>                        equations; // of its model DOFs; -1: fixed
+      Eigen::Matrix<double, 6, Eigen::Dynamic> forces;
+      Point2                                  at; // the lower end in plan
+    };
     struct Storey
     {
       std::vector<CutElement> elements;
+      std::vector<CutMember3D> members_3d;
+      std::vector<std::array<int, 2>> planes; // (plane link, its Bouc-Wen element or -1)
+      Point2                  centre;          // Dimension 3: of the floor on top, at rest
       int                     link = -1;      // shear building: the StoreyLink
       int                     hysteretic = -1; // its Bouc-Wen element, if any
     };
     Vector6 end_displacements(const std::array<int, 6> &equations, const Vector &u) const;
+    void    add_members_3d();
+    void    add_planes();
 
     const Model               &model;
     const NonlinearElements    &nonlinear;

@@ -18,6 +18,8 @@
 //   (1 while a gap is closed), `penetration`, the Bouc-Wen variable `z` and
 //   the plastic deformation (hinge rotation or storey drift minus force over
 //   initial stiffness) of hinges and hysteretic storeys.
+// 3D models (Model/Dimension = 3): members, slabs, mass centres, storeys and
+// gaps in space, drawn by source/output/vtu_series_3d.cc (doc/theory.md §10).
 // Arrays are written in VTK's compressed binary form (zlib, base64), as
 // deal.II's DataOut does by default.
 // deal.II's DataOut writes every cell's vertices again (duplicated points)

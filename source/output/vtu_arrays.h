@@ -1,0 +1,194 @@
+// Private to source/output: the pieces of VTK XML text that the planar
+// (vtu_series.cc) and the spatial (vtu_series_3d.cc) drawings share — the
+// compressed binary DataArray (Kitware, "VTK File Formats": XML format,
+// vtkZLibDataCompressor), the cell lists, the cell kinds — and the spatial
+// drawing itself (VtuGeometry3D, doc/theory.md §10).
+#ifndef poundfe_output_vtu_arrays_h
+#define poundfe_output_vtu_arrays_h
+
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/model/model.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <zlib.h>
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class NonlinearElements;
+
+  namespace vtu
+  {
+    // VTK cell types (vtkCellType.h)
+    constexpr int vtk_vertex = 1, vtk_line = 3, vtk_poly_line = 4;
+
+    constexpr int vtk_polygon = 7;
+
+    enum CellKind : int
+    {
+      frame_element = 0,
+      storey        = 1,
+      gap           = 2,
+      hinge         = 3,
+      slab          = 4, // a rigid floor's outline (3D)
+      mass_centre   = 5  // a rigid floor's master node (3D)
+    };
+
+    static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+                  "the VTU files declare byte_order=\"LittleEndian\"");
+
+    /// Base64 (RFC 4648) of `n` bytes, appended to `out`.
+    inline void
+    append_base64(std::string &out, const unsigned char *data, const std::size_t n)
+    {
+      static const char digits[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+      for (std::size_t i = 0; i < n; i += 3)
+        {
+          const unsigned int b = (data[i] << 16) | (i + 1 < n ? data[i + 1] << 8 : 0) |
+                                 (i + 2 < n ? data[i + 2] : 0);
+          out += digits[(b >> 18) & 63];
+          out += digits[(b >> 12) & 63];
+          out += i + 1 < n ? digits[(b >> 6) & 63] : '=';
+          out += i + 2 < n ? digits[b & 63] : '=';
+        }
+    }
+
+    /// One DataArray in VTK's compressed binary form: the values' bytes
+    /// (little endian, as declared in the file) deflated by zlib in one
+    /// block, written as base64 of the header {1 block, size, size,
+    /// compressed size} (UInt64) followed by base64 of the block.
+    class DataArrayWriter
+    {
+    public:
+      explicit DataArrayWriter(std::string &out)
+        : out(out)
+      {}
+      void
+      begin(const char *type, const char *name, const unsigned int n_components)
+      {
+        this->type = type;
+        raw.clear();
+        out += "<DataArray type=\"";
+        out += type;
+        out += "\" Name=\"";
+        out += name;
+        out += "\" NumberOfComponents=\"" + std::to_string(n_components) +
+               "\" format=\"binary\">\n";
+      }
+      void number(const double x) { append(x); }
+      void
+      whole(const long x)
+      {
+        if (std::strcmp(type, "Int32") == 0)
+          append(static_cast<std::int32_t>(x));
+        else if (std::strcmp(type, "UInt8") == 0)
+          append(static_cast<std::uint8_t>(x));
+        else
+          append(static_cast<std::int64_t>(x));
+      }
+      void
+      end()
+      {
+        uLongf compressed_size = compressBound(raw.size());
+        compressed.resize(compressed_size);
+        const int status =
+          compress2(compressed.data(), &compressed_size,
+                    reinterpret_cast<const Bytef *>(raw.data()), raw.size(), Z_BEST_SPEED);
+        AssertThrow(status == Z_OK, dealii::ExcMessage("zlib failed to compress a VTU array"));
+        const std::uint64_t header[4] = {1, raw.size(), raw.size(), compressed_size};
+        append_base64(out, reinterpret_cast<const unsigned char *>(header), sizeof header);
+        append_base64(out, compressed.data(), compressed_size);
+        out += "\n</DataArray>\n";
+      }
+
+    private:
+      template <typename T>
+      void
+      append(const T x)
+      {
+        raw.append(reinterpret_cast<const char *>(&x), sizeof x); // x86/ARM: little endian
+      }
+      std::string               &out;
+      const char                *type = "";
+      std::string                raw;
+      std::vector<unsigned char> compressed;
+    };
+    /// The cells of a VTU file as its arrays: connectivity, offsets, VTK
+    /// types, and the CellData ids (kind, building 1-based, member).
+    struct Cells
+    {
+      std::vector<long> connectivity, offsets;
+      std::vector<int>  types, kinds, buildings, members;
+
+      void
+      add(const std::vector<long> &cell_points, const int type, const CellKind kind,
+          const unsigned int building, const int member)
+      {
+        connectivity.insert(connectivity.end(), cell_points.begin(), cell_points.end());
+        offsets.push_back(connectivity.size());
+        types.push_back(type);
+        kinds.push_back(kind);
+        buildings.push_back(building + 1);
+        members.push_back(member);
+      }
+    };
+
+    /// The cell ids (CellData kind, building, member) as DataArrays.
+    void write_cell_ids(std::string &out, const Cells &cells);
+    /// The <Points> and <Cells> of a piece.
+    void write_geometry(std::string &out, const std::vector<std::array<double, 3>> &points,
+                        const Cells &cells);
+
+    /// The drawing of a 3D model (Model/Dimension = 3; vtu_series_3d.cc).
+    class VtuGeometry3D
+    {
+    public:
+      explicit VtuGeometry3D(const Model &model);
+      /// The <Piece> of a frame: displacements times `scale`; the member end
+      /// forces and the gaps' states when `elements` is given (a time frame).
+      std::string piece(const Vector &u, double scale, const NonlinearElements *elements) const;
+      /// The largest translation of a point under u.
+      double largest_translation(const Vector &u) const;
+      /// The model's largest extent along x, y or z, m.
+      double size() const { return model_size; }
+
+    private:
+      /// A sum of coefficient times model DOF (fixed DOFs contribute 0).
+      using Combination = std::vector<std::pair<unsigned int, double>>;
+      /// A point's six motions (ux, uy, uz, rx, ry, rz).
+      using Motion = std::array<Combination, 6>;
+      using Point3 = std::array<double, 3>;
+
+      /// The point at `at` of building b: an existing one there, or a new one.
+      unsigned int point_at(unsigned int b, const Point3 &at, const Motion &motion, int node);
+      unsigned int new_point(const Point3 &at, const Motion &motion, int node);
+      void         add_members();
+      void         add_floors();
+      void         add_gaps();
+      void         write_static_text();
+      double       value(const Combination &c, const Vector &u) const;
+      std::string  time_arrays(const Vector &u, const NonlinearElements &elements) const;
+
+      const Model                     &model;
+      std::vector<Point3>              points;
+      std::map<std::array<long long, 4>, unsigned int> point_index; // (building, x, y, z in µm)
+      std::vector<Motion>              motions;
+      std::vector<int>                 point_node; // the model node a point stands for; -1
+      Cells                            cells;
+      std::vector<int>                 gap_cell;     // per model gap; -1: not drawn
+      std::vector<int>                 master_point; // per model node; -1: none
+      double                           model_size = 0;
+      std::string                      static_cell_data, geometry;
+    };
+  } // namespace vtu
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,274 @@
+// The ParaView drawing of a 3D model (Model/Dimension = 3; doc/theory.md
+// §10, "3D models"), in VTK's XML unstructured grid (Kitware, "VTK File
+// Formats", VTK User's Guide 11th ed., ch. 19), site axes, z up:
+//   - each 3D frame member a line between its end joints, each joint one
+//     point shared by its members; point data: the joint's six motions
+//     (displacement ux, uy, uz and rotation rx, ry, rz), read through the
+//     member's map u_e = T_e q (doc/theory.md §1.15) without the hinges'
+//     relative rotations α (those belong to the member end, not the joint);
+//   - each rigid floor its slab outline as a polygon whose corners move with
+//     the diaphragm, u = u_C + θ e_z × (X - C) (small rotations, §1.12), a
+//     frame's corners being its corner joints, and its mass centre (the
+//     master node) as a vertex;
+//   - each storey of a torsionally coupled shear building a line between
+//     the mass centres of its floors (the first from the ground below C_1);
+//   - each gap in plan a line between the two floors' mass centres, with its
+//     contact force and state.
+// Point data: displacement, rotation, node (the model node of a mass centre
+// or of a joint's (uz, rx, ry); else -1). Cell data: kind (0 member, 1
+// storey, 2 gap, 4 slab, 5 mass centre), building and member ids (1-based; a
+// slab's and a mass centre's floor number, a gap's number), and in a time
+// frame the member end forces in local axes (N, Vy, Vz, T, My, Mz) at each
+// end, the gap force and contact.
+#include <poundfe/elements/frame_element_3d.h>
+#include <poundfe/elements/nonlinear_element.h>
+
+#include "vtu_arrays.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace poundfe
+{
+  namespace vtu
+  {
+    VtuGeometry3D::VtuGeometry3D(const Model &model)
+      : model(model)
+      , master_point(model.n_nodes(), -1)
+    {
+      add_members();
+      add_floors();
+      add_gaps();
+      std::array<double, 3> low{}, high{};
+      for (unsigned int p = 0; p < points.size(); ++p)
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            low[c]  = p == 0 ? points[p][c] : std::min(low[c], points[p][c]);
+            high[c] = p == 0 ? points[p][c] : std::max(high[c], points[p][c]);
+          }
+      for (unsigned int c = 0; c < 3; ++c)
+        model_size = std::max(model_size, high[c] - low[c]);
+      write_static_text();
+    }
+
+    unsigned int
+    VtuGeometry3D::new_point(const Point3 &at, const Motion &motion, const int node)
+    {
+      points.push_back(at);
+      motions.push_back(motion);
+      point_node.push_back(node);
+      return points.size() - 1;
+    }
+
+    unsigned int
+    VtuGeometry3D::point_at(const unsigned int b, const Point3 &at, const Motion &motion,
+                            const int node)
+    {
+      // to the micrometre: a joint and a slab corner computed apart are one point
+      const std::array<long long, 4> key{{b, std::llround(at[0] * 1e6), std::llround(at[1] * 1e6),
+                                          std::llround(at[2] * 1e6)}};
+      const auto [it, added] = point_index.emplace(key, points.size());
+      if (added)
+        new_point(at, motion, node);
+      return it->second;
+    }
+
+    void
+    VtuGeometry3D::add_members()
+    {
+      std::vector<unsigned int> hinge_dofs; // the α of the hinges: the member's, not the joint's
+      for (const Hinge3D &h : model.hinges_3d)
+        hinge_dofs.push_back(n_dofs_per_node * h.node + h.slot);
+      std::vector<int> n_members(model.buildings.size(), 0);
+      for (const Member3D &member : model.members_3d)
+        {
+          const unsigned int  n = member.dofs.size();
+          std::array<long, 2> ends{};
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              Motion motion;
+              int    node = -1; // the joint's generalized node: its uz is that node's first DOF
+              for (unsigned int c = 0; c < 6; ++c)
+                for (unsigned int j = 0; j < n; ++j)
+                  if (const double a = member.map[(6 * k + c) * n + j];
+                      a != 0 && std::find(hinge_dofs.begin(), hinge_dofs.end(), member.dofs[j]) ==
+                                  hinge_dofs.end())
+                    {
+                      motion[c].emplace_back(member.dofs[j], a);
+                      if (c == 2)
+                        node = member.dofs[j] / n_dofs_per_node;
+                    }
+              ends[k] = point_at(member.building, member.ends[k], motion, node);
+            }
+          cells.add({ends[0], ends[1]}, vtk_line, frame_element, member.building,
+                    ++n_members[member.building]);
+        }
+    }
+
+    void
+    VtuGeometry3D::add_floors()
+    {
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        {
+          const Building &building = model.buildings[b];
+          long            below    = -1; // the mass centre under the storey
+          for (unsigned int i = 0; i < building.floors.size() && i < building.plan.size(); ++i)
+            {
+              if (building.floors[i].nodes.size() != 1)
+                continue; // no diaphragm: the joints are the floor
+              const unsigned int master = building.floors[i].nodes.front();
+              const Point2      &C      = building.plan[i].mass_centre;
+              const double       z      = building.floors[i].level;
+              const auto         rigid  = [&](const Point2 &x) {
+                const unsigned int theta = Model::dof(master, Component::rz);
+                Motion             m;
+                m[0] = {{Model::dof(master, Component::ux), 1.0}, {theta, -(x.y - C.y)}};
+                m[1] = {{Model::dof(master, Component::uy), 1.0}, {theta, x.x - C.x}};
+                m[5] = {{theta, 1.0}};
+                return m;
+              };
+              const unsigned int centre = new_point({{C.x, C.y, z}}, rigid(C), master);
+              master_point[master]      = centre;
+              cells.add({centre}, vtk_vertex, mass_centre, b, i + 1);
+              std::vector<long> corners;
+              for (const Point2 &x : building.plan[i].outline)
+                corners.push_back(point_at(b, {{x.x, x.y, z}}, rigid(x), -1));
+              cells.add(corners, vtk_polygon, slab, b, i + 1);
+              if (building.type != BuildingType::shear)
+                continue;
+              if (below < 0) // the ground under the first floor's mass centre
+                below = new_point({{C.x, C.y, building.base_level}}, {}, -1);
+              cells.add({below, centre}, vtk_line, storey, b, i + 1);
+              below = centre;
+            }
+        }
+    }
+
+    void
+    VtuGeometry3D::add_gaps()
+    {
+      for (unsigned int g = 0; g < model.gaps.size(); ++g)
+        {
+          const std::array<int, 2> &ends = model.gaps[g].nodes;
+          gap_cell.push_back(-1);
+          if (ends[0] < 0 || ends[1] < 0 || master_point[ends[0]] < 0 || master_point[ends[1]] < 0)
+            continue; // a barrier or a floor without a diaphragm: not drawn
+          gap_cell.back() = cells.types.size();
+          cells.add({master_point[ends[0]], master_point[ends[1]]}, vtk_line, gap,
+                    model.gaps[g].buildings[0], g + 1);
+        }
+    }
+
+    void
+    VtuGeometry3D::write_static_text()
+    {
+      write_cell_ids(static_cell_data, cells);
+      write_geometry(geometry, points, cells);
+    }
+
+    double
+    VtuGeometry3D::value(const Combination &combination, const Vector &u) const
+    {
+      double sum = 0;
+      for (const auto &[dof, coefficient] : combination)
+        if (const int e = model.equation(dof); e >= 0)
+          sum += coefficient * u[e];
+      return sum;
+    }
+
+    double
+    VtuGeometry3D::largest_translation(const Vector &u) const
+    {
+      double largest = 0;
+      for (const Motion &m : motions)
+        largest = std::max(largest, std::hypot(value(m[0], u), value(m[1], u), value(m[2], u)));
+      return largest;
+    }
+
+    std::string
+    VtuGeometry3D::time_arrays(const Vector &u, const NonlinearElements &elements) const
+    {
+      const unsigned int                  n_cells = cells.types.size();
+      std::vector<std::array<double, 12>> end_forces(n_cells, std::array<double, 12>{});
+      for (unsigned int e = 0; e < model.members_3d.size(); ++e) // the first cells
+        {
+          const Member3D    &member = model.members_3d[e];
+          const unsigned int n      = member.dofs.size();
+          using Point           = Eigen::Map<const Eigen::Vector3d>;
+          const FrameElement3D element(Point(member.ends[0].data()), Point(member.ends[1].data()),
+                                       Point(member.orientation.data()), member.section);
+          Vector12 ue = Vector12::Zero();
+          for (unsigned int i = 0; i < 12; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              if (const int q = model.equation(member.dofs[j]); q >= 0)
+                ue[i] += member.map[i * n + j] * u[q];
+          const Vector12 f = element.local_end_forces(ue);
+          for (unsigned int i = 0; i < 12; ++i)
+            end_forces[e][i] = f[i];
+        }
+      std::vector<double> force(n_cells, 0);
+      std::vector<int>    contact(n_cells, 0);
+      unsigned int        g = 0;
+      for (const NonlinearElement &element : elements)
+        if (element.kind == ElementKind::gap)
+          if (const int cell = gap_cell.at(g++); cell >= 0)
+            {
+              force[cell]   = element.force();
+              contact[cell] = element.is_active();
+            }
+      std::string     xml;
+      DataArrayWriter text(xml);
+      for (unsigned int end = 0; end < 2; ++end)
+        {
+          text.begin("Float64", end == 0 ? "end_forces_start" : "end_forces_end", 6);
+          for (const auto &f : end_forces)
+            for (unsigned int k = 0; k < 6; ++k)
+              text.number(f[6 * end + k]);
+          text.end();
+        }
+      text.begin("Float64", "force", 1);
+      for (const double f : force)
+        text.number(f);
+      text.end();
+      text.begin("Int32", "contact", 1);
+      for (const int c : contact)
+        text.whole(c);
+      text.end();
+      return xml;
+    }
+
+    std::string
+    VtuGeometry3D::piece(const Vector &u, const double scale,
+                         const NonlinearElements *elements) const
+    {
+      std::string xml = "<Piece NumberOfPoints=\"" + std::to_string(points.size()) +
+                        "\" NumberOfCells=\"" + std::to_string(cells.types.size()) +
+                        "\">\n<PointData Vectors=\"displacement\">\n";
+      std::vector<std::array<double, 6>> d(points.size());
+      for (unsigned int p = 0; p < points.size(); ++p)
+        for (unsigned int c = 0; c < 6; ++c)
+          d[p][c] = scale * value(motions[p][c], u);
+      DataArrayWriter text(xml);
+      for (const unsigned int first : {0u, 3u})
+        {
+          text.begin("Float64", first == 0 ? "displacement" : "rotation", 3);
+          for (const auto &m : d)
+            for (unsigned int c = first; c < first + 3; ++c)
+              text.number(m[c]);
+          text.end();
+        }
+      text.begin("Int32", "node", 1);
+      for (const int n : point_node)
+        text.whole(n);
+      text.end();
+      xml += "</PointData>\n<CellData Scalars=\"kind\">\n";
+      xml += static_cell_data;
+      if (elements != nullptr)
+        xml += time_arrays(u, *elements);
+      xml += "</CellData>\n";
+      xml += geometry;
+      xml += "</Piece>\n";
+      return xml;
+    }
+  } // namespace vtu
+} // namespace poundfe
