@@ -446,7 +446,7 @@ namespace poundfe
     AssertDimension(result.random_separation.size(), result.largest_approach.size());
     unsigned long n_pounding = 0;
     for (std::size_t r = 0; r < result.largest_approach.size(); ++r)
-      n_pounding += result.largest_approach[r] >= result.random_separation[r];
+      n_pounding += result.largest_approach[r] > result.random_separation[r];
     return estimate_probability(n_pounding, result.largest_approach.size());
   }
 

@@ -200,7 +200,7 @@ namespace poundfe
   /// not change the free responses, so each realization samples its pair's
   /// separation s_r, from the normal that follows the runner's in the
   /// realization's stream (x = F^-1(Phi(u))), and pounds when its largest
-  /// approach reaches s_r: P(pounding) = #{a_r >= s_r} / n.
+  /// approach exceeds s_r: P(pounding) = #{a_r > s_r} / n.
   struct RandomSeparations
   {
     std::vector<unsigned int> pairs; // index in the pairs of each variable
@@ -242,7 +242,7 @@ namespace poundfe
                                                      &attach_parameters = {},
                                                    const RandomSeparations &separations = {});
 
-  /// P(pounding) of a pair with a random separation: #{a_r >= s_r} / n over
+  /// P(pounding) of a pair with a random separation: #{a_r > s_r} / n over
   /// its completed realizations (largest approach a_r, sampled separation s_r).
   ProbabilityEstimate pounding_at_random_separation(const PairResult &result);
 
