@@ -714,13 +714,11 @@ namespace poundfe::commands
     /// Monte Carlo without contact and, with a site hazard, at its PGA levels.
     void
     run_random(const InputParameters &input, const Analysis &analysis,
-               const std::vector<AdjacentPair> &pairs, const std::string &directory,
+               const std::vector<AdjacentPair> &pairs, const RandomParameterParameters &structure,
+               const RandomSeparations &separations, const std::string &directory,
                const MPI_Comm comm, std::optional<PoundingHazard> &hazard, Outcome &outcome)
     {
       const unsigned int    rank  = dealii::Utilities::MPI::this_mpi_process(comm);
-      RandomParameterParameters structure;
-      RandomSeparations         separations;
-      split_random_parameters(input, pairs, structure, separations);
       const MonteCarloTable table = run_realizations_without_contact(
         analysis, time_history_parameters(input), pairs, input.monte_carlo.realizations, directory,
         comm, outcome.results,
@@ -816,6 +814,17 @@ namespace poundfe::commands
       hazard = prepare_pounding_hazard(
         input.separation.hazard, input,
         RealizationRunner(analysis, time_history_parameters(input)).reference_pga("the PGA levels of a site hazard"));
+    RandomParameterParameters structure; // Random parameters: the structure's
+    RandomSeparations         separations; // and the pairs' separations
+    if (route.random)
+      {
+        split_random_parameters(input, pairs, structure, separations);
+        if (structure.has_variables()) // their paths and distributions, checked
+          {
+            RealizationRunner check(analysis, time_history_parameters(input));
+            attach_random_parameters(check, structure, input, input.modal.eigensolver);
+          }
+      }
     std::optional<SpectrumPeaks> spectrum; // it may find bad input
     if (route.by_spectrum && rank == 0)
       spectrum = spectrum_peaks(analysis, pairs, input.spectrum, input.separation,
@@ -836,7 +845,8 @@ namespace poundfe::commands
       }
     else if (route.random)
       {
-        run_random(input, analysis, pairs, directory, comm, hazard, outcome);
+        run_random(input, analysis, pairs, structure, separations, directory, comm, hazard,
+                   outcome);
         if (rank != 0)
           return outcome.exit_status;
       }

@@ -10,7 +10,8 @@
 #    lognormal CDF at each a_r (the separation drawn independently of the
 #    response), agrees within 4 standard errors of their difference;
 #  - the sampled separations have the lognormal's mean (4 standard errors);
-#  - the random stiffness changes the approaches (against the nominal run).
+#  - the random stiffness changes the approaches (against the nominal run);
+#  - a random separation correlated with another variable: exit 1.
 set -eu
 poundfe=$1 input=$2
 work=$(mktemp -d)
@@ -57,3 +58,14 @@ print("P(pounding) %.4f (%d of %d), E[F_S(a)] %.4f +- %.4f; mean separation %.4f
 PY
 ) || fail "separation with random parameters"
 echo "ok   separation: P(pounding at a random separation) with a random stiffness: $result"
+
+# a random separation correlated with another variable: exit 1, one message
+sed 's/^end$/end/' "$work/random.prm" | awk '{ print } /s: Model\/Separations\[1\]/ { print "  set Correlation = 1 0.5; 0.5 1" }' > "$work/correlated.prm"
+set +e
+"$poundfe" separation "$work/correlated.prm" --output "$work/correlated" > /dev/null 2> "$work/correlated.err"
+status=$?
+set -e
+[ $status -eq 1 ] && [ "$(wc -l < "$work/correlated.err")" -eq 1 ] &&
+  grep -q "Random parameters/Correlation" "$work/correlated.err" && [ ! -e "$work/correlated" ] ||
+  fail "correlated random separation: exit $status, $(cat "$work/correlated.err")"
+echo "ok   bad input: $(cat "$work/correlated.err")"
