@@ -20,6 +20,7 @@ namespace poundfe
     int site_hazard(const CommandRun &);    // site_hazard.cc
     int separation(const CommandRun &);     // separation.cc
     int reliability(const CommandRun &);    // reliability.cc
+    int dynamic_form(const CommandRun &);   // dynamic_form.cc
     int print_parameters(const CommandRun &); // print_parameters.cc
     int input_template(const CommandRun &); // template.cc
   } // namespace commands
@@ -78,6 +79,10 @@ namespace poundfe
        "failure probability of algebraic limit states (Reliability\n"
        "section): FORM, SORM, importance sampling, Monte Carlo, subset",
        true, true, true, false, commands::reliability},
+      {"dynamic-form", "FILE",
+       "FORM on a time-history limit state (Random parameters):\n"
+       "beta, Pf, design point, alpha, number of time histories",
+       true, false, false, false, commands::dynamic_form},
       {"print-parameters", "", "every parameter with its documentation and default",
        false, false, false, false, commands::print_parameters},
       {"template", "KIND",

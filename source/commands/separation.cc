@@ -16,9 +16,11 @@
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
+#include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/statistics.h>
 #include <poundfe/separation/separation.h>
 #include <poundfe/separation/separation_spectrum.h>
@@ -31,6 +33,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 namespace poundfe::commands
@@ -499,6 +502,16 @@ namespace poundfe::commands
                                              s.confidence_level))
             .end_object();
         }
+      if (!r.random_separation.empty())
+        {
+          const ProbabilityEstimate e = pounding_at_random_separation(r);
+          json.begin_object("pounding_at_random_separation")
+            .value("probability", e.probability)
+            .value("coefficient_of_variation", undefined_if_infinite(e.coefficient_of_variation))
+            .value("pounding_realizations", e.n_failures)
+            .value("realizations", e.n)
+            .end_object();
+        }
       json.end_object();
     }
 
@@ -595,6 +608,9 @@ namespace poundfe::commands
                   << (std::isnan(upper) ? "needs more realizations" : rounded(upper) + " m")
                   << ")\n";
             }
+          if (!r.random_separation.empty())
+            out << "  P(pounding at the random separation) = "
+                << rounded(pounding_at_random_separation(r).probability) << "\n";
         }
     }
 
@@ -655,16 +671,61 @@ namespace poundfe::commands
       int                     exit_status = 0;
     };
 
+    /// The Random parameters of a Monte Carlo without contact: the pairs'
+    /// separations (Model/Separations[i], sampled per realization: they
+    /// change no free response) apart from the structure's (made random in
+    /// the runner). Limit states are not used here.
+    void
+    split_random_parameters(const InputParameters &input, const std::vector<AdjacentPair> &pairs,
+                            RandomParameterParameters &structure, RandomSeparations &separations)
+    {
+      const RandomParameterParameters &p = input.random_parameters;
+      static const std::regex separation(R"(^\s*Model/Separations\s*(\[\s*([0-9]+)\s*\])?\s*$)");
+      structure = p;
+      structure.names.clear(), structure.paths.clear(), structure.distributions.clear();
+      structure.limit_state_names.clear(), structure.expressions.clear();
+      for (std::size_t i = 0; i < p.names.size(); ++i)
+        {
+          std::smatch match;
+          if (!std::regex_match(p.paths[i], match, separation))
+            {
+              structure.names.push_back(p.names[i]);
+              structure.paths.push_back(p.paths[i]);
+              structure.distributions.push_back(p.distributions[i]);
+              continue;
+            }
+          const unsigned long b  = match[2].matched ? std::stoul(match[2]) : 1;
+          const auto          at = std::find_if(pairs.begin(), pairs.end(), [b](const AdjacentPair &a) {
+            return a.left + 1 == b && a.right == b;
+          });
+          if (at == pairs.end())
+            input.fail("Random parameters/Variables",
+                       "variable '" + p.names[i] + "': no adjacent pair of buildings " +
+                         std::to_string(b) + " and " + std::to_string(b + 1));
+          if (!p.correlation.empty())
+            input.fail("Random parameters/Correlation",
+                       "separation samples random separations independently of the other "
+                       "variables: leave Correlation empty");
+          separations.pairs.push_back(at - pairs.begin());
+          separations.distributions.push_back(p.distributions[i]);
+        }
+    }
+
     /// Monte Carlo without contact and, with a site hazard, at its PGA levels.
     void
     run_random(const InputParameters &input, const Analysis &analysis,
-               const std::vector<AdjacentPair> &pairs, const std::string &directory,
+               const std::vector<AdjacentPair> &pairs, const RandomParameterParameters &structure,
+               const RandomSeparations &separations, const std::string &directory,
                const MPI_Comm comm, std::optional<PoundingHazard> &hazard, Outcome &outcome)
     {
       const unsigned int    rank  = dealii::Utilities::MPI::this_mpi_process(comm);
       const MonteCarloTable table = run_realizations_without_contact(
         analysis, time_history_parameters(input), pairs, input.monte_carlo.realizations, directory,
-        comm, outcome.results);
+        comm, outcome.results,
+        [&](RealizationRunner &runner) {
+          attach_random_parameters(runner, structure, input, input.modal.eigensolver);
+        },
+        separations);
       if (hazard && table.interrupted) // the levels not begun: the same command runs them
         hazard->interrupted = true;
       else if (hazard)
@@ -753,6 +814,17 @@ namespace poundfe::commands
       hazard = prepare_pounding_hazard(
         input.separation.hazard, input,
         RealizationRunner(analysis, time_history_parameters(input)).reference_pga("the PGA levels of a site hazard"));
+    RandomParameterParameters structure; // Random parameters: the structure's
+    RandomSeparations         separations; // and the pairs' separations
+    if (route.random)
+      {
+        split_random_parameters(input, pairs, structure, separations);
+        if (structure.has_variables()) // their paths and distributions, checked
+          {
+            RealizationRunner check(analysis, time_history_parameters(input));
+            attach_random_parameters(check, structure, input, input.modal.eigensolver);
+          }
+      }
     std::optional<SpectrumPeaks> spectrum; // it may find bad input
     if (route.by_spectrum && rank == 0)
       spectrum = spectrum_peaks(analysis, pairs, input.spectrum, input.separation,
@@ -773,7 +845,8 @@ namespace poundfe::commands
       }
     else if (route.random)
       {
-        run_random(input, analysis, pairs, directory, comm, hazard, outcome);
+        run_random(input, analysis, pairs, structure, separations, directory, comm, hazard,
+                   outcome);
         if (rank != 0)
           return outcome.exit_status;
       }

@@ -6,6 +6,7 @@
 // test_model_parameters.cc checks exactly that).
 #include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/dynamics/modal_damping_assembly.h>
+#include <poundfe/model/floor_mass.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -23,7 +24,7 @@ namespace poundfe
     const std::string known_paths =
       "Building b/Storey stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
       "drifts[i], Building b/Hinges/Yield moment, Building b/Damping/Damping ratio, "
-      "Model/Separations[i], Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
+      "Building b/Floor masses[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
       "Friction/Kinetic coefficient";
 
     /// Indices in model.links of the storeys of building b, bottom to top.
@@ -59,6 +60,42 @@ namespace poundfe
       return p.entry < 0 ? all : std::vector<unsigned int>{all.at(p.entry)};
     }
 
+    /// Floors of building b that `p` names (all, or one).
+    std::vector<const Floor *>
+    named_floors(const ModelParameter &p, const Model &model)
+    {
+      const std::vector<Floor> &floors = model.buildings[p.building].floors;
+      if (p.entry >= 0)
+        return {&floors.at(p.entry)};
+      std::vector<const Floor *> result;
+      for (const Floor &f : floors)
+        result.push_back(&f);
+      return result;
+    }
+
+    /// Shares m / n_joints of a floor mass at each floor's joints, as the
+    /// model builder lumps it (every joint has its NodalMass:
+    /// model_parameter() checks it), and sets again the effective mass of
+    /// each gap whose m_e is of the floors' masses (one equal to
+    /// floor_effective_mass to the last bit: Contact/Effective mass not
+    /// given, or given equal to it), as the builder does.
+    void
+    write_floor_masses(const ModelParameter &p, const double value, Model &model)
+    {
+      std::vector<bool> of_floors;
+      for (const Gap &gap : model.gaps)
+        of_floors.push_back(!gap.in_plan && gap.effective_mass == floor_effective_mass(model, gap));
+      for (const Floor *floor : named_floors(p, model))
+        for (NodalMass &m : model.masses)
+          if (std::find(floor->nodes.begin(), floor->nodes.end(), m.node) != floor->nodes.end())
+            m.mass = value / floor->nodes.size();
+      for (unsigned int g = 0; g < model.gaps.size(); ++g)
+        if (of_floors[g])
+          model.gaps[g].effective_mass = floor_effective_mass(model, model.gaps[g]);
+      if (!model.gaps.empty()) // as the builder: the law's default
+        model.contact.effective_mass = model.gaps.front().effective_mass;
+    }
+
     void
     require_in_range(const ModelParameter &p, const double value)
     {
@@ -91,6 +128,10 @@ namespace poundfe
             require_in_range(p, value);
             for (const unsigned int l : named_storeys(p, model))
               model.links[l].hysteresis.yield_deformation = value;
+            return;
+          case Kind::floor_mass:
+            require_in_range(p, value);
+            write_floor_masses(p, value, model);
             return;
           case Kind::hinge_yield_moment:
             require_in_range(p, value);
@@ -136,6 +177,31 @@ namespace poundfe
       return b - 1;
     }
 
+    /// Whether the floors `p` names can take a sampled mass: a 2D model (a
+    /// 3D floor has a polar moment too), no friction surfaces (their stick
+    /// damping is fitted to the mass once), a mass at every joint.
+    void
+    check_floor_masses(const ModelParameter &p, const Model &model)
+    {
+      const Building &building = model.buildings[p.building];
+      if (p.entry >= int(building.floors.size()))
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has floors 1.." + std::to_string(building.floors.size()));
+      if (model.dimension != 2)
+        throw std::invalid_argument("'" + p.path + "': random floor masses are for 2D models "
+                                    "(a 3D floor has a polar moment of inertia too)");
+      if (!model.friction_surfaces.empty())
+        throw std::invalid_argument("'" + p.path + "': random floor masses are not available "
+                                    "with friction surfaces (their stick damping is fitted to "
+                                    "the mass once)");
+      for (const Floor *floor : named_floors(p, model))
+        for (const unsigned int node : floor->nodes)
+          if (std::none_of(model.masses.begin(), model.masses.end(),
+                           [node](const NodalMass &m) { return m.node == node; }))
+            throw std::invalid_argument("'" + p.path + "': a floor of building '" +
+                                        building.name + "' has no floor mass in the input");
+    }
+
     /// The parameter of a "Building b/ENTRY" path.
     ModelParameter
     building_parameter(ModelParameter p, const std::string &entry, const bool indexed,
@@ -160,6 +226,12 @@ namespace poundfe
               if (!model.links[l].hysteretic)
                 throw std::invalid_argument("'" + p.path + "': a storey of building '" + name +
                                             "' is elastic (no yield drift in the input)");
+          return p;
+        }
+      if (entry == "Floor masses")
+        {
+          p.kind = Kind::floor_mass;
+          check_floor_masses(p, model);
           return p;
         }
       const bool scalar = entry == "Hinges/Yield moment" || entry == "Damping/Damping ratio";
@@ -191,7 +263,7 @@ namespace poundfe
   ModelParameter::enters_linear_part() const
   {
     return kind == Kind::storey_stiffness || kind == Kind::storey_damping ||
-           kind == Kind::damping_ratio;
+           kind == Kind::damping_ratio || kind == Kind::floor_mass;
   }
 
   bool
@@ -271,6 +343,8 @@ namespace poundfe
           return model.links[named_storeys(p, model).front()].damping;
         case Kind::storey_yield_drift:
           return model.links[named_storeys(p, model).front()].hysteresis.yield_deformation;
+        case Kind::floor_mass:
+          return floor_mass(model, *named_floors(p, model).front());
         case Kind::hinge_yield_moment:
           for (const Hinge &h : model.hinges)
             if (h.building == p.building)
@@ -306,21 +380,22 @@ namespace poundfe
   ModelRealization::apply(const std::vector<double> &values)
   {
     AssertDimension(values.size(), targets.size());
-    bool stiffness_changed = false;
+    bool matrices_changed = false; // M or K: the modes change
     for (unsigned int i = 0; i < targets.size(); ++i)
       {
         write(targets[i], values[i], working.model);
-        stiffness_changed = stiffness_changed || targets[i].kind == Kind::storey_stiffness;
+        matrices_changed = matrices_changed || targets[i].kind == Kind::storey_stiffness ||
+                           targets[i].kind == Kind::floor_mass;
       }
     if (linear)
-      assemble_linear_part(stiffness_changed);
+      assemble_linear_part(matrices_changed);
   }
 
   void
-  ModelRealization::assemble_linear_part(const bool stiffness_changed)
+  ModelRealization::assemble_linear_part(const bool matrices_changed)
   {
     const Model &model = working.model;
-    if (stiffness_changed)
+    if (matrices_changed)
       {
         // M and K as prepare_analysis assembles them (with P-Delta, K_G of
         // the unchanged gravity loads on the new K_E)
@@ -337,7 +412,7 @@ namespace poundfe
         if (d.kind != RayleighDamping::Kind::modes && !d.is_modal())
           continue;
         Modes &modes = working.building_modes[b];
-        if (stiffness_changed)
+        if (matrices_changed)
           {
             const auto range = model.equation_range(b);
             modes = compute_modes(block(system.mass, range), block(system.stiffness, range),

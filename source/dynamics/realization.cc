@@ -46,6 +46,38 @@ namespace poundfe
     first_plan_column = names.size();
     for (const std::string &n : plan_scalar_names(analysis.model))
       names.push_back(n);
+    first_parameter_column = first_residual_column = names.size();
+  }
+
+  std::vector<std::string>
+  RealizationRunner::optional_response_names() const
+  {
+    std::vector<std::string> result =
+      FloorResponse(analysis.model).column_names("storey", "residual_drift_ratio");
+    for (unsigned int g = 0; g < analysis.model.gaps.size(); ++g)
+      result.push_back("gap" + std::to_string(g + 1) + "_peak_contact_force");
+    return result;
+  }
+
+  void
+  RealizationRunner::add_optional_responses(const std::vector<std::string> &wanted)
+  {
+    Assert(!structure && first_parameter_column == names.size(),
+           dealii::ExcMessage("optional responses come before the random parameters"));
+    const std::vector<std::string> optional = optional_response_names();
+    const unsigned int             n_storeys = optional.size() - analysis.model.gaps.size();
+    for (unsigned int i = 0; i < optional.size(); ++i)
+      if (std::find(wanted.begin(), wanted.end(), optional[i]) != wanted.end() &&
+          std::find(names.begin(), names.end(), optional[i]) == names.end())
+        (i < n_storeys ? residual_storeys : peak_force_gaps).push_back(i < n_storeys ? i : i - n_storeys);
+    // the columns: residual drifts, then peak forces, each in the model's order
+    std::sort(residual_storeys.begin(), residual_storeys.end());
+    std::sort(peak_force_gaps.begin(), peak_force_gaps.end());
+    names.resize(first_residual_column);
+    for (const unsigned int i : residual_storeys)
+      names.push_back(optional[i]);
+    for (const unsigned int g : peak_force_gaps)
+      names.push_back(optional[n_storeys + g]);
     first_parameter_column = names.size();
   }
 
@@ -80,6 +112,12 @@ namespace poundfe
     const Analysis &working = structure->analysis();
     if (structure->changes_linear_part())
       { // new M, K, C: a new engine (the factorisations change)
+        const auto &targets = structure->parameters();
+        if (std::any_of(targets.begin(), targets.end(), [](const ModelParameter &p) {
+              return p.kind == ModelParameter::Kind::floor_mass;
+            })) // -M r a_g of the new M (a 2D model: no horizontal pair)
+          excitation =
+            Excitation(working.system, excitation.ground_motion(), excitation.nodal_forces());
         peaks.reset();
         history.reset();
         history = std::make_unique<TimeHistory>(working, parameters);
@@ -186,9 +224,26 @@ namespace poundfe
     std::vector<double> plan;
     append_plan_scalars(model(), *peaks, plan);
     std::copy(plan.begin(), plan.end(), responses.begin() + first_plan_column);
+    fill_optional_responses(responses);
     std::copy(parameter_values.begin(), parameter_values.end(),
               responses.begin() + first_parameter_column);
     return status.completed();
+  }
+
+  void
+  RealizationRunner::fill_optional_responses(std::vector<double> &responses) const
+  {
+    unsigned int c = first_residual_column;
+    for (const unsigned int i : residual_storeys) // the last observed step: the end
+      responses[c++] = peaks->floors().drift_ratio()[i];
+    for (const unsigned int g : peak_force_gaps)
+      {
+        double peak = 0;
+        for (const Impact &impact : history->state().impact_log().impacts())
+          if (impact.element == peaks->n_hysteretic() + g)
+            peak = std::max(peak, impact.peak_force);
+        responses[c++] = peak;
+      }
   }
 
   RunStatus

@@ -1,6 +1,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/mesh/line_mesh.h>
+#include <poundfe/model/floor_mass.h>
 #include <poundfe/model/frame_building_3d.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/model/plan_builder.h>
@@ -444,16 +445,6 @@ namespace poundfe
         lump_floor_mass(model, building.floors[i], value_for(p.floor_masses, i));
     }
 
-    double
-    floor_mass(const Model &model, const Floor &floor)
-    {
-      double mass = 0;
-      for (const NodalMass &m : model.masses)
-        if (std::find(floor.nodes.begin(), floor.nodes.end(), m.node) != floor.nodes.end())
-          mass += m.mass;
-      return mass;
-    }
-
     /// The joint of a floor that faces the neighbour: rightmost or leftmost.
     unsigned int
     facing_node(const Model &model, const Floor &floor, const bool right_side)
@@ -545,22 +536,14 @@ namespace poundfe
                                  node_on_facing_column(model, right, false, level, tolerance));
           if (nl < 0 || nr < 0)
             continue;
-          // colliding masses: the floors at this level, or the nearest floor
-          auto mass_near = [&](const Building &b) {
-            const Floor *best = &b.floors.front();
-            for (const Floor &f : b.floors)
-              if (std::abs(f.level - level) < std::abs(best->level - level))
-                best = &f;
-            return floor_mass(model, *best);
-          };
-          const double m1 = mass_near(model.buildings[left]), m2 = mass_near(model.buildings[right]);
           Gap gap;
-          gap.nodes          = {{nl, nr}};
-          gap.buildings      = {{left, right}};
-          gap.level          = level;
-          gap.initial_gap    = separation;
+          gap.nodes       = {{nl, nr}};
+          gap.buildings   = {{left, right}};
+          gap.level       = level;
+          gap.initial_gap = separation;
+          // colliding masses: the floors at this level, or the nearest floor
           gap.effective_mass = contact.effective_mass > 0 ? contact.effective_mass :
-                                                             m1 * m2 / (m1 + m2);
+                                                             floor_effective_mass(model, gap);
           std::ostringstream label;
           label << model.buildings[left].name << "-" << model.buildings[right].name << "@"
                 << level << (fl && fr ? "" : "c");
@@ -598,7 +581,7 @@ namespace poundfe
       g.level          = floor.level;
       g.initial_gap    = gap;
       g.effective_mass = contact.effective_mass > 0 ? contact.effective_mass :
-                                                             floor_mass(model, floor);
+                                                       floor_effective_mass(model, g);
       g.label          = building.name + "@" + std::to_string(f) + "-barrier-" + side;
       model.gaps.push_back(g);
     }

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <regex>
 #include <stdexcept>
 
 namespace poundfe
@@ -54,7 +55,8 @@ namespace poundfe
                       "Random model parameters of montecarlo, subset and fragility: 'NAME: PATH "
                       "~ DISTRIBUTION KEY VALUE ...' separated by ';'. PATH: Building b/Storey "
                       "stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
-                      "drifts[i] (without [i]: every storey), Building b/Hinges/Yield moment, "
+                      "drifts[i] (without [i]: every storey), Building b/Floor masses[i] (without [i]: "
+                      "every floor), Building b/Hinges/Yield moment, "
                       "Building b/Damping/Damping ratio, Model/Separations[i], Contact/Stiffness, "
                       "Contact/Damping, Friction/Static coefficient, Friction/Kinetic "
                       "coefficient. DISTRIBUTION and keys as Reliability/Random variables. Unit: "
@@ -66,12 +68,83 @@ namespace poundfe
                       "'NAME: EXPRESSION' separated by ';', failure when <= 0: muParser "
                       "expressions over the response columns of realizations.csv (e.g. "
                       "max_drift_ratio, A_storey2_peak_drift_ratio, peak_contact_force, "
-                      "n_impacts) and the Variables' names. Unit: that of the expression.");
+                      "n_impacts; also, computed when named, A_storey2_residual_drift_ratio, the "
+                      "signed drift ratio at the end of the record, and gap1_peak_contact_force, "
+                      "of gap 1 alone) and the Variables' names. Unit: that of the expression.");
     add_choice(prm, "System", system,
                "How the Limit states combine: series (failure when any fails) or parallel "
                "(when all fail). Unit: -.",
                system_names());
+    declare_form(prm);
     prm.leave_subsection();
+  }
+
+  void
+  RandomParameterParameters::declare_form(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    prm.enter_subsection("FORM");
+    prm.add_parameter("Excitation variables", form_excitation_text,
+                      "dynamic-form: how many of the loading's standard normals FORM varies, "
+                      "the first ones ('all': every one); the others keep those of Realization. "
+                      "Unit: count.");
+    prm.add_parameter("Realization", form_realization,
+                      "dynamic-form: the realization whose loading normals the held ones are "
+                      "(as in realizations.csv). Unit: count.");
+    prm.add_parameter("Scale factor", form_scale_text,
+                      "dynamic-form: the distribution of a random factor on the loading's "
+                      "amplitude, 'DISTRIBUTION KEY VALUE ...' as in Variables (empty: 1). "
+                      "Unit: dimensionless.");
+    prm.add_parameter("Maximum iterations", form.max_iterations, "HL-RF steps. Unit: count.",
+                      Integer(1, 1000));
+    prm.add_parameter("Tolerance", form.tolerance_g,
+                      "e1 = e2: |G(u)|/|G(0)| and the distance of u from the line of alpha (in "
+                      "standard deviations) at convergence. Unit: dimensionless.",
+                      Double(1e-12, 1));
+    prm.add_parameter("Gradient step", form.gradient_step,
+                      "Step of the finite differences in standard deviations (each a full time "
+                      "history). Unit: dimensionless.",
+                      Double(1e-8, 1));
+    prm.add_parameter("Central differences", form.central_difference,
+                      "Central differences (2n time histories per gradient) instead of forward "
+                      "(n). Unit: -.");
+    prm.leave_subsection();
+  }
+
+  void
+  RandomParameterParameters::check_form(const InputFile &input)
+  {
+    form.tolerance_u = form.tolerance_g;
+    form_scale.clear();
+    const std::string entry = section + "FORM/Excitation variables";
+    const std::string text  = trimmed(form_excitation_text);
+    form_all_excitation     = text == "all";
+    if (!form_all_excitation)
+      {
+        std::size_t end = 0;
+        long        n   = -1;
+        try
+          {
+            n = std::stol(text, &end);
+          }
+        catch (const std::exception &)
+          {}
+        if (n < 0 || end != text.size())
+          input.fail(entry, "'" + text + "' is neither 'all' nor a whole number >= 0");
+        form_n_excitation = n;
+      }
+    if (!trimmed(form_scale_text).empty())
+      {
+        std::vector<std::string> words = input_words(form_scale_text);
+        words.insert(words.begin(), "scale");
+        form_scale.push_back(parse_distribution(input, section + "FORM/Scale factor", words));
+        if (samples_out_of_range(form_scale.back(), false))
+          input.fail(section + "FORM/Scale factor",
+                     "a " + distribution_name(form_scale.back().type()) +
+                       " distribution can sample factors <= 0 (use a lognormal or Weibull, or "
+                       "a uniform or truncated normal with lower > 0)");
+      }
   }
 
   void
@@ -110,12 +183,21 @@ namespace poundfe
         limit_state_names.push_back(name);
         expressions.push_back(trimmed(item.substr(colon + 1)));
       }
+    check_form(input);
   }
 
   void
   attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
                            const InputFile &input, const Eigensolver eigensolver)
   {
+    // the responses the limit states name that a realization computes only when asked
+    std::vector<std::string> named;
+    static const std::regex  identifier("[A-Za-z_][A-Za-z0-9_]*");
+    for (const std::string &expression : p.expressions)
+      for (std::sregex_iterator i(expression.begin(), expression.end(), identifier), end; i != end;
+           ++i)
+        named.push_back(i->str());
+    runner.add_optional_responses(named);
     if (!p.has_variables())
       return;
     const std::string           entry = section + "Variables";

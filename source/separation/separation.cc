@@ -5,6 +5,7 @@
 #include <poundfe/hazard/pounding_hazard.h>
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/dynamics/run.h>
+#include <poundfe/excitation/stochastic.h>
 #include <poundfe/separation/separation.h>
 #include <poundfe/separation/separation_spectrum.h>
 #include <poundfe/reliability/statistics.h>
@@ -385,20 +386,33 @@ namespace poundfe
   run_realizations_without_contact(const Analysis &analysis, const TimeHistoryParameters &parameters,
                                    const std::vector<AdjacentPair> &pairs,
                                    const unsigned long n, const std::string &directory,
-                                   const MPI_Comm comm, std::vector<PairResult> &results)
+                                   const MPI_Comm comm, std::vector<PairResult> &results,
+                                   const std::function<void(RealizationRunner &)> &attach_parameters,
+                                   const RandomSeparations &separations)
   {
     RealizationRunner  runner(analysis, parameters);
+    if (attach_parameters)
+      attach_parameters(runner);
     SeparationObserver observer(analysis.model, pairs);
     RealizationJob     job;
     job.names = realization_columns(pairs);
-    job.seed  = runner.stochastic_load().seed();
-    job.run   = [&](const std::uint64_t r, std::vector<double> &row) {
+    for (const unsigned int p : separations.pairs)
+      job.names.push_back(pairs[p].name + "_random_separation_m");
+    job.seed = runner.stochastic_load().seed();
+    std::vector<double> xi;
+    job.run  = [&](const std::uint64_t r, std::vector<double> &row) {
       const bool completed = runner.run(r, Observers{&observer});
       row.clear();
       for (const auto &pair : observer.responses())
         for (const SeparationObserver::LevelResponse &level : pair)
           for (const double x : {level.peak_left, level.peak_right, level.max_approach})
             row.push_back(x);
+      // the separations' normals follow the runner's in the realization's stream
+      xi.resize(runner.n_variables() + separations.pairs.size());
+      standard_normals(job.seed, r, xi);
+      for (std::size_t k = 0; k < separations.pairs.size(); ++k)
+        row.push_back(separations.distributions[k].quantile(
+          standard_normal_cdf(xi[runner.n_variables() + k])));
       return completed;
     };
     Progress            progress(std::cerr, "realizations", n);
@@ -421,7 +435,19 @@ namespace poundfe
               largest[i] = std::max(largest[i], approach[i]);
           }
       }
+    for (std::size_t k = 0; k < separations.pairs.size(); ++k, ++column)
+      results[separations.pairs[k]].random_separation = table.completed_values(column);
     return table;
+  }
+
+  ProbabilityEstimate
+  pounding_at_random_separation(const PairResult &result)
+  {
+    AssertDimension(result.random_separation.size(), result.largest_approach.size());
+    unsigned long n_pounding = 0;
+    for (std::size_t r = 0; r < result.largest_approach.size(); ++r)
+      n_pounding += result.largest_approach[r] > result.random_separation[r];
+    return estimate_probability(n_pounding, result.largest_approach.size());
   }
 
   ApproachJob

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 
 using namespace poundfe;
@@ -46,23 +47,33 @@ namespace
             {"Contact/Stiffness", exact(x[4])}};
   }
 
+  using OverridesOf = std::function<std::vector<ParameterOverride>(const std::vector<double> &)>;
+
   /// Runs 6 realizations with the random parameters written in place and
   /// compares every response with the file built with the sampled values
   /// (and `base`, overrides that both routes share; zeta that of building
-  /// `damped`).
+  /// `damped`). `overrides` (when given) writes the sampled values of a
+  /// file whose variables are not the default five; `check_row` (when
+  /// given) checks a row of the rebuilt model by a route of its own.
   void
-  check_in_place_against_rebuilt(const std::vector<ParameterOverride> &base,
-                                 const unsigned int                    damped = 1)
+  check_in_place_against_rebuilt(
+    const std::vector<ParameterOverride> &base, const unsigned int damped = 1,
+    OverridesOf overrides = {},
+    const std::function<void(RealizationRunner &, std::uint64_t, const std::vector<double> &)>
+      &check_row = {})
   {
+    if (!overrides)
+      overrides = [damped](const std::vector<double> &x) { return overrides_of(x, damped); };
     const InputParameters input    = read_parameters(file, base);
     const Analysis        analysis = prepare_analysis(input);
     RealizationRunner     runner(analysis, time_history_parameters(input));
     const unsigned int    n_load = runner.n_load_variables();
     attach_random_parameters(runner, input.random_parameters, input, input.modal.eigensolver);
-    BOOST_TEST(runner.n_parameters() == 5u);
-    BOOST_TEST(runner.n_variables() == n_load + 5);
-    const unsigned int first_x = runner.response_names().size() - 5;
-    BOOST_TEST(runner.response_names()[first_x] == "k1");
+    const unsigned int n_x = input.random_parameters.names.size();
+    BOOST_TEST(runner.n_parameters() == n_x);
+    BOOST_TEST(runner.n_variables() == n_load + n_x);
+    const unsigned int first_x = runner.response_names().size() - n_x;
+    BOOST_TEST(runner.response_names()[first_x] == input.random_parameters.names[0]);
 
     unsigned int n_impacting = 0;
     for (std::uint64_t r = 0; r < 6; ++r)
@@ -73,13 +84,16 @@ namespace
 
         // the second route: the file with the sampled values, the same load normals
         std::vector<ParameterOverride> with_values = base;
-        for (const ParameterOverride &o : overrides_of(x, damped))
+        for (const ParameterOverride &o : overrides(x))
           with_values.push_back(o);
+        with_values.push_back({"Random parameters/Variables", ""});
+        with_values.push_back({"Random parameters/Correlation", ""});
         const InputParameters fixed = read_parameters(file, with_values);
         const Analysis        fixed_analysis = prepare_analysis(fixed);
         RealizationRunner     reference(fixed_analysis, time_history_parameters(fixed));
+        reference.add_optional_responses(runner.response_names());
         BOOST_TEST(reference.n_variables() == n_load);
-        std::vector<double> xi(n_load + 5);
+        std::vector<double> xi(n_load + n_x);
         standard_normals(reference.stochastic_load().seed(), r, xi);
         xi.resize(n_load); // the loading's normals come first
         std::vector<double> expected;
@@ -88,6 +102,8 @@ namespace
         for (unsigned int c = 0; c < first_x; ++c)
           BOOST_TEST(responses[c] == expected[c], boost::test_tools::tolerance(1e-9));
         n_impacting += responses[runner.column("n_impacts")] > 0;
+        if (check_row)
+          check_row(reference, r, responses);
       }
     // the test exercises the contact law: some realizations pound, some not
     BOOST_TEST_MESSAGE(n_impacting << " of 6 realizations pound");
@@ -174,4 +190,98 @@ BOOST_AUTO_TEST_CASE(paths_the_model_does_not_have_are_refused)
   BOOST_TEST(model_parameter_value(p, model) == 0.003);
   BOOST_TEST(!p.enters_linear_part());
   BOOST_TEST(model_parameter("Building 1/Storey stiffnesses", model).enters_linear_part());
+}
+
+namespace
+{
+  /// The drift ratios of a shear building's storeys at the last step, from
+  /// the displacements of its floor nodes: (u_i - u_{i-1})/h_i, u_0 = 0.
+  class LastDrift : public StepObserver
+  {
+  public:
+    LastDrift(const Model &model, const unsigned int building)
+      : model(model)
+      , building(building)
+    {}
+    void
+    observe_step(const ResponseView &state) override
+    {
+      drift.clear();
+      double below = 0;
+      for (const Floor &floor : model.buildings[building].floors)
+        {
+          const double u = state.displacement()[model.equation(
+            Model::dof(floor.nodes.front(), Component::ux))];
+          drift.push_back((u - below) / floor.storey_height);
+          below = u;
+        }
+    }
+    const Model        &model;
+    const unsigned int  building;
+    std::vector<double> drift;
+  };
+} // namespace
+
+// Random floor masses, one floor of building A and every floor of B, with a
+// random storey stiffness and gap, and limit states that name the optional
+// responses (residual drift ratios, the peak contact force of each gap):
+// (1) every response equals that of the file built with the sampled masses
+// (M, the modes and Rayleigh C, -M r a_g and the gaps' effective masses, on
+// which the Kelvin contact's dashpot depends, all follow the mass); (2) the residual drift ratio equals |drift| at the last
+// step (signed) computed from the floor displacements by an observer of the rebuilt
+// model; (3) the peak contact force is the largest of the gaps' peaks.
+BOOST_AUTO_TEST_CASE(random_floor_masses_and_optional_responses)
+{
+  const std::string variables =
+    "mA2: Building 1/Floor masses[2] ~ lognormal mean 1000 cov 0.4; "
+    "mB: Building 2/Floor masses ~ uniform lower 500 upper 1500; "
+    "k1: Building 1/Storey stiffnesses[1] ~ lognormal mean 5e6 cov 0.2; "
+    "gap: Model/Separations[1] ~ lognormal mean 0.01 cov 0.5";
+  const std::string limit_states =
+    "r: 0.01 - abs(A_storey1_residual_drift_ratio) - abs(B_storey2_residual_drift_ratio); "
+    "f: 1e6 - gap1_peak_contact_force - gap2_peak_contact_force";
+  const OverridesOf overrides = [](const std::vector<double> &x) {
+    return std::vector<ParameterOverride>{
+      {"Building 1/Floor masses", "1000, " + exact(x[0]) + ", 1000"},
+      {"Building 2/Floor masses", exact(x[1])},
+      {"Building 1/Storey stiffnesses", exact(x[2]) + ", 4e6, 3e6"},
+      {"Model/Separations", exact(x[3])}};
+  };
+  unsigned int n_residual = 0;
+  const auto   check_row  = [&](RealizationRunner &reference, const std::uint64_t r,
+                             const std::vector<double> &row) {
+    LastDrift a(reference.model(), 0), b(reference.model(), 1);
+    BOOST_TEST(reference.run(r, Observers{&a, &b}));
+    BOOST_TEST(row[reference.column("A_storey1_residual_drift_ratio")] == a.drift[0],
+               boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(row[reference.column("B_storey2_residual_drift_ratio")] == b.drift[1],
+               boost::test_tools::tolerance(1e-9));
+    n_residual += std::abs(row[reference.column("B_storey2_residual_drift_ratio")]) > 1e-5;
+    BOOST_TEST(row[reference.column("peak_contact_force")] ==
+               std::max(row[reference.column("gap1_peak_contact_force")],
+                        row[reference.column("gap2_peak_contact_force")]));
+  };
+  // a Kelvin contact: its dashpot 2 xi sqrt(k m_e) follows the floors' masses
+  check_in_place_against_rebuilt({{"Contact/Law", "kelvin-voigt"},
+                                  {"Contact/Damping from", "given"},
+                                  {"Contact/Damping", "0.2"},
+                                  {"Random parameters/Variables", variables},
+                                  {"Random parameters/Correlation", ""},
+                                  {"Random parameters/Limit states", limit_states}},
+                                 1, overrides, check_row);
+  // building B yields (u_y = 0.003): some realizations keep a residual drift
+  BOOST_TEST_MESSAGE(n_residual << " of 6 realizations keep a residual drift > 1e-5 in B");
+  BOOST_TEST(n_residual > 0u);
+}
+
+BOOST_AUTO_TEST_CASE(floor_mass_paths)
+{
+  const InputParameters input    = read_parameters(file);
+  const Analysis        analysis = prepare_analysis(input);
+  const Model          &model    = analysis.model;
+  const ModelParameter  p        = model_parameter("Building 1/Floor masses[3]", model);
+  BOOST_TEST(model_parameter_value(p, model) == 1000);
+  BOOST_TEST(p.enters_linear_part());
+  BOOST_TEST(!p.can_be_zero());
+  BOOST_CHECK_THROW(model_parameter("Building 2/Floor masses[3]", model), std::invalid_argument);
 }

@@ -6,6 +6,9 @@
 //     Building b/Storey stiffnesses[i]   k of storey i          (K; C through Rayleigh)
 //     Building b/Storey damping[i]       storey dashpot c       (C)
 //     Building b/Storey yield drifts[i]  Bouc-Wen u_y of storey i (nonlinear element)
+//     Building b/Floor masses[i]         mass of floor i, in equal shares at its joints
+//                                        (M; K_G under P-Delta; modes, Rayleigh and modal
+//                                        C; the gaps' effective masses m1 m2/(m1 + m2))
 //     Building b/Hinges/Yield moment     M_y of every hinge of b: u_y = M_y / k (nonlinear)
 //     Building b/Damping/Damping ratio   zeta of b's Rayleigh damping (C)
 //     Model/Separations[i]               gap between buildings i and i+1 (nonlinear)
@@ -34,6 +37,7 @@ namespace poundfe
       storey_stiffness,
       storey_damping,
       storey_yield_drift,
+      floor_mass,
       hinge_yield_moment,
       damping_ratio,
       separation,
@@ -44,8 +48,8 @@ namespace poundfe
     };
     Kind         kind     = Kind::storey_stiffness;
     std::string  path;          // as written
-    unsigned int building = 0;  // 0-based (storey, hinge, damping: the building; separation: the left one)
-    int          entry    = -1; // 0-based storey; -1: all
+    unsigned int building = 0;  // 0-based (storey, floor, hinge, damping: the building; separation: the left one)
+    int          entry    = -1; // 0-based storey or floor; -1: all
 
     /// Whether the value enters M, K or C (else only nonlinear elements).
     bool enters_linear_part() const;
@@ -89,7 +93,7 @@ namespace poundfe
     void apply(const std::vector<double> &values);
 
   private:
-    void assemble_linear_part(bool stiffness_changed);
+    void assemble_linear_part(bool matrices_changed);
 
     Analysis                    working;
     std::vector<ModelParameter> targets;

@@ -48,6 +48,16 @@ namespace poundfe
     void set_random_parameters(std::vector<ModelParameter> random_parameters,
                                const std::vector<std::string> &names,
                                ParameterTransform to_physical, Eigensolver eigensolver);
+    /// Responses a realization computes only when asked (a limit state
+    /// names them): per storey the residual drift ratio IDR(t_end) at the
+    /// end of the record, signed (abs() for its size) ("<building>_storey<i>_residual_drift_ratio"), per
+    /// gap j (1-based, Model's order) the largest peak force of its impacts
+    /// ("gap<j>_peak_contact_force", N).
+    std::vector<std::string> optional_response_names() const;
+    /// Adds the columns of those of `wanted` that are optional responses
+    /// (others are ignored), after the standard ones. Call before
+    /// set_random_parameters and before any run.
+    void add_optional_responses(const std::vector<std::string> &wanted);
     const StochasticLoad &stochastic_load() const { return load; }
     bool has_gaps() const { return !analysis.model.gaps.empty(); }
     /// The model as built (before any random parameter is applied).
@@ -91,6 +101,8 @@ namespace poundfe
     /// the working model, remakes what they enter and records their values
     /// in `parameter_values`.
     void apply_parameters(const std::vector<double> &xi);
+    /// The optional responses' columns of a run's row.
+    void fill_optional_responses(std::vector<double> &responses) const;
     /// The time history of the normals xi (parameters applied first).
     RunStatus run_with(const std::vector<double> &xi, const Observers &observers,
                        double amplitude_factor);
@@ -110,6 +122,10 @@ namespace poundfe
     std::vector<unsigned int> roof_floor; // FloorResponse index of each building's roof
     unsigned int first_floor_column = 0, first_roof_column = 0, max_drift_column = 0;
     unsigned int first_plan_column = 0, first_parameter_column = 0;
+    /// optional responses: FloorResponse storey indices, then gap indices,
+    /// of the columns from first_residual_column on
+    std::vector<unsigned int> residual_storeys, peak_force_gaps;
+    unsigned int              first_residual_column = 0;
   };
 } // namespace poundfe
 

@@ -10,7 +10,9 @@
 //   set Limit states = NAME: EXPRESSION; ...   failure: g <= 0
 //       over the response columns of realizations.csv (e.g.
 //       A_storey2_peak_drift_ratio, max_drift_ratio, peak_contact_force,
-//       n_impacts) and the variables' NAMEs (muParser, limit_state.h)
+//       n_impacts; A_storey2_residual_drift_ratio and gap1_peak_contact_force
+//       are computed, and written, only when named) and the variables' NAMEs
+//       (muParser, limit_state.h)
 //   set System       = series | parallel
 // A realization's standard normals are the loading's, then one per variable
 // (u), mapped by the Nataf transformation to the values x = T(u) that the
@@ -21,6 +23,7 @@
 
 #include <poundfe/base/input_file.h>
 #include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/reliability/form.h>
 #include <poundfe/reliability/limit_state.h>
 #include <poundfe/reliability/nataf.h>
 #include <poundfe/reliability/reliability_problem.h>
@@ -44,8 +47,17 @@ namespace poundfe
     std::string variables_text, correlation_text, limit_states_text;
     SystemType  system = SystemType::series;
 
+    // dynamic FORM (`poundfe form`): the subsection FORM
+    std::string   form_excitation_text = "0", form_scale_text;
+    unsigned long form_realization     = 0;
+    FormSettings  form{20, 1e-3, 1e-3, 1e-2, false};
+
     // parsed by check()
     std::vector<std::string>  names, paths;
+    /// "all" in Excitation variables: every normal of the loading.
+    bool                      form_all_excitation = false;
+    unsigned int              form_n_excitation   = 0;
+    std::vector<Distribution> form_scale; // the scale factor's, or none
     std::vector<Distribution> distributions;
     DenseMatrix               correlation; // empty: independent
     std::vector<std::string>  limit_state_names, expressions;
@@ -58,11 +70,15 @@ namespace poundfe
     /// are checked against the model by attach_random_parameters and
     /// ResponseLimitStates.
     void check(const InputFile &input);
+    void declare_form(dealii::ParameterHandler &prm);
+    void check_form(const InputFile &input);
     bool has_variables() const { return !names.empty(); }
     bool has_limit_states() const { return !expressions.empty(); }
   };
 
-  /// Makes the section's variables random in `runner`: InputError at
+  /// Adds to `runner` the optional responses the limit states name
+  /// (RealizationRunner::optional_response_names) and makes the section's
+  /// variables random in it: InputError at
   /// Random parameters/Variables for a path the model does not have or
   /// cannot vary, or a distribution that can sample values the parameter
   /// cannot take (e.g. a normal stiffness: use a lognormal or a truncated

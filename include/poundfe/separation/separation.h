@@ -48,12 +48,15 @@
 #include <poundfe/hazard/pounding_hazard.h>
 #include <poundfe/output/floor_response.h>
 #include <poundfe/output/observer.h>
+#include <poundfe/reliability/distribution.h>
 #include <poundfe/reliability/montecarlo.h>
+#include <poundfe/reliability/statistics.h>
 #include <poundfe/separation/separation_parameters.h>
 
 #include <mpi.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -188,6 +191,20 @@ namespace poundfe
     /// Monte Carlo: per completed realization, the largest approach over
     /// the pair's levels.
     std::vector<double> largest_approach;
+    /// Monte Carlo with a random separation of the pair (RandomSeparations):
+    /// per completed realization, its sampled separation (else empty).
+    std::vector<double> random_separation;
+  };
+
+  /// Random separations of pairs in a Monte Carlo without contact: they do
+  /// not change the free responses, so each realization samples its pair's
+  /// separation s_r, from the normal that follows the runner's in the
+  /// realization's stream (x = F^-1(Phi(u))), and pounds when its largest
+  /// approach exceeds s_r: P(pounding) = #{a_r > s_r} / n.
+  struct RandomSeparations
+  {
+    std::vector<unsigned int> pairs; // index in the pairs of each variable
+    std::vector<Distribution> distributions;
   };
 
   /// The rule values and their names, in the order of separation.csv.
@@ -213,12 +230,21 @@ namespace poundfe
   /// Monte Carlo of realizations 0..n-1 over the random loading on every rank
   /// of `comm` (run_realizations: directory/realizations.csv, resumed): the
   /// means of the peaks and the largest approach of every realization into
-  /// `results` (rank 0). Returns the table (rank 0).
+  /// `results` (rank 0). `attach_parameters` makes model parameters random
+  /// in the runner (reliability/random_parameters.h); `separations` samples
+  /// pairs' separations. Returns the table (rank 0).
   MonteCarloTable run_realizations_without_contact(const Analysis                  &analysis,
                                                    const TimeHistoryParameters &parameters,
                                                    const std::vector<AdjacentPair> &pairs,
                                                    unsigned long n, const std::string &directory,
-                                                   MPI_Comm comm, std::vector<PairResult> &results);
+                                                   MPI_Comm comm, std::vector<PairResult> &results,
+                                                   const std::function<void(RealizationRunner &)>
+                                                     &attach_parameters = {},
+                                                   const RandomSeparations &separations = {});
+
+  /// P(pounding) of a pair with a random separation: #{a_r > s_r} / n over
+  /// its completed realizations (largest approach a_r, sampled separation s_r).
+  ProbabilityEstimate pounding_at_random_separation(const PairResult &result);
 
   /// The pounding hazard's realization (hazard/pounding_hazard.h): `runner`
   /// with `observer` watching `pairs`; the largest approach over each pair's

@@ -1,0 +1,65 @@
+// Dynamic FORM: FORM (reliability/form.h, improved HL-RF) on a limit state
+// over the responses of a time history, g(u) = g(responses(u), x(u)), with
+// the gradient dG/du by finite differences of full time histories (n + 1
+// per gradient forward, 2n central).
+// The variables, in this order, are
+//   - an optional random scale factor s on the loading's amplitude (its
+//     distribution through Nataf, u_s = Phi^-1(F(s)));
+//   - the first n_e standard normals of the random loading (white-noise
+//     samples, spectral-representation phases Phi^-1(phi/2pi), ...), the
+//     others held at those of one realization;
+//   - the standard normals of the Random parameters (the runner maps them
+//     to the parameters' values, dynamics/realization.h).
+// Each evaluation of G is one time history; the design point u*, beta =
+// alpha . u*, Pf = Phi(-beta) and alpha are FORM's. For a response linear in
+// Gaussian loading variables (a linear structure, a response at a fixed time)
+// G is linear in u and FORM is exact.
+// Sources: A. Der Kiureghian, "The geometry of random vibrations and
+// solutions by FORM and SORM", Probabilistic Engineering Mechanics 15 (2000)
+// 81-90; Der Kiureghian, ch. 14 of the Engineering Design Reliability
+// Handbook (CRC 2005).
+#ifndef poundfe_reliability_dynamic_form_h
+#define poundfe_reliability_dynamic_form_h
+
+#include <poundfe/reliability/distribution.h>
+#include <poundfe/reliability/form.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class RealizationRunner;
+  class ResponseLimitStates;
+
+  struct DynamicFormSettings
+  {
+    unsigned int              n_excitation = 0; // <= the runner's loading normals
+    std::uint64_t             realization  = 0; // of the held loading normals
+    std::vector<Distribution> scale;            // the scale factor's, or none
+    FormSettings              form;
+  };
+
+  struct DynamicFormResult
+  {
+    FormResult               form;
+    /// "scale" (with a scale factor), "xi1".."xi<n_e>", the parameters' names
+    std::vector<std::string> variable_names;
+    /// the design point's physical values: s, the loading normals, the
+    /// parameters' values
+    std::vector<double>      design_point;
+    /// the runner's responses at the design point (one more time history)
+    std::vector<double>      design_responses;
+    double                   design_limit_state = 0; // g there (~0 when converged)
+    unsigned long            n_time_histories = 0;  // all of them
+    unsigned long            n_failed_runs    = 0;  // integrations that did not finish
+  };
+
+  /// FORM on the system value of `limit_states` over `runner`'s
+  /// realizations. Returns converged = false when FORM does not converge.
+  DynamicFormResult dynamic_form(RealizationRunner &runner, const ResponseLimitStates &limit_states,
+                                 const DynamicFormSettings &settings);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,113 @@
+// `poundfe dynamic-form FILE`: FORM on the time-history limit state of the
+// Random parameters section (its Limit states as a series or parallel
+// system) in the loading's first normals, an optional scale factor and the
+// random model parameters (reliability/dynamic_form.h). Writes summary.json
+// (beta, Pf, design point, alpha, time histories) and design_point.csv (per
+// variable: x*, u*, alpha). Exit 2, with those files, when FORM does not
+// converge.
+#include <poundfe/commands/command.h>
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
+#include <poundfe/reliability/dynamic_form.h>
+#include <poundfe/reliability/random_parameters.h>
+
+#include <sstream>
+
+namespace poundfe::commands
+{
+  namespace
+  {
+    /// The engine's settings from the section, checked against the runner.
+    DynamicFormSettings
+    form_settings(const InputParameters &input, const RealizationRunner &runner)
+    {
+      const RandomParameterParameters &p = input.random_parameters;
+      if (!p.has_limit_states())
+        input.fail("Random parameters/Limit states",
+                   "dynamic-form needs a limit state over the responses");
+      DynamicFormSettings settings;
+      settings.n_excitation =
+        p.form_all_excitation ? runner.n_load_variables() : p.form_n_excitation;
+      if (settings.n_excitation > runner.n_load_variables())
+        input.fail("Random parameters/FORM/Excitation variables",
+                   std::to_string(p.form_n_excitation) + " is more than the loading's " +
+                     std::to_string(runner.n_load_variables()) + " normals");
+      if (settings.n_excitation + runner.n_parameters() + p.form_scale.size() == 0)
+        input.fail("Random parameters/FORM/Excitation variables",
+                   "FORM has no variable: no Variables, no Scale factor and 0 excitation "
+                   "variables");
+      settings.realization = p.form_realization;
+      settings.scale       = p.form_scale;
+      settings.form        = p.form;
+      return settings;
+    }
+
+    std::string
+    design_point_csv(const DynamicFormResult &r)
+    {
+      std::ostringstream csv;
+      csv.precision(12);
+      csv << "variable,x_star,u_star,alpha\n";
+      for (std::size_t i = 0; i < r.variable_names.size(); ++i)
+        csv << r.variable_names[i] << ',' << r.design_point[i] << ','
+            << r.form.design_point_u[i] << ',' << r.form.alpha[i] << '\n';
+      return csv.str();
+    }
+
+    std::string
+    summary_json(const InputParameters &input, const DynamicFormResult &r)
+    {
+      JsonWriter json;
+      begin_summary(json, "dynamic-form", input, r.form.converged ? "completed" : "failed");
+      if (!r.form.converged)
+        json.value("failure", "FORM did not converge in " +
+                                std::to_string(input.random_parameters.form.max_iterations) +
+                                " iterations (the last iterate is reported)");
+      json.value("converged", r.form.converged)
+        .value("beta", r.form.beta)
+        .value("failure_probability", r.form.probability)
+        .value("iterations", r.form.iterations)
+        .value("gradient_evaluations", r.form.n_gradients)
+        .value("time_histories", r.n_time_histories)
+        .value("failed_time_histories", r.n_failed_runs)
+        .value("limit_state_at_design_point", r.design_limit_state)
+        .value("variables", r.variable_names)
+        .value("design_point_x", r.design_point)
+        .value("design_point_u", r.form.design_point_u)
+        .value("alpha", r.form.alpha)
+        .end_object();
+      return json.str();
+    }
+  } // namespace
+
+  int
+  dynamic_form(const CommandRun &run)
+  {
+    const InputParameters &input    = *run.input;
+    const Analysis         analysis = prepare_analysis(input);
+    RealizationRunner      runner(analysis, time_history_parameters(input));
+    attach_random_parameters(runner, input.random_parameters, input, input.modal.eigensolver);
+    const ResponseLimitStates limit_states(input.random_parameters, runner.response_names(),
+                                           input);
+    const DynamicFormSettings settings = form_settings(input, runner);
+    prepare_output_directory(run.directory);
+    const DynamicFormResult result = poundfe::dynamic_form(runner, limit_states, settings);
+    if (!result.form.design_point_u.empty())
+      write_file_atomically(run.directory + "/design_point.csv", design_point_csv(result));
+    write_file_atomically(run.directory + "/summary.json", summary_json(input, result));
+    run.out << "dynamic FORM: beta = " << result.form.beta
+            << ", Pf = " << result.form.probability << " (" << result.form.iterations
+            << " iterations, " << result.n_time_histories << " time histories)\n"
+            << "results in " << run.directory << "/ (summary.json, design_point.csv)\n";
+    if (!result.form.converged)
+      {
+        run.err << "poundfe: numerical failure: dynamic FORM did not converge\n";
+        return 2;
+      }
+    return 0;
+  }
+} // namespace poundfe::commands

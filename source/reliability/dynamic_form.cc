@@ -1,0 +1,59 @@
+// Dynamic FORM (reliability/dynamic_form.h): the time-history limit state as
+// a ReliabilityProblem in the standard normals of the loading and the
+// parameters, solved by form().
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/excitation/stochastic.h>
+#include <poundfe/reliability/dynamic_form.h>
+#include <poundfe/reliability/random_parameters.h>
+
+#include <deal.II/base/exceptions.h>
+
+namespace poundfe
+{
+  DynamicFormResult
+  dynamic_form(RealizationRunner &runner, const ResponseLimitStates &limit_states,
+               const DynamicFormSettings &settings)
+  {
+    const unsigned int n_load = runner.n_load_variables(), n_p = runner.n_parameters();
+    const unsigned int n_s = settings.scale.size(), n_e = settings.n_excitation;
+    AssertThrow(n_e <= n_load && n_s <= 1, dealii::ExcMessage("dynamic FORM variables"));
+
+    DynamicFormResult result;
+    // the marginals: the scale factor's, standard normals for the others
+    std::vector<Distribution> marginals = settings.scale;
+    for (unsigned int i = 0; i < n_e + n_p; ++i)
+      marginals.push_back(Distribution::from_moments(DistributionType::normal, 0, 1));
+    if (n_s)
+      result.variable_names.push_back("scale");
+    for (unsigned int i = 0; i < n_e; ++i)
+      result.variable_names.push_back("xi" + std::to_string(i + 1));
+    const std::vector<std::string> &columns = runner.response_names();
+    result.variable_names.insert(result.variable_names.end(), columns.end() - n_p, columns.end());
+
+    // the held normals of the loading, then G(x) = system value of one run
+    std::vector<double> held(runner.n_variables());
+    standard_normals(runner.stochastic_load().seed(), settings.realization, held);
+    std::vector<double> xi, row;
+    const auto          run = [&](const std::vector<double> &x) {
+      xi = held;
+      std::copy(x.begin() + n_s, x.begin() + n_s + n_e, xi.begin());
+      std::copy(x.begin() + n_s + n_e, x.end(), xi.begin() + n_load);
+      ++result.n_time_histories;
+      if (!runner.run(xi, row, n_s ? x[0] : 1.0))
+        ++result.n_failed_runs;
+      return limit_states.system_value(row);
+    };
+    ReliabilityProblem problem{NatafTransformation(marginals), {run}, SystemType::series};
+    result.form = form(problem, 0, settings.form);
+
+    if (!result.form.design_point_x.empty())
+      {
+        result.design_limit_state = run(result.form.design_point_x);
+        result.design_responses   = row;
+        result.design_point.assign(result.form.design_point_x.begin(),
+                                   result.form.design_point_x.begin() + n_s + n_e);
+        result.design_point.insert(result.design_point.end(), row.end() - n_p, row.end());
+      }
+    return result;
+  }
+} // namespace poundfe
