@@ -131,7 +131,7 @@ namespace poundfe
                "Dormand-Prince 5(4) with dense output and event location (each contact's "
                "g = 0 and, in contact, its penetration rate = 0), for models of up to "
                "200 equations, all with mass, whose nonlinear elements are contacts and "
-               "elastic springs (theory §3.6); Time step is then the output step. Unit: -.",
+               "elastic springs (theory §3.9a); Time step is then the output step. Unit: -.",
                time_integration_method_names());
     prm.add_parameter("Relative tolerance", dopri.relative_tolerance,
                       "dopri: the relative tolerance of each step's local error estimate "
