@@ -105,6 +105,27 @@ namespace poundfe
     return std::sqrt(sum / std::max(1u, n_controlled));
   }
 
+  double
+  DormandPrinceStep::next_size(const double h, const double err)
+  {
+    if (!std::isfinite(err))
+      return 0.2 * h;
+    return h * std::min(5.0, std::max(0.2, 0.9 * std::pow(std::max(err, 1e-10), -0.2)));
+  }
+
+  double
+  DormandPrinceStep::locate_change(const double h, const double resolution,
+                                   const std::function<bool(double)> &unchanged)
+  {
+    double lo = 0, hi = 1;
+    while ((hi - lo) * h > resolution)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (unchanged(mid) ? lo : hi) = mid;
+      }
+    return hi;
+  }
+
   std::string
   DormandPrinceIntegrator::unsupported(const LinearSystem &system,
                                        const NonlinearElements *elements,
@@ -340,15 +361,11 @@ namespace poundfe
   DormandPrinceIntegrator::locate_event(const double t0, const double h)
   {
     const double resolution = parameters.event_resolution * std::max(1.0, std::abs(t0));
-    double       lo = 0, hi = 1;
-    while ((hi - lo) * h > resolution)
-      {
-        const double mid = 0.5 * (lo + hi);
-        step.dense_output(mid, y_trial);
-        phases_at(t0 + mid * h, y_trial, trial_phases);
-        (trial_phases == phases ? lo : hi) = mid;
-      }
-    return hi;
+    return DormandPrinceStep::locate_change(h, resolution, [&](const double theta) {
+      step.dense_output(theta, y_trial);
+      phases_at(t0 + theta * h, y_trial, trial_phases);
+      return trial_phases == phases;
+    });
   }
 
   void
@@ -379,13 +396,13 @@ namespace poundfe
         if (!(err <= 1))
           {
             ++stats.step_cuts;
-            proposed_step = h * (std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2);
+            proposed_step = std::min(h, DormandPrinceStep::next_size(h, err));
             if (proposed_step < 1e-14 * std::max(1.0, std::abs(t)))
               throw NumericalError("t = " + number_text(t) + " s: the Dormand-Prince step fell to " +
                                    number_text(proposed_step) + " s");
             continue;
           }
-        const double h_next = h * std::min(5.0, std::max(0.2, 0.9 * std::pow(std::max(err, 1e-10), -0.2)));
+        const double h_next = DormandPrinceStep::next_size(h, err);
         phases_at(t + h, step.y1, trial_phases);
         bool event = false;
         if (trial_phases != phases)

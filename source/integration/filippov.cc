@@ -162,28 +162,25 @@ namespace poundfe
         const double err = step.error_norm(x, rtol, atol, x.size());
         if (!(err <= 1))
           {
-            h *= std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2;
+            h = std::min(h, DormandPrinceStep::next_size(h, err));
             if (h < 1e-14 * std::max(1.0, t))
               throw NumericalError("t = " + number_text(t) + " s: the step fell to " +
                                    number_text(h) + " s");
             continue;
           }
-        const double h_next = h * std::min(5.0, std::max(0.2, 0.9 * std::pow(std::max(err, 1e-10), -0.2)));
+        const double h_next = DormandPrinceStep::next_size(h, err);
         indicators(t, x, watched);
         indicators(t + h, step.y1, trial_watched);
         int event = -1;
         if (trial_watched != watched)
           {
-            // bisection of the indicators on the dense output to the first change
+            // the first change of the indicators, on the dense output
             const double resolution = parameters.event_resolution * std::max(1.0, t);
-            double       lo = 0, hi = 1;
-            while ((hi - lo) * h > resolution)
-              {
-                const double mid = 0.5 * (lo + hi);
-                step.dense_output(mid, trial);
-                indicators(t + mid * h, trial, trial_watched);
-                (trial_watched == watched ? lo : hi) = mid;
-              }
+            const double hi = DormandPrinceStep::locate_change(h, resolution, [&](double theta) {
+              step.dense_output(theta, trial);
+              indicators(t + theta * h, trial, trial_watched);
+              return trial_watched == watched;
+            });
             step.dense_output(hi, trial);
             indicators(t + hi * h, trial, trial_watched);
             const auto changed = std::mismatch(watched.begin(), watched.end(), trial_watched.begin());

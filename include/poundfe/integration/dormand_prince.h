@@ -74,6 +74,14 @@ namespace poundfe
     /// The scaled RMS norm of the error estimate over the first n_controlled
     /// components.
     double error_norm(const Vector &y0, double rtol, double atol, unsigned int n_controlled) const;
+    /// The next step after one of size h with error norm err (HNW §II.4):
+    /// h min(5, max(0.2, 0.9 err^(-1/5))); a non-finite err gives h / 5.
+    static double next_size(double h, double err);
+    /// The smallest theta in (0, 1] where `unchanged(theta)` (evaluated on
+    /// the dense output) turns false, bisected to `resolution` / h;
+    /// unchanged(0) is true and unchanged(1) false.
+    static double locate_change(double h, double resolution,
+                                const std::function<bool(double)> &unchanged);
 
     Vector y1, k7, error;
 
