@@ -6,6 +6,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/excitation/stochastic_load.h>
+#include <poundfe/integration/dormand_prince.h>
 #include <poundfe/integration/newmark.h>
 
 #include <deal.II/base/mpi.h>
@@ -73,6 +74,22 @@ namespace poundfe
                                                               "Ground motion/Stochastic/Duration";
     }
 
+    /// Time integration/Method = dopri: its integrator, refused (InputError)
+    /// when the model is beyond it; null for newmark.
+    std::unique_ptr<DormandPrinceIntegrator>
+    make_dormand_prince(const LinearSystem &system, const TimeHistoryParameters &parameters,
+                        NonlinearElements &elements)
+    {
+      const TimeIntegrationParameters &time_integration = parameters.time_integration;
+      if (time_integration.method != TimeIntegrationMethod::dopri)
+        return nullptr;
+      const DormandPrinceParameters dopri = time_integration.dormand_prince();
+      if (const std::string why =
+            DormandPrinceIntegrator::unsupported(system, &elements, dopri.max_equations);
+          !why.empty())
+        parameters.input.fail("Time integration/Method", "dopri " + why);
+      return std::make_unique<DormandPrinceIntegrator>(system, dopri, &elements);
+    }
   } // namespace
 
   Excitation
@@ -105,7 +122,9 @@ namespace poundfe
     , integrator(analysis_.system,
                  linear_solver.empty() ? time_integration.linear_solver : linear_solver,
                  time_integration.newmark, &elements)
-    , view(analysis_.model, analysis_.system, elements, integrator)
+    , dopri(make_dormand_prince(analysis_.system, parameters, elements))
+    , stepper(dopri ? static_cast<TimeStepper &>(*dopri) : integrator)
+    , view(analysis_.model, analysis_.system, elements, stepper)
     , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
   {
     integrator.set_equation_names(equation_names(analysis_.model));
@@ -149,23 +168,23 @@ namespace poundfe
     const LoadFunction  load = [&excitation](const double t, Vector &p) { excitation.load(t, p); };
     Vector p0(analysis.system.n_equations());
     load(0, p0);
-    integrator.initialize(p0, u0, v0);
+    stepper.initialize(p0, u0, v0);
     view.set_step(0, excitation.horizontal_acceleration(0));
     for (StepObserver *observer : observers)
       observer->initialize(view);
 
     RunStatus     status;
     unsigned long step = 0;
-    integrator.set_substep_callback([&]() {
-      view.set_step(step, excitation.horizontal_acceleration(integrator.time()));
+    stepper.set_substep_callback([&]() {
+      view.set_step(step, excitation.horizontal_acceleration(stepper.time()));
       for (StepObserver *observer : observers)
         observer->observe_substep(view);
     });
     struct Forget // the callback refers to this call's locals
     {
-      NewmarkIntegrator &integrator;
-      ~Forget() { integrator.set_substep_callback(nullptr); }
-    } forget{integrator};
+      TimeStepper &stepper;
+      ~Forget() { stepper.set_substep_callback(nullptr); }
+    } forget{stepper};
     const auto start = std::chrono::steady_clock::now();
     try
       {
@@ -177,7 +196,7 @@ namespace poundfe
                 break;
               }
             throw_if_interrupted(); // a command that stops at safe points (sweep, ...)
-            integrator.advance(load);
+            stepper.advance(load);
             view.set_step(step, excitation.horizontal_acceleration(step * dt));
             for (StepObserver *observer : observers)
               observer->observe_step(view);
@@ -195,8 +214,8 @@ namespace poundfe
         status.message       = e.what();
       }
     status.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    status.steps     = integrator.steps();
-    status.end_time  = integrator.time();
+    status.steps     = stepper.steps();
+    status.end_time  = stepper.time();
     // Every observer finishes (or removes) its files even when one cannot:
     // the summary, last, then reports the file that failed.
     for (StepObserver *observer : observers)

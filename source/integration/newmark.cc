@@ -925,35 +925,9 @@ namespace poundfe
   {
     balance.kinetic = kinetic_energy();
     balance.strain  = strain_energy();
-    balance.hysteretic = balance.contact = balance.friction = balance.links = 0;
-    balance.foundation = 0;
-    for (unsigned int h = 0; h < n_elements; ++h)
-      {
-        const NonlinearElement &e          = (*elements)[h];
-        const double dissipated = work[h] - e.stored_energy() + supplied_work[h];
-        switch (e.kind)
-          {
-            case ElementKind::gap:
-              balance.contact += dissipated;
-              break;
-            case ElementKind::friction:
-              balance.friction += dissipated;
-              break;
-            case ElementKind::link:
-              balance.links += dissipated;
-              break;
-            case ElementKind::foundation:
-              balance.foundation += dissipated;
-              break;
-            default: // hinges, storeys; elastic springs dissipate nothing
-              balance.hysteretic += dissipated;
-          }
-      }
-    const double sum      = balance.stored_and_dissipated();
-    const double supplied = balance.supplied();
-    energy_scale          = std::max({energy_scale, std::abs(supplied), sum});
-    if (energy_scale > 0)
-      max_balance_error = std::max(max_balance_error, std::abs(supplied - sum) / energy_scale);
+    if (elements)
+      set_element_dissipation(balance, *elements, work, supplied_work);
+    update_balance_error(balance, energy_scale, max_balance_error);
   }
 
   EnergyBalance

@@ -20,6 +20,22 @@ namespace poundfe
     return table;
   }
 
+  const NameTable<TimeIntegrationMethod> &
+  time_integration_method_names()
+  {
+    static const NameTable<TimeIntegrationMethod> table(
+      {{TimeIntegrationMethod::newmark, "newmark"}, {TimeIntegrationMethod::dopri, "dopri"}});
+    return table;
+  }
+
+  DormandPrinceParameters
+  TimeIntegrationParameters::dormand_prince() const
+  {
+    DormandPrinceParameters p = dopri;
+    p.time_step               = newmark.time_step;
+    return p;
+  }
+
   double
   TimeIntegrationParameters::hysteresis_theta() const
   {
@@ -110,6 +126,19 @@ namespace poundfe
                       "End time = 1e308 or a record's DT typed in ms); raise it for a "
                       "genuinely long run. Unit: count.",
                       Patterns::Integer(1));
+    add_choice(prm, "Method", method,
+               "newmark: Newmark-Newton with event refinement, every model; dopri: adaptive "
+               "Dormand-Prince 5(4) with dense output and event location (each contact's "
+               "g = 0 and, in contact, its penetration rate = 0), for models of up to "
+               "200 equations, all with mass, whose nonlinear elements are contacts and "
+               "elastic springs (theory §3.9a); Time step is then the output step. Unit: -.",
+               time_integration_method_names());
+    prm.add_parameter("Relative tolerance", dopri.relative_tolerance,
+                      "dopri: the relative tolerance of each step's local error estimate "
+                      "(on every displacement and velocity). Unit: dimensionless.");
+    prm.add_parameter("Absolute tolerance", dopri.absolute_tolerance,
+                      "dopri: the absolute tolerance of the local error estimate (m on "
+                      "displacements, m/s on velocities). Unit: m, m/s.");
     prm.add_parameter("Newmark gamma", newmark.gamma,
                       "gamma >= 1/2 (1/2: no numerical damping). Unit: dimensionless.");
     prm.add_parameter("Newmark beta", newmark.beta,
@@ -186,6 +215,8 @@ namespace poundfe
     input.positive("Time integration/Newton residual tolerance", newmark.newton.residual_tolerance);
     input.positive("Time integration/Newton energy tolerance", newmark.newton.energy_tolerance);
     input.positive("Time integration/Law tolerance", law_tolerance);
+    input.positive("Time integration/Relative tolerance", dopri.relative_tolerance);
+    input.positive("Time integration/Absolute tolerance", dopri.absolute_tolerance);
     input.positive("Time integration/Refactorisation ratio", newmark.newton.refactorization_ratio);
     if (const std::string why = linear_solver_unavailable(linear_solver); !why.empty())
       input.fail("Time integration/Linear solver", linear_solver + " is not available: " + why);

@@ -19,7 +19,7 @@ namespace poundfe
 
   ResponseView::ResponseView(const Model &model_, const LinearSystem &system_,
                              const NonlinearElements &elements_,
-                             const NewmarkIntegrator &integrator_)
+                             const TimeStepper &integrator_)
     : model(model_)
     , system(system_)
     , elements(elements_)

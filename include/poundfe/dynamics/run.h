@@ -12,6 +12,7 @@
 #include <poundfe/integration/time_integration_parameters.h>
 #include <poundfe/output/observer.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,9 @@ namespace poundfe
     const std::string duration_path;    // the entry that sets the ground motion's duration
     NonlinearElements elements; // before the integrator, which points to them
     NewmarkIntegrator integrator;
+    /// Time integration/Method = dopri: the integrator that runs (null: Newmark).
+    std::unique_ptr<DormandPrinceIntegrator> dopri;
+    TimeStepper      &stepper; // integrator or *dopri
     ResponseView      view;
     const InitialState initial; // checked against the model on construction
   };

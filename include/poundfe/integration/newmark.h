@@ -31,6 +31,7 @@
 #include <poundfe/integration/impact_log.h>
 #include <poundfe/integration/newton_acceleration.h>
 #include <poundfe/integration/stick_slip_log.h>
+#include <poundfe/integration/time_stepper.h>
 
 #include <chrono>
 #include <functional>
@@ -135,10 +136,7 @@ namespace poundfe
     IterativeSolveCounts linear;
   };
 
-  /// p(t) into the vector.
-  using LoadFunction = std::function<void(double, Vector &)>;
-
-  class NewmarkIntegrator
+  class NewmarkIntegrator : public TimeStepper
   {
   public:
     /// `elements` may be null (a linear model); they are updated in place.
@@ -147,10 +145,10 @@ namespace poundfe
     NewmarkIntegrator(const LinearSystem &system, const std::string &linear_solver,
                       const NewmarkParameters &parameters,
                       NonlinearElements       *elements = nullptr);
-    ~NewmarkIntegrator();
+    ~NewmarkIntegrator() override;
 
     /// Start at time 0 from (u0, v0) under load p0.
-    void initialize(const Vector &load, const Vector &u0, const Vector &v0);
+    void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
     /// Start from rest.
     void initialize(const Vector &load);
     /// Continue from (u_new, v_new) at the current time under p = load
@@ -163,38 +161,38 @@ namespace poundfe
     /// Advance one step to t + dt, cutting it if Newton fails; `load(t, p)`
     /// gives p at any time in the step. Throws NumericalError (with the
     /// time, the step size reached and where) if even the smallest step fails.
-    void advance(const LoadFunction &load);
+    void advance(const LoadFunction &load) override;
     /// Called after every accepted sub-step of a step that was cut (to
     /// resolve a contact, locate an event or converge), the state being
     /// that sub-step's end; peaks between the steps come from there.
-    void set_substep_callback(std::function<void()> callback)
+    void set_substep_callback(std::function<void()> callback) override
     {
       substep_callback = std::move(callback);
     }
     /// Advance one step under p(t_{n+1}) = load (constant over a cut step).
     void advance(const Vector &load);
 
-    double        time() const { return current_time; }
-    unsigned long steps() const { return step_count; }
-    const Vector &displacement() const { return u; }
-    const Vector &velocity() const { return v; }
-    const Vector &acceleration() const { return a; }
+    double        time() const override { return current_time; }
+    unsigned long steps() const override { return step_count; }
+    const Vector &displacement() const override { return u; }
+    const Vector &velocity() const override { return v; }
+    const Vector &acceleration() const override { return a; }
 
     double kinetic_energy() const;
     /// Recoverable strain energy: elastic structure plus the laws' stored energy.
     double strain_energy() const;
     /// The energy terms at the current time.
-    EnergyBalance energy() const;
+    EnergyBalance energy() const override;
     /// max over the run so far of |input - sum| / max(|input|, sum) with the
     /// denominator's running maximum (so the start of the motion, where
     /// both are tiny, is not divided by nearly zero).
-    double max_energy_error() const { return max_balance_error; }
+    double max_energy_error() const override { return max_balance_error; }
 
-    const IterationStatistics &statistics() const { return stats; }
+    const IterationStatistics &statistics() const override { return stats; }
     /// Work done on element h so far (trapezoidal), J.
-    double element_work(unsigned int h) const { return work[h]; }
+    double element_work(unsigned int h) const override { return work[h]; }
     /// Work done on the structure by what drives element h (a belt) so far, J.
-    double element_supplied_work(unsigned int h) const { return supplied_work[h]; }
+    double element_supplied_work(unsigned int h) const override { return supplied_work[h]; }
     /// The residual R(u_trial) of the next step under p(t_{n+1}) = load, and
     /// the dense tangent -dR/du that Newton uses (for checks and
     /// diagnostics; the laws are reverted afterwards).
@@ -204,9 +202,9 @@ namespace poundfe
     /// Names of the equations, used in failure messages ("A3 (6, 3) ux").
     void set_equation_names(std::vector<std::string> names) { equation_names = std::move(names); }
     /// Every contact episode of the gap elements so far.
-    const ImpactLog &impact_log() const { return impacts; }
+    const ImpactLog &impact_log() const override { return impacts; }
     /// Every stick and slip episode of the friction elements so far.
-    const StickSlipLog &stick_slip_log() const { return stick_slip; }
+    const StickSlipLog &stick_slip_log() const override { return stick_slip; }
     /// The update in use (never automatic).
     TangentUpdate tangent_update() const
     {

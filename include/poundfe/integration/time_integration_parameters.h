@@ -8,6 +8,7 @@
 
 #include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
+#include <poundfe/integration/dormand_prince.h>
 #include <poundfe/integration/newmark.h>
 
 #include <string>
@@ -28,9 +29,21 @@ namespace poundfe
 
   const NameTable<HysteresisIntegration> &hysteresis_integration_names();
 
+  /// How the time history is integrated.
+  enum class TimeIntegrationMethod
+  {
+    newmark, // Newmark-Newton, every model (integration/newmark.h)
+    dopri    // adaptive Dormand-Prince 5(4) with events, small models (dormand_prince.h)
+  };
+
+  const NameTable<TimeIntegrationMethod> &time_integration_method_names();
+
   struct TimeIntegrationParameters
   {
     NewmarkParameters     newmark{0.001, 0.5, 0.25, NewtonParameters(), IterativeSolverParameters()};
+    TimeIntegrationMethod method = TimeIntegrationMethod::newmark;
+    /// dopri's tolerances (its time_step is newmark.time_step: see dormand_prince()).
+    DormandPrinceParameters dopri;
     double                end_time      = 0.0; // 0 = length of the ground motion
     std::string           linear_solver = "eigen-ldlt"; // one of linear_solver_names()
     HysteresisIntegration hysteresis_integration = HysteresisIntegration::trapezoidal;
@@ -43,6 +56,9 @@ namespace poundfe
     /// The number of steps to `end` (s): refused, naming `end_path` (what
     /// set the end), when it is not finite or exceeds max_steps.
     unsigned long n_steps_to(double end, const InputFile &input, const std::string &end_path) const;
+
+    /// dopri's parameters with the analysis time step.
+    DormandPrinceParameters dormand_prince() const;
 
     /// theta of the hysteretic laws' one-step rule.
     double hysteresis_theta() const;

@@ -50,7 +50,7 @@ namespace poundfe
   {
   public:
     ResponseView(const Model &model, const LinearSystem &system,
-                 const NonlinearElements &elements, const NewmarkIntegrator &integrator);
+                 const NonlinearElements &elements, const TimeStepper &integrator);
 
     /// Called by the time loop once per step, before the observers, with
     /// the ground acceleration (a_x, a_y) (a_y = 0 without a horizontal pair).
@@ -81,7 +81,7 @@ namespace poundfe
     const IterationStatistics &statistics() const { return integrator.statistics(); }
 
   private:
-    const NewmarkIntegrator &integrator;
+    const TimeStepper &integrator;
     unsigned long            step_index = 0;
     std::array<double, 2>    ground{{0, 0}};
   };

@@ -1,0 +1,49 @@
+// The element dissipation shared by the time integrators (time_stepper.h).
+#include <poundfe/integration/newmark.h>
+#include <poundfe/integration/time_stepper.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace poundfe
+{
+  void
+  set_element_dissipation(EnergyBalance &balance, const NonlinearElements &elements,
+                          const std::vector<double> &work, const std::vector<double> &supplied_work)
+  {
+    balance.hysteretic = balance.contact = balance.friction = balance.links = 0;
+    balance.foundation = 0;
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      {
+        const NonlinearElement &e          = elements[h];
+        const double            dissipated = work[h] - e.stored_energy() + supplied_work[h];
+        switch (e.kind)
+          {
+            case ElementKind::gap:
+              balance.contact += dissipated;
+              break;
+            case ElementKind::friction:
+              balance.friction += dissipated;
+              break;
+            case ElementKind::link:
+              balance.links += dissipated;
+              break;
+            case ElementKind::foundation:
+              balance.foundation += dissipated;
+              break;
+            default: // hinges, storeys; elastic springs dissipate nothing
+              balance.hysteretic += dissipated;
+          }
+      }
+  }
+
+  void
+  update_balance_error(const EnergyBalance &balance, double &scale, double &max_error)
+  {
+    const double sum      = balance.stored_and_dissipated();
+    const double supplied = balance.supplied();
+    scale                 = std::max({scale, std::abs(supplied), sum});
+    if (scale > 0)
+      max_error = std::max(max_error, std::abs(supplied - sum) / scale);
+  }
+} // namespace poundfe
