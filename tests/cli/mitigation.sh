@@ -28,13 +28,14 @@ example="$input/mitigation-shear-pair.prm"
 "$poundfe" mitigation "$example" --output "$work/study" > /dev/null 2>&1 || fail "the example"
 [ -s "$work/study/mitigation.png" ] || fail "no mitigation.png"
 
-# the same pair run directly: the damper of damper2 and the bumper of bumper1 by hand
+# the same pair run directly: the damper of damper2 and the bumper of bumper1
+# by hand (the numbers only: no plots, no VTU)
+sed -e 's/^subsection Output/&\n  set Plots = false\n  set VTU interval = 0/' "$example" > "$work/quiet.prm"
 sed -e 's/^subsection Mitigation/subsection Links\n  set Viscous dampers = shear3 2 0 shear2 2 0 5e3 0.5\nend\n&/' \
-  "$example" > "$work/damper.prm"
+  "$work/quiet.prm" > "$work/damper.prm"
 sed -e 's/^subsection Mitigation/subsection Bumpers\n  set Law = linear\n  set Thickness = 0.002\n  set Stiffness = 2e6\nend\n&/' \
-  "$example" > "$work/bumper.prm"
-for case in damper bumper; do # the numbers only: no plots, no VTU
-  sed -i 's/^subsection Output/&\n  set Plots = false\n  set VTU interval = 0/' "$work/$case.prm"
+  "$work/quiet.prm" > "$work/bumper.prm"
+for case in damper bumper; do
   "$poundfe" run "$work/$case.prm" --output "$work/$case" > /dev/null 2>&1 || fail "run $case"
 done
 "$poundfe" separation "$work/damper.prm" --output "$work/separation" > /dev/null 2>&1 ||
@@ -105,3 +106,37 @@ assert near(p["pounding"]["gap_for_target_probability_m"], float(table["damper2"
 print(f"damper2's required gap = poundfe separation's: {p['time_history_m']:.6g} m")
 PY
 echo "ok   mitigation: c = 0 is the bare pair, the table, the direct runs"
+
+# 4. a record (realization 0 of the motion as a text file): one run per case
+"$poundfe" ground-motion "$work/quiet.prm" --output "$work/motion" > /dev/null 2>&1
+tail -n +2 "$work/motion/ground_motion.csv" | tr , ' ' > "$work/record.txt"
+python3 - "$work/quiet.prm" "$work" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+record = ("subsection Ground motion\n  set Type = record\n  subsection Record\n"
+          "    set File  = record.txt\n    set Units = m/s^2\n  end\nend\n")
+text = re.sub(r"subsection Ground motion\n.*?\n  end\nend\n", record, text, flags=re.S)
+open(sys.argv[2] + "/record.prm", "w").write(text)
+links = "subsection Links\n  set Viscous dampers = shear3 2 0 shear2 2 0 2e4 0.5\nend\n"
+open(sys.argv[2] + "/record-damper.prm", "w").write(text.replace("subsection Mitigation", links + "subsection Mitigation"))
+PY
+"$poundfe" mitigation "$work/record.prm" --output "$work/record" > /dev/null 2>&1 || fail "record study"
+"$poundfe" run "$work/record-damper.prm" --output "$work/record-damper" > /dev/null 2>&1 ||
+  fail "record run"
+python3 - "$work" <<'PY' || fail "record study"
+import csv, json, sys
+w = sys.argv[1]
+rows = list(csv.DictReader(open(w + "/record/realizations.csv")))
+assert len(rows) == 1, len(rows)
+r = rows[0]
+for what in ["peak_drift_ratio_shear3", "peak_drift_ratio_shear2", "peak_floor_acc_m_s2",
+             "n_impacts", "peak_impact_force_N"]:
+    assert r["damper1_" + what] == r["bare_" + what], what
+s = json.load(open(w + "/record-damper/summary.json"))
+near = lambda a, b: abs(a - b) <= 1e-12 * max(abs(a), abs(b), 1e-300)
+for b in s["buildings"]:
+    assert near(max(st["peak_drift_ratio"] for st in b["storeys"]),
+                float(r["damper3_peak_drift_ratio_" + b["name"]])), b["name"]
+print(f"record: c = 0 is the bare pair ({r['bare_n_impacts']} impacts); c = 2e4 = poundfe run")
+PY
+echo "ok   mitigation of a record"
