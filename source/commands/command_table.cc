@@ -21,6 +21,7 @@ namespace poundfe
     int separation(const CommandRun &);     // separation.cc
     int reliability(const CommandRun &);    // reliability.cc
     int dynamic_form(const CommandRun &);   // dynamic_form.cc
+    int mitigation(const CommandRun &);     // mitigation.cc
     int print_parameters(const CommandRun &); // print_parameters.cc
     int input_template(const CommandRun &); // template.cc
   } // namespace commands
@@ -75,6 +76,11 @@ namespace poundfe
        "and, with a site hazard, P(pounding in T years) and the gap\n"
        "for a target (Separation/Site hazard)",
        true, true, true, false, commands::separation},
+      {"mitigation", "FILE",
+       "the bare pair against viscous dampers of each size and bumpers\n"
+       "(Mitigation section): drifts, floor accelerations, impacts,\n"
+       "P(pounding) and the required gap of each case (MPI)",
+       true, true, true, false, commands::mitigation},
       {"reliability", "FILE",
        "failure probability of algebraic limit states (Reliability\n"
        "section): FORM, SORM, importance sampling, Monte Carlo, subset",

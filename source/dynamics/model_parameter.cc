@@ -25,7 +25,7 @@ namespace poundfe
       "Building b/Storey stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
       "drifts[i], Building b/Hinges/Yield moment, Building b/Damping/Damping ratio, "
       "Building b/Floor masses[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
-      "Friction/Kinetic coefficient";
+      "Friction/Kinetic coefficient, Links/Viscous dampers[i]";
 
     /// Indices in model.links of the storeys of building b, bottom to top.
     std::vector<unsigned int>
@@ -50,6 +50,25 @@ namespace poundfe
             result.push_back(g);
         }
       return result;
+    }
+
+    /// Indices in model.building_links of the viscous dampers.
+    std::vector<unsigned int>
+    viscous_dampers(const Model &model)
+    {
+      std::vector<unsigned int> result;
+      for (unsigned int l = 0; l < model.building_links.size(); ++l)
+        if (model.building_links[l].law.kind == LinkKind::viscous)
+          result.push_back(l);
+      return result;
+    }
+
+    /// Indices in model.building_links of the dampers `p` names (all, or one).
+    std::vector<unsigned int>
+    named_dampers(const ModelParameter &p, const Model &model)
+    {
+      const std::vector<unsigned int> all = viscous_dampers(model);
+      return p.entry < 0 ? all : std::vector<unsigned int>{all.at(p.entry)};
     }
 
     /// Indices in model.links of the storeys `p` names (all, or one).
@@ -163,6 +182,11 @@ namespace poundfe
               (p.kind == Kind::static_friction ? surface.law.static_coefficient :
                                                  surface.law.kinetic_coefficient) = value;
             return;
+          case Kind::link_damping:
+            require_in_range(p, value);
+            for (const unsigned int l : named_dampers(p, model))
+              model.building_links[l].law.damping = value;
+            return;
         }
     }
 
@@ -271,7 +295,7 @@ namespace poundfe
   {
     return kind == Kind::storey_damping || kind == Kind::separation ||
            kind == Kind::contact_damping || kind == Kind::static_friction ||
-           kind == Kind::kinetic_friction;
+           kind == Kind::kinetic_friction || kind == Kind::link_damping;
   }
 
   ModelParameter
@@ -328,6 +352,18 @@ namespace poundfe
           throw std::invalid_argument("'" + path + "': the model has no friction surfaces");
         return p;
       }
+    if (entry == "Links/Viscous dampers")
+      {
+        p.kind = Kind::link_damping;
+        const std::size_t n = viscous_dampers(model).size();
+        if (n == 0)
+          throw std::invalid_argument("'" + path + "': the model has no viscous dampers "
+                                      "(Links/Viscous dampers)");
+        if (p.entry >= int(n))
+          throw std::invalid_argument("'" + path + "': the model has viscous dampers 1.." +
+                                      std::to_string(n));
+        return p;
+      }
     throw std::invalid_argument("'" + path + "' is not a parameter poundfe can vary (" +
                                 known_paths + ")");
   }
@@ -362,6 +398,8 @@ namespace poundfe
           return model.friction_surfaces.front().law.static_coefficient;
         case Kind::kinetic_friction:
           return model.friction_surfaces.front().law.kinetic_coefficient;
+        case Kind::link_damping:
+          return model.building_links[named_dampers(p, model).front()].law.damping;
       }
     return 0;
   }

@@ -236,6 +236,7 @@ namespace poundfe
     site_hazard.declare(prm);
     drift_limits.declare(prm);
     separation.declare(prm);
+    mitigation.declare(prm);
     spectrum.declare(prm);
   }
 
@@ -270,6 +271,7 @@ namespace poundfe
     site_hazard.check(*this);
     drift_limits.finalize(*this);
     separation.check(*this, model.buildings.size());
+    mitigation.check(*this);
     spectrum.check(*this);
   }
 

@@ -113,6 +113,53 @@ namespace poundfe
       link.label = place(a) + "-" + place(b) + "_" + link_kind_name(form.kind);
       return link;
     }
+
+    /// The foundation of building b, or an InputError naming the entry.
+    const Foundation &
+    foundation_of(const InputFile &input, const Model &model, const unsigned int b,
+                  const std::string &path, const std::string &entry)
+    {
+      for (const Foundation &f : model.foundations)
+        if (f.building == b)
+          return f;
+      throw InputError(input.file, input.line_of(path), path,
+                       "'" + entry + "': building '" + model.buildings[b].name +
+                         "' stands on a fixed base: soil coupling joins two compliant "
+                         "foundations (Building <i>/Foundation)");
+    }
+
+    /// 'building building k c': a Kelvin-Voigt link (alpha = 1; k, c >= 0)
+    /// between the two foundations' sway DOFs (doc/theory.md §1.16).
+    BuildingLink
+    read_soil_coupling(const InputFile &input, const Model &model, const std::string &entry)
+    {
+      const std::string  path = "Links/Soil coupling";
+      std::istringstream fields(entry);
+      std::string        first, second, rest;
+      double             k = 0, c = 0;
+      fields >> first >> second;
+      if (!read_number(read_number(fields, k), c) || (fields >> rest))
+        throw InputError(input.file, input.line_of(path), path,
+                         "'" + entry + "': expected 'building building k c'");
+      const unsigned int a = read_building(input, model, first, path, entry);
+      const unsigned int b = read_building(input, model, second, path, entry);
+      if (a == b)
+        throw InputError(input.file, input.line_of(path), path,
+                         "'" + entry + "': soil coupling joins two different buildings");
+      if (!(k >= 0 && c >= 0) || !std::isfinite(k) || !std::isfinite(c))
+        throw InputError(input.file, input.line_of(path), path,
+                         "'" + entry + "': k and c must be zero or positive");
+      BuildingLink link;
+      link.law.kind      = LinkKind::kelvin_voigt;
+      link.law.stiffness = k;
+      link.law.damping   = c;
+      link.law.exponent  = 1;
+      link.nodes     = {{foundation_of(input, model, a, path, entry).node,
+                         foundation_of(input, model, b, path, entry).node}};
+      link.buildings = {{a, b}};
+      link.label     = "soil_" + model.buildings[a].name + "-" + model.buildings[b].name;
+      return link;
+    }
   } // namespace
 
   void
@@ -125,6 +172,9 @@ namespace poundfe
         if (entry.find_first_not_of(" \t") != std::string::npos)
           model.building_links.push_back(
             read_link(input, model, link_forms()[i], entry, links.regularization_velocity));
+    for (const std::string &entry : links.soil_coupling)
+      if (entry.find_first_not_of(" \t") != std::string::npos)
+        model.building_links.push_back(read_soil_coupling(input, model, entry));
   }
 
   void

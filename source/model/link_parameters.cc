@@ -47,6 +47,13 @@ namespace poundfe
                         "'... k Fy r': stiffness k (N/m), yield force Fy (N), post-yield "
                         "stiffness r k, 0 <= r < 1. Unit: per field.",
                       list);
+    prm.add_parameter("Soil coupling", soil_coupling,
+                      "Structure-soil-structure interaction, typed in: 'building building k c' "
+                      "separated by ';', a spring k (N/m) and a dashpot c (N s/m), both >= 0, "
+                      "between the sways of the two buildings' compliant foundations "
+                      "(Building <i>/Foundation), on d = u0_first - u0_second; reported among "
+                      "the links (doc/theory.md §1.16). Unit: per field.",
+                      list);
     prm.add_parameter("Regularization velocity", regularization_velocity,
                       "v_eps of the dampers with alpha < 1: F = c v (v^2 + v_eps^2)^((alpha-1)/2) "
                       "keeps the tangent finite at v = 0 (doc/theory.md §1.14). Unit: m/s.");

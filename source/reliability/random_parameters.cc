@@ -59,7 +59,7 @@ namespace poundfe
                       "every floor), Building b/Hinges/Yield moment, "
                       "Building b/Damping/Damping ratio, Model/Separations[i], Contact/Stiffness, "
                       "Contact/Damping, Friction/Static coefficient, Friction/Kinetic "
-                      "coefficient. DISTRIBUTION and keys as Reliability/Random variables. Unit: "
+                      "coefficient, Links/Viscous dampers[i] (c). DISTRIBUTION and keys as Reliability/Random variables. Unit: "
                       "that of the parameter.");
     prm.add_parameter("Correlation", correlation_text,
                       "Correlation matrix of the Variables in their order, rows separated by "

@@ -184,7 +184,7 @@ BOOST_AUTO_TEST_CASE(paths_the_model_does_not_have_are_refused)
        {"Building 3/Storey stiffnesses", "Building 1/Storey stiffnesses[4]",
         "Building 1/Name", "Building 1/Hinges/Yield moment", "Friction/Kinetic coefficient",
         "Model/Separations[2]", "Contact/Stiffness[1]", "Output/Directory",
-        "Building 1/Storey stiffnesses[0]"})
+        "Building 1/Storey stiffnesses[0]", "Links/Viscous dampers"})
     BOOST_CHECK_THROW(model_parameter(path, model), std::invalid_argument);
   const ModelParameter p = model_parameter("Building 2/Storey yield drifts[2]", model);
   BOOST_TEST(model_parameter_value(p, model) == 0.003);

@@ -14,6 +14,9 @@
 //     Model/Separations[i]               gap between buildings i and i+1 (nonlinear)
 //     Contact/Stiffness, Contact/Damping the contact law of every gap (nonlinear)
 //     Friction/Static coefficient, Friction/Kinetic coefficient (nonlinear)
+//     Links/Viscous dampers[i]           c of viscous damper i (nonlinear; 0: a
+//                                        damper without force, as the mitigation
+//                                        study's bare case of a damper size)
 //   Without [i], a list entry takes the one value on every storey.
 // A realization writes the sampled values into a working copy of the built
 // Analysis (never the file, never the model builder). Only when a value
@@ -44,12 +47,13 @@ namespace poundfe
       contact_stiffness,
       contact_damping,
       static_friction,
-      kinetic_friction
+      kinetic_friction,
+      link_damping
     };
     Kind         kind     = Kind::storey_stiffness;
     std::string  path;          // as written
     unsigned int building = 0;  // 0-based (storey, floor, hinge, damping: the building; separation: the left one)
-    int          entry    = -1; // 0-based storey or floor; -1: all
+    int          entry    = -1; // 0-based storey or floor (link_damping: viscous damper); -1: all
 
     /// Whether the value enters M, K or C (else only nonlinear elements).
     bool enters_linear_part() const;

@@ -12,6 +12,7 @@
 #include <poundfe/reliability/reliability_analysis_parameters.h>
 #include <poundfe/reliability/reliability_parameters.h>
 #include <poundfe/hazard/site_hazard_parameters.h>
+#include <poundfe/separation/mitigation_parameters.h>
 #include <poundfe/separation/separation_parameters.h>
 #include <poundfe/reliability/stationary_pdf_parameters.h>
 #include <poundfe/input/sweep.h>
@@ -69,6 +70,7 @@ namespace poundfe
     SiteHazardParameters      site_hazard;
     DriftLimitParameters      drift_limits;
     SeparationParameters      separation;
+    MitigationParameters      mitigation;  // Mitigation (the mitigation command)
     SpectrumParameters        spectrum;    // Spectrum (response spectra)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;

@@ -29,6 +29,9 @@ namespace poundfe
     std::vector<std::string> kelvin_voigt;    // ... k c alpha
     std::vector<std::string> maxwell;         // ... k c
     std::vector<std::string> elastic_plastic; // ... k F_y r
+    /// 'building building k c': a spring and dashpot between the sways of
+    /// two buildings' compliant foundations (the soil between them).
+    std::vector<std::string> soil_coupling;
     double regularization_velocity = 1e-6;    // v_eps, m/s
 
     /// Declare the entries in the current subsection (`Links`); the entries
