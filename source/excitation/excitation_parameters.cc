@@ -1,3 +1,4 @@
+#include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/excitation/excitation_parameters.h>
 
@@ -229,7 +230,9 @@ namespace poundfe
     if (type == GroundMotionType::record && record_file.empty())
       input.fail(gm + "Record/File", "a record ground motion needs a file");
     if (type == GroundMotionType::record && n_components == 2 && second_record_file.empty())
-      input.fail(gm + "Record/Second file", "Components = 2 with a record needs a second file");
+      // Second file is absent, so the message points at the line that asks for it
+      throw InputError(input.file, input.line_of(gm + "Components"), gm + "Record/Second file",
+                       "Components = 2 with a record needs a second file");
     if (!(std::abs(incidence_angle) <= 360))
       input.fail(gm + "Incidence angle", "must be a finite angle in [-360, 360] degrees");
     check_pair(input);
