@@ -138,7 +138,7 @@ namespace poundfe
                       "(on every displacement and velocity). Unit: dimensionless.");
     prm.add_parameter("Absolute tolerance", dopri.absolute_tolerance,
                       "dopri: the absolute tolerance of the local error estimate (m on "
-                      "displacements, m/s on velocities). Unit: m, m/s.");
+                      "displacements, m/s on velocities). Unit: m or m/s (displacements, velocities).");
     prm.add_parameter("Newmark gamma", newmark.gamma,
                       "gamma >= 1/2 (1/2: no numerical damping). Unit: dimensionless.");
     prm.add_parameter("Newmark beta", newmark.beta,

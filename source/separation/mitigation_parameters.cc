@@ -20,7 +20,7 @@ namespace poundfe
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Damper coefficients", damper_coefficients,
                       "c of the dampers, one case each, >= 0: F = c |v|^alpha sgn(v); 0 is a "
-                      "damper without force, which equals the bare pair. Unit: N (s/m)^alpha.",
+                      "damper without force, which equals the bare pair. Unit: N s/m (with alpha = 1; in general N s^alpha/m^alpha).",
                       Patterns::List(Patterns::Double(), 0));
     prm.add_parameter("Damper exponent", damper_exponent,
                       "alpha of every damper of the study, in (0, 1]. Unit: dimensionless.",
