@@ -27,6 +27,12 @@
 set -euo pipefail
 src=$(cd "$(dirname "$0")/../.." && pwd)
 build=$(cd "${1:-$src/build}" && pwd)
+if grep -q '^POUNDFE_UNITY_BUILD:BOOL=ON' "$build/CMakeCache.txt" &&
+   ! grep -q '^POUNDFE_FUZZERS:BOOL=ON' "$build/CMakeCache.txt"; then
+  echo "run.sh: $build compiles in unity batches, whose objects would clash with the fuzzers'" \
+       "single files: configure it with -DPOUNDFE_FUZZERS=ON (or -DPOUNDFE_UNITY_BUILD=OFF)" >&2
+  exit 1
+fi
 runs=${2:-1000000}
 max_time=${3:-3600}
 all_targets="parameters at2 catalogue hazard fragility mesh"
