@@ -63,6 +63,34 @@ namespace poundfe
         }
       throw std::logic_error("units_of: unknown element kind");
     }
+
+    /// Each drift limit as a dashed vertical line over the height of the
+    /// tallest building, the axis from 0 to past the largest limit.
+    void
+    add_drift_limits(const Model &model, const std::vector<double> &peak_drift_ratios,
+                     const std::vector<DriftLimit> &limits, Plot &drift)
+    {
+      double largest = 0, height = 0;
+      for (const double peak : peak_drift_ratios)
+        largest = std::max(largest, peak);
+      for (const Building &building : model.buildings)
+        if (!building.floors.empty())
+          height = std::max(height, building.floors.back().level - building.base_level);
+      unsigned int n_limits = 0;
+      for (const DriftLimit &limit : limits)
+        {
+          largest = std::max(largest, limit.drift_ratio);
+          const std::string  name = "$limit" + std::to_string(++n_limits);
+          std::ostringstream block, range;
+          block.precision(17);
+          block << name << " << EOD\ndrift,height\n"
+                << limit.drift_ratio << ",0\n" << limit.drift_ratio << ',' << height << "\nEOD\n";
+          drift.data_blocks += block.str();
+          drift.series.push_back({name, "1:2", limit.name, "lines dt 2 lw 2"});
+          range << "set xrange [0:" << 1.15 * largest << "]\nset yrange [0:*]\n";
+          drift.settings = range.str();
+        }
+    }
   } // namespace
 
   void
@@ -648,28 +676,7 @@ namespace poundfe
         roof.series.push_back(
           {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
       }
-    // each limit a dashed vertical line over the height of the tallest
-    // building, the axis from 0 to past the largest limit
-    double largest = 0, height = 0;
-    for (const double peak : peaks.floors().peak_drift_ratio())
-      largest = std::max(largest, peak);
-    for (const Building &building : model.buildings)
-      if (!building.floors.empty())
-        height = std::max(height, building.floors.back().level - building.base_level);
-    unsigned int n_limits = 0;
-    for (const DriftLimit &limit : parameters.drift_limits.limits())
-      {
-        largest = std::max(largest, limit.drift_ratio);
-        const std::string  name = "$limit" + std::to_string(++n_limits);
-        std::ostringstream block, range;
-        block.precision(17);
-        block << name << " << EOD\ndrift,height\n"
-              << limit.drift_ratio << ",0\n" << limit.drift_ratio << ',' << height << "\nEOD\n";
-        drift.data_blocks += block.str();
-        drift.series.push_back({name, "1:2", limit.name, "lines dt 2 lw 2"});
-        range << "set xrange [0:" << 1.15 * largest << "]\nset yrange [0:*]\n";
-        drift.settings = range.str();
-      }
+    add_drift_limits(model, floors.peak_drift_ratio(), parameters.drift_limits.limits(), drift);
     std::vector<Plot> all{drift, accel};
     if (writes("floor_displacement.csv"))
       all.push_back(roof);
