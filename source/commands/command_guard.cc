@@ -107,7 +107,7 @@ namespace poundfe
         const Stops stops(c.stops_at_safe_points);
         forget_missing_figures();
         if (c.writes) // one rule for every command: its first file clears the earlier run's
-          expect_output_directory(c.directory);
+          expect_output_directory(c.directory, resume_inputs(c.input, c.command));
         const int status = body();
         expect_output_directory("");
         note_missing_figures(c);

@@ -233,6 +233,15 @@ namespace poundfe
       // Second file is absent, so the message points at the line that asks for it
       throw InputError(input.file, input.line_of(gm + "Components"), gm + "Record/Second file",
                        "Components = 2 with a record needs a second file");
+    // a second record that nothing reads would leave the user believing the
+    // building was shaken along y as well
+    if (!second_record_file.empty() && type != GroundMotionType::record)
+      input.fail(gm + "Record/Second file", "is read only by a record ground motion (Type = record), "
+                                            "not by '" + ground_motion_type_names().name(type) + "'");
+    if (!second_record_file.empty() && n_components != 2)
+      input.fail(gm + "Record/Second file",
+                 "is the second horizontal component, but Ground motion/Components = " +
+                   std::to_string(n_components) + ": set Components = 2 or remove this line");
     if (!(std::abs(incidence_angle) <= 360))
       input.fail(gm + "Incidence angle", "must be a finite angle in [-360, 360] degrees");
     check_pair(input);

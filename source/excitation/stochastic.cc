@@ -196,12 +196,6 @@ namespace poundfe
     return static_cast<unsigned int>(std::ceil(duration / interval - 1e-9)) + 1;
   }
 
-  double
-  standard_normal_cdf(const double x)
-  {
-    return 0.5 * std::erfc(-x / std::sqrt(2.0));
-  }
-
   void
   standard_normals(const std::uint64_t seed, const std::uint64_t realization,
                    std::vector<double> &xi)

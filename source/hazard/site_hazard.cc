@@ -1,6 +1,7 @@
 #include <poundfe/hazard/site_hazard.h>
 #include <poundfe/excitation/ground_motion.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/standard_normal.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -22,18 +23,6 @@ namespace poundfe
     radians(const double degrees)
     {
       return degrees * pi / 180.0;
-    }
-
-    double
-    standard_normal_cdf(const double z)
-    {
-      return 0.5 * std::erfc(-z / std::sqrt(2.0));
-    }
-
-    double
-    standard_normal_pdf(const double z)
-    {
-      return std::exp(-0.5 * z * z) / std::sqrt(2.0 * pi);
     }
 
     /// The Gumbel sample: observed maxima and the censored years.

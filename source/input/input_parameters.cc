@@ -314,6 +314,62 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// Every entry of `prm` as (path, value), from deal.II's short PRM
+    /// listing ("subsection S", "set E = V", "end"), in declaration order.
+    std::vector<std::pair<std::string, std::string>>
+    flattened_values(const ParameterHandler &prm)
+    {
+      std::ostringstream listing;
+      prm.print_parameters(listing, ParameterHandler::OutputStyle(ParameterHandler::ShortPRM |
+                                                                  ParameterHandler::KeepDeclarationOrder));
+      std::vector<std::pair<std::string, std::string>> values;
+      std::vector<std::string>                         sections;
+      std::istringstream                               in(listing.str());
+      for (std::string line; std::getline(in, line);)
+        {
+          const std::string text = trimmed(line);
+          if (text.rfind("subsection ", 0) == 0)
+            sections.push_back(trimmed(text.substr(11)));
+          else if (text == "end" && !sections.empty())
+            sections.pop_back();
+          else if (text.rfind("set ", 0) == 0)
+            {
+              const std::size_t equals = text.find('=');
+              std::string       path;
+              for (const std::string &s : sections)
+                path += s + "/";
+              path += trimmed(text.substr(4, equals - 4));
+              values.emplace_back(path, equals == std::string::npos ? "" : trimmed(text.substr(equals + 1)));
+            }
+        }
+      return values;
+    }
+  } // namespace
+
+  std::vector<std::pair<std::string, std::string>>
+  resume_inputs(const InputParameters &input, const std::string &command)
+  {
+    // entries that change how many realizations run or how they are
+    // reported, never what one realization computes
+    const auto neutral = [](const std::string &path) {
+      for (const char *section : {"Output/", "Drift limits/"})
+        if (path.rfind(section, 0) == 0)
+          return true;
+      for (const char *entry : {"Monte Carlo/Realizations", "Fragility/Realizations per level",
+                                "Fragility/PGA levels", "Stationary PDF/Number of realizations"})
+        if (path == entry)
+          return true;
+      return false;
+    };
+    std::vector<std::pair<std::string, std::string>> inputs{{"command", command}};
+    for (const auto &entry : input.values)
+      if (!neutral(entry.first))
+        inputs.push_back(entry);
+    return inputs;
+  }
+
   InputParameters
   read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
   {
@@ -367,6 +423,7 @@ namespace poundfe
                          "'Building " + building + "' is given, but Model/Number of buildings is " +
                            std::to_string(n_buildings) + " (raise it, or remove the section)");
       }
+    p.values = flattened_values(prm);
     p.finalize();
     return p;
   }

@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <set>
 #include <stdexcept>
@@ -109,6 +110,18 @@ namespace poundfe
       static std::string directory;
       return directory;
     }
+
+    using ResumeInputs = std::vector<std::pair<std::string, std::string>>;
+
+    /// The inputs of the command under way (expect_output_directory).
+    ResumeInputs &
+    command_resume_inputs()
+    {
+      static ResumeInputs inputs;
+      return inputs;
+    }
+
+    constexpr const char *resume_record_suffix = ".inputs";
   } // namespace
 
   void
@@ -140,7 +153,11 @@ namespace poundfe
             directories.push_back(entry);
             continue;
           }
-        if (std::find(resumed.begin(), resumed.end(), path.filename().string()) != resumed.end())
+        const std::string name = path.filename().string();
+        const auto        is_resumed = [&](const std::string &r) {
+          return name == r || name == r + resume_record_suffix;
+        };
+        if (std::any_of(resumed.begin(), resumed.end(), is_resumed))
           {
             if (fs::exists(fs::symlink_status(path, error)))
               kept.push_back(entry);
@@ -174,9 +191,57 @@ namespace poundfe
   }
 
   void
-  expect_output_directory(const std::string &directory)
+  expect_output_directory(const std::string &directory, ResumeInputs resume_inputs)
   {
-    expected_directory() = directory;
+    expected_directory()    = directory;
+    command_resume_inputs() = std::move(resume_inputs);
+  }
+
+  void
+  resume_file(const std::string &file)
+  {
+    const ResumeInputs &now = command_resume_inputs();
+    if (now.empty())
+      return;
+    const std::string record = file + resume_record_suffix;
+    std::error_code   error;
+    if (!fs::exists(fs::symlink_status(file, error)))
+      {
+        std::string text;
+        for (const auto &[path, value] : now)
+          text += path + " = " + value + "\n";
+        write_file_atomically(record, text);
+        return;
+      }
+    const std::string remedy = "; remove it (its realizations are computed again) or choose another "
+                               "output directory";
+    std::ifstream in(record);
+    if (!in)
+      throw InputError(file, 0, "",
+                       "holds realizations of an earlier run that left no record of its input (" +
+                         fs::path(record).filename().string() + "), so they may belong to another model" +
+                         remedy);
+    std::map<std::string, std::string> before;
+    for (std::string line; std::getline(in, line);)
+      if (const std::size_t at = line.find(" = "); at != std::string::npos)
+        before.emplace(line.substr(0, at), line.substr(at + 3));
+    const auto value_before = [&](const std::string &path) {
+      const auto it = before.find(path);
+      return it == before.end() ? std::string("(no such entry then)") : it->second;
+    };
+    if (const std::string command = value_before("command"); command != now.front().second)
+      throw InputError(file, 0, "",
+                       "holds the realizations of `" + command + "`, not of `" + now.front().second +
+                         "`" + remedy);
+    std::map<std::string, std::string> current(now.begin(), now.end());
+    for (const auto &[path, value] : before) // an entry this version no longer has
+      current.emplace(path, "(no such entry now)");
+    for (const auto &[path, value] : current)
+      if (value_before(path) != value)
+        throw InputError(file, 0, path,
+                         "holds realizations computed with '" + value_before(path) +
+                           "'; the input now gives '" + value +
+                           "', and one table must not mix two models" + remedy);
   }
 
   void

@@ -89,12 +89,6 @@ namespace poundfe
   }
 
   double
-  standard_normal_pdf(const double u)
-  {
-    return std::exp(-0.5 * u * u) / std::sqrt(2 * M_PI);
-  }
-
-  double
   standard_normal_quantile(const double p)
   {
     if (p <= 0)

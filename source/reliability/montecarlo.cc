@@ -239,7 +239,10 @@ namespace poundfe
         {
           try
             {
-              if (std::filesystem::exists(file))
+              // its record first: an earlier run's rows must be of this model
+              const bool earlier_run = std::filesystem::exists(file);
+              resume_file(file);
+              if (earlier_run)
                 {
                   bool damaged = false;
                   rows = read_rows(file, header, job.seed, job.names.size(), damaged);

@@ -5,6 +5,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/output_directory.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -140,7 +141,7 @@ namespace poundfe
     , comm(comm)
   {
     const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
-    std::string        file, problem; // of a journal refused on rank 0
+    std::string        file, problem, parameter; // of a journal refused on rank 0
     int                line = 0;
     if (rank == 0)
       try
@@ -150,12 +151,15 @@ namespace poundfe
       catch (const InputError &e)
         {
           file = e.file(), problem = e.problem(), line = e.line();
+          // the entry whose value differs from the journal's record, else
+          // the journal's own lines
+          parameter = e.parameter().empty() ? "Subset simulation" : e.parameter();
         }
     problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty()) // every rank throws: none waits for the others
       throw InputError(dealii::Utilities::MPI::broadcast(comm, file, 0),
-                       dealii::Utilities::MPI::broadcast(comm, line, 0), "Subset simulation",
-                       problem);
+                       dealii::Utilities::MPI::broadcast(comm, line, 0),
+                       dealii::Utilities::MPI::broadcast(comm, parameter, 0), problem);
     // every rank takes the responses the journal holds
     std::vector<double> flat;
     if (rank == 0)
@@ -181,6 +185,9 @@ namespace poundfe
   void
   SubsetRunsFile::merge()
   {
+    // the record of the model the journal's runs are of (the settings line
+    // says only the sampler's settings)
+    resume_file(directory + "/" + journal_name);
     std::map<Key, std::pair<double, bool>> runs;
     std::vector<std::filesystem::path>     rank_files;
     if (std::filesystem::is_directory(directory))

@@ -5,7 +5,9 @@
 #    completes without losing or duplicating a realization, to the same numbers;
 #  - Subset Simulation and fragility on two ranks equal one rank;
 #  - ground-motion --realizations writes the samples and the ensemble PSD;
-#  - command-specific bad input: exit 1, one message, nothing written.
+#  - command-specific bad input: exit 1, one message, nothing written;
+#  - a directory's realizations.csv or subset journal of another seed or
+#    model (or without the record of its input) is refused, not resumed.
 set -eu
 poundfe=$1 mpirun=$2 input=$3
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -88,5 +90,37 @@ sed 's/set Seed        = 2026/set Seed        = 7/' "$input" > "$work/other-seed
 if "$poundfe" montecarlo "$work/other-seed.prm" --output "$work/one" > /dev/null 2> "$work/stderr"; then
   fail "montecarlo: resumed a directory of another seed"
 fi
-grep -q "seed 2026" "$work/stderr" || fail "montecarlo: other seed: $(cat "$work/stderr")"
+grep -q "Stochastic/Seed': holds realizations computed with '2026'; the input now gives '7'" "$work/stderr" ||
+  fail "montecarlo: other seed: $(cat "$work/stderr")"
+echo "ok   bad input: $(cat "$work/stderr")"
+# nor one of another model (before: resumed, its rows mixed with the new
+# model's), and the table it holds stays as it was
+cp "$work/one/realizations.csv" "$work/one-rows.csv"
+sed 's/set Column E          = 3.0e10/set Column E          = 3.3e10/' "$input" > "$work/stiffer.prm"
+if "$poundfe" montecarlo "$work/stiffer.prm" --output "$work/one" > /dev/null 2> "$work/stderr"; then
+  fail "montecarlo: resumed a directory of another model"
+fi
+grep -q "Building 1/Column E': holds realizations computed with '3.0e10'; the input now gives '3.3e10'" "$work/stderr" ||
+  fail "montecarlo: other model: $(cat "$work/stderr")"
+[ "$(wc -l < "$work/stderr")" -eq 1 ] || fail "montecarlo: other model: not one line"
+cmp -s "$work/one/realizations.csv" "$work/one-rows.csv" || fail "montecarlo: other model: realizations.csv changed"
+echo "ok   bad input: $(cat "$work/stderr")"
+# more realizations of the same model resume; a table without its record does not
+sed 's/set Realizations   = 8/set Realizations   = 9/' "$input" > "$work/nine.prm"
+"$poundfe" montecarlo "$work/nine.prm" --output "$work/one" > "$work/nine.log"
+grep -q "resuming: 8 of 9" "$work/nine.log" || fail "montecarlo: more realizations: $(cat "$work/nine.log")"
+echo "ok   montecarlo: Realizations 8 -> 9 resumes from the 8"
+rm "$work/one/realizations.csv.inputs"
+if "$poundfe" montecarlo "$work/nine.prm" --output "$work/one" > /dev/null 2> "$work/stderr"; then
+  fail "montecarlo: resumed a table without its record"
+fi
+grep -q "left no record of its input (realizations.csv.inputs)" "$work/stderr" ||
+  fail "montecarlo: no record: $(cat "$work/stderr")"
+echo "ok   bad input: $(cat "$work/stderr")"
+# the subset journal likewise
+if "$poundfe" subset "$work/stiffer.prm" --output "$work/subset-one" > /dev/null 2> "$work/stderr"; then
+  fail "subset: resumed the journal of another model"
+fi
+grep -q "subset_runs.csv.*Building 1/Column E': holds realizations computed with '3.0e10'" "$work/stderr" ||
+  fail "subset: other model: $(cat "$work/stderr")"
 echo "ok   bad input: $(cat "$work/stderr")"

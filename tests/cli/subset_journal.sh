@@ -23,6 +23,7 @@ sed 's/set Duration    = 8/set Duration    = 3/; s/set Rise end    = 2/set Rise 
 "$poundfe" subset short.prm --output out > reference.log 2>&1 || { echo "FAIL reference run: $(tail -3 reference.log)"; exit 1; }
 [ -f out/subset_runs.csv ] || { echo "FAIL no subset_runs.csv after the reference run"; exit 1; }
 cp out/subset_runs.csv journal.csv
+cp out/subset_runs.csv.inputs record.txt # the input the journal is of (output_directory.h)
 runs=$(($(wc -l < journal.csv) - 2))
 [ "$runs" -gt 10 ] || { echo "FAIL only $runs runs in the journal"; exit 1; }
 
@@ -33,6 +34,7 @@ journal() {
   n=$((n + 1))
   rm -rf out && mkdir out
   if [ -d "$file" ]; then mkdir out/subset_runs.csv; else cp "$file" out/subset_runs.csv; fi
+  cp record.txt out/subset_runs.csv.inputs
   timeout -k 5 120 "$poundfe" subset short.prm --output out > stdout 2> stderr || got=$?
   if [ "$got" -ne "$status" ]; then
     fail "$file: exit $got, expected $status: $(head -c 300 stderr)"; return

@@ -14,6 +14,8 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/output_directory.h>
 
+#include "output_test_files.h"
+
 #include <boost/test/unit_test.hpp>
 
 #include <filesystem>
@@ -26,13 +28,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-  std::string
-  fresh_directory(const std::string &name)
-  {
-    const std::string dir = fs::temp_directory_path() / ("poundfe-" + name);
-    fs::remove_all(dir);
-    return dir;
-  }
+  using poundfe_test::fresh_directory;
 
   /// Every file and directory under `directory`, relative, sorted.
   std::set<std::string>

@@ -25,6 +25,8 @@
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
 
+#include "output_test_files.h"
+
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -36,39 +38,8 @@ using namespace poundfe;
 
 namespace
 {
-  struct Table
-  {
-    std::vector<std::string>         header;
-    std::vector<std::vector<double>> rows;
-
-    unsigned int
-    column(const std::string &name) const
-    {
-      const auto it = std::find(header.begin(), header.end(), name);
-      BOOST_REQUIRE_MESSAGE(it != header.end(), "no column " << name);
-      return it - header.begin();
-    }
-  };
-
-  Table
-  read_csv(const std::string &path)
-  {
-    std::ifstream in(path);
-    BOOST_REQUIRE_MESSAGE(in, "cannot read " << path);
-    Table       table;
-    std::string line, cell;
-    std::getline(in, line);
-    for (std::istringstream s(line); std::getline(s, cell, ',');)
-      table.header.push_back(cell);
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        for (std::istringstream s(line); std::getline(s, cell, ',');)
-          row.push_back(std::stod(cell));
-        table.rows.push_back(row);
-      }
-    return table;
-  }
+  using poundfe_test::read_csv;
+  using poundfe_test::Table;
 
   std::string
   write_input(const std::string &name, const std::string &text)

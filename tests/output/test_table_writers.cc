@@ -24,6 +24,8 @@
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/output_directory.h>
 
+#include "output_test_files.h"
+
 #include <boost/test/unit_test.hpp>
 
 #include <charconv>
@@ -41,40 +43,10 @@ using namespace poundfe;
 
 namespace
 {
-  std::string
-  read_bytes(const std::string &path)
-  {
-    std::ifstream in(path, std::ios::binary);
-    BOOST_REQUIRE_MESSAGE(in, "cannot read " << path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-
-  struct Table
-  {
-    std::vector<std::string>         header;
-    std::vector<std::vector<double>> rows;
-  };
-
-  /// A CSV table; numbers through strtod (correctly rounded).
-  Table
-  read_csv(const std::string &path)
-  {
-    std::istringstream in(read_bytes(path));
-    Table              table;
-    std::string        line, cell;
-    std::getline(in, line);
-    for (std::istringstream s(line); std::getline(s, cell, ',');)
-      table.header.push_back(cell);
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        for (std::istringstream s(line); std::getline(s, cell, ',');)
-          row.push_back(std::strtod(cell.c_str(), nullptr));
-        BOOST_REQUIRE(row.size() == table.header.size());
-        table.rows.push_back(row);
-      }
-    return table;
-  }
+  using poundfe_test::fresh_directory;
+  using poundfe_test::read_bytes;
+  using poundfe_test::read_csv;
+  using poundfe_test::Table;
 
   /// A .npy file of float64 read from the format's definition: magic
   /// "\x93NUMPY", version 1.0, little-endian uint16 header length, a dict
@@ -137,14 +109,6 @@ namespace
       for (std::size_t j = 0; j < a.rows[i].size(); ++j)
         different += !same_bits(a.rows[i][j], b.rows[i][j]);
     BOOST_TEST(different == 0u, what << ": " << different << " numbers differ");
-  }
-
-  std::string
-  fresh_directory(const std::string &name)
-  {
-    const std::string dir = std::filesystem::temp_directory_path() / ("poundfe-" + name);
-    std::filesystem::remove_all(dir);
-    return dir;
   }
 
   /// The names of summary.json's output.files.

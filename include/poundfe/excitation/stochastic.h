@@ -25,6 +25,7 @@
 #ifndef poundfe_excitation_stochastic_h
 #define poundfe_excitation_stochastic_h
 
+#include <poundfe/base/standard_normal.h>
 #include <poundfe/excitation/ground_motion.h>
 
 #include <array>
@@ -117,9 +118,6 @@ namespace poundfe
 
   /// Samples of a motion of `duration` on a grid of `interval`, both ends included.
   unsigned int n_samples(double duration, double interval);
-
-  /// Standard normal CDF.
-  double standard_normal_cdf(double x);
 
   /// xi.size() standard normals of realization `realization`.
   void standard_normals(std::uint64_t seed, std::uint64_t realization, std::vector<double> &xi);

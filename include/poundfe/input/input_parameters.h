@@ -74,6 +74,9 @@ namespace poundfe
     SpectrumParameters        spectrum;    // Spectrum (response spectra)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
+    /// Every entry's value as read (defaults included), by its path
+    /// "Section/Subsection/Entry", in declaration order.
+    std::vector<std::pair<std::string, std::string>> values;
 
     /// Declare every section, with `model.buildings.size()` buildings.
     void declare(dealii::ParameterHandler &prm);
@@ -94,6 +97,15 @@ namespace poundfe
   /// path. (Used by sweeps: one InputParameters per swept value.)
   InputParameters read_parameters(const std::string &file,
                                   const std::vector<ParameterOverride> &overrides);
+
+  /// What decides the rows a resuming command (montecarlo, fragility, ...)
+  /// keeps from an earlier run in its output directory: the command's name
+  /// (path "command") and every entry of `input` but those that only say how
+  /// many realizations to run or how to report them (Output, Drift limits,
+  /// the realization counts, the fragility levels, each level in its own
+  /// directory). output_directory.h compares it with the earlier run's.
+  std::vector<std::pair<std::string, std::string>>
+  resume_inputs(const InputParameters &input, const std::string &command);
 
   /// Print every parameter with its documentation and default.
   void print_parameters(std::ostream &out);

@@ -15,6 +15,7 @@
 #define poundfe_output_output_directory_h
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace poundfe
@@ -37,7 +38,21 @@ namespace poundfe
   /// itself (those that resume files), so no command's results lie beside an
   /// earlier run's, and bad input, refused before the first write, leaves
   /// nothing. An empty `directory` ends it.
-  void expect_output_directory(const std::string &directory);
+  /// `resume_inputs` (input_parameters.h) are what decide the rows of a
+  /// file the command resumes (resume_file below).
+  void expect_output_directory(const std::string                                      &directory,
+                               std::vector<std::pair<std::string, std::string>> resume_inputs = {});
+
+  /// A table the command appends to and resumes from a later run
+  /// (realizations.csv): its inputs are kept beside it in "<file>.inputs"
+  /// (one "path = value" line each). When `file` exists, it throws an
+  /// InputError unless that record equals the inputs of the command under
+  /// way (expect_output_directory), so that a run never continues a table
+  /// computed from another model; else it writes the record (atomically)
+  /// before the table is started. Without inputs (a unit test's scratch
+  /// table) it does nothing. prepare_output_directory keeps the record of
+  /// every file it keeps.
+  void resume_file(const std::string &file);
 
   /// Lists `path` (a file or a directory about to be created) in the manifest
   /// of the prepared output directory that contains it; does nothing for a

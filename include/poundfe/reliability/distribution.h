@@ -26,6 +26,8 @@
 #ifndef poundfe_reliability_distribution_h
 #define poundfe_reliability_distribution_h
 
+#include <poundfe/base/standard_normal.h>
+
 #include <string>
 #include <vector>
 
@@ -87,9 +89,8 @@ namespace poundfe
     std::vector<double> native;
   };
 
-  /// Standard normal density phi and the inverse of Phi (Phi itself:
-  /// standard_normal_cdf, excitation/stochastic.h).
-  double standard_normal_pdf(double u);
+  /// The inverse of Phi, u clipped to +-u_limit at p = 0 and 1 (phi and Phi
+  /// themselves: base/standard_normal.h).
   double standard_normal_quantile(double p);
 } // namespace poundfe
 
