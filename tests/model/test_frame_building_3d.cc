@@ -297,8 +297,9 @@ BOOST_AUTO_TEST_CASE(p_delta_softens_the_storey_as_the_closed_form)
   check_chopra(one_storey_frame(1.3, "", model), k(2e-3), k(1e-3), "chopra_p_delta_3d", k_twist);
   // against the exact stability function of the clamped-guided column,
   // k = (E I / h^3) a^3 sin a / (2 - 2 cos a - a sin a), a = h sqrt(P/(E I))
-  // (Timoshenko & Gere ch. 1): the cubic element's linearised k differs by
-  // O(a^4); measured below, held to 1 %
+  // (Timoshenko & Gere ch. 1) = 12 - 6 a^2/5 - a^4/700 - ... in units of
+  // E I / h^3: the cubic element's linearised k lacks the a^4 term, here
+  // (a^2 = 1.63) 3.8e-4 of k, 1.9e-4 of omega; held to 5e-4
   const Analysis a = prepare_analysis(
       poundfe_test::input_of("p_delta_exact_3d", one_storey_frame(0, "", model)));
   const double alpha = h * std::sqrt(P / (E * 1e-3));
@@ -309,7 +310,7 @@ BOOST_AUTO_TEST_CASE(p_delta_softens_the_storey_as_the_closed_form)
                                                      << " rad/s, exact stability function "
                                                      << omega_y << ", relative difference "
                                                      << a.modes.omega[0] / omega_y - 1);
-  BOOST_TEST(a.modes.omega[0] == omega_y, boost::test_tools::tolerance(1e-2));
+  BOOST_TEST(a.modes.omega[0] == omega_y, boost::test_tools::tolerance(5e-4));
   // a weight past the element's critical load (10 E Iz / h^2 per column) is refused
   const double      g_buckling = 1.05 * 10 * E * 1e-3 / (h * h) * 6 / 8e4;
   const std::string buckled    = poundfe_test::input_error_of([&] {
