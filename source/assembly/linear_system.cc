@@ -132,20 +132,32 @@ namespace poundfe
           }
     }
 
+    FrameElement3D
+    element_of(const Member3D &member)
+    {
+      using Point3 = Eigen::Map<const Eigen::Vector3d>;
+      return {Point3(member.ends[0].data()), Point3(member.ends[1].data()),
+              Point3(member.orientation.data()), member.section};
+    }
+
+    /// T of a 3D member: its 12 end DOFs from its model DOFs.
+    using MemberMap = Eigen::Map<const Eigen::Matrix<double, 12, Eigen::Dynamic, Eigen::RowMajor>>;
+    MemberMap
+    map_of(const Member3D &member)
+    {
+      return MemberMap(member.map.data(), 12, member.dofs.size());
+    }
+
     /// The members of 3D frames (T_eᵀ K_e T_e, T_eᵀ M_e T_e over their model
     /// DOFs: the diaphragm's master-slave reduction and the hinges), the
     /// hinges' initial stiffness and the joints' vertical masses.
     void
     add_frame_3d_terms(const Model &model, Triplets &k_triplets, Triplets &m_triplets)
     {
-      using RowMajor = Eigen::Matrix<double, 12, Eigen::Dynamic, Eigen::RowMajor>;
       for (const Member3D &member : model.members_3d)
         {
-          using Point3 = Eigen::Map<const Eigen::Vector3d>;
-          const FrameElement3D element(Point3(member.ends[0].data()),
-                                       Point3(member.ends[1].data()),
-                                       Point3(member.orientation.data()), member.section);
-          const Eigen::Map<const RowMajor> t(member.map.data(), 12, member.dofs.size());
+          const FrameElement3D element = element_of(member);
+          const MemberMap      t       = map_of(member);
           scatter(model, member.dofs, Eigen::MatrixXd(t.transpose() * element.stiffness() * t),
                   k_triplets);
           scatter(model, member.dofs,
@@ -268,6 +280,24 @@ namespace poundfe
         for (unsigned int i = 0; i < 6; ++i)
           add(dofs[i], weight[i]);
       }
+    if (model.dimension == 3)
+      {
+        // 3D frames: z is up; the joints' vertical masses and the members'
+        // self-weight (the nodal masses of a floor are its plan inertia).
+        for (const DofMass &mass : model.dof_masses)
+          add(mass.dof, -model.gravity * mass.mass);
+        Vector12 vertical = Vector12::Zero();
+        vertical[2] = vertical[8] = 1;
+        for (const Member3D &member : model.members_3d)
+          {
+            const Vector12 weight =
+              -model.gravity * (element_of(member).mass(model.mass_matrix) * vertical);
+            const Vector on_dofs = map_of(member).transpose() * weight;
+            for (unsigned int i = 0; i < member.dofs.size(); ++i)
+              add(member.dofs[i], on_dofs[i]);
+          }
+        return loads;
+      }
     for (const NodalMass &mass : model.masses)
       add(Model::dof(mass.node, Component::uy), -model.gravity * mass.mass);
     return loads;
@@ -293,6 +323,16 @@ namespace poundfe
             end_displacements[i] = equation >= 0 ? u[equation] : 0.0;
           }
         forces.push_back(element.axial_force(end_displacements));
+      }
+    for (const Member3D &member : model.members_3d)
+      {
+        Vector on_dofs(member.dofs.size());
+        for (unsigned int i = 0; i < member.dofs.size(); ++i)
+          {
+            const int equation = model.equation(member.dofs[i]);
+            on_dofs[i]         = equation >= 0 ? u[equation] : 0.0;
+          }
+        forces.push_back(element_of(member).axial_force(map_of(member) * on_dofs));
       }
     return forces;
   }
@@ -320,7 +360,7 @@ namespace poundfe
   geometric_stiffness(const Model &model, const std::vector<double> &axial_forces,
                       const std::vector<double> &storey_compressions)
   {
-    AssertDimension(axial_forces.size(), model.members.size());
+    AssertDimension(axial_forces.size(), model.members.size() + model.members_3d.size());
     AssertDimension(storey_compressions.size(), model.links.size());
     Triplets triplets;
     for (unsigned int m = 0; m < model.members.size(); ++m)
@@ -328,6 +368,15 @@ namespace poundfe
         const Member      &member = model.members[m];
         const FrameElement element = element_of(model, member);
         scatter(model, member_dofs(member), element.geometric_stiffness(axial_forces[m]),
+                triplets);
+      }
+    for (unsigned int m = 0; m < model.members_3d.size(); ++m)
+      {
+        const Member3D &member = model.members_3d[m];
+        const MemberMap t      = map_of(member);
+        const double    n      = axial_forces[model.members.size() + m];
+        scatter(model, member.dofs,
+                Eigen::MatrixXd(t.transpose() * element_of(member).geometric_stiffness(n) * t),
                 triplets);
       }
     for (unsigned int l = 0; l < model.links.size(); ++l)

@@ -315,21 +315,21 @@ namespace poundfe
         const double          angle = plan.angle + p.column_angle * M_PI / 180;
         const Eigen::Vector3d column_axis(std::cos(angle), std::sin(angle), 0);
         const Eigen::Vector3d vertical(0, 0, 1);
-        // (E, G, A, Iy, Iz, J, mass per length) of storey i; no shear deformation
-        const auto section = [i](const std::array<const std::vector<double> *, 7> &v) {
-          std::array<double, 7> x;
-          for (unsigned int k = 0; k < 7; ++k)
+        // (E, G, A, Iy, Iz, J, Avy, Avz, mass per length) of storey i
+        const auto section = [i](const std::array<const std::vector<double> *, 9> &v) {
+          std::array<double, 9> x;
+          for (unsigned int k = 0; k < 9; ++k)
             x[k] = value_for(*v[k], i - 1);
-          return Section3D{x[0], x[1], x[2], x[3], x[4], x[5], 0, 0, x[6]};
+          return Section3D{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8]};
         };
-        const Section3D column = section({{&p.column_youngs_modulus, &p.column_shear_modulus,
-                                           &p.column_area, &p.column_second_moment,
-                                           &p.column_second_moment_z, &p.column_torsion_constant,
-                                           &p.column_mass_per_length}});
+        const Section3D column = section(
+          {{&p.column_youngs_modulus, &p.column_shear_modulus, &p.column_area,
+            &p.column_second_moment, &p.column_second_moment_z, &p.column_torsion_constant,
+            &p.column_shear_area_y, &p.column_shear_area_z, &p.column_mass_per_length}});
         const Section3D beam =
           section({{&p.beam_youngs_modulus, &p.beam_shear_modulus, &p.beam_area,
                     &p.beam_second_moment, &p.beam_second_moment_z, &p.beam_torsion_constant,
-                    &p.beam_mass_per_length}});
+                    &p.beam_shear_area_y, &p.beam_shear_area_z, &p.beam_mass_per_length}});
         const std::string s = std::to_string(i) + ".";
         for (unsigned int jx = 0; jx < level.size(); ++jx)
           for (unsigned int jy = 0; jy < level[jx].size(); ++jy)

@@ -45,6 +45,22 @@ namespace poundfe
     prm.add_parameter("Beam J", beam_torsion_constant,
                       "[3D frame] Beam torsion constant, one or per floor (required). Unit: "
                       "m^4.");
+    prm.add_parameter("Column Avz", column_shear_area_z,
+                      "[3D frame] Column shear area along the local z axis, which goes "
+                      "with Column I (sway along x with Column angle 0): Timoshenko "
+                      "shear deformation, Phi = 12 E I/(G Avz h^2); e.g. 5/6 A for a "
+                      "rectangle, the web for an I section. 0: none (Euler-Bernoulli). "
+                      "One or per storey. Unit: m^2.");
+    prm.add_parameter("Column Avy", column_shear_area_y,
+                      "[3D frame] Column shear area along the local y axis, which goes "
+                      "with Column Iz (sway along y with Column angle 0). 0: no shear "
+                      "deformation. One or per storey. Unit: m^2.");
+    prm.add_parameter("Beam Avz", beam_shear_area_z,
+                      "[3D frame] Beam shear area for vertical shear (with Beam I). 0: no "
+                      "shear deformation. One or per floor. Unit: m^2.");
+    prm.add_parameter("Beam Avy", beam_shear_area_y,
+                      "[3D frame] Beam shear area for horizontal shear (with Beam Iz). 0: "
+                      "no shear deformation. One or per floor. Unit: m^2.");
     prm.add_parameter("Diaphragm", diaphragm,
                       "[3D frame] rigid: each floor a rigid diaphragm, its joints slaved "
                       "exactly to (ux, uy, rz) at the mass centre (which carries the floor "
@@ -79,6 +95,12 @@ namespace poundfe
     required("Beam E", beam_youngs_modulus, "beams' Young's modulus E");
     required("Beam A", beam_area, "beams' area A");
     required("Beam I", beam_second_moment, "beams' second moment I");
+    for (const auto &[entry, values] :
+         {std::pair<const char *, const std::vector<double> *>{"Column Avz", &column_shear_area_z},
+          {"Column Avy", &column_shear_area_y},
+          {"Beam Avz", &beam_shear_area_z},
+          {"Beam Avy", &beam_shear_area_y}})
+      input.list(s + entry, *values, n, true, "one per storey");
     if (n_bays_y > 0)
       input.list(s + "Bay widths y", bay_widths_y, n_bays_y, false, "one per bay");
     if (n_bays_y == 0 && diaphragm == "rigid")

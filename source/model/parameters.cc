@@ -391,12 +391,15 @@ namespace poundfe
   void
   ModelParameters::finalize_plan(const InputFile &input)
   {
-    if (geometric_nonlinearity != GeometricNonlinearity::none)
-      input.fail("Model/Geometric nonlinearity",
-                 "P-Delta is not available with Dimension = 3 (shear buildings in plan)");
     for (unsigned int b = 0; b < buildings.size(); ++b)
       {
         const std::string s = "Building " + std::to_string(b + 1) + "/";
+        if (geometric_nonlinearity != GeometricNonlinearity::none &&
+            buildings[b].type == BuildingType::shear)
+          input.fail("Model/Geometric nonlinearity",
+                     "P-Delta with Dimension = 3 is for frames (from their columns' axial "
+                     "forces); building " + std::to_string(b + 1) +
+                       " is a torsionally coupled shear building");
         if (buildings[b].type == BuildingType::mesh)
           input.fail(s + "Type", "Dimension = 3 takes shear buildings and frames; meshes "
                                  "are planar");
@@ -431,8 +434,9 @@ namespace poundfe
     add_choice(prm, "Geometric nonlinearity", geometric_nonlinearity,
                "p-delta: the geometric stiffness of the gravity loads (every mass times "
                "Gravity), linearised and added to K once: frame members from their axial "
-               "forces in a linear static gravity analysis, shear-building storeys -P/h "
-               "with P the weight above. none: small displacements. Unit: -.",
+               "forces in a linear static gravity analysis (3D frames too: z up), "
+               "shear-building storeys -P/h with P the weight above (2D only). none: "
+               "small displacements. Unit: -.",
                geometric_nonlinearity_names());
     prm.add_parameter("Dimension", dimension,
                       "2: planar frames and stick models (x horizontal, y up). 3: "

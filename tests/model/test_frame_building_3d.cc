@@ -25,11 +25,13 @@ namespace
   /// frame's. Columns carry mass; the beams none (the y beams would add
   /// mass the planar frame has not).
   std::string
-  frame_text(const unsigned int dimension, const std::string &mass_matrix, const bool hinges)
+  frame_text(const unsigned int dimension, const std::string &mass_matrix, const bool hinges,
+             const bool p_delta = false)
   {
     const bool  three_d = dimension == 3;
     std::string text    = "subsection Model\n set Dimension = " + std::to_string(dimension) +
                        "\n set Mass matrix = " + mass_matrix +
+                       (p_delta ? "\n set Geometric nonlinearity = p-delta" : "") +
                        "\nend\n"
                        "subsection Building 1\n set Type = frame\n set Number of storeys = 3\n"
                        " set Storey heights = 3.5, 3, 3\n set Number of bays = 2\n"
@@ -105,13 +107,14 @@ namespace
   /// Largest relative difference of the peaks |u| of every equivalent DOF,
   /// and of the whole histories against the DOF's peak.
   void
-  check_equivalent(const bool hinges, const std::string &mass_matrix)
+  check_equivalent(const bool hinges, const std::string &mass_matrix, const bool p_delta = false)
   {
-    const std::string     name = "frame3d_" + mass_matrix + (hinges ? "_hinges" : "");
+    const std::string name =
+        "frame3d_" + mass_matrix + (hinges ? "_hinges" : "") + (p_delta ? "_p_delta" : "");
     const InputParameters p2 =
-        poundfe_test::input_of(name + "_2d", frame_text(2, mass_matrix, hinges));
+        poundfe_test::input_of(name + "_2d", frame_text(2, mass_matrix, hinges, p_delta));
     const InputParameters p3 =
-        poundfe_test::input_of(name + "_3d", frame_text(3, mass_matrix, hinges));
+        poundfe_test::input_of(name + "_3d", frame_text(3, mass_matrix, hinges, p_delta));
     const Analysis a2 = prepare_analysis(p2), a3 = prepare_analysis(p3);
     const auto     map = equivalents(a2.model, a3.model);
     const auto     r2 = poundfe_test::recorded_run(a2, p2), r3 = poundfe_test::recorded_run(a3, p3);
@@ -152,9 +155,9 @@ namespace
   /// 1e6 times stiffer than in bending (the closed form's shear-frame
   /// columns: clamped at both ends, not shortening).
   std::string
-  one_storey_frame(const double e, const std::string &hinges = "")
+  one_storey_frame(const double e, const std::string &hinges = "", const std::string &model = "")
   {
-    return "subsection Model\n set Dimension = 3\nend\n"
+    return "subsection Model\n set Dimension = 3\n" + model + "end\n"
            "subsection Building 1\n set Type = frame\n set Number of storeys = "
            "1\n"
            " set Storey heights = 3.5\n set Number of bays = 2\n set Bay widths "
@@ -174,13 +177,16 @@ namespace
            "subsection Output\n set Number of modes = 3\nend\n";
   }
 
+  /// kx, ky: each column's lateral stiffness along x, y; k_twist: its
+  /// torsional stiffness (G J / h without P-Delta).
   void
-  check_chopra(const std::string &text, const double kx, const double ky, const std::string &name)
+  check_chopra(const std::string &text, const double kx, const double ky, const std::string &name,
+               const double k_twist = 1.2e10 * 1.5e-3 / 3.5)
   {
-    const double e = 1.3, m = 8e4, h = 3.5, G = 1.2e10;
+    const double e = 1.3, m = 8e4;
     const double I  = m * (144 + 25) / 12.0;
     const double Kx = 6 * kx, Ky = 6 * ky;
-    const double k_theta = 6 * kx * 2.5 * 2.5 + 4 * ky * 36 + 6 * G * 1.5e-3 / h + e * e * Ky;
+    const double k_theta = 6 * kx * 2.5 * 2.5 + 4 * ky * 36 + 6 * k_twist + e * e * Ky;
     const double wy2 = Ky / m, wt2 = k_theta / I, r2 = I / m;
     const double mean = 0.5 * (wy2 + wt2);
     const double root = std::sqrt(0.25 * (wy2 - wt2) * (wy2 - wt2) + wy2 * wy2 * e * e / r2);
@@ -240,6 +246,86 @@ BOOST_AUTO_TEST_CASE(base_hinges_about_both_axes_match_chopra)
   check_chopra(one_storey_frame(1.3, " subsection Hinges\n  set Locations = column bases\n"
                                      "  set Yield moment = 1e9\n  set Stiffness = 2e7\n end\n"),
                k(2e-3), k(1e-3), "chopra_hinges_3d");
+}
+
+BOOST_AUTO_TEST_CASE(shear_deformation_matches_chopra_with_timoshenko_columns)
+{
+  // the same storey with shear areas: a clamped-guided Timoshenko column
+  // sways with k = 12 E I / (h^3 (1 + Phi)), Phi = 12 E I / (G Av h^2)
+  // (Przemieniecki ch. 5), Avz with Column I (along x), Avy with Column Iz
+  // (along y); small shear areas (Phi = 0.49, 0.24) make it matter. The
+  // beams' shear areas are large enough (G Av / L ~ 2e13 N/m) to keep them
+  // rigid, as the closed form has them
+  const double h = 3.5, E = 3e10, G = 1.2e10, avz = 0.01, avy = 0.01;
+  const auto   k = [&](const double I, const double av) {
+    const double phi = 12 * E * I / (G * av * h * h);
+    return 12 * E * I / (h * h * h * (1 + phi));
+  };
+  std::string text = one_storey_frame(1.3);
+  text.replace(text.find(" subsection Plan"), 0,
+               " set Column Avz = 0.01\n set Column Avy = 0.01\n"
+               " set Beam Avz = 2e4\n set Beam Avy = 1e4\n");
+  check_chopra(text, k(2e-3, avz), k(1e-3, avy), "chopra_shear_3d");
+  // the beams take their own shear areas (Avy: horizontal shear, local y)
+  const Analysis a = prepare_analysis(poundfe_test::input_of("shear_areas_3d", text));
+  unsigned int   n_beams = 0;
+  for (const Member3D &member : a.model.members_3d)
+    if (member.kind == MemberKind::beam)
+      {
+        ++n_beams;
+        BOOST_TEST(member.section.shear_area_y == 1e4);
+        BOOST_TEST(member.section.shear_area_z == 2e4);
+      }
+  BOOST_TEST(n_beams == 7u);
+}
+
+BOOST_AUTO_TEST_CASE(p_delta_softens_the_storey_as_the_closed_form)
+{
+  // the storey under its weight with P-Delta: equal joint weights on equal
+  // columns (axially 1e6 times stiffer than in bending, beams rigid) give
+  // P = m g / 6 in every column; a clamped-guided column of one cubic
+  // element with the consistent geometric stiffness sways with
+  // k = 12 E I / h^3 - 6 P / (5 h) (Przemieniecki ch. 11), twists with
+  // G J / h - P Ip / (A h) (Wagner; Ip = Iy + Iz), and the storey is
+  // Chopra's with these stiffnesses. g = 300 m/s^2 puts P at 0.32 of the
+  // element's critical load along y (10 E Iz / h^2) to make the change large
+  const double h = 3.5, E = 3e10, G = 1.2e10, g = 300, P = 8e4 * g / 6;
+  const auto   k = [&](const double I) { return 12 * E * I / (h * h * h) - 1.2 * P / h; };
+  const double k_twist = G * 1.5e-3 / h - P * 3e-3 / (1e4 * h);
+  const std::string model =
+      " set Geometric nonlinearity = p-delta\n set Gravity = " + std::to_string(g) + "\n";
+  check_chopra(one_storey_frame(1.3, "", model), k(2e-3), k(1e-3), "chopra_p_delta_3d", k_twist);
+  // against the exact stability function of the clamped-guided column,
+  // k = (E I / h^3) a^3 sin a / (2 - 2 cos a - a sin a), a = h sqrt(P/(E I))
+  // (Timoshenko & Gere ch. 1) = 12 - 6 a^2/5 - a^4/700 - ... in units of
+  // E I / h^3: the cubic element's linearised k lacks the a^4 term, here
+  // (a^2 = 1.63) 3.8e-4 of k, 1.9e-4 of omega; held to 5e-4
+  const Analysis a = prepare_analysis(
+      poundfe_test::input_of("p_delta_exact_3d", one_storey_frame(0, "", model)));
+  const double alpha = h * std::sqrt(P / (E * 1e-3));
+  const double exact = E * 1e-3 / (h * h * h) * std::pow(alpha, 3) * std::sin(alpha) /
+                       (2 - 2 * std::cos(alpha) - alpha * std::sin(alpha));
+  const double omega_y = std::sqrt(6 * exact / 8e4);
+  BOOST_TEST_MESSAGE("P-Delta, sway along y: omega " << a.modes.omega[0]
+                                                     << " rad/s, exact stability function "
+                                                     << omega_y << ", relative difference "
+                                                     << a.modes.omega[0] / omega_y - 1);
+  BOOST_TEST(a.modes.omega[0] == omega_y, boost::test_tools::tolerance(5e-4));
+  // a weight past the element's critical load (10 E Iz / h^2 per column) is refused
+  const double      g_buckling = 1.05 * 10 * E * 1e-3 / (h * h) * 6 / 8e4;
+  const std::string buckled    = poundfe_test::input_error_of([&] {
+    prepare_analysis(poundfe_test::input_of(
+        "p_delta_buckled_3d",
+        one_storey_frame(0, "",
+                         " set Geometric nonlinearity = p-delta\n set Gravity = " +
+                             std::to_string(g_buckling) + "\n")));
+  });
+  BOOST_TEST(buckled.find("buckles under its own weight") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(symmetric_frame_with_p_delta_along_x_is_the_planar_frame)
+{
+  check_equivalent(false, "consistent", true);
 }
 
 BOOST_AUTO_TEST_CASE(hinge_tangent_matches_central_differences)

@@ -72,10 +72,12 @@ namespace poundfe
   /// The gravity loads -g M r_y on the equations (g = model.gravity), from
   /// every mass: nodal weights, and the members' self-weight as their mass
   /// matrix distributes it (lumped: mL/2 per end; consistent: also the end
-  /// moments mL/12 of a beam).
+  /// moments mL/12 of a beam). Dimension 3 (z up, r_z): the joints' vertical
+  /// masses (DofMass) and the 3D members' self-weight through T_eᵀ.
   Vector gravity_loads(const Model &model);
 
-  /// Axial force (tension positive) of every member under `loads`, from the
+  /// Axial force (tension positive) of every member (Model::members, then
+  /// Model::members_3d) under `loads`, from the
   /// linear static analysis `stiffness` u = loads. Throws NumericalError if
   /// `stiffness` is not positive definite.
   std::vector<double> member_axial_forces(const Model &model, const SparseMatrix &stiffness,

@@ -69,6 +69,10 @@ namespace poundfe
     std::vector<double> beam_second_moment_z;
     std::vector<double> beam_torsion_constant;
     std::string         diaphragm = "rigid"; // rigid|none
+    // Shear areas (Timoshenko; 0: no shear deformation), one or per storey
+    // (floor): Avz goes with Column I / Beam I, Avy with Column Iz / Beam Iz.
+    std::vector<double> column_shear_area_y{0.0}, column_shear_area_z{0.0};
+    std::vector<double> beam_shear_area_y{0.0}, beam_shear_area_z{0.0};
 
     // Shear buildings.
     std::vector<double> storey_stiffnesses{5.0e6};
