@@ -3,7 +3,7 @@
 # shear pair with Jankowski contact at both floors (tests/cli/coarse-pair.prm,
 # 3 s of an El Centro-like 0.5 g motion, 5 mm gap, ~15 impacts) with
 # Steps per shortest period = 50, Steps per contact = 100, Event
-# refinement = 10, at Time step = 1e-2, 1e-3, 1e-4 and 5e-5 s:
+# refinement = 10, at Time step = 1e-2, 1e-3, 1e-4 and 2e-4 s:
 #   - at 1e-2 and 1e-3 s no step cut and at most 4 Newton iterations in any
 #     step or sub-step (the requirement);
 #   - the level of the sub-steps: the Gershgorin bound of the stiffer
@@ -13,14 +13,15 @@
 #   - every peak (drift ratio and absolute acceleration of every storey, the
 #     peak force of each gap) within 1 % (1e-2 s) and 0.5 % (1e-3 s) of
 #     the 1e-4 s run, the tolerances (measured: doc/verification.md);
-#   - the 1e-4 s reference within 0.1 % of the 5e-5 s run: converged
-#     (second order: a quarter of the 1e-4 s error remains).
+#   - the 1e-4 s reference within 0.2 % of the 2e-4 s run: converged (second
+#     order: the 1e-4 s run's own error is a third of that difference,
+#     <= 0.07 %, small against the tolerances).
 set -eu
 poundfe=$1 model=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-for dt in 1e-2 1e-3 1e-4 5e-5; do
+for dt in 1e-2 1e-3 1e-4 2e-4; do
   sed "s/^\( *set Time step *=\).*/\1 $dt/" "$model" > "$work/$dt.prm"
   "$poundfe" run "$work/$dt.prm" --output "$work/$dt" > /dev/null
 done
@@ -46,12 +47,12 @@ ref = peaks(reference)
 impacts = sum(g["impacts"] for g in reference["gaps"])
 if impacts < 5 or min(ref.values()) <= 0:
     failed.append(f"the reference pounds too little ({impacts} impacts): the test would not test")
-for dt, tolerance, splits in (("1e-2", 0.01, 300 * 15), ("1e-3", 0.005, 0), ("5e-5", 0.001, 0)):
+for dt, tolerance, splits in (("1e-2", 0.01, 300 * 15), ("1e-3", 0.005, 0), ("2e-4", 0.002, 0)):
     s = summary(dt)
     newton = s["newton"]
     if s["status"] != "completed":
         failed.append(f"dt {dt}: {s['status']}")
-    if dt != "5e-5":
+    if dt != "2e-4":
         if newton["step_cuts"] != 0:
             failed.append(f"dt {dt}: {newton['step_cuts']} step cuts, expected none")
         if newton["max_iterations_per_step"] > 4:
