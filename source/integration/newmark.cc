@@ -2,6 +2,7 @@
 #include <poundfe/assembly/low_rank_update.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
+#include <poundfe/integration/accuracy_substeps.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/assembly/modal_damping.h>
 
@@ -19,6 +20,9 @@ namespace poundfe
 {
   namespace
   {
+    /// Steps per shortest period splits a step into at most 2^20 sub-steps.
+    constexpr unsigned int max_accuracy_level = 20;
+
     /// The convergence criteria at Newton iterate i >= 1 (theory §3.4).
     struct NewtonCheck
     {
@@ -158,6 +162,10 @@ namespace poundfe
     tangent_change.assign(d_start.back(), 0.0);
     for (auto *x : {&work, &supplied_work, &committed_force, &committed_history, &committed_rate})
       x->assign(n_elements, 0.0);
+    if (parameters.steps_per_period > 0)
+      base_level = accuracy_level(parameters.time_step,
+                                  highest_frequency_bound(system.stiffness, system.mass),
+                                  parameters.steps_per_period, max_accuracy_level);
     level(0);
   }
 
@@ -843,7 +851,15 @@ namespace poundfe
                                   const LoadFunction &load)
   {
     Level &L = level(cuts);
-    if (parameters.newton.steps_per_contact > 0 && cuts < parameters.newton.max_step_cuts &&
+    if (cuts < base_level) // Steps per shortest period: split without trying
+      {
+        ++stats.accuracy_refinements;
+        advance_from(cuts + 1, t0, load);
+        advance_from(cuts + 1, t0 + 0.5 * L.dt, load);
+        return;
+      }
+    const unsigned int last_level = base_level + parameters.newton.max_step_cuts;
+    if (parameters.newton.steps_per_contact > 0 && cuts < last_level &&
         contact_needs_shorter_step(L))
       {
         ++stats.contact_refinements;
@@ -870,7 +886,7 @@ namespace poundfe
         L.frozen_set    = false;
       }
     bool       event     = false;
-    if (converged && cuts < parameters.newton.event_refinement)
+    if (converged && cuts < base_level + parameters.newton.event_refinement)
       for (const unsigned int h : event_elements)
         event = event || (*elements)[h].phase() != (*elements)[h].committed_phase();
     if (converged && !event)
@@ -890,13 +906,14 @@ namespace poundfe
         advance_from(cuts + 1, t0 + 0.5 * L.dt, load);
         return;
       }
-    if (cuts >= parameters.newton.max_step_cuts)
+    if (cuts >= last_level)
       {
         // the exact times: a cut step's dt = Time step / 2^cuts and its
         // start are not round numbers, and 6 digits could print "0"
         throw NumericalError("the step from t = " + number_text(t0) + " s to " +
                              number_text(t1) + " s failed even at dt = " + number_text(L.dt) +
-                             " s (" + std::to_string(cuts) + " step cuts, Maximum step cuts = " +
+                             " s (" + std::to_string(cuts - base_level) +
+                             " step cuts, Maximum step cuts = " +
                              std::to_string(parameters.newton.max_step_cuts) + "): " +
                              (failure.empty() ? "no cause recorded" : failure));
       }

@@ -118,6 +118,15 @@ namespace poundfe
   {
     prm.enter_subsection("Time integration");
     prm.add_parameter("Time step", newmark.time_step, "Analysis time step. Unit: s.");
+    prm.add_parameter("Steps per shortest period", newmark.steps_per_period,
+                      "newmark: integrate every step in 2^c equal sub-steps, c the smallest "
+                      "level with at least this many sub-steps per period of the highest mode "
+                      "(its Gershgorin bound from K and the diagonal of M), so that Newmark's "
+                      "period error (omega h)^2 / 12 stays below pi^2 / (3 N^2) for every "
+                      "mode (theory §3.7b); outputs keep to Time step, peaks see every "
+                      "sub-step; Event refinement, Steps per contact and Maximum step cuts "
+                      "count their levels from c. 0: off. Unit: count.",
+                      Patterns::Integer(0, 100000));
     prm.add_parameter("End time", end_time,
                       "s; 0: the length of the ground motion. Unit: s.");
     prm.add_parameter("Maximum number of steps", max_steps,

@@ -448,6 +448,7 @@ namespace poundfe
       .value("step_cuts", static_cast<unsigned long>(stats.step_cuts))
       .value("event_refinements", static_cast<unsigned long>(stats.event_refinements))
       .value("contact_refinements", static_cast<unsigned long>(stats.contact_refinements))
+      .value("accuracy_refinements", static_cast<unsigned long>(stats.accuracy_refinements))
       .value("woodbury_solves", static_cast<unsigned long>(stats.woodbury_solves))
       .value("refactorizations", static_cast<unsigned long>(stats.refactorizations))
       .value("nonlinear_solver", nonlinear_solver_names().name(

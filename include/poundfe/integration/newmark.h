@@ -91,6 +91,11 @@ namespace poundfe
     NewtonParameters newton;
     /// The CG + AMG linear solvers' options (Time integration/Iterative solver).
     IterativeSolverParameters iterative;
+    /// Every step in 2^c equal sub-steps, c the smallest level giving this
+    /// many sub-steps per period of the highest mode (its Gershgorin bound,
+    /// integration/accuracy_substeps.h); 0: off. Event refinement, Steps
+    /// per contact and step cuts count their levels from c.
+    unsigned int     steps_per_period = 0;
   };
 
   /// Work and energy terms of the relative-coordinate energy balance, J:
@@ -125,6 +130,7 @@ namespace poundfe
     unsigned long step_cuts  = 0;
     unsigned long event_refinements = 0; // steps cut to locate a contact or stick-slip event
     unsigned long contact_refinements = 0; // steps halved to resolve a contact in time
+    unsigned long accuracy_refinements = 0; // steps halved for Steps per shortest period
     unsigned long woodbury_solves  = 0; // Newton iterations solved by the Woodbury update
     unsigned long refactorizations = 0; // numeric factorisations of the tangent
     unsigned long full_newton_retries = 0; // steps redone by full Newton after a cheaper method failed
@@ -308,6 +314,9 @@ namespace poundfe
     std::vector<std::string> equation_names;
     double      current_time = 0;
     unsigned long step_count = 0;
+    /// The level of every step's sub-steps (Steps per shortest period; 0:
+    /// steps of Time step), from which the other refinements count.
+    unsigned int base_level = 0;
     IterationStatistics stats;
     EnergyBalance       balance;
     double              energy_scale      = 0;
