@@ -170,8 +170,13 @@ BOOST_AUTO_TEST_CASE(rigid_block_has_the_closed_form_frequencies)
   std::sort(expected.begin(), expected.end());
   BOOST_REQUIRE(a.modes.n_modes() == 5u);
   // the storeys' flexibility shifts ω by ~ K/k_storey = 1e-6 relative
+  double worst = 0;
   for (unsigned int i = 0; i < 5; ++i)
-    BOOST_TEST(a.modes.omega[i] == expected[i], boost::test_tools::tolerance(1e-5));
+    {
+      BOOST_TEST(a.modes.omega[i] == expected[i], boost::test_tools::tolerance(1e-5));
+      worst = std::max(worst, std::abs(a.modes.omega[i] / expected[i] - 1));
+    }
+  BOOST_TEST_MESSAGE("rigid block: largest relative frequency error " << worst);
   // the flexible-base periods in 3D: the first mode is the x-z pair's
   const std::vector<FoundationPeriods> periods = foundation_periods(a.model);
   BOOST_REQUIRE(periods.size() == 1u);
