@@ -87,17 +87,19 @@ namespace poundfe
     }
 
     /// The foundations' springs (or, with `mass`, their masses and rotary
-    /// inertias) on the base nodes' sway and rocking.
+    /// inertias): k a aᵀ (m a aᵀ) of each part.
     void
     add_foundation_terms(const Model &model, const bool mass, Triplets &triplets)
     {
       for (const Foundation &f : model.foundations)
-        {
-          const int u     = model.equation(Model::dof(f.node, Component::ux));
-          const int theta = model.equation(Model::dof(f.node, Component::rz));
-          triplets.emplace_back(u, u, mass ? f.mass : f.horizontal_stiffness);
-          triplets.emplace_back(theta, theta, mass ? f.rotary_inertia : f.rocking_stiffness);
-        }
+        for (const FoundationPart &part : f.parts)
+          {
+            const Eigen::Map<const Eigen::VectorXd> a(part.coefficients.data(),
+                                                      part.coefficients.size());
+            scatter(model, part.dofs,
+                    Eigen::MatrixXd((mass ? part.inertia : part.stiffness) * a * a.transpose()),
+                    triplets);
+          }
     }
 
     SparseMatrix
@@ -116,12 +118,10 @@ namespace poundfe
       for (const PlaneLink &link : model.plane_links)
         {
           std::vector<unsigned int> dofs;
-          for (const unsigned int node : link.nodes)
-            for (const Component c : {Component::ux, Component::uy, Component::rz})
-              dofs.push_back(Model::dof(node, c));
-          const Eigen::Map<const Eigen::Matrix<double, 6, 1>> a(link.coefficients.data());
-          scatter(model, dofs, Eigen::Matrix<double, 6, 6>(link.stiffness * a * a.transpose()),
-                  k_triplets);
+          std::vector<double>       weights;
+          link.terms(dofs, weights);
+          const Eigen::Map<const Eigen::VectorXd> a(weights.data(), weights.size());
+          scatter(model, dofs, Eigen::MatrixXd(link.stiffness * a * a.transpose()), k_triplets);
         }
       for (const NodalMass &mass : model.masses)
         if (mass.polar_moment != 0)

@@ -12,33 +12,35 @@ namespace poundfe
 {
   namespace
   {
-    /// Each foundation's sway and rocking: a spring k (already in K, so the
-    /// element adds only its dashpot's force c v to the residual) and a
-    /// dashpot c in parallel (a Kelvin-Voigt law with alpha = 1), so that
-    /// their forces and the dashpots' energy are reported and balanced.
+    /// Each part of each foundation (2D: sway, rocking; 3D: sway x, y,
+    /// torsion, rocking x, y): a spring k (already in K, so the element adds
+    /// only its dashpot's force c v to the residual) and a dashpot c in
+    /// parallel (a Kelvin-Voigt law with alpha = 1), so that their forces and
+    /// the dashpots' energy are reported and balanced.
     void
     add_foundation_elements(const Model &model, NonlinearElements &elements)
     {
       for (const Foundation &f : model.foundations)
-        {
-          const std::string name = model.buildings[f.building].name;
-          const std::array<std::pair<Component, std::array<double, 2>>, 2> parts{
-            {{Component::ux, {{f.horizontal_stiffness, f.horizontal_damping}}},
-             {Component::rz, {{f.rocking_stiffness, f.rocking_damping}}}}};
-          for (const auto &[component, law] : parts)
-            {
-              LinkLawParameters p;
-              p.kind      = LinkKind::kelvin_voigt;
-              p.stiffness = law[0];
-              p.damping   = law[1];
-              p.exponent  = 1;
+        for (const FoundationPart &part : f.parts)
+          {
+            LinkLawParameters p;
+            p.kind      = LinkKind::kelvin_voigt;
+            p.stiffness = part.stiffness;
+            p.damping   = part.damping;
+            p.exponent  = 1;
+            std::vector<int> equations;
+            for (const unsigned int dof : part.dofs)
+              equations.push_back(model.equation(dof));
+            const std::string name = model.buildings[f.building].name + part.name;
+            if (part.dofs.size() == 1)
               elements.emplace_back<UniaxialElement>(
-                ElementKind::foundation, f.building,
-                name + (component == Component::ux ? "_sway" : "_rocking"),
-                std::array<int, 2>{{model.equation(Model::dof(f.node, component)), -1}},
-                make_link_law(p), law[0]);
-            }
-        }
+                ElementKind::foundation, f.building, name,
+                std::array<int, 2>{{equations[0], -1}}, make_link_law(p), part.stiffness);
+            else
+              elements.emplace_back<UniaxialElement>(ElementKind::foundation, f.building, name,
+                                                     equations, part.coefficients,
+                                                     make_link_law(p), part.stiffness);
+          }
     }
   } // namespace
 
@@ -83,16 +85,17 @@ namespace poundfe
     for (const PlaneLink &link : model.plane_links)
       if (link.hysteretic)
         {
+          std::vector<unsigned int> dofs;
+          std::vector<double>       weights;
+          link.terms(dofs, weights);
           std::vector<int> equations;
-          for (const unsigned int node : link.nodes)
-            for (const Component c : {Component::ux, Component::uy, Component::rz})
-              equations.push_back(model.equation(Model::dof(node, c)));
+          for (const unsigned int dof : dofs)
+            equations.push_back(model.equation(dof));
           elements.emplace_back<UniaxialElement>(
             ElementKind::storey, link.building,
             model.buildings[link.building].name + "_S" + std::to_string(link.storey) + "P" +
               std::to_string(link.plane),
-            equations, std::vector<double>(link.coefficients.begin(), link.coefficients.end()),
-            std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
+            equations, weights, std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
         }
     for (const Gap &gap : model.gaps)
       {

@@ -28,16 +28,43 @@ namespace poundfe
   {
     Model fixed = model;
     for (const Foundation &f : model.foundations)
-      fixed.nodes[f.node].fixed = {{true, true, true}};
+      {
+        fixed.nodes[f.node].fixed = {{true, true, true}};
+        if (f.rocking_node >= 0)
+          fixed.nodes[f.rocking_node].fixed = {{true, true, true}};
+      }
     for (StoreyLink &link : fixed.links)
       {
         link.rocking_node = -1;
         link.rocking_arm  = 0;
       }
+    for (PlaneLink &link : fixed.plane_links)
+      link.rocking_node = -1;
     fixed.foundations.clear();
     fixed.number_equations();
     return fixed;
   }
+
+  namespace
+  {
+    /// In 3D: the foundation's sway stiffness along the horizontal unit
+    /// vector e and its rocking stiffness about n = (-e_y, e_x) (the
+    /// rotation that moves the building along e): e^T K e over the parts.
+    std::array<double, 2>
+    stiffnesses_along(const Foundation &f, const std::array<double, 2> &e)
+    {
+      std::array<double, 2> k{{0, 0}};
+      for (const FoundationPart &part : f.parts)
+        if (part.dofs.size() == 2)
+          {
+            const bool   rocking = part.dofs[0] % n_dofs_per_node == 1; // θ_x: slot 1
+            const double a = rocking ? -part.coefficients[0] * e[1] + part.coefficients[1] * e[0] :
+                                       part.coefficients[0] * e[0] + part.coefficients[1] * e[1];
+            k[rocking ? 1 : 0] += part.stiffness * a * a;
+          }
+      return k;
+    }
+  } // namespace
 
   std::vector<FoundationPeriods>
   foundation_periods(const Model &model)
@@ -58,20 +85,34 @@ namespace poundfe
         const auto   range       = fixed.equation_range(f.building);
         const auto   n           = range[1] - range[0];
         const Vector mass_phi    = block(fixed_system.mass, range) * rigid.shapes.col(0);
-        const Vector r           = fixed_system.influence.segment(range[0], n);
-        const double gamma       = mass_phi.dot(r); // φ mass-normalised: M* = Γ²
-        Vector       heights     = Vector::Zero(n);
-        for (unsigned int node = 0; node < fixed.n_nodes(); ++node)
+        // the mode's direction in plan (3D): e along (Γ_x, Γ_y), Γ_e = |Γ|
+        std::array<double, 2> e{{1, 0}};
+        if (f.rocking_node >= 0)
           {
-            const int e = fixed.equation(Model::dof(node, Component::ux));
-            if (e >= int(range[0]) && e < int(range[1]))
-              heights[e - range[0]] =
-                fixed.nodes[node].position.y - model.nodes[f.node].position.y;
+            const double gx = mass_phi.dot(fixed_system.influence.segment(range[0], n));
+            const double gy = mass_phi.dot(fixed_system.influence_y.segment(range[0], n));
+            e = {{gx / std::hypot(gx, gy), gy / std::hypot(gx, gy)}};
           }
+        Vector heights = Vector::Zero(n), r = Vector::Zero(n);
+        for (unsigned int node = 0; node < fixed.n_nodes(); ++node)
+          for (const Component c : {Component::ux, Component::uy})
+            {
+              const int eq = fixed.equation(Model::dof(node, c));
+              if (fixed.nodes[node].generalized || eq < int(range[0]) || eq >= int(range[1]))
+                continue;
+              const double along = c == Component::ux ? e[0] : e[1];
+              heights[eq - range[0]] +=
+                along * (fixed.nodes[node].position.y - model.nodes[f.node].position.y);
+              r[eq - range[0]] += along;
+            }
+        const double gamma    = mass_phi.dot(r); // φ mass-normalised: M* = Γ²
         p.effective_height    = mass_phi.dot(heights) / gamma;
         const double omega    = 2 * pi / p.fixed_base_period;
         p.effective_stiffness = gamma * gamma * omega * omega;
-        const double k_x = f.horizontal_stiffness, k_theta = f.rocking_stiffness;
+        const std::array<double, 2> k =
+          f.rocking_node >= 0 ? stiffnesses_along(f, e) :
+                                std::array<double, 2>{{f.horizontal_stiffness, f.rocking_stiffness}};
+        const double k_x = k[0], k_theta = k[1];
         p.code_ratio = std::sqrt(1 + p.effective_stiffness / k_x *
                                        (1 + k_x * p.effective_height * p.effective_height /
                                               k_theta));

@@ -54,6 +54,67 @@ namespace poundfe
     return z;
   }
 
+  namespace
+  {
+    /// The sway and rocking of the planes x-z and y-z (two 2D impedances).
+    template <typename Impedance2D>
+    FoundationImpedance3D
+    in_two_planes(const SoilProperties &soil, const FoundationGeometry &foundation,
+                  const Impedance2D &impedance_2d)
+    {
+      const FoundationImpedance in_x = impedance_2d(soil, foundation);
+      const FoundationImpedance in_y =
+        impedance_2d(soil, {foundation.width, foundation.length, foundation.embedment});
+      FoundationImpedance3D z;
+      z.sway_stiffness[0]       = in_x.horizontal_stiffness;
+      z.sway_stiffness[1]       = in_y.horizontal_stiffness;
+      z.sway_damping[0]         = in_x.horizontal_damping;
+      z.sway_damping[1]         = in_y.horizontal_damping;
+      // rocking about y is the plane x-z's, about x the plane y-z's
+      z.rocking_stiffness[0]    = in_y.rocking_stiffness;
+      z.rocking_stiffness[1]    = in_x.rocking_stiffness;
+      z.rocking_damping[0]      = in_y.rocking_damping;
+      z.rocking_damping[1]      = in_x.rocking_damping;
+      z.added_rotary_inertia[0] = in_y.added_rotary_inertia;
+      z.added_rotary_inertia[1] = in_x.added_rotary_inertia;
+      return z;
+    }
+
+    /// J_t = I_bx + I_by of the rectangular base.
+    double
+    polar_moment_of_area(const FoundationGeometry &foundation)
+    {
+      const double a = foundation.length, b = foundation.width;
+      return a * b * (a * a + b * b) / 12;
+    }
+  } // namespace
+
+  FoundationImpedance3D
+  gazetas_impedance_3d(const SoilProperties &soil, const FoundationGeometry &foundation)
+  {
+    FoundationImpedance3D z  = in_two_planes(soil, foundation, gazetas_impedance);
+    const double          L  = 0.5 * std::max(foundation.length, foundation.width);
+    const double          B  = 0.5 * std::min(foundation.length, foundation.width);
+    const double          jt = polar_moment_of_area(foundation);
+    const double          d  = foundation.embedment;
+    z.torsional_stiffness    = soil.shear_modulus() * std::pow(jt, 0.75) *
+                            (4 + 11 * std::pow(1 - B / L, 10)) *
+                            (1 + 1.4 * (1 + B / L) * std::pow(d / B, 0.9));
+    z.torsional_damping = soil.density * soil.shear_wave_velocity * jt;
+    return z;
+  }
+
+  FoundationImpedance3D
+  cone_impedance_3d(const SoilProperties &soil, const FoundationGeometry &foundation)
+  {
+    FoundationImpedance3D z  = in_two_planes(soil, foundation, cone_impedance);
+    const double          jt = polar_moment_of_area(foundation);
+    const double          r  = std::pow(2 * jt / pi, 0.25);
+    z.torsional_stiffness    = 16 * soil.shear_modulus() * r * r * r / 3;
+    z.torsional_damping      = soil.density * soil.shear_wave_velocity * jt;
+    return z;
+  }
+
   FoundationImpedance
   cone_impedance(const SoilProperties &soil, const FoundationGeometry &foundation)
   {

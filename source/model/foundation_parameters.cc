@@ -26,8 +26,8 @@ namespace poundfe
                "[shear] none: fixed base. gazetas: sway and rocking springs and dashpots "
                "of a rectangular foundation by Gazetas (1991), surface or embedded; cone: "
                "Wolf's cones (1994), surface; given: the springs and dashpots typed below "
-               "(2D shear buildings: the sway-rocking model, floors moving with the base "
-               "rotation). Unit: -.",
+               "(shear buildings, 2D and 3D: the sway-rocking model, floors moving with "
+               "the base rotation). Unit: -.",
                foundation_type_names());
     prm.add_parameter("Shear-wave velocity", soil.shear_wave_velocity,
                       "[shear] V_s of the soil (gazetas, cone). Unit: m/s.");
@@ -37,11 +37,11 @@ namespace poundfe
                       "[shear] Poisson ratio of the soil, in (0, 0.5) (gazetas, cone). "
                       "Unit: -.");
     prm.add_parameter("Length", geometry.length,
-                      "[shear] Side of the foundation in the plane of the model (gazetas, "
-                      "cone). Unit: m.");
+                      "[shear] Side of the foundation in the plane of the model (3D: along "
+                      "the building's local x) (gazetas, cone). Unit: m.");
     prm.add_parameter("Width", geometry.width,
-                      "[shear] Side of the foundation normal to the plane (gazetas, cone). "
-                      "Unit: m.");
+                      "[shear] Side of the foundation normal to the plane (3D: along local "
+                      "y) (gazetas, cone). Unit: m.");
     prm.add_parameter("Embedment", geometry.embedment,
                       "[shear] Depth of the foundation's base below the surface, sidewalls "
                       "in contact over it (gazetas; at most the smaller side). Unit: m.");
@@ -53,12 +53,34 @@ namespace poundfe
                       "[shear] Sway dashpot (given). Unit: N s/m.");
     prm.add_parameter("Rocking damping", given.rocking_damping,
                       "[shear] Rocking dashpot (given). Unit: N m s/rad.");
+    prm.add_parameter("Horizontal stiffness y", given_3d.sway_stiffness[1],
+                      "[3D shear] Sway spring along the foundation's local y (given; "
+                      "Horizontal stiffness: along x). Unit: N/m.");
+    prm.add_parameter("Horizontal damping y", given_3d.sway_damping[1],
+                      "[3D shear] Sway dashpot along local y (given). Unit: N s/m.");
+    prm.add_parameter("Rocking stiffness x", given_3d.rocking_stiffness[0],
+                      "[3D shear] Rocking spring about local x (given; Rocking stiffness: "
+                      "about y). Unit: N m/rad.");
+    prm.add_parameter("Rocking damping x", given_3d.rocking_damping[0],
+                      "[3D shear] Rocking dashpot about local x (given). Unit: N m s/rad.");
+    prm.add_parameter("Torsional stiffness", given_3d.torsional_stiffness,
+                      "[3D shear] Torsion spring about the vertical (given). Unit: N m/rad.");
+    prm.add_parameter("Torsional damping", given_3d.torsional_damping,
+                      "[3D shear] Torsion dashpot about the vertical (given). Unit: "
+                      "N m s/rad.");
+    prm.add_parameter("Rotary inertia x", rotary_inertia_x,
+                      "[3D shear] Mass moment of inertia of the foundation about its local x "
+                      "axis through its base (Rotary inertia: about y; cone: Wolf's trapped "
+                      "soil is added). Unit: kg m^2.");
+    prm.add_parameter("Polar inertia", polar_inertia,
+                      "[3D shear] Mass moment of inertia of the foundation about the vertical "
+                      "through its centre. Unit: kg m^2.");
     prm.add_parameter("Mass", mass,
                       "[shear] Mass of the foundation (moves with the sway). Unit: kg.");
     prm.add_parameter("Rotary inertia", rotary_inertia,
                       "[shear] Mass moment of inertia of the foundation about the horizontal "
-                      "axis through its base (cone: Wolf's trapped soil is added). Unit: "
-                      "kg m^2.");
+                      "axis through its base (3D: local y) (cone: Wolf's trapped soil is "
+                      "added). Unit: kg m^2.");
     prm.leave_subsection();
   }
 
@@ -103,5 +125,35 @@ namespace poundfe
     impedance = type == FoundationType::gazetas ? gazetas_impedance(soil, geometry) :
                                                   cone_impedance(soil, geometry);
     rotary_inertia += impedance.added_rotary_inertia;
+  }
+
+  void
+  FoundationParameters::finalize_3d(const InputFile &input, const std::string &section)
+  {
+    if (!enabled())
+      return;
+    const std::string s = section + "Foundation/";
+    input.positive(s + "Rotary inertia x", rotary_inertia_x);
+    input.positive(s + "Polar inertia", polar_inertia);
+    if (type == FoundationType::given)
+      {
+        input.positive(s + "Horizontal stiffness y", given_3d.sway_stiffness[1]);
+        input.positive(s + "Rocking stiffness x", given_3d.rocking_stiffness[0]);
+        input.positive(s + "Torsional stiffness", given_3d.torsional_stiffness);
+        input.non_negative(s + "Horizontal damping y", given_3d.sway_damping[1]);
+        input.non_negative(s + "Rocking damping x", given_3d.rocking_damping[0]);
+        input.non_negative(s + "Torsional damping", given_3d.torsional_damping);
+        impedance_3d                      = given_3d;
+        impedance_3d.sway_stiffness[0]    = given.horizontal_stiffness;
+        impedance_3d.sway_damping[0]      = given.horizontal_damping;
+        impedance_3d.rocking_stiffness[1] = given.rocking_stiffness;
+        impedance_3d.rocking_damping[1]   = given.rocking_damping;
+        return;
+      }
+    // finalize checked the soil and the geometry
+    impedance_3d = type == FoundationType::gazetas ? gazetas_impedance_3d(soil, geometry) :
+                                                     cone_impedance_3d(soil, geometry);
+    // about y: finalize added the plane x-z's already (the same value)
+    rotary_inertia_x += impedance_3d.added_rotary_inertia[0];
   }
 } // namespace poundfe

@@ -30,6 +30,23 @@ namespace poundfe
     first_equation_of_building[buildings.size()] = n_free;
   }
 
+  void
+  PlaneLink::terms(std::vector<unsigned int> &dofs, std::vector<double> &weights) const
+  {
+    dofs.clear();
+    for (const unsigned int node : nodes)
+      for (const Component c : {Component::ux, Component::uy, Component::rz})
+        dofs.push_back(Model::dof(node, c));
+    weights.assign(coefficients.begin(), coefficients.end());
+    if (rocking_node < 0)
+      return;
+    for (unsigned int slot = 1; slot <= 2; ++slot)
+      {
+        dofs.push_back(n_dofs_per_node * rocking_node + slot);
+        weights.push_back(rocking_coefficients[slot - 1]);
+      }
+  }
+
   std::array<unsigned int, 2>
   Model::equation_range(const unsigned int b) const
   {

@@ -279,6 +279,10 @@ namespace poundfe
       f.rocking_damping      = p.impedance.rocking_damping;
       f.mass                 = p.mass;
       f.rotary_inertia       = p.rotary_inertia;
+      f.parts = {{{Model::dof(base, Component::ux)}, {1.0}, f.horizontal_stiffness,
+                  f.horizontal_damping, f.mass, "_sway"},
+                 {{Model::dof(base, Component::rz)}, {1.0}, f.rocking_stiffness,
+                  f.rocking_damping, f.rotary_inertia, "_rocking"}};
       model.foundations.push_back(f);
     }
 

@@ -406,9 +406,7 @@ namespace poundfe
         if (buildings[b].type == BuildingType::frame)
           buildings[b].finalize_frame_3d(input, s);
         buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
-        if (buildings[b].foundation.enabled())
-          input.fail(s + "Foundation/Type", "compliant foundations are for 2D models "
-                                            "(Dimension = 2) so far");
+        buildings[b].foundation.finalize_3d(input, s);
       }
   }
 

@@ -4,6 +4,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/model/plan_builder.h>
 #include <poundfe/model/plan_contact_geometry.h>
+#include <poundfe/model/plan_foundation.h>
 #include <poundfe/model/torsional_shear_building.h>
 
 #include <algorithm>
@@ -81,14 +82,21 @@ namespace poundfe
               frame.place({-hx, hy})};
     }
 
+    /// The storeys' planes; on a compliant foundation (`rocking_node` >= 0)
+    /// the base node moves about `base_point` and the planes take the
+    /// rocking (model/plan_foundation.h).
     void
     add_plane_links(Model &model, const BuildingParameters &p, const TorsionalShearBuilding &site,
-                    const unsigned int b, const std::vector<unsigned int> &nodes)
+                    const unsigned int b, const std::vector<unsigned int> &nodes,
+                    const Point2 &base_point, const int rocking_node)
     {
       for (unsigned int i = 0; i < site.n_floors(); ++i)
         {
           const std::vector<PlaneEntry> entries = storey_planes(p, i);
-          const Point2 below = i == 0 ? site.floors[0].mass_centre : site.floors[i - 1].mass_centre;
+          const Point2 below = i > 0            ? site.floors[i - 1].mass_centre :
+                               rocking_node >= 0 ? base_point :
+                                                   site.floors[0].mass_centre;
+          const double height = value_for(p.storey_heights, i);
           for (unsigned int j = 0; j < entries.size(); ++j)
             {
               const ResistingPlane &plane = site.floors[i].planes[j];
@@ -101,6 +109,11 @@ namespace poundfe
               link.building     = b;
               link.storey       = i + 1;
               link.plane        = j + 1;
+              if (rocking_node >= 0)
+                {
+                  link.rocking_node         = rocking_node;
+                  link.rocking_coefficients = {{height * top[1], -height * top[0]}};
+                }
               if (entries[j].yield_drift > 0)
                 {
                   link.hysteretic                   = true;
@@ -306,7 +319,11 @@ namespace poundfe
         building.floors.push_back(floor);
         building.plan.push_back({f.mass_centre, outline});
       }
-    add_plane_links(model, p, site, b, nodes);
+    const int rocking_node =
+      p.foundation.enabled() ?
+        int(add_plan_foundation(model, p.foundation, b, nodes.front(), plan.angle)) :
+        -1;
+    add_plane_links(model, p, site, b, nodes, centre, rocking_node);
   }
 
   void

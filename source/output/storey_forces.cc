@@ -139,12 +139,16 @@ namespace poundfe
         if (element >= 0)
           F = nonlinear[element].force();
         else
-          for (unsigned int k = 0; k < 6; ++k)
-            {
-              const unsigned int c = k % 3;
-              const int e = model.equation(Model::dof(link.nodes[k / 3], static_cast<Component>(c)));
-              F += e >= 0 ? link.stiffness * link.coefficients[k] * u[e] : 0.0;
-            }
+          {
+            std::vector<unsigned int> dofs;
+            std::vector<double>       weights; // with the foundation's rocking, if any
+            link.terms(dofs, weights);
+            for (unsigned int k = 0; k < dofs.size(); ++k)
+              {
+                const int e = model.equation(dofs[k]);
+                F += e >= 0 ? link.stiffness * weights[k] * u[e] : 0.0;
+              }
+          }
         // the top floor's coefficients are (d_x, d_y, (p - C) × d)
         for (unsigned int c = 0; c < 3; ++c)
           V[c] += F * link.coefficients[3 + c];

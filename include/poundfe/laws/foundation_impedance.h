@@ -33,6 +33,18 @@
 // Source: J.P. Wolf, Foundation Vibration Analysis Using Simple Physical
 // Models, Prentice Hall 1994, §2.1-2.3 and Table 2-1 (the static stiffnesses
 // are the exact disk values of Veletsos & Wei 1971; also ASCE 7-16 §19.2.1.1).
+//
+// In 3D (rectangle `length` along the foundation's local x, `width` along
+// local y): the sway along x and rocking about y are the 2D values of the
+// plane x-z; the sway along y and rocking about x those of the plane y-z
+// (length and width swapped); and the torsion about the vertical, with
+// J_t = I_bx + I_by the polar moment of the base area:
+//   Gazetas: K_t = G J_t^0.75 [4 + 11 (1 - χ)^10],
+//            embedded × [1 + 1.4 (1 + B/L) (d/B)^0.9],  C_t = ρ V_s J_t
+//   (Mylonakis, Nikolaou & Gazetas 2006, Table 1; Gazetas 1991, Table 2);
+//   cone:    K_t = 16 G r_t³ / 3, r_t = (2 J_t/π)^(1/4),  C_t = ρ V_s J_t
+//   (Wolf 1994, Table 2-1: the exact disk value; the dashpot the cone's
+//   high-frequency limit, like the others here).
 // doc/theory.md §1.16.
 #ifndef poundfe_laws_foundation_impedance_h
 #define poundfe_laws_foundation_impedance_h
@@ -68,6 +80,27 @@ namespace poundfe
     double rocking_damping      = 0; // N m s/rad
     double added_rotary_inertia = 0; // kg m² (Wolf's trapped soil, ν > 1/3)
   };
+
+  /// Springs, dashpots and added inertias of one foundation in 3D, in its
+  /// local axes: [0] along (sway) or about (rocking) x, [1] y.
+  struct FoundationImpedance3D
+  {
+    double sway_stiffness[2]       = {0, 0}; // N/m
+    double sway_damping[2]         = {0, 0}; // N s/m
+    double rocking_stiffness[2]    = {0, 0}; // N m/rad
+    double rocking_damping[2]      = {0, 0}; // N m s/rad
+    double added_rotary_inertia[2] = {0, 0}; // kg m²
+    double torsional_stiffness     = 0;      // N m/rad
+    double torsional_damping       = 0;      // N m s/rad
+  };
+
+  /// Gazetas in 3D, surface or embedded (as gazetas_impedance).
+  FoundationImpedance3D gazetas_impedance_3d(const SoilProperties     &soil,
+                                             const FoundationGeometry &foundation);
+
+  /// Wolf's cones in 3D, on the surface.
+  FoundationImpedance3D cone_impedance_3d(const SoilProperties     &soil,
+                                          const FoundationGeometry &foundation);
 
   /// Gazetas (1991), surface or embedded (embedment <= the smaller side).
   FoundationImpedance gazetas_impedance(const SoilProperties &soil,

@@ -1,5 +1,5 @@
 // The `Building <i>/Foundation` subsection: a compliant foundation under a
-// 2D shear building (the sway-rocking model, doc/theory.md §1.16): the
+// 2D or 3D shear building (the sway-rocking model, doc/theory.md §1.16): the
 // soil's shear-wave velocity, density and Poisson ratio and the
 // foundation's size and embedment give the springs and dashpots by Gazetas'
 // formulas or Wolf's cones (laws/foundation_impedance.h), or they are typed
@@ -44,6 +44,15 @@ namespace poundfe
     /// rotary inertia, already in rotary_inertia).
     FoundationImpedance impedance;
 
+    /// Dimension 3: the typed-in sway along y, rocking about x and torsion
+    /// (Type = given; along x and about y: `given`), the rotary inertia
+    /// about x (rotary_inertia: about y) and the polar one about the
+    /// vertical, and, set by finalize_3d, the impedances in use.
+    FoundationImpedance3D given_3d;
+    double                rotary_inertia_x = 0; // kg m²
+    double                polar_inertia    = 0; // kg m²
+    FoundationImpedance3D impedance_3d;
+
     bool enabled() const { return type != FoundationType::none; }
 
     /// Declare the entries of `Foundation` (entered and left here).
@@ -51,6 +60,9 @@ namespace poundfe
     /// Check `<section>Foundation/` and compute the impedance; `shear`: the
     /// building is a shear building. Throws InputError.
     void finalize(const InputFile &input, const std::string &section, bool shear);
+    /// Dimension 3, after finalize: check the 3D entries and compute
+    /// impedance_3d. Throws InputError.
+    void finalize_3d(const InputFile &input, const std::string &section);
   };
 } // namespace poundfe
 

@@ -111,16 +111,33 @@ namespace poundfe
     double                      rocking_arm  = 0;
   };
 
-  /// A compliant foundation under a 2D shear building (doc/theory.md
-  /// §1.16): the base node's ux (sway u_0) and rz (rocking θ) on springs and
-  /// dashpots to the ground, with the foundation's mass and rotary inertia.
+  /// One spring-dashpot of a foundation to the ground, with the inertia on
+  /// the same motion: on the deformation d = Σ coefficients[i] q(dofs[i])
+  /// it adds k a aᵀ to K, m a aᵀ to M and a Kelvin-Voigt element (k, c).
+  struct FoundationPart
+  {
+    std::vector<unsigned int> dofs;
+    std::vector<double>       coefficients;
+    double                    stiffness = 0, damping = 0, inertia = 0;
+    std::string               name; // appended to the building's name
+  };
+
+  /// A compliant foundation (doc/theory.md §1.16). 2D shear building: the
+  /// base node's ux (sway u_0) and rz (rocking θ). 3D shear building: the
+  /// base node's (ux, uy, θz) about the foundation's centre and
+  /// `rocking_node`'s rotations (rx, ry) (a generalized node, slots 1 and 2;
+  /// its uz is fixed). `parts`: the springs, dashpots and inertias on them.
   struct Foundation
   {
     unsigned int node     = 0;
+    int          rocking_node = -1; // 3D only
     unsigned int building = 0;
+    /// In the plane (2D), along the foundation's local x (3D): what the
+    /// report and ASCE 7's period formula quote.
     double       horizontal_stiffness = 0, rocking_stiffness = 0; // N/m, N m/rad
     double       horizontal_damping = 0, rocking_damping = 0;     // N s/m, N m s/rad
     double       mass = 0, rotary_inertia = 0;                    // kg, kg m²
+    std::vector<FoundationPart> parts;
   };
 
   /// A rotational Bouc-Wen spring at a member end: between the rotation of
@@ -251,6 +268,14 @@ namespace poundfe
     unsigned int                plane     = 1; // 1-based, as listed
     bool                        hysteretic = false; // Bouc-Wen (stiffness = hysteresis.stiffness)
     BoucWenParameters           hysteresis;
+    /// On a compliant foundation: its rotations (rx, ry) (slots 1, 2 of the
+    /// generalized node rocking_node) enter d with rocking_coefficients =
+    /// (h d_y, -h d_x), h the storey height (-1: fixed base).
+    int                         rocking_node = -1;
+    std::array<double, 2>       rocking_coefficients{{0, 0}};
+
+    /// The DOFs and coefficients of d: (q_bottom, q_top) and the rocking.
+    void terms(std::vector<unsigned int> &dofs, std::vector<double> &weights) const;
   };
 
   /// One floor of a 3D building in plan (site coordinates, at rest).
@@ -363,7 +388,7 @@ namespace poundfe
     std::vector<Spring>          springs;
     std::vector<FrictionSurface> friction_surfaces;
     std::vector<BuildingLink>    building_links;
-    std::vector<Foundation>      foundations; // compliant bases of 2D shear buildings
+    std::vector<Foundation>      foundations; // compliant bases of shear buildings
     /// A bumper in every 2D gap (law none: bare gaps).
     BumperParameters             bumper;
     /// The contact law of every gap (its gap and m_e are set per gap).
