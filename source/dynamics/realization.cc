@@ -114,7 +114,7 @@ namespace poundfe
       { // new M, K, C: a new engine (the factorisations change)
         const auto &targets = structure->parameters();
         if (std::any_of(targets.begin(), targets.end(), [](const ModelParameter &p) {
-              return p.kind == ModelParameter::Kind::floor_mass;
+              return p.enters_mass();
             })) // -M r a_g of the new M (a 2D model: no horizontal pair)
           excitation =
             Excitation(working.system, excitation.ground_motion(), excitation.nodal_forces());
