@@ -251,10 +251,18 @@ namespace poundfe
                               const double amplitude_factor)
   {
     AssertDimension(normals.size(), n_variables());
+    // parameters that enter the linear part make a new engine and a new
+    // PeakResponse: the caller's pointer to the old one is replaced (it
+    // would dangle)
+    Observers         in_use = observers;
+    const StepObserver *old_peaks = peaks.get();
     if (structure)
       apply_parameters(normals);
+    for (StepObserver *&observer : in_use)
+      if (observer == old_peaks)
+        observer = peaks.get();
     load.apply(std::vector<double>(normals.begin(), normals.begin() + load.n_variables()),
                excitation, amplitude_factor);
-    return history->run(excitation, observers);
+    return history->run(excitation, in_use);
   }
 } // namespace poundfe
