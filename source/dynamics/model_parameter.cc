@@ -560,12 +560,21 @@ namespace poundfe
         throw std::invalid_argument("'" + p.path + "' is the model's geometry (where its nodes "
                                     "are), which a realization does not move; vary a "
                                     "stiffness or a mass instead");
+      const bool scalar = entry.rfind("Hinges/", 0) == 0 || entry.rfind("Bouc-Wen/", 0) == 0 ||
+                          entry == "Damping/a0" || entry == "Damping/a1" ||
+                          entry == "Damping/Damping ratio";
+      if (!scalar)
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      // an entry it knows, of one value (an unknown one says so first)
+      const ModelParameter known =
+        entry.rfind("Hinges/", 0) == 0   ? hinge_parameter(p, entry.substr(7), model) :
+        entry.rfind("Bouc-Wen/", 0) == 0 ? bouc_wen_parameter(p, entry.substr(9), model) :
+                                           p;
       if (indexed)
         throw std::invalid_argument("'" + p.path + "': '" + entry + "' takes no [entry]");
-      if (entry.rfind("Hinges/", 0) == 0)
-        return hinge_parameter(p, entry.substr(7), model);
-      if (entry.rfind("Bouc-Wen/", 0) == 0)
-        return bouc_wen_parameter(p, entry.substr(9), model);
+      if (entry.rfind("Hinges/", 0) == 0 || entry.rfind("Bouc-Wen/", 0) == 0)
+        return known;
       if (entry == "Damping/a0" || entry == "Damping/a1")
         {
           p.kind = entry == "Damping/a0" ? Kind::rayleigh_a0 : Kind::rayleigh_a1;
@@ -584,8 +593,8 @@ namespace poundfe
                                         "(Damping/Type = modes)");
           return p;
         }
-      throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
-                                  known_paths + ")");
+      Assert(false, dealii::ExcInternalError());
+      return p;
     }
   } // namespace
 
