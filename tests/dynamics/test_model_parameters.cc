@@ -331,13 +331,14 @@ namespace
 // storeys of building 2, against the file built with the sampled values.
 BOOST_AUTO_TEST_CASE(random_frame_sections_hinges_and_bouc_wen_shapes)
 {
+  // the factor first: the hinges' k must then follow E and I written after it
   const std::string variables =
+    "f: Building 1/Hinges/Stiffness factor ~ uniform lower 5 upper 15; "
     "E1: Building 1/Column E[1] ~ lognormal mean 3e10 cov 0.1; "
     "I: Building 1/Column I ~ lognormal mean 1e-4 cov 0.2; "
     "Ab: Building 1/Beam A[2] ~ uniform lower 0.03 upper 0.05; "
     "Ib: Building 1/Beam I[3] ~ lognormal mean 2e-4 cov 0.2; "
     "mc: Building 1/Column mass per length[1] ~ uniform lower 0 upper 100; "
-    "f: Building 1/Hinges/Stiffness factor ~ uniform lower 5 upper 15; "
     "alpha: Building 1/Bouc-Wen/alpha ~ uniform lower 0.01 upper 0.2; "
     "gamma: Building 1/Bouc-Wen/gamma ~ uniform lower 0.3 upper 0.5; "
     "n: Building 2/Bouc-Wen/n ~ uniform lower 1 upper 3; "
@@ -345,12 +346,12 @@ BOOST_AUTO_TEST_CASE(random_frame_sections_hinges_and_bouc_wen_shapes)
     "A: Building 2/Bouc-Wen/A ~ uniform lower 0.9 upper 1.1";
   const OverridesOf overrides = [](const std::vector<double> &x) {
     return std::vector<ParameterOverride>{
-      {"Building 1/Column E", list_with(x[0], 0, "3e10")},
-      {"Building 1/Column I", exact(x[1])},
-      {"Building 1/Beam A", list_with(x[2], 1, "0.04")},
-      {"Building 1/Beam I", list_with(x[3], 2, "2e-4")},
-      {"Building 1/Column mass per length", list_with(x[4], 0, "50")},
-      {"Building 1/Hinges/Stiffness factor", exact(x[5])},
+      {"Building 1/Hinges/Stiffness factor", exact(x[0])},
+      {"Building 1/Column E", list_with(x[1], 0, "3e10")},
+      {"Building 1/Column I", exact(x[2])},
+      {"Building 1/Beam A", list_with(x[3], 1, "0.04")},
+      {"Building 1/Beam I", list_with(x[4], 2, "2e-4")},
+      {"Building 1/Column mass per length", list_with(x[5], 0, "50")},
       {"Building 1/Bouc-Wen/alpha", exact(x[6])},
       {"Building 1/Bouc-Wen/gamma", exact(x[7])},
       {"Building 2/Bouc-Wen/n", exact(x[8])},
