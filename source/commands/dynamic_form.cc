@@ -43,6 +43,9 @@ namespace poundfe::commands
       settings.realization = p.form_realization;
       settings.scale       = p.form_scale;
       settings.form        = p.form;
+      settings.sorm               = p.form_sorm;
+      settings.importance_samples = p.form_importance_samples;
+      settings.importance_seed    = runner.stochastic_load().seed();
       return settings;
     }
 
@@ -78,8 +81,24 @@ namespace poundfe::commands
         .value("variables", r.variable_names)
         .value("design_point_x", r.design_point)
         .value("design_point_u", r.form.design_point_u)
-        .value("alpha", r.form.alpha)
-        .end_object();
+        .value("alpha", r.form.alpha);
+      if (r.sorm)
+        json.begin_object("sorm")
+          .value("curvatures", r.sorm->curvatures)
+          .value("breitung", r.sorm->breitung)
+          .value("tvedt", r.sorm->tvedt)
+          .value("beta_breitung", r.sorm->beta_breitung)
+          .value("beta_tvedt", r.sorm->beta_tvedt)
+          .value("time_histories", r.n_sorm_time_histories)
+          .end_object();
+      if (r.importance)
+        json.begin_object("importance_sampling")
+          .value("failure_probability", r.importance->probability)
+          .value("cov", r.importance->coefficient_of_variation)
+          .value("samples", r.importance->n_samples)
+          .value("failures", r.importance->n_failures)
+          .end_object();
+      json.end_object();
       return json.str();
     }
   } // namespace
@@ -101,7 +120,15 @@ namespace poundfe::commands
     write_file_atomically(run.directory + "/summary.json", summary_json(input, result));
     run.out << "dynamic FORM: beta = " << result.form.beta
             << ", Pf = " << result.form.probability << " (" << result.form.iterations
-            << " iterations, " << result.n_time_histories << " time histories)\n"
+            << " iterations, " << result.n_time_histories << " time histories)\n";
+    if (result.sorm)
+      run.out << "SORM: Pf = " << result.sorm->breitung << " (Breitung), "
+              << result.sorm->tvedt << " (Tvedt)\n";
+    if (result.importance)
+      run.out << "importance sampling: Pf = " << result.importance->probability << " (COV "
+              << result.importance->coefficient_of_variation << ", "
+              << result.importance->n_samples << " time histories)\n";
+    run.out
             << "results in " << run.directory << "/ (summary.json, design_point.csv)\n";
     if (!result.form.converged)
       {

@@ -674,7 +674,10 @@ namespace poundfe::commands
     /// The Random parameters of a Monte Carlo without contact: the pairs'
     /// separations (Model/Separations[i], sampled per realization: they
     /// change no free response) apart from the structure's (made random in
-    /// the runner). Limit states are not used here.
+    /// the runner), each with its block of the correlation matrix; with a
+    /// correlation, the separations' Nataf transformation is over the
+    /// structure's variables then the separations (RandomSeparations).
+    /// Limit states are not used here.
     void
     split_random_parameters(const InputParameters &input, const std::vector<AdjacentPair> &pairs,
                             RandomParameterParameters &structure, RandomSeparations &separations)
@@ -684,6 +687,7 @@ namespace poundfe::commands
       structure = p;
       structure.names.clear(), structure.paths.clear(), structure.distributions.clear();
       structure.limit_state_names.clear(), structure.expressions.clear();
+      std::vector<std::size_t> of_structure, of_separations; // indices in p's variables
       for (std::size_t i = 0; i < p.names.size(); ++i)
         {
           std::smatch match;
@@ -692,6 +696,7 @@ namespace poundfe::commands
               structure.names.push_back(p.names[i]);
               structure.paths.push_back(p.paths[i]);
               structure.distributions.push_back(p.distributions[i]);
+              of_structure.push_back(i);
               continue;
             }
           const unsigned long b  = match[2].matched ? std::stoul(match[2]) : 1;
@@ -702,13 +707,30 @@ namespace poundfe::commands
             input.fail("Random parameters/Variables",
                        "variable '" + p.names[i] + "': no adjacent pair of buildings " +
                          std::to_string(b) + " and " + std::to_string(b + 1));
-          if (!p.correlation.empty())
-            input.fail("Random parameters/Correlation",
-                       "separation samples random separations independently of the other "
-                       "variables: leave Correlation empty");
           separations.pairs.push_back(at - pairs.begin());
           separations.distributions.push_back(p.distributions[i]);
+          of_separations.push_back(i);
         }
+      if (p.correlation.empty())
+        return;
+      // the correlation in the order (structure, separations); the
+      // structure's block is the runner's
+      std::vector<std::size_t> order = of_structure;
+      order.insert(order.end(), of_separations.begin(), of_separations.end());
+      DenseMatrix reordered(order.size(), std::vector<double>(order.size()));
+      std::vector<Distribution> marginals;
+      for (std::size_t i = 0; i < order.size(); ++i)
+        {
+          marginals.push_back(p.distributions[order[i]]);
+          for (std::size_t j = 0; j < order.size(); ++j)
+            reordered[i][j] = p.correlation[order[i]][order[j]];
+        }
+      structure.correlation.assign(of_structure.size(), {});
+      for (std::size_t i = 0; i < of_structure.size(); ++i)
+        structure.correlation[i].assign(reordered[i].begin(),
+                                        reordered[i].begin() + of_structure.size());
+      if (!of_separations.empty()) // R was checked on reading: T exists
+        separations.joint = std::make_shared<const NatafTransformation>(marginals, reordered);
     }
 
     /// Monte Carlo without contact and, with a site hazard, at its PGA levels.
@@ -730,7 +752,10 @@ namespace poundfe::commands
         hazard->interrupted = true;
       else if (hazard)
         {
-          RealizationRunner  runner(analysis, time_history_parameters(input));
+          // the levels' structure is as random as the file's PGA's (the same
+          // normals of realization r: the same sampled structure at every level)
+          RealizationRunner runner(analysis, time_history_parameters(input));
+          attach_random_parameters(runner, structure, input, input.modal.eigensolver);
           SeparationObserver observer(analysis.model, pairs);
           run_pounding_hazard(largest_approach_job(runner, observer, pairs),
                               input.monte_carlo.realizations, input.separation.hazard, directory,

@@ -4,7 +4,9 @@
 // (model/model_builder.cc) put the entry's value, so a realization equals
 // the model built from a file with that value (tests/dynamics/
 // test_model_parameters.cc checks exactly that).
+#include <poundfe/base/numbers.h>
 #include <poundfe/dynamics/model_parameter.h>
+#include <poundfe/model/plan_builder.h>
 #include <poundfe/dynamics/modal_damping_assembly.h>
 #include <poundfe/model/floor_mass.h>
 
@@ -12,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <regex>
 #include <stdexcept>
 
@@ -25,7 +28,31 @@ namespace poundfe
       "Building b/Storey stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
       "drifts[i], Building b/Hinges/Yield moment, Building b/Damping/Damping ratio, "
       "Building b/Floor masses[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
-      "Friction/Kinetic coefficient, Links/Viscous dampers[i]";
+      "Friction/Kinetic coefficient, Links/Viscous dampers[i], Building b/Column E[i] (A, I, "
+      "mass per length), Building b/Beam E[i] (A, I, mass per length), Building b/Hinges/"
+      "Stiffness, Building b/Hinges/Stiffness factor, Building b/Hinges/Yield rotation, "
+      "Building b/Bouc-Wen/alpha (A, beta, gamma, n, delta A, delta nu, delta eta), "
+      "Building b/Damping/a0, Building b/Damping/a1, Building b/Damping/Modal ratios[i]";
+
+    /// The section entries of a generated frame's columns and beams.
+    const std::vector<std::pair<std::string, double Section::*>> section_entries = {
+      {"E", &Section::youngs_modulus},
+      {"A", &Section::area},
+      {"I", &Section::second_moment},
+      {"mass per length", &Section::mass_per_length}};
+
+    /// The entries of a building's Bouc-Wen subsection.
+    const std::vector<std::pair<std::string, double BoucWenParameters::*>> bouc_wen_entries = {
+      {"alpha", &BoucWenParameters::alpha},         {"A", &BoucWenParameters::A},
+      {"beta", &BoucWenParameters::beta},           {"gamma", &BoucWenParameters::gamma},
+      {"n", &BoucWenParameters::n},                 {"delta A", &BoucWenParameters::delta_A},
+      {"delta nu", &BoucWenParameters::delta_nu},   {"delta eta", &BoucWenParameters::delta_eta}};
+
+    /// Entries that place nodes: the model's geometry, which a realization
+    /// does not move.
+    const std::vector<std::string> geometry_entries = {
+      "Storey heights", "Bay widths", "Number of storeys", "Number of bays",
+      "Elements per member", "Drawing width"};
 
     /// Indices in model.links of the storeys of building b, bottom to top.
     std::vector<unsigned int>
@@ -118,13 +145,162 @@ namespace poundfe
     void
     require_in_range(const ModelParameter &p, const double value)
     {
-      const bool zero_allowed = p.can_be_zero();
-      if (!(zero_allowed ? value >= 0 : value > 0) || !std::isfinite(value))
-        throw std::invalid_argument("'" + p.path + "' cannot take the sampled value " +
-                                    std::to_string(value) + " (it must be " +
-                                    (zero_allowed ? ">= 0" : "> 0") +
-                                    "; choose a distribution that stays in range, e.g. "
-                                    "lognormal or truncated normal)");
+      const ModelParameter::Range r = p.range();
+      if (!(r.lower_included ? value >= r.lower : value > r.lower) || !(value <= r.upper) ||
+          !std::isfinite(value))
+        {
+          std::string range = (r.lower_included ? ">= " : "> ") + number_text(r.lower);
+          if (std::isfinite(r.upper))
+            range += " and <= " + number_text(r.upper);
+          throw std::invalid_argument("'" + p.path + "' cannot take the sampled value " +
+                                      number_text(value) + " (it must be " + range +
+                                      "; choose a distribution that stays in range, e.g. "
+                                      "lognormal or truncated normal)");
+        }
+    }
+
+    /// The hinges of building b.
+    std::vector<Hinge *>
+    hinges_of(Model &model, const unsigned int b)
+    {
+      std::vector<Hinge *> result;
+      for (Hinge &h : model.hinges)
+        if (h.building == b)
+          result.push_back(&h);
+      return result;
+    }
+
+    /// The origin of `hinge` (an element of model.hinges) under `p`.
+    const HingeOrigin &
+    origin_of(const ModelParameter &p, const Model &model, const Hinge &hinge)
+    {
+      Assert(p.hinges && p.hinges->size() == model.hinges.size(),
+             dealii::ExcMessage("a section or hinge parameter needs the hinges' origins"));
+      return (*p.hinges)[&hinge - model.hinges.data()];
+    }
+
+    /// Sets a hinge's k and, for a hinge whose u_y comes from its yield
+    /// moment, u_y = M_y / k with M_y = k u_y before (the builder's M_y to
+    /// rounding).
+    void
+    set_hinge_stiffness(Hinge &hinge, const HingeOrigin &origin, const double stiffness)
+    {
+      if (origin.yield_from_moment)
+        hinge.law.yield_deformation = hinge.law.stiffness * hinge.law.yield_deformation / stiffness;
+      hinge.law.stiffness = stiffness;
+    }
+
+    /// 6 E I / L of the member that carries `hinge` (k / factor in the builder).
+    double
+    section_stiffness(const Model &model, const Hinge &hinge)
+    {
+      const Member &member = model.members[hinge.member];
+      return 6 * member.section.youngs_modulus * member.section.second_moment /
+             member.member_length;
+    }
+
+    /// Whether `member` is one `p` names: a column of storey i (group 2i - 1)
+    /// or a beam of floor i (group 2i) of its building, or all of them.
+    bool
+    named_member(const ModelParameter &p, const Member &member)
+    {
+      const int group = 2 * p.entry + (p.member_kind == MemberKind::column ? 1 : 2);
+      return member.building == p.building && member.kind == p.member_kind &&
+             (p.entry < 0 || int(member.group) == group);
+    }
+
+    /// The section value of the named members; a hinge whose k is f 6 E I / L
+    /// of its member keeps its f = k / (6 E I / L) of before.
+    void
+    write_member_section(const ModelParameter &p, const double value, Model &model)
+    {
+      const bool bending =
+        p.section == &Section::youngs_modulus || p.section == &Section::second_moment;
+      std::vector<Hinge *> following;
+      std::vector<double>  factors;
+      for (Hinge &hinge : model.hinges)
+        if (bending && named_member(p, model.members[hinge.member]) &&
+            origin_of(p, model, hinge).stiffness_from_section)
+          {
+            following.push_back(&hinge);
+            factors.push_back(hinge.law.stiffness / section_stiffness(model, hinge));
+          }
+      for (Member &member : model.members)
+        if (named_member(p, member))
+          member.section.*p.section = value;
+      for (std::size_t h = 0; h < following.size(); ++h)
+        set_hinge_stiffness(*following[h], origin_of(p, model, *following[h]),
+                            factors[h] * section_stiffness(model, *following[h]));
+    }
+
+    /// beta + gamma > 0 and beta >= |gamma| or gamma >= |beta|, as the input
+    /// checks them (model/parameters.cc).
+    void
+    require_bouc_wen_shape(const ModelParameter &p, const BoucWenParameters &h)
+    {
+      if (!(h.beta + h.gamma > 0) || !(h.beta >= std::abs(h.gamma) || h.gamma >= std::abs(h.beta)))
+        throw std::invalid_argument("'" + p.path + "': the sampled value gives beta = " +
+                                    number_text(h.beta) + ", gamma = " + number_text(h.gamma) +
+                                    ", which need beta + gamma > 0 and beta >= |gamma| or "
+                                    "gamma >= |beta|");
+    }
+
+    void
+    write_bouc_wen_shape(const ModelParameter &p, const double value, Model &model)
+    {
+      for (Hinge *hinge : hinges_of(model, p.building))
+        {
+          hinge->law.*p.shape = value;
+          require_bouc_wen_shape(p, hinge->law);
+        }
+      for (StoreyLink &link : model.links)
+        if (link.building == p.building && link.hysteretic)
+          {
+            link.hysteresis.*p.shape = value;
+            require_bouc_wen_shape(p, link.hysteresis);
+          }
+    }
+
+    /// The parameters of a building's hinges and its damping coefficients.
+    void
+    write_hinge_or_damping(const ModelParameter &p, const double value, Model &model)
+    {
+      RayleighDamping &damping = model.buildings[p.building].damping;
+      switch (p.kind)
+        {
+          case Kind::hinge_yield_moment:
+            for (Hinge *hinge : hinges_of(model, p.building))
+              hinge->law.yield_deformation = value / hinge->law.stiffness;
+            return;
+          case Kind::hinge_stiffness:
+            for (Hinge *hinge : hinges_of(model, p.building))
+              set_hinge_stiffness(*hinge, origin_of(p, model, *hinge), value);
+            return;
+          case Kind::hinge_stiffness_factor:
+            for (Hinge *hinge : hinges_of(model, p.building))
+              if (origin_of(p, model, *hinge).stiffness_from_section)
+                set_hinge_stiffness(*hinge, origin_of(p, model, *hinge),
+                                    value * section_stiffness(model, *hinge));
+            return;
+          case Kind::hinge_yield_rotation:
+            for (Hinge *hinge : hinges_of(model, p.building))
+              if (!origin_of(p, model, *hinge).yield_from_moment)
+                hinge->law.yield_deformation = value;
+            return;
+          case Kind::rayleigh_a0:
+            damping.a0 = value;
+            return;
+          case Kind::rayleigh_a1:
+            damping.a1 = value;
+            return;
+          case Kind::modal_ratio:
+            for (unsigned int i = 0; i < damping.modal_ratios.size(); ++i)
+              if (p.entry < 0 || int(i) == p.entry)
+                damping.modal_ratios[i] = value;
+            return;
+          default:
+            Assert(false, dealii::ExcInternalError());
+        }
     }
 
     /// Writes `value` into the model; the checks of model_parameter() hold.
@@ -151,12 +327,6 @@ namespace poundfe
           case Kind::floor_mass:
             require_in_range(p, value);
             write_floor_masses(p, value, model);
-            return;
-          case Kind::hinge_yield_moment:
-            require_in_range(p, value);
-            for (Hinge &hinge : model.hinges)
-              if (hinge.building == p.building)
-                hinge.law.yield_deformation = value / hinge.law.stiffness;
             return;
           case Kind::damping_ratio:
             require_in_range(p, value);
@@ -186,6 +356,24 @@ namespace poundfe
             require_in_range(p, value);
             for (const unsigned int l : named_dampers(p, model))
               model.building_links[l].law.damping = value;
+            return;
+          case Kind::member_section:
+            require_in_range(p, value);
+            write_member_section(p, value, model);
+            return;
+          case Kind::bouc_wen_shape:
+            require_in_range(p, value);
+            write_bouc_wen_shape(p, value, model);
+            return;
+          case Kind::hinge_yield_moment:
+          case Kind::hinge_stiffness:
+          case Kind::hinge_stiffness_factor:
+          case Kind::hinge_yield_rotation:
+          case Kind::rayleigh_a0:
+          case Kind::rayleigh_a1:
+          case Kind::modal_ratio:
+            require_in_range(p, value);
+            write_hinge_or_damping(p, value, model);
             return;
         }
     }
@@ -226,6 +414,111 @@ namespace poundfe
                                         building.name + "' has no floor mass in the input");
     }
 
+    /// "Column E[i]" ... "Beam mass per length[i]" of a generated frame.
+    ModelParameter
+    section_parameter(ModelParameter p, const std::string &entry, const Model &model)
+    {
+      const Building &building = model.buildings[p.building];
+      const bool      column   = entry.rfind("Column ", 0) == 0;
+      const std::string which  = entry.substr(column ? 7 : 5);
+      const auto        found  = std::find_if(section_entries.begin(), section_entries.end(),
+                                      [&](const auto &e) { return e.first == which; });
+      if (found == section_entries.end())
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      if (building.type != BuildingType::frame || model.dimension != 2)
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' is not a generated 2D frame (Type = frame)");
+      if (p.entry >= int(building.floors.size()))
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name + "' has " +
+                                    (column ? "storeys" : "floors") + " 1.." +
+                                    std::to_string(building.floors.size()));
+      p.kind        = Kind::member_section;
+      p.member_kind = column ? MemberKind::column : MemberKind::beam;
+      p.section     = found->second;
+      return p;
+    }
+
+    /// "Damping/Modal ratios[i]" of a building with modal damping.
+    ModelParameter
+    modal_ratio_parameter(ModelParameter p, const Model &model)
+    {
+      const Building &building = model.buildings[p.building];
+      p.kind                   = Kind::modal_ratio;
+      if (building.damping.kind != RayleighDamping::Kind::modal)
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has no modal damping (Damping/Type = modal)");
+      if (p.entry >= int(building.damping.modal_ratios.size()))
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has modal ratios 1.." +
+                                    std::to_string(building.damping.modal_ratios.size()));
+      return p;
+    }
+
+    /// "Hinges/ENTRY": the building's hinges must have what the entry sets
+    /// (checked when `p.hinges` is known).
+    ModelParameter
+    hinge_parameter(ModelParameter p, const std::string &entry, const Model &model)
+    {
+      const std::string &name = model.buildings[p.building].name;
+      if (entry == "Yield moment")
+        p.kind = Kind::hinge_yield_moment;
+      else if (entry == "Stiffness")
+        p.kind = Kind::hinge_stiffness;
+      else if (entry == "Stiffness factor")
+        p.kind = Kind::hinge_stiffness_factor;
+      else if (entry == "Yield rotation")
+        p.kind = Kind::hinge_yield_rotation;
+      else
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      bool any = false, from_section = false, from_rotation = false;
+      for (const Hinge &h : model.hinges)
+        if (h.building == p.building)
+          {
+            any = true;
+            if (p.hinges)
+              {
+                from_section  = from_section || origin_of(p, model, h).stiffness_from_section;
+                from_rotation = from_rotation || !origin_of(p, model, h).yield_from_moment;
+              }
+          }
+      if (!any)
+        throw std::invalid_argument("'" + p.path + "': building '" + name + "' has no hinges");
+      if (p.hinges && p.kind == Kind::hinge_stiffness_factor && !from_section)
+        throw std::invalid_argument("'" + p.path + "': the hinges of building '" + name +
+                                    "' have a given Hinges/Stiffness (the factor is unused)");
+      if (p.hinges && p.kind == Kind::hinge_yield_rotation && !from_rotation)
+        throw std::invalid_argument("'" + p.path + "': the hinges of building '" + name +
+                                    "' yield at their Hinges/Yield moment (the rotation is "
+                                    "unused)");
+      return p;
+    }
+
+    /// "Bouc-Wen/ENTRY": the building must have a Bouc-Wen element.
+    ModelParameter
+    bouc_wen_parameter(ModelParameter p, const std::string &entry, const Model &model)
+    {
+      const auto found = std::find_if(bouc_wen_entries.begin(), bouc_wen_entries.end(),
+                                      [&](const auto &e) { return e.first == entry; });
+      if (found == bouc_wen_entries.end())
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      const bool hysteretic =
+        std::any_of(model.hinges.begin(), model.hinges.end(),
+                    [&](const Hinge &h) { return h.building == p.building; }) ||
+        std::any_of(model.links.begin(), model.links.end(), [&](const StoreyLink &l) {
+          return l.building == p.building && l.hysteretic;
+        });
+      if (!hysteretic)
+        throw std::invalid_argument("'" + p.path + "': building '" +
+                                    model.buildings[p.building].name +
+                                    "' has no Bouc-Wen hinges or storeys in a 2D model");
+      p.kind  = Kind::bouc_wen_shape;
+      p.shape = found->second;
+      return p;
+    }
+
     /// The parameter of a "Building b/ENTRY" path.
     ModelParameter
     building_parameter(ModelParameter p, const std::string &entry, const bool indexed,
@@ -258,15 +551,37 @@ namespace poundfe
           check_floor_masses(p, model);
           return p;
         }
-      const bool scalar = entry == "Hinges/Yield moment" || entry == "Damping/Damping ratio";
-      if (scalar && indexed)
+      if (entry.rfind("Column ", 0) == 0 || entry.rfind("Beam ", 0) == 0)
+        return section_parameter(p, entry, model);
+      if (entry == "Damping/Modal ratios")
+        return modal_ratio_parameter(p, model);
+      if (std::find(geometry_entries.begin(), geometry_entries.end(), entry) !=
+          geometry_entries.end())
+        throw std::invalid_argument("'" + p.path + "' is the model's geometry (where its nodes "
+                                    "are), which a realization does not move; vary a "
+                                    "stiffness or a mass instead");
+      const bool scalar = entry.rfind("Hinges/", 0) == 0 || entry.rfind("Bouc-Wen/", 0) == 0 ||
+                          entry == "Damping/a0" || entry == "Damping/a1" ||
+                          entry == "Damping/Damping ratio";
+      if (!scalar)
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      // an entry it knows, of one value (an unknown one says so first)
+      const ModelParameter known =
+        entry.rfind("Hinges/", 0) == 0   ? hinge_parameter(p, entry.substr(7), model) :
+        entry.rfind("Bouc-Wen/", 0) == 0 ? bouc_wen_parameter(p, entry.substr(9), model) :
+                                           p;
+      if (indexed)
         throw std::invalid_argument("'" + p.path + "': '" + entry + "' takes no [entry]");
-      if (entry == "Hinges/Yield moment")
+      if (entry.rfind("Hinges/", 0) == 0 || entry.rfind("Bouc-Wen/", 0) == 0)
+        return known;
+      if (entry == "Damping/a0" || entry == "Damping/a1")
         {
-          p.kind = Kind::hinge_yield_moment;
-          if (std::none_of(model.hinges.begin(), model.hinges.end(),
-                           [&](const Hinge &h) { return h.building == p.building; }))
-            throw std::invalid_argument("'" + p.path + "': building '" + name + "' has no hinges");
+          p.kind = entry == "Damping/a0" ? Kind::rayleigh_a0 : Kind::rayleigh_a1;
+          if (model.buildings[p.building].damping.kind != RayleighDamping::Kind::coefficients)
+            throw std::invalid_argument("'" + p.path + "': building '" + name +
+                                        "' has no given Rayleigh coefficients "
+                                        "(Damping/Type = coefficients)");
           return p;
         }
       if (entry == "Damping/Damping ratio")
@@ -278,33 +593,140 @@ namespace poundfe
                                         "(Damping/Type = modes)");
           return p;
         }
-      throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
-                                  known_paths + ")");
+      Assert(false, dealii::ExcInternalError());
+      return p;
     }
   } // namespace
 
   bool
+  ModelParameter::enters_matrices() const
+  {
+    return kind == Kind::storey_stiffness || kind == Kind::floor_mass ||
+           kind == Kind::member_section || kind == Kind::hinge_stiffness ||
+           kind == Kind::hinge_stiffness_factor;
+  }
+
+  bool
+  ModelParameter::enters_mass() const
+  {
+    return kind == Kind::floor_mass ||
+           (kind == Kind::member_section && section == &Section::mass_per_length);
+  }
+
+  bool
   ModelParameter::enters_linear_part() const
   {
-    return kind == Kind::storey_stiffness || kind == Kind::storey_damping ||
-           kind == Kind::damping_ratio || kind == Kind::floor_mass;
+    return enters_matrices() || kind == Kind::storey_damping || kind == Kind::damping_ratio ||
+           kind == Kind::rayleigh_a0 || kind == Kind::rayleigh_a1 || kind == Kind::modal_ratio;
+  }
+
+  ModelParameter::Range
+  ModelParameter::range() const
+  {
+    const double infinity = std::numeric_limits<double>::infinity();
+    if (kind == Kind::bouc_wen_shape)
+      {
+        if (shape == &BoucWenParameters::alpha)
+          return {0, true, 1};
+        if (shape == &BoucWenParameters::n)
+          return {1, true, infinity};
+        if (shape == &BoucWenParameters::beta || shape == &BoucWenParameters::gamma)
+          return {-infinity, true, infinity}; // their sum and order are checked
+        return {0, shape != &BoucWenParameters::A, infinity};
+      }
+    const bool zero = kind == Kind::storey_damping || kind == Kind::separation ||
+                      kind == Kind::contact_damping || kind == Kind::static_friction ||
+                      kind == Kind::kinetic_friction || kind == Kind::link_damping ||
+                      kind == Kind::rayleigh_a0 || kind == Kind::rayleigh_a1 ||
+                      kind == Kind::modal_ratio ||
+                      (kind == Kind::member_section && section == &Section::mass_per_length);
+    return {0, zero, infinity};
   }
 
   bool
   ModelParameter::can_be_zero() const
   {
-    return kind == Kind::storey_damping || kind == Kind::separation ||
-           kind == Kind::contact_damping || kind == Kind::static_friction ||
-           kind == Kind::kinetic_friction || kind == Kind::link_damping;
+    const Range r = range();
+    return r.lower < 0 || (r.lower == 0 && r.lower_included);
+  }
+
+  namespace
+  {
+    /// The value of a hinge or Bouc-Wen parameter: that of the building's
+    /// first hinge that has it (else its first hysteretic storey's).
+    double
+    hinge_or_storey_value(const ModelParameter &p, const Model &model)
+    {
+      for (const Hinge &h : model.hinges)
+        if (h.building == p.building)
+          switch (p.kind)
+            {
+              case Kind::hinge_stiffness:
+                return h.law.stiffness;
+              case Kind::hinge_stiffness_factor:
+                if (origin_of(p, model, h).stiffness_from_section)
+                  return h.law.stiffness / section_stiffness(model, h);
+                break;
+              case Kind::hinge_yield_rotation:
+                if (!origin_of(p, model, h).yield_from_moment)
+                  return h.law.yield_deformation;
+                break;
+              default:
+                return h.law.*p.shape;
+            }
+      for (const StoreyLink &l : model.links)
+        if (l.building == p.building && l.hysteretic && p.kind == Kind::bouc_wen_shape)
+          return l.hysteresis.*p.shape;
+      return 0;
+    }
+  } // namespace
+
+  std::vector<HingeOrigin>
+  hinge_origins(const Model &model, const ModelParameters &input)
+  {
+    // as insert_hinges (model/model_builder.cc) reads the entries: the
+    // hinge's member group's place in Groups (0 without Groups)
+    std::vector<HingeOrigin> origins;
+    for (const Hinge &hinge : model.hinges)
+      {
+        const BuildingParameters &b     = input.buildings[hinge.building];
+        const unsigned int        group = model.members[hinge.member].group;
+        const auto   at = std::find(b.hinge_groups.begin(), b.hinge_groups.end(), group);
+        const unsigned int g = b.hinge_groups.empty() ? 0 : at - b.hinge_groups.begin();
+        origins.push_back({value_for(b.hinge_stiffnesses, g) <= 0,
+                           value_for(b.hinge_yield_moments, g) > 0});
+      }
+    return origins;
+  }
+
+  void
+  settle_hinge_origins(std::vector<ModelParameter> &parameters, std::vector<HingeOrigin> origins,
+                       const Model &model)
+  {
+    AssertDimension(origins.size(), model.hinges.size());
+    for (const ModelParameter &p : parameters)
+      for (unsigned int h = 0; h < model.hinges.size(); ++h)
+        if (model.hinges[h].building == p.building)
+          {
+            if (p.kind == Kind::hinge_stiffness)
+              origins[h].stiffness_from_section = false;
+            if (p.kind == Kind::hinge_yield_moment)
+              origins[h].yield_from_moment = true;
+          }
+    const auto shared = std::make_shared<const std::vector<HingeOrigin>>(std::move(origins));
+    for (ModelParameter &p : parameters)
+      p.hinges = shared;
   }
 
   ModelParameter
-  model_parameter(const std::string &path, const Model &model)
+  model_parameter(const std::string &path, const Model &model,
+                  std::shared_ptr<const std::vector<HingeOrigin>> hinges)
   {
     static const std::regex with_entry(R"(^\s*(.*?)\s*\[\s*([0-9]+)\s*\]\s*$)");
     static const std::regex building(R"(^Building ([0-9]+)/(.+)$)");
     ModelParameter p;
     p.path            = path;
+    p.hinges          = std::move(hinges);
     std::string entry = path;
     std::smatch match;
     const bool  indexed = std::regex_match(path, match, with_entry);
@@ -400,6 +822,22 @@ namespace poundfe
           return model.friction_surfaces.front().law.kinetic_coefficient;
         case Kind::link_damping:
           return model.building_links[named_dampers(p, model).front()].law.damping;
+        case Kind::member_section:
+          for (const Member &member : model.members)
+            if (named_member(p, member))
+              return member.section.*p.section;
+          break;
+        case Kind::hinge_stiffness:
+        case Kind::hinge_stiffness_factor:
+        case Kind::hinge_yield_rotation:
+        case Kind::bouc_wen_shape:
+          return hinge_or_storey_value(p, model);
+        case Kind::rayleigh_a0:
+          return model.buildings[p.building].damping.a0;
+        case Kind::rayleigh_a1:
+          return model.buildings[p.building].damping.a1;
+        case Kind::modal_ratio:
+          return model.buildings[p.building].damping.modal_ratios[std::max(p.entry, 0)];
       }
     return 0;
   }
@@ -422,8 +860,7 @@ namespace poundfe
     for (unsigned int i = 0; i < targets.size(); ++i)
       {
         write(targets[i], values[i], working.model);
-        matrices_changed = matrices_changed || targets[i].kind == Kind::storey_stiffness ||
-                           targets[i].kind == Kind::floor_mass;
+        matrices_changed = matrices_changed || targets[i].enters_matrices();
       }
     if (linear)
       assemble_linear_part(matrices_changed);
@@ -441,12 +878,16 @@ namespace poundfe
         working.system.mass                = std::move(fresh.mass);
         working.system.stiffness           = std::move(fresh.stiffness);
         working.system.geometric_stiffness = std::move(fresh.geometric_stiffness);
+        working.system.structure_mass      = std::move(fresh.structure_mass);
+        working.system.structure_stiffness = std::move(fresh.structure_stiffness);
       }
     LinearSystem &system = working.system;
     std::vector<std::array<double, 2>> coefficients = system.rayleigh;
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
         const RayleighDamping &d = model.buildings[b].damping;
+        if (d.kind == RayleighDamping::Kind::coefficients)
+          coefficients[b] = {{d.a0, d.a1}};
         if (d.kind != RayleighDamping::Kind::modes && !d.is_modal())
           continue;
         Modes &modes = working.building_modes[b];

@@ -114,7 +114,7 @@ namespace poundfe
       { // new M, K, C: a new engine (the factorisations change)
         const auto &targets = structure->parameters();
         if (std::any_of(targets.begin(), targets.end(), [](const ModelParameter &p) {
-              return p.kind == ModelParameter::Kind::floor_mass;
+              return p.enters_mass();
             })) // -M r a_g of the new M (a 2D model: no horizontal pair)
           excitation =
             Excitation(working.system, excitation.ground_motion(), excitation.nodal_forces());
@@ -251,10 +251,18 @@ namespace poundfe
                               const double amplitude_factor)
   {
     AssertDimension(normals.size(), n_variables());
+    // parameters that enter the linear part make a new engine and a new
+    // PeakResponse: the caller's pointer to the old one is replaced (it
+    // would dangle)
+    Observers         in_use = observers;
+    const StepObserver *old_peaks = peaks.get();
     if (structure)
       apply_parameters(normals);
+    for (StepObserver *&observer : in_use)
+      if (observer == old_peaks)
+        observer = peaks.get();
     load.apply(std::vector<double>(normals.begin(), normals.begin() + load.n_variables()),
                excitation, amplitude_factor);
-    return history->run(excitation, observers);
+    return history->run(excitation, in_use);
   }
 } // namespace poundfe

@@ -45,6 +45,19 @@ namespace poundfe
     };
     ReliabilityProblem problem{NatafTransformation(marginals), {run}, SystemType::series};
     result.form = form(problem, 0, settings.form);
+    if (result.form.converged && settings.sorm)
+      {
+        const unsigned long before = result.n_time_histories;
+        result.sorm = sorm(problem, 0, result.form, settings.form.gradient_step);
+        result.n_sorm_time_histories = result.n_time_histories - before;
+      }
+    if (result.form.converged && settings.importance_samples > 0)
+      {
+        SamplingSettings sampling;
+        sampling.max_samples = settings.importance_samples;
+        sampling.seed        = settings.importance_seed;
+        result.importance = importance_sampling(problem, {result.form.design_point_u}, sampling);
+      }
 
     if (!result.form.design_point_x.empty())
       {

@@ -3,7 +3,10 @@
 // 1986; reliability/nataf.h) and limit states g(responses, x) <= 0 over the
 // rows of a time-history sampling run, estimated by crude Monte Carlo
 // P = n_f / n, CoV = sqrt((1 - P)/(n P)) (Melchers & Beck 2018, sec. 3.3).
+#include <poundfe/base/numbers.h>
+#include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/dynamics/realization.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/reliability_analysis_parameters.h>
 
@@ -22,28 +25,51 @@ namespace poundfe
   {
     const std::string section = "Random parameters/";
 
-    /// Whether `d` can sample a value < 0 (or <= 0 when 0 is not allowed).
+    /// Whether `d` can sample a value outside [lower, upper] (lower itself
+    /// too when !lower_included).
     bool
-    samples_out_of_range(const Distribution &d, const bool zero_allowed)
+    samples_out_of_range(const Distribution &d, const ModelParameter::Range &range)
     {
-      const std::vector<double> &p      = d.parameters();
-      double                     lowest = 0;
+      const std::vector<double> &p       = d.parameters();
+      const double               infinity = std::numeric_limits<double>::infinity();
+      double                     lowest = -infinity, highest = infinity;
       switch (d.type())
         {
           case DistributionType::lognormal:
           case DistributionType::weibull:
-            return false; // support (0, inf)
+            lowest = 0; // support (0, inf): 0 itself is never sampled
+            if (!(range.lower <= 0) || std::isfinite(range.upper))
+              return true;
+            return false;
           case DistributionType::uniform:
-            lowest = p[0];
+            lowest = p[0], highest = p[1];
             break;
           case DistributionType::truncated_normal:
-            lowest = p[2];
+            lowest = p[2], highest = p[3];
             break;
           case DistributionType::normal:
           case DistributionType::gumbel:
-            return true;
+            break;
         }
-      return zero_allowed ? lowest < 0 : lowest <= 0;
+      return (range.lower_included ? lowest < range.lower : lowest <= range.lower) ||
+             highest > range.upper;
+    }
+
+    /// "<= 0", "< 1", "< 0 or > 1": the values outside the range.
+    std::string
+    outside_text(const ModelParameter::Range &range)
+    {
+      const std::string text = (range.lower_included ? "< " : "<= ") + number_text(range.lower);
+      return std::isfinite(range.upper) ? text + " or > " + number_text(range.upper) : text;
+    }
+
+    /// ">= 0", "> 0", "and <= 1": the bounds a distribution's support must keep.
+    std::string
+    inside_text(const ModelParameter::Range &range)
+    {
+      const std::string text = (range.lower_included ? ">= " : "> ") + number_text(range.lower);
+      return std::isfinite(range.upper) ? text + " and upper <= " + number_text(range.upper) :
+                                          text;
     }
   } // namespace
 
@@ -52,18 +78,25 @@ namespace poundfe
   {
     prm.enter_subsection("Random parameters");
     prm.add_parameter("Variables", variables_text,
-                      "Random model parameters of montecarlo, subset and fragility: 'NAME: PATH "
-                      "~ DISTRIBUTION KEY VALUE ...' separated by ';'. PATH: Building b/Storey "
-                      "stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
-                      "drifts[i] (without [i]: every storey), Building b/Floor masses[i] (without [i]: "
-                      "every floor), Building b/Hinges/Yield moment, "
-                      "Building b/Damping/Damping ratio, Model/Separations[i], Contact/Stiffness, "
-                      "Contact/Damping, Friction/Static coefficient, Friction/Kinetic "
-                      "coefficient, Links/Viscous dampers[i] (c). DISTRIBUTION and keys as Reliability/Random variables. Unit: "
-                      "that of the parameter.");
+                      "Random model parameters of montecarlo, subset, fragility, separation and "
+                      "dynamic-form: 'NAME: PATH ~ DISTRIBUTION KEY VALUE ...' separated by ';'. "
+                      "PATH: Building b/Storey stiffnesses[i], Building b/Storey damping[i], "
+                      "Building b/Storey yield drifts[i] (without [i]: every storey), Building "
+                      "b/Floor masses[i] (without [i]: every floor), Building b/Column E[i], "
+                      "Column A[i], Column I[i], Column mass per length[i] (storey i of a frame), "
+                      "Building b/Beam E[i], Beam A[i], Beam I[i], Beam mass per length[i] (floor "
+                      "i), Building b/Hinges/Yield moment, Hinges/Yield rotation, Hinges/Stiffness, "
+                      "Hinges/Stiffness factor, Building b/Bouc-Wen/alpha (A, beta, gamma, n, "
+                      "delta A, delta nu, delta eta: every hinge and hysteretic storey of b), "
+                      "Building b/Damping/Damping ratio, Damping/a0, Damping/a1, Damping/Modal "
+                      "ratios[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, "
+                      "Friction/Static coefficient, Friction/Kinetic coefficient, Links/Viscous "
+                      "dampers[i] (c). DISTRIBUTION and keys as Reliability/Random variables. "
+                      "Unit: that of the parameter.");
     prm.add_parameter("Correlation", correlation_text,
                       "Correlation matrix of the Variables in their order, rows separated by "
-                      "';' (empty: independent); Nataf transformation. Unit: dimensionless.");
+                      "';' (empty: independent); Nataf transformation (separation: random "
+                      "separations may be correlated too). Unit: dimensionless.");
     prm.add_parameter("Limit states", limit_states_text,
                       "'NAME: EXPRESSION' separated by ';', failure when <= 0: muParser "
                       "expressions over the response columns of realizations.csv (e.g. "
@@ -109,6 +142,13 @@ namespace poundfe
     prm.add_parameter("Central differences", form.central_difference,
                       "Central differences (2n time histories per gradient) instead of forward "
                       "(n). Unit: -.");
+    prm.add_parameter("SORM", form_sorm,
+                      "dynamic-form: after FORM, SORM (Breitung and Tvedt) from the principal "
+                      "curvatures at the design point, the Hessian by central differences with "
+                      "the Gradient step (about 2n^2 time histories). Unit: -.");
+    prm.add_parameter("Importance samples", form_importance_samples,
+                      "dynamic-form: after FORM, importance sampling of this many time histories "
+                      "around the design point (0: none). Unit: count.");
     prm.leave_subsection();
   }
 
@@ -139,7 +179,7 @@ namespace poundfe
         std::vector<std::string> words = input_words(form_scale_text);
         words.insert(words.begin(), "scale");
         form_scale.push_back(parse_distribution(input, section + "FORM/Scale factor", words));
-        if (samples_out_of_range(form_scale.back(), false))
+        if (samples_out_of_range(form_scale.back(), ModelParameter::Range{}))
           input.fail(section + "FORM/Scale factor",
                      "a " + distribution_name(form_scale.back().type()) +
                        " distribution can sample factors <= 0 (use a lognormal or Weibull, or "
@@ -188,7 +228,7 @@ namespace poundfe
 
   void
   attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
-                           const InputFile &input, const Eigensolver eigensolver)
+                           const InputParameters &input, const Eigensolver eigensolver)
   {
     // the responses the limit states name that a realization computes only when asked
     std::vector<std::string> named;
@@ -203,26 +243,30 @@ namespace poundfe
     const std::string           entry = section + "Variables";
     const Model                &model = runner.model();
     std::vector<ModelParameter> parameters;
+    const auto origins = std::make_shared<const std::vector<HingeOrigin>>(
+      hinge_origins(model, input.model)); // as the file has them
     for (unsigned int i = 0; i < p.names.size(); ++i)
       {
         try
           {
-            parameters.push_back(model_parameter(p.paths[i], model));
+            parameters.push_back(model_parameter(p.paths[i], model, origins));
           }
         catch (const std::invalid_argument &e)
           {
             input.fail(entry, "variable '" + p.names[i] + "': " + e.what());
           }
         const ModelParameter &parameter = parameters.back();
-        if (samples_out_of_range(p.distributions[i], parameter.can_be_zero()))
+        const ModelParameter::Range range = parameter.range();
+        if (samples_out_of_range(p.distributions[i], range))
           input.fail(entry, "variable '" + p.names[i] + "': a " +
                               distribution_name(p.distributions[i].type()) +
-                              " distribution can sample values " +
-                              (parameter.can_be_zero() ? "< 0" : "<= 0") + ", which '" +
-                              p.paths[i] + "' cannot take (use a lognormal or Weibull, or a "
-                              "uniform or truncated normal with lower " +
-                              (parameter.can_be_zero() ? ">= 0)" : "> 0)"));
+                              " distribution can sample values " + outside_text(range) +
+                              ", which '" + p.paths[i] + "' cannot take (use " +
+                              (std::isfinite(range.upper) ? "" : "a lognormal or Weibull, or ") +
+                              "a uniform or truncated normal with lower " + inside_text(range) +
+                              ")");
       }
+    settle_hinge_origins(parameters, *origins, model);
     const auto nataf = std::make_shared<const NatafTransformation>(p.distributions, p.correlation);
     runner.set_random_parameters(
       std::move(parameters), p.names,

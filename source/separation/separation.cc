@@ -399,7 +399,7 @@ namespace poundfe
     for (const unsigned int p : separations.pairs)
       job.names.push_back(pairs[p].name + "_random_separation_m");
     job.seed = runner.stochastic_load().seed();
-    std::vector<double> xi;
+    std::vector<double> xi, u, x;
     job.run  = [&](const std::uint64_t r, std::vector<double> &row) {
       const bool completed = runner.run(r, Observers{&observer});
       row.clear();
@@ -410,9 +410,16 @@ namespace poundfe
       // the separations' normals follow the runner's in the realization's stream
       xi.resize(runner.n_variables() + separations.pairs.size());
       standard_normals(job.seed, r, xi);
-      for (std::size_t k = 0; k < separations.pairs.size(); ++k)
-        row.push_back(separations.distributions[k].quantile(
-          standard_normal_cdf(xi[runner.n_variables() + k])));
+      if (separations.joint) // correlated: (structure, separations) = T(u)
+        {
+          u.assign(xi.begin() + runner.n_load_variables(), xi.end());
+          separations.joint->to_physical(u, x);
+          row.insert(row.end(), x.end() - separations.pairs.size(), x.end());
+        }
+      else
+        for (std::size_t k = 0; k < separations.pairs.size(); ++k)
+          row.push_back(separations.distributions[k].quantile(
+            standard_normal_cdf(xi[runner.n_variables() + k])));
       return completed;
     };
     Progress            progress(std::cerr, "realizations", n);

@@ -7,6 +7,8 @@
 #    differences of a linear function and round-off only);
 #  - approximate: with a lognormal storey stiffness (cov 0.15) too, FORM's
 #    Pf against crude Monte Carlo (`montecarlo`, the same variables);
+#  - SORM (Breitung, Tvedt) and importance sampling around u* on the same
+#    linear limit state: SORM = FORM, IS = Phi(-beta) within its COV;
 #  - bad input: more Excitation variables than the loading has: exit 1.
 set -eu
 poundfe=$1 input=$2
@@ -15,10 +17,33 @@ trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/helpers.sh"
 check=$(dirname "$0")/dynamic_form_check.py
 
-"$poundfe" dynamic-form "$input" --output "$work/exact" > "$work/exact.log"
+# (with SORM and 1000 importance samples after FORM)
+sed 's|set Gradient step        = 0.01|set Gradient step        = 0.01\n    set SORM = true\n    set Importance samples = 1000|' \
+  "$input" > "$work/exact.prm"
+"$poundfe" dynamic-form "$work/exact.prm" --output "$work/exact" > "$work/exact.log"
 result=$(python3 "$check" "$work/exact/summary.json" 0.02) ||
   fail "dynamic-form: not the exact answer of a linear limit state"
 echo "ok   dynamic FORM exact on a linear SDOF: $result"
+# SORM on the linear limit state: every curvature 0 (central second
+# differences of a linear function: round-off / h^2 ~ 1e-12), so Breitung
+# and Tvedt are Phi(-beta) (1e-6 relative); importance sampling around u*
+# agrees with Phi(-beta) within 3 of its COVs (unbiased; sampling error only)
+result=$(python3 - "$work/exact/summary.json" << 'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+pf, sorm, imp = s["failure_probability"], s["sorm"], s["importance_sampling"]
+assert max(abs(k) for k in sorm["curvatures"]) < 1e-6, sorm["curvatures"]
+for key in ("breitung", "tvedt"):
+    assert abs(sorm[key] / pf - 1) < 1e-6, (key, sorm[key], pf)
+assert imp["samples"] == 1000, imp
+assert abs(imp["failure_probability"] - pf) <= 3 * imp["cov"] * imp["failure_probability"], (imp, pf)
+print("Pf FORM %.6g, Breitung %.6g, Tvedt %.6g (largest |kappa| %.1e, %d time histories), "
+      "IS %.4g (COV %.3f, %d samples)" % (pf, sorm["breitung"], sorm["tvedt"],
+      max(abs(k) for k in sorm["curvatures"]), sorm["time_histories"],
+      imp["failure_probability"], imp["cov"], imp["samples"]))
+PY
+) || fail "dynamic-form: SORM or importance sampling on the linear limit state"
+echo "ok   dynamic SORM and importance sampling on the linear SDOF: $result"
 
 # a random stiffness: FORM against Monte Carlo. (Tolerance 1e-2: HL-RF's
 # distance from the line of alpha falls slowly in the stiffness direction;

@@ -86,3 +86,26 @@ PY
 [ -s "$work/twins/separation.csv" ] && [ -s "$work/twins/pounding_probability.csv" ] || fail "twins: per-event results not written"
 [ ! -e "$work/twins/pounding_hazard.csv" ] || fail "twins: a pounding_hazard.csv without a fit"
 echo "ok   twin buildings (largest approach 0): exit 2, the cause on stderr and in summary.json, per-event results kept"
+
+# Random parameters at the hazard's PGA levels: a lognormal storey stiffness
+# of building 1. At the level equal to the file's Target PGA (0.1 g: the
+# amplitude factor is 1) realization r runs the same loading and the same
+# sampled structure as realization r of the Monte Carlo at the file's PGA, so
+# pga_0.1g/realizations.csv's largest approach is the largest of the
+# levels' approaches in realizations.csv, to the last digit; the nominal
+# structure (what the levels ran before) gives other values.
+prm=$(with_hazard "$work/hazard/hazard_curve.csv" 0.1 random)
+sed -i 's/set PGA levels = 0.02, 0.05, 0.1/set PGA levels = 0.05, 0.1/' "$prm"
+printf 'subsection Random parameters\n  set Variables = k: Building 1/Storey stiffnesses ~ lognormal mean 5e6 cov 0.3\nend\n' >> "$prm"
+"$poundfe" separation "$prm" --output "$work/random" > /dev/null 2>&1 || fail "separation with a hazard and random parameters"
+python3 - "$work/random/realizations.csv" "$work/random/pga_0.1g/realizations.csv" "$work/none/realizations.csv" <<'PY' || fail "random parameters at the hazard's levels"
+import csv, sys
+def largest(path):
+    rows = list(csv.DictReader(open(path)))
+    return [max(float(v) for k, v in r.items() if k.endswith("approach_m")) for r in rows]
+at_file, at_level, nominal = largest(sys.argv[1]), largest(sys.argv[2]), largest(sys.argv[3])
+assert len(at_level) == len(at_file) == 12, (len(at_level), len(at_file))
+assert at_level == at_file, (at_level, at_file)
+assert sum(a != b for a, b in zip(at_level, nominal)) == 12, "the levels ran the nominal structure"
+PY
+echo "ok   separation with a hazard and a random storey stiffness: the 0.1 g level's largest approaches = the Monte Carlo's (12 of 12), none the nominal's"

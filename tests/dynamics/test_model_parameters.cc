@@ -285,3 +285,146 @@ BOOST_AUTO_TEST_CASE(floor_mass_paths)
   BOOST_TEST(!p.can_be_zero());
   BOOST_CHECK_THROW(model_parameter("Building 2/Floor masses[3]", model), std::invalid_argument);
 }
+
+namespace
+{
+  /// Building 1 of the shear pair as a generated frame (3 storeys, 1 bay,
+  /// Bouc-Wen hinges at the column bases and beam ends), flexible enough to
+  /// pound on building 2 and to yield; with `extra` overrides after.
+  std::vector<ParameterOverride>
+  frame_pair(const std::vector<ParameterOverride> &extra)
+  {
+    std::vector<ParameterOverride> o = {{"Building 1/Type", "frame"},
+                                        {"Building 1/Number of bays", "1"},
+                                        {"Building 1/Bay widths", "5"},
+                                        {"Building 1/Column E", "3e10"},
+                                        {"Building 1/Column A", "0.04"},
+                                        {"Building 1/Column I", "1e-4"},
+                                        {"Building 1/Beam E", "3e10"},
+                                        {"Building 1/Beam A", "0.04"},
+                                        {"Building 1/Beam I", "2e-4"},
+                                        {"Building 1/Column mass per length", "50"},
+                                        {"Building 1/Hinges/Locations", "column bases, beam ends"},
+                                        {"Building 1/Hinges/Yield moment", "3e3"},
+                                        {"Model/Separations", "0.004"},
+                                        {"Random parameters/Correlation", ""},
+                                        {"Random parameters/Limit states", ""}};
+    o.insert(o.end(), extra.begin(), extra.end());
+    return o;
+  }
+
+  /// "a, b, c" with x at entry i (0-based) of n and `other` elsewhere.
+  std::string
+  list_with(const double x, const unsigned int i, const std::string &other)
+  {
+    std::string text;
+    for (unsigned int k = 0; k < 3; ++k)
+      text += (k ? ", " : "") + (k == i ? exact(x) : other);
+    return text;
+  }
+} // namespace
+
+// The sections of a frame's columns and beams (E, A, I, mass per length: K,
+// M and, under P-Delta, K_G of the new gravity loads), the stiffness factor
+// of its hinges (k = f 6 E I / L follows E and I, and u_y = M_y / k follows
+// k) and Bouc-Wen shape parameters of the hinges of building 1 and the
+// storeys of building 2, against the file built with the sampled values.
+BOOST_AUTO_TEST_CASE(random_frame_sections_hinges_and_bouc_wen_shapes)
+{
+  // the factor first: the hinges' k must then follow E and I written after it
+  const std::string variables =
+    "f: Building 1/Hinges/Stiffness factor ~ uniform lower 5 upper 15; "
+    "E1: Building 1/Column E[1] ~ lognormal mean 3e10 cov 0.1; "
+    "I: Building 1/Column I ~ lognormal mean 1e-4 cov 0.2; "
+    "Ab: Building 1/Beam A[2] ~ uniform lower 0.03 upper 0.05; "
+    "Ib: Building 1/Beam I[3] ~ lognormal mean 2e-4 cov 0.2; "
+    "mc: Building 1/Column mass per length[1] ~ uniform lower 0 upper 100; "
+    "alpha: Building 1/Bouc-Wen/alpha ~ uniform lower 0.01 upper 0.2; "
+    "gamma: Building 1/Bouc-Wen/gamma ~ uniform lower 0.3 upper 0.5; "
+    "n: Building 2/Bouc-Wen/n ~ uniform lower 1 upper 3; "
+    "beta: Building 2/Bouc-Wen/beta ~ uniform lower 0.5 upper 0.7; "
+    "A: Building 2/Bouc-Wen/A ~ uniform lower 0.9 upper 1.1";
+  const OverridesOf overrides = [](const std::vector<double> &x) {
+    return std::vector<ParameterOverride>{
+      {"Building 1/Hinges/Stiffness factor", exact(x[0])},
+      {"Building 1/Column E", list_with(x[1], 0, "3e10")},
+      {"Building 1/Column I", exact(x[2])},
+      {"Building 1/Beam A", list_with(x[3], 1, "0.04")},
+      {"Building 1/Beam I", list_with(x[4], 2, "2e-4")},
+      {"Building 1/Column mass per length", list_with(x[5], 0, "50")},
+      {"Building 1/Bouc-Wen/alpha", exact(x[6])},
+      {"Building 1/Bouc-Wen/gamma", exact(x[7])},
+      {"Building 2/Bouc-Wen/n", exact(x[8])},
+      {"Building 2/Bouc-Wen/beta", exact(x[9])},
+      {"Building 2/Bouc-Wen/A", exact(x[10])}};
+  };
+  check_in_place_against_rebuilt(frame_pair({{"Model/Geometric nonlinearity", "p-delta"},
+                                             {"Random parameters/Variables", variables}}),
+                                 1, overrides);
+}
+
+// Hinges with a given stiffness and yield rotation, given Rayleigh
+// coefficients (building 1) and modal damping ratios (building 2) and a
+// Baber-Noori degradation parameter.
+BOOST_AUTO_TEST_CASE(random_hinge_stiffness_yield_rotation_and_damping_coefficients)
+{
+  const std::string variables =
+    "k: Building 1/Hinges/Stiffness ~ lognormal mean 2e6 cov 0.2; "
+    "r: Building 1/Hinges/Yield rotation ~ lognormal mean 0.002 cov 0.3; "
+    "a0: Building 1/Damping/a0 ~ uniform lower 0.1 upper 0.5; "
+    "a1: Building 1/Damping/a1 ~ uniform lower 0 upper 0.002; "
+    "z1: Building 2/Damping/Modal ratios[1] ~ uniform lower 0.01 upper 0.05; "
+    "dA: Building 2/Bouc-Wen/delta A ~ uniform lower 0 upper 0.1";
+  const OverridesOf overrides = [](const std::vector<double> &x) {
+    return std::vector<ParameterOverride>{{"Building 1/Hinges/Stiffness", exact(x[0])},
+                                          {"Building 1/Hinges/Yield rotation", exact(x[1])},
+                                          {"Building 1/Damping/a0", exact(x[2])},
+                                          {"Building 1/Damping/a1", exact(x[3])},
+                                          {"Building 2/Damping/Modal ratios", exact(x[4]) + ", 0.03"},
+                                          {"Building 2/Bouc-Wen/delta A", exact(x[5])}};
+  };
+  check_in_place_against_rebuilt(frame_pair({{"Building 1/Hinges/Yield moment", "0"},
+                                             {"Building 1/Hinges/Yield rotation", "0.002"},
+                                             {"Building 1/Hinges/Stiffness", "2e6"},
+                                             {"Building 1/Damping/Type", "coefficients"},
+                                             {"Building 1/Damping/a0", "0.3"},
+                                             {"Building 1/Damping/a1", "0.001"},
+                                             {"Building 2/Damping/Type", "modal"},
+                                             {"Building 2/Damping/Modal ratios", "0.02, 0.03"},
+                                             {"Random parameters/Variables", variables}}),
+                                 1, overrides);
+}
+
+BOOST_AUTO_TEST_CASE(section_hinge_and_bouc_wen_paths)
+{
+  const InputParameters input    = read_parameters(file, frame_pair({}));
+  const Analysis        analysis = prepare_analysis(input);
+  const Model          &model    = analysis.model;
+  const auto            origins  = std::make_shared<const std::vector<HingeOrigin>>(
+    hinge_origins(model, input.model));
+  const ModelParameter e = model_parameter("Building 1/Column E[2]", model, origins);
+  BOOST_TEST(model_parameter_value(e, model) == 3e10);
+  BOOST_TEST(e.enters_matrices());
+  BOOST_TEST(!e.enters_mass());
+  BOOST_TEST(model_parameter("Building 1/Beam mass per length", model).enters_mass());
+  const ModelParameter alpha = model_parameter("Building 2/Bouc-Wen/alpha", model);
+  BOOST_TEST(!alpha.enters_linear_part());
+  BOOST_TEST(alpha.range().upper == 1);
+  BOOST_TEST(model_parameter_value(alpha, model) == 0.1); // the default
+  BOOST_TEST(model_parameter("Building 1/Bouc-Wen/beta", model).can_be_zero());
+  // what the model does not have, what is not numeric, what is geometry
+  for (const std::string path :
+       {"Building 1/Column E[4]", "Building 2/Column E", "Building 1/Column Z",
+        "Building 1/Bouc-Wen/zeta", "Building 1/Storey heights", "Building 1/Bay widths[1]",
+        "Building 1/Damping/a0", "Building 2/Damping/Modal ratios[1]",
+        "Building 2/Hinges/Stiffness", "Building 1/Hinges/Yield rotation",
+        "Building 1/Hinges/Stiffness[1]", "Building 1/Hinges/Locations", "Building 1/Name"})
+    BOOST_CHECK_THROW(model_parameter(path, model, origins), std::invalid_argument);
+  const ModelParameter f = model_parameter("Building 1/Hinges/Stiffness factor", model, origins);
+  BOOST_TEST(f.enters_matrices());
+  BOOST_TEST(model_parameter_value(f, model) == 10, boost::test_tools::tolerance(1e-12));
+  // a sampled beta that breaks beta >= |gamma| or gamma >= |beta|
+  ModelRealization realization(analysis, {model_parameter("Building 2/Bouc-Wen/beta", model)},
+                               input.modal.eigensolver);
+  BOOST_CHECK_THROW(realization.apply({-0.6}), std::invalid_argument);
+}

@@ -17,6 +17,21 @@
 //     Links/Viscous dampers[i]           c of viscous damper i (nonlinear; 0: a
 //                                        damper without force, as the mitigation
 //                                        study's bare case of a damper size)
+//     Building b/Column E[i], Column A[i], Column I[i], Column mass per length[i]
+//                                        section of the columns of storey i of a
+//                                        generated frame (K; M, K_G for the mass;
+//                                        E, I: the k = f 6 E I / L of their hinges)
+//     Building b/Beam E[i], Beam A[i], Beam I[i], Beam mass per length[i]
+//                                        the same for the beams of floor i
+//     Building b/Hinges/Stiffness, Building b/Hinges/Stiffness factor
+//                                        k of every hinge of b (K), as the builder
+//                                        sets it (u_y = M_y / k follows)
+//     Building b/Hinges/Yield rotation   u_y of b's hinges without a yield moment
+//     Building b/Bouc-Wen/P              P = alpha, A, beta, gamma, n, delta A,
+//                                        delta nu, delta eta of every hinge and
+//                                        hysteretic storey of b (nonlinear)
+//     Building b/Damping/a0, a1          given Rayleigh coefficients (C)
+//     Building b/Damping/Modal ratios[i] zeta of mode i, modal damping (C)
 //   Without [i], a list entry takes the one value on every storey.
 // A realization writes the sampled values into a working copy of the built
 // Analysis (never the file, never the model builder). Only when a value
@@ -28,11 +43,28 @@
 
 #include <poundfe/dynamics/analysis.h>
 
+#include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace poundfe
 {
+  struct ModelParameters;
+
+  /// How the model builder set a hinge's k and u_y (model.hinges order):
+  /// k = factor 6 E I / L of its member (else given), u_y = M_y / k (else
+  /// the yield rotation given). A sampled E, I, k or M_y sets them again as
+  /// the builder would.
+  struct HingeOrigin
+  {
+    bool stiffness_from_section = false;
+    bool yield_from_moment      = false;
+  };
+
+  /// The origins of the model's hinges, from the input it was built from.
+  std::vector<HingeOrigin> hinge_origins(const Model &model, const ModelParameters &input);
+
   struct ModelParameter
   {
     enum class Kind
@@ -48,18 +80,46 @@ namespace poundfe
       contact_damping,
       static_friction,
       kinetic_friction,
-      link_damping
+      link_damping,
+      member_section,   // `section` of the columns or beams (`member_kind`) of a frame
+      hinge_stiffness,
+      hinge_stiffness_factor,
+      hinge_yield_rotation,
+      bouc_wen_shape,   // `shape` of b's hinges and hysteretic storeys
+      rayleigh_a0,
+      rayleigh_a1,
+      modal_ratio
     };
     Kind         kind     = Kind::storey_stiffness;
     std::string  path;          // as written
     unsigned int building = 0;  // 0-based (storey, floor, hinge, damping: the building; separation: the left one)
-    int          entry    = -1; // 0-based storey or floor (link_damping: viscous damper); -1: all
+    int          entry    = -1; // 0-based storey or floor (link_damping: viscous damper; modal_ratio: mode); -1: all
+    MemberKind               member_kind = MemberKind::column; // member_section
+    double Section::*        section     = nullptr;            // member_section
+    double BoucWenParameters::*shape     = nullptr;            // bouc_wen_shape
+    /// The hinges' origins (shared by the parameters of one realization;
+    /// settle_hinge_origins); needed by the section and hinge kinds.
+    std::shared_ptr<const std::vector<HingeOrigin>> hinges;
+
+    /// The values the parameter can take: [lower, upper] (lower excluded
+    /// when !lower_included).
+    struct Range
+    {
+      double lower          = 0;
+      bool   lower_included = false;
+      double upper          = std::numeric_limits<double>::infinity();
+    };
+    Range range() const;
 
     /// Whether the value enters M, K or C (else only nonlinear elements).
     bool enters_linear_part() const;
+    /// Whether it enters M or K (the modes change), or M alone.
+    bool enters_matrices() const;
+    bool enters_mass() const;
     /// Whether 0 is a value it can take (a damping, gap or friction
     /// coefficient); otherwise only values > 0 are (a stiffness, yield
-    /// drift or moment, damping ratio). Negative values never are.
+    /// drift or moment, damping ratio). Negative values never are, except
+    /// for the Bouc-Wen beta and gamma (range()).
     bool can_be_zero() const;
   };
 
@@ -67,7 +127,17 @@ namespace poundfe
   /// saying what is wrong: no such entry, an entry that is not a number
   /// poundfe can vary (with the list of those it can), a building or storey
   /// out of range, a storey that is not hysteretic, no gaps, no hinges, ...
-  ModelParameter model_parameter(const std::string &path, const Model &model);
+  /// `hinges` (hinge_origins) lets it refuse a Hinges/Stiffness factor or
+  /// Yield rotation that no hinge of the building uses.
+  ModelParameter model_parameter(const std::string &path, const Model &model,
+                                 std::shared_ptr<const std::vector<HingeOrigin>> hinges = {});
+
+  /// Gives every parameter the hinges' origins as they are once the
+  /// parameters are sampled: a random Hinges/Stiffness makes k given, a
+  /// random Hinges/Yield moment makes u_y = M_y / k (as the file with the
+  /// sampled value would).
+  void settle_hinge_origins(std::vector<ModelParameter> &parameters,
+                            std::vector<HingeOrigin> origins, const Model &model);
 
   /// The value the built model has for `parameter` (its first storey, hinge
   /// or gap when it names several).

@@ -11,7 +11,13 @@
 //   - the standard normals of the Random parameters (the runner maps them
 //     to the parameters' values, dynamics/realization.h).
 // Each evaluation of G is one time history; the design point u*, beta =
-// alpha . u*, Pf = Phi(-beta) and alpha are FORM's. For a response linear in
+// alpha . u*, Pf = Phi(-beta) and alpha are FORM's. Optionally, at the
+// converged u*: SORM (reliability/sorm.h: Breitung and Tvedt from the
+// principal curvatures, the Hessian of G by central differences of time
+// histories) and importance sampling around u* (reliability/sampling.h:
+// samples u ~ N(u*, I), weight phi(u)/phi(u - u*)), so the FORM estimate is
+// checked by a second-order one and by an unbiased one (Der Kiureghian 2000,
+// sec. 6, on the curvature of the surfaces of nonlinear random vibration). For a response linear in
 // Gaussian loading variables (a linear structure, a response at a fixed time)
 // G is linear in u and FORM is exact.
 // Sources: A. Der Kiureghian, "The geometry of random vibrations and
@@ -23,8 +29,11 @@
 
 #include <poundfe/reliability/distribution.h>
 #include <poundfe/reliability/form.h>
+#include <poundfe/reliability/sampling.h>
+#include <poundfe/reliability/sorm.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +48,9 @@ namespace poundfe
     std::uint64_t             realization  = 0; // of the held loading normals
     std::vector<Distribution> scale;            // the scale factor's, or none
     FormSettings              form;
+    bool                      sorm = false;            // then SORM at u*
+    unsigned long             importance_samples = 0;  // then IS around u*
+    std::uint64_t             importance_seed    = 1;
   };
 
   struct DynamicFormResult
@@ -54,6 +66,12 @@ namespace poundfe
     double                   design_limit_state = 0; // g there (~0 when converged)
     unsigned long            n_time_histories = 0;  // all of them
     unsigned long            n_failed_runs    = 0;  // integrations that did not finish
+    /// SORM at the design point (when asked and FORM converged) and its
+    /// time histories
+    std::optional<SormResult>     sorm;
+    unsigned long                 n_sorm_time_histories = 0;
+    /// importance sampling around the design point (when asked and FORM converged)
+    std::optional<SamplingResult> importance;
   };
 
   /// FORM on the system value of `limit_states` over `runner`'s

@@ -40,6 +40,7 @@ namespace dealii
 namespace poundfe
 {
   class RealizationRunner;
+  struct InputParameters;
 
   struct RandomParameterParameters
   {
@@ -51,6 +52,10 @@ namespace poundfe
     std::string   form_excitation_text = "0", form_scale_text;
     unsigned long form_realization     = 0;
     FormSettings  form{20, 1e-3, 1e-3, 1e-2, false};
+    /// dynamic-form after FORM: SORM (Breitung, Tvedt) from the Hessian at
+    /// u*, and importance sampling around u* (0 samples: none)
+    bool          form_sorm               = false;
+    unsigned long form_importance_samples = 0;
 
     // parsed by check()
     std::vector<std::string>  names, paths;
@@ -83,8 +88,10 @@ namespace poundfe
   /// cannot vary, or a distribution that can sample values the parameter
   /// cannot take (e.g. a normal stiffness: use a lognormal or a truncated
   /// normal with lower >= 0).
+  /// `input` is the file the runner's model was built from (the hinges'
+  /// origins: dynamics/model_parameter.h).
   void attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
-                                const InputFile &input, Eigensolver eigensolver);
+                                const InputParameters &input, Eigensolver eigensolver);
 
   /// The section's limit states g_k over a row of responses (the runner's
   /// response_names(), which end with the variables' values).

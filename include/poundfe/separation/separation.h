@@ -50,12 +50,14 @@
 #include <poundfe/output/observer.h>
 #include <poundfe/reliability/distribution.h>
 #include <poundfe/reliability/montecarlo.h>
+#include <poundfe/reliability/nataf.h>
 #include <poundfe/reliability/statistics.h>
 #include <poundfe/separation/separation_parameters.h>
 
 #include <mpi.h>
 
 #include <array>
+#include <memory>
 #include <functional>
 #include <string>
 #include <vector>
@@ -200,11 +202,18 @@ namespace poundfe
   /// not change the free responses, so each realization samples its pair's
   /// separation s_r, from the normal that follows the runner's in the
   /// realization's stream (x = F^-1(Phi(u))), and pounds when its largest
-  /// approach exceeds s_r: P(pounding) = #{a_r > s_r} / n.
+  /// approach exceeds s_r: P(pounding) = #{a_r > s_r} / n. Correlated
+  /// (Random parameters/Correlation), the separations are the last
+  /// components of x = T(u) of `joint`, a Nataf transformation over the
+  /// structure's variables then the separations, u the realization's
+  /// normals after the loading's: the Cholesky factor of R0 is lower
+  /// triangular, so its leading block is the structure's own and the
+  /// structure's values are those the runner samples.
   struct RandomSeparations
   {
     std::vector<unsigned int> pairs; // index in the pairs of each variable
     std::vector<Distribution> distributions;
+    std::shared_ptr<const NatafTransformation> joint; // null: independent
   };
 
   /// The rule values and their names, in the order of separation.csv.
