@@ -43,9 +43,7 @@ namespace poundfe
   void
   PlanContactElement::tangent_change(const double damping_factor, LocalMatrixOut d) const
   {
-    const double k = law->tangent(), c = law->damping_tangent();
-    d              = (k + damping_factor * c) * state.gradient * state.gradient.transpose() +
-        c * state.gradient * (state.hessian * velocity).transpose() - law->force() * state.hessian;
+    gap_tangent(*law, damping_factor, state.gradient, state.hessian, velocity, d);
   }
 
   double

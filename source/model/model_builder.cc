@@ -602,7 +602,12 @@ namespace poundfe
               input.fail("Building " + std::to_string(b + 1) + "/Diaphragm",
                          "contact in plan acts between slabs: it needs Diaphragm = rigid");
           add_plan_contacts(model, contact);
+          if (contact.floor_to_column_in_plan)
+            add_column_contacts(model, contact);
         }
+      else if (contact.floor_to_column_in_plan)
+        input.fail("Contact/Floor to column in plan",
+                   "is for Model/Dimension = 3 (in 2D, Floor to column places the contact)");
       else if (contact.between_buildings)
         for (unsigned int b = 0; b + 1 < model.buildings.size(); ++b)
           add_gaps_between(model, contact, b, b + 1, value_for(parameters.separations, b));

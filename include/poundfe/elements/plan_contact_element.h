@@ -22,6 +22,18 @@
 
 namespace poundfe
 {
+  /// The tangent D = (k_t + c c_t) ∇g ∇gᵀ + c_t ∇g (∇²g q')ᵀ - F ∇²g of a
+  /// contact law on a gap g(q) (also elements/column_contact_element.h).
+  template <typename Vector, typename Matrix>
+  void
+  gap_tangent(const ContactLaw &law, const double damping_factor, const Vector &gradient,
+              const Matrix &hessian, const Vector &velocity, NonlinearElement::LocalMatrixOut d)
+  {
+    const double k = law.tangent(), c = law.damping_tangent();
+    d              = (k + damping_factor * c) * gradient * gradient.transpose() +
+        c * gradient * (hessian * velocity).transpose() - law.force() * hessian;
+  }
+
   class PlanContactElement final : public NonlinearElement
   {
   public:
