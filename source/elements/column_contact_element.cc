@@ -1,7 +1,6 @@
 // The floor-to-column contact element of
 // include/poundfe/elements/column_contact_element.h.
 #include <poundfe/elements/column_contact_element.h>
-#include <poundfe/elements/plan_contact_element.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -17,9 +16,8 @@ namespace poundfe
                                              std::vector<int> equations,
                                              const ColumnContactGeometry &geometry,
                                              std::unique_ptr<ContactLaw> law)
-    : NonlinearElement(ElementKind::gap, building, std::move(label), std::move(equations))
+    : PlanGapElement(building, std::move(label), std::move(equations), std::move(law))
     , geometry(geometry)
-    , law(std::move(law))
   {
     const unsigned int n_column = geometry.column_dofs.size();
     AssertDimension(n_dofs(), n_column + 3);
@@ -55,7 +53,7 @@ namespace poundfe
   void
   ColumnContactElement::tangent_change(const double damping_factor, LocalMatrixOut d) const
   {
-    gap_tangent(*law, damping_factor, state.gradient, state.hessian, velocity, d);
+    gap_tangent(damping_factor, state.gradient, state.hessian, velocity, d);
   }
 
   double
@@ -69,20 +67,11 @@ namespace poundfe
     return rate;
   }
 
-  double
-  ColumnContactElement::work_increment() const
-  {
-    return 0.5 * (committed_force + law->force()) *
-           (law->history_variable() - committed_penetration);
-  }
-
   void
   ColumnContactElement::commit()
   {
-    law->commit();
-    committed_state       = state;
-    committed_penetration = law->history_variable();
-    committed_force       = law->force();
+    commit_law();
+    committed_state = state;
   }
 
   void
@@ -99,9 +88,6 @@ namespace poundfe
     velocity.setZero();
     const Eigen::VectorXd rest = Eigen::VectorXd::Zero(n_dofs());
     set_trial(rest, rest); // the penetration at rest: -(the gap)
-    law->commit();
-    committed_state       = state;
-    committed_penetration = law->history_variable();
-    committed_force       = law->force();
+    commit();
   }
 } // namespace poundfe

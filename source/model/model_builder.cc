@@ -594,6 +594,9 @@ namespace poundfe
         return;
       if (model.dimension == 3 && !contact.barriers.empty())
         input.fail("Contact/Barriers", "barriers are not available with Dimension = 3");
+      if (contact.floor_to_column_in_plan && model.dimension != 3)
+        input.fail("Contact/Floor to column in plan",
+                   "is for Model/Dimension = 3 (in 2D, Floor to column places the contact)");
       if (contact.between_buildings && model.dimension == 3)
         {
           for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
@@ -605,9 +608,6 @@ namespace poundfe
           if (contact.floor_to_column_in_plan)
             add_column_contacts(model, contact);
         }
-      else if (contact.floor_to_column_in_plan)
-        input.fail("Contact/Floor to column in plan",
-                   "is for Model/Dimension = 3 (in 2D, Floor to column places the contact)");
       else if (contact.between_buildings)
         for (unsigned int b = 0; b + 1 < model.buildings.size(); ++b)
           add_gaps_between(model, contact, b, b + 1, value_for(parameters.separations, b));

@@ -15,15 +15,14 @@
 #ifndef poundfe_elements_column_contact_element_h
 #define poundfe_elements_column_contact_element_h
 
-#include <poundfe/elements/nonlinear_element.h>
-#include <poundfe/laws/contact_law.h>
+#include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/model/column_contact_geometry.h>
 
 #include <memory>
 
 namespace poundfe
 {
-  class ColumnContactElement final : public NonlinearElement
+  class ColumnContactElement final : public PlanGapElement
   {
   public:
     /// `equations`: the column's DOFs (geometry.column_dofs' equations),
@@ -33,29 +32,16 @@ namespace poundfe
 
     unsigned int    rank() const override { return 5; }
     Eigen::MatrixXd tangent_basis() const override { return basis; }
-    bool            has_symmetric_tangent() const override { return false; }
 
-    bool   set_trial(const LocalVector &u, const LocalVector &v) override;
-    void   force_correction(LocalVectorOut f) const override;
-    void   tangent_change(double damping_factor, LocalMatrixOut d) const override;
-    double work_increment() const override;
-    double reference_energy() const override { return 0; }
-    void   commit() override;
-    void   revert() override;
-    void   reset() override;
-    std::string failure() const override { return law->failure(); }
-    bool   is_active() const override { return law->is_active(); }
-    bool   was_active() const override { return law->was_active(); }
-    double contact_duration(const double closing_rate) const override
-    {
-      return law->contact_duration(closing_rate);
-    }
+    bool set_trial(const LocalVector &u, const LocalVector &v) override;
+    void force_correction(LocalVectorOut f) const override;
+    void tangent_change(double damping_factor, LocalMatrixOut d) const override;
+    void commit() override;
+    void revert() override;
+    void reset() override;
 
-    double force() const override { return law->force(); }
     /// The rate of penetration -∇g · Bᵀ x for a global velocity x.
     double deformation(const Eigen::VectorXd &x) const override;
-    double history_variable() const override { return law->history_variable(); }
-    double stored_energy() const override { return law->stored_energy(); }
     /// The column point at the trial state.
     std::array<double, 2> contact_point() const override
     {
@@ -63,12 +49,10 @@ namespace poundfe
     }
 
   private:
-    ColumnContactGeometry       geometry;
-    Eigen::MatrixXd             basis; // B
-    std::unique_ptr<ContactLaw> law;
-    ColumnContactState          state, committed_state;
-    Vector5                     velocity = Vector5::Zero(); // z'
-    double committed_penetration = 0, committed_force = 0;
+    ColumnContactGeometry geometry;
+    Eigen::MatrixXd       basis; // B
+    ColumnContactState    state, committed_state;
+    Vector5               velocity = Vector5::Zero(); // z'
   };
 } // namespace poundfe
 
