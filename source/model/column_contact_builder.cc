@@ -7,6 +7,7 @@
 #include <poundfe/model/plan_builder.h>
 #include <poundfe/model/plan_contact_geometry.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -17,11 +18,12 @@ namespace poundfe
     double column_dot(const Point2 &a, const Point2 &b) { return a.x * b.x + a.y * b.y; }
     Point2 column_minus(const Point2 &a, const Point2 &b) { return {a.x - b.x, a.y - b.y}; }
 
-    /// The normal of the edge of `outline` that the point x lies on, or
-    /// (0, 0) when x is not on the outline.
-    Point2
-    normal_of_edge_through(const std::vector<Point2> &outline, const Point2 &x)
+    /// The outward normals of the edges of `outline` that the point x lies
+    /// on (two at a corner; none inside).
+    std::vector<Point2>
+    normals_of_edges_through(const std::vector<Point2> &outline, const Point2 &x)
     {
+      std::vector<Point2> normals;
       for (unsigned int i = 0; i < outline.size(); ++i)
         {
           const Point2 &a = outline[i], &b = outline[(i + 1) % outline.size()];
@@ -30,9 +32,9 @@ namespace poundfe
           const Point2  n       = outward_normal(a, b);
           if (along >= -1e-9 && along <= 1 + 1e-9 &&
               std::abs(column_dot(column_minus(x, a), n)) <= 1e-9 * std::sqrt(length2))
-            return n;
+            normals.push_back(n);
         }
-      return {0, 0};
+      return normals;
     }
 
     /// The floor of building b at `level`, or nullptr.
@@ -84,10 +86,9 @@ namespace poundfe
           if (top == nullptr)
             continue;
           const Point2 point{column.ends[0][0], column.ends[0][1]};
-          const Point2 column_normal =
-            normal_of_edge_through(frame.plan[top - frame.floors.data()].outline, point);
-          if (column_normal.x == 0 && column_normal.y == 0)
-            continue; // an inner column: the slab reaches the perimeter first
+          const std::vector<Point2> column_normals =
+            normals_of_edges_through(frame.plan[top - frame.floors.data()].outline, point);
+          // none: an inner column, which the slab reaches after the perimeter
           for (unsigned int i = 0; i < slabs.floors.size(); ++i)
             {
               const double level = slabs.floors[i].level;
@@ -95,7 +96,11 @@ namespace poundfe
               if (!(level > z0 + tolerance && level < z1 - tolerance))
                 continue;
               Gap gap;
-              if (!facing_slab_edge(slabs.plan[i].outline, point, column_normal, gap.column.edge))
+              if (std::none_of(column_normals.begin(), column_normals.end(),
+                               [&](const Point2 &normal) {
+                                 return facing_slab_edge(slabs.plan[i].outline, point, normal,
+                                                         gap.column.edge);
+                               }))
                 continue;
               gap.nodes        = {{int(top->nodes[0]), int(slabs.floors[i].nodes[0])}};
               gap.buildings    = {{b, a}};
