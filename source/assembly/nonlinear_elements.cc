@@ -1,4 +1,5 @@
 #include <poundfe/assembly/nonlinear_elements.h>
+#include <poundfe/elements/column_contact_element.h>
 #include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/laws/bouc_wen.h>
@@ -106,6 +107,18 @@ namespace poundfe
         ContactLawParameters law = model.contact;
         law.initial_gap          = gap.initial_gap;
         law.effective_mass       = gap.effective_mass;
+        if (gap.on_column)
+          {
+            law.initial_gap = 0; // the element measures the gap itself
+            std::vector<int> equations;
+            for (const unsigned int dof : gap.column.column_dofs)
+              equations.push_back(model.equation(dof));
+            for (const Component c : {Component::ux, Component::uy, Component::rz})
+              equations.push_back(model.equation(Model::dof(gap.nodes[1], c)));
+            elements.emplace_back<ColumnContactElement>(gap.buildings[1], gap.label, equations,
+                                                        gap.column, make_contact_law(law));
+            continue;
+          }
         if (gap.in_plan)
           {
             law.initial_gap = 0; // the element measures the gap itself

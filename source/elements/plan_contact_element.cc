@@ -13,9 +13,8 @@ namespace poundfe
                                          std::vector<int> equations,
                                          const PlanContactGeometry &geometry,
                                          std::unique_ptr<ContactLaw> law)
-    : NonlinearElement(ElementKind::gap, building, std::move(label), std::move(equations))
+    : PlanGapElement(building, std::move(label), std::move(equations), std::move(law))
     , geometry(geometry)
-    , law(std::move(law))
   {
     reset();
   }
@@ -43,9 +42,7 @@ namespace poundfe
   void
   PlanContactElement::tangent_change(const double damping_factor, LocalMatrixOut d) const
   {
-    const double k = law->tangent(), c = law->damping_tangent();
-    d              = (k + damping_factor * c) * state.gradient * state.gradient.transpose() +
-        c * state.gradient * (state.hessian * velocity).transpose() - law->force() * state.hessian;
+    gap_tangent(damping_factor, state.gradient, state.hessian, velocity, d);
   }
 
   double
@@ -59,19 +56,25 @@ namespace poundfe
   }
 
   double
-  PlanContactElement::work_increment() const
+  PlanGapElement::work_increment() const
   {
     return 0.5 * (committed_force + law->force()) *
            (law->history_variable() - committed_penetration);
   }
 
   void
-  PlanContactElement::commit()
+  PlanGapElement::commit_law()
   {
     law->commit();
-    committed_state       = state;
     committed_penetration = law->history_variable();
     committed_force       = law->force();
+  }
+
+  void
+  PlanContactElement::commit()
+  {
+    commit_law();
+    committed_state = state;
   }
 
   void
@@ -87,9 +90,6 @@ namespace poundfe
     law->reset();
     velocity.setZero();
     set_trial(Vector6::Zero(), velocity); // the penetration at rest: -(the gap)
-    law->commit();
-    committed_state       = state;
-    committed_penetration = law->history_variable();
-    committed_force       = law->force();
+    commit();
   }
 } // namespace poundfe

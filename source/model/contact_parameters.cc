@@ -71,6 +71,12 @@ namespace poundfe
                       "Where a floor of one building has no floor of its neighbour at "
                       "the same level, the contact point is on the neighbour's facing "
                       "column at that height (frames). Unit: -.");
+    prm.add_parameter("Floor to column in plan", floor_to_column_in_plan,
+                      "Dimension = 3: a slab also touches the facing perimeter columns of a "
+                      "3D frame neighbour where it is between two of the neighbour's floors "
+                      "(buildings with different storey heights); the force acts at the "
+                      "column's point at the slab's height. Off by default: 3D models made "
+                      "before give the same numbers. Unit: -.");
     prm.add_parameter("Barriers", barriers,
                       "Rigid barriers 'building floor side gap' separated by ';', e.g. "
                       "'1 2 right 0.015; B 3 left 0.02': the floor's facing joint touches "

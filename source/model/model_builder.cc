@@ -598,6 +598,9 @@ namespace poundfe
         return;
       if (model.dimension == 3 && !contact.barriers.empty())
         input.fail("Contact/Barriers", "barriers are not available with Dimension = 3");
+      if (contact.floor_to_column_in_plan && model.dimension != 3)
+        input.fail("Contact/Floor to column in plan",
+                   "is for Model/Dimension = 3 (in 2D, Floor to column places the contact)");
       if (contact.between_buildings && model.dimension == 3)
         {
           for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
@@ -606,6 +609,8 @@ namespace poundfe
               input.fail("Building " + std::to_string(b + 1) + "/Diaphragm",
                          "contact in plan acts between slabs: it needs Diaphragm = rigid");
           add_plan_contacts(model, contact);
+          if (contact.floor_to_column_in_plan)
+            add_column_contacts(model, contact);
         }
       else if (contact.between_buildings)
         for (unsigned int b = 0; b + 1 < model.buildings.size(); ++b)

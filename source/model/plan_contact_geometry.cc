@@ -66,6 +66,16 @@ namespace poundfe
     }
   } // namespace
 
+  PlanContactState
+  corner_on_edge_state(const std::array<Point2, 2> &centres, const Vector6 &q,
+                       const unsigned int p, const Point2 &corner, const Point2 &edge_point,
+                       const Point2 &normal)
+  {
+    const std::array<FloorMotion, 2> floors{{{centres[0], q[0], q[1], q[2]},
+                                             {centres[1], q[3], q[4], q[5]}}};
+    return corner_on_edge(floors, p, corner, edge_point, normal);
+  }
+
   Point2
   outward_normal(const Point2 &a, const Point2 &b)
   {

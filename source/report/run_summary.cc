@@ -239,7 +239,7 @@ namespace poundfe
     std::string csv = "gap,buildings,level_m,start_time_s,max_penetration_time_s,end_time_s,"
                       "approach_velocity_m_s,separation_velocity_m_s,max_penetration_m,"
                       "peak_force_N,impulse_N_s" +
-                      std::string(model.dimension == 3 ? ",plan_x_m,plan_y_m" : "") +
+                      std::string(model.dimension == 3 ? ",plan_x_m,plan_y_m,contact" : "") +
                       std::string(bumpers ? ",touched\n" : "\n");
     for (const Impact &impact : state.impact_log().impacts())
       {
@@ -256,7 +256,8 @@ namespace poundfe
         row << "," << impact.approach_velocity << "," << impact.separation_velocity << ","
             << impact.max_penetration << "," << impact.peak_force << "," << impact.impulse;
         if (model.dimension == 3)
-          row << "," << impact.point[0] << "," << impact.point[1];
+          row << "," << impact.point[0] << "," << impact.point[1] << ","
+              << (gap.on_column ? "slab-column" : "slab-slab");
         if (bumpers) // which surface the impact reached
           row << "," << (impact.structure ? (impact.bumper ? "bumper+structure" : "structure") :
                                             "bumper");

@@ -22,7 +22,55 @@
 
 namespace poundfe
 {
-  class PlanContactElement final : public NonlinearElement
+  /// What the contact elements in plan share (this one and elements/
+  /// column_contact_element.h): a contact law on the penetration δ = -g(q)
+  /// that the derived element measures, the law's state and the work done
+  /// on it, and the tangent
+  ///   D = (k_t + c c_t) ∇g ∇gᵀ + c_t ∇g (∇²g q')ᵀ - F ∇²g.
+  class PlanGapElement : public NonlinearElement
+  {
+  public:
+    PlanGapElement(const unsigned int building, std::string label, std::vector<int> equations,
+                   std::unique_ptr<ContactLaw> law)
+      : NonlinearElement(ElementKind::gap, building, std::move(label), std::move(equations))
+      , law(std::move(law))
+    {}
+
+    bool        has_symmetric_tangent() const override { return false; }
+    double      work_increment() const override;
+    double      reference_energy() const override { return 0; }
+    std::string failure() const override { return law->failure(); }
+    bool        is_active() const override { return law->is_active(); }
+    bool        was_active() const override { return law->was_active(); }
+    double      contact_duration(const double closing_rate) const override
+    {
+      return law->contact_duration(closing_rate);
+    }
+    double force() const override { return law->force(); }
+    double history_variable() const override { return law->history_variable(); }
+    double stored_energy() const override { return law->stored_energy(); }
+
+  protected:
+    /// Commit the law and remember its penetration and force.
+    void commit_law();
+
+    template <typename Vector, typename Matrix>
+    void
+    gap_tangent(const double damping_factor, const Vector &gradient, const Matrix &hessian,
+                const Vector &velocity, LocalMatrixOut d) const
+    {
+      const double k = law->tangent(), c = law->damping_tangent();
+      d              = (k + damping_factor * c) * gradient * gradient.transpose() +
+          c * gradient * (hessian * velocity).transpose() - law->force() * hessian;
+    }
+
+    std::unique_ptr<ContactLaw> law;
+
+  private:
+    double committed_penetration = 0, committed_force = 0;
+  };
+
+  class PlanContactElement final : public PlanGapElement
   {
   public:
     /// `equations`: (ux, uy, θz) of floor 1, then of floor 2.
@@ -31,30 +79,17 @@ namespace poundfe
 
     unsigned int    rank() const override { return 6; }
     Eigen::MatrixXd tangent_basis() const override { return Eigen::MatrixXd::Identity(6, 6); }
-    bool            has_symmetric_tangent() const override { return false; }
 
     bool   set_trial(const LocalVector &u, const LocalVector &v) override;
     void   force_correction(LocalVectorOut f) const override;
     void   tangent_change(double damping_factor, LocalMatrixOut d) const override;
-    double work_increment() const override;
-    double reference_energy() const override { return 0; }
     void   commit() override;
     void   revert() override;
     void   reset() override;
-    std::string failure() const override { return law->failure(); }
-    bool   is_active() const override { return law->is_active(); }
-    bool   was_active() const override { return law->was_active(); }
-    double contact_duration(const double closing_rate) const override
-    {
-      return law->contact_duration(closing_rate);
-    }
 
-    double force() const override { return law->force(); }
     /// The rate of penetration -∇g · x for a global velocity x (linearised
     /// at the trial state, as the integrator's event and impact logic needs).
     double deformation(const Eigen::VectorXd &x) const override;
-    double history_variable() const override { return law->history_variable(); }
-    double stored_energy() const override { return law->stored_energy(); }
     /// The contact point (the corner) at the trial state.
     std::array<double, 2> contact_point() const override
     {
@@ -62,11 +97,9 @@ namespace poundfe
     }
 
   private:
-    PlanContactGeometry         geometry;
-    std::unique_ptr<ContactLaw> law;
-    PlanContactState            state, committed_state;
-    Vector6                     velocity = Vector6::Zero();
-    double committed_penetration = 0, committed_force = 0;
+    PlanContactGeometry geometry;
+    PlanContactState    state, committed_state;
+    Vector6             velocity = Vector6::Zero();
   };
 } // namespace poundfe
 

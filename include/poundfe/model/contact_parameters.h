@@ -49,6 +49,8 @@ namespace poundfe
     double             calibration_velocity = 1.0;
     bool               between_buildings    = true;
     bool               floor_to_column      = true;
+    /// Dimension 3: slab edges against the columns of 3D frame neighbours.
+    bool               floor_to_column_in_plan = false;
     std::vector<std::string> barriers; // "building floor side gap"
     /// The `Links` and `Bumpers` sections: what is put in and across the
     /// gaps (declared in their own subsections by InputParameters).

@@ -200,6 +200,24 @@ namespace poundfe
     unsigned int                         end = 0;
   };
 
+  /// A slab edge against a column of a 3D frame between its floors (the
+  /// slab of another building at a level the column's building has no
+  /// floor at; model/column_contact_geometry.h): the slab's edge at rest
+  /// (ends counter-clockwise along its outline) and mass centre, the
+  /// column's axis in plan at rest, and the plan displacement of the column
+  /// at the slab's height, w = W u over the model DOFs `column_dofs` (W the
+  /// column's cubic Hermite shape functions times its member map, 2 x n,
+  /// row-major in `weights`).
+  struct ColumnContactGeometry
+  {
+    std::array<Point2, 2>     edge;
+    Point2                    slab_centre;
+    Point2                    column_point;
+    std::vector<unsigned int> column_dofs;
+    std::vector<double>       weights;
+    std::string               column; // the column member's label
+  };
+
   /// A gap element: contact between a node of one building and a node of
   /// its right-hand neighbour (closure = ux_left - ux_right), or between a
   /// node and a rigid barrier (closure = +ux for a barrier on the right,
@@ -216,6 +234,11 @@ namespace poundfe
     /// plan (elements/plan_contact.h); nodes are the two floors' nodes.
     bool                        in_plan = false;
     PlanContactGeometry         plan;
+    /// Dimension 3: contact between the slab of nodes[1]'s floor and a
+    /// column of buildings[0] (in_plan is false; nodes[0] is the node of the
+    /// column's building's floor at the column's top).
+    bool                        on_column = false;
+    ColumnContactGeometry       column;
   };
 
   /// Translational mass lumped at a node (acts on ux and uy).

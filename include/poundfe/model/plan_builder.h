@@ -59,6 +59,12 @@ namespace poundfe
   /// One gap per end of the overlap of the facing edges of every pair of
   /// floors at the same level of two buildings whose slabs face each other.
   void add_plan_contacts(Model &model, const ContactParameters &contact);
+
+  /// One gap per slab of a building and perimeter column of a 3D frame
+  /// neighbour that faces the slab's edge, where the slab's level is
+  /// strictly between the column's ends (model/column_contact_geometry.h;
+  /// source/model/column_contact_builder.cc).
+  void add_column_contacts(Model &model, const ContactParameters &contact);
 } // namespace poundfe
 
 #endif

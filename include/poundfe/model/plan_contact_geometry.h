@@ -45,6 +45,13 @@ namespace poundfe
   /// The state of the end geometry.end of the overlap at motion q.
   PlanContactState plan_contact_state(const PlanContactGeometry &geometry, const Vector6 &q);
 
+  /// The gap of the corner X_c (at rest) of body p on the edge of body
+  /// e = 1 - p through X_0 with outward normal N (at rest), the two bodies
+  /// moving rigidly by q = (ux, uy, θz) about `centres` each.
+  PlanContactState corner_on_edge_state(const std::array<Point2, 2> &centres, const Vector6 &q,
+                                        unsigned int p, const Point2 &corner,
+                                        const Point2 &edge_point, const Point2 &normal);
+
   /// The outward normal of a counter-clockwise outline's edge from a to b.
   Point2 outward_normal(const Point2 &a, const Point2 &b);
 } // namespace poundfe
