@@ -132,11 +132,28 @@ namespace poundfe
   }
 
   void
+  FilippovSystem::sample_step(const double t0, const double h)
+  {
+    const double dt = parameters.sample_interval;
+    if (!(dt > 0))
+      return;
+    for (double ts = sampled.size() * dt; ts <= t0 + h * (1 + 1e-12); ts = sampled.size() * dt)
+      {
+        SwitchingSample s;
+        s.time    = ts;
+        s.sliding = sliding;
+        step.dense_output(std::clamp((ts - t0) / h, 0.0, 1.0), s.state);
+        sampled.push_back(std::move(s));
+      }
+  }
+
+  void
   FilippovSystem::run(const Vector &x0, const double t_end)
   {
     x       = x0;
     sliding = -1;
     events.clear();
+    sampled.clear();
     sides.assign(surfaces.size(), 1);
     const double on_surface = 1e-14;
     for (unsigned int j = 0; j < surfaces.size(); ++j)
@@ -144,6 +161,8 @@ namespace poundfe
     for (unsigned int j = 0; j < surfaces.size(); ++j)
       if (std::abs(value(j, x)) <= on_surface * (1 + std::abs(surfaces[j].offset)))
         switch_at(j, 0);
+    if (parameters.sample_interval > 0)
+      sampled.push_back({0.0, x0, sliding});
     const DormandPrinceStep::Rhs F = [this](double t, const Vector &s, Vector &dx) {
       rhs(t, s, dx);
     };
@@ -191,6 +210,7 @@ namespace poundfe
                 step.take(F, t, x, k1, h);
               }
           }
+        sample_step(t, h);
         t = (clipped && event < 0) ? t_end : t + h;
         x  = step.y1;
         k1 = step.k7;
