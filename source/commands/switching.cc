@@ -116,7 +116,7 @@ namespace poundfe
     void
     write_summary(const InputParameters &input, const ModelSwitching &analysis,
                   const std::vector<SlidingInterval> &intervals, const double t_end,
-                  const double stick_band, const std::string &directory)
+                  const std::string &directory)
     {
       JsonWriter json;
       begin_summary(json, "switching", input);
@@ -127,8 +127,7 @@ namespace poundfe
                                  "a > 0 > b attracting sliding, a < 0 < b repulsive sliding, "
                                  "|a| or |b| <= 1e-8 max(|a|, |b|) grazing")
         .value("friction_on_the_surface",
-               "mu_s within |r'| <= eta of the surface (the stick set), mu(r') in slip")
-        .value("stick_band_m_s", stick_band)
+               "mu_s for the two fields on the surface (the stick set), mu(r') in slip")
         .value("n_events", static_cast<unsigned long>(analysis.events().size()));
       json.begin_array("surfaces");
       for (const auto &[name, by_class] : analysis.counts())
@@ -166,7 +165,7 @@ namespace poundfe
                    << (u_part != 0 ? ", graph 1" : "") << " nohead dt 2 lc rgb 'gray40'\n";
         }
       const std::string u = "2", v = std::to_string(2 + n), sliding = std::to_string(2 + 2 * n);
-      const std::string cls = std::to_string(2 + 2 * n + 8);
+      const std::string cls = std::to_string(2 * n + 9);
       auto of_class = [&](const char *name) {
         return u + ":(strcol(" + cls + ") eq '" + name + "' ? $" + v + " : 1/0)";
       };
@@ -235,8 +234,7 @@ namespace poundfe::commands
     prepare_output_directory(run.directory);
     write_log(switching_analysis, events, run.directory);
     write_trajectory(switching_analysis, run.directory);
-    write_summary(input, switching_analysis, intervals, t_end, 100 * filippov.absolute_tolerance,
-                  run.directory);
+    write_summary(input, switching_analysis, intervals, t_end, run.directory);
     if (input.output.plots)
       draw_phase_portrait(switching_analysis, run.directory);
     timer.leave_subsection();

@@ -5,6 +5,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/integration/dormand_prince.h>
+#include <poundfe/integration/element_kind_text.h>
 
 #include <deal.II/base/exceptions.h>
 

@@ -59,9 +59,11 @@ namespace poundfe
   {
     std::vector<int> s = sides;
     s[j]               = -1;
+    evaluated          = j;
     field(t, state, s, f_minus);
     s[j] = +1;
     field(t, state, s, f_plus);
+    evaluated = -1;
     return {surfaces[j].normal.dot(f_minus), surfaces[j].normal.dot(f_plus)};
   }
 
@@ -84,7 +86,13 @@ namespace poundfe
     out.assign(surfaces.size() + 2, 0);
     for (unsigned int j = 0; j < surfaces.size(); ++j)
       if (static_cast<int>(j) != sliding)
-        out[j] = value(j, state) > 0 ? 1 : -1;
+        {
+          const double h = value(j, state);
+          // within the local error of the last event's surface: its side
+          const double near = 10 * (parameters.absolute_tolerance +
+                                    parameters.relative_tolerance * state.cwiseAbs().maxCoeff());
+          out[j] = just_switched[j] && std::abs(h) <= near ? sides[j] : (h > 0 ? 1 : -1);
+        }
     if (sliding >= 0)
       {
         const auto [a, b]          = normal_components(sliding, t, state);
@@ -128,6 +136,7 @@ namespace poundfe
           sides[j] = e.value > 0 ? +1 : (e.value < 0 ? -1 : (a + b > 0 ? +1 : -1));
       }
     e.region_after = sliding == static_cast<int>(j) ? 0 : sides[j];
+    just_switched[j] = true;
     events.push_back(e);
   }
 
@@ -155,6 +164,7 @@ namespace poundfe
     events.clear();
     sampled.clear();
     sides.assign(surfaces.size(), 1);
+    just_switched.assign(surfaces.size(), false);
     const double on_surface = 1e-14;
     for (unsigned int j = 0; j < surfaces.size(); ++j)
       sides[j] = value(j, x) < 0 ? -1 : 1;
@@ -188,6 +198,9 @@ namespace poundfe
             continue;
           }
         const double h_next = DormandPrinceStep::next_size(h, err);
+        for (unsigned int j = 0; j < surfaces.size(); ++j) // left the last event's surface
+          if (just_switched[j] && (value(j, x) > 0 ? 1 : -1) == sides[j])
+            just_switched[j] = false;
         indicators(t, x, watched);
         indicators(t + h, step.y1, trial_watched);
         int event = -1;

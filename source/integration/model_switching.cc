@@ -4,6 +4,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/integration/dormand_prince.h>
+#include <poundfe/integration/element_kind_text.h>
 #include <poundfe/integration/model_switching.h>
 
 #include <deal.II/base/exceptions.h>
@@ -67,7 +68,6 @@ namespace poundfe
     , elements(elements_)
     , load(std::move(load_))
     , n(system.n_equations())
-    , stick_band(100 * parameters.absolute_tolerance)
   {
     Assert(unsupported(system, model, elements, 1u << 30).empty(),
            dealii::ExcMessage(unsupported(system, model, elements, 1u << 30)));
@@ -123,8 +123,9 @@ namespace poundfe
             const FrictionLawParameters &p = friction_laws[h];
             const double slip = e.deformation(v) - p.belt_velocity;
             double       derivative = 0;
-            const double mu = std::abs(slip) <= stick_band ? p.static_coefficient :
-                                                             friction[h]->coefficient(slip, derivative);
+            const double mu = filippov->surface_evaluated() == j ?
+                                p.static_coefficient :
+                                friction[h]->coefficient(slip, derivative);
             const double f  = sides[j] * mu * p.normal(e.deformation(u), e.deformation(v)).n;
             const Eigen::MatrixXd basis = e.tangent_basis();
             for (unsigned int i = 0; i < e.n_dofs(); ++i)

@@ -90,10 +90,6 @@ namespace poundfe
     Vector                stage, r1, r2, r3, r4, r5;
   };
 
-  /// What an element is ("a plastic hinge", "a friction element"), for the
-  /// messages of the methods that do not take it.
-  std::string element_kind_text(const NonlinearElement &e);
-
   class DormandPrinceIntegrator : public TimeStepper
   {
   public:

@@ -107,6 +107,10 @@ namespace poundfe
     /// Every sample_interval from t = 0 (empty when it is 0).
     const std::vector<SwitchingSample> &samples() const { return sampled; }
     const std::vector<SwitchingSurface> &switching_surfaces() const { return surfaces; }
+    /// The surface whose two one-sided fields are being evaluated on it
+    /// (the normal components, the sliding field), or -1: a field may
+    /// differ on the surface (static friction) from its side's limit.
+    int surface_evaluated() const { return evaluated; }
     /// Per surface name and class name, how many hits.
     std::map<std::string, std::map<std::string, unsigned int>> counts() const;
     /// The switching log: time, state, surface, regions, h, a, b, class.
@@ -132,6 +136,10 @@ namespace poundfe
     Vector                        x, k1, f_minus, f_plus, trial;
     std::vector<int>              sides, trial_sides, watched, trial_watched;
     int                           sliding = -1; // the surface slid on, or -1
+    int                           evaluated = -1;
+    /// Per surface: the state left by its last event may lie a step's local
+    /// error on the other side; until it leaves, that is no new hit.
+    std::vector<bool>             just_switched;
     std::vector<SwitchingEvent>   events;
     std::vector<SwitchingSample>  sampled;
   };

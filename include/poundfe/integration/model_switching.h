@@ -12,13 +12,12 @@
 //                 this side;
 //   friction k    r'_k = v_k - v0_k = 0 (the slip velocity against the belt):
 //                 f_f = s mu N(u, v), mu = mu(r'_k) (kinetic, or Stribeck)
-//                 in slip and mu = mu_s on the surface, |r'_k| <= eta: the
-//                 stick set of Filippov's convex method is bounded by the
-//                 static coefficient (the switch model of Leine, van Campen,
-//                 de Kraker & van den Steen 1998); eta = 100 x the absolute
-//                 tolerance, far above the slip velocity left at a located
-//                 event (its time resolution times the acceleration) and far
-//                 below any slip of interest.
+//                 in slip and mu = mu_s for the two fields on the surface
+//                 (normal components, sliding field): the stick set of
+//                 Filippov's convex method is bounded by the static
+//                 coefficient (the switch model of Leine, van Campen, de
+//                 Kraker & van den Steen 1998), and a slip that leaves it
+//                 starts with the kinetic one.
 // Stick is then Filippov's attracting sliding on r' = 0, with lambda = a /
 // (a - b): the friction force of the convex combination, mu_s N (1 - 2
 // lambda), is the reaction that keeps r' = 0, and the stick ends (sliding
@@ -75,7 +74,6 @@ namespace poundfe
     NonlinearElements         &elements;
     LoadFunction               load;
     unsigned int               n = 0;
-    double                     stick_band = 0;
     Eigen::MatrixXd            mass_inverse;
     std::vector<std::string>   kinds;
     /// Per element: its surface (gap or slip; -1: a spring) and its friction law.
