@@ -89,8 +89,8 @@ namespace poundfe
         {
           const double h = value(j, state);
           // within the local error of the last event's surface: its side
-          const double near = 10 * (parameters.absolute_tolerance +
-                                    parameters.relative_tolerance * state.cwiseAbs().maxCoeff());
+          const double near = 100 * (parameters.absolute_tolerance +
+                                     parameters.relative_tolerance * state.cwiseAbs().maxCoeff());
           out[j] = just_switched[j] && std::abs(h) <= near ? sides[j] : (h > 0 ? 1 : -1);
         }
     if (sliding >= 0)
