@@ -11,7 +11,8 @@
 #   - a start on the gap at rest: grazing (a = b = 0);
 #   - every row of every log: its class agrees with the signs of its
 #     normal components a, b (crossing a b > 0, attracting sliding a > 0 > b,
-#     sliding exit with a or b = 0 to 1e-9 of max |a|, |b|, grazing);
+#     sliding exit with a or b = 0 to 1e-6 of max |a|, |b| (the located
+#     exit's residual), grazing to 1e-8);
 # then bad input: a model with a hysteretic storey: exit 1, no output.
 set -eu
 poundfe=$1 cli=$2 thesis=$3
