@@ -45,12 +45,14 @@ run run fig-3.10c input/three-storey-free-vibration.prm
 for f in fig-3.2a fig-3.2b fig-3.2c fig-3.2d fig-3.2e; do run bifurcation $f; done
 for f in fig-3.3a fig-3.3b fig-3.4a fig-3.5a-low fig-3.5a-high fig-3.6; do run stationary-pdf $f; done
 run reliability fig-3.12
+run switching fig-3.7
 
 copy() { cp "$out/$1" "$figures/$2"; }
 for f in fig-3.1a fig-3.1b fig-3.1c; do copy $f/phase_portrait.png $f.png; done
 for f in fig-3.2a fig-3.2b fig-3.2c fig-3.2d fig-3.2e; do copy $f/bifurcation.png $f.png; done
 for f in fig-3.3a fig-3.3b fig-3.5a-low fig-3.5a-high; do copy $f/pdf.png $f.png; done
 copy table-3.1/phase_portrait.png table-3.1-phase.png
+copy fig-3.7/phase_portrait.png fig-3.7.png
 copy table-3.1/contact_force.png table-3.1-contact-force.png
 copy fig-3.9/hysteresis_sdof_S1.png fig-3.9-hysteresis.png
 copy fig-3.9/phase_portrait.png fig-3.9-phase.png

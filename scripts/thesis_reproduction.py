@@ -19,6 +19,15 @@ import thesis_tables  # noqa: E402
 out, timing = sys.argv[1], sys.argv[2]
 
 
+def switching_counts(name):
+    """'<surface>: crossing 12, ...' per surface of a switching run."""
+    parts = []
+    for surface in summary(name)["surfaces"]:
+        classes = ", ".join(f"{k} {v}" for k, v in surface.items() if k not in ("name", "hits"))
+        parts.append(f"{surface['name']}: {classes or 'no hits'}")
+    return "; ".join(parts)
+
+
 def summary(name):
     return json.load(open(f"{out}/{name}/summary.json"))
 
@@ -127,7 +136,7 @@ print(f"""## Figures
 | Fig. 3.4 (a), §3.2.1: stationary densities for damping c = 0, 0.0141, 0.1 (α = 0.4, f01 = 0.85) | ![](thesis-figures/fig-3.4a.png) | `stationary-pdf` sweep of fig-3.4a.prm over c: density of x against c, peaks marked; peaks of x per c: {peaks_per_value('fig-3.4a')} | as Fig. 3.3 (a): μ = 0.1, D = 0.001 |
 | Fig. 3.5 (a), §3.3.1: spillway's stationary amplitude densities for D = 0.0001 and 0.001 | ![](thesis-figures/fig-3.5a-low.png) ![](thesis-figures/fig-3.5a-high.png) | `stationary-pdf` of fig-3.5a-low/high.prm: amplitude peaks (m) at D = 0.0001: {peaks('fig-3.5a-low')}; D = 0.001: {peaks('fig-3.5a-high')} | the Table 3.1 model plus white-noise force S0 = D/π; no friction (the smoothed α0 = μN term is not given in a usable form); 4 realizations of 3 + 30 s |
 | Fig. 3.6 (a–d), §3.3.3: spillway's stationary densities for D = 0.004 … 0.4 | ![](thesis-figures/fig-3.6.png) | `stationary-pdf` sweep of fig-3.6.prm over D: peaks of x per D: {peaks_per_value('fig-3.6', 3.141592653589793, 2)} (two peaks at intermediate noise, one at the highest) | as Fig. 3.5; the swept value S0 = D/π. Panels (e, f) (forcing amplitude p0 = 25 and 2) leave D unspecified |
-| Fig. 3.7 (c, f) and the §3.3.4 count (g1 crossed 12 times, g2 6 times in [0, 3] s) | ![](thesis-figures/table-3.1-phase.png) ![](thesis-figures/table-3.1-contact-force.png) | the Table 3.1 run: {n_impacts} impacts = {2 * n_impacts} crossings of g1 and {n_impacts} zeros of g2 (the thesis: 12 and 6) | the panels' own initial state y0 = [3, 0] is not physical for this model: see below |
+| Fig. 3.7 (c, f) and the §3.3.4 count (g1 crossed 12 times, g2 6 times in [0, 3] s) | ![](thesis-figures/fig-3.7.png) ![](thesis-figures/table-3.1-contact-force.png) | `switching` of fig-3.7.prm (Filippov analysis, theory §3.9c): {switching_counts('fig-3.7')} (the thesis: 12 and 6, all transversal); the log switching.csv has Table 3.2's columns (time, state, region before/after, h, normal components, class); the Table 3.1 run: {n_impacts} impacts | the panels' own initial state y0 = [3, 0] is not physical for this model: see below; from rest, the forcing of Table 3.1 |
 | Fig. 3.10 (c), §3.4.1 with §2.3 eq. 2.35: free vibration of the three-storey building, u0 = [0.05; 0.05; 0.05], v0 = 0, no force | ![](thesis-figures/fig-3.10c.png) | `run` of input/three-storey-free-vibration.prm: the roof displacement against time; {free_vibration_text()} | M = diag(m, m, m/2), m = 1000 kg, k = 5e6 N/m (eq. 2.36's values); damping → Table 2.1's first three ratios per mode (0.03, 0.04, 0.05; the thesis names Rayleigh damping without coefficients); Δt = 2e-4 s, 2 s |
 | Fig. 3.9, §3.4.1: transient response of an elastic/inelastic system, hysteresis | ![](thesis-figures/fig-3.9-hysteresis.png) ![](thesis-figures/fig-3.9-phase.png) | `run` of fig-3.9.prm: Bouc-Wen hysteresis loop and phase portrait | every parameter → the Bouc-Wen single storey of input/bouc-wen-sdof.prm |
 | Fig. 3.12 (a), §2.3.2.1 and §3.4.2: two-bay two-storey frame, collapse mechanisms | (numbers, no plot) | `reliability` of fig-3.12.prm, series system of 5 mechanisms: """ +
@@ -141,7 +150,7 @@ print("""## Not yet reproducible
 |---|---|
 | Fig. 3.7 (a–c) (y0 = [3, 0]) | the caption's model is the spillway (k = 210.125, contact stiffness 2.47e6, gap ν = 0.005 m): a mass released 3 m from rest sits 2.995 m inside its barrier, a contact force of order 2.47e6 · 3^1.5 ≈ 1.3e7 N on 2 kg. `Initial conditions/State = 3, 0` sets it up, but the panels must rest on units or a model the thesis does not print |
 | Fig. 3.10 (a, b), Fig. 2.10 | a single storey "in horizontal plan" and a two-storey two-bay frame under the three-component force [−0.05 sin t; 0.1 sin t; 0.1 cos t]: their masses, stiffnesses and what the three components act on are not given |
-| Table 3.2, the sliding segments of Fig. 3.7 (b, c, e, f) and Fig. 3.1 (d, e), Fig. 3.12 (b–d) | need the Filippov switching analysis (item 2: crossing / sliding / grazing classification, sliding by the convex method, switching log); Table 3.2's model and initial state are not printed either |
+| Table 3.2, Fig. 3.12 (b–d), the sliding segments of Fig. 3.7 (b, e) and Fig. 3.1 (d, e) | `poundfe switching` classifies and logs them (theory §3.9c; fig-3.7.prm above), but Table 3.2's building (ν = 0.2, the earthquake it is under), Fig. 3.12's frame and the sliding panels' models and initial states are not printed |
 | Table 3.1 to ≤ 2e-5 s of a converged reference | needs the event-driven Dormand–Prince integrator (item 3); Newmark meets the printed table (above) |
 | Table 2.1 (per-mode damping) | `Damping/Type = modal` or `bands` applies its ratios (Fig. 3.10 (c) above uses its first three); the model whose fixed-base frequencies it lists (0.46, 1.27, 1.98, 2.98, 4.10 Hz) is not given |
 | Fig. 3.4 (b) | possible now (C2 = 0.015, C3 = 0.25 in a `stationary-pdf` sweep over μ), not set up yet: the swept μ values and the noise intensity are not given |

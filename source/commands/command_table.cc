@@ -22,6 +22,7 @@ namespace poundfe
     int reliability(const CommandRun &);    // reliability.cc
     int dynamic_form(const CommandRun &);   // dynamic_form.cc
     int mitigation(const CommandRun &);     // mitigation.cc
+    int switching(const CommandRun &);      // switching.cc
     int print_parameters(const CommandRun &); // print_parameters.cc
     int input_template(const CommandRun &); // template.cc
   } // namespace commands
@@ -89,6 +90,12 @@ namespace poundfe
        "FORM on a time-history limit state (Random parameters):\n"
        "beta, Pf, design point, alpha, number of time histories",
        true, false, false, false, commands::dynamic_form},
+      {"switching", "FILE",
+       "Filippov switching analysis of a small model: each hit of a\n"
+       "gap, its rate in contact or a slip velocity classified as\n"
+       "crossing, sliding (stick), grazing or sliding exit; sliding by\n"
+       "the convex method (switching.csv, phase_portrait.png)",
+       true, false, false, false, commands::switching},
       {"print-parameters", "", "every parameter with its documentation and default",
        false, false, false, false, commands::print_parameters},
       {"template", "KIND",

@@ -5,6 +5,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/integration/dormand_prince.h>
+#include <poundfe/integration/element_kind_text.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -33,27 +34,6 @@ namespace poundfe
     constexpr double d1 = -12715105075. / 11282082432., d3 = 87487479700. / 32700410799.,
                      d4 = -10690763975. / 1880347072., d5 = 701980252875. / 199316789632.,
                      d6 = -1453857185. / 822651844., d7 = 69997945. / 29380423.;
-
-    /// What an element the method does not take is, for the message.
-    std::string
-    element_kind_text(const NonlinearElement &e)
-    {
-      switch (e.kind)
-        {
-          case ElementKind::hinge:
-            return "a plastic hinge";
-          case ElementKind::storey:
-            return "a hysteretic storey";
-          case ElementKind::friction:
-            return "a friction element";
-          case ElementKind::link:
-            return "a link between buildings";
-          case ElementKind::foundation:
-            return "a foundation spring";
-          default:
-            return "a contact in plan (rank " + std::to_string(e.rank()) + ")";
-        }
-    }
 
     /// The extra components after (u, v): input, damping, then each element's work.
     constexpr unsigned int n_energy_terms = 2;
@@ -124,6 +104,26 @@ namespace poundfe
         (unchanged(mid) ? lo : hi) = mid;
       }
     return hi;
+  }
+
+  std::string
+  element_kind_text(const NonlinearElement &e)
+  {
+    switch (e.kind)
+      {
+        case ElementKind::hinge:
+          return "a plastic hinge";
+        case ElementKind::storey:
+          return "a hysteretic storey";
+        case ElementKind::friction:
+          return "a friction element";
+        case ElementKind::link:
+          return "a link between buildings";
+        case ElementKind::foundation:
+          return "a foundation spring";
+        default:
+          return "a contact in plan (rank " + std::to_string(e.rank()) + ")";
+      }
   }
 
   std::string

@@ -59,9 +59,11 @@ namespace poundfe
   {
     std::vector<int> s = sides;
     s[j]               = -1;
+    evaluated          = j;
     field(t, state, s, f_minus);
     s[j] = +1;
     field(t, state, s, f_plus);
+    evaluated = -1;
     return {surfaces[j].normal.dot(f_minus), surfaces[j].normal.dot(f_plus)};
   }
 
@@ -84,7 +86,13 @@ namespace poundfe
     out.assign(surfaces.size() + 2, 0);
     for (unsigned int j = 0; j < surfaces.size(); ++j)
       if (static_cast<int>(j) != sliding)
-        out[j] = value(j, state) > 0 ? 1 : -1;
+        {
+          const double h = value(j, state);
+          // within the local error of the last event's surface: its side
+          const double near = 100 * (parameters.absolute_tolerance +
+                                     parameters.relative_tolerance * state.cwiseAbs().maxCoeff());
+          out[j] = just_switched[j] && std::abs(h) <= near ? sides[j] : (h > 0 ? 1 : -1);
+        }
     if (sliding >= 0)
       {
         const auto [a, b]          = normal_components(sliding, t, state);
@@ -128,7 +136,24 @@ namespace poundfe
           sides[j] = e.value > 0 ? +1 : (e.value < 0 ? -1 : (a + b > 0 ? +1 : -1));
       }
     e.region_after = sliding == static_cast<int>(j) ? 0 : sides[j];
+    just_switched[j] = true;
     events.push_back(e);
+  }
+
+  void
+  FilippovSystem::sample_step(const double t0, const double h)
+  {
+    const double dt = parameters.sample_interval;
+    if (!(dt > 0))
+      return;
+    for (double ts = sampled.size() * dt; ts <= t0 + h * (1 + 1e-12); ts = sampled.size() * dt)
+      {
+        SwitchingSample s;
+        s.time    = ts;
+        s.sliding = sliding;
+        step.dense_output(std::clamp((ts - t0) / h, 0.0, 1.0), s.state);
+        sampled.push_back(std::move(s));
+      }
   }
 
   void
@@ -137,13 +162,17 @@ namespace poundfe
     x       = x0;
     sliding = -1;
     events.clear();
+    sampled.clear();
     sides.assign(surfaces.size(), 1);
+    just_switched.assign(surfaces.size(), false);
     const double on_surface = 1e-14;
     for (unsigned int j = 0; j < surfaces.size(); ++j)
       sides[j] = value(j, x) < 0 ? -1 : 1;
     for (unsigned int j = 0; j < surfaces.size(); ++j)
       if (std::abs(value(j, x)) <= on_surface * (1 + std::abs(surfaces[j].offset)))
         switch_at(j, 0);
+    if (parameters.sample_interval > 0)
+      sampled.push_back({0.0, x0, sliding});
     const DormandPrinceStep::Rhs F = [this](double t, const Vector &s, Vector &dx) {
       rhs(t, s, dx);
     };
@@ -169,6 +198,9 @@ namespace poundfe
             continue;
           }
         const double h_next = DormandPrinceStep::next_size(h, err);
+        for (unsigned int j = 0; j < surfaces.size(); ++j) // left the last event's surface
+          if (just_switched[j] && (value(j, x) > 0 ? 1 : -1) == sides[j])
+            just_switched[j] = false;
         indicators(t, x, watched);
         indicators(t + h, step.y1, trial_watched);
         int event = -1;
@@ -191,6 +223,7 @@ namespace poundfe
                 step.take(F, t, x, k1, h);
               }
           }
+        sample_step(t, h);
         t = (clipped && event < 0) ? t_end : t + h;
         x  = step.y1;
         k1 = step.k7;

@@ -76,6 +76,18 @@ namespace poundfe
     double grazing_tolerance  = 1e-8; // relative, of the normal components
     double event_resolution   = 1e-12; // s, times max(1, t)
     unsigned long max_steps   = 10000000;
+    /// > 0: the state sampled every this many seconds on the dense output
+    /// (samples()), for plots.
+    double        sample_interval = 0;
+  };
+
+  /// A state of the trajectory at a sample time, and the surface it slides
+  /// on then (-1: none).
+  struct SwitchingSample
+  {
+    double time = 0;
+    Vector state;
+    int    sliding = -1;
   };
 
   class FilippovSystem
@@ -92,6 +104,13 @@ namespace poundfe
 
     const Vector &state() const { return x; }
     const std::vector<SwitchingEvent> &log() const { return events; }
+    /// Every sample_interval from t = 0 (empty when it is 0).
+    const std::vector<SwitchingSample> &samples() const { return sampled; }
+    const std::vector<SwitchingSurface> &switching_surfaces() const { return surfaces; }
+    /// The surface whose two one-sided fields are being evaluated on it
+    /// (the normal components, the sliding field), or -1: a field may
+    /// differ on the surface (static friction) from its side's limit.
+    int surface_evaluated() const { return evaluated; }
     /// Per surface name and class name, how many hits.
     std::map<std::string, std::map<std::string, unsigned int>> counts() const;
     /// The switching log: time, state, surface, regions, h, a, b, class.
@@ -107,6 +126,8 @@ namespace poundfe
     void   indicators(double t, const Vector &state, std::vector<int> &out);
     /// A hit of surface j (or the end of sliding on it) at (t, x).
     void   switch_at(unsigned int j, double t);
+    /// The samples in (t0, t0 + h] of the step just taken, on its dense output.
+    void   sample_step(double t0, double h);
 
     std::vector<SwitchingSurface> surfaces;
     Field                         field;
@@ -115,7 +136,12 @@ namespace poundfe
     Vector                        x, k1, f_minus, f_plus, trial;
     std::vector<int>              sides, trial_sides, watched, trial_watched;
     int                           sliding = -1; // the surface slid on, or -1
+    int                           evaluated = -1;
+    /// Per surface: the state left by its last event may lie a step's local
+    /// error on the other side; until it leaves, that is no new hit.
+    std::vector<bool>             just_switched;
     std::vector<SwitchingEvent>   events;
+    std::vector<SwitchingSample>  sampled;
   };
 } // namespace poundfe
 
