@@ -6,7 +6,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/dynamics/realization.h>
-#include <poundfe/input/input_parameters.h>
+#include <poundfe/model/parameters.h>
 #include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/reliability_analysis_parameters.h>
 
@@ -228,7 +228,8 @@ namespace poundfe
 
   void
   attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
-                           const InputParameters &input, const Eigensolver eigensolver)
+                           const InputFile &input, const ModelParameters &model_input,
+                           const Eigensolver eigensolver)
   {
     // the responses the limit states name that a realization computes only when asked
     std::vector<std::string> named;
@@ -244,7 +245,7 @@ namespace poundfe
     const Model                &model = runner.model();
     std::vector<ModelParameter> parameters;
     const auto origins = std::make_shared<const std::vector<HingeOrigin>>(
-      hinge_origins(model, input.model)); // as the file has them
+      hinge_origins(model, model_input)); // as the file has them
     for (unsigned int i = 0; i < p.names.size(); ++i)
       {
         try

@@ -40,7 +40,8 @@ namespace dealii
 namespace poundfe
 {
   class RealizationRunner;
-  struct InputParameters;
+  struct InputFile;
+  struct ModelParameters;
 
   struct RandomParameterParameters
   {
@@ -88,10 +89,12 @@ namespace poundfe
   /// cannot vary, or a distribution that can sample values the parameter
   /// cannot take (e.g. a normal stiffness: use a lognormal or a truncated
   /// normal with lower >= 0).
-  /// `input` is the file the runner's model was built from (the hinges'
+  /// `input` is the file (for messages) and `model_input` its model
+  /// sections, which the runner's model was built from (the hinges'
   /// origins: dynamics/model_parameter.h).
   void attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
-                                const InputParameters &input, Eigensolver eigensolver);
+                                const InputFile &input, const ModelParameters &model_input,
+                                Eigensolver eigensolver);
 
   /// The section's limit states g_k over a row of responses (the runner's
   /// response_names(), which end with the variables' values).
