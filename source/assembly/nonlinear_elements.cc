@@ -45,97 +45,115 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// The Bouc-Wen elements: frame hinges (2D and 3D), hysteretic storeys
+    /// (with the sway-rocking term on a foundation) and resisting planes.
+    void
+    add_hysteretic_elements(const Model &model, NonlinearElements &elements)
+    {
+      for (const Hinge &hinge : model.hinges)
+        elements.emplace_back<UniaxialElement>(
+          ElementKind::hinge, hinge.building, hinge.label,
+          std::array<int, 2>{{model.equation(Model::dof(hinge.member_node, Component::rz)),
+                              model.equation(Model::dof(hinge.joint_node, Component::rz))}},
+          std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
+      for (const Hinge3D &hinge : model.hinges_3d)
+        elements.emplace_back<UniaxialElement>(
+          ElementKind::hinge, hinge.building, hinge.label,
+          std::array<int, 2>{{model.equation(n_dofs_per_node * hinge.node + hinge.slot), -1}},
+          std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
+      std::vector<unsigned int> storey_of_building(model.buildings.size(), 0);
+      for (const StoreyLink &link : model.links)
+        {
+          const unsigned int storey = ++storey_of_building[link.building];
+          if (!link.hysteretic)
+            continue;
+          const std::string label =
+            model.buildings[link.building].name + "_S" + std::to_string(storey);
+          const int top    = model.equation(Model::dof(link.nodes[1], Component::ux));
+          const int bottom = model.equation(Model::dof(link.nodes[0], Component::ux));
+          if (link.rocking_node >= 0) // d = u_top - u_bottom - h θ (sway-rocking)
+            elements.emplace_back<UniaxialElement>(
+              ElementKind::storey, link.building, label,
+              std::vector<int>{top, bottom,
+                               model.equation(Model::dof(link.rocking_node, Component::rz))},
+              std::vector<double>{1.0, -1.0, -link.rocking_arm},
+              std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
+          else
+            elements.emplace_back<UniaxialElement>(ElementKind::storey, link.building, label,
+                                                   std::array<int, 2>{{top, bottom}},
+                                                   std::make_unique<BoucWen>(link.hysteresis),
+                                                   link.stiffness);
+        }
+      for (const PlaneLink &link : model.plane_links)
+        if (link.hysteretic)
+          {
+            std::vector<unsigned int> dofs;
+            std::vector<double>       weights;
+            link.terms(dofs, weights);
+            std::vector<int> equations;
+            for (const unsigned int dof : dofs)
+              equations.push_back(model.equation(dof));
+            elements.emplace_back<UniaxialElement>(
+              ElementKind::storey, link.building,
+              model.buildings[link.building].name + "_S" + std::to_string(link.storey) + "P" +
+                std::to_string(link.plane),
+              equations, weights, std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
+          }
+    }
+
+    /// One gap: a slab against a column or a slab in plan (the element
+    /// measures the gap itself), else a uniaxial contact, behind a bumper
+    /// when the model has one.
+    void
+    add_gap_element(const Model &model, const Gap &gap, NonlinearElements &elements)
+    {
+      std::array<int, 2> equations{{-1, -1}};
+      for (unsigned int i = 0; i < 2; ++i)
+        if (gap.nodes[i] >= 0)
+          equations[i] = model.equation(Model::dof(gap.nodes[i], Component::ux));
+      ContactLawParameters law = model.contact;
+      law.initial_gap          = gap.initial_gap;
+      law.effective_mass       = gap.effective_mass;
+      if (gap.on_column)
+        {
+          law.initial_gap = 0; // the element measures the gap itself
+          std::vector<int> equations;
+          for (const unsigned int dof : gap.column.column_dofs)
+            equations.push_back(model.equation(dof));
+          for (const Component c : {Component::ux, Component::uy, Component::rz})
+            equations.push_back(model.equation(Model::dof(gap.nodes[1], c)));
+          elements.emplace_back<ColumnContactElement>(gap.buildings[1], gap.label, equations,
+                                                      gap.column, make_contact_law(law));
+          return;
+        }
+      if (gap.in_plan)
+        {
+          law.initial_gap = 0; // the element measures the gap itself
+          std::vector<int> equations;
+          for (const int node : gap.nodes)
+            for (const Component c : {Component::ux, Component::uy, Component::rz})
+              equations.push_back(model.equation(Model::dof(node, c)));
+          elements.emplace_back<PlanContactElement>(gap.buildings[0], gap.label, equations,
+                                                    gap.plan, make_contact_law(law));
+          return;
+        }
+      std::unique_ptr<UniaxialLaw> contact = make_contact_law(law);
+      if (model.bumper.law != BumperLaw::none)
+        contact = make_bumpered_contact(make_contact_law(law), model.bumper);
+      elements.emplace_back<UniaxialElement>(ElementKind::gap, gap.buildings[0], gap.label,
+                                             equations, std::move(contact));
+    }
+  } // namespace
+
   NonlinearElements
   make_nonlinear_elements(const Model &model)
   {
     NonlinearElements elements;
-    for (const Hinge &hinge : model.hinges)
-      elements.emplace_back<UniaxialElement>(
-        ElementKind::hinge, hinge.building, hinge.label,
-        std::array<int, 2>{{model.equation(Model::dof(hinge.member_node, Component::rz)),
-                            model.equation(Model::dof(hinge.joint_node, Component::rz))}},
-        std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
-    for (const Hinge3D &hinge : model.hinges_3d)
-      elements.emplace_back<UniaxialElement>(
-        ElementKind::hinge, hinge.building, hinge.label,
-        std::array<int, 2>{{model.equation(n_dofs_per_node * hinge.node + hinge.slot), -1}},
-        std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
-    std::vector<unsigned int> storey_of_building(model.buildings.size(), 0);
-    for (const StoreyLink &link : model.links)
-      {
-        const unsigned int storey = ++storey_of_building[link.building];
-        if (!link.hysteretic)
-          continue;
-        const std::string label =
-          model.buildings[link.building].name + "_S" + std::to_string(storey);
-        const int top    = model.equation(Model::dof(link.nodes[1], Component::ux));
-        const int bottom = model.equation(Model::dof(link.nodes[0], Component::ux));
-        if (link.rocking_node >= 0) // d = u_top - u_bottom - h θ (sway-rocking)
-          elements.emplace_back<UniaxialElement>(
-            ElementKind::storey, link.building, label,
-            std::vector<int>{top, bottom,
-                             model.equation(Model::dof(link.rocking_node, Component::rz))},
-            std::vector<double>{1.0, -1.0, -link.rocking_arm},
-            std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
-        else
-          elements.emplace_back<UniaxialElement>(ElementKind::storey, link.building, label,
-                                                 std::array<int, 2>{{top, bottom}},
-                                                 std::make_unique<BoucWen>(link.hysteresis),
-                                                 link.stiffness);
-      }
-    for (const PlaneLink &link : model.plane_links)
-      if (link.hysteretic)
-        {
-          std::vector<unsigned int> dofs;
-          std::vector<double>       weights;
-          link.terms(dofs, weights);
-          std::vector<int> equations;
-          for (const unsigned int dof : dofs)
-            equations.push_back(model.equation(dof));
-          elements.emplace_back<UniaxialElement>(
-            ElementKind::storey, link.building,
-            model.buildings[link.building].name + "_S" + std::to_string(link.storey) + "P" +
-              std::to_string(link.plane),
-            equations, weights, std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
-        }
+    add_hysteretic_elements(model, elements);
     for (const Gap &gap : model.gaps)
-      {
-        std::array<int, 2> equations{{-1, -1}};
-        for (unsigned int i = 0; i < 2; ++i)
-          if (gap.nodes[i] >= 0)
-            equations[i] = model.equation(Model::dof(gap.nodes[i], Component::ux));
-        ContactLawParameters law = model.contact;
-        law.initial_gap          = gap.initial_gap;
-        law.effective_mass       = gap.effective_mass;
-        if (gap.on_column)
-          {
-            law.initial_gap = 0; // the element measures the gap itself
-            std::vector<int> equations;
-            for (const unsigned int dof : gap.column.column_dofs)
-              equations.push_back(model.equation(dof));
-            for (const Component c : {Component::ux, Component::uy, Component::rz})
-              equations.push_back(model.equation(Model::dof(gap.nodes[1], c)));
-            elements.emplace_back<ColumnContactElement>(gap.buildings[1], gap.label, equations,
-                                                        gap.column, make_contact_law(law));
-            continue;
-          }
-        if (gap.in_plan)
-          {
-            law.initial_gap = 0; // the element measures the gap itself
-            std::vector<int> equations;
-            for (const int node : gap.nodes)
-              for (const Component c : {Component::ux, Component::uy, Component::rz})
-                equations.push_back(model.equation(Model::dof(node, c)));
-            elements.emplace_back<PlanContactElement>(gap.buildings[0], gap.label, equations,
-                                                      gap.plan, make_contact_law(law));
-            continue;
-          }
-        std::unique_ptr<UniaxialLaw> contact = make_contact_law(law);
-        if (model.bumper.law != BumperLaw::none)
-          contact = make_bumpered_contact(make_contact_law(law), model.bumper);
-        elements.emplace_back<UniaxialElement>(ElementKind::gap, gap.buildings[0], gap.label,
-                                               equations, std::move(contact));
-      }
+      add_gap_element(model, gap, elements);
     for (const Spring &spring : model.springs)
       elements.emplace_back<UniaxialElement>(
         ElementKind::spring, spring.building, spring.label,
