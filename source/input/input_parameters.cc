@@ -253,6 +253,9 @@ namespace poundfe
     model.finalize(*this);
     ground_motion.check(*this, time_integration.newmark.time_step);
     time_integration.check(*this);
+    // only a .prm file says whether the entry was given (JSON: no lines)
+    time_integration.newmark.lu_when_nonsymmetric =
+      time_integration.linear_solver == "eigen-ldlt" && line_of("Time integration/Linear solver") == 0;
     initial_conditions.finalize(*this);
     check_stochastic_samples();
     contact.check(*this);

@@ -145,6 +145,9 @@ namespace poundfe
                     total_rank <= parameters.newton.woodbury_columns);
     use_hybrid = n_elements > 0 && !use_woodbury &&
                  (mode == TangentUpdate::hybrid || mode == TangentUpdate::automatic);
+    if (!use_woodbury && !symmetric && solver_name == "eigen-ldlt" &&
+        parameters.lu_when_nonsymmetric)
+      solver_name = "umfpack"; // summary.json and the log name the solver used
     if (!use_woodbury && !symmetric && solver_name == "eigen-ldlt")
       throw InputError("", 0, "Time integration/Linear solver",
                        "refactorising a nonsymmetric element tangent needs an LU solver "

@@ -162,7 +162,8 @@ namespace poundfe
                "trilinos-cg-ml (AztecOO CG, Trilinos ML) solve to a fraction of the Newton "
                "tolerance and keep their preconditioner across iterations and steps "
                "(Iterative solver; theory §3.5c); on P ranks each rank runs the whole "
-               "analysis. Unit: -.",
+               "analysis. Not given: eigen-ldlt, or umfpack when a nonsymmetric element "
+               "tangent (3D plan contact) must be refactorised. Unit: -.",
                linear_solver_names());
     declare_newton_entries(prm, newmark.newton);
     newmark.iterative.declare(prm);

@@ -1,4 +1,5 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/input_text.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/output_directory.h>
 
@@ -9,6 +10,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <map>
 #include <memory>
 #include <set>
@@ -122,6 +124,18 @@ namespace poundfe
     }
 
     constexpr const char *resume_record_suffix = ".inputs";
+
+    /// The text of a file poundfe wrote into an output directory, read as
+    /// any input (read_input_text: a FIFO, a device or a huge file put in
+    /// its place is refused, not read forever); "" when it does not exist.
+    std::string
+    own_file_text(const fs::path &file, const std::string &what)
+    {
+      std::error_code error;
+      if (!fs::exists(fs::symlink_status(file, error)))
+        return "";
+      return read_input_text(file.string(), what);
+    }
   } // namespace
 
   void
@@ -141,7 +155,7 @@ namespace poundfe
     // What the last command listed: files now, then the subdirectories
     // that are left empty, deepest first.
     std::vector<std::string> kept, directories;
-    std::ifstream            old(root / output_manifest_name);
+    std::istringstream       old(own_file_text(root / output_manifest_name, "output manifest"));
     for (std::string entry; std::getline(old, entry);)
       {
         if (!removable(entry))
@@ -215,13 +229,13 @@ namespace poundfe
       }
     const std::string remedy = "; remove it (its realizations are computed again) or choose another "
                                "output directory";
-    std::ifstream in(record);
-    if (!in)
+    if (!fs::exists(fs::symlink_status(record, error)))
       throw InputError(file, 0, "",
                        "holds realizations of an earlier run that left no record of its input (" +
                          fs::path(record).filename().string() + "), so they may belong to another model" +
                          remedy);
     std::map<std::string, std::string> before;
+    std::istringstream                 in(own_file_text(record, "record of the input"));
     for (std::string line; std::getline(in, line);)
       if (const std::size_t at = line.find(" = "); at != std::string::npos)
         before.emplace(line.substr(0, at), line.substr(at + 3));

@@ -38,7 +38,8 @@ namespace poundfe
       gap           = 2,
       hinge         = 3,
       slab          = 4, // a rigid floor's outline (3D)
-      mass_centre   = 5  // a rigid floor's master node (3D)
+      mass_centre   = 5, // a rigid floor's master node (3D)
+      contact_point = 6  // a gap's point of contact in plan (3D)
     };
 
     static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
@@ -173,9 +174,15 @@ namespace poundfe
       void         add_members();
       void         add_floors();
       void         add_gaps();
+      void         add_contact_point(unsigned int g);
       void         write_static_text();
       double       value(const Combination &c, const Vector &u) const;
       std::string  time_arrays(const Vector &u, const NonlinearElements &elements) const;
+      /// The contact points' displacements (into d) and forces on the gaps'
+      /// first buildings, per point, at the elements' state.
+      std::vector<std::array<double, 3>>
+      contact_points(const NonlinearElements &elements, double scale,
+                     std::vector<std::array<double, 6>> &d) const;
 
       const Model                     &model;
       std::vector<Point3>              points;
@@ -184,6 +191,10 @@ namespace poundfe
       std::vector<int>                 point_node; // the model node a point stands for; -1
       Cells                            cells;
       std::vector<int>                 gap_cell;     // per model gap; -1: not drawn
+      /// Per model gap: its contact point's point and vertex cell (contact in
+      /// plan), -1: none. The point stands at the rest contact point; in a
+      /// time frame it moves to the element's contact point.
+      std::vector<int>                 gap_point, gap_vertex;
       std::vector<int>                 master_point; // per model node; -1: none
       double                           model_size = 0;
       std::string                      static_cell_data, geometry;

@@ -13,15 +13,24 @@
 //   - each storey of a torsionally coupled shear building a line between
 //     the mass centres of its floors (the first from the ground below C_1);
 //   - each gap in plan a line between the two floors' mass centres, with its
-//     contact force and state.
+//     contact force and state, and a vertex at its point of contact: at rest
+//     where it lies then (the corner of the overlap's end, or the column's
+//     axis), in a time frame displaced to the element's contact point in the
+//     deformed configuration (x_c(t) - x_c(0), so that Warp By Vector puts it
+//     there), carrying the contact force on the gap's first building,
+//     F ∂g/∂u_1 = F n (model/plan_contact_geometry.h): a Glyph of
+//     `contact_force` draws the hits as arrows where they happen.
 // Point data: displacement, rotation, node (the model node of a mass centre
-// or of a joint's (uz, rx, ry); else -1). Cell data: kind (0 member, 1
-// storey, 2 gap, 4 slab, 5 mass centre), building and member ids (1-based; a
-// slab's and a mass centre's floor number, a gap's number), and in a time
-// frame the member end forces in local axes (N, Vy, Vz, T, My, Mz) at each
-// end, the gap force and contact.
+// or of a joint's (uz, rx, ry); else -1), and in a time frame contact_force
+// (N; zero but at contact points). Cell data: kind (0 member, 1 storey, 2
+// gap, 4 slab, 5 mass centre, 6 contact point), building and member ids
+// (1-based; a slab's and a mass centre's floor number, a gap's number), and
+// in a time frame the member end forces in local axes (N, Vy, Vz, T, My, Mz)
+// at each end, the gap force and contact (on its line and its vertex).
 #include <poundfe/elements/frame_element_3d.h>
 #include <poundfe/elements/nonlinear_element.h>
+#include <poundfe/elements/plan_contact_element.h>
+#include <poundfe/model/plan_contact_geometry.h>
 
 #include "vtu_arrays.h"
 
@@ -150,6 +159,7 @@ namespace poundfe
       for (unsigned int g = 0; g < model.gaps.size(); ++g)
         {
           const std::array<int, 2> &ends = model.gaps[g].nodes;
+          add_contact_point(g);
           gap_cell.push_back(-1);
           if (ends[0] < 0 || ends[1] < 0 || master_point[ends[0]] < 0 || master_point[ends[1]] < 0)
             continue; // a barrier or a floor without a diaphragm: not drawn
@@ -157,6 +167,50 @@ namespace poundfe
           cells.add({master_point[ends[0]], master_point[ends[1]]}, vtk_line, gap,
                     model.gaps[g].buildings[0], g + 1);
         }
+    }
+
+    void
+    VtuGeometry3D::add_contact_point(const unsigned int g)
+    {
+      const Gap &gap = model.gaps[g];
+      gap_point.push_back(-1);
+      gap_vertex.push_back(-1);
+      if (!gap.in_plan && !gap.on_column)
+        return;
+      Point2 rest = gap.column.column_point;
+      if (gap.in_plan)
+        {
+          const PlanContactState state = plan_contact_state(gap.plan, Vector6::Zero());
+          // out of reach at rest (edges that do not overlap yet): the end of
+          // the first floor's edge stands in until a frame has the point
+          rest = state.defined ? state.point : gap.plan.edges[0][gap.plan.end];
+        }
+      gap_point.back()  = new_point({{rest.x, rest.y, gap.level}}, {}, -1);
+      gap_vertex.back() = cells.types.size();
+      cells.add({gap_point.back()}, vtk_vertex, contact_point, gap.buildings[0], g + 1);
+    }
+
+    std::vector<std::array<double, 3>>
+    VtuGeometry3D::contact_points(const NonlinearElements &elements, const double scale,
+                                  std::vector<std::array<double, 6>> &d) const
+    {
+      std::vector<std::array<double, 3>> force(points.size(), std::array<double, 3>{});
+      unsigned int                       g = 0;
+      for (const NonlinearElement &element : elements)
+        if (element.kind == ElementKind::gap)
+          if (const int p = gap_point.at(g++); p >= 0)
+            {
+              const auto &contact = dynamic_cast<const PlanGapElement &>(element);
+              if (!contact.in_reach())
+                continue; // the rest point, no force
+              const std::array<double, 2> x = contact.contact_point(), f = contact.force_on_first();
+              for (unsigned int c = 0; c < 2; ++c)
+                {
+                  d[p][c]     = scale * (x[c] - points[p][c]);
+                  force[p][c] = f[c];
+                }
+            }
+      return force;
     }
 
     void
@@ -211,11 +265,15 @@ namespace poundfe
       unsigned int        g = 0;
       for (const NonlinearElement &element : elements)
         if (element.kind == ElementKind::gap)
-          if (const int cell = gap_cell.at(g++); cell >= 0)
-            {
-              force[cell]   = element.force();
-              contact[cell] = element.is_active();
-            }
+          {
+            for (const int cell : {gap_cell.at(g), gap_vertex.at(g)})
+              if (cell >= 0)
+                {
+                  force[cell]   = element.force();
+                  contact[cell] = element.is_active();
+                }
+            ++g;
+          }
       std::string     xml;
       DataArrayWriter text(xml);
       for (unsigned int end = 0; end < 2; ++end)
@@ -248,6 +306,8 @@ namespace poundfe
       for (unsigned int p = 0; p < points.size(); ++p)
         for (unsigned int c = 0; c < 6; ++c)
           d[p][c] = scale * value(motions[p][c], u);
+      const std::vector<std::array<double, 3>> contact_force =
+        elements ? contact_points(*elements, scale, d) : std::vector<std::array<double, 3>>{};
       DataArrayWriter text(xml);
       for (const unsigned int first : {0u, 3u})
         {
@@ -261,6 +321,14 @@ namespace poundfe
       for (const int n : point_node)
         text.whole(n);
       text.end();
+      if (elements != nullptr)
+        {
+          text.begin("Float64", "contact_force", 3);
+          for (const auto &f : contact_force)
+            for (const double c : f)
+              text.number(c);
+          text.end();
+        }
       xml += "</PointData>\n<CellData Scalars=\"kind\">\n";
       xml += static_cell_data;
       if (elements != nullptr)

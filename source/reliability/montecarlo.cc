@@ -1,4 +1,5 @@
 #include <poundfe/reliability/montecarlo.h>
+#include <poundfe/base/input_text.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/reliability/statistics.h>
 #include <poundfe/base/numbers.h>
@@ -64,8 +65,8 @@ namespace poundfe
     read_rows(const std::string &file, const std::string &header, const std::uint64_t seed,
               const unsigned int n_responses, bool &damaged)
     {
-      std::ifstream in(file, std::ios::binary);
-      std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      // bounded as any input: a FIFO or /dev/zero in its place is refused
+      const std::string text = read_input_text(file, "table of realizations");
       std::map<std::uint64_t, Row> rows;
       damaged = false;
       std::size_t start = 0;
@@ -233,7 +234,7 @@ namespace poundfe
     void
     RealizationScheduler::resume()
     {
-      std::string error, error_parameter;
+      std::string error, error_parameter, error_file = file;
       int         error_line = 0;
       if (rank == 0)
         {
@@ -261,6 +262,7 @@ namespace poundfe
             {
               error           = e.problem();
               error_parameter = e.parameter();
+              error_file      = e.file(); // the table or its record
               error_line      = e.line();
             }
           for (unsigned long r = 0; r < n; ++r)
@@ -269,7 +271,8 @@ namespace poundfe
         }
       error = dealii::Utilities::MPI::broadcast(comm, error, 0);
       if (!error.empty())
-        throw InputError(file, dealii::Utilities::MPI::broadcast(comm, error_line, 0),
+        throw InputError(dealii::Utilities::MPI::broadcast(comm, error_file, 0),
+                         dealii::Utilities::MPI::broadcast(comm, error_line, 0),
                          dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
       todo = dealii::Utilities::MPI::broadcast(comm, todo, 0);
       if (rows.size() > 0 && !todo.empty())

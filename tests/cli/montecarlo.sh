@@ -117,6 +117,19 @@ fi
 grep -q "left no record of its input (realizations.csv.inputs)" "$work/stderr" ||
   fail "montecarlo: no record: $(cat "$work/stderr")"
 echo "ok   bad input: $(cat "$work/stderr")"
+# the record and the table are read as any input (issue 28 class 1): a FIFO
+# in their place is refused at once (before: the read waited for a writer)
+for fifo in realizations.csv.inputs realizations.csv; do
+  "$poundfe" montecarlo "$input" --output "$work/fifo" > /dev/null
+  rm "$work/fifo/$fifo" && mkfifo "$work/fifo/$fifo"
+  if timeout 60 "$poundfe" montecarlo "$input" --output "$work/fifo" > /dev/null 2> "$work/stderr"; then
+    fail "montecarlo: read a FIFO as $fifo"
+  fi
+  grep -q "$fifo.*is a named pipe (FIFO), not a regular file" "$work/stderr" ||
+    fail "montecarlo: FIFO as $fifo: $(cat "$work/stderr")"
+  echo "ok   bad input: $(cat "$work/stderr")"
+  rm -r "$work/fifo"
+done
 # the subset journal likewise
 if "$poundfe" subset "$work/stiffer.prm" --output "$work/subset-one" > /dev/null 2> "$work/stderr"; then
   fail "subset: resumed the journal of another model"

@@ -24,6 +24,14 @@ checked against the run's CSV histories at the frame's time:
     length: the rows of K_e balance to round-off);
   * a gap's force is contact_force.csv's (exact) and contact is 1 exactly
     where it is > 0, in contact in some frame;
+  * each gap's contact point (one vertex per gap) carries the same force and
+    flag; in contact its contact_force is the force on the gap's first
+    building: of magnitude the gap force (1e-12: |n| = 1 to round-off), in
+    plan, pushing the first floor away from the second (positive along the
+    line from the second's mass centre to the first's), and its displaced
+    position is a corner of one of the two slabs moved as a rigid body with
+    the finite rotation R(θ), as the contact element does (1e-9 m); zero
+    force and no displacement check while open;
 - input/3d-torsional-shear-pair.prm cut to 1 s: the mass centres, slabs and
   one storey line per storey, as above;
   and Δmax/Δavg at the instant of each storey's largest corner drift
@@ -46,7 +54,7 @@ import vtu  # noqa: E402  (the readers; its own checks run only as a script)
 
 failures = vtu.failures
 check = vtu.check
-MEMBER, STOREY, GAP, SLAB, CENTRE = 0, 1, 2, 4, 5
+MEMBER, STOREY, GAP, SLAB, CENTRE, CONTACT = 0, 1, 2, 4, 5, 6
 
 
 def read(path):
@@ -118,6 +126,8 @@ def check_frames(out, names, expected_members, frames_in_contact):
         if time == frames[0][0]:
             check(kind.count(MEMBER) == expected_members,
                   f"{kind.count(MEMBER)} member lines, {expected_members} expected")
+            check(kind.count(CONTACT) == len(gap_names),
+                  f"{kind.count(CONTACT)} contact points, {len(gap_names)} gaps")
         u = dofs[min(dofs, key=lambda t: abs(t - time))]
         largest = max(1e-300, max(math.hypot(*p) for p in d))
         centres = {}  # (building, z) -> point of the mass centre
@@ -177,8 +187,45 @@ def check_frames(out, names, expected_members, frames_in_contact):
                 check(force == want, f"{name}: gap {member[c]} force {force} against {want}")
                 check(v["data"]["contact"][c] == (force > 0), f"{name}: gap {member[c]} contact flag")
                 n_contact += force > 0
+            elif kind[c] == CONTACT:
+                check_contact_point(v, name, c, gaps[time][gap_col[gap_names[member[c] - 1] + "_force_N"]],
+                                    centres)
     check(n_contact >= frames_in_contact, f"{n_contact} gap-frames in contact")
     return len(frames), n_joints, n_corners, n_contact
+
+
+def check_contact_point(v, name, c, want, centres):
+    """A gap's contact point (the vertex cell c) against the gap's force
+    `want` and the floors' motions (the mass centres `centres`)."""
+    p, g = v["cells"][c][0], v["data"]["member"][c]
+    force, f = v["data"]["force"][c], v["data"]["contact_force"][p]
+    check(force == want and v["data"]["contact"][c] == (force > 0), f"{name}: contact point {g} force")
+    if force <= 0:
+        check(f == [0, 0, 0], f"{name}: contact point {g}: force {f} while open")
+        return
+    check(abs(math.hypot(f[0], f[1]) - force) <= 1e-12 * force and f[2] == 0,
+          f"{name}: contact point {g}: |{f}| against {force}")
+    z = round(v["xyz"][p][2], 6)
+    first = v["data"]["building"][c]
+    floors = {b: q for (b, level), q in centres.items() if level == z}
+    check(len(floors) == 2 and first in floors, f"{name}: contact point {g}: floors {floors}")
+    second = next(b for b in floors if b != first)
+    where = {b: [v["xyz"][q][k] + v["data"]["displacement"][q][k] for k in range(2)]
+             for b, q in floors.items()}
+    check(f[0] * (where[first][0] - where[second][0]) + f[1] * (where[first][1] - where[second][1]) > 0,
+          f"{name}: contact point {g}: force {f} pushes the first floor towards the second")
+    x = [v["xyz"][p][k] + v["data"]["displacement"][p][k] for k in range(2)]
+    corners = []
+    for s, points in enumerate(v["cells"]):
+        if v["data"]["kind"][s] == SLAB and round(v["xyz"][points[0]][2], 6) == z:
+            q = floors[v["data"]["building"][s]]
+            C, u, theta = v["xyz"][q], v["data"]["displacement"][q], v["data"]["rotation"][q][2]
+            for k in points:
+                X = [v["xyz"][k][0] - C[0], v["xyz"][k][1] - C[1]]
+                corners.append((C[0] + u[0] + math.cos(theta) * X[0] - math.sin(theta) * X[1],
+                                C[1] + u[1] + math.sin(theta) * X[0] + math.cos(theta) * X[1]))
+    nearest = min(math.dist(x, corner) for corner in corners)
+    check(nearest <= 1e-9, f"{name}: contact point {g} at {x}, {nearest} m from a slab corner")
 
 
 def check_shear(out, names, n_storeys):

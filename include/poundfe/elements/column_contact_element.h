@@ -47,6 +47,12 @@ namespace poundfe
     {
       return {{state.point.x, state.point.y}};
     }
+    /// On the column (z's first two entries are its plan motion w).
+    std::array<double, 2> force_on_first() const override
+    {
+      return {{law->force() * state.gradient[0], law->force() * state.gradient[1]}};
+    }
+    bool in_reach() const override { return state.defined; }
 
   private:
     ColumnContactGeometry geometry;

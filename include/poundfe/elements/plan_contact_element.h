@@ -48,6 +48,14 @@ namespace poundfe
     }
     double force() const override { return law->force(); }
     double history_variable() const override { return law->history_variable(); }
+    /// The contact force on the gap's first body in plan at the trial state,
+    /// F dg/du_1 (N, site axes): along the normal, opening the gap (zero
+    /// while open); the second body gets its opposite at the same point.
+    virtual std::array<double, 2> force_on_first() const = 0;
+    /// Whether the trial state has a contact point (the edges overlap, the
+    /// column point lies along the slab's edge); else contact_point() is
+    /// meaningless and the gap open.
+    virtual bool in_reach() const = 0;
     double stored_energy() const override { return law->stored_energy(); }
 
   protected:
@@ -95,6 +103,11 @@ namespace poundfe
     {
       return {{state.point.x, state.point.y}};
     }
+    std::array<double, 2> force_on_first() const override
+    {
+      return {{law->force() * state.gradient[0], law->force() * state.gradient[1]}};
+    }
+    bool in_reach() const override { return state.defined; }
 
   private:
     PlanContactGeometry geometry;

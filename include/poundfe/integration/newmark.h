@@ -96,6 +96,10 @@ namespace poundfe
     /// integration/accuracy_substeps.h); 0: off. Event refinement, Steps
     /// per contact and step cuts count their levels from c.
     unsigned int     steps_per_period = 0;
+    /// The input left Linear solver at its default (eigen-ldlt): a
+    /// nonsymmetric element tangent that must be refactorised (3D plan
+    /// contact with many hinges) then uses umfpack instead of being refused.
+    bool             lu_when_nonsymmetric = false;
   };
 
   /// Work and energy terms of the relative-coordinate energy balance, J:
