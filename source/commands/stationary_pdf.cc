@@ -76,6 +76,16 @@ namespace poundfe::commands
       write_file_atomically(directory + "/joint_pdf.csv", text);
     }
 
+    /// The intervals as [low1, high1, low2, high2, ...].
+    std::vector<double>
+    support_ends(const std::vector<SupportInterval> &support)
+    {
+      std::vector<double> ends;
+      for (const SupportInterval &s : support)
+        ends.insert(ends.end(), {s.low, s.high});
+      return ends;
+    }
+
     std::vector<double>
     peak_values(const std::vector<Peak> &peaks, const bool locations)
     {
@@ -102,6 +112,8 @@ namespace poundfe::commands
           .value("n_peaks", e[q].peaks.size())
           .value("peak_locations", peak_values(e[q].peaks, true))
           .value("peak_densities", peak_values(e[q].peaks, false))
+          .value("n_support_intervals", e[q].support.size())
+          .value("support_intervals", support_ends(e[q].support))
           .end_object();
     }
 
@@ -138,6 +150,7 @@ namespace poundfe::commands
       std::vector<double> counts;
       double              n = 0, bandwidth = 1;
       std::vector<Peak>   peaks;
+      std::vector<SupportInterval> support;
     };
 
     /// Rank 0: pdf.csv, joint_pdf.csv, summary.json and the plots.
@@ -192,6 +205,7 @@ namespace poundfe::commands
           x.n         = result.total[0];
           x.bandwidth = e[0].bandwidth;
           x.peaks     = e[0].peaks;
+          x.support   = e[0].support;
         }
       json.end_object();
       write_file_atomically(directory + "/summary.json", json.str());
@@ -277,7 +291,8 @@ namespace poundfe::commands
       write_file_atomically(directory + "/p_bifurcation_density.csv", text);
     }
 
-    /// p_bifurcation.csv (value, number of peaks, their locations) and the
+    /// p_bifurcation.csv (value, number of peaks, their locations, the number
+    /// of support intervals and their hull) and the
     /// summary's entries; returns the most peaks of a value.
     std::size_t
     write_peaks(const std::string &directory, const std::string &column,
@@ -289,7 +304,7 @@ namespace poundfe::commands
       std::string text = column + ",n_peaks";
       for (std::size_t k = 1; k <= most; ++k)
         text += ",peak" + std::to_string(k) + "_x_m";
-      text += '\n';
+      text += ",n_support_intervals,support_low_m,support_high_m\n";
       json.begin_array("values");
       for (std::size_t j = 0; j < x.size(); ++j)
         {
@@ -301,11 +316,22 @@ namespace poundfe::commands
               if (k < x[j].peaks.size())
                 append_number(text, x[j].peaks[k].location);
             }
+          text += ',' + std::to_string(x[j].support.size()) + ',';
+          if (!x[j].support.empty()) // the hull of the intervals
+            {
+              append_number(text, x[j].support.front().low);
+              text += ',';
+              append_number(text, x[j].support.back().high);
+            }
+          else
+            text += ',';
           text += '\n';
           json.begin_object()
             .value("value", values[j])
             .value("n_peaks", x[j].peaks.size())
             .value("peak_locations", peak_values(x[j].peaks, true))
+            .value("n_support_intervals", x[j].support.size())
+            .value("support_intervals", support_ends(x[j].support))
             .end_object();
         }
       json.end_array().begin_array("peak_count_changes");
@@ -315,6 +341,14 @@ namespace poundfe::commands
             .value("between", std::vector<double>{values[j - 1], values[j]})
             .value("n_peaks", std::vector<double>{double(x[j - 1].peaks.size()),
                                                   double(x[j].peaks.size())})
+            .end_object();
+      json.end_array().begin_array("support_changes"); // the hard bifurcations
+      for (std::size_t j = 1; j < x.size(); ++j)
+        if (x[j].support.size() != x[j - 1].support.size())
+          json.begin_object()
+            .value("between", std::vector<double>{values[j - 1], values[j]})
+            .value("n_support_intervals", std::vector<double>{double(x[j - 1].support.size()),
+                                                              double(x[j].support.size())})
             .end_object();
       json.end_array();
       write_file_atomically(directory + "/p_bifurcation.csv", text);

@@ -225,4 +225,31 @@ namespace poundfe
       }
     return peaks;
   }
+
+  std::vector<SupportInterval>
+  density_support(const BinGrid &grid, const std::vector<double> &f, const double threshold)
+  {
+    std::vector<SupportInterval> support;
+    if (f.empty())
+      return support;
+    const double level = threshold * *std::max_element(f.begin(), f.end());
+    if (!(level > 0))
+      return support;
+    // where f crosses `level` between points j and j + 1 (linear in between)
+    const auto crossing = [&](const unsigned int j) {
+      return grid.center(j) + grid.width() * (level - f[j]) / (f[j + 1] - f[j]);
+    };
+    const unsigned int n = f.size();
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        if (f[j] < level)
+          continue;
+        const unsigned int first = j;
+        while (j + 1 < n && f[j + 1] >= level)
+          ++j;
+        support.push_back({first > 0 ? crossing(first - 1) : grid.low,
+                           j + 1 < n ? crossing(j) : grid.high});
+      }
+    return support;
+  }
 } // namespace poundfe

@@ -255,6 +255,7 @@ namespace poundfe
     e.histogram = histogram_density(grid, counts, n);
     e.kde       = kernel_density(grid, counts, n, e.bandwidth);
     e.peaks     = find_peaks(grid, e.kde, p.peak_threshold);
+    e.support   = density_support(grid, e.kde, p.support_threshold);
     return e;
   }
 

@@ -70,6 +70,13 @@ namespace poundfe
                       "prominence are at least this fraction of the global maximum. "
                       "Unit: dimensionless.",
                       Patterns::Double(0, 1));
+    prm.add_parameter("Support threshold", support_threshold,
+                      "The support of a kernel density is where it is at least this "
+                      "fraction of its maximum (summary.json's support intervals; a "
+                      "P-bifurcation reports the values between which their number "
+                      "changes: a change of support, the hard bifurcation). "
+                      "Unit: dimensionless.",
+                      Patterns::Double(0, 1));
     sweep.declare_entries(prm);
     prm.leave_subsection();
   }
@@ -88,6 +95,8 @@ namespace poundfe
                                            std::to_string(bandwidths.size()));
     if (!(peak_threshold > 0 && peak_threshold < 1))
       input.fail(s + "Peak threshold", "must lie in (0, 1)");
+    if (!(support_threshold > 0 && support_threshold < 1))
+      input.fail(s + "Support threshold", "must lie in (0, 1)");
     sweep.check(input);
     input.distinct(s + "Values", sweep.values()); // a value twice: the same density twice
     if (sweep.values().size() == 1)

@@ -179,6 +179,28 @@ def p_bifurcation(directory, *alphas):
         fail("P-bifurcation: changes %s, expected one bracketing alpha = 1" % changes)
     print("ok   P-bifurcation: peaks %s at alpha %s (exact: 2 below 1, 1 above), change between %s" %
           (got, list(alphas), changes[0]["between"]))
+    # the support (where the kernel density is >= Support threshold of its
+    # maximum; its closed form is unit/reliability's): ordered disjoint
+    # intervals holding every peak, their hull in p_bifurcation.csv, and
+    # support_changes exactly where their number changes
+    with open(directory + "/p_bifurcation.csv") as f:
+        table = list(csv.DictReader(f))
+    counts = []
+    for v, row in zip(summary["values"], table):
+        ends = v["support_intervals"]
+        if len(ends) != 2 * v["n_support_intervals"] or v["n_support_intervals"] < 1 or ends != sorted(ends):
+            fail("P-bifurcation: value %g: support %s" % (v["value"], ends))
+        if any(not any(ends[2 * k] < p < ends[2 * k + 1] for k in range(len(ends) // 2)) for p in v["peak_locations"]):
+            fail("P-bifurcation: value %g: a peak %s outside the support %s" % (v["value"], v["peak_locations"], ends))
+        if (int(row["n_support_intervals"]) != v["n_support_intervals"] or float(row["support_low_m"]) != ends[0]
+                or float(row["support_high_m"]) != ends[-1]):
+            fail("P-bifurcation: value %g: p_bifurcation.csv's support %s against %s" % (v["value"], row, ends))
+        counts.append(v["n_support_intervals"])
+    expected = [[summary["values"][j - 1]["value"], summary["values"][j]["value"]]
+                for j in range(1, len(counts)) if counts[j] != counts[j - 1]]
+    if [c["between"] for c in summary["support_changes"]] != expected:
+        fail("P-bifurcation: support_changes %s, expected %s" % (summary["support_changes"], expected))
+    print("ok   P-bifurcation: support intervals %s per value, changes %s" % (counts, expected))
 
 
 if __name__ == "__main__":

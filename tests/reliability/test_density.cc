@@ -182,3 +182,47 @@ BOOST_AUTO_TEST_CASE(sheather_jones_finds_the_amise_bandwidth_of_a_bimodal_densi
   BOOST_TEST(std::isnan(sheather_jones_bandwidth(grid, std::vector<double>(400, 0.0), 1.0)));
   BOOST_TEST(std::isnan(sheather_jones_bandwidth(grid, counts, 0.0)));
 }
+
+// The support of the kernel density of a uniform density on two blocks
+// against its closed form: f(b + d) = f_0 Φ(-d/h) outside a block's end b
+// (f_0 = 1/2 inside each block of [0, 1] ∪ [2, 3]; the other block, 20 h
+// away, adds < 1e-80), so with threshold 1e-3 the support ends at
+// b ± h Φ⁻¹(0.999), Φ⁻¹(0.999) = 3.090232306167813 (published tables).
+// The counts are exact (bin edges on the blocks' ends). Tolerance 0.1 bin
+// widths: the ends are interpolated linearly between bin centres on the
+// Gaussian tail, whose curvature over one bin (w/h = 0.1) moves them by a
+// few hundredths of a bin (measured 0.024). Blocks 0.2 apart
+// (2 h from the gap's middle, where f = Φ(-2) = 0.023 > 5e-4) give one
+// interval; with a threshold of 0.6 (above f_0/2, f at a block's end) each
+// interval lies inside its block, ending h Φ⁻¹(0.6) = 0.2533471031357997 h
+// inside it.
+BOOST_AUTO_TEST_CASE(support_of_two_uniform_blocks)
+{
+  const BinGrid grid{-1, 4, 1000};
+  const double  h = 0.05, n = 1e6, z = 3.090232306167813;
+  const auto    blocks = [&](const double second) {
+    std::vector<double> counts(grid.n_bins, 0.0);
+    for (unsigned int i = 0; i < grid.n_bins; ++i)
+      {
+        const double x = grid.center(i);
+        if ((x > 0 && x < 1) || (x > second && x < second + 1))
+          counts[i] = n * 0.5 * grid.width();
+      }
+    return kernel_density(grid, counts, n, h);
+  };
+  const std::vector<SupportInterval> apart = density_support(grid, blocks(2), 1e-3);
+  BOOST_TEST_REQUIRE(apart.size() == 2u);
+  const std::array<double, 4> want{{-h * z, 1 + h * z, 2 - h * z, 3 + h * z}};
+  const std::array<double, 4> got{{apart[0].low, apart[0].high, apart[1].low, apart[1].high}};
+  for (unsigned int k = 0; k < 4; ++k)
+    BOOST_TEST(std::abs(got[k] - want[k]) < 0.1 * grid.width(), "end " << k << ": " << got[k]
+                                                                     << " against " << want[k]);
+  BOOST_TEST(density_support(grid, blocks(1.2), 1e-3).size() == 1u);
+  const std::vector<SupportInterval> core = density_support(grid, blocks(2), 0.6);
+  BOOST_TEST_REQUIRE(core.size() == 2u);
+  const double inside = 0.2533471031357997 * h;
+  BOOST_TEST(std::abs(core[0].low - inside) < 0.1 * grid.width());
+  BOOST_TEST(std::abs(core[1].high - (3 - inside)) < 0.1 * grid.width());
+  // nothing above a threshold of a density that is zero everywhere
+  BOOST_TEST(density_support(grid, std::vector<double>(grid.n_bins, 0.0), 1e-3).empty());
+}

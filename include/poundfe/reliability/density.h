@@ -28,6 +28,15 @@
 //     interior peak is located between grid points by the parabola through
 //     it and its two neighbours (vertex offset d = (f- - f+) / (2 (f- - 2 f0
 //     + f+)) grid widths, height f0 - (f- - f+) d / 4).
+//   Support: the x where the kernel density is at least `threshold` times its
+//     maximum, as intervals (maximal runs of such grid points, each end
+//     placed between its point and the next by linear interpolation of f).
+//     A change in their number from one parameter value to the next is a
+//     change of support, the "hard" bifurcation of a stationary measure
+//     (L. Arnold, Random Dynamical Systems, Springer 1998, §9.2; thesis §3.2,
+//     Fig. 3.3(a)). For a uniform density on [a, b] and a Gaussian kernel of
+//     bandwidth h, f(b + d) = f(b - ∞) Φ(-d/h): the support ends at
+//     b + h Φ⁻¹(1 - threshold) (3.09 h for 1e-3), its closed form.
 #ifndef poundfe_reliability_density_h
 #define poundfe_reliability_density_h
 
@@ -80,6 +89,15 @@ namespace poundfe
     double       location; // vertex of the parabola through the bin and its neighbours
     double       height;   // density there
   };
+
+  struct SupportInterval
+  {
+    double low, high;
+  };
+
+  /// The support of `density` on `grid` (see the header), in ascending x.
+  std::vector<SupportInterval> density_support(const BinGrid &grid, const std::vector<double> &density,
+                                               double threshold);
 
   /// Peaks of `density` on `grid` (see the header), in ascending location.
   std::vector<Peak> find_peaks(const BinGrid &grid, const std::vector<double> &density,

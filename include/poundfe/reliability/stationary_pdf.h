@@ -75,6 +75,7 @@ namespace poundfe
     bool                widened   = false; // raised to the bin width
     std::vector<double> histogram, kde;
     std::vector<Peak>   peaks;
+    std::vector<SupportInterval> support;
   };
 
   /// The estimates of quantity q (0: x, 1: v, 2: a) from the rows summed

@@ -39,6 +39,9 @@ namespace poundfe
     std::vector<double> bandwidths{0.0};  // x, v, a (one for all); 0: by `bandwidth_rule`
     BandwidthRule       bandwidth_rule = BandwidthRule::silverman;
     double              peak_threshold = 0.05;
+    /// The support of a kernel density: where it is at least this fraction
+    /// of its maximum (reliability/density.h).
+    double              support_threshold = 1e-3;
     /// P-bifurcation: `Parameter` and `Values` of this section; empty: one run.
     SweepParameters sweep{"Stationary PDF"};
 
