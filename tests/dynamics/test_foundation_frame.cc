@@ -31,6 +31,7 @@
 #include <cmath>
 #include <string>
 
+#include "floor_histories.h"
 #include "time_history_helpers.h"
 
 using namespace poundfe;
@@ -120,33 +121,6 @@ namespace
            "  set a1 = 0.002\n end\n" + foundation + "end\n" + shaking(2);
   }
 
-  /// Every floor node's (ux, uy, rz) histories: [node*3 + c][step].
-  std::vector<std::vector<double>>
-  frame_floor_histories(const Analysis &analysis, const poundfe_test::StepRecorder &run)
-  {
-    std::vector<std::vector<double>> h;
-    for (const Floor &floor : analysis.model.buildings[0].floors)
-      for (const unsigned int node : floor.nodes)
-        for (const Component c : {Component::ux, Component::uy, Component::rz})
-          {
-            const int e = analysis.model.equation(Model::dof(node, c));
-            BOOST_REQUIRE(e >= 0);
-            h.emplace_back();
-            for (const Vector &u : run.u)
-              h.back().push_back(u[e]);
-          }
-    return h;
-  }
-
-  double
-  dof_peak(const std::vector<double> &x)
-  {
-    double p = 0;
-    for (const double v : x)
-      p = std::max(p, std::abs(v));
-    return p;
-  }
-
   /// The largest difference of two runs' floor DOFs, relative to each
   /// DOF's peak in the first.
   double
@@ -158,15 +132,15 @@ namespace
     const Analysis        fixed = prepare_analysis(fixed_p), stiff = prepare_analysis(stiff_p);
     BOOST_REQUIRE(stiff.model.foundations.size() == 1u);
     BOOST_TEST(stiff.model.n_equations() == fixed.model.n_equations() + added_equations);
-    const auto a = frame_floor_histories(fixed, poundfe_test::recorded_run(fixed, fixed_p));
-    const auto b = frame_floor_histories(stiff, poundfe_test::recorded_run(stiff, stiff_p));
+    const auto a = poundfe_test::floor_histories(fixed, poundfe_test::recorded_run(fixed, fixed_p));
+    const auto b = poundfe_test::floor_histories(stiff, poundfe_test::recorded_run(stiff, stiff_p));
     BOOST_REQUIRE(a.size() == b.size());
     double worst = 0;
     for (unsigned int j = 0; j < a.size(); ++j)
       {
         BOOST_REQUIRE(a[j].size() == b[j].size());
         for (unsigned int s = 0; s < a[j].size(); ++s)
-          worst = std::max(worst, std::abs(a[j][s] - b[j][s]) / dof_peak(a[j]));
+          worst = std::max(worst, std::abs(a[j][s] - b[j][s]) / poundfe_test::peak(a[j]));
       }
     return worst;
   }
