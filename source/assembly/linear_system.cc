@@ -15,6 +15,36 @@ namespace poundfe
   {
     using Triplets = std::vector<Eigen::Triplet<double>>;
 
+    /// Scatter over DOFs of which some are combinations of others (exact
+    /// master-slave constraints): Tᵀ A T, T the DOFs' equation terms.
+    template <typename ElementMatrix>
+    void
+    scatter_combined(const Model &model, const std::vector<unsigned int> &dofs,
+                     const ElementMatrix &matrix, Triplets &triplets)
+    {
+      std::vector<std::vector<std::pair<int, double>>> terms(dofs.size());
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        model.equation_terms(dofs[i], terms[i]);
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        for (const auto &[row, a] : terms[i])
+          for (unsigned int j = 0; j < dofs.size(); ++j)
+            if (matrix(i, j) != 0)
+              for (const auto &[column, b] : terms[j])
+                triplets.emplace_back(row, column, a * matrix(i, j) * b);
+    }
+
+    /// q(dof) from the equations' values u (0 on a fixed DOF).
+    double
+    value_of(const Model &model, const Vector &u, const unsigned int dof)
+    {
+      std::vector<std::pair<int, double>> terms;
+      model.equation_terms(dof, terms);
+      double value = 0;
+      for (const auto &[equation, coefficient] : terms)
+        value += coefficient * u[equation];
+      return value;
+    }
+
     /// Scatter an element matrix over node DOFs; fixed DOFs are dropped
     /// (homogeneous supports, so they contribute nothing to the free rows).
     template <typename ElementMatrix>
@@ -22,6 +52,11 @@ namespace poundfe
     scatter(const Model &model, const std::vector<unsigned int> &dofs,
             const ElementMatrix &matrix, Triplets &triplets)
     {
+      if (model.has_combinations())
+        {
+          scatter_combined(model, dofs, matrix, triplets);
+          return;
+        }
       for (unsigned int i = 0; i < dofs.size(); ++i)
         {
           const int row = model.equation(dofs[i]);
@@ -262,10 +297,11 @@ namespace poundfe
   gravity_loads(const Model &model)
   {
     Vector loads = Vector::Zero(model.n_equations());
+    std::vector<std::pair<int, double>> terms;
     const auto add = [&](const unsigned int dof, const double value) {
-      const int row = model.equation(dof);
-      if (row >= 0)
-        loads[row] += value;
+      model.equation_terms(dof, terms);
+      for (const auto &[row, coefficient] : terms)
+        loads[row] += coefficient * value;
     };
     // Element by element, so that a member's weight shared with a support
     // goes there (M r_y restricted to the free DOFs would lose the coupling
@@ -318,10 +354,7 @@ namespace poundfe
         const auto dofs = member_dofs(member);
         Vector6    end_displacements;
         for (unsigned int i = 0; i < 6; ++i)
-          {
-            const int equation   = model.equation(dofs[i]);
-            end_displacements[i] = equation >= 0 ? u[equation] : 0.0;
-          }
+          end_displacements[i] = value_of(model, u, dofs[i]);
         forces.push_back(element.axial_force(end_displacements));
       }
     for (const Member3D &member : model.members_3d)

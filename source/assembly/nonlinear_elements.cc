@@ -170,8 +170,8 @@ namespace poundfe
     for (const BuildingLink &link : model.building_links)
       elements.emplace_back<UniaxialElement>(
         ElementKind::link, link.buildings[0], link.label,
-        std::array<int, 2>{{model.equation(Model::dof(link.nodes[0], Component::ux)),
-                            model.equation(Model::dof(link.nodes[1], Component::ux))}},
+        std::array<int, 2>{{model.equation(Model::dof(link.nodes[0], link.component)),
+                            model.equation(Model::dof(link.nodes[1], link.component))}},
         make_link_law(link.law));
     add_foundation_elements(model, elements);
     return elements;

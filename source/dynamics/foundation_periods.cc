@@ -100,10 +100,12 @@ namespace poundfe
               const int eq = fixed.equation(Model::dof(node, c));
               if (fixed.nodes[node].generalized || eq < int(range[0]) || eq >= int(range[1]))
                 continue;
+              // assigned, not summed: a frame's hinge nodes share their joint's
+              // equations (the same height and direction)
               const double along = c == Component::ux ? e[0] : e[1];
-              heights[eq - range[0]] +=
+              heights[eq - range[0]] =
                 along * (fixed.nodes[node].position.y - model.nodes[f.node].position.y);
-              r[eq - range[0]] += along;
+              r[eq - range[0]] = along;
             }
         const double gamma    = mass_phi.dot(r); // φ mass-normalised: M* = Γ²
         p.effective_height    = mass_phi.dot(heights) / gamma;

@@ -45,8 +45,15 @@ namespace poundfe
                   (1.5 + std::pow(d / L, 1.9) * std::pow(d / D, -0.6)) :
             1 + 1.26 * (d / B) * (1 + (d / B) * std::pow(d / D, -0.2) * std::sqrt(B / L));
       }
+    double vertical_factor = 1;
+    if (D > 0)
+      vertical_factor = (1 + D / (21 * B) * (1 + 1.3 * chi)) *
+                        (1 + 0.2 * std::pow(4 * D * (B + L) / area, 2.0 / 3));
     const double analog_velocity = 3.4 * soil.shear_wave_velocity / (pi * (1 - nu));
     FoundationImpedance z;
+    z.vertical_stiffness =
+      2 * G * L / (1 - nu) * (0.73 + 1.54 * std::pow(chi, 0.75)) * vertical_factor;
+    z.vertical_damping = soil.density * analog_velocity * area;
     z.horizontal_stiffness = (along_long ? k_x : k_y) * sway_factor;
     z.rocking_stiffness    = (along_long ? k_ry : k_rx) * rocking_factor;
     z.horizontal_damping   = soil.density * soil.shear_wave_velocity * area;
@@ -77,6 +84,9 @@ namespace poundfe
       z.rocking_damping[1]      = in_x.rocking_damping;
       z.added_rotary_inertia[0] = in_y.added_rotary_inertia;
       z.added_rotary_inertia[1] = in_x.added_rotary_inertia;
+      z.vertical_stiffness      = in_x.vertical_stiffness;
+      z.vertical_damping        = in_x.vertical_damping;
+      z.added_mass              = in_x.added_mass;
       return z;
     }
 
@@ -133,8 +143,13 @@ namespace poundfe
     z.horizontal_damping   = soil.density * vs * pi * r_h * r_h;
     z.rocking_damping =
       soil.density * (nearly_incompressible ? 2 * vs : vp) * pi * std::pow(r_r, 4) / 4;
+    z.vertical_stiffness = 4 * G * r_h / (1 - nu);
+    z.vertical_damping   = soil.density * (nearly_incompressible ? 2 * vs : vp) * area;
     if (nearly_incompressible)
-      z.added_rotary_inertia = 0.3 * pi * (nu - 1.0 / 3) * soil.density * std::pow(r_r, 5);
+      {
+        z.added_rotary_inertia = 0.3 * pi * (nu - 1.0 / 3) * soil.density * std::pow(r_r, 5);
+        z.added_mass           = 2.4 * pi * (nu - 1.0 / 3) * soil.density * std::pow(r_h, 3);
+      }
     return z;
   }
 } // namespace poundfe

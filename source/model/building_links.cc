@@ -128,12 +128,23 @@ namespace poundfe
                          "foundations (Building <i>/Foundation)");
     }
 
-    /// 'building building k c': a Kelvin-Voigt link (alpha = 1; k, c >= 0)
-    /// between the two foundations' sway DOFs (doc/theory.md §1.16).
-    BuildingLink
-    read_soil_coupling(const InputFile &input, const Model &model, const std::string &entry)
+    /// The DOF of foundation f a soil coupling acts on: its sway along x, or
+    /// (`rocking`) its rotation in the x-z plane (2D: the base node's rz,
+    /// 3D: θ_y, slot 2 of the rocking node).
+    unsigned int
+    coupled_node(const Foundation &f, const bool rocking)
     {
-      const std::string  path = "Links/Soil coupling";
+      return rocking && f.rocking_node >= 0 ? unsigned(f.rocking_node) : f.node;
+    }
+
+    /// 'building building k c': a Kelvin-Voigt link (alpha = 1; k, c >= 0)
+    /// between the two foundations' sway DOFs or (`rocking`) their rocking
+    /// DOFs (doc/theory.md §1.16).
+    BuildingLink
+    read_soil_coupling(const InputFile &input, const Model &model, const std::string &entry,
+                       const bool rocking)
+    {
+      const std::string  path = rocking ? "Links/Rocking soil coupling" : "Links/Soil coupling";
       std::istringstream fields(entry);
       std::string        first, second, rest;
       double             k = 0, c = 0;
@@ -154,10 +165,12 @@ namespace poundfe
       link.law.stiffness = k;
       link.law.damping   = c;
       link.law.exponent  = 1;
-      link.nodes     = {{foundation_of(input, model, a, path, entry).node,
-                         foundation_of(input, model, b, path, entry).node}};
+      link.nodes     = {{coupled_node(foundation_of(input, model, a, path, entry), rocking),
+                         coupled_node(foundation_of(input, model, b, path, entry), rocking)}};
+      link.component = rocking ? Component::rz : Component::ux;
       link.buildings = {{a, b}};
-      link.label     = "soil_" + model.buildings[a].name + "-" + model.buildings[b].name;
+      link.label     = std::string(rocking ? "soil_rocking_" : "soil_") +
+                   model.buildings[a].name + "-" + model.buildings[b].name;
       return link;
     }
   } // namespace
@@ -172,9 +185,10 @@ namespace poundfe
         if (entry.find_first_not_of(" \t") != std::string::npos)
           model.building_links.push_back(
             read_link(input, model, link_forms()[i], entry, links.regularization_velocity));
-    for (const std::string &entry : links.soil_coupling)
-      if (entry.find_first_not_of(" \t") != std::string::npos)
-        model.building_links.push_back(read_soil_coupling(input, model, entry));
+    for (const bool rocking : {false, true})
+      for (const std::string &entry : rocking ? links.rocking_soil_coupling : links.soil_coupling)
+        if (entry.find_first_not_of(" \t") != std::string::npos)
+          model.building_links.push_back(read_soil_coupling(input, model, entry, rocking));
   }
 
   void

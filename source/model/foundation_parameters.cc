@@ -23,62 +23,67 @@ namespace poundfe
   {
     prm.enter_subsection("Foundation");
     add_choice(prm, "Type", type,
-               "[shear] none: fixed base. gazetas: sway and rocking springs and dashpots "
+               "[frame, shear] none: fixed base. gazetas: sway and rocking springs and dashpots "
                "of a rectangular foundation by Gazetas (1991), surface or embedded; cone: "
                "Wolf's cones (1994), surface; given: the springs and dashpots typed below "
                "(shear buildings, 2D and 3D: the sway-rocking model, floors moving with "
-               "the base rotation). Unit: -.",
+               "the base rotation; frames, 2D and 3D: a rigid foundation under the column "
+               "bases, also on a vertical spring). Unit: -.",
                foundation_type_names());
     prm.add_parameter("Shear-wave velocity", soil.shear_wave_velocity,
-                      "[shear] V_s of the soil (gazetas, cone). Unit: m/s.");
+                      "[frame, shear] V_s of the soil (gazetas, cone). Unit: m/s.");
     prm.add_parameter("Soil density", soil.density,
-                      "[shear] Mass density of the soil (gazetas, cone). Unit: kg/m^3.");
+                      "[frame, shear] Mass density of the soil (gazetas, cone). Unit: kg/m^3.");
     prm.add_parameter("Poisson ratio", soil.poisson_ratio,
-                      "[shear] Poisson ratio of the soil, in (0, 0.5) (gazetas, cone). "
+                      "[frame, shear] Poisson ratio of the soil, in (0, 0.5) (gazetas, cone). "
                       "Unit: -.");
     prm.add_parameter("Length", geometry.length,
-                      "[shear] Side of the foundation in the plane of the model (3D: along "
+                      "[frame, shear] Side of the foundation in the plane of the model (3D: along "
                       "the building's local x) (gazetas, cone). Unit: m.");
     prm.add_parameter("Width", geometry.width,
-                      "[shear] Side of the foundation normal to the plane (3D: along local "
+                      "[frame, shear] Side of the foundation normal to the plane (3D: along local "
                       "y) (gazetas, cone). Unit: m.");
     prm.add_parameter("Embedment", geometry.embedment,
-                      "[shear] Depth of the foundation's base below the surface, sidewalls "
+                      "[frame, shear] Depth of the foundation's base below the surface, sidewalls "
                       "in contact over it (gazetas; at most the smaller side). Unit: m.");
     prm.add_parameter("Horizontal stiffness", given.horizontal_stiffness,
-                      "[shear] Sway spring (given). Unit: N/m.");
+                      "[frame, shear] Sway spring (given). Unit: N/m.");
     prm.add_parameter("Rocking stiffness", given.rocking_stiffness,
-                      "[shear] Rocking spring (given). Unit: N m/rad.");
+                      "[frame, shear] Rocking spring (given). Unit: N m/rad.");
     prm.add_parameter("Horizontal damping", given.horizontal_damping,
-                      "[shear] Sway dashpot (given). Unit: N s/m.");
+                      "[frame, shear] Sway dashpot (given). Unit: N s/m.");
     prm.add_parameter("Rocking damping", given.rocking_damping,
-                      "[shear] Rocking dashpot (given). Unit: N m s/rad.");
+                      "[frame, shear] Rocking dashpot (given). Unit: N m s/rad.");
+    prm.add_parameter("Vertical stiffness", given.vertical_stiffness,
+                      "[frame] Vertical spring (given; frames only). Unit: N/m.");
+    prm.add_parameter("Vertical damping", given.vertical_damping,
+                      "[frame] Vertical dashpot (given; frames only). Unit: N s/m.");
     prm.add_parameter("Horizontal stiffness y", given_3d.sway_stiffness[1],
-                      "[3D shear] Sway spring along the foundation's local y (given; "
+                      "[3D] Sway spring along the foundation's local y (given; "
                       "Horizontal stiffness: along x). Unit: N/m.");
     prm.add_parameter("Horizontal damping y", given_3d.sway_damping[1],
-                      "[3D shear] Sway dashpot along local y (given). Unit: N s/m.");
+                      "[3D] Sway dashpot along local y (given). Unit: N s/m.");
     prm.add_parameter("Rocking stiffness x", given_3d.rocking_stiffness[0],
-                      "[3D shear] Rocking spring about local x (given; Rocking stiffness: "
+                      "[3D] Rocking spring about local x (given; Rocking stiffness: "
                       "about y). Unit: N m/rad.");
     prm.add_parameter("Rocking damping x", given_3d.rocking_damping[0],
-                      "[3D shear] Rocking dashpot about local x (given). Unit: N m s/rad.");
+                      "[3D] Rocking dashpot about local x (given). Unit: N m s/rad.");
     prm.add_parameter("Torsional stiffness", given_3d.torsional_stiffness,
-                      "[3D shear] Torsion spring about the vertical (given). Unit: N m/rad.");
+                      "[3D] Torsion spring about the vertical (given). Unit: N m/rad.");
     prm.add_parameter("Torsional damping", given_3d.torsional_damping,
-                      "[3D shear] Torsion dashpot about the vertical (given). Unit: "
+                      "[3D] Torsion dashpot about the vertical (given). Unit: "
                       "N m s/rad.");
     prm.add_parameter("Rotary inertia x", rotary_inertia_x,
-                      "[3D shear] Mass moment of inertia of the foundation about its local x "
+                      "[3D] Mass moment of inertia of the foundation about its local x "
                       "axis through its base (Rotary inertia: about y; cone: Wolf's trapped "
                       "soil is added). Unit: kg m^2.");
     prm.add_parameter("Polar inertia", polar_inertia,
-                      "[3D shear] Mass moment of inertia of the foundation about the vertical "
+                      "[3D] Mass moment of inertia of the foundation about the vertical "
                       "through its centre. Unit: kg m^2.");
     prm.add_parameter("Mass", mass,
-                      "[shear] Mass of the foundation (moves with the sway). Unit: kg.");
+                      "[frame, shear] Mass of the foundation (moves with the sway). Unit: kg.");
     prm.add_parameter("Rotary inertia", rotary_inertia,
-                      "[shear] Mass moment of inertia of the foundation about the horizontal "
+                      "[frame, shear] Mass moment of inertia of the foundation about the horizontal "
                       "axis through its base (3D: local y) (cone: Wolf's trapped soil is "
                       "added). Unit: kg m^2.");
     prm.leave_subsection();
@@ -86,14 +91,14 @@ namespace poundfe
 
   void
   FoundationParameters::finalize(const InputFile &input, const std::string &section,
-                                 const bool shear)
+                                 const BuildingType building_type)
   {
     if (!enabled())
       return;
     const std::string s = section + "Foundation/";
-    if (!shear)
-      input.fail(s + "Type", "compliant foundations are for shear buildings (frames and "
-                             "meshes: not yet)");
+    if (building_type == BuildingType::mesh)
+      input.fail(s + "Type", "compliant foundations are for shear buildings and frames "
+                             "(meshes: not yet)");
     input.positive(s + "Mass", mass);
     input.positive(s + "Rotary inertia", rotary_inertia);
     if (type == FoundationType::given)
@@ -102,6 +107,11 @@ namespace poundfe
         input.positive(s + "Rocking stiffness", given.rocking_stiffness);
         input.non_negative(s + "Horizontal damping", given.horizontal_damping);
         input.non_negative(s + "Rocking damping", given.rocking_damping);
+        if (building_type == BuildingType::frame)
+          {
+            input.positive(s + "Vertical stiffness", given.vertical_stiffness);
+            input.non_negative(s + "Vertical damping", given.vertical_damping);
+          }
         impedance = given;
         return;
       }
@@ -148,6 +158,8 @@ namespace poundfe
         impedance_3d.sway_damping[0]      = given.horizontal_damping;
         impedance_3d.rocking_stiffness[1] = given.rocking_stiffness;
         impedance_3d.rocking_damping[1]   = given.rocking_damping;
+        impedance_3d.vertical_stiffness   = given.vertical_stiffness;
+        impedance_3d.vertical_damping     = given.vertical_damping;
         return;
       }
     // finalize checked the soil and the geometry

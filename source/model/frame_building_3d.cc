@@ -2,6 +2,7 @@
 // (include/poundfe/model/frame_building_3d.h; doc/theory.md §1.15).
 #include <poundfe/model/frame_building_3d.h>
 #include <poundfe/model/plan_builder.h>
+#include <poundfe/model/plan_foundation.h>
 
 #include <Eigen/Geometry>
 
@@ -15,12 +16,16 @@ namespace poundfe
   {
     /// The model nodes that carry a joint's motion: `h` its (ux, uy, rz),
     /// `v` its (uz, rx, ry) (a generalized node), or the floor's `master`
-    /// at `centre` (a rigid diaphragm); -1: none (the ground).
+    /// at `centre` (a rigid diaphragm); -1: none (the ground). A column
+    /// base on a compliant foundation (`on_basemat`): `master` is the
+    /// basemat's node at its centre and `v` its rocking node, and the joint
+    /// moves rigidly with it (model/plan_foundation.h).
     struct Joint
     {
       Eigen::Vector3d position;
       int             h = -1, v = -1, master = -1;
       Point2          centre;
+      bool            on_basemat = false;
     };
 
     /// One row of T: model DOF -> coefficient.
@@ -49,6 +54,11 @@ namespace poundfe
       if (j.v >= 0)
         for (unsigned int c = 0; c < 3; ++c)
           rows[2 + c][n_dofs_per_node * j.v + c] = 1;
+      if (j.on_basemat) // u_z = u_0z + θ_x (y - O_y) - θ_y (x - O_x)
+        {
+          rows[2][n_dofs_per_node * j.v + 1] = j.position.y() - j.centre.y;
+          rows[2][n_dofs_per_node * j.v + 2] = -(j.position.x() - j.centre.x);
+        }
       return rows;
     }
 
@@ -85,6 +95,11 @@ namespace poundfe
       {
         building.left  = plan.centre.x - plan_half_width(p);
         building.right = plan.centre.x + plan_half_width(p);
+        if (p.foundation.enabled())
+          {
+            basemat = add_node({plan.centre.x, 0.0}, false);
+            rocking = add_plan_foundation(model, p.foundation, b, basemat, plan.angle, true);
+          }
         make_joints();
         for (unsigned int i = 1; i <= p.n_storeys; ++i)
           add_members(i);
@@ -97,6 +112,7 @@ namespace poundfe
       Building                 &building;
       const SitePlan            plan;
       const bool                rigid;
+      int                       basemat = -1, rocking = -1; // a compliant foundation's nodes
       // joints[level][line x][line y]
       std::vector<std::vector<std::vector<Joint>>> joints;
 
@@ -125,6 +141,14 @@ namespace poundfe
       void
       make_base(Joint &j)
       {
+        if (basemat >= 0)
+          {
+            j.master     = basemat;
+            j.centre     = plan.centre;
+            j.v          = rocking;
+            j.on_basemat = true;
+            return;
+          }
         if (p.base_fixity == BaseFixity::fixed)
           return; // clamped: every DOF is the ground
         const Point2 at{j.position.x(), j.position.z()};
@@ -217,7 +241,7 @@ namespace poundfe
               return false;
             group_index = it - p.hinge_groups.begin();
           }
-        const bool on_ground = joint.h < 0 && joint.master < 0;
+        const bool on_ground = (joint.h < 0 && joint.master < 0) || joint.on_basemat;
         if (joint.h >= 0 && model.nodes[joint.h].fixed[0])
           return false; // a pinned support already releases the rotations
         if (kind == MemberKind::beam)

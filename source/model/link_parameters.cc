@@ -54,6 +54,14 @@ namespace poundfe
                       "(Building <i>/Foundation), on d = u0_first - u0_second; reported among "
                       "the links (doc/theory.md §1.16). Unit: per field.",
                       list);
+    prm.add_parameter("Rocking soil coupling", rocking_soil_coupling,
+                      "Structure-soil-structure interaction in rocking, typed in: 'building "
+                      "building k c' separated by ';', a rotational spring k (N m/rad) and "
+                      "dashpot c (N m s/rad), both >= 0, between the rockings of the two "
+                      "buildings' compliant foundations in the x-z plane (2D: their rotation; "
+                      "3D: about y), on d = theta_first - theta_second; reported among the "
+                      "links (doc/theory.md §1.16). Unit: per field.",
+                      list);
     prm.add_parameter("Regularization velocity", regularization_velocity,
                       "v_eps of the dampers with alpha < 1: F = c v (v^2 + v_eps^2)^((alpha-1)/2) "
                       "keeps the tangent finite at v = 0 (doc/theory.md §1.14). Unit: m/s.");

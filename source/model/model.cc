@@ -8,6 +8,10 @@ namespace poundfe
   Model::number_equations()
   {
     equation_of_dof.assign(n_dofs(), -1);
+    constraint_of_dof.assign(n_dofs(), -1);
+    combined = false;
+    for (unsigned int i = 0; i < constraints.size(); ++i)
+      constraint_of_dof[constraints[i].dof] = i;
     first_equation_of_building.assign(buildings.size() + 1, 0);
     n_free = 0;
     for (unsigned int b = 0; b < buildings.size(); ++b)
@@ -18,8 +22,20 @@ namespace poundfe
         for (unsigned int n = 0; n < nodes.size(); ++n)
           if (nodes[n].building == b)
             for (unsigned int c = 0; c < n_dofs_per_node; ++c)
-              if (!nodes[n].fixed[c] && (nodes[n].tied_to < 0 || c == 2))
+              if (!nodes[n].fixed[c] && (nodes[n].tied_to < 0 || c == 2) &&
+                  constraint_of_dof[n_dofs_per_node * n + c] < 0)
                 equation_of_dof[n_dofs_per_node * n + c] = n_free++;
+        // Slaves of one master with coefficient 1 share its equation (the
+        // masters are free DOFs of the same building, numbered above).
+        for (const DofConstraint &constraint : constraints)
+          if (nodes[constraint.dof / n_dofs_per_node].building == b)
+            {
+              const bool shared =
+                constraint.masters.size() == 1 && constraint.masters[0].second == 1.0;
+              equation_of_dof[constraint.dof] =
+                shared ? equation_of_dof[constraint.masters[0].first] : -1;
+              combined = combined || !shared;
+            }
         // Hinge nodes share their joint's translations.
         for (unsigned int n = 0; n < nodes.size(); ++n)
           if (nodes[n].building == b && nodes[n].tied_to >= 0)
@@ -28,6 +44,24 @@ namespace poundfe
                 equation_of_dof[n_dofs_per_node * nodes[n].tied_to + c];
       }
     first_equation_of_building[buildings.size()] = n_free;
+  }
+
+  void
+  Model::equation_terms(const unsigned int dof, std::vector<std::pair<int, double>> &terms) const
+  {
+    terms.clear();
+    const int own = equation_of_dof[dof];
+    if (own >= 0)
+      {
+        terms.emplace_back(own, 1.0);
+        return;
+      }
+    const int c = constraint_of_dof[dof];
+    if (c < 0)
+      return;
+    for (const auto &[master, coefficient] : constraints[c].masters)
+      if (equation_of_dof[master] >= 0)
+        terms.emplace_back(equation_of_dof[master], coefficient);
   }
 
   void

@@ -2,6 +2,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/mesh/line_mesh.h>
 #include <poundfe/model/floor_mass.h>
+#include <poundfe/model/frame_foundation.h>
 #include <poundfe/model/frame_building_3d.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/model/plan_builder.h>
@@ -264,28 +265,6 @@ namespace poundfe
         }
     }
 
-    /// The base node on the foundation's springs: free in sway and rocking.
-    void
-    add_foundation(Model &model, const FoundationParameters &p, const unsigned int b,
-                   const unsigned int base)
-    {
-      model.nodes[base].fixed = {{false, true, false}};
-      Foundation f;
-      f.node                 = base;
-      f.building             = b;
-      f.horizontal_stiffness = p.impedance.horizontal_stiffness;
-      f.rocking_stiffness    = p.impedance.rocking_stiffness;
-      f.horizontal_damping   = p.impedance.horizontal_damping;
-      f.rocking_damping      = p.impedance.rocking_damping;
-      f.mass                 = p.mass;
-      f.rotary_inertia       = p.rotary_inertia;
-      f.parts = {{{Model::dof(base, Component::ux)}, {1.0}, f.horizontal_stiffness,
-                  f.horizontal_damping, f.mass, "_sway"},
-                 {{Model::dof(base, Component::rz)}, {1.0}, f.rocking_stiffness,
-                  f.rocking_damping, f.rotary_inertia, "_rocking"}};
-      model.foundations.push_back(f);
-    }
-
     void
     build_shear(Model &model, const BuildingParameters &p, const unsigned int b,
                 Building &building)
@@ -296,7 +275,7 @@ namespace poundfe
       model.nodes[below].fixed = {{true, true, true}};
       const unsigned int base = below;
       if (p.foundation.enabled())
-        add_foundation(model, p.foundation, b, base);
+        add_planar_foundation(model, p.foundation, b, base, false);
       double level = 0;
       for (unsigned int i = 1; i <= p.n_storeys; ++i)
         {
@@ -683,6 +662,8 @@ namespace poundfe
           }
         label_members(model, building, first_member);
         insert_hinges(model, p, b, first_member);
+        if (p.type == BuildingType::frame && parameters.dimension == 2 && p.foundation.enabled())
+          add_frame_foundation(model, p.foundation, b, building);
         building.n_nodes = model.n_nodes() - building.first_node;
 
         RayleighDamping &d = building.damping;

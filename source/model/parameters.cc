@@ -345,7 +345,7 @@ namespace poundfe
         input.non_negative(s + "Damping/a1", rayleigh_a1);
       }
     finalize_modal_damping(input, s + "Damping/");
-    foundation.finalize(input, s, type == BuildingType::shear);
+    foundation.finalize(input, s, type);
   }
 
   void
@@ -407,6 +407,10 @@ namespace poundfe
           buildings[b].finalize_frame_3d(input, s);
         buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
         buildings[b].foundation.finalize_3d(input, s);
+        if (buildings[b].type == BuildingType::frame && buildings[b].foundation.enabled() &&
+            buildings[b].base_fixity == BaseFixity::pinned)
+          input.fail(s + "Base fixity", "a 3D frame on a compliant foundation has its column "
+                                        "bases clamped to the foundation (pinned: 2D only)");
       }
   }
 

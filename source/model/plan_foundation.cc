@@ -8,14 +8,14 @@ namespace poundfe
 {
   unsigned int
   add_plan_foundation(Model &model, const FoundationParameters &p, const unsigned int b,
-                      const unsigned int base, const double angle)
+                      const unsigned int base, const double angle, const bool vertical)
   {
     model.nodes[base].fixed = {{false, false, false}};
     Node rocking;
     rocking.position    = model.nodes[base].position;
     rocking.building    = b;
     rocking.generalized = true;                 // (u_z, θ_x, θ_y)
-    rocking.fixed       = {{true, false, false}}; // no vertical motion
+    rocking.fixed       = {{!vertical, false, false}}; // vertical motion: frames only
     model.nodes.push_back(rocking);
     const unsigned int rocking_node = model.nodes.size() - 1;
 
@@ -44,6 +44,10 @@ namespace poundfe
        "_rocking_x"},
       {rotation, {-s, c}, z.rocking_stiffness[1], z.rocking_damping[1], p.rotary_inertia,
        "_rocking_y"}};
+    if (vertical) // before the rockings (the rocking about y last: foundation_report.cc)
+      f.parts.insert(f.parts.begin() + 3,
+                     {{n_dofs_per_node * rocking_node}, {1.0}, z.vertical_stiffness,
+                      z.vertical_damping, p.mass + z.added_mass, "_vertical"});
     model.foundations.push_back(f);
     return rocking_node;
   }

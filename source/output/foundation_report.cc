@@ -22,7 +22,8 @@ namespace poundfe
       {
         const Foundation  &f       = model.foundations[i];
         const unsigned int sway    = elements.at(first);
-        // 2D: sway, rocking; 3D: sway x, y, torsion, rocking x, y (about y last)
+        // 2D: sway, (frames: vertical,) rocking; 3D: sway x, y, torsion, (frames:
+        // vertical,) rocking x, y (about y last)
         const unsigned int rocking = elements.at(first + f.parts.size() - 1);
         double             dissipated = 0;
         for (unsigned int j = 0; j < f.parts.size(); ++j)
@@ -40,7 +41,7 @@ namespace poundfe
           .value("peak_horizontal_force_N", peaks.peak_force()[sway])
           .value("peak_moment_N_m", peaks.peak_force()[rocking])
           .value("dissipated_energy_J", dissipated);
-        if (f.rocking_node >= 0)
+        if (f.rocking_node >= 0 || f.parts.size() > 2) // 3D, or a frame's (vertical)
           {
             json.begin_array("parts");
             for (unsigned int j = 0; j < f.parts.size(); ++j)

@@ -16,6 +16,22 @@ namespace poundfe
         equations[k] = model.equation(n_dofs_per_node * member.nodes[k / 3] + k % 3);
       return equations;
     }
+
+    /// The member's six end displacements, through the constraints (a
+    /// column base on a rigid foundation: its vertical is v_0 + (x - x_O) θ).
+    Vector6
+    member_end_displacements(const Model &model, const Member &member, const Vector &u)
+    {
+      Vector6                             ue = Vector6::Zero();
+      std::vector<std::pair<int, double>> terms;
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          model.equation_terms(n_dofs_per_node * member.nodes[k / 3] + k % 3, terms);
+          for (const auto &[equation, coefficient] : terms)
+            ue[k] += coefficient * u[equation];
+        }
+      return ue;
+    }
   } // namespace
 
   StoreyForces::StoreyForces(const Model &model_, const NonlinearElements &elements)
@@ -215,7 +231,7 @@ namespace poundfe
         {
           const FrameElement element(model.nodes[member.nodes[0]].position,
                                      model.nodes[member.nodes[1]].position, member.section);
-          const Vector6 f = element.local_end_forces(end_displacements(element_equations(model, member), u));
+          const Vector6 f = element.local_end_forces(member_end_displacements(model, member, u));
           for (unsigned int end = 0; end < 2; ++end)
             if (member.at_joint[end])
               forces.segment<3>(3 * end) = f.segment<3>(3 * end);

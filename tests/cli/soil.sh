@@ -10,7 +10,8 @@
 #     the pair still pounds, the energy balance closes to 1e-8 with the
 #     foundations' dashpots, their energies in summary.json sum to
 #     energy.foundation_J > 0;
-#  3. `modal` of the example: the first periods lengthen on soft soil and
+#  3. `modal` of the example, and of input/soil-frame-pair.prm (two frames
+#     on rigid foundations): the first periods lengthen on soft soil and
 #     ASCE 7-16 §19.2.1.1's ratio is printed beside the computed one.
 # Bad input (Poisson ratio, negative velocity, density, size, embedment,
 # cone embedded, typed-in stiffness 0): tests/cli/bad/foundation-*.prm.
@@ -74,9 +75,10 @@ PY
 echo "ok   the example on soft soil: balance, foundations' energy and forces"
 
 # 3. modal: periods on fixed and compliant bases
-"$poundfe" modal "$input/soil-shear-pair.prm" --output "$work/modal" > "$work/modal.txt"
+for example in soil-shear-pair soil-frame-pair; do
+"$poundfe" modal "$input/$example.prm" --output "$work/modal" > "$work/modal.txt"
 grep -q "ASCE 7-16 19.2.1.1" "$work/modal.txt" || fail "modal: no period table"
-python3 - "$work/modal/summary.json" <<'PY' || fail "modal foundations"
+python3 - "$work/modal/summary.json" <<'PY' || fail "modal foundations ($example)"
 import json, sys
 for p in json.load(open(sys.argv[1]))["foundations"]:
     print(f"{p['building']}: T fixed {p['fixed_base_period_s']:.4f} s, flexible "
@@ -87,4 +89,5 @@ for p in json.load(open(sys.argv[1]))["foundations"]:
     # modes: 0.2 % apart here, 2 % allowed
     assert abs(p["asce7_period_ratio"] / p["period_ratio"] - 1) < 0.02
 PY
+done
 echo "ok   modal: the periods lengthen on soft soil, beside ASCE 7's estimate"

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <string>
 
+#include "floor_histories.h"
 #include "time_history_helpers.h"
 
 using namespace poundfe;
@@ -76,32 +77,6 @@ namespace
     "  set Width = 8\n  set Embedment = 1\n  set Mass = 2e5\n  set Rotary inertia = 2.4e6\n"
     "  set Rotary inertia x = 1.1e6\n  set Polar inertia = 3.5e6\n end\n";
 
-  /// The time histories of every floor's (u_x, u_y, θ_z): [floor*3 + c][step].
-  std::vector<std::vector<double>>
-  floor_histories(const Analysis &analysis, const poundfe_test::StepRecorder &run)
-  {
-    std::vector<std::vector<double>> h;
-    for (const Floor &floor : analysis.model.buildings[0].floors)
-      for (const Component c : {Component::ux, Component::uy, Component::rz})
-        {
-          const int e = analysis.model.equation(Model::dof(floor.nodes[0], c));
-          BOOST_REQUIRE(e >= 0);
-          h.emplace_back();
-          for (const Vector &u : run.u)
-            h.back().push_back(u[e]);
-        }
-    return h;
-  }
-
-  double
-  peak(const std::vector<double> &x)
-  {
-    double p = 0;
-    for (const double v : x)
-      p = std::max(p, std::abs(v));
-    return p;
-  }
-
   /// The largest of |a - sign b| over a column's steps, relative to a's peak.
   double
   relative_difference(const std::vector<double> &a, const std::vector<double> &b,
@@ -111,7 +86,7 @@ namespace
     double worst = 0;
     for (unsigned int s = 0; s < a.size(); ++s)
       worst = std::max(worst, std::abs(a[s] - sign * b[s]));
-    return worst / peak(a);
+    return worst / poundfe_test::peak(a);
   }
 } // namespace
 
@@ -127,13 +102,14 @@ BOOST_AUTO_TEST_CASE(stiff_soil_reproduces_the_fixed_base)
   const Analysis fixed = prepare_analysis(fixed_p), stiff = prepare_analysis(stiff_p);
   BOOST_REQUIRE(stiff.model.foundations.size() == 1u);
   BOOST_REQUIRE(stiff.model.n_equations() == fixed.model.n_equations() + 5);
-  const auto a = floor_histories(fixed, poundfe_test::recorded_run(fixed, fixed_p));
-  const auto b = floor_histories(stiff, poundfe_test::recorded_run(stiff, stiff_p));
+  const auto a = poundfe_test::floor_histories(fixed, poundfe_test::recorded_run(fixed, fixed_p));
+  const auto b = poundfe_test::floor_histories(stiff, poundfe_test::recorded_run(stiff, stiff_p));
   double worst = 0;
   for (unsigned int j = 0; j < a.size(); ++j)
     {
       worst = std::max(worst, relative_difference(a[j], b[j]));
-      BOOST_TEST(peak(b[j]) == peak(a[j]), boost::test_tools::tolerance(1e-8));
+      BOOST_TEST(poundfe_test::peak(b[j]) == poundfe_test::peak(a[j]),
+                 boost::test_tools::tolerance(1e-8));
     }
   BOOST_TEST_MESSAGE("stiff soil: largest difference " << worst << " of the DOF's peak");
   BOOST_TEST(worst <= 1e-8);
@@ -203,8 +179,8 @@ BOOST_AUTO_TEST_CASE(turning_by_90_degrees_turns_the_response)
   const InputParameters p0 = input_of("turn_0", building_on(gazetas, 0, 1, 0));
   const InputParameters p1 = input_of("turn_90", building_on(gazetas, 90, 1, 90));
   const Analysis        a0 = prepare_analysis(p0), a1 = prepare_analysis(p1);
-  const auto h0 = floor_histories(a0, poundfe_test::recorded_run(a0, p0));
-  const auto h1 = floor_histories(a1, poundfe_test::recorded_run(a1, p1));
+  const auto h0 = poundfe_test::floor_histories(a0, poundfe_test::recorded_run(a0, p0));
+  const auto h1 = poundfe_test::floor_histories(a1, poundfe_test::recorded_run(a1, p1));
   double worst = 0;
   for (unsigned int f = 0; f < h0.size() / 3; ++f)
     {

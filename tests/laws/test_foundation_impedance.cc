@@ -146,3 +146,40 @@ BOOST_AUTO_TEST_CASE(torsion_of_gazetas_and_of_the_cone)
   BOOST_TEST(gazetas_impedance_3d(soil, {a, a, 0}).torsional_stiffness == disk,
              boost::test_tools::tolerance(0.06));
 }
+
+BOOST_AUTO_TEST_CASE(vertical_impedances_of_gazetas_and_of_the_cone)
+{
+  // the cone: the exact static vertical stiffness of a disk, 4 G r/(1 - ν)
+  // (Boussinesq; Wolf 1994, Table 2-1), for a 4 m square as the disk of its
+  // area; the dashpot ρ V_p A (ν = 1/4)
+  const double a = 4.0, r = a / std::sqrt(M_PI);
+  const FoundationImpedance cone = cone_impedance(soil, {a, a, 0});
+  BOOST_TEST(cone.vertical_stiffness == 4 * G * r / 0.75, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(cone.vertical_damping == 1900.0 * 150.0 * std::sqrt(3.0) * a * a,
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(cone.added_mass == 0.0);
+  // ν = 0.45: c = 2 V_s and the trapped mass 2.4 π (ν - 1/3) ρ r³
+  const SoilProperties clay{100.0, 1800.0, 0.45};
+  const FoundationImpedance soft = cone_impedance(clay, {a, a, 0});
+  BOOST_TEST(soft.vertical_damping == 1800.0 * 200.0 * a * a, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(soft.added_mass == 2.4 * M_PI * (0.45 - 1.0 / 3) * 1800.0 * r * r * r,
+             boost::test_tools::tolerance(1e-14));
+  // Gazetas' square, 4.54 G L/(1 - ν), against the disk of the same area
+  // (2L/sqrt(π)): 4.514 G L/(1 - ν), 0.58 % apart
+  const double half = 3.0;
+  const FoundationImpedance square = gazetas_impedance(soil, {2 * half, 2 * half, 0});
+  BOOST_TEST(square.vertical_stiffness == 2 * G * half / 0.75 * (0.73 + 1.54),
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(square.vertical_stiffness == 4 * G * (2 * half / std::sqrt(M_PI)) / 0.75,
+             boost::test_tools::tolerance(0.01));
+  // embedded 2 m under a 6 m x 4 m base (B = 2, L = 3, χ = 2/3, A_w = 40 m²,
+  // A_b = 24 m²): [1 + 2/42 (1 + 1.3 · 2/3)] [1 + 0.2 (40/24)^(2/3)] =
+  // 1.088889 × 1.281144 = 1.395024 by hand (Gazetas 1991, Table 2)
+  const FoundationImpedance surface  = gazetas_impedance(soil, {6, 4, 0});
+  const FoundationImpedance embedded = gazetas_impedance(soil, {6, 4, 2});
+  BOOST_TEST(embedded.vertical_stiffness / surface.vertical_stiffness == 1.395024,
+             boost::test_tools::tolerance(1e-5));
+  // the dashpot ρ V_La A_b
+  BOOST_TEST(surface.vertical_damping == 1900.0 * 3.4 * 150.0 / (M_PI * 0.75) * 24,
+             boost::test_tools::tolerance(1e-14));
+}

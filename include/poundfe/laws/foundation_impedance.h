@@ -45,6 +45,14 @@
 //   cone:    K_t = 16 G r_t³ / 3, r_t = (2 J_t/π)^(1/4),  C_t = ρ V_s J_t
 //   (Wolf 1994, Table 2-1: the exact disk value; the dashpot the cone's
 //   high-frequency limit, like the others here).
+// Vertical (frames, which carry vertical motion), rectangle 2L x 2B, A_b = 4BL:
+//   Gazetas: K_z = 2 G L / (1 - ν) (0.73 + 1.54 χ^0.75), embedded to D
+//            × [1 + D/(21 B) (1 + 1.3 χ)] [1 + 0.2 (A_w/A_b)^(2/3)],
+//            C_z = ρ V_La A_b (Gazetas 1991, Tables 1 and 2; Mylonakis,
+//            Nikolaou & Gazetas 2006, Table 1);
+//   cone:    K_z = 4 G r_h / (1 - ν), C_z = ρ c A_b (c as for rocking), and
+//            for ν > 1/3 a trapped mass ΔM = 2.4 π (ν - 1/3) ρ r_h³ (Wolf
+//            1994, Table 2-1; the disk's exact static value).
 // doc/theory.md §1.16.
 #ifndef poundfe_laws_foundation_impedance_h
 #define poundfe_laws_foundation_impedance_h
@@ -79,6 +87,9 @@ namespace poundfe
     double horizontal_damping   = 0; // N s/m
     double rocking_damping      = 0; // N m s/rad
     double added_rotary_inertia = 0; // kg m² (Wolf's trapped soil, ν > 1/3)
+    double vertical_stiffness   = 0; // N/m
+    double vertical_damping     = 0; // N s/m
+    double added_mass           = 0; // kg, on the vertical (Wolf's trapped soil)
   };
 
   /// Springs, dashpots and added inertias of one foundation in 3D, in its
@@ -92,6 +103,9 @@ namespace poundfe
     double added_rotary_inertia[2] = {0, 0}; // kg m²
     double torsional_stiffness     = 0;      // N m/rad
     double torsional_damping       = 0;      // N m s/rad
+    double vertical_stiffness      = 0;      // N/m
+    double vertical_damping        = 0;      // N s/m
+    double added_mass              = 0;      // kg, on the vertical
   };
 
   /// Gazetas in 3D, surface or embedded (as gazetas_impedance).

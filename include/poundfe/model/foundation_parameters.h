@@ -1,5 +1,7 @@
 // The `Building <i>/Foundation` subsection: a compliant foundation under a
-// 2D or 3D shear building (the sway-rocking model, doc/theory.md §1.16): the
+// 2D or 3D shear building (the sway-rocking model) or a frame (a rigid
+// foundation under its column bases, with a vertical spring too; doc/
+// theory.md §1.16): the
 // soil's shear-wave velocity, density and Poisson ratio and the
 // foundation's size and embedment give the springs and dashpots by Gazetas'
 // formulas or Wolf's cones (laws/foundation_impedance.h), or they are typed
@@ -10,6 +12,7 @@
 #include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/laws/foundation_impedance.h>
+#include <poundfe/model/model.h>
 
 #include <string>
 
@@ -57,9 +60,10 @@ namespace poundfe
 
     /// Declare the entries of `Foundation` (entered and left here).
     void declare(dealii::ParameterHandler &prm);
-    /// Check `<section>Foundation/` and compute the impedance; `shear`: the
-    /// building is a shear building. Throws InputError.
-    void finalize(const InputFile &input, const std::string &section, bool shear);
+    /// Check `<section>Foundation/` and compute the impedance for a building
+    /// of `type` (meshes are refused; frames need the vertical spring).
+    /// Throws InputError.
+    void finalize(const InputFile &input, const std::string &section, BuildingType type);
     /// Dimension 3, after finalize: check the 3D entries and compute
     /// impedance_3d. Throws InputError.
     void finalize_3d(const InputFile &input, const std::string &section);

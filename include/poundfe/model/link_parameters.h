@@ -32,6 +32,9 @@ namespace poundfe
     /// 'building building k c': a spring and dashpot between the sways of
     /// two buildings' compliant foundations (the soil between them).
     std::vector<std::string> soil_coupling;
+    /// 'building building k c': a rotational spring (N m/rad) and dashpot
+    /// (N m s/rad) between the two foundations' rocking (in the x-z plane).
+    std::vector<std::string> rocking_soil_coupling;
     double regularization_velocity = 1e-6;    // v_eps, m/s
 
     /// Declare the entries in the current subsection (`Links`); the entries

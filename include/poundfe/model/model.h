@@ -140,6 +140,18 @@ namespace poundfe
     std::vector<FoundationPart> parts;
   };
 
+  /// An exact master-slave constraint (Cook, Malkus, Plesha & Witt 2002,
+  /// §9.2, by transformation; no penalty): q(dof) = Σ c q(master) over
+  /// `masters`. A slave with one master of coefficient 1 shares the master's
+  /// equation; any other has none, and whatever acts on it acts on its
+  /// masters (Model::equation_terms). The column bases of a 2D frame on a
+  /// rigid foundation (model/frame_foundation.h).
+  struct DofConstraint
+  {
+    unsigned int                                 dof = 0;
+    std::vector<std::pair<unsigned int, double>> masters;
+  };
+
   /// A rotational Bouc-Wen spring at a member end: between the rotation of
   /// the member-side node (a copy of the joint that shares its translations)
   /// and the joint's rotation (absent when the joint is clamped).
@@ -261,10 +273,13 @@ namespace poundfe
   };
 
   /// A link (damper, connector) between two floor nodes, usually of two
-  /// adjacent buildings, on d = ux(nodes[0]) - ux(nodes[1]).
+  /// adjacent buildings, on d = ux(nodes[0]) - ux(nodes[1]); a rocking
+  /// soil coupling acts on rz instead (slot 2 of a generalized node: θ_y
+  /// of a 3D foundation's rocking node).
   struct BuildingLink
   {
     std::array<unsigned int, 2> nodes{{0, 0}};
+    Component                   component = Component::ux;
     std::array<unsigned int, 2> buildings{{0, 0}};
     LinkLawParameters           law;
     std::string                 label;
@@ -411,7 +426,8 @@ namespace poundfe
     std::vector<Spring>          springs;
     std::vector<FrictionSurface> friction_surfaces;
     std::vector<BuildingLink>    building_links;
-    std::vector<Foundation>      foundations; // compliant bases of shear buildings
+    std::vector<Foundation>      foundations; // compliant bases
+    std::vector<DofConstraint>   constraints; // masters free, slaves not fixed
     /// A bumper in every 2D gap (law none: bare gaps).
     BumperParameters             bumper;
     /// The contact law of every gap (its gap and m_e are set per gap).
@@ -439,6 +455,12 @@ namespace poundfe
     void number_equations();
 
     unsigned int n_equations() const { return n_free; }
+    /// The (equation, coefficient) pairs of q(dof), into `terms`: one (e, 1)
+    /// for a free or shared DOF, none for a fixed one, the masters' for a
+    /// constrained one.
+    void equation_terms(unsigned int dof, std::vector<std::pair<int, double>> &terms) const;
+    /// Whether some DOF is a combination of others (equation_terms needed).
+    bool has_combinations() const { return combined; }
     int equation(const unsigned int dof) const { return equation_of_dof[dof]; }
     const std::vector<int> &equations() const { return equation_of_dof; }
 
@@ -450,6 +472,8 @@ namespace poundfe
 
   private:
     std::vector<int>          equation_of_dof;
+    std::vector<int>          constraint_of_dof; // -1: none
+    bool                      combined = false;
     std::vector<unsigned int> first_equation_of_building;
     unsigned int              n_free = 0;
   };

@@ -2,7 +2,9 @@
 // (doc/theory.md §1.16, "In 3D"): a rigid foundation whose motion is the
 // base node's (u_x, u_y, θ_z) about the foundation's centre O and a
 // generalized node's rotations (θ_x, θ_y) (its u_z is held: a shear
-// building carries no vertical motion). A point at height z above O moves
+// building carries no vertical motion; under a 3D frame u_z is free on the
+// vertical spring, and the column bases ride the basemat by exact
+// master-slave maps, model/frame_building_3d.h). A point at height z above O moves
 // rigidly by u_0 + θ × (r - O), horizontally
 //   u_x = u_0x + z θ_y - θ_z (y - O_y),  u_y = u_0y - z θ_x + θ_z (x - O_x),
 // so a resisting plane of direction d in storey i (height h_i) deforms by
@@ -28,9 +30,11 @@ namespace poundfe
   /// Put building b's base node `base` on the foundation of `p` (finalized
   /// for 3D), its local x at `angle` (rad, counter-clockwise) from the
   /// site's x: frees the base node, adds the rocking node and the
-  /// foundation to the model. Returns the rocking node.
+  /// foundation to the model; with `vertical` (a frame) the rocking node's
+  /// u_z is free too, on the vertical spring and dashpot with the mass (and
+  /// Wolf's trapped soil). Returns the rocking node.
   unsigned int add_plan_foundation(Model &model, const FoundationParameters &p, unsigned int b,
-                                   unsigned int base, double angle);
+                                   unsigned int base, double angle, bool vertical = false);
 } // namespace poundfe
 
 #endif
