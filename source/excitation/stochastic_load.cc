@@ -26,6 +26,14 @@ namespace poundfe
             correlation     = ground_motion.correlation;
             n_random += second_ground->n_variables();
           }
+        if (excitation.has_vertical())
+          {
+            const GroundMotionParameters vertical = ground_motion.vertical_component();
+            vertical_ground.emplace(make_motion_generator(vertical, time_step));
+            vertical_seed  = vertical.seed;
+            vertical_ratio = ground_motion.vertical_ratio;
+            n_random += vertical_ground->n_variables();
+          }
       }
     const std::vector<NodalForce> &forces = excitation.nodal_forces();
     for (unsigned int i = 0; i < forces.size(); ++i)
@@ -49,6 +57,14 @@ namespace poundfe
         std::vector<double> second(second_ground->n_variables());
         poundfe::standard_normals(second_seed, realization, second);
         std::copy(second.begin(), second.end(), xi.begin() + ground->n_variables());
+      }
+    if (vertical_ground)
+      {
+        std::vector<double> vertical(vertical_ground->n_variables());
+        poundfe::standard_normals(vertical_seed, realization, vertical);
+        const unsigned int offset =
+          ground->n_variables() + (second_ground ? second_ground->n_variables() : 0);
+        std::copy(vertical.begin(), vertical.end(), xi.begin() + offset);
       }
   }
 
@@ -75,6 +91,17 @@ namespace poundfe
               a *= factor;
             correlate_second_component(samples, second, intensity_ratio, correlation);
             offset += second_ground->n_variables();
+          }
+        if (vertical_ground)
+          {
+            std::vector<double> &vertical =
+              excitation.vertical_ground_motion_for_update().samples_for_update();
+            vertical_ground->generate(xi.data() + offset, vertical);
+            for (double &a : vertical)
+              a *= factor;
+            // an independent sample of the same process, sigma_z = ratio sigma_x
+            correlate_second_component(samples, vertical, vertical_ratio, 0);
+            offset += vertical_ground->n_variables();
           }
       }
     std::vector<NodalForce> &forces = excitation.nodal_forces_for_update();

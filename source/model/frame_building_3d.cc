@@ -130,6 +130,7 @@ namespace poundfe
         const Point2 at{j.position.x(), j.position.z()};
         j.h                    = add_node(at, false);
         j.v                    = add_node(at, true);
+        model.nodes[j.v].joint_translation_z = true;
         model.nodes[j.h].fixed = {{true, true, false}};
         model.nodes[j.v].fixed = {{true, false, false}};
       }
@@ -164,6 +165,7 @@ namespace poundfe
                   floor.nodes.push_back(j.h);
                 }
               j.v = add_node(at, true);
+              model.nodes[j.v].joint_translation_z = true;
               model.dof_masses.push_back({n_dofs_per_node * unsigned(j.v), f.mass / n_joint}); // uz
             }
         building.floors.push_back(floor);
