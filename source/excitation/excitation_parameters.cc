@@ -211,24 +211,32 @@ namespace poundfe
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /// One component of `g` alone: `file` (a record), or the seed
+    /// `given_seed` (0: Seed + seed_offset) of the same process.
+    GroundMotionParameters
+    one_component(const GroundMotionParameters &g, const std::string &file,
+                  const unsigned int given_seed, const unsigned int seed_offset)
+    {
+      GroundMotionParameters component = g;
+      component.record_file            = file;
+      component.seed                   = given_seed > 0 ? given_seed : g.seed + seed_offset;
+      component.n_components           = 1;
+      return component;
+    }
+  } // namespace
+
   GroundMotionParameters
   GroundMotionParameters::second_component() const
   {
-    GroundMotionParameters second = *this;
-    second.record_file            = second_record_file;
-    second.seed                   = second_seed > 0 ? second_seed : seed + 1;
-    second.n_components           = 1;
-    return second;
+    return one_component(*this, second_record_file, second_seed, 1);
   }
 
   GroundMotionParameters
   GroundMotionParameters::vertical_component() const
   {
-    GroundMotionParameters vertical = *this;
-    vertical.record_file            = third_record_file;
-    vertical.seed                   = vertical_seed > 0 ? vertical_seed : seed + 2;
-    vertical.n_components           = 1;
-    return vertical;
+    return one_component(*this, third_record_file, vertical_seed, 2);
   }
 
   void
