@@ -133,7 +133,8 @@ namespace poundfe
         const TorsionalFloor &f       = plan.building.floors[i - 1];
         unsigned int          n_joint = 0;
         for (const auto &line : level)
-          n_joint += std::count_if(line.begin(), line.end(), [](const Joint &j) { return j.present; });
+          n_joint += std::count_if(line.begin(), line.end(),
+                                   [](const Joint &j) { return j.present; });
         Floor                 floor;
         floor.level         = level[0][0].position.z();
         floor.storey_height = value_for(p.storey_heights, i - 1);

@@ -56,17 +56,21 @@ namespace
   std::string
   frame_3d_text()
   {
-    const std::string zero = record_file("vertical_zero.txt", step, duration, [](double) { return 0.0; });
-    const std::string up   = record_file("vertical_sine.txt", step, duration,
-                                       [](const double t) { return amplitude * std::sin(forcing * t); });
+    const std::string zero =
+      record_file("vertical_zero.txt", step, duration, [](double) { return 0.0; });
+    const std::string up = record_file("vertical_sine.txt", step, duration, [](const double t) {
+      return amplitude * std::sin(forcing * t);
+    });
     std::ostringstream text;
     text << "subsection Model\n set Dimension = 3\nend\n"
             "subsection Building 1\n set Type = frame\n set Number of storeys = 1\n"
             " set Storey heights = " << height << "\n set Number of bays = 1\n set Bay widths = 6\n"
-            " set Number of bays y = 1\n set Bay widths y = 5\n set Floor masses = " << floor_mass <<
-            "\n set Column E = " << youngs_modulus << "\n set Column G = 1.25e10\n"
-            " set Column A = " << column_area << "\n set Column I = 3.3e-3\n set Column Iz = 2.7e-3\n"
-            " set Column J = 5.2e-3\n set Beam E = 3e10\n set Beam G = 1.25e10\n set Beam A = 0.15\n"
+            " set Number of bays y = 1\n set Bay widths y = 5\n set Floor masses = "
+         << floor_mass << "\n set Column E = " << youngs_modulus << "\n set Column G = 1.25e10\n"
+            " set Column A = " << column_area
+         << "\n set Column I = 3.3e-3\n set Column Iz = 2.7e-3\n"
+            " set Column J = 5.2e-3\n set Beam E = 3e10\n set Beam G = 1.25e10\n"
+            " set Beam A = 0.15\n"
             " set Beam I = 3.1e-3\n set Beam Iz = 1.1e-3\n set Beam J = 2.6e-3\n"
             " subsection Hinges\n  set Locations = column bases, beam ends\n"
             "  set Yield moment = 3e5\n end\n"
@@ -115,7 +119,8 @@ BOOST_AUTO_TEST_CASE(vertical_shaking_drives_the_axial_sdof)
   const InputParameters p        = poundfe_test::input_of("vertical_3d_run", frame_3d_text());
   const Analysis        analysis = prepare_analysis(p);
   const auto            run      = poundfe_test::recorded_run(analysis, p);
-  const double          m_j = floor_mass / 4, omega = std::sqrt(youngs_modulus * column_area / height / m_j);
+  const double          m_j   = floor_mass / 4;
+  const double          omega = std::sqrt(youngs_modulus * column_area / height / m_j);
   // the four uz equations: where the vertical load acts
   std::vector<unsigned int> uz;
   for (unsigned int e = 0; e < analysis.system.n_equations(); ++e)
@@ -176,7 +181,8 @@ BOOST_AUTO_TEST_CASE(vertical_component_superposes_on_a_symmetric_2d_frame)
   const std::string z = record_file("vertical_2d_z.txt", dt, length, [](const double t) {
     return 1.7 * std::sin(31 * t) + 0.6 * std::cos(7 * t) * t;
   });
-  const std::string zero = record_file("vertical_2d_zero.txt", dt, length, [](double) { return 0.0; });
+  const std::string zero =
+    record_file("vertical_2d_zero.txt", dt, length, [](double) { return 0.0; });
   const auto run = [](const std::string &name, const std::string &text) {
     const InputParameters p = poundfe_test::input_of(name, text);
     const Analysis        a = prepare_analysis(p);
@@ -211,14 +217,16 @@ BOOST_AUTO_TEST_CASE(vertical_component_superposes_on_a_symmetric_2d_frame)
       const Point2 at = model.nodes[n].position, image{10 - at.x, at.y};
       const int    ux = model.equation(Model::dof(n, Component::ux));
       const int    uy = model.equation(Model::dof(n, Component::uy));
-      const int    ux_image = equation(image, Component::ux), uy_image = equation(image, Component::uy);
+      const int    ux_image = equation(image, Component::ux);
+      const int    uy_image = equation(image, Component::uy);
       if (ux < 0 || ux_image < 0 || uy < 0 || uy_image < 0)
         continue;
       ++n_pairs;
       for (const Vector &u : only_z.u)
         {
           vertical_peak = std::max(vertical_peak, std::abs(u[uy]));
-          mirror        = std::max({mirror, std::abs(u[ux] + u[ux_image]), std::abs(u[uy] - u[uy_image])});
+          mirror        = std::max(
+            {mirror, std::abs(u[ux] + u[ux_image]), std::abs(u[uy] - u[uy_image])});
         }
     }
   BOOST_TEST_MESSAGE("2D frame: superposition " << superposition / peak << ", mirror "
