@@ -222,6 +222,21 @@ namespace poundfe
       return r;
     }
 
+    /// 1 on the free vertical translations: uy of the (ux, uy, rz) nodes in
+    /// 2D, slot 0 (uz) of the 3D frame joints' generalized nodes in 3D.
+    Vector
+    vertical_influence_of(const Model &model)
+    {
+      if (model.dimension != 3)
+        return influence_of(model, Component::uy);
+      Vector r = Vector::Zero(model.n_equations());
+      for (unsigned int node = 0; node < model.n_nodes(); ++node)
+        if (model.nodes[node].joint_translation_z)
+          if (const int row = model.equation(n_dofs_per_node * node); row >= 0)
+            r[row] = 1;
+      return r;
+    }
+
     /// K = K_E + K_G from the gravity loads (the header's P-Delta).
     void
     add_p_delta(const Model &model, LinearSystem &system)
@@ -282,7 +297,8 @@ namespace poundfe
     system.stiffness = from_triplets(n, k_triplets);
     system.mass      = from_triplets(n, m_triplets);
     system.damping   = SparseMatrix(n, n);
-    system.influence = influence_of(model, Component::ux);
+    system.influence   = influence_of(model, Component::ux);
+    system.influence_z = vertical_influence_of(model);
     if (model.dimension == 3)
       {
         system.influence_y  = influence_of(model, Component::uy);

@@ -102,6 +102,7 @@ namespace poundfe
                           make_nodal_forces(parameters.nodal_forces, ground_motion, dt, input,
                                             analysis.model));
     add_horizontal_component(excitation, analysis.system, analysis.model, ground_motion, input, dt);
+    add_vertical_component(excitation, analysis.system, analysis.model, ground_motion, input, dt);
     if (!parameters.nodal_forces.white_noise.empty())
       {
         const StochasticLoad load(ground_motion, dt, excitation);
@@ -128,6 +129,8 @@ namespace poundfe
     , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
   {
     integrator.set_equation_names(equation_names(analysis_.model));
+    // known before the observers are made (the recorders choose their columns)
+    view.set_vertical_ground_motion(parameters.ground_motion.has_vertical());
   }
 
   void
@@ -169,14 +172,14 @@ namespace poundfe
     Vector p0(analysis.system.n_equations());
     load(0, p0);
     stepper.initialize(p0, u0, v0);
-    view.set_step(0, excitation.horizontal_acceleration(0));
+    view.set_step(0, excitation.ground_acceleration_vector(0));
     for (StepObserver *observer : observers)
       observer->initialize(view);
 
     RunStatus     status;
     unsigned long step = 0;
     stepper.set_substep_callback([&]() {
-      view.set_step(step, excitation.horizontal_acceleration(stepper.time()));
+      view.set_step(step, excitation.ground_acceleration_vector(stepper.time()));
       for (StepObserver *observer : observers)
         observer->observe_substep(view);
     });
@@ -197,7 +200,7 @@ namespace poundfe
               }
             throw_if_interrupted(); // a command that stops at safe points (sweep, ...)
             stepper.advance(load);
-            view.set_step(step, excitation.horizontal_acceleration(step * dt));
+            view.set_step(step, excitation.ground_acceleration_vector(step * dt));
             for (StepObserver *observer : observers)
               observer->observe_step(view);
           }

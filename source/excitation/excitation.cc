@@ -64,6 +64,22 @@ namespace poundfe
   }
 
   void
+  Excitation::set_vertical(const LinearSystem &system, GroundMotion vertical_component)
+  {
+    AssertDimension(system.influence_z.size(), system.mass.rows());
+    vertical_motion        = true;
+    vertical               = std::move(vertical_component);
+    mass_times_influence_z = system.mass * system.influence_z;
+  }
+
+  std::array<double, 3>
+  Excitation::ground_acceleration_vector(const double t) const
+  {
+    const std::array<double, 2> a = horizontal_acceleration(t);
+    return {{a[0], a[1], vertical_motion ? vertical.value(t) : 0.0}};
+  }
+
+  void
   Excitation::load(const double t, Vector &load) const
   {
     if (pair)
@@ -73,6 +89,8 @@ namespace poundfe
       }
     else
       load = (-ground.value(t)) * mass_times_influence;
+    if (vertical_motion)
+      load -= vertical.value(t) * mass_times_influence_z;
     for (const NodalForce &f : forces)
       load[f.equation] += f.value(t);
   }
@@ -195,14 +213,24 @@ namespace poundfe
         if (g.n_components == 2)
           input.fail("Ground motion/Components", "two horizontal components need "
                                                  "Model/Dimension = 3");
+        if (!g.second_record_file.empty())
+          input.fail("Ground motion/Record/Second file",
+                     "a planar model has no y direction: Components = 3 shakes it along x "
+                     "and vertically (File and Third file)");
         if (g.incidence_angle != 0)
           input.fail("Ground motion/Incidence angle", "an incidence angle needs "
                                                       "Model/Dimension = 3");
         return;
       }
     GroundMotion second; // none: the first component alone, rotated
-    if (g.n_components == 2)
+    if (g.n_components >= 2)
       {
+        if (g.type == GroundMotionType::record && g.second_record_file.empty())
+          // Components = 3 in 3D: x, y and z (Components = 2 is checked with the section)
+          throw InputError(input.file, input.line_of("Ground motion/Components"),
+                           "Ground motion/Record/Second file",
+                           "Components = 3 with a record in 3D needs a second (y) file "
+                           "besides the third (vertical) one");
         second = make_ground_motion(g.second_component(), input, time_step,
                                     "Ground motion/Record/Second file");
         if (g.is_stochastic())
@@ -211,6 +239,39 @@ namespace poundfe
                                      g.correlation);
       }
     excitation.set_horizontal_pair(system, std::move(second), g.incidence_angle * M_PI / 180);
+  }
+
+  void
+  add_vertical_component(Excitation &excitation, const LinearSystem &system, const Model &model,
+                         const GroundMotionParameters &g, const InputFile &input,
+                         const double time_step)
+  {
+    if (!g.has_vertical())
+      return;
+    for (const Building &building : model.buildings)
+      if (building.type == BuildingType::shear)
+        input.fail("Ground motion/Components",
+                   "Components = 3 shakes the model vertically, but building '" + building.name +
+                     "' is a shear building (stick model): it has no vertical DOF; use frames "
+                     "or Components = " + (model.dimension == 3 ? "2" : "1"));
+    GroundMotionParameters component = g.vertical_component();
+    if (g.type == GroundMotionType::record && g.record_target_pga > 0)
+      {
+        // the factor that brought File to the Target PGA, so that the
+        // recorded ratio of the vertical to the horizontal motion is kept
+        GroundMotionParameters unscaled = g;
+        unscaled.record_target_pga      = 0;
+        unscaled.scale_factor           = 1;
+        const double peak = make_ground_motion(unscaled, input, time_step).peak();
+        component.record_target_pga = 0;
+        component.scale_factor = g.scale_factor * g.record_target_pga * standard_gravity / peak;
+      }
+    GroundMotion vertical =
+      make_ground_motion(component, input, time_step, "Ground motion/Record/Third file");
+    if (g.is_stochastic()) // an independent sample, sigma_z = ratio sigma_x
+      correlate_second_component(excitation.ground_motion().samples(),
+                                 vertical.samples_for_update(), g.vertical_ratio, 0);
+    excitation.set_vertical(system, std::move(vertical));
   }
 
   NodeDof

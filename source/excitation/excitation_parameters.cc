@@ -90,6 +90,12 @@ namespace poundfe
                         "The second horizontal component (Components = 2), along y before "
                         "the incidence rotation; same format, units and scaling as File. "
                         "Unit: -.");
+      prm.add_parameter("Third file", p.third_record_file,
+                        "The vertical component (Components = 3), upward positive: uz of "
+                        "every joint of a 3D frame, uy of every node of a 2D frame; not "
+                        "rotated by the incidence angle; same format and units as File, scaled "
+                        "by File's factor (Target PGA / PGA of File, times Scale factor), so "
+                        "the recorded vertical-to-horizontal ratio is kept. Unit: -.");
       prm.add_parameter("File", p.record_file,
                         "PEER .AT2, or text with one (acceleration) or two (time, "
                         "acceleration) columns; relative to this parameter file. Unit: -.");
@@ -122,8 +128,10 @@ namespace poundfe
     prm.add_parameter("Components", n_components,
                       "Horizontal components: 1 (along x), or 2 (x and y, Model/Dimension = "
                       "3: Record/Second file, or a second independent stochastic sample "
-                      "from Stochastic/Second seed). Unit: count.",
-                      dealii::Patterns::Integer(1, 2));
+                      "from Stochastic/Second seed); 3 adds the vertical component "
+                      "(Record/Third file, or a sample from Stochastic/Vertical seed): x, y "
+                      "and z in 3D, x and the vertical in 2D (frames only). Unit: count.",
+                      dealii::Patterns::Integer(1, 3));
     prm.add_parameter("Incidence angle", incidence_angle,
                       "Rotates the horizontal pair counter-clockwise in plan: a_x = cos a "
                       "g_1 - sin a g_2, a_y = sin a g_1 + cos a g_2 (Model/Dimension = 3). "
@@ -177,6 +185,14 @@ namespace poundfe
                       "before the incidence rotation, in [-1, 1] (0: along their principal "
                       "axes); g_2 = gamma (rho z_1 + sqrt(1 - rho^2) z_2) of two independent "
                       "samples z_1 = g_1, z_2. Unit: dimensionless.");
+    prm.add_parameter("Vertical seed", vertical_seed,
+                      "Seed of the vertical component (Components = 3): an independent "
+                      "sample of the same process; 0: Seed + 2. Unit: -.");
+    prm.add_parameter("Vertical ratio", vertical_ratio,
+                      "Components = 3: standard deviation of the vertical component over the "
+                      "first horizontal one's (2/3: Newmark, Blume & Kapur 1973; EC8 Table 3.4 "
+                      "gives a_vg/a_g = 0.90 for type 1 and 0.45 for type 2 spectra). "
+                      "Unit: dimensionless.");
     prm.add_parameter("Realization", realization,
                       "Realization index: (seed, index) fixes the sample. Unit: -.");
     add_choice(prm, "Envelope", envelope,
@@ -195,14 +211,73 @@ namespace poundfe
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /// One component of `g` alone: `file` (a record), or the seed
+    /// `given_seed` (0: Seed + seed_offset) of the same process.
+    GroundMotionParameters
+    one_component(const GroundMotionParameters &g, const std::string &file,
+                  const unsigned int given_seed, const unsigned int seed_offset)
+    {
+      GroundMotionParameters component = g;
+      component.record_file            = file;
+      component.seed                   = given_seed > 0 ? given_seed : g.seed + seed_offset;
+      component.n_components           = 1;
+      return component;
+    }
+  } // namespace
+
   GroundMotionParameters
   GroundMotionParameters::second_component() const
   {
-    GroundMotionParameters second = *this;
-    second.record_file            = second_record_file;
-    second.seed                   = second_seed > 0 ? second_seed : seed + 1;
-    second.n_components           = 1;
-    return second;
+    return one_component(*this, second_record_file, second_seed, 1);
+  }
+
+  GroundMotionParameters
+  GroundMotionParameters::vertical_component() const
+  {
+    return one_component(*this, third_record_file, vertical_seed, 2);
+  }
+
+  void
+  GroundMotionParameters::check_vertical(const InputFile &input) const
+  {
+    const std::string st = "Ground motion/Stochastic/";
+    if (!(vertical_ratio >= 0 && vertical_ratio <= 1e3))
+      input.fail(st + "Vertical ratio", "must be a number in [0, 1000]");
+    for (const char *entry : {"Vertical ratio", "Vertical seed"})
+      if (input.line_of(st + entry) > 0 && !(has_vertical() && is_stochastic()))
+        input.fail(st + entry, "is read only by a generated vertical component: it needs "
+                               "Ground motion/Components = 3 and a stochastic Type");
+  }
+
+  void
+  GroundMotionParameters::check_component_files(const InputFile &input) const
+  {
+    const std::string gm = "Ground motion/";
+    if (type == GroundMotionType::record && n_components == 2 && second_record_file.empty())
+      // Second file is absent, so the message points at the line that asks for it
+      throw InputError(input.file, input.line_of(gm + "Components"), gm + "Record/Second file",
+                       "Components = 2 with a record needs a second file");
+    if (type == GroundMotionType::record && has_vertical() && third_record_file.empty())
+      throw InputError(input.file, input.line_of(gm + "Components"), gm + "Record/Third file",
+                       "Components = 3 with a record needs a third (vertical) file");
+    // a record that nothing reads would leave the user believing the
+    // building was shaken in that direction as well
+    for (const auto &[entry, file] : {std::pair<const char *, const std::string &>{
+                                        "Record/Second file", second_record_file},
+                                      {"Record/Third file", third_record_file}})
+      if (!file.empty() && type != GroundMotionType::record)
+        input.fail(gm + entry, "is read only by a record ground motion (Type = record), "
+                               "not by '" + ground_motion_type_names().name(type) + "'");
+    if (!second_record_file.empty() && n_components == 1)
+      input.fail(gm + "Record/Second file",
+                 "is the second horizontal component, but Ground motion/Components = 1: "
+                 "set Components = 2 or remove this line");
+    if (!third_record_file.empty() && !has_vertical())
+      input.fail(gm + "Record/Third file",
+                 "is the vertical component, but Ground motion/Components = " +
+                   std::to_string(n_components) + ": set Components = 3 or remove this line");
   }
 
   void
@@ -214,7 +289,7 @@ namespace poundfe
     if (!(std::abs(correlation) <= 1))
       input.fail(st + "Correlation", "must be in [-1, 1]");
     const bool correlated = intensity_ratio != 1 || correlation != 0;
-    if (correlated && n_components != 2)
+    if (correlated && n_components < 2)
       input.fail(st + (correlation != 0 ? "Correlation" : "Intensity ratio"),
                  "relates the two horizontal components: it needs Ground motion/Components = 2");
     if (correlated && !is_stochastic())
@@ -229,22 +304,11 @@ namespace poundfe
     const std::string gm = "Ground motion/";
     if (type == GroundMotionType::record && record_file.empty())
       input.fail(gm + "Record/File", "a record ground motion needs a file");
-    if (type == GroundMotionType::record && n_components == 2 && second_record_file.empty())
-      // Second file is absent, so the message points at the line that asks for it
-      throw InputError(input.file, input.line_of(gm + "Components"), gm + "Record/Second file",
-                       "Components = 2 with a record needs a second file");
-    // a second record that nothing reads would leave the user believing the
-    // building was shaken along y as well
-    if (!second_record_file.empty() && type != GroundMotionType::record)
-      input.fail(gm + "Record/Second file", "is read only by a record ground motion (Type = record), "
-                                            "not by '" + ground_motion_type_names().name(type) + "'");
-    if (!second_record_file.empty() && n_components != 2)
-      input.fail(gm + "Record/Second file",
-                 "is the second horizontal component, but Ground motion/Components = " +
-                   std::to_string(n_components) + ": set Components = 2 or remove this line");
+    check_component_files(input);
     if (!(std::abs(incidence_angle) <= 360))
       input.fail(gm + "Incidence angle", "must be a finite angle in [-360, 360] degrees");
     check_pair(input);
+    check_vertical(input);
     input.non_negative(gm + "Record/Time step", record_time_step);
     input.non_negative(gm + "Record/Target PGA", record_target_pga);
     if (!std::isfinite(scale_factor))

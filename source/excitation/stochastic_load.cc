@@ -26,6 +26,14 @@ namespace poundfe
             correlation     = ground_motion.correlation;
             n_random += second_ground->n_variables();
           }
+        if (excitation.has_vertical())
+          {
+            const GroundMotionParameters vertical = ground_motion.vertical_component();
+            vertical_ground.emplace(make_motion_generator(vertical, time_step));
+            vertical_seed  = vertical.seed;
+            vertical_ratio = ground_motion.vertical_ratio;
+            n_random += vertical_ground->n_variables();
+          }
       }
     const std::vector<NodalForce> &forces = excitation.nodal_forces();
     for (unsigned int i = 0; i < forces.size(); ++i)
@@ -50,6 +58,14 @@ namespace poundfe
         poundfe::standard_normals(second_seed, realization, second);
         std::copy(second.begin(), second.end(), xi.begin() + ground->n_variables());
       }
+    if (vertical_ground)
+      {
+        std::vector<double> vertical(vertical_ground->n_variables());
+        poundfe::standard_normals(vertical_seed, realization, vertical);
+        const unsigned int offset =
+          ground->n_variables() + (second_ground ? second_ground->n_variables() : 0);
+        std::copy(vertical.begin(), vertical.end(), xi.begin() + offset);
+      }
   }
 
   void
@@ -60,21 +76,30 @@ namespace poundfe
     unsigned int offset = 0;
     if (ground)
       {
-        std::vector<double> &samples = excitation.ground_motion_for_update().samples_for_update();
-        ground->generate(xi.data(), samples);
         const double factor = ground_scale * amplitude_factor;
-        for (double &a : samples)
-          a *= factor;
-        offset = ground->n_variables();
+        // one component's sample from the next normals of xi, scaled
+        const auto generate = [&](const MotionGenerator &generator, std::vector<double> &samples) {
+          generator.generate(xi.data() + offset, samples);
+          for (double &a : samples)
+            a *= factor;
+          offset += generator.n_variables();
+        };
+        std::vector<double> &samples = excitation.ground_motion_for_update().samples_for_update();
+        generate(*ground, samples);
         if (second_ground)
           {
             std::vector<double> &second =
               excitation.second_ground_motion_for_update().samples_for_update();
-            second_ground->generate(xi.data() + offset, second);
-            for (double &a : second)
-              a *= factor;
+            generate(*second_ground, second);
             correlate_second_component(samples, second, intensity_ratio, correlation);
-            offset += second_ground->n_variables();
+          }
+        if (vertical_ground)
+          {
+            std::vector<double> &vertical =
+              excitation.vertical_ground_motion_for_update().samples_for_update();
+            generate(*vertical_ground, vertical);
+            // an independent sample of the same process, sigma_z = ratio sigma_x
+            correlate_second_component(samples, vertical, vertical_ratio, 0);
           }
       }
     std::vector<NodalForce> &forces = excitation.nodal_forces_for_update();

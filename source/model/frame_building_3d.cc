@@ -3,6 +3,7 @@
 #include <poundfe/model/frame_building_3d.h>
 #include <poundfe/model/plan_builder.h>
 #include <poundfe/model/plan_foundation.h>
+#include <poundfe/model/set_backs.h>
 
 #include <Eigen/Geometry>
 
@@ -19,13 +20,15 @@ namespace poundfe
     /// at `centre` (a rigid diaphragm); -1: none (the ground). A column
     /// base on a compliant foundation (`on_basemat`): `master` is the
     /// basemat's node at its centre and `v` its rocking node, and the joint
-    /// moves rigidly with it (model/plan_foundation.h).
+    /// moves rigidly with it (model/plan_foundation.h). A joint of a grid
+    /// line its storey's set-back removed is absent.
     struct Joint
     {
       Eigen::Vector3d position;
       int             h = -1, v = -1, master = -1;
       Point2          centre;
       bool            on_basemat = false;
+      bool            present    = true;
     };
 
     /// One row of T: model DOF -> coefficient.
@@ -127,17 +130,6 @@ namespace poundfe
         return model.nodes.size() - 1;
       }
 
-      static std::vector<double>
-      grid(const std::vector<double> &widths, const unsigned int n)
-      {
-        std::vector<double> x(n + 1, 0);
-        for (unsigned int j = 0; j < n; ++j)
-          x[j + 1] = x[j] + value_for(widths, j);
-        for (double &v : x)
-          v -= 0.5 * x.back();
-        return x;
-      }
-
       void
       make_base(Joint &j)
       {
@@ -154,6 +146,7 @@ namespace poundfe
         const Point2 at{j.position.x(), j.position.z()};
         j.h                    = add_node(at, false);
         j.v                    = add_node(at, true);
+        model.nodes[j.v].joint_translation_z = true;
         model.nodes[j.h].fixed = {{true, true, false}};
         model.nodes[j.v].fixed = {{true, false, false}};
       }
@@ -162,7 +155,10 @@ namespace poundfe
       make_floor(const unsigned int i, std::vector<std::vector<Joint>> &level)
       {
         const TorsionalFloor &f       = plan.building.floors[i - 1];
-        const unsigned int    n_joint = level.size() * level.front().size();
+        unsigned int          n_joint = 0;
+        for (const auto &line : level)
+          n_joint += std::count_if(line.begin(), line.end(),
+                                   [](const Joint &j) { return j.present; });
         Floor                 floor;
         floor.level         = level[0][0].position.z();
         floor.storey_height = value_for(p.storey_heights, i - 1);
@@ -175,6 +171,8 @@ namespace poundfe
         for (auto &line : level)
           for (Joint &j : line)
             {
+              if (!j.present)
+                continue;
               const Point2 at{j.position.x(), j.position.z()};
               if (rigid)
                 {
@@ -188,28 +186,31 @@ namespace poundfe
                   floor.nodes.push_back(j.h);
                 }
               j.v = add_node(at, true);
+              model.nodes[j.v].joint_translation_z = true;
               model.dof_masses.push_back({n_dofs_per_node * unsigned(j.v), f.mass / n_joint}); // uz
             }
         building.floors.push_back(floor);
-        building.plan.push_back({f.mass_centre, plan.outline});
+        building.plan.push_back({f.mass_centre, slab_outline(p, plan, i)});
       }
 
       void
       make_joints()
       {
-        const std::vector<double> xs = grid(p.bay_widths, p.n_bays);
-        const std::vector<double> ys = grid(p.bay_widths_y, p.n_bays_y);
+        const std::vector<double> xs = grid_lines(p.bay_widths, p.n_bays);
+        const std::vector<double> ys = grid_lines(p.bay_widths_y, p.n_bays_y);
         double                    z  = 0;
         for (unsigned int i = 0; i <= p.n_storeys; ++i)
           {
             if (i > 0)
               z += value_for(p.storey_heights, i - 1);
             std::vector<std::vector<Joint>> level(xs.size(), std::vector<Joint>(ys.size()));
+            const KeptGrid kept = kept_grid(p, std::max(i, 1u)); // the base: storey 1's
             for (unsigned int jx = 0; jx < xs.size(); ++jx)
               for (unsigned int jy = 0; jy < ys.size(); ++jy)
                 {
                   const Point2 at        = plan.place({xs[jx], ys[jy]});
                   level[jx][jy].position = {at.x, at.y, z};
+                  level[jx][jy].present  = kept.keeps(jx, jy);
                   if (i == 0)
                     make_base(level[jx][jy]);
                 }
@@ -358,13 +359,15 @@ namespace poundfe
         for (unsigned int jx = 0; jx < level.size(); ++jx)
           for (unsigned int jy = 0; jy < level[jx].size(); ++jy)
             {
+              if (!level[jx][jy].present) // set back: no column, no beam from here
+                continue;
               const std::string at = std::to_string(jx + 1) + "." + std::to_string(jy + 1);
               add_member({{&below[jx][jy], &level[jx][jy]}}, column_axis, column,
                          MemberKind::column, 2 * i - 1, "C" + s + at);
-              if (jx + 1 < level.size())
+              if (jx + 1 < level.size() && level[jx + 1][jy].present)
                 add_member({{&level[jx][jy], &level[jx + 1][jy]}}, vertical, beam, MemberKind::beam,
                            2 * i, "BX" + s + at);
-              if (jy + 1 < level[jx].size())
+              if (jy + 1 < level[jx].size() && level[jx][jy + 1].present)
                 add_member({{&level[jx][jy], &level[jx][jy + 1]}}, vertical, beam, MemberKind::beam,
                            2 * i, "BY" + s + at);
             }

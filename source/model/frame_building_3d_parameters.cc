@@ -1,11 +1,16 @@
 // The entries of a 3D frame building (Model/Dimension = 3, Type = frame):
 // the bays along y, the second bending axis and the twist of the sections,
 // the columns' local axes and the floor diaphragm (model/frame_building_3d.h,
-// doc/theory.md §1.15).
+// doc/theory.md §1.15), and the set-backs (model/set_backs.h).
 #include <poundfe/base/numbers.h>
 #include <poundfe/model/parameters.h>
+#include <poundfe/model/plan_builder.h>
+#include <poundfe/model/set_backs.h>
 
 #include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <sstream>
 
 #include <numeric>
 
@@ -61,6 +66,14 @@ namespace poundfe
     prm.add_parameter("Beam Avy", beam_shear_area_y,
                       "[3D frame] Beam shear area for horizontal shear (with Beam Iz). 0: "
                       "no shear deformation. One or per floor. Unit: m^2.");
+    prm.add_parameter("Set-backs", set_backs_text,
+                      "[3D frame] Set-backs, separated by ';', each 'storey: n_-x n_+x n_-y "
+                      "n_+y': from that storey (2 or above) up to the next entry, the "
+                      "storeys keep the grid less n bays on each side (-x, +x, -y, +y, "
+                      "counted on the whole grid; no storey wider than the one below). "
+                      "The floors' slab outline, mass centre and polar moment follow the "
+                      "reduced plan, e.g. '4: 0 1 0 0; 6: 1 1 0 0'. Unit: count.",
+                      Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Diaphragm", diaphragm,
                       "[3D frame] rigid: each floor a rigid diaphragm, its joints slaved "
                       "exactly to (ux, uy, rz) at the mass centre (which carries the floor "
@@ -125,5 +138,121 @@ namespace poundfe
     const double lx = total(bay_widths, n_bays);
     const double ly = n_bays_y > 0 ? total(bay_widths_y, n_bays_y) : 1e-3 * lx;
     plan.dimensions = {lx, ly};
+    parse_set_backs(*this, input, s);
+  }
+
+  // Set-backs (include/poundfe/model/set_backs.h).
+  std::vector<double>
+  grid_lines(const std::vector<double> &widths, const unsigned int n_bays)
+  {
+    std::vector<double> x(n_bays + 1, 0);
+    for (unsigned int j = 0; j < n_bays; ++j)
+      x[j + 1] = x[j] + value_for(widths, j);
+    for (double &v : x)
+      v -= 0.5 * x.back();
+    return x;
+  }
+
+  KeptGrid
+  kept_grid(const BuildingParameters &p, const unsigned int storey)
+  {
+    std::array<unsigned int, 4> removed{{0, 0, 0, 0}};
+    for (const BuildingParameters::SetBack &s : p.set_backs) // by increasing storey
+      if (s.storey <= storey)
+        removed = s.removed;
+    KeptGrid kept;
+    kept.x = {{removed[0], p.n_bays - removed[1]}};
+    kept.y = {{removed[2], p.n_bays_y - removed[3]}};
+    return kept;
+  }
+
+  FloorRectangle
+  floor_rectangle(const BuildingParameters &p, const unsigned int storey)
+  {
+    FloorRectangle rectangle;
+    rectangle.dimensions = {p.plan.dimensions[0], p.plan.dimensions[1]};
+    if (p.set_backs.empty() || storey < p.set_backs.front().storey)
+      return rectangle; // the whole plan: exactly as without set-backs
+    const KeptGrid            kept = kept_grid(p, storey);
+    const std::vector<double> xs   = grid_lines(p.bay_widths, p.n_bays);
+    rectangle.centre.x             = 0.5 * (xs[kept.x[0]] + xs[kept.x[1]]);
+    rectangle.dimensions.x         = xs[kept.x[1]] - xs[kept.x[0]];
+    if (p.n_bays_y > 0) // a line of columns keeps its thin slab
+      {
+        const std::vector<double> ys = grid_lines(p.bay_widths_y, p.n_bays_y);
+        rectangle.centre.y           = 0.5 * (ys[kept.y[0]] + ys[kept.y[1]]);
+        rectangle.dimensions.y       = ys[kept.y[1]] - ys[kept.y[0]];
+      }
+    return rectangle;
+  }
+
+  namespace
+  {
+    /// One 'storey: n_-x n_+x n_-y n_+y' entry.
+    BuildingParameters::SetBack
+    parse_set_back(const BuildingParameters &p, const InputFile &input, const std::string &path,
+                   const std::string &entry)
+    {
+      BuildingParameters::SetBack s;
+      std::istringstream          fields(entry);
+      std::string                 storey, rest;
+      const auto                  bad = [&](const std::string &why) {
+        input.fail(path, "'" + entry + "': " + why);
+      };
+      if (!std::getline(fields, storey, ':'))
+        bad("expected 'storey: bays removed on the -x +x -y +y sides'");
+      const std::optional<unsigned long> n = parse_count(trimmed(storey), 1u << 20);
+      if (!n || fields.eof())
+        bad("expected 'storey: bays removed on the -x +x -y +y sides'");
+      s.storey = *n;
+      for (unsigned int &r : s.removed)
+        if (!read_number(fields, r))
+          bad("expected four whole numbers of bays after the storey (-x +x -y +y)");
+      if (fields >> rest)
+        bad("expected four whole numbers of bays after the storey (-x +x -y +y), got more");
+      if (s.storey < 2 || s.storey > p.n_storeys)
+        bad("storey " + std::to_string(s.storey) + " does not exist or is the first: a "
+            "set-back applies to storeys 2 to " + std::to_string(p.n_storeys) +
+            " (storey 1 stands on the whole grid)");
+      if (s.removed[0] + s.removed[1] >= p.n_bays)
+        bad("removes " + std::to_string(s.removed[0] + s.removed[1]) + " of the " +
+            std::to_string(p.n_bays) + " bays along x: a storey keeps at least one bay");
+      if (s.removed[2] + s.removed[3] > 0 && s.removed[2] + s.removed[3] >= p.n_bays_y)
+        bad("removes " + std::to_string(s.removed[2] + s.removed[3]) + " of the " +
+            std::to_string(p.n_bays_y) + " bays along y: a storey keeps at least one bay");
+      return s;
+    }
+  } // namespace
+
+  void
+  parse_set_backs(BuildingParameters &p, const InputFile &input, const std::string &section)
+  {
+    const std::string path = section + "Set-backs";
+    p.set_backs.clear();
+    for (const std::string &text : p.set_backs_text)
+      {
+        const std::string entry = trimmed(text);
+        if (!entry.empty())
+          p.set_backs.push_back(parse_set_back(p, input, path, entry));
+      }
+    std::sort(p.set_backs.begin(), p.set_backs.end(),
+              [](const auto &a, const auto &b) { return a.storey < b.storey; });
+    std::array<unsigned int, 4> below{{0, 0, 0, 0}}; // storey 1: the whole grid
+    unsigned int                below_storey = 1;
+    for (const BuildingParameters::SetBack &s : p.set_backs)
+      {
+        if (s.storey == below_storey)
+          input.fail(path, "storey " + std::to_string(s.storey) + " is given twice");
+        for (unsigned int side = 0; side < 4; ++side)
+          if (s.removed[side] < below[side])
+            input.fail(path, "storey " + std::to_string(s.storey) + " is wider than storey " +
+                               std::to_string(s.storey - 1) + " on its " +
+                               std::array<const char *, 4>{{"-x", "+x", "-y", "+y"}}[side] +
+                               " side (" + std::to_string(s.removed[side]) + " bays removed, " +
+                               std::to_string(below[side]) + " below): its columns would "
+                               "stand on no joint");
+        below        = s.removed;
+        below_storey = s.storey;
+      }
   }
 } // namespace poundfe

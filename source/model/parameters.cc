@@ -466,6 +466,11 @@ namespace poundfe
     for (unsigned int b = 0; b < buildings.size(); ++b)
       buildings[b].finalize(input, b + 1);
     input.positive("Model/Gravity", gravity);
+    for (unsigned int b = 0; b < buildings.size(); ++b)
+      if (!buildings[b].set_backs_text.empty() &&
+          !(dimension == 3 && buildings[b].type == BuildingType::frame))
+        input.fail("Building " + std::to_string(b + 1) + "/Set-backs",
+                   "set-backs are for 3D frames (Model/Dimension = 3, Type = frame)");
     if (dimension == 3)
       finalize_plan(input);
     if (buildings.size() > 1)

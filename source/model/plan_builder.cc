@@ -5,6 +5,7 @@
 #include <poundfe/model/plan_builder.h>
 #include <poundfe/model/plan_contact_geometry.h>
 #include <poundfe/model/plan_foundation.h>
+#include <poundfe/model/set_backs.h>
 #include <poundfe/model/torsional_shear_building.h>
 
 #include <algorithm>
@@ -34,16 +35,20 @@ namespace poundfe
     local_building(const BuildingParameters &p)
     {
       const PlanParameters  &plan = p.plan;
-      const double           lx = plan.dimensions[0], ly = plan.dimensions[1];
       TorsionalShearBuilding building;
+      std::vector<Point2>    dimensions; // of each floor's slab (set-backs: model/set_backs.h)
       for (unsigned int i = 0; i < p.n_storeys; ++i)
         {
+          const FloorRectangle slab = floor_rectangle(p, i + 1);
+          const double         lx = slab.dimensions.x, ly = slab.dimensions.y;
+          dimensions.push_back(slab.dimensions);
           TorsionalFloor floor;
           floor.mass         = value_for(p.floor_masses, i);
           floor.polar_moment = plan.polar_moments.empty() ?
                                  floor.mass * (lx * lx + ly * ly) / 12 :
                                  value_for(plan.polar_moments, i);
-          floor.mass_centre  = {plan.mass_eccentricity[0], plan.mass_eccentricity[1]};
+          floor.mass_centre  = {slab.centre.x + plan.mass_eccentricity[0],
+                                slab.centre.y + plan.mass_eccentricity[1]};
           for (const PlaneEntry &e : storey_planes(p, i))
             floor.planes.push_back(
               {{std::cos(e.angle), std::sin(e.angle)}, e.position, e.stiffness});
@@ -52,7 +57,7 @@ namespace poundfe
       if (plan.accidental == "none")
         return building;
       const bool shift_x = plan.accidental[1] == 'x';
-      return with_accidental_eccentricity(building, {{lx, ly}},
+      return with_accidental_eccentricity(building, dimensions,
                                           shift_x ? PlanDirection::y : PlanDirection::x,
                                           plan.accidental[0] == '-' ? -1 : 1,
                                           plan.accidental_ratio);
@@ -74,13 +79,20 @@ namespace poundfe
       return building;
     }
 
-    std::vector<Point2>
-    slab_outline(const BuildingParameters &p, const SitePlan &frame)
-    {
-      const double hx = 0.5 * p.plan.dimensions[0], hy = 0.5 * p.plan.dimensions[1];
-      return {frame.place({-hx, -hy}), frame.place({hx, -hy}), frame.place({hx, hy}),
-              frame.place({-hx, hy})};
-    }
+  } // namespace
+
+  std::vector<Point2>
+  slab_outline(const BuildingParameters &p, const SitePlan &frame, const unsigned int storey)
+  {
+    const FloorRectangle slab = floor_rectangle(p, storey);
+    const double         hx = 0.5 * slab.dimensions.x, hy = 0.5 * slab.dimensions.y;
+    const Point2         c  = slab.centre;
+    return {frame.place({c.x - hx, c.y - hy}), frame.place({c.x + hx, c.y - hy}),
+            frame.place({c.x + hx, c.y + hy}), frame.place({c.x - hx, c.y + hy})};
+  }
+
+  namespace
+  {
 
     /// The storeys' planes; on a compliant foundation (`rocking_node` >= 0)
     /// the base node moves about `base_point` and the planes take the
@@ -264,7 +276,7 @@ namespace poundfe
     plan.centre   = centre;
     plan.angle    = p.plan.rotation * M_PI / 180;
     plan.building = placed(local_building(p), plan);
-    plan.outline  = slab_outline(p, plan);
+    plan.outline  = slab_outline(p, plan, 1);
     return plan;
   }
 

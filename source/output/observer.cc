@@ -27,7 +27,7 @@ namespace poundfe
   {}
 
   void
-  ResponseView::set_step(const unsigned long step, const std::array<double, 2> &ground_acceleration)
+  ResponseView::set_step(const unsigned long step, const std::array<double, 3> &ground_acceleration)
   {
     step_index = step;
     ground     = ground_acceleration;

@@ -320,6 +320,11 @@ namespace poundfe
                       }};
             }
           case RecordedQuantity::ground_motion:
+            if (state.has_vertical_ground_motion()) // Components = 3: the vertical one too
+              return {{"ground_acceleration_m_s2", "ground_acceleration_z_m_s2"},
+                      [](const ResponseView &s, std::vector<double> &to) {
+                        to = {s.ground_acceleration(), s.ground_acceleration_z()};
+                      }};
             return {{"ground_acceleration_m_s2"}, [](const ResponseView &s, std::vector<double> &to) {
                       to.assign(1, s.ground_acceleration());
                     }};

@@ -286,8 +286,11 @@ namespace poundfe
       .value("pga_m_s2", motion.peak())
       .value("pga_g", motion.peak() / standard_gravity)
       .value("duration_s", motion.duration())
-      .value("time_step_s", motion.time_step())
-      .end_object();
+      .value("time_step_s", motion.time_step());
+    if (excitation.has_vertical()) // Components = 3
+      json.value("vertical_description", excitation.vertical_ground_motion().description())
+        .value("vertical_pga_m_s2", excitation.vertical_ground_motion().peak());
+    json.end_object();
     write_buildings(json);
     if (peaks.n_hysteretic() > 0)
       write_hinges(json, state);

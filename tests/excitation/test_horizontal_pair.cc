@@ -7,6 +7,8 @@
 // M = I, r_x = (1, 0), r_y = (0, 1): p = -(a_x, a_y).
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/stochastic.h>
+#include <poundfe/excitation/stochastic_load.h>
+#include <poundfe/model/model.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -124,4 +126,69 @@ BOOST_AUTO_TEST_CASE(independent_equal_pair_is_unchanged)
   correlate_second_component(first, second, 0.5, 1); // fully correlated: gamma g_1
   for (unsigned int k = 0; k < 3; ++k)
     BOOST_TEST(second[k] == 0.5 * first[k]);
+}
+
+// The vertical component of a stochastic motion (Components = 3; theory
+// §1.12, "The vertical component"): a_z = gamma_v z_3, z_3 an independent
+// sample of the same process from (Vertical seed, realization). Over 300
+// realizations drawn as Monte Carlo draws them (StochasticLoad), pooled
+// every 0.5 s as above: Var a_z / Var a_x = gamma_v^2 and corr(a_x, a_z) =
+// 0, with the same tolerances (about four standard errors); and realization
+// 0 of StochasticLoad is the motion a run makes (make_excitation's path:
+// make_ground_motion, add_vertical_component), to 1e-12.
+BOOST_AUTO_TEST_CASE(vertical_component_has_the_vertical_ratio)
+{
+  GroundMotionParameters g;
+  g.type               = GroundMotionType::kanai_tajimi;
+  g.soil               = Soil::firm;
+  g.method             = StochasticMethod::spectral_representation;
+  g.cutoff_frequency   = 100;
+  g.spectral_intensity = 0.01;
+  g.duration           = 20;
+  g.sample_interval    = 0.02;
+  g.envelope           = EnvelopeKind::none;
+  g.seed               = 11;
+  g.n_components       = 3;
+  g.vertical_ratio     = 0.6;
+  LinearSystem system;
+  system.mass.resize(2, 2);
+  system.mass.setIdentity();
+  system.influence   = Eigen::Vector2d(1, 0);
+  system.influence_z = Eigen::Vector2d(0, 1);
+  const InputFile input;
+  const Model     model; // frames only: no shear building to refuse it
+  Excitation      run(system, make_ground_motion(g, input, g.sample_interval), {});
+  add_vertical_component(run, system, model, g, input, g.sample_interval);
+  BOOST_REQUIRE(run.has_vertical());
+
+  Excitation           drawn = run;
+  const StochasticLoad load(g, g.sample_interval, drawn);
+  std::vector<double>  xi;
+  Vector               p(2), q(2);
+  double               sxx = 0, szz = 0, sxz = 0, worst = 0;
+  for (unsigned int r = 0; r < 300; ++r)
+    {
+      load.standard_normals(r, xi);
+      load.apply(xi, drawn);
+      for (double t = 1; t < 19; t += 0.5)
+        {
+          drawn.load(t, p);
+          sxx += p[0] * p[0];
+          szz += p[1] * p[1];
+          sxz += p[0] * p[1];
+          if (r == 0)
+            {
+              run.load(t, q);
+              worst = std::max(worst, (p - q).cwiseAbs().maxCoeff() / q.cwiseAbs().maxCoeff());
+            }
+        }
+    }
+  const double ratio = szz / sxx, correlation = sxz / std::sqrt(sxx * szz);
+  BOOST_TEST_MESSAGE("vertical component: variance ratio " << ratio << " (gamma_v^2 = 0.36), "
+                                                          << "correlation " << correlation
+                                                          << ", realization 0 against the run "
+                                                          << worst);
+  BOOST_TEST(std::abs(ratio / 0.36 - 1) < 0.08);
+  BOOST_TEST(std::abs(correlation) < 0.04);
+  BOOST_TEST(worst <= 1e-12);
 }

@@ -58,6 +58,10 @@ namespace poundfe
     /// Dimension 3 (empty in 2D): 1 on every uy (plan) equation, and 1 on
     /// every θz equation (the rotation about Z, for effective modal masses).
     Vector influence_y, influence_rz;
+    /// Influence vector of a vertical ground motion: 1 on every vertical
+    /// translation, uz of each 3D frame joint (Model/Dimension = 3) or uy
+    /// of each node (2D); 0 on a shear building's floors, which have none.
+    Vector influence_z;
     /// Rayleigh coefficients (a0, a1) used for each building.
     std::vector<std::array<double, 2>> rayleigh;
 

@@ -51,6 +51,17 @@ namespace poundfe
     /// In-place access for a new realization (StochasticLoad).
     GroundMotion &second_ground_motion_for_update() { return second; }
 
+    /// Components = 3: the vertical component a_z, on the influence vector
+    /// r_z of the vertical translations (LinearSystem::influence_z); the
+    /// load gains -M r_z a_z, not rotated by the incidence angle.
+    void set_vertical(const LinearSystem &system, GroundMotion vertical);
+    bool has_vertical() const { return vertical_motion; }
+    const GroundMotion &vertical_ground_motion() const { return vertical; }
+    /// In-place access for a new realization (StochasticLoad).
+    GroundMotion &vertical_ground_motion_for_update() { return vertical; }
+    /// (a_x, a_y, a_z) at t (a_z = 0 without a vertical component).
+    std::array<double, 3> ground_acceleration_vector(double t) const;
+
     /// p(t) into `load` (sized n_equations).
     void load(double t, Vector &load) const;
     /// a_x(t): the first component, or the x component of a rotated pair.
@@ -69,6 +80,9 @@ namespace poundfe
     GroundMotion            second;
     double                  cos_angle = 1, sin_angle = 0;
     Vector                  mass_times_influence_y;
+    bool                    vertical_motion = false;
+    GroundMotion            vertical;
+    Vector                  mass_times_influence_z;
   };
 
   /// Penzien & Watabe (1975): the two horizontal components are uncorrelated
@@ -86,6 +100,14 @@ namespace poundfe
   void add_horizontal_component(Excitation &excitation, const LinearSystem &system,
                                 const Model &model, const GroundMotionParameters &parameters,
                                 const InputFile &input, double time_step);
+
+  /// Components = 3: the vertical component of `parameters` onto
+  /// `excitation` (after add_horizontal_component). Throws InputError for a
+  /// model with a shear building (it has no vertical DOF) or a bad third
+  /// record.
+  void add_vertical_component(Excitation &excitation, const LinearSystem &system,
+                              const Model &model, const GroundMotionParameters &parameters,
+                              const InputFile &input, double time_step);
 
   /// The ground motion of `Ground motion` (generated, recorded or none);
   /// `time_step` is the analysis time step, `input` names the file in

@@ -49,6 +49,12 @@ namespace poundfe
     double       intensity_ratio    = 1.0; // sigma_2 / sigma_1 (stochastic pair)
     double       correlation        = 0.0; // of the stochastic pair before the rotation
 
+    // The vertical component (Components = 3): a record, or an independent
+    // sample of the same process scaled by vertical_ratio.
+    std::string  third_record_file = "";
+    unsigned int vertical_seed     = 0;          // 0: Seed + 2
+    double       vertical_ratio    = 2.0 / 3.0; // sigma_z / sigma_x
+
     // Recorded motions.
     std::string      record_file       = "";
     RecordFileFormat record_format     = RecordFileFormat::automatic;
@@ -92,6 +98,12 @@ namespace poundfe
     /// The parameters of the second horizontal component: the second
     /// record, or the same process with the second seed.
     GroundMotionParameters second_component() const;
+    /// Components = 3: a vertical component besides the horizontal ones.
+    bool has_vertical() const { return n_components == 3; }
+    /// The parameters of the vertical component: the third record, or the
+    /// same process with the vertical seed (scaled by vertical_ratio
+    /// afterwards: correlate_second_component with no correlation).
+    GroundMotionParameters vertical_component() const;
 
     /// Declare the `Ground motion` section (entered and left here).
     void declare(dealii::ParameterHandler &prm);
@@ -102,6 +114,11 @@ namespace poundfe
   private:
     /// The intensity ratio and correlation of a stochastic pair.
     void check_pair(const InputFile &input) const;
+    /// The record files of the second and vertical components against
+    /// Type and Components.
+    void check_component_files(const InputFile &input) const;
+    /// The vertical ratio and seed against Components.
+    void check_vertical(const InputFile &input) const;
   };
 
   struct NodalForceParameters

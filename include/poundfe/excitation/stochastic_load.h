@@ -1,9 +1,10 @@
 // The random part of an input's loading: the stochastic ground motion and the
 // white-noise nodal forces, as one function of a vector of independent
-// standard normals xi = [ground..., second ground..., force 1..., force 2...,
-// ...] (the second horizontal component of a 3D model's stochastic pair, its
-// normals those of (Second seed, realization), so that a realization is the
-// run of the same Realization). Monte Carlo
+// standard normals xi = [ground..., second ground..., vertical ground...,
+// force 1..., force 2..., ...] (the second horizontal component of a 3D
+// model's stochastic pair, its normals those of (Second seed, realization),
+// and the vertical component's those of (Vertical seed, realization), so
+// that a realization is the run of the same Realization). Monte Carlo
 // draws xi from (seed, realization); Subset Simulation moves it by Markov
 // chains. Set up once; apply() writes a realization into an Excitation in
 // place, so a new realization never rebuilds the model or the excitation.
@@ -49,6 +50,9 @@ namespace poundfe
     std::optional<MotionGenerator> second_ground; // a 3D model's stochastic pair
     double                         intensity_ratio = 1, correlation = 0;
     std::uint64_t                  second_seed = 0;
+    std::optional<MotionGenerator> vertical_ground; // Components = 3
+    double                         vertical_ratio = 1;
+    std::uint64_t                  vertical_seed  = 0;
     std::vector<unsigned int>      noise_forces; // indices in Excitation::nodal_forces()
     std::vector<double>            noise_scales; // sqrt(2 pi S0 / dt)
     std::vector<unsigned int>      noise_lengths;

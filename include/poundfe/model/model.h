@@ -64,6 +64,10 @@ namespace poundfe
     /// joint's (uz, rx, ry), or a hinge's two relative rotations (model/
     /// frame_building_3d.h). The ground's influence skips it.
     bool                     generalized = false;
+    /// A generalized node that is a 3D frame joint's (uz, rx, ry): its
+    /// slot 0 is a vertical translation (the vertical ground motion's
+    /// influence), unlike a hinge's or a foundation's rotations.
+    bool                     joint_translation_z = false;
     unsigned int             building = 0;
     std::array<bool, 3>      fixed{{false, false, false}};
     /// A hinge node shares the translations (ux, uy) of this node; -1: none.

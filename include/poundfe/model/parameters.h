@@ -69,6 +69,15 @@ namespace poundfe
     std::vector<double> beam_second_moment_z;
     std::vector<double> beam_torsion_constant;
     std::string         diaphragm = "rigid"; // rigid|none
+    /// A set-back (model/set_backs.h): from `storey` up to the next entry,
+    /// the bays removed from the full grid on the sides -x, +x, -y, +y.
+    struct SetBack
+    {
+      unsigned int                storey = 0; // 1-based
+      std::array<unsigned int, 4> removed{{0, 0, 0, 0}};
+    };
+    std::vector<std::string> set_backs_text; // 'storey: x- x+ y- y+' entries
+    std::vector<SetBack>     set_backs;      // parsed, by increasing storey
     // Shear areas (Timoshenko; 0: no shear deformation), one or per storey
     // (floor): Avz goes with Column I / Beam I, Avy with Column Iz / Beam Iz.
     std::vector<double> column_shear_area_y{0.0}, column_shear_area_z{0.0};

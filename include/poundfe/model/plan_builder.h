@@ -41,6 +41,12 @@ namespace poundfe
   /// Building p with its plan centre at `centre`.
   SitePlan site_plan(const BuildingParameters &p, const Point2 &centre);
 
+  /// The slab outline of floor `storey` (1-based) of building p placed by
+  /// `frame`, counter-clockwise: Plan/Plan dimensions, or a 3D frame's
+  /// floor after its set-backs (model/set_backs.h).
+  std::vector<Point2> slab_outline(const BuildingParameters &p, const SitePlan &frame,
+                                   unsigned int storey);
+
   /// Half the extent along the site's x of building p's rotated slab.
   double plan_half_width(const BuildingParameters &p);
 

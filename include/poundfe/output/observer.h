@@ -53,14 +53,21 @@ namespace poundfe
                  const NonlinearElements &elements, const TimeStepper &integrator);
 
     /// Called by the time loop once per step, before the observers, with
-    /// the ground acceleration (a_x, a_y) (a_y = 0 without a horizontal pair).
-    void set_step(unsigned long step, const std::array<double, 2> &ground_acceleration);
+    /// the ground acceleration (a_x, a_y, a_z) (a_y = 0 without a horizontal
+    /// pair, a_z = 0 without a vertical component).
+    void set_step(unsigned long step, const std::array<double, 3> &ground_acceleration);
+    /// Whether the run has a vertical ground motion (Components = 3): set
+    /// once, before the observers are made.
+    void set_vertical_ground_motion(bool vertical) { vertical_ground = vertical; }
+    bool has_vertical_ground_motion() const { return vertical_ground; }
 
     unsigned long step() const { return step_index; }
     double        time() const { return integrator.time(); }
     double        ground_acceleration() const { return ground[0]; }
     /// a_y: a 3D model's ground acceleration along y (0 in 2D).
     double        ground_acceleration_y() const { return ground[1]; }
+    /// a_z: the vertical ground acceleration, upward (0 without one).
+    double        ground_acceleration_z() const { return ground[2]; }
     const Vector &displacement() const { return integrator.displacement(); }
     const Vector &velocity() const { return integrator.velocity(); }
     const Vector &acceleration() const { return integrator.acceleration(); }
@@ -83,7 +90,8 @@ namespace poundfe
   private:
     const TimeStepper &integrator;
     unsigned long            step_index = 0;
-    std::array<double, 2>    ground{{0, 0}};
+    std::array<double, 3>    ground{{0, 0, 0}};
+    bool                     vertical_ground = false;
   };
 
   /// Watches a time history: initialize() sees the initial state (step 0),
