@@ -11,6 +11,27 @@ namespace poundfe
 {
   namespace Patterns = dealii::Patterns;
 
+  namespace
+  {
+    /// The bidirectional law (Park, Wen & Ang 1986) is published for n = 2
+    /// without degradation; its |z|^(n-2) extension needs n >= 2.
+    void
+    check_bidirectional_bouc_wen(const InputFile &input, const std::string &bw,
+                                 const BoucWenParameters &h)
+    {
+      const std::string why = " (Plan/Storey law or Hinges/Biaxial interaction is bidirectional)";
+      if (!(h.n >= 2))
+        input.fail(bw + "n", "the bidirectional Bouc-Wen law needs n >= 2, got " +
+                               number_text(h.n) + why);
+      for (const auto &[name, value] : {std::pair<const char *, double>{"delta A", h.delta_A},
+                                        {"delta nu", h.delta_nu},
+                                        {"delta eta", h.delta_eta}})
+        if (value != 0)
+          input.fail(bw + name, "the bidirectional Bouc-Wen law has no degradation: must be 0" +
+                                  why);
+    }
+  } // namespace
+
   const NameTable<BuildingType> &
   building_type_names()
   {
@@ -186,6 +207,12 @@ namespace poundfe
                       "[frame, mesh] k = factor x 6 E I / L where Stiffness is 0 (stiff "
                       "hinges keep the elastic frame nearly unchanged; Ibarra & Krawinkler "
                       "use 10). Unit: dimensionless.");
+    prm.add_parameter("Biaxial interaction", hinge_biaxial,
+                      "[3D frame] false: the hinges about a member end's two bending axes "
+                      "are independent uniaxial Bouc-Wen laws; true: one Park-Wen-Ang "
+                      "bidirectional Bouc-Wen law on both rotations (circular yield surface "
+                      "in the moments over their yield moments; Bouc-Wen n >= 2, no "
+                      "degradation). Unit: -.");
     prm.leave_subsection();
   }
 
@@ -329,6 +356,8 @@ namespace poundfe
         input.non_negative(bw + "delta A", h.delta_A);
         input.non_negative(bw + "delta nu", h.delta_nu);
         input.non_negative(bw + "delta eta", h.delta_eta);
+        if (hinge_biaxial || plan.storey_law != "planes")
+          check_bidirectional_bouc_wen(input, bw, h);
       }
     if (damping_type == RayleighDamping::Kind::modes)
       {
@@ -395,11 +424,10 @@ namespace poundfe
       {
         const std::string s = "Building " + std::to_string(b + 1) + "/";
         if (geometric_nonlinearity != GeometricNonlinearity::none &&
-            buildings[b].type == BuildingType::shear)
+            buildings[b].type == BuildingType::shear && buildings[b].foundation.enabled())
           input.fail("Model/Geometric nonlinearity",
-                     "P-Delta with Dimension = 3 is for frames (from their columns' axial "
-                     "forces); building " + std::to_string(b + 1) +
-                       " is a torsionally coupled shear building");
+                     "P-Delta of a torsionally coupled shear building takes a fixed base; "
+                     "building " + std::to_string(b + 1) + " has a compliant foundation");
         if (buildings[b].type == BuildingType::mesh)
           input.fail(s + "Type", "Dimension = 3 takes shear buildings and frames; meshes "
                                  "are planar");
