@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace poundfe
 {
@@ -23,10 +24,10 @@ namespace poundfe
       if (!(h.n >= 2))
         input.fail(bw + "n", "the bidirectional Bouc-Wen law needs n >= 2, got " +
                                number_text(h.n) + why);
-      for (const auto &[name, value] : {std::pair<const char *, double>{"delta A", h.delta_A},
-                                        {"delta nu", h.delta_nu},
-                                        {"delta eta", h.delta_eta}})
-        if (value != 0)
+      using Entry = std::pair<const char *, double>;
+      for (const Entry &entry : {Entry{"delta A", h.delta_A}, Entry{"delta nu", h.delta_nu},
+                                 Entry{"delta eta", h.delta_eta}})
+        if (const auto &[name, value] = entry; value != 0)
           input.fail(bw + name, "the bidirectional Bouc-Wen law has no degradation: must be 0" +
                                   why);
     }
@@ -356,8 +357,6 @@ namespace poundfe
         input.non_negative(bw + "delta A", h.delta_A);
         input.non_negative(bw + "delta nu", h.delta_nu);
         input.non_negative(bw + "delta eta", h.delta_eta);
-        if (hinge_biaxial || plan.storey_law != "planes")
-          check_bidirectional_bouc_wen(input, bw, h);
       }
     if (damping_type == RayleighDamping::Kind::modes)
       {
@@ -434,6 +433,8 @@ namespace poundfe
         if (buildings[b].type == BuildingType::frame)
           buildings[b].finalize_frame_3d(input, s);
         buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
+        if (buildings[b].plan.storey_law != "planes" || buildings[b].hinge_biaxial)
+          check_bidirectional_bouc_wen(input, s + "Bouc-Wen/", buildings[b].hysteresis);
         buildings[b].foundation.finalize_3d(input, s);
       }
   }
@@ -461,7 +462,8 @@ namespace poundfe
                "p-delta: the geometric stiffness of the gravity loads (every mass times "
                "Gravity), linearised and added to K once: frame members from their axial "
                "forces in a linear static gravity analysis (3D frames too: z up), "
-               "shear-building storeys -P/h with P the weight above (2D only). none: "
+               "shear-building storeys -P/h with P the weight above (3D shear: also "
+               "-P r^2/h in torsion, r the polar radius of gyration of the floors above). none: "
                "small displacements. Unit: -.",
                geometric_nonlinearity_names());
     prm.add_parameter("Dimension", dimension,

@@ -143,7 +143,7 @@ BOOST_AUTO_TEST_CASE(tangent_matches_finite_differences)
     }
   u.tail<3>() += Eigen::Vector3d(0.003, -0.004, 0.0005);
   BOOST_REQUIRE(element.set_trial(u, v));
-  Eigen::Matrix2d d;
+  Eigen::MatrixXd d(2, 2);
   element.tangent_change(0, d);
   const Eigen::MatrixXd b = element.tangent_basis();
   const Eigen::Matrix2d k_ref = Eigen::Vector2d(1.5e7, 1.2e7).asDiagonal();

@@ -139,7 +139,9 @@ BOOST_AUTO_TEST_CASE(circular_orbit_stays_on_the_unit_circle)
   BOOST_TEST_MESSAGE("circular orbit: max |z| " << largest << ", min |z| of the last cycle "
                                                 << smallest_last << ", lag error " << lag_error
                                                 << " (psi " << std::asin(1 / rho) << ")");
-  BOOST_CHECK_LE(largest, 1 + 1e-12);
+  // the ODE keeps |z| <= 1 exactly; its trapezoidal map only to O(h^2)
+  // (measured 1 + 3.1e-7 at h = 2 pi rho u_y / 4000)
+  BOOST_CHECK_LE(largest, 1 + 1e-6);
   BOOST_CHECK_GE(smallest_last, 0.99);
   BOOST_CHECK_LE(lag_error, 1e-5); // rad; the step's O(h^2) error, h = 2 pi rho / 4000
 }
