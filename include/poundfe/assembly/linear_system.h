@@ -10,10 +10,7 @@
 // weight of the floors above the storey (the overturning P Delta balanced by
 // a storey shear P Delta / h).
 // Dimension 3: each resisting plane adds k a a^T (a its PlaneLink
-// coefficients) and each floor its polar moment on θz (doc/theory.md §1.12);
-// with P-Delta each storey -P/h on its drift along x and y and -P r^2/h on
-// its twist, about the centroid of the masses above (r their polar radius of
-// gyration; theory §1.12).
+// coefficients) and each floor its polar moment on θz (doc/theory.md §1.12).
 // Sources: Przemieniecki (1968) (geometric stiffness); McGuire, Gallagher & Ziemian, Matrix
 // Structural Analysis, 2nd ed. (2000), §9.3; Wilson & Habibullah, Earthquake
 // Spectra 3 (1987) 289-298 (the linearised P-Delta of buildings).
