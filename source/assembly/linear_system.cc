@@ -237,6 +237,69 @@ namespace poundfe
       return r;
     }
 
+    /// The rigid-floor motion q = (ux, uy, θz) about `centre` moved to `point`:
+    /// q(point) = T q(centre).
+    Eigen::Matrix3d
+    floor_transfer(const Point2 &centre, const Point2 &point)
+    {
+      Eigen::Matrix3d t = Eigen::Matrix3d::Identity();
+      t(0, 2)           = -(point.y - centre.y);
+      t(1, 2)           = point.x - centre.x;
+      return t;
+    }
+
+    /// P-Delta of the storeys of torsionally coupled shear buildings
+    /// (doc/theory.md §1.12): the weight P of the floors above storey i,
+    /// carried down at the floors' mass, acts on the storey's drift Δ(p) at
+    /// every point p as P Δ / h: about the centroid G of those masses
+    ///   K_G = -(P / h) B^T diag(1, 1, r^2) B,  B = [-T(C_{i-1}, G), T(C_i, G)],
+    /// r^2 = sum_j (I_j + m_j |C_j - G|^2) / sum_j m_j the polar radius of
+    /// gyration of the masses above about G (Wilson & Habibullah 1987).
+    void
+    add_plan_storey_p_delta(const Model &model, Triplets &triplets)
+    {
+      std::vector<std::array<double, 2>> mass_of_node(model.nodes.size(), {{0, 0}});
+      for (const NodalMass &m : model.masses)
+        {
+          mass_of_node[m.node][0] += m.mass;
+          mass_of_node[m.node][1] += m.polar_moment;
+        }
+      for (const PlaneLink &link : model.plane_links)
+        {
+          if (link.plane != 1)
+            continue; // one per storey
+          const Building    &building = model.buildings[link.building];
+          const unsigned int i        = link.storey - 1;
+          double             mass = 0, inertia = 0;
+          Point2             g{0, 0};
+          for (unsigned int j = i; j < building.floors.size(); ++j)
+            {
+              const double m = mass_of_node[building.floors[j].nodes[0]][0];
+              mass += m;
+              g.x += m * building.plan[j].mass_centre.x;
+              g.y += m * building.plan[j].mass_centre.y;
+            }
+          g = {g.x / mass, g.y / mass};
+          for (unsigned int j = i; j < building.floors.size(); ++j)
+            {
+              const auto  &m = mass_of_node[building.floors[j].nodes[0]];
+              const Point2 c = building.plan[j].mass_centre;
+              inertia += m[1] + m[0] * ((c.x - g.x) * (c.x - g.x) + (c.y - g.y) * (c.y - g.y));
+            }
+          const Point2 below = i > 0 ? building.plan[i - 1].mass_centre : building.plan[0].mass_centre;
+          Eigen::Matrix<double, 3, 6> b;
+          b << -floor_transfer(below, g), floor_transfer(building.plan[i].mass_centre, g);
+          const double      p = model.gravity * mass, h = building.floors[i].storey_height;
+          const Eigen::Vector3d arms(1, 1, inertia / mass);
+          std::vector<unsigned int> dofs;
+          for (const unsigned int node : link.nodes)
+            for (const Component c : {Component::ux, Component::uy, Component::rz})
+              dofs.push_back(Model::dof(node, c));
+          scatter(model, dofs, Eigen::MatrixXd(-(p / h) * b.transpose() * arms.asDiagonal() * b),
+                  triplets);
+        }
+    }
+
     /// K = K_E + K_G from the gravity loads (the header's P-Delta).
     void
     add_p_delta(const Model &model, LinearSystem &system)
@@ -437,6 +500,7 @@ namespace poundfe
         scatter(model, link_dofs(link), two_node_spring(-storey_compressions[l] / height),
                 triplets);
       }
+    add_plan_storey_p_delta(model, triplets);
     return from_triplets(model.n_equations(), triplets);
   }
 

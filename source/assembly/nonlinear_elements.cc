@@ -1,4 +1,5 @@
 #include <poundfe/assembly/nonlinear_elements.h>
+#include <poundfe/elements/biaxial_element.h>
 #include <poundfe/elements/column_contact_element.h>
 #include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/elements/uniaxial_element.h>
@@ -8,6 +9,8 @@
 #include <poundfe/laws/elastic_springs.h>
 #include <poundfe/laws/friction.h>
 #include <poundfe/laws/link_laws.h>
+
+#include <deal.II/base/exceptions.h>
 
 namespace poundfe
 {
@@ -47,6 +50,44 @@ namespace poundfe
 
   namespace
   {
+    /// A hysteretic resisting plane: a uniaxial Bouc-Wen on its drift, or,
+    /// paired (Plan/Storey law = bidirectional Bouc-Wen), one bidirectional
+    /// element on the drifts of the pair, made at the pair's first plane.
+    void
+    add_plane_element(const Model &model, const unsigned int l, NonlinearElements &elements)
+    {
+      const PlaneLink &link = model.plane_links[l];
+      if (link.partner >= 0 && static_cast<unsigned int>(link.partner) < l)
+        return; // made with its partner
+      std::vector<unsigned int> dofs;
+      std::vector<double>       weights;
+      link.terms(dofs, weights);
+      std::vector<int> equations;
+      for (const unsigned int dof : dofs)
+        equations.push_back(model.equation(dof));
+      const std::string label = model.buildings[link.building].name + "_S" +
+                                std::to_string(link.storey) + "P" + std::to_string(link.plane);
+      if (link.partner < 0)
+        {
+          elements.emplace_back<UniaxialElement>(ElementKind::storey, link.building, label,
+                                                 equations, weights,
+                                                 std::make_unique<BoucWen>(link.hysteresis),
+                                                 link.stiffness);
+          return;
+        }
+      const PlaneLink          &other = model.plane_links[link.partner];
+      std::vector<unsigned int> other_dofs;
+      std::vector<double>       other_weights;
+      other.terms(other_dofs, other_weights);
+      Assert(other_dofs == dofs, dealii::ExcMessage("paired planes act on the same DOFs"));
+      elements.emplace_back<BiaxialElement>(ElementKind::storey, link.building,
+                                            label + "xP" + std::to_string(other.plane), equations,
+                                            std::array<std::vector<double>, 2>{{weights,
+                                                                                other_weights}},
+                                            BidirectionalBoucWen(link.hysteresis,
+                                                                 other.hysteresis));
+    }
+
     /// The Bouc-Wen elements: frame hinges (2D and 3D), hysteretic storeys
     /// (with the sway-rocking term on a foundation) and resisting planes.
     void
@@ -58,11 +99,26 @@ namespace poundfe
           std::array<int, 2>{{model.equation(Model::dof(hinge.member_node, Component::rz)),
                               model.equation(Model::dof(hinge.joint_node, Component::rz))}},
           std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
-      for (const Hinge3D &hinge : model.hinges_3d)
-        elements.emplace_back<UniaxialElement>(
-          ElementKind::hinge, hinge.building, hinge.label,
-          std::array<int, 2>{{model.equation(n_dofs_per_node * hinge.node + hinge.slot), -1}},
-          std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
+      for (unsigned int h = 0; h < model.hinges_3d.size(); ++h)
+        {
+          const Hinge3D &hinge = model.hinges_3d[h];
+          const int      equation = model.equation(n_dofs_per_node * hinge.node + hinge.slot);
+          if (!hinge.biaxial)
+            elements.emplace_back<UniaxialElement>(
+              ElementKind::hinge, hinge.building, hinge.label, std::array<int, 2>{{equation, -1}},
+              std::make_unique<BoucWen>(hinge.law), hinge.law.stiffness);
+          else if (hinge.slot == 0) // with the next hinge, about z at the same end
+            {
+              const Hinge3D &about_z = model.hinges_3d.at(h + 1);
+              Assert(about_z.node == hinge.node && about_z.slot == 1,
+                     dealii::ExcMessage("a biaxial hinge's two axes follow each other"));
+              elements.emplace_back<BiaxialElement>(
+                ElementKind::hinge, hinge.building, hinge.label.substr(0, hinge.label.size() - 2),
+                std::vector<int>{equation, model.equation(n_dofs_per_node * hinge.node + 1)},
+                std::array<std::vector<double>, 2>{{{1.0, 0.0}, {0.0, 1.0}}},
+                BidirectionalBoucWen(hinge.law, about_z.law));
+            }
+        }
       std::vector<unsigned int> storey_of_building(model.buildings.size(), 0);
       for (const StoreyLink &link : model.links)
         {
@@ -86,21 +142,9 @@ namespace poundfe
                                                    std::make_unique<BoucWen>(link.hysteresis),
                                                    link.stiffness);
         }
-      for (const PlaneLink &link : model.plane_links)
-        if (link.hysteretic)
-          {
-            std::vector<unsigned int> dofs;
-            std::vector<double>       weights;
-            link.terms(dofs, weights);
-            std::vector<int> equations;
-            for (const unsigned int dof : dofs)
-              equations.push_back(model.equation(dof));
-            elements.emplace_back<UniaxialElement>(
-              ElementKind::storey, link.building,
-              model.buildings[link.building].name + "_S" + std::to_string(link.storey) + "P" +
-                std::to_string(link.plane),
-              equations, weights, std::make_unique<BoucWen>(link.hysteresis), link.stiffness);
-          }
+      for (unsigned int l = 0; l < model.plane_links.size(); ++l)
+        if (model.plane_links[l].hysteretic)
+          add_plane_element(model, l, elements);
     }
 
     /// One gap: a slab against a column or a slab in plan (the element

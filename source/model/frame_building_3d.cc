@@ -284,6 +284,7 @@ namespace poundfe
             hinge.slot                  = a;
             hinge.building              = b;
             hinge.label                 = member.label + where + (a == 0 ? "_y" : "_z");
+            hinge.biaxial               = p.hinge_biaxial;
             hinge.law                   = p.hysteresis;
             hinge.law.stiffness         = stiffness;
             hinge.law.yield_deformation = yield_moment > 0

@@ -6,10 +6,32 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace poundfe
 {
   namespace Patterns = dealii::Patterns;
+
+  namespace
+  {
+    /// The bidirectional law (Park, Wen & Ang 1986) is published for n = 2
+    /// without degradation; its |z|^(n-2) extension needs n >= 2.
+    void
+    check_bidirectional_bouc_wen(const InputFile &input, const std::string &bw,
+                                 const BoucWenParameters &h)
+    {
+      const std::string why = " (Plan/Storey law or Hinges/Biaxial interaction is bidirectional)";
+      if (!(h.n >= 2))
+        input.fail(bw + "n", "the bidirectional Bouc-Wen law needs n >= 2, got " +
+                               number_text(h.n) + why);
+      using Entry = std::pair<const char *, double>;
+      for (const Entry &entry : {Entry{"delta A", h.delta_A}, Entry{"delta nu", h.delta_nu},
+                                 Entry{"delta eta", h.delta_eta}})
+        if (const auto &[name, value] = entry; value != 0)
+          input.fail(bw + name, "the bidirectional Bouc-Wen law has no degradation: must be 0" +
+                                  why);
+    }
+  } // namespace
 
   const NameTable<BuildingType> &
   building_type_names()
@@ -186,6 +208,12 @@ namespace poundfe
                       "[frame, mesh] k = factor x 6 E I / L where Stiffness is 0 (stiff "
                       "hinges keep the elastic frame nearly unchanged; Ibarra & Krawinkler "
                       "use 10). Unit: dimensionless.");
+    prm.add_parameter("Biaxial interaction", hinge_biaxial,
+                      "[3D frame] false: the hinges about a member end's two bending axes "
+                      "are independent uniaxial Bouc-Wen laws; true: one Park-Wen-Ang "
+                      "bidirectional Bouc-Wen law on both rotations (circular yield surface "
+                      "in the moments over their yield moments; Bouc-Wen n >= 2, no "
+                      "degradation). Unit: -.");
     prm.leave_subsection();
   }
 
@@ -395,17 +423,18 @@ namespace poundfe
       {
         const std::string s = "Building " + std::to_string(b + 1) + "/";
         if (geometric_nonlinearity != GeometricNonlinearity::none &&
-            buildings[b].type == BuildingType::shear)
+            buildings[b].type == BuildingType::shear && buildings[b].foundation.enabled())
           input.fail("Model/Geometric nonlinearity",
-                     "P-Delta with Dimension = 3 is for frames (from their columns' axial "
-                     "forces); building " + std::to_string(b + 1) +
-                       " is a torsionally coupled shear building");
+                     "P-Delta of a torsionally coupled shear building takes a fixed base; "
+                     "building " + std::to_string(b + 1) + " has a compliant foundation");
         if (buildings[b].type == BuildingType::mesh)
           input.fail(s + "Type", "Dimension = 3 takes shear buildings and frames; meshes "
                                  "are planar");
         if (buildings[b].type == BuildingType::frame)
           buildings[b].finalize_frame_3d(input, s);
         buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
+        if (buildings[b].plan.storey_law != "planes" || buildings[b].hinge_biaxial)
+          check_bidirectional_bouc_wen(input, s + "Bouc-Wen/", buildings[b].hysteresis);
         buildings[b].foundation.finalize_3d(input, s);
         if (buildings[b].type == BuildingType::frame && buildings[b].foundation.enabled() &&
             buildings[b].base_fixity == BaseFixity::pinned)
@@ -437,7 +466,8 @@ namespace poundfe
                "p-delta: the geometric stiffness of the gravity loads (every mass times "
                "Gravity), linearised and added to K once: frame members from their axial "
                "forces in a linear static gravity analysis (3D frames too: z up), "
-               "shear-building storeys -P/h with P the weight above (2D only). none: "
+               "shear-building storeys -P/h with P the weight above (3D shear: also "
+               "-P r^2/h in torsion, r the polar radius of gyration of the floors above). none: "
                "small displacements. Unit: -.",
                geometric_nonlinearity_names());
     prm.add_parameter("Dimension", dimension,

@@ -138,6 +138,43 @@ namespace poundfe
         }
     }
 
+    /// Plan/Storey law = bidirectional Bouc-Wen: each hysteretic plane of a
+    /// storey (links from `first` on) shares one bidirectional element with
+    /// the next unpaired hysteretic plane of the storey perpendicular to it:
+    /// the pair's drifts are the drift of their crossing point along them, as
+    /// the bearings of 3D-BASIS (Nagarajaiah, Reinhorn & Constantinou 1991).
+    void
+    pair_planes(Model &model, const TorsionalShearBuilding &site, const unsigned int first,
+                const std::string &path, const InputFile &input)
+    {
+      auto direction = [&](const PlaneLink &link) {
+        const Point2 d = site.floors[link.storey - 1].planes[link.plane - 1].direction;
+        return Eigen::Vector2d(d.x, d.y).normalized();
+      };
+      for (unsigned int l = first; l < model.plane_links.size(); ++l)
+        {
+          PlaneLink &link = model.plane_links[l];
+          if (!link.hysteretic || link.partner >= 0)
+            continue;
+          for (unsigned int m = l + 1; m < model.plane_links.size() && link.partner < 0; ++m)
+            {
+              PlaneLink &other = model.plane_links[m];
+              if (other.storey == link.storey && other.hysteretic && other.partner < 0 &&
+                  std::abs(direction(link).dot(direction(other))) <= 1e-9)
+                {
+                  link.partner  = m;
+                  other.partner = l;
+                }
+            }
+          if (link.partner < 0)
+            throw InputError(input.file, input.line_of(path), path,
+                             "plane " + std::to_string(link.plane) + " of storey " +
+                               std::to_string(link.storey) +
+                               " has no hysteretic plane perpendicular to it to share a "
+                               "bidirectional Bouc-Wen element with");
+        }
+    }
+
     /// Separating-axis test of two convex polygons (touching is apart).
     bool
     convex_polygons_overlap(const std::vector<Point2> &a, const std::vector<Point2> &b)
@@ -335,7 +372,11 @@ namespace poundfe
       p.foundation.enabled() ?
         int(add_plan_foundation(model, p.foundation, b, nodes.front(), plan.angle)) :
         -1;
+    const unsigned int first_link = model.plane_links.size();
     add_plane_links(model, p, site, b, nodes, centre, rocking_node);
+    if (p.plan.storey_law == "bidirectional Bouc-Wen")
+      pair_planes(model, site, first_link, "Building " + std::to_string(b + 1) + "/Plan/Storey law",
+                  input);
   }
 
   void

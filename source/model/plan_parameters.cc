@@ -47,6 +47,14 @@ namespace poundfe
                       "stiffness (N/m) and a Bouc-Wen yield drift (m; absent or 0: elastic). "
                       "Empty: four planes on the slab's edges sharing each Storey stiffness "
                       "(and Storey yield drift) equally per direction. Unit: -.");
+    prm.add_parameter("Storey law", storey_law,
+                      "[3D shear] planes: each hysteretic plane its own uniaxial Bouc-Wen; "
+                      "bidirectional Bouc-Wen: each hysteretic plane paired with the next "
+                      "hysteretic plane of the storey perpendicular to it, the pair one "
+                      "Park-Wen-Ang bidirectional Bouc-Wen element on the drift of their "
+                      "crossing point (circular yield surface; Bouc-Wen n >= 2, no "
+                      "degradation). Unit: -.",
+                      Patterns::Selection("planes|bidirectional Bouc-Wen"));
     prm.leave_subsection();
   }
 

@@ -122,14 +122,19 @@ namespace poundfe
   void
   StoreyForces::add_planes()
   {
-    // the hysteretic planes' elements follow the hinges and the storey links
+    // the hysteretic planes' elements follow the hinges and the storey links;
+    // a pair of planes shares one bidirectional element, made at its first
     int next = model.hinges.size() + std::count_if(model.links.begin(), model.links.end(),
                                                    [](const StoreyLink &l) { return l.hysteretic; });
+    std::vector<int> element_of(model.plane_links.size(), -1);
     for (unsigned int l = 0; l < model.plane_links.size(); ++l)
       {
-        const PlaneLink &link = model.plane_links[l];
+        const PlaneLink &link   = model.plane_links[l];
+        const bool       second = link.partner >= 0 && link.partner < static_cast<int>(l);
+        if (link.hysteretic)
+          element_of[l] = second ? element_of[link.partner] : next++;
         storeys[index(link.building, link.storey - 1)].planes.push_back(
-          {{static_cast<int>(l), link.hysteretic ? next++ : -1}});
+          {{static_cast<int>(l), element_of[l], second ? 1 : 0}});
       }
   }
 
@@ -148,12 +153,12 @@ namespace poundfe
         V[1] -= f[1];
         V[2] -= (m.at.x - storey.centre.x) * f[1] - (m.at.y - storey.centre.y) * f[0] + f[5];
       }
-    for (const auto &[l, element] : storey.planes)
+    for (const auto &[l, element, component] : storey.planes)
       {
         const PlaneLink &link = model.plane_links[l];
         double           F    = 0; // k δ, or the Bouc-Wen force
         if (element >= 0)
-          F = nonlinear[element].force();
+          F = nonlinear[element].force_component(component);
         else
           {
             std::vector<unsigned int> dofs;

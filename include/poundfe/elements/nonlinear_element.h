@@ -130,6 +130,9 @@ namespace poundfe
     // What observers and outputs read: scalar measures of the trial state,
     // which is the committed state between steps.
     virtual double force() const = 0;
+    /// An element on several deformations (elements/biaxial_element.h): the
+    /// force along deformation a; the others have one, force().
+    virtual double force_component(const unsigned int /*a*/) const { return force(); }
     /// The element's deformation measure at global displacements u.
     virtual double deformation(const Eigen::VectorXd &u) const = 0;
     virtual double history_variable() const { return 0; }

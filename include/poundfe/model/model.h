@@ -194,6 +194,9 @@ namespace poundfe
     unsigned int      node     = 0;
     unsigned int      slot     = 0; // 0: about the local y axis, 1: about z
     unsigned int      building = 0;
+    /// Hinges/Biaxial interaction: the hinges of slots 0 and 1 of `node`
+    /// share one bidirectional Bouc-Wen element (laws/bidirectional_bouc_wen.h).
+    bool              biaxial  = false;
     std::string       label;
     BoucWenParameters law;
   };
@@ -315,6 +318,10 @@ namespace poundfe
     /// (h d_y, -h d_x), h the storey height (-1: fixed base).
     int                         rocking_node = -1;
     std::array<double, 2>       rocking_coefficients{{0, 0}};
+    /// Plan/Storey law = bidirectional Bouc-Wen: the plane of the same storey
+    /// (index into Model::plane_links) that shares this plane's bidirectional
+    /// element (one element per pair, made at the lower index); -1: none.
+    int                         partner = -1;
 
     /// The DOFs and coefficients of d: (q_bottom, q_top) and the rocking.
     void terms(std::vector<unsigned int> &dofs, std::vector<double> &weights) const;

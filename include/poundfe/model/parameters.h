@@ -103,6 +103,7 @@ namespace poundfe
     std::vector<double>       hinge_yield_rotations{0.0};
     std::vector<double>       hinge_stiffnesses{0.0}; // 0: factor 6 E I / L
     double                    hinge_stiffness_factor = 10.0;
+    bool                      hinge_biaxial = false; // 3D: one bidirectional law per end
     std::vector<double>       storey_yield_drifts; // empty or 0: elastic storey
     BoucWenParameters         hysteresis;          // shape; k and u_y come per spring
 

@@ -39,6 +39,7 @@ namespace poundfe
     std::string         accidental = "none";     // none|+x|-x|+y|-y
     double              accidental_ratio = 0.05;
     std::string         planes_text;             // 'x y angle k [u_y]; ...'
+    std::string         storey_law = "planes";   // planes|bidirectional Bouc-Wen
 
     /// Parsed by finalize: the planes of every storey (empty: the default
     /// perimeter planes, made by the builder from the storey stiffnesses).

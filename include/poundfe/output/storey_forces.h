@@ -81,7 +81,8 @@ namespace poundfe
     {
       std::vector<CutElement> elements;
       std::vector<CutMember3D> members_3d;
-      std::vector<std::array<int, 2>> planes; // (plane link, its Bouc-Wen element or -1)
+      // (plane link, its Bouc-Wen element or -1, the element's force component)
+      std::vector<std::array<int, 3>> planes;
       Point2                  centre;          // Dimension 3: of the floor on top, at rest
       int                     link = -1;      // shear building: the StoreyLink
       int                     hysteretic = -1; // its Bouc-Wen element, if any
