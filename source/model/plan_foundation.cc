@@ -16,6 +16,9 @@ namespace poundfe
     rocking.building    = b;
     rocking.generalized = true;                 // (u_z, θ_x, θ_y)
     rocking.fixed       = {{!vertical, false, false}}; // vertical motion: frames only
+    // free vertically (under a frame) its slot 0 is a vertical translation:
+    // the vertical ground motion loads the foundation's mass too
+    rocking.joint_translation_z = vertical;
     model.nodes.push_back(rocking);
     const unsigned int rocking_node = model.nodes.size() - 1;
 

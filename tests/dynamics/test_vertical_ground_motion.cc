@@ -53,8 +53,10 @@ namespace
   constexpr double amplitude = 0.8, forcing = 13; // a_z = A sin(Omega t), m/s^2, rad/s
   constexpr double step = 1e-3, duration = 2;
 
+  /// The one-bay 3D frame; `foundation`: a Foundation subsection of its
+  /// building, or empty (clamped).
   std::string
-  frame_3d_text()
+  frame_3d_text(const std::string &foundation = "")
   {
     const std::string zero =
       record_file("vertical_zero.txt", step, duration, [](double) { return 0.0; });
@@ -74,7 +76,8 @@ namespace
             " set Beam I = 3.1e-3\n set Beam Iz = 1.1e-3\n set Beam J = 2.6e-3\n"
             " subsection Hinges\n  set Locations = column bases, beam ends\n"
             "  set Yield moment = 3e5\n end\n"
-            " subsection Damping\n  set Type = none\n end\nend\n"
+            " subsection Damping\n  set Type = none\n end\n"
+         << foundation << "end\n"
          << record_section("  set File = " + zero + "\n  set Second file = " + zero +
                            "\n  set Third file = " + up + "\n")
          << "subsection Time integration\n set Time step = " << step << "\nend\n";
@@ -107,6 +110,34 @@ BOOST_AUTO_TEST_CASE(vertical_load_is_the_joints_inertial_force)
       }
   BOOST_TEST(n_loaded == 4u); // the four joints' uz, nothing else
   BOOST_TEST(std::abs(load.sum() + floor_mass * a_z) <= 1e-12 * floor_mass * std::abs(a_z));
+}
+
+// On a compliant foundation free to move vertically the foundation's mass
+// m_0 is shaken too: the load sums to -(m + m_0) a_z, m_0 on the basemat's
+// vertical equation (before: the basemat's u_z had no influence, so the
+// foundation's inertia was left out of the vertical load). Exact up to
+// rounding.
+BOOST_AUTO_TEST_CASE(vertical_load_reaches_the_foundation_mass)
+{
+  constexpr double m_0 = 3.7e4;
+  const std::string foundation =
+    " subsection Foundation\n  set Type = given\n  set Horizontal stiffness = 2e9\n"
+    "  set Horizontal stiffness y = 2e9\n  set Vertical stiffness = 4e9\n"
+    "  set Rocking stiffness = 5e10\n  set Rocking stiffness x = 5e10\n"
+    "  set Torsional stiffness = 6e10\n  set Mass = 3.7e4\n  set Rotary inertia = 2e5\n"
+    "  set Rotary inertia x = 2e5\n  set Polar inertia = 4e5\n end\n";
+  const InputParameters p = poundfe_test::input_of("vertical_3d_foundation", frame_3d_text(foundation));
+  const Analysis        analysis = prepare_analysis(p);
+  BOOST_REQUIRE(analysis.model.foundations.size() == 1u);
+  const Excitation excitation = make_excitation(analysis, time_history_parameters(p));
+  const double     t = 123 * step, a_z = amplitude * std::sin(forcing * t);
+  Vector           load(analysis.system.n_equations());
+  excitation.load(t, load);
+  const int vertical = analysis.model.equation(n_dofs_per_node * analysis.model.foundations[0].rocking_node);
+  BOOST_REQUIRE(vertical >= 0);
+  BOOST_TEST(std::abs(load[vertical] + m_0 * a_z) <= 1e-12 * m_0 * std::abs(a_z));
+  BOOST_TEST(std::abs(load.sum() + (floor_mass + m_0) * a_z) <=
+             1e-12 * (floor_mass + m_0) * std::abs(a_z));
 }
 
 // Each joint's uz against the undamped SDOF from rest,
