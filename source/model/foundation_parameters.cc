@@ -23,7 +23,7 @@ namespace poundfe
   {
     prm.enter_subsection("Foundation");
     add_choice(prm, "Type", type,
-               "[frame, shear] none: fixed base. gazetas: sway and rocking springs and dashpots "
+               "none: fixed base. gazetas: sway and rocking springs and dashpots "
                "of a rectangular foundation by Gazetas (1991), surface or embedded; cone: "
                "Wolf's cones (1994), surface; given: the springs and dashpots typed below "
                "(shear buildings, 2D and 3D: the sway-rocking model, floors moving with "
@@ -31,33 +31,33 @@ namespace poundfe
                "bases, also on a vertical spring). Unit: -.",
                foundation_type_names());
     prm.add_parameter("Shear-wave velocity", soil.shear_wave_velocity,
-                      "[frame, shear] V_s of the soil (gazetas, cone). Unit: m/s.");
+                      "V_s of the soil (gazetas, cone). Unit: m/s.");
     prm.add_parameter("Soil density", soil.density,
-                      "[frame, shear] Mass density of the soil (gazetas, cone). Unit: kg/m^3.");
+                      "Mass density of the soil (gazetas, cone). Unit: kg/m^3.");
     prm.add_parameter("Poisson ratio", soil.poisson_ratio,
-                      "[frame, shear] Poisson ratio of the soil, in (0, 0.5) (gazetas, cone). "
+                      "Poisson ratio of the soil, in (0, 0.5) (gazetas, cone). "
                       "Unit: -.");
     prm.add_parameter("Length", geometry.length,
-                      "[frame, shear] Side of the foundation in the plane of the model (3D: along "
+                      "Side of the foundation in the plane of the model (3D: along "
                       "the building's local x) (gazetas, cone). Unit: m.");
     prm.add_parameter("Width", geometry.width,
-                      "[frame, shear] Side of the foundation normal to the plane (3D: along local "
+                      "Side of the foundation normal to the plane (3D: along local "
                       "y) (gazetas, cone). Unit: m.");
     prm.add_parameter("Embedment", geometry.embedment,
-                      "[frame, shear] Depth of the foundation's base below the surface, sidewalls "
+                      "Depth of the foundation's base below the surface, sidewalls "
                       "in contact over it (gazetas; at most the smaller side). Unit: m.");
     prm.add_parameter("Horizontal stiffness", given.horizontal_stiffness,
-                      "[frame, shear] Sway spring (given). Unit: N/m.");
+                      "Sway spring (given). Unit: N/m.");
     prm.add_parameter("Rocking stiffness", given.rocking_stiffness,
-                      "[frame, shear] Rocking spring (given). Unit: N m/rad.");
+                      "Rocking spring (given). Unit: N m/rad.");
     prm.add_parameter("Horizontal damping", given.horizontal_damping,
-                      "[frame, shear] Sway dashpot (given). Unit: N s/m.");
+                      "Sway dashpot (given). Unit: N s/m.");
     prm.add_parameter("Rocking damping", given.rocking_damping,
-                      "[frame, shear] Rocking dashpot (given). Unit: N m s/rad.");
+                      "Rocking dashpot (given). Unit: N m s/rad.");
     prm.add_parameter("Vertical stiffness", given.vertical_stiffness,
-                      "[frame] Vertical spring (given; frames only). Unit: N/m.");
+                      "[frame, mesh] Vertical spring (given; frames and meshes only). Unit: N/m.");
     prm.add_parameter("Vertical damping", given.vertical_damping,
-                      "[frame] Vertical dashpot (given; frames only). Unit: N s/m.");
+                      "[frame, mesh] Vertical dashpot (given; frames and meshes only). Unit: N s/m.");
     prm.add_parameter("Horizontal stiffness y", given_3d.sway_stiffness[1],
                       "[3D] Sway spring along the foundation's local y (given; "
                       "Horizontal stiffness: along x). Unit: N/m.");
@@ -81,9 +81,9 @@ namespace poundfe
                       "[3D] Mass moment of inertia of the foundation about the vertical "
                       "through its centre. Unit: kg m^2.");
     prm.add_parameter("Mass", mass,
-                      "[frame, shear] Mass of the foundation (moves with the sway). Unit: kg.");
+                      "Mass of the foundation (moves with the sway). Unit: kg.");
     prm.add_parameter("Rotary inertia", rotary_inertia,
-                      "[frame, shear] Mass moment of inertia of the foundation about the horizontal "
+                      "Mass moment of inertia of the foundation about the horizontal "
                       "axis through its base (3D: local y) (cone: Wolf's trapped soil is "
                       "added). Unit: kg m^2.");
     prm.leave_subsection();
@@ -96,9 +96,6 @@ namespace poundfe
     if (!enabled())
       return;
     const std::string s = section + "Foundation/";
-    if (building_type == BuildingType::mesh)
-      input.fail(s + "Type", "compliant foundations are for shear buildings and frames "
-                             "(meshes: not yet)");
     input.positive(s + "Mass", mass);
     input.positive(s + "Rotary inertia", rotary_inertia);
     if (type == FoundationType::given)
@@ -107,7 +104,7 @@ namespace poundfe
         input.positive(s + "Rocking stiffness", given.rocking_stiffness);
         input.non_negative(s + "Horizontal damping", given.horizontal_damping);
         input.non_negative(s + "Rocking damping", given.rocking_damping);
-        if (building_type == BuildingType::frame)
+        if (building_type != BuildingType::shear) // frames and meshes: a vertical part
           {
             input.positive(s + "Vertical stiffness", given.vertical_stiffness);
             input.non_negative(s + "Vertical damping", given.vertical_damping);

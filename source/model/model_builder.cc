@@ -662,7 +662,8 @@ namespace poundfe
           }
         label_members(model, building, first_member);
         insert_hinges(model, p, b, first_member);
-        if (p.type == BuildingType::frame && parameters.dimension == 2 && p.foundation.enabled())
+        // a mesh's supports are its column bases as a generated frame's
+        if (p.type != BuildingType::shear && parameters.dimension == 2 && p.foundation.enabled())
           add_frame_foundation(model, p.foundation, b, building);
         building.n_nodes = model.n_nodes() - building.first_node;
 
