@@ -102,7 +102,8 @@ namespace poundfe
     for (const Building &building : model.buildings)
       for (const char *what : {"_max_corner_drift_ratio", "_peak_floor_rotation_rad",
                                "_peak_base_shear_x_N", "_peak_base_shear_y_N",
-                               "_peak_base_torque_N_m"})
+                               "_peak_base_torque_N_m", "_peak_corner_acc_x_m_s2",
+                               "_peak_corner_acc_y_m_s2"})
         names.push_back(building.name + what);
     return names;
   }
@@ -118,7 +119,7 @@ namespace poundfe
     const auto &buildings = peaks.plan()->buildings();
     for (unsigned int b = 0; b < buildings.size(); ++b)
       {
-        double corner = 0, rotation = 0;
+        double corner = 0, rotation = 0, corner_x = 0, corner_y = 0;
         for (unsigned int i = 0; i < buildings[b].storeys.size(); ++i)
           {
             const PlanResponse::Storey &s = buildings[b].storeys[i];
@@ -127,9 +128,14 @@ namespace poundfe
               for (const double d : *drifts)
                 corner = std::max(corner, d / height);
             rotation = std::max(rotation, s.rotation);
+            for (const double a : s.corner_acceleration_x)
+              corner_x = std::max(corner_x, a);
+            for (const double a : s.corner_acceleration_y)
+              corner_y = std::max(corner_y, a);
           }
         for (const double v : {corner, rotation, buildings[b].base_shear_x,
-                               buildings[b].base_shear_y, buildings[b].base_torque})
+                               buildings[b].base_shear_y, buildings[b].base_torque, corner_x,
+                               corner_y})
           row.push_back(v);
       }
   }

@@ -68,6 +68,9 @@ namespace poundfe
             Storey s;
             s.corner_drift_x.assign(floor.outline.size(), 0);
             s.corner_drift_y.assign(floor.outline.size(), 0);
+            s.corner_acceleration_x.assign(floor.outline.size(), 0);
+            s.corner_acceleration_y.assign(floor.outline.size(), 0);
+            corner_acceleration.resize(corner_acceleration.size() + 2 * floor.outline.size(), 0);
             b.storeys.push_back(s);
           }
         peaks.push_back(b);
@@ -86,6 +89,8 @@ namespace poundfe
             s.rotation = 0;
             std::fill(s.corner_drift_x.begin(), s.corner_drift_x.end(), 0.0);
             std::fill(s.corner_drift_y.begin(), s.corner_drift_y.end(), 0.0);
+            std::fill(s.corner_acceleration_x.begin(), s.corner_acceleration_x.end(), 0.0);
+            std::fill(s.corner_acceleration_y.begin(), s.corner_acceleration_y.end(), 0.0);
             s.irregularity_ratio = s.ratio_at_peak = {{1, 1}};
             s.peak_drift         = {{0, 0}};
           }
@@ -127,11 +132,55 @@ namespace poundfe
       }
   }
 
+  unsigned int
+  PlanResponse::corner_accelerations(const ResponseView &state, const unsigned int b,
+                                     unsigned int at)
+  {
+    const Building &building = model.buildings[b];
+    for (unsigned int i = 0; i < building.floors.size(); ++i)
+      {
+        const auto    a      = floor_motion(model, state.acceleration(), building.floors[i].nodes[0]);
+        const Point2 &centre = building.plan[i].mass_centre;
+        Storey       &s      = peaks[b].storeys[i];
+        const std::vector<Point2> &corners = building.plan[i].outline;
+        for (unsigned int k = 0; k < corners.size(); ++k)
+          {
+            const double a_x = a[0] + state.ground_acceleration() - a[2] * (corners[k].y - centre.y);
+            const double a_y = a[1] + state.ground_acceleration_y() + a[2] * (corners[k].x - centre.x);
+            keep_peak(s.corner_acceleration_x[k], a_x);
+            keep_peak(s.corner_acceleration_y[k], a_y);
+            corner_acceleration[at++] = a_x;
+            corner_acceleration[at++] = a_y;
+          }
+      }
+    return at;
+  }
+
+  std::vector<std::string>
+  PlanResponse::corner_acceleration_names() const
+  {
+    std::vector<std::string> names;
+    for (unsigned int b = 0; b < peaks.size(); ++b)
+      for (unsigned int i = 0; i < peaks[b].storeys.size(); ++i)
+        for (unsigned int k = 0; k < peaks[b].storeys[i].corner_acceleration_x.size(); ++k)
+          {
+            const std::string stem = model.buildings[b].name + "_floor" + std::to_string(i + 1) +
+                                     "_corner" + std::to_string(k + 1) + "_acc_";
+            names.push_back(stem + "x_m_s2");
+            names.push_back(stem + "y_m_s2");
+          }
+    return names;
+  }
+
   void
   PlanResponse::observe_step(const ResponseView &state)
   {
+    unsigned int at = 0;
     for (unsigned int b = 0; b < peaks.size(); ++b)
-      storey_drifts(state.displacement(), b);
+      {
+        storey_drifts(state.displacement(), b);
+        at = corner_accelerations(state, b, at);
+      }
     if (peaks.empty())
       return;
     if (!forces)
@@ -149,9 +198,13 @@ namespace poundfe
   write_plan_response(JsonWriter &json, const PlanResponse &plan, const unsigned int b)
   {
     const PlanResponse::BuildingPeaks &peaks = plan.buildings()[b];
-    std::vector<double> rotation, ratio_x, ratio_y, instant_x, instant_y;
+    std::vector<double> rotation, ratio_x, ratio_y, instant_x, instant_y, corner_x, corner_y;
     for (const PlanResponse::Storey &s : peaks.storeys)
       {
+        corner_x.push_back(*std::max_element(s.corner_acceleration_x.begin(),
+                                             s.corner_acceleration_x.end()));
+        corner_y.push_back(*std::max_element(s.corner_acceleration_y.begin(),
+                                             s.corner_acceleration_y.end()));
         rotation.push_back(s.rotation);
         ratio_x.push_back(s.irregularity_ratio[0]);
         ratio_y.push_back(s.irregularity_ratio[1]);
@@ -164,6 +217,8 @@ namespace poundfe
       .value("torsional_irregularity_y", ratio_y)
       .value("torsional_irregularity_at_peak_x", instant_x)
       .value("torsional_irregularity_at_peak_y", instant_y)
+      .value("peak_corner_acceleration_x_m_s2", corner_x)
+      .value("peak_corner_acceleration_y_m_s2", corner_y)
       .value("peak_base_shear_x_N", peaks.base_shear_x)
       .value("peak_base_shear_y_N", peaks.base_shear_y)
       .value("peak_base_torque_N_m", peaks.base_torque)

@@ -41,7 +41,8 @@ namespace poundfe
       {RecordedQuantity::gap_states, "gap states", "contact_force"},
       {RecordedQuantity::energy, "energy", "energy"},
       {RecordedQuantity::ground_motion, "ground motion", "ground_motion"},
-      {RecordedQuantity::phase_portrait, "phase portrait", "phase_portrait"}};
+      {RecordedQuantity::phase_portrait, "phase portrait", "phase_portrait"},
+      {RecordedQuantity::corner_acceleration, "corner acceleration", "corner_acceleration"}};
 
     const QuantityInfo &
     info(const RecordedQuantity q)
@@ -330,6 +331,12 @@ namespace poundfe
                     }};
           case RecordedQuantity::phase_portrait:
             return phase_portrait_series(state);
+          case RecordedQuantity::corner_acceleration:
+            {
+              const PlanResponse *plan = peaks.plan(); // requests_of refused it in 2D
+              return {plan->corner_acceleration_names(),
+                      copy(plan->corner_accelerations())};
+            }
           case RecordedQuantity::residual_drift:
             break; // not a time series
         }
@@ -363,6 +370,10 @@ namespace poundfe
             *same = r; // a request overrides the default of the same quantity
           else
             requests.push_back(r);
+          if (r.quantity == RecordedQuantity::corner_acceleration && !peaks.plan())
+            throw InputError(input_file, parameters.line, "Output/Recorders/Record",
+                             "'corner acceleration': slab corners are those of a 3D model "
+                             "(Model/Dimension = 3); use 'floor acceleration'");
           if ((r.quantity == RecordedQuantity::hinge_states && !has_hysteretic) ||
               (r.quantity == RecordedQuantity::gap_states && !has_gaps))
             throw InputError(input_file, parameters.line, "Output/Recorders/Record",
@@ -452,7 +463,9 @@ namespace poundfe
                       "Quantities (files): " + names + ". 'member end forces' needs the members, "
                       "e.g. 'member end forces of A3_C1.1, A3_B2.1' (building, C<storey>.<column "
                       "line> or B<floor>.<bay>). Storey and base shear are element forces "
-                      "(Rayleigh damping excluded, storey dashpots included). Unit: -.");
+                      "(Rayleigh damping excluded, storey dashpots included). 'corner "
+                      "acceleration' (3D models) is the absolute acceleration of every slab "
+                      "corner along x and y. Unit: -.");
   }
 
   void

@@ -11,7 +11,14 @@
 // building the peak base shears V_x, V_y and the peak base torque about the
 // first floor's mass centre at rest (output/storey_forces.h: the resisting
 // planes of the first storey, T = Σ (p_j - C_1) × F_j d_j, or the element
-// forces of a 3D frame's ground-storey columns).
+// forces of a 3D frame's ground-storey columns); per floor the absolute
+// acceleration of every slab corner, by the same rigid-diaphragm kinematics
+//   a_x = u_x'' + a_gx - θz'' (X_y - C_y),  a_y = u_y'' + a_gy + θz'' (X_x - C_x)
+// (small rotations, the centripetal term θz'^2 left out as in the drifts;
+// Chopra, Dynamics of Structures, 4th ed., §9.5: the floor's motion as a
+// rigid body; ASCE/SEI 7-16 §13.3.1: nonstructural components see the
+// acceleration of the point they hang from, largest at the corners of a
+// twisting floor), its peak over time and its value at each step.
 #ifndef poundfe_output_plan_response_h
 #define poundfe_output_plan_response_h
 
@@ -19,6 +26,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace poundfe
@@ -46,6 +54,9 @@ namespace poundfe
       /// sign of the largest; that largest drift, m.
       std::array<double, 2> ratio_at_peak{{1, 1}};
       std::array<double, 2> peak_drift{{0, 0}};
+      /// Peak absolute accelerations of the corners of the floor on top,
+      /// along x and y, m/s^2.
+      std::vector<double>   corner_acceleration_x, corner_acceleration_y;
     };
     struct BuildingPeaks
     {
@@ -55,11 +66,21 @@ namespace poundfe
     /// Per building (empty for 2D models).
     const std::vector<BuildingPeaks> &buildings() const { return peaks; }
 
+    /// The corners' absolute accelerations at the last observed step: for
+    /// every building, floor (bottom up) and slab corner, a_x then a_y.
+    const std::vector<double> &corner_accelerations() const { return corner_acceleration; }
+    /// Their columns, "<building>_floor<i>_corner<k>_acc_x_m_s2" and _y.
+    std::vector<std::string> corner_acceleration_names() const;
+
   private:
     void storey_drifts(const Vector &u, unsigned int b);
+    /// Fills corner_acceleration from building b's floors, from `at` on;
+    /// returns the next index.
+    unsigned int corner_accelerations(const ResponseView &state, unsigned int b, unsigned int at);
 
     const Model                  &model;
     std::vector<BuildingPeaks>    peaks;
+    std::vector<double>           corner_acceleration;
     /// Of the run's elements: made at its first step, forgotten by reset.
     std::unique_ptr<StoreyForces> forces;
   };

@@ -45,8 +45,10 @@ namespace poundfe
     gap_states,         // contact_force.csv: force (N) and penetration (m)
     energy,             // energy.csv, J
     ground_motion,      // ground_motion.csv, m/s^2
-    phase_portrait      // phase_portrait.csv: u (m), u' (m/s) of every equation
+    phase_portrait,     // phase_portrait.csv: u (m), u' (m/s) of every equation
                         // and each friction element's phase (0 stick, +-1 slip)
+    corner_acceleration // corner_acceleration.csv, m/s^2 (absolute, 3D: every
+                        // slab corner along x and y; output/plan_response.h)
   };
 
   struct RecorderRequest
