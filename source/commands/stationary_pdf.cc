@@ -291,6 +291,23 @@ namespace poundfe::commands
       write_file_atomically(directory + "/p_bifurcation_density.csv", text);
     }
 
+    /// The array `name` of summary.json: every pair of neighbouring values
+    /// between which count(j) changes, with the two counts as `what`.
+    template <typename Count>
+    void
+    write_count_changes(JsonWriter &json, const std::string &name, const std::string &what,
+                        const std::vector<double> &values, const Count &count)
+    {
+      json.begin_array(name);
+      for (std::size_t j = 1; j < values.size(); ++j)
+        if (count(j) != count(j - 1))
+          json.begin_object()
+            .value("between", std::vector<double>{values[j - 1], values[j]})
+            .value(what, std::vector<double>{double(count(j - 1)), double(count(j))})
+            .end_object();
+      json.end_array();
+    }
+
     /// p_bifurcation.csv (value, number of peaks, their locations, the number
     /// of support intervals and their hull) and the
     /// summary's entries; returns the most peaks of a value.
@@ -334,23 +351,13 @@ namespace poundfe::commands
             .value("support_intervals", support_ends(x[j].support))
             .end_object();
         }
-      json.end_array().begin_array("peak_count_changes");
-      for (std::size_t j = 1; j < x.size(); ++j)
-        if (x[j].peaks.size() != x[j - 1].peaks.size())
-          json.begin_object()
-            .value("between", std::vector<double>{values[j - 1], values[j]})
-            .value("n_peaks", std::vector<double>{double(x[j - 1].peaks.size()),
-                                                  double(x[j].peaks.size())})
-            .end_object();
-      json.end_array().begin_array("support_changes"); // the hard bifurcations
-      for (std::size_t j = 1; j < x.size(); ++j)
-        if (x[j].support.size() != x[j - 1].support.size())
-          json.begin_object()
-            .value("between", std::vector<double>{values[j - 1], values[j]})
-            .value("n_support_intervals", std::vector<double>{double(x[j - 1].support.size()),
-                                                              double(x[j].support.size())})
-            .end_object();
       json.end_array();
+      // The soft bifurcations (a peak more or less) and the hard ones (the
+      // support splits or joins).
+      write_count_changes(json, "peak_count_changes", "n_peaks", values,
+                          [&](std::size_t j) { return x[j].peaks.size(); });
+      write_count_changes(json, "support_changes", "n_support_intervals", values,
+                          [&](std::size_t j) { return x[j].support.size(); });
       write_file_atomically(directory + "/p_bifurcation.csv", text);
       return most;
     }
