@@ -85,7 +85,7 @@ namespace poundfe
     check_matrices_in_range(const InputFile &input, const Model &model,
                             const LinearSystem &system)
     {
-      constexpr double largest = 1e150;
+      constexpr double largest = largest_model_value;
       for (unsigned int b = 0; b < model.buildings.size(); ++b)
         for (const auto &[matrix, name, sources] :
              {std::tuple{&system.stiffness, "stiffness", "a stiffness, modulus or section property"},

@@ -38,8 +38,9 @@ namespace poundfe
     {
       law.kind = form.kind;
       for (const double value : x)
-        if (!std::isfinite(value))
-          return "every number must be finite";
+        if (!(std::abs(value) <= largest_model_value))
+          return "every number must be finite and at most 1e150 in size, got " +
+                 number_text(value) + " (beyond any physical link)";
       switch (form.kind)
         {
           case LinkKind::viscous:
@@ -160,6 +161,9 @@ namespace poundfe
       if (!(k >= 0 && c >= 0) || !std::isfinite(k) || !std::isfinite(c))
         throw InputError(input.file, input.line_of(path), path,
                          "'" + entry + "': k and c must be zero or positive");
+      if (!(k <= largest_model_value && c <= largest_model_value))
+        throw InputError(input.file, input.line_of(path), path,
+                         "'" + entry + "': k and c must be at most 1e150 (beyond any soil)");
       BuildingLink link;
       link.law.kind      = LinkKind::kelvin_voigt;
       link.law.stiffness = k;

@@ -19,6 +19,12 @@
 
 namespace poundfe
 {
+  /// The largest size a stiffness, damping, mass or force of the model may
+  /// have: the eigensolvers and Newton's norms square such numbers, so past
+  /// 1e150 they overflow to inf (an absurd 1e308 came out as a damping-modes
+  /// problem or a NaN in Newton); no structure comes near it.
+  inline constexpr double largest_model_value = 1e150;
+
   enum class Exponent
   {
     e,         // 1.5e-3
