@@ -211,12 +211,20 @@ namespace poundfe
     L->effective = system.stiffness + L->c_damp_u * system.damping + L->c_mass_u * system.mass;
     if (!use_woodbury)
       {
-        // Every coupling of a nonlinear element must be in the pattern.
+        // Every coupling of a nonlinear element must be in the pattern: add
+        // them as explicit zeros in one sparse sum (a union of patterns,
+        // O(nnz)). Inserting them one by one with coeffRef moved the
+        // matrix's tail at every new entry, quadratic in the model: minutes
+        // of set-up at two million equations.
+        std::vector<Eigen::Triplet<double>> couplings;
         for (unsigned int h = 0; h < n_elements; ++h)
           for (const int i : (*elements)[h].equations())
             for (const int j : (*elements)[h].equations())
               if (i >= 0 && j >= 0)
-                L->effective.coeffRef(i, j) += 0.0;
+                couplings.emplace_back(i, j, 0.0);
+        SparseMatrix pattern(system.n_equations(), system.n_equations());
+        pattern.setFromTriplets(couplings.begin(), couplings.end());
+        L->effective = L->effective + pattern;
       }
     L->effective.makeCompressed();
     // modal damping: K_eff + c U D U^T by the Woodbury identity (assembly/modal_damping.h)
