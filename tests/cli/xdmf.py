@@ -26,14 +26,20 @@ zlib readers.
 - a command that writes no fields (spectrum) refuses xdmf: exit 1, the
   message names Output/Field format, nothing written;
 - no temporary (*.tmp) is left, and the manifest lists solution.h5 and
-  solution.xdmf.
+  solution.xdmf;
+- a long 2D run stopped by SIGINT after half a second exits 130 with summary.json
+  "interrupted", solution.h5 and solution.xdmf in place, as many grids as
+  frame groups, the last frame's time not after the summary's end time.
 """
 import ctypes
 import ctypes.util
+import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -278,6 +284,41 @@ def no_temporaries(directory, files):
     check(all(f in listed for f in files), f"{directory}: manifest lacks {files}")
 
 
+def interrupted(poundfe, prm, work, edits):
+    """A long run stopped by SIGINT half a second after it starts: exit 130, summary
+    "interrupted", both files in place and consistent, the last frame's
+    time at most the summary's end time."""
+    out, path = os.path.join(work, "interrupted"), os.path.join(work, "interrupted.prm")
+    with open(prm) as f:
+        text = f.read()
+    for old, new in edits:
+        text = text.replace(old, new, 1)
+    with open(path, "w") as f:
+        f.write(text)
+    job = subprocess.Popen([poundfe, "run", path, "--output", out], stdout=subprocess.DEVNULL,
+                           stderr=subprocess.DEVNULL)
+    for _ in range(1500):
+        if os.path.isdir(out):
+            break
+        time.sleep(0.02)
+    time.sleep(0.5)
+    job.send_signal(signal.SIGINT)
+    status = job.wait()
+    check(status == 130, f"interrupted run: exit {status}")
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    check(summary["status"] == "interrupted", f"interrupted run: status {summary['status']}")
+    grids = ET.parse(os.path.join(out, "solution.xdmf")).getroot().find("Domain").find("Grid")
+    times = [float(g.find("Time").get("Value")) for g in grids.findall("Grid")]
+    h5 = read_h5(os.path.join(out, "solution.h5"))
+    frames = {p.split("/")[2] for p in h5 if p.startswith("/frames/")}
+    check(len(times) == len(frames) > 1, f"interrupted run: {len(times)} grids, {len(frames)} frames")
+    end = summary["analysis"]["end_time_s"]
+    check(times[-1] <= end < 2000, f"interrupted run: last frame {times[-1]}, end {end}")
+    no_temporaries(out, ["solution.h5", "solution.xdmf"])
+    return len(times), times[-1]
+
+
 def main():
     poundfe, inputs = sys.argv[1], sys.argv[2]
     with tempfile.TemporaryDirectory() as work:
@@ -290,6 +331,11 @@ def main():
         no_temporaries(os.path.join(out, "xdmf"), ["solution.h5", "solution.xdmf"])
         out = both(poundfe, prm, work, "2d-modal", edits, "modal")
         print("2D modal: %d modes, %d arrays equal" % check_series(out, "modes"))
+        edits = [("subsection Time integration", "subsection Time integration\n  set End time = 2000"),
+                 ("set VTU interval    = 0.05",
+                  "set VTU interval    = 0.5\n  set Plots = false\n  set Field format = xdmf")]
+        print("2D run interrupted: %d frames to t = %g s, files complete" %
+              interrupted(poundfe, prm, work, edits))
         # 3D: frames with rigid diaphragms, hinges and plan contact, 0.3 s
         prm = os.path.join(inputs, "3d-torsional-pair.prm")
         edits = [("set Duration         = 6", "set Duration         = 0.3"),
