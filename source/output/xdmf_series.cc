@@ -14,7 +14,9 @@
 //   (kind, building, member, node: int32) once under /mesh, and a group
 //   /frames/NNNNN per frame with its field, point and cell arrays under the
 //   VTU files' names (float64, contact int32), points or cells first, the
-//   components second.
+//   components second. Each dataset is one chunk, byte-shuffled and deflated
+//   (zlib level 1, as the VTU arrays): a third of the uncompressed size on
+//   input/city-block.prm, about half the VTU files'.
 // Both files are written under "<file>.tmp" and renamed when the series
 // finishes (the HDF5 file first, so that the index never names a missing
 // file); every frame write is a safe point of the interruption, as an
@@ -29,6 +31,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -83,6 +86,9 @@ namespace poundfe
         /// The id, or on failure (a negative id) closes and removes the file
         /// and throws OutputError with errno (EIO when the library set none).
         hid_t checked(hid_t id);
+        /// Dataset creation properties: one chunk of the whole array, the
+        /// bytes shuffled and deflated (zlib level 1, as the VTU files).
+        hid_t compressed_layout(const hsize_t *dimensions, int rank);
         void  write_mesh(const Points3 &points, const Cells &cells);
         void  write(hid_t group, const std::string &name, const std::vector<double> &values,
                     unsigned int n_components, bool integer);
@@ -152,6 +158,22 @@ namespace poundfe
           }
       }
 
+      hid_t
+      XdmfWriter::compressed_layout(const hsize_t *dimensions, const int rank)
+      {
+        const hid_t layout = checked(H5Pcreate(H5P_DATASET_CREATE));
+        if (dimensions[0] == 0)
+          return layout;
+        // a chunk is at most 4 GiB: 2^28 values (2 GiB of doubles) at most
+        const hsize_t width    = rank == 2 ? dimensions[1] : 1;
+        const hsize_t chunk[2] = {std::min<hsize_t>(dimensions[0], (hsize_t(1) << 28) / width),
+                                  width};
+        checked(H5Pset_chunk(layout, rank, chunk));
+        checked(H5Pset_shuffle(layout));
+        checked(H5Pset_deflate(layout, 1));
+        return layout;
+      }
+
       void
       XdmfWriter::write(const hid_t group, const std::string &name,
                         const std::vector<double> &values, const unsigned int n_components,
@@ -159,9 +181,11 @@ namespace poundfe
       {
         const hsize_t dimensions[2] = {values.size() / n_components, n_components};
         const hid_t   space = checked(H5Screate_simple(n_components == 1 ? 1 : 2, dimensions, nullptr));
-        const hid_t   set   = checked(H5Dcreate2(group, name.c_str(),
+        const hid_t   layout = compressed_layout(dimensions, n_components == 1 ? 1 : 2);
+        const hid_t   set    = checked(H5Dcreate2(group, name.c_str(),
                                                  integer ? H5T_STD_I32LE : H5T_IEEE_F64LE, space,
-                                                 H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+                                                 H5P_DEFAULT, layout, H5P_DEFAULT));
+        H5Pclose(layout);
         herr_t status;
         if (integer)
           {
@@ -181,8 +205,10 @@ namespace poundfe
       {
         const hsize_t dimensions[1] = {values.size()};
         const hid_t   space         = checked(H5Screate_simple(1, dimensions, nullptr));
+        const hid_t   layout = compressed_layout(dimensions, 1);
         const hid_t   set = checked(H5Dcreate2(group, name.c_str(), H5T_STD_I64LE, space,
-                                               H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+                                               H5P_DEFAULT, layout, H5P_DEFAULT));
+        H5Pclose(layout);
         const herr_t  status =
           H5Dwrite(set, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
         H5Dclose(set);
