@@ -163,6 +163,12 @@ main(int argc, char **argv)
         input.fail("Time integration/Linear solver",
                    input.time_integration.linear_solver + " spreads one run over the MPI ranks: "
                    "on more than one rank only 'run' can use it, not '" + command->name + "'");
+      // Only run (the frames) and modal (the modes) write fields.
+      if (input.output.field_format == FieldFormat::xdmf && command->name != "run" &&
+          command->name != "modal")
+        input.fail("Output/Field format",
+                   "xdmf chooses the field output of 'run' and 'modal'; '" + command->name +
+                     "' writes no fields (leave it at vtu)");
       const std::string directory = line.output.empty() ? input.output.directory : line.output;
       const bool writes = !mpi || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const GuardedCommand guarded{

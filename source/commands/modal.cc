@@ -113,7 +113,8 @@ namespace poundfe::commands
     prepare_output_directory(run.directory);
     const std::vector<FoundationPeriods> periods = foundation_periods(analysis.model);
     const std::string summary = modal_summary(analysis, *run.input, periods);
-    VtuSeries         modes(analysis.model, run.directory, "modes");
+    const FieldFormat format = run.input->output.field_format;
+    VtuSeries         modes(analysis.model, run.directory, "modes", format);
     for (unsigned int i = 0; i < analysis.modes.n_modes(); ++i)
       modes.write_mode(i + 1, analysis.modes.frequency(i), analysis.modes.shapes.col(i));
     modes.finish();
@@ -121,7 +122,8 @@ namespace poundfe::commands
 
     print_modes(analysis.modes, run.out);
     print_foundation_periods(analysis.model, periods, run.out);
-    run.out << "results in " << run.directory << "/ (summary.json, modes.pvd)\n";
+    run.out << "results in " << run.directory << "/ (summary.json, "
+            << (format == FieldFormat::xdmf ? "modes.xdmf" : "modes.pvd") << ")\n";
     return 0;
   }
 } // namespace poundfe::commands

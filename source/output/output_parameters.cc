@@ -4,6 +4,13 @@
 
 namespace poundfe
 {
+  const NameTable<FieldFormat> &
+  field_format_names()
+  {
+    static const NameTable<FieldFormat> table({{FieldFormat::vtu, "vtu"}, {FieldFormat::xdmf, "xdmf"}});
+    return table;
+  }
+
   void
   OutputParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -21,6 +28,15 @@ namespace poundfe
                output_format_names());
     prm.add_parameter("VTU interval", vtu_interval, "Interval of VTU frames (0: none). "
                       "Unit: s.");
+    add_choice(prm, "Field format", field_format,
+               "Format of the field output (the frames of VTU interval, and the modes of "
+               "'modal'): vtu (solution.pvd indexing one solution/solution-NNNNN.vtu per "
+               "frame) or xdmf (one HDF5 file, solution.h5: the points and cells once, then a "
+               "group per frame with the same arrays as the VTU files, indexed by "
+               "solution.xdmf, an XDMF 3 temporal collection that ParaView opens; for large "
+               "models and many frames). Only run and modal write fields: other commands "
+               "refuse xdmf. Unit: -.",
+               field_format_names());
     prm.add_parameter("Maximum VTU frames", max_vtu_frames,
                       "Most VTU frames a run writes: when End time / VTU interval would give "
                       "more, the interval is widened to fit and the console says so. Unit: count.",

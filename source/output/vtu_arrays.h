@@ -2,7 +2,9 @@
 // (vtu_series.cc) and the spatial (vtu_series_3d.cc) drawings share — the
 // compressed binary DataArray (Kitware, "VTK File Formats": XML format,
 // vtkZLibDataCompressor), the cell lists, the cell kinds — and the spatial
-// drawing itself (VtuGeometry3D, doc/theory.md §10).
+// drawing itself (VtuGeometry3D, doc/theory.md §10); a frame's arrays in a
+// form both writers read (FieldFrame), for the VTU files and for HDF5 + XDMF
+// (xdmf_series.cc).
 #ifndef poundfe_output_vtu_arrays_h
 #define poundfe_output_vtu_arrays_h
 
@@ -17,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -142,20 +145,64 @@ namespace poundfe
       }
     };
 
-    /// The cell ids (CellData kind, building, member) as DataArrays.
-    void write_cell_ids(std::string &out, const Cells &cells);
     /// The <Points> and <Cells> of a piece.
     void write_geometry(std::string &out, const std::vector<std::array<double, 3>> &points,
                         const Cells &cells);
+
+    /// One array of a frame (field, point or cell data), whatever the file
+    /// format: `n_components` values per point or cell, in that order.
+    struct FieldArray
+    {
+      std::string         name;
+      unsigned int        n_components = 1;
+      bool                integer      = false; // Int32 in the files, else Float64
+      bool                constant     = false; // the same in every frame (ids)
+      std::vector<double> values;               // integers are exact in a double
+    };
+
+    /// A frame's arrays, each list in the order the VTU file gives them.
+    struct FieldFrame
+    {
+      std::vector<FieldArray> field, point, cell;
+    };
+
+    /// The cell ids (kind, building, member), constant arrays.
+    std::vector<FieldArray> cell_id_arrays(const Cells &cells);
+
+    /// Where the frames of a series go: VTU files and a .pvd index
+    /// (make_vtu_writer, vtu_series.cc) or one HDF5 file and its XDMF index
+    /// (make_xdmf_writer, xdmf_series.cc). The geometry is given once.
+    class FieldWriter
+    {
+    public:
+      virtual ~FieldWriter() = default;
+      /// A frame labelled `label` (a time, s, or a mode number).
+      virtual void write_frame(double label, const FieldFrame &frame) = 0;
+      /// Writes the index (and closes the data file) atomically.
+      virtual void finish() = 0;
+    };
+
+    using Points3 = std::vector<std::array<double, 3>>;
+    /// <directory>/<name>/<name>-NNNNN.vtu and <directory>/<name>.pvd.
+    std::unique_ptr<FieldWriter> make_vtu_writer(const std::string &directory,
+                                                 const std::string &name, const Points3 &points,
+                                                 const Cells &cells);
+    /// <directory>/<name>.h5 and <directory>/<name>.xdmf.
+    std::unique_ptr<FieldWriter> make_xdmf_writer(const std::string &directory,
+                                                  const std::string &name, const Points3 &points,
+                                                  const Cells &cells);
 
     /// The drawing of a 3D model (Model/Dimension = 3; vtu_series_3d.cc).
     class VtuGeometry3D
     {
     public:
       explicit VtuGeometry3D(const Model &model);
-      /// The <Piece> of a frame: displacements times `scale`; the member end
-      /// forces and the gaps' states when `elements` is given (a time frame).
-      std::string piece(const Vector &u, double scale, const NonlinearElements *elements) const;
+      /// The point and cell arrays of a frame: displacements times `scale`;
+      /// the member end forces and the gaps' states when `elements` is given
+      /// (a time frame).
+      FieldFrame frame(const Vector &u, double scale, const NonlinearElements *elements) const;
+      const Points3 &point_positions() const { return points; }
+      const Cells   &cell_list() const { return cells; }
       /// The largest translation of a point under u.
       double largest_translation(const Vector &u) const;
       /// The model's largest extent along x, y or z, m.
@@ -175,9 +222,8 @@ namespace poundfe
       void         add_floors();
       void         add_gaps();
       void         add_contact_point(unsigned int g);
-      void         write_static_text();
       double       value(const Combination &c, const Vector &u) const;
-      std::string  time_arrays(const Vector &u, const NonlinearElements &elements) const;
+      void time_arrays(const Vector &u, const NonlinearElements &elements, FieldFrame &frame) const;
       /// The contact points' displacements (into d) and forces on the gaps'
       /// first buildings, per point, at the elements' state.
       std::vector<std::array<double, 3>>
@@ -197,7 +243,6 @@ namespace poundfe
       std::vector<int>                 gap_point, gap_vertex;
       std::vector<int>                 master_point; // per model node; -1: none
       double                           model_size = 0;
-      std::string                      static_cell_data, geometry;
     };
   } // namespace vtu
 } // namespace poundfe

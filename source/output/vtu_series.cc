@@ -38,19 +38,19 @@ namespace poundfe
     std::vector<PointSource>  sources;
     std::vector<unsigned int> point_of_node;
 
-    unsigned int n_cells = 0;
+    Cells        cells;
     unsigned int first_gap_cell = 0, first_hinge_cell = 0;
     /// The cell of each hysteretic storey, in the order of the elements.
     std::vector<unsigned int> hysteretic_storey_cells;
-    /// The static part of every file: cell ids (CellData), points and cells.
-    std::string static_cell_data, geometry;
     double      model_size = 0; // largest extent, m
 
-    std::vector<std::pair<double, std::string>> frames;
     /// Dimension 3: the spatial drawing (the planar members above are none).
     std::unique_ptr<VtuGeometry3D> space;
+    /// The files (VTU + PVD, or HDF5 + XDMF).
+    std::unique_ptr<FieldWriter> writer;
 
-    Impl(const Model &model, const std::string &directory, const std::string &name);
+    Impl(const Model &model, const std::string &directory, const std::string &name,
+         FieldFormat format);
 
     unsigned int add_point(const Point2 &position, const PointSource &source);
     // the constructor's phases: points of the nodes, the cells (adding the
@@ -58,15 +58,15 @@ namespace poundfe
     void  add_node_points();
     Cells make_cells();
     void  set_model_size();
-    void  write_static_text(const Cells &cells);
     /// Global (ux, uy, rz) of every point.
     std::vector<std::array<double, 3>> point_displacements(const Vector &u) const;
     Vector6 element_displacements(const Member &member, const Vector &u) const;
     double  dof_value(const Vector &u, unsigned int node, Component c) const;
-    /// The <Piece> of a planar model; `cell_arrays` adds the time-dependent CellData.
-    std::string piece(const Vector &u, double point_scale, const std::string &cell_arrays) const;
-    /// Writes one file around its field data and piece.
-    void write_file(const std::string &field_data, const std::string &piece, double label);
+    /// The point data (displacement, rotation) and the cell ids of a planar
+    /// model; the caller adds the time-dependent cell data.
+    FieldFrame frame(const Vector &u, double point_scale) const;
+    /// The frame of `u`, planar or spatial (`elements`: of a time frame).
+    FieldFrame frame(const Vector &u, double scale, const NonlinearElements *elements) const;
   };
 
   unsigned int
@@ -77,21 +77,27 @@ namespace poundfe
     return points.size() - 1;
   }
 
-  VtuSeries::Impl::Impl(const Model &model, const std::string &directory, const std::string &name)
+  VtuSeries::Impl::Impl(const Model &model, const std::string &directory, const std::string &name,
+                        const FieldFormat format)
     : model(model)
     , directory(directory)
     , name(name)
   {
+    Points3 at;
     if (model.dimension == 3)
+      space = std::make_unique<VtuGeometry3D>(model);
+    else
       {
-        space = std::make_unique<VtuGeometry3D>(model);
-        return;
+        add_node_points();
+        cells = make_cells();
+        set_model_size();
+        for (const Point2 &p : points)
+          at.push_back({{p.x, p.y, 0}});
       }
-    add_node_points();
-    const Cells cells = make_cells();
-    n_cells           = cells.types.size();
-    set_model_size();
-    write_static_text(cells);
+    const Points3 &positions = space ? space->point_positions() : at;
+    const Cells   &drawn     = space ? space->cell_list() : cells;
+    writer = format == FieldFormat::xdmf ? make_xdmf_writer(directory, name, positions, drawn) :
+                                           make_vtu_writer(directory, name, positions, drawn);
   }
 
   void
@@ -172,19 +178,15 @@ namespace poundfe
     model_size = std::max(x_max - x_min, y_max - y_min);
   }
 
-  void
-  vtu::write_cell_ids(std::string &out, const Cells &cells)
+  std::vector<FieldArray>
+  vtu::cell_id_arrays(const Cells &cells)
   {
-    DataArrayWriter text(out);
-    const std::pair<const char *, const std::vector<int> *> ids[] = {
-      {"kind", &cells.kinds}, {"building", &cells.buildings}, {"member", &cells.members}};
-    for (const auto &[array_name, values] : ids)
-      {
-        text.begin("Int32", array_name, 1);
-        for (const int v : *values)
-          text.whole(v);
-        text.end();
-      }
+    std::vector<FieldArray> ids;
+    for (const auto &[array_name, values] :
+         {std::pair{"kind", &cells.kinds}, {"building", &cells.buildings},
+          {"member", &cells.members}})
+      ids.push_back({array_name, 1, true, true, std::vector<double>(values->begin(), values->end())});
+    return ids;
   }
 
   void
@@ -212,16 +214,6 @@ namespace poundfe
       g.whole(t);
     g.end();
     out += "</Cells>\n";
-  }
-
-  void
-  VtuSeries::Impl::write_static_text(const Cells &cells)
-  {
-    write_cell_ids(static_cell_data, cells);
-    std::vector<std::array<double, 3>> at;
-    for (const Point2 &p : points)
-      at.push_back({{p.x, p.y, 0}});
-    write_geometry(geometry, at, cells);
   }
 
   double
@@ -267,89 +259,160 @@ namespace poundfe
     return d;
   }
 
-  std::string
-  VtuSeries::Impl::piece(const Vector &u, const double point_scale,
-                         const std::string &cell_arrays) const
+  FieldFrame
+  VtuSeries::Impl::frame(const Vector &u, const double point_scale) const
   {
-    std::string xml;
-    xml.reserve(geometry.size() + static_cell_data.size() + cell_arrays.size() +
-                60 * points.size() + 1024);
-    xml += "<Piece NumberOfPoints=\"" + std::to_string(points.size()) + "\" NumberOfCells=\"" +
-           std::to_string(n_cells) + "\">\n<PointData Vectors=\"displacement\">\n";
     const auto d = point_displacements(u);
-    DataArrayWriter  text(xml);
-    text.begin("Float64", "displacement", 3);
+    FieldArray displacement{"displacement", 3, false, false, {}};
+    FieldArray rotation{"rotation", 1, false, false, {}};
+    displacement.values.reserve(3 * d.size());
+    rotation.values.reserve(d.size());
     for (const auto &p : d)
       {
-        text.number(point_scale * p[0]);
-        text.number(point_scale * p[1]);
-        text.number(0);
+        displacement.values.insert(displacement.values.end(),
+                                   {point_scale * p[0], point_scale * p[1], 0.0});
+        rotation.values.push_back(point_scale * p[2]);
       }
-    text.end();
-    text.begin("Float64", "rotation", 1);
-    for (const auto &p : d)
-      text.number(point_scale * p[2]);
-    text.end();
-    xml += "</PointData>\n<CellData Scalars=\"kind\">\n";
-    xml += static_cell_data;
-    xml += cell_arrays;
-    xml += "</CellData>\n";
-    xml += geometry;
-    xml += "</Piece>\n";
-    return xml;
+    FieldFrame frame;
+    frame.point.push_back(std::move(displacement));
+    frame.point.push_back(std::move(rotation));
+    frame.cell = cell_id_arrays(cells);
+    return frame;
   }
 
-  void
-  VtuSeries::Impl::write_file(const std::string &field_data, const std::string &piece,
-                              const double label)
+  FieldFrame
+  VtuSeries::Impl::frame(const Vector &u, const double scale,
+                         const NonlinearElements *elements) const
   {
-    std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-                      "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
-                      "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n";
-    xml += field_data;
-    xml += piece;
-    xml += "</UnstructuredGrid>\n</VTKFile>\n";
-
-    char file_name[64];
-    std::snprintf(file_name, sizeof file_name, "%s-%05u.vtu", name.c_str(),
-                  static_cast<unsigned int>(frames.size()));
-    write_file_atomically(directory + "/" + name + "/" + file_name, xml);
-    frames.emplace_back(label, name + "/" + file_name);
+    return space ? space->frame(u, scale, elements) : frame(u, scale);
   }
-
-  VtuSeries::VtuSeries(const Model &model, const std::string &directory, const std::string &name)
-    : impl(std::make_unique<Impl>(model, directory, name))
-  {
-    create_directories(directory + "/" + name);
-  }
-
-  VtuSeries::~VtuSeries() = default;
 
   namespace
   {
-    /// The FieldData of a time frame: TIME.
-    std::string
-    time_field(const double time)
+    /// VTU files and their .pvd index: each frame one file, written whole
+    /// (the points, cells and constant arrays encoded once).
+    class VtuWriter : public FieldWriter
     {
-      std::string     field_data = "<FieldData>\n";
-      DataArrayWriter field(field_data);
-      field.begin("Float64", "TIME", 1);
-      field.number(time);
-      field.end();
-      return field_data + "</FieldData>\n";
-    }
+    public:
+      VtuWriter(const std::string &directory, const std::string &name, const Points3 &points,
+                const Cells &cells)
+        : directory(directory)
+        , name(name)
+        , n_points(points.size())
+        , n_cells(cells.types.size())
+      {
+        write_geometry(geometry, points, cells);
+        create_directories(directory + "/" + name);
+      }
+
+      void
+      write_frame(const double label, const FieldFrame &frame) override
+      {
+        std::string xml =
+          "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+          "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
+          "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n<FieldData>\n";
+        xml.reserve(geometry.size() + 16 * (n_points + n_cells) + 1024);
+        append_arrays(xml, frame.field);
+        xml += "</FieldData>\n<Piece NumberOfPoints=\"" + std::to_string(n_points) +
+               "\" NumberOfCells=\"" + std::to_string(n_cells) +
+               "\">\n<PointData Vectors=\"displacement\">\n";
+        append_arrays(xml, frame.point);
+        xml += "</PointData>\n<CellData Scalars=\"kind\">\n";
+        append_arrays(xml, frame.cell);
+        xml += "</CellData>\n";
+        xml += geometry;
+        xml += "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+
+        char file_name[64];
+        std::snprintf(file_name, sizeof file_name, "%s-%05u.vtu", name.c_str(),
+                      static_cast<unsigned int>(frames.size()));
+        write_file_atomically(directory + "/" + name + "/" + file_name, xml);
+        frames.emplace_back(label, name + "/" + file_name);
+      }
+
+      void
+      finish() override
+      {
+        std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
+                          "byte_order=\"LittleEndian\">\n<Collection>\n";
+        NumberText text;
+        for (const auto &[label, file] : frames)
+          {
+            char buffer[NumberText::max_length];
+            pvd += "  <DataSet timestep=\"" + std::string(buffer, text.write(buffer, label)) +
+                   "\" group=\"\" part=\"0\" file=\"" + file + "\"/>\n";
+          }
+        pvd += "</Collection>\n</VTKFile>\n";
+        write_file_atomically(directory + "/" + name + ".pvd", pvd);
+      }
+
+    private:
+      /// The DataArrays of `arrays`; a constant one's text is made once.
+      void
+      append_arrays(std::string &xml, const std::vector<FieldArray> &arrays)
+      {
+        for (const FieldArray &array : arrays)
+          {
+            if (array.constant)
+              {
+                auto [it, added] = constant_text.try_emplace(array.name);
+                if (added)
+                  encode(it->second, array);
+                xml += it->second;
+              }
+            else
+              encode(xml, array);
+          }
+      }
+
+      static void
+      encode(std::string &xml, const FieldArray &array)
+      {
+        DataArrayWriter text(xml);
+        text.begin(array.integer ? "Int32" : "Float64", array.name.c_str(), array.n_components);
+        for (const double v : array.values)
+          if (array.integer)
+            text.whole(static_cast<long>(v));
+          else
+            text.number(v);
+        text.end();
+      }
+
+      const std::string                           directory, name;
+      const std::size_t                           n_points, n_cells;
+      std::string                                 geometry;
+      std::map<std::string, std::string>          constant_text;
+      std::vector<std::pair<double, std::string>> frames;
+    };
   } // namespace
+
+  std::unique_ptr<FieldWriter>
+  vtu::make_vtu_writer(const std::string &directory, const std::string &name,
+                       const Points3 &points, const Cells &cells)
+  {
+    return std::make_unique<VtuWriter>(directory, name, points, cells);
+  }
+
+  VtuSeries::VtuSeries(const Model &model, const std::string &directory, const std::string &name,
+                       const FieldFormat format)
+    : impl(std::make_unique<Impl>(model, directory, name, format))
+  {}
+
+  VtuSeries::~VtuSeries() = default;
 
   void
   VtuSeries::write(const double time, const Vector &u, const NonlinearElements &elements)
   {
+    FieldFrame frame = impl->frame(u, 1.0, &elements);
+    frame.field.push_back({"TIME", 1, false, false, {time}});
     if (impl->space)
       {
-        impl->write_file(time_field(time), impl->space->piece(u, 1.0, &elements), time);
+        impl->writer->write_frame(time, frame);
         return;
       }
     const Model        &model = impl->model;
-    const unsigned int  n     = impl->n_cells;
+    const unsigned int  n     = impl->cells.types.size();
     // end forces N V M at both ends, then force, contact, penetration, z,
     // plastic deformation
     std::vector<std::array<double, 6>> end_forces(n, {{0, 0, 0, 0, 0, 0}});
@@ -405,33 +468,21 @@ namespace poundfe
         end_forces[cell][4]     = -force[cell];
       }
 
-    std::string cell_arrays;
-    DataArrayWriter   text(cell_arrays);
     static const char *end_force_names[6] = {"N_start", "V_start", "M_start",
                                              "N_end",   "V_end",   "M_end"};
     for (unsigned int k = 0; k < 6; ++k)
       {
-        text.begin("Float64", end_force_names[k], 1);
+        FieldArray array{end_force_names[k], 1, false, false, {}};
         for (const auto &f : end_forces)
-          text.number(f[k]);
-        text.end();
+          array.values.push_back(f[k]);
+        frame.cell.push_back(std::move(array));
       }
-    const std::pair<const char *, const std::vector<double> *> arrays[] = {
-      {"force", &force}, {"penetration", &penetration}, {"z", &z},
-      {"plastic_deformation", &plastic}};
-    for (const auto &[array_name, values] : arrays)
-      {
-        text.begin("Float64", array_name, 1);
-        for (const double v : *values)
-          text.number(v);
-        text.end();
-      }
-    text.begin("Int32", "contact", 1);
-    for (const int c : contact)
-      text.whole(c);
-    text.end();
-
-    impl->write_file(time_field(time), impl->piece(u, 1.0, cell_arrays), time);
+    for (const auto &[array_name, values] :
+         {std::pair{"force", &force}, {"penetration", &penetration}, {"z", &z},
+          {"plastic_deformation", &plastic}})
+      frame.cell.push_back({array_name, 1, false, false, *values});
+    frame.cell.push_back({"contact", 1, true, false, std::vector<double>(contact.begin(), contact.end())});
+    impl->writer->write_frame(time, frame);
   }
 
   void
@@ -446,37 +497,17 @@ namespace poundfe
     const double size  = impl->space ? impl->space->size() : impl->model_size;
     const double scale = largest > 0 ? mode_amplitude * size / largest : 1.0;
 
-    std::string field_data;
-    DataArrayWriter   field(field_data);
-    field_data += "<FieldData>\n";
-    const std::pair<const char *, double> values[] = {
-      {"mode", mode}, {"frequency_Hz", frequency}, {"period_s", frequency > 0 ? 1 / frequency : 0.0}, {"scale", scale}};
-    for (const auto &[field_name, value] : values)
-      {
-        field.begin("Float64", field_name, 1);
-        field.number(value);
-        field.end();
-      }
-    field_data += "</FieldData>\n";
-    impl->write_file(field_data,
-                     impl->space ? impl->space->piece(shape, scale, nullptr) :
-                                   impl->piece(shape, scale, {}),
-                     mode);
+    FieldFrame frame = impl->frame(shape, scale, nullptr);
+    for (const auto &[field_name, value] :
+         {std::pair{"mode", double(mode)}, {"frequency_Hz", frequency},
+          {"period_s", frequency > 0 ? 1 / frequency : 0.0}, {"scale", scale}})
+      frame.field.push_back({field_name, 1, false, false, {value}});
+    impl->writer->write_frame(mode, frame);
   }
 
   void
   VtuSeries::finish()
   {
-    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
-                      "byte_order=\"LittleEndian\">\n<Collection>\n";
-    NumberText text;
-    for (const auto &[label, file] : impl->frames)
-      {
-        char buffer[NumberText::max_length];
-        pvd += "  <DataSet timestep=\"" + std::string(buffer, text.write(buffer, label)) +
-               "\" group=\"\" part=\"0\" file=\"" + file + "\"/>\n";
-      }
-    pvd += "</Collection>\n</VTKFile>\n";
-    write_file_atomically(impl->directory + "/" + impl->name + ".pvd", pvd);
+    impl->writer->finish();
   }
 } // namespace poundfe

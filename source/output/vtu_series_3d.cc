@@ -57,7 +57,6 @@ namespace poundfe
           }
       for (unsigned int c = 0; c < 3; ++c)
         model_size = std::max(model_size, high[c] - low[c]);
-      write_static_text();
     }
 
     unsigned int
@@ -213,13 +212,6 @@ namespace poundfe
       return force;
     }
 
-    void
-    VtuGeometry3D::write_static_text()
-    {
-      write_cell_ids(static_cell_data, cells);
-      write_geometry(geometry, points, cells);
-    }
-
     double
     VtuGeometry3D::value(const Combination &combination, const Vector &u) const
     {
@@ -239,11 +231,15 @@ namespace poundfe
       return largest;
     }
 
-    std::string
-    VtuGeometry3D::time_arrays(const Vector &u, const NonlinearElements &elements) const
+    void
+    VtuGeometry3D::time_arrays(const Vector &u, const NonlinearElements &elements,
+                               FieldFrame &frame) const
     {
-      const unsigned int                  n_cells = cells.types.size();
-      std::vector<std::array<double, 12>> end_forces(n_cells, std::array<double, 12>{});
+      const unsigned int n_cells = cells.types.size();
+      FieldArray         start{"end_forces_start", 6, false, false, {}};
+      FieldArray         end{"end_forces_end", 6, false, false, {}};
+      start.values.assign(6 * n_cells, 0.0);
+      end.values.assign(6 * n_cells, 0.0);
       for (unsigned int e = 0; e < model.members_3d.size(); ++e) // the first cells
         {
           const Member3D    &member = model.members_3d[e];
@@ -257,86 +253,62 @@ namespace poundfe
               if (const int q = model.equation(member.dofs[j]); q >= 0)
                 ue[i] += member.map[i * n + j] * u[q];
           const Vector12 f = element.local_end_forces(ue);
-          for (unsigned int i = 0; i < 12; ++i)
-            end_forces[e][i] = f[i];
+          for (unsigned int k = 0; k < 6; ++k)
+            {
+              start.values[6 * e + k] = f[k];
+              end.values[6 * e + k]   = f[6 + k];
+            }
         }
-      std::vector<double> force(n_cells, 0);
-      std::vector<int>    contact(n_cells, 0);
-      unsigned int        g = 0;
+      FieldArray   force{"force", 1, false, false, std::vector<double>(n_cells, 0.0)};
+      FieldArray   contact{"contact", 1, true, false, std::vector<double>(n_cells, 0.0)};
+      unsigned int g = 0;
       for (const NonlinearElement &element : elements)
         if (element.kind == ElementKind::gap)
           {
             for (const int cell : {gap_cell.at(g), gap_vertex.at(g)})
               if (cell >= 0)
                 {
-                  force[cell]   = element.force();
-                  contact[cell] = element.is_active();
+                  force.values[cell]   = element.force();
+                  contact.values[cell] = element.is_active();
                 }
             ++g;
           }
-      std::string     xml;
-      DataArrayWriter text(xml);
-      for (unsigned int end = 0; end < 2; ++end)
-        {
-          text.begin("Float64", end == 0 ? "end_forces_start" : "end_forces_end", 6);
-          for (const auto &f : end_forces)
-            for (unsigned int k = 0; k < 6; ++k)
-              text.number(f[6 * end + k]);
-          text.end();
-        }
-      text.begin("Float64", "force", 1);
-      for (const double f : force)
-        text.number(f);
-      text.end();
-      text.begin("Int32", "contact", 1);
-      for (const int c : contact)
-        text.whole(c);
-      text.end();
-      return xml;
+      for (FieldArray *array : {&start, &end, &force, &contact})
+        frame.cell.push_back(std::move(*array));
     }
 
-    std::string
-    VtuGeometry3D::piece(const Vector &u, const double scale,
+    FieldFrame
+    VtuGeometry3D::frame(const Vector &u, const double scale,
                          const NonlinearElements *elements) const
     {
-      std::string xml = "<Piece NumberOfPoints=\"" + std::to_string(points.size()) +
-                        "\" NumberOfCells=\"" + std::to_string(cells.types.size()) +
-                        "\">\n<PointData Vectors=\"displacement\">\n";
       std::vector<std::array<double, 6>> d(points.size());
       for (unsigned int p = 0; p < points.size(); ++p)
         for (unsigned int c = 0; c < 6; ++c)
           d[p][c] = scale * value(motions[p][c], u);
       const std::vector<std::array<double, 3>> contact_force =
         elements ? contact_points(*elements, scale, d) : std::vector<std::array<double, 3>>{};
-      DataArrayWriter text(xml);
+      FieldFrame frame;
       for (const unsigned int first : {0u, 3u})
         {
-          text.begin("Float64", first == 0 ? "displacement" : "rotation", 3);
+          FieldArray motion{first == 0 ? "displacement" : "rotation", 3, false, false, {}};
+          motion.values.reserve(3 * d.size());
           for (const auto &m : d)
-            for (unsigned int c = first; c < first + 3; ++c)
-              text.number(m[c]);
-          text.end();
+            motion.values.insert(motion.values.end(), m.begin() + first, m.begin() + first + 3);
+          frame.point.push_back(std::move(motion));
         }
-      text.begin("Int32", "node", 1);
-      for (const int n : point_node)
-        text.whole(n);
-      text.end();
+      frame.point.push_back(
+        {"node", 1, true, true, std::vector<double>(point_node.begin(), point_node.end())});
       if (elements != nullptr)
         {
-          text.begin("Float64", "contact_force", 3);
+          FieldArray force{"contact_force", 3, false, false, {}};
           for (const auto &f : contact_force)
-            for (const double c : f)
-              text.number(c);
-          text.end();
+            force.values.insert(force.values.end(), f.begin(), f.end());
+          frame.point.push_back(std::move(force));
         }
-      xml += "</PointData>\n<CellData Scalars=\"kind\">\n";
-      xml += static_cell_data;
+      frame.cell = cell_id_arrays(cells);
       if (elements != nullptr)
-        xml += time_arrays(u, *elements);
-      xml += "</CellData>\n";
-      xml += geometry;
-      xml += "</Piece>\n";
-      return xml;
+        time_arrays(u, *elements, frame);
+      return frame;
     }
   } // namespace vtu
 } // namespace poundfe

@@ -98,9 +98,12 @@ namespace poundfe
         if (options.vtu && output.vtu_interval > 0)
           {
             outputs.push_back(std::make_unique<VtuRecorder>(
-              analysis.model, directory,
-              vtu_steps_per_frame(output, dt, n_steps, options.console)));
-            files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
+              analysis.model, directory, vtu_steps_per_frame(output, dt, n_steps, options.console),
+              output.field_format));
+            if (output.field_format == FieldFormat::xdmf)
+              files.insert(files.end(), {"solution.xdmf", "solution.h5"}); // the index, the data
+            else
+              files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
           }
         outputs.push_back(std::make_unique<RunSummary>(
           analysis, parameters, excitation, peaks, range, directory, options.plots && output.plots,

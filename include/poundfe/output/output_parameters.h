@@ -3,6 +3,7 @@
 #ifndef poundfe_output_output_parameters_h
 #define poundfe_output_output_parameters_h
 
+#include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/output/recorder_parameters.h>
 
@@ -15,12 +16,23 @@ namespace dealii
 
 namespace poundfe
 {
+  /// The format of the field output (Output/Field format): ParaView's VTU
+  /// files with a .pvd index, or one HDF5 file with an XDMF index.
+  enum class FieldFormat
+  {
+    vtu,
+    xdmf
+  };
+
+  const NameTable<FieldFormat> &field_format_names();
+
   struct OutputParameters
   {
     std::string        directory    = "results";
     double             interval     = 0.0; // of CSV rows, s; 0 = every step
     double             vtu_interval = 0.1; // 0 = no VTU
     unsigned int       max_vtu_frames = 2000; // a longer run widens the VTU interval
+    FieldFormat        field_format   = FieldFormat::vtu;
     bool               plots        = true;
     unsigned int       n_modes      = 6;
     bool               floor_spectra = false; // floor_spectra.csv of a run

@@ -22,6 +22,9 @@
 // gaps in space, drawn by source/output/vtu_series_3d.cc (doc/theory.md §10).
 // Arrays are written in VTK's compressed binary form (zlib, base64), as
 // deal.II's DataOut does by default.
+// Output/Field format = xdmf writes the same arrays into one HDF5 file (the
+// points and cells once, a group per frame) with an XDMF 3 index that
+// ParaView's XDMF readers open (source/output/xdmf_series.cc).
 // deal.II's DataOut writes every cell's vertices again (duplicated points)
 // and interpolates cell data to points; this writer does neither.
 #ifndef poundfe_output_vtu_series_h
@@ -30,6 +33,7 @@
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/model/model.h>
 #include <poundfe/output/observer.h>
+#include <poundfe/output/output_parameters.h>
 
 #include <memory>
 #include <string>
@@ -44,9 +48,11 @@ namespace poundfe
     /// Interior subdivisions of each frame element in the drawing.
     static constexpr unsigned int n_member_subdivisions = 4;
 
-    /// Frames go to <directory>/<name>/<name>-NNNNN.vtu, the index to
-    /// <directory>/<name>.pvd.
-    VtuSeries(const Model &model, const std::string &directory, const std::string &name);
+    /// vtu: frames go to <directory>/<name>/<name>-NNNNN.vtu, the index to
+    /// <directory>/<name>.pvd; xdmf: to <directory>/<name>.h5 (HDF5), the
+    /// index to <directory>/<name>.xdmf (source/output/xdmf_series.cc).
+    VtuSeries(const Model &model, const std::string &directory, const std::string &name,
+              FieldFormat format = FieldFormat::vtu);
     ~VtuSeries();
 
     /// A frame of a time history: `u` holds the equations' values; the
@@ -58,7 +64,8 @@ namespace poundfe
     /// the file's field data `scale`, with `mode`, `frequency_Hz` and
     /// `period_s`); no forces or states.
     void write_mode(unsigned int mode, double frequency, const Vector &shape);
-    /// Write the .pvd index (atomically).
+    /// Write the .pvd index (atomically); xdmf: close the .h5 and write
+    /// the .xdmf (both atomically).
     void finish();
 
     static constexpr double mode_amplitude = 0.05;
@@ -68,12 +75,14 @@ namespace poundfe
     std::unique_ptr<Impl> impl;
   };
 
-  /// A time history as a VTU series (solution.pvd): a frame every `every` steps.
+  /// A time history as a field series (solution.pvd, or solution.xdmf and
+  /// solution.h5): a frame every `every` steps.
   class VtuRecorder : public StepObserver
   {
   public:
-    VtuRecorder(const Model &model, const std::string &directory, unsigned int every)
-      : series(model, directory, "solution")
+    VtuRecorder(const Model &model, const std::string &directory, unsigned int every,
+                FieldFormat format = FieldFormat::vtu)
+      : series(model, directory, "solution", format)
       , every(every)
     {}
     void

@@ -1,0 +1,379 @@
+// The field output of large models: one HDF5 file and an XDMF 3 index
+// (Output/Field format = xdmf). The XDMF file (XDMF Model and Format,
+// xdmf.org, version 3) is light XML that describes the heavy data of the
+// HDF5 file (The HDF Group, HDF5 Reference Manual, C API): a temporal
+// collection (Grid GridType="Collection" CollectionType="Temporal") of one
+// uniform grid per frame, each with its Time, the points (GeometryType XYZ)
+// and the cells (TopologyType Mixed: per cell its XDMF type, Polyvertex 1,
+// Polyline 2 or Polygon 3, then its number of points and their indices),
+// and one Attribute per array (Center Node, Cell or Grid) pointing into the
+// HDF5 file as "<name>.h5:/path".
+//   <name>.h5: /mesh/points (points x 3, float64), /mesh/topology (the
+//   Mixed list, int64), /mesh/connectivity, /mesh/offsets, /mesh/types (the
+//   VTU file's cell arrays, int64, int64, int32), the constant arrays
+//   (kind, building, member, node: int32) once under /mesh, and a group
+//   /frames/NNNNN per frame with its field, point and cell arrays under the
+//   VTU files' names (float64, contact int32), points or cells first, the
+//   components second. An array of 1024 values or more is one chunk,
+//   byte-shuffled and deflated (zlib level 1, as the VTU arrays); smaller
+//   ones are contiguous (a chunk's index would cost more than it saves).
+//   Measured: input/city-block.prm, 11 frames, 37 MB against 106 MB
+//   uncompressed and 69 MB of VTU files. The file is in the HDF5 1.8 format.
+// Both files are written under "<file>.tmp" and renamed when the series
+// finishes (the HDF5 file first, so that the index never names a missing
+// file); every frame write is a safe point of the interruption, as an
+// AtomicFile write is. One process writes (rank 0 under MPI, as for VTU).
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/number_text.h>
+#include <poundfe/output/output_directory.h>
+
+#include "vtu_arrays.h"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  namespace vtu
+  {
+    namespace
+    {
+      /// The XDMF cell type of a VTK cell type (XDMF3, "Mixed" topology).
+      int
+      xdmf_cell_type(const int vtk_type)
+      {
+        switch (vtk_type)
+          {
+            case vtk_vertex:
+              return 1; // Polyvertex
+            case vtk_line:
+            case vtk_poly_line:
+              return 2; // Polyline
+            case vtk_polygon:
+              return 3; // Polygon
+            default:
+              Assert(false, dealii::ExcMessage("a cell type XDMF output does not know"));
+              return 0;
+          }
+      }
+
+      /// An array written to the HDF5 file, as the index names it.
+      struct StoredArray
+      {
+        std::string  name, path;
+        const char  *center; // Node, Cell or Grid
+        std::size_t  n_rows;
+        unsigned int n_components;
+        bool         integer;
+      };
+
+      class XdmfWriter : public FieldWriter
+      {
+      public:
+        XdmfWriter(const std::string &directory, const std::string &name, const Points3 &points,
+                   const Cells &cells);
+        ~XdmfWriter() override;
+        void write_frame(double label, const FieldFrame &frame) override;
+        void finish() override;
+
+      private:
+        /// The id, or on failure (a negative id) closes and removes the file
+        /// and throws OutputError with errno (EIO when the library set none).
+        hid_t checked(hid_t id);
+        /// Dataset creation properties: one chunk of the whole array, the
+        /// bytes shuffled and deflated (zlib level 1, as the VTU files).
+        hid_t compressed_layout(const hsize_t *dimensions, int rank);
+        /// Smaller arrays are stored contiguous, uncompressed (in the 3D test,
+        /// cli/xdmf, the end forces are compressed, the rest is not).
+        static constexpr hsize_t min_compressed_values = 1024;
+        void  write_mesh(const Points3 &points, const Cells &cells);
+        void  write(hid_t group, const std::string &name, const std::vector<double> &values,
+                    unsigned int n_components, bool integer);
+        void  write(hid_t group, const std::string &name, const std::vector<long long> &values);
+        StoredArray store(hid_t group, const std::string &group_path, const char *center,
+                          const FieldArray &array);
+        std::string index() const;
+        std::string data_item(std::size_t n_rows, unsigned int n_components, bool integer,
+                              unsigned int precision, const std::string &path) const;
+        void        close_file();
+
+        const std::string h5_path, temporary_path, xdmf_path, h5_name, series_name;
+        hid_t             file = -1;
+        int               failed_with = 0;
+        bool              renamed     = false; // the HDF5 file is in place
+        std::size_t       n_points, n_cells, topology_size = 0;
+        /// Per frame: its label and arrays; the constant arrays, written once.
+        std::vector<std::pair<double, std::vector<StoredArray>>> frames;
+        std::vector<StoredArray>                                 constant;
+      };
+
+      XdmfWriter::XdmfWriter(const std::string &directory, const std::string &name,
+                             const Points3 &points, const Cells &cells)
+        : h5_path(directory + "/" + name + ".h5")
+        , temporary_path(h5_path + ".tmp")
+        , xdmf_path(directory + "/" + name + ".xdmf")
+        , h5_name(name + ".h5")
+        , series_name(name)
+        , n_points(points.size())
+        , n_cells(cells.types.size())
+      {
+        throw_if_interrupted();   // a safe point: nothing of this file exists yet
+        register_output(h5_path); // listed before it exists (output_directory.h)
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // failures become OutputError
+        errno = 0;
+        // the HDF5 1.8 file format (readable by every HDF5 since 2008): groups
+        // of a few arrays stored compactly in their object header
+        const hid_t access = checked(H5Pcreate(H5P_FILE_ACCESS));
+        checked(H5Pset_libver_bounds(access, H5F_LIBVER_V18, H5F_LIBVER_V18));
+        file = H5Fcreate(temporary_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
+        H5Pclose(access);
+        checked(file);
+        write_mesh(points, cells);
+        H5Gclose(checked(H5Gcreate2(file, "/frames", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+      }
+
+      XdmfWriter::~XdmfWriter()
+      {
+        close_file();
+        if (!renamed) // not finished: an error or an interruption unwinds
+          std::remove(temporary_path.c_str());
+      }
+
+      hid_t
+      XdmfWriter::checked(const hid_t id)
+      {
+        if (id >= 0)
+          return id;
+        failed_with = errno != 0 ? errno : EIO;
+        close_file();
+        std::remove(temporary_path.c_str());
+        throw OutputError("write", h5_path, failed_with);
+      }
+
+      void
+      XdmfWriter::close_file()
+      {
+        if (file >= 0)
+          {
+            const hid_t closing = file;
+            file                = -1;
+            H5Fclose(closing);
+          }
+      }
+
+      hid_t
+      XdmfWriter::compressed_layout(const hsize_t *dimensions, const int rank)
+      {
+        const hid_t   layout   = checked(H5Pcreate(H5P_DATASET_CREATE));
+        const hsize_t n_values = dimensions[0] * (rank == 2 ? dimensions[1] : 1);
+        if (n_values < min_compressed_values) // a chunk's index costs more than it saves
+          return layout;
+        // a chunk is at most 4 GiB: 2^28 values (2 GiB of doubles) at most
+        const hsize_t width    = rank == 2 ? dimensions[1] : 1;
+        const hsize_t chunk[2] = {std::min<hsize_t>(dimensions[0], (hsize_t(1) << 28) / width),
+                                  width};
+        checked(H5Pset_chunk(layout, rank, chunk));
+        checked(H5Pset_shuffle(layout));
+        checked(H5Pset_deflate(layout, 1));
+        return layout;
+      }
+
+      void
+      XdmfWriter::write(const hid_t group, const std::string &name,
+                        const std::vector<double> &values, const unsigned int n_components,
+                        const bool integer)
+      {
+        const hsize_t dimensions[2] = {values.size() / n_components, n_components};
+        const hid_t   space = checked(H5Screate_simple(n_components == 1 ? 1 : 2, dimensions, nullptr));
+        const hid_t   layout = compressed_layout(dimensions, n_components == 1 ? 1 : 2);
+        const hid_t   set    = checked(H5Dcreate2(group, name.c_str(),
+                                                 integer ? H5T_STD_I32LE : H5T_IEEE_F64LE, space,
+                                                 H5P_DEFAULT, layout, H5P_DEFAULT));
+        H5Pclose(layout);
+        herr_t status;
+        if (integer)
+          {
+            const std::vector<std::int32_t> whole(values.begin(), values.end());
+            status = H5Dwrite(set, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, whole.data());
+          }
+        else
+          status = H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+        H5Dclose(set);
+        H5Sclose(space);
+        checked(status);
+      }
+
+      void
+      XdmfWriter::write(const hid_t group, const std::string &name,
+                        const std::vector<long long> &values)
+      {
+        const hsize_t dimensions[1] = {values.size()};
+        const hid_t   space         = checked(H5Screate_simple(1, dimensions, nullptr));
+        const hid_t   layout = compressed_layout(dimensions, 1);
+        const hid_t   set = checked(H5Dcreate2(group, name.c_str(), H5T_STD_I64LE, space,
+                                               H5P_DEFAULT, layout, H5P_DEFAULT));
+        H5Pclose(layout);
+        const herr_t  status =
+          H5Dwrite(set, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+        H5Dclose(set);
+        H5Sclose(space);
+        checked(status);
+      }
+
+      void
+      XdmfWriter::write_mesh(const Points3 &points, const Cells &cells)
+      {
+        const hid_t mesh = checked(H5Gcreate2(file, "/mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+        std::vector<double> xyz;
+        xyz.reserve(3 * points.size());
+        for (const auto &p : points)
+          xyz.insert(xyz.end(), p.begin(), p.end());
+        write(mesh, "points", xyz, 3, false);
+        std::vector<long long> topology;
+        topology.reserve(cells.connectivity.size() + 2 * n_cells);
+        for (std::size_t c = 0; c < n_cells; ++c)
+          {
+            const long first = c == 0 ? 0 : cells.offsets[c - 1];
+            topology.push_back(xdmf_cell_type(cells.types[c]));
+            topology.push_back(cells.offsets[c] - first);
+            topology.insert(topology.end(), cells.connectivity.begin() + first,
+                            cells.connectivity.begin() + cells.offsets[c]);
+          }
+        topology_size = topology.size();
+        write(mesh, "topology", topology);
+        write(mesh, "connectivity", {cells.connectivity.begin(), cells.connectivity.end()});
+        write(mesh, "offsets", {cells.offsets.begin(), cells.offsets.end()});
+        write(mesh, "types", std::vector<double>(cells.types.begin(), cells.types.end()), 1, true);
+        H5Gclose(mesh);
+      }
+
+      StoredArray
+      XdmfWriter::store(const hid_t group, const std::string &group_path, const char *center,
+                        const FieldArray &array)
+      {
+        write(group, array.name, array.values, array.n_components, array.integer);
+        return {array.name, group_path + "/" + array.name, center,
+                array.values.size() / array.n_components, array.n_components, array.integer};
+      }
+
+      void
+      XdmfWriter::write_frame(const double label, const FieldFrame &frame)
+      {
+        if (failed_with != 0) // the first failure again, already reported by its caller
+          throw OutputError("write", h5_path, failed_with);
+        throw_if_interrupted(); // the destructor removes the temporary
+        char group_path[32];
+        std::snprintf(group_path, sizeof group_path, "/frames/%05u",
+                      static_cast<unsigned int>(frames.size()));
+        errno = 0;
+        const hid_t group = checked(H5Gcreate2(file, group_path, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+        std::vector<StoredArray> stored;
+        for (const auto &[center, arrays] :
+             {std::pair{"Grid", &frame.field}, {"Node", &frame.point}, {"Cell", &frame.cell}})
+          for (const FieldArray &array : *arrays)
+            {
+              if (!array.constant)
+                {
+                  stored.push_back(store(group, group_path, center, array));
+                  continue;
+                }
+              bool known = false;
+              for (const StoredArray &c : constant)
+                known = known || c.name == array.name;
+              if (!known)
+                {
+                  const hid_t mesh = checked(H5Gopen2(file, "/mesh", H5P_DEFAULT));
+                  constant.push_back(store(mesh, "/mesh", center, array));
+                  H5Gclose(mesh);
+                }
+              for (const StoredArray &c : constant)
+                if (c.name == array.name)
+                  stored.push_back(c);
+            }
+        H5Gclose(group);
+        frames.emplace_back(label, std::move(stored));
+      }
+
+      std::string
+      XdmfWriter::data_item(const std::size_t n_rows, const unsigned int n_components,
+                            const bool integer, const unsigned int precision,
+                            const std::string &path) const
+      {
+        const std::string dimensions =
+          std::to_string(n_rows) + (n_components == 1 ? "" : " " + std::to_string(n_components));
+        return "<DataItem Dimensions=\"" + dimensions + "\" NumberType=\"" +
+               (integer ? "Int" : "Float") + "\" Precision=\"" + std::to_string(precision) +
+               "\" Format=\"HDF\">" + h5_name + ":" + path + "</DataItem>";
+      }
+
+      std::string
+      XdmfWriter::index() const
+      {
+        std::string xml = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
+                          "<Grid Name=\"" + series_name +
+                          "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+        const std::string geometry =
+          "<Geometry GeometryType=\"XYZ\">" + data_item(n_points, 3, false, 8, "/mesh/points") +
+          "</Geometry>\n<Topology TopologyType=\"Mixed\" NumberOfElements=\"" +
+          std::to_string(n_cells) + "\">" + data_item(topology_size, 1, true, 8, "/mesh/topology") +
+          "</Topology>\n";
+        NumberText text;
+        for (std::size_t f = 0; f < frames.size(); ++f)
+          {
+            char buffer[NumberText::max_length];
+            char name[64];
+            std::snprintf(name, sizeof name, "%s-%05u", series_name.c_str(),
+                          static_cast<unsigned int>(f));
+            xml += "<Grid Name=\"" + std::string(name) + "\" GridType=\"Uniform\">\n<Time Value=\"" +
+                   std::string(buffer, text.write(buffer, frames[f].first)) + "\"/>\n" + geometry;
+            for (const StoredArray &a : frames[f].second)
+              xml += "<Attribute Name=\"" + a.name + "\" AttributeType=\"" +
+                     (a.n_components == 1 ? "Scalar" : a.n_components == 3 ? "Vector" : "Matrix") +
+                     "\" Center=\"" + a.center + "\">" +
+                     data_item(a.n_rows, a.n_components, a.integer, a.integer ? 4 : 8, a.path) +
+                     "</Attribute>\n";
+            xml += "</Grid>\n";
+          }
+        return xml + "</Grid>\n</Domain>\n</Xdmf>\n";
+      }
+
+      void
+      XdmfWriter::finish()
+      {
+        if (failed_with != 0)
+          throw OutputError("write", h5_path, failed_with);
+        errno = 0;
+        const hid_t closing = file;
+        file                = -1;
+        if (H5Fclose(closing) < 0)
+          {
+            failed_with = errno != 0 ? errno : EIO;
+            throw OutputError("write", h5_path, failed_with);
+          }
+        throw_if_interrupted(); // before the rename: an interrupted file never appears
+        if (std::rename(temporary_path.c_str(), h5_path.c_str()) != 0)
+          {
+            failed_with = errno;
+            throw OutputError("write", h5_path, failed_with);
+          }
+        renamed = true;
+        write_file_atomically(xdmf_path, index());
+      }
+    } // namespace
+
+    std::unique_ptr<FieldWriter>
+    make_xdmf_writer(const std::string &directory, const std::string &name, const Points3 &points,
+                     const Cells &cells)
+    {
+      return std::make_unique<XdmfWriter>(directory, name, points, cells);
+    }
+  } // namespace vtu
+} // namespace poundfe
