@@ -89,12 +89,8 @@ namespace poundfe
     const unsigned int n        = n_storeys;
     const auto         required = [&](const std::string &entry, const std::vector<double> &values,
                               const char *what) {
-      if (values.empty())
-        input.fail(s + entry,
-                           "a 3D frame needs the " + std::string(what) + " (one value or one per storey)");
-      input.list(s + entry, values, n, false, "one per storey");
-      for (const double v : values)
-        input.positive(s + entry, v);
+      require_positive_list(input, s + entry, values, n, "a 3D frame needs the " +
+                                                           std::string(what), "one per storey");
     };
     required("Column G", column_shear_modulus, "columns' shear modulus G");
     required("Column Iz", column_second_moment_z, "columns' second moment Iz");
@@ -139,6 +135,18 @@ namespace poundfe
     const double ly = n_bays_y > 0 ? total(bay_widths_y, n_bays_y) : 1e-3 * lx;
     plan.dimensions = {lx, ly};
     parse_set_backs(*this, input, s);
+  }
+
+  void
+  require_positive_list(const InputFile &input, const std::string &path,
+                        const std::vector<double> &values, const std::size_t n,
+                        const std::string &need, const std::string &per)
+  {
+    if (values.empty())
+      input.fail(path, need + " (one value or " + per + ")");
+    input.list(path, values, n, false, per);
+    for (const double v : values)
+      input.positive(path, v);
   }
 
   // Set-backs (include/poundfe/model/set_backs.h).

@@ -42,12 +42,9 @@ namespace poundfe
     const std::size_t g        = group_ids.size();
     const auto        required = [&](const std::string &entry, const std::vector<double> &values,
                               const char *what) {
-      if (values.empty())
-        input.fail(s + entry, "a 3D mesh building needs the " + std::string(what) +
-                                " (one value or one per group id)");
-      input.list(s + entry, values, g, false, "one per group id");
-      for (const double v : values)
-        input.positive(s + entry, v);
+      require_positive_list(input, s + entry, values, g,
+                            "a 3D mesh building needs the " + std::string(what),
+                            "one per group id");
     };
     required("Group G", group_shear_modulus, "groups' shear modulus G");
     required("Group Iz", group_second_moment_z, "groups' second moment Iz");

@@ -161,6 +161,13 @@ namespace poundfe
     void finalize_modal_damping(const InputFile &input, const std::string &section);
   };
 
+  /// A list every building of a kind needs: fails with "<need> (one value
+  /// or <per>)" naming `path` when empty, unless it has 1 or n values, or a
+  /// value is not positive. Throws InputError.
+  void require_positive_list(const InputFile &input, const std::string &path,
+                             const std::vector<double> &values, std::size_t n,
+                             const std::string &need, const std::string &per);
+
   /// The `Model` section and the buildings it announces.
   struct ModelParameters
   {
