@@ -1,10 +1,10 @@
 // 3D frame buildings drawn in Gmsh (include/poundfe/model/mesh_building_3d.h;
 // doc/theory.md §1.15, "Frames drawn in Gmsh").
+#include <poundfe/base/numbers.h>
 #include <poundfe/mesh/line_mesh.h>
 #include <poundfe/model/frame_3d_assembler.h>
 #include <poundfe/model/mesh_building_3d.h>
 #include <poundfe/model/plan_builder.h>
-#include <poundfe/output/number_text.h>
 
 #include <Eigen/Geometry>
 
