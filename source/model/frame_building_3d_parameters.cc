@@ -117,12 +117,7 @@ namespace poundfe
                  "all columns stand on one line along x: a rigid diaphragm on them is "
                  "singular (no frame across the line holds its sway along y and its "
                  "twist); give bays along y, or Diaphragm = none");
-    if (elements_per_member != 1)
-      input.fail(s + "Elements per member", "3D frames take one element per member");
-    if (!plan.planes_text.empty())
-      input.fail(s + "Plan/Resisting planes",
-                 "a frame resists with its columns: resisting planes are for "
-                 "shear buildings");
+    check_one_element_no_planes(input, s);
     const auto total = [](const std::vector<double> &widths, const unsigned int n_bays) {
       double sum = 0;
       for (unsigned int i = 0; i < n_bays; ++i)
@@ -135,6 +130,18 @@ namespace poundfe
     const double ly = n_bays_y > 0 ? total(bay_widths_y, n_bays_y) : 1e-3 * lx;
     plan.dimensions = {lx, ly};
     parse_set_backs(*this, input, s);
+  }
+
+  void
+  BuildingParameters::check_one_element_no_planes(const InputFile &input,
+                                                  const std::string &s) const
+  {
+    if (elements_per_member != 1)
+      input.fail(s + "Elements per member", "3D frames take one element per member");
+    if (!plan.planes_text.empty())
+      input.fail(s + "Plan/Resisting planes",
+                 "a frame resists with its columns: resisting planes are for "
+                 "shear buildings");
   }
 
   void

@@ -55,12 +55,7 @@ namespace poundfe
           {"Group I", &group_second_moment}})
       for (const double v : *values)
         input.positive(s + entry, v);
-    if (elements_per_member != 1)
-      input.fail(s + "Elements per member", "3D frames take one element per member");
-    if (!plan.planes_text.empty())
-      input.fail(s + "Plan/Resisting planes",
-                 "a frame resists with its columns: resisting planes are for "
-                 "shear buildings");
+    check_one_element_no_planes(input, s);
 
     const std::string path = s + "Group orientation";
     group_orientations.assign(g, {{0, 0, 0}});

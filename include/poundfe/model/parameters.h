@@ -157,6 +157,9 @@ namespace poundfe
     void declare_hinges(dealii::ParameterHandler &prm);        // Hinges
     void declare_bouc_wen(dealii::ParameterHandler &prm);      // Bouc-Wen
     void declare_damping(dealii::ParameterHandler &prm);       // Damping
+    /// A 3D frame (generated or drawn): one element per member, no
+    /// resisting planes. Throws InputError.
+    void check_one_element_no_planes(const InputFile &input, const std::string &section) const;
     /// Type = modal and bands: ratios in [0, 1), the bands read.
     void finalize_modal_damping(const InputFile &input, const std::string &section);
   };
