@@ -89,12 +89,8 @@ namespace poundfe
     const unsigned int n        = n_storeys;
     const auto         required = [&](const std::string &entry, const std::vector<double> &values,
                               const char *what) {
-      if (values.empty())
-        input.fail(s + entry,
-                           "a 3D frame needs the " + std::string(what) + " (one value or one per storey)");
-      input.list(s + entry, values, n, false, "one per storey");
-      for (const double v : values)
-        input.positive(s + entry, v);
+      require_positive_list(input, s + entry, values, n, "a 3D frame needs the " +
+                                                           std::string(what), "one per storey");
     };
     required("Column G", column_shear_modulus, "columns' shear modulus G");
     required("Column Iz", column_second_moment_z, "columns' second moment Iz");
@@ -121,12 +117,7 @@ namespace poundfe
                  "all columns stand on one line along x: a rigid diaphragm on them is "
                  "singular (no frame across the line holds its sway along y and its "
                  "twist); give bays along y, or Diaphragm = none");
-    if (elements_per_member != 1)
-      input.fail(s + "Elements per member", "3D frames take one element per member");
-    if (!plan.planes_text.empty())
-      input.fail(s + "Plan/Resisting planes",
-                 "a frame resists with its columns: resisting planes are for "
-                 "shear buildings");
+    check_one_element_no_planes(input, s);
     const auto total = [](const std::vector<double> &widths, const unsigned int n_bays) {
       double sum = 0;
       for (unsigned int i = 0; i < n_bays; ++i)
@@ -139,6 +130,30 @@ namespace poundfe
     const double ly = n_bays_y > 0 ? total(bay_widths_y, n_bays_y) : 1e-3 * lx;
     plan.dimensions = {lx, ly};
     parse_set_backs(*this, input, s);
+  }
+
+  void
+  BuildingParameters::check_one_element_no_planes(const InputFile &input,
+                                                  const std::string &s) const
+  {
+    if (elements_per_member != 1)
+      input.fail(s + "Elements per member", "3D frames take one element per member");
+    if (!plan.planes_text.empty())
+      input.fail(s + "Plan/Resisting planes",
+                 "a frame resists with its columns: resisting planes are for "
+                 "shear buildings");
+  }
+
+  void
+  require_positive_list(const InputFile &input, const std::string &path,
+                        const std::vector<double> &values, const std::size_t n,
+                        const std::string &need, const std::string &per)
+  {
+    if (values.empty())
+      input.fail(path, need + " (one value or " + per + ")");
+    input.list(path, values, n, false, per);
+    for (const double v : values)
+      input.positive(path, v);
   }
 
   // Set-backs (include/poundfe/model/set_backs.h).

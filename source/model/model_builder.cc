@@ -4,6 +4,7 @@
 #include <poundfe/model/floor_mass.h>
 #include <poundfe/model/frame_foundation.h>
 #include <poundfe/model/frame_building_3d.h>
+#include <poundfe/model/mesh_building_3d.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/model/plan_builder.h>
 
@@ -348,19 +349,8 @@ namespace poundfe
     build_from_mesh(Model &model, const InputFile &input, const BuildingParameters &p,
                     const unsigned int b, Building &building)
     {
-      const std::string section_path =
-        "Building " + std::to_string(b + 1) + "/Mesh file";
       const std::string file = input.resolve(p.mesh_file);
-      LineMesh          mesh;
-      try
-        {
-          mesh = read_line_mesh(file);
-        }
-      catch (const InputError &e)
-        {
-          throw InputError(input.file, input.line_of(section_path), section_path,
-                           e.what());
-        }
+      const LineMesh    mesh = read_building_mesh(input, p, b, &read_line_mesh);
 
       // Keep only vertices that cells use, in their order of first use.
       std::vector<int> node_of_vertex(mesh.vertices.size(), -1);
@@ -583,7 +573,7 @@ namespace poundfe
       if (contact.between_buildings && model.dimension == 3)
         {
           for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
-            if (parameters.buildings[b].type == BuildingType::frame &&
+            if (parameters.buildings[b].type != BuildingType::shear &&
                 parameters.buildings[b].diaphragm == "none")
               input.fail("Building " + std::to_string(b + 1) + "/Diaphragm",
                          "contact in plan acts between slabs: it needs Diaphragm = rigid");
@@ -657,7 +647,10 @@ namespace poundfe
                 build_shear(model, p, b, building);
               break;
             case BuildingType::mesh:
-              build_from_mesh(model, input, p, b, building);
+              if (parameters.dimension == 3)
+                build_mesh_frame_3d(model, input, p, b, building, left);
+              else
+                build_from_mesh(model, input, p, b, building);
               break;
           }
         label_members(model, building, first_member);

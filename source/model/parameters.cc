@@ -91,8 +91,8 @@ namespace poundfe
                "frame: regular frame generated from storeys and bays; "
                "mesh: frame read from a Gmsh mesh; shear: stick model. The entries "
                "tagged [frame], [shear] or [mesh] apply only to that Type, those tagged "
-               "[3D] only with Model/Dimension = 3 ([3D frame], [3D shear]: and that "
-               "Type). Unit: -.",
+               "[3D] only with Model/Dimension = 3 ([3D frame], [3D shear], [3D mesh]: "
+               "and that Type). Unit: -.",
                building_type_names());
     prm.add_parameter("Floor masses", floor_masses,
                       "Mass of each floor, bottom up (roof last): one value for all or one "
@@ -101,6 +101,7 @@ namespace poundfe
     declare_frame_entries(prm);
     declare_frame_3d_entries(prm);
     declare_mesh_entries(prm);
+    declare_mesh_3d_entries(prm);
     declare_shear_entries(prm);
     declare_hinges(prm);
     declare_bouc_wen(prm);
@@ -156,7 +157,8 @@ namespace poundfe
                       "[mesh] Young's modulus per group. Unit: Pa.");
     prm.add_parameter("Group A", group_area, "[mesh] Area per group. Unit: m^2.");
     prm.add_parameter("Group I", group_second_moment,
-                      "[mesh] Second moment of area per group. Unit: m^4.");
+                      "[mesh] Second moment of area per group (3D: Iy, about the local y "
+                      "axis, bending in the local x-z plane). Unit: m^4.");
     prm.add_parameter("Group mass per length", group_mass_per_length,
                       "[mesh] Distributed mass per group. Unit: kg/m.");
   }
@@ -428,15 +430,18 @@ namespace poundfe
                      "P-Delta of a torsionally coupled shear building takes a fixed base; "
                      "building " + std::to_string(b + 1) + " has a compliant foundation");
         if (buildings[b].type == BuildingType::mesh)
-          input.fail(s + "Type", "Dimension = 3 takes shear buildings and frames; meshes "
-                                 "are planar");
+          buildings[b].finalize_mesh_3d(input, s);
         if (buildings[b].type == BuildingType::frame)
           buildings[b].finalize_frame_3d(input, s);
-        buildings[b].plan.finalize(input, s, buildings[b].n_storeys);
+        // a mesh's floors are counted when it is read (model/mesh_building_3d.h)
+        buildings[b].plan.finalize(input, s,
+                                   buildings[b].type == BuildingType::mesh ?
+                                     buildings[b].plan.polar_moments.size() :
+                                     buildings[b].n_storeys);
         if (buildings[b].plan.storey_law != "planes" || buildings[b].hinge_biaxial)
           check_bidirectional_bouc_wen(input, s + "Bouc-Wen/", buildings[b].hysteresis);
         buildings[b].foundation.finalize_3d(input, s);
-        if (buildings[b].type == BuildingType::frame && buildings[b].foundation.enabled() &&
+        if (buildings[b].type != BuildingType::shear && buildings[b].foundation.enabled() &&
             buildings[b].base_fixity == BaseFixity::pinned)
           input.fail(s + "Base fixity", "a 3D frame on a compliant foundation has its column "
                                         "bases clamped to the foundation (pinned: 2D only)");

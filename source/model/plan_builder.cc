@@ -54,13 +54,7 @@ namespace poundfe
               {{std::cos(e.angle), std::sin(e.angle)}, e.position, e.stiffness});
           building.floors.push_back(floor);
         }
-      if (plan.accidental == "none")
-        return building;
-      const bool shift_x = plan.accidental[1] == 'x';
-      return with_accidental_eccentricity(building, dimensions,
-                                          shift_x ? PlanDirection::y : PlanDirection::x,
-                                          plan.accidental[0] == '-' ? -1 : 1,
-                                          plan.accidental_ratio);
+      return with_plan_accidental_eccentricity(plan, building, dimensions);
     }
 
     /// The same building on the site.
@@ -80,6 +74,19 @@ namespace poundfe
     }
 
   } // namespace
+
+  TorsionalShearBuilding
+  with_plan_accidental_eccentricity(const PlanParameters &plan,
+                                    const TorsionalShearBuilding &building,
+                                    const std::vector<Point2> &plan_dimensions)
+  {
+    if (plan.accidental == "none")
+      return building;
+    const bool shift_x = plan.accidental[1] == 'x';
+    return with_accidental_eccentricity(building, plan_dimensions,
+                                        shift_x ? PlanDirection::y : PlanDirection::x,
+                                        plan.accidental[0] == '-' ? -1 : 1, plan.accidental_ratio);
+  }
 
   std::vector<Point2>
   slab_outline(const BuildingParameters &p, const SitePlan &frame, const unsigned int storey)

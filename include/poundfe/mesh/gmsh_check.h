@@ -33,7 +33,7 @@ namespace poundfe
 {
   /// Throws InputError naming `file`, the line and what is wrong unless
   /// `text` (as read_input_text gives it) is a Gmsh 2.2 or 4.1 ASCII mesh
-  /// of line elements that GridIn<1,2>::read_msh reads safely.
+  /// of line elements that GridIn<1,2> and GridIn<1,3>::read_msh read safely.
   void check_gmsh_text(const std::string &file, const std::string &text);
 } // namespace poundfe
 

@@ -95,6 +95,15 @@ namespace poundfe
     std::vector<double>       group_area{0.16};
     std::vector<double>       group_second_moment{2.133e-3};
     std::vector<double>       group_mass_per_length{0.0};
+    // ... in 3D (Model/Dimension = 3; model/mesh_building_3d.h): Group I is
+    // Iy (about the local y axis), and per group G, Iz, J and the vector v
+    // in the local x-z plane ({0, 0, 0}: vertical members global X, others
+    // global Z).
+    std::vector<double>                group_shear_modulus;
+    std::vector<double>                group_second_moment_z;
+    std::vector<double>                group_torsion_constant;
+    std::vector<std::string>           group_orientation_text; // 'vx vy vz' per group
+    std::vector<std::array<double, 3>> group_orientations;     // parsed
 
     // Bouc-Wen hinges at member ends (frames) and hysteretic storeys (shear).
     std::vector<std::string>  hinge_locations;  // column bases|column tops|column ends|beam ends
@@ -133,19 +142,34 @@ namespace poundfe
     /// section list given), and set the Plan dimensions to the column grid.
     /// Throws InputError (model/frame_building_3d_parameters.cc).
     void finalize_frame_3d(const InputFile &input, const std::string &section);
+    /// Dimension 3, Type = mesh: check the 3D group entries of `<section>`
+    /// and read Group orientation. Throws InputError
+    /// (model/mesh_building_3d_parameters.cc).
+    void finalize_mesh_3d(const InputFile &input, const std::string &section);
 
   private:
     // declare()'s groups, in the order print_parameters shows them
     void declare_frame_entries(dealii::ParameterHandler &prm); // [frame]
     void declare_frame_3d_entries(dealii::ParameterHandler &prm); // [3D frame]
     void declare_mesh_entries(dealii::ParameterHandler &prm);  // [mesh]
+    void declare_mesh_3d_entries(dealii::ParameterHandler &prm); // [3D mesh]
     void declare_shear_entries(dealii::ParameterHandler &prm); // [shear]
     void declare_hinges(dealii::ParameterHandler &prm);        // Hinges
     void declare_bouc_wen(dealii::ParameterHandler &prm);      // Bouc-Wen
     void declare_damping(dealii::ParameterHandler &prm);       // Damping
+    /// A 3D frame (generated or drawn): one element per member, no
+    /// resisting planes. Throws InputError.
+    void check_one_element_no_planes(const InputFile &input, const std::string &section) const;
     /// Type = modal and bands: ratios in [0, 1), the bands read.
     void finalize_modal_damping(const InputFile &input, const std::string &section);
   };
+
+  /// A list every building of a kind needs: fails with "<need> (one value
+  /// or <per>)" naming `path` when empty, unless it has 1 or n values, or a
+  /// value is not positive. Throws InputError.
+  void require_positive_list(const InputFile &input, const std::string &path,
+                             const std::vector<double> &values, std::size_t n,
+                             const std::string &need, const std::string &per);
 
   /// The `Model` section and the buildings it announces.
   struct ModelParameters

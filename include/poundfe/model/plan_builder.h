@@ -38,6 +38,13 @@ namespace poundfe
     Point2 turn(const Point2 &d) const;
   };
 
+  /// `building` (floors in the building's frame, slab sides
+  /// `plan_dimensions` per floor) with the accidental eccentricity of p's
+  /// Plan (Accidental eccentricity, ratio): unchanged for none.
+  TorsionalShearBuilding with_plan_accidental_eccentricity(const PlanParameters &plan,
+                                                           const TorsionalShearBuilding &building,
+                                                           const std::vector<Point2> &plan_dimensions);
+
   /// Building p with its plan centre at `centre`.
   SitePlan site_plan(const BuildingParameters &p, const Point2 &centre);
 

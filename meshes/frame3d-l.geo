@@ -1,0 +1,69 @@
+// L-shaped two-storey 3D frame (Model/Dimension = 3, Type = mesh): a 2 x 2
+// bay grid (6 m along x, 5 m along y) less its +x +y bay, storeys 3.5 m and
+// 3 m, z up. Physical line 1 = columns, 2 = beams. The generator makes only
+// rectangular grids (with set-backs); this plan is an L at every storey.
+// Mesh with: gmsh -1 -format msh22 frame3d-l.geo -o frame3d-l.msh
+lc = 100; // larger than any member: one element per line
+Point(1) = {0, 0, 0, lc};
+Point(2) = {6, 0, 0, lc};
+Point(3) = {12, 0, 0, lc};
+Point(4) = {0, 5, 0, lc};
+Point(5) = {6, 5, 0, lc};
+Point(6) = {12, 5, 0, lc};
+Point(7) = {0, 10, 0, lc};
+Point(8) = {6, 10, 0, lc};
+Point(9) = {0, 0, 3.5, lc};
+Point(10) = {6, 0, 3.5, lc};
+Point(11) = {12, 0, 3.5, lc};
+Point(12) = {0, 5, 3.5, lc};
+Point(13) = {6, 5, 3.5, lc};
+Point(14) = {12, 5, 3.5, lc};
+Point(15) = {0, 10, 3.5, lc};
+Point(16) = {6, 10, 3.5, lc};
+Point(17) = {0, 0, 6.5, lc};
+Point(18) = {6, 0, 6.5, lc};
+Point(19) = {12, 0, 6.5, lc};
+Point(20) = {0, 5, 6.5, lc};
+Point(21) = {6, 5, 6.5, lc};
+Point(22) = {12, 5, 6.5, lc};
+Point(23) = {0, 10, 6.5, lc};
+Point(24) = {6, 10, 6.5, lc};
+// columns (bottom to top), then beams
+Line(1) = {1, 9};
+Line(2) = {2, 10};
+Line(3) = {3, 11};
+Line(4) = {4, 12};
+Line(5) = {5, 13};
+Line(6) = {6, 14};
+Line(7) = {7, 15};
+Line(8) = {8, 16};
+Line(9) = {9, 17};
+Line(10) = {10, 18};
+Line(11) = {11, 19};
+Line(12) = {12, 20};
+Line(13) = {13, 21};
+Line(14) = {14, 22};
+Line(15) = {15, 23};
+Line(16) = {16, 24};
+Line(17) = {9, 10};
+Line(18) = {10, 11};
+Line(19) = {12, 13};
+Line(20) = {13, 14};
+Line(21) = {15, 16};
+Line(22) = {9, 12};
+Line(23) = {12, 15};
+Line(24) = {10, 13};
+Line(25) = {13, 16};
+Line(26) = {11, 14};
+Line(27) = {17, 18};
+Line(28) = {18, 19};
+Line(29) = {20, 21};
+Line(30) = {21, 22};
+Line(31) = {23, 24};
+Line(32) = {17, 20};
+Line(33) = {20, 23};
+Line(34) = {18, 21};
+Line(35) = {21, 24};
+Line(36) = {19, 22};
+Physical Line(1) = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+Physical Line(2) = {17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36};
