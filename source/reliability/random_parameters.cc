@@ -229,7 +229,7 @@ namespace poundfe
   void
   attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
                            const InputFile &input, const ModelParameters &model_input,
-                           const Eigensolver eigensolver)
+                           const ContactParameters &contact_input, const Eigensolver eigensolver)
   {
     // the responses the limit states name that a realization computes only when asked
     std::vector<std::string> named;
@@ -246,11 +246,12 @@ namespace poundfe
     std::vector<ModelParameter> parameters;
     const auto origins = std::make_shared<const std::vector<HingeOrigin>>(
       hinge_origins(model, model_input)); // as the file has them
+    const auto inputs = std::make_shared<const ModelInputs>(ModelInputs{model_input, contact_input});
     for (unsigned int i = 0; i < p.names.size(); ++i)
       {
         try
           {
-            parameters.push_back(model_parameter(p.paths[i], model, origins));
+            parameters.push_back(model_parameter(p.paths[i], model, origins, inputs));
           }
         catch (const std::invalid_argument &e)
           {

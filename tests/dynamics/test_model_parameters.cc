@@ -68,7 +68,7 @@ namespace
     const Analysis        analysis = prepare_analysis(input);
     RealizationRunner     runner(analysis, time_history_parameters(input));
     const unsigned int    n_load = runner.n_load_variables();
-    attach_random_parameters(runner, input.random_parameters, input, input.model, input.modal.eigensolver);
+    attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
     const unsigned int n_x = input.random_parameters.names.size();
     BOOST_TEST(runner.n_parameters() == n_x);
     BOOST_TEST(runner.n_variables() == n_load + n_x);
@@ -143,7 +143,7 @@ BOOST_AUTO_TEST_CASE(random_parameter_values_follow_their_joint_distribution)
   const Analysis        analysis = prepare_analysis(input);
   RealizationRunner     runner(analysis, time_history_parameters(input));
   const unsigned int    n_load = runner.n_load_variables();
-  attach_random_parameters(runner, input.random_parameters, input, input.model, input.modal.eigensolver);
+  attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
   const NatafTransformation nataf(input.random_parameters.distributions,
                                   input.random_parameters.correlation);
   const unsigned int        n = 4000;
