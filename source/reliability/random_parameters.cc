@@ -91,7 +91,17 @@ namespace poundfe
                       "Building b/Damping/Damping ratio, Damping/a0, Damping/a1, Damping/Modal "
                       "ratios[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, "
                       "Friction/Static coefficient, Friction/Kinetic coefficient, Links/Viscous "
-                      "dampers[i] (c). DISTRIBUTION and keys as Reliability/Random variables. "
+                      "dampers[i] (c); 3D frames: Building b/Column E[i] (G, A, I, Iz, J, Avy, "
+                      "Avz, mass per length), Beam ...[i]; meshes: Building b/Group E[i] (A, I, "
+                      "mass per length; group i of Group ids); 3D floor masses (a polar moment "
+                      "not typed follows); Building b/Foundation/ENTRY (Shear-wave velocity, "
+                      "Soil density, Poisson ratio, Length, Width, Embedment, the typed "
+                      "stiffnesses and dampings, Mass, Rotary inertia, Rotary inertia x, Polar "
+                      "inertia); Contact/Coefficient of restitution (the damping fitted "
+                      "again); Friction/Stribeck velocity, Belt velocity, Normal force (per "
+                      "displacement, per velocity, per velocity cubed), Stick stiffness, "
+                      "Regularization velocity. Geometry (heights, bays, plan, set-backs) is "
+                      "refused. DISTRIBUTION and keys as Reliability/Random variables. "
                       "Unit: that of the parameter.");
     prm.add_parameter("Correlation", correlation_text,
                       "Correlation matrix of the Variables in their order, rows separated by "
