@@ -814,6 +814,11 @@ namespace poundfe
                 from_rotation = from_rotation || !origin_of(p, model, h).yield_from_moment;
               }
           }
+      if (!any && std::any_of(model.hinges_3d.begin(), model.hinges_3d.end(),
+                              [&](const Hinge3D &h) { return h.building == p.building; }))
+        throw std::invalid_argument("'" + p.path + "': the hinges of 3D frame '" + name +
+                                    "' cannot be random yet (their k follows a random Column "
+                                    "or Beam E, I, Iz)");
       if (!any)
         throw std::invalid_argument("'" + p.path + "': building '" + name + "' has no hinges");
       if (p.hinges && p.kind == Kind::hinge_stiffness_factor && !from_section)
