@@ -109,7 +109,7 @@ namespace poundfe::commands
     const InputParameters &input    = *run.input;
     const Analysis         analysis = prepare_analysis(input);
     RealizationRunner      runner(analysis, time_history_parameters(input));
-    attach_random_parameters(runner, input.random_parameters, input, input.model, input.modal.eigensolver);
+    attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
     const ResponseLimitStates limit_states(input.random_parameters, runner.response_names(),
                                            input);
     const DynamicFormSettings settings = form_settings(input, runner);

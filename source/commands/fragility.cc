@@ -177,7 +177,7 @@ namespace poundfe::commands
     const Analysis    analysis = prepare_analysis(input);
     const TimeHistoryParameters parameters = time_history_parameters(input);
     RealizationRunner runner(analysis, parameters);
-    attach_random_parameters(runner, input.random_parameters, input, input.model, input.modal.eigensolver);
+    attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
     // with random parameters, the nominal model too: the record-to-record part
     const std::unique_ptr<RealizationRunner> nominal =
       runner.n_parameters() > 0 ? std::make_unique<RealizationRunner>(analysis, parameters) :

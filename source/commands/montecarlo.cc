@@ -273,7 +273,7 @@ namespace poundfe::commands
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
     RealizationRunner runner(analysis, time_history_parameters(input));
-    attach_random_parameters(runner, input.random_parameters, input, input.model, input.modal.eigensolver);
+    attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
     const std::unique_ptr<const ResponseLimitStates> limit_states =
       input.random_parameters.has_limit_states() ?
         std::make_unique<const ResponseLimitStates>(input.random_parameters,

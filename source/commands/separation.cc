@@ -745,7 +745,7 @@ namespace poundfe::commands
         analysis, time_history_parameters(input), pairs, input.monte_carlo.realizations, directory,
         comm, outcome.results,
         [&](RealizationRunner &runner) {
-          attach_random_parameters(runner, structure, input, input.model, input.modal.eigensolver);
+          attach_random_parameters(runner, structure, input, input.model, input.contact, input.modal.eigensolver);
         },
         separations);
       if (hazard && table.interrupted) // the levels not begun: the same command runs them
@@ -755,7 +755,7 @@ namespace poundfe::commands
           // the levels' structure is as random as the file's PGA's (the same
           // normals of realization r: the same sampled structure at every level)
           RealizationRunner runner(analysis, time_history_parameters(input));
-          attach_random_parameters(runner, structure, input, input.model, input.modal.eigensolver);
+          attach_random_parameters(runner, structure, input, input.model, input.contact, input.modal.eigensolver);
           SeparationObserver observer(analysis.model, pairs);
           run_pounding_hazard(largest_approach_job(runner, observer, pairs),
                               input.monte_carlo.realizations, input.separation.hazard, directory,
@@ -847,7 +847,7 @@ namespace poundfe::commands
         if (structure.has_variables()) // their paths and distributions, checked
           {
             RealizationRunner check(analysis, time_history_parameters(input));
-            attach_random_parameters(check, structure, input, input.model, input.modal.eigensolver);
+            attach_random_parameters(check, structure, input, input.model, input.contact, input.modal.eigensolver);
           }
       }
     std::optional<SpectrumPeaks> spectrum; // it may find bad input

@@ -219,7 +219,7 @@ namespace poundfe::commands
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
     RealizationRunner runner(analysis, time_history_parameters(input));
-    attach_random_parameters(runner, input.random_parameters, input, input.model, input.modal.eigensolver);
+    attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
     std::string       unit;
     const std::vector<unsigned int> columns = response_columns(input, runner, unit);
     // Response = limit state: Y = -g of the system, failure Y > 0

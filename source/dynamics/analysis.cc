@@ -16,26 +16,17 @@ namespace poundfe
 {
   namespace
   {
-    /// A friction element's automatic stick stiffness (0 in the input):
-    /// 1e4 times the linear stiffness at its node, so stick deflects
-    /// 1e-4 of what the structure does under the same force; and its stick
-    /// dashpot, critical for the node's mass on the stick spring.
     void
     set_stick_stiffnesses(const InputFile &input, const LinearSystem &system, Model &model)
     {
       for (FrictionSurface &surface : model.friction_surfaces)
-        {
-          FrictionLawParameters &law      = surface.law;
-          const int equation = model.equation(Model::dof(surface.node, Component::ux));
-          if (law.stick_stiffness == 0)
-            law.stick_stiffness = 1e4 * system.stiffness.coeff(equation, equation);
-          if (!(law.stick_stiffness > 0))
-            input.fail("Friction/Stick stiffness",
-                       surface.label + ": no linear stiffness at the node to take the "
-                                       "automatic stick stiffness from; give one");
-          law.stick_damping =
-            2 * std::sqrt(law.stick_stiffness * system.mass.coeff(equation, equation));
-        }
+        surface.automatic_stick_stiffness = surface.law.stick_stiffness == 0;
+      fit_stick_laws(system, model);
+      for (const FrictionSurface &surface : model.friction_surfaces)
+        if (!(surface.law.stick_stiffness > 0))
+          input.fail("Friction/Stick stiffness",
+                     surface.label + ": no linear stiffness at the node to take the "
+                                     "automatic stick stiffness from; give one");
     }
 
     /// P-Delta must leave every building stable under its own weight: a
@@ -299,6 +290,22 @@ namespace poundfe
           }
       }
     return warnings;
+  }
+
+  void
+  fit_stick_laws(const LinearSystem &system, Model &model)
+  {
+    // k_s = 1e4 K_ii (automatic): stick deflects 1e-4 of what the structure
+    // does under the same force; c_s = 2 sqrt(k_s M_ii), critical for the
+    // node's mass on the stick spring
+    for (FrictionSurface &surface : model.friction_surfaces)
+      {
+        FrictionLawParameters &law      = surface.law;
+        const int              equation = model.equation(Model::dof(surface.node, Component::ux));
+        if (surface.automatic_stick_stiffness)
+          law.stick_stiffness = 1e4 * system.stiffness.coeff(equation, equation);
+        law.stick_damping = 2 * std::sqrt(law.stick_stiffness * system.mass.coeff(equation, equation));
+      }
   }
 
   Analysis

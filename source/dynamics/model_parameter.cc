@@ -8,7 +8,10 @@
 #include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/model/plan_builder.h>
 #include <poundfe/dynamics/modal_damping_assembly.h>
+#include <poundfe/laws/contact_law.h>
 #include <poundfe/model/floor_mass.h>
+#include <poundfe/model/frame_foundation.h>
+#include <poundfe/model/plan_foundation.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -32,7 +35,143 @@ namespace poundfe
       "mass per length), Building b/Beam E[i] (A, I, mass per length), Building b/Hinges/"
       "Stiffness, Building b/Hinges/Stiffness factor, Building b/Hinges/Yield rotation, "
       "Building b/Bouc-Wen/alpha (A, beta, gamma, n, delta A, delta nu, delta eta), "
-      "Building b/Damping/a0, Building b/Damping/a1, Building b/Damping/Modal ratios[i]";
+      "Building b/Damping/a0, Building b/Damping/a1, Building b/Damping/Modal ratios[i], "
+      "3D frames: Building b/Column E[i] (G, A, I, Iz, J, Avy, Avz, mass per length), Building "
+      "b/Beam E[i] (the same), meshes: Building b/Group E[i] (A, I, mass per length), Building "
+      "b/Foundation/ENTRY (Shear-wave velocity, Soil density, Poisson ratio, Length, Width, "
+      "Embedment, Horizontal stiffness, Rocking stiffness, Vertical stiffness, their dampings, "
+      "Mass, Rotary inertia; 3D: the y, x and torsional ones, Rotary inertia x, Polar inertia), "
+      "Contact/Coefficient of restitution, Friction/Stribeck velocity (Belt velocity, Normal "
+      "force, Normal force per displacement, per velocity, per velocity cubed, Stick stiffness, "
+      "Regularization velocity)";
+
+    const double infinity = std::numeric_limits<double>::infinity();
+
+    /// The section entries of a 3D frame's columns and beams (I: Iy).
+    const std::vector<std::pair<std::string, double Section3D::*>> section_3d_entries = {
+      {"E", &Section3D::youngs_modulus},    {"G", &Section3D::shear_modulus},
+      {"A", &Section3D::area},              {"I", &Section3D::second_moment_y},
+      {"Iz", &Section3D::second_moment_z},  {"J", &Section3D::torsion_constant},
+      {"Avy", &Section3D::shear_area_y},    {"Avz", &Section3D::shear_area_z},
+      {"mass per length", &Section3D::mass_per_length}};
+
+    /// A numeric entry of an input struct: its name, where it is, the
+    /// values it can take.
+    template <typename Struct>
+    struct NumericEntry
+    {
+      const char *name;
+      double &(*at)(Struct &);
+      ModelParameter::Range range;
+    };
+
+    /// The entries of the Friction section a realization can vary besides
+    /// the two coefficients.
+    const std::vector<NumericEntry<FrictionLawParameters>> friction_entries = {
+      {"Stribeck velocity", [](FrictionLawParameters &l) -> double & { return l.stribeck_velocity; },
+       {0, true, infinity}},
+      {"Belt velocity", [](FrictionLawParameters &l) -> double & { return l.belt_velocity; },
+       {-maximum_belt_velocity, true, maximum_belt_velocity}},
+      {"Normal force", [](FrictionLawParameters &l) -> double & { return l.normal.constant; },
+       {0, true, infinity}},
+      {"Normal force per displacement",
+       [](FrictionLawParameters &l) -> double & { return l.normal.per_displacement; },
+       {-infinity, true, infinity}},
+      {"Normal force per velocity",
+       [](FrictionLawParameters &l) -> double & { return l.normal.per_velocity; },
+       {-infinity, true, infinity}},
+      {"Normal force per velocity cubed",
+       [](FrictionLawParameters &l) -> double & { return l.normal.per_velocity_cubed; },
+       {-infinity, true, infinity}},
+      {"Stick stiffness", [](FrictionLawParameters &l) -> double & { return l.stick_stiffness; },
+       {0, false, infinity}},
+      {"Regularization velocity",
+       [](FrictionLawParameters &l) -> double & { return l.regularization_velocity; },
+       {0, false, infinity}}};
+
+    /// Which foundations have an entry: those from the soil (gazetas, cone),
+    /// typed ones (given), every one; `three_d` only in 3D, `vertical` only
+    /// with a vertical part (frames); `matrices`: it enters K or M.
+    struct FoundationEntry
+    {
+      NumericEntry<FoundationParameters> entry;
+      enum
+      {
+        soil,
+        typed,
+        any
+      } of;
+      bool three_d, vertical, matrices;
+    };
+
+#define POUNDFE_FOUNDATION_FIELD(expression) \
+  [](FoundationParameters &f) -> double & { return f.expression; }
+    const ModelParameter::Range positive{0, false, infinity}, non_negative{0, true, infinity};
+    const std::vector<FoundationEntry> foundation_entries = {
+      {{"Shear-wave velocity", POUNDFE_FOUNDATION_FIELD(soil.shear_wave_velocity), positive},
+       FoundationEntry::soil, false, false, true},
+      {{"Soil density", POUNDFE_FOUNDATION_FIELD(soil.density), positive},
+       FoundationEntry::soil, false, false, true},
+      {{"Poisson ratio", POUNDFE_FOUNDATION_FIELD(soil.poisson_ratio), {0, false, 0.5}},
+       FoundationEntry::soil, false, false, true},
+      {{"Length", POUNDFE_FOUNDATION_FIELD(geometry.length), positive},
+       FoundationEntry::soil, false, false, true},
+      {{"Width", POUNDFE_FOUNDATION_FIELD(geometry.width), positive},
+       FoundationEntry::soil, false, false, true},
+      {{"Embedment", POUNDFE_FOUNDATION_FIELD(geometry.embedment), non_negative},
+       FoundationEntry::soil, false, false, true},
+      {{"Horizontal stiffness", POUNDFE_FOUNDATION_FIELD(given.horizontal_stiffness), positive},
+       FoundationEntry::typed, false, false, true},
+      {{"Rocking stiffness", POUNDFE_FOUNDATION_FIELD(given.rocking_stiffness), positive},
+       FoundationEntry::typed, false, false, true},
+      {{"Vertical stiffness", POUNDFE_FOUNDATION_FIELD(given.vertical_stiffness), positive},
+       FoundationEntry::typed, false, true, true},
+      {{"Horizontal damping", POUNDFE_FOUNDATION_FIELD(given.horizontal_damping), non_negative},
+       FoundationEntry::typed, false, false, false},
+      {{"Rocking damping", POUNDFE_FOUNDATION_FIELD(given.rocking_damping), non_negative},
+       FoundationEntry::typed, false, false, false},
+      {{"Vertical damping", POUNDFE_FOUNDATION_FIELD(given.vertical_damping), non_negative},
+       FoundationEntry::typed, false, true, false},
+      {{"Horizontal stiffness y", POUNDFE_FOUNDATION_FIELD(given_3d.sway_stiffness[1]),
+        positive},
+       FoundationEntry::typed, true, false, true},
+      {{"Rocking stiffness x", POUNDFE_FOUNDATION_FIELD(given_3d.rocking_stiffness[0]),
+        positive},
+       FoundationEntry::typed, true, false, true},
+      {{"Torsional stiffness", POUNDFE_FOUNDATION_FIELD(given_3d.torsional_stiffness), positive},
+       FoundationEntry::typed, true, false, true},
+      {{"Horizontal damping y", POUNDFE_FOUNDATION_FIELD(given_3d.sway_damping[1]),
+        non_negative},
+       FoundationEntry::typed, true, false, false},
+      {{"Rocking damping x", POUNDFE_FOUNDATION_FIELD(given_3d.rocking_damping[0]),
+        non_negative},
+       FoundationEntry::typed, true, false, false},
+      {{"Torsional damping", POUNDFE_FOUNDATION_FIELD(given_3d.torsional_damping),
+        non_negative},
+       FoundationEntry::typed, true, false, false},
+      {{"Mass", POUNDFE_FOUNDATION_FIELD(mass), positive}, FoundationEntry::any, false, false,
+       true},
+      {{"Rotary inertia", POUNDFE_FOUNDATION_FIELD(rotary_inertia), positive},
+       FoundationEntry::any, false, false, true},
+      {{"Rotary inertia x", POUNDFE_FOUNDATION_FIELD(rotary_inertia_x), positive},
+       FoundationEntry::any, true, false, true},
+      {{"Polar inertia", POUNDFE_FOUNDATION_FIELD(polar_inertia), positive},
+       FoundationEntry::any, true, false, true}};
+#undef POUNDFE_FOUNDATION_FIELD
+
+    const NumericEntry<FrictionLawParameters> &
+    friction_entry_of(double &(*at)(FrictionLawParameters &))
+    {
+      return *std::find_if(friction_entries.begin(), friction_entries.end(),
+                           [at](const auto &e) { return e.at == at; });
+    }
+
+    const FoundationEntry &
+    foundation_entry_of(double &(*at)(FoundationParameters &))
+    {
+      return *std::find_if(foundation_entries.begin(), foundation_entries.end(),
+                           [at](const FoundationEntry &e) { return e.entry.at == at; });
+    }
 
     /// The section entries of a generated frame's columns and beams.
     const std::vector<std::pair<std::string, double Section::*>> section_entries = {
@@ -52,7 +191,11 @@ namespace poundfe
     /// does not move.
     const std::vector<std::string> geometry_entries = {
       "Storey heights", "Bay widths", "Number of storeys", "Number of bays",
-      "Elements per member", "Drawing width"};
+      "Elements per member", "Drawing width", "Bay widths y", "Number of bays y",
+      "Set-backs", "Column angle", "Diaphragm", "Mesh file", "Group ids",
+      "Plan/Plan dimensions", "Plan/Position", "Plan/Rotation", "Plan/Mass eccentricity",
+      "Plan/Accidental eccentricity", "Plan/Accidental eccentricity ratio",
+      "Plan/Resisting planes"};
 
     /// Indices in model.links of the storeys of building b, bottom to top.
     std::vector<unsigned int>
@@ -119,25 +262,72 @@ namespace poundfe
       return result;
     }
 
+    /// The effective mass of `gap` as the builder sets it from the floors'
+    /// masses: m1 m2/(m1 + m2) of the two floor nodes of a contact in plan
+    /// (model/plan_builder.cc), floor_effective_mass otherwise.
+    double
+    builder_effective_mass(const Model &model, const Gap &gap)
+    {
+      if (!gap.in_plan)
+        return floor_effective_mass(model, gap);
+      std::array<double, 2> m{{0, 0}};
+      for (unsigned int k = 0; k < 2; ++k)
+        for (const NodalMass &mass : model.masses)
+          if (int(mass.node) == gap.nodes[k])
+            m[k] += mass.mass;
+      return m[0] * m[1] / (m[0] + m[1]);
+    }
+
+    /// The vertical masses (DofMass) of the joints of a 3D frame's floor:
+    /// on the joints' (uz, rx, ry) nodes of building b at the floor's level.
+    std::vector<DofMass *>
+    joint_vertical_masses(Model &model, const unsigned int b, const Floor &floor)
+    {
+      std::vector<DofMass *> result;
+      for (DofMass &m : model.dof_masses)
+        {
+          const Node &node = model.nodes[m.dof / n_dofs_per_node];
+          if (node.joint_translation_z && node.building == b &&
+              std::abs(node.position.y - floor.level) <= 1e-9 * std::max(1.0, std::abs(floor.level)))
+            result.push_back(&m);
+        }
+      return result;
+    }
+
     /// Shares m / n_joints of a floor mass at each floor's joints, as the
     /// model builder lumps it (every joint has its NodalMass:
-    /// model_parameter() checks it), and sets again the effective mass of
-    /// each gap whose m_e is of the floors' masses (one equal to
-    /// floor_effective_mass to the last bit: Contact/Effective mass not
-    /// given, or given equal to it), as the builder does.
+    /// model_parameter() checks it); a 3D floor's polar moment J = m c
+    /// (c = (L_x^2 + L_y^2)/12 unless Plan/Polar moments is given) keeps its
+    /// c, and a 3D frame's joints their vertical masses m / n_joints. Sets
+    /// again the effective mass of each gap whose m_e is of the floors'
+    /// masses (one equal to what the builder computes to the last bit:
+    /// Contact/Effective mass not given, or given equal to it), as the
+    /// builder does.
     void
     write_floor_masses(const ModelParameter &p, const double value, Model &model)
     {
+      const bool polar_follows =
+        !p.inputs || p.inputs->model.buildings[p.building].plan.polar_moments.empty();
       std::vector<bool> of_floors;
       for (const Gap &gap : model.gaps)
-        of_floors.push_back(!gap.in_plan && gap.effective_mass == floor_effective_mass(model, gap));
+        of_floors.push_back(gap.effective_mass == builder_effective_mass(model, gap));
       for (const Floor *floor : named_floors(p, model))
-        for (NodalMass &m : model.masses)
-          if (std::find(floor->nodes.begin(), floor->nodes.end(), m.node) != floor->nodes.end())
-            m.mass = value / floor->nodes.size();
+        {
+          const double before = floor_mass(model, *floor);
+          for (NodalMass &m : model.masses)
+            if (std::find(floor->nodes.begin(), floor->nodes.end(), m.node) != floor->nodes.end())
+              {
+                m.mass = value / floor->nodes.size();
+                if (polar_follows)
+                  m.polar_moment = m.polar_moment / before * value;
+              }
+          const std::vector<DofMass *> vertical = joint_vertical_masses(model, p.building, *floor);
+          for (DofMass *m : vertical)
+            m->mass = value / vertical.size();
+        }
       for (unsigned int g = 0; g < model.gaps.size(); ++g)
         if (of_floors[g])
-          model.gaps[g].effective_mass = floor_effective_mass(model, model.gaps[g]);
+          model.gaps[g].effective_mass = builder_effective_mass(model, model.gaps[g]);
       if (!model.gaps.empty()) // as the builder: the law's default
         model.contact.effective_mass = model.gaps.front().effective_mass;
     }
@@ -174,7 +364,7 @@ namespace poundfe
     const HingeOrigin &
     origin_of(const ModelParameter &p, const Model &model, const Hinge &hinge)
     {
-      Assert(p.hinges && p.hinges->size() == model.hinges.size(),
+      Assert(p.hinges && p.hinges->size() == model.hinges.size() + model.hinges_3d.size(),
              dealii::ExcMessage("a section or hinge parameter needs the hinges' origins"));
       return (*p.hinges)[&hinge - model.hinges.data()];
     }
@@ -183,11 +373,17 @@ namespace poundfe
     /// moment, u_y = M_y / k with M_y = k u_y before (the builder's M_y to
     /// rounding).
     void
-    set_hinge_stiffness(Hinge &hinge, const HingeOrigin &origin, const double stiffness)
+    set_hinge_stiffness(BoucWenParameters &law, const HingeOrigin &origin, const double stiffness)
     {
       if (origin.yield_from_moment)
-        hinge.law.yield_deformation = hinge.law.stiffness * hinge.law.yield_deformation / stiffness;
-      hinge.law.stiffness = stiffness;
+        law.yield_deformation = law.stiffness * law.yield_deformation / stiffness;
+      law.stiffness = stiffness;
+    }
+
+    void
+    set_hinge_stiffness(Hinge &hinge, const HingeOrigin &origin, const double stiffness)
+    {
+      set_hinge_stiffness(hinge.law, origin, stiffness);
     }
 
     /// 6 E I / L of the member that carries `hinge` (k / factor in the builder).
@@ -204,9 +400,69 @@ namespace poundfe
     bool
     named_member(const ModelParameter &p, const Member &member)
     {
+      if (member.building != p.building)
+        return false;
+      if (p.member_kind == MemberKind::other) // a mesh's group (all without [i])
+        return p.entry < 0 || int(member.group) == p.group;
+      const int group = 2 * p.entry + (p.member_kind == MemberKind::column ? 1 : 2);
+      return member.kind == p.member_kind && (p.entry < 0 || int(member.group) == group);
+    }
+
+    /// The same for a 3D frame's members (the same groups 2i - 1, 2i).
+    bool
+    named_member_3d(const ModelParameter &p, const Member3D &member)
+    {
       const int group = 2 * p.entry + (p.member_kind == MemberKind::column ? 1 : 2);
       return member.building == p.building && member.kind == p.member_kind &&
              (p.entry < 0 || int(member.group) == group);
+    }
+
+    double
+    length_of(const Member3D &member)
+    {
+      return std::hypot(member.ends[1][0] - member.ends[0][0], member.ends[1][1] - member.ends[0][1],
+                        member.ends[1][2] - member.ends[0][2]);
+    }
+
+    /// 6 E I / L of the member that carries a 3D hinge (I about its axis).
+    double
+    section_stiffness_3d(const Model &model, const Hinge3D &hinge)
+    {
+      const Member3D &member = model.members_3d[hinge.member];
+      return 6 * member.section.youngs_modulus *
+             (hinge.slot == 0 ? member.section.second_moment_y : member.section.second_moment_z) /
+             length_of(member);
+    }
+
+    /// The section value of the named 3D members; a hinge whose k is
+    /// f 6 E I / L of its member keeps its f (as write_member_section).
+    void
+    write_member_section_3d(const ModelParameter &p, const double value, Model &model)
+    {
+      const bool bending = p.section_3d == &Section3D::youngs_modulus ||
+                           p.section_3d == &Section3D::second_moment_y ||
+                           p.section_3d == &Section3D::second_moment_z;
+      Assert(p.hinges && p.hinges->size() == model.hinges.size() + model.hinges_3d.size(),
+             dealii::ExcMessage("a section parameter needs the hinges' origins"));
+      std::vector<Hinge3D *> following;
+      std::vector<double>    factors;
+      for (unsigned int h = 0; h < model.hinges_3d.size(); ++h)
+        {
+          Hinge3D &hinge = model.hinges_3d[h];
+          if (bending && named_member_3d(p, model.members_3d[hinge.member]) &&
+              (*p.hinges)[model.hinges.size() + h].stiffness_from_section)
+            {
+              following.push_back(&hinge);
+              factors.push_back(hinge.law.stiffness / section_stiffness_3d(model, hinge));
+            }
+        }
+      for (Member3D &member : model.members_3d)
+        if (named_member_3d(p, member))
+          member.section.*p.section_3d = value;
+      for (std::size_t h = 0; h < following.size(); ++h)
+        set_hinge_stiffness(following[h]->law,
+                            (*p.hinges)[model.hinges.size() + (following[h] - model.hinges_3d.data())],
+                            factors[h] * section_stiffness_3d(model, *following[h]));
     }
 
     /// The section value of the named members; a hinge whose k is f 6 E I / L
@@ -303,12 +559,36 @@ namespace poundfe
         }
     }
 
-    /// Writes `value` into the model; the checks of model_parameter() hold.
+    /// Writes `value` into the model, or, for a value the builder maps
+    /// (a foundation's entry, the restitution), into `inputs` (the working
+    /// copy of the input sections; ModelRealization::apply maps them); the
+    /// checks of model_parameter() hold.
     void
-    write(const ModelParameter &p, const double value, Model &model)
+    write(const ModelParameter &p, const double value, Model &model, ModelInputs &inputs)
     {
       switch (p.kind)
         {
+          case Kind::member_section_3d:
+            require_in_range(p, value);
+            write_member_section_3d(p, value, model);
+            return;
+          case Kind::friction_entry:
+            require_in_range(p, value);
+            for (FrictionSurface &surface : model.friction_surfaces)
+              {
+                p.friction(surface.law) = value;
+                if (std::string(friction_entry_of(p.friction).name) == "Stick stiffness")
+                  surface.automatic_stick_stiffness = false;
+              }
+            return;
+          case Kind::contact_restitution:
+            require_in_range(p, value);
+            inputs.contact.restitution = value;
+            return;
+          case Kind::foundation_entry:
+            require_in_range(p, value);
+            p.foundation(inputs.model.buildings[p.building].foundation) = value;
+            return;
           case Kind::storey_stiffness:
             require_in_range(p, value);
             for (const unsigned int l : named_storeys(p, model))
@@ -389,9 +669,8 @@ namespace poundfe
       return b - 1;
     }
 
-    /// Whether the floors `p` names can take a sampled mass: a 2D model (a
-    /// 3D floor has a polar moment too), no friction surfaces (their stick
-    /// damping is fitted to the mass once), a mass at every joint.
+    /// Whether the floors `p` names can take a sampled mass: a mass at
+    /// every joint; in 3D the input (whether Plan/Polar moments is typed).
     void
     check_floor_masses(const ModelParameter &p, const Model &model)
     {
@@ -399,19 +678,66 @@ namespace poundfe
       if (p.entry >= int(building.floors.size()))
         throw std::invalid_argument("'" + p.path + "': building '" + building.name +
                                     "' has floors 1.." + std::to_string(building.floors.size()));
-      if (model.dimension != 2)
-        throw std::invalid_argument("'" + p.path + "': random floor masses are for 2D models "
-                                    "(a 3D floor has a polar moment of inertia too)");
-      if (!model.friction_surfaces.empty())
-        throw std::invalid_argument("'" + p.path + "': random floor masses are not available "
-                                    "with friction surfaces (their stick damping is fitted to "
-                                    "the mass once)");
+      if (model.dimension != 2 && !p.inputs)
+        throw std::invalid_argument("'" + p.path + "': a 3D floor mass needs the input the "
+                                    "model was built from (its polar moment follows it)");
       for (const Floor *floor : named_floors(p, model))
         for (const unsigned int node : floor->nodes)
           if (std::none_of(model.masses.begin(), model.masses.end(),
                            [node](const NodalMass &m) { return m.node == node; }))
             throw std::invalid_argument("'" + p.path + "': a floor of building '" +
                                         building.name + "' has no floor mass in the input");
+    }
+
+    /// "Column E[i]" ... "Beam mass per length[i]" of a 3D frame (`which`:
+    /// the word after Column or Beam).
+    ModelParameter
+    section_3d_parameter(ModelParameter p, const bool column, const std::string &which,
+                         const Model &model)
+    {
+      const auto found = std::find_if(section_3d_entries.begin(), section_3d_entries.end(),
+                                      [&](const auto &e) { return e.first == which; });
+      if (found == section_3d_entries.end())
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      if (!p.hinges || p.hinges->size() != model.hinges.size() + model.hinges_3d.size())
+        throw std::invalid_argument("'" + p.path + "': a 3D frame's section needs the hinges' "
+                                    "origins (hinge_origins)");
+      p.kind        = Kind::member_section_3d;
+      p.member_kind = column ? MemberKind::column : MemberKind::beam;
+      p.section_3d  = found->second;
+      return p;
+    }
+
+    /// "Group E[i]" ... "Group mass per length[i]" of a mesh building: the
+    /// members of its i-th group id.
+    ModelParameter
+    mesh_section_parameter(ModelParameter p, const std::string &which, const Model &model)
+    {
+      const Building &building = model.buildings[p.building];
+      const auto      found    = std::find_if(section_entries.begin(), section_entries.end(),
+                                      [&](const auto &e) { return e.first == which; });
+      if (found == section_entries.end())
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      if (building.type != BuildingType::mesh)
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' is not a mesh building (Type = mesh)");
+      if (model.dimension == 3) // its members are 3D ones, of other sections
+        throw std::invalid_argument("'" + p.path + "': the groups of a 3D mesh building "
+                                    "cannot be random yet (those of a 2D mesh can)");
+      if (!p.inputs)
+        throw std::invalid_argument("'" + p.path + "': a mesh group needs the input the "
+                                    "model was built from (its Group ids)");
+      const std::vector<unsigned int> &ids = p.inputs->model.buildings[p.building].group_ids;
+      if (p.entry >= int(ids.size()))
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has groups 1.." + std::to_string(ids.size()));
+      p.kind        = Kind::member_section;
+      p.member_kind = MemberKind::other;
+      p.group       = p.entry < 0 ? -1 : int(ids[p.entry]);
+      p.section     = found->second;
+      return p;
     }
 
     /// "Column E[i]" ... "Beam mass per length[i]" of a generated frame.
@@ -421,14 +747,22 @@ namespace poundfe
       const Building &building = model.buildings[p.building];
       const bool      column   = entry.rfind("Column ", 0) == 0;
       const std::string which  = entry.substr(column ? 7 : 5);
+      if (building.type == BuildingType::frame && model.dimension == 3)
+        {
+          if (p.entry >= int(building.floors.size()))
+            throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                        "' has " + (column ? "storeys" : "floors") + " 1.." +
+                                        std::to_string(building.floors.size()));
+          return section_3d_parameter(p, column, which, model);
+        }
       const auto        found  = std::find_if(section_entries.begin(), section_entries.end(),
                                       [&](const auto &e) { return e.first == which; });
       if (found == section_entries.end())
         throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
                                     known_paths + ")");
-      if (building.type != BuildingType::frame || model.dimension != 2)
+      if (building.type != BuildingType::frame)
         throw std::invalid_argument("'" + p.path + "': building '" + building.name +
-                                    "' is not a generated 2D frame (Type = frame)");
+                                    "' is not a generated frame (Type = frame)");
       if (p.entry >= int(building.floors.size()))
         throw std::invalid_argument("'" + p.path + "': building '" + building.name + "' has " +
                                     (column ? "storeys" : "floors") + " 1.." +
@@ -483,6 +817,11 @@ namespace poundfe
                 from_rotation = from_rotation || !origin_of(p, model, h).yield_from_moment;
               }
           }
+      if (!any && std::any_of(model.hinges_3d.begin(), model.hinges_3d.end(),
+                              [&](const Hinge3D &h) { return h.building == p.building; }))
+        throw std::invalid_argument("'" + p.path + "': the hinges of 3D frame '" + name +
+                                    "' cannot be random yet (their k follows a random Column "
+                                    "or Beam E, I, Iz)");
       if (!any)
         throw std::invalid_argument("'" + p.path + "': building '" + name + "' has no hinges");
       if (p.hinges && p.kind == Kind::hinge_stiffness_factor && !from_section)
@@ -516,6 +855,55 @@ namespace poundfe
                                     "' has no Bouc-Wen hinges or storeys in a 2D model");
       p.kind  = Kind::bouc_wen_shape;
       p.shape = found->second;
+      return p;
+    }
+
+    /// "Foundation/ENTRY" of building b's compliant foundation: an entry
+    /// its Type uses (the soil's for gazetas and cone, the typed springs
+    /// and dashpots for given), in 3D the 3D ones, the vertical ones under
+    /// a frame.
+    ModelParameter
+    foundation_parameter(ModelParameter p, const std::string &entry, const Model &model)
+    {
+      const std::string &name  = model.buildings[p.building].name;
+      const auto         found = std::find_if(foundation_entries.begin(), foundation_entries.end(),
+                                      [&](const FoundationEntry &e) { return e.entry.name == entry; });
+      if (found == foundation_entries.end())
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      const auto foundation = std::find_if(model.foundations.begin(), model.foundations.end(),
+                                           [&](const Foundation &f) { return f.building == p.building; });
+      if (foundation == model.foundations.end())
+        throw std::invalid_argument("'" + p.path + "': building '" + name +
+                                    "' has no compliant foundation (Foundation/Type = none)");
+      if (!p.inputs)
+        throw std::invalid_argument("'" + p.path + "': a foundation entry needs the input the "
+                                    "model was built from");
+      const FoundationParameters &input = p.inputs->model.buildings[p.building].foundation;
+      const bool given = input.type == FoundationType::given;
+      const bool vertical = std::any_of(foundation->parts.begin(), foundation->parts.end(),
+                                        [](const FoundationPart &part) { return part.name == "_vertical"; });
+      if (found->of == FoundationEntry::soil && given)
+        throw std::invalid_argument("'" + p.path + "': building '" + name + "' has its springs "
+                                    "and dashpots typed in (Foundation/Type = given), not from "
+                                    "the soil");
+      if (found->of == FoundationEntry::typed && !given)
+        throw std::invalid_argument("'" + p.path + "': building '" + name + "' has its springs "
+                                    "and dashpots from the soil (Foundation/Type = " +
+                                    foundation_type_names().name(input.type) +
+                                    "); vary the soil's entries");
+      if (found->three_d && model.dimension != 3)
+        throw std::invalid_argument("'" + p.path + "' is an entry of a 3D foundation "
+                                    "(Model/Dimension = 3)");
+      if (found->vertical && !vertical)
+        throw std::invalid_argument("'" + p.path + "': the foundation of building '" + name +
+                                    "' has no vertical spring (a shear building's)");
+      if (entry == "Embedment" && input.type == FoundationType::cone)
+        throw std::invalid_argument("'" + p.path + "': the cones are for surface foundations "
+                                    "(Embedment = 0)");
+      p.kind                = Kind::foundation_entry;
+      p.foundation          = found->entry.at;
+      p.foundation_matrices = found->matrices;
       return p;
     }
 
@@ -553,6 +941,14 @@ namespace poundfe
         }
       if (entry.rfind("Column ", 0) == 0 || entry.rfind("Beam ", 0) == 0)
         return section_parameter(p, entry, model);
+      if (entry.rfind("Group ", 0) == 0)
+        return mesh_section_parameter(p, entry.substr(6), model);
+      if (entry.rfind("Foundation/", 0) == 0)
+        {
+          if (indexed)
+            throw std::invalid_argument("'" + p.path + "': '" + entry + "' takes no [entry]");
+          return foundation_parameter(p, entry.substr(11), model);
+        }
       if (entry == "Damping/Modal ratios")
         return modal_ratio_parameter(p, model);
       if (std::find(geometry_entries.begin(), geometry_entries.end(), entry) !=
@@ -603,14 +999,20 @@ namespace poundfe
   {
     return kind == Kind::storey_stiffness || kind == Kind::floor_mass ||
            kind == Kind::member_section || kind == Kind::hinge_stiffness ||
-           kind == Kind::hinge_stiffness_factor;
+           kind == Kind::hinge_stiffness_factor || kind == Kind::member_section_3d ||
+           (kind == Kind::foundation_entry && foundation_matrices);
   }
 
   bool
   ModelParameter::enters_mass() const
   {
+    // a 3D member's rotary inertias are rho I with rho = m / A
     return kind == Kind::floor_mass ||
-           (kind == Kind::member_section && section == &Section::mass_per_length);
+           (kind == Kind::member_section && section == &Section::mass_per_length) ||
+           (kind == Kind::member_section_3d && section_3d != &Section3D::youngs_modulus &&
+            section_3d != &Section3D::shear_modulus && section_3d != &Section3D::torsion_constant &&
+            section_3d != &Section3D::shear_area_y && section_3d != &Section3D::shear_area_z) ||
+           (kind == Kind::foundation_entry && foundation_matrices);
   }
 
   bool
@@ -623,7 +1025,12 @@ namespace poundfe
   ModelParameter::Range
   ModelParameter::range() const
   {
-    const double infinity = std::numeric_limits<double>::infinity();
+    if (kind == Kind::friction_entry)
+      return friction_entry_of(friction).range;
+    if (kind == Kind::foundation_entry)
+      return foundation_entry_of(foundation).entry.range;
+    if (kind == Kind::contact_restitution)
+      return {0, false, 1};
     if (kind == Kind::bouc_wen_shape)
       {
         if (shape == &BoucWenParameters::alpha)
@@ -639,7 +1046,9 @@ namespace poundfe
                       kind == Kind::kinetic_friction || kind == Kind::link_damping ||
                       kind == Kind::rayleigh_a0 || kind == Kind::rayleigh_a1 ||
                       kind == Kind::modal_ratio ||
-                      (kind == Kind::member_section && section == &Section::mass_per_length);
+                      (kind == Kind::member_section && section == &Section::mass_per_length) ||
+                      (kind == Kind::member_section_3d &&
+                       section_3d == &Section3D::mass_per_length);
     return {0, zero, infinity};
   }
 
@@ -686,16 +1095,19 @@ namespace poundfe
   {
     // as insert_hinges (model/model_builder.cc) reads the entries: the
     // hinge's member group's place in Groups (0 without Groups)
+    // (3D frames: frame_building_3d.cc's add_hinge, the same reading)
     std::vector<HingeOrigin> origins;
+    const auto origin = [&](const unsigned int building, const unsigned int group) {
+      const BuildingParameters &b  = input.buildings[building];
+      const auto         at = std::find(b.hinge_groups.begin(), b.hinge_groups.end(), group);
+      const unsigned int g  = b.hinge_groups.empty() ? 0 : at - b.hinge_groups.begin();
+      origins.push_back({value_for(b.hinge_stiffnesses, g) <= 0,
+                         value_for(b.hinge_yield_moments, g) > 0});
+    };
     for (const Hinge &hinge : model.hinges)
-      {
-        const BuildingParameters &b     = input.buildings[hinge.building];
-        const unsigned int        group = model.members[hinge.member].group;
-        const auto   at = std::find(b.hinge_groups.begin(), b.hinge_groups.end(), group);
-        const unsigned int g = b.hinge_groups.empty() ? 0 : at - b.hinge_groups.begin();
-        origins.push_back({value_for(b.hinge_stiffnesses, g) <= 0,
-                           value_for(b.hinge_yield_moments, g) > 0});
-      }
+      origin(hinge.building, model.members[hinge.member].group);
+    for (const Hinge3D &hinge : model.hinges_3d)
+      origin(hinge.building, model.members_3d[hinge.member].group);
     return origins;
   }
 
@@ -703,7 +1115,7 @@ namespace poundfe
   settle_hinge_origins(std::vector<ModelParameter> &parameters, std::vector<HingeOrigin> origins,
                        const Model &model)
   {
-    AssertDimension(origins.size(), model.hinges.size());
+    AssertDimension(origins.size(), model.hinges.size() + model.hinges_3d.size());
     for (const ModelParameter &p : parameters)
       for (unsigned int h = 0; h < model.hinges.size(); ++h)
         if (model.hinges[h].building == p.building)
@@ -720,13 +1132,15 @@ namespace poundfe
 
   ModelParameter
   model_parameter(const std::string &path, const Model &model,
-                  std::shared_ptr<const std::vector<HingeOrigin>> hinges)
+                  std::shared_ptr<const std::vector<HingeOrigin>> hinges,
+                  std::shared_ptr<const ModelInputs>              inputs)
   {
     static const std::regex with_entry(R"(^\s*(.*?)\s*\[\s*([0-9]+)\s*\]\s*$)");
     static const std::regex building(R"(^Building ([0-9]+)/(.+)$)");
     ModelParameter p;
     p.path            = path;
     p.hinges          = std::move(hinges);
+    p.inputs          = std::move(inputs);
     std::string entry = path;
     std::smatch match;
     const bool  indexed = std::regex_match(path, match, with_entry);
@@ -773,6 +1187,36 @@ namespace poundfe
         if (model.friction_surfaces.empty())
           throw std::invalid_argument("'" + path + "': the model has no friction surfaces");
         return p;
+      }
+    if (entry == "Contact/Coefficient of restitution")
+      {
+        no_entry();
+        p.kind = Kind::contact_restitution;
+        if (model.gaps.empty())
+          throw std::invalid_argument("'" + path + "': the model has no contact (Contact/Law)");
+        if (!p.inputs)
+          throw std::invalid_argument("'" + path + "' needs the input the model was built from");
+        const ContactParameters &contact = p.inputs->contact;
+        if (!contact_law_is_damped(contact.law) ||
+            contact.damping_from == ContactDampingFrom::given)
+          throw std::invalid_argument("'" + path + "': the contact damping does not come from "
+                                      "the restitution (an undamped law, or Contact/Damping "
+                                      "from = given)");
+        return p;
+      }
+    if (entry.rfind("Friction/", 0) == 0)
+      {
+        const auto found = std::find_if(friction_entries.begin(), friction_entries.end(),
+                                        [&](const auto &e) { return entry.substr(9) == e.name; });
+        if (found != friction_entries.end())
+          {
+            no_entry();
+            p.kind     = Kind::friction_entry;
+            p.friction = found->at;
+            if (model.friction_surfaces.empty())
+              throw std::invalid_argument("'" + path + "': the model has no friction surfaces");
+            return p;
+          }
       }
     if (entry == "Links/Viscous dampers")
       {
@@ -838,6 +1282,24 @@ namespace poundfe
           return model.buildings[p.building].damping.a1;
         case Kind::modal_ratio:
           return model.buildings[p.building].damping.modal_ratios[std::max(p.entry, 0)];
+        case Kind::member_section_3d:
+          for (const Member3D &member : model.members_3d)
+            if (named_member_3d(p, member))
+              return member.section.*p.section_3d;
+          break;
+        case Kind::friction_entry:
+          {
+            FrictionLawParameters law = model.friction_surfaces.front().law;
+            return p.friction(law);
+          }
+        case Kind::contact_restitution:
+          return p.inputs->contact.restitution;
+        case Kind::foundation_entry:
+          {
+            FoundationParameters typed =
+              p.inputs->model.buildings[p.building].foundation.as_typed(model.dimension == 3);
+            return p.foundation(typed);
+          }
       }
     return 0;
   }
@@ -849,21 +1311,84 @@ namespace poundfe
     , eigensolver(eigensolver_)
   {
     for (const ModelParameter &p : targets)
-      linear = linear || p.enters_linear_part();
+      {
+        linear = linear || p.enters_linear_part();
+        if (p.inputs && !has_inputs)
+          {
+            inputs     = *p.inputs;
+            has_inputs = true;
+            for (BuildingParameters &b : inputs.model.buildings) // the foundations as typed
+              b.foundation = b.foundation.as_typed(base.model.dimension == 3);
+          }
+      }
   }
 
   void
   ModelRealization::apply(const std::vector<double> &values)
   {
     AssertDimension(values.size(), targets.size());
+    Model &model = working.model;
     bool matrices_changed = false; // M or K: the modes change
+    bool contact_changed  = false; // k, m_e or e: the contact damping fitted again
+    bool friction_changed = false;
+    std::vector<bool> foundation_changed(model.buildings.size(), false);
     for (unsigned int i = 0; i < targets.size(); ++i)
       {
-        write(targets[i], values[i], working.model);
-        matrices_changed = matrices_changed || targets[i].enters_matrices();
+        const ModelParameter &p = targets[i];
+        write(p, values[i], model, inputs);
+        matrices_changed = matrices_changed || p.enters_matrices();
+        contact_changed  = contact_changed || p.kind == Kind::contact_stiffness ||
+                          p.kind == Kind::contact_restitution || p.kind == Kind::floor_mass;
+        friction_changed = friction_changed || p.kind == Kind::static_friction ||
+                           p.kind == Kind::kinetic_friction;
+        if (p.kind == Kind::foundation_entry)
+          foundation_changed[p.building] = true;
       }
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      if (foundation_changed[b])
+        map_foundation(b);
+    const ContactParameters &contact = inputs.contact;
+    if (has_inputs && contact_changed && contact_law_is_damped(contact.law) &&
+        contact.damping_from != ContactDampingFrom::given)
+      model.contact.damping = contact_law_damping(contact, model.contact);
+    if (friction_changed)
+      for (const FrictionSurface &surface : model.friction_surfaces)
+        if (surface.law.kinetic_coefficient > surface.law.static_coefficient)
+          throw std::invalid_argument(
+            "the sampled friction coefficients give mu_k = " +
+            number_text(surface.law.kinetic_coefficient) + " > mu_s = " +
+            number_text(surface.law.static_coefficient) + " (Friction/Kinetic coefficient "
+            "must not exceed the static one: sample them so, e.g. correlated or bounded)");
     if (linear)
       assemble_linear_part(matrices_changed);
+    if (!model.friction_surfaces.empty()) // k_s (automatic) and c_s of the new K, M
+      fit_stick_laws(working.system, model);
+  }
+
+  void
+  ModelRealization::map_foundation(const unsigned int b)
+  {
+    Model               &model = working.model;
+    FoundationParameters p     = inputs.model.buildings[b].foundation;
+    const FoundationGeometry &g = p.geometry;
+    if (p.type != FoundationType::given && g.embedment > std::min(g.length, g.width))
+      throw std::invalid_argument("the sampled foundation of building '" +
+                                  model.buildings[b].name + "' is embedded " +
+                                  number_text(g.embedment) + " m, deeper than its smaller side " +
+                                  number_text(std::min(g.length, g.width)) + " m");
+    p.recompute_impedance(model.dimension == 3);
+    for (Foundation &f : model.foundations)
+      if (f.building == b)
+        {
+          const bool vertical = std::any_of(f.parts.begin(), f.parts.end(), [](const FoundationPart &part) {
+            return part.name == "_vertical";
+          });
+          f = f.rocking_node >= 0 ?
+                plan_foundation(p, b, f.node, f.rocking_node,
+                                {{f.parts[0].coefficients[0], f.parts[0].coefficients[1]}},
+                                vertical) :
+                planar_foundation(p, b, f.node, vertical);
+        }
   }
 
   void

@@ -115,9 +115,8 @@ namespace poundfe
         const auto &targets = structure->parameters();
         if (std::any_of(targets.begin(), targets.end(), [](const ModelParameter &p) {
               return p.enters_mass();
-            })) // -M r a_g of the new M (a 2D model: no horizontal pair)
-          excitation =
-            Excitation(working.system, excitation.ground_motion(), excitation.nodal_forces());
+            })) // -M r a_g of the new M (every component's)
+          excitation.set_mass(working.system);
         peaks.reset();
         history.reset();
         history = std::make_unique<TimeHistory>(working, parameters);

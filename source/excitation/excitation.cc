@@ -42,6 +42,16 @@ namespace poundfe
   {}
 
   void
+  Excitation::set_mass(const LinearSystem &system)
+  {
+    mass_times_influence = system.mass * system.influence;
+    if (pair)
+      mass_times_influence_y = system.mass * system.influence_y;
+    if (vertical_motion)
+      mass_times_influence_z = system.mass * system.influence_z;
+  }
+
+  void
   Excitation::set_horizontal_pair(const LinearSystem &system, GroundMotion second_motion,
                                   const double angle)
   {

@@ -99,4 +99,19 @@ namespace poundfe
     input.non_negative("Contact/Effective mass", effective_mass);
     input.positive("Contact/Calibration velocity", calibration_velocity);
   }
+
+  double
+  contact_law_damping(const ContactParameters &contact, const ContactLawParameters &law)
+  {
+    if (!contact_law_is_damped(contact.law))
+      return 0;
+    if (contact.damping_from == ContactDampingFrom::given)
+      return contact.damping;
+    if (contact.damping_from == ContactDampingFrom::formula)
+      return damping_from_restitution_formula(
+        contact.law, contact.restitution,
+        hertz_damp_formula_names().name(contact.hertz_damp_formula));
+    // the damping parameters are dimensionless: one calibration serves every gap
+    return calibrate_damping(law, contact.restitution, contact.calibration_velocity);
+  }
 } // namespace poundfe

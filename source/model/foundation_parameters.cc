@@ -109,7 +109,7 @@ namespace poundfe
             input.positive(s + "Vertical stiffness", given.vertical_stiffness);
             input.non_negative(s + "Vertical damping", given.vertical_damping);
           }
-        impedance = given;
+        compute_planar_impedance();
         return;
       }
     input.positive(s + "Shear-wave velocity", soil.shear_wave_velocity);
@@ -129,6 +129,17 @@ namespace poundfe
                  "deeper (" + number_text(geometry.embedment) +
                    " m) than the foundation's smaller side (" + number_text(smaller_side) +
                    " m): beyond the range of Gazetas' embedment formulas (D/B <= 2)");
+    compute_planar_impedance();
+  }
+
+  void
+  FoundationParameters::compute_planar_impedance()
+  {
+    if (type == FoundationType::given)
+      {
+        impedance = given;
+        return;
+      }
     impedance = type == FoundationType::gazetas ? gazetas_impedance(soil, geometry) :
                                                   cone_impedance(soil, geometry);
     rotary_inertia += impedance.added_rotary_inertia;
@@ -150,6 +161,18 @@ namespace poundfe
         input.non_negative(s + "Horizontal damping y", given_3d.sway_damping[1]);
         input.non_negative(s + "Rocking damping x", given_3d.rocking_damping[0]);
         input.non_negative(s + "Torsional damping", given_3d.torsional_damping);
+        compute_impedance_3d();
+        return;
+      }
+    // finalize checked the soil and the geometry
+    compute_impedance_3d();
+  }
+
+  void
+  FoundationParameters::compute_impedance_3d()
+  {
+    if (type == FoundationType::given)
+      {
         impedance_3d                      = given_3d;
         impedance_3d.sway_stiffness[0]    = given.horizontal_stiffness;
         impedance_3d.sway_damping[0]      = given.horizontal_damping;
@@ -159,10 +182,27 @@ namespace poundfe
         impedance_3d.vertical_damping     = given.vertical_damping;
         return;
       }
-    // finalize checked the soil and the geometry
     impedance_3d = type == FoundationType::gazetas ? gazetas_impedance_3d(soil, geometry) :
                                                      cone_impedance_3d(soil, geometry);
-    // about y: finalize added the plane x-z's already (the same value)
+    // about y: compute_planar_impedance added the plane x-z's already (the same value)
     rotary_inertia_x += impedance_3d.added_rotary_inertia[0];
+  }
+
+  FoundationParameters
+  FoundationParameters::as_typed(const bool three_d) const
+  {
+    FoundationParameters typed = *this;
+    typed.rotary_inertia -= impedance.added_rotary_inertia;
+    if (three_d)
+      typed.rotary_inertia_x -= impedance_3d.added_rotary_inertia[0];
+    return typed;
+  }
+
+  void
+  FoundationParameters::recompute_impedance(const bool three_d)
+  {
+    compute_planar_impedance();
+    if (three_d)
+      compute_impedance_3d();
   }
 } // namespace poundfe

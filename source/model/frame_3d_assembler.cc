@@ -211,6 +211,7 @@ namespace poundfe
         hinge.node                  = node;
         hinge.slot                  = a;
         hinge.building              = b;
+        hinge.member                = model.members_3d.size(); // pushed after its hinges
         hinge.label                 = member.label + where + (a == 0 ? "_y" : "_z");
         hinge.biaxial               = p.hinge_biaxial;
         hinge.law                   = p.hysteresis;
@@ -231,6 +232,7 @@ namespace poundfe
     Member3D member;
     member.section  = section;
     member.building = b;
+    member.group    = group;
     member.kind     = kind;
     member.label    = building.name + "_" + label;
     for (unsigned int c = 0; c < 3; ++c)

@@ -4,11 +4,10 @@
 
 namespace poundfe
 {
-  void
-  add_planar_foundation(Model &model, const FoundationParameters &p, const unsigned int b,
-                        const unsigned int node, const bool vertical)
+  Foundation
+  planar_foundation(const FoundationParameters &p, const unsigned int b, const unsigned int node,
+                    const bool vertical)
   {
-    model.nodes[node].fixed = {{false, !vertical, false}};
     const FoundationImpedance &z = p.impedance;
     Foundation                 f;
     f.node                 = node;
@@ -27,7 +26,15 @@ namespace poundfe
     // the rocking last (output/foundation_report.cc)
     f.parts.push_back({{Model::dof(node, Component::rz)}, {1.0}, f.rocking_stiffness,
                        f.rocking_damping, f.rotary_inertia, "_rocking"});
-    model.foundations.push_back(f);
+    return f;
+  }
+
+  void
+  add_planar_foundation(Model &model, const FoundationParameters &p, const unsigned int b,
+                        const unsigned int node, const bool vertical)
+  {
+    model.nodes[node].fixed = {{false, !vertical, false}};
+    model.foundations.push_back(planar_foundation(p, b, node, vertical));
   }
 
   unsigned int

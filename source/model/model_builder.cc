@@ -591,15 +591,7 @@ namespace poundfe
       law.law                   = contact.law;
       law.stiffness             = contact.stiffness;
       law.effective_mass = model.gaps.empty() ? 1.0 : model.gaps.front().effective_mass;
-      if (!contact_law_is_damped(contact.law))
-        law.damping = 0;
-      else if (contact.damping_from == ContactDampingFrom::given)
-        law.damping = contact.damping;
-      else if (contact.damping_from == ContactDampingFrom::formula)
-        law.damping = damping_from_restitution_formula(contact.law, contact.restitution,
-                                                       hertz_damp_formula_names().name(contact.hertz_damp_formula));
-      else // the damping parameters are dimensionless: one calibration serves every gap
-        law.damping = calibrate_damping(law, contact.restitution, contact.calibration_velocity);
+      law.damping               = contact_law_damping(contact, law);
     }
 
     /// Dimension 3: the plan centre given, or the next in the row along x.

@@ -6,24 +6,13 @@
 
 namespace poundfe
 {
-  unsigned int
-  add_plan_foundation(Model &model, const FoundationParameters &p, const unsigned int b,
-                      const unsigned int base, const double angle, const bool vertical)
+  Foundation
+  plan_foundation(const FoundationParameters &p, const unsigned int b, const unsigned int base,
+                  const unsigned int rocking_node, const std::array<double, 2> &direction,
+                  const bool vertical)
   {
-    model.nodes[base].fixed = {{false, false, false}};
-    Node rocking;
-    rocking.position    = model.nodes[base].position;
-    rocking.building    = b;
-    rocking.generalized = true;                 // (u_z, θ_x, θ_y)
-    rocking.fixed       = {{!vertical, false, false}}; // vertical motion: frames only
-    // free vertically (under a frame) its slot 0 is a vertical translation:
-    // the vertical ground motion loads the foundation's mass too
-    rocking.joint_translation_z = vertical;
-    model.nodes.push_back(rocking);
-    const unsigned int rocking_node = model.nodes.size() - 1;
-
     const FoundationImpedance3D &z = p.impedance_3d;
-    const double c = std::cos(angle), s = std::sin(angle);
+    const double c = direction[0], s = direction[1];
     const std::vector<unsigned int> sway{Model::dof(base, Component::ux),
                                          Model::dof(base, Component::uy)};
     const std::vector<unsigned int> rotation{n_dofs_per_node * rocking_node + 1,
@@ -51,7 +40,27 @@ namespace poundfe
       f.parts.insert(f.parts.begin() + 3,
                      {{n_dofs_per_node * rocking_node}, {1.0}, z.vertical_stiffness,
                       z.vertical_damping, p.mass + z.added_mass, "_vertical"});
-    model.foundations.push_back(f);
+    return f;
+  }
+
+  unsigned int
+  add_plan_foundation(Model &model, const FoundationParameters &p, const unsigned int b,
+                      const unsigned int base, const double angle, const bool vertical)
+  {
+    model.nodes[base].fixed = {{false, false, false}};
+    Node rocking;
+    rocking.position    = model.nodes[base].position;
+    rocking.building    = b;
+    rocking.generalized = true;                 // (u_z, θ_x, θ_y)
+    rocking.fixed       = {{!vertical, false, false}}; // vertical motion: frames only
+    // free vertically (under a frame) its slot 0 is a vertical translation:
+    // the vertical ground motion loads the foundation's mass too
+    rocking.joint_translation_z = vertical;
+    model.nodes.push_back(rocking);
+    const unsigned int rocking_node = model.nodes.size() - 1;
+
+    model.foundations.push_back(
+      plan_foundation(p, b, base, rocking_node, {{std::cos(angle), std::sin(angle)}}, vertical));
     return rocking_node;
   }
 } // namespace poundfe

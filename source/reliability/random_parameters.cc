@@ -91,7 +91,17 @@ namespace poundfe
                       "Building b/Damping/Damping ratio, Damping/a0, Damping/a1, Damping/Modal "
                       "ratios[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, "
                       "Friction/Static coefficient, Friction/Kinetic coefficient, Links/Viscous "
-                      "dampers[i] (c). DISTRIBUTION and keys as Reliability/Random variables. "
+                      "dampers[i] (c); 3D frames: Building b/Column E[i] (G, A, I, Iz, J, Avy, "
+                      "Avz, mass per length), Beam ...[i]; meshes: Building b/Group E[i] (A, I, "
+                      "mass per length; group i of Group ids); 3D floor masses (a polar moment "
+                      "not typed follows); Building b/Foundation/ENTRY (Shear-wave velocity, "
+                      "Soil density, Poisson ratio, Length, Width, Embedment, the typed "
+                      "stiffnesses and dampings, Mass, Rotary inertia, Rotary inertia x, Polar "
+                      "inertia); Contact/Coefficient of restitution (the damping fitted "
+                      "again); Friction/Stribeck velocity, Belt velocity, Normal force (per "
+                      "displacement, per velocity, per velocity cubed), Stick stiffness, "
+                      "Regularization velocity. Geometry (heights, bays, plan, set-backs) is "
+                      "refused. DISTRIBUTION and keys as Reliability/Random variables. "
                       "Unit: that of the parameter.");
     prm.add_parameter("Correlation", correlation_text,
                       "Correlation matrix of the Variables in their order, rows separated by "
@@ -229,7 +239,7 @@ namespace poundfe
   void
   attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
                            const InputFile &input, const ModelParameters &model_input,
-                           const Eigensolver eigensolver)
+                           const ContactParameters &contact_input, const Eigensolver eigensolver)
   {
     // the responses the limit states name that a realization computes only when asked
     std::vector<std::string> named;
@@ -246,11 +256,12 @@ namespace poundfe
     std::vector<ModelParameter> parameters;
     const auto origins = std::make_shared<const std::vector<HingeOrigin>>(
       hinge_origins(model, model_input)); // as the file has them
+    const auto inputs = std::make_shared<const ModelInputs>(ModelInputs{model_input, contact_input});
     for (unsigned int i = 0; i < p.names.size(); ++i)
       {
         try
           {
-            parameters.push_back(model_parameter(p.paths[i], model, origins));
+            parameters.push_back(model_parameter(p.paths[i], model, origins, inputs));
           }
         catch (const std::invalid_argument &e)
           {

@@ -7,6 +7,7 @@
 #    realizations.csv;
 #  - subset with Response = limit state: one rank equals two;
 #  - bad input (unknown path, a path that is not a number poundfe can vary,
+#    geometry, a restitution without restitution damping, no foundation,
 #    a distribution that samples impossible values, impossible distribution
 #    parameters, a limit state naming an unknown response): exit 1, one
 #    message naming Random parameters/..., nothing written.
@@ -78,6 +79,9 @@ bad storey-out-of-range 'k: Building 2/Storey stiffnesses[3] ~ lognormal mean 5e
 bad normal-stiffness 'k: Building 1/Storey stiffnesses[1] ~ normal mean 5e6 sd 1e6' "can sample values <= 0"
 bad negative-sd 'k: Building 1/Storey stiffnesses[1] ~ lognormal mean 5e6 sd -1' "variable 'k'"
 bad no-tilde 'k: Building 1/Storey stiffnesses[1] lognormal mean 5e6 sd 1' "NAME: PATH ~ DISTRIBUTION"
+bad geometry 'h: Building 1/Storey heights[1] ~ lognormal mean 3 cov 0.1' "geometry"
+bad restitution-undamped 'e: Contact/Coefficient of restitution ~ uniform lower 0.5 upper 0.8' "does not come from the restitution"
+bad no-foundation 'v: Building 2/Foundation/Shear-wave velocity ~ lognormal mean 200 cov 0.2' "no compliant foundation"
 sed 's/contact: 6e4 - peak_contact_force - 0\*gap/contact: 6e4 - peak_force/' "$input" > "$work/unknown-response.prm"
 set +e
 "$poundfe" montecarlo "$work/unknown-response.prm" --output "$work/unknown-response" > /dev/null 2> "$work/unknown-response.err"

@@ -40,6 +40,12 @@ namespace poundfe
                             const FrictionParameters &friction, const ModalParameters &modal,
                             unsigned int n_modes);
 
+  /// The stick spring and dashpot of each friction element from M and K:
+  /// k_s = 1e4 K_ii when automatic (0 in the input), c_s = 2 sqrt(k_s M_ii)
+  /// (i the element's ux equation). prepare_analysis sets them once; a
+  /// realization whose M or K changes sets them again.
+  void fit_stick_laws(const LinearSystem &system, Model &model);
+
   /// The suspicious damping choices of each building: Rayleigh damping
   /// fitted at a mode whose kinetic energy is mostly vertical (a beam or
   /// column mode of a frame, not a storey mode), mass-proportional damping

@@ -32,7 +32,29 @@
 //                                        hysteretic storey of b (nonlinear)
 //     Building b/Damping/a0, a1          given Rayleigh coefficients (C)
 //     Building b/Damping/Modal ratios[i] zeta of mode i, modal damping (C)
+//     Building b/Column E|G|A|I|Iz|J|Avy|Avz|mass per length[i], Building
+//     b/Beam ...[i]                      the same for a 3D frame (Model/Dimension = 3;
+//                                        I is Iy; k = f 6 E I_y|z / L of its hinges)
+//     Building b/Group E|A|I|mass per length[i]
+//                                        group i (Group ids order) of a 2D mesh building
+//     Building b/Floor masses[i] of a 3D building: the floor's translational
+//                                        masses and, when Plan/Polar moments is not
+//                                        given, its polar moment J = m (L_x^2 + L_y^2)/12
+//                                        (the same share of m as before)
+//     Building b/Foundation/ENTRY        the soil (Shear-wave velocity, Soil density,
+//                                        Poisson ratio), size (Length, Width, Embedment),
+//                                        typed springs and dashpots, Mass and inertias
+//                                        of b's compliant foundation: its parts as the
+//                                        builder sets them (K, M; dashpots: nonlinear)
+//     Contact/Coefficient of restitution the contact damping as the builder fits it
+//                                        (formula or calibration; nonlinear)
+//     Friction/Stribeck velocity, Belt velocity, Normal force, Normal force per
+//     displacement|velocity|velocity cubed, Stick stiffness, Regularization velocity
+//                                        of every friction element (nonlinear; a
+//                                        stick dashpot 2 sqrt(k_s M_ii) follows k_s and M)
 //   Without [i], a list entry takes the one value on every storey.
+//   Refused: entries that place nodes or number equations (heights, bay
+//   widths, counts, set-backs, plan dimensions, positions, angles).
 // A realization writes the sampled values into a working copy of the built
 // Analysis (never the file, never the model builder). Only when a value
 // enters the linear part (K, C) are M, K (and, for Rayleigh damping fitted at
@@ -42,6 +64,8 @@
 #define poundfe_dynamics_model_parameter_h
 
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/model/contact_parameters.h>
+#include <poundfe/model/parameters.h>
 
 #include <limits>
 #include <memory>
@@ -50,7 +74,15 @@
 
 namespace poundfe
 {
-  struct ModelParameters;
+  /// The input sections a model was built from, for the parameters whose
+  /// value the builder turns into others: the mesh groups' ids, whether a
+  /// floor's polar moment was typed, a foundation's entries as typed, how
+  /// the contact damping comes from the restitution.
+  struct ModelInputs
+  {
+    ModelParameters   model;
+    ContactParameters contact;
+  };
 
   /// How the model builder set a hinge's k and u_y (model.hinges order):
   /// k = factor 6 E I / L of its member (else given), u_y = M_y / k (else
@@ -62,7 +94,8 @@ namespace poundfe
     bool yield_from_moment      = false;
   };
 
-  /// The origins of the model's hinges, from the input it was built from.
+  /// The origins of the model's hinges, from the input it was built from:
+  /// those of model.hinges, then those of model.hinges_3d.
   std::vector<HingeOrigin> hinge_origins(const Model &model, const ModelParameters &input);
 
   struct ModelParameter
@@ -88,7 +121,11 @@ namespace poundfe
       bouc_wen_shape,   // `shape` of b's hinges and hysteretic storeys
       rayleigh_a0,
       rayleigh_a1,
-      modal_ratio
+      modal_ratio,
+      member_section_3d, // `section_3d` of a 3D frame's columns or beams
+      friction_entry,    // `friction` of every friction element
+      contact_restitution,
+      foundation_entry   // `foundation` of building b's compliant foundation
     };
     Kind         kind     = Kind::storey_stiffness;
     std::string  path;          // as written
@@ -97,6 +134,18 @@ namespace poundfe
     MemberKind               member_kind = MemberKind::column; // member_section
     double Section::*        section     = nullptr;            // member_section
     double BoucWenParameters::*shape     = nullptr;            // bouc_wen_shape
+    double Section3D::*        section_3d = nullptr;           // member_section_3d
+    /// member_section of a mesh building: the members of physical group
+    /// `group` (-1: a generated frame's columns or beams)
+    int                        group      = -1;
+    /// The entry of a friction law or of a foundation's input.
+    double &(*friction)(FrictionLawParameters &)  = nullptr;
+    double &(*foundation)(FoundationParameters &) = nullptr;
+    /// foundation_entry: whether it enters K or M (else only the dashpots).
+    bool                       foundation_matrices = false;
+    /// The sections the model was built from (needed by the mesh sections,
+    /// 3D floor masses, foundations and restitution).
+    std::shared_ptr<const ModelInputs> inputs;
     /// The hinges' origins (shared by the parameters of one realization;
     /// settle_hinge_origins); needed by the section and hinge kinds.
     std::shared_ptr<const std::vector<HingeOrigin>> hinges;
@@ -129,8 +178,11 @@ namespace poundfe
   /// out of range, a storey that is not hysteretic, no gaps, no hinges, ...
   /// `hinges` (hinge_origins) lets it refuse a Hinges/Stiffness factor or
   /// Yield rotation that no hinge of the building uses.
+  /// `inputs` (the sections the model was built from) is needed by the
+  /// paths that say so.
   ModelParameter model_parameter(const std::string &path, const Model &model,
-                                 std::shared_ptr<const std::vector<HingeOrigin>> hinges = {});
+                                 std::shared_ptr<const std::vector<HingeOrigin>> hinges = {},
+                                 std::shared_ptr<const ModelInputs>              inputs = {});
 
   /// Gives every parameter the hinges' origins as they are once the
   /// parameters are sampled: a random Hinges/Stiffness makes k given, a
@@ -168,8 +220,16 @@ namespace poundfe
 
   private:
     void assemble_linear_part(bool matrices_changed);
+    /// Building b's foundation record from its entries as sampled, as the
+    /// builder makes it (FoundationParameters::recompute_impedance,
+    /// planar_foundation, plan_foundation).
+    void map_foundation(unsigned int b);
 
     Analysis                    working;
+    /// The input sections the parameters write into before the builder's
+    /// formulas map them (foundations as typed, the contact's restitution).
+    ModelInputs                 inputs;
+    bool                        has_inputs = false;
     std::vector<ModelParameter> targets;
     Eigensolver                 eigensolver;
     bool                        linear = false;

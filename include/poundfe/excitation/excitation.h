@@ -39,6 +39,9 @@ namespace poundfe
   {
   public:
     Excitation(const LinearSystem &system, GroundMotion ground, std::vector<NodalForce> forces);
+    /// -M r of every component (the pair's and the vertical's too) from
+    /// `system`'s M: a realization with random masses (dynamics/realization.h).
+    void set_mass(const LinearSystem &system);
 
     /// Dimension 3: the second horizontal component g_2 and the incidence
     /// angle a (rad); the load is then -M (r_x a_x + r_y a_y) with

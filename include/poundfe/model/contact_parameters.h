@@ -62,6 +62,14 @@ namespace poundfe
     /// Throws InputError.
     void check(const InputFile &input) const;
   };
+
+  struct ContactLawParameters;
+
+  /// The damping parameter of the contact law `law` (its stiffness and
+  /// effective mass set) as the model builder sets it from `contact`: 0 for
+  /// an undamped law, Damping when given, else from the Coefficient of
+  /// restitution by the law's formula or by calibration on `law`.
+  double contact_law_damping(const ContactParameters &contact, const ContactLawParameters &law);
 } // namespace poundfe
 
 #endif

@@ -67,6 +67,19 @@ namespace poundfe
     /// Dimension 3, after finalize: check the 3D entries and compute
     /// impedance_3d. Throws InputError.
     void finalize_3d(const InputFile &input, const std::string &section);
+
+    /// The entries as typed, of finalized parameters: the rotary inertias
+    /// without the soil's added ones (Wolf's cones).
+    FoundationParameters as_typed(bool three_d) const;
+    /// On entries as typed (checked): the impedances in use and the rotary
+    /// inertias with the soil's added ones, as finalize (and, `three_d`,
+    /// finalize_3d) set them. A realization with a random foundation entry
+    /// calls it (dynamics/model_parameter.h).
+    void recompute_impedance(bool three_d);
+
+  private:
+    void compute_planar_impedance(); // impedance; rotary_inertia += the added one
+    void compute_impedance_3d();     // impedance_3d; rotary_inertia_x += the added one
   };
 } // namespace poundfe
 

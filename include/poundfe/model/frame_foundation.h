@@ -31,6 +31,11 @@ namespace poundfe
   void add_planar_foundation(Model &model, const FoundationParameters &p, unsigned int b,
                              unsigned int node, bool vertical);
 
+  /// The foundation record add_planar_foundation adds (its springs,
+  /// dashpots and inertias from p's impedance, mass and rotary inertia).
+  Foundation planar_foundation(const FoundationParameters &p, unsigned int b, unsigned int node,
+                               bool vertical);
+
   /// Put the 2D frame b (its supports are its column bases) on a rigid
   /// foundation at the centre of its base. Returns the foundation's node.
   unsigned int add_frame_foundation(Model &model, const FoundationParameters &p, unsigned int b,

@@ -180,6 +180,8 @@ namespace poundfe
     std::array<double, 3>                orientation{}; // v_xz, in the local x-z plane
     Section3D                            section;
     unsigned int                         building = 0;
+    /// Columns of storey i: 2i - 1, beams of floor i: 2i (as 2D frames').
+    unsigned int                         group    = 0;
     MemberKind                           kind     = MemberKind::other;
     std::string                          label;
     std::vector<unsigned int>            dofs;
@@ -194,6 +196,7 @@ namespace poundfe
     unsigned int      node     = 0;
     unsigned int      slot     = 0; // 0: about the local y axis, 1: about z
     unsigned int      building = 0;
+    unsigned int      member   = 0; // in Model::members_3d: the member it ends
     /// Hinges/Biaxial interaction: the hinges of slots 0 and 1 of `node`
     /// share one bidirectional Bouc-Wen element (laws/bidirectional_bouc_wen.h).
     bool              biaxial  = false;
@@ -277,6 +280,8 @@ namespace poundfe
     unsigned int          building = 0;
     FrictionLawParameters law; // k_s: set by prepare_analysis when 0 (automatic)
     std::string           label;
+    /// k_s was 0 in the input: 1e4 K_ii, set again when K changes (fit_stick_laws).
+    bool                  automatic_stick_stiffness = false;
   };
 
   /// A link (damper, connector) between two floor nodes, usually of two

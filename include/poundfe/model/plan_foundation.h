@@ -35,6 +35,13 @@ namespace poundfe
   /// Wolf's trapped soil). Returns the rocking node.
   unsigned int add_plan_foundation(Model &model, const FoundationParameters &p, unsigned int b,
                                    unsigned int base, double angle, bool vertical = false);
+
+  /// The foundation record add_plan_foundation adds on the base node `base`
+  /// and the rocking node `rocking_node`, its local x along `direction`
+  /// (cos, sin of the angle).
+  Foundation plan_foundation(const FoundationParameters &p, unsigned int b, unsigned int base,
+                             unsigned int rocking_node, const std::array<double, 2> &direction,
+                             bool vertical);
 } // namespace poundfe
 
 #endif

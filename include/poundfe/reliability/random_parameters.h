@@ -42,6 +42,7 @@ namespace poundfe
   class RealizationRunner;
   struct InputFile;
   struct ModelParameters;
+  struct ContactParameters;
 
   struct RandomParameterParameters
   {
@@ -89,12 +90,13 @@ namespace poundfe
   /// cannot vary, or a distribution that can sample values the parameter
   /// cannot take (e.g. a normal stiffness: use a lognormal or a truncated
   /// normal with lower >= 0).
-  /// `input` is the file (for messages) and `model_input` its model
-  /// sections, which the runner's model was built from (the hinges'
-  /// origins: dynamics/model_parameter.h).
+  /// `input` is the file (for messages) and `model_input`, `contact_input`
+  /// its model and contact sections, which the runner's model was built
+  /// from (the hinges' origins, what the builder maps: dynamics/
+  /// model_parameter.h).
   void attach_random_parameters(RealizationRunner &runner, const RandomParameterParameters &p,
                                 const InputFile &input, const ModelParameters &model_input,
-                                Eigensolver eigensolver);
+                                const ContactParameters &contact_input, Eigensolver eigensolver);
 
   /// The section's limit states g_k over a row of responses (the runner's
   /// response_names(), which end with the variables' values).

@@ -1,0 +1,345 @@
+// Random parameters that the model builder maps before they reach M, K, C
+// or an element (dynamics/model_parameter.h, issue 24): the sections of a
+// 3D frame (its hinges' k = f 6 E I / L follows E, Iy, Iz) and of a 2D mesh
+// building's groups, 3D floor masses (the polar moment m (Lx^2 + Ly^2)/12
+// follows the mass, a typed one stays), masses with friction elements (the
+// stick dashpot 2 sqrt(k_s M_ii) follows), the friction law's entries, the
+// contact restitution (the damping calibrated again) and compliant
+// foundations (the impedances from the soil, or typed, and the inertias).
+// Each realization, written in place, must give the responses of the model
+// built from the file with the sampled values (overrides), under the same
+// loading normals: the independent route is the whole builder,
+// prepare_analysis and a fresh engine. Tolerance 1e-9 relative: the two
+// routes differ only by rounding (the in-place polar moment J m'/m against
+// m' c, the hinge's f 6 E' I / L against the builder's product).
+#include <poundfe/dynamics/model_parameter.h>
+#include <poundfe/dynamics/realization.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/input/input_parameters.h>
+#include <poundfe/reliability/random_parameters.h>
+#include <poundfe/reliability/statistics.h>
+
+#include "../test_utilities.h"
+#include "rebuilt_model.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+
+using namespace poundfe;
+
+BOOST_AUTO_TEST_SUITE(random_structure)
+
+namespace
+{
+  const std::string shear_pair = "tests/dynamics/uncertain-shear-pair.prm";
+  const std::string pair_3d    = "tests/dynamics/uncertain-3d-pair.prm";
+
+  using poundfe_test::compare_with_rebuilt;
+  using poundfe_test::Overrides;
+  using poundfe_test::OverridesOf;
+
+  std::string
+  text_of(const double x)
+  {
+    return poundfe_test::exact_text(x);
+  }
+
+  /// "a, b" with x at entry i (0-based) of n and `other` elsewhere.
+  std::string
+  list_with(const double x, const unsigned int i, const unsigned int n, const std::string &other)
+  {
+    std::string text;
+    for (unsigned int k = 0; k < n; ++k)
+      text += (k ? ", " : "") + (k == i ? text_of(x) : other);
+    return text;
+  }
+} // namespace
+
+// 3D frame sections (E of storey 1's columns, every column's G, Iy and J,
+// Iz of floor 2's beams, every beam's A, the mass per length of every
+// column and of floor 1's beams: K, M, the hinges' k) and 3D floor masses
+// (the frame's polar moment follows, the shear building's typed one
+// stays; the joints' vertical masses and the gaps' effective masses follow).
+BOOST_AUTO_TEST_CASE(random_3d_frame_sections_and_3d_floor_masses)
+{
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Column E", list_with(x[0], 0, 2, "3e10")},
+                     {"Building 1/Column G", text_of(x[1])},
+                     {"Building 1/Column I", text_of(x[2])},
+                     {"Building 1/Beam Iz", list_with(x[3], 1, 2, "1.1e-3")},
+                     {"Building 1/Column J", text_of(x[4])},
+                     {"Building 1/Beam A", text_of(x[5])},
+                     {"Building 1/Column mass per length", text_of(x[6])},
+                     {"Building 1/Beam mass per length", list_with(x[7], 0, 2, "0")},
+                     {"Building 1/Floor masses", list_with(x[8], 1, 2, "6e4")},
+                     {"Building 2/Floor masses", text_of(x[9])}};
+  };
+  compare_with_rebuilt(pair_3d, {}, values, 4);
+}
+
+namespace
+{
+  /// Building 1 of the shear pair as the set-back mesh (meshes/setback.msh:
+  /// physical group 1 the columns, 2 the beams; floors at 3.5, 6.5, 9.5 m),
+  /// hinges at its column bases and beam ends, under P-Delta.
+  Overrides
+  mesh_pair(const std::string &variables)
+  {
+    return {{"Building 1/Type", "mesh"},
+            {"Building 1/Mesh file", "../../meshes/setback.msh"},
+            {"Building 1/Group ids", "1, 2"},
+            {"Building 1/Group E", "3e10, 3e10"},
+            {"Building 1/Group A", "0.04, 0.04"},
+            {"Building 1/Group I", "1e-4, 2e-4"},
+            {"Building 1/Group mass per length", "50, 0"},
+            {"Building 1/Hinges/Locations", "column bases, beam ends"},
+            {"Building 1/Hinges/Yield moment", "3e3"},
+            {"Model/Geometric nonlinearity", "p-delta"},
+            {"Model/Separations", "0.004"},
+            {"Random parameters/Correlation", ""},
+            {"Random parameters/Limit states", ""},
+            {"Random parameters/Variables", variables}};
+  }
+} // namespace
+
+// The groups of a 2D mesh building (E of the columns, I of the beams, A of
+// every group, the beams' mass per length: K, M, K_G, the hinges' k) and a
+// mesh floor's mass.
+BOOST_AUTO_TEST_CASE(random_mesh_groups)
+{
+  const std::string variables =
+    "E: Building 1/Group E[1] ~ lognormal mean 3e10 cov 0.15; "
+    "I: Building 1/Group I[2] ~ lognormal mean 2e-4 cov 0.2; "
+    "A: Building 1/Group A ~ uniform lower 0.03 upper 0.05; "
+    "mb: Building 1/Group mass per length[2] ~ uniform lower 0 upper 100; "
+    "m: Building 1/Floor masses[1] ~ lognormal mean 1000 cov 0.3";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Group E", text_of(x[0]) + ", 3e10"},
+                     {"Building 1/Group I", "1e-4, " + text_of(x[1])},
+                     {"Building 1/Group A", text_of(x[2])},
+                     {"Building 1/Group mass per length", "50, " + text_of(x[3])},
+                     {"Building 1/Floor masses", list_with(x[4], 0, 3, "1000")}};
+  };
+  compare_with_rebuilt(shear_pair, mesh_pair(variables), values, 4);
+}
+
+namespace
+{
+  /// The shear pair with a friction element under floor 1 of building 2
+  /// (elastic-plastic, automatic stick spring) and a Hertz-damp contact whose
+  /// damping is calibrated to the restitution.
+  Overrides
+  friction_pair(const std::string &variables, const Overrides &extra = {})
+  {
+    Overrides o = {{"Friction/Surfaces", "2 1 0"},
+                   {"Model/Separations", "0.002"},
+                   {"Friction/Static coefficient", "0.35"},
+                   {"Friction/Kinetic coefficient", "0.25"},
+                   {"Friction/Normal force", "1e4"},
+                   {"Contact/Law", "hertz-damp"},
+                   {"Contact/Stiffness", "5e9"},
+                   {"Contact/Damping from", "calibrated"},
+                   {"Random parameters/Correlation", ""},
+                   {"Random parameters/Limit states", ""},
+                   {"Random parameters/Variables", variables}};
+    o.insert(o.end(), extra.begin(), extra.end());
+    return o;
+  }
+} // namespace
+
+// Masses and a storey stiffness with a friction element (its automatic
+// k_s = 1e4 K_ii and c_s = 2 sqrt(k_s M_ii) follow), the friction law's
+// entries, and the contact's stiffness and restitution (the Hertz-damp
+// damping calibrated again, as the builder does, on the new k and m_e).
+BOOST_AUTO_TEST_CASE(random_masses_with_friction_friction_entries_and_restitution)
+{
+  const std::string variables =
+    "m: Building 2/Floor masses[1] ~ lognormal mean 1000 cov 0.2; "
+    "k: Building 2/Storey stiffnesses[1] ~ lognormal mean 3e6 cov 0.2; "
+    "mus: Friction/Static coefficient ~ uniform lower 0.3 upper 0.4; "
+    "muk: Friction/Kinetic coefficient ~ uniform lower 0.1 upper 0.3; "
+    "N: Friction/Normal force ~ lognormal mean 1e4 cov 0.3; "
+    "N1: Friction/Normal force per displacement ~ uniform lower 0 upper 1e5; "
+    "vs: Friction/Stribeck velocity ~ uniform lower 0.01 upper 0.1; "
+    "v0: Friction/Belt velocity ~ uniform lower -0.01 upper 0.01; "
+    "e: Contact/Coefficient of restitution ~ uniform lower 0.5 upper 0.8; "
+    "kc: Contact/Stiffness ~ lognormal mean 5e9 cov 0.3";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Building 2/Floor masses", text_of(x[0]) + ", 1000"},
+                     {"Building 2/Storey stiffnesses", text_of(x[1]) + ", 3e6"},
+                     {"Friction/Static coefficient", text_of(x[2])},
+                     {"Friction/Kinetic coefficient", text_of(x[3])},
+                     {"Friction/Normal force", text_of(x[4])},
+                     {"Friction/Normal force per displacement", text_of(x[5])},
+                     {"Friction/Stribeck velocity", text_of(x[6])},
+                     {"Friction/Belt velocity", text_of(x[7])},
+                     {"Contact/Coefficient of restitution", text_of(x[8])},
+                     {"Contact/Stiffness", text_of(x[9])}};
+  };
+  BOOST_TEST(compare_with_rebuilt(shear_pair, friction_pair(variables), values, 4) > 0u);
+}
+
+// A given stick stiffness (its dashpot 2 sqrt(k_s M_ii) follows it and the
+// sampled mass) and the normal force's velocity terms; the regularized
+// law's velocity.
+BOOST_AUTO_TEST_CASE(random_stick_stiffness_and_normal_force_terms)
+{
+  const std::string variables =
+    "ks: Friction/Stick stiffness ~ lognormal mean 1e9 cov 0.3; "
+    "m: Building 2/Floor masses[1] ~ lognormal mean 1000 cov 0.2; "
+    "N2: Friction/Normal force per velocity ~ uniform lower -2e3 upper 0; "
+    "N3: Friction/Normal force per velocity cubed ~ uniform lower 0 upper 1e4";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Friction/Stick stiffness", text_of(x[0])},
+                     {"Building 2/Floor masses", text_of(x[1]) + ", 1000"},
+                     {"Friction/Normal force per velocity", text_of(x[2])},
+                     {"Friction/Normal force per velocity cubed", text_of(x[3])}};
+  };
+  compare_with_rebuilt(shear_pair, friction_pair(variables), values, 4);
+  const std::string regularized = "eps: Friction/Regularization velocity ~ uniform lower 1e-3 "
+                                  "upper 1e-2";
+  compare_with_rebuilt(shear_pair,
+                       friction_pair(regularized, {{"Friction/Model", "regularized"}}),
+                       [](const std::vector<double> &x) {
+                         return Overrides{{"Friction/Regularization velocity", text_of(x[0])}};
+                       },
+                       2);
+}
+
+// Compliant foundations of the 2D shear pair: building 1's from the soil by
+// Gazetas' formulas (shear-wave velocity, density, Poisson ratio,
+// embedment: every spring, dashpot and the inertias follow), building 2's
+// typed (a spring, a dashpot alone: no new M, K) and both masses.
+BOOST_AUTO_TEST_CASE(random_foundations)
+{
+  const std::string variables =
+    "vs: Building 1/Foundation/Shear-wave velocity ~ lognormal mean 200 cov 0.2; "
+    "nu: Building 1/Foundation/Poisson ratio ~ uniform lower 0.25 upper 0.4; "
+    "rho: Building 1/Foundation/Soil density ~ uniform lower 1600 upper 2000; "
+    "d: Building 1/Foundation/Embedment ~ uniform lower 0 upper 1; "
+    "m0: Building 1/Foundation/Mass ~ lognormal mean 2000 cov 0.2; "
+    "kh: Building 2/Foundation/Horizontal stiffness ~ lognormal mean 1e8 cov 0.3; "
+    "cr: Building 2/Foundation/Rocking damping ~ uniform lower 5e5 upper 2e6; "
+    "i0: Building 2/Foundation/Rotary inertia ~ uniform lower 3e3 upper 8e3";
+  const Overrides base = {{"Building 1/Foundation/Type", "gazetas"},
+                          {"Building 1/Foundation/Shear-wave velocity", "200"},
+                          {"Building 1/Foundation/Soil density", "1800"},
+                          {"Building 1/Foundation/Poisson ratio", "0.3"},
+                          {"Building 1/Foundation/Length", "6"},
+                          {"Building 1/Foundation/Width", "6"},
+                          {"Building 1/Foundation/Embedment", "0.5"},
+                          {"Building 1/Foundation/Mass", "2000"},
+                          {"Building 1/Foundation/Rotary inertia", "1e4"},
+                          {"Building 2/Foundation/Type", "given"},
+                          {"Building 2/Foundation/Horizontal stiffness", "1e8"},
+                          {"Building 2/Foundation/Rocking stiffness", "1e9"},
+                          {"Building 2/Foundation/Horizontal damping", "1e5"},
+                          {"Building 2/Foundation/Rocking damping", "1e6"},
+                          {"Building 2/Foundation/Mass", "1000"},
+                          {"Building 2/Foundation/Rotary inertia", "5e3"},
+                          {"Random parameters/Correlation", ""},
+                          {"Random parameters/Limit states", ""},
+                          {"Random parameters/Variables", variables}};
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Foundation/Shear-wave velocity", text_of(x[0])},
+                     {"Building 1/Foundation/Poisson ratio", text_of(x[1])},
+                     {"Building 1/Foundation/Soil density", text_of(x[2])},
+                     {"Building 1/Foundation/Embedment", text_of(x[3])},
+                     {"Building 1/Foundation/Mass", text_of(x[4])},
+                     {"Building 2/Foundation/Horizontal stiffness", text_of(x[5])},
+                     {"Building 2/Foundation/Rocking damping", text_of(x[6])},
+                     {"Building 2/Foundation/Rotary inertia", text_of(x[7])}};
+  };
+  compare_with_rebuilt(shear_pair, base, values, 4);
+}
+
+// 3D foundations: the frame's on Wolf's cones (a vertical spring too), the
+// torsionally coupled building's typed (a 3D spring, a 3D dashpot, the
+// polar inertia).
+BOOST_AUTO_TEST_CASE(random_3d_foundations)
+{
+  const std::string variables =
+    "vs: Building 1/Foundation/Shear-wave velocity ~ lognormal mean 250 cov 0.2; "
+    "kt: Building 2/Foundation/Torsional stiffness ~ lognormal mean 5e9 cov 0.3; "
+    "crx: Building 2/Foundation/Rocking damping x ~ uniform lower 1e6 upper 5e6; "
+    "j0: Building 2/Foundation/Polar inertia ~ uniform lower 1e5 upper 3e5";
+  const Overrides base = {{"Building 1/Foundation/Type", "cone"},
+                          {"Building 1/Foundation/Shear-wave velocity", "250"},
+                          {"Building 1/Foundation/Soil density", "1800"},
+                          {"Building 1/Foundation/Poisson ratio", "0.3"},
+                          {"Building 1/Foundation/Length", "7"},
+                          {"Building 1/Foundation/Width", "6"},
+                          {"Building 1/Foundation/Mass", "5e4"},
+                          {"Building 1/Foundation/Rotary inertia", "2e5"},
+                          {"Building 1/Foundation/Rotary inertia x", "2e5"},
+                          {"Building 1/Foundation/Polar inertia", "3e5"},
+                          {"Building 2/Foundation/Type", "given"},
+                          {"Building 2/Foundation/Horizontal stiffness", "2e9"},
+                          {"Building 2/Foundation/Horizontal stiffness y", "2e9"},
+                          {"Building 2/Foundation/Rocking stiffness", "3e10"},
+                          {"Building 2/Foundation/Rocking stiffness x", "3e10"},
+                          {"Building 2/Foundation/Torsional stiffness", "5e9"},
+                          {"Building 2/Foundation/Horizontal damping", "1e7"},
+                          {"Building 2/Foundation/Horizontal damping y", "1e7"},
+                          {"Building 2/Foundation/Rocking damping", "3e6"},
+                          {"Building 2/Foundation/Rocking damping x", "3e6"},
+                          {"Building 2/Foundation/Torsional damping", "1e6"},
+                          {"Building 2/Foundation/Mass", "4e4"},
+                          {"Building 2/Foundation/Rotary inertia", "1.5e5"},
+                          {"Building 2/Foundation/Rotary inertia x", "1.5e5"},
+                          {"Building 2/Foundation/Polar inertia", "2e5"},
+                          {"Random parameters/Variables", variables}};
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Foundation/Shear-wave velocity", text_of(x[0])},
+                     {"Building 2/Foundation/Torsional stiffness", text_of(x[1])},
+                     {"Building 2/Foundation/Rocking damping x", text_of(x[2])},
+                     {"Building 2/Foundation/Polar inertia", text_of(x[3])}};
+  };
+  compare_with_rebuilt(pair_3d, base, values, 3);
+}
+
+// What a realization cannot vary, with the reason: geometry (the nodes, the
+// numbering), an entry the model's Type does not use, a law without it.
+BOOST_AUTO_TEST_CASE(refused_paths_say_why)
+{
+  const InputParameters input    = read_parameters(pair_3d);
+  const Analysis        analysis = prepare_analysis(input);
+  const auto            origins  = std::make_shared<const std::vector<HingeOrigin>>(
+    hinge_origins(analysis.model, input.model));
+  const auto inputs = std::make_shared<const ModelInputs>(ModelInputs{input.model, input.contact});
+  const auto refused = [&](const std::string &path, const std::string &reason) {
+    try
+      {
+        model_parameter(path, analysis.model, origins, inputs);
+        BOOST_ERROR("'" << path << "' was accepted");
+      }
+    catch (const std::invalid_argument &e)
+      {
+        BOOST_TEST_MESSAGE(e.what());
+        BOOST_TEST(std::string(e.what()).find(reason) != std::string::npos, e.what());
+      }
+  };
+  refused("Building 1/Bay widths y", "geometry");
+  refused("Building 1/Plan/Mass eccentricity", "geometry");
+  refused("Building 2/Plan/Plan dimensions", "geometry");
+  refused("Building 1/Set-backs", "geometry");
+  refused("Building 1/Column Q", "not a parameter");
+  refused("Building 1/Column E[3]", "storeys 1..2");
+  refused("Building 2/Group E[1]", "not a mesh building");
+  refused("Building 1/Foundation/Mass", "no compliant foundation");
+  refused("Contact/Coefficient of restitution", "does not come from the restitution");
+  refused("Friction/Belt velocity", "no friction surfaces");
+  refused("Building 1/Hinges/Yield moment", "3D frame 'F' cannot be random yet");
+  // without the input, what the builder maps from it cannot follow
+  BOOST_CHECK_THROW(model_parameter("Building 2/Floor masses", analysis.model, origins),
+                    std::invalid_argument);
+  const ModelParameter iz =
+    model_parameter("Building 1/Beam Iz[2]", analysis.model, origins, inputs);
+  BOOST_TEST(model_parameter_value(iz, analysis.model) == 1.1e-3);
+  BOOST_TEST(iz.enters_mass()); // the rotary inertia rho I, rho = m / A
+  BOOST_TEST(!model_parameter("Building 1/Column J", analysis.model, origins, inputs).enters_mass());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
