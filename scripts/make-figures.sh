@@ -18,6 +18,9 @@
 #                           about a minute)
 #   separation-spectrum.png poundfe separation input/separation-spectrum.prm (response spectrum)
 #   pounding-hazard.png     poundfe separation input/separation-hazard.prm (site hazard)
+#   3d-torsional-pair-plan.png, 3d-torsional-shear-pair-plan.png
+#                           poundfe run input/3d-torsional-pair.prm and
+#                           input/3d-torsional-shear-pair.prm (impacts in plan)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 poundfe=build/poundfe
@@ -67,3 +70,8 @@ cp "$work/separation-spectrum/separation.png" doc/figures/separation-spectrum.pn
 "$poundfe" separation input/separation-hazard.prm --output "$work/separation-hazard" > /dev/null
 cp "$work/separation-hazard/pounding_hazard.png" doc/figures/pounding-hazard.png
 ls -l doc/figures
+
+for example in 3d-torsional-pair 3d-torsional-shear-pair; do
+  "$poundfe" run "input/$example.prm" --output "$work/$example" > /dev/null
+  cp "$work/$example/impacts_plan.png" "doc/figures/$example-plan.png"
+done

@@ -60,6 +60,12 @@ namespace poundfe
 
       std::string name() const override { return base->name(); }
 
+      double
+      agreed_seconds(const double seconds) const override
+      {
+        return base->agreed_seconds(seconds);
+      }
+
     private:
       std::unique_ptr<LinearSolver> base;
       std::vector<double>           d; // scale * weights

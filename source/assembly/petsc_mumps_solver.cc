@@ -125,6 +125,14 @@ namespace poundfe
         return "petsc-mumps";
       }
 
+      double
+      agreed_seconds(const double seconds) const override
+      {
+        double largest = seconds;
+        MPI_Allreduce(&seconds, &largest, 1, MPI_DOUBLE, MPI_MAX, communicator);
+        return largest;
+      }
+
     private:
       /// This rank's block of rows [first_row, end_row): contiguous, about
       /// n / P rows each, as PETSc would split them.

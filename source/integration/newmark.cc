@@ -581,9 +581,9 @@ namespace poundfe
     const auto started = std::chrono::steady_clock::now();
     solve_with_assembled_tangent(L, L.frozen_d, reuse, b, x);
     L.frozen_factorised = true;
-    if (!reuse)
-      L.factorization_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (!reuse) // one number on every rank (LinearSolver::agreed_seconds)
+      L.factorization_seconds = L.solver->agreed_seconds(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
   }
 
   bool
@@ -630,7 +630,8 @@ namespace poundfe
     // last increment, and this solve
     const auto end = std::chrono::steady_clock::now();
     if (it > 0 && stats.refactorizations == factorizations)
-      iteration_seconds = std::chrono::duration<double>(end - last_increment_end).count();
+      iteration_seconds =
+        L.solver->agreed_seconds(std::chrono::duration<double>(end - last_increment_end).count());
     last_increment_end = end;
     return true;
   }

@@ -37,6 +37,18 @@ namespace poundfe
       return false;
     }
     virtual std::string name() const = 0;
+    /// The largest of `seconds` over the processes that share this solver:
+    /// a collective call where the backend spreads one solve over the MPI
+    /// ranks (petsc-mumps), so that the costs the `auto` nonlinear solver
+    /// compares are one number on every rank. Clock times differ between
+    /// ranks; ranks that chose differently whether to refactorise would wait
+    /// for each other in different collective calls for ever. The local
+    /// value for a backend on one process.
+    virtual double
+    agreed_seconds(const double seconds) const
+    {
+      return seconds;
+    }
 
     void
     analyze_and_factorize(const SparseMatrix &matrix)
