@@ -20,6 +20,7 @@
 #include <limits>
 #include <regex>
 #include <stdexcept>
+#include <type_traits>
 
 namespace poundfe
 {
@@ -349,17 +350,6 @@ namespace poundfe
         }
     }
 
-    /// The hinges of building b.
-    std::vector<Hinge *>
-    hinges_of(Model &model, const unsigned int b)
-    {
-      std::vector<Hinge *> result;
-      for (Hinge &h : model.hinges)
-        if (h.building == b)
-          result.push_back(&h);
-      return result;
-    }
-
     /// The origin of `hinge` (an element of model.hinges) under `p`.
     const HingeOrigin &
     origin_of(const ModelParameter &p, const Model &model, const Hinge &hinge)
@@ -434,6 +424,46 @@ namespace poundfe
              length_of(member);
     }
 
+    /// A hinge of a building, of a 2D frame (model.hinges) or of a 3D one
+    /// (model.hinges_3d, one per bending axis): its law, the index of its
+    /// origin (HingeOrigin: those of model.hinges, then of hinges_3d) and
+    /// 6 E I / L of its member about its axis (k / factor in the builder).
+    template <typename Law> // BoucWenParameters, const or not
+    struct BuildingHinge
+    {
+      Law         *law;
+      unsigned int origin;
+      double       section_stiffness;
+    };
+
+    /// The hinges of building b, 2D and 3D (of a const model: read only).
+    template <typename ModelType>
+    auto
+    hinges_of(ModelType &model, const unsigned int b)
+    {
+      using Law = std::remove_reference_t<decltype((model.hinges.front().law))>;
+      std::vector<BuildingHinge<Law>> result;
+      for (unsigned int h = 0; h < model.hinges.size(); ++h)
+        if (model.hinges[h].building == b)
+          result.push_back({&model.hinges[h].law, h, section_stiffness(model, model.hinges[h])});
+      for (unsigned int h = 0; h < model.hinges_3d.size(); ++h)
+        if (model.hinges_3d[h].building == b)
+          result.push_back({&model.hinges_3d[h].law, unsigned(model.hinges.size() + h),
+                            section_stiffness_3d(model, model.hinges_3d[h])});
+      return result;
+    }
+
+    /// The origin of a hinge of hinges_of under `p`.
+    template <typename Law>
+    const HingeOrigin &
+    origin_of(const ModelParameter &p, const Model &model, const BuildingHinge<Law> &hinge)
+    {
+      Assert(p.hinges && p.hinges->size() == model.hinges.size() + model.hinges_3d.size(),
+             dealii::ExcMessage("a hinge parameter needs the hinges' origins"));
+      (void)model; // for the Assert
+      return (*p.hinges)[hinge.origin];
+    }
+
     /// The section value of the named 3D members; a hinge whose k is
     /// f 6 E I / L of its member keeps its f (as write_member_section).
     void
@@ -504,10 +534,10 @@ namespace poundfe
     void
     write_bouc_wen_shape(const ModelParameter &p, const double value, Model &model)
     {
-      for (Hinge *hinge : hinges_of(model, p.building))
+      for (const auto &hinge : hinges_of(model, p.building))
         {
-          hinge->law.*p.shape = value;
-          require_bouc_wen_shape(p, hinge->law);
+          hinge.law->*p.shape = value;
+          require_bouc_wen_shape(p, *hinge.law);
         }
       for (StoreyLink &link : model.links)
         if (link.building == p.building && link.hysteretic)
@@ -525,23 +555,23 @@ namespace poundfe
       switch (p.kind)
         {
           case Kind::hinge_yield_moment:
-            for (Hinge *hinge : hinges_of(model, p.building))
-              hinge->law.yield_deformation = value / hinge->law.stiffness;
+            for (const auto &hinge : hinges_of(model, p.building))
+              hinge.law->yield_deformation = value / hinge.law->stiffness;
             return;
           case Kind::hinge_stiffness:
-            for (Hinge *hinge : hinges_of(model, p.building))
-              set_hinge_stiffness(*hinge, origin_of(p, model, *hinge), value);
+            for (const auto &hinge : hinges_of(model, p.building))
+              set_hinge_stiffness(*hinge.law, origin_of(p, model, hinge), value);
             return;
           case Kind::hinge_stiffness_factor:
-            for (Hinge *hinge : hinges_of(model, p.building))
-              if (origin_of(p, model, *hinge).stiffness_from_section)
-                set_hinge_stiffness(*hinge, origin_of(p, model, *hinge),
-                                    value * section_stiffness(model, *hinge));
+            for (const auto &hinge : hinges_of(model, p.building))
+              if (origin_of(p, model, hinge).stiffness_from_section)
+                set_hinge_stiffness(*hinge.law, origin_of(p, model, hinge),
+                                    value * hinge.section_stiffness);
             return;
           case Kind::hinge_yield_rotation:
-            for (Hinge *hinge : hinges_of(model, p.building))
-              if (!origin_of(p, model, *hinge).yield_from_moment)
-                hinge->law.yield_deformation = value;
+            for (const auto &hinge : hinges_of(model, p.building))
+              if (!origin_of(p, model, hinge).yield_from_moment)
+                hinge.law->yield_deformation = value;
             return;
           case Kind::rayleigh_a0:
             damping.a0 = value;
@@ -807,21 +837,18 @@ namespace poundfe
         throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
                                     known_paths + ")");
       bool any = false, from_section = false, from_rotation = false;
-      for (const Hinge &h : model.hinges)
-        if (h.building == p.building)
+      for (unsigned int h = 0; h < model.hinges.size() + model.hinges_3d.size(); ++h)
+        if ((h < model.hinges.size() ? model.hinges[h].building :
+                                       model.hinges_3d[h - model.hinges.size()].building) ==
+            p.building)
           {
             any = true;
             if (p.hinges)
               {
-                from_section  = from_section || origin_of(p, model, h).stiffness_from_section;
-                from_rotation = from_rotation || !origin_of(p, model, h).yield_from_moment;
+                from_section  = from_section || (*p.hinges)[h].stiffness_from_section;
+                from_rotation = from_rotation || !(*p.hinges)[h].yield_from_moment;
               }
           }
-      if (!any && std::any_of(model.hinges_3d.begin(), model.hinges_3d.end(),
-                              [&](const Hinge3D &h) { return h.building == p.building; }))
-        throw std::invalid_argument("'" + p.path + "': the hinges of 3D frame '" + name +
-                                    "' cannot be random yet (their k follows a random Column "
-                                    "or Beam E, I, Iz)");
       if (!any)
         throw std::invalid_argument("'" + p.path + "': building '" + name + "' has no hinges");
       if (p.hinges && p.kind == Kind::hinge_stiffness_factor && !from_section)
@@ -1066,23 +1093,22 @@ namespace poundfe
     double
     hinge_or_storey_value(const ModelParameter &p, const Model &model)
     {
-      for (const Hinge &h : model.hinges)
-        if (h.building == p.building)
-          switch (p.kind)
-            {
-              case Kind::hinge_stiffness:
-                return h.law.stiffness;
-              case Kind::hinge_stiffness_factor:
-                if (origin_of(p, model, h).stiffness_from_section)
-                  return h.law.stiffness / section_stiffness(model, h);
-                break;
-              case Kind::hinge_yield_rotation:
-                if (!origin_of(p, model, h).yield_from_moment)
-                  return h.law.yield_deformation;
-                break;
-              default:
-                return h.law.*p.shape;
-            }
+      for (const auto &h : hinges_of(model, p.building))
+        switch (p.kind)
+          {
+            case Kind::hinge_stiffness:
+              return h.law->stiffness;
+            case Kind::hinge_stiffness_factor:
+              if (origin_of(p, model, h).stiffness_from_section)
+                return h.law->stiffness / h.section_stiffness;
+              break;
+            case Kind::hinge_yield_rotation:
+              if (!origin_of(p, model, h).yield_from_moment)
+                return h.law->yield_deformation;
+              break;
+            default:
+              return h.law->*p.shape;
+          }
       for (const StoreyLink &l : model.links)
         if (l.building == p.building && l.hysteretic && p.kind == Kind::bouc_wen_shape)
           return l.hysteresis.*p.shape;
@@ -1248,9 +1274,8 @@ namespace poundfe
         case Kind::floor_mass:
           return floor_mass(model, *named_floors(p, model).front());
         case Kind::hinge_yield_moment:
-          for (const Hinge &h : model.hinges)
-            if (h.building == p.building)
-              return h.law.yield_deformation * h.law.stiffness;
+          for (const auto &h : hinges_of(model, p.building))
+            return h.law->yield_deformation * h.law->stiffness;
           break;
         case Kind::damping_ratio:
           return model.buildings[p.building].damping.damping_ratio;

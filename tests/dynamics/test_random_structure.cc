@@ -300,6 +300,26 @@ BOOST_AUTO_TEST_CASE(random_3d_foundations)
   compare_with_rebuilt(pair_3d, base, values, 3);
 }
 
+// The hinges of a 3D frame (both bending axes at every hinged member end):
+// their yield moment and their stiffness factor k = f 6 E I / L (u_y = M_y / k
+// follows both), with the section's E of the ground storey random too, so
+// that k follows E and f at once.
+BOOST_AUTO_TEST_CASE(random_3d_frame_hinges)
+{
+  const std::string variables =
+    "My: Building 1/Hinges/Yield moment ~ lognormal mean 1.5e5 cov 0.25; "
+    "f: Building 1/Hinges/Stiffness factor ~ uniform lower 5 upper 20; "
+    "E1: Building 1/Column E[1] ~ lognormal mean 3e10 cov 0.15";
+  const Overrides base = {{"Building 1/Hinges/Stiffness factor", "10"},
+                          {"Random parameters/Variables", variables}};
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Hinges/Yield moment", text_of(x[0])},
+                     {"Building 1/Hinges/Stiffness factor", text_of(x[1])},
+                     {"Building 1/Column E", list_with(x[2], 0, 2, "3e10")}};
+  };
+  compare_with_rebuilt(pair_3d, base, values, 4);
+}
+
 // What a realization cannot vary, with the reason: geometry (the nodes, the
 // numbering), an entry the model's Type does not use, a law without it.
 BOOST_AUTO_TEST_CASE(refused_paths_say_why)
@@ -331,7 +351,7 @@ BOOST_AUTO_TEST_CASE(refused_paths_say_why)
   refused("Building 1/Foundation/Mass", "no compliant foundation");
   refused("Contact/Coefficient of restitution", "does not come from the restitution");
   refused("Friction/Belt velocity", "no friction surfaces");
-  refused("Building 1/Hinges/Yield moment", "3D frame 'F' cannot be random yet");
+  refused("Building 2/Hinges/Yield moment", "has no hinges");
   // without the input, what the builder maps from it cannot follow
   BOOST_CHECK_THROW(model_parameter("Building 2/Floor masses", analysis.model, origins),
                     std::invalid_argument);
