@@ -245,6 +245,10 @@ namespace poundfe
     const std::string st = "Ground motion/Stochastic/";
     if (!(vertical_ratio >= 0 && vertical_ratio <= 1e3))
       input.fail(st + "Vertical ratio", "must be a number in [0, 1000]");
+    if (has_vertical() && is_stochastic() && vertical_ratio == 0)
+      input.fail(st + "Vertical ratio", "0 gives a vertical component of zero, although "
+                                        "Components = 3 asks for one: give a positive ratio "
+                                        "or set Components = 2");
     for (const char *entry : {"Vertical ratio", "Vertical seed"})
       if (input.line_of(st + entry) > 0 && !(has_vertical() && is_stochastic()))
         input.fail(st + entry, "is read only by a generated vertical component: it needs "

@@ -75,7 +75,7 @@ namespace poundfe
                       "reduced plan, e.g. '4: 0 1 0 0; 6: 1 1 0 0'. Unit: count.",
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Diaphragm", diaphragm,
-                      "[3D frame] rigid: each floor a rigid diaphragm, its joints slaved "
+                      "[3D frame, mesh] rigid: each floor a rigid diaphragm, its joints slaved "
                       "exactly to (ux, uy, rz) at the mass centre (which carries the floor "
                       "mass and polar moment; the joints carry the vertical mass); none: "
                       "every joint free, the floor mass in equal shares at the joints (no "

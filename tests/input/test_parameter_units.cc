@@ -143,7 +143,8 @@ BOOST_AUTO_TEST_CASE(building_entries_use_the_type_tags)
         const std::string tag = documentation.substr(0, documentation.find(']') + 1);
         BOOST_TEST((tag == "[frame]" || tag == "[shear]" || tag == "[mesh]" ||
                     tag == "[frame, shear]" || tag == "[frame, mesh]" || tag == "[3D]" ||
-                    tag == "[3D shear]" || tag == "[3D frame]" || tag == "[3D mesh]"),
+                    tag == "[3D shear]" || tag == "[3D frame]" || tag == "[3D mesh]" ||
+                    tag == "[3D frame, mesh]"),
                    path << ": tag " << tag);
         BOOST_TEST(path.rfind("Building 1/", 0) == 0u, path << " is tagged outside a building");
         ++n_tagged;
