@@ -23,11 +23,11 @@ fail() { echo "FAIL $*"; exit 1; }
 # (measured). 1e-8 leaves a factor of 300 for other machines and still
 # catches a wrong row, a lost entry or an unsynchronised step (O(1)).
 tolerance=1e-8
-same_trajectory() { # reference candidate label
+same_trajectory() { # reference candidate label [tolerance]
   for f in drift.csv floor_displacement.csv floor_acceleration.csv hinges.csv impacts.csv \
            contact_force.csv energy.csv; do
     [ -s "$1/$f" ] || fail "$3: no $f in the serial run"
-    python3 "$(dirname "$0")/same_trajectory.py" "$tolerance" "$1/$f" "$2/$f" > /dev/null || fail "$3: $f differs"
+    python3 "$(dirname "$0")/same_trajectory.py" "${4:-$tolerance}" "$1/$f" "$2/$f" > /dev/null || fail "$3: $f differs"
   done
 }
 with() { # file solver [tangent update]
@@ -64,7 +64,15 @@ done
 # ranks: the ranks must agree on them (LinearSolver::agreed_seconds), or one
 # refactorises while the other solves and both wait for ever. Two ranks with
 # a refactorised tangent against serial full Newton, both at Newton residual
-# tolerance 1e-11 and to 1e-8 of each column's peak (cli/nonlinear-solvers).
+# tolerance 1e-11. TOLERANCE_AUTO: here the two runs take different
+# iterations, not only different LU factors: where auto chose modified
+# Newton, a step stops just under the residual tolerance (linear
+# convergence) while full Newton's quadratic last iteration goes far below,
+# and which steps those are depends on the clocks. Measured up to 1.01e-8 of
+# a floor acceleration column's peak (a CI run on a loaded machine; each
+# method alone stays under 1e-8 in cli/nonlinear-solvers); 1e-7 leaves a
+# factor of 10 and still catches a rank that lost a step or a row (O(1)).
+tolerance_auto=1e-7
 sed -e "/^subsection Time integration/a\\  set Nonlinear solver = auto" \
     -e "/^subsection Time integration/a\\  set Newton residual tolerance = 1e-11" \
     "$work/mumps-refactorize.prm" > "$work/mumps-auto.prm"
@@ -74,7 +82,7 @@ sed -e "/^subsection Time integration/a\\  set Newton residual tolerance = 1e-11
 timeout 300 "$mpirun" -np 2 "$poundfe" run "$work/mumps-auto.prm" --output "$work/two-auto" > /dev/null \
   || fail "two ranks with Nonlinear solver = auto: exit $? (124: hung)"
 grep -q '"status": "completed"' "$work/two-auto/summary.json" || fail "two ranks, auto: not completed"
-same_trajectory "$work/serial-tight" "$work/two-auto" "petsc-mumps on two ranks, auto"
+same_trajectory "$work/serial-tight" "$work/two-auto" "petsc-mumps on two ranks, auto" "$tolerance_auto"
 echo "ok   mpirun -np 2, Nonlinear solver = auto: the ranks agree, full Newton's trajectory"
 
 sed '/^subsection Output/i\subsection Monte Carlo\n  set Realizations = 2\nend\n' "$input" > "$work/mc.prm"

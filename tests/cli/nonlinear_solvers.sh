@@ -12,7 +12,11 @@
 # (1e-11): at the default 1e-8 a linearly converging method stops nearer the
 # tolerance than Newton's quadratic last iteration, and full Newton itself
 # is 4e-8 of a column's peak from its own trajectory at 1e-11
-# (doc/verification.md).
+# (doc/verification.md). auto alone is compared at TOLERANCE_AUTO (1e-7):
+# it switches between methods by clock times, so which steps stop just
+# under the residual tolerance (linear convergence) changes with the load;
+# measured 1.2e-9 to 1.09e-8 of a column's peak on city-block-small (the
+# last under load); 1e-7 still catches a wrong step or row (O(1)).
 #   nonlinear_solvers.sh POUNDFE TESTS_CLI_DIR INPUT_DIR [TOLERANCE [NEWTON]]
 set -eu
 poundfe=$1 here=$2 input=$3 tolerance=${4:-1e-8} newton=${5:-1e-11}
@@ -49,7 +53,9 @@ while IFS='|' read -r model settings; do
     for csv in "$work/$name/newton"/*.csv; do
       scale=""
       [ "$(basename "$csv")" = energy.csv ] && scale=--common-scale
-      /usr/bin/python3 "$here/same_trajectory.py" $scale "$tolerance" "$csv" "$out/$(basename "$csv")" \
+      allowed=$tolerance
+      [ $variant = auto ] && allowed=1e-7
+      /usr/bin/python3 "$here/same_trajectory.py" $scale "$allowed" "$csv" "$out/$(basename "$csv")" \
         > /dev/null || fail "$name $variant: $(basename "$csv")"
     done
     echo "ok   $name $variant: $(counts "$out/summary.json")"
