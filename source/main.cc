@@ -97,6 +97,60 @@ namespace
     return line;
   }
 
+  /// The answer to a command line that runs no command (a bad option,
+  /// --version, --help, no or an unknown command): its exit status, after
+  /// printing what it says; nothing when a command is to run.
+  std::optional<int>
+  answer_without_command(const CommandLine &line, const poundfe::Command *command, std::ostream &err)
+  {
+    using namespace poundfe;
+    if (!line.error.empty())
+      {
+        err << line.error;
+        return 1;
+      }
+    if (line.version)
+      {
+        std::cout << "poundfe (git " << git_revision << "), deal.II " << DEAL_II_PACKAGE_VERSION
+                  << "\n";
+        return 0;
+      }
+    if (line.args.empty() || line.help)
+      {
+        (line.help ? std::cout : err) << usage_text();
+        return line.help ? 0 : 1;
+      }
+    if (command == nullptr)
+      {
+        err << "poundfe: error: unknown command '" << line.args[0] << "'\n" << usage_text();
+        return 1;
+      }
+    return std::nullopt;
+  }
+
+  /// Refuses (InputError at the entry's line) an input that asks for what
+  /// the command cannot do: a distributed linear solver on several ranks for
+  /// anything but `run` (the probabilistic commands give each rank its own
+  /// realizations), XDMF fields from a command that writes no fields.
+  void
+  check_command_takes_input(const poundfe::Command        &command,
+                            const poundfe::InputParameters &input,
+                            const bool                      several_ranks)
+  {
+    using namespace poundfe;
+    if (several_ranks && linear_solver_is_distributed(input.time_integration.linear_solver) &&
+        command.name != "run")
+      input.fail("Time integration/Linear solver",
+                 input.time_integration.linear_solver + " spreads one run over the MPI ranks: "
+                 "on more than one rank only 'run' can use it, not '" + command.name + "'");
+    // Only run (the frames) and modal (the modes) write fields.
+    if (input.output.field_format == FieldFormat::xdmf && command.name != "run" &&
+        command.name != "modal")
+      input.fail("Output/Field format",
+                 "xdmf chooses the field output of 'run' and 'modal'; '" + command.name +
+                   "' writes no fields (leave it at vtu)");
+  }
+
 } // namespace
 
 int
@@ -117,27 +171,8 @@ main(int argc, char **argv)
   // Every rank reads the same input and fails the same way: rank 0 speaks.
   const bool    root = !mpi || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ostream &err  = root ? std::cerr : silent;
-  if (!line.error.empty())
-    {
-      err << line.error;
-      return 1;
-    }
-  if (line.version)
-    {
-      std::cout << "poundfe (git " << git_revision << "), deal.II " << DEAL_II_PACKAGE_VERSION
-                << "\n";
-      return 0;
-    }
-  if (line.args.empty() || line.help)
-    {
-      (line.help ? std::cout : err) << usage_text();
-      return line.help ? 0 : 1;
-    }
-  if (command == nullptr)
-    {
-      err << "poundfe: error: unknown command '" << line.args[0] << "'\n" << usage_text();
-      return 1;
-    }
+  if (const std::optional<int> status = answer_without_command(line, command, err))
+    return *status;
   const std::vector<std::string> arguments(line.args.begin() + 1, line.args.end());
   if (!command->reads_parameters) // print-parameters, template
     return command->run({arguments, nullptr, line.output, 0, MPI_COMM_SELF, err, std::cout});
@@ -155,20 +190,8 @@ main(int argc, char **argv)
       const InputParameters input = read_parameters(arguments[0]);
       if (!mpi && linear_solver_needs_mpi(input.time_integration.linear_solver))
         mpi.emplace(argc, argv, 1);
-      // A distributed solver needs every rank in the same analysis: `run`
-      // (the probabilistic commands give each rank its own realizations).
-      if (mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
-          linear_solver_is_distributed(input.time_integration.linear_solver) &&
-          command->name != "run")
-        input.fail("Time integration/Linear solver",
-                   input.time_integration.linear_solver + " spreads one run over the MPI ranks: "
-                   "on more than one rank only 'run' can use it, not '" + command->name + "'");
-      // Only run (the frames) and modal (the modes) write fields.
-      if (input.output.field_format == FieldFormat::xdmf && command->name != "run" &&
-          command->name != "modal")
-        input.fail("Output/Field format",
-                   "xdmf chooses the field output of 'run' and 'modal'; '" + command->name +
-                     "' writes no fields (leave it at vtu)");
+      check_command_takes_input(*command, input,
+                                mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1);
       const std::string directory = line.output.empty() ? input.output.directory : line.output;
       const bool writes = !mpi || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const GuardedCommand guarded{
