@@ -14,12 +14,22 @@ of impacts.csv and realizations.csv; of each time series (every CSV whose
 first column is `time`) the rows at 41 evenly spaced row indices and the
 last row; the small per-storey CSVs (profiles) whole.
 
-Comparison (tolerance 1e-12 relative): two values agree when
-|a - b| <= 1e-12 * scale, where scale is the largest |value| of the same
-column (time series, tables) or the value itself (summary). A time series
-that starts at exactly zero would otherwise be compared to round-off on
-its first rows. Keys renamed on purpose are listed in RENAMED below, old
-name first, so a rename never hides a changed number.
+Comparison (tolerance 1e-8 relative): two values agree when
+|a - b| <= 1e-8 * scale, where scale is the largest |value| of the same
+column (time series, tables), of the same list (summary.json: e.g. the
+participating mass ratios of every mode) or the value itself (the other
+summary numbers). A time series that starts at exactly zero, or a mode's
+mass ratio of 1e-31 (zero), would otherwise be compared to round-off.
+The energy balance error, itself a round-off figure relative to the
+energy, is compared absolutely (|a - b| <= 1e-8).
+Why 1e-8 and not round-off: the digests must hold on every machine that
+runs CI. The CPU decides which libm and BLAS kernels run (FMA, AVX-512),
+which changes last bits, and impacts amplify them: the digests taken on
+one VM differed on another (an AMD EPYC with AVX-512) by up to 2.2e-9 of
+a column's peak (3d-torsional-pair, contact energy), everywhere else by
+less than 1e-12. A change of the engine's behaviour moves numbers by far
+more. Keys renamed on purpose are listed in RENAMED below, old name
+first, so a rename never hides a changed number.
 """
 import csv
 import json
@@ -28,7 +38,9 @@ import os
 import re
 import sys
 
-TOLERANCE = 1e-12
+TOLERANCE = 1e-8
+# figures that are themselves round-off: compared absolutely
+ABSOLUTE = re.compile(r"balance_error$")
 # Quantities of the clock or of the machine, not of the analysis.
 SKIPPED = re.compile(r"(wall_time|steps_per_second|realizations_per_second|set_up_time|"
                      r"\.input$|\.ranks$|realizations_run_now)")
@@ -145,8 +157,15 @@ def read(path):
 
 
 def column_of(key):
-    """The column a key belongs to: the key without its row."""
+    """The column a key belongs to: the key without its row; for a number
+    of summary.json in a list, the list."""
+    if key.startswith("summary:"):
+        return re.sub(r"\.\d+$", "", key)
     return re.sub(r"(@t=[^:]*|:\d+):", ":", key, count=1)
+
+
+def in_list(key):
+    return key.startswith("summary:") and re.search(r"\.\d+$", key) is not None
 
 
 def compare(reference_path, actual_path):
@@ -162,7 +181,7 @@ def compare(reference_path, actual_path):
     actual = read(actual_path)
     scale = {}
     for key, value in reference.items():
-        if not key.startswith("summary:"):
+        if not key.startswith("summary:") or in_list(key):
             c = column_of(key)
             scale[c] = max(scale.get(c, 0.0), abs(value))
     problems = []
@@ -171,10 +190,17 @@ def compare(reference_path, actual_path):
             problems.append(f"missing {key}")
             continue
         got = actual[key]
-        s = abs(expected) if key.startswith("summary:") else scale[column_of(key)]
+        if key.startswith("summary:") and not in_list(key):
+            s = abs(expected)
+        else:
+            s = scale[column_of(key)]
+        if ABSOLUTE.search(key):
+            s, expected_scale = 1.0, 0.0
+        else:
+            expected_scale = abs(expected)
         if got == expected or (math.isnan(expected) and math.isnan(got)):
             continue
-        if not abs(got - expected) <= TOLERANCE * max(s, abs(expected)):
+        if not abs(got - expected) <= TOLERANCE * max(s, expected_scale):
             problems.append(f"{key}: {got!r} instead of {expected!r} "
                             f"(difference {abs(got - expected) / max(s, 1e-300):.3g} relative)")
     for message in problems[:20]:
