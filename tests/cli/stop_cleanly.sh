@@ -20,6 +20,14 @@ no_temporaries() {
   [ -z "$(find "$1" -name '*.tmp')" ] || fail "$1: temporary files left: $(find "$1" -name '*.tmp')"
 }
 
+# Whether process <pid> has a handler for SIGTERM (15: bit 14 of the
+# SigCgt mask in /proc/<pid>/status).
+catches_sigterm() {
+  local mask
+  mask=$(sed -n 's/^SigCgt:[[:space:]]*//p' "/proc/$1/status" 2> /dev/null)
+  [ -n "$mask" ] && (((16#$mask >> 14) & 1))
+}
+
 # <name> <seconds> <command...>: run it into $work/<name> (after a quick
 # ground-motion there, whose files must go), SIGTERM it after <seconds>
 interrupt() {
@@ -29,6 +37,16 @@ interrupt() {
     fail "$name: the first command failed"
   "$@" --output "$d" > "$d.log" 2>&1 &
   local job=$!
+  # Mid-command means after its start: once it catches SIGTERM (its
+  # handlers are in place). A signal during the program's start-up (~0.3 s
+  # of loading libraries, several seconds on a loaded machine) ends it by
+  # the default action before it touched anything, which is not what this
+  # test is about (a CI run under load sent it there after 1.5 s).
+  local waited=0
+  until catches_sigterm "$job" || ! kill -0 "$job" 2> /dev/null || [ "$waited" -ge 600 ]; do
+    sleep 0.1
+    waited=$((waited + 1))
+  done
   sleep "$after"
   kill -0 "$job" 2> /dev/null || fail "$name: finished before the signal; give it a longer input"
   kill -TERM "$job"
