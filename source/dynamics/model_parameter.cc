@@ -1032,6 +1032,11 @@ namespace poundfe
           p.kind = entry == "Storey stiffnesses" ? Kind::storey_stiffness :
                    entry == "Storey damping"     ? Kind::storey_damping :
                                                    Kind::storey_yield_drift;
+          if (std::any_of(model.plane_links.begin(), model.plane_links.end(),
+                          [&](const PlaneLink &l) { return l.building == p.building; }))
+            throw std::invalid_argument("'" + p.path + "': the storeys of building '" + name +
+                                        "' are resisting planes in 3D, which cannot be random "
+                                        "yet (its Bouc-Wen shape and floor masses can)");
           if (storeys.empty())
             throw std::invalid_argument("'" + p.path + "': building '" + name +
                                         "' is not a shear building (no storey springs)");

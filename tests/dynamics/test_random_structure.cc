@@ -506,6 +506,7 @@ BOOST_AUTO_TEST_CASE(refused_paths_say_why)
   refused("Building 2/Bouc-Wen/alpha", "no Bouc-Wen hinges");
   refused("Building 1/Plan/Polar moments", "has no Plan/Polar moments");
   refused("Building 2/Plan/Polar moments[3]", "floors 1..2");
+  refused("Building 2/Storey stiffnesses[1]", "resisting planes in 3D");
   // without the input, what the builder maps from it cannot follow
   BOOST_CHECK_THROW(model_parameter("Building 2/Floor masses", analysis.model, origins),
                     std::invalid_argument);
