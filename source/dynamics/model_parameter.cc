@@ -243,12 +243,26 @@ namespace poundfe
       return p.entry < 0 ? all : std::vector<unsigned int>{all.at(p.entry)};
     }
 
-    /// Indices in model.links of the storeys `p` names (all, or one).
+    /// Indices in model.links of the storeys `p` names (all, or one; none
+    /// of a 3D shear building, whose storeys are planes: named_planes).
     std::vector<unsigned int>
     named_storeys(const ModelParameter &p, const Model &model)
     {
       const std::vector<unsigned int> all = storeys_of(model, p.building);
-      return p.entry < 0 ? all : std::vector<unsigned int>{all.at(p.entry)};
+      return p.entry < 0 || all.empty() ? all : std::vector<unsigned int>{all.at(p.entry)};
+    }
+
+    /// The resisting planes of building b (a 3D shear building) in the storey
+    /// `p` names (all, or one).
+    template <typename ModelType> // of a const model: read only
+    auto
+    named_planes(const ModelParameter &p, ModelType &model)
+    {
+      std::vector<decltype(&model.plane_links.front())> result;
+      for (auto &link : model.plane_links)
+        if (link.building == p.building && (p.entry < 0 || int(link.storey) == p.entry + 1))
+          result.push_back(&link);
+      return result;
     }
 
     /// Floors of building b that `p` names (all, or one).
@@ -652,6 +666,8 @@ namespace poundfe
             require_in_range(p, value);
             for (const unsigned int l : named_storeys(p, model))
               model.links[l].stiffness = model.links[l].hysteresis.stiffness = value;
+            for (PlaneLink *plane : named_planes(p, model)) // 3D: four planes, k/2 each
+              plane->stiffness = plane->hysteresis.stiffness = 0.5 * value;
             return;
           case Kind::storey_damping:
             require_in_range(p, value);
@@ -662,6 +678,8 @@ namespace poundfe
             require_in_range(p, value);
             for (const unsigned int l : named_storeys(p, model))
               model.links[l].hysteresis.yield_deformation = value;
+            for (PlaneLink *plane : named_planes(p, model))
+              plane->hysteresis.yield_deformation = value;
             return;
           case Kind::floor_mass:
             require_in_range(p, value);
@@ -733,6 +751,36 @@ namespace poundfe
         throw std::invalid_argument("'" + path + "': the model has buildings 1.." +
                                     std::to_string(model.buildings.size()));
       return b - 1;
+    }
+
+    /// "Storey stiffnesses[i]" or "Storey yield drifts[i]" of a 3D shear
+    /// building whose planes are the default four per storey (Plan/Resisting
+    /// planes not typed): k/2 on each plane (plan_builder.cc's storey_planes),
+    /// u_y of each; it has no storey dashpots.
+    ModelParameter
+    plane_storey_parameter(ModelParameter p, const Model &model)
+    {
+      const Building &building = model.buildings[p.building];
+      if (p.kind == Kind::storey_damping)
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' is a 3D shear building, whose storeys have no dashpots");
+      if (!p.inputs)
+        throw std::invalid_argument("'" + p.path + "' needs the input the model was built "
+                                    "from (whether its resisting planes are typed)");
+      if (!p.inputs->model.buildings[p.building].plan.planes.empty())
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has its Plan/Resisting planes typed (each with its k "
+                                    "and u_y), which the storey entries do not set");
+      if (p.entry >= int(building.floors.size()))
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has storeys 1.." + std::to_string(building.floors.size()));
+      if (p.kind == Kind::storey_yield_drift)
+        for (const PlaneLink *link : named_planes(p, model))
+          if (!link->hysteretic)
+            throw std::invalid_argument("'" + p.path + "': a storey of building '" +
+                                        building.name + "' is elastic (no yield drift in the "
+                                        "input)");
+      return p;
     }
 
     /// Whether the floors `p` names can take a sampled mass: a mass at
@@ -1034,9 +1082,7 @@ namespace poundfe
                                                    Kind::storey_yield_drift;
           if (std::any_of(model.plane_links.begin(), model.plane_links.end(),
                           [&](const PlaneLink &l) { return l.building == p.building; }))
-            throw std::invalid_argument("'" + p.path + "': the storeys of building '" + name +
-                                        "' are resisting planes in 3D, which cannot be random "
-                                        "yet (its Bouc-Wen shape and floor masses can)");
+            return plane_storey_parameter(p, model);
           if (storeys.empty())
             throw std::invalid_argument("'" + p.path + "': building '" + name +
                                         "' is not a shear building (no storey springs)");
@@ -1360,10 +1406,14 @@ namespace poundfe
     switch (p.kind)
       {
         case Kind::storey_stiffness:
+          if (!model.plane_links.empty() && !named_planes(p, model).empty()) // 3D: k/2 a plane
+            return 2 * named_planes(p, model).front()->stiffness;
           return model.links[named_storeys(p, model).front()].stiffness;
         case Kind::storey_damping:
           return model.links[named_storeys(p, model).front()].damping;
         case Kind::storey_yield_drift:
+          if (!model.plane_links.empty() && !named_planes(p, model).empty())
+            return named_planes(p, model).front()->hysteresis.yield_deformation;
           return model.links[named_storeys(p, model).front()].hysteresis.yield_deformation;
         case Kind::floor_mass:
           return floor_mass(model, *named_floors(p, model).front());

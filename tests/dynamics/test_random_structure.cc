@@ -444,6 +444,34 @@ BOOST_AUTO_TEST_CASE(random_3d_bouc_wen)
                        2);
 }
 
+// The storeys of a 3D shear building (its default four resisting planes
+// per storey, k/2 each, hysteretic): the stiffness of storey 1, then of
+// every storey, the yield drift of storey 2 (K, the modes of no one: it
+// has given Rayleigh coefficients; the planes' laws).
+BOOST_AUTO_TEST_CASE(random_3d_shear_storeys)
+{
+  const std::string variables =
+    "k1: Building 2/Storey stiffnesses[1] ~ lognormal mean 4e7 cov 0.2; "
+    "uy2: Building 2/Storey yield drifts[2] ~ uniform lower 0.002 upper 0.005; "
+    "k: Building 2/Storey stiffnesses ~ lognormal mean 3e7 cov 0.2";
+  const Overrides planes = {{"Building 2/Storey yield drifts", "0.004, 0.003"},
+                            {"Random parameters/Variables", variables}};
+  compare_with_rebuilt(pair_3d, planes, [](const std::vector<double> &x) {
+    // k of every storey written after k1: the file's two storeys both x[2]
+    return Overrides{{"Building 2/Storey stiffnesses", text_of(x[2]) + ", " + text_of(x[2])},
+                     {"Building 2/Storey yield drifts", "0.004, " + text_of(x[1])}};
+  }, 3);
+  const std::string first = "k1: Building 2/Storey stiffnesses[1] ~ lognormal mean 4e7 cov 0.2";
+  compare_with_rebuilt(pair_3d,
+                       {{"Building 2/Storey yield drifts", "0.004, 0.003"},
+                        {"Random parameters/Variables", first}},
+                       [](const std::vector<double> &x) {
+                         return Overrides{
+                           {"Building 2/Storey stiffnesses", text_of(x[0]) + ", 3e7"}};
+                       },
+                       2);
+}
+
 // Typed polar moments: the generated 3D frame's floor 2 (one typed value
 // for both floors), every floor of the shear building (with its floor
 // masses random too: the typed polar moment stays), then the 3D mesh's
@@ -506,7 +534,8 @@ BOOST_AUTO_TEST_CASE(refused_paths_say_why)
   refused("Building 2/Bouc-Wen/alpha", "no Bouc-Wen hinges");
   refused("Building 1/Plan/Polar moments", "has no Plan/Polar moments");
   refused("Building 2/Plan/Polar moments[3]", "floors 1..2");
-  refused("Building 2/Storey stiffnesses[1]", "resisting planes in 3D");
+  refused("Building 2/Storey damping[1]", "no dashpots");
+  refused("Building 2/Storey yield drifts", "is elastic");
   // without the input, what the builder maps from it cannot follow
   BOOST_CHECK_THROW(model_parameter("Building 2/Floor masses", analysis.model, origins),
                     std::invalid_argument);
@@ -519,7 +548,8 @@ BOOST_AUTO_TEST_CASE(refused_paths_say_why)
 
 // The same on the 3D mesh: its members' shear areas (not entries), a group
 // it does not have, degradation of a bidirectional law, n < 2 for it
-// (its range), the polar moment of joints without a rigid slab.
+// (its range), the polar moment of joints without a rigid slab, the
+// storey entries of a 3D shear building whose planes are typed.
 BOOST_AUTO_TEST_CASE(refused_3d_mesh_paths_say_why)
 {
   const auto check = [](const Overrides &extra,
@@ -557,6 +587,10 @@ BOOST_AUTO_TEST_CASE(refused_3d_mesh_paths_say_why)
          {"Building 1/Plan/Polar moments", "1e6, 1e6"},
          {"Contact/Law", "none"}},
         {{"Building 1/Plan/Polar moments[1]", "no rigid slabs"}});
+  check({{"Building 2/Plan/Resisting planes",
+          "0 -2.5 0 2e7 0.004; 0 2.5 0 2e7 0.004; -3 0 90 2e7 0.004; 3 0 90 2e7 0.004"}},
+        {{"Building 2/Storey stiffnesses[1]", "Resisting planes typed"},
+         {"Building 2/Storey yield drifts", "Resisting planes typed"}});
 }
 
 // Hostile sampled values on the new paths: -1, 0 (where a value must be

@@ -43,6 +43,9 @@
 //     Building b/Group E|G|A|I|Iz|J|mass per length[i]
 //                                        the same of a 3D mesh building (I is Iy; its
 //                                        hinges' k = f 6 E I_y|z / L follows)
+//     Building b/Storey stiffnesses[i], Storey yield drifts[i] of a 3D shear
+//                                        building: k/2 and u_y of each of the default
+//                                        four planes of storey i (K; nonlinear)
 //     Building b/Plan/Polar moments[i]   the typed polar moment of floor i of a 3D
 //                                        building with rigid slabs (M; the modes,
 //                                        Rayleigh and modal C, K_G under P-Delta)
