@@ -1,7 +1,9 @@
 // Random parameters that the model builder maps before they reach M, K, C
 // or an element (dynamics/model_parameter.h, issue 24): the sections of a
-// 3D frame (its hinges' k = f 6 E I / L follows E, Iy, Iz) and of a 2D mesh
-// building's groups, 3D floor masses (the polar moment m (Lx^2 + Ly^2)/12
+// 3D frame (its hinges' k = f 6 E I / L follows E, Iy, Iz) and of a 2D or
+// 3D mesh building's groups, the Bouc-Wen shape of 3D hinges (uniaxial and
+// biaxial) and resisting planes, a 3D shear building's storeys (its planes'
+// k/2 and u_y), typed polar moments, 3D floor masses (the polar moment m (Lx^2 + Ly^2)/12
 // follows the mass, a typed one stays), masses with friction elements (the
 // stick dashpot 2 sqrt(k_s M_ii) follows), the friction law's entries, the
 // contact restitution (the damping calibrated again) and compliant
@@ -601,12 +603,14 @@ BOOST_AUTO_TEST_CASE(refused_3d_mesh_paths_say_why)
 // as not completed), never a crash or a hang.
 BOOST_AUTO_TEST_CASE(hostile_values_on_3d_paths)
 {
-  const Overrides typed = {{"Building 1/Plan/Polar moments", "1.2e6, 9e5"}};
+  const Overrides typed = {{"Building 1/Plan/Polar moments", "1.2e6, 9e5"},
+                           {"Building 2/Storey yield drifts", "0.004, 0.003"}};
   for (const std::string path :
        {"Building 1/Group E[1]", "Building 1/Group G", "Building 1/Group A[2]",
         "Building 1/Group I", "Building 1/Group Iz", "Building 1/Group J",
         "Building 1/Group mass per length", "Building 1/Plan/Polar moments[1]",
-        "Building 2/Plan/Polar moments", "Building 1/Bouc-Wen/A", "Building 1/Bouc-Wen/n"})
+        "Building 2/Plan/Polar moments", "Building 1/Bouc-Wen/A", "Building 1/Bouc-Wen/n",
+        "Building 2/Storey stiffnesses[1]", "Building 2/Storey yield drifts"})
     {
       const InputParameters input =
         read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1e308 upper "
