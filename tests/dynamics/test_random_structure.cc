@@ -485,6 +485,7 @@ BOOST_AUTO_TEST_CASE(random_polar_moments)
     "J2: Building 2/Plan/Polar moments ~ uniform lower 1.5e5 upper 4e5; "
     "m2: Building 2/Floor masses[1] ~ lognormal mean 5e4 cov 0.2";
   const Overrides frame = {{"Building 1/Plan/Polar moments", "5e5"},
+                           {"Model/Geometric nonlinearity", "p-delta"},
                            {"Random parameters/Variables", variables}};
   compare_with_rebuilt(pair_3d, frame, [](const std::vector<double> &x) {
     return Overrides{{"Building 1/Plan/Polar moments", "5e5, " + text_of(x[0])},
