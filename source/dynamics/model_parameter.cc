@@ -38,7 +38,8 @@ namespace poundfe
       "Building b/Bouc-Wen/alpha (A, beta, gamma, n, delta A, delta nu, delta eta), "
       "Building b/Damping/a0, Building b/Damping/a1, Building b/Damping/Modal ratios[i], "
       "3D frames: Building b/Column E[i] (G, A, I, Iz, J, Avy, Avz, mass per length), Building "
-      "b/Beam E[i] (the same), meshes: Building b/Group E[i] (A, I, mass per length), Building "
+      "b/Beam E[i] (the same), meshes: Building b/Group E[i] (A, I, mass per length; 3D: G, "
+      "Iz, J too), 3D: Building b/Plan/Polar moments[i] (typed ones), Building "
       "b/Foundation/ENTRY (Shear-wave velocity, Soil density, Poisson ratio, Length, Width, "
       "Embedment, Horizontal stiffness, Rocking stiffness, Vertical stiffness, their dampings, "
       "Mass, Rotary inertia; 3D: the y, x and torsional ones, Rotary inertia x, Polar inertia), "
@@ -242,12 +243,26 @@ namespace poundfe
       return p.entry < 0 ? all : std::vector<unsigned int>{all.at(p.entry)};
     }
 
-    /// Indices in model.links of the storeys `p` names (all, or one).
+    /// Indices in model.links of the storeys `p` names (all, or one; none
+    /// of a 3D shear building, whose storeys are planes: named_planes).
     std::vector<unsigned int>
     named_storeys(const ModelParameter &p, const Model &model)
     {
       const std::vector<unsigned int> all = storeys_of(model, p.building);
-      return p.entry < 0 ? all : std::vector<unsigned int>{all.at(p.entry)};
+      return p.entry < 0 || all.empty() ? all : std::vector<unsigned int>{all.at(p.entry)};
+    }
+
+    /// The resisting planes of building b (a 3D shear building) in the storey
+    /// `p` names (all, or one).
+    template <typename ModelType> // of a const model: read only
+    auto
+    named_planes(const ModelParameter &p, ModelType &model)
+    {
+      std::vector<decltype(&model.plane_links.front())> result;
+      for (auto &link : model.plane_links)
+        if (link.building == p.building && (p.entry < 0 || int(link.storey) == p.entry + 1))
+          result.push_back(&link);
+      return result;
     }
 
     /// Floors of building b that `p` names (all, or one).
@@ -350,6 +365,15 @@ namespace poundfe
         }
     }
 
+    /// The building of hinge h in the order of HingeOrigin: model.hinges,
+    /// then model.hinges_3d.
+    unsigned int
+    hinge_building(const Model &model, const unsigned int h)
+    {
+      return h < model.hinges.size() ? model.hinges[h].building :
+                                       model.hinges_3d[h - model.hinges.size()].building;
+    }
+
     /// The origin of `hinge` (an element of model.hinges) under `p`.
     const HingeOrigin &
     origin_of(const ModelParameter &p, const Model &model, const Hinge &hinge)
@@ -385,10 +409,13 @@ namespace poundfe
              member.member_length;
     }
 
-    /// Whether `member` is one `p` names: a column of storey i (group 2i - 1)
-    /// or a beam of floor i (group 2i) of its building, or all of them.
+    /// Whether `member` (a Member or a Member3D) is one `p` names: a column
+    /// of storey i (group 2i - 1) or a beam of floor i (group 2i) of its
+    /// generated frame, or a member of a mesh's group `p.group`; without
+    /// [i], all of them.
+    template <typename MemberType>
     bool
-    named_member(const ModelParameter &p, const Member &member)
+    named_member(const ModelParameter &p, const MemberType &member)
     {
       if (member.building != p.building)
         return false;
@@ -396,15 +423,6 @@ namespace poundfe
         return p.entry < 0 || int(member.group) == p.group;
       const int group = 2 * p.entry + (p.member_kind == MemberKind::column ? 1 : 2);
       return member.kind == p.member_kind && (p.entry < 0 || int(member.group) == group);
-    }
-
-    /// The same for a 3D frame's members (the same groups 2i - 1, 2i).
-    bool
-    named_member_3d(const ModelParameter &p, const Member3D &member)
-    {
-      const int group = 2 * p.entry + (p.member_kind == MemberKind::column ? 1 : 2);
-      return member.building == p.building && member.kind == p.member_kind &&
-             (p.entry < 0 || int(member.group) == group);
     }
 
     double
@@ -453,6 +471,37 @@ namespace poundfe
       return result;
     }
 
+    /// The Bouc-Wen laws of building b: its hinges' (2D; 3D: one per bending
+    /// axis), its hysteretic storeys' and its hysteretic resisting planes'
+    /// (a 3D shear building's; of a const model: read only).
+    template <typename ModelType>
+    auto
+    bouc_wen_laws_of(ModelType &model, const unsigned int b)
+    {
+      std::vector<decltype(hinges_of(model, b).front().law)> laws;
+      for (const auto &hinge : hinges_of(model, b))
+        laws.push_back(hinge.law);
+      for (auto &link : model.links)
+        if (link.building == b && link.hysteretic)
+          laws.push_back(&link.hysteresis);
+      for (auto &link : model.plane_links)
+        if (link.building == b && link.hysteretic)
+          laws.push_back(&link.hysteresis);
+      return laws;
+    }
+
+    /// Whether building b has a bidirectional (Park-Wen-Ang) Bouc-Wen law:
+    /// biaxial 3D hinges or paired resisting planes; that law needs n >= 2
+    /// and has no degradation (laws/bidirectional_bouc_wen.h).
+    bool
+    has_bidirectional_bouc_wen(const Model &model, const unsigned int b)
+    {
+      return std::any_of(model.hinges_3d.begin(), model.hinges_3d.end(),
+                         [b](const Hinge3D &h) { return h.building == b && h.biaxial; }) ||
+             std::any_of(model.plane_links.begin(), model.plane_links.end(),
+                         [b](const PlaneLink &l) { return l.building == b && l.partner >= 0; });
+    }
+
     /// The origin of a hinge of hinges_of under `p`.
     template <typename Law>
     const HingeOrigin &
@@ -479,7 +528,7 @@ namespace poundfe
       for (unsigned int h = 0; h < model.hinges_3d.size(); ++h)
         {
           Hinge3D &hinge = model.hinges_3d[h];
-          if (bending && named_member_3d(p, model.members_3d[hinge.member]) &&
+          if (bending && named_member(p, model.members_3d[hinge.member]) &&
               (*p.hinges)[model.hinges.size() + h].stiffness_from_section)
             {
               following.push_back(&hinge);
@@ -487,7 +536,7 @@ namespace poundfe
             }
         }
       for (Member3D &member : model.members_3d)
-        if (named_member_3d(p, member))
+        if (named_member(p, member))
           member.section.*p.section_3d = value;
       for (std::size_t h = 0; h < following.size(); ++h)
         set_hinge_stiffness(following[h]->law,
@@ -534,17 +583,11 @@ namespace poundfe
     void
     write_bouc_wen_shape(const ModelParameter &p, const double value, Model &model)
     {
-      for (const auto &hinge : hinges_of(model, p.building))
+      for (BoucWenParameters *law : bouc_wen_laws_of(model, p.building))
         {
-          hinge.law->*p.shape = value;
-          require_bouc_wen_shape(p, *hinge.law);
+          law->*p.shape = value;
+          require_bouc_wen_shape(p, *law);
         }
-      for (StoreyLink &link : model.links)
-        if (link.building == p.building && link.hysteretic)
-          {
-            link.hysteresis.*p.shape = value;
-            require_bouc_wen_shape(p, link.hysteresis);
-          }
     }
 
     /// The parameters of a building's hinges and its damping coefficients.
@@ -623,6 +666,8 @@ namespace poundfe
             require_in_range(p, value);
             for (const unsigned int l : named_storeys(p, model))
               model.links[l].stiffness = model.links[l].hysteresis.stiffness = value;
+            for (PlaneLink *plane : named_planes(p, model)) // 3D: four planes, k/2 each
+              plane->stiffness = plane->hysteresis.stiffness = 0.5 * value;
             return;
           case Kind::storey_damping:
             require_in_range(p, value);
@@ -633,10 +678,19 @@ namespace poundfe
             require_in_range(p, value);
             for (const unsigned int l : named_storeys(p, model))
               model.links[l].hysteresis.yield_deformation = value;
+            for (PlaneLink *plane : named_planes(p, model))
+              plane->hysteresis.yield_deformation = value;
             return;
           case Kind::floor_mass:
             require_in_range(p, value);
             write_floor_masses(p, value, model);
+            return;
+          case Kind::polar_moment:
+            require_in_range(p, value);
+            for (const Floor *floor : named_floors(p, model))
+              for (NodalMass &m : model.masses)
+                if (m.node == floor->nodes.front()) // the slab's node (model_parameter())
+                  m.polar_moment = value;
             return;
           case Kind::damping_ratio:
             require_in_range(p, value);
@@ -699,6 +753,36 @@ namespace poundfe
       return b - 1;
     }
 
+    /// "Storey stiffnesses[i]" or "Storey yield drifts[i]" of a 3D shear
+    /// building whose planes are the default four per storey (Plan/Resisting
+    /// planes not typed): k/2 on each plane (plan_builder.cc's storey_planes),
+    /// u_y of each; it has no storey dashpots.
+    ModelParameter
+    plane_storey_parameter(ModelParameter p, const Model &model)
+    {
+      const Building &building = model.buildings[p.building];
+      if (p.kind == Kind::storey_damping)
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' is a 3D shear building, whose storeys have no dashpots");
+      if (!p.inputs)
+        throw std::invalid_argument("'" + p.path + "' needs the input the model was built "
+                                    "from (whether its resisting planes are typed)");
+      if (!p.inputs->model.buildings[p.building].plan.planes.empty())
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has its Plan/Resisting planes typed (each with its k "
+                                    "and u_y), which the storey entries do not set");
+      if (p.entry >= int(building.floors.size()))
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has storeys 1.." + std::to_string(building.floors.size()));
+      if (p.kind == Kind::storey_yield_drift)
+        for (const PlaneLink *link : named_planes(p, model))
+          if (!link->hysteretic)
+            throw std::invalid_argument("'" + p.path + "': a storey of building '" +
+                                        building.name + "' is elastic (no yield drift in the "
+                                        "input)");
+      return p;
+    }
+
     /// Whether the floors `p` names can take a sampled mass: a mass at
     /// every joint; in 3D the input (whether Plan/Polar moments is typed).
     void
@@ -719,6 +803,16 @@ namespace poundfe
                                         building.name + "' has no floor mass in the input");
     }
 
+    /// A 3D section entry needs the hinges' origins (its hinges' k follows
+    /// E and I as the builder set it).
+    void
+    require_hinge_origins(const ModelParameter &p, const Model &model)
+    {
+      if (!p.hinges || p.hinges->size() != model.hinges.size() + model.hinges_3d.size())
+        throw std::invalid_argument("'" + p.path + "': a 3D section needs the hinges' "
+                                    "origins (hinge_origins)");
+    }
+
     /// "Column E[i]" ... "Beam mass per length[i]" of a 3D frame (`which`:
     /// the word after Column or Beam).
     ModelParameter
@@ -730,9 +824,7 @@ namespace poundfe
       if (found == section_3d_entries.end())
         throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
                                     known_paths + ")");
-      if (!p.hinges || p.hinges->size() != model.hinges.size() + model.hinges_3d.size())
-        throw std::invalid_argument("'" + p.path + "': a 3D frame's section needs the hinges' "
-                                    "origins (hinge_origins)");
+      require_hinge_origins(p, model);
       p.kind        = Kind::member_section_3d;
       p.member_kind = column ? MemberKind::column : MemberKind::beam;
       p.section_3d  = found->second;
@@ -740,22 +832,27 @@ namespace poundfe
     }
 
     /// "Group E[i]" ... "Group mass per length[i]" of a mesh building: the
-    /// members of its i-th group id.
+    /// members of its i-th group id (3D: Group G, Iz and J too; its
+    /// members have no shear areas, Euler-Bernoulli).
     ModelParameter
     mesh_section_parameter(ModelParameter p, const std::string &which, const Model &model)
     {
       const Building &building = model.buildings[p.building];
+      const bool      three_d  = model.dimension == 3;
       const auto      found    = std::find_if(section_entries.begin(), section_entries.end(),
                                       [&](const auto &e) { return e.first == which; });
-      if (found == section_entries.end())
+      const auto found_3d = std::find_if(section_3d_entries.begin(), section_3d_entries.end(),
+                                         [&](const auto &e) { return e.first == which; });
+      if (three_d ? found_3d == section_3d_entries.end() : found == section_entries.end())
         throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
                                     known_paths + ")");
       if (building.type != BuildingType::mesh)
         throw std::invalid_argument("'" + p.path + "': building '" + building.name +
                                     "' is not a mesh building (Type = mesh)");
-      if (model.dimension == 3) // its members are 3D ones, of other sections
-        throw std::invalid_argument("'" + p.path + "': the groups of a 3D mesh building "
-                                    "cannot be random yet (those of a 2D mesh can)");
+      if (which == "Avy" || which == "Avz")
+        throw std::invalid_argument("'" + p.path + "': the members of a 3D mesh building have "
+                                    "no shear areas (Euler-Bernoulli; Group " + which +
+                                    " is no entry)");
       if (!p.inputs)
         throw std::invalid_argument("'" + p.path + "': a mesh group needs the input the "
                                     "model was built from (its Group ids)");
@@ -763,10 +860,45 @@ namespace poundfe
       if (p.entry >= int(ids.size()))
         throw std::invalid_argument("'" + p.path + "': building '" + building.name +
                                     "' has groups 1.." + std::to_string(ids.size()));
-      p.kind        = Kind::member_section;
       p.member_kind = MemberKind::other;
       p.group       = p.entry < 0 ? -1 : int(ids[p.entry]);
-      p.section     = found->second;
+      if (three_d)
+        {
+          require_hinge_origins(p, model);
+          p.kind       = Kind::member_section_3d;
+          p.section_3d = found_3d->second;
+          return p;
+        }
+      p.kind    = Kind::member_section;
+      p.section = found->second;
+      return p;
+    }
+
+    /// "Plan/Polar moments[i]" of a 3D building whose input types them (a
+    /// polar moment not typed follows its floor's mass, as Floor masses
+    /// does), on a rigid slab (one node per floor carries its mass).
+    ModelParameter
+    polar_moment_parameter(ModelParameter p, const Model &model)
+    {
+      const Building &building = model.buildings[p.building];
+      p.kind                   = Kind::polar_moment;
+      if (model.dimension != 3)
+        throw std::invalid_argument("'" + p.path + "' is an entry of a 3D building "
+                                    "(Model/Dimension = 3)");
+      if (!p.inputs)
+        throw std::invalid_argument("'" + p.path + "' needs the input the model was built "
+                                    "from (whether its polar moments are typed)");
+      if (p.inputs->model.buildings[p.building].plan.polar_moments.empty())
+        throw std::invalid_argument(
+          "'" + p.path + "': building '" + building.name + "' has no Plan/Polar moments: its "
+          "floors' polar moments follow their masses (vary Floor masses, or type Plan/Polar "
+          "moments to make them random)");
+      check_floor_masses(p, model);
+      for (const Floor *floor : named_floors(p, model))
+        if (floor->nodes.size() != 1)
+          throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                      "' has no rigid slabs (Diaphragm = none): each joint "
+                                      "carries its share of the floor mass, no polar moment");
       return p;
     }
 
@@ -838,9 +970,7 @@ namespace poundfe
                                     known_paths + ")");
       bool any = false, from_section = false, from_rotation = false;
       for (unsigned int h = 0; h < model.hinges.size() + model.hinges_3d.size(); ++h)
-        if ((h < model.hinges.size() ? model.hinges[h].building :
-                                       model.hinges_3d[h - model.hinges.size()].building) ==
-            p.building)
+        if (hinge_building(model, h) == p.building)
           {
             any = true;
             if (p.hinges)
@@ -870,18 +1000,21 @@ namespace poundfe
       if (found == bouc_wen_entries.end())
         throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
                                     known_paths + ")");
-      const bool hysteretic =
-        std::any_of(model.hinges.begin(), model.hinges.end(),
-                    [&](const Hinge &h) { return h.building == p.building; }) ||
-        std::any_of(model.links.begin(), model.links.end(), [&](const StoreyLink &l) {
-          return l.building == p.building && l.hysteretic;
-        });
-      if (!hysteretic)
-        throw std::invalid_argument("'" + p.path + "': building '" +
-                                    model.buildings[p.building].name +
-                                    "' has no Bouc-Wen hinges or storeys in a 2D model");
-      p.kind  = Kind::bouc_wen_shape;
-      p.shape = found->second;
+      const std::string &name = model.buildings[p.building].name;
+      if (bouc_wen_laws_of(model, p.building).empty())
+        throw std::invalid_argument("'" + p.path + "': building '" + name +
+                                    "' has no Bouc-Wen hinges, hysteretic storeys or "
+                                    "hysteretic resisting planes");
+      p.kind          = Kind::bouc_wen_shape;
+      p.shape         = found->second;
+      p.bidirectional = has_bidirectional_bouc_wen(model, p.building);
+      if (p.bidirectional &&
+          (p.shape == &BoucWenParameters::delta_A || p.shape == &BoucWenParameters::delta_nu ||
+           p.shape == &BoucWenParameters::delta_eta))
+        throw std::invalid_argument("'" + p.path + "': the Bouc-Wen law of building '" + name +
+                                    "' is bidirectional (Hinges/Biaxial interaction = true or "
+                                    "Plan/Storey law = bidirectional Bouc-Wen), which has no "
+                                    "degradation");
       return p;
     }
 
@@ -947,6 +1080,9 @@ namespace poundfe
           p.kind = entry == "Storey stiffnesses" ? Kind::storey_stiffness :
                    entry == "Storey damping"     ? Kind::storey_damping :
                                                    Kind::storey_yield_drift;
+          if (std::any_of(model.plane_links.begin(), model.plane_links.end(),
+                          [&](const PlaneLink &l) { return l.building == p.building; }))
+            return plane_storey_parameter(p, model);
           if (storeys.empty())
             throw std::invalid_argument("'" + p.path + "': building '" + name +
                                         "' is not a shear building (no storey springs)");
@@ -966,6 +1102,8 @@ namespace poundfe
           check_floor_masses(p, model);
           return p;
         }
+      if (entry == "Plan/Polar moments")
+        return polar_moment_parameter(p, model);
       if (entry.rfind("Column ", 0) == 0 || entry.rfind("Beam ", 0) == 0)
         return section_parameter(p, entry, model);
       if (entry.rfind("Group ", 0) == 0)
@@ -1025,7 +1163,7 @@ namespace poundfe
   ModelParameter::enters_matrices() const
   {
     return kind == Kind::storey_stiffness || kind == Kind::floor_mass ||
-           kind == Kind::member_section || kind == Kind::hinge_stiffness ||
+           kind == Kind::polar_moment || kind == Kind::member_section || kind == Kind::hinge_stiffness ||
            kind == Kind::hinge_stiffness_factor || kind == Kind::member_section_3d ||
            (kind == Kind::foundation_entry && foundation_matrices);
   }
@@ -1034,7 +1172,7 @@ namespace poundfe
   ModelParameter::enters_mass() const
   {
     // a 3D member's rotary inertias are rho I with rho = m / A
-    return kind == Kind::floor_mass ||
+    return kind == Kind::floor_mass || kind == Kind::polar_moment ||
            (kind == Kind::member_section && section == &Section::mass_per_length) ||
            (kind == Kind::member_section_3d && section_3d != &Section3D::youngs_modulus &&
             section_3d != &Section3D::shear_modulus && section_3d != &Section3D::torsion_constant &&
@@ -1062,8 +1200,8 @@ namespace poundfe
       {
         if (shape == &BoucWenParameters::alpha)
           return {0, true, 1};
-        if (shape == &BoucWenParameters::n)
-          return {1, true, infinity};
+        if (shape == &BoucWenParameters::n) // Park-Wen-Ang's interaction needs n >= 2
+          return {bidirectional ? 2.0 : 1.0, true, infinity};
         if (shape == &BoucWenParameters::beta || shape == &BoucWenParameters::gamma)
           return {-infinity, true, infinity}; // their sum and order are checked
         return {0, shape != &BoucWenParameters::A, infinity};
@@ -1093,6 +1231,11 @@ namespace poundfe
     double
     hinge_or_storey_value(const ModelParameter &p, const Model &model)
     {
+      if (p.kind == Kind::bouc_wen_shape)
+        {
+          const auto laws = bouc_wen_laws_of(model, p.building);
+          return laws.empty() ? 0 : laws.front()->*p.shape;
+        }
       for (const auto &h : hinges_of(model, p.building))
         switch (p.kind)
           {
@@ -1107,11 +1250,8 @@ namespace poundfe
                 return h.law->yield_deformation;
               break;
             default:
-              return h.law->*p.shape;
+              Assert(false, dealii::ExcInternalError());
           }
-      for (const StoreyLink &l : model.links)
-        if (l.building == p.building && l.hysteretic && p.kind == Kind::bouc_wen_shape)
-          return l.hysteresis.*p.shape;
       return 0;
     }
   } // namespace
@@ -1142,9 +1282,9 @@ namespace poundfe
                        const Model &model)
   {
     AssertDimension(origins.size(), model.hinges.size() + model.hinges_3d.size());
-    for (const ModelParameter &p : parameters)
-      for (unsigned int h = 0; h < model.hinges.size(); ++h)
-        if (model.hinges[h].building == p.building)
+    for (const ModelParameter &p : parameters) // the 2D hinges, then the 3D ones
+      for (unsigned int h = 0; h < origins.size(); ++h)
+        if (hinge_building(model, h) == p.building)
           {
             if (p.kind == Kind::hinge_stiffness)
               origins[h].stiffness_from_section = false;
@@ -1266,13 +1406,22 @@ namespace poundfe
     switch (p.kind)
       {
         case Kind::storey_stiffness:
+          if (!model.plane_links.empty() && !named_planes(p, model).empty()) // 3D: k/2 a plane
+            return 2 * named_planes(p, model).front()->stiffness;
           return model.links[named_storeys(p, model).front()].stiffness;
         case Kind::storey_damping:
           return model.links[named_storeys(p, model).front()].damping;
         case Kind::storey_yield_drift:
+          if (!model.plane_links.empty() && !named_planes(p, model).empty())
+            return named_planes(p, model).front()->hysteresis.yield_deformation;
           return model.links[named_storeys(p, model).front()].hysteresis.yield_deformation;
         case Kind::floor_mass:
           return floor_mass(model, *named_floors(p, model).front());
+        case Kind::polar_moment:
+          for (const NodalMass &m : model.masses)
+            if (m.node == named_floors(p, model).front()->nodes.front())
+              return m.polar_moment;
+          break;
         case Kind::hinge_yield_moment:
           for (const auto &h : hinges_of(model, p.building))
             return h.law->yield_deformation * h.law->stiffness;
@@ -1309,7 +1458,7 @@ namespace poundfe
           return model.buildings[p.building].damping.modal_ratios[std::max(p.entry, 0)];
         case Kind::member_section_3d:
           for (const Member3D &member : model.members_3d)
-            if (named_member_3d(p, member))
+            if (named_member(p, member))
               return member.section.*p.section_3d;
           break;
         case Kind::friction_entry:

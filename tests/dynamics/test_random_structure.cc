@@ -1,7 +1,9 @@
 // Random parameters that the model builder maps before they reach M, K, C
 // or an element (dynamics/model_parameter.h, issue 24): the sections of a
-// 3D frame (its hinges' k = f 6 E I / L follows E, Iy, Iz) and of a 2D mesh
-// building's groups, 3D floor masses (the polar moment m (Lx^2 + Ly^2)/12
+// 3D frame (its hinges' k = f 6 E I / L follows E, Iy, Iz) and of a 2D or
+// 3D mesh building's groups, the Bouc-Wen shape of 3D hinges (uniaxial and
+// biaxial) and resisting planes, a 3D shear building's storeys (its planes'
+// k/2 and u_y), typed polar moments, 3D floor masses (the polar moment m (Lx^2 + Ly^2)/12
 // follows the mass, a typed one stays), masses with friction elements (the
 // stick dashpot 2 sqrt(k_s M_ii) follows), the friction law's entries, the
 // contact restitution (the damping calibrated again) and compliant
@@ -25,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 using namespace poundfe;
@@ -320,6 +323,185 @@ BOOST_AUTO_TEST_CASE(random_3d_frame_hinges)
   compare_with_rebuilt(pair_3d, base, values, 4);
 }
 
+namespace
+{
+  /// Building 1 of the 3D pair as the L-shaped 3D mesh (meshes/frame3d-l.msh:
+  /// physical group 1 the columns, 2 the beams; floors at 3.5 and 6.5 m, as
+  /// building 2's with these storey heights), hinges at its column bases and
+  /// beam ends (k = 10 x 6 E I / L about each bending axis).
+  Overrides
+  mesh_3d_pair(const std::string &variables, const Overrides &extra = {})
+  {
+    Overrides o = {{"Building 1/Type", "mesh"},
+                   {"Building 1/Mesh file", "../../meshes/frame3d-l.msh"},
+                   {"Building 1/Group ids", "1, 2"},
+                   {"Building 1/Group E", "3e10, 3e10"},
+                   {"Building 1/Group G", "1.25e10, 1.25e10"},
+                   {"Building 1/Group A", "0.16, 0.12"},
+                   {"Building 1/Group I", "2.1e-3, 1.6e-3"},
+                   {"Building 1/Group Iz", "2.1e-3, 9e-4"},
+                   {"Building 1/Group J", "3.6e-3, 1.9e-3"},
+                   {"Building 1/Group mass per length", "400, 300"},
+                   {"Building 1/Hinges/Stiffness factor", "10"},
+                   {"Building 2/Storey heights", "3.5, 3"},
+                   {"Random parameters/Variables", variables}};
+    o.insert(o.end(), extra.begin(), extra.end());
+    return o;
+  }
+} // namespace
+
+// The groups of a 3D mesh building: E of the columns, G of both groups, Iy
+// of the beams, Iz of the columns, J of the beams, A of both, the beams'
+// mass per length (K, M with the rotary inertias rho I, the hinges' k = f
+// 6 E I_y|z / L about both bending axes), and a floor mass.
+BOOST_AUTO_TEST_CASE(random_3d_mesh_groups)
+{
+  const std::string variables =
+    "E: Building 1/Group E[1] ~ lognormal mean 3e10 cov 0.15; "
+    "G: Building 1/Group G ~ lognormal mean 1.25e10 cov 0.15; "
+    "I: Building 1/Group I[2] ~ lognormal mean 1.6e-3 cov 0.2; "
+    "Iz: Building 1/Group Iz[1] ~ lognormal mean 2.1e-3 cov 0.2; "
+    "J: Building 1/Group J[2] ~ lognormal mean 1.9e-3 cov 0.2; "
+    "A: Building 1/Group A ~ uniform lower 0.12 upper 0.18; "
+    "mb: Building 1/Group mass per length[2] ~ uniform lower 0 upper 600; "
+    "m: Building 1/Floor masses[2] ~ lognormal mean 6e4 cov 0.2";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Group E", text_of(x[0]) + ", 3e10"},
+                     {"Building 1/Group G", text_of(x[1]) + ", " + text_of(x[1])},
+                     {"Building 1/Group I", "2.1e-3, " + text_of(x[2])},
+                     {"Building 1/Group Iz", text_of(x[3]) + ", 9e-4"},
+                     {"Building 1/Group J", "3.6e-3, " + text_of(x[4])},
+                     {"Building 1/Group A", text_of(x[5]) + ", " + text_of(x[5])},
+                     {"Building 1/Group mass per length", "400, " + text_of(x[6])},
+                     {"Building 1/Floor masses", list_with(x[7], 1, 2, "6e4")}};
+  };
+  BOOST_TEST(compare_with_rebuilt(pair_3d, mesh_3d_pair(variables), values, 4) > 0u);
+}
+
+// The Bouc-Wen shape of 3D hinges (the generated frame's, uniaxial about
+// each bending axis, with degradation) and of a 3D shear building's
+// hysteretic resisting planes; a random Hinges/Stiffness makes k given,
+// so the column E sampled after it leaves k as it is (as the file does).
+// Then the bidirectional laws: the frame's biaxial hinges (Park-Wen-Ang)
+// and the shear building's paired planes, n >= 2.
+BOOST_AUTO_TEST_CASE(random_3d_bouc_wen)
+{
+  const std::string uniaxial =
+    "alpha: Building 1/Bouc-Wen/alpha ~ uniform lower 0.02 upper 0.2; "
+    "A: Building 1/Bouc-Wen/A ~ uniform lower 0.9 upper 1.1; "
+    "beta: Building 1/Bouc-Wen/beta ~ uniform lower 0.4 upper 0.7; "
+    "gamma: Building 1/Bouc-Wen/gamma ~ uniform lower 0.2 upper 0.5; "
+    "n: Building 1/Bouc-Wen/n ~ uniform lower 1 upper 3; "
+    "dA: Building 1/Bouc-Wen/delta A ~ uniform lower 0 upper 0.2; "
+    "k: Building 1/Hinges/Stiffness ~ lognormal mean 2e8 cov 0.3; "
+    "E1: Building 1/Column E[1] ~ lognormal mean 3e10 cov 0.15; "
+    "alpha2: Building 2/Bouc-Wen/alpha ~ uniform lower 0.02 upper 0.2; "
+    "n2: Building 2/Bouc-Wen/n ~ uniform lower 1 upper 3";
+  const Overrides planes = {{"Building 2/Storey yield drifts", "0.004, 0.003"},
+                            {"Random parameters/Variables", uniaxial}};
+  compare_with_rebuilt(pair_3d, planes, [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Bouc-Wen/alpha", text_of(x[0])},
+                     {"Building 1/Bouc-Wen/A", text_of(x[1])},
+                     {"Building 1/Bouc-Wen/beta", text_of(x[2])},
+                     {"Building 1/Bouc-Wen/gamma", text_of(x[3])},
+                     {"Building 1/Bouc-Wen/n", text_of(x[4])},
+                     {"Building 1/Bouc-Wen/delta A", text_of(x[5])},
+                     {"Building 1/Hinges/Stiffness", text_of(x[6])},
+                     {"Building 1/Column E", list_with(x[7], 0, 2, "3e10")},
+                     {"Building 2/Bouc-Wen/alpha", text_of(x[8])},
+                     {"Building 2/Bouc-Wen/n", text_of(x[9])}};
+  }, 3);
+
+  const std::string bidirectional =
+    "alpha: Building 1/Bouc-Wen/alpha ~ uniform lower 0.02 upper 0.2; "
+    "beta: Building 1/Bouc-Wen/beta ~ uniform lower 0.4 upper 0.7; "
+    "gamma: Building 1/Bouc-Wen/gamma ~ uniform lower 0.2 upper 0.5; "
+    "n: Building 1/Bouc-Wen/n ~ uniform lower 2 upper 4; "
+    "A: Building 1/Bouc-Wen/A ~ uniform lower 0.9 upper 1.1; "
+    "n2: Building 2/Bouc-Wen/n ~ uniform lower 2 upper 4; "
+    "beta2: Building 2/Bouc-Wen/beta ~ uniform lower 0.4 upper 0.7";
+  const Overrides biaxial = {{"Building 1/Hinges/Biaxial interaction", "true"},
+                             {"Building 2/Storey yield drifts", "0.004, 0.003"},
+                             {"Building 2/Plan/Storey law", "bidirectional Bouc-Wen"},
+                             {"Random parameters/Variables", bidirectional}};
+  compare_with_rebuilt(pair_3d, biaxial, [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Bouc-Wen/alpha", text_of(x[0])},
+                     {"Building 1/Bouc-Wen/beta", text_of(x[1])},
+                     {"Building 1/Bouc-Wen/gamma", text_of(x[2])},
+                     {"Building 1/Bouc-Wen/n", text_of(x[3])},
+                     {"Building 1/Bouc-Wen/A", text_of(x[4])},
+                     {"Building 2/Bouc-Wen/n", text_of(x[5])},
+                     {"Building 2/Bouc-Wen/beta", text_of(x[6])}};
+  }, 3);
+
+  // the 3D mesh's hinges, biaxial
+  const std::string mesh = "alpha: Building 1/Bouc-Wen/alpha ~ uniform lower 0.02 upper 0.2; "
+                           "n: Building 1/Bouc-Wen/n ~ uniform lower 2 upper 4";
+  compare_with_rebuilt(pair_3d,
+                       mesh_3d_pair(mesh, {{"Building 1/Hinges/Biaxial interaction", "true"}}),
+                       [](const std::vector<double> &x) {
+                         return Overrides{{"Building 1/Bouc-Wen/alpha", text_of(x[0])},
+                                          {"Building 1/Bouc-Wen/n", text_of(x[1])}};
+                       },
+                       2);
+}
+
+// The storeys of a 3D shear building (its default four resisting planes
+// per storey, k/2 each, hysteretic): the stiffness of storey 1, then of
+// every storey, the yield drift of storey 2 (K, the modes of no one: it
+// has given Rayleigh coefficients; the planes' laws).
+BOOST_AUTO_TEST_CASE(random_3d_shear_storeys)
+{
+  const std::string variables =
+    "k1: Building 2/Storey stiffnesses[1] ~ lognormal mean 4e7 cov 0.2; "
+    "uy2: Building 2/Storey yield drifts[2] ~ uniform lower 0.002 upper 0.005; "
+    "k: Building 2/Storey stiffnesses ~ lognormal mean 3e7 cov 0.2";
+  const Overrides planes = {{"Building 2/Storey yield drifts", "0.004, 0.003"},
+                            {"Random parameters/Variables", variables}};
+  compare_with_rebuilt(pair_3d, planes, [](const std::vector<double> &x) {
+    // k of every storey written after k1: the file's two storeys both x[2]
+    return Overrides{{"Building 2/Storey stiffnesses", text_of(x[2]) + ", " + text_of(x[2])},
+                     {"Building 2/Storey yield drifts", "0.004, " + text_of(x[1])}};
+  }, 3);
+  const std::string first = "k1: Building 2/Storey stiffnesses[1] ~ lognormal mean 4e7 cov 0.2";
+  compare_with_rebuilt(pair_3d,
+                       {{"Building 2/Storey yield drifts", "0.004, 0.003"},
+                        {"Random parameters/Variables", first}},
+                       [](const std::vector<double> &x) {
+                         return Overrides{
+                           {"Building 2/Storey stiffnesses", text_of(x[0]) + ", 3e7"}};
+                       },
+                       2);
+}
+
+// Typed polar moments: the generated 3D frame's floor 2 (one typed value
+// for both floors), every floor of the shear building (with its floor
+// masses random too: the typed polar moment stays), then the 3D mesh's
+// floor 1 (M; the frame's modes and Rayleigh C fitted at them again).
+BOOST_AUTO_TEST_CASE(random_polar_moments)
+{
+  const std::string variables =
+    "J1: Building 1/Plan/Polar moments[2] ~ lognormal mean 5e5 cov 0.3; "
+    "J2: Building 2/Plan/Polar moments ~ uniform lower 1.5e5 upper 4e5; "
+    "m2: Building 2/Floor masses[1] ~ lognormal mean 5e4 cov 0.2";
+  const Overrides frame = {{"Building 1/Plan/Polar moments", "5e5"},
+                           {"Model/Geometric nonlinearity", "p-delta"},
+                           {"Random parameters/Variables", variables}};
+  compare_with_rebuilt(pair_3d, frame, [](const std::vector<double> &x) {
+    return Overrides{{"Building 1/Plan/Polar moments", "5e5, " + text_of(x[0])},
+                     {"Building 2/Plan/Polar moments", text_of(x[1]) + ", " + text_of(x[1])},
+                     {"Building 2/Floor masses", list_with(x[2], 0, 2, "5e4")}};
+  }, 3);
+  const std::string mesh = "J: Building 1/Plan/Polar moments[1] ~ lognormal mean 1.2e6 cov 0.3";
+  compare_with_rebuilt(pair_3d,
+                       mesh_3d_pair(mesh, {{"Building 1/Plan/Polar moments", "1.2e6, 9e5"}}),
+                       [](const std::vector<double> &x) {
+                         return Overrides{
+                           {"Building 1/Plan/Polar moments", text_of(x[0]) + ", 9e5"}};
+                       },
+                       2);
+}
+
 // What a realization cannot vary, with the reason: geometry (the nodes, the
 // numbering), an entry the model's Type does not use, a law without it.
 BOOST_AUTO_TEST_CASE(refused_paths_say_why)
@@ -352,6 +534,11 @@ BOOST_AUTO_TEST_CASE(refused_paths_say_why)
   refused("Contact/Coefficient of restitution", "does not come from the restitution");
   refused("Friction/Belt velocity", "no friction surfaces");
   refused("Building 2/Hinges/Yield moment", "has no hinges");
+  refused("Building 2/Bouc-Wen/alpha", "no Bouc-Wen hinges");
+  refused("Building 1/Plan/Polar moments", "has no Plan/Polar moments");
+  refused("Building 2/Plan/Polar moments[3]", "floors 1..2");
+  refused("Building 2/Storey damping[1]", "no dashpots");
+  refused("Building 2/Storey yield drifts", "is elastic");
   // without the input, what the builder maps from it cannot follow
   BOOST_CHECK_THROW(model_parameter("Building 2/Floor masses", analysis.model, origins),
                     std::invalid_argument);
@@ -360,6 +547,108 @@ BOOST_AUTO_TEST_CASE(refused_paths_say_why)
   BOOST_TEST(model_parameter_value(iz, analysis.model) == 1.1e-3);
   BOOST_TEST(iz.enters_mass()); // the rotary inertia rho I, rho = m / A
   BOOST_TEST(!model_parameter("Building 1/Column J", analysis.model, origins, inputs).enters_mass());
+}
+
+// The same on the 3D mesh: its members' shear areas (not entries), a group
+// it does not have, degradation of a bidirectional law, n < 2 for it
+// (its range), the polar moment of joints without a rigid slab, the
+// storey entries of a 3D shear building whose planes are typed.
+BOOST_AUTO_TEST_CASE(refused_3d_mesh_paths_say_why)
+{
+  const auto check = [](const Overrides &extra,
+                        const std::vector<std::pair<std::string, std::string>> &paths) {
+    const InputParameters input    = read_parameters(pair_3d, mesh_3d_pair("", extra));
+    const Analysis        analysis = prepare_analysis(input);
+    const auto            origins  = std::make_shared<const std::vector<HingeOrigin>>(
+      hinge_origins(analysis.model, input.model));
+    const auto inputs =
+      std::make_shared<const ModelInputs>(ModelInputs{input.model, input.contact});
+    for (const auto &[path, reason] : paths)
+      try
+        {
+          model_parameter(path, analysis.model, origins, inputs);
+          BOOST_ERROR("'" << path << "' was accepted");
+        }
+      catch (const std::invalid_argument &e)
+        {
+          BOOST_TEST_MESSAGE(e.what());
+          BOOST_TEST(std::string(e.what()).find(reason) != std::string::npos, e.what());
+        }
+    return analysis;
+  };
+  const Analysis analysis =
+    check({{"Building 1/Hinges/Biaxial interaction", "true"}},
+          {{"Building 1/Group Avy", "no shear areas"},
+           {"Building 1/Group E[3]", "groups 1..2"},
+           {"Building 1/Group Q", "not a parameter"},
+           {"Building 1/Bouc-Wen/delta nu", "no degradation"},
+           {"Building 1/Plan/Polar moments", "has no Plan/Polar moments"}});
+  const ModelParameter n = model_parameter("Building 1/Bouc-Wen/n", analysis.model);
+  BOOST_TEST(n.range().lower == 2.0); // Park-Wen-Ang's interaction
+  BOOST_TEST(model_parameter_value(n, analysis.model) == 2.0);
+  check({{"Building 1/Diaphragm", "none"},
+         {"Building 1/Plan/Polar moments", "1e6, 1e6"},
+         {"Contact/Law", "none"}},
+        {{"Building 1/Plan/Polar moments[1]", "no rigid slabs"}});
+  check({{"Building 2/Plan/Resisting planes",
+          "0 -2.5 0 2e7 0.004; 0 2.5 0 2e7 0.004; -3 0 90 2e7 0.004; 3 0 90 2e7 0.004"}},
+        {{"Building 2/Storey stiffnesses[1]", "Resisting planes typed"},
+         {"Building 2/Storey yield drifts", "Resisting planes typed"}});
+}
+
+// Hostile sampled values on the new paths: -1, 0 (where a value must be
+// > 0), infinity and NaN are refused naming the path (exit 1 in the
+// commands); 1e308, in range, either gives a NumericalError (exit 2: K, M
+// out of any physical range) or a run that stops or ends with finite
+// responses (a Bouc-Wen A or n: the law fails, the realization is recorded
+// as not completed), never a crash or a hang.
+BOOST_AUTO_TEST_CASE(hostile_values_on_3d_paths)
+{
+  const Overrides typed = {{"Building 1/Plan/Polar moments", "1.2e6, 9e5"},
+                           {"Building 2/Storey yield drifts", "0.004, 0.003"}};
+  for (const std::string path :
+       {"Building 1/Group E[1]", "Building 1/Group G", "Building 1/Group A[2]",
+        "Building 1/Group I", "Building 1/Group Iz", "Building 1/Group J",
+        "Building 1/Group mass per length", "Building 1/Plan/Polar moments[1]",
+        "Building 2/Plan/Polar moments", "Building 1/Bouc-Wen/A", "Building 1/Bouc-Wen/n",
+        "Building 2/Storey stiffnesses[1]", "Building 2/Storey yield drifts"})
+    {
+      const InputParameters input =
+        read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1e308 upper "
+                                              "1.5e308", typed));
+      const Analysis    analysis = prepare_analysis(input);
+      RealizationRunner runner(analysis, time_history_parameters(input));
+      attach_random_parameters(runner, input.random_parameters, input, input.model,
+                               input.contact, input.modal.eigensolver);
+      const auto origins = std::make_shared<const std::vector<HingeOrigin>>(
+        hinge_origins(analysis.model, input.model));
+      const auto inputs =
+        std::make_shared<const ModelInputs>(ModelInputs{input.model, input.contact});
+      std::vector<ModelParameter> parameter{model_parameter(path, analysis.model, origins, inputs)};
+      settle_hinge_origins(parameter, *origins, analysis.model);
+      ModelRealization realization(analysis, parameter, input.modal.eigensolver);
+      for (const double x : {-1.0, 0.0, std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::quiet_NaN()})
+        if (x != 0 || !parameter[0].can_be_zero())
+          BOOST_CHECK_EXCEPTION(realization.apply({x}), std::invalid_argument,
+                                [&](const std::invalid_argument &e) {
+                                  return std::string(e.what()).find(path) != std::string::npos;
+                                });
+      std::vector<double> responses;
+      try
+        {
+          const bool completed = runner.run(0, responses);
+          for (const double r : responses)
+            BOOST_TEST(std::isfinite(r), path << ": 1e308 ran to a response " << r);
+          BOOST_TEST_MESSAGE(path << " = 1e308: the run "
+                                  << (completed ? "completes" : "stops (a failed realization)")
+                                  << " with finite responses");
+        }
+      catch (const NumericalError &e)
+        {
+          BOOST_TEST_MESSAGE(path << " = 1e308: " << e.what());
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -28,8 +28,11 @@
 //                                        sets it (u_y = M_y / k follows)
 //     Building b/Hinges/Yield rotation   u_y of b's hinges without a yield moment
 //     Building b/Bouc-Wen/P              P = alpha, A, beta, gamma, n, delta A,
-//                                        delta nu, delta eta of every hinge and
-//                                        hysteretic storey of b (nonlinear)
+//                                        delta nu, delta eta of every hinge (2D; 3D:
+//                                        both bending axes, uniaxial or biaxial) and
+//                                        hysteretic storey or resisting plane of b
+//                                        (nonlinear; a bidirectional law: n >= 2, no
+//                                        degradation)
 //     Building b/Damping/a0, a1          given Rayleigh coefficients (C)
 //     Building b/Damping/Modal ratios[i] zeta of mode i, modal damping (C)
 //     Building b/Column E|G|A|I|Iz|J|Avy|Avz|mass per length[i], Building
@@ -37,6 +40,15 @@
 //                                        I is Iy; k = f 6 E I_y|z / L of its hinges)
 //     Building b/Group E|A|I|mass per length[i]
 //                                        group i (Group ids order) of a 2D mesh building
+//     Building b/Group E|G|A|I|Iz|J|mass per length[i]
+//                                        the same of a 3D mesh building (I is Iy; its
+//                                        hinges' k = f 6 E I_y|z / L follows)
+//     Building b/Storey stiffnesses[i], Storey yield drifts[i] of a 3D shear
+//                                        building: k/2 and u_y of each of the default
+//                                        four planes of storey i (K; nonlinear)
+//     Building b/Plan/Polar moments[i]   the typed polar moment of floor i of a 3D
+//                                        building with rigid slabs (M; the modes,
+//                                        Rayleigh and modal C, K_G under P-Delta)
 //     Building b/Floor masses[i] of a 3D building: the floor's translational
 //                                        masses and, when Plan/Polar moments is not
 //                                        given, its polar moment J = m (L_x^2 + L_y^2)/12
@@ -125,7 +137,8 @@ namespace poundfe
       member_section_3d, // `section_3d` of a 3D frame's columns or beams
       friction_entry,    // `friction` of every friction element
       contact_restitution,
-      foundation_entry   // `foundation` of building b's compliant foundation
+      foundation_entry,  // `foundation` of building b's compliant foundation
+      polar_moment       // the typed polar moment of a 3D building's floor(s)
     };
     Kind         kind     = Kind::storey_stiffness;
     std::string  path;          // as written
@@ -134,6 +147,8 @@ namespace poundfe
     MemberKind               member_kind = MemberKind::column; // member_section
     double Section::*        section     = nullptr;            // member_section
     double BoucWenParameters::*shape     = nullptr;            // bouc_wen_shape
+    /// bouc_wen_shape: the building's law is bidirectional (n >= 2)
+    bool                       bidirectional = false;
     double Section3D::*        section_3d = nullptr;           // member_section_3d
     /// member_section of a mesh building: the members of physical group
     /// `group` (-1: a generated frame's columns or beams)
