@@ -11,6 +11,7 @@
 #include <poundfe/laws/contact_law.h>
 #include <poundfe/model/floor_mass.h>
 #include <poundfe/model/frame_foundation.h>
+#include <poundfe/model/model_builder.h>
 #include <poundfe/model/plan_foundation.h>
 
 #include <deal.II/base/exceptions.h>
@@ -32,7 +33,11 @@ namespace poundfe
       "Building b/Storey stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
       "drifts[i], Building b/Hinges/Yield moment, Building b/Damping/Damping ratio, "
       "Building b/Floor masses[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
-      "Friction/Kinetic coefficient, Links/Viscous dampers[i], Building b/Column E[i] (A, I, "
+      "Friction/Kinetic coefficient, Links/Viscous dampers[i] (c), Links/LIST/FIELD[i] "
+      "(Viscous dampers/c, alpha; Kelvin-Voigt links/k, c, alpha; Maxwell links/k, c; "
+      "Elastic-plastic links/k, Fy, r; Soil coupling/k, c; Rocking soil coupling/k, c), "
+      "Springs/SD springs/K[i] (L, H), Springs/Cubic springs/k1[i] (k3), Bumpers/Stiffness, "
+      "Bumpers/Thickness, Building b/Column E[i] (A, I, "
       "mass per length), Building b/Beam E[i] (A, I, mass per length), Building b/Hinges/"
       "Stiffness, Building b/Hinges/Stiffness factor, Building b/Hinges/Yield rotation, "
       "Building b/Bouc-Wen/alpha (A, beta, gamma, n, delta A, delta nu, delta eta), "
@@ -91,6 +96,53 @@ namespace poundfe
        [](FrictionLawParameters &l) -> double & { return l.regularization_velocity; },
        {0, false, infinity}}};
 
+    const ModelParameter::Range positive{0, false, infinity}, non_negative{0, true, infinity};
+
+    /// A field of the entries of a `Links` or `Springs` list: the list, the
+    /// field's name in the entries' form, where the builder puts it in the
+    /// law (model/building_links.cc, model/springs_and_friction.cc) and the
+    /// values it accepts there.
+    struct ListField
+    {
+      const char                   *list;
+      const char                   *name;
+      double LinkLawParameters::*   link;
+      double SpringLawParameters::* spring;
+      ModelParameter::Range         range;
+    };
+
+    const ModelParameter::Range exponent_range{0, false, 1}, hardening_range{0, true, 1, false};
+    const std::vector<ListField> list_fields = {
+      // c = 0: a damper without force, the mitigation study's bare case
+      {"Links/Viscous dampers", "c", &LinkLawParameters::damping, nullptr, non_negative},
+      {"Links/Viscous dampers", "alpha", &LinkLawParameters::exponent, nullptr, exponent_range},
+      {"Links/Kelvin-Voigt links", "k", &LinkLawParameters::stiffness, nullptr, non_negative},
+      {"Links/Kelvin-Voigt links", "c", &LinkLawParameters::damping, nullptr, positive},
+      {"Links/Kelvin-Voigt links", "alpha", &LinkLawParameters::exponent, nullptr, exponent_range},
+      {"Links/Maxwell links", "k", &LinkLawParameters::stiffness, nullptr, positive},
+      {"Links/Maxwell links", "c", &LinkLawParameters::damping, nullptr, positive},
+      {"Links/Elastic-plastic links", "k", &LinkLawParameters::stiffness, nullptr, positive},
+      {"Links/Elastic-plastic links", "Fy", &LinkLawParameters::yield_force, nullptr, positive},
+      {"Links/Elastic-plastic links", "r", &LinkLawParameters::hardening, nullptr, hardening_range},
+      {"Links/Soil coupling", "k", &LinkLawParameters::stiffness, nullptr, non_negative},
+      {"Links/Soil coupling", "c", &LinkLawParameters::damping, nullptr, non_negative},
+      {"Links/Rocking soil coupling", "k", &LinkLawParameters::stiffness, nullptr, non_negative},
+      {"Links/Rocking soil coupling", "c", &LinkLawParameters::damping, nullptr, non_negative},
+      {"Springs/SD springs", "K", nullptr, &SpringLawParameters::stiffness, positive},
+      {"Springs/SD springs", "L", nullptr, &SpringLawParameters::length, non_negative},
+      {"Springs/SD springs", "H", nullptr, &SpringLawParameters::height, non_negative},
+      {"Springs/Cubic springs", "k1", nullptr, &SpringLawParameters::stiffness, positive},
+      {"Springs/Cubic springs", "k3", nullptr, &SpringLawParameters::cubic,
+       {-infinity, true, infinity}}};
+
+    const ListField &
+    list_field_of(const ModelParameter &p)
+    {
+      return *std::find_if(list_fields.begin(), list_fields.end(), [&p](const ListField &f) {
+        return f.list == p.list && f.link == p.link_field && f.spring == p.spring_field;
+      });
+    }
+
     /// Which foundations have an entry: those from the soil (gazetas, cone),
     /// typed ones (given), every one; `three_d` only in 3D, `vertical` only
     /// with a vertical part (frames); `matrices`: it enters K or M.
@@ -108,7 +160,6 @@ namespace poundfe
 
 #define POUNDFE_FOUNDATION_FIELD(expression) \
   [](FoundationParameters &f) -> double & { return f.expression; }
-    const ModelParameter::Range positive{0, false, infinity}, non_negative{0, true, infinity};
     const std::vector<FoundationEntry> foundation_entries = {
       {{"Shear-wave velocity", POUNDFE_FOUNDATION_FIELD(soil.shear_wave_velocity), positive},
        FoundationEntry::soil, false, false, true},
@@ -224,22 +275,31 @@ namespace poundfe
       return result;
     }
 
-    /// Indices in model.building_links of the viscous dampers.
+    /// Indices in model.building_links (a `Links` list) or model.springs (a
+    /// `Springs` list) of the entries of `list`, in the order listed.
     std::vector<unsigned int>
-    viscous_dampers(const Model &model)
+    list_members(const Model &model, const std::string &list)
     {
       std::vector<unsigned int> result;
-      for (unsigned int l = 0; l < model.building_links.size(); ++l)
-        if (model.building_links[l].law.kind == LinkKind::viscous)
-          result.push_back(l);
+      if (list.rfind("Links/", 0) == 0)
+        {
+          for (unsigned int l = 0; l < model.building_links.size(); ++l)
+            if (model.building_links[l].entry == list)
+              result.push_back(l);
+          return result;
+        }
+      const SpringKind kind = list == "Springs/SD springs" ? SpringKind::sd : SpringKind::cubic;
+      for (unsigned int s = 0; s < model.springs.size(); ++s)
+        if (model.springs[s].law.kind == kind)
+          result.push_back(s);
       return result;
     }
 
-    /// Indices in model.building_links of the dampers `p` names (all, or one).
+    /// The entries of its list that `p` names (all, or one).
     std::vector<unsigned int>
-    named_dampers(const ModelParameter &p, const Model &model)
+    named_list_members(const ModelParameter &p, const Model &model)
     {
-      const std::vector<unsigned int> all = viscous_dampers(model);
+      const std::vector<unsigned int> all = list_members(model, p.list);
       return p.entry < 0 ? all : std::vector<unsigned int>{all.at(p.entry)};
     }
 
@@ -352,12 +412,18 @@ namespace poundfe
     require_in_range(const ModelParameter &p, const double value)
     {
       const ModelParameter::Range r = p.range();
-      if (!(r.lower_included ? value >= r.lower : value > r.lower) || !(value <= r.upper) ||
-          !std::isfinite(value))
+      // beyond 1e150 in size the builder refuses the entry, or the K or M
+      // it enters (dynamics/analysis.cc), whatever the parameter's range
+      if (!(r.lower_included ? value >= r.lower : value > r.lower) ||
+          !(r.upper_included ? value <= r.upper : value < r.upper) ||
+          !(std::abs(value) <= largest_model_value))
         {
-          std::string range = (r.lower_included ? ">= " : "> ") + number_text(r.lower);
+          std::string range;
+          if (std::isfinite(r.lower))
+            range += (r.lower_included ? ">= " : "> ") + number_text(r.lower) + " and ";
           if (std::isfinite(r.upper))
-            range += " and <= " + number_text(r.upper);
+            range += (r.upper_included ? "<= " : "< ") + number_text(r.upper) + " and ";
+          range += "at most 1e150 in size";
           throw std::invalid_argument("'" + p.path + "' cannot take the sampled value " +
                                       number_text(value) + " (it must be " + range +
                                       "; choose a distribution that stays in range, e.g. "
@@ -716,10 +782,19 @@ namespace poundfe
               (p.kind == Kind::static_friction ? surface.law.static_coefficient :
                                                  surface.law.kinetic_coefficient) = value;
             return;
-          case Kind::link_damping:
+          case Kind::link_entry:
             require_in_range(p, value);
-            for (const unsigned int l : named_dampers(p, model))
-              model.building_links[l].law.damping = value;
+            for (const unsigned int l : named_list_members(p, model))
+              model.building_links[l].law.*p.link_field = value;
+            return;
+          case Kind::spring_entry: // an SD reaction in N follows in apply
+            require_in_range(p, value);
+            for (const unsigned int s : named_list_members(p, model))
+              model.springs[s].law.*p.spring_field = value;
+            return;
+          case Kind::bumper_entry: // t <= the gaps is checked in apply
+            require_in_range(p, value);
+            model.bumper.*p.bumper_field = value;
             return;
           case Kind::member_section:
             require_in_range(p, value);
@@ -1067,6 +1142,58 @@ namespace poundfe
       return p;
     }
 
+    /// "LIST/FIELD" of a `Links` or `Springs` list (its entry p.entry, or
+    /// every one): a list and field of list_fields, and the model has it.
+    ModelParameter
+    list_entry_parameter(ModelParameter p, const std::string &list, const std::string &field,
+                         const Model &model)
+    {
+      std::string      fields;
+      const ListField *found = nullptr;
+      for (const ListField &f : list_fields)
+        if (f.list == list)
+          {
+            fields += (fields.empty() ? "" : ", ") + std::string(f.name);
+            if (f.name == field)
+              found = &f;
+          }
+      if (fields.empty())
+        throw std::invalid_argument("'" + p.path + "' is not a parameter poundfe can vary (" +
+                                    known_paths + ")");
+      if (!found)
+        throw std::invalid_argument("'" + p.path + "': name a field of the entries of '" + list +
+                                    "', '" + list + "/FIELD[i]' with FIELD one of " + fields);
+      const std::size_t n    = list_members(model, list).size();
+      const std::string what = list.substr(list.find('/') + 1);
+      if (n == 0)
+        throw std::invalid_argument("'" + p.path + "': the model has no entries of '" + list +
+                                    "'");
+      if (p.entry >= int(n))
+        throw std::invalid_argument("'" + p.path + "': the model has " + what + " 1.." +
+                                    std::to_string(n));
+      p.kind         = found->link ? Kind::link_entry : Kind::spring_entry;
+      p.list         = list;
+      p.link_field   = found->link;
+      p.spring_field = found->spring;
+      return p;
+    }
+
+    /// "Bumpers/Stiffness" or "Bumpers/Thickness" of the bumper in every gap.
+    ModelParameter
+    bumper_parameter(ModelParameter p, const std::string &entry, const Model &model)
+    {
+      if (model.bumper.law == BumperLaw::none)
+        throw std::invalid_argument("'" + p.path + "': the gaps have no bumper (Bumpers/Law = "
+                                    "none)");
+      const bool stiffness = entry == "Bumpers/Stiffness";
+      if (stiffness && model.bumper.law == BumperLaw::table)
+        throw std::invalid_argument("'" + p.path + "': a table bumper's force comes from its "
+                                    "Bumpers/Table, not a stiffness");
+      p.kind         = Kind::bumper_entry;
+      p.bumper_field = stiffness ? &BumperParameters::stiffness : &BumperParameters::thickness;
+      return p;
+    }
+
     /// The parameter of a "Building b/ENTRY" path.
     ModelParameter
     building_parameter(ModelParameter p, const std::string &entry, const bool indexed,
@@ -1165,7 +1292,8 @@ namespace poundfe
     return kind == Kind::storey_stiffness || kind == Kind::floor_mass ||
            kind == Kind::polar_moment || kind == Kind::member_section || kind == Kind::hinge_stiffness ||
            kind == Kind::hinge_stiffness_factor || kind == Kind::member_section_3d ||
-           (kind == Kind::foundation_entry && foundation_matrices);
+           (kind == Kind::foundation_entry && foundation_matrices) ||
+           (kind == Kind::spring_entry && spring_field == &SpringLawParameters::stiffness);
   }
 
   bool
@@ -1196,6 +1324,10 @@ namespace poundfe
       return foundation_entry_of(foundation).entry.range;
     if (kind == Kind::contact_restitution)
       return {0, false, 1};
+    if (kind == Kind::link_entry || kind == Kind::spring_entry)
+      return list_field_of(*this).range;
+    if (kind == Kind::bumper_entry) // a bumper of zero thickness is the bare contact
+      return {0, bumper_field == &BumperParameters::thickness, infinity};
     if (kind == Kind::bouc_wen_shape)
       {
         if (shape == &BoucWenParameters::alpha)
@@ -1208,7 +1340,7 @@ namespace poundfe
       }
     const bool zero = kind == Kind::storey_damping || kind == Kind::separation ||
                       kind == Kind::contact_damping || kind == Kind::static_friction ||
-                      kind == Kind::kinetic_friction || kind == Kind::link_damping ||
+                      kind == Kind::kinetic_friction ||
                       kind == Kind::rayleigh_a0 || kind == Kind::rayleigh_a1 ||
                       kind == Kind::modal_ratio ||
                       (kind == Kind::member_section && section == &Section::mass_per_length) ||
@@ -1384,17 +1516,15 @@ namespace poundfe
             return p;
           }
       }
-    if (entry == "Links/Viscous dampers")
+    static const std::regex list_field(R"(^((?:Links|Springs)/[^/]+)(/([^/]*))?$)");
+    if (entry == "Links/Viscous dampers") // c, as the mitigation study varies it
+      return list_entry_parameter(p, entry, "c", model);
+    if (std::regex_match(entry, match, list_field))
+      return list_entry_parameter(p, match[1], match[3], model);
+    if (entry == "Bumpers/Stiffness" || entry == "Bumpers/Thickness")
       {
-        p.kind = Kind::link_damping;
-        const std::size_t n = viscous_dampers(model).size();
-        if (n == 0)
-          throw std::invalid_argument("'" + path + "': the model has no viscous dampers "
-                                      "(Links/Viscous dampers)");
-        if (p.entry >= int(n))
-          throw std::invalid_argument("'" + path + "': the model has viscous dampers 1.." +
-                                      std::to_string(n));
-        return p;
+        no_entry();
+        return bumper_parameter(p, entry, model);
       }
     throw std::invalid_argument("'" + path + "' is not a parameter poundfe can vary (" +
                                 known_paths + ")");
@@ -1438,8 +1568,12 @@ namespace poundfe
           return model.friction_surfaces.front().law.static_coefficient;
         case Kind::kinetic_friction:
           return model.friction_surfaces.front().law.kinetic_coefficient;
-        case Kind::link_damping:
-          return model.building_links[named_dampers(p, model).front()].law.damping;
+        case Kind::link_entry:
+          return model.building_links[named_list_members(p, model).front()].law.*p.link_field;
+        case Kind::spring_entry:
+          return model.springs[named_list_members(p, model).front()].law.*p.spring_field;
+        case Kind::bumper_entry:
+          return model.bumper.*p.bumper_field;
         case Kind::member_section:
           for (const Member &member : model.members)
             if (named_member(p, member))
@@ -1478,6 +1612,29 @@ namespace poundfe
     return 0;
   }
 
+  namespace
+  {
+    /// The bumper no thicker than any gap (nor, a table bumper, than its
+    /// table: its force beyond is not given), as the builder and the input
+    /// check it (model/building_links.cc, model/link_parameters.cc).
+    void
+    require_bumper_fits(const Model &model)
+    {
+      const BumperParameters &bumper = model.bumper;
+      for (const Gap &gap : model.gaps)
+        if (bumper.thickness > gap.initial_gap)
+          throw std::invalid_argument(
+            "the sampled bumper (" + number_text(bumper.thickness) +
+            " m) is thicker than the gap " + gap.label + " (" + number_text(gap.initial_gap) +
+            " m) (Bumpers/Thickness must not exceed the smallest gap: sample them so, e.g. "
+            "bounded or correlated)");
+      if (bumper.law == BumperLaw::table && bumper.thickness > bumper.table.back()[0])
+        throw std::invalid_argument("the sampled bumper (" + number_text(bumper.thickness) +
+                                    " m) is thicker than its Bumpers/Table reaches (" +
+                                    number_text(bumper.table.back()[0]) + " m)");
+    }
+  } // namespace
+
   ModelRealization::ModelRealization(const Analysis &base, std::vector<ModelParameter> parameters,
                                      const Eigensolver eigensolver_)
     : working(base)
@@ -1505,6 +1662,8 @@ namespace poundfe
     bool matrices_changed = false; // M or K: the modes change
     bool contact_changed  = false; // k, m_e or e: the contact damping fitted again
     bool friction_changed = false;
+    bool springs_changed  = false; // a friction element's N may take an SD reaction
+    bool bumper_or_gap_changed = false;
     std::vector<bool> foundation_changed(model.buildings.size(), false);
     for (unsigned int i = 0; i < targets.size(); ++i)
       {
@@ -1515,6 +1674,9 @@ namespace poundfe
                           p.kind == Kind::contact_restitution || p.kind == Kind::floor_mass;
         friction_changed = friction_changed || p.kind == Kind::static_friction ||
                            p.kind == Kind::kinetic_friction;
+        springs_changed  = springs_changed || p.kind == Kind::spring_entry;
+        bumper_or_gap_changed =
+          bumper_or_gap_changed || p.kind == Kind::bumper_entry || p.kind == Kind::separation;
         if (p.kind == Kind::foundation_entry)
           foundation_changed[p.building] = true;
       }
@@ -1533,6 +1695,12 @@ namespace poundfe
             number_text(surface.law.kinetic_coefficient) + " > mu_s = " +
             number_text(surface.law.static_coefficient) + " (Friction/Kinetic coefficient "
             "must not exceed the static one: sample them so, e.g. correlated or bounded)");
+    if (springs_changed)
+      for (FrictionSurface &surface : model.friction_surfaces)
+        if (surface.law.normal.sd_reaction)
+          take_sd_reaction(surface.law.normal, sd_spring_at(model, surface.node)->law);
+    if (bumper_or_gap_changed && model.bumper.law != BumperLaw::none)
+      require_bumper_fits(model);
     if (linear)
       assemble_linear_part(matrices_changed);
     if (!model.friction_surfaces.empty()) // k_s (automatic) and c_s of the new K, M

@@ -112,6 +112,7 @@ namespace poundfe
                std::to_string(at.index);
       };
       link.label = place(a) + "-" + place(b) + "_" + link_kind_name(form.kind);
+      link.entry = form.path;
       return link;
     }
 
@@ -175,6 +176,7 @@ namespace poundfe
       link.buildings = {{a, b}};
       link.label     = std::string(rocking ? "soil_rocking_" : "soil_") +
                    model.buildings[a].name + "-" + model.buildings[b].name;
+      link.entry     = path;
       return link;
     }
   } // namespace

@@ -180,6 +180,25 @@ namespace poundfe
       }
   }
 
+  const Spring *
+  sd_spring_at(const Model &model, const unsigned int node)
+  {
+    const Spring *sd = nullptr;
+    for (const Spring &spring : model.springs)
+      if (spring.node == node && spring.law.kind == SpringKind::sd)
+        sd = &spring;
+    return sd;
+  }
+
+  void
+  take_sd_reaction(NormalForce &normal, const SpringLawParameters &sd)
+  {
+    normal.sd_reaction  = true;
+    normal.sd_stiffness = sd.stiffness;
+    normal.sd_length    = sd.length;
+    normal.sd_height    = sd.height;
+  }
+
   void
   add_friction_surfaces(Model &model, const FrictionParameters &friction, const InputFile &input)
   {
@@ -201,19 +220,12 @@ namespace poundfe
         surface.label    = element_label(model, at, "friction");
         if (friction.normal_force_from_sd_spring)
           {
-            const Spring *sd = nullptr;
-            for (const Spring &spring : model.springs)
-              if (spring.node == at.node && spring.law.kind == SpringKind::sd)
-                sd = &spring;
+            const Spring *sd = sd_spring_at(model, at.node);
             if (!sd)
               throw InputError(input.file, input.line_of("Friction/Normal force from SD spring"),
                                "Friction/Normal force from SD spring",
                                "'" + entry + "' has no SD spring at its node (Springs/SD springs)");
-            NormalForce &n = surface.law.normal;
-            n.sd_reaction  = true;
-            n.sd_stiffness = sd->law.stiffness;
-            n.sd_length    = sd->law.length;
-            n.sd_height    = sd->law.height;
+            take_sd_reaction(surface.law.normal, sd->law);
           }
         model.friction_surfaces.push_back(surface);
       }

@@ -52,7 +52,7 @@ namespace poundfe
             break;
         }
       return (range.lower_included ? lowest < range.lower : lowest <= range.lower) ||
-             highest > range.upper;
+             (range.upper_included ? highest > range.upper : highest >= range.upper);
     }
 
     /// "<= 0", "< 1", "< 0 or > 1": the values outside the range.
@@ -60,7 +60,9 @@ namespace poundfe
     outside_text(const ModelParameter::Range &range)
     {
       const std::string text = (range.lower_included ? "< " : "<= ") + number_text(range.lower);
-      return std::isfinite(range.upper) ? text + " or > " + number_text(range.upper) : text;
+      return std::isfinite(range.upper) ?
+               text + (range.upper_included ? " or > " : " or >= ") + number_text(range.upper) :
+               text;
     }
 
     /// ">= 0", "> 0", "and <= 1": the bounds a distribution's support must keep.
@@ -68,8 +70,10 @@ namespace poundfe
     inside_text(const ModelParameter::Range &range)
     {
       const std::string text = (range.lower_included ? ">= " : "> ") + number_text(range.lower);
-      return std::isfinite(range.upper) ? text + " and upper <= " + number_text(range.upper) :
-                                          text;
+      return std::isfinite(range.upper) ?
+               text + (range.upper_included ? " and upper <= " : " and upper < ") +
+                 number_text(range.upper) :
+               text;
     }
   } // namespace
 
@@ -92,8 +96,13 @@ namespace poundfe
                       "Building b/Damping/Damping ratio, Damping/a0, Damping/a1, Damping/Modal "
                       "ratios[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, "
                       "Friction/Static coefficient, Friction/Kinetic coefficient, Links/Viscous "
-                      "dampers[i] (c); 3D frames: Building b/Column E[i] (G, A, I, Iz, J, Avy, "
-                      "Avz, mass per length), Beam ...[i]; meshes: Building b/Group E[i] (A, I, "
+                      "dampers[i] (c), Links/LIST/FIELD[i] (entry i of a Links list, without "
+                      "[i]: every one; Viscous dampers/c, alpha, Kelvin-Voigt links/k, c, alpha, "
+                      "Maxwell links/k, c, Elastic-plastic links/k, Fy, r, Soil coupling/k, c, "
+                      "Rocking soil coupling/k, c), Springs/SD springs/K[i] (L, H), "
+                      "Springs/Cubic springs/k1[i] (k3), Bumpers/Stiffness, Bumpers/Thickness "
+                      "(at most the smallest gap); 3D frames: Building b/Column E[i] (G, A, I, "
+                      "Iz, J, Avy, Avz, mass per length), Beam ...[i]; meshes: Building b/Group E[i] (A, I, "
                       "mass per length; 3D: G, Iz, J too; group i of Group ids); 3D floor "
                       "masses (a polar moment not typed follows); Building b/Plan/Polar "
                       "moments[i] (typed ones, rigid slabs); Building b/Foundation/ENTRY (Shear-wave velocity, "

@@ -8,6 +8,7 @@
 #  - subset with Response = limit state: one rank equals two;
 #  - bad input (unknown path, a path that is not a number poundfe can vary,
 #    geometry, a restitution without restitution damping, no foundation,
+#    no bumper, a Links list without its field, no SD spring,
 #    a distribution that samples impossible values, impossible distribution
 #    parameters, a limit state naming an unknown response): exit 1, one
 #    message naming Random parameters/..., nothing written.
@@ -82,6 +83,9 @@ bad no-tilde 'k: Building 1/Storey stiffnesses[1] lognormal mean 5e6 sd 1' "NAME
 bad geometry 'h: Building 1/Storey heights[1] ~ lognormal mean 3 cov 0.1' "geometry"
 bad restitution-undamped 'e: Contact/Coefficient of restitution ~ uniform lower 0.5 upper 0.8' "does not come from the restitution"
 bad no-foundation 'v: Building 2/Foundation/Shear-wave velocity ~ lognormal mean 200 cov 0.2' "no compliant foundation"
+bad no-bumper 't: Bumpers/Thickness ~ uniform lower 0.001 upper 0.002' "no bumper"
+bad link-without-field 'k: Links/Maxwell links ~ lognormal mean 1e6 cov 0.2' "FIELD one of k, c"
+bad no-sd-spring 'K: Springs/SD springs/K ~ lognormal mean 1e6 cov 0.2' "no entries of 'Springs/SD springs'"
 sed 's/contact: 6e4 - peak_contact_force - 0\*gap/contact: 6e4 - peak_force/' "$input" > "$work/unknown-response.prm"
 set +e
 "$poundfe" montecarlo "$work/unknown-response.prm" --output "$work/unknown-response" > /dev/null 2> "$work/unknown-response.err"

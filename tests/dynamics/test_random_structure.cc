@@ -6,8 +6,11 @@
 // k/2 and u_y), typed polar moments, 3D floor masses (the polar moment m (Lx^2 + Ly^2)/12
 // follows the mass, a typed one stays), masses with friction elements (the
 // stick dashpot 2 sqrt(k_s M_ii) follows), the friction law's entries, the
-// contact restitution (the damping calibrated again) and compliant
-// foundations (the impedances from the soil, or typed, and the inertias).
+// contact restitution (the damping calibrated again), compliant
+// foundations (the impedances from the soil, or typed, and the inertias),
+// springs to the ground (K, k1 in the linear K; a friction element's N from
+// the SD spring follows), every field of every kind of link and soil
+// coupling, and the bumper in the gaps.
 // Each realization, written in place, must give the responses of the model
 // built from the file with the sampled values (overrides), under the same
 // loading normals: the independent route is the whole builder,
@@ -649,6 +652,282 @@ BOOST_AUTO_TEST_CASE(hostile_values_on_3d_paths)
           BOOST_TEST_MESSAGE(path << " = 1e308: " << e.what());
         }
     }
+}
+
+namespace
+{
+  /// The shear pair's Random parameters set to `variables`, after `devices`.
+  Overrides
+  with_variables(Overrides devices, const std::string &variables)
+  {
+    devices.push_back({"Random parameters/Correlation", ""});
+    devices.push_back({"Random parameters/Limit states", ""});
+    devices.push_back({"Random parameters/Variables", variables});
+    return devices;
+  }
+
+  /// An SD spring under floor 1 of building 2, whose vertical reaction a
+  /// friction element there takes into its N, and a Duffing spring under
+  /// floor 2 of building 1.
+  const Overrides spring_devices = {{"Springs/SD springs", "2 1 0 1e6 0.05 0.1"},
+                             {"Springs/Cubic springs", "1 2 0 5e5 5e7"},
+                             {"Friction/Surfaces", "2 1 0"},
+                             {"Friction/Static coefficient", "0.35"},
+                             {"Friction/Kinetic coefficient", "0.25"},
+                             {"Friction/Normal force", "1e5"},
+                             {"Friction/Normal force from SD spring", "true"}};
+
+  /// Links of every kind between the two buildings (two Kelvin-Voigt ones).
+  const Overrides link_devices = {{"Links/Viscous dampers", "1 2 0 2 2 0 2e4 0.5"},
+                           {"Links/Kelvin-Voigt links",
+                            "1 1 0 2 1 0 1e6 1e4 1; 1 2 0 2 2 0 1e6 1e4 0.6"},
+                           {"Links/Maxwell links", "1 2 0 2 2 0 2e6 3e4"},
+                           {"Links/Elastic-plastic links", "1 1 0 2 1 0 1e6 3e3 0.1"}};
+
+  /// Both buildings on typed foundations, coupled through the soil in sway
+  /// and in rocking.
+  const Overrides coupled_foundations = {{"Building 1/Foundation/Type", "given"},
+                                   {"Building 1/Foundation/Horizontal stiffness", "2e8"},
+                                   {"Building 1/Foundation/Rocking stiffness", "2e9"},
+                                   {"Building 1/Foundation/Horizontal damping", "2e5"},
+                                   {"Building 1/Foundation/Rocking damping", "2e6"},
+                                   {"Building 1/Foundation/Mass", "2000"},
+                                   {"Building 1/Foundation/Rotary inertia", "1e4"},
+                                   {"Building 2/Foundation/Type", "given"},
+                                   {"Building 2/Foundation/Horizontal stiffness", "1e8"},
+                                   {"Building 2/Foundation/Rocking stiffness", "1e9"},
+                                   {"Building 2/Foundation/Horizontal damping", "1e5"},
+                                   {"Building 2/Foundation/Rocking damping", "1e6"},
+                                   {"Building 2/Foundation/Mass", "1000"},
+                                   {"Building 2/Foundation/Rotary inertia", "5e3"},
+                                   {"Links/Soil coupling", "1 2 5e7 5e4"},
+                                   {"Links/Rocking soil coupling", "1 2 5e8 5e5"}};
+
+  /// A linear bumper 4 mm thick in the 10 mm gap.
+  const Overrides linear_bumper = {{"Bumpers/Law", "linear"},
+                            {"Bumpers/Thickness", "0.004"},
+                            {"Bumpers/Stiffness", "2e7"}};
+
+  Overrides
+  joined(std::initializer_list<Overrides> parts)
+  {
+    Overrides all;
+    for (const Overrides &part : parts)
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
+  }
+} // namespace
+
+// SD and Duffing springs to the ground: K and k1 enter the linear K
+// (assembled again; the modes and Rayleigh C follow), L, H and k3 only the
+// element, and the friction element's N takes the sampled SD spring's
+// K, L, H, as the builder copies them.
+BOOST_AUTO_TEST_CASE(random_springs)
+{
+  const std::string variables = "K: Springs/SD springs/K[1] ~ lognormal mean 1e6 cov 0.3; "
+                                "L: Springs/SD springs/L ~ uniform lower 0.02 upper 0.08; "
+                                "H: Springs/SD springs/H[1] ~ uniform lower 0.08 upper 0.15; "
+                                "k1: Springs/Cubic springs/k1 ~ lognormal mean 5e5 cov 0.3; "
+                                "k3: Springs/Cubic springs/k3[1] ~ normal mean 5e7 sd 2e7";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Springs/SD springs", "2 1 0 " + text_of(x[0]) + " " + text_of(x[1]) +
+                                              " " + text_of(x[2])},
+                     {"Springs/Cubic springs", "1 2 0 " + text_of(x[3]) + " " + text_of(x[4])}};
+  };
+  compare_with_rebuilt(shear_pair, with_variables(spring_devices, variables), values, 4);
+}
+
+// Every field of every kind of link between the buildings, by entry
+// (`Kelvin-Voigt links/k[2]`) or for all the entries of a list
+// (`Kelvin-Voigt links/c`), and the viscous damper's c by its short path.
+BOOST_AUTO_TEST_CASE(random_links)
+{
+  const std::string variables =
+    "cd: Links/Viscous dampers[1] ~ lognormal mean 2e4 cov 0.3; "
+    "a: Links/Viscous dampers/alpha ~ uniform lower 0.3 upper 1; "
+    "kv: Links/Kelvin-Voigt links/k[2] ~ lognormal mean 1e6 cov 0.3; "
+    "cv: Links/Kelvin-Voigt links/c ~ lognormal mean 1e4 cov 0.3; "
+    "av: Links/Kelvin-Voigt links/alpha[1] ~ uniform lower 0.5 upper 1; "
+    "km: Links/Maxwell links/k ~ lognormal mean 2e6 cov 0.3; "
+    "cm: Links/Maxwell links/c[1] ~ lognormal mean 3e4 cov 0.3; "
+    "ke: Links/Elastic-plastic links/k ~ lognormal mean 1e6 cov 0.2; "
+    "fy: Links/Elastic-plastic links/Fy ~ lognormal mean 3e3 cov 0.3; "
+    "r: Links/Elastic-plastic links/r ~ uniform lower 0 upper 0.5";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    const auto t = [&x](const unsigned int i) { return " " + text_of(x[i]); };
+    return Overrides{
+      {"Links/Viscous dampers", "1 2 0 2 2 0" + t(0) + t(1)},
+      {"Links/Kelvin-Voigt links",
+       "1 1 0 2 1 0 1e6" + t(3) + t(4) + "; 1 2 0 2 2 0" + t(2) + t(3) + " 0.6"},
+      {"Links/Maxwell links", "1 2 0 2 2 0" + t(5) + t(6)},
+      {"Links/Elastic-plastic links", "1 1 0 2 1 0" + t(7) + t(8) + t(9)}};
+  };
+  compare_with_rebuilt(shear_pair, with_variables(link_devices, variables), values, 4);
+}
+
+// The soil between two compliant foundations: the sway and rocking
+// couplings' k and c (Kelvin-Voigt laws like a link's, named by their own
+// entries).
+BOOST_AUTO_TEST_CASE(random_soil_coupling)
+{
+  const std::string variables = "ks: Links/Soil coupling/k ~ lognormal mean 5e7 cov 0.3; "
+                                "cs: Links/Soil coupling/c[1] ~ uniform lower 0 upper 1e5; "
+                                "kr: Links/Rocking soil coupling/k[1] ~ lognormal mean 5e8 "
+                                "cov 0.3; "
+                                "cr: Links/Rocking soil coupling/c ~ uniform lower 1e5 upper 1e6";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Links/Soil coupling", "1 2 " + text_of(x[0]) + " " + text_of(x[1])},
+                     {"Links/Rocking soil coupling", "1 2 " + text_of(x[2]) + " " + text_of(x[3])}};
+  };
+  compare_with_rebuilt(shear_pair, with_variables(coupled_foundations, variables), values, 4);
+}
+
+// The bumper in the gap: a linear one's stiffness and thickness, then a
+// Hertz one's stiffness; the buildings must reach it.
+BOOST_AUTO_TEST_CASE(random_bumpers)
+{
+  const std::string variables = "kb: Bumpers/Stiffness ~ lognormal mean 2e7 cov 0.3; "
+                                "t: Bumpers/Thickness ~ uniform lower 0.001 upper 0.008";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Bumpers/Stiffness", text_of(x[0])}, {"Bumpers/Thickness", text_of(x[1])}};
+  };
+  BOOST_TEST(
+    compare_with_rebuilt(shear_pair, with_variables(linear_bumper, variables), values, 4) > 0u);
+  Overrides hertz = linear_bumper;
+  hertz.push_back({"Bumpers/Law", "hertz"});
+  hertz.push_back({"Bumpers/Stiffness", "1e9"});
+  BOOST_TEST(compare_with_rebuilt(shear_pair,
+                                  with_variables(hertz, "kb: Bumpers/Stiffness ~ lognormal mean "
+                                                        "1e9 cov 0.5"),
+                                  [](const std::vector<double> &x) {
+                                    return Overrides{{"Bumpers/Stiffness", text_of(x[0])}};
+                                  },
+                                  2) > 0u);
+}
+
+// Sampled values no file could hold, written into a model with every
+// device: a negative value, 0 and 1e308 are refused with the path named
+// unless the builder accepts them too (a negative k3; 0 where the entry
+// may be 0), and a bumper thicker than the gap, sampled or left so by a
+// sampled separation, is refused as a sampled mu_k > mu_s is.
+BOOST_AUTO_TEST_CASE(hostile_values_of_springs_links_and_bumpers)
+{
+  const InputParameters input =
+    read_parameters(shear_pair, with_variables(joined({spring_devices, link_devices,
+                                                       coupled_foundations, linear_bumper}),
+                                               ""));
+  const Analysis analysis = prepare_analysis(input);
+  const auto     origins  = std::make_shared<const std::vector<HingeOrigin>>(
+    hinge_origins(analysis.model, input.model));
+  const auto inputs = std::make_shared<const ModelInputs>(ModelInputs{input.model, input.contact});
+  const auto realization = [&](const std::vector<std::string> &paths) {
+    std::vector<ModelParameter> parameters;
+    for (const std::string &path : paths)
+      parameters.push_back(model_parameter(path, analysis.model, origins, inputs));
+    return ModelRealization(analysis, parameters, input.modal.eigensolver);
+  };
+  struct Case
+  {
+    std::string path;
+    bool        negative_accepted, zero_accepted;
+  };
+  const std::vector<Case> cases = {{"Springs/SD springs/K", false, false},
+                                   {"Springs/SD springs/L[1]", false, true},
+                                   {"Springs/SD springs/H", false, true},
+                                   {"Springs/Cubic springs/k1[1]", false, false},
+                                   {"Springs/Cubic springs/k3", true, true},
+                                   {"Links/Viscous dampers/c", false, true},
+                                   {"Links/Viscous dampers/alpha[1]", false, false},
+                                   {"Links/Kelvin-Voigt links/k[2]", false, true},
+                                   {"Links/Kelvin-Voigt links/c", false, false},
+                                   {"Links/Kelvin-Voigt links/alpha", false, false},
+                                   {"Links/Maxwell links/k", false, false},
+                                   {"Links/Maxwell links/c[1]", false, false},
+                                   {"Links/Elastic-plastic links/k", false, false},
+                                   {"Links/Elastic-plastic links/Fy", false, false},
+                                   {"Links/Elastic-plastic links/r", false, true},
+                                   {"Links/Soil coupling/k", false, true},
+                                   {"Links/Soil coupling/c[1]", false, true},
+                                   {"Links/Rocking soil coupling/k", false, true},
+                                   {"Links/Rocking soil coupling/c", false, true},
+                                   {"Bumpers/Stiffness", false, false},
+                                   {"Bumpers/Thickness", false, true}};
+  for (const Case &c : cases)
+    for (const double value : {-1.0, 0.0, 1e308, 0.5})
+      {
+        ModelRealization r = realization({c.path});
+        const bool accepted = value == -1  ? c.negative_accepted :
+                              value == 0   ? c.zero_accepted :
+                              value == 0.5 ? c.path != "Bumpers/Thickness" : // > the gap
+                                            false;
+        try
+          {
+            r.apply({value});
+            BOOST_TEST(accepted, "'" << c.path << "' took " << value);
+            BOOST_TEST(model_parameter_value(r.parameters()[0], r.analysis().model) == value);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            BOOST_TEST(!accepted, "'" << c.path << "' refused " << value << ": " << e.what());
+            const std::string what = e.what();
+            BOOST_TEST((what.find(c.path) != std::string::npos ||
+                        what.find("Bumpers/Thickness") != std::string::npos),
+                       what);
+          }
+      }
+  // a sampled separation under the bumper's 4 mm leaves it thicker than the gap
+  ModelRealization gap_and_bumper = realization({"Model/Separations", "Bumpers/Thickness"});
+  BOOST_CHECK_NO_THROW(gap_and_bumper.apply({0.005, 0.005}));
+  BOOST_CHECK_THROW(gap_and_bumper.apply({0.003, 0.002 + 0.002}), std::invalid_argument);
+  BOOST_CHECK_THROW(realization({"Model/Separations"}).apply({0.003}), std::invalid_argument);
+}
+
+// Paths of springs, links and bumpers that the model does not have, or that
+// name no field, say why.
+BOOST_AUTO_TEST_CASE(refused_device_paths_say_why)
+{
+  const InputParameters input    = read_parameters(shear_pair, with_variables(spring_devices, ""));
+  const Analysis        analysis = prepare_analysis(input);
+  const auto refused = [&](const std::string &path, const std::string &reason) {
+    try
+      {
+        model_parameter(path, analysis.model);
+        BOOST_ERROR("'" << path << "' was accepted");
+      }
+    catch (const std::invalid_argument &e)
+      {
+        BOOST_TEST_MESSAGE(e.what());
+        BOOST_TEST(std::string(e.what()).find(reason) != std::string::npos, e.what());
+      }
+  };
+  refused("Springs/SD springs", "FIELD one of K, L, H");
+  refused("Springs/SD springs/M", "FIELD one of K, L, H");
+  refused("Springs/SD springs/K[2]", "SD springs 1..1");
+  refused("Springs/Cubic springs/k3[0]", "count from 1");
+  refused("Links/Maxwell links/k", "no entries of 'Links/Maxwell links'");
+  refused("Links/Viscous dampers[1]", "no entries of 'Links/Viscous dampers'");
+  refused("Links/Regularization velocity", "not a parameter");
+  refused("Links/Soil coupling/alpha", "FIELD one of k, c");
+  refused("Bumpers/Thickness", "no bumper");
+  refused("Friction/Normal force from SD spring", "not a parameter");
+  const InputParameters table_input = read_parameters(
+    shear_pair, with_variables({{"Bumpers/Law", "table"},
+                                {"Bumpers/Thickness", "0.004"},
+                                {"Bumpers/Table", "0.002 1e4; 0.005 5e4"}},
+                               ""));
+  const Analysis table = prepare_analysis(table_input);
+  BOOST_CHECK_THROW(model_parameter("Bumpers/Stiffness", table.model), std::invalid_argument);
+  BOOST_CHECK_THROW(model_parameter("Bumpers/Thickness[1]", table.model), std::invalid_argument);
+  // a table bumper stays within its table
+  ModelRealization r(table, {model_parameter("Bumpers/Thickness", table.model)},
+                     table_input.modal.eigensolver);
+  BOOST_CHECK_NO_THROW(r.apply({0.005}));
+  BOOST_CHECK_THROW(r.apply({0.006}), std::invalid_argument);
+  const ModelParameter k = model_parameter("Springs/SD springs/K", analysis.model);
+  BOOST_TEST(k.enters_matrices());
+  BOOST_TEST(!k.enters_mass());
+  BOOST_TEST(!model_parameter("Springs/SD springs/H", analysis.model).enters_linear_part());
+  BOOST_TEST(!model_parameter("Springs/Cubic springs/k3", analysis.model).enters_linear_part());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -14,9 +14,21 @@
 //     Model/Separations[i]               gap between buildings i and i+1 (nonlinear)
 //     Contact/Stiffness, Contact/Damping the contact law of every gap (nonlinear)
 //     Friction/Static coefficient, Friction/Kinetic coefficient (nonlinear)
-//     Links/Viscous dampers[i]           c of viscous damper i (nonlinear; 0: a
-//                                        damper without force, as the mitigation
+//     Links/LIST/FIELD[i]                FIELD of entry i of the Links entry LIST
+//                                        (nonlinear): Viscous dampers/c, alpha;
+//                                        Kelvin-Voigt links/k, c, alpha; Maxwell
+//                                        links/k, c; Elastic-plastic links/k, Fy, r;
+//                                        Soil coupling/k, c; Rocking soil coupling/k,
+//                                        c. Links/Viscous dampers[i] is .../c[i] (0:
+//                                        a damper without force, as the mitigation
 //                                        study's bare case of a damper size)
+//     Springs/SD springs/K[i], L[i], H[i], Springs/Cubic springs/k1[i], k3[i]
+//                                        of spring i of that entry (K, k1: the
+//                                        linear K; the rest: the element; a friction
+//                                        element's N from the SD spring follows)
+//     Bumpers/Stiffness, Bumpers/Thickness
+//                                        the bumper of every gap (nonlinear; t at
+//                                        most the smallest gap)
 //     Building b/Column E[i], Column A[i], Column I[i], Column mass per length[i]
 //                                        section of the columns of storey i of a
 //                                        generated frame (K; M, K_G for the mass;
@@ -125,7 +137,7 @@ namespace poundfe
       contact_damping,
       static_friction,
       kinetic_friction,
-      link_damping,
+      link_entry,        // `link_field` of the Links entry `list`
       member_section,   // `section` of the columns or beams (`member_kind`) of a frame
       hinge_stiffness,
       hinge_stiffness_factor,
@@ -138,12 +150,14 @@ namespace poundfe
       friction_entry,    // `friction` of every friction element
       contact_restitution,
       foundation_entry,  // `foundation` of building b's compliant foundation
-      polar_moment       // the typed polar moment of a 3D building's floor(s)
+      polar_moment,      // the typed polar moment of a 3D building's floor(s)
+      spring_entry,      // `spring_field` of the Springs entry `list`
+      bumper_entry       // `bumper_field` of the bumper of every gap
     };
     Kind         kind     = Kind::storey_stiffness;
     std::string  path;          // as written
     unsigned int building = 0;  // 0-based (storey, floor, hinge, damping: the building; separation: the left one)
-    int          entry    = -1; // 0-based storey or floor (link_damping: viscous damper; modal_ratio: mode); -1: all
+    int          entry    = -1; // 0-based storey or floor (link_entry, spring_entry: the list's entry; modal_ratio: mode); -1: all
     MemberKind               member_kind = MemberKind::column; // member_section
     double Section::*        section     = nullptr;            // member_section
     double BoucWenParameters::*shape     = nullptr;            // bouc_wen_shape
@@ -158,6 +172,12 @@ namespace poundfe
     double &(*foundation)(FoundationParameters &) = nullptr;
     /// foundation_entry: whether it enters K or M (else only the dashpots).
     bool                       foundation_matrices = false;
+    /// link_entry, spring_entry: the entry of the input whose list it is
+    /// ("Links/Maxwell links", "Springs/SD springs") and the law's field.
+    std::string                   list;
+    double LinkLawParameters::*   link_field   = nullptr;
+    double SpringLawParameters::* spring_field = nullptr;
+    double BumperParameters::*    bumper_field = nullptr; // bumper_entry
     /// The sections the model was built from (needed by the mesh sections,
     /// 3D floor masses, foundations and restitution).
     std::shared_ptr<const ModelInputs> inputs;
@@ -166,12 +186,13 @@ namespace poundfe
     std::shared_ptr<const std::vector<HingeOrigin>> hinges;
 
     /// The values the parameter can take: [lower, upper] (lower excluded
-    /// when !lower_included).
+    /// when !lower_included, upper when !upper_included).
     struct Range
     {
       double lower          = 0;
       bool   lower_included = false;
       double upper          = std::numeric_limits<double>::infinity();
+      bool   upper_included = true;
     };
     Range range() const;
 
@@ -229,7 +250,8 @@ namespace poundfe
     /// Writes values[p] into parameter p; assembles M, K, C again when a
     /// parameter enters them. Throws std::invalid_argument for a value the
     /// model cannot take (a stiffness, yield drift, mass or ratio <= 0, a
-    /// negative damping or gap) naming the parameter, and NumericalError when
+    /// negative damping or gap, a bumper thicker than a gap) naming the
+    /// parameter, and NumericalError when
     /// the sampled K has no modes (a mechanism).
     void apply(const std::vector<double> &values);
 

@@ -295,6 +295,10 @@ namespace poundfe
     std::array<unsigned int, 2> buildings{{0, 0}};
     LinkLawParameters           law;
     std::string                 label;
+    /// The `Links` entry it comes from ("Links/Kelvin-Voigt links", "Links/Soil
+    /// coupling", ...): a soil coupling's law is a Kelvin-Voigt one too, and a
+    /// random parameter names a link by its entry (dynamics/model_parameter.h).
+    std::string                 entry;
   };
 
   struct NodalMass

@@ -61,6 +61,11 @@ namespace poundfe
 
   void add_friction_surfaces(Model &model, const FrictionParameters &friction,
                              const InputFile &input);
+  /// The SD spring at `node` (the last listed there), or nullptr.
+  const Spring *sd_spring_at(const Model &model, unsigned int node);
+  /// N of a friction element takes the vertical reaction of the SD spring
+  /// `sd` at its node (Friction/Normal force from SD spring): its K, L, H.
+  void take_sd_reaction(NormalForce &normal, const SpringLawParameters &sd);
 } // namespace poundfe
 
 #endif
