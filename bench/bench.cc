@@ -264,6 +264,7 @@ namespace
     DistributedSolverProfile d = after;
     d.analyses -= before.analyses;
     d.factorizations -= before.factorizations;
+    d.symmetric_factorizations -= before.symmetric_factorizations;
     d.solves -= before.solves;
     d.analysis_time -= before.analysis_time;
     d.factorization_time -= before.factorization_time;
@@ -324,7 +325,8 @@ namespace
     std::printf("  set-up: read and assemble %.2f s; engine %.2f s (MUMPS analysis %.2f s, "
                 "first factorisation %.2f s)\n",
                 prepare, engine, in_engine.analysis_time, in_engine.factorization_time);
-    std::printf("  MUMPS factors: %.3g entries, %.0f MB on the largest rank, %.0f MB in all\n",
+    std::printf("  MUMPS factors (%s): %.3g entries, %.0f MB on the largest rank, %.0f MB in all\n",
+                in_engine.symmetric_factorizations > 0 ? "L D L^T" : "L U",
                 in_engine.factor_entries, in_engine.factor_megabytes_per_rank,
                 in_engine.factor_megabytes_total);
     std::printf("  stepping: %lu steps (%lu with sub-steps) in %.2f s: %.3f steps/s; %.2f Newton "

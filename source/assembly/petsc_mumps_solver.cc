@@ -13,6 +13,17 @@
 // the solution to every rank (VecScatterCreateToAll). On one rank it is
 // sequential MUMPS. Every call is collective: all ranks must make the same
 // calls in the same order, which the replicated time stepping guarantees.
+//
+// A symmetric matrix (K_eff = K + a0 M + a1 C with symmetric element
+// tangents: every model without friction or a nonsymmetric contact
+// tangent) is factorised as L D L^T (MUMPS SYM = 2, PETSc's
+// MAT_FACTOR_CHOLESKY on the upper triangle; 2x2 pivots keep it stable for
+// an indefinite tangent): half the factor entries of L U, so about half the
+// memory, factorisation and solve time (MUMPS users' guide, ICNTL and SYM;
+// Amestoy et al. 2001 §2). Symmetry is checked on the values at every
+// factorisation (every rank holds the same matrix, so all decide alike); a
+// matrix that is not symmetric gets L U, analysed again if the last analysis
+// was symmetric.
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 
@@ -25,6 +36,7 @@
 #include "csr_copy.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <chrono>
 #include <stdexcept>
@@ -45,6 +57,31 @@ namespace poundfe
       if (code != 0)
         throw std::runtime_error(std::string("PETSc: ") + call + " failed (error " +
                                  std::to_string(code) + ")");
+    }
+
+    /// Whether `matrix` equals its transpose to round-off: each off-diagonal
+    /// entry and its mirror (0 where it is not stored) within 1e-13 of the
+    /// larger of their two diagonal entries. The assembly adds k_ij and k_ji
+    /// in different orders, so exact equality would be too strict; a
+    /// difference at that level changes the solution far less than the
+    /// pivot order does.
+    bool
+    is_symmetric(const SparseMatrix &matrix)
+    {
+      if (matrix.rows() != matrix.cols())
+        return false;
+      for (Eigen::Index column = 0; column < matrix.outerSize(); ++column)
+        for (SparseMatrix::InnerIterator entry(matrix, column); entry; ++entry)
+          {
+            const Eigen::Index row = entry.row();
+            if (row == column)
+              continue;
+            const double scale = std::max(std::abs(matrix.coeff(row, row)),
+                                          std::abs(matrix.coeff(column, column)));
+            if (std::abs(entry.value() - matrix.coeff(column, row)) > 1e-13 * scale)
+              return false;
+          }
+      return true;
     }
 
     /// Seconds since `start`, added to `total`.
@@ -78,9 +115,14 @@ namespace poundfe
       {
         ScopedTime time(profile.analysis_time);
         destroy();
+        symmetric = is_symmetric(matrix);
         copy_local_rows(matrix);
-        check(MatLUFactorSymbolic(factor, petsc_matrix, nullptr, nullptr, &info),
-              "MatLUFactorSymbolic");
+        if (symmetric)
+          check(MatCholeskyFactorSymbolic(factor, petsc_matrix, nullptr, &info),
+                "MatCholeskyFactorSymbolic");
+        else
+          check(MatLUFactorSymbolic(factor, petsc_matrix, nullptr, nullptr, &info),
+                "MatLUFactorSymbolic");
         throw_if_failed("analysis");
         ++profile.analyses;
       }
@@ -91,11 +133,18 @@ namespace poundfe
         ScopedTime time(profile.factorization_time);
         Assert(petsc_matrix != nullptr, dealii::ExcMessage("analyze() first"));
         AssertDimension(matrix.nonZeros(), csr.n_nonzeros);
+        if (symmetric && !is_symmetric(matrix)) // e.g. a friction tangent: L U
+          analyze(matrix);
         set_values(matrix);
-        check(MatLUFactorNumeric(factor, petsc_matrix, &info), "MatLUFactorNumeric");
+        if (symmetric)
+          check(MatCholeskyFactorNumeric(factor, petsc_matrix, &info), "MatCholeskyFactorNumeric");
+        else
+          check(MatLUFactorNumeric(factor, petsc_matrix, &info), "MatLUFactorNumeric");
         throw_if_failed("factorisation");
         record_memory();
         ++profile.factorizations;
+        if (symmetric)
+          ++profile.symmetric_factorizations;
       }
 
       void
@@ -173,7 +222,10 @@ namespace poundfe
               "MatSetOption");
         check(MatCreateVecs(petsc_matrix, &solution, &rhs), "MatCreateVecs");
         check(VecScatterCreateToAll(solution, &to_all, &gathered), "VecScatterCreateToAll");
-        check(MatGetFactor(petsc_matrix, MATSOLVERMUMPS, MAT_FACTOR_LU, &factor),
+        if (symmetric) // PETSc then hands MUMPS the upper triangle only
+          check(MatSetOption(petsc_matrix, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+        check(MatGetFactor(petsc_matrix, MATSOLVERMUMPS,
+                           symmetric ? MAT_FACTOR_CHOLESKY : MAT_FACTOR_LU, &factor),
               "MatGetFactor (is PETSc built with MUMPS?)");
         check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
       }
@@ -240,6 +292,7 @@ namespace poundfe
       const MPI_Comm        communicator;
       PetscInt              first_row = 0, end_row = 0;
       CsrCopy<PetscInt>     csr; // this rank's rows
+      bool                  symmetric    = false; // of the last analysis: L D L^T
       Mat                   petsc_matrix = nullptr, factor = nullptr;
       Vec                   rhs = nullptr, solution = nullptr, gathered = nullptr;
       VecScatter            to_all = nullptr;

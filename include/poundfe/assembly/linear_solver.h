@@ -97,6 +97,7 @@ namespace poundfe
   struct DistributedSolverProfile
   {
     unsigned long analyses = 0, factorizations = 0, solves = 0;
+    unsigned long symmetric_factorizations = 0; // L D L^T (MUMPS SYM = 2)
     double        analysis_time = 0, factorization_time = 0, solve_time = 0;
     double        factor_megabytes_per_rank = 0; // MUMPS INFOG(21)
     double        factor_megabytes_total    = 0; // MUMPS INFOG(22)
