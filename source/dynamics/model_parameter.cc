@@ -45,6 +45,7 @@ namespace poundfe
       "3D frames: Building b/Column E[i] (G, A, I, Iz, J, Avy, Avz, mass per length), Building "
       "b/Beam E[i] (the same), meshes: Building b/Group E[i] (A, I, mass per length; 3D: G, "
       "Iz, J too), 3D: Building b/Plan/Polar moments[i] (typed ones), Building "
+      "b/Plan/Resisting planes/k[i] (u_y; typed ones), Building "
       "b/Foundation/ENTRY (Shear-wave velocity, Soil density, Poisson ratio, Length, Width, "
       "Embedment, Horizontal stiffness, Rocking stiffness, Vertical stiffness, their dampings, "
       "Mass, Rotary inertia; 3D: the y, x and torsional ones, Rotary inertia x, Polar inertia), "
@@ -312,16 +313,20 @@ namespace poundfe
       return p.entry < 0 || all.empty() ? all : std::vector<unsigned int>{all.at(p.entry)};
     }
 
-    /// The resisting planes of building b (a 3D shear building) in the storey
-    /// `p` names (all, or one).
+    /// The resisting planes of building b (a 3D shear building) `p` names:
+    /// those of its storey (a storey entry) or its typed plane in every
+    /// storey (resisting_plane); all when p.entry < 0.
     template <typename ModelType> // of a const model: read only
     auto
     named_planes(const ModelParameter &p, ModelType &model)
     {
       std::vector<decltype(&model.plane_links.front())> result;
       for (auto &link : model.plane_links)
-        if (link.building == p.building && (p.entry < 0 || int(link.storey) == p.entry + 1))
-          result.push_back(&link);
+        {
+          const unsigned int index = p.kind == Kind::resisting_plane ? link.plane : link.storey;
+          if (link.building == p.building && (p.entry < 0 || int(index) == p.entry + 1))
+            result.push_back(&link);
+        }
       return result;
     }
 
@@ -735,6 +740,14 @@ namespace poundfe
             for (PlaneLink *plane : named_planes(p, model)) // 3D: four planes, k/2 each
               plane->stiffness = plane->hysteresis.stiffness = 0.5 * value;
             return;
+          case Kind::resisting_plane: // as add_plane_links sets a typed plane
+            require_in_range(p, value);
+            for (PlaneLink *plane : named_planes(p, model))
+              if (p.plane_yield_drift)
+                plane->hysteresis.yield_deformation = value;
+              else
+                plane->stiffness = plane->hysteresis.stiffness = value;
+            return;
           case Kind::storey_damping:
             require_in_range(p, value);
             for (const unsigned int l : named_storeys(p, model))
@@ -845,7 +858,8 @@ namespace poundfe
       if (!p.inputs->model.buildings[p.building].plan.planes.empty())
         throw std::invalid_argument("'" + p.path + "': building '" + building.name +
                                     "' has its Plan/Resisting planes typed (each with its k "
-                                    "and u_y), which the storey entries do not set");
+                                    "and u_y), which the storey entries do not set (vary "
+                                    "Plan/Resisting planes/k[i] or u_y[i])");
       if (p.entry >= int(building.floors.size()))
         throw std::invalid_argument("'" + p.path + "': building '" + building.name +
                                     "' has storeys 1.." + std::to_string(building.floors.size()));
@@ -855,6 +869,46 @@ namespace poundfe
             throw std::invalid_argument("'" + p.path + "': a storey of building '" +
                                         building.name + "' is elastic (no yield drift in the "
                                         "input)");
+      return p;
+    }
+
+    /// "Plan/Resisting planes/FIELD[i]" of a 3D shear building whose planes
+    /// are typed: FIELD k or u_y of plane i (as listed) in every storey
+    /// (plan_builder.cc's storey_planes gives each storey the typed list).
+    ModelParameter
+    resisting_plane_parameter(ModelParameter p, const std::string &field, const Model &model)
+    {
+      const Building &building = model.buildings[p.building];
+      if (field == "x" || field == "y" || field == "angle")
+        throw std::invalid_argument("'" + p.path + "' is the model's geometry (where the plane "
+                                    "acts), which a realization does not move; vary k or u_y");
+      if (field != "k" && field != "u_y")
+        throw std::invalid_argument("'" + p.path + "': name a field of the typed planes, "
+                                    "'Plan/Resisting planes/FIELD[i]' with FIELD one of k, u_y");
+      p.kind              = Kind::resisting_plane;
+      p.plane_yield_drift = field == "u_y";
+      if (std::none_of(model.plane_links.begin(), model.plane_links.end(),
+                       [&](const PlaneLink &l) { return l.building == p.building; }))
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' is not a 3D shear building (no resisting planes)");
+      if (!p.inputs)
+        throw std::invalid_argument("'" + p.path + "' needs the input the model was built "
+                                    "from (whether its resisting planes are typed)");
+      const std::size_t n = p.inputs->model.buildings[p.building].plan.planes.size();
+      if (n == 0)
+        throw std::invalid_argument(
+          "'" + p.path + "': building '" + building.name + "' has no typed Plan/Resisting "
+          "planes: its default four planes per storey follow Storey stiffnesses and Storey "
+          "yield drifts (vary those)");
+      if (p.entry >= int(n))
+        throw std::invalid_argument("'" + p.path + "': building '" + building.name +
+                                    "' has resisting planes 1.." + std::to_string(n));
+      if (p.plane_yield_drift)
+        for (const PlaneLink *link : named_planes(p, model))
+          if (!link->hysteretic)
+            throw std::invalid_argument("'" + p.path + "': plane " +
+                                        std::to_string(link->plane) + " of building '" +
+                                        building.name + "' is elastic (no u_y in the input)");
       return p;
     }
 
@@ -1231,6 +1285,8 @@ namespace poundfe
         }
       if (entry == "Plan/Polar moments")
         return polar_moment_parameter(p, model);
+      if (entry.rfind("Plan/Resisting planes/", 0) == 0)
+        return resisting_plane_parameter(p, entry.substr(22), model);
       if (entry.rfind("Column ", 0) == 0 || entry.rfind("Beam ", 0) == 0)
         return section_parameter(p, entry, model);
       if (entry.rfind("Group ", 0) == 0)
@@ -1293,7 +1349,8 @@ namespace poundfe
            kind == Kind::polar_moment || kind == Kind::member_section || kind == Kind::hinge_stiffness ||
            kind == Kind::hinge_stiffness_factor || kind == Kind::member_section_3d ||
            (kind == Kind::foundation_entry && foundation_matrices) ||
-           (kind == Kind::spring_entry && spring_field == &SpringLawParameters::stiffness);
+           (kind == Kind::spring_entry && spring_field == &SpringLawParameters::stiffness) ||
+           (kind == Kind::resisting_plane && !plane_yield_drift);
   }
 
   bool
@@ -1574,6 +1631,10 @@ namespace poundfe
           return model.springs[named_list_members(p, model).front()].law.*p.spring_field;
         case Kind::bumper_entry:
           return model.bumper.*p.bumper_field;
+        case Kind::resisting_plane:
+          return p.plane_yield_drift ?
+                   named_planes(p, model).front()->hysteresis.yield_deformation :
+                   named_planes(p, model).front()->stiffness;
         case Kind::member_section:
           for (const Member &member : model.members)
             if (named_member(p, member))

@@ -477,6 +477,59 @@ BOOST_AUTO_TEST_CASE(random_3d_shear_storeys)
                        2);
 }
 
+namespace
+{
+  /// Typed resisting planes of the shear building (6 m x 5 m), hysteretic,
+  /// stiffer in y; 'x y angle k u_y' as `Plan/Resisting planes` reads them.
+  const std::string typed_planes =
+    "0 -2.5 0 2e7 0.004; 0 2.5 0 2.5e7 0.003; -3 0 90 1.5e7 0.004; 3 0 90 1.5e7 0.005";
+
+  /// typed_planes with k[i] and u_y[i] (1-based) given.
+  std::string
+  planes_with(const std::vector<double> &k, const std::vector<double> &u_y)
+  {
+    const char *const places[] = {"0 -2.5 0 ", "0 2.5 0 ", "-3 0 90 ", "3 0 90 "};
+    std::string text;
+    for (unsigned int i = 0; i < 4; ++i)
+      text += (i ? "; " : "") + std::string(places[i]) + text_of(k[i]) + " " + text_of(u_y[i]);
+    return text;
+  }
+} // namespace
+
+// The typed resisting planes of a 3D shear building: k of every plane, then
+// of plane 2 (written after it), u_y of every plane, then of plane 1, each
+// in both storeys (K, the planes' Bouc-Wen laws); then k[3] alone, with
+// the planes paired in bidirectional Bouc-Wen elements.
+BOOST_AUTO_TEST_CASE(random_typed_resisting_planes)
+{
+  const std::string variables =
+    "k: Building 2/Plan/Resisting planes/k ~ lognormal mean 2e7 cov 0.2; "
+    "k2: Building 2/Plan/Resisting planes/k[2] ~ lognormal mean 2.5e7 cov 0.2; "
+    "uy: Building 2/Plan/Resisting planes/u_y ~ uniform lower 0.002 upper 0.005; "
+    "uy1: Building 2/Plan/Resisting planes/u_y[1] ~ uniform lower 0.002 upper 0.005";
+  compare_with_rebuilt(pair_3d,
+                       {{"Building 2/Plan/Resisting planes", typed_planes},
+                        {"Random parameters/Variables", variables}},
+                       [](const std::vector<double> &x) {
+                         return Overrides{{"Building 2/Plan/Resisting planes",
+                                           planes_with({x[0], x[1], x[0], x[0]},
+                                                       {x[3], x[2], x[2], x[2]})}};
+                       },
+                       3);
+  const std::string third = "k3: Building 2/Plan/Resisting planes/k[3] ~ lognormal mean 1.5e7 "
+                            "cov 0.3";
+  compare_with_rebuilt(pair_3d,
+                       {{"Building 2/Plan/Resisting planes", typed_planes},
+                        {"Building 2/Plan/Storey law", "bidirectional Bouc-Wen"},
+                        {"Random parameters/Variables", third}},
+                       [](const std::vector<double> &x) {
+                         return Overrides{{"Building 2/Plan/Resisting planes",
+                                           planes_with({2e7, 2.5e7, x[0], 1.5e7},
+                                                       {0.004, 0.003, 0.004, 0.005})}};
+                       },
+                       2);
+}
+
 // Typed polar moments: the generated 3D frame's floor 2 (one typed value
 // for both floors), every floor of the shear building (with its floor
 // masses random too: the typed polar moment stays), then the 3D mesh's
@@ -595,9 +648,63 @@ BOOST_AUTO_TEST_CASE(refused_3d_mesh_paths_say_why)
         {{"Building 1/Plan/Polar moments[1]", "no rigid slabs"}});
   check({{"Building 2/Plan/Resisting planes",
           "0 -2.5 0 2e7 0.004; 0 2.5 0 2e7 0.004; -3 0 90 2e7 0.004; 3 0 90 2e7 0.004"}},
-        {{"Building 2/Storey stiffnesses[1]", "Resisting planes typed"},
+        {{"Building 2/Storey stiffnesses[1]", "Resisting planes/k[i]"},
          {"Building 2/Storey yield drifts", "Resisting planes typed"}});
+  // typed planes: their place is geometry, a plane not listed, a field
+  // they do not have, the u_y of an elastic plane (plane 3 has none)
+  check({{"Building 2/Plan/Resisting planes",
+          "0 -2.5 0 2e7 0.004; 0 2.5 0 2e7 0.004; -3 0 90 2e7; 3 0 90 2e7 0.004"}},
+        {{"Building 2/Plan/Resisting planes/angle[1]", "geometry"},
+         {"Building 2/Plan/Resisting planes/x", "geometry"},
+         {"Building 2/Plan/Resisting planes/k[5]", "resisting planes 1..4"},
+         {"Building 2/Plan/Resisting planes/K", "FIELD one of k, u_y"},
+         {"Building 2/Plan/Resisting planes/u_y", "plane 3 of building 'S' is elastic"},
+         {"Building 2/Plan/Resisting planes/u_y[3]", "is elastic"},
+         {"Building 1/Plan/Resisting planes/k", "not a 3D shear building"}});
+  // the default planes follow the storey entries
+  check({}, {{"Building 2/Plan/Resisting planes/k[1]", "no typed Plan/Resisting planes"}});
 }
+
+namespace
+{
+  /// -1, 0 (where the path needs > 0), infinity and NaN written into `path`
+  /// of the 3D pair (mesh_3d_pair with `typed`), and 1e308 sampled through
+  /// a realization's run, are refused naming the path (and the 1e150
+  /// bound), never a crash or a hang.
+  void
+  refuses_hostile_values(const std::string &path, const Overrides &typed)
+  {
+    const InputParameters input =
+      read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1e308 upper "
+                                            "1.5e308", typed));
+    const Analysis    analysis = prepare_analysis(input);
+    RealizationRunner runner(analysis, time_history_parameters(input));
+    attach_random_parameters(runner, input.random_parameters, input, input.model,
+                             input.contact, input.modal.eigensolver);
+    const auto origins = std::make_shared<const std::vector<HingeOrigin>>(
+      hinge_origins(analysis.model, input.model));
+    const auto inputs =
+      std::make_shared<const ModelInputs>(ModelInputs{input.model, input.contact});
+    std::vector<ModelParameter> parameter{model_parameter(path, analysis.model, origins, inputs)};
+    settle_hinge_origins(parameter, *origins, analysis.model);
+    ModelRealization realization(analysis, parameter, input.modal.eigensolver);
+    for (const double x : {-1.0, 0.0, std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::quiet_NaN()})
+      if (x != 0 || !parameter[0].can_be_zero())
+        BOOST_CHECK_EXCEPTION(realization.apply({x}), std::invalid_argument,
+                              [&](const std::invalid_argument &e) {
+                                return std::string(e.what()).find(path) != std::string::npos;
+                              });
+    // a sample beyond 1e150 in size, which no parameter file may hold,
+    // is refused naming the path (exit 1 in the commands)
+    std::vector<double> responses;
+    BOOST_CHECK_EXCEPTION(runner.run(0, responses), std::invalid_argument,
+                          [&](const std::invalid_argument &e) {
+                            return std::string(e.what()).find(path) != std::string::npos &&
+                                   std::string(e.what()).find("1e150") != std::string::npos;
+                          });
+  }
+} // namespace
 
 // Hostile sampled values on the new paths: -1, 0 (where a value must be
 // > 0), infinity, NaN and 1e308 (beyond the 1e150 a file may hold) are
@@ -613,37 +720,13 @@ BOOST_AUTO_TEST_CASE(hostile_values_on_3d_paths)
         "Building 1/Group mass per length", "Building 1/Plan/Polar moments[1]",
         "Building 2/Plan/Polar moments", "Building 1/Bouc-Wen/A", "Building 1/Bouc-Wen/n",
         "Building 2/Storey stiffnesses[1]", "Building 2/Storey yield drifts"})
-    {
-      const InputParameters input =
-        read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1e308 upper "
-                                              "1.5e308", typed));
-      const Analysis    analysis = prepare_analysis(input);
-      RealizationRunner runner(analysis, time_history_parameters(input));
-      attach_random_parameters(runner, input.random_parameters, input, input.model,
-                               input.contact, input.modal.eigensolver);
-      const auto origins = std::make_shared<const std::vector<HingeOrigin>>(
-        hinge_origins(analysis.model, input.model));
-      const auto inputs =
-        std::make_shared<const ModelInputs>(ModelInputs{input.model, input.contact});
-      std::vector<ModelParameter> parameter{model_parameter(path, analysis.model, origins, inputs)};
-      settle_hinge_origins(parameter, *origins, analysis.model);
-      ModelRealization realization(analysis, parameter, input.modal.eigensolver);
-      for (const double x : {-1.0, 0.0, std::numeric_limits<double>::infinity(),
-                             std::numeric_limits<double>::quiet_NaN()})
-        if (x != 0 || !parameter[0].can_be_zero())
-          BOOST_CHECK_EXCEPTION(realization.apply({x}), std::invalid_argument,
-                                [&](const std::invalid_argument &e) {
-                                  return std::string(e.what()).find(path) != std::string::npos;
-                                });
-      // a sample beyond 1e150 in size, which no parameter file may hold,
-      // is refused naming the path (exit 1 in the commands)
-      std::vector<double> responses;
-      BOOST_CHECK_EXCEPTION(runner.run(0, responses), std::invalid_argument,
-                            [&](const std::invalid_argument &e) {
-                              return std::string(e.what()).find(path) != std::string::npos &&
-                                     std::string(e.what()).find("1e150") != std::string::npos;
-                            });
-    }
+    refuses_hostile_values(path, typed);
+  // the typed resisting planes' k and u_y, of one plane and of every one
+  const Overrides planes = {{"Building 2/Plan/Resisting planes", typed_planes}};
+  for (const std::string path :
+       {"Building 2/Plan/Resisting planes/k[1]", "Building 2/Plan/Resisting planes/k",
+        "Building 2/Plan/Resisting planes/u_y[2]", "Building 2/Plan/Resisting planes/u_y"})
+    refuses_hostile_values(path, planes);
 }
 
 namespace

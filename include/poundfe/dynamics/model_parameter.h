@@ -58,6 +58,9 @@
 //     Building b/Storey stiffnesses[i], Storey yield drifts[i] of a 3D shear
 //                                        building: k/2 and u_y of each of the default
 //                                        four planes of storey i (K; nonlinear)
+//     Building b/Plan/Resisting planes/k[i], u_y[i]
+//                                        k, u_y of typed plane i of a 3D shear
+//                                        building, in every storey (K; nonlinear)
 //     Building b/Plan/Polar moments[i]   the typed polar moment of floor i of a 3D
 //                                        building with rigid slabs (M; the modes,
 //                                        Rayleigh and modal C, K_G under P-Delta)
@@ -152,12 +155,13 @@ namespace poundfe
       foundation_entry,  // `foundation` of building b's compliant foundation
       polar_moment,      // the typed polar moment of a 3D building's floor(s)
       spring_entry,      // `spring_field` of the Springs entry `list`
-      bumper_entry       // `bumper_field` of the bumper of every gap
+      bumper_entry,      // `bumper_field` of the bumper of every gap
+      resisting_plane    // k (or u_y: `plane_yield_drift`) of a 3D shear building's typed plane(s)
     };
     Kind         kind     = Kind::storey_stiffness;
     std::string  path;          // as written
     unsigned int building = 0;  // 0-based (storey, floor, hinge, damping: the building; separation: the left one)
-    int          entry    = -1; // 0-based storey or floor (link_entry, spring_entry: the list's entry; modal_ratio: mode); -1: all
+    int          entry    = -1; // 0-based storey or floor (link_entry, spring_entry: the list's entry; modal_ratio: mode; resisting_plane: plane); -1: all
     MemberKind               member_kind = MemberKind::column; // member_section
     double Section::*        section     = nullptr;            // member_section
     double BoucWenParameters::*shape     = nullptr;            // bouc_wen_shape
@@ -178,6 +182,8 @@ namespace poundfe
     double LinkLawParameters::*   link_field   = nullptr;
     double SpringLawParameters::* spring_field = nullptr;
     double BumperParameters::*    bumper_field = nullptr; // bumper_entry
+    /// resisting_plane: the plane's u_y (else its k); `entry` is the plane.
+    bool                          plane_yield_drift = false;
     /// The sections the model was built from (needed by the mesh sections,
     /// 3D floor masses, foundations and restitution).
     std::shared_ptr<const ModelInputs> inputs;
