@@ -3,7 +3,7 @@
 // 3D frame (its hinges' k = f 6 E I / L follows E, Iy, Iz) and of a 2D or
 // 3D mesh building's groups, the Bouc-Wen shape of 3D hinges (uniaxial and
 // biaxial) and resisting planes, a 3D shear building's storeys (its planes'
-// k/2 and u_y), typed polar moments, 3D floor masses (the polar moment m (Lx^2 + Ly^2)/12
+// k/2 and u_y; typed planes' k and u_y), typed polar moments, 3D floor masses (the polar moment m (Lx^2 + Ly^2)/12
 // follows the mass, a typed one stays), masses with friction elements (the
 // stick dashpot 2 sqrt(k_s M_ii) follows), the friction law's entries, the
 // contact restitution (the damping calibrated again), compliant
