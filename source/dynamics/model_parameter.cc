@@ -32,7 +32,7 @@ namespace poundfe
     const std::string known_paths =
       "Building b/Storey stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
       "drifts[i], Building b/Hinges/Yield moment, Building b/Damping/Damping ratio, "
-      "Building b/Floor masses[i], Model/Separations[i], Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
+      "Building b/Floor masses[i], Model/Separations[i], Contact/Barriers/gap[i], Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
       "Friction/Kinetic coefficient, Links/Viscous dampers[i] (c), Links/LIST/FIELD[i] "
       "(Viscous dampers/c, alpha; Kelvin-Voigt links/k, c, alpha; Maxwell links/k, c; "
       "Elastic-plastic links/k, Fy, r; Soil coupling/k, c; Rocking soil coupling/k, c), "
@@ -274,6 +274,19 @@ namespace poundfe
             result.push_back(g);
         }
       return result;
+    }
+
+    /// Indices in model.gaps of the Contact/Barriers entries `p` names (all,
+    /// or one): the gaps with a barrier side (-1), in the order listed
+    /// (model_builder.cc adds them so, after the gaps between buildings).
+    std::vector<unsigned int>
+    named_barriers(const ModelParameter &p, const Model &model)
+    {
+      std::vector<unsigned int> all;
+      for (unsigned int g = 0; g < model.gaps.size(); ++g)
+        if (model.gaps[g].nodes[0] < 0 || model.gaps[g].nodes[1] < 0)
+          all.push_back(g);
+      return p.entry < 0 || all.empty() ? all : std::vector<unsigned int>{all.at(p.entry)};
     }
 
     /// Indices in model.building_links (a `Links` list) or model.springs (a
@@ -780,6 +793,11 @@ namespace poundfe
             for (const unsigned int g : gaps_after(model, p.building))
               model.gaps[g].initial_gap = value;
             return;
+          case Kind::barrier_gap:
+            require_in_range(p, value);
+            for (const unsigned int g : named_barriers(p, model))
+              model.gaps[g].initial_gap = value;
+            return;
           case Kind::contact_stiffness:
             require_in_range(p, value);
             model.contact.stiffness = value;
@@ -1248,6 +1266,25 @@ namespace poundfe
       return p;
     }
 
+    /// "Contact/Barriers/gap[i]": the gap of barrier i (its building, floor
+    /// and side place it).
+    ModelParameter
+    barrier_parameter(ModelParameter p, const std::string &entry, const Model &model)
+    {
+      if (entry != "Contact/Barriers/gap")
+        throw std::invalid_argument("'" + p.path + "': the barriers' random field is their gap, "
+                                    "'Contact/Barriers/gap[i]' (building, floor and side "
+                                    "place a barrier)");
+      p.kind                = Kind::barrier_gap;
+      const std::size_t n   = named_barriers(ModelParameter{}, model).size();
+      if (n == 0)
+        throw std::invalid_argument("'" + p.path + "': the model has no Contact/Barriers");
+      if (p.entry >= int(n))
+        throw std::invalid_argument("'" + p.path + "': the model has barriers 1.." +
+                                    std::to_string(n));
+      return p;
+    }
+
     /// The parameter of a "Building b/ENTRY" path.
     ModelParameter
     building_parameter(ModelParameter p, const std::string &entry, const bool indexed,
@@ -1396,6 +1433,7 @@ namespace poundfe
         return {0, shape != &BoucWenParameters::A, infinity};
       }
     const bool zero = kind == Kind::storey_damping || kind == Kind::separation ||
+                      kind == Kind::barrier_gap ||
                       kind == Kind::contact_damping || kind == Kind::static_friction ||
                       kind == Kind::kinetic_friction ||
                       kind == Kind::rayleigh_a0 || kind == Kind::rayleigh_a1 ||
@@ -1526,6 +1564,8 @@ namespace poundfe
                                       std::to_string(p.building + 2));
         return p;
       }
+    if (entry.rfind("Contact/Barriers", 0) == 0)
+      return barrier_parameter(p, entry, model);
     if (entry == "Contact/Stiffness" || entry == "Contact/Damping")
       {
         no_entry();
@@ -1617,6 +1657,8 @@ namespace poundfe
           return model.buildings[p.building].damping.damping_ratio;
         case Kind::separation:
           return model.gaps[gaps_after(model, p.building).front()].initial_gap;
+        case Kind::barrier_gap:
+          return model.gaps[named_barriers(p, model).front()].initial_gap;
         case Kind::contact_stiffness:
           return model.contact.stiffness;
         case Kind::contact_damping:
@@ -1737,7 +1779,8 @@ namespace poundfe
                            p.kind == Kind::kinetic_friction;
         springs_changed  = springs_changed || p.kind == Kind::spring_entry;
         bumper_or_gap_changed =
-          bumper_or_gap_changed || p.kind == Kind::bumper_entry || p.kind == Kind::separation;
+          bumper_or_gap_changed || p.kind == Kind::bumper_entry || p.kind == Kind::separation ||
+          p.kind == Kind::barrier_gap;
         if (p.kind == Kind::foundation_entry)
           foundation_changed[p.building] = true;
       }

@@ -957,6 +957,57 @@ BOOST_AUTO_TEST_CASE(hostile_values_of_springs_links_and_bumpers)
   BOOST_CHECK_THROW(realization({"Model/Separations"}).apply({0.003}), std::invalid_argument);
 }
 
+// Rigid barriers: every barrier's gap, then barrier 2's (written after it),
+// with the separation between the buildings random too (the element's gap;
+// no assembly). Then hostile gaps: -1, infinity, NaN, 1e308 refused naming
+// the path, 0 (a barrier touching the floor) taken; under a 4 mm bumper a
+// 3 mm gap refused naming Bumpers/Thickness.
+BOOST_AUTO_TEST_CASE(random_barrier_gaps)
+{
+  const Overrides barriers = {{"Contact/Barriers", "1 2 left 0.006; 2 1 right 0.008"}};
+  const std::string variables =
+    "g: Contact/Barriers/gap ~ lognormal mean 0.006 cov 0.4; "
+    "g2: Contact/Barriers/gap[2] ~ uniform lower 0.002 upper 0.01; "
+    "s: Model/Separations ~ lognormal mean 0.01 cov 0.4";
+  const OverridesOf values = [](const std::vector<double> &x) {
+    return Overrides{{"Contact/Barriers", "1 2 left " + text_of(x[0]) + "; 2 1 right " +
+                                            text_of(x[1])},
+                     {"Model/Separations", text_of(x[2])}};
+  };
+  BOOST_TEST(compare_with_rebuilt(shear_pair, with_variables(barriers, variables), values, 4) >
+             0u);
+
+  const InputParameters input =
+    read_parameters(shear_pair, with_variables(joined({barriers, linear_bumper}), ""));
+  const Analysis analysis = prepare_analysis(input);
+  for (const std::string path : {"Contact/Barriers/gap", "Contact/Barriers/gap[1]"})
+    {
+      const ModelParameter gap = model_parameter(path, analysis.model);
+      BOOST_TEST(!gap.enters_linear_part());
+      BOOST_TEST(model_parameter_value(gap, analysis.model) == 0.006);
+      ModelRealization r(analysis, {gap}, input.modal.eigensolver);
+      for (const double x : {-1.0, std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::quiet_NaN(), 1e308})
+        BOOST_CHECK_EXCEPTION(r.apply({x}), std::invalid_argument,
+                              [&](const std::invalid_argument &e) {
+                                return std::string(e.what()).find(path) != std::string::npos;
+                              });
+      BOOST_CHECK_EXCEPTION(r.apply({0.003}), std::invalid_argument,
+                            [](const std::invalid_argument &e) {
+                              return std::string(e.what()).find("Bumpers/Thickness") !=
+                                     std::string::npos;
+                            });
+      BOOST_CHECK_NO_THROW(r.apply({0.005}));
+      BOOST_TEST(model_parameter_value(r.parameters()[0], r.analysis().model) == 0.005);
+    }
+  const InputParameters bare_input =
+    read_parameters(shear_pair, with_variables(barriers, ""));
+  const Analysis   bare = prepare_analysis(bare_input);
+  ModelRealization touching(bare, {model_parameter("Contact/Barriers/gap[2]", bare.model)},
+                            bare_input.modal.eigensolver);
+  BOOST_CHECK_NO_THROW(touching.apply({0.0}));
+}
+
 // Paths of springs, links and bumpers that the model does not have, or that
 // name no field, say why.
 BOOST_AUTO_TEST_CASE(refused_device_paths_say_why)
@@ -985,6 +1036,19 @@ BOOST_AUTO_TEST_CASE(refused_device_paths_say_why)
   refused("Links/Soil coupling/alpha", "FIELD one of k, c");
   refused("Bumpers/Thickness", "no bumper");
   refused("Friction/Normal force from SD spring", "not a parameter");
+  refused("Contact/Barriers/gap", "no Contact/Barriers");
+  refused("Contact/Barriers", "'Contact/Barriers/gap[i]'");
+  const InputParameters barrier_input =
+    read_parameters(shear_pair, with_variables({{"Contact/Barriers", "1 2 left 0.006"}}, ""));
+  const Analysis barrier = prepare_analysis(barrier_input);
+  BOOST_CHECK_EXCEPTION(model_parameter("Contact/Barriers/gap[2]", barrier.model),
+                        std::invalid_argument, [](const std::invalid_argument &e) {
+                          return std::string(e.what()).find("barriers 1..1") != std::string::npos;
+                        });
+  BOOST_CHECK_EXCEPTION(model_parameter("Contact/Barriers/floor[1]", barrier.model),
+                        std::invalid_argument, [](const std::invalid_argument &e) {
+                          return std::string(e.what()).find("place a barrier") != std::string::npos;
+                        });
   const InputParameters table_input = read_parameters(
     shear_pair, with_variables({{"Bumpers/Law", "table"},
                                 {"Bumpers/Thickness", "0.004"},

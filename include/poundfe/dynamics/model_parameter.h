@@ -12,6 +12,8 @@
 //     Building b/Hinges/Yield moment     M_y of every hinge of b: u_y = M_y / k (nonlinear)
 //     Building b/Damping/Damping ratio   zeta of b's Rayleigh damping (C)
 //     Model/Separations[i]               gap between buildings i and i+1 (nonlinear)
+//     Contact/Barriers/gap[i]            the gap of barrier i (nonlinear; a bumper
+//                                        no thicker)
 //     Contact/Stiffness, Contact/Damping the contact law of every gap (nonlinear)
 //     Friction/Static coefficient, Friction/Kinetic coefficient (nonlinear)
 //     Links/LIST/FIELD[i]                FIELD of entry i of the Links entry LIST
@@ -156,12 +158,13 @@ namespace poundfe
       polar_moment,      // the typed polar moment of a 3D building's floor(s)
       spring_entry,      // `spring_field` of the Springs entry `list`
       bumper_entry,      // `bumper_field` of the bumper of every gap
-      resisting_plane    // k (or u_y: `plane_yield_drift`) of a 3D shear building's typed plane(s)
+      resisting_plane,   // k (or u_y: `plane_yield_drift`) of a 3D shear building's typed plane(s)
+      barrier_gap        // the gap of Contact/Barriers entry `entry` (all: -1)
     };
     Kind         kind     = Kind::storey_stiffness;
     std::string  path;          // as written
     unsigned int building = 0;  // 0-based (storey, floor, hinge, damping: the building; separation: the left one)
-    int          entry    = -1; // 0-based storey or floor (link_entry, spring_entry: the list's entry; modal_ratio: mode; resisting_plane: plane); -1: all
+    int          entry    = -1; // 0-based storey or floor (link_entry, spring_entry: the list's entry; modal_ratio: mode; resisting_plane: plane; barrier_gap: barrier); -1: all
     MemberKind               member_kind = MemberKind::column; // member_section
     double Section::*        section     = nullptr;            // member_section
     double BoucWenParameters::*shape     = nullptr;            // bouc_wen_shape
