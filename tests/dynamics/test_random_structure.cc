@@ -10,7 +10,7 @@
 // foundations (the impedances from the soil, or typed, and the inertias),
 // springs to the ground (K, k1 in the linear K; a friction element's N from
 // the SD spring follows), every field of every kind of link and soil
-// coupling, and the bumper in the gaps.
+// coupling, the bumper in the gaps and the rigid barriers' gaps.
 // Each realization, written in place, must give the responses of the model
 // built from the file with the sampled values (overrides), under the same
 // loading normals: the independent route is the whole builder,
