@@ -32,7 +32,8 @@ namespace poundfe
     const std::string known_paths =
       "Building b/Storey stiffnesses[i], Building b/Storey damping[i], Building b/Storey yield "
       "drifts[i], Building b/Hinges/Yield moment, Building b/Damping/Damping ratio, "
-      "Building b/Floor masses[i], Model/Separations[i], Contact/Barriers/gap[i], Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
+      "Building b/Floor masses[i], Model/Separations[i], Contact/Barriers/gap[i], "
+      "Contact/Stiffness, Contact/Damping, Friction/Static coefficient, "
       "Friction/Kinetic coefficient, Links/Viscous dampers[i] (c), Links/LIST/FIELD[i] "
       "(Viscous dampers/c, alpha; Kelvin-Voigt links/k, c, alpha; Maxwell links/k, c; "
       "Elastic-plastic links/k, Fy, r; Soil coupling/k, c; Rocking soil coupling/k, c), "
