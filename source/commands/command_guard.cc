@@ -9,6 +9,7 @@
 #include <poundfe/output/plots.h>
 
 #include <fstream>
+#include <stdexcept>
 #include <sstream>
 
 #include <algorithm>
@@ -119,6 +120,22 @@ namespace poundfe
         std::cerr << "poundfe: " << c.command << " interrupted"
                   << (said.empty() ? "" : " (" + said + ")") << "\n";
         return interrupted_exit_status();
+      }
+    catch (const InputError &)
+      {
+        // refused after the first write: bad input writes nothing
+        if (c.writes)
+          discard_output_directory(c.directory);
+        throw;
+      }
+    catch (const std::invalid_argument &)
+      {
+        // a sample refused when its realization is built (mu_k > mu_s, a
+        // bumper thicker than its gap: model_parameter.h), which main reports
+        // as bad input, exit 1: nothing written either
+        if (c.writes)
+          discard_output_directory(c.directory);
+        throw;
       }
     catch (const OutputError &e)
       {

@@ -31,6 +31,7 @@ namespace poundfe
       int                   descriptor = -1;
       std::set<std::string> listed;
       std::vector<std::string> order; // `listed` in the order they were added
+      std::size_t              n_kept = 0; // the first n_kept of `order`: kept from the last run
 
       ~Manifest()
       {
@@ -201,7 +202,31 @@ namespace poundfe
     std::sort(kept.begin(), kept.end());
     for (const std::string &entry : kept)
       manifest->add(entry);
+    manifest->n_kept = manifest->order.size();
     all.push_back(std::move(manifest));
+  }
+
+  void
+  discard_output_directory(const std::string &directory)
+  {
+    const fs::path root  = normal(directory);
+    auto          &all   = manifests();
+    const auto     found = std::find_if(all.begin(), all.end(),
+                                    [&](const auto &m) { return m->directory == root; });
+    if (found == all.end() || (*found)->n_kept > 0) // nothing written, or a resumed table
+      return;
+    std::vector<std::string> entries = (*found)->order;
+    all.erase(found); // closes the manifest
+    // files first, then the directories, deepest first (parents are listed
+    // before what they hold)
+    std::reverse(entries.begin(), entries.end());
+    std::error_code error; // what cannot go stays: never worse than before
+    for (const std::string &entry : entries)
+      if (removable(entry))
+        for (const fs::path &file : {root / entry, fs::path((root / entry).string() + ".tmp")})
+          fs::remove(file, error);
+    fs::remove(root / output_manifest_name, error);
+    fs::remove(root, error); // only when empty: the user's own files stay
   }
 
   void

@@ -55,6 +55,27 @@ namespace poundfe
              (range.upper_included ? highest > range.upper : highest >= range.upper);
     }
 
+    /// Whether `d` can sample a value beyond 1e150 in size (largest_model_value),
+    /// which no model entry may take (the builder refuses it, or the K or M it
+    /// enters): a uniform reaching there, or another whose mean (a truncated
+    /// normal's: mu, unless its bounds stay inside) is within ten standard
+    /// deviations of it.
+    bool
+    samples_beyond_model_values(const Distribution &d)
+    {
+      const std::vector<double> &p = d.parameters();
+      switch (d.type())
+        {
+          case DistributionType::uniform:
+            return std::max(std::abs(p[0]), std::abs(p[1])) > largest_model_value;
+          case DistributionType::truncated_normal: // (mu, sigma, lower, upper)
+            return std::min(std::max(std::abs(p[2]), std::abs(p[3])),
+                            std::abs(p[0]) + 10 * p[1]) > largest_model_value;
+          default:
+            return !(std::abs(d.mean()) + 10 * d.standard_deviation() <= largest_model_value);
+        }
+    }
+
     /// "<= 0", "< 1", "< 0 or > 1": the values outside the range.
     std::string
     outside_text(const ModelParameter::Range &range)
@@ -291,6 +312,11 @@ namespace poundfe
                               (std::isfinite(range.upper) ? "" : "a lognormal or Weibull, or ") +
                               "a uniform or truncated normal with lower " + inside_text(range) +
                               ")");
+        if (samples_beyond_model_values(p.distributions[i]))
+          input.fail(entry, "variable '" + p.names[i] + "': a " +
+                              distribution_name(p.distributions[i].type()) +
+                              " distribution can sample values beyond 1e150 in size, which '" +
+                              p.paths[i] + "' cannot take (no model entry may)");
       }
     settle_hinge_origins(parameters, *origins, model);
     const auto nataf = std::make_shared<const NatafTransformation>(p.distributions, p.correlation);

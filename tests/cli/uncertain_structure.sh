@@ -10,7 +10,8 @@
 #    geometry, a restitution without restitution damping, no foundation,
 #    no bumper, a Links list without its field, no SD spring,
 #    a distribution that samples impossible values, impossible distribution
-#    parameters, a limit state naming an unknown response): exit 1, one
+#    parameters, a limit state naming an unknown response, a sample beyond
+#    1e150 refused when its realization is built): exit 1, one
 #    message naming Random parameters/..., nothing written.
 set -eu
 poundfe=$1 mpirun=$2 input=$3
@@ -86,6 +87,24 @@ bad no-foundation 'v: Building 2/Foundation/Shear-wave velocity ~ lognormal mean
 bad no-bumper 't: Bumpers/Thickness ~ uniform lower 0.001 upper 0.002' "no bumper"
 bad link-without-field 'k: Links/Maxwell links ~ lognormal mean 1e6 cov 0.2' "FIELD one of k, c"
 bad no-sd-spring 'K: Springs/SD springs/K ~ lognormal mean 1e6 cov 0.2' "no entries of 'Springs/SD springs'"
+# refused only when a realization applies its sample, after the command has
+# begun writing: its files are removed again (bad input writes nothing)
+bad huge-sample 'k: Building 1/Storey stiffnesses[1] ~ uniform lower 1e299 upper 1e300; gap: Model/Separations[1] ~ lognormal mean 0.01 cov 0.5' "1e150"
+# A sample refused only when its realization is built, after the command has
+# begun writing (mu_k > mu_s drawn from two uniforms): exit 1, one message,
+# and the files it wrote (realizations.csv and its record) removed again.
+awk -v v="mus: Friction/Static coefficient ~ uniform lower 0.2 upper 0.4; muk: Friction/Kinetic coefficient ~ uniform lower 0.2 upper 0.4; gap: Model/Separations[1] ~ lognormal mean 0.01 cov 0.5" \
+  '/set Variables =/ { print "  set Variables = " v; skip = 1; next }
+   skip && /\\$/ { next } skip { skip = 0; next } { print }' "$input" | sed '/set Correlation =/d' > "$work/late.prm"
+printf 'subsection Friction\n  set Surfaces = 2 1 0\n  set Static coefficient = 0.35\n  set Kinetic coefficient = 0.25\n  set Normal force = 1e4\nend\n' >> "$work/late.prm"
+set +e
+"$poundfe" montecarlo "$work/late.prm" --output "$work/late" > /dev/null 2> "$work/late.err"
+status=$?
+set -e
+[ $status -eq 1 ] && [ "$(wc -l < "$work/late.err")" -eq 1 ] && grep -q "mu_k = .* > mu_s" "$work/late.err" ||
+  fail "late refusal: exit $status, $(cat "$work/late.err")"
+[ ! -e "$work/late" ] || fail "late refusal: left $(ls -A "$work/late")"
+echo "ok   a sample refused mid-run: exit 1, $(cat "$work/late.err"), its files removed"
 sed 's/contact: 6e4 - peak_contact_force - 0\*gap/contact: 6e4 - peak_force/' "$input" > "$work/unknown-response.prm"
 set +e
 "$poundfe" montecarlo "$work/unknown-response.prm" --output "$work/unknown-response" > /dev/null 2> "$work/unknown-response.err"

@@ -32,6 +32,14 @@ namespace poundfe
   void prepare_output_directory(const std::string              &directory,
                                 const std::vector<std::string> &resumed = {});
 
+  /// Undoes the output of the command under way in `directory` (prepared by
+  /// this process) after bad input was found late, e.g. a sampled value the
+  /// model cannot take (bad input writes nothing): removes every file and
+  /// subdirectory it listed, the manifest, and the directory when that leaves
+  /// it empty. Keeps everything when the command resumed a table there (the
+  /// earlier runs' rows are the user's results). Never throws.
+  void discard_output_directory(const std::string &directory);
+
   /// Names the output directory of the command under way (the command
   /// guard does, for every command): the first file or directory created in
   /// it prepares it (prepare_output_directory) unless the command prepared it
