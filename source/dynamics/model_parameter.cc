@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <regex>
 #include <stdexcept>
 #include <type_traits>
@@ -1482,6 +1483,72 @@ namespace poundfe
           }
       return 0;
     }
+    /// An entry that names one model-wide parameter refuses "[i]".
+    void
+    refuse_entry(const ModelParameter &p, const std::string &entry, const bool indexed)
+    {
+      if (indexed)
+        throw std::invalid_argument("'" + p.path + "': '" + entry + "' takes no [entry]");
+    }
+
+    /// Contact/Stiffness, Damping, Coefficient of restitution and the
+    /// Friction/ entries; nothing when `entry` is none of them.
+    std::optional<ModelParameter>
+    contact_or_friction_parameter(ModelParameter p, const std::string &entry, const bool indexed,
+                                  const Model &model)
+    {
+      if (entry == "Contact/Stiffness" || entry == "Contact/Damping")
+        {
+          refuse_entry(p, entry, indexed);
+          p.kind = entry == "Contact/Stiffness" ? Kind::contact_stiffness : Kind::contact_damping;
+          if (model.gaps.empty())
+            throw std::invalid_argument("'" + p.path +
+                                        "': the model has no contact (Contact/Law)");
+          return p;
+        }
+      if (entry == "Friction/Static coefficient" || entry == "Friction/Kinetic coefficient")
+        {
+          refuse_entry(p, entry, indexed);
+          p.kind = entry == "Friction/Static coefficient" ? Kind::static_friction :
+                                                            Kind::kinetic_friction;
+          if (model.friction_surfaces.empty())
+            throw std::invalid_argument("'" + p.path + "': the model has no friction surfaces");
+          return p;
+        }
+      if (entry == "Contact/Coefficient of restitution")
+        {
+          refuse_entry(p, entry, indexed);
+          p.kind = Kind::contact_restitution;
+          if (model.gaps.empty())
+            throw std::invalid_argument("'" + p.path +
+                                        "': the model has no contact (Contact/Law)");
+          if (!p.inputs)
+            throw std::invalid_argument("'" + p.path +
+                                        "' needs the input the model was built from");
+          const ContactParameters &contact = p.inputs->contact;
+          if (!contact_law_is_damped(contact.law) ||
+              contact.damping_from == ContactDampingFrom::given)
+            throw std::invalid_argument("'" + p.path + "': the contact damping does not come from "
+                                        "the restitution (an undamped law, or Contact/Damping "
+                                        "from = given)");
+          return p;
+        }
+      if (entry.rfind("Friction/", 0) == 0)
+        {
+          const auto found = std::find_if(friction_entries.begin(), friction_entries.end(),
+                                          [&](const auto &e) { return entry.substr(9) == e.name; });
+          if (found != friction_entries.end())
+            {
+              refuse_entry(p, entry, indexed);
+              p.kind     = Kind::friction_entry;
+              p.friction = found->at;
+              if (model.friction_surfaces.empty())
+                throw std::invalid_argument("'" + p.path + "': the model has no friction surfaces");
+              return p;
+            }
+        }
+      return std::nullopt;
+    }
   } // namespace
 
   std::vector<HingeOrigin>
@@ -1550,10 +1617,6 @@ namespace poundfe
         p.building = building_index(path, match[1], model);
         return building_parameter(p, match[2], indexed, model);
       }
-    const auto no_entry = [&]() {
-      if (indexed)
-        throw std::invalid_argument("'" + path + "': '" + entry + "' takes no [entry]");
-    };
     if (entry == "Model/Separations")
       {
         p.kind     = Kind::separation;
@@ -1567,53 +1630,9 @@ namespace poundfe
       }
     if (entry.rfind("Contact/Barriers", 0) == 0)
       return barrier_parameter(p, entry, model);
-    if (entry == "Contact/Stiffness" || entry == "Contact/Damping")
-      {
-        no_entry();
-        p.kind = entry == "Contact/Stiffness" ? Kind::contact_stiffness : Kind::contact_damping;
-        if (model.gaps.empty())
-          throw std::invalid_argument("'" + path + "': the model has no contact (Contact/Law)");
-        return p;
-      }
-    if (entry == "Friction/Static coefficient" || entry == "Friction/Kinetic coefficient")
-      {
-        no_entry();
-        p.kind = entry == "Friction/Static coefficient" ? Kind::static_friction :
-                                                          Kind::kinetic_friction;
-        if (model.friction_surfaces.empty())
-          throw std::invalid_argument("'" + path + "': the model has no friction surfaces");
-        return p;
-      }
-    if (entry == "Contact/Coefficient of restitution")
-      {
-        no_entry();
-        p.kind = Kind::contact_restitution;
-        if (model.gaps.empty())
-          throw std::invalid_argument("'" + path + "': the model has no contact (Contact/Law)");
-        if (!p.inputs)
-          throw std::invalid_argument("'" + path + "' needs the input the model was built from");
-        const ContactParameters &contact = p.inputs->contact;
-        if (!contact_law_is_damped(contact.law) ||
-            contact.damping_from == ContactDampingFrom::given)
-          throw std::invalid_argument("'" + path + "': the contact damping does not come from "
-                                      "the restitution (an undamped law, or Contact/Damping "
-                                      "from = given)");
-        return p;
-      }
-    if (entry.rfind("Friction/", 0) == 0)
-      {
-        const auto found = std::find_if(friction_entries.begin(), friction_entries.end(),
-                                        [&](const auto &e) { return entry.substr(9) == e.name; });
-        if (found != friction_entries.end())
-          {
-            no_entry();
-            p.kind     = Kind::friction_entry;
-            p.friction = found->at;
-            if (model.friction_surfaces.empty())
-              throw std::invalid_argument("'" + path + "': the model has no friction surfaces");
-            return p;
-          }
-      }
+    if (const std::optional<ModelParameter> found =
+          contact_or_friction_parameter(p, entry, indexed, model))
+      return *found;
     static const std::regex list_field(R"(^((?:Links|Springs)/[^/]+)(/([^/]*))?$)");
     if (entry == "Links/Viscous dampers") // c, as the mitigation study varies it
       return list_entry_parameter(p, entry, "c", model);
@@ -1621,7 +1640,7 @@ namespace poundfe
       return list_entry_parameter(p, match[1], match[3], model);
     if (entry == "Bumpers/Stiffness" || entry == "Bumpers/Thickness")
       {
-        no_entry();
+        refuse_entry(p, entry, indexed);
         return bumper_parameter(p, entry, model);
       }
     throw std::invalid_argument("'" + path + "' is not a parameter poundfe can vary (" +
