@@ -17,6 +17,7 @@
 // prepare_analysis and a fresh engine. Tolerance 1e-9 relative: the two
 // routes differ only by rounding (the in-place polar moment J m'/m against
 // m' c, the hinge's f 6 E' I / L against the builder's product).
+#include <poundfe/base/exceptions.h>
 #include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/input/engine_parameters.h>
@@ -674,14 +675,28 @@ namespace
   void
   refuses_hostile_values(const std::string &path, const Overrides &typed)
   {
+    // a distribution that can sample beyond 1e150 in size, which no
+    // parameter file may hold, is refused at its line (exit 1 in the
+    // commands), before any realization
+    {
+      const InputParameters input =
+        read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1e308 upper "
+                                              "1.5e308", typed));
+      const Analysis    analysis = prepare_analysis(input);
+      RealizationRunner runner(analysis, time_history_parameters(input));
+      BOOST_CHECK_EXCEPTION(attach_random_parameters(runner, input.random_parameters, input,
+                                                     input.model, input.contact,
+                                                     input.modal.eigensolver),
+                            InputError, [&](const InputError &e) {
+                              return std::string(e.what()).find(path) != std::string::npos &&
+                                     std::string(e.what()).find("1e150") != std::string::npos;
+                            });
+    }
+    // and the values themselves, as a realization receives them
     const InputParameters input =
-      read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1e308 upper "
-                                            "1.5e308", typed));
-    const Analysis    analysis = prepare_analysis(input);
-    RealizationRunner runner(analysis, time_history_parameters(input));
-    attach_random_parameters(runner, input.random_parameters, input, input.model,
-                             input.contact, input.modal.eigensolver);
-    const auto origins = std::make_shared<const std::vector<HingeOrigin>>(
+      read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1 upper 2", typed));
+    const Analysis analysis = prepare_analysis(input);
+    const auto     origins  = std::make_shared<const std::vector<HingeOrigin>>(
       hinge_origins(analysis.model, input.model));
     const auto inputs =
       std::make_shared<const ModelInputs>(ModelInputs{input.model, input.contact});
@@ -689,20 +704,12 @@ namespace
     settle_hinge_origins(parameter, *origins, analysis.model);
     ModelRealization realization(analysis, parameter, input.modal.eigensolver);
     for (const double x : {-1.0, 0.0, std::numeric_limits<double>::infinity(),
-                           std::numeric_limits<double>::quiet_NaN()})
+                           std::numeric_limits<double>::quiet_NaN(), 1e308})
       if (x != 0 || !parameter[0].can_be_zero())
         BOOST_CHECK_EXCEPTION(realization.apply({x}), std::invalid_argument,
                               [&](const std::invalid_argument &e) {
                                 return std::string(e.what()).find(path) != std::string::npos;
                               });
-    // a sample beyond 1e150 in size, which no parameter file may hold,
-    // is refused naming the path (exit 1 in the commands)
-    std::vector<double> responses;
-    BOOST_CHECK_EXCEPTION(runner.run(0, responses), std::invalid_argument,
-                          [&](const std::invalid_argument &e) {
-                            return std::string(e.what()).find(path) != std::string::npos &&
-                                   std::string(e.what()).find("1e150") != std::string::npos;
-                          });
   }
 } // namespace
 
