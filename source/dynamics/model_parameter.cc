@@ -722,17 +722,92 @@ namespace poundfe
     /// (a foundation's entry, the restitution), into `inputs` (the working
     /// copy of the input sections; ModelRealization::apply maps them); the
     /// checks of model_parameter() hold.
+    /// The storeys of a shear building and the resisting planes of a 3D one (write()).
     void
-    write(const ModelParameter &p, const double value, Model &model, ModelInputs &inputs)
+    write_storey_or_plane(const ModelParameter &p, const double value, Model &model)
     {
       switch (p.kind)
         {
+          case Kind::storey_stiffness:
+            for (const unsigned int l : named_storeys(p, model))
+              model.links[l].stiffness = model.links[l].hysteresis.stiffness = value;
+            for (PlaneLink *plane : named_planes(p, model)) // 3D: four planes, k/2 each
+              plane->stiffness = plane->hysteresis.stiffness = 0.5 * value;
+            return;
+          case Kind::resisting_plane: // as add_plane_links sets a typed plane
+            for (PlaneLink *plane : named_planes(p, model))
+              if (p.plane_yield_drift)
+                plane->hysteresis.yield_deformation = value;
+              else
+                plane->stiffness = plane->hysteresis.stiffness = value;
+            return;
+          case Kind::storey_damping:
+            for (const unsigned int l : named_storeys(p, model))
+              model.links[l].damping = value;
+            return;
+          case Kind::storey_yield_drift:
+            for (const unsigned int l : named_storeys(p, model))
+              model.links[l].hysteresis.yield_deformation = value;
+            for (PlaneLink *plane : named_planes(p, model))
+              plane->hysteresis.yield_deformation = value;
+            return;
+          default:
+            Assert(false, dealii::ExcInternalError());
+        }
+    }
+
+    /// The gaps, the contact and friction laws, the links, springs and bumpers (write()).
+    void
+    write_contact_or_device(const ModelParameter &p, const double value, Model &model)
+    {
+      switch (p.kind)
+        {
+          case Kind::separation:
+            for (const unsigned int g : gaps_after(model, p.building))
+              model.gaps[g].initial_gap = value;
+            return;
+          case Kind::barrier_gap:
+            for (const unsigned int g : named_barriers(p, model))
+              model.gaps[g].initial_gap = value;
+            return;
+          case Kind::contact_stiffness:
+            model.contact.stiffness = value;
+            return;
+          case Kind::contact_damping:
+            model.contact.damping = value;
+            return;
+          case Kind::static_friction:
+          case Kind::kinetic_friction:
+            for (FrictionSurface &surface : model.friction_surfaces)
+              (p.kind == Kind::static_friction ? surface.law.static_coefficient :
+                                                 surface.law.kinetic_coefficient) = value;
+            return;
+          case Kind::link_entry:
+            for (const unsigned int l : named_list_members(p, model))
+              model.building_links[l].law.*p.link_field = value;
+            return;
+          case Kind::spring_entry: // an SD reaction in N follows in apply
+            for (const unsigned int s : named_list_members(p, model))
+              model.springs[s].law.*p.spring_field = value;
+            return;
+          case Kind::bumper_entry: // t <= the gaps is checked in apply
+            model.bumper.*p.bumper_field = value;
+            return;
+          default:
+            Assert(false, dealii::ExcInternalError());
+        }
+    }
+
+    void
+    write(const ModelParameter &p, const double value, Model &model, ModelInputs &inputs)
+    {
+      require_in_range(p, value);
+      switch (p.kind)
+        {
           case Kind::member_section_3d:
-            require_in_range(p, value);
             write_member_section_3d(p, value, model);
             return;
           case Kind::friction_entry:
-            require_in_range(p, value);
             for (FrictionSurface &surface : model.friction_surfaces)
               {
                 p.friction(surface.law) = value;
@@ -741,100 +816,44 @@ namespace poundfe
               }
             return;
           case Kind::contact_restitution:
-            require_in_range(p, value);
             inputs.contact.restitution = value;
             return;
           case Kind::foundation_entry:
-            require_in_range(p, value);
             p.foundation(inputs.model.buildings[p.building].foundation) = value;
             return;
           case Kind::storey_stiffness:
-            require_in_range(p, value);
-            for (const unsigned int l : named_storeys(p, model))
-              model.links[l].stiffness = model.links[l].hysteresis.stiffness = value;
-            for (PlaneLink *plane : named_planes(p, model)) // 3D: four planes, k/2 each
-              plane->stiffness = plane->hysteresis.stiffness = 0.5 * value;
-            return;
-          case Kind::resisting_plane: // as add_plane_links sets a typed plane
-            require_in_range(p, value);
-            for (PlaneLink *plane : named_planes(p, model))
-              if (p.plane_yield_drift)
-                plane->hysteresis.yield_deformation = value;
-              else
-                plane->stiffness = plane->hysteresis.stiffness = value;
-            return;
+          case Kind::resisting_plane:
           case Kind::storey_damping:
-            require_in_range(p, value);
-            for (const unsigned int l : named_storeys(p, model))
-              model.links[l].damping = value;
-            return;
           case Kind::storey_yield_drift:
-            require_in_range(p, value);
-            for (const unsigned int l : named_storeys(p, model))
-              model.links[l].hysteresis.yield_deformation = value;
-            for (PlaneLink *plane : named_planes(p, model))
-              plane->hysteresis.yield_deformation = value;
+            write_storey_or_plane(p, value, model);
             return;
           case Kind::floor_mass:
-            require_in_range(p, value);
             write_floor_masses(p, value, model);
             return;
           case Kind::polar_moment:
-            require_in_range(p, value);
             for (const Floor *floor : named_floors(p, model))
               for (NodalMass &m : model.masses)
                 if (m.node == floor->nodes.front()) // the slab's node (model_parameter())
                   m.polar_moment = value;
             return;
           case Kind::damping_ratio:
-            require_in_range(p, value);
             model.buildings[p.building].damping.damping_ratio = value;
             return;
           case Kind::separation:
-            require_in_range(p, value);
-            for (const unsigned int g : gaps_after(model, p.building))
-              model.gaps[g].initial_gap = value;
-            return;
           case Kind::barrier_gap:
-            require_in_range(p, value);
-            for (const unsigned int g : named_barriers(p, model))
-              model.gaps[g].initial_gap = value;
-            return;
           case Kind::contact_stiffness:
-            require_in_range(p, value);
-            model.contact.stiffness = value;
-            return;
           case Kind::contact_damping:
-            require_in_range(p, value);
-            model.contact.damping = value;
-            return;
           case Kind::static_friction:
           case Kind::kinetic_friction:
-            require_in_range(p, value);
-            for (FrictionSurface &surface : model.friction_surfaces)
-              (p.kind == Kind::static_friction ? surface.law.static_coefficient :
-                                                 surface.law.kinetic_coefficient) = value;
-            return;
           case Kind::link_entry:
-            require_in_range(p, value);
-            for (const unsigned int l : named_list_members(p, model))
-              model.building_links[l].law.*p.link_field = value;
-            return;
-          case Kind::spring_entry: // an SD reaction in N follows in apply
-            require_in_range(p, value);
-            for (const unsigned int s : named_list_members(p, model))
-              model.springs[s].law.*p.spring_field = value;
-            return;
-          case Kind::bumper_entry: // t <= the gaps is checked in apply
-            require_in_range(p, value);
-            model.bumper.*p.bumper_field = value;
+          case Kind::spring_entry:
+          case Kind::bumper_entry:
+            write_contact_or_device(p, value, model);
             return;
           case Kind::member_section:
-            require_in_range(p, value);
             write_member_section(p, value, model);
             return;
           case Kind::bouc_wen_shape:
-            require_in_range(p, value);
             write_bouc_wen_shape(p, value, model);
             return;
           case Kind::hinge_yield_moment:
@@ -844,7 +863,6 @@ namespace poundfe
           case Kind::rayleigh_a0:
           case Kind::rayleigh_a1:
           case Kind::modal_ratio:
-            require_in_range(p, value);
             write_hinge_or_damping(p, value, model);
             return;
         }
