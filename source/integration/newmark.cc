@@ -158,7 +158,8 @@ namespace poundfe
                        "element's is not: use a direct solver or Tangent update = woodbury");
     const unsigned int n = system.n_equations();
     for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &rhs, &residual,
-                      &increment, &work_vector, &velocity_sum, &product})
+                      &increment, &work_vector, &velocity_sum, &product, &step_displacement,
+                      &start_residual})
       x->setZero(n);
     for (Vector *x : {&local_u, &local_v, &correction})
       x->setZero(dof_start.back());
@@ -460,10 +461,39 @@ namespace poundfe
   }
 
   void
+  NewmarkIntegrator::set_start_residual(const Level &L, const Vector &p)
+  {
+    // r_0 = rhs - K_eff u = p - K u + M (c_v v + c_a a) + C (c_v' v + c_a' a),
+    // each term of the size of the forces, not of M u / (beta dt^2)
+    product.noalias()     = system.stiffness * u;
+    residual_floor        = p.norm() + product.norm();
+    start_residual        = p - product;
+    work_vector.noalias() = L.c_mass_v * v + L.c_mass_a * a;
+    product.noalias()     = system.mass * work_vector;
+    residual_floor += product.norm();
+    start_residual += product;
+    work_vector.noalias() = L.c_damp_v * v + L.c_damp_a * a;
+    product.noalias()     = system.damping * work_vector;
+    add_low_rank_damping_product(system.modal_damping, work_vector, product);
+    residual_floor += product.norm();
+    start_residual += product;
+    // below this a residual is the round-off of its terms
+    residual_floor *= 1e-13;
+  }
+
+  void
+  NewmarkIntegrator::set_iterate(const Vector &displacement_increment)
+  {
+    if (&displacement_increment != &step_displacement)
+      step_displacement = displacement_increment;
+    u_next.noalias() = u + step_displacement;
+  }
+
+  void
   NewmarkIntegrator::update_kinematics(const Level &L)
   {
     const double g = parameters.gamma, dt = L.dt;
-    a_next.noalias() = L.c_mass_u * (u_next - u) - L.c_mass_v * v - L.c_mass_a * a;
+    a_next.noalias() = L.c_mass_u * step_displacement - L.c_mass_v * v - L.c_mass_a * a;
     v_next.noalias() = v + dt * ((1 - g) * a + g * a_next);
   }
 
@@ -473,6 +503,7 @@ namespace poundfe
     try
       {
         L.solver->solve(rhs, u_next);
+        step_displacement.noalias() = u_next - u;
       }
     catch (const NumericalError &e) // an iterative solve that failed: cut the step
       {
@@ -499,11 +530,11 @@ namespace poundfe
         std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
         L.holds_tangent = false;
       }
-    residual.noalias() = rhs - L.effective * u_next;
+    residual.noalias() = start_residual - L.effective * step_displacement;
     if (!system.modal_damping.empty()) // the modal part of K_eff: c U D U^T
       {
         product.setZero();
-        add_low_rank_damping_product(system.modal_damping, u_next, product);
+        add_low_rank_damping_product(system.modal_damping, step_displacement, product);
         residual.noalias() -= L.c_damp_u * product;
       }
     subtract_element_forces(residual);
@@ -639,11 +670,12 @@ namespace poundfe
   void
   NewmarkIntegrator::search_line(Level &L, const unsigned int it)
   {
-    const Vector start = u_next;
+    const Vector start = step_displacement;
     const double g0    = increment.dot(residual);
     // G(s) = d . R(u + s d), NaN when the elements refuse the state
     const auto g = [&](const double s) {
-      u_next = start + s * increment;
+      step_displacement = start + s * increment;
+      set_iterate(step_displacement);
       update_kinematics(L);
       double norm = 0;
       if (!evaluate_elements(u_next, v_next, L) || !newton_residual(L, it, norm))
@@ -651,7 +683,7 @@ namespace poundfe
       return increment.dot(residual);
     };
     const double s = line_search(g0, g(1.0), g, parameters.newton.line_search_parameters);
-    u_next         = start;
+    set_iterate(start);
     if (s != 1.0)
       {
         increment *= s;
@@ -662,9 +694,11 @@ namespace poundfe
   bool
   NewmarkIntegrator::try_step(Level &L, const Vector &p)
   {
-    set_step_load(L, p);
     if (n_elements == 0)
-      return solve_linear_step(L);
+      {
+        set_step_load(L, p);
+        return solve_linear_step(L);
+      }
 
     const NewtonParameters &newton = parameters.newton;
     // Predictor: the last displacement; with friction, the last velocity
@@ -673,9 +707,12 @@ namespace poundfe
     // step, v0 dt, and the first iterate would break away; with static >
     // kinetic friction the slip it starts can be a converged discrete
     // solution too, and the mass would break away early).
-    u_next = u;
-    if (!friction_elements.empty())
-      u_next.noalias() += L.dt * v;
+    set_start_residual(L, p);
+    if (friction_elements.empty())
+      step_displacement.setZero();
+    else
+      step_displacement.noalias() = L.dt * v;
+    set_iterate(step_displacement);
     double first_residual = 0, first_energy = 0, previous_norm = 0;
     const NonlinearSolver method = active_method();
     for (unsigned int it = 0;; ++it)
@@ -688,7 +725,7 @@ namespace poundfe
           return false;
         if (it == 0)
           first_residual = norm;
-        const double floor = 1e-13 * rhs.norm();
+        const double floor = residual_floor;
         if (it == 0 && norm <= floor)
           return true;
         NewtonCheck check{};
@@ -733,7 +770,8 @@ namespace poundfe
           krylov.record_step(increment);
         if (method == NonlinearSolver::bfgs)
           bfgs.record_step(increment);
-        u_next += increment;
+        step_displacement += increment;
+        set_iterate(step_displacement);
         previous_norm = norm;
       }
   }
@@ -813,7 +851,7 @@ namespace poundfe
                           {e.is_active(), e.deformation(v_next)});
       }
     // Trapezoidal work of the step; exact for the average-acceleration rule.
-    work_vector = u_next - u;
+    work_vector = step_displacement;
     balance.input += 0.5 * work_vector.dot(load_now + p);
     velocity_sum = v + v_next;
     product.noalias() = system.damping * velocity_sum;

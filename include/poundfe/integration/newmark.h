@@ -231,6 +231,8 @@ namespace poundfe
     // linear solve (no nonlinear elements), a Newton iteration's residual
     // (false when non-finite) and increment (false on a singular tangent)
     void   set_step_load(const Level &L, const Vector &load_next);
+    void   set_start_residual(const Level &L, const Vector &load_next);
+    void   set_iterate(const Vector &displacement_increment);
     void   update_kinematics(const Level &L);
     bool   solve_linear_step(const Level &L);
     bool   newton_residual(Level &L, unsigned int it, double &norm);
@@ -292,6 +294,15 @@ namespace poundfe
 
     Vector u, v, a, load_now;
     Vector u_next, v_next, a_next, rhs, residual, increment, work_vector, velocity_sum;
+    /// Newton's unknown is the step's displacement increment du = u_next - u,
+    /// and its residual r_0 - K_eff du - f(u + du), with r_0 = rhs - K_eff u
+    /// formed term by term (set_start_residual): rhs and K_eff u are both
+    /// about M u / (beta dt^2), and their difference loses that many digits
+    /// at the short sub-steps of an impact, where the accelerations
+    /// c_u du amplify the lost digits (doc/theory.md §3.5).
+    Vector step_displacement, start_residual;
+    /// The residual's round-off scale for this step (set_start_residual).
+    double residual_floor = 0;
     /// Sparse products of the energy terms, so a step allocates nothing.
     mutable Vector product;
     // Local vectors of every element: displacement, velocity, force correction.
