@@ -482,10 +482,8 @@ namespace poundfe
   }
 
   void
-  NewmarkIntegrator::set_iterate(const Vector &displacement_increment)
+  NewmarkIntegrator::set_iterate()
   {
-    if (&displacement_increment != &step_displacement)
-      step_displacement = displacement_increment;
     u_next.noalias() = u + step_displacement;
   }
 
@@ -675,7 +673,7 @@ namespace poundfe
     // G(s) = d . R(u + s d), NaN when the elements refuse the state
     const auto g = [&](const double s) {
       step_displacement = start + s * increment;
-      set_iterate(step_displacement);
+      set_iterate();
       update_kinematics(L);
       double norm = 0;
       if (!evaluate_elements(u_next, v_next, L) || !newton_residual(L, it, norm))
@@ -683,7 +681,8 @@ namespace poundfe
       return increment.dot(residual);
     };
     const double s = line_search(g0, g(1.0), g, parameters.newton.line_search_parameters);
-    set_iterate(start);
+    step_displacement = start;
+    set_iterate();
     if (s != 1.0)
       {
         increment *= s;
@@ -712,7 +711,7 @@ namespace poundfe
       step_displacement.setZero();
     else
       step_displacement.noalias() = L.dt * v;
-    set_iterate(step_displacement);
+    set_iterate();
     double first_residual = 0, first_energy = 0, previous_norm = 0;
     const NonlinearSolver method = active_method();
     for (unsigned int it = 0;; ++it)
@@ -771,7 +770,7 @@ namespace poundfe
         if (method == NonlinearSolver::bfgs)
           bfgs.record_step(increment);
         step_displacement += increment;
-        set_iterate(step_displacement);
+        set_iterate();
         previous_norm = norm;
       }
   }

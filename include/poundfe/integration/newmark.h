@@ -232,7 +232,8 @@ namespace poundfe
     // (false when non-finite) and increment (false on a singular tangent)
     void   set_step_load(const Level &L, const Vector &load_next);
     void   set_start_residual(const Level &L, const Vector &load_next);
-    void   set_iterate(const Vector &displacement_increment);
+    /// u_next = u + step_displacement
+    void   set_iterate();
     void   update_kinematics(const Level &L);
     bool   solve_linear_step(const Level &L);
     bool   newton_residual(Level &L, unsigned int it, double &norm);
@@ -299,7 +300,7 @@ namespace poundfe
     /// formed term by term (set_start_residual): rhs and K_eff u are both
     /// about M u / (beta dt^2), and their difference loses that many digits
     /// at the short sub-steps of an impact, where the accelerations
-    /// c_u du amplify the lost digits (doc/theory.md §3.5).
+    /// c_u du amplify the lost digits (doc/theory.md §3.3).
     Vector step_displacement, start_residual;
     /// The residual's round-off scale for this step (set_start_residual).
     double residual_floor = 0;
