@@ -45,9 +45,19 @@
 //   the stepping time goes (numeric factorisations, solves, the rest) and
 //   the peak resident memory per rank; bench/city_block.sh runs it on 1 and
 //   2 ranks.
+// Partitioned by building: [mpirun -np P] build/poundfe-bench --partitioned
+//   FILE [END [SAVE]] steps FILE to END (s; default its End time) with
+//   each rank owning a run of buildings (dynamics/partitioned_history.h):
+//   the partition, set-up time, steps/s, iterations, and the peak resident
+//   memory per rank; SAVE (optional) gets the final displacement of every
+//   equation, one per line, from rank 0. --serial FILE [END [SAVE]] does the
+//   same with the whole model on one process (the reference);
+//   bench/city_block.sh runs both.
 // Times the stepping loop with its outputs; set-up (assembly, modes,
 // factorisation) is reported separately.
+#include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/partitioned_history.h>
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/dynamics/modal.h>
 #include <poundfe/reliability/montecarlo.h>
@@ -346,6 +356,149 @@ namespace
     return 0;
   }
 
+  /// Peak resident memory of this process, MiB.
+  double
+  peak_memory_mib()
+  {
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0;
+  }
+
+  void
+  save_vector(const std::string &file, const Vector &x)
+  {
+    std::FILE *out = std::fopen(file.c_str(), "w");
+    if (!out)
+      throw std::runtime_error("cannot write " + file);
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+      std::fprintf(out, "%.17g\n", x[i]);
+    std::fclose(out);
+  }
+
+  /// The whole model on one process with what PartitionedHistory would use
+  /// (refactorised tangent, auto as Krylov-Newton, a one-process solver):
+  /// the reference of --partitioned.
+  struct WholeModelHistory
+  {
+    WholeModelHistory(const Analysis &analysis, const TimeHistoryParameters &parameters)
+      : excitation(make_excitation(analysis, parameters))
+      , elements(make_nonlinear_elements(analysis.model))
+      , integrator(analysis.system,
+                   partitioned_block_solver(parameters.time_integration.linear_solver),
+                   partitioned_newmark_parameters(parameters.time_integration), &elements)
+    {
+      Vector p0(analysis.system.n_equations());
+      excitation.load(0, p0);
+      integrator.initialize(p0);
+    }
+
+    void
+    advance()
+    {
+      integrator.advance([this](const double t, Vector &p) { excitation.load(t, p); });
+    }
+
+    Excitation        excitation;
+    NonlinearElements elements;
+    NewmarkIntegrator integrator;
+  };
+
+  /// What --partitioned and --serial print (rank 0).
+  struct PartitionedReport
+  {
+    std::string   first_line, solver;
+    double        prepare = 0, engine = 0, stepping = 0, energy_error = 0;
+    unsigned long n_steps = 0;
+    IterationStatistics statistics;
+    double        max_rss = 0, sum_rss = 0, max_set_up_rss = 0;
+
+    void
+    print() const
+    {
+      const IterationStatistics &s = statistics;
+      std::printf("%s\n", first_line.c_str());
+      std::printf("  set-up: read and assemble %.2f s; engine %.2f s (%s)\n", prepare, engine,
+                  solver.c_str());
+      std::printf("  stepping: %lu steps (%lu with sub-steps) in %.2f s: %.3f steps/s; %.2f "
+                  "Newton iterations/step, %lu factorisations, %lu step cuts, energy balance "
+                  "error %.2e\n",
+                  n_steps, s.steps, stepping, n_steps / stepping,
+                  s.steps ? double(s.iterations) / s.steps : 0.0, s.refactorizations,
+                  s.step_cuts, energy_error);
+      std::printf("  peak resident memory: %.0f MiB on the largest rank (%.0f after set-up), "
+                  "%.0f MiB in all\n",
+                  max_rss, max_set_up_rss, sum_rss);
+    }
+  };
+
+  /// --partitioned (over the ranks of `comm`) or --serial (one process,
+  /// the whole model: the reference).
+  int
+  measure_partitioned(const std::string &file, const double end, const std::string &save,
+                      const bool serial, const MPI_Comm comm)
+  {
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+    PartitionedReport  report;
+    auto               start = std::chrono::steady_clock::now();
+    const InputParameters input      = read_parameters(file);
+    Analysis              analysis   = prepare_analysis(input);
+    const TimeHistoryParameters parameters = time_history_parameters(input);
+    report.prepare                   = seconds_since(start);
+    const double dt                  = parameters.time_integration.newmark.time_step;
+    report.n_steps = std::lround((end > 0 ? end : parameters.time_integration.end_time) / dt);
+    const unsigned int n_equations   = analysis.model.n_equations();
+
+    start = std::chrono::steady_clock::now();
+    std::unique_ptr<WholeModelHistory>  whole;
+    std::unique_ptr<PartitionedHistory> partitioned;
+    if (serial)
+      whole = std::make_unique<WholeModelHistory>(analysis, parameters);
+    else
+      {
+        partitioned = std::make_unique<PartitionedHistory>(analysis, parameters, comm);
+        partitioned->initialize();
+      }
+    report.engine         = seconds_since(start);
+    report.max_set_up_rss = dealii::Utilities::MPI::max(peak_memory_mib(), comm);
+
+    start = std::chrono::steady_clock::now();
+    for (unsigned long step = 0; step < report.n_steps; ++step)
+      serial ? whole->advance() : partitioned->advance();
+    report.stepping = seconds_since(start);
+    const TimeStepper &stepper = serial ? static_cast<const TimeStepper &>(whole->integrator) :
+                                          partitioned->integrator();
+    report.statistics   = stepper.statistics();
+    report.energy_error = stepper.max_energy_error();
+    const Vector final_u =
+      serial ? whole->integrator.displacement() : partitioned->gather(stepper.displacement());
+    report.max_rss = dealii::Utilities::MPI::max(peak_memory_mib(), comm);
+    report.sum_rss = dealii::Utilities::MPI::sum(peak_memory_mib(), comm);
+    if (rank != 0)
+      return 0;
+    report.solver = serial ? whole->integrator.linear_solver_name() :
+                             partitioned->linear_solver_name();
+    if (serial)
+      report.first_line = "serial " + file + ": " + std::to_string(n_equations) +
+                          " equations on one process";
+    else
+      {
+        const BuildingPartition &p = partitioned->partition();
+        report.first_line =
+          "partitioned " + file + " on " + std::to_string(p.n_parts()) + " rank(s): " +
+          std::to_string(n_equations) + " equations, " + std::to_string(p.n_blocks) +
+          " separable runs of buildings; rank 0: buildings [0, " +
+          std::to_string(p.first_building[1]) + "), equations [0, " +
+          std::to_string(p.first_equation[1]) + "), " +
+          std::to_string(partitioned->n_local_elements()) + " nonlinear elements, " +
+          std::to_string(partitioned->n_ghosts()) + " ghosts";
+      }
+    report.print();
+    if (!save.empty())
+      save_vector(save, final_u);
+    return 0;
+  }
+
   int
   measure_bifurcation(const std::string &file)
   {
@@ -473,6 +626,8 @@ namespace
     "       poundfe-bench --output [REPEATS]    every output at every step, CSV and .npy\n"
     "       poundfe-bench --montecarlo FILE N   N realizations of FILE (mpirun -np P ...)\n"
     "       poundfe-bench --distributed FILE    one model over the MPI ranks (bench/city_block.sh)\n"
+    "       poundfe-bench --partitioned FILE [END [SAVE]]  the model over the ranks by building\n"
+    "       poundfe-bench --serial FILE [END [SAVE]]       the same on one process (reference)\n"
     "       poundfe-bench --bifurcation FILE    the values of FILE's Bifurcation section\n"
     "       poundfe-bench --modes [STOREYS...]  dense against sparse eigensolver\n"
     "       poundfe-bench --reliability [FILE]  limit-state evaluations per second\n"
@@ -490,7 +645,8 @@ try
       return 0;
     }
   if (argc > 1 && argv[1][0] == '-' &&
-      !std::set<std::string>{"--montecarlo", "--distributed", "--bifurcation", "--output",
+      !std::set<std::string>{"--montecarlo", "--distributed", "--partitioned", "--serial",
+                             "--bifurcation", "--output",
                              "--modes", "--reliability"}
          .count(argv[1]))
     {
@@ -504,6 +660,10 @@ try
     return measure_monte_carlo(argv[2], std::stoul(argv[3]), MPI_COMM_WORLD);
   if (argc > 2 && std::string(argv[1]) == "--distributed")
     return measure_distributed(argv[2], MPI_COMM_WORLD);
+  if (argc > 2 && (std::string(argv[1]) == "--partitioned" || std::string(argv[1]) == "--serial"))
+    return measure_partitioned(argv[2], argc > 3 ? std::stod(argv[3]) : 0,
+                               argc > 4 ? argv[4] : "", std::string(argv[1]) == "--serial",
+                               MPI_COMM_WORLD);
   if (argc > 2 && std::string(argv[1]) == "--bifurcation")
     return measure_bifurcation(argv[2]);
   if (argc > 1 && std::string(argv[1]) == "--reliability")

@@ -111,6 +111,59 @@ namespace poundfe
     throw InputError("", 0, "Time integration/Linear solver", "unknown solver '" + name + "'");
   }
 
+  namespace
+  {
+    /// A solver on one diagonal block: the matrices it is given are the
+    /// model's, zero outside the block but for the couplings of elements to
+    /// other ranks' equations (ghosts), which this rank's block leaves out.
+    class BlockRestrictedSolver : public LinearSolver
+    {
+    public:
+      BlockRestrictedSolver(std::unique_ptr<LinearSolver> inner, const std::array<unsigned int, 2> range)
+        : inner(std::move(inner))
+        , first(range[0])
+        , n_block(range[1] - range[0])
+        , b_block(n_block)
+        , x_block(n_block)
+      {}
+
+      void analyze(const SparseMatrix &matrix) override { inner->analyze(cut(matrix)); }
+      void factorize(const SparseMatrix &matrix) override { inner->factorize(cut(matrix)); }
+      void
+      solve(const Vector &b, Vector &x) override
+      {
+        b_block = b.segment(first, n_block);
+        inner->solve(b_block, x_block);
+        x.setZero(b.size());
+        x.segment(first, n_block) = x_block;
+      }
+      bool
+      reuse_analysis(const LinearSolver &analysed, const SparseMatrix &matrix) override
+      {
+        const auto *other = dynamic_cast<const BlockRestrictedSolver *>(&analysed);
+        return other && inner->reuse_analysis(*other->inner, cut(matrix));
+      }
+      std::string name() const override { return inner->name(); }
+
+    private:
+      SparseMatrix
+      cut(const SparseMatrix &matrix) const
+      {
+        return block(matrix, {{first, first + n_block}});
+      }
+
+      std::unique_ptr<LinearSolver> inner;
+      const unsigned int            first, n_block;
+      Vector                        b_block, x_block;
+    };
+  } // namespace
+
+  std::unique_ptr<LinearSolver>
+  restrict_to_block(std::unique_ptr<LinearSolver> inner, const std::array<unsigned int, 2> range)
+  {
+    return std::make_unique<BlockRestrictedSolver>(std::move(inner), range);
+  }
+
   std::unique_ptr<LinearSolver>
   create_linear_solver(const std::string &name)
   {

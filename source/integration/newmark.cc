@@ -105,12 +105,14 @@ namespace poundfe
   NewmarkIntegrator::NewmarkIntegrator(const LinearSystem &system,
                                        const std::string  &linear_solver,
                                        const NewmarkParameters &parameters,
-                                       NonlinearElements       *elements)
+                                       NonlinearElements       *elements,
+                                       const RankOwnership      *distribution)
     : system(system)
     , solver_name(linear_solver)
     , parameters(parameters)
     , elements(elements)
     , n_elements(elements ? elements->size() : 0)
+    , distribution(distribution)
     , krylov(std::max(parameters.newton.subspace_dimension, 1u))
     , bfgs(std::max(parameters.newton.subspace_dimension, 1u))
   {
@@ -166,6 +168,21 @@ namespace poundfe
     tangent_change.assign(d_start.back(), 0.0);
     for (auto *x : {&work, &supplied_work, &committed_force, &committed_history, &committed_rate})
       x->assign(n_elements, 0.0);
+    if (distribution)
+      {
+        check_distributable();
+        krylov.set_distribution(distribution);
+        bfgs.set_distribution(distribution);
+        const auto [first, last] = distribution->owned_range();
+        for (unsigned int h = 0; h < n_elements; ++h)
+          {
+            const std::vector<int> &equations = (*elements)[h].equations();
+            const auto counted = std::find_if(equations.begin(), equations.end(),
+                                              [](const int i) { return i >= 0; });
+            counted_here.push_back(counted != equations.end() && *counted >= int(first) &&
+                                   *counted < int(last));
+          }
+      }
     if (parameters.steps_per_period > 0)
       base_level = accuracy_level(parameters.time_step,
                                   highest_frequency_bound(system.stiffness, system.mass),
@@ -174,6 +191,54 @@ namespace poundfe
   }
 
   NewmarkIntegrator::~NewmarkIntegrator() = default;
+
+  void
+  NewmarkIntegrator::check_distributable() const
+  {
+    const NewtonParameters &newton = parameters.newton;
+    const std::string       method = nonlinear_solver_names().name(newton.nonlinear_solver);
+    if (newton.nonlinear_solver == NonlinearSolver::newton ||
+        newton.nonlinear_solver == NonlinearSolver::automatic)
+      throw InputError("", 0, "Time integration/Nonlinear solver",
+                       "a model partitioned over ranks steps with one factorisation of each "
+                       "rank's block, reused: modified-newton, krylov-newton or bfgs, not " +
+                         method);
+    if (n_elements > 0 && (use_woodbury || use_hybrid))
+      throw InputError("", 0, "Time integration/Tangent update",
+                       "a model partitioned over ranks needs Tangent update = refactorize (the "
+                       "Woodbury update would couple the ranks' blocks densely)");
+    if (newton.line_search)
+      throw InputError("", 0, "Time integration/Line search",
+                       "is not yet available for a model partitioned over ranks");
+    if (parameters.steps_per_period > 0)
+      throw InputError("", 0, "Time integration/Steps per shortest period",
+                       "is not yet available for a model partitioned over ranks");
+    if (!system.modal_damping.empty())
+      throw InputError("", 0, "Damping/Type",
+                       "modal damping is not yet available for a model partitioned over ranks");
+  }
+
+  double
+  NewmarkIntegrator::norm_of(const Vector &x) const
+  {
+    return distribution ? distribution->norm(x) : x.norm();
+  }
+
+  double
+  NewmarkIntegrator::dot_of(const Vector &x, const Vector &y) const
+  {
+    return distribution ? distribution->dot(x, y) : x.dot(y);
+  }
+
+  bool
+  NewmarkIntegrator::agreed(const bool ok, const char *elsewhere)
+  {
+    if (!distribution || !distribution->any(!ok))
+      return ok;
+    if (ok)
+      failure = elsewhere;
+    return false;
+  }
 
   const NameTable<TangentUpdate> &
   tangent_update_names()
@@ -234,8 +299,13 @@ namespace poundfe
       parameters.iterative,
       parameters.iterative.tolerance_factor * parameters.newton.residual_tolerance,
       "Linear tolerance factor x Newton residual tolerance", &stats.linear};
-    L->solver = with_low_rank_damping(create_linear_solver(solver_name, iterative),
-                                      system.modal_damping, L->c_damp_u);
+    const auto new_solver = [&]() {
+      std::unique_ptr<LinearSolver> solver = create_linear_solver(solver_name, iterative);
+      if (distribution)
+        solver = restrict_to_block(std::move(solver), distribution->owned_range());
+      return with_low_rank_damping(std::move(solver), system.modal_damping, L->c_damp_u);
+    };
+    L->solver = new_solver();
     // every step size has K_eff's pattern: one symbolic analysis where the
     // backend can share it (UMFPACK)
     stats.shared_analyses +=
@@ -269,8 +339,7 @@ namespace poundfe
       {
         if (use_hybrid) // the tangent gets its own factorisation; K_eff's stays
           {
-            L->tangent_solver = with_low_rank_damping(create_linear_solver(solver_name, iterative),
-                                                      system.modal_damping, L->c_damp_u);
+            L->tangent_solver = new_solver();
             stats.shared_analyses +=
               L->tangent_solver->analyze_or_reuse(L->solver.get(), L->effective);
           }
@@ -324,6 +393,8 @@ namespace poundfe
     balance.strain  = strain_energy();
     balance.kinetic = kinetic_energy();
     balance.initial = balance.strain + balance.kinetic;
+    if (distribution)
+      sum_balance_over_ranks();
   }
 
   void
@@ -386,6 +457,8 @@ namespace poundfe
     for (unsigned int i = 0; i < n; ++i)
       if (reduced[i] >= 0)
         a[i] = a_massive[reduced[i]];
+    if (distribution) // a ghost equation carries no mass here
+      distribution->update_ghosts(a);
   }
 
   void
@@ -466,16 +539,16 @@ namespace poundfe
     // r_0 = rhs - K_eff u = p - K u + M (c_v v + c_a a) + C (c_v' v + c_a' a),
     // each term of the size of the forces, not of M u / (beta dt^2)
     product.noalias()     = system.stiffness * u;
-    residual_floor        = p.norm() + product.norm();
+    residual_floor        = norm_of(p) + norm_of(product);
     start_residual        = p - product;
     work_vector.noalias() = L.c_mass_v * v + L.c_mass_a * a;
     product.noalias()     = system.mass * work_vector;
-    residual_floor += product.norm();
+    residual_floor += norm_of(product);
     start_residual += product;
     work_vector.noalias() = L.c_damp_v * v + L.c_damp_a * a;
     product.noalias()     = system.damping * work_vector;
     add_low_rank_damping_product(system.modal_damping, work_vector, product);
-    residual_floor += product.norm();
+    residual_floor += norm_of(product);
     start_residual += product;
     // below this a residual is the round-off of its terms
     residual_floor *= 1e-13;
@@ -536,17 +609,20 @@ namespace poundfe
         residual.noalias() -= L.c_damp_u * product;
       }
     subtract_element_forces(residual);
-    norm = residual.norm();
+    if (distribution) // the owners balance the ghost equations
+      distribution->zero_ghosts(residual);
+    norm = norm_of(residual);
     if (!std::isfinite(norm))
       {
-        if (const Eigen::Index i = first_non_finite(residual); i >= 0)
-          {
-            failure = "Newton iteration " + std::to_string(it) +
-                      ": the residual became non-finite (" + number_text(residual[i]) +
-                      " at " + equation_text(i, equation_names) + ")";
-            return false;
-          }
-        norm = residual.stableNorm(); // finite entries whose squares overflow
+        const Eigen::Index i = first_non_finite(residual);
+        if (i >= 0)
+          failure = "Newton iteration " + std::to_string(it) +
+                    ": the residual became non-finite (" + number_text(residual[i]) + " at " +
+                    equation_text(i, equation_names) + ")";
+        if (!agreed(i < 0, "the residual became non-finite on another rank"))
+          return false;
+        // finite entries whose squares overflow
+        norm = distribution ? std::numeric_limits<double>::infinity() : residual.stableNorm();
       }
     return true;
   }
@@ -601,6 +677,23 @@ namespace poundfe
   void
   NewmarkIntegrator::solve_frozen(Level &L, const Vector &b, Vector &x)
   {
+    if (distribution) // a singular block on one rank cuts the step on all
+      {
+        std::string why;
+        try
+          {
+            solve_with_assembled_tangent(L, L.frozen_d, L.frozen_factorised, b, x);
+            L.frozen_factorised = true;
+          }
+        catch (const NumericalError &e)
+          {
+            why = e.what();
+          }
+        if (distribution->any(!why.empty()))
+          throw NumericalError(why.empty() ? "another rank's block of the tangent is singular" :
+                                             why);
+        return;
+      }
     if ((use_woodbury || use_hybrid) && L.woodbury.solve(b, L.frozen_d, x))
       {
         ++stats.woodbury_solves;
@@ -717,7 +810,8 @@ namespace poundfe
     for (unsigned int it = 0;; ++it)
       {
         update_kinematics(L);
-        if (!evaluate_elements(u_next, v_next, L))
+        if (!agreed(evaluate_elements(u_next, v_next, L),
+                    "an element on another rank refused its trial state"))
           return false;
         double norm = 0;
         if (!newton_residual(L, it, norm))
@@ -732,7 +826,7 @@ namespace poundfe
           {
             check.residual       = norm;
             check.residual_ratio = norm / std::max(first_residual, 1e-300);
-            check.energy         = std::abs(increment.dot(residual));
+            check.energy         = std::abs(dot_of(increment, residual));
             check.energy_ratio   = check.energy / std::max(first_energy, 1e-300);
             check.residual_met =
               norm <= std::max(newton.residual_tolerance * first_residual, floor);
@@ -756,13 +850,16 @@ namespace poundfe
                       "; the largest residual is at " + equation_text(worst, equation_names);
             return false;
           }
-        if (method == NonlinearSolver::newton ?
-              !newton_increment(L, it) :
-              !quasi_newton_increment(L, it, norm, previous_norm,
-                                      newton.residual_tolerance * first_residual))
+        if (!agreed(method == NonlinearSolver::newton ?
+                      newton_increment(L, it) :
+                      quasi_newton_increment(L, it, norm, previous_norm,
+                                             newton.residual_tolerance * first_residual),
+                    "another rank's tangent is singular"))
           return false;
+        if (distribution) // the owners' increments at the ghost equations
+          distribution->update_ghosts(increment);
         if (it == 0)
-          first_energy = std::abs(increment.dot(residual));
+          first_energy = std::abs(dot_of(increment, residual));
         if (newton.line_search)
           search_line(L, it);
         if (method == NonlinearSolver::krylov_newton || method == NonlinearSolver::automatic)
@@ -861,7 +958,8 @@ namespace poundfe
         NonlinearElement &e = (*elements)[h];
         work[h] += e.work_increment();
         supplied_work[h] += e.supplied_work_increment();
-        balance.belt += e.supplied_work_increment();
+        if (!distribution || counted_here[h])
+          balance.belt += e.supplied_work_increment();
         e.commit();
         committed_force[h]   = e.force();
         committed_history[h] = e.history_variable();
@@ -909,7 +1007,8 @@ namespace poundfe
       }
     const unsigned int last_level = base_level + parameters.newton.max_step_cuts;
     if (parameters.newton.steps_per_contact > 0 && cuts < last_level &&
-        contact_needs_shorter_step(L))
+        (distribution ? distribution->any(contact_needs_shorter_step(L)) :
+                        contact_needs_shorter_step(L)))
       {
         ++stats.contact_refinements;
         advance_from(cuts + 1, t0, load);
@@ -938,6 +1037,8 @@ namespace poundfe
     if (converged && cuts < base_level + parameters.newton.event_refinement)
       for (const unsigned int h : event_elements)
         event = event || (*elements)[h].phase() != (*elements)[h].committed_phase();
+    if (converged && cuts < base_level + parameters.newton.event_refinement && distribution)
+      event = distribution->any(event);
     if (converged && !event)
       {
         accept(L, p);
@@ -991,15 +1092,39 @@ namespace poundfe
   {
     balance.kinetic = kinetic_energy();
     balance.strain  = strain_energy();
+    if (!distribution)
+      {
+        if (elements)
+          set_element_dissipation(balance, *elements, work, supplied_work);
+        update_balance_error(balance, energy_scale, max_balance_error);
+        return;
+      }
     if (elements)
-      set_element_dissipation(balance, *elements, work, supplied_work);
-    update_balance_error(balance, energy_scale, max_balance_error);
+      set_element_dissipation(balance, *elements, work, supplied_work, counted_here);
+    sum_balance_over_ranks();
+    update_balance_error(total_balance, energy_scale, max_balance_error);
+  }
+
+  void
+  NewmarkIntegrator::sum_balance_over_ranks()
+  {
+    total_balance = balance;
+    EnergyBalance &b = total_balance;
+    std::array<double *, 11> terms{{&b.initial, &b.input, &b.belt, &b.kinetic, &b.damping,
+                                    &b.strain, &b.hysteretic, &b.contact, &b.friction, &b.links,
+                                    &b.foundation}};
+    std::array<double, 11> values;
+    for (unsigned int i = 0; i < terms.size(); ++i)
+      values[i] = *terms[i];
+    distribution->sum(values.data(), values.size());
+    for (unsigned int i = 0; i < terms.size(); ++i)
+      *terms[i] = values[i];
   }
 
   EnergyBalance
   NewmarkIntegrator::energy() const
   {
-    return balance;
+    return distribution ? total_balance : balance;
   }
 
   double
@@ -1016,7 +1141,8 @@ namespace poundfe
     double energy     = 0.5 * u.dot(product);
     // the elements' trial state is the committed state at u
     for (unsigned int h = 0; h < n_elements; ++h)
-      energy += (*elements)[h].stored_energy() - (*elements)[h].reference_energy();
+      if (!distribution || counted_here[h])
+        energy += (*elements)[h].stored_energy() - (*elements)[h].reference_energy();
     return energy;
   }
 } // namespace poundfe

@@ -69,12 +69,42 @@ namespace poundfe
     for (unsigned int j = 0; j < differences.size(); ++j)
       A.col(j) = differences[j];
     // column pivoting: two nearly parallel steps give a nearly rank-deficient A
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
-    const Eigen::VectorXd c = qr.solve(g);
+    const Eigen::VectorXd c = distribution ? distributed_least_squares(A, g) :
+                                             Eigen::VectorXd(Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(A).solve(g));
     if (!c.allFinite())
       return;
     for (unsigned int j = 0; j < steps.size(); ++j)
       correction += c[j] * (steps[j] - differences[j]);
+  }
+
+  Eigen::VectorXd
+  KrylovAcceleration::distributed_least_squares(const Eigen::MatrixXd &A, const Vector &g) const
+  {
+    // A and g are zero outside this rank's equations: A_r = Q_r R_r there,
+    // and min |A c - g| = min |[R_1; ...; R_P] c - [Q_1^T g_1; ...]|.
+    const auto [first, last] = distribution->owned_range();
+    const unsigned int k = A.cols(), n_rows = last - first, n_ranks = distribution->n_ranks();
+    Eigen::MatrixXd    local(k + 1, k); // R_r (upper k x k), then Q_r^T g_r as the last row
+    local.setZero();
+    if (n_rows > 0)
+      {
+        const Eigen::HouseholderQR<Eigen::MatrixXd> qr(A.middleRows(first, n_rows));
+        const unsigned int m = std::min(n_rows, k);
+        local.topRows(m) = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
+        const Eigen::VectorXd qtg = qr.householderQ().transpose() * g.segment(first, n_rows);
+        local.row(k).head(m) = qtg.head(m).transpose();
+      }
+    Eigen::MatrixXd all((k + 1) * k, n_ranks);
+    distribution->all_gather(local.data(), (k + 1) * k, all.data());
+    Eigen::MatrixXd stacked_r(n_ranks * k, k);
+    Eigen::VectorXd stacked_g(n_ranks * k);
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      {
+        const Eigen::Map<const Eigen::MatrixXd> part(all.col(r).data(), k + 1, k);
+        stacked_r.middleRows(r * k, k) = part.topRows(k);
+        stacked_g.segment(r * k, k)    = part.row(k).transpose();
+      }
+    return Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(stacked_r).solve(stacked_g);
   }
 
   BfgsUpdate::BfgsUpdate(const unsigned int max_pairs)
@@ -103,8 +133,8 @@ namespace poundfe
     if (has_last && has_pending)
       {
         Vector       y  = last_residual - residual; // ~ K_t s
-        const double ys = y.dot(pending_step);
-        if (ys > 1e-12 * y.norm() * pending_step.norm())
+        const double ys = dot(y, pending_step);
+        if (ys > 1e-12 * std::sqrt(dot(y, y) * dot(pending_step, pending_step)))
           {
             if (pairs.size() == max_pairs)
               pairs.pop_front();
@@ -119,13 +149,13 @@ namespace poundfe
     alpha.assign(pairs.size(), 0.0);
     for (unsigned int j = pairs.size(); j-- > 0;)
       {
-        alpha[j] = pairs[j].rho * pairs[j].s.dot(q);
+        alpha[j] = pairs[j].rho * dot(pairs[j].s, q);
         q -= alpha[j] * pairs[j].y;
       }
     h0(q, correction);
     for (unsigned int j = 0; j < pairs.size(); ++j)
       {
-        const double beta = pairs[j].rho * pairs[j].y.dot(correction);
+        const double beta = pairs[j].rho * dot(pairs[j].y, correction);
         correction += (alpha[j] - beta) * pairs[j].s;
       }
   }

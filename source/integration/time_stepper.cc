@@ -9,12 +9,15 @@ namespace poundfe
 {
   void
   set_element_dissipation(EnergyBalance &balance, const NonlinearElements &elements,
-                          const std::vector<double> &work, const std::vector<double> &supplied_work)
+                          const std::vector<double> &work, const std::vector<double> &supplied_work,
+                          const std::vector<char> &counted)
   {
     balance.hysteretic = balance.contact = balance.friction = balance.links = 0;
     balance.foundation = 0;
     for (unsigned int h = 0; h < elements.size(); ++h)
       {
+        if (!counted.empty() && !counted[h])
+          continue;
         const NonlinearElement &e          = elements[h];
         const double            dissipated = work[h] - e.stored_energy() + supplied_work[h];
         switch (e.kind)

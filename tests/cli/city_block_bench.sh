@@ -8,9 +8,16 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 out=$(bash bench/city_block.sh "$1" 2>&1) || { echo "$out"; echo "FAIL: exit status $?"; exit 1; }
 echo "$out"
 fail() { echo "FAIL $*"; exit 1; }
-[ "$(grep -c 'peak resident memory' <<< "$out")" -eq 2 ] || fail "not two complete reports"
+[ "$(grep -c 'peak resident memory' <<< "$out")" -eq 4 ] || fail "not four complete reports"
 models=$(grep -o '[0-9]* equations, [0-9]* nonlinear elements, [0-9]* gaps' <<< "$out" | sort -u | wc -l)
 [ "$models" -eq 1 ] || fail "the two runs report different models"
-steps=$(grep -o 'stepping: [0-9]* steps ([0-9]* with sub-steps)' <<< "$out" | sort -u | wc -l)
+steps=$(grep 'distributed' -A4 <<< "$out" | grep -o 'stepping: [0-9]* steps ([0-9]* with sub-steps)' | sort -u | wc -l)
 [ "$steps" -eq 1 ] || fail "the two runs took different steps"
-echo "ok: the city-block benchmark on 1 and 2 ranks"
+# partitioned by building: the same steps as the whole model, and the same
+# final displacements to the Newton tolerance's reach
+steps=$(grep -E '^(serial|partitioned)' -A2 <<< "$out" | grep -o 'stepping: [0-9]* steps ([0-9]* with sub-steps)' | sort -u | wc -l)
+[ "$steps" -eq 1 ] || fail "the partitioned run took other steps than the whole model's"
+d=$(sed -n 's/.*final displacements within \([^ ]*\) of the peak.*/\1/p' <<< "$out")
+[ -n "$d" ] || fail "no comparison of the partitioned run"
+/usr/bin/python3 -c "import sys; sys.exit(0 if float('$d') <= 1e-8 else 1)" || fail "partitioned run $d of the peak away"
+echo "ok: the city-block benchmark on 1 and 2 ranks, distributed and partitioned"

@@ -10,6 +10,7 @@
 
 #include <poundfe/assembly/linear_system.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -104,6 +105,13 @@ namespace poundfe
     double        factor_entries            = 0; // MUMPS INFOG(29)
   };
   const DistributedSolverProfile &distributed_solver_profile();
+
+  /// `inner` on the rows and columns [first, last) of every matrix it is
+  /// given (this rank's block of a model partitioned by building,
+  /// assembly/partition.h); solve() reads b there and returns x zero
+  /// elsewhere.
+  std::unique_ptr<LinearSolver> restrict_to_block(std::unique_ptr<LinearSolver> inner,
+                                                  std::array<unsigned int, 2>  range);
 
   std::unique_ptr<LinearSolver> create_eigen_ldlt_solver();
   std::unique_ptr<LinearSolver> create_umfpack_solver();

@@ -21,6 +21,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -66,6 +67,15 @@ namespace poundfe
 
     /// The equation of each local DOF; -1: the ground.
     const std::vector<int> &equations() const { return dof_equations; }
+    /// Equation i becomes new_equation(i) (the ground, -1, stays): a rank's
+    /// own numbering of a model partitioned over ranks (assembly/partition.h).
+    template <typename Renumbering>
+    void renumber(const Renumbering &new_equation)
+    {
+      for (int &i : dof_equations)
+        if (i >= 0)
+          i = new_equation(i);
+    }
     unsigned int n_dofs() const { return dof_equations.size(); }
 
     /// r_e, the number of columns of B_e.
@@ -200,6 +210,18 @@ namespace poundfe
       Element &reference = *element;
       elements.push_back(std::move(element));
       return reference;
+    }
+
+    /// Drop the elements for which `drop(element)` is true (a rank's
+    /// share of a partitioned model keeps those on its equations).
+    template <typename Predicate>
+    void erase_if(const Predicate &drop)
+    {
+      elements.erase(std::remove_if(elements.begin(), elements.end(),
+                                    [&](const std::unique_ptr<NonlinearElement> &e) {
+                                      return drop(static_cast<const NonlinearElement &>(*e));
+                                    }),
+                     elements.end());
     }
 
     iterator       begin() { return iterator(elements.begin()); }

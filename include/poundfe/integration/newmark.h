@@ -28,6 +28,7 @@
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/base/choices.h>
 #include <poundfe/elements/nonlinear_element.h>
+#include <poundfe/assembly/rank_ownership.h>
 #include <poundfe/integration/impact_log.h>
 #include <poundfe/integration/newton_acceleration.h>
 #include <poundfe/integration/stick_slip_log.h>
@@ -152,9 +153,17 @@ namespace poundfe
     /// `elements` may be null (a linear model); they are updated in place.
     /// Refactorising a nonsymmetric element tangent needs an LU backend
     /// (not eigen-ldlt): InputError otherwise.
+    /// `distribution` (null: one process) steps this rank's part of a
+    /// model partitioned by building (assembly/rank_ownership.h): `system`
+    /// and `elements` are this rank's (assembly/partition.h), every rank
+    /// constructs and advances its integrator in step, and each factorises
+    /// its own block of the frozen tangent. The nonlinear solver must then
+    /// reuse a factorisation (modified-newton, krylov-newton or bfgs) with
+    /// Tangent update = refactorize; InputError otherwise.
     NewmarkIntegrator(const LinearSystem &system, const std::string &linear_solver,
                       const NewmarkParameters &parameters,
-                      NonlinearElements       *elements = nullptr);
+                      NonlinearElements       *elements     = nullptr,
+                      const RankOwnership      *distribution = nullptr);
     ~NewmarkIntegrator() override;
 
     /// Start at time 0 from (u0, v0) under load p0.
@@ -246,6 +255,8 @@ namespace poundfe
     bool   contact_needs_shorter_step(const Level &L) const;
     bool   evaluate_elements(const Vector &u_trial, const Vector &v_trial, const Level &L);
     void   update_energy_error();
+    /// total_balance = the sum of every rank's balance (collective).
+    void   sum_balance_over_ranks();
     /// a from M a = p - C v - K u - f(u, v) at the current u, v (the
     /// elements set to them and committed); massless equations get a = 0.
     void   set_consistent_acceleration(const Vector &load);
@@ -277,12 +288,27 @@ namespace poundfe
     void   solve_frozen(Level &L, const Vector &b, Vector &x);
     /// Scale the increment by the secant line search (Crisfield §9.3).
     void   search_line(Level &L, unsigned int it);
+    /// Refuse what a partitioned model cannot yet do (InputError).
+    void   check_distributable() const;
+    /// Norm and inner product over every rank's own equations.
+    double norm_of(const Vector &x) const;
+    double dot_of(const Vector &a, const Vector &b) const;
+    /// `ok` on every rank; else false, with `failure` set where it was not
+    /// already (the cause is on another rank). Collective when distributed.
+    bool   agreed(bool ok, const char *elsewhere);
 
     const LinearSystem &system;
     std::string         solver_name;
     NewmarkParameters   parameters;
     NonlinearElements  *elements   = nullptr;
     unsigned int        n_elements = 0;
+    const RankOwnership *distribution = nullptr;
+    /// Distributed: whether element h's energy counts on this rank (an
+    /// element between two ranks' buildings is evaluated on both and
+    /// counted by the owner of its first equation).
+    std::vector<char>   counted_here;
+    /// Distributed: the energy terms summed over the ranks.
+    EnergyBalance       total_balance;
     bool                use_woodbury = true;
     bool                use_hybrid   = false;
     // Element h's local DOFs are [dof_start[h], dof_start[h + 1]) of the

@@ -28,6 +28,7 @@
 
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/base/choices.h>
+#include <poundfe/assembly/rank_ownership.h>
 
 #include <deque>
 #include <functional>
@@ -63,8 +64,17 @@ namespace poundfe
     /// or a line search's multiple of it).
     void record_step(const Vector &step);
     unsigned int dimension() const { return steps.size(); }
+    /// Vectors spread over ranks (assembly/rank_ownership.h): the least
+    /// squares of the subspace by a QR of each rank's rows and one of the
+    /// stacked R factors (TSQR; Demmel et al., SIAM J. Sci. Comput. 34
+    /// (2012) A206). Null: one process.
+    void set_distribution(const RankOwnership *d) { distribution = d; }
 
   private:
+    /// The coefficients c of min |A c - g| over all ranks' rows.
+    Eigen::VectorXd distributed_least_squares(const Eigen::MatrixXd &A, const Vector &g) const;
+
+    const RankOwnership *distribution = nullptr;
     unsigned int       max_dimension;
     std::deque<Vector> steps, differences; // V and A
     Vector             last_preconditioned, pending_step;
@@ -83,8 +93,16 @@ namespace poundfe
     void direction(const Vector &residual, const InverseOperator &h0, Vector &correction);
     void record_step(const Vector &step);
     unsigned int n_pairs() const { return pairs.size(); }
+    /// Inner products over the ranks' own equations; null: one process.
+    void set_distribution(const RankOwnership *d) { distribution = d; }
 
   private:
+    double dot(const Vector &a, const Vector &b) const
+    {
+      return distribution ? distribution->dot(a, b) : a.dot(b);
+    }
+
+    const RankOwnership *distribution = nullptr;
     struct Pair
     {
       Vector s, y;

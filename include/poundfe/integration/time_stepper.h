@@ -59,10 +59,13 @@ namespace poundfe
   };
 
   /// Sets balance's dissipation terms (hysteretic, contact, friction, links,
-  /// foundation) from each element's work, stored energy and supplied work.
+  /// foundation) from each element's work, stored energy and supplied work;
+  /// `counted` (empty: all) leaves out the elements h with counted[h] == 0
+  /// (another rank counts them).
   void set_element_dissipation(EnergyBalance &balance, const NonlinearElements &elements,
                                const std::vector<double> &work,
-                               const std::vector<double> &supplied_work);
+                               const std::vector<double> &supplied_work,
+                               const std::vector<char>   &counted = {});
 
   /// max_error = max(max_error, |supplied - stored and dissipated| / scale),
   /// scale the running maximum of both (so the start of the motion, where

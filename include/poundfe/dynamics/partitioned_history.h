@@ -1,0 +1,93 @@
+// A time history of one model spread over the MPI ranks by building
+// (doc/theory.md §3.5d): every rank reads the input and builds the model,
+// then keeps only its part — M, K, C and K_eff of its buildings' equations,
+// the nonlinear elements on them, their history variables — and steps it
+// with the other ranks in lockstep (NewmarkIntegrator with a RankOwnership,
+// assembly/rank_ownership.h). Per Newton iteration the ranks exchange
+// the ghost values of the elements between their buildings and a few sums
+// (norms, inner products, the Krylov subspace's R factors); nothing of size
+// N is gathered while stepping. gather() brings a vector to rank 0 on
+// request (a result, not a step's need).
+#ifndef poundfe_dynamics_partitioned_history_h
+#define poundfe_dynamics_partitioned_history_h
+
+#include <poundfe/assembly/partition.h>
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/run.h>
+#include <poundfe/excitation/excitation.h>
+#include <poundfe/integration/newmark.h>
+
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+
+namespace poundfe
+{
+  /// The integrator's parameters of a partitioned run: the tangent
+  /// assembled (Tangent update = refactorize: the Woodbury update would
+  /// couple the ranks' blocks densely) and auto as Krylov-Newton (full
+  /// Newton would refactorise, at every iteration, a block that leaves out
+  /// the couplings between ranks).
+  NewmarkParameters partitioned_newmark_parameters(const TimeIntegrationParameters &time_integration);
+  /// The one-process solver each rank factorises its block with: the
+  /// input's when it is one (eigen-ldlt, umfpack), else eigen-ldlt.
+  std::string partitioned_block_solver(const std::string &linear_solver);
+
+  class PartitionedHistory
+  {
+  public:
+    /// Collective over `communicator`. `analysis` is this rank's copy of
+    /// the whole model: its system becomes this rank's part (the whole
+    /// M, K and C are freed); it must outlive this object. The input's nonlinear solver must reuse its
+    /// factorisation (auto is krylov-newton here); its tangent is assembled
+    /// (Tangent update is refactorize whatever the input says) and each
+    /// rank factorises its block with the input's Linear solver when that
+    /// is a one-process solver (eigen-ldlt, umfpack), else with eigen-ldlt.
+    /// InputError (the input, or more ranks than separable buildings). The
+    /// integrator's parameters and solver: the two functions above.
+    PartitionedHistory(Analysis &analysis, const TimeHistoryParameters &parameters,
+                       MPI_Comm communicator);
+
+    /// From rest at t = 0.
+    void initialize();
+    /// One step of Time step (cut and refined inside as the integrator
+    /// decides, alike on every rank). NumericalError on every rank if the
+    /// step fails.
+    void advance();
+
+    /// This rank's integrator: its state in the local numbering
+    /// (partition.h), its statistics (alike on every rank), its energy
+    /// balance (summed over the ranks).
+    const NewmarkIntegrator   &integrator() const { return *newmark; }
+    double                     time() const { return newmark->time(); }
+    const IterationStatistics &statistics() const { return newmark->statistics(); }
+    EnergyBalance              energy() const { return newmark->energy(); }
+    double max_energy_error() const { return newmark->max_energy_error(); }
+    const Vector &displacement() const { return newmark->displacement(); }
+
+    /// Every rank's own entries of `x` (a vector of this rank's part, in
+    /// its local numbering) in one vector of the whole model on rank 0;
+    /// empty on the others. Collective.
+    Vector gather(const Vector &x) const;
+
+    const BuildingPartition &partition() const { return parts; }
+    /// This rank's equations in the model's numbering.
+    std::array<unsigned int, 2> owned_range() const { return ownership->global_range(); }
+    unsigned int n_local_elements() const { return elements.size(); }
+    unsigned int n_ghosts() const { return ownership->n_ghosts(); }
+    std::string  linear_solver_name() const { return newmark->linear_solver_name(); }
+
+  private:
+    MPI_Comm                           communicator;
+    BuildingPartition                  parts;
+    Excitation                         excitation;
+    NonlinearElements                  elements;
+    std::unique_ptr<RankPartition>     ownership;
+    std::unique_ptr<NewmarkIntegrator> newmark;
+    LoadFunction                       load;
+    Vector                             whole_load; // p of the whole model
+  };
+} // namespace poundfe
+
+#endif

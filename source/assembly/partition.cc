@@ -1,0 +1,261 @@
+// Partition by building (assembly/partition.h; doc/theory.md §3.5d):
+// union-find of the buildings over the off-diagonal blocks of M, K and C,
+// each group widened to the interval of buildings it spans and overlapping
+// intervals merged (a rank's equations must stay contiguous), then the
+// blocks cut into runs whose equation counts are nearest to N/P each.
+#include <poundfe/assembly/partition.h>
+#include <poundfe/base/exceptions.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace poundfe
+{
+  namespace
+  {
+    unsigned int
+    building_root(std::vector<unsigned int> &parent, unsigned int b)
+    {
+      while (parent[b] != b)
+        b = parent[b] = parent[parent[b]];
+      return b;
+    }
+
+    /// The first equation of each building and, last, the number of equations.
+    std::vector<unsigned int>
+    first_equations(const Model &model)
+    {
+      std::vector<unsigned int> first;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        first.push_back(model.equation_range(b)[0]);
+      first.push_back(model.buildings.empty() ? 0 : model.equation_range(model.buildings.size() - 1)[1]);
+      return first;
+    }
+
+    /// [first, last) of each block of buildings that M, K and C join.
+    std::vector<std::array<unsigned int, 2>>
+    inseparable_building_blocks(const Model &model, const LinearSystem &system)
+    {
+      const unsigned int        n_buildings = model.buildings.size();
+      const std::vector<unsigned int> first = first_equations(model);
+      std::vector<unsigned int> building_of(system.n_equations());
+      for (unsigned int b = 0; b < n_buildings; ++b)
+        std::fill(building_of.begin() + first[b], building_of.begin() + first[b + 1], b);
+      std::vector<unsigned int> parent(n_buildings);
+      std::iota(parent.begin(), parent.end(), 0u);
+      for (const SparseMatrix *matrix : {&system.mass, &system.stiffness, &system.damping})
+        for (Eigen::Index column = 0; column < matrix->outerSize(); ++column)
+          for (SparseMatrix::InnerIterator it(*matrix, column); it; ++it)
+            if (it.value() != 0)
+              {
+                const unsigned int a = building_root(parent, building_of[it.row()]);
+                const unsigned int b = building_root(parent, building_of[it.col()]);
+                if (a != b)
+                  parent[std::max(a, b)] = std::min(a, b);
+              }
+      // each group's last building; a block ends where no group spans past it
+      std::vector<unsigned int> last_of_group(n_buildings, 0);
+      for (unsigned int b = 0; b < n_buildings; ++b)
+        {
+          unsigned int &last = last_of_group[building_root(parent, b)];
+          last               = std::max(last, b);
+        }
+      std::vector<std::array<unsigned int, 2>> blocks;
+      unsigned int                             start = 0, reach = 0;
+      for (unsigned int b = 0; b < n_buildings; ++b)
+        {
+          reach = std::max(reach, last_of_group[building_root(parent, b)]);
+          if (reach == b)
+            {
+              blocks.push_back({{start, b + 1}});
+              start = b + 1;
+            }
+        }
+      return blocks;
+    }
+  } // namespace
+
+  BuildingPartition
+  partition_by_building(const Model &model, const LinearSystem &system,
+                        const unsigned int n_parts, const std::string &input_file)
+  {
+    Assert(n_parts >= 1, dealii::ExcMessage("at least one part"));
+    const std::vector<unsigned int> first = first_equations(model);
+    AssertThrow(first.size() == model.buildings.size() + 1 &&
+                  first.back() == system.n_equations(),
+                dealii::ExcMessage("the buildings' equations must cover the model"));
+    const std::vector<std::array<unsigned int, 2>> blocks = inseparable_building_blocks(model, system);
+    if (n_parts > blocks.size())
+      throw InputError(input_file, 0, "the number of MPI ranks",
+                       std::to_string(n_parts) + " ranks, but the model splits by building into " +
+                         std::to_string(blocks.size()) +
+                         (blocks.size() == 1 ? " part" : " parts") +
+                         " only (buildings joined by M, K or C stay on one rank): run on at most " +
+                         std::to_string(blocks.size()) + (blocks.size() == 1 ? " rank" : " ranks"));
+
+    BuildingPartition partition;
+    partition.n_blocks = blocks.size();
+    partition.first_building.assign(1, 0);
+    const double total = system.n_equations();
+    unsigned int next  = 0; // the first block not yet given to a part
+    for (unsigned int part = 1; part < n_parts; ++part)
+      {
+        // the cut after block `end - 1` nearest to part N / P, leaving a
+        // block to each part still to come
+        const double target = total * part / n_parts;
+        unsigned int best   = next + 1;
+        for (unsigned int end = next + 1; end + (n_parts - part) <= blocks.size(); ++end)
+          if (std::abs(double(first[blocks[end - 1][1]]) - target) <
+              std::abs(double(first[blocks[best - 1][1]]) - target))
+            best = end;
+        partition.first_building.push_back(blocks[best - 1][1]);
+        next = best;
+      }
+    partition.first_building.push_back(model.buildings.size());
+    for (const unsigned int b : partition.first_building)
+      partition.first_equation.push_back(first[b]);
+    return partition;
+  }
+
+  LinearSystem
+  owned_part(const LinearSystem &system, const std::array<unsigned int, 2> range,
+             const unsigned int n_ghosts)
+  {
+    if (!system.modal_damping.empty())
+      throw InputError("", 0, "Damping/Type",
+                       "modal damping is not yet partitioned by building: use Rayleigh damping "
+                       "on more than one rank");
+    const unsigned int n_owned = range[1] - range[0], n_local = n_owned + n_ghosts;
+    const auto         cut     = [&](const SparseMatrix &matrix) {
+      if (matrix.rows() == 0) // absent (no P-Delta, no foundations)
+        return SparseMatrix();
+      SparseMatrix part = block(matrix, range);
+      part.conservativeResize(n_local, n_local);
+      part.makeCompressed();
+      return part;
+    };
+    const auto cut_vector = [&](const Vector &x) {
+      if (x.size() == 0)
+        return Vector();
+      Vector part = Vector::Zero(n_local);
+      part.head(n_owned) = x.segment(range[0], n_owned);
+      return part;
+    };
+    LinearSystem part;
+    part.mass                = cut(system.mass);
+    part.stiffness           = cut(system.stiffness);
+    part.geometric_stiffness = cut(system.geometric_stiffness);
+    part.damping             = cut(system.damping);
+    part.structure_mass      = cut(system.structure_mass);
+    part.structure_stiffness = cut(system.structure_stiffness);
+    part.influence           = cut_vector(system.influence);
+    part.influence_y         = cut_vector(system.influence_y);
+    part.influence_rz        = cut_vector(system.influence_rz);
+    part.influence_z         = cut_vector(system.influence_z);
+    part.rayleigh            = system.rayleigh;
+    return part;
+  }
+
+  void
+  keep_elements_on(NonlinearElements &elements, const std::array<unsigned int, 2> range)
+  {
+    elements.erase_if([range](const NonlinearElement &e) {
+      for (const int i : e.equations())
+        if (i >= int(range[0]) && i < int(range[1]))
+          return false;
+      return true;
+    });
+  }
+
+  RankPartition::RankPartition(const BuildingPartition &partition, const MPI_Comm communicator,
+                               NonlinearElements &elements)
+    : communicator(communicator)
+  {
+    int rank = 0, n = 1;
+    MPI_Comm_rank(communicator, &rank);
+    MPI_Comm_size(communicator, &n);
+    size = n;
+    AssertThrow(partition.n_parts() == size,
+                dealii::ExcMessage("one part per rank of the communicator"));
+    owned   = partition.equations(rank);
+    n_owned = owned[1] - owned[0];
+    const auto is_own = [this](const int i) { return i >= int(owned[0]) && i < int(owned[1]); };
+    for (const NonlinearElement &e : elements)
+      for (const int i : e.equations())
+        if (i >= 0 && !is_own(i))
+          ghosts.push_back(i);
+    std::sort(ghosts.begin(), ghosts.end());
+    ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
+    for (NonlinearElement &e : elements)
+      e.renumber([&](const int i) {
+        if (is_own(i))
+          return i - int(owned[0]);
+        return int(n_owned + (std::lower_bound(ghosts.begin(), ghosts.end(), i) - ghosts.begin()));
+      });
+
+    // ghosts by owner (sorted, and the owners' ranges are increasing)
+    receive_count.assign(size, 0);
+    for (const int i : ghosts)
+      {
+        const auto owner = std::upper_bound(partition.first_equation.begin(),
+                                            partition.first_equation.end(), (unsigned int)i) -
+                           partition.first_equation.begin() - 1;
+        ++receive_count[owner];
+      }
+    receive_offset.assign(size, 0);
+    std::partial_sum(receive_count.begin(), receive_count.end() - 1, receive_offset.begin() + 1);
+    send_count.assign(size, 0);
+    MPI_Alltoall(receive_count.data(), 1, MPI_INT, send_count.data(), 1, MPI_INT, communicator);
+    send_offset.assign(size, 0);
+    std::partial_sum(send_count.begin(), send_count.end() - 1, send_offset.begin() + 1);
+    send_equations.resize(send_offset.back() + send_count.back());
+    MPI_Alltoallv(ghosts.data(), receive_count.data(), receive_offset.data(), MPI_INT,
+                  send_equations.data(), send_count.data(), send_offset.data(), MPI_INT,
+                  communicator);
+    for (int &i : send_equations) // asked for in the model's numbering
+      i -= owned[0];
+    send_buffer.resize(send_equations.size());
+    receive_buffer.resize(ghosts.size());
+  }
+
+  void
+  RankPartition::sum(double *x, const unsigned int n) const
+  {
+    MPI_Allreduce(MPI_IN_PLACE, x, n, MPI_DOUBLE, MPI_SUM, communicator);
+  }
+
+  bool
+  RankPartition::any(const bool x) const
+  {
+    int value = x;
+    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT, MPI_LOR, communicator);
+    return value != 0;
+  }
+
+  void
+  RankPartition::all_gather(const double *x, const unsigned int n, double *all) const
+  {
+    MPI_Allgather(x, n, MPI_DOUBLE, all, n, MPI_DOUBLE, communicator);
+  }
+
+  void
+  RankPartition::update_ghosts(Eigen::VectorXd &x) const
+  {
+    for (unsigned int k = 0; k < send_equations.size(); ++k)
+      send_buffer[k] = x[send_equations[k]];
+    MPI_Alltoallv(send_buffer.data(), send_count.data(), send_offset.data(), MPI_DOUBLE,
+                  receive_buffer.data(), receive_count.data(), receive_offset.data(), MPI_DOUBLE,
+                  communicator);
+    for (unsigned int k = 0; k < ghosts.size(); ++k)
+      x[n_owned + k] = receive_buffer[k];
+  }
+
+  void
+  RankPartition::zero_ghosts(Eigen::VectorXd &x) const
+  {
+    x.segment(n_owned, ghosts.size()).setZero();
+  }
+} // namespace poundfe

@@ -1,0 +1,240 @@
+// Partition by building (assembly/partition.h) and the partitioned time
+// history (dynamics/partitioned_history.h): the blocks that M, K and C leave
+// separable, the balance of the runs, the refusal of too many ranks, and
+// the trajectory of a pounding row of buildings stepped over the ranks
+// against the whole model stepped on one process (the second method).
+// The suite runs on any number of ranks up to four: ctest runs it on one
+// (unit/assembly) and on two and three (mpi/partition).
+#include <poundfe/assembly/nonlinear_elements.h>
+#include <poundfe/assembly/partition.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/dynamics/partitioned_history.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/input/input_parameters.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "test_utilities.h"
+
+using namespace poundfe;
+
+namespace
+{
+  /// A shear building of `storeys` Bouc-Wen storeys (the text of its section).
+  std::string
+  shear_building(const unsigned int index, const unsigned int storeys, const double mass,
+                 const double stiffness)
+  {
+    std::string masses, stiffnesses;
+    for (unsigned int s = 0; s < storeys; ++s)
+      {
+        masses += (s ? ", " : "") + std::to_string(mass);
+        stiffnesses += (s ? ", " : "") + std::to_string(stiffness * (1 - 0.1 * s));
+      }
+    return "subsection Building " + std::to_string(index) + "\n  set Name = S" +
+           std::to_string(index) + "\n  set Type = shear\n  set Number of storeys = " +
+           std::to_string(storeys) + "\n  set Storey heights = 3.0\n  set Floor masses = " +
+           masses + "\n  set Storey stiffnesses = " + stiffnesses +
+           "\n  set Storey yield drifts = 0.004\n"
+           "  subsection Bouc-Wen\n    set alpha = 0.05\n  end\n"
+           "  subsection Damping\n    set Type = modes\n    set Damping ratio = 0.03\n"
+           "    set Modes = 1, 2\n  end\nend\n";
+  }
+
+  /// Four shear buildings of 3, 4, 3 and 2 storeys in a row, 3 mm apart,
+  /// pounding (Hertz-damp) under 1.2 s of a Kanai-Tajimi motion of 0.6 g:
+  /// made for this test, not one of the examples.
+  const std::string row_of_buildings =
+    "subsection Model\n  set Number of buildings = 4\n  set Separations = 0.003\nend\n" +
+    shear_building(1, 3, 30000, 3e7) + shear_building(2, 4, 35000, 2.5e7) +
+    shear_building(3, 3, 25000, 4e7) + shear_building(4, 2, 20000, 5e7) +
+    "subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n"
+    "    set Soil = soft\n    set Target PGA = 0.6\n    set Duration = 4\n    set Seed = 77\n"
+    "  end\nend\n"
+    "subsection Contact\n  set Law = hertz-damp\n  set Stiffness = 2e9\n"
+    "  set Damping from = calibrated\n  set Coefficient of restitution = 0.6\nend\n"
+    "subsection Time integration\n  set Time step = 0.002\n  set End time = 1.2\n"
+    "  set Newton residual tolerance = 1e-11\nend\n";
+
+  unsigned int
+  n_ranks()
+  {
+    return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  }
+
+  /// `text` in a temporary file of this rank's own (the ranks write at once).
+  std::string
+  rank_file(const std::string &name, const std::string &text)
+  {
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    return poundfe_test::temporary_file("partition-" + name + "-" + std::to_string(rank) + ".prm",
+                                        text);
+  }
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(partition)
+
+// Buildings 1 and 3 of five joined by a (made-up) stiffness entry: buildings
+// 1-3 become one block, whatever lies between; 0 and 4 stay alone. The
+// cut nearest to N/2 on these blocks is checked against all cuts.
+BOOST_AUTO_TEST_CASE(blocks_follow_the_couplings_of_m_k_and_c)
+{
+  std::string text = "subsection Model\n  set Number of buildings = 5\n  set Separations = 0.01\nend\n";
+  const unsigned int storeys[] = {3, 2, 4, 3, 5};
+  for (unsigned int b = 0; b < 5; ++b)
+    text += shear_building(b + 1, storeys[b], 30000, 3e7);
+  text += "subsection Ground motion\n  set Type = none\nend\n";
+  const InputParameters input    = read_parameters(rank_file("five", text));
+  Analysis              analysis = prepare_analysis(input);
+  BOOST_TEST(partition_by_building(analysis.model, analysis.system, 5, "five.prm").n_blocks == 5u);
+
+  const unsigned int i = analysis.model.equation_range(1)[0], j = analysis.model.equation_range(3)[0];
+  analysis.system.stiffness.coeffRef(i, j) += 1.0;
+  analysis.system.stiffness.coeffRef(j, i) += 1.0;
+  const BuildingPartition two = partition_by_building(analysis.model, analysis.system, 2, "five.prm");
+  BOOST_TEST(two.n_blocks == 3u);
+  // blocks: {0} 3 equations, {1,2,3} 9, {4} 5; N = 17: the cut after {0}
+  // leaves 3 | 14, after {1,2,3} 12 | 5; |12 - 8.5| < |3 - 8.5|
+  BOOST_TEST(two.first_building == std::vector<unsigned int>({0, 4, 5}), boost::test_tools::per_element());
+  BOOST_TEST(two.first_equation == std::vector<unsigned int>({0, 12, 17}), boost::test_tools::per_element());
+  const BuildingPartition three = partition_by_building(analysis.model, analysis.system, 3, "five.prm");
+  BOOST_TEST(three.first_building == std::vector<unsigned int>({0, 1, 4, 5}), boost::test_tools::per_element());
+
+  try
+    {
+      partition_by_building(analysis.model, analysis.system, 4, "five.prm");
+      BOOST_FAIL("four ranks for three blocks were accepted");
+    }
+  catch (const InputError &e)
+    {
+      BOOST_TEST(e.parameter() == "the number of MPI ranks");
+      BOOST_TEST(std::string(e.what()).find("3 parts only") != std::string::npos);
+      BOOST_TEST(std::string(e.what()).find("at most 3 ranks") != std::string::npos);
+    }
+}
+
+// The part of a rank: its block of M, K, C numbered from 0, then empty ghost
+// rows; the influence vector cut alike.
+BOOST_AUTO_TEST_CASE(owned_part_is_the_block_with_empty_ghost_rows)
+{
+  const InputParameters input =
+    read_parameters(rank_file("row", row_of_buildings));
+  const Analysis     analysis = prepare_analysis(input);
+  const auto         range    = analysis.model.equation_range(1); // building 2: 4 storeys
+  const LinearSystem part     = owned_part(analysis.system, range, 3);
+  BOOST_TEST(part.n_equations() == 4u + 3u);
+  const Eigen::MatrixXd whole(analysis.system.stiffness);
+  const Eigen::MatrixXd mine(part.stiffness);
+  BOOST_TEST((mine.topLeftCorner(4, 4) - whole.block(range[0], range[0], 4, 4)).norm() == 0.0);
+  BOOST_TEST(mine.bottomRows(3).norm() == 0.0);
+  BOOST_TEST(Eigen::MatrixXd(part.damping).rightCols(3).norm() == 0.0);
+  BOOST_TEST(part.influence.head(4).sum() == 4.0);
+  BOOST_TEST(part.influence.tail(3).norm() == 0.0);
+}
+
+// The row of buildings stepped over every rank of MPI_COMM_WORLD against the
+// whole model stepped here on one process, with each method that reuses a
+// factorisation: every step's displacements (gathered to rank 0) within
+// 1e-8 of the peak. The two iterate alike while no frozen tangent holds a
+// closed gap between two ranks' buildings; after one does, they stop at
+// different iterates within the Newton tolerance (1e-11 of the first
+// residual), which the trajectory carries at most about 1e3 times larger.
+// Gaps between two ranks' buildings must close (buildings 2 and 3 pound,
+// and the cut for two or three ranks runs between them), and the energy summed over
+// the ranks must balance as the whole model's does.
+BOOST_AUTO_TEST_CASE(partitioned_run_follows_the_whole_model)
+{
+  const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  BOOST_TEST_REQUIRE(n_ranks() <= 4u);
+  const std::string file = rank_file("row", row_of_buildings);
+  for (const NonlinearSolver method :
+       {NonlinearSolver::krylov_newton, NonlinearSolver::modified_newton, NonlinearSolver::bfgs})
+    {
+      InputParameters input = read_parameters(file);
+      input.time_integration.newmark.newton.nonlinear_solver = method;
+      const TimeHistoryParameters parameters = time_history_parameters(input);
+      const std::string name = nonlinear_solver_names().name(method);
+
+      // the whole model, here
+      Analysis          whole = prepare_analysis(input);
+      const Excitation  excitation = make_excitation(whole, parameters);
+      NonlinearElements elements   = make_nonlinear_elements(whole.model);
+      NewmarkIntegrator serial(whole.system, "eigen-ldlt",
+                               partitioned_newmark_parameters(parameters.time_integration),
+                               &elements);
+      Vector            p(whole.system.n_equations());
+      excitation.load(0, p);
+      serial.initialize(p);
+      const LoadFunction load = [&](const double t, Vector &x) { excitation.load(t, x); };
+
+      // the same over the ranks
+      Analysis           mine = prepare_analysis(input);
+      PartitionedHistory partitioned(mine, parameters, MPI_COMM_WORLD);
+      partitioned.initialize();
+      const std::vector<unsigned int> &first = partitioned.partition().first_equation;
+      const auto owner = [&first](const int i) {
+        return std::upper_bound(first.begin(), first.end(), (unsigned int)i) - first.begin();
+      };
+
+      double       peak = 0, difference = 0;
+      unsigned int cross_contacts = 0;
+      const unsigned long n_steps = std::lround(1.2 / 0.002);
+      for (unsigned long step = 0; step < n_steps; ++step)
+        {
+          serial.advance(load);
+          partitioned.advance();
+          const Vector u = partitioned.gather(partitioned.displacement());
+          if (rank == 0)
+            {
+              peak       = std::max(peak, serial.displacement().lpNorm<Eigen::Infinity>());
+              difference = std::max(difference, (u - serial.displacement()).lpNorm<Eigen::Infinity>());
+            }
+          for (const NonlinearElement &e : elements) // a gap between two ranks, closed
+            if (e.kind == ElementKind::gap && e.is_active() &&
+                owner(e.equations()[0]) != owner(e.equations()[1]))
+              ++cross_contacts;
+        }
+      BOOST_TEST_MESSAGE(name << " on " << n_ranks() << " rank(s): largest difference "
+                              << difference / std::max(peak, 1e-300) << " of the peak "
+                              << peak << " m; " << cross_contacts
+                              << " steps with a gap between two ranks closed; energy error "
+                              << partitioned.max_energy_error() << " (whole model "
+                              << serial.max_energy_error() << ")");
+      if (rank == 0)
+        BOOST_TEST(difference <= 1e-8 * peak);
+      if (n_ranks() > 1)
+        BOOST_TEST(cross_contacts > 0u);
+      BOOST_TEST(partitioned.energy().contact > 0.0);
+      BOOST_TEST(partitioned.energy().contact == serial.energy().contact,
+                 boost::test_tools::tolerance(1e-6));
+      BOOST_TEST(partitioned.energy().hysteretic == serial.energy().hysteretic,
+                 boost::test_tools::tolerance(1e-6));
+      BOOST_TEST(partitioned.max_energy_error() < 1e-6);
+      BOOST_TEST(partitioned.statistics().steps == serial.statistics().steps);
+    }
+}
+
+// Full Newton would refactorise a block that leaves out the couplings
+// between ranks at every iteration: refused with the entry named.
+BOOST_AUTO_TEST_CASE(full_newton_is_refused_over_ranks)
+{
+  InputParameters input = read_parameters(rank_file("row", row_of_buildings));
+  input.time_integration.newmark.newton.nonlinear_solver = NonlinearSolver::newton;
+  Analysis analysis = prepare_analysis(input);
+  try
+    {
+      PartitionedHistory history(analysis, time_history_parameters(input), MPI_COMM_WORLD);
+      BOOST_FAIL("full Newton was accepted");
+    }
+  catch (const InputError &e)
+    {
+      BOOST_TEST(e.parameter() == "Time integration/Nonlinear solver");
+      BOOST_TEST(std::string(e.what()).find("krylov-newton") != std::string::npos);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
