@@ -400,6 +400,7 @@ namespace poundfe
   void
   NewmarkIntegrator::restart(const Vector &load, const Vector &u_new, const Vector &v_new)
   {
+    Assert(!distribution, dealii::ExcMessage("a restart is not distributed"));
     u        = u_new;
     v        = v_new;
     load_now = load;
@@ -786,7 +787,9 @@ namespace poundfe
   bool
   NewmarkIntegrator::try_step(Level &L, const Vector &p)
   {
-    if (n_elements == 0)
+    // distributed: the Newton path on every rank, so that a rank whose
+    // buildings have no nonlinear element takes part in the others' sums
+    if (n_elements == 0 && !distribution)
       {
         set_step_load(L, p);
         return solve_linear_step(L);
@@ -900,6 +903,7 @@ namespace poundfe
   NewmarkIntegrator::residual_and_tangent(const Vector &load, const Vector &u_trial,
                                           Vector &residual_out, Eigen::MatrixXd &tangent_out)
   {
+    Assert(!distribution, dealii::ExcMessage("the dense tangent is of one process's model"));
     Level       &L  = level(0);
     const double g  = parameters.gamma;
     Vector       an = L.c_mass_u * (u_trial - u) - L.c_mass_v * v - L.c_mass_a * a;

@@ -218,6 +218,49 @@ BOOST_AUTO_TEST_CASE(partitioned_run_follows_the_whole_model)
     }
 }
 
+// Buildings 2 and 3 elastic and no contact law: with two or three ranks some
+// rank owns no nonlinear element, and must still take part in every sum of
+// the others' Newton iterations (it would wait for ever otherwise).
+BOOST_AUTO_TEST_CASE(a_rank_without_nonlinear_elements_steps_with_the_others)
+{
+  std::string text = "subsection Model\n  set Number of buildings = 3\n  set Separations = 0.01\nend\n" +
+                     shear_building(1, 3, 30000, 3e7);
+  for (const unsigned int b : {2u, 3u})
+    text += "subsection Building " + std::to_string(b) +
+            "\n  set Type = shear\n  set Number of storeys = " + std::to_string(b) +
+            "\n  set Storey heights = 3.0\n  set Floor masses = 20000\n"
+            "  set Storey stiffnesses = 4e7\nend\n";
+  text += "subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n"
+          "    set Target PGA = 0.4\n    set Duration = 2\n    set Seed = 5\n  end\nend\n"
+          "subsection Contact\n  set Law = none\nend\n"
+          "subsection Time integration\n  set Time step = 0.005\n  set End time = 0.5\n"
+          "  set Nonlinear solver = modified-newton\n  set Newton residual tolerance = 1e-11\nend\n";
+  const InputParameters       input      = read_parameters(rank_file("elastic", text));
+  const TimeHistoryParameters parameters = time_history_parameters(input);
+  Analysis                    whole      = prepare_analysis(input);
+  const Excitation            excitation = make_excitation(whole, parameters);
+  NonlinearElements           elements   = make_nonlinear_elements(whole.model);
+  NewmarkIntegrator serial(whole.system, "eigen-ldlt",
+                           partitioned_newmark_parameters(parameters.time_integration), &elements);
+  Vector p(whole.system.n_equations());
+  excitation.load(0, p);
+  serial.initialize(p);
+  Analysis           mine = prepare_analysis(input);
+  PartitionedHistory partitioned(mine, parameters, MPI_COMM_WORLD);
+  partitioned.initialize();
+  if (n_ranks() > 1)
+    BOOST_TEST(dealii::Utilities::MPI::min(partitioned.n_local_elements(), MPI_COMM_WORLD) == 0u);
+  for (unsigned int step = 0; step < 100; ++step)
+    {
+      serial.advance([&](const double t, Vector &x) { excitation.load(t, x); });
+      partitioned.advance();
+    }
+  const Vector u = partitioned.gather(partitioned.displacement());
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    BOOST_TEST((u - serial.displacement()).lpNorm<Eigen::Infinity>() <=
+               1e-10 * serial.displacement().lpNorm<Eigen::Infinity>());
+}
+
 // Full Newton would refactorise a block that leaves out the couplings
 // between ranks at every iteration: refused with the entry named.
 BOOST_AUTO_TEST_CASE(full_newton_is_refused_over_ranks)
