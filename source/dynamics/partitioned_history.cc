@@ -67,6 +67,12 @@ namespace poundfe
         throw InputError(parameters.input.file, parameters.input.line_of(e.parameter()),
                          e.parameter(), e.problem());
       }
+    // Newton's messages name the model's equations
+    const std::vector<std::string> names = equation_names(analysis.model);
+    std::vector<std::string>       local_names(names.begin() + range[0], names.begin() + range[1]);
+    for (const int g : ownership->ghost_equations())
+      local_names.push_back(names[g] + " (a ghost)");
+    newmark->set_equation_names(std::move(local_names));
     // the load of the whole model (its M r), this rank's equations taken:
     // once per step, not per iteration
     whole_load.resize(parts.first_equation.back());

@@ -24,26 +24,6 @@ namespace poundfe
       return c == 0 ? "ux" : (c == 1 ? "uy" : "rz");
     }
 
-    /// "A3 node 12 (6, 3) rz" for each equation (the first DOF that maps to it).
-    std::vector<std::string>
-    equation_names(const Model &model)
-    {
-      std::vector<std::string> names(model.n_equations());
-      for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
-        {
-          const int eq = model.equation(dof);
-          if (eq < 0 || !names[eq].empty())
-            continue;
-          const Node        &node = model.nodes[dof / n_dofs_per_node];
-          std::ostringstream s;
-          s << model.buildings[node.building].name << " node " << dof / n_dofs_per_node
-            << " at (" << node.position.x << ", " << node.position.y << ") "
-            << component_name(dof % n_dofs_per_node);
-          names[eq] = s.str();
-        }
-      return names;
-    }
-
     /// SIGINT/SIGTERM, agreed by every rank (mpirun may deliver it to the
     /// ranks at different steps; a rank that stopped alone would leave the
     /// others waiting in the distributed solver).
@@ -91,6 +71,25 @@ namespace poundfe
       return std::make_unique<DormandPrinceIntegrator>(system, dopri, &elements);
     }
   } // namespace
+
+  std::vector<std::string>
+  equation_names(const Model &model)
+  {
+    std::vector<std::string> names(model.n_equations());
+    for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
+      {
+        const int eq = model.equation(dof);
+        if (eq < 0 || !names[eq].empty())
+          continue;
+        const Node        &node = model.nodes[dof / n_dofs_per_node];
+        std::ostringstream s;
+        s << model.buildings[node.building].name << " node " << dof / n_dofs_per_node
+          << " at (" << node.position.x << ", " << node.position.y << ") "
+          << component_name(dof % n_dofs_per_node);
+        names[eq] = s.str();
+      }
+    return names;
+  }
 
   Excitation
   make_excitation(const Analysis &analysis, const TimeHistoryParameters &parameters)

@@ -80,6 +80,8 @@ namespace poundfe
     void zero_ghosts(Eigen::VectorXd &x) const override;
 
     unsigned int n_ghosts() const { return ghosts.size(); }
+    /// The ghosts in the model's numbering (local n_owned + k is ghost k).
+    const std::vector<int> &ghost_equations() const { return ghosts; }
     /// Doubles this rank receives per ghost update (= n_ghosts()).
     unsigned int n_received() const { return ghosts.size(); }
 

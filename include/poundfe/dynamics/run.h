@@ -90,6 +90,10 @@ namespace poundfe
     const InitialState initial; // checked against the model on construction
   };
 
+  /// "A3 node 12 at (6, 3) rz" for each equation of `model` (the first DOF
+  /// that maps to it): where Newton's messages point.
+  std::vector<std::string> equation_names(const Model &model);
+
   /// The excitation the input describes: the ground motion and the nodal
   /// forces (with white-noise forces, the sample of Ground motion/Realization).
   Excitation make_excitation(const Analysis &analysis, const TimeHistoryParameters &parameters);
