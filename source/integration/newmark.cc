@@ -169,20 +169,7 @@ namespace poundfe
     for (auto *x : {&work, &supplied_work, &committed_force, &committed_history, &committed_rate})
       x->assign(n_elements, 0.0);
     if (distribution)
-      {
-        check_distributable();
-        krylov.set_distribution(distribution);
-        bfgs.set_distribution(distribution);
-        const auto [first, last] = distribution->owned_range();
-        for (unsigned int h = 0; h < n_elements; ++h)
-          {
-            const std::vector<int> &equations = (*elements)[h].equations();
-            const auto counted = std::find_if(equations.begin(), equations.end(),
-                                              [](const int i) { return i >= 0; });
-            counted_here.push_back(counted != equations.end() && *counted >= int(first) &&
-                                   *counted < int(last));
-          }
-      }
+      set_up_distribution();
     if (parameters.steps_per_period > 0)
       base_level = accuracy_level(parameters.time_step,
                                   highest_frequency_bound(system.stiffness, system.mass),
@@ -191,6 +178,24 @@ namespace poundfe
   }
 
   NewmarkIntegrator::~NewmarkIntegrator() = default;
+
+  void
+  NewmarkIntegrator::set_up_distribution()
+  {
+    check_distributable();
+    krylov.set_distribution(distribution);
+    bfgs.set_distribution(distribution);
+    // an element between two ranks counts on the owner of its first equation
+    const auto [first, last] = distribution->owned_range();
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        const std::vector<int> &equations = (*elements)[h].equations();
+        const auto counted = std::find_if(equations.begin(), equations.end(),
+                                          [](const int i) { return i >= 0; });
+        counted_here.push_back(counted != equations.end() && *counted >= int(first) &&
+                               *counted < int(last));
+      }
+  }
 
   void
   NewmarkIntegrator::check_distributable() const

@@ -288,6 +288,9 @@ namespace poundfe
     void   solve_frozen(Level &L, const Vector &b, Vector &x);
     /// Scale the increment by the secant line search (Crisfield §9.3).
     void   search_line(Level &L, unsigned int it);
+    /// The constructor's part for a partitioned model: the checks, the
+    /// quasi-Newton updates' sums, which elements count here.
+    void   set_up_distribution();
     /// Refuse what a partitioned model cannot yet do (InputError).
     void   check_distributable() const;
     /// Norm and inner product over every rank's own equations.
