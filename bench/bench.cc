@@ -376,34 +376,6 @@ namespace
     std::fclose(out);
   }
 
-  /// The whole model on one process with what PartitionedHistory would use
-  /// (refactorised tangent, auto as Krylov-Newton, a one-process solver):
-  /// the reference of --partitioned.
-  struct WholeModelHistory
-  {
-    WholeModelHistory(const Analysis &analysis, const TimeHistoryParameters &parameters)
-      : excitation(make_excitation(analysis, parameters))
-      , elements(make_nonlinear_elements(analysis.model))
-      , integrator(analysis.system,
-                   partitioned_block_solver(parameters.time_integration.linear_solver),
-                   partitioned_newmark_parameters(parameters.time_integration), &elements)
-    {
-      Vector p0(analysis.system.n_equations());
-      excitation.load(0, p0);
-      integrator.initialize(p0);
-    }
-
-    void
-    advance()
-    {
-      integrator.advance([this](const double t, Vector &p) { excitation.load(t, p); });
-    }
-
-    Excitation        excitation;
-    NonlinearElements elements;
-    NewmarkIntegrator integrator;
-  };
-
   /// What --partitioned and --serial print (rank 0).
   struct PartitionedReport
   {
@@ -466,17 +438,17 @@ namespace
     for (unsigned long step = 0; step < report.n_steps; ++step)
       serial ? whole->advance() : partitioned->advance();
     report.stepping = seconds_since(start);
-    const TimeStepper &stepper = serial ? static_cast<const TimeStepper &>(whole->integrator) :
+    const TimeStepper &stepper = serial ? static_cast<const TimeStepper &>(whole->integrator()) :
                                           partitioned->integrator();
     report.statistics   = stepper.statistics();
     report.energy_error = stepper.max_energy_error();
     const Vector final_u =
-      serial ? whole->integrator.displacement() : partitioned->gather(stepper.displacement());
+      serial ? stepper.displacement() : partitioned->gather(stepper.displacement());
     report.max_rss = dealii::Utilities::MPI::max(peak_memory_mib(), comm);
     report.sum_rss = dealii::Utilities::MPI::sum(peak_memory_mib(), comm);
     if (rank != 0)
       return 0;
-    report.solver = serial ? whole->integrator.linear_solver_name() :
+    report.solver = serial ? whole->integrator().linear_solver_name() :
                              partitioned->linear_solver_name();
     if (serial)
       report.first_line = "serial " + file + ": " + std::to_string(n_equations) +

@@ -39,6 +39,24 @@ namespace poundfe
                                                                            "eigen-ldlt";
   }
 
+  WholeModelHistory::WholeModelHistory(const Analysis              &analysis,
+                                       const TimeHistoryParameters &parameters)
+    : excitation(make_excitation(analysis, parameters))
+    , elements(make_nonlinear_elements(analysis.model))
+    , newmark(analysis.system, partitioned_block_solver(parameters.time_integration.linear_solver),
+              partitioned_newmark_parameters(parameters.time_integration), &elements)
+  {
+    Vector p0(analysis.system.n_equations());
+    excitation.load(0, p0);
+    newmark.initialize(p0);
+  }
+
+  void
+  WholeModelHistory::advance()
+  {
+    newmark.advance([this](const double t, Vector &p) { excitation.load(t, p); });
+  }
+
   PartitionedHistory::PartitionedHistory(Analysis                    &analysis,
                                          const TimeHistoryParameters &parameters,
                                          const MPI_Comm               communicator)

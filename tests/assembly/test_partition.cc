@@ -160,16 +160,9 @@ BOOST_AUTO_TEST_CASE(partitioned_run_follows_the_whole_model)
       const std::string name = nonlinear_solver_names().name(method);
 
       // the whole model, here
-      Analysis          whole = prepare_analysis(input);
-      const Excitation  excitation = make_excitation(whole, parameters);
-      NonlinearElements elements   = make_nonlinear_elements(whole.model);
-      NewmarkIntegrator serial(whole.system, "eigen-ldlt",
-                               partitioned_newmark_parameters(parameters.time_integration),
-                               &elements);
-      Vector            p(whole.system.n_equations());
-      excitation.load(0, p);
-      serial.initialize(p);
-      const LoadFunction load = [&](const double t, Vector &x) { excitation.load(t, x); };
+      Analysis                 whole = prepare_analysis(input);
+      WholeModelHistory        serial(whole, parameters);
+      const NewmarkIntegrator &reference = serial.integrator();
 
       // the same over the ranks
       Analysis           mine = prepare_analysis(input);
@@ -185,15 +178,16 @@ BOOST_AUTO_TEST_CASE(partitioned_run_follows_the_whole_model)
       const unsigned long n_steps = std::lround(1.2 / 0.002);
       for (unsigned long step = 0; step < n_steps; ++step)
         {
-          serial.advance(load);
+          serial.advance();
           partitioned.advance();
           const Vector u = partitioned.gather(partitioned.displacement());
           if (rank == 0)
             {
-              peak       = std::max(peak, serial.displacement().lpNorm<Eigen::Infinity>());
-              difference = std::max(difference, (u - serial.displacement()).lpNorm<Eigen::Infinity>());
+              peak       = std::max(peak, reference.displacement().lpNorm<Eigen::Infinity>());
+              difference = std::max(difference, (u - reference.displacement()).lpNorm<Eigen::Infinity>());
             }
-          for (const NonlinearElement &e : elements) // a gap between two ranks, closed
+          // a gap between two ranks, closed
+          for (const NonlinearElement &e : serial.nonlinear_elements())
             if (e.kind == ElementKind::gap && e.is_active() &&
                 owner(e.equations()[0]) != owner(e.equations()[1]))
               ++cross_contacts;
@@ -203,18 +197,18 @@ BOOST_AUTO_TEST_CASE(partitioned_run_follows_the_whole_model)
                               << peak << " m; " << cross_contacts
                               << " steps with a gap between two ranks closed; energy error "
                               << partitioned.max_energy_error() << " (whole model "
-                              << serial.max_energy_error() << ")");
+                              << reference.max_energy_error() << ")");
       if (rank == 0)
         BOOST_TEST(difference <= 1e-8 * peak);
       if (n_ranks() > 1)
         BOOST_TEST(cross_contacts > 0u);
       BOOST_TEST(partitioned.energy().contact > 0.0);
-      BOOST_TEST(partitioned.energy().contact == serial.energy().contact,
+      BOOST_TEST(partitioned.energy().contact == reference.energy().contact,
                  boost::test_tools::tolerance(1e-6));
-      BOOST_TEST(partitioned.energy().hysteretic == serial.energy().hysteretic,
+      BOOST_TEST(partitioned.energy().hysteretic == reference.energy().hysteretic,
                  boost::test_tools::tolerance(1e-6));
       BOOST_TEST(partitioned.max_energy_error() < 1e-6);
-      BOOST_TEST(partitioned.statistics().steps == serial.statistics().steps);
+      BOOST_TEST(partitioned.statistics().steps == reference.statistics().steps);
     }
 }
 
@@ -238,13 +232,7 @@ BOOST_AUTO_TEST_CASE(a_rank_without_nonlinear_elements_steps_with_the_others)
   const InputParameters       input      = read_parameters(rank_file("elastic", text));
   const TimeHistoryParameters parameters = time_history_parameters(input);
   Analysis                    whole      = prepare_analysis(input);
-  const Excitation            excitation = make_excitation(whole, parameters);
-  NonlinearElements           elements   = make_nonlinear_elements(whole.model);
-  NewmarkIntegrator serial(whole.system, "eigen-ldlt",
-                           partitioned_newmark_parameters(parameters.time_integration), &elements);
-  Vector p(whole.system.n_equations());
-  excitation.load(0, p);
-  serial.initialize(p);
+  WholeModelHistory           serial(whole, parameters);
   Analysis           mine = prepare_analysis(input);
   PartitionedHistory partitioned(mine, parameters, MPI_COMM_WORLD);
   partitioned.initialize();
@@ -252,13 +240,13 @@ BOOST_AUTO_TEST_CASE(a_rank_without_nonlinear_elements_steps_with_the_others)
     BOOST_TEST(dealii::Utilities::MPI::min(partitioned.n_local_elements(), MPI_COMM_WORLD) == 0u);
   for (unsigned int step = 0; step < 100; ++step)
     {
-      serial.advance([&](const double t, Vector &x) { excitation.load(t, x); });
+      serial.advance();
       partitioned.advance();
     }
   const Vector u = partitioned.gather(partitioned.displacement());
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    BOOST_TEST((u - serial.displacement()).lpNorm<Eigen::Infinity>() <=
-               1e-10 * serial.displacement().lpNorm<Eigen::Infinity>());
+    BOOST_TEST((u - serial.integrator().displacement()).lpNorm<Eigen::Infinity>() <=
+               1e-10 * serial.integrator().displacement().lpNorm<Eigen::Infinity>());
 }
 
 // Full Newton would refactorise a block that leaves out the couplings

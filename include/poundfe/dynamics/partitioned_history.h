@@ -34,6 +34,24 @@ namespace poundfe
   /// input's when it is one (eigen-ldlt, umfpack), else eigen-ldlt.
   std::string partitioned_block_solver(const std::string &linear_solver);
 
+  /// The whole model stepped on one process with the integrator's
+  /// parameters and solver of a partitioned run, from rest: what a
+  /// partitioned run is compared with (tests, poundfe-bench --serial).
+  class WholeModelHistory
+  {
+  public:
+    /// `analysis` must outlive this object.
+    WholeModelHistory(const Analysis &analysis, const TimeHistoryParameters &parameters);
+    void advance();
+    const NewmarkIntegrator &integrator() const { return newmark; }
+    const NonlinearElements &nonlinear_elements() const { return elements; }
+
+  private:
+    Excitation        excitation;
+    NonlinearElements elements;
+    NewmarkIntegrator newmark;
+  };
+
   class PartitionedHistory
   {
   public:
