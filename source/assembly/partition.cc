@@ -224,7 +224,18 @@ namespace poundfe
   void
   RankPartition::sum(double *x, const unsigned int n) const
   {
-    MPI_Allreduce(MPI_IN_PLACE, x, n, MPI_DOUBLE, MPI_SUM, communicator);
+    // every rank adds the same numbers in the same order (rank 0 first), so
+    // all get the same bits: the decisions taken from the sums (converged,
+    // re-form the tangent) then agree, which MPI_Allreduce does not promise
+    sum_buffer.resize(std::size_t(n) * size);
+    MPI_Allgather(x, n, MPI_DOUBLE, sum_buffer.data(), n, MPI_DOUBLE, communicator);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        double total = sum_buffer[i];
+        for (unsigned int r = 1; r < size; ++r)
+          total += sum_buffer[std::size_t(r) * n + i];
+        x[i] = total;
+      }
   }
 
   bool

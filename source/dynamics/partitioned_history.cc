@@ -3,7 +3,12 @@
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/dynamics/partitioned_history.h>
 
+#include <poundfe/base/exceptions.h>
+
 #include <deal.II/base/exceptions.h>
+
+#include <exception>
+#include <string>
 
 namespace poundfe
 {
@@ -20,6 +25,59 @@ namespace poundfe
                                    parameters.input.file);
     }
 
+    /// Bytes of `text` from rank `root` to every rank of `communicator`.
+    void
+    broadcast(std::string &text, const int root, const MPI_Comm communicator)
+    {
+      int length = text.size();
+      MPI_Bcast(&length, 1, MPI_INT, root, communicator);
+      text.resize(length);
+      MPI_Bcast(text.data(), length, MPI_CHAR, root, communicator);
+    }
+
+    /// Collective: when `error` is set on some rank, every rank throws the
+    /// error of the first such rank (an InputError stays one, naming its
+    /// entry; anything else is a NumericalError with its message), so that
+    /// no rank goes on alone into a collective call.
+    void
+    agree_on_error(const std::exception_ptr &error, const MPI_Comm communicator)
+    {
+      int rank = 0, size = 1;
+      MPI_Comm_rank(communicator, &rank);
+      MPI_Comm_size(communicator, &size);
+      int first = error ? rank : size;
+      MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, communicator);
+      if (first == size)
+        return;
+      int         input_error = 0, line = 0;
+      std::string file, parameter, problem;
+      if (rank == first)
+        try
+          {
+            std::rethrow_exception(error);
+          }
+        catch (const InputError &e)
+          {
+            input_error = 1;
+            file        = e.file();
+            line        = e.line();
+            parameter   = e.parameter();
+            problem     = e.problem();
+          }
+        catch (const std::exception &e)
+          {
+            problem = e.what();
+          }
+      MPI_Bcast(&input_error, 1, MPI_INT, first, communicator);
+      MPI_Bcast(&line, 1, MPI_INT, first, communicator);
+      for (std::string *text : {&file, &parameter, &problem})
+        broadcast(*text, first, communicator);
+      if (rank == first)
+        std::rethrow_exception(error);
+      if (input_error)
+        throw InputError(file, line, parameter, problem);
+      throw NumericalError(problem);
+    }
   } // namespace
 
   NewmarkParameters
@@ -29,6 +87,9 @@ namespace poundfe
     newmark.newton.tangent_update = TangentUpdate::refactorize;
     if (newmark.newton.nonlinear_solver == NonlinearSolver::automatic)
       newmark.newton.nonlinear_solver = NonlinearSolver::krylov_newton;
+    // the block solver is ours to choose: UMFPACK where a rank's elements
+    // have a nonsymmetric tangent, on that rank alone
+    newmark.lu_when_nonsymmetric = true;
     return newmark;
   }
 
@@ -74,6 +135,8 @@ namespace poundfe
     LinearSystem part = owned_part(analysis.system, range, ownership->n_ghosts());
     analysis.system   = std::move(part);
     const TimeIntegrationParameters &time_integration = parameters.time_integration;
+    // a refusal or a singular block on one rank stops every rank
+    std::exception_ptr error;
     try
       {
         newmark = std::make_unique<NewmarkIntegrator>(
@@ -82,9 +145,15 @@ namespace poundfe
       }
     catch (const InputError &e) // the integrator names the entry, not the file
       {
-        throw InputError(parameters.input.file, parameters.input.line_of(e.parameter()),
-                         e.parameter(), e.problem());
+        error = std::make_exception_ptr(InputError(parameters.input.file,
+                                                   parameters.input.line_of(e.parameter()),
+                                                   e.parameter(), e.problem()));
       }
+    catch (const std::exception &)
+      {
+        error = std::current_exception();
+      }
+    agree_on_error(error, communicator);
     // Newton's messages name the model's equations
     const std::vector<std::string> names = equation_names(analysis.model);
     std::vector<std::string>       local_names(names.begin() + range[0], names.begin() + range[1]);

@@ -377,6 +377,11 @@ namespace poundfe
   {
     u            = u0;
     v            = v0;
+    if (distribution) // the owners' initial state at the ghosts
+      {
+        distribution->update_ghosts(u);
+        distribution->update_ghosts(v);
+      }
     load_now     = load;
     step_count   = 0;
     current_time = 0;
@@ -405,7 +410,7 @@ namespace poundfe
   void
   NewmarkIntegrator::restart(const Vector &load, const Vector &u_new, const Vector &v_new)
   {
-    Assert(!distribution, dealii::ExcMessage("a restart is not distributed"));
+    AssertThrow(!distribution, dealii::ExcMessage("a restart is not distributed"));
     u        = u_new;
     v        = v_new;
     load_now = load;
@@ -414,6 +419,29 @@ namespace poundfe
 
   void
   NewmarkIntegrator::set_consistent_acceleration(const Vector &load)
+  {
+    if (!distribution)
+      {
+        solve_consistent_acceleration(load);
+        return;
+      }
+    // an element that refuses the initial state on one rank stops every rank
+    std::string why;
+    try
+      {
+        solve_consistent_acceleration(load);
+      }
+    catch (const NumericalError &e)
+      {
+        why = e.what();
+      }
+    if (distribution->any(!why.empty()))
+      throw NumericalError(why.empty() ? "the initial state failed on another rank" : why);
+    distribution->update_ghosts(a); // a ghost equation carries no mass here
+  }
+
+  void
+  NewmarkIntegrator::solve_consistent_acceleration(const Vector &load)
   {
     Vector r = load - damping_product(system, v) - system.stiffness * u;
     gather(u, v);
@@ -463,8 +491,6 @@ namespace poundfe
     for (unsigned int i = 0; i < n; ++i)
       if (reduced[i] >= 0)
         a[i] = a_massive[reduced[i]];
-    if (distribution) // a ghost equation carries no mass here
-      distribution->update_ghosts(a);
   }
 
   void
@@ -908,7 +934,8 @@ namespace poundfe
   NewmarkIntegrator::residual_and_tangent(const Vector &load, const Vector &u_trial,
                                           Vector &residual_out, Eigen::MatrixXd &tangent_out)
   {
-    Assert(!distribution, dealii::ExcMessage("the dense tangent is of one process's model"));
+    AssertThrow(!distribution,
+                dealii::ExcMessage("the dense tangent is of one process's model"));
     Level       &L  = level(0);
     const double g  = parameters.gamma;
     Vector       an = L.c_mass_u * (u_trial - u) - L.c_mass_v * v - L.c_mass_a * a;

@@ -249,6 +249,38 @@ BOOST_AUTO_TEST_CASE(a_rank_without_nonlinear_elements_steps_with_the_others)
                1e-10 * serial.integrator().displacement().lpNorm<Eigen::Infinity>());
 }
 
+// A 3D pair with plan contact (a nonsymmetric tangent) and a Linear solver
+// that is not a one-process direct solver: each rank factorises its block with
+// UMFPACK, and the run follows the whole model's. On three ranks the pair is
+// refused on every rank.
+BOOST_AUTO_TEST_CASE(nonsymmetric_tangents_get_an_lu_block_solver)
+{
+  InputParameters input = read_parameters("input/3d-torsional-pair.prm");
+  input.time_integration.linear_solver                  = "petsc";
+  input.time_integration.newmark.newton.nonlinear_solver = NonlinearSolver::krylov_newton;
+  const TimeHistoryParameters parameters = time_history_parameters(input);
+  Analysis                    whole      = prepare_analysis(input);
+  WholeModelHistory           serial(whole, parameters);
+  Analysis                    mine = prepare_analysis(input);
+  if (n_ranks() > 2) // two buildings: every rank refuses alike
+    {
+      BOOST_CHECK_THROW(PartitionedHistory(mine, parameters, MPI_COMM_WORLD), InputError);
+      return;
+    }
+  PartitionedHistory partitioned(mine, parameters, MPI_COMM_WORLD);
+  partitioned.initialize();
+  BOOST_TEST(partitioned.linear_solver_name() == "umfpack");
+  for (unsigned int step = 0; step < 200; ++step)
+    {
+      serial.advance();
+      partitioned.advance();
+    }
+  const Vector u = partitioned.gather(partitioned.displacement());
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    BOOST_TEST((u - serial.integrator().displacement()).lpNorm<Eigen::Infinity>() <=
+               1e-8 * serial.integrator().displacement().lpNorm<Eigen::Infinity>());
+}
+
 // Full Newton would refactorise a block that leaves out the couplings
 // between ranks at every iteration: refused with the entry named.
 BOOST_AUTO_TEST_CASE(full_newton_is_refused_over_ranks)

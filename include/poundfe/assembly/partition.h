@@ -95,7 +95,7 @@ namespace poundfe
     std::vector<int> ghosts, receive_count, receive_offset;
     // the equations (own, local) each rank asks for, rank after rank
     std::vector<int> send_equations, send_count, send_offset;
-    mutable std::vector<double> send_buffer, receive_buffer;
+    mutable std::vector<double> send_buffer, receive_buffer, sum_buffer;
   };
 } // namespace poundfe
 

@@ -3,12 +3,12 @@
 // rank at once, each rank holding M, K, C and K_eff of its own equations
 // only and evaluating only its nonlinear elements (those touching its
 // equations: a gap between buildings on two ranks is evaluated on both).
-// The vectors keep the model's length, but outside the rank's equations they
-// are zero, except at the ghost equations: the equations of its elements that
-// another rank owns, whose values the owner sends (update_ghosts) after every
-// change of the iterate. Newton's residual is zero at the ghosts
-// (zero_ghosts), so every norm and inner product is a sum over ranks of
-// their own equations' terms (sum). Decisions (convergence, a step cut, an
+// A rank's vectors hold its own equations, then its ghost equations: the
+// equations of its elements that another rank owns, whose values the owner
+// sends (update_ghosts) after every change of the iterate. Newton's
+// residual is zero at the ghosts (zero_ghosts), so every norm and inner
+// product is a sum over ranks of their own equations' terms (sum, taken in
+// the same order on every rank). Decisions (convergence, a step cut, an
 // event, a contact that needs a shorter step) then come out the same on
 // every rank, or are agreed (any).
 // Design after PETSc's ghosted vectors (VecCreateGhost, Balay et al., PETSc
@@ -32,7 +32,8 @@ namespace poundfe
     /// [first, last): this rank's equations.
     virtual std::array<unsigned int, 2> owned_range() const = 0;
     virtual unsigned int                n_ranks() const       = 0;
-    /// The sum over ranks of x[0..n) (in place; collective).
+    /// The sum over ranks of x[0..n) (in place; collective), the same bits
+    /// on every rank.
     virtual void sum(double *x, unsigned int n) const = 0;
     double       sum(double x) const
     {

@@ -260,6 +260,8 @@ namespace poundfe
     /// a from M a = p - C v - K u - f(u, v) at the current u, v (the
     /// elements set to them and committed); massless equations get a = 0.
     void   set_consistent_acceleration(const Vector &load);
+    /// Its local part (distributed: agreed and the ghosts updated after).
+    void   solve_consistent_acceleration(const Vector &load);
     /// local_u, local_v: the elements' local vectors (0 on ground DOFs).
     void   gather(const Vector &u_global, const Vector &v_global);
     /// r -= sum_e (f_e - K_ref,e u_e) at the last evaluated trial state.
