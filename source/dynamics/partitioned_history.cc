@@ -154,12 +154,14 @@ namespace poundfe
         error = std::current_exception();
       }
     agree_on_error(error, communicator);
-    // Newton's messages name the model's equations
-    const std::vector<std::string> names = equation_names(analysis.model);
-    std::vector<std::string>       local_names(names.begin() + range[0], names.begin() + range[1]);
-    for (const int g : ownership->ghost_equations())
-      local_names.push_back(names[g] + " (a ghost)");
-    newmark->set_equation_names(std::move(local_names));
+    // Newton's messages name the model's equations, when they need one
+    const Model     &model  = analysis.model;
+    const unsigned int first_own = range[0], n_own = range[1] - range[0];
+    newmark->set_equation_namer([&model, first_own, n_own, this](const unsigned int i) {
+      return i < n_own ? equation_name(model, first_own + i) :
+                         equation_name(model, ownership->ghost_equations()[i - n_own]) +
+                           " (a ghost)";
+    });
     // the load of the whole model (its M r), this rank's equations taken:
     // once per step, not per iteration
     whole_load.resize(parts.first_equation.back());

@@ -72,6 +72,21 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// "A3 node 12 at (6, 3) rz": the DOF `dof` of `model`.
+    std::string
+    dof_name(const Model &model, const unsigned int dof)
+    {
+      const Node        &node = model.nodes[dof / n_dofs_per_node];
+      std::ostringstream s;
+      s << model.buildings[node.building].name << " node " << dof / n_dofs_per_node << " at ("
+        << node.position.x << ", " << node.position.y << ") "
+        << component_name(dof % n_dofs_per_node);
+      return s.str();
+    }
+  } // namespace
+
   std::vector<std::string>
   equation_names(const Model &model)
   {
@@ -79,16 +94,19 @@ namespace poundfe
     for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
       {
         const int eq = model.equation(dof);
-        if (eq < 0 || !names[eq].empty())
-          continue;
-        const Node        &node = model.nodes[dof / n_dofs_per_node];
-        std::ostringstream s;
-        s << model.buildings[node.building].name << " node " << dof / n_dofs_per_node
-          << " at (" << node.position.x << ", " << node.position.y << ") "
-          << component_name(dof % n_dofs_per_node);
-        names[eq] = s.str();
+        if (eq >= 0 && names[eq].empty())
+          names[eq] = dof_name(model, dof);
       }
     return names;
+  }
+
+  std::string
+  equation_name(const Model &model, const unsigned int equation)
+  {
+    for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
+      if (model.equation(dof) == int(equation))
+        return dof_name(model, dof);
+    return "";
   }
 
   Excitation

@@ -52,15 +52,6 @@ namespace poundfe
     };
 
     /// "equation 12, A3 (6, 3) ux" for a message.
-    std::string
-    equation_text(const Eigen::Index i, const std::vector<std::string> &names)
-    {
-      std::string text = "equation " + std::to_string(i);
-      if (i >= 0 && static_cast<std::size_t>(i) < names.size())
-        text += ", " + names[i];
-      return text;
-    }
-
     /// The first equation whose entry of `x` is not finite, -1 if none.
     Eigen::Index
     first_non_finite(const Vector &x)
@@ -178,6 +169,17 @@ namespace poundfe
   }
 
   NewmarkIntegrator::~NewmarkIntegrator() = default;
+
+  std::string
+  NewmarkIntegrator::equation_text(const Eigen::Index i) const
+  {
+    std::string text = "equation " + std::to_string(i);
+    if (i >= 0 && static_cast<std::size_t>(i) < equation_names.size())
+      text += ", " + equation_names[i];
+    else if (i >= 0 && equation_namer)
+      text += ", " + equation_namer(i);
+    return text;
+  }
 
   void
   NewmarkIntegrator::set_up_distribution()
@@ -619,7 +621,7 @@ namespace poundfe
     if (const Eigen::Index i = first_non_finite(u_next); i >= 0)
       {
         failure = "the displacement became non-finite (" + number_text(u_next[i]) + " at " +
-                  equation_text(i, equation_names) + ")";
+                  equation_text(i) + ")";
         return false;
       }
     return true;
@@ -650,7 +652,7 @@ namespace poundfe
         if (i >= 0)
           failure = "Newton iteration " + std::to_string(it) +
                     ": the residual became non-finite (" + number_text(residual[i]) + " at " +
-                    equation_text(i, equation_names) + ")";
+                    equation_text(i) + ")";
         if (!agreed(i < 0, "the residual became non-finite on another rank"))
           return false;
         // finite entries whose squares overflow
@@ -881,7 +883,7 @@ namespace poundfe
             residual.cwiseAbs().maxCoeff(&worst);
             failure = "Newton did not converge in " + std::to_string(it) +
                       (it == 1 ? " iteration: " : " iterations: ") + check.describe(newton) +
-                      "; the largest residual is at " + equation_text(worst, equation_names);
+                      "; the largest residual is at " + equation_text(worst);
             return false;
           }
         if (!agreed(method == NonlinearSolver::newton ?

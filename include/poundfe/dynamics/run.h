@@ -93,6 +93,8 @@ namespace poundfe
   /// "A3 node 12 at (6, 3) rz" for each equation of `model` (the first DOF
   /// that maps to it): where Newton's messages point.
   std::vector<std::string> equation_names(const Model &model);
+  /// The same for one equation (a search: for a message).
+  std::string equation_name(const Model &model, unsigned int equation);
 
   /// The excitation the input describes: the ground motion and the nodal
   /// forces (with white-noise forces, the sample of Ground motion/Realization).

@@ -220,6 +220,12 @@ namespace poundfe
 
     /// Names of the equations, used in failure messages ("A3 (6, 3) ux").
     void set_equation_names(std::vector<std::string> names) { equation_names = std::move(names); }
+    /// Or name an equation only when a message needs it (a partitioned
+    /// rank: its equations in the model's terms, without a list of them).
+    void set_equation_namer(std::function<std::string(unsigned int)> namer)
+    {
+      equation_namer = std::move(namer);
+    }
     /// Every contact episode of the gap elements so far.
     const ImpactLog &impact_log() const override { return impacts; }
     /// Every stick and slip episode of the friction elements so far.
@@ -359,6 +365,9 @@ namespace poundfe
     std::string failure;
     std::function<void()> substep_callback;
     std::vector<std::string> equation_names;
+    std::function<std::string(unsigned int)> equation_namer;
+    /// "equation i, NAME" (the name from equation_names or equation_namer).
+    std::string equation_text(Eigen::Index i) const;
     double      current_time = 0;
     unsigned long step_count = 0;
     /// The level of every step's sub-steps (Steps per shortest period; 0:
