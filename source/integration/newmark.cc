@@ -271,17 +271,40 @@ namespace poundfe
     if (levels.size() <= cuts)
       levels.resize(cuts + 1);
     auto L = std::make_unique<Level>();
-    const double dt = parameters.time_step / std::ldexp(1.0, cuts);
+    set_coefficients(*L, parameters.time_step / std::ldexp(1.0, cuts));
+    assemble_effective_matrix(*L);
+    L->solver = new_linear_solver(*L);
+    // every step size has K_eff's pattern: one symbolic analysis where the
+    // backend can share it (UMFPACK)
+    stats.shared_analyses +=
+      L->solver->analyze_or_reuse(cuts > 0 ? levels[0]->solver.get() : nullptr, L->effective);
+    L->solver->factorize(L->effective);
+    if (n_elements > 0 && (use_woodbury || use_hybrid))
+      set_up_woodbury(*L);
+    if (n_elements > 0 && !use_woodbury)
+      set_up_assembled_tangent(*L);
+    levels[cuts] = std::move(L);
+    return *levels[cuts];
+  }
+
+  void
+  NewmarkIntegrator::set_coefficients(Level &L, const double dt) const
+  {
     const double g = parameters.gamma, b = parameters.beta;
-    L->dt       = dt;
-    L->load_end.setZero(system.n_equations());
-    L->c_mass_u = 1 / (b * dt * dt);
-    L->c_mass_v = 1 / (b * dt);
-    L->c_mass_a = 1 / (2 * b) - 1;
-    L->c_damp_u = g / (b * dt);
-    L->c_damp_v = g / b - 1;
-    L->c_damp_a = dt * (g / (2 * b) - 1);
-    L->effective = system.stiffness + L->c_damp_u * system.damping + L->c_mass_u * system.mass;
+    L.dt       = dt;
+    L.load_end.setZero(system.n_equations());
+    L.c_mass_u = 1 / (b * dt * dt);
+    L.c_mass_v = 1 / (b * dt);
+    L.c_mass_a = 1 / (2 * b) - 1;
+    L.c_damp_u = g / (b * dt);
+    L.c_damp_v = g / b - 1;
+    L.c_damp_a = dt * (g / (2 * b) - 1);
+  }
+
+  void
+  NewmarkIntegrator::assemble_effective_matrix(Level &L) const
+  {
+    L.effective = system.stiffness + L.c_damp_u * system.damping + L.c_mass_u * system.mass;
     if (!use_woodbury)
       {
         // Every coupling of a nonlinear element must be in the pattern: add
@@ -297,74 +320,70 @@ namespace poundfe
                 couplings.emplace_back(i, j, 0.0);
         SparseMatrix pattern(system.n_equations(), system.n_equations());
         pattern.setFromTriplets(couplings.begin(), couplings.end());
-        L->effective = L->effective + pattern;
+        L.effective = L.effective + pattern;
       }
-    L->effective.makeCompressed();
-    // modal damping: K_eff + c U D U^T by the Woodbury identity (assembly/modal_damping.h)
+    L.effective.makeCompressed();
+  }
+
+  std::unique_ptr<LinearSolver>
+  NewmarkIntegrator::new_linear_solver(const Level &L)
+  {
     // CG + AMG: eta = factor x Newton residual tolerance (iterative_solver.h)
     const IterativeSolverSetup iterative{
       parameters.iterative,
       parameters.iterative.tolerance_factor * parameters.newton.residual_tolerance,
       "Linear tolerance factor x Newton residual tolerance", &stats.linear};
-    const auto new_solver = [&]() {
-      std::unique_ptr<LinearSolver> solver = create_linear_solver(solver_name, iterative);
-      if (distribution)
-        solver = restrict_to_block(std::move(solver), distribution->owned_range());
-      return with_low_rank_damping(std::move(solver), system.modal_damping, L->c_damp_u);
-    };
-    L->solver = new_solver();
-    // every step size has K_eff's pattern: one symbolic analysis where the
-    // backend can share it (UMFPACK)
-    stats.shared_analyses +=
-      L->solver->analyze_or_reuse(cuts > 0 ? levels[0]->solver.get() : nullptr, L->effective);
-    L->solver->factorize(L->effective);
-    if (n_elements > 0 && (use_woodbury || use_hybrid))
+    std::unique_ptr<LinearSolver> solver = create_linear_solver(solver_name, iterative);
+    if (distribution) // this rank's block
+      solver = restrict_to_block(std::move(solver), distribution->owned_range());
+    // modal damping: K_eff + c U D U^T by the Woodbury identity (assembly/modal_damping.h)
+    return with_low_rank_damping(std::move(solver), system.modal_damping, L.c_damp_u);
+  }
+
+  void
+  NewmarkIntegrator::set_up_woodbury(Level &L) const
+  {
+    // B: the columns of every B_e on the element's equations
+    std::vector<SparseColumn> columns;
+    std::vector<unsigned int> ranks;
+    for (unsigned int h = 0; h < n_elements; ++h)
       {
-        // B: the columns of every B_e on the element's equations
-        std::vector<SparseColumn> columns;
-        std::vector<unsigned int> ranks;
-        for (unsigned int h = 0; h < n_elements; ++h)
+        const std::vector<int> &equations = (*elements)[h].equations();
+        for (unsigned int c = 0; c < basis[h].cols(); ++c)
           {
-            const std::vector<int> &equations = (*elements)[h].equations();
-            for (unsigned int c = 0; c < basis[h].cols(); ++c)
-              {
-                SparseColumn column;
-                for (unsigned int i = 0; i < equations.size(); ++i)
-                  if (equations[i] >= 0 && basis[h](i, c) != 0)
-                    {
-                      column.rows.push_back(equations[i]);
-                      column.values.push_back(basis[h](i, c));
-                    }
-                columns.push_back(std::move(column));
-              }
-            ranks.push_back(basis[h].cols());
+            SparseColumn column;
+            for (unsigned int i = 0; i < equations.size(); ++i)
+              if (equations[i] >= 0 && basis[h](i, c) != 0)
+                {
+                  column.rows.push_back(equations[i]);
+                  column.values.push_back(basis[h](i, c));
+                }
+            columns.push_back(std::move(column));
           }
-        L->woodbury.initialize(*L->solver, columns, system.n_equations(), ranks,
-                               use_hybrid ? parameters.newton.woodbury_columns : 0);
+        ranks.push_back(basis[h].cols());
       }
-    if (n_elements > 0 && !use_woodbury)
+    L.woodbury.initialize(*L.solver, columns, system.n_equations(), ranks,
+                          use_hybrid ? parameters.newton.woodbury_columns : 0);
+  }
+
+  void
+  NewmarkIntegrator::set_up_assembled_tangent(Level &L)
+  {
+    if (use_hybrid) // the tangent gets its own factorisation; K_eff's stays
       {
-        if (use_hybrid) // the tangent gets its own factorisation; K_eff's stays
-          {
-            L->tangent_solver = new_solver();
-            stats.shared_analyses +=
-              L->tangent_solver->analyze_or_reuse(L->solver.get(), L->effective);
-          }
-        L->base_values.assign(L->effective.valuePtr(),
-                              L->effective.valuePtr() + L->effective.nonZeros());
-        L->entry_index.resize(n_elements);
-        for (unsigned int h = 0; h < n_elements; ++h)
-          {
-            const std::vector<int> &eq = (*elements)[h].equations();
-            for (const int i : eq)
-              for (const int j : eq)
-                L->entry_index[h].push_back(
-                  (i >= 0 && j >= 0) ? &L->effective.coeffRef(i, j) - L->effective.valuePtr() :
-                                       -1);
-          }
+        L.tangent_solver = new_linear_solver(L);
+        stats.shared_analyses += L.tangent_solver->analyze_or_reuse(L.solver.get(), L.effective);
       }
-    levels[cuts] = std::move(L);
-    return *levels[cuts];
+    L.base_values.assign(L.effective.valuePtr(), L.effective.valuePtr() + L.effective.nonZeros());
+    L.entry_index.resize(n_elements);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        const std::vector<int> &eq = (*elements)[h].equations();
+        for (const int i : eq)
+          for (const int j : eq)
+            L.entry_index[h].push_back(
+              (i >= 0 && j >= 0) ? &L.effective.coeffRef(i, j) - L.effective.valuePtr() : -1);
+      }
   }
 
   void

@@ -241,6 +241,15 @@ namespace poundfe
   private:
     struct Level;
     Level &level(unsigned int cuts);
+    // level()'s phases: Newmark's coefficients for dt, K_eff with the
+    // elements' couplings in its pattern, a solver (this rank's block when
+    // distributed, wrapped for modal damping), the Woodbury update's
+    // columns, the assembled tangent's positions in K_eff
+    void   set_coefficients(Level &L, double dt) const;
+    void   assemble_effective_matrix(Level &L) const;
+    std::unique_ptr<LinearSolver> new_linear_solver(const Level &L);
+    void   set_up_woodbury(Level &L) const;
+    void   set_up_assembled_tangent(Level &L);
     bool   try_step(Level &L, const Vector &load_next);
     // try_step's phases: the step's effective load, a and v of u_next, the
     // linear solve (no nonlinear elements), a Newton iteration's residual
