@@ -8,12 +8,82 @@
 #include <Eigen/SparseCholesky>
 
 #include <cmath>
+#include <limits>
+#include <set>
+#include <string>
 
 namespace poundfe
 {
   namespace
   {
-    using Triplets = std::vector<Eigen::Triplet<double>>;
+    /// The entries of a matrix being assembled, kept as the assembly asks
+    /// (doc/theory.md §3.5d): all of them (the whole model); only those
+    /// whose row and column lie in one run of equations (a rank's part of
+    /// a model partitioned by building, the other rows and columns left
+    /// empty); or none, noting instead each pair of buildings that an
+    /// entry joins (the couplings the partition must respect).
+    class Triplets
+    {
+    public:
+      /// Keep every entry.
+      Triplets() = default;
+
+      /// Keep the entries in kept x kept.
+      explicit Triplets(const EquationRange kept)
+        : kept(kept)
+      {}
+
+      /// Keep nothing: add to `joined` the buildings (a < b) of each
+      /// entry whose row and column are in different buildings
+      /// (`building_of` each equation's).
+      Triplets(const std::vector<unsigned int>               &building_of,
+               std::set<std::array<unsigned int, 2>>         &joined)
+        : building_of(&building_of)
+        , joined(&joined)
+      {}
+
+      void
+      emplace_back(const int row, const int column, const double value)
+      {
+        if (joined)
+          {
+            const unsigned int a = (*building_of)[row], b = (*building_of)[column];
+            if (a != b && value != 0)
+              joined->insert(std::array<unsigned int, 2>{{std::min(a, b), std::max(a, b)}});
+            return;
+          }
+        const bool row_kept    = unsigned(row) >= kept[0] && unsigned(row) < kept[1];
+        const bool column_kept = unsigned(column) >= kept[0] && unsigned(column) < kept[1];
+        if (row_kept && column_kept)
+          entries.emplace_back(row, column, value);
+        else if (row_kept != column_kept && value != 0)
+          crossing = true;
+      }
+
+      /// The n x n matrix of the kept entries.
+      SparseMatrix
+      matrix(const unsigned int n) const
+      {
+        // the partition is made from coupled_buildings: an entry across
+        // its cut means the two disagree, and the part would be wrong
+        AssertThrow(!crossing,
+                    dealii::ExcMessage("an entry of M or K joins equations [" +
+                                       std::to_string(kept[0]) + ", " + std::to_string(kept[1]) +
+                                       ") to another equation: the partition by building "
+                                       "missed a coupling"));
+        SparseMatrix matrix(n, n);
+        matrix.setFromTriplets(entries.begin(), entries.end());
+        matrix.makeCompressed();
+        return matrix;
+      }
+
+    private:
+      EquationRange                                 kept{{0, std::numeric_limits<unsigned int>::max()}};
+      bool                                          crossing = false;
+      std::vector<Eigen::Triplet<double>>           entries;
+      const std::vector<unsigned int>              *building_of = nullptr;
+      std::set<std::array<unsigned int, 2>>        *joined      = nullptr;
+    };
 
     /// Scatter over DOFs of which some are combinations of others (exact
     /// master-slave constraints): Tᵀ A T, T the DOFs' equation terms.
@@ -140,10 +210,7 @@ namespace poundfe
     SparseMatrix
     from_triplets(const unsigned int n, const Triplets &triplets)
     {
-      SparseMatrix matrix(n, n);
-      matrix.setFromTriplets(triplets.begin(), triplets.end());
-      matrix.makeCompressed();
-      return matrix;
+      return triplets.matrix(n);
     }
 
     /// The resisting planes (k a a^T) and the polar moments of 3D floors.
@@ -300,13 +367,135 @@ namespace poundfe
         }
     }
 
-    /// K = K_E + K_G from the gravity loads (the header's P-Delta).
+    /// The superstructure's K and M terms (without the foundations'):
+    /// every element's, scattered into `k` and `m`.
     void
-    add_p_delta(const Model &model, LinearSystem &system)
+    scatter_structure(const Model &model, Triplets &k, Triplets &m)
     {
-      const Vector loads         = gravity_loads(model);
-      system.geometric_stiffness = geometric_stiffness(
-        model, member_axial_forces(model, system.stiffness, loads), storey_gravity_loads(model));
+      for (const Member &member : model.members)
+        {
+          const FrameElement element = element_of(model, member);
+          const auto dofs = member_dofs(member);
+          scatter(model, dofs, element.stiffness(), k);
+          scatter(model, dofs, element.mass(model.mass_matrix), m);
+        }
+      for (const StoreyLink &link : model.links)
+        scatter_storey(model, link, link.stiffness, k);
+      // The linear part of the nonlinear springs to the ground (SD: K, Duffing: k1).
+      for (const Spring &spring : model.springs)
+        scatter(model, {Model::dof(spring.node, Component::ux)},
+                Eigen::Matrix<double, 1, 1>(spring.law.stiffness), k);
+      // Hinges enter with their initial stiffness: the linear part of K (and
+      // of stiffness-proportional damping) is the elastic structure.
+      for (const Hinge &hinge : model.hinges)
+        scatter(model,
+                {Model::dof(hinge.member_node, Component::rz),
+                 Model::dof(hinge.joint_node, Component::rz)},
+                two_node_spring(hinge.law.stiffness), k);
+      for (const NodalMass &mass : model.masses)
+        for (const Component c : {Component::ux, Component::uy})
+          {
+            const int row = model.equation(Model::dof(mass.node, c));
+            if (row >= 0)
+              m.emplace_back(row, row, mass.mass);
+          }
+      add_plan_terms(model, k, m);
+      add_frame_3d_terms(model, k, m);
+    }
+
+    /// K_G's terms under the members' `axial_forces` and the storeys'
+    /// compressions.
+    void
+    scatter_geometric_stiffness(const Model &model, const std::vector<double> &axial_forces,
+                                const std::vector<double> &storey_compressions, Triplets &triplets)
+    {
+      AssertDimension(axial_forces.size(), model.members.size() + model.members_3d.size());
+      AssertDimension(storey_compressions.size(), model.links.size());
+      for (unsigned int m = 0; m < model.members.size(); ++m)
+        {
+          const Member      &member = model.members[m];
+          const FrameElement element = element_of(model, member);
+          scatter(model, member_dofs(member), element.geometric_stiffness(axial_forces[m]),
+                  triplets);
+        }
+      for (unsigned int m = 0; m < model.members_3d.size(); ++m)
+        {
+          const Member3D &member = model.members_3d[m];
+          const MemberMap t      = map_of(member);
+          const double    n      = axial_forces[model.members.size() + m];
+          scatter(model, member.dofs,
+                  Eigen::MatrixXd(t.transpose() * element_of(member).geometric_stiffness(n) * t),
+                  triplets);
+        }
+      for (unsigned int l = 0; l < model.links.size(); ++l)
+        {
+          const StoreyLink &link   = model.links[l];
+          const double      height = model.nodes[link.nodes[1]].position.y -
+                                model.nodes[link.nodes[0]].position.y;
+          Assert(height > 0, dealii::ExcMessage("a storey link of zero height"));
+          scatter(model, link_dofs(link), two_node_spring(-storey_compressions[l] / height),
+                  triplets);
+        }
+      add_plan_storey_p_delta(model, triplets);
+    }
+
+    /// The members' axial forces under the displacements u.
+    std::vector<double>
+    member_axial_forces_under(const Model &model, const Vector &u)
+    {
+      std::vector<double> forces;
+      for (const Member &member : model.members)
+        {
+          const FrameElement element = element_of(model, member);
+          const auto dofs = member_dofs(member);
+          Vector6    end_displacements;
+          for (unsigned int i = 0; i < 6; ++i)
+            end_displacements[i] = value_of(model, u, dofs[i]);
+          forces.push_back(element.axial_force(end_displacements));
+        }
+      for (const Member3D &member : model.members_3d)
+        {
+          Vector on_dofs(member.dofs.size());
+          for (unsigned int i = 0; i < member.dofs.size(); ++i)
+            {
+              const int equation = model.equation(member.dofs[i]);
+              on_dofs[i]         = equation >= 0 ? u[equation] : 0.0;
+            }
+          forces.push_back(element_of(member).axial_force(map_of(member) * on_dofs));
+        }
+      return forces;
+    }
+
+    /// u of K_E u = loads on the equations `kept` (0 elsewhere): the
+    /// gravity analysis of those buildings, which carry no other's load.
+    Vector
+    gravity_displacements(const SparseMatrix &stiffness, const Vector &loads,
+                          const EquationRange kept)
+    {
+      const unsigned int n = kept[1] - kept[0];
+      Eigen::SimplicialLLT<SparseMatrix> cholesky;
+      if (n == stiffness.rows())
+        cholesky.compute(stiffness);
+      else
+        cholesky.compute(block(stiffness, kept));
+      if (cholesky.info() != Eigen::Success)
+        throw NumericalError("P-Delta gravity analysis: the stiffness matrix is singular or not "
+                             "positive definite (is the structure a mechanism? check the supports)");
+      Vector u           = Vector::Zero(stiffness.rows());
+      u.segment(kept[0], n) = cholesky.solve(loads.segment(kept[0], n));
+      return u;
+    }
+
+    /// K = K_E + K_G from the gravity loads (the header's P-Delta), on the
+    /// equations `kept`.
+    void
+    add_p_delta(const Model &model, const EquationRange kept, LinearSystem &system)
+    {
+      const std::vector<double> forces = member_axial_forces_under(
+        model, gravity_displacements(system.stiffness, gravity_loads(model), kept));
+      Triplets triplets(kept);
+      scatter_geometric_stiffness(model, forces, storey_gravity_loads(model), triplets);
+      system.geometric_stiffness = from_triplets(model.n_equations(), triplets);
       system.stiffness += system.geometric_stiffness;
       system.stiffness.makeCompressed();
       if (system.structure_stiffness.rows() > 0)
@@ -317,38 +506,17 @@ namespace poundfe
   LinearSystem
   assemble_mass_and_stiffness(const Model &model)
   {
-    const unsigned int n = model.n_equations();
-    Triplets           k_triplets, m_triplets;
-    for (const Member &member : model.members)
-      {
-        const FrameElement element = element_of(model, member);
-        const auto dofs = member_dofs(member);
-        scatter(model, dofs, element.stiffness(), k_triplets);
-        scatter(model, dofs, element.mass(model.mass_matrix), m_triplets);
-      }
-    for (const StoreyLink &link : model.links)
-      scatter_storey(model, link, link.stiffness, k_triplets);
-    // The linear part of the nonlinear springs to the ground (SD: K, Duffing: k1).
-    for (const Spring &spring : model.springs)
-      scatter(model, {Model::dof(spring.node, Component::ux)},
-              Eigen::Matrix<double, 1, 1>(spring.law.stiffness), k_triplets);
-    // Hinges enter with their initial stiffness: the linear part of K (and of
-    // stiffness-proportional damping) is the elastic structure.
-    for (const Hinge &hinge : model.hinges)
-      scatter(model,
-              {Model::dof(hinge.member_node, Component::rz),
-               Model::dof(hinge.joint_node, Component::rz)},
-              two_node_spring(hinge.law.stiffness), k_triplets);
-    for (const NodalMass &mass : model.masses)
-      for (const Component c : {Component::ux, Component::uy})
-        {
-          const int row = model.equation(Model::dof(mass.node, c));
-          if (row >= 0)
-            m_triplets.emplace_back(row, row, mass.mass);
-        }
-    add_plan_terms(model, k_triplets, m_triplets);
-    add_frame_3d_terms(model, k_triplets, m_triplets);
+    return assemble_mass_and_stiffness(model, {{0, model.n_equations()}});
+  }
 
+  LinearSystem
+  assemble_mass_and_stiffness(const Model &model, const EquationRange kept)
+  {
+    AssertThrow(kept[0] <= kept[1] && kept[1] <= model.n_equations(),
+                dealii::ExcMessage("equations to keep beyond the model's"));
+    const unsigned int n = model.n_equations();
+    Triplets           k_triplets(kept), m_triplets(kept);
+    scatter_structure(model, k_triplets, m_triplets);
     LinearSystem system;
     if (!model.foundations.empty())
       {
@@ -368,8 +536,32 @@ namespace poundfe
         system.influence_rz = influence_of(model, Component::rz);
       }
     if (model.geometric_nonlinearity == GeometricNonlinearity::p_delta)
-      add_p_delta(model, system);
+      add_p_delta(model, kept, system);
     return system;
+  }
+
+  std::vector<std::array<unsigned int, 2>>
+  coupled_buildings(const Model &model)
+  {
+    std::vector<unsigned int> building_of(model.n_equations());
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const EquationRange range = model.equation_range(b);
+        std::fill(building_of.begin() + range[0], building_of.begin() + range[1], b);
+      }
+    std::set<std::array<unsigned int, 2>> joined;
+    Triplets                              noting(building_of, joined);
+    scatter_structure(model, noting, noting);
+    add_foundation_terms(model, false, noting);
+    add_foundation_terms(model, true, noting);
+    // K_G's pattern: unit forces stand for the gravity analysis's
+    if (model.geometric_nonlinearity == GeometricNonlinearity::p_delta)
+      scatter_geometric_stiffness(
+        model, std::vector<double>(model.members.size() + model.members_3d.size(), 1.0),
+        std::vector<double>(model.links.size(), 1.0), noting);
+    // C: M and K scaled per building, and the storeys' dashpots (on the
+    // storey springs' equations)
+    return {joined.begin(), joined.end()};
   }
 
   Vector
@@ -421,32 +613,8 @@ namespace poundfe
   std::vector<double>
   member_axial_forces(const Model &model, const SparseMatrix &stiffness, const Vector &loads)
   {
-    const Eigen::SimplicialLLT<SparseMatrix> cholesky(stiffness);
-    if (cholesky.info() != Eigen::Success)
-      throw NumericalError("P-Delta gravity analysis: the stiffness matrix is singular or not "
-                           "positive definite (is the structure a mechanism? check the supports)");
-    const Vector        u = cholesky.solve(loads);
-    std::vector<double> forces;
-    for (const Member &member : model.members)
-      {
-        const FrameElement element = element_of(model, member);
-        const auto dofs = member_dofs(member);
-        Vector6    end_displacements;
-        for (unsigned int i = 0; i < 6; ++i)
-          end_displacements[i] = value_of(model, u, dofs[i]);
-        forces.push_back(element.axial_force(end_displacements));
-      }
-    for (const Member3D &member : model.members_3d)
-      {
-        Vector on_dofs(member.dofs.size());
-        for (unsigned int i = 0; i < member.dofs.size(); ++i)
-          {
-            const int equation = model.equation(member.dofs[i]);
-            on_dofs[i]         = equation >= 0 ? u[equation] : 0.0;
-          }
-        forces.push_back(element_of(member).axial_force(map_of(member) * on_dofs));
-      }
-    return forces;
+    return member_axial_forces_under(
+      model, gravity_displacements(stiffness, loads, {{0, unsigned(stiffness.rows())}}));
   }
 
   std::vector<double>
@@ -472,35 +640,8 @@ namespace poundfe
   geometric_stiffness(const Model &model, const std::vector<double> &axial_forces,
                       const std::vector<double> &storey_compressions)
   {
-    AssertDimension(axial_forces.size(), model.members.size() + model.members_3d.size());
-    AssertDimension(storey_compressions.size(), model.links.size());
     Triplets triplets;
-    for (unsigned int m = 0; m < model.members.size(); ++m)
-      {
-        const Member      &member = model.members[m];
-        const FrameElement element = element_of(model, member);
-        scatter(model, member_dofs(member), element.geometric_stiffness(axial_forces[m]),
-                triplets);
-      }
-    for (unsigned int m = 0; m < model.members_3d.size(); ++m)
-      {
-        const Member3D &member = model.members_3d[m];
-        const MemberMap t      = map_of(member);
-        const double    n      = axial_forces[model.members.size() + m];
-        scatter(model, member.dofs,
-                Eigen::MatrixXd(t.transpose() * element_of(member).geometric_stiffness(n) * t),
-                triplets);
-      }
-    for (unsigned int l = 0; l < model.links.size(); ++l)
-      {
-        const StoreyLink &link   = model.links[l];
-        const double      height = model.nodes[link.nodes[1]].position.y -
-                              model.nodes[link.nodes[0]].position.y;
-        Assert(height > 0, dealii::ExcMessage("a storey link of zero height"));
-        scatter(model, link_dofs(link), two_node_spring(-storey_compressions[l] / height),
-                triplets);
-      }
-    add_plan_storey_p_delta(model, triplets);
+    scatter_geometric_stiffness(model, axial_forces, storey_compressions, triplets);
     return from_triplets(model.n_equations(), triplets);
   }
 

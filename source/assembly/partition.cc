@@ -1,5 +1,6 @@
 // Partition by building (assembly/partition.h; doc/theory.md §3.5d):
-// union-find of the buildings over the off-diagonal blocks of M, K and C,
+// union-find of the buildings over the pairs that M, K and C join (from the
+// model's elements, coupled_buildings, or from assembled matrices),
 // each group widened to the interval of buildings it spans and overlapping
 // intervals merged (a rank's equations must stay contiguous), then the
 // blocks cut into runs whose equation counts are nearest to N/P each.
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <set>
 
 namespace poundfe
 {
@@ -35,27 +37,40 @@ namespace poundfe
       return first;
     }
 
-    /// [first, last) of each block of buildings that M, K and C join.
+    /// The pairs of buildings (a < b) that an entry of M, K or C joins.
     std::vector<std::array<unsigned int, 2>>
-    inseparable_building_blocks(const Model &model, const LinearSystem &system)
+    joined_by_matrices(const Model &model, const LinearSystem &system)
     {
-      const unsigned int        n_buildings = model.buildings.size();
       const std::vector<unsigned int> first = first_equations(model);
-      std::vector<unsigned int> building_of(system.n_equations());
-      for (unsigned int b = 0; b < n_buildings; ++b)
+      std::vector<unsigned int>       building_of(system.n_equations());
+      for (unsigned int b = 0; b + 1 < first.size(); ++b)
         std::fill(building_of.begin() + first[b], building_of.begin() + first[b + 1], b);
-      std::vector<unsigned int> parent(n_buildings);
-      std::iota(parent.begin(), parent.end(), 0u);
+      std::set<std::array<unsigned int, 2>> joined;
       for (const SparseMatrix *matrix : {&system.mass, &system.stiffness, &system.damping})
         for (Eigen::Index column = 0; column < matrix->outerSize(); ++column)
           for (SparseMatrix::InnerIterator it(*matrix, column); it; ++it)
-            if (it.value() != 0)
-              {
-                const unsigned int a = building_root(parent, building_of[it.row()]);
-                const unsigned int b = building_root(parent, building_of[it.col()]);
-                if (a != b)
-                  parent[std::max(a, b)] = std::min(a, b);
-              }
+            {
+              const unsigned int a = building_of[it.row()], b = building_of[it.col()];
+              if (it.value() != 0 && a != b)
+                joined.insert(std::array<unsigned int, 2>{{std::min(a, b), std::max(a, b)}});
+            }
+      return {joined.begin(), joined.end()};
+    }
+
+    /// [first, last) of each block of buildings that the pairs `joined` join.
+    std::vector<std::array<unsigned int, 2>>
+    inseparable_building_blocks(const unsigned int                              n_buildings,
+                                const std::vector<std::array<unsigned int, 2>> &joined)
+    {
+      std::vector<unsigned int> parent(n_buildings);
+      std::iota(parent.begin(), parent.end(), 0u);
+      for (const auto &[a_building, b_building] : joined)
+        {
+          const unsigned int a = building_root(parent, a_building);
+          const unsigned int b = building_root(parent, b_building);
+          if (a != b)
+            parent[std::max(a, b)] = std::min(a, b);
+        }
       // each group's last building; a block ends where no group spans past it
       std::vector<unsigned int> last_of_group(n_buildings, 0);
       for (unsigned int b = 0; b < n_buildings; ++b)
@@ -82,12 +97,26 @@ namespace poundfe
   partition_by_building(const Model &model, const LinearSystem &system,
                         const unsigned int n_parts, const std::string &input_file)
   {
+    return partition_by_building(model, joined_by_matrices(model, system), n_parts, input_file);
+  }
+
+  BuildingPartition
+  partition_by_building(const Model &model, const unsigned int n_parts,
+                        const std::string &input_file)
+  {
+    return partition_by_building(model, coupled_buildings(model), n_parts, input_file);
+  }
+
+  BuildingPartition
+  partition_by_building(const Model &model, const std::vector<std::array<unsigned int, 2>> &joined,
+                        const unsigned int n_parts, const std::string &input_file)
+  {
     Assert(n_parts >= 1, dealii::ExcMessage("at least one part"));
     const std::vector<unsigned int> first = first_equations(model);
-    AssertThrow(first.size() == model.buildings.size() + 1 &&
-                  first.back() == system.n_equations(),
+    AssertThrow(first.size() == model.buildings.size() + 1 && first.back() == model.n_equations(),
                 dealii::ExcMessage("the buildings' equations must cover the model"));
-    const std::vector<std::array<unsigned int, 2>> blocks = inseparable_building_blocks(model, system);
+    const std::vector<std::array<unsigned int, 2>> blocks =
+      inseparable_building_blocks(model.buildings.size(), joined);
     if (n_parts > blocks.size())
       throw InputError(input_file, 0, "the number of MPI ranks",
                        std::to_string(n_parts) + " ranks, but the model splits by building into " +
@@ -99,7 +128,7 @@ namespace poundfe
     BuildingPartition partition;
     partition.n_blocks = blocks.size();
     partition.first_building.assign(1, 0);
-    const double total = system.n_equations();
+    const double total = model.n_equations();
     unsigned int next  = 0; // the first block not yet given to a part
     for (unsigned int part = 1; part < n_parts; ++part)
       {

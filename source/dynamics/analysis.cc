@@ -7,6 +7,8 @@
 
 #include <poundfe/base/numbers.h>
 
+#include <deal.II/base/exceptions.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -16,14 +18,27 @@ namespace poundfe
 {
   namespace
   {
+    /// The equations of the buildings [first, last).
+    EquationRange
+    equations_of(const Model &model, const std::array<unsigned int, 2> buildings)
+    {
+      if (buildings[0] == buildings[1])
+        return {{0, 0}};
+      return {{model.equation_range(buildings[0])[0], model.equation_range(buildings[1] - 1)[1]}};
+    }
+
+    /// Friction surfaces on the equations `kept` (the others' stick laws
+    /// are another rank's to fit: doc/theory.md §3.5d).
     void
-    set_stick_stiffnesses(const InputFile &input, const LinearSystem &system, Model &model)
+    set_stick_stiffnesses(const InputFile &input, const LinearSystem &system,
+                          const EquationRange kept, Model &model)
     {
       for (FrictionSurface &surface : model.friction_surfaces)
         surface.automatic_stick_stiffness = surface.law.stick_stiffness == 0;
       fit_stick_laws(system, model);
       for (const FrictionSurface &surface : model.friction_surfaces)
-        if (!(surface.law.stick_stiffness > 0))
+        if (const unsigned int equation = model.equation(Model::dof(surface.node, Component::ux));
+            equation >= kept[0] && equation < kept[1] && !(surface.law.stick_stiffness > 0))
           input.fail("Friction/Stick stiffness",
                      surface.label + ": no linear stiffness at the node to take the "
                                      "automatic stick stiffness from; give one");
@@ -34,13 +49,14 @@ namespace poundfe
     /// load, where the linearised model has no meaning.
     void
     check_stable_under_gravity(const InputFile &input, const Model &model,
+                               const std::array<unsigned int, 2> buildings,
                                const LinearSystem &system)
     {
       if (model.geometric_nonlinearity != GeometricNonlinearity::p_delta)
         return;
       std::ostringstream g;
       g << model.gravity;
-      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      for (unsigned int b = buildings[0]; b < buildings[1]; ++b)
         if (!is_positive_definite(block(system.stiffness, model.equation_range(b))))
           input.fail("Model/Geometric nonlinearity",
                      "building '" + model.buildings[b].name +
@@ -74,10 +90,11 @@ namespace poundfe
     /// 1e150 is where they stop being safe; no structure comes near it.
     void
     check_matrices_in_range(const InputFile &input, const Model &model,
+                            const std::array<unsigned int, 2> buildings,
                             const LinearSystem &system)
     {
       constexpr double largest = largest_model_value;
-      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      for (unsigned int b = buildings[0]; b < buildings[1]; ++b)
         for (const auto &[matrix, name, sources] :
              {std::tuple{&system.stiffness, "stiffness", "a stiffness, modulus or section property"},
               std::tuple{&system.mass, "mass", "a mass or density"}})
@@ -217,7 +234,7 @@ namespace poundfe
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
         const RayleighDamping &d = model.buildings[b].damping;
-        if (!d.is_modal())
+        if (!d.is_modal() || analysis.building_modes[b].n_modes() == 0) // another rank's
           continue;
         const auto   range = model.equation_range(b);
         const Modes &modes = analysis.building_modes[b];
@@ -255,7 +272,7 @@ namespace poundfe
             warnings.push_back(where + section + entry + " (line " +
                                std::to_string(input.line_of(section + entry)) +
                                ") is ignored: Type = " + damping_type_names().name(d.kind));
-        if (d.kind == RayleighDamping::Kind::modes)
+        if (d.kind == RayleighDamping::Kind::modes && modes.n_modes() > 0) // else another rank's
           {
             const SparseMatrix mass = block(analysis.system.mass, model.equation_range(b));
             for (const unsigned int mode : {d.first_mode, d.second_mode})
@@ -308,47 +325,73 @@ namespace poundfe
       }
   }
 
+  namespace
+  {
+    /// prepare_analysis of the buildings [first, last) of `model`.
+    Analysis
+    prepare_buildings(const InputFile &input, Model &&built, const ModalParameters &modal,
+                      const unsigned int n_modes, const std::array<unsigned int, 2> buildings)
+    {
+      Analysis analysis;
+      analysis.model           = std::move(built);
+      const Model &model       = analysis.model;
+      const EquationRange kept = equations_of(model, buildings);
+      analysis.system          = assemble_mass_and_stiffness(model, kept);
+      LinearSystem &system     = analysis.system;
+      check_matrices_in_range(input, model, buildings, system);
+      check_stable_under_gravity(input, model, buildings, system);
+      set_stick_stiffnesses(input, system, kept, analysis.model);
+
+      std::vector<std::array<double, 2>> coefficients;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        {
+          const Building &building = model.buildings[b];
+          const auto      range    = model.equation_range(b);
+          check_damped_modes(input, model, b);
+          const unsigned wanted = std::max(n_modes, building.damping.n_modes_needed());
+          // no modes reported nor needed for damping: no eigenproblem (a
+          // large model with given Rayleigh coefficients); none of another
+          // rank's building (its rows are empty here)
+          const bool ours = b >= buildings[0] && b < buildings[1];
+          analysis.building_modes.push_back(
+            wanted == 0 || !ours ?
+              Modes() :
+              modes_of(input, modal, block(system.mass, range), block(system.stiffness, range),
+                       system.influence.segment(range[0], range[1] - range[0]), wanted,
+                       "building '" + building.name + "'"));
+          coefficients.push_back(
+            ours ? rayleigh_coefficients_of(input, building, b, analysis.building_modes.back()) :
+                   std::array<double, 2>{{0, 0}});
+        }
+      assemble_damping(model, coefficients, system);
+      assemble_modal_damping(analysis);
+      if (n_modes > 0)
+        analysis.modes = modes_of(input, modal, system.mass, system.stiffness, system.influence,
+                                  n_modes, "the model");
+      if (model.dimension == 3)
+        add_plan_participations(analysis);
+      analysis.warnings = damping_warnings(analysis, input);
+      return analysis;
+    }
+  } // namespace
+
   Analysis
   prepare_analysis(const InputFile &input, const ModelParameters &model_parameters,
                    const ContactParameters &contact, const SpringParameters &springs,
                    const FrictionParameters &friction, const ModalParameters &modal,
                    const unsigned int n_modes)
   {
-    Analysis analysis;
-    analysis.model  = build_model(model_parameters, contact, input, springs, friction);
-    analysis.system = assemble_mass_and_stiffness(analysis.model);
-    const Model  &model  = analysis.model;
-    LinearSystem &system = analysis.system;
-    check_matrices_in_range(input, model, system);
-    check_stable_under_gravity(input, model, system);
-    set_stick_stiffnesses(input, system, analysis.model);
+    Model model = build_model(model_parameters, contact, input, springs, friction);
+    const std::array<unsigned int, 2> all{{0, unsigned(model.buildings.size())}};
+    return prepare_buildings(input, std::move(model), modal, n_modes, all);
+  }
 
-    std::vector<std::array<double, 2>> coefficients;
-    for (unsigned int b = 0; b < model.buildings.size(); ++b)
-      {
-        const Building &building = model.buildings[b];
-        const auto      range    = model.equation_range(b);
-        check_damped_modes(input, model, b);
-        const unsigned wanted = std::max(n_modes, building.damping.n_modes_needed());
-        // no modes reported nor needed for damping: no eigenproblem (a large
-        // model with given Rayleigh coefficients)
-        analysis.building_modes.push_back(
-          wanted == 0 ? Modes() :
-                        modes_of(input, modal, block(system.mass, range),
-                                 block(system.stiffness, range),
-                                 system.influence.segment(range[0], range[1] - range[0]), wanted,
-                                 "building '" + building.name + "'"));
-        coefficients.push_back(
-          rayleigh_coefficients_of(input, building, b, analysis.building_modes.back()));
-      }
-    assemble_damping(model, coefficients, system);
-    assemble_modal_damping(analysis);
-    if (n_modes > 0)
-      analysis.modes = modes_of(input, modal, system.mass, system.stiffness, system.influence,
-                                n_modes, "the model");
-    if (model.dimension == 3)
-      add_plan_participations(analysis);
-    analysis.warnings = damping_warnings(analysis, input);
-    return analysis;
+  Analysis
+  prepare_analysis_of_buildings(const InputFile &input, Model model, const ModalParameters &modal,
+                                const std::array<unsigned int, 2> buildings)
+  {
+    AssertThrow(buildings[0] <= buildings[1] && buildings[1] <= model.buildings.size(),
+                dealii::ExcMessage("buildings beyond the model's"));
+    return prepare_buildings(input, std::move(model), modal, 0, buildings);
   }
 } // namespace poundfe

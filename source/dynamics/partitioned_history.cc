@@ -14,15 +14,15 @@ namespace poundfe
 {
   namespace
   {
-    /// The partition of `analysis` over the ranks of `communicator`.
+    /// The partition of `model` over the ranks of `communicator`, from its
+    /// elements (coupled_buildings): alike on every rank, whether its
+    /// Analysis is the whole model's or its own part.
     BuildingPartition
-    split(const Analysis &analysis, const TimeHistoryParameters &parameters,
-          const MPI_Comm communicator)
+    split(const Model &model, const std::string &file, const MPI_Comm communicator)
     {
       int n_ranks = 1;
       MPI_Comm_size(communicator, &n_ranks);
-      return partition_by_building(analysis.model, analysis.system, n_ranks,
-                                   parameters.input.file);
+      return partition_by_building(model, n_ranks, file);
     }
 
     /// Bytes of `text` from rank `root` to every rank of `communicator`.
@@ -80,6 +80,29 @@ namespace poundfe
     }
   } // namespace
 
+  Analysis
+  prepare_rank_analysis(const InputFile &input, Model model, const ModalParameters &modal,
+                        const MPI_Comm communicator)
+  {
+    int rank = 0;
+    MPI_Comm_rank(communicator, &rank);
+    Analysis           analysis;
+    std::exception_ptr error;
+    try
+      {
+        const BuildingPartition parts = split(model, input.file, communicator);
+        const std::array<unsigned int, 2> buildings{
+          {parts.first_building[rank], parts.first_building[rank + 1]}};
+        analysis = prepare_analysis_of_buildings(input, std::move(model), modal, buildings);
+      }
+    catch (const std::exception &)
+      {
+        error = std::current_exception();
+      }
+    agree_on_error(error, communicator);
+    return analysis;
+  }
+
   NewmarkParameters
   partitioned_newmark_parameters(const TimeIntegrationParameters &time_integration)
   {
@@ -122,7 +145,7 @@ namespace poundfe
                                          const TimeHistoryParameters &parameters,
                                          const MPI_Comm               communicator)
     : communicator(communicator)
-    , parts(split(analysis, parameters, communicator))
+    , parts(split(analysis.model, parameters.input.file, communicator))
     , excitation(make_excitation(analysis, parameters))
     , elements(make_nonlinear_elements(analysis.model))
   {

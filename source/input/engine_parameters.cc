@@ -1,21 +1,44 @@
 #include <poundfe/input/engine_parameters.h>
 
+#include <poundfe/dynamics/partitioned_history.h>
+#include <poundfe/model/model_builder.h>
+
 #include <iostream>
 #include <set>
 
 namespace poundfe
 {
+  namespace
+  {
+    /// The analysis's warnings on stderr where writes_outputs(), each once
+    /// per process: a sweep prepares an analysis per value.
+    void
+    say_warnings(const Analysis &analysis)
+    {
+      static std::set<std::string> said;
+      if (writes_outputs())
+        for (const std::string &warning : analysis.warnings)
+          if (said.insert(warning).second)
+            std::cerr << "poundfe: warning: " << warning << "\n";
+    }
+  } // namespace
+
   Analysis
   prepare_analysis(const InputParameters &input)
   {
     Analysis analysis = prepare_analysis(input, input.model, input.contact, input.springs,
                                          input.friction, input.modal, input.output.n_modes);
-    // once per process: a sweep prepares an analysis per value
-    static std::set<std::string> said;
-    if (writes_outputs())
-      for (const std::string &warning : analysis.warnings)
-        if (said.insert(warning).second)
-          std::cerr << "poundfe: warning: " << warning << "\n";
+    say_warnings(analysis);
+    return analysis;
+  }
+
+  Analysis
+  prepare_rank_analysis(const InputParameters &input, const MPI_Comm communicator)
+  {
+    Analysis analysis = prepare_rank_analysis(
+      input, build_model(input.model, input.contact, input, input.springs, input.friction),
+      input.modal, communicator);
+    say_warnings(analysis);
     return analysis;
   }
 

@@ -11,12 +11,14 @@
 #include <poundfe/dynamics/partitioned_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
+#include <poundfe/model/model_builder.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "test_utilities.h"
 
@@ -135,6 +137,106 @@ BOOST_AUTO_TEST_CASE(blocks_follow_the_couplings_of_m_k_and_c)
     }
 }
 
+// The couplings a partition keeps, from the model's elements
+// (coupled_buildings, nothing assembled), against those of the whole
+// model's assembled M, K and C (the second method): the same blocks for
+// every shipped model of several buildings (frames, shear and 3D buildings,
+// compliant foundations, links, P-Delta). None of them joins two buildings
+// by a linear term; a storey link made up between buildings 2 and 4 of five
+// must be found, keep 2-4 together, and stop the assembly of building 2
+// alone (an entry across the part's edge).
+BOOST_AUTO_TEST_CASE(couplings_from_the_elements_are_those_of_the_matrices)
+{
+  for (const std::string name :
+       {"3d-setback-vertical", "3d-torsional-pair", "3d-torsional-shear-pair", "floor-to-column",
+        "linked-shear-pair", "mitigation-shear-pair", "soil-frame-pair", "soil-shear-pair",
+        "three-buildings-row", "two-buildings"})
+    for (const bool p_delta : {false, true})
+      {
+        InputParameters input = read_parameters("input/" + name + ".prm");
+        if (p_delta)
+          input.model.geometric_nonlinearity = GeometricNonlinearity::p_delta;
+        const Analysis          whole = prepare_analysis(input);
+        const BuildingPartition from_model =
+          partition_by_building(whole.model, 1, input.file);
+        const BuildingPartition from_matrices =
+          partition_by_building(whole.model, whole.system, 1, input.file);
+        BOOST_TEST_INFO(name << (p_delta ? " with P-Delta" : ""));
+        BOOST_TEST(from_model.n_blocks == from_matrices.n_blocks);
+        BOOST_TEST(from_model.n_blocks == whole.model.buildings.size());
+      }
+
+  std::string text = "subsection Model\n  set Number of buildings = 5\n  set Separations = 0.01\nend\n";
+  for (unsigned int b = 0; b < 5; ++b)
+    text += shear_building(b + 1, 3, 30000, 3e7);
+  text += "subsection Ground motion\n  set Type = none\nend\n";
+  const InputParameters input = read_parameters(rank_file("linked", text));
+  Model model = build_model(input.model, input.contact, input, input.springs, input.friction);
+  StoreyLink link;
+  link.nodes     = {{model.buildings[1].first_node + 1, model.buildings[3].first_node + 2}};
+  link.stiffness = 1e6;
+  link.building  = 1;
+  model.links.push_back(link);
+  const std::vector<std::array<unsigned int, 2>> joined = coupled_buildings(model);
+  BOOST_TEST_REQUIRE(joined.size() == 1u);
+  BOOST_TEST(joined[0][0] == 1u);
+  BOOST_TEST(joined[0][1] == 3u);
+  BOOST_TEST(partition_by_building(model, 1, input.file).n_blocks == 3u);
+  BOOST_TEST(partition_by_building(model, assemble_mass_and_stiffness(model), 1, input.file)
+               .n_blocks == 3u);
+  BOOST_CHECK_THROW(assemble_mass_and_stiffness(model, model.equation_range(1)), std::exception);
+}
+
+// A rank's part (prepare_analysis_of_buildings of one building) against the
+// whole model's analysis: M, K, C, the foundations' M and K and K_G equal
+// on the building's block, and nothing outside it. M, K and C come from
+// the same element terms and the same building eigenproblem, so they must
+// be equal to the last bit; K_G comes from the building's own gravity
+// analysis (a Cholesky factor of its block, not of the whole K), equal to
+// round-off: 1e-12 of its largest entry.
+BOOST_AUTO_TEST_CASE(a_rank_part_is_the_block_of_the_whole_model)
+{
+  for (const std::string name : {"3d-torsional-pair", "soil-frame-pair", "soil-shear-pair",
+                                 "three-buildings-row", "two-buildings", "3d-setback-vertical"})
+    for (const bool p_delta : {false, true})
+      {
+        InputParameters input = read_parameters("input/" + name + ".prm");
+        input.output.n_modes  = 0;
+        if (p_delta)
+          input.model.geometric_nonlinearity = GeometricNonlinearity::p_delta;
+        const Analysis whole = prepare_analysis(input);
+        for (unsigned int b = 0; b < whole.model.buildings.size(); ++b)
+          {
+            const Analysis part = prepare_analysis_of_buildings(
+              input, build_model(input.model, input.contact, input, input.springs, input.friction),
+              input.modal, {{b, b + 1}});
+            const auto range = whole.model.equation_range(b);
+            for (const auto &[matrix, of_whole, tolerance] :
+                 {std::tuple{&part.system.mass, &whole.system.mass, 0.0},
+                  std::tuple{&part.system.stiffness, &whole.system.stiffness, p_delta ? 1e-12 : 0.0},
+                  std::tuple{&part.system.damping, &whole.system.damping, p_delta ? 1e-12 : 0.0},
+                  std::tuple{&part.system.structure_mass, &whole.system.structure_mass, 0.0},
+                  std::tuple{&part.system.structure_stiffness, &whole.system.structure_stiffness,
+                             p_delta ? 1e-12 : 0.0},
+                  std::tuple{&part.system.geometric_stiffness, &whole.system.geometric_stiffness,
+                             1e-12}})
+              {
+                BOOST_TEST_INFO(name << (p_delta ? " with P-Delta" : "") << ", building " << b);
+                BOOST_TEST_REQUIRE(matrix->rows() == of_whole->rows());
+                if (matrix->rows() == 0)
+                  continue;
+                const SparseMatrix mine = block(*matrix, range), theirs = block(*of_whole, range);
+                const double scale = Eigen::MatrixXd(theirs).lpNorm<Eigen::Infinity>();
+                BOOST_TEST(Eigen::MatrixXd(mine - theirs).lpNorm<Eigen::Infinity>() <=
+                           tolerance * scale);
+                // nothing outside the block
+                BOOST_TEST(matrix->nonZeros() == mine.nonZeros());
+              }
+            BOOST_TEST(part.building_modes[b].n_modes() == whole.building_modes[b].n_modes());
+          }
+      }
+}
+
 // The part of a rank: its block of M, K, C numbered from 0, then empty ghost
 // rows; the influence vector cut alike.
 BOOST_AUTO_TEST_CASE(owned_part_is_the_block_with_empty_ghost_rows)
@@ -182,8 +284,8 @@ BOOST_AUTO_TEST_CASE(partitioned_run_follows_the_whole_model)
       WholeModelHistory        serial(whole, parameters);
       const NewmarkIntegrator &reference = serial.integrator();
 
-      // the same over the ranks
-      Analysis           mine = prepare_analysis(input);
+      // the same over the ranks, each assembling its own buildings only
+      Analysis           mine = prepare_rank_analysis(input, MPI_COMM_WORLD);
       PartitionedHistory partitioned(mine, parameters, MPI_COMM_WORLD);
       partitioned.initialize();
       const std::vector<unsigned int> &first = partitioned.partition().first_equation;
@@ -251,7 +353,7 @@ BOOST_AUTO_TEST_CASE(a_rank_without_nonlinear_elements_steps_with_the_others)
   const TimeHistoryParameters parameters = time_history_parameters(input);
   Analysis                    whole      = prepare_analysis(input);
   WholeModelHistory           serial(whole, parameters);
-  Analysis           mine = prepare_analysis(input);
+  Analysis           mine = prepare_rank_analysis(input, MPI_COMM_WORLD);
   PartitionedHistory partitioned(mine, parameters, MPI_COMM_WORLD);
   partitioned.initialize();
   if (n_ranks() > 1)
@@ -271,12 +373,12 @@ BOOST_AUTO_TEST_CASE(nonsymmetric_tangents_get_an_lu_block_solver)
   const TimeHistoryParameters parameters = time_history_parameters(input);
   Analysis                    whole      = prepare_analysis(input);
   WholeModelHistory           serial(whole, parameters);
-  Analysis                    mine = prepare_analysis(input);
   if (n_ranks() > 2) // two buildings: every rank refuses alike
     {
-      BOOST_CHECK_THROW(PartitionedHistory(mine, parameters, MPI_COMM_WORLD), InputError);
+      BOOST_CHECK_THROW(prepare_rank_analysis(input, MPI_COMM_WORLD), InputError);
       return;
     }
+  Analysis           mine = prepare_rank_analysis(input, MPI_COMM_WORLD);
   PartitionedHistory partitioned(mine, parameters, MPI_COMM_WORLD);
   partitioned.initialize();
   BOOST_TEST(partitioned.linear_solver_name() == "umfpack");

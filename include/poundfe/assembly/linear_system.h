@@ -68,10 +68,28 @@ namespace poundfe
     unsigned int n_equations() const { return stiffness.rows(); }
   };
 
+  /// The equations [first, last).
+  using EquationRange = std::array<unsigned int, 2>;
+
   /// Assemble M and K (and the influence vector); C is left empty. With
   /// P-Delta, K includes K_G. Throws NumericalError if the gravity analysis
   /// meets a singular K_E (a mechanism).
   LinearSystem assemble_mass_and_stiffness(const Model &model);
+
+  /// The same, with only the entries whose row and column are in `kept`:
+  /// a rank's part of a model partitioned by building (doc/theory.md
+  /// §3.5d), its buildings' M and K (P-Delta from their own gravity
+  /// analysis), the other rows and columns empty; still n x n, the
+  /// influence vectors whole. An entry joining `kept` to another equation
+  /// (a coupling the partition missed) is a programming error.
+  LinearSystem assemble_mass_and_stiffness(const Model &model, EquationRange kept);
+
+  /// Each pair of buildings (a < b, sorted) that an entry of M, K (with
+  /// the foundations' and P-Delta's terms) or C joins, from the model's
+  /// elements, without assembling: what a partition by building must keep
+  /// on one rank. (C's Rayleigh terms and storey dashpots lie on M's and
+  /// K's entries.)
+  std::vector<std::array<unsigned int, 2>> coupled_buildings(const Model &model);
 
   /// The gravity loads -g M r_y on the equations (g = model.gravity), from
   /// every mass: nodal weights, and the members' self-weight as their mass

@@ -39,9 +39,22 @@ namespace poundfe
     }
   };
 
-  /// `n_parts` runs of buildings balanced by equations. Throws InputError
+  /// `n_parts` runs of buildings balanced by equations, keeping together
+  /// the buildings of each pair in `joined` (a < b). Throws InputError
   /// (naming `input_file` and the ranks) when there are more parts than
-  /// runs of buildings that M, K and C leave separable.
+  /// runs of buildings that `joined` leaves separable.
+  BuildingPartition partition_by_building(const Model                                    &model,
+                                          const std::vector<std::array<unsigned int, 2>> &joined,
+                                          unsigned int n_parts, const std::string &input_file);
+
+  /// The same, with the pairs that the model's M, K and C join
+  /// (coupled_buildings: from its elements, nothing assembled). What a
+  /// run over ranks uses: every rank gets it before it assembles its part.
+  BuildingPartition partition_by_building(const Model &model, unsigned int n_parts,
+                                          const std::string &input_file);
+
+  /// The same, with the pairs that the entries of an assembled `system`
+  /// join (a check of the above, and a coupling made up in a test).
   BuildingPartition partition_by_building(const Model &model, const LinearSystem &system,
                                           unsigned int n_parts, const std::string &input_file);
 

@@ -40,6 +40,16 @@ namespace poundfe
                             const FrictionParameters &friction, const ModalParameters &modal,
                             unsigned int n_modes);
 
+  /// One rank's Analysis of a model partitioned by building (doc/theory.md
+  /// §3.5d): `model` (built whole: every rank has the topology) with M, K
+  /// and C of the buildings [first, last) only, their rows and columns
+  /// alone filled (assemble_mass_and_stiffness with those equations), the
+  /// modes of those buildings their damping needs, none of the others and
+  /// none of the whole model. The checks and errors are those buildings'.
+  Analysis prepare_analysis_of_buildings(const InputFile &input, Model model,
+                                         const ModalParameters &modal,
+                                         std::array<unsigned int, 2> buildings);
+
   /// The stick spring and dashpot of each friction element from M and K:
   /// k_s = 1e4 K_ii when automatic (0 in the input), c_s = 2 sqrt(k_s M_ii)
   /// (i the element's ux equation). prepare_analysis sets them once; a

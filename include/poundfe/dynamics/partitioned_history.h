@@ -24,6 +24,17 @@
 
 namespace poundfe
 {
+  /// This rank's Analysis of a model partitioned by building over
+  /// `communicator`: `model` (built whole, alike on every rank) split by
+  /// partition_by_building(model, ranks), then M, K, C and the damping
+  /// modes of this rank's buildings only (prepare_analysis_of_buildings):
+  /// no rank assembles the whole model. Collective: an error on any rank
+  /// (bad input, a mechanism in one of its buildings, more ranks than
+  /// separable buildings) is thrown on every rank, the first failing
+  /// rank's.
+  Analysis prepare_rank_analysis(const InputFile &input, Model model,
+                                 const ModalParameters &modal, MPI_Comm communicator);
+
   /// The integrator's parameters of a partitioned run: the tangent
   /// assembled (Tangent update = refactorize: the Woodbury update would
   /// couple the ranks' blocks densely) and auto as Krylov-Newton (full
@@ -55,9 +66,10 @@ namespace poundfe
   class PartitionedHistory
   {
   public:
-    /// Collective over `communicator`. `analysis` is this rank's copy of
-    /// the whole model: its system becomes this rank's part (the whole
-    /// M, K and C are freed); it must outlive this object. The input's nonlinear solver must reuse its
+    /// Collective over `communicator`. `analysis` is this rank's part
+    /// (prepare_rank_analysis) or a copy of the whole model: its system
+    /// becomes this rank's block (the whole M, K and C are freed); it must
+    /// outlive this object. The input's nonlinear solver must reuse its
     /// factorisation (auto is krylov-newton here); its tangent is assembled
     /// (Tangent update is refactorize whatever the input says) and each
     /// rank factorises its block with the input's Linear solver when that

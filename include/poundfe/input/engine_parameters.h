@@ -9,12 +9,19 @@
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/report/run_parameters.h>
 
+#include <mpi.h>
+
 namespace poundfe
 {
   /// The analysis of the input's model (Model, Contact, Springs, Friction,
   /// Modal analysis, Output/Number of modes), its warnings said once per
   /// process on stderr ("poundfe: warning: ...") where writes_outputs().
   Analysis prepare_analysis(const InputParameters &input);
+
+  /// This rank's part of the input's model partitioned by building over
+  /// `communicator` (dynamics/partitioned_history.h: prepare_rank_analysis),
+  /// its buildings' warnings said as above. Collective.
+  Analysis prepare_rank_analysis(const InputParameters &input, MPI_Comm communicator);
 
   /// What a time history of the input reads: the file, Time integration,
   /// Ground motion, Nodal forces.
