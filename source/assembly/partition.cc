@@ -149,14 +149,42 @@ namespace poundfe
     return partition;
   }
 
+  LowRankDamping
+  owned_modal_damping(const LowRankDamping &damping, const std::array<unsigned int, 2> range,
+                      const unsigned int n_local)
+  {
+    // each column is one mode of one building, zero outside its rows (U
+    // is block diagonal by building): the part keeps the columns of its
+    // own buildings, cut to its rows
+    LowRankDamping part;
+    if (damping.empty())
+      return part;
+    const unsigned int        n_owned = range[1] - range[0];
+    std::vector<Eigen::Index> columns;
+    for (Eigen::Index c = 0; c < damping.factor.cols(); ++c)
+      if (damping.factor.col(c).segment(range[0], n_owned).lpNorm<Eigen::Infinity>() > 0)
+        {
+          const auto column = damping.factor.col(c);
+          AssertThrow((column.head(range[0]).array() == 0).all() &&
+                        (column.tail(column.size() - range[1]).array() == 0).all(),
+                      dealii::ExcMessage("a modal damping column reaches beyond its rank's "
+                                         "equations"));
+          columns.push_back(c);
+        }
+    part.factor  = Eigen::MatrixXd::Zero(n_local, columns.size());
+    part.weights = Vector(columns.size());
+    for (unsigned int j = 0; j < columns.size(); ++j)
+      {
+        part.factor.col(j).head(n_owned) = damping.factor.col(columns[j]).segment(range[0], n_owned);
+        part.weights[j]                  = damping.weights[columns[j]];
+      }
+    return part;
+  }
+
   LinearSystem
   owned_part(const LinearSystem &system, const std::array<unsigned int, 2> range,
              const unsigned int n_ghosts)
   {
-    if (!system.modal_damping.empty())
-      throw InputError("", 0, "Damping/Type",
-                       "modal damping is not yet partitioned by building: use Rayleigh damping "
-                       "on more than one rank");
     const unsigned int n_owned = range[1] - range[0], n_local = n_owned + n_ghosts;
     const auto         cut     = [&](const SparseMatrix &matrix) {
       if (matrix.rows() == 0) // absent (no P-Delta, no foundations)
@@ -185,6 +213,7 @@ namespace poundfe
     part.influence_rz        = cut_vector(system.influence_rz);
     part.influence_z         = cut_vector(system.influence_z);
     part.rayleigh            = system.rayleigh;
+    part.modal_damping       = owned_modal_damping(system.modal_damping, range, n_local);
     return part;
   }
 

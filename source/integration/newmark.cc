@@ -162,8 +162,7 @@ namespace poundfe
     if (distribution)
       set_up_distribution();
     if (parameters.steps_per_period > 0)
-      base_level = accuracy_level(parameters.time_step,
-                                  highest_frequency_bound(system.stiffness, system.mass),
+      base_level = accuracy_level(parameters.time_step, highest_frequency(),
                                   parameters.steps_per_period, max_accuracy_level);
     level(0);
   }
@@ -214,15 +213,19 @@ namespace poundfe
       throw InputError("", 0, "Time integration/Tangent update",
                        "a model partitioned over ranks needs Tangent update = refactorize (the "
                        "Woodbury update would couple the ranks' blocks densely)");
-    if (newton.line_search)
-      throw InputError("", 0, "Time integration/Line search",
-                       "is not yet available for a model partitioned over ranks");
-    if (parameters.steps_per_period > 0)
-      throw InputError("", 0, "Time integration/Steps per shortest period",
-                       "is not yet available for a model partitioned over ranks");
-    if (!system.modal_damping.empty())
-      throw InputError("", 0, "Damping/Type",
-                       "modal damping is not yet available for a model partitioned over ranks");
+  }
+
+  double
+  NewmarkIntegrator::highest_frequency() const
+  {
+    // the bound is a largest row ratio: over ranks, the largest of the
+    // ranks' (their blocks' rows are the model's; ghost rows are empty)
+    const double here = highest_frequency_bound(system.stiffness, system.mass);
+    if (!distribution)
+      return here;
+    std::vector<double> all(distribution->n_ranks());
+    distribution->all_gather(&here, 1, all.data());
+    return *std::max_element(all.begin(), all.end());
   }
 
   double
@@ -815,16 +818,19 @@ namespace poundfe
   NewmarkIntegrator::search_line(Level &L, const unsigned int it)
   {
     const Vector start = step_displacement;
-    const double g0    = increment.dot(residual);
-    // G(s) = d . R(u + s d), NaN when the elements refuse the state
+    const double g0    = dot_of(increment, residual);
+    // G(s) = d . R(u + s d), NaN when the elements refuse the state; over
+    // ranks the sums and refusals are agreed, so every rank searches alike
     const auto g = [&](const double s) {
       step_displacement = start + s * increment;
       set_iterate();
       update_kinematics(L);
       double norm = 0;
-      if (!evaluate_elements(u_next, v_next, L) || !newton_residual(L, it, norm))
+      if (!agreed(evaluate_elements(u_next, v_next, L),
+                  "an element on another rank refused its trial state") ||
+          !newton_residual(L, it, norm))
         return std::numeric_limits<double>::quiet_NaN();
-      return increment.dot(residual);
+      return dot_of(increment, residual);
     };
     const double s = line_search(g0, g(1.0), g, parameters.newton.line_search_parameters);
     step_displacement = start;

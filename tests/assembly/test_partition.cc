@@ -76,6 +76,28 @@ namespace
     return poundfe_test::temporary_file("partition-" + name + "-" + std::to_string(rank) + ".prm",
                                         text);
   }
+  /// The input's model stepped two ways from rest: whole on this process
+  /// (the reference), and over every rank, each assembling its own
+  /// buildings (prepare_rank_analysis).
+  struct WholeAndPartitioned
+  {
+    explicit WholeAndPartitioned(const InputParameters &input)
+      : parameters(time_history_parameters(input))
+      , whole(prepare_analysis(input))
+      , serial(whole, parameters)
+      , mine(prepare_rank_analysis(input, MPI_COMM_WORLD))
+      , partitioned(mine, parameters, MPI_COMM_WORLD)
+    {
+      partitioned.initialize();
+    }
+
+    const TimeHistoryParameters parameters;
+    Analysis                    whole;
+    WholeModelHistory           serial;
+    Analysis                    mine;
+    PartitionedHistory          partitioned;
+  };
+
   /// Both runs `n_steps` steps on; then the largest difference of the final
   /// displacements relative to the whole model's largest (on rank 0; 0 on
   /// the others).
@@ -349,16 +371,12 @@ BOOST_AUTO_TEST_CASE(a_rank_without_nonlinear_elements_steps_with_the_others)
           "subsection Contact\n  set Law = none\nend\n"
           "subsection Time integration\n  set Time step = 0.005\n  set End time = 0.5\n"
           "  set Nonlinear solver = modified-newton\n  set Newton residual tolerance = 1e-11\nend\n";
-  const InputParameters       input      = read_parameters(rank_file("elastic", text));
-  const TimeHistoryParameters parameters = time_history_parameters(input);
-  Analysis                    whole      = prepare_analysis(input);
-  WholeModelHistory           serial(whole, parameters);
-  Analysis           mine = prepare_rank_analysis(input, MPI_COMM_WORLD);
-  PartitionedHistory partitioned(mine, parameters, MPI_COMM_WORLD);
-  partitioned.initialize();
+  const InputParameters input = read_parameters(rank_file("elastic", text));
+  WholeAndPartitioned   runs(input);
   if (n_ranks() > 1)
-    BOOST_TEST(dealii::Utilities::MPI::min(partitioned.n_local_elements(), MPI_COMM_WORLD) == 0u);
-  BOOST_TEST(final_difference(serial, partitioned, 100) <= 1e-10);
+    BOOST_TEST(dealii::Utilities::MPI::min(runs.partitioned.n_local_elements(), MPI_COMM_WORLD) ==
+               0u);
+  BOOST_TEST(final_difference(runs.serial, runs.partitioned, 100) <= 1e-10);
 }
 
 // A 3D pair with plan contact (a nonsymmetric tangent) and a Linear solver
@@ -383,6 +401,77 @@ BOOST_AUTO_TEST_CASE(nonsymmetric_tangents_get_an_lu_block_solver)
   partitioned.initialize();
   BOOST_TEST(partitioned.linear_solver_name() == "umfpack");
   BOOST_TEST(final_difference(serial, partitioned, 200) <= 1e-8);
+}
+
+// The secant line search and Steps per shortest period over ranks: the
+// line search's inner products and refusals are sums and agreements, the
+// highest-frequency bound the largest of the ranks' (their rows are the
+// model's), so the ranks search and sub-step alike and follow the whole
+// model on one process. The row of buildings at 60 steps per shortest
+// period sub-steps every step (asserted), and the line search must change
+// some step (asserted), so that neither passes by doing nothing.
+BOOST_AUTO_TEST_CASE(line_search_and_steps_per_period_follow_the_whole_model)
+{
+  for (const bool line_search : {true, false})
+    {
+      InputParameters input = read_parameters(rank_file("row", row_of_buildings));
+      NewmarkParameters &newmark = input.time_integration.newmark;
+      newmark.newton.nonlinear_solver = NonlinearSolver::modified_newton;
+      newmark.newton.line_search      = line_search;
+      // a tolerance that the frozen tangent misses during contact
+      newmark.newton.line_search_parameters.tolerance = 0.1;
+      // the bound on the shortest period is 0.065 s (building 4's top floor:
+      // 32 steps of 2 ms): 60 per period halves every step
+      newmark.steps_per_period = line_search ? 0 : 60;
+      WholeAndPartitioned        runs(input);
+      const double               difference = final_difference(runs.serial, runs.partitioned, 600);
+      const IterationStatistics &s          = runs.partitioned.statistics();
+      const IterationStatistics &reference  = runs.serial.integrator().statistics();
+      BOOST_TEST_MESSAGE((line_search ? "line search" : "60 steps per shortest period")
+                         << " on " << n_ranks() << " rank(s): final difference " << difference
+                         << " of the peak; " << s.line_searches << " line searches, "
+                         << s.accuracy_refinements << " steps sub-stepped for accuracy, "
+                         << s.steps << " (sub-)steps");
+      BOOST_TEST(difference <= 1e-8);
+      BOOST_TEST(s.steps == reference.steps);
+      BOOST_TEST(s.line_searches == reference.line_searches);
+      BOOST_TEST(s.accuracy_refinements == reference.accuracy_refinements);
+      if (line_search)
+        BOOST_TEST(s.line_searches > 0u);
+      else
+        BOOST_TEST(s.accuracy_refinements >= 600u);
+    }
+}
+
+// Modal damping over ranks: U diag(w) Uᵀ is block diagonal by building, so
+// each rank keeps its own buildings' columns (owned_modal_damping) and
+// solves K_eff + c U D Uᵀ of its block by Woodbury; the row of buildings
+// with two modal damping ratios per building must follow the whole model,
+// with the damping energy alike (the eight columns asserted on both sides).
+BOOST_AUTO_TEST_CASE(modal_damping_follows_the_whole_model)
+{
+  std::string text = row_of_buildings;
+  const std::string rayleigh = "    set Type = modes\n    set Damping ratio = 0.03\n    set Modes = 1, 2\n";
+  for (std::size_t at = text.find(rayleigh); at != std::string::npos; at = text.find(rayleigh))
+    text.replace(at, rayleigh.size(), "    set Type = modal\n    set Modal ratios = 0.05, 0.08\n");
+  InputParameters input = read_parameters(rank_file("modal", text));
+  input.time_integration.newmark.newton.nonlinear_solver = NonlinearSolver::krylov_newton;
+  WholeAndPartitioned runs(input);
+  const WholeModelHistory  &serial      = runs.serial;
+  PartitionedHistory       &partitioned = runs.partitioned;
+  BOOST_TEST_REQUIRE(runs.whole.system.modal_damping.factor.cols() == 8);
+  const unsigned int n_columns =
+    dealii::Utilities::MPI::sum(runs.mine.system.modal_damping.factor.cols(), MPI_COMM_WORLD);
+  BOOST_TEST(n_columns == 8u); // two modes of each of four buildings, each on one rank
+  const double difference = final_difference(runs.serial, partitioned, 600);
+  BOOST_TEST_MESSAGE("modal damping on " << n_ranks() << " rank(s): final difference "
+                                         << difference << " of the peak; energy error "
+                                         << partitioned.max_energy_error());
+  BOOST_TEST(difference <= 1e-8);
+  BOOST_TEST(partitioned.statistics().steps == serial.integrator().statistics().steps);
+  BOOST_TEST(partitioned.energy().damping == serial.integrator().energy().damping,
+             boost::test_tools::tolerance(1e-6));
+  BOOST_TEST(partitioned.max_energy_error() < 1e-6);
 }
 
 // Full Newton would refactorise a block that leaves out the couplings

@@ -58,10 +58,18 @@ namespace poundfe
   BuildingPartition partition_by_building(const Model &model, const LinearSystem &system,
                                           unsigned int n_parts, const std::string &input_file);
 
+  /// The modal damping U diag(w) Uᵀ of the equations [first, last): the
+  /// columns of U (one mode of one building each, zero outside its rows)
+  /// that have an entry there, cut to those rows and padded with zeros to
+  /// `n_local` rows (the ghosts'). U is block diagonal by building, so the
+  /// parts of the ranks add up to the model's.
+  LowRankDamping owned_modal_damping(const LowRankDamping &damping,
+                                     std::array<unsigned int, 2> range, unsigned int n_local);
+
   /// The part of `system` on the equations [first, last), numbered from 0,
   /// followed by `n_ghosts` empty rows and columns (and zeros in the
-  /// influence vectors): M, K, C and the foundations' and P-Delta parts.
-  /// Modal damping is not partitioned: InputError.
+  /// influence vectors): M, K, C, the modal damping (owned_modal_damping)
+  /// and the foundations' and P-Delta parts.
   LinearSystem owned_part(const LinearSystem &system, std::array<unsigned int, 2> range,
                           unsigned int n_ghosts);
 

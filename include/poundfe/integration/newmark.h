@@ -310,6 +310,9 @@ namespace poundfe
     void   set_up_distribution();
     /// Refuse what a partitioned model cannot yet do (InputError).
     void   check_distributable() const;
+    /// The bound on the highest natural frequency (accuracy_substeps.h)
+    /// of the model: over ranks, the largest of their blocks'.
+    double highest_frequency() const;
     /// Norm and inner product over every rank's own equations.
     double norm_of(const Vector &x) const;
     double dot_of(const Vector &a, const Vector &b) const;
