@@ -7,6 +7,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -58,6 +59,21 @@ namespace poundfe
           entries.emplace_back(row, column, value);
         else if (row_kept != column_kept && value != 0)
           crossing = true;
+      }
+
+      /// Whether an element on `dofs` may have a kept entry: false only when
+      /// none of its equations is kept (so its matrix need not be formed:
+      /// a rank's part skips the other ranks' elements).
+      bool
+      may_keep(const Model &model, const std::vector<unsigned int> &dofs) const
+      {
+        if (joined || (kept[0] == 0 && kept[1] >= model.n_equations()) ||
+            model.has_combinations()) // a DOF may stand for other equations
+          return true;
+        return std::any_of(dofs.begin(), dofs.end(), [&](const unsigned int dof) {
+          const int e = model.equation(dof);
+          return e >= 0 && unsigned(e) >= kept[0] && unsigned(e) < kept[1];
+        });
       }
 
       /// The n x n matrix of the kept entries.
@@ -374,8 +390,10 @@ namespace poundfe
     {
       for (const Member &member : model.members)
         {
-          const FrameElement element = element_of(model, member);
           const auto dofs = member_dofs(member);
+          if (!k.may_keep(model, dofs))
+            continue;
+          const FrameElement element = element_of(model, member);
           scatter(model, dofs, element.stiffness(), k);
           scatter(model, dofs, element.mass(model.mass_matrix), m);
         }
@@ -413,10 +431,11 @@ namespace poundfe
       AssertDimension(storey_compressions.size(), model.links.size());
       for (unsigned int m = 0; m < model.members.size(); ++m)
         {
-          const Member      &member = model.members[m];
-          const FrameElement element = element_of(model, member);
-          scatter(model, member_dofs(member), element.geometric_stiffness(axial_forces[m]),
-                  triplets);
+          const Member &member = model.members[m];
+          const auto    dofs   = member_dofs(member);
+          if (triplets.may_keep(model, dofs))
+            scatter(model, dofs, element_of(model, member).geometric_stiffness(axial_forces[m]),
+                    triplets);
         }
       for (unsigned int m = 0; m < model.members_3d.size(); ++m)
         {

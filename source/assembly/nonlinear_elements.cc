@@ -10,6 +10,9 @@
 #include <poundfe/laws/friction.h>
 #include <poundfe/laws/link_laws.h>
 
+#include <algorithm>
+#include <limits>
+
 #include <deal.II/base/exceptions.h>
 
 namespace poundfe
@@ -194,7 +197,19 @@ namespace poundfe
   NonlinearElements
   make_nonlinear_elements(const Model &model)
   {
+    return make_nonlinear_elements(model, {{0, std::numeric_limits<unsigned int>::max()}});
+  }
+
+  NonlinearElements
+  make_nonlinear_elements(const Model &model, const std::array<unsigned int, 2> kept)
+  {
     NonlinearElements elements;
+    if (kept[0] > 0 || kept[1] < model.n_equations())
+      elements.keep_only([kept](const NonlinearElement &e) {
+        return std::any_of(e.equations().begin(), e.equations().end(), [kept](const int i) {
+          return i >= 0 && unsigned(i) >= kept[0] && unsigned(i) < kept[1];
+        });
+      });
     add_hysteretic_elements(model, elements);
     for (const Gap &gap : model.gaps)
       add_gap_element(model, gap, elements);
@@ -218,6 +233,7 @@ namespace poundfe
                             model.equation(Model::dof(link.nodes[1], link.component))}},
         make_link_law(link.law));
     add_foundation_elements(model, elements);
+    elements.keep_only({});
     return elements;
   }
 } // namespace poundfe

@@ -217,17 +217,6 @@ namespace poundfe
     return part;
   }
 
-  void
-  keep_elements_on(NonlinearElements &elements, const std::array<unsigned int, 2> range)
-  {
-    elements.erase_if([range](const NonlinearElement &e) {
-      for (const int i : e.equations())
-        if (i >= int(range[0]) && i < int(range[1]))
-          return false;
-      return true;
-    });
-  }
-
   RankPartition::RankPartition(const BuildingPartition &partition, const MPI_Comm communicator,
                                NonlinearElements &elements)
     : communicator(communicator)

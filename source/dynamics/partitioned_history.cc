@@ -25,6 +25,14 @@ namespace poundfe
       return partition_by_building(model, n_ranks, file);
     }
 
+    int
+    rank_of(const MPI_Comm communicator)
+    {
+      int rank = 0;
+      MPI_Comm_rank(communicator, &rank);
+      return rank;
+    }
+
     /// Bytes of `text` from rank `root` to every rank of `communicator`.
     void
     broadcast(std::string &text, const int root, const MPI_Comm communicator)
@@ -147,12 +155,9 @@ namespace poundfe
     : communicator(communicator)
     , parts(split(analysis.model, parameters.input.file, communicator))
     , excitation(make_excitation(analysis, parameters))
-    , elements(make_nonlinear_elements(analysis.model))
+    , elements(make_nonlinear_elements(analysis.model, parts.equations(rank_of(communicator))))
   {
-    int rank = 0;
-    MPI_Comm_rank(communicator, &rank);
-    const std::array<unsigned int, 2> range = parts.equations(rank);
-    keep_elements_on(elements, range);
+    const std::array<unsigned int, 2> range = parts.equations(rank_of(communicator));
     ownership = std::make_unique<RankPartition>(parts, communicator, elements); // renumbers
     // this rank's M, K and C; the whole model's go
     LinearSystem part = owned_part(analysis.system, range, ownership->n_ghosts());

@@ -472,7 +472,8 @@ namespace poundfe
 
     void
     add_gaps_between(Model &model, const ContactParameters &contact, const unsigned int left,
-                     const unsigned int right, const double separation)
+                     const unsigned int right, const double separation,
+                     const MassesByNode &masses)
     {
       const Building &L = model.buildings[left], &R = model.buildings[right];
       if (L.floors.empty() || R.floors.empty())
@@ -516,7 +517,7 @@ namespace poundfe
           gap.initial_gap = separation;
           // colliding masses: the floors at this level, or the nearest floor
           gap.effective_mass = contact.effective_mass > 0 ? contact.effective_mass :
-                                                             floor_effective_mass(model, gap);
+                                                             floor_effective_mass(model, gap, &masses);
           std::ostringstream label;
           label << model.buildings[left].name << "-" << model.buildings[right].name << "@"
                 << level << (fl && fr ? "" : "c");
@@ -527,7 +528,7 @@ namespace poundfe
 
     void
     add_barrier(Model &model, const InputFile &input, const ContactParameters &contact,
-                const std::string &entry)
+                const std::string &entry, const MassesByNode &masses)
     {
       const std::string path = "Contact/Barriers";
       std::istringstream in(entry);
@@ -554,7 +555,7 @@ namespace poundfe
       g.level          = floor.level;
       g.initial_gap    = gap;
       g.effective_mass = contact.effective_mass > 0 ? contact.effective_mass :
-                                                       floor_effective_mass(model, g);
+                                                       floor_effective_mass(model, g, &masses);
       g.label          = building.name + "@" + std::to_string(f) + "-barrier-" + side;
       model.gaps.push_back(g);
     }
@@ -581,11 +582,14 @@ namespace poundfe
           if (contact.floor_to_column_in_plan)
             add_column_contacts(model, contact);
         }
-      else if (contact.between_buildings)
+      // the floors' masses of every gap from one index (a scan of every
+      // mass per gap is quadratic in a row of many buildings)
+      const MassesByNode masses = masses_by_node(model);
+      if (contact.between_buildings && model.dimension != 3) // 3D: in plan, above
         for (unsigned int b = 0; b + 1 < model.buildings.size(); ++b)
-          add_gaps_between(model, contact, b, b + 1, value_for(parameters.separations, b));
+          add_gaps_between(model, contact, b, b + 1, value_for(parameters.separations, b), masses);
       for (const std::string &entry : contact.barriers)
-        add_barrier(model, input, contact, entry);
+        add_barrier(model, input, contact, entry, masses);
 
       ContactLawParameters &law = model.contact;
       law.law                   = contact.law;

@@ -7,9 +7,16 @@
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/model/model.h>
 
+#include <array>
+
 namespace poundfe
 {
   NonlinearElements make_nonlinear_elements(const Model &model);
+
+  /// Only the elements with an equation in [first, last) (a rank's share
+  /// of a model partitioned by building: those on its equations, the gaps
+  /// to other ranks' buildings included), the others never kept.
+  NonlinearElements make_nonlinear_elements(const Model &model, std::array<unsigned int, 2> kept);
 } // namespace poundfe
 
 #endif

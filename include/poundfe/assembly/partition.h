@@ -73,9 +73,6 @@ namespace poundfe
   LinearSystem owned_part(const LinearSystem &system, std::array<unsigned int, 2> range,
                           unsigned int n_ghosts);
 
-  /// Keep the elements with an equation in [first, last).
-  void keep_elements_on(NonlinearElements &elements, std::array<unsigned int, 2> range);
-
   /// The RankOwnership of one rank of `partition` over `communicator`, whose
   /// ghosts are the equations of `elements` (this rank's, numbered as the
   /// model) that other ranks own; `elements` are renumbered locally.

@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -199,17 +200,25 @@ namespace poundfe
     NonlinearElement       &operator[](const unsigned int h) { return *elements[h]; }
     const NonlinearElement &operator[](const unsigned int h) const { return *elements[h]; }
 
-    void push_back(std::unique_ptr<NonlinearElement> element)
-    {
-      elements.push_back(std::move(element));
-    }
+    void push_back(std::unique_ptr<NonlinearElement> element) { add(std::move(element)); }
+    /// The element made; if keep_only() drops it, it lives until the next
+    /// one is added.
     template <typename Element, typename... Arguments>
     Element &emplace_back(Arguments &&...arguments)
     {
       auto element       = std::make_unique<Element>(std::forward<Arguments>(arguments)...);
       Element &reference = *element;
-      elements.push_back(std::move(element));
+      add(std::move(element));
       return reference;
+    }
+
+    /// From now on add only the elements for which `keep(element)` is true
+    /// and drop the others as they come (a rank's share of a partitioned
+    /// model: never the whole model's elements at once). Empty: keep all.
+    void keep_only(std::function<bool(const NonlinearElement &)> keep_)
+    {
+      keep = std::move(keep_);
+      dropped.reset();
     }
 
     /// Drop the elements for which `drop(element)` is true (a rank's
@@ -230,7 +239,17 @@ namespace poundfe
     const_iterator end() const { return const_iterator(elements.end()); }
 
   private:
-    Storage elements;
+    void add(std::unique_ptr<NonlinearElement> element)
+    {
+      if (keep && !keep(*element))
+        dropped = std::move(element);
+      else
+        elements.push_back(std::move(element));
+    }
+
+    Storage                                        elements;
+    std::function<bool(const NonlinearElement &)> keep;
+    std::unique_ptr<NonlinearElement>              dropped; // the last one keep refused
   };
 } // namespace poundfe
 
