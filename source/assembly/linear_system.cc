@@ -559,8 +559,8 @@ namespace poundfe
     return system;
   }
 
-  std::vector<std::array<unsigned int, 2>>
-  coupled_buildings(const Model &model)
+  std::vector<unsigned int>
+  building_of_equations(const Model &model)
   {
     std::vector<unsigned int> building_of(model.n_equations());
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
@@ -568,6 +568,13 @@ namespace poundfe
         const EquationRange range = model.equation_range(b);
         std::fill(building_of.begin() + range[0], building_of.begin() + range[1], b);
       }
+    return building_of;
+  }
+
+  std::vector<std::array<unsigned int, 2>>
+  coupled_buildings(const Model &model)
+  {
+    const std::vector<unsigned int>       building_of = building_of_equations(model);
     std::set<std::array<unsigned int, 2>> joined;
     Triplets                              noting(building_of, joined);
     scatter_structure(model, noting, noting);
@@ -692,13 +699,7 @@ namespace poundfe
     Triplets           triplets;
     // Buildings own disjoint equation blocks, so per-building Rayleigh terms
     // are the global M and K entries scaled by the owner's coefficients.
-    std::vector<unsigned int> owner(n);
-    for (unsigned int b = 0; b < model.buildings.size(); ++b)
-      {
-        const auto range = model.equation_range(b);
-        for (unsigned int e = range[0]; e < range[1]; ++e)
-          owner[e] = b;
-      }
+    const std::vector<unsigned int> owner = building_of_equations(model);
     // Rayleigh damping is the superstructure's: the soil's is its dashpots
     // (foundation elements), so the foundations' M and K are left out.
     const bool          structure = system.structure_mass.rows() > 0;

@@ -41,10 +41,9 @@ namespace poundfe
     std::vector<std::array<unsigned int, 2>>
     joined_by_matrices(const Model &model, const LinearSystem &system)
     {
-      const std::vector<unsigned int> first = first_equations(model);
-      std::vector<unsigned int>       building_of(system.n_equations());
-      for (unsigned int b = 0; b + 1 < first.size(); ++b)
-        std::fill(building_of.begin() + first[b], building_of.begin() + first[b + 1], b);
+      AssertThrow(system.n_equations() == model.n_equations(),
+                  dealii::ExcMessage("the whole model's matrices"));
+      const std::vector<unsigned int>       building_of = building_of_equations(model);
       std::set<std::array<unsigned int, 2>> joined;
       for (const SparseMatrix *matrix : {&system.mass, &system.stiffness, &system.damping})
         for (Eigen::Index column = 0; column < matrix->outerSize(); ++column)

@@ -92,8 +92,7 @@ namespace poundfe
   prepare_rank_analysis(const InputFile &input, Model model, const ModalParameters &modal,
                         const MPI_Comm communicator)
   {
-    int rank = 0;
-    MPI_Comm_rank(communicator, &rank);
+    const int          rank = rank_of(communicator);
     Analysis           analysis;
     std::exception_ptr error;
     try

@@ -84,6 +84,10 @@ namespace poundfe
   /// (a coupling the partition missed) is a programming error.
   LinearSystem assemble_mass_and_stiffness(const Model &model, EquationRange kept);
 
+  /// The building of each equation (the buildings' equations are
+  /// consecutive and cover the model).
+  std::vector<unsigned int> building_of_equations(const Model &model);
+
   /// Each pair of buildings (a < b, sorted) that an entry of M, K (with
   /// the foundations' and P-Delta's terms) or C joins, from the model's
   /// elements, without assembling: what a partition by building must keep
