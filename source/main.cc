@@ -10,6 +10,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -128,10 +129,23 @@ namespace
     return std::nullopt;
   }
 
+  /// This process's rank in mpirun's job before MPI is initialised (Open
+  /// MPI's, MPICH's and PMIx's launchers say it in the environment); 0 when
+  /// launched alone.
+  int
+  launched_rank()
+  {
+    for (const char *name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+      if (const char *rank = std::getenv(name))
+        return std::atoi(rank);
+    return 0;
+  }
+
   /// Refuses (InputError at the entry's line) an input that asks for what
-  /// the command cannot do: a distributed linear solver on several ranks for
-  /// anything but `run` (the probabilistic commands give each rank its own
-  /// realizations), XDMF fields from a command that writes no fields.
+  /// the command cannot do: a distributed linear solver on several ranks, or
+  /// Partition = buildings, for anything but `run` (the probabilistic
+  /// commands give each rank its own realizations), XDMF fields from a
+  /// command that writes no fields.
   void
   check_command_takes_input(const poundfe::Command        &command,
                             const poundfe::InputParameters &input,
@@ -143,6 +157,10 @@ namespace
       input.fail("Time integration/Linear solver",
                  input.time_integration.linear_solver + " spreads one run over the MPI ranks: "
                  "on more than one rank only 'run' can use it, not '" + command.name + "'");
+    if (input.time_integration.partition == RunPartition::buildings && command.name != "run")
+      input.fail("Time integration/Partition",
+                 "buildings spreads one run over the MPI ranks: only 'run' takes it, not '" +
+                   command.name + "'");
     // Only run (the frames) and modal (the modes) write fields.
     if (input.output.field_format == FieldFormat::xdmf && command.name != "run" &&
         command.name != "modal")
@@ -168,8 +186,10 @@ main(int argc, char **argv)
   else
     dealii::MultithreadInfo::set_thread_limit(1); // what MPI_InitFinalize(argc, argv, 1) sets
   dealii::deal_II_exceptions::disable_abort_on_exception();
-  // Every rank reads the same input and fails the same way: rank 0 speaks.
-  const bool    root = !mpi || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  // Every rank reads the same input and fails the same way: rank 0 speaks
+  // (also before MPI is initialised, when the input is read).
+  const bool    root = mpi ? dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 :
+                             launched_rank() == 0;
   std::ostream &err  = root ? std::cerr : silent;
   if (const std::optional<int> status = answer_without_command(line, command, err))
     return *status;
@@ -188,7 +208,8 @@ main(int argc, char **argv)
           return 1;
         }
       const InputParameters input = read_parameters(arguments[0]);
-      if (!mpi && linear_solver_needs_mpi(input.time_integration.linear_solver))
+      if (!mpi && (linear_solver_needs_mpi(input.time_integration.linear_solver) ||
+                   input.time_integration.partition == RunPartition::buildings))
         mpi.emplace(argc, argv, 1);
       check_command_takes_input(*command, input,
                                 mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1);

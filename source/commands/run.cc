@@ -9,6 +9,7 @@
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/report/run_outputs.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <algorithm>
@@ -18,15 +19,19 @@ namespace poundfe
 {
   namespace
   {
-    /// The run's steps, Newton iterations, impacts and energy balance, its
+    /// The run's steps (and over how many ranks, `n_parts` > 0, it was
+    /// partitioned), Newton iterations, impacts and energy balance, its
     /// warnings on `err`, and where the results are.
     void
     report_run(const Analysis &analysis, const RunResult &result, const std::string &directory,
-               std::ostream &out, std::ostream &err)
+               const unsigned int n_parts, std::ostream &out, std::ostream &err)
     {
       const RunStatus &status = result.status;
       out << "poundfe run: " << status.steps << " steps to t = " << status.end_time << " s in "
-          << status.wall_time << " s\n";
+          << status.wall_time << " s";
+      if (n_parts > 0)
+        out << " (partitioned by building over " << n_parts << (n_parts == 1 ? " rank)" : " ranks)");
+      out << "\n";
       if (result.n_nonlinear_elements > 0)
         out << result.n_nonlinear_elements << " nonlinear elements; Newton "
             << double(result.statistics.iterations) / std::max(1ul, result.statistics.steps)
@@ -79,28 +84,38 @@ namespace poundfe::commands
   run(const CommandRun &run)
   {
     const InputParameters &input = *run.input;
-    // every rank of a distributed solver runs the analysis; rank 0 writes
+    // every rank of a distributed solver runs the analysis, or (Partition =
+    // buildings) steps its own buildings; rank 0 writes
     const bool          root = writes_outputs();
     dealii::TimerOutput timer(run.out, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
 
-    timer.enter_subsection("set-up");
-    const Analysis      analysis   = prepare_analysis(input);
-    const RunParameters parameters = run_parameters(input);
-    const Excitation    excitation = make_excitation(analysis, parameters.time_history);
-    timer.leave_subsection();
-
-    timer.enter_subsection("time history");
     RunOptions options;
     options.output_directory = root ? run.directory : "";
     options.progress         = root;
     options.interruptible    = true;
     options.console          = &run.out;
-    const RunResult result   = run_time_history(analysis, parameters, excitation, options);
+    const RunParameters parameters = run_parameters(input);
+    const bool partitioned = input.time_integration.partition == RunPartition::buildings;
+
+    timer.enter_subsection("set-up");
+    // partitioned: this rank's buildings only (theory §3.5d)
+    Analysis analysis =
+      partitioned ? prepare_rank_analysis(input, run.communicator) : prepare_analysis(input);
+    timer.leave_subsection();
+
+    timer.enter_subsection("time history");
+    const RunResult result =
+      partitioned ?
+        run_partitioned_time_history(analysis, parameters, options, run.communicator) :
+        run_time_history(analysis, parameters, make_excitation(analysis, parameters.time_history),
+                         options);
     timer.leave_subsection();
     if (!root)
       return exit_status(result.status, nullptr);
 
-    report_run(analysis, result, run.directory, run.out, run.err);
+    report_run(analysis, result, run.directory,
+               partitioned ? dealii::Utilities::MPI::n_mpi_processes(run.communicator) : 0,
+               run.out, run.err);
     print_timing(timer);
     return exit_status(result.status, &run.err);
   }

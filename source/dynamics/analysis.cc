@@ -330,7 +330,8 @@ namespace poundfe
     /// prepare_analysis of the buildings [first, last) of `model`.
     Analysis
     prepare_buildings(const InputFile &input, Model &&built, const ModalParameters &modal,
-                      const unsigned int n_modes, const std::array<unsigned int, 2> buildings)
+                      const unsigned int n_modes, const unsigned int n_model_modes,
+                      const std::array<unsigned int, 2> buildings)
     {
       Analysis analysis;
       analysis.model           = std::move(built);
@@ -365,9 +366,9 @@ namespace poundfe
         }
       assemble_damping(model, coefficients, system);
       assemble_modal_damping(analysis);
-      if (n_modes > 0)
+      if (n_model_modes > 0)
         analysis.modes = modes_of(input, modal, system.mass, system.stiffness, system.influence,
-                                  n_modes, "the model");
+                                  n_model_modes, "the model");
       if (model.dimension == 3)
         add_plan_participations(analysis);
       analysis.warnings = damping_warnings(analysis, input);
@@ -383,15 +384,16 @@ namespace poundfe
   {
     Model model = build_model(model_parameters, contact, input, springs, friction);
     const std::array<unsigned int, 2> all{{0, unsigned(model.buildings.size())}};
-    return prepare_buildings(input, std::move(model), modal, n_modes, all);
+    return prepare_buildings(input, std::move(model), modal, n_modes, n_modes, all);
   }
 
   Analysis
   prepare_analysis_of_buildings(const InputFile &input, Model model, const ModalParameters &modal,
-                                const std::array<unsigned int, 2> buildings)
+                                const std::array<unsigned int, 2> buildings,
+                                const unsigned int                n_building_modes)
   {
     AssertThrow(buildings[0] <= buildings[1] && buildings[1] <= model.buildings.size(),
                 dealii::ExcMessage("buildings beyond the model's"));
-    return prepare_buildings(input, std::move(model), modal, 0, buildings);
+    return prepare_buildings(input, std::move(model), modal, n_building_modes, 0, buildings);
   }
 } // namespace poundfe

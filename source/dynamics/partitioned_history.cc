@@ -43,12 +43,10 @@ namespace poundfe
       MPI_Bcast(text.data(), length, MPI_CHAR, root, communicator);
     }
 
-    /// Collective: when `error` is set on some rank, every rank throws the
-    /// error of the first such rank (an InputError stays one, naming its
-    /// entry; anything else is a NumericalError with its message), so that
-    /// no rank goes on alone into a collective call.
-    void
-    agree_on_error(const std::exception_ptr &error, const MPI_Comm communicator)
+  } // namespace
+
+  void
+  agree_on_error(const std::exception_ptr &error, const MPI_Comm communicator)
     {
       int rank = 0, size = 1;
       MPI_Comm_rank(communicator, &rank);
@@ -86,11 +84,10 @@ namespace poundfe
         throw InputError(file, line, parameter, problem);
       throw NumericalError(problem);
     }
-  } // namespace
 
   Analysis
   prepare_rank_analysis(const InputFile &input, Model model, const ModalParameters &modal,
-                        const MPI_Comm communicator)
+                        const MPI_Comm communicator, const unsigned int n_building_modes)
   {
     const int          rank = rank_of(communicator);
     Analysis           analysis;
@@ -100,7 +97,8 @@ namespace poundfe
         const BuildingPartition parts = split(model, input.file, communicator);
         const std::array<unsigned int, 2> buildings{
           {parts.first_building[rank], parts.first_building[rank + 1]}};
-        analysis = prepare_analysis_of_buildings(input, std::move(model), modal, buildings);
+        analysis = prepare_analysis_of_buildings(input, std::move(model), modal, buildings,
+                                                 n_building_modes);
       }
     catch (const std::exception &)
       {
@@ -153,10 +151,15 @@ namespace poundfe
                                          const MPI_Comm               communicator)
     : communicator(communicator)
     , parts(split(analysis.model, parameters.input.file, communicator))
-    , excitation(make_excitation(analysis, parameters))
+    , ground_and_forces(make_excitation(analysis, parameters))
     , elements(make_nonlinear_elements(analysis.model, parts.equations(rank_of(communicator))))
   {
     const std::array<unsigned int, 2> range = parts.equations(rank_of(communicator));
+    for (unsigned int r = 0; r < parts.n_parts(); ++r)
+      {
+        gather_counts.push_back(parts.equations(r)[1] - parts.equations(r)[0]);
+        gather_offsets.push_back(parts.equations(r)[0]);
+      }
     ownership = std::make_unique<RankPartition>(parts, communicator, elements); // renumbers
     // this rank's M, K and C; the whole model's go
     LinearSystem part = owned_part(analysis.system, range, ownership->n_ghosts());
@@ -194,7 +197,7 @@ namespace poundfe
     whole_load.resize(parts.first_equation.back());
     const unsigned int first = range[0], n_owned = range[1] - range[0];
     load = [this, first, n_owned](const double t, Vector &p) {
-      excitation.load(t, whole_load);
+      ground_and_forces.load(t, whole_load);
       p.head(n_owned) = whole_load.segment(first, n_owned);
       p.tail(p.size() - n_owned).setZero();
     };
@@ -217,19 +220,18 @@ namespace poundfe
   Vector
   PartitionedHistory::gather(const Vector &x) const
   {
-    int rank = 0;
-    MPI_Comm_rank(communicator, &rank);
-    const auto [first, last] = ownership->global_range();
-    std::vector<int> counts, offsets;
-    for (unsigned int r = 0; r < parts.n_parts(); ++r)
-      {
-        const auto [f, l] = parts.equations(r);
-        counts.push_back(l - f);
-        offsets.push_back(f);
-      }
-    Vector whole(rank == 0 ? parts.first_equation.back() : 0);
-    MPI_Gatherv(x.data(), last - first, MPI_DOUBLE, whole.data(), counts.data(),
-                offsets.data(), MPI_DOUBLE, 0, communicator);
+    Vector whole(rank_of(communicator) == 0 ? parts.first_equation.back() : 0);
+    gather(x, whole);
     return whole;
+  }
+
+  void
+  PartitionedHistory::gather(const Vector &x, Vector &whole) const
+  {
+    const auto [first, last] = ownership->global_range();
+    Assert(rank_of(communicator) != 0 || whole.size() == parts.first_equation.back(),
+           dealii::ExcDimensionMismatch(whole.size(), parts.first_equation.back()));
+    MPI_Gatherv(x.data(), last - first, MPI_DOUBLE, whole.data(), gather_counts.data(),
+                gather_offsets.data(), MPI_DOUBLE, 0, communicator);
   }
 } // namespace poundfe

@@ -24,19 +24,6 @@ namespace poundfe
       return c == 0 ? "ux" : (c == 1 ? "uy" : "rz");
     }
 
-    /// SIGINT/SIGTERM, agreed by every rank (mpirun may deliver it to the
-    /// ranks at different steps; a rank that stopped alone would leave the
-    /// others waiting in the distributed solver).
-    bool
-    stop_requested()
-    {
-      int initialized = 0;
-      MPI_Initialized(&initialized);
-      if (!initialized || dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
-        return interruption_requested();
-      return dealii::Utilities::MPI::logical_or(interruption_requested(), MPI_COMM_WORLD);
-    }
-
     double
     end_time_of(const TimeIntegrationParameters &time_integration, const Excitation &excitation)
     {
@@ -47,12 +34,6 @@ namespace poundfe
 
     /// The entry that sets the ground motion's duration, and so the end of a
     /// run without an End time: the record or the stochastic motion's Duration.
-    std::string
-    duration_path_of(const GroundMotionParameters &ground_motion)
-    {
-      return ground_motion.type == GroundMotionType::record ? "Ground motion/Record/File" :
-                                                              "Ground motion/Stochastic/Duration";
-    }
 
     /// Time integration/Method = dopri: its integrator, refused (InputError)
     /// when the model is beyond it; null for newmark.
@@ -135,7 +116,7 @@ namespace poundfe
     : analysis(analysis_)
     , input(parameters.input)
     , time_integration(parameters.time_integration)
-    , duration_path(duration_path_of(parameters.ground_motion))
+    , ground_motion(parameters.ground_motion)
     , elements(make_nonlinear_elements(analysis_.model))
     , integrator(analysis_.system,
                  linear_solver.empty() ? time_integration.linear_solver : linear_solver,
@@ -161,15 +142,38 @@ namespace poundfe
   unsigned long
   TimeHistory::n_steps(const Excitation &excitation) const
   {
+    return n_steps_of({input, time_integration, ground_motion, {}, {}}, excitation);
+  }
+
+  unsigned long
+  n_steps_of(const TimeHistoryParameters &parameters, const Excitation &excitation)
+  {
+    const TimeIntegrationParameters &time_integration = parameters.time_integration;
+    const InputFile                 &input            = parameters.input;
     const double end = end_time_of(time_integration, excitation);
     if (!(end > 0))
       throw InputError(input.file, input.line_of("Time integration/End time"),
                        "Time integration/End time",
                        "needs a positive end time when there is no ground motion");
-    // what set the end: End time, else the record or the stochastic motion's duration
+    // what set the end: End time, else the record or the stochastic motion's
+    // duration (Ground motion/Record/File or Ground motion/Stochastic/Duration)
     const std::string end_path =
-      time_integration.end_time > 0 ? "Time integration/End time" : duration_path;
+      time_integration.end_time > 0 ?
+        "Time integration/End time" :
+        (parameters.ground_motion.type == GroundMotionType::record ?
+           "Ground motion/Record/File" :
+           "Ground motion/Stochastic/Duration");
     return time_integration.n_steps_to(end, input, end_path);
+  }
+
+  bool
+  stop_requested(const MPI_Comm communicator)
+  {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    if (!initialized || dealii::Utilities::MPI::n_mpi_processes(communicator) == 1)
+      return interruption_requested();
+    return dealii::Utilities::MPI::logical_or(interruption_requested(), communicator);
   }
 
   RunStatus
@@ -210,7 +214,7 @@ namespace poundfe
       {
         for (step = 1; step <= n; ++step)
           {
-            if (interruptible && stop_requested())
+            if (interruptible && stop_requested(MPI_COMM_WORLD))
               {
                 status.kind = RunStatus::Kind::interrupted;
                 break;
@@ -236,12 +240,19 @@ namespace poundfe
     status.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     status.steps     = stepper.steps();
     status.end_time  = stepper.time();
+    finish_observers(observers, view, status);
+    return status;
+  }
+
+  void
+  finish_observers(const Observers &observers, const ResponseView &state, RunStatus &status)
+  {
     // Every observer finishes (or removes) its files even when one cannot:
     // the summary, last, then reports the file that failed.
     for (StepObserver *observer : observers)
       try
         {
-          observer->finish(view, status);
+          observer->finish(state, status);
         }
       catch (const OutputError &e)
         {
@@ -250,7 +261,5 @@ namespace poundfe
           status.kind          = RunStatus::Kind::failed;
           status.output_failed = true;
         }
-    return status;
   }
-
 } // namespace poundfe

@@ -37,7 +37,7 @@ namespace poundfe
   {
     Analysis analysis = prepare_rank_analysis(
       input, build_model(input.model, input.contact, input, input.springs, input.friction),
-      input.modal, communicator);
+      input.modal, communicator, input.output.n_modes);
     say_warnings(analysis);
     return analysis;
   }

@@ -106,6 +106,7 @@ namespace poundfe
     , distribution(distribution)
     , krylov(std::max(parameters.newton.subspace_dimension, 1u))
     , bfgs(std::max(parameters.newton.subspace_dimension, 1u))
+    , records(elements)
   {
     dof_start.assign(1, 0);
     d_start.assign(1, 0);
@@ -122,10 +123,6 @@ namespace poundfe
         d_start.push_back(d_start.back() + e.rank() * e.rank());
         total_rank += e.rank();
         symmetric = symmetric && e.has_symmetric_tangent();
-        if (e.kind == ElementKind::gap)
-          gap_elements.push_back(h);
-        if (e.kind == ElementKind::friction)
-          friction_elements.push_back(h);
         if (e.kind == ElementKind::gap || e.kind == ElementKind::friction ||
             e.kind == ElementKind::spring)
           event_elements.push_back(h);
@@ -157,8 +154,6 @@ namespace poundfe
     for (Vector *x : {&local_u, &local_v, &correction})
       x->setZero(dof_start.back());
     tangent_change.assign(d_start.back(), 0.0);
-    for (auto *x : {&work, &supplied_work, &committed_force, &committed_history, &committed_rate})
-      x->assign(n_elements, 0.0);
     if (distribution)
       set_up_distribution();
     if (parameters.steps_per_period > 0)
@@ -414,16 +409,13 @@ namespace poundfe
     stats.linear = linear;
     stats.smallest_time_step = parameters.time_step;
     balance           = EnergyBalance();
-    impacts.reset(n_elements);
-    stick_slip.reset(n_elements);
-    std::fill(supplied_work.begin(), supplied_work.end(), 0.0);
     energy_scale      = 0;
     max_balance_error = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
       (*elements)[h].reset();
     set_consistent_acceleration(load);
-    for (unsigned int h = 0; h < n_elements; ++h)
-      work[h] = (*elements)[h].stored_energy();
+    if (elements)
+      records.start(*elements);
     balance.strain  = strain_energy();
     balance.kinetic = kinetic_energy();
     balance.initial = balance.strain + balance.kinetic;
@@ -477,11 +469,10 @@ namespace poundfe
           throw NumericalError("state at t = " + number_text(current_time) + " s: " + e.label +
                                ": " + e.failure());
         e.commit();
-        committed_force[h]   = e.force();
-        committed_history[h] = e.history_variable();
-        committed_rate[h]    = e.deformation(v);
         e.force_correction(correction.segment(s, k));
       }
+    if (elements)
+      records.note_committed(*elements, v);
     subtract_element_forces(r);
 
     // Equations that carry mass: any nonzero in their row of M.
@@ -861,7 +852,7 @@ namespace poundfe
     // kinetic friction the slip it starts can be a converged discrete
     // solution too, and the mass would break away early).
     set_start_residual(L, p);
-    if (friction_elements.empty())
+    if (records.friction_elements().empty())
       step_displacement.setZero();
     else
       step_displacement.noalias() = L.dt * v;
@@ -994,21 +985,6 @@ namespace poundfe
   void
   NewmarkIntegrator::accept(const Level &L, const Vector &p)
   {
-    for (const unsigned int h : gap_elements)
-      {
-        const NonlinearElement &e = (*elements)[h];
-        impacts.record(h, current_time, current_time + L.dt,
-                       {committed_history[h], committed_rate[h], committed_force[h]},
-                       {e.history_variable(), e.deformation(v_next), e.force(),
-                        e.contact_point(), e.phase()});
-      }
-    for (const unsigned int h : friction_elements)
-      {
-        const NonlinearElement &e = (*elements)[h];
-        stick_slip.record(h, current_time, current_time + L.dt,
-                          {e.was_active(), committed_rate[h]},
-                          {e.is_active(), e.deformation(v_next)});
-      }
     // Trapezoidal work of the step; exact for the average-acceleration rule.
     work_vector = step_displacement;
     balance.input += 0.5 * work_vector.dot(load_now + p);
@@ -1016,31 +992,23 @@ namespace poundfe
     product.noalias() = system.damping * velocity_sum;
     add_low_rank_damping_product(system.modal_damping, velocity_sum, product);
     balance.damping += 0.5 * work_vector.dot(product);
-    for (unsigned int h = 0; h < n_elements; ++h)
-      {
-        NonlinearElement &e = (*elements)[h];
-        work[h] += e.work_increment();
-        supplied_work[h] += e.supplied_work_increment();
-        if (!distribution || counted_here[h])
-          balance.belt += e.supplied_work_increment();
-        e.commit();
-        committed_force[h]   = e.force();
-        committed_history[h] = e.history_variable();
-        committed_rate[h]    = e.deformation(v_next);
-      }
+    if (elements)
+      records.accept(*elements, current_time, current_time + L.dt, v_next,
+                     distribution ? &counted_here : nullptr, balance.belt);
     u.swap(u_next);
     v.swap(v_next);
     a.swap(a_next);
     load_now = p;
     ++stats.steps;
     stats.smallest_time_step = std::min(stats.smallest_time_step, L.dt);
+    last_step = L.dt;
   }
 
   bool
   NewmarkIntegrator::contact_needs_shorter_step(const Level &L) const
   {
     const unsigned int n = parameters.newton.steps_per_contact;
-    for (const unsigned int h : gap_elements)
+    for (const unsigned int h : records.gap_elements())
       {
         const NonlinearElement &e = (*elements)[h];
         // Closed, or closing within the step at the committed rate (the
@@ -1048,8 +1016,8 @@ namespace poundfe
         double duration = 0;
         if (e.was_active())
           duration = e.contact_duration(0);
-        else if (committed_history[h] + committed_rate[h] * L.dt > 0)
-          duration = e.contact_duration(committed_rate[h]);
+        else if (records.committed_history(h) + records.committed_rate(h) * L.dt > 0)
+          duration = e.contact_duration(records.committed_rate(h));
         if (duration > 0 && n * L.dt > duration)
           return true;
       }
@@ -1158,12 +1126,13 @@ namespace poundfe
     if (!distribution)
       {
         if (elements)
-          set_element_dissipation(balance, *elements, work, supplied_work);
+          set_element_dissipation(balance, *elements, records.work(), records.supplied_work());
         update_balance_error(balance, energy_scale, max_balance_error);
         return;
       }
     if (elements)
-      set_element_dissipation(balance, *elements, work, supplied_work, counted_here);
+      set_element_dissipation(balance, *elements, records.work(), records.supplied_work(),
+                              counted_here);
     sum_balance_over_ranks();
     update_balance_error(total_balance, energy_scale, max_balance_error);
   }

@@ -28,6 +28,14 @@ namespace poundfe
     return table;
   }
 
+  const NameTable<RunPartition> &
+  run_partition_names()
+  {
+    static const NameTable<RunPartition> table(
+      {{RunPartition::none, "none"}, {RunPartition::buildings, "buildings"}});
+    return table;
+  }
+
   DormandPrinceParameters
   TimeIntegrationParameters::dormand_prince() const
   {
@@ -165,6 +173,20 @@ namespace poundfe
                "analysis. Not given: eigen-ldlt, or umfpack when a nonsymmetric element "
                "tangent (3D plan contact) must be refactorised. Unit: -.",
                linear_solver_names());
+    add_choice(prm, "Partition", partition,
+               "How mpirun -np P poundfe run spreads one run over its ranks: none (every "
+               "rank runs the whole analysis; with petsc-mumps the matrix and its "
+               "factorisation are split) or buildings (each rank sets up, factorises and "
+               "steps only its own run of buildings, with its nonlinear elements and "
+               "their history; the ranks exchange the far ends of the elements between "
+               "them; rank 0 writes every output from the state gathered at each step; "
+               "theory §3.5d). buildings needs Method = newmark, a one-process Linear "
+               "solver (eigen-ldlt or umfpack) for each rank's block, a nonlinear solver "
+               "that reuses its factorisation (auto is then krylov-newton), Tangent "
+               "update = refactorize or auto (then refactorize), no friction "
+               "surfaces and no initial conditions, and at least as many separable "
+               "buildings as ranks; other commands than run refuse it. Unit: -.",
+               run_partition_names());
     declare_newton_entries(prm, newmark.newton);
     newmark.iterative.declare(prm);
     add_choice(prm, "Hysteresis integration", hysteresis_integration,
@@ -231,5 +253,22 @@ namespace poundfe
     if (const std::string why = linear_solver_unavailable(linear_solver); !why.empty())
       input.fail("Time integration/Linear solver", linear_solver + " is not available: " + why);
     newmark.iterative.check(input);
+    if (partition == RunPartition::buildings)
+      {
+        if (method != TimeIntegrationMethod::newmark)
+          input.fail("Time integration/Partition",
+                     "buildings steps the ranks' blocks with Newmark-Newton: not with Method = " +
+                       time_integration_method_names().name(method));
+        if (newmark.newton.tangent_update == TangentUpdate::woodbury ||
+            newmark.newton.tangent_update == TangentUpdate::hybrid)
+          input.fail("Time integration/Tangent update",
+                     tangent_update_names().name(newmark.newton.tangent_update) +
+                       " would couple the ranks' blocks densely: with Partition = buildings "
+                       "the tangent is assembled (refactorize, or auto)");
+        if (linear_solver != "eigen-ldlt" && linear_solver != "umfpack")
+          input.fail("Time integration/Linear solver",
+                     linear_solver + " is not a one-process solver: with Partition = buildings "
+                     "each rank factorises its own block with eigen-ldlt or umfpack");
+      }
   }
 } // namespace poundfe

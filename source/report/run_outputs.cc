@@ -14,7 +14,16 @@
 #include <poundfe/output/response_range.h>
 #include <poundfe/output/vtu_series.h>
 
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
+#include <poundfe/assembly/nonlinear_elements.h>
+#include <poundfe/dynamics/partitioned_history.h>
+#include <poundfe/integration/replayed_stepper.h>
+
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <memory>
 
@@ -64,67 +73,328 @@ namespace poundfe
 
   } // namespace
 
+  namespace
+  {
+    /// The standard observers of a run, in the order they see each step:
+    /// the peaks and the response range first (the recorders read the
+    /// floor response), then with an output directory the input's
+    /// recorders, the floor spectra, the field output and the summary, the
+    /// progress on a terminal, and the caller's own.
+    class StandardObservers
+    {
+    public:
+      StandardObservers(const Analysis &analysis, const RunParameters &parameters,
+                        const Excitation &excitation, const ResponseView &view,
+                        const NonlinearElements &elements, unsigned long n_steps,
+                        const std::string &solver, const std::string &tangent_update,
+                        const RunOptions &options);
+
+      const Observers &all() const { return observers; }
+      /// The run's scalars after it ended with `status`.
+      RunResult result(const RunStatus &status, const ResponseView &state) const;
+
+    private:
+      PeakResponse  peaks;
+      ResponseRange range;
+      std::vector<std::unique_ptr<StepObserver>> outputs;
+      Observers     observers;
+    };
+
+    StandardObservers::StandardObservers(const Analysis &analysis, const RunParameters &parameters,
+                                         const Excitation &excitation, const ResponseView &view,
+                                         const NonlinearElements &elements,
+                                         const unsigned long n_steps, const std::string &solver,
+                                         const std::string &tangent_update,
+                                         const RunOptions &options)
+      : peaks(analysis.model, elements)
+      , range(analysis.model, peaks, parameters.output.drift_warning,
+              parameters.output.rotation_warning)
+      , observers{&peaks, &range}
+    {
+      const OutputParameters &output    = parameters.output;
+      const double            dt        = parameters.time_history.time_integration.newmark.time_step;
+      const std::string      &directory = options.output_directory;
+      if (!directory.empty())
+        {
+          std::vector<std::string> files; // of the recorders and VTU, for summary.json
+          if (options.csv) // first: it checks its input before anything is written
+            {
+              Recorders recorders = make_recorders(
+                output.recorders, parameters.time_history.input.file, view, peaks, dt, directory);
+              outputs = std::move(recorders.observers);
+              files   = std::move(recorders.files);
+            }
+          else // the recorders prepare it after checking their input
+            prepare_output_directory(directory);
+          if (options.csv && output.floor_spectra)
+            {
+              outputs.push_back(std::make_unique<FloorSpectra>(
+                peaks, parameters.spectrum.periods(), parameters.spectrum.damping_ratios, directory));
+              files.push_back(FloorSpectra::file_name);
+            }
+          if (options.vtu && output.vtu_interval > 0)
+            {
+              outputs.push_back(std::make_unique<VtuRecorder>(
+                analysis.model, directory,
+                vtu_steps_per_frame(output, dt, n_steps, options.console), output.field_format));
+              if (output.field_format == FieldFormat::xdmf)
+                files.insert(files.end(), {"solution.xdmf", "solution.h5"}); // the index, the data
+              else
+                files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
+            }
+          outputs.push_back(std::make_unique<RunSummary>(
+            analysis, parameters, excitation, peaks, range, directory,
+            options.plots && output.plots, solver, tangent_update, files));
+        }
+      if (options.progress)
+        outputs.push_back(std::make_unique<ProgressReport>(n_steps));
+      for (const auto &output : outputs)
+        observers.push_back(output.get());
+      observers.insert(observers.end(), options.observers.begin(), options.observers.end());
+    }
+
+    RunResult
+    StandardObservers::result(const RunStatus &status, const ResponseView &state) const
+    {
+      RunResult result;
+      result.status               = status;
+      result.statistics           = state.statistics();
+      result.energy               = state.energy();
+      result.max_energy_error     = state.max_energy_error();
+      result.n_nonlinear_elements = state.elements.size();
+      result.n_impacts            = state.impact_log().impacts().size();
+      result.warnings             = range.warnings();
+      return result;
+    }
+  } // namespace
+
   RunResult
   run_time_history(const Analysis &analysis, const RunParameters &parameters,
                    const Excitation &excitation, const RunOptions &options)
   {
-    const OutputParameters &output = parameters.output;
-    const double            dt     = parameters.time_history.time_integration.newmark.time_step;
-    TimeHistory  history(analysis, parameters.time_history, options.linear_solver);
-    const unsigned long n_steps = history.n_steps(excitation); // refused before any output
-    PeakResponse  peaks(analysis.model, history.nonlinear_elements());
-    ResponseRange range(analysis.model, peaks, output.drift_warning, output.rotation_warning);
-    Observers     observers{&peaks, &range}; // first: the recorders read the floor response
-    std::vector<std::unique_ptr<StepObserver>> outputs;
-    const std::string &directory = options.output_directory;
-    if (!directory.empty())
-      {
-        std::vector<std::string> files; // of the recorders and VTU, for summary.json
-        if (options.csv) // first: it checks its input before anything is written
-          {
-            Recorders recorders = make_recorders(output.recorders, parameters.time_history.input.file,
-                                                 history.state(), peaks, dt, directory);
-            outputs = std::move(recorders.observers);
-            files   = std::move(recorders.files);
-          }
-        else // the recorders prepare it after checking their input
-          prepare_output_directory(directory);
-        if (options.csv && output.floor_spectra)
-          {
-            outputs.push_back(std::make_unique<FloorSpectra>(
-              peaks, parameters.spectrum.periods(), parameters.spectrum.damping_ratios, directory));
-            files.push_back(FloorSpectra::file_name);
-          }
-        if (options.vtu && output.vtu_interval > 0)
-          {
-            outputs.push_back(std::make_unique<VtuRecorder>(
-              analysis.model, directory, vtu_steps_per_frame(output, dt, n_steps, options.console),
-              output.field_format));
-            if (output.field_format == FieldFormat::xdmf)
-              files.insert(files.end(), {"solution.xdmf", "solution.h5"}); // the index, the data
-            else
-              files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
-          }
-        outputs.push_back(std::make_unique<RunSummary>(
-          analysis, parameters, excitation, peaks, range, directory, options.plots && output.plots,
-          history.linear_solver_name(), history.tangent_update(), files));
-      }
-    if (options.progress)
-      outputs.push_back(std::make_unique<ProgressReport>(n_steps));
-    for (const auto &output : outputs)
-      observers.push_back(output.get());
-    observers.insert(observers.end(), options.observers.begin(), options.observers.end());
-
-    RunResult result;
-    result.status               = history.run(excitation, observers, options.interruptible);
-    const ResponseView &state   = history.state();
-    result.statistics           = state.statistics();
-    result.energy               = state.energy();
-    result.max_energy_error     = state.max_energy_error();
-    result.n_nonlinear_elements = state.elements.size();
-    result.n_impacts            = state.impact_log().impacts().size();
-    result.warnings             = range.warnings();
-    return result;
+    TimeHistory history(analysis, parameters.time_history, options.linear_solver);
+    const unsigned long     n_steps = history.n_steps(excitation); // refused before any output
+    const StandardObservers observers(analysis, parameters, excitation, history.state(),
+                                      history.nonlinear_elements(), n_steps,
+                                      history.linear_solver_name(), history.tangent_update(),
+                                      options);
+    const RunStatus status = history.run(excitation, observers.all(), options.interruptible);
+    return observers.result(status, history.state());
   }
 
+  namespace
+  {
+    /// Rank 0's report of a partitioned run needs every building's Rayleigh
+    /// coefficients, modes (their frequencies and participating masses; no
+    /// shapes) and set-up warnings, which each rank has of its own
+    /// buildings alone: gathered there. Collective.
+    void
+    gather_buildings_report(Analysis &analysis, const MPI_Comm communicator)
+    {
+      const unsigned int n_buildings = analysis.model.buildings.size();
+      // a building's coefficients are set on its own rank and zero on the others
+      std::vector<double> rayleigh;
+      for (const std::array<double, 2> &c : analysis.system.rayleigh)
+        rayleigh.insert(rayleigh.end(), c.begin(), c.end());
+      AssertDimension(rayleigh.size(), 2 * n_buildings);
+      MPI_Allreduce(MPI_IN_PLACE, rayleigh.data(), rayleigh.size(), MPI_DOUBLE, MPI_SUM,
+                    communicator);
+      for (unsigned int b = 0; b < n_buildings; ++b)
+        analysis.system.rayleigh[b] = {{rayleigh[2 * b], rayleigh[2 * b + 1]}};
+      // [building, n, n_y, omega, ratio x, ratio y, ratio rz] of each building with modes here
+      std::vector<double> modes;
+      for (unsigned int b = 0; b < n_buildings; ++b)
+        if (const Modes &m = analysis.building_modes[b]; m.n_modes() > 0)
+          {
+            modes.insert(modes.end(), {double(b), double(m.n_modes()),
+                                       double(m.participating_mass_ratio_y.size())});
+            for (const std::vector<double> *x :
+                 {&m.omega, &m.participating_mass_ratio, &m.participating_mass_ratio_y,
+                  &m.participating_mass_ratio_rz})
+              modes.insert(modes.end(), x->begin(), x->end());
+          }
+      using Gathered = std::pair<std::vector<double>, std::vector<std::string>>;
+      const std::vector<Gathered> all = dealii::Utilities::MPI::gather(
+        communicator, Gathered{modes, analysis.warnings}, 0);
+      if (all.empty()) // not rank 0
+        return;
+      analysis.warnings.clear();
+      for (const auto &[rank_modes, warnings] : all)
+        {
+          analysis.warnings.insert(analysis.warnings.end(), warnings.begin(), warnings.end());
+          for (auto x = rank_modes.begin(); x != rank_modes.end();)
+            {
+              const unsigned int b = x[0], n = x[1], n_y = x[2];
+              Modes &m = analysis.building_modes[b];
+              x += 3;
+              for (auto [y, size] : {std::pair{&m.omega, n}, {&m.participating_mass_ratio, n},
+                                     {&m.participating_mass_ratio_y, n_y},
+                                     {&m.participating_mass_ratio_rz, n_y}})
+                {
+                  y->assign(x, x + size);
+                  x += size;
+                }
+            }
+        }
+    }
+
+    /// The view of `stepper`'s state, told whether the ground moves
+    /// vertically before the observers are made (the recorders choose
+    /// their columns by it).
+    ResponseView
+    view_of(const Analysis &analysis, const NonlinearElements &elements,
+            const TimeStepper &stepper, const bool vertical)
+    {
+      ResponseView view(analysis.model, analysis.system, elements, stepper);
+      view.set_vertical_ground_motion(vertical);
+      return view;
+    }
+
+    /// Rank 0's view of a partitioned run: the whole model's nonlinear
+    /// elements, replayed through the ranks' gathered states, and the
+    /// standard observers on them.
+    struct WholeRunView
+    {
+      WholeRunView(const Analysis &analysis, const RunParameters &parameters,
+                   const PartitionedHistory &history, unsigned long n_steps,
+                   const RunOptions &options)
+        : elements(make_nonlinear_elements(analysis.model))
+        , stepper(elements, analysis.model.n_equations())
+        , view(view_of(analysis, elements, stepper,
+                       parameters.time_history.ground_motion.has_vertical()))
+        , observers(analysis, parameters, history.excitation(), view, elements, n_steps,
+                    history.linear_solver_name(), "refactorize", options)
+        , u(analysis.model.n_equations())
+        , v(analysis.model.n_equations())
+        , a(analysis.model.n_equations())
+      {}
+
+      NonlinearElements elements;
+      ReplayedStepper   stepper;
+      ResponseView      view;
+      StandardObservers observers;
+      Vector            u, v, a; // the gathered state
+    };
+  } // namespace
+
+  RunResult
+  run_partitioned_time_history(Analysis &analysis, const RunParameters &parameters,
+                               const RunOptions &options, const MPI_Comm communicator)
+  {
+    int rank = 0;
+    MPI_Comm_rank(communicator, &rank);
+    const TimeHistoryParameters &time_history = parameters.time_history;
+    const InputFile             &input        = time_history.input;
+    if (!analysis.model.friction_surfaces.empty())
+      input.fail("Time integration/Partition",
+                 "buildings does not take friction surfaces (their stick-slip report needs "
+                 "the whole mass matrix on rank 0)");
+    if (!time_history.initial_conditions.at_rest())
+      input.fail("Time integration/Partition",
+                 "buildings starts from rest: leave the Initial conditions section empty");
+    gather_buildings_report(analysis, communicator);
+    PartitionedHistory  history(analysis, time_history, communicator);
+    const unsigned long n_steps = n_steps_of(time_history, history.excitation());
+
+    // rank 0 observes; an error there (a recorder's bad entry) stops every rank
+    std::unique_ptr<WholeRunView> whole;
+    std::exception_ptr            error;
+    if (rank == 0)
+      try
+        {
+          whole = std::make_unique<WholeRunView>(analysis, parameters, history, n_steps, options);
+        }
+      catch (const std::exception &)
+        {
+          error = std::current_exception();
+        }
+    agree_on_error(error, communicator);
+
+    RunStatus     status;
+    unsigned long step = 0;
+    // rank 0: why it cannot go on (an observer could not write, or the
+    // replay failed), told to the others at the start of the next step
+    std::string   stop_reason;
+    bool          output_failed = false;
+    Vector        nothing; // the receive buffer of the other ranks
+    const double  dt = time_history.time_integration.newmark.time_step;
+    // the state gathered on rank 0, its elements replayed to it and the
+    // observers called: `observe` a member function of StepObserver
+    const auto observe = [&](void (StepObserver::*call)(const ResponseView &), const double t,
+                             const bool first) {
+      const NewmarkIntegrator &newmark = history.integrator();
+      history.gather(newmark.displacement(), whole ? whole->u : nothing);
+      history.gather(newmark.velocity(), whole ? whole->v : nothing);
+      history.gather(newmark.acceleration(), whole ? whole->a : nothing);
+      if (!whole || !stop_reason.empty())
+        return;
+      try
+        {
+          ReplayedStepper &stepper = whole->stepper;
+          if (first)
+            stepper.start(whole->u, whole->v, whole->a);
+          else
+            stepper.replay(t, newmark.last_step_length(), history.statistics().steps, whole->u,
+                           whole->v, whole->a);
+          stepper.set_integrator_state(history.energy(), history.max_energy_error(),
+                                       history.statistics(), newmark.steps());
+          whole->view.set_step(step, history.excitation().ground_acceleration_vector(t));
+          for (StepObserver *observer : whole->observers.all())
+            (observer->*call)(whole->view);
+        }
+      catch (const OutputError &e)
+        {
+          stop_reason   = e.what();
+          output_failed = true;
+        }
+      catch (const NumericalError &e)
+        {
+          stop_reason = e.what();
+        }
+    };
+    // 0: go on; 1: interrupted; 2: rank 0 stopped (stop_reason). Collective.
+    const auto agreed_stop = [&]() {
+      int stop = !stop_reason.empty() ? 2 : (options.interruptible && interruption_requested());
+      MPI_Allreduce(MPI_IN_PLACE, &stop, 1, MPI_INT, MPI_MAX, communicator);
+      return stop;
+    };
+
+    const auto start = std::chrono::steady_clock::now();
+    try
+      {
+        history.initialize();
+        observe(&StepObserver::initialize, 0, true);
+        history.set_substep_callback(
+          [&]() { observe(&StepObserver::observe_substep, history.time(), false); });
+        for (step = 1;; ++step)
+          {
+            if (const int stop = agreed_stop(); stop > 0)
+              {
+                status.kind          = stop == 1 ? RunStatus::Kind::interrupted :
+                                                   RunStatus::Kind::failed;
+                status.output_failed = output_failed;
+                status.message       = stop_reason.empty() ? "rank 0 stopped the run" : stop_reason;
+                break;
+              }
+            if (step > n_steps)
+              break;
+            history.advance();
+            observe(&StepObserver::observe_step, step * dt, false);
+          }
+      }
+    catch (const NumericalError &e) // on every rank
+      {
+        status.kind    = RunStatus::Kind::failed;
+        status.message = e.what();
+      }
+    history.set_substep_callback(nullptr); // it refers to this call's locals
+    status.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    status.steps     = history.integrator().steps();
+    status.end_time  = history.time();
+    if (!whole)
+      return {status, history.statistics(), history.energy(), history.max_energy_error(),
+              history.n_local_elements(), 0, {}};
+    finish_observers(whole->observers.all(), whole->view, status);
+    return whole->observers.result(status, whole->view);
+  }
 } // namespace poundfe

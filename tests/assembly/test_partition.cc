@@ -231,7 +231,7 @@ BOOST_AUTO_TEST_CASE(a_rank_part_is_the_block_of_the_whole_model)
           {
             const Analysis part = prepare_analysis_of_buildings(
               input, build_model(input.model, input.contact, input, input.springs, input.friction),
-              input.modal, {{b, b + 1}});
+              input.modal, {{b, b + 1}}, 0);
             const auto range = whole.model.equation_range(b);
             for (const auto &[matrix, of_whole, tolerance] :
                  {std::tuple{&part.system.mass, &whole.system.mass, 0.0},

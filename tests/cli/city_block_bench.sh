@@ -20,4 +20,9 @@ steps=$(grep -E '^(serial|partitioned)' -A2 <<< "$out" | grep -o 'stepping: [0-9
 d=$(sed -n 's/.*final displacements within \([^ ]*\) of the peak.*/\1/p' <<< "$out")
 [ -n "$d" ] || fail "no comparison of the partitioned run"
 /usr/bin/python3 -c "import sys; sys.exit(0 if float('$d') <= 1e-8 else 1)" || fail "partitioned run $d of the peak away"
-echo "ok: the city-block benchmark on 1 and 2 ranks, distributed and partitioned"
+# poundfe run partitioned (every output) against one process
+d=$(sed -n "s/.*poundfe run partitioned on 2 ranks against one process: every CSV within \([^ ]*\) of.*/\1/p" <<< "$out")
+[ -n "$d" ] || fail "no comparison of poundfe run partitioned"
+/usr/bin/python3 -c "import sys; sys.exit(0 if float('$d') <= 1e-8 else 1)" || fail "poundfe run partitioned $d of a peak away"
+[ "$(grep -c 'a rank: peak RSS' <<< "$out")" -eq 2 ] || fail "not two ranks' memory"
+echo "ok: the city-block benchmark on 1 and 2 ranks, distributed and partitioned, and poundfe run partitioned"

@@ -44,11 +44,13 @@ namespace poundfe
   /// §3.5d): `model` (built whole: every rank has the topology) with M, K
   /// and C of the buildings [first, last) only, their rows and columns
   /// alone filled (assemble_mass_and_stiffness with those equations), the
-  /// modes of those buildings their damping needs, none of the others and
-  /// none of the whole model. The checks and errors are those buildings'.
+  /// modes of those buildings (as many as their damping needs, at least
+  /// `n_building_modes`), none of the others and none of the whole model.
+  /// The checks and errors are those buildings'.
   Analysis prepare_analysis_of_buildings(const InputFile &input, Model model,
                                          const ModalParameters &modal,
-                                         std::array<unsigned int, 2> buildings);
+                                         std::array<unsigned int, 2> buildings,
+                                         unsigned int n_building_modes);
 
   /// The stick spring and dashpot of each friction element from M and K:
   /// k_s = 1e4 K_ii when automatic (0 in the input), c_s = 2 sqrt(k_s M_ii)

@@ -19,6 +19,7 @@
 
 #include <mpi.h>
 
+#include <exception>
 #include <memory>
 #include <string>
 
@@ -31,9 +32,16 @@ namespace poundfe
   /// no rank assembles the whole model. Collective: an error on any rank
   /// (bad input, a mechanism in one of its buildings, more ranks than
   /// separable buildings) is thrown on every rank, the first failing
-  /// rank's.
+  /// rank's. Each building's modes: at least `n_building_modes`.
   Analysis prepare_rank_analysis(const InputFile &input, Model model,
-                                 const ModalParameters &modal, MPI_Comm communicator);
+                                 const ModalParameters &modal, MPI_Comm communicator,
+                                 unsigned int n_building_modes = 0);
+
+  /// Collective: when `error` is set on some rank, every rank throws the
+  /// error of the first such rank (an InputError stays one, naming its
+  /// entry; anything else is a NumericalError with its message), so that
+  /// no rank goes on alone into a collective call.
+  void agree_on_error(const std::exception_ptr &error, MPI_Comm communicator);
 
   /// The integrator's parameters of a partitioned run: the tangent
   /// assembled (Tangent update = refactorize: the Woodbury update would
@@ -85,6 +93,14 @@ namespace poundfe
     /// decides, alike on every rank). NumericalError on every rank if the
     /// step fails.
     void advance();
+    /// Called on every rank after each accepted sub-step of a cut step
+    /// (alike on every rank: it may be collective).
+    void set_substep_callback(std::function<void()> callback)
+    {
+      newmark->set_substep_callback(std::move(callback));
+    }
+    /// The ground motion and nodal forces (alike on every rank).
+    const Excitation &excitation() const { return ground_and_forces; }
 
     /// This rank's integrator: its state in the local numbering
     /// (partition.h), its statistics (alike on every rank), its energy
@@ -100,6 +116,8 @@ namespace poundfe
     /// its local numbering) in one vector of the whole model on rank 0;
     /// empty on the others. Collective.
     Vector gather(const Vector &x) const;
+    /// The same into `whole` (sized by the caller on rank 0: no allocation).
+    void gather(const Vector &x, Vector &whole) const;
 
     const BuildingPartition &partition() const { return parts; }
     /// This rank's equations in the model's numbering.
@@ -111,12 +129,13 @@ namespace poundfe
   private:
     MPI_Comm                           communicator;
     BuildingPartition                  parts;
-    Excitation                         excitation;
+    Excitation                         ground_and_forces;
     NonlinearElements                  elements;
     std::unique_ptr<RankPartition>     ownership;
     std::unique_ptr<NewmarkIntegrator> newmark;
     LoadFunction                       load;
     Vector                             whole_load; // p of the whole model
+    std::vector<int>                   gather_counts, gather_offsets; // MPI_Gatherv's, by rank
   };
 } // namespace poundfe
 

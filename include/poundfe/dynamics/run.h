@@ -12,6 +12,8 @@
 #include <poundfe/integration/time_integration_parameters.h>
 #include <poundfe/output/observer.h>
 
+#include <mpi.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -80,7 +82,7 @@ namespace poundfe
     const Analysis   &analysis;
     const InputFile   input;            // for messages about the end time
     const TimeIntegrationParameters time_integration;
-    const std::string duration_path;    // the entry that sets the ground motion's duration
+    const GroundMotionParameters ground_motion; // what sets the end without an End time
     NonlinearElements elements; // before the integrator, which points to them
     NewmarkIntegrator integrator;
     /// Time integration/Method = dopri: the integrator that runs (null: Newmark).
@@ -95,6 +97,21 @@ namespace poundfe
   std::vector<std::string> equation_names(const Model &model);
   /// The same for one equation (a search: for a message).
   std::string equation_name(const Model &model, unsigned int equation);
+
+  /// Steps of the analysis time step from 0 to the end time (Time
+  /// integration/End time, else the ground motion's duration); InputError
+  /// naming what set the end when it is not positive or too many steps.
+  unsigned long n_steps_of(const TimeHistoryParameters &parameters, const Excitation &excitation);
+
+  /// Every observer's finish(), even when one cannot write its files: an
+  /// OutputError makes `status` failed (output_failed) and is added to its
+  /// message; the summary, last, then reports the file that failed.
+  void finish_observers(const Observers &observers, const ResponseView &state, RunStatus &status);
+
+  /// SIGINT/SIGTERM (base/interruption.h), agreed by every rank of
+  /// `communicator` (mpirun may deliver it to the ranks at different steps;
+  /// a rank that stopped alone would leave the others waiting). Collective.
+  bool stop_requested(MPI_Comm communicator);
 
   /// The excitation the input describes: the ground motion and the nodal
   /// forces (with white-noise forces, the sample of Ground motion/Realization).

@@ -20,7 +20,8 @@ namespace poundfe
 
   /// This rank's part of the input's model partitioned by building over
   /// `communicator` (dynamics/partitioned_history.h: prepare_rank_analysis),
-  /// its buildings' warnings said as above. Collective.
+  /// with Output/Number of modes modes of each of its buildings (none of
+  /// the whole model), its buildings' warnings said as above. Collective.
   Analysis prepare_rank_analysis(const InputParameters &input, MPI_Comm communicator);
 
   /// What a time history of the input reads: the file, Time integration,

@@ -31,6 +31,7 @@
 #include <poundfe/assembly/rank_ownership.h>
 #include <poundfe/integration/impact_log.h>
 #include <poundfe/integration/newton_acceleration.h>
+#include <poundfe/integration/element_records.h>
 #include <poundfe/integration/stick_slip_log.h>
 #include <poundfe/integration/time_stepper.h>
 
@@ -193,6 +194,9 @@ namespace poundfe
 
     double        time() const override { return current_time; }
     unsigned long steps() const override { return step_count; }
+    /// The length of the last accepted (sub)step: the impact log's, and a
+    /// replay's (replayed_stepper.h), time increment.
+    double last_step_length() const { return last_step; }
     const Vector &displacement() const override { return u; }
     const Vector &velocity() const override { return v; }
     const Vector &acceleration() const override { return a; }
@@ -209,9 +213,12 @@ namespace poundfe
 
     const IterationStatistics &statistics() const override { return stats; }
     /// Work done on element h so far (trapezoidal), J.
-    double element_work(unsigned int h) const override { return work[h]; }
+    double element_work(unsigned int h) const override { return records.work()[h]; }
     /// Work done on the structure by what drives element h (a belt) so far, J.
-    double element_supplied_work(unsigned int h) const override { return supplied_work[h]; }
+    double element_supplied_work(unsigned int h) const override
+    {
+      return records.supplied_work()[h];
+    }
     /// The residual R(u_trial) of the next step under p(t_{n+1}) = load, and
     /// the dense tangent -dR/du that Newton uses (for checks and
     /// diagnostics; the laws are reverted afterwards).
@@ -227,9 +234,9 @@ namespace poundfe
       equation_namer = std::move(namer);
     }
     /// Every contact episode of the gap elements so far.
-    const ImpactLog &impact_log() const override { return impacts; }
+    const ImpactLog &impact_log() const override { return records.impact_log(); }
     /// Every stick and slip episode of the friction elements so far.
-    const StickSlipLog &stick_slip_log() const override { return stick_slip; }
+    const StickSlipLog &stick_slip_log() const override { return records.stick_slip_log(); }
     /// The update in use (never automatic).
     TangentUpdate tangent_update() const
     {
@@ -366,14 +373,12 @@ namespace poundfe
     /// auto: wall time of the last iteration without a factorisation (s).
     double iteration_seconds = 0;
     std::chrono::steady_clock::time_point last_increment_end;
-    // Per element: accumulated work; for the impact log, the committed
-    // force, history variable and rate.
-    std::vector<double> work, supplied_work, committed_force, committed_history, committed_rate;
-    // Gaps (impacts), friction (stick-slip) and discontinuous springs: a
-    // change of is_active() within a step is an event.
-    std::vector<unsigned int> gap_elements, friction_elements, event_elements;
-    ImpactLog                 impacts;
-    StickSlipLog              stick_slip;
+    // Gaps, friction and discontinuous springs: a change of is_active()
+    // within a step is an event.
+    std::vector<unsigned int> event_elements;
+    /// Per element: work, the impact and stick-slip logs.
+    ElementRecords records;
+    double         last_step = 0; // of the last accepted (sub)step
     std::string failure;
     std::function<void()> substep_callback;
     std::vector<std::string> equation_names;

@@ -38,6 +38,15 @@ namespace poundfe
 
   const NameTable<TimeIntegrationMethod> &time_integration_method_names();
 
+  /// How `mpirun -np P poundfe run` spreads one run over its ranks.
+  enum class RunPartition
+  {
+    none,     // every rank runs the whole analysis (a distributed Linear solver splits the matrix)
+    buildings // each rank steps its own buildings (dynamics/partitioned_history.h, theory §3.5d)
+  };
+
+  const NameTable<RunPartition> &run_partition_names();
+
   struct TimeIntegrationParameters
   {
     NewmarkParameters     newmark{0.001, 0.5, 0.25, NewtonParameters(), IterativeSolverParameters()};
@@ -46,6 +55,7 @@ namespace poundfe
     DormandPrinceParameters dopri;
     double                end_time      = 0.0; // 0 = length of the ground motion
     std::string           linear_solver = "eigen-ldlt"; // one of linear_solver_names()
+    RunPartition          partition     = RunPartition::none;
     HysteresisIntegration hysteresis_integration = HysteresisIntegration::trapezoidal;
     double                law_tolerance          = 1e-12;
     unsigned int          law_max_iterations     = 30;

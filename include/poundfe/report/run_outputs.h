@@ -6,6 +6,8 @@
 
 #include <poundfe/report/run_parameters.h>
 
+#include <mpi.h>
+
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -47,6 +49,20 @@ namespace poundfe
   /// (summary.json, impacts.csv, profiles, plots).
   RunResult run_time_history(const Analysis &analysis, const RunParameters &parameters,
                              const Excitation &excitation, const RunOptions &options);
+  /// The same over the ranks of `communicator`, the model partitioned by
+  /// building (Time integration/Partition = buildings; theory §3.5d):
+  /// `analysis` is this rank's part (prepare_rank_analysis), which the run
+  /// takes over. Each rank steps its own buildings; after every accepted
+  /// (sub)step rank 0 gathers u, v and a, replays the whole model's
+  /// nonlinear elements through that state (integration/replayed_stepper.h)
+  /// and runs the standard observers on it, so it writes the files of a
+  /// one-process run; the other ranks write nothing. The summary's whole-
+  /// model modes are not computed (each building's are). Collective;
+  /// InputError on every rank for what a partitioned run refuses (friction
+  /// surfaces, initial conditions, a recorder's bad entry, ...). The full
+  /// result on rank 0; on the others the status and the integrator's figures.
+  RunResult run_partitioned_time_history(Analysis &analysis, const RunParameters &parameters,
+                                         const RunOptions &options, MPI_Comm communicator);
 } // namespace poundfe
 
 #endif

@@ -1,0 +1,61 @@
+// What a time integrator keeps of its nonlinear elements from one accepted
+// (sub)step to the next: each element's work W_h = sum over the steps of
+// the trapezoidal increment (1/2)(f_n + f_n+1) . (d_n+1 - d_n) that the
+// element itself reports (work_increment, doc/theory.md §3.6), what a drive
+// supplied (a belt), the impact log of the gaps and the stick-slip log of
+// the friction elements (integration/impact_log.h, stick_slip_log.h), and
+// the committed force, history variable and rate that open the next step's
+// entries in those logs. NewmarkIntegrator records its steps with it, and
+// rank 0 of a run partitioned by building replays its ranks' steps with it
+// (integration/replayed_stepper.h): both logs are made by the same code.
+#ifndef poundfe_integration_element_records_h
+#define poundfe_integration_element_records_h
+
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/elements/nonlinear_element.h>
+#include <poundfe/integration/impact_log.h>
+#include <poundfe/integration/stick_slip_log.h>
+
+#include <vector>
+
+namespace poundfe
+{
+  class ElementRecords
+  {
+  public:
+    /// Sorted from `elements` (nullptr: none): the gaps and the friction elements.
+    explicit ElementRecords(const NonlinearElements *elements);
+
+    /// The elements have just been committed at velocity `v` (the initial
+    /// state, or a restart): their force, history variable and rate.
+    void note_committed(const NonlinearElements &elements, const Vector &v);
+    /// From the initial state: empty logs, nothing supplied, each
+    /// element's work its stored energy there.
+    void start(const NonlinearElements &elements);
+    /// The step [t0, t1], whose trial state (velocity `v_next`) the
+    /// elements hold: log its impacts and stick-slip episodes, add each
+    /// element's work, commit every element and note its committed values.
+    /// Adds to `belt` what the drives supplied over the step, of the
+    /// elements that `counted` marks (every element when nullptr).
+    void accept(NonlinearElements &elements, double t0, double t1, const Vector &v_next,
+                const std::vector<char> *counted, double &belt);
+
+    const std::vector<double> &work() const { return work_done; }
+    const std::vector<double> &supplied_work() const { return work_supplied; }
+    const ImpactLog           &impact_log() const { return impacts; }
+    const StickSlipLog        &stick_slip_log() const { return stick_slip; }
+    const std::vector<unsigned int> &gap_elements() const { return gaps; }
+    const std::vector<unsigned int> &friction_elements() const { return frictions; }
+    /// Element h's history variable and rate at the last accepted state.
+    double committed_history(const unsigned int h) const { return history[h]; }
+    double committed_rate(const unsigned int h) const { return rate[h]; }
+
+  private:
+    std::vector<unsigned int> gaps, frictions;
+    std::vector<double>       work_done, work_supplied, force, history, rate;
+    ImpactLog                 impacts;
+    StickSlipLog              stick_slip;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,84 @@
+// The whole model's state on rank 0 of a run partitioned by building
+// (dynamics/partitioned_history.h), for the observers that write the run's
+// outputs (report/run_outputs.h): the ranks' u, v and a gathered after each
+// accepted (sub)step, and the model's nonlinear elements replayed through
+// the same accepted states. A law's trial state is a function of its
+// committed state and of the trial displacements and velocities alone (the
+// uniaxial-material interface of OpenSees: McKenna, Scott & Fenves 2010;
+// doc/theory.md §2.1), so setting each element's trial state at the
+// gathered state and committing it gives its owner's history; the impact
+// and stick-slip logs and each element's work are recorded from it by the
+// code NewmarkIntegrator records them with (ElementRecords). The energy
+// balance and the Newton statistics are the partitioned integrator's
+// (summed over the ranks, and alike on every rank). It does not integrate:
+// initialize() and advance() are not for it.
+#ifndef poundfe_integration_replayed_stepper_h
+#define poundfe_integration_replayed_stepper_h
+
+#include <poundfe/integration/element_records.h>
+#include <poundfe/integration/newmark.h>
+#include <poundfe/integration/time_stepper.h>
+
+namespace poundfe
+{
+  class ReplayedStepper final : public TimeStepper
+  {
+  public:
+    /// `elements`: the whole model's, numbered as the model; it must
+    /// outlive this object.
+    ReplayedStepper(NonlinearElements &elements, unsigned int n_equations);
+
+    /// The initial state (u, v, a at t = 0), gathered.
+    void start(const Vector &u, const Vector &v, const Vector &a);
+    /// A state the ranks accepted at time `t` after a (sub)step of length
+    /// `h` (NewmarkIntegrator::last_step_length), the integrator's
+    /// `n_accepted`-th accepted (sub)step: the elements are replayed to it
+    /// once (a step's last sub-step is seen twice: as a sub-step and as the
+    /// step, whose time is then taken). The logs span [t_previous,
+    /// t_previous + h], as the integrator's do.
+    void replay(double t, double h, unsigned long n_accepted, const Vector &u, const Vector &v,
+                const Vector &a);
+    /// The partitioned integrator's balance, statistics and steps taken.
+    void set_integrator_state(const EnergyBalance &energy, double max_energy_error,
+                              const IterationStatistics &statistics, unsigned long steps);
+
+    void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
+    void advance(const LoadFunction &load) override;
+    void set_substep_callback(std::function<void()>) override {}
+
+    double        time() const override { return current_time; }
+    unsigned long steps() const override { return step_count; }
+    const Vector &displacement() const override { return u; }
+    const Vector &velocity() const override { return v; }
+    const Vector &acceleration() const override { return a; }
+
+    EnergyBalance energy() const override { return balance; }
+    double        max_energy_error() const override { return max_error; }
+    double element_work(unsigned int h) const override { return records.work()[h]; }
+    double element_supplied_work(unsigned int h) const override
+    {
+      return records.supplied_work()[h];
+    }
+    const ImpactLog           &impact_log() const override { return records.impact_log(); }
+    const StickSlipLog        &stick_slip_log() const override { return records.stick_slip_log(); }
+    const IterationStatistics &statistics() const override { return stats; }
+
+  private:
+    /// Every element's trial state at (u, v); NumericalError if one refuses
+    /// it (it was accepted by its owner: a bug, not an input).
+    void set_trial_states();
+
+    NonlinearElements  &elements;
+    ElementRecords      records;
+    // element h's DOFs are [dof_start[h], dof_start[h + 1]) of local_u, local_v
+    std::vector<unsigned int> dof_start;
+    Vector              u, v, a, local_u, local_v;
+    double              current_time = 0;
+    unsigned long       accepted     = 0, step_count = 0;
+    EnergyBalance       balance;
+    double              max_error = 0;
+    IterationStatistics stats;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,71 @@
+// The elements' records across accepted steps (integration/element_records.h).
+#include <poundfe/integration/element_records.h>
+
+namespace poundfe
+{
+  ElementRecords::ElementRecords(const NonlinearElements *elements)
+  {
+    const unsigned int n = elements ? elements->size() : 0;
+    for (unsigned int h = 0; h < n; ++h)
+      {
+        if ((*elements)[h].kind == ElementKind::gap)
+          gaps.push_back(h);
+        if ((*elements)[h].kind == ElementKind::friction)
+          frictions.push_back(h);
+      }
+    for (auto *x : {&work_done, &work_supplied, &force, &history, &rate})
+      x->assign(n, 0.0);
+  }
+
+  void
+  ElementRecords::note_committed(const NonlinearElements &elements, const Vector &v)
+  {
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      {
+        const NonlinearElement &e = elements[h];
+        force[h]                  = e.force();
+        history[h]                = e.history_variable();
+        rate[h]                   = e.deformation(v);
+      }
+  }
+
+  void
+  ElementRecords::start(const NonlinearElements &elements)
+  {
+    impacts.reset(elements.size());
+    stick_slip.reset(elements.size());
+    std::fill(work_supplied.begin(), work_supplied.end(), 0.0);
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      work_done[h] = elements[h].stored_energy();
+  }
+
+  void
+  ElementRecords::accept(NonlinearElements &elements, const double t0, const double t1,
+                         const Vector &v_next, const std::vector<char> *counted, double &belt)
+  {
+    for (const unsigned int h : gaps)
+      {
+        const NonlinearElement &e = elements[h];
+        impacts.record(h, t0, t1, {history[h], rate[h], force[h]},
+                       {e.history_variable(), e.deformation(v_next), e.force(), e.contact_point(),
+                        e.phase()});
+      }
+    for (const unsigned int h : frictions)
+      {
+        const NonlinearElement &e = elements[h];
+        stick_slip.record(h, t0, t1, {e.was_active(), rate[h]}, {e.is_active(), e.deformation(v_next)});
+      }
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      {
+        NonlinearElement &e = elements[h];
+        work_done[h] += e.work_increment();
+        work_supplied[h] += e.supplied_work_increment();
+        if (!counted || (*counted)[h])
+          belt += e.supplied_work_increment();
+        e.commit();
+        force[h]   = e.force();
+        history[h] = e.history_variable();
+        rate[h]    = e.deformation(v_next);
+      }
+  }
+} // namespace poundfe

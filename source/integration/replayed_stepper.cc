@@ -1,0 +1,106 @@
+// Rank 0's replay of a partitioned run (integration/replayed_stepper.h).
+#include <poundfe/integration/replayed_stepper.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
+
+#include <deal.II/base/exceptions.h>
+
+namespace poundfe
+{
+  ReplayedStepper::ReplayedStepper(NonlinearElements &elements, const unsigned int n_equations)
+    : elements(elements)
+    , records(&elements)
+  {
+    dof_start.assign(1, 0);
+    for (const NonlinearElement &e : elements)
+      dof_start.push_back(dof_start.back() + e.n_dofs());
+    local_u.setZero(dof_start.back());
+    local_v.setZero(dof_start.back());
+    for (Vector *x : {&u, &v, &a})
+      x->setZero(n_equations);
+  }
+
+  void
+  ReplayedStepper::set_trial_states()
+  {
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      {
+        NonlinearElement       &e         = elements[h];
+        const std::vector<int> &equations = e.equations();
+        const unsigned int      s = dof_start[h], k = equations.size();
+        for (unsigned int q = 0; q < k; ++q)
+          {
+            local_u[s + q] = equations[q] >= 0 ? u[equations[q]] : 0.0;
+            local_v[s + q] = equations[q] >= 0 ? v[equations[q]] : 0.0;
+          }
+        if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
+          throw NumericalError("rank 0's replay of the state at t = " + number_text(current_time) +
+                               " s: " + e.label + ": " + e.failure());
+      }
+  }
+
+  void
+  ReplayedStepper::start(const Vector &u0, const Vector &v0, const Vector &a0)
+  {
+    u            = u0;
+    v            = v0;
+    a            = a0;
+    current_time = 0;
+    accepted = step_count = 0;
+    for (NonlinearElement &e : elements)
+      e.reset();
+    set_trial_states();
+    for (NonlinearElement &e : elements)
+      e.commit();
+    records.note_committed(elements, v);
+    records.start(elements);
+  }
+
+  void
+  ReplayedStepper::replay(const double t, const double h, const unsigned long n_accepted,
+                          const Vector &u_next, const Vector &v_next, const Vector &a_next)
+  {
+    if (n_accepted == accepted)
+      {
+        // the step's last sub-step, seen again as the step: the integrator
+        // then restarts its clock at n Δt, which t0 + h of the sub-step may
+        // miss by an ulp, and so does the replay
+        current_time = t;
+        return;
+      }
+    const double t0 = current_time;
+    u               = u_next;
+    v               = v_next;
+    a               = a_next;
+    current_time    = t;
+    accepted        = n_accepted;
+    for (NonlinearElement &e : elements)
+      e.set_trial_time(t);
+    set_trial_states();
+    double belt = 0; // the integrator's balance has it
+    records.accept(elements, t0, t0 + h, v, nullptr, belt);
+  }
+
+  void
+  ReplayedStepper::set_integrator_state(const EnergyBalance &energy, const double max_energy_error,
+                                        const IterationStatistics &statistics,
+                                        const unsigned long steps)
+  {
+    balance    = energy;
+    max_error  = max_energy_error;
+    stats      = statistics;
+    step_count = steps;
+  }
+
+  void
+  ReplayedStepper::initialize(const Vector &, const Vector &, const Vector &)
+  {
+    AssertThrow(false, dealii::ExcMessage("a replayed run is started by start()"));
+  }
+
+  void
+  ReplayedStepper::advance(const LoadFunction &)
+  {
+    AssertThrow(false, dealii::ExcMessage("a replayed run does not integrate: replay()"));
+  }
+} // namespace poundfe
