@@ -210,7 +210,10 @@ main(int argc, char **argv)
       const InputParameters input = read_parameters(arguments[0]);
       if (!mpi && (linear_solver_needs_mpi(input.time_integration.linear_solver) ||
                    input.time_integration.partition == RunPartition::buildings))
-        mpi.emplace(argc, argv, 1);
+        {
+          mpi.emplace(argc, argv, 1);
+          install_interruption_handlers(); // PETSc's initialisation replaced them
+        }
       check_command_takes_input(*command, input,
                                 mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1);
       const std::string directory = line.output.empty() ? input.output.directory : line.output;

@@ -33,10 +33,16 @@ namespace poundfe
   void
   install_interruption_handlers()
   {
+    // Again after MPI_Init (PETSc's initialisation installs its own
+    // handlers): the signals decided the first time, unless one has come.
+    static bool decided = false;
+    if (decided && received != 0)
+      return;
     for (int i = 0; i < 2; ++i)
       {
         struct sigaction old = {}, action = {};
-        if (sigaction(signals[i], nullptr, &old) != 0 || old.sa_handler == SIG_IGN)
+        if (decided ? !installed[i] :
+                      (sigaction(signals[i], nullptr, &old) != 0 || old.sa_handler == SIG_IGN))
           continue;
         action.sa_handler = on_signal;
         // the other signal waits while the handler runs
@@ -48,6 +54,7 @@ namespace poundfe
         installed[i]    = true;
         sigaction(signals[i], &action, nullptr);
       }
+    decided = true;
   }
 
   bool

@@ -110,6 +110,11 @@ namespace poundfe::commands
         run_time_history(analysis, parameters, make_excitation(analysis, parameters.time_history),
                          options);
     timer.leave_subsection();
+    // mpirun ends the job as soon as one rank exits with a non-zero status
+    // (interrupted, a numerical failure): not before rank 0 has finished
+    // its files
+    if (int initialized = 0; MPI_Initialized(&initialized), initialized)
+      MPI_Barrier(run.communicator);
     if (!root)
       return exit_status(result.status, nullptr);
 

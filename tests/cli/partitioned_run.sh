@@ -126,3 +126,31 @@ status=0
 grep -q '"status": "failed"' "$work/failure/summary.json" || fail "numerical failure: the summary does not say failed"
 [ "$(wc -l < "$work/failure/drift.csv")" -gt 2 ] || fail "numerical failure: the results so far are not kept"
 echo "ok   numerical failure over 2 ranks: exit 2, the results so far kept"
+
+# SIGTERM to both ranks (as a batch system sends it) while they step 10 s of
+# small steps: the ranks agree to stop at the same step, rank 0 finishes its
+# files before any rank exits (mpirun ends the job at the first non-zero
+# exit), exit 143, "interrupted", the rows so far and no temporary file.
+sed -e "s/set Time step     = 0.005/set Time step = 0.0005/" -e "s/set End time      = 1.5/set End time = 10/" \
+    -e "/^subsection Output/a\\  set Plots = false" "$work/part.prm" > "$work/long.prm"
+status=0
+"$mpirun" -np 2 "$poundfe" run "$work/long.prm" --output "$work/interrupted" > /dev/null 2> "$work/err" &
+job=$!
+ranks() { # the two ranks' pids (not mpirun's, whose command line names them too)
+  for pid in $(pgrep -f "run $work/long.prm"); do
+    [ "$(cat "/proc/$pid/comm" 2> /dev/null)" = poundfe ] && echo "$pid"
+  done
+}
+for _ in $(seq 1 300); do
+  [ "$(ranks | wc -l)" -eq 2 ] && [ -s "$work/interrupted/.poundfe-files" ] && break
+  sleep 0.1
+done
+sleep 1
+kill -TERM $(ranks)
+wait "$job" || status=$?
+[ "$status" -eq 143 ] || { cat "$work/err"; fail "SIGTERM to the ranks: exit status $status instead of 143"; }
+grep -q '"status": "interrupted"' "$work/interrupted/summary.json" || fail "SIGTERM: the summary does not say interrupted"
+if find "$work/interrupted" -name '*.tmp' | grep -q .; then fail "SIGTERM: temporary files left"; fi
+rows=$(($(wc -l < "$work/interrupted/drift.csv") - 1))
+[ "$rows" -gt 0 ] && [ "$rows" -lt 1000 ] || fail "SIGTERM: $rows rows of drift.csv (0 < rows < 1000 expected)"
+echo "ok   SIGTERM to both ranks: exit 143, interrupted after $rows rows, rank 0's files complete"

@@ -23,7 +23,9 @@ namespace poundfe
 
   /// Catches the first SIGINT or SIGTERM (the handler then restores the
   /// default action of both). A signal ignored at start-up (e.g. SIGINT in a
-  /// background job of a script) stays ignored.
+  /// background job of a script) stays ignored. Called again (after
+  /// MPI_Init, whose PETSc installs handlers of its own), it installs the
+  /// handler again for the signals of the first call, unless one came.
   void install_interruption_handlers();
 
   /// Whether SIGINT or SIGTERM has arrived. Async-signal-safe to call.
