@@ -992,7 +992,7 @@ namespace poundfe
     product.noalias() = system.damping * velocity_sum;
     add_low_rank_damping_product(system.modal_damping, velocity_sum, product);
     balance.damping += 0.5 * work_vector.dot(product);
-    if (elements)
+    if (n_elements > 0) // no call per step without elements
       records.accept(*elements, current_time, current_time + L.dt, v_next,
                      distribution ? &counted_here : nullptr, balance.belt);
     u.swap(u_next);

@@ -40,11 +40,8 @@ namespace poundfe
   }
 
   void
-  ReplayedStepper::start(const Vector &u0, const Vector &v0, const Vector &a0)
+  ReplayedStepper::start()
   {
-    u            = u0;
-    v            = v0;
-    a            = a0;
     current_time = 0;
     accepted = step_count = 0;
     for (NonlinearElement &e : elements)
@@ -57,8 +54,7 @@ namespace poundfe
   }
 
   void
-  ReplayedStepper::replay(const double t, const double h, const unsigned long n_accepted,
-                          const Vector &u_next, const Vector &v_next, const Vector &a_next)
+  ReplayedStepper::replay(const double t, const double h, const unsigned long n_accepted)
   {
     if (n_accepted == accepted)
       {
@@ -69,9 +65,6 @@ namespace poundfe
         return;
       }
     const double t0 = current_time;
-    u               = u_next;
-    v               = v_next;
-    a               = a_next;
     current_time    = t;
     accepted        = n_accepted;
     for (NonlinearElement &e : elements)

@@ -264,16 +264,12 @@ namespace poundfe
                        parameters.time_history.ground_motion.has_vertical()))
         , observers(analysis, parameters, history.excitation(), view, elements, n_steps,
                     history.linear_solver_name(), "refactorize", options)
-        , u(analysis.model.n_equations())
-        , v(analysis.model.n_equations())
-        , a(analysis.model.n_equations())
       {}
 
       NonlinearElements elements;
-      ReplayedStepper   stepper;
+      ReplayedStepper   stepper; // holds the gathered state
       ResponseView      view;
       StandardObservers observers;
-      Vector            u, v, a; // the gathered state
     };
   } // namespace
 
@@ -323,19 +319,20 @@ namespace poundfe
     const auto observe = [&](void (StepObserver::*call)(const ResponseView &), const double t,
                              const bool first) {
       const NewmarkIntegrator &newmark = history.integrator();
-      history.gather(newmark.displacement(), whole ? whole->u : nothing);
-      history.gather(newmark.velocity(), whole ? whole->v : nothing);
-      history.gather(newmark.acceleration(), whole ? whole->a : nothing);
+      const std::array<Vector *, 3> to = whole ? whole->stepper.state_to_fill() :
+                                                 std::array<Vector *, 3>{{&nothing, &nothing, &nothing}};
+      history.gather(newmark.displacement(), *to[0]);
+      history.gather(newmark.velocity(), *to[1]);
+      history.gather(newmark.acceleration(), *to[2]);
       if (!whole || !stop_reason.empty())
         return;
       try
         {
           ReplayedStepper &stepper = whole->stepper;
           if (first)
-            stepper.start(whole->u, whole->v, whole->a);
+            stepper.start();
           else
-            stepper.replay(t, newmark.last_step_length(), history.statistics().steps, whole->u,
-                           whole->v, whole->a);
+            stepper.replay(t, newmark.last_step_length(), history.statistics().steps);
           stepper.set_integrator_state(history.energy(), history.max_energy_error(),
                                        history.statistics(), newmark.steps());
           whole->view.set_step(step, history.excitation().ground_acceleration_vector(t));

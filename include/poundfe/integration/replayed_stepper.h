@@ -19,6 +19,8 @@
 #include <poundfe/integration/newmark.h>
 #include <poundfe/integration/time_stepper.h>
 
+#include <array>
+
 namespace poundfe
 {
   class ReplayedStepper final : public TimeStepper
@@ -28,16 +30,18 @@ namespace poundfe
     /// outlive this object.
     ReplayedStepper(NonlinearElements &elements, unsigned int n_equations);
 
-    /// The initial state (u, v, a at t = 0), gathered.
-    void start(const Vector &u, const Vector &v, const Vector &a);
-    /// A state the ranks accepted at time `t` after a (sub)step of length
-    /// `h` (NewmarkIntegrator::last_step_length), the integrator's
-    /// `n_accepted`-th accepted (sub)step: the elements are replayed to it
-    /// once (a step's last sub-step is seen twice: as a sub-step and as the
-    /// step, whose time is then taken). The logs span [t_previous,
-    /// t_previous + h], as the integrator's do.
-    void replay(double t, double h, unsigned long n_accepted, const Vector &u, const Vector &v,
-                const Vector &a);
+    /// u, v and a of the whole model, to be filled in place (by the ranks'
+    /// gather) before start() and each replay(): no copy of size N per state.
+    std::array<Vector *, 3> state_to_fill() { return {{&u, &v, &a}}; }
+    /// The initial state (t = 0) is in state_to_fill().
+    void start();
+    /// The state in state_to_fill() was accepted at time `t` after a
+    /// (sub)step of length `h` (NewmarkIntegrator::last_step_length), the
+    /// integrator's `n_accepted`-th accepted (sub)step: the elements are
+    /// replayed to it once (a step's last sub-step is seen twice: as a
+    /// sub-step and as the step, whose time is then taken). The logs span
+    /// [t_previous, t_previous + h], as the integrator's do.
+    void replay(double t, double h, unsigned long n_accepted);
     /// The partitioned integrator's balance, statistics and steps taken.
     void set_integrator_state(const EnergyBalance &energy, double max_energy_error,
                               const IterationStatistics &statistics, unsigned long steps);
