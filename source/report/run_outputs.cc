@@ -273,54 +273,98 @@ namespace poundfe
     };
   } // namespace
 
-  RunResult
-  run_partitioned_time_history(Analysis &analysis, const RunParameters &parameters,
-                               const RunOptions &options, const MPI_Comm communicator)
+  namespace
   {
-    int rank = 0;
-    MPI_Comm_rank(communicator, &rank);
-    const TimeHistoryParameters &time_history = parameters.time_history;
-    const InputFile             &input        = time_history.input;
-    if (!analysis.model.friction_surfaces.empty())
-      input.fail("Time integration/Partition",
-                 "buildings does not take friction surfaces (their stick-slip report needs "
-                 "the whole mass matrix on rank 0)");
-    if (!time_history.initial_conditions.at_rest())
-      input.fail("Time integration/Partition",
-                 "buildings starts from rest: leave the Initial conditions section empty");
-    gather_buildings_report(analysis, communicator);
-    PartitionedHistory  history(analysis, time_history, communicator);
-    const unsigned long n_steps = n_steps_of(time_history, history.excitation());
+    /// What a partitioned run refuses (InputError, alike on every rank), then
+    /// the buildings' report gathered to rank 0: `analysis`, ready for the run.
+    Analysis &
+    checked_for_partitioned_run(Analysis &analysis, const TimeHistoryParameters &time_history,
+                                const MPI_Comm communicator)
+    {
+      const InputFile &input = time_history.input;
+      if (!analysis.model.friction_surfaces.empty())
+        input.fail("Time integration/Partition",
+                   "buildings does not take friction surfaces (their stick-slip report needs "
+                   "the whole mass matrix on rank 0)");
+      if (!time_history.initial_conditions.at_rest())
+        input.fail("Time integration/Partition",
+                   "buildings starts from rest: leave the Initial conditions section empty");
+      gather_buildings_report(analysis, communicator);
+      return analysis;
+    }
 
-    // rank 0 observes; an error there (a recorder's bad entry) stops every rank
-    std::unique_ptr<WholeRunView> whole;
-    std::exception_ptr            error;
-    if (rank == 0)
-      try
-        {
-          whole = std::make_unique<WholeRunView>(analysis, parameters, history, n_steps, options);
-        }
-      catch (const std::exception &)
-        {
-          error = std::current_exception();
-        }
-    agree_on_error(error, communicator);
+    /// A run over the ranks of a communicator (run_partitioned_time_history):
+    /// the ranks' lockstep history and, on rank 0, the whole model's view of
+    /// it with the standard observers.
+    class PartitionedRun
+    {
+    public:
+      /// Collective; an error on rank 0's observers (a recorder's bad
+      /// entry) is thrown on every rank.
+      PartitionedRun(Analysis &analysis, const RunParameters &parameters,
+                     const RunOptions &options, MPI_Comm communicator);
 
-    RunStatus     status;
-    unsigned long step = 0;
-    // rank 0: why it cannot go on (an observer could not write, or the
-    // replay failed), told to the others at the start of the next step
-    std::string   stop_reason;
-    bool          output_failed = false;
-    Vector        nothing; // the receive buffer of the other ranks
-    const double  dt = time_history.time_integration.newmark.time_step;
-    // the state gathered on rank 0, its elements replayed to it and the
-    // observers called: `observe` a member function of StepObserver
-    const auto observe = [&](void (StepObserver::*call)(const ResponseView &), const double t,
-                             const bool first) {
-      const NewmarkIntegrator &newmark = history.integrator();
-      const std::array<Vector *, 3> to = whole ? whole->stepper.state_to_fill() :
-                                                 std::array<Vector *, 3>{{&nothing, &nothing, &nothing}};
+      /// From rest to the end time, or to a stop agreed by the ranks.
+      RunStatus run();
+      /// On rank 0 the observers finish and the run's scalars; on the
+      /// others the status and the integrator's figures.
+      RunResult result(RunStatus status);
+
+    private:
+      using Call = void (StepObserver::*)(const ResponseView &);
+      /// The state gathered on rank 0, its elements replayed to it (or
+      /// started there, `first`) and `call` of every observer at time `t`.
+      /// Collective.
+      void observe(Call call, double t, bool first);
+      /// 0: go on; 1: interrupted; 2: rank 0 stopped (stop_reason).
+      /// Collective.
+      int agreed_stop() const;
+
+      const RunOptions             &options;
+      const MPI_Comm                communicator;
+      PartitionedHistory            history;
+      const unsigned long           n_steps;
+      const double                  dt;
+      std::unique_ptr<WholeRunView> whole; // rank 0
+      unsigned long                 step = 0;
+      // rank 0: why it cannot go on (an observer could not write, or the
+      // replay failed), told to the others at the start of the next step
+      std::string stop_reason;
+      bool        output_failed = false;
+      Vector      nothing; // the gather's receive buffer on the other ranks
+    };
+
+    PartitionedRun::PartitionedRun(Analysis &analysis, const RunParameters &parameters,
+                                   const RunOptions &options, const MPI_Comm communicator)
+      : options(options)
+      , communicator(communicator)
+      , history(checked_for_partitioned_run(analysis, parameters.time_history, communicator),
+                parameters.time_history, communicator)
+      , n_steps(n_steps_of(parameters.time_history, history.excitation()))
+      , dt(parameters.time_history.time_integration.newmark.time_step)
+    {
+      int rank = 0;
+      MPI_Comm_rank(communicator, &rank);
+      std::exception_ptr error;
+      if (rank == 0)
+        try
+          {
+            whole = std::make_unique<WholeRunView>(analysis, parameters, history, n_steps, options);
+          }
+        catch (const std::exception &)
+          {
+            error = std::current_exception();
+          }
+      agree_on_error(error, communicator);
+    }
+
+    void
+    PartitionedRun::observe(const Call call, const double t, const bool first)
+    {
+      const NewmarkIntegrator      &newmark = history.integrator();
+      const std::array<Vector *, 3> to =
+        whole ? whole->stepper.state_to_fill() :
+                std::array<Vector *, 3>{{&nothing, &nothing, &nothing}};
       history.gather(newmark.displacement(), *to[0]);
       history.gather(newmark.velocity(), *to[1]);
       history.gather(newmark.acceleration(), *to[2]);
@@ -348,50 +392,71 @@ namespace poundfe
         {
           stop_reason = e.what();
         }
-    };
-    // 0: go on; 1: interrupted; 2: rank 0 stopped (stop_reason). Collective.
-    const auto agreed_stop = [&]() {
+    }
+
+    int
+    PartitionedRun::agreed_stop() const
+    {
       int stop = !stop_reason.empty() ? 2 : (options.interruptible && interruption_requested());
       MPI_Allreduce(MPI_IN_PLACE, &stop, 1, MPI_INT, MPI_MAX, communicator);
       return stop;
-    };
+    }
 
-    const auto start = std::chrono::steady_clock::now();
-    try
-      {
-        history.initialize();
-        observe(&StepObserver::initialize, 0, true);
-        history.set_substep_callback(
-          [&]() { observe(&StepObserver::observe_substep, history.time(), false); });
-        for (step = 1;; ++step)
-          {
-            if (const int stop = agreed_stop(); stop > 0)
-              {
-                status.kind          = stop == 1 ? RunStatus::Kind::interrupted :
-                                                   RunStatus::Kind::failed;
-                status.output_failed = output_failed;
-                status.message       = stop_reason.empty() ? "rank 0 stopped the run" : stop_reason;
+    RunStatus
+    PartitionedRun::run()
+    {
+      RunStatus  status;
+      const auto start = std::chrono::steady_clock::now();
+      try
+        {
+          history.initialize();
+          observe(&StepObserver::initialize, 0, true);
+          history.set_substep_callback(
+            [this]() { observe(&StepObserver::observe_substep, history.time(), false); });
+          for (step = 1;; ++step)
+            {
+              if (const int stop = agreed_stop(); stop > 0)
+                {
+                  status.kind = stop == 1 ? RunStatus::Kind::interrupted : RunStatus::Kind::failed;
+                  status.output_failed = output_failed;
+                  status.message = stop_reason.empty() ? "rank 0 stopped the run" : stop_reason;
+                  break;
+                }
+              if (step > n_steps)
                 break;
-              }
-            if (step > n_steps)
-              break;
-            history.advance();
-            observe(&StepObserver::observe_step, step * dt, false);
-          }
-      }
-    catch (const NumericalError &e) // on every rank
-      {
-        status.kind    = RunStatus::Kind::failed;
-        status.message = e.what();
-      }
-    history.set_substep_callback(nullptr); // it refers to this call's locals
-    status.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    status.steps     = history.integrator().steps();
-    status.end_time  = history.time();
-    if (!whole)
-      return {status, history.statistics(), history.energy(), history.max_energy_error(),
-              history.n_local_elements(), 0, {}};
-    finish_observers(whole->observers.all(), whole->view, status);
-    return whole->observers.result(status, whole->view);
+              history.advance();
+              observe(&StepObserver::observe_step, step * dt, false);
+            }
+        }
+      catch (const NumericalError &e) // on every rank
+        {
+          status.kind    = RunStatus::Kind::failed;
+          status.message = e.what();
+        }
+      history.set_substep_callback(nullptr);
+      status.wall_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      status.steps    = history.integrator().steps();
+      status.end_time = history.time();
+      return status;
+    }
+
+    RunResult
+    PartitionedRun::result(RunStatus status)
+    {
+      if (!whole)
+        return {status, history.statistics(), history.energy(), history.max_energy_error(),
+                history.n_local_elements(), 0, {}};
+      finish_observers(whole->observers.all(), whole->view, status);
+      return whole->observers.result(status, whole->view);
+    }
+  } // namespace
+
+  RunResult
+  run_partitioned_time_history(Analysis &analysis, const RunParameters &parameters,
+                               const RunOptions &options, const MPI_Comm communicator)
+  {
+    PartitionedRun run(analysis, parameters, options, communicator);
+    return run.result(run.run());
   }
 } // namespace poundfe
