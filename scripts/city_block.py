@@ -125,7 +125,11 @@ def main():
         run = dict(pga=0.5, duration=20, plateau=10, dt=0.005, end=1.0, interval=0.01,
                    directory="city-block")
         title = ("City block (issue 12 item 5): one large model for a distributed solve,\n# "
-                 "mpirun -np P poundfe run input/city-block.prm.")
+                 "mpirun -np P poundfe run input/city-block.prm. Partitioned by building\n# "
+                 "(issue 23, theory 3.5d): replace 'Linear solver = petsc-mumps' below with\n# "
+                 "'Linear solver = eigen-ldlt', add 'set Partition = buildings' and\n# "
+                 "'set Nonlinear solver = krylov-newton' to Time integration, and run it\n# "
+                 "with mpirun -np 2 (at most 12 ranks: one per building).")
         purpose = ("116 292 equations, 10 172 nonlinear elements (9 732 hinges, 440 gaps).\n"
                    "# Only the first {end} s of the motion (End time), so that the example runs "
                    "in\n# minutes; see README, Speed. Not run by "
