@@ -63,7 +63,11 @@ PY
 # steps/s, each rank's peak RSS, and how far apart their files are.
 sed -e "/^subsection Time integration/a\\  set Partition = buildings" "$work/krylov-newton.prm" > "$work/run-partitioned.prm"
 /usr/bin/time -f 'one process: peak RSS %M KiB' build/poundfe run "$work/krylov-newton.prm" --output "$work/run-whole" > /dev/null
-mpirun -np 2 /usr/bin/time -f 'a rank: peak RSS %M KiB' build/poundfe run "$work/run-partitioned.prm" --output "$work/run-partitioned" > /dev/null
+# each rank's figure goes to its own file: two ranks writing to stderr at once
+# can interleave their lines
+mpirun -np 2 bash -c '/usr/bin/time -o "$0.$OMPI_COMM_WORLD_RANK" -f "rank $OMPI_COMM_WORLD_RANK: peak RSS %M KiB" "$@"' \
+  "$work/rss" build/poundfe run "$work/run-partitioned.prm" --output "$work/run-partitioned" > /dev/null
+cat "$work/rss.0" "$work/rss.1"
 for run in run-whole run-partitioned; do
   printf 'poundfe run, %s: %s\n' "$run" "$(grep -o '"steps_per_second": [0-9.]*' "$work/$run/summary.json")"
 done
