@@ -9,6 +9,8 @@
 #include <poundfe/output/link_report.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/csv_columns.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/plan_plot.h>
@@ -19,6 +21,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -587,13 +590,30 @@ namespace poundfe
     return energy;
   }
 
+  namespace
+  {
+    /// A gnuplot data block `name` ("$...") of the columns `x` and `y`
+    /// under the header `x_name,y_name`.
+    std::string
+    data_block(const std::string &name, const std::string &header, const std::vector<double> &x,
+               const std::vector<double> &y)
+    {
+      AssertDimension(x.size(), y.size());
+      std::string block = name + " << EOD\n" + header + "\n";
+      for (std::size_t i = 0; i < x.size(); ++i)
+        block += number_text(x[i]) + ',' + number_text(y[i]) + '\n';
+      return block + "EOD\n";
+    }
+  } // namespace
+
   void
   RunSummary::draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const
   {
     // One loop per building: its hinge or storey with the largest peak
     // plastic deformation (|d - F/k0|; mirror-image hinges of a symmetric
     // frame tie, and the first is kept), moments in kN m, forces in kN.
-    const Model &model = analysis.model;
+    const Model              &model = analysis.model;
+    std::vector<unsigned int> loops; // the elements drawn
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
         int chosen = -1;
@@ -602,23 +622,122 @@ namespace poundfe
               (chosen < 0 ||
                peaks.peak_plastic_deformation()[h] > peaks.peak_plastic_deformation()[chosen]))
             chosen = h;
-        if (chosen < 0)
-          continue;
-        const NonlinearElement &e     = state.elements[chosen];
+        if (chosen >= 0)
+          loops.push_back(chosen);
+      }
+    // hinges.csv: time, then force, deformation and z of each element. Its
+    // loops' columns in one pass (gnuplot would read the file once per
+    // loop); if that fails, gnuplot reads the file.
+    std::vector<unsigned int> columns;
+    for (const unsigned int h : loops)
+      columns.insert(columns.end(), {3 * h + 2, 3 * h + 1});
+    std::vector<std::vector<double>> values;
+    try
+      {
+        values = read_csv_columns(directory + "/hinges.csv", columns);
+      }
+    catch (const OutputError &)
+      {}
+    for (unsigned int i = 0; i < loops.size(); ++i)
+      {
+        const unsigned int      h     = loops[i];
+        const NonlinearElement &e     = state.elements[h];
         const bool              hinge = e.kind == ElementKind::hinge;
         std::ostringstream      title;
-        title << std::setprecision(3) << (hinge ? "Hinge " : "Storey ") << e.label << " of " << model.buildings[b].name
-              << ": peak plastic " << (hinge ? "rotation " : "drift ")
-              << peaks.peak_plastic_deformation()[chosen] << (hinge ? " rad" : " m")
-              << ", ductility " << peaks.ductility(chosen);
-        plots.push_back(Plot{"hysteresis_" + e.label + ".png", title.str(),
-                             hinge ? "rotation (rad)" : "drift (m)",
-                             hinge ? "moment (kN m)" : "force (kN)",
-                             {{"hinges.csv",
-                               std::to_string(3 * chosen + 3) + ":($" +
-                                 std::to_string(3 * chosen + 2) + "/1000)",
-                               e.label, "lines"}}});
+        title << std::setprecision(3) << (hinge ? "Hinge " : "Storey ") << e.label << " of "
+              << model.buildings[e.building].name << ": peak plastic "
+              << (hinge ? "rotation " : "drift ") << peaks.peak_plastic_deformation()[h]
+              << (hinge ? " rad" : " m") << ", ductility " << peaks.ductility(h);
+        Plot plot{"hysteresis_" + e.label + ".png", title.str(),
+                  hinge ? "rotation (rad)" : "drift (m)", hinge ? "moment (kN m)" : "force (kN)",
+                  {{"hinges.csv",
+                    std::to_string(3 * h + 3) + ":($" + std::to_string(3 * h + 2) + "/1000)",
+                    e.label, "lines"}}};
+        if (!values.empty())
+          {
+            const std::string name = "$loop" + std::to_string(i + 1);
+            plot.data_blocks = data_block(name, "deformation,force", values[2 * i], values[2 * i + 1]);
+            plot.series.front().data_file  = name;
+            plot.series.front().using_spec = "1:($2/1000)";
+          }
+        plots.push_back(plot);
       }
+  }
+
+  Plot
+  contact_force_plot(const Model &model, const std::string &directory)
+  {
+    Plot plot{"contact_force.png", "Contact forces of the gap elements", "time (s)",
+              "contact force (kN)", {}};
+    // contact_force.csv: time, then force and penetration of each gap
+    const unsigned int n_gaps = model.gaps.size();
+    if (n_gaps <= max_named_curves)
+      {
+        for (unsigned int g = 0; g < n_gaps; ++g)
+          plot.series.push_back({"contact_force.csv", "1:($" + std::to_string(2 * g + 2) + "/1000)",
+                                 model.gaps[g].label, "lines"});
+        return plot;
+      }
+    // More gaps than a key can name: the total force between each pair of
+    // buildings (or a building and a barrier) that have gaps between them.
+    std::map<std::string, std::vector<unsigned int>> pairs; // name: its gaps
+    for (unsigned int g = 0; g < n_gaps; ++g)
+      {
+        const Gap  &gap  = model.gaps[g];
+        const auto  side = [&](const unsigned int i) {
+          return gap.nodes[i] < 0 ? std::string("barrier") : model.buildings[gap.buildings[i]].name;
+        };
+        pairs[side(0) + "-" + side(1)].push_back(g);
+      }
+    std::vector<unsigned int> columns{0};
+    for (unsigned int g = 0; g < n_gaps; ++g)
+      columns.push_back(2 * g + 1);
+    std::vector<std::vector<double>> values;
+    try
+      {
+        values = read_csv_columns(directory + "/contact_force.csv", columns);
+      }
+    catch (const OutputError &)
+      {
+        return plot; // drawn without curves: the run's file is missing or damaged
+      }
+    struct PairForce
+    {
+      std::string         name;
+      std::vector<double> force; // N, at each row
+      double              peak = 0;
+    };
+    std::vector<PairForce> totals;
+    for (const auto &[name, gaps] : pairs)
+      {
+        PairForce pair{name, std::vector<double>(values[0].size(), 0.0)};
+        for (const unsigned int g : gaps)
+          for (std::size_t r = 0; r < pair.force.size(); ++r)
+            pair.force[r] += values[g + 1][r];
+        for (const double f : pair.force)
+          pair.peak = std::max(pair.peak, std::abs(f));
+        totals.push_back(std::move(pair));
+      }
+    std::ostringstream title;
+    title << "Total contact force between adjacent buildings (" << n_gaps << " gap elements";
+    if (totals.size() > max_named_curves)
+      {
+        title << "; the " << max_named_curves << " of " << totals.size()
+              << " pairs with the largest peaks";
+        std::stable_sort(totals.begin(), totals.end(),
+                         [](const PairForce &a, const PairForce &b) { return a.peak > b.peak; });
+        totals.resize(max_named_curves);
+        std::sort(totals.begin(), totals.end(), // in the key by name again
+                  [](const PairForce &a, const PairForce &b) { return a.name < b.name; });
+      }
+    plot.title = title.str() + ")";
+    for (unsigned int p = 0; p < totals.size(); ++p)
+      {
+        const std::string name = "$pair" + std::to_string(p + 1);
+        plot.data_blocks += data_block(name, "time,force", values[0], totals[p].force);
+        plot.series.push_back({name, "1:($2/1000)", totals[p].name, "lines"});
+      }
+    return plot;
   }
 
   Plot
@@ -707,15 +826,7 @@ namespace poundfe
     if (writes("phase_portrait.csv"))
       draw_phase_portraits(all);
     if (writes("contact_force.csv"))
-      {
-        Plot contact{"contact_force.png", "Contact forces of the gap elements", "time (s)",
-                     "contact force (kN)", {}};
-        for (unsigned int g = 0; g < model.gaps.size(); ++g)
-          contact.series.push_back({"contact_force.csv",
-                                    "1:($" + std::to_string(2 * g + 2) + "/1000)",
-                                    model.gaps[g].label, "lines"});
-        all.push_back(contact);
-      }
+      all.push_back(contact_force_plot(model, directory));
     if (model.dimension == 3 && !model.gaps.empty())
       all.push_back(impact_plan_plot(model, state.impact_log().impacts()));
     return draw_plots(directory, all);

@@ -33,6 +33,17 @@ namespace poundfe
   /// damping) and, for modal damping, the ratio it gives each damped mode.
   void write_damping(JsonWriter &json, const Analysis &analysis, unsigned int b);
 
+  /// Curves a figure's key can name: a figure with more draws groups of them.
+  constexpr unsigned int max_named_curves = 12;
+
+  /// contact_force.png from <directory>/contact_force.csv: a curve per gap
+  /// element when there are at most max_named_curves, else a curve per pair
+  /// of buildings (or a building and a barrier) with gaps between them, the
+  /// total force of its gaps (of the max_named_curves pairs with the largest
+  /// peaks, when there are more), read from the file in one pass and given
+  /// to gnuplot as data blocks. Without a readable file: no curves.
+  Plot contact_force_plot(const Model &model, const std::string &directory);
+
   class RunSummary : public StepObserver
   {
   public:
