@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -604,6 +605,70 @@ namespace poundfe
         block += number_text(x[i]) + ',' + number_text(y[i]) + '\n';
       return block + "EOD\n";
     }
+
+    /// The curves a figure draws of those with peaks `peaks`: all when a
+    /// key can name them, else the max_named_curves with the largest peaks;
+    /// in their order.
+    std::vector<unsigned int>
+    curves_to_draw(const std::vector<double> &peaks)
+    {
+      std::vector<unsigned int> drawn(peaks.size());
+      std::iota(drawn.begin(), drawn.end(), 0u);
+      if (drawn.size() <= max_named_curves)
+        return drawn;
+      std::stable_sort(drawn.begin(), drawn.end(),
+                       [&](const unsigned int a, const unsigned int b) { return peaks[a] > peaks[b]; });
+      drawn.resize(max_named_curves);
+      std::sort(drawn.begin(), drawn.end());
+      return drawn;
+    }
+
+    /// `title`, saying which curves it shows when not all `n` `what` are drawn.
+    std::string
+    title_of_drawn(const std::string &title, const std::size_t n_drawn, const std::size_t n,
+                   const std::string &what)
+    {
+      if (n_drawn == n)
+        return title;
+      return title + ": the " + std::to_string(n_drawn) + " of " + std::to_string(n) + " " + what +
+             " with the largest peaks";
+    }
+
+    /// A curve of column `columns[i]` (0: the first) of `file` in
+    /// `directory` against its first column (time) for each title, its
+    /// values divided by `divisor`. A few are read by gnuplot from the file;
+    /// more (a selection of a wide table's columns) as data blocks of
+    /// those columns read in one pass, gnuplot reading the file only if
+    /// that fails.
+    void
+    add_time_series(Plot &plot, const std::string &directory, const std::string &file,
+                    const std::vector<unsigned int> &columns, const std::vector<std::string> &titles,
+                    const std::string &divisor, const bool in_one_pass)
+    {
+      const auto scaled = [&](const unsigned int column) {
+        const std::string c = std::to_string(column + 1);
+        return divisor.empty() ? "1:" + c : "1:($" + c + "/" + divisor + ")";
+      };
+      std::vector<unsigned int> read{0};
+      read.insert(read.end(), columns.begin(), columns.end());
+      std::vector<std::vector<double>> values;
+      if (in_one_pass)
+        try
+          {
+            values = read_csv_columns(directory + "/" + file, read);
+          }
+        catch (const OutputError &)
+          {}
+      for (unsigned int i = 0; i < columns.size(); ++i)
+        if (values.empty())
+          plot.series.push_back({file, scaled(columns[i]), titles[i], "lines"});
+        else
+          {
+            const std::string name = "$" + plot.file.substr(0, plot.file.find('.')) + std::to_string(i + 1);
+            plot.data_blocks += data_block(name, "time,value", values[0], values[i + 1]);
+            plot.series.push_back({name, scaled(1), titles[i], "lines"});
+          }
+    }
   } // namespace
 
   void
@@ -701,41 +766,31 @@ namespace poundfe
       {
         return plot; // drawn without curves: the run's file is missing or damaged
       }
-    struct PairForce
-    {
-      std::string         name;
-      std::vector<double> force; // N, at each row
-      double              peak = 0;
-    };
-    std::vector<PairForce> totals;
+    std::vector<std::string>         names;
+    std::vector<std::vector<double>> totals; // N, at each row
+    std::vector<double>              peaks;
     for (const auto &[name, gaps] : pairs)
       {
-        PairForce pair{name, std::vector<double>(values[0].size(), 0.0)};
+        std::vector<double> total(values[0].size(), 0.0);
         for (const unsigned int g : gaps)
-          for (std::size_t r = 0; r < pair.force.size(); ++r)
-            pair.force[r] += values[g + 1][r];
-        for (const double f : pair.force)
-          pair.peak = std::max(pair.peak, std::abs(f));
-        totals.push_back(std::move(pair));
+          for (std::size_t r = 0; r < total.size(); ++r)
+            total[r] += values[g + 1][r];
+        double peak = 0;
+        for (const double f : total)
+          peak = std::max(peak, std::abs(f));
+        names.push_back(name);
+        totals.push_back(std::move(total));
+        peaks.push_back(peak);
       }
-    std::ostringstream title;
-    title << "Total contact force between adjacent buildings (" << n_gaps << " gap elements";
-    if (totals.size() > max_named_curves)
+    const std::vector<unsigned int> drawn = curves_to_draw(peaks);
+    plot.title = title_of_drawn("Total contact force between adjacent buildings (" +
+                                  std::to_string(n_gaps) + " gap elements)",
+                                drawn.size(), names.size(), "pairs");
+    for (unsigned int i = 0; i < drawn.size(); ++i)
       {
-        title << "; the " << max_named_curves << " of " << totals.size()
-              << " pairs with the largest peaks";
-        std::stable_sort(totals.begin(), totals.end(),
-                         [](const PairForce &a, const PairForce &b) { return a.peak > b.peak; });
-        totals.resize(max_named_curves);
-        std::sort(totals.begin(), totals.end(), // in the key by name again
-                  [](const PairForce &a, const PairForce &b) { return a.name < b.name; });
-      }
-    plot.title = title.str() + ")";
-    for (unsigned int p = 0; p < totals.size(); ++p)
-      {
-        const std::string name = "$pair" + std::to_string(p + 1);
-        plot.data_blocks += data_block(name, "time,force", values[0], totals[p].force);
-        plot.series.push_back({name, "1:($2/1000)", totals[p].name, "lines"});
+        const std::string name = "$pair" + std::to_string(i + 1);
+        plot.data_blocks += data_block(name, "time,force", values[0], totals[drawn[i]]);
+        plot.series.push_back({name, "1:($2/1000)", names[drawn[i]], "lines"});
       }
     return plot;
   }
@@ -773,33 +828,71 @@ namespace poundfe
     drift.settings = accel.settings = "set xrange [0:*]\nset yrange [0:*]\n";
     Plot roof{"roof_displacement.png", "Roof displacement (relative to the ground)", "time (s)",
               "displacement (m)", {}};
-    const double pga     = excitation.ground_motion().empty() ? 0 : excitation.ground_motion().peak();
-    unsigned int column  = 2;
-    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+    const double pga = excitation.ground_motion().empty() ? 0 : excitation.ground_motion().peak();
+    // A figure with a curve per building draws, when there are more than a
+    // key names, those with the largest peaks of its quantity.
+    const unsigned int        n_buildings = model.buildings.size();
+    std::vector<double>       peak_drift(n_buildings, 0), peak_accel(n_buildings, 0),
+      peak_roof(n_buildings, 0);
+    std::vector<unsigned int> roof_column(n_buildings); // of floor_displacement.csv (0: time)
+    std::vector<std::string>  names;
+    for (unsigned int b = 0, column = 1; b < n_buildings; ++b)
+      {
+        const unsigned int n_floors = model.buildings[b].floors.size();
+        for (unsigned int f = 0; f < n_floors; ++f)
+          {
+            const unsigned int i = floors.index(b, f);
+            peak_drift[b] = std::max(peak_drift[b], floors.peak_drift_ratio()[i]);
+            peak_accel[b] = std::max(peak_accel[b], floors.peak_acceleration()[i]);
+          }
+        if (n_floors > 0)
+          peak_roof[b] = floors.peak_displacement()[floors.index(b, n_floors - 1)];
+        column += n_floors;
+        roof_column[b] = column - 1;
+        names.push_back(model.buildings[b].name);
+      }
+    for (const unsigned int b : curves_to_draw(peak_drift))
       {
         const Building    &building = model.buildings[b];
-        const std::string  id       = std::to_string(b + 1);
-        std::ostringstream d, a;
-        d << std::setprecision(10) << "$drift" << id << " << EOD\ndrift,height\n";
-        a << std::setprecision(10) << "$accel" << id << " << EOD\nacceleration,height\n"
-          << pga << ",0\n";
+        std::ostringstream d;
+        d << std::setprecision(10) << "$drift" << b + 1 << " << EOD\ndrift,height\n";
         for (unsigned int f = 0; f < building.floors.size(); ++f)
           {
-            const Floor       &floor = building.floors[f];
-            const unsigned int i     = floors.index(b, f);
-            const double       top   = floor.level - building.base_level; // above the ground
-            d << floors.peak_drift_ratio()[i] << ',' << top - floor.storey_height << '\n'
-              << floors.peak_drift_ratio()[i] << ',' << top << '\n';
-            a << floors.peak_acceleration()[i] << ',' << top << '\n';
+            const Floor &floor = building.floors[f];
+            const double top   = floor.level - building.base_level; // above the ground
+            d << floors.peak_drift_ratio()[floors.index(b, f)] << ',' << top - floor.storey_height
+              << '\n' << floors.peak_drift_ratio()[floors.index(b, f)] << ',' << top << '\n';
           }
         drift.data_blocks += d.str() + "EOD\n";
-        accel.data_blocks += a.str() + "EOD\n";
-        drift.series.push_back({"$drift" + id, "1:2", building.name, "lines lw 2"});
-        accel.series.push_back({"$accel" + id, "1:2", building.name, "linespoints lw 2 pt 7"});
-        column += building.floors.size();
-        roof.series.push_back(
-          {"floor_displacement.csv", "1:" + std::to_string(column - 1), building.name, "lines"});
+        drift.series.push_back({"$drift" + std::to_string(b + 1), "1:2", building.name, "lines lw 2"});
       }
+    for (const unsigned int b : curves_to_draw(peak_accel))
+      {
+        const Building    &building = model.buildings[b];
+        std::ostringstream a;
+        a << std::setprecision(10) << "$accel" << b + 1 << " << EOD\nacceleration,height\n" << pga
+          << ",0\n";
+        for (unsigned int f = 0; f < building.floors.size(); ++f)
+          a << floors.peak_acceleration()[floors.index(b, f)] << ','
+            << building.floors[f].level - building.base_level << '\n';
+        accel.data_blocks += a.str() + "EOD\n";
+        accel.series.push_back(
+          {"$accel" + std::to_string(b + 1), "1:2", building.name, "linespoints lw 2 pt 7"});
+      }
+    drift.title = title_of_drawn(drift.title, drift.series.size(), n_buildings, "buildings");
+    accel.title = title_of_drawn(accel.title, accel.series.size(), n_buildings, "buildings");
+    {
+      std::vector<unsigned int> columns;
+      std::vector<std::string>  titles;
+      for (const unsigned int b : curves_to_draw(peak_roof))
+        {
+          columns.push_back(roof_column[b]);
+          titles.push_back(names[b]);
+        }
+      roof.title = title_of_drawn(roof.title, columns.size(), n_buildings, "buildings");
+      add_time_series(roof, directory, "floor_displacement.csv", columns, titles, "",
+                      columns.size() < n_buildings);
+    }
     add_drift_limits(model, floors.peak_drift_ratio(), parameters.drift_limits.limits(), drift);
     std::vector<Plot> all{drift, accel};
     if (writes("floor_displacement.csv"))
@@ -812,9 +905,18 @@ namespace poundfe
       {
         Plot shear{"base_shear.png", "Base shear (element forces)", "time (s)", "base shear (kN)",
                    {}};
-        for (unsigned int b = 0; b < model.buildings.size(); ++b)
-          shear.series.push_back({"base_shear.csv", "1:($" + std::to_string(b + 2) + "/1000)",
-                                  model.buildings[b].name, "lines"});
+        std::vector<double> peak_shear = base_shears.peak(); // base_shear.csv: time, a building each
+        peak_shear.resize(n_buildings, 0.0); // not observed: a run stopped before its start
+        std::vector<unsigned int> columns;
+        std::vector<std::string>  titles;
+        for (const unsigned int b : curves_to_draw(peak_shear))
+          {
+            columns.push_back(b + 1);
+            titles.push_back(names[b]);
+          }
+        shear.title = title_of_drawn(shear.title, columns.size(), n_buildings, "buildings");
+        add_time_series(shear, directory, "base_shear.csv", columns, titles, "1000",
+                        columns.size() < n_buildings);
         all.push_back(shear);
       }
     if (writes("energy.csv"))

@@ -6,7 +6,11 @@
 #     columns, each a PNG and listed in summary.json; no figure missing;
 #  2. a shear pair of 14 storeys (14 gaps: more than a key names): the
 #     contact figure is drawn (its curves, the pair's total force, are
-#     checked in tests/report/test_contact_force_plot.cc), no figure missing.
+#     checked in tests/report/test_contact_force_plot.cc), no figure missing;
+#  3. a row of 15 shear buildings (more than a key names): the figures with a
+#     curve per building (profiles, roof displacement, base shear) and per
+#     pair (contact) are drawn, of the 12 with the largest peaks (the
+#     selection is the one checked in 2), none missing.
 set -eu
 poundfe=$1 input=$2
 work=$(mktemp -d)
@@ -36,3 +40,44 @@ gaps=$(head -1 "$work/tall/contact_force.csv" | tr ',' '\n' | grep -c '_force_N$
 is_png "$work/tall/contact_force.png" || fail "no contact_force.png"
 no_missing "$work/tall"
 echo "ok   contact forces of $gaps gaps as one pair's total"
+
+python3 - > "$work/row15.prm" <<'PY'
+print("subsection Model\n  set Number of buildings = 15\n  set Separations = 0.005\nend")
+for b in range(15):
+    print(f"""subsection Building {b + 1}
+  set Name = R{b + 1:02d}
+  set Type = shear
+  set Number of storeys = {3 + b % 3}
+  set Storey heights = 3.0
+  set Floor masses = 1000
+  set Storey stiffnesses = {2e6 + 3e5 * b}
+end""")
+print("""subsection Ground motion
+  set Type = kanai-tajimi
+  subsection Stochastic
+    set Target PGA = 0.35
+    set Duration = 2
+    set Seed = 11
+  end
+end
+subsection Contact
+  set Law = linear
+  set Stiffness = 5e8
+end
+subsection Time integration
+  set Time step = 0.0025
+end
+subsection Output
+  set Output interval = 0.01
+  set VTU interval    = 0
+  subsection Recorders
+    set Record = base shear
+  end
+end""")
+PY
+"$poundfe" run "$work/row15.prm" --output "$work/row15" > /dev/null
+for png in drift_profile acceleration_profile roof_displacement base_shear contact_force; do
+  is_png "$work/row15/$png.png" || fail "no $png.png of 15 buildings"
+done
+no_missing "$work/row15"
+echo "ok   the figures of 15 buildings"
