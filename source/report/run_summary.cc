@@ -805,11 +805,44 @@ namespace poundfe
               {{"floor_spectra.csv", "1:2", "ground", "lines dt 2 lc rgb 'black'"}}};
     plot.log_x         = true;
     plot.key           = "below"; // one curve per floor
-    unsigned int column = 3; // floor_spectra.csv: period, ground, the floors (first damping)
+    // floor_spectra.csv: period, ground, the floors (first damping ratio)
+    std::vector<unsigned int> columns;
+    std::vector<std::string>  titles;
     for (const Building &building : analysis.model.buildings)
       for (unsigned int f = 1; f <= building.floors.size(); ++f)
-        plot.series.push_back({"floor_spectra.csv", "1:" + std::to_string(column++),
-                               building.name + " floor " + std::to_string(f), "lines"});
+        {
+          columns.push_back(columns.size() + 2);
+          titles.push_back(building.name + " floor " + std::to_string(f));
+        }
+    if (columns.size() <= max_named_curves)
+      {
+        add_time_series(plot, directory, "floor_spectra.csv", columns, titles, "", false);
+        return plot;
+      }
+    // more floors than a key names: those whose spectrum peaks highest
+    std::vector<unsigned int> read{0};
+    read.insert(read.end(), columns.begin(), columns.end());
+    std::vector<std::vector<double>> values;
+    try
+      {
+        values = read_csv_columns(directory + "/floor_spectra.csv", read);
+      }
+    catch (const OutputError &)
+      {
+        return plot; // the ground's curve alone: the file is missing or damaged
+      }
+    std::vector<double> peaks(columns.size(), 0.0);
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      for (const double psa : values[i + 1])
+        peaks[i] = std::max(peaks[i], std::abs(psa));
+    const std::vector<unsigned int> drawn = curves_to_draw(peaks);
+    plot.title = title_of_drawn(plot.title, drawn.size(), columns.size(), "floors");
+    for (unsigned int i = 0; i < drawn.size(); ++i)
+      {
+        const std::string name = "$floor" + std::to_string(i + 1);
+        plot.data_blocks += data_block(name, "period,psa", values[0], values[drawn[i] + 1]);
+        plot.series.push_back({name, "1:2", titles[drawn[i]], "lines"});
+      }
     return plot;
   }
 

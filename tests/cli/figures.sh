@@ -8,8 +8,8 @@
 #     contact figure is drawn (its curves, the pair's total force, are
 #     checked in tests/report/test_contact_force_plot.cc), no figure missing;
 #  3. a row of 15 shear buildings (more than a key names): the figures with a
-#     curve per building (profiles, roof displacement, base shear) and per
-#     pair (contact) are drawn, of the 12 with the largest peaks (the
+#     curve per building (profiles, roof displacement, base shear), per
+#     floor (floor spectra) and per pair (contact) are drawn, of the 12 with the largest peaks (the
 #     selection is the one checked in 2), none missing.
 set -eu
 poundfe=$1 input=$2
@@ -70,13 +70,14 @@ end
 subsection Output
   set Output interval = 0.01
   set VTU interval    = 0
+  set Floor spectra   = true
   subsection Recorders
     set Record = base shear
   end
 end""")
 PY
 "$poundfe" run "$work/row15.prm" --output "$work/row15" > /dev/null
-for png in drift_profile acceleration_profile roof_displacement base_shear contact_force; do
+for png in drift_profile acceleration_profile roof_displacement base_shear floor_spectra contact_force; do
   is_png "$work/row15/$png.png" || fail "no $png.png of 15 buildings"
 done
 no_missing "$work/row15"
