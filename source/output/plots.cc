@@ -3,12 +3,15 @@
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+
+#include <sys/wait.h>
 
 namespace poundfe
 {
@@ -78,6 +81,22 @@ namespace poundfe
         }
       return first.empty() ? "gnuplot failed without a message" : first.substr(0, 300);
     }
+
+    /// "SIGINT" or "SIGTERM" when the shell running gnuplot, or gnuplot,
+    /// was stopped by that signal (std::system's `status`: the shell's wait
+    /// status, or its exit status 128 + n for a child killed by signal n);
+    /// empty otherwise. std::system ignores SIGINT in the caller while the
+    /// shell runs, so a Ctrl-C at a terminal stops gnuplot alone.
+    std::string
+    stopping_signal(const int status)
+    {
+      int signal = 0;
+      if (status != -1 && WIFSIGNALED(status))
+        signal = WTERMSIG(status);
+      else if (status != -1 && WIFEXITED(status) && WEXITSTATUS(status) > 128)
+        signal = WEXITSTATUS(status) - 128;
+      return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "";
+    }
   } // namespace
 
   const std::vector<MissingFigure> &
@@ -132,7 +151,10 @@ namespace poundfe
       "cd " + quoted(directory) + " && gnuplot .plots.gp > .plots.log 2>&1";
     const int         status  = std::system(command.c_str());
     const std::string log     = directory + "/.plots.log";
-    const std::string problem = status == 0 ? "" : first_error(log);
+    const std::string problem = status == 0 ? "" : stopping_signal(status).empty() ?
+                                              first_error(log) :
+                                              "stopped by " + stopping_signal(status) +
+                                                " while drawing (the run was interrupted)";
     for (const Plot &plot : plots)
       {
         const std::string temporary = directory + "/" + plot.file + ".tmp";

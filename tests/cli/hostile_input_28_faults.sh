@@ -185,6 +185,18 @@ else
   echo "ok   failed plot: completed with warnings, missing_figures listed, no .gp/.log left"
 fi
 
+# gnuplot stopped by a signal (Ctrl-C while the figures are drawn): the
+# reason says so, not "gnuplot failed without a message"
+printf '#!/bin/sh\nkill -INT $$\n' > bin/gnuplot
+n=$((n + 1))
+rm -rf plots
+PATH=$work/bin:$PATH "$poundfe" spectrum "$inputs/three-storey-shear.prm" --output plots > plots.log 2>&1
+if ! python3 -c 'import json,sys; s=json.load(open("plots/summary.json")); m=s["missing_figures"]; assert any(x == "spectrum.png: gnuplot: stopped by SIGINT while drawing (the run was interrupted)" for x in m), m' 2> plots.err; then
+  fail "gnuplot stopped: missing_figures: $(cat plots.err)"
+else
+  echo "ok   gnuplot stopped by SIGINT: the figures' reason says so"
+fi
+
 # --- class 8: a value twice in a sweep or a bifurcation ---------------------
 { cat shear.prm; printf 'subsection Sweep\n  set Parameter = Building 1/Floor masses\n  set Values = 1000, 1200, 1000\nend\n'; } > sweep-twice.prm
 expect 1 "parameter 'Sweep/Values': lists 1000 twice (values 1 and 3): give each once" sweep sweep-twice.prm --output out
