@@ -52,4 +52,22 @@ namespace poundfe
       throw OutputError("read", path, errno);
     return values;
   }
+
+  std::vector<std::string>
+  read_csv_header(const std::string &path)
+  {
+    std::ifstream file(path);
+    std::string   line;
+    if (!file || !std::getline(file, line))
+      throw OutputError("read", path, file ? EINVAL : errno);
+    std::vector<std::string> names;
+    for (std::size_t start = 0;;)
+      {
+        const std::size_t comma = line.find(',', start);
+        names.push_back(line.substr(start, comma - start));
+        if (comma == std::string::npos)
+          return names;
+        start = comma + 1;
+      }
+  }
 } // namespace poundfe

@@ -191,48 +191,85 @@ namespace poundfe
               }};
     }
 
-    /// Force (moment), deformation (drift, rotation) and z of each hysteretic element.
+    /// The elements in [first, end) that `labels` name: all without labels;
+    /// else each label an element's own, or a building's name for all of
+    /// that building's (a gap: either side's). InputError for a label that
+    /// is neither (`what`, e.g. "hinge or Bouc-Wen storey", and `example`
+    /// say what was expected).
+    std::vector<unsigned int>
+    elements_named(const std::vector<std::string> &labels, const Model &model,
+                   const NonlinearElements &elements, const unsigned int first,
+                   const unsigned int end, const std::function<bool(unsigned int, unsigned int)> &in_building,
+                   const std::string &what, const std::string &example,
+                   const std::string &input_file, const int line)
+    {
+      std::vector<unsigned int> chosen;
+      if (labels.empty())
+        for (unsigned int h = first; h < end; ++h)
+          chosen.push_back(h);
+      for (const std::string &label : labels)
+        {
+          const std::size_t n_before = chosen.size();
+          for (unsigned int b = 0; b < model.buildings.size(); ++b)
+            if (model.buildings[b].name == label)
+              for (unsigned int h = first; h < end; ++h)
+                if (in_building(h, b))
+                  chosen.push_back(h);
+          for (unsigned int h = first; h < end; ++h)
+            if (elements[h].label == label)
+              chosen.push_back(h);
+          if (chosen.size() == n_before)
+            throw InputError(input_file, line, "Output/Recorders/Record",
+                             "no " + what + " is labelled '" + label + "' and no building is " +
+                               "named so (labels are like " + example +
+                               "; a building's name records all of its)");
+        }
+      std::sort(chosen.begin(), chosen.end()); // in the model's order, each once
+      chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+      return chosen;
+    }
+
+    /// Force (moment), deformation (drift, rotation) and z of the hysteretic
+    /// elements `chosen`.
     Series
-    hinge_state_series(const NonlinearElements &elements, const unsigned int n_hyst)
+    hinge_state_series(const NonlinearElements &elements, const std::vector<unsigned int> &chosen)
     {
       std::vector<std::string> columns;
-      for (unsigned int h = 0; h < n_hyst; ++h)
+      for (const unsigned int h : chosen)
         {
           const bool hinge = elements[h].kind == ElementKind::hinge;
           columns.push_back(elements[h].label + (hinge ? "_moment_N_m" : "_force_N"));
           columns.push_back(elements[h].label + (hinge ? "_rotation_rad" : "_drift_m"));
           columns.push_back(elements[h].label + "_z");
         }
-      return {columns, [n_hyst](const ResponseView &s, std::vector<double> &to) {
-                to.resize(3 * n_hyst);
-                for (unsigned int h = 0; h < n_hyst; ++h)
+      return {columns, [chosen](const ResponseView &s, std::vector<double> &to) {
+                to.resize(3 * chosen.size());
+                for (unsigned int i = 0; i < chosen.size(); ++i)
                   {
-                    const NonlinearElement &e = s.elements[h];
-                    to[3 * h]     = e.force();
-                    to[3 * h + 1] = e.deformation(s.displacement());
-                    to[3 * h + 2] = e.history_variable();
+                    const NonlinearElement &e = s.elements[chosen[i]];
+                    to[3 * i]     = e.force();
+                    to[3 * i + 1] = e.deformation(s.displacement());
+                    to[3 * i + 2] = e.history_variable();
                   }
               }};
     }
 
-    /// Force and penetration of each gap element (after the hysteretic ones).
+    /// Force and penetration of the gap elements `chosen`.
     Series
-    gap_state_series(const NonlinearElements &elements, const unsigned int n_hyst,
-                     const unsigned int n_gaps)
+    gap_state_series(const NonlinearElements &elements, const std::vector<unsigned int> &chosen)
     {
       std::vector<std::string> columns;
-      const unsigned int end = n_hyst + n_gaps;
-      for (unsigned int h = n_hyst; h < end; ++h)
+      for (const unsigned int h : chosen)
         {
           columns.push_back(elements[h].label + "_force_N");
           columns.push_back(elements[h].label + "_penetration_m");
         }
-      return {columns, [n_hyst, end](const ResponseView &s, std::vector<double> &to) {
-                to.clear();
-                for (unsigned int h = n_hyst; h < end; ++h)
+      return {columns, [chosen](const ResponseView &s, std::vector<double> &to) {
+                to.resize(2 * chosen.size());
+                for (unsigned int i = 0; i < chosen.size(); ++i)
                   {
-                    to.push_back(s.elements[h].force());
-                    to.push_back(s.elements[h].history_variable());
+                    to[2 * i]     = s.elements[chosen[i]].force();
+                    to[2 * i + 1] = s.elements[chosen[i]].history_variable();
                   }
               }};
     }
@@ -300,9 +337,27 @@ namespace poundfe
           case RecordedQuantity::member_forces:
             return member_force_series(request, forces, input_file, line);
           case RecordedQuantity::hinge_states:
-            return hinge_state_series(elements, n_hyst);
+            return hinge_state_series(
+              elements, elements_named(request.labels, state.model, elements, 0, n_hyst,
+                                       [&](const unsigned int h, const unsigned int b) {
+                                         return elements[h].building == b;
+                                       },
+                                       "hinge or Bouc-Wen storey", "A3_C1.2_bottom or A3_storey1",
+                                       input_file, line));
           case RecordedQuantity::gap_states:
-            return gap_state_series(elements, n_hyst, peaks.n_gaps());
+            {
+              // gaps follow the hysteretic elements, in model.gaps order
+              const Model &model = state.model;
+              return gap_state_series(
+                elements, elements_named(request.labels, model, elements, n_hyst,
+                                         n_hyst + peaks.n_gaps(),
+                                         [&](const unsigned int h, const unsigned int b) {
+                                           const Gap &gap = model.gaps[h - n_hyst];
+                                           return (gap.nodes[0] >= 0 && gap.buildings[0] == b) ||
+                                                  (gap.nodes[1] >= 0 && gap.buildings[1] == b);
+                                         },
+                                         "gap element", "A3-B2@6.5", input_file, line));
+            }
           case RecordedQuantity::energy:
             {
               // a column for the foundations' dashpots only when there are some
@@ -462,7 +517,10 @@ namespace poundfe
                       "('every 0': every step). A quantity listed here replaces its default. "
                       "Quantities (files): " + names + ". 'member end forces' needs the members, "
                       "e.g. 'member end forces of A3_C1.1, A3_B2.1' (building, C<storey>.<column "
-                      "line> or B<floor>.<bay>). Storey and base shear are element forces "
+                      "line> or B<floor>.<bay>). 'hinge states' and 'gap states' record all by "
+                      "default, or only those named: 'hinge states of A3_C1.2_bottom, B2' (a "
+                      "label, or a building's name for all of its hinges or gaps): for large "
+                      "models. Storey and base shear are element forces "
                       "(Rayleigh damping excluded, storey dashpots included). 'corner "
                       "acceleration' (3D models) is the absolute acceleration of every slab "
                       "corner along x and y. Unit: -.");
@@ -528,10 +586,15 @@ namespace poundfe
               if (!trim(label).empty())
                 request.labels.push_back(trim(label));
           }
-        const bool takes_labels = request.quantity == RecordedQuantity::member_forces;
-        if (takes_labels && request.labels.empty())
+        const bool needs_labels = request.quantity == RecordedQuantity::member_forces;
+        const bool takes_labels = needs_labels ||
+                                  request.quantity == RecordedQuantity::hinge_states ||
+                                  request.quantity == RecordedQuantity::gap_states;
+        if (needs_labels && request.labels.empty())
           throw std::invalid_argument("'" + name + "' needs the members: '" + name +
                                       " of A3_C1.1, A3_B1.1'");
+        if (takes_labels && of != std::string::npos && request.labels.empty())
+          throw std::invalid_argument("'" + name + " of' needs labels or building names after 'of'");
         if (!takes_labels && of != std::string::npos)
           throw std::invalid_argument("'" + name + "' takes no 'of' list");
         for (const RecorderRequest &r : requests)

@@ -23,6 +23,7 @@
 #include <iomanip>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -606,6 +607,16 @@ namespace poundfe
       return block + "EOD\n";
     }
 
+    /// Each name of `header` with its column (0: the first).
+    std::map<std::string, unsigned int>
+    columns_by_name(const std::vector<std::string> &header)
+    {
+      std::map<std::string, unsigned int> column_of;
+      for (unsigned int c = 0; c < header.size(); ++c)
+        column_of.emplace(header[c], c);
+      return column_of;
+    }
+
     /// The curves a figure draws of those with peaks `peaks`: all when a
     /// key can name them, else the max_named_curves with the largest peaks;
     /// in their order.
@@ -674,28 +685,50 @@ namespace poundfe
   void
   RunSummary::draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const
   {
-    // One loop per building: its hinge or storey with the largest peak
-    // plastic deformation (|d - F/k0|; mirror-image hinges of a symmetric
-    // frame tie, and the first is kept), moments in kN m, forces in kN.
-    const Model              &model = analysis.model;
-    std::vector<unsigned int> loops; // the elements drawn
+    // hinges.csv: time, then force, deformation and z of each recorded
+    // element (all, or those Record names), found by their column names
+    std::vector<std::string> header;
+    try
+      {
+        header = read_csv_header(directory + "/hinges.csv");
+      }
+    catch (const OutputError &)
+      {
+        return; // no loops without the file
+      }
+    const std::map<std::string, unsigned int> column_of = columns_by_name(header);
+    // One loop per building: of its recorded hinges or storeys, the one with
+    // the largest peak plastic deformation (|d - F/k0|; mirror-image hinges
+    // of a symmetric frame tie, and the first is kept), moments in kN m,
+    // forces in kN.
+    struct Loop
+    {
+      unsigned int element, force_column, deformation_column;
+    };
+    const Model      &model = analysis.model;
+    std::vector<Loop> loops;
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
-        int chosen = -1;
+        std::optional<Loop> chosen;
         for (unsigned int h = 0; h < peaks.n_hysteretic(); ++h)
-          if (state.elements[h].building == b &&
-              (chosen < 0 ||
-               peaks.peak_plastic_deformation()[h] > peaks.peak_plastic_deformation()[chosen]))
-            chosen = h;
-        if (chosen >= 0)
-          loops.push_back(chosen);
+          {
+            const NonlinearElement &e     = state.elements[h];
+            const bool              hinge = e.kind == ElementKind::hinge;
+            const auto f = column_of.find(e.label + (hinge ? "_moment_N_m" : "_force_N"));
+            const auto d = column_of.find(e.label + (hinge ? "_rotation_rad" : "_drift_m"));
+            if (e.building == b && f != column_of.end() && d != column_of.end() &&
+                (!chosen || peaks.peak_plastic_deformation()[h] >
+                              peaks.peak_plastic_deformation()[chosen->element]))
+              chosen = Loop{h, f->second, d->second};
+          }
+        if (chosen)
+          loops.push_back(*chosen);
       }
-    // hinges.csv: time, then force, deformation and z of each element. Its
-    // loops' columns in one pass (gnuplot would read the file once per
-    // loop); if that fails, gnuplot reads the file.
+    // the loops' columns in one pass (gnuplot would read the file once per
+    // loop); if that fails, gnuplot reads the file
     std::vector<unsigned int> columns;
-    for (const unsigned int h : loops)
-      columns.insert(columns.end(), {3 * h + 2, 3 * h + 1});
+    for (const Loop &loop : loops)
+      columns.insert(columns.end(), {loop.deformation_column, loop.force_column});
     std::vector<std::vector<double>> values;
     try
       {
@@ -705,7 +738,7 @@ namespace poundfe
       {}
     for (unsigned int i = 0; i < loops.size(); ++i)
       {
-        const unsigned int      h     = loops[i];
+        const unsigned int      h     = loops[i].element;
         const NonlinearElement &e     = state.elements[h];
         const bool              hinge = e.kind == ElementKind::hinge;
         std::ostringstream      title;
@@ -716,7 +749,8 @@ namespace poundfe
         Plot plot{"hysteresis_" + e.label + ".png", title.str(),
                   hinge ? "rotation (rad)" : "drift (m)", hinge ? "moment (kN m)" : "force (kN)",
                   {{"hinges.csv",
-                    std::to_string(3 * h + 3) + ":($" + std::to_string(3 * h + 2) + "/1000)",
+                    std::to_string(loops[i].deformation_column + 1) + ":($" +
+                      std::to_string(loops[i].force_column + 1) + "/1000)",
                     e.label, "lines"}}};
         if (!values.empty())
           {
@@ -734,29 +768,47 @@ namespace poundfe
   {
     Plot plot{"contact_force.png", "Contact forces of the gap elements", "time (s)",
               "contact force (kN)", {}};
-    // contact_force.csv: time, then force and penetration of each gap
-    const unsigned int n_gaps = model.gaps.size();
+    // contact_force.csv: time, then force and penetration of each recorded
+    // gap (all, or those Record names), found by their column names
+    std::vector<std::string> header;
+    try
+      {
+        header = read_csv_header(directory + "/contact_force.csv");
+      }
+    catch (const OutputError &)
+      {
+        return plot; // drawn without curves: the run's file is missing or damaged
+      }
+    const std::map<std::string, unsigned int> column_of = columns_by_name(header);
+    std::vector<unsigned int> recorded, force_column; // gaps, their force's column
+    for (unsigned int g = 0; g < model.gaps.size(); ++g)
+      if (const auto c = column_of.find(model.gaps[g].label + "_force_N"); c != column_of.end())
+        {
+          recorded.push_back(g);
+          force_column.push_back(c->second);
+        }
+    const unsigned int n_gaps = recorded.size();
     if (n_gaps <= max_named_curves)
       {
-        for (unsigned int g = 0; g < n_gaps; ++g)
-          plot.series.push_back({"contact_force.csv", "1:($" + std::to_string(2 * g + 2) + "/1000)",
-                                 model.gaps[g].label, "lines"});
+        for (unsigned int i = 0; i < n_gaps; ++i)
+          plot.series.push_back({"contact_force.csv",
+                                 "1:($" + std::to_string(force_column[i] + 1) + "/1000)",
+                                 model.gaps[recorded[i]].label, "lines"});
         return plot;
       }
     // More gaps than a key can name: the total force between each pair of
     // buildings (or a building and a barrier) that have gaps between them.
-    std::map<std::string, std::vector<unsigned int>> pairs; // name: its gaps
-    for (unsigned int g = 0; g < n_gaps; ++g)
+    std::map<std::string, std::vector<unsigned int>> pairs; // name: its gaps (of `recorded`)
+    for (unsigned int i = 0; i < n_gaps; ++i)
       {
-        const Gap  &gap  = model.gaps[g];
+        const Gap  &gap  = model.gaps[recorded[i]];
         const auto  side = [&](const unsigned int i) {
           return gap.nodes[i] < 0 ? std::string("barrier") : model.buildings[gap.buildings[i]].name;
         };
-        pairs[side(0) + "-" + side(1)].push_back(g);
+        pairs[side(0) + "-" + side(1)].push_back(i);
       }
     std::vector<unsigned int> columns{0};
-    for (unsigned int g = 0; g < n_gaps; ++g)
-      columns.push_back(2 * g + 1);
+    columns.insert(columns.end(), force_column.begin(), force_column.end());
     std::vector<std::vector<double>> values;
     try
       {
@@ -772,9 +824,9 @@ namespace poundfe
     for (const auto &[name, gaps] : pairs)
       {
         std::vector<double> total(values[0].size(), 0.0);
-        for (const unsigned int g : gaps)
+        for (const unsigned int i : gaps)
           for (std::size_t r = 0; r < total.size(); ++r)
-            total[r] += values[g + 1][r];
+            total[r] += values[i + 1][r];
         double peak = 0;
         for (const double f : total)
           peak = std::max(peak, std::abs(f));

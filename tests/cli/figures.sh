@@ -4,6 +4,8 @@
 #  1. a frame row with hinges (input/three-buildings-row.prm): one
 #     hysteresis loop per building, drawn from data blocks of hinges.csv's
 #     columns, each a PNG and listed in summary.json; no figure missing;
+#     with 'hinge states of B2, A3_C1.2_bottom', the loops of B2 (the same
+#     hinge as with all recorded) and of A3_C1.2_bottom alone;
 #  2. a shear pair of 14 storeys (14 gaps: more than a key names): the
 #     contact figure is drawn (its curves, the pair's total force, are
 #     checked in tests/report/test_contact_force_plot.cc), no figure missing;
@@ -31,6 +33,16 @@ for png in "$work/row"/hysteresis_*.png; do
 done
 no_missing "$work/row"
 echo "ok   one hysteresis loop per building"
+# the loops of the hinges recorded: B2's (all of them), A3's one, none of C4
+sed 's/^subsection Output$/subsection Output\n  subsection Recorders\n    set Record = hinge states of B2, A3_C1.2_bottom; gap states of C4\n  end/' \
+  "$input/three-buildings-row.prm" > "$work/chosen.prm"
+"$poundfe" run "$work/chosen.prm" --output "$work/chosen" > /dev/null
+loops=$(cd "$work/chosen" && ls hysteresis_*.png | tr '\n' ' ')
+[ "$loops" = "hysteresis_A3_C1.2_bottom.png $(cd "$work/row" && ls hysteresis_B2_*.png) " ] ||
+  fail "loops of the recorded hinges: $loops"
+is_png "$work/chosen/contact_force.png" || fail "no contact_force.png of the recorded gaps"
+no_missing "$work/chosen"
+echo "ok   the loops of the recorded hinges: $loops"
 
 sed -e 's/Number of storeys  = [23]/Number of storeys  = 14/' -e 's/Duration   = 10/Duration   = 2/' \
   "$input/shear-pair-pounding.prm" > "$work/tall.prm"

@@ -32,6 +32,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 using namespace poundfe;
@@ -306,4 +307,58 @@ BOOST_AUTO_TEST_CASE(recorder_input_errors)
                                      make_excitation(analysis, input), options),
                     InputError);
   BOOST_TEST(!std::filesystem::exists(options.output_directory)); // nothing written
+}
+
+// 'hinge states of ...' and 'gap states of ...' (large models record a few):
+// input/three-buildings-row.prm (A3, B2, C4; hinges and gaps) run with all of
+// them (the default) and with 'hinge states of B2, A3_C1.2_bottom; gap states
+// of C4'. Reference: the columns the test picks from the full run's header by
+// their labels' text (a hinge of B2 starts with "B2_"; a gap "X-Y@level"
+// touches C4 when X or Y is C4), in its order; their values to the bit (the
+// recorders do not change the run). A label that names nothing is an
+// InputError naming the entry, before any file is written.
+BOOST_AUTO_TEST_CASE(hinge_and_gap_states_of_chosen_labels_are_those_columns_of_the_full_ones)
+{
+  const auto run = [](const std::string &name, const std::string &record) {
+    std::ifstream in("input/three-buildings-row.prm");
+    std::string   text((std::istreambuf_iterator<char>(in)), {});
+    const std::size_t output = text.find("subsection Output\n");
+    BOOST_REQUIRE(output != std::string::npos);
+    text.insert(output + 18, "  set Plots = false\n  subsection Recorders\n    set Record = " +
+                               record + "\n  end\n");
+    const InputParameters input    = read_parameters(write_input(name, text));
+    const Analysis        analysis = prepare_analysis(input);
+    RunOptions            options;
+    options.output_directory = poundfe_test::fresh_directory(name);
+    run_time_history(analysis, run_parameters(input), make_excitation(analysis, input), options);
+    return options.output_directory;
+  };
+  const std::string all    = run("states-all", "");
+  const std::string chosen = run("states-chosen", "hinge states of B2, A3_C1.2_bottom; gap states of C4");
+  const auto check = [&](const std::string &file, const std::function<bool(const std::string &)> &wanted) {
+    const Table full = read_csv(all + "/" + file), part = read_csv(chosen + "/" + file);
+    std::vector<std::string> expected{"time_s"};
+    for (const std::string &name : full.header)
+      if (name != "time_s" && wanted(name))
+        expected.push_back(name);
+    BOOST_REQUIRE_GT(expected.size(), 1u);
+    BOOST_REQUIRE_LT(expected.size(), full.header.size());
+    BOOST_REQUIRE(part.header == expected);
+    BOOST_REQUIRE_EQUAL(part.rows.size(), full.rows.size());
+    for (unsigned int c = 0; c < expected.size(); ++c)
+      for (unsigned int r = 0; r < full.rows.size(); ++r)
+        BOOST_CHECK_EQUAL(part.rows[r][c], full.rows[r][full.column(expected[c])]);
+  };
+  check("hinges.csv", [](const std::string &name) {
+    return name.rfind("B2_", 0) == 0 || name.rfind("A3_C1.2_bottom_", 0) == 0;
+  });
+  check("contact_force.csv", [](const std::string &name) {
+    const std::string pair = name.substr(0, name.find('@')); // "X-Y"
+    return pair.rfind("C4-", 0) == 0 || (pair.size() >= 3 && pair.substr(pair.size() - 3) == "-C4");
+  });
+  // a label that names nothing
+  BOOST_CHECK_THROW(run("states-bad", "hinge states of B2_C9.9_bottom"), InputError);
+  BOOST_TEST(!std::filesystem::exists(std::filesystem::temp_directory_path() / "poundfe-states-bad"));
+  BOOST_CHECK_THROW(RecorderParameters::parse("gap states of"), std::invalid_argument);
+  BOOST_CHECK_THROW(RecorderParameters::parse("energy of A3"), std::invalid_argument);
 }

@@ -19,6 +19,10 @@ namespace poundfe
   /// requested column or a value is not a number.
   std::vector<std::vector<double>>
   read_csv_columns(const std::string &path, const std::vector<unsigned int> &columns);
+
+  /// The column names of the CSV file `path` (its first line); OutputError
+  /// if it cannot be read.
+  std::vector<std::string> read_csv_header(const std::string &path);
 } // namespace poundfe
 
 #endif

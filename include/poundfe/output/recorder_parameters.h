@@ -54,7 +54,7 @@ namespace poundfe
   struct RecorderRequest
   {
     RecordedQuantity         quantity = RecordedQuantity::floor_displacement;
-    std::vector<std::string> labels;          // member_forces: the members
+    std::vector<std::string> labels; // member_forces: the members; hinge/gap states: labels or building names (empty: all)
     double                   interval = -1.0; // s; < 0: the Output interval
   };
 
