@@ -638,12 +638,37 @@ namespace poundfe
           }
         std::vector<std::string> header{"time_s"};
         header.insert(header.end(), next->columns.begin(), next->columns.end());
-        const double interval = r.interval >= 0 ? r.interval : parameters.output_interval;
+        const double       interval = r.interval >= 0 ? r.interval : parameters.output_interval;
+        const unsigned int every    = steps_per_interval(interval, time_step);
+        recorders.tables.push_back({r.quantity, table_files(parameters.format, q.stem).front(),
+                                    static_cast<unsigned int>(header.size()), every});
         recorders.observers.push_back(std::make_unique<SeriesRecorder>(
-          make_table_writer(parameters.format, directory, q.stem, header, text),
-          steps_per_interval(interval, time_step), std::move(next->row)));
+          make_table_writer(parameters.format, directory, q.stem, header, text), every,
+          std::move(next->row)));
         ++next;
       }
     return recorders;
+  }
+
+  std::string
+  large_table_note(const TableShape &table, const unsigned long n_steps, const OutputFormat format)
+  {
+    const double bytes_per_number = format == OutputFormat::csv ? 21 : 8;
+    const double n_rows           = double(n_steps / std::max(table.every, 1u) + 1);
+    const double bytes            = bytes_per_number * table.n_columns * n_rows;
+    if (bytes <= 1e9)
+      return "";
+    const std::string name = info(table.quantity).name;
+    const bool        named = table.quantity == RecordedQuantity::hinge_states ||
+                       table.quantity == RecordedQuantity::gap_states;
+    std::ostringstream note;
+    note << std::fixed;
+    note.precision(1);
+    note << "poundfe: note: " << table.file << " will be about " << bytes / 1e9 << " GB ("
+         << table.n_columns << " columns, " << static_cast<unsigned long>(n_rows)
+         << " rows); Output/Recorders/Record = '" << name
+         << (named ? " of <labels or buildings>' or '" + name : std::string()) << " every <s>'"
+         << " records less\n";
+    return note.str();
   }
 } // namespace poundfe

@@ -121,6 +121,9 @@ namespace poundfe
             {
               Recorders recorders = make_recorders(
                 output.recorders, parameters.time_history.input.file, view, peaks, dt, directory);
+              if (options.console)
+                for (const TableShape &table : recorders.tables)
+                  *options.console << large_table_note(table, n_steps, output.recorders.format);
               outputs = std::move(recorders.observers);
               files   = std::move(recorders.files);
             }

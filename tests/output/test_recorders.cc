@@ -362,3 +362,26 @@ BOOST_AUTO_TEST_CASE(hinge_and_gap_states_of_chosen_labels_are_those_columns_of_
   BOOST_CHECK_THROW(RecorderParameters::parse("gap states of"), std::invalid_argument);
   BOOST_CHECK_THROW(RecorderParameters::parse("energy of A3"), std::invalid_argument);
 }
+
+// The console's note on a table that would pass 1 GB: the city block's
+// hinges.csv (29,197 columns) every step of 2,000 is 21 bytes x 29,197 x
+// 2,001 = 1.23 GB in CSV; in .npy (8 bytes a number) 0.47 GB and a row every
+// 10 steps 0.12 GB: no note. A quantity that takes no labels is told 'every'.
+BOOST_AUTO_TEST_CASE(a_table_past_a_gigabyte_is_noted_with_how_to_record_less)
+{
+  const TableShape hinges{RecordedQuantity::hinge_states, "hinges.csv", 29197, 1};
+  BOOST_CHECK_EQUAL(large_table_note(hinges, 2000, OutputFormat::csv),
+                    "poundfe: note: hinges.csv will be about 1.2 GB (29197 columns, 2001 rows); "
+                    "Output/Recorders/Record = 'hinge states of <labels or buildings>' or 'hinge "
+                    "states every <s>' records less\n");
+  BOOST_CHECK_EQUAL(large_table_note(hinges, 2000, OutputFormat::npy), "");
+  BOOST_CHECK_EQUAL(large_table_note({RecordedQuantity::hinge_states, "hinges.csv", 29197, 10}, 2000,
+                                     OutputFormat::csv),
+                    "");
+  BOOST_CHECK_EQUAL(large_table_note({RecordedQuantity::floor_acceleration, "floor_acceleration.csv",
+                                      4801, 1},
+                                     20000000, OutputFormat::csv),
+                    "poundfe: note: floor_acceleration.csv will be about 2016.4 GB (4801 columns, "
+                    "20000001 rows); Output/Recorders/Record = 'floor acceleration every <s>' "
+                    "records less\n");
+}

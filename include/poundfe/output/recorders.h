@@ -21,13 +21,29 @@ namespace poundfe
   /// Steps between rows for an interval in s (0: every step).
   unsigned int steps_per_interval(double interval, double time_step);
 
+  /// A time-series table a recorder writes.
+  struct TableShape
+  {
+    RecordedQuantity quantity;
+    std::string      file;      // its table, e.g. "hinges.csv"
+    unsigned int     n_columns; // with the time
+    unsigned int     every;     // steps between rows
+  };
+
   /// The recorders of a run and the files they write (names in its
   /// directory, each table before its columns file).
   struct Recorders
   {
     std::vector<std::unique_ptr<StepObserver>> observers;
     std::vector<std::string>                   files;
+    std::vector<TableShape>                    tables;
   };
+
+  /// For the console, when `table` over a run of `n_steps` steps would
+  /// pass 1 GB in `format` (a CSV number takes about 21 bytes: the city
+  /// block's hinges.csv; .npy 8): its size and how to record less. Empty
+  /// otherwise.
+  std::string large_table_note(const TableShape &table, unsigned long n_steps, OutputFormat format);
 
   /// The requested recorders plus the defaults, as observers writing into
   /// `directory` in `parameters.format`. They read the floor response of
