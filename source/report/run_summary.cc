@@ -18,6 +18,7 @@
 #include <poundfe/output/response_range.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -645,6 +646,62 @@ namespace poundfe
              " with the largest peaks";
     }
 
+    /// read_csv_columns, or nothing when the file cannot be read (a figure
+    /// then falls back or goes without those curves).
+    std::vector<std::vector<double>>
+    columns_if_readable(const std::string &path, const std::vector<unsigned int> &columns)
+    {
+      try
+        {
+          return read_csv_columns(path, columns);
+        }
+      catch (const OutputError &)
+        {
+          return {};
+        }
+    }
+
+    /// Each column name of the CSV file `path` with its column (0: the
+    /// first); nothing when the file cannot be read.
+    std::optional<std::map<std::string, unsigned int>>
+    columns_by_name_if_readable(const std::string &path)
+    {
+      try
+        {
+          return columns_by_name(read_csv_header(path));
+        }
+      catch (const OutputError &)
+        {
+          return std::nullopt;
+        }
+    }
+
+    /// max |x|.
+    double
+    peak_magnitude(const std::vector<double> &x)
+    {
+      double peak = 0;
+      for (const double v : x)
+        peak = std::max(peak, std::abs(v));
+      return peak;
+    }
+
+    /// The curves `drawn` of `y` against `x`, as data blocks "$<prefix>1",
+    /// "$<prefix>2", ... under `header`, each titled and plotted `using`.
+    void
+    add_drawn_curves(Plot &plot, const std::string &prefix, const std::string &header,
+                     const std::vector<double> &x, const std::vector<const std::vector<double> *> &y,
+                     const std::vector<std::string> &titles, const std::vector<unsigned int> &drawn,
+                     const std::string &using_spec)
+    {
+      for (unsigned int i = 0; i < drawn.size(); ++i)
+        {
+          const std::string name = "$" + prefix + std::to_string(i + 1);
+          plot.data_blocks += data_block(name, header, x, *y[drawn[i]]);
+          plot.series.push_back({name, using_spec, titles[drawn[i]], "lines"});
+        }
+    }
+
     /// A curve of column `columns[i]` (0: the first) of `file` in
     /// `directory` against its first column (time) for each title, its
     /// values divided by `divisor`. A few are read by gnuplot from the file;
@@ -662,14 +719,9 @@ namespace poundfe
       };
       std::vector<unsigned int> read{0};
       read.insert(read.end(), columns.begin(), columns.end());
-      std::vector<std::vector<double>> values;
-      if (in_one_pass)
-        try
-          {
-            values = read_csv_columns(directory + "/" + file, read);
-          }
-        catch (const OutputError &)
-          {}
+      const std::vector<std::vector<double>> values =
+        in_one_pass ? columns_if_readable(directory + "/" + file, read) :
+                      std::vector<std::vector<double>>();
       for (unsigned int i = 0; i < columns.size(); ++i)
         if (values.empty())
           plot.series.push_back({file, scaled(columns[i]), titles[i], "lines"});
@@ -680,6 +732,38 @@ namespace poundfe
             plot.series.push_back({name, scaled(1), titles[i], "lines"});
           }
     }
+
+    /// A curve per building of column `column_of[b]` of `file` (add_time_series),
+    /// of those curves_to_draw picks by `peaks`, titled by the building's name.
+    void
+    add_building_series(Plot &plot, const Model &model, const std::string &directory,
+                        const std::string &file, const std::vector<unsigned int> &column_of,
+                        const std::vector<double> &peaks, const std::string &divisor)
+    {
+      std::vector<unsigned int> columns;
+      std::vector<std::string>  titles;
+      for (const unsigned int b : curves_to_draw(peaks))
+        {
+          columns.push_back(column_of[b]);
+          titles.push_back(model.buildings[b].name);
+        }
+      const std::size_t n_buildings = model.buildings.size();
+      plot.title = title_of_drawn(plot.title, columns.size(), n_buildings, "buildings");
+      add_time_series(plot, directory, file, columns, titles, divisor, columns.size() < n_buildings);
+    }
+
+    /// The largest of `values` (indexed by FloorResponse::index) over each
+    /// building's floors.
+    std::vector<double>
+    peak_per_building(const Model &model, const FloorResponse &floors,
+                      const std::vector<double> &values)
+    {
+      std::vector<double> peak(model.buildings.size(), 0.0);
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        for (unsigned int f = 0; f < model.buildings[b].floors.size(); ++f)
+          peak[b] = std::max(peak[b], values[floors.index(b, f)]);
+      return peak;
+    }
   } // namespace
 
   void
@@ -687,16 +771,10 @@ namespace poundfe
   {
     // hinges.csv: time, then force, deformation and z of each recorded
     // element (all, or those Record names), found by their column names
-    std::vector<std::string> header;
-    try
-      {
-        header = read_csv_header(directory + "/hinges.csv");
-      }
-    catch (const OutputError &)
-      {
-        return; // no loops without the file
-      }
-    const std::map<std::string, unsigned int> column_of = columns_by_name(header);
+    const auto names = columns_by_name_if_readable(directory + "/hinges.csv");
+    if (!names)
+      return; // no loops without the file
+    const std::map<std::string, unsigned int> &column_of = *names;
     // One loop per building: of its recorded hinges or storeys, the one with
     // the largest peak plastic deformation (|d - F/k0|; mirror-image hinges
     // of a symmetric frame tie, and the first is kept), moments in kN m,
@@ -729,13 +807,8 @@ namespace poundfe
     std::vector<unsigned int> columns;
     for (const Loop &loop : loops)
       columns.insert(columns.end(), {loop.deformation_column, loop.force_column});
-    std::vector<std::vector<double>> values;
-    try
-      {
-        values = read_csv_columns(directory + "/hinges.csv", columns);
-      }
-    catch (const OutputError &)
-      {}
+    const std::vector<std::vector<double>> values =
+      columns_if_readable(directory + "/hinges.csv", columns);
     for (unsigned int i = 0; i < loops.size(); ++i)
       {
         const unsigned int      h     = loops[i].element;
@@ -770,16 +843,10 @@ namespace poundfe
               "contact force (kN)", {}};
     // contact_force.csv: time, then force and penetration of each recorded
     // gap (all, or those Record names), found by their column names
-    std::vector<std::string> header;
-    try
-      {
-        header = read_csv_header(directory + "/contact_force.csv");
-      }
-    catch (const OutputError &)
-      {
-        return plot; // drawn without curves: the run's file is missing or damaged
-      }
-    const std::map<std::string, unsigned int> column_of = columns_by_name(header);
+    const auto names = columns_by_name_if_readable(directory + "/contact_force.csv");
+    if (!names)
+      return plot; // drawn without curves: the run's file is missing or damaged
+    const std::map<std::string, unsigned int> &column_of = *names;
     std::vector<unsigned int> recorded, force_column; // gaps, their force's column
     for (unsigned int g = 0; g < model.gaps.size(); ++g)
       if (const auto c = column_of.find(model.gaps[g].label + "_force_N"); c != column_of.end())
@@ -809,16 +876,11 @@ namespace poundfe
       }
     std::vector<unsigned int> columns{0};
     columns.insert(columns.end(), force_column.begin(), force_column.end());
-    std::vector<std::vector<double>> values;
-    try
-      {
-        values = read_csv_columns(directory + "/contact_force.csv", columns);
-      }
-    catch (const OutputError &)
-      {
-        return plot; // drawn without curves: the run's file is missing or damaged
-      }
-    std::vector<std::string>         names;
+    const std::vector<std::vector<double>> values =
+      columns_if_readable(directory + "/contact_force.csv", columns);
+    if (values.empty())
+      return plot; // drawn without curves: the run's file is missing or damaged
+    std::vector<std::string>         titles;
     std::vector<std::vector<double>> totals; // N, at each row
     std::vector<double>              peaks;
     for (const auto &[name, gaps] : pairs)
@@ -827,23 +889,18 @@ namespace poundfe
         for (const unsigned int i : gaps)
           for (std::size_t r = 0; r < total.size(); ++r)
             total[r] += values[i + 1][r];
-        double peak = 0;
-        for (const double f : total)
-          peak = std::max(peak, std::abs(f));
-        names.push_back(name);
+        titles.push_back(name);
+        peaks.push_back(peak_magnitude(total));
         totals.push_back(std::move(total));
-        peaks.push_back(peak);
       }
     const std::vector<unsigned int> drawn = curves_to_draw(peaks);
     plot.title = title_of_drawn("Total contact force between adjacent buildings (" +
                                   std::to_string(n_gaps) + " gap elements)",
-                                drawn.size(), names.size(), "pairs");
-    for (unsigned int i = 0; i < drawn.size(); ++i)
-      {
-        const std::string name = "$pair" + std::to_string(i + 1);
-        plot.data_blocks += data_block(name, "time,force", values[0], totals[drawn[i]]);
-        plot.series.push_back({name, "1:($2/1000)", names[drawn[i]], "lines"});
-      }
+                                drawn.size(), titles.size(), "pairs");
+    std::vector<const std::vector<double> *> curves;
+    for (const std::vector<double> &total : totals)
+      curves.push_back(&total);
+    add_drawn_curves(plot, "pair", "time,force", values[0], curves, titles, drawn, "1:($2/1000)");
     return plot;
   }
 
@@ -874,69 +931,39 @@ namespace poundfe
     // more floors than a key names: those whose spectrum peaks highest
     std::vector<unsigned int> read{0};
     read.insert(read.end(), columns.begin(), columns.end());
-    std::vector<std::vector<double>> values;
-    try
-      {
-        values = read_csv_columns(directory + "/floor_spectra.csv", read);
-      }
-    catch (const OutputError &)
-      {
-        return plot; // the ground's curve alone: the file is missing or damaged
-      }
-    std::vector<double> peaks(columns.size(), 0.0);
+    const std::vector<std::vector<double>> values =
+      columns_if_readable(directory + "/floor_spectra.csv", read);
+    if (values.empty())
+      return plot; // the ground's curve alone: the file is missing or damaged
+    std::vector<double>                      peaks;
+    std::vector<const std::vector<double> *> curves;
     for (unsigned int i = 0; i < columns.size(); ++i)
-      for (const double psa : values[i + 1])
-        peaks[i] = std::max(peaks[i], std::abs(psa));
+      {
+        peaks.push_back(peak_magnitude(values[i + 1]));
+        curves.push_back(&values[i + 1]);
+      }
     const std::vector<unsigned int> drawn = curves_to_draw(peaks);
     plot.title = title_of_drawn(plot.title, drawn.size(), columns.size(), "floors");
-    for (unsigned int i = 0; i < drawn.size(); ++i)
-      {
-        const std::string name = "$floor" + std::to_string(i + 1);
-        plot.data_blocks += data_block(name, "period,psa", values[0], values[drawn[i] + 1]);
-        plot.series.push_back({name, "1:2", titles[drawn[i]], "lines"});
-      }
+    add_drawn_curves(plot, "floor", "period,psa", values[0], curves, titles, drawn, "1:2");
     return plot;
   }
 
-  std::vector<std::string>
-  RunSummary::draw(const ResponseView &state) const
+  std::array<Plot, 2>
+  RunSummary::profile_plots() const
   {
-    const Model         &model  = analysis.model;
-    const FloorResponse &floors = peaks.floors();
     // Profiles against the height above the ground: a storey's drift ratio
     // holds over the storey (a step), a floor's acceleration belongs to its
-    // level, joined to the ground's PGA.
+    // level, joined to the ground's PGA. Beyond max_named_curves buildings,
+    // those with the largest peaks.
+    const Model         &model  = analysis.model;
+    const FloorResponse &floors = peaks.floors();
     Plot drift{"drift_profile.png", "Peak inter-storey drift ratio against height",
                "peak |inter-storey drift ratio|", "height above the ground (m)", {}};
     Plot accel{"acceleration_profile.png", "Peak absolute floor acceleration against height",
                "peak |absolute acceleration| (m/s^2)", "height above the ground (m)", {}};
     drift.settings = accel.settings = "set xrange [0:*]\nset yrange [0:*]\n";
-    Plot roof{"roof_displacement.png", "Roof displacement (relative to the ground)", "time (s)",
-              "displacement (m)", {}};
-    const double pga = excitation.ground_motion().empty() ? 0 : excitation.ground_motion().peak();
-    // A figure with a curve per building draws, when there are more than a
-    // key names, those with the largest peaks of its quantity.
-    const unsigned int        n_buildings = model.buildings.size();
-    std::vector<double>       peak_drift(n_buildings, 0), peak_accel(n_buildings, 0),
-      peak_roof(n_buildings, 0);
-    std::vector<unsigned int> roof_column(n_buildings); // of floor_displacement.csv (0: time)
-    std::vector<std::string>  names;
-    for (unsigned int b = 0, column = 1; b < n_buildings; ++b)
-      {
-        const unsigned int n_floors = model.buildings[b].floors.size();
-        for (unsigned int f = 0; f < n_floors; ++f)
-          {
-            const unsigned int i = floors.index(b, f);
-            peak_drift[b] = std::max(peak_drift[b], floors.peak_drift_ratio()[i]);
-            peak_accel[b] = std::max(peak_accel[b], floors.peak_acceleration()[i]);
-          }
-        if (n_floors > 0)
-          peak_roof[b] = floors.peak_displacement()[floors.index(b, n_floors - 1)];
-        column += n_floors;
-        roof_column[b] = column - 1;
-        names.push_back(model.buildings[b].name);
-      }
-    for (const unsigned int b : curves_to_draw(peak_drift))
+    for (const unsigned int b :
+         curves_to_draw(peak_per_building(model, floors, floors.peak_drift_ratio())))
       {
         const Building    &building = model.buildings[b];
         std::ostringstream d;
@@ -951,12 +978,13 @@ namespace poundfe
         drift.data_blocks += d.str() + "EOD\n";
         drift.series.push_back({"$drift" + std::to_string(b + 1), "1:2", building.name, "lines lw 2"});
       }
-    for (const unsigned int b : curves_to_draw(peak_accel))
+    for (const unsigned int b :
+         curves_to_draw(peak_per_building(model, floors, floors.peak_acceleration())))
       {
         const Building    &building = model.buildings[b];
         std::ostringstream a;
-        a << std::setprecision(10) << "$accel" << b + 1 << " << EOD\nacceleration,height\n" << pga
-          << ",0\n";
+        a << std::setprecision(10) << "$accel" << b + 1 << " << EOD\nacceleration,height\n"
+          << peak_ground_acceleration() << ",0\n";
         for (unsigned int f = 0; f < building.floors.size(); ++f)
           a << floors.peak_acceleration()[floors.index(b, f)] << ','
             << building.floors[f].level - building.base_level << '\n';
@@ -964,46 +992,68 @@ namespace poundfe
         accel.series.push_back(
           {"$accel" + std::to_string(b + 1), "1:2", building.name, "linespoints lw 2 pt 7"});
       }
+    const std::size_t n_buildings = model.buildings.size();
     drift.title = title_of_drawn(drift.title, drift.series.size(), n_buildings, "buildings");
     accel.title = title_of_drawn(accel.title, accel.series.size(), n_buildings, "buildings");
-    {
-      std::vector<unsigned int> columns;
-      std::vector<std::string>  titles;
-      for (const unsigned int b : curves_to_draw(peak_roof))
-        {
-          columns.push_back(roof_column[b]);
-          titles.push_back(names[b]);
-        }
-      roof.title = title_of_drawn(roof.title, columns.size(), n_buildings, "buildings");
-      add_time_series(roof, directory, "floor_displacement.csv", columns, titles, "",
-                      columns.size() < n_buildings);
-    }
     add_drift_limits(model, floors.peak_drift_ratio(), parameters.drift_limits.limits(), drift);
-    std::vector<Plot> all{drift, accel};
+    return {{drift, accel}};
+  }
+
+  Plot
+  RunSummary::roof_plot() const
+  {
+    // floor_displacement.csv: time, then each building's floors, bottom to top
+    const Model         &model  = analysis.model;
+    const FloorResponse &floors = peaks.floors();
+    std::vector<unsigned int> roof_column;
+    std::vector<double>       peak_roof;
+    for (unsigned int b = 0, column = 1; b < model.buildings.size(); ++b)
+      {
+        const unsigned int n_floors = model.buildings[b].floors.size();
+        column += n_floors;
+        roof_column.push_back(column - 1);
+        peak_roof.push_back(n_floors > 0 ? floors.peak_displacement()[floors.index(b, n_floors - 1)] :
+                                           0.0);
+      }
+    Plot roof{"roof_displacement.png", "Roof displacement (relative to the ground)", "time (s)",
+              "displacement (m)", {}};
+    add_building_series(roof, model, directory, "floor_displacement.csv", roof_column, peak_roof, "");
+    return roof;
+  }
+
+  Plot
+  RunSummary::base_shear_plot() const
+  {
+    const Model &model = analysis.model;
+    Plot shear{"base_shear.png", "Base shear (element forces)", "time (s)", "base shear (kN)", {}};
+    std::vector<unsigned int> column(model.buildings.size()); // base_shear.csv: time, a building each
+    std::iota(column.begin(), column.end(), 1u);
+    std::vector<double> peak_shear = base_shears.peak();
+    peak_shear.resize(model.buildings.size(), 0.0); // not observed: a run stopped before its start
+    add_building_series(shear, model, directory, "base_shear.csv", column, peak_shear, "1000");
+    return shear;
+  }
+
+  double
+  RunSummary::peak_ground_acceleration() const
+  {
+    return excitation.ground_motion().empty() ? 0 : excitation.ground_motion().peak();
+  }
+
+  std::vector<std::string>
+  RunSummary::draw(const ResponseView &state) const
+  {
+    const Model      &model    = analysis.model;
+    const auto        profiles = profile_plots();
+    std::vector<Plot> all(profiles.begin(), profiles.end());
     if (writes("floor_displacement.csv"))
-      all.push_back(roof);
-    if (writes("ground_motion.csv") && pga > 0) // not for force-driven runs
+      all.push_back(roof_plot());
+    if (writes("ground_motion.csv") && peak_ground_acceleration() > 0) // not for force-driven runs
       all.push_back(Plot{"ground_motion.png", excitation.ground_motion().description(),
                          "time (s)", "ground acceleration (m/s^2)",
                          {{"ground_motion.csv", "1:2", "a_g", "lines"}}});
     if (writes("base_shear.csv"))
-      {
-        Plot shear{"base_shear.png", "Base shear (element forces)", "time (s)", "base shear (kN)",
-                   {}};
-        std::vector<double> peak_shear = base_shears.peak(); // base_shear.csv: time, a building each
-        peak_shear.resize(n_buildings, 0.0); // not observed: a run stopped before its start
-        std::vector<unsigned int> columns;
-        std::vector<std::string>  titles;
-        for (const unsigned int b : curves_to_draw(peak_shear))
-          {
-            columns.push_back(b + 1);
-            titles.push_back(names[b]);
-          }
-        shear.title = title_of_drawn(shear.title, columns.size(), n_buildings, "buildings");
-        add_time_series(shear, directory, "base_shear.csv", columns, titles, "1000",
-                        columns.size() < n_buildings);
-        all.push_back(shear);
-      }
+      all.push_back(base_shear_plot());
     if (writes("energy.csv"))
       all.push_back(energy_plot());
     if (writes("hinges.csv"))

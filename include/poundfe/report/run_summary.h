@@ -16,6 +16,7 @@
 #include <poundfe/output/plots.h>
 #include <poundfe/output/storey_forces.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,14 @@ namespace poundfe
     void write_drift_checks(JsonWriter &json, unsigned int b) const;
     /// x against x' of each equation of a one- or two-DOF model, stick marked.
     void draw_phase_portraits(std::vector<Plot> &plots) const;
+    /// drift_profile.png and acceleration_profile.png (with the drift limits).
+    std::array<Plot, 2> profile_plots() const;
+    /// roof_displacement.png, from floor_displacement.csv.
+    Plot roof_plot() const;
+    /// base_shear.png, from base_shear.csv.
+    Plot base_shear_plot() const;
+    /// The ground motion's peak, m/s^2 (0 without one).
+    double peak_ground_acceleration() const;
     /// energy.png: the terms, and a panel with contact/friction energy and
     /// the balance error.
     Plot energy_plot() const;
