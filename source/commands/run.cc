@@ -89,13 +89,14 @@ namespace poundfe::commands
     const bool          root = writes_outputs();
     dealii::TimerOutput timer(run.out, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
 
+    const RunParameters parameters = run_parameters(input);
+    const bool partitioned = input.time_integration.partition == RunPartition::buildings;
     RunOptions options;
-    options.output_directory = root ? run.directory : "";
+    // partitioned: every rank observes its own buildings for rank 0's files
+    options.output_directory = root || partitioned ? run.directory : "";
     options.progress         = root;
     options.interruptible    = true;
     options.console          = &run.out;
-    const RunParameters parameters = run_parameters(input);
-    const bool partitioned = input.time_integration.partition == RunPartition::buildings;
 
     timer.enter_subsection("set-up");
     // partitioned: this rank's buildings only (theory §3.5d)

@@ -3,11 +3,15 @@
 
 namespace poundfe
 {
-  ElementRecords::ElementRecords(const NonlinearElements *elements)
+  ElementRecords::ElementRecords(const NonlinearElements *elements,
+                                 const std::vector<char>  *observed)
   {
     const unsigned int n = elements ? elements->size() : 0;
     for (unsigned int h = 0; h < n; ++h)
       {
+        if (observed && !(*observed)[h])
+          continue;
+        kept.push_back(h);
         if ((*elements)[h].kind == ElementKind::gap)
           gaps.push_back(h);
         if ((*elements)[h].kind == ElementKind::friction)
@@ -20,7 +24,7 @@ namespace poundfe
   void
   ElementRecords::note_committed(const NonlinearElements &elements, const Vector &v)
   {
-    for (unsigned int h = 0; h < elements.size(); ++h)
+    for (const unsigned int h : kept)
       {
         const NonlinearElement &e = elements[h];
         force[h]                  = e.force();
@@ -35,7 +39,7 @@ namespace poundfe
     impacts.reset(elements.size());
     stick_slip.reset(elements.size());
     std::fill(work_supplied.begin(), work_supplied.end(), 0.0);
-    for (unsigned int h = 0; h < elements.size(); ++h)
+    for (const unsigned int h : kept)
       work_done[h] = elements[h].stored_energy();
   }
 
@@ -55,7 +59,7 @@ namespace poundfe
         const NonlinearElement &e = elements[h];
         stick_slip.record(h, t0, t1, {e.was_active(), rate[h]}, {e.is_active(), e.deformation(v_next)});
       }
-    for (unsigned int h = 0; h < elements.size(); ++h)
+    for (const unsigned int h : kept)
       {
         NonlinearElement &e = elements[h];
         work_done[h] += e.work_increment();
@@ -67,5 +71,13 @@ namespace poundfe
         history[h] = e.history_variable();
         rate[h]    = e.deformation(v_next);
       }
+  }
+
+  void
+  ElementRecords::merge(const RankMerge &ranks)
+  {
+    ranks.owned(Owner::element, work_done);
+    ranks.owned(Owner::element, work_supplied);
+    impacts.merge(ranks);
   }
 } // namespace poundfe

@@ -28,6 +28,7 @@ namespace poundfe
         const double s           = a.penetration <= 0 ? crossing(a.penetration, b.penetration) : 0;
         impact.start_time        = t0 + s * dt;
         impact.approach_velocity = a.rate + s * (b.rate - a.rate);
+        impact.step_start        = t0;
         open[h]                  = log.size();
         log.push_back(impact);
       }
@@ -70,5 +71,45 @@ namespace poundfe
         impact.separation_velocity = -(a.rate + s * (b.rate - a.rate));
         open[h]                    = -1;
       }
+  }
+
+  void
+  ImpactLog::merge(const RankMerge &ranks)
+  {
+    constexpr unsigned int n_numbers = 14; // per impact, in the order below
+    std::vector<double>    numbers;
+    numbers.reserve(n_numbers * log.size());
+    for (const Impact &i : log)
+      numbers.insert(numbers.end(),
+                     {double(i.element), i.start_time, i.max_penetration_time, i.end_time,
+                      i.approach_velocity, i.separation_velocity, i.max_penetration, i.peak_force,
+                      i.impulse, i.point[0], i.point[1], double(i.bumper), double(i.structure),
+                      i.step_start});
+    ranks.concatenated(numbers);
+    log.clear();
+    std::fill(open.begin(), open.end(), -1);
+    for (std::size_t k = 0; k + n_numbers <= numbers.size(); k += n_numbers)
+      {
+        const double *x = &numbers[k];
+        Impact        i;
+        i.element              = static_cast<unsigned int>(x[0]);
+        i.start_time           = x[1];
+        i.max_penetration_time = x[2];
+        i.end_time             = x[3];
+        i.approach_velocity    = x[4];
+        i.separation_velocity  = x[5];
+        i.max_penetration      = x[6];
+        i.peak_force           = x[7];
+        i.impulse              = x[8];
+        i.point                = {{x[9], x[10]}};
+        i.bumper               = x[11] != 0;
+        i.structure            = x[12] != 0;
+        i.step_start           = x[13];
+        log.push_back(i);
+      }
+    // one process opens the impacts of a step in the order of the elements
+    std::stable_sort(log.begin(), log.end(), [](const Impact &a, const Impact &b) {
+      return a.step_start < b.step_start || (a.step_start == b.step_start && a.element < b.element);
+    });
   }
 } // namespace poundfe

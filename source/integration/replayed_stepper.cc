@@ -7,10 +7,16 @@
 
 namespace poundfe
 {
-  ReplayedStepper::ReplayedStepper(NonlinearElements &elements, const unsigned int n_equations)
+  ReplayedStepper::ReplayedStepper(NonlinearElements &elements, const unsigned int n_equations,
+                                   const std::vector<char> observed)
     : elements(elements)
-    , records(&elements)
+    , records(&elements, observed.empty() ? nullptr : &observed)
   {
+    AssertThrow(observed.empty() || observed.size() == elements.size(),
+                dealii::ExcDimensionMismatch(observed.size(), elements.size()));
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      if (observed.empty() || observed[h])
+        replayed.push_back(h);
     dof_start.assign(1, 0);
     for (const NonlinearElement &e : elements)
       dof_start.push_back(dof_start.back() + e.n_dofs());
@@ -23,7 +29,7 @@ namespace poundfe
   void
   ReplayedStepper::set_trial_states()
   {
-    for (unsigned int h = 0; h < elements.size(); ++h)
+    for (const unsigned int h : replayed)
       {
         NonlinearElement       &e         = elements[h];
         const std::vector<int> &equations = e.equations();
@@ -47,8 +53,8 @@ namespace poundfe
     for (NonlinearElement &e : elements)
       e.reset();
     set_trial_states();
-    for (NonlinearElement &e : elements)
-      e.commit();
+    for (const unsigned int h : replayed)
+      elements[h].commit();
     records.note_committed(elements, v);
     records.start(elements);
   }
@@ -67,8 +73,8 @@ namespace poundfe
     const double t0 = current_time;
     current_time    = t;
     accepted        = n_accepted;
-    for (NonlinearElement &e : elements)
-      e.set_trial_time(t);
+    for (const unsigned int h : replayed)
+      elements[h].set_trial_time(t);
     set_trial_states();
     double belt = 0; // the integrator's balance has it
     records.accept(elements, t0, t0 + h, v, nullptr, belt);
@@ -83,6 +89,16 @@ namespace poundfe
     max_error  = max_energy_error;
     stats      = statistics;
     step_count = steps;
+  }
+
+  void
+  ReplayedStepper::merge(const RankMerge &ranks)
+  {
+    records.merge(ranks);
+    stored.assign(elements.size(), 0.0);
+    for (const unsigned int h : replayed)
+      stored[h] = elements[h].stored_energy();
+    ranks.owned(Owner::element, stored);
   }
 
   void

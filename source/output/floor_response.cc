@@ -76,4 +76,12 @@ namespace poundfe
         names.push_back(building.name + "_" + what + std::to_string(f) + "_" + suffix);
     return names;
   }
+
+  void
+  FloorResponse::merge(const RankMerge &ranks)
+  {
+    for (std::vector<double> *x : {&floor_displacement, &floor_velocity, &drift, &acceleration,
+                                   &peak_u, &peak_drift, &peak_drift_at, &peak_a})
+      ranks.owned(Owner::floor, *x);
+  }
 } // namespace poundfe

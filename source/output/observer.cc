@@ -36,7 +36,8 @@ namespace poundfe
   double
   ResponseView::dissipated_energy(const unsigned int h) const
   {
-    return integrator.element_work(h) - elements[h].stored_energy() +
+    const double stored = stored_energies ? (*stored_energies)[h] : elements[h].stored_energy();
+    return integrator.element_work(h) - stored +
            integrator.element_supplied_work(h);
   }
 } // namespace poundfe

@@ -1,5 +1,7 @@
 #include <poundfe/output/peak_response.h>
 
+#include <deal.II/base/exceptions.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -51,6 +53,8 @@ namespace poundfe
       }
     for (unsigned int h = 0; h < elements.size(); ++h)
       {
+        if (!state.observes_element(h))
+          continue;
         const NonlinearElement &e = elements[h];
         const double           d = e.deformation(state.displacement());
         if (std::abs(d) > peak_d[h])
@@ -145,5 +149,17 @@ namespace poundfe
   {
     const double yield = elements[h].yield_deformation();
     return yield > 0 ? peak_d[h] / yield : 0.0;
+  }
+
+  void
+  PeakResponse::merge(const RankMerge &ranks)
+  {
+    AssertThrow(!plan_response, dealii::ExcNotImplemented());
+    floor_response.merge(ranks);
+    for (std::vector<double> *x : {&peak_d, &peak_d_at, &peak_f, &peak_plastic})
+      ranks.owned(Owner::element, *x);
+    // an element at rest on a rank that does not observe it is no closer
+    // than at t = 0, which its observer saw too
+    ranks.least(smallest_clearance);
   }
 } // namespace poundfe

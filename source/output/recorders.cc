@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -137,12 +138,33 @@ namespace poundfe
       const PeakResponse &peaks;
     };
 
-    /// Columns and row of a time-series quantity.
+    /// Columns and row of a time-series quantity, and what owns each
+    /// column in a run partitioned by building (base/rank_merge.h).
     struct Series
     {
       std::vector<std::string> columns;
       RowFunction              row;
+      std::vector<ColumnOwner> owners;
     };
+
+    /// `n` columns of each of `entities` of `kind`, entity after entity.
+    std::vector<ColumnOwner>
+    owners_of(const Owner kind, const std::vector<unsigned int> &entities, const unsigned int n)
+    {
+      std::vector<ColumnOwner> owners;
+      for (const unsigned int i : entities)
+        owners.insert(owners.end(), n, ColumnOwner{kind, i});
+      return owners;
+    }
+
+    /// 0, 1, ..., n - 1.
+    std::vector<unsigned int>
+    first_integers(const unsigned int n)
+    {
+      std::vector<unsigned int> all(n);
+      std::iota(all.begin(), all.end(), 0u);
+      return all;
+    }
 
     /// One column per building: the shear of its first storey.
     Series
@@ -153,24 +175,32 @@ namespace poundfe
         columns.push_back(b.name + "_base_shear_N");
       const unsigned int n_buildings = state.model.buildings.size();
       auto shears = std::make_shared<std::vector<double>>();
-      return {columns, [forces, shears, n_buildings](const ResponseView &s,
-                                                    std::vector<double> &to) {
+      return {columns,
+              [forces, shears, n_buildings](const ResponseView &s, std::vector<double> &to) {
                 forces->storey_shears(s.displacement(), s.velocity(), *shears);
                 to.resize(n_buildings);
                 for (unsigned int b = 0; b < n_buildings; ++b)
                   to[b] = (*shears)[forces->index(b, 0)];
-              }};
+              },
+              owners_of(Owner::building, first_integers(n_buildings), 1)};
     }
 
     /// The six end forces of each requested member; an unknown label is bad input.
     Series
-    member_force_series(const RecorderRequest &request,
+    member_force_series(const RecorderRequest &request, const Model &model,
                         const std::shared_ptr<const StoreyForces> &forces,
                         const std::string &input_file, const int line)
     {
-      std::vector<std::string> columns;
+      std::vector<std::string>  columns;
+      std::vector<unsigned int> buildings; // of each member
       for (const std::string &label : request.labels)
         {
+          for (const Member &member : model.members)
+            if (member.label == label)
+              {
+                buildings.push_back(model.nodes[member.nodes[0]].building);
+                break;
+              }
           if (!forces->has_member(label))
             throw InputError(input_file, line, "Output/Recorders/Record",
                              "no member is labelled '" + label +
@@ -180,7 +210,8 @@ namespace poundfe
             columns.push_back(label + c);
         }
       const std::vector<std::string> labels = request.labels;
-      return {columns, [forces, labels](const ResponseView &s, std::vector<double> &to) {
+      return {columns,
+              [forces, labels](const ResponseView &s, std::vector<double> &to) {
                 to.resize(6 * labels.size());
                 for (unsigned int m = 0; m < labels.size(); ++m)
                   {
@@ -188,7 +219,8 @@ namespace poundfe
                     for (unsigned int k = 0; k < 6; ++k)
                       to[6 * m + k] = f[k];
                   }
-              }};
+              },
+              owners_of(Owner::building, buildings, 6)};
     }
 
     /// The elements in [first, end) that `labels` name: all without labels;
@@ -242,16 +274,23 @@ namespace poundfe
           columns.push_back(elements[h].label + (hinge ? "_rotation_rad" : "_drift_m"));
           columns.push_back(elements[h].label + "_z");
         }
-      return {columns, [chosen](const ResponseView &s, std::vector<double> &to) {
+      return {columns,
+              [chosen](const ResponseView &s, std::vector<double> &to) {
                 to.resize(3 * chosen.size());
                 for (unsigned int i = 0; i < chosen.size(); ++i)
                   {
+                    if (!s.observes_element(chosen[i]))
+                      {
+                        to[3 * i] = to[3 * i + 1] = to[3 * i + 2] = 0; // another rank's
+                        continue;
+                      }
                     const NonlinearElement &e = s.elements[chosen[i]];
                     to[3 * i]     = e.force();
                     to[3 * i + 1] = e.deformation(s.displacement());
                     to[3 * i + 2] = e.history_variable();
                   }
-              }};
+              },
+              owners_of(Owner::element, chosen, 3)};
     }
 
     /// Force and penetration of the gap elements `chosen`.
@@ -264,14 +303,17 @@ namespace poundfe
           columns.push_back(elements[h].label + "_force_N");
           columns.push_back(elements[h].label + "_penetration_m");
         }
-      return {columns, [chosen](const ResponseView &s, std::vector<double> &to) {
+      return {columns,
+              [chosen](const ResponseView &s, std::vector<double> &to) {
                 to.resize(2 * chosen.size());
                 for (unsigned int i = 0; i < chosen.size(); ++i)
                   {
-                    to[2 * i]     = s.elements[chosen[i]].force();
-                    to[2 * i + 1] = s.elements[chosen[i]].history_variable();
+                    const bool here = s.observes_element(chosen[i]); // else another rank's
+                    to[2 * i]       = here ? s.elements[chosen[i]].force() : 0.0;
+                    to[2 * i + 1]   = here ? s.elements[chosen[i]].history_variable() : 0.0;
                   }
-              }};
+              },
+              owners_of(Owner::element, chosen, 2)};
     }
 
     /// u and v of every equation, and the stick/slip phase of each friction element.
@@ -292,7 +334,12 @@ namespace poundfe
             friction.push_back(h);
             columns.push_back(elements[h].label + "_phase");
           }
-      return {columns, [friction](const ResponseView &s, std::vector<double> &to) {
+      std::vector<ColumnOwner> owners =
+        owners_of(Owner::equation, first_integers(state.model.n_equations()), 2);
+      for (const ColumnOwner &e : owners_of(Owner::element, friction, 1))
+        owners.push_back(e);
+      return {columns,
+              [friction](const ResponseView &s, std::vector<double> &to) {
                 const Vector &u = s.displacement(), &v = s.velocity();
                 to.resize(2 * u.size() + friction.size());
                 for (Eigen::Index q = 0; q < u.size(); ++q)
@@ -302,12 +349,14 @@ namespace poundfe
                   }
                 for (std::size_t i = 0; i < friction.size(); ++i)
                   to[2 * u.size() + i] = s.elements[friction[i]].phase();
-              }};
+              },
+              owners};
     }
 
-    /// The columns and the row function of one recorded quantity.
+    /// The columns and the row function of one recorded quantity (the
+    /// owners of its columns: series_of).
     Series
-    series_of(const RecorderRequest &request, const ResponseView &state, const PeakResponse &peaks,
+    series_of_quantity(const RecorderRequest &request, const ResponseView &state, const PeakResponse &peaks,
               const std::shared_ptr<const StoreyForces> &forces, const std::string &input_file,
               const int line)
     {
@@ -320,22 +369,22 @@ namespace poundfe
       switch (request.quantity)
         {
           case RecordedQuantity::floor_displacement:
-            return {floors.column_names("floor", "disp_m"), copy(floors.displacement())};
+            return {floors.column_names("floor", "disp_m"), copy(floors.displacement()), {}};
           case RecordedQuantity::floor_velocity:
-            return {floors.column_names("floor", "vel_m_s"), copy(floors.velocity())};
+            return {floors.column_names("floor", "vel_m_s"), copy(floors.velocity()), {}};
           case RecordedQuantity::floor_acceleration:
-            return {floors.column_names("floor", "acc_m_s2"), copy(floors.absolute_acceleration())};
+            return {floors.column_names("floor", "acc_m_s2"), copy(floors.absolute_acceleration()), {}};
           case RecordedQuantity::drift_ratio:
-            return {floors.column_names("storey", "drift_ratio"), copy(floors.drift_ratio())};
+            return {floors.column_names("storey", "drift_ratio"), copy(floors.drift_ratio()), {}};
           case RecordedQuantity::storey_shear:
             return {floors.column_names("storey", "shear_N"),
                     [forces](const ResponseView &s, std::vector<double> &to) {
                       forces->storey_shears(s.displacement(), s.velocity(), to);
-                    }};
+                    }, {}};
           case RecordedQuantity::base_shear:
             return base_shear_series(state, forces);
           case RecordedQuantity::member_forces:
-            return member_force_series(request, forces, input_file, line);
+            return member_force_series(request, state.model, forces, input_file, line);
           case RecordedQuantity::hinge_states:
             return hinge_state_series(
               elements, elements_named(request.labels, state.model, elements, 0, n_hyst,
@@ -373,29 +422,61 @@ namespace poundfe
                               s.max_energy_error(), e.friction, e.belt, e.links};
                         if (foundations)
                           to.push_back(e.foundation);
-                      }};
+                      }, {}};
             }
           case RecordedQuantity::ground_motion:
             if (state.has_vertical_ground_motion()) // Components = 3: the vertical one too
               return {{"ground_acceleration_m_s2", "ground_acceleration_z_m_s2"},
                       [](const ResponseView &s, std::vector<double> &to) {
                         to = {s.ground_acceleration(), s.ground_acceleration_z()};
-                      }};
+                      }, {}};
             return {{"ground_acceleration_m_s2"}, [](const ResponseView &s, std::vector<double> &to) {
                       to.assign(1, s.ground_acceleration());
-                    }};
+                    }, {}};
           case RecordedQuantity::phase_portrait:
             return phase_portrait_series(state);
           case RecordedQuantity::corner_acceleration:
             {
               const PlanResponse *plan = peaks.plan(); // requests_of refused it in 2D
               return {plan->corner_acceleration_names(),
-                      copy(plan->corner_accelerations())};
+                      copy(plan->corner_accelerations()), {}};
             }
           case RecordedQuantity::residual_drift:
             break; // not a time series
         }
       throw std::logic_error("series_of: not a time series");
+    }
+
+    /// series_of_quantity() with the owners of its columns: a floor's (or
+    /// storey's) values are its building's, the energy and the ground
+    /// motion are alike on every rank. A 3D model's corner accelerations
+    /// are not observed by rank (PeakResponse::merge refuses them).
+    Series
+    series_of(const RecorderRequest &request, const ResponseView &state, const PeakResponse &peaks,
+              const std::shared_ptr<const StoreyForces> &forces, const std::string &input_file,
+              const int line)
+    {
+      Series series = series_of_quantity(request, state, peaks, forces, input_file, line);
+      switch (request.quantity)
+        {
+          case RecordedQuantity::floor_displacement:
+          case RecordedQuantity::floor_velocity:
+          case RecordedQuantity::floor_acceleration:
+          case RecordedQuantity::drift_ratio:
+          case RecordedQuantity::storey_shear:
+            series.owners = owners_of(Owner::floor, first_integers(peaks.floors().n_floors()), 1);
+            break;
+          case RecordedQuantity::energy:
+          case RecordedQuantity::ground_motion:
+          case RecordedQuantity::corner_acceleration:
+            series.owners.assign(series.columns.size(), ColumnOwner{Owner::root, 0});
+            break;
+          default:
+            break; // the series' own
+        }
+      AssertThrow(series.owners.size() == series.columns.size(),
+                  dealii::ExcDimensionMismatch(series.owners.size(), series.columns.size()));
+      return series;
     }
 
     /// The defaults (unless `Default files = false`) with the requests of
@@ -608,8 +689,9 @@ namespace poundfe
   Recorders
   make_recorders(const RecorderParameters &parameters, const std::string &input_file,
                  const ResponseView &state, const PeakResponse &peaks, const double time_step,
-                 const std::string &directory)
+                 const std::string &directory, RowSink *ranks)
   {
+    const bool writes_files = !ranks || ranks->writes_files();
     const std::vector<RecorderRequest> requests = requests_of(parameters, input_file, state, peaks);
     // Every request is checked (series_of throws on an unknown member)
     // before a file or the directory is made: bad input writes nothing.
@@ -618,12 +700,14 @@ namespace poundfe
     for (const RecorderRequest &r : requests)
       if (r.quantity != RecordedQuantity::residual_drift)
         series.push_back(series_of(r, state, peaks, forces, input_file, parameters.line));
-    prepare_output_directory(directory);
+    if (writes_files)
+      prepare_output_directory(directory);
     Recorders recorders;
     for (const RecorderRequest &r : requests)
       for (const std::string &file : files_of(r.quantity, parameters.format))
         recorders.files.push_back(file);
-    remove_stale_files(directory, recorders.files); // before this run's temporaries exist
+    if (writes_files)
+      remove_stale_files(directory, recorders.files); // before this run's temporaries exist
 
     auto text = std::make_shared<NumberText>(); // shared by the CSV files of the run
     auto next = series.begin();
@@ -632,8 +716,9 @@ namespace poundfe
         const QuantityInfo &q = info(r.quantity);
         if (r.quantity == RecordedQuantity::residual_drift)
           {
-            recorders.observers.push_back(std::make_unique<ResidualDriftRecorder>(
-              directory + "/" + files_of(r.quantity, parameters.format).front(), peaks));
+            if (writes_files) // from the merged peaks, at the end
+              recorders.observers.push_back(std::make_unique<ResidualDriftRecorder>(
+                directory + "/" + files_of(r.quantity, parameters.format).front(), peaks));
             continue;
           }
         std::vector<std::string> header{"time_s"};
@@ -642,9 +727,13 @@ namespace poundfe
         const unsigned int every    = steps_per_interval(interval, time_step);
         recorders.tables.push_back({r.quantity, table_files(parameters.format, q.stem).front(),
                                     static_cast<unsigned int>(header.size()), every});
-        recorders.observers.push_back(std::make_unique<SeriesRecorder>(
-          make_table_writer(parameters.format, directory, q.stem, header, text), every,
-          std::move(next->row)));
+        std::unique_ptr<TableWriter> table =
+          writes_files ? make_table_writer(parameters.format, directory, q.stem, header, text) :
+                         nullptr;
+        if (ranks)
+          table = ranks->merged(std::move(table), std::move(next->owners));
+        recorders.observers.push_back(
+          std::make_unique<SeriesRecorder>(std::move(table), every, std::move(next->row)));
         ++next;
       }
     return recorders;

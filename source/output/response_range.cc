@@ -39,7 +39,7 @@ namespace poundfe
       return;
     const Vector &u = state.displacement();
     for (unsigned int b = 0; b < rotation_equations.size(); ++b)
-      for (unsigned int i = 0; i < rotation_equations[b].size(); ++i)
+      for (unsigned int i = 0; state.observes_building(b) && i < rotation_equations[b].size(); ++i)
         if (const double theta = std::abs(u[rotation_equations[b][i]]); theta > peak_rotation[b])
           {
             peak_rotation[b]      = theta;
@@ -99,5 +99,13 @@ namespace poundfe
           }
       }
     return found;
+  }
+
+  void
+  ResponseRange::merge(const RankMerge &ranks)
+  {
+    ranks.owned(Owner::building, peak_rotation);
+    ranks.owned(Owner::building, peak_rotation_time);
+    ranks.owned(Owner::building, peak_rotation_node);
   }
 } // namespace poundfe

@@ -262,6 +262,8 @@ namespace poundfe
   {
     for (unsigned int b = 0; b < peak_shear.size(); ++b)
       {
+        if (!state.observes_building(b))
+          continue;
         const double V = std::abs(
           forces->storey_shear(forces->index(b, 0), state.displacement(), state.velocity()));
         if (V > peak_shear[b])

@@ -77,9 +77,12 @@ namespace poundfe
   {
     /// The standard observers of a run, in the order they see each step:
     /// the peaks and the response range first (the recorders read the
-    /// floor response), then with an output directory the input's
-    /// recorders, the floor spectra, the field output and the summary, the
-    /// progress on a terminal, and the caller's own.
+    /// floor response), then with an output directory the base shears,
+    /// the input's recorders, the floor spectra, the field output and the
+    /// summary, the progress on a terminal, and the caller's own. With
+    /// `ranks` (observation by rank) the recorders' rows go through it and
+    /// a rank that does not write the files has only the peaks, the range,
+    /// the base shears and the recorders.
     class StandardObservers
     {
     public:
@@ -87,17 +90,21 @@ namespace poundfe
                         const Excitation &excitation, const ResponseView &view,
                         const NonlinearElements &elements, unsigned long n_steps,
                         const std::string &solver, const std::string &tangent_update,
-                        const RunOptions &options);
+                        const RunOptions &options, RowSink *ranks = nullptr);
 
       const Observers &all() const { return observers; }
+      /// Observation by rank, before the observers finish: the peaks, the
+      /// range and the base shears merged on rank 0. Collective.
+      void merge(const RankMerge &ranks);
       /// The run's scalars after it ended with `status`.
       RunResult result(const RunStatus &status, const ResponseView &state) const;
 
     private:
-      PeakResponse  peaks;
-      ResponseRange range;
+      PeakResponse   peaks;
+      ResponseRange  range;
+      BaseShearPeaks base_shears; // observed with an output directory only
       std::vector<std::unique_ptr<StepObserver>> outputs;
-      Observers     observers;
+      Observers      observers;
     };
 
     StandardObservers::StandardObservers(const Analysis &analysis, const RunParameters &parameters,
@@ -105,7 +112,7 @@ namespace poundfe
                                          const NonlinearElements &elements,
                                          const unsigned long n_steps, const std::string &solver,
                                          const std::string &tangent_update,
-                                         const RunOptions &options)
+                                         const RunOptions &options, RowSink *ranks)
       : peaks(analysis.model, elements)
       , range(analysis.model, peaks, parameters.output.drift_warning,
               parameters.output.rotation_warning)
@@ -114,28 +121,31 @@ namespace poundfe
       const OutputParameters &output    = parameters.output;
       const double            dt        = parameters.time_history.time_integration.newmark.time_step;
       const std::string      &directory = options.output_directory;
+      const bool              writes    = !ranks || ranks->writes_files();
       if (!directory.empty())
         {
+          observers.push_back(&base_shears);
           std::vector<std::string> files; // of the recorders and VTU, for summary.json
           if (options.csv) // first: it checks its input before anything is written
             {
-              Recorders recorders = make_recorders(
-                output.recorders, parameters.time_history.input.file, view, peaks, dt, directory);
-              if (options.console)
+              Recorders recorders =
+                make_recorders(output.recorders, parameters.time_history.input.file, view, peaks,
+                               dt, directory, ranks);
+              if (options.console && writes)
                 for (const TableShape &table : recorders.tables)
                   *options.console << large_table_note(table, n_steps, output.recorders.format);
               outputs = std::move(recorders.observers);
               files   = std::move(recorders.files);
             }
-          else // the recorders prepare it after checking their input
+          else if (writes) // the recorders prepare it after checking their input
             prepare_output_directory(directory);
-          if (options.csv && output.floor_spectra)
+          if (writes && options.csv && output.floor_spectra)
             {
               outputs.push_back(std::make_unique<FloorSpectra>(
                 peaks, parameters.spectrum.periods(), parameters.spectrum.damping_ratios, directory));
               files.push_back(FloorSpectra::file_name);
             }
-          if (options.vtu && output.vtu_interval > 0)
+          if (writes && options.vtu && output.vtu_interval > 0)
             {
               outputs.push_back(std::make_unique<VtuRecorder>(
                 analysis.model, directory,
@@ -145,15 +155,24 @@ namespace poundfe
               else
                 files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
             }
-          outputs.push_back(std::make_unique<RunSummary>(
-            analysis, parameters, excitation, peaks, range, directory,
-            options.plots && output.plots, solver, tangent_update, files));
+          if (writes)
+            outputs.push_back(std::make_unique<RunSummary>(
+              analysis, parameters, excitation, peaks, range, base_shears, directory,
+              options.plots && output.plots, solver, tangent_update, files));
         }
-      if (options.progress)
+      if (options.progress && writes)
         outputs.push_back(std::make_unique<ProgressReport>(n_steps));
       for (const auto &output : outputs)
         observers.push_back(output.get());
       observers.insert(observers.end(), options.observers.begin(), options.observers.end());
+    }
+
+    void
+    StandardObservers::merge(const RankMerge &ranks)
+    {
+      peaks.merge(ranks);
+      range.merge(ranks);
+      base_shears.merge(ranks);
     }
 
     RunResult
@@ -253,6 +272,204 @@ namespace poundfe
       return view;
     }
 
+    /// Observation by rank (theory §3.5d): what each rank owns of the
+    /// whole model — its buildings, their floors and equations, and the
+    /// elements it observes (those whose first equation is its own: a gap
+    /// between two ranks is observed by the rank of its lower end) — and
+    /// the collective merges of base/rank_merge.h and the recorders' rows
+    /// (RowSink) on rank 0 over `communicator`.
+    class RanksOfRun final : public RankMerge, public RowSink
+    {
+    public:
+      RanksOfRun(const Model &model, const PartitionedHistory &history,
+                 const NonlinearElements &elements, MPI_Comm communicator);
+
+      /// observed[h]: whether this rank observes element h.
+      const std::vector<char> &observed() const { return owns[int(Owner::element)]; }
+      /// buildings()[b]: whether this rank owns building b.
+      const std::vector<char> &buildings() const { return owns[int(Owner::building)]; }
+
+      void owned(Owner kind, std::vector<double> &values) const override;
+      void owned(Owner kind, std::vector<unsigned int> &values) const override;
+      void least(double &value) const override;
+      void concatenated(std::vector<double> &values) const override;
+
+      bool writes_files() const override { return rank == 0; }
+      std::unique_ptr<TableWriter> merged(std::unique_ptr<TableWriter> writer,
+                                          std::vector<ColumnOwner>     owners) override;
+      /// The rows the recorders added since the last call, summed over
+      /// the ranks and written on rank 0 (OutputError there). Collective:
+      /// after every observation, whether or not this rank's observers ran.
+      void flush();
+
+    private:
+      /// A table's rows, each rank's own columns (the others zero).
+      class MergedTable final : public TableWriter
+      {
+      public:
+        MergedTable(RanksOfRun &ranks, std::unique_ptr<TableWriter> writer,
+                    std::vector<char> mine)
+          : ranks(ranks)
+          , writer(std::move(writer))
+          , mine(std::move(mine))
+        {}
+        void add_row(double time, const std::vector<double> &values) override;
+        void commit() override
+        {
+          if (writer)
+            writer->commit();
+        }
+        TableWriter *root_writer() const { return writer.get(); }
+
+      private:
+        RanksOfRun                  &ranks;
+        std::unique_ptr<TableWriter> writer; // rank 0's
+        std::vector<char>            mine;
+      };
+
+      /// A row waiting for flush(): its table, time and place in `rows`.
+      struct PendingRow
+      {
+        const MergedTable *table;
+        double             time;
+        std::size_t        start, size;
+      };
+
+      bool owns_column(const ColumnOwner &c) const
+      {
+        return c.kind == Owner::root ? rank == 0 : owns[int(c.kind)][c.index] != 0;
+      }
+
+      MPI_Comm          communicator;
+      int               rank = 0;
+      // owns[kind][i]: whether this rank owns entity i of that kind
+      std::array<std::vector<char>, 5> owns;
+      std::vector<PendingRow> pending;
+      std::vector<double>     rows, row; // reused: nothing allocated per step
+      mutable std::vector<double> sent;
+    };
+
+    RanksOfRun::RanksOfRun(const Model &model, const PartitionedHistory &history,
+                           const NonlinearElements &elements, const MPI_Comm communicator)
+      : communicator(communicator)
+    {
+      MPI_Comm_rank(communicator, &rank);
+      const BuildingPartition          &parts = history.partition();
+      const std::array<unsigned int, 2> mine  = parts.equations(rank);
+      auto own_equation = [&](const int q) { return q >= int(mine[0]) && q < int(mine[1]); };
+      std::vector<char> &buildings = owns[int(Owner::building)];
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        buildings.push_back(b >= parts.first_building[rank] && b < parts.first_building[rank + 1]);
+      const FloorResponse floor_numbering(model);
+      owns[int(Owner::floor)].assign(floor_numbering.n_floors(), 0);
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        for (unsigned int f = 0; f < model.buildings[b].floors.size(); ++f)
+          owns[int(Owner::floor)][floor_numbering.index(b, f)] = buildings[b];
+      for (unsigned int q = 0; q < model.n_equations(); ++q)
+        owns[int(Owner::equation)].push_back(own_equation(q));
+      for (const NonlinearElement &e : elements)
+        {
+          int first = -1;
+          for (const int q : e.equations())
+            if (q >= 0 && (first < 0 || q < first))
+              first = q;
+          owns[int(Owner::element)].push_back(own_equation(first));
+        }
+    }
+
+    void
+    RanksOfRun::owned(const Owner kind, std::vector<double> &values) const
+    {
+      const std::vector<char> &mine = owns[int(kind)];
+      AssertDimension(values.size(), kind == Owner::root ? values.size() : mine.size());
+      sent.resize(values.size());
+      for (std::size_t i = 0; i < values.size(); ++i)
+        sent[i] = (kind == Owner::root ? rank == 0 : mine[i] != 0) ? values[i] : 0.0;
+      // x + 0 = x: the owner's value exactly
+      MPI_Reduce(sent.data(), values.data(), values.size(), MPI_DOUBLE, MPI_SUM, 0, communicator);
+      if (rank != 0)
+        std::copy(sent.begin(), sent.end(), values.begin()); // unchanged where owned
+    }
+
+    void
+    RanksOfRun::owned(const Owner kind, std::vector<unsigned int> &values) const
+    {
+      std::vector<double> exact(values.begin(), values.end()); // below 2^53
+      owned(kind, exact);
+      if (rank == 0)
+        std::transform(exact.begin(), exact.end(), values.begin(),
+                       [](const double x) { return static_cast<unsigned int>(x); });
+    }
+
+    void
+    RanksOfRun::least(double &value) const
+    {
+      double mine = value;
+      MPI_Reduce(&mine, &value, 1, MPI_DOUBLE, MPI_MIN, 0, communicator);
+      if (rank != 0)
+        value = mine;
+    }
+
+    void
+    RanksOfRun::concatenated(std::vector<double> &values) const
+    {
+      const std::vector<std::vector<double>> all =
+        dealii::Utilities::MPI::gather(communicator, values, 0);
+      if (rank != 0)
+        return;
+      values.clear();
+      for (const std::vector<double> &part : all)
+        values.insert(values.end(), part.begin(), part.end());
+    }
+
+    std::unique_ptr<TableWriter>
+    RanksOfRun::merged(std::unique_ptr<TableWriter> writer, std::vector<ColumnOwner> owners)
+    {
+      std::vector<char> mine;
+      for (const ColumnOwner &c : owners)
+        mine.push_back(owns_column(c));
+      return std::make_unique<MergedTable>(*this, std::move(writer), std::move(mine));
+    }
+
+    void
+    RanksOfRun::MergedTable::add_row(const double time, const std::vector<double> &values)
+    {
+      AssertDimension(values.size(), mine.size());
+      const std::size_t start = ranks.rows.size();
+      for (std::size_t i = 0; i < values.size(); ++i)
+        ranks.rows.push_back(mine[i] ? values[i] : 0.0);
+      ranks.pending.push_back({this, time, start, values.size()});
+    }
+
+    void
+    RanksOfRun::flush()
+    {
+      // a rank whose observers stopped (rank 0 could not write) adds fewer
+      // rows: then none is written, and the run stops at the next step
+      long counts[2] = {long(rows.size()), -long(rows.size())};
+      MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_LONG, MPI_MAX, communicator);
+      if (counts[0] == -counts[1] && !rows.empty())
+        MPI_Reduce(rank == 0 ? MPI_IN_PLACE : rows.data(), rows.data(), rows.size(), MPI_DOUBLE,
+                   MPI_SUM, 0, communicator);
+      try
+        {
+          if (rank == 0 && counts[0] == -counts[1])
+            for (const PendingRow &p : pending)
+              {
+                row.assign(rows.begin() + p.start, rows.begin() + p.start + p.size);
+                p.table->root_writer()->add_row(p.time, row);
+              }
+        }
+      catch (const OutputError &)
+        {
+          pending.clear();
+          rows.clear();
+          throw;
+        }
+      pending.clear();
+      rows.clear();
+    }
+
     /// Rank 0's view of a partitioned run: the whole model's nonlinear
     /// elements, replayed through the ranks' gathered states, and the
     /// standard observers on them.
@@ -278,6 +495,66 @@ namespace poundfe
 
   namespace
   {
+    /// Whether a partitioned run's outputs are observed by rank (every
+    /// rank observes its own part, merged on rank 0) rather than by rank
+    /// 0 alone on the gathered state (WholeRunView): a 2D model without
+    /// field output, floor spectra or observers of the caller's.
+    bool
+    observed_by_rank(const Model &model, const RunParameters &parameters,
+                     const RunOptions &options)
+    {
+      const OutputParameters &output = parameters.output;
+      return model.dimension == 2 && !(options.vtu && output.vtu_interval > 0) &&
+             !(options.csv && output.floor_spectra) && options.observers.empty();
+    }
+
+    /// One rank's view of a partitioned run observed by rank: the whole
+    /// model's nonlinear elements, of which this rank replays those it
+    /// observes through its own and ghost values (the rest of the model
+    /// stays at rest here), and the standard observers on them.
+    struct RankRunView
+    {
+      RankRunView(const Analysis &analysis, const RunParameters &parameters,
+                  const PartitionedHistory &history, unsigned long n_steps,
+                  const RunOptions &options, MPI_Comm communicator)
+        : elements(make_nonlinear_elements(analysis.model))
+        , ranks(analysis.model, history, elements, communicator)
+        , stepper(elements, analysis.model.n_equations(), ranks.observed())
+        , view(observed_view(analysis, elements, stepper,
+                             parameters.time_history.ground_motion.has_vertical(), ranks))
+        , observers(analysis, parameters, history.excitation(), view, elements, n_steps,
+                    history.linear_solver_name(), "refactorize", options, &ranks)
+      {}
+
+      static ResponseView
+      observed_view(const Analysis &analysis, const NonlinearElements &elements,
+                    const TimeStepper &stepper, const bool vertical, const RanksOfRun &ranks)
+      {
+        ResponseView view = view_of(analysis, elements, stepper, vertical);
+        view.set_observed(&ranks.observed(), &ranks.buildings());
+        return view;
+      }
+
+      /// `local` (this rank's vector: its equations, then its ghosts)
+      /// into the model's numbering, in `whole`.
+      static void
+      place(const PartitionedHistory &history, const Vector &local, Vector &whole)
+      {
+        const auto             range  = history.owned_range();
+        const unsigned int     n_own  = range[1] - range[0];
+        const std::vector<int> &ghost = history.ghost_equations();
+        whole.segment(range[0], n_own) = local.head(n_own);
+        for (unsigned int k = 0; k < ghost.size() && n_own + k < local.size(); ++k)
+          whole[ghost[k]] = local[n_own + k];
+      }
+
+      NonlinearElements elements;
+      RanksOfRun        ranks;
+      ReplayedStepper   stepper;
+      ResponseView      view;
+      StandardObservers observers;
+    };
+
     /// What a partitioned run refuses (InputError, alike on every rank), then
     /// the buildings' report gathered to rank 0: `analysis`, ready for the run.
     Analysis &
@@ -319,6 +596,11 @@ namespace poundfe
       /// started there, `first`) and `call` of every observer at time `t`.
       /// Collective.
       void observe(Call call, double t, bool first);
+      /// `stepper` replayed to the state it holds (or started, `first`),
+      /// then `call` of every observer; an output or numerical error is
+      /// kept in stop_reason. Not collective.
+      void replay_and_observe(ReplayedStepper &stepper, ResponseView &view,
+                              const Observers &observers, Call call, double t, bool first);
       /// 0: go on; 1: interrupted; 2: rank 0 stopped (stop_reason).
       /// Collective.
       int agreed_stop() const;
@@ -328,7 +610,8 @@ namespace poundfe
       PartitionedHistory            history;
       const unsigned long           n_steps;
       const double                  dt;
-      std::unique_ptr<WholeRunView> whole; // rank 0
+      std::unique_ptr<WholeRunView> whole; // rank 0, unless observed by rank
+      std::unique_ptr<RankRunView>  own;   // every rank, when observed by rank
       unsigned long                 step = 0;
       // rank 0: why it cannot go on (an observer could not write, or the
       // replay failed), told to the others at the start of the next step
@@ -349,42 +632,82 @@ namespace poundfe
       int rank = 0;
       MPI_Comm_rank(communicator, &rank);
       std::exception_ptr error;
-      if (rank == 0)
-        try
-          {
-            whole = std::make_unique<WholeRunView>(analysis, parameters, history, n_steps, options);
-          }
-        catch (const std::exception &)
-          {
-            error = std::current_exception();
-          }
+      try
+        {
+          if (observed_by_rank(analysis.model, parameters, options))
+            own = std::make_unique<RankRunView>(analysis, parameters, history, n_steps, options,
+                                                communicator);
+          else if (rank == 0)
+            {
+              whole =
+                std::make_unique<WholeRunView>(analysis, parameters, history, n_steps, options);
+              if (options.console && history.partition().n_parts() > 1)
+                *options.console
+                  << "poundfe: note: rank 0 observes the whole model, its state gathered from "
+                     "the ranks at every step, for the field output (VTU interval), the floor "
+                     "spectra or a 3D model; without them every rank observes its own "
+                     "buildings, which is faster (doc/theory.md §3.5d)\n";
+            }
+        }
+      catch (const std::exception &)
+        {
+          error = std::current_exception();
+        }
       agree_on_error(error, communicator);
     }
 
     void
     PartitionedRun::observe(const Call call, const double t, const bool first)
     {
-      const NewmarkIntegrator      &newmark = history.integrator();
+      const NewmarkIntegrator &newmark = history.integrator();
+      if (own)
+        {
+          // no gather: each rank places its own values and ghosts
+          const std::array<Vector *, 3> to = own->stepper.state_to_fill();
+          RankRunView::place(history, newmark.displacement(), *to[0]);
+          RankRunView::place(history, newmark.velocity(), *to[1]);
+          RankRunView::place(history, newmark.acceleration(), *to[2]);
+          replay_and_observe(own->stepper, own->view, own->observers.all(), call, t, first);
+          try
+            {
+              own->ranks.flush(); // on every rank, whether or not its observers ran
+            }
+          catch (const OutputError &e)
+            {
+              stop_reason   = e.what();
+              output_failed = true;
+            }
+          return;
+        }
       const std::array<Vector *, 3> to =
         whole ? whole->stepper.state_to_fill() :
                 std::array<Vector *, 3>{{&nothing, &nothing, &nothing}};
       history.gather(newmark.displacement(), *to[0]);
       history.gather(newmark.velocity(), *to[1]);
       history.gather(newmark.acceleration(), *to[2]);
-      if (!whole || !stop_reason.empty())
+      if (whole)
+        replay_and_observe(whole->stepper, whole->view, whole->observers.all(), call, t, first);
+    }
+
+    void
+    PartitionedRun::replay_and_observe(ReplayedStepper &stepper, ResponseView &view,
+                                       const Observers &observers, const Call call,
+                                       const double t, const bool first)
+    {
+      if (!stop_reason.empty())
         return;
+      const NewmarkIntegrator &newmark = history.integrator();
       try
         {
-          ReplayedStepper &stepper = whole->stepper;
           if (first)
             stepper.start();
           else
             stepper.replay(t, newmark.last_step_length(), history.statistics().steps);
           stepper.set_integrator_state(history.energy(), history.max_energy_error(),
                                        history.statistics(), newmark.steps());
-          whole->view.set_step(step, history.excitation().ground_acceleration_vector(t));
-          for (StepObserver *observer : whole->observers.all())
-            (observer->*call)(whole->view);
+          view.set_step(step, history.excitation().ground_acceleration_vector(t));
+          for (StepObserver *observer : observers)
+            (observer->*call)(view);
         }
       catch (const OutputError &e)
         {
@@ -422,7 +745,7 @@ namespace poundfe
                 {
                   status.kind = stop == 1 ? RunStatus::Kind::interrupted : RunStatus::Kind::failed;
                   status.output_failed = output_failed;
-                  status.message = stop_reason.empty() ? "rank 0 stopped the run" : stop_reason;
+                  status.message = stop_reason.empty() ? "another rank stopped the run" : stop_reason;
                   break;
                 }
               if (step > n_steps)
@@ -447,6 +770,17 @@ namespace poundfe
     RunResult
     PartitionedRun::result(RunStatus status)
     {
+      if (own) // the ranks' observations merged on rank 0, where they finish
+        {
+          own->observers.merge(own->ranks);
+          own->stepper.merge(own->ranks);
+          if (own->ranks.writes_files())
+            {
+              own->view.set_stored_energies(&own->stepper.stored_energies());
+              finish_observers(own->observers.all(), own->view, status);
+              return own->observers.result(status, own->view);
+            }
+        }
       if (!whole)
         return {status, history.statistics(), history.energy(), history.max_energy_error(),
                 history.n_local_elements(), 0, {}};

@@ -147,7 +147,7 @@ namespace poundfe
 
   RunSummary::RunSummary(const Analysis &analysis, const RunParameters &parameters,
                          const Excitation &excitation, const PeakResponse &peaks,
-                         const ResponseRange &range,
+                         const ResponseRange &range, const BaseShearPeaks &base_shears,
                          const std::string &directory, const bool plots,
                          const std::string &solver, const std::string &tangent_update,
                          std::vector<std::string> files)
@@ -161,6 +161,7 @@ namespace poundfe
     , solver(solver)
     , tangent_update(tangent_update)
     , files(std::move(files))
+    , base_shears(base_shears)
     , plan(analysis.model)
   {}
 

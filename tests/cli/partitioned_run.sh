@@ -7,6 +7,9 @@
 #    trajectories in every CSV (TOLERANCE below), the same summary.json
 #    (but for the whole model's modes, which a partitioned run does not
 #    compute, and the clock), one report on stdout, no temporary file;
+#    both ways of observing the run: by rank (every rank observes its own
+#    buildings, merged on rank 0: no VTU) and on rank 0 from the gathered
+#    state (with VTU frames, which rank 0 writes);
 #  - what it refuses: exit 1, one message naming the entry, nothing written;
 #  - a numerical failure: exit 2 on every rank, the results so far kept.
 #   partitioned_run.sh POUNDFE MPIRUN INPUT
@@ -32,21 +35,27 @@ sed -e "s/set Linear solver = petsc-mumps/$solver/" \
     -e "s/set Number of modes = 0/set Number of modes = 3/" \
     -e "/^subsection Contact/a\\  set Event refinement = 2\n  set Steps per contact = 8" "$input" > "$work/whole.prm"
 sed -e "/^subsection Time integration/a\\  set Partition = buildings" "$work/whole.prm" > "$work/part.prm"
+sed -e "s/set VTU interval = 0.1/set VTU interval = 0/" "$work/whole.prm" > "$work/whole-by-rank.prm"
+sed -e "s/set VTU interval = 0.1/set VTU interval = 0/" "$work/part.prm" > "$work/by-rank.prm"
+"$poundfe" run "$work/whole-by-rank.prm" --output "$work/whole-by-rank" > /dev/null
 "$poundfe" run "$work/whole.prm" --output "$work/whole" > /dev/null
 grep -q '"status": "completed"' "$work/whole/summary.json" || fail "the whole model's run did not complete"
 impacts=$(($(wc -l < "$work/whole/impacts.csv") - 1))
 [ "$impacts" -gt 0 ] || fail "the small city block does not pound: no test of the gaps between ranks"
 
-same_run() { # label directory
+same_run() { # label directory [the whole model's run]
+  local whole=${3:-$work/whole}
   grep -q '"status": "completed"' "$2/summary.json" || fail "$1: not completed"
-  diff <(ls "$work/whole") <(ls "$2") > /dev/null || fail "$1: other files than the whole model's run"
-  diff <(ls "$work/whole/solution") <(ls "$2/solution") > /dev/null || fail "$1: other VTU frames"
+  diff <(ls "$whole") <(ls "$2") > /dev/null || fail "$1: other files than the whole model's run"
+  if [ -d "$whole/solution" ]; then
+    diff <(ls "$whole/solution") <(ls "$2/solution") > /dev/null || fail "$1: other VTU frames"
+  fi
   if find "$2" -name '*.tmp' | grep -q .; then fail "$1: temporary files left"; fi
-  for f in "$work"/whole/*.csv; do
+  for f in "$whole"/*.csv; do
     python3 "$here/same_trajectory.py" "$tolerance" "$f" "$2/$(basename "$f")" > /dev/null \
       || fail "$1: $(basename "$f") differs"
   done
-  python3 - "$work/whole/summary.json" "$2/summary.json" "$tolerance" <<'EOF' || fail "$1: summary.json differs"
+  python3 - "$whole/summary.json" "$2/summary.json" "$tolerance" <<'EOF' || fail "$1: summary.json differs"
 import json, sys
 whole, part = (json.load(open(f)) for f in sys.argv[1:3])
 tolerance = float(sys.argv[3])
@@ -89,8 +98,16 @@ for ranks in 2 3; do
   same_run "$ranks ranks" "$work/ranks-$ranks"
   [ "$(grep -c '^poundfe run:' "$work/ranks.log")" -eq 1 ] || fail "$ranks ranks: not one report on stdout"
   grep -q "partitioned by building over $ranks ranks" "$work/ranks.log" || fail "$ranks ranks: the report does not say so"
-  echo "ok   mpirun -np $ranks, Partition = buildings: the whole model's files ($impacts impacts)"
+  grep -q "rank 0 observes the whole model" "$work/ranks.log" || fail "$ranks ranks: no note that rank 0 gathers"
+  echo "ok   mpirun -np $ranks, Partition = buildings, VTU frames: the whole model's files ($impacts impacts)"
+  "$mpirun" -np $ranks "$poundfe" run "$work/by-rank.prm" --output "$work/by-rank-$ranks" > "$work/ranks.log"
+  same_run "$ranks ranks observed by rank" "$work/by-rank-$ranks" "$work/whole-by-rank"
+  [ "$(grep -c '^poundfe' "$work/ranks.log")" -eq 1 ] || fail "$ranks ranks by rank: a note or more than one report"
+  echo "ok   mpirun -np $ranks, Partition = buildings, observed by rank: the whole model's files"
 done
+"$poundfe" run "$work/by-rank.prm" --output "$work/by-rank-1" > /dev/null
+same_run "one process observed by rank" "$work/by-rank-1" "$work/whole-by-rank"
+echo "ok   Partition = buildings on one process, observed by rank: the whole model's files"
 
 refused() { # label file entry [ranks] [command]
   local status=0
@@ -119,7 +136,7 @@ refused "montecarlo" "$work/mc.prm" "Time integration/Partition" 2 montecarlo
 # One Newton iteration and no step cut: the first step with a contact or a
 # yielding hinge fails, on every rank at once.
 sed -e "/^subsection Time integration/a\\  set Maximum step cuts = 0\n  set Newton maximum iterations = 1" \
-  "$work/part.prm" > "$work/failure.prm"
+  "$work/by-rank.prm" > "$work/failure.prm"
 status=0
 "$mpirun" -np 2 "$poundfe" run "$work/failure.prm" --output "$work/failure" > /dev/null 2> "$work/err" || status=$?
 [ "$status" -eq 2 ] || { cat "$work/err"; fail "numerical failure: exit status $status instead of 2"; }
@@ -132,7 +149,7 @@ echo "ok   numerical failure over 2 ranks: exit 2, the results so far kept"
 # files before any rank exits (mpirun ends the job at the first non-zero
 # exit), exit 143, "interrupted", the rows so far and no temporary file.
 sed -e "s/set Time step     = 0.005/set Time step = 0.0005/" -e "s/set End time      = 1.5/set End time = 10/" \
-    -e "/^subsection Output/a\\  set Plots = false" "$work/part.prm" > "$work/long.prm"
+    -e "/^subsection Output/a\\  set Plots = false" "$work/by-rank.prm" > "$work/long.prm"
 status=0
 "$mpirun" -np 2 "$poundfe" run "$work/long.prm" --output "$work/interrupted" > /dev/null 2> "$work/err" &
 job=$!

@@ -124,6 +124,9 @@ namespace poundfe
     std::array<unsigned int, 2> owned_range() const { return ownership->global_range(); }
     unsigned int n_local_elements() const { return elements.size(); }
     unsigned int n_ghosts() const { return ownership->n_ghosts(); }
+    /// The ghosts in the model's numbering (local owned_range()[1] -
+    /// owned_range()[0] + k is ghost k).
+    const std::vector<int> &ghost_equations() const { return ownership->ghost_equations(); }
     std::string  linear_solver_name() const { return newmark->linear_solver_name(); }
 
   private:

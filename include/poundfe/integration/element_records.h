@@ -23,8 +23,12 @@ namespace poundfe
   class ElementRecords
   {
   public:
-    /// Sorted from `elements` (nullptr: none): the gaps and the friction elements.
-    explicit ElementRecords(const NonlinearElements *elements);
+    /// Sorted from `elements` (nullptr: none): the gaps and the friction
+    /// elements. `observed` (observation by rank): only the elements h with
+    /// (*observed)[h] are recorded and committed, the others keep zero
+    /// work and no impacts; nullptr: all.
+    explicit ElementRecords(const NonlinearElements *elements,
+                            const std::vector<char>  *observed = nullptr);
 
     /// The elements have just been committed at velocity `v` (the initial
     /// state, or a restart): their force, history variable and rate.
@@ -40,6 +44,11 @@ namespace poundfe
     void accept(NonlinearElements &elements, double t0, double t1, const Vector &v_next,
                 const std::vector<char> *counted, double &belt);
 
+    /// A run partitioned over ranks: each element's work and the impacts
+    /// from the rank that observes it, on rank 0 (base/rank_merge.h).
+    /// Collective; for the run's end.
+    void merge(const RankMerge &ranks);
+
     const std::vector<double> &work() const { return work_done; }
     const std::vector<double> &supplied_work() const { return work_supplied; }
     const ImpactLog           &impact_log() const { return impacts; }
@@ -51,7 +60,7 @@ namespace poundfe
     double committed_rate(const unsigned int h) const { return rate[h]; }
 
   private:
-    std::vector<unsigned int> gaps, frictions;
+    std::vector<unsigned int> kept, gaps, frictions;
     std::vector<double>       work_done, work_supplied, force, history, rate;
     ImpactLog                 impacts;
     StickSlipLog              stick_slip;

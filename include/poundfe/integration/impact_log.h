@@ -10,6 +10,8 @@
 #ifndef poundfe_integration_impact_log_h
 #define poundfe_integration_impact_log_h
 
+#include <poundfe/base/rank_merge.h>
+
 #include <array>
 #include <cmath>
 #include <vector>
@@ -32,6 +34,10 @@ namespace poundfe
     /// What was touched: a gap's bumper, the structure (laws/bumper.h's
     /// ContactPhase at the ends of the impact's steps).
     bool bumper = false, structure = false;
+    /// The start of the accepted (sub)step in which it began: the log is in
+    /// the order of these, then of the elements (what merges the logs of
+    /// the ranks of a partitioned run into the one-process order).
+    double step_start = 0;
   };
 
   class ImpactLog
@@ -51,6 +57,11 @@ namespace poundfe
     void record(unsigned int h, double t0, double t1, const GapState &start, const GapState &end);
 
     const std::vector<Impact> &impacts() const { return log; }
+
+    /// A run partitioned over ranks: every rank's log (of the gaps it
+    /// observes) merged on rank 0 in the order of one process's log.
+    /// Collective. The open impacts are forgotten: for the run's end only.
+    void merge(const RankMerge &ranks);
 
   private:
     std::vector<Impact> log;

@@ -12,6 +12,10 @@
 // balance and the Newton statistics are the partitioned integrator's
 // (summed over the ranks, and alike on every rank). It does not integrate:
 // initialize() and advance() are not for it.
+//
+// Observation by rank (theory §3.5d) replays on each rank only the elements
+// that rank observes, through its own and ghost values (the others stay at
+// rest), and merges the work and the impact logs on rank 0 at the end.
 #ifndef poundfe_integration_replayed_stepper_h
 #define poundfe_integration_replayed_stepper_h
 
@@ -27,8 +31,10 @@ namespace poundfe
   {
   public:
     /// `elements`: the whole model's, numbered as the model; it must
-    /// outlive this object.
-    ReplayedStepper(NonlinearElements &elements, unsigned int n_equations);
+    /// outlive this object. `observed[h]`: whether element h is replayed
+    /// here (empty: every element).
+    ReplayedStepper(NonlinearElements &elements, unsigned int n_equations,
+                    std::vector<char> observed = {});
 
     /// u, v and a of the whole model, to be filled in place (by the ranks'
     /// gather) before start() and each replay(): no copy of size N per state.
@@ -45,6 +51,13 @@ namespace poundfe
     /// The partitioned integrator's balance, statistics and steps taken.
     void set_integrator_state(const EnergyBalance &energy, double max_energy_error,
                               const IterationStatistics &statistics, unsigned long steps);
+    /// Observation by rank, at the run's end: each element's work, its
+    /// stored energy at the last state and the impacts from the rank that
+    /// observes it, on rank 0. Collective.
+    void merge(const RankMerge &ranks);
+    /// Each element's stored energy at the last state, after merge() on
+    /// rank 0 (ResponseView::set_stored_energies).
+    const std::vector<double> &stored_energies() const { return stored; }
 
     void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
     void advance(const LoadFunction &load) override;
@@ -74,6 +87,8 @@ namespace poundfe
 
     NonlinearElements  &elements;
     ElementRecords      records;
+    std::vector<unsigned int> replayed; // the elements observed here
+    std::vector<double> stored;         // after merge()
     // element h's DOFs are [dof_start[h], dof_start[h + 1]) of local_u, local_v
     std::vector<unsigned int> dof_start;
     Vector              u, v, a, local_u, local_v;

@@ -10,6 +10,7 @@
 #define poundfe_output_floor_response_h
 
 #include <poundfe/assembly/linear_system.h>
+#include <poundfe/base/rank_merge.h>
 #include <poundfe/model/model.h>
 
 #include <string>
@@ -27,6 +28,9 @@ namespace poundfe
 
     /// Forget the peaks (a new run).
     void reset();
+    /// Observation by rank: each floor's values from the rank that owns
+    /// its building, on rank 0 (base/rank_merge.h). Collective.
+    void merge(const RankMerge &ranks);
 
     unsigned int n_floors() const { return floor_equations.size(); }
     /// Index of floor f (0-based, bottom up) of building b in the flat arrays.

@@ -14,6 +14,7 @@
 
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/integration/newmark.h>
+#include <poundfe/base/rank_merge.h>
 #include <poundfe/model/model.h>
 
 #include <array>
@@ -83,6 +84,27 @@ namespace poundfe
     /// Energy element h has dissipated so far: its work minus its stored
     /// energy plus what its drive (a belt) supplied, J.
     double                     dissipated_energy(unsigned int h) const;
+    /// Each element's stored energy at the end of a run whose elements
+    /// this view does not all hold at their last state (observation by
+    /// rank: ReplayedStepper::stored_energies); nullptr: the elements'.
+    void set_stored_energies(const std::vector<double> *energies) { stored_energies = energies; }
+    /// Observation by rank: the elements and buildings this rank observes
+    /// (masks over the whole model's; nullptr: all). The others are at rest
+    /// here and their values dropped when merged, so that observers may
+    /// skip them.
+    void set_observed(const std::vector<char> *elements, const std::vector<char> *buildings)
+    {
+      observed_elements  = elements;
+      observed_buildings = buildings;
+    }
+    bool observes_element(const unsigned int h) const
+    {
+      return !observed_elements || (*observed_elements)[h];
+    }
+    bool observes_building(const unsigned int b) const
+    {
+      return !observed_buildings || (*observed_buildings)[b];
+    }
     const ImpactLog           &impact_log() const { return integrator.impact_log(); }
     const StickSlipLog        &stick_slip_log() const { return integrator.stick_slip_log(); }
     const IterationStatistics &statistics() const { return integrator.statistics(); }
@@ -92,6 +114,8 @@ namespace poundfe
     unsigned long            step_index = 0;
     std::array<double, 3>    ground{{0, 0, 0}};
     bool                     vertical_ground = false;
+    const std::vector<double> *stored_energies = nullptr;
+    const std::vector<char>   *observed_elements = nullptr, *observed_buildings = nullptr;
   };
 
   /// Watches a time history: initialize() sees the initial state (step 0),

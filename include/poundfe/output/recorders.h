@@ -45,17 +45,38 @@ namespace poundfe
   /// otherwise.
   std::string large_table_note(const TableShape &table, unsigned long n_steps, OutputFormat format);
 
+  class TableWriter;
+
+  /// Where the recorders of a run partitioned by building send their rows
+  /// (observation by rank: report/run_outputs.cc). Every rank's recorders
+  /// compute every column; each column is kept from the rank that owns
+  /// what it records, and rank 0 writes the files.
+  class RowSink
+  {
+  public:
+    virtual ~RowSink() = default;
+    /// Whether this rank writes the files (rank 0).
+    virtual bool writes_files() const = 0;
+    /// What a recorder adds its rows to: they reach `writer` (rank 0's;
+    /// nullptr on the others) merged over the ranks. `owners`: of each
+    /// column but the time.
+    virtual std::unique_ptr<TableWriter> merged(std::unique_ptr<TableWriter> writer,
+                                                std::vector<ColumnOwner>     owners) = 0;
+  };
+
   /// The requested recorders plus the defaults, as observers writing into
   /// `directory` in `parameters.format`. They read the floor response of
   /// `peaks`, which must be observed before them. Checks every request
   /// (InputError for an unknown member label) before it prepares the
   /// directory (prepare_output_directory: what an earlier command wrote there
   /// is removed) or makes a file; also removes the recorder files of either
-  /// format that an earlier run left without a manifest.
+  /// format that an earlier run left without a manifest. With `ranks`
+  /// (observation by rank) the rows go through it, and only the rank that
+  /// writes the files touches the directory.
   Recorders
   make_recorders(const RecorderParameters &parameters, const std::string &input_file,
                  const ResponseView &state, const PeakResponse &peaks, double time_step,
-                 const std::string &directory);
+                 const std::string &directory, RowSink *ranks = nullptr);
 } // namespace poundfe
 
 #endif

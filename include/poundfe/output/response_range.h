@@ -37,6 +37,9 @@ namespace poundfe
     void initialize(const ResponseView &state) override;
     void observe_step(const ResponseView &state) override;
     void observe_substep(const ResponseView &state) override { observe_step(state); }
+    /// Observation by rank, before warnings(): each building's peak
+    /// rotation from the rank that owns it, on rank 0. Collective.
+    void merge(const RankMerge &ranks);
 
     /// The warnings over the steps observed so far (the peaks' too).
     std::vector<std::string> warnings() const;

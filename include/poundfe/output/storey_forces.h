@@ -106,6 +106,13 @@ namespace poundfe
     void initialize(const ResponseView &state) override;
     void observe_step(const ResponseView &state) override;
     void observe_substep(const ResponseView &state) override { observe_step(state); }
+    /// Observation by rank: each building's peak from the rank that owns
+    /// it, on rank 0. Collective.
+    void merge(const RankMerge &ranks)
+    {
+      ranks.owned(Owner::building, peak_shear);
+      ranks.owned(Owner::building, peak_time);
+    }
     /// Per building, N and s.
     const std::vector<double> &peak() const { return peak_shear; }
     const std::vector<double> &time_of_peak() const { return peak_time; }

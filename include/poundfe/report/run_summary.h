@@ -50,24 +50,16 @@ namespace poundfe
   public:
     /// `solver` and `tangent_update` name the integrator's choices; `files`
     /// are those the other observers write (recorders, VTU index); `range`'s
-    /// warnings go to "warnings".
+    /// warnings go to "warnings"; `base_shears` must be observed with it.
     RunSummary(const Analysis &analysis, const RunParameters &parameters,
                const Excitation &excitation, const PeakResponse &peaks,
-               const ResponseRange &range, const std::string &directory, bool plots,
+               const ResponseRange &range, const BaseShearPeaks &base_shears,
+               const std::string &directory, bool plots,
                const std::string &solver, const std::string &tangent_update,
                std::vector<std::string> files);
 
-    void initialize(const ResponseView &state) override
-    {
-      base_shears.initialize(state);
-      plan.initialize(state);
-    }
-    void observe_step(const ResponseView &state) override
-    {
-      base_shears.observe_step(state);
-      plan.observe_step(state);
-    }
-    void observe_substep(const ResponseView &state) override { base_shears.observe_substep(state); }
+    void initialize(const ResponseView &state) override { plan.initialize(state); }
+    void observe_step(const ResponseView &state) override { plan.observe_step(state); }
     void finish(const ResponseView &state, const RunStatus &status) override;
 
   private:
@@ -125,7 +117,7 @@ namespace poundfe
     const std::string   solver, tangent_update;
     const std::vector<std::string> files;
     /// Each building's peak base shear, for summary.json.
-    BaseShearPeaks base_shears;
+    const BaseShearPeaks &base_shears;
     /// 3D buildings: rotations, irregularity ratios, base shears and torque.
     PlanResponse plan;
   };
