@@ -31,6 +31,27 @@ namespace poundfe
       floors[f].advance_to(state.time(), a[f]);
   }
 
+  double
+  FloorSpectra::peak_displacement(const unsigned int f, const unsigned int oscillator) const
+  {
+    const std::vector<double> &own = floors[f].peak_displacement();
+    return merged.empty() ? own[oscillator] : merged[f * own.size() + oscillator];
+  }
+
+  void
+  FloorSpectra::merge(const RankMerge &ranks)
+  {
+    merged.clear();
+    std::vector<unsigned int> floor_of;
+    for (unsigned int f = 0; f < floors.size(); ++f)
+      {
+        const std::vector<double> &own = floors[f].peak_displacement();
+        merged.insert(merged.end(), own.begin(), own.end());
+        floor_of.insert(floor_of.end(), own.size(), f);
+      }
+    ranks.owned(Owner::floor, floor_of, merged);
+  }
+
   unsigned int
   FloorSpectra::column(const unsigned int d, const unsigned int f) const
   {
@@ -58,8 +79,8 @@ namespace poundfe
         for (unsigned int d = 0; d < zetas.size(); ++d)
           {
             csv.add(w2 * ground.peak_displacement()[ground.index(d, i)]);
-            for (const SpectralOscillators &floor : floors)
-              csv.add(w2 * floor.peak_displacement()[floor.index(d, i)]);
+            for (unsigned int f = 0; f < floors.size(); ++f)
+              csv.add(w2 * peak_displacement(f, floors[f].index(d, i)));
           }
         csv.end_row();
       }

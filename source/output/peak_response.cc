@@ -1,7 +1,5 @@
 #include <poundfe/output/peak_response.h>
 
-#include <deal.II/base/exceptions.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -154,8 +152,12 @@ namespace poundfe
   void
   PeakResponse::merge(const RankMerge &ranks)
   {
-    AssertThrow(!plan_response, dealii::ExcNotImplemented());
     floor_response.merge(ranks);
+    if (plan_response)
+      {
+        floor_response_y->merge(ranks);
+        plan_response->merge(ranks);
+      }
     for (std::vector<double> *x : {&peak_d, &peak_d_at, &peak_f, &peak_plastic})
       ranks.owned(Owner::element, *x);
     // an element at rest on a rank that does not observe it is no closer

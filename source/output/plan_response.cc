@@ -224,4 +224,44 @@ namespace poundfe
       .value("peak_base_torque_N_m", peaks.base_torque)
       .end_object();
   }
+
+  template <typename Function>
+  void
+  PlanResponse::for_each_number(const Function &f)
+  {
+    unsigned int at = 0; // in corner_acceleration
+    for (unsigned int b = 0; b < peaks.size(); ++b)
+      {
+        BuildingPeaks &p = peaks[b];
+        for (Storey &s : p.storeys)
+          {
+            f(b, s.rotation);
+            for (std::vector<double> *x : {&s.corner_drift_x, &s.corner_drift_y,
+                                           &s.corner_acceleration_x, &s.corner_acceleration_y})
+              for (double &y : *x)
+                f(b, y);
+            for (std::array<double, 2> *x : {&s.irregularity_ratio, &s.ratio_at_peak, &s.peak_drift})
+              for (double &y : *x)
+                f(b, y);
+            for (unsigned int k = 0; k < 2 * s.corner_acceleration_x.size(); ++k)
+              f(b, corner_acceleration[at++]);
+          }
+        for (double *x : {&p.base_shear_x, &p.base_shear_y, &p.base_torque})
+          f(b, *x);
+      }
+  }
+
+  void
+  PlanResponse::merge(const RankMerge &ranks)
+  {
+    std::vector<double>       values;
+    std::vector<unsigned int> building_of;
+    for_each_number([&](const unsigned int b, const double x) {
+      values.push_back(x);
+      building_of.push_back(b);
+    });
+    ranks.owned(Owner::building, building_of, values);
+    std::size_t i = 0;
+    for_each_number([&](unsigned int, double &x) { x = values[i++]; });
+  }
 } // namespace poundfe

@@ -438,8 +438,13 @@ namespace poundfe
           case RecordedQuantity::corner_acceleration:
             {
               const PlanResponse *plan = peaks.plan(); // requests_of refused it in 2D
-              return {plan->corner_acceleration_names(),
-                      copy(plan->corner_accelerations()), {}};
+              std::vector<ColumnOwner> owners; // x and y of each corner of each floor
+              for (unsigned int b = 0; b < state.model.buildings.size(); ++b)
+                for (const PlanFloor &floor : state.model.buildings[b].plan)
+                  owners.insert(owners.end(), 2 * floor.outline.size(),
+                                ColumnOwner{Owner::building, b});
+              return {plan->corner_acceleration_names(), copy(plan->corner_accelerations()),
+                      owners};
             }
           case RecordedQuantity::residual_drift:
             break; // not a time series
@@ -449,8 +454,7 @@ namespace poundfe
 
     /// series_of_quantity() with the owners of its columns: a floor's (or
     /// storey's) values are its building's, the energy and the ground
-    /// motion are alike on every rank. A 3D model's corner accelerations
-    /// are not observed by rank (PeakResponse::merge refuses them).
+    /// motion are alike on every rank.
     Series
     series_of(const RecorderRequest &request, const ResponseView &state, const PeakResponse &peaks,
               const std::shared_ptr<const StoreyForces> &forces, const std::string &input_file,
@@ -468,7 +472,6 @@ namespace poundfe
             break;
           case RecordedQuantity::energy:
           case RecordedQuantity::ground_motion:
-          case RecordedQuantity::corner_acceleration:
             series.owners.assign(series.columns.size(), ColumnOwner{Owner::root, 0});
             break;
           default:

@@ -23,6 +23,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
+#include <numeric>
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -102,7 +103,11 @@ namespace poundfe
     private:
       PeakResponse   peaks;
       ResponseRange  range;
-      BaseShearPeaks base_shears; // observed with an output directory only
+      // observed with an output directory only, for the summary: each
+      // building's peak base shear, and a 3D model's plan at the steps
+      BaseShearPeaks base_shears;
+      PlanResponse   plan;
+      std::unique_ptr<FloorSpectra> spectra; // with floor spectra
       std::vector<std::unique_ptr<StepObserver>> outputs;
       Observers      observers;
     };
@@ -116,6 +121,7 @@ namespace poundfe
       : peaks(analysis.model, elements)
       , range(analysis.model, peaks, parameters.output.drift_warning,
               parameters.output.rotation_warning)
+      , plan(analysis.model)
       , observers{&peaks, &range}
     {
       const OutputParameters &output    = parameters.output;
@@ -124,7 +130,7 @@ namespace poundfe
       const bool              writes    = !ranks || ranks->writes_files();
       if (!directory.empty())
         {
-          observers.push_back(&base_shears);
+          observers.insert(observers.end(), {&base_shears, &plan});
           std::vector<std::string> files; // of the recorders and VTU, for summary.json
           if (options.csv) // first: it checks its input before anything is written
             {
@@ -139,10 +145,11 @@ namespace poundfe
             }
           else if (writes) // the recorders prepare it after checking their input
             prepare_output_directory(directory);
-          if (writes && options.csv && output.floor_spectra)
+          if (options.csv && output.floor_spectra) // on every rank: merged by floor
             {
-              outputs.push_back(std::make_unique<FloorSpectra>(
-                peaks, parameters.spectrum.periods(), parameters.spectrum.damping_ratios, directory));
+              spectra = std::make_unique<FloorSpectra>(
+                peaks, parameters.spectrum.periods(), parameters.spectrum.damping_ratios, directory);
+              observers.push_back(spectra.get());
               files.push_back(FloorSpectra::file_name);
             }
           if (writes && options.vtu && output.vtu_interval > 0)
@@ -157,7 +164,7 @@ namespace poundfe
             }
           if (writes)
             outputs.push_back(std::make_unique<RunSummary>(
-              analysis, parameters, excitation, peaks, range, base_shears, directory,
+              analysis, parameters, excitation, peaks, range, base_shears, plan, directory,
               options.plots && output.plots, solver, tangent_update, files));
         }
       if (options.progress && writes)
@@ -173,6 +180,9 @@ namespace poundfe
       peaks.merge(ranks);
       range.merge(ranks);
       base_shears.merge(ranks);
+      plan.merge(ranks);
+      if (spectra)
+        spectra->merge(ranks);
     }
 
     RunResult
@@ -291,6 +301,8 @@ namespace poundfe
 
       void owned(Owner kind, std::vector<double> &values) const override;
       void owned(Owner kind, std::vector<unsigned int> &values) const override;
+      void owned(Owner kind, const std::vector<unsigned int> &entity_of,
+                 std::vector<double> &values) const override;
       void least(double &value) const override;
       void concatenated(std::vector<double> &values) const override;
 
@@ -346,7 +358,8 @@ namespace poundfe
       std::array<std::vector<char>, 5> owns;
       std::vector<PendingRow> pending;
       std::vector<double>     rows, row; // reused: nothing allocated per step
-      mutable std::vector<double> sent;
+      mutable std::vector<double>       sent;
+      mutable std::vector<unsigned int> entities;
     };
 
     RanksOfRun::RanksOfRun(const Model &model, const PartitionedHistory &history,
@@ -380,11 +393,22 @@ namespace poundfe
     void
     RanksOfRun::owned(const Owner kind, std::vector<double> &values) const
     {
+      AssertDimension(values.size(), kind == Owner::root ? values.size() : owns[int(kind)].size());
+      std::vector<unsigned int> &each = entities;
+      each.resize(values.size());
+      std::iota(each.begin(), each.end(), 0u);
+      owned(kind, each, values);
+    }
+
+    void
+    RanksOfRun::owned(const Owner kind, const std::vector<unsigned int> &entity_of,
+                      std::vector<double> &values) const
+    {
+      AssertDimension(values.size(), entity_of.size());
       const std::vector<char> &mine = owns[int(kind)];
-      AssertDimension(values.size(), kind == Owner::root ? values.size() : mine.size());
       sent.resize(values.size());
       for (std::size_t i = 0; i < values.size(); ++i)
-        sent[i] = (kind == Owner::root ? rank == 0 : mine[i] != 0) ? values[i] : 0.0;
+        sent[i] = (kind == Owner::root ? rank == 0 : mine[entity_of[i]] != 0) ? values[i] : 0.0;
       // x + 0 = x: the owner's value exactly
       MPI_Reduce(sent.data(), values.data(), values.size(), MPI_DOUBLE, MPI_SUM, 0, communicator);
       if (rank != 0)
@@ -497,15 +521,13 @@ namespace poundfe
   {
     /// Whether a partitioned run's outputs are observed by rank (every
     /// rank observes its own part, merged on rank 0) rather than by rank
-    /// 0 alone on the gathered state (WholeRunView): a 2D model without
-    /// field output, floor spectra or observers of the caller's.
+    /// 0 alone on the gathered state (WholeRunView): without field output
+    /// (its frames draw every element's state) or observers of the
+    /// caller's (which see the whole model).
     bool
-    observed_by_rank(const Model &model, const RunParameters &parameters,
-                     const RunOptions &options)
+    observed_by_rank(const RunParameters &parameters, const RunOptions &options)
     {
-      const OutputParameters &output = parameters.output;
-      return model.dimension == 2 && !(options.vtu && output.vtu_interval > 0) &&
-             !(options.csv && output.floor_spectra) && options.observers.empty();
+      return !(options.vtu && parameters.output.vtu_interval > 0) && options.observers.empty();
     }
 
     /// One rank's view of a partitioned run observed by rank: the whole
@@ -634,7 +656,7 @@ namespace poundfe
       std::exception_ptr error;
       try
         {
-          if (observed_by_rank(analysis.model, parameters, options))
+          if (observed_by_rank(parameters, options))
             own = std::make_unique<RankRunView>(analysis, parameters, history, n_steps, options,
                                                 communicator);
           else if (rank == 0)
@@ -644,9 +666,9 @@ namespace poundfe
               if (options.console && history.partition().n_parts() > 1)
                 *options.console
                   << "poundfe: note: rank 0 observes the whole model, its state gathered from "
-                     "the ranks at every step, for the field output (VTU interval), the floor "
-                     "spectra or a 3D model; without them every rank observes its own "
-                     "buildings, which is faster (doc/theory.md §3.5d)\n";
+                     "the ranks at every step, for the field output (VTU interval); without it "
+                     "every rank observes its own buildings, which is faster (doc/theory.md "
+                     "§3.5d)\n";
             }
         }
       catch (const std::exception &)

@@ -148,7 +148,7 @@ namespace poundfe
   RunSummary::RunSummary(const Analysis &analysis, const RunParameters &parameters,
                          const Excitation &excitation, const PeakResponse &peaks,
                          const ResponseRange &range, const BaseShearPeaks &base_shears,
-                         const std::string &directory, const bool plots,
+                         const PlanResponse &plan, const std::string &directory, const bool plots,
                          const std::string &solver, const std::string &tangent_update,
                          std::vector<std::string> files)
     : analysis(analysis)
@@ -162,7 +162,7 @@ namespace poundfe
     , tangent_update(tangent_update)
     , files(std::move(files))
     , base_shears(base_shears)
-    , plan(analysis.model)
+    , plan(plan)
   {}
 
   bool

@@ -10,6 +10,8 @@
 #    both ways of observing the run: by rank (every rank observes its own
 #    buildings, merged on rank 0: no VTU) and on rank 0 from the gathered
 #    state (with VTU frames, which rank 0 writes);
+#  - observed by rank, the 3D torsional pair (plan contact, 5 impacts) with
+#    floor spectra and corner accelerations on 2 ranks: the same files;
 #  - what it refuses: exit 1, one message naming the entry, nothing written;
 #  - a numerical failure: exit 2 on every rank, the results so far kept.
 #   partitioned_run.sh POUNDFE MPIRUN INPUT
@@ -43,7 +45,7 @@ grep -q '"status": "completed"' "$work/whole/summary.json" || fail "the whole mo
 impacts=$(($(wc -l < "$work/whole/impacts.csv") - 1))
 [ "$impacts" -gt 0 ] || fail "the small city block does not pound: no test of the gaps between ranks"
 
-same_run() { # label directory [the whole model's run]
+same_run() { # label directory [the whole model's run] [its number of modes]
   local whole=${3:-$work/whole}
   grep -q '"status": "completed"' "$2/summary.json" || fail "$1: not completed"
   diff <(ls "$whole") <(ls "$2") > /dev/null || fail "$1: other files than the whole model's run"
@@ -55,12 +57,12 @@ same_run() { # label directory [the whole model's run]
     python3 "$here/same_trajectory.py" "$tolerance" "$f" "$2/$(basename "$f")" > /dev/null \
       || fail "$1: $(basename "$f") differs"
   done
-  python3 - "$whole/summary.json" "$2/summary.json" "$tolerance" <<'EOF' || fail "$1: summary.json differs"
+  python3 - "$whole/summary.json" "$2/summary.json" "$tolerance" "${4:-3}" <<'EOF' || fail "$1: summary.json differs"
 import json, sys
 whole, part = (json.load(open(f)) for f in sys.argv[1:3])
-tolerance = float(sys.argv[3])
+tolerance, n_modes = float(sys.argv[3]), int(sys.argv[4])
 # the clock, the input's name, and the whole model's modes (not computed over ranks)
-assert len(whole["modes"]["periods_s"]) == 3 and part["modes"]["periods_s"] == [], "model modes"
+assert len(whole["modes"]["periods_s"]) == n_modes and part["modes"]["periods_s"] == [], "model modes"
 for d in (whole, part):
     for key in ("wall_time_s", "steps_per_second"):
         d["analysis"].pop(key)
@@ -72,7 +74,7 @@ for d in (whole, part):
     # and sub-steps must not.
     for key in ("mean_iterations_per_step", "max_iterations_per_step", "refactorizations"):
         d["newton"].pop(key)
-assert len(whole["buildings"][0]["modes"]["periods_s"]) == 3, "nothing to compare"
+assert len(whole["buildings"][0]["modes"]["periods_s"]) == n_modes, "nothing to compare"
 def same(a, b, path):
     if isinstance(a, dict):
         assert a.keys() == b.keys(), path + ": other keys"
@@ -108,6 +110,19 @@ done
 "$poundfe" run "$work/by-rank.prm" --output "$work/by-rank-1" > /dev/null
 same_run "one process observed by rank" "$work/by-rank-1" "$work/whole-by-rank"
 echo "ok   Partition = buildings on one process, observed by rank: the whole model's files"
+
+# 3D: the plan response, floor spectra and corner accelerations merged by building
+sed -e "s/^subsection Time integration/subsection Time integration\n$solver\n  set End time = 6/" \
+    -e "s/^subsection Output/subsection Output\n  set Floor spectra = true\n  set Plots = false\n  subsection Recorders\n    set Record = corner acceleration\n  end/" \
+    "$here/../../input/3d-torsional-pair.prm" > "$work/whole-3d.prm"
+sed -e "/^subsection Time integration/a\\  set Partition = buildings" "$work/whole-3d.prm" > "$work/part-3d.prm"
+"$poundfe" run "$work/whole-3d.prm" --output "$work/whole-3d" > /dev/null
+[ "$(($(wc -l < "$work/whole-3d/impacts.csv") - 1))" -gt 0 ] || fail "the 3D pair does not pound"
+[ -s "$work/whole-3d/floor_spectra.csv" ] && [ -s "$work/whole-3d/corner_acceleration.csv" ] || fail "3D: no floor spectra or corner accelerations"
+"$mpirun" -np 2 "$poundfe" run "$work/part-3d.prm" --output "$work/part-3d" > "$work/ranks.log"
+same_run "3D pair on 2 ranks observed by rank" "$work/part-3d" "$work/whole-3d" 6
+[ "$(grep -c '^poundfe' "$work/ranks.log")" -eq 1 ] || fail "3D by rank: a note or more than one report"
+echo "ok   mpirun -np 2, the 3D torsional pair observed by rank (floor spectra, corners): the whole model's files"
 
 refused() { # label file entry [ranks] [command]
   local status=0

@@ -39,6 +39,10 @@ namespace poundfe
     /// values[i] (one per entity of `kind`) from the rank that owns entity i.
     virtual void owned(Owner kind, std::vector<double> &values) const = 0;
     virtual void owned(Owner kind, std::vector<unsigned int> &values) const = 0;
+    /// values[i] from the rank that owns entity entity_of[i] of `kind`
+    /// (several values per entity: a building's plan peaks).
+    virtual void owned(Owner kind, const std::vector<unsigned int> &entity_of,
+                       std::vector<double> &values) const = 0;
     /// The least of every rank's `value`.
     virtual void least(double &value) const = 0;
     /// Every rank's `values`, one after the other in the order of the ranks.

@@ -32,16 +32,25 @@ namespace poundfe
     void observe_step(const ResponseView &state) override;
     void observe_substep(const ResponseView &state) override { observe_step(state); }
     void finish(const ResponseView &state, const RunStatus &status) override;
+    /// Observation by rank, before finish(): each floor's peaks from the
+    /// rank that owns its building, on rank 0. Collective.
+    void merge(const RankMerge &ranks);
 
     static constexpr const char *file_name = "floor_spectra.csv";
     /// Column of floor f (FloorResponse index) at damping d; 1-based, for gnuplot.
     unsigned int column(unsigned int d, unsigned int f) const;
 
   private:
+    /// Floor f's peak displacement of oscillator `oscillator`, merged or its own.
+    double peak_displacement(unsigned int f, unsigned int oscillator) const;
+
     const PeakResponse              &peaks;
     const std::string                directory;
     SpectralOscillators              ground;
     std::vector<SpectralOscillators> floors;
+    /// After merge(): floor f's peak displacements (oscillator i) at
+    /// [f * n + i], n oscillators per floor; empty: the floors' own.
+    std::vector<double> merged;
   };
 } // namespace poundfe
 

@@ -32,9 +32,9 @@ namespace poundfe
     /// Peaks inside a contact fall between the steps.
     void observe_substep(const ResponseView &state) override { observe_step(state); }
     void finish(const ResponseView &state, const RunStatus &status) override;
-    /// Observation by rank, before finish(): the floors' and the elements'
-    /// peaks from the ranks that own them, on rank 0. Collective; 2D
-    /// models (a 3D model's plan response is not merged).
+    /// Observation by rank, before finish(): the floors' (along x and y),
+    /// the plan's and the elements' peaks from the ranks that own them, on
+    /// rank 0. Collective.
     void merge(const RankMerge &ranks);
 
     /// The floor response at the last observed step and its peaks.

@@ -42,6 +42,9 @@ namespace poundfe
     void observe_step(const ResponseView &state) override;
     /// Forget the peaks (a new run).
     void reset();
+    /// Observation by rank: each building's peaks and corner accelerations
+    /// from the rank that owns it, on rank 0. Collective.
+    void merge(const RankMerge &ranks);
 
     struct Storey
     {
@@ -77,6 +80,10 @@ namespace poundfe
     /// Fills corner_acceleration from building b's floors, from `at` on;
     /// returns the next index.
     unsigned int corner_accelerations(const ResponseView &state, unsigned int b, unsigned int at);
+    /// f(b, x) for every number x of building b's peaks and corner
+    /// accelerations, building after building, always in the same order.
+    template <typename Function>
+    void for_each_number(const Function &f);
 
     const Model                  &model;
     std::vector<BuildingPeaks>    peaks;

@@ -50,16 +50,16 @@ namespace poundfe
   public:
     /// `solver` and `tangent_update` name the integrator's choices; `files`
     /// are those the other observers write (recorders, VTU index); `range`'s
-    /// warnings go to "warnings"; `base_shears` must be observed with it.
+    /// warnings go to "warnings"; `base_shears` and `plan` (at the steps)
+    /// must be observed with it.
     RunSummary(const Analysis &analysis, const RunParameters &parameters,
                const Excitation &excitation, const PeakResponse &peaks,
                const ResponseRange &range, const BaseShearPeaks &base_shears,
-               const std::string &directory, bool plots,
+               const PlanResponse &plan, const std::string &directory, bool plots,
                const std::string &solver, const std::string &tangent_update,
                std::vector<std::string> files);
 
-    void initialize(const ResponseView &state) override { plan.initialize(state); }
-    void observe_step(const ResponseView &state) override { plan.observe_step(state); }
+    void observe_step(const ResponseView &) override {} // the others observe for it
     void finish(const ResponseView &state, const RunStatus &status) override;
 
   private:
@@ -119,7 +119,7 @@ namespace poundfe
     /// Each building's peak base shear, for summary.json.
     const BaseShearPeaks &base_shears;
     /// 3D buildings: rotations, irregularity ratios, base shears and torque.
-    PlanResponse plan;
+    const PlanResponse &plan;
   };
 } // namespace poundfe
 
