@@ -64,29 +64,18 @@ namespace poundfe
     using RowFunction = std::function<void(const ResponseView &, std::vector<double> &)>;
 
     /// A time series: a row (time, values...) every `every` steps.
-    class SeriesRecorder : public StepObserver
+    class SeriesRecorder : public PeriodicObserver
     {
     public:
       SeriesRecorder(std::unique_ptr<TableWriter> table, const unsigned int every, RowFunction row)
-        : table(std::move(table))
-        , every(every)
+        : PeriodicObserver(every)
+        , table(std::move(table))
         , row(std::move(row))
       {}
 
       void
-      initialize(const ResponseView &state) override
+      write(const ResponseView &state) override
       {
-        next_row = 0;
-        observe_step(state);
-      }
-
-      void
-      observe_step(const ResponseView &state) override
-      {
-        // a comparison, not a division, on the steps without a row
-        if (state.step() != next_row)
-          return;
-        next_row += every;
         row(state, values);
         table->add_row(state.time(), values);
       }
@@ -99,8 +88,6 @@ namespace poundfe
 
     private:
       std::unique_ptr<TableWriter> table;
-      const unsigned int           every;
-      unsigned long                next_row = 0; // the step of the next row
       RowFunction                  row;
       std::vector<double>          values;
     };

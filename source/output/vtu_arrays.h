@@ -26,6 +26,7 @@
 namespace poundfe
 {
   class NonlinearElements;
+  struct ElementFrameStates;
 
   namespace vtu
   {
@@ -198,9 +199,9 @@ namespace poundfe
     public:
       explicit VtuGeometry3D(const Model &model);
       /// The point and cell arrays of a frame: displacements times `scale`;
-      /// the member end forces and the gaps' states when `elements` is given
+      /// the member end forces and the gaps' states when `states` is given
       /// (a time frame).
-      FieldFrame frame(const Vector &u, double scale, const NonlinearElements *elements) const;
+      FieldFrame frame(const Vector &u, double scale, const ElementFrameStates *states) const;
       const Points3 &point_positions() const { return points; }
       const Cells   &cell_list() const { return cells; }
       /// The largest translation of a point under u.
@@ -223,11 +224,11 @@ namespace poundfe
       void         add_gaps();
       void         add_contact_point(unsigned int g);
       double       value(const Combination &c, const Vector &u) const;
-      void time_arrays(const Vector &u, const NonlinearElements &elements, FieldFrame &frame) const;
+      void time_arrays(const Vector &u, const ElementFrameStates &states, FieldFrame &frame) const;
       /// The contact points' displacements (into d) and forces on the gaps'
       /// first buildings, per point, at the elements' state.
       std::vector<std::array<double, 3>>
-      contact_points(const NonlinearElements &elements, double scale,
+      contact_points(const ElementFrameStates &states, double scale,
                      std::vector<std::array<double, 6>> &d) const;
 
       const Model                     &model;

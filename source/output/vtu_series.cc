@@ -1,5 +1,6 @@
 #include <poundfe/elements/frame_element.h>
 #include <poundfe/elements/nonlinear_element.h>
+#include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/vtu_series.h>
@@ -65,8 +66,8 @@ namespace poundfe
     /// The point data (displacement, rotation) and the cell ids of a planar
     /// model; the caller adds the time-dependent cell data.
     FieldFrame frame(const Vector &u, double point_scale) const;
-    /// The frame of `u`, planar or spatial (`elements`: of a time frame).
-    FieldFrame frame(const Vector &u, double scale, const NonlinearElements *elements) const;
+    /// The frame of `u`, planar or spatial (`states`: of a time frame).
+    FieldFrame frame(const Vector &u, double scale, const ElementFrameStates *states) const;
   };
 
   unsigned int
@@ -282,9 +283,9 @@ namespace poundfe
 
   FieldFrame
   VtuSeries::Impl::frame(const Vector &u, const double scale,
-                         const NonlinearElements *elements) const
+                         const ElementFrameStates *states) const
   {
-    return space ? space->frame(u, scale, elements) : frame(u, scale);
+    return space ? space->frame(u, scale, states) : frame(u, scale);
   }
 
   namespace
@@ -402,9 +403,48 @@ namespace poundfe
   VtuSeries::~VtuSeries() = default;
 
   void
+  ElementFrameStates::evaluate(const NonlinearElements &elements, const Vector &u,
+                               const std::vector<char> *observed)
+  {
+    kinds.resize(elements.size());
+    values.assign(n_entries * elements.size(), 0.0);
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      {
+        const NonlinearElement &e = elements[h];
+        kinds[h]                  = e.kind;
+        if (observed && !(*observed)[h])
+          continue;
+        double *x  = &values[n_entries * h];
+        x[force]   = e.force();
+        x[history] = e.history_variable();
+        x[active]  = e.is_active();
+        if (e.initial_stiffness() > 0)
+          x[plastic] = e.deformation(u) - e.force() / e.initial_stiffness();
+        if (const auto *contact = dynamic_cast<const PlanGapElement *>(&e))
+          {
+            const std::array<double, 2> p = contact->contact_point();
+            const std::array<double, 2> f = contact->force_on_first();
+            x[in_reach]                   = contact->in_reach();
+            x[point_x]                    = p[0];
+            x[point_y]                    = p[1];
+            x[force_x]                    = f[0];
+            x[force_y]                    = f[1];
+          }
+      }
+  }
+
+  void
   VtuSeries::write(const double time, const Vector &u, const NonlinearElements &elements)
   {
-    FieldFrame frame = impl->frame(u, 1.0, &elements);
+    ElementFrameStates states;
+    states.evaluate(elements, u);
+    write(time, u, states);
+  }
+
+  void
+  VtuSeries::write(const double time, const Vector &u, const ElementFrameStates &states)
+  {
+    FieldFrame frame = impl->frame(u, 1.0, &states);
     frame.field.push_back({"TIME", 1, false, false, {time}});
     if (impl->space)
       {
@@ -436,10 +476,11 @@ namespace poundfe
                                           impl->dof_value(u, link.nodes[0], Component::ux));
       }
     unsigned int n_hinges = 0, n_storeys = 0, n_gaps = 0;
-    for (const NonlinearElement &element : elements)
+    using State = ElementFrameStates;
+    for (unsigned int h = 0; h < states.kinds.size(); ++h)
       {
         unsigned int cell = 0;
-        switch (element.kind)
+        switch (states.kinds[h])
           {
             case ElementKind::hinge:
               cell = impl->first_hinge_cell + n_hinges++;
@@ -449,17 +490,16 @@ namespace poundfe
               break;
             case ElementKind::gap:
               cell = impl->first_gap_cell + n_gaps++;
-              contact[cell]     = element.is_active();
-              penetration[cell] = std::max(0.0, element.history_variable());
-              force[cell]       = element.force();
+              contact[cell]     = states(h, State::active) != 0;
+              penetration[cell] = std::max(0.0, states(h, State::history));
+              force[cell]       = states(h, State::force);
               continue;
             default: // springs and friction to the ground: not drawn
               continue;
           }
-        force[cell] = element.force();
-        z[cell]     = element.history_variable();
-        if (element.initial_stiffness() > 0)
-          plastic[cell] = element.deformation(u) - element.force() / element.initial_stiffness();
+        force[cell]   = states(h, State::force);
+        z[cell]       = states(h, State::history);
+        plastic[cell] = states(h, State::plastic);
       }
     for (unsigned int l = 0; l < model.links.size(); ++l) // a storey's shear as V
       {

@@ -29,8 +29,8 @@
 // at each end, the gap force and contact (on its line and its vertex).
 #include <poundfe/elements/frame_element_3d.h>
 #include <poundfe/elements/nonlinear_element.h>
-#include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/model/plan_contact_geometry.h>
+#include <poundfe/output/vtu_series.h>
 
 #include "vtu_arrays.h"
 
@@ -190,19 +190,20 @@ namespace poundfe
     }
 
     std::vector<std::array<double, 3>>
-    VtuGeometry3D::contact_points(const NonlinearElements &elements, const double scale,
+    VtuGeometry3D::contact_points(const ElementFrameStates &states, const double scale,
                                   std::vector<std::array<double, 6>> &d) const
     {
+      using State = ElementFrameStates;
       std::vector<std::array<double, 3>> force(points.size(), std::array<double, 3>{});
       unsigned int                       g = 0;
-      for (const NonlinearElement &element : elements)
-        if (element.kind == ElementKind::gap)
+      for (unsigned int h = 0; h < states.kinds.size(); ++h)
+        if (states.kinds[h] == ElementKind::gap)
           if (const int p = gap_point.at(g++); p >= 0)
             {
-              const auto &contact = dynamic_cast<const PlanGapElement &>(element);
-              if (!contact.in_reach())
+              if (states(h, State::in_reach) == 0)
                 continue; // the rest point, no force
-              const std::array<double, 2> x = contact.contact_point(), f = contact.force_on_first();
+              const std::array<double, 2> x{{states(h, State::point_x), states(h, State::point_y)}};
+              const std::array<double, 2> f{{states(h, State::force_x), states(h, State::force_y)}};
               for (unsigned int c = 0; c < 2; ++c)
                 {
                   d[p][c]     = scale * (x[c] - points[p][c]);
@@ -232,7 +233,7 @@ namespace poundfe
     }
 
     void
-    VtuGeometry3D::time_arrays(const Vector &u, const NonlinearElements &elements,
+    VtuGeometry3D::time_arrays(const Vector &u, const ElementFrameStates &states,
                                FieldFrame &frame) const
     {
       const unsigned int n_cells = cells.types.size();
@@ -262,14 +263,14 @@ namespace poundfe
       FieldArray   force{"force", 1, false, false, std::vector<double>(n_cells, 0.0)};
       FieldArray   contact{"contact", 1, true, false, std::vector<double>(n_cells, 0.0)};
       unsigned int g = 0;
-      for (const NonlinearElement &element : elements)
-        if (element.kind == ElementKind::gap)
+      for (unsigned int h = 0; h < states.kinds.size(); ++h)
+        if (states.kinds[h] == ElementKind::gap)
           {
             for (const int cell : {gap_cell.at(g), gap_vertex.at(g)})
               if (cell >= 0)
                 {
-                  force.values[cell]   = element.force();
-                  contact.values[cell] = element.is_active();
+                  force.values[cell]   = states(h, ElementFrameStates::force);
+                  contact.values[cell] = states(h, ElementFrameStates::active) != 0;
                 }
             ++g;
           }
@@ -279,14 +280,14 @@ namespace poundfe
 
     FieldFrame
     VtuGeometry3D::frame(const Vector &u, const double scale,
-                         const NonlinearElements *elements) const
+                         const ElementFrameStates *states) const
     {
       std::vector<std::array<double, 6>> d(points.size());
       for (unsigned int p = 0; p < points.size(); ++p)
         for (unsigned int c = 0; c < 6; ++c)
           d[p][c] = scale * value(motions[p][c], u);
       const std::vector<std::array<double, 3>> contact_force =
-        elements ? contact_points(*elements, scale, d) : std::vector<std::array<double, 3>>{};
+        states ? contact_points(*states, scale, d) : std::vector<std::array<double, 3>>{};
       FieldFrame frame;
       for (const unsigned int first : {0u, 3u})
         {
@@ -298,7 +299,7 @@ namespace poundfe
         }
       frame.point.push_back(
         {"node", 1, true, true, std::vector<double>(point_node.begin(), point_node.end())});
-      if (elements != nullptr)
+      if (states != nullptr)
         {
           FieldArray force{"contact_force", 3, false, false, {}};
           for (const auto &f : contact_force)
@@ -306,8 +307,8 @@ namespace poundfe
           frame.point.push_back(std::move(force));
         }
       frame.cell = cell_id_arrays(cells);
-      if (elements != nullptr)
-        time_arrays(u, *elements, frame);
+      if (states != nullptr)
+        time_arrays(u, *states, frame);
       return frame;
     }
   } // namespace vtu

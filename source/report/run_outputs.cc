@@ -81,17 +81,21 @@ namespace poundfe
     /// floor response), then with an output directory the base shears,
     /// the input's recorders, the floor spectra, the field output and the
     /// summary, the progress on a terminal, and the caller's own. With
-    /// `ranks` (observation by rank) the recorders' rows go through it and
-    /// a rank that does not write the files has only the peaks, the range,
-    /// the base shears and the recorders.
+    /// `ranks` (observation by rank) the recorders' rows go through it, the
+    /// field output is `field_recorder`'s (given the steps between frames)
+    /// and a rank that does not write the files has no summary and no
+    /// progress.
     class StandardObservers
     {
     public:
+      using FieldRecorderMaker = std::function<std::unique_ptr<StepObserver>(unsigned int)>;
+
       StandardObservers(const Analysis &analysis, const RunParameters &parameters,
                         const Excitation &excitation, const ResponseView &view,
                         const NonlinearElements &elements, unsigned long n_steps,
                         const std::string &solver, const std::string &tangent_update,
-                        const RunOptions &options, RowSink *ranks = nullptr);
+                        const RunOptions &options, RowSink *ranks = nullptr,
+                        const FieldRecorderMaker &field_recorder = {});
 
       const Observers &all() const { return observers; }
       /// Observation by rank, before the observers finish: the peaks, the
@@ -117,7 +121,8 @@ namespace poundfe
                                          const NonlinearElements &elements,
                                          const unsigned long n_steps, const std::string &solver,
                                          const std::string &tangent_update,
-                                         const RunOptions &options, RowSink *ranks)
+                                         const RunOptions &options, RowSink *ranks,
+                                         const FieldRecorderMaker &field_recorder)
       : peaks(analysis.model, elements)
       , range(analysis.model, peaks, parameters.output.drift_warning,
               parameters.output.rotation_warning)
@@ -152,11 +157,15 @@ namespace poundfe
               observers.push_back(spectra.get());
               files.push_back(FloorSpectra::file_name);
             }
-          if (writes && options.vtu && output.vtu_interval > 0)
+          if (options.vtu && output.vtu_interval > 0 && (writes || field_recorder))
             {
-              outputs.push_back(std::make_unique<VtuRecorder>(
-                analysis.model, directory,
-                vtu_steps_per_frame(output, dt, n_steps, options.console), output.field_format));
+              const unsigned int every =
+                vtu_steps_per_frame(output, dt, n_steps, writes ? options.console : nullptr);
+              if (field_recorder) // on every rank
+                outputs.push_back(field_recorder(every));
+              else
+                outputs.push_back(std::make_unique<VtuRecorder>(analysis.model, directory, every,
+                                                                output.field_format));
               if (output.field_format == FieldFormat::xdmf)
                 files.insert(files.end(), {"solution.xdmf", "solution.h5"}); // the index, the data
               else
@@ -298,6 +307,8 @@ namespace poundfe
       const std::vector<char> &observed() const { return owns[int(Owner::element)]; }
       /// buildings()[b]: whether this rank owns building b.
       const std::vector<char> &buildings() const { return owns[int(Owner::building)]; }
+      /// equations()[q]: whether this rank owns equation q.
+      const std::vector<char> &equations() const { return owns[int(Owner::equation)]; }
 
       void owned(Owner kind, std::vector<double> &values) const override;
       void owned(Owner kind, std::vector<unsigned int> &values) const override;
@@ -309,14 +320,25 @@ namespace poundfe
       bool writes_files() const override { return rank == 0; }
       std::unique_ptr<TableWriter> merged(std::unique_ptr<TableWriter> writer,
                                           std::vector<ColumnOwner>     owners) override;
-      /// The rows the recorders added since the last call, summed over
-      /// the ranks and written on rank 0 (OutputError there). Collective:
-      /// after every observation, whether or not this rank's observers ran.
+      /// What takes a row summed over the ranks, on rank 0.
+      class RowConsumer
+      {
+      public:
+        virtual ~RowConsumer() = default;
+        virtual void take(double time, const std::vector<double> &row) = 0;
+      };
+      /// A row for `consumer` at `time`: values[i] where mine[i] (all when
+      /// nullptr), zero elsewhere; summed over the ranks by flush().
+      void add(RowConsumer &consumer, double time, const double *values, std::size_t n,
+               const std::vector<char> *mine);
+      /// The rows added since the last call, summed over the ranks and
+      /// taken on rank 0 (OutputError there). Collective: after every
+      /// observation, whether or not this rank's observers ran.
       void flush();
 
     private:
       /// A table's rows, each rank's own columns (the others zero).
-      class MergedTable final : public TableWriter
+      class MergedTable final : public TableWriter, public RowConsumer
       {
       public:
         MergedTable(RanksOfRun &ranks, std::unique_ptr<TableWriter> writer,
@@ -325,13 +347,20 @@ namespace poundfe
           , writer(std::move(writer))
           , mine(std::move(mine))
         {}
-        void add_row(double time, const std::vector<double> &values) override;
+        void add_row(const double time, const std::vector<double> &values) override
+        {
+          AssertDimension(values.size(), mine.size());
+          ranks.add(*this, time, values.data(), values.size(), &mine);
+        }
+        void take(const double time, const std::vector<double> &row) override
+        {
+          writer->add_row(time, row);
+        }
         void commit() override
         {
           if (writer)
             writer->commit();
         }
-        TableWriter *root_writer() const { return writer.get(); }
 
       private:
         RanksOfRun                  &ranks;
@@ -339,12 +368,12 @@ namespace poundfe
         std::vector<char>            mine;
       };
 
-      /// A row waiting for flush(): its table, time and place in `rows`.
+      /// A row waiting for flush(): its consumer, time and place in `rows`.
       struct PendingRow
       {
-        const MergedTable *table;
-        double             time;
-        std::size_t        start, size;
+        RowConsumer *consumer;
+        double       time;
+        std::size_t  start, size;
       };
 
       bool owns_column(const ColumnOwner &c) const
@@ -456,13 +485,13 @@ namespace poundfe
     }
 
     void
-    RanksOfRun::MergedTable::add_row(const double time, const std::vector<double> &values)
+    RanksOfRun::add(RowConsumer &consumer, const double time, const double *values,
+                    const std::size_t n, const std::vector<char> *mine)
     {
-      AssertDimension(values.size(), mine.size());
-      const std::size_t start = ranks.rows.size();
-      for (std::size_t i = 0; i < values.size(); ++i)
-        ranks.rows.push_back(mine[i] ? values[i] : 0.0);
-      ranks.pending.push_back({this, time, start, values.size()});
+      const std::size_t start = rows.size();
+      for (std::size_t i = 0; i < n; ++i)
+        rows.push_back(!mine || (*mine)[i] ? values[i] : 0.0);
+      pending.push_back({&consumer, time, start, n});
     }
 
     void
@@ -481,7 +510,7 @@ namespace poundfe
             for (const PendingRow &p : pending)
               {
                 row.assign(rows.begin() + p.start, rows.begin() + p.start + p.size);
-                p.table->root_writer()->add_row(p.time, row);
+                p.consumer->take(p.time, row);
               }
         }
       catch (const OutputError &)
@@ -494,42 +523,58 @@ namespace poundfe
       rows.clear();
     }
 
-    /// Rank 0's view of a partitioned run: the whole model's nonlinear
-    /// elements, replayed through the ranks' gathered states, and the
-    /// standard observers on them.
-    struct WholeRunView
+    /// The field output of a run observed by rank: at every `every`-th
+    /// step each rank adds its own equations of u and the frame states of
+    /// the elements it observes (the others zero) as one row of `ranks`;
+    /// on rank 0 the sum is the whole model's frame, which `series` writes.
+    class RankFieldRecorder final : public PeriodicObserver, public RanksOfRun::RowConsumer
     {
-      WholeRunView(const Analysis &analysis, const RunParameters &parameters,
-                   const PartitionedHistory &history, unsigned long n_steps,
-                   const RunOptions &options)
-        : elements(make_nonlinear_elements(analysis.model))
-        , stepper(elements, analysis.model.n_equations())
-        , view(view_of(analysis, elements, stepper,
-                       parameters.time_history.ground_motion.has_vertical()))
-        , observers(analysis, parameters, history.excitation(), view, elements, n_steps,
-                    history.linear_solver_name(), "refactorize", options)
+    public:
+      /// `series`: rank 0's (nullptr on the others).
+      RankFieldRecorder(RanksOfRun &ranks, std::unique_ptr<VtuSeries> series,
+                        const unsigned int every)
+        : PeriodicObserver(every)
+        , ranks(ranks)
+        , series(std::move(series))
       {}
+      void
+      write(const ResponseView &state) override
+      {
+        const Vector &u = state.displacement();
+        states.evaluate(state.elements, u, &ranks.observed());
+        frame.resize(u.size() + states.values.size());
+        for (Eigen::Index q = 0; q < u.size(); ++q)
+          frame[q] = ranks.equations()[q] ? u[q] : 0.0;
+        std::copy(states.values.begin(), states.values.end(), frame.begin() + u.size());
+        ranks.add(*this, state.time(), frame.data(), frame.size(), nullptr);
+      }
+      void
+      take(const double time, const std::vector<double> &row) override
+      {
+        const std::size_t n = row.size() - states.values.size();
+        u.resize(n);
+        std::copy(row.begin(), row.begin() + n, u.data());
+        std::copy(row.begin() + n, row.end(), states.values.begin());
+        series->write(time, u, states);
+      }
+      void
+      finish(const ResponseView &, const RunStatus &) override
+      {
+        if (series)
+          series->finish();
+      }
 
-      NonlinearElements elements;
-      ReplayedStepper   stepper; // holds the gathered state
-      ResponseView      view;
-      StandardObservers observers;
+    private:
+      RanksOfRun                &ranks;
+      std::unique_ptr<VtuSeries> series;
+      ElementFrameStates         states; // this rank's, then (rank 0) the sums
+      std::vector<double>        frame;
+      Vector                     u;
     };
   } // namespace
 
   namespace
   {
-    /// Whether a partitioned run's outputs are observed by rank (every
-    /// rank observes its own part, merged on rank 0) rather than by rank
-    /// 0 alone on the gathered state (WholeRunView): without field output
-    /// (its frames draw every element's state) or observers of the
-    /// caller's (which see the whole model).
-    bool
-    observed_by_rank(const RunParameters &parameters, const RunOptions &options)
-    {
-      return !(options.vtu && parameters.output.vtu_interval > 0) && options.observers.empty();
-    }
-
     /// One rank's view of a partitioned run observed by rank: the whole
     /// model's nonlinear elements, of which this rank replays those it
     /// observes through its own and ghost values (the rest of the model
@@ -545,7 +590,16 @@ namespace poundfe
         , view(observed_view(analysis, elements, stepper,
                              parameters.time_history.ground_motion.has_vertical(), ranks))
         , observers(analysis, parameters, history.excitation(), view, elements, n_steps,
-                    history.linear_solver_name(), "refactorize", options, &ranks)
+                    history.linear_solver_name(), "refactorize", options, &ranks,
+                    [&](const unsigned int every) {
+                      return std::make_unique<RankFieldRecorder>(
+                        ranks,
+                        ranks.writes_files() ?
+                          std::make_unique<VtuSeries>(analysis.model, options.output_directory,
+                                                      "solution", parameters.output.field_format) :
+                          nullptr,
+                        every);
+                    })
       {}
 
       static ResponseView
@@ -596,12 +650,12 @@ namespace poundfe
     }
 
     /// A run over the ranks of a communicator (run_partitioned_time_history):
-    /// the ranks' lockstep history and, on rank 0, the whole model's view of
-    /// it with the standard observers.
+    /// the ranks' lockstep history, each rank's view of its own part with
+    /// the standard observers, merged on rank 0 (observation by rank).
     class PartitionedRun
     {
     public:
-      /// Collective; an error on rank 0's observers (a recorder's bad
+      /// Collective; an error on a rank's observers (a recorder's bad
       /// entry) is thrown on every rank.
       PartitionedRun(Analysis &analysis, const RunParameters &parameters,
                      const RunOptions &options, MPI_Comm communicator);
@@ -614,16 +668,15 @@ namespace poundfe
 
     private:
       using Call = void (StepObserver::*)(const ResponseView &);
-      /// The state gathered on rank 0, its elements replayed to it (or
-      /// started there, `first`) and `call` of every observer at time `t`.
-      /// Collective.
+      /// Each rank's own values placed in its view, its elements replayed
+      /// to them (or started, `first`), `call` of its observers at time
+      /// `t`, then the rows merged on rank 0. Collective.
       void observe(Call call, double t, bool first);
-      /// `stepper` replayed to the state it holds (or started, `first`),
-      /// then `call` of every observer; an output or numerical error is
-      /// kept in stop_reason. Not collective.
-      void replay_and_observe(ReplayedStepper &stepper, ResponseView &view,
-                              const Observers &observers, Call call, double t, bool first);
-      /// 0: go on; 1: interrupted; 2: rank 0 stopped (stop_reason).
+      /// This rank's elements replayed to the state placed in its view (or
+      /// started, `first`), then `call` of every observer; an output or
+      /// numerical error is kept in stop_reason. Not collective.
+      void replay_and_observe(Call call, double t, bool first);
+      /// 0: go on; 1: interrupted; 2: a rank stopped (stop_reason).
       /// Collective.
       int agreed_stop() const;
 
@@ -632,14 +685,12 @@ namespace poundfe
       PartitionedHistory            history;
       const unsigned long           n_steps;
       const double                  dt;
-      std::unique_ptr<WholeRunView> whole; // rank 0, unless observed by rank
-      std::unique_ptr<RankRunView>  own;   // every rank, when observed by rank
+      std::unique_ptr<RankRunView>  own; // this rank's view and observers
       unsigned long                 step = 0;
-      // rank 0: why it cannot go on (an observer could not write, or the
-      // replay failed), told to the others at the start of the next step
+      // why this rank cannot go on (rank 0 could not write, or a replay
+      // failed), told to the others at the start of the next step
       std::string stop_reason;
       bool        output_failed = false;
-      Vector      nothing; // the gather's receive buffer on the other ranks
     };
 
     PartitionedRun::PartitionedRun(Analysis &analysis, const RunParameters &parameters,
@@ -653,23 +704,13 @@ namespace poundfe
     {
       int rank = 0;
       MPI_Comm_rank(communicator, &rank);
+      // a caller's observers would see only this rank's part
+      AssertThrow(options.observers.empty(), dealii::ExcNotImplemented());
       std::exception_ptr error;
       try
         {
-          if (observed_by_rank(parameters, options))
-            own = std::make_unique<RankRunView>(analysis, parameters, history, n_steps, options,
-                                                communicator);
-          else if (rank == 0)
-            {
-              whole =
-                std::make_unique<WholeRunView>(analysis, parameters, history, n_steps, options);
-              if (options.console && history.partition().n_parts() > 1)
-                *options.console
-                  << "poundfe: note: rank 0 observes the whole model, its state gathered from "
-                     "the ranks at every step, for the field output (VTU interval); without it "
-                     "every rank observes its own buildings, which is faster (doc/theory.md "
-                     "§3.5d)\n";
-            }
+          own = std::make_unique<RankRunView>(analysis, parameters, history, n_steps, options,
+                                              communicator);
         }
       catch (const std::exception &)
         {
@@ -681,44 +722,32 @@ namespace poundfe
     void
     PartitionedRun::observe(const Call call, const double t, const bool first)
     {
-      const NewmarkIntegrator &newmark = history.integrator();
-      if (own)
+      // no gather: each rank places its own values and ghosts
+      const NewmarkIntegrator      &newmark = history.integrator();
+      const std::array<Vector *, 3> to      = own->stepper.state_to_fill();
+      RankRunView::place(history, newmark.displacement(), *to[0]);
+      RankRunView::place(history, newmark.velocity(), *to[1]);
+      RankRunView::place(history, newmark.acceleration(), *to[2]);
+      replay_and_observe(call, t, first);
+      try
         {
-          // no gather: each rank places its own values and ghosts
-          const std::array<Vector *, 3> to = own->stepper.state_to_fill();
-          RankRunView::place(history, newmark.displacement(), *to[0]);
-          RankRunView::place(history, newmark.velocity(), *to[1]);
-          RankRunView::place(history, newmark.acceleration(), *to[2]);
-          replay_and_observe(own->stepper, own->view, own->observers.all(), call, t, first);
-          try
-            {
-              own->ranks.flush(); // on every rank, whether or not its observers ran
-            }
-          catch (const OutputError &e)
-            {
-              stop_reason   = e.what();
-              output_failed = true;
-            }
-          return;
+          own->ranks.flush(); // on every rank, whether or not its observers ran
         }
-      const std::array<Vector *, 3> to =
-        whole ? whole->stepper.state_to_fill() :
-                std::array<Vector *, 3>{{&nothing, &nothing, &nothing}};
-      history.gather(newmark.displacement(), *to[0]);
-      history.gather(newmark.velocity(), *to[1]);
-      history.gather(newmark.acceleration(), *to[2]);
-      if (whole)
-        replay_and_observe(whole->stepper, whole->view, whole->observers.all(), call, t, first);
+      catch (const OutputError &e)
+        {
+          stop_reason   = e.what();
+          output_failed = true;
+        }
     }
 
     void
-    PartitionedRun::replay_and_observe(ReplayedStepper &stepper, ResponseView &view,
-                                       const Observers &observers, const Call call,
-                                       const double t, const bool first)
+    PartitionedRun::replay_and_observe(const Call call, const double t, const bool first)
     {
       if (!stop_reason.empty())
         return;
       const NewmarkIntegrator &newmark = history.integrator();
+      ReplayedStepper         &stepper = own->stepper;
+      ResponseView            &view    = own->view;
       try
         {
           if (first)
@@ -728,7 +757,7 @@ namespace poundfe
           stepper.set_integrator_state(history.energy(), history.max_energy_error(),
                                        history.statistics(), newmark.steps());
           view.set_step(step, history.excitation().ground_acceleration_vector(t));
-          for (StepObserver *observer : observers)
+          for (StepObserver *observer : own->observers.all())
             (observer->*call)(view);
         }
       catch (const OutputError &e)
@@ -792,22 +821,15 @@ namespace poundfe
     RunResult
     PartitionedRun::result(RunStatus status)
     {
-      if (own) // the ranks' observations merged on rank 0, where they finish
-        {
-          own->observers.merge(own->ranks);
-          own->stepper.merge(own->ranks);
-          if (own->ranks.writes_files())
-            {
-              own->view.set_stored_energies(&own->stepper.stored_energies());
-              finish_observers(own->observers.all(), own->view, status);
-              return own->observers.result(status, own->view);
-            }
-        }
-      if (!whole)
+      // the ranks' observations merged on rank 0, where they finish
+      own->observers.merge(own->ranks);
+      own->stepper.merge(own->ranks);
+      if (!own->ranks.writes_files())
         return {status, history.statistics(), history.energy(), history.max_energy_error(),
                 history.n_local_elements(), 0, {}};
-      finish_observers(whole->observers.all(), whole->view, status);
-      return whole->observers.result(status, whole->view);
+      own->view.set_stored_energies(&own->stepper.stored_energies());
+      finish_observers(own->observers.all(), own->view, status);
+      return own->observers.result(status, own->view);
     }
   } // namespace
 

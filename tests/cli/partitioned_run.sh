@@ -7,9 +7,8 @@
 #    trajectories in every CSV (TOLERANCE below), the same summary.json
 #    (but for the whole model's modes, which a partitioned run does not
 #    compute, and the clock), one report on stdout, no temporary file;
-#    both ways of observing the run: by rank (every rank observes its own
-#    buildings, merged on rank 0: no VTU) and on rank 0 from the gathered
-#    state (with VTU frames, which rank 0 writes);
+#    observed by rank (every rank observes its own buildings, its rows,
+#    field frames and peaks merged on rank 0), with VTU frames and without;
 #  - observed by rank, the 3D torsional pair (plan contact, 5 impacts) with
 #    floor spectra and corner accelerations on 2 ranks: the same files;
 #  - what it refuses: exit 1, one message naming the entry, nothing written;
@@ -100,12 +99,15 @@ for ranks in 2 3; do
   same_run "$ranks ranks" "$work/ranks-$ranks"
   [ "$(grep -c '^poundfe run:' "$work/ranks.log")" -eq 1 ] || fail "$ranks ranks: not one report on stdout"
   grep -q "partitioned by building over $ranks ranks" "$work/ranks.log" || fail "$ranks ranks: the report does not say so"
-  grep -q "rank 0 observes the whole model" "$work/ranks.log" || fail "$ranks ranks: no note that rank 0 gathers"
-  echo "ok   mpirun -np $ranks, Partition = buildings, VTU frames: the whole model's files ($impacts impacts)"
+  for frame in "$work"/whole/solution/*.vtu; do # every number of each frame, within the tolerance
+    python3 "$here/same_vtu.py" "$tolerance" "$frame" "$work/ranks-$ranks/solution/$(basename "$frame")" \
+      || fail "$ranks ranks: $(basename "$frame") differs"
+  done
+  echo "ok   mpirun -np $ranks, Partition = buildings, VTU frames: the whole model's files and frames ($impacts impacts)"
   "$mpirun" -np $ranks "$poundfe" run "$work/by-rank.prm" --output "$work/by-rank-$ranks" > "$work/ranks.log"
   same_run "$ranks ranks observed by rank" "$work/by-rank-$ranks" "$work/whole-by-rank"
-  [ "$(grep -c '^poundfe' "$work/ranks.log")" -eq 1 ] || fail "$ranks ranks by rank: a note or more than one report"
-  echo "ok   mpirun -np $ranks, Partition = buildings, observed by rank: the whole model's files"
+  [ "$(grep -c '^poundfe' "$work/ranks.log")" -eq 1 ] || fail "$ranks ranks, no VTU: a note or more than one report"
+  echo "ok   mpirun -np $ranks, Partition = buildings, no VTU: the whole model's files"
 done
 "$poundfe" run "$work/by-rank.prm" --output "$work/by-rank-1" > /dev/null
 same_run "one process observed by rank" "$work/by-rank-1" "$work/whole-by-rank"
@@ -114,6 +116,7 @@ echo "ok   Partition = buildings on one process, observed by rank: the whole mod
 # 3D: the plan response, floor spectra and corner accelerations merged by building
 sed -e "s/^subsection Time integration/subsection Time integration\n$solver\n  set End time = 6/" \
     -e "s/^subsection Output/subsection Output\n  set Floor spectra = true\n  set Plots = false\n  subsection Recorders\n    set Record = corner acceleration\n  end/" \
+    -e "s/set VTU interval *= 0\$/set VTU interval = 1/" \
     "$here/../../input/3d-torsional-pair.prm" > "$work/whole-3d.prm"
 sed -e "/^subsection Time integration/a\\  set Partition = buildings" "$work/whole-3d.prm" > "$work/part-3d.prm"
 "$poundfe" run "$work/whole-3d.prm" --output "$work/whole-3d" > /dev/null
@@ -122,7 +125,12 @@ sed -e "/^subsection Time integration/a\\  set Partition = buildings" "$work/who
 "$mpirun" -np 2 "$poundfe" run "$work/part-3d.prm" --output "$work/part-3d" > "$work/ranks.log"
 same_run "3D pair on 2 ranks observed by rank" "$work/part-3d" "$work/whole-3d" 6
 [ "$(grep -c '^poundfe' "$work/ranks.log")" -eq 1 ] || fail "3D by rank: a note or more than one report"
-echo "ok   mpirun -np 2, the 3D torsional pair observed by rank (floor spectra, corners): the whole model's files"
+[ "$(ls "$work/whole-3d/solution" | wc -l)" -eq 7 ] || fail "3D: not 7 VTU frames"
+for frame in "$work"/whole-3d/solution/*.vtu; do
+  python3 "$here/same_vtu.py" "$tolerance" "$frame" "$work/part-3d/solution/$(basename "$frame")" \
+    || fail "3D on 2 ranks: $(basename "$frame") differs"
+done
+echo "ok   mpirun -np 2, the 3D torsional pair (floor spectra, corners, VTU frames): the whole model's files"
 
 refused() { # label file entry [ranks] [command]
   local status=0

@@ -135,6 +135,38 @@ namespace poundfe
   };
 
   using Observers = std::vector<StepObserver *>;
+
+  /// An observer that writes (a row, a frame) at the steps 0, every,
+  /// 2 every, ...: found by a comparison, not a division, per step.
+  class PeriodicObserver : public StepObserver
+  {
+  public:
+    explicit PeriodicObserver(const unsigned int every)
+      : every(every)
+    {}
+    void
+    initialize(const ResponseView &state) override
+    {
+      next = 0;
+      observe_step(state);
+    }
+    void
+    observe_step(const ResponseView &state) override
+    {
+      if (state.step() != next)
+        return;
+      next += every;
+      write(state);
+    }
+
+  protected:
+    /// What it does at each of its steps.
+    virtual void write(const ResponseView &state) = 0;
+
+  private:
+    const unsigned int every;
+    unsigned long      next = 0;
+  };
 } // namespace poundfe
 
 #endif

@@ -42,6 +42,40 @@ namespace poundfe
 {
   class NonlinearElements;
 
+  /// What a field frame draws of each nonlinear element at its committed
+  /// state, element after element: its kind (fixed), force, history
+  /// variable (a gap's penetration, a hinge's z), plastic deformation
+  /// (deformation minus force over initial stiffness; 0 without one),
+  /// whether it is active, and for a contact in plan whether it is in
+  /// reach, its contact point and its force on its first side.
+  struct ElementFrameStates
+  {
+    enum Entry : unsigned int
+    {
+      force,
+      history,
+      plastic,
+      active,
+      in_reach,
+      point_x,
+      point_y,
+      force_x,
+      force_y,
+      n_entries
+    };
+    /// Of `elements` at displacements `u`; with `observed` (observation by
+    /// rank) only those elements h with (*observed)[h], the others' zero.
+    void evaluate(const NonlinearElements &elements, const Vector &u,
+                  const std::vector<char> *observed = nullptr);
+    double operator()(const unsigned int h, const Entry e) const
+    {
+      return values[n_entries * h + e];
+    }
+
+    std::vector<ElementKind> kinds;
+    std::vector<double>      values; // n_entries per element
+  };
+
   class VtuSeries
   {
   public:
@@ -59,6 +93,9 @@ namespace poundfe
     /// member end forces from u, the gaps', hinges' and storeys' states from
     /// `elements` (their committed state).
     void write(double time, const Vector &u, const NonlinearElements &elements);
+    /// The same with the elements' states given (observation by rank:
+    /// merged from the ranks that observe them).
+    void write(double time, const Vector &u, const ElementFrameStates &states);
     /// A mode shape, scaled so that its largest translation is
     /// `mode_amplitude` of the model's largest dimension (the factor is in
     /// the file's field data `scale`, with `mode`, `frequency_Hz` and
@@ -77,34 +114,25 @@ namespace poundfe
 
   /// A time history as a field series (solution.pvd, or solution.xdmf and
   /// solution.h5): a frame every `every` steps.
-  class VtuRecorder : public StepObserver
+  class VtuRecorder : public PeriodicObserver
   {
   public:
     VtuRecorder(const Model &model, const std::string &directory, unsigned int every,
                 FieldFormat format = FieldFormat::vtu)
-      : series(model, directory, "solution", format)
-      , every(every)
+      : PeriodicObserver(every)
+      , series(model, directory, "solution", format)
     {}
-    void
-    initialize(const ResponseView &state) override
-    {
-      next_frame = 0;
-      observe_step(state);
-    }
-    void
-    observe_step(const ResponseView &state) override
-    {
-      if (state.step() != next_frame) // a comparison, not a division, per step
-        return;
-      next_frame += every;
-      series.write(state.time(), state.displacement(), state.elements);
-    }
     void finish(const ResponseView &, const RunStatus &) override { series.finish(); }
 
+  protected:
+    void
+    write(const ResponseView &state) override
+    {
+      series.write(state.time(), state.displacement(), state.elements);
+    }
+
   private:
-    VtuSeries          series;
-    const unsigned int every;
-    unsigned long      next_frame = 0;
+    VtuSeries series;
   };
 } // namespace poundfe
 

@@ -53,11 +53,14 @@ namespace poundfe
   /// building (Time integration/Partition = buildings; theory §3.5d):
   /// `analysis` is this rank's part (prepare_rank_analysis), which the run
   /// takes over. Each rank steps its own buildings; after every accepted
-  /// (sub)step rank 0 gathers u, v and a, replays the whole model's
-  /// nonlinear elements through that state (integration/replayed_stepper.h)
-  /// and runs the standard observers on it, so it writes the files of a
-  /// one-process run; the other ranks write nothing. The summary's whole-
-  /// model modes are not computed (each building's are). Collective;
+  /// (sub)step each rank replays the elements it observes through its own
+  /// values and ghosts (integration/replayed_stepper.h) and runs the
+  /// standard observers on its part; the recorders' rows and field frames
+  /// go to rank 0 summed by owner, and the peaks, logs and work are merged
+  /// there at the end (observation by rank: base/rank_merge.h), so rank 0
+  /// writes the files of a one-process run and the other ranks write
+  /// nothing. The summary's whole-model modes are not computed (each
+  /// building's are). `options.observers` must be empty. Collective;
   /// InputError on every rank for what a partitioned run refuses (friction
   /// surfaces, initial conditions, a recorder's bad entry, ...). The full
   /// result on rank 0; on the others the status and the integrator's figures.
