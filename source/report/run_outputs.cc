@@ -676,8 +676,9 @@ namespace poundfe
       /// started, `first`), then `call` of every observer; an output or
       /// numerical error is kept in stop_reason. Not collective.
       void replay_and_observe(Call call, double t, bool first);
-      /// 0: go on; 1: interrupted; 2: a rank stopped (stop_reason).
-      /// Collective.
+      /// 0: go on; 1: interrupted; 2: a rank stopped (stop_reason); 3:
+      /// rank 0 could not write (then every rank exits as an output
+      /// failure: mpirun reports the first rank's status). Collective.
       int agreed_stop() const;
 
       const RunOptions             &options;
@@ -774,7 +775,9 @@ namespace poundfe
     int
     PartitionedRun::agreed_stop() const
     {
-      int stop = !stop_reason.empty() ? 2 : (options.interruptible && interruption_requested());
+      int stop = output_failed          ? 3 :
+                 !stop_reason.empty()   ? 2 :
+                                          (options.interruptible && interruption_requested());
       MPI_Allreduce(MPI_IN_PLACE, &stop, 1, MPI_INT, MPI_MAX, communicator);
       return stop;
     }
@@ -795,7 +798,7 @@ namespace poundfe
               if (const int stop = agreed_stop(); stop > 0)
                 {
                   status.kind = stop == 1 ? RunStatus::Kind::interrupted : RunStatus::Kind::failed;
-                  status.output_failed = output_failed;
+                  status.output_failed = stop == 3;
                   status.message = stop_reason.empty() ? "another rank stopped the run" : stop_reason;
                   break;
                 }

@@ -194,3 +194,24 @@ if find "$work/interrupted" -name '*.tmp' | grep -q .; then fail "SIGTERM: tempo
 rows=$(($(wc -l < "$work/interrupted/drift.csv") - 1))
 [ "$rows" -gt 0 ] && [ "$rows" -lt 1000 ] || fail "SIGTERM: $rows rows of drift.csv (0 < rows < 1000 expected)"
 echo "ok   SIGTERM to both ranks: exit 143, interrupted after $rows rows, rank 0's files complete"
+
+# A full disk on rank 0 (a small tmpfs; needs root, skipped otherwise) while
+# the ranks merge every step's rows there: exit 1 as on one process, the
+# reason on stderr, summary.json "failed", no temporary file, no rank left
+# waiting for another.
+mkdir -p "$work/small"
+if [ "$(id -u)" -ne 0 ] || ! mount -t tmpfs -o size=256k tmpfs "$work/small" 2> /dev/null; then
+  echo "skip full disk: needs root to mount a small tmpfs"
+  exit 0
+fi
+trap 'umount "$work/small" 2> /dev/null; rm -rf "$work"' EXIT
+sed -e "s/set Output interval *= .*/set Output interval = 0/" -e "s/set VTU interval = 0.1/set VTU interval = 0/" \
+    -e "s/^subsection Output/subsection Output\n  set Plots = false/" "$work/part.prm" > "$work/full.prm"
+status=0
+timeout 300 "$mpirun" -np 2 "$poundfe" run "$work/full.prm" --output "$work/small/run" > "$work/full.log" 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "full disk over 2 ranks: exit status $status: $(tail -n 3 "$work/full.log")"
+grep -q "poundfe: error: disk full: cannot write .*: No space left on device" "$work/full.log" ||
+  fail "full disk over 2 ranks: no reason on stderr"
+grep -q '"status": "failed"' "$work/small/run/summary.json" || fail "full disk over 2 ranks: summary not failed"
+if find "$work/small" -name '*.tmp' | grep -q .; then fail "full disk over 2 ranks: temporary files left"; fi
+echo "ok   full disk on rank 0 over 2 ranks (256 kB tmpfs): exit 1, the reason, summary.json 'failed', no *.tmp"
