@@ -1,4 +1,4 @@
-// Rank 0's replay of a partitioned run (integration/replayed_stepper.h).
+// A rank's replay of a partitioned run (integration/replayed_stepper.h).
 #include <poundfe/integration/replayed_stepper.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
@@ -40,7 +40,7 @@ namespace poundfe
             local_v[s + q] = equations[q] >= 0 ? v[equations[q]] : 0.0;
           }
         if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
-          throw NumericalError("rank 0's replay of the state at t = " + number_text(current_time) +
+          throw NumericalError("the replay of the state at t = " + number_text(current_time) +
                                " s: " + e.label + ": " + e.failure());
       }
   }

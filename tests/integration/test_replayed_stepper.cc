@@ -5,7 +5,7 @@
 // refinement and Steps per contact, so that contacts cut steps into
 // sub-steps; an observer hands a ReplayedStepper, over a second set of the
 // model's elements made independently, the state of every accepted
-// (sub)step, as rank 0 of a partitioned run does (report/run_outputs.cc). Its elements' force and history variable, their work and the
+// (sub)step, as each rank of a partitioned run does for its elements (report/run_outputs.cc). Its elements' force and history variable, their work and the
 // impact log must equal the integrator's to the last bit: the replay does
 // the same operations on the same numbers. A replay at a state the owner did
 // not commit, or a sub-step missed or replayed twice, changes a Bouc-Wen z
@@ -104,7 +104,7 @@ namespace
     std::size_t   n_impacts = 0;
 
   private:
-    /// The integrator's state into the replay's (as the gather does).
+    /// The integrator's state into the replay's (as each rank places its own).
     void
     copy_state()
     {

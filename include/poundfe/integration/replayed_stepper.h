@@ -1,21 +1,19 @@
-// The whole model's state on rank 0 of a run partitioned by building
-// (dynamics/partitioned_history.h), for the observers that write the run's
-// outputs (report/run_outputs.h): the ranks' u, v and a gathered after each
-// accepted (sub)step, and the model's nonlinear elements replayed through
-// the same accepted states. A law's trial state is a function of its
-// committed state and of the trial displacements and velocities alone (the
-// uniaxial-material interface of OpenSees: McKenna, Scott & Fenves 2010;
-// doc/theory.md §2.1), so setting each element's trial state at the
-// gathered state and committing it gives its owner's history; the impact
-// and stick-slip logs and each element's work are recorded from it by the
-// code NewmarkIntegrator records them with (ElementRecords). The energy
-// balance and the Newton statistics are the partitioned integrator's
-// (summed over the ranks, and alike on every rank). It does not integrate:
-// initialize() and advance() are not for it.
-//
-// Observation by rank (theory §3.5d) replays on each rank only the elements
-// that rank observes, through its own and ghost values (the others stay at
-// rest), and merges the work and the impact logs on rank 0 at the end.
+// One rank's view of a run partitioned by building (dynamics/partitioned_history.h)
+// for the observers that write the run's outputs (report/run_outputs.h,
+// observation by rank, theory §3.5d): u, v and a in the model's numbering,
+// filled with the rank's own values and ghosts after each accepted
+// (sub)step, and the nonlinear elements this rank observes replayed through
+// the same accepted states (the others stay at rest). A law's trial state
+// is a function of its committed state and of the trial displacements and
+// velocities alone (the uniaxial-material interface of OpenSees: McKenna,
+// Scott & Fenves 2010; doc/theory.md §2.1), so setting each element's trial
+// state at the accepted state and committing it gives the integrator's
+// history; the impact and stick-slip logs and each element's work are
+// recorded from it by the code NewmarkIntegrator records them with
+// (ElementRecords), and merged on rank 0 at the end. The energy balance and
+// the Newton statistics are the partitioned integrator's (summed over the
+// ranks, and alike on every rank). It does not integrate: initialize() and
+// advance() are not for it.
 #ifndef poundfe_integration_replayed_stepper_h
 #define poundfe_integration_replayed_stepper_h
 
@@ -36,8 +34,9 @@ namespace poundfe
     ReplayedStepper(NonlinearElements &elements, unsigned int n_equations,
                     std::vector<char> observed = {});
 
-    /// u, v and a of the whole model, to be filled in place (by the ranks'
-    /// gather) before start() and each replay(): no copy of size N per state.
+    /// u, v and a of the whole model, to be filled in place (each rank's own
+    /// values and ghosts) before start() and each replay(): nothing allocated
+    /// per state.
     std::array<Vector *, 3> state_to_fill() { return {{&u, &v, &a}}; }
     /// The initial state (t = 0) is in state_to_fill().
     void start();
