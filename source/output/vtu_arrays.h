@@ -13,6 +13,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <mpi.h>
 #include <zlib.h>
 
 #include <array>
@@ -188,10 +189,22 @@ namespace poundfe
     std::unique_ptr<FieldWriter> make_vtu_writer(const std::string &directory,
                                                  const std::string &name, const Points3 &points,
                                                  const Cells &cells);
-    /// <directory>/<name>.h5 and <directory>/<name>.xdmf.
+    /// The rows of a frame this process writes when the ranks of a
+    /// partitioned run write one HDF5 file together (MPI-IO, collective):
+    /// points[p], cells[c] whether they are its own. Rank 0 writes the
+    /// geometry, the constant arrays and the field data.
+    struct FieldRanks
+    {
+      MPI_Comm          communicator;
+      std::vector<char> points, cells;
+    };
+
+    /// <directory>/<name>.h5 and <directory>/<name>.xdmf; with `ranks`,
+    /// written by the ranks together (every call collective).
     std::unique_ptr<FieldWriter> make_xdmf_writer(const std::string &directory,
                                                   const std::string &name, const Points3 &points,
-                                                  const Cells &cells);
+                                                  const Cells &cells,
+                                                  const FieldRanks *ranks = nullptr);
 
     /// The drawing of a 3D model (Model/Dimension = 3; vtu_series_3d.cc).
     class VtuGeometry3D

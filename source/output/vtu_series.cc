@@ -18,6 +18,7 @@
 #include <cstring>
 #include <map>
 #include <optional>
+#include <tuple>
 
 namespace poundfe
 {
@@ -47,11 +48,24 @@ namespace poundfe
 
     /// Dimension 3: the spatial drawing (the planar members above are none).
     std::unique_ptr<VtuGeometry3D> space;
+    const FieldFormat              format;
+    /// The ranks writing one file together (HDF5 + XDMF): the file is
+    /// opened at the first frame, when each rank's rows are known.
+    std::optional<MPI_Comm> communicator;
     /// The files (VTU + PVD, or HDF5 + XDMF).
     std::unique_ptr<FieldWriter> writer;
 
     Impl(const Model &model, const std::string &directory, const std::string &name,
          FieldFormat format);
+
+    /// The writer of `format`, the ranks' (`ranks`) or one process's.
+    void open(const FieldRanks *ranks);
+    /// The rows of each rank under MPI: those it draws whole from its `u`
+    /// and `states` (NaN where it has no value: no NaN in any array of the
+    /// row), the lowest such rank's. Collective.
+    FieldRanks rows_of_ranks(const Vector &u, const ElementFrameStates &states) const;
+    /// The arrays of a time frame.
+    FieldFrame time_frame(double time, const Vector &u, const ElementFrameStates &states) const;
 
     unsigned int add_point(const Point2 &position, const PointSource &source);
     // the constructor's phases: points of the nodes, the cells (adding the
@@ -83,8 +97,8 @@ namespace poundfe
     : model(model)
     , directory(directory)
     , name(name)
+    , format(format)
   {
-    Points3 at;
     if (model.dimension == 3)
       space = std::make_unique<VtuGeometry3D>(model);
     else
@@ -92,13 +106,59 @@ namespace poundfe
         add_node_points();
         cells = make_cells();
         set_model_size();
-        for (const Point2 &p : points)
-          at.push_back({{p.x, p.y, 0}});
       }
+  }
+
+  void
+  VtuSeries::Impl::open(const FieldRanks *ranks)
+  {
+    Points3 at;
+    if (!space)
+      for (const Point2 &p : points)
+        at.push_back({{p.x, p.y, 0}});
     const Points3 &positions = space ? space->point_positions() : at;
     const Cells   &drawn     = space ? space->cell_list() : cells;
-    writer = format == FieldFormat::xdmf ? make_xdmf_writer(directory, name, positions, drawn) :
-                                           make_vtu_writer(directory, name, positions, drawn);
+    writer = format == FieldFormat::xdmf ?
+               make_xdmf_writer(directory, name, positions, drawn, ranks) :
+               make_vtu_writer(directory, name, positions, drawn);
+  }
+
+  FieldRanks
+  VtuSeries::Impl::rows_of_ranks(const Vector &u, const ElementFrameStates &states) const
+  {
+    // the drawing of zeros where this rank has values, NaN where not
+    Vector probe = Vector::Zero(u.size());
+    for (Eigen::Index q = 0; q < u.size(); ++q)
+      if (std::isnan(u[q]))
+        probe[q] = u[q];
+    ElementFrameStates probe_states = states;
+    for (double &x : probe_states.values)
+      x = std::isnan(x) ? x : 0.0;
+    const FieldFrame frame = time_frame(0, probe, probe_states);
+
+    int rank = 0, n_ranks = 1;
+    MPI_Comm_rank(*communicator, &rank);
+    MPI_Comm_size(*communicator, &n_ranks);
+    FieldRanks ranks{*communicator, {}, {}};
+    const std::size_t n_points = space ? space->point_positions().size() : points.size();
+    const std::size_t n_cells  = (space ? space->cell_list() : cells).types.size();
+    for (auto [arrays, n_rows, own] : {std::tuple{&frame.point, n_points, &ranks.points},
+                                       {&frame.cell, n_cells, &ranks.cells}})
+      {
+        std::vector<int> drawn_by(n_rows, rank); // then the lowest rank that draws the row
+        for (const FieldArray &array : *arrays)
+          for (std::size_t i = 0; i < array.values.size(); ++i)
+            if (!std::isfinite(array.values[i]))
+              drawn_by[i / array.n_components] = n_ranks;
+        MPI_Allreduce(MPI_IN_PLACE, drawn_by.data(), n_rows, MPI_INT, MPI_MIN, *communicator);
+        for (const int r : drawn_by)
+          {
+            AssertThrow(r < n_ranks,
+                        dealii::ExcMessage("a row of the field output that no rank can draw"));
+            own->push_back(r == rank);
+          }
+      }
+    return ranks;
   }
 
   void
@@ -398,7 +458,16 @@ namespace poundfe
   VtuSeries::VtuSeries(const Model &model, const std::string &directory, const std::string &name,
                        const FieldFormat format)
     : impl(std::make_unique<Impl>(model, directory, name, format))
-  {}
+  {
+    impl->open(nullptr);
+  }
+
+  VtuSeries::VtuSeries(const Model &model, const std::string &directory, const std::string &name,
+                       const MPI_Comm communicator)
+    : impl(std::make_unique<Impl>(model, directory, name, FieldFormat::xdmf))
+  {
+    impl->communicator = communicator;
+  }
 
   VtuSeries::~VtuSeries() = default;
 
@@ -444,15 +513,23 @@ namespace poundfe
   void
   VtuSeries::write(const double time, const Vector &u, const ElementFrameStates &states)
   {
-    FieldFrame frame = impl->frame(u, 1.0, &states);
-    frame.field.push_back({"TIME", 1, false, false, {time}});
-    if (impl->space)
+    if (!impl->writer) // the ranks' file, at its first frame
       {
-        impl->writer->write_frame(time, frame);
-        return;
+        const FieldRanks ranks = impl->rows_of_ranks(u, states);
+        impl->open(&ranks);
       }
-    const Model        &model = impl->model;
-    const unsigned int  n     = impl->cells.types.size();
+    impl->writer->write_frame(time, impl->time_frame(time, u, states));
+  }
+
+  FieldFrame
+  VtuSeries::Impl::time_frame(const double time, const Vector &u,
+                              const ElementFrameStates &states) const
+  {
+    FieldFrame frame = this->frame(u, 1.0, &states);
+    frame.field.push_back({"TIME", 1, false, false, {time}});
+    if (space)
+      return frame;
+    const unsigned int n = cells.types.size();
     // end forces N V M at both ends, then force, contact, penetration, z,
     // plastic deformation
     std::vector<std::array<double, 6>> end_forces(n, {{0, 0, 0, 0, 0, 0}});
@@ -463,7 +540,7 @@ namespace poundfe
         const Member      &m = model.members[e];
         const FrameElement element(model.nodes[m.nodes[0]].position,
                                    model.nodes[m.nodes[1]].position, m.section);
-        const Vector6      f = element.local_end_forces(impl->element_displacements(m, u));
+        const Vector6      f = element.local_end_forces(element_displacements(m, u));
         for (unsigned int k = 0; k < 6; ++k)
           end_forces[e][k] = f[k];
       }
@@ -472,8 +549,8 @@ namespace poundfe
         const StoreyLink &link  = model.links[l];
         const unsigned int cell = model.members.size() + l;
         if (!link.hysteretic) // a hysteretic storey's force comes from its element
-          force[cell] = link.stiffness * (impl->dof_value(u, link.nodes[1], Component::ux) -
-                                          impl->dof_value(u, link.nodes[0], Component::ux));
+          force[cell] = link.stiffness * (dof_value(u, link.nodes[1], Component::ux) -
+                                          dof_value(u, link.nodes[0], Component::ux));
       }
     unsigned int n_hinges = 0, n_storeys = 0, n_gaps = 0;
     using State = ElementFrameStates;
@@ -483,13 +560,13 @@ namespace poundfe
         switch (states.kinds[h])
           {
             case ElementKind::hinge:
-              cell = impl->first_hinge_cell + n_hinges++;
+              cell = first_hinge_cell + n_hinges++;
               break;
             case ElementKind::storey:
-              cell = impl->hysteretic_storey_cells[n_storeys++];
+              cell = hysteretic_storey_cells[n_storeys++];
               break;
             case ElementKind::gap:
-              cell = impl->first_gap_cell + n_gaps++;
+              cell = first_gap_cell + n_gaps++;
               contact[cell]     = states(h, State::active) != 0;
               penetration[cell] = std::max(0.0, states(h, State::history));
               force[cell]       = states(h, State::force);
@@ -522,12 +599,13 @@ namespace poundfe
           {"plastic_deformation", &plastic}})
       frame.cell.push_back({array_name, 1, false, false, *values});
     frame.cell.push_back({"contact", 1, true, false, std::vector<double>(contact.begin(), contact.end())});
-    impl->writer->write_frame(time, frame);
+    return frame;
   }
 
   void
   VtuSeries::write_mode(const unsigned int mode, const double frequency, const Vector &shape)
   {
+    Assert(impl->writer, dealii::ExcMessage("mode shapes are written by one process"));
     double largest = 0; // translation of the shape
     if (impl->space)
       largest = impl->space->largest_translation(shape);
@@ -548,6 +626,15 @@ namespace poundfe
   void
   VtuSeries::finish()
   {
+    if (!impl->writer) // the ranks' file without a frame
+      {
+        FieldRanks ranks{*impl->communicator, {}, {}};
+        ranks.points.assign(impl->space ? impl->space->point_positions().size() :
+                                          impl->points.size(),
+                            0);
+        ranks.cells.assign((impl->space ? impl->space->cell_list() : impl->cells).types.size(), 0);
+        impl->open(&ranks);
+      }
     impl->writer->finish();
   }
 } // namespace poundfe

@@ -22,7 +22,17 @@
 // Both files are written under "<file>.tmp" and renamed when the series
 // finishes (the HDF5 file first, so that the index never names a missing
 // file); every frame write is a safe point of the interruption, as an
-// AtomicFile write is. One process writes (rank 0 under MPI, as for VTU).
+// AtomicFile write is. One process writes, or (FieldRanks, a partitioned
+// run) the ranks write one file together through MPI-IO (HDF5's parallel
+// driver, H5Pset_fapl_mpio): every call is collective, each rank selects
+// its own rows of each point and cell array (a union of hyperslabs, the
+// same selection in memory and in the file) and rank 0 the rest; the
+// deflated arrays need collective transfers (HDF5 >= 1.10.2). Every HDF5
+// call's status is agreed by the ranks (one MPI_Allreduce), so a failure
+// on one rank stops all of them at the same call, never one rank waiting
+// in a collective call that another has left. The interruption is then
+// the run's agreed stop, not this writer's (one rank's signal would leave
+// the others in a collective call).
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/output/atomic_file.h>
@@ -35,8 +45,10 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,11 +87,20 @@ namespace poundfe
         bool         integer;
       };
 
+      /// Whose rows an array's are under MPI: rank 0's (the geometry, the
+      /// constant and field arrays) or each rank's own points or cells.
+      enum class Rows
+      {
+        root,
+        points,
+        cells
+      };
+
       class XdmfWriter : public FieldWriter
       {
       public:
         XdmfWriter(const std::string &directory, const std::string &name, const Points3 &points,
-                   const Cells &cells);
+                   const Cells &cells, const FieldRanks *ranks);
         ~XdmfWriter() override;
         void write_frame(double label, const FieldFrame &frame) override;
         void finish() override;
@@ -87,16 +108,23 @@ namespace poundfe
       private:
         /// The id, or on failure (a negative id) closes and removes the file
         /// and throws OutputError with errno (EIO when the library set none).
+        /// Under MPI the ranks agree: a failure on any rank is every rank's.
         hid_t checked(hid_t id);
+        /// Throws, after the ranks agreed, when `failure` (an errno, 0: none)
+        /// is not 0 on some rank, as checked() does.
+        void agree(int failure);
+        /// The space of an array (memory and file: the buffer is the whole
+        /// array) with this rank's `rows` selected; H5S_ALL for one process.
+        hid_t selected(hid_t space, Rows rows, hsize_t width) const;
         /// Dataset creation properties: one chunk of the whole array, the
         /// bytes shuffled and deflated (zlib level 1, as the VTU files).
-        hid_t compressed_layout(const hsize_t *dimensions, int rank);
+        hid_t compressed_layout(const hsize_t *dimensions, int n_dimensions);
         /// Smaller arrays are stored contiguous, uncompressed (in the 3D test,
         /// cli/xdmf, the end forces are compressed, the rest is not).
         static constexpr hsize_t min_compressed_values = 1024;
         void  write_mesh(const Points3 &points, const Cells &cells);
         void  write(hid_t group, const std::string &name, const std::vector<double> &values,
-                    unsigned int n_components, bool integer);
+                    unsigned int n_components, bool integer, Rows rows);
         void  write(hid_t group, const std::string &name, const std::vector<long long> &values);
         StoredArray store(hid_t group, const std::string &group_path, const char *center,
                           const FieldArray &array);
@@ -110,13 +138,35 @@ namespace poundfe
         int               failed_with = 0;
         bool              renamed     = false; // the HDF5 file is in place
         std::size_t       n_points, n_cells, topology_size = 0;
+        /// Under MPI: the communicator, this rank, the collective transfer
+        /// and its own points and cells as runs (first row, number of rows).
+        std::optional<MPI_Comm> communicator;
+        int                     rank     = 0;
+        hid_t                   transfer = H5P_DEFAULT;
+        std::vector<std::pair<hsize_t, hsize_t>> point_runs, cell_runs;
         /// Per frame: its label and arrays; the constant arrays, written once.
         std::vector<std::pair<double, std::vector<StoredArray>>> frames;
         std::vector<StoredArray>                                 constant;
       };
 
+      /// The runs of consecutive true entries of `own`: (first, length).
+      std::vector<std::pair<hsize_t, hsize_t>>
+      runs_of(const std::vector<char> &own)
+      {
+        std::vector<std::pair<hsize_t, hsize_t>> runs;
+        for (hsize_t i = 0; i < own.size(); ++i)
+          if (own[i])
+            {
+              if (!runs.empty() && runs.back().first + runs.back().second == i)
+                ++runs.back().second;
+              else
+                runs.emplace_back(i, 1);
+            }
+        return runs;
+      }
+
       XdmfWriter::XdmfWriter(const std::string &directory, const std::string &name,
-                             const Points3 &points, const Cells &cells)
+                             const Points3 &points, const Cells &cells, const FieldRanks *ranks)
         : h5_path(directory + "/" + name + ".h5")
         , temporary_path(h5_path + ".tmp")
         , xdmf_path(directory + "/" + name + ".xdmf")
@@ -125,7 +175,17 @@ namespace poundfe
         , n_points(points.size())
         , n_cells(cells.types.size())
       {
-        throw_if_interrupted();   // a safe point: nothing of this file exists yet
+        if (ranks)
+          {
+            AssertDimension(ranks->points.size(), n_points);
+            AssertDimension(ranks->cells.size(), n_cells);
+            communicator = ranks->communicator;
+            MPI_Comm_rank(ranks->communicator, &rank);
+            point_runs = runs_of(ranks->points);
+            cell_runs  = runs_of(ranks->cells);
+          }
+        else
+          throw_if_interrupted(); // a safe point: nothing of this file exists yet
         register_output(h5_path); // listed before it exists (output_directory.h)
         H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // failures become OutputError
         errno = 0;
@@ -133,6 +193,12 @@ namespace poundfe
         // of a few arrays stored compactly in their object header
         const hid_t access = checked(H5Pcreate(H5P_FILE_ACCESS));
         checked(H5Pset_libver_bounds(access, H5F_LIBVER_V18, H5F_LIBVER_V18));
+        if (communicator)
+          {
+            checked(H5Pset_fapl_mpio(access, *communicator, MPI_INFO_NULL));
+            transfer = checked(H5Pcreate(H5P_DATASET_XFER));
+            checked(H5Pset_dxpl_mpio(transfer, H5FD_MPIO_COLLECTIVE));
+          }
         file = H5Fcreate(temporary_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
         H5Pclose(access);
         checked(file);
@@ -142,20 +208,63 @@ namespace poundfe
 
       XdmfWriter::~XdmfWriter()
       {
-        close_file();
-        if (!renamed) // not finished: an error or an interruption unwinds
+        // Under MPI closing is collective: a writer unwound by an exception
+        // of one rank only leaves its file open (failures agreed by the
+        // ranks closed it already, and the run finishes it on every rank).
+        if (!communicator)
+          close_file();
+        if (transfer != H5P_DEFAULT)
+          H5Pclose(transfer);
+        if (!renamed && rank == 0) // not finished: an error or an interruption unwinds
           std::remove(temporary_path.c_str());
       }
 
       hid_t
       XdmfWriter::checked(const hid_t id)
       {
-        if (id >= 0)
-          return id;
-        failed_with = errno != 0 ? errno : EIO;
-        close_file();
-        std::remove(temporary_path.c_str());
+        agree(id >= 0 ? 0 : errno != 0 ? errno : EIO);
+        return id;
+      }
+
+      void
+      XdmfWriter::agree(int failure)
+      {
+        if (communicator) // the first errno of the ranks that failed
+          MPI_Allreduce(MPI_IN_PLACE, &failure, 1, MPI_INT, MPI_MAX, *communicator);
+        if (failure == 0)
+          return;
+        failed_with = failure;
+        close_file(); // every rank, when under MPI
+        if (rank == 0)
+          std::remove(temporary_path.c_str());
         throw OutputError("write", h5_path, failed_with);
+      }
+
+      hid_t
+      XdmfWriter::selected(const hid_t space, const Rows rows, const hsize_t width) const
+      {
+        if (!communicator)
+          return H5S_ALL;
+        const hid_t selection = H5Scopy(space);
+        if (selection < 0)
+          return selection;
+        if (rows == Rows::root)
+          {
+            if (rank != 0)
+              H5Sselect_none(selection);
+            return selection;
+          }
+        H5Sselect_none(selection);
+        for (const auto &[first, length] : rows == Rows::points ? point_runs : cell_runs)
+          {
+            const hsize_t start[2] = {first, 0}, count[2] = {length, width};
+            if (H5Sselect_hyperslab(selection, H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
+              {
+                H5Sclose(selection);
+                return -1;
+              }
+          }
+        return selection;
       }
 
       void
@@ -170,17 +279,19 @@ namespace poundfe
       }
 
       hid_t
-      XdmfWriter::compressed_layout(const hsize_t *dimensions, const int rank)
+      XdmfWriter::compressed_layout(const hsize_t *dimensions, const int n_dimensions)
       {
-        const hid_t   layout   = checked(H5Pcreate(H5P_DATASET_CREATE));
-        const hsize_t n_values = dimensions[0] * (rank == 2 ? dimensions[1] : 1);
+        const hid_t layout = checked(H5Pcreate(H5P_DATASET_CREATE));
+        if (communicator) // every value is written: no fill pass over the file first
+          checked(H5Pset_fill_time(layout, H5D_FILL_TIME_NEVER));
+        const hsize_t n_values = dimensions[0] * (n_dimensions == 2 ? dimensions[1] : 1);
         if (n_values < min_compressed_values) // a chunk's index costs more than it saves
           return layout;
         // a chunk is at most 4 GiB: 2^28 values (2 GiB of doubles) at most
-        const hsize_t width    = rank == 2 ? dimensions[1] : 1;
+        const hsize_t width    = n_dimensions == 2 ? dimensions[1] : 1;
         const hsize_t chunk[2] = {std::min<hsize_t>(dimensions[0], (hsize_t(1) << 28) / width),
                                   width};
-        checked(H5Pset_chunk(layout, rank, chunk));
+        checked(H5Pset_chunk(layout, n_dimensions, chunk));
         checked(H5Pset_shuffle(layout));
         checked(H5Pset_deflate(layout, 1));
         return layout;
@@ -189,7 +300,7 @@ namespace poundfe
       void
       XdmfWriter::write(const hid_t group, const std::string &name,
                         const std::vector<double> &values, const unsigned int n_components,
-                        const bool integer)
+                        const bool integer, const Rows rows)
       {
         const hsize_t dimensions[2] = {values.size() / n_components, n_components};
         const hid_t   space = checked(H5Screate_simple(n_components == 1 ? 1 : 2, dimensions, nullptr));
@@ -198,14 +309,20 @@ namespace poundfe
                                                  integer ? H5T_STD_I32LE : H5T_IEEE_F64LE, space,
                                                  H5P_DEFAULT, layout, H5P_DEFAULT));
         H5Pclose(layout);
-        herr_t status;
-        if (integer)
+        const hid_t mine = checked(selected(space, rows, n_components));
+        herr_t      status;
+        if (integer) // another rank's rows may be NaN here: not converted
           {
-            const std::vector<std::int32_t> whole(values.begin(), values.end());
-            status = H5Dwrite(set, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, whole.data());
+            std::vector<std::int32_t> whole(values.size());
+            std::transform(values.begin(), values.end(), whole.begin(), [](const double x) {
+              return std::isfinite(x) ? static_cast<std::int32_t>(x) : 0;
+            });
+            status = H5Dwrite(set, H5T_NATIVE_INT32, mine, mine, transfer, whole.data());
           }
         else
-          status = H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+          status = H5Dwrite(set, H5T_NATIVE_DOUBLE, mine, mine, transfer, values.data());
+        if (mine != H5S_ALL)
+          H5Sclose(mine);
         H5Dclose(set);
         H5Sclose(space);
         checked(status);
@@ -221,8 +338,10 @@ namespace poundfe
         const hid_t   set = checked(H5Dcreate2(group, name.c_str(), H5T_STD_I64LE, space,
                                                H5P_DEFAULT, layout, H5P_DEFAULT));
         H5Pclose(layout);
-        const herr_t  status =
-          H5Dwrite(set, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+        const hid_t  mine   = checked(selected(space, Rows::root, 1));
+        const herr_t status = H5Dwrite(set, H5T_NATIVE_LLONG, mine, mine, transfer, values.data());
+        if (mine != H5S_ALL)
+          H5Sclose(mine);
         H5Dclose(set);
         H5Sclose(space);
         checked(status);
@@ -236,7 +355,7 @@ namespace poundfe
         xyz.reserve(3 * points.size());
         for (const auto &p : points)
           xyz.insert(xyz.end(), p.begin(), p.end());
-        write(mesh, "points", xyz, 3, false);
+        write(mesh, "points", xyz, 3, false, Rows::root);
         std::vector<long long> topology;
         topology.reserve(cells.connectivity.size() + 2 * n_cells);
         for (std::size_t c = 0; c < n_cells; ++c)
@@ -251,7 +370,8 @@ namespace poundfe
         write(mesh, "topology", topology);
         write(mesh, "connectivity", {cells.connectivity.begin(), cells.connectivity.end()});
         write(mesh, "offsets", {cells.offsets.begin(), cells.offsets.end()});
-        write(mesh, "types", std::vector<double>(cells.types.begin(), cells.types.end()), 1, true);
+        write(mesh, "types", std::vector<double>(cells.types.begin(), cells.types.end()), 1, true,
+              Rows::root);
         H5Gclose(mesh);
       }
 
@@ -259,7 +379,10 @@ namespace poundfe
       XdmfWriter::store(const hid_t group, const std::string &group_path, const char *center,
                         const FieldArray &array)
       {
-        write(group, array.name, array.values, array.n_components, array.integer);
+        const Rows rows = array.constant || center[0] == 'G' ? Rows::root :
+                          center[0] == 'N'                    ? Rows::points :
+                                                                 Rows::cells;
+        write(group, array.name, array.values, array.n_components, array.integer, rows);
         return {array.name, group_path + "/" + array.name, center,
                 array.values.size() / array.n_components, array.n_components, array.integer};
       }
@@ -269,7 +392,8 @@ namespace poundfe
       {
         if (failed_with != 0) // the first failure again, already reported by its caller
           throw OutputError("write", h5_path, failed_with);
-        throw_if_interrupted(); // the destructor removes the temporary
+        if (!communicator)
+          throw_if_interrupted(); // the destructor removes the temporary
         char group_path[32];
         std::snprintf(group_path, sizeof group_path, "/frames/%05u",
                       static_cast<unsigned int>(frames.size()));
@@ -353,10 +477,11 @@ namespace poundfe
         errno = 0;
         const hid_t closing = file;
         file                = -1;
-        if (H5Fclose(closing) < 0)
+        agree(H5Fclose(closing) < 0 ? (errno != 0 ? errno : EIO) : 0); // collective under MPI
+        if (rank != 0) // rank 0 alone renames and indexes
           {
-            failed_with = errno != 0 ? errno : EIO;
-            throw OutputError("write", h5_path, failed_with);
+            renamed = true;
+            return;
           }
         throw_if_interrupted(); // before the rename: an interrupted file never appears
         if (std::rename(temporary_path.c_str(), h5_path.c_str()) != 0)
@@ -371,9 +496,9 @@ namespace poundfe
 
     std::unique_ptr<FieldWriter>
     make_xdmf_writer(const std::string &directory, const std::string &name, const Points3 &points,
-                     const Cells &cells)
+                     const Cells &cells, const FieldRanks *ranks)
     {
-      return std::make_unique<XdmfWriter>(directory, name, points, cells);
+      return std::make_unique<XdmfWriter>(directory, name, points, cells, ranks);
     }
   } // namespace vtu
 } // namespace poundfe

@@ -26,6 +26,7 @@
 #include <numeric>
 #include <chrono>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 namespace poundfe
@@ -309,6 +310,9 @@ namespace poundfe
       const std::vector<char> &buildings() const { return owns[int(Owner::building)]; }
       /// equations()[q]: whether this rank owns equation q.
       const std::vector<char> &equations() const { return owns[int(Owner::equation)]; }
+      /// available()[q]: whether this rank has the value of equation q (its
+      /// own equations and its ghosts).
+      const std::vector<char> &available() const { return available_equations; }
 
       void owned(Owner kind, std::vector<double> &values) const override;
       void owned(Owner kind, std::vector<unsigned int> &values) const override;
@@ -331,9 +335,21 @@ namespace poundfe
       /// nullptr), zero elsewhere; summed over the ranks by flush().
       void add(RowConsumer &consumer, double time, const double *values, std::size_t n,
                const std::vector<char> *mine);
-      /// The rows added since the last call, summed over the ranks and
-      /// taken on rank 0 (OutputError there). Collective: after every
-      /// observation, whether or not this rank's observers ran.
+      /// What writes with every rank at flush() (the ranks' HDF5 file).
+      class CollectiveWriter
+      {
+      public:
+        virtual ~CollectiveWriter() = default;
+        /// Collective: OutputError on every rank or on none.
+        virtual void write_together() = 0;
+      };
+      /// A write of `writer` with the other ranks at the next flush().
+      void add(CollectiveWriter &writer) { together.push_back(&writer); }
+
+      /// The writes added since the last call, together, then the rows
+      /// summed over the ranks and taken on rank 0 (OutputError there).
+      /// Collective: after every observation, whether or not this rank's
+      /// observers ran; nothing is written unless every rank added as much.
       void flush();
 
     private:
@@ -386,6 +402,8 @@ namespace poundfe
       // owns[kind][i]: whether this rank owns entity i of that kind
       std::array<std::vector<char>, 5> owns;
       std::vector<PendingRow> pending;
+      std::vector<CollectiveWriter *> together;
+      std::vector<char>       available_equations;
       std::vector<double>     rows, row; // reused: nothing allocated per step
       mutable std::vector<double>       sent;
       mutable std::vector<unsigned int> entities;
@@ -409,6 +427,9 @@ namespace poundfe
           owns[int(Owner::floor)][floor_numbering.index(b, f)] = buildings[b];
       for (unsigned int q = 0; q < model.n_equations(); ++q)
         owns[int(Owner::equation)].push_back(own_equation(q));
+      available_equations = owns[int(Owner::equation)];
+      for (const int q : history.ghost_equations())
+        available_equations[q] = 1;
       for (const NonlinearElement &e : elements)
         {
           int first = -1;
@@ -499,14 +520,20 @@ namespace poundfe
     {
       // a rank whose observers stopped (rank 0 could not write) adds fewer
       // rows: then none is written, and the run stops at the next step
-      long counts[2] = {long(rows.size()), -long(rows.size())};
-      MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_LONG, MPI_MAX, communicator);
-      if (counts[0] == -counts[1] && !rows.empty())
+      long counts[4] = {long(rows.size()), -long(rows.size()), long(together.size()),
+                        -long(together.size())};
+      MPI_Allreduce(MPI_IN_PLACE, counts, 4, MPI_LONG, MPI_MAX, communicator);
+      const bool agreed = counts[0] == -counts[1] && counts[2] == -counts[3];
+      if (agreed && !rows.empty())
         MPI_Reduce(rank == 0 ? MPI_IN_PLACE : rows.data(), rows.data(), rows.size(), MPI_DOUBLE,
                    MPI_SUM, 0, communicator);
       try
         {
-          if (rank == 0 && counts[0] == -counts[1])
+          // the writes together first: rank 0's rows may fail on rank 0 alone
+          for (CollectiveWriter *writer : together)
+            if (agreed)
+              writer->write_together();
+          if (rank == 0 && agreed)
             for (const PendingRow &p : pending)
               {
                 row.assign(rows.begin() + p.start, rows.begin() + p.start + p.size);
@@ -516,32 +543,55 @@ namespace poundfe
       catch (const OutputError &)
         {
           pending.clear();
+          together.clear();
           rows.clear();
           throw;
         }
       pending.clear();
+      together.clear();
       rows.clear();
     }
 
-    /// The field output of a run observed by rank: at every `every`-th
-    /// step each rank adds its own equations of u and the frame states of
-    /// the elements it observes (the others zero) as one row of `ranks`;
-    /// on rank 0 the sum is the whole model's frame, which `series` writes.
-    class RankFieldRecorder final : public PeriodicObserver, public RanksOfRun::RowConsumer
+    /// The field output of a run observed by rank, at every `every`-th step.
+    /// VTU: each rank adds its own equations of u and the frame states of
+    /// the elements it observes (the others zero) as one row of `ranks`; on
+    /// rank 0 the sum is the whole model's frame, which `series` writes.
+    /// HDF5 + XDMF (`together`): every rank's series writes its own rows of
+    /// the frame into one file at the flush (NaN where it has no value).
+    class RankFieldRecorder final : public PeriodicObserver,
+                                    public RanksOfRun::RowConsumer,
+                                    public RanksOfRun::CollectiveWriter
     {
     public:
-      /// `series`: rank 0's (nullptr on the others).
+      /// `series`: rank 0's (nullptr on the others), or every rank's
+      /// (`together`, VtuSeries's constructor for ranks).
       RankFieldRecorder(RanksOfRun &ranks, std::unique_ptr<VtuSeries> series,
-                        const unsigned int every)
+                        const unsigned int every, const bool together)
         : PeriodicObserver(every)
         , ranks(ranks)
         , series(std::move(series))
+        , together(together)
       {}
       void
       write(const ResponseView &state) override
       {
         const Vector &u = state.displacement();
         states.evaluate(state.elements, u, &ranks.observed());
+        if (together)
+          {
+            constexpr double none = std::numeric_limits<double>::quiet_NaN();
+            time                  = state.time();
+            this->u               = u;
+            for (Eigen::Index q = 0; q < u.size(); ++q)
+              if (!ranks.available()[q])
+                this->u[q] = none;
+            for (unsigned int h = 0; h < states.kinds.size(); ++h)
+              if (!ranks.observed()[h])
+                std::fill_n(states.values.begin() + ElementFrameStates::n_entries * h,
+                            ElementFrameStates::n_entries, none);
+            ranks.add(*this);
+            return;
+          }
         frame.resize(u.size() + states.values.size());
         for (Eigen::Index q = 0; q < u.size(); ++q)
           frame[q] = ranks.equations()[q] ? u[q] : 0.0;
@@ -557,19 +607,41 @@ namespace poundfe
         std::copy(row.begin() + n, row.end(), states.values.begin());
         series->write(time, u, states);
       }
+      void write_together() override { series->write(time, u, states); }
+      /// Rank 0's series at rank 0's end; collective when `together`, and
+      /// then the other ranks call it too (finish_together).
       void
       finish(const ResponseView &, const RunStatus &) override
       {
         if (series)
           series->finish();
       }
+      /// The other ranks' part of finish() (the ranks' file closed
+      /// together); nothing for VTU.
+      void
+      finish_together(RunStatus &status)
+      {
+        if (!together)
+          return;
+        try
+          {
+            series->finish();
+          }
+        catch (const OutputError &) // rank 0 reports it
+          {
+            status.kind          = RunStatus::Kind::failed;
+            status.output_failed = true;
+          }
+      }
 
     private:
       RanksOfRun                &ranks;
       std::unique_ptr<VtuSeries> series;
+      const bool                 together;
       ElementFrameStates         states; // this rank's, then (rank 0) the sums
       std::vector<double>        frame;
       Vector                     u;
+      double                     time = 0; // of the frame written together
     };
   } // namespace
 
@@ -592,13 +664,21 @@ namespace poundfe
         , observers(analysis, parameters, history.excitation(), view, elements, n_steps,
                     history.linear_solver_name(), "refactorize", options, &ranks,
                     [&](const unsigned int every) {
-                      return std::make_unique<RankFieldRecorder>(
+                      const FieldFormat format   = parameters.output.field_format;
+                      const bool        together = format == FieldFormat::xdmf;
+                      auto recorder = std::make_unique<RankFieldRecorder>(
                         ranks,
+                        together ? std::make_unique<VtuSeries>(analysis.model,
+                                                               options.output_directory,
+                                                               "solution", communicator) :
                         ranks.writes_files() ?
-                          std::make_unique<VtuSeries>(analysis.model, options.output_directory,
-                                                      "solution", parameters.output.field_format) :
-                          nullptr,
-                        every);
+                                   std::make_unique<VtuSeries>(analysis.model,
+                                                               options.output_directory,
+                                                               "solution", format) :
+                                   nullptr,
+                        every, together);
+                      field = recorder.get();
+                      return recorder;
                     })
       {}
 
@@ -624,11 +704,12 @@ namespace poundfe
           whole[ghost[k]] = local[n_own + k];
       }
 
-      NonlinearElements elements;
-      RanksOfRun        ranks;
-      ReplayedStepper   stepper;
-      ResponseView      view;
-      StandardObservers observers;
+      NonlinearElements  elements;
+      RanksOfRun         ranks;
+      ReplayedStepper    stepper;
+      ResponseView       view;
+      RankFieldRecorder *field = nullptr; // of the observers, when there is a field output
+      StandardObservers  observers;
     };
 
     /// What a partitioned run refuses (InputError, alike on every rank), then
@@ -827,6 +908,8 @@ namespace poundfe
       // the ranks' observations merged on rank 0, where they finish
       own->observers.merge(own->ranks);
       own->stepper.merge(own->ranks);
+      if (!own->ranks.writes_files() && own->field)
+        own->field->finish_together(status); // with rank 0's finish_observers
       if (!own->ranks.writes_files())
         return {status, history.statistics(), history.energy(), history.max_energy_error(),
                 history.n_local_elements(), 0, {}};

@@ -11,8 +11,15 @@
 #    field frames and peaks merged on rank 0), with VTU frames and without;
 #  - observed by rank, the 3D torsional pair (plan contact, 5 impacts) with
 #    floor spectra and corner accelerations on 2 ranks: the same files;
+#  - Output/Field format = xdmf on 2 and 3 ranks (2D) and 2 ranks (3D): the
+#    ranks write one HDF5 file together, each its own points and cells;
+#    every array of every frame equals rank 0's VTU frame of the same run
+#    (tests/cli/xdmf.py --compare: 1e-12 of the array's largest value, the
+#    same doubles in fact), the XDMF index against the .h5;
 #  - what it refuses: exit 1, one message naming the entry, nothing written;
-#  - a numerical failure: exit 2 on every rank, the results so far kept.
+#  - a numerical failure: exit 2 on every rank, the results so far kept;
+#  - SIGTERM and a full disk with the ranks writing HDF5 together: exit 143
+#    or 1, the .h5 and its index complete, no rank left in a collective call.
 #   partitioned_run.sh POUNDFE MPIRUN INPUT
 set -eu
 poundfe=$1 mpirun=$2 input=$3
@@ -91,6 +98,19 @@ same(whole, part, "")
 EOF
 }
 
+# together INPUT RANKS VTU_RUN LABEL: INPUT with Field format = xdmf on
+# RANKS ranks (the ranks write solution.h5 together) against the VTU frames
+# of the same run, VTU_RUN
+together() {
+  sed -e "s/^subsection Output/subsection Output\n  set Field format = xdmf/" "$1" > "$work/together.prm"
+  rm -rf "$work/fields" && mkdir "$work/fields" && ln -s "$3" "$work/fields/vtu"
+  "$mpirun" -np "$2" "$poundfe" run "$work/together.prm" --output "$work/fields/xdmf" > /dev/null
+  python3 "$here/xdmf.py" --compare "$work/fields" solution > "$work/together.log" ||
+    { cat "$work/together.log"; fail "$4, HDF5 written together: not rank 0's VTU frames"; }
+  python3 "$here/xdmf.py" --complete "$work/fields/xdmf" > /dev/null || fail "$4: solution.h5 incomplete"
+  echo "ok   $4, Field format = xdmf written by the ranks together: $(cat "$work/together.log")"
+}
+
 "$poundfe" run "$work/part.prm" --output "$work/one" > /dev/null
 same_run "one process" "$work/one"
 echo "ok   Partition = buildings on one process: the whole model's files"
@@ -104,6 +124,7 @@ for ranks in 2 3; do
       || fail "$ranks ranks: $(basename "$frame") differs"
   done
   echo "ok   mpirun -np $ranks, Partition = buildings, VTU frames: the whole model's files and frames ($impacts impacts)"
+  together "$work/part.prm" $ranks "$work/ranks-$ranks" "2D on $ranks ranks"
   "$mpirun" -np $ranks "$poundfe" run "$work/by-rank.prm" --output "$work/by-rank-$ranks" > "$work/ranks.log"
   same_run "$ranks ranks observed by rank" "$work/by-rank-$ranks" "$work/whole-by-rank"
   [ "$(grep -c '^poundfe' "$work/ranks.log")" -eq 1 ] || fail "$ranks ranks, no VTU: a note or more than one report"
@@ -131,6 +152,7 @@ for frame in "$work"/whole-3d/solution/*.vtu; do
     || fail "3D on 2 ranks: $(basename "$frame") differs"
 done
 echo "ok   mpirun -np 2, the 3D torsional pair (floor spectra, corners, VTU frames): the whole model's files"
+together "$work/part-3d.prm" 2 "$work/part-3d" "the 3D pair on 2 ranks"
 
 refused() { # label file entry [ranks] [command]
   local status=0
@@ -172,7 +194,9 @@ echo "ok   numerical failure over 2 ranks: exit 2, the results so far kept"
 # files before any rank exits (mpirun ends the job at the first non-zero
 # exit), exit 143, "interrupted", the rows so far and no temporary file.
 sed -e "s/set Time step     = 0.005/set Time step = 0.0005/" -e "s/set End time      = 1.5/set End time = 10/" \
-    -e "/^subsection Output/a\\  set Plots = false" "$work/by-rank.prm" > "$work/long.prm"
+    -e "/^subsection Output/a\\  set Plots = false" \
+    -e "s/set VTU interval = 0\$/set VTU interval = 0.01\n  set Field format = xdmf/" "$work/by-rank.prm" > "$work/long.prm"
+grep -q "Field format = xdmf" "$work/long.prm" || fail "long.prm: no xdmf frames"
 status=0
 "$mpirun" -np 2 "$poundfe" run "$work/long.prm" --output "$work/interrupted" > /dev/null 2> "$work/err" &
 job=$!
@@ -193,7 +217,9 @@ grep -q '"status": "interrupted"' "$work/interrupted/summary.json" || fail "SIGT
 if find "$work/interrupted" -name '*.tmp' | grep -q .; then fail "SIGTERM: temporary files left"; fi
 rows=$(($(wc -l < "$work/interrupted/drift.csv") - 1))
 [ "$rows" -gt 0 ] && [ "$rows" -lt 1000 ] || fail "SIGTERM: $rows rows of drift.csv (0 < rows < 1000 expected)"
-echo "ok   SIGTERM to both ranks: exit 143, interrupted after $rows rows, rank 0's files complete"
+python3 "$here/xdmf.py" --complete "$work/interrupted" > "$work/frames.log" ||
+  { cat "$work/frames.log"; fail "SIGTERM: solution.h5 and its index incomplete"; }
+echo "ok   SIGTERM to both ranks: exit 143, interrupted after $rows rows, rank 0's files complete, HDF5 written together: $(cat "$work/frames.log")"
 
 # A full disk on rank 0 (a small tmpfs; needs root, skipped otherwise) while
 # the ranks merge every step's rows there: exit 1 as on one process, the
@@ -215,3 +241,19 @@ grep -q "poundfe: error: disk full: cannot write .*: No space left on device" "$
 grep -q '"status": "failed"' "$work/small/run/summary.json" || fail "full disk over 2 ranks: summary not failed"
 if find "$work/small" -name '*.tmp' | grep -q .; then fail "full disk over 2 ranks: temporary files left"; fi
 echo "ok   full disk on rank 0 over 2 ranks (256 kB tmpfs): exit 1, the reason, summary.json 'failed', no *.tmp"
+
+# The same disk filled by the ranks' HDF5 file, written together (a frame
+# every step, few rows): every rank stops at the same call, exit 1 naming
+# solution.h5, no *.tmp, and no rank waits in a collective call (timeout).
+rm -rf "$work/small/run"
+sed -e "s/set Output interval *= .*/set Output interval = 1/" -e "s/set VTU interval = 0.1/set VTU interval = 0.005/" \
+    -e "s/^subsection Output/subsection Output\n  set Plots = false\n  set Field format = xdmf/" \
+    "$work/part.prm" > "$work/full-h5.prm"
+status=0
+timeout 300 "$mpirun" -np 2 "$poundfe" run "$work/full-h5.prm" --output "$work/small/run" > "$work/full.log" 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "full disk, HDF5 over 2 ranks: exit status $status: $(tail -n 3 "$work/full.log")"
+grep -q "poundfe: error: .*cannot write .*solution.h5" "$work/full.log" ||
+  fail "full disk, HDF5 over 2 ranks: solution.h5 not named: $(grep error "$work/full.log")"
+if find "$work/small" -name '*.tmp' | grep -q .; then fail "full disk, HDF5 over 2 ranks: temporary files left"; fi
+[ ! -e "$work/small/run/solution.h5" ] || fail "full disk, HDF5 over 2 ranks: a partial solution.h5"
+echo "ok   full disk with the ranks' HDF5 file (256 kB tmpfs): exit 1 naming solution.h5, no *.tmp, no rank left waiting"

@@ -3,6 +3,11 @@
 output of the same input (the default format), a 2D and a 3D model:
 
   usage: xdmf.py POUNDFE INPUT_DIR
+         xdmf.py --compare DIR NAME   (DIR/xdmf/NAME.xdmf + .h5 against DIR/vtu/NAME.pvd)
+         xdmf.py --complete DIR       (DIR/solution.xdmf names every frame of solution.h5)
+
+The last two serve other tests (cli/partitioned-run: the ranks' HDF5 file
+written together against rank 0's VTU frames of the same run).
 
 The .h5 file is read back by a second method, independent of the writer:
 the HDF5 C library called from Python (ctypes; the datasets found by walking
@@ -308,18 +313,41 @@ def interrupted(poundfe, prm, work, edits):
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
     check(summary["status"] == "interrupted", f"interrupted run: status {summary['status']}")
-    grids = ET.parse(os.path.join(out, "solution.xdmf")).getroot().find("Domain").find("Grid")
-    times = [float(g.find("Time").get("Value")) for g in grids.findall("Grid")]
-    h5 = read_h5(os.path.join(out, "solution.h5"))
-    frames = {p.split("/")[2] for p in h5 if p.startswith("/frames/")}
-    check(len(times) == len(frames) > 1, f"interrupted run: {len(times)} grids, {len(frames)} frames")
+    n_frames, last = complete(out)
+    check(n_frames > 1, f"interrupted run: {n_frames} frames")
     end = summary["analysis"]["end_time_s"]
-    check(times[-1] <= end < 2000, f"interrupted run: last frame {times[-1]}, end {end}")
+    check(last <= end < 2000, f"interrupted run: last frame {last}, end {end}")
     no_temporaries(out, ["solution.h5", "solution.xdmf"])
-    return len(times), times[-1]
+    return n_frames, last
+
+
+def complete(directory):
+    """solution.xdmf names every frame group of solution.h5, in order, and no *.tmp is
+    left: the number of frames and the last frame's time."""
+    grids = ET.parse(os.path.join(directory, "solution.xdmf")).getroot().find("Domain").find("Grid")
+    times = [float(g.find("Time").get("Value")) for g in grids.findall("Grid")]
+    h5 = read_h5(os.path.join(directory, "solution.h5"))
+    frames = sorted({p.split("/")[2] for p in h5 if p.startswith("/frames/")})
+    check(frames == ["%05d" % f for f in range(len(times))],
+          f"{directory}: {len(times)} grids, frame groups {frames[:3]}...")
+    check(times == sorted(times), f"{directory}: grid times not increasing")
+    left = [f for f in os.listdir(directory) if f.endswith(".tmp")]
+    check(not left, f"{directory}: temporaries left: {left}")
+    return len(times), times[-1] if times else None
+
+
+def report(what):
+    print(what)
+    for f in failures[:20]:
+        print("FAIL", f)
+    sys.exit(1 if failures else 0)
 
 
 def main():
+    if sys.argv[1] == "--compare":
+        report("%d frames, %d arrays equal" % check_series(sys.argv[2], sys.argv[3]))
+    if sys.argv[1] == "--complete":
+        report("%d frames to t = %s s" % complete(sys.argv[2]))
     poundfe, inputs = sys.argv[1], sys.argv[2]
     with tempfile.TemporaryDirectory() as work:
         # 2D: two frames with hinges and gaps, 0.4 s, a frame every 0.02 s

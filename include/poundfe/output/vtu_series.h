@@ -35,6 +35,8 @@
 #include <poundfe/output/observer.h>
 #include <poundfe/output/output_parameters.h>
 
+#include <mpi.h>
+
 #include <memory>
 #include <string>
 
@@ -87,6 +89,15 @@ namespace poundfe
     /// index to <directory>/<name>.xdmf (source/output/xdmf_series.cc).
     VtuSeries(const Model &model, const std::string &directory, const std::string &name,
               FieldFormat format = FieldFormat::vtu);
+    /// The ranks of a partitioned run writing one HDF5 file and its XDMF
+    /// index together. Each rank gives write() its own values and NaN
+    /// where it has none (equations it neither owns nor ghosts, elements it
+    /// does not observe). At the first frame the ranks agree whose each
+    /// point and cell is: the lowest rank that draws it without a NaN.
+    /// Each rank then writes its rows, rank 0 the rest. write() and
+    /// finish() are collective; write_mode() is not for this series.
+    VtuSeries(const Model &model, const std::string &directory, const std::string &name,
+              MPI_Comm communicator);
     ~VtuSeries();
 
     /// A frame of a time history: `u` holds the equations' values; the
@@ -102,7 +113,8 @@ namespace poundfe
     /// `period_s`); no forces or states.
     void write_mode(unsigned int mode, double frequency, const Vector &shape);
     /// Write the .pvd index (atomically); xdmf: close the .h5 and write
-    /// the .xdmf (both atomically).
+    /// the .xdmf (both atomically; the ranks' file: rank 0 renames it and
+    /// writes the index).
     void finish();
 
     static constexpr double mode_amplitude = 0.05;
