@@ -1,6 +1,9 @@
+#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/base/input_file.h>
+
+#include <deal.II/base/exceptions.h>
 
 #include <charconv>
 #include <cmath>
@@ -48,6 +51,12 @@ namespace poundfe
   void
   JsonWriter::prefix(const std::string &key)
   {
+    constexpr std::size_t block = std::size_t(1) << 20;
+    if (file && text.size() >= block)
+      {
+        file->write(text);
+        text.clear(); // its capacity kept: one block's memory for the whole file
+      }
     if (!first.back())
       text += ",";
     first.back() = false;
@@ -59,8 +68,9 @@ namespace poundfe
   JsonWriter &
   JsonWriter::begin_object(const std::string &key)
   {
-    if (!text.empty())
+    if (started)
       prefix(key);
+    started = true;
     text += "{";
     first.push_back(true);
     return *this;
@@ -143,6 +153,15 @@ namespace poundfe
       text += (i ? ", " : "") + json_escape(x[i]);
     text += "]";
     return *this;
+  }
+
+  void
+  JsonWriter::finish()
+  {
+    Assert(file, dealii::ExcMessage("finish() is for a streamed text"));
+    text += "\n";
+    file->write(text);
+    text.clear();
   }
 
   void

@@ -278,7 +278,8 @@ namespace poundfe
   RunSummary::write_json(const ResponseView &state, const RunStatus &status,
                          const std::vector<std::string> &written) const
   {
-    JsonWriter json;
+    AtomicFile file(directory + "/summary.json"); // streamed: a large model's is large
+    JsonWriter json(&file);
     begin_summary(json, "run", parameters.time_history.input, status.name());
     if (status.kind == RunStatus::Kind::failed)
       json.value("message", status.message);
@@ -309,7 +310,8 @@ namespace poundfe
     write_energy_and_newton(json, state);
     write_run(json, status, written);
     json.end_object();
-    write_file_atomically(directory + "/summary.json", json.str());
+    json.finish();
+    file.commit();
   }
 
   void

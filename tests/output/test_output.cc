@@ -1,4 +1,5 @@
-// Output writers: CSV round trip and atomic replacement.
+// Output writers: CSV round trip, atomic replacement, JSON in memory and streamed.
+#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
 
@@ -60,4 +61,47 @@ BOOST_AUTO_TEST_CASE(json_is_well_formed)
   const std::string text = json.str();
   BOOST_TEST(text.find("\"a\": 1.5") != std::string::npos);
   BOOST_TEST(text.find("\"s\": \"q\\\"uote\"") != std::string::npos);
+}
+
+// A streamed summary (JsonWriter into an AtomicFile, handed over in blocks
+// of about a megabyte) is the in-memory text to the byte: here about 4 MB,
+// so several blocks, with nested objects and arrays across their joins;
+// nothing appears before the commit, and an unfinished one leaves nothing.
+BOOST_AUTO_TEST_CASE(a_streamed_json_is_the_in_memory_text)
+{
+  const auto fill = [](JsonWriter &json) {
+    json.begin_object().value("program", "poundfe").begin_array("hinges");
+    for (int h = 0; h < 40000; ++h)
+      json.begin_object()
+        .value("label", "B" + std::to_string(h % 97) + "_C" + std::to_string(h))
+        .value("peak", 1.0 / (h + 3))
+        .value("history", std::vector<double>{h * 0.5, -h * 0.25, 1e-300 * h})
+        .end_object();
+    json.end_array().value("done", true).end_object();
+  };
+  JsonWriter memory;
+  fill(memory);
+  const std::string path = "/tmp/poundfe-test-streamed.json";
+  std::filesystem::remove(path);
+  {
+    AtomicFile file(path);
+    JsonWriter streamed(&file);
+    fill(streamed);
+    streamed.finish();
+    BOOST_TEST(!std::filesystem::exists(path)); // nothing until commit
+    file.commit();
+  }
+  std::ifstream      in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  BOOST_TEST(memory.str().size() > 3u * (1u << 20)); // more than three blocks
+  BOOST_TEST((text.str() == memory.str()));
+  std::filesystem::remove(path);
+  {
+    AtomicFile file(path);
+    JsonWriter streamed(&file);
+    fill(streamed); // an error before finish() and commit(): unwound
+  }
+  BOOST_TEST(!std::filesystem::exists(path));
+  BOOST_TEST(!std::filesystem::exists(path + ".tmp"));
 }

@@ -1,4 +1,7 @@
-// A small JSON builder for summary.json (objects, arrays, numbers, strings).
+// A small JSON builder for summary.json (objects, arrays, numbers, strings):
+// in memory (str()), or streamed into an AtomicFile in blocks of about a
+// megabyte, so that the summary of a model with a million hinges (75 MB of
+// text for 660,000 hinges) is never whole in memory.
 #ifndef poundfe_output_json_writer_h
 #define poundfe_output_json_writer_h
 
@@ -8,10 +11,16 @@
 namespace poundfe
 {
   struct InputFile;
+  class AtomicFile;
 
   class JsonWriter
   {
   public:
+    /// In memory (str()), or with `file`, streamed into it (finish()).
+    explicit JsonWriter(AtomicFile *file = nullptr)
+      : file(file)
+    {}
+
     JsonWriter &begin_object(const std::string &key = "");
     JsonWriter &end_object();
     JsonWriter &begin_array(const std::string &key = "");
@@ -28,10 +37,17 @@ namespace poundfe
     JsonWriter &value(const std::string &key, const std::vector<std::string> &x);
 
     std::string str() const { return text + "\n"; }
+    /// Streamed: the rest of the text and the final newline into the file
+    /// (the caller commits it).
+    void finish();
 
   private:
+    /// Before each value: the comma, the new line and its indentation, the
+    /// key; a streamed text goes to its file when a block is full.
     void        prefix(const std::string &key);
+    AtomicFile *file;
     std::string text;
+    bool        started = false; // the root has begun
     std::vector<bool> first{true};
   };
 
