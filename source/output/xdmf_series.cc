@@ -122,6 +122,13 @@ namespace poundfe
         /// Smaller arrays are stored contiguous, uncompressed (in the 3D test,
         /// cli/xdmf, the end forces are compressed, the rest is not).
         static constexpr hsize_t min_compressed_values = 1024;
+        /// Under MPI: rows of a chunk (each rank's points and cells are
+        /// contiguous per building, so most chunks are one rank's). Measured
+        /// on the city block, 51 frames on 2 ranks (doc/benchmarks.md, stop
+        /// 36): whole arrays as one chunk 12.9-13.0 s and 155 MB (one rank
+        /// deflates each array); 2^16 rows 12.0-12.7 s, 160 MB; 2^14 rows
+        /// 11.6-11.8 s but 193 MB (shorter shuffled chunks deflate worse).
+        static constexpr hsize_t rows_per_chunk = hsize_t(1) << 16;
         void  write_mesh(const Points3 &points, const Cells &cells);
         void  write(hid_t group, const std::string &name, const std::vector<double> &values,
                     unsigned int n_components, bool integer, Rows rows);
@@ -287,10 +294,12 @@ namespace poundfe
         const hsize_t n_values = dimensions[0] * (n_dimensions == 2 ? dimensions[1] : 1);
         if (n_values < min_compressed_values) // a chunk's index costs more than it saves
           return layout;
-        // a chunk is at most 4 GiB: 2^28 values (2 GiB of doubles) at most
+        // a chunk is at most 4 GiB: 2^28 values (2 GiB of doubles) at most;
+        // under MPI a chunk is deflated by one rank, which gathers it from
+        // the others: chunks of rows_per_chunk let each rank deflate its own
         const hsize_t width    = n_dimensions == 2 ? dimensions[1] : 1;
-        const hsize_t chunk[2] = {std::min<hsize_t>(dimensions[0], (hsize_t(1) << 28) / width),
-                                  width};
+        const hsize_t most     = communicator ? rows_per_chunk : (hsize_t(1) << 28) / width;
+        const hsize_t chunk[2] = {std::min<hsize_t>(dimensions[0], most), width};
         checked(H5Pset_chunk(layout, n_dimensions, chunk));
         checked(H5Pset_shuffle(layout));
         checked(H5Pset_deflate(layout, 1));
