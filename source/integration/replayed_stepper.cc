@@ -18,8 +18,8 @@ namespace poundfe
       if (observed.empty() || observed[h])
         replayed.push_back(h);
     dof_start.assign(1, 0);
-    for (const NonlinearElement &e : elements)
-      dof_start.push_back(dof_start.back() + e.n_dofs());
+    for (const unsigned int h : replayed) // the DOFs of the observed elements only
+      dof_start.push_back(dof_start.back() + elements[h].n_dofs());
     local_u.setZero(dof_start.back());
     local_v.setZero(dof_start.back());
     for (Vector *x : {&u, &v, &a})
@@ -29,11 +29,11 @@ namespace poundfe
   void
   ReplayedStepper::set_trial_states()
   {
-    for (const unsigned int h : replayed)
+    for (std::size_t i = 0; i < replayed.size(); ++i)
       {
-        NonlinearElement       &e         = elements[h];
+        NonlinearElement       &e         = elements[replayed[i]];
         const std::vector<int> &equations = e.equations();
-        const unsigned int      s = dof_start[h], k = equations.size();
+        const unsigned int      s = dof_start[i], k = equations.size();
         for (unsigned int q = 0; q < k; ++q)
           {
             local_u[s + q] = equations[q] >= 0 ? u[equations[q]] : 0.0;

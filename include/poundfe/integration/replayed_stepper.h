@@ -88,7 +88,8 @@ namespace poundfe
     ElementRecords      records;
     std::vector<unsigned int> replayed; // the elements observed here
     std::vector<double> stored;         // after merge()
-    // element h's DOFs are [dof_start[h], dof_start[h + 1]) of local_u, local_v
+    // the DOFs of element replayed[i] are [dof_start[i], dof_start[i + 1]) of
+    // local_u, local_v (a rank's own elements: its share of the model)
     std::vector<unsigned int> dof_start;
     Vector              u, v, a, local_u, local_v;
     double              current_time = 0;
