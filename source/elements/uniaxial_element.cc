@@ -11,8 +11,9 @@ namespace poundfe
                                    std::unique_ptr<UniaxialLaw> law,
                                    const double                 reference_stiffness,
                                    const std::array<double, 2> &signs)
-    : UniaxialElement(kind, building, std::move(label), {equations[0], equations[1]},
-                      {signs[0], signs[1]}, std::move(law), reference_stiffness)
+    : UniaxialElement(kind, building, std::move(label),
+                      std::vector<int>{equations[0], equations[1]},
+                      std::vector<double>{signs[0], signs[1]}, std::move(law), reference_stiffness)
   {}
 
   UniaxialElement::UniaxialElement(const ElementKind kind, const unsigned int building,

@@ -1,3 +1,4 @@
+#include <poundfe/base/exceptions.h>
 #include <poundfe/elements/frame_element.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/elements/plan_contact_element.h>
@@ -16,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -52,6 +54,9 @@ namespace poundfe
     /// The ranks writing one file together (HDF5 + XDMF): the file is
     /// opened at the first frame, when each rank's rows are known.
     std::optional<MPI_Comm> communicator;
+    /// Why the ranks' file could not be opened: finish() says it again
+    /// (instead of opening an empty one).
+    std::exception_ptr open_failure;
     /// The files (VTU + PVD, or HDF5 + XDMF).
     std::unique_ptr<FieldWriter> writer;
 
@@ -513,10 +518,20 @@ namespace poundfe
   void
   VtuSeries::write(const double time, const Vector &u, const ElementFrameStates &states)
   {
+    if (impl->open_failure)
+      std::rethrow_exception(impl->open_failure);
     if (!impl->writer) // the ranks' file, at its first frame
       {
         const FieldRanks ranks = impl->rows_of_ranks(u, states);
-        impl->open(&ranks);
+        try
+          {
+            impl->open(&ranks);
+          }
+        catch (const OutputError &)
+          {
+            impl->open_failure = std::current_exception();
+            throw;
+          }
       }
     impl->writer->write_frame(time, impl->time_frame(time, u, states));
   }
@@ -626,6 +641,8 @@ namespace poundfe
   void
   VtuSeries::finish()
   {
+    if (impl->open_failure)
+      std::rethrow_exception(impl->open_failure);
     if (!impl->writer) // the ranks' file without a frame
       {
         FieldRanks ranks{*impl->communicator, {}, {}};

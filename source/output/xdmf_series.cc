@@ -42,6 +42,7 @@
 #include "vtu_arrays.h"
 
 #include <hdf5.h>
+#include <sys/statvfs.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -200,6 +201,10 @@ namespace poundfe
         // of a few arrays stored compactly in their object header
         const hid_t access = checked(H5Pcreate(H5P_FILE_ACCESS));
         checked(H5Pset_libver_bounds(access, H5F_LIBVER_V18, H5F_LIBVER_V18));
+        // closing the file closes the groups and datasets a failure left open
+        // (else H5Fclose refuses, the file stays open to MPI_Finalize, and a
+        // full disk keeps the space of the removed temporary)
+        checked(H5Pset_fclose_degree(access, H5F_CLOSE_STRONG));
         if (communicator)
           {
             checked(H5Pset_fapl_mpio(access, *communicator, MPI_INFO_NULL));
@@ -226,10 +231,28 @@ namespace poundfe
           std::remove(temporary_path.c_str());
       }
 
+      /// Why an HDF5 call failed: errno (one process), else (MPI-IO makes
+      /// calls of its own, and its errno is whatever its last one left: an
+      /// output directory's solution.h5.tmp that is a directory was reported
+      /// "Bad file descriptor") ENOSPC if the file system of `path` has less
+      /// than a megabyte left, and EIO otherwise.
+      int
+      reason_of_failure(const std::string &path, const bool errno_is_the_call_s)
+      {
+        if (errno_is_the_call_s && errno != 0)
+          return errno;
+        struct statvfs space;
+        const std::string directory = path.substr(0, path.find_last_of('/') + 1);
+        if (statvfs(directory.empty() ? "." : directory.c_str(), &space) == 0 &&
+            double(space.f_bavail) * double(space.f_frsize) < double(1 << 20))
+          return ENOSPC;
+        return EIO;
+      }
+
       hid_t
       XdmfWriter::checked(const hid_t id)
       {
-        agree(id >= 0 ? 0 : errno != 0 ? errno : EIO);
+        agree(id >= 0 ? 0 : reason_of_failure(h5_path, !communicator));
         return id;
       }
 
@@ -239,7 +262,10 @@ namespace poundfe
         if (communicator) // the first errno of the ranks that failed
           MPI_Allreduce(MPI_IN_PLACE, &failure, 1, MPI_INT, MPI_MAX, *communicator);
         if (failure == 0)
-          return;
+          {
+            errno = 0; // the next call's failure is its own
+            return;
+          }
         failed_with = failure;
         close_file(); // every rank, when under MPI
         if (rank == 0)
@@ -486,7 +512,7 @@ namespace poundfe
         errno = 0;
         const hid_t closing = file;
         file                = -1;
-        agree(H5Fclose(closing) < 0 ? (errno != 0 ? errno : EIO) : 0); // collective under MPI
+        agree(H5Fclose(closing) < 0 ? reason_of_failure(h5_path, !communicator) : 0); // collective under MPI
         if (rank != 0) // rank 0 alone renames and indexes
           {
             renamed = true;

@@ -540,7 +540,7 @@ namespace poundfe
                 p.consumer->take(p.time, row);
               }
         }
-      catch (const OutputError &)
+      catch (const std::exception &) // OutputError, or a NaN (NumericalError) on rank 0
         {
           pending.clear();
           together.clear();
@@ -819,6 +819,10 @@ namespace poundfe
         {
           stop_reason   = e.what();
           output_failed = true;
+        }
+      catch (const NumericalError &e) // a value rank 0 may not write (NaN): told at the next step
+        {
+          stop_reason = e.what();
         }
     }
 

@@ -192,8 +192,13 @@ namespace poundfe
           return false;
         }
     };
-    // the order of summary.json's `files`: the time series, then these
-    std::vector<std::string> written = files;
+    // the order of summary.json's `files`: the time series, then these;
+    // after a failure of output only those that exist (a file that could not
+    // be written is removed, not left incomplete)
+    std::vector<std::string> written;
+    for (const std::string &file : files)
+      if (!status.output_failed || std::filesystem::exists(directory + "/" + file))
+        written.push_back(file);
     if (attempt([&]() { write_profiles(); }))
       written.insert(written.end(), {"drift_profile.csv", "acceleration_profile.csv"});
     if (!analysis.model.gaps.empty() && attempt([&]() { write_impacts(state); }))

@@ -18,8 +18,9 @@
 #    same doubles in fact), the XDMF index against the .h5;
 #  - what it refuses: exit 1, one message naming the entry, nothing written;
 #  - a numerical failure: exit 2 on every rank, the results so far kept;
-#  - SIGTERM and a full disk with the ranks writing HDF5 together: exit 143
-#    or 1, the .h5 and its index complete, no rank left in a collective call.
+#  - SIGTERM, a full disk and a file that cannot be created with the ranks
+#    writing HDF5 together: exit 143 or 1, the .h5 and its index complete or
+#    absent (never empty), no rank left in a collective call.
 #   partitioned_run.sh POUNDFE MPIRUN INPUT
 set -eu
 poundfe=$1 mpirun=$2 input=$3
@@ -221,6 +222,24 @@ python3 "$here/xdmf.py" --complete "$work/interrupted" > "$work/frames.log" ||
   { cat "$work/frames.log"; fail "SIGTERM: solution.h5 and its index incomplete"; }
 echo "ok   SIGTERM to both ranks: exit 143, interrupted after $rows rows, rank 0's files complete, HDF5 written together: $(cat "$work/frames.log")"
 
+# listed SUMMARY: the files summary.json says the run wrote, one a line
+listed() { python3 -c 'import json, sys; print("\n".join(json.load(open(sys.argv[1]))["output"]["files"]))' "$1"; }
+
+# The ranks' HDF5 file cannot be created (solution.h5.tmp is a directory in
+# the way): exit 1 on both ranks at the first frame, naming solution.h5, and
+# no empty solution.h5 or solution.xdmf made at the end instead.
+mkdir -p "$work/blocked/solution.h5.tmp"
+sed -e "s/^subsection Output/subsection Output\n  set Plots = false\n  set Field format = xdmf/" "$work/part.prm" > "$work/blocked.prm"
+status=0
+timeout 300 "$mpirun" -np 2 "$poundfe" run "$work/blocked.prm" --output "$work/blocked" > "$work/blocked.log" 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "solution.h5 cannot be created: exit status $status: $(tail -n 3 "$work/blocked.log")"
+grep -q "poundfe: error: cannot write .*solution.h5" "$work/blocked.log" || fail "solution.h5 cannot be created: not named"
+[ ! -e "$work/blocked/solution.h5" ] && [ ! -e "$work/blocked/solution.xdmf" ] ||
+  fail "solution.h5 cannot be created: an empty series was written at the end"
+grep -q '"status": "failed"' "$work/blocked/summary.json" || fail "solution.h5 cannot be created: summary not failed"
+listed "$work/blocked/summary.json" | grep -qx solution.h5 && fail "solution.h5 cannot be created: summary.json lists it"
+echo "ok   the ranks' HDF5 file cannot be created: exit 1 naming it, no file made at the end, summary.json 'failed' without it"
+
 # A full disk on rank 0 (a small tmpfs; needs root, skipped otherwise) while
 # the ranks merge every step's rows there: exit 1 as on one process, the
 # reason on stderr, summary.json "failed", no temporary file, no rank left
@@ -252,8 +271,11 @@ sed -e "s/set Output interval *= .*/set Output interval = 1/" -e "s/set VTU inte
 status=0
 timeout 300 "$mpirun" -np 2 "$poundfe" run "$work/full-h5.prm" --output "$work/small/run" > "$work/full.log" 2>&1 || status=$?
 [ "$status" -eq 1 ] || fail "full disk, HDF5 over 2 ranks: exit status $status: $(tail -n 3 "$work/full.log")"
-grep -q "poundfe: error: .*cannot write .*solution.h5" "$work/full.log" ||
+grep -q "poundfe: error: disk full: cannot write .*solution.h5: No space left on device" "$work/full.log" ||
   fail "full disk, HDF5 over 2 ranks: solution.h5 not named: $(grep error "$work/full.log")"
 if find "$work/small" -name '*.tmp' | grep -q .; then fail "full disk, HDF5 over 2 ranks: temporary files left"; fi
 [ ! -e "$work/small/run/solution.h5" ] || fail "full disk, HDF5 over 2 ranks: a partial solution.h5"
-echo "ok   full disk with the ranks' HDF5 file (256 kB tmpfs): exit 1 naming solution.h5, no *.tmp, no rank left waiting"
+# the file closed on every rank at the failure: its space is back for the summary
+grep -q '"status": "failed"' "$work/small/run/summary.json" || fail "full disk, HDF5 over 2 ranks: no summary.json 'failed'"
+listed "$work/small/run/summary.json" | grep -qx solution.h5 && fail "full disk, HDF5: summary.json lists solution.h5"
+echo "ok   full disk with the ranks' HDF5 file (256 kB tmpfs): exit 1, 'disk full' naming solution.h5, summary.json 'failed', no *.tmp, no rank left waiting"

@@ -93,7 +93,12 @@ namespace poundfe
     /// index together. Each rank gives write() its own values and NaN
     /// where it has none (equations it neither owns nor ghosts, elements it
     /// does not observe). At the first frame the ranks agree whose each
-    /// point and cell is: the lowest rank that draws it without a NaN.
+    /// point and cell is: the lowest rank that draws it without a NaN (from
+    /// zeros where it has values, so that the values cannot move a row).
+    /// This needs every row to hold an array that passes a NaN through from
+    /// each value the row depends on: true of the displacements and forces
+    /// drawn; not of a comparison (`contact` is 1 for NaN), which a row must
+    /// never hold alone.
     /// Each rank then writes its rows, rank 0 the rest. write() and
     /// finish() are collective; write_mode() is not for this series.
     VtuSeries(const Model &model, const std::string &directory, const std::string &name,
