@@ -65,6 +65,9 @@ namespace poundfe
 
     /// The writer of `format`, the ranks' (`ranks`) or one process's.
     void open(const FieldRanks *ranks);
+    /// The drawing's points and cells, planar or spatial.
+    std::size_t  n_points() const { return space ? space->point_positions().size() : points.size(); }
+    const Cells &drawn_cells() const { return space ? space->cell_list() : cells; }
     /// The rows of each rank under MPI: those it draws whole from its `u`
     /// and `states` (NaN where it has no value: no NaN in any array of the
     /// row), the lowest such rank's. Collective.
@@ -122,10 +125,9 @@ namespace poundfe
       for (const Point2 &p : points)
         at.push_back({{p.x, p.y, 0}});
     const Points3 &positions = space ? space->point_positions() : at;
-    const Cells   &drawn     = space ? space->cell_list() : cells;
     writer = format == FieldFormat::xdmf ?
-               make_xdmf_writer(directory, name, positions, drawn, ranks) :
-               make_vtu_writer(directory, name, positions, drawn);
+               make_xdmf_writer(directory, name, positions, drawn_cells(), ranks) :
+               make_vtu_writer(directory, name, positions, drawn_cells());
   }
 
   FieldRanks
@@ -145,10 +147,9 @@ namespace poundfe
     MPI_Comm_rank(*communicator, &rank);
     MPI_Comm_size(*communicator, &n_ranks);
     FieldRanks ranks{*communicator, {}, {}};
-    const std::size_t n_points = space ? space->point_positions().size() : points.size();
-    const std::size_t n_cells  = (space ? space->cell_list() : cells).types.size();
-    for (auto [arrays, n_rows, own] : {std::tuple{&frame.point, n_points, &ranks.points},
-                                       {&frame.cell, n_cells, &ranks.cells}})
+    for (auto [arrays, n_rows, own] :
+         {std::tuple{&frame.point, n_points(), &ranks.points},
+          {&frame.cell, drawn_cells().types.size(), &ranks.cells}})
       {
         std::vector<int> drawn_by(n_rows, rank); // then the lowest rank that draws the row
         for (const FieldArray &array : *arrays)
@@ -645,12 +646,9 @@ namespace poundfe
       std::rethrow_exception(impl->open_failure);
     if (!impl->writer) // the ranks' file without a frame
       {
-        FieldRanks ranks{*impl->communicator, {}, {}};
-        ranks.points.assign(impl->space ? impl->space->point_positions().size() :
-                                          impl->points.size(),
-                            0);
-        ranks.cells.assign((impl->space ? impl->space->cell_list() : impl->cells).types.size(), 0);
-        impl->open(&ranks);
+        const FieldRanks none{*impl->communicator, std::vector<char>(impl->n_points(), 0),
+                              std::vector<char>(impl->drawn_cells().types.size(), 0)};
+        impl->open(&none);
       }
     impl->writer->finish();
   }

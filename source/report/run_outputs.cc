@@ -666,17 +666,16 @@ namespace poundfe
                     [&](const unsigned int every) {
                       const FieldFormat format   = parameters.output.field_format;
                       const bool        together = format == FieldFormat::xdmf;
-                      auto recorder = std::make_unique<RankFieldRecorder>(
-                        ranks,
-                        together ? std::make_unique<VtuSeries>(analysis.model,
-                                                               options.output_directory,
-                                                               "solution", communicator) :
-                        ranks.writes_files() ?
-                                   std::make_unique<VtuSeries>(analysis.model,
-                                                               options.output_directory,
-                                                               "solution", format) :
-                                   nullptr,
-                        every, together);
+                      const std::string &directory = options.output_directory;
+                      std::unique_ptr<VtuSeries> series; // every rank's, or rank 0's
+                      if (together)
+                        series = std::make_unique<VtuSeries>(analysis.model, directory,
+                                                             "solution", communicator);
+                      else if (ranks.writes_files())
+                        series =
+                          std::make_unique<VtuSeries>(analysis.model, directory, "solution", format);
+                      auto recorder = std::make_unique<RankFieldRecorder>(ranks, std::move(series),
+                                                                          every, together);
                       field = recorder.get();
                       return recorder;
                     })
