@@ -60,11 +60,14 @@ namespace poundfe::commands
     {
       std::ostringstream csv;
       csv.precision(12);
+      // Subset Simulation's CoV lies between two bounds (the levels
+      // uncorrelated, fully correlated); the other methods' upper bound is their CoV.
       csv << "method,failure_probability,generalized_beta,coefficient_of_variation,"
-             "evaluations,wall_time_s\n";
+             "evaluations,wall_time_s,coefficient_of_variation_upper_bound\n";
       for (const SystemEstimate &e : report.estimates)
         csv << e.method << ',' << e.probability << ',' << generalized_beta(e.probability) << ','
             << e.coefficient_of_variation << ',' << e.n_evaluations << ',' << e.wall_time_s
+            << ',' << e.coefficient_of_variation_upper_bound.value_or(e.coefficient_of_variation)
             << '\n';
       return csv.str();
     }
@@ -132,14 +135,19 @@ namespace poundfe::commands
           .end_object();
       json.begin_array("estimates");
       for (const SystemEstimate &e : report.estimates)
-        json.begin_object()
-          .value("method", e.method)
-          .value("failure_probability", e.probability)
-          .value("generalized_beta", generalized_beta(e.probability))
-          .value("coefficient_of_variation", undefined_if_infinite(e.coefficient_of_variation))
-          .value("limit_state_evaluations", e.n_evaluations)
-          .value("wall_time_s", e.wall_time_s)
-          .end_object();
+        {
+          json.begin_object()
+            .value("method", e.method)
+            .value("failure_probability", e.probability)
+            .value("generalized_beta", generalized_beta(e.probability))
+            .value("coefficient_of_variation", undefined_if_infinite(e.coefficient_of_variation));
+          if (e.coefficient_of_variation_upper_bound)
+            json.value("coefficient_of_variation_upper_bound",
+                       undefined_if_infinite(*e.coefficient_of_variation_upper_bound));
+          json.value("limit_state_evaluations", e.n_evaluations)
+            .value("wall_time_s", e.wall_time_s)
+            .end_object();
+        }
       json.end_array().end_object();
       return json.str();
     }
@@ -177,9 +185,15 @@ namespace poundfe::commands
       out << "system (" << (input.reliability.system == SystemType::series ? "series" : "parallel")
           << "): FORM bounds " << report.bounds->lower << " <= Pf <= " << report.bounds->upper << "\n";
     for (const SystemEstimate &e : report.estimates)
-      out << e.method << ": Pf = " << e.probability
-          << (e.coefficient_of_variation > 0 ? " (COV " + std::to_string(e.coefficient_of_variation) + ")" : "")
-          << ", " << e.n_evaluations << " evaluations\n";
+      {
+        out << e.method << ": Pf = " << e.probability;
+        if (e.coefficient_of_variation_upper_bound)
+          out << " (COV between " << e.coefficient_of_variation << ", the levels uncorrelated, and "
+              << *e.coefficient_of_variation_upper_bound << ", fully correlated)";
+        else if (e.coefficient_of_variation > 0)
+          out << " (COV " << e.coefficient_of_variation << ")";
+        out << ", " << e.n_evaluations << " evaluations\n";
+      }
     run.out << out.str() << "results in " << run.directory
               << "/ (summary.json, design_points.csv, estimates.csv)\n";
     if (!report.failure.empty())

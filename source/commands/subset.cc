@@ -27,32 +27,51 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace poundfe::commands
 {
   namespace
   {
+    /// The CoV of P(Y > b_k) from the levels up to k: sqrt(sum delta_i^2)
+    /// (levels uncorrelated, a lower bound) and sum delta_i (fully
+    /// correlated, Au & Beck 2001's upper bound), level by level.
+    std::vector<std::pair<double, double>>
+    cumulative_cov_bounds(const SubsetResult &result)
+    {
+      std::vector<std::pair<double, double>> bounds;
+      double                                 variance = 0, sum = 0;
+      for (const SubsetLevel &L : result.levels)
+        {
+          variance += L.coefficient_of_variation * L.coefficient_of_variation;
+          sum += L.coefficient_of_variation;
+          bounds.emplace_back(std::sqrt(variance), sum);
+        }
+      return bounds;
+    }
+
     /// subset_levels.png: P(Y > b_k) at each level's threshold, with bars of
-    /// +-1 CoV (the levels' CoVs combined as sqrt(sum delta_i^2), as for the
-    /// estimate itself (Au & Beck 2001): the correlation between levels is ignored), and the
-    /// target threshold as a vertical line.
+    /// +-1 CoV at its upper bound (the levels fully correlated: the bars are
+    /// not too short), and the target threshold as a vertical line.
     Plot
     subset_plot(const SubsetResult &result, const double target, const std::string &label)
     {
       std::ostringstream block;
       block.precision(10);
       block << "$levels << EOD\nthreshold,probability,low,high\n";
-      double probability = 1, variance = 0;
-      for (const SubsetLevel &L : result.levels)
+      const std::vector<std::pair<double, double>> bounds = cumulative_cov_bounds(result);
+      double                                       probability = 1;
+      for (std::size_t i = 0; i < result.levels.size(); ++i)
         {
+          const SubsetLevel &L = result.levels[i];
           probability *= L.conditional_probability;
-          variance += L.coefficient_of_variation * L.coefficient_of_variation;
-          const double cov = std::sqrt(variance);
+          const double cov = bounds[i].second;
           block << L.threshold << ',' << probability << ',' << probability * std::max(1 - cov, 1e-3)
                 << ',' << probability * (1 + cov) << '\n';
         }
       Plot plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
-                label, "exceedance probability", {{"$levels", "1:2:3:4", "levels (bars: +-1 CoV)",
+                label, "exceedance probability", {{"$levels", "1:2:3:4", "levels (bars: +-1 CoV, upper bound)",
                                                    "yerrorlines pt 7"}}, true};
       plot.data_blocks = block.str() + "EOD\n";
       std::ostringstream arrow;
@@ -112,8 +131,10 @@ namespace poundfe::commands
     write_levels(const std::string &directory, const SubsetResult &result)
     {
       std::string csv = "level,threshold,conditional_probability,exceedance_probability,"
-                        "acceptance_rate,coefficient_of_variation\n";
-      double      cumulative = 1;
+                        "acceptance_rate,coefficient_of_variation,"
+                        "exceedance_cov_lower_bound,exceedance_cov_upper_bound\n";
+      const std::vector<std::pair<double, double>> bounds = cumulative_cov_bounds(result);
+      double                                       cumulative = 1;
       for (std::size_t i = 0; i < result.levels.size(); ++i)
         {
           const SubsetLevel &L = result.levels[i];
@@ -121,7 +142,8 @@ namespace poundfe::commands
           std::ostringstream row;
           row.precision(10);
           row << i << "," << L.threshold << "," << L.conditional_probability << "," << cumulative
-              << "," << L.acceptance_rate << "," << L.coefficient_of_variation << "\n";
+              << "," << L.acceptance_rate << "," << L.coefficient_of_variation << ","
+              << bounds[i].first << "," << bounds[i].second << "\n";
           csv += row.str();
         }
       write_file_atomically(directory + "/subset_levels.csv", csv);
@@ -156,7 +178,11 @@ namespace poundfe::commands
         json.value("random_model_parameters", run.n_parameters);
       if (!result.interrupted) // otherwise there is no estimate at the threshold
         json.value("failure_probability", result.probability)
-          .value("coefficient_of_variation", undefined_if_infinite(result.coefficient_of_variation));
+          // levels uncorrelated: a lower bound of the CoV
+          .value("coefficient_of_variation", undefined_if_infinite(result.coefficient_of_variation))
+          // levels fully correlated (Au & Beck 2001): an upper bound
+          .value("coefficient_of_variation_upper_bound",
+                 undefined_if_infinite(result.coefficient_of_variation_upper_bound));
       json.value("reached_threshold", result.reached_threshold)
         .value("model_runs", result.model_runs)
         .value("resumed_model_runs", result.resumed_runs)
@@ -192,8 +218,10 @@ namespace poundfe::commands
             out << "g <= 0";
           else
             out << run.response_name << " > " << input.subset.threshold << unit;
-          out << ") = " << result.probability << " (CoV " << result.coefficient_of_variation
-              << "), " << result.levels.size() << " levels, " << result.model_runs
+          out << ") = " << result.probability << " (CoV between "
+              << result.coefficient_of_variation << ", the levels uncorrelated, and "
+              << result.coefficient_of_variation_upper_bound << ", fully correlated), "
+              << result.levels.size() << " levels, " << result.model_runs
               << " model runs"
               << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
         }

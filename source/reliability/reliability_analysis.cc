@@ -151,6 +151,8 @@ namespace poundfe
         report.estimates.push_back({"subset", r.probability, r.coefficient_of_variation,
                                     r.model_runs * problem.limit_states.size(),
                                     seconds_since(start)});
+        report.estimates.back().coefficient_of_variation_upper_bound =
+          r.coefficient_of_variation_upper_bound;
         report.interrupted |= r.interrupted;
         if (!r.reached_threshold && !r.interrupted)
           report.failure = "Subset Simulation stopped at Reliability/Subset/Maximum levels "

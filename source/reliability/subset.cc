@@ -70,6 +70,33 @@ namespace poundfe
       return (1 - p) / (n * p) * (1 + gamma);
     }
 
+    /// N states in n_chains chains (seed j: chain j, the seeds largest
+    /// response first): N / n_chains each, and N mod n_chains of them, drawn
+    /// at random from `stream`, one longer. Not the first ones: those are the
+    /// largest seeds, whose extra states would over-represent the upper tail
+    /// (a bias of Pf that grows with the number of levels). The draw is a
+    /// stream of its own, (stream, 2^64 - 1), which no chain uses (chain j
+    /// draws from (stream, j)): the same on every rank and in a resumed run.
+    std::vector<unsigned int>
+    chain_lengths(const unsigned int N, const unsigned int n_chains, const std::uint64_t stream)
+    {
+      std::vector<unsigned int> length(n_chains, N / n_chains);
+      const unsigned int        n_longer = N % n_chains;
+      if (n_longer == 0)
+        return length;
+      NormalStream        random(stream, ~std::uint64_t(0));
+      std::vector<double> key(n_chains);
+      for (double &k : key)
+        k = random.next();
+      std::vector<unsigned int> order(n_chains);
+      std::iota(order.begin(), order.end(), 0);
+      std::stable_sort(order.begin(), order.end(),
+                       [&](unsigned int a, unsigned int b) { return key[a] < key[b]; });
+      for (unsigned int i = 0; i < n_longer; ++i)
+        ++length[order[i]];
+      return length;
+    }
+
     /// Global ids in chain order, the owner of chain j is rank j mod P.
     std::vector<unsigned int>
     chain_starts(const std::vector<unsigned int> &lengths)
@@ -228,13 +255,9 @@ namespace poundfe
     SubsetRun::run_chains(const unsigned int l, const double b,
                           const std::vector<unsigned int> &seeds)
     {
-      // N states in all, N/n_s per seed, the first N mod n_s one longer
-      // (p0 N or 1/p0 not whole: chains of unequal length).
       LevelSamples       next;
       const unsigned int n_chains = seeds.size();
-      next.chain_length.assign(n_chains, N / n_chains);
-      for (unsigned int j = 0; j < N % n_chains; ++j)
-        ++next.chain_length[j];
+      next.chain_length = chain_lengths(N, n_chains, chain_seed(settings.seed, l));
       const std::vector<unsigned int> start = chain_starts(next.chain_length);
       next.response.assign(N, 0.0);
       std::vector<std::vector<double>> my_seeds = move_seeds(seeds);
@@ -330,14 +353,18 @@ namespace poundfe
           add_level(b, static_cast<double>(seeds.size()) / N);
           run_chains(l + 1, b, seeds);
         }
-      double variance = 0;
+      // The levels' CoVs combined: uncorrelated (a lower bound) and fully
+      // correlated (Au & Beck 2001's upper bound).
+      double variance = 0, sum = 0;
       result.probability = 1;
       for (const SubsetLevel &L : result.levels)
         {
           result.probability *= L.conditional_probability;
           variance += L.coefficient_of_variation * L.coefficient_of_variation;
+          sum += L.coefficient_of_variation;
         }
-      result.coefficient_of_variation = std::sqrt(variance);
+      result.coefficient_of_variation             = std::sqrt(variance);
+      result.coefficient_of_variation_upper_bound = sum;
       return result;
     }
   } // namespace

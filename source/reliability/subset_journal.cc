@@ -131,6 +131,10 @@ namespace poundfe
     line += ", maximum levels " + std::to_string(s.max_levels) + ", threshold ";
     append_number(line, threshold);
     line += ", random variables " + std::to_string(n_variables);
+    // Which chains are longer (N / n_s not whole) decides which sample each
+    // recorded response belongs to: a journal of a program that gave the
+    // extra states to the first chains is refused, not mixed in.
+    line += ", longer chains at random";
     return line;
   }
 

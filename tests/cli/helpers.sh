@@ -17,10 +17,12 @@ wait_for_rows() {
   fail "no $2 rows in $1 after 30 s"
 }
 # Every numeric cell of two CSV files with the same header agrees to $3
-# relative to its column's largest magnitude; text cells are equal.
+# relative to its column's largest finite magnitude; text cells are equal. A
+# NaN in either file fails (it would compare as nothing), an infinity must
+# be the same infinity in both.
 same_csv() {
   python3 - "$1" "$2" "$3" <<'PY'
-import csv, sys
+import csv, math, sys
 a, b = (list(csv.reader(open(p))) for p in sys.argv[1:3])
 tolerance = float(sys.argv[3])
 if a[0] != b[0] or len(a) != len(b):
@@ -34,8 +36,12 @@ for j in range(len(a[0])):
         if [r[j] for r in a[1:]] != [r[j] for r in b[1:]]:
             sys.exit(f"column {a[0][j]} differs")
         continue
-    scale = max([abs(v) for v in x] + [1e-300])
-    worst = max([worst] + [abs(u - v) / scale for u, v in zip(x, y)])
+    if any(math.isnan(v) for v in x + y):
+        sys.exit(f"column {a[0][j]}: NaN")
+    if any((math.isinf(u) or math.isinf(v)) and u != v for u, v in zip(x, y)):
+        sys.exit(f"column {a[0][j]}: an infinity differs")
+    scale = max([abs(v) for v in x if math.isfinite(v)] + [1e-300])
+    worst = max([worst] + [abs(u - v) / scale for u, v in zip(x, y) if math.isfinite(u)])
 print(f"largest relative difference {worst:.3g}")
 sys.exit(0 if worst <= tolerance else 1)
 PY

@@ -1,7 +1,10 @@
 """same_columns.py A.csv B.csv SIGN TOLERANCE: every number of B is SIGN times
 the number of A in the same row and column (the first column, time, as is),
-to TOLERANCE relative to the column's largest magnitude; exit 1 otherwise."""
+to TOLERANCE relative to the column's largest finite magnitude; exit 1
+otherwise. A NaN in either file fails (it compares as nothing: a column of
+NaN would otherwise pass), an infinity must be the same in both."""
 import csv
+import math
 import sys
 
 
@@ -18,7 +21,12 @@ worst = 0.0
 for j in range(1, len(a[0])):
     column_a = [float(r[j]) for r in a[1:]]
     column_b = [float(r[j]) for r in b[1:]]
-    scale = max(abs(x) for x in column_a) or 1.0
-    worst = max(worst, max(abs(y - sign * x) for x, y in zip(column_a, column_b)) / scale)
+    if any(math.isnan(v) for v in column_a + column_b):
+        sys.exit("column %s: NaN" % a[0][j])
+    if any((math.isinf(x) or math.isinf(y)) and y != sign * x for x, y in zip(column_a, column_b)):
+        sys.exit("column %s: an infinity differs" % a[0][j])
+    scale = max([abs(x) for x in column_a if math.isfinite(x)] + [0.0]) or 1.0
+    worst = max([worst] + [abs(y - sign * x) / scale
+                           for x, y in zip(column_a, column_b) if math.isfinite(x)])
 print("largest relative difference %.3g" % worst)
 sys.exit(0 if worst <= tolerance else 1)

@@ -34,6 +34,10 @@ namespace poundfe
     double        coefficient_of_variation = 0; // 0 for FORM/SORM (no sampling error)
     unsigned long n_evaluations = 0;            // of limit-state functions
     double        wall_time_s   = 0;
+    /// Subset Simulation: the CoV with its levels fully correlated (Au &
+    /// Beck 2001's upper bound; `coefficient_of_variation` takes them
+    /// uncorrelated, a lower bound); the other methods: none (their CoV is one value).
+    std::optional<double> coefficient_of_variation_upper_bound;
   };
 
   struct ReliabilityReport

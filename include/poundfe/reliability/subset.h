@@ -3,17 +3,23 @@
 //   Level 0: N direct samples. Level i: the threshold b_i is the (1 - p0)
 //   quantile of Y; the n_s = round(p0 N) samples above it seed Markov chains
 //   of N/n_s states each (the seed is the first state; when N/n_s is not
-//   whole, the first N mod n_s chains have one state more: Papaioannou et al.
-//   2015, Probabilistic Engineering Mechanics 41, sec. 3), grown by the modified
+//   whole, N mod n_s chains drawn at random have one state more: Papaioannou
+//   et al. 2015, Probabilistic Engineering Mechanics 41, sec. 3; giving them
+//   to the largest seeds instead over-represents the upper tail at every
+//   level and biases Pf upwards), grown by the modified
 //   Metropolis algorithm: component-wise Gaussian proposal xi_k + s N(0,1),
 //   accepted with min(1, phi(candidate) / phi(xi_k)); the candidate vector is
 //   then kept only if Y > b_i, otherwise the chain repeats its state.
 //   Pf = p0^(m-1) P(Y > b | level m-1).
 //   CoV: delta_i^2 = (1 - P_i)/(N P_i) (1 + gamma_i), gamma_i from the
-//   correlation of the indicators along the chains (Au & Beck 2001, eq. 27-29);
-//   the total is sqrt(sum delta_i^2) (levels taken as uncorrelated).
+//   correlation of the indicators along the chains (Au & Beck 2001, eq. 27-29).
+//   The levels' estimates are correlated (each level's chains start from the
+//   previous level's samples), so the CoV of Pf lies between two bounds:
+//   sqrt(sum delta_i^2) (levels uncorrelated: a lower bound) and
+//   sum delta_i (levels fully correlated: Au & Beck 2001's upper bound).
 // Parallel: chain j runs on rank j mod P from a random stream of (seed,
-// level, j), so the estimate does not depend on the number of ranks.
+// level, j), and the longer chains are drawn from a stream of (seed, level)
+// on every rank alike, so the estimate does not depend on the number of ranks.
 // Resumable: with a journal (reliability/subset_journal.h) every response
 // is recorded, and one an earlier run recorded is taken, not recomputed.
 #ifndef poundfe_reliability_subset_h
@@ -48,7 +54,12 @@ namespace poundfe
   struct SubsetResult
   {
     double                   probability = 0;
+    /// sqrt(sum delta_i^2): the CoV if the levels were uncorrelated, a lower
+    /// bound (the levels are positively correlated).
     double                   coefficient_of_variation = 0;
+    /// sum delta_i: the CoV if the levels were fully correlated (Au & Beck
+    /// 2001: delta^2 <= sum_ij delta_i delta_j), an upper bound.
+    double                   coefficient_of_variation_upper_bound = 0;
     std::vector<SubsetLevel> levels;
     unsigned long            model_runs = 0;  // run by this call
     unsigned long            resumed_runs = 0; // taken from the journal of an earlier run
