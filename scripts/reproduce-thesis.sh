@@ -6,17 +6,23 @@
 # also runs), each figure beside its regenerated plot (doc/thesis-figures/),
 # what the thesis leaves unspecified and what was chosen, and what cannot be
 # reproduced yet. About 4–5 minutes.
-#   scripts/reproduce-thesis.sh BUILD_DIR [OUTPUT_DIR]   (OUTPUT_DIR: results/thesis)
+#   scripts/reproduce-thesis.sh BUILD_DIR [OUTPUT_DIR [--check]]   (OUTPUT_DIR: results/thesis)
+# --check (cli/thesis-reproduction): every run but the five bifurcation
+# diagrams (4 of the 5 minutes), then each line of the committed
+# doc/thesis-reproduction.md that those runs decide is compared with the
+# regenerated one; nothing in doc/ is written. Exit 1 on a difference.
 set -euo pipefail
-[ $# -ge 1 ] || { echo "usage: $0 BUILD_DIR [OUTPUT_DIR]" >&2; exit 1; }
+[ $# -ge 1 ] || { echo "usage: $0 BUILD_DIR [OUTPUT_DIR [--check]]" >&2; exit 1; }
 build=$(cd "$1" && pwd)
+check=${3:-}
 cd "$(dirname "$0")/.."
 poundfe=$build/poundfe
 [ -x "$poundfe" ] || { echo "reproduce-thesis.sh: no $poundfe (build first)" >&2; exit 1; }
 out=${2:-results/thesis}
 inputs=input/thesis
 figures=doc/thesis-figures
-mkdir -p "$out" "$figures"
+mkdir -p "$out"
+[ "$check" = --check ] || mkdir -p "$figures"
 timing="$out/timing.txt"
 : > "$timing"
 
@@ -25,7 +31,7 @@ run() {
   local command=$1 name=$2 file=${3:-$inputs/$2.prm}
   local start=$SECONDS
   "$poundfe" "$command" "$file" --output "$out/$name" > "$out/$name.log"
-  echo "$name: poundfe $command $file, $((SECONDS - start)) s" >> "$timing"
+  echo "$name: poundfe $command ${file#"$out"/}, $((SECONDS - start)) s" >> "$timing"
 }
 
 # Tables. Table 2.2 also with the intensity not rounded (the thesis's rule
@@ -42,10 +48,16 @@ run modal eq-2.36
 # Figures
 for f in fig-3.1a fig-3.1b fig-3.1c fig-3.9; do run run $f; done
 run run fig-3.10c input/three-storey-free-vibration.prm
-for f in fig-3.2a fig-3.2b fig-3.2c fig-3.2d fig-3.2e; do run bifurcation $f; done
+if [ "$check" != --check ]; then
+  for f in fig-3.2a fig-3.2b fig-3.2c fig-3.2d fig-3.2e; do run bifurcation $f; done
+fi
 for f in fig-3.3a fig-3.3b fig-3.4a fig-3.5a-low fig-3.5a-high fig-3.6; do run stationary-pdf $f; done
 run reliability fig-3.12
 run switching fig-3.7
+
+if [ "$check" = --check ]; then
+  exec python3 scripts/thesis_reproduction.py --check doc/thesis-reproduction.md "$out" "$timing"
+fi
 
 copy() { cp "$out/$1" "$figures/$2"; }
 for f in fig-3.1a fig-3.1b fig-3.1c; do copy $f/phase_portrait.png $f.png; done

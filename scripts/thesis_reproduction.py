@@ -2,13 +2,20 @@
 """doc/thesis-reproduction.md from the outputs of scripts/reproduce-thesis.sh.
 
   thesis_reproduction.py OUTPUT_DIR TIMING_FILE > doc/thesis-reproduction.md
+  thesis_reproduction.py --check DOC OUTPUT_DIR TIMING_FILE
+      regenerate the page from the runs OUTPUT_DIR holds and compare it with
+      DOC line by line: a line of a run that is not there (the bifurcation
+      diagrams, in `reproduce-thesis.sh --check`) and the run times are not
+      compared; exit 1, the differing lines listed, on any other difference
 
 The tables' comparisons come from tests/cli/thesis_tables.py (the printed
 values are typed in there once, for this page and for cli/thesis-tables);
 the figures' facts (impacts, peaks, periods, probabilities) are read from
 the runs' summary.json and CSV files.
 """
+import contextlib
 import csv
+import io
 import json
 import os
 import sys
@@ -16,7 +23,35 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "cli"))
 import thesis_tables  # noqa: E402
 
+checked_doc = None
+if len(sys.argv) == 5 and sys.argv[1] == "--check":
+    checked_doc = sys.argv[2]
+    del sys.argv[1:3]
+if len(sys.argv) != 3:
+    sys.exit(__doc__)
 out, timing = sys.argv[1], sys.argv[2]
+# a line the --check leaves out: its runs were not made
+NOT_RUN = "(not run: "
+
+
+def row(runs, make):
+    """The text of a line that needs the outputs of `runs`."""
+    missing = [r for r in runs if not os.path.isdir(f"{out}/{r}")]
+    if not missing:
+        return make()
+    if checked_doc is None:
+        sys.exit(f"thesis_reproduction.py: no output of {', '.join(missing)} in {out}")
+    return NOT_RUN + ", ".join(missing) + ")"
+
+
+def estimate_text(e):
+    """A reliability estimate with its CoV; Subset Simulation's between its
+    bounds (the levels uncorrelated, fully correlated)."""
+    text = f"{e['method']} P_f = {float(e['failure_probability']):.3g}"
+    cov, upper = float(e["coefficient_of_variation"]), float(e["coefficient_of_variation_upper_bound"])
+    if e["method"] == "subset":
+        return text + f" (CoV {cov:.2g} to {upper:.2g}: levels uncorrelated to fully correlated)"
+    return text + (f" (CoV {cov:.2g})" if cov > 0 else "")
 
 
 def switching_counts(name):
@@ -59,6 +94,10 @@ def free_vibration_text():
 
 
 def period_counts(name):
+    return row([name], lambda: counts_of_periods(name))
+
+
+def counts_of_periods(name):
     s = summary(name)
     counts = {}
     for p in s["periods"]:
@@ -68,6 +107,9 @@ def period_counts(name):
     return ", ".join(periodic + [f"not periodic: {counts.get(0, 0)}"]) + " values"
 
 
+page = io.StringIO()
+redirect = contextlib.redirect_stdout(page)
+redirect.__enter__()
 print("""# The thesis reproduced
 
 Written by `scripts/reproduce-thesis.sh BUILD_DIR` (do not edit by hand): every table and
@@ -143,7 +185,7 @@ print(f"""## Figures
 | Fig. 3.10 (c), §3.4.1 with §2.3 eq. 2.35: free vibration of the three-storey building, u0 = [0.05; 0.05; 0.05], v0 = 0, no force | ![](thesis-figures/fig-3.10c.png) | `run` of input/three-storey-free-vibration.prm: the roof displacement against time; {free_vibration_text()} | M = diag(m, m, m/2), m = 1000 kg, k = 5e6 N/m (eq. 2.36's values); damping → Table 2.1's first three ratios per mode (0.03, 0.04, 0.05; the thesis names Rayleigh damping without coefficients); Δt = 2e-4 s, 2 s |
 | Fig. 3.9, §3.4.1: transient response of an elastic/inelastic system, hysteresis | ![](thesis-figures/fig-3.9-hysteresis.png) ![](thesis-figures/fig-3.9-phase.png) | `run` of fig-3.9.prm: Bouc-Wen hysteresis loop and phase portrait | every parameter → the Bouc-Wen single storey of input/bouc-wen-sdof.prm |
 | Fig. 3.12 (a), §2.3.2.1 and §3.4.2: two-bay two-storey frame, collapse mechanisms | (numbers, no plot) | `reliability` of fig-3.12.prm, series system of 5 mechanisms: """ +
-      "; ".join(f"{e['method']} P_f = {float(e['failure_probability']):.3g}" for e in estimates) +
+      "; ".join(estimate_text(e) for e in estimates) +
       """ | geometry, strengths, load statistics → input/thesis-frame-mechanisms.prm |
 """)
 
@@ -166,3 +208,24 @@ print("""## Not yet reproducible
 print("```")
 print(open(timing).read().rstrip())
 print("```")
+redirect.__exit__(None, None, None)
+if checked_doc is None:
+    sys.stdout.write(page.getvalue())
+    sys.exit(0)
+
+
+def before_run_time(text):
+    return text.split("\n## Run time\n")[0].split("\n")
+
+
+new, old = before_run_time(page.getvalue()), before_run_time(open(checked_doc).read())
+if len(new) != len(old):
+    sys.exit(f"{checked_doc}: {len(old)} lines before the run times, the script now writes "
+             f"{len(new)}: regenerate it (scripts/reproduce-thesis.sh BUILD_DIR)")
+differing = [(n, a, b) for n, (a, b) in enumerate(zip(old, new), 1) if a != b and NOT_RUN not in b]
+skipped = sum(1 for b in new if NOT_RUN in b)
+for n, a, b in differing:
+    print(f"{checked_doc}:{n}: committed\n  {a}\nregenerated\n  {b}")
+print(f"{len(new) - skipped} lines compared, {skipped} of runs not made skipped, "
+      f"{len(differing)} differ")
+sys.exit(1 if differing else 0)

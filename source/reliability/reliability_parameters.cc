@@ -70,8 +70,9 @@ namespace poundfe
                       Patterns::Integer(2));
     prm.add_parameter("Conditional probability", conditional_probability,
                       "p0 in (0, 0.5]: the level thresholds are the (1 - p0) quantiles; "
-                      "round(p0 N) seeds grow chains of N/round(p0 N) states (unequal "
-                      "lengths when that is not whole). Unit: dimensionless.");
+                      "round(p0 N) seeds grow chains of N/round(p0 N) states (when that "
+                      "is not whole, chains drawn at random have one state more). Unit: "
+                      "dimensionless.");
     prm.add_parameter("Maximum levels", max_levels, "Stop after this many levels. Unit: count.",
                       Patterns::Integer(1, 100));
     prm.add_parameter("Proposal spread", proposal_spread,
@@ -94,7 +95,7 @@ namespace poundfe
     input.positive(sp + "Proposal spread", proposal_spread);
     // Any p0 in (0, 0.5] (Au & Beck 2001 use 0.1; Papaioannou et al. 2015
     // recommend 0.1-0.3): round(p0 N) seeds, chains of N/seeds states with
-    // the remainder spread one each over the first chains (subset.cc).
+    // the remainder spread one each over chains drawn at random (subset.cc).
     const double p0 = conditional_probability;
     if (!(p0 > 0 && p0 <= 0.5))
       input.fail(sp + "Conditional probability", "must lie in (0, 0.5]");

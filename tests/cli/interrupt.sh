@@ -113,7 +113,7 @@ echo "ok   subset, SIGINT: exit status 130, interrupted after $(($(wc -l < "$d/s
 grep -q "resuming: " "$d.resumed.log" || fail "subset: did not resume: $(cat "$d.resumed.log")"
 diff "$work/subset-reference/subset_levels.csv" "$d/subset_levels.csv" > /dev/null ||
   fail "subset: resumed levels differ from uninterrupted"
-for key in failure_probability coefficient_of_variation; do
+for key in failure_probability coefficient_of_variation coefficient_of_variation_upper_bound; do
   [ "$(grep "\"$key\"" "$d/summary.json")" = "$(grep "\"$key\"" "$work/subset-reference/summary.json")" ] ||
     fail "subset: resumed $key differs from uninterrupted"
 done
