@@ -283,8 +283,8 @@ main(int argc, char **argv)
   else
     dealii::MultithreadInfo::set_thread_limit(1); // what MPI_InitFinalize(argc, argv, 1) sets
   dealii::deal_II_exceptions::disable_abort_on_exception();
-  // Every rank reads the same input and fails the same way: rank 0 speaks
-  // (also before MPI is initialised, when the input is read).
+  // Rank 0 speaks (also before MPI is initialised): the ranks agree on their
+  // inputs before a command runs, and rank 0 prints any rank's refusal.
   const bool    root = mpi ? dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 :
                              launched_rank() == 0;
   std::ostream &err  = root ? std::cerr : silent;
