@@ -4,12 +4,14 @@
 #include <poundfe/base/interruption.h>
 #include <poundfe/commands/command_guard.h>
 #include <poundfe/commands/command_table.h>
+#include <poundfe/commands/rank_agreement.h>
 #include <poundfe/input/input_parameters.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <optional>
@@ -141,6 +143,29 @@ namespace
     return 0;
   }
 
+  /// The number of processes of mpirun's job before MPI is initialised (Open
+  /// MPI's and MPICH's launchers say it); 1 when launched alone.
+  int
+  launched_size()
+  {
+    for (const char *name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+      if (const char *size = std::getenv(name))
+        return std::max(1, std::atoi(size));
+    return 1;
+  }
+
+  /// Whether MPI is initialised before the input is read: for a command
+  /// that runs over MPI, and for run under mpirun with several processes
+  /// (its input may partition it by building or choose a distributed
+  /// solver): the ranks must be able to agree on their inputs before any
+  /// of them starts collective work, also when one of them cannot read its
+  /// own. (MPI_InitFinalize costs ~0.5 s: not for a serial run.)
+  bool
+  initialises_mpi_first(const poundfe::Command &command)
+  {
+    return command.runs_over_mpi || (command.name == "run" && launched_size() > 1);
+  }
+
   /// Refuses (InputError at the entry's line) an input that asks for what
   /// the command cannot do: a distributed linear solver on several ranks, or
   /// Partition = buildings, for anything but `run` (the probabilistic
@@ -169,6 +194,78 @@ namespace
                    "' writes no fields (leave it at vtu)");
   }
 
+  /// The input of `command`: the parameter file read and checked against
+  /// the command and the command line, MPI initialised when its input needs
+  /// it. Throws InputError (or what the reader throws).
+  poundfe::InputParameters
+  read_command_input(const poundfe::Command &command, const CommandLine &line,
+                     std::optional<dealii::Utilities::MPI::MPI_InitFinalize> &mpi, int &argc,
+                     char **&argv)
+  {
+    using namespace poundfe;
+    InputParameters input = read_parameters(line.args[1]);
+    if (!mpi && (linear_solver_needs_mpi(input.time_integration.linear_solver) ||
+                 input.time_integration.partition == RunPartition::buildings))
+      {
+        mpi.emplace(argc, argv, 1);
+        install_interruption_handlers(); // PETSc's initialisation replaced them
+      }
+    check_command_takes_input(command, input,
+                              mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1);
+    return input;
+  }
+
+  /// What this process read before the command runs (rank_agreement.h):
+  /// `input` set, or the status and message of the failure.
+  poundfe::RankInput
+  read_rank_input(const poundfe::Command &command, const CommandLine &line,
+                  std::optional<dealii::Utilities::MPI::MPI_InitFinalize> &mpi, int &argc,
+                  char **&argv, std::optional<poundfe::InputParameters> &input)
+  {
+    using namespace poundfe;
+    if (line.args.size() != 2)
+      return {1, "poundfe: error: ", "'" + command.name + "' needs exactly one parameter file",
+              usage_text(), {}};
+    if (line.n_realizations > 0 && !command.takes_realizations)
+      return {1, "poundfe: error: ", "--realizations belongs to ground-motion and spectrum", "", {}};
+    try
+      {
+        input.emplace(read_command_input(command, line, mpi, argc, argv));
+        return {};
+      }
+    catch (const InputError &e)
+      {
+        return {1, "poundfe: error: ", e.what(), "", {}};
+      }
+    catch (const NumericalError &e)
+      {
+        return {2, "poundfe: numerical failure: ", e.what(), "", {}};
+      }
+    catch (const std::exception &e)
+      {
+        return {1, "poundfe: error: ", e.what(), "", {}};
+      }
+  }
+
+  /// Nothing when the input was read (by every rank, and the same, under
+  /// MPI); otherwise the exit status, after one message on `err`.
+  std::optional<int>
+  refusal(poundfe::RankInput &rank, const std::optional<poundfe::InputParameters> &input,
+          const CommandLine &line, const bool mpi, std::ostream &err)
+  {
+    using namespace poundfe;
+    if (mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      {
+        if (rank.status == 0)
+          rank.items = input_items(line.args[0], line.output, line.n_realizations, *input);
+        return ranks_disagree(rank, MPI_COMM_WORLD, err);
+      }
+    if (rank.status == 0)
+      return std::nullopt;
+    err << rank.prefix << rank.problem << "\n" << rank.trailer;
+    return rank.status;
+  }
+
 } // namespace
 
 int
@@ -178,16 +275,16 @@ main(int argc, char **argv)
   const CommandLine line = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
   const Command    *command = line.args.empty() ? nullptr : find_command(line.args[0]);
   // MPI_InitFinalize (MPI, PETSc, Trilinos) costs ~0.5 s at start: only the
-  // commands that run over MPI initialise it here, and any command whose
-  // linear solver needs it once the input is read.
+  // commands that run over MPI (and run under mpirun) initialise it here,
+  // and any command whose linear solver needs it once the input is read.
   std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
-  if (command && command->runs_over_mpi)
+  if (command && command->reads_parameters && initialises_mpi_first(*command))
     mpi.emplace(argc, argv, 1);
   else
     dealii::MultithreadInfo::set_thread_limit(1); // what MPI_InitFinalize(argc, argv, 1) sets
   dealii::deal_II_exceptions::disable_abort_on_exception();
-  // Every rank reads the same input and fails the same way: rank 0 speaks
-  // (also before MPI is initialised, when the input is read).
+  // Rank 0 speaks (also before MPI is initialised): the ranks agree on their
+  // inputs before a command runs, and rank 0 prints any rank's refusal.
   const bool    root = mpi ? dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 :
                              launched_rank() == 0;
   std::ostream &err  = root ? std::cerr : silent;
@@ -199,33 +296,18 @@ main(int argc, char **argv)
   // Every command that writes files stops cleanly on SIGINT/SIGTERM: at its
   // own safe points, or at the next file write (commands/command_guard.h).
   install_interruption_handlers();
+  std::optional<InputParameters> read;
+  RankInput rank = read_rank_input(*command, line, mpi, argc, argv, read);
+  if (const std::optional<int> status = refusal(rank, read, line, mpi.has_value(), err))
+    return *status;
+  const InputParameters &input = *read;
   try
     {
-      if (arguments.size() != 1)
-        {
-          err << "poundfe: error: '" << command->name << "' needs exactly one parameter file\n"
-              << usage_text();
-          return 1;
-        }
-      const InputParameters input = read_parameters(arguments[0]);
-      if (!mpi && (linear_solver_needs_mpi(input.time_integration.linear_solver) ||
-                   input.time_integration.partition == RunPartition::buildings))
-        {
-          mpi.emplace(argc, argv, 1);
-          install_interruption_handlers(); // PETSc's initialisation replaced them
-        }
-      check_command_takes_input(*command, input,
-                                mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1);
       const std::string directory = line.output.empty() ? input.output.directory : line.output;
       const bool writes = !mpi || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const GuardedCommand guarded{
         command->name, input, directory, writes, !command->handles_interruption_itself};
       return guard_command(guarded, [&]() -> int {
-        if (line.n_realizations > 0 && !command->takes_realizations)
-          {
-            err << "poundfe: error: --realizations belongs to ground-motion and spectrum\n";
-            return 1;
-          }
         return command->run({arguments, &input, directory, line.n_realizations,
                              mpi ? MPI_COMM_WORLD : MPI_COMM_SELF, err,
                              writes ? std::cout : silent});

@@ -42,7 +42,9 @@
 #include "vtu_arrays.h"
 
 #include <hdf5.h>
+#include <sys/mman.h>
 #include <sys/statvfs.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -140,6 +142,13 @@ namespace poundfe
         std::string data_item(std::size_t n_rows, unsigned int n_components, bool integer,
                               unsigned int precision, const std::string &path) const;
         void        close_file();
+        /// One process, after a failure: the file's descriptor is pointed at
+        /// an anonymous file in memory (memfd), so that closing it, which
+        /// flushes HDF5's cached metadata and cannot be told not to,
+        /// succeeds. On a full disk the close otherwise fails, and leaves the
+        /// library a half-destroyed file that its exit handler touches again
+        /// (SIGSEGV after the run had ended); the file on disk is removed.
+        void        redirect_to_memory() const;
 
         const std::string h5_path, temporary_path, xdmf_path, h5_name, series_name;
         hid_t             file = -1;
@@ -195,6 +204,11 @@ namespace poundfe
         else
           throw_if_interrupted(); // a safe point: nothing of this file exists yet
         register_output(h5_path); // listed before it exists (output_directory.h)
+        // before the library starts (its first call): a file whose close
+        // fails even so is never closed again by HDF5's exit handler, which
+        // would touch what the failed close freed
+        static const bool no_exit_handler = H5dont_atexit() >= 0;
+        (void)no_exit_handler;
         H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // failures become OutputError
         errno = 0;
         // the HDF5 1.8 file format (readable by every HDF5 since 2008): groups
@@ -215,7 +229,7 @@ namespace poundfe
         H5Pclose(access);
         checked(file);
         write_mesh(points, cells);
-        H5Gclose(checked(H5Gcreate2(file, "/frames", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+        checked(H5Gclose(checked(H5Gcreate2(file, "/frames", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT))));
       }
 
       XdmfWriter::~XdmfWriter()
@@ -267,6 +281,8 @@ namespace poundfe
             return;
           }
         failed_with = failure;
+        if (!communicator)
+          redirect_to_memory();
         close_file(); // every rank, when under MPI
         if (rank == 0)
           std::remove(temporary_path.c_str());
@@ -298,6 +314,20 @@ namespace poundfe
               }
           }
         return selection;
+      }
+
+      void
+      XdmfWriter::redirect_to_memory() const
+      {
+        void *handle = nullptr; // the sec2 driver's: its file descriptor
+        if (file < 0 || H5Fget_vfd_handle(file, H5P_DEFAULT, &handle) < 0 || handle == nullptr)
+          return;
+        const int memory = ::memfd_create("poundfe-given-up", 0);
+        if (memory >= 0)
+          {
+            ::dup2(memory, *static_cast<const int *>(handle)); // closes the file on disk
+            ::close(memory);
+          }
       }
 
       void
@@ -358,7 +388,7 @@ namespace poundfe
           status = H5Dwrite(set, H5T_NATIVE_DOUBLE, mine, mine, transfer, values.data());
         if (mine != H5S_ALL)
           H5Sclose(mine);
-        H5Dclose(set);
+        status = std::min(status, H5Dclose(set)); // a small array is written when closed
         H5Sclose(space);
         checked(status);
       }
@@ -374,10 +404,10 @@ namespace poundfe
                                                H5P_DEFAULT, layout, H5P_DEFAULT));
         H5Pclose(layout);
         const hid_t  mine   = checked(selected(space, Rows::root, 1));
-        const herr_t status = H5Dwrite(set, H5T_NATIVE_LLONG, mine, mine, transfer, values.data());
+        herr_t status = H5Dwrite(set, H5T_NATIVE_LLONG, mine, mine, transfer, values.data());
         if (mine != H5S_ALL)
           H5Sclose(mine);
-        H5Dclose(set);
+        status = std::min(status, H5Dclose(set));
         H5Sclose(space);
         checked(status);
       }
@@ -407,7 +437,7 @@ namespace poundfe
         write(mesh, "offsets", {cells.offsets.begin(), cells.offsets.end()});
         write(mesh, "types", std::vector<double>(cells.types.begin(), cells.types.end()), 1, true,
               Rows::root);
-        H5Gclose(mesh);
+        checked(H5Gclose(mesh));
       }
 
       StoredArray
@@ -451,13 +481,13 @@ namespace poundfe
                 {
                   const hid_t mesh = checked(H5Gopen2(file, "/mesh", H5P_DEFAULT));
                   constant.push_back(store(mesh, "/mesh", center, array));
-                  H5Gclose(mesh);
+                  checked(H5Gclose(mesh));
                 }
               for (const StoredArray &c : constant)
                 if (c.name == array.name)
                   stored.push_back(c);
             }
-        H5Gclose(group);
+        checked(H5Gclose(group));
         frames.emplace_back(label, std::move(stored));
       }
 
@@ -510,6 +540,8 @@ namespace poundfe
         if (failed_with != 0)
           throw OutputError("write", h5_path, failed_with);
         errno = 0;
+        if (!communicator) // a full disk fails here, where the file can still be given up
+          checked(H5Fflush(file, H5F_SCOPE_LOCAL));
         const hid_t closing = file;
         file                = -1;
         agree(H5Fclose(closing) < 0 ? reason_of_failure(h5_path, !communicator) : 0); // collective under MPI
