@@ -195,6 +195,37 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// The manifest the last command left in `root`; "" when there is none,
+    /// or a link in its place (no manifest of poundfe's).
+    std::string
+    earlier_manifest_text(const fs::path &root)
+    {
+      const fs::path  listing = root / output_manifest_name;
+      std::error_code error;
+      return fs::is_symlink(fs::symlink_status(listing, error)) ?
+               std::string() :
+               own_file_text(listing, "output manifest");
+    }
+
+    /// A new, empty manifest in `root`, opened to append: a link in its
+    /// place goes first, not the file it points to (which opening it would
+    /// truncate). Throws OutputError.
+    int
+    open_new_manifest(const fs::path &root)
+    {
+      const std::string name = (root / output_manifest_name).string();
+      if (std::error_code error; fs::is_symlink(fs::symlink_status(name, error)))
+        fs::remove(name, error);
+      const int descriptor =
+        ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC | O_NOFOLLOW, 0666);
+      if (descriptor < 0) // the first file written here: say it of the directory
+        throw OutputError("write in the output directory", root.string(), errno);
+      return descriptor;
+    }
+  } // namespace
+
   void
   prepare_output_directory(const std::string &directory, const std::vector<std::string> &resumed)
   {
@@ -212,11 +243,7 @@ namespace poundfe
     // What the last command listed: files now, then the subdirectories
     // that are left empty, deepest first.
     std::vector<std::string> kept, directories;
-    std::error_code          link_error; // a link in the manifest's place is no manifest of poundfe's
-    const fs::path           listing = root / output_manifest_name;
-    std::istringstream       old(fs::is_symlink(fs::symlink_status(listing, link_error)) ?
-                                   std::string() :
-                                   own_file_text(listing, "output manifest"));
+    std::istringstream       old(earlier_manifest_text(root));
     for (std::string entry; std::getline(old, entry);)
       {
         if (!removable(entry) || !reached_without_links(root, entry))
@@ -252,15 +279,7 @@ namespace poundfe
 
     auto manifest       = std::make_unique<Manifest>();
     manifest->directory = root;
-    const std::string name = (root / output_manifest_name).string();
-    // a link in the manifest's place goes, not the file it points to (which
-    // opening it would truncate)
-    if (std::error_code error; fs::is_symlink(fs::symlink_status(name, error)))
-      fs::remove(name, error);
-    manifest->descriptor =
-      ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC | O_NOFOLLOW, 0666);
-    if (manifest->descriptor < 0) // the first file written here: say it of the directory
-      throw OutputError("write in the output directory", root.string(), errno);
+    manifest->descriptor = open_new_manifest(root);
     // parents before what they hold, so a later removal empties them first
     std::sort(kept.begin(), kept.end());
     for (const std::string &entry : kept)
