@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -37,6 +38,38 @@ namespace poundfe
     if (!error && size > max_input_bytes)
       refuse("has " + std::to_string(size) + " bytes, more than the " +
              std::to_string(max_input_bytes) + " an input file may have");
+  }
+
+  std::string
+  input_file_digest(const std::string &file)
+  {
+    try
+      {
+        check_input_file(file, "file");
+      }
+    catch (const InputError &e)
+      {
+        return "(" + e.problem() + ")";
+      }
+    // FNV-1a, 64 bits: no cryptographic claim, only that an edited file
+    // (a value changed, a row added or removed) gives another number
+    std::uint64_t hash = 0xcbf29ce484222325ULL;
+    std::uintmax_t size = 0;
+    std::ifstream  in(file, std::ios::binary);
+    char           buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
+      {
+        for (std::streamsize i = 0; i < in.gcount(); ++i)
+          hash = (hash ^ static_cast<unsigned char>(buffer[i])) * 0x100000001b3ULL;
+        size += in.gcount();
+        if (size > max_input_bytes)
+          return "(more than " + std::to_string(max_input_bytes) + " bytes)";
+      }
+    if (!in.eof())
+      return "(cannot be read)";
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return std::to_string(size) + " bytes, FNV-1a " + hex;
   }
 
   namespace

@@ -1,5 +1,6 @@
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/commands/command_guard.h>
+#include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
@@ -108,7 +109,8 @@ namespace poundfe
         const Stops stops(c.stops_at_safe_points);
         forget_missing_figures();
         if (c.writes) // one rule for every command: its first file clears the earlier run's
-          expect_output_directory(c.directory, resume_inputs(c.input, c.command));
+          expect_output_directory(c.directory, resume_inputs(c.input, c.command),
+                                  named_input_files(c.input));
         const int status = body();
         expect_output_directory("");
         note_missing_figures(c);

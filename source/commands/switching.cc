@@ -12,6 +12,7 @@
 //           intervals), phase_portrait.png (equation 1, surfaces dashed,
 //           sliding in red, the hits marked by class)
 #include <poundfe/base/console.h>
+#include <poundfe/base/exceptions.h>
 #include <poundfe/commands/command.h>
 #include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/input/engine_parameters.h>
@@ -225,7 +226,19 @@ namespace poundfe::commands
     timer.leave_subsection();
 
     timer.enter_subsection("integration");
-    switching_analysis.run(initial.displacement, initial.velocity, t_end);
+    try
+      {
+        switching_analysis.run(initial.displacement, initial.velocity, t_end);
+      }
+    catch (const NumericalError &)
+      {
+        // the hits and the trajectory up to the failure are results: kept,
+        // and the guard's summary.json says "failed" with the reason
+        prepare_output_directory(run.directory);
+        write_log(switching_analysis, switching_analysis.events(), run.directory);
+        write_trajectory(switching_analysis, run.directory);
+        throw;
+      }
     timer.leave_subsection();
 
     timer.enter_subsection("output");

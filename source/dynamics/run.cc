@@ -226,6 +226,10 @@ namespace poundfe
               observer->observe_step(view);
           }
       }
+    catch (const RunStopped &) // an observer's interruption: finished as one
+      {
+        status.kind = RunStatus::Kind::interrupted;
+      }
     catch (const NumericalError &e)
       {
         status.kind    = RunStatus::Kind::failed;

@@ -5,6 +5,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
+#include <sstream>
+#include <utility>
 
 namespace poundfe
 {
@@ -352,6 +354,34 @@ namespace poundfe
                      "needs Shinozuka alpha < Shinozuka beta, got alpha = " +
                        number_text(shinozuka_alpha) + ", beta = " + number_text(shinozuka_beta));
       }
+  }
+
+  std::vector<NamedInputFile>
+  GroundMotionParameters::input_files() const
+  {
+    std::vector<NamedInputFile> files;
+    const std::string           record = "Ground motion/Record/";
+    for (const auto &[entry, name] : {std::pair{"File", &record_file},
+                                      std::pair{"Second file", &second_record_file},
+                                      std::pair{"Third file", &third_record_file}})
+      if (!name->empty())
+        files.push_back({record + entry, "record file", *name, ""});
+    return files;
+  }
+
+  std::vector<NamedInputFile>
+  NodalForceParameters::input_files() const
+  {
+    std::vector<NamedInputFile> files;
+    for (const std::string &entry : tabulated)
+      {
+        std::istringstream fields(entry);
+        std::string        field;
+        for (unsigned int k = 0; k < 5 && fields >> field; ++k)
+          if (k == 4) // 'building floor node dof file'
+            files.push_back({"Nodal forces/Tabulated", "tabulated force file", field, ""});
+      }
+    return files;
   }
 
   void

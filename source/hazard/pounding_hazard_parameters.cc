@@ -54,6 +54,14 @@ namespace poundfe
     prm.leave_subsection();
   }
 
+  std::vector<NamedInputFile>
+  PoundingHazardParameters::input_files() const
+  {
+    if (hazard_file.empty())
+      return {};
+    return {{"Separation/Site hazard/File", "hazard file", hazard_file, ""}};
+  }
+
   void
   PoundingHazardParameters::check(const InputFile &input) const
   {

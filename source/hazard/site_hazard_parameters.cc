@@ -85,6 +85,17 @@ namespace poundfe
     prm.leave_subsection();
   }
 
+  std::vector<NamedInputFile>
+  SiteHazardParameters::input_files() const
+  {
+    std::vector<NamedInputFile> files;
+    if (!catalogue_file.empty())
+      files.push_back({"Site hazard/Catalogue file", "catalogue", catalogue_file, ""});
+    if (!fragility_file.empty())
+      files.push_back({"Site hazard/Fragility/File", "fragility file", fragility_file, ""});
+    return files;
+  }
+
   void
   SiteHazardParameters::check(const InputFile &input) const
   {

@@ -61,4 +61,20 @@ namespace poundfe
   {
     return make_excitation(analysis, time_history_parameters(input));
   }
+
+  std::vector<NamedInputFile>
+  named_input_files(const InputParameters &input)
+  {
+    std::vector<NamedInputFile> files;
+    for (std::vector<NamedInputFile> section :
+         {input.model.input_files(), input.ground_motion.input_files(),
+          input.nodal_forces.input_files(), input.site_hazard.input_files(),
+          input.separation.hazard.input_files()})
+      for (NamedInputFile &file : section)
+        {
+          file.path = input.resolve(file.name);
+          files.push_back(std::move(file));
+        }
+    return files;
+  }
 } // namespace poundfe

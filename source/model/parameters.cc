@@ -146,6 +146,17 @@ namespace poundfe
                base_fixity_names());
   }
 
+  std::vector<NamedInputFile>
+  ModelParameters::input_files() const
+  {
+    std::vector<NamedInputFile> files;
+    for (std::size_t b = 0; b < buildings.size(); ++b)
+      if (!buildings[b].mesh_file.empty())
+        files.push_back({"Building " + std::to_string(b + 1) + "/Mesh file", "mesh file",
+                         buildings[b].mesh_file, ""});
+    return files;
+  }
+
   void
   BuildingParameters::declare_mesh_entries(dealii::ParameterHandler &prm)
   {

@@ -10,6 +10,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <map>
 #include <memory>
@@ -98,9 +99,41 @@ namespace poundfe
       if (entry.empty() || p.is_absolute() || entry == output_manifest_name)
         return false;
       for (const fs::path &part : p)
-        if (part == "..")
+        if (part == ".." || part == "." || part.empty())
           return false;
       return true;
+    }
+
+    /// Whether every directory on the way from `root` to `entry`
+    /// (removable) is a real directory, not a symbolic link: poundfe creates
+    /// no links, so one in the way is the user's, and what lies behind it
+    /// (outside the directory, perhaps) is not poundfe's to remove. A link
+    /// in the entry's own place is removed as a link (its target stays).
+    bool
+    reached_without_links(const fs::path &root, const std::string &entry)
+    {
+      const fs::path  relative(entry);
+      fs::path        path = root;
+      std::error_code error;
+      for (auto part = relative.begin(); part != relative.end() && std::next(part) != relative.end();
+           ++part)
+        if (path /= *part; !fs::is_directory(fs::symlink_status(path, error)))
+          return false;
+      return true;
+    }
+
+    /// Removes the listed `entry` of `root` (removable, reached without
+    /// links) and its "<entry>.tmp". Returns the error of a removal that
+    /// failed otherwise than for a missing file.
+    std::error_code
+    remove_listed(const fs::path &root, const std::string &entry)
+    {
+      std::error_code failed;
+      for (const fs::path &file : {root / entry, root / (entry + ".tmp")})
+        if (std::error_code error;
+            !fs::remove(file, error) && error && error != std::errc::no_such_file_or_directory)
+          failed = error;
+      return failed;
     }
   } // namespace
 
@@ -126,6 +159,29 @@ namespace poundfe
 
     constexpr const char *resume_record_suffix = ".inputs";
 
+    /// The input files named by the input of the command under way.
+    std::vector<NamedInputFile> &
+    command_input_files()
+    {
+      static std::vector<NamedInputFile> files;
+      return files;
+    }
+
+    /// A record line's path that holds a file's digest begins so.
+    constexpr const char *digest_prefix = "digest of the ";
+
+    /// The digest lines of the files named now: ("digest of the record
+    /// file 'x.at2' (Ground motion/Record/File)", "1234 bytes, FNV-1a ...").
+    ResumeInputs
+    current_digests()
+    {
+      ResumeInputs digests;
+      for (const NamedInputFile &f : command_input_files())
+        digests.emplace_back(digest_prefix + f.what + " '" + f.name + "' (" + f.entry + ")",
+                             input_file_digest(f.path));
+      return digests;
+    }
+
     /// The text of a file poundfe wrote into an output directory, read as
     /// any input (read_input_text: a FIFO, a device or a huge file put in
     /// its place is refused, not read forever); "" when it does not exist.
@@ -136,6 +192,37 @@ namespace poundfe
       if (!fs::exists(fs::symlink_status(file, error)))
         return "";
       return read_input_text(file.string(), what);
+    }
+  } // namespace
+
+  namespace
+  {
+    /// The manifest the last command left in `root`; "" when there is none,
+    /// or a link in its place (no manifest of poundfe's).
+    std::string
+    earlier_manifest_text(const fs::path &root)
+    {
+      const fs::path  listing = root / output_manifest_name;
+      std::error_code error;
+      return fs::is_symlink(fs::symlink_status(listing, error)) ?
+               std::string() :
+               own_file_text(listing, "output manifest");
+    }
+
+    /// A new, empty manifest in `root`, opened to append: a link in its
+    /// place goes first, not the file it points to (which opening it would
+    /// truncate). Throws OutputError.
+    int
+    open_new_manifest(const fs::path &root)
+    {
+      const std::string name = (root / output_manifest_name).string();
+      if (std::error_code error; fs::is_symlink(fs::symlink_status(name, error)))
+        fs::remove(name, error);
+      const int descriptor =
+        ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC | O_NOFOLLOW, 0666);
+      if (descriptor < 0) // the first file written here: say it of the directory
+        throw OutputError("write in the output directory", root.string(), errno);
+      return descriptor;
     }
   } // namespace
 
@@ -156,10 +243,10 @@ namespace poundfe
     // What the last command listed: files now, then the subdirectories
     // that are left empty, deepest first.
     std::vector<std::string> kept, directories;
-    std::istringstream       old(own_file_text(root / output_manifest_name, "output manifest"));
+    std::istringstream       old(earlier_manifest_text(root));
     for (std::string entry; std::getline(old, entry);)
       {
-        if (!removable(entry))
+        if (!removable(entry) || !reached_without_links(root, entry))
           continue;
         const fs::path  path = root / entry;
         std::error_code error;
@@ -178,9 +265,8 @@ namespace poundfe
               kept.push_back(entry);
             continue;
           }
-        for (const fs::path &file : {path, fs::path(path.string() + ".tmp")})
-          if (!fs::remove(file, error) && error && error != std::errc::no_such_file_or_directory)
-            throw OutputError("remove the earlier run's file", file.string(), error.value());
+        if (const std::error_code failed = remove_listed(root, entry))
+          throw OutputError("remove the earlier run's file", path.string(), failed.value());
       }
     std::sort(directories.begin(), directories.end(),
               [](const std::string &a, const std::string &b) { return a.size() > b.size(); });
@@ -193,11 +279,7 @@ namespace poundfe
 
     auto manifest       = std::make_unique<Manifest>();
     manifest->directory = root;
-    const std::string name = (root / output_manifest_name).string();
-    manifest->descriptor =
-      ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0666);
-    if (manifest->descriptor < 0) // the first file written here: say it of the directory
-      throw OutputError("write in the output directory", root.string(), errno);
+    manifest->descriptor = open_new_manifest(root);
     // parents before what they hold, so a later removal empties them first
     std::sort(kept.begin(), kept.end());
     for (const std::string &entry : kept)
@@ -220,21 +302,71 @@ namespace poundfe
     // files first, then the directories, deepest first (parents are listed
     // before what they hold)
     std::reverse(entries.begin(), entries.end());
-    std::error_code error; // what cannot go stays: never worse than before
-    for (const std::string &entry : entries)
-      if (removable(entry))
-        for (const fs::path &file : {root / entry, fs::path((root / entry).string() + ".tmp")})
-          fs::remove(file, error);
+    for (const std::string &entry : entries) // what cannot go stays: never worse than before
+      if (removable(entry) && reached_without_links(root, entry))
+        remove_listed(root, entry);
+    std::error_code error;
     fs::remove(root / output_manifest_name, error);
     fs::remove(root, error); // only when empty: the user's own files stay
   }
 
   void
-  expect_output_directory(const std::string &directory, ResumeInputs resume_inputs)
+  expect_output_directory(const std::string &directory, ResumeInputs resume_inputs,
+                          std::vector<NamedInputFile> input_files)
   {
     expected_directory()    = directory;
     command_resume_inputs() = std::move(resume_inputs);
+    command_input_files()   = std::move(input_files);
   }
+
+  namespace
+  {
+    /// The "path = value" lines of a resume record. A digest line splits at
+    /// its last " = " (a file name may hold one, a digest never), the
+    /// others at their first (an entry's name never holds one).
+    std::map<std::string, std::string>
+    read_resume_record(const std::string &record)
+    {
+      std::map<std::string, std::string> lines;
+      std::istringstream                 in(own_file_text(record, "record of the input"));
+      for (std::string line; std::getline(in, line);)
+        if (const std::size_t at = line.rfind(digest_prefix, 0) == 0 ? line.rfind(" = ") :
+                                                                       line.find(" = ");
+            at != std::string::npos)
+          lines.emplace(line.substr(0, at), line.substr(at + 3));
+      return lines;
+    }
+
+    /// Refuses `file` unless every file the input names now has the
+    /// digest it had when the record `before` was written.
+    void
+    compare_digests(const std::string &file, const std::map<std::string, std::string> &before)
+    {
+      const std::string remedy = "; remove " + fs::path(file).filename().string() +
+                                 " (its realizations are computed again) or choose another "
+                                 "output directory";
+      const bool any_before =
+        std::any_of(before.begin(), before.end(),
+                    [](const auto &line) { return line.first.rfind(digest_prefix, 0) == 0; });
+      for (const auto &[path, digest] : current_digests())
+        {
+          const std::string named = path.substr(std::strlen("digest of ")); // "the ... (entry)"
+          const auto        then  = before.find(path);
+          if (!any_before)
+            throw InputError(file, 0, "",
+                             "holds realizations whose record of the input has no digest of the "
+                             "files the input names (written by an earlier version of poundfe), "
+                             "so whether " + named + " changed since cannot be checked" + remedy);
+          if (then == before.end())
+            throw InputError(file, 0, "",
+                             "holds realizations computed without " + named + remedy);
+          if (then->second != digest)
+            throw InputError(file, 0, "",
+                             named + " changed since these realizations were computed (then " +
+                               then->second + ", now " + digest + ")" + remedy);
+        }
+    }
+  } // namespace
 
   void
   resume_file(const std::string &file)
@@ -247,8 +379,9 @@ namespace poundfe
     if (!fs::exists(fs::symlink_status(file, error)))
       {
         std::string text;
-        for (const auto &[path, value] : now)
-          text += path + " = " + value + "\n";
+        for (const ResumeInputs &lines : {now, current_digests()})
+          for (const auto &[path, value] : lines)
+            text += path + " = " + value + "\n";
         write_file_atomically(record, text);
         return;
       }
@@ -259,11 +392,7 @@ namespace poundfe
                        "holds realizations of an earlier run that left no record of its input (" +
                          fs::path(record).filename().string() + "), so they may belong to another model" +
                          remedy);
-    std::map<std::string, std::string> before;
-    std::istringstream                 in(own_file_text(record, "record of the input"));
-    for (std::string line; std::getline(in, line);)
-      if (const std::size_t at = line.find(" = "); at != std::string::npos)
-        before.emplace(line.substr(0, at), line.substr(at + 3));
+    std::map<std::string, std::string> before = read_resume_record(record);
     const auto value_before = [&](const std::string &path) {
       const auto it = before.find(path);
       return it == before.end() ? std::string("(no such entry then)") : it->second;
@@ -274,13 +403,15 @@ namespace poundfe
                          "`" + remedy);
     std::map<std::string, std::string> current(now.begin(), now.end());
     for (const auto &[path, value] : before) // an entry this version no longer has
-      current.emplace(path, "(no such entry now)");
+      if (path.rfind(digest_prefix, 0) != 0)   // (a file no longer named: its entry changed)
+        current.emplace(path, "(no such entry now)");
     for (const auto &[path, value] : current)
       if (value_before(path) != value)
         throw InputError(file, 0, path,
                          "holds realizations computed with '" + value_before(path) +
                            "'; the input now gives '" + value +
                            "', and one table must not mix two models" + remedy);
+    compare_digests(file, before);
   }
 
   void
@@ -346,6 +477,8 @@ namespace poundfe
       return present;
     for (const std::string &entry : manifest->order)
       {
+        if (!reached_without_links(manifest->directory, entry))
+          continue; // a link in the way: the user's, not poundfe's file
         const fs::path  path = manifest->directory / entry;
         std::error_code error;
         fs::remove(fs::path(path.string() + ".tmp"), error); // gone already: fine

@@ -7,6 +7,7 @@
 #include "module.h"
 
 #include <poundfe/assembly/linear_solver.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/commands/command_guard.h>
 #include <poundfe/commands/command_table.h>
 #include <poundfe/dynamics/run.h>
@@ -20,6 +21,7 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <exception>
 #include <iostream>
 
 namespace py = pybind11;
@@ -40,8 +42,11 @@ namespace poundfe::python
     };
 
     /// Calls `callback(state)` at step 0 and every `every` steps; checks for
-    /// Ctrl-C every `signal_steps` steps (a Python exception raised by
-    /// either unwinds the run).
+    /// Ctrl-C every `signal_steps` steps. A Python exception raised by
+    /// either (KeyboardInterrupt) is kept and ends the run as an
+    /// interruption (RunStopped), so that its files are finished and its
+    /// summary says "interrupted"; raise_kept() raises it again once the
+    /// run has returned.
     class CallbackObserver : public StepObserver
     {
     public:
@@ -54,15 +59,35 @@ namespace poundfe::python
       void
       observe_step(const ResponseView &state) override
       {
+        if (kept) // raised at step 0, outside the run's loop: stopped at the first step
+          throw RunStopped();
         const bool call  = !callback.is_none() && state.step() % every == 0;
         const bool check = state.step() % signal_steps == 0;
         if (!call && !check)
           return;
-        py::gil_scoped_acquire acquire;
-        if (PyErr_CheckSignals() != 0)
-          throw py::error_already_set();
-        if (call)
-          callback(py::cast(state_of(state)));
+        try
+          {
+            py::gil_scoped_acquire acquire;
+            if (PyErr_CheckSignals() != 0)
+              throw py::error_already_set();
+            if (call)
+              callback(py::cast(state_of(state)));
+          }
+        catch (const py::error_already_set &)
+          {
+            kept = std::current_exception();
+            if (state.step() > 0)
+              throw RunStopped();
+          }
+      }
+
+      /// The Python exception that stopped the run, raised again (with the
+      /// GIL held); nothing when none did.
+      void
+      raise_kept() const
+      {
+        if (kept)
+          std::rethrow_exception(kept);
       }
 
     private:
@@ -90,6 +115,7 @@ namespace poundfe::python
       py::object         callback;
       const unsigned int every;
       FloorResponse      floors;
+      std::exception_ptr kept;
     };
 
     /// A time history through run_time_history into `directory`: the
@@ -116,6 +142,7 @@ namespace poundfe::python
         options.observers        = {&observer};
         result                   = run_time_history(*analysis, parameters, excitation, options);
       }
+      observer.raise_kept(); // its files finished, summary.json saying "interrupted"
       py::dict d;
       d["status"]               = result.status.name();
       d["message"]              = result.status.message;

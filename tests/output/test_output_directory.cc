@@ -21,6 +21,8 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <utility>
+#include <vector>
 #include <string>
 
 using namespace poundfe;
@@ -103,6 +105,104 @@ BOOST_AUTO_TEST_CASE(a_damaged_manifest_cannot_reach_outside_the_directory)
   BOOST_TEST(!fs::exists(dir + "/inside.csv"));
   BOOST_TEST(fs::exists(dir + "/" + output_manifest_name));
   fs::remove_all(parent);
+}
+
+BOOST_AUTO_TEST_CASE(a_symbolic_link_never_leads_the_cleaning_outside_the_directory)
+{
+  // poundfe listed solution/frame.vtu, results.csv and their temporaries;
+  // the user then put links in their place or in the way to them, and
+  // edited the manifest: nothing outside may go, nor be truncated
+  const std::string parent = fresh_directory("manifest-links");
+  const std::string dir = parent + "/results", outside = parent + "/outside";
+  fs::create_directories(dir);
+  fs::create_directories(outside + "/deep");
+  for (const char *name : {"frame.vtu", "frame.vtu.tmp", "results.csv", "deep/kept.txt", "notes.txt"})
+    touch(outside + "/" + name, "the user's");
+  fs::create_directory_symlink(outside, dir + "/solution");      // a listed directory
+  fs::create_symlink(outside + "/results.csv", dir + "/results.csv"); // a listed file
+  fs::create_directory_symlink(outside + "/deep", dir + "/deep");
+  touch(dir + "/inside.csv");
+  std::ofstream(dir + "/" + output_manifest_name)
+    << "solution/frame.vtu\nsolution\nresults.csv\ndeep/kept.txt\ndeep\ninside.csv\n"
+    << "solution/../outside/notes.txt\n./inside.csv\n" << fs::absolute(outside).string() << "/notes.txt\n";
+  const auto outside_intact = [&]() {
+    for (const char *name : {"frame.vtu", "frame.vtu.tmp", "results.csv", "deep/kept.txt", "notes.txt"})
+      {
+        BOOST_TEST(fs::exists(outside + "/" + name), name);
+        BOOST_TEST(poundfe_test::read_bytes(outside + "/" + name) == "the user's", name);
+      }
+  };
+  prepare_output_directory(dir);
+  outside_intact();
+  BOOST_TEST(!fs::exists(dir + "/inside.csv"));
+  BOOST_TEST(!fs::exists(fs::symlink_status(dir + "/results.csv"))); // the link alone went
+
+  // a command that lists a file behind the link and is then undone (bad
+  // input found late) or stopped (its temporaries removed)
+  fs::create_directory_symlink(outside, dir + "/solution");
+  write_file_atomically(dir + "/inside.csv", "x");
+  register_output(dir + "/solution/frame.vtu");
+  BOOST_TEST(remove_temporaries(dir) == std::vector<std::string>{"inside.csv"},
+             boost::test_tools::per_element());
+  discard_output_directory(dir);
+  outside_intact();
+
+  // a link in the manifest's place: the file it points to is not truncated
+  fs::create_directories(dir);
+  fs::create_symlink(outside + "/notes.txt", dir + "/" + output_manifest_name);
+  prepare_output_directory(dir);
+  write_file_atomically(dir + "/summary.json", "{}");
+  outside_intact();
+  BOOST_TEST(!fs::is_symlink(fs::symlink_status(dir + "/" + output_manifest_name)));
+  fs::remove_all(parent);
+}
+
+BOOST_AUTO_TEST_CASE(a_resumed_table_is_tied_to_the_contents_of_the_files_its_input_names)
+{
+  const std::string dir    = fresh_directory("resume-digests");
+  const std::string record = dir + "/record.txt", table = dir + "/out/realizations.csv";
+  fs::create_directories(dir);
+  touch(record, "0 0.1\n0.01 0.2\n");
+  const std::vector<std::pair<std::string, std::string>> inputs{{"command", "montecarlo"},
+                                                                {"Ground motion/Type", "record"}};
+  const std::vector<NamedInputFile> files{
+    {"Ground motion/Record/File", "record file", "record.txt", record}};
+  const auto resume = [&]() {
+    expect_output_directory(dir + "/out", inputs, files);
+    prepare_output_directory(dir + "/out", {"realizations.csv"});
+    resume_file(table);
+    expect_output_directory("");
+  };
+  const auto refused = [&](const std::string &words) {
+    try
+      {
+        resume();
+        BOOST_ERROR("resumed; expected: " << words);
+      }
+    catch (const InputError &e)
+      {
+        BOOST_TEST_MESSAGE(e.what());
+        BOOST_TEST(std::string(e.what()).find(words) != std::string::npos, e.what());
+      }
+  };
+  resume(); // the first run: the record written, with the record file's digest
+  BOOST_TEST(poundfe_test::read_bytes(table + ".inputs").find(
+               "digest of the record file 'record.txt' (Ground motion/Record/File) = 15 bytes, "
+               "FNV-1a ") != std::string::npos);
+  AppendFile(table).append("realization\n");
+  resume(); // the same file: resumed
+  touch(record, "0 0.2\n0.01 0.4\n"); // doubled: the same size, other bytes
+  refused("the record file 'record.txt' (Ground motion/Record/File) changed since these "
+          "realizations were computed");
+  fs::remove(record);
+  refused("the record file 'record.txt' (Ground motion/Record/File) changed");
+  touch(record, "0 0.1\n0.01 0.2\n");
+  resume(); // back as it was
+
+  // a record of an earlier version (no digest lines) cannot be checked
+  std::ofstream(table + ".inputs") << "command = montecarlo\nGround motion/Type = record\n";
+  refused("no digest of the files the input names");
+  fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(a_full_device_is_reported_with_its_reason_and_leaves_no_temporary)

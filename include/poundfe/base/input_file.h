@@ -12,6 +12,20 @@
 
 namespace poundfe
 {
+  /// An input file a parameter file names: the entry that names it
+  /// ("Ground motion/Record/File"), what it is ("record file") and its
+  /// name as written there (relative to the parameter file). Each module
+  /// lists those of its section beside the declaration of the entries
+  /// (`input_files()`), so that results can be tied to their contents
+  /// (output/output_directory.h: resume_file).
+  struct NamedInputFile
+  {
+    std::string entry;
+    std::string what;
+    std::string name;
+    std::string path; // `name` resolved (InputFile::resolve); empty until then
+  };
+
   struct InputFile
   {
     std::string file;

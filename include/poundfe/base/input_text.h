@@ -49,6 +49,14 @@ namespace poundfe
   std::string read_input_text(const std::string &file, const std::string &what = "parameter file",
                               const std::string &parameter = "");
 
+  /// What identifies the contents of an input file named by a parameter
+  /// file (a record, a mesh, a force table, ...): "<size> bytes, FNV-1a
+  /// <16 hex digits>" of its bytes, read as read_input_text reads them (a
+  /// regular file of at most max_input_bytes, nothing else opened), or
+  /// "(...)" saying why there are none (no such file, a FIFO, ...). Never
+  /// throws: the reader that uses the file reports its faults.
+  std::string input_file_digest(const std::string &file);
+
   /// A .prm file prepared for ParameterHandler.
   struct PrmText
   {

@@ -21,6 +21,16 @@ namespace poundfe
     const char *what() const noexcept override { return "interrupted by a signal"; }
   };
 
+  /// Thrown by a step observer to end a time history at the step it
+  /// observes as if interrupted (the Python module's Ctrl-C, which Python
+  /// catches itself): the run finishes every observer's files, its summary
+  /// says "interrupted", and the caller learns it from the run's status.
+  class RunStopped : public std::exception
+  {
+  public:
+    const char *what() const noexcept override { return "interrupted"; }
+  };
+
   /// Catches the first SIGINT or SIGTERM (the handler then restores the
   /// default action of both). A signal ignored at start-up (e.g. SIGINT in a
   /// background job of a script) stays ignored. Called again (after

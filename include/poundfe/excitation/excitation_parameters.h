@@ -107,6 +107,9 @@ namespace poundfe
 
     /// Declare the `Ground motion` section (entered and left here).
     void declare(dealii::ParameterHandler &prm);
+    /// The record files its entries name (Record/File, Second file, Third
+    /// file), those given.
+    std::vector<NamedInputFile> input_files() const;
     /// `time_step`: the analysis time step (the default sample interval).
     /// Throws InputError.
     void check(const InputFile &input, double time_step) const;
@@ -130,6 +133,8 @@ namespace poundfe
     /// Declare the `Nodal forces` section (entered and left here); the
     /// entries are checked against the model by make_nodal_forces.
     void declare(dealii::ParameterHandler &prm);
+    /// The force tables Tabulated names (each entry's fifth field).
+    std::vector<NamedInputFile> input_files() const;
   };
 } // namespace poundfe
 

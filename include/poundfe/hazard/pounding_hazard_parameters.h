@@ -31,6 +31,8 @@ namespace poundfe
 
     /// Declare the subsection (entered and left here, inside Separation).
     void declare(dealii::ParameterHandler &prm);
+    /// The hazard file, when given.
+    std::vector<NamedInputFile> input_files() const;
     /// Throws InputError.
     void check(const InputFile &input) const;
     /// Whether a hazard is given: without one the command is unchanged.

@@ -42,6 +42,8 @@ namespace poundfe
 
     /// Declare the section (entered and left here).
     void declare(dealii::ParameterHandler &prm);
+    /// The catalogue and the fragility file, those given.
+    std::vector<NamedInputFile> input_files() const;
     /// The values that need no file. Throws InputError.
     void check(const InputFile &input) const;
     /// For `site-hazard`: a catalogue is named or a Site study given. Throws InputError.

@@ -34,6 +34,13 @@ namespace poundfe
 
   /// The excitation of the input's ground motion and nodal forces.
   Excitation make_excitation(const Analysis &analysis, const InputParameters &input);
+
+  /// Every input file the input names (records, force tables, meshes,
+  /// catalogues, hazard and fragility files), as each section lists them
+  /// (`input_files()` beside its declarations), resolved against the
+  /// parameter file's directory. What a resumed table is tied to besides
+  /// the entries (output_directory.h: expect_output_directory).
+  std::vector<NamedInputFile> named_input_files(const InputParameters &input);
 } // namespace poundfe
 
 #endif

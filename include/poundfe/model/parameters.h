@@ -188,6 +188,8 @@ namespace poundfe
     void declare(dealii::ParameterHandler &prm);
     /// Check every building and the separations. Throws InputError.
     void finalize(const InputFile &input);
+    /// The buildings' Mesh files, those given.
+    std::vector<NamedInputFile> input_files() const;
 
   private:
     /// Dimension 3: shear buildings with their Plan. Throws InputError.

@@ -14,6 +14,8 @@
 #ifndef poundfe_output_output_directory_h
 #define poundfe_output_output_directory_h
 
+#include <poundfe/base/input_file.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,17 +49,24 @@ namespace poundfe
   /// earlier run's, and bad input, refused before the first write, leaves
   /// nothing. An empty `directory` ends it.
   /// `resume_inputs` (input_parameters.h) are what decide the rows of a
-  /// file the command resumes (resume_file below).
+  /// file the command resumes (resume_file below), besides the contents of
+  /// the `input_files` the input names (input/engine_parameters.h:
+  /// named_input_files).
   void expect_output_directory(const std::string                                      &directory,
-                               std::vector<std::pair<std::string, std::string>> resume_inputs = {});
+                               std::vector<std::pair<std::string, std::string>> resume_inputs = {},
+                               std::vector<NamedInputFile> input_files = {});
 
   /// A table the command appends to and resumes from a later run
   /// (realizations.csv): its inputs are kept beside it in "<file>.inputs"
-  /// (one "path = value" line each). When `file` exists, it throws an
-  /// InputError unless that record equals the inputs of the command under
-  /// way (expect_output_directory), so that a run never continues a table
-  /// computed from another model; else it writes the record (atomically)
-  /// before the table is started. Without inputs (a unit test's scratch
+  /// (one "path = value" line each, then one "digest of the <what>
+  /// '<name>' (<entry>) = <size> bytes, FNV-1a <hash>" line per input file
+  /// the input names). When `file` exists, it throws an InputError unless
+  /// that record equals the inputs of the command under way
+  /// (expect_output_directory) and every named file has the digest it had,
+  /// so that a run never continues a table computed from another model or
+  /// another record; a record without digest lines (an earlier version's)
+  /// is refused when the input names a file, since it cannot be checked.
+  /// Else it writes the record (atomically) before the table is started. Without inputs (a unit test's scratch
   /// table) it does nothing. prepare_output_directory keeps the record of
   /// every file it keeps.
   void resume_file(const std::string &file);
