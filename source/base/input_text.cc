@@ -1,5 +1,6 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/input_text.h>
+#include <poundfe/base/content_digest.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -53,14 +54,13 @@ namespace poundfe
       }
     // FNV-1a, 64 bits: no cryptographic claim, only that an edited file
     // (a value changed, a row added or removed) gives another number
-    std::uint64_t hash = 0xcbf29ce484222325ULL;
-    std::uintmax_t size = 0;
-    std::ifstream  in(file, std::ios::binary);
-    char           buffer[1 << 16];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
+    ContentDigest     digest;
+    std::uintmax_t    size = 0;
+    std::ifstream     in(file, std::ios::binary);
+    std::vector<char> buffer(1 << 16);
+    while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0)
       {
-        for (std::streamsize i = 0; i < in.gcount(); ++i)
-          hash = (hash ^ static_cast<unsigned char>(buffer[i])) * 0x100000001b3ULL;
+        digest.add(buffer.data(), static_cast<std::size_t>(in.gcount()));
         size += in.gcount();
         if (size > max_input_bytes)
           return "(more than " + std::to_string(max_input_bytes) + " bytes)";
@@ -68,7 +68,7 @@ namespace poundfe
     if (!in.eof())
       return "(cannot be read)";
     char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(digest.value()));
     return std::to_string(size) + " bytes, FNV-1a " + hex;
   }
 

@@ -1,7 +1,8 @@
 #include <poundfe/base/content_digest.h>
 #include <poundfe/commands/rank_agreement.h>
 #include <poundfe/input/input_parameters.h>
-#include <poundfe/input/named_files.h>
+#include <poundfe/base/input_text.h>
+#include <poundfe/input/engine_parameters.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -81,11 +82,15 @@ namespace poundfe
                                  {"--realizations", n_realizations, ""}};
     for (const auto &[path, value] : input.values)
       items.push_back({"'" + path + "'", digest_of_text(value), ""});
-    for (const NamedFile &file : named_files(input))
+    for (const NamedInputFile &file : named_input_files(input))
       {
-        const FileDigest contents = digest_of_file(file.path);
-        items.push_back({"the contents of " + file.given + " ('" + file.entry + "')",
-                         contents.value, contents.unreadable});
+        // "(why)" when the file cannot be read: not an error while the
+        // ranks agree (a record that modal never reads), named when they don't
+        const std::string contents   = input_file_digest(file.path);
+        const bool        unreadable = !contents.empty() && contents.front() == '(';
+        items.push_back({"the contents of " + file.name + " ('" + file.entry + "')",
+                         digest_of_text(contents),
+                         unreadable ? contents.substr(1, contents.size() - 2) : ""});
       }
     return items;
   }

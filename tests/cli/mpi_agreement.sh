@@ -95,7 +95,7 @@ refused "montecarlo, rank 1's parameter file missing" \
   "poundfe: error: rank 1: $work/none.prm: cannot open the parameter file (no such file)" \
   $(mc "$work/a/mc.prm") : $(mc "$work/none.prm")
 refused "montecarlo, rank 1's force file missing" \
-  "rank 1's differs from rank 0's in the contents of force.txt ('Nodal forces/Tabulated') (rank 1 cannot read it: no such file)" \
+  "rank 1's differs from rank 0's in the contents of force.txt ('Nodal forces/Tabulated') (rank 1 cannot read it: cannot open the file (no such file))" \
   $(mc "$work/a/mc.prm") : $(mc "$work/no-force/mc.prm")
 refused "montecarlo, rank 1's force file edited" \
   "rank 1's differs from rank 0's in the contents of force.txt ('Nodal forces/Tabulated')" \

@@ -49,7 +49,7 @@ namespace poundfe
 
   /// The items of a command line and its input: the command's name, the
   /// --output and --realizations given, every entry of `input` and the
-  /// contents of every file it names (input/named_files.h).
+  /// contents of every file it names (named_input_files, input/engine_parameters.h).
   std::vector<InputItem> input_items(const std::string &command, const std::string &output,
                                      unsigned int n_realizations, const InputParameters &input);
 
