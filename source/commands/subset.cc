@@ -248,7 +248,7 @@ namespace poundfe::commands
       if (!runner.run(xi, responses))
         journal.mark_failed();
       if (limit_state)
-        return -limit_states->system_value(responses);
+        return -limit_states->system_value(responses, "a sample of Subset Simulation");
       double y = 0;
       for (const unsigned int c : columns)
         y = std::max(y, responses[c]);

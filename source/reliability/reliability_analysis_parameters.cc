@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -271,6 +272,13 @@ namespace poundfe
         const std::vector<std::string> w = input_words(item);
         if (w.size() != 2 || !is_identifier(w[0]))
           input.fail(section + "Constants", "'" + item + "' is not 'NAME VALUE'");
+        // one name, one value: the parser would take one of the two silently
+        if (std::find(variable_names.begin(), variable_names.end(), w[0]) != variable_names.end())
+          input.fail(section + "Constants", "constant '" + w[0] +
+                                              "' has the name of a random variable: rename one");
+        for (const auto &[name, value] : constants)
+          if (name == w[0])
+            input.fail(section + "Constants", "constant '" + name + "' is given twice");
         constants.emplace_back(w[0], number(input, section + "Constants", w[1], "constant " + w[0]));
       }
     correlation = parse_correlation(input, section + "Correlation", correlation_text, distributions);
@@ -280,6 +288,9 @@ namespace poundfe
         const std::string name  = colon == std::string::npos ? "" : trimmed(item.substr(0, colon));
         if (!is_identifier(name))
           input.fail(section + "Limit states", "'" + item + "' is not 'NAME: EXPRESSION'");
+        if (std::find(limit_state_names.begin(), limit_state_names.end(), name) !=
+            limit_state_names.end())
+          input.fail(section + "Limit states", "limit state '" + name + "' is given twice");
         const std::string expression = trimmed(item.substr(colon + 1));
         try
           {
