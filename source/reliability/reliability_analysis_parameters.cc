@@ -232,7 +232,8 @@ namespace poundfe
     prm.add_parameter("Monte Carlo samples", monte_carlo_samples,
                       "Largest number of crude Monte Carlo samples. Unit: count.", Integer(1));
     prm.add_parameter("Importance samples", importance_samples,
-                      "Largest number of importance samples. Unit: count.", Integer(1));
+                      "Largest number of importance samples: of the method, and of the check "
+                      "of each FORM around its design point. Unit: count.", Integer(1));
     prm.add_parameter("Target COV", target_cov,
                       "Stop sampling once the estimator's COV reaches this (0: all samples). "
                       "Unit: dimensionless.", Double(0, 1));
