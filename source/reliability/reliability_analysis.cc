@@ -8,9 +8,12 @@
 #include <poundfe/reliability/sampling.h>
 #include <poundfe/reliability/subset.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 namespace poundfe
@@ -140,6 +143,51 @@ namespace poundfe
                            "(Reliability/Limit states)");
     }
 
+    /// Subset Simulation of the system, over the ranks of `comm`.
+    void
+    run_subset(const ReliabilityAnalysisParameters &p, const ReliabilityProblem &problem,
+               ReliabilityReport &report, const MPI_Comm comm)
+    {
+      const auto     start = std::chrono::steady_clock::now();
+      SubsetSettings settings;
+      settings.samples_per_level       = p.subset_samples_per_level;
+      settings.conditional_probability = p.subset_conditional_probability;
+      settings.max_levels              = p.subset_max_levels;
+      settings.proposal_spread         = p.subset_proposal_spread;
+      settings.seed                    = p.seed;
+      const StandardSpaceLimitStates G(problem);
+      // Y = -G_system: Subset Simulation estimates P(Y > 0) = P(G_system < 0).
+      // A limit state undefined at a sample of one rank stops every rank
+      // at the end of the level (where they meet) before it is reported.
+      std::string        undefined;
+      const SubsetResult r = subset_simulation(
+        [&](const std::vector<double> &u) {
+          try
+            {
+              return undefined.empty() ? -G.system_value(u) :
+                                         -std::numeric_limits<double>::infinity();
+            }
+          catch (const NumericalError &e)
+            {
+              undefined = e.what();
+              request_stop();
+              return -std::numeric_limits<double>::infinity(); // the level is dropped
+            }
+        },
+        problem.transformation.n_variables(), 0.0, settings, comm);
+      request_stop(false);
+      for (const std::string &message : dealii::Utilities::MPI::all_gather(comm, undefined))
+        if (!message.empty())
+          throw NumericalError(message);
+      report.estimates.push_back({"subset", r.probability, r.coefficient_of_variation,
+                                  r.model_runs * problem.limit_states.size(),
+                                  seconds_since(start)});
+      report.interrupted |= r.interrupted;
+      if (!r.reached_threshold && !r.interrupted)
+        add_failure(report, "Subset Simulation stopped at Reliability/Subset/Maximum levels "
+                            "before reaching the failure domain");
+    }
+
     /// The methods of `p` in turn on `problem`.
     void
     run_methods(const ReliabilityAnalysisParameters &p, const ReliabilityProblem &problem,
@@ -178,27 +226,7 @@ namespace poundfe
           add("Monte Carlo", monte_carlo(problem, sampling), start);
         }
       if (has(p, ReliabilityMethod::subset) && !report.interrupted)
-        {
-          const auto     start = std::chrono::steady_clock::now();
-          SubsetSettings settings;
-          settings.samples_per_level       = p.subset_samples_per_level;
-          settings.conditional_probability = p.subset_conditional_probability;
-          settings.max_levels              = p.subset_max_levels;
-          settings.proposal_spread         = p.subset_proposal_spread;
-          settings.seed                    = p.seed;
-          const StandardSpaceLimitStates G(problem);
-          // Y = -G_system: Subset Simulation estimates P(Y > 0) = P(G_system < 0)
-          const SubsetResult r = subset_simulation(
-            [&](const std::vector<double> &u) { return -G.system_value(u); },
-            problem.transformation.n_variables(), 0.0, settings, comm);
-          report.estimates.push_back({"subset", r.probability, r.coefficient_of_variation,
-                                      r.model_runs * problem.limit_states.size(),
-                                      seconds_since(start)});
-          report.interrupted |= r.interrupted;
-          if (!r.reached_threshold && !r.interrupted)
-            add_failure(report, "Subset Simulation stopped at Reliability/Subset/Maximum levels "
-                                "before reaching the failure domain");
-        }
+        run_subset(p, problem, report, comm);
     }
   } // namespace
 

@@ -5,8 +5,9 @@
 # 200 steps) and on algebraic limit states of the `reliability` command:
 #  - a limit state that is NaN at a sample (sqrt of a negative) is exit 2
 #    naming the limit state, its expression and the sample, in montecarlo
-#    (realizations.csv kept), subset, dynamic-form and reliability (FORM,
-#    Monte Carlo, subset); never a "safe" sample;
+#    (realizations.csv kept), subset (on one rank and on two: no rank left
+#    waiting), dynamic-form and reliability (FORM, Monte Carlo, subset);
+#    never a "safe" sample;
 #  - names that shadow each other are refused, exit 1: a limit state given
 #    twice, a random variable named like a response column, two random
 #    variables on one model value; a constant with a random variable's
@@ -17,9 +18,10 @@
 #    around the design point (by default in dynamic-form), with a warning
 #    when they disagree (the peak drift of a first passage, a curved
 #    algebraic surface); a failed FORM leaves Monte Carlo's estimate.
-#   limit_states.sh POUNDFE DYNAMIC_FORM_SDOF_PRM
+#   limit_states.sh POUNDFE MPIRUN DYNAMIC_FORM_SDOF_PRM
 set -u
-poundfe=$(readlink -f "$1") sdof=$(readlink -f "$2")
+poundfe=$(readlink -f "$1") mpirun=$2 sdof=$(readlink -f "$3")
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -50,7 +52,20 @@ sdof "  set Limit states = drift: sqrt(0.02 - max_drift_ratio)" > mc-nan.prm
 expect 2 "limit state 'drift' (sqrt(0.02 - max_drift_ratio)) is NaN at realization" montecarlo mc-nan.prm --output out
 [ -s out/realizations.csv ] || fail "montecarlo NaN: realizations.csv not kept"
 status_is failed "montecarlo NaN"
-expect 2 "limit state 'drift' (sqrt(0.02 - max_drift_ratio)) is NaN at a sample of Subset Simulation (max_drift_ratio = " subset mc-nan.prm --output out
+expect 2 "limit state 'drift' (sqrt(0.02 - max_drift_ratio)) is NaN at sample " subset mc-nan.prm --output out
+grep -q "of level 0 of Subset Simulation (max_drift_ratio = " stderr || fail "subset NaN: no level or value named"
+[ -s out/subset_runs.csv ] || fail "subset NaN: subset_runs.csv not kept"
+# on two ranks, the rank that meets it stops the other at the end of the level
+# (before: the other waited for it forever)
+n=$((n + 1))
+rm -rf out
+timeout -k 5 60 "$mpirun" -np 2 "$poundfe" subset mc-nan.prm --output out > stdout 2> stderr
+got=$?
+if [ "$got" -ne 2 ] || ! grep -qF "(sqrt(0.02 - max_drift_ratio)) is NaN at sample " stderr; then
+  fail "subset NaN on 2 ranks: exit $got: $(head -c 400 stderr)"
+else
+  echo "ok   subset NaN on 2 ranks: $(head -c 200 stderr)"
+fi
 form "final: sqrt(0.02 - A_storey1_residual_drift_ratio)" > form-nan.prm
 expect 2 "limit state 'final' (sqrt(0.02 - A_storey1_residual_drift_ratio)) is NaN at time history" dynamic-form form-nan.prm --output out
 status_is failed "dynamic-form NaN"

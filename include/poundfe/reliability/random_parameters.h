@@ -57,7 +57,8 @@ namespace poundfe
     unsigned long form_realization     = 0;
     FormSettings  form{20, 1e-3, 1e-3, 1e-2, false};
     /// dynamic-form after FORM: SORM (Breitung, Tvedt) from the Hessian at
-    /// u*, and importance sampling around u* (0 samples: none)
+    /// u*, and importance sampling around u*, the check of FORM's Pf (0
+    /// samples: none)
     bool          form_sorm               = false;
     unsigned long form_importance_samples = 400;
 
@@ -73,9 +74,10 @@ namespace poundfe
 
     void declare(dealii::ParameterHandler &prm);
     /// Parses the section (InputError naming the entry: a variable not
-    /// 'NAME: PATH ~ DISTRIBUTION ...', impossible distribution parameters,
-    /// a correlation matrix that is not symmetric positive definite, a limit
-    /// state not 'NAME: EXPRESSION'). The paths and the expressions' names
+    /// 'NAME: PATH ~ DISTRIBUTION ...' or named twice, impossible
+    /// distribution parameters, a correlation matrix that is not symmetric
+    /// positive definite, a limit state not 'NAME: EXPRESSION' or given
+    /// twice). The paths and the expressions' names
     /// are checked against the model by attach_random_parameters and
     /// ResponseLimitStates.
     void check(const InputFile &input);
@@ -89,9 +91,10 @@ namespace poundfe
   /// (RealizationRunner::optional_response_names) and makes the section's
   /// variables random in it: InputError at
   /// Random parameters/Variables for a path the model does not have or
-  /// cannot vary, or a distribution that can sample values the parameter
+  /// cannot vary, a distribution that can sample values the parameter
   /// cannot take (e.g. a normal stiffness: use a lognormal or a truncated
-  /// normal with lower >= 0).
+  /// normal with lower >= 0), a variable named like a column of
+  /// realizations.csv, or two variables that write into one model value.
   /// `input` is the file (for messages) and `model_input`, `contact_input`
   /// its model and contact sections, which the runner's model was built
   /// from (the hinges' origins, what the builder maps: dynamics/
