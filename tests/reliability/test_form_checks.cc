@@ -103,7 +103,7 @@ BOOST_AUTO_TEST_CASE(form_checked_by_importance_sampling)
 }
 
 // sqrt(a + 1) is NaN for a < -1 (P = 0.16): an error naming the limit state
-// and the point, never a sample counted safe (before, Monte Carlo's P was 0).
+// and the point, never a sample counted safe (which would give P = 0).
 BOOST_AUTO_TEST_CASE(nan_limit_state_is_an_error)
 {
   const ReliabilityReport report = run_reliability_analysis(
