@@ -256,6 +256,29 @@ namespace poundfe::commands
         }
     }
 
+    /// The sampler's response Y of one model run: -g of the system of
+    /// `limit_states` when there are any, else the largest of `columns`.
+    ResponseFunction
+    sampled_response(RealizationRunner &runner, SubsetRunsFile &journal,
+                     UndefinedSampleJournal &sampled, const ResponseLimitStates *limit_states,
+                     const std::vector<unsigned int> &columns)
+    {
+      auto responses = std::make_shared<std::vector<double>>();
+      return [&runner, &journal, &sampled, limit_states, columns,
+              responses](const std::vector<double> &xi) {
+        if (!sampled.undefined.empty()) // the rest of the level is dropped: no time history
+          return -std::numeric_limits<double>::infinity();
+        if (!runner.run(xi, *responses))
+          journal.mark_failed();
+        if (limit_states)
+          return negated_limit_state(*limit_states, *responses, sampled);
+        double y = 0;
+        for (const unsigned int c : columns)
+          y = std::max(y, (*responses)[c]);
+        return y;
+      };
+    }
+
     /// NumericalError on every rank when a limit state was undefined at a
     /// sample of any rank (the message of the lowest such rank).
     void
@@ -306,20 +329,9 @@ namespace poundfe::commands
     timer.enter_subsection("levels");
     SubsetRun           facts{subset_response_names().name(ss.response), runner.n_variables(),
                     runner.n_parameters(), 0, dealii::Utilities::MPI::n_mpi_processes(comm), 0};
-    std::vector<double>    responses;
     UndefinedSampleJournal sampled(journal);
-    const auto             response = [&](const std::vector<double> &xi) {
-      if (!sampled.undefined.empty()) // the rest of the level is dropped: no time history
-        return -std::numeric_limits<double>::infinity();
-      if (!runner.run(xi, responses))
-        journal.mark_failed();
-      if (limit_state)
-        return negated_limit_state(*limit_states, responses, sampled);
-      double y = 0;
-      for (const unsigned int c : columns)
-        y = std::max(y, responses[c]);
-      return y;
-    };
+    const ResponseFunction response =
+      sampled_response(runner, journal, sampled, limit_states.get(), columns);
     const auto         start  = std::chrono::steady_clock::now();
     const SubsetResult result =
       subset_simulation(response, runner.n_variables(), threshold, settings, comm, &sampled);
