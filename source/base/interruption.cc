@@ -14,6 +14,8 @@ namespace poundfe
     bool installed[2] = {false, false};
     /// set_stop_at_safe_points
     bool stop_at_safe_points = false;
+    /// request_stop: a stop without a signal
+    volatile std::sig_atomic_t stop_requested = 0;
 
     extern "C" void
     on_signal(const int signal)
@@ -60,7 +62,13 @@ namespace poundfe
   bool
   interruption_requested()
   {
-    return received != 0;
+    return received != 0 || stop_requested != 0;
+  }
+
+  void
+  request_stop(const bool stop)
+  {
+    stop_requested = stop ? 1 : 0;
   }
 
   void

@@ -3,13 +3,16 @@
 // system) in the loading's first normals, an optional scale factor and the
 // random model parameters (reliability/dynamic_form.h). Writes summary.json
 // (beta, Pf, design point, alpha, time histories) and design_point.csv (per
-// variable: x*, u*, alpha). Exit 2, with those files, when FORM does not
-// converge.
+// variable: x*, u*, alpha), with FORM's Pf checked by importance sampling
+// around the design point (a warning when they disagree). Exit 2, with
+// those files, when FORM does not converge (no design point at all when
+// the gradient is zero at the start).
 #include <poundfe/commands/command.h>
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/reliability/dynamic_form.h>
@@ -61,27 +64,24 @@ namespace poundfe::commands
       return csv.str();
     }
 
+    /// Why FORM failed, naming the limit states ("" when it converged).
     std::string
-    summary_json(const InputParameters &input, const DynamicFormResult &r)
+    form_failure(const InputParameters &input, const DynamicFormResult &r)
     {
-      JsonWriter json;
-      begin_summary(json, "dynamic-form", input, r.form.converged ? "completed" : "failed");
-      if (!r.form.converged)
-        json.value("failure", "FORM did not converge in " +
-                                std::to_string(input.random_parameters.form.max_iterations) +
-                                " iterations (the last iterate is reported)");
-      json.value("converged", r.form.converged)
-        .value("beta", r.form.beta)
-        .value("failure_probability", r.form.probability)
-        .value("iterations", r.form.iterations)
-        .value("gradient_evaluations", r.form.n_gradients)
-        .value("time_histories", r.n_time_histories)
-        .value("failed_time_histories", r.n_failed_runs)
-        .value("limit_state_at_design_point", r.design_limit_state)
-        .value("variables", r.variable_names)
-        .value("design_point_x", r.design_point)
-        .value("design_point_u", r.form.design_point_u)
-        .value("alpha", r.form.alpha);
+      if (r.form.converged)
+        return "";
+      const RandomParameterParameters &p = input.random_parameters;
+      std::string                      named;
+      for (std::size_t k = 0; k < p.limit_state_names.size(); ++k)
+        named += (k == 0 ? "'" : ", '") + p.limit_state_names[k] + "' (" + p.expressions[k] + ")";
+      return "dynamic FORM on limit state" + std::string(p.limit_state_names.size() > 1 ? "s " : " ") +
+             named + ": " + r.form.failure +
+             (r.form.zero_gradient_at_start ? "" : " (the last iterate is reported)");
+    }
+
+    void
+    write_checks(JsonWriter &json, const DynamicFormResult &r)
+    {
       if (r.sorm)
         json.begin_object("sorm")
           .value("curvatures", r.sorm->curvatures)
@@ -94,12 +94,63 @@ namespace poundfe::commands
       if (r.importance)
         json.begin_object("importance_sampling")
           .value("failure_probability", r.importance->probability)
-          .value("cov", r.importance->coefficient_of_variation)
+          .value("cov", undefined_if_infinite(r.importance->coefficient_of_variation))
           .value("samples", r.importance->n_samples)
           .value("failures", r.importance->n_failures)
+          .value("agrees_with_form", r.form_check.empty())
           .end_object();
+    }
+
+    std::string
+    summary_json(const InputParameters &input, const DynamicFormResult &r)
+    {
+      JsonWriter json;
+      begin_summary(json, "dynamic-form", input,
+                    !r.form.converged        ? "failed" :
+                    !r.form_check.empty()    ? "completed with warnings" :
+                                               "completed");
+      if (!r.form.converged)
+        json.value("failure", form_failure(input, r));
+      if (!r.form_check.empty())
+        json.value("warnings", std::vector<std::string>{r.form_check});
+      json.value("converged", r.form.converged);
+      // no direction at all: no beta, Pf or design point to report
+      if (!r.form.zero_gradient_at_start)
+        json.value("beta", r.form.beta)
+          .value("failure_probability", r.form.probability)
+          .value("iterations", r.form.iterations);
+      json.value("gradient_evaluations", r.form.n_gradients)
+        .value("time_histories", r.n_time_histories)
+        .value("failed_time_histories", r.n_failed_runs);
+      if (!r.form.zero_gradient_at_start)
+        json.value("limit_state_at_design_point", r.design_limit_state)
+          .value("variables", r.variable_names)
+          .value("design_point_x", r.design_point)
+          .value("design_point_u", r.form.design_point_u)
+          .value("alpha", r.form.alpha);
+      write_checks(json, r);
       json.end_object();
       return json.str();
+    }
+
+    void
+    report(const CommandRun &run, const DynamicFormResult &result)
+    {
+      if (!result.form.zero_gradient_at_start)
+        run.out << "dynamic FORM: beta = " << result.form.beta
+                << ", Pf = " << result.form.probability << " (" << result.form.iterations
+                << " iterations, " << result.n_time_histories << " time histories)\n";
+      if (result.sorm)
+        run.out << "SORM: Pf = " << result.sorm->breitung << " (Breitung), "
+                << result.sorm->tvedt << " (Tvedt)\n";
+      if (result.importance)
+        run.out << "importance sampling: Pf = " << result.importance->probability << " (COV "
+                << result.importance->coefficient_of_variation << ", "
+                << result.importance->n_samples << " time histories)\n";
+      if (!result.form_check.empty())
+        run.err << "poundfe: warning: " << result.form_check << "\n";
+      run.out << "results in " << run.directory << "/ (summary.json"
+              << (result.form.design_point_u.empty() ? "" : ", design_point.csv") << ")\n";
     }
   } // namespace
 
@@ -118,21 +169,10 @@ namespace poundfe::commands
     if (!result.form.design_point_u.empty())
       write_file_atomically(run.directory + "/design_point.csv", design_point_csv(result));
     write_file_atomically(run.directory + "/summary.json", summary_json(input, result));
-    run.out << "dynamic FORM: beta = " << result.form.beta
-            << ", Pf = " << result.form.probability << " (" << result.form.iterations
-            << " iterations, " << result.n_time_histories << " time histories)\n";
-    if (result.sorm)
-      run.out << "SORM: Pf = " << result.sorm->breitung << " (Breitung), "
-              << result.sorm->tvedt << " (Tvedt)\n";
-    if (result.importance)
-      run.out << "importance sampling: Pf = " << result.importance->probability << " (COV "
-              << result.importance->coefficient_of_variation << ", "
-              << result.importance->n_samples << " time histories)\n";
-    run.out
-            << "results in " << run.directory << "/ (summary.json, design_point.csv)\n";
+    report(run, result);
     if (!result.form.converged)
       {
-        run.err << "poundfe: numerical failure: dynamic FORM did not converge\n";
+        run.err << "poundfe: numerical failure: " << form_failure(input, result) << "\n";
         return 2;
       }
     return 0;

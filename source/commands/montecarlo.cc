@@ -161,7 +161,8 @@ namespace poundfe::commands
         }
       if (!limit_states)
         return;
-      probabilities = limit_state_probabilities(*limit_states, table.responses, table.completed);
+      probabilities = limit_state_probabilities(*limit_states, table.responses, table.completed,
+                                                table.realizations);
       json.begin_object("limit_states").begin_array("limit_states");
       for (unsigned int k = 0; k < limit_states->n_limit_states(); ++k)
         {

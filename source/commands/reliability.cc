@@ -3,8 +3,11 @@
 // Monte Carlo and Subset Simulation (reliability/reliability_analysis.h).
 // Writes summary.json, design_points.csv (per limit state and variable: x*,
 // u*, alpha, d beta/d mean, d beta/d sd) and estimates.csv (per method: Pf,
-// generalized beta = -Phi^{-1}(Pf), COV, evaluations). Exit 2, with those
-// files, when FORM does not converge or Subset Simulation stops short.
+// generalized beta = -Phi^{-1}(Pf), COV, evaluations); each FORM is checked
+// by importance sampling around its design point (a warning when they
+// disagree). Exit 2, with those files, when FORM does not converge (Monte
+// Carlo and subset still run), Subset Simulation stops short or a limit
+// state is NaN at a sample.
 #include <poundfe/base/interruption.h>
 #include <poundfe/commands/command.h>
 #include <poundfe/dynamics/analysis.h>
@@ -90,9 +93,20 @@ namespace poundfe::commands
             .value("design_point_u", f.design_point_u)
             .value("alpha", f.alpha)
             .value("dbeta_dmean", f.dbeta_dmean)
-            .value("dbeta_dsd", f.dbeta_dsd)
-            .end_object();
+            .value("dbeta_dsd", f.dbeta_dsd);
+          if (!f.converged)
+            json.value("failure", f.failure);
+          json.end_object();
         }
+      if (ls.form_check)
+        json.begin_object("form_check")
+          .value("method", "importance sampling around the design point")
+          .value("failure_probability", ls.form_check->probability)
+          .value("coefficient_of_variation",
+                 undefined_if_infinite(ls.form_check->coefficient_of_variation))
+          .value("samples", ls.form_check->n_samples)
+          .value("failures", ls.form_check->n_failures)
+          .end_object();
       if (ls.sorm)
         json.begin_object("sorm")
           .value("curvatures", ls.sorm->curvatures)
@@ -114,6 +128,8 @@ namespace poundfe::commands
       begin_summary(json, "reliability", input, status);
       if (!report.failure.empty())
         json.value("failure", report.failure);
+      if (!report.warnings.empty())
+        json.value("warnings", report.warnings);
       json.value("system", p.system == SystemType::series ? "series" : "parallel");
       json.begin_array("random_variables");
       for (std::size_t i = 0; i < p.variable_names.size(); ++i)
@@ -171,12 +187,15 @@ namespace poundfe::commands
     write_file_atomically(run.directory + "/estimates.csv", estimates_csv(report));
     write_file_atomically(run.directory + "/summary.json",
                           summary_json(input, report,
-                                       report.interrupted       ? "interrupted" :
-                                       report.failure.empty() ? "completed" :
-                                                                "failed"));
+                                       report.interrupted        ? "interrupted" :
+                                       !report.failure.empty()   ? "failed" :
+                                       !report.warnings.empty()  ? "completed with warnings" :
+                                                                   "completed"));
     std::ostringstream out;
     for (const LimitStateReliability &ls : report.limit_states)
-      if (ls.form)
+      if (ls.form && !ls.form->converged)
+        out << "limit state " << ls.name << ": FORM failed (" << ls.form->failure << ")\n";
+      else if (ls.form)
         out << "limit state " << ls.name << ": FORM beta = " << ls.form->beta << " ("
             << ls.form->iterations << " iterations, " << ls.form->n_evaluations
             << " evaluations)" << (ls.sorm ? ", SORM Tvedt beta = " : "")
@@ -196,6 +215,8 @@ namespace poundfe::commands
       }
     run.out << out.str() << "results in " << run.directory
               << "/ (summary.json, design_points.csv, estimates.csv)\n";
+    for (const std::string &warning : report.warnings)
+      run.err << "poundfe: warning: " << warning << "\n";
     if (!report.failure.empty())
       run.err << "poundfe: numerical failure: " << report.failure << "\n";
     return status;

@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <utility>
@@ -230,6 +231,91 @@ namespace poundfe::commands
       out << "\nresults in " << directory << "/ (summary.json, subset_levels.csv, subset_runs.csv"
           << (input.output.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
     }
+    /// The journal as the sampler sees it, for a limit state that can be
+    /// undefined (NaN) at a sample: find() says which sample is about to
+    /// run (for the message), and a sample found undefined is not recorded
+    /// (a resumed run computes it again and fails again, rather than
+    /// reading a stand-in value as safe).
+    class UndefinedSampleJournal : public SubsetJournal
+    {
+    public:
+      explicit UndefinedSampleJournal(SubsetRunsFile &journal)
+        : journal(journal)
+      {}
+      bool
+      find(const unsigned int level, const unsigned int sample, double &response) const override
+      {
+        current = "sample " + std::to_string(sample) + " of level " + std::to_string(level) +
+                  " of Subset Simulation";
+        return journal.find(level, sample, response);
+      }
+      void
+      record(const unsigned int level, const unsigned int sample, const double response) override
+      {
+        if (undefined.empty())
+          journal.record(level, sample, response);
+      }
+      /// The sample under way (the last one find() was asked about).
+      const std::string &sample() const { return current; }
+      /// The first limit state found undefined on this rank ("": none).
+      std::string undefined;
+
+    private:
+      SubsetRunsFile     &journal;
+      mutable std::string current;
+    };
+
+    /// -g of the system at the sample under way; a limit state undefined
+    /// there stops the sampler at the end of the level on every rank
+    /// (request_stop: the ranks meet there) and is reported after it.
+    double
+    negated_limit_state(const ResponseLimitStates &limit_states,
+                        const std::vector<double> &responses, UndefinedSampleJournal &journal)
+    {
+      try
+        {
+          return -limit_states.system_value(responses, journal.sample());
+        }
+      catch (const NumericalError &e)
+        {
+          journal.undefined = e.what();
+          request_stop();
+          return -std::numeric_limits<double>::infinity(); // in a level that is dropped
+        }
+    }
+
+    /// The sampler's response Y of one model run: -g of the system of
+    /// `limit_states` when there are any, else the largest of `columns`.
+    ResponseFunction
+    sampled_response(RealizationRunner &runner, SubsetRunsFile &journal,
+                     UndefinedSampleJournal &sampled, const ResponseLimitStates *limit_states,
+                     const std::vector<unsigned int> &columns)
+    {
+      auto responses = std::make_shared<std::vector<double>>();
+      return [&runner, &journal, &sampled, limit_states, columns,
+              responses](const std::vector<double> &xi) {
+        if (!sampled.undefined.empty()) // the rest of the level is dropped: no time history
+          return -std::numeric_limits<double>::infinity();
+        if (!runner.run(xi, *responses))
+          journal.mark_failed();
+        if (limit_states)
+          return negated_limit_state(*limit_states, *responses, sampled);
+        double y = 0;
+        for (const unsigned int c : columns)
+          y = std::max(y, (*responses)[c]);
+        return y;
+      };
+    }
+
+    /// NumericalError on every rank when a limit state was undefined at a
+    /// sample of any rank (the message of the lowest such rank).
+    void
+    throw_if_undefined(const UndefinedSampleJournal &journal, const MPI_Comm comm)
+    {
+      for (const std::string &message : dealii::Utilities::MPI::all_gather(comm, journal.undefined))
+        if (!message.empty())
+          throw NumericalError(message);
+    }
   } // namespace
 
   int
@@ -271,23 +357,17 @@ namespace poundfe::commands
     timer.enter_subsection("levels");
     SubsetRun           facts{subset_response_names().name(ss.response), runner.n_variables(),
                     runner.n_parameters(), 0, dealii::Utilities::MPI::n_mpi_processes(comm), 0};
-    std::vector<double> responses;
-    const auto          response = [&](const std::vector<double> &xi) {
-      if (!runner.run(xi, responses))
-        journal.mark_failed();
-      if (limit_state)
-        return -limit_states->system_value(responses);
-      double y = 0;
-      for (const unsigned int c : columns)
-        y = std::max(y, responses[c]);
-      return y;
-    };
+    UndefinedSampleJournal sampled(journal);
+    const ResponseFunction response =
+      sampled_response(runner, journal, sampled, limit_states.get(), columns);
     const auto         start  = std::chrono::steady_clock::now();
     const SubsetResult result =
-      subset_simulation(response, runner.n_variables(), threshold, settings, comm, &journal);
+      subset_simulation(response, runner.n_variables(), threshold, settings, comm, &sampled);
     facts.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     facts.failed_runs = journal.finish(); // of this run and the runs it resumed
+    request_stop(false);
+    throw_if_undefined(sampled, comm);
     timer.leave_subsection();
     const int status = result.interrupted ? interrupted_exit_status() : 0;
     if (rank != 0)

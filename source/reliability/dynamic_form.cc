@@ -34,6 +34,7 @@ namespace poundfe
     std::vector<double> held(runner.n_variables());
     standard_normals(runner.stochastic_load().seed(), settings.realization, held);
     std::vector<double> xi, row;
+    bool                gradients = true; // FORM, SORM: an infinite g is no value either
     const auto          run = [&](const std::vector<double> &x) {
       xi = held;
       std::copy(x.begin() + n_s, x.begin() + n_s + n_e, xi.begin());
@@ -41,7 +42,10 @@ namespace poundfe
       ++result.n_time_histories;
       if (!runner.run(xi, row, n_s ? x[0] : 1.0))
         ++result.n_failed_runs;
-      return limit_states.system_value(row);
+      return limit_states.system_value(row,
+                                       "time history " + std::to_string(result.n_time_histories) +
+                                         " of dynamic FORM",
+                                       gradients);
     };
     ReliabilityProblem problem{NatafTransformation(marginals), {run}, SystemType::series};
     result.form = form(problem, 0, settings.form);
@@ -53,10 +57,15 @@ namespace poundfe
       }
     if (result.form.converged && settings.importance_samples > 0)
       {
+        // the check of FORM's Pf: unbiased whatever the curvature
         SamplingSettings sampling;
         sampling.max_samples = settings.importance_samples;
         sampling.seed        = settings.importance_seed;
+        gradients            = false;
         result.importance = importance_sampling(problem, {result.form.design_point_u}, sampling);
+        gradients         = true;
+        if (!result.importance->interrupted)
+          result.form_check = form_disagreement(result.form.probability, *result.importance);
       }
 
     if (!result.form.design_point_x.empty())

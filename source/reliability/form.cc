@@ -3,6 +3,7 @@
 #include <poundfe/reliability/form.h>
 
 #include <cmath>
+#include <string>
 
 namespace poundfe
 {
@@ -76,8 +77,25 @@ namespace poundfe
         if (it == 0)
           scale = std::abs(value) > 0 ? std::abs(value) : 1;
         const double ng = norm(grad);
-        if (!(ng > 0) || !std::isfinite(value))
-          break;
+        if (!std::isfinite(value) || !std::isfinite(ng))
+          {
+            result.failure = "the limit state or its gradient is not finite at iteration " +
+                             std::to_string(it) + " (an expression undefined or infinite near "
+                             "that point)";
+            break;
+          }
+        if (!(ng > 0))
+          {
+            // no direction to search: say so rather than report u = 0 as a design point
+            result.zero_gradient_at_start = it == 0;
+            result.failure =
+              it == 0 ? "its gradient is zero at the start (u = 0, the variables' medians): "
+                        "the limit state does not vary there, so FORM has no direction to "
+                        "search (a limit state that does not depend on the variables FORM "
+                        "varies, or is flat around the medians); FORM does not apply" :
+                        "its gradient vanished at iteration " + std::to_string(it);
+            break;
+          }
         for (std::size_t i = 0; i < u.size(); ++i)
           alpha[i] = -grad[i] / ng;
         const double        projection = dot(alpha, u);
@@ -95,7 +113,10 @@ namespace poundfe
             break;
           }
         if (it == settings.max_iterations)
-          break;
+          {
+            result.failure = "it did not converge in " + std::to_string(it) + " iterations";
+            break;
+          }
         u = ihlrf_step(G, k, u, value, grad);
       }
     result.probability = standard_normal_cdf(-result.beta);

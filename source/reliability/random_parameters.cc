@@ -3,6 +3,7 @@
 // 1986; reliability/nataf.h) and limit states g(responses, x) <= 0 over the
 // rows of a time-history sampling run, estimated by crude Monte Carlo
 // P = n_f / n, CoV = sqrt((1 - P)/(n P)) (Melchers & Beck 2018, sec. 3.3).
+#include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/dynamics/realization.h>
@@ -73,6 +74,50 @@ namespace poundfe
                             std::abs(p[0]) + 10 * p[1]) > largest_model_value;
           default:
             return !(std::abs(d.mean()) + 10 * d.standard_deviation() <= largest_model_value);
+        }
+    }
+
+    /// Whether `a` and `b` write into the same value of the model: the same
+    /// kind of entry of the same building, list and field, on the same
+    /// storey (or member, entry) or on every one.
+    bool
+    same_model_entry(const ModelParameter &a, const ModelParameter &b)
+    {
+      return a.kind == b.kind && a.building == b.building &&
+             (a.entry == b.entry || a.entry < 0 || b.entry < 0) &&
+             a.member_kind == b.member_kind && a.section == b.section && a.shape == b.shape &&
+             a.section_3d == b.section_3d && a.group == b.group && a.friction == b.friction &&
+             a.foundation == b.foundation && a.list == b.list && a.link_field == b.link_field &&
+             a.spring_field == b.spring_field && a.bumper_field == b.bumper_field &&
+             a.plane_yield_drift == b.plane_yield_drift;
+    }
+
+    /// InputError at Random parameters/Variables for a variable whose name
+    /// a column of realizations.csv has already (a limit state would read
+    /// one of the two for the other), or whose path writes into the value
+    /// of an earlier variable (only the last would act, while both would be
+    /// written as sampled).
+    void
+    refuse_shadowed_variables(const RandomParameterParameters   &p,
+                              const std::vector<ModelParameter> &parameters,
+                              const RealizationRunner &runner, const InputFile &input)
+    {
+      std::vector<std::string> columns = runner.response_names();
+      for (const std::string &name : runner.optional_response_names())
+        columns.push_back(name);
+      columns.insert(columns.end(), {"realization", "seed", "completed"});
+      for (unsigned int i = 0; i < p.names.size(); ++i)
+        {
+          if (std::find(columns.begin(), columns.end(), p.names[i]) != columns.end())
+            input.fail(section + "Variables",
+                       "variable '" + p.names[i] + "' has the name of a response column of "
+                       "realizations.csv (a limit state could not tell them apart): rename it");
+          for (unsigned int j = 0; j < i; ++j)
+            if (same_model_entry(parameters[i], parameters[j]))
+              input.fail(section + "Variables",
+                         "variables '" + p.names[j] + "' (" + p.paths[j] + ") and '" +
+                           p.names[i] + "' (" + p.paths[i] +
+                           ") set the same model value: only one of them would act");
         }
     }
 
@@ -167,9 +212,12 @@ namespace poundfe
                       "dynamic-form: how many of the loading's standard normals FORM varies, "
                       "the first ones ('all': every one); the others keep those of Realization. "
                       "Unit: count.");
+    // bounded: an unsigned entry left to deal.II's own pattern takes "-5" as
+    // a wrapped-around 2^64 - 5
     prm.add_parameter("Realization", form_realization,
                       "dynamic-form: the realization whose loading normals the held ones are "
-                      "(as in realizations.csv). Unit: count.");
+                      "(as in realizations.csv). Unit: count.",
+                      Integer(0));
     prm.add_parameter("Scale factor", form_scale_text,
                       "dynamic-form: the distribution of a random factor on the loading's "
                       "amplitude, 'DISTRIBUTION KEY VALUE ...' as in Variables (empty: 1). "
@@ -192,8 +240,11 @@ namespace poundfe
                       "curvatures at the design point, the Hessian by central differences with "
                       "the Gradient step (about 2n^2 time histories). Unit: -.");
     prm.add_parameter("Importance samples", form_importance_samples,
-                      "dynamic-form: after FORM, importance sampling of this many time histories "
-                      "around the design point (0: none). Unit: count.");
+                      "dynamic-form: after FORM converges, importance sampling of this many "
+                      "time histories around the design point, which checks FORM's Pf (a "
+                      "warning when the two disagree beyond the sampling error; 0: no check). "
+                      "Unit: count.",
+                      Integer(0, 100000000));
     prm.leave_subsection();
   }
 
@@ -265,6 +316,9 @@ namespace poundfe
         const std::string name  = colon == std::string::npos ? "" : trimmed(item.substr(0, colon));
         if (!is_identifier(name) || trimmed(item.substr(colon + 1)).empty())
           input.fail(section + "Limit states", "'" + item + "' is not 'NAME: EXPRESSION'");
+        if (std::find(limit_state_names.begin(), limit_state_names.end(), name) !=
+            limit_state_names.end())
+          input.fail(section + "Limit states", "limit state '" + name + "' is given twice");
         limit_state_names.push_back(name);
         expressions.push_back(trimmed(item.substr(colon + 1)));
       }
@@ -318,6 +372,7 @@ namespace poundfe
                               " distribution can sample values beyond 1e150 in size, which '" +
                               p.paths[i] + "' cannot take (no model entry may)");
       }
+    refuse_shadowed_variables(p, parameters, runner, input);
     settle_hinge_origins(parameters, *origins, model);
     const auto nataf = std::make_shared<const NatafTransformation>(p.distributions, p.correlation);
     runner.set_random_parameters(
@@ -345,6 +400,9 @@ namespace poundfe
         try
           {
             limit_states.emplace_back(p.expressions[k], variables);
+            used_names.emplace_back();
+            for (const unsigned int i : limit_states.back().used_variables())
+              used_names.back().emplace_back(i, variables[i]);
           }
         catch (const std::invalid_argument &e)
           {
@@ -358,27 +416,50 @@ namespace poundfe
   }
 
   double
-  ResponseLimitStates::operator()(const unsigned int k, const std::vector<double> &row) const
+  ResponseLimitStates::operator()(const unsigned int k, const std::vector<double> &row,
+                                  const std::string &sample, const bool refuse_infinite) const
   {
     for (unsigned int i = 0; i < used_columns.size(); ++i)
       values[i] = row[used_columns[i]];
-    return limit_states[k](values);
+    const double g = limit_states[k](values);
+    if (std::isnan(g) || (refuse_infinite && std::isinf(g)))
+      throw NumericalError(undefined_message(k, g, sample));
+    return g;
+  }
+
+  std::string
+  ResponseLimitStates::undefined_message(const unsigned int k, const double g,
+                                         const std::string &sample) const
+  {
+    std::string point;
+    for (const auto &[i, name] : used_names[k])
+      point += (point.empty() ? "" : ", ") + name + " = " + number_text(values[i]);
+    return "limit state '" + limit_state_names[k] + "' (" + limit_states[k].expression() +
+           ") is " + (std::isnan(g) ? "NaN" : g > 0 ? "+inf" : "-inf") + " at " + sample + (point.empty() ? "" : " (" + point + ")") +
+           ": " +
+           (std::isnan(g) ? "the expression is undefined there, neither safe nor failed" :
+                            "an infinite value leaves no gradient") +
+           " (Random parameters/Limit states)";
   }
 
   double
-  ResponseLimitStates::system_value(const std::vector<double> &row) const
+  ResponseLimitStates::system_value(const std::vector<double> &row, const std::string &sample,
+                                    const bool refuse_infinite) const
   {
-    double value = (*this)(0, row);
+    double value = (*this)(0, row, sample, refuse_infinite);
     for (unsigned int k = 1; k < limit_states.size(); ++k)
-      value = system_type == SystemType::series ? std::min(value, (*this)(k, row)) :
-                                                  std::max(value, (*this)(k, row));
+      {
+        const double g = (*this)(k, row, sample, refuse_infinite);
+        value = system_type == SystemType::series ? std::min(value, g) : std::max(value, g);
+      }
     return value;
   }
 
   LimitStateProbabilities
   limit_state_probabilities(const ResponseLimitStates                &limit_states,
                             const std::vector<std::vector<double>> &rows,
-                            const std::vector<bool>                &completed)
+                            const std::vector<bool>                &completed,
+                            const std::vector<std::uint64_t>       &realizations)
   {
     const unsigned int         n_k = limit_states.n_limit_states();
     std::vector<unsigned long> failures(n_k, 0);
@@ -388,9 +469,10 @@ namespace poundfe
         if (!completed[r])
           continue;
         ++n;
+        const std::string sample = "realization " + std::to_string(realizations[r]);
         for (unsigned int k = 0; k < n_k; ++k)
-          failures[k] += limit_states(k, rows[r]) <= 0;
-        system_failures += limit_states.system_value(rows[r]) <= 0;
+          failures[k] += limit_states(k, rows[r], sample) <= 0;
+        system_failures += limit_states.system_value(rows[r], sample) <= 0;
       }
     LimitStateProbabilities result;
     for (unsigned int k = 0; k < n_k; ++k)

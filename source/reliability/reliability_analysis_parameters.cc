@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -231,7 +232,8 @@ namespace poundfe
     prm.add_parameter("Monte Carlo samples", monte_carlo_samples,
                       "Largest number of crude Monte Carlo samples. Unit: count.", Integer(1));
     prm.add_parameter("Importance samples", importance_samples,
-                      "Largest number of importance samples. Unit: count.", Integer(1));
+                      "Largest number of importance samples: of the method, and of the check "
+                      "of each FORM around its design point. Unit: count.", Integer(1));
     prm.add_parameter("Target COV", target_cov,
                       "Stop sampling once the estimator's COV reaches this (0: all samples). "
                       "Unit: dimensionless.", Double(0, 1));
@@ -271,6 +273,13 @@ namespace poundfe
         const std::vector<std::string> w = input_words(item);
         if (w.size() != 2 || !is_identifier(w[0]))
           input.fail(section + "Constants", "'" + item + "' is not 'NAME VALUE'");
+        // one name, one value: the parser would take one of the two silently
+        if (std::find(variable_names.begin(), variable_names.end(), w[0]) != variable_names.end())
+          input.fail(section + "Constants", "constant '" + w[0] +
+                                              "' has the name of a random variable: rename one");
+        for (const auto &[name, value] : constants)
+          if (name == w[0])
+            input.fail(section + "Constants", "constant '" + name + "' is given twice");
         constants.emplace_back(w[0], number(input, section + "Constants", w[1], "constant " + w[0]));
       }
     correlation = parse_correlation(input, section + "Correlation", correlation_text, distributions);
@@ -280,6 +289,9 @@ namespace poundfe
         const std::string name  = colon == std::string::npos ? "" : trimmed(item.substr(0, colon));
         if (!is_identifier(name))
           input.fail(section + "Limit states", "'" + item + "' is not 'NAME: EXPRESSION'");
+        if (std::find(limit_state_names.begin(), limit_state_names.end(), name) !=
+            limit_state_names.end())
+          input.fail(section + "Limit states", "limit state '" + name + "' is given twice");
         const std::string expression = trimmed(item.substr(colon + 1));
         try
           {

@@ -1,5 +1,6 @@
 // Equations and sources: include/poundfe/reliability/sampling.h.
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/reliability/sampling.h>
 
@@ -104,5 +105,23 @@ namespace poundfe
         m.add(failed, weight);
       }
     return result_of(m, G, interrupted);
+  }
+
+  std::string
+  form_disagreement(const double form_probability, const SamplingResult &is)
+  {
+    const std::string samples = std::to_string(is.n_samples) + " samples around the design point";
+    if (is.n_failures == 0)
+      return "importance sampling found no failure in " + samples + ": FORM's Pf = " +
+             number_text(form_probability) + " is not confirmed (the design point may be "
+             "wrong or one of several)";
+    const double error = is.coefficient_of_variation * is.probability;
+    if (std::abs(form_probability - is.probability) <= 3 * error)
+      return "";
+    return "FORM's Pf = " + number_text(form_probability) + " and importance sampling's Pf = " +
+           number_text(is.probability) + " (CoV " + number_text(is.coefficient_of_variation) +
+           ", " + samples + ") differ by more than three standard errors: the limit state is "
+           "too nonlinear near the design point for FORM (or the design point is one of "
+           "several); the sampling estimate is the one to trust";
   }
 } // namespace poundfe

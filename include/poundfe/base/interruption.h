@@ -38,8 +38,17 @@ namespace poundfe
   /// handler again for the signals of the first call, unless one came.
   void install_interruption_handlers();
 
-  /// Whether SIGINT or SIGTERM has arrived. Async-signal-safe to call.
+  /// Whether SIGINT or SIGTERM has arrived, or request_stop() was called.
+  /// Async-signal-safe to call.
   bool interruption_requested();
+
+  /// Stops the command's loops at their next safe point as a signal would
+  /// (interruption_requested() turns true; no signal, so the handlers and
+  /// interrupted_exit_status() stay as they are): for a failure found on one
+  /// MPI rank inside a collective loop, which every rank must leave at the
+  /// same point before it is reported. request_stop(false) withdraws it
+  /// once the loop is left (a library process goes on).
+  void request_stop(bool stop = true);
 
   /// The exit status of a command stopped early: 128 + the signal, as a shell
   /// reports a process killed by it (130 for SIGINT, 143 for SIGTERM); 130

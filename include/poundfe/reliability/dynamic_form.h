@@ -49,7 +49,7 @@ namespace poundfe
     std::vector<Distribution> scale;            // the scale factor's, or none
     FormSettings              form;
     bool                      sorm = false;            // then SORM at u*
-    unsigned long             importance_samples = 0;  // then IS around u*
+    unsigned long             importance_samples = 0;  // then IS around u*, FORM's check
     std::uint64_t             importance_seed    = 1;
   };
 
@@ -70,12 +70,18 @@ namespace poundfe
     /// time histories
     std::optional<SormResult>     sorm;
     unsigned long                 n_sorm_time_histories = 0;
-    /// importance sampling around the design point (when asked and FORM converged)
+    /// importance sampling around the design point (when asked and FORM
+    /// converged), and its warning when it and FORM disagree beyond its
+    /// error ("" when they agree: form_disagreement)
     std::optional<SamplingResult> importance;
+    std::string                   form_check;
   };
 
   /// FORM on the system value of `limit_states` over `runner`'s
-  /// realizations. Returns converged = false when FORM does not converge.
+  /// realizations. Returns converged = false when FORM does not converge
+  /// (form.failure says why; no design point when the gradient is zero at
+  /// the start). A limit state that is NaN (or, for FORM and SORM,
+  /// infinite) on a time history is a NumericalError naming it.
   DynamicFormResult dynamic_form(RealizationRunner &runner, const ResponseLimitStates &limit_states,
                                  const DynamicFormSettings &settings);
 } // namespace poundfe

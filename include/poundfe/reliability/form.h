@@ -30,6 +30,7 @@
 
 #include <poundfe/reliability/reliability_problem.h>
 
+#include <string>
 #include <vector>
 
 namespace poundfe
@@ -58,6 +59,12 @@ namespace poundfe
     /// d beta/d mean_i and d beta/d sd_i (for a truncated normal: its
     /// parent's mu and sigma).
     std::vector<double> dbeta_dmean, dbeta_dsd;
+    /// Why FORM stopped without converging ("" when it converged): the
+    /// iterations ran out, the gradient vanished, a value was not finite.
+    std::string         failure;
+    /// The gradient was zero at u = 0: FORM had no direction at all (no
+    /// beta, no Pf can be reported).
+    bool                zero_gradient_at_start = false;
   };
 
   /// FORM on limit state k of `problem` from u = 0. Returns converged = false

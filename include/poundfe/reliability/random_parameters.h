@@ -29,7 +29,9 @@
 #include <poundfe/reliability/reliability_problem.h>
 #include <poundfe/reliability/statistics.h>
 
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -55,9 +57,10 @@ namespace poundfe
     unsigned long form_realization     = 0;
     FormSettings  form{20, 1e-3, 1e-3, 1e-2, false};
     /// dynamic-form after FORM: SORM (Breitung, Tvedt) from the Hessian at
-    /// u*, and importance sampling around u* (0 samples: none)
+    /// u*, and importance sampling around u*, the check of FORM's Pf (0
+    /// samples: none)
     bool          form_sorm               = false;
-    unsigned long form_importance_samples = 0;
+    unsigned long form_importance_samples = 400;
 
     // parsed by check()
     std::vector<std::string>  names, paths;
@@ -71,9 +74,10 @@ namespace poundfe
 
     void declare(dealii::ParameterHandler &prm);
     /// Parses the section (InputError naming the entry: a variable not
-    /// 'NAME: PATH ~ DISTRIBUTION ...', impossible distribution parameters,
-    /// a correlation matrix that is not symmetric positive definite, a limit
-    /// state not 'NAME: EXPRESSION'). The paths and the expressions' names
+    /// 'NAME: PATH ~ DISTRIBUTION ...' or named twice, impossible
+    /// distribution parameters, a correlation matrix that is not symmetric
+    /// positive definite, a limit state not 'NAME: EXPRESSION' or given
+    /// twice). The paths and the expressions' names
     /// are checked against the model by attach_random_parameters and
     /// ResponseLimitStates.
     void check(const InputFile &input);
@@ -87,9 +91,10 @@ namespace poundfe
   /// (RealizationRunner::optional_response_names) and makes the section's
   /// variables random in it: InputError at
   /// Random parameters/Variables for a path the model does not have or
-  /// cannot vary, or a distribution that can sample values the parameter
+  /// cannot vary, a distribution that can sample values the parameter
   /// cannot take (e.g. a normal stiffness: use a lognormal or a truncated
-  /// normal with lower >= 0).
+  /// normal with lower >= 0), a variable named like a column of
+  /// realizations.csv, or two variables that write into one model value.
   /// `input` is the file (for messages) and `model_input`, `contact_input`
   /// its model and contact sections, which the runner's model was built
   /// from (the hinges' origins, what the builder maps: dynamics/
@@ -111,14 +116,25 @@ namespace poundfe
     unsigned int n_limit_states() const { return limit_states.size(); }
     const std::vector<std::string> &names() const { return limit_state_names; }
     SystemType system() const { return system_type; }
-    /// g_k of a row.
-    double operator()(unsigned int k, const std::vector<double> &row) const;
+    /// g_k of a row. A NaN (an expression undefined there, e.g. the sqrt
+    /// of a negative: the row is neither safe nor failed), or an infinite
+    /// value when `refuse_infinite` (a gradient method), is a
+    /// NumericalError naming the limit state, its expression, `sample`
+    /// ("realization 3") and the values the expression reads.
+    double operator()(unsigned int k, const std::vector<double> &row, const std::string &sample,
+                      bool refuse_infinite = false) const;
     /// min_k g_k (series) or max_k g_k (parallel): the system fails when <= 0.
-    double system_value(const std::vector<double> &row) const;
+    /// Each g_k checked as by operator().
+    double system_value(const std::vector<double> &row, const std::string &sample,
+                        bool refuse_infinite = false) const;
 
   private:
+    std::string undefined_message(unsigned int k, double g, const std::string &sample) const;
+
     std::vector<std::string>          limit_state_names;
     std::vector<LimitStateExpression> limit_states;
+    /// per limit state, the names it reads and their places in `values`
+    std::vector<std::vector<std::pair<unsigned int, std::string>>> used_names;
     std::vector<unsigned int>         used_columns; // of the row, in the expressions' order
     SystemType                        system_type;
     mutable std::vector<double>       values;
@@ -126,7 +142,8 @@ namespace poundfe
 
   /// P(g_k <= 0) of each limit state and of the system over the rows of
   /// `completed` realizations (crude Monte Carlo: failures / n, CoV
-  /// sqrt((1 - P)/(n P))).
+  /// sqrt((1 - P)/(n P))); `realizations`: the rows' numbers, for the
+  /// NumericalError of a limit state that is NaN on one.
   struct LimitStateProbabilities
   {
     std::vector<ProbabilityEstimate> limit_states;
@@ -135,7 +152,8 @@ namespace poundfe
   LimitStateProbabilities
   limit_state_probabilities(const ResponseLimitStates                &limit_states,
                             const std::vector<std::vector<double>> &rows,
-                            const std::vector<bool>                &completed);
+                            const std::vector<bool>                &completed,
+                            const std::vector<std::uint64_t>       &realizations);
 } // namespace poundfe
 
 #endif

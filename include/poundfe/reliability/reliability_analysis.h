@@ -8,6 +8,7 @@
 
 #include <poundfe/reliability/form.h>
 #include <poundfe/reliability/reliability_analysis_parameters.h>
+#include <poundfe/reliability/sampling.h>
 #include <poundfe/reliability/sorm.h>
 #include <poundfe/reliability/system_bounds.h>
 
@@ -24,6 +25,9 @@ namespace poundfe
     std::string               name, expression;
     std::optional<FormResult> form;
     std::optional<SormResult> sorm;
+    /// Importance sampling around FORM's design point on this limit state
+    /// alone (Sampling/Importance samples): the check of FORM's Pf.
+    std::optional<SamplingResult> form_check;
   };
 
   /// An estimate of the system's failure probability by one method.
@@ -46,9 +50,16 @@ namespace poundfe
     /// FORM bounds of the system (more than one limit state and FORM run).
     std::optional<SystemBounds>  bounds;
     std::vector<SystemEstimate>  estimates;
-    /// Non-empty when a method failed (FORM did not converge): the methods
-    /// after it did not run; what ran is kept.
+    /// Non-empty when a method failed, what went wrong ("; " between
+    /// several): FORM did not converge on a limit state (SORM and
+    /// importance sampling, which need its design point, did not run; Monte
+    /// Carlo and subset did), Subset Simulation stopped short, or a limit
+    /// state was NaN at a sample (NumericalError: the methods after it did
+    /// not run). What ran is kept.
     std::string                  failure;
+    /// FORM's Pf and its importance-sampling check disagree beyond the
+    /// sampling error (form_disagreement), per limit state.
+    std::vector<std::string>     warnings;
     bool                         interrupted = false;
   };
 

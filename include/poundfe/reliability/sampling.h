@@ -19,6 +19,7 @@
 #include <poundfe/reliability/reliability_problem.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace poundfe
@@ -48,6 +49,14 @@ namespace poundfe
   SamplingResult importance_sampling(const ReliabilityProblem              &problem,
                                      const std::vector<std::vector<double>> &design_points,
                                      const SamplingSettings                 &settings);
+
+  /// The check of a FORM estimate by importance sampling `is` around its
+  /// design point (unbiased whatever the shape of the limit state): a
+  /// warning when FORM's `form_probability` and is.probability differ by
+  /// more than three standard errors of the sampling (CoV Pf_IS), or when
+  /// the sampling found no failure around the design point; "" when they
+  /// agree.
+  std::string form_disagreement(double form_probability, const SamplingResult &is);
 } // namespace poundfe
 
 #endif
