@@ -180,6 +180,9 @@ namespace poundfe::commands
       out << e.method << ": Pf = " << e.probability
           << (e.coefficient_of_variation > 0 ? " (COV " + std::to_string(e.coefficient_of_variation) + ")" : "")
           << ", " << e.n_evaluations << " evaluations\n";
+    if (report.interrupted)
+      out << "reliability interrupted: the estimates above are over the samples drawn "
+             "before the signal, the methods after it were not run\n";
     run.out << out.str() << "results in " << run.directory
               << "/ (summary.json, design_points.csv, estimates.csv)\n";
     if (!report.failure.empty())
