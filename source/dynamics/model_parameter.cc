@@ -164,8 +164,7 @@ namespace poundfe
 #define POUNDFE_FOUNDATION_FIELD(expression) \
   [](FoundationParameters &f) -> double & { return f.expression; }
     const std::vector<FoundationEntry> foundation_entries = {
-      {{"Shear-wave velocity", POUNDFE_FOUNDATION_FIELD(soil.shear_wave_velocity),
-        {smallest_shear_wave_velocity, true, largest_shear_wave_velocity}},
+      {{"Shear-wave velocity", POUNDFE_FOUNDATION_FIELD(soil.shear_wave_velocity), positive},
        FoundationEntry::soil, false, false, true},
       {{"Soil density", POUNDFE_FOUNDATION_FIELD(soil.density), positive},
        FoundationEntry::soil, false, false, true},

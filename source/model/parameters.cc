@@ -37,8 +37,8 @@ namespace poundfe
     constexpr unsigned int largest_storey_count = 100000;
     constexpr unsigned int largest_bay_count    = 10000;
 
-    /// The counts and lengths of a generated frame or a shear building,
-    /// before the lists are sized by them.
+    /// The counts of a generated frame or a shear building, before the
+    /// lists are sized by them.
     void
     check_building_sizes(const InputFile &input, const std::string &s,
                          const BuildingParameters &p)
@@ -53,6 +53,14 @@ namespace poundfe
                                            std::to_string(largest_bay_count) +
                                            " (beyond any building; the model would not fit "
                                            "in memory)");
+    }
+
+    /// The lengths of a generated frame or a shear building, once each is
+    /// known to be positive.
+    void
+    check_building_lengths(const InputFile &input, const std::string &s,
+                           const BuildingParameters &p)
+    {
       const std::string why = "10 km is beyond any building";
       for (const double h : p.storey_heights)
         input.at_most(s + "Storey heights", h, largest_building_length, "m", why);
@@ -380,6 +388,8 @@ namespace poundfe
         input.list(s + "Beam mass per length", beam_mass_per_length, n, true,
                "one per floor");
       }
+    if (type == BuildingType::frame || type == BuildingType::shear)
+      check_building_lengths(input, s, *this);
     if (type == BuildingType::shear)
       {
         input.list(s + "Storey stiffnesses", storey_stiffnesses, n, true, "one per storey");
