@@ -62,6 +62,16 @@ namespace poundfe
   }
 
   void
+  InputFile::at_most(const std::string &path, const double v, const double bound,
+                     const std::string &unit, const std::string &why) const
+  {
+    if (!(std::abs(v) <= bound))
+      fail(path, "got " + number_text(v) + (unit.empty() ? "" : " " + unit) + ", at most " +
+                   number_text(bound) + (unit.empty() ? "" : " " + unit) + " in size (" + why +
+                   ")");
+  }
+
+  void
   InputFile::list(const std::string &path, const std::vector<double> &values, const std::size_t n,
                   const bool allow_zero, const std::string &what) const
   {

@@ -10,7 +10,7 @@ namespace poundfe
 
     /// The first signal that arrived, 0: none.
     volatile std::sig_atomic_t received = 0;
-    /// Whether the handler is installed for signals[i] (not when ignored).
+    /// Whether the handler is installed for signals[i].
     bool installed[2] = {false, false};
     /// set_stop_at_safe_points
     bool stop_at_safe_points = false;
@@ -36,27 +36,24 @@ namespace poundfe
   install_interruption_handlers()
   {
     // Again after MPI_Init (PETSc's initialisation installs its own
-    // handlers): the signals decided the first time, unless one has come.
-    static bool decided = false;
-    if (decided && received != 0)
+    // handlers), unless a signal has come. Installed also where the signal
+    // was ignored at start: a shell without job control starts background
+    // jobs with SIGINT ignored, and `kill -INT` should stop them as it
+    // stops a job in the foreground (at a safe point, files finished).
+    if (received != 0)
       return;
     for (int i = 0; i < 2; ++i)
       {
-        struct sigaction old = {}, action = {};
-        if (decided ? !installed[i] :
-                      (sigaction(signals[i], nullptr, &old) != 0 || old.sa_handler == SIG_IGN))
-          continue;
-        action.sa_handler = on_signal;
+        struct sigaction action = {};
+        action.sa_handler       = on_signal;
         // the other signal waits while the handler runs
         sigemptyset(&action.sa_mask);
         for (const int s : signals)
           sigaddset(&action.sa_mask, s);
         // the I/O under way when it arrives simply continues
         action.sa_flags = SA_RESTART;
-        installed[i]    = true;
-        sigaction(signals[i], &action, nullptr);
+        installed[i]    = sigaction(signals[i], &action, nullptr) == 0;
       }
-    decided = true;
   }
 
   bool

@@ -206,8 +206,12 @@ namespace poundfe::commands
 
     void
     report(const dealii::ConditionalOStream &out, const std::vector<MitigationRow> &rows,
-           const MonteCarloTable &table, const std::string &directory, const bool plots)
+           const MonteCarloTable &table, const unsigned long n, const std::string &directory,
+           const bool plots)
     {
+      if (table.interrupted)
+        out << "mitigation interrupted after " << table.realizations.size() << " of " << n
+            << " realizations: the results are over these; the same command runs the rest\n";
       out << "poundfe mitigation: " << rows.size() << " cases on " << table.realizations.size()
           << " realization" << (table.realizations.size() == 1 ? "" : "s") << "\n"
           << "case       max drift   P(pounding)  impacts  peak force (N)  required gap (m)\n";
@@ -252,7 +256,11 @@ namespace poundfe::commands
     if (rank != 0)
       return status;
     if (table.completed_values(0).empty())
-      throw NumericalError("no realization completed (see realizations.csv)");
+      {
+        if (table.interrupted) // stopped before the first: the guard's summary says so
+          throw Interrupted();
+        throw NumericalError("no realization completed (see realizations.csv)");
+      }
 
     timer.enter_subsection("output");
     const std::vector<MitigationRow> rows =
@@ -264,7 +272,7 @@ namespace poundfe::commands
     write_summary(run.directory, input, study.building_names(), rows, table, random);
     timer.leave_subsection();
 
-    report(pcout, rows, table, run.directory, plots);
+    report(pcout, rows, table, n, run.directory, plots);
     print_timing(timer);
     return status;
   }

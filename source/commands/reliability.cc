@@ -213,6 +213,9 @@ namespace poundfe::commands
           out << " (COV " << e.coefficient_of_variation << ")";
         out << ", " << e.n_evaluations << " evaluations\n";
       }
+    if (report.interrupted)
+      out << "reliability interrupted: the estimates above are over the samples drawn "
+             "before the signal, the methods after it were not run\n";
     run.out << out.str() << "results in " << run.directory
               << "/ (summary.json, design_points.csv, estimates.csv)\n";
     for (const std::string &warning : report.warnings)

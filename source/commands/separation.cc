@@ -776,7 +776,11 @@ namespace poundfe::commands
       outcome.method      = "Monte Carlo without contact: means of " +
                        std::to_string(outcome.n_completed) + " realizations";
       if (outcome.n_completed == 0)
-        throw NumericalError("no realization completed (see realizations.csv)");
+        {
+          if (outcome.status == "interrupted") // the guard's summary says so
+            throw Interrupted();
+          throw NumericalError("no realization completed (see realizations.csv)");
+        }
     }
 
     /// One time history without contact (rank 0).
@@ -887,6 +891,10 @@ namespace poundfe::commands
     // The output (rank 0).
     write_results(directory, input, analysis, pairs, route, outcome,
                   spectrum ? &*spectrum : nullptr, hazard);
+    if (outcome.status == "interrupted")
+      pcout << "separation interrupted: the results are over what was completed before the "
+               "signal (summary.json says interrupted)"
+            << (route.random ? "; the same command runs the rest" : "") << "\n";
     pcout << "poundfe separation: " << outcome.method << "\n";
     report(pcout, input, pairs, outcome.results, !route.by_spectrum);
     if (hazard)

@@ -17,6 +17,12 @@ namespace poundfe
   {
     const std::string section = "Initial conditions/";
 
+    /// The largest initial displacement or velocity (m, rad, m/s, rad/s):
+    /// far beyond any building's motion, and a state of 1e308 would end as
+    /// a numerical failure instead of a named entry.
+    constexpr double largest_initial_value = 1e3;
+    const char *const initial_value_why = "beyond any building's motion, in m, rad, m/s or rad/s";
+
     /// The numbers of `text` (blank-separated), each finite; fails on the
     /// first word that is not one.
     std::vector<double>
@@ -30,6 +36,7 @@ namespace poundfe
           const std::optional<double> value = parse_number(word);
           if (!value)
             input.fail(path, "'" + word + "' is not a finite number (in '" + trimmed(text) + "')");
+          input.at_most(path, *value, largest_initial_value, "", initial_value_why);
           values.push_back(*value);
         }
       return values;
@@ -95,16 +102,23 @@ namespace poundfe
                          "; give a building's name or number)");
     }
 
-    /// Sets ux of every node of every floor the entries name.
+    /// Sets ux of every node of every floor the entries name; a building
+    /// named twice (by name or number) is refused: one of the two would
+    /// silently win.
     void
     set_floors(const InputFile &input, const std::string &entry, const Model &model,
                const std::vector<std::string> &entries, Vector &x)
     {
-      const std::string path = section + entry;
+      const std::string        path = section + entry;
+      std::vector<std::string> given(model.buildings.size());
       for (const std::string &text : entries)
         {
           const FloorEntry   e     = floor_entry(input, path, text);
           const unsigned int b     = building_of(input, path, model, e.building);
+          if (!given[b].empty())
+            input.fail(path, "building '" + model.buildings[b].name + "' is given twice ('" +
+                               given[b] + "' and '" + trimmed(text) + "'): give it once");
+          given[b] = trimmed(text);
           const auto        &floor = model.buildings[b].floors;
           if (!e.uniform && e.values.size() != floor.size())
             input.fail(path, "building '" + model.buildings[b].name + "' has " +
@@ -123,6 +137,7 @@ namespace poundfe
                   const std::vector<std::string> &entries, Vector &x)
     {
       const std::string path = section + entry;
+      std::vector<bool> given(model.n_equations(), false);
       for (const std::string &text : entries)
         {
           const auto [index, value] = equation_entry(input, path, text);
@@ -130,7 +145,11 @@ namespace poundfe
             input.fail(path, "there is no equation " + std::to_string(index) +
                                ": the model has " + std::to_string(model.n_equations()) +
                                " (numbered from 0)");
-          x[index] = value;
+          if (given[index])
+            input.fail(path, "equation " + std::to_string(index) +
+                               " is given twice: give it once");
+          given[index] = true;
+          x[index]     = value;
         }
     }
   } // namespace
@@ -173,6 +192,8 @@ namespace poundfe
     for (const double x : state)
       if (!std::isfinite(x))
         input.fail(section + "State", "every value must be finite, got " + number_text(x));
+      else
+        input.at_most(section + "State", x, largest_initial_value, "", initial_value_why);
     if (!state.empty() && !(floor_displacements.empty() && floor_velocities.empty() &&
                             equation_displacements.empty() && equation_velocities.empty()))
       input.fail(section + "State",

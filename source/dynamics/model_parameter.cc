@@ -1625,8 +1625,15 @@ namespace poundfe
     const bool  indexed = std::regex_match(path, match, with_entry);
     if (indexed)
       {
-        entry   = match[1];
-        p.entry = std::stoi(match[2]) - 1;
+        entry = match[1];
+        // no list holds more than an int's worth of entries (parse_count
+        // instead of std::stoi, whose overflow says only "stoi")
+        const std::optional<unsigned long> index =
+          parse_count(match[2].str(), std::numeric_limits<int>::max());
+        if (!index)
+          throw std::invalid_argument("'" + path + "': the index " + match[2].str() +
+                                      " is out of range (entries count from 1)");
+        p.entry = static_cast<int>(*index) - 1;
         if (p.entry < 0)
           throw std::invalid_argument("'" + path + "': entries count from 1");
       }

@@ -195,8 +195,11 @@ namespace poundfe
                       "first horizontal one's (2/3: Newmark, Blume & Kapur 1973; EC8 Table 3.4 "
                       "gives a_vg/a_g = 0.90 for type 1 and 0.45 for type 2 spectra). "
                       "Unit: dimensionless.");
+    // an explicit range: deal.II's pattern for unsigned int has none, and
+    // "-5" would be read as 4294967291
     prm.add_parameter("Realization", realization,
-                      "Realization index: (seed, index) fixes the sample. Unit: -.");
+                      "Realization index: (seed, index) fixes the sample. Unit: -.",
+                      dealii::Patterns::Integer(0));
     add_choice(prm, "Envelope", envelope,
                "Amplitude modulation: Jennings et al. (1968) trapezoid, Saragoni-Hart "
                "t^b e^(-ct), Shinozuka-Sato e^(-at) - e^(-bt), or none. Unit: -.",

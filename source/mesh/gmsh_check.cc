@@ -10,11 +10,13 @@
 #include <array>
 #include <charconv>
 #include <climits>
+#include <map>
 #include <optional>
 #include <set>
 #include <string_view>
 #include <unordered_set>
 #include <utility>
+#include <vector>
 
 namespace poundfe
 {
@@ -242,22 +244,39 @@ namespace poundfe
         in.fail(in.line(), "expected $Nodes, got '" + std::string(section.substr(0, 40)) + "'");
     }
 
+    /// The next three tokens as a node's coordinates; a second node at the
+    /// point of an earlier one is refused: deal.II keeps both, so the
+    /// members at one of them are not joined to those at the other (a
+    /// member left hanging, a mechanism or a wrong frame).
+    void
+    read_node_point(MshTokens &in, const long tag, std::map<std::array<double, 3>, long> &points)
+    {
+      std::array<double, 3> x{};
+      for (double &c : x)
+        c = in.real("a node coordinate");
+      const auto [earlier, is_new] = points.emplace(x, tag);
+      if (!is_new)
+        in.fail(in.line(), "nodes " + std::to_string(earlier->second) + " and " +
+                             std::to_string(tag) + " are at one point (" + number_text(x[0]) +
+                             ", " + number_text(x[1]) + ", " + number_text(x[2]) +
+                             "): the members at one are not joined to those at the other; "
+                             "merge them (Gmsh: Geometry.AutoCoherence, or Coherence Mesh)");
+    }
+
     /// $Nodes' content and $EndNodes; returns the node tags.
     std::unordered_set<long>
     read_nodes(MshTokens &in, const int format)
     {
-      std::unordered_set<long> tags;
-      const auto               add = [&](const long tag) {
+      std::unordered_set<long>              tags;
+      std::map<std::array<double, 3>, long> points;
+      const auto                            add = [&](const long tag) {
         if (!tags.insert(tag).second)
           in.fail(in.line(), "node " + std::to_string(tag) + " is given twice");
+        return tag;
       };
       if (format == 22)
         for (unsigned long n = in.count("nodes", 4); n > 0; --n)
-          {
-            add(in.integer("a node tag", 1, most_int));
-            for (unsigned int c = 0; c < 3; ++c)
-              in.real("a node coordinate");
-          }
+          read_node_point(in, add(in.integer("a node tag", 1, most_int)), points);
       else
         {
           const auto [n_blocks, n] = read_blocks_line(in, "node", 4);
@@ -271,10 +290,11 @@ namespace poundfe
                                    "(Mesh.SaveParametric = 0)");
               const unsigned long m = in.count("nodes of a block", 4);
               add_block(in, "node", m, given, n);
-              for (unsigned long i = 0; i < m; ++i)
-                add(in.integer("a node tag", 1, most_int));
-              for (unsigned long i = 0; i < 3 * m; ++i)
-                in.real("a node coordinate");
+              std::vector<long> block(m);
+              for (long &tag : block)
+                tag = add(in.integer("a node tag", 1, most_int));
+              for (const long tag : block)
+                read_node_point(in, tag, points);
             }
           check_blocks_total(in, "node", given, n);
         }

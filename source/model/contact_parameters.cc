@@ -92,6 +92,11 @@ namespace poundfe
     if (law == "none")
       return;
     input.positive("Contact/Stiffness", stiffness);
+    // the links' bound (model/building_links.cc): Newton squares the force
+    input.at_most("Contact/Stiffness", stiffness, largest_model_value, "",
+                  "beyond any physical contact");
+    input.at_most("Contact/Damping", damping, largest_model_value, "",
+                  "beyond any physical contact");
     if (!(restitution > 0 && restitution <= 1))
       input.fail("Contact/Coefficient of restitution",
                  "must lie in (0, 1], got " + number_text(restitution));

@@ -112,7 +112,13 @@ namespace poundfe
         compute_planar_impedance();
         return;
       }
-    input.positive(s + "Shear-wave velocity", soil.shear_wave_velocity);
+    if (!(soil.shear_wave_velocity >= smallest_shear_wave_velocity &&
+          soil.shear_wave_velocity <= largest_shear_wave_velocity))
+      input.fail(s + "Shear-wave velocity",
+                 "must lie in [" + number_text(smallest_shear_wave_velocity) + ", " +
+                   number_text(largest_shear_wave_velocity) + "] m/s (the softest peats have "
+                   "about 30 m/s, hard rock below 4000 m/s), got " +
+                   number_text(soil.shear_wave_velocity));
     input.positive(s + "Soil density", soil.density);
     if (!(soil.poisson_ratio > 0 && soil.poisson_ratio < 0.5))
       input.fail(s + "Poisson ratio",

@@ -112,6 +112,9 @@ namespace poundfe
       input.list(s + entry, *values, n, true, "one per storey");
     if (n_bays_y > 0)
       input.list(s + "Bay widths y", bay_widths_y, n_bays_y, false, "one per bay");
+    for (const double w : bay_widths_y)
+      input.at_most(s + "Bay widths y", w, largest_building_length, "m",
+                    "10 km is beyond any building");
     if (n_bays_y == 0 && diaphragm == "rigid")
       input.fail(s + "Number of bays y",
                  "all columns stand on one line along x: a rigid diaphragm on them is "

@@ -105,6 +105,9 @@ namespace poundfe
     if (bumper.law != BumperLaw::table)
       {
         input.positive("Bumpers/Stiffness", bumper.stiffness);
+        // the links' bound (model/building_links.cc): Newton squares the force
+        input.at_most("Bumpers/Stiffness", bumper.stiffness, largest_model_value, "",
+                      "beyond any physical bumper");
         return;
       }
     bumper.table.clear();

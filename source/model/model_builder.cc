@@ -606,6 +606,50 @@ namespace poundfe
         return {p.plan.position[0], p.plan.position[1]};
       return {left + plan_half_width(p), 0.0};
     }
+
+    /// The largest coordinate in size of the points a gap is measured from.
+    double
+    gap_coordinate_scale(const Model &model, const Gap &gap)
+    {
+      double scale = 0;
+      const auto take = [&scale](const Point2 &p) {
+        scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
+      };
+      for (const int node : gap.nodes)
+        if (node >= 0)
+          take(model.nodes[node].position);
+      if (gap.in_plan)
+        for (const auto &edge : gap.plan.edges)
+          for (const Point2 &p : edge)
+            take(p);
+      return scale;
+    }
+
+    /// A gap narrower than a million steps of a double at the coordinates
+    /// it is measured from is lost in their rounding: the contact would see
+    /// closures that are not there (phantom impacts of meganewtons).
+    void
+    check_gaps_resolved(const Model &model, const ModelParameters &parameters,
+                        const InputFile &input)
+    {
+      for (const Gap &gap : model.gaps)
+        {
+          const double scale = gap_coordinate_scale(model, gap);
+          const double step  = std::nextafter(scale, 2 * scale + 1) - scale;
+          if (!(gap.initial_gap > 0 && gap.initial_gap < fewest_gap_ulps * step))
+            continue;
+          const unsigned int b    = gap.buildings[1];
+          const std::string  path = model.dimension == 3 && !parameters.buildings[b].plan.position.empty() ?
+                                      "Building " + std::to_string(b + 1) + "/Plan/Position" :
+                                      "Model/Separations";
+          input.fail(path, "the gap " + gap.label + " of " + number_text(gap.initial_gap) +
+                             " m, at coordinates up to " + number_text(scale) +
+                             " m, is below a million steps of a double there (" +
+                             number_text(fewest_gap_ulps * step) +
+                             " m): rounding would open or close it; place the site's "
+                             "origin near the buildings");
+        }
+    }
   } // namespace
 
   Model
@@ -677,6 +721,7 @@ namespace poundfe
     if (model.dimension == 3)
       check_plans_apart(model, parameters, input);
     add_contact(model, parameters, contact, input);
+    check_gaps_resolved(model, parameters, input);
     model.number_equations();
     add_springs(model, springs, input);
     check_storeys_held(model, input);

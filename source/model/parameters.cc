@@ -31,6 +31,89 @@ namespace poundfe
           input.fail(bw + name, "the bidirectional Bouc-Wen law has no degradation: must be 0" +
                                   why);
     }
+
+    /// Counts beyond any building: the model of a billion storeys would ask
+    /// for more memory than a machine has, long after the file was read.
+    constexpr unsigned int largest_storey_count = 100000;
+    constexpr unsigned int largest_bay_count    = 10000;
+
+    /// The counts of a generated frame or a shear building, before the
+    /// lists are sized by them.
+    void
+    check_building_sizes(const InputFile &input, const std::string &s,
+                         const BuildingParameters &p)
+    {
+      if (p.n_storeys > largest_storey_count)
+        input.fail(s + "Number of storeys",
+                   "got " + std::to_string(p.n_storeys) + ", at most " +
+                     std::to_string(largest_storey_count) +
+                     " (beyond any building; the model would not fit in memory)");
+      if (p.type == BuildingType::frame && p.n_bays > largest_bay_count)
+        input.fail(s + "Number of bays", "got " + std::to_string(p.n_bays) + ", at most " +
+                                           std::to_string(largest_bay_count) +
+                                           " (beyond any building; the model would not fit "
+                                           "in memory)");
+    }
+
+    /// The lengths of a generated frame or a shear building, once each is
+    /// known to be positive.
+    void
+    check_building_lengths(const InputFile &input, const std::string &s,
+                           const BuildingParameters &p)
+    {
+      const std::string why = "10 km is beyond any building";
+      for (const double h : p.storey_heights)
+        input.at_most(s + "Storey heights", h, largest_building_length, "m", why);
+      if (p.type == BuildingType::frame)
+        for (const double w : p.bay_widths)
+          input.at_most(s + "Bay widths", w, largest_building_length, "m", why);
+    }
+
+    /// The entries of a building that act only with Model/Dimension = 3
+    /// ([3D] in their documentation), besides all of Plan/.
+    bool
+    is_3d_entry(const std::string &entry)
+    {
+      static const std::vector<std::string> entries{
+        "Number of bays y", "Bay widths y", "Column G", "Column Iz", "Column J", "Column angle",
+        "Beam G", "Beam Iz", "Beam J", "Column Avz", "Column Avy", "Beam Avz", "Beam Avy",
+        "Diaphragm", "Group G", "Group Iz", "Group J", "Group orientation",
+        "Hinges/Biaxial interaction", "Foundation/Horizontal stiffness y",
+        "Foundation/Horizontal damping y", "Foundation/Rocking stiffness x",
+        "Foundation/Rocking damping x", "Foundation/Torsional stiffness",
+        "Foundation/Torsional damping", "Foundation/Rotary inertia x",
+        "Foundation/Polar inertia"};
+      return entry.rfind("Plan/", 0) == 0 ||
+             std::find(entries.begin(), entries.end(), entry) != entries.end();
+    }
+
+    /// A planar model would ignore a [3D] entry: the user meant a 3D model
+    /// or a different entry, and either way the results would not be what
+    /// the file says.
+    void
+    refuse_3d_entries(const InputFile &input, const std::string &s, const BuildingParameters &p)
+    {
+      const std::string why = "acts only with Model/Dimension = 3, and the model is planar "
+                              "(Dimension = 2): remove it or set Model/Dimension = 3";
+      for (const auto &[path, line] : input.lines)
+        if (path.rfind(s, 0) == 0 && is_3d_entry(path.substr(s.size())))
+          input.fail(path, why);
+      // a JSON file has no line index: its Plan values against the defaults
+      const PlanParameters defaults;
+      const PlanParameters &plan = p.plan;
+      using Entry                = std::pair<const char *, bool>;
+      for (const auto &[entry, given] :
+           {Entry{"Plan dimensions", plan.dimensions != defaults.dimensions},
+            Entry{"Position", plan.position != defaults.position},
+            Entry{"Rotation", plan.rotation != defaults.rotation},
+            Entry{"Polar moments", plan.polar_moments != defaults.polar_moments},
+            Entry{"Mass eccentricity", plan.mass_eccentricity != defaults.mass_eccentricity},
+            Entry{"Accidental eccentricity", plan.accidental != defaults.accidental},
+            Entry{"Resisting planes", plan.planes_text != defaults.planes_text},
+            Entry{"Storey law", plan.storey_law != defaults.storey_law}})
+        if (given)
+          input.fail(s + "Plan/" + entry, why);
+    }
   } // namespace
 
   const NameTable<BuildingType> &
@@ -298,6 +381,7 @@ namespace poundfe
     const unsigned int n = n_storeys;
     if (type == BuildingType::frame || type == BuildingType::shear)
       {
+        check_building_sizes(input, s, *this);
         input.list(s + "Storey heights", storey_heights, n, false, "one per storey");
         input.list(s + "Floor masses", floor_masses, n, false, "one per floor");
       }
@@ -315,6 +399,8 @@ namespace poundfe
         input.list(s + "Beam mass per length", beam_mass_per_length, n, true,
                "one per floor");
       }
+    if (type == BuildingType::frame || type == BuildingType::shear)
+      check_building_lengths(input, s, *this);
     if (type == BuildingType::shear)
       {
         input.list(s + "Storey stiffnesses", storey_stiffnesses, n, true, "one per storey");
@@ -449,6 +535,8 @@ namespace poundfe
                                    buildings[b].type == BuildingType::mesh ?
                                      buildings[b].plan.polar_moments.size() :
                                      buildings[b].n_storeys);
+        if (buildings[b].type != BuildingType::mesh) // a mesh's slab is its floor's outline
+          buildings[b].plan.check_mass_on_slab(input, s);
         if (buildings[b].plan.storey_law != "planes" || buildings[b].hinge_biaxial)
           check_bidirectional_bouc_wen(input, s + "Bouc-Wen/", buildings[b].hysteresis);
         buildings[b].foundation.finalize_3d(input, s);
@@ -519,6 +607,9 @@ namespace poundfe
                    "set-backs are for 3D frames (Model/Dimension = 3, Type = frame)");
     if (dimension == 3)
       finalize_plan(input);
+    else
+      for (unsigned int b = 0; b < buildings.size(); ++b)
+        refuse_3d_entries(input, "Building " + std::to_string(b + 1) + "/", buildings[b]);
     if (buildings.size() > 1)
       input.list("Model/Separations", separations, buildings.size() - 1, true,
                  "one per neighbouring pair");

@@ -99,10 +99,20 @@ namespace poundfe
     const std::string s = section + "Plan/";
     if (dimensions.size() != 2)
       input.fail(s + "Plan dimensions", "needs two values, L_x and L_y");
-    input.positive(s + "Plan dimensions", dimensions[0]);
-    input.positive(s + "Plan dimensions", dimensions[1]);
+    const std::string building = "10 km is beyond any building";
+    for (const double length : dimensions)
+      {
+        input.positive(s + "Plan dimensions", length);
+        input.at_most(s + "Plan dimensions", length, largest_building_length, "m", building);
+      }
     if (!position.empty() && position.size() != 2)
       input.fail(s + "Position", "needs two values, x and y, or none");
+    for (const double x : position)
+      input.at_most(s + "Position", x, largest_site_coordinate, "m",
+                    "site coordinates, e.g. UTM, stay below it: place the origin near the "
+                    "buildings");
+    // cos and sin of a huge angle in radians keep none of its digits
+    input.at_most(s + "Rotation", rotation, 360, "degrees", "one turn");
     if (mass_eccentricity.size() != 2)
       input.fail(s + "Mass eccentricity", "needs two values, e_x and e_y");
     if (!polar_moments.empty())
@@ -111,5 +121,19 @@ namespace poundfe
       input.fail(s + "Accidental eccentricity ratio",
                  "must lie in [0, 0.5), got " + number_text(accidental_ratio));
     planes = parse_planes(input, s + "Resisting planes", planes_text);
+  }
+
+  void
+  PlanParameters::check_mass_on_slab(const InputFile &input, const std::string &section) const
+  {
+    // the mass centre of a floor lies on its slab: beyond the edge the
+    // floor would be a lever, not a diaphragm with its mass
+    for (unsigned int i = 0; i < 2; ++i)
+      if (!(std::abs(mass_eccentricity[i]) <= 0.5 * dimensions[i]))
+        input.fail(section + "Plan/Mass eccentricity",
+                   std::string(i == 0 ? "e_x = " : "e_y = ") + number_text(mass_eccentricity[i]) +
+                     " m puts the mass centre outside the slab (|e| <= L/2 = " +
+                     number_text(0.5 * dimensions[i]) + " m, Plan dimensions " +
+                     number_text(dimensions[0]) + " x " + number_text(dimensions[1]) + " m)");
   }
 } // namespace poundfe

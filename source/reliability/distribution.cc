@@ -1,4 +1,5 @@
 // Equations and sources: include/poundfe/reliability/distribution.h.
+#include <poundfe/base/numbers.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/reliability/distribution.h>
 
@@ -144,6 +145,13 @@ namespace poundfe
   {
     require(std::isfinite(mean) && std::isfinite(sd), "the mean and the standard deviation must "
                                                       "be finite numbers");
+    // the mean first: a COV times a mean of 0 gives sd = 0, whose message
+    // would blame the standard deviation for the mean
+    if (type == DistributionType::lognormal || type == DistributionType::weibull)
+      require(mean > 0, std::string("a ") +
+                          (type == DistributionType::lognormal ? "lognormal" : "Weibull") +
+                          " mean must be > 0 (its values are positive), got " +
+                          number_text(mean));
     require(sd > 0, "the standard deviation must be > 0");
     switch (type)
       {

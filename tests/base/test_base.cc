@@ -72,6 +72,22 @@ BOOST_AUTO_TEST_CASE(progress_prints_only_when_shown)
   unsetenv("POUNDFE_PROGRESS");
 }
 
+// A shell without job control starts a background job with SIGINT ignored:
+// the handler is installed all the same (no signal is raised here, so the
+// next case still sees none).
+BOOST_AUTO_TEST_CASE(a_signal_ignored_at_start_is_caught_too)
+{
+  struct sigaction ignore = {};
+  ignore.sa_handler       = SIG_IGN;
+  sigemptyset(&ignore.sa_mask);
+  sigaction(SIGINT, &ignore, nullptr);
+  install_interruption_handlers();
+  struct sigaction now = {};
+  sigaction(SIGINT, nullptr, &now);
+  BOOST_TEST((now.sa_handler != SIG_IGN && now.sa_handler != SIG_DFL));
+  BOOST_TEST(!interruption_requested());
+}
+
 BOOST_AUTO_TEST_CASE(the_first_signal_sets_the_flag_the_second_kills)
 {
   install_interruption_handlers();

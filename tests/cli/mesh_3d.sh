@@ -6,7 +6,8 @@
 #     the mesh frame's column-base hinges report; the VTU series is written;
 #     the energy balance closes to 1e-6;
 #  2. the same mesh written by Gmsh 4.1 gives the same modes as the 2.2 file;
-#  3. hostile input: a 2D mesh with Dimension = 3, a member of zero length,
+#  3. hostile input: a 2D mesh with Dimension = 3, a member of zero length
+#     (its two nodes at one point),
 #     a physical id not in Group ids, an orientation along a member, a mesh
 #     without horizontal members: exit 1, one line naming the file, line and
 #     entry, nothing written.
@@ -66,7 +67,7 @@ msh zero.msh "1 0 0 0
 4 6 0 3" "1 2 1
 2 3 2
 3 4 1"
-bad "s|= frame.msh|= zero.msh|" "bad.prm:15: parameter 'Building 1/Mesh file': zero.msh: line element 3 (physical id 1) has zero length"
+bad "s|= frame.msh|= zero.msh|" "bad.prm:15: parameter 'Building 1/Mesh file': zero.msh:9: Gmsh mesh: nodes 3 and 4 are at one point (6, 0, 3)"
 bad "s|set Group ids             = 1, 2|set Group ids = 1, 3|" \
   "bad.prm:16: parameter 'Building 1/Group ids': the mesh frame.msh uses physical id 2 (line element 17), which is not listed"
 bad "s|set Floor masses          = 8e4, 6e4|set Floor masses = 8e4, 6e4\n  set Group orientation = 0 0 1; 0 0 1|" \

@@ -42,6 +42,10 @@ namespace poundfe
     [[noreturn]] void fail(const std::string &path, const std::string &problem) const;
     void positive(const std::string &path, double value) const;
     void non_negative(const std::string &path, double value) const;
+    /// |value| <= bound, else an InputError that says why the bound is
+    /// there (`why`: what lies beyond it, e.g. "beyond any building").
+    void at_most(const std::string &path, double value, double bound, const std::string &unit,
+                 const std::string &why) const;
     /// One value for all or n values, each positive (or >= 0 with allow_zero).
     void list(const std::string &path, const std::vector<double> &values, std::size_t n,
               bool allow_zero, const std::string &what) const;

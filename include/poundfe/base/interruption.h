@@ -32,10 +32,11 @@ namespace poundfe
   };
 
   /// Catches the first SIGINT or SIGTERM (the handler then restores the
-  /// default action of both). A signal ignored at start-up (e.g. SIGINT in a
-  /// background job of a script) stays ignored. Called again (after
+  /// default action of both), also where the signal was ignored at start-up
+  /// (SIGINT in a background job of a script without job control): every
+  /// command stops alike however it was started. Called again (after
   /// MPI_Init, whose PETSc installs handlers of its own), it installs the
-  /// handler again for the signals of the first call, unless one came.
+  /// handler again, unless a signal came.
   void install_interruption_handlers();
 
   /// Whether SIGINT or SIGTERM has arrived, or request_stop() was called.

@@ -25,6 +25,20 @@ namespace poundfe
   /// problem or a NaN in Newton); no structure comes near it.
   inline constexpr double largest_model_value = 1e150;
 
+  /// The largest length of a building's part (a storey height, a bay
+  /// width, a slab side): 10 km is beyond any building, and a model's
+  /// coordinates, lengths cubed and areas stay far from overflow below it.
+  inline constexpr double largest_building_length = 1e4;
+
+  /// The largest coordinate of a building's plan position on the site:
+  /// site coordinates (e.g. UTM northings, below 1e7 m) stay below it.
+  inline constexpr double largest_site_coordinate = 1e7;
+
+  /// The fewest steps of a double (ulps) of the largest coordinate that a
+  /// gap between buildings must span: below that, rounding the positions
+  /// closes or opens the gap by a visible fraction of it.
+  inline constexpr double fewest_gap_ulps = 1e6;
+
   enum class Exponent
   {
     e,         // 1.5e-3

@@ -23,6 +23,12 @@ namespace dealii
 
 namespace poundfe
 {
+  /// The soils' shear-wave velocities a foundation may stand on, m/s: below
+  /// 1 m/s the impedances (rho V_s^2 ...) are no soil's and underflow for a
+  /// typo like 1e-300; above 10 km/s no rock.
+  inline constexpr double smallest_shear_wave_velocity = 1;
+  inline constexpr double largest_shear_wave_velocity  = 1e4;
+
   enum class FoundationType
   {
     none,

@@ -50,6 +50,9 @@ namespace poundfe
     /// Check the entries of `<section>Plan/` for a building of n_floors.
     /// Throws InputError.
     void finalize(const InputFile &input, const std::string &section, unsigned int n_floors);
+    /// The mass eccentricity within the slab rectangle (Plan dimensions:
+    /// shear buildings' slabs and 3D frames' column grids).
+    void check_mass_on_slab(const InputFile &input, const std::string &section) const;
   };
 } // namespace poundfe
 
