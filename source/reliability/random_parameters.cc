@@ -77,14 +77,18 @@ namespace poundfe
         }
     }
 
-    /// Whether `a` and `b` write into the same value of the model: the same
-    /// kind of entry of the same building, list and field, on the same
-    /// storey (or member, entry) or on every one.
+    /// Whether `later` writes into every value of the model that `earlier`
+    /// writes (the variables act in their order): the same kind of entry of
+    /// the same building, list and field, on the same storey (or member,
+    /// entry) or, `later`, on every one. A variable of a whole list followed
+    /// by one of its entries is not: both act, the entry overriding the list
+    /// there.
     bool
-    same_model_entry(const ModelParameter &a, const ModelParameter &b)
+    overwrites(const ModelParameter &later, const ModelParameter &earlier)
     {
+      const ModelParameter &a = later, &b = earlier;
       return a.kind == b.kind && a.building == b.building &&
-             (a.entry == b.entry || a.entry < 0 || b.entry < 0) &&
+             (a.entry == b.entry || a.entry < 0) &&
              a.member_kind == b.member_kind && a.section == b.section && a.shape == b.shape &&
              a.section_3d == b.section_3d && a.group == b.group && a.friction == b.friction &&
              a.foundation == b.foundation && a.list == b.list && a.link_field == b.link_field &&
@@ -95,8 +99,8 @@ namespace poundfe
     /// InputError at Random parameters/Variables for a variable whose name
     /// a column of realizations.csv has already (a limit state would read
     /// one of the two for the other), or whose path writes into the value
-    /// of an earlier variable (only the last would act, while both would be
-    /// written as sampled).
+    /// of an earlier variable entirely (only the last would act, while both
+    /// would be written as sampled).
     void
     refuse_shadowed_variables(const RandomParameterParameters   &p,
                               const std::vector<ModelParameter> &parameters,
@@ -113,11 +117,13 @@ namespace poundfe
                        "variable '" + p.names[i] + "' has the name of a response column of "
                        "realizations.csv (a limit state could not tell them apart): rename it");
           for (unsigned int j = 0; j < i; ++j)
-            if (same_model_entry(parameters[i], parameters[j]))
+            if (overwrites(parameters[i], parameters[j]))
               input.fail(section + "Variables",
                          "variables '" + p.names[j] + "' (" + p.paths[j] + ") and '" +
-                           p.names[i] + "' (" + p.paths[i] +
-                           ") set the same model value: only one of them would act");
+                           p.names[i] + "' (" + p.paths[i] + ") set the same model value: '" +
+                           p.names[i] + "' writes over every value of '" + p.names[j] +
+                           "', so only it would act (a whole list may come first and one "
+                           "of its entries after it, overriding that entry)");
         }
     }
 
