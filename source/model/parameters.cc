@@ -372,105 +372,132 @@ namespace poundfe
     foundation.declare(prm);
   }
 
+  namespace
+  {
+    /// The members' lists of a frame, shear or mesh building: one value per
+    /// storey, floor, bay or group id.
+    void
+    finalize_building_members(const InputFile &input, const std::string &s, BuildingParameters &b)
+    {
+      const unsigned int n = b.n_storeys;
+      if (b.type == BuildingType::frame || b.type == BuildingType::shear)
+        {
+          check_building_sizes(input, s, b);
+          input.list(s + "Storey heights", b.storey_heights, n, false, "one per storey");
+          input.list(s + "Floor masses", b.floor_masses, n, false, "one per floor");
+        }
+      if (b.type == BuildingType::frame)
+        {
+          input.list(s + "Bay widths", b.bay_widths, b.n_bays, false, "one per bay");
+          input.list(s + "Column E", b.column_youngs_modulus, n, false, "one per storey");
+          input.list(s + "Column A", b.column_area, n, false, "one per storey");
+          input.list(s + "Column I", b.column_second_moment, n, false, "one per storey");
+          input.list(s + "Beam E", b.beam_youngs_modulus, n, false, "one per floor");
+          input.list(s + "Beam A", b.beam_area, n, false, "one per floor");
+          input.list(s + "Beam I", b.beam_second_moment, n, false, "one per floor");
+          input.list(s + "Column mass per length", b.column_mass_per_length, n, true,
+                 "one per storey");
+          input.list(s + "Beam mass per length", b.beam_mass_per_length, n, true,
+                 "one per floor");
+        }
+      if (b.type == BuildingType::frame || b.type == BuildingType::shear)
+        check_building_lengths(input, s, b);
+      if (b.type == BuildingType::shear)
+        {
+          input.list(s + "Storey stiffnesses", b.storey_stiffnesses, n, true, "one per storey");
+          input.list(s + "Storey damping", b.storey_damping, n, true, "one per storey");
+          input.non_negative(s + "Drawing width", b.drawing_width);
+        }
+      if (b.type == BuildingType::mesh)
+        {
+          if (b.mesh_file.empty())
+            input.fail(s + "Mesh file", "a mesh building needs a mesh file");
+          const std::size_t g = b.group_ids.size();
+          input.list(s + "Group E", b.group_youngs_modulus, g, false, "one per group id");
+          input.list(s + "Group A", b.group_area, g, false, "one per group id");
+          input.list(s + "Group I", b.group_second_moment, g, false, "one per group id");
+          input.list(s + "Group mass per length", b.group_mass_per_length, g, true,
+                 "one per group id");
+          for (const double m : b.floor_masses)
+            input.non_negative(s + "Floor masses", m);
+        }
+    }
+
+    /// The hinges or hysteretic storeys and their Bouc-Wen shape.
+    void
+    finalize_building_hysteresis(const InputFile &input, const std::string &s, BuildingParameters &b)
+    {
+      const unsigned int n = b.n_storeys;
+      const std::size_t n_groups = std::max<std::size_t>(1, b.hinge_groups.size());
+      if (b.type != BuildingType::shear && !b.hinge_locations.empty())
+        {
+          input.list(s + "Hinges/Yield moment", b.hinge_yield_moments, n_groups, true,
+                 "one per hinge group");
+          input.list(s + "Hinges/Yield rotation", b.hinge_yield_rotations, n_groups, true,
+                 "one per hinge group");
+          input.list(s + "Hinges/Stiffness", b.hinge_stiffnesses, n_groups, true,
+                 "one per hinge group");
+          input.positive(s + "Hinges/Stiffness factor", b.hinge_stiffness_factor);
+          for (std::size_t g = 0; g < n_groups; ++g)
+            if (b.hinge_yield_moments[b.hinge_yield_moments.size() == 1 ? 0 : g] == 0 &&
+                b.hinge_yield_rotations[b.hinge_yield_rotations.size() == 1 ? 0 : g] == 0)
+              input.fail(s + "Hinges/Yield moment",
+                     "hinges need a yield moment or a yield rotation (both are 0)");
+        }
+      if (b.type == BuildingType::shear && !b.storey_yield_drifts.empty())
+        input.list(s + "Storey yield drifts", b.storey_yield_drifts, n, true, "one per storey");
+      const bool hysteretic = (b.type != BuildingType::shear && !b.hinge_locations.empty()) ||
+                              (b.type == BuildingType::shear && !b.storey_yield_drifts.empty());
+      if (hysteretic)
+        {
+          const BoucWenParameters &h  = b.hysteresis;
+          const std::string        bw = s + "Bouc-Wen/";
+          if (!(h.alpha >= 0 && h.alpha <= 1))
+            input.fail(bw + "alpha", "must lie in [0, 1], got " + number_text(h.alpha));
+          input.positive(bw + "A", h.A);
+          if (!(h.n >= 1) || !std::isfinite(h.n))
+            input.fail(bw + "n", "must be >= 1, got " + number_text(h.n));
+          if (!(h.beta + h.gamma > 0))
+            input.fail(bw + "beta", "beta + gamma must be positive (|z| stays bounded)");
+          if (!(h.beta >= std::abs(h.gamma)) && !(h.gamma >= std::abs(h.beta)))
+            input.fail(bw + "gamma", "needs beta >= |gamma| or gamma >= |beta|");
+          input.non_negative(bw + "delta A", h.delta_A);
+          input.non_negative(bw + "delta nu", h.delta_nu);
+          input.non_negative(bw + "delta eta", h.delta_eta);
+        }
+    }
+
+    /// Rayleigh damping from two modes or from given coefficients.
+    void
+    finalize_building_damping(const InputFile &input, const std::string &s, BuildingParameters &b)
+    {
+      if (b.damping_type == RayleighDamping::Kind::modes)
+        {
+          if (!(b.damping_ratio >= 0 && b.damping_ratio < 1))
+            input.fail(s + "Damping/Damping ratio",
+                   "must lie in [0, 1), got " + number_text(b.damping_ratio));
+          if (b.damping_modes.size() != 2 || b.damping_modes[0] < 1 ||
+              b.damping_modes[1] < 1 || b.damping_modes[0] == b.damping_modes[1])
+            input.fail(s + "Damping/Modes", "needs two different mode numbers >= 1");
+        }
+      if (b.damping_type == RayleighDamping::Kind::coefficients)
+        {
+          input.non_negative(s + "Damping/a0", b.rayleigh_a0);
+          input.non_negative(s + "Damping/a1", b.rayleigh_a1);
+        }
+    }
+
+  } // namespace
+
   void
   BuildingParameters::finalize(const InputFile &input, const unsigned int number)
   {
     if (name.empty())
       name = "B" + std::to_string(number);
-    const std::string  s = "Building " + std::to_string(number) + "/";
-    const unsigned int n = n_storeys;
-    if (type == BuildingType::frame || type == BuildingType::shear)
-      {
-        check_building_sizes(input, s, *this);
-        input.list(s + "Storey heights", storey_heights, n, false, "one per storey");
-        input.list(s + "Floor masses", floor_masses, n, false, "one per floor");
-      }
-    if (type == BuildingType::frame)
-      {
-        input.list(s + "Bay widths", bay_widths, n_bays, false, "one per bay");
-        input.list(s + "Column E", column_youngs_modulus, n, false, "one per storey");
-        input.list(s + "Column A", column_area, n, false, "one per storey");
-        input.list(s + "Column I", column_second_moment, n, false, "one per storey");
-        input.list(s + "Beam E", beam_youngs_modulus, n, false, "one per floor");
-        input.list(s + "Beam A", beam_area, n, false, "one per floor");
-        input.list(s + "Beam I", beam_second_moment, n, false, "one per floor");
-        input.list(s + "Column mass per length", column_mass_per_length, n, true,
-               "one per storey");
-        input.list(s + "Beam mass per length", beam_mass_per_length, n, true,
-               "one per floor");
-      }
-    if (type == BuildingType::frame || type == BuildingType::shear)
-      check_building_lengths(input, s, *this);
-    if (type == BuildingType::shear)
-      {
-        input.list(s + "Storey stiffnesses", storey_stiffnesses, n, true, "one per storey");
-        input.list(s + "Storey damping", storey_damping, n, true, "one per storey");
-        input.non_negative(s + "Drawing width", drawing_width);
-      }
-    if (type == BuildingType::mesh)
-      {
-        if (mesh_file.empty())
-          input.fail(s + "Mesh file", "a mesh building needs a mesh file");
-        const std::size_t g = group_ids.size();
-        input.list(s + "Group E", group_youngs_modulus, g, false, "one per group id");
-        input.list(s + "Group A", group_area, g, false, "one per group id");
-        input.list(s + "Group I", group_second_moment, g, false, "one per group id");
-        input.list(s + "Group mass per length", group_mass_per_length, g, true,
-               "one per group id");
-        for (const double m : floor_masses)
-          input.non_negative(s + "Floor masses", m);
-      }
-    const std::size_t n_groups = std::max<std::size_t>(1, hinge_groups.size());
-    if (type != BuildingType::shear && !hinge_locations.empty())
-      {
-        input.list(s + "Hinges/Yield moment", hinge_yield_moments, n_groups, true,
-               "one per hinge group");
-        input.list(s + "Hinges/Yield rotation", hinge_yield_rotations, n_groups, true,
-               "one per hinge group");
-        input.list(s + "Hinges/Stiffness", hinge_stiffnesses, n_groups, true,
-               "one per hinge group");
-        input.positive(s + "Hinges/Stiffness factor", hinge_stiffness_factor);
-        for (std::size_t g = 0; g < n_groups; ++g)
-          if (hinge_yield_moments[hinge_yield_moments.size() == 1 ? 0 : g] == 0 &&
-              hinge_yield_rotations[hinge_yield_rotations.size() == 1 ? 0 : g] == 0)
-            input.fail(s + "Hinges/Yield moment",
-                   "hinges need a yield moment or a yield rotation (both are 0)");
-      }
-    if (type == BuildingType::shear && !storey_yield_drifts.empty())
-      input.list(s + "Storey yield drifts", storey_yield_drifts, n, true, "one per storey");
-    const bool hysteretic = (type != BuildingType::shear && !hinge_locations.empty()) ||
-                            (type == BuildingType::shear && !storey_yield_drifts.empty());
-    if (hysteretic)
-      {
-        const BoucWenParameters &h  = hysteresis;
-        const std::string        bw = s + "Bouc-Wen/";
-        if (!(h.alpha >= 0 && h.alpha <= 1))
-          input.fail(bw + "alpha", "must lie in [0, 1], got " + number_text(h.alpha));
-        input.positive(bw + "A", h.A);
-        if (!(h.n >= 1) || !std::isfinite(h.n))
-          input.fail(bw + "n", "must be >= 1, got " + number_text(h.n));
-        if (!(h.beta + h.gamma > 0))
-          input.fail(bw + "beta", "beta + gamma must be positive (|z| stays bounded)");
-        if (!(h.beta >= std::abs(h.gamma)) && !(h.gamma >= std::abs(h.beta)))
-          input.fail(bw + "gamma", "needs beta >= |gamma| or gamma >= |beta|");
-        input.non_negative(bw + "delta A", h.delta_A);
-        input.non_negative(bw + "delta nu", h.delta_nu);
-        input.non_negative(bw + "delta eta", h.delta_eta);
-      }
-    if (damping_type == RayleighDamping::Kind::modes)
-      {
-        if (!(damping_ratio >= 0 && damping_ratio < 1))
-          input.fail(s + "Damping/Damping ratio",
-                 "must lie in [0, 1), got " + number_text(damping_ratio));
-        if (damping_modes.size() != 2 || damping_modes[0] < 1 ||
-            damping_modes[1] < 1 || damping_modes[0] == damping_modes[1])
-          input.fail(s + "Damping/Modes", "needs two different mode numbers >= 1");
-      }
-    if (damping_type == RayleighDamping::Kind::coefficients)
-      {
-        input.non_negative(s + "Damping/a0", rayleigh_a0);
-        input.non_negative(s + "Damping/a1", rayleigh_a1);
-      }
+    const std::string s = "Building " + std::to_string(number) + "/";
+    finalize_building_members(input, s, *this);
+    finalize_building_hysteresis(input, s, *this);
+    finalize_building_damping(input, s, *this);
     finalize_modal_damping(input, s + "Damping/");
     foundation.finalize(input, s, type);
   }
