@@ -62,7 +62,7 @@
 #include <poundfe/dynamics/modal.h>
 #include <poundfe/reliability/montecarlo.h>
 #include <poundfe/dynamics/realization.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/input/bifurcation_input.h>

@@ -7,24 +7,24 @@ namespace poundfe
   // The entry point of each command, one file each in source/commands/.
   namespace commands
   {
-    int run(const CommandRun &);            // run.cc
-    int modal(const CommandRun &);          // modal.cc
-    int ground_motion(const CommandRun &);  // ground_motion.cc
-    int spectrum(const CommandRun &);       // spectrum.cc
-    int montecarlo(const CommandRun &);     // montecarlo.cc
-    int subset(const CommandRun &);         // subset.cc
-    int fragility(const CommandRun &);      // fragility.cc
-    int stationary_pdf(const CommandRun &); // stationary_pdf.cc
-    int sweep(const CommandRun &);          // sweep.cc
-    int bifurcation(const CommandRun &);    // bifurcation.cc
-    int site_hazard(const CommandRun &);    // site_hazard.cc
-    int separation(const CommandRun &);     // separation.cc
-    int reliability(const CommandRun &);    // reliability.cc
-    int dynamic_form(const CommandRun &);   // dynamic_form.cc
-    int mitigation(const CommandRun &);     // mitigation.cc
-    int switching(const CommandRun &);      // switching.cc
-    int print_parameters(const CommandRun &); // print_parameters.cc
-    int input_template(const CommandRun &); // template.cc
+    int run(const CommandRun &);            // run_command.cc
+    int modal(const CommandRun &);          // modal_command.cc
+    int ground_motion(const CommandRun &);  // ground_motion_command.cc
+    int spectrum(const CommandRun &);       // spectrum_command.cc
+    int montecarlo(const CommandRun &);     // montecarlo_command.cc
+    int subset(const CommandRun &);         // subset_command.cc
+    int fragility(const CommandRun &);      // fragility_command.cc
+    int stationary_pdf(const CommandRun &); // stationary_pdf_command.cc
+    int sweep(const CommandRun &);          // sweep_command.cc
+    int bifurcation(const CommandRun &);    // bifurcation_command.cc
+    int site_hazard(const CommandRun &);    // site_hazard_command.cc
+    int separation(const CommandRun &);     // separation_command.cc
+    int reliability(const CommandRun &);    // reliability_command.cc
+    int dynamic_form(const CommandRun &);   // dynamic_form_command.cc
+    int mitigation(const CommandRun &);     // mitigation_command.cc
+    int switching(const CommandRun &);      // switching_command.cc
+    int print_parameters(const CommandRun &); // print_parameters_command.cc
+    int input_template(const CommandRun &); // template_command.cc
   } // namespace commands
 
   const std::vector<Command> &

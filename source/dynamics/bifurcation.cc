@@ -8,9 +8,9 @@
 // both trajectories integrated through the discontinuities (cf. Müller
 // 1995, Chaos Solitons Fractals 5:1671-1681, for the variational route).
 // See dynamics/bifurcation.h and doc/theory.md §8.4. (Each value's input is
-// read in input/bifurcation_input.h; the command is commands/bifurcation.cc.)
+// read in input/bifurcation_input.h; the command is commands/bifurcation_command.cc.)
 #include <poundfe/dynamics/bifurcation.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/choices.h>
 #include <poundfe/base/exceptions.h>

@@ -1,6 +1,6 @@
 // The compiled part of the Python module `poundfe` (poundfe._core): the
 // errors as Python exceptions, the parameter file as an `Input` object and
-// the modal analysis. The time history and the commands are in run.cc; the
+// the modal analysis. The time history and the commands are in time_history_binding.cc; the
 // Pythonic layer (results as numpy arrays, the model builder) is in
 // source/python/poundfe/*.py.
 //

@@ -1,5 +1,5 @@
 // What the two translation units of poundfe._core share (module.cc: errors,
-// Input, modal; run.cc: time history, commands).
+// Input, modal; time_history_binding.cc: time history, commands).
 #ifndef poundfe_python_module_h
 #define poundfe_python_module_h
 

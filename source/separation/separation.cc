@@ -4,7 +4,7 @@
 #include <poundfe/reliability/montecarlo.h>
 #include <poundfe/hazard/pounding_hazard.h>
 #include <poundfe/dynamics/realization.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/separation/separation.h>
 #include <poundfe/separation/separation_spectrum.h>

@@ -9,7 +9,7 @@
 #include <poundfe/assembly/modal_damping.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 

@@ -4,7 +4,7 @@
 #define poundfe_tests_dynamics_time_history_helpers_h
 
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 

@@ -7,7 +7,7 @@
 // F = k delta^2: m v0^2 / 2 = k delta_max^3 / 3.
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>

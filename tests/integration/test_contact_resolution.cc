@@ -16,7 +16,7 @@
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/output/peak_response.h>
 

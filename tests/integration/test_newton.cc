@@ -5,7 +5,7 @@
 // of [u, u', z] written in this file; step cutting on a deliberately hard
 // case; the two tangent updates against each other.
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/integration/newmark.h>

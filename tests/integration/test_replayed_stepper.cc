@@ -11,7 +11,7 @@
 // not commit, or a sub-step missed or replayed twice, changes a Bouc-Wen z
 // and the impacts' times at O(1) of their size.
 #include <poundfe/assembly/nonlinear_elements.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/integration/newmark.h>

@@ -18,7 +18,7 @@
 //    columns, to the base shear; residual drift equals the last row of the
 //    drift recorder.
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/report/run_outputs.h>
 #include <poundfe/base/exceptions.h>

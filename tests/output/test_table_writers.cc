@@ -16,7 +16,7 @@
 // doubles (CSV: the shortest text that strtod reads back to the same
 // double; glibc's strtod rounds correctly), so any difference is a bug.
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/report/run_outputs.h>
 #include <poundfe/output/csv_writer.h>

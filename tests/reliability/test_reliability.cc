@@ -18,7 +18,7 @@
 #include <poundfe/reliability/montecarlo.h>
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/reliability/statistics.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/reliability/subset.h>
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/excitation/stochastic.h>

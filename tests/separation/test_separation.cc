@@ -18,7 +18,7 @@
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/realization.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/separation/separation.h>
 #include <poundfe/reliability/statistics.h>
 

@@ -13,7 +13,7 @@
 
 #include <poundfe/assembly/partition.h>
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/integration/newmark.h>
 

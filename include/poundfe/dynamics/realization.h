@@ -12,7 +12,7 @@
 #define poundfe_dynamics_realization_h
 
 #include <poundfe/dynamics/model_parameter.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/output/peak_response.h>
 

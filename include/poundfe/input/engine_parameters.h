@@ -5,7 +5,7 @@
 #define poundfe_input_engine_parameters_h
 
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/report/run_parameters.h>
 

@@ -1,6 +1,6 @@
 // One checked input per value of a parameter sweep (base/sweep_parameters.h):
 // read_parameters of the file with the override, so every value goes
-// through the checks the file does. `poundfe sweep` is commands/sweep.cc.
+// through the checks the file does. `poundfe sweep` is commands/sweep_command.cc.
 #ifndef poundfe_input_sweep_h
 #define poundfe_input_sweep_h
 

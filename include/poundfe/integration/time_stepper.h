@@ -1,4 +1,4 @@
-// What the time loop (dynamics/run.cc) and its observers need of a time
+// What the time loop (dynamics/time_history.cc) and its observers need of a time
 // integrator of M u'' + C u' + K u + f(u, u') = p(t): start from (u0, v0),
 // advance one analysis time step, and read the state, the energy balance,
 // the impact and stick-slip logs and the statistics. Two implement it:

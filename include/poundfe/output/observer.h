@@ -1,6 +1,6 @@
 // What watches a time history: observers of the accepted steps.
 //
-// The time loop (TimeHistory::run, dynamics/run.cc) advances the integrator
+// The time loop (TimeHistory::run, dynamics/time_history.cc) advances the integrator
 // one step at a time and, after each step, hands every observer the same
 // read-only ResponseView of the state: time, u, v, a (relative to the
 // ground), the ground acceleration, the nonlinear elements, and the

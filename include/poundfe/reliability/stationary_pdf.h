@@ -11,7 +11,7 @@
 //   and many give the same bytes. Densities: histogram, and the Gaussian
 //   kernel density of the binned data with Silverman's bandwidth; peaks
 //   above a threshold (density.h). With `Parameter` and `Values`
-//   (a SweepParameters, input/sweep.h) the command (commands/stationary_pdf.cc)
+//   (a SweepParameters, input/sweep.h) the command (commands/stationary_pdf_command.cc)
 //   makes it a P-bifurcation study: one such run per value, then the density of x and its peaks against the
 //   value. Theory: doc/theory.md §6.5.
 #ifndef poundfe_reliability_stationary_pdf_h

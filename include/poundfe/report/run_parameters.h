@@ -5,7 +5,7 @@
 #ifndef poundfe_report_run_parameters_h
 #define poundfe_report_run_parameters_h
 
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/excitation/spectrum_parameters.h>
 #include <poundfe/model/contact_parameters.h>
 #include <poundfe/output/drift_limits.h>

@@ -25,7 +25,7 @@
 #define poundfe_separation_mitigation_h
 
 #include <poundfe/dynamics/analysis.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/laws/bumper.h>
 #include <poundfe/reliability/montecarlo.h>
 #include <poundfe/separation/mitigation_parameters.h>

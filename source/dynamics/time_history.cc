@@ -1,7 +1,7 @@
 // The time loop of one model (deal.II step-23/26 style): set up the
 // initial state, advance the Newmark-Newton integrator step by step and let
 // each observer read the state, then let the observers finish.
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>

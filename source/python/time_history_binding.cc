@@ -10,7 +10,7 @@
 #include <poundfe/base/interruption.h>
 #include <poundfe/commands/command_guard.h>
 #include <poundfe/commands/command_table.h>
-#include <poundfe/dynamics/run.h>
+#include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/report/run_outputs.h>
 #include <poundfe/input/input_parameters.h>
