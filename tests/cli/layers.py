@@ -3,7 +3,8 @@
 module's sources and headers names a module of a lower layer than its own,
 or its own, with the layers read from the table of doc/architecture.md (so
 the drawing and the code cannot drift apart). Exit 1 listing every
-offending include."""
+offending include. Also: no two source files share a name (a header and
+its source file excepted), so that a file's name says which room it is in."""
 import glob
 import os
 import re
@@ -34,7 +35,17 @@ for path in sorted(files):
         elif layer[target] >= layer[module]:
             bad.append(f"{path}:{number}: {module} (layer {layer[module]}) includes "
                        f"{target} (layer {layer[target]})")
+stems = {}
+for path in glob.glob(os.path.join(root, "source", "**", "*.cc"), recursive=True) + \
+        glob.glob(os.path.join(root, "include", "poundfe", "**", "*.h"), recursive=True):
+    stem = os.path.splitext(os.path.basename(path))[0]
+    place = os.path.relpath(os.path.dirname(path), root)
+    place = place.replace(os.path.join("include", "poundfe"), "source", 1)
+    stems.setdefault(stem, set()).add(place)
+for stem, places in sorted(stems.items()):
+    if len(places) > 1:
+        bad.append(f"{stem}: a source file of that name in each of {', '.join(sorted(places))}")
 for b in bad:
     print("FAIL", b)
-print(f"{len(files)} files, {len(layer)} modules: {len(bad)} includes against the layers")
+print(f"{len(files)} files, {len(layer)} modules: {len(bad)} problems (includes against the layers, shared file names)")
 sys.exit(1 if bad else 0)
