@@ -99,7 +99,7 @@ def main():
         sys.exit(f"FAIL {root}: README.md, doc/*.md or input/templates/ not found")
     for page in pages:
         with open(page, encoding="utf-8") as f:
-            scan_lines(os.path.relpath(page, root), f.read().splitlines(), bad)
+            scan_lines(os.path.relpath(page, root), f.read().split("\n"), bad)
     sources = sorted(glob.glob(os.path.join(root, "source", "**", "*.cc"), recursive=True))
     if not sources:
         sys.exit(f"FAIL {root}: no source/**/*.cc")
