@@ -237,7 +237,7 @@ namespace poundfe
           throw InputError(file, number, catalogue_parameter,
                            "longitude '" + fields[column[2]] + "' is not a number in [-180, 360]");
         // A negative magnitude is a micro-earthquake, never felt at a site:
-        // in a hazard catalogue it is a typing error (issue 27); none on
+        // in a hazard catalogue it is a typing error; none on
         // Earth has reached 10.
         if (!(e.magnitude >= 0 && e.magnitude < 10))
           throw InputError(file, number, catalogue_parameter,

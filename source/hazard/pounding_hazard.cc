@@ -300,7 +300,7 @@ namespace poundfe
     /// record-to-record scatter: one realization per level (the scatter
     /// about a line through one motion's responses), or realizations that
     /// do not scatter. Its P(pounding) is then a step at the median demand
-    /// and its gap unconservative (issue 28).
+    /// and its gap unconservative.
     void
     warn_of_a_thin_demand_fit(const std::string &pair, const std::size_t i, PoundingHazard &result)
     {

@@ -66,7 +66,7 @@ namespace poundfe
     // tolerance * u_y, and the force would then ignore (1 - alpha) k du
     // although the tangent below includes it. The global Newton iteration
     // (theory §3.3) then converges only linearly, or not at all on the
-    // massless hinge rotations of an undamped frame (issue 14 item 7).
+    // massless hinge rotations of an undamped frame (theory §2.4).
     bool converged = du == 0;
     for (unsigned int it = 0; it < p.max_iterations && !converged; ++it)
       {

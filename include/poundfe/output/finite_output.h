@@ -1,5 +1,5 @@
-// No NaN or inf leaves poundfe in a result with exit status 0 (issue 28,
-// class 4). Every number of a results file goes out through one of four
+// No NaN or inf leaves poundfe in a result with exit status 0.
+// Every number of a results file goes out through one of four
 // writers: CsvWriter and NpyWriter (the tables of the recorders, sweeps,
 // spectra), append_number (the tables built as text) and JsonWriter
 // (summary.json). Each checks its numbers here; a value that is not finite

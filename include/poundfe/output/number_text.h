@@ -2,7 +2,7 @@
 // back to the same double (exact; Ryu in libstdc++), with a memory of the
 // numbers written lately.
 //
-// Formatting is most of the cost of writing a row (issue 12: perf on
+// Formatting is most of the cost of writing a row (perf on
 // input/bouc-wen-sdof.prm with a row every step: 47 % in to_chars), and the
 // recorders of one run write the same number many times: the time in every
 // file of a step, a floor displacement also as a hinge's drift and in the

@@ -1,7 +1,7 @@
 // The `Random parameters` section: numeric parameters of the model that are
 // random in the time-history sampling commands (montecarlo, subset,
 // fragility), and limit states over a realization's responses and those
-// parameters (issue 24, uncertain structures).
+// parameters (uncertain structures).
 //   set Variables    = NAME: PATH ~ DISTRIBUTION KEY VALUE ...; ...
 //       PATH: an input entry (dynamics/model_parameter.h lists them), a
 //       list entry with [i]; DISTRIBUTION and KEYs as Reliability/Random
