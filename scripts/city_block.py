@@ -132,7 +132,7 @@ def main():
                  "with mpirun -np 2 (at most 12 ranks: one per building).")
         purpose = ("116 292 equations, 10 172 nonlinear elements (9 732 hinges, 440 gaps).\n"
                    "# Only the first {end} s of the motion (End time), so that the example runs "
-                   "in\n# minutes; see README, Speed. Not run by "
+                   "in\n# minutes; see doc/benchmarks.md. Not run by "
                    "cli/regression\n# (too long for CI): "
                    "tests/cli/city-block-small.prm is its small variant. Over a\n# "
                    "whole record, hinges.csv of every hinge grows by 63 MB a second of motion:\n# "

@@ -24,7 +24,7 @@ namespace poundfe
 
   /// `automatic` takes the dense solver up to this many equations: there
   /// it costs under ~0.1 s and gives every mode; above, its O(n^3) time
-  /// grows quickly (README, Speed) while the sparse one stays near linear.
+  /// grows quickly (doc/benchmarks.md) while the sparse one stays near linear.
   constexpr unsigned int dense_eigensolver_limit = 500;
 
   struct ModalParameters
