@@ -666,3 +666,46 @@ BOOST_AUTO_TEST_CASE(mander_rectangular_section_by_hand)
   BOOST_CHECK_EXCEPTION(mander_rectangular(r), InputError,
                         [](const InputError &e) { return e.parameter() == "fyh"; });
 }
+
+BOOST_AUTO_TEST_CASE(hysteretic_pinching_and_unloading_stiffness)
+{
+  // pinchX = 0.5, pinchY = 0.3 after 0.03 -> -0.03 (no damage): reloading
+  // from the zero-stress strain z = -0.03 + 106.667 / 8000 heads for the
+  // pinching point, strain z + 0.5 (0.03 - 0.7 x 125 / 1e4 - z), stress
+  // 0.3 x 125, then for (0.03, 125)
+  HystereticParameters p = trilinear();
+  p.pinchX               = 0.5;
+  p.pinchY               = 0.3;
+  Hysteretic   h(p);
+  const double sigma_n = -80 - 40.0 / 0.03 * 0.02;
+  material_walk(h, {0.03, -0.03});
+  const double z       = -0.03 - sigma_n / 8000;
+  const double pinched = z + 0.5 * (0.03 - 0.7 * 125 / 1e4 - z);
+  BOOST_REQUIRE(h.set_trial(-0.005, 0));
+  BOOST_TEST(h.force() == 37.5 * (-0.005 - z) / (pinched - z), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(h.tangent() == 37.5 / (pinched - z), boost::test_tools::tolerance(1e-12));
+  h.revert();
+  BOOST_REQUIRE(h.set_trial(0.02, 0));
+  BOOST_TEST(h.force() == 37.5 + (0.02 - pinched) * 87.5 / (0.03 - pinched),
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(h.tangent() == 87.5 / (0.03 - pinched), boost::test_tools::tolerance(1e-12));
+  h.revert();
+  BOOST_TEST(material_try(h, z - 1e-4) == sigma_n + 8000 * (z - 1e-4 + 0.03),
+             boost::test_tools::tolerance(1e-9)); // still unloading
+  // beta = 0.5: unloading from 0.03 (mu = 3) at 1e4 / sqrt(3)
+  Hysteretic soft(trilinear(1, 0, 0.5));
+  material_walk(soft, {0.03});
+  BOOST_REQUIRE(soft.set_trial(0.02, 0));
+  BOOST_TEST(soft.force() == 125 - 1e4 / std::sqrt(3.0) * 0.01, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(soft.tangent() == 1e4 / std::sqrt(3.0), boost::test_tools::tolerance(1e-12));
+  // with pinching as above, after -0.03 (mu = 3 both ways) both the
+  // zero-stress strain and the pinching point use the degraded moduli
+  p.beta = 0.5;
+  Hysteretic degraded(p);
+  material_walk(degraded, {0.03, -0.03});
+  const double k       = std::sqrt(3.0);
+  const double z_k     = -0.03 - sigma_n / (8000 / k);
+  const double pinch_k = z_k + 0.5 * (0.03 - 0.7 * 125 / (1e4 / k) - z_k);
+  BOOST_TEST(material_try(degraded, 0.0) == 37.5 * (0.0 - z_k) / (pinch_k - z_k),
+             boost::test_tools::tolerance(1e-12));
+}
