@@ -443,7 +443,7 @@ BOOST_AUTO_TEST_CASE(symmetric_materials_are_odd)
     }
 }
 
-BOOST_AUTO_TEST_CASE(tangents_match_central_differences)
+BOOST_AUTO_TEST_CASE(material_tangents_match_central_differences)
 {
   // Random committed walks; h = 1e-8 of the strain range. The fraction of
   // trials checked (no kink within h) is reported and must be most of them.
@@ -473,7 +473,7 @@ BOOST_AUTO_TEST_CASE(tangents_match_central_differences)
     }
 }
 
-BOOST_AUTO_TEST_CASE(revert_restores_the_committed_state_exactly)
+BOOST_AUTO_TEST_CASE(material_revert_restores_the_committed_state_exactly)
 {
   const std::vector<double> steel{0.003, 0.01, 0.004, -0.006, -0.001};
   const std::vector<double> steel_trials{0.02, -0.03, 0.0011};
