@@ -1,7 +1,9 @@
 // Hysteretic: trilinear envelopes with pinching, damage and degraded
 // unloading stiffness, as OpenSees's Hysteretic material.
 //   Envelope in each direction: (0,0)-(e1,s1)-(e2,s2)-(e3,s3), then the
-//   last segment continued if it rises, else s3 held.
+//   last segment continued if it rises, else s3 held. Given two points
+//   only (by name, without s3, e3), the second becomes the third and the
+//   middle one lies halfway, as OpenSees's two-point form.
 //   Unloading modulus E_u k with E_u the largest envelope slope of that
 //   direction and k = (mu)^-beta, mu = eps_max / e1 (1 when mu < 1).
 //   On unloading to zero stress the strain of zero stress is remembered;
@@ -266,10 +268,10 @@ namespace poundfe
       for (const char *side : {"p", "n"})
         for (const char *point : {"1", "2", "3"})
           for (const char *what : {"s", "e"})
-            parameters.push_back({std::string(what) + point + side, NAN,
+            parameters.push_back({std::string(what) + point + side, *point == '3' ? 0.0 : NAN,
                                   std::string(*what == 's' ? "stress" : "strain") + " of point " +
                                     point + " of the " + (*side == 'p' ? "positive" : "negative") +
-                                    " envelope"});
+                                    " envelope" + (*point == '3' ? " (none: bilinear)" : "")});
       parameters.push_back({"pinchX", 1, "pinching in strain"});
       parameters.push_back({"pinchY", 1, "pinching in stress"});
       parameters.push_back({"damage1", 0, "damage from ductility"});
@@ -280,8 +282,12 @@ namespace poundfe
               parameters,
               [](const std::map<std::string, double> &v) -> std::unique_ptr<UniaxialLaw> {
                 auto envelope = [&](const std::string &side) {
-                  return HystereticEnvelope{v.at("s1" + side), v.at("e1" + side), v.at("s2" + side),
-                                            v.at("e2" + side), v.at("s3" + side), v.at("e3" + side)};
+                  const double s1 = v.at("s1" + side), e1 = v.at("e1" + side);
+                  const double s2 = v.at("s2" + side), e2 = v.at("e2" + side);
+                  const double s3 = v.at("s3" + side), e3 = v.at("e3" + side);
+                  if (s3 == 0 && e3 == 0) // two points: OpenSees puts the middle one halfway
+                    return HystereticEnvelope{s1, e1, 0.5 * (s1 + s2), 0.5 * (e1 + e2), s2, e2};
+                  return HystereticEnvelope{s1, e1, s2, e2, s3, e3};
                 };
                 HystereticParameters q;
                 q.positive = envelope("p");

@@ -510,6 +510,19 @@ BOOST_AUTO_TEST_CASE(registry_makes_every_material_by_name)
                     {"e3p", 0.1}, {"s1n", -80}, {"e1n", -0.01}, {"s2n", -120}, {"e2n", -0.04},
                     {"s3n", -60}, {"e3n", -0.1}}});
   BOOST_TEST(hysteretic->initial_stiffness() == 1e4);
+  // two points a side: the second becomes the third, the middle one halfway
+  auto bilinear = make_material({"Hysteretic", {{"s1p", 100}, {"e1p", 0.01}, {"s2p", 120},
+                                                {"e2p", 0.1}, {"s1n", -80}, {"e1n", -0.01},
+                                                {"s2n", -60}, {"e2n", -0.1}}});
+  Hysteretic three({{100, 0.01, 110, 0.055, 120, 0.1}, {-80, -0.01, -70, -0.055, -60, -0.1}});
+  for (const double e : {0.03, 0.08, -0.05, 0.12, -0.11, 0.0})
+    {
+      BOOST_REQUIRE(bilinear->set_trial(e, 0));
+      BOOST_REQUIRE(three.set_trial(e, 0));
+      BOOST_TEST(bilinear->force() == three.force(), boost::test_tools::tolerance(1e-14));
+      bilinear->commit();
+      three.commit();
+    }
   auto concrete = make_material(
     {"Concrete02",
      {{"fpc", -30e6}, {"epsc0", -0.002}, {"fpcu", -6e6}, {"epscu", -0.006}, {"ft", 3e6}, {"Ets", 3e9}}});
