@@ -78,7 +78,8 @@ namespace poundfe
   double
   Concrete01::stored_energy() const
   {
-    return 0.5 * trial.stress * trial.stress / trial.unload_slope;
+    // a crushed fibre of zero residual strength unloads along a flat line
+    return trial.stress == 0 ? 0.0 : 0.5 * trial.stress * trial.stress / trial.unload_slope;
   }
 
   Concrete01State

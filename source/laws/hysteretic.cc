@@ -212,14 +212,16 @@ namespace poundfe
         const double energy = from.energy - 0.5 * from.stress / E_behind * from.stress;
         double       damage = 0;
         if (-from.min_strain > behind.e1)
-          damage = p.damage2 * energy / energy_A + p.damage1 * (-from.min_strain - behind.e1) / behind.e1;
+          damage = p.damage2 * energy / energy_A +
+                   p.damage1 * (-from.min_strain - behind.e1) / behind.e1;
         s.max_strain = from.max_strain * (1 + damage);
       }
     s.loading    = 1;
     s.max_strain = std::max(std::min(s.max_strain, hysteretic_infinite_strain), ahead.e1);
 
     const double max_stress = hysteretic_envelope_stress(ahead, s.max_strain);
-    const double released   = std::max(-hysteretic_envelope_limit(behind, -from.min_strain), s.zero_n);
+    const double released =
+      std::max(-hysteretic_envelope_limit(behind, -from.min_strain), s.zero_n);
     const double target  = s.max_strain - (1 - p.pinchY) * max_stress / E_ahead;
     const double pinched = released + (target - released) * p.pinchX;
     if (strain < s.zero_n) // still unloading the other side

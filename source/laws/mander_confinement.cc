@@ -49,7 +49,8 @@ namespace poundfe
       const double T  = 0.069232 - 0.661091 * s_oct - 0.049350 * s_oct * s_oct;
       const double C  = 0.122965 - 1.150502 * s_oct - 0.315545 * s_oct * s_oct;
       const double c2 = cos_theta * cos_theta, D = C * C - T * T;
-      return (2 * C * D * cos_theta + C * (2 * T - C) * std::sqrt(4 * D * c2 + 5 * T * T - 4 * T * C)) /
+      const double root = std::sqrt(4 * D * c2 + 5 * T * T - 4 * T * C);
+      return (2 * C * D * cos_theta + C * (2 * T - C) * root) /
              (4 * D * c2 + (C - 2 * T) * (C - 2 * T));
     }
 

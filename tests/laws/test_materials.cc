@@ -320,6 +320,20 @@ BOOST_AUTO_TEST_CASE(concrete01_unloading_from_the_peak_strain)
     }
 }
 
+BOOST_AUTO_TEST_CASE(concrete01_crushed_to_zero_strength)
+{
+  // fpcu = 0: beyond epscu the fibre carries nothing, its unloading line is
+  // flat (slope 0 / (eps_min - eps_p)) and its stored energy 0, not 0/0
+  Concrete01 c({-30e6, -0.002, 0, -0.006});
+  material_walk(c, {-0.002, -0.004, -0.007});
+  BOOST_TEST(c.force() == 0);
+  BOOST_TEST(c.stored_energy() == 0);
+  BOOST_TEST(material_try(c, -0.003) == 0);
+  BOOST_TEST(material_try(c, -0.008) == 0);
+  BOOST_REQUIRE(c.set_trial(-0.005, 0));
+  BOOST_TEST(c.stored_energy() == 0);
+}
+
 BOOST_AUTO_TEST_CASE(concrete02_tension_softening_and_unloading)
 {
   Concrete02 c(concrete_c30_tension());
@@ -383,7 +397,8 @@ BOOST_AUTO_TEST_CASE(hysteretic_envelope_and_reloading)
   BOOST_TEST(material_try(h, 0.03) == 125, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(material_try(h, 0.08) == 132, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(material_try(h, 0.2) == 120, boost::test_tools::tolerance(1e-12));
-  BOOST_TEST(material_try(h, -0.02) == -80 - 40.0 / 0.03 * 0.01, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(material_try(h, -0.02) == -80 - 40.0 / 0.03 * 0.01,
+             boost::test_tools::tolerance(1e-12));
   // unloading from 0.03 at the largest positive slope 1e4
   material_walk(h, {0.03});
   BOOST_TEST(material_try(h, 0.02) == 25, boost::test_tools::tolerance(1e-12));
@@ -525,7 +540,8 @@ BOOST_AUTO_TEST_CASE(registry_makes_every_material_by_name)
     }
   auto concrete = make_material(
     {"Concrete02",
-     {{"fpc", -30e6}, {"epsc0", -0.002}, {"fpcu", -6e6}, {"epscu", -0.006}, {"ft", 3e6}, {"Ets", 3e9}}});
+     {{"fpc", -30e6}, {"epsc0", -0.002}, {"fpcu", -6e6}, {"epscu", -0.006}, {"ft", 3e6},
+      {"Ets", 3e9}}});
   BOOST_TEST(material_try(*concrete, 6e-4) == 1.5e6, boost::test_tools::tolerance(1e-12));
   auto epp = make_material({"ElasticPP", {{"E", 200e9}, {"epsyP", 0.002}}});
   BOOST_TEST(material_try(*epp, -0.004) == -400e6, boost::test_tools::tolerance(1e-14));
@@ -709,7 +725,8 @@ BOOST_AUTO_TEST_CASE(hysteretic_pinching_and_unloading_stiffness)
   Hysteretic soft(trilinear(1, 0, 0.5));
   material_walk(soft, {0.03});
   BOOST_REQUIRE(soft.set_trial(0.02, 0));
-  BOOST_TEST(soft.force() == 125 - 1e4 / std::sqrt(3.0) * 0.01, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(soft.force() == 125 - 1e4 / std::sqrt(3.0) * 0.01,
+             boost::test_tools::tolerance(1e-12));
   BOOST_TEST(soft.tangent() == 1e4 / std::sqrt(3.0), boost::test_tools::tolerance(1e-12));
   // with pinching as above, after -0.03 (mu = 3 both ways) both the
   // zero-stress strain and the pinching point use the degraded moduli
