@@ -503,6 +503,18 @@ BOOST_AUTO_TEST_CASE(material_revert_restores_the_committed_state_exactly)
                         {0.09, -0.1, 0.0}, 0.02);
 }
 
+BOOST_AUTO_TEST_CASE(material_refuses_a_strain_that_is_not_finite)
+{
+  Steel02 steel(rebar02());
+  material_walk(steel, {0.003});
+  BOOST_TEST(!steel.set_trial(NAN, 0));
+  BOOST_TEST(steel.failure().find("not all finite") != std::string::npos);
+  steel.revert();
+  BOOST_TEST(steel.force() == material_try(steel, 0.003));
+  Concrete01 c(concrete_c30());
+  BOOST_TEST(!c.set_trial(-INFINITY, 0));
+}
+
 BOOST_AUTO_TEST_CASE(registry_makes_every_material_by_name)
 {
   const std::vector<std::string> names{"Steel01",    "Steel02",   "Concrete01",

@@ -13,6 +13,7 @@
 
 #include <poundfe/laws/uniaxial_law.h>
 
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <map>
@@ -29,10 +30,18 @@ namespace poundfe
   class UniaxialMaterial : public UniaxialLaw
   {
   public:
+    /// Refuses (false, failure() says why) a strain or a stress that is not
+    /// finite: the trial state must then not be used.
     bool set_trial(const double strain, const double /*rate*/) final
     {
       trial = respond(committed, strain);
-      return true;
+      return std::isfinite(strain) && std::isfinite(trial.stress) && std::isfinite(trial.tangent);
+    }
+    std::string failure() const final
+    {
+      return "stress-strain material: strain " + std::to_string(trial.strain) + ", stress " +
+             std::to_string(trial.stress) + ", tangent " + std::to_string(trial.tangent) +
+             " (not all finite)";
     }
     double force() const final { return trial.stress; }
     double tangent() const final { return trial.tangent; }
