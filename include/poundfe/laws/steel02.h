@@ -1,0 +1,54 @@
+// Steel02: Giuffré–Menegotto–Pinto steel with Filippou, Popov & Bertero's
+// isotropic hardening, as OpenSees's Steel02 (equations in
+// source/laws/steel02.cc).
+#ifndef poundfe_laws_steel02_h
+#define poundfe_laws_steel02_h
+
+#include <poundfe/laws/material_registry.h>
+
+namespace poundfe
+{
+  struct Steel02Parameters
+  {
+    double fy  = 0;     // yield stress (Pa), > 0
+    double E0  = 0;     // initial elastic modulus (Pa), > 0
+    double b   = 0;     // hardening ratio, in [0, 1)
+    double R0  = 20;    // curvature of the first transition, > 0
+    double cR1 = 0.925; // reduction of R with the plastic excursion, in [0, 1)
+    double cR2 = 0.15;  // > 0
+    double a1  = 0;     // isotropic hardening as in Steel01
+    double a2  = 1;
+    double a3  = 0;
+    double a4  = 1;
+  };
+
+  struct Steel02State
+  {
+    double strain = 0, stress = 0, tangent = 0;
+    double eps_max = 0, eps_min = 0; // largest and smallest strains of reversals
+    double eps_pl = 0;               // the far reversal strain (for xi)
+    double eps_0 = 0, sig_0 = 0;     // where the two asymptotes meet
+    double eps_r = 0, sig_r = 0;     // the last reversal point
+    int    direction = 0;            // 1 loading, 2 unloading, 0 virgin
+  };
+
+  class Steel02 : public UniaxialMaterial<Steel02State>
+  {
+  public:
+    /// InputError naming the parameter unless fy, E0, R0, cR2, a2, a4 > 0,
+    /// b and cR1 in [0, 1), a1, a3 >= 0.
+    explicit Steel02(const Steel02Parameters &parameters);
+
+    double initial_stiffness() const override { return p.E0; }
+    double yield_deformation() const override { return p.fy / p.E0; }
+    const Steel02Parameters &parameters() const { return p; }
+
+  private:
+    Steel02State respond(const Steel02State &from, double strain) const override;
+    Steel02State virgin() const override;
+
+    Steel02Parameters p;
+  };
+} // namespace poundfe
+
+#endif
