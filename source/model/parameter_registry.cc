@@ -157,10 +157,10 @@ namespace poundfe
         if (std::isfinite(r.upper))
           text += (r.upper_included ? "<= " : "< ") + number_text(r.upper) + " and ";
         text += "at most 1e150 in size";
-        throw std::invalid_argument("'" + path + "' cannot take the sampled value " +
+        throw std::invalid_argument("'" + path + "' cannot take the value " +
                                     number_text(value) + " (it must be " + text +
-                                    "; choose a distribution that stays in range, e.g. "
-                                    "lognormal or truncated normal)");
+                                    "; a sampled one: choose a distribution that stays in "
+                                    "range, e.g. lognormal or truncated normal)");
       }
     registration->set(*this, value, model, working_inputs);
   }
