@@ -1,12 +1,19 @@
 // `poundfe sweep`: the run's peaks against the values of one parameter.
-//   read:   every value's input (input/sweep.h), all checked before any run
+//   read:   the first value's input (input/sweep.h). When the parameter is a
+//           registered model parameter that sets as the builder makes it
+//           (model/parameter_registry.h: ModelParameter::set_as_built), its
+//           model is built once and every value is checked on it; otherwise
+//           every value's input is read, all checked before any run
 //   runs:   each value's time history with the peak observer only, its
-//           scalars one row of the table
+//           scalars one row of the table: on the model built once with the
+//           value set in place (as a realization of a random structure), or
+//           on the model built from the value's input
 //   output: sweep.csv, summary.json, sweep.png; the console report
 #include <poundfe/base/console.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/commands/command.h>
+#include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/sweep.h>
 #include <poundfe/output/atomic_file.h>
@@ -20,6 +27,8 @@
 
 #include <algorithm>
 #include <iostream>
+#include <memory>
+#include <stdexcept>
 
 namespace poundfe
 {
@@ -80,15 +89,15 @@ namespace poundfe
       bool interrupted = false; // SIGINT/SIGTERM: the values finished are the result
     };
 
-    /// One run of the value's input with the peak observer; its row in
-    /// `table`. False (no row) when a signal stopped the run.
+    /// One run of `analysis` (the model at `value`) with the peak observer;
+    /// its row in `table`. False (no row) when a signal stopped the run.
     bool
-    run_value(const InputParameters &input, const double value, SweepTable &table)
+    run_value(const Analysis &analysis, const TimeHistoryParameters &parameters,
+              const InputFile &input, const SweepParameters &sweep, const double value,
+              SweepTable &table)
     {
-      const Analysis              analysis   = prepare_analysis(input);
-      const TimeHistoryParameters parameters = time_history_parameters(input);
-      const Excitation            excitation = make_excitation(analysis, parameters);
-      TimeHistory                 history(analysis, parameters);
+      const Excitation excitation = make_excitation(analysis, parameters);
+      TimeHistory      history(analysis, parameters);
       PeakResponse       peaks(analysis.model, history.nonlinear_elements());
       const RunStatus    status = history.run(excitation, {&peaks}, true);
       if (status.kind == RunStatus::Kind::interrupted)
@@ -100,13 +109,54 @@ namespace poundfe
           table.n_storeys = peaks.floors().n_floors();
         }
       else if (names != table.names)
-        input.fail(input.sweep.section + "/Parameter",
+        input.fail(sweep.section + "/Parameter",
                    "changes the model's floors or gaps at " + format_value(value) +
                      ": every value needs the same table columns");
       table.values.push_back(value);
       table.completed.push_back(status.completed());
       table.rows.push_back(scalars(analysis, peaks, history.state()));
       return true;
+    }
+
+    /// The swept parameter in the model of the first value's input, built
+    /// once, when it is a registered model parameter that sets as the
+    /// builder makes it; nullptr otherwise (an entry that is not registered:
+    /// the mesh, the ground motion, ...; or one the builder derives more
+    /// from, as a separation that places frames), whose values' inputs are
+    /// read and built one by one. Every value is checked on it (InputError).
+    std::unique_ptr<ModelRealization>
+    built_once(const InputParameters &first, const Analysis &analysis,
+               const std::vector<double> &values)
+    {
+      const SweepParameters &sweep = first.sweep;
+      std::vector<ModelParameter> parameter;
+      try
+        {
+          parameter.push_back(model_parameter(
+            sweep.parameter, analysis.model,
+            std::make_shared<const std::vector<HingeOrigin>>(hinge_origins(analysis.model, first.model)),
+            std::make_shared<const ModelInputs>(ModelInputs{first.model, first.contact})));
+        }
+      catch (const std::invalid_argument &)
+        {
+          return nullptr;
+        }
+      if (!parameter.front().set_as_built(analysis.model))
+        return nullptr;
+      auto model = std::make_unique<ModelRealization>(analysis, std::move(parameter),
+                                                      first.modal.eigensolver);
+      for (const double value : values)
+        try
+          {
+            model->check({value});
+          }
+        catch (const std::invalid_argument &e)
+          {
+            throw InputError(first.file, 0, sweep.parameter,
+                             "at " + sweep.section + " value " + sweep.parameter + " = " +
+                               format_value(value) + ": " + e.what());
+          }
+      return model;
     }
 
     /// A peak response's critical value of the swept parameter (e.g. the
@@ -141,7 +191,8 @@ namespace poundfe
 
     void
     write_sweep(const InputParameters &input, const SweepTable &table,
-                const std::string &directory, const double wall_time, const bool interrupted)
+                const std::string &directory, const double wall_time, const bool interrupted,
+                const bool model_built_once)
     {
       const SweepParameters &sweep = input.sweep;
       prepare_output_directory(directory);
@@ -164,6 +215,7 @@ namespace poundfe
       begin_summary(json, "sweep", input, interrupted ? "interrupted" : all ? "completed" : "failed");
       json.value("parameter", sweep.parameter).value("command_swept", sweep.command)
         .value("n_values", table.values.size()).value("wall_time_s", wall_time)
+        .value("model_built_once", model_built_once)
         .begin_object("table").value(sweep.column_name(), table.values);
       std::vector<double> completed(table.completed.begin(), table.completed.end());
       json.value("completed", completed);
@@ -196,15 +248,33 @@ namespace poundfe
       draw_plots(directory, {plot});
     }
 
-    /// Each value's run, in order, with a progress line on a terminal.
+    /// Each value's run, in order, with a progress line on a terminal: on
+    /// `model` with the value set, or (none) on each value's input.
     SweepTable
-    run_values(const std::vector<InputParameters> &inputs, const std::vector<double> &values)
+    run_values(const std::vector<InputParameters> &inputs, const Analysis &first_analysis,
+               ModelRealization *model, const std::vector<double> &values)
     {
       SweepTable table;
       Progress   progress(std::cerr, "sweep: values", values.size());
+      const InputParameters      &first      = inputs.front();
+      const TimeHistoryParameters parameters = time_history_parameters(first);
       for (std::size_t i = 0; i < values.size() && !table.interrupted; ++i)
         {
-          table.interrupted = interruption_requested() || !run_value(inputs[i], values[i], table);
+          if (interruption_requested())
+            table.interrupted = true;
+          else if (model)
+            {
+              model->apply({values[i]});
+              table.interrupted = !run_value(model->analysis(), parameters, first, first.sweep,
+                                             values[i], table);
+            }
+          else if (i == 0)
+            table.interrupted =
+              !run_value(first_analysis, parameters, first, first.sweep, values[i], table);
+          else
+            table.interrupted = !run_value(prepare_analysis(inputs[i]),
+                                           time_history_parameters(inputs[i]), inputs[i],
+                                           first.sweep, values[i], table);
           progress.update(i + 1);
         }
       return table;
@@ -225,19 +295,23 @@ namespace poundfe::commands
     timer.enter_subsection("read");
     sweep.require(input);
     const std::vector<double> values = sweep.values();
-    std::vector<InputParameters> inputs; // all read first: bad input writes nothing
-    for (const double value : values)
-      inputs.push_back(sweep_input(sweep, input, value));
+    // all read and checked first: bad input writes nothing
+    std::vector<InputParameters> inputs{sweep_input(sweep, input, values.front())};
+    const Analysis first_analysis = prepare_analysis(inputs.front());
+    const std::unique_ptr<ModelRealization> model =
+      built_once(inputs.front(), first_analysis, values);
+    for (std::size_t i = 1; i < values.size() && !model; ++i)
+      inputs.push_back(sweep_input(sweep, input, values[i]));
     timer.leave_subsection();
 
     timer.enter_subsection("runs");
-    const SweepTable table = run_values(inputs, values);
+    const SweepTable table = run_values(inputs, first_analysis, model.get(), values);
     timer.leave_subsection();
     const double wall_time =
       timer.get_summary_data(dealii::TimerOutput::total_wall_time).at("runs");
 
     timer.enter_subsection("output");
-    write_sweep(input, table, run.directory, wall_time, table.interrupted);
+    write_sweep(input, table, run.directory, wall_time, table.interrupted, model != nullptr);
     timer.leave_subsection();
     if (table.interrupted)
       {

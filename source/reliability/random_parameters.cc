@@ -83,19 +83,6 @@ namespace poundfe
     /// entry) or, `later`, on every one. A variable of a whole list followed
     /// by one of its entries is not: both act, the entry overriding the list
     /// there.
-    bool
-    overwrites(const ModelParameter &later, const ModelParameter &earlier)
-    {
-      const ModelParameter &a = later, &b = earlier;
-      return a.kind == b.kind && a.building == b.building &&
-             (a.entry == b.entry || a.entry < 0) &&
-             a.member_kind == b.member_kind && a.section == b.section && a.shape == b.shape &&
-             a.section_3d == b.section_3d && a.group == b.group && a.friction == b.friction &&
-             a.foundation == b.foundation && a.list == b.list && a.link_field == b.link_field &&
-             a.spring_field == b.spring_field && a.bumper_field == b.bumper_field &&
-             a.plane_yield_drift == b.plane_yield_drift;
-    }
-
     /// InputError at Random parameters/Variables for a variable whose name
     /// a column of realizations.csv has already (a limit state would read
     /// one of the two for the other), or whose path writes into the value
@@ -117,7 +104,7 @@ namespace poundfe
                        "variable '" + p.names[i] + "' has the name of a response column of "
                        "realizations.csv (a limit state could not tell them apart): rename it");
           for (unsigned int j = 0; j < i; ++j)
-            if (overwrites(parameters[i], parameters[j]))
+            if (parameters[i].overwrites(parameters[j]))
               input.fail(section + "Variables",
                          "variables '" + p.names[j] + "' (" + p.paths[j] + ") and '" +
                            p.names[i] + "' (" + p.paths[i] + ") set the same model value: '" +

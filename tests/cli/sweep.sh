@@ -5,7 +5,12 @@
 # displacement and absolute acceleration, and the number of impacts of the
 # sweep's row equal the run's summary.json to 1e-12 relative (the same
 # arithmetic reached through an override instead of the file). Also: the
-# files the sweep writes, and no temporary file left.
+# files the sweep writes, and no temporary file left. Frames are placed by
+# the separation, so their model is built from each value's input
+# (summary.json: model_built_once false). A pair of shear buildings is
+# built once and each value set in place (model_built_once true): its
+# sweep.csv rows equal, to the last digit, those of one-value sweeps, whose
+# model is built from the input with that value.
 set -eu
 poundfe=$1 file=$2
 work=$(mktemp -d)
@@ -47,3 +52,19 @@ for row, value in zip(rows, ["0", "0.005"]):
     print(f"ok   Separations = {value}: {n} peaks and {impacts} impacts as run")
 sys.exit(1 if failures else 0)
 PY
+built_once() { python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['model_built_once'])" "$1"; }
+[ "$(built_once "$work/sweep/summary.json")" = False ] || { echo "FAIL: frames placed by the separation built once"; exit 1; }
+pair=$(dirname "$0")/../dynamics/uncertain-shear-pair.prm
+shear_sweep() { # name values
+  { cat "$pair"; printf 'subsection Sweep\n  set Parameter = Model/Separations\n  set Values = %s\nend\n' "$2"; } > "$work/$1.prm"
+  "$poundfe" sweep "$work/$1.prm" --output "$work/$1" > /dev/null
+}
+shear_sweep shear "0.004, 0.008"
+[ "$(built_once "$work/shear/summary.json")" = True ] || { echo "FAIL: the shear pair's sweep read every value"; exit 1; }
+shear_sweep one-0.004 0.004
+shear_sweep one-0.008 0.008
+[ "$(sed -n 2p "$work/shear/sweep.csv")" = "$(sed -n 2p "$work/one-0.004/sweep.csv")" ] &&
+  [ "$(sed -n 3p "$work/shear/sweep.csv")" = "$(sed -n 2p "$work/one-0.008/sweep.csv")" ] ||
+  { echo "FAIL: the values set in place differ from the models built with them"; exit 1; }
+grep -q "n_impacts" "$work/shear/sweep.csv" || { echo "FAIL: no contact columns"; exit 1; }
+echo "ok   shear pair built once: Separations = 0.004, 0.008 equal the models built with them, to the last digit"
