@@ -192,6 +192,39 @@ namespace
     return 1;
   }
 
+  /// The exit status of what dispatch_command threw, after its message on
+  /// `err`: 1 for a refused command line or bad input, 2 for a numerical
+  /// failure.
+  int
+  exit_status_of(const std::exception_ptr &thrown, std::ostream &err, const bool several_ranks)
+  {
+    using namespace poundfe;
+    try
+      {
+        std::rethrow_exception(thrown);
+      }
+    catch (const CommandLineError &e)
+      {
+        err << "poundfe: error: " << e.what() << "\n" << e.trailer();
+      }
+    catch (const InputError &e)
+      {
+        err << "poundfe: error: " << e.what() << "\n";
+      }
+    catch (const NumericalError &e)
+      {
+        err << "poundfe: numerical failure: " << e.what() << "\n";
+        return 2;
+      }
+    catch (const std::exception &e)
+      {
+        // not necessarily on every rank: the others may wait forever
+        std::cerr << "poundfe: error: " << e.what() << "\n";
+        if (several_ranks)
+          MPI_Abort(MPI_COMM_WORLD, 1);
+      }
+    return 1;
+  }
 } // namespace
 
 int
@@ -228,27 +261,9 @@ main(int argc, char **argv)
     {
       return dispatch_command(*command, line.request, start_mpi, err);
     }
-  catch (const CommandLineError &e)
+  catch (...)
     {
-      err << "poundfe: error: " << e.what() << "\n" << e.trailer();
-      return 1;
-    }
-  catch (const InputError &e)
-    {
-      err << "poundfe: error: " << e.what() << "\n";
-      return 1;
-    }
-  catch (const NumericalError &e)
-    {
-      err << "poundfe: numerical failure: " << e.what() << "\n";
-      return 2;
-    }
-  catch (const std::exception &e)
-    {
-      // not necessarily on every rank: the others may wait forever
-      std::cerr << "poundfe: error: " << e.what() << "\n";
-      if (mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-        MPI_Abort(MPI_COMM_WORLD, 1);
-      return 1;
+      return exit_status_of(std::current_exception(), err,
+                            mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1);
     }
 }
