@@ -194,36 +194,43 @@ namespace
 
   /// The exit status of what dispatch_command threw, after its message on
   /// `err`: 1 for a refused command line or bad input, 2 for a numerical
-  /// failure.
+  /// failure. The message goes in one write after the report is flushed:
+  /// mpirun forwards every write of a rank as it comes, and a message
+  /// written in pieces could be split by lines of the report.
   int
   exit_status_of(const std::exception_ptr &thrown, std::ostream &err, const bool several_ranks)
   {
     using namespace poundfe;
+    std::string message;
+    int         status   = 1;
+    bool        any_rank = false; // not necessarily on every rank: the others may wait forever
     try
       {
         std::rethrow_exception(thrown);
       }
     catch (const CommandLineError &e)
       {
-        err << "poundfe: error: " << e.what() << "\n" << e.trailer();
+        message = "poundfe: error: " + std::string(e.what()) + "\n" + e.trailer();
       }
     catch (const InputError &e)
       {
-        err << "poundfe: error: " << e.what() << "\n";
+        message = "poundfe: error: " + std::string(e.what()) + "\n";
       }
     catch (const NumericalError &e)
       {
-        err << "poundfe: numerical failure: " << e.what() << "\n";
-        return 2;
+        message = "poundfe: numerical failure: " + std::string(e.what()) + "\n";
+        status  = 2;
       }
     catch (const std::exception &e)
       {
-        // not necessarily on every rank: the others may wait forever
-        std::cerr << "poundfe: error: " << e.what() << "\n";
-        if (several_ranks)
-          MPI_Abort(MPI_COMM_WORLD, 1);
+        message  = "poundfe: error: " + std::string(e.what()) + "\n";
+        any_rank = true;
       }
-    return 1;
+    std::cout.flush();
+    (any_rank ? std::cerr : err) << message << std::flush;
+    if (any_rank && several_ranks)
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    return status;
   }
 } // namespace
 
