@@ -9,7 +9,9 @@
 #     (that of poundfe.read's overrides: tests/python/test_command_rules.py
 #     compares the two), a value out of range names the
 #     entry, a malformed --set and --set for a command that reads no file
-#     are refused: exit 1, one line, nothing written (tests/cli/expect.sh).
+#     are refused: exit 1, one line, nothing written (tests/cli/expect.sh);
+#  4. the distributed-solver column (several ranks only, so not in Python's
+#     tests): montecarlo with petsc-mumps on 2 ranks refused, one message.
 #   set_option.sh POUNDFE SOURCE_DIR
 set -u
 poundfe=$(readlink -f "$1") source=$(readlink -f "$2")
@@ -77,4 +79,21 @@ expect 1 "--set needs a value" run "$base" --set
 expect 1 "--set sets an entry of a parameter file, and 'template' reads none" \
   template frame --set "Output/Plots=false"
 
+# the distributed-solver column, which only a job of several ranks can meet
+# (Python runs one process): montecarlo on 2 ranks with petsc-mumps, refused
+# by rank 0 alone, nothing written
+if command -v mpirun > /dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  n=$((n + 1))
+  status=0
+  mpirun -np 2 "$poundfe" montecarlo "$source/tests/cli/montecarlo-small.prm" \
+    --set "Time integration/Linear solver=petsc-mumps" --output mumps > /dev/null 2> mumps.err || status=$?
+  expected="petsc-mumps spreads one run over the MPI ranks: on more than one rank only 'run' can use it, not 'montecarlo'"
+  if [ "$status" -ne 1 ] || [ "$(grep -c '^poundfe: error' mumps.err)" -ne 1 ] ||
+     ! grep -qF "$expected" mumps.err || [ -e mumps ]; then
+    fail "distributed solver on 2 ranks: exit $status: $(head -c 400 mumps.err)"
+  else
+    echo "ok   a distributed solver for montecarlo on 2 ranks: refused from its row, one message"
+  fi
+fi
 report "--set"
