@@ -1,4 +1,5 @@
 #include <poundfe/dynamics/analysis.h>
+#include <poundfe/commands/command.h>
 #include <poundfe/commands/command_guard.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
@@ -8,6 +9,8 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
+
+#include <deal.II/base/exceptions.h>
 
 #include <fstream>
 #include <stdexcept>
@@ -37,11 +40,12 @@ namespace poundfe
         {
           if (!output_directory_prepared(c.directory))
             prepare_output_directory(c.directory);
-          std::vector<std::string> files = remove_temporaries(c.directory);
-          files.erase(std::remove(files.begin(), files.end(), "summary.json"), files.end());
-          files.push_back("summary.json");
+          const std::string       &summary = c.command.summary;
+          std::vector<std::string> files   = remove_temporaries(c.directory);
+          files.erase(std::remove(files.begin(), files.end(), summary), files.end());
+          files.push_back(summary);
           JsonWriter json;
-          begin_summary(json, c.command, c.input, status);
+          begin_summary(json, c.command.name, c.input, status);
           if (!message.empty())
             json.value("message", message);
           json.begin_object("output")
@@ -49,14 +53,14 @@ namespace poundfe
             .value("files", files)
             .end_object()
             .end_object();
-          write_file_atomically(c.directory + "/summary.json", json.str());
-          return c.directory + "/summary.json says " + status;
+          write_file_atomically(c.directory + "/" + summary, json.str());
+          return c.directory + "/" + summary + " says " + status;
         }
       catch (const OutputError &e)
         {
           remove_temporaries(c.directory); // what a full disk allows
           if (e.what() != message) // not the same error (the directory) twice
-            std::cerr << "poundfe: error: the summary of the " << status << " " << c.command
+            std::cerr << "poundfe: error: the summary of the " << status << " " << c.command.name
                       << " could not be written either: " << e.what() << "\n";
           return "no summary.json";
         }
@@ -73,7 +77,7 @@ namespace poundfe
       for (const MissingFigure &f : missing_figures())
         figures.push_back(f.file + ": " + f.reason);
       forget_missing_figures();
-      const std::string summary = c.directory + "/summary.json";
+      const std::string summary = c.directory + "/" + c.command.summary;
       std::ifstream     in(summary);
       if (!c.writes || figures.empty() || !in)
         return;
@@ -106,10 +110,12 @@ namespace poundfe
     };
     try
       {
-        const Stops stops(c.stops_at_safe_points);
+        Assert(!c.command.summary.empty(),
+               dealii::ExcMessage("a guarded command's row names its summary"));
+        const Stops stops(!c.command.has(CommandRule::own_interruption));
         forget_missing_figures();
         if (c.writes) // one rule for every command: its first file clears the earlier run's
-          expect_output_directory(c.directory, resume_inputs(c.input, c.command),
+          expect_output_directory(c.directory, resume_inputs(c.input, c.command.name),
                                   named_input_files(c.input));
         const int status = body();
         expect_output_directory("");
@@ -119,7 +125,7 @@ namespace poundfe
     catch (const Interrupted &)
       {
         const std::string said = leave_summary(c, "interrupted", "", false);
-        std::cerr << "poundfe: " << c.command << " interrupted"
+        std::cerr << "poundfe: " << c.command.name << " interrupted"
                   << (said.empty() ? "" : " (" + said + ")") << "\n";
         return interrupted_exit_status();
       }

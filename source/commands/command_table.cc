@@ -30,45 +30,56 @@ namespace poundfe
   const std::vector<Command> &
   command_table()
   {
-    // name, arguments, description,
-    // reads parameters, runs over MPI, handles interruption itself, takes --realizations, function
+    // The columns of the rules (CommandRule in command.h): what a row may
+    // be given and what it does.
+    constexpr CommandRules file = CommandRule::reads_file; // one parameter file
+    constexpr CommandRules mpi  = CommandRule::over_mpi;   // splits its work over the ranks
+    constexpr CommandRules own_interruption = CommandRule::own_interruption; // finishes its files
+    constexpr CommandRules realizations     = CommandRule::takes_realizations; // --realizations N
+    constexpr CommandRules distributed_solver = CommandRule::distributed_solver; // on > 1 rank
+    constexpr CommandRules partition = CommandRule::partition_by_building; // Partition = buildings
+    constexpr CommandRules fields    = CommandRule::field_output; // Output/Field format = xdmf
+    constexpr CommandRules resumable = CommandRule::resumable;    // resumes its table
+    constexpr CommandRules none;
+    const std::string      summary = "summary.json"; // what the guard writes
+    // name, arguments, description, rules, summary, function
     static const std::vector<Command> table = {
       {"run", "FILE", "time-history analysis (summary.json, CSV, VTU, PNG)",
-       true, false, true, false, commands::run},
+       file | own_interruption | distributed_solver | partition | fields, summary, commands::run},
       {"modal", "FILE", "frequencies, periods, participating masses, modes.pvd",
-       true, false, false, false, commands::modal},
+       file | fields, summary, commands::modal},
       {"ground-motion", "FILE [--realizations N]",
        "the ground acceleration a run would use (CSV, PNG); with N,\n"
        "realizations 0..N-1 and their ensemble PSD against the target",
-       true, false, false, true, commands::ground_motion},
+       file | realizations, summary, commands::ground_motion},
       {"spectrum", "FILE [--realizations N]",
        "response spectrum (Sd, PSV, PSA), PGA/PGV/PGD, Arias intensity,\n"
        "D5-95 of the ground motion; with N, the ensemble mean spectrum\n"
        "against the Spectrum section's target and the S0 that matches it",
-       true, false, false, true, commands::spectrum},
+       file | realizations, summary, commands::spectrum},
       {"montecarlo", "FILE", "Monte Carlo over the random loading (MPI: mpirun -np P ...)",
-       true, true, true, false, commands::montecarlo},
+       file | mpi | own_interruption | resumable, summary, commands::montecarlo},
       {"subset", "FILE", "Subset Simulation of a small exceedance probability (MPI)",
-       true, true, true, false, commands::subset},
+       file | mpi | own_interruption | resumable, summary, commands::subset},
       {"fragility", "FILE", "Monte Carlo over PGA levels, lognormal fragility curves (MPI)",
-       true, true, true, false, commands::fragility},
+       file | mpi | own_interruption | resumable, summary, commands::fragility},
       {"stationary-pdf", "FILE",
        "stationary PDFs of a noisy response: histogram, kernel density,\n"
        "peaks, joint p(x, v) (MPI)",
-       true, true, true, false, commands::stationary_pdf},
+       file | mpi | own_interruption | resumable, summary, commands::stationary_pdf},
       {"sweep", "FILE",
        "the run's peaks against the values of the Sweep section's\n"
        "parameter (sweep.csv, sweep.png, summary.json)",
-       true, false, true, false, commands::sweep},
+       file | own_interruption, summary, commands::sweep},
       {"bifurcation", "FILE",
        "Poincare samples, their period and the largest Lyapunov\n"
        "exponent against the Bifurcation section's parameter",
-       true, false, true, false, commands::bifurcation},
+       file | own_interruption, summary, commands::bifurcation},
       {"site-hazard", "FILE",
        "site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
        "Poisson fit, return periods, fragility x hazard; the earthquake\n"
        "coefficient, OBE and MCE of a Site study",
-       true, false, false, false, commands::site_hazard},
+       file, summary, commands::site_hazard},
       {"separation", "FILE",
        "joint width of adjacent buildings: ABS, SRSS, DDC, EC8 and\n"
        "ASCE 7 rules against the time history without contact (or\n"
@@ -76,33 +87,33 @@ namespace poundfe
        "random loading, P(pounding) against the gap (MPI)\n"
        "and, with a site hazard, P(pounding in T years) and the gap\n"
        "for a target (Separation/Site hazard)",
-       true, true, true, false, commands::separation},
+       file | mpi | own_interruption | resumable, summary, commands::separation},
       {"mitigation", "FILE",
        "the bare pair against viscous dampers of each size and bumpers\n"
        "(Mitigation section): drifts, floor accelerations, impacts,\n"
        "P(pounding) and the required gap of each case (MPI)",
-       true, true, true, false, commands::mitigation},
+       file | mpi | own_interruption | resumable, summary, commands::mitigation},
       {"reliability", "FILE",
        "failure probability of algebraic limit states (Reliability\n"
        "section): FORM, SORM, importance sampling, Monte Carlo, subset",
-       true, true, true, false, commands::reliability},
+       file | mpi | own_interruption, summary, commands::reliability},
       {"dynamic-form", "FILE",
        "FORM on a time-history limit state (Random parameters):\n"
        "beta, Pf, design point, alpha, number of time histories",
-       true, false, false, false, commands::dynamic_form},
+       file, summary, commands::dynamic_form},
       {"switching", "FILE",
        "Filippov switching analysis of a small model: each hit of a\n"
        "gap, its rate in contact or a slip velocity classified as\n"
        "crossing, sliding (stick), grazing or sliding exit; sliding by\n"
        "the convex method (switching.csv, phase_portrait.png)",
-       true, false, false, false, commands::switching},
+       file, summary, commands::switching},
       {"print-parameters", "", "every parameter with its documentation and default",
-       false, false, false, false, commands::print_parameters},
+       none, "", commands::print_parameters},
       {"template", "KIND",
        "a commented starting file on standard output, KIND one of\n"
        "frame, shear, mesh, pounding, stochastic\n"
        "(poundfe template frame > my-frame.prm)",
-       false, false, false, false, commands::input_template},
+       none, "", commands::input_template},
     };
     return table;
   }
@@ -116,29 +127,25 @@ namespace poundfe
     return nullptr;
   }
 
-  namespace
+  std::string
+  command_names(const CommandRule rule, const std::string &quote)
   {
-    /// The names of the commands with `property`, as "a, b, c and d".
-    std::string
-    names_of(bool Command::*property)
-    {
-      std::vector<std::string> names;
-      for (const Command &command : command_table())
-        if (command.*property)
-          names.push_back(command.name);
-      std::string list;
-      for (std::size_t i = 0; i < names.size(); ++i)
-        list += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
-      return list;
-    }
-  } // namespace
+    std::vector<std::string> names;
+    for (const Command &command : command_table())
+      if (command.has(rule))
+        names.push_back(quote + command.name + quote);
+    std::string list;
+    for (std::size_t i = 0; i < names.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return list;
+  }
 
   std::string
   usage_text()
   {
     const std::size_t  column = 22; // where the descriptions start
     std::ostringstream out;
-    out << "usage: poundfe <command> [FILE] [--output DIR]\n"
+    out << "usage: poundfe <command> [FILE] [--output DIR] [--set Section/Entry=value]...\n"
            "       poundfe --help | --version\n"
            "commands:\n";
     for (const Command &command : command_table())
@@ -154,16 +161,25 @@ namespace poundfe
           out << c << (c == '\n' ? std::string(column, ' ') : "");
         out << "\n";
       }
-    out << "--output DIR overrides the file's 'Output/Directory'. Any other option is an error.\n"
+    out << "--output DIR overrides the file's 'Output/Directory'. --set Section/Entry=value\n"
+           "(repeatable, in order) sets an entry of FILE before it is checked, as the file\n"
+           "would ('Section/Entry:k' sets the k-th field of a list entry). Any other option\n"
+           "is an error. Time integration/Partition = buildings is taken only by "
+        << command_names(CommandRule::partition_by_building, "'")
+        << ",\na distributed linear solver on more than one rank only by "
+        << command_names(CommandRule::distributed_solver, "'")
+        << ", Output/Field\nformat = xdmf only by " << command_names(CommandRule::field_output, "'")
+        << ".\n"
            "Exit status: 0 done (summary.json \"completed\", or \"completed with warnings\"\n"
            "listing the figures gnuplot could not draw), 1 bad input or command line (one\n"
            "message, nothing written), 2 numerical failure (results so far kept; also a\n"
            "result that would be NaN or inf, named), 128 + signal when interrupted.\n"
            "SIGINT (Ctrl-C) or SIGTERM stops "
-        << names_of(&Command::handles_interruption_itself)
+        << command_names(CommandRule::own_interruption)
         << "\nafter the step, value or realizations under way, with the results so far\n"
-           "(status \"interrupted\", exit status 128 + signal); montecarlo, fragility,\n"
-           "stationary-pdf and separation resume when run again, the others start over.\n"
+           "(status \"interrupted\", exit status 128 + signal);\n"
+        << command_names(CommandRule::resumable)
+        << " resume when run again,\nthe others start over.\n"
            "Any other command stops at its next file write or\n"
            "time step: no *.tmp left, summary.json says \"interrupted\". A file that cannot be\n"
            "written (full disk) exits 1 with summary.json \"failed\" and the reason, when it\n"

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <ostream>
+#include <sstream>
 
 namespace poundfe
 {
@@ -53,10 +54,12 @@ namespace poundfe
     {
       if (status.output_failed)
         {
+          std::ostringstream message; // one write: mpirun would interleave pieces with the report
+          message << "poundfe: error: " << status.message << " (the run stopped at t = "
+                  << status.end_time << " s; every other file is complete to that time, "
+                  << "and summary.json says what failed unless it is the file named)\n";
           if (err)
-            *err << "poundfe: error: " << status.message << " (the run stopped at t = "
-                 << status.end_time << " s; every other file is complete to that time, "
-                 << "and summary.json says what failed unless it is the file named)\n";
+            *err << message.str() << std::flush;
           return 1;
         }
       if (status.kind == RunStatus::Kind::failed)

@@ -1,15 +1,14 @@
 // poundfe._core's time history and commands: the command line's own
 // run_time_history (the same observers, files and numbers) with one more
 // observer that calls Python back every N steps, and any command of the
-// command table run as main.cc runs it. The GIL is released while poundfe
+// command table through the command line's own dispatcher. The GIL is released while poundfe
 // steps; the observer takes it back for the callback and, every few hundred
 // steps, to let Ctrl-C (KeyboardInterrupt) stop a run.
 #include "module.h"
 
-#include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/interruption.h>
-#include <poundfe/commands/command_guard.h>
 #include <poundfe/commands/command_table.h>
+#include <poundfe/commands/dispatch.h>
 #include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/report/run_outputs.h>
@@ -165,7 +164,7 @@ namespace poundfe::python
     void
     ensure_mpi()
     {
-      if (mpi != nullptr)
+      if (mpi != nullptr) // (dispatch_command asks only while MPI is not initialised)
         return;
       static int   argc     = 1;
       static char  name[]   = "python";
@@ -174,50 +173,26 @@ namespace poundfe::python
       mpi = new dealii::Utilities::MPI::MPI_InitFinalize(argc, argv, 1);
     }
 
-    /// The commands that take --realizations, for the message.
-    std::string
-    commands_taking_realizations()
-    {
-      std::string names;
-      for (const Command &c : command_table())
-        if (c.takes_realizations)
-          names += (names.empty() ? "" : " and ") + c.name;
-      return names;
-    }
-
-    /// `poundfe NAME ARGUMENTS... [--output DIR] [--realizations N]` as
-    /// main.cc runs it: the table's row, the input read and checked, MPI
-    /// when needed, the output guard. Bad input raises InputError instead of
-    /// exit status 1; returns the exit status otherwise.
+    /// `poundfe NAME ARGUMENTS... [--output DIR] [--realizations N] [--set
+    /// PATH=VALUE]...` through the command line's own dispatcher
+    /// (commands/dispatch.h): the same rules, checks and messages, raised as
+    /// exceptions (a refused command line as ValueError, bad input as
+    /// InputError) instead of exit status 1; returns the exit status otherwise.
     int
     run_command_of_table(const std::string &name, const std::vector<std::string> &arguments,
-                         const std::string &output, const unsigned int n_realizations)
+                         const std::string &output, const unsigned int n_realizations,
+                         const std::vector<std::pair<std::string, std::string>> &overrides)
     {
       const Command *command = find_command(name);
       if (command == nullptr)
         throw py::value_error("unknown command '" + name + "'\n" + usage_text());
-      if (n_realizations > 0 && !command->takes_realizations)
-        throw py::value_error("realizations belongs to " + commands_taking_realizations());
-      if (command->reads_parameters && arguments.size() != 1)
-        throw py::value_error("'" + name + "' needs exactly one parameter file");
+      CommandRequest request{arguments, output, n_realizations, {}};
+      for (const auto &[path, value] : overrides)
+        request.overrides.push_back({path, value});
       int status = 0;
       {
         py::gil_scoped_release release;
-        if (!command->reads_parameters) // print-parameters, template
-          status = command->run({arguments, nullptr, output, 0, MPI_COMM_SELF, std::cerr, std::cout});
-        else
-          {
-            const InputParameters input = read_parameters(arguments[0]);
-            if (command->runs_over_mpi || linear_solver_needs_mpi(input.time_integration.linear_solver))
-              ensure_mpi();
-            const std::string directory = output.empty() ? input.output.directory : output;
-            const GuardedCommand guarded{
-              command->name, input, directory, true, !command->handles_interruption_itself};
-            status = guard_command(guarded, [&]() {
-              return command->run({arguments, &input, directory, n_realizations,
-                                   mpi ? MPI_COMM_WORLD : MPI_COMM_SELF, std::cerr, std::cout});
-            });
-          }
+        status = dispatch_command(*command, request, ensure_mpi, std::cerr);
         std::cout.flush();
       }
       return status;
@@ -250,6 +225,7 @@ namespace poundfe::python
           py::arg("every") = 1, "A time history into `directory`; use poundfe.run.");
     m.def("command", &run_command_of_table, py::arg("name"), py::arg("arguments"),
           py::arg("output") = "", py::arg("realizations") = 0,
+          py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
           "A command of the command table; use poundfe.command.");
     py::module_::import("atexit").attr("register")(py::cpp_function([]() {
       delete mpi;

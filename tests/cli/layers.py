@@ -4,7 +4,11 @@ module's sources and headers names a module of a lower layer than its own,
 or its own, with the layers read from the table of doc/architecture.md (so
 the drawing and the code cannot drift apart). Exit 1 listing every
 offending include. Also: no two source files share a name (a header and
-its source file excepted), so that a file's name says which room it is in."""
+its source file excepted), so that a file's name says which room it is in.
+And no rule is decided by a command's name outside the command table: no
+`name == "run"` (or `command != "modal"`, ...) against a command of
+source/commands/command_table.cc anywhere else in source/ or include/ (the
+rules are the table's columns, commands/command.h)."""
 import glob
 import os
 import re
@@ -45,7 +49,24 @@ for path in glob.glob(os.path.join(root, "source", "**", "*.cc"), recursive=True
 for stem, places in sorted(stems.items()):
     if len(places) > 1:
         bad.append(f"{stem}: a source file of that name in each of {', '.join(sorted(places))}")
+table_file = os.path.join(root, "source", "commands", "command_table.cc")
+commands = re.findall(r'^\s*\{"([a-z][a-z-]*)", "', open(table_file, encoding="utf-8").read(), re.M)
+if len(commands) < 10:
+    bad.append(f"{table_file}: no command rows found")
+literal = "|".join(re.escape(c) for c in commands)
+named = r"\b\w*(?:name|command)\w*(?:\(\))?"
+by_name = re.compile(rf'{named}\s*[!=]=\s*"(?:{literal})"|"(?:{literal})"\s*[!=]=\s*{named}')
+for path in sorted(glob.glob(os.path.join(root, "source", "**", "*.cc"), recursive=True) +
+                   glob.glob(os.path.join(root, "source", "**", "*.py"), recursive=True) +
+                   glob.glob(os.path.join(root, "include", "**", "*.h"), recursive=True)):
+    if os.path.samefile(path, table_file):
+        continue
+    for number, line in enumerate(open(path, encoding="utf-8"), 1):
+        if by_name.search(line):
+            bad.append(f"{path}:{number}: a rule decided by a command's name (make it a column "
+                       f"of the command table): {line.strip()}")
 for b in bad:
     print("FAIL", b)
-print(f"{len(files)} files, {len(layer)} modules: {len(bad)} problems (includes against the layers, shared file names)")
+print(f"{len(files)} files, {len(layer)} modules, {len(commands)} commands: {len(bad)} problems "
+      "(includes against the layers, shared file names, rules by a command's name)")
 sys.exit(1 if bad else 0)

@@ -21,11 +21,11 @@ namespace poundfe
     /// The words after the command's name (`template frame`: {"frame"}).
     const std::vector<std::string> &arguments;
     /// The parameter file, read and checked; nullptr for a command that
-    /// takes none (Command::reads_parameters false).
+    /// takes none (no CommandRule::reads_file).
     const InputParameters *input;
     /// Where the results go (--output, else the file's Output/Directory).
     const std::string &directory;
-    /// --realizations N (0: not given); only for Command::takes_realizations.
+    /// --realizations N (0: not given); only for CommandRule::takes_realizations.
     const unsigned int n_realizations;
     /// MPI_COMM_WORLD for a command that runs over MPI (or whose linear
     /// solver initialised MPI), MPI_COMM_SELF otherwise.
@@ -37,6 +37,69 @@ namespace poundfe
     std::ostream &out;
   };
 
+  /// One rule of a command: a column of the command table. A row lists the
+  /// rules it has (`CommandRule::reads_file | CommandRule::resumable`); the
+  /// dispatcher (dispatch.h), the usage text and the guard ask the row,
+  /// never the command's name.
+  enum class CommandRule : unsigned
+  {
+    /// Takes exactly one parameter file, read (with --set's overrides)
+    /// before the command runs, with interruption and output errors
+    /// handled by guard_command().
+    reads_file = 1u << 0,
+    /// Splits its work over the MPI ranks (MPI initialised at start).
+    over_mpi = 1u << 1,
+    /// Finishes its own files on SIGINT/SIGTERM (polls
+    /// interruption_requested()); otherwise it stops at the next safe point.
+    own_interruption = 1u << 2,
+    /// Accepts --realizations N.
+    takes_realizations = 1u << 3,
+    /// May use a linear solver that spreads one run over the ranks
+    /// (petsc-mumps, ...) on more than one rank; the others give each rank
+    /// its own runs.
+    distributed_solver = 1u << 4,
+    /// May take Time integration/Partition = buildings (one run, a rank's
+    /// buildings on each rank).
+    partition_by_building = 1u << 5,
+    /// Writes fields (VTU, or HDF5 + XDMF with Output/Field format = xdmf).
+    field_output = 1u << 6,
+    /// Resumes from the table an earlier run left in its output directory.
+    resumable = 1u << 7,
+  };
+
+  /// A set of rules, written `CommandRule::a | CommandRule::b`.
+  class CommandRules
+  {
+  public:
+    constexpr CommandRules() = default;
+    /// Not explicit: one rule is a set of one.
+    constexpr CommandRules(const CommandRule rule)
+      : bits(static_cast<unsigned>(rule))
+    {}
+
+    constexpr bool
+    has(const CommandRule rule) const
+    {
+      return (bits & static_cast<unsigned>(rule)) != 0;
+    }
+
+    friend constexpr CommandRules
+    operator|(CommandRules a, const CommandRules b)
+    {
+      a.bits |= b.bits;
+      return a;
+    }
+
+  private:
+    unsigned bits = 0;
+  };
+
+  constexpr CommandRules
+  operator|(const CommandRule a, const CommandRule b)
+  {
+    return CommandRules(a) | CommandRules(b);
+  }
+
   struct Command
   {
     /// The name on the command line: `poundfe NAME ...`.
@@ -45,18 +108,20 @@ namespace poundfe
     std::string arguments;
     /// One or more lines of the usage text (without indentation).
     std::string description;
-    /// Takes exactly one parameter file, read before the command runs, with
-    /// interruption and output errors handled by guard_command().
-    bool reads_parameters = true;
-    /// Splits its work over the MPI ranks (MPI initialised at start).
-    bool runs_over_mpi = false;
-    /// Finishes its own files on SIGINT/SIGTERM (polls
-    /// interruption_requested()); otherwise it stops at the next safe point.
-    bool handles_interruption_itself = false;
-    /// Accepts --realizations N.
-    bool takes_realizations = false;
+    /// What it may be given and what it does (CommandRule).
+    CommandRules rules;
+    /// The file the guard writes when the command stops early, and whose
+    /// status it turns into "completed with warnings" ("summary.json"; ""
+    /// for a command that reads no file and runs unguarded).
+    std::string summary;
     /// Runs the command; returns the exit status.
     int (*run)(const CommandRun &) = nullptr;
+
+    bool
+    has(const CommandRule rule) const
+    {
+      return rules.has(rule);
+    }
   };
 } // namespace poundfe
 

@@ -17,11 +17,11 @@
 //  - after it returns: figures gnuplot did not draw turn summary.json's
 //    "completed" into "completed with warnings", with "missing_figures".
 // The summary lists in "files" the complete files the command left. When
-// even summary.json cannot be written, stderr says so. `run`, montecarlo,
-// subset, fragility, stationary-pdf and separation handle a signal
-// themselves (they write their results so far: Command::
-// handles_interruption_itself in the command table); the guard covers their
-// output errors. Bad input (InputError) passes untouched: nothing written.
+// even summary.json cannot be written, stderr says so. The commands whose
+// row has CommandRule::own_interruption (run, montecarlo, subset, ...)
+// handle a signal themselves (they write their results so far); the guard
+// covers their output errors. The summary's name is the row's `summary`.
+// Bad input (InputError) passes untouched: nothing written.
 #ifndef poundfe_commands_command_guard_h
 #define poundfe_commands_command_guard_h
 
@@ -30,18 +30,20 @@
 
 namespace poundfe
 {
+  struct Command;
   struct InputParameters;
 
   struct GuardedCommand
   {
-    std::string            command;   // "modal"
+    /// The command's row: its name, how it stops on a signal
+    /// (CommandRule::own_interruption: it polls interruption_requested()
+    /// and finishes its files itself; otherwise it stops at safe points)
+    /// and the summary it leaves.
+    const Command         &command;
     const InputParameters &input;
     std::string            directory; // the output directory
     /// This process writes the files (rank 0 of an MPI command).
     bool writes = true;
-    /// The command stops at safe points on a signal; false: it polls
-    /// interruption_requested() and finishes its files itself.
-    bool stops_at_safe_points = true;
   };
 
   /// Runs `body` (the command) and returns its exit status, or that of a

@@ -34,9 +34,13 @@ def read(file, overrides=None):
     before the checks as `poundfe sweep` does; "Section/Entry:k" sets the
     k-th field of a list entry. Raises InputError naming file, line and
     parameter."""
+    return _core.read(os.fspath(file), _override_pairs(overrides))
+
+
+def _override_pairs(overrides):
+    """(path, text) pairs of a dict or of (path, value) pairs (None: none)."""
     items = overrides.items() if isinstance(overrides, dict) else (overrides or [])
-    pairs = [(str(path), _value_text(value)) for path, value in items]
-    return _core.read(os.fspath(file), pairs)
+    return [(str(path), _value_text(value)) for path, value in items]
 
 
 def _input_of(model):
@@ -82,11 +86,16 @@ def run(model, output=None, callback=None, every=1):
     return results
 
 
-def command(name, *arguments, output=None, realizations=None):
+def command(name, *arguments, output=None, realizations=None, overrides=None):
     """Run a command of the command line exactly as `poundfe NAME ARGUMENTS
-    [--output DIR] [--realizations N]` does, e.g.
-    poundfe.command("sweep", "input/two-buildings.prm", output="results/sweep").
+    [--output DIR] [--realizations N] [--set PATH=VALUE]...` does (the same
+    dispatcher, rules and messages), e.g.
+    poundfe.command("sweep", "input/two-buildings.prm", output="results/sweep",
+                    overrides={"Model/Separations": 0.02}).
+    overrides: {"Section/Entry": value} (or (path, value) pairs), as read()'s.
     Returns the exit status (0; 2 after a numerical failure, the files so far
-    kept); bad input raises InputError and writes nothing."""
+    kept); bad input raises InputError and writes nothing, a command line
+    the command refuses raises ValueError with the command line's message."""
     return _core.command(name, [os.fspath(a) for a in arguments],
-                         "" if output is None else os.fspath(output), realizations or 0)
+                         "" if output is None else os.fspath(output), realizations or 0,
+                         _override_pairs(overrides))

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# --set Section/Entry=value on the command line (doc/user-guide.md, "The
+# command line"; commands/dispatch.h):
+#  1. the overrides take effect: a run and a modal analysis with --set give
+#     byte for byte the files of the same file edited the same way (the
+#     summary equal but for the input's name);
+#  2. applied in order: the last --set of an entry wins;
+#  3. an unknown entry or section is refused with the reader's own message
+#     (that of poundfe.read's overrides: tests/python/test_command_rules.py
+#     compares the two), a value out of range names the
+#     entry, a malformed --set and --set for a command that reads no file
+#     are refused: exit 1, one line, nothing written (tests/cli/expect.sh);
+#  4. the distributed-solver column (several ranks only, so not in Python's
+#     tests): montecarlo with petsc-mumps on 2 ranks refused, one message.
+#   set_option.sh POUNDFE SOURCE_DIR
+set -u
+poundfe=$(readlink -f "$1") source=$(readlink -f "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+. "$source/tests/cli/expect.sh"
+
+base=$source/input/three-storey-shear.prm
+# the file with the stiffness changed, plots and VTU off, 4 s long
+sed -e 's/set Storey stiffnesses = 5e6/set Storey stiffnesses = 3.5e6, 4e6, 4.5e6/' \
+    -e 's/set Duration   = 15/set Duration   = 4/' \
+    -e 's/set VTU interval    = 0.1/set VTU interval    = 0\n  set Plots = false/' "$base" > edited.prm
+cmp -s "$base" edited.prm && fail "edited.prm: the sed expressions changed nothing"
+sets=(--set "Building 1/Storey stiffnesses=3.5e6, 4e6, 4.5e6"
+      --set "Ground motion/Stochastic/Duration=4"
+      --set "Output/VTU interval=0" --set "Output/Plots=false")
+
+same_output() { # label directory-from-file directory-from-set
+  diff -r -q -x summary.json "$2" "$3" > /dev/null ||
+    { fail "$1: $(diff -r -q -x summary.json "$2" "$3")"; return; }
+  python3 - "$2/summary.json" "$3/summary.json" <<'EOF' || { fail "$1: summary.json differs"; return; }
+import json, sys
+def kept(s):  # without the input's name, the output directory and the clock
+    if isinstance(s, dict):
+        return {k: kept(v) for k, v in s.items()
+                if k not in ("input", "directory", "wall_time_s", "steps_per_second")}
+    return [kept(v) for v in s] if isinstance(s, list) else s
+a, b = (kept(json.load(open(f))) for f in sys.argv[1:])
+sys.exit(a != b)
+EOF
+  n=$((n + 1))
+  echo "ok   $1: the files of --set equal those of the edited file"
+}
+
+for command in run modal; do
+  "$poundfe" $command edited.prm --output "file-$command" > /dev/null 2>&1 ||
+    fail "$command edited.prm failed"
+  "$poundfe" $command "$base" "${sets[@]}" --output "set-$command" > /dev/null 2>&1 ||
+    fail "$command --set failed"
+  same_output "$command" "file-$command" "set-$command"
+done
+# the overrides are not the file's values: the unedited file differs
+"$poundfe" modal "$base" --output plain > /dev/null 2>&1 || fail "modal of the file failed"
+cmp -s plain/summary.json set-modal/summary.json && fail "--set changed nothing in modal"
+
+# applied in order: a first value of the same entry is overridden by the second
+"$poundfe" modal "$base" --set "Building 1/Storey stiffnesses=1e9" "${sets[@]}" \
+  --output twice > /dev/null 2>&1 || fail "modal with an entry set twice failed"
+same_output "the last --set of an entry wins" file-modal twice
+
+# refused as the reader refuses an override (read_parameters), nothing written
+expect 1 "parameter 'Building 1/Storey stiffnes': override: there is no such parameter" \
+  modal "$base" --set "Building 1/Storey stiffnes=4e6" --output out
+expect 1 "parameter 'Buildin 1/Storey stiffnesses': override: there is no such section" \
+  modal "$base" --set "Buildin 1/Storey stiffnesses=4e6" --output out
+expect 1 "override value 'often' is not allowed" \
+  run "$base" --set "Output/Plots=often" --output out
+expect 1 "Building 1/Damping/Damping ratio" \
+  run "$base" --set "Building 1/Damping/Damping ratio=-0.5" --output out
+expect 1 "Time integration/Time step" run "$base" --set "Time integration/Time step=-1" --output out
+expect 1 "--set needs Section/Entry=value, got 'Output/Plots'" \
+  run "$base" --set "Output/Plots" --output out
+expect 1 "--set needs a value" run "$base" --set
+expect 1 "--set sets an entry of a parameter file, and 'template' reads none" \
+  template frame --set "Output/Plots=false"
+
+# the distributed-solver column, which only a job of several ranks can meet
+# (Python runs one process): montecarlo on 2 ranks with petsc-mumps, refused
+# by rank 0 alone, nothing written
+if command -v mpirun > /dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  n=$((n + 1))
+  status=0
+  mpirun -np 2 "$poundfe" montecarlo "$source/tests/cli/montecarlo-small.prm" \
+    --set "Time integration/Linear solver=petsc-mumps" --output mumps > /dev/null 2> mumps.err || status=$?
+  expected="petsc-mumps spreads one run over the MPI ranks: on more than one rank only 'run' can use it, not 'montecarlo'"
+  if [ "$status" -ne 1 ] || [ "$(grep -c '^poundfe: error' mumps.err)" -ne 1 ] ||
+     ! grep -qF "$expected" mumps.err || [ -e mumps ]; then
+    fail "distributed solver on 2 ranks: exit $status: $(head -c 400 mumps.err)"
+  else
+    echo "ok   a distributed solver for montecarlo on 2 ranks: refused from its row, one message"
+  fi
+fi
+report "--set"
