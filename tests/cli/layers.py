@@ -4,7 +4,9 @@ module's sources and headers names a module of a lower layer than its own,
 or its own, with the layers read from the table of doc/architecture.md (so
 the drawing and the code cannot drift apart). Exit 1 listing every
 offending include. Also: no two source files share a name (a header and
-its source file excepted), so that a file's name says which room it is in."""
+its source file excepted), so that a file's name says which room it is in.
+And one time loop: no loop of source/ but TimeHistory::run
+(source/dynamics/time_history.cc) advances a time stepper step by step."""
 import glob
 import os
 import re
@@ -45,7 +47,42 @@ for path in glob.glob(os.path.join(root, "source", "**", "*.cc"), recursive=True
 for stem, places in sorted(stems.items()):
     if len(places) > 1:
         bad.append(f"{stem}: a source file of that name in each of {', '.join(sorted(places))}")
+
+
+def without_comments(text):
+    """`text` with its comments and string literals blanked (lines kept)."""
+    pattern = re.compile(r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"', re.S)
+    return pattern.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+
+
+def closing(text, start, pair):
+    """The index after the bracket that closes the one at `start`."""
+    depth = 0
+    for i in range(start, len(text)):
+        depth += (text[i] == pair[0]) - (text[i] == pair[1])
+        if depth == 0:
+            return i + 1
+    return len(text)
+
+
+# A time stepper's step (advance() of a history, advance(load) or
+# advance([...]) of an integrator) inside the body of a for or while loop.
+STEP = re.compile(r"(?:\.|->)\s*advance\s*\(\s*(?:\)|load\b|\[)")
+TIME_LOOP = os.path.join("source", "dynamics", "time_history.cc")
+for path in sorted(glob.glob(os.path.join(root, "source", "**", "*.cc"), recursive=True)):
+    if os.path.relpath(path, root) == TIME_LOOP:
+        continue
+    text = without_comments(open(path, encoding="utf-8").read())
+    for loop in re.finditer(r"\b(?:for|while)\s*\(", text):
+        header_end = closing(text, loop.end() - 1, "()")
+        brace = re.match(r"\s*\{", text[header_end:])
+        body_end = closing(text, header_end + brace.end() - 1, "{}") if brace else \
+            text.find(";", header_end) + 1
+        if STEP.search(text, header_end, body_end):
+            line = text.count("\n", 0, loop.start()) + 1
+            bad.append(f"{path}:{line}: a loop over time steps outside TimeHistory::run "
+                       f"({TIME_LOOP}): step through TimeHistory with a TimeStepper instead")
 for b in bad:
     print("FAIL", b)
-print(f"{len(files)} files, {len(layer)} modules: {len(bad)} problems (includes against the layers, shared file names)")
+print(f"{len(files)} files, {len(layer)} modules: {len(bad)} problems (includes against the layers, shared file names, loops over time steps)")
 sys.exit(1 if bad else 0)
