@@ -118,22 +118,52 @@ namespace poundfe
     , time_integration(parameters.time_integration)
     , ground_motion(parameters.ground_motion)
     , elements(make_nonlinear_elements(analysis_.model))
-    , integrator(analysis_.system,
-                 linear_solver.empty() ? time_integration.linear_solver : linear_solver,
-                 time_integration.newmark, &elements)
+    , integrator(std::make_unique<NewmarkIntegrator>(
+        analysis_.system, linear_solver.empty() ? time_integration.linear_solver : linear_solver,
+        time_integration.newmark, &elements))
     , dopri(make_dormand_prince(analysis_.system, parameters, elements))
-    , stepper(dopri ? static_cast<TimeStepper &>(*dopri) : integrator)
+    , stepper(dopri ? static_cast<TimeStepper &>(*dopri) : *integrator)
     , view(analysis_.model, analysis_.system, elements, stepper)
     , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
   {
-    integrator.set_equation_names(equation_names(analysis_.model));
+    integrator->set_equation_names(equation_names(analysis_.model));
     // known before the observers are made (the recorders choose their columns)
     view.set_vertical_ground_motion(parameters.ground_motion.has_vertical());
+  }
+
+  TimeHistory::TimeHistory(const Analysis &analysis_, const TimeHistoryParameters &parameters,
+                           LockstepStepper &lockstep_stepper)
+    : analysis(analysis_)
+    , input(parameters.input)
+    , time_integration(parameters.time_integration)
+    , ground_motion(parameters.ground_motion)
+    , stepper(lockstep_stepper)
+    , lockstep(&lockstep_stepper)
+    , view(analysis_.model, analysis_.system, lockstep_stepper.observed_elements(), stepper)
+    , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
+  {
+    lockstep_stepper.set_observed(view);
+    view.set_vertical_ground_motion(parameters.ground_motion.has_vertical());
+  }
+
+  std::string
+  TimeHistory::tangent_update() const
+  {
+    Assert(integrator, dealii::ExcMessage("a lockstep stepper's run: its own tangent update"));
+    return tangent_update_names().name(integrator->tangent_update());
+  }
+
+  std::string
+  TimeHistory::linear_solver_name() const
+  {
+    Assert(integrator, dealii::ExcMessage("a lockstep stepper's run: its own linear solver"));
+    return integrator->linear_solver_name();
   }
 
   void
   TimeHistory::replace_nonlinear_elements(const Model &model)
   {
+    Assert(!lockstep, dealii::ExcMessage("a lockstep stepper's elements are its own"));
     NonlinearElements fresh = make_nonlinear_elements(model);
     AssertDimension(fresh.size(), elements.size());
     elements = std::move(fresh); // the same object: the integrator points to it
@@ -183,6 +213,28 @@ namespace poundfe
     return run(initial.displacement, initial.velocity, excitation, observers, interruptible);
   }
 
+  bool
+  TimeHistory::stops_before(const unsigned long step, const unsigned long n,
+                            const bool interruptible, RunStatus &status) const
+  {
+    if (lockstep) // the ranks agree, also once after the last step
+      return lockstep->agreed_stop(interruptible, status);
+    if (step > n || !(interruptible && stop_requested(MPI_COMM_WORLD)))
+      return false;
+    status.kind = RunStatus::Kind::interrupted;
+    return true;
+  }
+
+  void
+  TimeHistory::observe(const Observation call, const Observers &observers)
+  {
+    if (lockstep)
+      lockstep->observe(call, observers, view);
+    else
+      for (StepObserver *observer : observers)
+        (observer->*call)(view);
+  }
+
   RunStatus
   TimeHistory::run(const Vector &u0, const Vector &v0, const Excitation &excitation,
                    const Observers &observers, const bool interruptible)
@@ -194,15 +246,13 @@ namespace poundfe
     load(0, p0);
     stepper.initialize(p0, u0, v0);
     view.set_step(0, excitation.ground_acceleration_vector(0));
-    for (StepObserver *observer : observers)
-      observer->initialize(view);
+    observe(&StepObserver::initialize, observers);
 
     RunStatus     status;
     unsigned long step = 0;
     stepper.set_substep_callback([&]() {
       view.set_step(step, excitation.ground_acceleration_vector(stepper.time()));
-      for (StepObserver *observer : observers)
-        observer->observe_substep(view);
+      observe(&StepObserver::observe_substep, observers);
     });
     struct Forget // the callback refers to this call's locals
     {
@@ -212,18 +262,12 @@ namespace poundfe
     const auto start = std::chrono::steady_clock::now();
     try
       {
-        for (step = 1; step <= n; ++step)
+        for (step = 1; !stops_before(step, n, interruptible, status) && step <= n; ++step)
           {
-            if (interruptible && stop_requested(MPI_COMM_WORLD))
-              {
-                status.kind = RunStatus::Kind::interrupted;
-                break;
-              }
             throw_if_interrupted(); // a command that stops at safe points (sweep, ...)
             stepper.advance(load);
             view.set_step(step, excitation.ground_acceleration_vector(step * dt));
-            for (StepObserver *observer : observers)
-              observer->observe_step(view);
+            observe(&StepObserver::observe_step, observers);
           }
       }
     catch (const RunStopped &) // an observer's interruption: finished as one
@@ -244,7 +288,8 @@ namespace poundfe
     status.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     status.steps     = stepper.steps();
     status.end_time  = stepper.time();
-    finish_observers(observers, view, status);
+    if (!lockstep || lockstep->merged(observers, view, status))
+      finish_observers(observers, view, status);
     return status;
   }
 

@@ -8,7 +8,9 @@ its source file excepted), so that a file's name says which room it is in.
 And no rule is decided by a command's name outside the command table: no
 `name == "run"` (or `command != "modal"`, ...) against a command of
 source/commands/command_table.cc anywhere else in source/ or include/ (the
-rules are the table's columns, commands/command.h)."""
+rules are the table's columns, commands/command.h). And one time loop: no
+loop of source/ but TimeHistory::run (source/dynamics/time_history.cc)
+advances a time stepper step by step."""
 import glob
 import os
 import re
@@ -65,8 +67,44 @@ for path in sorted(glob.glob(os.path.join(root, "source", "**", "*.cc"), recursi
         if by_name.search(line):
             bad.append(f"{path}:{number}: a rule decided by a command's name (make it a column "
                        f"of the command table): {line.strip()}")
+
+
+def without_comments(text):
+    """`text` with its comments and string literals blanked (lines kept)."""
+    pattern = re.compile(r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"', re.S)
+    return pattern.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+
+
+def closing(text, start, pair):
+    """The index after the bracket that closes the one at `start`."""
+    depth = 0
+    for i in range(start, len(text)):
+        depth += (text[i] == pair[0]) - (text[i] == pair[1])
+        if depth == 0:
+            return i + 1
+    return len(text)
+
+
+# A time stepper's step (advance() of a history, advance(load) or
+# advance([...]) of an integrator) inside the body of a for or while loop.
+STEP = re.compile(r"(?:\.|->)\s*advance\s*\(\s*(?:\)|load\b|\[)")
+TIME_LOOP = os.path.join("source", "dynamics", "time_history.cc")
+for path in sorted(glob.glob(os.path.join(root, "source", "**", "*.cc"), recursive=True)):
+    if os.path.relpath(path, root) == TIME_LOOP:
+        continue
+    text = without_comments(open(path, encoding="utf-8").read())
+    for loop in re.finditer(r"\b(?:for|while)\s*\(", text):
+        header_end = closing(text, loop.end() - 1, "()")
+        brace = re.match(r"\s*\{", text[header_end:])
+        body_end = closing(text, header_end + brace.end() - 1, "{}") if brace else \
+            text.find(";", header_end) + 1
+        if STEP.search(text, header_end, body_end):
+            line = text.count("\n", 0, loop.start()) + 1
+            bad.append(f"{path}:{line}: a loop over time steps outside TimeHistory::run "
+                       f"({TIME_LOOP}): step through TimeHistory with a TimeStepper instead")
 for b in bad:
     print("FAIL", b)
 print(f"{len(files)} files, {len(layer)} modules, {len(commands)} commands: {len(bad)} problems "
-      "(includes against the layers, shared file names, rules by a command's name)")
+      "(includes against the layers, shared file names, rules by a command's name, "
+      "loops over time steps)")
 sys.exit(1 if bad else 0)

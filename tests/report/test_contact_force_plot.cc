@@ -1,4 +1,4 @@
-// contact_force.png's curves (report/run_summary.h: contact_force_plot) from
+// contact_force.png's curves (report/run_plots.h: contact_force_plot) from
 // a contact_force.csv written here by CsvWriter:
 //  - up to max_named_curves gaps: a curve per gap, read by gnuplot from the
 //    file (column 2g + 2, in kN), titled with the gap's label;
@@ -10,7 +10,7 @@
 //  - more pairs than that too: the max_named_curves pairs with the largest
 //    peaks, in the order of their names, and the title says so.
 #include <poundfe/output/csv_writer.h>
-#include <poundfe/report/run_summary.h>
+#include <poundfe/report/run_plots.h>
 
 #include "../output/output_test_files.h"
 

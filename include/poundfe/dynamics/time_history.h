@@ -1,5 +1,7 @@
 // The time loop: the time-history engine of one model and the excitation
-// it runs under. (A run with the standard outputs: report/run_outputs.h.)
+// it runs under, the one loop over steps of the program (a run partitioned
+// by building steps through it too, with a LockstepStepper). (A run with the
+// standard outputs: report/run_outputs.h.)
 #ifndef poundfe_dynamics_run_h
 #define poundfe_dynamics_run_h
 
@@ -33,6 +35,37 @@ namespace poundfe
     InitialConditionParameters initial_conditions;
   };
 
+  /// One observation of every observer: initialize, observe_step or observe_substep.
+  using Observation = void (StepObserver::*)(const ResponseView &);
+
+  /// A stepper that advances with the other ranks of a communicator in
+  /// lockstep, each rank its own part of the model (a run partitioned by
+  /// building: dynamics/partitioned_stepper.h). TimeHistory::run steps it
+  /// in its one loop; at the loop's collective points (before each step
+  /// and once after the last, each observation, the end) it lets the ranks
+  /// agree through these calls, made in the same order on every rank.
+  class LockstepStepper : public TimeStepper
+  {
+  public:
+    /// The whole model's nonlinear elements, which the observers see.
+    virtual const NonlinearElements &observed_elements() const = 0;
+    /// What this rank observes of the model, into `view` (ResponseView::set_observed).
+    virtual void set_observed(ResponseView &view) const = 0;
+    /// Before each step and once after the last: false when every rank goes
+    /// on, else true with `status` saying why all stop (a signal when
+    /// `interruptible`, a rank whose replay or observers failed). Collective.
+    virtual bool agreed_stop(bool interruptible, RunStatus &status) = 0;
+    /// `call` of `observers` on `view`, unless this rank stopped (a failure
+    /// is kept for agreed_stop, never thrown), then what they gave the
+    /// other ranks exchanged. Collective.
+    virtual void observe(Observation call, const Observers &observers, const ResponseView &view) = 0;
+    /// At the end: the ranks' observations merged (collective; `status`
+    /// takes the run's end and any failure of the ranks' share of
+    /// finishing); true on the rank whose observers finish, reading the
+    /// merged values through `view`.
+    virtual bool merged(const Observers &observers, ResponseView &view, RunStatus &status) = 0;
+  };
+
   /// The time-history engine of one model: the nonlinear elements and the
   /// integrator (with its factorisations) are set up once, and each run()
   /// starts again from the input's initial conditions (rest by default).
@@ -43,6 +76,12 @@ namespace poundfe
     /// `linear_solver` empty: the input's (Time integration/Linear solver).
     TimeHistory(const Analysis &analysis, const TimeHistoryParameters &parameters,
                 const std::string &linear_solver = "");
+    /// The loop over `stepper`, made by the caller, which steps this rank's
+    /// part of the model with the other ranks (it must outlive this object):
+    /// no integrator of its own. The observers see the stepper's state of
+    /// the whole model.
+    TimeHistory(const Analysis &analysis, const TimeHistoryParameters &parameters,
+                LockstepStepper &stepper);
     TimeHistory(const TimeHistory &) = delete;
     TimeHistory &operator=(const TimeHistory &) = delete;
 
@@ -62,12 +101,10 @@ namespace poundfe
 
     /// The view observers read; valid for the life of this object.
     const ResponseView &state() const { return view; }
-    const NonlinearElements &nonlinear_elements() const { return elements; }
-    std::string tangent_update() const
-    {
-      return tangent_update_names().name(integrator.tangent_update());
-    }
-    std::string linear_solver_name() const { return integrator.linear_solver_name(); }
+    const NonlinearElements &nonlinear_elements() const { return view.elements; }
+    /// The integrator's choices (not with a LockstepStepper: its own).
+    std::string tangent_update() const;
+    std::string linear_solver_name() const;
 
     /// Steps of the analysis time step to the end time.
     unsigned long n_steps(const Excitation &excitation) const;
@@ -79,15 +116,23 @@ namespace poundfe
     void replace_nonlinear_elements(const Model &model);
 
   private:
+    /// Whether the run stops before step `step` of `n` (after the last:
+    /// step > n); `status` then says why.
+    bool stops_before(unsigned long step, unsigned long n, bool interruptible,
+                      RunStatus &status) const;
+    /// `call` of every observer (through the lockstep stepper, if any).
+    void observe(Observation call, const Observers &observers);
+
     const Analysis   &analysis;
     const InputFile   input;            // for messages about the end time
     const TimeIntegrationParameters time_integration;
     const GroundMotionParameters ground_motion; // what sets the end without an End time
-    NonlinearElements elements; // before the integrator, which points to them
-    NewmarkIntegrator integrator;
+    NonlinearElements elements; // before the integrator, which points to them (empty: lockstep)
+    std::unique_ptr<NewmarkIntegrator> integrator; // null with a lockstep stepper
     /// Time integration/Method = dopri: the integrator that runs (null: Newmark).
     std::unique_ptr<DormandPrinceIntegrator> dopri;
-    TimeStepper      &stepper; // integrator or *dopri
+    TimeStepper      &stepper; // *integrator, *dopri or *lockstep
+    LockstepStepper  *lockstep = nullptr;
     ResponseView      view;
     const InitialState initial; // checked against the model on construction
   };

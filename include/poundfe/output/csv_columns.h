@@ -3,7 +3,7 @@
 // file once per curve, which for a wide table (a city block's hinges.csv:
 // 29,197 columns, 63 MB) takes most of a second per curve, so the figures
 // of a few of its columns are given to gnuplot as data blocks of those
-// columns alone (report/run_summary.h).
+// columns alone (report/run_plots.h).
 #ifndef poundfe_output_csv_columns_h
 #define poundfe_output_csv_columns_h
 

@@ -34,7 +34,7 @@ namespace poundfe
     void finish(const ResponseView &state, const RunStatus &status) override;
     /// Observation by rank, before finish(): each floor's peaks from the
     /// rank that owns its building, on rank 0. Collective.
-    void merge(const RankMerge &ranks);
+    void merge(const RankMerge &ranks) override;
 
     static constexpr const char *file_name = "floor_spectra.csv";
     /// Column of floor f (FloorResponse index) at damping d; 1-based, for gnuplot.

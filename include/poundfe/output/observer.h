@@ -131,6 +131,11 @@ namespace poundfe
     /// in time, an event located, a step halved to converge): for what
     /// must not miss a peak between steps. Recorders keep to the steps.
     virtual void observe_substep(const ResponseView &) {}
+    /// Observation by rank (a run partitioned by building): what this rank
+    /// observed of its own part, merged on rank 0 after the last step and
+    /// before finish(). Collective, in the order of the observers, alike on
+    /// every rank; nothing for an observer that merges nothing.
+    virtual void merge(const RankMerge &) {}
     virtual void finish(const ResponseView &, const RunStatus &) {}
   };
 

@@ -35,7 +35,7 @@ namespace poundfe
     /// Observation by rank, before finish(): the floors' (along x and y),
     /// the plan's and the elements' peaks from the ranks that own them, on
     /// rank 0. Collective.
-    void merge(const RankMerge &ranks);
+    void merge(const RankMerge &ranks) override;
 
     /// The floor response at the last observed step and its peaks.
     const FloorResponse &floors() const { return floor_response; }

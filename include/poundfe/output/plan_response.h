@@ -44,7 +44,7 @@ namespace poundfe
     void reset();
     /// Observation by rank: each building's peaks and corner accelerations
     /// from the rank that owns it, on rank 0. Collective.
-    void merge(const RankMerge &ranks);
+    void merge(const RankMerge &ranks) override;
 
     struct Storey
     {

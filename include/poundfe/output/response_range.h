@@ -39,7 +39,7 @@ namespace poundfe
     void observe_substep(const ResponseView &state) override { observe_step(state); }
     /// Observation by rank, before warnings(): each building's peak
     /// rotation from the rank that owns it, on rank 0. Collective.
-    void merge(const RankMerge &ranks);
+    void merge(const RankMerge &ranks) override;
 
     /// The warnings over the steps observed so far (the peaks' too).
     std::vector<std::string> warnings() const;

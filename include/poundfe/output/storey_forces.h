@@ -108,7 +108,7 @@ namespace poundfe
     void observe_substep(const ResponseView &state) override { observe_step(state); }
     /// Observation by rank: each building's peak from the rank that owns
     /// it, on rank 0. Collective.
-    void merge(const RankMerge &ranks)
+    void merge(const RankMerge &ranks) override
     {
       ranks.owned(Owner::building, peak_shear);
       ranks.owned(Owner::building, peak_time);

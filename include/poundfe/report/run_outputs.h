@@ -52,10 +52,11 @@ namespace poundfe
   /// The same over the ranks of `communicator`, the model partitioned by
   /// building (Time integration/Partition = buildings; theory §3.5d):
   /// `analysis` is this rank's part (prepare_rank_analysis), which the run
-  /// takes over. Each rank steps its own buildings; after every accepted
-  /// (sub)step each rank replays the elements it observes through its own
-  /// values and ghosts (integration/replayed_stepper.h) and runs the
-  /// standard observers on its part; the recorders' rows and field frames
+  /// takes over. The same time loop (TimeHistory) over a PartitionedStepper
+  /// (dynamics/partitioned_stepper.h): each rank steps its own buildings;
+  /// after every accepted (sub)step each rank replays the elements it
+  /// observes through its own values and ghosts (integration/replayed_stepper.h)
+  /// and runs the standard observers on its part; the recorders' rows and field frames
   /// go to rank 0 summed by owner, and the peaks, logs and work are merged
   /// there at the end (observation by rank: base/rank_merge.h), so rank 0
   /// writes the files of a one-process run and the other ranks write

@@ -1,8 +1,8 @@
 // The run's closing outputs, written when the time history ends (also
 // after a failure or an interruption): summary.json, impacts.csv, the peak
-// profiles (drift_profile.csv, acceleration_profile.csv) and the PNG plots
-// of whatever CSV time series the recorders wrote. summary.json's `files`
-// lists every file the run wrote.
+// profiles (drift_profile.csv, acceleration_profile.csv) and, drawn by
+// RunPlots (report/run_plots.h), the PNG plots of whatever CSV time series
+// the recorders wrote. summary.json's `files` lists every file the run wrote.
 #ifndef poundfe_report_run_summary_h
 #define poundfe_report_run_summary_h
 
@@ -13,7 +13,6 @@
 #include <poundfe/output/observer.h>
 
 #include <poundfe/output/plan_response.h>
-#include <poundfe/output/plots.h>
 #include <poundfe/output/storey_forces.h>
 
 #include <array>
@@ -33,17 +32,6 @@ namespace poundfe
   /// Building b's damping: its Type, the Rayleigh coefficients (0 for modal
   /// damping) and, for modal damping, the ratio it gives each damped mode.
   void write_damping(JsonWriter &json, const Analysis &analysis, unsigned int b);
-
-  /// Curves a figure's key can name: a figure with more draws groups of them.
-  constexpr unsigned int max_named_curves = 12;
-
-  /// contact_force.png from <directory>/contact_force.csv: a curve per gap
-  /// element when there are at most max_named_curves, else a curve per pair
-  /// of buildings (or a building and a barrier) with gaps between them, the
-  /// total force of its gaps (of the max_named_curves pairs with the largest
-  /// peaks, when there are more), read from the file in one pass and given
-  /// to gnuplot as data blocks. Without a readable file: no curves.
-  Plot contact_force_plot(const Model &model, const std::string &directory);
 
   class RunSummary : public StepObserver
   {
@@ -81,31 +69,10 @@ namespace poundfe
     /// "analysis" (the integrator, steps, solver, wall time) and "output".
     void write_run(JsonWriter &json, const RunStatus &status,
                    const std::vector<std::string> &files) const;
-    /// The plots; returns the files drawn.
-    std::vector<std::string> draw(const ResponseView &state) const;
-    /// Whether this run writes `file` (not: whether it exists).
-    bool writes(const std::string &file) const;
     /// The drift limits of the input against building b's peak drift ratios.
     std::vector<DriftCheck> drift_checks(unsigned int b) const;
     /// Building b's "drift_limits" in summary.json (nothing without limits).
     void write_drift_checks(JsonWriter &json, unsigned int b) const;
-    /// x against x' of each equation of a one- or two-DOF model, stick marked.
-    void draw_phase_portraits(std::vector<Plot> &plots) const;
-    /// drift_profile.png and acceleration_profile.png (with the drift limits).
-    std::array<Plot, 2> profile_plots() const;
-    /// roof_displacement.png, from floor_displacement.csv.
-    Plot roof_plot() const;
-    /// base_shear.png, from base_shear.csv.
-    Plot base_shear_plot() const;
-    /// The ground motion's peak, m/s^2 (0 without one).
-    double peak_ground_acceleration() const;
-    /// energy.png: the terms, and a panel with contact/friction energy and
-    /// the balance error.
-    Plot energy_plot() const;
-    /// hysteresis_<label>.png: one loop per building.
-    void draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const;
-    /// PSA of every floor and of the ground against the period (floor_spectra.csv).
-    Plot floor_spectra_plot() const;
 
     const Analysis      &analysis;
     const RunParameters &parameters;

@@ -1,0 +1,82 @@
+// The figures of a run (PNG through gnuplot, output/plots.h), drawn when
+// the time history ends from the CSV files its recorders wrote and from the
+// peaks the observers gathered: the peak profiles, roof displacement,
+// ground motion, base shear, energy balance, hysteresis loops, floor
+// spectra, phase portraits, contact forces and (3D) the impacts in plan.
+// The run's summary (report/run_summary.h) calls it before it writes
+// summary.json, which lists the figures drawn.
+#ifndef poundfe_report_run_plots_h
+#define poundfe_report_run_plots_h
+
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/excitation/excitation.h>
+#include <poundfe/output/observer.h>
+#include <poundfe/output/plots.h>
+#include <poundfe/output/storey_forces.h>
+#include <poundfe/report/run_parameters.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class PeakResponse;
+
+  /// Curves a figure's key can name: a figure with more draws groups of them.
+  constexpr unsigned int max_named_curves = 12;
+
+  /// contact_force.png from <directory>/contact_force.csv: a curve per gap
+  /// element when there are at most max_named_curves, else a curve per pair
+  /// of buildings (or a building and a barrier) with gaps between them, the
+  /// total force of its gaps (of the max_named_curves pairs with the largest
+  /// peaks, when there are more), read from the file in one pass and given
+  /// to gnuplot as data blocks. Without a readable file: no curves.
+  Plot contact_force_plot(const Model &model, const std::string &directory);
+
+  class RunPlots
+  {
+  public:
+    /// `files`: those the run's observers write (the recorders' CSV files,
+    /// the VTU index): a figure is drawn of each one it knows. Every
+    /// argument must outlive this object.
+    RunPlots(const Analysis &analysis, const RunParameters &parameters,
+             const Excitation &excitation, const PeakResponse &peaks,
+             const BaseShearPeaks &base_shears, const std::string &directory,
+             const std::vector<std::string> &files);
+
+    /// The figures, drawn into the directory; returns the files drawn.
+    std::vector<std::string> draw(const ResponseView &state) const;
+
+  private:
+    /// Whether this run writes `file` (not: whether it exists).
+    bool writes(const std::string &file) const;
+    /// x against x' of each equation of a one- or two-DOF model, stick marked.
+    void draw_phase_portraits(std::vector<Plot> &plots) const;
+    /// drift_profile.png and acceleration_profile.png (with the drift limits).
+    std::array<Plot, 2> profile_plots() const;
+    /// roof_displacement.png, from floor_displacement.csv.
+    Plot roof_plot() const;
+    /// base_shear.png, from base_shear.csv.
+    Plot base_shear_plot() const;
+    /// The ground motion's peak, m/s^2 (0 without one).
+    double peak_ground_acceleration() const;
+    /// energy.png: the terms, and a panel with contact/friction energy and
+    /// the balance error.
+    Plot energy_plot() const;
+    /// hysteresis_<label>.png: one loop per building.
+    void draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const;
+    /// PSA of every floor and of the ground against the period (floor_spectra.csv).
+    Plot floor_spectra_plot() const;
+
+    const Analysis                 &analysis;
+    const RunParameters            &parameters;
+    const Excitation               &excitation;
+    const PeakResponse             &peaks;
+    const BaseShearPeaks           &base_shears;
+    const std::string              &directory;
+    const std::vector<std::string> &files;
+  };
+} // namespace poundfe
+
+#endif
