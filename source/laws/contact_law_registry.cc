@@ -83,7 +83,8 @@ namespace poundfe
   bool
   contact_law_is_damped(const std::string &law)
   {
-    return bool(contact_law_type(law).damping_from_restitution);
+    // "none" (Contact/Law: no contact) is no registered law and has no damping
+    return law != "none" && bool(contact_law_type(law).damping_from_restitution);
   }
 
   double

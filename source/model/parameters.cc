@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <utility>
 
 namespace poundfe
@@ -14,6 +15,9 @@ namespace poundfe
 
   namespace
   {
+    const char *const number_of_buildings_text =
+      "Buildings side by side, left to right; each has a subsection 'Building <i>'. Unit: count.";
+
     /// The bidirectional law (Park, Wen & Ang 1986) is published for n = 2
     /// without degradation; its |z|^(n-2) extension needs n >= 2.
     void
@@ -579,18 +583,20 @@ namespace poundfe
                                                unsigned int             &n_buildings)
   {
     prm.enter_subsection("Model");
-    prm.add_parameter("Number of buildings", n_buildings,
-                      "Buildings side by side, left to right; each has a subsection "
-                      "'Building <i>'. Unit: count.", Patterns::Integer(1, 100));
+    prm.add_parameter("Number of buildings", n_buildings, number_of_buildings_text,
+                      Patterns::Integer(1, 100));
     prm.leave_subsection();
   }
 
   void
   ModelParameters::declare(dealii::ParameterHandler &prm)
   {
-    unsigned int n_buildings = buildings.size(); // read by the first pass
-    declare_number_of_buildings(prm, n_buildings);
     prm.enter_subsection("Model");
+    // the entry without an action: the first pass read it into buildings.size().
+    // An action bound to a local variable here would write into this frame
+    // after it is gone, when the file is parsed (found by fuzz_parameters).
+    prm.declare_entry("Number of buildings", std::to_string(buildings.size()),
+                      Patterns::Integer(1, 100), number_of_buildings_text);
     add_choice(prm, "Mass matrix", mass_matrix, "Distributed member mass. Unit: -.",
                mass_matrix_names());
     add_choice(prm, "Geometric nonlinearity", geometric_nonlinearity,

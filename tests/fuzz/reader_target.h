@@ -39,6 +39,31 @@ namespace poundfe_fuzz
         std::abort();
       }
   }
+
+  /// `step()`, a step of a target that builds or runs a model: an
+  /// InputError or a NumericalError (a model that cannot be integrated, a
+  /// limit state undefined on a row) is a normal outcome, any other
+  /// exception a finding.
+  template <typename Step>
+  void
+  run_expecting_refusals(const Step &step)
+  {
+    try
+      {
+        step();
+      }
+    catch (const poundfe::InputError &)
+      {
+      }
+    catch (const poundfe::NumericalError &)
+      {
+      }
+    catch (const std::exception &e)
+      {
+        std::fprintf(stderr, "not an InputError or NumericalError: %s\n", e.what());
+        std::abort();
+      }
+  }
 } // namespace poundfe_fuzz
 
 #endif

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 using namespace poundfe;
 
@@ -120,4 +121,16 @@ BOOST_AUTO_TEST_CASE(calibrated_damping_returns_the_target_restitution)
           BOOST_TEST(measured == e, boost::test_tools::tolerance(0.005));
         }
     }
+}
+
+// Contact/Law = none (no contact) is no registered law: it has no damping.
+// A random floor mass of a model without gaps refits the contact damping
+// and asked about "none"; the registry threw std::invalid_argument ("unknown
+// contact law 'none'") out of the realization (found by tests/fuzz's
+// fuzz_random_parameters on input/setback-frame.prm, Floor masses[2]).
+BOOST_AUTO_TEST_CASE(no_contact_law_is_undamped)
+{
+  BOOST_TEST(!contact_law_is_damped("none"));
+  BOOST_TEST(contact_law_is_damped("kelvin-voigt"));
+  BOOST_CHECK_THROW(contact_law_is_damped("no such law"), std::invalid_argument);
 }
