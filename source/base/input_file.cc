@@ -95,9 +95,13 @@ namespace poundfe
   std::string
   trimmed(const std::string &text)
   {
-    const auto first = text.find_first_not_of(" \t\r");
+    // Every character that `>>` skips (std::isspace in the C locale): an
+    // item that is only a vertical tab or a form feed is empty here too, so
+    // the words read from a non-empty item are never none.
+    const char *const space = " \t\r\n\v\f";
+    const auto        first = text.find_first_not_of(space);
     if (first == std::string::npos)
       return "";
-    return text.substr(first, text.find_last_not_of(" \t\r") + 1 - first);
+    return text.substr(first, text.find_last_not_of(space) + 1 - first);
   }
 } // namespace poundfe

@@ -1,6 +1,9 @@
 // The help of every choice lists its allowed values, and each enum's name
 // table parses back what it prints (summary.json and messages use it).
+#include <poundfe/base/input_file.h>
 #include <poundfe/input/input_parameters.h>
+
+#include "test_utilities.h"
 
 #include <boost/test/unit_test.hpp>
 
@@ -65,4 +68,23 @@ BOOST_AUTO_TEST_CASE(choices_are_enums_after_parsing)
 {
   const InputParameters input = read_parameters("tests/cli/three-storey-shear.json");
   BOOST_TEST(building_type_names().name(input.model.buildings.at(0).type) == "shear");
+}
+
+// An item of a ';' list that holds only a vertical tab or a form feed is
+// empty (trimmed skips what `>>` skips): before, it passed as an item with no
+// words, and its first word was read out of an empty list (a crash from a
+// parameter file: "x normal mean 0 sd 1;\v;\v").
+BOOST_AUTO_TEST_CASE(an_item_of_blanks_only_is_no_item)
+{
+  BOOST_TEST(trimmed("\v x \f") == "x");
+  BOOST_TEST(trimmed("\v\f\n").empty());
+  const std::string file = poundfe_test::temporary_file(
+    "blank_items.prm", "subsection Reliability\n"
+                       "  set Random variables = x normal mean 0 sd 1;\v;\f\n"
+                       "  set Constants = R 3;\v\n"
+                       "  set Limit states = g: R - x\n"
+                       "end\n");
+  const InputParameters input = read_parameters(file);
+  BOOST_TEST(input.reliability.variable_names.size() == 1u);
+  BOOST_TEST(input.reliability.constants.size() == 1u);
 }

@@ -54,7 +54,8 @@ namespace poundfe
     void distinct(const std::string &path, const std::vector<double> &values) const;
   };
 
-  /// `text` without its leading and trailing blanks (spaces, tabs, CR).
+  /// `text` without its leading and trailing blanks (every character `>>`
+  /// skips: space, tab, CR, LF, vertical tab, form feed).
   std::string trimmed(const std::string &text);
 } // namespace poundfe
 
