@@ -127,6 +127,20 @@ namespace poundfe::commands
       return settings;
     }
 
+    /// A coefficient of variation as text: empty in a CSV cell (and
+    /// "undefined" on the terminal) when the level's samples cannot estimate
+    /// it (NaN, null in summary.json), never "nan".
+    std::string
+    defined_or_empty(const double x, const char *undefined = "", const int digits = 10)
+    {
+      if (!std::isfinite(x))
+        return undefined;
+      std::ostringstream text;
+      text.precision(digits);
+      text << x;
+      return text.str();
+    }
+
     /// subset_levels.csv: each level's threshold and probabilities.
     void
     write_levels(const std::string &directory, const SubsetResult &result)
@@ -143,8 +157,9 @@ namespace poundfe::commands
           std::ostringstream row;
           row.precision(10);
           row << i << "," << L.threshold << "," << L.conditional_probability << "," << cumulative
-              << "," << L.acceptance_rate << "," << L.coefficient_of_variation << ","
-              << bounds[i].first << "," << bounds[i].second << "\n";
+              << "," << L.acceptance_rate << "," << defined_or_empty(L.coefficient_of_variation)
+              << "," << defined_or_empty(bounds[i].first) << ","
+              << defined_or_empty(bounds[i].second) << "\n";
           csv += row.str();
         }
       write_file_atomically(directory + "/subset_levels.csv", csv);
@@ -220,8 +235,10 @@ namespace poundfe::commands
           else
             out << run.response_name << " > " << input.subset.threshold << unit;
           out << ") = " << result.probability << " (CoV between "
-              << result.coefficient_of_variation << ", the levels uncorrelated, and "
-              << result.coefficient_of_variation_upper_bound << ", fully correlated), "
+              << defined_or_empty(result.coefficient_of_variation, "undefined", 6)
+              << ", the levels uncorrelated, and "
+              << defined_or_empty(result.coefficient_of_variation_upper_bound, "undefined", 6)
+              << ", fully correlated), "
               << result.levels.size() << " levels, " << result.model_runs
               << " model runs"
               << (result.reached_threshold ? "" : " (stopped at Maximum levels)");
