@@ -144,7 +144,9 @@ namespace poundfe
       const double k_k0 = c * k(1, 0) + (e.size() == 4 ? s * k(2, 0) : 0.0);
       const double k_kk = c * c * k(1, 1) +
                           (e.size() == 4 ? 2 * c * s * k(1, 2) + s * s * k(2, 2) : 0.0);
-      p.tangent = k_kk - k_k0 * k_k0 / k(0, 0);
+      // no axial stiffness left (every fibre on a plateau): eps0 is free and
+      // the tangent at fixed eps0 stands in for the condensed one
+      p.tangent = k(0, 0) > 0 ? k_kk - k_k0 * k_k0 / k(0, 0) : k_kk;
       const FibreGeometry &g = section.geometry();
       p.steel_strain_max     = -std::numeric_limits<double>::infinity();
       p.steel_strain_min     = std::numeric_limits<double>::infinity();
@@ -235,7 +237,7 @@ namespace poundfe
             section.revert();
             AssertThrow(solve(to), dealii::ExcInternalError());
           }
-      std::sort(reached.begin(), reached.end(),
+      std::stable_sort(reached.begin(), reached.end(),
                 [](const Reached &a, const Reached &b) { return a.curvature < b.curvature; });
       for (const Reached &r : reached)
         {

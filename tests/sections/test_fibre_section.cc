@@ -92,6 +92,7 @@ BOOST_AUTO_TEST_CASE(steel_i_shape_plastic_moment_is_fy_z_and_elastic_stiffness_
   const MomentCurvatureResult r = moment_curvature(section, settings);
   BOOST_TEST(r.stop_reason == "the target curvature");
   BOOST_TEST(r.ultimate.moment == s.steel.fy * Z, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(r.ultimate.tangent == 0.0); // every fibre on its plateau
   // first yield: the outer flange fibres, at kappa = eps_y / (d/2 - tf/8)
   BOOST_TEST(r.yielded);
   BOOST_TEST(r.first_yield.curvature == s.steel.fy / s.steel.E / (d / 2 - tf / 8),
@@ -344,6 +345,13 @@ BOOST_AUTO_TEST_CASE(revert_restores_bit_for_bit_and_clone_is_virgin)
   BOOST_TEST((section.resultant().array() == trial.array()).all());
   section.reset();
   BOOST_TEST(section.resultant().norm() == 0.0);
+
+  // a strain no law takes: the section refuses and names the first fibre
+  BOOST_TEST(!section.set_trial(vector_of({std::nan(""), 0.0, 0.0, 0.0})));
+  const std::string why = section.failure();
+  BOOST_TEST(why.find("fibre 0 at (y, z) = (") == 0u, why);
+  BOOST_TEST(why.find("material 'core' (Concrete02)") != std::string::npos, why);
+  BOOST_TEST(why.find("not all finite") != std::string::npos, why);
 }
 
 BOOST_AUTO_TEST_CASE(circular_patch_area_and_second_moment)

@@ -5,7 +5,8 @@
 //   eps0 <- eps0 - (N(eps0, kappa) - N) / k_s(0, 0),
 // restores the axial force with the section tangent. The moment is M =
 // Mz cos a + My sin a, and its tangent at constant N the condensed
-//   dM/dkappa = d^T K_kk d - (d^T K_k0)(K_0k d) / K_00,  d = (cos a, sin a).
+//   dM/dkappa = d^T K_kk d - (d^T K_k0)(K_0k d) / K_00,  d = (cos a, sin a)
+// (d^T K_kk d when K_00 = 0: every fibre on a plateau).
 // It stops at the target curvature, when the moment falls below a
 // fraction of the peak, when a fibre passes its material's strain limit
 // (crushing, rupture: located within the step by the secant method on the
