@@ -84,7 +84,9 @@ namespace poundfe
       std::string marks = "set datafile separator ','\n";
       for (const MomentCurvatureEvent &e : r.events)
         marks += "set label '" + e.what + "' at first " + std::to_string(e.at.curvature) +
-                 ", first " + std::to_string(e.at.moment / 1000) + " point pt 7 offset 1,-1\n";
+                 ", first " + std::to_string(e.at.moment / 1000) + " point pt 7 " +
+                 (e.at.curvature > 0.6 * r.ultimate.curvature ? "right offset -1,-1\n" :
+                                                                "offset 1,-1\n");
       plot.settings = marks;
       draw_plots(directory, {plot});
     }
