@@ -23,6 +23,7 @@ namespace poundfe
     int dynamic_form(const CommandRun &);   // dynamic_form_command.cc
     int mitigation(const CommandRun &);     // mitigation_command.cc
     int switching(const CommandRun &);      // switching_command.cc
+    int moment_curvature(const CommandRun &); // moment_curvature_command.cc
     int print_parameters(const CommandRun &); // print_parameters_command.cc
     int input_template(const CommandRun &); // template_command.cc
   } // namespace commands
@@ -107,6 +108,11 @@ namespace poundfe
        "crossing, sliding (stick), grazing or sliding exit; sliding by\n"
        "the convex method (switching.csv, phase_portrait.png)",
        file, summary, commands::switching},
+      {"moment-curvature", "FILE",
+       "moment-curvature of a fibre section (Sections, Moment curvature)\n"
+       "at constant axial force: first yield, peak, ultimate, ductility\n"
+       "(moment_curvature.csv, summary.json, moment_curvature.png)",
+       file, summary, commands::moment_curvature},
       {"print-parameters", "", "every parameter with its documentation and default",
        none, "", commands::print_parameters},
       {"template", "KIND",

@@ -238,6 +238,8 @@ namespace poundfe
     separation.declare(prm);
     mitigation.declare(prm);
     spectrum.declare(prm);
+    sections.declare(prm);
+    moment_curvature.declare(prm);
   }
 
   void
@@ -276,6 +278,8 @@ namespace poundfe
     separation.check(*this, model.buildings.size());
     mitigation.check(*this);
     spectrum.check(*this);
+    sections.check(*this);
+    moment_curvature.check(*this, sections);
   }
 
   void
@@ -395,14 +399,17 @@ namespace poundfe
     else
       check_json_text(file, text);
 
-    // First pass: only the number of buildings, which shapes the declarations.
-    unsigned int n_buildings = 1;
+    // First pass: only the numbers of buildings and of cross-sections, which
+    // shape the declarations.
+    unsigned int n_buildings = 1, n_sections = 0;
     {
       ParameterHandler prm;
       ModelParameters::declare_number_of_buildings(prm, n_buildings);
+      SectionsParameters::declare_number_of_sections(prm, n_sections);
       parse(prm, p, text, extension == ".json", overrides, true);
     }
     p.model.buildings.resize(n_buildings);
+    p.sections.sections.resize(n_sections);
     ParameterHandler prm;
     p.declare(prm);
     try
@@ -442,10 +449,12 @@ namespace poundfe
   {
     InputParameters p;
     p.model.buildings.resize(1);
+    p.sections.sections.resize(1);
     ParameterHandler prm;
     p.declare(prm);
     out << "# poundfe parameters, in the order the program declares them. 'Building 1'\n"
-        << "# stands for every 'Building <i>', i = 1 .. Number of buildings; its entries\n"
+        << "# stands for every 'Building <i>', i = 1 .. Number of buildings ('Section 1'\n"
+        << "# for every 'Section <k>' of Sections); its entries\n"
         << "# tagged [frame], [shear] or [mesh] apply only to buildings of that Type,\n"
         << "# untagged ones to every Type. Each entry says its unit ('Unit: -' for\n"
         << "# names, choices and switches). Lists are comma separated.\n";

@@ -15,6 +15,7 @@
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/recorders.h>
+#include <poundfe/sections/section_parameters.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/multithread_info.h>
@@ -105,6 +106,59 @@ namespace poundfe::python
     }
   } // namespace
 
+  namespace
+  {
+    /// The Moment curvature section's analysis: its curve as NumPy arrays
+    /// (the columns of moment_curvature.csv) and its summary.
+    py::dict
+    moment_curvature_of(const InputParameters &input)
+    {
+      MomentCurvatureResult result;
+      unsigned int          n_fibres = 0;
+      {
+        py::gil_scoped_release release;
+        result = input.moment_curvature.run(input, input.sections, n_fibres);
+      }
+      const std::size_t n = result.points.size();
+      Eigen::VectorXd   columns[9];
+      for (Eigen::VectorXd &c : columns)
+        c.resize(n);
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const MomentCurvaturePoint &p = result.points[i];
+          const double values[9] = {p.curvature, p.moment, p.axial_strain, p.concrete_strain,
+                                    p.steel_strain_max, p.steel_strain_min, p.tangent,
+                                    p.moment_z, p.moment_y};
+          for (unsigned int j = 0; j < 9; ++j)
+            columns[j](i) = values[j];
+        }
+      py::dict d;
+      const char *names[9] = {"curvature", "moment", "axial_strain", "concrete_strain_min",
+                              "steel_strain_max", "steel_strain_min", "tangent", "moment_z",
+                              "moment_y"};
+      for (unsigned int j = 0; j < 9; ++j)
+        d[names[j]] = columns[j];
+      const auto point = [](const MomentCurvaturePoint &p) {
+        py::dict q;
+        q["curvature"] = p.curvature;
+        q["moment"]    = p.moment;
+        return q;
+      };
+      if (result.yielded)
+        d["first_yield"] = point(result.first_yield);
+      d["peak"]        = point(result.peak);
+      d["ultimate"]    = point(result.ultimate);
+      d["ductility"]   = result.ductility();
+      d["stop_reason"] = result.stop_reason;
+      d["fibres"]      = n_fibres;
+      py::list events;
+      for (const MomentCurvatureEvent &e : result.events)
+        events.append(py::make_tuple(e.what, e.at.curvature, e.at.moment));
+      d["events"] = events;
+      return d;
+    }
+  } // namespace
+
   std::shared_ptr<const Analysis>
   prepare(const InputParameters &input)
   {
@@ -180,6 +234,9 @@ namespace poundfe::python
       m.def(
         "modal", [](const InputParameters &input) { return modes_of(*prepare(input)); },
         py::arg("input"), "The whole model's modes and each building's, as a dict.");
+
+      m.def("moment_curvature", &moment_curvature_of, py::arg("input"),
+            "The Moment curvature section's curve (NumPy arrays) and its summary, as a dict.");
     }
   } // namespace
 } // namespace poundfe::python

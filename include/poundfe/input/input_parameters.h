@@ -25,6 +25,7 @@
 #include <poundfe/model/parameters.h>
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/output/output_parameters.h>
+#include <poundfe/sections/section_parameters.h>
 
 #include <iosfwd>
 #include <string>
@@ -72,13 +73,16 @@ namespace poundfe
     SeparationParameters      separation;
     MitigationParameters      mitigation;  // Mitigation (the mitigation command)
     SpectrumParameters        spectrum;    // Spectrum (response spectra)
+    SectionsParameters        sections;    // Sections (fibre cross-sections)
+    MomentCurvatureParameters moment_curvature; // Moment curvature
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
     /// Every entry's value as read (defaults included), by its path
     /// "Section/Subsection/Entry", in declaration order.
     std::vector<std::pair<std::string, std::string>> values;
 
-    /// Declare every section, with `model.buildings.size()` buildings.
+    /// Declare every section, with `model.buildings.size()` buildings and
+    /// `sections.sections.size()` cross-sections.
     void declare(dealii::ParameterHandler &prm);
     /// After parsing: hand the hysteresis settings of Time integration to
     /// the buildings' laws, then check every section. Throws InputError.

@@ -23,7 +23,7 @@ from ._core import Input, InputError, NumericalError, OutputError, StepState
 from .model import Model, _value_text, parameter_text
 from .results import Modes, Results, Table
 
-__all__ = ["read", "run", "modal", "command", "Model", "Input", "Results", "Modes", "Table",
+__all__ = ["read", "run", "modal", "moment_curvature", "command", "Model", "Input", "Results", "Modes", "Table",
            "StepState", "InputError", "NumericalError", "OutputError", "parameter_text"]
 
 
@@ -55,6 +55,21 @@ def modal(model):
     """The undamped modes of the whole model and of each building (what
     `poundfe modal` writes): an Input, a Model or a file name."""
     return Modes(_core.modal(_input_of(model)))
+
+
+def moment_curvature(model, overrides=None):
+    """The moment-curvature curve of a section (what `poundfe
+    moment-curvature` computes), from a parameter file (with overrides as
+    in read()) or an Input with Sections and Moment curvature sections.
+
+    Returns a dict: NumPy arrays curvature (1/m), moment (N m),
+    axial_strain, concrete_strain_min, steel_strain_max, steel_strain_min,
+    tangent (N m^2), moment_z, moment_y; first_yield, peak, ultimate
+    ({"curvature", "moment"}), ductility, stop_reason, fibres and events
+    [(what, curvature, moment)]."""
+    if not isinstance(model, Input):
+        model = read(model, overrides)
+    return _core.moment_curvature(model)
 
 
 def run(model, output=None, callback=None, every=1):

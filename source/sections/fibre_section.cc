@@ -1,0 +1,237 @@
+// The fibre section: s = sum sigma_i A_i a_i, k_s = sum E_t,i A_i a_i a_i^T
+// with a_i = (1, -y_i[, z_i]) (see the header; Spacone, Filippou & Taucer
+// 1996; OpenSees's FiberSection2d/3d).
+#include <poundfe/base/exceptions.h>
+#include <poundfe/sections/fibre_section.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace poundfe
+{
+  MaterialRole
+  SectionMaterial::role() const
+  {
+    const std::string &m = law.material;
+    if (m == "Concrete01" || m == "Concrete02")
+      return MaterialRole::concrete;
+    if (m == "Steel01" || m == "Steel02" || m == "ElasticPP")
+      return MaterialRole::steel;
+    return MaterialRole::other;
+  }
+
+  unsigned int
+  FibreGeometry::material_index(const std::string &name) const
+  {
+    for (unsigned int i = 0; i < materials.size(); ++i)
+      if (materials[i].name == name)
+        return i;
+    std::string known;
+    for (const SectionMaterial &m : materials)
+      known += (known.empty() ? "" : ", ") + m.name;
+    throw InputError("", 0, "Material",
+                     "no material '" + name + "' in the section (given: " +
+                       (known.empty() ? "none" : known) + ")");
+  }
+
+  unsigned int
+  FibreGeometry::add_material(const SectionMaterial &material)
+  {
+    for (const SectionMaterial &m : materials)
+      if (m.name == material.name)
+        throw InputError("", 0, "Material", "material '" + material.name + "' given twice");
+    materials.push_back(material);
+    return materials.size() - 1;
+  }
+
+  double
+  FibreGeometry::area() const
+  {
+    double a = 0;
+    for (const Fibre &f : fibres)
+      a += f.area;
+    return a;
+  }
+
+  double
+  FibreGeometry::centroid_y() const
+  {
+    double q = 0;
+    for (const Fibre &f : fibres)
+      q += f.y * f.area;
+    return q / area();
+  }
+
+  double
+  FibreGeometry::centroid_z() const
+  {
+    double q = 0;
+    for (const Fibre &f : fibres)
+      q += f.z * f.area;
+    return q / area();
+  }
+
+  namespace
+  {
+    std::shared_ptr<const FibreGeometry>
+    checked_fibre_geometry(const FibreGeometry &geometry)
+    {
+      if (geometry.fibres.empty())
+        throw InputError("", 0, "Fibres", "the section has no fibres");
+      for (unsigned int i = 0; i < geometry.fibres.size(); ++i)
+        {
+          const Fibre &f = geometry.fibres[i];
+          if (!(std::isfinite(f.y) && std::isfinite(f.z) && std::isfinite(f.area) && f.area > 0))
+            throw InputError("", 0, "Fibres",
+                             "fibre " + std::to_string(i) + " has area " +
+                               std::to_string(f.area) + " (each must be positive)");
+          if (f.material >= geometry.materials.size())
+            throw InputError("", 0, "Fibres", "fibre " + std::to_string(i) + " has no material");
+        }
+      return std::make_shared<const FibreGeometry>(geometry);
+    }
+  } // namespace
+
+  FibreSection::FibreSection(const FibreGeometry &geometry, const unsigned int n_resultants,
+                             const double torsional_rigidity, const bool about_centroid)
+    : FibreSection(checked_fibre_geometry(geometry), n_resultants, torsional_rigidity,
+                   about_centroid ? geometry.centroid_y() : 0.0,
+                   about_centroid ? geometry.centroid_z() : 0.0)
+  {}
+
+  FibreSection::FibreSection(std::shared_ptr<const FibreGeometry> geometry,
+                             const unsigned int n_resultants, const double torsional_rigidity,
+                             const double y_ref, const double z_ref)
+    : fibres(std::move(geometry))
+    , n(n_resultants)
+    , torsional_rigidity(torsional_rigidity)
+    , y_ref(y_ref)
+    , z_ref(z_ref)
+  {
+    AssertThrow(n == 2 || n == 4, dealii::ExcMessage("a fibre section has 2 or 4 resultants"));
+    if (n == 4 && !(std::isfinite(torsional_rigidity) && torsional_rigidity > 0))
+      throw InputError("", 0, "GJ", "a section in space needs a positive torsional rigidity");
+    // one law per fibre: each fibre keeps its own history
+    laws.reserve(fibres->fibres.size());
+    for (const Fibre &f : fibres->fibres)
+      laws.push_back(make_material(fibres->materials[f.material].law));
+    reset();
+    virgin_tangent = trial.tangent;
+  }
+
+  double
+  FibreSection::strain_at(const unsigned int i, const SectionVector &e) const
+  {
+    const Fibre &f      = fibres->fibres[i];
+    double       strain = e(0) - (f.y - y_ref) * e(1);
+    if (n == 4)
+      strain += (f.z - z_ref) * e(2);
+    return strain;
+  }
+
+  double
+  FibreSection::fibre_strain(const unsigned int i) const
+  {
+    return strain_at(i, trial.deformation);
+  }
+
+  bool
+  FibreSection::set_trial(const SectionVector &e)
+  {
+    Assert(e.size() == n, dealii::ExcDimensionMismatch(e.size(), n));
+    trial.deformation = e;
+    trial.resultant.setZero();
+    trial.tangent.setZero();
+    double s[3] = {0, 0, 0}, k[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    const unsigned int m = n == 4 ? 3 : 2; // the fibres' share: N, Mz[, My]
+    for (unsigned int i = 0; i < laws.size(); ++i)
+      {
+        const Fibre &f = fibres->fibres[i];
+        if (!laws[i]->set_trial(strain_at(i, e), 0))
+          {
+            failed_fibre = i;
+            return false;
+          }
+        const double a[3]  = {1, -(f.y - y_ref), f.z - z_ref};
+        const double force = laws[i]->force() * f.area, stiffness = laws[i]->tangent() * f.area;
+        for (unsigned int r = 0; r < m; ++r)
+          {
+            s[r] += force * a[r];
+            for (unsigned int c = 0; c < m; ++c)
+              k[r][c] += stiffness * a[r] * a[c];
+          }
+      }
+    for (unsigned int r = 0; r < m; ++r)
+      {
+        trial.resultant(r) = s[r];
+        for (unsigned int c = 0; c < m; ++c)
+          trial.tangent(r, c) = k[r][c];
+      }
+    if (n == 4)
+      {
+        trial.resultant(3)  = torsional_rigidity * e(3);
+        trial.tangent(3, 3) = torsional_rigidity;
+      }
+    return trial.resultant.allFinite() && trial.tangent.allFinite();
+  }
+
+  void
+  FibreSection::commit()
+  {
+    for (const auto &law : laws)
+      law->commit();
+    committed = trial;
+  }
+
+  void
+  FibreSection::revert()
+  {
+    for (const auto &law : laws)
+      law->revert();
+    trial = committed;
+  }
+
+  void
+  FibreSection::reset()
+  {
+    for (const auto &law : laws)
+      law->reset();
+    trial.deformation = SectionVector::Zero(n);
+    trial.resultant   = SectionVector::Zero(n);
+    trial.tangent     = SectionMatrix::Zero(n, n);
+    // the virgin tangent: each law's initial stiffness at zero strain
+    for (unsigned int i = 0; i < laws.size(); ++i)
+      {
+        const Fibre &f = fibres->fibres[i];
+        const double a[3] = {1, -(f.y - y_ref), f.z - z_ref};
+        const unsigned int m = n == 4 ? 3 : 2;
+        for (unsigned int r = 0; r < m; ++r)
+          for (unsigned int c = 0; c < m; ++c)
+            trial.tangent(r, c) += laws[i]->initial_stiffness() * f.area * a[r] * a[c];
+      }
+    if (n == 4)
+      trial.tangent(3, 3) = torsional_rigidity;
+    committed = trial;
+  }
+
+  std::unique_ptr<SectionLaw>
+  FibreSection::clone() const
+  {
+    return std::unique_ptr<SectionLaw>(
+      new FibreSection(fibres, n, torsional_rigidity, y_ref, z_ref));
+  }
+
+  std::string
+  FibreSection::failure() const
+  {
+    const Fibre &f = fibres->fibres[failed_fibre];
+    std::ostringstream text;
+    text.precision(6);
+    text << "fibre " << failed_fibre << " at (y, z) = (" << f.y << ", " << f.z << ") m of material '"
+         << fibres->materials[f.material].name << "' (" << fibres->materials[f.material].law.material
+         << "): " << laws[failed_fibre]->failure();
+    return text.str();
+  }
+} // namespace poundfe
