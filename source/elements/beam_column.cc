@@ -317,8 +317,9 @@ namespace poundfe
     current.q += current.kv * dv;
     const double scale    = std::abs(target.dot(current.kv * target)) + std::abs(dv.dot(current.kv * dv));
     double       previous = std::numeric_limits<double>::infinity();
-    for (unsigned int j = 0; j < max_iterations; ++j, ++iterations)
+    for (unsigned int j = 0; j < max_iterations; ++j)
       {
+        ++iterations;
         BasicMatrix f        = BasicMatrix::Zero();
         BasicVector achieved = BasicVector::Zero();
         for (unsigned int i = 0; i < this->rule.size(); ++i)

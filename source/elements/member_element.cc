@@ -10,7 +10,8 @@ namespace poundfe
   MemberElement<dim>::MemberElement(const unsigned int building, std::string label,
                                     std::vector<int> equations,
                                     std::unique_ptr<BeamColumn<dim>> member,
-                                    const ElementKind kind)
+                                    const ReferenceStiffness reference_stiffness,
+                                    const ElementKind        kind)
     : NonlinearElement(kind, building, std::move(label), std::move(equations))
     , beam(std::move(member))
   {
@@ -18,6 +19,11 @@ namespace poundfe
     beam->reset();
     reference       = beam->initial_tangent();
     reference_basic = beam->basic_tangent();
+    if (reference_stiffness == ReferenceStiffness::none)
+      {
+        reference.setZero();
+        reference_basic.setZero();
+      }
     committed_force.setZero();
     committed_u.setZero();
   }

@@ -29,6 +29,16 @@
 
 namespace poundfe
 {
+  /// Whether the linear K holds the member's virgin tangent (K_ref,e, the
+  /// way a model builder assembles its members) or nothing of it (K_ref,e =
+  /// 0: the whole force goes through the correction, for an element added
+  /// to a model whose K does not know it).
+  enum class ReferenceStiffness
+  {
+    initial,
+    none
+  };
+
   template <int dim>
   class MemberElement : public NonlinearElement
   {
@@ -40,7 +50,8 @@ namespace poundfe
     /// (n_dofs, -1 for the ground).
     MemberElement(unsigned int building, std::string label, std::vector<int> equations,
                   std::unique_ptr<BeamColumn<dim>> member,
-                  ElementKind kind = ElementKind::hinge);
+                  ReferenceStiffness reference_stiffness = ReferenceStiffness::initial,
+                  ElementKind        kind                = ElementKind::hinge);
 
     /// K_ref,e: what the linear K must hold for this member.
     const GlobalMatrix &reference_stiffness() const { return reference; }
