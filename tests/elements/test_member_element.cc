@@ -9,7 +9,38 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
 using namespace poundfe;
+
+namespace
+{
+  std::atomic<bool> count_allocations{false};
+  std::atomic<long> allocations{0};
+} // namespace
+
+// Replaced for this test executable: counts while count_allocations is set.
+void *
+operator new(std::size_t size)
+{
+  if (count_allocations)
+    ++allocations;
+  if (void *p = std::malloc(size ? size : 1))
+    return p;
+  throw std::bad_alloc();
+}
+void
+operator delete(void *p) noexcept
+{
+  std::free(p);
+}
+void
+operator delete(void *p, std::size_t) noexcept
+{
+  std::free(p);
+}
 
 BOOST_AUTO_TEST_CASE(member_element_splits_force_and_tangent_as_the_integrator_needs)
 {
@@ -72,4 +103,46 @@ BOOST_AUTO_TEST_CASE(member_mass_is_the_frame_elements_mass_carried_by_the_offse
   const Eigen::Matrix<double, 6, 6> m = member_mass(offset, 250, MassMatrixType::lumped);
   BOOST_TEST(m(0, 0) + m(3, 3) == 250 * 4.0, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(m(2, 2) > 0); // the offset carries the end mass's rotary inertia
+}
+
+BOOST_AUTO_TEST_CASE(state_determination_allocates_nothing)
+{
+  SectionVector rigidities(2);
+  rigidities << 2e9, 2e7;
+  AggregatorSection section(rigidities);
+  section.set_law(1, [] {
+    return make_material({"Steel01", {{"fy", 1e5}, {"E0", 2e7}, {"b", 0.02}}});
+  });
+  for (const Transformation kind :
+       {Transformation::linear, Transformation::pdelta, Transformation::corotational})
+    {
+      const CrdTransformation<2> t(kind, Eigen::Vector2d(0, 0), Eigen::Vector2d(3, 0.5));
+      MemberElement<2> fb(0, "fb", {0, 1, 2, 3, 4, 5},
+                          std::make_unique<ForceBeamColumn<2>>(t, section, 5));
+      MemberElement<2> db(0, "db", {0, 1, 2, 3, 4, 5},
+                          std::make_unique<DispBeamColumn<2>>(t, section, 5));
+      Eigen::VectorXd u(6), w(6), v = Eigen::VectorXd::Zero(6), f(6);
+      Eigen::MatrixXd d(6, 6);
+      u << 0.003, -0.03, 0.06, 0.012, 0.15, -0.03;
+      bool ok = true;
+      allocations       = 0;
+      count_allocations = true;
+      for (NonlinearElement *e :
+           {static_cast<NonlinearElement *>(&fb), static_cast<NonlinearElement *>(&db)})
+        for (int step = 1; step <= 20; ++step)
+          {
+            // cycles past yield: trials, a revert, a commit
+            Eigen::Ref<Eigen::MatrixXd> dd = d.topLeftCorner(e->rank(), e->rank());
+            w  = std::sin(0.7 * step) * u; // into w's storage
+            ok = e->set_trial(w, v) && ok;
+            e->force_correction(f);
+            e->tangent_change(0, dd);
+            e->revert();
+            ok = e->set_trial(w, v) && ok;
+            e->commit();
+          }
+      count_allocations = false;
+      BOOST_TEST(ok);
+      BOOST_TEST(allocations == 0);
+    }
 }
