@@ -1,0 +1,219 @@
+// Distributed-plasticity beam-columns on the basic system of a coordinate
+// transformation (elements/crd_transformation.h), with a section law at
+// each integration point (elements/beam_integration.h), in the plane and in
+// space, as OpenSees's ForceBeamColumn2d/3d and DispBeamColumn2d/3d.
+//
+// Displacement-based (Hughes 1987 §1.15; OpenSees's DispBeamColumn): the
+// section deformations follow the basic deformations by the cubic
+// (Hermite) transverse and linear axial displacement fields,
+//   e(x) = a(x) v,  eps0 = v0/L,  kappa_z = ((6 xi - 4) vI + (6 xi - 2) vJ)/L
+//   (the same for kappa_y on vIy, vJy; theta = twist/L),
+//   q = L sum_i w_i a_i^T s_i,   k_b = L sum_i w_i a_i^T k_s,i a_i,
+// with Gauss-Legendre by default. Its curvature is linear along the member:
+// exact for an elastic prismatic member under end loads (the Hermite cubics
+// solve it), not once a section yields (the curvature then concentrates
+// where the moment exceeds the yield moment): a cantilever pushed past
+// yield needs several elements, its tip deflection converging with them.
+//
+// Force-based (Spacone, Filippou & Taucer 1996, "Fibre beam-column model
+// for non-linear analysis of R/C frames", EESD 25; Neuenhofer & Filippou
+// 1997, "Evaluation of nonlinear frame finite-element models", J. Struct.
+// Eng. 123(7); OpenSees's ForceBeamColumn): the section forces follow the
+// basic forces by equilibrium, exactly, with no element loads:
+//   s(x) = b(x) q,  N = q0,  Mz = (xi - 1) qI + xi qJ  (My likewise on
+//   qIy, qJy; T = q_T),
+// and the element is compatible when v = L sum_i w_i b_i^T e_i. The state
+// determination iterates on q with the element's flexibility
+//   F = L sum_i w_i b_i^T f_s,i b_i,  f_s = k_s^-1,
+// from the state of the last trial (OpenSees: "vin"): predictor
+// q += F^-1 dv; then, for each iteration, at each section
+//   e_i += f_s,i (b_i q - s_i),  s_i, k_s,i from the section law at e_i,
+// the residual deformation r = v - L sum_i w_i b_i^T (e_i + f_s,i (b_i q - s_i))
+// and q += F^-1 r, until the work r . F^-1 r is below 1e-20 of the
+// element's energy v . F^-1 v (or stalls at round-off below 1e-12 of it:
+// OpenSees stops at an absolute 1e-12). When the iterations do not
+// converge within 20, the increment is divided by 10 (up to 4 times) and
+// applied in pieces, each from the last converged one (OpenSees's
+// subdivision). The consistent tangent is k_b = F^-1 at convergence. For
+// an elastic prismatic member b^T f_s b is quadratic in x, so Lobatto with
+// 3 points or more integrates F exactly: one element gives the closed-form
+// stiffness and the exact response to end loads. A section tangent whose
+// diagonal falls below 1e-8 of the initial one (a perfectly plastic
+// section) is raised to it in f_s: the flexibility stays finite; the
+// converged forces are those of the section laws (the iteration ends when
+// compatibility holds), only the tangent differs, by 1e-8 relative.
+//
+// State: set_trial(u) -> resisting_force(), tangent() -> commit() or
+// revert(); revert() restores the committed state bit for bit (the
+// forces and tangent are stored, the sections revert); reset() goes back
+// to the virgin state. Fixed-size Eigen throughout: set_trial allocates
+// nothing.
+#ifndef poundfe_elements_beam_column_h
+#define poundfe_elements_beam_column_h
+
+#include <poundfe/elements/beam_integration.h>
+#include <poundfe/elements/crd_transformation.h>
+#include <poundfe/sections/section_law.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  /// One section per integration point, each a virgin clone of `section`.
+  std::vector<std::unique_ptr<SectionLaw>> sections_along(const BeamIntegration &integration,
+                                                          const SectionLaw      &section);
+  /// HingeRadau's six sections: two of end I, two of the interior, two of
+  /// end J (beam_integration.h).
+  std::vector<std::unique_ptr<SectionLaw>>
+  hinge_sections(const SectionLaw &end_i, const SectionLaw &interior, const SectionLaw &end_j);
+
+  template <int dim>
+  class BeamColumn
+  {
+  public:
+    static constexpr int n_dofs = MemberSize<dim>::dofs, n_basic = MemberSize<dim>::basic,
+                         n_resultants = MemberSize<dim>::resultants;
+    using GlobalVector     = typename CrdTransformation<dim>::GlobalVector;
+    using GlobalMatrix     = typename CrdTransformation<dim>::GlobalMatrix;
+    using BasicVector      = typename CrdTransformation<dim>::BasicVector;
+    using BasicMatrix      = typename CrdTransformation<dim>::BasicMatrix;
+    using ResultantVector  = Eigen::Matrix<double, n_resultants, 1>;
+    using ResultantMatrix  = Eigen::Matrix<double, n_resultants, n_resultants>;
+    using Interpolation    = Eigen::Matrix<double, n_resultants, n_basic>;
+
+    /// One section per point of `integration` (n_resultants() each: 2 in
+    /// the plane, 4 in space); Assert otherwise.
+    BeamColumn(const CrdTransformation<dim> &transformation, BeamIntegration integration,
+               std::vector<std::unique_ptr<SectionLaw>> sections);
+    virtual ~BeamColumn() = default;
+
+    /// The state at the global end displacements u; false when a section
+    /// refuses its deformation or the element's iteration fails (failure()
+    /// says which): the trial state must then not be used.
+    bool set_trial(const GlobalVector &u);
+    const GlobalVector &resisting_force() const { return trial.force; }
+    const GlobalMatrix &tangent() const { return trial.stiffness; }
+    const BasicVector  &basic_force() const { return trial.basic_force; }
+    const BasicMatrix  &basic_tangent() const { return trial.basic_stiffness; }
+    const BasicVector  &basic_deformation() const { return transf.basic_deformation(); }
+    /// The global tangent at the virgin state, u = 0.
+    const GlobalMatrix &initial_tangent() const { return virgin_stiffness; }
+    const GlobalVector &trial_displacement() const { return trial_u; }
+
+    void commit();
+    void revert();
+    void reset();
+    std::string failure() const { return why; }
+
+    const CrdTransformation<dim> &transformation() const { return transf; }
+    const BeamIntegration        &integration() const { return rule; }
+    unsigned int                  n_points() const { return rule.size(); }
+    /// The section law at point i (resultants, deformations: recorders).
+    const SectionLaw &section(unsigned int i) const { return *sections[i]; }
+    double            length() const { return transf.initial_length(); }
+    /// sum_i w_i L s_i^T k_s0,i^-1 s_i / 2: the energy unloading at the
+    /// sections' initial stiffness recovers.
+    double stored_energy() const;
+
+  protected:
+    /// q and k_b at the basic deformations v (from the last trial state).
+    virtual bool basic_state(const BasicVector &v, BasicVector &q, BasicMatrix &k) = 0;
+    virtual void commit_basic() {}
+    virtual void revert_basic() {}
+    virtual void reset_basic() {}
+
+    struct State
+    {
+      GlobalVector force;
+      GlobalMatrix stiffness;
+      BasicVector  basic_force;
+      BasicMatrix  basic_stiffness;
+    };
+
+    CrdTransformation<dim>                   transf;
+    BeamIntegration                          rule;
+    std::vector<std::unique_ptr<SectionLaw>> sections;
+    std::string                              why;
+
+  private:
+    State        trial, committed;
+    GlobalVector trial_u, committed_u;
+    GlobalMatrix virgin_stiffness;
+  };
+
+  /// Displacement-based: e_i = a_i v (see above).
+  template <int dim>
+  class DispBeamColumn : public BeamColumn<dim>
+  {
+  public:
+    using typename BeamColumn<dim>::BasicVector;
+    using typename BeamColumn<dim>::BasicMatrix;
+    using typename BeamColumn<dim>::Interpolation;
+    /// Gauss-Legendre with `n_points` points, one clone of `section` each.
+    DispBeamColumn(const CrdTransformation<dim> &transformation, const SectionLaw &section,
+                   unsigned int n_points = 5);
+    DispBeamColumn(const CrdTransformation<dim> &transformation, BeamIntegration integration,
+                   std::vector<std::unique_ptr<SectionLaw>> sections);
+
+    /// a(xi) with e = a v.
+    static Interpolation deformation_interpolation(double xi, double length);
+
+  protected:
+    bool basic_state(const BasicVector &v, BasicVector &q, BasicMatrix &k) override;
+  };
+
+  /// Force-based: s_i = b_i q, iterated to compatibility (see above).
+  template <int dim>
+  class ForceBeamColumn : public BeamColumn<dim>
+  {
+  public:
+    using typename BeamColumn<dim>::BasicVector;
+    using typename BeamColumn<dim>::BasicMatrix;
+    using typename BeamColumn<dim>::Interpolation;
+    using typename BeamColumn<dim>::ResultantVector;
+    using typename BeamColumn<dim>::ResultantMatrix;
+    /// Gauss-Lobatto with `n_points` points, one clone of `section` each.
+    ForceBeamColumn(const CrdTransformation<dim> &transformation, const SectionLaw &section,
+                    unsigned int n_points = 5);
+    ForceBeamColumn(const CrdTransformation<dim> &transformation, BeamIntegration integration,
+                    std::vector<std::unique_ptr<SectionLaw>> sections);
+
+    /// b(xi) with s = b q.
+    static Interpolation force_interpolation(double xi);
+
+    /// The element iterations of the last set_trial (all pieces), and the
+    /// number of pieces its increment took (1: no subdivision).
+    unsigned int last_iterations() const { return iterations; }
+    unsigned int last_pieces() const { return pieces; }
+
+  protected:
+    bool basic_state(const BasicVector &v, BasicVector &q, BasicMatrix &k) override;
+    void commit_basic() override { committed = current; }
+    void revert_basic() override { current = committed; }
+    void reset_basic() override;
+
+  private:
+    /// The element's state between trials: the compatible v, q, F^-1, and
+    /// at each point e_i, s_i, f_s,i.
+    struct IterationState
+    {
+      BasicVector                  v, q;
+      BasicMatrix                  kv;
+      std::vector<ResultantVector> e, s;
+      std::vector<ResultantMatrix> fs;
+    };
+    /// Iterate from `current` to compatibility with `target`; false (and
+    /// `current` spoiled) when it does not converge.
+    bool iterate(const BasicVector &target);
+    /// f_s from the section's tangent, its small diagonal raised.
+    ResultantMatrix flexibility(unsigned int i) const;
+
+    IterationState              current, committed, start;
+    std::vector<ResultantMatrix> initial_section_stiffness;
+    unsigned int                iterations = 0, pieces = 0;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,145 @@
+// The coordinate transformations of a beam-column between its global end
+// displacements u (2D: ux, uy, rz per end; 3D: ux, uy, uz, rx, ry, rz per
+// end) and OpenSees's basic system, the deformations v free of rigid-body
+// motion and their work-conjugate basic forces q:
+//   2D: v = (axial deformation, thetaI, thetaJ), q = (N, MI, MJ);
+//   3D: v = (axial, thetaIz, thetaJz, thetaIy, thetaJy, twist),
+//       q = (N, MzI, MzJ, MyI, MyJ, T);
+// the end rotations are relative to the chord. The element's global
+// resisting force and tangent are then
+//   p = B(u)^T q + p_g,   K = B^T k_b B + K_g,
+// with B = dv/du and K_g the geometric part of the transformation.
+//   Linear (OpenSees's LinearCrdTransf2d/3d): v = B u, B constant, K_g = 0:
+//     2D, with (c, s) the chord's direction, L its length,
+//       v0 = c dux + s duy,  vI = rzI - (c duy - s dux)/L,  vJ = rzJ - (...)/L
+//     (d = end J minus end I); 3D the same per plane in the local axes of
+//     elements/frame_element_3d.h, vIy = ryI + dw/L, twist = rxJ - rxI.
+//   PDelta (OpenSees's PDeltaCrdTransf2d/3d): v as Linear, and the chord's
+//     transverse relative displacements delta (2D one, 3D two) carry
+//     p_g = N delta/L g (g = d delta/du): the shear of an axial force on a
+//     drifted chord. Its consistent tangent K_g = N/L g g^T + (delta/L) g
+//     (dN/du)^T keeps the second term, which OpenSees drops (it vanishes on
+//     the undeformed member, so buckling loads agree) and which makes K
+//     nonsymmetric; Newton's iteration then converges quadratically.
+//   Corotational 2D (Crisfield 1991, vol. 1, §7.3; de Souza 2000, ch. 3;
+//     OpenSees's CorotCrdTransf2d): the chord's current length Ln and angle
+//     beta, its rotation alpha = beta - beta0 from the initial chord,
+//       v0 = (Ln^2 - L0^2)/(Ln + L0),  vI = rzI - alpha,  vJ = rzJ - alpha,
+//     B = [r; e3 - w/Ln; e6 - w/Ln], r = (-c, -s, 0, c, s, 0),
+//     w = (s, -c, 0, -s, c, 0), and
+//       K_g = N/Ln w w^T + (MI + MJ)/Ln^2 (r w^T + w r^T)   (symmetric).
+//     alpha is taken within pi of the mean end rotation (rzI + rzJ)/2, so a
+//     member may turn through any number of turns (a circle).
+//   Corotational 3D is not provided: the program's rotational DOFs are
+//     added, not composed, and a consistent 3D corotational member needs
+//     the nodes' finite rotations (OpenSees's CorotCrdTransf3d keeps them in
+//     quaternions); constructing one is an InputError.
+//   Rigid end offsets (OpenSees's -jntOffset, global components o_I, o_J
+//     from each node to the member's flexible end) as OpenSees: by the
+//     linearised rigid link u_end = u_node + r x o, a constant matrix T_o:
+//     p = T_o^T p', K = T_o^T K' T_o, the chord joining the offset ends.
+// Sources: McGuire, Gallagher & Ziemian (2000) ch. 4, 9; Crisfield,
+// Non-linear Finite Element Analysis of Solids and Structures, vol. 1 (1991)
+// §7.3; de Souza, Force-based finite element for large displacement
+// inelastic analysis of frames, PhD thesis, UC Berkeley (2000); OpenSees's
+// CrdTransf classes for the basic system and its signs.
+#ifndef poundfe_elements_crd_transformation_h
+#define poundfe_elements_crd_transformation_h
+
+#include <Eigen/Core>
+
+namespace poundfe
+{
+  /// Sizes of a member in dim dimensions: global DOFs, basic deformations,
+  /// section resultants.
+  template <int dim>
+  struct MemberSize;
+  template <>
+  struct MemberSize<2>
+  {
+    static constexpr int dofs = 6, basic = 3, resultants = 2, space = 2;
+  };
+  template <>
+  struct MemberSize<3>
+  {
+    static constexpr int dofs = 12, basic = 6, resultants = 4, space = 3;
+  };
+
+  enum class Transformation
+  {
+    linear,
+    pdelta,
+    corotational
+  };
+
+  template <int dim>
+  class CrdTransformation
+  {
+  public:
+    static constexpr int n_dofs = MemberSize<dim>::dofs, n_basic = MemberSize<dim>::basic;
+    using Point       = Eigen::Matrix<double, dim, 1>;
+    using GlobalVector = Eigen::Matrix<double, n_dofs, 1>;
+    using GlobalMatrix = Eigen::Matrix<double, n_dofs, n_dofs>;
+    using BasicVector  = Eigen::Matrix<double, n_basic, 1>;
+    using BasicMatrix  = Eigen::Matrix<double, n_basic, n_basic>;
+    using Compatibility = Eigen::Matrix<double, n_basic, n_dofs>;
+
+    /// The member from node I to node J; `orientation` (3D only): the
+    /// vector in the local x-z plane (elements/frame_element_3d.h);
+    /// offsets from each node to the flexible end. InputError for a member
+    /// of zero length, an orientation parallel to it, or a corotational
+    /// member in space.
+    CrdTransformation(Transformation kind, const Point &node_i, const Point &node_j,
+                      const Point &offset_i = Point::Zero(), const Point &offset_j = Point::Zero(),
+                      const Eigen::Vector3d &orientation = Eigen::Vector3d::UnitZ());
+
+    Transformation kind() const { return type; }
+    /// The flexible length between the offset ends, undeformed.
+    double initial_length() const { return length0; }
+    /// Rows: local x, y(, z) in global components (2D: 2 x 2).
+    const Eigen::Matrix<double, dim, dim> &local_axes() const { return axes; }
+
+    /// Evaluate v and B at the global end displacements u.
+    void update(const GlobalVector &u);
+    const BasicVector  &basic_deformation() const { return v; }
+    /// B = dv/du at the last update (constant for linear and PDelta).
+    const Compatibility &compatibility() const { return b; }
+    /// p = B^T q + p_g at the last update.
+    GlobalVector global_force(const BasicVector &q) const;
+    /// K = B^T k_b B + K_g at the last update, for the basic forces q and
+    /// the basic tangent k_b = dq/dv.
+    GlobalMatrix global_tangent(const BasicVector &q, const BasicMatrix &k_b) const;
+    /// T_o: the flexible ends' displacements u' = T_o u (identity without
+    /// offsets).
+    const GlobalMatrix &offset_matrix() const { return offsets; }
+    /// J - I between the flexible ends, undeformed.
+    const Point &chord() const { return chord0; }
+    /// Whether K is symmetric whenever k_b is (PDelta's is not).
+    bool has_symmetric_tangent() const { return type != Transformation::pdelta; }
+
+  private:
+    /// Local x, y(, z) rows from the chord and the orientation.
+    void set_axes(const Eigen::Vector3d &orientation);
+    /// The flexible ends' displacements u' = T_o u.
+    GlobalVector offset_displacements(const GlobalVector &u) const;
+    void         update_corotational(const GlobalVector &u_flexible);
+    /// The transverse relative displacements' gradients g (PDelta), in
+    /// flexible-end components, and delta.
+    void transverse(const GlobalVector &u_flexible, Eigen::Matrix<double, n_dofs, dim - 1> &g,
+                    Eigen::Matrix<double, dim - 1, 1> &delta) const;
+
+    Transformation                  type;
+    Point                           chord0; // J - I between the flexible ends
+    double                          length0;
+    Eigen::Matrix<double, dim, dim> axes;
+    GlobalMatrix                    offsets; // T_o
+    bool                            has_offsets;
+    Compatibility                   b_linear, b; // B' (flexible ends) and B = B' T_o
+    BasicVector                     v;
+    GlobalVector                    u_end; // u' of the last update
+    double                          length = 0;      // corotational: Ln
+    Eigen::Matrix<double, 2, 1>     direction;       // corotational: (c, s)
+  };
+} // namespace poundfe
+
+#endif

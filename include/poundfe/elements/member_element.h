@@ -1,0 +1,101 @@
+// A beam-column (elements/beam_column.h) as a NonlinearElement, so that the
+// assembly and the Newmark-Newton integrator use it as they use hinges:
+//   K_ref,e = the member's tangent at the virgin state, u = 0 (assembled
+//     once into the linear K by whoever builds the model),
+//   force correction  p(u) - K_ref,e u,
+//   tangent change    K_t - K_ref,e = B_e D_e B_e^T with
+//     linear transformation:  B_e = B^T (n_dofs x n_basic, constant: the
+//       basic system's compatibility), D_e = k_b - k_b,0: rank 3 in the
+//       plane, 6 in space, so the Woodbury path keeps n_basic columns;
+//     PDelta, corotational: B changes with u, so B_e = I over the member's
+//       DOFs and D_e = K_t - K_ref,e (rank 6 or 12), the only constant
+//       basis the interface allows.
+// The member has no rate dependence (C_t = 0): damping is the model's
+// Rayleigh or modal C. Its work is trapezoidal, its stored energy what
+// unloading the sections at their initial stiffness recovers, so the
+// energy balance books its dissipation as hysteretic (as a hinge's).
+// The mass (member_mass) is the elastic frame elements' consistent or
+// lumped mass over the flexible length, carried to the nodes by the rigid
+// offsets.
+#ifndef poundfe_elements_member_element_h
+#define poundfe_elements_member_element_h
+
+#include <poundfe/elements/beam_column.h>
+#include <poundfe/elements/frame_element_3d.h>
+#include <poundfe/elements/nonlinear_element.h>
+#include <poundfe/model/model.h>
+
+#include <memory>
+
+namespace poundfe
+{
+  /// Whether the linear K holds the member's virgin tangent (K_ref,e, the
+  /// way a model builder assembles its members) or nothing of it (K_ref,e =
+  /// 0: the whole force goes through the correction, for an element added
+  /// to a model whose K does not know it).
+  enum class ReferenceStiffness
+  {
+    initial,
+    none
+  };
+
+  template <int dim>
+  class MemberElement : public NonlinearElement
+  {
+  public:
+    using GlobalVector = typename BeamColumn<dim>::GlobalVector;
+    using GlobalMatrix = typename BeamColumn<dim>::GlobalMatrix;
+
+    /// `equations`: the equation of each of the member's global DOFs
+    /// (n_dofs, -1 for the ground).
+    MemberElement(unsigned int building, std::string label, std::vector<int> equations,
+                  std::unique_ptr<BeamColumn<dim>> member,
+                  ReferenceStiffness reference_stiffness = ReferenceStiffness::initial,
+                  ElementKind        kind                = ElementKind::hinge);
+
+    /// K_ref,e: what the linear K must hold for this member.
+    const GlobalMatrix &reference_stiffness() const { return reference; }
+    const BeamColumn<dim> &member() const { return *beam; }
+
+    unsigned int    rank() const override;
+    Eigen::MatrixXd tangent_basis() const override;
+    bool            has_symmetric_tangent() const override;
+
+    bool   set_trial(const LocalVector &u, const LocalVector &v) override;
+    void   force_correction(LocalVectorOut f) const override;
+    void   tangent_change(double damping_factor, LocalMatrixOut d) const override;
+    double work_increment() const override;
+    double reference_energy() const override;
+    void   commit() override;
+    void   revert() override;
+    void   reset() override;
+    std::string failure() const override { return beam->failure(); }
+
+    /// The moment at end I (basic force 1); force_component(a): basic force a.
+    double force() const override { return beam->basic_force()[1]; }
+    double force_component(unsigned int a) const override { return beam->basic_force()[a]; }
+    /// The rotation of end I relative to the chord at global displacements u.
+    double deformation(const Eigen::VectorXd &u) const override;
+    double stored_energy() const override { return beam->stored_energy(); }
+    double initial_stiffness() const override { return beam->initial_tangent().norm(); }
+
+  private:
+    bool linear() const { return beam->transformation().kind() == Transformation::linear; }
+
+    std::unique_ptr<BeamColumn<dim>> beam;
+    GlobalMatrix                     reference;
+    typename BeamColumn<dim>::BasicMatrix reference_basic;
+    GlobalVector                     committed_force, committed_u;
+  };
+
+  /// The plane member's mass: mass per length m, the frame element's matrix.
+  Eigen::Matrix<double, 6, 6> member_mass(const CrdTransformation<2> &transformation,
+                                          double mass_per_length, MassMatrixType type);
+  /// The space member's mass from its elastic section's mass data (m, A,
+  /// Iy, Iz: the twist's inertia), FrameElement3D's matrix.
+  Eigen::Matrix<double, 12, 12> member_mass(const CrdTransformation<3> &transformation,
+                                            const Section3D &section, MassMatrixType type,
+                                            RotaryInertia rotary = RotaryInertia::excluded);
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,363 @@
+// The displacement-based and force-based beam-columns: their common state
+// handling and the two state determinations (equations in the header).
+#include <poundfe/elements/beam_column.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <Eigen/LU>
+
+#include <cmath>
+#include <limits>
+
+namespace poundfe
+{
+  std::vector<std::unique_ptr<SectionLaw>>
+  sections_along(const BeamIntegration &integration, const SectionLaw &section)
+  {
+    std::vector<std::unique_ptr<SectionLaw>> sections;
+    for (unsigned int i = 0; i < integration.size(); ++i)
+      sections.push_back(section.clone());
+    return sections;
+  }
+
+  std::vector<std::unique_ptr<SectionLaw>>
+  hinge_sections(const SectionLaw &end_i, const SectionLaw &interior, const SectionLaw &end_j)
+  {
+    std::vector<std::unique_ptr<SectionLaw>> sections;
+    for (const SectionLaw *s : {&end_i, &end_i, &interior, &interior, &end_j, &end_j})
+      sections.push_back(s->clone());
+    return sections;
+  }
+
+  // ---------------------------------------------------------------- common
+
+  template <int dim>
+  BeamColumn<dim>::BeamColumn(const CrdTransformation<dim> &transformation,
+                              BeamIntegration integration,
+                              std::vector<std::unique_ptr<SectionLaw>> sections_)
+    : transf(transformation)
+    , rule(std::move(integration))
+    , sections(std::move(sections_))
+  {
+    AssertDimension(sections.size(), rule.size());
+    for ([[maybe_unused]] const auto &s : sections)
+      AssertDimension(s->n_resultants(), static_cast<unsigned int>(n_resultants));
+    trial.force.setZero();
+    trial.stiffness.setZero();
+    trial.basic_force.setZero();
+    trial.basic_stiffness.setZero();
+    committed = trial;
+    trial_u = committed_u = GlobalVector::Zero();
+    virgin_stiffness.setZero();
+  }
+
+  template <int dim>
+  bool
+  BeamColumn<dim>::set_trial(const GlobalVector &u)
+  {
+    trial_u = u;
+    transf.update(u);
+    why.clear();
+    if (!basic_state(transf.basic_deformation(), trial.basic_force, trial.basic_stiffness))
+      return false;
+    trial.force     = transf.global_force(trial.basic_force);
+    trial.stiffness = transf.global_tangent(trial.basic_force, trial.basic_stiffness);
+    return trial.force.allFinite() && trial.stiffness.allFinite();
+  }
+
+  template <int dim>
+  void
+  BeamColumn<dim>::commit()
+  {
+    for (const auto &s : sections)
+      s->commit();
+    commit_basic();
+    committed   = trial;
+    committed_u = trial_u;
+  }
+
+  template <int dim>
+  void
+  BeamColumn<dim>::revert()
+  {
+    for (const auto &s : sections)
+      s->revert();
+    revert_basic();
+    trial   = committed;
+    trial_u = committed_u;
+    transf.update(trial_u);
+    why.clear();
+  }
+
+  template <int dim>
+  void
+  BeamColumn<dim>::reset()
+  {
+    for (const auto &s : sections)
+      s->reset();
+    reset_basic();
+    trial_u = committed_u = GlobalVector::Zero();
+    transf.update(trial_u);
+    // the virgin state: q = 0 and the initial tangent, from one evaluation
+    // at v = 0 that the sections forget
+    basic_state(transf.basic_deformation(), trial.basic_force, trial.basic_stiffness);
+    for (const auto &s : sections)
+      s->revert();
+    trial.force      = transf.global_force(trial.basic_force);
+    trial.stiffness  = transf.global_tangent(trial.basic_force, trial.basic_stiffness);
+    virgin_stiffness = trial.stiffness;
+    committed        = trial;
+    why.clear();
+  }
+
+  template <int dim>
+  double
+  BeamColumn<dim>::stored_energy() const
+  {
+    double energy = 0;
+    for (unsigned int i = 0; i < rule.size(); ++i)
+      {
+        const ResultantVector s  = sections[i]->resultant();
+        const ResultantMatrix k0 = sections[i]->initial_tangent();
+        energy += 0.5 * rule.weights[i] * length() * s.dot(k0.inverse() * s);
+      }
+    return energy;
+  }
+
+  // ---------------------------------------------------- displacement-based
+
+  template <int dim>
+  DispBeamColumn<dim>::DispBeamColumn(const CrdTransformation<dim> &transformation,
+                                      const SectionLaw &section, const unsigned int n_points)
+    : DispBeamColumn(transformation, legendre_integration(n_points),
+                     sections_along(legendre_integration(n_points), section))
+  {}
+
+  template <int dim>
+  DispBeamColumn<dim>::DispBeamColumn(const CrdTransformation<dim> &transformation,
+                                      BeamIntegration integration,
+                                      std::vector<std::unique_ptr<SectionLaw>> sections)
+    : BeamColumn<dim>(transformation, std::move(integration), std::move(sections))
+  {
+    this->reset();
+  }
+
+  template <int dim>
+  typename DispBeamColumn<dim>::Interpolation
+  DispBeamColumn<dim>::deformation_interpolation(const double xi, const double L)
+  {
+    Interpolation a = Interpolation::Zero();
+    a(0, 0)         = 1 / L;
+    a(1, 1)         = (6 * xi - 4) / L;
+    a(1, 2)         = (6 * xi - 2) / L;
+    if constexpr (dim == 3)
+      {
+        a(2, 3) = (6 * xi - 4) / L;
+        a(2, 4) = (6 * xi - 2) / L;
+        a(3, 5) = 1 / L;
+      }
+    return a;
+  }
+
+  template <int dim>
+  bool
+  DispBeamColumn<dim>::basic_state(const BasicVector &v, BasicVector &q, BasicMatrix &k)
+  {
+    using Base = BeamColumn<dim>;
+    q.setZero();
+    k.setZero();
+    const double L = this->length();
+    for (unsigned int i = 0; i < this->rule.size(); ++i)
+      {
+        const Interpolation a = deformation_interpolation(this->rule.points[i], L);
+        SectionLaw         &s = *this->sections[i];
+        if (!s.set_trial(SectionVector(a * v)))
+          {
+            this->why = "section " + std::to_string(i) + ": " + s.failure();
+            return false;
+          }
+        const double wl = this->rule.weights[i] * L;
+        q += wl * a.transpose() * typename Base::ResultantVector(s.resultant());
+        k += wl * a.transpose() * typename Base::ResultantMatrix(s.tangent()) * a;
+      }
+    return true;
+  }
+
+  // ----------------------------------------------------------- force-based
+
+  template <int dim>
+  ForceBeamColumn<dim>::ForceBeamColumn(const CrdTransformation<dim> &transformation,
+                                        const SectionLaw &section, const unsigned int n_points)
+    : ForceBeamColumn(transformation, lobatto_integration(n_points),
+                      sections_along(lobatto_integration(n_points), section))
+  {}
+
+  template <int dim>
+  ForceBeamColumn<dim>::ForceBeamColumn(const CrdTransformation<dim> &transformation,
+                                        BeamIntegration integration,
+                                        std::vector<std::unique_ptr<SectionLaw>> sections)
+    : BeamColumn<dim>(transformation, std::move(integration), std::move(sections))
+  {
+    const unsigned int n = this->rule.size();
+    for (IterationState *state : {&current, &committed, &start})
+      {
+        state->e.resize(n);
+        state->s.resize(n);
+        state->fs.resize(n);
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      initial_section_stiffness.push_back(this->sections[i]->initial_tangent());
+    this->reset();
+  }
+
+  template <int dim>
+  typename ForceBeamColumn<dim>::Interpolation
+  ForceBeamColumn<dim>::force_interpolation(const double xi)
+  {
+    Interpolation b = Interpolation::Zero();
+    b(0, 0)         = 1;
+    b(1, 1)         = xi - 1;
+    b(1, 2)         = xi;
+    if constexpr (dim == 3)
+      {
+        b(2, 3) = xi - 1;
+        b(2, 4) = xi;
+        b(3, 5) = 1;
+      }
+    return b;
+  }
+
+  template <int dim>
+  typename ForceBeamColumn<dim>::ResultantMatrix
+  ForceBeamColumn<dim>::flexibility(const unsigned int i) const
+  {
+    ResultantMatrix k = this->sections[i]->tangent();
+    for (int r = 0; r < k.rows(); ++r)
+      {
+        const double floor = 1e-8 * std::abs(initial_section_stiffness[i](r, r));
+        if (std::abs(k(r, r)) < floor)
+          k(r, r) = floor;
+      }
+    return k.inverse();
+  }
+
+  template <int dim>
+  void
+  ForceBeamColumn<dim>::reset_basic()
+  {
+    // the virgin state: e = s = 0, f_s = k_s0^-1, F^-1 the elastic k_b
+    BasicMatrix  f = BasicMatrix::Zero();
+    const double L = this->length();
+    for (unsigned int i = 0; i < this->rule.size(); ++i)
+      {
+        current.e[i].setZero();
+        current.s[i].setZero();
+        current.fs[i]          = initial_section_stiffness[i].inverse();
+        const Interpolation b  = force_interpolation(this->rule.points[i]);
+        f += this->rule.weights[i] * L * b.transpose() * current.fs[i] * b;
+      }
+    current.v.setZero();
+    current.q.setZero();
+    current.kv = f.inverse();
+    committed  = current;
+  }
+
+  template <int dim>
+  bool
+  ForceBeamColumn<dim>::basic_state(const BasicVector &v, BasicVector &q, BasicMatrix &k)
+  {
+    constexpr unsigned int max_levels = 4, max_pieces = 100;
+    iterations = pieces = 0;
+    BasicVector  remaining = v - current.v;
+    BasicVector  piece     = remaining;
+    unsigned int level     = 0;
+    while (remaining.squaredNorm() > 0 && current.v != v)
+      {
+        start = current;
+        // the last piece ends at v exactly
+        const BasicVector target = v - (remaining - piece);
+        if (iterate(target))
+          {
+            current.v = target;
+            remaining -= piece;
+            piece = remaining;
+            level = 0;
+            if (++pieces > max_pieces)
+              break;
+            continue;
+          }
+        current = start;
+        if (++level > max_levels)
+          break;
+        piece /= 10;
+      }
+    q = current.q;
+    k = current.kv;
+    if (current.v == v)
+      return true;
+    // the sections back at the last compatible state (a commit must not
+    // see the failed iteration's)
+    for (unsigned int i = 0; i < this->rule.size(); ++i)
+      this->sections[i]->set_trial(SectionVector(current.e[i]));
+    if (this->why.empty())
+      this->why = "force-based element: no compatible state after " +
+                  std::to_string(iterations) + " iterations in " + std::to_string(pieces + 1) +
+                  " pieces (basic deformation increment norm " +
+                  std::to_string(remaining.norm()) + ")";
+    return false;
+  }
+
+  template <int dim>
+  bool
+  ForceBeamColumn<dim>::iterate(const BasicVector &target)
+  {
+    constexpr unsigned int max_iterations = 20;
+    const double           L              = this->length();
+    const BasicVector      dv             = target - current.v;
+    current.q += current.kv * dv;
+    const double scale    = std::abs(target.dot(current.kv * target)) + std::abs(dv.dot(current.kv * dv));
+    double       previous = std::numeric_limits<double>::infinity();
+    for (unsigned int j = 0; j < max_iterations; ++j)
+      {
+        ++iterations;
+        BasicMatrix f        = BasicMatrix::Zero();
+        BasicVector achieved = BasicVector::Zero();
+        for (unsigned int i = 0; i < this->rule.size(); ++i)
+          {
+            const Interpolation   b  = force_interpolation(this->rule.points[i]);
+            const ResultantVector ss = b * current.q;
+            current.e[i] += current.fs[i] * (ss - current.s[i]);
+            SectionLaw &section = *this->sections[i];
+            if (!section.set_trial(SectionVector(current.e[i])))
+              {
+                this->why = "section " + std::to_string(i) + ": " + section.failure();
+                return false;
+              }
+            current.s[i]    = section.resultant();
+            current.fs[i]   = flexibility(i);
+            const double wl = this->rule.weights[i] * L;
+            f += wl * b.transpose() * current.fs[i] * b;
+            achieved += wl * b.transpose() * (current.e[i] + current.fs[i] * (ss - current.s[i]));
+          }
+        current.kv             = f.inverse();
+        const BasicVector r    = target - achieved;
+        const BasicVector dq   = current.kv * r;
+        const double      work = std::abs(r.dot(dq));
+        current.q += dq;
+        if (!current.q.allFinite() || !current.kv.allFinite())
+          return false;
+        // converged, or stalled at round-off well below OpenSees's tolerance
+        if (work <= 1e-20 * scale || (work <= 1e-12 * scale && work > 0.25 * previous))
+          return true;
+        previous = work;
+      }
+    return false;
+  }
+
+  template class BeamColumn<2>;
+  template class BeamColumn<3>;
+  template class DispBeamColumn<2>;
+  template class DispBeamColumn<3>;
+  template class ForceBeamColumn<2>;
+  template class ForceBeamColumn<3>;
+} // namespace poundfe

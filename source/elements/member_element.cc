@@ -1,0 +1,156 @@
+// A beam-column as a NonlinearElement, and a member's mass (see the header).
+#include <poundfe/elements/frame_element.h>
+#include <poundfe/elements/member_element.h>
+
+#include <deal.II/base/exceptions.h>
+
+namespace poundfe
+{
+  template <int dim>
+  MemberElement<dim>::MemberElement(const unsigned int building, std::string label,
+                                    std::vector<int> equations,
+                                    std::unique_ptr<BeamColumn<dim>> member,
+                                    const ReferenceStiffness reference_stiffness,
+                                    const ElementKind        kind)
+    : NonlinearElement(kind, building, std::move(label), std::move(equations))
+    , beam(std::move(member))
+  {
+    AssertDimension(n_dofs(), static_cast<unsigned int>(BeamColumn<dim>::n_dofs));
+    beam->reset();
+    reference       = beam->initial_tangent();
+    reference_basic = beam->basic_tangent();
+    if (reference_stiffness == ReferenceStiffness::none)
+      {
+        reference.setZero();
+        reference_basic.setZero();
+      }
+    committed_force.setZero();
+    committed_u.setZero();
+  }
+
+  template <int dim>
+  unsigned int
+  MemberElement<dim>::rank() const
+  {
+    return linear() ? BeamColumn<dim>::n_basic : BeamColumn<dim>::n_dofs;
+  }
+
+  template <int dim>
+  Eigen::MatrixXd
+  MemberElement<dim>::tangent_basis() const
+  {
+    if (linear())
+      return beam->transformation().compatibility().transpose();
+    return Eigen::MatrixXd::Identity(n_dofs(), n_dofs());
+  }
+
+  template <int dim>
+  bool
+  MemberElement<dim>::has_symmetric_tangent() const
+  {
+    return beam->transformation().has_symmetric_tangent();
+  }
+
+  template <int dim>
+  bool
+  MemberElement<dim>::set_trial(const LocalVector &u, const LocalVector & /*v*/)
+  {
+    return beam->set_trial(GlobalVector(u));
+  }
+
+  template <int dim>
+  void
+  MemberElement<dim>::force_correction(LocalVectorOut f) const
+  {
+    f = beam->resisting_force() - reference * beam->trial_displacement();
+  }
+
+  template <int dim>
+  void
+  MemberElement<dim>::tangent_change(const double /*damping_factor*/, LocalMatrixOut d) const
+  {
+    if (linear())
+      d = beam->basic_tangent() - reference_basic;
+    else
+      d = beam->tangent() - reference;
+  }
+
+  template <int dim>
+  double
+  MemberElement<dim>::work_increment() const
+  {
+    return 0.5 * (committed_force + beam->resisting_force())
+                   .dot(beam->trial_displacement() - committed_u);
+  }
+
+  template <int dim>
+  double
+  MemberElement<dim>::reference_energy() const
+  {
+    const GlobalVector &u = beam->trial_displacement();
+    return 0.5 * u.dot(reference * u);
+  }
+
+  template <int dim>
+  void
+  MemberElement<dim>::commit()
+  {
+    beam->commit();
+    committed_force = beam->resisting_force();
+    committed_u     = beam->trial_displacement();
+  }
+
+  template <int dim>
+  void
+  MemberElement<dim>::revert()
+  {
+    beam->revert();
+  }
+
+  template <int dim>
+  void
+  MemberElement<dim>::reset()
+  {
+    beam->reset();
+    committed_force.setZero();
+    committed_u.setZero();
+  }
+
+  template <int dim>
+  double
+  MemberElement<dim>::deformation(const Eigen::VectorXd &u) const
+  {
+    GlobalVector local = GlobalVector::Zero();
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      if (equations()[i] >= 0)
+        local[i] = u[equations()[i]];
+    CrdTransformation<dim> transformation = beam->transformation();
+    transformation.update(local);
+    return transformation.basic_deformation()[1];
+  }
+
+  Eigen::Matrix<double, 6, 6>
+  member_mass(const CrdTransformation<2> &transformation, const double mass_per_length,
+              const MassMatrixType type)
+  {
+    const Eigen::Vector2d chord = transformation.chord();
+    Section               section;
+    section.mass_per_length = mass_per_length;
+    const FrameElement element(Point2{0, 0}, Point2{chord[0], chord[1]}, section);
+    const auto        &t = transformation.offset_matrix();
+    return t.transpose() * element.mass(type) * t;
+  }
+
+  Eigen::Matrix<double, 12, 12>
+  member_mass(const CrdTransformation<3> &transformation, const Section3D &section,
+              const MassMatrixType type, const RotaryInertia rotary)
+  {
+    const FrameElement3D element(Eigen::Vector3d::Zero(), transformation.chord(),
+                                 transformation.local_axes().row(2).transpose(), section);
+    const auto &t = transformation.offset_matrix();
+    return t.transpose() * element.mass(type, rotary) * t;
+  }
+
+  template class MemberElement<2>;
+  template class MemberElement<3>;
+} // namespace poundfe
