@@ -52,11 +52,13 @@ namespace poundfe
     describe_gravity_state(const Model &model, GravityState &gravity)
     {
       gravity.base_reactions.assign(model.buildings.size(), 0.0);
+      std::vector<char> seen(model.n_equations(), 0); // a hinge's two nodes share ux, uy
       for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
         {
           const int eq = model.equation(dof);
-          if (eq < 0)
+          if (eq < 0 || seen[eq])
             continue;
+          seen[eq] = 1;
           const unsigned int node = dof / n_dofs_per_node;
           const auto         c    = static_cast<Component>(dof % n_dofs_per_node);
           if (c != Component::rz && std::abs(gravity.displacement[eq]) > gravity.peak_displacement)

@@ -38,10 +38,8 @@ push '  set Floor loads = 1e4, -5, 0' '' > loads.prm
 expect 1 "Building 1/Floor loads" pushover loads.prm --output out
 expect 1 "Building 1/Floor loads" run loads.prm --output out
 
-# elastic-perfectly plastic storeys (alpha = 0) pushed to 5 times their
-# yield drift with a load factor that cannot grow past the plateau and no
-# arc length: displacement control holds, so push the load (a
-# force-controlled mechanism) through a zero-stiffness storey instead
+# storeys that yield in the first step, which one Newton iteration cannot
+# converge, with one step cut and no arc length: exit 2, the curve so far
 push '  set Storey yield drifts = 0.002
   subsection Bouc-Wen
     set alpha = 0
@@ -49,7 +47,7 @@ push '  set Storey yield drifts = 0.002
   end' '  set Target drift = 0.5
   set Number of steps = 5
   set Max step cuts = 1
-  set Max iterations = 4
+  set Max iterations = 1
   set Arc length = false' > mechanism.prm
 expect 2 "pushover: no equilibrium" pushover mechanism.prm --output out
 [ -s out/pushover.csv ] && [ "$(wc -l < out/pushover.csv)" -ge 2 ] ||
