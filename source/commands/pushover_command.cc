@@ -60,6 +60,7 @@ namespace poundfe
               csv.add(p.element_deformations[e]);
             }
           csv.add(p.arc_length);
+          csv.end_row();
         }
       csv.commit();
     }

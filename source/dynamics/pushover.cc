@@ -300,8 +300,8 @@ namespace poundfe
             }
           if (arc || !parameters.arc_length)
             {
-              fail(solver.failure().empty() ? "no convergence at the smallest step" :
-                                              solver.failure());
+              fail(follower.failure().empty() ? "no convergence at the smallest step" :
+                                                follower.failure());
               return false;
             }
           // displacement control cannot pass (a peak, a snap-back): arc length

@@ -288,7 +288,10 @@ namespace poundfe
   {
     const Vector load = constant_load + lambda * reference_load;
     if (!solver.residual(load, u, r))
-      return false;
+      {
+        why = solver.failure();
+        return false;
+      }
     // relative to the load, or to the internal forces while the load is
     // still nearly zero (the first step of a push without gravity)
     target = settings.tolerance *
@@ -302,7 +305,10 @@ namespace poundfe
   {
     Eigen::SparseLU<SparseMatrix> lu(solver.tangent());
     if (lu.info() != Eigen::Success)
-      return false;
+      {
+        why = "the tangent stiffness is singular (a mechanism)";
+        return false;
+      }
     du_reference = lu.solve(reference_load);
     du_residual  = lu.solve(r);
     return du_reference.allFinite() && du_residual.allFinite();
@@ -334,8 +340,14 @@ namespace poundfe
             accept(u, lambda, point);
             return true;
           }
-        if (last_iterations == settings.max_iterations || !solve_both(r, du_reference, du_residual) ||
-            du_reference[control] == 0)
+        if (last_iterations == settings.max_iterations)
+          {
+            why = "no convergence in " + std::to_string(settings.max_iterations) +
+                  " iterations (residual " + number_text(r.norm()) + ", tolerance " +
+                  number_text(target) + ")";
+            break;
+          }
+        if (!solve_both(r, du_reference, du_residual) || du_reference[control] == 0)
           break;
         const double d_lambda = (goal - u[control] - du_residual[control]) / du_reference[control];
         u += du_residual + d_lambda * du_reference;
@@ -395,12 +407,19 @@ namespace poundfe
             return true;
           }
         double delta = 0;
-        if (!solve_both(r, du_reference, du_residual) ||
-            !arc_length_root(step + du_residual, du_reference, length, step, delta))
+        if (!solve_both(r, du_reference, du_residual))
           break;
+        if (!arc_length_root(step + du_residual, du_reference, length, step, delta))
+          {
+            why = "the arc-length constraint has no real root";
+            break;
+          }
         step += du_residual + delta * du_reference;
         d_lambda += delta;
       }
+    if (last_iterations > settings.max_iterations)
+      why = "no arc-length convergence in " + std::to_string(settings.max_iterations) +
+            " iterations";
     solver.revert();
     return false;
   }

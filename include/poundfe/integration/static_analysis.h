@@ -138,6 +138,8 @@ namespace poundfe
     bool arc_length_step(double length, unsigned int control, double direction,
                          PathPoint &point);
     unsigned int iterations() const { return last_iterations; }
+    /// Why the last step failed.
+    const std::string &failure() const { return why; }
 
   private:
     /// Newton's residual at (u, lambda); false when an element refuses it.
@@ -151,6 +153,7 @@ namespace poundfe
     const Vector &constant_load, &reference_load;
     PathSettings  settings;
     unsigned int  last_iterations = 0;
+    std::string   why;
   };
 
   /// Bring fresh (reset) elements to the state of `path`: each committed
