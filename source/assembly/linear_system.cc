@@ -511,7 +511,7 @@ namespace poundfe
     add_p_delta(const Model &model, const EquationRange kept, LinearSystem &system)
     {
       const std::vector<double> forces = member_axial_forces_under(
-        model, gravity_displacements(system.stiffness, gravity_loads(model), kept));
+        model, gravity_displacements(system.stiffness, total_gravity_loads(model), kept));
       Triplets triplets(kept);
       scatter_geometric_stiffness(model, forces, storey_gravity_loads(model), triplets);
       system.geometric_stiffness = from_triplets(model.n_equations(), triplets);
@@ -636,6 +636,42 @@ namespace poundfe
     return loads;
   }
 
+  Vector
+  floor_loads(const Model &model)
+  {
+    Vector loads = Vector::Zero(model.n_equations());
+    if (model.dimension != 2)
+      return loads;
+    std::vector<std::pair<int, double>> terms;
+    for (const Building &building : model.buildings)
+      for (const Floor &floor : building.floors)
+        if (floor.gravity_load != 0 && building.type != BuildingType::shear)
+          for (const unsigned int node : floor.nodes)
+            {
+              model.equation_terms(Model::dof(node, Component::uy), terms);
+              for (const auto &[row, coefficient] : terms)
+                loads[row] -= coefficient * floor.gravity_load / floor.nodes.size();
+            }
+    return loads;
+  }
+
+  Vector
+  total_gravity_loads(const Model &model)
+  {
+    Vector loads = gravity_loads(model);
+    for (const Building &building : model.buildings)
+      for (const Floor &floor : building.floors)
+        if (floor.gravity_load != 0)
+          return loads + floor_loads(model);
+    return loads;
+  }
+
+  std::vector<double>
+  member_axial_forces_at(const Model &model, const Vector &u)
+  {
+    return member_axial_forces_under(model, u);
+  }
+
   std::vector<double>
   member_axial_forces(const Model &model, const SparseMatrix &stiffness, const Vector &loads)
   {
@@ -657,7 +693,12 @@ namespace poundfe
           if (model.nodes[m.node].building == link.building &&
               model.nodes[m.node].position.y >= top.y - 1e-9 * std::abs(height))
             mass += m.mass;
-        compressions.push_back(model.gravity * mass);
+        double floor_load = 0;
+        for (const Floor &floor : model.buildings[link.building].floors)
+          if (floor.level >= top.y - 1e-9 * std::abs(height))
+            floor_load += floor.gravity_load;
+        compressions.push_back(floor_load == 0 ? model.gravity * mass :
+                                                 model.gravity * mass + floor_load);
       }
     return compressions;
   }

@@ -9,6 +9,7 @@ namespace poundfe
   {
     int run(const CommandRun &);            // run_command.cc
     int modal(const CommandRun &);          // modal_command.cc
+    int pushover(const CommandRun &);       // pushover_command.cc
     int ground_motion(const CommandRun &);  // ground_motion_command.cc
     int spectrum(const CommandRun &);       // spectrum_command.cc
     int montecarlo(const CommandRun &);     // montecarlo_command.cc
@@ -49,6 +50,10 @@ namespace poundfe
        file | own_interruption | distributed_solver | partition | fields, summary, commands::run},
       {"modal", "FILE", "frequencies, periods, participating masses, modes.pvd",
        file | fields, summary, commands::modal},
+      {"pushover", "FILE",
+       "static pushover after the gravity state: capacity curve, storey\n"
+       "drifts and hinges (pushover.csv, PNG), EC8 bilinear curve and N2 target",
+       file, summary, commands::pushover},
       {"ground-motion", "FILE [--realizations N]",
        "the ground acceleration a run would use (CSV, PNG); with N,\n"
        "realizations 0..N-1 and their ensemble PSD against the target",

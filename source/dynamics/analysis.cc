@@ -342,6 +342,17 @@ namespace poundfe
       check_matrices_in_range(input, model, buildings, system);
       check_stable_under_gravity(input, model, buildings, system);
       set_stick_stiffnesses(input, system, kept, analysis.model);
+      if (model.gravity_analysis.enabled)
+        {
+          if (kept[0] != 0 || kept[1] != model.n_equations())
+            input.fail("Model/Gravity analysis/Type",
+                       "a gravity analysis needs the whole model on one process "
+                       "(not with Time integration/Partition = buildings)");
+          set_gravity_state(analysis);
+        }
+      // the modes of the state the dynamics start from
+      const SparseMatrix &modal_stiffness =
+        analysis.gravity.active ? analysis.gravity.tangent : system.stiffness;
 
       std::vector<std::array<double, 2>> coefficients;
       for (unsigned int b = 0; b < model.buildings.size(); ++b)
@@ -357,7 +368,7 @@ namespace poundfe
           analysis.building_modes.push_back(
             wanted == 0 || !ours ?
               Modes() :
-              modes_of(input, modal, block(system.mass, range), block(system.stiffness, range),
+              modes_of(input, modal, block(system.mass, range), block(modal_stiffness, range),
                        system.influence.segment(range[0], range[1] - range[0]), wanted,
                        "building '" + building.name + "'"));
           coefficients.push_back(
@@ -367,7 +378,7 @@ namespace poundfe
       assemble_damping(model, coefficients, system);
       assemble_modal_damping(analysis);
       if (n_model_modes > 0)
-        analysis.modes = modes_of(input, modal, system.mass, system.stiffness, system.influence,
+        analysis.modes = modes_of(input, modal, system.mass, modal_stiffness, system.influence,
                                   n_model_modes, "the model");
       if (model.dimension == 3)
         add_plan_participations(analysis);

@@ -65,6 +65,7 @@ namespace poundfe
       assemble_linear_part(matrices_changed);
     if (!working.model.friction_surfaces.empty()) // k_s (automatic) and c_s of the new K, M
       fit_stick_laws(working.system, working.model);
+    set_gravity_state(working); // the gravity state of the new model (nothing when off)
   }
 
   void

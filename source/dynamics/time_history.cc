@@ -8,6 +8,7 @@
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/integration/dormand_prince.h>
 #include <poundfe/integration/newmark.h>
+#include <poundfe/integration/static_analysis.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -127,6 +128,16 @@ namespace poundfe
     , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
   {
     integrator->set_equation_names(equation_names(analysis_.model));
+    if (analysis_.gravity.active)
+      {
+        if (dopri)
+          parameters.input.fail("Model/Gravity analysis/Type",
+                                "a gravity analysis first is not available with Time "
+                                "integration/Method = dopri; use newmark");
+        const std::vector<Vector> &path = analysis_.gravity.path;
+        integrator->set_element_preload(
+          [&path](NonlinearElements &e) { restore_static_state(path, e); });
+      }
     // known before the observers are made (the recorders choose their columns)
     view.set_vertical_ground_motion(parameters.ground_motion.has_vertical());
   }
@@ -142,6 +153,8 @@ namespace poundfe
     , view(analysis_.model, analysis_.system, lockstep_stepper.observed_elements(), stepper)
     , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
   {
+    AssertThrow(!analysis_.gravity.active,
+                dealii::ExcMessage("a partitioned run refuses a gravity analysis first"));
     lockstep_stepper.set_observed(view);
     view.set_vertical_ground_motion(parameters.ground_motion.has_vertical());
   }
@@ -210,6 +223,9 @@ namespace poundfe
   TimeHistory::run(const Excitation &excitation, const Observers &observers,
                    const bool interruptible)
   {
+    if (analysis.gravity.active) // displacements are totals: the gravity state's and more
+      return run(Vector(initial.displacement + analysis.gravity.displacement), initial.velocity,
+                 excitation, observers, interruptible);
     return run(initial.displacement, initial.velocity, excitation, observers, interruptible);
   }
 
@@ -241,7 +257,13 @@ namespace poundfe
   {
     const unsigned long n = n_steps(excitation);
     const double        dt = time_integration.newmark.time_step;
-    const LoadFunction  load = [&excitation](const double t, Vector &p) { excitation.load(t, p); };
+    const Vector       *held = analysis.gravity.active ? &analysis.gravity.held : nullptr;
+    // the gravity loads held constant (OpenSees's loadConst)
+    const LoadFunction  load = [&excitation, held](const double t, Vector &p) {
+      excitation.load(t, p);
+      if (held)
+        p += *held;
+    };
     Vector p0(analysis.system.n_equations());
     load(0, p0);
     stepper.initialize(p0, u0, v0);

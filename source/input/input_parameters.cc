@@ -240,6 +240,7 @@ namespace poundfe
     spectrum.declare(prm);
     sections.declare(prm);
     moment_curvature.declare(prm);
+    pushover.declare(prm);
   }
 
   void
@@ -280,6 +281,7 @@ namespace poundfe
     spectrum.check(*this);
     sections.check(*this);
     moment_curvature.check(*this, sections);
+    pushover.finalize(*this, model.buildings.size());
   }
 
   void

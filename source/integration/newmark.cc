@@ -413,6 +413,8 @@ namespace poundfe
     max_balance_error = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
       (*elements)[h].reset();
+    if (element_preload && elements)
+      element_preload(*elements);
     set_consistent_acceleration(load);
     if (elements)
       records.start(*elements);

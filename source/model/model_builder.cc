@@ -418,6 +418,23 @@ namespace poundfe
         lump_floor_mass(model, building.floors[i], value_for(p.floor_masses, i));
     }
 
+    /// Building <b + 1>/Floor loads on its floors (one for all or one per
+    /// floor; a mesh's floors are known only now).
+    void
+    set_floor_loads(const InputFile &input, const BuildingParameters &p, const unsigned int b,
+                    Building &building)
+    {
+      if (p.floor_loads.empty())
+        return;
+      const std::string path = "Building " + std::to_string(b + 1) + "/Floor loads";
+      if (p.floor_loads.size() != 1 && p.floor_loads.size() != building.floors.size())
+        throw InputError(input.file, input.line_of(path), path,
+                         "needs 1 value or " + std::to_string(building.floors.size()) +
+                           " (one per floor), got " + std::to_string(p.floor_loads.size()));
+      for (unsigned int i = 0; i < building.floors.size(); ++i)
+        building.floors[i].gravity_load = value_for(p.floor_loads, i);
+    }
+
     /// The joint of a floor that faces the neighbour: rightmost or leftmost.
     unsigned int
     facing_node(const Model &model, const Floor &floor, const bool right_side)
@@ -661,6 +678,7 @@ namespace poundfe
     model.mass_matrix            = parameters.mass_matrix;
     model.geometric_nonlinearity = parameters.geometric_nonlinearity;
     model.gravity                = parameters.gravity;
+    model.gravity_analysis       = parameters.gravity_analysis;
     model.dimension              = parameters.dimension;
     double left = 0;
     for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
@@ -699,6 +717,7 @@ namespace poundfe
         if (p.type != BuildingType::shear && parameters.dimension == 2 && p.foundation.enabled())
           add_frame_foundation(model, p.foundation, b, building);
         building.n_nodes = model.n_nodes() - building.first_node;
+        set_floor_loads(input, p, b, building);
 
         RayleighDamping &d = building.damping;
         d.damping_ratio    = p.damping_ratio;

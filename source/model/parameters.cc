@@ -185,6 +185,13 @@ namespace poundfe
                       "Mass of each floor, bottom up (roof last): one value for all or one "
                       "per floor. Frames: lumped in equal shares at the floor's joints; "
                       "shear buildings: the floor mass. Unit: kg.");
+    prm.add_parameter("Floor loads", floor_loads,
+                      "Vertical loads beyond the floors' weight (dead and live loads "
+                      "without mass), bottom up: one value for all or one per floor; empty: "
+                      "none. A 2D frame's floor load is shared equally by its joints and "
+                      "enters the gravity analysis (Model/Gravity analysis) and the P-Delta "
+                      "axial forces; a shear building's adds to the P-Delta compression of "
+                      "the storeys below it. Unit: N.");
     declare_frame_entries(prm);
     declare_frame_3d_entries(prm);
     declare_mesh_entries(prm);
@@ -389,6 +396,8 @@ namespace poundfe
           check_building_sizes(input, s, b);
           input.list(s + "Storey heights", b.storey_heights, n, false, "one per storey");
           input.list(s + "Floor masses", b.floor_masses, n, false, "one per floor");
+          if (!b.floor_loads.empty())
+            input.list(s + "Floor loads", b.floor_loads, n, true, "one per floor");
         }
       if (b.type == BuildingType::frame)
         {
@@ -424,6 +433,8 @@ namespace poundfe
                  "one per group id");
           for (const double m : b.floor_masses)
             input.non_negative(s + "Floor masses", m);
+          for (const double q : b.floor_loads)
+            input.non_negative(s + "Floor loads", q);
         }
     }
 
@@ -618,6 +629,7 @@ namespace poundfe
     prm.add_parameter("Separations", separations,
                       "Clear distance between building i and i+1 (one value for "
                       "all pairs or one per pair). Unit: m.");
+    declare_gravity_analysis(prm);
     prm.leave_subsection();
     for (unsigned int b = 0; b < buildings.size(); ++b)
       {
@@ -628,8 +640,45 @@ namespace poundfe
   }
 
   void
+  ModelParameters::declare_gravity_analysis(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Gravity analysis");
+    prm.declare_entry("Type", "none", Patterns::Selection("none|static"),
+                      "static: before any dynamics, a load-controlled Newton analysis of the "
+                      "gravity loads (every mass times Gravity, and each building's Floor "
+                      "loads) with the nonlinear elements; the dynamics start from its state "
+                      "(displacements, hinges, axial forces of P-Delta) with the loads held "
+                      "constant, and every displacement reported is the total. none: the "
+                      "dynamics start from the undeformed state. Unit: -.");
+    prm.add_action("Type", [this](const std::string &value) {
+      gravity_analysis.enabled = value == "static";
+    });
+    prm.add_parameter("Number of steps", gravity_analysis.n_steps,
+                      "Equal load steps from 0 to the whole gravity load (each halved on "
+                      "non-convergence, Maximum step cuts times). Unit: -.",
+                      Patterns::Integer(1, 100000));
+    prm.add_parameter("Tolerance", gravity_analysis.tolerance,
+                      "Newton converges when the residual's norm is at most this times the "
+                      "gravity load's. Unit: -.");
+    prm.add_parameter("Max iterations", gravity_analysis.max_iterations,
+                      "Newton iterations per load step. Unit: -.", Patterns::Integer(1, 1000));
+    prm.add_parameter("Max step cuts", gravity_analysis.max_step_cuts,
+                      "How often a load step that does not converge is halved. Unit: -.",
+                      Patterns::Integer(0, 30));
+    prm.leave_subsection();
+  }
+
+  void
   ModelParameters::finalize(const InputFile &input)
   {
+    input.positive("Model/Gravity analysis/Tolerance", gravity_analysis.tolerance);
+    if (!(gravity_analysis.tolerance < 1))
+      input.fail("Model/Gravity analysis/Tolerance",
+                 "must be below 1, got " + number_text(gravity_analysis.tolerance));
+    for (unsigned int b = 0; b < buildings.size(); ++b)
+      if (dimension == 3 && !buildings[b].floor_loads.empty())
+        input.fail("Building " + std::to_string(b + 1) + "/Floor loads",
+                   "floor loads are for 2D models (Model/Dimension = 2)");
     for (unsigned int b = 0; b < buildings.size(); ++b)
       buildings[b].finalize(input, b + 1);
     input.positive("Model/Gravity", gravity);

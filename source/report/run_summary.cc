@@ -108,7 +108,23 @@ namespace poundfe
     if (model.dimension == 3) // the storeys of 3D shear buildings
       json.value("resisting_planes", static_cast<unsigned int>(model.plane_links.size()));
     json.value("buildings", static_cast<unsigned int>(model.buildings.size())).end_object();
+    write_gravity_state(json, analysis.gravity);
     write_modes(json, "modes", analysis.modes);
+  }
+
+  void
+  write_gravity_state(JsonWriter &json, const GravityState &gravity)
+  {
+    if (!gravity.active)
+      return;
+    json.begin_object("gravity")
+      .value("load_steps", gravity.steps)
+      .value("iterations", gravity.iterations)
+      .value("step_cuts", gravity.cuts)
+      .value("peak_displacement_m", gravity.peak_displacement)
+      .value("peak_displacement_at", gravity.peak_where)
+      .value("base_vertical_reactions_N", gravity.base_reactions)
+      .end_object();
   }
 
   RunSummary::RunSummary(const Analysis &analysis, const RunParameters &parameters,

@@ -102,6 +102,19 @@ namespace poundfe
   /// masses (DofMass) and the 3D members' self-weight through T_eᵀ.
   Vector gravity_loads(const Model &model);
 
+  /// The Floor::gravity_load of every floor of a 2D frame, -q / n on uy
+  /// of each of its n nodes (shear buildings have no vertical DOF: their
+  /// floor loads act through storey_gravity_loads alone).
+  Vector floor_loads(const Model &model);
+
+  /// What the gravity analysis and P-Delta load the structure with:
+  /// gravity_loads, plus floor_loads when a floor has one.
+  Vector total_gravity_loads(const Model &model);
+
+  /// Axial force (tension positive) of every member (Model::members, then
+  /// Model::members_3d) at the displacements u.
+  std::vector<double> member_axial_forces_at(const Model &model, const Vector &u);
+
   /// Axial force (tension positive) of every member (Model::members, then
   /// Model::members_3d) under `loads`, from the
   /// linear static analysis `stiffness` u = loads. Throws NumericalError if
@@ -110,7 +123,7 @@ namespace poundfe
                                           const Vector &loads);
 
   /// Compression P of every storey link: g times the nodal masses of its
-  /// building at and above the link's top node.
+  /// building at and above the link's top node, plus the floor loads there.
   std::vector<double> storey_gravity_loads(const Model &model);
 
   /// K_G of the members under `axial_forces` (tension positive) and of the

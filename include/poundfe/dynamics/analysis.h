@@ -19,10 +19,39 @@
 
 namespace poundfe
 {
+  /// The state of Model/Gravity analysis = static (dynamics/gravity_state.cc):
+  /// what every time history of the model starts from, the loads held.
+  struct GravityState
+  {
+    bool active = false;
+    /// The committed displacements of every load step (restore_static_state
+    /// brings a fresh set of elements to the gravity state through them).
+    std::vector<Vector> path;
+    /// u_g, the last of them.
+    Vector displacement;
+    /// The gravity loads applied (total_gravity_loads).
+    Vector applied;
+    /// K u_g + f(u_g): the load held constant through the dynamics, equal to
+    /// `applied` to the tolerance; the equations at t = 0 are in equilibrium
+    /// to round-off with it.
+    Vector held;
+    /// K + sum_e B_e D_e B_e^T at the gravity state (the modes' stiffness).
+    SparseMatrix tangent;
+    /// The largest |u_g| of a translation, and its equation's name.
+    double      peak_displacement = 0;
+    std::string peak_where;
+    /// Per building: the vertical load its structure carries to the base
+    /// (the sum of the applied vertical loads on its free DOFs), N.
+    std::vector<double> base_reactions;
+    unsigned int steps = 0, iterations = 0, cuts = 0;
+  };
+
   struct Analysis
   {
     Model              model;
     LinearSystem       system;
+    /// Model/Gravity analysis = static: its state (inactive otherwise).
+    GravityState       gravity;
     std::vector<Modes> building_modes; // for Rayleigh damping and reports
     Modes              modes;          // whole model
     /// Input that is valid but probably not what was meant (damping_warnings).
@@ -51,6 +80,14 @@ namespace poundfe
                                          const ModalParameters &modal,
                                          std::array<unsigned int, 2> buildings,
                                          unsigned int n_building_modes);
+
+  /// Model/Gravity analysis = static: the load-controlled gravity analysis
+  /// of the model on `analysis.system` (integration/static_analysis.h),
+  /// into analysis.gravity; with P-Delta, K_G is then rebuilt from the
+  /// members' axial forces at the gravity state and the state
+  /// re-equilibrated on K_E + K_G. Nothing when the analysis is off.
+  /// Throws NumericalError when a load step never converges.
+  void set_gravity_state(Analysis &analysis);
 
   /// The stick spring and dashpot of each friction element from M and K:
   /// k_s = 1e4 K_ii when automatic (0 in the input), c_s = 2 sqrt(k_s M_ii)

@@ -8,6 +8,7 @@
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/dynamics/modal_parameters.h>
+#include <poundfe/dynamics/pushover_parameters.h>
 #include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/reliability_analysis_parameters.h>
 #include <poundfe/reliability/reliability_parameters.h>
@@ -75,6 +76,7 @@ namespace poundfe
     SpectrumParameters        spectrum;    // Spectrum (response spectra)
     SectionsParameters        sections;    // Sections (fibre cross-sections)
     MomentCurvatureParameters moment_curvature; // Moment curvature
+    PushoverParameters        pushover;    // Pushover (the pushover command)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
     /// Every entry's value as read (defaults included), by its path

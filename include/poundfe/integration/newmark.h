@@ -169,6 +169,13 @@ namespace poundfe
 
     /// Start at time 0 from (u0, v0) under load p0.
     void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
+    /// Called by initialize() right after the elements are reset, before
+    /// they are set to u0: brings them to an earlier state (the gravity
+    /// state, replayed: integration/static_analysis.h). Null: none.
+    void set_element_preload(std::function<void(NonlinearElements &)> preload)
+    {
+      element_preload = std::move(preload);
+    }
     /// Start from rest.
     void initialize(const Vector &load);
     /// Continue from (u_new, v_new) at the current time under p = load
@@ -381,6 +388,7 @@ namespace poundfe
     double         last_step = 0; // of the last accepted (sub)step
     std::string failure;
     std::function<void()> substep_callback;
+    std::function<void(NonlinearElements &)> element_preload;
     std::vector<std::string> equation_names;
     std::function<std::string(unsigned int)> equation_namer;
     /// "equation i, NAME" (the name from equation_names or equation_namer).

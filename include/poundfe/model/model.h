@@ -350,6 +350,11 @@ namespace poundfe
     double                    level         = 0;
     double                    storey_height = 0;
     std::vector<unsigned int> nodes;
+    /// A vertical load (N, downwards) beyond the floor's weight (Building
+    /// <i>/Floor loads: dead and live loads without mass): in a gravity
+    /// analysis, shared equally by the floor's nodes of a 2D frame; in the
+    /// P-Delta compression of a shear building's storeys below.
+    double                    gravity_load  = 0;
   };
 
   enum class BuildingType
@@ -431,6 +436,18 @@ namespace poundfe
     p_delta
   };
 
+  /// Model/Gravity analysis: a load-controlled static analysis of the
+  /// gravity loads before any dynamics (integration/static_analysis.h),
+  /// whose state the dynamics start from with the loads held constant.
+  struct GravityAnalysisSettings
+  {
+    bool         enabled        = false; // Type = static
+    unsigned int n_steps        = 10;
+    double       tolerance      = 1e-8; // on the residual, relative to the load
+    unsigned int max_iterations = 25;
+    unsigned int max_step_cuts  = 8;
+  };
+
   class Model
   {
   public:
@@ -457,6 +474,7 @@ namespace poundfe
     MassMatrixType          mass_matrix = MassMatrixType::lumped;
     GeometricNonlinearity   geometric_nonlinearity = GeometricNonlinearity::none;
     double                  gravity                = 9.81; // m/s^2, for P-Delta
+    GravityAnalysisSettings gravity_analysis;
     /// 2: planar frames and stick models; 3: torsionally coupled shear
     /// buildings and 3D frames.
     unsigned int            dimension              = 2;

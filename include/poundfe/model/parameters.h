@@ -53,6 +53,9 @@ namespace poundfe
     std::vector<double> column_mass_per_length{0.0};
     std::vector<double> beam_mass_per_length{0.0};
     std::vector<double> floor_masses{20000.0};
+    /// Vertical loads beyond the floors' weight (dead and live loads without
+    /// mass), one for all or one per floor; empty: none (Model/Gravity analysis).
+    std::vector<double> floor_loads;
     BaseFixity          base_fixity         = BaseFixity::fixed;
     unsigned int        elements_per_member = 1;
 
@@ -178,6 +181,8 @@ namespace poundfe
     GeometricNonlinearity           geometric_nonlinearity = GeometricNonlinearity::none;
     double                          gravity                = 9.81;
     unsigned int                    dimension              = 2;
+    /// Model/Gravity analysis.
+    GravityAnalysisSettings         gravity_analysis;
     std::vector<double>             separations{0.05};
     std::vector<BuildingParameters> buildings; // one per `Building <i>`
 
@@ -192,6 +197,8 @@ namespace poundfe
     std::vector<NamedInputFile> input_files() const;
 
   private:
+    /// The subsection Model/Gravity analysis.
+    void declare_gravity_analysis(dealii::ParameterHandler &prm);
     /// Dimension 3: shear buildings with their Plan. Throws InputError.
     void finalize_plan(const InputFile &input);
   };

@@ -27,6 +27,10 @@ namespace poundfe
 
   /// The model's size and whole-model modes (run and modal summaries).
   void write_model(JsonWriter &json, const Analysis &analysis);
+  /// "gravity": the gravity state the dynamics start from (load steps,
+  /// peak displacement, the vertical load each building carries to its
+  /// base); nothing without Model/Gravity analysis.
+  void write_gravity_state(JsonWriter &json, const GravityState &gravity);
   /// Frequencies, periods and participating mass ratios under `key`.
   void write_modes(JsonWriter &json, const std::string &key, const Modes &modes);
   /// Building b's damping: its Type, the Rayleigh coefficients (0 for modal

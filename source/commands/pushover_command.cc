@@ -1,0 +1,173 @@
+// `poundfe pushover`: the static pushover of the model after its gravity
+// state (dynamics/pushover.h): pushover.csv (the curve, each storey's
+// drift, each hinge's force and deformation), the equal-energy bilinear
+// idealisation of the control building's curve and, with a Spectrum/Target,
+// the N2 target displacement (dynamics/capacity_curve.h), summary.json and
+// pushover.png. A push that cannot go on keeps the curve so far and exits 2.
+#include <poundfe/commands/command.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/dynamics/capacity_curve.h>
+#include <poundfe/dynamics/pushover.h>
+#include <poundfe/excitation/response_spectrum.h>
+#include <poundfe/input/engine_parameters.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/csv_writer.h>
+#include <poundfe/output/json_writer.h>
+#include <poundfe/output/output_directory.h>
+#include <poundfe/output/plots.h>
+#include <poundfe/report/run_summary.h>
+
+#include <ostream>
+
+namespace poundfe
+{
+  namespace
+  {
+    /// pushover.csv: one row per committed point.
+    void
+    write_pushover_csv(const std::string &file, const Model &model, const PushoverResult &r)
+    {
+      std::vector<std::string> header{"step", "load_factor", "control_displacement_m",
+                                      "base_shear_N"};
+      for (const Building &b : model.buildings)
+        header.push_back("base_shear_" + b.name + "_N");
+      for (const std::string &s : r.storeys)
+        header.push_back("drift " + s);
+      for (const std::string &e : r.elements)
+        {
+          header.push_back(e + " force");
+          header.push_back(e + " deformation");
+        }
+      header.push_back("arc_length");
+      CsvWriter csv(file, header);
+      for (unsigned int i = 0; i < r.points.size(); ++i)
+        {
+          const PushoverPoint &p = r.points[i];
+          csv.begin_row(i);
+          csv.add(p.lambda);
+          csv.add(p.control_displacement);
+          double total = 0;
+          for (const double v : p.base_shears)
+            total += v;
+          csv.add(total);
+          for (const double v : p.base_shears)
+            csv.add(v);
+          for (const double v : p.drifts)
+            csv.add(v);
+          for (unsigned int e = 0; e < p.element_forces.size(); ++e)
+            {
+              csv.add(p.element_forces[e]);
+              csv.add(p.element_deformations[e]);
+            }
+          csv.add(p.arc_length);
+          csv.end_row();
+        }
+      csv.commit();
+    }
+
+    /// The control building's first excursion as the equivalent system's
+    /// curve (d*, F*), from (0, 0).
+    void
+    sdof_curve(const PushoverResult &r, const unsigned int building, std::vector<double> &d,
+               std::vector<double> &F)
+    {
+      const double start = r.points.front().control_displacement;
+      for (const PushoverPoint &p : r.points)
+        {
+          const double displacement = (p.control_displacement - start) / r.gamma;
+          if (!d.empty() && std::abs(displacement) < std::abs(d.back()))
+            break; // the first excursion ends
+          d.push_back(std::abs(displacement));
+          F.push_back(std::abs(p.base_shears[building] - r.points.front().base_shears[building]) /
+                      r.gamma);
+        }
+    }
+  } // namespace
+} // namespace poundfe
+
+namespace poundfe::commands
+{
+  namespace
+  {
+    /// summary.json's "capacity": the idealisation and the N2 target.
+    void
+    write_capacity(JsonWriter &json, const InputParameters &input, const PushoverResult &r,
+                   std::ostream &out)
+    {
+      std::vector<double> d, F;
+      sdof_curve(r, input.pushover.control_building - 1, d, F);
+      if (d.size() < 2)
+        return;
+      const BilinearCurve bilinear = ec8_bilinear(d, F);
+      json.begin_object("capacity")
+        .value("gamma", r.gamma)
+        .value("equivalent_mass_kg", r.equivalent_mass)
+        .value("yield_force_N", bilinear.yield_force)
+        .value("yield_displacement_m", bilinear.yield_displacement)
+        .value("ultimate_displacement_m", bilinear.ultimate_displacement)
+        .value("energy_J", bilinear.energy);
+      out << "equivalent system: Gamma " << r.gamma << ", m* " << r.equivalent_mass
+          << " kg, F_y* " << bilinear.yield_force << " N, d_y* " << bilinear.yield_displacement
+          << " m\n";
+      const SpectrumParameters &s = input.spectrum;
+      if (s.target != DesignSpectrum::none && bilinear.yield_force > 0 &&
+          bilinear.yield_displacement > 0)
+        {
+          const double   tc = ec8_ground_parameters(s.target, s.ground_type).TC;
+          const N2Target t  = ec8_n2_target(
+            bilinear, r.equivalent_mass, r.gamma,
+            [&s](const double period) { return s.target_psa(0.05, period); }, tc);
+          json.value("period_s", t.period)
+            .value("spectral_acceleration_m_s2", t.spectral_acceleration)
+            .value("elastic_displacement_m", t.elastic_displacement)
+            .value("reduction_factor", t.reduction)
+            .value("target_displacement_sdof_m", t.target_sdof)
+            .value("target_displacement_m", t.target);
+          out << "N2 target displacement: " << t.target << " m (T* " << t.period << " s)\n";
+        }
+      json.end_object();
+    }
+  } // namespace
+
+  int
+  pushover(const CommandRun &run)
+  {
+    const InputParameters &input    = *run.input;
+    const Analysis         analysis = prepare_analysis(input);
+    const PushoverResult   result   = run_pushover(analysis, input.pushover, input);
+    prepare_output_directory(run.directory);
+    write_pushover_csv(run.directory + "/pushover.csv", analysis.model, result);
+    if (!result.completed)
+      throw NumericalError(result.failure);
+    const std::vector<std::string> figures = draw_plots(
+      run.directory, {Plot{"pushover.png", "capacity curve", "control displacement (m)",
+                           "base shear (N)",
+                           {PlotSeries{"pushover.csv", "3:4", "base shear", "lines"}}}});
+    JsonWriter json;
+    begin_summary(json, "pushover", input);
+    write_model(json, analysis);
+    json.value("control", result.control_name)
+      .value("control_height_m", result.control_height)
+      .value("points", static_cast<unsigned int>(result.points.size()))
+      .value("iterations", result.iterations)
+      .value("arc_length_steps", result.arc_length_steps)
+      .value("step_cuts", result.step_cuts)
+      .value("peak_base_shear_N", [&] {
+        double peak = 0;
+        for (const PushoverPoint &p : result.points)
+          for (const double v : p.base_shears)
+            peak = std::max(peak, std::abs(v));
+        return peak;
+      }());
+    write_capacity(json, input, result, run.out);
+    std::vector<std::string> files{"pushover.csv", "summary.json"};
+    files.insert(files.end(), figures.begin(), figures.end());
+    json.begin_object("output").value("directory", run.directory).value("files", files).end_object();
+    json.end_object();
+    write_file_atomically(run.directory + "/summary.json", json.str());
+    run.out << result.points.size() << " points to the control displacement "
+            << result.points.back().control_displacement << " m; results in " << run.directory
+            << "/ (pushover.csv, summary.json, pushover.png)\n";
+    return 0;
+  }
+} // namespace poundfe::commands

@@ -1,0 +1,115 @@
+// Gravity first (OpenSees: a load-controlled static analysis of the gravity
+// pattern, then loadConst): the state every time history of the model starts
+// from. With P-Delta the gravity analysis runs on K_E; the members' axial
+// forces at its state give K_G (the linearised P-Delta of
+// assembly/linear_system.h, now of the gravity state), and the state is
+// re-equilibrated on K_E + K_G at the full load. The load held through the
+// dynamics is the resisting force K u_g + f(u_g) of the end state, so that a
+// run without excitation stays at u_g to round-off.
+#include <poundfe/dynamics/analysis.h>
+#include <poundfe/dynamics/time_history.h>
+#include <poundfe/assembly/nonlinear_elements.h>
+#include <poundfe/integration/static_analysis.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <cmath>
+
+namespace poundfe
+{
+  namespace
+  {
+    LoadControlSettings
+    load_control_of(const GravityAnalysisSettings &g)
+    {
+      LoadControlSettings settings;
+      settings.n_steps        = g.n_steps;
+      settings.tolerance      = g.tolerance;
+      settings.max_iterations = g.max_iterations;
+      settings.max_step_cuts  = g.max_step_cuts;
+      return settings;
+    }
+
+    /// P-Delta: K_G of the axial forces at u_g in K (and the structure's
+    /// stiffness of compliant foundations), in place of the one of the
+    /// linear gravity analysis.
+    void
+    rebuild_geometric_stiffness(const Model &model, const Vector &u_g, LinearSystem &system)
+    {
+      const SparseMatrix geometric = geometric_stiffness(
+        model, member_axial_forces_at(model, u_g), storey_gravity_loads(model));
+      system.stiffness = SparseMatrix(system.stiffness - system.geometric_stiffness) + geometric;
+      system.stiffness.makeCompressed();
+      if (system.structure_stiffness.rows() > 0)
+        system.structure_stiffness =
+          SparseMatrix(system.structure_stiffness - system.geometric_stiffness) + geometric;
+      system.geometric_stiffness = geometric;
+    }
+
+    /// The peak translation of u_g and the vertical loads carried by each
+    /// building's structure.
+    void
+    describe_gravity_state(const Model &model, GravityState &gravity)
+    {
+      gravity.base_reactions.assign(model.buildings.size(), 0.0);
+      std::vector<char> seen(model.n_equations(), 0); // a hinge's two nodes share ux, uy
+      for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
+        {
+          const int eq = model.equation(dof);
+          if (eq < 0 || seen[eq])
+            continue;
+          seen[eq] = 1;
+          const unsigned int node = dof / n_dofs_per_node;
+          const auto         c    = static_cast<Component>(dof % n_dofs_per_node);
+          if (c != Component::rz && std::abs(gravity.displacement[eq]) > gravity.peak_displacement)
+            {
+              gravity.peak_displacement = std::abs(gravity.displacement[eq]);
+              gravity.peak_where        = equation_name(model, eq);
+            }
+          if (model.dimension == 2 && c == Component::uy)
+            gravity.base_reactions[model.nodes[node].building] -= gravity.applied[eq];
+        }
+    }
+  } // namespace
+
+  void
+  set_gravity_state(Analysis &analysis)
+  {
+    const Model &model = analysis.model;
+    if (!model.gravity_analysis.enabled)
+      return;
+    LinearSystem       &system   = analysis.system;
+    GravityState       &gravity  = analysis.gravity;
+    const bool          p_delta  = model.geometric_nonlinearity == GeometricNonlinearity::p_delta;
+    const LoadControlSettings settings = load_control_of(model.gravity_analysis);
+    gravity          = GravityState();
+    gravity.active   = true;
+    gravity.applied  = total_gravity_loads(model);
+    NonlinearElements elements = make_nonlinear_elements(model);
+    const SparseMatrix elastic =
+      p_delta ? SparseMatrix(system.stiffness - system.geometric_stiffness) : system.stiffness;
+    StaticState state;
+    {
+      StaticSolver solver(elastic, &elements);
+      load_control(solver, gravity.applied, 0, 1, settings, "gravity analysis", state);
+    }
+    if (p_delta)
+      {
+        rebuild_geometric_stiffness(model, state.displacement, system);
+        StaticSolver solver(system.stiffness, &elements);
+        load_control(solver, gravity.applied, 1, 1, settings,
+                     "gravity analysis (P-Delta of the gravity state)", state);
+      }
+    StaticSolver solver(system.stiffness, &elements);
+    AssertThrow(solver.set_state(state.displacement),
+                dealii::ExcMessage("an element refuses its committed state"));
+    gravity.path         = std::move(state.path);
+    gravity.displacement = state.displacement;
+    gravity.held         = solver.resisting_force(gravity.displacement);
+    gravity.tangent      = solver.tangent();
+    gravity.steps        = state.steps;
+    gravity.iterations   = state.iterations;
+    gravity.cuts         = state.cuts;
+    describe_gravity_state(model, gravity);
+  }
+} // namespace poundfe
