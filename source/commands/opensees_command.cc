@@ -135,7 +135,10 @@ namespace poundfe
           {
             message = e.what();
           }
-        const std::string text = words.name + ": " + message;
+        // "fix: node 9 does not exist"; a message naming the command already stays
+        const bool named = message.compare(0, words.name.size(), words.name) == 0 &&
+                           (message[words.name.size()] == ' ' || message[words.name.size()] == ':');
+        const std::string text  = named ? message : words.name + ": " + message;
         Tcl_SetObjResult(interp, Tcl_NewStringObj(text.c_str(), -1));
         return TCL_ERROR;
       }
@@ -199,7 +202,7 @@ namespace poundfe
               "systemSize", "getEleClassTags", "setParameter", "parameter", "updateParameter",
               "loadPackage", "video", "logFile", "start", "stop"})
           define(interp, session, name,
-                 [](Session &, Words &words) { unsupported("the command '" + words.name + "'"); });
+                 [](Session &, Words &words) { unsupported(words.name); });
       }
 
       /// `exit ?status?`: the script ends here, cleanly (its recorders

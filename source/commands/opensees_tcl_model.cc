@@ -201,7 +201,7 @@ namespace poundfe
         const double       A = w.real("A"), E = w.real("E"), I = w.real("Iz");
         const int          transf = w.integer("the transformation's tag");
         if (!w.done())
-          unsupported("elasticBeamColumn option '" + w.peek() + "'");
+          unsupported("element elasticBeamColumn option '" + w.peek() + "'");
         const auto t = d.transformations.find(transf);
         if (t == d.transformations.end())
           throw ScriptError("geomTransf " + text_of(transf) + " does not exist");
@@ -221,7 +221,7 @@ namespace poundfe
             if (!w.done() && w.peek()[0] != '-')
               flag = w.integer("the -doRayleigh flag");
             if (flag != 0 && flag != 1)
-              unsupported("zeroLength -doRayleigh " + text_of(flag));
+              unsupported("element zeroLength -doRayleigh " + text_of(flag));
             z.rayleigh = flag == 1;
           }
         else if (option == "-orient")
@@ -232,7 +232,7 @@ namespace poundfe
               y = w.real("a component of yp");
           }
         else
-          unsupported("zeroLength option '" + option + "'");
+          unsupported("element zeroLength option '" + option + "'");
       }
 
       void
@@ -462,7 +462,7 @@ namespace poundfe
             else if (option == "-fact" || option == "-factor")
               p.factor = w.real("-fact");
             else
-              unsupported("UniformExcitation option '" + option + "'");
+              unsupported("pattern UniformExcitation option '" + option + "'");
           }
         if (!p.series)
           throw ScriptError("UniformExcitation needs -accel");
