@@ -34,6 +34,9 @@ run_corpus portal_frame portal_frame.tcl
 run_corpus pounding_ElasticPPGap pounding_sticks.tcl ElasticPPGap
 run_corpus pounding_ImpactMaterial pounding_sticks.tcl ImpactMaterial
 run_corpus steel01_cyclic steel01_cyclic.tcl
+run_corpus pounding_ImpactMaterial_ModifiedNewton_EnergyIncr pounding_sticks.tcl ImpactMaterial \
+  ModifiedNewton EnergyIncr
+run_corpus portal_pdelta portal_pdelta.tcl
 
 # 2. Tcl's semantics
 mkdir -p "$work/tcl"

@@ -2,9 +2,13 @@
 # their own springs) 10 mm apart, pounding through a zero-length gap under
 # the synthetic record. argv: the output directory and the gap material,
 # ElasticPPGap (elastic-plastic gap that stays damaged) or ImpactMaterial
-# (Muthukumar-DesRoches bilinear contact). Newton, NormDispIncr.
+# (Muthukumar-DesRoches bilinear contact); optionally the algorithm
+# (Newton, the default, or ModifiedNewton) and the test (NormDispIncr, the
+# default, or EnergyIncr).
 set out [lindex $argv 0]
 set law [lindex $argv 1]
+set algorithm [expr {$argc > 2 ? [lindex $argv 2] : "Newton"}]
+set test [expr {$argc > 3 ? [lindex $argv 3] : "NormDispIncr"}]
 source [file join [file dirname [info script]] record.tcl]
 wipe
 model basic -ndm 1 -ndf 1
@@ -34,11 +38,16 @@ set n 4000
 timeSeries Path 1 -dt $dt -values [synthetic_record $dt $n 0.6]
 pattern UniformExcitation 1 1 -accel 1
 recorder Node -file $out/pounding_$law.out -time -precision 16 -node 2 4 -dof 1 disp
+recorder Node -file $out/pounding_${law}_vel.out -time -precision 16 -node 2 4 -dof 1 vel
 constraints Plain
 numberer Plain
 system BandGeneral
-test NormDispIncr 1.0e-10 50
-algorithm Newton
+if {$test eq "EnergyIncr"} {
+    test EnergyIncr 1.0e-14 50
+} else {
+    test NormDispIncr 1.0e-10 50
+}
+algorithm $algorithm
 integrator Newmark 0.5 0.25
 analysis Transient
 set status [analyze $n $dt]

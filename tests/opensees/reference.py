@@ -204,7 +204,7 @@ def steel01(fy, E0, b):
     return respond, (0.0, 0.0, E0)
 
 
-def pounding_sticks(law):
+def pounding_sticks(law, algorithm="Newton", test="NormDispIncr"):
     m = 1.0e5
     k = np.array([m * (2 * PI / 0.5) ** 2, m * (2 * PI / 1.0) ** 2])
     c = 0.05 * 2 * np.sqrt(k * m)
@@ -214,7 +214,8 @@ def pounding_sticks(law):
     ag = synthetic_record(dt, n, 0.6)
     t_gap = np.array([-1.0, 1.0])
     u, v, a = np.zeros(2), np.zeros(2), np.zeros(2)
-    rows = []
+    rows, rows_v = [], []
+    tolerance = 1e-14 if test == "EnergyIncr" else 1e-10
 
     def forces(u, v):
         s, tangent, trial = respond(state, t_gap @ u)
@@ -227,18 +228,23 @@ def pounding_sticks(law):
         a = (1 - 0.5 / beta) * a - v / (beta * dt)
         v = vn
         f, kt, trial = forces(u, v)
+        keff = kt + gamma / (beta * dt) * np.diag(c) + m / (beta * dt * dt) * np.eye(2)
         for iteration in range(50):
-            keff = kt + gamma / (beta * dt) * np.diag(c) + m / (beta * dt * dt) * np.eye(2)
+            if algorithm == "Newton":
+                keff = kt + gamma / (beta * dt) * np.diag(c) + m / (beta * dt * dt) * np.eye(2)
             dx = np.linalg.solve(keff, -m * (a + g) - f)
             u, v, a = u + dx, v + gamma / (beta * dt) * dx, a + dx / (beta * dt * dt)
             f, kt, trial = forces(u, v)
-            if np.linalg.norm(dx) <= 1e-10:
+            norm = (0.5 * abs(dx @ (-m * (a + g) - f)) if test == "EnergyIncr"
+                    else np.linalg.norm(dx))
+            if norm <= tolerance:
                 break
         else:
             sys.exit(f"reference: pounding {law} did not converge at step {i}")
         state = trial
         rows.append([time, u[0], u[1]])
-    return {f"pounding_{law}.out": np.array(rows)}
+        rows_v.append([time, v[0], v[1]])
+    return {f"pounding_{law}.out": np.array(rows), f"pounding_{law}_vel.out": np.array(rows_v)}
 
 
 def steel01_cyclic():
@@ -273,6 +279,8 @@ MODELS = {
     "pounding_ElasticPPGap": (lambda: pounding_sticks("ElasticPPGap"), 1e-6),
     "pounding_ImpactMaterial": (lambda: pounding_sticks("ImpactMaterial"), 1e-6),
     "steel01_cyclic": (steel01_cyclic, 1e-6),
+    "pounding_ImpactMaterial_ModifiedNewton_EnergyIncr":
+        (lambda: pounding_sticks("ImpactMaterial", "ModifiedNewton", "EnergyIncr"), 1e-6),
 }
 
 
@@ -295,6 +303,81 @@ def main():
         print(f"{'ok  ' if ok else 'FAIL'} {file}: largest difference {worst:.2e} of the peak"
               f" (tolerance {tolerance:g})")
     sys.exit(1 if failed else 0)
+
+
+def portal_pdelta():
+    """The P-Delta portal (portal_pdelta.tcl): OpenSees's PDeltaCrdTransf2d
+    on columns (local transverse forces +-N (v_i - v_j)/L, geometric
+    stiffness N/L), Newton on the whole history."""
+    nodes = [(0.0, 0.0), (6.0, 0.0), (0.0, 3.0), (6.0, 3.0)]
+    members = [(0, 2, 0.01, 2.0e11, 2.0e-4, True), (1, 3, 0.01, 2.0e11, 2.0e-4, True),
+               (2, 3, 0.012, 2.0e11, 4.0e-4, False)]
+    free = list(range(6, 12))
+    K0 = frame_stiffness(nodes, [m[:5] for m in members], 12)[np.ix_(free, free)]
+
+    def internal(u):
+        full = np.zeros(12)
+        full[6:] = u
+        f, K = np.zeros(12), np.zeros((12, 12))
+        for i, j, A, E, I, p_delta in members:
+            (xi, yi), (xj, yj) = nodes[i], nodes[j]
+            L = math.hypot(xj - xi, yj - yi)
+            c, s = (xj - xi) / L, (yj - yi) / L
+            R = np.zeros((6, 6))
+            for n in range(2):
+                R[3 * n:3 * n + 3, 3 * n:3 * n + 3] = [[c, s, 0], [-s, c, 0], [0, 0, 1]]
+            dofs = [3 * i, 3 * i + 1, 3 * i + 2, 3 * j, 3 * j + 1, 3 * j + 2]
+            ul = R @ full[dofs]
+            kl = frame_stiffness([(0.0, 0.0), (L, 0.0)], [(0, 1, A, E, I)], 6)
+            pl = kl @ ul
+            if p_delta:
+                N = E * A / L * (ul[3] - ul[0])
+                pl[1] += N * (ul[1] - ul[4]) / L
+                pl[4] -= N * (ul[1] - ul[4]) / L
+                kl = kl.copy()
+                kl[1, 1] += N / L
+                kl[4, 4] += N / L
+                kl[1, 4] -= N / L
+                kl[4, 1] -= N / L
+            f[dofs] += R.T @ pl
+            K[np.ix_(dofs, dofs)] += R.T @ kl @ R
+        return f[6:], K[np.ix_(free, free)]
+    M = np.diag([2.0e4, 2.0e4, 0.0, 2.0e4, 2.0e4, 0.0])
+    P = np.array([0.0, -1.962e6, 0.0, 0.0, -1.962e6, 0.0])
+    u, rows, lam = np.zeros(6), [], 0.0
+    for _ in range(10):
+        lam += 0.1
+        for iteration in range(10):
+            f, K = internal(u)
+            du = np.linalg.solve(K, lam * P - f)
+            u = u + du
+            if np.linalg.norm(du) <= 1e-12:
+                break
+        rows.append([lam] + list(u))
+    C = 0.002 * K0
+    dt, n, gamma, beta = 0.01, 600, 0.5, 0.25
+    ag = synthetic_record(dt, n)
+    r = np.array([1.0, 0, 0, 1.0, 0, 0])
+    v, a, time, load = np.zeros(6), np.zeros(6), 0.0, lam * P
+    for i in range(n):
+        time += dt
+        g = path_factor(ag, dt, time)
+        v, a = (1 - gamma / beta) * v + dt * (1 - 0.5 * gamma / beta) * a, \
+            (1 - 0.5 / beta) * a - v / (beta * dt)
+        for iteration in range(10):
+            f, K = internal(u)
+            keff = K + gamma / (beta * dt) * C + M / (beta * dt * dt)
+            du = np.linalg.solve(keff, load - f - C @ v - M @ (a + r * g))
+            u, v, a = u + du, v + gamma / (beta * dt) * du, a + du / (beta * dt * dt)
+            if np.linalg.norm(du) <= 1e-12:
+                break
+        else:
+            sys.exit(f"reference: portal_pdelta did not converge at {time}")
+        rows.append([time] + list(u))
+    return {"pdelta_disp.out": np.array(rows)}
+
+
+MODELS["portal_pdelta"] = (portal_pdelta, 1e-6)
 
 
 if __name__ == "__main__":
