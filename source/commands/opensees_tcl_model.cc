@@ -7,6 +7,7 @@
 #include "opensees_tcl.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -105,6 +106,7 @@ namespace poundfe
               unsupported("node option '" + option + "'");
             n.mass = exactly(w, d.ndf, "a mass");
           }
+        n.element_mass.assign(d.ndf, 0.0);
         n.fixed.assign(d.ndf, false);
         n.disp.assign(d.ndf, 0.0);
         n.vel = n.accel = n.disp;
@@ -200,12 +202,21 @@ namespace poundfe
         std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
         const double       A = w.real("A"), E = w.real("E"), I = w.real("Iz");
         const int          transf = w.integer("the transformation's tag");
+        double             rho    = 0; // mass per length, lumped (OpenSees's default)
+        while (w.peek() == "-mass" || w.peek() == "-lMass")
+          if (w.word("-mass") == "-mass") // -lMass: lumped, the default
+            rho = w.real("the mass per length");
         if (!w.done())
           unsupported("element elasticBeamColumn option '" + w.peek() + "'");
         const auto t = d.transformations.find(transf);
         if (t == d.transformations.end())
           throw ScriptError("geomTransf " + text_of(transf) + " does not exist");
         add_element(d, opensees::make_elastic_beam_2d(d, tag, nodes, A, E, I, t->second));
+        const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
+        const double m = 0.5 * rho * std::hypot(b[0] - a[0], b[1] - a[1]);
+        for (const int n : nodes)
+          for (const unsigned int k : {0u, 1u})
+            d.node(n).element_mass[k] += m;
       }
 
       void
@@ -346,8 +357,11 @@ namespace poundfe
           throw ScriptError("uniaxialMaterial " + text_of(tag) + " exists already");
       }
 
+      /// The numbers of a -filePath file up to its first word that is not a
+      /// number (OpenSees reads that far: a PEER record's "End Data" line),
+      /// with a warning naming what follows them.
       std::vector<double>
-      read_path_file(const std::string &name)
+      read_path_file(const std::string &name, std::ostream &warnings)
       {
         std::ifstream in(name);
         if (!in)
@@ -355,25 +369,46 @@ namespace poundfe
         std::vector<double> values{std::istream_iterator<double>(in),
                                    std::istream_iterator<double>()};
         if (!in.eof())
-          throw ScriptError("the file '" + name + "' holds a word that is not a number after " +
-                            text_of(values.size()) + " values");
+          {
+            in.clear();
+            std::string word;
+            in >> word;
+            warnings << "WARNING timeSeries Path: '" << name << "' holds '" << word
+                     << "' after its " << values.size()
+                     << " values; the rest of the file is not read (as OpenSees)\n";
+          }
+        if (values.empty())
+          throw ScriptError("the file '" + name + "' holds no number");
         return values;
       }
 
       /// The options of a Path, Linear or Constant series (after its tag).
       std::shared_ptr<opensees::TimeSeries>
-      series_options(const std::string &type, Words &w)
+      series_options(const std::string &type, Words &w, std::ostream &warnings)
       {
         using Kind = opensees::TimeSeries::Kind;
         auto series  = std::make_shared<opensees::TimeSeries>();
         series->kind = type == "Path" || type == "Series" ? Kind::path :
                        type == "Linear"                   ? Kind::linear :
+                       type == "Trig"                     ? Kind::trig :
                                                             Kind::constant;
+        if (series->kind == Kind::trig)
+          {
+            series->start  = w.real("tStart");
+            series->finish = w.real("tEnd");
+            series->period = w.real("the period");
+            if (!(series->period > 0))
+              throw ScriptError("the period must be > 0");
+          }
         while (!w.done())
           {
             const std::string option = w.word("an option");
             if (option == "-factor" || option == "-fact")
               series->factor = w.real("-factor");
+            else if (series->kind == Kind::trig && (option == "-shift" || option == "-phaseShift"))
+              series->shift = w.real("-shift");
+            else if (series->kind == Kind::trig && option == "-zeroShift")
+              series->zero_shift = w.real("-zeroShift");
             else if (series->kind == Kind::path && option == "-dt")
               series->dt = w.real("-dt");
             else if (series->kind == Kind::path && option == "-values")
@@ -394,7 +429,7 @@ namespace poundfe
                 Tcl_DecrRefCount(list);
               }
             else if (series->kind == Kind::path && option == "-filePath")
-              series->values = read_path_file(w.word("the file"));
+              series->values = read_path_file(w.word("the file"), warnings);
             else
               unsupported("timeSeries " + type + " option '" + option + "'");
           }
@@ -408,23 +443,23 @@ namespace poundfe
       {
         opensees::Domain &d    = model_domain(s);
         const std::string type = w.word("the series' type");
-        if (type != "Path" && type != "Linear" && type != "Constant")
+        if (type != "Path" && type != "Linear" && type != "Constant" && type != "Trig")
           unsupported("timeSeries " + type);
         const int tag = w.integer("the series' tag");
-        if (!d.series.emplace(tag, series_options(type, w)).second)
+        if (!d.series.emplace(tag, series_options(type, w, s.warnings)).second)
           throw ScriptError("timeSeries " + text_of(tag) + " exists already");
       }
 
       /// A pattern's series: a tag, or one given in line ("Linear",
       /// "Constant", "Series -dt 0.01 -filePath f -factor g").
       std::shared_ptr<opensees::TimeSeries>
-      pattern_series(opensees::Domain &d, Tcl_Interp *interp, const std::string &text)
+      pattern_series(Session &s, Tcl_Interp *interp, const std::string &text)
       {
         int tag;
         if (Tcl_GetInt(nullptr, text.c_str(), &tag) == TCL_OK)
           {
-            const auto it = d.series.find(tag);
-            if (it == d.series.end())
+            const auto it = s.domain.series.find(tag);
+            if (it == s.domain.series.end())
               throw ScriptError("timeSeries " + text_of(tag) + " does not exist");
             return it->second;
           }
@@ -439,18 +474,20 @@ namespace poundfe
           }
         Words             inline_words(interp, n, items);
         const std::string type = inline_words.name;
-        if (type != "Path" && type != "Series" && type != "Linear" && type != "Constant")
+        if (type != "Path" && type != "Series" && type != "Linear" && type != "Constant" &&
+            type != "Trig")
           unsupported("time series '" + type + "'");
-        auto series = series_options(type, inline_words);
+        auto series = series_options(type, inline_words, s.warnings);
         Tcl_DecrRefCount(list);
         return series;
       }
 
       void
-      uniform_excitation(opensees::Domain &d, Words &w, opensees::Pattern &p)
+      uniform_excitation(Session &s, Words &w, opensees::Pattern &p)
       {
-        p.uniform_excitation = true;
-        const int direction  = w.integer("the direction");
+        const opensees::Domain &d = s.domain;
+        p.uniform_excitation      = true;
+        const int direction       = w.integer("the direction");
         if (direction < 1 || direction > static_cast<int>(d.ndf))
           throw ScriptError("direction " + text_of(direction) + " is not one of 1 to ndf");
         p.direction = direction - 1;
@@ -458,7 +495,7 @@ namespace poundfe
           {
             const std::string option = w.word("an option");
             if (option == "-accel")
-              p.series = pattern_series(d, w.interp, w.word("the acceleration series"));
+              p.series = pattern_series(s, w.interp, w.word("the acceleration series"));
             else if (option == "-fact" || option == "-factor")
               p.factor = w.real("-fact");
             else
@@ -479,13 +516,13 @@ namespace poundfe
           throw ScriptError("pattern " + text_of(p.tag) + " exists already");
         if (type == "UniformExcitation")
           {
-            uniform_excitation(d, w, p);
+            uniform_excitation(s, w, p);
             d.patterns.emplace(p.tag, p);
             return;
           }
         if (type != "Plain")
           unsupported("pattern " + type);
-        p.series = pattern_series(d, w.interp, w.word("the series"));
+        p.series = pattern_series(s, w.interp, w.word("the series"));
         if (w.peek() == "-fact" || w.peek() == "-factor")
           {
             w.word("-fact");

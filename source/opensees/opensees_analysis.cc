@@ -64,7 +64,7 @@ namespace poundfe
       for (const auto &[tag, node] : domain.nodes)
         for (unsigned int k = 0; k < node.fixed.size(); ++k)
           if (node.equation[k] >= 0)
-            mass_of_equation[node.equation[k]] += node.mass[k];
+            mass_of_equation[node.equation[k]] += node.mass[k] + node.element_mass[k];
       for (auto &[tag, element] : domain.elements)
         {
           element->equations.clear();
@@ -173,10 +173,11 @@ namespace poundfe
       const std::vector<double> ag = domain.ground_acceleration(trial_time);
       for (const auto &[tag, node] : domain.nodes)
         for (unsigned int k = 0; k < node.equation.size(); ++k)
-          if (node.equation[k] >= 0 && node.mass[k] != 0)
+          if (node.equation[k] >= 0)
             {
-              const int eq = node.equation[k];
-              r[eq] -= node.mass[k] * (A[eq] + ag[k] + domain.rayleigh.alpha_m * V[eq]);
+              const int    eq = node.equation[k];
+              const double m  = node.mass[k] + node.element_mass[k];
+              r[eq] -= m * (A[eq] + ag[k] + domain.rayleigh.alpha_m * V[eq]);
             }
       return r;
     }
@@ -224,6 +225,23 @@ namespace poundfe
         }
       return 0;
     }
+    void
+    Analysis::print_iteration(const unsigned int iteration, const double norm) const
+    {
+      using Kind = ConvergenceTest::Kind;
+      const Kind         kind = opts.test.kind;
+      std::ostringstream text;
+      text << "CTest"
+           << (kind == Kind::norm_disp_incr ? "NormDispIncr" :
+               kind == Kind::norm_unbalance ? "NormUnbalance" :
+                                              "EnergyIncr")
+           << "::test() - iteration: " << iteration << " current "
+           << (kind == Kind::energy_incr ? "EnergyIncr" : "Norm") << ": " << norm
+           << " (max: " << opts.test.tolerance << ")";
+      if (print)
+        print(text.str());
+    }
+
     int
     Analysis::iterate(std::string &why)
     {
@@ -249,6 +267,8 @@ namespace poundfe
           r                 = residual();
           const double norm = test_norm(dx, r);
           const int    flag = opts.test.print_flag;
+          if (flag == 1 || (flag == 2 && norm <= opts.test.tolerance))
+            print_iteration(iteration, norm);
           if (norm <= opts.test.tolerance)
             return iteration;
           if ((flag == 5 || flag == 6) && iteration >= opts.test.max_iterations)
@@ -311,6 +331,7 @@ namespace poundfe
     {
       if (domain.changed || !numbered)
         number();
+      print = warn;
       if (lambda_step == 0)
         {
           lambda_step     = opts.d_lambda;

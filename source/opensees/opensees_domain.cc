@@ -1,7 +1,8 @@
 // The domain of an OpenSees script: its time series and load patterns as
 // OpenSees 3.8 evaluates them (PathSeries::getFactor: linear interpolation
 // of values spaced dt from time 0, zero before 0 and after the last value;
-// LinearSeries: factor t; ConstantSeries: factor; LoadPattern::applyLoad:
+// LinearSeries: factor t; ConstantSeries: factor; TrigSeries: factor
+// sin(2 pi (t - t_start)/T + phi) + zeroShift on [t_start, t_end]; LoadPattern::applyLoad:
 // the series' factor times the pattern's -fact, frozen by loadConst), its
 // nodal loads and ground accelerations, and OpenSees's nodal reactions.
 #include <poundfe/opensees/opensees_domain.h>
@@ -30,6 +31,14 @@ namespace poundfe
               if (i + 1 >= static_cast<long long>(values.size()))
                 return 0;
               return factor * (values[i] + (values[i + 1] - values[i]) * (position - i));
+            }
+          case Kind::trig:
+            {
+              if (time < start || time > finish)
+                return 0;
+              const double two_pi = 4 * std::asin(1.0);
+              const double phi    = shift - period / two_pi * std::asin(zero_shift / factor);
+              return factor * std::sin(two_pi * (time - start) / period + phi) + zero_shift;
             }
         }
       return 0;

@@ -40,7 +40,7 @@ namespace poundfe
       } kind                     = Kind::norm_unbalance;
       double       tolerance      = 1e-6; // OpenSees's default test
       unsigned int max_iterations = 25;
-      int          print_flag     = 0;
+      int          print_flag     = 0; // 0, 1 (print each iteration), 2 (convergence), 5 (go on)
     };
 
     struct AnalysisOptions
@@ -96,6 +96,8 @@ namespace poundfe
       bool   step(double dt, std::string &why);
       int    iterate(std::string &why);
       double test_norm(const Vector &dx, const Vector &r) const;
+      /// The test's line of print flag 1 (each iteration) or 2 (convergence).
+      void   print_iteration(unsigned int iteration, double norm) const;
       void   commit();
 
       Domain         &domain;
@@ -107,6 +109,7 @@ namespace poundfe
       double          c_c = 0, c_m = 0;    // the step's tangent coefficients
       Eigen::SparseMatrix<double>   tangent_matrix;
       std::unique_ptr<LinearSolver> solver;
+      std::function<void(const std::string &)> print; // analyze's `warn`
       bool                          analysed = false; // the solver saw the pattern
       bool                          numbered = false; // this analysis numbered the domain
     };

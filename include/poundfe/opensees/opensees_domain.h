@@ -43,6 +43,9 @@ namespace poundfe
       int                 tag = 0;
       std::vector<double> coordinates;
       std::vector<double> mass;  // per DOF
+      /// Lumped masses of the elements on it (elasticBeamColumn -mass),
+      /// per DOF: in M, not in `mass` (OpenSees's node mass).
+      std::vector<double> element_mass;
       std::vector<bool>   fixed; // per DOF
       /// Committed response per DOF (relative to the ground).
       std::vector<double> disp, vel, accel;
@@ -93,11 +96,13 @@ namespace poundfe
       {
         constant,
         linear,
-        path
+        path,
+        trig
       } kind = Kind::constant;
       double              factor = 1;
       double              dt     = 0; // path: the values' spacing
       std::vector<double> values;    // path
+      double start = 0, finish = 0, period = 1, shift = 0, zero_shift = 0; // trig
       double              at(double time) const;
     };
 
