@@ -37,6 +37,10 @@ run_corpus steel01_cyclic steel01_cyclic.tcl
 run_corpus pounding_ImpactMaterial_ModifiedNewton_EnergyIncr pounding_sticks.tcl ImpactMaterial \
   ModifiedNewton EnergyIncr
 run_corpus portal_pdelta portal_pdelta.tcl
+run_corpus cantilever_trig cantilever_trig.tcl
+# nodeDisp NODE 0: the whole node, as OpenSees
+grep -qE '^cantilever: tip \S+ \S+ \S+$' "$work/cantilever_trig/log" \
+  || { cat "$work/cantilever_trig/log"; fail "nodeDisp 3 0 is not the node's three values"; }
 
 # 2. Tcl's semantics
 mkdir -p "$work/tcl"

@@ -380,5 +380,46 @@ def portal_pdelta():
 MODELS["portal_pdelta"] = (portal_pdelta, 1e-6)
 
 
+def newmark_history(M, C, K, load, dt, n, gamma, beta):
+    """u, v at steps 1..n of M a + C v + K u = load(t), at rest at 0."""
+    size = len(M)
+    u, v, a, t, us, vs = np.zeros(size), np.zeros(size), np.zeros(size), 0.0, [], []
+    keff = K + gamma / (beta * dt) * C + M / (beta * dt * dt)
+    for _ in range(n):
+        t += dt
+        rhs = load(t) + M @ (u / (beta * dt * dt) + v / (beta * dt) + (0.5 / beta - 1) * a) \
+            + C @ (gamma / (beta * dt) * u - (1 - gamma / beta) * v
+                   - dt * (1 - 0.5 * gamma / beta) * a)
+        un = np.linalg.solve(keff, rhs)
+        an = (un - u) / (beta * dt * dt) - v / (beta * dt) - (0.5 / beta - 1) * a
+        v = v + dt * ((1 - gamma) * a + gamma * an)
+        u, a = un, an
+        us.append((t, u.copy()))
+        vs.append((t, v.copy()))
+    return us, vs
+
+
+def cantilever_trig():
+    nodes = [(0.0, 0.0), (0.0, 2.0), (0.0, 4.0)]
+    members = [(0, 1, 0.02, 2.0e11, 1.0e-4), (1, 2, 0.02, 2.0e11, 1.0e-4)]
+    free = list(range(3, 9))
+    K = frame_stiffness(nodes, members, 9)[np.ix_(free, free)]
+    # lumped: 150 kg/m x 2 m / 2 at each end of each member, plus the tip's 500 kg
+    M = np.diag([300.0, 300.0, 0.0, 150.0 + 500.0, 150.0 + 500.0, 0.0])
+    C = 0.0015 * K
+
+    def load(t):
+        if t < 0.1 or t > 1.5:
+            return np.zeros(6)
+        phi = 0.3 - 0.25 / (2 * math.pi) * math.asin(0.0)
+        return np.array([0, 0, 0, 2.0e4 * math.sin(2 * math.pi * (t - 0.1) / 0.25 + phi), 0, 0])
+    us, vs = newmark_history(M, C, K, load, 0.005, 400, 0.6, 0.3025)
+    return {"cantilever_disp.out": np.array([[t, u[0], u[2], u[3], u[5]] for t, u in us]),
+            "cantilever_vel.out": np.array([[t, v[3]] for t, v in vs])}
+
+
+MODELS["cantilever_trig"] = (cantilever_trig, 1e-10)
+
+
 if __name__ == "__main__":
     main()
