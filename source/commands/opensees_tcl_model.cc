@@ -303,9 +303,9 @@ namespace poundfe
       MaterialParameters
       hysteretic_parameters(const std::vector<double> &v)
       {
-        const bool three = v.size() == 17 || v.size() == 18;
-        if (!three && v.size() != 13 && v.size() != 14)
-          throw ScriptError("Hysteretic takes 13, 14, 17 or 18 values, got " +
+        const bool three = v.size() == 16 || v.size() == 17;
+        if (!three && v.size() != 12 && v.size() != 13)
+          throw ScriptError("Hysteretic takes 12, 13, 16 or 17 values, got " +
                             text_of(v.size()));
         MaterialParameters p{"Hysteretic", {}};
         std::size_t        i = 0;

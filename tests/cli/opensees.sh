@@ -90,6 +90,59 @@ grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
 [ "$(cat "$work/tcl/exit.out")" = "$(printf '0.03\n0.06')" ] \
   || fail "exit.out after exit: $(cat "$work/tcl/exit.out")"
 
+# every material's OpenSees argument order, by its initial stiffness: a
+# spring of it in parallel with an elastic one (k = 1000) under a load in its
+# elastic range moves F / (E0 + k); and a 3D zeroLength with rotated axes
+mkdir -p "$work/materials"
+cat > "$work/materials/m.tcl" <<'TCL'
+proc check {what got expected {tolerance 1e-12}} {
+    if {abs($got - $expected) > $tolerance * abs($expected)} {
+        error "$what: $got, expected $expected"
+    }
+    puts "ok $what"
+}
+proc probe {name arguments E0 F {tolerance 1e-12}} {
+    wipe
+    model basic -ndm 1 -ndf 1
+    node 1 0.0
+    node 2 0.0
+    fix 1 1
+    eval uniaxialMaterial $name 1 $arguments
+    uniaxialMaterial Elastic 2 1000.0
+    element zeroLength 1 1 2 -mat 1 2 -dir 1 1
+    pattern Plain 1 Constant { load 2 $F }
+    analysis Static
+    analyze 1
+    check $name [nodeDisp 2 1] [expr {$F / ($E0 + 1000.0)}] $tolerance
+}
+probe Elastic {3000.0} 3000.0 10.0
+probe ElasticPP {3000.0 0.01} 3000.0 10.0
+probe Steel01 {100.0 3000.0 0.02} 3000.0 10.0
+probe Steel02 {100.0 3000.0 0.02 18.0 0.925 0.15} 3000.0 10.0
+# concrete: the parabola's initial slope 2 fpc / epsc0, at a strain of 3e-7
+probe Concrete01 {-30.0 -0.002 -6.0 -0.006} 30000.0 -0.01 1e-3
+probe Concrete02 {-30.0 -0.002 -6.0 -0.006 0.1 3.0 1500.0} 30000.0 -0.01 1e-3
+probe Hysteretic {60.0 0.02 70.0 0.05 -60.0 -0.02 -70.0 -0.05 1.0 1.0 0.0 0.0} 3000.0 10.0
+wipe
+model basic -ndm 3 -ndf 6
+node 1 0.0 0.0 0.0
+node 2 0.0 0.0 0.0
+fix 1 1 1 1 1 1 1
+fix 2 1 0 1 1 1 0
+uniaxialMaterial Elastic 1 500.0
+uniaxialMaterial Elastic 2 40.0
+# local x along global Y, local z along global Z: dir 1 acts on Y, dir 6 about Z
+element zeroLength 1 1 2 -mat 1 2 -dir 1 6 -orient 0 1 0 -1 0 0
+pattern Plain 1 Linear { load 2 0 10.0 0 0 0 4.0 }
+analysis Static
+analyze 1
+check "3D translation" [nodeDisp 2 2] 0.02
+check "3D rotation" [nodeDisp 2 6] 0.1
+TCL
+"$poundfe" opensees "$work/materials/m.tcl" > "$work/materials/log" 2>&1 \
+  || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
+[ "$(grep -c '^ok ' "$work/materials/log")" = 9 ] || { cat "$work/materials/log"; fail "materials"; }
+
 # 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
 bad() { # NAME EXPECTED (the script on standard input)
   local dir="$work/bad-$1"
