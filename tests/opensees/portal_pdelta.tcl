@@ -40,4 +40,5 @@ test NormDispIncr 1.0e-12 10
 algorithm Newton
 integrator Newmark 0.5 0.25
 analysis Transient
-puts "pdelta: [analyze 600 0.01] [poundfe::report]"
+set status [analyze 600 0.01]
+puts "pdelta: $status [expr {[namespace exists ::poundfe] ? [poundfe::report] : ""}]"

@@ -51,4 +51,6 @@ algorithm $algorithm
 integrator Newmark 0.5 0.25
 analysis Transient
 set status [analyze $n $dt]
-puts "pounding $law: status $status time [getTime] [poundfe::report]"
+# poundfe::report where poundfe runs the script (OpenSees has no poundfe::)
+set report [expr {[namespace exists ::poundfe] ? [poundfe::report] : ""}]
+puts "pounding $law: status $status time [getTime] $report"
