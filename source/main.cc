@@ -97,15 +97,34 @@ namespace
       line.request.overrides.push_back({text.substr(0, equals), text.substr(equals + 1)});
   }
 
+  /// Whether args[script] is the script of a command whose row takes a
+  /// script and its own arguments (the first word that is no option names
+  /// the command).
+  bool
+  takes_script_arguments(const std::vector<std::string> &args, const std::size_t script)
+  {
+    for (std::size_t i = 0; i < script; ++i)
+      if (!(args[i].size() > 1 && args[i][0] == '-'))
+        {
+          const poundfe::Command *command = poundfe::find_command(args[i]);
+          return command && command->has(poundfe::CommandRule::script_arguments);
+        }
+    return false;
+  }
+
   CommandLine
   parse_command_line(std::vector<std::string> args)
   {
     CommandLine           line;
     std::string           realizations;
     std::set<std::string> given; // the options seen (-h is --help)
+    std::size_t           words = 0; // the words that are no option, so far
     for (std::size_t i = 0; i < args.size() && line.error.empty(); ++i)
       {
         const bool        option = args[i].size() > 1 && args[i][0] == '-';
+        if (!option && ++words == 2 && takes_script_arguments(args, i))
+          break; // the script's own arguments follow
+
         const std::string name   = args[i] == "-h" ? "--help" : args[i];
         if (option && name != "--set" && !given.insert(name).second)
           // which of two values was meant cannot be known (--set: each is applied, in order)

@@ -27,6 +27,7 @@ namespace poundfe
     int moment_curvature(const CommandRun &); // moment_curvature_command.cc
     int print_parameters(const CommandRun &); // print_parameters_command.cc
     int input_template(const CommandRun &); // template_command.cc
+    int opensees(const CommandRun &);       // opensees_command.cc
   } // namespace commands
 
   const std::vector<Command> &
@@ -42,6 +43,7 @@ namespace poundfe
     constexpr CommandRules partition = CommandRule::partition_by_building; // Partition = buildings
     constexpr CommandRules fields    = CommandRule::field_output; // Output/Field format = xdmf
     constexpr CommandRules resumable = CommandRule::resumable;    // resumes its table
+    constexpr CommandRules script    = CommandRule::script_arguments; // SCRIPT [ARGS...]
     constexpr CommandRules none;
     const std::string      summary = "summary.json"; // what the guard writes
     // name, arguments, description, rules, summary, function
@@ -118,6 +120,10 @@ namespace poundfe
        "at constant axial force: first yield, peak, ultimate, ductility\n"
        "(moment_curvature.csv, summary.json, moment_curvature.png)",
        file, summary, commands::moment_curvature},
+      {"opensees", "SCRIPT [ARGS...]",
+       "runs an OpenSees Tcl script (Tcl 8.6, OpenSees's commands on\n"
+       "poundfe's engine; ARGS are the script's argv; see the user guide)",
+       script, "", commands::opensees},
       {"print-parameters", "", "every parameter with its documentation and default",
        none, "", commands::print_parameters},
       {"template", "KIND",

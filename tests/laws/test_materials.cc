@@ -517,8 +517,9 @@ BOOST_AUTO_TEST_CASE(material_refuses_a_strain_that_is_not_finite)
 
 BOOST_AUTO_TEST_CASE(registry_makes_every_material_by_name)
 {
-  const std::vector<std::string> names{"Steel01",    "Steel02",   "Concrete01",
-                                       "Concrete02", "ElasticPP", "Hysteretic"};
+  const std::vector<std::string> names{"Steel01",    "Steel02",   "Concrete01",   "Concrete02",
+                                       "ElasticPP",  "Hysteretic", "Elastic",     "ElasticPPGap",
+                                       "ImpactMaterial"};
   BOOST_TEST(material_names() == names, boost::test_tools::per_element());
   // defaults filled in: Steel02 by name behaves as Steel02 with OpenSees's
   // R0 = 20, cR1 = 0.925, cR2 = 0.15, a1 = a3 = 0, a2 = a4 = 1
@@ -750,4 +751,67 @@ BOOST_AUTO_TEST_CASE(hysteretic_pinching_and_unloading_stiffness)
   const double pinch_k = z_k + 0.5 * (0.03 - 0.7 * 125 / (1e4 / k) - z_k);
   BOOST_TEST(material_try(degraded, 0.0) == 37.5 * (0.0 - z_k) / (pinch_k - z_k),
              boost::test_tools::tolerance(1e-12));
+}
+
+// OpenSees's gap materials and Elastic (source/laws/gap_materials.cc), by
+// hand from OpenSees 3.8's EPPGapMaterial, ImpactMaterial and
+// ElasticMaterial sources.
+namespace
+{
+  double
+  gap_stress(UniaxialLaw &law, const double strain)
+  {
+    BOOST_REQUIRE(law.set_trial(strain, 0));
+    return law.force();
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(elastic_pp_gap_is_openSees_epp_gap)
+{
+  // compression gap: E 100, Fy -10, gap -0.1; elastic range [-0.2, -0.1]
+  for (const bool damage : {false, true})
+    {
+      auto law = make_material(
+        {"ElasticPPGap", {{"E", 100}, {"Fy", -10}, {"gap", -0.1}, {"damage", damage ? 1 : 0}}});
+      BOOST_TEST(gap_stress(*law, -0.05) == 0);
+      BOOST_TEST(gap_stress(*law, -0.15) == -5, boost::test_tools::tolerance(1e-12));
+      BOOST_TEST(law->tangent() == 100);
+      BOOST_TEST(gap_stress(*law, -0.3) == -10); // yielded: range [-0.3, -0.2]
+      BOOST_TEST(law->tangent() == 0);
+      law->commit();
+      BOOST_TEST(gap_stress(*law, -0.15) == 0); // open: the gap grew
+      law->commit(); // without damage the gap closes back to -0.15
+      BOOST_TEST(gap_stress(*law, -0.2) == (damage ? 0.0 : -5.0),
+                 boost::test_tools::tolerance(1e-12));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(impact_material_is_openSees_impact_material)
+{
+  auto law = make_material({"ImpactMaterial", {{"K1", 100}, {"K2", 10}, {"Delta_y", -0.1},
+                                               {"gap", -0.05}}});
+  BOOST_TEST(gap_stress(*law, -0.02) == 0);
+  // from the open committed state: sigma_c + K1 d eps = -10 lies past the
+  // K2 line K1 Delta_y + K2 (eps - gap - Delta_y) = -9.5
+  BOOST_TEST(gap_stress(*law, -0.1) == -9.5, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(law->tangent() == 10);
+  law->commit();
+  BOOST_TEST(gap_stress(*law, -0.08) == -7.5, boost::test_tools::tolerance(1e-12)); // unloading, K1
+  BOOST_TEST(law->tangent() == 100);
+  BOOST_TEST(gap_stress(*law, -0.1) == -9.5, boost::test_tools::tolerance(1e-12)); // no step: kept
+  BOOST_TEST(gap_stress(*law, -0.04) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(elastic_is_openSees_elastic_with_eta_and_eneg)
+{
+  auto law = make_material({"Elastic", {{"E", 5}, {"eta", 2}, {"Eneg", 1}}});
+  BOOST_REQUIRE(law->set_trial(0.5, 3));
+  BOOST_TEST(law->force() == 8.5);
+  BOOST_TEST(law->tangent() == 5);
+  BOOST_TEST(law->damping_tangent() == 2);
+  BOOST_REQUIRE(law->set_trial(-0.5, 0));
+  BOOST_TEST(law->force() == -0.5);
+  auto symmetric = make_material({"Elastic", {{"E", 5}}});
+  BOOST_REQUIRE(symmetric->set_trial(-0.5, 0));
+  BOOST_TEST(symmetric->force() == -2.5);
 }

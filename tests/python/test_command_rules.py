@@ -50,7 +50,9 @@ ROWS = {
     "dynamic-form": (os.path.join(CLI, "dynamic-form-sdof.prm"), set(), QUIET),
     "switching": (os.path.join(CLI, "switching-belt.prm"), set(), QUIET),
 }
-NO_FILE = {"print-parameters": [], "template": ["frame"]}
+SCRIPT_ROWS = {"opensees"}  # CommandRule::script_arguments
+NO_FILE = {"opensees": [os.path.join("tests", "opensees", "modes.tcl")],
+           "print-parameters": [], "template": ["frame"]}
 
 
 def set_options(overrides):
@@ -75,8 +77,10 @@ class CommandRules(TestCase):
         arguments = [file] if arguments is None else arguments
         cli_out, py_out = os.path.join(self.tmp, "cli"), os.path.join(self.tmp, "py")
         extra = ["--realizations", str(realizations)] if realizations else []
-        status, _, err = run_command_line(name, *arguments, "--output", cli_out,
-                                          *set_options(overrides), *extra)
+        options = ["--output", cli_out, *set_options(overrides), *extra]
+        # a script's command: the words after the script are the script's own
+        words = [*options, *arguments] if name in SCRIPT_ROWS else [*arguments, *options]
+        status, _, err = run_command_line(name, *words)
         what = f"{name} {overrides} {extra}"
         self.assertEqual(status, 1, f"{what}: {err}")
         self.assertTrue(err.startswith("poundfe: error: "), f"{what}: {err}")

@@ -65,6 +65,9 @@ namespace poundfe
     field_output = 1u << 6,
     /// Resumes from the table an earlier run left in its output directory.
     resumable = 1u << 7,
+    /// Takes a script and its own arguments: the words after the script
+    /// go to it as they are (options included), never to poundfe.
+    script_arguments = 1u << 8,
   };
 
   /// A set of rules, written `CommandRule::a | CommandRule::b`.

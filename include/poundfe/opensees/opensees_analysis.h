@@ -1,0 +1,119 @@
+// The analysis of an OpenSees script's domain, with OpenSees 3.8's
+// algorithms so that a script gives its numbers: the integrators Newmark
+// (displacement predictor, Newmark.cpp) and LoadControl, the algorithms
+// Linear, Newton and ModifiedNewton (NewtonRaphson.cpp: tangent, solve,
+// update, new residual, test), the tests NormDispIncr (|dU|), NormUnbalance
+// (|R| after the update) and EnergyIncr (|dU . R| / 2), a failed step
+// reverted to the last commit and reported by the return value, as
+// `analyze` does. No step is cut and no event located: poundfe's own
+// integrator (integration/newmark.h) does that on request.
+// Equations (OpenSees's, with c2 = gamma/(beta dt), c3 = 1/(beta dt^2)):
+//   R = P(t) - sum_e (f_e + C_e v_e) - M (a + r a_g(t)) - alpha_M M v,
+//   K_eff = sum_e (K_e + c2 C_e) + (c3 + c2 alpha_M) M,
+// C_e = beta_K K_e + beta_K0 K_e,0 + beta_Kc K_e,c for Rayleigh-damped
+// elements and the materials' damping tangents for the others.
+#ifndef poundfe_opensees_opensees_analysis_h
+#define poundfe_opensees_opensees_analysis_h
+
+#include <poundfe/opensees/opensees_domain.h>
+
+#include <Eigen/SparseCore>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class LinearSolver;
+
+  namespace opensees
+  {
+    struct ConvergenceTest
+    {
+      enum class Kind
+      {
+        norm_disp_incr,
+        norm_unbalance,
+        energy_incr
+      } kind                     = Kind::norm_unbalance;
+      double       tolerance      = 1e-6; // OpenSees's default test
+      unsigned int max_iterations = 25;
+      int          print_flag     = 0; // 0, 1 (print each iteration), 2 (convergence), 5 (go on)
+    };
+
+    struct AnalysisOptions
+    {
+      enum class Algorithm
+      {
+        linear,
+        newton,
+        modified_newton
+      } algorithm = Algorithm::newton;
+      ConvergenceTest test;
+      bool            transient = false;
+      double          gamma = 0.5, beta = 0.25;       // Newmark
+      double          d_lambda = 1, lambda_min = 1, lambda_max = 1; // LoadControl
+      double          lambda_iterations = 1;
+      std::string     linear_solver = "umfpack";
+    };
+
+    /// What the analyses of a script have done (poundfe::report).
+    struct AnalysisCounts
+    {
+      unsigned long steps = 0, iterations = 0, factorizations = 0, failed_steps = 0;
+    };
+
+    class Analysis
+    {
+    public:
+      Analysis(Domain &domain, AnalysisOptions options);
+      ~Analysis();
+
+      /// `analyze n <dt>`: 0 when every step converged; otherwise the
+      /// domain is back at the last committed step and the result is < 0
+      /// (OpenSees: -3), after `warn` was told why. `after_step` runs after
+      /// each committed step (the recorders).
+      int analyze(unsigned int n_steps, double dt, const std::function<void()> &after_step,
+                  const std::function<void(const std::string &)> &warn);
+
+      /// The lowest n eigenvalues omega^2 of K_t phi = omega^2 M phi.
+      std::vector<double> eigenvalues(unsigned int n);
+
+      const AnalysisOptions &options() const { return opts; }
+      /// The script changed the test, algorithm or integrator of this analysis.
+      void configure(const AnalysisOptions &options);
+      AnalysisCounts         counts;
+
+    private:
+      void   number();
+      void   gather();
+      void   scatter();
+      bool   set_trial(std::string &why);
+      Vector residual() const;
+      void   assemble_tangent(double c_k, double c_c, double c_m);
+      bool   step(double dt, std::string &why);
+      int    iterate(std::string &why);
+      double test_norm(const Vector &dx, const Vector &r) const;
+      /// The test's line of print flag 1 (each iteration) or 2 (convergence).
+      void   print_iteration(unsigned int iteration, double norm) const;
+      void   commit();
+
+      Domain         &domain;
+      AnalysisOptions opts;
+      unsigned int    n_equations = 0;
+      Vector          U, V, A;             // trial response by equation
+      Vector          mass_of_equation;    // lumped nodal masses
+      double          trial_time = 0, lambda_step = 0, last_iterations = 1;
+      double          c_c = 0, c_m = 0;    // the step's tangent coefficients
+      Eigen::SparseMatrix<double>   tangent_matrix;
+      std::unique_ptr<LinearSolver> solver;
+      std::function<void(const std::string &)> print; // analyze's `warn`
+      bool                          analysed = false; // the solver saw the pattern
+      bool                          numbered = false; // this analysis numbered the domain
+    };
+  } // namespace opensees
+} // namespace poundfe
+
+#endif

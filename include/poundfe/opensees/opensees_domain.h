@@ -1,0 +1,196 @@
+// The domain of an OpenSees script on poundfe's engine: nodes with their
+// constraints and masses, elements, materials, time series, load patterns
+// and recorders, as the script's commands build them (the Tcl reader in
+// source/commands/opensees_*.cc fills it; nothing here knows of Tcl).
+// Its analysis (opensees_analysis.h) numbers the free DOFs (equalDOF's
+// constrained DOFs share their retained DOF's equation, as OpenSees's Plain
+// and Transformation handlers give for an identity constraint), assembles
+// OpenSees's residual and tangent into poundfe's sparse matrices and solves
+// with poundfe's linear solvers. doc/architecture.md says why a script
+// builds this thin domain and not a poundfe Model.
+#ifndef poundfe_opensees_opensees_domain_h
+#define poundfe_opensees_opensees_domain_h
+
+#include <poundfe/laws/material_registry.h>
+#include <poundfe/laws/uniaxial_law.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  namespace opensees
+  {
+    using Matrix = Eigen::MatrixXd;
+    using Vector = Eigen::VectorXd;
+
+    /// A refusal of a script's command (bad arguments, missing tags,
+    /// unsupported options): the reader reports it at the script's line.
+    class ScriptError : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
+    struct Node
+    {
+      int                 tag = 0;
+      std::vector<double> coordinates;
+      std::vector<double> mass;  // per DOF
+      /// Lumped masses of the elements on it (elasticBeamColumn -mass),
+      /// per DOF: in M, not in `mass` (OpenSees's node mass).
+      std::vector<double> element_mass;
+      std::vector<bool>   fixed; // per DOF
+      /// Committed response per DOF (relative to the ground).
+      std::vector<double> disp, vel, accel;
+      /// The equation of each DOF (-1: fixed), set by the analysis.
+      std::vector<int> equation;
+    };
+
+    /// An element in OpenSees's terms: trial response from the end nodes'
+    /// displacements and velocities, resisting force and tangents in the
+    /// global DOFs of its nodes (node after node), commit/revert.
+    class Element
+    {
+    public:
+      Element(const int tag, std::vector<int> nodes)
+        : tag(tag)
+        , node_tags(std::move(nodes))
+      {}
+      virtual ~Element() = default;
+      const int              tag;
+      const std::vector<int> node_tags;
+
+      virtual unsigned int n_dofs() const = 0;
+      /// False when a material refuses its state (failure() says why).
+      virtual bool   set_trial(const Vector &u, const Vector &v) = 0;
+      virtual Vector force() const = 0; // static resisting force, material damping included
+      virtual Matrix tangent() const = 0;
+      virtual Matrix initial_tangent() const = 0;
+      /// The damping matrix of its materials (used when not Rayleigh-damped).
+      virtual Matrix material_damping() const { return Matrix::Zero(n_dofs(), n_dofs()); }
+      /// Whether the domain's Rayleigh factors damp it (OpenSees: beams
+      /// always, zeroLength with -doRayleigh).
+      virtual bool rayleigh_damped() const = 0;
+      virtual void commit() {}
+      virtual void revert() {}
+      virtual void reset() {}
+      virtual std::string failure() const { return {}; }
+
+      /// The tangent at the last commit (OpenSees's K_c for betaKc).
+      Matrix committed_tangent;
+      /// The equation of each local DOF (-1: fixed), set by the analysis.
+      std::vector<int> equations;
+    };
+
+    /// A time series: the factor at time t (OpenSees's TimeSeries::getFactor).
+    struct TimeSeries
+    {
+      enum class Kind
+      {
+        constant,
+        linear,
+        path,
+        trig
+      } kind = Kind::constant;
+      double              factor = 1;
+      double              dt     = 0; // path: the values' spacing
+      std::vector<double> values;    // path
+      double start = 0, finish = 0, period = 1, shift = 0, zero_shift = 0; // trig
+      double              at(double time) const;
+    };
+
+    struct NodalLoad
+    {
+      int                 node = 0;
+      std::vector<double> values;
+    };
+
+    /// A load pattern: Plain (nodal loads times its series) or
+    /// UniformExcitation (ground acceleration along `direction`).
+    struct Pattern
+    {
+      int                         tag = 0;
+      bool                        uniform_excitation = false;
+      std::shared_ptr<TimeSeries> series;
+      double                      factor    = 1; // -fact
+      unsigned int                direction = 0; // uniform excitation: 0-based DOF
+      std::vector<NodalLoad>      loads;
+      /// loadConst: the factor frozen at the time it was called.
+      bool   constant        = false;
+      double constant_factor = 0;
+      double load_factor(double time) const;
+    };
+
+    struct EqualDof
+    {
+      int                       retained = 0, constrained = 0;
+      std::vector<unsigned int> dofs; // 0-based
+    };
+
+    struct RayleighFactors
+    {
+      double alpha_m = 0, beta_k = 0, beta_k_init = 0, beta_k_committed = 0;
+    };
+
+    /// What a script built; the analysis (opensees_analysis.h) moves it.
+    struct Domain
+    {
+      unsigned int ndm = 0, ndf = 0; // 0: no `model` yet
+      std::map<int, Node>                     nodes;
+      std::map<int, std::unique_ptr<Element>> elements;
+      std::map<int, MaterialParameters>       materials;
+      std::map<int, bool>                     transformations; // tag -> P-Delta
+      std::map<int, std::shared_ptr<TimeSeries>> series;
+      std::map<int, Pattern>                  patterns;
+      std::vector<EqualDof>                   equal_dofs;
+      RayleighFactors                         rayleigh;
+      double                                  time = 0; // committed
+      /// Set whenever nodes, elements or constraints change: the analysis
+      /// numbers the equations again.
+      bool changed = true;
+
+      const Node &node(int tag) const;
+      Node       &node(int tag);
+      /// The nodal loads of the Plain patterns at `time` (per node, per DOF).
+      std::map<int, std::vector<double>> nodal_loads(double time) const;
+      /// The ground acceleration along each DOF at `time` (UniformExcitation).
+      std::vector<double> ground_acceleration(double time) const;
+      /// OpenSees's nodal reactions (Domain::calculateNodalReactions(flag)
+      /// with flag 0: element resisting forces minus applied loads, plus
+      /// alpha_M M v) at the committed state.
+      std::map<int, std::vector<double>> reactions() const;
+      void clear();
+    };
+
+    /// A fresh material of the domain's tag (each element owns its own, as
+    /// OpenSees copies a material into every element that names it).
+    std::unique_ptr<UniaxialLaw> make_domain_material(const Domain &domain, int tag);
+
+    /// elasticBeamColumn in 2D with a Linear or PDelta transformation.
+    std::unique_ptr<Element> make_elastic_beam_2d(const Domain &domain, int tag,
+                                                  std::array<int, 2> nodes, double A, double E,
+                                                  double I, bool p_delta);
+
+    /// zeroLength: uniaxial materials along local directions (1-based as in
+    /// OpenSees: 1-3 translations, 4-6 rotations) of the local axes x, y.
+    struct ZeroLengthData
+    {
+      std::array<int, 2>        nodes{};
+      std::vector<int>          materials;
+      std::vector<int>          directions;
+      std::array<double, 3>     x{{1, 0, 0}}, y{{0, 1, 0}};
+      bool                      rayleigh = false;
+    };
+    std::unique_ptr<Element> make_zero_length(const Domain &domain, int tag,
+                                              const ZeroLengthData &data);
+  } // namespace opensees
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,337 @@
+// `poundfe opensees SCRIPT [ARGS...]`: runs an OpenSees Tcl script in a Tcl
+// 8.6 interpreter (as tclsh: argv0, argv, argc; Tcl's own loops, procs,
+// source, expr, puts, file and open) with poundfe's implementations of the
+// OpenSees commands (opensees_tcl_model.cc, opensees_tcl_analysis.cc) on
+// the domain of opensees/. An OpenSees command or option poundfe lacks is an
+// error naming it; any error ends the script with its file and line (exit 1,
+// no recorder file written). `exit` ends it cleanly with the recorders'
+// files in place. poundfe's additions live in the namespace poundfe::.
+#include <poundfe/base/exceptions.h>
+#include <poundfe/commands/command.h>
+#include <poundfe/commands/command_table.h>
+#include <poundfe/commands/dispatch.h>
+
+#include "opensees_tcl.h"
+
+#include <fstream>
+#include <iostream>
+#include <ostream>
+#include <regex>
+
+namespace poundfe
+{
+  namespace opensees_tcl
+  {
+    void
+    Session::finish_recorders()
+    {
+      for (auto &recorder : recorders)
+        recorder->finish();
+      recorders.clear();
+    }
+
+    void
+    Session::record()
+    {
+      for (auto &recorder : recorders)
+        recorder->record(domain);
+    }
+
+    Words::Words(Tcl_Interp *interp, const int objc, Tcl_Obj *const objv[])
+      : name(Tcl_GetString(objv[0]))
+      , interp(interp)
+      , objc(objc)
+      , objv(objv)
+    {}
+
+    std::string
+    Words::word(const char *what)
+    {
+      if (done())
+        throw opensees::ScriptError("missing " + std::string(what));
+      return Tcl_GetString(objv[next++]);
+    }
+
+    std::string
+    Words::peek() const
+    {
+      return done() ? std::string() : std::string(Tcl_GetString(objv[next]));
+    }
+
+    double
+    Words::real(const char *what)
+    {
+      const std::string text = word(what);
+      double            value;
+      if (Tcl_GetDoubleFromObj(nullptr, objv[next - 1], &value) != TCL_OK)
+        throw opensees::ScriptError("expected a number for " + std::string(what) + ", got '" +
+                                    text + "'");
+      return value;
+    }
+
+    int
+    Words::integer(const char *what)
+    {
+      const std::string text = word(what);
+      int               value;
+      if (Tcl_GetIntFromObj(nullptr, objv[next - 1], &value) != TCL_OK)
+        throw opensees::ScriptError("expected an integer for " + std::string(what) + ", got '" +
+                                    text + "'");
+      return value;
+    }
+
+    std::vector<double>
+    Words::numbers(const char *what)
+    {
+      std::vector<double> values;
+      double value;
+      while (!done() && Tcl_GetDoubleFromObj(nullptr, objv[next], &value) == TCL_OK)
+        values.push_back(real(what));
+      return values;
+    }
+
+    std::vector<int>
+    Words::integers(const char *what)
+    {
+      std::vector<int> values;
+      int value;
+      while (!done() && Tcl_GetIntFromObj(nullptr, objv[next], &value) == TCL_OK)
+        values.push_back(integer(what));
+      return values;
+    }
+
+    void
+    unsupported(const std::string &what)
+    {
+      throw opensees::ScriptError(what + ": poundfe does not support it");
+    }
+
+    namespace
+    {
+      struct Definition
+      {
+        Session  *session;
+        Procedure procedure;
+      };
+
+      int
+      run_procedure(ClientData data, Tcl_Interp *interp, int objc, Tcl_Obj *const objv[])
+      {
+        auto       &definition = *static_cast<Definition *>(data);
+        Words       words(interp, objc, objv);
+        std::string message;
+        try
+          {
+            Tcl_ResetResult(interp);
+            definition.procedure(*definition.session, words);
+            return TCL_OK;
+          }
+        catch (const InputError &e) // a material's parameter
+          {
+            message = e.parameter().empty() ? e.problem() :
+                                              "parameter '" + e.parameter() + "': " + e.problem();
+          }
+        catch (const std::exception &e)
+          {
+            message = e.what();
+          }
+        // "fix: node 9 does not exist"; a message naming the command already stays
+        const bool named = message.compare(0, words.name.size(), words.name) == 0 &&
+                           (message[words.name.size()] == ' ' || message[words.name.size()] == ':');
+        const std::string text  = named ? message : words.name + ": " + message;
+        Tcl_SetObjResult(interp, Tcl_NewStringObj(text.c_str(), -1));
+        return TCL_ERROR;
+      }
+
+      void
+      delete_definition(ClientData data)
+      {
+        delete static_cast<Definition *>(data);
+      }
+    } // namespace
+
+    void
+    define(Tcl_Interp *interp, Session &session, const std::string &name, Procedure procedure)
+    {
+      Tcl_CreateObjCommand(interp, name.c_str(), run_procedure,
+                           new Definition{&session, std::move(procedure)}, delete_definition);
+    }
+
+    void
+    set_result(Tcl_Interp *interp, const double value)
+    {
+      Tcl_SetObjResult(interp, Tcl_NewDoubleObj(value));
+    }
+
+    void
+    set_result(Tcl_Interp *interp, const std::vector<double> &values)
+    {
+      Tcl_Obj *list = Tcl_NewListObj(0, nullptr);
+      for (const double v : values)
+        Tcl_ListObjAppendElement(interp, list, Tcl_NewDoubleObj(v));
+      Tcl_SetObjResult(interp, list);
+    }
+
+    void
+    set_result(Tcl_Interp *interp, const std::vector<int> &values)
+    {
+      Tcl_Obj *list = Tcl_NewListObj(0, nullptr);
+      for (const int v : values)
+        Tcl_ListObjAppendElement(interp, list, Tcl_NewIntObj(v));
+      Tcl_SetObjResult(interp, list);
+    }
+
+    namespace
+    {
+      /// OpenSees commands poundfe does not have yet: a script that uses one
+      /// stops with its name rather than Tcl's "invalid command name".
+      void
+      define_unsupported(Tcl_Interp *interp, Session &session)
+      {
+        for (const char *name :
+             {"rigidDiaphragm", "rigidLink", "fixX", "fixY", "fixZ", "region", "remove",
+              "section", "fiber", "patch", "layer", "beamIntegration", "eleLoad", "sp",
+              "imposedMotion", "groundMotion", "modalDamping", "setElementRayleighDampingFactors",
+              "printA", "printB", "printModel", "print", "eleForce", "eleResponse",
+              "basicDeformation", "basicForce", "localForce", "testIter", "testNorm", "getNP",
+              "getPID", "reset", "block2D", "block3D", "nDMaterial", "frictionModel",
+              "database", "geomTransfPDelta", "mp", "domainChange", "remesh", "setNodeCoord",
+              "setNodeDisp", "setNodeVel", "setNodeAccel", "getLoadFactor", "sectionForce",
+              "sectionDeformation", "sectionStiffness", "nodeEigenvector", "nodeMass",
+              "nodeResponse", "nodeUnbalance", "nodeDOFs", "numFact", "numIter",
+              "systemSize", "getEleClassTags", "setParameter", "parameter", "updateParameter",
+              "loadPackage", "video", "logFile", "start", "stop"})
+          define(interp, session, name,
+                 [](Session &, Words &words) { unsupported(words.name); });
+      }
+
+      /// `exit ?status?`: the script ends here, cleanly (its recorders
+      /// written), instead of Tcl ending the process.
+      void
+      define_exit(Tcl_Interp *interp, Session &session)
+      {
+        define(interp, session, "exit", [](Session &s, Words &words) {
+          s.exit_status = words.done() ? 0 : words.integer("the exit status");
+          s.exited      = true;
+          throw opensees::ScriptError("exit");
+        });
+      }
+
+      /// poundfe::report: what the script's analyses did, as a dict
+      /// (steps, iterations, factorizations, failed_steps, time).
+      void
+      define_poundfe_namespace(Tcl_Interp *interp, Session &session)
+      {
+        Tcl_CreateNamespace(interp, "poundfe", nullptr, nullptr);
+        define(interp, session, "poundfe::report", [](Session &s, Words &words) {
+          opensees::AnalysisCounts c = s.counts;
+          if (s.analysis)
+            {
+              c.steps += s.analysis->counts.steps;
+              c.iterations += s.analysis->counts.iterations;
+              c.factorizations += s.analysis->counts.factorizations;
+              c.failed_steps += s.analysis->counts.failed_steps;
+            }
+          const std::string text =
+            "steps " + std::to_string(c.steps) + " iterations " + std::to_string(c.iterations) +
+            " factorizations " + std::to_string(c.factorizations) + " failed_steps " +
+            std::to_string(c.failed_steps);
+          Tcl_SetObjResult(words.interp, Tcl_NewStringObj(text.c_str(), -1));
+        });
+      }
+
+      /// The file and line of a Tcl error: the innermost `(file "F" line N)`
+      /// of errorInfo (a sourced file's own line; a procedure's error at the
+      /// line that called it), else the script and -errorline.
+      std::pair<std::string, int>
+      error_location(Tcl_Interp *interp, const std::string &script, const int code)
+      {
+        Tcl_Obj *options = Tcl_GetReturnOptions(interp, code);
+        Tcl_IncrRefCount(options);
+        Tcl_Obj *key = Tcl_NewStringObj("-errorinfo", -1), *info = nullptr;
+        Tcl_IncrRefCount(key);
+        Tcl_DictObjGet(nullptr, options, key, &info);
+        const std::string text = info ? Tcl_GetString(info) : "";
+        Tcl_DecrRefCount(key);
+        key = Tcl_NewStringObj("-errorline", -1);
+        Tcl_IncrRefCount(key);
+        Tcl_Obj *line = nullptr;
+        Tcl_DictObjGet(nullptr, options, key, &line);
+        int error_line = 0;
+        if (line)
+          Tcl_GetIntFromObj(nullptr, line, &error_line);
+        Tcl_DecrRefCount(key);
+        Tcl_DecrRefCount(options);
+        std::smatch      match;
+        const std::regex file_line("\\(file \"([^\"]*)\" line ([0-9]+)\\)");
+        if (std::regex_search(text, match, file_line))
+          return {match[1].str(), std::stoi(match[2].str())};
+        return {script, error_line};
+      }
+
+      /// argv0, argv and argc as tclsh sets them.
+      void
+      set_arguments(Tcl_Interp *interp, const std::vector<std::string> &arguments)
+      {
+        Tcl_Obj *argv = Tcl_NewListObj(0, nullptr);
+        for (std::size_t i = 1; i < arguments.size(); ++i)
+          Tcl_ListObjAppendElement(interp, argv, Tcl_NewStringObj(arguments[i].c_str(), -1));
+        Tcl_SetVar2Ex(interp, "argv0", nullptr, Tcl_NewStringObj(arguments[0].c_str(), -1),
+                      TCL_GLOBAL_ONLY);
+        Tcl_SetVar2Ex(interp, "argv", nullptr, argv, TCL_GLOBAL_ONLY);
+        Tcl_SetVar2Ex(interp, "argc", nullptr, Tcl_NewIntObj(arguments.size() - 1),
+                      TCL_GLOBAL_ONLY);
+        Tcl_SetVar2Ex(interp, "tcl_interactive", nullptr, Tcl_NewIntObj(0), TCL_GLOBAL_ONLY);
+      }
+
+      struct Interpreter
+      {
+        Tcl_Interp *interp = Tcl_CreateInterp();
+        ~Interpreter()
+        {
+          // what the script's puts wrote, before any message of ours
+          for (const int channel : {TCL_STDOUT, TCL_STDERR})
+            if (Tcl_Channel c = Tcl_GetStdChannel(channel))
+              Tcl_Flush(c);
+          Tcl_DeleteInterp(interp);
+        }
+      };
+    } // namespace
+  } // namespace opensees_tcl
+
+  namespace commands
+  {
+    int
+    opensees(const CommandRun &run)
+    {
+      using namespace opensees_tcl;
+      if (run.arguments.empty())
+        throw CommandLineError("'opensees' needs a Tcl script", usage_text());
+      const std::string &script = run.arguments[0];
+      if (!std::ifstream(script))
+        throw InputError(script, 0, "", "cannot be read");
+      Tcl_FindExecutable(nullptr);
+      Interpreter interpreter;
+      Tcl_Interp *interp = interpreter.interp;
+      if (Tcl_Init(interp) != TCL_OK)
+        throw InputError(script, 0, "",
+                         "Tcl could not start: " + std::string(Tcl_GetStringResult(interp)));
+      set_arguments(interp, run.arguments);
+      Session session(run.err);
+      define_model_commands(interp, session);
+      define_analysis_commands(interp, session);
+      define_unsupported(interp, session);
+      define_exit(interp, session);
+      define_poundfe_namespace(interp, session);
+      const int code = Tcl_EvalFile(interp, script.c_str());
+      if (code != TCL_OK && !session.exited)
+        {
+          const auto [file, line] = error_location(interp, script, code);
+          throw InputError(file, line, "", Tcl_GetStringResult(interp));
+        }
+      session.finish_recorders();
+      std::cout.flush();
+      return session.exit_status;
+    }
+  } // namespace commands
+} // namespace poundfe

@@ -1,0 +1,98 @@
+// The Tcl reader of OpenSees scripts (the `opensees` command), private to
+// source/commands/opensees_*.cc so that <tcl.h> stays out of every other
+// file: the session a script's commands build (an OpenSees domain, its
+// analysis and recorders; opensees/) and the helpers of the command
+// procedures. The commands are in opensees_tcl_model.cc (model, loads,
+// recorders) and opensees_tcl_analysis.cc (analysis and queries).
+#ifndef poundfe_commands_opensees_tcl_h
+#define poundfe_commands_opensees_tcl_h
+
+#include <poundfe/opensees/opensees_analysis.h>
+#include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/opensees/opensees_recorder.h>
+
+#include <tcl.h>
+
+#include <functional>
+#include <iosfwd>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  namespace opensees_tcl
+  {
+    /// What a script has built and asked for so far.
+    struct Session
+    {
+      explicit Session(std::ostream &warnings)
+        : warnings(warnings)
+      {}
+      opensees::Domain                                     domain;
+      opensees::AnalysisOptions                            options;
+      /// Which of `test`, `algorithm` and the static and transient
+      /// integrators the script gave (the others: OpenSees's defaults).
+      bool has_test = false, has_algorithm = false;
+      bool has_static_integrator = false, has_transient_integrator = false;
+      std::unique_ptr<opensees::Analysis>                  analysis;
+      std::vector<std::unique_ptr<opensees::NodeRecorder>> recorders;
+      std::map<int, std::vector<double>>                   reactions; // of `reactions`
+      opensees::AnalysisCounts                             counts;    // of earlier analyses
+      int            current_pattern = -1; // the Plain pattern whose body runs
+      bool           exited          = false;
+      int            exit_status     = 0;
+      std::ostream  &warnings;
+
+      /// Every recorder's file written and closed (wipe, the script's end).
+      void finish_recorders();
+      /// Every recorder records the committed state.
+      void record();
+    };
+
+    /// The words of one command, read in order; each read names what it
+    /// expected when the word is missing or not a number.
+    class Words
+    {
+    public:
+      Words(Tcl_Interp *interp, int objc, Tcl_Obj *const objv[]);
+      bool        done() const { return next >= objc; }
+      std::size_t left() const { return objc - next; }
+      std::string word(const char *what);
+      std::string peek() const;
+      double      real(const char *what);
+      int         integer(const char *what);
+      /// The words from here up to the first that is not a number (an
+      /// integer), as reals (integers).
+      std::vector<double> numbers(const char *what);
+      std::vector<int>    integers(const char *what);
+      /// The command's name and sub-type ("element zeroLength").
+      const std::string name;
+      Tcl_Interp *const interp;
+
+    private:
+      int            objc, next = 1;
+      Tcl_Obj *const *objv;
+    };
+
+    /// "<what>: poundfe does not support it" as a script error.
+    [[noreturn]] void unsupported(const std::string &what);
+
+    using Procedure = std::function<void(Session &, Words &)>;
+    /// A Tcl command that runs `procedure`; a ScriptError or InputError it
+    /// throws is the command's Tcl error, prefixed by the command's name.
+    void define(Tcl_Interp *interp, Session &session, const std::string &name,
+                Procedure procedure);
+
+    /// The result of the running command.
+    void set_result(Tcl_Interp *interp, double value);
+    void set_result(Tcl_Interp *interp, const std::vector<double> &values);
+    void set_result(Tcl_Interp *interp, const std::vector<int> &values);
+
+    void define_model_commands(Tcl_Interp *interp, Session &session);
+    void define_analysis_commands(Tcl_Interp *interp, Session &session);
+  } // namespace opensees_tcl
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,337 @@
+// The analysis and query commands of OpenSees scripts, with OpenSees 3.8's
+// argument syntax: constraints, numberer, system, test, algorithm,
+// integrator, analysis, analyze, eigen, wipeAnalysis, getTime, nodeDisp,
+// nodeVel, nodeAccel, nodeReaction, reactions, getNodeTags, getEleTags,
+// nodeCoord. A component the script leaves out takes OpenSees's default
+// (NormUnbalance 1e-6 25, Newton, Newmark 0.5 0.25 or LoadControl 1), with
+// OpenSees's warning.
+#include "opensees_tcl.h"
+
+#include <algorithm>
+#include <ostream>
+
+namespace poundfe
+{
+  namespace opensees_tcl
+  {
+    namespace
+    {
+      using opensees::ScriptError;
+
+      void
+      check_done(Words &w)
+      {
+        if (!w.done())
+          unsupported(w.name + " option '" + w.peek() + "'");
+      }
+
+      /// The script changed a component: the analysis, if any, takes it.
+      void
+      reconfigure(Session &s)
+      {
+        if (s.analysis)
+          {
+            opensees::AnalysisOptions o = s.options;
+            o.transient                 = s.analysis->options().transient;
+            s.analysis->configure(o);
+          }
+      }
+
+      void
+      accept_names(Words &w, const std::vector<std::string> &names)
+      {
+        const std::string name = w.word("the type");
+        if (std::find(names.begin(), names.end(), name) == names.end())
+          unsupported(w.name + " " + name);
+        check_done(w);
+      }
+
+      void
+      test(Session &s, Words &w)
+      {
+        using Kind        = opensees::ConvergenceTest::Kind;
+        const std::string type = w.word("the test's type");
+        opensees::ConvergenceTest t;
+        if (type == "NormDispIncr")
+          t.kind = Kind::norm_disp_incr;
+        else if (type == "NormUnbalance")
+          t.kind = Kind::norm_unbalance;
+        else if (type == "EnergyIncr")
+          t.kind = Kind::energy_incr;
+        else
+          unsupported("test " + type);
+        t.tolerance      = w.real("the tolerance");
+        t.max_iterations = w.integer("the number of iterations");
+        if (!w.done())
+          t.print_flag = w.integer("the print flag");
+        if (t.print_flag != 0 && t.print_flag != 1 && t.print_flag != 2 && t.print_flag != 5)
+          unsupported("test print flag " + std::to_string(t.print_flag));
+        if (!w.done() && w.integer("the norm type") != 2)
+          unsupported("test norm type other than 2");
+        check_done(w);
+        s.options.test = t;
+        s.has_test     = true;
+        reconfigure(s);
+      }
+
+      void
+      algorithm(Session &s, Words &w)
+      {
+        using Algorithm        = opensees::AnalysisOptions::Algorithm;
+        const std::string type = w.word("the algorithm's type");
+        if (type == "Linear")
+          s.options.algorithm = Algorithm::linear;
+        else if (type == "Newton")
+          s.options.algorithm = Algorithm::newton;
+        else if (type == "ModifiedNewton")
+          s.options.algorithm = Algorithm::modified_newton;
+        else
+          unsupported("algorithm " + type);
+        check_done(w);
+        s.has_algorithm = true;
+        reconfigure(s);
+      }
+
+      void
+      integrator(Session &s, Words &w)
+      {
+        const std::string type = w.word("the integrator's type");
+        if (type == "Newmark")
+          {
+            s.options.gamma = w.real("gamma");
+            s.options.beta  = w.real("beta");
+            if (!(s.options.beta > 0))
+              throw ScriptError("Newmark needs beta > 0");
+            s.has_transient_integrator = true;
+          }
+        else if (type == "LoadControl")
+          {
+            s.options.d_lambda   = w.real("the load increment");
+            s.options.lambda_iterations = 1;
+            s.options.lambda_min = s.options.lambda_max = s.options.d_lambda;
+            if (!w.done())
+              {
+                s.options.lambda_iterations = w.integer("the number of iterations");
+                s.options.lambda_min        = w.real("the smallest increment");
+                s.options.lambda_max        = w.real("the largest increment");
+              }
+            s.has_static_integrator = true;
+          }
+        else
+          unsupported("integrator " + type);
+        check_done(w);
+        reconfigure(s);
+      }
+
+      /// OpenSees's defaults for what the script left out, with its warnings.
+      void
+      default_components(Session &s, const bool transient)
+      {
+        const std::string kind = transient ? "Transient" : "Static";
+        if (!s.has_test)
+          s.warnings << "WARNING analysis " << kind
+                     << " - no ConvergenceTest yet specified, NormUnbalance default will be "
+                        "used\n";
+        if (!s.has_algorithm)
+          s.warnings << "WARNING analysis " << kind
+                     << " - no Algorithm yet specified, NewtonRaphson default will be used\n";
+        if (transient && !s.has_transient_integrator)
+          {
+            s.warnings << "WARNING analysis Transient - no Integrator specified, Newmark(0.5, "
+                          "0.25) default will be used\n";
+            s.options.gamma = 0.5;
+            s.options.beta  = 0.25;
+          }
+        if (!transient && !s.has_static_integrator)
+          {
+            s.warnings << "WARNING analysis Static - no Integrator specified, LoadControl(1.0) "
+                          "default will be used\n";
+            s.options.d_lambda = s.options.lambda_min = s.options.lambda_max = 1;
+            s.options.lambda_iterations = 1;
+          }
+      }
+
+      void
+      add_counts(Session &s)
+      {
+        if (!s.analysis)
+          return;
+        s.counts.steps += s.analysis->counts.steps;
+        s.counts.iterations += s.analysis->counts.iterations;
+        s.counts.factorizations += s.analysis->counts.factorizations;
+        s.counts.failed_steps += s.analysis->counts.failed_steps;
+      }
+
+      void
+      analysis(Session &s, Words &w)
+      {
+        const std::string type = w.word("the analysis' type");
+        if (type != "Static" && type != "Transient")
+          unsupported("analysis " + type);
+        check_done(w);
+        if (s.domain.ndf == 0)
+          throw ScriptError("no model yet");
+        const bool transient = type == "Transient";
+        default_components(s, transient);
+        s.options.transient = transient;
+        add_counts(s);
+        s.analysis = std::make_unique<opensees::Analysis>(s.domain, s.options);
+      }
+
+      void
+      analyze(Session &s, Words &w)
+      {
+        if (!s.analysis)
+          throw ScriptError("no analysis yet: the script must call 'analysis Static|Transient'");
+        const int steps = w.integer("the number of steps");
+        double    dt    = 0;
+        if (s.analysis->options().transient)
+          {
+            dt = w.real("the time step");
+            if (!(dt > 0))
+              throw ScriptError("the time step must be > 0");
+          }
+        check_done(w);
+        if (steps < 0)
+          throw ScriptError("the number of steps must be >= 0");
+        const int result = s.analysis->analyze(
+          steps, dt, [&]() { s.record(); },
+          [&](const std::string &why) {
+            s.warnings << (why.compare(0, 5, "CTest") == 0 ? "" : "WARNING ") << why << "\n";
+          });
+        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(result));
+      }
+
+      void
+      eigen(Session &s, Words &w)
+      {
+        while (w.peek().size() > 1 && w.peek()[0] == '-')
+          {
+            const std::string option = w.word("an option");
+            if (option != "-genBandArpack" && option != "-fullGenLapack" &&
+                option != "-symmBandLapack")
+              unsupported("eigen option '" + option + "'");
+          }
+        const int n = w.integer("the number of modes");
+        check_done(w);
+        if (n < 1)
+          throw ScriptError("the number of modes must be >= 1");
+        if (s.domain.ndf == 0)
+          throw ScriptError("no model yet");
+        if (!s.analysis)
+          {
+            opensees::Analysis modal(s.domain, s.options);
+            set_result(w.interp, modal.eigenvalues(n));
+          }
+        else
+          set_result(w.interp, s.analysis->eigenvalues(n));
+      }
+
+      /// nodeDisp/nodeVel/nodeAccel/nodeReaction/nodeCoord: one DOF's value
+      /// (1-based) or the whole node's.
+      void
+      node_values(Words &w, const std::vector<double> &values, const char *what)
+      {
+        if (w.done())
+          return set_result(w.interp, values);
+        const int k = w.integer(what);
+        check_done(w);
+        if (k <= 0) // OpenSees: the whole node
+          return set_result(w.interp, values);
+        if (k > static_cast<int>(values.size()))
+          throw ScriptError(std::string(what) + " " + std::to_string(k) + " is not one of 1 to " +
+                            std::to_string(values.size()));
+        set_result(w.interp, values[k - 1]);
+      }
+
+      void
+      node_response(Session &s, Words &w, std::vector<double> opensees::Node::*response)
+      {
+        const opensees::Node &n = s.domain.node(w.integer("the node's tag"));
+        node_values(w, n.*response, "DOF");
+      }
+
+      void
+      node_reaction(Session &s, Words &w)
+      {
+        const opensees::Node &n  = s.domain.node(w.integer("the node's tag"));
+        const auto            it = s.reactions.find(n.tag);
+        node_values(w, it == s.reactions.end() ? std::vector<double>(n.disp.size(), 0.0) : it->second,
+                    "DOF");
+      }
+
+      void
+      reactions(Session &s, Words &w)
+      {
+        check_done(w);
+        s.reactions = s.domain.reactions();
+      }
+
+      template <typename Map>
+      std::vector<int>
+      tags_of(const Map &map, Words &w)
+      {
+        check_done(w);
+        std::vector<int> tags;
+        for (const auto &entry : map)
+          tags.push_back(entry.first);
+        return tags;
+      }
+
+      void
+      wipe_analysis(Session &s, Words &w)
+      {
+        check_done(w);
+        add_counts(s);
+        s.analysis.reset();
+        s.options  = opensees::AnalysisOptions();
+        s.has_test = s.has_algorithm = false;
+        s.has_static_integrator = s.has_transient_integrator = false;
+      }
+    } // namespace
+
+    void
+    define_analysis_commands(Tcl_Interp *interp, Session &session)
+    {
+      define(interp, session, "constraints", [](Session &, Words &w) {
+        accept_names(w, {"Plain", "Transformation"});
+      });
+      define(interp, session, "numberer", [](Session &, Words &w) {
+        accept_names(w, {"Plain", "RCM", "AMD"});
+      });
+      // every sparse or banded solver: UMFPACK (the same numbers to round-off)
+      define(interp, session, "system", [](Session &, Words &w) {
+        accept_names(w, {"BandGeneral", "BandGen", "BandSPD", "ProfileSPD", "SparseGeneral",
+                         "SparseGEN", "UmfPack", "Umfpack", "FullGeneral", "SparseSYM",
+                         "SparseSPD", "Mumps"});
+      });
+      define(interp, session, "test", test);
+      define(interp, session, "algorithm", algorithm);
+      define(interp, session, "integrator", integrator);
+      define(interp, session, "analysis", analysis);
+      define(interp, session, "analyze", analyze);
+      define(interp, session, "eigen", eigen);
+      define(interp, session, "wipeAnalysis", wipe_analysis);
+      define(interp, session, "getTime", [](Session &s, Words &w) {
+        check_done(w);
+        set_result(w.interp, s.domain.time);
+      });
+      define(interp, session, "nodeDisp",
+             [](Session &s, Words &w) { node_response(s, w, &opensees::Node::disp); });
+      define(interp, session, "nodeVel",
+             [](Session &s, Words &w) { node_response(s, w, &opensees::Node::vel); });
+      define(interp, session, "nodeAccel",
+             [](Session &s, Words &w) { node_response(s, w, &opensees::Node::accel); });
+      define(interp, session, "nodeCoord",
+             [](Session &s, Words &w) { node_response(s, w, &opensees::Node::coordinates); });
+      define(interp, session, "nodeReaction", node_reaction);
+      define(interp, session, "reactions", reactions);
+      define(interp, session, "getNodeTags", [](Session &s, Words &w) {
+        set_result(w.interp, tags_of(s.domain.nodes, w));
+      });
+      define(interp, session, "getEleTags", [](Session &s, Words &w) {
+        set_result(w.interp, tags_of(s.domain.elements, w));
+      });
+    }
+  } // namespace opensees_tcl
+} // namespace poundfe

@@ -1,0 +1,693 @@
+// The model-building commands of OpenSees scripts, with OpenSees 3.8's
+// argument syntax: wipe, model, node, fix, mass, equalDOF, geomTransf,
+// element, uniaxialMaterial, timeSeries, pattern, load, loadConst, setTime,
+// rayleigh, recorder. An option or type poundfe lacks is an error naming it.
+#include <poundfe/laws/material_registry.h>
+
+#include "opensees_tcl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+namespace poundfe
+{
+  namespace opensees_tcl
+  {
+    namespace
+    {
+      using opensees::ScriptError;
+
+      std::string
+      text_of(const int value)
+      {
+        return std::to_string(value);
+      }
+
+      opensees::Domain &
+      model_domain(Session &session)
+      {
+        if (session.domain.ndf == 0)
+          throw ScriptError("no model yet: the script must call 'model basic -ndm N' first");
+        return session.domain;
+      }
+
+      void
+      wipe(Session &s)
+      {
+        s.finish_recorders();
+        if (s.analysis)
+          {
+            s.counts.steps += s.analysis->counts.steps;
+            s.counts.iterations += s.analysis->counts.iterations;
+            s.counts.factorizations += s.analysis->counts.factorizations;
+            s.counts.failed_steps += s.analysis->counts.failed_steps;
+          }
+        s.analysis.reset();
+        s.domain.clear();
+        s.options        = opensees::AnalysisOptions();
+        s.has_test = s.has_algorithm = false;
+        s.has_static_integrator = s.has_transient_integrator = false;
+        s.reactions.clear();
+        s.current_pattern = -1;
+      }
+
+      void
+      model(Session &s, Words &w)
+      {
+        const std::string type = w.word("the model builder");
+        if (type != "basic" && type != "Basic" && type != "BasicBuilder")
+          unsupported("model " + type);
+        unsigned int ndm = 0, ndf = 0;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-ndm")
+              ndm = w.integer("-ndm");
+            else if (option == "-ndf")
+              ndf = w.integer("-ndf");
+            else
+              unsupported("model option '" + option + "'");
+          }
+        if (ndm < 1 || ndm > 3)
+          throw ScriptError("-ndm must be 1, 2 or 3");
+        if (ndf == 0)
+          ndf = ndm == 1 ? 1 : ndm == 2 ? 3 : 6;
+        const bool known = (ndm == 1 && ndf == 1) || (ndm == 2 && (ndf == 2 || ndf == 3)) ||
+                           (ndm == 3 && (ndf == 3 || ndf == 6));
+        if (!known)
+          unsupported("-ndm " + text_of(ndm) + " -ndf " + text_of(ndf));
+        s.domain.ndm = ndm;
+        s.domain.ndf = ndf;
+      }
+
+      std::vector<double>
+      exactly(Words &w, const unsigned int n, const char *what)
+      {
+        std::vector<double> values;
+        for (unsigned int i = 0; i < n; ++i)
+          values.push_back(w.real(what));
+        return values;
+      }
+
+      void
+      node(Session &s, Words &w)
+      {
+        opensees::Domain &d = model_domain(s);
+        opensees::Node    n;
+        n.tag         = w.integer("the node's tag");
+        n.coordinates = exactly(w, d.ndm, "a coordinate");
+        n.mass.assign(d.ndf, 0.0);
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option != "-mass")
+              unsupported("node option '" + option + "'");
+            n.mass = exactly(w, d.ndf, "a mass");
+          }
+        n.element_mass.assign(d.ndf, 0.0);
+        n.fixed.assign(d.ndf, false);
+        n.disp.assign(d.ndf, 0.0);
+        n.vel = n.accel = n.disp;
+        if (!d.nodes.emplace(n.tag, n).second)
+          throw ScriptError("node " + text_of(n.tag) + " exists already");
+        d.changed = true;
+      }
+
+      void
+      fix(Session &s, Words &w)
+      {
+        opensees::Domain &d    = model_domain(s);
+        opensees::Node   &n    = d.node(w.integer("the node's tag"));
+        const auto        flag = exactly(w, d.ndf, "a fixity (0 or 1)");
+        if (!w.done())
+          unsupported("fix with more than ndf = " + text_of(d.ndf) + " values");
+        for (unsigned int k = 0; k < d.ndf; ++k)
+          if (flag[k] != 0)
+            {
+              if (n.fixed[k])
+                throw ScriptError("node " + text_of(n.tag) + " DOF " + text_of(k + 1) +
+                                  " is fixed already");
+              n.fixed[k] = true;
+            }
+        d.changed = true;
+      }
+
+      void
+      mass(Session &s, Words &w)
+      {
+        opensees::Domain &d = model_domain(s);
+        opensees::Node   &n = d.node(w.integer("the node's tag"));
+        n.mass              = exactly(w, d.ndf, "a mass");
+        if (!w.done())
+          unsupported("mass with more than ndf = " + text_of(d.ndf) + " values");
+        d.changed = true;
+      }
+
+      void
+      equal_dof(Session &s, Words &w)
+      {
+        opensees::Domain  &d = model_domain(s);
+        opensees::EqualDof e;
+        e.retained    = d.node(w.integer("the retained node")).tag;
+        e.constrained = d.node(w.integer("the constrained node")).tag;
+        if (e.retained == e.constrained)
+          throw ScriptError("the retained and the constrained node are the same");
+        while (!w.done())
+          {
+            const int dof = w.integer("a DOF");
+            if (dof < 1 || dof > static_cast<int>(d.ndf))
+              throw ScriptError("DOF " + text_of(dof) + " is not one of 1 to ndf");
+            e.dofs.push_back(dof - 1);
+          }
+        if (e.dofs.empty())
+          throw ScriptError("missing the DOFs");
+        d.equal_dofs.push_back(e);
+        d.changed = true;
+      }
+
+      void
+      geom_transf(Session &s, Words &w)
+      {
+        opensees::Domain &d    = model_domain(s);
+        const std::string type = w.word("the transformation's type");
+        if (type != "Linear" && type != "PDelta")
+          unsupported("geomTransf " + type);
+        const int tag = w.integer("the transformation's tag");
+        if (d.ndm == 3)
+          exactly(w, 3, "a component of vecxz");
+        if (!w.done())
+          unsupported("geomTransf option '" + w.peek() + "'");
+        if (!d.transformations.emplace(tag, type == "PDelta").second)
+          throw ScriptError("geomTransf " + text_of(tag) + " exists already");
+      }
+
+      void
+      add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element)
+      {
+        const int tag = element->tag;
+        if (!d.elements.emplace(tag, std::move(element)).second)
+          throw ScriptError("element " + text_of(tag) + " exists already");
+        d.changed = true;
+      }
+
+      void
+      elastic_beam_column(opensees::Domain &d, Words &w)
+      {
+        if (d.ndm != 2 || d.ndf != 3)
+          unsupported("element elasticBeamColumn with -ndm " + text_of(d.ndm) + " -ndf " +
+                      text_of(d.ndf));
+        const int          tag = w.integer("the element's tag");
+        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
+        const double       A = w.real("A"), E = w.real("E"), I = w.real("Iz");
+        const int          transf = w.integer("the transformation's tag");
+        double             rho    = 0; // mass per length, lumped (OpenSees's default)
+        while (w.peek() == "-mass" || w.peek() == "-lMass")
+          if (w.word("-mass") == "-mass") // -lMass: lumped, the default
+            rho = w.real("the mass per length");
+        if (!w.done())
+          unsupported("element elasticBeamColumn option '" + w.peek() + "'");
+        const auto t = d.transformations.find(transf);
+        if (t == d.transformations.end())
+          throw ScriptError("geomTransf " + text_of(transf) + " does not exist");
+        add_element(d, opensees::make_elastic_beam_2d(d, tag, nodes, A, E, I, t->second));
+        const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
+        const double m = 0.5 * rho * std::hypot(b[0] - a[0], b[1] - a[1]);
+        for (const int n : nodes)
+          for (const unsigned int k : {0u, 1u})
+            d.node(n).element_mass[k] += m;
+      }
+
+      void
+      zero_length_option(Words &w, const std::string &option, opensees::ZeroLengthData &z)
+      {
+        if (option == "-mat")
+          z.materials = w.integers("a material's tag");
+        else if (option == "-dir")
+          z.directions = w.integers("a direction");
+        else if (option == "-doRayleigh")
+          {
+            int flag = 1;
+            if (!w.done() && w.peek()[0] != '-')
+              flag = w.integer("the -doRayleigh flag");
+            if (flag != 0 && flag != 1)
+              unsupported("element zeroLength -doRayleigh " + text_of(flag));
+            z.rayleigh = flag == 1;
+          }
+        else if (option == "-orient")
+          {
+            for (double &x : z.x)
+              x = w.real("a component of x");
+            for (double &y : z.y)
+              y = w.real("a component of yp");
+          }
+        else
+          unsupported("element zeroLength option '" + option + "'");
+      }
+
+      void
+      zero_length(opensees::Domain &d, Words &w)
+      {
+        const int                tag = w.integer("the element's tag");
+        opensees::ZeroLengthData z;
+        z.nodes = {{w.integer("node i"), w.integer("node j")}};
+        while (!w.done())
+          zero_length_option(w, w.word("an option"), z);
+        if (z.materials.empty() || z.materials.size() != z.directions.size())
+          throw ScriptError("zeroLength " + text_of(tag) +
+                            " needs as many -dir directions as -mat materials, at least one");
+        add_element(d, opensees::make_zero_length(d, tag, z));
+      }
+
+      void
+      element(Session &s, Words &w)
+      {
+        opensees::Domain &d    = model_domain(s);
+        const std::string type = w.word("the element's type");
+        if (type == "elasticBeamColumn")
+          elastic_beam_column(d, w);
+        else if (type == "zeroLength")
+          zero_length(d, w);
+        else
+          unsupported("element " + type);
+      }
+
+      /// A material's positional parameters in OpenSees's order, with the
+      /// numbers of values OpenSees accepts.
+      struct MaterialSyntax
+      {
+        const char                *name;
+        std::vector<const char *> parameters;
+        std::vector<std::size_t>  counts;
+      };
+
+      const std::vector<MaterialSyntax> &
+      material_syntaxes()
+      {
+        static const std::vector<MaterialSyntax> syntaxes = {
+          {"Elastic", {"E", "eta", "Eneg"}, {1, 2, 3}},
+          {"ElasticPP", {"E", "epsyP", "epsyN", "eps0"}, {2, 3, 4}},
+          {"ElasticPPGap", {"E", "Fy", "gap", "eta"}, {3, 4}},
+          {"ImpactMaterial", {"K1", "K2", "Delta_y", "gap"}, {4}},
+          {"Steel01", {"fy", "E0", "b", "a1", "a2", "a3", "a4"}, {3, 7}},
+          {"Steel02", {"fy", "E0", "b", "R0", "cR1", "cR2", "a1", "a2", "a3", "a4"}, {3, 6, 10}},
+          {"Concrete01", {"fpc", "epsc0", "fpcu", "epscu"}, {4}},
+          {"Concrete02", {"fpc", "epsc0", "fpcu", "epscu", "lambda", "ft", "Ets"}, {7}},
+        };
+        return syntaxes;
+      }
+
+      /// Hysteretic: s1p e1p s2p e2p <s3p e3p> s1n e1n s2n e2n <s3n e3n>
+      /// pinchX pinchY damage1 damage2 <beta>.
+      MaterialParameters
+      hysteretic_parameters(const std::vector<double> &v)
+      {
+        const bool three = v.size() == 16 || v.size() == 17;
+        if (!three && v.size() != 12 && v.size() != 13)
+          throw ScriptError("Hysteretic takes 12, 13, 16 or 17 values, got " +
+                            text_of(v.size()));
+        MaterialParameters p{"Hysteretic", {}};
+        std::size_t        i = 0;
+        for (const char *side : {"p", "n"})
+          for (const char *point : {"1", "2", "3"})
+            if (*point != '3' || three)
+              {
+                p.values[std::string("s") + point + side] = v[i++];
+                p.values[std::string("e") + point + side] = v[i++];
+              }
+        for (const char *name : {"pinchX", "pinchY", "damage1", "damage2", "beta"})
+          if (i < v.size())
+            p.values[name] = v[i++];
+        return p;
+      }
+
+      void
+      uniaxial_material(Session &s, Words &w)
+      {
+        opensees::Domain  &d    = model_domain(s);
+        const std::string  type = w.word("the material's type");
+        const int          tag  = w.integer("the material's tag");
+        std::vector<double> values = w.numbers("a parameter");
+        MaterialParameters  p{type, {}};
+        if (type == "ElasticPPGap" && w.peek() == "damage")
+          {
+            w.word("damage");
+            p.values["damage"] = 1;
+          }
+        if (!w.done())
+          unsupported("uniaxialMaterial " + type + " option '" + w.peek() + "'");
+        if (type == "Hysteretic")
+          p = hysteretic_parameters(values);
+        else
+          {
+            const auto &all = material_syntaxes();
+            const auto  it  = std::find_if(all.begin(), all.end(), [&](const MaterialSyntax &m) {
+              return m.name == type;
+            });
+            if (it == all.end())
+              unsupported("uniaxialMaterial " + type);
+            if (std::find(it->counts.begin(), it->counts.end(), values.size()) == it->counts.end())
+              throw ScriptError(type + " does not take " + text_of(values.size()) + " values");
+            for (std::size_t i = 0; i < values.size(); ++i)
+              p.values[it->parameters[i]] = values[i];
+          }
+        make_material(p); // the law's own checks, now at the script's line
+        if (!d.materials.emplace(tag, p).second)
+          throw ScriptError("uniaxialMaterial " + text_of(tag) + " exists already");
+      }
+
+      /// The numbers of a -filePath file up to its first word that is not a
+      /// number (OpenSees reads that far: a PEER record's "End Data" line),
+      /// with a warning naming what follows them.
+      std::vector<double>
+      read_path_file(const std::string &name, std::ostream &warnings)
+      {
+        std::ifstream in(name);
+        if (!in)
+          throw ScriptError("the file '" + name + "' cannot be read");
+        std::vector<double> values{std::istream_iterator<double>(in),
+                                   std::istream_iterator<double>()};
+        if (!in.eof())
+          {
+            in.clear();
+            std::string word;
+            in >> word;
+            warnings << "WARNING timeSeries Path: '" << name << "' holds '" << word
+                     << "' after its " << values.size()
+                     << " values; the rest of the file is not read (as OpenSees)\n";
+          }
+        if (values.empty())
+          throw ScriptError("the file '" + name + "' holds no number");
+        return values;
+      }
+
+      /// The options of a Path, Linear or Constant series (after its tag).
+      std::shared_ptr<opensees::TimeSeries>
+      series_options(const std::string &type, Words &w, std::ostream &warnings)
+      {
+        using Kind = opensees::TimeSeries::Kind;
+        auto series  = std::make_shared<opensees::TimeSeries>();
+        series->kind = type == "Path" || type == "Series" ? Kind::path :
+                       type == "Linear"                   ? Kind::linear :
+                       type == "Trig"                     ? Kind::trig :
+                                                            Kind::constant;
+        if (series->kind == Kind::trig)
+          {
+            series->start  = w.real("tStart");
+            series->finish = w.real("tEnd");
+            series->period = w.real("the period");
+            if (!(series->period > 0))
+              throw ScriptError("the period must be > 0");
+          }
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-factor" || option == "-fact")
+              series->factor = w.real("-factor");
+            else if (series->kind == Kind::trig && (option == "-shift" || option == "-phaseShift"))
+              series->shift = w.real("-shift");
+            else if (series->kind == Kind::trig && option == "-zeroShift")
+              series->zero_shift = w.real("-zeroShift");
+            else if (series->kind == Kind::path && option == "-dt")
+              series->dt = w.real("-dt");
+            else if (series->kind == Kind::path && option == "-values")
+              {
+                Tcl_Obj *list = Tcl_NewStringObj(w.word("the values").c_str(), -1);
+                Tcl_IncrRefCount(list);
+                int       n;
+                Tcl_Obj **items;
+                const int ok = Tcl_ListObjGetElements(w.interp, list, &n, &items);
+                for (int i = 0; ok == TCL_OK && i < n; ++i)
+                  {
+                    double v;
+                    if (Tcl_GetDoubleFromObj(nullptr, items[i], &v) != TCL_OK)
+                      throw ScriptError("-values holds '" + std::string(Tcl_GetString(items[i])) +
+                                        "', not a number");
+                    series->values.push_back(v);
+                  }
+                Tcl_DecrRefCount(list);
+              }
+            else if (series->kind == Kind::path && option == "-filePath")
+              series->values = read_path_file(w.word("the file"), warnings);
+            else
+              unsupported("timeSeries " + type + " option '" + option + "'");
+          }
+        if (series->kind == Kind::path && !(series->dt > 0))
+          throw ScriptError("a Path series needs -dt > 0 (-time and -fileTime: not supported)");
+        return series;
+      }
+
+      void
+      time_series(Session &s, Words &w)
+      {
+        opensees::Domain &d    = model_domain(s);
+        const std::string type = w.word("the series' type");
+        if (type != "Path" && type != "Linear" && type != "Constant" && type != "Trig")
+          unsupported("timeSeries " + type);
+        const int tag = w.integer("the series' tag");
+        if (!d.series.emplace(tag, series_options(type, w, s.warnings)).second)
+          throw ScriptError("timeSeries " + text_of(tag) + " exists already");
+      }
+
+      /// A pattern's series: a tag, or one given in line ("Linear",
+      /// "Constant", "Series -dt 0.01 -filePath f -factor g").
+      std::shared_ptr<opensees::TimeSeries>
+      pattern_series(Session &s, Tcl_Interp *interp, const std::string &text)
+      {
+        int tag;
+        if (Tcl_GetInt(nullptr, text.c_str(), &tag) == TCL_OK)
+          {
+            const auto it = s.domain.series.find(tag);
+            if (it == s.domain.series.end())
+              throw ScriptError("timeSeries " + text_of(tag) + " does not exist");
+            return it->second;
+          }
+        Tcl_Obj *list = Tcl_NewStringObj(text.c_str(), -1);
+        Tcl_IncrRefCount(list);
+        int       n = 0;
+        Tcl_Obj **items;
+        if (Tcl_ListObjGetElements(interp, list, &n, &items) != TCL_OK || n == 0)
+          {
+            Tcl_DecrRefCount(list);
+            throw ScriptError("'" + text + "' is neither a series' tag nor a series");
+          }
+        Words             inline_words(interp, n, items);
+        const std::string type = inline_words.name;
+        if (type != "Path" && type != "Series" && type != "Linear" && type != "Constant" &&
+            type != "Trig")
+          unsupported("time series '" + type + "'");
+        auto series = series_options(type, inline_words, s.warnings);
+        Tcl_DecrRefCount(list);
+        return series;
+      }
+
+      void
+      uniform_excitation(Session &s, Words &w, opensees::Pattern &p)
+      {
+        const opensees::Domain &d = s.domain;
+        p.uniform_excitation      = true;
+        const int direction       = w.integer("the direction");
+        if (direction < 1 || direction > static_cast<int>(d.ndf))
+          throw ScriptError("direction " + text_of(direction) + " is not one of 1 to ndf");
+        p.direction = direction - 1;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-accel")
+              p.series = pattern_series(s, w.interp, w.word("the acceleration series"));
+            else if (option == "-fact" || option == "-factor")
+              p.factor = w.real("-fact");
+            else
+              unsupported("pattern UniformExcitation option '" + option + "'");
+          }
+        if (!p.series)
+          throw ScriptError("UniformExcitation needs -accel");
+      }
+
+      void
+      pattern(Session &s, Words &w)
+      {
+        opensees::Domain &d    = model_domain(s);
+        const std::string type = w.word("the pattern's type");
+        opensees::Pattern p;
+        p.tag = w.integer("the pattern's tag");
+        if (d.patterns.count(p.tag))
+          throw ScriptError("pattern " + text_of(p.tag) + " exists already");
+        if (type == "UniformExcitation")
+          {
+            uniform_excitation(s, w, p);
+            d.patterns.emplace(p.tag, p);
+            return;
+          }
+        if (type != "Plain")
+          unsupported("pattern " + type);
+        p.series = pattern_series(s, w.interp, w.word("the series"));
+        if (w.peek() == "-fact" || w.peek() == "-factor")
+          {
+            w.word("-fact");
+            p.factor = w.real("-fact");
+          }
+        const std::string body = w.word("the pattern's body");
+        if (!w.done())
+          unsupported("pattern Plain option '" + w.peek() + "'");
+        d.patterns.emplace(p.tag, p);
+        s.current_pattern = p.tag;
+        const int code    = Tcl_Eval(w.interp, body.c_str());
+        s.current_pattern = -1;
+        if (code != TCL_OK)
+          throw ScriptError(std::string(Tcl_GetStringResult(w.interp)));
+      }
+
+      void
+      load(Session &s, Words &w)
+      {
+        opensees::Domain &d = model_domain(s);
+        if (s.current_pattern < 0)
+          throw ScriptError("a load belongs in the body of a Plain pattern");
+        opensees::NodalLoad l;
+        l.node   = d.node(w.integer("the node's tag")).tag;
+        l.values = exactly(w, d.ndf, "a load value");
+        if (!w.done())
+          unsupported("load option '" + w.peek() + "'");
+        d.patterns.at(s.current_pattern).loads.push_back(l);
+      }
+
+      void
+      load_const(Session &s, Words &w)
+      {
+        opensees::Domain &d = model_domain(s);
+        for (auto &[tag, p] : d.patterns)
+          if (!p.constant)
+            {
+              p.constant_factor = p.load_factor(d.time);
+              p.constant        = true;
+            }
+        if (w.peek() == "-time")
+          {
+            w.word("-time");
+            d.time = w.real("the time");
+          }
+        if (!w.done())
+          unsupported("loadConst option '" + w.peek() + "'");
+      }
+
+      void
+      rayleigh(Session &s, Words &w)
+      {
+        opensees::RayleighFactors &r = model_domain(s).rayleigh;
+        r.alpha_m                     = w.real("alphaM");
+        r.beta_k                      = w.real("betaK");
+        r.beta_k_init                 = w.real("betaKinit");
+        r.beta_k_committed            = w.real("betaKcomm");
+        if (!w.done())
+          unsupported("rayleigh with more than 4 values");
+      }
+
+      opensees::NodeRecorderSpec::Response
+      recorder_response(const std::string &word)
+      {
+        using Response = opensees::NodeRecorderSpec::Response;
+        if (word == "disp")
+          return Response::disp;
+        if (word == "vel")
+          return Response::vel;
+        if (word == "accel")
+          return Response::accel;
+        if (word == "reaction")
+          return Response::reaction;
+        unsupported("recorder Node response '" + word + "'");
+      }
+
+      void
+      recorder_option(opensees::Domain &d, Words &w, const std::string &option,
+                      opensees::NodeRecorderSpec &r)
+      {
+        if (option == "-file")
+          r.file = w.word("the file");
+        else if (option == "-time")
+          r.time = true;
+        else if (option == "-precision")
+          r.precision = w.integer("-precision");
+        else if (option == "-closeOnWrite")
+          ; // the file is whole when the script ends either way
+        else if (option == "-node")
+          for (const int tag : w.integers("a node's tag"))
+            r.nodes.push_back(d.node(tag).tag);
+        else if (option == "-nodeRange")
+          {
+            const int first = w.integer("the first node"), last = w.integer("the last node");
+            for (auto it = d.nodes.lower_bound(first); it != d.nodes.end() && it->first <= last;
+                 ++it)
+              r.nodes.push_back(it->first);
+          }
+        else if (option == "-dof")
+          for (const int dof : w.integers("a DOF"))
+            {
+              if (dof < 1 || dof > static_cast<int>(d.ndf))
+                throw ScriptError("DOF " + text_of(dof) + " is not one of 1 to ndf");
+              r.dofs.push_back(dof - 1);
+            }
+        else
+          unsupported("recorder Node option '" + option + "'");
+      }
+
+      void
+      recorder(Session &s, Words &w)
+      {
+        opensees::Domain &d    = model_domain(s);
+        const std::string type = w.word("the recorder's type");
+        if (type != "Node")
+          unsupported("recorder " + type);
+        opensees::NodeRecorderSpec r;
+        bool                       has_response = false;
+        while (!w.done())
+          {
+            const std::string word = w.word("an option");
+            if (word[0] == '-')
+              recorder_option(d, w, word, r);
+            else if (!has_response)
+              {
+                r.response   = recorder_response(word);
+                has_response = true;
+              }
+            else
+              unsupported("recorder Node word '" + word + "' after the response");
+          }
+        if (r.file.empty())
+          unsupported("recorder Node without -file");
+        if (!has_response || r.nodes.empty() || r.dofs.empty())
+          throw ScriptError("recorder Node needs nodes, -dof and a response");
+        s.recorders.push_back(std::make_unique<opensees::NodeRecorder>(r));
+      }
+    } // namespace
+
+    void
+    define_model_commands(Tcl_Interp *interp, Session &session)
+    {
+      define(interp, session, "wipe", [](Session &s, Words &w) {
+        if (!w.done())
+          unsupported("wipe option '" + w.peek() + "'");
+        wipe(s);
+      });
+      define(interp, session, "model", model);
+      define(interp, session, "node", node);
+      define(interp, session, "fix", fix);
+      define(interp, session, "mass", mass);
+      define(interp, session, "equalDOF", equal_dof);
+      define(interp, session, "geomTransf", geom_transf);
+      define(interp, session, "element", element);
+      define(interp, session, "uniaxialMaterial", uniaxial_material);
+      define(interp, session, "timeSeries", time_series);
+      define(interp, session, "pattern", pattern);
+      define(interp, session, "load", load);
+      define(interp, session, "loadConst", load_const);
+      define(interp, session, "setTime", [](Session &s, Words &w) {
+        model_domain(s).time = w.real("the time");
+      });
+      define(interp, session, "rayleigh", rayleigh);
+      define(interp, session, "recorder", recorder);
+      define(interp, session, "record", [](Session &s, Words &) { s.record(); });
+    }
+  } // namespace opensees_tcl
+} // namespace poundfe

@@ -1,0 +1,397 @@
+// OpenSees's static and transient analyses of a script's domain
+// (opensees_analysis.h gives the equations). Sources: OpenSees 3.8,
+// SRC/analysis/integrator/Newmark.cpp (newStep: U kept, U' = (1 - gamma/beta)
+// U'_n + dt (1 - gamma/(2 beta)) U''_n, U'' = -U'_n/(beta dt) + (1 - 1/(2
+// beta)) U''_n; update: U += dU, U' += c2 dU, U'' += c3 dU), LoadControl.cpp
+// (lambda += dlambda scaled by the iterations of the last step, clamped),
+// algorithm/equiSolnAlgo/NewtonRaphson.cpp, ModifiedNewton.cpp, Linear.cpp,
+// convergenceTest/CTest*.cpp, DirectIntegrationAnalysis.cpp and
+// StaticAnalysis.cpp (a failed step: the domain reverted, analyze < 0).
+#include <poundfe/assembly/linear_solver.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/opensees/opensees_analysis.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace poundfe
+{
+  namespace opensees
+  {
+    Analysis::Analysis(Domain &domain, AnalysisOptions options)
+      : domain(domain)
+      , opts(std::move(options))
+    {}
+
+    Analysis::~Analysis() = default;
+
+    void
+    Analysis::configure(const AnalysisOptions &options)
+    {
+      if (options.d_lambda != opts.d_lambda)
+        lambda_step = 0; // a new LoadControl integrator
+      opts = options;
+    }
+
+    void
+    Analysis::number()
+    {
+      std::map<std::pair<int, unsigned int>, std::pair<int, unsigned int>> retained_by;
+      for (const EqualDof &e : domain.equal_dofs)
+        for (const unsigned int k : e.dofs)
+          retained_by[{e.constrained, k}] = {e.retained, k};
+      n_equations = 0;
+      for (auto &[tag, node] : domain.nodes)
+        {
+          node.equation.assign(node.fixed.size(), -1);
+          for (unsigned int k = 0; k < node.fixed.size(); ++k)
+            if (!node.fixed[k] && retained_by.count({tag, k}) == 0)
+              node.equation[k] = n_equations++;
+        }
+      // a constrained DOF takes its retained DOF's equation (chains followed)
+      for (const auto &[dof, retained] : retained_by)
+        {
+          auto r = retained;
+          for (unsigned int hops = 0; retained_by.count(r) && hops < retained_by.size(); ++hops)
+            r = retained_by.at(r);
+          domain.node(dof.first).equation[dof.second] = domain.node(r.first).equation[r.second];
+        }
+      mass_of_equation.setZero(n_equations);
+      for (const auto &[tag, node] : domain.nodes)
+        for (unsigned int k = 0; k < node.fixed.size(); ++k)
+          if (node.equation[k] >= 0)
+            mass_of_equation[node.equation[k]] += node.mass[k] + node.element_mass[k];
+      for (auto &[tag, element] : domain.elements)
+        {
+          element->equations.clear();
+          for (const int n : element->node_tags)
+            for (const int eq : domain.node(n).equation)
+              element->equations.push_back(eq);
+        }
+      domain.changed = false;
+      numbered       = true;
+      analysed       = false;
+    }
+
+    void
+    Analysis::gather()
+    {
+      U.setZero(n_equations);
+      V.setZero(n_equations);
+      A.setZero(n_equations);
+      for (const auto &[tag, node] : domain.nodes)
+        for (unsigned int k = 0; k < node.equation.size(); ++k)
+          if (node.equation[k] >= 0)
+            {
+              U[node.equation[k]] = node.disp[k];
+              V[node.equation[k]] = node.vel[k];
+              A[node.equation[k]] = node.accel[k];
+            }
+      trial_time = domain.time;
+    }
+
+    void
+    Analysis::scatter()
+    {
+      for (auto &[tag, node] : domain.nodes)
+        for (unsigned int k = 0; k < node.equation.size(); ++k)
+          {
+            const int eq  = node.equation[k];
+            node.disp[k]  = eq < 0 ? 0.0 : U[eq];
+            node.vel[k]   = eq < 0 ? 0.0 : V[eq];
+            node.accel[k] = eq < 0 ? 0.0 : A[eq];
+          }
+    }
+
+    namespace
+    {
+      /// The element's local values of a vector by equation (0 where fixed).
+      Vector
+      element_values(const Element &element, const Vector &x)
+      {
+        Vector local(element.equations.size());
+        for (unsigned int i = 0; i < local.size(); ++i)
+          local[i] = element.equations[i] < 0 ? 0.0 : x[element.equations[i]];
+        return local;
+      }
+
+      /// The element's damping matrix C_e (see opensees_analysis.h).
+      Matrix
+      element_damping(const Element &element, const RayleighFactors &r)
+      {
+        if (!element.rayleigh_damped())
+          return element.material_damping();
+        Matrix c = Matrix::Zero(element.n_dofs(), element.n_dofs());
+        if (r.beta_k != 0)
+          c += r.beta_k * element.tangent();
+        if (r.beta_k_init != 0)
+          c += r.beta_k_init * element.initial_tangent();
+        if (r.beta_k_committed != 0)
+          c += r.beta_k_committed * element.committed_tangent;
+        return c;
+      }
+    } // namespace
+
+    bool
+    Analysis::set_trial(std::string &why)
+    {
+      for (auto &[tag, element] : domain.elements)
+        if (!element->set_trial(element_values(*element, U), element_values(*element, V)))
+          {
+            why = "element " + std::to_string(tag) + ": " + element->failure();
+            return false;
+          }
+      return true;
+    }
+
+    Vector
+    Analysis::residual() const
+    {
+      Vector r = Vector::Zero(n_equations);
+      for (const auto &[tag, load] : domain.nodal_loads(trial_time))
+        {
+          const Node &node = domain.node(tag);
+          for (unsigned int k = 0; k < load.size(); ++k)
+            if (node.equation[k] >= 0)
+              r[node.equation[k]] += load[k];
+        }
+      for (const auto &[tag, element] : domain.elements)
+        {
+          Vector f = element->force();
+          if (opts.transient && element->rayleigh_damped()) // materials' own damping is in f
+            f += element_damping(*element, domain.rayleigh) * element_values(*element, V);
+          for (unsigned int i = 0; i < f.size(); ++i)
+            if (element->equations[i] >= 0)
+              r[element->equations[i]] -= f[i];
+        }
+      if (!opts.transient)
+        return r;
+      const std::vector<double> ag = domain.ground_acceleration(trial_time);
+      for (const auto &[tag, node] : domain.nodes)
+        for (unsigned int k = 0; k < node.equation.size(); ++k)
+          if (node.equation[k] >= 0)
+            {
+              const int    eq = node.equation[k];
+              const double m  = node.mass[k] + node.element_mass[k];
+              r[eq] -= m * (A[eq] + ag[k] + domain.rayleigh.alpha_m * V[eq]);
+            }
+      return r;
+    }
+
+    void
+    Analysis::assemble_tangent(const double c_k, const double c_c, const double c_m)
+    {
+      std::vector<Eigen::Triplet<double>> entries;
+      for (const auto &[tag, element] : domain.elements)
+        {
+          Matrix k = c_k * element->tangent();
+          if (c_c != 0)
+            k += c_c * element_damping(*element, domain.rayleigh);
+          const auto &eq = element->equations;
+          for (unsigned int i = 0; i < eq.size(); ++i)
+            for (unsigned int j = 0; j < eq.size(); ++j)
+              if (eq[i] >= 0 && eq[j] >= 0)
+                entries.emplace_back(eq[i], eq[j], k(i, j));
+        }
+      const double diagonal = c_m + c_c * domain.rayleigh.alpha_m;
+      for (unsigned int i = 0; i < n_equations; ++i) // the diagonal always in the pattern
+        entries.emplace_back(i, i, diagonal * mass_of_equation[i]);
+      tangent_matrix.resize(n_equations, n_equations);
+      tangent_matrix.setFromTriplets(entries.begin(), entries.end());
+      if (!solver)
+        solver = create_linear_solver(opts.linear_solver);
+      if (!analysed)
+        solver->analyze(tangent_matrix);
+      analysed = true;
+      solver->factorize(tangent_matrix);
+      ++counts.factorizations;
+    }
+
+    double
+    Analysis::test_norm(const Vector &dx, const Vector &r) const
+    {
+      switch (opts.test.kind)
+        {
+          case ConvergenceTest::Kind::norm_disp_incr:
+            return dx.norm();
+          case ConvergenceTest::Kind::norm_unbalance:
+            return r.norm();
+          case ConvergenceTest::Kind::energy_incr:
+            return 0.5 * std::abs(dx.dot(r));
+        }
+      return 0;
+    }
+    void
+    Analysis::print_iteration(const unsigned int iteration, const double norm) const
+    {
+      using Kind = ConvergenceTest::Kind;
+      const Kind         kind = opts.test.kind;
+      std::ostringstream text;
+      text << "CTest"
+           << (kind == Kind::norm_disp_incr ? "NormDispIncr" :
+               kind == Kind::norm_unbalance ? "NormUnbalance" :
+                                              "EnergyIncr")
+           << "::test() - iteration: " << iteration << " current "
+           << (kind == Kind::energy_incr ? "EnergyIncr" : "Norm") << ": " << norm
+           << " (max: " << opts.test.tolerance << ")";
+      if (print)
+        print(text.str());
+    }
+
+    int
+    Analysis::iterate(std::string &why)
+    {
+      using Algorithm = AnalysisOptions::Algorithm;
+      Vector r = residual();
+      if (opts.algorithm != Algorithm::newton) // Linear, ModifiedNewton: one tangent per step
+        assemble_tangent(1, c_c, c_m);
+      Vector dx(n_equations);
+      for (unsigned int iteration = 1;; ++iteration)
+        {
+          if (opts.algorithm == Algorithm::newton)
+            assemble_tangent(1, c_c, c_m);
+          solver->solve(r, dx);
+          U += dx;
+          V += c_c * dx;
+          A += c_m * dx;
+          ++last_iterations;
+          ++counts.iterations;
+          if (!set_trial(why))
+            return -1;
+          if (opts.algorithm == Algorithm::linear)
+            return 1;
+          r                 = residual();
+          const double norm = test_norm(dx, r);
+          const int    flag = opts.test.print_flag;
+          if (flag == 1 || (flag == 2 && norm <= opts.test.tolerance))
+            print_iteration(iteration, norm);
+          if (norm <= opts.test.tolerance)
+            return iteration;
+          if ((flag == 5 || flag == 6) && iteration >= opts.test.max_iterations)
+            return iteration; // OpenSees: "failed to converge but going on"
+          if (iteration >= opts.test.max_iterations)
+            {
+              std::ostringstream text;
+              text << "failed to converge after " << iteration << " iterations, current norm "
+                   << norm << " (max: " << opts.test.tolerance << ")";
+              why = text.str();
+              return -1;
+            }
+        }
+    }
+
+    bool
+    Analysis::step(const double dt, std::string &why)
+    {
+      if (opts.transient)
+        {
+          const double g = opts.gamma, b = opts.beta;
+          c_c            = g / (b * dt);
+          c_m            = 1 / (b * dt * dt);
+          const Vector v = V;
+          V              = (1 - g / b) * v + dt * (1 - 0.5 * g / b) * A;
+          A              = (1 - 0.5 / b) * A - 1 / (b * dt) * v;
+          trial_time     = domain.time + dt;
+        }
+      else
+        {
+          lambda_step *= opts.lambda_iterations / last_iterations;
+          lambda_step = std::min(std::max(lambda_step, opts.lambda_min), opts.lambda_max);
+          trial_time  = domain.time + lambda_step;
+          c_c = c_m = 0;
+        }
+      last_iterations = 0;
+      if (!set_trial(why))
+        return false;
+      return iterate(why) >= 0;
+    }
+
+    void
+    Analysis::commit()
+    {
+      for (auto &[tag, element] : domain.elements)
+        {
+          element->commit();
+          if (domain.rayleigh.beta_k_committed != 0)
+            element->committed_tangent = element->tangent();
+        }
+      domain.time = trial_time;
+      scatter();
+      ++counts.steps;
+    }
+
+    int
+    Analysis::analyze(const unsigned int n_steps, const double dt,
+                      const std::function<void()>                     &after_step,
+                      const std::function<void(const std::string &)> &warn)
+    {
+      if (domain.changed || !numbered)
+        number();
+      print = warn;
+      if (lambda_step == 0)
+        {
+          lambda_step     = opts.d_lambda;
+          last_iterations = opts.lambda_iterations;
+        }
+      for (unsigned int i = 0; i < n_steps; ++i)
+        {
+          gather();
+          std::string why;
+          bool        converged = false;
+          try
+            {
+              converged = step(dt, why);
+            }
+          catch (const NumericalError &e)
+            {
+              why = e.what();
+            }
+          if (!converged)
+            {
+              for (auto &[tag, element] : domain.elements)
+                element->revert();
+              ++counts.failed_steps;
+              std::ostringstream text;
+              text << "analyze: the step to time " << trial_time << " failed (" << why
+                   << "); the domain is back at time " << domain.time;
+              warn(text.str());
+              return -3;
+            }
+          commit();
+          after_step();
+        }
+      return 0;
+    }
+
+    std::vector<double>
+    Analysis::eigenvalues(const unsigned int n)
+    {
+      if (domain.changed || !numbered)
+        number();
+      gather();
+      std::string why;
+      if (!set_trial(why))
+        throw ScriptError("eigen: " + why);
+      assemble_tangent(1, 0, 0);
+      const Matrix K = Matrix(tangent_matrix);
+      const Matrix M = mass_of_equation.asDiagonal();
+      // K phi = lambda M phi as M phi = (1/lambda) K phi: M may be singular
+      // (massless rotations), K is positive definite for a stable structure
+      Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solution(M, K);
+      if (solution.info() != Eigen::Success)
+        throw ScriptError("eigen: the stiffness matrix is not positive definite");
+      std::vector<double> lambda;
+      for (int i = solution.eigenvalues().size() - 1; i >= 0 && lambda.size() < n; --i)
+        if (solution.eigenvalues()[i] > 0)
+          lambda.push_back(1 / solution.eigenvalues()[i]);
+      if (lambda.size() < n)
+        throw ScriptError("eigen: " + std::to_string(n) + " modes asked for, the model has " +
+                          std::to_string(lambda.size()) + " with mass");
+      return lambda;
+    }
+  } // namespace opensees
+} // namespace poundfe

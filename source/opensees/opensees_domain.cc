@@ -1,0 +1,140 @@
+// The domain of an OpenSees script: its time series and load patterns as
+// OpenSees 3.8 evaluates them (PathSeries::getFactor: linear interpolation
+// of values spaced dt from time 0, zero before 0 and after the last value;
+// LinearSeries: factor t; ConstantSeries: factor; TrigSeries: factor
+// sin(2 pi (t - t_start)/T + phi) + zeroShift on [t_start, t_end]; LoadPattern::applyLoad:
+// the series' factor times the pattern's -fact, frozen by loadConst), its
+// nodal loads and ground accelerations, and OpenSees's nodal reactions.
+#include <poundfe/opensees/opensees_domain.h>
+
+#include <cmath>
+
+namespace poundfe
+{
+  namespace opensees
+  {
+    double
+    TimeSeries::at(const double time) const
+    {
+      switch (kind)
+        {
+          case Kind::constant:
+            return factor;
+          case Kind::linear:
+            return factor * time;
+          case Kind::path:
+            {
+              if (time < 0 || values.empty())
+                return 0;
+              const double    position = time / dt;
+              const long long i        = static_cast<long long>(std::floor(position));
+              if (i + 1 >= static_cast<long long>(values.size()))
+                return 0;
+              return factor * (values[i] + (values[i + 1] - values[i]) * (position - i));
+            }
+          case Kind::trig:
+            {
+              if (time < start || time > finish)
+                return 0;
+              const double two_pi = 4 * std::asin(1.0);
+              const double phi    = shift - period / two_pi * std::asin(zero_shift / factor);
+              return factor * std::sin(two_pi * (time - start) / period + phi) + zero_shift;
+            }
+        }
+      return 0;
+    }
+
+    double
+    Pattern::load_factor(const double time) const
+    {
+      if (constant)
+        return constant_factor;
+      return series->at(time) * factor;
+    }
+
+    const Node &
+    Domain::node(const int tag) const
+    {
+      const auto it = nodes.find(tag);
+      if (it == nodes.end())
+        throw ScriptError("node " + std::to_string(tag) + " does not exist");
+      return it->second;
+    }
+
+    Node &
+    Domain::node(const int tag)
+    {
+      return const_cast<Node &>(static_cast<const Domain &>(*this).node(tag));
+    }
+
+    std::map<int, std::vector<double>>
+    Domain::nodal_loads(const double at_time) const
+    {
+      std::map<int, std::vector<double>> loads;
+      for (const auto &[tag, pattern] : patterns)
+        {
+          if (pattern.uniform_excitation || pattern.loads.empty())
+            continue;
+          const double lambda = pattern.load_factor(at_time);
+          for (const NodalLoad &load : pattern.loads)
+            {
+              auto &p = loads[load.node];
+              p.resize(ndf, 0.0);
+              for (unsigned int k = 0; k < load.values.size(); ++k)
+                p[k] += lambda * load.values[k];
+            }
+        }
+      return loads;
+    }
+
+    std::vector<double>
+    Domain::ground_acceleration(const double at_time) const
+    {
+      std::vector<double> a(ndf, 0.0);
+      for (const auto &[tag, pattern] : patterns)
+        if (pattern.uniform_excitation)
+          a[pattern.direction] += pattern.load_factor(at_time);
+      return a;
+    }
+
+    std::map<int, std::vector<double>>
+    Domain::reactions() const
+    {
+      std::map<int, std::vector<double>> r;
+      const auto loads = nodal_loads(time);
+      for (const auto &[tag, n] : nodes)
+        {
+          std::vector<double> &v = r[tag];
+          v.assign(n.disp.size(), 0.0);
+          const auto p = loads.find(tag);
+          for (unsigned int k = 0; k < v.size(); ++k)
+            v[k] = (p == loads.end() ? 0.0 : -p->second[k]) +
+                   rayleigh.alpha_m * n.mass[k] * n.vel[k];
+        }
+      for (const auto &[tag, element] : elements)
+        {
+          const Vector f = element->force();
+          unsigned int i = 0;
+          for (const int node_tag : element->node_tags)
+            for (double &value : r[node_tag])
+              value += f[i++];
+        }
+      return r;
+    }
+
+    void
+    Domain::clear()
+    {
+      *this = Domain();
+    }
+
+    std::unique_ptr<UniaxialLaw>
+    make_domain_material(const Domain &domain, const int tag)
+    {
+      const auto it = domain.materials.find(tag);
+      if (it == domain.materials.end())
+        throw ScriptError("uniaxialMaterial " + std::to_string(tag) + " does not exist");
+      return make_material(it->second);
+    }
+  } // namespace opensees
+} // namespace poundfe

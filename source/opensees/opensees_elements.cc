@@ -1,0 +1,256 @@
+// The elements of an OpenSees script, as OpenSees 3.8 defines them.
+//
+// elasticBeamColumn 2D (ElasticBeam2d with LinearCrdTransf2d or
+//   PDeltaCrdTransf2d): local displacements u_l = R u_g (R: the rotation by
+//   the chord's angle at each node), basic deformations u_b = A u_l,
+//     A = [[-1, 0, 0, 1, 0, 0], [0, 1/L, 1, 0, -1/L, 0], [0, 1/L, 0, 0, -1/L, 1]],
+//   basic forces q = k_b u_b, k_b = [[EA/L, 0, 0], [0, 4EI/L, 2EI/L], [0, 2EI/L, 4EI/L]],
+//   resisting force R^T A^T q and stiffness R^T A^T k_b A R. P-Delta adds
+//   q_0 (u_l1 - u_l4)/L to the local transverse forces (+ at i, - at j) and
+//   the geometric stiffness q_0/L [[1, -1], [-1, 1]] on those two DOFs
+//   (PDeltaCrdTransf2d::getGlobalResistingForce, getGlobalStiffMatrix).
+//
+// zeroLength (ZeroLength): the local axes x, y (-orient), z = x × y,
+//   y = z × x; material m along direction d (1-3: translation along axis
+//   d, 4-6: rotation about axis d - 3) has the row t_m of the local
+//   deformation over the global DOFs (the axis' components at node j, their
+//   negatives at node i, within the DOFs the model's ndm/ndf give; a
+//   direction the node has no DOF for contributes nothing, as in
+//   ZeroLength::setTran1d); strain t_m u, rate t_m v; force sum t_m^T
+//   sigma_m, tangent sum t_m^T E_m t_m, damping sum t_m^T eta_m t_m.
+#include <poundfe/opensees/opensees_domain.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace poundfe
+{
+  namespace opensees
+  {
+    namespace
+    {
+      class ElasticBeam2d : public Element
+      {
+      public:
+        ElasticBeam2d(const Domain &domain, const int tag, const std::array<int, 2> nodes,
+                      const double A, const double E, const double I, const bool p_delta)
+          : Element(tag, {nodes[0], nodes[1]})
+          , p_delta(p_delta)
+        {
+          const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
+          const double dx = b[0] - a[0], dy = b[1] - a[1];
+          L               = std::hypot(dx, dy);
+          if (!(L > 0))
+            throw ScriptError("element " + std::to_string(tag) + " has zero length");
+          const double c = dx / L, s = dy / L;
+          R.setZero(6, 6);
+          for (unsigned int n = 0; n < 2; ++n)
+            {
+              R.block<3, 3>(3 * n, 3 * n) << c, s, 0, -s, c, 0, 0, 0, 1;
+            }
+          B.setZero(3, 6);
+          B << -1, 0, 0, 1, 0, 0, 0, 1 / L, 1, 0, -1 / L, 0, 0, 1 / L, 0, 0, -1 / L, 1;
+          kb << E * A / L, 0, 0, 0, 4 * E * I / L, 2 * E * I / L, 0, 2 * E * I / L, 4 * E * I / L;
+          ul.setZero(6);
+          q.setZero();
+          committed_tangent = tangent();
+        }
+
+        unsigned int n_dofs() const override { return 6; }
+        bool         rayleigh_damped() const override { return true; }
+
+        bool
+        set_trial(const Vector &u, const Vector &) override
+        {
+          ul = R * u;
+          q  = kb * (B * ul);
+          return q.allFinite();
+        }
+
+        Vector
+        force() const override
+        {
+          Vector pl = B.transpose() * q;
+          if (p_delta)
+            {
+              const double n_over_l = (ul[1] - ul[4]) * q[0] / L;
+              pl[1] += n_over_l;
+              pl[4] -= n_over_l;
+            }
+          return R.transpose() * pl;
+        }
+
+        Matrix
+        tangent() const override
+        {
+          Matrix kl = B.transpose() * kb * B;
+          if (p_delta)
+            {
+              const double n_over_l = q[0] / L;
+              kl(1, 1) += n_over_l;
+              kl(4, 4) += n_over_l;
+              kl(1, 4) -= n_over_l;
+              kl(4, 1) -= n_over_l;
+            }
+          return R.transpose() * kl * R;
+        }
+
+        Matrix
+        initial_tangent() const override
+        {
+          return R.transpose() * (B.transpose() * kb * B) * R;
+        }
+
+      private:
+        bool                   p_delta;
+        double                 L = 0;
+        Matrix                 R, B;
+        Eigen::Matrix3d        kb;
+        Vector                 ul;
+        Eigen::Vector3d        q;
+      };
+
+      class ZeroLength : public Element
+      {
+      public:
+        ZeroLength(const Domain &domain, const int tag, const ZeroLengthData &data);
+
+        unsigned int n_dofs() const override { return t.cols(); }
+        bool         rayleigh_damped() const override { return rayleigh; }
+
+        bool
+        set_trial(const Vector &u, const Vector &v) override
+        {
+          const Vector strain = t * u, rate = t * v;
+          for (unsigned int m = 0; m < laws.size(); ++m)
+            if (!laws[m]->set_trial(strain[m], rate[m]))
+              {
+                why = laws[m]->failure();
+                return false;
+              }
+          return true;
+        }
+
+        Vector
+        force() const override
+        {
+          Vector stress(laws.size());
+          for (unsigned int m = 0; m < laws.size(); ++m)
+            stress[m] = laws[m]->force();
+          return t.transpose() * stress;
+        }
+
+        Matrix tangent() const override { return weighted([](auto &l) { return l.tangent(); }); }
+        Matrix
+        initial_tangent() const override
+        {
+          return weighted([](auto &l) { return l.initial_stiffness(); });
+        }
+        Matrix
+        material_damping() const override
+        {
+          return weighted([](auto &l) { return l.damping_tangent(); });
+        }
+        void
+        commit() override
+        {
+          for (auto &law : laws)
+            law->commit();
+        }
+        void
+        revert() override
+        {
+          for (auto &law : laws)
+            law->revert();
+        }
+        void
+        reset() override
+        {
+          for (auto &law : laws)
+            law->reset();
+        }
+        std::string failure() const override { return why; }
+
+      private:
+        template <typename Value>
+        Matrix
+        weighted(const Value &value) const
+        {
+          Vector d(laws.size());
+          for (unsigned int m = 0; m < laws.size(); ++m)
+            d[m] = value(*laws[m]);
+          return t.transpose() * d.asDiagonal() * t;
+        }
+
+        Matrix                                    t; // materials x DOFs
+        std::vector<std::unique_ptr<UniaxialLaw>> laws;
+        bool                                      rayleigh = false;
+        std::string                               why;
+      };
+
+      /// The unit local axes x, y, z of a zeroLength from its -orient vectors.
+      Eigen::Matrix3d
+      zero_length_axes(const ZeroLengthData &data, const int tag)
+      {
+        const Eigen::Vector3d x(data.x[0], data.x[1], data.x[2]);
+        const Eigen::Vector3d yp(data.y[0], data.y[1], data.y[2]);
+        const Eigen::Vector3d z = x.cross(yp);
+        if (!(x.norm() > 0) || !(z.norm() > 0))
+          throw ScriptError("zeroLength " + std::to_string(tag) +
+                            ": -orient vectors are zero or parallel");
+        Eigen::Matrix3d axes;
+        axes.row(0) = x.normalized();
+        axes.row(2) = z.normalized();
+        axes.row(1) = axes.row(2).cross(axes.row(0));
+        return axes;
+      }
+
+      ZeroLength::ZeroLength(const Domain &domain, const int tag, const ZeroLengthData &data)
+        : Element(tag, {data.nodes[0], data.nodes[1]})
+        , rayleigh(data.rayleigh)
+      {
+        domain.node(data.nodes[0]);
+        domain.node(data.nodes[1]);
+        const Eigen::Matrix3d axes = zero_length_axes(data, tag);
+        const unsigned int    ndf = domain.ndf, ndm = domain.ndm;
+        // the node's DOFs of translations and of rotations, in order
+        const unsigned int n_translations = std::min(ndm, ndf);
+        const unsigned int n_rotations    = ndf > ndm ? ndf - ndm : 0;
+        t.setZero(data.materials.size(), 2 * ndf);
+        for (unsigned int m = 0; m < data.materials.size(); ++m)
+          {
+            const int direction = data.directions[m] - 1;
+            if (direction < 0 || direction > 5)
+              throw ScriptError("zeroLength " + std::to_string(tag) + ": -dir " +
+                                std::to_string(direction + 1) + " is not one of 1 to 6");
+            const unsigned int axis = direction % 3;
+            if (direction < 3)
+              for (unsigned int k = 0; k < n_translations; ++k)
+                t(m, ndf + k) = axes(axis, k);
+            else if (n_rotations == 1) // planar: the rotation about z
+              t(m, ndf + ndm) = axes(axis, 2);
+            else if (n_rotations == 3)
+              for (unsigned int k = 0; k < 3; ++k)
+                t(m, ndf + ndm + k) = axes(axis, k);
+            t.block(m, 0, 1, ndf) = -t.block(m, ndf, 1, ndf);
+            laws.push_back(make_domain_material(domain, data.materials[m]));
+          }
+        committed_tangent = tangent();
+      }
+    } // namespace
+
+    std::unique_ptr<Element>
+    make_elastic_beam_2d(const Domain &domain, const int tag, const std::array<int, 2> nodes,
+                         const double A, const double E, const double I, const bool p_delta)
+    {
+      return std::make_unique<ElasticBeam2d>(domain, tag, nodes, A, E, I, p_delta);
+    }
+
+    std::unique_ptr<Element>
+    make_zero_length(const Domain &domain, const int tag, const ZeroLengthData &data)
+    {
+      return std::make_unique<ZeroLength>(domain, tag, data);
+    }
+  } // namespace opensees
+} // namespace poundfe

@@ -1,0 +1,172 @@
+#!/usr/bin/env bash
+# `poundfe opensees` (Running OpenSees scripts in doc/user-guide.md):
+#  1. the corpus of tests/opensees/ against its independent references
+#     (tests/opensees/reference.py: linear models to 1e-10 of the peak,
+#     nonlinear ones to 1e-6);
+#  2. Tcl's own semantics: procs, loops, `source` of a second file, `catch`
+#     of an unsupported command's error, argv with words that look like
+#     options, `exit` with the recorders' files in place;
+#  3. bad input: an unknown command, an unsupported option, a node that does
+#     not exist, a script error: one line naming the file and line, exit 1,
+#     no recorder file left.
+#   opensees.sh POUNDFE CORPUS_DIR PYTHON3
+set -u
+poundfe=$1 corpus=$2 python=$3
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+. "$here/helpers.sh"
+# the references need numpy: Debian's python3 has it when the first one found lacks it
+"$python" -c "import numpy" 2> /dev/null || python=/usr/bin/python3
+
+# 1. the corpus
+run_corpus() { # NAME SCRIPT [ARGS...]
+  local name=$1 script=$2
+  shift 2
+  mkdir -p "$work/$name"
+  "$poundfe" opensees "$corpus/$script" "$work/$name" "$@" > "$work/$name/log" 2>&1 \
+    || { cat "$work/$name/log"; fail "$name: poundfe opensees exited $?"; }
+  "$python" "$corpus/reference.py" "$work/$name" "$name" || fail "$name: differs from its reference"
+}
+run_corpus sdof_linear sdof_linear.tcl
+run_corpus stick3_linear stick3_linear.tcl
+run_corpus portal_frame portal_frame.tcl
+run_corpus pounding_ElasticPPGap pounding_sticks.tcl ElasticPPGap
+run_corpus pounding_ImpactMaterial pounding_sticks.tcl ImpactMaterial
+run_corpus steel01_cyclic steel01_cyclic.tcl
+run_corpus pounding_ImpactMaterial_ModifiedNewton_EnergyIncr pounding_sticks.tcl ImpactMaterial \
+  ModifiedNewton EnergyIncr
+run_corpus portal_pdelta portal_pdelta.tcl
+run_corpus cantilever_trig cantilever_trig.tcl
+# nodeDisp NODE 0: the whole node, as OpenSees
+grep -qE '^cantilever: tip \S+ \S+ \S+$' "$work/cantilever_trig/log" \
+  || { cat "$work/cantilever_trig/log"; fail "nodeDisp 3 0 is not the node's three values"; }
+
+# 2. Tcl's semantics
+mkdir -p "$work/tcl"
+cat > "$work/tcl/helper.tcl" <<'TCL'
+proc storey {i k} {
+    uniaxialMaterial Elastic $i $k
+    element zeroLength $i [expr {$i - 1}] $i -mat $i -dir 1
+}
+TCL
+cat > "$work/tcl/main.tcl" <<'TCL'
+source [file join [file dirname [info script]] helper.tcl]
+puts "argc $argc argv $argv"
+model basic -ndm 1 -ndf 1
+node 0 0.0
+fix 0 1
+for {set i 1} {$i <= 3} {incr i} {
+    node $i 0.0 -mass 1.0
+    storey $i 100.0
+}
+set n 0
+foreach tag [getNodeTags] { incr n }
+while {$n > 3} { incr n -1 }
+puts "nodes $n elements [getEleTags]"
+if {[catch {rigidDiaphragm 3 1 2} message]} { puts "caught: $message" }
+if {[catch {element zeroLength 9 0 1 -mat 1 -dir 1 -orient 1 0 0 0 1 0 -dampMats 1} message]} {
+    puts "caught: $message"
+}
+recorder Node -file [lindex $argv 0]/exit.out -node 3 -dof 1 disp
+timeSeries Linear 1
+pattern Plain 1 1 { load 3 1.0 }
+integrator LoadControl 1.0
+analysis Static
+puts "analyze [analyze 2] disp [nodeDisp 3 1]"
+exit 3
+puts "not reached"
+TCL
+"$poundfe" opensees "$work/tcl/main.tcl" "$work/tcl" -x --output y > "$work/tcl/log" 2> "$work/tcl/err"
+status=$?
+[ "$status" = 3 ] || { cat "$work/tcl/log" "$work/tcl/err"; fail "exit 3 gave status $status"; }
+expect_line() { grep -qxF -- "$1" "$work/tcl/log" || { cat "$work/tcl/log"; fail "no line '$1'"; }; }
+expect_line "argc 4 argv $work/tcl -x --output y"
+expect_line "nodes 3 elements 1 2 3"
+expect_line "caught: rigidDiaphragm: poundfe does not support it"
+expect_line "caught: element zeroLength option '-dampMats': poundfe does not support it"
+expect_line "analyze 0 disp 0.06"
+grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
+[ "$(cat "$work/tcl/exit.out")" = "$(printf '0.03\n0.06')" ] \
+  || fail "exit.out after exit: $(cat "$work/tcl/exit.out")"
+
+# every material's OpenSees argument order, by its initial stiffness: a
+# spring of it in parallel with an elastic one (k = 1000) under a load in its
+# elastic range moves F / (E0 + k); and a 3D zeroLength with rotated axes
+mkdir -p "$work/materials"
+cat > "$work/materials/m.tcl" <<'TCL'
+proc check {what got expected {tolerance 1e-12}} {
+    if {abs($got - $expected) > $tolerance * abs($expected)} {
+        error "$what: $got, expected $expected"
+    }
+    puts "ok $what"
+}
+proc probe {name arguments E0 F {tolerance 1e-12}} {
+    wipe
+    model basic -ndm 1 -ndf 1
+    node 1 0.0
+    node 2 0.0
+    fix 1 1
+    eval uniaxialMaterial $name 1 $arguments
+    uniaxialMaterial Elastic 2 1000.0
+    element zeroLength 1 1 2 -mat 1 2 -dir 1 1
+    pattern Plain 1 Constant { load 2 $F }
+    analysis Static
+    analyze 1
+    check $name [nodeDisp 2 1] [expr {$F / ($E0 + 1000.0)}] $tolerance
+}
+probe Elastic {3000.0} 3000.0 10.0
+probe ElasticPP {3000.0 0.01} 3000.0 10.0
+probe Steel01 {100.0 3000.0 0.02} 3000.0 10.0
+probe Steel02 {100.0 3000.0 0.02 18.0 0.925 0.15} 3000.0 10.0
+# concrete: the parabola's initial slope 2 fpc / epsc0, at a strain of 3e-7
+probe Concrete01 {-30.0 -0.002 -6.0 -0.006} 30000.0 -0.01 1e-3
+probe Concrete02 {-30.0 -0.002 -6.0 -0.006 0.1 3.0 1500.0} 30000.0 -0.01 1e-3
+probe Hysteretic {60.0 0.02 70.0 0.05 -60.0 -0.02 -70.0 -0.05 1.0 1.0 0.0 0.0} 3000.0 10.0
+wipe
+model basic -ndm 3 -ndf 6
+node 1 0.0 0.0 0.0
+node 2 0.0 0.0 0.0
+fix 1 1 1 1 1 1 1
+fix 2 1 0 1 1 1 0
+uniaxialMaterial Elastic 1 500.0
+uniaxialMaterial Elastic 2 40.0
+# local x along global Y, local z along global Z: dir 1 acts on Y, dir 6 about Z
+element zeroLength 1 1 2 -mat 1 2 -dir 1 6 -orient 0 1 0 -1 0 0
+pattern Plain 1 Linear { load 2 0 10.0 0 0 0 4.0 }
+analysis Static
+analyze 1
+check "3D translation" [nodeDisp 2 2] 0.02
+check "3D rotation" [nodeDisp 2 6] 0.1
+TCL
+"$poundfe" opensees "$work/materials/m.tcl" > "$work/materials/log" 2>&1 \
+  || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
+[ "$(grep -c '^ok ' "$work/materials/log")" = 9 ] || { cat "$work/materials/log"; fail "materials"; }
+
+# 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
+bad() { # NAME EXPECTED (the script on standard input)
+  local dir="$work/bad-$1"
+  mkdir -p "$dir"
+  { echo "model basic -ndm 1 -ndf 1"
+    echo "node 1 0.0"
+    echo "node 2 0.0 -mass 1.0"
+    echo "recorder Node -file $dir/r.out -node 2 -dof 1 disp"
+    cat; } > "$dir/s.tcl"
+  "$poundfe" opensees "$dir/s.tcl" > "$dir/out" 2> "$dir/err"
+  local status=$?
+  [ "$status" = 1 ] || fail "$1: exit status $status"
+  [ "$(wc -l < "$dir/err")" = 1 ] || { cat "$dir/err"; fail "$1: not one line"; }
+  grep -qxF -- "poundfe: error: $dir/s.tcl:$2" "$dir/err" || { cat "$dir/err"; fail "$1: message"; }
+  [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
+}
+echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"'
+echo "element forceBeamColumn 1 1 2 5 1" | bad unsupported-element \
+  '5: element forceBeamColumn: poundfe does not support it'
+printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1 -doRayleigh 2\n' \
+  | bad unsupported-option '6: element zeroLength -doRayleigh 2: poundfe does not support it'
+printf 'fix 1 1\nfix 9 1\n' | bad missing-node '6: fix: node 9 does not exist'
+printf 'fix 1 1\nproc f {} {\n  set x $undefined\n}\nf\n' \
+  | bad script-error "9: can't read \"undefined\": no such variable"
+printf 'uniaxialMaterial Steel01 1 -100.0 1000.0 0.05\n' \
+  | bad bad-material "5: uniaxialMaterial: parameter 'fy': Steel01: must be a positive number (got -100)"
+echo "opensees: ok"

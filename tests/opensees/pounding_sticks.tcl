@@ -1,0 +1,56 @@
+# Two single-storey sticks (T = 0.5 s and 1.0 s, 5 % Rayleigh damping in
+# their own springs) 10 mm apart, pounding through a zero-length gap under
+# the synthetic record. argv: the output directory and the gap material,
+# ElasticPPGap (elastic-plastic gap that stays damaged) or ImpactMaterial
+# (Muthukumar-DesRoches bilinear contact); optionally the algorithm
+# (Newton, the default, or ModifiedNewton) and the test (NormDispIncr, the
+# default, or EnergyIncr).
+set out [lindex $argv 0]
+set law [lindex $argv 1]
+set algorithm [expr {$argc > 2 ? [lindex $argv 2] : "Newton"}]
+set test [expr {$argc > 3 ? [lindex $argv 3] : "NormDispIncr"}]
+source [file join [file dirname [info script]] record.tcl]
+wipe
+model basic -ndm 1 -ndf 1
+set pi 3.14159265358979
+set m 1.0e5
+node 1 0.0
+node 2 0.0 -mass $m
+node 3 0.0
+node 4 0.0 -mass $m
+fix 1 1
+fix 3 1
+set k2 [expr {$m * pow(2 * $pi / 0.5, 2)}]
+set k4 [expr {$m * pow(2 * $pi / 1.0, 2)}]
+uniaxialMaterial Elastic 1 $k2 [expr {0.05 * 2 * sqrt($k2 * $m)}]
+uniaxialMaterial Elastic 2 $k4 [expr {0.05 * 2 * sqrt($k4 * $m)}]
+element zeroLength 1 1 2 -mat 1 -dir 1
+element zeroLength 2 3 4 -mat 2 -dir 1
+# the gap closes when node 2 moves 10 mm more than node 4 (u4 - u2 < -0.01)
+if {$law eq "ElasticPPGap"} {
+    uniaxialMaterial ElasticPPGap 3 2.0e9 -4.0e6 -0.01 0.1 damage
+} else {
+    uniaxialMaterial ImpactMaterial 3 2.0e9 6.0e8 -0.002 -0.01
+}
+element zeroLength 3 2 4 -mat 3 -dir 1
+set dt 0.002
+set n 4000
+timeSeries Path 1 -dt $dt -values [synthetic_record $dt $n 0.6]
+pattern UniformExcitation 1 1 -accel 1
+recorder Node -file $out/pounding_$law.out -time -precision 16 -node 2 4 -dof 1 disp
+recorder Node -file $out/pounding_${law}_vel.out -time -precision 16 -node 2 4 -dof 1 vel
+constraints Plain
+numberer Plain
+system BandGeneral
+if {$test eq "EnergyIncr"} {
+    test EnergyIncr 1.0e-14 50
+} else {
+    test NormDispIncr 1.0e-10 50
+}
+algorithm $algorithm
+integrator Newmark 0.5 0.25
+analysis Transient
+set status [analyze $n $dt]
+# poundfe::report where poundfe runs the script (OpenSees has no poundfe::)
+set report [expr {[namespace exists ::poundfe] ? [poundfe::report] : ""}]
+puts "pounding $law: status $status time [getTime] $report"
