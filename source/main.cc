@@ -123,6 +123,8 @@ namespace
           }
         else if (name == "--help")
           line.help = true;
+        else if (name == "--write-at2")
+          line.request.write_at2 = true;
         else if (name == "--version")
           line.version = true;
         else if (option)

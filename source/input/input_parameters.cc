@@ -238,6 +238,7 @@ namespace poundfe
     separation.declare(prm);
     mitigation.declare(prm);
     spectrum.declare(prm);
+    ida.declare(prm);
   }
 
   void
@@ -276,6 +277,7 @@ namespace poundfe
     separation.check(*this, model.buildings.size());
     mitigation.check(*this);
     spectrum.check(*this);
+    ida.check(*this);
   }
 
   void

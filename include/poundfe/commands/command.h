@@ -35,6 +35,8 @@ namespace poundfe
     /// Where the command's report goes: standard output on the process
     /// that writes the results (writes_outputs()), silent on the others.
     std::ostream &out;
+    /// --write-at2; only for CommandRule::writes_at2.
+    const bool write_at2 = false;
   };
 
   /// One rule of a command: a column of the command table. A row lists the
@@ -65,6 +67,8 @@ namespace poundfe
     field_output = 1u << 6,
     /// Resumes from the table an earlier run left in its output directory.
     resumable = 1u << 7,
+    /// Accepts --write-at2 (generated records as PEER AT2 files).
+    writes_at2 = 1u << 8,
   };
 
   /// A set of rules, written `CommandRule::a | CommandRule::b`.

@@ -5,6 +5,7 @@
 #ifndef poundfe_input_input_parameters_h
 #define poundfe_input_input_parameters_h
 
+#include <poundfe/assessment/ida_parameters.h>
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/dynamics/modal_parameters.h>
@@ -72,6 +73,7 @@ namespace poundfe
     SeparationParameters      separation;
     MitigationParameters      mitigation;  // Mitigation (the mitigation command)
     SpectrumParameters        spectrum;    // Spectrum (response spectra)
+    IdaParameters             ida;         // IDA (the ida command)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
     /// Every entry's value as read (defaults included), by its path
