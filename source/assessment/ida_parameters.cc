@@ -27,8 +27,8 @@ namespace poundfe
                "mean of the two components. Unit: -.",
                pair_measure_names());
     prm.add_parameter("Period", period,
-                      "Period of Sa and centre of Sa_avg's range; 0: the model's first period. "
-                      "Unit: s.", Double(0));
+                      "Period of Sa, and the period Sa_avg's range is in multiples of; 0: the "
+                      "model's first period. Unit: s.", Double(0));
     prm.add_parameter("Damping ratio", damping_ratio, "Of Sa. Unit: -.", Double(0, 0.99));
     prm.add_parameter("Sa_avg range", sa_avg_range,
                       "Shortest and longest period of Sa_avg as multiples of Period. Unit: -.",

@@ -141,7 +141,7 @@ namespace poundfe
       };
       const MonteCarloTable table =
         run_realizations(job, tasks.size(), file, comm, "IDA: ", progress, offset);
-      result.n_run_now += dealii::Utilities::MPI::sum(table.n_run_now, comm);
+      result.n_run_now += table.n_run_now; // summed over the ranks already
       result.interrupted = result.interrupted || table.interrupted;
       std::vector<double> flat;
       for (const std::vector<double> &row : table.responses)

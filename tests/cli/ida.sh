@@ -9,25 +9,27 @@
 #    into the same directory resumes from the journal and runs nothing;
 #  - the suite reader's bad input through the binary: exit 1, one line
 #    naming the suite's file, line and field, nothing written.
-poundfe=$1 mpirun=$2 example=$3
+poundfe=$(realpath "$1") mpirun=$2 example=$(realpath "$3")
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
 # shellcheck source=/dev/null
-. "$(dirname "$0")/expect.sh"
+. "$here/expect.sh"
+die() { echo "FAIL $*"; exit 1; }
 
 short=(--set "Ground motion/Stochastic/Duration=4" --set "IDA/Runs per record=6"
        --set "IDA/Tolerance=0.2" --set "Output/Plots=false")
 "$poundfe" ground-motion "$example" --realizations 3 --write-at2 --output gen "${short[@]}" > /dev/null ||
-  fail "ground-motion --write-at2"
-[ -f gen/records/realization_2.AT2 ] && [ -f gen/records/suite.csv ] || fail "no AT2 suite written"
+  die "ground-motion --write-at2"
+[ -f gen/records/realization_2.AT2 ] && [ -f gen/records/suite.csv ] || die "no AT2 suite written"
 cp "$example" ida.prm
 suite=(--set "IDA/Suite=$work/gen/records/suite.csv")
-"$poundfe" ida ida.prm --output one "${short[@]}" "${suite[@]}" > one.log || fail "ida: $(cat one.log)"
+"$poundfe" ida ida.prm --output one "${short[@]}" "${suite[@]}" > one.log || die "ida: $(cat one.log)"
 for f in summary.json ida.csv ida_records.csv ida_fractiles.csv collapse_fragility.csv; do
-  [ -f "one/$f" ] || fail "ida wrote no $f"
+  [ -f "one/$f" ] || die "ida wrote no $f"
 done
-grep -q '"collapse_fragility"' one/summary.json || fail "no collapse fragility in summary.json"
+grep -q '"collapse_fragility"' one/summary.json || die "no collapse fragility in summary.json"
 
 # Sa(T) against the spectrum command on each record, at T = the IDA period
 T=$(python3 -c "import json; print(json.load(open('one/summary.json'))['periods_s'][0])")
@@ -35,8 +37,8 @@ for r in 0 1 2; do
   "$poundfe" spectrum ida.prm --output "spectrum$r" --set "Ground motion/Type=record" \
     --set "Ground motion/Record/File=$work/gen/records/realization_$r.AT2" \
     --set "Spectrum/Minimum period=$T" --set "Spectrum/Maximum period=$T" \
-    --set "Spectrum/Number of periods=1" --set "Output/Plots=false" > /dev/null || fail "spectrum $r"
-  python3 - "$r" "spectrum$r/spectrum.csv" one/ida_records.csv <<'PY' || fail "Sa(T) of record $r"
+    --set "Spectrum/Number of periods=1" --set "Output/Plots=false" > /dev/null || die "spectrum $r"
+  python3 - "$r" "spectrum$r/spectrum.csv" one/ida_records.csv <<'PY' || die "Sa(T) of record $r"
 import csv, sys
 r, spectrum, records = int(sys.argv[1]), sys.argv[2], sys.argv[3]
 psa = float(next(csv.DictReader(open(spectrum)))["psa_g_5pct"])
@@ -49,12 +51,12 @@ done
 
 # two ranks: the same runs
 "$mpirun" -np 2 "$poundfe" ida ida.prm --output two "${short[@]}" "${suite[@]}" > /dev/null ||
-  fail "ida on two ranks"
-cmp one/ida.csv two/ida.csv || fail "one rank and two give different ida.csv"
+  die "ida on two ranks"
+cmp one/ida.csv two/ida.csv || die "one rank and two give different ida.csv"
 # resumed: nothing runs again, the same results
-"$poundfe" ida ida.prm --output one "${short[@]}" "${suite[@]}" > again.log || fail "resumed ida"
-grep -q '"runs_now": 0' one/summary.json || fail "a finished ida ran again: $(grep runs one/summary.json)"
-cmp one/ida.csv two/ida.csv || fail "the resumed run changed ida.csv"
+"$poundfe" ida ida.prm --output one "${short[@]}" "${suite[@]}" > again.log || die "resumed ida"
+grep -q '"runs_now": 0' one/summary.json || die "a finished ida ran again: $(grep runs one/summary.json)"
+cmp one/ida.csv two/ida.csv || die "the resumed run changed ida.csv"
 
 # bad suites: file, line, field
 at2=$work/gen/records/realization_0.AT2
@@ -63,17 +65,17 @@ bad() { # bad NAME CONTENTS TEXT: a suite NAME with CONTENTS refused with TEXT
   printf '%b' "$2" > "$1"
   expect 1 "$3" ida ida.prm "${short[@]}" --set "IDA/Suite=$work/$1" --output out
 }
-bad missing.csv "name,file\na,$at2\nb,nowhere.AT2\n" "missing.csv:3: file: record '$work/nowhere.AT2'"
-bad scale.csv "file,scale\n$at2,0\n" "scale.csv:2: scale: the scale factor of 'realization_0' must be positive"
-bad negative.csv "file,scale\n$at2,-2\n" "negative.csv:2: scale: the scale factor of 'realization_0' must be positive, got -2"
-bad twice.csv "name,file\nx,$at2\nx,$at2\n" "twice.csv:3: name: the name 'x' is given twice (also on line 2)"
-bad pair.csv "file,file2\n$at2,$work/short.AT2\n" "pair.csv:2: file2: the components of a pair must share their time step and length"
-bad column.csv "file,depth\n$at2,3\n" "column.csv:1: depth: not a column of a record suite"
-bad nofile.csv "name,scale\na,1\n" "nofile.csv:1: file: the header row has no 'file' column"
-bad number.csv "file,scale\n$at2,two\n" "number.csv:2: scale: expected a number, got 'two'"
+bad missing.csv "name,file\na,$at2\nb,nowhere.AT2\n" "missing.csv:3: parameter 'file': record '$work/nowhere.AT2'"
+bad scale.csv "file,scale\n$at2,0\n" "scale.csv:2: parameter 'scale': the scale factor of 'realization_0' must be positive"
+bad negative.csv "file,scale\n$at2,-2\n" "negative.csv:2: parameter 'scale': the scale factor of 'realization_0' must be positive, got -2"
+bad twice.csv "name,file\nx,$at2\nx,$at2\n" "twice.csv:3: parameter 'name': the name 'x' is given twice (also on line 2)"
+bad pair.csv "file,file2\n$at2,$work/short.AT2\n" "pair.csv:2: parameter 'file2': the components of a pair must share their time step and length"
+bad column.csv "file,depth\n$at2,3\n" "column.csv:1: parameter 'depth': not a column of a record suite"
+bad nofile.csv "name,scale\na,1\n" "nofile.csv:1: parameter 'file': the header row has no 'file' column"
+bad number.csv "file,scale\n$at2,two\n" "number.csv:2: parameter 'scale': expected a number, got 'two'"
 bad fields.csv "file,scale\n$at2\n" "fields.csv:2: expected 2 fields as in the header, found 1"
 bad empty.csv "file\n" "the suite lists no record"
-bad json.json '{"records": [{"files": ["a", "b", "c"]}]}' "records[0].files: expected one or two record files"
+bad json.json '{"records": [{"files": ["a", "b", "c"]}]}' "parameter 'records[0].files': expected one or two record files"
 bad suite.txt "file\n$at2\n" "a record suite is a .csv or .json file or a folder"
 mkdir -p emptyfolder
 expect 1 "the folder holds no .AT2 file" ida ida.prm "${short[@]}" --set "IDA/Suite=$work/emptyfolder" --output out
