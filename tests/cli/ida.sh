@@ -81,7 +81,7 @@ mkdir -p emptyfolder
 expect 1 "the folder holds no .AT2 file" ida ida.prm "${short[@]}" --set "IDA/Suite=$work/emptyfolder" --output out
 bad pair2d.csv "file,file2\n$at2,$at2\n" "the suite's records are horizontal pairs: they need a 3D model"
 expect 1 "--write-at2 writes the realizations of --realizations N" ground-motion ida.prm --write-at2 --output out
-expect 1 "--write-at2 belongs to 'ground-motion'" run ida.prm --write-at2 --output out
+expect 1 "--write-at2 belongs to ground-motion" run ida.prm --write-at2 --output out
 # a folder of AT2 files is a suite too
 expect 0 "collapse fragility" ida ida.prm "${short[@]}" --set "IDA/Suite=$work/gen/records" --output folder
 rm -rf folder out
