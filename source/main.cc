@@ -142,6 +142,12 @@ namespace
           }
         else if (name == "--help")
           line.help = true;
+        else if (name == "--write-at2")
+          { // a switch: no value, and not a word of the command
+            line.request.write_at2 = true;
+            args.erase(args.begin() + i);
+            --i;
+          }
         else if (name == "--version")
           line.version = true;
         else if (option)

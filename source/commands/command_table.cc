@@ -28,6 +28,7 @@ namespace poundfe
     int print_parameters(const CommandRun &); // print_parameters_command.cc
     int input_template(const CommandRun &); // template_command.cc
     int opensees(const CommandRun &);       // opensees_command.cc
+    int ida(const CommandRun &);            // ida_command.cc
   } // namespace commands
 
   const std::vector<Command> &
@@ -56,10 +57,12 @@ namespace poundfe
        "static pushover after the gravity state: capacity curve, storey\n"
        "drifts and hinges (pushover.csv, PNG), EC8 bilinear curve and N2 target",
        file, summary, commands::pushover},
-      {"ground-motion", "FILE [--realizations N]",
+      {"ground-motion", "FILE [--realizations N [--write-at2]]",
        "the ground acceleration a run would use (CSV, PNG); with N,\n"
-       "realizations 0..N-1 and their ensemble PSD against the target",
-       file | realizations, summary, commands::ground_motion},
+       "realizations 0..N-1 and their ensemble PSD against the target;\n"
+       "--write-at2: each also as a PEER AT2 file, with a record suite\n"
+       "(records/suite.csv) for the IDA section",
+       file | realizations | CommandRule::writes_at2, summary, commands::ground_motion},
       {"spectrum", "FILE [--realizations N]",
        "response spectrum (Sd, PSV, PSA), PGA/PGV/PGD, Arias intensity,\n"
        "D5-95 of the ground motion; with N, the ensemble mean spectrum\n"
@@ -71,6 +74,11 @@ namespace poundfe
        file | mpi | own_interruption | resumable, summary, commands::subset},
       {"fragility", "FILE", "Monte Carlo over PGA levels, lognormal fragility curves (MPI)",
        file | mpi | own_interruption | resumable, summary, commands::fragility},
+      {"ida", "FILE",
+       "incremental dynamic analysis of the IDA section's record suite:\n"
+       "hunt and fill to collapse per record, every demand at every\n"
+       "intensity, fractile curves, collapse fragility (MPI)",
+       file | mpi | own_interruption | resumable, summary, commands::ida},
       {"stationary-pdf", "FILE",
        "stationary PDFs of a noisy response: histogram, kernel density,\n"
        "peaks, joint p(x, v) (MPI)",

@@ -63,6 +63,10 @@ namespace poundfe
       if (request.n_realizations > 0 && !command.has(CommandRule::takes_realizations))
         throw CommandLineError("--realizations belongs to " +
                                command_names(CommandRule::takes_realizations));
+      if (request.write_at2 && !command.has(CommandRule::writes_at2))
+        throw CommandLineError("--write-at2 belongs to " + command_names(CommandRule::writes_at2));
+      if (request.write_at2 && request.n_realizations == 0)
+        throw CommandLineError("--write-at2 writes the realizations of --realizations N: give N");
       if (!reads_file && !request.overrides.empty())
         throw CommandLineError("--set sets an entry of a parameter file, and '" + command.name +
                                "' reads none");
@@ -149,7 +153,8 @@ namespace poundfe
       const MPI_Comm communicator = dispatch_has_mpi() ? MPI_COMM_WORLD : MPI_COMM_SELF;
       return guard_command({command, input, directory, writes}, [&]() -> int {
         return command.run({request.arguments, &input, directory, request.n_realizations,
-                            communicator, err, writes ? std::cout : silent_stream()});
+                            communicator, err, writes ? std::cout : silent_stream(),
+                            request.write_at2});
       });
     }
   } // namespace

@@ -40,8 +40,11 @@ namespace poundfe
         .value("pgd_m", m.pgd)
         .value("baseline_correction", "none")
         .value("arias_intensity_m_s", m.arias_intensity)
+        .value("cumulative_absolute_velocity_m_s", m.cumulative_absolute_velocity)
         .value("t5_s", m.t5)
+        .value("t75_s", m.t75)
         .value("t95_s", m.t95)
+        .value("significant_duration_5_75_s", m.significant_duration_5_75)
         .value("significant_duration_5_95_s", m.significant_duration)
         .value("duration_s", m.duration)
         .end_object();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iomanip>
 #include <optional>
 #include <sstream>
 
@@ -222,6 +223,22 @@ namespace poundfe
     if (table.values.size() < 2)
       throw InputError(file, 0, "", "needs at least two rows of numbers");
     return table;
+  }
+
+  std::string
+  at2_text(const std::vector<double> &acceleration, const double dt, const std::string &title)
+  {
+    std::ostringstream out;
+    out << "PEER-format record written by poundfe (not a recording)\n"
+        << title.substr(0, title.find('\n')) << "\n"
+        << "ACCELERATION TIME SERIES IN UNITS OF G\n"
+        << "NPTS= " << acceleration.size() << ", DT= " << std::setprecision(17) << dt
+        << " SEC\n";
+    out << std::scientific << std::setprecision(8);
+    for (std::size_t i = 0; i < acceleration.size(); ++i)
+      out << (i % 5 ? " " : "") << std::setw(15) << acceleration[i] / standard_gravity
+          << (i % 5 == 4 || i + 1 == acceleration.size() ? "\n" : "");
+    return out.str();
   }
 
   GroundMotion

@@ -306,14 +306,19 @@ namespace poundfe
         displacement += h * velocity + h * h * (2 * a[k] + a1) / 6;
         velocity += 0.5 * h * (a[k] + a1);
         energy += partial_energy(a[k], a1, h, h);
+        const double p0 = std::abs(a[k]), p1 = std::abs(a1);
+        result.cumulative_absolute_velocity +=
+          a[k] * a1 >= 0 ? 0.5 * h * (p0 + p1) : 0.5 * h * (p0 * p0 + p1 * p1) / (p0 + p1);
       }
     result.arias_intensity = M_PI / (2 * standard_gravity) * energy;
     if (energy > 0)
       {
         result.t5  = husid_time(a, h, held, 0.05 * energy);
+        result.t75 = husid_time(a, h, held, 0.75 * energy);
         result.t95 = husid_time(a, h, held, 0.95 * energy);
       }
-    result.significant_duration = result.t95 - result.t5;
+    result.significant_duration      = result.t95 - result.t5;
+    result.significant_duration_5_75 = result.t75 - result.t5;
     return result;
   }
 

@@ -241,6 +241,7 @@ namespace poundfe
     sections.declare(prm);
     moment_curvature.declare(prm);
     pushover.declare(prm);
+    ida.declare(prm);
   }
 
   void
@@ -282,6 +283,7 @@ namespace poundfe
     sections.check(*this);
     moment_curvature.check(*this, sections);
     pushover.finalize(*this, model.buildings.size());
+    ida.check(*this);
   }
 
   void

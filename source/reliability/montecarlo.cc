@@ -295,7 +295,7 @@ namespace poundfe
       const unsigned long step = std::max(1UL, n / 10);
       if (show_progress)
         progress->update(progress_offset + n_done);
-      else if (n_done % step == 0 || n_done == n)
+      else if (job.report_lines && (n_done % step == 0 || n_done == n))
         pcout << label << n_done << " / " << n << " realizations" << std::endl;
     }
 

@@ -5,6 +5,7 @@
 #                      states compiled against the response columns, one short
 #                      realization; Reliability's limit states (fuzz_random_parameters.cc)
 #   at2                read_record: AT2 and column records (fuzz_at2.cc)
+#   suite              read_record_suite: CSV and JSON record suites (fuzz_suite.cc)
 #   forces             make_nodal_forces: a Nodal forces/Tabulated force table (fuzz_forces.cc)
 #   catalogue          read_catalogue: the earthquake catalogue CSV (fuzz_catalogue.cc)
 #   hazard             read_pga_hazard: hazard_curve.csv or site-hazard summary.json (fuzz_hazard.cc)
@@ -45,7 +46,7 @@
 set -euo pipefail
 src=$(cd "$(dirname "$0")/../.." && pwd)
 build=${FUZZ_BUILD:-$src/build-fuzz}
-all_targets="parameters random_parameters at2 forces catalogue hazard fragility mesh mesh_building"
+all_targets="parameters random_parameters at2 suite forces catalogue hazard fragility mesh mesh_building"
 case ${1:-all} in
   all) targets=$all_targets ;;
   *) targets=$1
@@ -104,6 +105,7 @@ instrumented=(source/base/input_text.cc source/base/numbers.cc source/base/input
               source/reliability/nataf.cc source/dynamics/model_parameter.cc
               source/dynamics/realization.cc
               source/excitation/records.cc source/excitation/ground_motion.cc
+              source/excitation/record_suite.cc
               source/excitation/excitation.cc
               source/hazard/catalogue.cc source/hazard/pounding_hazard.cc
               source/hazard/site_hazard.cc source/mesh/gmsh_check.cc source/mesh/line_mesh.cc

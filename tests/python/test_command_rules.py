@@ -36,6 +36,7 @@ ROWS = {
     "fragility": (os.path.join(CLI, "montecarlo-small.prm"), set(),
                   {**QUIET, **SHORT, "Fragility/Realizations per level": 1,
                    "Fragility/PGA levels": 0.1}),
+    "ida": (os.path.join(CLI, "ida", "ida-small.prm"), set(), {**QUIET, "IDA/Runs per record": 2}),
     "stationary-pdf": (os.path.join(CLI, "stationary-linear.prm"), set(),
                        {**QUIET, "Stationary PDF/Number of realizations": 2}),
     "sweep": (os.path.join(CLI, "3d-commands.prm"), set(), QUIET),
@@ -159,7 +160,7 @@ class CommandRules(TestCase):
         text = " ".join(usage.split())
         self.assertIn("Partition = buildings is taken only by 'run',", text)
         self.assertIn("Output/Field format = xdmf only by 'run' and 'modal'.", text)
-        self.assertIn("montecarlo, subset, fragility, stationary-pdf, separation and mitigation "
+        self.assertIn("montecarlo, subset, fragility, ida, stationary-pdf, separation and mitigation "
                       "resume when run again", text)
 
 

@@ -35,6 +35,8 @@ namespace poundfe
     /// Where the command's report goes: standard output on the process
     /// that writes the results (writes_outputs()), silent on the others.
     std::ostream &out;
+    /// --write-at2; only for CommandRule::writes_at2.
+    const bool write_at2 = false;
   };
 
   /// One rule of a command: a column of the command table. A row lists the
@@ -68,6 +70,8 @@ namespace poundfe
     /// Takes a script and its own arguments: the words after the script
     /// go to it as they are (options included), never to poundfe.
     script_arguments = 1u << 8,
+    /// Accepts --write-at2 (generated records as PEER AT2 files).
+    writes_at2 = 1u << 9,
   };
 
   /// A set of rules, written `CommandRule::a | CommandRule::b`.

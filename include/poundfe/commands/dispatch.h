@@ -34,6 +34,8 @@ namespace poundfe
     /// --set Section/Entry=value, in order: applied by the file's reader
     /// (read_parameters) before its checks.
     std::vector<ParameterOverride> overrides;
+    /// --write-at2.
+    bool write_at2 = false;
   };
 
   /// A command line the command's row refuses (a wrong number of

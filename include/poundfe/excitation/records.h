@@ -44,6 +44,13 @@ namespace poundfe
 
   /// Read a record; throws InputError naming the file and line.
   GroundMotion read_record(const std::string &file, const RecordFormat &format);
+
+  /// The text of a PEER AT2 file of `acceleration` (m/s^2, written in g with
+  /// nine significant digits, five values a line) at time step `dt`: four
+  /// header lines, the second `title`, the fourth "NPTS= n, DT= dt SEC", so
+  /// that read_record gives the values back to within 5e-9 relative.
+  std::string at2_text(const std::vector<double> &acceleration, double dt,
+                       const std::string &title);
 } // namespace poundfe
 
 #endif

@@ -33,9 +33,12 @@
 //   baseline correction (a record's PGD then includes the drift of its
 //   baseline; a generated motion's that of its random walk).
 //   Arias intensity I_A = pi / (2 g) int_0^T a^2 dt (Arias 1970), m/s;
-//   significant duration D5-95 = t95 - t5, the times at which the Husid
-//   curve int_0^t a^2 reaches 5 % and 95 % of its final value (Trifunac &
-//   Brady 1975), located exactly inside the step.
+//   significant durations D5-75 = t75 - t5 and D5-95 = t95 - t5, the times
+//   at which the Husid curve int_0^t a^2 reaches 5 %, 75 % and 95 % of its
+//   final value (Trifunac & Brady 1975), located exactly inside the step;
+//   cumulative absolute velocity CAV = int_0^T |a| dt (EPRI 1988), exact for
+//   the piecewise-linear a (a step whose ends differ in sign: its two
+//   triangles, h (a0^2 + a1^2) / (2 (|a0| + |a1|))).
 //
 // Design spectrum: Eurocode 8 (EN 1998-1:2004, section 3.2.2.2, eq. 3.2-3.6),
 // horizontal elastic spectrum of type 1 (Table 3.2) or type 2 (Table 3.3):
@@ -54,6 +57,8 @@
 //   Trifunac, M. D. & Brady, A. G. (1975). A study on the duration of strong
 //     earthquake ground motion. Bulletin of the Seismological Society of
 //     America 65(3), 581-626.
+//   EPRI (1988). A criterion for determining exceedance of the operating
+//     basis earthquake. Report NP-5930, Electric Power Research Institute.
 //   Husid, R. (1969). Caracteristicas de terremotos. Analisis general. Revista
 //     del IDIEM 8, 21-42.
 //   CEN (2004). EN 1998-1:2004 Eurocode 8: Design of structures for earthquake
@@ -158,8 +163,10 @@ namespace poundfe
   {
     double pga = 0, pgv = 0, pgd = 0; // m/s^2, m/s, m (no baseline correction)
     double arias_intensity = 0;       // m/s
-    double t5 = 0, t95 = 0;           // s, 5 % and 95 % of the Husid curve
+    double cumulative_absolute_velocity = 0; // CAV, m/s
+    double t5 = 0, t75 = 0, t95 = 0;  // s, 5, 75 and 95 % of the Husid curve
     double significant_duration = 0;  // D5-95, s
+    double significant_duration_5_75 = 0; // D5-75, s
     double duration = 0;              // of the record, s
   };
 

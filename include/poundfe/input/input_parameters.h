@@ -5,6 +5,7 @@
 #ifndef poundfe_input_input_parameters_h
 #define poundfe_input_input_parameters_h
 
+#include <poundfe/assessment/ida_parameters.h>
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/dynamics/modal_parameters.h>
@@ -77,6 +78,7 @@ namespace poundfe
     SectionsParameters        sections;    // Sections (fibre cross-sections)
     MomentCurvatureParameters moment_curvature; // Moment curvature
     PushoverParameters        pushover;    // Pushover (the pushover command)
+    IdaParameters             ida;         // IDA (the ida command)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
     /// Every entry's value as read (defaults included), by its path

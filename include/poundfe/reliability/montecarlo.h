@@ -51,6 +51,9 @@ namespace poundfe
     std::vector<std::string>                                       names;
     std::uint64_t                                                  seed = 1;
     std::function<bool(std::uint64_t realization, std::vector<double> &row)> run;
+    /// Print a line every tenth of the realizations when the progress line
+    /// does not show (a caller that runs many short tables says its own).
+    bool report_lines = true;
   };
 
   /// Runs the realizations 0..n-1 of `job` that `file` does not hold yet over

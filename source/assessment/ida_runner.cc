@@ -1,0 +1,213 @@
+// The IDA runner (a record at an intensity through the model) and the
+// rounds of hunt-and-fill over the ranks, journaled by the Monte Carlo
+// scheduler (ida.h).
+#include <poundfe/assessment/ida.h>
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/progress.h>
+#include <poundfe/excitation/excitation.h>
+#include <poundfe/output/floor_response.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/peak_response.h>
+#include <poundfe/reliability/montecarlo.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace poundfe
+{
+  IdaRunner::IdaRunner(const Analysis &analysis_, const TimeHistoryParameters &parameters,
+                       const IdaParameters &ida_, RecordSuite suite)
+    : analysis(analysis_)
+    , ida(ida_)
+    , records(std::move(suite))
+    , history(std::make_unique<TimeHistory>(analysis_, parameters))
+    , peaks(std::make_unique<PeakResponse>(analysis_.model, history->nonlinear_elements()))
+  {
+    const InputFile &input = parameters.input;
+    if (records.pairs() && analysis.model.dimension != 3)
+      throw InputError(input.file, input.line_of("IDA/Suite"), "IDA/Suite",
+                       "the suite's records are horizontal pairs: they need a 3D model "
+                       "(Model/Dimension = 3)");
+    if ((ida.measure == IntensityMeasure::sa || ida.measure == IntensityMeasure::sa_avg) &&
+        ida.period == 0 && analysis.modes.omega.empty())
+      throw InputError(input.file, input.line_of("IDA/Period"), "IDA/Period",
+                       "is 0 (the first period) but no mode was computed: set "
+                       "Output/Number of modes >= 1 or a Period");
+    const double first = analysis.modes.omega.empty() ? 1.0 : 2 * M_PI / analysis.modes.omega[0];
+    periods            = ida.measure_periods(first);
+    for (const SuiteRecord &record : records.records)
+      {
+        base.push_back(intensity_of(record.components, ida.measure, ida.pair, periods,
+                                    ida.damping_ratio));
+        if (!(base.back() > 0))
+          throw InputError(records.file, record.line, "file",
+                           "record '" + record.name + "' has no intensity (" +
+                             intensity_measure_names().name(ida.measure) + " = 0): it cannot "
+                             "be scaled");
+      }
+    const FloorResponse floors(analysis.model);
+    names = floors.column_names("storey", "peak_drift_ratio");
+    for (const std::string &n : floors.column_names("floor", "peak_acc_m_s2"))
+      names.push_back(n);
+    for (const std::string &n : floors.column_names("storey", "residual_drift_ratio"))
+      names.push_back(n);
+    max_drift = names.size();
+    names.push_back("max_drift_ratio");
+    for (unsigned int g = 1; g <= analysis.model.gaps.size(); ++g)
+      for (const char *what : {"_impacts", "_peak_impact_force_N", "_peak_impact_velocity_m_s"})
+        names.push_back("gap" + std::to_string(g) + what);
+  }
+
+  IdaRunner::~IdaRunner() = default;
+
+  HuntFill::Settings
+  IdaRunner::search() const
+  {
+    return {ida.initial_step, ida.step_increment, ida.upper_intensity, ida.tolerance,
+            ida.runs_per_record};
+  }
+
+  IdaPoint
+  IdaRunner::run(const unsigned int r, const double intensity)
+  {
+    const SuiteRecord &record = records.records.at(r);
+    IdaPoint           point;
+    point.intensity    = intensity;
+    point.scale_factor = intensity / base[r];
+    std::vector<GroundMotion> motions;
+    for (const GroundMotion &component : record.components)
+      {
+        std::vector<double> a = component.samples();
+        a.resize(a.size() + static_cast<std::size_t>(std::ceil(ida.free_vibration /
+                                                               component.time_step())), 0.0);
+        motions.emplace_back(component.time_step(), std::move(a), component.description());
+        motions.back().scale(point.scale_factor);
+      }
+    Excitation excitation(analysis.system, motions[0], {});
+    if (motions.size() == 2)
+      excitation.set_horizontal_pair(analysis.system, motions[1], 0);
+    const RunStatus      status = history->run(excitation, {peaks.get()});
+    const FloorResponse &floors = peaks->floors();
+    point.demands = floors.peak_drift_ratio();
+    for (const std::vector<double> *part : {&floors.peak_acceleration(), &floors.drift_ratio()})
+      point.demands.insert(point.demands.end(), part->begin(), part->end());
+    point.demands.push_back(peaks->largest_drift_ratio());
+    point.collapsed = !status.completed() || point.demands.back() > ida.collapse_drift_ratio;
+    const std::vector<Impact> &impacts = history->state().impact_log().impacts();
+    for (unsigned int g = 0; g < analysis.model.gaps.size(); ++g)
+      {
+        double n = 0, force = 0, velocity = 0;
+        for (const Impact &impact : impacts)
+          if (impact.element == peaks->n_hysteretic() + g)
+            {
+              ++n;
+              force    = std::max(force, impact.peak_force);
+              velocity = std::max(velocity, std::abs(impact.approach_velocity));
+            }
+        point.demands.insert(point.demands.end(), {n, force, velocity});
+      }
+    return point;
+  }
+
+  namespace
+  {
+    struct IdaTask
+    {
+      unsigned int record    = 0;
+      double       intensity = 0;
+    };
+
+    /// One round: the next intensity of every record not done, run over
+    /// the ranks; its rows (record, intensity, collapsed, demands) on every rank.
+    std::vector<std::vector<double>>
+    run_round(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
+              const MPI_Comm comm, Progress *const progress, const unsigned long offset,
+              IdaResult &result)
+    {
+      RealizationJob job;
+      job.names = {"record", "intensity", "collapsed"};
+      for (const std::string &n : runner.demand_names())
+        job.names.push_back(n);
+      job.seed          = 0;
+      job.report_lines  = false;
+      job.run           = [&](const std::uint64_t i, std::vector<double> &row) {
+        const IdaPoint point = runner.run(tasks[i].record, tasks[i].intensity);
+        row = {double(tasks[i].record), tasks[i].intensity, point.collapsed ? 1.0 : 0.0};
+        row.insert(row.end(), point.demands.begin(), point.demands.end());
+        return true;
+      };
+      const MonteCarloTable table =
+        run_realizations(job, tasks.size(), file, comm, "IDA: ", progress, offset);
+      result.n_run_now += table.n_run_now; // summed over the ranks already
+      result.interrupted = result.interrupted || table.interrupted;
+      std::vector<double> flat;
+      for (const std::vector<double> &row : table.responses)
+        flat.insert(flat.end(), row.begin(), row.end());
+      flat = dealii::Utilities::MPI::broadcast(comm, flat, 0);
+      std::vector<std::vector<double>> rows;
+      for (std::size_t i = 0; i < flat.size(); i += job.names.size())
+        rows.emplace_back(flat.begin() + i, flat.begin() + i + job.names.size());
+      return rows;
+    }
+
+    /// A round's row into its record's search and points.
+    void
+    take_row(const std::vector<double> &row, std::vector<HuntFill> &searches, IdaResult &result)
+    {
+      const unsigned int r = static_cast<unsigned int>(row[0]);
+      IdaPoint           point;
+      point.intensity = row[1];
+      point.collapsed = row[2] != 0;
+      point.demands.assign(row.begin() + 3, row.end());
+      searches.at(r).record(point.intensity, point.collapsed);
+      result.records[r].points.push_back(std::move(point));
+      ++result.n_runs;
+    }
+  } // namespace
+
+  IdaResult
+  run_ida(IdaRunner &runner, const std::string &journal, const MPI_Comm comm,
+          Progress *const progress)
+  {
+    const auto             start     = std::chrono::steady_clock::now();
+    const unsigned int     n_records = runner.suite().records.size();
+    std::vector<HuntFill>  searches(n_records, HuntFill(runner.search()));
+    IdaResult              result;
+    result.records.resize(n_records);
+    for (unsigned int round = 0; !result.interrupted; ++round)
+      {
+        std::vector<IdaTask> tasks;
+        for (unsigned int r = 0; r < n_records; ++r)
+          if (const std::optional<double> x = searches[r].next())
+            tasks.push_back({r, *x});
+        if (tasks.empty())
+          break;
+        // realizations.csv in a folder per round: the name the output
+        // directory keeps when a command resumes (output_directory.h)
+        const std::string folder = journal + "/round_" + std::to_string(round);
+        if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+          create_directories(folder);
+        const std::string file = folder + "/realizations.csv";
+        for (const std::vector<double> &row :
+             run_round(runner, tasks, file, comm, progress, result.n_runs, result))
+          take_row(row, searches, result);
+      }
+    for (unsigned int r = 0; r < n_records; ++r)
+      {
+        IdaRecordResult &record = result.records[r];
+        std::sort(record.points.begin(), record.points.end(),
+                  [](const IdaPoint &a, const IdaPoint &b) { return a.intensity < b.intensity; });
+        for (IdaPoint &point : record.points)
+          point.scale_factor = point.intensity / runner.base_intensities()[r];
+        record.collapse_intensity = searches[r].collapse_intensity();
+        record.highest_survived   = searches[r].highest_survived();
+        record.done               = !searches[r].next();
+      }
+    result.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
+} // namespace poundfe
