@@ -149,6 +149,17 @@ class BadPythonInput(TestCase):
             poundfe.run(short, callback=again, every=10)
         self.assertEqual(poundfe.run(short).status, "completed")  # usable afterwards
 
+    def test_keyboard_interrupt_in_memory(self):
+        short = poundfe.read(EXAMPLE, overrides={"Time integration/End time": 0.5})
+
+        def interrupt(state):
+            if state.step == 200:
+                raise KeyboardInterrupt
+
+        with self.assertRaises(KeyboardInterrupt):
+            poundfe.run(short, callback=interrupt, every=100)
+        self.assertEqual(poundfe.run(short).status, "completed")  # usable afterwards
+
     def test_two_threads(self):
         import threading
         short = poundfe.read(EXAMPLE, overrides={"Time integration/End time": 0.5})
