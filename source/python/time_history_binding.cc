@@ -23,6 +23,7 @@
 #include <pybind11/stl.h>
 
 #include <exception>
+#include <sstream>
 #include <iostream>
 
 namespace py = pybind11;
@@ -236,10 +237,13 @@ namespace poundfe::python
     /// (commands/dispatch.h): the same rules, checks and messages, raised as
     /// exceptions (a refused command line as ValueError, bad input as
     /// InputError) instead of exit status 1; returns the exit status otherwise.
+    /// With `report`, what the command writes on standard output (its report
+    /// on the terminal) goes there instead.
     int
     run_command_of_table(const std::string &name, const std::vector<std::string> &arguments,
                          const std::string &output, const unsigned int n_realizations,
-                         const std::vector<std::pair<std::string, std::string>> &overrides)
+                         const std::vector<std::pair<std::string, std::string>> &overrides,
+                         std::string *report = nullptr)
     {
       const Command *command = find_command(name);
       if (command == nullptr)
@@ -250,10 +254,31 @@ namespace poundfe::python
       int status = 0;
       {
         py::gil_scoped_release release;
+        std::ostringstream     captured;
+        // std::cout's buffer is swapped back however the command ends
+        struct Restore
+        {
+          std::streambuf *buffer;
+          ~Restore() { std::cout.rdbuf(buffer); }
+        } restore{report ? std::cout.rdbuf(captured.rdbuf()) : std::cout.rdbuf()};
         status = dispatch_command(*command, request, ensure_mpi, std::cerr);
         std::cout.flush();
+        if (report)
+          *report = captured.str();
       }
       return status;
+    }
+
+    /// run_command_of_table with its report kept: (status, report).
+    std::pair<int, std::string>
+    run_command_reported(const std::string &name, const std::vector<std::string> &arguments,
+                         const std::string &output, const unsigned int n_realizations,
+                         const std::vector<std::pair<std::string, std::string>> &overrides)
+    {
+      std::string report;
+      const int   status =
+        run_command_of_table(name, arguments, output, n_realizations, overrides, &report);
+      return {status, report};
     }
   } // namespace
 
@@ -284,10 +309,21 @@ namespace poundfe::python
     m.def("run_time_history", &run_time_history_into, py::arg("input"), py::arg("directory"),
           py::arg("callback") = py::none(), py::arg("every") = 1,
           "A time history into `directory` (\"\": into memory); use poundfe.run.");
-    m.def("command", &run_command_of_table, py::arg("name"), py::arg("arguments"),
+    m.def(
+      "command",
+      [](const std::string &name, const std::vector<std::string> &arguments,
+         const std::string &output, const unsigned int realizations,
+         const std::vector<std::pair<std::string, std::string>> &overrides) {
+        return run_command_of_table(name, arguments, output, realizations, overrides);
+      },
+      py::arg("name"), py::arg("arguments"), py::arg("output") = "", py::arg("realizations") = 0,
+      py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
+      "A command of the command table; use poundfe.command.");
+    m.def("command_reported", &run_command_reported, py::arg("name"), py::arg("arguments"),
           py::arg("output") = "", py::arg("realizations") = 0,
           py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
-          "A command of the command table; use poundfe.command.");
+          "A command of the command table, its report returned: (status, report); use "
+          "poundfe.montecarlo, ....");
     py::module_::import("atexit").attr("register")(py::cpp_function([]() {
       delete mpi;
       mpi = nullptr;

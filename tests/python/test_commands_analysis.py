@@ -58,6 +58,20 @@ class AnalysisCommands(CommandTestCase):
                                  "design point")
             self.assertEqual(other.summary["beta"], by_name.summary["beta"])
 
+    def test_report_kept_not_printed(self):
+        import tempfile
+        with tempfile.TemporaryFile() as captured:
+            saved = os.dup(1)
+            os.dup2(captured.fileno(), 1)
+            try:
+                result = poundfe.dynamic_form("tests/cli/dynamic-form-sdof.prm", overrides=QUIET)
+            finally:
+                os.dup2(saved, 1)
+                os.close(saved)
+            captured.seek(0)
+            self.assertEqual(captured.read(), b"")
+        self.assertIn("dynamic FORM: beta = 2.02652", result.report)
+
     def test_to_dataframe_without_pandas(self):
         result = poundfe.dynamic_form("tests/cli/dynamic-form-sdof.prm", overrides=QUIET)
         with mock.patch.dict(sys.modules, {"pandas": None}):

@@ -55,8 +55,9 @@ class CommandResult:
     summary.json as a dict; tables: {stem: Table (first column time_s) or
     structured array (one field per column)} of every CSV and NPY table it
     wrote, also as attributes (result.separation); files: the files it
-    wrote; output: where they stay (None: removed). to_dataframe(stem)
-    needs pandas."""
+    wrote; output: where they stay (None: removed); report: what the
+    command line prints on standard output (its report; nothing is printed).
+    to_dataframe(stem) needs pandas."""
 
     def __init__(self, command, directory, kept):
         self.command = command
@@ -121,8 +122,10 @@ def run_command(name, model, output=None, realizations=None, overrides=None):
         file, pairs = _file_and_overrides(model, overrides, scratch)
         from . import _engine
         with _engine():
-            _core.command(name, [file], directory, realizations or 0, pairs)
-        return CommandResult(name, directory, kept)
+            _, report = _core.command_reported(name, [file], directory, realizations or 0, pairs)
+        result = CommandResult(name, directory, kept)
+        result.report = report
+        return result
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
 
