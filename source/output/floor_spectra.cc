@@ -1,14 +1,18 @@
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/floor_spectra.h>
+#include <poundfe/output/memory_results.h>
 
 #include <cmath>
+#include <memory>
 
 namespace poundfe
 {
   FloorSpectra::FloorSpectra(const PeakResponse &peaks, const std::vector<double> &periods,
-                             const std::vector<double> &damping_ratios, std::string directory)
+                             const std::vector<double> &damping_ratios, std::string directory,
+                             MemoryResults *memory)
     : peaks(peaks)
     , directory(std::move(directory))
+    , memory(memory)
     , ground(periods, damping_ratios)
     , floors(peaks.floors().n_floors(), SpectralOscillators(periods, damping_ratios))
   {}
@@ -71,19 +75,23 @@ namespace poundfe
         for (const std::string &name : peaks.floors().column_names("floor", suffix))
           header.push_back(name);
       }
-    CsvWriter csv(directory + "/" + file_name, header);
+    const std::string            stem = "floor_spectra";
+    std::unique_ptr<TableWriter> table =
+      memory ? memory->table_writer(stem, header) :
+               std::make_unique<CsvWriter>(directory + "/" + file_name, header);
+    std::vector<double> row;
     for (unsigned int i = 0; i < periods.size(); ++i)
       {
         const double w2 = std::pow(2 * M_PI / periods[i], 2);
-        csv.begin_row(periods[i]);
+        row.clear();
         for (unsigned int d = 0; d < zetas.size(); ++d)
           {
-            csv.add(w2 * ground.peak_displacement()[ground.index(d, i)]);
+            row.push_back(w2 * ground.peak_displacement()[ground.index(d, i)]);
             for (unsigned int f = 0; f < floors.size(); ++f)
-              csv.add(w2 * peak_displacement(f, floors[f].index(d, i)));
+              row.push_back(w2 * peak_displacement(f, floors[f].index(d, i)));
           }
-        csv.end_row();
+        table->add_row(periods[i], row);
       }
-    csv.commit();
+    table->commit();
   }
 } // namespace poundfe

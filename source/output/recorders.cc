@@ -1,12 +1,14 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
 #include <poundfe/output/storey_forces.h>
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
@@ -97,9 +99,12 @@ namespace poundfe
     class ResidualDriftRecorder : public StepObserver
     {
     public:
-      ResidualDriftRecorder(const std::string &path, const PeakResponse &peaks)
-        : path(path)
+      ResidualDriftRecorder(const std::string &directory, const std::string &name,
+                            const PeakResponse &peaks, MemoryResults *memory)
+        : directory(directory)
+        , name(name)
         , peaks(peaks)
+        , memory(memory)
       {}
       void observe_step(const ResponseView &) override {}
       void
@@ -117,12 +122,13 @@ namespace poundfe
                   << peaks.floors().displacement()[i] << "\n";
               text += row.str();
             }
-        write_file_atomically(path, text);
+        write_result_text(memory, directory, name, text);
       }
 
     private:
-      const std::string   path;
+      const std::string   directory, name;
       const PeakResponse &peaks;
+      MemoryResults      *memory;
     };
 
     /// Columns and row of a time-series quantity, and what owns each
@@ -679,9 +685,10 @@ namespace poundfe
   Recorders
   make_recorders(const RecorderParameters &parameters, const std::string &input_file,
                  const ResponseView &state, const PeakResponse &peaks, const double time_step,
-                 const std::string &directory, RowSink *ranks)
+                 const std::string &directory, RowSink *ranks, MemoryResults *memory)
   {
-    const bool writes_files = !ranks || ranks->writes_files();
+    Assert(!ranks || !memory, dealii::ExcNotImplemented());
+    const bool writes_files = !memory && (!ranks || ranks->writes_files());
     const std::vector<RecorderRequest> requests = requests_of(parameters, input_file, state, peaks);
     // Every request is checked (series_of throws on an unknown member)
     // before a file or the directory is made: bad input writes nothing.
@@ -706,9 +713,9 @@ namespace poundfe
         const QuantityInfo &q = info(r.quantity);
         if (r.quantity == RecordedQuantity::residual_drift)
           {
-            if (writes_files) // from the merged peaks, at the end
+            if (writes_files || memory) // from the merged peaks, at the end
               recorders.observers.push_back(std::make_unique<ResidualDriftRecorder>(
-                directory + "/" + files_of(r.quantity, parameters.format).front(), peaks));
+                directory, files_of(r.quantity, parameters.format).front(), peaks, memory));
             continue;
           }
         std::vector<std::string> header{"time_s"};
@@ -718,6 +725,7 @@ namespace poundfe
         recorders.tables.push_back({r.quantity, table_files(parameters.format, q.stem).front(),
                                     static_cast<unsigned int>(header.size()), every});
         std::unique_ptr<TableWriter> table =
+          memory       ? memory->table_writer(q.stem, header) :
           writes_files ? make_table_writer(parameters.format, directory, q.stem, header, text) :
                          nullptr;
         if (ranks)

@@ -3,6 +3,7 @@
 #include <poundfe/output/observer.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/stick_slip_report.h>
+#include <poundfe/output/memory_results.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,7 +94,7 @@ namespace poundfe
 
   void
   write_friction_episodes(const std::string &directory, const ResponseView &state,
-                          const double end_time)
+                          const double end_time, MemoryResults *memory)
   {
     std::ostringstream csv;
     csv.precision(10);
@@ -105,6 +106,6 @@ namespace poundfe
             << e.start << "," << end << "," << end - e.start << "," << (e.end >= 0 ? 1 : 0)
             << "\n";
       }
-    write_file_atomically(directory + "/friction_episodes.csv", csv.str());
+    write_result_text(memory, directory, "friction_episodes.csv", csv.str());
   }
 } // namespace poundfe

@@ -1,9 +1,74 @@
+// The table writers' formats, and the memory a run's results go to instead
+// of files (output/memory_results.h).
 #include <poundfe/output/csv_writer.h>
+#include <poundfe/output/finite_output.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/npy_writer.h>
 #include <poundfe/output/table_writer.h>
 
+#include <cmath>
+
 namespace poundfe
 {
+  namespace
+  {
+    /// Rows appended to a MemoryResults table.
+    class MemoryTableWriter : public TableWriter
+    {
+    public:
+      explicit MemoryTableWriter(MemoryResults::Table &table)
+        : table(table)
+      {}
+
+      void
+      add_row(const double first, const std::vector<double> &values) override
+      {
+        // the message a file would give, naming the table as its CSV
+        if (!std::isfinite(first))
+          throw_not_finite(first, table.header[0], table.stem + ".csv");
+        for (std::size_t i = 0; i < values.size(); ++i)
+          if (!std::isfinite(values[i]))
+            throw_not_finite(values[i], table.header[i + 1], table.stem + ".csv");
+        table.values.push_back(first);
+        table.values.insert(table.values.end(), values.begin(), values.end());
+      }
+
+      void commit() override {}
+
+    private:
+      MemoryResults::Table &table;
+    };
+  } // namespace
+
+  std::unique_ptr<TableWriter>
+  MemoryResults::table_writer(const std::string &stem, const std::vector<std::string> &header)
+  {
+    tables.push_back({stem, header, {}});
+    return std::make_unique<MemoryTableWriter>(tables.back());
+  }
+
+  void
+  MemoryResults::set_text(const std::string &name, std::string text)
+  {
+    for (auto &[file, contents] : texts)
+      if (file == name)
+        {
+          contents = std::move(text);
+          return;
+        }
+    texts.emplace_back(name, std::move(text));
+  }
+
+  void
+  write_result_text(MemoryResults *memory, const std::string &directory, const std::string &name,
+                    const std::string &text)
+  {
+    if (memory)
+      memory->set_text(name, text);
+    else
+      write_file_atomically(directory + "/" + name, text);
+  }
+
   const NameTable<OutputFormat> &
   output_format_names()
   {

@@ -23,6 +23,8 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <sstream>
+
 namespace py = pybind11;
 
 namespace poundfe::python
@@ -215,6 +217,10 @@ namespace poundfe::python
           "time_step", [](const InputParameters &p) { return p.time_integration.newmark.time_step; })
         .def_property_readonly("output_directory",
                                [](const InputParameters &p) { return p.output.directory; })
+        .def_property_readonly("values",
+                               [](const InputParameters &p) { return p.values; },
+                               "Every entry as read (defaults included): (path, text) pairs "
+                               "in the order the program declares them.")
         .def("__repr__", [](const InputParameters &p) {
           std::string text = "<poundfe.Input '" + p.file + "'";
           for (const ParameterOverride &o : p.overrides)
@@ -230,6 +236,15 @@ namespace poundfe::python
         },
         py::arg("file"), py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
         "Read and check a .prm or .json file, with (path, value) overrides.");
+
+      m.def(
+        "declarations",
+        []() {
+          std::ostringstream text;
+          print_parameters(text);
+          return text.str();
+        },
+        "What `poundfe print-parameters` prints: every section and entry as declared.");
 
       m.def(
         "modal", [](const InputParameters &input) { return modes_of(*prepare(input)); },

@@ -14,13 +14,16 @@
 #include <poundfe/report/run_outputs.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/floor_response.h>
+#include <poundfe/output/memory_results.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <exception>
+#include <sstream>
 #include <iostream>
 
 namespace py = pybind11;
@@ -38,6 +41,31 @@ namespace poundfe::python
       Eigen::VectorXd     displacement, velocity, acceleration; // per equation, relative
       std::vector<double> floor_displacement, drift_ratio, floor_acceleration;
       std::size_t         n_impacts = 0;
+      /// Each building's name and its first floor's index in the floor arrays.
+      std::shared_ptr<const std::vector<std::pair<std::string, unsigned int>>> layout;
+      unsigned int n_floors = 0;
+
+      /// {name: {floor_displacement, drift_ratio, floor_acceleration}},
+      /// each building's floors bottom up (slices of the whole arrays).
+      py::dict
+      buildings() const
+      {
+        py::dict d;
+        for (std::size_t b = 0; b < layout->size(); ++b)
+          {
+            const unsigned int first = (*layout)[b].second;
+            const unsigned int end   = b + 1 < layout->size() ? (*layout)[b + 1].second : n_floors;
+            const auto slice = [&](const std::vector<double> &v) {
+              return std::vector<double>(v.begin() + first, v.begin() + end);
+            };
+            py::dict building;
+            building["floor_displacement"] = slice(floor_displacement);
+            building["drift_ratio"]        = slice(drift_ratio);
+            building["floor_acceleration"] = slice(floor_acceleration);
+            d[py::str((*layout)[b].first)] = building;
+          }
+        return d;
+      }
     };
 
     /// Calls `callback(state)` at step 0 and every `every` steps; checks for
@@ -53,7 +81,12 @@ namespace poundfe::python
         : callback(std::move(callback))
         , every(std::max(1u, every))
         , floors(model)
-      {}
+      {
+        auto buildings = std::make_shared<std::vector<std::pair<std::string, unsigned int>>>();
+        for (unsigned int b = 0; b < model.buildings.size(); ++b)
+          buildings->emplace_back(model.buildings[b].name, floors.index(b, 0));
+        layout = std::move(buildings);
+      }
 
       void
       observe_step(const ResponseView &state) override
@@ -108,41 +141,67 @@ namespace poundfe::python
         s.drift_ratio         = floors.drift_ratio();
         s.floor_acceleration  = floors.absolute_acceleration();
         s.n_impacts           = view.impact_log().impacts().size();
+        s.layout              = layout;
+        s.n_floors            = floors.n_floors();
         return s;
       }
 
       py::object         callback;
       const unsigned int every;
       FloorResponse      floors;
+      std::shared_ptr<const std::vector<std::pair<std::string, unsigned int>>> layout;
       std::exception_ptr kept;
     };
 
-    /// A time history through run_time_history into `directory`: the
-    /// recorders' tables (as NumPy .npy with `npy`), summary.json and
-    /// impacts.csv; VTU frames and plots only with `vtu_and_plots`.
+    /// A run's tables as NumPy arrays (rows x columns, the time first),
+    /// moved out of `memory` without a copy, with their headers; its other
+    /// texts (summary.json, impacts.csv, the profiles) by file name.
+    py::dict
+    memory_dict(MemoryResults &memory)
+    {
+      py::list tables;
+      for (MemoryResults::Table &table : memory.tables)
+        {
+          const std::size_t n_columns = table.header.size();
+          auto *values = new std::vector<double>(std::move(table.values));
+          py::capsule owner(values, [](void *p) { delete static_cast<std::vector<double> *>(p); });
+          const py::ssize_t n_rows = static_cast<py::ssize_t>(values->size() / n_columns);
+          py::array_t<double> array({n_rows, static_cast<py::ssize_t>(n_columns)}, values->data(),
+                                    owner);
+          tables.append(py::make_tuple(table.stem, table.header, array));
+        }
+      py::dict texts;
+      for (const auto &[name, text] : memory.texts)
+        texts[py::str(name)] = py::str(text);
+      py::dict d;
+      d["tables"] = tables;
+      d["texts"]  = texts;
+      return d;
+    }
+
+    /// A time history through the command line's run_time_history: into
+    /// `directory` (its files; VTU frames and plots as the input asks), or
+    /// with an empty `directory` into memory (the same observers, no file).
     py::dict
     run_time_history_into(const InputParameters &input, const std::string &directory,
-                          const bool npy, const bool vtu_and_plots, py::object callback,
-                          const unsigned int every)
+                          py::object callback, const unsigned int every)
     {
-      InputParameters run_input = input;
-      if (npy)
-        run_input.output.recorders.format = OutputFormat::npy;
-      const std::shared_ptr<const Analysis> analysis = prepare(run_input);
+      const std::shared_ptr<const Analysis> analysis = prepare(input);
       CallbackObserver observer(std::move(callback), every, analysis->model);
       RunResult        result;
+      MemoryResults    memory;
       {
         py::gil_scoped_release release;
-        const RunParameters parameters = run_parameters(run_input);
+        const RunParameters parameters = run_parameters(input);
         const Excitation    excitation = make_excitation(*analysis, parameters.time_history);
         RunOptions          options;
         options.output_directory = directory;
-        options.vtu = options.plots = vtu_and_plots;
+        options.memory           = directory.empty() ? &memory : nullptr;
         options.observers        = {&observer};
         result                   = run_time_history(*analysis, parameters, excitation, options);
       }
-      observer.raise_kept(); // its files finished, summary.json saying "interrupted"
-      py::dict d;
+      observer.raise_kept(); // its results finished, the summary saying "interrupted"
+      py::dict d = directory.empty() ? memory_dict(memory) : py::dict();
       d["status"]               = result.status.name();
       d["message"]              = result.status.message;
       d["output_failed"]        = result.status.output_failed;
@@ -178,10 +237,13 @@ namespace poundfe::python
     /// (commands/dispatch.h): the same rules, checks and messages, raised as
     /// exceptions (a refused command line as ValueError, bad input as
     /// InputError) instead of exit status 1; returns the exit status otherwise.
+    /// With `report`, what the command writes on standard output (its report
+    /// on the terminal) goes there instead.
     int
     run_command_of_table(const std::string &name, const std::vector<std::string> &arguments,
                          const std::string &output, const unsigned int n_realizations,
-                         const std::vector<std::pair<std::string, std::string>> &overrides)
+                         const std::vector<std::pair<std::string, std::string>> &overrides,
+                         std::string *report = nullptr)
     {
       const Command *command = find_command(name);
       if (command == nullptr)
@@ -192,10 +254,31 @@ namespace poundfe::python
       int status = 0;
       {
         py::gil_scoped_release release;
+        std::ostringstream     captured;
+        // std::cout's buffer is swapped back however the command ends
+        struct Restore
+        {
+          std::streambuf *buffer;
+          ~Restore() { std::cout.rdbuf(buffer); }
+        } restore{report ? std::cout.rdbuf(captured.rdbuf()) : std::cout.rdbuf()};
         status = dispatch_command(*command, request, ensure_mpi, std::cerr);
         std::cout.flush();
+        if (report)
+          *report = captured.str();
       }
       return status;
+    }
+
+    /// run_command_of_table with its report kept: (status, report).
+    std::pair<int, std::string>
+    run_command_reported(const std::string &name, const std::vector<std::string> &arguments,
+                         const std::string &output, const unsigned int n_realizations,
+                         const std::vector<std::pair<std::string, std::string>> &overrides)
+    {
+      std::string report;
+      const int   status =
+        run_command_of_table(name, arguments, output, n_realizations, overrides, &report);
+      return {status, report};
     }
   } // namespace
 
@@ -215,18 +298,32 @@ namespace poundfe::python
       .def_readonly("floor_acceleration", &StepState::floor_acceleration,
                     "per floor, m/s^2, absolute")
       .def_readonly("n_impacts", &StepState::n_impacts, "impacts so far")
+      .def_property_readonly("buildings", &StepState::buildings,
+                             "{building: {floor_displacement, drift_ratio, floor_acceleration}}, "
+                             "each building's floors bottom up")
       .def("__repr__", [](const StepState &s) {
         return "<poundfe.StepState step " + std::to_string(s.step) + ", t = " +
                std::to_string(s.time) + " s>";
       });
 
     m.def("run_time_history", &run_time_history_into, py::arg("input"), py::arg("directory"),
-          py::arg("npy"), py::arg("vtu_and_plots"), py::arg("callback") = py::none(),
-          py::arg("every") = 1, "A time history into `directory`; use poundfe.run.");
-    m.def("command", &run_command_of_table, py::arg("name"), py::arg("arguments"),
+          py::arg("callback") = py::none(), py::arg("every") = 1,
+          "A time history into `directory` (\"\": into memory); use poundfe.run.");
+    m.def(
+      "command",
+      [](const std::string &name, const std::vector<std::string> &arguments,
+         const std::string &output, const unsigned int realizations,
+         const std::vector<std::pair<std::string, std::string>> &overrides) {
+        return run_command_of_table(name, arguments, output, realizations, overrides);
+      },
+      py::arg("name"), py::arg("arguments"), py::arg("output") = "", py::arg("realizations") = 0,
+      py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
+      "A command of the command table; use poundfe.command.");
+    m.def("command_reported", &run_command_reported, py::arg("name"), py::arg("arguments"),
           py::arg("output") = "", py::arg("realizations") = 0,
           py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
-          "A command of the command table; use poundfe.command.");
+          "A command of the command table, its report returned: (status, report); use "
+          "poundfe.montecarlo, ....");
     py::module_::import("atexit").attr("register")(py::cpp_function([]() {
       delete mpi;
       mpi = nullptr;

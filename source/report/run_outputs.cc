@@ -12,6 +12,7 @@
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
 #include <poundfe/output/response_range.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/vtu_series.h>
 
 #include <poundfe/dynamics/partitioned_stepper.h>
@@ -127,7 +128,9 @@ namespace poundfe
       const double            dt        = parameters.time_history.time_integration.newmark.time_step;
       const std::string      &directory = options.output_directory;
       const bool              writes    = !ranks || ranks->writes_files();
-      if (!directory.empty())
+      MemoryResults *const    memory    = options.memory;
+      Assert(!memory || (directory.empty() && !ranks), dealii::ExcNotImplemented());
+      if (!directory.empty() || memory)
         {
           observers.insert(observers.end(), {&base_shears, &plan});
           std::vector<std::string> files; // of the recorders and VTU, for summary.json
@@ -135,23 +138,24 @@ namespace poundfe
             {
               Recorders recorders =
                 make_recorders(output.recorders, parameters.time_history.input.file, view, peaks,
-                               dt, directory, ranks);
+                               dt, directory, ranks, memory);
               if (options.console && writes)
                 for (const TableShape &table : recorders.tables)
                   *options.console << large_table_note(table, n_steps, output.recorders.format);
               outputs = std::move(recorders.observers);
               files   = std::move(recorders.files);
             }
-          else if (writes) // the recorders prepare it after checking their input
+          else if (writes && !memory) // the recorders prepare it after checking their input
             prepare_output_directory(directory);
           if (options.csv && output.floor_spectra) // on every rank: merged by floor
             {
               spectra = std::make_unique<FloorSpectra>(
-                peaks, parameters.spectrum.periods(), parameters.spectrum.damping_ratios, directory);
+                peaks, parameters.spectrum.periods(), parameters.spectrum.damping_ratios, directory,
+                memory);
               observers.push_back(spectra.get());
               files.push_back(FloorSpectra::file_name);
             }
-          if (options.vtu && output.vtu_interval > 0 && (writes || field_recorder))
+          if (options.vtu && !memory && output.vtu_interval > 0 && (writes || field_recorder))
             {
               const unsigned int every =
                 vtu_steps_per_frame(output, dt, n_steps, writes ? options.console : nullptr);
@@ -168,7 +172,7 @@ namespace poundfe
           if (writes)
             outputs.push_back(std::make_unique<RunSummary>(
               analysis, parameters, excitation, peaks, range, base_shears, plan, directory,
-              options.plots && output.plots, solver, tangent_update, files));
+              options.plots && output.plots, solver, tangent_update, files, memory));
         }
       if (options.progress && writes)
         outputs.push_back(std::make_unique<ProgressReport>(n_steps));

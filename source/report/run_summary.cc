@@ -16,10 +16,12 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/response_range.h>
+#include <poundfe/output/memory_results.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -132,7 +134,7 @@ namespace poundfe
                          const ResponseRange &range, const BaseShearPeaks &base_shears,
                          const PlanResponse &plan, const std::string &directory, const bool plots,
                          const std::string &solver, const std::string &tangent_update,
-                         std::vector<std::string> files)
+                         std::vector<std::string> files, MemoryResults *memory)
     : analysis(analysis)
     , parameters(parameters)
     , excitation(excitation)
@@ -145,6 +147,7 @@ namespace poundfe
     , files(std::move(files))
     , base_shears(base_shears)
     , plan(plan)
+    , memory(memory)
   {}
 
   void
@@ -173,16 +176,16 @@ namespace poundfe
     // be written is removed, not left incomplete)
     std::vector<std::string> written;
     for (const std::string &file : files)
-      if (!status.output_failed || std::filesystem::exists(directory + "/" + file))
+      if (memory || !status.output_failed || std::filesystem::exists(directory + "/" + file))
         written.push_back(file);
     if (attempt([&]() { write_profiles(); }))
       written.insert(written.end(), {"drift_profile.csv", "acceleration_profile.csv"});
     if (!analysis.model.gaps.empty() && attempt([&]() { write_impacts(state); }))
       written.push_back("impacts.csv");
     if (!analysis.model.friction_surfaces.empty() &&
-        attempt([&]() { write_friction_episodes(directory, state, status.end_time); }))
+        attempt([&]() { write_friction_episodes(directory, state, status.end_time, memory); }))
       written.push_back("friction_episodes.csv");
-    if (plots && !reported.output_failed) // before summary.json, which lists them
+    if (plots && !memory && !reported.output_failed) // before summary.json, which lists them
       for (const std::string &png :
            RunPlots(analysis, parameters, excitation, peaks, base_shears, directory, files)
              .draw(state))
@@ -216,8 +219,8 @@ namespace poundfe
           append_number(accel, floors.peak_displacement()[i]);
           accel += '\n';
         }
-    write_file_atomically(directory + "/drift_profile.csv", drift);
-    write_file_atomically(directory + "/acceleration_profile.csv", accel);
+    write_result_text(memory, directory, "drift_profile.csv", drift);
+    write_result_text(memory, directory, "acceleration_profile.csv", accel);
   }
 
   void
@@ -254,15 +257,17 @@ namespace poundfe
         row << "\n";
         csv += row.str();
       }
-    write_file_atomically(directory + "/impacts.csv", csv);
+    write_result_text(memory, directory, "impacts.csv", csv);
   }
 
   void
   RunSummary::write_json(const ResponseView &state, const RunStatus &status,
                          const std::vector<std::string> &written) const
   {
-    AtomicFile file(directory + "/summary.json"); // streamed: a large model's is large
-    JsonWriter json(&file);
+    // streamed into its file: a large model's is large
+    std::unique_ptr<AtomicFile> file =
+      memory ? nullptr : std::make_unique<AtomicFile>(directory + "/summary.json");
+    JsonWriter json(file.get());
     begin_summary(json, "run", parameters.time_history.input, status.name());
     if (status.kind == RunStatus::Kind::failed)
       json.value("message", status.message);
@@ -293,8 +298,10 @@ namespace poundfe
     write_energy_and_newton(json, state);
     write_run(json, status, written);
     json.end_object();
+    if (memory)
+      return memory->set_text("summary.json", json.str());
     json.finish();
-    file.commit();
+    file->commit();
   }
 
   void

@@ -1,11 +1,13 @@
 // Contact laws against independent references: central differences of
 // both tangents; no tensile force anywhere; the literature formulas; the
 // calibration's e recomputed by an independent impact simulation (a
-// Newmark run of the program itself is in tests/integration).
+// Newmark run of the program itself is in tests/integration); a repeated
+// calibration remembered, with the same bits.
 #include <poundfe/laws/contact_law.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -134,3 +136,24 @@ BOOST_AUTO_TEST_CASE(no_contact_law_is_undamped)
   BOOST_TEST(contact_law_is_damped("kelvin-voigt"));
   BOOST_CHECK_THROW(contact_law_is_damped("no such law"), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_CASE(a_repeated_calibration_is_remembered)
+{
+  // The same arguments again: the same damping, to the bit, without the
+  // bisection's tens of simulated impacts (a loop of runs prepares the same
+  // law each time). A new e is calibrated anew.
+  using clock          = std::chrono::steady_clock;
+  ContactLawParameters p = parameters_of("hertz-damp");
+  const auto   start     = clock::now();
+  const double first     = calibrate_damping(p, 0.61, 1.0);
+  const auto   middle    = clock::now();
+  const double again     = calibrate_damping(p, 0.61, 1.0);
+  const auto   end       = clock::now();
+  const double calibrating = std::chrono::duration<double>(middle - start).count();
+  const double remembered = std::chrono::duration<double>(end - middle).count();
+  BOOST_TEST(again == first); // exact
+  BOOST_TEST(20 * remembered < calibrating,
+             "the second calibration took " << remembered << " s, the first " << calibrating);
+  BOOST_TEST(calibrate_damping(p, 0.62, 1.0) != first);
+}
+

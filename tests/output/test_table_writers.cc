@@ -12,14 +12,20 @@
 //    in <name>.columns.txt. summary.json lists exactly the files in the
 //    directory, and a run in npy over an earlier CSV run's directory leaves
 //    none of that run's tables.
+//  - In memory (MemoryResults, Python's results): the same run's tables
+//    hold the CSV's numbers to the bit, its other texts (summary.json but
+//    for the wall time, impacts.csv, the profiles) are the files' bytes,
+//    and no directory is made.
 // Every comparison is exact: both formats are exact encodings of the same
 // doubles (CSV: the shortest text that strtod reads back to the same
 // double; glibc's strtod rounds correctly), so any difference is a bug.
+#include <poundfe/base/exceptions.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/time_history.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/report/run_outputs.h>
 #include <poundfe/output/csv_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/npy_writer.h>
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/output_directory.h>
@@ -290,3 +296,58 @@ BOOST_AUTO_TEST_CASE(npy_holds_the_csv_numbers_to_the_bit)
       }
     }
 }
+
+BOOST_AUTO_TEST_CASE(memory_holds_the_files_numbers_and_texts)
+{
+  // the 3+2-storey shear pair with linear gaps, 5 s: impacts and profiles
+  InputParameters input                  = read_parameters("bench/shear-pair-linear.prm");
+  input.time_integration.end_time        = 5;
+  input.output.recorders.output_interval = 0;
+  const std::string csv = fresh_directory("memory-csv");
+  BOOST_REQUIRE(run(input, OutputFormat::csv, csv).status.completed());
+
+  const Analysis analysis = prepare_analysis(input);
+  MemoryResults  memory;
+  RunOptions     options;
+  options.memory = &memory;
+  BOOST_REQUIRE(run_time_history(analysis, run_parameters(input), make_excitation(analysis, input),
+                                 options)
+                  .status.completed());
+  unsigned int n_tables = 0;
+  for (const MemoryResults::Table &table : memory.tables)
+    {
+      Table rows{table.header, {}};
+      for (std::size_t i = 0; i < table.values.size(); i += table.header.size())
+        rows.rows.emplace_back(table.values.begin() + i,
+                               table.values.begin() + i + table.header.size());
+      require_same(rows, read_csv(csv + "/" + table.stem + ".csv"), table.stem);
+      ++n_tables;
+    }
+  BOOST_TEST(n_tables >= 4u);
+  unsigned int n_texts = 0;
+  for (const auto &[name, text] : memory.texts)
+    {
+      BOOST_TEST_CONTEXT(name)
+      {
+        const std::string file = read_bytes(csv + "/" + name);
+        if (name == "summary.json") // but for its wall time
+          {
+            const std::regex wall("\"(wall_time_s|steps_per_second)\": [0-9.e+-]+");
+            BOOST_TEST(std::regex_replace(text, wall, "") == std::regex_replace(file, wall, ""));
+          }
+        else
+          BOOST_TEST(text == file);
+        ++n_texts;
+      }
+    }
+  BOOST_TEST(n_texts >= 4u); // summary, impacts, the two profiles
+  std::filesystem::remove_all(csv);
+
+  // a number that is not finite: the file writers' message, naming the table
+  MemoryResults                   numbers;
+  const std::unique_ptr<TableWriter> writer = numbers.table_writer("drift", {"time_s", "a"});
+  writer->add_row(0, {1.5});
+  BOOST_CHECK_THROW(writer->add_row(0.1, {std::nan("")}), NumericalError);
+  BOOST_TEST(numbers.tables.front().values == std::vector<double>({0, 1.5}));
+}
+

@@ -21,9 +21,9 @@ def run_command_line(*arguments):
 
 
 def read_csv_text(path):
-    """(header, rows of str) of a CSV file."""
+    """(header, rows of str) of a CSV file (blank and '#' lines left out)."""
     with open(path, newline="") as f:
-        rows = list(csv.reader(f))
+        rows = [row for row in csv.reader(f) if row and not row[0].startswith("#")]
     return rows[0], rows[1:]
 
 
@@ -54,3 +54,79 @@ class TestCase(unittest.TestCase):
         if not same.all():
             i = np.argwhere(~same)[0]
             self.fail(f"{what}: differs at {tuple(i)}: {actual[tuple(i)]!r} != {expected[tuple(i)]!r}")
+
+
+def tables_of_directory(directory):
+    """{stem: (header, rows of str)} of every CSV file under `directory`
+    ("sub/stem" for a subdirectory's)."""
+    tables = {}
+    for root, _, files in os.walk(directory):
+        for name in files:
+            if name.endswith(".csv"):
+                path = os.path.join(root, name)
+                stem = os.path.splitext(os.path.relpath(path, directory))[0]
+                tables[stem.replace(os.sep, "/")] = read_csv_text(path)
+    return tables
+
+
+def without_clock(summary):
+    """summary.json without what depends on the clock (wall times, rates)."""
+    if isinstance(summary, dict):
+        return {k: without_clock(v) for k, v in summary.items()
+                if "wall" not in k and "per_second" not in k and k != "timing"}
+    if isinstance(summary, list):
+        return [without_clock(v) for v in summary]
+    return summary
+
+
+class CommandTestCase(TestCase):
+    """A command from Python against the same command on the command line."""
+
+    def assertSameAsCommandLine(self, python_name, file, overrides, command=None):
+        """Runs `poundfe COMMAND FILE --set ...` and poundfe.<python_name>
+        (FILE, overrides=...): every CSV table the command line wrote is in
+        the result, its numbers the same doubles (its texts the same), and
+        summary.json the same but for the clock. Returns the result."""
+        import poundfe
+        command = command or python_name.replace("_", "-")
+        from poundfe.model import _value_text
+        sets = [a for path, value in overrides.items()
+                for a in ("--set", f"{path}={_value_text(value)}")]
+        cli = os.path.join(self.tmp, "cli")
+        status, _, err = run_command_line(command, file, "--output", cli, *sets)
+        self.assertEqual(status, 0, err)
+        result = getattr(poundfe, python_name)(file, overrides=overrides)
+        self.assertEqual(result.status, read_summary(cli)["status"])
+        expected = tables_of_directory(cli)
+        self.assertGreater(len(expected), 0, "the command wrote no table")
+        self.assertEqual(sorted(result.tables), sorted(expected))
+        for stem, (header, rows) in expected.items():
+            self.assertTableIdentical(result.tables[stem], header, rows, stem)
+        self.assertEqual(without_clock(result.summary), without_clock(read_summary(cli)))
+        return result
+
+    def assertTableIdentical(self, table, header, rows, what):
+        """A result's table (Table or structured array) against a CSV's
+        header and rows: numbers by Python's float() ('' as NaN), texts as
+        they are."""
+        import numpy as np
+        import poundfe
+        if isinstance(table, poundfe.Table) and not any("wall" in name for name in header):
+            self.assertEqual(table.names, header, what)
+            self.assertIdentical(table.data, [[float(x) for x in row] for row in rows], what)
+            return
+        self.assertEqual(len(table), len(rows), what)
+        if isinstance(table, poundfe.Table):
+            self.assertEqual(table.names, header, what)
+            table = {name: table.data[:, i] for i, name in enumerate(header)}
+        else:
+            self.assertEqual(list(table.dtype.names), header, what)
+        for i, name in enumerate(header):
+            column = [row[i] for row in rows]
+            if "wall" in name:  # the clock's
+                continue
+            if table[name].dtype.kind == "f":
+                self.assertIdentical(table[name], [float(x) if x else np.nan for x in column],
+                                     f"{what}: {name}")
+            else:
+                self.assertEqual(list(table[name]), column, f"{what}: {name}")

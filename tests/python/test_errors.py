@@ -100,5 +100,85 @@ class Commands(TestCase):
             poundfe.command("run", EXAMPLE, realizations=3)
 
 
+class BadPythonInput(TestCase):
+    """Wrong types, NaN, huge strings, re-entry and threads: a Python
+    exception (the command line's message where the reader decides),
+    never a crash of the interpreter."""
+
+    def assertSameAsSet(self, path, value, text):
+        """poundfe.read with {path: value} raises the message of the
+        command line's `--set path=text` on the same file."""
+        status, message = command_line_message(
+            ["modal", EXAMPLE, "--output", self.tmp, "--set", f"{path}={text}"], "poundfe: error: ")
+        self.assertEqual(status, 1)
+        with self.assertRaises(poundfe.InputError) as caught:
+            poundfe.read(EXAMPLE, overrides={path: value})
+        self.assertEqual(str(caught.exception), message)
+
+    def test_nan_and_huge_values(self):
+        self.assertSameAsSet("Model/Separations", float("nan"), "nan")
+        self.assertSameAsSet("Model/Separations", np.float64("inf"), "inf")
+        huge = "9" * 100000
+        self.assertSameAsSet("Model/Separations", huge, huge)
+        name = "x" * 100000  # a name may be long: read as it is
+        read = poundfe.read(EXAMPLE, overrides={"Building 1/Name": name})
+        self.assertEqual(dict(read.values)["Building 1/Name"], name)
+        self.assertEqual(read.buildings[0], name)
+
+    def test_wrong_types(self):
+        with self.assertRaisesRegex(TypeError, "overrides"):
+            poundfe.read(EXAMPLE, overrides=[1, 2])
+        with self.assertRaisesRegex(TypeError, "overrides: a path is a str"):
+            poundfe.read(EXAMPLE, overrides={3: 1})
+        with self.assertRaises(TypeError):
+            poundfe.run(42)
+        with self.assertRaisesRegex(TypeError, "callback"):
+            poundfe.run(EXAMPLE, callback="not a function")
+        with self.assertRaisesRegex(ValueError, "every"):
+            poundfe.run(EXAMPLE, callback=print, every=0)
+        with self.assertRaises(TypeError):
+            poundfe.command("modal", EXAMPLE, realizations="three")
+
+    def test_callback_reentering_run(self):
+        short = poundfe.read(EXAMPLE, overrides={"Time integration/End time": 0.05})
+
+        def again(state):
+            poundfe.run(short)
+
+        with self.assertRaisesRegex(RuntimeError, "callback cannot start another run"):
+            poundfe.run(short, callback=again, every=10)
+        self.assertEqual(poundfe.run(short).status, "completed")  # usable afterwards
+
+    def test_keyboard_interrupt_in_memory(self):
+        short = poundfe.read(EXAMPLE, overrides={"Time integration/End time": 0.5})
+
+        def interrupt(state):
+            if state.step == 200:
+                raise KeyboardInterrupt
+
+        with self.assertRaises(KeyboardInterrupt):
+            poundfe.run(short, callback=interrupt, every=100)
+        self.assertEqual(poundfe.run(short).status, "completed")  # usable afterwards
+
+    def test_two_threads(self):
+        import threading
+        short = poundfe.read(EXAMPLE, overrides={"Time integration/End time": 0.5})
+        results, errors = [None, None], []
+
+        def run(i):
+            try:
+                results[i] = poundfe.run(short)
+            except BaseException as error:  # reported below
+                errors.append(error)
+
+        threads = [threading.Thread(target=run, args=(i,)) for i in range(2)]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join()
+        self.assertEqual(errors, [])
+        self.assertIdentical(results[0].drift.data, results[1].drift.data, "two threads")
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -56,7 +56,10 @@ class ModelInPython(TestCase):
             self.assertEqual(from_python.series[stem].names, table.names)
             self.assertIdentical(from_python.series[stem].data, table.data, stem)
         for name in from_file.impacts.dtype.names:
-            self.assertEqual(list(from_python.impacts[name]), list(from_file.impacts[name]), name)
+            if from_file.impacts[name].dtype.kind == "f":  # an impact not ended: NaN
+                self.assertIdentical(from_python.impacts[name], from_file.impacts[name], name)
+            else:
+                self.assertEqual(list(from_python.impacts[name]), list(from_file.impacts[name]), name)
 
     def test_written_file_runs_on_the_command_line(self):
         path = os.path.join(self.tmp, "built.prm")

@@ -1,8 +1,9 @@
 """poundfe.run against `poundfe run` on the default example (two frames that
 pound, 20000 steps, 17 impacts): every recorded series, the peaks, the
-impact log and the modes are the command line's doubles, to the last digit
-(reference: the command line's files, parsed with Python's float(); tolerance
-none: the same engine on the same input must give the same numbers)."""
+impact log and the modes, which poundfe.run keeps in memory (no file
+written), are the command line's doubles, to the last digit (reference: the
+command line's files, parsed with Python's float(); tolerance none: the
+same engine and observers on the same input must give the same numbers)."""
 
 import os
 import unittest
@@ -23,7 +24,16 @@ class RunAgainstCommandLine(TestCase):
         status, _, err = run_command_line("run", EXAMPLE, "--output", cls.cli)
         assert status == 0, err
         cls.calls = []
-        cls.results = poundfe.run(poundfe.read(EXAMPLE), callback=cls.calls.append, every=100)
+        # in memory: no file or directory may appear in the temporary area
+        import tempfile
+        cls.empty = tempfile.TemporaryDirectory(prefix="poundfe-empty-")
+        previous, tempfile.tempdir = tempfile.tempdir, cls.empty.name
+        try:
+            cls.results = poundfe.run(poundfe.read(EXAMPLE), callback=cls.calls.append, every=100)
+        finally:
+            tempfile.tempdir = previous
+        cls.left = os.listdir(cls.empty.name)
+        cls.empty.cleanup()
 
     @classmethod
     def tearDownClass(cls):
@@ -94,6 +104,52 @@ class RunAgainstCommandLine(TestCase):
             with open(os.path.join(self.tmp, name)) as a, open(os.path.join(self.cli, name)) as b:
                 self.assertEqual(a.read(), b.read(), name)
         self.assertIdentical(results.drift.data, self.results.drift.data, "drift")
+
+    def test_in_memory_writes_nothing(self):
+        self.assertEqual(self.left, [])
+        self.assertEqual(self.results.summary["output"]["files"][-1], "summary.json")
+        self.assertFalse(self.results.drift.data.flags["OWNDATA"])  # moved, not copied
+
+    def test_callback_by_building(self):
+        state = self.calls[50]
+        self.assertEqual(list(state.buildings), ["A3", "B2"])
+        self.assertEqual(len(state.buildings["A3"]["floor_displacement"]), 3)
+        self.assertIdentical(np.concatenate([b["floor_displacement"]
+                                             for b in state.buildings.values()]),
+                             state.floor_displacement, "floors by building")
+
+    def test_floor_spectra_and_residual_drift_in_memory(self):
+        file = "input/floor-spectra.prm"
+        short = {"Time integration/End time": 2, "Output/Plots": False,
+                 "Output/Recorders/Record": "floor displacement; residual drift"}
+        sets = [a for p, v in short.items()
+                for a in ("--set", f"{p}={poundfe.model._value_text(v)}")]
+        status, _, err = run_command_line("run", file, "--output", self.tmp, *sets)
+        self.assertEqual(status, 0, err)
+        results = poundfe.run(poundfe.read(file, overrides=short))
+        checked = 0
+        for name in os.listdir(self.tmp):
+            if not name.endswith(".csv"):
+                continue
+            header, rows = read_csv_text(os.path.join(self.tmp, name))
+            stem = name[:-4]
+            table = results.series.get(stem)
+            if table is None:
+                table = results.impacts if stem == "impacts" else results.tables[stem]
+            if isinstance(table, poundfe.Table):
+                self.assertIdentical(table.data, [[float(x) for x in r] for r in rows], stem)
+            else:
+                self.assertEqual(list(table.dtype.names), header, stem)
+                for i, column in enumerate(header):
+                    if table[column].dtype.kind == "f":
+                        self.assertIdentical(table[column], [float(r[i]) for r in rows],
+                                             f"{stem}: {column}")
+                    else:
+                        self.assertEqual(list(table[column]), [r[i] for r in rows], stem)
+            checked += 1
+        self.assertIn("floor_spectra", results.tables)
+        self.assertIn("residual_drift", results.tables)
+        self.assertGreaterEqual(checked, 5)
 
     def test_callback_exception_stops_the_run(self):
         calls = []

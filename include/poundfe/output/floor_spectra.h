@@ -20,13 +20,17 @@
 
 namespace poundfe
 {
+  class MemoryResults;
+
   class FloorSpectra : public StepObserver
   {
   public:
     /// Reads the floors' absolute accelerations from `peaks`, which must be
-    /// observed before this.
+    /// observed before this. With `memory` the table goes there, not to a
+    /// file (output/table_writer.h).
     FloorSpectra(const PeakResponse &peaks, const std::vector<double> &periods,
-                 const std::vector<double> &damping_ratios, std::string directory);
+                 const std::vector<double> &damping_ratios, std::string directory,
+                 MemoryResults *memory = nullptr);
 
     void initialize(const ResponseView &state) override;
     void observe_step(const ResponseView &state) override;
@@ -46,6 +50,7 @@ namespace poundfe
 
     const PeakResponse              &peaks;
     const std::string                directory;
+    MemoryResults                   *memory;
     SpectralOscillators              ground;
     std::vector<SpectralOscillators> floors;
     /// After merge(): floor f's peak displacements (oscillator i) at

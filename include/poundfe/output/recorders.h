@@ -46,6 +46,7 @@ namespace poundfe
   std::string large_table_note(const TableShape &table, unsigned long n_steps, OutputFormat format);
 
   class TableWriter;
+  class MemoryResults;
 
   /// Where the recorders of a run partitioned by building send their rows
   /// (observation by rank: report/run_outputs.cc). Every rank's recorders
@@ -72,11 +73,13 @@ namespace poundfe
   /// is removed) or makes a file; also removes the recorder files of either
   /// format that an earlier run left without a manifest. With `ranks`
   /// (observation by rank) the rows go through it, and only the rank that
-  /// writes the files touches the directory.
+  /// writes the files touches the directory. With `memory` (not with
+  /// `ranks`) the tables go there and the directory is not touched.
   Recorders
   make_recorders(const RecorderParameters &parameters, const std::string &input_file,
                  const ResponseView &state, const PeakResponse &peaks, double time_step,
-                 const std::string &directory, RowSink *ranks = nullptr);
+                 const std::string &directory, RowSink *ranks = nullptr,
+                 MemoryResults *memory = nullptr);
 } // namespace poundfe
 
 #endif

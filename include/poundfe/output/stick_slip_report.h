@@ -12,6 +12,7 @@
 namespace poundfe
 {
   class JsonWriter;
+  class MemoryResults;
   class PeakResponse;
   class ResponseView;
 
@@ -28,9 +29,10 @@ namespace poundfe
   void write_springs_and_friction(JsonWriter &json, const ResponseView &state,
                                   const PeakResponse &peaks, double end_time);
 
-  /// friction_episodes.csv in `directory`, atomically.
+  /// friction_episodes.csv in `directory`, atomically (into `memory`
+  /// when given: output/table_writer.h).
   void write_friction_episodes(const std::string &directory, const ResponseView &state,
-                               double end_time);
+                               double end_time, MemoryResults *memory = nullptr);
 } // namespace poundfe
 
 #endif

@@ -14,6 +14,8 @@
 
 namespace poundfe
 {
+  class MemoryResults;
+
   struct RunOptions
   {
     std::string output_directory; // empty: no files at all (benchmarks, tests)
@@ -29,6 +31,11 @@ namespace poundfe
     /// The caller's own observers, after the standard ones (e.g. the Python
     /// module's callback every N steps).
     Observers observers;
+    /// The recorders' tables and the summary's texts kept here instead of
+    /// files (output/table_writer.h; Python's results in memory): with an
+    /// empty output_directory, the observers of a run with one, without VTU
+    /// and plots; nothing is written.
+    MemoryResults *memory = nullptr;
   };
 
   /// What a run with the standard observers reports to its caller.

@@ -22,6 +22,7 @@
 namespace poundfe
 {
   class JsonWriter;
+  class MemoryResults;
   class PeakResponse;
   class ResponseRange;
 
@@ -43,13 +44,14 @@ namespace poundfe
     /// `solver` and `tangent_update` name the integrator's choices; `files`
     /// are those the other observers write (recorders, VTU index); `range`'s
     /// warnings go to "warnings"; `base_shears` and `plan` (at the steps)
-    /// must be observed with it.
+    /// must be observed with it. With `memory` the texts go there
+    /// (output/table_writer.h), no file is written and nothing is drawn.
     RunSummary(const Analysis &analysis, const RunParameters &parameters,
                const Excitation &excitation, const PeakResponse &peaks,
                const ResponseRange &range, const BaseShearPeaks &base_shears,
                const PlanResponse &plan, const std::string &directory, bool plots,
                const std::string &solver, const std::string &tangent_update,
-               std::vector<std::string> files);
+               std::vector<std::string> files, MemoryResults *memory = nullptr);
 
     void observe_step(const ResponseView &) override {} // the others observe for it
     void finish(const ResponseView &state, const RunStatus &status) override;
@@ -91,6 +93,7 @@ namespace poundfe
     const BaseShearPeaks &base_shears;
     /// 3D buildings: rotations, irregularity ratios, base shears and torque.
     const PlanResponse &plan;
+    MemoryResults      *memory;
   };
 } // namespace poundfe
 

@@ -14,17 +14,51 @@ files). Bad input raises poundfe.InputError (a ValueError), a numerical
 failure poundfe.NumericalError (a RuntimeError).
 """
 
+import contextlib
 import os
-import shutil
-import tempfile
+import threading
+
+import numpy as np
 
 from . import _core
 from ._core import Input, InputError, NumericalError, OutputError, StepState
-from .model import Model, _value_text, parameter_text
+from .model import Model, _value_text, keyword_table, parameter_text, write_input
 from .results import Modes, Results, Table
+from .commands import COMMANDS, CommandResult, _command_function, run_command
 
 __all__ = ["read", "run", "modal", "moment_curvature", "command", "Model", "Input", "Results", "Modes", "Table",
-           "StepState", "InputError", "NumericalError", "OutputError", "parameter_text"]
+           "CommandResult", "StepState", "InputError", "NumericalError", "OutputError",
+           "parameter_text", "keyword_table", *COMMANDS]
+
+# poundfe.montecarlo(model, output=None, realizations=None, overrides=None), ...:
+# each command of the command line returning a CommandResult (commands.py).
+for _python_name, _name in COMMANDS.items():
+    globals()[_python_name] = _command_function(_python_name, _name)
+del _python_name, _name
+
+
+Input.write = write_input  # Input.write(path): its every entry as a .prm file
+
+# One run or command at a time in a process: poundfe's engine keeps
+# process-wide state (the interruption flag, the output directory's
+# manifest, MPI), so a second thread waits for the first, and a callback
+# that starts a run inside its own run is refused (it would wait forever).
+_engine_lock = threading.Lock()
+_engine_owner = None
+
+
+@contextlib.contextmanager
+def _engine():
+    global _engine_owner
+    if _engine_owner == threading.get_ident():
+        raise RuntimeError("poundfe: a run's callback cannot start another run or command "
+                           "(start it after the run returns)")
+    with _engine_lock:
+        _engine_owner = threading.get_ident()
+        try:
+            yield
+        finally:
+            _engine_owner = None
 
 
 def read(file, overrides=None):
@@ -40,7 +74,16 @@ def read(file, overrides=None):
 def _override_pairs(overrides):
     """(path, text) pairs of a dict or of (path, value) pairs (None: none)."""
     items = overrides.items() if isinstance(overrides, dict) else (overrides or [])
-    return [(str(path), _value_text(value)) for path, value in items]
+    pairs = []
+    for item in items:
+        if not isinstance(item, (tuple, list)) or len(item) != 2:
+            raise TypeError(f"overrides: a dict {{'Section/Entry': value}} or (path, value) pairs, "
+                            f"not {item!r}")
+        path, value = item
+        if not isinstance(path, str):
+            raise TypeError(f"overrides: a path is a str 'Section/Entry', not {path!r}")
+        pairs.append((path, _value_text(value)))
+    return pairs
 
 
 def _input_of(model):
@@ -54,7 +97,9 @@ def _input_of(model):
 def modal(model):
     """The undamped modes of the whole model and of each building (what
     `poundfe modal` writes): an Input, a Model or a file name."""
-    return Modes(_core.modal(_input_of(model)))
+    model = _input_of(model)
+    with _engine():
+        return Modes(_core.modal(model))
 
 
 def moment_curvature(model, overrides=None):
@@ -76,8 +121,9 @@ def run(model, output=None, callback=None, every=1):
     """Run the time history of `model` (an Input, a Model or a file name).
 
     output: a directory for the command line's files (CSV, summary.json,
-    plots, VTU as the input asks); None: a temporary one, removed after the
-    results are read (NumPy tables, no plots or VTU).
+    plots, VTU as the input asks), read back into the results; None: no
+    file at all, the same observers fill the arrays in memory (no plots or
+    VTU).
     callback(state): called at step 0 and every `every` steps with a
     StepState (time, displacement, floor_displacement, drift_ratio, ...);
     an exception it raises stops the run and propagates.
@@ -85,15 +131,16 @@ def run(model, output=None, callback=None, every=1):
     Returns Results. A numerical failure raises NumericalError with the
     results up to the failure in its `results` attribute."""
     model = _input_of(model)
-    temporary = output is None
-    directory = tempfile.mkdtemp(prefix="poundfe-") if temporary else os.fspath(output)
-    try:
-        raw = _core.run_time_history(model, directory, npy=temporary, vtu_and_plots=not temporary,
-                                     callback=callback, every=every)
-        results = Results(directory, raw)
-    finally:
-        if temporary:
-            shutil.rmtree(directory, ignore_errors=True)
+    directory = None if output is None else os.fspath(output)
+    if directory == "":
+        raise ValueError("output: a directory, or None for results in memory")
+    if callback is not None and not callable(callback):
+        raise TypeError(f"callback: a function of the step's state, not {callback!r}")
+    if isinstance(every, bool) or not isinstance(every, (int, np.integer)) or every < 1:
+        raise ValueError(f"every: a whole number of steps >= 1, not {every!r}")
+    with _engine():
+        raw = _core.run_time_history(model, directory or "", callback=callback, every=int(every))
+    results = Results(raw, directory)
     if raw["status"] == "failed":
         error = (OutputError if raw["output_failed"] else NumericalError)(raw["message"])
         error.results = results
@@ -111,6 +158,7 @@ def command(name, *arguments, output=None, realizations=None, overrides=None):
     Returns the exit status (0; 2 after a numerical failure, the files so far
     kept); bad input raises InputError and writes nothing, a command line
     the command refuses raises ValueError with the command line's message."""
-    return _core.command(name, [os.fspath(a) for a in arguments],
-                         "" if output is None else os.fspath(output), realizations or 0,
-                         _override_pairs(overrides))
+    with _engine():
+        return _core.command(name, [os.fspath(a) for a in arguments],
+                             "" if output is None else os.fspath(output), realizations or 0,
+                             _override_pairs(overrides))

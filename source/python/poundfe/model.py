@@ -4,32 +4,48 @@ that every check and message is the command line's.
 
     model = poundfe.Model()
     model.add_building(name="A", type="shear", number_of_storeys=2,
-                       storey_heights=3.0, floor_masses=[2e4, 2e4],
+                       storey_heights=3.0, floor_masses=np.array([2e4, 2e4]),
                        storey_stiffnesses=[3e7, 2.5e7])
     model.add_building(name="B", type="shear", ...)
     model.gaps(0.01, law="hertz-damp", stiffness=2.75e9)
     model.ground_motion(type="kanai-tajimi", stochastic={"Target PGA": 0.3})
+    model.set("Ground motion/Stochastic", target_pga=0.3)
     model.set("Time integration", time_step=0.001)
     results = poundfe.run(model)
 
 Names: dict keys are written as they are (the parameter names of the user
-guide, e.g. {"Target PGA": 0.3}); keyword arguments are turned into them
-with underscores as spaces and the first letter upper-case (time_step ->
-"Time step", column_E -> "Column E"). A dict value is a subsection, a list a
-comma-separated list, a float its shortest exact text.
+guide, e.g. {"Target PGA": 0.3}); keyword arguments are looked up among the
+entries and subsections the program declares for the section (what
+`poundfe print-parameters` prints): a keyword is an entry's name in lower
+case with every run of other characters as one underscore (time_step ->
+"Time step", target_pga -> "Target PGA", bouc_wen -> "Bouc-Wen"); an unknown
+keyword raises InputError with the names closest to it. Values: a dict is a
+subsection, a list, tuple or 1-D NumPy array a comma-separated list, a
+float (Python's or NumPy's) its shortest exact text, a bool true/false.
+
+A bad value is found by the command line's reader when the model is read
+(Model.input, poundfe.run, ...): its InputError names the entry and the line
+of the caller's code that set it.
 """
 
+import difflib
 import os
+import re
+import sys
 import tempfile
 
-
-def entry_name(keyword):
-    """time_step -> "Time step" (a keyword argument's parameter name)."""
-    text = keyword.replace("_", " ")
-    return text[:1].upper() + text[1:]
+import numpy as np
 
 
 def _value_text(value):
+    """The .prm text of a value (NumPy scalars and 1-D arrays included)."""
+    if isinstance(value, np.ndarray):
+        if value.ndim > 1:
+            raise TypeError(f"a parameter takes a number or a 1-D list, not a {value.ndim}-D array "
+                            f"of shape {value.shape}")
+        value = value.tolist()
+    elif isinstance(value, np.generic):
+        value = value.item()
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
@@ -39,9 +55,100 @@ def _value_text(value):
     return str(value)
 
 
-# Entries that name a file: made absolute (against the working directory)
-# when a Model is read from a temporary file.
-_FILE_ENTRIES = ("File", "Mesh file", "Catalogue file")
+def normalised(name):
+    """An entry's keyword: "Target PGA" -> "target_pga", "Bouc-Wen" -> "bouc_wen"."""
+    return re.sub(r"[^0-9a-z]+", "_", name.lower()).strip("_")
+
+
+def entry_name(keyword):
+    """time_step -> "Time step": a keyword's name in a section the program
+    does not declare (its first letter upper case, underscores as spaces)."""
+    text = keyword.replace("_", " ")
+    return text[:1].upper() + text[1:]
+
+
+_DECLARED = None
+
+
+def _declared():
+    """({section path: [entry and subsection names]}, {entry path: default
+    text}) of everything the program declares ("Building 1" stands for
+    every building), parsed from what `poundfe print-parameters` prints."""
+    global _DECLARED
+    if _DECLARED is None:
+        from . import _core
+        sections, defaults, stack = {"": []}, {}, []
+        for line in _core.declarations().splitlines():
+            text = line.strip()
+            if text.startswith("subsection "):
+                name = text[len("subsection "):].strip()
+                sections["/".join(stack)].append(name)
+                stack.append(name)
+                sections.setdefault("/".join(stack), [])
+            elif text == "end":
+                stack.pop()
+            elif text.startswith("set ") and "=" in text:
+                name = text[4:text.index("=")].strip()
+                sections["/".join(stack)].append(name)
+                defaults["/".join(stack + [name])] = text[text.index("=") + 1:].strip()
+        _DECLARED = sections, defaults
+    return _DECLARED
+
+
+def declarations():
+    """{section path: [entry and subsection names]} of every section the
+    program declares ("Building 1" stands for every building)."""
+    return _declared()[0]
+
+
+def given_values(values):
+    """The (path, text) pairs of Input.values that differ from their
+    declared defaults (and Model/Number of buildings): what a file must
+    say to be read as the same input. (An entry that only acts in another
+    configuration, e.g. a 3D entry of a planar model, is refused when
+    given, even at its default.)"""
+    defaults = _declared()[1]
+    return [(path, text) for path, text in values
+            if path == "Model/Number of buildings" or
+            defaults.get(re.sub(r"^Building \d+/", "Building 1/", path)) != text]
+
+
+def keyword_table(section):
+    """{keyword: name} of the entries and subsections of `section` (a path;
+    "Building <i>" as "Building 1"); None for a section not declared."""
+    path = re.sub(r"^Building \d+", "Building 1", section)
+    names = declarations().get(path)
+    if names is None:
+        return None
+    return {normalised(name): name for name in names}
+
+
+def _name_of_keyword(section, keyword):
+    """The declared name of `keyword` in `section` (InputError with the
+    closest keywords when there is none)."""
+    table = keyword_table(section)
+    if table is None:
+        return entry_name(keyword)
+    name = table.get(normalised(keyword))
+    if name is not None:
+        return name
+    from . import InputError
+    close = difflib.get_close_matches(normalised(keyword), list(table), n=3, cutoff=0.6)
+    hint = ("; did you mean " + " or ".join(f"{k} ('{table[k]}')" for k in close)) if close else ""
+    error = InputError(f"'{section}' has no entry or subsection '{keyword}'{hint} "
+                       f"(its keywords: {', '.join(sorted(table))})")
+    error.file, error.line, error.parameter = "", 0, f"{section}/{keyword}"
+    error.problem = "unknown keyword"
+    raise error
+
+
+def _caller():
+    """'file:line' of the first frame outside this package: the user's call."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    frame = sys._getframe(1)
+    while frame is not None and os.path.dirname(os.path.abspath(frame.f_code.co_filename)) == here:
+        frame = frame.f_back
+    return f"{frame.f_code.co_filename}:{frame.f_lineno}" if frame is not None else "?"
 
 
 def parameter_text(sections, indent=""):
@@ -57,6 +164,18 @@ def parameter_text(sections, indent=""):
     return "\n".join(line for line in lines if line)
 
 
+def nested(values):
+    """(path, text) pairs as nested dicts (Input.values -> sections)."""
+    sections = {}
+    for path, text in values:
+        *parts, name = path.split("/")
+        target = sections
+        for part in parts:
+            target = target.setdefault(part, {})
+        target[name] = text
+    return sections
+
+
 def _merge(into, entries):
     for name, value in entries.items():
         if isinstance(value, dict):
@@ -65,11 +184,26 @@ def _merge(into, entries):
             into[name] = value
 
 
-def _absolute_files(sections, base):
+def _paths(entries, prefix):
+    """Every entry's path under `prefix` (for the callers' lines)."""
+    for name, value in entries.items():
+        if isinstance(value, dict):
+            yield from _paths(value, f"{prefix}/{name}")
+        else:
+            yield f"{prefix}/{name}"
+
+
+# Entries that name a file: made absolute (against the working directory,
+# or the directory of the file a model was read from) when written
+# elsewhere.
+_FILE_ENTRIES = ("File", "Mesh file", "Catalogue file")
+
+
+def absolute_files(sections, base):
     out = {}
     for name, value in sections.items():
         if isinstance(value, dict):
-            out[name] = _absolute_files(value, base)
+            out[name] = absolute_files(value, base)
         elif name in _FILE_ENTRIES and isinstance(value, str) and value and not os.path.isabs(value):
             out[name] = os.path.join(base, value)
         else:
@@ -83,13 +217,41 @@ class Model:
     def __init__(self):
         self.sections = {"Model": {}}
         self.buildings = []
+        self.origins = {}  # entry path -> the caller's 'file:line' that set it
+
+    @classmethod
+    def from_file(cls, file, overrides=None):
+        """The model of a .prm or .json file (read and checked by the
+        command line's reader, with overrides): every entry that differs
+        from its default, file names made absolute."""
+        from . import read
+        return cls.from_input(read(file, overrides))
+
+    @classmethod
+    def from_input(cls, input):
+        """The model of an Input (its entries that differ from their
+        defaults, file names made absolute)."""
+        sections = absolute_files(nested(given_values(input.values)),
+                                  input.directory or os.getcwd())
+        model = cls()
+        n = int(sections.get("Model", {}).pop("Number of buildings", 0))
+        model.buildings = [sections.pop(f"Building {i}", {}) for i in range(1, n + 1)]
+        model.sections = {"Model": sections.pop("Model", {}), **sections}
+        return model
+
+    def _keywords(self, section, entries, keywords):
+        values = dict(entries or {})
+        values.update({_name_of_keyword(section, k): v for k, v in keywords.items()})
+        origin = _caller()
+        for path in _paths(values, section):
+            self.origins[path] = origin
+        return values
 
     def set(self, section, entries=None, **keywords):
         """Set entries of `section` ("Time integration", or a path such as
         "Ground motion/Stochastic"): a dict (names as written) and/or
         keyword arguments (time_step=0.001). Returns the model."""
-        values = dict(entries or {})
-        values.update({entry_name(k): v for k, v in keywords.items()})
+        values = self._keywords(section, entries, keywords)
         target = self.sections
         for part in section.split("/"):
             target = target.setdefault(part, {})
@@ -99,8 +261,7 @@ class Model:
     def add_building(self, entries=None, **keywords):
         """A building (its `Building <i>` section); returns its number i.
         Subsections as dicts: hinges={"Locations": "column bases"}."""
-        values = dict(entries or {})
-        values.update({entry_name(k): v for k, v in keywords.items()})
+        values = self._keywords(f"Building {len(self.buildings) + 1}", entries, keywords)
         self.buildings.append(values)
         return len(self.buildings)
 
@@ -128,18 +289,57 @@ class Model:
         with open(path, "w") as f:
             f.write(self.text())
 
+    def absolute(self):
+        """A copy whose file names are absolute (against the working
+        directory), to be written elsewhere."""
+        copy = Model()
+        copy.sections = absolute_files(self.sections, os.getcwd())
+        copy.buildings = [absolute_files(b, os.getcwd()) for b in self.buildings]
+        copy.origins = self.origins
+        return copy
+
     def input(self, overrides=None, name="model.prm"):
         """Read through the command line's reader: an Input. The text goes
-        to a temporary file `name` (the messages name it); file names in it
-        are taken against the working directory."""
-        from . import read
-        absolute = Model()
-        absolute.sections = _absolute_files(self.sections, os.getcwd())
-        absolute.buildings = [_absolute_files(b, os.getcwd()) for b in self.buildings]
+        to a temporary file `name`; a bad entry raises the reader's
+        InputError naming `name`, the line, the entry and the line of the
+        caller's code that set it."""
+        from . import InputError, read
         with tempfile.TemporaryDirectory(prefix="poundfe-model-") as directory:
             path = os.path.join(directory, name)
-            absolute.write(path)
-            return read(path, overrides)
+            self.absolute().write(path)
+            try:
+                return read(path, overrides)
+            except InputError as error:
+                raise self._pointed(error, directory + os.sep) from None
+
+    def _pointed(self, error, temporary):
+        """The reader's error without the temporary directory, and with
+        the caller's line that set the entry."""
+        from . import InputError
+        message = str(error).replace(temporary, "")
+        parameter = getattr(error, "parameter", "") or ""
+        origin = self.origins.get(parameter)
+        if origin is None:  # a whole list entry "Section/Entry:k", or a section
+            origin = next((o for p, o in self.origins.items()
+                           if parameter and (p.startswith(parameter.split(":")[0]))), None)
+        if origin is not None:
+            message += f" (set at {origin})"
+        pointed = InputError(message)
+        pointed.file = (getattr(error, "file", "") or "").replace(temporary, "")
+        pointed.line = getattr(error, "line", 0)
+        pointed.parameter = parameter
+        pointed.problem = getattr(error, "problem", "")
+        pointed.origin = origin
+        return pointed
 
     def __repr__(self):
         return f"<poundfe.Model {len(self.buildings)} buildings>"
+
+
+def write_input(input, path):
+    """Input.write(path): a read Input (with its overrides) as a .prm file
+    of every entry that differs from its default (file names absolute),
+    which reads back to the same entries."""
+    sections = absolute_files(nested(given_values(input.values)), input.directory or os.getcwd())
+    with open(path, "w") as f:
+        f.write(parameter_text(sections) + "\n")

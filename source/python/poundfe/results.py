@@ -1,12 +1,32 @@
-"""A run's results as NumPy arrays, read from the files the command line's
-own observers wrote (the recorders' tables, impacts.csv, summary.json):
-what Python gets is what `poundfe run` writes, to the last digit."""
+"""A run's results as NumPy arrays: the command line's own observers fill
+them in memory (the recorders' tables as doubles, summary.json and the other
+tables as the texts their files would hold), or they are read from the files
+those observers wrote with output=: what Python gets is what `poundfe run`
+writes, to the last digit."""
 
 import csv
+import io
 import json
 import os
 
 import numpy as np
+
+
+def _pandas():
+    try:
+        import pandas
+    except ImportError as error:
+        raise ImportError("to_dataframe needs pandas (apt-get install python3-pandas, or "
+                          "pip install pandas); the arrays are in .tables without it") from error
+    return pandas
+
+
+def dataframe_of(table):
+    """A Table or a structured array as a pandas DataFrame (its column names)."""
+    pandas = _pandas()
+    if isinstance(table, Table):
+        return pandas.DataFrame(table.data, columns=table.names)
+    return pandas.DataFrame({name: table[name] for name in table.dtype.names})
 
 
 class Table:
@@ -39,32 +59,62 @@ class Table:
     def __len__(self):
         return self.data.shape[0]
 
+    def to_dataframe(self):
+        """A pandas DataFrame, one column per name (ImportError without pandas)."""
+        return dataframe_of(self)
+
     def __repr__(self):
         return f"<poundfe.Table {len(self)} rows x {len(self.columns)} columns>"
 
 
 def _number_or_text(texts):
-    """A column of a CSV table: float64 when every entry is a number."""
+    """A column of a CSV table: float64 when every entry is a number or
+    empty (an undefined value: NaN), text otherwise."""
     try:
-        return np.array([float(t) for t in texts], dtype=float)
+        return np.array([float(t) if t != "" else np.nan for t in texts], dtype=float)
     except ValueError:
         return np.array(texts, dtype=str)
 
 
-def read_csv(path):
-    """A CSV file with a header: a Table when its first column is time_s,
-    otherwise a structured array (one field per column, numbers as float64,
-    the rest as text)."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    names, rows = rows[0], rows[1:]
-    if names[0] == "time_s":
-        return Table(names, [[float(x) for x in row] for row in rows])
-    columns = [_number_or_text([row[i] for row in rows]) for i in range(len(names))]
-    array = np.zeros(len(rows), dtype=[(n, c.dtype) for n, c in zip(names, columns)])
+def structured(names, columns):
+    """A structured array, one field per column (name, 1-D array)."""
+    n = len(columns[0]) if columns else 0
+    array = np.zeros(n, dtype=[(name, c.dtype) for name, c in zip(names, columns)])
     for name, column in zip(names, columns):
         array[name] = column
     return array
+
+
+def read_csv_text(text):
+    """A CSV table's text with a header: a Table when its first column is
+    time_s and every entry a number, otherwise a structured array (one field
+    per column, numbers as float64, the rest as text). Blank lines (between
+    the blocks of a gnuplot surface) and comment lines ('#', a resumable
+    table's record of its inputs) are left out."""
+    rows = [row for row in csv.reader(io.StringIO(text)) if row and not row[0].startswith("#")]
+    names, rows = rows[0], rows[1:]
+    if names[0] == "time_s":
+        try:
+            return Table(names, [[float(x) for x in row] for row in rows])
+        except ValueError:  # a column of text (a switching event's name)
+            pass
+    return structured(names, [_number_or_text([row[i] for row in rows])
+                              for i in range(len(names))])
+
+
+def read_csv(path):
+    """A CSV file (see read_csv_text)."""
+    with open(path, newline="") as f:
+        return read_csv_text(f.read())
+
+
+def memory_table(names, array):
+    """A table kept in memory (rows x columns of float64) as read_csv_text
+    would give its CSV: a Table when its first column is time_s, otherwise
+    a structured array."""
+    if names[0] == "time_s":
+        return Table(names, array)
+    return structured(names, [array[:, i] for i in range(len(names))])
 
 
 def read_npy(path):
@@ -92,6 +142,12 @@ class Modes:
         self.rayleigh = (raw["rayleigh_a0"], raw["rayleigh_a1"]) if "rayleigh_a0" in raw else None
         self.buildings = [Modes(b) for b in raw.get("buildings", [])]
 
+    def to_dataframe(self):
+        """One row per mode: frequency, period, participating mass ratio
+        (ImportError without pandas)."""
+        return _pandas().DataFrame({"frequency_hz": self.frequencies, "period_s": self.periods,
+                                    "participating_mass_ratio_x": self.participating_mass_ratio})
+
     def __repr__(self):
         hz = ", ".join(f"{f:.4g}" for f in self.frequencies)
         return f"<poundfe.Modes {self.name or 'model'}: {hz} Hz>"
@@ -110,9 +166,12 @@ class Results:
     residual_drift_ratio (arrays per storey), roof_displacement}};
     gaps: {label: summary.json's entry (impacts, peak_force_N, ...)};
     summary: summary.json as a dict; modes: Modes; tables: the other tables
-    (drift_profile, acceleration_profile, residual_drift, ...)."""
+    (drift_profile, acceleration_profile, residual_drift, ...).
 
-    def __init__(self, directory, raw):
+    Made from a run in memory (raw["tables"], raw["texts"]) or from the
+    files of `directory`."""
+
+    def __init__(self, raw, directory=None):
         self.status = raw["status"]
         self.message = raw["message"]
         self.steps = raw["steps"]
@@ -120,20 +179,49 @@ class Results:
         self.wall_time = raw["wall_time"]
         self.warnings = list(raw["warnings"])
         self.modes = Modes(raw["modes"])
-        with open(os.path.join(directory, "summary.json")) as f:
-            self.summary = json.load(f)
+        if directory is None:
+            self.summary, found = self._in_memory(raw)
+        else:
+            self.summary, found = self._in_files(directory)
         self.series, self.tables = {}, {}
         for name in self.summary["output"]["files"]:
-            path = os.path.join(directory, name)
-            stem, extension = os.path.splitext(name)
-            if extension == ".npy":
-                self.series[stem] = read_npy(path)
-            elif extension == ".csv":
-                table = read_csv(path)
+            stem = os.path.splitext(name)[0]
+            table = found(name, stem)
+            if table is not None:
                 (self.series if isinstance(table, Table) else self.tables)[stem] = table
         self.impacts = self.tables.pop("impacts", None)
         self.peaks = {b["name"]: self._peaks_of(b) for b in self.summary["buildings"]}
         self.gaps = {g["label"]: g for g in self.summary.get("gaps", [])}
+
+    @staticmethod
+    def _in_memory(raw):
+        """summary.json and a function giving a listed file's table."""
+        tables = {stem: memory_table(names, array) for stem, names, array in raw["tables"]}
+        texts = raw["texts"]
+
+        def found(name, stem):
+            if stem in tables:
+                return tables[stem]
+            if name.endswith(".csv") and name in texts:
+                return read_csv_text(texts[name])
+            return None
+
+        return json.loads(texts["summary.json"]), found
+
+    @staticmethod
+    def _in_files(directory):
+        with open(os.path.join(directory, "summary.json")) as f:
+            summary = json.load(f)
+
+        def found(name, stem):
+            path = os.path.join(directory, name)
+            if name.endswith(".npy"):
+                return read_npy(path)
+            if name.endswith(".csv"):
+                return read_csv(path)
+            return None
+
+        return summary, found
 
     @staticmethod
     def _peaks_of(building):
@@ -148,6 +236,18 @@ class Results:
                 "floor_acceleration": column("peak_absolute_floor_acceleration_m_s2"),
                 "floor_displacement": column("peak_floor_displacement_m"),
                 "roof_displacement": building["peak_roof_displacement_m"]}
+
+    def to_dataframe(self, name):
+        """Series or table `name` as a pandas DataFrame (ImportError without
+        pandas)."""
+        _pandas()
+        if name == "impacts" and self.impacts is not None:
+            return dataframe_of(self.impacts)
+        table = self.series.get(name, self.tables.get(name))
+        if table is None:
+            raise KeyError(f"no series or table '{name}' "
+                           f"(series: {', '.join(self.series)}; tables: {', '.join(self.tables)})")
+        return dataframe_of(table)
 
     @property
     def time(self):

@@ -1,0 +1,142 @@
+"""Every command of the command line as a Python function returning a
+CommandResult: poundfe.montecarlo(model), poundfe.sweep(model, ...), ...
+
+Each runs through the command line's own dispatcher (the same rules, checks,
+messages and numbers as `poundfe NAME FILE --output DIR --set ...`) and
+takes a file name, an Input (its file and overrides) or a Model. The
+results are the command's own files, read back into arrays: into a
+temporary directory removed afterwards, or into `output=` when given (then
+the files stay). (poundfe.modal computes its Modes in memory, and
+poundfe.run its Results: neither reads files back.)
+"""
+
+import json
+import os
+import shutil
+import tempfile
+
+from . import _core
+from .results import Table, _pandas, dataframe_of, read_csv, read_npy
+
+# The Python name of each command of item: its name on the command line.
+COMMANDS = {
+    "montecarlo": "montecarlo", "subset": "subset", "fragility": "fragility", "sweep": "sweep",
+    "separation": "separation", "spectrum": "spectrum", "site_hazard": "site-hazard",
+    "reliability": "reliability", "dynamic_form": "dynamic-form", "mitigation": "mitigation",
+    "stationary_pdf": "stationary-pdf", "bifurcation": "bifurcation", "switching": "switching",
+    "ground_motion": "ground-motion", "pushover": "pushover", "ida": "ida",
+}
+
+
+def read_directory(directory):
+    """{stem: table} of every CSV and NPY table under `directory` (a
+    subdirectory's tables as "sub/stem"), and summary.json as a dict (None
+    without one)."""
+    tables, summary = {}, None
+    for root, folders, files in os.walk(directory):
+        folders.sort()
+        for name in sorted(files):
+            path = os.path.join(root, name)
+            stem = os.path.splitext(os.path.relpath(path, directory))[0].replace(os.sep, "/")
+            if name.endswith(".csv"):
+                tables[stem] = read_csv(path)
+            elif name.endswith(".npy"):
+                tables[stem] = read_npy(path)
+            elif name == "summary.json" and root == directory:
+                with open(path) as f:
+                    summary = json.load(f)
+    return tables, summary
+
+
+class CommandResult:
+    """What a command wrote, as arrays.
+
+    command: its name; status: summary.json's ("completed", ...); summary:
+    summary.json as a dict; tables: {stem: Table (first column time_s) or
+    structured array (one field per column)} of every CSV and NPY table it
+    wrote, also as attributes (result.separation); files: the files it
+    wrote; output: where they stay (None: removed); report: what the
+    command line prints on standard output (its report; nothing is printed).
+    to_dataframe(stem) needs pandas."""
+
+    def __init__(self, command, directory, kept):
+        self.command = command
+        self.tables, self.summary = read_directory(directory)
+        self.status = (self.summary or {}).get("status")
+        self.files = sorted(os.path.relpath(os.path.join(r, f), directory)
+                            for r, _, fs in os.walk(directory) for f in fs)
+        self.output = directory if kept else None
+
+    def to_dataframe(self, name=None):
+        """Table `name` as a pandas DataFrame (name may be left out when
+        there is one table). ImportError without pandas."""
+        _pandas()
+        if name is None:
+            if len(self.tables) != 1:
+                raise ValueError(f"name a table: {', '.join(self.tables)}")
+            name = next(iter(self.tables))
+        return dataframe_of(self[name])
+
+    def __getitem__(self, name):
+        try:
+            return self.tables[name]
+        except KeyError:
+            raise KeyError(f"'{self.command}' wrote no table '{name}' "
+                           f"(tables: {', '.join(self.tables)})") from None
+
+    def __getattr__(self, name):
+        tables = self.__dict__.get("tables", {})
+        if name in tables:
+            return tables[name]
+        raise AttributeError(f"no attribute or table '{name}' (tables: {', '.join(tables)})")
+
+    def __repr__(self):
+        return f"<poundfe.CommandResult {self.command} {self.status}: {', '.join(self.tables)}>"
+
+
+def _file_and_overrides(model, overrides, scratch):
+    """The parameter file the dispatcher reads and the (path, text)
+    overrides: a file name as it is, an Input's file and overrides (then
+    `overrides`), a Model written into `scratch`."""
+    from . import Input, Model, _override_pairs
+    pairs = _override_pairs(overrides)
+    if isinstance(model, Input):
+        return model.file, list(model.overrides) + pairs
+    if isinstance(model, Model):
+        path = os.path.join(scratch, "model.prm")
+        model.absolute().write(path)
+        return path, pairs
+    return os.fspath(model), pairs
+
+
+def run_command(name, model, output=None, realizations=None, overrides=None):
+    """`poundfe NAME FILE [--output DIR] [--realizations N] [--set ...]`
+    through the command line's dispatcher, its files read back: a
+    CommandResult. Bad input raises InputError (nothing written), a
+    refused command line ValueError, a numerical failure NumericalError
+    (with output=, the files so far and summary.json stay there)."""
+    kept = output is not None
+    scratch = tempfile.mkdtemp(prefix="poundfe-")
+    directory = os.fspath(output) if kept else os.path.join(scratch, "output")
+    try:
+        file, pairs = _file_and_overrides(model, overrides, scratch)
+        from . import _engine
+        with _engine():
+            _, report = _core.command_reported(name, [file], directory, realizations or 0, pairs)
+        result = CommandResult(name, directory, kept)
+        result.report = report
+        return result
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+
+
+def _command_function(python_name, name):
+    def command(model, output=None, realizations=None, overrides=None):
+        return run_command(name, model, output=output, realizations=realizations,
+                           overrides=overrides)
+    command.__name__ = python_name
+    command.__doc__ = (f"`poundfe {name} FILE` from Python: model is a file name, an Input or a "
+                       f"Model; output a directory to keep the files in (None: none kept); "
+                       f"realizations as --realizations; overrides as --set. Returns a "
+                       f"CommandResult (summary, tables as arrays, to_dataframe).")
+    return command

@@ -1,0 +1,81 @@
+"""The model builder: keywords looked up in the program's own declarations
+(acronyms such as PGA right, "did you mean" for a typo), NumPy values, the
+reader's errors pointing at the caller's line, Model.from_file and
+Input.write reading back to the same entries (reference: the reader's
+entry-by-entry values, Input.values; tolerance none: text for text)."""
+
+import os
+import unittest
+
+import numpy as np
+
+import poundfe
+from common import EXAMPLE, TestCase
+
+
+class KeywordTable(TestCase):
+    def test_generated_from_the_declarations(self):
+        table = poundfe.keyword_table("Ground motion/Stochastic")
+        self.assertEqual(table["target_pga"], "Target PGA")
+        self.assertEqual(poundfe.keyword_table("Time integration")["time_step"], "Time step")
+        self.assertEqual(poundfe.keyword_table("Building 3")["bouc_wen"], "Bouc-Wen")
+        model = poundfe.Model().set("Ground motion/Stochastic", target_pga=0.3)
+        self.assertEqual(model.sections["Ground motion"]["Stochastic"], {"Target PGA": 0.3})
+
+    def test_did_you_mean(self):
+        with self.assertRaisesRegex(poundfe.InputError,
+                                    r"'Time integration' has no entry or subsection 'time_stepp'; "
+                                    r"did you mean time_step \('Time step'\)"):
+            poundfe.Model().set("Time integration", time_stepp=0.001)
+        with self.assertRaisesRegex(poundfe.InputError, r"did you mean floor_masses"):
+            poundfe.Model().add_building(floor_mases=[1, 2])
+
+
+class Values(TestCase):
+    def test_numpy_scalars_and_arrays(self):
+        model = poundfe.Model()
+        model.add_building(name="S", type="shear", number_of_storeys=np.int64(2),
+                           storey_heights=np.float64(3.0), floor_masses=np.array([2e4, 1.5e4]),
+                           storey_stiffnesses=np.array([3e7, np.float32(2.5e7)]))
+        text = model.text()
+        self.assertIn("set Number of storeys = 2\n", text)
+        self.assertIn("set Floor masses = 20000.0, 15000.0\n", text)
+        self.assertIn("set Storey heights = 3.0\n", text)
+        values = dict(model.input().values)
+        self.assertEqual(values["Building 1/Floor masses"], "20000.0, 15000.0")
+        with self.assertRaisesRegex(TypeError, "1-D"):
+            model = poundfe.Model()
+            model.add_building(floor_masses=np.ones((2, 2)))
+            model.text()
+
+    def test_error_points_at_the_call(self):
+        model = poundfe.Model()
+        model.add_building(name="S", type="shear", number_of_storeys=2, storey_heights=3.0,
+                           floor_masses=[2e4, 2e4, 2e4], storey_stiffnesses=3e7)  # three masses
+        with self.assertRaises(poundfe.InputError) as caught:
+            model.input()
+        message = str(caught.exception)
+        self.assertIn("Building 1/Floor masses", message)
+        self.assertIn(f"set at {os.path.abspath(__file__)}:", message)
+        self.assertNotIn("poundfe-model-", message)  # no temporary directory
+        self.assertEqual(caught.exception.file, "model.prm")
+
+
+class FromFileAndWrite(TestCase):
+    def test_model_from_file_is_the_same_input(self):
+        original = poundfe.read(EXAMPLE)
+        model = poundfe.Model.from_file(EXAMPLE)
+        self.assertEqual(len(model.buildings), 2)
+        self.assertEqual(model.input().values, original.values)
+
+    def test_input_write_reads_back(self):
+        original = poundfe.read(EXAMPLE, overrides={"Model/Separations": 0.02})
+        path = os.path.join(self.tmp, "written.prm")
+        original.write(path)
+        again = poundfe.read(path)
+        self.assertEqual(again.values, original.values)
+        self.assertEqual(dict(again.values)["Model/Separations"], "0.02")
+
+
+if __name__ == "__main__":
+    unittest.main()
