@@ -49,6 +49,8 @@ ROWS = {
                     {**QUIET, "Reliability/Methods": "FORM"}),
     "dynamic-form": (os.path.join(CLI, "dynamic-form-sdof.prm"), set(), QUIET),
     "switching": (os.path.join(CLI, "switching-belt.prm"), set(), QUIET),
+    "moment-curvature": (os.path.join("input", "moment-curvature-rc-column.prm"), set(),
+                         {**QUIET, "Moment curvature/Steps": 30}),
 }
 NO_FILE = {"print-parameters": [], "template": ["frame"]}
 
