@@ -54,7 +54,8 @@ namespace poundfe
       const MomentCurvatureSettings &settings;
       const double                   c, s; // the direction of the curvature
       double                         force_scale = 0;
-      double                         eps0        = 0;
+      double                         eps0        = 0; // Newton's start: the last solution
+      double                         committed_eps0 = 0; // eps0 of the committed state
       std::vector<StrainWatch>       watches;
       MomentCurvatureResult          result;
     };
@@ -194,7 +195,9 @@ namespace poundfe
     {
       // the trial state at `to` has reached w, the committed one at `from` not
       double g_to = excess(w);
+      // from the committed state's own eps0, its first trial is that state
       section.revert();
+      eps0 = committed_eps0;
       AssertThrow(solve(from), dealii::ExcInternalError());
       double       g_from = excess(w);
       const double scale  = std::max(std::isfinite(w.low) ? std::abs(w.low) : 0.0,
@@ -206,6 +209,7 @@ namespace poundfe
             std::clamp(from + (to - from) * (-g_from) / (g_to - g_from),
                        from + 0.01 * (to - from), to - 0.01 * (to - from));
           section.revert();
+          eps0 = committed_eps0;
           if (!solve(middle))
             break;
           const double g = excess(w);
@@ -215,6 +219,7 @@ namespace poundfe
           (g < 0 ? g_from : g_to) = g;
         }
       section.revert();
+      eps0 = committed_eps0;
       AssertThrow(solve(to), dealii::ExcInternalError());
       return to;
     }
@@ -229,12 +234,14 @@ namespace poundfe
         StrainWatch         *watch;
       };
       std::vector<Reached> reached;
+      const double         eps0_to = eps0; // the solution at `to`
       for (StrainWatch &w : watches)
         if (!w.fired && excess(w) >= 0)
           {
             const double k = locate(w, from, to);
             reached.push_back({k, point(), &w});
             section.revert();
+            eps0 = eps0_to;
             AssertThrow(solve(to), dealii::ExcInternalError());
           }
       std::stable_sort(reached.begin(), reached.end(),
@@ -266,6 +273,7 @@ namespace poundfe
                          "the section cannot carry N = " + number_text(settings.axial_force) +
                            " N at zero curvature");
       section.commit();
+      committed_eps0 = eps0;
       result.points.push_back(point());
       const double step = settings.target_curvature / settings.steps;
       double       done = 0;
@@ -287,6 +295,7 @@ namespace poundfe
           if (check_watches(done, next))
             break;
           section.commit();
+          committed_eps0 = eps0;
           done = next;
           result.points.push_back(point());
           const MomentCurvaturePoint &p = result.points.back();
