@@ -39,7 +39,12 @@ namespace poundfe
       MomentCurvatureResult run();
 
     private:
+      /// N(eps0, kappa) - N at the trial state it leaves; ok false if a fibre refuses.
+      double residual(double x, double curvature, bool &ok);
+      /// Sets the trial state in equilibrium at `curvature`: Newton on eps0,
+      /// bisection where Newton cannot (softening); false if none is found.
       bool solve(double curvature);
+      bool bracket_and_bisect(double curvature, double below, double above);
       MomentCurvaturePoint point() const;
       double excess(const StrainWatch &w) const;
       /// The curvature in (from, to] where w is first reached, the section
@@ -54,8 +59,10 @@ namespace poundfe
       const MomentCurvatureSettings &settings;
       const double                   c, s; // the direction of the curvature
       double                         force_scale = 0;
-      double                         eps0        = 0;
+      double                         eps0        = 0; // Newton's start: the last solution
+      double                         committed_eps0 = 0; // eps0 of the committed state
       std::vector<StrainWatch>       watches;
+      std::string                    refusal; // the last fibre that refused its strain
       MomentCurvatureResult          result;
     };
 
@@ -102,29 +109,66 @@ namespace poundfe
         }
     }
 
+    double
+    MomentCurvatureRun::residual(const double x, const double curvature, bool &ok)
+    {
+      SectionVector e = SectionVector::Zero(section.n_resultants());
+      e(0)            = x;
+      e(1)            = curvature * c;
+      if (e.size() == 4)
+        e(2) = curvature * s;
+      ok = section.set_trial(e);
+      if (!ok)
+        refusal = section.failure();
+      return ok ? section.resultant()(0) - settings.axial_force : 0.0;
+    }
+
     bool
     MomentCurvatureRun::solve(const double curvature)
     {
-      SectionVector e = SectionVector::Zero(section.n_resultants());
-      double        x = eps0;
+      // Newton, keeping the bracket of eps0 it passes on the way
+      double x = eps0, below = -HUGE_VAL, above = HUGE_VAL;
+      bool   ok = true;
       for (unsigned int it = 0; it < settings.max_iterations; ++it)
         {
-          e(0) = x;
-          e(1) = curvature * c;
-          if (e.size() == 4)
-            e(2) = curvature * s;
-          if (!section.set_trial(e))
+          const double r = residual(x, curvature, ok);
+          if (!ok)
             return false;
-          const double r = section.resultant()(0) - settings.axial_force;
           if (std::abs(r) <= settings.tolerance * force_scale)
-            {
-              eps0 = x;
-              return true;
-            }
+            return eps0 = x, true;
+          (r < 0 ? below : above) = x;
           const double k = section.tangent()(0, 0);
           if (!(k > 0))
-            return false;
+            break; // softening: N(eps0) falls here, Newton would climb away
           x -= r / k;
+        }
+      return bracket_and_bisect(curvature, below, above);
+    }
+
+    bool
+    MomentCurvatureRun::bracket_and_bisect(const double curvature, double below, double above)
+    {
+      // widen the bracket from the last solution until N changes sign
+      bool ok = true;
+      for (double step = 1e-4; !(std::isfinite(below) && std::isfinite(above)) && step < 1;
+           step *= 2)
+        {
+          const double x = std::isfinite(below) ? below + step : above - step;
+          const double r = residual(x, curvature, ok);
+          if (!ok)
+            return false;
+          (r < 0 ? below : above) = x;
+        }
+      if (!(std::isfinite(below) && std::isfinite(above)))
+        return false;
+      for (unsigned int it = 0; it < 200; ++it)
+        {
+          const double x = 0.5 * (below + above), r = residual(x, curvature, ok);
+          if (!ok)
+            return false;
+          if (std::abs(r) <= settings.tolerance * force_scale)
+            return eps0 = x, true;
+          (r < 0 ? below : above) = x;
         }
       return false;
     }
@@ -194,7 +238,9 @@ namespace poundfe
     {
       // the trial state at `to` has reached w, the committed one at `from` not
       double g_to = excess(w);
+      // from the committed state's own eps0, its first trial is that state
       section.revert();
+      eps0 = committed_eps0;
       AssertThrow(solve(from), dealii::ExcInternalError());
       double       g_from = excess(w);
       const double scale  = std::max(std::isfinite(w.low) ? std::abs(w.low) : 0.0,
@@ -206,6 +252,7 @@ namespace poundfe
             std::clamp(from + (to - from) * (-g_from) / (g_to - g_from),
                        from + 0.01 * (to - from), to - 0.01 * (to - from));
           section.revert();
+          eps0 = committed_eps0;
           if (!solve(middle))
             break;
           const double g = excess(w);
@@ -215,6 +262,7 @@ namespace poundfe
           (g < 0 ? g_from : g_to) = g;
         }
       section.revert();
+      eps0 = committed_eps0;
       AssertThrow(solve(to), dealii::ExcInternalError());
       return to;
     }
@@ -229,12 +277,14 @@ namespace poundfe
         StrainWatch         *watch;
       };
       std::vector<Reached> reached;
+      const double         eps0_to = eps0; // the solution at `to`
       for (StrainWatch &w : watches)
         if (!w.fired && excess(w) >= 0)
           {
             const double k = locate(w, from, to);
             reached.push_back({k, point(), &w});
             section.revert();
+            eps0 = eps0_to;
             AssertThrow(solve(to), dealii::ExcInternalError());
           }
       std::stable_sort(reached.begin(), reached.end(),
@@ -266,6 +316,7 @@ namespace poundfe
                          "the section cannot carry N = " + number_text(settings.axial_force) +
                            " N at zero curvature");
       section.commit();
+      committed_eps0 = eps0;
       result.points.push_back(point());
       const double step = settings.target_curvature / settings.steps;
       double       done = 0;
@@ -281,12 +332,15 @@ namespace poundfe
           if (cuts == 10)
             {
               section.revert();
-              result.stop_reason = "the section cannot carry N beyond this curvature";
+              result.stop_reason = refusal.empty() ?
+                                     "the section cannot carry N beyond this curvature" :
+                                     "no equilibrium beyond this curvature: " + refusal;
               break;
             }
           if (check_watches(done, next))
             break;
           section.commit();
+          committed_eps0 = eps0;
           done = next;
           result.points.push_back(point());
           const MomentCurvaturePoint &p = result.points.back();

@@ -110,7 +110,7 @@ namespace poundfe
                         "the names of Sections/Materials for tags: patch rect M nY nZ yI zI yJ zJ; "
                         "patch quad M nIJ nJK yI zI yJ zJ yK zK yL zL; patch circ M nCirc nRad yc zc "
                         "rInt rExt [a0 a1]; layer straight M n A y1 z1 y2 z2; layer circ M n A yc zc "
-                        "r [a0 a1]; fiber y z A M. Unit: m, m^2, degrees.", Patterns::Anything());
+                        "r [a0 a1]; fiber y z A M (m, m^2, degrees). Unit: per field.", Patterns::Anything());
       prm.add_parameter("Torsional rigidity", s.torsional_rigidity, "GJ of a section in space "
                         "(elastic, uncoupled; 0: not given). Unit: N m^2.", Patterns::Double());
     }
@@ -149,7 +149,7 @@ namespace poundfe
     prm.add_parameter("Materials", materials, "The materials `fibres` sections name, separated "
                       "by ';': `name: Law key=value ...` with a law of the registry (Steel01, "
                       "Steel02, Concrete01, Concrete02, ElasticPP, Hysteretic) and its OpenSees "
-                      "parameters, and optional min=, max= failure strains. Unit: Pa, -.",
+                      "parameters, and optional min=, max= failure strains. Unit: per field.",
                       Patterns::Anything());
     for (unsigned int k = 0; k < sections.size(); ++k)
       {
@@ -349,14 +349,16 @@ namespace poundfe
   void
   MomentCurvatureParameters::check(const InputFile &input, const SectionsParameters &sections) const
   {
+    // only an analysis that is asked for: every input has this section
+    if (trimmed(section).empty())
+      return;
     const std::string s = "Moment curvature/";
     input.positive(s + "Target curvature", settings.target_curvature);
     if (!(settings.drop_fraction >= 0 && settings.drop_fraction < 1))
       input.fail(s + "Moment drop", "must lie in [0, 1)");
     if (!std::isfinite(settings.axial_force))
       input.fail(s + "Axial force", "must be finite");
-    if (!trimmed(section).empty())
-      sections.find(input, s + "Section", section);
+    sections.find(input, s + "Section", section);
   }
 
   MomentCurvatureResult

@@ -50,6 +50,8 @@ ROWS = {
                     {**QUIET, "Reliability/Methods": "FORM"}),
     "dynamic-form": (os.path.join(CLI, "dynamic-form-sdof.prm"), set(), QUIET),
     "switching": (os.path.join(CLI, "switching-belt.prm"), set(), QUIET),
+    "moment-curvature": (os.path.join("input", "moment-curvature-rc-column.prm"), set(),
+                         {**QUIET, "Moment curvature/Steps": 30}),
 }
 SCRIPT_ROWS = {"opensees"}  # CommandRule::script_arguments
 NO_FILE = {"opensees": [os.path.join("tests", "opensees", "modes.tcl")],

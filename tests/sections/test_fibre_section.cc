@@ -491,3 +491,29 @@ BOOST_AUTO_TEST_CASE(bad_geometry_is_refused_naming_the_parameter)
   refuses([&] { rc_circle(c); }, "Cover");
 }
 
+
+BOOST_AUTO_TEST_CASE(rc_circle_bends_alike_in_every_direction)
+{
+  // a Mander-confined circle: its curve at 30 degrees in space against the
+  // plane one; 24 sectors and 10 bars are not quite axisymmetric (1 %), and
+  // the events located inside steps restart Newton from committed states
+  RcCircle c;
+  c.diameter        = 0.6;
+  c.cover           = 0.04;
+  c.bars            = 10;
+  c.bar_diameter    = 0.02;
+  c.spiral_diameter = 0.01;
+  c.spiral_pitch    = 0.08;
+  FibreSection            plane(rc_circle(c), 2), space(rc_circle(c), 4, 1e8);
+  MomentCurvatureSettings settings;
+  settings.axial_force      = -1e6;
+  settings.target_curvature = 0.1;
+  settings.steps            = 100;
+  const MomentCurvatureResult r2 = moment_curvature(plane, settings);
+  settings.angle                 = 30;
+  const MomentCurvatureResult r3 = moment_curvature(space, settings);
+  BOOST_TEST(r2.stop_reason == r3.stop_reason);
+  BOOST_TEST(r3.first_yield.moment == r2.first_yield.moment, boost::test_tools::tolerance(1e-2));
+  BOOST_TEST(r3.peak.moment == r2.peak.moment, boost::test_tools::tolerance(1e-2));
+  BOOST_TEST(r3.ultimate.curvature == r2.ultimate.curvature, boost::test_tools::tolerance(2e-2));
+}
