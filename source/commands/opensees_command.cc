@@ -13,6 +13,7 @@
 
 #include "opensees_tcl.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <ostream>
@@ -326,8 +327,17 @@ namespace poundfe
       const int code = Tcl_EvalFile(interp, script.c_str());
       if (code != TCL_OK && !session.exited)
         {
+          const std::string message = Tcl_GetStringResult(interp);
           const auto [file, line] = error_location(interp, script, code);
-          throw InputError(file, line, "", Tcl_GetStringResult(interp));
+          const auto &body = session.body_error; // the message of this error, not a caught one
+          if (body.line > 0 && body.message == message)
+            {
+              // the file as the script named it, when it is the same file
+              const bool same =
+                std::filesystem::absolute(file).lexically_normal() == body.file;
+              throw InputError(same ? file : body.file, body.line, "", message);
+            }
+          throw InputError(file, line, "", message);
         }
       session.finish_recorders();
       std::cout.flush();

@@ -41,6 +41,13 @@ namespace poundfe
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
       int            current_pattern = -1; // the Plain pattern whose body runs
+      /// An error in a pattern's body where the file says it is (Tcl's
+      /// errorInfo names the `pattern` line): its message, file and line.
+      struct BodyError
+      {
+        std::string message, file;
+        int         line;
+      } body_error{"", "", 0};
       bool           exited          = false;
       int            exit_status     = 0;
       std::ostream  &warnings;

@@ -505,6 +505,32 @@ namespace poundfe
           throw ScriptError("UniformExcitation needs -accel");
       }
 
+      /// The file and line of the running command (`info frame -1` from
+      /// here: the command's frame), {"", 0} when it is not in a file.
+      std::pair<std::string, int>
+      calling_line(Tcl_Interp *interp)
+      {
+        std::pair<std::string, int> where{"", 0};
+        Tcl_InterpState saved = Tcl_SaveInterpState(interp, TCL_OK);
+        if (Tcl_Eval(interp, "info frame -1") == TCL_OK)
+          {
+            Tcl_Obj *frame = Tcl_GetObjResult(interp), *value = nullptr;
+            Tcl_Obj *key   = Tcl_NewStringObj("file", -1);
+            Tcl_IncrRefCount(key);
+            if (Tcl_DictObjGet(nullptr, frame, key, &value) == TCL_OK && value)
+              where.first = Tcl_GetString(value);
+            Tcl_DecrRefCount(key);
+            key = Tcl_NewStringObj("line", -1);
+            Tcl_IncrRefCount(key);
+            if (Tcl_DictObjGet(nullptr, frame, key, &value) == TCL_OK && value &&
+                !where.first.empty())
+              Tcl_GetIntFromObj(nullptr, value, &where.second);
+            Tcl_DecrRefCount(key);
+          }
+        Tcl_RestoreInterpState(interp, saved);
+        return where;
+      }
+
       void
       pattern(Session &s, Words &w)
       {
@@ -532,11 +558,17 @@ namespace poundfe
         if (!w.done())
           unsupported("pattern Plain option '" + w.peek() + "'");
         d.patterns.emplace(p.tag, p);
-        s.current_pattern = p.tag;
-        const int code    = Tcl_Eval(w.interp, body.c_str());
-        s.current_pattern = -1;
+        const auto [file, line] = calling_line(w.interp);
+        s.current_pattern       = p.tag;
+        const int code          = Tcl_Eval(w.interp, body.c_str());
+        s.current_pattern       = -1;
         if (code != TCL_OK)
-          throw ScriptError(std::string(Tcl_GetStringResult(w.interp)));
+          {
+            const std::string message = w.name + ": " + Tcl_GetStringResult(w.interp);
+            if (line > 0) // the body's line in the file: its line in the body, from the brace's
+              s.body_error = {message, file, line + Tcl_GetErrorLine(w.interp) - 1};
+            throw ScriptError(message);
+          }
       }
 
       void

@@ -167,6 +167,8 @@ printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1 -
 printf 'fix 1 1\nfix 9 1\n' | bad missing-node '6: fix: node 9 does not exist'
 printf 'fix 1 1\nproc f {} {\n  set x $undefined\n}\nf\n' \
   | bad script-error "9: can't read \"undefined\": no such variable"
+printf 'timeSeries Linear 1\npattern Plain 1 1 {\n  load 2 1.0\n  load 9 1.0\n}\n' \
+  | bad load-in-a-pattern '8: pattern: load: node 9 does not exist'
 printf 'uniaxialMaterial Steel01 1 -100.0 1000.0 0.05\n' \
   | bad bad-material "5: uniaxialMaterial: parameter 'fy': Steel01: must be a positive number (got -100)"
 echo "opensees: ok"
