@@ -17,7 +17,7 @@ namespace poundfe
                       "event, station, magnitude, distance_km, vs30_m_s), a JSON file "
                       "({\"records\": [{\"files\": [...], ...}]}) or a folder of PEER .AT2 "
                       "files; record paths relative to the suite. Two files a record: a "
-                      "horizontal pair (Model/Dimension = 3). Unit: path.");
+                      "horizontal pair (Model/Dimension = 3). Unit: -.");
     add_choice(prm, "Intensity measure", measure,
                "What records are scaled to: Sa (pseudo-spectral acceleration at Period), "
                "Sa_avg (geometric mean of Sa over the Sa_avg range), PGA, PGV. Unit: -.",

@@ -27,6 +27,7 @@ ROWS = {
     "run": (EXAMPLE, {"partition", "fields"},
             {**QUIET, **SHORT, "Time integration/Nonlinear solver": "krylov-newton"}),
     "modal": (EXAMPLE, {"fields"}, QUIET),
+    "pushover": (os.path.join("input", "pushover-frame.prm"), set(), QUIET),
     "ground-motion": (EXAMPLE, {"realizations"}, QUIET),
     "spectrum": (EXAMPLE, {"realizations"}, QUIET),
     "montecarlo": (os.path.join(CLI, "montecarlo-small.prm"), set(),
