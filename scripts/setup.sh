@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(libdeal.ii-dev libeigen3-dev zlib1g-dev libboost-test-dev numdiff gmsh gnuplot-nox cmake g++ make python3
+packages=(libdeal.ii-dev libeigen3-dev zlib1g-dev libboost-test-dev tcl-dev numdiff gmsh gnuplot-nox cmake g++ make python3
           libmuparser-dev pybind11-dev python3-pybind11 python3-dev python3-numpy python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
