@@ -1,5 +1,6 @@
 // The `IDA` section (ida_parameters.h).
 #include <poundfe/assessment/ida_parameters.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/excitation/response_spectrum.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -56,6 +57,13 @@ namespace poundfe
     prm.add_parameter("Free vibration", free_vibration,
                       "Rest after each record (the residual drift is that at the end). Unit: s.",
                       Double(0));
+    prm.add_parameter("Demand intensities", demand_intensities,
+                      "Intensities at which ida writes each building's demands in pelicun's "
+                      "demand-sample convention, demands_<building>_im<k>.csv (k = 1, 2, ... "
+                      "in this order): a row per record that has not collapsed there, its "
+                      "demands interpolated along its IDA curve. Unit: that of the measure.",
+                      dealii::Patterns::List(Double(0), 0, 100, ","));
+    collapse_margin.declare(prm);
     prm.leave_subsection();
   }
 
@@ -77,6 +85,11 @@ namespace poundfe
       input.positive(path, value);
     if (!(upper_intensity > initial_step))
       input.fail("IDA/Upper intensity", "must exceed IDA/Initial step");
+    for (const double x : demand_intensities)
+      if (!(x > 0 && x <= upper_intensity))
+        input.fail("IDA/Demand intensities",
+                   "each must lie in (0, IDA/Upper intensity], got " + rounded(x));
+    collapse_margin.check(input, measure);
     if (!(sa_avg_range[0] > 0 && sa_avg_range[1] > sa_avg_range[0]))
       input.fail("IDA/Sa_avg range", "expected 0 < shortest < longest");
   }

@@ -5,6 +5,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/excitation/excitation.h>
+#include <poundfe/output/demand_table.h>
 #include <poundfe/output/floor_response.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/peak_response.h>
@@ -96,19 +97,11 @@ namespace poundfe
       point.demands.insert(point.demands.end(), part->begin(), part->end());
     point.demands.push_back(peaks->largest_drift_ratio());
     point.collapsed = !status.completed() || point.demands.back() > ida.collapse_drift_ratio;
-    const std::vector<Impact> &impacts = history->state().impact_log().impacts();
+    std::vector<double> count, force, velocity;
+    gap_demands(analysis.model, history->state().impact_log().impacts(), peaks->n_hysteretic(),
+                count, force, velocity);
     for (unsigned int g = 0; g < analysis.model.gaps.size(); ++g)
-      {
-        double n = 0, force = 0, velocity = 0;
-        for (const Impact &impact : impacts)
-          if (impact.element == peaks->n_hysteretic() + g)
-            {
-              ++n;
-              force    = std::max(force, impact.peak_force);
-              velocity = std::max(velocity, std::abs(impact.approach_velocity));
-            }
-        point.demands.insert(point.demands.end(), {n, force, velocity});
-      }
+      point.demands.insert(point.demands.end(), {count[g], force[g], velocity[g]});
     return point;
   }
 

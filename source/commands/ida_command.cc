@@ -2,10 +2,14 @@
 // suite (assessment/ida.h) over the ranks; rank 0 writes ida.csv (every run:
 // record, intensity, every demand), ida_records.csv (each record's
 // intensity measures), ida_fractiles.csv (16/50/84 % of the largest drift
-// ratio against the intensity), collapse_fragility.csv, ida.png and
-// summary.json. The rounds' journal (journal/round_<k>/realizations.csv)
+// ratio against the intensity), collapse_fragility.csv, ida.png,
+// summary.json (with FEMA P-695's collapse margin) and the pelicun demand
+// tables at IDA/Demand intensities (commands/ida_loss.h). The rounds' journal (journal/round_<k>/realizations.csv)
 // stays, so that the same command resumes an interrupted run.
+#include "ida_loss.h"
+
 #include <poundfe/assessment/ida.h>
+#include <poundfe/assessment/ida_demands.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/numbers.h>
@@ -97,24 +101,6 @@ namespace poundfe::commands
           text += "\n";
         }
       write_file_atomically(directory + "/ida_records.csv", text);
-    }
-
-    /// Record r's largest drift ratio at intensity x along its curve: +inf
-    /// at or above its collapse, nothing (NaN) above every intensity run.
-    double
-    demand_at(const IdaRecordResult &record, const unsigned int column, const double x)
-    {
-      if (record.collapse_intensity && x > record.highest_survived)
-        return std::numeric_limits<double>::infinity();
-      double x0 = 0, d0 = 0;
-      for (const IdaPoint &p : record.points)
-        if (!p.collapsed)
-          {
-            if (p.intensity >= x)
-              return d0 + (x - x0) / (p.intensity - x0) * (p.demands[column] - d0);
-            x0 = p.intensity, d0 = p.demands[column];
-          }
-      return std::nan("");
     }
 
     /// ida_fractiles.csv: the 16/50/84 % fractiles over 50 intensities.
@@ -291,6 +277,9 @@ namespace poundfe::commands
     JsonWriter json;
     begin_summary(json, "ida", input, result.interrupted ? "interrupted" : "completed");
     write_summary(json, run.out, runner, result, ida, fit);
+    write_collapse_margin(runner, result, ida, json, run.out);
+    std::vector<std::string> tables;
+    write_ida_demand_tables(directory, analysis.model, runner, result, ida, json, run.out, tables);
     json.end_object();
     const std::string measure = intensity_measure_names().name(ida.measure) + " (" +
                                 intensity_unit(ida.measure) + ")";
@@ -301,7 +290,8 @@ namespace poundfe::commands
     pcout << result.n_runs << " runs (" << result.n_run_now << " now, "
           << rounded(result.n_run_now / std::max(1e-9, result.wall_time)) << " runs/s); results in "
           << directory << "/ (summary.json, ida.csv, ida_records.csv, ida_fractiles.csv, "
-          << "collapse_fragility.csv" << (input.output.plots && !result.interrupted ? ", ida.png" : "")
+          << "collapse_fragility.csv" << (tables.empty() ? "" : ", demands_*.csv")
+          << (input.output.plots && !result.interrupted ? ", ida.png" : "")
           << ", journal/)\n";
     print_timing(timer);
     return status;

@@ -47,6 +47,12 @@ namespace poundfe
                       "response spectra of every floor's absolute acceleration (and of the "
                       "ground) at the periods and damping ratios of the Spectrum section, "
                       "computed while the run steps (sub-steps included). Unit: -.");
+    prm.add_parameter("Demand tables", demand_tables,
+                      "A run also writes demands_<building>.csv: each building's peak "
+                      "drifts, floor accelerations and displacements, residual drifts and "
+                      "displacements and its gaps' impacts in pelicun's demand-sample "
+                      "convention (output/demand_table.h; user guide, \"Demands for a loss "
+                      "model\"). Unit: -.");
     prm.add_parameter("Number of modes", n_modes,
                       "Modes reported (0: no modal analysis, for a large model whose "
                       "damping needs no modes). Unit: count.",

@@ -16,6 +16,7 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/response_range.h>
+#include <poundfe/output/demand_table.h>
 #include <poundfe/output/memory_results.h>
 
 #include <algorithm>
@@ -180,6 +181,12 @@ namespace poundfe
         written.push_back(file);
     if (attempt([&]() { write_profiles(); }))
       written.insert(written.end(), {"drift_profile.csv", "acceleration_profile.csv"});
+    if (parameters.output.demand_tables)
+      {
+        std::vector<std::string> tables;
+        if (attempt([&]() { tables = write_demand_tables(state); }))
+          written.insert(written.end(), tables.begin(), tables.end());
+      }
     if (!analysis.model.gaps.empty() && attempt([&]() { write_impacts(state); }))
       written.push_back("impacts.csv");
     if (!analysis.model.friction_surfaces.empty() &&
@@ -221,6 +228,31 @@ namespace poundfe
         }
     write_result_text(memory, directory, "drift_profile.csv", drift);
     write_result_text(memory, directory, "acceleration_profile.csv", accel);
+  }
+
+  std::vector<std::string>
+  RunSummary::write_demand_tables(const ResponseView &state) const
+  {
+    const Model         &model  = analysis.model;
+    const FloorResponse &floors = peaks.floors();
+    ResponseDemands      demands;
+    demands.pga                   = excitation.ground_motion().peak();
+    demands.peak_drift            = floors.peak_drift_ratio();
+    demands.peak_acceleration     = floors.peak_acceleration();
+    demands.residual_drift        = floors.drift_ratio(); // at the end of the run
+    demands.peak_displacement     = floors.peak_displacement();
+    demands.residual_displacement = floors.displacement();
+    gap_demands(model, state.impact_log().impacts(), peaks.n_hysteretic(), demands.impacts,
+                demands.impact_force, demands.impact_velocity);
+    std::vector<std::string> files;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        DemandTable table(model, b, true);
+        table.add(demands);
+        files.push_back(demand_table_file(model, b));
+        write_result_text(memory, directory, files.back(), table.csv());
+      }
+    return files;
   }
 
   void

@@ -4,6 +4,7 @@
 #ifndef poundfe_assessment_ida_parameters_h
 #define poundfe_assessment_ida_parameters_h
 
+#include <poundfe/assessment/collapse_margin.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/excitation/intensity_measures.h>
 
@@ -33,6 +34,9 @@ namespace poundfe
     unsigned int        runs_per_record = 12;   // hunt, bracket and fill (bracketing may exceed it)
     double              collapse_drift_ratio = 0.1;
     double              free_vibration       = 0; // s of rest after each record
+    /// Intensities at which ida writes pelicun demand tables (output/demand_table.h).
+    std::vector<double>      demand_intensities;
+    CollapseMarginParameters collapse_margin; // FEMA P-695
 
     void declare(dealii::ParameterHandler &prm);
     /// The suite it names (when given).

@@ -36,6 +36,7 @@ namespace poundfe
     bool               plots        = true;
     unsigned int       n_modes      = 6;
     bool               floor_spectra = false; // floor_spectra.csv of a run
+    bool               demand_tables = false; // demands_<building>.csv (pelicun) of a run
     RecorderParameters recorders;
     /// Output/Warnings (output/response_range.h); 0: no warning.
     double             drift_warning    = 0.10; // storey drift ratio, roof displacement / height

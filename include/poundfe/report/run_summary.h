@@ -58,6 +58,8 @@ namespace poundfe
 
   private:
     void write_profiles() const;
+    /// demands_<building>.csv (output/demand_table.h), Output/Demand tables; the files.
+    std::vector<std::string> write_demand_tables(const ResponseView &state) const;
     void write_impacts(const ResponseView &state) const;
     /// summary.json, in the order of its keys: status, model, ground
     /// motion, buildings, hinges, gaps, springs and friction, energy and

@@ -1,0 +1,36 @@
+// What `poundfe ida` gives a loss model and a FEMA P-695 evaluation: the
+// pelicun demand tables at IDA/Demand intensities (assessment/ida_demands.h,
+// output/demand_table.h) and the collapse margin (assessment/collapse_margin.h);
+// private to the commands.
+#ifndef poundfe_commands_ida_loss_h
+#define poundfe_commands_ida_loss_h
+
+#include <poundfe/assessment/ida.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class JsonWriter;
+  class Model;
+} // namespace poundfe
+
+namespace poundfe::commands
+{
+  /// demands_<building>_im<k>.csv for each intensity of IDA/Demand
+  /// intensities; summary.json's "demand_tables" and the report's lines.
+  /// The names of the files written are appended to `files`.
+  void write_ida_demand_tables(const std::string &directory, const Model &model,
+                               const IdaRunner &runner, const IdaResult &result,
+                               const IdaParameters &ida, JsonWriter &json, std::ostream &out,
+                               std::vector<std::string> &files);
+
+  /// summary.json's "collapse_margin" and the report's lines, when
+  /// IDA/Collapse margin/MCE spectral acceleration is given.
+  void write_collapse_margin(const IdaRunner &runner, const IdaResult &result,
+                             const IdaParameters &ida, JsonWriter &json, std::ostream &out);
+} // namespace poundfe::commands
+
+#endif
