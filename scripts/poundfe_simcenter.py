@@ -203,7 +203,7 @@ def demand_tables(directory):
 
 def building_of(sam, sam_path, directory):
     with open(os.path.join(directory, "summary.json")) as f:
-        files = json.load(f)["files"]
+        files = json.load(f)["output"]["files"]
     order = [f[len("demands_"):-len(".csv")] for f in files if f.startswith("demands_")]
     name = sam.get("building", order[0])
     if name not in order:

@@ -105,7 +105,7 @@ PY
 python3 - run <<'PY' || die "run's demand tables"
 import csv, json, os, sys
 d = sys.argv[1]
-files = json.load(open(os.path.join(d, "summary.json")))["files"]
+files = json.load(open(os.path.join(d, "summary.json")))["output"]["files"]
 assert "demands_shear3.csv" in files and "demands_shear2.csv" in files, files
 drift = {(r["building"], r["storey"]): float(r["peak_drift_ratio"]) for r in csv.DictReader(open(os.path.join(d, "drift_profile.csv")))}
 accel = {(r["building"], r["floor"]): r for r in csv.DictReader(open(os.path.join(d, "acceleration_profile.csv")))}

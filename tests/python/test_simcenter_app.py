@@ -142,10 +142,11 @@ class SimCenterApp(TestCase):
             command += ["--set", f"{k}={v}"]
         done = subprocess.run(command, capture_output=True, text=True)
         self.assertEqual(done.returncode, 0, done.stderr)
-        drift = {int(r["storey"]): float(r["peak_drift_ratio"])
-                 for r in csv.DictReader(open("direct/drift_profile.csv")) if r["building"] == "tall"}
-        accel = {int(r["floor"]): r for r in csv.DictReader(open("direct/acceleration_profile.csv"))
-                 if r["building"] == "tall"}
+        with open("direct/drift_profile.csv") as f:
+            drift = {int(r["storey"]): float(r["peak_drift_ratio"])
+                     for r in csv.DictReader(f) if r["building"] == "tall"}
+        with open("direct/acceleration_profile.csv") as f:
+            accel = {int(r["floor"]): r for r in csv.DictReader(f) if r["building"] == "tall"}
         return drift, accel
 
     def test_get_rv_then_run(self):
