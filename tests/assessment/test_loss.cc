@@ -10,7 +10,10 @@
 //    an IDA: the file against pelicun 3's DEMAND sample schema (written out
 //    below), its numbers against the runs' demands exactly at an intensity
 //    run and, for a linear pair (no gap closes), x times those at x = 1
-//    (interpolation along a linear curve is exact; 1e-9 relative).
+//    (interpolation along a linear curve is exact; 1e-9 relative);
+//  - an IDA's demands at an intensity from made-up runs: interpolated by
+//    hand (1e-14), a record collapsed at or below it and one not run that
+//    high left out and counted.
 #include <poundfe/assessment/collapse_margin.h>
 #include <poundfe/assessment/ida_demands.h>
 #include <poundfe/dynamics/analysis.h>
@@ -271,4 +274,49 @@ BOOST_AUTO_TEST_CASE(demand_table_of_a_linear_pair_scales_with_the_intensity)
                          boost::test_tools::tolerance(1e-9));
           }
     }
+}
+
+BOOST_AUTO_TEST_CASE(ida_demands_leave_out_collapsed_and_short_records)
+{
+  // two records of made-up runs: record 0 survives 0.4 and collapses at 0.8,
+  // every demand 1; record 1 runs only at 0.3, every demand -2
+  const InputParameters input    = pair_input("loss_censored", "");
+  const Analysis        analysis = prepare_analysis(input);
+  IdaRunner runner(analysis, time_history_parameters(input), input.ida,
+                   read_record_suite(input.ida.suite));
+  const std::size_t n = runner.demand_names().size();
+  IdaResult         result;
+  result.records.resize(2);
+  IdaPoint survived;
+  survived.intensity = 0.4;
+  survived.demands.assign(n, 1.0);
+  IdaPoint collapsed = survived;
+  collapsed.intensity = 0.8;
+  collapsed.collapsed = true;
+  result.records[0].points             = {survived, collapsed};
+  result.records[0].collapse_intensity = 0.8;
+  result.records[0].highest_survived   = 0.4;
+  IdaPoint low;
+  low.intensity = 0.3;
+  low.demands.assign(n, -2.0);
+  result.records[1].points = {low};
+  const auto tol = boost::test_tools::tolerance(1e-14);
+  // 0.2: both, along (0, 0)..(0.4, 1) and (0, 0)..(0.3, -2); a residual
+  // drift's magnitude
+  const IdaDemandSample both = ida_demands_at(runner, result, 0.2);
+  BOOST_REQUIRE(both.rows.size() == 2);
+  BOOST_TEST(both.rows[0].peak_drift[0] == 0.5, tol);
+  BOOST_TEST(both.rows[1].peak_drift[0] == -2 * 0.2 / 0.3, tol);
+  BOOST_TEST(both.rows[1].residual_drift[0] == 2 * 0.2 / 0.3, tol);
+  BOOST_TEST(both.rows[1].impact_force[1] == -2 * 0.2 / 0.3, tol);
+  // 0.35: record 1 was not run that high
+  const IdaDemandSample one = ida_demands_at(runner, result, 0.35);
+  BOOST_TEST(one.rows.size() == 1);
+  BOOST_TEST(one.records == std::vector<unsigned int>{0}, boost::test_tools::per_element());
+  BOOST_TEST(one.not_reached == 1);
+  // 0.5: record 0 collapsed (above the highest intensity it survived)
+  const IdaDemandSample none = ida_demands_at(runner, result, 0.5);
+  BOOST_TEST(none.rows.empty());
+  BOOST_TEST(none.collapsed == 1);
+  BOOST_TEST(none.not_reached == 1);
 }
