@@ -49,8 +49,8 @@ namespace poundfe
                       "computed while the run steps (sub-steps included). Unit: -.");
     prm.add_parameter("Demand tables", demand_tables,
                       "A run also writes demands_<building>.csv: each building's peak "
-                      "drifts, floor accelerations and displacements, residual drifts and "
-                      "displacements and its gaps' impacts in pelicun's demand-sample "
+                      "drifts, floor accelerations and displacements, roof drift, residual "
+                      "drifts and displacements and its gaps' impacts in pelicun's demand-sample "
                       "convention (output/demand_table.h; user guide, \"Demands for a loss "
                       "model\"). Unit: -.");
     prm.add_parameter("Number of modes", n_modes,
