@@ -31,7 +31,14 @@ namespace poundfe
         Assert(s.intensity > 0 && s.exceeded <= s.runs, dealii::ExcMessage("bad stripe"));
         intensity.push_back(s.intensity), exceeded.push_back(s.exceeded), runs.push_back(s.runs);
       }
-    return fit_lognormal_fragility(intensity, exceeded, runs);
+    LognormalFragility fit = fit_lognormal_fragility(intensity, exceeded, runs);
+    const bool         partial = std::any_of(stripes.begin(), stripes.end(), [](const StripeCount &s) {
+      return s.exceeded > 0 && s.exceeded < s.runs;
+    });
+    if (fit.fitted && !partial)
+      fit.note = "no stripe is partly exceeded: the data do not bound beta (it tends to 0); "
+                 "add stripes between the last one exceeded by none and the first by all";
+    return fit;
   }
 
   LognormalFragility

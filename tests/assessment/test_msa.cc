@@ -76,6 +76,9 @@ BOOST_AUTO_TEST_CASE(binomial_fit_without_exceedance_is_no_fit)
 {
   BOOST_TEST(!fit_stripe_fragility({{0.5, 10, 0}, {1.0, 10, 0}}).fitted);
   BOOST_TEST(!fit_stripe_fragility({{0.5, 10, 10}, {1.0, 10, 10}}).fitted);
+  // separated stripes (none partly exceeded): a fit, with the warning that beta is unbounded
+  const LognormalFragility separated = fit_stripe_fragility({{0.5, 10, 0}, {1.0, 10, 10}});
+  BOOST_TEST(separated.note.find("no stripe is partly exceeded") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(cloud_fit_of_a_power_law)

@@ -51,7 +51,7 @@ BOOST_AUTO_TEST_CASE(bssa14_against_the_authors_table)
     }
 }
 
-BOOST_AUTO_TEST_CASE(baker_jayaram_correlation)
+BOOST_AUTO_TEST_CASE(baker_jayaram_correlation_against_their_figure)
 {
   for (const double t : {0.01, 0.05, 0.15, 0.5, 2.0, 10.0})
     BOOST_TEST(baker_jayaram_correlation(t, t) == 1.0, boost::test_tools::tolerance(1e-12));
@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(conditional_mean_spectrum_at_the_conditioning_period)
   BOOST_TEST(cms[0].sigma > 0);
 }
 
-BOOST_AUTO_TEST_CASE(asce7_corners)
+BOOST_AUTO_TEST_CASE(asce7_spectrum_at_its_corners)
 {
   // SDS = 1, SD1 = 0.6: T0 = 0.12, TS = 0.6
   BOOST_TEST(asce7_design_spectrum(1, 0.6, 8, 0) == 0.4);

@@ -105,7 +105,7 @@ mkdir -p msa && cp "$here/msa/linear.prm" msa/
 printf 'period_s,sa_g\n0.05,0.5\n0.5,0\n3,0.2\n' > zero.csv
 printf 'period_s,sa_g\n0.05,0.5\n0.5,-1\n3,0.2\n' > negative.csv
 printf 'period_s,sa_g\n0.5,0.5\n1,0.4\n' > narrow.csv
-sel=(select-records "$m" "${suite[@]}" --output out)
+sel=(select-records "$m" "${suite[@]}" --output out --set "Selection/Records=2")
 expect 1 "zero.csv:3: parameter 'sa_g': a target spectrum must be positive" "${sel[@]}" \
   --set "Selection/Target=table" --set "Selection/Spectrum table=$work/zero.csv"
 expect 1 "negative.csv:3: parameter 'sa_g': a target spectrum must be positive, got -1 g" "${sel[@]}" \
