@@ -105,47 +105,39 @@ namespace poundfe
     return point;
   }
 
+  std::vector<std::vector<double>>
+  run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
+                const MPI_Comm comm, Progress *const progress, const unsigned long offset,
+                IdaResult &result)
+  {
+    RealizationJob job;
+    job.names = {"record", "intensity", "collapsed"};
+    for (const std::string &n : runner.demand_names())
+      job.names.push_back(n);
+    job.seed          = 0;
+    job.report_lines  = false;
+    job.run           = [&](const std::uint64_t i, std::vector<double> &row) {
+      const IdaPoint point = runner.run(tasks[i].record, tasks[i].intensity);
+      row = {double(tasks[i].record), tasks[i].intensity, point.collapsed ? 1.0 : 0.0};
+      row.insert(row.end(), point.demands.begin(), point.demands.end());
+      return true;
+    };
+    const MonteCarloTable table =
+      run_realizations(job, tasks.size(), file, comm, "IDA: ", progress, offset);
+    result.n_run_now += table.n_run_now; // summed over the ranks already
+    result.interrupted = result.interrupted || table.interrupted;
+    std::vector<double> flat;
+    for (const std::vector<double> &row : table.responses)
+      flat.insert(flat.end(), row.begin(), row.end());
+    flat = dealii::Utilities::MPI::broadcast(comm, flat, 0);
+    std::vector<std::vector<double>> rows;
+    for (std::size_t i = 0; i < flat.size(); i += job.names.size())
+      rows.emplace_back(flat.begin() + i, flat.begin() + i + job.names.size());
+    return rows;
+  }
+
   namespace
   {
-    struct IdaTask
-    {
-      unsigned int record    = 0;
-      double       intensity = 0;
-    };
-
-    /// One round: the next intensity of every record not done, run over
-    /// the ranks; its rows (record, intensity, collapsed, demands) on every rank.
-    std::vector<std::vector<double>>
-    run_round(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
-              const MPI_Comm comm, Progress *const progress, const unsigned long offset,
-              IdaResult &result)
-    {
-      RealizationJob job;
-      job.names = {"record", "intensity", "collapsed"};
-      for (const std::string &n : runner.demand_names())
-        job.names.push_back(n);
-      job.seed          = 0;
-      job.report_lines  = false;
-      job.run           = [&](const std::uint64_t i, std::vector<double> &row) {
-        const IdaPoint point = runner.run(tasks[i].record, tasks[i].intensity);
-        row = {double(tasks[i].record), tasks[i].intensity, point.collapsed ? 1.0 : 0.0};
-        row.insert(row.end(), point.demands.begin(), point.demands.end());
-        return true;
-      };
-      const MonteCarloTable table =
-        run_realizations(job, tasks.size(), file, comm, "IDA: ", progress, offset);
-      result.n_run_now += table.n_run_now; // summed over the ranks already
-      result.interrupted = result.interrupted || table.interrupted;
-      std::vector<double> flat;
-      for (const std::vector<double> &row : table.responses)
-        flat.insert(flat.end(), row.begin(), row.end());
-      flat = dealii::Utilities::MPI::broadcast(comm, flat, 0);
-      std::vector<std::vector<double>> rows;
-      for (std::size_t i = 0; i < flat.size(); i += job.names.size())
-        rows.emplace_back(flat.begin() + i, flat.begin() + i + job.names.size());
-      return rows;
-    }
-
     /// A round's row into its record's search and points.
     void
     take_row(const std::vector<double> &row, std::vector<HuntFill> &searches, IdaResult &result)
@@ -185,7 +177,7 @@ namespace poundfe
           create_directories(folder);
         const std::string file = folder + "/realizations.csv";
         for (const std::vector<double> &row :
-             run_round(runner, tasks, file, comm, progress, result.n_runs, result))
+             run_ida_tasks(runner, tasks, file, comm, progress, result.n_runs, result))
           take_row(row, searches, result);
       }
     for (unsigned int r = 0; r < n_records; ++r)

@@ -29,6 +29,8 @@ namespace poundfe
     int input_template(const CommandRun &); // template_command.cc
     int opensees(const CommandRun &);       // opensees_command.cc
     int ida(const CommandRun &);            // ida_command.cc
+    int msa(const CommandRun &);            // msa_command.cc
+    int select_records(const CommandRun &); // select_records_command.cc
   } // namespace commands
 
   const std::vector<Command> &
@@ -79,6 +81,15 @@ namespace poundfe
        "hunt and fill to collapse per record, every demand at every\n"
        "intensity, fractile curves, collapse fragility (MPI)",
        file | mpi | own_interruption | resumable, summary, commands::ida},
+      {"msa", "FILE",
+       "multiple-stripe and cloud analysis of the IDA section's suite at\n"
+       "the MSA section's intensities or hazard return periods: fragility\n"
+       "of collapse and each limit state, annual rates of exceedance (MPI)",
+       file | mpi | own_interruption | resumable, summary, commands::msa},
+      {"select-records", "FILE",
+       "select and scale records of a suite to a target spectrum (EC8,\n"
+       "ASCE 7, a table, BSSA14's conditional mean spectrum): a suite file",
+       file, summary, commands::select_records},
       {"stationary-pdf", "FILE",
        "stationary PDFs of a noisy response: histogram, kernel density,\n"
        "peaks, joint p(x, v) (MPI)",

@@ -38,15 +38,6 @@ namespace poundfe::commands
 {
   namespace
   {
-    /// A number or, when it is not finite, an empty field.
-    void
-    append_field(std::string &text, const double x)
-    {
-      text += ',';
-      if (std::isfinite(x))
-        append_number(text, x);
-    }
-
     /// ida.csv: one row per run, by record and intensity.
     void
     write_runs(const std::string &directory, const IdaRunner &runner, const IdaResult &result)

@@ -69,7 +69,8 @@ namespace poundfe
     for (std::vector<NamedInputFile> section :
          {input.model.input_files(), input.ground_motion.input_files(),
           input.nodal_forces.input_files(), input.site_hazard.input_files(),
-          input.separation.hazard.input_files(), input.ida.input_files()})
+          input.separation.hazard.input_files(), input.ida.input_files(),
+          input.msa.input_files(), input.selection.input_files()})
       for (NamedInputFile &file : section)
         {
           file.path = input.resolve(file.name);

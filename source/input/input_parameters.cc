@@ -242,6 +242,8 @@ namespace poundfe
     moment_curvature.declare(prm);
     pushover.declare(prm);
     ida.declare(prm);
+    msa.declare(prm);
+    selection.declare(prm);
   }
 
   void
@@ -284,6 +286,8 @@ namespace poundfe
     moment_curvature.check(*this, sections);
     pushover.finalize(*this, model.buildings.size());
     ida.check(*this);
+    msa.check(*this);
+    selection.check(*this);
   }
 
   void

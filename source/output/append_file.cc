@@ -74,4 +74,12 @@ namespace poundfe
     char buffer[32];
     text.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
   }
+
+  void
+  append_field(std::string &text, const double x)
+  {
+    text += ',';
+    if (std::isfinite(x))
+      append_number(text, x);
+  }
 } // namespace poundfe

@@ -38,6 +38,9 @@ ROWS = {
                   {**QUIET, **SHORT, "Fragility/Realizations per level": 1,
                    "Fragility/PGA levels": 0.1}),
     "ida": (os.path.join(CLI, "ida", "ida-small.prm"), set(), {**QUIET, "IDA/Runs per record": 2}),
+    "msa": (os.path.join(CLI, "ida", "ida-small.prm"), set(), {**QUIET, "MSA/Intensities": 0.2}),
+    "select-records": (os.path.join(CLI, "ida", "ida-small.prm"), set(),
+                       {**QUIET, "Selection/Records": 1, "Selection/Scale limits": "0.01, 100"}),
     "stationary-pdf": (os.path.join(CLI, "stationary-linear.prm"), set(),
                        {**QUIET, "Stationary PDF/Number of realizations": 2}),
     "sweep": (os.path.join(CLI, "3d-commands.prm"), set(), QUIET),
@@ -163,7 +166,7 @@ class CommandRules(TestCase):
         text = " ".join(usage.split())
         self.assertIn("Partition = buildings is taken only by 'run',", text)
         self.assertIn("Output/Field format = xdmf only by 'run' and 'modal'.", text)
-        self.assertIn("montecarlo, subset, fragility, ida, stationary-pdf, separation and mitigation "
+        self.assertIn("montecarlo, subset, fragility, ida, msa, stationary-pdf, separation and mitigation "
                       "resume when run again", text)
 
 

@@ -170,6 +170,23 @@ namespace poundfe
     bool                         interrupted = false;
   };
 
+  /// One run to do: a record at an intensity.
+  struct IdaTask
+  {
+    unsigned int record    = 0;
+    double       intensity = 0;
+  };
+
+  /// Runs `tasks` over the ranks of `comm` (each must call it), spread by
+  /// the Monte Carlo scheduler and journaled in `file` (a realizations.csv:
+  /// a call with the same file resumes); `offset` runs are counted done for
+  /// the progress line. Returns each task's row (record, intensity,
+  /// collapsed, the demands) on every rank; adds the runs of this call to
+  /// result.n_run_now and an interruption to result.interrupted.
+  std::vector<std::vector<double>>
+  run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
+                MPI_Comm comm, Progress *progress, unsigned long offset, IdaResult &result);
+
   /// Hunt and fill every record of the runner's suite over the ranks of
   /// `comm` (each must call it): in rounds, each running the next intensity
   /// of every record not done, spread over the ranks by the Monte Carlo

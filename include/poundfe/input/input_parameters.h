@@ -6,6 +6,8 @@
 #define poundfe_input_input_parameters_h
 
 #include <poundfe/assessment/ida_parameters.h>
+#include <poundfe/assessment/msa_parameters.h>
+#include <poundfe/assessment/selection_parameters.h>
 #include <poundfe/dynamics/bifurcation.h>
 #include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/dynamics/modal_parameters.h>
@@ -79,6 +81,8 @@ namespace poundfe
     MomentCurvatureParameters moment_curvature; // Moment curvature
     PushoverParameters        pushover;    // Pushover (the pushover command)
     IdaParameters             ida;         // IDA (the ida command)
+    MsaParameters             msa;         // MSA (the msa command)
+    SelectionParameters       selection;   // Selection (the select-records command)
     /// The overrides the file was read with (a sweep adds its own to them).
     std::vector<ParameterOverride> overrides;
     /// Every entry's value as read (defaults included), by its path

@@ -28,6 +28,10 @@ namespace poundfe
   /// Appends x in the shortest form that reads back to the same double;
   /// NumericalError unless it is finite (output/finite_output.h).
   void append_number(std::string &text, double x);
+
+  /// Appends ',' and x, or ',' alone when x is not finite (a value a table
+  /// has not: a fit that was not made, a fractile above collapse).
+  void append_field(std::string &text, double x);
 } // namespace poundfe
 
 #endif

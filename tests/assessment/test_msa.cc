@@ -1,0 +1,145 @@
+// Multiple-stripe and cloud analysis (assessment/msa.h):
+//  - the binomial maximum-likelihood fit of stripes (Baker 2015, eq. 11):
+//    on stripes whose counts are the expected ones of a lognormal fragility
+//    (theta = 0.8, beta = 0.4, 10^6 runs a stripe, rounded) it recovers
+//    theta and beta within 1e-3 (the rounding of the counts); on a small
+//    set of stripes (Baker 2015's situation: 40 records a stripe) the fit
+//    is the maximum of the likelihood written out here (eq. 11): no point
+//    of a dense (theta, beta) grid around it is more likely (1e-9);
+//  - the cloud: exact power-law data give the slope and constant to 1e-12
+//    and no dispersion; residuals +/- e give the dispersion
+//    sqrt(n e^2 / (n - 2)) (the closed form);
+//  - the annual rate of exceedance on a power-law hazard lambda = k0 x^-k
+//    against the closed form k0 theta^-k exp(k^2 beta^2 / 2) (Cornell et
+//    al. 2002): 1e-4 relative (the curve's range holds all but ~1e-12 of
+//    the integral; the trapezoid's error on 64 parts an interval is ~1e-6);
+//  - a hazard curve's intensity at a return period reads back its rate.
+#include <poundfe/assessment/msa.h>
+#include <poundfe/base/standard_normal.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+using namespace poundfe;
+
+namespace
+{
+  /// Baker's (2015) eq. 11 written out: the binomial log-likelihood.
+  double
+  binomial_log_likelihood(const std::vector<StripeCount> &stripes, const double theta,
+                          const double beta)
+  {
+    double sum = 0;
+    for (const StripeCount &s : stripes)
+      {
+        const double p = standard_normal_cdf(std::log(s.intensity / theta) / beta);
+        sum += s.exceeded * std::log(p) + (s.runs - s.exceeded) * std::log(1 - p);
+      }
+    return sum;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(binomial_fit_recovers_a_lognormal_fragility)
+{
+  std::vector<StripeCount> stripes;
+  for (const double x : {0.2, 0.4, 0.6, 0.8, 1.0, 1.3, 1.7})
+    {
+      const unsigned int n = 1000000;
+      const double       p = standard_normal_cdf(std::log(x / 0.8) / 0.4);
+      stripes.push_back({x, n, static_cast<unsigned int>(std::round(n * p))});
+    }
+  const LognormalFragility fit = fit_stripe_fragility(stripes);
+  BOOST_REQUIRE(fit.fitted);
+  BOOST_TEST(fit.theta == 0.8, boost::test_tools::tolerance(1e-3));
+  BOOST_TEST(fit.beta == 0.4, boost::test_tools::tolerance(1e-3));
+}
+
+BOOST_AUTO_TEST_CASE(binomial_fit_is_the_likelihood_maximum)
+{
+  // 40 records a stripe, counts of collapse growing with the intensity
+  const std::vector<StripeCount> stripes{{0.2, 40, 0}, {0.4, 40, 2},  {0.6, 40, 7},
+                                         {0.8, 40, 15}, {1.0, 40, 22}, {1.2, 40, 30},
+                                         {1.5, 40, 36}};
+  const LognormalFragility fit = fit_stripe_fragility(stripes);
+  BOOST_REQUIRE(fit.fitted);
+  const double best = binomial_log_likelihood(stripes, fit.theta, fit.beta);
+  for (int i = -50; i <= 50; ++i)
+    for (int j = -50; j <= 50; ++j)
+      {
+        const double theta = fit.theta * std::exp(0.004 * i), beta = fit.beta * std::exp(0.004 * j);
+        BOOST_TEST(binomial_log_likelihood(stripes, theta, beta) <= best + 1e-9);
+      }
+}
+
+BOOST_AUTO_TEST_CASE(binomial_fit_without_exceedance_is_no_fit)
+{
+  BOOST_TEST(!fit_stripe_fragility({{0.5, 10, 0}, {1.0, 10, 0}}).fitted);
+  BOOST_TEST(!fit_stripe_fragility({{0.5, 10, 10}, {1.0, 10, 10}}).fitted);
+  // separated stripes (none partly exceeded): a fit, with the warning that beta is unbounded
+  const LognormalFragility separated = fit_stripe_fragility({{0.5, 10, 0}, {1.0, 10, 10}});
+  BOOST_TEST(separated.note.find("no stripe is partly exceeded") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(cloud_fit_of_a_power_law)
+{
+  std::vector<double> x, d, noisy;
+  for (int i = 1; i <= 8; ++i)
+    {
+      x.push_back(0.1 * i * i);
+      d.push_back(0.02 * x.back()); // a linear model: D proportional to IM
+      noisy.push_back(0.03 * std::pow(x.back(), 1.2) * std::exp(i % 2 ? 0.3 : -0.3));
+    }
+  const CloudFit exact = fit_cloud(x, d);
+  BOOST_REQUIRE(exact.fitted);
+  BOOST_TEST(exact.b == 1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(exact.a == 0.02, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(exact.dispersion < 1e-12);
+  const CloudFit fit = fit_cloud(x, noisy);
+  // the residuals +/-0.3 alternate: least squares leaves them only if they
+  // are orthogonal to ln x; check the dispersion against the residuals' own
+  double squares = 0;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    squares += std::pow(std::log(noisy[i]) - std::log(fit.a) - fit.b * std::log(x[i]), 2);
+  BOOST_TEST(fit.dispersion == std::sqrt(squares / (x.size() - 2)),
+             boost::test_tools::tolerance(1e-12));
+  // its fragility of a threshold: P(D > d | x) at x = theta is one half
+  const LognormalFragility f = fit.fragility(0.05);
+  BOOST_TEST(fit.a * std::pow(f.theta, fit.b) == 0.05, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(f.beta == fit.dispersion / fit.b, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(hazard_integration_against_the_closed_form)
+{
+  const double k0 = 1e-4, k = 2.5;
+  HazardCurve  curve;
+  for (int i = 0; i <= 50; ++i)
+    {
+      const double x = 1e-3 * std::pow(1e5, i / 50.0); // 0.001 to 100
+      curve.intensity.push_back(x);
+      curve.rate.push_back(k0 * std::pow(x, -k));
+    }
+  for (const auto &[theta, beta] : {std::pair{0.6, 0.5}, std::pair{0.3, 0.3}, std::pair{1.5, 0.6}})
+    {
+      LognormalFragility fragility;
+      fragility.theta = theta, fragility.beta = beta, fragility.fitted = true;
+      const double exact = k0 * std::pow(theta, -k) * std::exp(k * k * beta * beta / 2);
+      BOOST_TEST(exceedance_rate(curve, fragility) == exact, boost::test_tools::tolerance(1e-4));
+    }
+  // the intensity of a return period: its rate is 1 / T
+  const double x = curve.intensity_of_return_period(475);
+  BOOST_TEST(curve.rate_at(x) == 1 / 475.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(std::isnan(curve.intensity_of_return_period(1e30)));
+}
+
+BOOST_AUTO_TEST_CASE(limit_states_count_collapse_and_thresholds)
+{
+  IdaPoint point;
+  point.demands = {0.005, 0.0, 2.0};
+  const LimitState drift{"d", 0, 0.004}, impacts{"i", 2, 0}, none{"n", 1, 0};
+  BOOST_TEST(drift.exceeded(point));
+  BOOST_TEST(impacts.exceeded(point));
+  BOOST_TEST(!none.exceeded(point));
+  point.collapsed = true;
+  BOOST_TEST(none.exceeded(point));
+}

@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# msa (multiple stripes and cloud) and select-records:
+#  - msa of a LINEAR model: every demand divided by the stripe's intensity
+#    is the same at every stripe, record by record (1e-9 relative to the
+#    column's largest: round-off of ~1000 steps);
+#  - the cloud of a linear oscillator (one storey, 5 % modal damping) with
+#    Sa(T1, 5 %) as the measure: ln(drift) on ln(Sa) has slope 1 (0.01: the
+#    integrator's period error against the exact oscillator of the
+#    spectrum, (dt/T)^2 ~ 1e-4, and the peaks' sampling) and a dispersion
+#    below 0.01;
+#  - one rank and two give the same msa.csv; a second run resumes from the
+#    journal and runs nothing;
+#  - the example input (shortened) at the return periods of a hazard curve,
+#    with limit states on pounding: every file, an annual rate per state;
+#  - select-records writes a suite that msa reads; its mean spectrum is
+#    within the factor it reports of the target;
+#  - bad input: one line naming file, line and parameter, exit 1, nothing
+#    written.
+poundfe=$(realpath "$1") mpirun=$2 example=$(realpath "$3")
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+# shellcheck source=/dev/null
+. "$here/expect.sh"
+die() { echo "FAIL $*"; exit 1; }
+
+"$poundfe" ground-motion "$example" --realizations 4 --write-at2 --output gen \
+  --set "Ground motion/Stochastic/Duration=4" --set "Output/Plots=false" > /dev/null ||
+  die "ground-motion --write-at2"
+suite=(--set "IDA/Suite=$work/gen/records/suite.csv")
+
+# a linear model: demands proportional to the intensity
+"$poundfe" msa "$here/msa/linear.prm" --output linear "${suite[@]}" > linear.log ||
+  die "msa linear: $(cat linear.log)"
+python3 - linear/msa.csv <<'PY' || die "linear msa not proportional"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+demands = [c for c in rows[0] if c.startswith(("storey", "floor", "max_"))]
+assert len(rows) == 12 and demands, (len(rows), demands)
+for c in demands:
+    top = max(abs(float(r[c])) for r in rows) or 1
+    for rec in {r["record"] for r in rows}:
+        ratios = [float(r[c]) / float(r["intensity"]) for r in rows if r["record"] == rec]
+        if max(ratios) - min(ratios) > 1e-9 * top:
+            sys.exit(f"{c} of record {rec}: {ratios}")
+print("linear: every demand proportional to the intensity")
+PY
+grep -q '"name": "max_drift_ratio > 0.004"' linear/summary.json || die "no limit state in summary.json"
+
+# the cloud of a linear oscillator: slope 1
+"$poundfe" msa "$here/msa/sdof.prm" --output sdof "${suite[@]}" > sdof.log || die "msa sdof: $(cat sdof.log)"
+python3 - sdof/summary.json <<'PY' || die "cloud slope"
+import json, sys
+cloud = json.load(open(sys.argv[1]))["cloud"]
+assert cloud["fitted"] and cloud["points"] == 4, cloud
+if abs(cloud["b"] - 1) > 0.01 or cloud["dispersion"] > 0.01:
+    sys.exit(f"cloud of a linear oscillator: {cloud}")
+print(f"cloud: slope {cloud['b']}, dispersion {cloud['dispersion']}")
+PY
+
+# two ranks: the same runs; resumed: nothing runs again
+"$mpirun" -np 2 "$poundfe" msa "$here/msa/linear.prm" --output two "${suite[@]}" > /dev/null ||
+  die "msa on two ranks"
+cmp linear/msa.csv two/msa.csv || die "one rank and two give different msa.csv"
+"$poundfe" msa "$here/msa/linear.prm" --output linear "${suite[@]}" > again.log || die "resumed msa"
+grep -q '"runs_now": 0' linear/summary.json || die "a finished msa ran again"
+cmp linear/msa.csv two/msa.csv || die "the resumed run changed msa.csv"
+
+# the example, short, on a hazard curve of PGA
+printf 'intensity,pga_g,annual_rate_per_year\n' > hazard.csv
+for x in 0.01 0.02 0.05 0.1 0.2 0.5 1 2; do
+  python3 -c "print(f'{$x},{$x},{1e-4 * $x ** -2.5}')" >> hazard.csv
+done
+"$poundfe" msa "$example" --output example "${suite[@]}" --set "MSA/Hazard curve=$work/hazard.csv" \
+  --set "MSA/Return periods=475" --set "MSA/Intensities=0.2, 0.8" \
+  --set "Ground motion/Stochastic/Duration=4" --set "Output/Plots=false" > example.log ||
+  die "msa example: $(cat example.log)"
+for f in summary.json msa.csv msa_stripes.csv msa_fragility.csv msa_curves.csv cloud.csv; do
+  [ -f "example/$f" ] || die "msa wrote no $f"
+done
+grep -q "gap1_impacts_gt_0" example/msa_fragility.csv || die "no pounding limit state"
+[ "$(wc -l < example/msa.csv)" -eq 13 ] || die "expected 3 stripes x 4 records in msa.csv"
+
+# select-records: a suite msa reads
+"$poundfe" select-records "$example" --output sel "${suite[@]}" --set "Selection/Records=2" \
+  --set "Selection/Target=asce7" --set "Selection/Scale limits=0.05, 20" \
+  --set "Output/Plots=false" > sel.log || die "select-records: $(cat sel.log)"
+[ "$(grep -vc '^name' sel/selected_suite.csv)" -eq 2 ] || die "not two records selected"
+python3 - sel/selection.csv sel/summary.json <<'PY' || die "selection mean"
+import csv, json, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+worst = max(abs(math.log(float(r["mean_g"]) / float(r["target_g"]))) for r in rows)
+said = json.load(open(sys.argv[2]))["max_mean_log_misfit"]
+assert abs(worst - said) < 1e-9 and worst < 1.0, (worst, said)
+print(f"selection: mean within exp({worst:.3f}) of the target")
+PY
+"$poundfe" msa "$example" --output selected --set "IDA/Suite=$work/sel/selected_suite.csv" \
+  --set "MSA/Intensities=0.3" --set "MSA/Hazard curve=" --set "MSA/Return periods=" \
+  --set "MSA/Cloud=false" --set "Output/Plots=false" > selected.log || die "msa on the selected suite"
+
+# bad input
+m=$work/msa/linear.prm
+mkdir -p msa && cp "$here/msa/linear.prm" msa/
+printf 'period_s,sa_g\n0.05,0.5\n0.5,0\n3,0.2\n' > zero.csv
+printf 'period_s,sa_g\n0.05,0.5\n0.5,-1\n3,0.2\n' > negative.csv
+printf 'period_s,sa_g\n0.5,0.5\n1,0.4\n' > narrow.csv
+sel=(select-records "$m" "${suite[@]}" --output out --set "Selection/Records=2")
+expect 1 "zero.csv:3: parameter 'sa_g': a target spectrum must be positive" "${sel[@]}" \
+  --set "Selection/Target=table" --set "Selection/Spectrum table=$work/zero.csv"
+expect 1 "negative.csv:3: parameter 'sa_g': a target spectrum must be positive, got -1 g" "${sel[@]}" \
+  --set "Selection/Target=table" --set "Selection/Spectrum table=$work/negative.csv"
+expect 1 "parameter 'Selection/Minimum period': the period range is outside the spectrum table's" \
+  "${sel[@]}" --set "Selection/Target=table" --set "Selection/Spectrum table=$work/narrow.csv"
+expect 1 "parameter 'Selection/Maximum period': is outside BSSA14's periods" "${sel[@]}" \
+  --set "Selection/Target=cms" --set "Selection/Maximum period=12"
+expect 1 "parameter 'Selection/Records': the suite has 4 records, fewer than the 9 requested" \
+  "${sel[@]}" --set "Selection/Records=9"
+expect 1 "parameter 'Selection/Scale limits': only 0 of the 4 records have a scale factor within [100, 200]" \
+  "${sel[@]}" --set "Selection/Records=2" --set "Selection/Scale limits=100, 200"
+expect 1 "parameter 'IDA/Damping ratio': a conditional mean spectrum (BSSA14) is of 5 % damping" \
+  "${sel[@]}" --set "Selection/Target=cms" --set "IDA/Damping ratio=0.02"
+ms=(msa "$m" "${suite[@]}" --output out)
+expect 1 "parameter 'MSA/Return periods': stripes at return periods need a MSA/Hazard curve" \
+  "${ms[@]}" --set "MSA/Return periods=475"
+expect 1 "parameter 'MSA/Return periods': the return period" \
+  "${ms[@]}" --set "MSA/Return periods=1e6" --set "MSA/Hazard curve=$work/hazard.csv" \
+  --set "MSA/Hazard column=pga_g"
+expect 1 "parameter 'MSA/Limit states': 'gap1_impacts' is not a demand of this model" \
+  "${ms[@]}" --set "MSA/Limit states=gap1_impacts > 0"
+expect 1 "parameter 'MSA/Limit states': expected 'demand > threshold', got 'max_drift_ratio 0.01'" \
+  "${ms[@]}" --set "MSA/Limit states=max_drift_ratio 0.01"
+expect 1 "parameter 'MSA/Intensities': msa needs stripes" "${ms[@]}" --set "MSA/Intensities="
+expect 1 "parameter 'intensity': the hazard curve has no column 'intensity'" "${ms[@]}" \
+  --set "MSA/Hazard curve=$work/zero.csv" --set "MSA/Hazard column=intensity"
+report "msa"
