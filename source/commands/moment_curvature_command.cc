@@ -14,8 +14,11 @@
 
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <ostream>
+#include <vector>
 
 namespace poundfe
 {
@@ -82,11 +85,22 @@ namespace poundfe
                 "curvature (1/m)", "moment (kN m)",
                 {{"moment_curvature.csv", "1:($2/1000)", "M(kappa)", "lines lw 2 lc rgb 'black'"}}};
       std::string marks = "set datafile separator ','\n";
+      // events at (nearly) the same point: one label a line below the other
+      std::vector<const MomentCurvaturePoint *> placed;
       for (const MomentCurvatureEvent &e : r.events)
-        marks += "set label '" + e.what + "' at first " + std::to_string(e.at.curvature) +
-                 ", first " + std::to_string(e.at.moment / 1000) + " point pt 7 " +
-                 (e.at.curvature > 0.6 * r.ultimate.curvature ? "right offset -1,-1\n" :
-                                                                "offset 1,-1\n");
+        {
+          const auto near = [&](const MomentCurvaturePoint *p) {
+            return std::abs(p->curvature - e.at.curvature) <= 0.15 * r.ultimate.curvature &&
+                   std::abs(p->moment - e.at.moment) <= 0.1 * std::abs(r.peak.moment);
+          };
+          const long   below = std::count_if(placed.begin(), placed.end(), near);
+          const bool   right = e.at.curvature > 0.6 * r.ultimate.curvature;
+          const std::string dy = std::to_string(-1 - 1.2 * below);
+          marks += "set label '" + e.what + "' at first " + std::to_string(e.at.curvature) +
+                   ", first " + std::to_string(e.at.moment / 1000) + " point pt 7 " +
+                   (right ? "right offset -1," : "offset 1,") + dy + "\n";
+          placed.push_back(&e.at);
+        }
       plot.settings = marks;
       draw_plots(directory, {plot});
     }

@@ -100,7 +100,7 @@ namespace poundfe
             watches.push_back({"first yield of " + material.name, m, -ey, ey, false});
           const auto epscu = material.law.values.find("epscu");
           if (material.role() == MaterialRole::concrete && epscu != material.law.values.end())
-            watches.push_back({material.name + " reached epscu " + number_text(-std::abs(epscu->second)),
+            watches.push_back({material.name + " reached epscu " + rounded(-std::abs(epscu->second), 4),
                                m, -std::abs(epscu->second), inf, false});
           const double low  = std::isnan(material.min_strain) ? -inf : material.min_strain;
           const double high = std::isnan(material.max_strain) ? inf : material.max_strain;

@@ -3,7 +3,8 @@
 // (rectangular: every longitudinal bar restrained by a stirrup leg or tie,
 // so the clear spacings w' are those between adjacent bars; legs_z legs
 // along z give Asx, legs_y along y Asy); Concrete01 takes its (f'cc,
-// eps_cc, f at eps_cu, eps_cu), Concrete02 the same with lambda = 0.1 and
+// eps_cc, f at eps_cu, eps_cu), Concrete02 the same with lambda = 0.1 (or
+// fpcu / (Ec0 epscu) where that is larger: concrete02_unloading_ratio) and
 // tension ft = ratio f'c, Ets = ft / 0.002. The cover: Kent–Scott–Park to
 // (eps_c0, f'c), then down to zero stress at the spalling strain.
 #include <poundfe/base/exceptions.h>
@@ -34,6 +35,21 @@ namespace poundfe
         refuse_builder(parameter, "must be positive (got " + number_text(value) + ")");
     }
 
+    /// Concrete02's lambda: 0.1, or more where that would put the focus R
+    /// of its unloading lines, eps_R = (fpcu - lambda Ec0 epscu) / (Ec0 (1 -
+    /// lambda)), on the compression side (Mander's confined cores: their
+    /// fpcu is high). There the reloading slope Er = (sigma_m - Ec0 eps_R) /
+    /// (eps_min - eps_R) is infinite at eps_min = eps_R and negative beyond
+    /// it, and the stress jumps from compression to tension as the strain
+    /// leaves eps_min: a section cannot find its equilibrium across it. The
+    /// smallest lambda that keeps eps_R >= 0 is fpcu / (Ec0 epscu).
+    double
+    concrete02_unloading_ratio(const Concrete01Parameters &k)
+    {
+      const double Ec0 = 2 * k.fpc / k.epsc0;
+      return std::max(0.1, k.fpcu / (Ec0 * k.epscu));
+    }
+
     /// Concrete01 or Concrete02 with the Kent–Scott–Park points `k`.
     MaterialParameters
     concrete_material(const SectionConcrete &c, const Concrete01Parameters &k)
@@ -43,7 +59,7 @@ namespace poundfe
       if (c.law == "Concrete02")
         {
           const double ft = c.tensile_ratio * c.fc;
-          m.values["lambda"] = 0.1;
+          m.values["lambda"] = concrete02_unloading_ratio(k);
           m.values["ft"]     = ft;
           m.values["Ets"]    = ft > 0 ? ft / 0.002 : c.fc; // any slope: no tension to soften
         }

@@ -517,3 +517,45 @@ BOOST_AUTO_TEST_CASE(rc_circle_bends_alike_in_every_direction)
   BOOST_TEST(r3.peak.moment == r2.peak.moment, boost::test_tools::tolerance(1e-2));
   BOOST_TEST(r3.ultimate.curvature == r2.ultimate.curvature, boost::test_tools::tolerance(2e-2));
 }
+
+
+BOOST_AUTO_TEST_CASE(rc_circle_with_concrete02_tension_bends_to_the_core_strain_limit)
+{
+  // Mander's confined core has a high fpcu: with lambda = 0.1 Concrete02's
+  // focus eps_R would lie in compression and its stress jump from
+  // compression to tension near eps_R, so that the section lost its
+  // equilibrium at a curvature ductility of about 1.2. The builder keeps
+  // eps_R >= 0, and the curve goes on to the core's crushing strain, with
+  // the tension stiffening adding moment before cracking only.
+  RcCircle c;
+  c.diameter        = 0.6;
+  c.cover           = 0.04;
+  c.bars            = 12;
+  c.bar_diameter    = 0.025;
+  c.spiral_diameter = 0.01;
+  c.spiral_pitch    = 0.1;
+  const FibreGeometry g = rc_circle(c);
+  for (const SectionMaterial &m : g.materials)
+    if (m.law.material == "Concrete02")
+      {
+        const std::map<std::string, double> &v = m.law.values;
+        const double Ec0 = 2 * v.at("fpc") / v.at("epsc0"), lambda = v.at("lambda");
+        const double eps_R = (v.at("fpcu") - lambda * Ec0 * v.at("epscu")) / (Ec0 * (1 - lambda));
+        BOOST_TEST(eps_R >= -1e-15, m.name << ": eps_R = " << eps_R << ", lambda " << lambda);
+      }
+  MomentCurvatureSettings settings;
+  settings.axial_force      = -1.5e6;
+  settings.target_curvature = 0.15;
+  settings.steps            = 300;
+  FibreSection                section(g, 2);
+  const MomentCurvatureResult with_tension = moment_curvature(section, settings);
+  BOOST_TEST(with_tension.stop_reason == "core reached its strain limit");
+  c.concrete.tensile_ratio = 0;
+  FibreSection                no_tension_section(rc_circle(c), 2);
+  const MomentCurvatureResult no_tension = moment_curvature(no_tension_section, settings);
+  BOOST_TEST(no_tension.stop_reason == with_tension.stop_reason);
+  BOOST_TEST(with_tension.ultimate.curvature == no_tension.ultimate.curvature,
+             boost::test_tools::tolerance(0.02));
+  BOOST_TEST(with_tension.ultimate.moment == no_tension.ultimate.moment,
+             boost::test_tools::tolerance(0.02));
+}
