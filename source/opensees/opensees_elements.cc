@@ -240,11 +240,31 @@ namespace poundfe
       }
     } // namespace
 
+    std::vector<double>
+    Element::response(const std::vector<std::string> &words) const
+    {
+      if (words.size() == 1 && (words[0] == "force" || words[0] == "forces" ||
+                                words[0] == "globalForce" || words[0] == "globalForces"))
+        {
+          const Vector f = force();
+          return std::vector<double>(f.data(), f.data() + f.size());
+        }
+      std::string text;
+      for (const std::string &w : words)
+        text += (text.empty() ? "" : " ") + w;
+      throw ScriptError("element " + std::to_string(tag) + " has no response '" + text +
+                        "' in poundfe");
+    }
+
     std::unique_ptr<Element>
     make_elastic_beam_2d(const Domain &domain, const int tag, const std::array<int, 2> nodes,
-                         const double A, const double E, const double I, const bool p_delta)
+                         const double A, const double E, const double I,
+                         const Transformation transformation)
     {
-      return std::make_unique<ElasticBeam2d>(domain, tag, nodes, A, E, I, p_delta);
+      if (transformation == Transformation::corotational)
+        return make_elastic_corotational_2d(domain, tag, nodes, A, E, I);
+      return std::make_unique<ElasticBeam2d>(domain, tag, nodes, A, E, I,
+                                             transformation == Transformation::pdelta);
     }
 
     std::unique_ptr<Element>
