@@ -2,9 +2,9 @@
 // argument syntax: constraints, numberer, system, test, algorithm,
 // integrator, analysis, analyze, eigen, wipeAnalysis, getTime, nodeDisp,
 // nodeVel, nodeAccel, nodeReaction, reactions, getNodeTags, getEleTags,
-// nodeCoord. A component the script leaves out takes OpenSees's default
-// (NormUnbalance 1e-6 25, Newton, Newmark 0.5 0.25 or LoadControl 1), with
-// OpenSees's warning.
+// nodeCoord, eleForce, eleResponse. A component the script leaves out takes
+// OpenSees's default (NormUnbalance 1e-6 25, Newton, Newmark 0.5 0.25 or
+// LoadControl 1), with OpenSees's warning.
 #include "opensees_tcl.h"
 
 #include <algorithm>

@@ -252,6 +252,38 @@ namespace poundfe
         add_element(d, opensees::make_zero_length(d, tag, z));
       }
 
+      /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>
+      void
+      truss(opensees::Domain &d, Words &w)
+      {
+        const int          tag = w.integer("the element's tag");
+        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
+        const double       area     = w.real("A");
+        const int          material = w.integer("the material's tag");
+        double             rho      = 0;
+        bool               rayleigh = false;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-rho")
+              rho = w.real("the mass per length");
+            else if (option == "-doRayleigh")
+              {
+                const int flag = w.integer("the -doRayleigh flag");
+                if (flag != 0 && flag != 1)
+                  unsupported("element truss -doRayleigh " + text_of(flag));
+                rayleigh = flag == 1;
+              }
+            else
+              unsupported("element truss option '" + option + "'");
+          }
+        add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
+        if (d.ndm == 2)
+          add_lumped_mass(d, nodes, rho);
+        else if (rho != 0)
+          unsupported("element truss -rho outside -ndm 2");
+      }
+
       void
       element(Session &s, Words &w)
       {
@@ -261,6 +293,8 @@ namespace poundfe
           elastic_beam_column(d, w);
         else if (type == "zeroLength")
           zero_length(d, w);
+        else if (type == "truss")
+          truss(d, w);
         else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
                  type == "dispBeamColumn")
           beam_column_element(s, w, type);

@@ -8,15 +8,16 @@
 //     (dofs P and Mz; the base an Elastic section, or both dofs given)
 //   beamIntegration Lobatto|Legendre tag secTag N
 //   beamIntegration HingeRadau tag secI lpI secJ lpJ secInterior
-//   element forceBeamColumn tag i j transfTag integrationTag <-mass rho>
-//   element forceBeamColumn tag i j nIP secTag transfTag <-integration Lobatto|Legendre> <-mass rho>
-//   element nonlinearBeamColumn tag i j nIP secTag transfTag <-mass rho>
+//   element forceBeamColumn tag i j transfTag integrationTag <-mass rho> <-iter maxIter tol>
+//   element forceBeamColumn tag i j nIP secTag transfTag <-integration Lobatto|Legendre>
+//       <-mass rho> <-iter maxIter tol>
+//   element nonlinearBeamColumn tag i j nIP secTag transfTag <-mass rho> <-iter maxIter tol>
 //   element dispBeamColumn tag i j transfTag integrationTag <-mass rho>
 //   element dispBeamColumn tag i j nIP secTag transfTag <-integration Legendre|Lobatto> <-mass rho>
 // with the mass lumped, rho L/2 on each node's translations (OpenSees's
-// default). The members' own iteration options (-iter) are refused: the
-// force-based element converges to its own tolerance
-// (elements/beam_column.h).
+// default). The force-based element iterates as OpenSees's
+// ForceBeamColumn2d (elements/beam_column.h: OpenSeesIteration; -iter sets
+// its maxIter and tol, 10 and 1e-12 by default).
 #include <poundfe/sections/aggregator_section.h>
 #include <poundfe/sections/elastic_section.h>
 #include <poundfe/sections/fibre_generators.h>
@@ -293,7 +294,8 @@ namespace poundfe
       /// syntax's -integration.
       void
       beam_column_options(Words &w, const std::string &type, double &rho,
-                          opensees::IntegrationSpec &rule, const bool old_syntax)
+                          opensees::IntegrationSpec &rule, const bool old_syntax,
+                          OpenSeesIteration &iteration)
       {
         using Kind = opensees::IntegrationSpec::Kind;
         while (!w.done())
@@ -301,6 +303,14 @@ namespace poundfe
             const std::string option = w.word("an option");
             if (option == "-mass")
               rho = w.real("the mass per length");
+            else if (option == "-iter" && type != "dispBeamColumn")
+              {
+                const int n         = w.integer("maxIter");
+                iteration.tolerance = w.real("tol");
+                if (n < 1 || !(iteration.tolerance > 0))
+                  throw ScriptError("-iter needs maxIter >= 1 and tol > 0");
+                iteration.max_iterations = n;
+              }
             else if (option == "-integration" && old_syntax)
               {
                 const std::string name = w.word("the integration's type");
@@ -343,14 +353,16 @@ namespace poundfe
                               " does not exist");
           rule = it->second;
         }
-      double rho = 0;
-      beam_column_options(w, type, rho, rule, old_syntax);
+      double            rho = 0;
+      OpenSeesIteration iteration;
+      beam_column_options(w, type, rho, rule, old_syntax, iteration);
       const auto t = d.transformations.find(transf);
       if (t == d.transformations.end())
         throw ScriptError("geomTransf " + std::to_string(transf) + " does not exist");
       const auto kind = type == "dispBeamColumn" ? opensees::BeamColumnKind::displacement_based :
                                                    opensees::BeamColumnKind::force_based;
-      add_element(d, opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule));
+      add_element(d,
+                  opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
       add_lumped_mass(d, nodes, rho);
     }
 

@@ -4,6 +4,10 @@
 // U'_n + dt (1 - gamma/(2 beta)) U''_n, U'' = -U'_n/(beta dt) + (1 - 1/(2
 // beta)) U''_n; update: U += dU, U' += c2 dU, U'' += c3 dU), LoadControl.cpp
 // (lambda += dlambda scaled by the iterations of the last step, clamped),
+// DisplacementControl.cpp (phat = the unbalance at lambda + 1 when the
+// integrator first analyses; newStep: dUhat = K^-1 phat, dlambda = dU /
+// dUhat_c; update: dU = dUbar + dlambda dUhat, dlambda = -dUbar_c / dUhat_c;
+// the increment scaled by Jd over the last step's iterations, clamped),
 // algorithm/equiSolnAlgo/NewtonRaphson.cpp, ModifiedNewton.cpp, Linear.cpp,
 // convergenceTest/CTest*.cpp, DirectIntegrationAnalysis.cpp and
 // StaticAnalysis.cpp (a failed step: the domain reverted, analyze < 0).

@@ -2,7 +2,8 @@
 // plane: forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn on the
 // sections of a `beamIntegration` (elements/beam_column.h: OpenSees's
 // ForceBeamColumn2d and DispBeamColumn2d state determinations), and
-// elasticBeamColumn on a Corotational transformation. Their responses as
+// elasticBeamColumn on a Corotational transformation; the force-based one
+// iterates as OpenSees's (OpenSeesIteration). Their responses as
 // OpenSees's ForceBeamColumn2d::getResponse gives them:
 //   force       the global resisting force (6 values, node I then J);
 //   localForce  (-N, V, MI, N, -V, MJ) with q = (N, MI, MJ) and
@@ -117,7 +118,7 @@ namespace poundfe
     std::unique_ptr<Element>
     make_beam_column_2d(const Domain &domain, const int tag, const std::array<int, 2> nodes,
                         const BeamColumnKind kind, const Transformation transformation,
-                        const IntegrationSpec &integration)
+                        const IntegrationSpec &integration, const OpenSeesIteration &iteration)
     {
       const CrdTransformation<2> transf = transformation_of(domain, nodes, transformation, tag);
       BeamIntegration            rule;
@@ -139,7 +140,11 @@ namespace poundfe
         }
       std::unique_ptr<BeamColumn<2>> beam;
       if (kind == BeamColumnKind::force_based)
-        beam = std::make_unique<ForceBeamColumn<2>>(transf, rule, std::move(sections));
+        {
+          auto force_based = std::make_unique<ForceBeamColumn<2>>(transf, rule, std::move(sections));
+          force_based->use_opensees_iteration(iteration);
+          beam = std::move(force_based);
+        }
       else
         beam = std::make_unique<DispBeamColumn<2>>(transf, rule, std::move(sections));
       return std::make_unique<BeamColumnElement>(tag, nodes, std::move(beam));

@@ -94,8 +94,10 @@ bad() { # NAME EXPECTED-MESSAGE-TAIL, the script's body on stdin
   [ "$status" = 1 ] || fail "$1: exit status $status"
   grep -qxF -- "poundfe: error: $dir/s.tcl:$2" "$dir/err" || { cat "$dir/err"; fail "$1: message"; }
 }
-printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1 -iter 10 1e-12\n' \
-  | bad iter "7: element forceBeamColumn option '-iter': poundfe does not support it"
+printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1 -subdivide 4 10.0\n' \
+  | bad subdivide "7: element forceBeamColumn option '-subdivide': poundfe does not support it"
+printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement dispBeamColumn 1 1 2 3 1 1 -iter 10 1e-12\n' \
+  | bad disp-iter "7: element dispBeamColumn option '-iter': poundfe does not support it"
 echo "patch rect 1 2 2 -0.1 -0.1 0.1 0.1" | bad patch-outside \
   '6: patch belongs in the body of a section Fiber'
 echo "section Fiber 1 { }" | bad no-fibre '6: section Fiber 1 has no fibre'

@@ -1,6 +1,6 @@
 # Closed-form checks of the sections, beam integrations, beam-columns,
-# DisplacementControl and element responses of `poundfe opensees`: each
-# case builds a cantilever of length L (node 1 fixed, node 2 free, 2D),
+# DisplacementControl, element responses and the truss of `poundfe
+# opensees`: each case (but the last, a two-bar truss) builds a cantilever of length L (node 1 fixed, node 2 free, 2D),
 # loads it, and compares with the exact answer written here. One line per
 # check: "ok NAME relative-difference" or "FAIL NAME got expected".
 # Elastic members under end loads: the force-based element integrates the
@@ -58,6 +58,8 @@ foreach {name define element} {
         {forceBeamColumn 1 1 2 1 1}
     forceBeamColumn_old_syntax {geomTransf Linear 1; section Elastic 1 $E $A $I} {forceBeamColumn 1 1 2 3 1 1}
     nonlinearBeamColumn {geomTransf Linear 1; section Elastic 1 $E $A $I} {nonlinearBeamColumn 1 1 2 4 1 1}
+    forceBeamColumn_iter {geomTransf Linear 1; section Elastic 1 $E $A $I; beamIntegration Lobatto 1 1 3}
+        {forceBeamColumn 1 1 2 1 1 -iter 20 1.0e-14 -mass 0.5}
     dispBeamColumn_Legendre2 {geomTransf Linear 1; section Elastic 1 $E $A $I; beamIntegration Legendre 1 1 2}
         {dispBeamColumn 1 1 2 1 1}
     forceBeamColumn_HingeRadau {geomTransf Linear 1; section Elastic 1 $E $A $I; section Elastic 2 $E $A $I;
@@ -169,4 +171,27 @@ foreach {name kind} {elasticBeamColumn elastic forceBeamColumn force} {
     check "Corotational $name y" $y [expr {$R*(1 - cos($L/$R))}] 1e-3
     check "Corotational $name rotation" [nodeDisp [expr {$n + 1}] 3] [expr {$L/$R}] 1e-10
 }
+# truss: the symmetric two-bar truss (bars of length 5 at sin = 0.8) under a
+# vertical load P at the apex: N = -P/(2 sin), the apex sinks P L/(2 EA sin^2)
+wipe
+model basic -ndm 2 -ndf 2
+node 1 0.0 0.0
+node 2 6.0 0.0
+node 3 3.0 4.0
+fix 1 1 1
+fix 2 1 1
+uniaxialMaterial Elastic 1 $E
+element truss 1 1 3 $A 1
+element truss 2 2 3 $A 1 -rho 0.0 -doRayleigh 0
+timeSeries Linear 1
+pattern Plain 1 1 { load 3 0.0 -1000.0 }
+system UmfPack
+test NormDispIncr 1.0e-14 10
+algorithm Newton
+integrator LoadControl 1.0
+analysis Static
+analyze 1
+check "truss apex" [nodeDisp 3 2] [expr {-1000.0*5.0/(2*$E*$A*0.64)}] 1e-10
+check "truss ux" [expr {[nodeDisp 3 1] + 1.0}] 1.0 1e-14
+check "truss axialForce" [eleResponse 1 axialForce] [expr {-1000.0/1.6}] 1e-10
 puts "failures $failures"

@@ -1,6 +1,8 @@
 // The analysis of an OpenSees script's domain, with OpenSees 3.8's
 // algorithms so that a script gives its numbers: the integrators Newmark
-// (displacement predictor, Newmark.cpp) and LoadControl, the algorithms
+// (displacement predictor, Newmark.cpp), LoadControl and DisplacementControl
+// (DisplacementControl.cpp: newStep's predictor and update's correction of
+// each iterate), the algorithms
 // Linear, Newton and ModifiedNewton (NewtonRaphson.cpp: tangent, solve,
 // update, new residual, test), the tests NormDispIncr (|dU|), NormUnbalance
 // (|R| after the update) and EnergyIncr (|dU . R| / 2), a failed step

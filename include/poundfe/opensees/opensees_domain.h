@@ -11,6 +11,7 @@
 #ifndef poundfe_opensees_opensees_domain_h
 #define poundfe_opensees_opensees_domain_h
 
+#include <poundfe/elements/beam_column.h>
 #include <poundfe/elements/beam_integration.h>
 #include <poundfe/elements/crd_transformation.h>
 #include <poundfe/laws/material_registry.h>
@@ -213,10 +214,13 @@ namespace poundfe
       force_based,
       displacement_based
     };
+    /// The force-based element iterates as OpenSees does (elements/
+    /// beam_column.h: OpenSeesIteration, with -iter's maxIter and tol).
     std::unique_ptr<Element> make_beam_column_2d(const Domain &domain, int tag,
                                                  std::array<int, 2> nodes, BeamColumnKind kind,
-                                                 Transformation        transformation,
-                                                 const IntegrationSpec &integration);
+                                                 Transformation           transformation,
+                                                 const IntegrationSpec   &integration,
+                                                 const OpenSeesIteration &iteration);
     /// elasticBeamColumn on a Corotational transformation: the exact
     /// elastic basic stiffness (a displacement-based member on an elastic
     /// section with two Gauss points) on the corotational basic system, as
@@ -237,6 +241,10 @@ namespace poundfe
     };
     std::unique_ptr<Element> make_zero_length(const Domain &domain, int tag,
                                               const ZeroLengthData &data);
+    /// truss: a uniaxial material over the area A along the member, small
+    /// strains (OpenSees's Truss); Rayleigh-damped only when asked.
+    std::unique_ptr<Element> make_truss(const Domain &domain, int tag, std::array<int, 2> nodes,
+                                        double area, int material, bool rayleigh);
   } // namespace opensees
 } // namespace poundfe
 
