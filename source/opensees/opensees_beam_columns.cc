@@ -128,9 +128,14 @@ namespace poundfe
         {
           rule     = hinge_radau_integration(integration.hinge_length_i,
                                              integration.hinge_length_j, transf.initial_length());
-          sections = hinge_sections(section_of(domain, integration.section_i),
-                                    section_of(domain, integration.section),
-                                    section_of(domain, integration.section_j));
+          // OpenSees's HingeRadau: end I's section at xi = 0 only, end J's at
+          // xi = 1 only; the points at 8 lp/3 and the interior's take the
+          // interior section (OPS_HingeRadauBeamIntegration's secTags)
+          const SectionLaw &end_i    = section_of(domain, integration.section_i);
+          const SectionLaw &interior = section_of(domain, integration.section);
+          const SectionLaw &end_j    = section_of(domain, integration.section_j);
+          for (const SectionLaw *s : {&end_i, &interior, &interior, &interior, &interior, &end_j})
+            sections.push_back(s->clone());
         }
       else
         {

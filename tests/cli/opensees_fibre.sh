@@ -26,7 +26,7 @@ fail() { echo "FAIL $*"; touch "$work/failed"; exit 1; }
 
 # 1. closed forms
 "$poundfe" opensees "$corpus/beam_column_checks.tcl" > "$work/checks" 2>&1 \
-  || { cat "$work/checks"; fail "beam_column_checks.tcl: exit $?"; }
+  || { status=$?; cat "$work/checks"; fail "beam_column_checks.tcl: exit $status"; }
 grep FAIL "$work/checks" && fail "beam_column_checks.tcl: a check failed"
 [ "$(grep -c '^ok ' "$work/checks")" -ge 40 ] || { cat "$work/checks"; fail "checks missing"; }
 grep -qx 'failures 0' "$work/checks" || fail "beam_column_checks.tcl did not finish"
@@ -63,7 +63,7 @@ puts "local [eleResponse 1 localForce] [eleResponse 2 localForce]"
 puts "section [eleResponse 1 section 2 deformation]"
 TCL
 "$poundfe" opensees "$work/rec.tcl" "$work" > "$work/rec.log" 2>&1 \
-  || { cat "$work/rec.log"; fail "rec.tcl: exit $?"; }
+  || { status=$?; cat "$work/rec.log"; fail "rec.tcl: exit $status"; }
 "$python" - "$work" <<'PY' || fail "recorder Element layout"
 import sys
 import numpy as np

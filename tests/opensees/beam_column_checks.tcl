@@ -75,6 +75,17 @@ foreach {name define element} {
     check "$name rz" [nodeDisp 2 3] $rz 1e-10
 }
 
+# HingeRadau (Scott & Fenves 2006; OpenSees's sections: end I's at xi = 0
+# only, the interior's at 8 lp/3): a base section of half the rigidity adds
+# exactly lp (1/EI_h - 1/EI) M to the base rotation, so the tip moves
+# H L^3/3EI + H L^2 lp/EI for EI_h = EI/2
+set lp 0.25
+cantilever "geomTransf Linear 1; section Elastic 1 $E $A [expr {$I/2}]; section Elastic 2 $E $A $I
+    beamIntegration HingeRadau 1 1 $lp 2 $lp 2" {forceBeamColumn 1 1 2 1 1}
+static_tip_loads $H 0.0 0.0
+check "HingeRadau hinge ux" [nodeDisp 2 1] \
+    [expr {$H*$L*$L*$L/(3*$E*$I) + $H*$L*$L*$lp/($E*$I)}] 1e-10
+
 # A fibre section of nY layers of an elastic material over the depth h:
 # I_n = b h^3/12 (1 - 1/nY^2) (the layers' own inertia is lost), A = b h.
 set nY 8
