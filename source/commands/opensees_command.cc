@@ -191,9 +191,9 @@ namespace poundfe
       {
         for (const char *name :
              {"rigidDiaphragm", "rigidLink", "fixX", "fixY", "fixZ", "region", "remove",
-              "section", "fiber", "patch", "layer", "beamIntegration", "eleLoad", "sp",
+              "eleLoad", "sp",
               "imposedMotion", "groundMotion", "modalDamping", "setElementRayleighDampingFactors",
-              "printA", "printB", "printModel", "print", "eleForce", "eleResponse",
+              "printA", "printB", "printModel", "print",
               "basicDeformation", "basicForce", "localForce", "testIter", "testNorm", "getNP",
               "getPID", "reset", "block2D", "block3D", "nDMaterial", "frictionModel",
               "database", "geomTransfPDelta", "mp", "domainChange", "remesh", "setNodeCoord",
@@ -321,6 +321,7 @@ namespace poundfe
       Session session(run.err);
       define_model_commands(interp, session);
       define_analysis_commands(interp, session);
+      define_section_commands(interp, session);
       define_unsupported(interp, session);
       define_exit(interp, session);
       define_poundfe_namespace(interp, session);

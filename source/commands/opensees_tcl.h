@@ -3,7 +3,8 @@
 // file: the session a script's commands build (an OpenSees domain, its
 // analysis and recorders; opensees/) and the helpers of the command
 // procedures. The commands are in opensees_tcl_model.cc (model, loads,
-// recorders) and opensees_tcl_analysis.cc (analysis and queries).
+// recorders), opensees_tcl_sections.cc (sections, beam integrations,
+// beam-column elements) and opensees_tcl_analysis.cc (analysis and queries).
 #ifndef poundfe_commands_opensees_tcl_h
 #define poundfe_commands_opensees_tcl_h
 
@@ -13,6 +14,7 @@
 
 #include <tcl.h>
 
+#include <array>
 #include <functional>
 #include <iosfwd>
 #include <map>
@@ -22,6 +24,8 @@
 
 namespace poundfe
 {
+  struct FibreGeometry;
+
   namespace opensees_tcl
   {
     /// What a script has built and asked for so far.
@@ -37,7 +41,9 @@ namespace poundfe
       bool has_test = false, has_algorithm = false;
       bool has_static_integrator = false, has_transient_integrator = false;
       std::unique_ptr<opensees::Analysis>                  analysis;
-      std::vector<std::unique_ptr<opensees::NodeRecorder>> recorders;
+      std::vector<std::unique_ptr<opensees::Recorder>>     recorders;
+      /// The fibres of the section Fiber whose body runs (nullptr outside).
+      FibreGeometry *fibres = nullptr;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
       int            current_pattern = -1; // the Plain pattern whose body runs
@@ -97,7 +103,17 @@ namespace poundfe
     void set_result(Tcl_Interp *interp, const std::vector<double> &values);
     void set_result(Tcl_Interp *interp, const std::vector<int> &values);
 
+    /// Adds the element; ScriptError when its tag exists already.
+    void add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element);
+    /// A member's mass per length rho, lumped: rho L/2 on each node's
+    /// translations (OpenSees's beam-columns without -cMass).
+    void add_lumped_mass(opensees::Domain &d, const std::array<int, 2> &nodes, double rho);
+    /// element forceBeamColumn | nonlinearBeamColumn | dispBeamColumn (after
+    /// the type).
+    void beam_column_element(Session &session, Words &words, const std::string &type);
+
     void define_model_commands(Tcl_Interp *interp, Session &session);
+    void define_section_commands(Tcl_Interp *interp, Session &session);
     void define_analysis_commands(Tcl_Interp *interp, Session &session);
   } // namespace opensees_tcl
 } // namespace poundfe

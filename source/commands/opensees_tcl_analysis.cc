@@ -2,9 +2,9 @@
 // argument syntax: constraints, numberer, system, test, algorithm,
 // integrator, analysis, analyze, eigen, wipeAnalysis, getTime, nodeDisp,
 // nodeVel, nodeAccel, nodeReaction, reactions, getNodeTags, getEleTags,
-// nodeCoord. A component the script leaves out takes OpenSees's default
-// (NormUnbalance 1e-6 25, Newton, Newmark 0.5 0.25 or LoadControl 1), with
-// OpenSees's warning.
+// nodeCoord, eleForce, eleResponse. A component the script leaves out takes
+// OpenSees's default (NormUnbalance 1e-6 25, Newton, Newmark 0.5 0.25 or
+// LoadControl 1), with OpenSees's warning.
 #include "opensees_tcl.h"
 
 #include <algorithm>
@@ -92,6 +92,33 @@ namespace poundfe
         reconfigure(s);
       }
 
+      /// DisplacementControl node dof dU <Jd minIncr maxIncr>.
+      void
+      displacement_control(Session &s, Words &w)
+      {
+        opensees::AnalysisOptions &o = s.options;
+        o.control_node               = s.domain.node(w.integer("the node")).tag;
+        const int dof                = w.integer("the DOF");
+        if (dof < 1 || dof > static_cast<int>(s.domain.ndf))
+          throw ScriptError("DOF " + std::to_string(dof) + " is not one of 1 to ndf");
+        o.control_dof    = dof - 1;
+        o.d_u            = w.real("the displacement increment");
+        o.d_u_iterations = 1;
+        o.d_u_min = o.d_u_max = o.d_u;
+        if (!w.done() && w.peek() != "-initial")
+          {
+            o.d_u_iterations = w.integer("Jd");
+            o.d_u_min        = w.real("the smallest increment");
+            o.d_u_max        = w.real("the largest increment");
+          }
+        if (w.peek() == "-initial")
+          unsupported("integrator DisplacementControl -initial");
+        if (o.d_u_iterations < 1)
+          throw ScriptError("Jd must be >= 1");
+        o.displacement_control  = true;
+        s.has_static_integrator = true;
+      }
+
       void
       integrator(Session &s, Words &w)
       {
@@ -115,11 +142,15 @@ namespace poundfe
                 s.options.lambda_min        = w.real("the smallest increment");
                 s.options.lambda_max        = w.real("the largest increment");
               }
-            s.has_static_integrator = true;
+            s.has_static_integrator          = true;
+            s.options.displacement_control = false;
           }
+        else if (type == "DisplacementControl")
+          displacement_control(s, w);
         else
           unsupported("integrator " + type);
         check_done(w);
+        ++s.options.integrator_serial;
         reconfigure(s);
       }
 
@@ -278,6 +309,24 @@ namespace poundfe
         return tags;
       }
 
+      const opensees::Element &
+      element_of(Session &s, Words &w)
+      {
+        const int  tag = w.integer("the element's tag");
+        const auto it  = s.domain.elements.find(tag);
+        if (it == s.domain.elements.end())
+          throw ScriptError("element " + std::to_string(tag) + " does not exist");
+        return *it->second;
+      }
+
+      /// eleForce tag <dof>: the global resisting force, all or one (1-based).
+      void
+      element_force(Session &s, Words &w)
+      {
+        const opensees::Element &e = element_of(s, w);
+        node_values(w, e.response({"force"}), "DOF");
+      }
+
       void
       wipe_analysis(Session &s, Words &w)
       {
@@ -312,6 +361,14 @@ namespace poundfe
       define(interp, session, "analyze", analyze);
       define(interp, session, "eigen", eigen);
       define(interp, session, "wipeAnalysis", wipe_analysis);
+      define(interp, session, "eleForce", element_force);
+      define(interp, session, "eleResponse", [](Session &s, Words &w) {
+        const opensees::Element &e = element_of(s, w);
+        std::vector<std::string> words;
+        while (!w.done())
+          words.push_back(w.word("the response"));
+        set_result(w.interp, e.response(words));
+      });
       define(interp, session, "getTime", [](Session &s, Words &w) {
         check_done(w);
         set_result(w.interp, s.domain.time);

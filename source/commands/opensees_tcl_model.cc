@@ -172,24 +172,20 @@ namespace poundfe
       {
         opensees::Domain &d    = model_domain(s);
         const std::string type = w.word("the transformation's type");
-        if (type != "Linear" && type != "PDelta")
+        if (type != "Linear" && type != "PDelta" && type != "Corotational")
           unsupported("geomTransf " + type);
         const int tag = w.integer("the transformation's tag");
         if (d.ndm == 3)
           exactly(w, 3, "a component of vecxz");
         if (!w.done())
           unsupported("geomTransf option '" + w.peek() + "'");
-        if (!d.transformations.emplace(tag, type == "PDelta").second)
+        const Transformation kind = type == "PDelta"       ? Transformation::pdelta :
+                                    type == "Corotational" ? Transformation::corotational :
+                                                             Transformation::linear;
+        if (kind == Transformation::corotational && d.ndm != 2)
+          unsupported("geomTransf Corotational in 3D");
+        if (!d.transformations.emplace(tag, kind).second)
           throw ScriptError("geomTransf " + text_of(tag) + " exists already");
-      }
-
-      void
-      add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element)
-      {
-        const int tag = element->tag;
-        if (!d.elements.emplace(tag, std::move(element)).second)
-          throw ScriptError("element " + text_of(tag) + " exists already");
-        d.changed = true;
       }
 
       void
@@ -212,11 +208,7 @@ namespace poundfe
         if (t == d.transformations.end())
           throw ScriptError("geomTransf " + text_of(transf) + " does not exist");
         add_element(d, opensees::make_elastic_beam_2d(d, tag, nodes, A, E, I, t->second));
-        const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
-        const double m = 0.5 * rho * std::hypot(b[0] - a[0], b[1] - a[1]);
-        for (const int n : nodes)
-          for (const unsigned int k : {0u, 1u})
-            d.node(n).element_mass[k] += m;
+        add_lumped_mass(d, nodes, rho);
       }
 
       void
@@ -260,6 +252,38 @@ namespace poundfe
         add_element(d, opensees::make_zero_length(d, tag, z));
       }
 
+      /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>
+      void
+      truss(opensees::Domain &d, Words &w)
+      {
+        const int          tag = w.integer("the element's tag");
+        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
+        const double       area     = w.real("A");
+        const int          material = w.integer("the material's tag");
+        double             rho      = 0;
+        bool               rayleigh = false;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-rho")
+              rho = w.real("the mass per length");
+            else if (option == "-doRayleigh")
+              {
+                const int flag = w.integer("the -doRayleigh flag");
+                if (flag != 0 && flag != 1)
+                  unsupported("element truss -doRayleigh " + text_of(flag));
+                rayleigh = flag == 1;
+              }
+            else
+              unsupported("element truss option '" + option + "'");
+          }
+        add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
+        if (d.ndm == 2)
+          add_lumped_mass(d, nodes, rho);
+        else if (rho != 0)
+          unsupported("element truss -rho outside -ndm 2");
+      }
+
       void
       element(Session &s, Words &w)
       {
@@ -269,6 +293,11 @@ namespace poundfe
           elastic_beam_column(d, w);
         else if (type == "zeroLength")
           zero_length(d, w);
+        else if (type == "truss")
+          truss(d, w);
+        else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
+                 type == "dispBeamColumn")
+          beam_column_element(s, w, type);
         else
           unsupported("element " + type);
       }
@@ -664,11 +693,62 @@ namespace poundfe
           unsupported("recorder Node option '" + option + "'");
       }
 
+      /// recorder Element: -file, -time, -precision, -ele, -eleRange, then
+      /// the response's words (each element checked to have it).
+      void
+      element_recorder(Session &s, Words &w)
+      {
+        const opensees::Domain       &d = s.domain;
+        opensees::ElementRecorderSpec r;
+        while (!w.done() && r.response.empty())
+          {
+            const std::string word = w.word("an option");
+            if (word == "-file")
+              r.file = w.word("the file");
+            else if (word == "-time")
+              r.time = true;
+            else if (word == "-precision")
+              r.precision = w.integer("-precision");
+            else if (word == "-closeOnWrite")
+              ; // the file is whole when the script ends either way
+            else if (word == "-ele")
+              r.elements = w.integers("an element's tag");
+            else if (word == "-eleRange")
+              {
+                const int first = w.integer("the first element"),
+                          last  = w.integer("the last element");
+                for (auto it = d.elements.lower_bound(first);
+                     it != d.elements.end() && it->first <= last; ++it)
+                  r.elements.push_back(it->first);
+              }
+            else if (word[0] == '-')
+              unsupported("recorder Element option '" + word + "'");
+            else
+              r.response.push_back(word);
+          }
+        while (!w.done())
+          r.response.push_back(w.word("the response"));
+        if (r.file.empty())
+          unsupported("recorder Element without -file");
+        if (r.elements.empty() || r.response.empty())
+          throw ScriptError("recorder Element needs elements (-ele, -eleRange) and a response");
+        for (const int tag : r.elements)
+          {
+            const auto it = d.elements.find(tag);
+            if (it == d.elements.end())
+              throw ScriptError("element " + text_of(tag) + " does not exist");
+            it->second->response(r.response);
+          }
+        s.recorders.push_back(std::make_unique<opensees::ElementRecorder>(r));
+      }
+
       void
       recorder(Session &s, Words &w)
       {
         opensees::Domain &d    = model_domain(s);
         const std::string type = w.word("the recorder's type");
+        if (type == "Element")
+          return element_recorder(s, w);
         if (type != "Node")
           unsupported("recorder " + type);
         opensees::NodeRecorderSpec r;
@@ -693,6 +773,25 @@ namespace poundfe
         s.recorders.push_back(std::make_unique<opensees::NodeRecorder>(r));
       }
     } // namespace
+
+    void
+    add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element)
+    {
+      const int tag = element->tag;
+      if (!d.elements.emplace(tag, std::move(element)).second)
+        throw ScriptError("element " + text_of(tag) + " exists already");
+      d.changed = true;
+    }
+
+    void
+    add_lumped_mass(opensees::Domain &d, const std::array<int, 2> &nodes, const double rho)
+    {
+      const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
+      const double m = 0.5 * rho * std::hypot(b[0] - a[0], b[1] - a[1]);
+      for (const int n : nodes)
+        for (const unsigned int k : {0u, 1u})
+          d.node(n).element_mass[k] += m;
+    }
 
     void
     define_model_commands(Tcl_Interp *interp, Session &session)

@@ -258,14 +258,120 @@ namespace poundfe
       }
     current.v.setZero();
     current.q.setZero();
-    current.kv = f.inverse();
-    committed  = current;
+    current.kv  = f.inverse();
+    committed   = current;
+    initialised = false;
+  }
+
+  template <int dim>
+  void
+  ForceBeamColumn<dim>::use_opensees_iteration(const OpenSeesIteration &controls)
+  {
+    opensees          = true;
+    opensees_controls = controls;
+  }
+
+  template <int dim>
+  int
+  ForceBeamColumn<dim>::opensees_pass(const unsigned int pass, const BasicVector &vin,
+                                      const BasicVector &dv)
+  {
+    const double       L = this->length();
+    const unsigned int n_iterations =
+      pass == 1 ? 10 * opensees_controls.max_iterations : opensees_controls.max_iterations;
+    start = current;
+    start.q += start.kv * dv;
+    for (unsigned int j = 0; j < n_iterations; ++j)
+      {
+        ++iterations;
+        BasicMatrix f = BasicMatrix::Zero();
+        BasicVector achieved = BasicVector::Zero();
+        for (unsigned int i = 0; i < this->rule.size(); ++i)
+          {
+            const Interpolation   b  = force_interpolation(this->rule.points[i]);
+            const ResultantVector ss = b * start.q;
+            const bool initial = pass == 1 || (pass == 2 && j == 0);
+            if (initialised)
+              start.e[i] += (initial ? ResultantMatrix(initial_section_stiffness[i].inverse()) :
+                                       start.fs[i]) *
+                            (ss - start.s[i]);
+            SectionLaw &section = *this->sections[i];
+            if (!section.set_trial(SectionVector(start.e[i])))
+              {
+                this->why = "section " + std::to_string(i) + ": " + section.failure();
+                return -1;
+              }
+            start.s[i]      = section.resultant();
+            start.fs[i]     = flexibility(i);
+            const double wl = this->rule.weights[i] * L;
+            f += wl * b.transpose() * start.fs[i] * b;
+            achieved += wl * b.transpose() * (start.e[i] + start.fs[i] * (ss - start.s[i]));
+          }
+        start.kv             = f.inverse();
+        const BasicVector r  = vin + dv - achieved;
+        const BasicVector dq = start.kv * r;
+        start.q += dq;
+        if (!start.q.allFinite())
+          return 0;
+        if (std::abs(r.dot(dq)) < opensees_controls.tolerance)
+          return 1;
+      }
+    return 0;
+  }
+
+  template <int dim>
+  bool
+  ForceBeamColumn<dim>::opensees_state(const BasicVector &v)
+  {
+    iterations = pieces = 0;
+    BasicVector to_do = v - current.v;
+    if (initialised && to_do.norm() <= std::numeric_limits<double>::epsilon())
+      return true;
+    BasicVector  dv           = to_do;
+    unsigned int subdivisions = 1;
+    while (subdivisions <= opensees_controls.max_subdivisions)
+      {
+        int result = 0;
+        for (unsigned int pass = 0; pass < 3 && result == 0; ++pass)
+          result = opensees_pass(pass, current.v, dv);
+        if (result < 0)
+          return false;
+        if (result == 0)
+          {
+            dv /= opensees_controls.subdivide_factor;
+            ++subdivisions;
+            continue;
+          }
+        ++pieces;
+        to_do -= dv;
+        start.v = current.v + dv;
+        current = start;
+        if (to_do.norm() <= std::numeric_limits<double>::epsilon())
+          {
+            current.v   = v; // OpenSees's vin ends within DBL_EPSILON of v
+            initialised = true;
+            return true;
+          }
+        dv           = to_do;
+        subdivisions = 1;
+      }
+    return false;
   }
 
   template <int dim>
   bool
   ForceBeamColumn<dim>::basic_state(const BasicVector &v, BasicVector &q, BasicMatrix &k)
   {
+    if (opensees)
+      {
+        const bool ok = opensees_state(v);
+        q             = current.q;
+        k             = current.kv;
+        if (!ok && this->why.empty())
+          this->why = "force-based element: no compatible state after " +
+                      std::to_string(iterations) + " iterations (OpenSees's iteration)";
+        return ok;
+      }
     constexpr unsigned int max_levels = 4, max_pieces = 100;
     iterations = pieces = 0;
     BasicVector  remaining = v - current.v;

@@ -4,6 +4,10 @@
 // U'_n + dt (1 - gamma/(2 beta)) U''_n, U'' = -U'_n/(beta dt) + (1 - 1/(2
 // beta)) U''_n; update: U += dU, U' += c2 dU, U'' += c3 dU), LoadControl.cpp
 // (lambda += dlambda scaled by the iterations of the last step, clamped),
+// DisplacementControl.cpp (phat = the unbalance at lambda + 1 when the
+// integrator first analyses; newStep: dUhat = K^-1 phat, dlambda = dU /
+// dUhat_c; update: dU = dUbar + dlambda dUhat, dlambda = -dUbar_c / dUhat_c;
+// the increment scaled by Jd over the last step's iterations, clamped),
 // algorithm/equiSolnAlgo/NewtonRaphson.cpp, ModifiedNewton.cpp, Linear.cpp,
 // convergenceTest/CTest*.cpp, DirectIntegrationAnalysis.cpp and
 // StaticAnalysis.cpp (a failed step: the domain reverted, analyze < 0).
@@ -34,6 +38,8 @@ namespace poundfe
     {
       if (options.d_lambda != opts.d_lambda)
         lambda_step = 0; // a new LoadControl integrator
+      if (options.integrator_serial != opts.integrator_serial)
+        fresh_integrator = true;
       opts = options;
     }
 
@@ -255,6 +261,8 @@ namespace poundfe
           if (opts.algorithm == Algorithm::newton)
             assemble_tangent(1, c_c, c_m);
           solver->solve(r, dx);
+          if (opts.displacement_control && !opts.transient && !correct_displacement(dx, why))
+            return -1;
           U += dx;
           V += c_c * dx;
           A += c_m * dx;
@@ -297,6 +305,8 @@ namespace poundfe
           A              = (1 - 0.5 / b) * A - 1 / (b * dt) * v;
           trial_time     = domain.time + dt;
         }
+      else if (opts.displacement_control)
+        return displacement_step(why);
       else
         {
           lambda_step *= opts.lambda_iterations / last_iterations;
@@ -308,6 +318,71 @@ namespace poundfe
       if (!set_trial(why))
         return false;
       return iterate(why) >= 0;
+    }
+
+    void
+    Analysis::reference_load()
+    {
+      std::string why;
+      set_trial(why); // the committed state
+      const double time = trial_time;
+      trial_time        = domain.time + 1;
+      phat              = residual();
+      trial_time        = time;
+    }
+
+    bool
+    Analysis::displacement_step(std::string &why)
+    {
+      if (fresh_integrator)
+        {
+          const Node &node = domain.node(opts.control_node);
+          if (opts.control_dof >= node.equation.size() || node.equation[opts.control_dof] < 0)
+            throw ScriptError("DisplacementControl: node " + std::to_string(node.tag) + " DOF " +
+                              std::to_string(opts.control_dof + 1) +
+                              " is fixed or constrained");
+          control_equation = node.equation[opts.control_dof];
+          d_u_step         = opts.d_u;
+          last_iterations  = opts.d_u_iterations;
+          reference_load();
+          fresh_integrator = false;
+        }
+      d_u_step *= opts.d_u_iterations / last_iterations;
+      d_u_step = std::min(std::max(d_u_step, opts.d_u_min), opts.d_u_max);
+      c_c = c_m = 0;
+      if (!set_trial(why))
+        return false;
+      assemble_tangent(1, 0, 0);
+      Vector dx_hat(n_equations);
+      solver->solve(phat, dx_hat);
+      if (dx_hat[control_equation] == 0)
+        {
+          why = "DisplacementControl: zero reference displacement at the control DOF";
+          return false;
+        }
+      const double d_lambda = d_u_step / dx_hat[control_equation];
+      trial_time            = domain.time + d_lambda;
+      U += d_lambda * dx_hat;
+      last_iterations = 0;
+      if (!set_trial(why))
+        return false;
+      return iterate(why) >= 0;
+    }
+
+    bool
+    Analysis::correct_displacement(Vector &dx, std::string &why)
+    {
+      Vector dx_hat(n_equations);
+      solver->solve(phat, dx_hat);
+      if (dx_hat[control_equation] == 0)
+        {
+          why = "DisplacementControl: zero reference displacement at the control DOF";
+          return false;
+        }
+      const double d_lambda = -dx[control_equation] / dx_hat[control_equation];
+      dx += d_lambda * dx_hat;
+      trial_time += d_lambda;
+      return true;
     }
 
     void

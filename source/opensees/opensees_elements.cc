@@ -10,6 +10,10 @@
 //   the geometric stiffness q_0/L [[1, -1], [-1, 1]] on those two DOFs
 //   (PDeltaCrdTransf2d::getGlobalResistingForce, getGlobalStiffMatrix).
 //
+// truss (Truss, small strains): the zeroLength's row t along the member's
+//   axis x, strain t u / L, force A t^T sigma, tangent (A/L) t^T E t;
+//   Rayleigh-damped only with -doRayleigh 1 (OpenSees's default 0).
+//
 // zeroLength (ZeroLength): the local axes x, y (-orient), z = x × y,
 //   y = z × x; material m along direction d (1-3: translation along axis
 //   d, 4-6: rotation about axis d - 3) has the row t_m of the local
@@ -119,10 +123,20 @@ namespace poundfe
         unsigned int n_dofs() const override { return t.cols(); }
         bool         rayleigh_damped() const override { return rayleigh; }
 
+        /// A truss of length L and area A along direction 1: strain t u / L,
+        /// force A t^T sigma.
+        void
+        as_truss(const double length, const double area)
+        {
+          strain_scale      = 1 / length;
+          force_scale       = area;
+          committed_tangent = tangent();
+        }
+
         bool
         set_trial(const Vector &u, const Vector &v) override
         {
-          const Vector strain = t * u, rate = t * v;
+          const Vector strain = strain_scale * (t * u), rate = strain_scale * (t * v);
           for (unsigned int m = 0; m < laws.size(); ++m)
             if (!laws[m]->set_trial(strain[m], rate[m]))
               {
@@ -138,7 +152,17 @@ namespace poundfe
           Vector stress(laws.size());
           for (unsigned int m = 0; m < laws.size(); ++m)
             stress[m] = laws[m]->force();
-          return t.transpose() * stress;
+          return force_scale * (t.transpose() * stress);
+        }
+
+        std::vector<double>
+        response(const std::vector<std::string> &words) const override
+        {
+          const bool truss = strain_scale != 1 || force_scale != 1;
+          if (truss && words.size() == 1 &&
+              (words[0] == "axialForce" || words[0] == "basicForce" || words[0] == "basicForces"))
+            return {force_scale * laws[0]->force()};
+          return Element::response(words);
         }
 
         Matrix tangent() const override { return weighted([](auto &l) { return l.tangent(); }); }
@@ -180,13 +204,14 @@ namespace poundfe
           Vector d(laws.size());
           for (unsigned int m = 0; m < laws.size(); ++m)
             d[m] = value(*laws[m]);
-          return t.transpose() * d.asDiagonal() * t;
+          return force_scale * strain_scale * (t.transpose() * d.asDiagonal() * t);
         }
 
         Matrix                                    t; // materials x DOFs
         std::vector<std::unique_ptr<UniaxialLaw>> laws;
         bool                                      rayleigh = false;
         std::string                               why;
+        double strain_scale = 1, force_scale = 1; // a truss: 1/L and A
       };
 
       /// The unit local axes x, y, z of a zeroLength from its -orient vectors.
@@ -240,17 +265,69 @@ namespace poundfe
       }
     } // namespace
 
+    std::vector<double>
+    Element::response(const std::vector<std::string> &words) const
+    {
+      if (words.size() == 1 && (words[0] == "force" || words[0] == "forces" ||
+                                words[0] == "globalForce" || words[0] == "globalForces"))
+        {
+          const Vector f = force();
+          return std::vector<double>(f.data(), f.data() + f.size());
+        }
+      std::string text;
+      for (const std::string &w : words)
+        text += (text.empty() ? "" : " ") + w;
+      throw ScriptError("element " + std::to_string(tag) + " has no response '" + text +
+                        "' in poundfe");
+    }
+
     std::unique_ptr<Element>
     make_elastic_beam_2d(const Domain &domain, const int tag, const std::array<int, 2> nodes,
-                         const double A, const double E, const double I, const bool p_delta)
+                         const double A, const double E, const double I,
+                         const Transformation transformation)
     {
-      return std::make_unique<ElasticBeam2d>(domain, tag, nodes, A, E, I, p_delta);
+      if (transformation == Transformation::corotational)
+        return make_elastic_corotational_2d(domain, tag, nodes, A, E, I);
+      return std::make_unique<ElasticBeam2d>(domain, tag, nodes, A, E, I,
+                                             transformation == Transformation::pdelta);
     }
 
     std::unique_ptr<Element>
     make_zero_length(const Domain &domain, const int tag, const ZeroLengthData &data)
     {
       return std::make_unique<ZeroLength>(domain, tag, data);
+    }
+
+    std::unique_ptr<Element>
+    make_truss(const Domain &domain, const int tag, const std::array<int, 2> nodes,
+               const double area, const int material, const bool rayleigh)
+    {
+      const auto     &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
+      Eigen::Vector3d d = Eigen::Vector3d::Zero();
+      for (unsigned int k = 0; k < a.size(); ++k)
+        d[k] = b[k] - a[k];
+      const double length = d.norm();
+      if (!(length > 0))
+        throw ScriptError("truss " + std::to_string(tag) + " has zero length");
+      if (!(area > 0))
+        throw ScriptError("truss " + std::to_string(tag) + " needs A > 0");
+      ZeroLengthData data;
+      data.nodes     = nodes;
+      data.materials = {material};
+      data.directions = {1};
+      data.rayleigh  = rayleigh;
+      // any y across the member: the truss strains along x only
+      const Eigen::Vector3d x = d / length;
+      const Eigen::Vector3d y = std::abs(x[2]) < 0.9 ? Eigen::Vector3d(-x[1], x[0], 0).normalized() :
+                                                      Eigen::Vector3d(1, 0, 0);
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          data.x[k] = x[k];
+          data.y[k] = y[k];
+        }
+      auto truss = std::make_unique<ZeroLength>(domain, tag, data);
+      truss->as_truss(length, area);
+      return truss;
     }
   } // namespace opensees
 } // namespace poundfe

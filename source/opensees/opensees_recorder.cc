@@ -1,5 +1,6 @@
-// OpenSees's Node recorder (NodeRecorder.cpp, DataFileStream.cpp: values
-// streamed with setprecision(p), separated by " ", one line per record).
+// OpenSees's Node and Element recorders (NodeRecorder.cpp,
+// ElementRecorder.cpp, DataFileStream.cpp: values streamed with
+// setprecision(p), separated by " ", one line per record).
 #include <poundfe/opensees/opensees_recorder.h>
 #include <poundfe/output/atomic_file.h>
 
@@ -9,50 +10,26 @@ namespace poundfe
 {
   namespace opensees
   {
-    NodeRecorder::NodeRecorder(NodeRecorderSpec s)
-      : spec(std::move(s))
-      , file(std::make_unique<AtomicFile>(spec.file))
+    Recorder::Recorder(const std::string &file_name, const bool with_time, const int digits)
+      : file(std::make_unique<AtomicFile>(file_name))
+      , time(with_time)
+      , precision(digits)
     {}
 
-    NodeRecorder::~NodeRecorder() = default;
+    Recorder::~Recorder() = default;
 
     void
-    NodeRecorder::record(const Domain &domain)
+    Recorder::record(const Domain &domain)
     {
-      using Response = NodeRecorderSpec::Response;
-      std::map<int, std::vector<double>> reactions;
-      if (spec.response == Response::reaction)
-        reactions = domain.reactions();
-      std::ostringstream line;
-      line.precision(spec.precision);
-      bool first = true;
-      auto put   = [&](const double value) {
-        line << (first ? "" : " ") << value;
-        first = false;
-      };
-      if (spec.time)
-        put(domain.time);
-      for (const int tag : spec.nodes)
-        {
-          const Node &node = domain.node(tag);
-          for (const unsigned int k : spec.dofs)
-            switch (spec.response)
-              {
-                case Response::disp:
-                  put(node.disp.at(k));
-                  break;
-                case Response::vel:
-                  put(node.vel.at(k));
-                  break;
-                case Response::accel:
-                  put(node.accel.at(k));
-                  break;
-                case Response::reaction:
-                  put(reactions.at(tag).at(k));
-                  break;
-              }
-        }
-      buffer += line.str() + "\n";
+      std::vector<double> line;
+      if (time)
+        line.push_back(domain.time);
+      values(domain, line);
+      std::ostringstream text;
+      text.precision(precision);
+      for (std::size_t i = 0; i < line.size(); ++i)
+        text << (i == 0 ? "" : " ") << line[i];
+      buffer += text.str() + "\n";
       if (buffer.size() > (1u << 16))
         {
           file->write(buffer);
@@ -61,7 +38,7 @@ namespace poundfe
     }
 
     void
-    NodeRecorder::finish()
+    Recorder::finish()
     {
       if (!file)
         return;
@@ -69,6 +46,55 @@ namespace poundfe
       buffer.clear();
       file->commit();
       file.reset();
+    }
+
+    NodeRecorder::NodeRecorder(NodeRecorderSpec s)
+      : Recorder(s.file, s.time, s.precision)
+      , spec(std::move(s))
+    {}
+
+    void
+    NodeRecorder::values(const Domain &domain, std::vector<double> &line) const
+    {
+      using Response = NodeRecorderSpec::Response;
+      std::map<int, std::vector<double>> reactions;
+      if (spec.response == Response::reaction)
+        reactions = domain.reactions();
+      for (const int tag : spec.nodes)
+        {
+          const Node &node = domain.node(tag);
+          for (const unsigned int k : spec.dofs)
+            switch (spec.response)
+              {
+                case Response::disp:
+                  line.push_back(node.disp.at(k));
+                  break;
+                case Response::vel:
+                  line.push_back(node.vel.at(k));
+                  break;
+                case Response::accel:
+                  line.push_back(node.accel.at(k));
+                  break;
+                case Response::reaction:
+                  line.push_back(reactions.at(tag).at(k));
+                  break;
+              }
+        }
+    }
+
+    ElementRecorder::ElementRecorder(ElementRecorderSpec s)
+      : Recorder(s.file, s.time, s.precision)
+      , spec(std::move(s))
+    {}
+
+    void
+    ElementRecorder::values(const Domain &domain, std::vector<double> &line) const
+    {
+      for (const int tag : spec.elements)
+        {
+          const std::vector<double> v = domain.elements.at(tag)->response(spec.response);
+          line.insert(line.end(), v.begin(), v.end());
+        }
     }
   } // namespace opensees
 } // namespace poundfe

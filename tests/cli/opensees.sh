@@ -160,8 +160,8 @@ bad() { # NAME EXPECTED (the script on standard input)
   [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
 }
 echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"'
-echo "element forceBeamColumn 1 1 2 5 1" | bad unsupported-element \
-  '5: element forceBeamColumn: poundfe does not support it'
+echo "element twoNodeLink 1 1 2 -mat 1 -dir 1" | bad unsupported-element \
+  '5: element twoNodeLink: poundfe does not support it'
 printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1 -doRayleigh 2\n' \
   | bad unsupported-option '6: element zeroLength -doRayleigh 2: poundfe does not support it'
 printf 'fix 1 1\nfix 9 1\n' | bad missing-node '6: fix: node 9 does not exist'

@@ -164,6 +164,28 @@ namespace poundfe
     bool basic_state(const BasicVector &v, BasicVector &q, BasicMatrix &k) override;
   };
 
+  /// OpenSees's own element iteration (ForceBeamColumn2d/3d::update in
+  /// OpenSees 3.8), for scripts that must give OpenSees's numbers: from the
+  /// last trial state, q += k_v dv; then up to max_iterations iterations of
+  /// the section updates above, converged when |dW| = |r . F^-1 r| <
+  /// tolerance (absolute, in the model's units of work); when they do not
+  /// converge, the same from the last converged state with the sections'
+  /// deformation increments by their initial flexibility (10 max_iterations),
+  /// then with the initial flexibility in the first iteration only; then
+  /// the increment divided by subdivide_factor, up to max_subdivisions
+  /// times (a converged piece resets the count). An increment below
+  /// DBL_EPSILON leaves the state as it is, except in the first update
+  /// after a reset or a revert, which also keeps the sections' deformations
+  /// (OpenSees's initialFlag 0). Defaults: OpenSees's (-iter 10 1e-12,
+  /// -subdivide 4 10).
+  struct OpenSeesIteration
+  {
+    unsigned int max_iterations   = 10;
+    double       tolerance        = 1e-12;
+    unsigned int max_subdivisions = 4;
+    double       subdivide_factor = 10;
+  };
+
   /// Force-based: s_i = b_i q, iterated to compatibility (see above).
   template <int dim>
   class ForceBeamColumn : public BeamColumn<dim>
@@ -188,10 +210,17 @@ namespace poundfe
     unsigned int last_iterations() const { return iterations; }
     unsigned int last_pieces() const { return pieces; }
 
+    /// Iterate as OpenSees does (OpenSeesIteration) from now on.
+    void use_opensees_iteration(const OpenSeesIteration &controls);
+
   protected:
     bool basic_state(const BasicVector &v, BasicVector &q, BasicMatrix &k) override;
     void commit_basic() override { committed = current; }
-    void revert_basic() override { current = committed; }
+    void revert_basic() override
+    {
+      current     = committed;
+      initialised = false;
+    }
     void reset_basic() override;
 
   private:
@@ -209,10 +238,19 @@ namespace poundfe
     bool iterate(const BasicVector &target);
     /// f_s from the section's tangent, its small diagonal raised.
     ResultantMatrix flexibility(unsigned int i) const;
+    /// OpenSeesIteration's state determination.
+    bool opensees_state(const BasicVector &v);
+    /// One of its three passes (0: tangent flexibility, 1: initial, 2:
+    /// initial in the first iteration) over the increment dv from `vin`,
+    /// from `current` into `start`: 1 converged, 0 not, -1 a section failed.
+    int opensees_pass(unsigned int pass, const BasicVector &vin, const BasicVector &dv);
 
     IterationState              current, committed, start;
     std::vector<ResultantMatrix> initial_section_stiffness;
     unsigned int                iterations = 0, pieces = 0;
+    bool                        opensees     = false;
+    OpenSeesIteration           opensees_controls;
+    bool                        initialised = false; // OpenSees's initialFlag != 0
   };
 } // namespace poundfe
 

@@ -1,6 +1,8 @@
 // The analysis of an OpenSees script's domain, with OpenSees 3.8's
 // algorithms so that a script gives its numbers: the integrators Newmark
-// (displacement predictor, Newmark.cpp) and LoadControl, the algorithms
+// (displacement predictor, Newmark.cpp), LoadControl and DisplacementControl
+// (DisplacementControl.cpp: newStep's predictor and update's correction of
+// each iterate), the algorithms
 // Linear, Newton and ModifiedNewton (NewtonRaphson.cpp: tangent, solve,
 // update, new residual, test), the tests NormDispIncr (|dU|), NormUnbalance
 // (|R| after the update) and EnergyIncr (|dU . R| / 2), a failed step
@@ -56,6 +58,20 @@ namespace poundfe
       double          gamma = 0.5, beta = 0.25;       // Newmark
       double          d_lambda = 1, lambda_min = 1, lambda_max = 1; // LoadControl
       double          lambda_iterations = 1;
+      /// DisplacementControl (DisplacementControl.cpp) in place of
+      /// LoadControl: node, DOF (0-based), increment, Jd, min, max. Each
+      /// step predicts with the reference load phat = R(lambda + 1) at the
+      /// state where the integrator first analyses (the unbalance of the
+      /// patterns at unit factor), then corrects each Newton iterate by
+      /// dU = dUbar + dlambda dUhat with dlambda = -dUbar_c / dUhat_c, so
+      /// that the controlled DOF moves by exactly the increment.
+      bool            displacement_control = false;
+      int             control_node = 0;
+      unsigned int    control_dof = 0;
+      double          d_u = 0, d_u_min = 0, d_u_max = 0, d_u_iterations = 1;
+      /// Counts the script's `integrator` commands: a new one starts a
+      /// fresh integrator (its increment, its reference load).
+      unsigned int    integrator_serial = 0;
       std::string     linear_solver = "umfpack";
     };
 
@@ -94,6 +110,12 @@ namespace poundfe
       Vector residual() const;
       void   assemble_tangent(double c_k, double c_c, double c_m);
       bool   step(double dt, std::string &why);
+      /// DisplacementControl's predictor (newStep).
+      bool   displacement_step(std::string &why);
+      /// DisplacementControl's corrector of a Newton iterate dx (update).
+      bool   correct_displacement(Vector &dx, std::string &why);
+      /// phat = R at the committed state and the factor lambda + 1.
+      void   reference_load();
       int    iterate(std::string &why);
       double test_norm(const Vector &dx, const Vector &r) const;
       /// The test's line of print flag 1 (each iteration) or 2 (convergence).
@@ -112,6 +134,10 @@ namespace poundfe
       std::function<void(const std::string &)> print; // analyze's `warn`
       bool                          analysed = false; // the solver saw the pattern
       bool                          numbered = false; // this analysis numbered the domain
+      Vector                        phat;                // DisplacementControl's reference load
+      double                        d_u_step = 0;       // its current increment
+      int                           control_equation = -1;
+      bool                          fresh_integrator = true;
     };
   } // namespace opensees
 } // namespace poundfe

@@ -11,8 +11,12 @@
 #ifndef poundfe_opensees_opensees_domain_h
 #define poundfe_opensees_opensees_domain_h
 
+#include <poundfe/elements/beam_column.h>
+#include <poundfe/elements/beam_integration.h>
+#include <poundfe/elements/crd_transformation.h>
 #include <poundfe/laws/material_registry.h>
 #include <poundfe/laws/uniaxial_law.h>
+#include <poundfe/sections/section_law.h>
 
 #include <Eigen/Core>
 
@@ -82,6 +86,12 @@ namespace poundfe
       virtual void revert() {}
       virtual void reset() {}
       virtual std::string failure() const { return {}; }
+      /// A response by OpenSees's words (recorder Element, eleResponse):
+      /// "force" (or "globalForce") for every element, and for beam-columns
+      /// "localForce", "basicForce", "basicDeformation", "section" i
+      /// "force"|"deformation" (i 1-based). ScriptError naming the words
+      /// when the element has no such response.
+      virtual std::vector<double> response(const std::vector<std::string> &words) const;
 
       /// The tangent at the last commit (OpenSees's K_c for betaKc).
       Matrix committed_tangent;
@@ -139,6 +149,22 @@ namespace poundfe
       double alpha_m = 0, beta_k = 0, beta_k_init = 0, beta_k_committed = 0;
     };
 
+    /// `beamIntegration`: Lobatto or Legendre with n points on one section,
+    /// or HingeRadau (sections of end I, end J and the interior, hinge
+    /// lengths); the rule of HingeRadau needs the member's length.
+    struct IntegrationSpec
+    {
+      enum class Kind
+      {
+        lobatto,
+        legendre,
+        hinge_radau
+      } kind                = Kind::lobatto;
+      unsigned int n_points = 0;
+      int          section = 0, section_i = 0, section_j = 0; // hinge_radau: section = interior
+      double       hinge_length_i = 0, hinge_length_j = 0;
+    };
+
     /// What a script built; the analysis (opensees_analysis.h) moves it.
     struct Domain
     {
@@ -146,7 +172,10 @@ namespace poundfe
       std::map<int, Node>                     nodes;
       std::map<int, std::unique_ptr<Element>> elements;
       std::map<int, MaterialParameters>       materials;
-      std::map<int, bool>                     transformations; // tag -> P-Delta
+      std::map<int, Transformation>           transformations;
+      /// Sections by tag, each cloned into every integration point.
+      std::map<int, std::shared_ptr<const SectionLaw>> sections;
+      std::map<int, IntegrationSpec>   integrations;
       std::map<int, std::shared_ptr<TimeSeries>> series;
       std::map<int, Pattern>                  patterns;
       std::vector<EqualDof>                   equal_dofs;
@@ -176,7 +205,29 @@ namespace poundfe
     /// elasticBeamColumn in 2D with a Linear or PDelta transformation.
     std::unique_ptr<Element> make_elastic_beam_2d(const Domain &domain, int tag,
                                                   std::array<int, 2> nodes, double A, double E,
-                                                  double I, bool p_delta);
+                                                  double I, Transformation transformation);
+
+    /// forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn in 2D on the
+    /// domain's integration (OpenSees's ForceBeamColumn2d, DispBeamColumn2d).
+    enum class BeamColumnKind
+    {
+      force_based,
+      displacement_based
+    };
+    /// The force-based element iterates as OpenSees does (elements/
+    /// beam_column.h: OpenSeesIteration, with -iter's maxIter and tol).
+    std::unique_ptr<Element> make_beam_column_2d(const Domain &domain, int tag,
+                                                 std::array<int, 2> nodes, BeamColumnKind kind,
+                                                 Transformation           transformation,
+                                                 const IntegrationSpec   &integration,
+                                                 const OpenSeesIteration &iteration);
+    /// elasticBeamColumn on a Corotational transformation: the exact
+    /// elastic basic stiffness (a displacement-based member on an elastic
+    /// section with two Gauss points) on the corotational basic system, as
+    /// OpenSees's ElasticBeam2d with CorotCrdTransf2d.
+    std::unique_ptr<Element> make_elastic_corotational_2d(const Domain &domain, int tag,
+                                                          std::array<int, 2> nodes, double A,
+                                                          double E, double I);
 
     /// zeroLength: uniaxial materials along local directions (1-based as in
     /// OpenSees: 1-3 translations, 4-6 rotations) of the local axes x, y.
@@ -190,6 +241,10 @@ namespace poundfe
     };
     std::unique_ptr<Element> make_zero_length(const Domain &domain, int tag,
                                               const ZeroLengthData &data);
+    /// truss: a uniaxial material over the area A along the member, small
+    /// strains (OpenSees's Truss); Rayleigh-damped only when asked.
+    std::unique_ptr<Element> make_truss(const Domain &domain, int tag, std::array<int, 2> nodes,
+                                        double area, int material, bool rayleigh);
   } // namespace opensees
 } // namespace poundfe
 

@@ -1,8 +1,11 @@
-// OpenSees's Node recorder: after each committed step, one line of the
-// committed time (-time) and each node's DOFs of one response (disp, vel,
-// accel, reaction), separated by spaces, with -precision significant digits
-// (6 by default), as OpenSees's DataFileStream writes them. The file appears
-// complete when the script ends (or at wipe), and not at all when it fails.
+// OpenSees's Node and Element recorders: after each committed step, one
+// line of the committed time (-time) and then each node's DOFs of one
+// response (disp, vel, accel, reaction), or each element's values of one
+// response (Element::response: force, localForce, basicForce,
+// basicDeformation, section i force|deformation), separated by spaces,
+// with -precision significant digits (6 by default), as OpenSees's
+// DataFileStream writes them. The file appears complete when the script
+// ends (or at wipe), and not at all when it fails.
 #ifndef poundfe_opensees_opensees_recorder_h
 #define poundfe_opensees_opensees_recorder_h
 
@@ -34,20 +37,55 @@ namespace poundfe
       int precision = 6;
     };
 
-    class NodeRecorder
+    /// A recorder's file: lines of numbers, written when the script ends.
+    class Recorder
     {
     public:
-      explicit NodeRecorder(NodeRecorderSpec spec);
-      ~NodeRecorder();
+      Recorder(const std::string &file, bool time, int precision);
+      virtual ~Recorder();
       /// One line of the domain's committed state.
       void record(const Domain &domain);
       /// Writes the last lines and puts the file in place.
       void finish();
 
+    protected:
+      /// The line's values after the time.
+      virtual void values(const Domain &domain, std::vector<double> &line) const = 0;
+
     private:
-      NodeRecorderSpec            spec;
       std::unique_ptr<AtomicFile> file;
       std::string                 buffer;
+      bool                        time;
+      int                         precision;
+    };
+
+    class NodeRecorder : public Recorder
+    {
+    public:
+      explicit NodeRecorder(NodeRecorderSpec spec);
+
+    private:
+      void             values(const Domain &domain, std::vector<double> &line) const override;
+      NodeRecorderSpec spec;
+    };
+
+    struct ElementRecorderSpec
+    {
+      std::string              file;
+      bool                     time = false;
+      std::vector<int>         elements;
+      std::vector<std::string> response; // OpenSees's words ("section", "1", "force")
+      int                      precision = 6;
+    };
+
+    class ElementRecorder : public Recorder
+    {
+    public:
+      explicit ElementRecorder(ElementRecorderSpec spec);
+
+    private:
+      void values(const Domain &domain, std::vector<double> &line) const override;
+      ElementRecorderSpec spec;
     };
   } // namespace opensees
 } // namespace poundfe

@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""poundfe and OpenSees 3.8 side by side on the same Tcl scripts.
+
+    compare.py POUNDFE OPENSEES WORK_DIR [--write-reference REF_DIR]
+    compare.py POUNDFE --check REF_DIR WORK_DIR
+
+First form: runs every case below in both programs (each in its own output
+directory under WORK_DIR, the script's argv: that directory and the case's
+words), times them, and prints for every recorder file the largest
+difference over the history relative to the peak of its column, and the
+ratio of the wall times. With --write-reference it also writes every 10th
+row of OpenSees's files (and the last) to REF_DIR/CASE/FILE, the numbers the
+test suite keeps (the binary and its sources stay outside the project).
+Second form (the CLI test): runs poundfe only and compares its files with
+those rows, with the tolerance of the case. Exit 1 naming the file and the
+largest difference when one exceeds it."""
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CORPUS = os.path.join(HERE, "..", "..", "tests", "opensees")
+# case: (script, argv words after the output directory, tolerance relative
+# to the peak: round-off for linear models, 1e-6 for nonlinear ones)
+CASES = {
+    "column_force": ("fibre_column_cyclic.tcl", ["force"], 1e-6),
+    "column_disp": ("fibre_column_cyclic.tcl", ["disp"], 1e-6),
+    "frame_record": ("fibre_frame_record.tcl", [], 1e-6),
+    "sdof_linear": ("sdof_linear.tcl", [], 1e-10),
+    "stick3_linear": ("stick3_linear.tcl", [], 1e-10),
+    "portal_frame": ("portal_frame.tcl", [], 1e-10),
+    "portal_pdelta": ("portal_pdelta.tcl", [], 1e-10),
+    "cantilever_trig": ("cantilever_trig.tcl", [], 1e-10),
+    "steel01_cyclic": ("steel01_cyclic.tcl", [], 1e-6),
+    "pounding_ElasticPPGap": ("pounding_sticks.tcl", ["ElasticPPGap"], 1e-6),
+    "pounding_ImpactMaterial": ("pounding_sticks.tcl", ["ImpactMaterial"], 1e-6),
+}
+
+
+def run(program, case, out):
+    script, words, _ = CASES[case]
+    os.makedirs(out, exist_ok=True)
+    start = time.perf_counter()
+    cmd = [program] + (["opensees"] if program.endswith("poundfe") else [])
+    done = subprocess.run(cmd + [os.path.join(CORPUS, script), out] + words,
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"{program} {script} {words}: exit {done.returncode}\n{done.stderr[-2000:]}")
+    return time.perf_counter() - start
+
+
+def largest(ours, theirs):
+    """The largest difference of each column relative to its peak, at most."""
+    a, b = np.loadtxt(ours, ndmin=2), np.loadtxt(theirs, ndmin=2)
+    if a.shape != b.shape:
+        return float("inf")
+    peak = np.maximum(np.abs(b).max(axis=0), 1e-300)
+    return float((np.abs(a - b).max(axis=0) / peak).max())
+
+
+def rows_kept(table):
+    keep = list(range(0, len(table), 10))
+    if keep[-1] != len(table) - 1:
+        keep.append(len(table) - 1)
+    return table[keep]
+
+
+def side_by_side(poundfe, opensees, work, reference):
+    failed = False
+    print("| case | file | largest difference / peak | poundfe s | OpenSees s |")
+    for case, (_, _, tolerance) in CASES.items():
+        mine, theirs = os.path.join(work, case, "poundfe"), os.path.join(work, case, "opensees")
+        t_mine, t_theirs = run(poundfe, case, mine), run(opensees, case, theirs)
+        for name in sorted(os.listdir(theirs)):
+            d = largest(os.path.join(mine, name), os.path.join(theirs, name))
+            failed |= d > tolerance
+            print(f"| {case} | {name} | {d:.1e} | {t_mine:.2f} | {t_theirs:.2f} |")
+            if reference:
+                os.makedirs(os.path.join(reference, case), exist_ok=True)
+                np.savetxt(os.path.join(reference, case, name),
+                           rows_kept(np.loadtxt(os.path.join(theirs, name), ndmin=2)), fmt="%.12g")
+    return failed
+
+
+def check(poundfe, reference, work):
+    failed = False
+    for case in sorted(os.listdir(reference)):
+        mine = os.path.join(work, case)
+        run(poundfe, case, mine)
+        for name in sorted(os.listdir(os.path.join(reference, case))):
+            kept = np.loadtxt(os.path.join(reference, case, name), ndmin=2)
+            ours = rows_kept(np.loadtxt(os.path.join(mine, name), ndmin=2))
+            peak = np.maximum(np.abs(kept).max(axis=0), 1e-300)
+            d = float((np.abs(ours - kept).max(axis=0) / peak).max()) \
+                if ours.shape == kept.shape else float("inf")
+            ok = d <= max(CASES[case][2], 1e-11)  # the kept rows have 12 digits
+            failed |= not ok
+            print(f"{'ok  ' if ok else 'FAIL'} {case}/{name}: {d:.1e}")
+    return failed
+
+
+if __name__ == "__main__":
+    if len(sys.argv) >= 5 and sys.argv[2] == "--check":
+        sys.exit(1 if check(sys.argv[1], sys.argv[3], sys.argv[4]) else 0)
+    if len(sys.argv) not in (4, 6):
+        sys.exit(__doc__)
+    ref = sys.argv[5] if len(sys.argv) == 6 and sys.argv[4] == "--write-reference" else None
+    sys.exit(1 if side_by_side(sys.argv[1], sys.argv[2], sys.argv[3], ref) else 0)

@@ -1,0 +1,379 @@
+// The section and beam-column commands of OpenSees scripts in the plane,
+// with OpenSees 3.8's argument syntax:
+//   section Elastic tag E A Iz
+//   section Fiber tag { patch rect|quad|circ ...; layer straight|circ ...; fiber y z A mat }
+//     (sections/fibre_generators.h: the fibres exactly as OpenSees places
+//     them; the reference axis at the area centroid, as FiberSection2d)
+//   section Aggregator tag mat1 dof1 <mat2 dof2> <-section baseTag>
+//     (dofs P and Mz; the base an Elastic section, or both dofs given)
+//   beamIntegration Lobatto|Legendre tag secTag N
+//   beamIntegration HingeRadau tag secI lpI secJ lpJ secInterior
+//   element forceBeamColumn tag i j transfTag integrationTag <-mass rho> <-iter maxIter tol>
+//   element forceBeamColumn tag i j nIP secTag transfTag <-integration Lobatto|Legendre>
+//       <-mass rho> <-iter maxIter tol>
+//   element nonlinearBeamColumn tag i j nIP secTag transfTag <-mass rho> <-iter maxIter tol>
+//   element dispBeamColumn tag i j transfTag integrationTag <-mass rho>
+//   element dispBeamColumn tag i j nIP secTag transfTag <-integration Legendre|Lobatto> <-mass rho>
+// with the mass lumped, rho L/2 on each node's translations (OpenSees's
+// default). The force-based element iterates as OpenSees's
+// ForceBeamColumn2d (elements/beam_column.h: OpenSeesIteration; -iter sets
+// its maxIter and tol, 10 and 1e-12 by default).
+#include <poundfe/sections/aggregator_section.h>
+#include <poundfe/sections/elastic_section.h>
+#include <poundfe/sections/fibre_generators.h>
+
+#include "opensees_tcl.h"
+
+namespace poundfe
+{
+  namespace opensees_tcl
+  {
+    namespace
+    {
+      using opensees::ScriptError;
+
+      opensees::Domain &
+      plane_domain(Session &s, const std::string &what)
+      {
+        opensees::Domain &d = s.domain;
+        if (d.ndf == 0)
+          throw ScriptError("no model yet: the script must call 'model basic -ndm N' first");
+        if (d.ndm != 2 || d.ndf != 3)
+          unsupported(what + " outside -ndm 2 -ndf 3");
+        return d;
+      }
+
+      void
+      add_section(opensees::Domain &d, const int tag, std::shared_ptr<const SectionLaw> section)
+      {
+        if (!d.sections.emplace(tag, std::move(section)).second)
+          throw ScriptError("section " + std::to_string(tag) + " exists already");
+      }
+
+      void
+      fibre_section(Session &s, opensees::Domain &d, Words &w, const int tag)
+      {
+        if (w.peek() == "-GJ")
+          unsupported("section Fiber -GJ in the plane");
+        const std::string body = w.word("the section's body");
+        if (!w.done())
+          unsupported("section Fiber option '" + w.peek() + "'");
+        FibreGeometry geometry;
+        s.fibres       = &geometry;
+        const int code = Tcl_Eval(w.interp, body.c_str());
+        s.fibres       = nullptr;
+        if (code != TCL_OK)
+          throw ScriptError(Tcl_GetStringResult(w.interp));
+        if (geometry.fibres.empty())
+          throw ScriptError("section Fiber " + std::to_string(tag) + " has no fibre");
+        add_section(d, tag, std::make_shared<FibreSection>(geometry, 2));
+      }
+
+      /// Aggregator: mat dof pairs (P, Mz), then -section base.
+      void
+      aggregator_section(opensees::Domain &d, Words &w, const int tag)
+      {
+        std::vector<std::pair<int, std::string>> laws;
+        while (!w.done() && w.peek() != "-section")
+          {
+            const int mat = w.integer("a material's tag");
+            laws.emplace_back(mat, w.word("the material's dof"));
+          }
+        SectionVector rigidity(2);
+        rigidity.setConstant(std::numeric_limits<double>::quiet_NaN());
+        if (!w.done())
+          {
+            w.word("-section");
+            const int  base = w.integer("the base section");
+            const auto it   = d.sections.find(base);
+            if (it == d.sections.end())
+              throw ScriptError("section " + std::to_string(base) + " does not exist");
+            if (!dynamic_cast<const ElasticSection *>(it->second.get()))
+              unsupported("section Aggregator on a base section other than Elastic");
+            rigidity = it->second->initial_tangent().diagonal();
+          }
+        if (!w.done())
+          unsupported("section Aggregator option '" + w.peek() + "'");
+        auto section = std::make_shared<AggregatorSection>(rigidity);
+        std::array<bool, 2> has{{false, false}};
+        for (const auto &[mat, dof] : laws)
+          {
+            if (dof != "P" && dof != "Mz")
+              unsupported("section Aggregator dof '" + dof + "' in the plane");
+            const unsigned int r = dof == "P" ? 0 : 1;
+            const auto         p = d.materials.find(mat);
+            if (p == d.materials.end())
+              throw ScriptError("uniaxialMaterial " + std::to_string(mat) + " does not exist");
+            const MaterialParameters parameters = p->second;
+            section->set_law(r, [parameters]() { return make_material(parameters); });
+            has[r] = true;
+          }
+        for (unsigned int r = 0; r < 2; ++r)
+          if (!has[r] && std::isnan(rigidity[r]))
+            unsupported(std::string("section Aggregator without ") + (r == 0 ? "P" : "Mz") +
+                        " and without an Elastic -section");
+        add_section(d, tag, section);
+      }
+
+      void
+      section(Session &s, Words &w)
+      {
+        const std::string type = w.word("the section's type");
+        opensees::Domain &d    = plane_domain(s, "section " + type);
+        const int         tag  = w.integer("the section's tag");
+        if (type == "Elastic")
+          {
+            const double E = w.real("E"), A = w.real("A"), I = w.real("Iz");
+            if (!w.done())
+              unsupported("section Elastic with shear (G alphaY)");
+            if (!(E > 0 && A > 0 && I > 0))
+              throw ScriptError("section Elastic needs E, A, Iz > 0");
+            add_section(d, tag, std::make_shared<ElasticSection>(E * A, E * I));
+          }
+        else if (type == "Fiber" || type == "fiberSec")
+          fibre_section(s, d, w, tag);
+        else if (type == "Aggregator")
+          aggregator_section(d, w, tag);
+        else
+          unsupported("section " + type);
+      }
+
+      /// The index in the section of the script's material `tag`.
+      unsigned int
+      fibre_material(Session &s, const int tag)
+      {
+        const auto it = s.domain.materials.find(tag);
+        if (it == s.domain.materials.end())
+          throw ScriptError("uniaxialMaterial " + std::to_string(tag) + " does not exist");
+        const std::string name = std::to_string(tag);
+        for (unsigned int i = 0; i < s.fibres->materials.size(); ++i)
+          if (s.fibres->materials[i].name == name)
+            return i;
+        SectionMaterial material;
+        material.name = name;
+        material.law  = it->second;
+        return s.fibres->add_material(material);
+      }
+
+      FibreGeometry &
+      open_section(Session &s, const Words &w)
+      {
+        if (!s.fibres)
+          throw ScriptError(w.name + " belongs in the body of a section Fiber");
+        return *s.fibres;
+      }
+
+      SectionPoint
+      point(Words &w)
+      {
+        SectionPoint p;
+        p.y = w.real("y");
+        p.z = w.real("z");
+        return p;
+      }
+
+      void
+      patch(Session &s, Words &w)
+      {
+        FibreGeometry    &g    = open_section(s, w);
+        const std::string type = w.word("the patch's type");
+        const unsigned int m   = fibre_material(s, w.integer("the material's tag"));
+        const int          n1 = w.integer("the first number of cells"),
+                  n2          = w.integer("the second number of cells");
+        if (n1 < 1 || n2 < 1)
+          throw ScriptError("the numbers of cells must be >= 1");
+        if (type == "rect" || type == "rectangular")
+          {
+            const SectionPoint i = point(w), j = point(w);
+            add_rect_patch(g, m, n1, n2, i, j);
+          }
+        else if (type == "quad" || type == "quadr")
+          {
+            std::array<SectionPoint, 4> v;
+            for (SectionPoint &p : v)
+              p = point(w);
+            add_quad_patch(g, m, n1, n2, v);
+          }
+        else if (type == "circ")
+          {
+            const SectionPoint c   = point(w);
+            const double       r_i = w.real("rInt"), r_e = w.real("rExt");
+            double             a0 = 0, a1 = 360;
+            if (!w.done())
+              {
+                a0 = w.real("the start angle");
+                a1 = w.real("the end angle");
+              }
+            add_circ_patch(g, m, n1, n2, c, r_i, r_e, a0, a1);
+          }
+        else
+          unsupported("patch " + type);
+        if (!w.done())
+          unsupported("patch " + type + " option '" + w.peek() + "'");
+      }
+
+      void
+      layer(Session &s, Words &w)
+      {
+        FibreGeometry     &g    = open_section(s, w);
+        const std::string  type = w.word("the layer's type");
+        const unsigned int m    = fibre_material(s, w.integer("the material's tag"));
+        const int          n    = w.integer("the number of bars");
+        const double       area = w.real("the bar's area");
+        if (n < 1)
+          throw ScriptError("the number of bars must be >= 1");
+        if (type == "straight")
+          {
+            const SectionPoint a = point(w), b = point(w);
+            add_straight_layer(g, m, n, area, a, b);
+          }
+        else if (type == "circ")
+          {
+            const SectionPoint c = point(w);
+            const double       r = w.real("the radius");
+            double             a0 = 0, a1 = 360;
+            if (!w.done())
+              {
+                a0 = w.real("the start angle");
+                a1 = w.real("the end angle");
+              }
+            add_circ_layer(g, m, n, area, c, r, a0, a1);
+          }
+        else
+          unsupported("layer " + type);
+        if (!w.done())
+          unsupported("layer " + type + " option '" + w.peek() + "'");
+      }
+
+      void
+      fiber(Session &s, Words &w)
+      {
+        FibreGeometry     &g    = open_section(s, w);
+        const SectionPoint p    = point(w);
+        const double       area = w.real("the area");
+        add_fibre(g, fibre_material(s, w.integer("the material's tag")), p, area);
+        if (!w.done())
+          unsupported("fiber option '" + w.peek() + "'");
+      }
+
+      void
+      beam_integration(Session &s, Words &w)
+      {
+        const std::string type = w.word("the rule's type");
+        opensees::Domain &d    = plane_domain(s, "beamIntegration " + type);
+        const int         tag  = w.integer("the rule's tag");
+        using Kind             = opensees::IntegrationSpec::Kind;
+        opensees::IntegrationSpec r;
+        if (type == "Lobatto" || type == "Legendre")
+          {
+            r.kind     = type == "Lobatto" ? Kind::lobatto : Kind::legendre;
+            r.section  = w.integer("the section's tag");
+            r.n_points = w.integer("the number of points");
+          }
+        else if (type == "HingeRadau")
+          {
+            r.kind           = Kind::hinge_radau;
+            r.section_i      = w.integer("secTagI");
+            r.hinge_length_i = w.real("lpI");
+            r.section_j      = w.integer("secTagJ");
+            r.hinge_length_j = w.real("lpJ");
+            r.section        = w.integer("secTagInterior");
+          }
+        else
+          unsupported("beamIntegration " + type);
+        if (!w.done())
+          unsupported("beamIntegration " + type + " option '" + w.peek() + "'");
+        for (const int section : {r.section, r.section_i, r.section_j})
+          if (section != 0 && d.sections.count(section) == 0)
+            throw ScriptError("section " + std::to_string(section) + " does not exist");
+        if (!d.integrations.emplace(tag, r).second)
+          throw ScriptError("beamIntegration " + std::to_string(tag) + " exists already");
+      }
+
+      /// The options after the element's tags: -mass rho and the old
+      /// syntax's -integration.
+      void
+      beam_column_options(Words &w, const std::string &type, double &rho,
+                          opensees::IntegrationSpec &rule, const bool old_syntax,
+                          OpenSeesIteration &iteration)
+      {
+        using Kind = opensees::IntegrationSpec::Kind;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-mass")
+              rho = w.real("the mass per length");
+            else if (option == "-iter" && type != "dispBeamColumn")
+              {
+                const int n         = w.integer("maxIter");
+                iteration.tolerance = w.real("tol");
+                if (n < 1 || !(iteration.tolerance > 0))
+                  throw ScriptError("-iter needs maxIter >= 1 and tol > 0");
+                iteration.max_iterations = n;
+              }
+            else if (option == "-integration" && old_syntax)
+              {
+                const std::string name = w.word("the integration's type");
+                if (name != "Lobatto" && name != "Legendre")
+                  unsupported("-integration " + name);
+                rule.kind = name == "Lobatto" ? Kind::lobatto : Kind::legendre;
+              }
+            else
+              unsupported("element " + type + " option '" + option + "'");
+          }
+      }
+    } // namespace
+
+    void
+    beam_column_element(Session &s, Words &w, const std::string &type)
+    {
+      opensees::Domain  &d   = plane_domain(s, "element " + type);
+      const int          tag = w.integer("the element's tag");
+      std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
+      const std::vector<int> numbers = w.integers("a tag");
+      const bool old_syntax = type == "nonlinearBeamColumn" || numbers.size() == 3;
+      if (numbers.size() != (old_syntax ? 3u : 2u))
+        throw ScriptError("element " + type + " " + std::to_string(tag) +
+                          " needs transfTag integrationTag, or nIP secTag transfTag");
+      using Kind = opensees::IntegrationSpec::Kind;
+      opensees::IntegrationSpec rule;
+      int                       transf = numbers[0];
+      if (old_syntax)
+        {
+          rule.n_points = numbers[0];
+          rule.section  = numbers[1];
+          transf        = numbers[2];
+          rule.kind     = type == "dispBeamColumn" ? Kind::legendre : Kind::lobatto;
+        }
+      else
+        {
+          const auto it = d.integrations.find(numbers[1]);
+          if (it == d.integrations.end())
+            throw ScriptError("beamIntegration " + std::to_string(numbers[1]) +
+                              " does not exist");
+          rule = it->second;
+        }
+      double            rho = 0;
+      OpenSeesIteration iteration;
+      beam_column_options(w, type, rho, rule, old_syntax, iteration);
+      const auto t = d.transformations.find(transf);
+      if (t == d.transformations.end())
+        throw ScriptError("geomTransf " + std::to_string(transf) + " does not exist");
+      const auto kind = type == "dispBeamColumn" ? opensees::BeamColumnKind::displacement_based :
+                                                   opensees::BeamColumnKind::force_based;
+      add_element(d,
+                  opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
+      add_lumped_mass(d, nodes, rho);
+    }
+
+    void
+    define_section_commands(Tcl_Interp *interp, Session &session)
+    {
+      define(interp, session, "section", section);
+      define(interp, session, "patch", patch);
+      define(interp, session, "layer", layer);
+      define(interp, session, "fiber", fiber);
+      define(interp, session, "beamIntegration", beam_integration);
+    }
+  } // namespace opensees_tcl
+} // namespace poundfe

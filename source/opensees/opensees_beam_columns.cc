@@ -1,0 +1,170 @@
+// The distributed-plasticity beam-columns of an OpenSees script in the
+// plane: forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn on the
+// sections of a `beamIntegration` (elements/beam_column.h: OpenSees's
+// ForceBeamColumn2d and DispBeamColumn2d state determinations), and
+// elasticBeamColumn on a Corotational transformation; the force-based one
+// iterates as OpenSees's (OpenSeesIteration). Their responses as
+// OpenSees's ForceBeamColumn2d::getResponse gives them:
+//   force       the global resisting force (6 values, node I then J);
+//   localForce  (-N, V, MI, N, -V, MJ) with q = (N, MI, MJ) and
+//               V = (MI + MJ)/L0 (L0 the initial length, as OpenSees);
+//   basicForce  q;  basicDeformation (chordRotation, chordDeformation)  v;
+//   section i force | deformation  the resultants (N, M) or deformations
+//               (eps0, kappa) of integration point i (1-based, from end I).
+#include <poundfe/base/exceptions.h>
+#include <poundfe/elements/beam_column.h>
+#include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/sections/elastic_section.h>
+
+namespace poundfe
+{
+  namespace opensees
+  {
+    namespace
+    {
+      class BeamColumnElement : public Element
+      {
+      public:
+        BeamColumnElement(const int tag, const std::array<int, 2> nodes,
+                          std::unique_ptr<BeamColumn<2>> beam)
+          : Element(tag, {nodes[0], nodes[1]})
+          , member(std::move(beam))
+        {
+          committed_tangent = tangent();
+        }
+
+        unsigned int n_dofs() const override { return 6; }
+        bool         rayleigh_damped() const override { return true; }
+
+        bool
+        set_trial(const Vector &u, const Vector &) override
+        {
+          return member->set_trial(BeamColumn<2>::GlobalVector(u));
+        }
+
+        Vector force() const override { return member->resisting_force(); }
+        Matrix tangent() const override { return member->tangent(); }
+        Matrix initial_tangent() const override { return member->initial_tangent(); }
+        void   commit() override { member->commit(); }
+        void   revert() override { member->revert(); }
+        void   reset() override { member->reset(); }
+        std::string failure() const override { return member->failure(); }
+
+        std::vector<double> response(const std::vector<std::string> &words) const override;
+
+      private:
+        std::unique_ptr<BeamColumn<2>> member;
+      };
+
+      template <typename V>
+      std::vector<double>
+      values_of(const V &v)
+      {
+        return std::vector<double>(v.data(), v.data() + v.size());
+      }
+
+      std::vector<double>
+      BeamColumnElement::response(const std::vector<std::string> &words) const
+      {
+        const std::string what = words.empty() ? "" : words[0];
+        const auto       &q    = member->basic_force();
+        if (words.size() == 1 && (what == "localForce" || what == "localForces"))
+          {
+            const double shear = (q[1] + q[2]) / member->length();
+            return {-q[0], shear, q[1], q[0], -shear, q[2]};
+          }
+        if (words.size() == 1 && (what == "basicForce" || what == "basicForces"))
+          return values_of(q);
+        if (words.size() == 1 && (what == "basicDeformation" || what == "chordRotation" ||
+                                  what == "chordDeformation"))
+          return values_of(member->basic_deformation());
+        if (words.size() == 3 && what == "section")
+          {
+            const int i = std::atoi(words[1].c_str());
+            if (i < 1 || i > static_cast<int>(member->n_points()))
+              throw ScriptError("element " + std::to_string(tag) + " has no section " +
+                                words[1] + " (1 to " + std::to_string(member->n_points()) + ")");
+            const SectionLaw &s = member->section(i - 1);
+            if (words[2] == "force" || words[2] == "forces")
+              return values_of(s.resultant());
+            if (words[2] == "deformation" || words[2] == "deformations")
+              return values_of(s.deformation());
+          }
+        return Element::response(words);
+      }
+
+      const SectionLaw &
+      section_of(const Domain &domain, const int tag)
+      {
+        const auto it = domain.sections.find(tag);
+        if (it == domain.sections.end())
+          throw ScriptError("section " + std::to_string(tag) + " does not exist");
+        if (it->second->n_resultants() != 2)
+          throw ScriptError("section " + std::to_string(tag) + " is not a plane section");
+        return *it->second;
+      }
+
+      CrdTransformation<2>
+      transformation_of(const Domain &domain, const std::array<int, 2> nodes,
+                        const Transformation kind, const int tag)
+      {
+        const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
+        if (a[0] == b[0] && a[1] == b[1])
+          throw ScriptError("element " + std::to_string(tag) + " has zero length");
+        return CrdTransformation<2>(kind, {a[0], a[1]}, {b[0], b[1]});
+      }
+    } // namespace
+
+    std::unique_ptr<Element>
+    make_beam_column_2d(const Domain &domain, const int tag, const std::array<int, 2> nodes,
+                        const BeamColumnKind kind, const Transformation transformation,
+                        const IntegrationSpec &integration, const OpenSeesIteration &iteration)
+    {
+      const CrdTransformation<2> transf = transformation_of(domain, nodes, transformation, tag);
+      BeamIntegration            rule;
+      std::vector<std::unique_ptr<SectionLaw>> sections;
+      using Kind = IntegrationSpec::Kind;
+      if (integration.kind == Kind::hinge_radau)
+        {
+          rule     = hinge_radau_integration(integration.hinge_length_i,
+                                             integration.hinge_length_j, transf.initial_length());
+          // OpenSees's HingeRadau: end I's section at xi = 0 only, end J's at
+          // xi = 1 only; the points at 8 lp/3 and the interior's take the
+          // interior section (OPS_HingeRadauBeamIntegration's secTags)
+          const SectionLaw &end_i    = section_of(domain, integration.section_i);
+          const SectionLaw &interior = section_of(domain, integration.section);
+          const SectionLaw &end_j    = section_of(domain, integration.section_j);
+          for (const SectionLaw *s : {&end_i, &interior, &interior, &interior, &interior, &end_j})
+            sections.push_back(s->clone());
+        }
+      else
+        {
+          rule     = integration.kind == Kind::lobatto ? lobatto_integration(integration.n_points) :
+                                                         legendre_integration(integration.n_points);
+          sections = sections_along(rule, section_of(domain, integration.section));
+        }
+      std::unique_ptr<BeamColumn<2>> beam;
+      if (kind == BeamColumnKind::force_based)
+        {
+          auto force_based = std::make_unique<ForceBeamColumn<2>>(transf, rule, std::move(sections));
+          force_based->use_opensees_iteration(iteration);
+          beam = std::move(force_based);
+        }
+      else
+        beam = std::make_unique<DispBeamColumn<2>>(transf, rule, std::move(sections));
+      return std::make_unique<BeamColumnElement>(tag, nodes, std::move(beam));
+    }
+
+    std::unique_ptr<Element>
+    make_elastic_corotational_2d(const Domain &domain, const int tag,
+                                 const std::array<int, 2> nodes, const double A, const double E,
+                                 const double I)
+    {
+      const CrdTransformation<2> transf =
+        transformation_of(domain, nodes, Transformation::corotational, tag);
+      const ElasticSection section(E * A, E * I);
+      return std::make_unique<BeamColumnElement>(
+        tag, nodes, std::make_unique<DispBeamColumn<2>>(transf, section, 2));
+    }
+  } // namespace opensees
+} // namespace poundfe

