@@ -159,16 +159,16 @@ bad() { # NAME EXPECTED (the script on standard input)
   grep -qxF -- "poundfe: error: $dir/s.tcl:$2" "$dir/err" || { cat "$dir/err"; fail "$1: message"; }
   [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
 }
-echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"'
+echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"' || exit 1
 echo "element twoNodeLink 1 1 2 -mat 1 -dir 1" | bad unsupported-element \
-  '5: element twoNodeLink: poundfe does not support it'
+  '5: element twoNodeLink: poundfe does not support it' || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1 -doRayleigh 2\n' \
-  | bad unsupported-option '6: element zeroLength -doRayleigh 2: poundfe does not support it'
-printf 'fix 1 1\nfix 9 1\n' | bad missing-node '6: fix: node 9 does not exist'
+  | bad unsupported-option '6: element zeroLength -doRayleigh 2: poundfe does not support it' || exit 1
+printf 'fix 1 1\nfix 9 1\n' | bad missing-node '6: fix: node 9 does not exist' || exit 1
 printf 'fix 1 1\nproc f {} {\n  set x $undefined\n}\nf\n' \
-  | bad script-error "9: can't read \"undefined\": no such variable"
+  | bad script-error "9: can't read \"undefined\": no such variable" || exit 1
 printf 'timeSeries Linear 1\npattern Plain 1 1 {\n  load 2 1.0\n  load 9 1.0\n}\n' \
-  | bad load-in-a-pattern '8: pattern: load: node 9 does not exist'
+  | bad load-in-a-pattern '8: pattern: load: node 9 does not exist' || exit 1
 printf 'uniaxialMaterial Steel01 1 -100.0 1000.0 0.05\n' \
-  | bad bad-material "5: uniaxialMaterial: parameter 'fy': Steel01: must be a positive number (got -100)"
+  | bad bad-material "5: uniaxialMaterial: parameter 'fy': Steel01: must be a positive number (got -100)" || exit 1
 echo "opensees: ok"
