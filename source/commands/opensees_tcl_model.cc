@@ -643,6 +643,11 @@ namespace poundfe
         r.beta_k_committed            = w.real("betaKcomm");
         if (!w.done())
           unsupported("rayleigh with more than 4 values");
+        // OpenSees's K_c starts as the element's tangent now (after gravity:
+        // the gravity state's, not the virgin one); every commit renews it
+        if (r.beta_k_committed != 0)
+          for (auto &[tag, element] : model_domain(s).elements)
+            element->committed_tangent = element->tangent();
       }
 
       opensees::NodeRecorderSpec::Response
