@@ -30,6 +30,8 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
+
 namespace poundfe::section_registration
 {
   namespace
@@ -175,6 +177,14 @@ namespace poundfe::section_registration
             refuse_parameter(p, ": building '" + building.name +
                                   "' is not a generated frame (Type = frame)");
           check_entry();
+          const bool fibre = std::any_of(model.members.begin(), model.members.end(),
+                                         [&](const Member &m) {
+                                           return m.building == p.building && m.fibre.fibre();
+                                         });
+          if (fibre && f.planar != &Section::mass_per_length)
+            refuse_parameter(p, ": building '" + building.name + "' is made of fibre members, "
+                                  "whose rigidities come from their sections (Sections/Section "
+                                  "k/Concrete strength, ...)");
         }
       p.touches = section_touches(f, p.variant == 1);
     }
