@@ -13,7 +13,8 @@
 #     changes the peak drift from one realization to the next;
 #   - bad input (expect.sh): an unknown section name, a wrong count of
 #     per-storey names, a fibre building without Sections, hinges in a fibre
-#     building: exit 1, one line naming file, line and entry, nothing written.
+#     building, a random Column E of a fibre building: exit 1, one line naming
+#     file, line and entry, nothing written.
 #   fibre_frames.sh POUNDFE EXAMPLE
 set -u
 poundfe=$1 example=$2
@@ -181,5 +182,8 @@ expect 1 "Hinges/Locations" run hinges.prm --output out
 frame "$fibre_entries
   set Column E = 3e10" "$(elastic_section)" > unused.prm
 expect 1 "Column E': a fibre building" run unused.prm --output out
+sed '/^subsection Monte Carlo/,/^end/d' "$example" > random-e.prm
+printf 'subsection Random parameters\n  set Variables = e: Building 1/Column E ~ uniform lower 2e10 upper 3e10\nend\n' >> random-e.prm
+expect 1 "is made of fibre members" montecarlo random-e.prm --output out
 [ "$failures" -eq 0 ] || { echo "$failures checks failed"; exit 1; }
 echo "fibre frames: all checks passed"
