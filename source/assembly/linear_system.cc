@@ -2,6 +2,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/frame_element.h>
 #include <poundfe/elements/frame_element_3d.h>
+#include <poundfe/elements/member_element.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -394,7 +395,11 @@ namespace poundfe
           if (!k.may_keep(model, dofs))
             continue;
           const FrameElement element = element_of(model, member);
-          scatter(model, dofs, element.stiffness(), k);
+          // a fibre member: its virgin tangent, K_ref of its MemberElement
+          if (member.fibre.fibre())
+            scatter(model, dofs, make_beam_column(model, member)->initial_tangent(), k);
+          else
+            scatter(model, dofs, element.stiffness(), k);
           scatter(model, dofs, element.mass(model.mass_matrix), m);
         }
       for (const StoreyLink &link : model.links)

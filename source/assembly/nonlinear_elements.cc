@@ -1,6 +1,7 @@
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/elements/biaxial_element.h>
 #include <poundfe/elements/column_contact_element.h>
+#include <poundfe/elements/member_element.h>
 #include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/laws/bouc_wen.h>
@@ -96,6 +97,9 @@ namespace poundfe
     void
     add_hysteretic_elements(const Model &model, NonlinearElements &elements)
     {
+      for (const Member &member : model.members) // fibre frames' beam-columns
+        if (member.fibre.fibre())
+          elements.push_back(make_member_element(model, member));
       for (const Hinge &hinge : model.hinges)
         elements.emplace_back<UniaxialElement>(
           ElementKind::hinge, hinge.building, hinge.label,

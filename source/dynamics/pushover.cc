@@ -193,7 +193,8 @@ namespace poundfe
             result.storeys.push_back(model.buildings[b].name + " storey " + std::to_string(i + 1));
         }
       for (unsigned int h = 0; h < elements.size(); ++h)
-        if (elements[h].kind == ElementKind::hinge || elements[h].kind == ElementKind::storey)
+        if (elements[h].kind == ElementKind::hinge || elements[h].kind == ElementKind::storey ||
+            elements[h].kind == ElementKind::member)
           {
             reported.push_back(h);
             result.elements.push_back(elements[h].label);

@@ -129,6 +129,35 @@ namespace poundfe
     return transformation.basic_deformation()[1];
   }
 
+  std::unique_ptr<BeamColumn<2>>
+  make_beam_column(const Model &model, const Member &member)
+  {
+    Assert(member.fibre.fibre() && model.section_laws.at(member.fibre.section),
+           dealii::ExcMessage("a fibre member needs its section"));
+    const Point2 a = model.nodes[member.nodes[0]].position;
+    const Point2 b = model.nodes[member.nodes[1]].position;
+    const CrdTransformation<2> transformation(member.fibre.p_delta ? Transformation::pdelta :
+                                                                     Transformation::linear,
+                                              Eigen::Vector2d(a.x, a.y),
+                                              Eigen::Vector2d(b.x, b.y));
+    const SectionLaw &section = *model.section_laws[member.fibre.section];
+    if (member.fibre.force_based)
+      return std::make_unique<ForceBeamColumn<2>>(transformation, section, member.fibre.n_points);
+    return std::make_unique<DispBeamColumn<2>>(transformation, section, member.fibre.n_points);
+  }
+
+  std::unique_ptr<MemberElement<2>>
+  make_member_element(const Model &model, const Member &member)
+  {
+    std::vector<int> equations;
+    for (const unsigned int node : member.nodes)
+      for (const Component c : {Component::ux, Component::uy, Component::rz})
+        equations.push_back(model.equation(Model::dof(node, c)));
+    return std::make_unique<MemberElement<2>>(member.building, member.label, equations,
+                                              make_beam_column(model, member),
+                                              ReferenceStiffness::initial, ElementKind::member);
+  }
+
   Eigen::Matrix<double, 6, 6>
   member_mass(const CrdTransformation<2> &transformation, const double mass_per_length,
               const MassMatrixType type)

@@ -256,6 +256,7 @@ namespace poundfe
         building.hysteresis.max_iterations = time_integration.law_max_iterations;
       }
     output.finalize(*this);
+    model.sections = sections; // what fibre buildings name
     model.finalize(*this);
     ground_motion.check(*this, time_integration.newmark.time_step);
     time_integration.check(*this);

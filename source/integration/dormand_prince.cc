@@ -121,6 +121,8 @@ namespace poundfe
           return "a link between buildings";
         case ElementKind::foundation:
           return "a foundation spring";
+        case ElementKind::member:
+          return "a fibre member";
         default:
           return "a contact in plan (rank " + std::to_string(e.rank()) + ")";
       }

@@ -7,6 +7,7 @@
 #include <poundfe/model/mesh_building_3d.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/model/plan_builder.h>
+#include <poundfe/sections/fibre_section.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +32,8 @@ namespace poundfe
     void
     add_member(Model &model, const unsigned int a, const unsigned int b,
                const unsigned int n_elements, const Section &section,
-               const unsigned int building, const unsigned int group, const MemberKind kind)
+               const unsigned int building, const unsigned int group, const MemberKind kind,
+               const FibreMember &fibre = {})
     {
       const Point2 pa = model.nodes[a].position;
       const Point2 pb = model.nodes[b].position;
@@ -52,6 +54,7 @@ namespace poundfe
           member.kind     = kind;
           member.at_joint = {{e == 1, e == n_elements}};
           member.member_length = std::hypot(pb.x - pa.x, pb.y - pa.y);
+          member.fibre         = fibre;
           model.members.push_back(member);
           previous = next;
         }
@@ -216,6 +219,37 @@ namespace poundfe
         }
     }
 
+    /// Member model = fibre: the members of storey (floor) i are beam-columns
+    /// on their Sections entry (set_fibre_rigidities gives them its rigidities).
+    void
+    set_fibre_member(const Model &model, const BuildingParameters &p,
+                     const std::vector<unsigned int> &sections, const unsigned int storey,
+                     const bool column, FibreMember &fibre)
+    {
+      if (!p.fibre())
+        return;
+      fibre.section     = int(value_for(sections, storey));
+      fibre.force_based = p.member_element == "force";
+      fibre.n_points    = p.integration_points;
+      fibre.p_delta     = column && (p.member_transformation == "PDelta" ||
+                                 (p.member_transformation == "auto" &&
+                                  model.gravity_analysis.enabled));
+    }
+
+    /// The plane fibre section of each `Sections` entry a fibre building
+    /// names (model.section_laws).
+    void
+    add_section_laws(Model &model, const ModelParameters &parameters, const InputFile &input)
+    {
+      model.section_laws.assign(parameters.sections.sections.size(), nullptr);
+      for (const BuildingParameters &p : parameters.buildings)
+        for (const auto *indices : {&p.column_section_index, &p.beam_section_index})
+          for (const unsigned int k : *indices)
+            if (!model.section_laws[k])
+              model.section_laws[k] =
+                std::make_shared<const FibreSection>(parameters.sections.section(input, k, 2));
+    }
+
     void
     build_frame(Model &model, const BuildingParameters &p, const unsigned int b,
                 Building &building)
@@ -243,19 +277,21 @@ namespace poundfe
       for (unsigned int i = 1; i <= n_storeys; ++i)
         {
           const Section column{value_for(p.column_youngs_modulus, i - 1),
-                               value_for(p.column_area, i - 1),
-                               value_for(p.column_second_moment, i - 1),
-                               value_for(p.column_mass_per_length, i - 1)};
-          const Section beam{value_for(p.beam_youngs_modulus, i - 1),
-                             value_for(p.beam_area, i - 1),
-                             value_for(p.beam_second_moment, i - 1),
-                             value_for(p.beam_mass_per_length, i - 1)};
+                         value_for(p.column_area, i - 1),
+                         value_for(p.column_second_moment, i - 1),
+                         value_for(p.column_mass_per_length, i - 1)};
+          const Section beam{value_for(p.beam_youngs_modulus, i - 1), value_for(p.beam_area, i - 1),
+                       value_for(p.beam_second_moment, i - 1),
+                       value_for(p.beam_mass_per_length, i - 1)};
+          FibreMember column_fibre, beam_fibre;
+          set_fibre_member(model, p, p.column_section_index, i - 1, true, column_fibre);
+          set_fibre_member(model, p, p.beam_section_index, i - 1, false, beam_fibre);
           for (unsigned int j = 0; j < n_lines; ++j)
             add_member(model, joint[i - 1][j], joint[i][j], p.elements_per_member, column, b,
-                       2 * i - 1, MemberKind::column);
+                       2 * i - 1, MemberKind::column, column_fibre);
           for (unsigned int j = 0; j + 1 < n_lines; ++j)
             add_member(model, joint[i][j], joint[i][j + 1], p.elements_per_member, beam, b,
-                       2 * i, MemberKind::beam);
+                       2 * i, MemberKind::beam, beam_fibre);
 
           Floor floor;
           floor.level         = model.nodes[joint[i][0]].position.y;
@@ -669,6 +705,19 @@ namespace poundfe
     }
   } // namespace
 
+  void
+  set_fibre_rigidities(Model &model)
+  {
+    for (Member &member : model.members)
+      if (member.fibre.fibre())
+        {
+          const auto k0                 = model.section_laws[member.fibre.section]->initial_tangent();
+          member.section.youngs_modulus = 1;
+          member.section.area           = k0(0, 0);
+          member.section.second_moment  = k0(1, 1);
+        }
+  }
+
   Model
   build_model(const ModelParameters &parameters, const ContactParameters &contact,
               const InputFile &input, const SpringParameters &springs,
@@ -680,6 +729,7 @@ namespace poundfe
     model.gravity                = parameters.gravity;
     model.gravity_analysis       = parameters.gravity_analysis;
     model.dimension              = parameters.dimension;
+    add_section_laws(model, parameters, input);
     double left = 0;
     for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
       {
@@ -737,6 +787,7 @@ namespace poundfe
           left = building.right + value_for(parameters.separations, b);
         model.buildings.push_back(std::move(building));
       }
+    set_fibre_rigidities(model);
     if (model.dimension == 3)
       check_plans_apart(model, parameters, input);
     add_contact(model, parameters, contact, input);

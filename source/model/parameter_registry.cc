@@ -229,6 +229,7 @@ namespace poundfe
                   std::shared_ptr<const ModelInputs>              inputs)
   {
     static const std::regex building(R"(^Building ([0-9]+)/(.+)$)");
+    static const std::regex section(R"(^Sections/Section ([0-9]+)/(.+)$)");
     ModelParameter p;
     p.path            = path;
     p.hinges          = std::move(hinges);
@@ -242,6 +243,12 @@ namespace poundfe
       {
         p.building = registered_building_index(path, match[1], model);
         entry      = match[2];
+      }
+    else if (std::regex_match(entry, match, section)) // "Sections/Section k/ENTRY"
+      {
+        const std::optional<unsigned long> k = parse_count(match[1].str(), 1000);
+        p.group = k ? int(*k) - 1 : -1;
+        entry   = "Sections/Section k/" + match[2].str();
       }
     const ParameterRegistry     &registry = parameter_registry();
     const ParameterRegistration *r = registry.find(registry.resolve_alias(entry), of_building);

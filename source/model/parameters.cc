@@ -193,6 +193,7 @@ namespace poundfe
                       "axial forces; a shear building's adds to the P-Delta compression of "
                       "the storeys below it. Unit: N.");
     declare_frame_entries(prm);
+    declare_member_model(prm);
     declare_frame_3d_entries(prm);
     declare_mesh_entries(prm);
     declare_mesh_3d_entries(prm);
@@ -680,7 +681,11 @@ namespace poundfe
         input.fail("Building " + std::to_string(b + 1) + "/Floor loads",
                    "floor loads are for 2D models (Model/Dimension = 2)");
     for (unsigned int b = 0; b < buildings.size(); ++b)
-      buildings[b].finalize(input, b + 1);
+      {
+        buildings[b].finalize(input, b + 1);
+        buildings[b].finalize_member_model(input, "Building " + std::to_string(b + 1) + "/",
+                                           *this);
+      }
     input.positive("Model/Gravity", gravity);
     for (unsigned int b = 0; b < buildings.size(); ++b)
       if (!buildings[b].set_backs_text.empty() &&

@@ -14,9 +14,23 @@
 //   Building b/Group E|G|A|I|Iz|J|mass per length[i]
 //                                      the same of a 3D mesh building (I is Iy)
 // A hinge whose k is f 6 E I / L of its member keeps its f when E or I is set.
+//   Sections/Section k/Concrete strength|Yield stress|Elastic modulus|Cover|Bar diameter
+//                                      the engineering data of Section k (an RC
+//                                      rectangle or circle, or a steel I: its
+//                                      steel alone) that fibre members use: the
+//                                      section is built again from its entries with
+//                                      the value (its fibres and materials, Mander's
+//                                      core), each member clones it when the
+//                                      realization makes its elements (K: the
+//                                      members' virgin tangent changes)
+#include <poundfe/base/exceptions.h>
+#include <poundfe/model/model_builder.h>
 #include <poundfe/model/parameter_registry.h>
+#include <poundfe/sections/fibre_section.h>
 
 #include <deal.II/base/exceptions.h>
+
+#include <algorithm>
 
 namespace poundfe::section_registration
 {
@@ -163,6 +177,14 @@ namespace poundfe::section_registration
             refuse_parameter(p, ": building '" + building.name +
                                   "' is not a generated frame (Type = frame)");
           check_entry();
+          const bool fibre = std::any_of(model.members.begin(), model.members.end(),
+                                         [&](const Member &m) {
+                                           return m.building == p.building && m.fibre.fibre();
+                                         });
+          if (fibre && f.planar != &Section::mass_per_length)
+            refuse_parameter(p, ": building '" + building.name + "' is made of fibre members, "
+                                  "whose rigidities come from their sections (Sections/Section "
+                                  "k/Concrete strength, ...)");
         }
       p.touches = section_touches(f, p.variant == 1);
     }
@@ -194,6 +216,87 @@ namespace poundfe::section_registration
       if (p.variant == 1)
         require_hinge_origins(p, model);
       p.touches = section_touches(f, p.variant == 1);
+    }
+
+    /// An entry of a `Sections` section and the builders that read it.
+    struct MaterialField
+    {
+      const char *name;
+      double (*get)(const SectionEntry &);
+      void (*set)(SectionEntry &, double);
+      bool steel_i; // also read by the steel I builder
+    };
+
+    const std::vector<MaterialField> material_fields = {
+      {"Concrete strength", [](const SectionEntry &s) { return s.concrete.fc; },
+       [](SectionEntry &s, const double v) { s.concrete.fc = v; }, false},
+      {"Yield stress", [](const SectionEntry &s) { return s.steel.fy; },
+       [](SectionEntry &s, const double v) { s.steel.fy = v; }, true},
+      {"Elastic modulus", [](const SectionEntry &s) { return s.steel.E; },
+       [](SectionEntry &s, const double v) { s.steel.E = v; }, true},
+      {"Cover", [](const SectionEntry &s) { return s.cover; },
+       [](SectionEntry &s, const double v) { s.cover = v; }, false},
+      {"Bar diameter", [](const SectionEntry &s) { return s.bar_diameter; },
+       [](SectionEntry &s, const double v) { s.bar_diameter = v; }, false}};
+
+    /// Section p.group of the input exists, is built from engineering data
+    /// that `f` is part of, and fibre members use it.
+    void
+    check_material(const ModelParameter &p, const Model &model, const MaterialField &f)
+    {
+      if (!p.inputs)
+        refuse_parameter(p, ": a section needs the input the model was built from");
+      const auto &sections = p.inputs->model.sections.sections;
+      if (p.group < 0 || p.group >= int(sections.size()))
+        refuse_parameter(p, ": the input has sections 1.." + std::to_string(sections.size()));
+      const SectionEntry &s = sections[p.group];
+      if (s.type == "fibres" || (s.type == "steel I" && !f.steel_i))
+        refuse_parameter(p, ": section '" + s.name + "' (Type = " + s.type + ") has no " +
+                              f.name);
+      if (p.group >= int(model.section_laws.size()) || !model.section_laws[p.group])
+        refuse_parameter(p, ": no fibre member uses section '" + s.name +
+                              "' (Building <i>/Column sections, Beam sections)");
+    }
+
+    /// Section k built again from the working input with the value, and the
+    /// members' rigidities that follow it.
+    void
+    write_material(const ModelParameter &p, const MaterialField &f, const double value,
+                   Model &model, ModelInputs &inputs)
+    {
+      SectionsParameters &sections = inputs.model.sections;
+      f.set(sections.sections[p.group], value);
+      try
+        {
+          model.section_laws[p.group] =
+            std::make_shared<const FibreSection>(sections.section(InputFile(), p.group, 2));
+        }
+      catch (const InputError &e)
+        {
+          refuse_parameter(p, " = " + std::to_string(value) + ": " + e.problem());
+        }
+      set_fibre_rigidities(model);
+    }
+
+    void
+    section_materials(ParameterRegistry &registry)
+    {
+      for (const MaterialField &f : material_fields)
+        {
+          ParameterRegistration r;
+          r.name    = std::string("Sections/Section k/") + f.name;
+          r.family  = "Sections/Section k";
+          r.label   = f.name;
+          r.range   = {0, false, std::numeric_limits<double>::infinity()};
+          r.touches = ModelParameter::stiffness;
+          r.resolve = [f](ModelParameter &p, const Model &model) { check_material(p, model, f); };
+          r.get     = [f](const ModelParameter &p, const Model &) {
+            return f.get(p.inputs->model.sections.sections[p.group]);
+          };
+          r.set = [f](const ModelParameter &p, const double value, Model &model,
+                      ModelInputs &inputs) { write_material(p, f, value, model, inputs); };
+          registry.add(r);
+        }
     }
 
     void
@@ -255,5 +358,6 @@ namespace poundfe
   register_section_parameters(ParameterRegistry &registry)
   {
     section_registration::sections(registry);
+    section_registration::section_materials(registry);
   }
 } // namespace poundfe

@@ -17,7 +17,9 @@ namespace poundfe
       }
     for (const NonlinearElement &e : elements)
       {
-        n_hysteretic_elements += e.kind == ElementKind::hinge || e.kind == ElementKind::storey;
+        // fibre members are made with the hinges, before the gaps
+        n_hysteretic_elements += e.kind == ElementKind::hinge || e.kind == ElementKind::storey ||
+                                 e.kind == ElementKind::member;
         n_gap_elements += e.kind == ElementKind::gap;
       }
   }
@@ -65,8 +67,9 @@ namespace poundfe
         if (e.kind == ElementKind::gap) // its opening is minus its penetration
           smallest_clearance = std::min(smallest_clearance, -e.history_variable());
         // plastic part: the deformation left after elastic unloading
+        // (a fibre member's yields in its sections: no one k0 of its end)
         const double k0 = e.initial_stiffness();
-        if (k0 > 0)
+        if (k0 > 0 && e.kind != ElementKind::member)
           peak_plastic[h] = std::max(peak_plastic[h], std::abs(d - f / k0));
       }
   }

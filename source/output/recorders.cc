@@ -262,7 +262,8 @@ namespace poundfe
       std::vector<std::string> columns;
       for (const unsigned int h : chosen)
         {
-          const bool hinge = elements[h].kind == ElementKind::hinge;
+          const bool hinge = elements[h].kind == ElementKind::hinge ||
+                             elements[h].kind == ElementKind::member; // end moments
           columns.push_back(elements[h].label + (hinge ? "_moment_N_m" : "_force_N"));
           columns.push_back(elements[h].label + (hinge ? "_rotation_rad" : "_drift_m"));
           columns.push_back(elements[h].label + "_z");

@@ -1,5 +1,8 @@
 #include <poundfe/elements/frame_element_3d.h>
+#include <poundfe/elements/member_element.h>
 #include <poundfe/output/storey_forces.h>
+
+#include <deal.II/base/exceptions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +46,10 @@ namespace poundfe
         first.push_back(storeys.size());
         storeys.resize(storeys.size() + building.floors.size());
       }
+    // fibre members' elements come first (assembly/nonlinear_elements.h)
+    int next_member = 0;
+    for (const Member &member : model.members)
+      member_elements.push_back(member.fibre.fibre() ? next_member++ : -1);
     // Frame elements crossing each storey's mid-height cut.
     for (const Member &member : model.members)
       {
@@ -59,7 +66,8 @@ namespace poundfe
                                            model.nodes[member.nodes[1]].position,
                                            member.section);
                 storeys[index(member.building, s)].elements.push_back(
-                  {element_equations(model, member), element.stiffness(), y0 < y1 ? 0u : 1u});
+                  {element_equations(model, member), element.stiffness(), y0 < y1 ? 0u : 1u,
+                   member_elements[&member - model.members.data()]});
               }
           }
       }
@@ -124,7 +132,10 @@ namespace poundfe
   {
     // the hysteretic planes' elements follow the hinges and the storey links;
     // a pair of planes shares one bidirectional element, made at its first
-    int next = model.hinges.size() + std::count_if(model.links.begin(), model.links.end(),
+    // (and the fibre members', first of all)
+    int next = std::count_if(member_elements.begin(), member_elements.end(),
+                             [](const int e) { return e >= 0; });
+    next += model.hinges.size() + std::count_if(model.links.begin(), model.links.end(),
                                                    [](const StoreyLink &l) { return l.hysteretic; });
     std::vector<int> element_of(model.plane_links.size(), -1);
     for (unsigned int l = 0; l < model.plane_links.size(); ++l)
@@ -200,7 +211,8 @@ namespace poundfe
     const Storey &storey = storeys[index];
     double        V      = model.dimension == 3 ? plan_forces(index, u)[0] : 0.0;
     for (const CutElement &e : storey.elements)
-      V -= e.stiffness.row(3 * e.lower).dot(end_displacements(e.equations, u));
+      V -= e.member_element >= 0 ? fibre_member_forces(e.member_element)[3 * e.lower] :
+                                   e.stiffness.row(3 * e.lower).dot(end_displacements(e.equations, u));
     if (storey.link >= 0)
       {
         const StoreyLink &link = model.links[storey.link];
@@ -236,12 +248,22 @@ namespace poundfe
         {
           const FrameElement element(model.nodes[member.nodes[0]].position,
                                      model.nodes[member.nodes[1]].position, member.section);
-          const Vector6 f = element.local_end_forces(member_end_displacements(model, member, u));
+          const int     e = member_elements[&member - model.members.data()];
+          const Vector6 f = e < 0 ? element.local_end_forces(member_end_displacements(model, member, u)) :
+                                    Vector6(element.rotation() * fibre_member_forces(e));
           for (unsigned int end = 0; end < 2; ++end)
             if (member.at_joint[end])
               forces.segment<3>(3 * end) = f.segment<3>(3 * end);
         }
     return forces;
+  }
+
+  Vector6
+  StoreyForces::fibre_member_forces(const int e) const
+  {
+    const auto *member = dynamic_cast<const MemberElement<2> *>(&nonlinear[e]);
+    Assert(member, dealii::ExcMessage("a fibre member's element is a MemberElement"));
+    return member->member().resisting_force();
   }
 } // namespace poundfe
 

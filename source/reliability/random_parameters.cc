@@ -173,7 +173,9 @@ namespace poundfe
                       "inertia); Contact/Coefficient of restitution (the damping fitted "
                       "again); Friction/Stribeck velocity, Belt velocity, Normal force (per "
                       "displacement, per velocity, per velocity cubed), Stick stiffness, "
-                      "Regularization velocity. Geometry (heights, bays, plan, set-backs) is "
+                      "Regularization velocity; Sections/Section k/Concrete strength (Yield "
+                      "stress, Elastic modulus, Cover, Bar diameter: the section built again, "
+                      "its fibre members' K with it). Geometry (heights, bays, plan, set-backs) is "
                       "refused. DISTRIBUTION and keys as Reliability/Random variables. "
                       "Unit: that of the parameter.");
     prm.add_parameter("Correlation", correlation_text,

@@ -324,7 +324,8 @@ namespace poundfe
         for (unsigned int h = 0; h < peaks.n_hysteretic(); ++h)
           {
             const NonlinearElement &e     = state.elements[h];
-            const bool              hinge = e.kind == ElementKind::hinge;
+            const bool              hinge =
+              e.kind == ElementKind::hinge || e.kind == ElementKind::member;
             const auto f = column_of.find(e.label + (hinge ? "_moment_N_m" : "_force_N"));
             const auto d = column_of.find(e.label + (hinge ? "_rotation_rad" : "_drift_m"));
             if (e.building == b && f != column_of.end() && d != column_of.end() &&
@@ -346,7 +347,8 @@ namespace poundfe
       {
         const unsigned int      h     = loops[i].element;
         const NonlinearElement &e     = state.elements[h];
-        const bool              hinge = e.kind == ElementKind::hinge;
+        const bool              hinge =
+              e.kind == ElementKind::hinge || e.kind == ElementKind::member;
         std::ostringstream      title;
         title << std::setprecision(3) << (hinge ? "Hinge " : "Storey ") << e.label << " of "
               << model.buildings[e.building].name << ": peak plastic "

@@ -60,6 +60,9 @@ namespace poundfe
           case ElementKind::link:
             return {"link", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
                     "peak_force_N"};
+          case ElementKind::member: // end I's rotation from the chord, its moment
+            return {"member", "yield_rotation_rad", "peak_rotation_rad",
+                    "peak_plastic_rotation_rad", "peak_moment_N_m"};
           case ElementKind::foundation:
             return {"foundation", "yield_deformation_m", "peak_deformation_m", "peak_plastic_m",
                     "peak_force_N"};

@@ -1,5 +1,5 @@
 // The nonlinear elements of a model, with their equations, in the order
-// Bouc-Wen hinges, Bouc-Wen storeys, Bouc-Wen resisting planes (3D), gaps (in model.gaps order), springs,
+// fibre members (beam-columns of Member model = fibre), Bouc-Wen hinges, Bouc-Wen storeys, Bouc-Wen resisting planes (3D), gaps (in model.gaps order), springs,
 // friction elements.
 #ifndef poundfe_assembly_nonlinear_elements_h
 #define poundfe_assembly_nonlinear_elements_h

@@ -88,6 +88,13 @@ namespace poundfe
     GlobalVector                     committed_force, committed_u;
   };
 
+  /// The beam-column of a fibre member of a 2D frame (Member::fibre):
+  /// force- or displacement-based on clones of its section, between its
+  /// nodes, Linear or PDelta.
+  std::unique_ptr<BeamColumn<2>> make_beam_column(const Model &model, const Member &member);
+  /// Its element on the equations of its nodes' (ux, uy, rz), kind member.
+  std::unique_ptr<MemberElement<2>> make_member_element(const Model &model, const Member &member);
+
   /// The plane member's mass: mass per length m, the frame element's matrix.
   Eigen::Matrix<double, 6, 6> member_mass(const CrdTransformation<2> &transformation,
                                           double mass_per_length, MassMatrixType type);

@@ -42,7 +42,8 @@ namespace poundfe
     spring, // nonlinear elastic spring to the ground (SD, Duffing)
     friction, // dry friction against the ground or a moving belt
     link,     // a damper or connector between floors of two buildings
-    foundation // a compliant foundation's sway or rocking spring and dashpot
+    foundation, // a compliant foundation's sway or rocking spring and dashpot
+    member      // a beam-column on fibre sections (elements/member_element.h)
   };
 
   class NonlinearElement

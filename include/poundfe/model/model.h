@@ -15,9 +15,11 @@
 #include <poundfe/laws/elastic_springs.h>
 #include <poundfe/laws/friction.h>
 #include <poundfe/laws/link_laws.h>
+#include <poundfe/sections/section_law.h>
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -81,6 +83,20 @@ namespace poundfe
     other
   };
 
+  /// How a member of a fibre building (Building <i>/Member model = fibre)
+  /// is made: a beam-column (elements/beam_column.h) on the plane section
+  /// Model::section_laws[section] at each integration point; section < 0:
+  /// the elastic frame element of Member::section.
+  struct FibreMember
+  {
+    int          section     = -1;
+    bool         force_based = true; // else displacement-based
+    unsigned int n_points    = 5;    // Gauss-Lobatto (force), Gauss-Legendre (displacement)
+    bool         p_delta     = false; // PDelta transformation, else Linear
+
+    bool fibre() const { return section >= 0; }
+  };
+
   /// Two-node Euler-Bernoulli beam-column element.
   struct Member
   {
@@ -96,6 +112,9 @@ namespace poundfe
     /// Building and place, e.g. A3_C1.2 (storey 1, column line 2) or
     /// A3_B2.1 (floor 2, bay 1); the pieces of a split member share it.
     std::string                 label;
+    /// A fibre member: `section` then holds the initial rigidities of its
+    /// fibre section (E = 1, A = EA, I = EI) and its mass per length.
+    FibreMember                 fibre;
   };
 
   /// Shear-building storey: a horizontal spring and dashpot between floors.
@@ -471,6 +490,10 @@ namespace poundfe
     ContactLawParameters    contact;
     std::vector<NodalMass>  masses;
     std::vector<Building>   buildings;
+    /// The plane sections of the `Sections` input (in its order) that fibre
+    /// members name (FibreMember::section); null where none does. Shared:
+    /// each member clones its own sections from them.
+    std::vector<std::shared_ptr<const SectionLaw>> section_laws;
     MassMatrixType          mass_matrix = MassMatrixType::lumped;
     GeometricNonlinearity   geometric_nonlinearity = GeometricNonlinearity::none;
     double                  gravity                = 9.81; // m/s^2, for P-Delta

@@ -17,6 +17,10 @@ namespace poundfe
                     const InputFile &input, const SpringParameters &springs = {},
                     const FrictionParameters &friction = {});
 
+  /// Member::section of every fibre member from its section law's initial
+  /// tangent (E = 1, A = EA, I = EI): what reads a member elastically.
+  void set_fibre_rigidities(Model &model);
+
   /// The building (0-based) that the field `token` of `entry` names: its
   /// number, 1-based (a field that is a whole number is always a number),
   /// or its Name (case-sensitive). Throws InputError naming `path`, the

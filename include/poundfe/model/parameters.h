@@ -11,6 +11,7 @@
 #include <poundfe/model/foundation_parameters.h>
 #include <poundfe/model/model.h>
 #include <poundfe/model/plan_parameters.h>
+#include <poundfe/sections/section_parameters.h>
 
 #include <string>
 #include <vector>
@@ -33,6 +34,8 @@ namespace poundfe
   const NameTable<RayleighDamping::Kind> &damping_type_names();
   const NameTable<MassMatrixType>        &mass_matrix_names();
   const NameTable<GeometricNonlinearity> &geometric_nonlinearity_names();
+
+  struct ModelParameters;
 
   struct BuildingParameters
   {
@@ -58,6 +61,18 @@ namespace poundfe
     std::vector<double> floor_loads;
     BaseFixity          base_fixity         = BaseFixity::fixed;
     unsigned int        elements_per_member = 1;
+
+    // Members (model/member_model_parameters.cc): elastic frame elements with
+    // Bouc-Wen hinges, or beam-columns on fibre sections of `Sections`.
+    std::string              member_model       = "elastic-hinges"; // |fibre
+    std::string              member_element     = "force";          // |displacement
+    unsigned int             integration_points = 5;
+    std::string              member_transformation = "auto"; // |Linear|PDelta
+    std::vector<std::string> column_sections, beam_sections; // one or per storey (floor)
+    /// finalize_member_model: the Sections index of each storey's columns
+    /// and beams (fibre buildings; empty otherwise).
+    std::vector<unsigned int> column_section_index, beam_section_index;
+    bool fibre() const { return member_model == "fibre"; }
 
     // 3D frames (Model/Dimension = 3): bays along y, the sections' second
     // axis and twist (Column I, Beam I: bending in the frame's vertical
@@ -149,10 +164,16 @@ namespace poundfe
     /// and read Group orientation. Throws InputError
     /// (model/mesh_building_3d_parameters.cc).
     void finalize_mesh_3d(const InputFile &input, const std::string &section);
+    /// Member model = fibre: the section names found in `sections`, the
+    /// counts, and the entries a fibre building does not use refused
+    /// (model/member_model_parameters.cc). Throws InputError.
+    void finalize_member_model(const InputFile &input, const std::string &section,
+                               const ModelParameters &model);
 
   private:
     // declare()'s groups, in the order print_parameters shows them
     void declare_frame_entries(dealii::ParameterHandler &prm); // [frame]
+    void declare_member_model(dealii::ParameterHandler &prm);  // [frame] members
     void declare_frame_3d_entries(dealii::ParameterHandler &prm); // [3D frame]
     void declare_mesh_entries(dealii::ParameterHandler &prm);  // [mesh]
     void declare_mesh_3d_entries(dealii::ParameterHandler &prm); // [3D mesh]
@@ -185,6 +206,9 @@ namespace poundfe
     GravityAnalysisSettings         gravity_analysis;
     std::vector<double>             separations{0.05};
     std::vector<BuildingParameters> buildings; // one per `Building <i>`
+    /// A copy of the input's `Sections` (InputParameters::finalize sets it
+    /// before finalize()), which fibre buildings name.
+    SectionsParameters              sections;
 
     /// `Model/Number of buildings` alone: it shapes the other declarations.
     static void declare_number_of_buildings(dealii::ParameterHandler &prm,

@@ -68,6 +68,7 @@ namespace poundfe
       std::array<int, 6> equations; // global DOFs of the element; -1: fixed
       Matrix6            stiffness; // global K_e
       unsigned int       lower;     // 0 or 1: the node below the cut
+      int                member_element = -1; // a fibre member's element (its forces)
     };
     /// A 3D member crossing a cut: the global forces (fx, fy, fz, mx, my,
     /// mz) at its lower end are `forces` times its model DOFs' values.
@@ -93,6 +94,11 @@ namespace poundfe
 
     const Model               &model;
     const NonlinearElements    &nonlinear;
+    /// The nonlinear element of each fibre member (model.members order;
+    /// -1: an elastic member, forces K_e u).
+    std::vector<int> member_elements;
+    /// The global end forces of fibre member element `e`, as it is now.
+    Vector6 fibre_member_forces(int e) const;
     std::vector<unsigned int> first;
     std::vector<Storey>       storeys;
   };

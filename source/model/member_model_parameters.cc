@@ -1,0 +1,112 @@
+// The member model of a generated 2D frame (Building <i>/Member model):
+// elastic frame elements with Bouc-Wen hinges at their ends (the default),
+// or beam-columns on fibre sections (elements/beam_column.h: force-based on
+// Gauss-Lobatto points, Spacone, Filippou & Taucer 1996; or displacement-
+// based on Gauss-Legendre points), one section of the `Sections` input per
+// storey for its columns and per floor for its beams. A fibre building's
+// members yield in their fibres: the entries of the elastic-hinges model
+// (hinges, Column/Beam E, A, I) are refused there rather than ignored.
+#include <poundfe/base/numbers.h>
+#include <poundfe/model/parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace poundfe
+{
+  void
+  BuildingParameters::declare_member_model(dealii::ParameterHandler &prm)
+  {
+    namespace Patterns = dealii::Patterns;
+    prm.add_parameter("Member model", member_model,
+                      "[frame] elastic-hinges: elastic frame elements with the Bouc-Wen hinges "
+                      "of Hinges; fibre: beam-columns on the fibre sections of `Sections` "
+                      "named by Column sections and Beam sections (2D frames). Unit: -.",
+                      Patterns::Selection("elastic-hinges|fibre"));
+    prm.add_parameter("Member element", member_element,
+                      "[frame, fibre] force: force-based beam-column (Gauss-Lobatto points, "
+                      "exact for an elastic member); displacement: displacement-based "
+                      "(Gauss-Legendre points, cubic displacements). Unit: -.",
+                      Patterns::Selection("force|displacement"));
+    prm.add_parameter("Integration points", integration_points,
+                      "[frame, fibre] Sections along each element: 2..10 (force), 1..10 "
+                      "(displacement). Unit: count.",
+                      Patterns::Integer(1, 10));
+    prm.add_parameter("Member transformation", member_transformation,
+                      "[frame, fibre] The columns' coordinate transformation: Linear, PDelta "
+                      "(the shear of the axial force on the drifted chord), or auto: PDelta "
+                      "when Model/Gravity analysis/Type = static, else Linear. Beams are "
+                      "always Linear. Unit: -.",
+                      Patterns::Selection("auto|Linear|PDelta"));
+    prm.add_parameter("Column sections", column_sections,
+                      "[frame, fibre] The Name of a section of `Sections` for the columns, "
+                      "one for all or one per storey, bottom up, separated by commas. Unit: -.");
+    prm.add_parameter("Beam sections", beam_sections,
+                      "[frame, fibre] The same for the beams, one for all or one per floor. "
+                      "Unit: -.");
+  }
+
+  namespace
+  {
+    /// The Sections index of each name of `names` (one or `n`), at `path`.
+    std::vector<unsigned int>
+    section_indices(const InputFile &input, const std::string &path,
+                    const std::vector<std::string> &names, const unsigned int n,
+                    const SectionsParameters &sections, const std::string &per)
+    {
+      if (names.empty())
+        input.fail(path, "Member model = fibre needs the name of a section of `Sections` (one "
+                         "for all or " + per + ")");
+      if (names.size() != 1 && names.size() != n)
+        input.fail(path, "has " + std::to_string(names.size()) + " names: give one for all or " +
+                           per + " (" + std::to_string(n) + ")");
+      std::vector<unsigned int> indices;
+      for (const std::string &name : names)
+        indices.push_back(sections.find(input, path, trimmed(name)));
+      return indices;
+    }
+
+    /// An entry of the elastic-hinges model given in a fibre building.
+    void
+    refuse_unused(const InputFile &input, const std::string &path, const std::string &why)
+    {
+      if (input.line_of(path) > 0)
+        input.fail(path, "a fibre building (Member model = fibre) " + why);
+    }
+  } // namespace
+
+  void
+  BuildingParameters::finalize_member_model(const InputFile &input, const std::string &s,
+                                            const ModelParameters &model)
+  {
+    column_section_index.clear();
+    beam_section_index.clear();
+    if (!fibre())
+      return;
+    const std::string path = s + "Member model";
+    if (type != BuildingType::frame)
+      input.fail(path, "fibre members are for generated frames (Type = frame)");
+    if (model.dimension != 2)
+      input.fail(path, "fibre members are for 2D frames (Model/Dimension = 2)");
+    if (!hinge_locations.empty())
+      input.fail(s + "Hinges/Locations", "a fibre building's members yield in their fibres: "
+                                         "hinges are for Member model = elastic-hinges");
+    if (model.geometric_nonlinearity != GeometricNonlinearity::none)
+      input.fail("Model/Geometric nonlinearity",
+                 "fibre members carry P-Delta in their own transformation (Building <i>/"
+                 "Member transformation = PDelta): set none");
+    if (foundation.enabled())
+      input.fail(s + "Foundation/Type", "a fibre building stands on a fixed or pinned base");
+    // the rules' ranges (elements/beam_integration.h; at most 10: OpenSees's)
+    const unsigned int lowest = member_element == "force" ? 2 : 1;
+    if (integration_points < lowest || integration_points > 10)
+      input.fail(s + "Integration points", "must lie in " + std::to_string(lowest) + ".." +
+                                             std::to_string(10) +
+                                             " for Member element = " + member_element);
+    for (const char *entry : {"Column E", "Column A", "Column I", "Beam E", "Beam A", "Beam I"})
+      refuse_unused(input, s + entry, "takes its rigidities from its sections");
+    column_section_index = section_indices(input, s + "Column sections", column_sections,
+                                           n_storeys, model.sections, "one per storey");
+    beam_section_index   = section_indices(input, s + "Beam sections", beam_sections, n_storeys,
+                                           model.sections, "one per floor");
+  }
+} // namespace poundfe

@@ -1,0 +1,189 @@
+#!/usr/bin/env bash
+# Frames of fibre beam-columns (Building <i>/Member model = fibre):
+#   - an elastic-section fibre frame (two Elastic fibres: EA and EI exact)
+#     equals the elastic frame of the same EA, EI (elastic-hinges without
+#     hinges, i.e. rigid ones): the modal periods and the floor histories of a
+#     run to round-off (1e-9 relative);
+#   - gravity gives each column of a two-bay frame of equal columns its
+#     tributary axial force, the floor loads above it over the three columns
+#     (member end forces at t = 0, 1e-6 relative: the gravity tolerance);
+#   - the example input/fibre-frame-pounding.prm: run (energy balance <= 1e-8
+#     of the energy scale while the frames pound), modal after gravity,
+#     pushover, and a Monte Carlo whose random f'c of the column section
+#     changes the peak drift from one realization to the next;
+#   - bad input (expect.sh): an unknown section name, a wrong count of
+#     per-storey names, a fibre building without Sections, hinges in a fibre
+#     building, a random Column E of a fibre building: exit 1, one line naming
+#     file, line and entry, nothing written.
+#   fibre_frames.sh POUNDFE EXAMPLE
+set -u
+poundfe=$1 example=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+. "$(dirname "$0")/expect.sh" 2> /dev/null || . "$OLDPWD/$(dirname "$0")/expect.sh"
+same_csv_source="$(dirname "$0")/helpers.sh"
+[ -f "$same_csv_source" ] || same_csv_source="$OLDPWD/$same_csv_source"
+same_csv() { ( . "$same_csv_source"; same_csv "$@" ); }
+
+# A two-storey one-bay frame; $1: the members' entries, $2: more input.
+frame() {
+  cat <<PRM
+subsection Building 1
+  set Name              = F
+  set Type              = frame
+  set Number of storeys = 2
+  set Number of bays    = ${3:-1}
+  set Storey heights    = 3.0
+  set Bay widths        = 5.0
+  set Floor masses      = 20000
+  set Column mass per length = 400
+$1
+  subsection Damping
+    set Type          = modes
+    set Damping ratio = 0.05
+    set Modes         = 1, 2
+  end
+end
+subsection Ground motion
+  set Type = kanai-tajimi
+  subsection Stochastic
+    set Target PGA = 0.3
+    set Duration   = 3
+    set Seed       = 5
+  end
+end
+subsection Time integration
+  set Time step = 0.005
+end
+subsection Output
+  set Plots = false
+  set Number of modes = 4
+${output_extra:-}
+end
+${2:-}
+PRM
+}
+elastic_section() {
+  cat <<'PRM'
+subsection Sections
+  set Number of sections = 1
+  set Materials = el: Elastic E=3e10
+  subsection Section 1
+    set Name   = two-fibres
+    set Type   = fibres
+    set Fibres = fiber 0.1 0 0.08 el; fiber -0.1 0 0.08 el
+  end
+end
+PRM
+}
+
+# 1. elastic-section fibre frame = elastic frame (EA = 3e10 0.16, EI = 3e10 0.16 0.1^2)
+frame "  set Column E = 3e10
+  set Column A = 0.16
+  set Column I = 1.6e-3
+  set Beam E = 3e10
+  set Beam A = 0.16
+  set Beam I = 1.6e-3" > elastic.prm
+frame "  set Member model = fibre
+  set Column sections = two-fibres
+  set Beam sections = two-fibres" "$(elastic_section)" > fibre.prm
+for f in elastic fibre; do
+  "$poundfe" modal $f.prm --output modal-$f > /dev/null || fail "modal $f: exit $?"
+  "$poundfe" run $f.prm --output run-$f > /dev/null || fail "run $f: exit $?"
+done
+python3 - modal-elastic/summary.json modal-fibre/summary.json <<'PY' || fail "elastic fibre frame: periods differ"
+import json, sys
+a, b = (json.load(open(p))["modes"]["periods_s"] for p in sys.argv[1:3])
+worst = max(abs(x - y) / x for x, y in zip(a, b))
+print(f"periods {a}: largest relative difference {worst:.3g}")
+sys.exit(0 if len(a) == len(b) == 4 and worst <= 1e-9 else 1)
+PY
+for f in floor_displacement drift; do
+  same_csv run-elastic/$f.csv run-fibre/$f.csv 1e-9 || fail "elastic fibre frame: $f.csv differs"
+done
+
+# 2. gravity: each of the three equal columns carries a third of the floors' weight above it
+output_extra="  subsection Recorders
+    set Record = member end forces of F_C1.1, F_C1.2, F_C1.3, F_C2.1, F_C2.2, F_C2.3
+  end" frame "  set Member model = fibre
+  set Column sections = two-fibres
+  set Beam sections = two-fibres
+  set Floor loads = 3e4" "$(elastic_section)
+subsection Model
+  subsection Gravity analysis
+    set Type = static
+  end
+end" 2 | sed '/set Column mass per length = 400/d' > gravity.prm
+"$poundfe" run gravity.prm --output gravity > /dev/null || fail "gravity run: exit $?"
+python3 - gravity/member_forces.csv <<'PY' || fail "gravity: columns not tributary"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+first = rows[0]
+weight = 20000 * 9.81 + 3e4  # per floor
+worst = 0
+for storey, floors_above in ((1, 2), (2, 1)):
+    for line in (1, 2, 3):
+        n = float(first[f"F_C{storey}.{line}_N2_N"])
+        expected = floors_above * weight / 3
+        worst = max(worst, abs(abs(n) - expected) / expected)
+print(f"largest relative difference from the tributary load {worst:.3g}")
+sys.exit(0 if worst <= 1e-6 else 1)
+PY
+
+# 3. the example: run, energy balance, modal, pushover, Monte Carlo with random f'c
+"$poundfe" run "$example" --output run > /dev/null || fail "example run: exit $?"
+python3 - run/summary.json <<'PY' || fail "example: energy balance or pounding"
+import json, sys
+s = json.load(open(sys.argv[1]))
+e = s["energy"]
+error = e["max_relative_balance_error"]
+impacts = sum(g.get("impacts", 0) for g in s.get("gaps", []))
+print(f"energy balance {error:.3g}, impacts {impacts}")
+sys.exit(0 if error <= 1e-8 and impacts > 0 else 1)
+PY
+"$poundfe" modal "$example" --output modal > /dev/null || fail "example modal: exit $?"
+"$poundfe" pushover "$example" --output pushover > /dev/null || fail "example pushover: exit $?"
+sed '/^subsection Monte Carlo/,/^end/d' "$example" > mc.prm
+cat >> mc.prm <<'PRM'
+subsection Monte Carlo
+  set Realizations = 3
+end
+subsection Random parameters
+  set Variables = fc: Sections/Section 1/Concrete strength ~ uniform lower 15e6 upper 45e6
+end
+PRM
+"$poundfe" montecarlo mc.prm --output mc > /dev/null || fail "montecarlo: exit $?"
+python3 - mc/realizations.csv <<'PY' || fail "montecarlo: f'c does not change the peak drift"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+drifts = [float(r["max_drift_ratio"]) for r in rows]
+fc = [float(r["fc"]) for r in rows]
+print("f'c", fc, "peak drifts", drifts)
+sys.exit(0 if len(set(drifts)) == len(drifts) and len(set(fc)) == len(fc) else 1)
+PY
+
+# 4. bad input
+fibre_entries="  set Member model = fibre
+  set Column sections = two-fibres
+  set Beam sections = two-fibres"
+frame "${fibre_entries/two-fibres/colA}" "$(elastic_section)" > unknown.prm
+expect 1 "Column sections': no section named 'colA'" run unknown.prm --output out
+frame "${fibre_entries/= two-fibres/= two-fibres, two-fibres, two-fibres}" "$(elastic_section)" > count.prm
+expect 1 "Column sections': has 3 names" run count.prm --output out
+frame "$fibre_entries" > none.prm
+expect 1 "(Sections: none)" run none.prm --output out
+frame "$fibre_entries
+  subsection Hinges
+    set Locations = column bases
+    set Yield moment = 1e5
+  end" "$(elastic_section)" > hinges.prm
+expect 1 "Hinges/Locations" run hinges.prm --output out
+frame "$fibre_entries
+  set Column E = 3e10" "$(elastic_section)" > unused.prm
+expect 1 "Column E': a fibre building" run unused.prm --output out
+sed '/^subsection Monte Carlo/,/^end/d' "$example" > random-e.prm
+printf 'subsection Random parameters\n  set Variables = e: Building 1/Column E ~ uniform lower 2e10 upper 3e10\nend\n' >> random-e.prm
+expect 1 "is made of fibre members" montecarlo random-e.prm --output out
+[ "$failures" -eq 0 ] || { echo "$failures checks failed"; exit 1; }
+echo "fibre frames: all checks passed"
