@@ -7,6 +7,12 @@
 
 namespace poundfe
 {
+  double
+  element_dissipation(const NonlinearElement &element, const double work, const double supplied)
+  {
+    return element.dissipates() ? work - element.stored_energy() + supplied : 0.0;
+  }
+
   void
   set_element_dissipation(EnergyBalance &balance, const NonlinearElements &elements,
                           const std::vector<double> &work, const std::vector<double> &supplied_work,
@@ -19,7 +25,7 @@ namespace poundfe
         if (!counted.empty() && !counted[h])
           continue;
         const NonlinearElement &e          = elements[h];
-        const double            dissipated = work[h] - e.stored_energy() + supplied_work[h];
+        const double dissipated = element_dissipation(e, work[h], supplied_work[h]);
         switch (e.kind)
           {
             case ElementKind::gap:
