@@ -669,9 +669,8 @@ namespace poundfe
     }
     /// Model/Separations places a building after the one before it: in 3D
     /// a building with Plan/Position is placed by it instead. Given beside
-    /// a Position for every building it places, it has no effect, and the
-    /// file says two things of one gap: refused. With one building it
-    /// separates nothing: a warning.
+    /// a Position for every building it would place, or with one building,
+    /// it has no effect: a warning (the Positions place the buildings).
     void
     check_separations_used(const ModelParameters &parameters, const InputFile &input,
                            std::vector<std::string> &warnings)
@@ -690,11 +689,12 @@ namespace poundfe
       for (std::size_t b = 1; b < n; ++b)
         if (parameters.buildings[b].plan.position.empty())
           return; // placed by its separation
-      input.fail("Model/Separations",
-                 "has no effect: every building after the first has Plan/Position, which "
-                 "places it (e.g. Building 2/Plan/Position, line " +
-                   std::to_string(input.line_of("Building 2/Plan/Position")) +
-                   "); remove Separations or the Positions");
+      warnings.push_back(input.warning(
+        "Model/Separations",
+        "has no effect: every building after the first has Plan/Position, which places it "
+        "(e.g. Building 2/Plan/Position, line " +
+          std::to_string(input.line_of("Building 2/Plan/Position")) +
+          "); remove Separations or the Positions"));
     }
   } // namespace
 

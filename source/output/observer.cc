@@ -36,8 +36,6 @@ namespace poundfe
   double
   ResponseView::dissipated_energy(const unsigned int h) const
   {
-    if (!elements[h].dissipates()) // an elastic law: exactly nothing
-      return 0.0;
     const double stored = stored_energies ? (*stored_energies)[h] : elements[h].stored_energy();
     return integrator.element_work(h) - stored +
            integrator.element_supplied_work(h);

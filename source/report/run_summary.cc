@@ -384,24 +384,28 @@ namespace poundfe
   RunSummary::write_ratio_definitions(JsonWriter &json) const
   {
     // what each ratio of a 3D run's summary is divided by (the plan ratios
-    // are the ones a reader cannot guess)
-    json.begin_object("ratios")
-      .value("participating_mass_ratio_x", "effective modal mass along x / total mass along x")
-      .value("participating_mass_ratio_y", "effective modal mass along y / total mass along y")
-      .value("participating_mass_ratio_rz",
-             "effective modal polar moment about z / total polar moment of the floor masses")
-      .value("peak_drift_ratio", "inter-storey drift of the mass centres along x / storey height")
-      .value("peak_drift_ratio_y", "inter-storey drift of the mass centres along y / storey height")
-      .value("torsional_irregularity",
-             "largest corner drift peak / mean of the largest and smallest corner drift peaks "
-             "of the storey along that axis; null along an axis without drift")
-      .value("torsional_irregularity_at_peak",
-             "largest corner drift / mean of the largest and smallest signed corner drifts, at "
-             "the instant the largest corner drift peaks; null along an axis without drift")
-      .value("ductility", "peak deformation / yield deformation of the element")
-      .value("max_relative_balance_error",
-             "|input - (kinetic + damping + strain + dissipated)| / largest energy term so far")
-      .end_object();
+    // are the ones a reader cannot guess); a list of {"key", "divided_by"},
+    // so that a key of the summary appears once as a key
+    using Ratio = std::pair<const char *, const char *>;
+    json.begin_array("ratios");
+    for (const auto &[key, definition] :
+         {Ratio{"participating_mass_ratio_x", "effective modal mass along x / total mass along x"},
+          Ratio{"participating_mass_ratio_y", "effective modal mass along y / total mass along y"},
+          Ratio{"participating_mass_ratio_rz",
+                "effective modal polar moment about z / total polar moment of the floor masses"},
+          Ratio{"peak_drift_ratio", "inter-storey drift of the mass centres along x / storey height"},
+          Ratio{"peak_drift_ratio_y", "inter-storey drift of the mass centres along y / storey height"},
+          Ratio{"torsional_irregularity_x|y",
+                "largest corner drift peak / mean of the largest and smallest corner drift peaks "
+                "of the storey along that axis; null along an axis without drift"},
+          Ratio{"torsional_irregularity_at_peak_x|y",
+                "largest corner drift / mean of the largest and smallest signed corner drifts, at "
+                "the instant the largest corner drift peaks; null along an axis without drift"},
+          Ratio{"ductility", "peak deformation / yield deformation of the element"},
+          Ratio{"max_relative_balance_error",
+                "|input - (kinetic + damping + strain + dissipated)| / largest energy term so far"}})
+      json.begin_object().value("key", key).value("divided_by", definition).end_object();
+    json.end_array();
   }
 
   void

@@ -57,7 +57,9 @@ for name in ("floor_displacement.csv", "floor_acceleration.csv", "drift.csv", "g
         continue
     largest = max(max(abs(v) for v in x[c]) for c in columns)
     for c in columns:
-        scale = max(abs(v) for v in x[c]) or largest  # a column without motion: against the file's
+        scale = max(abs(v) for v in x[c])
+        if scale < 1e-6 * largest:  # a column without motion (round-off): against the file's
+            scale = largest
         worst = max(worst, agree(f"{name} {swapped(c)} shaken along y against {c} along x",
                                  y[swapped(c)], x[c], scale))
         if along_x(c):

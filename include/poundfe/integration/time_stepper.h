@@ -59,8 +59,8 @@ namespace poundfe
   };
 
   /// What one element dissipated: its work minus its stored energy plus
-  /// what drives it, or exactly zero for an element that cannot dissipate
-  /// (NonlinearElement::dissipates: an undamped contact law).
+  /// what drives it (for an undamped contact law, the quadrature of its
+  /// work over the steps that open or close a gap).
   double element_dissipation(const NonlinearElement &element, double work, double supplied);
 
   /// Sets balance's dissipation terms (hysteretic, contact, friction, links,

@@ -36,9 +36,9 @@ namespace poundfe
     /// this is what the law dissipated.
     virtual double stored_energy() const = 0;
     /// Whether the law can dissipate at all: an elastic law (an undamped
-    /// contact law) cannot, and its dissipated energy is exactly zero (the
-    /// quadrature of its work over a step that opens or closes the contact
-    /// is the integrator's error: it shows in the energy balance error).
+    /// contact law) cannot. The energy balance does not use it yet
+    /// (element_dissipation, integration/time_stepper.h: the quadrature of
+    /// an elastic gap's work would move into the balance error).
     virtual bool dissipates() const { return true; }
     /// Work done on the structure, from the committed to the trial state, by
     /// what drives the law (a moving belt); 0 for passive laws.
