@@ -175,7 +175,8 @@ def check_frames(out, names, expected_members, frames_in_contact):
                     n_joints += 1
                     check(max(abs(d[p][0] - want[0]), abs(d[p][1] - want[1]), abs(r[p][2] - want[2]))
                           <= 1e-12 * largest, f"{name}: joint {p} {d[p]} against its floor's {want}")
-                    own = [u[dof_col[f"{b}_node{node[p]}_{comp}_{unit(comp)}"]] for comp in ("ux", "uy", "rz")]
+                    # the joint's vertical part: phase_portrait.csv names its DOFs uz, rx, ry
+                    own = [u[dof_col[f"{b}_node{node[p]}_{comp}_{unit(comp)}"]] for comp in ("uz", "rx", "ry")]
                     check([d[p][2], r[p][0], r[p][1]] == own,
                           f"{name}: joint {p} (uz, rx, ry) against node {node[p]}'s {own}")
                 f1, f2 = v["data"]["end_forces_start"][c], v["data"]["end_forces_end"][c]
