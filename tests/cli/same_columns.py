@@ -1,7 +1,8 @@
 """same_columns.py A.csv B.csv SIGN TOLERANCE [PATTERN REPLACEMENT]: every
 number of B is SIGN times the number of A in the same row and column (the
 first column, time, as is), to TOLERANCE relative to the column's largest
-finite magnitude; exit 1 otherwise. A NaN in either file fails (it compares
+finite magnitude (a column whose largest is below 1e-9 of the file's: the
+file's); exit 1 otherwise. A NaN in either file fails (it compares
 as nothing: a column of NaN would otherwise pass), an infinity must be the
 same in both. With PATTERN and REPLACEMENT, each column of A is compared
 with B's column named re.sub(PATTERN, REPLACEMENT, its name) (e.g. a 3D
@@ -29,6 +30,10 @@ elif a[0] != b[0] or len(a) != len(b):
     sys.exit("different columns or lengths: %s %s" % (sys.argv[1], sys.argv[2]))
 else:
     column_of = list(range(len(a[0])))
+# a column without motion of its own (a 3D run's y or θz shaken along x:
+# round-off) is measured against the file's largest magnitude
+largest = max([abs(float(r[j])) for r in a[1:] for j in range(1, len(a[0]))
+               if math.isfinite(float(r[j]))] + [0.0])
 worst = 0.0
 for j in range(1, len(a[0])):
     column_a = [float(r[j]) for r in a[1:]]
@@ -37,7 +42,10 @@ for j in range(1, len(a[0])):
         sys.exit("column %s: NaN" % a[0][j])
     if any((math.isinf(x) or math.isinf(y)) and y != sign * x for x, y in zip(column_a, column_b)):
         sys.exit("column %s: an infinity differs" % a[0][j])
-    scale = max([abs(x) for x in column_a if math.isfinite(x)] + [0.0]) or 1.0
+    scale = max([abs(x) for x in column_a if math.isfinite(x)] + [0.0])
+    if scale < 1e-9 * largest:
+        scale = largest
+    scale = scale or 1.0
     worst = max([worst] + [abs(y - sign * x) / scale
                            for x, y in zip(column_a, column_b) if math.isfinite(x)])
 print("largest relative difference %.3g" % worst)
