@@ -30,6 +30,12 @@ namespace poundfe
     throw InputError(file, line_of(path), path, problem);
   }
 
+  std::string
+  InputFile::warning(const std::string &path, const std::string &problem) const
+  {
+    return InputError(file, line_of(path), path, problem).what();
+  }
+
   namespace
   {
     /// A nonzero value below DBL_MIN (~2.2e-308) has lost its precision and

@@ -136,6 +136,70 @@ namespace poundfe
       return 0;
     }
 
+    /// The columns of ground_motion.csv, their values on the first
+    /// component's samples and the figure's titles of the curves.
+    struct Components
+    {
+      std::vector<std::string>         columns{"time"};
+      std::vector<std::vector<double>> values;
+      std::vector<std::string>         titles;
+    };
+
+    double
+    peak_of(const std::vector<double> &a)
+    {
+      double peak = 0;
+      for (const double x : a)
+        peak = std::max(peak, std::abs(x));
+      return peak;
+    }
+
+    /// Every component of the input's motion as a run applies it: in 3D
+    /// a_x and a_y of the pair turned by the incidence angle (the first
+    /// component alone is turned too), a_z with Components = 3; in 2D the
+    /// first component (and a_z), under the names a run's ground_motion.csv
+    /// gives them.
+    Components
+    applied_components(const InputParameters &input, const GroundMotion &first)
+    {
+      const GroundMotionParameters &g  = input.ground_motion;
+      const double                  dt = input.time_integration.newmark.time_step;
+      Components                    c;
+      const std::size_t             n = first.samples().size();
+      if (input.model.dimension == 3)
+        {
+          const GroundMotion second = second_horizontal_motion(first, g, input, dt);
+          const double       angle  = g.incidence_angle * M_PI / 180;
+          c.values.assign(2, std::vector<double>(n));
+          for (std::size_t i = 0; i < n; ++i)
+            {
+              const double t = i * first.time_step(), g1 = first.samples()[i];
+              const double g2 = second.empty() ? 0.0 : second.value(t);
+              c.values[0][i]  = std::cos(angle) * g1 - std::sin(angle) * g2;
+              c.values[1][i]  = std::sin(angle) * g1 + std::cos(angle) * g2;
+            }
+          c.columns.insert(c.columns.end(), {"ground_acceleration_x", "ground_acceleration_y"});
+          c.titles = {"a_x", "a_y"};
+        }
+      else
+        {
+          c.values  = {first.samples()};
+          c.columns.push_back("ground_acceleration");
+          c.titles  = {"a_g"};
+        }
+      if (g.has_vertical())
+        {
+          const GroundMotion  vertical = vertical_motion_of(first, g, input, dt);
+          std::vector<double> z(n);
+          for (std::size_t i = 0; i < n; ++i)
+            z[i] = vertical.value(i * first.time_step());
+          c.values.push_back(z);
+          c.columns.push_back("ground_acceleration_z");
+          c.titles.push_back("a_z");
+        }
+      return c;
+    }
+
     /// The input's ground motion: ground_motion.csv and .png.
     int
     single(const InputParameters &input, const std::string &directory, std::ostream &out)
@@ -145,25 +209,36 @@ namespace poundfe
       if (motion.empty())
         throw InputError(input.file, input.line_of("Ground motion/Type"), "Ground motion/Type",
                          "there is no ground motion to write (type none)");
+      const Components components = applied_components(input, motion);
       prepare_output_directory(directory);
       {
-        CsvWriter csv(directory + "/ground_motion.csv", {"time", "ground_acceleration"});
+        CsvWriter csv(directory + "/ground_motion.csv", components.columns);
         for (std::size_t i = 0; i < motion.samples().size(); ++i)
           {
             csv.begin_row(i * motion.time_step());
-            csv.add(motion.samples()[i]);
+            for (const std::vector<double> &a : components.values)
+              csv.add(a[i]);
             csv.end_row();
           }
         csv.commit();
       }
       if (input.output.plots)
-        draw_plots(directory, {Plot{"ground_motion.png", motion.description(), "time (s)",
-                                    "ground acceleration (m/s^2)",
-                                    {{"ground_motion.csv", "1:2", "a_g", "lines"}}}});
+        {
+          Plot plot{"ground_motion.png", motion.description(), "time (s)",
+                    "ground acceleration (m/s^2)", {}};
+          for (std::size_t c = 0; c < components.values.size(); ++c)
+            plot.series.push_back({"ground_motion.csv", "1:" + std::to_string(c + 2),
+                                   components.titles[c], "lines"});
+          draw_plots(directory, {plot});
+        }
       out << motion.description() << ": " << motion.samples().size() << " samples, dt = "
           << motion.time_step() << " s, PGA = " << motion.peak() << " m/s^2 ("
-          << motion.peak() / standard_gravity << " g)\n"
-          << "written to " << directory << "/ground_motion.csv\n";
+          << motion.peak() / standard_gravity << " g)\n";
+      if (components.values.size() > 1) // each component as a run applies it
+        for (std::size_t c = 0; c < components.values.size(); ++c)
+          out << "  " << components.titles[c] << ": peak " << peak_of(components.values[c])
+              << " m/s^2\n";
+      out << "written to " << directory << "/ground_motion.csv\n";
       return 0;
     }
   } // namespace

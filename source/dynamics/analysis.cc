@@ -382,7 +382,9 @@ namespace poundfe
                                   n_model_modes, "the model");
       if (model.dimension == 3)
         add_plan_participations(analysis);
-      analysis.warnings = damping_warnings(analysis, input);
+      analysis.warnings = analysis.model.warnings; // the builder's, then the damping's
+      for (std::string &warning : damping_warnings(analysis, input))
+        analysis.warnings.push_back(std::move(warning));
       return analysis;
     }
   } // namespace

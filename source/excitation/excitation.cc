@@ -73,6 +73,22 @@ namespace poundfe
     return {{cos_angle * g1 - sin_angle * g2, sin_angle * g1 + cos_angle * g2}};
   }
 
+  std::array<double, 2>
+  Excitation::applied_horizontal_peaks() const
+  {
+    std::array<double, 2> peaks{{0, 0}};
+    // every sample of either component (a rotated pair peaks at one of them)
+    for (const GroundMotion *motion : {&ground, &second})
+      if (!motion->empty())
+        for (double t = 0, n = 0; t <= motion->duration() * (1 + 1e-12); t = ++n * motion->time_step())
+          {
+            const std::array<double, 2> a = horizontal_acceleration(t);
+            for (unsigned int d = 0; d < 2; ++d)
+              peaks[d] = std::max(peaks[d], std::abs(a[d]));
+          }
+    return peaks;
+  }
+
   void
   Excitation::set_vertical(const LinearSystem &system, GroundMotion vertical_component)
   {
@@ -232,38 +248,36 @@ namespace poundfe
                                                       "Model/Dimension = 3");
         return;
       }
-    GroundMotion second; // none: the first component alone, rotated
-    if (g.n_components >= 2)
-      {
-        if (g.type == GroundMotionType::record && g.second_record_file.empty())
-          // Components = 3 in 3D: x, y and z (Components = 2 is checked with the section)
-          throw InputError(input.file, input.line_of("Ground motion/Components"),
-                           "Ground motion/Record/Second file",
-                           "Components = 3 with a record in 3D needs a second (y) file "
-                           "besides the third (vertical) one");
-        second = make_ground_motion(g.second_component(), input, time_step,
-                                    "Ground motion/Record/Second file");
-        if (g.is_stochastic())
-          correlate_second_component(excitation.ground_motion().samples(),
-                                     second.samples_for_update(), g.intensity_ratio,
-                                     g.correlation);
-      }
-    excitation.set_horizontal_pair(system, std::move(second), g.incidence_angle * M_PI / 180);
+    excitation.set_horizontal_pair(system,
+                                   second_horizontal_motion(excitation.ground_motion(), g, input,
+                                                            time_step),
+                                   g.incidence_angle * M_PI / 180);
   }
 
-  void
-  add_vertical_component(Excitation &excitation, const LinearSystem &system, const Model &model,
-                         const GroundMotionParameters &g, const InputFile &input,
-                         const double time_step)
+  GroundMotion
+  second_horizontal_motion(const GroundMotion &first, const GroundMotionParameters &g,
+                           const InputFile &input, const double time_step)
   {
-    if (!g.has_vertical())
-      return;
-    for (const Building &building : model.buildings)
-      if (building.type == BuildingType::shear)
-        input.fail("Ground motion/Components",
-                   "Components = 3 shakes the model vertically, but building '" + building.name +
-                     "' is a shear building (stick model): it has no vertical DOF; use frames "
-                     "or Components = " + (model.dimension == 3 ? "2" : "1"));
+    if (g.n_components < 2)
+      return {}; // none: the first component alone, rotated
+    if (g.type == GroundMotionType::record && g.second_record_file.empty())
+      // Components = 3 in 3D: x, y and z (Components = 2 is checked with the section)
+      throw InputError(input.file, input.line_of("Ground motion/Components"),
+                       "Ground motion/Record/Second file",
+                       "Components = 3 with a record in 3D needs a second (y) file "
+                       "besides the third (vertical) one");
+    GroundMotion second = make_ground_motion(g.second_component(), input, time_step,
+                                             "Ground motion/Record/Second file");
+    if (g.is_stochastic())
+      correlate_second_component(first.samples(), second.samples_for_update(), g.intensity_ratio,
+                                 g.correlation);
+    return second;
+  }
+
+  GroundMotion
+  vertical_motion_of(const GroundMotion &first, const GroundMotionParameters &g,
+                     const InputFile &input, const double time_step)
+  {
     GroundMotionParameters component = g.vertical_component();
     if (g.type == GroundMotionType::record && g.record_target_pga > 0)
       {
@@ -279,9 +293,26 @@ namespace poundfe
     GroundMotion vertical =
       make_ground_motion(component, input, time_step, "Ground motion/Record/Third file");
     if (g.is_stochastic()) // an independent sample, sigma_z = ratio sigma_x
-      correlate_second_component(excitation.ground_motion().samples(),
-                                 vertical.samples_for_update(), g.vertical_ratio, 0);
-    excitation.set_vertical(system, std::move(vertical));
+      correlate_second_component(first.samples(), vertical.samples_for_update(),
+                                 g.vertical_ratio, 0);
+    return vertical;
+  }
+
+  void
+  add_vertical_component(Excitation &excitation, const LinearSystem &system, const Model &model,
+                         const GroundMotionParameters &g, const InputFile &input,
+                         const double time_step)
+  {
+    if (!g.has_vertical())
+      return;
+    for (const Building &building : model.buildings)
+      if (building.type == BuildingType::shear)
+        input.fail("Ground motion/Components",
+                   "Components = 3 shakes the model vertically, but building '" + building.name +
+                     "' is a shear building (stick model): it has no vertical DOF; use frames "
+                     "or Components = " + (model.dimension == 3 ? "2" : "1"));
+    excitation.set_vertical(system,
+                            vertical_motion_of(excitation.ground_motion(), g, input, time_step));
   }
 
   NodeDof

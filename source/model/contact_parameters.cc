@@ -4,6 +4,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <tuple>
+
 namespace poundfe
 {
   namespace Patterns = dealii::Patterns;
@@ -103,6 +105,39 @@ namespace poundfe
     input.non_negative("Contact/Damping", damping);
     input.non_negative("Contact/Effective mass", effective_mass);
     input.positive("Contact/Calibration velocity", calibration_velocity);
+  }
+
+  std::vector<std::string>
+  ContactParameters::entries_without_effect(const InputFile &input) const
+  {
+    const bool none   = law == "none";
+    const bool damped = !none && contact_law_is_damped(law);
+    const bool given  = damping_from == ContactDampingFrom::given;
+    const bool formula = damping_from == ContactDampingFrom::formula;
+    const std::string law_is = "Contact/Law = " + law;
+    // an entry, whether it has no effect, and why
+    const std::vector<std::tuple<const char *, bool, std::string>> entries{
+      {"Stiffness", none, law_is + " makes no gap element"},
+      {"Damping from", none || !damped, law_is + (none ? " makes no gap element" : " has no damping")},
+      {"Damping", none || !damped || !given,
+       none ? law_is + " makes no gap element" :
+       !damped ? law_is + " has no damping" :
+                 "Damping from = " + contact_damping_from_names().name(damping_from) +
+                   " derives the damping from the Coefficient of restitution"},
+      {"Coefficient of restitution", none || !damped || given,
+       none ? law_is + " makes no gap element" :
+       !damped ? law_is + " has no damping: its impacts are elastic" :
+                 std::string("Damping from = given uses Damping")},
+      {"Hertz-damp formula", law != "hertz-damp" || !formula,
+       law != "hertz-damp" ? law_is + ": the formula is Hertz-damp's" :
+                             std::string("only Damping from = formula uses it")},
+      {"Calibration velocity", none || !damped || damping_from != ContactDampingFrom::calibrated,
+       "only Damping from = calibrated (a damped law) uses it"}};
+    std::vector<std::string> warnings;
+    for (const auto &[entry, without_effect, why] : entries)
+      if (without_effect && input.line_of("Contact/" + std::string(entry)) > 0)
+        warnings.push_back(input.warning("Contact/" + std::string(entry), "has no effect: " + why));
+    return warnings;
   }
 
   double

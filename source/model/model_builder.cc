@@ -703,6 +703,35 @@ namespace poundfe
                              "origin near the buildings");
         }
     }
+    /// Model/Separations places a building after the one before it: in 3D
+    /// a building with Plan/Position is placed by it instead. Given beside
+    /// a Position for every building it would place, or with one building,
+    /// it has no effect: a warning (the Positions place the buildings).
+    void
+    check_separations_used(const ModelParameters &parameters, const InputFile &input,
+                           std::vector<std::string> &warnings)
+    {
+      if (input.line_of("Model/Separations") == 0)
+        return; // not given (or a JSON file: no line index)
+      const std::size_t n = parameters.buildings.size();
+      if (n < 2)
+        {
+          warnings.push_back(input.warning("Model/Separations",
+                                           "has no effect: the model has one building"));
+          return;
+        }
+      if (parameters.dimension != 3)
+        return;
+      for (std::size_t b = 1; b < n; ++b)
+        if (parameters.buildings[b].plan.position.empty())
+          return; // placed by its separation
+      warnings.push_back(input.warning(
+        "Model/Separations",
+        "has no effect: every building after the first has Plan/Position, which places it "
+        "(e.g. Building 2/Plan/Position, line " +
+          std::to_string(input.line_of("Building 2/Plan/Position")) +
+          "); remove Separations or the Positions"));
+    }
   } // namespace
 
   void
@@ -790,7 +819,14 @@ namespace poundfe
     set_fibre_rigidities(model);
     if (model.dimension == 3)
       check_plans_apart(model, parameters, input);
+    model.warnings = contact.entries_without_effect(input);
+    check_separations_used(parameters, input, model.warnings);
     add_contact(model, parameters, contact, input);
+    if (contact.law != "none" && model.gaps.empty()) // nothing the law could act on
+      model.warnings.push_back(input.warning(
+        "Contact/Law", "has no effect: no gap element was made (no slabs of two buildings face "
+                       "each other at a common level, and no barrier is given): the run has no "
+                       "contact"));
     check_gaps_resolved(model, parameters, input);
     model.number_equations();
     add_springs(model, springs, input);

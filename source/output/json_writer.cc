@@ -145,6 +145,17 @@ namespace poundfe
   }
 
   JsonWriter &
+  JsonWriter::value(const std::string &key, const std::vector<std::optional<double>> &x)
+  {
+    prefix(key);
+    text += "[";
+    for (std::size_t i = 0; i < x.size(); ++i)
+      text += (i ? ", " : "") + (x[i] ? number(*x[i], key) : std::string("null"));
+    text += "]";
+    return *this;
+  }
+
+  JsonWriter &
   JsonWriter::value(const std::string &key, const std::vector<std::string> &x)
   {
     prefix(key);

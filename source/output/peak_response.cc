@@ -12,7 +12,8 @@ namespace poundfe
   {
     if (model.dimension == 3)
       {
-        floor_response_y = std::make_unique<FloorResponse>(model, Component::uy);
+        floor_response_y  = std::make_unique<FloorResponse>(model, Component::uy);
+        floor_response_rz = std::make_unique<FloorResponse>(model, Component::rz);
         plan_response    = std::make_unique<PlanResponse>(model);
       }
     for (const NonlinearElement &e : elements)
@@ -31,6 +32,7 @@ namespace poundfe
     if (plan_response)
       {
         floor_response_y->reset();
+        floor_response_rz->reset();
         plan_response->reset();
       }
     for (auto *v : {&peak_d, &peak_d_at, &peak_f, &peak_plastic})
@@ -49,6 +51,8 @@ namespace poundfe
       {
         floor_response_y->evaluate(t, state.displacement(), state.velocity(),
                                    state.acceleration(), state.ground_acceleration_y());
+        floor_response_rz->evaluate(t, state.displacement(), state.velocity(),
+                                    state.acceleration(), 0.0); // the ground does not turn
         plan_response->observe_step(state);
       }
     for (unsigned int h = 0; h < elements.size(); ++h)
@@ -159,6 +163,7 @@ namespace poundfe
     if (plan_response)
       {
         floor_response_y->merge(ranks);
+        floor_response_rz->merge(ranks);
         plan_response->merge(ranks);
       }
     for (std::vector<double> *x : {&peak_d, &peak_d_at, &peak_f, &peak_plastic})

@@ -71,6 +71,7 @@ namespace poundfe
             s.corner_acceleration_x.assign(floor.outline.size(), 0);
             s.corner_acceleration_y.assign(floor.outline.size(), 0);
             corner_acceleration.resize(corner_acceleration.size() + 2 * floor.outline.size(), 0);
+            corner_drift.resize(corner_drift.size() + 2 * floor.outline.size(), 0);
             b.storeys.push_back(s);
           }
         peaks.push_back(b);
@@ -93,14 +94,15 @@ namespace poundfe
             std::fill(s.corner_acceleration_y.begin(), s.corner_acceleration_y.end(), 0.0);
             s.irregularity_ratio = s.ratio_at_peak = {{1, 1}};
             s.peak_drift         = {{0, 0}};
+            s.resultant_displacement = 0;
           }
         b.base_shear_x = b.base_shear_y = b.base_torque = 0;
       }
     forces.reset();
   }
 
-  void
-  PlanResponse::storey_drifts(const Vector &u, const unsigned int b)
+  unsigned int
+  PlanResponse::storey_drifts(const Vector &u, const unsigned int b, unsigned int at)
   {
     const Building        &building = model.buildings[b];
     std::array<double, 3>  below{{0, 0, 0}};
@@ -111,6 +113,7 @@ namespace poundfe
         const Point2 &centre = building.plan[i].mass_centre;
         Storey       &s      = peaks[b].storeys[i];
         keep_peak(s.rotation, q[2]);
+        keep_peak(s.resultant_displacement, std::hypot(q[0], q[1]));
         const std::vector<Point2> &corners = building.plan[i].outline;
         std::array<std::vector<double>, 2> drift{{std::vector<double>(corners.size()),
                                                  std::vector<double>(corners.size())}};
@@ -123,6 +126,8 @@ namespace poundfe
                           (below[1] + below[2] * (x.x - below_centre.x));
             keep_peak(s.corner_drift_x[k], drift[0][k]);
             keep_peak(s.corner_drift_y[k], drift[1][k]);
+            corner_drift[at++] = drift[0][k] / building.floors[i].storey_height;
+            corner_drift[at++] = drift[1][k] / building.floors[i].storey_height;
           }
         s.irregularity_ratio = {{irregularity(s.corner_drift_x), irregularity(s.corner_drift_y)}};
         for (unsigned int d = 0; d < 2; ++d)
@@ -130,6 +135,19 @@ namespace poundfe
         below        = q;
         below_centre = centre;
       }
+    return at;
+  }
+
+  std::optional<double>
+  PlanResponse::Storey::irregularity(const unsigned int d, const bool at_peak) const
+  {
+    const std::vector<double> *drifts[] = {&corner_drift_x, &corner_drift_y};
+    double largest[2];
+    for (unsigned int i = 0; i < 2; ++i)
+      largest[i] = drifts[i]->empty() ? 0.0 : *std::max_element(drifts[i]->begin(), drifts[i]->end());
+    if (!(largest[d] > relative_drift_floor * std::max(largest[0], largest[1])))
+      return std::nullopt;
+    return at_peak ? ratio_at_peak[d] : irregularity_ratio[d];
   }
 
   unsigned int
@@ -159,15 +177,28 @@ namespace poundfe
   std::vector<std::string>
   PlanResponse::corner_acceleration_names() const
   {
+    return corner_names("_floor", "_acc_", "_m_s2");
+  }
+
+  std::vector<std::string>
+  PlanResponse::corner_drift_names() const
+  {
+    return corner_names("_storey", "_drift_ratio_", "");
+  }
+
+  std::vector<std::string>
+  PlanResponse::corner_names(const std::string &level, const std::string &what,
+                             const std::string &unit) const
+  {
     std::vector<std::string> names;
     for (unsigned int b = 0; b < peaks.size(); ++b)
       for (unsigned int i = 0; i < peaks[b].storeys.size(); ++i)
         for (unsigned int k = 0; k < peaks[b].storeys[i].corner_acceleration_x.size(); ++k)
           {
-            const std::string stem = model.buildings[b].name + "_floor" + std::to_string(i + 1) +
-                                     "_corner" + std::to_string(k + 1) + "_acc_";
-            names.push_back(stem + "x_m_s2");
-            names.push_back(stem + "y_m_s2");
+            const std::string stem = model.buildings[b].name + level + std::to_string(i + 1) +
+                                     "_corner" + std::to_string(k + 1) + what;
+            names.push_back(stem + "x" + unit);
+            names.push_back(stem + "y" + unit);
           }
     return names;
   }
@@ -175,11 +206,11 @@ namespace poundfe
   void
   PlanResponse::observe_step(const ResponseView &state)
   {
-    unsigned int at = 0;
+    unsigned int at = 0, at_drift = 0;
     for (unsigned int b = 0; b < peaks.size(); ++b)
       {
-        storey_drifts(state.displacement(), b);
-        at = corner_accelerations(state, b, at);
+        at_drift = storey_drifts(state.displacement(), b, at_drift);
+        at       = corner_accelerations(state, b, at);
       }
     if (peaks.empty())
       return;
@@ -198,18 +229,20 @@ namespace poundfe
   write_plan_response(JsonWriter &json, const PlanResponse &plan, const unsigned int b)
   {
     const PlanResponse::BuildingPeaks &peaks = plan.buildings()[b];
-    std::vector<double> rotation, ratio_x, ratio_y, instant_x, instant_y, corner_x, corner_y;
+    std::vector<double> rotation, corner_x, corner_y, resultant;
+    std::vector<std::optional<double>> ratio_x, ratio_y, instant_x, instant_y;
     for (const PlanResponse::Storey &s : peaks.storeys)
       {
+        resultant.push_back(s.resultant_displacement);
         corner_x.push_back(*std::max_element(s.corner_acceleration_x.begin(),
                                              s.corner_acceleration_x.end()));
         corner_y.push_back(*std::max_element(s.corner_acceleration_y.begin(),
                                              s.corner_acceleration_y.end()));
         rotation.push_back(s.rotation);
-        ratio_x.push_back(s.irregularity_ratio[0]);
-        ratio_y.push_back(s.irregularity_ratio[1]);
-        instant_x.push_back(s.ratio_at_peak[0]);
-        instant_y.push_back(s.ratio_at_peak[1]);
+        ratio_x.push_back(s.irregularity(0, false));
+        ratio_y.push_back(s.irregularity(1, false));
+        instant_x.push_back(s.irregularity(0, true));
+        instant_y.push_back(s.irregularity(1, true));
       }
     json.begin_object("plan")
       .value("peak_floor_rotation_rad", rotation)
@@ -219,6 +252,7 @@ namespace poundfe
       .value("torsional_irregularity_at_peak_y", instant_y)
       .value("peak_corner_acceleration_x_m_s2", corner_x)
       .value("peak_corner_acceleration_y_m_s2", corner_y)
+      .value("peak_floor_displacement_resultant_m", resultant)
       .value("peak_base_shear_x_N", peaks.base_shear_x)
       .value("peak_base_shear_y_N", peaks.base_shear_y)
       .value("peak_base_torque_N_m", peaks.base_torque)
@@ -236,6 +270,7 @@ namespace poundfe
         for (Storey &s : p.storeys)
           {
             f(b, s.rotation);
+            f(b, s.resultant_displacement);
             for (std::vector<double> *x : {&s.corner_drift_x, &s.corner_drift_y,
                                            &s.corner_acceleration_x, &s.corner_acceleration_y})
               for (double &y : *x)
@@ -244,7 +279,10 @@ namespace poundfe
               for (double &y : *x)
                 f(b, y);
             for (unsigned int k = 0; k < 2 * s.corner_acceleration_x.size(); ++k)
-              f(b, corner_acceleration[at++]);
+              {
+                f(b, corner_drift[at]);
+                f(b, corner_acceleration[at++]);
+              }
           }
         for (double *x : {&p.base_shear_x, &p.base_shear_y, &p.base_torque})
           f(b, *x);

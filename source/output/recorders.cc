@@ -12,6 +12,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -196,8 +197,8 @@ namespace poundfe
               }
           if (!forces->has_member(label))
             throw InputError(input_file, line, "Output/Recorders/Record",
-                             "no member is labelled '" + label +
-                               "' (members are named like A3_C1.2: building, C<storey>.<column line> "
+                             "'member end forces of " + label + "': no member is labelled so "
+                               "(members are named like A3_C1.2: building, C<storey>.<column line> "
                                "or B<floor>.<bay>)");
           for (const char *c : {"_N1_N", "_V1_N", "_M1_N_m", "_N2_N", "_V2_N", "_M2_N_m"})
             columns.push_back(label + c);
@@ -219,14 +220,15 @@ namespace poundfe
     /// The elements in [first, end) that `labels` name: all without labels;
     /// else each label an element's own, or a building's name for all of
     /// that building's (a gap: either side's). InputError for a label that
-    /// is neither (`what`, e.g. "hinge or Bouc-Wen storey", and `example`
-    /// say what was expected).
+    /// is neither, naming the quantity asked for (`quantity`, e.g. "hinge
+    /// states"; `what`, e.g. "hinge or Bouc-Wen storey", and `example` say
+    /// what was expected).
     std::vector<unsigned int>
     elements_named(const std::vector<std::string> &labels, const Model &model,
                    const NonlinearElements &elements, const unsigned int first,
                    const unsigned int end, const std::function<bool(unsigned int, unsigned int)> &in_building,
-                   const std::string &what, const std::string &example,
-                   const std::string &input_file, const int line)
+                   const std::string &quantity, const std::string &what,
+                   const std::string &example, const std::string &input_file, const int line)
     {
       std::vector<unsigned int> chosen;
       if (labels.empty())
@@ -245,7 +247,8 @@ namespace poundfe
               chosen.push_back(h);
           if (chosen.size() == n_before)
             throw InputError(input_file, line, "Output/Recorders/Record",
-                             "no " + what + " is labelled '" + label + "' and no building is " +
+                             "'" + quantity + " of " + label + "': no " + what +
+                               " is labelled so and no building is " +
                                "named so (labels are like " + example +
                                "; a building's name records all of its)");
         }
@@ -317,8 +320,10 @@ namespace poundfe
       std::vector<std::string> columns;
       for (const std::string &label : equation_labels(state.model))
         {
-          columns.push_back(label + "_m");
-          columns.push_back(label + "_velocity_m_s");
+          // a rotation's unit is rad (the label ends in its component)
+          const bool turn = is_rotation(label.substr(label.find('_', label.find("_node")+1) + 1));
+          columns.push_back(label + (turn ? "_rad" : "_m"));
+          columns.push_back(label + (turn ? "_velocity_rad_s" : "_velocity_m_s"));
         }
       const NonlinearElements  &elements = state.elements;
       std::vector<unsigned int> friction;
@@ -347,6 +352,102 @@ namespace poundfe
               owners};
     }
 
+    /// A 3D model's floor quantity `value` of each floor (or storey), along
+    /// x, along y and about z in turn, each column named with its direction
+    /// (`suffixes`); `scale_z` multiplies the θz column of floor i (the
+    /// storey height for a twist out of FloorResponse's drift ratio).
+    Series
+    plan_floor_series(const PeakResponse &peaks, const std::string &what,
+                      const std::array<std::string, 3> &suffixes,
+                      const std::vector<double> &(FloorResponse::*value)() const,
+                      const std::vector<double> &scale_z)
+    {
+      const std::array<const FloorResponse *, 3> floors{
+        {&peaks.floors(), peaks.floors_y(), peaks.floors_rz()}};
+      std::array<std::vector<std::string>, 3> names;
+      for (unsigned int d = 0; d < 3; ++d)
+        names[d] = floors[d]->column_names(what, suffixes[d]);
+      const unsigned int       n = floors[0]->n_floors();
+      std::vector<std::string> columns;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int d = 0; d < 3; ++d)
+          columns.push_back(names[d][i]);
+      return {columns,
+              [floors, value, scale_z, n](const ResponseView &, std::vector<double> &to) {
+                to.resize(3 * n);
+                for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    to[3 * i + d] = (floors[d]->*value)()[i] * (d == 2 ? scale_z[i] : 1.0);
+              },
+              owners_of(Owner::floor, first_integers(n), 3)};
+    }
+
+    /// A 3D model's floor displacement, velocity, acceleration or drift:
+    /// x, y and θz of every floor (the drift: the mass centres' drift ratios
+    /// along x and y and the storey's twist θz,i - θz,i-1 in rad), then for
+    /// the drift the drift ratios of every slab corner (plan_response.h).
+    Series
+    plan_series(const RecordedQuantity quantity, const Model &model, const PeakResponse &peaks)
+    {
+      const std::vector<double> one(peaks.floors().n_floors(), 1.0);
+      switch (quantity)
+        {
+          case RecordedQuantity::floor_displacement:
+            return plan_floor_series(peaks, "floor", {{"disp_x_m", "disp_y_m", "rot_z_rad"}},
+                                     &FloorResponse::displacement, one);
+          case RecordedQuantity::floor_velocity:
+            return plan_floor_series(peaks, "floor", {{"vel_x_m_s", "vel_y_m_s", "vel_rz_rad_s"}},
+                                     &FloorResponse::velocity, one);
+          case RecordedQuantity::floor_acceleration:
+            return plan_floor_series(peaks, "floor",
+                                     {{"acc_x_m_s2", "acc_y_m_s2", "acc_rz_rad_s2"}},
+                                     &FloorResponse::absolute_acceleration, one);
+          default:
+            break;
+        }
+      Assert(quantity == RecordedQuantity::drift_ratio, dealii::ExcNotImplemented());
+      std::vector<double> heights;
+      for (const Building &building : model.buildings)
+        for (const Floor &floor : building.floors)
+          heights.push_back(floor.storey_height);
+      Series centre = plan_floor_series(peaks, "storey",
+                                        {{"drift_ratio_x", "drift_ratio_y", "twist_rad"}},
+                                        &FloorResponse::drift_ratio, heights);
+      const PlanResponse *plan = peaks.plan();
+      for (const std::string &name : plan->corner_drift_names())
+        centre.columns.push_back(name);
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        for (const PlanFloor &floor : model.buildings[b].plan)
+          centre.owners.insert(centre.owners.end(), 2 * floor.outline.size(),
+                               ColumnOwner{Owner::building, b});
+      const unsigned int n_centre = 3 * peaks.floors().n_floors();
+      return {centre.columns,
+              [row = centre.row, plan, n_centre](const ResponseView &s, std::vector<double> &to) {
+                row(s, to);
+                const std::vector<double> &corners = plan->corner_drift_ratios();
+                to.resize(n_centre);
+                to.insert(to.end(), corners.begin(), corners.end());
+              },
+              centre.owners};
+    }
+
+    /// A 3D model's ground motion: a_x and a_y as applied (the components
+    /// turned by the incidence angle), and a_z with a vertical component.
+    Series
+    ground_motion_3d_series(const bool vertical)
+    {
+      std::vector<std::string> columns{"ground_acceleration_x_m_s2", "ground_acceleration_y_m_s2"};
+      if (vertical)
+        columns.push_back("ground_acceleration_z_m_s2");
+      return {columns,
+              [vertical](const ResponseView &s, std::vector<double> &to) {
+                to = {s.ground_acceleration(), s.ground_acceleration_y()};
+                if (vertical)
+                  to.push_back(s.ground_acceleration_z());
+              },
+              {}};
+    }
+
     /// The columns and the row function of one recorded quantity (the
     /// owners of its columns: series_of).
     Series
@@ -360,15 +461,24 @@ namespace poundfe
       auto copy = [](const std::vector<double> &from) {
         return [&from](const ResponseView &, std::vector<double> &to) { to = from; };
       };
+      const bool plan = peaks.plan() != nullptr; // a 3D model: x, y and θz
       switch (request.quantity)
         {
           case RecordedQuantity::floor_displacement:
+            if (plan)
+              return plan_series(request.quantity, state.model, peaks);
             return {floors.column_names("floor", "disp_m"), copy(floors.displacement()), {}};
           case RecordedQuantity::floor_velocity:
+            if (plan)
+              return plan_series(request.quantity, state.model, peaks);
             return {floors.column_names("floor", "vel_m_s"), copy(floors.velocity()), {}};
           case RecordedQuantity::floor_acceleration:
+            if (plan)
+              return plan_series(request.quantity, state.model, peaks);
             return {floors.column_names("floor", "acc_m_s2"), copy(floors.absolute_acceleration()), {}};
           case RecordedQuantity::drift_ratio:
+            if (plan)
+              return plan_series(request.quantity, state.model, peaks);
             return {floors.column_names("storey", "drift_ratio"), copy(floors.drift_ratio()), {}};
           case RecordedQuantity::storey_shear:
             return {floors.column_names("storey", "shear_N"),
@@ -385,7 +495,8 @@ namespace poundfe
                                        [&](const unsigned int h, const unsigned int b) {
                                          return elements[h].building == b;
                                        },
-                                       "hinge or Bouc-Wen storey", "A3_C1.2_bottom or A3_storey1",
+                                       "hinge states", "hinge or Bouc-Wen storey",
+                                       "A3_C1.2_bottom, A3_storey1 or in 3D A5_C1.3.2_bottom_z",
                                        input_file, line));
           case RecordedQuantity::gap_states:
             {
@@ -399,7 +510,8 @@ namespace poundfe
                                            return (gap.nodes[0] >= 0 && gap.buildings[0] == b) ||
                                                   (gap.nodes[1] >= 0 && gap.buildings[1] == b);
                                          },
-                                         "gap element", "A3-B2@6.5", input_file, line));
+                                         "gap states", "gap element",
+                                         "A3-B2@6.5 or in 3D A5-B5@13.6/1", input_file, line));
             }
           case RecordedQuantity::energy:
             {
@@ -419,6 +531,8 @@ namespace poundfe
                       }, {}};
             }
           case RecordedQuantity::ground_motion:
+            if (plan) // every component as applied: along x and y (after the incidence rotation)
+              return ground_motion_3d_series(state.has_vertical_ground_motion());
             if (state.has_vertical_ground_motion()) // Components = 3: the vertical one too
               return {{"ground_acceleration_m_s2", "ground_acceleration_z_m_s2"},
                       [](const ResponseView &s, std::vector<double> &to) {
@@ -462,7 +576,8 @@ namespace poundfe
           case RecordedQuantity::floor_acceleration:
           case RecordedQuantity::drift_ratio:
           case RecordedQuantity::storey_shear:
-            series.owners = owners_of(Owner::floor, first_integers(peaks.floors().n_floors()), 1);
+            if (series.owners.empty()) // a 3D model's are its series'
+              series.owners = owners_of(Owner::floor, first_integers(peaks.floors().n_floors()), 1);
             break;
           case RecordedQuantity::energy:
           case RecordedQuantity::ground_motion:
@@ -511,7 +626,8 @@ namespace poundfe
               (r.quantity == RecordedQuantity::gap_states && !has_gaps))
             throw InputError(input_file, parameters.line, "Output/Recorders/Record",
                              std::string("'") + info(r.quantity).name + "': the model has no " +
-                               (has_hysteretic ? "gap elements" : "hinges or Bouc-Wen storeys"));
+                               (r.quantity == RecordedQuantity::gap_states ?
+                                  "gap elements" : "hinges or Bouc-Wen storeys"));
         }
       return requests;
     }
@@ -547,16 +663,37 @@ namespace poundfe
     }
   } // namespace
 
+  std::array<const char *, 3>
+  node_components(const Model &model, const unsigned int node)
+  {
+    const Node &n = model.nodes[node];
+    if (!n.generalized) // a 2D node, or a 3D floor's diaphragm (mass centre) or joint
+      return {{"ux", "uy", "rz"}};
+    const bool rocking = std::any_of(model.foundations.begin(), model.foundations.end(),
+                                     [&](const Foundation &f) { return f.rocking_node == int(node); });
+    if (n.joint_translation_z || rocking) // a 3D joint's other three, a basemat's rocking
+      return {{"uz", "rx", "ry"}};
+    return {{"hinge_ry", "hinge_rz", "unused"}}; // a 3D hinge: about the member's local y and z
+  }
+
+  bool
+  is_rotation(const std::string &component)
+  {
+    return component[0] == 'r' || component.rfind("hinge_r", 0) == 0;
+  }
+
   std::vector<std::string>
   equation_labels(const Model &model)
   {
     std::vector<std::string> labels(model.n_equations());
-    const char              *components[] = {"ux", "uy", "rz"};
     for (unsigned int node = 0; node < model.n_nodes(); ++node)
-      for (unsigned int c = 0; c < n_dofs_per_node; ++c)
-        if (const int q = model.equation(n_dofs_per_node * node + c); q >= 0)
-          labels[q] = model.buildings[model.nodes[node].building].name + "_node" +
-                      std::to_string(node) + "_" + components[c];
+      {
+        const std::array<const char *, 3> components = node_components(model, node);
+        for (unsigned int c = 0; c < n_dofs_per_node; ++c)
+          if (const int q = model.equation(n_dofs_per_node * node + c); q >= 0)
+            labels[q] = model.buildings[model.nodes[node].building].name + "_node" +
+                        std::to_string(node) + "_" + components[c];
+      }
     return labels;
   }
 

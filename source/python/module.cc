@@ -103,6 +103,11 @@ namespace poundfe::python
       d["frequencies_hz"]             = frequency;
       d["periods_s"]                  = period;
       d["participating_mass_ratio_x"] = modes.participating_mass_ratio;
+      if (!modes.participating_mass_ratio_y.empty()) // a 3D model: along y and about z too
+        {
+          d["participating_mass_ratio_y"]  = modes.participating_mass_ratio_y;
+          d["participating_mass_ratio_rz"] = modes.participating_mass_ratio_rz;
+        }
       d["shapes"]                     = modes.shapes; // one mode per column, a copy
       return d;
     }

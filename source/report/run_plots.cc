@@ -155,15 +155,15 @@ namespace poundfe
     /// key can name them, else the max_named_curves with the largest peaks;
     /// in their order.
     std::vector<unsigned int>
-    curves_to_draw(const std::vector<double> &peaks)
+    curves_to_draw(const std::vector<double> &peaks, const unsigned int limit = max_named_curves)
     {
       std::vector<unsigned int> drawn(peaks.size());
       std::iota(drawn.begin(), drawn.end(), 0u);
-      if (drawn.size() <= max_named_curves)
+      if (drawn.size() <= limit)
         return drawn;
       std::stable_sort(drawn.begin(), drawn.end(),
                        [&](const unsigned int a, const unsigned int b) { return peaks[a] > peaks[b]; });
-      drawn.resize(max_named_curves);
+      drawn.resize(limit);
       std::sort(drawn.begin(), drawn.end());
       return drawn;
     }
@@ -488,71 +488,121 @@ namespace poundfe
   {
     // Profiles against the height above the ground: a storey's drift ratio
     // holds over the storey (a step), a floor's acceleration belongs to its
-    // level, joined to the ground's PGA. Beyond max_named_curves buildings,
-    // those with the largest peaks.
+    // level, joined to the ground's PGA. Beyond max_named_curves curves,
+    // the buildings with the largest peaks. A 3D model: along x (solid)
+    // and along y (dashed) in the building's colour.
     const Model         &model  = analysis.model;
     const FloorResponse &floors = peaks.floors();
+    const bool           plan   = peaks.floors_y() != nullptr;
     Plot drift{"drift_profile.png", "Peak inter-storey drift ratio against height",
                "peak |inter-storey drift ratio|", "height above the ground (m)", {}};
     Plot accel{"acceleration_profile.png", "Peak absolute floor acceleration against height",
                "peak |absolute acceleration| (m/s^2)", "height above the ground (m)", {}};
     drift.settings = accel.settings = "set xrange [0:*]\nset yrange [0:*]\n";
-    for (const unsigned int b :
-         curves_to_draw(peak_per_building(model, floors, floors.peak_drift_ratio())))
-      {
-        const Building    &building = model.buildings[b];
-        std::ostringstream d;
-        d << std::setprecision(10) << "$drift" << b + 1 << " << EOD\ndrift,height\n";
-        for (unsigned int f = 0; f < building.floors.size(); ++f)
-          {
-            const Floor &floor = building.floors[f];
-            const double top   = floor.level - building.base_level; // above the ground
-            d << floors.peak_drift_ratio()[floors.index(b, f)] << ',' << top - floor.storey_height
-              << '\n' << floors.peak_drift_ratio()[floors.index(b, f)] << ',' << top << '\n';
-          }
-        drift.data_blocks += d.str() + "EOD\n";
-        drift.series.push_back({"$drift" + std::to_string(b + 1), "1:2", building.name, "lines lw 2"});
-      }
-    for (const unsigned int b :
-         curves_to_draw(peak_per_building(model, floors, floors.peak_acceleration())))
-      {
-        const Building    &building = model.buildings[b];
-        std::ostringstream a;
-        a << std::setprecision(10) << "$accel" << b + 1 << " << EOD\nacceleration,height\n"
-          << peak_ground_acceleration() << ",0\n";
-        for (unsigned int f = 0; f < building.floors.size(); ++f)
-          a << floors.peak_acceleration()[floors.index(b, f)] << ','
-            << building.floors[f].level - building.base_level << '\n';
-        accel.data_blocks += a.str() + "EOD\n";
-        accel.series.push_back(
-          {"$accel" + std::to_string(b + 1), "1:2", building.name, "linespoints lw 2 pt 7"});
-      }
+    const unsigned int per_building = plan ? 2 : 1;
+    const std::array<double, 2> pga = plan ? excitation.applied_horizontal_peaks() :
+                                             std::array<double, 2>{{peak_ground_acceleration(), 0}};
+    const auto both = [&](const std::vector<double> &(FloorResponse::*value)() const) {
+      std::vector<double> peak = peak_per_building(model, floors, (floors.*value)());
+      if (plan)
+        for (unsigned int b = 0; b < peak.size(); ++b)
+          peak[b] = std::max(peak[b], peak_per_building(model, *peaks.floors_y(),
+                                                        (peaks.floors_y()->*value)())[b]);
+      return peak;
+    };
+    const unsigned int limit = max_named_curves / per_building;
+    for (const unsigned int b : curves_to_draw(both(&FloorResponse::peak_drift_ratio), limit))
+      for (unsigned int d = 0; d < per_building; ++d)
+        add_profile(drift, b, d, plan, true, 0);
+    for (const unsigned int b : curves_to_draw(both(&FloorResponse::peak_acceleration), limit))
+      for (unsigned int d = 0; d < per_building; ++d)
+        add_profile(accel, b, d, plan, false, pga[d]);
     const std::size_t n_buildings = model.buildings.size();
-    drift.title = title_of_drawn(drift.title, drift.series.size(), n_buildings, "buildings");
-    accel.title = title_of_drawn(accel.title, accel.series.size(), n_buildings, "buildings");
+    drift.title = title_of_drawn(drift.title, drift.series.size() / per_building, n_buildings, "buildings");
+    accel.title = title_of_drawn(accel.title, accel.series.size() / per_building, n_buildings, "buildings");
     add_drift_limits(model, floors.peak_drift_ratio(), parameters.drift_limits.limits(), drift);
     return {{drift, accel}};
+  }
+
+  void
+  RunPlots::add_profile(Plot &plot, const unsigned int b, const unsigned int d, const bool plan,
+                        const bool drift, const double pga) const
+  {
+    const Model         &model    = analysis.model;
+    const FloorResponse &floors   = d == 0 ? peaks.floors() : *peaks.floors_y();
+    const Building      &building = model.buildings[b];
+    const std::string    name     = std::string(drift ? "$drift" : "$accel") +
+                             std::to_string(b + 1) + (plan ? (d == 0 ? "x" : "y") : "");
+    std::ostringstream block;
+    block << std::setprecision(10) << name << " << EOD\n"
+          << (drift ? "drift,height\n" : "acceleration,height\n");
+    if (!drift)
+      block << pga << ",0\n";
+    for (unsigned int f = 0; f < building.floors.size(); ++f)
+      {
+        const Floor &floor = building.floors[f];
+        const double top   = floor.level - building.base_level; // above the ground
+        const unsigned int i = floors.index(b, f);
+        if (drift) // the storey's drift ratio over its height
+          block << floors.peak_drift_ratio()[i] << ',' << top - floor.storey_height << '\n'
+                << floors.peak_drift_ratio()[i] << ',' << top << '\n';
+        else
+          block << floors.peak_acceleration()[i] << ',' << top << '\n';
+      }
+    plot.data_blocks += block.str() + "EOD\n";
+    std::string style = drift ? "lines lw 2" : "linespoints lw 2 pt 7";
+    if (plan) // one colour per building, y dashed
+      style += " lc " + std::to_string(b % 8 + 1) + (d == 1 ? " dt 2" : "");
+    plot.series.push_back(
+      {name, "1:2", building.name + (plan ? (d == 0 ? " along x" : " along y") : ""), style});
   }
 
   Plot
   RunPlots::roof_plot() const
   {
-    // floor_displacement.csv: time, then each building's floors, bottom to top
+    // floor_displacement.csv: time, then each building's floors, bottom to
+    // top (3D: x, y and θz of each floor)
     const Model         &model  = analysis.model;
     const FloorResponse &floors = peaks.floors();
-    std::vector<unsigned int> roof_column;
-    std::vector<double>       peak_roof;
-    for (unsigned int b = 0, column = 1; b < model.buildings.size(); ++b)
+    const bool           plan   = peaks.floors_y() != nullptr;
+    std::vector<double>  peak_roof;
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
         const unsigned int n_floors = model.buildings[b].floors.size();
-        column += n_floors;
-        roof_column.push_back(column - 1);
-        peak_roof.push_back(n_floors > 0 ? floors.peak_displacement()[floors.index(b, n_floors - 1)] :
-                                           0.0);
+        const unsigned int roof     = floors.index(b, n_floors - 1);
+        peak_roof.push_back(n_floors == 0 ? 0.0 :
+                              std::max(floors.peak_displacement()[roof],
+                                       plan ? peaks.floors_y()->peak_displacement()[roof] : 0.0));
       }
-    Plot roof{"roof_displacement.png", "Roof displacement (relative to the ground)", "time (s)",
-              "displacement (m)", {}};
-    add_building_series(roof, model, directory, "floor_displacement.csv", roof_column, peak_roof, "");
+    Plot roof{"roof_displacement.png",
+              plan ? "Roof displacement of the mass centre (relative to the ground)" :
+                     "Roof displacement (relative to the ground)",
+              "time (s)", "displacement (m)", {}};
+    if (!plan)
+      {
+        std::vector<unsigned int> roof_column;
+        for (unsigned int b = 0, column = 1; b < model.buildings.size(); ++b)
+          {
+            column += model.buildings[b].floors.size();
+            roof_column.push_back(column - 1);
+          }
+        add_building_series(roof, model, directory, "floor_displacement.csv", roof_column,
+                            peak_roof, "");
+        return roof;
+      }
+    std::vector<unsigned int> columns;
+    std::vector<std::string>  titles;
+    const std::vector<unsigned int> drawn = curves_to_draw(peak_roof, max_named_curves / 2);
+    for (const unsigned int b : drawn)
+      {
+        const unsigned int roof = floors.index(b, model.buildings[b].floors.size() - 1);
+        columns.insert(columns.end(), {1 + 3 * roof, 2 + 3 * roof}); // its x and y
+        titles.insert(titles.end(), {model.buildings[b].name + " along x",
+                                     model.buildings[b].name + " along y"});
+      }
+    roof.title = title_of_drawn(roof.title, drawn.size(), model.buildings.size(), "buildings");
+    add_time_series(roof, directory, "floor_displacement.csv", columns, titles, "",
+                    drawn.size() < model.buildings.size());
     return roof;
   }
 
@@ -584,9 +634,14 @@ namespace poundfe
     if (writes("floor_displacement.csv"))
       all.push_back(roof_plot());
     if (writes("ground_motion.csv") && peak_ground_acceleration() > 0) // not for force-driven runs
-      all.push_back(Plot{"ground_motion.png", excitation.ground_motion().description(),
-                         "time (s)", "ground acceleration (m/s^2)",
-                         {{"ground_motion.csv", "1:2", "a_g", "lines"}}});
+      {
+        Plot ground{"ground_motion.png", excitation.ground_motion().description(), "time (s)",
+                    "ground acceleration (m/s^2)", {{"ground_motion.csv", "1:2", "a_g", "lines"}}};
+        if (model.dimension == 3) // every component as applied, after the incidence rotation
+          ground.series = {{"ground_motion.csv", "1:2", "a_x", "lines"},
+                           {"ground_motion.csv", "1:3", "a_y", "lines"}};
+        all.push_back(ground);
+      }
     if (writes("base_shear.csv"))
       all.push_back(base_shear_plot());
     if (writes("energy.csv"))

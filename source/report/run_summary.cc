@@ -311,6 +311,8 @@ namespace poundfe
       warnings.push_back(warning);
     json.value("warnings", warnings);
     write_model(json, analysis);
+    if (analysis.model.dimension == 3)
+      write_ratio_definitions(json);
     const GroundMotion &motion = excitation.ground_motion();
     json.begin_object("ground_motion")
       .value("description", motion.description())
@@ -318,6 +320,17 @@ namespace poundfe
       .value("pga_g", motion.peak() / standard_gravity)
       .value("duration_s", motion.duration())
       .value("time_step_s", motion.time_step());
+    if (analysis.model.dimension == 3) // each component as applied, after the incidence rotation
+      {
+        const std::array<double, 2> applied = excitation.applied_horizontal_peaks();
+        json.value("pga_x_m_s2", applied[0])
+          .value("pga_y_m_s2", applied[1])
+          .value("pga_x_g", applied[0] / standard_gravity)
+          .value("pga_y_g", applied[1] / standard_gravity);
+        if (excitation.has_horizontal_pair() && !excitation.second_ground_motion().empty())
+          json.value("second_description", excitation.second_ground_motion().description())
+            .value("second_pga_m_s2", excitation.second_ground_motion().peak());
+      }
     if (excitation.has_vertical()) // Components = 3
       json.value("vertical_description", excitation.vertical_ground_motion().description())
         .value("vertical_pga_m_s2", excitation.vertical_ground_motion().peak());
@@ -376,13 +389,57 @@ namespace poundfe
               .value("time_of_peak_drift_s", floors.peak_drift_time()[i])
               .value("residual_drift_ratio", floors.drift_ratio()[i])
               .value("peak_absolute_floor_acceleration_m_s2", floors.peak_acceleration()[i])
-              .value("peak_floor_displacement_m", floors.peak_displacement()[i])
-              .end_object();
+              .value("peak_floor_displacement_m", floors.peak_displacement()[i]);
+            if (model.dimension == 3)
+              write_storey_plan(json, i);
+            json.end_object();
           }
         json.end_array();
         write_drift_checks(json, b);
         json.end_object();
       }
+    json.end_array();
+  }
+
+  void
+  RunSummary::write_storey_plan(JsonWriter &json, const unsigned int i) const
+  {
+    // the keys above are along x; along y and about z with the same peaks
+    const FloorResponse &y = *peaks.floors_y(), &rz = *peaks.floors_rz();
+    json.value("peak_drift_ratio_y", y.peak_drift_ratio()[i])
+      .value("time_of_peak_drift_y_s", y.peak_drift_time()[i])
+      .value("residual_drift_ratio_y", y.drift_ratio()[i])
+      .value("peak_absolute_floor_acceleration_y_m_s2", y.peak_acceleration()[i])
+      .value("peak_floor_displacement_y_m", y.peak_displacement()[i])
+      .value("peak_floor_rotation_rad", rz.peak_displacement()[i])
+      .value("peak_floor_angular_acceleration_rad_s2", rz.peak_acceleration()[i]);
+  }
+
+  void
+  RunSummary::write_ratio_definitions(JsonWriter &json) const
+  {
+    // what each ratio of a 3D run's summary is divided by (the plan ratios
+    // are the ones a reader cannot guess); a list of {"key", "divided_by"},
+    // so that a key of the summary appears once as a key
+    using Ratio = std::pair<const char *, const char *>;
+    json.begin_array("ratios");
+    for (const auto &[key, definition] :
+         {Ratio{"participating_mass_ratio_x", "effective modal mass along x / total mass along x"},
+          Ratio{"participating_mass_ratio_y", "effective modal mass along y / total mass along y"},
+          Ratio{"participating_mass_ratio_rz",
+                "effective modal polar moment about z / total polar moment of the floor masses"},
+          Ratio{"peak_drift_ratio", "inter-storey drift of the mass centres along x / storey height"},
+          Ratio{"peak_drift_ratio_y", "inter-storey drift of the mass centres along y / storey height"},
+          Ratio{"torsional_irregularity_x|y",
+                "largest corner drift peak / mean of the largest and smallest corner drift peaks "
+                "of the storey along that axis; null along an axis without drift"},
+          Ratio{"torsional_irregularity_at_peak_x|y",
+                "largest corner drift / mean of the largest and smallest signed corner drifts, at "
+                "the instant the largest corner drift peaks; null along an axis without drift"},
+          Ratio{"ductility", "peak deformation / yield deformation of the element"},
+          Ratio{"max_relative_balance_error",
+                "|input - (kinetic + damping + strain + dissipated)| / largest energy term so far"}})
+      json.begin_object().value("key", key).value("divided_by", definition).end_object();
     json.end_array();
   }
 
@@ -419,13 +476,16 @@ namespace poundfe
     const unsigned int n_hysteretic = peaks.n_hysteretic();
     const unsigned int n_gaps       = peaks.n_gaps();
     const ContactLawParameters &law          = model.contact;
-    json.begin_object("contact")
-      .value("law", law.law)
-      .value("stiffness", law.stiffness)
-      .value("damping_parameter", law.damping)
-      .value("damping_from", contact_damping_from_names().name(parameters.contact.damping_from))
-      .value("coefficient_of_restitution", parameters.contact.restitution)
-      .end_object();
+    json.begin_object("contact").value("law", law.law).value("stiffness", law.stiffness);
+    // an undamped law has no damping and no restitution of its own; a given
+    // damping parameter owes nothing to the coefficient of restitution
+    const ContactDampingFrom from = parameters.contact.damping_from;
+    if (contact_law_is_damped(law.law))
+      json.value("damping_parameter", law.damping)
+        .value("damping_from", contact_damping_from_names().name(from));
+    if (contact_law_is_damped(law.law) && from != ContactDampingFrom::given)
+      json.value("coefficient_of_restitution", parameters.contact.restitution);
+    json.end_object();
     write_bumper(json, state);
     std::vector<unsigned int> count(n_gaps, 0);
     std::vector<double>       peak(n_gaps, 0.0), penetration(n_gaps, 0.0), impulse(n_gaps, 0.0);

@@ -20,7 +20,7 @@ doc/verification.md, "Corner accelerations"):
  2. The ground's part. The same building with its mass at the plan centre
     under a generated ground motion along x and y: the mean of the four
     corners of the rectangle is the mass centre, so it must equal the
-    floor's absolute acceleration of floor_acceleration.csv (x) at every
+    floor's absolute acceleration of floor_acceleration.csv (along x) at every
     step, to 1e-12 of the peak, while the corners differ (the floor twists).
  3. A 2D model's request of 'corner acceleration' is refused (exit 1,
     nothing written).
@@ -188,7 +188,7 @@ result, out = run("ground", model((0, 0), ground, ""))
 if result.returncode != 0:
     fail("ground motion: " + result.stderr)
 series = columns(os.path.join(out, "corner_acceleration.csv"))
-centre = columns(os.path.join(out, "floor_acceleration.csv"))["T_floor1_acc_m_s2"]
+centre = columns(os.path.join(out, "floor_acceleration.csv"))["T_floor1_acc_x_m_s2"]
 xs = [v for n, v in series.items() if n.endswith("_acc_x_m_s2")]
 peak = max(abs(a) for a in centre)
 mean_error = max(abs(sum(c[i] for c in xs) / 4 - centre[i]) for i in range(len(centre)))

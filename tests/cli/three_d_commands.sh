@@ -82,7 +82,7 @@ done
 "$poundfe" sweep "$work/linear.prm" --output "$work/linear" > /dev/null
 for floor in 1 3; do
   python3 "$here/angle_superposition.py" "$work/linear" "$work/a0/floor_displacement.csv" \
-    "$work/a90/floor_displacement.csv" "S_floor${floor}_disp_m" "S_floor${floor}_peak_displacement_m" 1e-9 \
+    "$work/a90/floor_displacement.csv" "S_floor${floor}_disp_x_m" "S_floor${floor}_peak_displacement_m" 1e-9 \
     || fail "the sweep's peaks differ from the superposition"
 done
 echo "ok   sweep over the incidence angle = superposition of the 0 and 90 degree runs"

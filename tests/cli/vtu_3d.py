@@ -106,6 +106,11 @@ def building_names(prm):
         return re.findall(r"set Name\s*=\s*(\S+)", f.read())
 
 
+def unit(component):
+    """The unit of a DOF's column of phase_portrait.csv: rad for a rotation."""
+    return "rad" if component.startswith("r") else "m"
+
+
 def check_frames(out, names, expected_members, frames_in_contact):
     disp_col, disp = columns(os.path.join(out, "floor_displacement.csv"))
     dof_col, dofs = columns(os.path.join(out, "phase_portrait.csv"))
@@ -138,10 +143,10 @@ def check_frames(out, names, expected_members, frames_in_contact):
             b = names[building[c] - 1]
             master = v["data"]["node"][p]
             centres[(building[c], round(v["xyz"][p][2], 6))] = p
-            want_ux = disp[time][disp_col[f"{b}_floor{member[c]}_disp_m"]]
+            want_ux = disp[time][disp_col[f"{b}_floor{member[c]}_disp_x_m"]]
             check(d[p][0] == want_ux, f"{name}: {b} floor {member[c]} ux {d[p][0]} against {want_ux}")
             for got, comp in ((d[p][1], "uy"), (r[p][2], "rz")):
-                want = u[dof_col[f"{b}_node{master}_{comp}_m"]]
+                want = u[dof_col[f"{b}_node{master}_{comp}_{unit(comp)}"]]
                 check(got == want, f"{name}: {b} floor {member[c]} {comp} {got} against {want}")
 
         def rigid(p, b):
@@ -170,7 +175,8 @@ def check_frames(out, names, expected_members, frames_in_contact):
                     n_joints += 1
                     check(max(abs(d[p][0] - want[0]), abs(d[p][1] - want[1]), abs(r[p][2] - want[2]))
                           <= 1e-12 * largest, f"{name}: joint {p} {d[p]} against its floor's {want}")
-                    own = [u[dof_col[f"{b}_node{node[p]}_{comp}_m"]] for comp in ("ux", "uy", "rz")]
+                    # the joint's vertical part: phase_portrait.csv names its DOFs uz, rx, ry
+                    own = [u[dof_col[f"{b}_node{node[p]}_{comp}_{unit(comp)}"]] for comp in ("uz", "rx", "ry")]
                     check([d[p][2], r[p][0], r[p][1]] == own,
                           f"{name}: joint {p} (uz, rx, ry) against node {node[p]}'s {own}")
                 f1, f2 = v["data"]["end_forces_start"][c], v["data"]["end_forces_end"][c]
@@ -263,7 +269,7 @@ def check_irregularity(out, names):
                         return 0.0
                     p = centre[(b, floor)]
                     node = v["data"]["node"][p]
-                    ux, uy, th = (row[dof_col[f"{name}_node{node}_{c}_m"]] for c in ("ux", "uy", "rz"))
+                    ux, uy, th = (row[dof_col[f"{name}_node{node}_{c}_{unit(c)}"]] for c in ("ux", "uy", "rz"))
                     C = v["xyz"][p]
                     return ux - th * (X[1] - C[1]) if d == 0 else uy + th * (X[0] - C[0])
                 peak, ratio = 0.0, 1.0

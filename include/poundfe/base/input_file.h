@@ -40,6 +40,9 @@ namespace poundfe
 
     /// InputError naming the file, the line of `path` and `path`.
     [[noreturn]] void fail(const std::string &path, const std::string &problem) const;
+    /// The text fail() would throw, for a warning: where a run still makes
+    /// sense, an entry without effect is reported rather than refused.
+    std::string warning(const std::string &path, const std::string &problem) const;
     void positive(const std::string &path, double value) const;
     void non_negative(const std::string &path, double value) const;
     /// |value| <= bound, else an InputError that says why the bound is

@@ -150,6 +150,9 @@ namespace poundfe
     virtual double history_variable() const { return 0; }
     /// Recoverable energy; the work done minus this is what was dissipated.
     virtual double stored_energy() const = 0;
+    /// Whether the element can dissipate (UniaxialLaw::dissipates); not
+    /// used by the energy balance yet.
+    virtual bool dissipates() const { return true; }
     /// Deformation at which the element yields (for ductility); 0 if none.
     virtual double yield_deformation() const { return 0; }
     virtual double initial_stiffness() const { return 0; }

@@ -57,6 +57,7 @@ namespace poundfe
     /// meaningless and the gap open.
     virtual bool in_reach() const = 0;
     double stored_energy() const override { return law->stored_energy(); }
+    bool   dissipates() const override { return law->dissipates(); }
 
   protected:
     /// Commit the law and remember its penetration and force.

@@ -47,6 +47,7 @@ namespace poundfe
     double work_increment() const override;
     double reference_energy() const override;
     double supplied_work_increment() const override { return law->supplied_work_increment(); }
+    bool   dissipates() const override { return law->dissipates(); }
     void   commit() override;
     void   revert() override;
     void   reset() override;

@@ -49,6 +49,10 @@ namespace poundfe
     void set_horizontal_pair(const LinearSystem &system, GroundMotion second, double angle);
     /// (a_x, a_y) at t (a_y = 0 without a pair).
     std::array<double, 2> horizontal_acceleration(double t) const;
+    /// The peaks of |a_x| and |a_y| as applied (after the incidence
+    /// rotation), over the samples of both components: the PGA along each
+    /// axis of the model, m/s^2.
+    std::array<double, 2> applied_horizontal_peaks() const;
     bool has_horizontal_pair() const { return pair; }
     const GroundMotion &second_ground_motion() const { return second; }
     /// In-place access for a new realization (StochasticLoad).
@@ -103,6 +107,18 @@ namespace poundfe
   void add_horizontal_component(Excitation &excitation, const LinearSystem &system,
                                 const Model &model, const GroundMotionParameters &parameters,
                                 const InputFile &input, double time_step);
+
+  /// The second horizontal component of `parameters` (Components >= 2 in
+  /// 3D; none otherwise), a stochastic one correlated with `first` (the
+  /// first component) as the section asks. Throws InputError.
+  GroundMotion second_horizontal_motion(const GroundMotion &first,
+                                        const GroundMotionParameters &parameters,
+                                        const InputFile &input, double time_step);
+  /// The vertical component of `parameters` (Components = 3): a record
+  /// scaled by File's factor to the Target PGA, a stochastic sample
+  /// independent of `first` with the vertical ratio. Throws InputError.
+  GroundMotion vertical_motion_of(const GroundMotion &first, const GroundMotionParameters &parameters,
+                                  const InputFile &input, double time_step);
 
   /// Components = 3: the vertical component of `parameters` onto
   /// `excitation` (after add_horizontal_component). Throws InputError for a

@@ -58,6 +58,11 @@ namespace poundfe
     virtual const IterationStatistics &statistics() const     = 0;
   };
 
+  /// What one element dissipated: its work minus its stored energy plus
+  /// what drives it (for an undamped contact law, the quadrature of its
+  /// work over the steps that open or close a gap).
+  double element_dissipation(const NonlinearElement &element, double work, double supplied);
+
   /// Sets balance's dissipation terms (hysteretic, contact, friction, links,
   /// foundation) from each element's work, stored energy and supplied work;
   /// `counted` (empty: all) leaves out the elements h with counted[h] == 0

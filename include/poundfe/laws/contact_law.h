@@ -43,6 +43,8 @@ namespace poundfe
     double tangent() const final { return trial.stiffness; }
     double damping_tangent() const final { return trial.damping; }
     double stored_energy() const final;
+    /// Only with a damping parameter: the contact laws' springs are elastic.
+    bool   dissipates() const override { return p.damping > 0; }
     /// Why set_trial refused its state: the closure, its rate or the force
     /// not finite, with the values.
     std::string failure() const final;

@@ -35,6 +35,11 @@ namespace poundfe
     /// Recoverable energy of the trial state; the work done on the law minus
     /// this is what the law dissipated.
     virtual double stored_energy() const = 0;
+    /// Whether the law can dissipate at all: an elastic law (an undamped
+    /// contact law) cannot. The energy balance does not use it yet
+    /// (element_dissipation, integration/time_stepper.h: the quadrature of
+    /// an elastic gap's work would move into the balance error).
+    virtual bool dissipates() const { return true; }
     /// Work done on the structure, from the committed to the trial state, by
     /// what drives the law (a moving belt); 0 for passive laws.
     virtual double supplied_work_increment() const { return 0; }

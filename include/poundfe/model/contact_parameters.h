@@ -61,6 +61,12 @@ namespace poundfe
     void declare(dealii::ParameterHandler &prm);
     /// Throws InputError.
     void check(const InputFile &input) const;
+    /// The law's entries given in the file (a .prm: its line index) that
+    /// have no effect with this Law and Damping from, one warning each:
+    /// with Law = none every entry of the law; an undamped law's damping
+    /// entries; a given Damping's restitution entries, or a Damping beside
+    /// a formula or a calibration; the Hertz-damp formula of another law.
+    std::vector<std::string> entries_without_effect(const InputFile &input) const;
   };
 
   struct ContactLawParameters;

@@ -501,6 +501,11 @@ namespace poundfe
     /// 2: planar frames and stick models; 3: torsionally coupled shear
     /// buildings and 3D frames.
     unsigned int            dimension              = 2;
+    /// What the builder found given without effect in this model (an entry
+    /// of the contact law that the law does not have, a contact law that
+    /// made no gap), each naming file, line and entry; the run goes on and
+    /// reports them (summary.json's warnings, the terminal).
+    std::vector<std::string> warnings;
 
     unsigned int n_nodes() const { return nodes.size(); }
     unsigned int n_dofs() const { return n_dofs_per_node * nodes.size(); }

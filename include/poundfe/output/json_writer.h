@@ -5,6 +5,7 @@
 #ifndef poundfe_output_json_writer_h
 #define poundfe_output_json_writer_h
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,8 @@ namespace poundfe
     JsonWriter &value(const std::string &key, bool x);
     JsonWriter &value(const std::string &key, const std::vector<double> &x);
     JsonWriter &value(const std::string &key, const std::vector<std::string> &x);
+    /// A list whose missing entries are null (a ratio that has no meaning).
+    JsonWriter &value(const std::string &key, const std::vector<std::optional<double>> &x);
 
     std::string str() const { return text + "\n"; }
     /// Streamed: the rest of the text and the final newline into the file

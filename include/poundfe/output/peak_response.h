@@ -5,8 +5,9 @@
 // smallest opening. The impact log adds the deepest points that fall
 // between steps to the smallest opening at the end. A 3D model's peaks also
 // hold the floor response along y (drifts of the mass centres along y,
-// absolute accelerations with a_y) and the plan response (floor rotations,
-// corner drifts, base shears and torque: plan_response.h).
+// absolute accelerations with a_y), the floors' rotations θz (their angular
+// velocities and accelerations; no ground rotation) and the plan response
+// (floor rotations, corner drifts, base shears and torque: plan_response.h).
 #ifndef poundfe_output_peak_response_h
 #define poundfe_output_peak_response_h
 
@@ -41,6 +42,9 @@ namespace poundfe
     const FloorResponse &floors() const { return floor_response; }
     /// A 3D model's floor response along y and its plan response (nullptr in 2D).
     const FloorResponse *floors_y() const { return floor_response_y.get(); }
+    /// A 3D model's floor rotations θz (nullptr in 2D): its "displacement"
+    /// is θz (rad), its "drift ratio" the storey's twist over its height.
+    const FloorResponse *floors_rz() const { return floor_response_rz.get(); }
     const PlanResponse  *plan() const { return plan_response.get(); }
     /// The largest peak drift ratio of the mass centres (along x and, in 3D, y).
     double largest_drift_ratio() const;
@@ -62,7 +66,8 @@ namespace poundfe
   private:
     const NonlinearElements &elements;
     FloorResponse           floor_response;
-    std::unique_ptr<FloorResponse> floor_response_y; // 3D models
+    std::unique_ptr<FloorResponse> floor_response_y;  // 3D models
+    std::unique_ptr<FloorResponse> floor_response_rz; // 3D models
     std::unique_ptr<PlanResponse>  plan_response;    // 3D models
     unsigned int            n_hysteretic_elements = 0, n_gap_elements = 0;
     std::vector<double>     peak_d, peak_d_at, peak_f, peak_plastic;

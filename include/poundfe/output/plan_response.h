@@ -18,7 +18,13 @@
 // Chopra, Dynamics of Structures, 4th ed., §9.5: the floor's motion as a
 // rigid body; ASCE/SEI 7-16 §13.3.1: nonstructural components see the
 // acceleration of the point they hang from, largest at the corners of a
-// twisting floor), its peak over time and its value at each step.
+// twisting floor), its peak over time and its value at each step; per
+// floor the peak resultant displacement of the mass centre, sqrt(u_x^2 +
+// u_y^2) (the one direction-free displacement: a resultant drift or
+// acceleration of a corner mixes two corners' peaks). A ratio along an axis
+// whose largest corner drift is below relative_drift_floor times the
+// storey's largest in either axis (a symmetric building shaken along the
+// other axis: round-off) has no meaning: irregularity() is empty there.
 #ifndef poundfe_output_plan_response_h
 #define poundfe_output_plan_response_h
 
@@ -26,6 +32,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,7 +67,16 @@ namespace poundfe
       /// Peak absolute accelerations of the corners of the floor on top,
       /// along x and y, m/s^2.
       std::vector<double>   corner_acceleration_x, corner_acceleration_y;
+      /// Peak resultant displacement of the floor's mass centre, m.
+      double resultant_displacement = 0;
+      /// The torsional irregularity ratio along axis d (0: x, 1: y) over
+      /// the peaks (at_peak = false) or at the instant of the largest
+      /// drift; empty along an axis with (almost) no drift.
+      std::optional<double> irregularity(unsigned int d, bool at_peak) const;
     };
+    /// Below this fraction of the storey's largest corner drift, an axis has
+    /// no drift of its own (round-off is ~1e-16 of it).
+    static constexpr double relative_drift_floor = 1e-9;
     struct BuildingPeaks
     {
       std::vector<Storey> storeys;
@@ -74,12 +90,22 @@ namespace poundfe
     const std::vector<double> &corner_accelerations() const { return corner_acceleration; }
     /// Their columns, "<building>_floor<i>_corner<k>_acc_x_m_s2" and _y.
     std::vector<std::string> corner_acceleration_names() const;
+    /// The corners' drift ratios at the last observed step (drift over the
+    /// storey height): for every building, storey and slab corner, x then y.
+    const std::vector<double> &corner_drift_ratios() const { return corner_drift; }
+    /// Their columns, "<building>_storey<i>_corner<k>_drift_ratio_x" and _y.
+    std::vector<std::string> corner_drift_names() const;
 
   private:
-    void storey_drifts(const Vector &u, unsigned int b);
+    /// Building b's storeys' drifts into the peaks and corner_drift from
+    /// `at` on; returns the next index.
+    unsigned int storey_drifts(const Vector &u, unsigned int b, unsigned int at);
     /// Fills corner_acceleration from building b's floors, from `at` on;
     /// returns the next index.
     unsigned int corner_accelerations(const ResponseView &state, unsigned int b, unsigned int at);
+    /// "<building><level><i>_corner<k><what>x<unit>" and y, of every corner.
+    std::vector<std::string> corner_names(const std::string &level, const std::string &what,
+                                          const std::string &unit) const;
     /// f(b, x) for every number x of building b's peaks and corner
     /// accelerations, building after building, always in the same order.
     template <typename Function>
@@ -87,7 +113,7 @@ namespace poundfe
 
     const Model                  &model;
     std::vector<BuildingPeaks>    peaks;
-    std::vector<double>           corner_acceleration;
+    std::vector<double>           corner_acceleration, corner_drift;
     /// Of the run's elements: made at its first step, forgotten by reset.
     std::unique_ptr<StoreyForces> forces;
   };
@@ -95,8 +121,8 @@ namespace poundfe
   class JsonWriter;
 
   /// The "plan" object of building b in summary.json: per storey the peak
-  /// floor rotation and the irregularity ratios in x and y, the peak base
-  /// shears and torque.
+  /// floor rotation and the irregularity ratios in x and y (null along an
+  /// axis without drift), the peak base shears and torque.
   void write_plan_response(JsonWriter &json, const PlanResponse &plan, unsigned int b);
 } // namespace poundfe
 

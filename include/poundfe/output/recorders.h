@@ -6,6 +6,7 @@
 #include <poundfe/output/observer.h>
 #include <poundfe/output/recorder_parameters.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,8 +15,17 @@ namespace poundfe
 {
   class PeakResponse;
 
-  /// "<building>_node<n>_<ux|uy|rz>" of each equation (the columns of
-  /// phase_portrait.csv; the rows of a mode shape in Python).
+  /// The names of a node's three DOFs: ux, uy, rz (a 2D node; a 3D floor's
+  /// diaphragm at its mass centre, or a joint's horizontal part); uz, rx, ry
+  /// (a 3D joint's vertical part, a basemat's rocking); hinge_ry, hinge_rz
+  /// (a 3D hinge's relative rotations about the member's local axes).
+  std::array<const char *, 3> node_components(const Model &model, unsigned int node);
+  /// Whether a DOF named so (node_components) is a rotation (rad).
+  bool is_rotation(const std::string &component);
+
+  /// "<building>_node<n>_<component>" of each equation (node_components;
+  /// the columns of phase_portrait.csv with _m or _rad; the rows of a mode
+  /// shape in Python).
   std::vector<std::string> equation_labels(const Model &model);
 
   /// Steps between rows for an interval in s (0: every step).

@@ -55,7 +55,13 @@ namespace poundfe
     void draw_phase_portraits(std::vector<Plot> &plots) const;
     /// drift_profile.png and acceleration_profile.png (with the drift limits).
     std::array<Plot, 2> profile_plots() const;
-    /// roof_displacement.png, from floor_displacement.csv.
+    /// The profile of building b along x (d = 0) or y (d = 1, a 3D model:
+    /// `plan`) onto `plot`: its peak drift ratios (`drift`) or its peak
+    /// absolute floor accelerations from the ground's `pga`.
+    void add_profile(Plot &plot, unsigned int b, unsigned int d, bool plan, bool drift,
+                     double pga) const;
+    /// roof_displacement.png, from floor_displacement.csv (3D: the mass
+    /// centre's x and y).
     Plot roof_plot() const;
     /// base_shear.png, from base_shear.csv.
     Plot base_shear_plot() const;

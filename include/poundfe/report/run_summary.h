@@ -68,6 +68,10 @@ namespace poundfe
                     const std::vector<std::string> &files) const;
     /// "buildings": Rayleigh coefficients, modes, peak storey responses, drift checks.
     void write_buildings(JsonWriter &json) const;
+    /// A 3D model's storey (flat floor index i): its peaks along y and about z.
+    void write_storey_plan(JsonWriter &json, unsigned int i) const;
+    /// A 3D model's "ratios": what each ratio of the summary is divided by.
+    void write_ratio_definitions(JsonWriter &json) const;
     /// "hinges": yield, peak and plastic deformation, ductility, force, energy.
     void write_hinges(JsonWriter &json, const ResponseView &state) const;
     /// "contact" (the law) and "gaps": impacts, peak force, penetration, impulse.

@@ -124,18 +124,27 @@ def read_npy(path):
     return Table([n for n in names if n], np.load(path))
 
 
+def _optional_array(raw, key):
+    """raw[key] as an array, None when absent (a 2D model's y and θz)."""
+    return np.array(raw[key]) if key in raw else None
+
+
 class Modes:
     """Undamped modes (poundfe.modal, Results.modes): omega (rad/s),
-    frequencies (Hz), periods (s), participating_mass_ratio (x), shapes
-    (mass-normalised, one column per mode, one row per equation named in
-    `equations`); `buildings` holds each building's own modes (with name,
-    rayleigh_a0, rayleigh_a1)."""
+    frequencies (Hz), periods (s), participating_mass_ratio (x), and for a
+    3D model participating_mass_ratio_y and participating_mass_ratio_rz
+    (None in 2D), shapes (mass-normalised, one column per mode, one row per
+    equation named in `equations`: <building>_node<n>_ux, _uy, _rz, and in
+    3D _uz, _rx, _ry of a joint, _hinge_ry, _hinge_rz of a hinge); `buildings`
+    holds each building's own modes (with name, rayleigh_a0, rayleigh_a1)."""
 
     def __init__(self, raw):
         self.omega = np.array(raw["omega_rad_s"])
         self.frequencies = np.array(raw["frequencies_hz"])
         self.periods = np.array(raw["periods_s"])
         self.participating_mass_ratio = np.array(raw["participating_mass_ratio_x"])
+        self.participating_mass_ratio_y = _optional_array(raw, "participating_mass_ratio_y")
+        self.participating_mass_ratio_rz = _optional_array(raw, "participating_mass_ratio_rz")
         self.shapes = np.array(raw["shapes"])
         self.equations = raw.get("equations")
         self.name = raw.get("name")
@@ -145,8 +154,12 @@ class Modes:
     def to_dataframe(self):
         """One row per mode: frequency, period, participating mass ratio
         (ImportError without pandas)."""
-        return _pandas().DataFrame({"frequency_hz": self.frequencies, "period_s": self.periods,
-                                    "participating_mass_ratio_x": self.participating_mass_ratio})
+        columns = {"frequency_hz": self.frequencies, "period_s": self.periods,
+                   "participating_mass_ratio_x": self.participating_mass_ratio}
+        if self.participating_mass_ratio_y is not None:
+            columns["participating_mass_ratio_y"] = self.participating_mass_ratio_y
+            columns["participating_mass_ratio_rz"] = self.participating_mass_ratio_rz
+        return _pandas().DataFrame(columns)
 
     def __repr__(self):
         hz = ", ".join(f"{f:.4g}" for f in self.frequencies)
@@ -163,7 +176,10 @@ class Results:
     impacts: the impact log, a structured array (gap, start_time_s, ...,
     peak_force_N, impulse_N_s: impacts.csv's columns);
     peaks: {building: {drift_ratio, floor_acceleration, floor_displacement,
-    residual_drift_ratio (arrays per storey), roof_displacement}};
+    residual_drift_ratio (arrays per storey, along x), roof_displacement};
+    a 3D model's also drift_ratio_y, floor_acceleration_y, floor_displacement_y,
+    residual_drift_ratio_y, time_of_peak_drift_y, floor_rotation (rad) and
+    floor_angular_acceleration (rad/s^2)};
     gaps: {label: summary.json's entry (impacts, peak_force_N, ...)};
     summary: summary.json as a dict; modes: Modes; tables: the other tables
     (drift_profile, acceleration_profile, residual_drift, ...).
@@ -230,12 +246,22 @@ class Results:
         def column(key):
             return np.array([s[key] for s in storeys], dtype=float)
 
-        return {"drift_ratio": column("peak_drift_ratio"),
-                "time_of_peak_drift": column("time_of_peak_drift_s"),
-                "residual_drift_ratio": column("residual_drift_ratio"),
-                "floor_acceleration": column("peak_absolute_floor_acceleration_m_s2"),
-                "floor_displacement": column("peak_floor_displacement_m"),
-                "roof_displacement": building["peak_roof_displacement_m"]}
+        peaks = {"drift_ratio": column("peak_drift_ratio"),
+                 "time_of_peak_drift": column("time_of_peak_drift_s"),
+                 "residual_drift_ratio": column("residual_drift_ratio"),
+                 "floor_acceleration": column("peak_absolute_floor_acceleration_m_s2"),
+                 "floor_displacement": column("peak_floor_displacement_m"),
+                 "roof_displacement": building["peak_roof_displacement_m"]}
+        if storeys and "peak_drift_ratio_y" in storeys[0]:  # a 3D model: along y and about z
+            peaks.update({"drift_ratio_y": column("peak_drift_ratio_y"),
+                          "time_of_peak_drift_y": column("time_of_peak_drift_y_s"),
+                          "residual_drift_ratio_y": column("residual_drift_ratio_y"),
+                          "floor_acceleration_y": column("peak_absolute_floor_acceleration_y_m_s2"),
+                          "floor_displacement_y": column("peak_floor_displacement_y_m"),
+                          "floor_rotation": column("peak_floor_rotation_rad"),
+                          "floor_angular_acceleration":
+                              column("peak_floor_angular_acceleration_rad_s2")})
+        return peaks
 
     def to_dataframe(self, name):
         """Series or table `name` as a pandas DataFrame (ImportError without

@@ -1,0 +1,94 @@
+"""The directions of a 3D run (tests/cli/directions_3d.sh; doc/verification.md,
+"Every direction of a 3D run"). A symmetric, linear 3D building shaken along x
+(X_DIR), along y (Y_DIR: the same motion turned by 90 degrees) and at 45
+degrees (D45_DIR):
+  * every column of floor_displacement.csv, floor_acceleration.csv, drift.csv
+    (mass centres and slab corners) and ground_motion.csv of Y_DIR along y is
+    X_DIR's along x, column for column, and along x X_DIR's along y (none);
+  * at 45 degrees the columns along x and along y are both X_DIR's along x
+    over sqrt(2), and so are the summary's PGA of each axis and the storeys'
+    peaks along x and y;
+  * the torsional irregularity ratios along the axis without drift are null.
+  directions_3d.py X_DIR Y_DIR D45_DIR TOLERANCE"""
+import csv
+import json
+import math
+import os
+import re
+import sys
+
+x_dir, y_dir, d45_dir, tolerance = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+failures = []
+
+
+def table(directory, name):
+    with open(os.path.join(directory, name)) as f:
+        rows = list(csv.reader(f))
+    return {c: [float(r[j]) for r in rows[1:]] for j, c in enumerate(rows[0])}
+
+
+def summary(directory):
+    with open(os.path.join(directory, "summary.json")) as f:
+        return json.load(f)
+
+
+def swapped(name):
+    """The column of the other horizontal axis (x <-> y)."""
+    return re.sub(r"_([xy])(_|$)", lambda m: "_" + "yx"["xy".index(m.group(1))] + m.group(2), name)
+
+
+def along_x(name):
+    return re.search(r"_x(_|$)", name) is not None
+
+
+def agree(what, got, want, scale):
+    error = max(abs(g - w) for g, w in zip(got, want)) / scale
+    if not error <= tolerance:
+        failures.append(f"{what}: relative difference {error:.3g}")
+    return error
+
+
+worst = 0.0
+for name in ("floor_displacement.csv", "floor_acceleration.csv", "drift.csv", "ground_motion.csv"):
+    x, y, d = table(x_dir, name), table(y_dir, name), table(d45_dir, name)
+    columns = [c for c in x if c != "time_s"]
+    if not any(along_x(c) for c in columns) or not all(swapped(c) in x for c in columns):
+        failures.append(f"{name}: no columns along x and y ({', '.join(columns[:4])}, ...)")
+        continue
+    largest = max(max(abs(v) for v in x[c]) for c in columns)
+    for c in columns:
+        scale = max(abs(v) for v in x[c])
+        if scale < 1e-6 * largest:  # a column without motion (round-off): against the file's
+            scale = largest
+        worst = max(worst, agree(f"{name} {swapped(c)} shaken along y against {c} along x",
+                                 y[swapped(c)], x[c], scale))
+        if along_x(c):
+            for other in (c, swapped(c)):
+                worst = max(worst, agree(f"{name} {other} at 45 degrees against {c} / sqrt(2)",
+                                         d[other], [v / math.sqrt(2) for v in x[c]], scale))
+
+sx, sy, sd = summary(x_dir), summary(y_dir), summary(d45_dir)
+pga = sx["ground_motion"]["pga_m_s2"]
+for key, want in (("pga_x_m_s2", pga / math.sqrt(2)), ("pga_y_m_s2", pga / math.sqrt(2))):
+    worst = max(worst, agree(f"summary {key} at 45 degrees", [sd["ground_motion"][key]], [want], pga))
+worst = max(worst, agree("summary pga_x_m_s2 along x", [sx["ground_motion"]["pga_x_m_s2"]], [pga], pga))
+for b, building in enumerate(sx["buildings"]):
+    for i, storey in enumerate(building["storeys"]):
+        peak = storey["peak_drift_ratio"]
+        worst = max(worst, agree(f"storey {i + 1}: peak_drift_ratio_y shaken along y",
+                                 [sy["buildings"][b]["storeys"][i]["peak_drift_ratio_y"]], [peak], peak))
+        for key in ("peak_drift_ratio", "peak_drift_ratio_y"):
+            worst = max(worst, agree(f"storey {i + 1}: {key} at 45 degrees",
+                                     [sd["buildings"][b]["storeys"][i][key]],
+                                     [peak / math.sqrt(2)], peak))
+    for run, still, moving in ((sx, "y", "x"), (sy, "x", "y")):
+        plan = run["buildings"][b]["plan"]
+        for key in ("torsional_irregularity_", "torsional_irregularity_at_peak_"):
+            if any(r is not None for r in plan[key + still]):
+                failures.append(f"{key}{still} without drift along {still}: {plan[key + still]}")
+            if any(r is None for r in plan[key + moving]):
+                failures.append(f"{key}{moving} is null along the axis shaken")
+print(f"largest relative difference {worst:.3g}")
+for f in failures[:10]:
+    print("FAIL " + f)
+sys.exit(1 if failures else 0)

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Nothing silent (doc/verification.md, "Entries without effect"): an entry
+# that has no effect in the model it is in is refused (exit 1, one line naming
+# file, line and entry, nothing written) or, where the run still makes sense,
+# reported as a warning on the terminal and in summary.json:
+#   refused: a 3D entry in a planar model;
+#   warned: a contact law that makes no gap element (3D slabs that face
+#     nothing), a contact-law entry the law does not use, Model/Separations
+#     with one building or beside a Plan/Position for every building it
+#     would place.
+#   silent_entries.sh POUNDFE
+set -u
+poundfe=$1
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+. "$here/expect.sh"
+
+# warned TEXT: after an expect 0, TEXT in stderr as a warning and in summary.json
+warned() {
+  grep -F "poundfe: warning: " stderr | grep -qF -- "$1" || { fail "no warning '$1' on the terminal"; return; }
+  grep -qF -- "$1" out/summary.json || { fail "summary.json lacks '$1'"; return; }
+  echo "ok   warned: $(grep -F -- "$1" stderr | head -1 | head -c 200)"
+}
+
+short() { # the 3D buildings below run 0.05 s of the default ground motion
+  printf 'subsection Time integration\n  set Time step = 0.01\n  set End time = 0.05\nend\n'
+}
+plan_pair() { # two 3D shear buildings; $1: Model entries, $2 and $3: their Plan entries, $4: Contact
+  printf 'subsection Model\n  set Number of buildings = 2\n  set Dimension = 3\n%s\nend\n' "$1"
+  for b in 1 2; do
+    printf 'subsection Building %s\n  set Type = shear\n  set Number of storeys = 2\n' "$b"
+    printf '  set Floor masses = 1000\n  set Storey stiffnesses = 5e6\n'
+    printf '  subsection Plan\n    set Plan dimensions = 6, 6\n%s\n  end\nend\n' "$([ "$b" = 1 ] && echo "$2" || echo "$3")"
+  done
+  printf 'subsection Contact\n%s\nend\n' "$4"
+  printf 'subsection Output\n  set Plots = false\n  set Number of modes = 2\nend\n'
+  short
+}
+
+# refused: a 3D entry in a planar model names its file, line and entry
+shear '  set Number of bays y = 2' > planar.prm
+expect 1 "planar.prm:6: parameter 'Building 1/Number of bays y': acts only with Model/Dimension = 3" run planar.prm --output out
+# warned: Separations when every building after the first has a Position
+plan_pair '  set Separations = 0.05' '    set Position = 0, 0' '    set Position = 6.1, 0' '  set Law = linear' > placed.prm
+expect 0 "results in out" run placed.prm --output out
+warned "placed.prm:4: parameter 'Model/Separations': has no effect: every building after the first has Plan/Position" 
+# ... but with the second building placed by it, the run goes on
+plan_pair '  set Separations = 0.05' '    set Position = 0, 0' '' '  set Law = linear' > separated.prm
+expect 0 "results in out" run separated.prm --output out
+grep -q "warning" stderr && fail "separated.prm warns: $(cat stderr)"
+
+# warned: a contact law with no facing slabs (the second building 20 m east and north)
+plan_pair '' '    set Position = 0, 0' '    set Position = 20, 20' '  set Law = linear' > apart.prm
+expect 0 "results in out" run apart.prm --output out
+warned "apart.prm:27: parameter 'Contact/Law': has no effect: no gap element was made"
+# warned: restitution and damping entries of an undamped law, a given damping's restitution
+plan_pair '  set Separations = 0.05' '' '' "$(printf '  set Law = linear\n  set Coefficient of restitution = 0.5')" > elastic.prm
+expect 0 "results in out" run elastic.prm --output out
+warned "parameter 'Contact/Coefficient of restitution': has no effect: Contact/Law = linear has no damping"
+plan_pair '  set Separations = 0.05' '' '' "$(printf '  set Law = kelvin-voigt\n  set Damping from = given\n  set Damping = 0.1\n  set Coefficient of restitution = 0.5')" > given.prm
+expect 0 "results in out" run given.prm --output out
+warned "parameter 'Contact/Coefficient of restitution': has no effect: Damping from = given uses Damping"
+# warned: Separations with one building
+{ printf 'subsection Model\n  set Separations = 0.05\nend\n'; shear; } > alone.prm
+expect 0 "results in out" run alone.prm --output out
+warned "alone.prm:2: parameter 'Model/Separations': has no effect: the model has one building"
+report "entries without effect"
