@@ -3,8 +3,8 @@
 # on P-Delta), gravity (nodal loads) by LoadControl in 10 steps, held by
 # loadConst -time 0, then 6 s of the synthetic record of record.tcl scaled
 # by 1.5 (a Path with -values), Newmark average acceleration, Newton with
-# NormDispIncr, 5 % Rayleigh damping on the committed stiffness and mass.
-#   argv: OUTPUT_DIR
+# NormDispIncr, 5 % Rayleigh damping on the committed (or initial) stiffness and mass.
+#   argv: OUTPUT_DIR <committed|initial>
 set out [lindex $argv 0]
 source [file join [file dirname [info script]] record.tcl]
 source [file join [file dirname [info script]] rc_section.tcl]
@@ -55,7 +55,15 @@ loadConst -time 0.0
 wipeAnalysis
 # 5 % at the first two modes' circular frequencies (fixed here: ~ 6.9 and 22 rad/s)
 set w1 6.9; set w2 22.0; set zeta 0.05
-rayleigh [expr {2*$zeta*$w1*$w2/($w1 + $w2)}] 0.0 0.0 [expr {2*$zeta/($w1 + $w2)}]
+# argv's second word: the stiffness part of the damping on the committed
+# (default) or the initial stiffness
+set on [expr {$argc > 1 ? [lindex $argv 1] : "committed"}]
+set a0 [expr {2*$zeta*$w1*$w2/($w1 + $w2)}]; set a1 [expr {2*$zeta/($w1 + $w2)}]
+if {$on eq "initial"} {
+    rayleigh $a0 0.0 $a1 0.0
+} else {
+    rayleigh $a0 0.0 0.0 $a1
+}
 timeSeries Path 2 -dt 0.01 -values [synthetic_record 0.01 600 1.5]
 pattern UniformExcitation 2 1 -accel 2
 constraints Plain
