@@ -24,6 +24,7 @@
 #include <deal.II/base/timer.h>
 
 #include <iostream>
+#include <iterator>
 #include <list>
 
 namespace poundfe::commands
@@ -40,8 +41,12 @@ namespace poundfe::commands
       InputParameters input         = file;
       input.contact.links.viscous   = dampers;
       input.contact.bumpers.bumper  = bumper;
-      if (!contact)
-        input.contact.law = "none", input.contact.bumpers.bumper = {};
+      if (!contact) // the bare pair: the file's Contact entries do not act (no warning)
+        {
+          input.contact.law = "none", input.contact.bumpers.bumper = {};
+          for (auto line = input.lines.begin(); line != input.lines.end();)
+            line = line->first.rfind("Contact/", 0) == 0 ? input.lines.erase(line) : std::next(line);
+        }
       return input;
     }
 

@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <regex>
@@ -435,6 +436,10 @@ namespace poundfe::commands
     {
       InputParameters input = file_input;
       input.contact.law     = "none";
+      // none of the file's Contact entries acts on the free responses: not
+      // one is reported as without effect
+      for (auto line = input.lines.begin(); line != input.lines.end();)
+        line = line->first.rfind("Contact/", 0) == 0 ? input.lines.erase(line) : std::next(line);
       if (input.model.buildings.size() < 2)
         input.fail("Model/Number of buildings",
                    "separation needs two or more adjacent buildings, got " +
