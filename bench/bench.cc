@@ -27,6 +27,11 @@
 //   step (Output interval = Time step, no VTU, no plots) as CSV and as
 //   NumPy .npy (Output/Format), against the same run without an output
 //   directory (peaks only); best of `repeats` (10).
+// Step rate: build/poundfe-bench --step-rate [repeats] [MODEL...] [off|csv]
+//   the models of bench/step-rate.txt (default: all of them) with outputs off
+//   (peaks only) and/or with every default CSV output at every step, best of
+//   `repeats` (5), one line per model and case "step-rate MODEL CASE STEPS/S";
+//   bench/check-step-rate.sh compares them with the recorded figures.
 // Modes: build/poundfe-bench --modes [storeys ...]
 //   times the dense and the sparse eigensolver (6 modes, best of 3; the dense
 //   one once above 1000 equations) on generated 3-bay frames with 2 elements
@@ -86,6 +91,7 @@
 #include <fstream>
 #include <iostream>
 #include <set>
+#include <sstream>
 #include <string>
 
 using namespace poundfe;
@@ -221,6 +227,60 @@ namespace
     measure_output_speed("3-storey 1-bay elastic frame",
                          read_parameters("input/three-storey-frame.prm"), repeats);
     measure_output_speed("Bouc-Wen SDOF", read_parameters("input/bouc-wen-sdof.prm"), repeats);
+    return 0;
+  }
+
+  /// The step-rate models: name and input file, from bench/step-rate.txt's
+  /// first two columns (one shared list for this and the check script).
+  std::vector<std::pair<std::string, std::string>>
+  step_rate_models()
+  {
+    std::ifstream in("bench/step-rate.txt");
+    if (!in)
+      throw std::runtime_error("cannot read bench/step-rate.txt (run from the repository root)");
+    std::vector<std::pair<std::string, std::string>> models;
+    std::set<std::string>                            seen;
+    for (std::string line; std::getline(in, line);)
+      {
+        std::istringstream fields(line);
+        std::string        name, file;
+        if (line.empty() || line[0] == '#' || !(fields >> name >> file) || !seen.insert(name).second)
+          continue;
+        models.emplace_back(name, file);
+      }
+    return models;
+  }
+
+  /// Steps/s of the recorded models with outputs off and with CSV at every
+  /// step; `only` names the models to run and the cases (off, csv), each
+  /// all when it names none.
+  int
+  measure_step_rate(const unsigned int repeats, std::set<std::string> only)
+  {
+    const bool off_only = only.erase("off") > 0, csv_only = only.erase("csv") > 0;
+    const bool run_off = off_only || !csv_only, run_csv = csv_only || !off_only;
+    for (const auto &[name, file] : step_rate_models())
+      {
+        if (!only.empty() && !only.count(name))
+          continue;
+        InputParameters input = read_parameters(file);
+        input.output.interval                  = input.time_integration.newmark.time_step;
+        input.output.recorders.output_interval = input.output.interval;
+        unsigned long steps = 0;
+        if (run_off)
+          {
+            const Analysis      analysis   = prepare_analysis(input);
+            const RunParameters parameters = run_parameters(input);
+            const double        off        = best_steps_per_second(
+              analysis, parameters, make_excitation(analysis, parameters.time_history), "",
+              repeats, steps);
+            std::printf("step-rate %s off %.0f\n", name.c_str(), off);
+          }
+        if (run_csv)
+          std::printf("step-rate %s csv %.0f\n", name.c_str(),
+                      output_speed(input, OutputFormat::csv, repeats, steps).first);
+        std::fflush(stdout);
+      }
     return 0;
   }
 
@@ -631,6 +691,7 @@ namespace
     "       poundfe-bench --partitioned FILE [END [SAVE]]  the model over the ranks by building\n"
     "       poundfe-bench --serial FILE [END [SAVE]]       the same on one process (reference)\n"
     "       poundfe-bench --bifurcation FILE    the values of FILE's Bifurcation section\n"
+    "       poundfe-bench --step-rate [REPEATS [MODEL...] [off|csv]]  bench/step-rate.txt\n"
     "       poundfe-bench --modes [STOREYS...]  dense against sparse eigensolver\n"
     "       poundfe-bench --reliability [FILE]  limit-state evaluations per second\n"
     "       poundfe-bench --help\n"
@@ -648,7 +709,7 @@ try
     }
   if (argc > 1 && argv[1][0] == '-' &&
       !std::set<std::string>{"--montecarlo", "--distributed", "--partitioned", "--serial",
-                             "--bifurcation", "--output",
+                             "--bifurcation", "--output", "--step-rate",
                              "--modes", "--reliability"}
          .count(argv[1]))
     {
@@ -672,6 +733,9 @@ try
     return measure_reliability(argc > 2 ? argv[2] : "input/thesis-cantilever-reliability.prm");
   if (argc > 1 && std::string(argv[1]) == "--output")
     return measure_output(argc > 2 ? std::stoi(argv[2]) : 10);
+  if (argc > 1 && std::string(argv[1]) == "--step-rate")
+    return measure_step_rate(argc > 2 ? std::stoi(argv[2]) : 5,
+                             std::set<std::string>(argv + std::min(argc, 3), argv + argc));
   if (argc > 1 && std::string(argv[1]) == "--modes")
     {
       std::vector<unsigned int> storeys;

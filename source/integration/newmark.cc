@@ -650,8 +650,14 @@ namespace poundfe
         std::copy(L.base_values.begin(), L.base_values.end(), L.effective.valuePtr());
         L.holds_tangent = false;
       }
-    residual.noalias() = start_residual - L.effective * step_displacement;
-    if (!system.modal_damping.empty()) // the modal part of K_eff: c U D U^T
+    // A step's first iterate from u_n (no friction) has du = 0: r = r_0 to
+    // the bit, without the sparse products.
+    const bool from_start = (step_displacement.array() == 0.0).all();
+    if (from_start)
+      residual = start_residual;
+    else
+      residual.noalias() = start_residual - L.effective * step_displacement;
+    if (!from_start && !system.modal_damping.empty()) // the modal part of K_eff: c U D U^T
       {
         product.setZero();
         add_low_rank_damping_product(system.modal_damping, step_displacement, product);

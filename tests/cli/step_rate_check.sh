@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# bench/check-step-rate.sh and poundfe-bench --step-rate, untimed: against a
+# stand-in benchmark and table the script prints each figure's change in per
+# cent and exits 1 only when one fell by more than -t; the real benchmark
+# prints one "step-rate MODEL CASE STEPS/S" line per case asked for, and every
+# model of bench/step-rate.txt names an input that exists.
+#   step_rate_check.sh POUNDFE_BENCH   (from the repository root)
+set -u
+bench=$1 root=$PWD
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL $*"; exit 1; }
+
+mkdir -p "$work/bench"
+cat > "$work/bench/step-rate.txt" <<'TABLE'
+# recorded: abc1234, 2026-01-01, load average 0.1
+# model  input      off   csv
+one      one.prm    1000  2000
+two      two.prm    4000  1
+TABLE
+cat > "$work/fake-bench" <<'FAKE'
+#!/usr/bin/env bash
+echo "step-rate one off 900"
+echo "step-rate one csv 2500"
+echo "step-rate two off 4000"
+echo "step-rate new off 10"
+FAKE
+chmod +x "$work/fake-bench"
+cd "$work"
+out=$(bash "$root/bench/check-step-rate.sh" -r 1 -b "$work/fake-bench") || fail "exit status $? without -t"
+echo "$out"
+grep -q '^recorded: abc1234' <<< "$out" || fail "no recorded commit"
+grep -Eq '^one +off +recorded +1000 +today +900 +-10.0 %$' <<< "$out" || fail "one off: not -10.0 %"
+grep -Eq '^one +csv +recorded +2000 +today +2500 +\+25.0 %$' <<< "$out" || fail "one csv: not +25.0 %"
+grep -Eq '^two +off +recorded +4000 +today +4000 +\+0.0 %$' <<< "$out" || fail "two off: not +0.0 %"
+grep -Eq '^new +off +recorded +- +today +10$' <<< "$out" || fail "a model without a recorded figure"
+bash "$root/bench/check-step-rate.sh" -r 1 -b "$work/fake-bench" -t 20 > /dev/null ||
+  fail "-t 20 fails on a 10 % fall"
+bash "$root/bench/check-step-rate.sh" -r 1 -b "$work/fake-bench" -t 5 > /dev/null &&
+  fail "-t 5 passes a 10 % fall"
+cd "$root"
+
+out=$("$bench" --step-rate 1 bouc-wen-sdof off) || fail "poundfe-bench --step-rate: exit status $?"
+echo "$out"
+grep -Eq '^step-rate bouc-wen-sdof off [1-9][0-9]*$' <<< "$out" && [ "$(wc -l <<< "$out")" -eq 1 ] ||
+  fail "not one line for bouc-wen-sdof off"
+grep -v '^#' bench/step-rate.txt | while read -r model input off csv; do
+  [ -z "$model" ] && continue
+  [ -r "$input" ] || fail "$model: no $input"
+  [ "${off:-0}" -gt 0 ] && [ "${csv:-0}" -gt 0 ] || fail "$model: no recorded figures"
+done || exit 1
+echo "step-rate check: passed"
