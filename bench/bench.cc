@@ -84,6 +84,7 @@
 #include <poundfe/reliability/limit_state.h>
 #include <poundfe/reliability/sampling.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -259,7 +260,11 @@ namespace
   {
     const bool off_only = only.erase("off") > 0, csv_only = only.erase("csv") > 0;
     const bool run_off = off_only || !csv_only, run_csv = csv_only || !off_only;
-    for (const auto &[name, file] : step_rate_models())
+    const auto models  = step_rate_models();
+    for (const std::string &name : only)
+      if (std::none_of(models.begin(), models.end(), [&](const auto &m) { return m.first == name; }))
+        throw std::runtime_error("no model '" + name + "' in bench/step-rate.txt");
+    for (const auto &[name, file] : models)
       {
         if (!only.empty() && !only.count(name))
           continue;

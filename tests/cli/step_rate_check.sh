@@ -2,7 +2,8 @@
 # bench/check-step-rate.sh and poundfe-bench --step-rate, untimed: against a
 # stand-in benchmark and table the script prints each figure's change in per
 # cent and exits 1 only when one fell by more than -t; the real benchmark
-# prints one "step-rate MODEL CASE STEPS/S" line per case asked for, and every
+# prints one "step-rate MODEL CASE STEPS/S" line per case asked for and
+# refuses a model the table does not have, and every
 # model of bench/step-rate.txt names an input that exists.
 #   step_rate_check.sh POUNDFE_BENCH   (from the repository root)
 set -u
@@ -44,6 +45,7 @@ out=$("$bench" --step-rate 1 bouc-wen-sdof off) || fail "poundfe-bench --step-ra
 echo "$out"
 grep -Eq '^step-rate bouc-wen-sdof off [1-9][0-9]*$' <<< "$out" && [ "$(wc -l <<< "$out")" -eq 1 ] ||
   fail "not one line for bouc-wen-sdof off"
+"$bench" --step-rate 1 no-such-model > /dev/null 2>&1 && fail "--step-rate takes a model the table does not have"
 grep -v '^#' bench/step-rate.txt | while read -r model input off csv; do
   [ -z "$model" ] && continue
   [ -r "$input" ] || fail "$model: no $input"
