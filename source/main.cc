@@ -5,7 +5,7 @@
 //
 // Why a module: deal.II links PETSc, SLEPc, Trilinos, OpenCASCADE, Gmsh and
 // MPI unconditionally, ~200 shared libraries whose ~320 000 symbol
-// relocations take the dynamic loader 0.15-0.4 s before main runs
+// relocations take the dynamic loader 0.4-0.6 s of CPU before main runs
 // (doc/benchmarks.md, "Start-up"). The executable itself links only the C and
 // C++ runtimes, so that the version line costs a millisecond; every command
 // needs deal.II and pays that load once, as before.

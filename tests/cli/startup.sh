@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Start-up: the executable links only the C and C++ runtimes and answers a
 # lone --version without loading deal.II (nor MPI, PETSc, Trilinos: the
-# ~200 libraries whose relocations cost 0.15-0.4 s, doc/benchmarks.md
+# ~200 libraries whose relocations cost 0.4-0.6 s of CPU, doc/benchmarks.md
 # "Start-up"); every other command line runs the program module
 # poundfe-program.so beside it, whose --version says the same line; without
 # the module the executable says so in one line and exits 1.
