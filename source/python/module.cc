@@ -265,7 +265,7 @@ PYBIND11_MODULE(_core, m)
 {
   using namespace poundfe::python;
   m.doc() = "poundfe's compiled core; use the package poundfe.";
-  // As main.cc: deal.II's errors are exceptions, and one thread (the
+  // As program.cc: deal.II's errors are exceptions, and one thread (the
   // numbers do not depend on a thread count).
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::MultithreadInfo::set_thread_limit(1);

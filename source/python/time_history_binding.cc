@@ -217,7 +217,7 @@ namespace poundfe::python
     }
 
     /// MPI (and PETSc) for the commands that need it, initialised once on
-    /// demand as main.cc does, and finalised when Python exits.
+    /// demand as program.cc does, and finalised when Python exits.
     dealii::Utilities::MPI::MPI_InitFinalize *mpi = nullptr;
 
     void

@@ -26,6 +26,9 @@ if [ -n "$python" ]; then
   for file in "$source"/source/python/poundfe/*.py; do expected+=("$pydir/poundfe/$(basename "$file")"); done
 fi
 for file in "${expected[@]}"; do [ -f "$prefix/$file" ] || fail "not installed: $file"; done
+# the program module bin/poundfe loads, in LIBDIR/poundfe (CMakeLists.txt)
+[ -n "$(find "$prefix/lib" -path '*/poundfe/poundfe-program.so' 2> /dev/null)" ] ||
+  fail "no lib/.../poundfe/poundfe-program.so"
 # and nothing else at its top: no test, bench or build file
 top=$(cd "$prefix" && ls | tr '\n' ' ')
 [ "$top" = "bin lib share " ] || [ "$top" = "bin share " ] || fail "unexpected top of the tree: $top"

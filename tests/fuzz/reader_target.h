@@ -1,7 +1,7 @@
 // What every libFuzzer target of a reader does with one input: write the
 // bytes to a scratch file (scratch_file.h), hand its path to the reader and
 // accept only poundfe's own InputError. Any other exception is a finding
-// (main.cc would print it, but it means a check is missing): the target
+// (program.cc would print it, but it means a check is missing): the target
 // aborts, which libFuzzer reports with the input. Crashes, sanitizer reports
 // and hangs are findings by themselves.
 #ifndef POUNDFE_TESTS_FUZZ_READER_TARGET_H

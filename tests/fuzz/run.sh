@@ -129,11 +129,12 @@ for file in $(printf '%s\n' "${instrumented[@]}" | sort -u) "${harnesses[@]}"; d
   fi
   case $file in tests/fuzz/*) ;; *) objects+=("$object") ;; esac
 done
-# the engine's link line (libraries of deal.II and its dependencies)
-libraries=$(sed -e 's/^[^ ]* //' -e 's#CMakeFiles/poundfe.dir/source/main.cc.o##' -e 's#-o poundfe##' \
+# the program module's link line (libraries of deal.II and its dependencies)
+libraries=$(sed -e 's/^[^ ]* //' -e 's#CMakeFiles/poundfe_program.dir/source/program.cc.o##' \
+                -e 's#-o poundfe-program.so##' -e 's#\(^\| \)-shared\( \|$\)# #' \
                 -e "s#libpoundfe_core.a#$build/libpoundfe_core.a#" \
-                -e 's#CMakeFiles/poundfe.dir/__/revision.cc.o##; s#CMakeFiles/poundfe.dir/revision.cc.o##' \
-                "$build/CMakeFiles/poundfe.dir/link.txt")
+                -e 's#CMakeFiles/poundfe_program.dir/revision.cc.o##' \
+                "$build/CMakeFiles/poundfe_program.dir/link.txt")
 for target in $targets; do
   binary=$work/fuzz_$target
   object=$work/objects/tests_fuzz_fuzz_$target.cc.o

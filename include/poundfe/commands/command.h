@@ -1,4 +1,4 @@
-// A command of the poundfe command line: what main.cc, the usage text and
+// A command of the poundfe command line: what program.cc, the usage text and
 // the output guard know of it (one row of the table in command_table.cc).
 // A command reads its input, calls the engines and writes their results;
 // engines never write files of their own accord.

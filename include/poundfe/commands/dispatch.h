@@ -1,11 +1,11 @@
 // The one way a command of the table runs, shared by the command line
-// (source/main.cc) and the Python module (poundfe.command): the command
+// (source/program.cc) and the Python module (poundfe.command): the command
 // line checked against the row (its arguments, --realizations, --set), the
 // parameter file read with the overrides, MPI started when the row or the
 // input needs it, the input checked against the row's rules (a distributed
 // solver on several ranks, Partition = buildings, field output), the ranks'
 // agreement, then the command inside guard_command. The callers keep their
-// own parsing and how they report: main.cc prints a message and exits with
+// own parsing and how they report: program.cc prints a message and exits with
 // a status, Python raises the message as an exception.
 #ifndef poundfe_commands_dispatch_h
 #define poundfe_commands_dispatch_h
@@ -58,7 +58,7 @@ namespace poundfe
   };
 
   /// How the caller starts MPI (with PETSc and Trilinos) when the row or
-  /// the input needs it: main.cc from its own argc and argv, Python once
+  /// the input needs it: program.cc from its own argc and argv, Python once
   /// per process. Called only while MPI is not initialised.
   using MpiStarter = std::function<void()>;
 

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Start-up: the executable links only the C and C++ runtimes and answers a
+# lone --version without loading deal.II (nor MPI, PETSc, Trilinos: the
+# ~200 libraries whose relocations cost 0.4-0.6 s of CPU, doc/benchmarks.md
+# "Start-up"); every other command line runs the program module
+# poundfe-program.so beside it, whose --version says the same line; without
+# the module the executable says so in one line and exits 1.
+# Argument: the poundfe executable of the build tree.
+set -u
+poundfe=$(realpath "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+fail() { echo "FAIL $*"; exit 1; }
+
+# 1. What the executable links: the runtimes, nothing of deal.II's.
+needed=$(readelf -d "$poundfe" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p' | sort | tr '\n' ' ')
+for library in $needed; do
+  case $library in
+    libc.so.* | libm.so.* | libstdc++.so.* | libgcc_s.so.* | libdl.so.*) ;;
+    *) fail "poundfe links $library (all: $needed)" ;;
+  esac
+done
+echo "ok   poundfe links only $needed"
+
+# 2. A lone --version loads no other library (the loader's own log).
+LD_DEBUG=files LD_DEBUG_OUTPUT="$work/loader" "$poundfe" --version > version || fail "--version exited $?"
+loaded=$(cat "$work"/loader.* | grep -c 'file=.*\[0\];  needed by\|file=.*\[0\];  dynamically loaded by')
+grep -q 'file=libdeal\|poundfe-program' "$work"/loader.* && fail "--version loaded deal.II or the program"
+grep -Eq '^poundfe \(git [^)]+\), deal\.II [0-9]+\.[0-9]+\.[0-9]+$' version || fail "--version said: $(cat version)"
+echo "ok   --version: $(cat version), $loaded libraries loaded"
+
+# 3. --version among other words goes to the program, which says the same.
+"$poundfe" modal --version > program-version || fail "modal --version exited $?"
+cmp -s version program-version || fail "the program's version line differs: $(cat program-version)"
+"$poundfe" --version --nonsense 2> stderr && fail "--version --nonsense was accepted"
+grep -q "unknown option '--nonsense'" stderr || fail "--version --nonsense: $(cat stderr)"
+echo "ok   the program module answers --version alike and checks the other words"
+
+# 4. Without the module beside it (nor installed relative to it).
+mkdir alone && cp "$poundfe" alone/
+alone/poundfe --version | cmp -s - version || fail "--version needs the module"
+alone/poundfe modal x.prm > stdout 2> stderr && fail "ran without its module"
+[ "$(wc -l < stderr)" -eq 1 ] && grep -q "poundfe: error: cannot load the program" stderr ||
+  fail "without the module: $(cat stderr)"
+echo "ok   without the module: $(cat stderr)"
