@@ -316,7 +316,7 @@ namespace poundfe
       for (const unsigned int h : chosen)
         for (unsigned int i = 0; fibre_section_of(elements[h], i) != nullptr; ++i)
           {
-            points->push_back({h, i});
+            points->push_back({{h, i}});
             kinds->push_back(fibre_kinds(fibre_section_of(elements[h], i)->geometry()));
             const std::string at = elements[h].label + "_ip" + std::to_string(i + 1);
             for (const char *c : {"_N_N", "_M_N_m", "_eps0", "_kappa_1_m", "_concrete_strain",
