@@ -103,7 +103,8 @@ namespace poundfe
       for (unsigned int i = 0; i < m.sections.size(); ++i)
         {
           const FibreSection &section = *fibre_section(*m.element, i);
-          const double        yield = m.sections[i].limits().strain[unsigned(SectionLimit::bar_yield)];
+          const double yield =
+            m.sections[i].limits().strain[unsigned(SectionLimit::bar_yield)];
           if (std::isnan(yield)) // no bars: no yield curvature
             continue;
           const double n = section.resultant()[0]; // the gravity state's axial force
@@ -155,7 +156,8 @@ namespace poundfe
           .value("peak_concrete_strain", per_point(m, [](auto &s) { return s.peaks().concrete; }))
           .value("peak_core_strain", per_point(m, [](auto &s) { return s.peaks().core; }))
           .value("peak_steel_strain_max", per_point(m, [](auto &s) { return s.peaks().steel_max; }))
-          .value("peak_steel_strain_min", per_point(m, [](auto &s) { return s.peaks().steel_min; }));
+          .value("peak_steel_strain_min",
+                 per_point(m, [](auto &s) { return s.peaks().steel_min; }));
         json.begin_object("limits");
         for (unsigned int l = 0; l < n_section_limits; ++l)
           {

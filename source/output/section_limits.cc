@@ -173,6 +173,8 @@ namespace poundfe
             steel       = true;
           }
       }
+    if (!core) // no concrete with a crushing limit: a given one applies to all
+      e.core = e.concrete;
     return e;
   }
 
@@ -183,20 +185,21 @@ namespace poundfe
     const std::vector<FibreKind> kinds = fibre_kinds(g);
     const bool concrete = has(kinds, FibreKind::concrete) || has(kinds, FibreKind::core);
     const bool steel    = has(kinds, FibreKind::steel);
-    double     own_crushing = 0, own_rupture = 0; // the least severe of the section's own
+    double     own_crushing = 0, own_rupture = 0; // the first reached of the section's own
     for (unsigned int i = 0; i < kinds.size(); ++i)
       {
         const SectionMaterial &m = g.materials[g.fibres[i].material];
         if (kinds[i] == FibreKind::core)
-          own_crushing = own_crushing == 0 ? m.min_strain : std::min(own_crushing, m.min_strain);
+          own_crushing = own_crushing == 0 ? m.min_strain : std::max(own_crushing, m.min_strain);
         if (kinds[i] == FibreKind::steel && m.max_strain > 0)
           own_rupture = own_rupture == 0 ? m.max_strain : std::min(own_rupture, m.max_strain);
       }
     SectionStrainLimits l;
     auto &s = l.strain;
     s[unsigned(SectionLimit::spalling)] = concrete ? parameters.spalling_strain : not_checked;
-    s[unsigned(SectionLimit::crushing)] =
-      !has(kinds, FibreKind::core) && std::isnan(parameters.crushing_strain) ? not_checked :
+    s[unsigned(SectionLimit::crushing)] = // a given limit: on every concrete fibre without core
+      !concrete || (!has(kinds, FibreKind::core) && std::isnan(parameters.crushing_strain)) ?
+      not_checked :
       std::isnan(parameters.crushing_strain) ? own_crushing : parameters.crushing_strain;
     const double yield = std::isnan(parameters.yield_strain) ? law_yield_strain(section, kinds) :
                                                                parameters.yield_strain;

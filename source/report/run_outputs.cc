@@ -174,8 +174,8 @@ namespace poundfe
             }
           if (!ranks) // a rank of a partitioned run sees only its part of the members
             {
-              section_limits =
-                std::make_unique<SectionLimitStates>(analysis.model, elements, parameters.section_limits);
+              section_limits = std::make_unique<SectionLimitStates>(analysis.model, elements,
+                                                                    parameters.section_limits);
               if (!section_limits->empty())
                 observers.push_back(section_limits.get());
             }

@@ -84,6 +84,36 @@ BOOST_AUTO_TEST_CASE(bar_yield_spalling_and_fracture_of_an_imposed_curvature)
   BOOST_CHECK_EQUAL(std::string(damage_state_name(tracker.worst_limit())), "fracture");
 }
 
+BOOST_AUTO_TEST_CASE(a_given_crushing_strain_applies_to_concrete_without_a_core)
+{
+  // Concrete01 fibres without min= (no core) at +-0.2 m: with Crushing
+  // strain = -0.01 the fibre at +0.2 m reaches it at kappa = 0.05, t = 0.5 s
+  FibreGeometry   g;
+  SectionMaterial concrete;
+  concrete.name = "concrete";
+  concrete.law  = {"Concrete01", {{"fpc", -30e6}, {"epsc0", -0.002}, {"fpcu", -6e6},
+                                  {"epscu", -0.006}}};
+  g.add_material(concrete);
+  g.fibres = {{0.2, 0, 0.01, 0}, {-0.2, 0, 0.01, 0}};
+  FibreSection section(g, 2);
+  InputFile    input;
+  SectionLimitParameters parameters;
+  BOOST_CHECK(std::isnan(section_strain_limits(section, parameters)
+                           .strain[unsigned(SectionLimit::crushing)])); // nothing to check
+  parameters.crushing_text = "-0.01";
+  parameters.finalize(input);
+  SectionLimitTracker tracker(section, section_strain_limits(section, parameters));
+  for (double t = 0; t < 0.8; t += 0.013)
+    {
+      BOOST_REQUIRE(section.set_trial(curvature(0.1 * t)));
+      section.commit();
+      tracker.observe(section, t);
+    }
+  BOOST_CHECK_CLOSE(tracker.first_time(SectionLimit::crushing), 0.5, 1e-6);
+  BOOST_CHECK(std::isnan(tracker.ratio(SectionLimit::bar_yield))); // no bars
+  BOOST_CHECK(std::isnan(tracker.curvature_ductility()));
+}
+
 BOOST_AUTO_TEST_CASE(first_yield_curvature_of_symmetric_bars)
 {
   FibreGeometry   g;

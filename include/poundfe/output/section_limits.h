@@ -5,7 +5,7 @@
 // moment-curvature engine (sections/moment_curvature.h) bending either way,
 // and the extreme fibre strains against four strain limits, after the
 // limit states of Priestley, Calvi & Kowalsky (2007), Displacement-Based
-// Seismic Design of Structures, IUSS Press, §4.2.5 and §5.2.2:
+// Seismic Design of Structures, IUSS Press, ch. 4 (their strain limits):
 //   spalling  the most compressed concrete fibre reaches eps_sp (default
 //             -0.004, their serviceability concrete strain),
 //   crushing  the most compressed core fibre reaches eps_cu (default the
@@ -98,8 +98,8 @@ namespace poundfe
   std::vector<FibreKind> fibre_kinds(const FibreGeometry &geometry);
 
   /// The extreme strains of a section's fibres: the most compressed
-  /// concrete fibre (core included), the most compressed core fibre, the
-  /// largest and smallest steel strain (0 where the section has none).
+  /// concrete fibre (core included), the most compressed core fibre (any
+  /// concrete without core), the extreme steel strains (0: none such).
   struct ExtremeStrains
   {
     double concrete = 0, core = 0, steel_max = 0, steel_min = 0;
