@@ -53,7 +53,7 @@ namespace poundfe
   run_parameters(const InputParameters &input)
   {
     return {time_history_parameters(input), input.output, input.spectrum, input.drift_limits,
-            input.contact};
+            input.contact,                 input.section_limits};
   }
 
   Excitation

@@ -235,6 +235,7 @@ namespace poundfe
     bifurcation.declare(prm);
     site_hazard.declare(prm);
     drift_limits.declare(prm);
+    section_limits.declare(prm);
     separation.declare(prm);
     mitigation.declare(prm);
     spectrum.declare(prm);
@@ -280,6 +281,7 @@ namespace poundfe
     bifurcation.check(*this);
     site_hazard.check(*this);
     drift_limits.finalize(*this);
+    section_limits.finalize(*this);
     separation.check(*this, model.buildings.size());
     mitigation.check(*this);
     spectrum.check(*this);
@@ -370,7 +372,7 @@ namespace poundfe
     // entries that change how many realizations run or how they are
     // reported, never what one realization computes
     const auto neutral = [](const std::string &path) {
-      for (const char *section : {"Output/", "Drift limits/"})
+      for (const char *section : {"Output/", "Drift limits/", "Section limits/"})
         if (path.rfind(section, 0) == 0)
           return true;
       for (const char *entry : {"Monte Carlo/Realizations", "Fragility/Realizations per level",

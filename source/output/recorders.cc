@@ -6,6 +6,8 @@
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
+#include <poundfe/output/section_limits.h>
+#include <poundfe/elements/member_element.h>
 #include <poundfe/output/storey_forces.h>
 
 #include <deal.II/base/exceptions.h>
@@ -46,7 +48,8 @@ namespace poundfe
       {RecordedQuantity::energy, "energy", "energy"},
       {RecordedQuantity::ground_motion, "ground motion", "ground_motion"},
       {RecordedQuantity::phase_portrait, "phase portrait", "phase_portrait"},
-      {RecordedQuantity::corner_acceleration, "corner acceleration", "corner_acceleration"}};
+      {RecordedQuantity::corner_acceleration, "corner acceleration", "corner_acceleration"},
+      {RecordedQuantity::section_states, "section states", "sections"}};
 
     const QuantityInfo &
     info(const RecordedQuantity q)
@@ -288,6 +291,56 @@ namespace poundfe
                   }
               },
               owners_of(Owner::element, chosen, 3)};
+    }
+
+    /// The fibre section at point i of element e (nullptr: not a fibre member).
+    const FibreSection *
+    fibre_section_of(const NonlinearElement &e, const unsigned int i)
+    {
+      const auto *member = dynamic_cast<const MemberElement<2> *>(&e);
+      return member && i < member->member().n_points() ?
+               dynamic_cast<const FibreSection *>(&member->member().section(i)) :
+               nullptr;
+    }
+
+    /// At each integration point of the fibre members `chosen`: N, M, eps0,
+    /// kappa and the extreme fibre strains (output/section_limits.h).
+    Series
+    section_state_series(const NonlinearElements &elements, const std::vector<unsigned int> &chosen)
+    {
+      constexpr unsigned int n_per_point = 7;
+      std::vector<std::string> columns;
+      std::vector<ColumnOwner> owners;
+      auto points = std::make_shared<std::vector<std::array<unsigned int, 2>>>(); // element, point
+      auto kinds  = std::make_shared<std::vector<std::vector<FibreKind>>>();
+      for (const unsigned int h : chosen)
+        for (unsigned int i = 0; fibre_section_of(elements[h], i) != nullptr; ++i)
+          {
+            points->push_back({{h, i}});
+            kinds->push_back(fibre_kinds(fibre_section_of(elements[h], i)->geometry()));
+            const std::string at = elements[h].label + "_ip" + std::to_string(i + 1);
+            for (const char *c : {"_N_N", "_M_N_m", "_eps0", "_kappa_1_m", "_concrete_strain",
+                                  "_steel_strain_max", "_steel_strain_min"})
+              columns.push_back(at + c);
+            owners.insert(owners.end(), n_per_point, ColumnOwner{Owner::element, h});
+          }
+      return {columns,
+              [points, kinds](const ResponseView &s, std::vector<double> &to) {
+                to.assign(n_per_point * points->size(), 0); // another rank's: 0
+                for (unsigned int p = 0; p < points->size(); ++p)
+                  {
+                    const auto [h, i] = (*points)[p];
+                    if (!s.observes_element(h))
+                      continue;
+                    const FibreSection  &section = *fibre_section_of(s.elements[h], i);
+                    const ExtremeStrains e       = extreme_strains(section, (*kinds)[p]);
+                    const double row[n_per_point] = {
+                      section.resultant()[0], section.resultant()[1], section.deformation()[0],
+                      section.deformation()[1], e.concrete, e.steel_max, e.steel_min};
+                    std::copy(row, row + n_per_point, to.begin() + n_per_point * p);
+                  }
+              },
+              owners};
     }
 
     /// Force and penetration of the gap elements `chosen`.
@@ -554,6 +607,25 @@ namespace poundfe
               return {plan->corner_acceleration_names(), copy(plan->corner_accelerations()),
                       owners};
             }
+          case RecordedQuantity::section_states:
+            {
+              std::vector<unsigned int> chosen = elements_named(
+                request.labels, state.model, elements, 0, elements.size(),
+                [&](const unsigned int h, const unsigned int b) {
+                  return elements[h].building == b;
+                },
+                "section states", "fibre member", "A_C1.1 or A_B2.1", input_file, line);
+              chosen.erase(std::remove_if(chosen.begin(), chosen.end(),
+                                          [&](const unsigned int h) {
+                                            return !fibre_section_of(elements[h], 0);
+                                          }),
+                           chosen.end());
+              if (chosen.empty())
+                throw InputError(input_file, line, "Output/Recorders/Record",
+                                 "'section states': no fibre member among those asked for "
+                                 "(Building <i>/Member model = fibre)");
+              return section_state_series(elements, chosen);
+            }
           case RecordedQuantity::residual_drift:
             break; // not a time series
         }
@@ -738,7 +810,10 @@ namespace poundfe
                       "models. Storey and base shear are element forces "
                       "(Rayleigh damping excluded, storey dashpots included). 'corner "
                       "acceleration' (3D models) is the absolute acceleration of every slab "
-                      "corner along x and y. Unit: -.");
+                      "corner along x and y. 'section states' (fibre members) records at each "
+                      "integration point N, M, eps0, kappa and the extreme concrete and steel "
+                      "fibre strains, of all fibre members or 'section states of A_C1.1, B' "
+                      "(members or buildings). Unit: -.");
   }
 
   void
@@ -804,6 +879,7 @@ namespace poundfe
         const bool needs_labels = request.quantity == RecordedQuantity::member_forces;
         const bool takes_labels = needs_labels ||
                                   request.quantity == RecordedQuantity::hinge_states ||
+                                  request.quantity == RecordedQuantity::section_states ||
                                   request.quantity == RecordedQuantity::gap_states;
         if (needs_labels && request.labels.empty())
           throw std::invalid_argument("'" + name + "' needs the members: '" + name +
@@ -885,7 +961,8 @@ namespace poundfe
       return "";
     const std::string name = info(table.quantity).name;
     const bool        named = table.quantity == RecordedQuantity::hinge_states ||
-                       table.quantity == RecordedQuantity::gap_states;
+                       table.quantity == RecordedQuantity::gap_states ||
+                       table.quantity == RecordedQuantity::section_states;
     std::ostringstream note;
     note << std::fixed;
     note.precision(1);

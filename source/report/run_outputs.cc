@@ -12,6 +12,7 @@
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
 #include <poundfe/output/response_range.h>
+#include <poundfe/output/section_limit_states.h>
 #include <poundfe/output/memory_results.h>
 #include <poundfe/output/vtu_series.h>
 
@@ -107,6 +108,8 @@ namespace poundfe
       BaseShearPeaks base_shears;
       PlanResponse   plan;
       std::unique_ptr<FloorSpectra> spectra; // with floor spectra
+      // the fibre members' limit states, for the summary (one process only)
+      std::unique_ptr<SectionLimitStates> section_limits;
       std::vector<std::unique_ptr<StepObserver>> outputs;
       Observers      observers;
     };
@@ -169,10 +172,18 @@ namespace poundfe
               else
                 files.insert(files.end(), {"solution.pvd", "solution/"}); // the index, the frames
             }
+          if (!ranks) // a rank of a partitioned run sees only its part of the members
+            {
+              section_limits = std::make_unique<SectionLimitStates>(analysis.model, elements,
+                                                                    parameters.section_limits);
+              if (!section_limits->empty())
+                observers.push_back(section_limits.get());
+            }
           if (writes)
             outputs.push_back(std::make_unique<RunSummary>(
               analysis, parameters, excitation, peaks, range, base_shears, plan, directory,
-              options.plots && output.plots, solver, tangent_update, files, memory));
+              options.plots && output.plots, solver, tangent_update, files, memory,
+              section_limits && !section_limits->empty() ? section_limits.get() : nullptr));
         }
       if (options.progress && writes)
         outputs.push_back(std::make_unique<ProgressReport>(n_steps));

@@ -4,6 +4,7 @@
 #include <poundfe/report/run_plots.h>
 #include <poundfe/assembly/iterative_solver.h>
 #include <poundfe/output/drift_limits.h>
+#include <poundfe/output/section_limit_states.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/dynamics/modal_damping_assembly.h>
 #include <poundfe/model/parameters.h>
@@ -138,7 +139,8 @@ namespace poundfe
                          const ResponseRange &range, const BaseShearPeaks &base_shears,
                          const PlanResponse &plan, const std::string &directory, const bool plots,
                          const std::string &solver, const std::string &tangent_update,
-                         std::vector<std::string> files, MemoryResults *memory)
+                         std::vector<std::string> files, MemoryResults *memory,
+                         const SectionLimitStates *section_limits)
     : analysis(analysis)
     , parameters(parameters)
     , excitation(excitation)
@@ -152,6 +154,7 @@ namespace poundfe
     , base_shears(base_shears)
     , plan(plan)
     , memory(memory)
+    , section_limits(section_limits)
   {}
 
   void
@@ -209,12 +212,16 @@ namespace poundfe
   {
     const Model         &model  = analysis.model;
     const FloorResponse &floors = peaks.floors();
-    std::string drift = "building,storey,peak_drift_ratio,time_of_peak_s\n";
+    // fibre members: each storey's damage state (its worst member's limit)
+    std::string drift = std::string("building,storey,peak_drift_ratio,time_of_peak_s") +
+                        (section_limits ? ",damage_state\n" : "\n");
     std::string accel = "building,floor,peak_absolute_acc_m_s2,peak_floor_disp_m\n";
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       for (unsigned int f = 0; f < model.buildings[b].floors.size(); ++f)
         {
           const unsigned int i    = floors.index(b, f);
+          const std::vector<int> damage =
+            section_limits ? section_limits->storey_worst_limits(model, b) : std::vector<int>();
           const std::string  name = model.buildings[b].name + "," + std::to_string(f + 1) + ",";
           // every number in the shortest text that reads back exactly
           // (std::to_string kept 6 decimals: 3 digits of a drift ratio)
@@ -222,6 +229,8 @@ namespace poundfe
           append_number(drift, floors.peak_drift_ratio()[i]);
           drift += ',';
           append_number(drift, floors.peak_drift_time()[i]);
+          if (section_limits)
+            drift += std::string(",") + damage_state_name(damage[f]);
           drift += '\n';
           accel += name;
           append_number(accel, floors.peak_acceleration()[i]);
@@ -338,6 +347,8 @@ namespace poundfe
     write_buildings(json);
     if (peaks.n_hysteretic() > 0)
       write_hinges(json, state);
+    if (section_limits)
+      section_limits->write_json(json, analysis.model);
     if (peaks.n_gaps() > 0)
       write_gaps(json, state);
     write_springs_and_friction(json, state, peaks, status.end_time);
@@ -396,6 +407,13 @@ namespace poundfe
           }
         json.end_array();
         write_drift_checks(json, b);
+        if (section_limits) // each storey's worst member (theory §13.5)
+          {
+            std::vector<std::string> states;
+            for (const int worst : section_limits->storey_worst_limits(model, b))
+              states.push_back(damage_state_name(worst));
+            json.value("storey_damage_states", states);
+          }
         json.end_object();
       }
     json.end_array();

@@ -28,6 +28,7 @@
 #include <poundfe/model/friction_parameters.h>
 #include <poundfe/model/parameters.h>
 #include <poundfe/output/drift_limits.h>
+#include <poundfe/output/section_limits.h>
 #include <poundfe/output/output_parameters.h>
 #include <poundfe/sections/section_parameters.h>
 
@@ -74,6 +75,7 @@ namespace poundfe
     BifurcationParameters     bifurcation;
     SiteHazardParameters      site_hazard;
     DriftLimitParameters      drift_limits;
+    SectionLimitParameters    section_limits; // the fibre members' limit states
     SeparationParameters      separation;
     MitigationParameters      mitigation;  // Mitigation (the mitigation command)
     SpectrumParameters        spectrum;    // Spectrum (response spectra)

@@ -47,8 +47,10 @@ namespace poundfe
     ground_motion,      // ground_motion.csv, m/s^2
     phase_portrait,     // phase_portrait.csv: u (m), u' (m/s) of every equation
                         // and each friction element's phase (0 stick, +-1 slip)
-    corner_acceleration // corner_acceleration.csv, m/s^2 (absolute, 3D: every
-                        // slab corner along x and y; output/plan_response.h)
+    corner_acceleration, // corner_acceleration.csv, m/s^2 (absolute, 3D: every
+                         // slab corner along x and y; output/plan_response.h)
+    section_states       // sections.csv: each integration point of the fibre
+                         // members: N, M, eps0, kappa, extreme fibre strains
   };
 
   struct RecorderRequest

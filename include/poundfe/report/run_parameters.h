@@ -10,6 +10,7 @@
 #include <poundfe/model/contact_parameters.h>
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/output/output_parameters.h>
+#include <poundfe/output/section_limits.h>
 
 namespace poundfe
 {
@@ -20,6 +21,7 @@ namespace poundfe
     SpectrumParameters    spectrum;     // the floor spectra's periods and damping ratios
     DriftLimitParameters  drift_limits; // checked against the peak drifts in summary.json
     ContactParameters     contact;      // summary.json: how the contact damping was set
+    SectionLimitParameters section_limits; // the fibre members' limit states in summary.json
   };
 } // namespace poundfe
 

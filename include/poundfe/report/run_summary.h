@@ -25,6 +25,7 @@ namespace poundfe
   class MemoryResults;
   class PeakResponse;
   class ResponseRange;
+  class SectionLimitStates;
 
   /// The model's size and whole-model modes (run and modal summaries).
   void write_model(JsonWriter &json, const Analysis &analysis);
@@ -46,12 +47,16 @@ namespace poundfe
     /// warnings go to "warnings"; `base_shears` and `plan` (at the steps)
     /// must be observed with it. With `memory` the texts go there
     /// (output/table_writer.h), no file is written and nothing is drawn.
+    /// `section_limits` (observed with it; nullptr: no fibre members): the
+    /// members' limit states in summary.json, each storey's damage state in
+    /// drift_profile.csv.
     RunSummary(const Analysis &analysis, const RunParameters &parameters,
                const Excitation &excitation, const PeakResponse &peaks,
                const ResponseRange &range, const BaseShearPeaks &base_shears,
                const PlanResponse &plan, const std::string &directory, bool plots,
                const std::string &solver, const std::string &tangent_update,
-               std::vector<std::string> files, MemoryResults *memory = nullptr);
+               std::vector<std::string> files, MemoryResults *memory = nullptr,
+               const SectionLimitStates *section_limits = nullptr);
 
     void observe_step(const ResponseView &) override {} // the others observe for it
     void finish(const ResponseView &state, const RunStatus &status) override;
@@ -100,6 +105,7 @@ namespace poundfe
     /// 3D buildings: rotations, irregularity ratios, base shears and torque.
     const PlanResponse &plan;
     MemoryResults      *memory;
+    const SectionLimitStates *section_limits;
   };
 } // namespace poundfe
 

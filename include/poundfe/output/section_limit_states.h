@@ -1,0 +1,59 @@
+// The limit states of a run's fibre members (output/section_limits.h): an
+// observer that follows every integration point of every fibre member
+// through the accepted steps and substeps, from the gravity state at t = 0
+// (where each section's yield curvature is found at its own axial force),
+// and reports per member the worst over its sections, and per storey the
+// damage state of its worst member (the columns below a floor and the
+// beams of that floor make a storey).
+#ifndef poundfe_output_section_limit_states_h
+#define poundfe_output_section_limit_states_h
+
+#include <poundfe/elements/member_element.h>
+#include <poundfe/output/observer.h>
+#include <poundfe/output/section_limits.h>
+
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  class JsonWriter;
+
+  class SectionLimitStates : public StepObserver
+  {
+  public:
+    /// The sections of a member and where it stands.
+    struct MemberLimits
+    {
+      const MemberElement<2>          *element = nullptr;
+      std::string                      label;
+      unsigned int                     building = 0, storey = 1; // storey: 1-based
+      std::vector<SectionLimitTracker> sections;                 // one per integration point
+      /// The worst limit over its sections (-1: none).
+      int worst_limit() const;
+    };
+
+    /// Every member of `elements` on fibre sections (none: empty()).
+    SectionLimitStates(const Model &model, const NonlinearElements &elements,
+                       const SectionLimitParameters &parameters);
+
+    bool empty() const { return limits.empty(); }
+    /// The yield curvatures at the state given (the gravity state), then
+    /// its strains.
+    void initialize(const ResponseView &state) override;
+    void observe_step(const ResponseView &state) override;
+    void observe_substep(const ResponseView &state) override { observe_step(state); }
+
+    const std::vector<MemberLimits> &members() const { return limits; }
+    /// Building b's worst limit per storey (-1: none), bottom up.
+    std::vector<int> storey_worst_limits(const Model &model, unsigned int b) const;
+    /// "section_limit_states" of summary.json: the limits' definitions, and
+    /// per member its peaks, ratios, first times and damage state.
+    void write_json(JsonWriter &json, const Model &model) const;
+
+  private:
+    std::vector<MemberLimits> limits;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,165 @@
+// The limit states of fibre sections (output/section_limits.h) against
+// closed forms written here:
+//   - an RC rectangle under an imposed curvature ramp kappa(t) = r t at
+//     eps0 = 0: by strain compatibility a bar at y_b (from the section's
+//     centre: half the depth less the cover, half a stirrup and half a bar)
+//     strains -y_b kappa, so the bars yield at t_y = (fy / E) / (y_b r) and
+//     reach 0.6 eps_su at t_f = 0.6 eps_su / (y_b r); the extreme concrete
+//     fibre (at its fibre's centroid y_c) reaches -0.004 at 0.004 / (y_c r);
+//     the ratios at the end are the strains over the limits;
+//   - two ElasticPP bars at +-0.2 m: at N = 0 the neutral axis is the
+//     centre by symmetry, so the first yield curvature is (fy / E) / 0.2
+//     either way;
+//   - the Section limits entries: a wrong sign, zero or a word is refused
+//     naming the entry.
+#include <poundfe/base/exceptions.h>
+#include <poundfe/output/section_limits.h>
+#include <poundfe/sections/section_builders.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <string>
+
+using namespace poundfe;
+
+namespace
+{
+  RcRectangle
+  column()
+  {
+    RcRectangle r;
+    r.depth = r.width = 0.4;
+    r.cover            = 0.04;
+    r.bars_top = r.bars_bottom = 3;
+    r.bar_diameter             = 0.02;
+    r.stirrup_diameter         = 0.01;
+    r.stirrup_spacing          = 0.1;
+    r.concrete.fc              = 30e6;
+    r.steel.fy                 = 450e6;
+    r.steel.E                  = 200e9;
+    r.steel.ultimate_strain    = 0.1;
+    r.fibres_y                 = 10;
+    r.fibres_z                 = 2;
+    return r;
+  }
+
+  SectionVector
+  curvature(const double kappa)
+  {
+    SectionVector e(2);
+    e << 0, kappa;
+    return e;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(bar_yield_spalling_and_fracture_of_an_imposed_curvature)
+{
+  FibreSection           section(rc_rectangle(column()), 2);
+  SectionLimitParameters parameters; // Priestley et al.'s defaults
+  SectionLimitTracker    tracker(section, section_strain_limits(section, parameters));
+  const double yb = 0.2 - 0.04 - 0.005 - 0.01; // the bars' centres from the middle
+  double       yc = 0;                          // the extreme concrete fibre's centroid
+  const FibreGeometry &g = section.geometry();
+  for (unsigned int i = 0; i < g.fibres.size(); ++i)
+    if (g.materials[g.fibres[i].material].role() == MaterialRole::concrete)
+      yc = std::max(yc, g.fibres[i].y - section.reference_y());
+  const double rate = 0.1, dt = 0.013; // 1/m per s; steps that do not land on the events
+  for (double t = 0; t < 4.5; t += dt)
+    {
+      BOOST_REQUIRE(section.set_trial(curvature(rate * t)));
+      section.commit();
+      tracker.observe(section, t);
+    }
+  const double ey = 450e6 / 200e9;
+  BOOST_CHECK_CLOSE(tracker.limits().strain[unsigned(SectionLimit::bar_yield)], ey, 1e-12);
+  BOOST_CHECK_CLOSE(tracker.first_time(SectionLimit::bar_yield), ey / (yb * rate), 1e-6);
+  BOOST_CHECK_CLOSE(tracker.first_time(SectionLimit::spalling), 0.004 / (yc * rate), 1e-6);
+  BOOST_CHECK_CLOSE(tracker.limits().strain[unsigned(SectionLimit::bar_fracture)], 0.06, 1e-12);
+  BOOST_CHECK_CLOSE(tracker.first_time(SectionLimit::bar_fracture), 0.06 / (yb * rate), 1e-6);
+  const double kappa = tracker.peak_curvature_positive();
+  BOOST_CHECK_CLOSE(tracker.ratio(SectionLimit::bar_yield), yb * kappa / ey, 1e-6);
+  BOOST_CHECK_CLOSE(tracker.ratio(SectionLimit::spalling), yc * kappa / 0.004, 1e-6);
+  // fracture is the worst of the limits reached
+  BOOST_CHECK_EQUAL(std::string(damage_state_name(tracker.worst_limit())), "fracture");
+}
+
+BOOST_AUTO_TEST_CASE(a_given_crushing_strain_applies_to_concrete_without_a_core)
+{
+  // Concrete01 fibres without min= (no core) at +-0.2 m: with Crushing
+  // strain = -0.01 the fibre at +0.2 m reaches it at kappa = 0.05, t = 0.5 s
+  FibreGeometry   g;
+  SectionMaterial concrete;
+  concrete.name = "concrete";
+  concrete.law  = {"Concrete01", {{"fpc", -30e6}, {"epsc0", -0.002}, {"fpcu", -6e6},
+                                  {"epscu", -0.006}}};
+  g.add_material(concrete);
+  g.fibres = {{0.2, 0, 0.01, 0}, {-0.2, 0, 0.01, 0}};
+  FibreSection section(g, 2);
+  InputFile    input;
+  SectionLimitParameters parameters;
+  BOOST_CHECK(std::isnan(section_strain_limits(section, parameters)
+                           .strain[unsigned(SectionLimit::crushing)])); // nothing to check
+  parameters.crushing_text = "-0.01";
+  parameters.finalize(input);
+  SectionLimitTracker tracker(section, section_strain_limits(section, parameters));
+  for (double t = 0; t < 0.8; t += 0.013)
+    {
+      BOOST_REQUIRE(section.set_trial(curvature(0.1 * t)));
+      section.commit();
+      tracker.observe(section, t);
+    }
+  BOOST_CHECK_CLOSE(tracker.first_time(SectionLimit::crushing), 0.5, 1e-6);
+  BOOST_CHECK(std::isnan(tracker.ratio(SectionLimit::bar_yield))); // no bars
+  BOOST_CHECK(std::isnan(tracker.curvature_ductility()));
+}
+
+BOOST_AUTO_TEST_CASE(first_yield_curvature_of_symmetric_bars)
+{
+  FibreGeometry   g;
+  SectionMaterial steel;
+  steel.name = "steel";
+  steel.law  = {"ElasticPP", {{"E", 200e9}, {"epsyP", 450e6 / 200e9}}};
+  g.add_material(steel);
+  g.fibres = {{0.2, 0, 1e-3, 0}, {-0.2, 0, 1e-3, 0}};
+  const FibreSection section(g, 2);
+  const double       ey = 450e6 / 200e9;
+  for (const int sense : {+1, -1})
+    BOOST_CHECK_CLOSE(section_yield_curvature(section, 0, ey, sense), ey / 0.2, 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(limits_of_the_wrong_sign_are_refused)
+{
+  InputFile input;
+  input.file = "limits.prm";
+  const auto refused = [&](SectionLimitParameters p, const std::string &entry) {
+    try
+      {
+        p.finalize(input);
+        BOOST_ERROR("no InputError for " + entry);
+      }
+    catch (const InputError &e)
+      {
+        BOOST_CHECK_EQUAL(e.parameter(), "Section limits/" + entry);
+      }
+  };
+  SectionLimitParameters p;
+  p.spalling_strain = 0.004;
+  refused(p, "Spalling strain");
+  p = {};
+  p.crushing_text = "0.02";
+  refused(p, "Crushing strain");
+  p = {};
+  p.yield_text = "0";
+  refused(p, "Bar yield strain");
+  p = {};
+  p.fracture_text = "-0.05";
+  refused(p, "Bar fracture strain");
+  p = {};
+  p.fracture_text = "big";
+  refused(p, "Bar fracture strain");
+  p = {};
+  p.crushing_text = "-0.018";
+  p.finalize(input);
+  BOOST_CHECK_EQUAL(p.crushing_strain, -0.018);
+}
