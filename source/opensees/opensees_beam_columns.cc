@@ -111,7 +111,10 @@ namespace poundfe
         const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
         if (a[0] == b[0] && a[1] == b[1])
           throw ScriptError("element " + std::to_string(tag) + " has zero length");
-        return CrdTransformation<2>(kind, {a[0], a[1]}, {b[0], b[1]});
+        CrdTransformation<2> transformation(kind, {a[0], a[1]}, {b[0], b[1]});
+        // OpenSees's own tangent: a script's damping on K_t or K_c takes it
+        transformation.use_opensees_tangent();
+        return transformation;
       }
     } // namespace
 

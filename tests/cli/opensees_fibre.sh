@@ -10,8 +10,8 @@
 #  3. side by side with OpenSees 3.8: the scripts of tests/opensees/fibre_*.tcl
 #     against OpenSees's own recorder output committed in
 #     tests/opensees/reference/ (bench/opensees/compare.py, tolerance per
-#     case in its CASES: 1e-10 of the peak linear, 1e-6 nonlinear, 1e-2 for
-#     the frame with committed-stiffness damping, a known difference);
+#     case in its CASES: 1e-10 of the peak linear, 1e-6 nonlinear, 1e-9 for
+#     the frame with committed-stiffness damping);
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
