@@ -191,7 +191,7 @@ namespace poundfe
       {
         for (const char *name :
              {"rigidDiaphragm", "rigidLink", "fixX", "fixY", "fixZ", "region", "remove",
-              "eleLoad", "sp",
+              "sp",
               "imposedMotion", "groundMotion", "modalDamping", "setElementRayleighDampingFactors",
               "printA", "printB", "printModel", "print",
               "basicDeformation", "basicForce", "localForce", "testIter", "testNorm", "getNP",

@@ -614,6 +614,50 @@ namespace poundfe
         d.patterns.at(s.current_pattern).loads.push_back(l);
       }
 
+      /// eleLoad (-ele tag ... | -range first last) -type -beamUniform Wy <Wx>.
+      void
+      element_load(Session &s, Words &w)
+      {
+        opensees::Domain &d = model_domain(s);
+        if (s.current_pattern < 0)
+          throw ScriptError("an eleLoad belongs in the body of a Plain pattern");
+        std::vector<int>  tags;
+        const std::string how = w.word("-ele or -range");
+        if (how == "-ele")
+          while (!w.done() && w.peek() != "-type")
+            tags.push_back(w.integer("an element's tag"));
+        else if (how == "-range")
+          {
+            const int first = w.integer("the first element"), last = w.integer("the last element");
+            for (const auto &[tag, element] : d.elements)
+              if (tag >= first && tag <= last)
+                tags.push_back(tag);
+          }
+        else
+          unsupported("eleLoad " + how);
+        if (w.word("-type") != "-type")
+          throw ScriptError("eleLoad: -type expected after the elements");
+        const std::string type = w.word("the load's type");
+        if (type != "-beamUniform")
+          unsupported("eleLoad -type " + type);
+        opensees::BeamUniformLoad load;
+        load.wy = w.real("Wy");
+        load.wx = w.done() ? 0.0 : w.real("Wx");
+        if (!w.done())
+          unsupported("eleLoad -beamUniform with more than Wy and Wx");
+        for (const int tag : tags)
+          {
+            const auto it = d.elements.find(tag);
+            if (it == d.elements.end())
+              throw ScriptError("element " + std::to_string(tag) + " does not exist");
+            if (!it->second->takes_beam_loads())
+              unsupported("eleLoad on element " + std::to_string(tag) +
+                          " (only elasticBeamColumn on a Linear or PDelta transformation takes it)");
+            load.element = tag;
+            d.patterns.at(s.current_pattern).beam_loads.push_back(load);
+          }
+      }
+
       void
       load_const(Session &s, Words &w)
       {
@@ -817,6 +861,7 @@ namespace poundfe
       define(interp, session, "timeSeries", time_series);
       define(interp, session, "pattern", pattern);
       define(interp, session, "load", load);
+      define(interp, session, "eleLoad", element_load);
       define(interp, session, "loadConst", load_const);
       define(interp, session, "setTime", [](Session &s, Words &w) {
         model_domain(s).time = w.real("the time");

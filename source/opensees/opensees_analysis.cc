@@ -165,6 +165,7 @@ namespace poundfe
     {
       Vector        r = Vector::Zero(n_equations);
       const Vector &v = at_alpha ? V_alpha : V; // HHT: the damping at t + alpha dt
+      domain.apply_element_loads(trial_time);   // their resisting forces take them
       for (const auto &[tag, load] : domain.nodal_loads(trial_time))
         {
           const Node &node = domain.node(tag);

@@ -11,12 +11,13 @@
 #     against OpenSees's own recorder output committed in
 #     tests/opensees/reference/ (bench/opensees/compare.py, tolerance per
 #     case in its CASES: 1e-10 of the peak linear, 1e-6 nonlinear, 1e-9 for
-#     the frame with committed-stiffness damping, HHT and NewtonLineSearch,
-#     whose searches' etas are compared too);
+#     the frame with committed-stiffness damping, HHT and NewtonLineSearch
+#     (whose searches' etas are compared too) and element loads);
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration, a line search other than
 #     InitialInterpolated, HHT's alpha outside (0, 1], NewtonLineSearch with
-#     DisplacementControl.
+#     DisplacementControl, eleLoad on a beam-column, of another type, or
+#     outside a pattern.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
 poundfe=$1 corpus=$2 python=$3
@@ -117,6 +118,12 @@ echo "algorithm NewtonLineSearch -type Bisection" | bad line-search-type \
   '6: algorithm NewtonLineSearch -type Bisection: poundfe does not support it'
 echo "algorithm NewtonLineSearch -tol 0.5 -beta 2" | bad line-search-option \
   "6: algorithm NewtonLineSearch option '-beta': poundfe does not support it"
+printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1\ntimeSeries Linear 1\npattern Plain 1 1 { eleLoad -ele 1 -type -beamUniform -1.0 }\n' \
+  | bad element-load-beam-column '9: pattern: eleLoad on element 1 (only elasticBeamColumn on a Linear or PDelta transformation takes it): poundfe does not support it'
+printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { eleLoad -ele 1 -type -beamPoint -1.0 0.5 }\n' \
+  | bad element-load-point '8: pattern: eleLoad -type -beamPoint: poundfe does not support it'
+printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\neleLoad -ele 1 -type -beamUniform -1.0\n' \
+  | bad element-load-outside '7: eleLoad: an eleLoad belongs in the body of a Plain pattern'
 echo "integrator HHT 1.5" | bad hht-alpha '6: integrator: HHT needs 0 < alpha <= 1'
 printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm NewtonLineSearch\nintegrator DisplacementControl 2 1 0.001\nanalysis Static\nanalyze 1\n' \
   | bad line-search-dc '13: analyze: algorithm NewtonLineSearch with integrator DisplacementControl is not supported'
