@@ -43,8 +43,10 @@ CASES = {
     "pounding_ImpactMaterial": ("pounding_sticks.tcl", ["ImpactMaterial"], 1e-6),
     # HHT (alpha 0.8, 0.9) and NewtonLineSearch (a tolerance that makes it
     # search: 540 and 46 searches, eta 0.96 to 1.04)
-    # element loads (eleLoad -beamUniform) on elastic members, PDelta columns
+    # element loads (eleLoad -beamUniform) on elastic members and on
+    # dispBeamColumns of fibre sections, PDelta columns
     "portal_element_loads": ("portal_element_loads.tcl", [], 1e-9),
+    "portal_element_loads_fibre": ("portal_element_loads.tcl", ["fibre"], 1e-9),
     "frame_hht": ("fibre_frame_record.tcl", ["committed", "Newton", "HHT 0.8"], 1e-9),
     "pounding_hht": ("pounding_sticks.tcl",
                      ["ImpactMaterial", "Newton", "NormDispIncr", "HHT 0.9"], 1e-9),

@@ -652,7 +652,8 @@ namespace poundfe
               throw ScriptError("element " + std::to_string(tag) + " does not exist");
             if (!it->second->takes_beam_loads())
               unsupported("eleLoad on element " + std::to_string(tag) +
-                          " (only elasticBeamColumn on a Linear or PDelta transformation takes it)");
+                           " (only elasticBeamColumn and dispBeamColumn on a Linear or PDelta "
+                          "transformation take it)");
             load.element = tag;
             d.patterns.at(s.current_pattern).beam_loads.push_back(load);
           }

@@ -89,9 +89,7 @@ namespace poundfe
         void
         add_beam_uniform(const double wy, const double wx) override
         {
-          const double V = 0.5 * wy * L, P = wx * L, M = V * L / 6.0;
-          p0 -= Eigen::Vector3d(P, V, V);
-          q0 -= Eigen::Vector3d(0.5 * P, M, -M);
+          add_uniform_beam_load(L, wy, wx, q0, p0);
         }
 
         Vector
@@ -291,6 +289,15 @@ namespace poundfe
         committed_tangent = tangent();
       }
     } // namespace
+
+    void
+    add_uniform_beam_load(const double L, const double wy, const double wx, Eigen::Vector3d &q0,
+                          Eigen::Vector3d &p0)
+    {
+      const double V = 0.5 * wy * L, P = wx * L, M = V * L / 6.0;
+      p0 -= Eigen::Vector3d(P, V, V);
+      q0 -= Eigen::Vector3d(0.5 * P, M, -M);
+    }
 
     std::vector<double>
     Element::response(const std::vector<std::string> &words) const

@@ -119,7 +119,7 @@ echo "algorithm NewtonLineSearch -type Bisection" | bad line-search-type \
 echo "algorithm NewtonLineSearch -tol 0.5 -beta 2" | bad line-search-option \
   "6: algorithm NewtonLineSearch option '-beta': poundfe does not support it"
 printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1\ntimeSeries Linear 1\npattern Plain 1 1 { eleLoad -ele 1 -type -beamUniform -1.0 }\n' \
-  | bad element-load-beam-column '9: pattern: eleLoad on element 1 (only elasticBeamColumn on a Linear or PDelta transformation takes it): poundfe does not support it'
+  | bad element-load-beam-column '9: pattern: eleLoad on element 1 (only elasticBeamColumn and dispBeamColumn on a Linear or PDelta transformation take it): poundfe does not support it'
 printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { eleLoad -ele 1 -type -beamPoint -1.0 0.5 }\n' \
   | bad element-load-point '8: pattern: eleLoad -type -beamPoint: poundfe does not support it'
 printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\neleLoad -ele 1 -type -beamUniform -1.0\n' \

@@ -243,6 +243,12 @@ namespace poundfe
     /// elastic basic stiffness (a displacement-based member on an elastic
     /// section with two Gauss points) on the corotational basic system, as
     /// OpenSees's ElasticBeam2d with CorotCrdTransf2d.
+    /// A uniform load wy (transverse), wx (axial) on a member of length L
+    /// added to its basic fixed-end forces q0 and basic reactions p0
+    /// (OpenSees's ElasticBeam2d and DispBeamColumn2d::addLoad).
+    void add_uniform_beam_load(double L, double wy, double wx, Eigen::Vector3d &q0,
+                               Eigen::Vector3d &p0);
+
     std::unique_ptr<Element> make_elastic_corotational_2d(const Domain &domain, int tag,
                                                           std::array<int, 2> nodes, double A,
                                                           double E, double I);
