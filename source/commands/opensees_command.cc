@@ -190,7 +190,7 @@ namespace poundfe
       define_unsupported(Tcl_Interp *interp, Session &session)
       {
         for (const char *name :
-             {"rigidDiaphragm", "rigidLink", "fixX", "fixY", "fixZ", "region", "remove",
+             {"rigidDiaphragm", "fixX", "fixY", "fixZ", "region", "remove",
               "sp",
               "imposedMotion", "groundMotion", "modalDamping", "setElementRayleighDampingFactors",
               "printA", "printB", "printModel", "print",

@@ -1,6 +1,6 @@
 // The model-building commands of OpenSees scripts, with OpenSees 3.8's
-// argument syntax: wipe, model, node, fix, mass, equalDOF, geomTransf,
-// element, uniaxialMaterial, timeSeries, pattern, load, loadConst, setTime,
+// argument syntax: wipe, model, node, fix, mass, equalDOF, rigidLink bar, geomTransf,
+// element, uniaxialMaterial, timeSeries, pattern, load, eleLoad, loadConst, setTime,
 // rayleigh, recorder. An option or type poundfe lacks is an error naming it.
 #include <poundfe/laws/material_registry.h>
 
@@ -163,6 +163,29 @@ namespace poundfe
           }
         if (e.dofs.empty())
           throw ScriptError("missing the DOFs");
+        d.equal_dofs.push_back(e);
+        d.changed = true;
+      }
+
+      /// rigidLink bar rNode cNode: OpenSees's RigidBar, the translations of
+      /// cNode equal to rNode's (an identity constraint, as equalDOF 1..ndm);
+      /// rigidLink beam couples them to the rotation and is not supported.
+      void
+      rigid_link(Session &s, Words &w)
+      {
+        opensees::Domain &d    = model_domain(s);
+        const std::string type = w.word("the link's type");
+        if (type != "bar")
+          unsupported("rigidLink " + type);
+        opensees::EqualDof e;
+        e.retained    = d.node(w.integer("the retained node")).tag;
+        e.constrained = d.node(w.integer("the constrained node")).tag;
+        if (!w.done())
+          unsupported("rigidLink option '" + w.peek() + "'");
+        if (e.retained == e.constrained)
+          throw ScriptError("the retained and the constrained node are the same");
+        for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
+          e.dofs.push_back(k);
         d.equal_dofs.push_back(e);
         d.changed = true;
       }
@@ -856,6 +879,7 @@ namespace poundfe
       define(interp, session, "fix", fix);
       define(interp, session, "mass", mass);
       define(interp, session, "equalDOF", equal_dof);
+      define(interp, session, "rigidLink", rigid_link);
       define(interp, session, "geomTransf", geom_transf);
       define(interp, session, "element", element);
       define(interp, session, "uniaxialMaterial", uniaxial_material);

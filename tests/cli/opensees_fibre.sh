@@ -5,7 +5,8 @@
 #     of every element, integration and section kind against the exact
 #     cantilever, a layered fibre section's inertia, the responses (eleForce,
 #     eleResponse), DisplacementControl reaching its displacements exactly,
-#     the plastic moment of a yielded section, a corotational quarter circle;
+#     the plastic moment of a yielded section, a corotational quarter circle,
+#     two cantilevers tied by rigidLink bar;
 #  2. the recorder Element file layout against eleResponse;
 #  3. side by side with OpenSees 3.8: the scripts of tests/opensees/fibre_*.tcl
 #     against OpenSees's own recorder output committed in
@@ -17,7 +18,7 @@
 #     section without fibres, a missing integration, a line search other than
 #     InitialInterpolated, HHT's alpha outside (0, 1], NewtonLineSearch with
 #     DisplacementControl, eleLoad on a beam-column, of another type, or
-#     outside a pattern.
+#     outside a pattern, rigidLink beam.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
 poundfe=$1 corpus=$2 python=$3
@@ -124,6 +125,8 @@ printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1
   | bad element-load-point '8: pattern: eleLoad -type -beamPoint: poundfe does not support it'
 printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\neleLoad -ele 1 -type -beamUniform -1.0\n' \
   | bad element-load-outside '7: eleLoad: an eleLoad belongs in the body of a Plain pattern'
+printf 'node 3 1.0 3.0\nrigidLink beam 2 3\n' | bad rigid-link-beam \
+  '7: rigidLink beam: poundfe does not support it'
 echo "integrator HHT 1.5" | bad hht-alpha '6: integrator: HHT needs 0 < alpha <= 1'
 printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm NewtonLineSearch\nintegrator DisplacementControl 2 1 0.001\nanalysis Static\nanalyze 1\n' \
   | bad line-search-dc '13: analyze: algorithm NewtonLineSearch with integrator DisplacementControl is not supported'
