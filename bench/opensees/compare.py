@@ -15,6 +15,7 @@ Second form (the CLI test): runs poundfe only and compares its files with
 those rows, with the tolerance of the case. Exit 1 naming the file and the
 largest difference when one exceeds it."""
 import os
+import re
 import subprocess
 import sys
 import time
@@ -28,9 +29,9 @@ CORPUS = os.path.join(HERE, "..", "..", "tests", "opensees")
 CASES = {
     "column_force": ("fibre_column_cyclic.tcl", ["force"], 1e-6),
     "column_disp": ("fibre_column_cyclic.tcl", ["disp"], 1e-6),
-    # committed-stiffness damping: poundfe is 2e-3 to 9e-3 of the peak away
-    # from OpenSees 3.8 (doc/verification.md); on the initial stiffness, 1e-11
-    "frame_record": ("fibre_frame_record.tcl", ["committed"], 1e-2),
+    # committed-stiffness damping takes the members' tangent as it is: it
+    # agrees once the P-Delta tangent is OpenSees's (measured 3e-12)
+    "frame_record": ("fibre_frame_record.tcl", ["committed"], 1e-9),
     "frame_record_initial": ("fibre_frame_record.tcl", ["initial"], 1e-6),
     "sdof_linear": ("sdof_linear.tcl", [], 1e-10),
     "stick3_linear": ("stick3_linear.tcl", [], 1e-10),
@@ -40,7 +41,30 @@ CASES = {
     "steel01_cyclic": ("steel01_cyclic.tcl", [], 1e-6),
     "pounding_ElasticPPGap": ("pounding_sticks.tcl", ["ElasticPPGap"], 1e-6),
     "pounding_ImpactMaterial": ("pounding_sticks.tcl", ["ImpactMaterial"], 1e-6),
+    # HHT (alpha 0.8, 0.9) and NewtonLineSearch (a tolerance that makes it
+    # search: 540 and 46 searches, eta 0.96 to 1.04)
+    # element loads (eleLoad -beamUniform) on elastic members and on
+    # dispBeamColumns of fibre sections, PDelta columns
+    "portal_element_loads": ("portal_element_loads.tcl", [], 1e-9),
+    "portal_element_loads_fibre": ("portal_element_loads.tcl", ["fibre"], 1e-9),
+    "frame_hht": ("fibre_frame_record.tcl", ["committed", "Newton", "HHT 0.8"], 1e-9),
+    "pounding_hht": ("pounding_sticks.tcl",
+                     ["ImpactMaterial", "Newton", "NormDispIncr", "HHT 0.9"], 1e-9),
+    "frame_line_search": ("fibre_frame_record.tcl",
+                          ["initial", "NewtonLineSearch -tol 0.001"], 1e-9),
+    "pounding_line_search": ("pounding_sticks.tcl",
+                             ["ElasticPPGap", "NewtonLineSearch -tol 0.01 -pFlag 0"], 1e-9),
 }
+# Each line search iteration a program prints (-pFlag 0), kept as a table
+# "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,
+# so that file is held to SEARCH_TOLERANCE of its peak.
+SEARCH_LINE = re.compile(r"Line Search - iteration: (\d+) , eta\(j\) : (\S+) , "
+                         r"Ratio \|sj/s0\| = (\S+)")
+SEARCH_FILE, SEARCH_TOLERANCE = "line_search.out", 1e-5
+
+
+def tolerance_of(case, name):
+    return max(CASES[case][2], SEARCH_TOLERANCE if name == SEARCH_FILE else 0)
 
 
 def run(program, case, out):
@@ -52,6 +76,10 @@ def run(program, case, out):
                           capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"{program} {script} {words}: exit {done.returncode}\n{done.stderr[-2000:]}")
+    searches = SEARCH_LINE.findall(done.stdout + done.stderr)
+    if searches:
+        with open(os.path.join(out, SEARCH_FILE), "w") as f:
+            f.writelines(" ".join(row) + "\n" for row in searches)
     return time.perf_counter() - start
 
 
@@ -74,12 +102,12 @@ def rows_kept(table):
 def side_by_side(poundfe, opensees, work, reference):
     failed = False
     print("| case | file | largest difference / peak | poundfe s | OpenSees s |")
-    for case, (_, _, tolerance) in CASES.items():
+    for case in CASES:
         mine, theirs = os.path.join(work, case, "poundfe"), os.path.join(work, case, "opensees")
         t_mine, t_theirs = run(poundfe, case, mine), run(opensees, case, theirs)
         for name in sorted(os.listdir(theirs)):
             d = largest(os.path.join(mine, name), os.path.join(theirs, name))
-            failed |= d > tolerance
+            failed |= d > tolerance_of(case, name)
             print(f"| {case} | {name} | {d:.1e} | {t_mine:.2f} | {t_theirs:.2f} |")
             if reference:
                 os.makedirs(os.path.join(reference, case), exist_ok=True)
@@ -99,7 +127,7 @@ def check(poundfe, reference, work):
             peak = np.maximum(np.abs(kept).max(axis=0), 1e-300)
             d = float((np.abs(ours - kept).max(axis=0) / peak).max()) \
                 if ours.shape == kept.shape else float("inf")
-            ok = d <= max(CASES[case][2], 1e-11)  # the kept rows have 12 digits
+            ok = d <= max(tolerance_of(case, name), 1e-11)  # the kept rows have 12 digits
             failed |= not ok
             print(f"{'ok  ' if ok else 'FAIL'} {case}/{name}: {d:.1e}")
     return failed

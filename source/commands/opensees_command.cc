@@ -190,8 +190,8 @@ namespace poundfe
       define_unsupported(Tcl_Interp *interp, Session &session)
       {
         for (const char *name :
-             {"rigidDiaphragm", "rigidLink", "fixX", "fixY", "fixZ", "region", "remove",
-              "eleLoad", "sp",
+             {"rigidDiaphragm", "fixX", "fixY", "fixZ", "region", "remove",
+              "sp",
               "imposedMotion", "groundMotion", "modalDamping", "setElementRayleighDampingFactors",
               "printA", "printB", "printModel", "print",
               "basicDeformation", "basicForce", "localForce", "testIter", "testNorm", "getNP",

@@ -74,6 +74,36 @@ namespace poundfe
         reconfigure(s);
       }
 
+      /// NewtonLineSearch's options (OpenSees's defaults: -tol 0.8 -maxIter
+      /// 10 -minEta 0.1 -maxEta 10 -pFlag 1 -type InitialInterpolated).
+      void
+      line_search_options(opensees::AnalysisOptions::LineSearch &p, Words &w)
+      {
+        p = opensees::AnalysisOptions::LineSearch();
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-tol")
+              p.tolerance = w.real("the line search tolerance");
+            else if (option == "-maxIter")
+              p.max_iterations = w.integer("the line search's iterations");
+            else if (option == "-minEta")
+              p.min_eta = w.real("minEta");
+            else if (option == "-maxEta")
+              p.max_eta = w.real("maxEta");
+            else if (option == "-pFlag")
+              p.print = w.integer("the print flag") == 0;
+            else if (option == "-type")
+              {
+                const std::string type = w.word("the line search's type");
+                if (type != "InitialInterpolated")
+                  unsupported("algorithm NewtonLineSearch -type " + type);
+              }
+            else
+              unsupported("algorithm NewtonLineSearch option '" + option + "'");
+          }
+      }
+
       void
       algorithm(Session &s, Words &w)
       {
@@ -85,6 +115,11 @@ namespace poundfe
           s.options.algorithm = Algorithm::newton;
         else if (type == "ModifiedNewton")
           s.options.algorithm = Algorithm::modified_newton;
+        else if (type == "NewtonLineSearch")
+          {
+            s.options.algorithm = Algorithm::newton_line_search;
+            line_search_options(s.options.line_search, w);
+          }
         else
           unsupported("algorithm " + type);
         check_done(w);
@@ -119,6 +154,28 @@ namespace poundfe
         s.has_static_integrator = true;
       }
 
+      /// HHT alpha <gamma beta> (OpenSees's alpha: 1 is Newmark's average
+      /// acceleration, 2/3 the most dissipative; by default gamma = 3/2 -
+      /// alpha, beta = (2 - alpha)^2 / 4).
+      void
+      hht(Session &s, Words &w)
+      {
+        opensees::AnalysisOptions &o = s.options;
+        o.alpha                      = w.real("alpha");
+        o.gamma                      = 1.5 - o.alpha;
+        o.beta                       = 0.25 * (2 - o.alpha) * (2 - o.alpha);
+        if (!w.done())
+          {
+            o.gamma = w.real("gamma");
+            o.beta  = w.real("beta");
+          }
+        if (!(o.alpha > 0 && o.alpha <= 1))
+          throw ScriptError("HHT needs 0 < alpha <= 1");
+        if (!(o.beta > 0 && o.gamma > 0))
+          throw ScriptError("HHT needs beta > 0 and gamma > 0");
+        s.has_transient_integrator = true;
+      }
+
       void
       integrator(Session &s, Words &w)
       {
@@ -127,10 +184,13 @@ namespace poundfe
           {
             s.options.gamma = w.real("gamma");
             s.options.beta  = w.real("beta");
+            s.options.alpha = 1;
             if (!(s.options.beta > 0))
               throw ScriptError("Newmark needs beta > 0");
             s.has_transient_integrator = true;
           }
+        else if (type == "HHT")
+          hht(s, w);
         else if (type == "LoadControl")
           {
             s.options.d_lambda   = w.real("the load increment");
@@ -172,6 +232,7 @@ namespace poundfe
                           "0.25) default will be used\n";
             s.options.gamma = 0.5;
             s.options.beta  = 0.25;
+            s.options.alpha = 1;
           }
         if (!transient && !s.has_static_integrator)
           {
@@ -228,7 +289,10 @@ namespace poundfe
         const int result = s.analysis->analyze(
           steps, dt, [&]() { s.record(); },
           [&](const std::string &why) {
-            s.warnings << (why.compare(0, 5, "CTest") == 0 ? "" : "WARNING ") << why << "\n";
+            // the test's and the line search's own lines are not warnings
+            const bool report = why.compare(0, 5, "CTest") == 0 ||
+                                why.compare(0, 19, "InitialInterpolated") == 0;
+            s.warnings << (report ? "" : "WARNING ") << why << "\n";
           });
         Tcl_SetObjResult(w.interp, Tcl_NewIntObj(result));
       }

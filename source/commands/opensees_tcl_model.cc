@@ -1,6 +1,6 @@
 // The model-building commands of OpenSees scripts, with OpenSees 3.8's
-// argument syntax: wipe, model, node, fix, mass, equalDOF, geomTransf,
-// element, uniaxialMaterial, timeSeries, pattern, load, loadConst, setTime,
+// argument syntax: wipe, model, node, fix, mass, equalDOF, rigidLink bar, geomTransf,
+// element, uniaxialMaterial, timeSeries, pattern, load, eleLoad, loadConst, setTime,
 // rayleigh, recorder. An option or type poundfe lacks is an error naming it.
 #include <poundfe/laws/material_registry.h>
 
@@ -163,6 +163,29 @@ namespace poundfe
           }
         if (e.dofs.empty())
           throw ScriptError("missing the DOFs");
+        d.equal_dofs.push_back(e);
+        d.changed = true;
+      }
+
+      /// rigidLink bar rNode cNode: OpenSees's RigidBar, the translations of
+      /// cNode equal to rNode's (an identity constraint, as equalDOF 1..ndm);
+      /// rigidLink beam couples them to the rotation and is not supported.
+      void
+      rigid_link(Session &s, Words &w)
+      {
+        opensees::Domain &d    = model_domain(s);
+        const std::string type = w.word("the link's type");
+        if (type != "bar")
+          unsupported("rigidLink " + type);
+        opensees::EqualDof e;
+        e.retained    = d.node(w.integer("the retained node")).tag;
+        e.constrained = d.node(w.integer("the constrained node")).tag;
+        if (!w.done())
+          unsupported("rigidLink option '" + w.peek() + "'");
+        if (e.retained == e.constrained)
+          throw ScriptError("the retained and the constrained node are the same");
+        for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
+          e.dofs.push_back(k);
         d.equal_dofs.push_back(e);
         d.changed = true;
       }
@@ -614,6 +637,51 @@ namespace poundfe
         d.patterns.at(s.current_pattern).loads.push_back(l);
       }
 
+      /// eleLoad (-ele tag ... | -range first last) -type -beamUniform Wy <Wx>.
+      void
+      element_load(Session &s, Words &w)
+      {
+        opensees::Domain &d = model_domain(s);
+        if (s.current_pattern < 0)
+          throw ScriptError("an eleLoad belongs in the body of a Plain pattern");
+        std::vector<int>  tags;
+        const std::string how = w.word("-ele or -range");
+        if (how == "-ele")
+          while (!w.done() && w.peek() != "-type")
+            tags.push_back(w.integer("an element's tag"));
+        else if (how == "-range")
+          {
+            const int first = w.integer("the first element"), last = w.integer("the last element");
+            for (const auto &[tag, element] : d.elements)
+              if (tag >= first && tag <= last)
+                tags.push_back(tag);
+          }
+        else
+          unsupported("eleLoad " + how);
+        if (w.word("-type") != "-type")
+          throw ScriptError("eleLoad: -type expected after the elements");
+        const std::string type = w.word("the load's type");
+        if (type != "-beamUniform")
+          unsupported("eleLoad -type " + type);
+        opensees::BeamUniformLoad load;
+        load.wy = w.real("Wy");
+        load.wx = w.done() ? 0.0 : w.real("Wx");
+        if (!w.done())
+          unsupported("eleLoad -beamUniform with more than Wy and Wx");
+        for (const int tag : tags)
+          {
+            const auto it = d.elements.find(tag);
+            if (it == d.elements.end())
+              throw ScriptError("element " + std::to_string(tag) + " does not exist");
+            if (!it->second->takes_beam_loads())
+              unsupported("eleLoad on element " + std::to_string(tag) +
+                           " (only elasticBeamColumn and dispBeamColumn on a Linear or PDelta "
+                          "transformation take it)");
+            load.element = tag;
+            d.patterns.at(s.current_pattern).beam_loads.push_back(load);
+          }
+      }
+
       void
       load_const(Session &s, Words &w)
       {
@@ -811,12 +879,14 @@ namespace poundfe
       define(interp, session, "fix", fix);
       define(interp, session, "mass", mass);
       define(interp, session, "equalDOF", equal_dof);
+      define(interp, session, "rigidLink", rigid_link);
       define(interp, session, "geomTransf", geom_transf);
       define(interp, session, "element", element);
       define(interp, session, "uniaxialMaterial", uniaxial_material);
       define(interp, session, "timeSeries", time_series);
       define(interp, session, "pattern", pattern);
       define(interp, session, "load", load);
+      define(interp, session, "eleLoad", element_load);
       define(interp, session, "loadConst", load_const);
       define(interp, session, "setTime", [](Session &s, Words &w) {
         model_domain(s).time = w.real("the time");

@@ -239,6 +239,8 @@ namespace poundfe
         const GlobalVector shear_dir = g * delta / length0;
         if (has_offsets)
           k_g = offsets.transpose() * k_g * offsets;
+        if (opensees_tangent)
+          return k + k_g;
         return k + k_g +
                (has_offsets ? GlobalVector(offsets.transpose() * shear_dir) : shear_dir) *
                  dn_du.transpose();

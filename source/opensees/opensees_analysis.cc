@@ -4,6 +4,10 @@
 // U'_n + dt (1 - gamma/(2 beta)) U''_n, U'' = -U'_n/(beta dt) + (1 - 1/(2
 // beta)) U''_n; update: U += dU, U' += c2 dU, U'' += c3 dU), LoadControl.cpp
 // (lambda += dlambda scaled by the iterations of the last step, clamped),
+// HHT.cpp (newStep: Newmark's V, A, the elements at U_n with V_alpha and
+// the loads at t + alpha dt; update: U_alpha = (1 - alpha) U_n + alpha U;
+// commit: the elements at U_n+1, the time t + alpha dt + (1 - alpha) dt),
+// NewtonLineSearch.cpp with InitialInterpolatedLineSearch.cpp,
 // DisplacementControl.cpp (phat = the unbalance at lambda + 1 when the
 // integrator first analyses; newStep: dUhat = K^-1 phat, dlambda = dU /
 // dUhat_c; update: dU = dUbar + dlambda dUhat, dlambda = -dUbar_c / dUhat_c;
@@ -98,6 +102,7 @@ namespace poundfe
               A[node.equation[k]] = node.accel[k];
             }
       trial_time = domain.time;
+      at_alpha   = false;
     }
 
     void
@@ -145,8 +150,9 @@ namespace poundfe
     bool
     Analysis::set_trial(std::string &why)
     {
+      const Vector &u = at_alpha ? U_alpha : U, &v = at_alpha ? V_alpha : V;
       for (auto &[tag, element] : domain.elements)
-        if (!element->set_trial(element_values(*element, U), element_values(*element, V)))
+        if (!element->set_trial(element_values(*element, u), element_values(*element, v)))
           {
             why = "element " + std::to_string(tag) + ": " + element->failure();
             return false;
@@ -157,7 +163,9 @@ namespace poundfe
     Vector
     Analysis::residual() const
     {
-      Vector r = Vector::Zero(n_equations);
+      Vector        r = Vector::Zero(n_equations);
+      const Vector &v = at_alpha ? V_alpha : V; // HHT: the damping at t + alpha dt
+      domain.apply_element_loads(trial_time);   // their resisting forces take them
       for (const auto &[tag, load] : domain.nodal_loads(trial_time))
         {
           const Node &node = domain.node(tag);
@@ -169,7 +177,7 @@ namespace poundfe
         {
           Vector f = element->force();
           if (opts.transient && element->rayleigh_damped()) // materials' own damping is in f
-            f += element_damping(*element, domain.rayleigh) * element_values(*element, V);
+            f += element_damping(*element, domain.rayleigh) * element_values(*element, v);
           for (unsigned int i = 0; i < f.size(); ++i)
             if (element->equations[i] >= 0)
               r[element->equations[i]] -= f[i];
@@ -183,7 +191,7 @@ namespace poundfe
             {
               const int    eq = node.equation[k];
               const double m  = node.mass[k] + node.element_mass[k];
-              r[eq] -= m * (A[eq] + ag[k] + domain.rayleigh.alpha_m * V[eq]);
+              r[eq] -= m * (A[eq] + ag[k] + domain.rayleigh.alpha_m * v[eq]);
             }
       return r;
     }
@@ -248,31 +256,99 @@ namespace poundfe
         print(text.str());
     }
 
+    bool
+    Analysis::apply_increment(const Vector &dx, std::string &why)
+    {
+      U += dx;
+      V += c_c * dx;
+      A += c_m * dx;
+      update_alpha_point();
+      return set_trial(why);
+    }
+
+    void
+    Analysis::update_alpha_point()
+    {
+      if (!at_alpha)
+        return;
+      const double a = opts.alpha;
+      U_alpha        = (1 - a) * U_n + a * U;
+      V_alpha        = (1 - a) * V_n + a * V;
+    }
+
+    bool
+    Analysis::line_search(const double s0, Vector &dx, Vector &r, std::string &why)
+    {
+      const AnalysisOptions::LineSearch &p = opts.line_search;
+      double       s     = -dx.dot(r);
+      const double r0    = s0 != 0 ? std::abs(s / s0) : 0;
+      if (r0 <= p.tolerance)
+        return true; // the residual fell enough
+      const Vector d   = dx;
+      double       eta = 1, eta_prev = 1, ratio = r0;
+      const auto   say = [&](const std::string &text) {
+        if (p.print && print) // OpenSees prints with -pFlag 0
+          print("InitialInterpolated Line Search - " + text);
+      };
+      std::ostringstream text;
+      text << "initial           eta : " << eta << " , Ratio |s/s0| = " << r0;
+      say(text.str());
+      for (unsigned int count = 0; ratio > p.tolerance && count < p.max_iterations;)
+        {
+          ++count;
+          eta *= s0 / (s0 - s);
+          eta = std::min(eta, p.max_eta);
+          if (ratio > r0)
+            eta = 1.0;
+          eta = std::max(eta, p.min_eta);
+          if (eta == eta_prev)
+            break;
+          if (!apply_increment(d * (eta - eta_prev), why))
+            return false;
+          r     = residual();
+          s     = d.dot(r); // OpenSees's sign from here on
+          ratio = std::abs(s / s0);
+          text.str("");
+          text << "iteration: " << count << " , eta(j) : " << eta << " , Ratio |sj/s0| = " << ratio;
+          say(text.str());
+          eta_prev = eta;
+        }
+      if (eta != 0)
+        dx = d * eta;
+      return true;
+    }
+
     int
     Analysis::iterate(std::string &why)
     {
       using Algorithm = AnalysisOptions::Algorithm;
-      Vector r = residual();
-      if (opts.algorithm != Algorithm::newton) // Linear, ModifiedNewton: one tangent per step
-        assemble_tangent(1, c_c, c_m);
+      const bool searching = opts.algorithm == Algorithm::newton_line_search;
+      if (searching && opts.displacement_control && !opts.transient)
+        throw ScriptError("algorithm NewtonLineSearch with integrator DisplacementControl is "
+                          "not supported");
+      const bool every_iteration = opts.algorithm == Algorithm::newton || searching;
+      Vector     r               = residual();
+      if (!every_iteration) // Linear, ModifiedNewton: one tangent per step
+        assemble_tangent(k_k, k_c, c_m);
       Vector dx(n_equations);
       for (unsigned int iteration = 1;; ++iteration)
         {
-          if (opts.algorithm == Algorithm::newton)
-            assemble_tangent(1, c_c, c_m);
+          if (every_iteration)
+            assemble_tangent(k_k, k_c, c_m);
           solver->solve(r, dx);
           if (opts.displacement_control && !opts.transient && !correct_displacement(dx, why))
             return -1;
-          U += dx;
-          V += c_c * dx;
-          A += c_m * dx;
+          const double s0 = -dx.dot(r);
           ++last_iterations;
           ++counts.iterations;
-          if (!set_trial(why))
+          if (!apply_increment(dx, why))
             return -1;
           if (opts.algorithm == Algorithm::linear)
             return 1;
-          r                 = residual();
+          r = residual();
+          // NewtonLineSearch searches unless the test is already met
+          if (searching && test_norm(dx, r) > opts.test.tolerance && !line_search(s0, dx, r, why))
+            return -1;
           const double norm = test_norm(dx, r);
           const int    flag = opts.test.print_flag;
           if (flag == 1 || (flag == 2 && norm <= opts.test.tolerance))
@@ -297,13 +373,23 @@ namespace poundfe
     {
       if (opts.transient)
         {
-          const double g = opts.gamma, b = opts.beta;
+          const double g = opts.gamma, b = opts.beta, a = opts.alpha;
           c_c            = g / (b * dt);
           c_m            = 1 / (b * dt * dt);
+          k_k            = a;
+          k_c            = a * c_c;
+          step_dt        = dt;
           const Vector v = V;
           V              = (1 - g / b) * v + dt * (1 - 0.5 * g / b) * A;
           A              = (1 - 0.5 / b) * A - 1 / (b * dt) * v;
-          trial_time     = domain.time + dt;
+          trial_time     = domain.time + a * dt;
+          if (a != 1) // HHT: the elements at U_n (exactly), the velocity V_alpha
+            {
+              at_alpha = true;
+              U_n = U_alpha = U;
+              V_n           = v;
+              V_alpha       = (1 - a) * V_n + a * V;
+            }
         }
       else if (opts.displacement_control)
         return displacement_step(why);
@@ -312,12 +398,18 @@ namespace poundfe
           lambda_step *= opts.lambda_iterations / last_iterations;
           lambda_step = std::min(std::max(lambda_step, opts.lambda_min), opts.lambda_max);
           trial_time  = domain.time + lambda_step;
-          c_c = c_m = 0;
+          c_c = c_m = k_c = 0;
+          k_k               = 1;
         }
       last_iterations = 0;
-      if (!set_trial(why))
+      if (!set_trial(why) || iterate(why) < 0)
         return false;
-      return iterate(why) >= 0;
+      if (!at_alpha)
+        return true;
+      // HHT's commit: the elements at U_n+1, the time t + alpha dt + (1 - alpha) dt
+      at_alpha = false;
+      trial_time += (1 - opts.alpha) * step_dt;
+      return set_trial(why);
     }
 
     void
@@ -349,7 +441,8 @@ namespace poundfe
         }
       d_u_step *= opts.d_u_iterations / last_iterations;
       d_u_step = std::min(std::max(d_u_step, opts.d_u_min), opts.d_u_max);
-      c_c = c_m = 0;
+      c_c = c_m = k_c = 0;
+      k_k             = 1;
       if (!set_trial(why))
         return false;
       assemble_tangent(1, 0, 0);

@@ -11,6 +11,11 @@
 //   basicForce  q;  basicDeformation (chordRotation, chordDeformation)  v;
 //   section i force | deformation  the resultants (N, M) or deformations
 //               (eps0, kappa) of integration point i (1-based, from end I).
+// A dispBeamColumn on a Linear or PDelta transformation takes uniform
+// element loads as OpenSees's DispBeamColumn2d: the fixed-end basic forces
+// q0 added to q (so to P-Delta's N and its N/L tangent), the basic
+// reactions p0 to the local end forces 0, 1 and 4; the sections do not
+// see the load.
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/beam_column.h>
 #include <poundfe/opensees/opensees_domain.h>
@@ -26,11 +31,27 @@ namespace poundfe
       {
       public:
         BeamColumnElement(const int tag, const std::array<int, 2> nodes,
-                          std::unique_ptr<BeamColumn<2>> beam)
+                          std::unique_ptr<BeamColumn<2>> beam, const bool takes_loads = false)
           : Element(tag, {nodes[0], nodes[1]})
           , member(std::move(beam))
+          , takes_loads(takes_loads)
         {
+          q0.setZero();
+          p0.setZero();
           committed_tangent = tangent();
+        }
+
+        bool takes_beam_loads() const override { return takes_loads; }
+        void
+        zero_loads() override
+        {
+          q0.setZero();
+          p0.setZero();
+        }
+        void
+        add_beam_uniform(const double wy, const double wx) override
+        {
+          add_uniform_beam_load(member->length(), wy, wx, q0, p0);
         }
 
         unsigned int n_dofs() const override { return 6; }
@@ -42,8 +63,29 @@ namespace poundfe
           return member->set_trial(BeamColumn<2>::GlobalVector(u));
         }
 
-        Vector force() const override { return member->resisting_force(); }
-        Matrix tangent() const override { return member->tangent(); }
+        Vector
+        force() const override
+        {
+          if (!takes_loads)
+            return member->resisting_force();
+          // B^T q + P-Delta's p_g are linear in q: q0's share added; p0 in
+          // local components at the ends' translations
+          const auto &t  = member->transformation();
+          const auto &ax = t.local_axes(); // rows: local x, y
+          Vector      p  = member->resisting_force() + t.global_force(q0);
+          p.segment<2>(0) += p0[0] * ax.row(0).transpose() + p0[1] * ax.row(1).transpose();
+          p.segment<2>(3) += p0[2] * ax.row(1).transpose();
+          return p;
+        }
+        Matrix
+        tangent() const override
+        {
+          if (!takes_loads || q0[0] == 0)
+            return member->tangent();
+          // P-Delta's N/L g g^T of q0's N (zero on a Linear transformation)
+          return member->tangent() +
+                 member->transformation().global_tangent(q0, CrdTransformation<2>::BasicMatrix::Zero());
+        }
         Matrix initial_tangent() const override { return member->initial_tangent(); }
         void   commit() override { member->commit(); }
         void   revert() override { member->revert(); }
@@ -54,6 +96,8 @@ namespace poundfe
 
       private:
         std::unique_ptr<BeamColumn<2>> member;
+        bool                           takes_loads;
+        Eigen::Vector3d                q0, p0; // element loads: basic fixed-end forces, reactions
       };
 
       template <typename V>
@@ -67,11 +111,11 @@ namespace poundfe
       BeamColumnElement::response(const std::vector<std::string> &words) const
       {
         const std::string what = words.empty() ? "" : words[0];
-        const auto       &q    = member->basic_force();
+        const Eigen::Vector3d q = member->basic_force() + q0;
         if (words.size() == 1 && (what == "localForce" || what == "localForces"))
           {
             const double shear = (q[1] + q[2]) / member->length();
-            return {-q[0], shear, q[1], q[0], -shear, q[2]};
+            return {-q[0] + p0[0], shear + p0[1], q[1], q[0], -shear + p0[2], q[2]};
           }
         if (words.size() == 1 && (what == "basicForce" || what == "basicForces"))
           return values_of(q);
@@ -111,7 +155,10 @@ namespace poundfe
         const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
         if (a[0] == b[0] && a[1] == b[1])
           throw ScriptError("element " + std::to_string(tag) + " has zero length");
-        return CrdTransformation<2>(kind, {a[0], a[1]}, {b[0], b[1]});
+        CrdTransformation<2> transformation(kind, {a[0], a[1]}, {b[0], b[1]});
+        // OpenSees's own tangent: a script's damping on K_t or K_c takes it
+        transformation.use_opensees_tangent();
+        return transformation;
       }
     } // namespace
 
@@ -152,7 +199,11 @@ namespace poundfe
         }
       else
         beam = std::make_unique<DispBeamColumn<2>>(transf, rule, std::move(sections));
-      return std::make_unique<BeamColumnElement>(tag, nodes, std::move(beam));
+      // element loads on the displacement-based element only: the force-based
+      // one would need them in its force interpolation
+      const bool takes_loads =
+        kind == BeamColumnKind::displacement_based && transformation != Transformation::corotational;
+      return std::make_unique<BeamColumnElement>(tag, nodes, std::move(beam), takes_loads);
     }
 
     std::unique_ptr<Element>

@@ -87,6 +87,22 @@ namespace poundfe
       return loads;
     }
 
+    void
+    Domain::apply_element_loads(const double at_time)
+    {
+      for (auto &[tag, element] : elements)
+        if (element->takes_beam_loads())
+          element->zero_loads();
+      for (const auto &[tag, pattern] : patterns)
+        {
+          if (pattern.uniform_excitation || pattern.beam_loads.empty())
+            continue;
+          const double lambda = pattern.load_factor(at_time);
+          for (const BeamUniformLoad &load : pattern.beam_loads)
+            elements.at(load.element)->add_beam_uniform(load.wy * lambda, load.wx * lambda);
+        }
+    }
+
     std::vector<double>
     Domain::ground_acceleration(const double at_time) const
     {

@@ -9,6 +9,10 @@
 //   q_0 (u_l1 - u_l4)/L to the local transverse forces (+ at i, - at j) and
 //   the geometric stiffness q_0/L [[1, -1], [-1, 1]] on those two DOFs
 //   (PDeltaCrdTransf2d::getGlobalResistingForce, getGlobalStiffMatrix).
+//   A uniform load wy (transverse), wx (axial) adds the fixed-end basic
+//   forces q_0 = (-wx L/2, -wy L^2/12, wy L^2/12) to q (P-Delta's N too)
+//   and the basic reactions p_0 = (-wx L, -wy L/2, -wy L/2) to the local
+//   forces 0, 1 and 4 (ElasticBeam2d::addLoad, LOAD_TAG_Beam2dUniformLoad).
 //
 // truss (Truss, small strains): the zeroLength's row t along the member's
 //   axis x, strain t u / L, force A t^T sigma, tangent (A/L) t^T E t;
@@ -58,6 +62,8 @@ namespace poundfe
           kb << E * A / L, 0, 0, 0, 4 * E * I / L, 2 * E * I / L, 0, 2 * E * I / L, 4 * E * I / L;
           ul.setZero(6);
           q.setZero();
+          q0.setZero();
+          p0.setZero();
           committed_tangent = tangent();
         }
 
@@ -72,13 +78,31 @@ namespace poundfe
           return q.allFinite();
         }
 
+        bool takes_beam_loads() const override { return true; }
+        void
+        zero_loads() override
+        {
+          q0.setZero();
+          p0.setZero();
+        }
+
+        void
+        add_beam_uniform(const double wy, const double wx) override
+        {
+          add_uniform_beam_load(L, wy, wx, q0, p0);
+        }
+
         Vector
         force() const override
         {
-          Vector pl = B.transpose() * q;
+          const Eigen::Vector3d qq = q + q0;
+          Vector                pl = B.transpose() * qq;
+          pl[0] += p0[0];
+          pl[1] += p0[1];
+          pl[4] += p0[2];
           if (p_delta)
             {
-              const double n_over_l = (ul[1] - ul[4]) * q[0] / L;
+              const double n_over_l = (ul[1] - ul[4]) * qq[0] / L;
               pl[1] += n_over_l;
               pl[4] -= n_over_l;
             }
@@ -91,7 +115,7 @@ namespace poundfe
           Matrix kl = B.transpose() * kb * B;
           if (p_delta)
             {
-              const double n_over_l = q[0] / L;
+              const double n_over_l = (q[0] + q0[0]) / L;
               kl(1, 1) += n_over_l;
               kl(4, 4) += n_over_l;
               kl(1, 4) -= n_over_l;
@@ -113,6 +137,7 @@ namespace poundfe
         Eigen::Matrix3d        kb;
         Vector                 ul;
         Eigen::Vector3d        q;
+        Eigen::Vector3d        q0, p0; // element loads: basic fixed-end forces, reactions
       };
 
       class ZeroLength : public Element
@@ -264,6 +289,15 @@ namespace poundfe
         committed_tangent = tangent();
       }
     } // namespace
+
+    void
+    add_uniform_beam_load(const double L, const double wy, const double wx, Eigen::Vector3d &q0,
+                          Eigen::Vector3d &p0)
+    {
+      const double V = 0.5 * wy * L, P = wx * L, M = V * L / 6.0;
+      p0 -= Eigen::Vector3d(P, V, V);
+      q0 -= Eigen::Vector3d(0.5 * P, M, -M);
+    }
 
     std::vector<double>
     Element::response(const std::vector<std::string> &words) const

@@ -3,7 +3,8 @@
 // corotational; plane and space; before and after yield; rigid offsets),
 // the corotational member's rigid-body rotation and its elastica (a
 // cantilever under M = 2 pi EI/L rolls into a circle), and the Euler
-// buckling loads from the tangent's determinant.
+// buckling loads from the tangent's determinant; PDelta with OpenSees's
+// tangent (the scripts' members).
 #include "beam_column_frames.h"
 
 #include <poundfe/base/exceptions.h>
@@ -134,6 +135,45 @@ BOOST_AUTO_TEST_CASE(space_tangents_are_the_derivatives_of_the_forces)
           }
       }
   BOOST_CHECK_THROW(CrdTransformation<3>(Transformation::corotational, a, b), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(pdelta_with_the_opensees_tangent_drops_the_axial_force_variation)
+{
+  // an elastic member on a rotated, drifted and stretched chord: OpenSees's
+  // PDeltaCrdTransf2d::getGlobalStiffMatrix gives B^T k_b B + N/L g g^T
+  // (k_b the classical EA/L, 4EI/L, 2EI/L; g the chord's transverse
+  // relative displacement), without the consistent tangent's (delta/L) g
+  // (dN/du)^T; the forces are the same
+  const Eigen::Vector2d a(0.3, -0.2), b(2.8, 1.1);
+  const double          L = (b - a).norm(), c = (b - a)[0] / L, s = (b - a)[1] / L;
+  Eigen::Matrix<double, 6, 1> u;
+  u << 0.001, -0.002, 0.002, 0.004, 0.03, -0.001;
+  CrdTransformation<2> opensees(Transformation::pdelta, a, b);
+  opensees.use_opensees_tangent();
+  const CrdTransformation<2> consistent(Transformation::pdelta, a, b);
+  const ElasticSection       section(geo_EA, geo_EI);
+  DispBeamColumn<2>          ours(opensees, section, 2), theirs(consistent, section, 2);
+  BOOST_REQUIRE(ours.set_trial(u));
+  BOOST_REQUIRE(theirs.set_trial(u));
+
+  Eigen::Matrix<double, 3, 6> B;
+  B << -c, -s, 0, c, s, 0, //
+    -s / L, c / L, 1, s / L, -c / L, 0, //
+    -s / L, c / L, 0, s / L, -c / L, 1;
+  Eigen::Matrix3d k_b;
+  k_b << geo_EA / L, 0, 0, 0, 4 * geo_EI / L, 2 * geo_EI / L, 0, 2 * geo_EI / L, 4 * geo_EI / L;
+  Eigen::Matrix<double, 6, 1> g;
+  g << s, -c, 0, -s, c, 0;
+  const double                N        = geo_EA / L * (B.row(0) * u)(0);
+  const Eigen::Matrix<double, 6, 6> expected = B.transpose() * k_b * B + N / L * g * g.transpose();
+  const double scale = expected.cwiseAbs().maxCoeff();
+  BOOST_TEST((ours.tangent() - expected).cwiseAbs().maxCoeff() / scale < 1e-12);
+  BOOST_TEST(opensees.has_symmetric_tangent());
+  BOOST_TEST(!consistent.has_symmetric_tangent());
+  // the consistent tangent differs by (delta/L) g (EA/L B_0), not by round-off
+  BOOST_TEST((theirs.tangent() - expected).cwiseAbs().maxCoeff() / scale > 1e-4);
+  BOOST_TEST((ours.resisting_force() - theirs.resisting_force()).norm() <=
+             1e-14 * theirs.resisting_force().norm());
 }
 
 BOOST_AUTO_TEST_CASE(a_corotational_rigid_body_rotation_strains_nothing)

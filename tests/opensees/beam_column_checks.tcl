@@ -205,4 +205,31 @@ analyze 1
 check "truss apex" [nodeDisp 3 2] [expr {-1000.0*5.0/(2*$E*$A*0.64)}] 1e-10
 check "truss ux" [expr {[nodeDisp 3 1] + 1.0}] 1.0 1e-14
 check "truss axialForce" [eleResponse 1 axialForce] [expr {-1000.0/1.6}] 1e-10
+# rigidLink bar: two cantilevers (EI and 3 EI, the second 2 m away) whose
+# tips move together in x and y (OpenSees's RigidBar: the translations
+# equal); H on the first tip: both sway H L^3 / (3 (EI + 3 EI)), each keeps
+# its own rotation (the stiffer turns less, by its share)
+wipe
+model basic -ndm 2 -ndf 3
+node 1 0.0 0.0
+node 2 0.0 $L
+node 3 2.0 0.0
+node 4 2.0 $L
+fix 1 1 1 1
+fix 3 1 1 1
+geomTransf Linear 1
+element elasticBeamColumn 1 1 2 $A $E $I 1
+element elasticBeamColumn 2 3 4 $A $E [expr {3*$I}] 1
+rigidLink bar 2 4
+timeSeries Linear 1
+pattern Plain 1 1 "load 2 $H 0.0 0.0"
+test NormDispIncr 1.0e-12 20
+algorithm Newton
+integrator LoadControl 1.0
+analysis Static
+analyze 1
+set sway [expr {$H*$L*$L*$L/(3*4*$E*$I)}]
+check "rigidLink bar sway" [nodeDisp 2 1] $sway 1e-10
+check "rigidLink bar sway of the other" [nodeDisp 4 1] $sway 1e-10
+check "rigidLink bar rotation" [nodeDisp 2 3] [expr {-1.5*$sway/$L}] 1e-10
 puts "failures $failures"

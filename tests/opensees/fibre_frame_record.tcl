@@ -4,7 +4,9 @@
 # loadConst -time 0, then 6 s of the synthetic record of record.tcl scaled
 # by 1.5 (a Path with -values), Newmark average acceleration, Newton with
 # NormDispIncr, 5 % Rayleigh damping on the committed (or initial) stiffness and mass.
-#   argv: OUTPUT_DIR <committed|initial>
+#   argv: OUTPUT_DIR <committed|initial> <ALGORITHM> <INTEGRATOR>: the
+#   record's algorithm (Newton by default; e.g. NewtonLineSearch) and
+#   integrator words (Newmark 0.5 0.25 by default; e.g. HHT 0.8)
 set out [lindex $argv 0]
 source [file join [file dirname [info script]] record.tcl]
 source [file join [file dirname [info script]] rc_section.tcl]
@@ -70,8 +72,8 @@ constraints Plain
 numberer Plain
 system BandGeneral
 test NormDispIncr 1.0e-12 50
-algorithm Newton
-integrator Newmark 0.5 0.25
+algorithm {*}[expr {$argc > 2 ? [lindex $argv 2] : "Newton"}]
+integrator {*}[expr {$argc > 3 ? [lindex $argv 3] : "Newmark 0.5 0.25"}]
 analysis Transient
 set status [analyze 600 0.01]
 puts "frame: status $status roof [nodeDisp 5 1] [expr {[namespace exists ::poundfe] ? [poundfe::report] : ""}]"

@@ -4,11 +4,13 @@
 # ElasticPPGap (elastic-plastic gap that stays damaged) or ImpactMaterial
 # (Muthukumar-DesRoches bilinear contact); optionally the algorithm
 # (Newton, the default, or ModifiedNewton) and the test (NormDispIncr, the
-# default, or EnergyIncr).
+# default, or EnergyIncr) and the integrator's words (Newmark 0.5 0.25, the
+# default, or e.g. HHT 0.7).
 set out [lindex $argv 0]
 set law [lindex $argv 1]
 set algorithm [expr {$argc > 2 ? [lindex $argv 2] : "Newton"}]
 set test [expr {$argc > 3 ? [lindex $argv 3] : "NormDispIncr"}]
+set integrator [expr {$argc > 4 ? [lindex $argv 4] : "Newmark 0.5 0.25"}]
 source [file join [file dirname [info script]] record.tcl]
 wipe
 model basic -ndm 1 -ndf 1
@@ -47,8 +49,8 @@ if {$test eq "EnergyIncr"} {
 } else {
     test NormDispIncr 1.0e-10 50
 }
-algorithm $algorithm
-integrator Newmark 0.5 0.25
+algorithm {*}$algorithm
+integrator {*}$integrator
 analysis Transient
 set status [analyze $n $dt]
 # poundfe::report where poundfe runs the script (OpenSees has no poundfe::)

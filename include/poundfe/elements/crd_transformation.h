@@ -20,7 +20,9 @@
 //     drifted chord. Its consistent tangent K_g = N/L g g^T + (delta/L) g
 //     (dN/du)^T keeps the second term, which OpenSees drops (it vanishes on
 //     the undeformed member, so buckling loads agree) and which makes K
-//     nonsymmetric; Newton's iteration then converges quadratically.
+//     nonsymmetric; Newton's iteration then converges quadratically. An
+//     OpenSees script's members drop it as OpenSees does
+//     (use_opensees_tangent).
 //   Corotational 2D (Crisfield 1991, vol. 1, §7.3; de Souza 2000, ch. 3;
 //     OpenSees's CorotCrdTransf2d): the chord's current length Ln and angle
 //     beta, its rotation alpha = beta - beta0 from the initial chord,
@@ -114,8 +116,17 @@ namespace poundfe
     const GlobalMatrix &offset_matrix() const { return offsets; }
     /// J - I between the flexible ends, undeformed.
     const Point &chord() const { return chord0; }
-    /// Whether K is symmetric whenever k_b is (PDelta's is not).
-    bool has_symmetric_tangent() const { return type != Transformation::pdelta; }
+    /// PDelta: K_g = N/L g g^T alone, without (delta/L) g (dN/du)^T, as
+    /// OpenSees's PDeltaCrdTransf2d/3d::getGlobalStiffMatrix. The converged
+    /// states are the same; the tangent itself differs wherever N varies
+    /// on a drifted chord, and an OpenSees script's Rayleigh damping on the
+    /// current or committed stiffness (C = beta K_t) takes it as it is.
+    void use_opensees_tangent() { opensees_tangent = true; }
+    /// Whether K is symmetric whenever k_b is (PDelta's consistent one is not).
+    bool has_symmetric_tangent() const
+    {
+      return type != Transformation::pdelta || opensees_tangent;
+    }
 
   private:
     /// Local x, y(, z) rows from the chord and the orientation.
@@ -134,6 +145,7 @@ namespace poundfe
     Eigen::Matrix<double, dim, dim> axes;
     GlobalMatrix                    offsets; // T_o
     bool                            has_offsets;
+    bool                            opensees_tangent = false; // see use_opensees_tangent
     Compatibility                   b_linear, b; // B' (flexible ends) and B = B' T_o
     BasicVector                     v;
     GlobalVector                    u_end; // u' of the last update

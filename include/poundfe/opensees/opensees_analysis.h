@@ -1,10 +1,20 @@
 // The analysis of an OpenSees script's domain, with OpenSees 3.8's
 // algorithms so that a script gives its numbers: the integrators Newmark
-// (displacement predictor, Newmark.cpp), LoadControl and DisplacementControl
+// (displacement predictor, Newmark.cpp), HHT (HHT.cpp: Newmark's predictor
+// with gamma = 3/2 - alpha, beta = (2 - alpha)^2/4; the elements, the
+// damping and the loads at t + alpha dt, U_alpha = (1 - alpha) U_n + alpha
+// U, V_alpha likewise, the inertia at t + dt; tangent alpha K + alpha c2 C
+// + c3 M; the elements set at U_n+1 before the commit), LoadControl and DisplacementControl
 // (DisplacementControl.cpp: newStep's predictor and update's correction of
 // each iterate), the algorithms
 // Linear, Newton and ModifiedNewton (NewtonRaphson.cpp: tangent, solve,
-// update, new residual, test), the tests NormDispIncr (|dU|), NormUnbalance
+// update, new residual, test), NewtonLineSearch with the
+// InitialInterpolated search (NewtonLineSearch.cpp,
+// InitialInterpolatedLineSearch.cpp: s0 = -dU . R before the update; unless
+// the test is met, s = -dU . R after it, and while |s/s0| > tol, eta *= s0 /
+// (s0 - s) within [minEta, maxEta] (1 where |s/s0| grew), the state moved
+// by (eta - eta_prev) dU and s = dU . R (OpenSees's sign); the test then sees
+// eta dU), the tests NormDispIncr (|dU|), NormUnbalance
 // (|R| after the update) and EnergyIncr (|dU . R| / 2), a failed step
 // reverted to the last commit and reported by the return value, as
 // `analyze` does. No step is cut and no event located: poundfe's own
@@ -51,11 +61,21 @@ namespace poundfe
       {
         linear,
         newton,
-        modified_newton
+        modified_newton,
+        newton_line_search
       } algorithm = Algorithm::newton;
       ConvergenceTest test;
+      /// NewtonLineSearch's InitialInterpolated search: -tol, -maxIter,
+      /// -minEta, -maxEta, and -pFlag 0 (print each search iteration).
+      struct LineSearch
+      {
+        double       tolerance = 0.8, min_eta = 0.1, max_eta = 10;
+        unsigned int max_iterations = 10;
+        bool         print          = false;
+      } line_search;
       bool            transient = false;
       double          gamma = 0.5, beta = 0.25;       // Newmark
+      double          alpha = 1; // HHT's (OpenSees's convention: 1 is Newmark)
       double          d_lambda = 1, lambda_min = 1, lambda_max = 1; // LoadControl
       double          lambda_iterations = 1;
       /// DisplacementControl (DisplacementControl.cpp) in place of
@@ -117,6 +137,14 @@ namespace poundfe
       /// phat = R at the committed state and the factor lambda + 1.
       void   reference_load();
       int    iterate(std::string &why);
+      /// U += dx with V, A (Newmark's or HHT's update) and the elements at
+      /// the evaluation point.
+      bool   apply_increment(const Vector &dx, std::string &why);
+      /// InitialInterpolatedLineSearch::search; dx becomes eta dx, r the
+      /// residual there.
+      bool   line_search(double s0, Vector &dx, Vector &r, std::string &why);
+      /// HHT: U_alpha, V_alpha from U_n, V_n and the trial U, V.
+      void   update_alpha_point();
       double test_norm(const Vector &dx, const Vector &r) const;
       /// The test's line of print flag 1 (each iteration) or 2 (convergence).
       void   print_iteration(unsigned int iteration, double norm) const;
@@ -126,9 +154,14 @@ namespace poundfe
       AnalysisOptions opts;
       unsigned int    n_equations = 0;
       Vector          U, V, A;             // trial response by equation
+      Vector          U_n, V_n;            // HHT: the step's start
+      Vector          U_alpha, V_alpha;    // HHT: where elements are evaluated
+      bool            at_alpha = false;    // HHT's iterations: elements at U_alpha
+      double          step_dt  = 0;
       Vector          mass_of_equation;    // lumped nodal masses
       double          trial_time = 0, lambda_step = 0, last_iterations = 1;
-      double          c_c = 0, c_m = 0;    // the step's tangent coefficients
+      double          c_c = 0, c_m = 0;    // the step's update coefficients
+      double          k_k = 1, k_c = 0;    // the tangent's K and C factors (HHT: alpha, alpha c_c)
       Eigen::SparseMatrix<double>   tangent_matrix;
       std::unique_ptr<LinearSolver> solver;
       std::function<void(const std::string &)> print; // analyze's `warn`

@@ -86,6 +86,13 @@ namespace poundfe
       virtual void revert() {}
       virtual void reset() {}
       virtual std::string failure() const { return {}; }
+      /// Element loads (eleLoad -beamUniform): whether it takes them; its
+      /// loads zeroed, and a uniform load added, wy across its local x and
+      /// wx along it, already times its pattern's factor (OpenSees's
+      /// Element::zeroLoad and addLoad).
+      virtual bool takes_beam_loads() const { return false; }
+      virtual void zero_loads() {}
+      virtual void add_beam_uniform(double /*wy*/, double /*wx*/) {}
       /// A response by OpenSees's words (recorder Element, eleResponse):
       /// "force" (or "globalForce") for every element, and for beam-columns
       /// "localForce", "basicForce", "basicDeformation", "section" i
@@ -122,6 +129,13 @@ namespace poundfe
       std::vector<double> values;
     };
 
+    /// eleLoad -ele tag -type -beamUniform Wy <Wx>.
+    struct BeamUniformLoad
+    {
+      int    element = 0;
+      double wy = 0, wx = 0;
+    };
+
     /// A load pattern: Plain (nodal loads times its series) or
     /// UniformExcitation (ground acceleration along `direction`).
     struct Pattern
@@ -132,6 +146,7 @@ namespace poundfe
       double                      factor    = 1; // -fact
       unsigned int                direction = 0; // uniform excitation: 0-based DOF
       std::vector<NodalLoad>      loads;
+      std::vector<BeamUniformLoad> beam_loads;
       /// loadConst: the factor frozen at the time it was called.
       bool   constant        = false;
       double constant_factor = 0;
@@ -189,6 +204,9 @@ namespace poundfe
       Node       &node(int tag);
       /// The nodal loads of the Plain patterns at `time` (per node, per DOF).
       std::map<int, std::vector<double>> nodal_loads(double time) const;
+      /// The Plain patterns' element loads at `time` handed to their
+      /// elements (OpenSees's LoadPattern::applyLoad: zeroLoad, addLoad).
+      void apply_element_loads(double time);
       /// The ground acceleration along each DOF at `time` (UniformExcitation).
       std::vector<double> ground_acceleration(double time) const;
       /// OpenSees's nodal reactions (Domain::calculateNodalReactions(flag)
@@ -225,6 +243,12 @@ namespace poundfe
     /// elastic basic stiffness (a displacement-based member on an elastic
     /// section with two Gauss points) on the corotational basic system, as
     /// OpenSees's ElasticBeam2d with CorotCrdTransf2d.
+    /// A uniform load wy (transverse), wx (axial) on a member of length L
+    /// added to its basic fixed-end forces q0 and basic reactions p0
+    /// (OpenSees's ElasticBeam2d and DispBeamColumn2d::addLoad).
+    void add_uniform_beam_load(double L, double wy, double wx, Eigen::Vector3d &q0,
+                               Eigen::Vector3d &p0);
+
     std::unique_ptr<Element> make_elastic_corotational_2d(const Domain &domain, int tag,
                                                           std::array<int, 2> nodes, double A,
                                                           double E, double I);
