@@ -1012,6 +1012,22 @@ namespace poundfe
     last_step = L.dt;
   }
 
+  double
+  predicted_closing_rate(const double delta, const double rate, const double acceleration,
+                         const double h)
+  {
+    if (delta >= 0)
+      return std::max(rate, 0.0);
+    // The parabola's largest value on [0, h]: at h, or at its vertex when
+    // the gap turns back to opening inside the step.
+    const double vertex  = (acceleration < 0 && rate > 0) ? -rate / acceleration : h;
+    const double t       = std::min(vertex, h);
+    if (delta + rate * t + 0.5 * acceleration * t * t <= 0)
+      return 0;
+    // the rate at the first crossing: v^2 = rate^2 - 2 acceleration delta
+    return std::sqrt(std::max(rate * rate - 2 * acceleration * delta, 0.0));
+  }
+
   bool
   NewmarkIntegrator::contact_needs_shorter_step(const Level &L) const
   {
@@ -1021,11 +1037,30 @@ namespace poundfe
         const NonlinearElement &e = (*elements)[h];
         // Closed, or closing within the step at the committed rate (the
         // gap's history variable is its penetration, negative while open).
-        double duration = 0;
+        double       duration = 0;
+        const double delta    = records.committed_history(h);
+        const double rate     = records.committed_rate(h);
+        const bool   onset_from_acceleration = parameters.newton.contact_onset_from_acceleration;
         if (e.was_active())
           duration = e.contact_duration(0);
-        else if (records.committed_history(h) + records.committed_rate(h) * L.dt > 0)
-          duration = e.contact_duration(records.committed_rate(h));
+        else if (onset_from_acceleration && delta >= 0)
+          // penetrated without force (a damped law's restitution, its force
+          // clipped at zero): still inside the contact episode, on the law's
+          // time scale at the present rate
+          duration = e.contact_duration(std::abs(rate));
+        else if (delta + rate * L.dt > 0)
+          duration = e.contact_duration(rate);
+        else if (onset_from_acceleration)
+          {
+            // A gap that a constant rate would not close but the floors'
+            // acceleration does: missed, it would close deep inside a step
+            // too long for its impact, which Newton then fails (a step cut).
+            // Over two steps, since the acceleration changes within one.
+            const double closing =
+              predicted_closing_rate(delta, rate, e.deformation(a), 2 * L.dt);
+            if (closing > 0)
+              duration = e.contact_duration(closing);
+          }
         if (duration > 0 && n * L.dt > duration)
           return true;
       }

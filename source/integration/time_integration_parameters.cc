@@ -135,6 +135,15 @@ namespace poundfe
                       "sub-step; Event refinement, Steps per contact and Maximum step cuts "
                       "count their levels from c. 0: off. Unit: count.",
                       Patterns::Integer(0, 100000));
+    prm.add_parameter("Contact onset from acceleration",
+                      newmark.newton.contact_onset_from_acceleration,
+                      "newmark: Contact/Steps per contact also splits a step from which an "
+                      "open gap closes within two steps on the parabola of its committed rate "
+                      "and relative acceleration (not only within the step at the constant "
+                      "rate), with the approach velocity at the crossing, and a step from a gap "
+                      "penetrated without force; so that a contact the floors accelerate into "
+                      "is resolved before it is tried rather than cut after Newton fails "
+                      "(theory §3.7a). false: the constant rate alone. Unit: -.");
     prm.add_parameter("End time", end_time,
                       "s; 0: the length of the ground motion. Unit: s.");
     prm.add_parameter("Maximum number of steps", max_steps,

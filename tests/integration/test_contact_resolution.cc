@@ -18,6 +18,7 @@
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/time_history.h>
 #include <poundfe/excitation/excitation.h>
+#include <poundfe/integration/newmark.h>
 #include <poundfe/output/peak_response.h>
 
 #include <boost/test/unit_test.hpp>
@@ -115,4 +116,28 @@ BOOST_AUTO_TEST_CASE(jankowski_gaps_at_ten_milliseconds_without_step_cuts)
   const StudyRun resolved  = run_pair(1e-3, jankowski);
   BOOST_TEST(resolved.n_impacts == reference.n_impacts);
   BOOST_TEST(worst_difference(resolved, reference) < 0.005);
+}
+
+// Contact onset from acceleration: the rate at which an open gap closes on
+// the parabola delta + rate t + acceleration t^2 / 2 within a step h, from
+// the closed form of the crossing (t solves the quadratic; v = rate +
+// acceleration t, i.e. v^2 = rate^2 - 2 acceleration delta).
+BOOST_AUTO_TEST_CASE(a_gap_closes_on_the_parabola_of_its_rate_and_acceleration)
+{
+  const double h = 1e-2, delta = -1e-3;
+  // a constant rate that closes it: the rate itself
+  BOOST_CHECK_CLOSE(predicted_closing_rate(delta, 0.2, 0, h), 0.2, 1e-12);
+  // too slow alone (delta + rate h = -5e-4), closed by the acceleration
+  const double t = (-0.05 + std::sqrt(0.05 * 0.05 + 2 * 20 * 1e-3)) / 20;
+  BOOST_TEST(t < h);
+  BOOST_CHECK_CLOSE(predicted_closing_rate(delta, 0.05, 20, h), 0.05 + 20 * t, 1e-10);
+  // decelerating, crossing before h: the rate at the crossing
+  BOOST_CHECK_CLOSE(predicted_closing_rate(delta, 0.2, -10, h), std::sqrt(0.04 - 0.02), 1e-10);
+  // decelerating, turning back at t = 4e-3 s 0.6 mm short of contact
+  BOOST_TEST(predicted_closing_rate(delta, 0.2, -50, h) == 0);
+  // opening, and approaching too slowly with no acceleration
+  BOOST_TEST(predicted_closing_rate(delta, -0.1, 5, h) == 0);
+  BOOST_TEST(predicted_closing_rate(delta, 0.05, 0, h) == 0);
+  // closed already: the closing rate, not negative
+  BOOST_TEST(predicted_closing_rate(1e-4, -0.3, 0, h) == 0);
 }

@@ -83,7 +83,19 @@ namespace poundfe
     /// is halved until the impact's duration (NonlinearElement::
     /// contact_duration) spans at least this many steps; 0: off.
     unsigned int steps_per_contact  = 20;
+    /// Steps per contact's prediction that an open gap closes within the
+    /// step: false, at the committed closing rate (delta + rate h > 0);
+    /// true, also with the committed relative acceleration
+    /// (predicted_closing_rate), which then gives the approach velocity.
+    bool         contact_onset_from_acceleration = false;
   };
+
+  /// The rate (> 0, m/s) at which a gap of penetration `delta` (< 0: open),
+  /// closing rate `rate` and relative acceleration `acceleration` (> 0:
+  /// closing) closes within a step `h` on the parabola delta + rate t +
+  /// acceleration t^2 / 2 (0 < t <= h); 0 when it does not close.
+  double
+  predicted_closing_rate(double delta, double rate, double acceleration, double h);
 
   struct NewmarkParameters
   {
