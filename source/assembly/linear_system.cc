@@ -287,7 +287,8 @@ namespace poundfe
         scatter(model, {n_dofs_per_node * hinge.node + hinge.slot},
                 Eigen::Matrix<double, 1, 1>(hinge.law.stiffness), k_triplets);
       for (const DofMass &mass : model.dof_masses)
-        scatter(model, {mass.dof}, Eigen::Matrix<double, 1, 1>(mass.mass), m_triplets);
+        if (mass.inertia) // else a weight only (Vertical floor mass = none)
+          scatter(model, {mass.dof}, Eigen::Matrix<double, 1, 1>(mass.mass), m_triplets);
     }
 
     /// 1 on the free equations of component c of every node.

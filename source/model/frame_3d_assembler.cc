@@ -133,7 +133,10 @@ namespace poundfe
           }
         j->v                                  = add_node(at, true);
         model.nodes[j->v].joint_translation_z = true;
-        model.dof_masses.push_back({n_dofs_per_node * unsigned(j->v), f.mass / n_joint}); // uz
+        // uz: its share of the floor's weight always, of its inertia unless
+        // Vertical floor mass = none
+        model.dof_masses.push_back(
+          {n_dofs_per_node * unsigned(j->v), f.mass / n_joint, p.vertical_floor_mass == "joints"});
       }
     building.floors.push_back(floor);
     building.plan.push_back({f.mass_centre, slab.outline});

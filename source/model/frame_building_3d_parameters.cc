@@ -77,10 +77,20 @@ namespace poundfe
     prm.add_parameter("Diaphragm", diaphragm,
                       "[3D frame, mesh] rigid: each floor a rigid diaphragm, its joints slaved "
                       "exactly to (ux, uy, rz) at the mass centre (which carries the floor "
-                      "mass and polar moment; the joints carry the vertical mass); none: "
+                      "mass and polar moment; the joints carry the vertical mass: Vertical floor mass); none: "
                       "every joint free, the floor mass in equal shares at the joints (no "
                       "contact in plan). Unit: -.",
                       Patterns::Selection("rigid|none"));
+    prm.add_parameter("Vertical floor mass", vertical_floor_mass,
+                      "[3D frame, mesh] joints: each joint's vertical DOF carries an equal "
+                      "share of its floor's mass (the floor's vertical and rocking inertia: "
+                      "its vertical modes, and the joints' vertical motion in sway); none: "
+                      "the floor mass moves along x and y and turns (polar moment) at the "
+                      "diaphragm's master only (with Diaphragm = none: at the joints along x "
+                      "and y only), the joints' vertical DOFs carry no floor mass, as the "
+                      "storeys of a shear building. Either way the floor's weight loads its "
+                      "joints in the gravity analysis. Unit: -.",
+                      Patterns::Selection("joints|none"));
   }
 
   void

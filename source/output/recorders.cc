@@ -114,7 +114,13 @@ namespace poundfe
       void
       finish(const ResponseView &state, const RunStatus &) override
       {
-        std::string text = "building,storey,residual_drift_ratio,residual_floor_disp_m\n";
+        // 3D: along x, along y and about z (the storey's twist, the floor's
+        // rotation), every column named with its direction
+        const bool  plan = peaks.floors_y() != nullptr;
+        std::string text = plan ? "building,storey,residual_drift_ratio_x,residual_drift_ratio_y,"
+                                  "residual_twist_rad,residual_floor_disp_x_m,"
+                                  "residual_floor_disp_y_m,residual_floor_rot_z_rad\n" :
+                                  "building,storey,residual_drift_ratio,residual_floor_disp_m\n";
         for (unsigned int b = 0; b < state.model.buildings.size(); ++b)
           for (unsigned int f = 0; f < state.model.buildings[b].floors.size(); ++f)
             {
@@ -122,8 +128,16 @@ namespace poundfe
               std::ostringstream row;
               row.precision(17);
               row << state.model.buildings[b].name << "," << f + 1 << ","
-                  << peaks.floors().drift_ratio()[i] << ","
-                  << peaks.floors().displacement()[i] << "\n";
+                  << peaks.floors().drift_ratio()[i] << ",";
+              if (plan)
+                row << peaks.floors_y()->drift_ratio()[i] << ","
+                    << peaks.floors_rz()->drift_ratio()[i] *
+                         state.model.buildings[b].floors[f].storey_height
+                    << "," << peaks.floors().displacement()[i] << ","
+                    << peaks.floors_y()->displacement()[i] << ","
+                    << peaks.floors_rz()->displacement()[i] << "\n";
+              else
+                row << peaks.floors().displacement()[i] << "\n";
               text += row.str();
             }
         write_result_text(memory, directory, name, text);
@@ -163,14 +177,33 @@ namespace poundfe
       return all;
     }
 
-    /// One column per building: the shear of its first storey.
+    /// One column per building: the shear of its first storey; 3D: the base
+    /// shears along x and y and the base torque about the first floor's mass
+    /// centre at rest (output/storey_forces.h).
     Series
     base_shear_series(const ResponseView &state, const std::shared_ptr<const StoreyForces> &forces)
     {
+      const bool               plan = state.model.dimension == 3;
       std::vector<std::string> columns;
       for (const Building &b : state.model.buildings)
-        columns.push_back(b.name + "_base_shear_N");
+        if (plan)
+          for (const char *c : {"_base_shear_x_N", "_base_shear_y_N", "_base_torque_N_m"})
+            columns.push_back(b.name + c);
+        else
+          columns.push_back(b.name + "_base_shear_N");
       const unsigned int n_buildings = state.model.buildings.size();
+      if (plan)
+        return {columns,
+                [forces, n_buildings](const ResponseView &s, std::vector<double> &to) {
+                  to.resize(3 * n_buildings);
+                  for (unsigned int b = 0; b < n_buildings; ++b)
+                    {
+                      const std::array<double, 3> V =
+                        forces->plan_forces(forces->index(b, 0), s.displacement());
+                      std::copy(V.begin(), V.end(), to.begin() + 3 * b);
+                    }
+                },
+                owners_of(Owner::building, first_integers(n_buildings), 3)};
       auto shears = std::make_shared<std::vector<double>>();
       return {columns,
               [forces, shears, n_buildings](const ResponseView &s, std::vector<double> &to) {
@@ -180,6 +213,33 @@ namespace poundfe
                   to[b] = (*shears)[forces->index(b, 0)];
               },
               owners_of(Owner::building, first_integers(n_buildings), 1)};
+    }
+
+    /// A 3D model's storey shears: V_x, V_y and the torque T of every storey
+    /// (output/storey_forces.h), each column named with its direction.
+    Series
+    plan_storey_shear_series(const PeakResponse &peaks,
+                             const std::shared_ptr<const StoreyForces> &forces)
+    {
+      const FloorResponse &floors = peaks.floors();
+      const std::array<std::vector<std::string>, 3> names{
+        {floors.column_names("storey", "shear_x_N"), floors.column_names("storey", "shear_y_N"),
+         floors.column_names("storey", "torque_N_m")}};
+      const unsigned int       n = floors.n_floors();
+      std::vector<std::string> columns;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int d = 0; d < 3; ++d)
+          columns.push_back(names[d][i]);
+      return {columns,
+              [forces, n](const ResponseView &s, std::vector<double> &to) {
+                to.resize(3 * n);
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    const std::array<double, 3> V = forces->plan_forces(i, s.displacement());
+                    std::copy(V.begin(), V.end(), to.begin() + 3 * i);
+                  }
+              },
+              owners_of(Owner::floor, first_integers(n), 3)};
     }
 
     /// The six end forces of each requested member; an unknown label is bad input.
@@ -534,6 +594,8 @@ namespace poundfe
               return plan_series(request.quantity, state.model, peaks);
             return {floors.column_names("storey", "drift_ratio"), copy(floors.drift_ratio()), {}};
           case RecordedQuantity::storey_shear:
+            if (plan)
+              return plan_storey_shear_series(peaks, forces);
             return {floors.column_names("storey", "shear_N"),
                     [forces](const ResponseView &s, std::vector<double> &to) {
                       forces->storey_shears(s.displacement(), s.velocity(), to);

@@ -615,7 +615,29 @@ namespace poundfe
     std::iota(column.begin(), column.end(), 1u);
     std::vector<double> peak_shear = base_shears.peak();
     peak_shear.resize(model.buildings.size(), 0.0); // not observed: a run stopped before its start
-    add_building_series(shear, model, directory, "base_shear.csv", column, peak_shear, "1000");
+    const PlanResponse *plan = peaks.plan();
+    if (!plan)
+      {
+        add_building_series(shear, model, directory, "base_shear.csv", column, peak_shear, "1000");
+        return shear;
+      }
+    // 3D: base_shear.csv holds V_x, V_y and the torque of each building; the
+    // shears along x (solid) and y, the torque (another unit) left out
+    for (unsigned int b = 0; b < plan->buildings().size() && b < peak_shear.size(); ++b)
+      peak_shear[b] = std::max(plan->buildings()[b].base_shear_x, plan->buildings()[b].base_shear_y);
+    std::vector<unsigned int> columns;
+    std::vector<std::string>  titles;
+    const std::vector<unsigned int> drawn = curves_to_draw(peak_shear, max_named_curves / 2);
+    for (const unsigned int b : drawn)
+      {
+        columns.insert(columns.end(), {1 + 3 * b, 2 + 3 * b});
+        titles.insert(titles.end(), {model.buildings[b].name + " along x",
+                                     model.buildings[b].name + " along y"});
+      }
+    shear.title = title_of_drawn("Base shears along x and y (element forces)", drawn.size(),
+                                 model.buildings.size(), "buildings");
+    add_time_series(shear, directory, "base_shear.csv", columns, titles, "1000",
+                    drawn.size() < model.buildings.size());
     return shear;
   }
 

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -210,12 +211,39 @@ namespace poundfe
   void
   RunSummary::write_profiles() const
   {
+    // 3D: along x, along y and about z (a storey's twist, a floor's rotation
+    // and angular acceleration), every column named with its direction, and
+    // the floor's peak resultant displacement
     const Model         &model  = analysis.model;
     const FloorResponse &floors = peaks.floors();
+    const FloorResponse *y = peaks.floors_y(), *rz = peaks.floors_rz();
     // fibre members: each storey's damage state (its worst member's limit)
-    std::string drift = std::string("building,storey,peak_drift_ratio,time_of_peak_s") +
-                        (section_limits ? ",damage_state\n" : "\n");
-    std::string accel = "building,floor,peak_absolute_acc_m_s2,peak_floor_disp_m\n";
+    const std::string damage_header = section_limits ? ",damage_state\n" : "\n";
+    std::string drift = (y ? std::string("building,storey,peak_drift_ratio_x,time_of_peak_x_s,"
+                                         "peak_drift_ratio_y,time_of_peak_y_s,peak_twist_rad,"
+                                         "time_of_peak_twist_s") :
+                             std::string("building,storey,peak_drift_ratio,time_of_peak_s")) +
+                        damage_header;
+    std::string accel =
+      y ? "building,floor,peak_absolute_acc_x_m_s2,peak_floor_disp_x_m,peak_absolute_acc_y_m_s2,"
+          "peak_floor_disp_y_m,peak_angular_acc_rad_s2,peak_floor_rot_rad,"
+          "peak_resultant_disp_m\n" :
+          "building,floor,peak_absolute_acc_m_s2,peak_floor_disp_m\n";
+    // every number in the shortest text that reads back exactly
+    // (std::to_string kept 6 decimals: 3 digits of a drift ratio); `last`
+    // ends the row (a damage state, if any)
+    const auto row = [](std::string &text, const std::string &name,
+                        const std::initializer_list<double> values,
+                        const std::string &last = std::string()) {
+      text += name;
+      for (const double *v = values.begin(); v != values.end(); ++v)
+        {
+          append_number(text, *v);
+          if (v + 1 != values.end())
+            text += ',';
+        }
+      text += last + '\n';
+    };
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       for (unsigned int f = 0; f < model.buildings[b].floors.size(); ++f)
         {
@@ -223,20 +251,25 @@ namespace poundfe
           const std::vector<int> damage =
             section_limits ? section_limits->storey_worst_limits(model, b) : std::vector<int>();
           const std::string  name = model.buildings[b].name + "," + std::to_string(f + 1) + ",";
-          // every number in the shortest text that reads back exactly
-          // (std::to_string kept 6 decimals: 3 digits of a drift ratio)
-          drift += name;
-          append_number(drift, floors.peak_drift_ratio()[i]);
-          drift += ',';
-          append_number(drift, floors.peak_drift_time()[i]);
-          if (section_limits)
-            drift += std::string(",") + damage_state_name(damage[f]);
-          drift += '\n';
-          accel += name;
-          append_number(accel, floors.peak_acceleration()[i]);
-          accel += ',';
-          append_number(accel, floors.peak_displacement()[i]);
-          accel += '\n';
+          const std::string damage_column =
+            section_limits ? std::string(",") + damage_state_name(damage[f]) : std::string();
+          if (!y)
+            {
+              row(drift, name, {floors.peak_drift_ratio()[i], floors.peak_drift_time()[i]},
+                  damage_column);
+              row(accel, name, {floors.peak_acceleration()[i], floors.peak_displacement()[i]});
+              continue;
+            }
+          const double height = model.buildings[b].floors[f].storey_height;
+          row(drift, name, {floors.peak_drift_ratio()[i], floors.peak_drift_time()[i],
+                            y->peak_drift_ratio()[i], y->peak_drift_time()[i],
+                            rz->peak_drift_ratio()[i] * height, rz->peak_drift_time()[i]},
+              damage_column);
+          row(accel, name, {floors.peak_acceleration()[i], floors.peak_displacement()[i],
+                            y->peak_acceleration()[i], y->peak_displacement()[i],
+                            rz->peak_acceleration()[i], rz->peak_displacement()[i],
+                            b < plan.buildings().size() ? // observed
+                              plan.buildings()[b].storeys[f].resultant_displacement : 0.0});
         }
     write_result_text(memory, directory, "drift_profile.csv", drift);
     write_result_text(memory, directory, "acceleration_profile.csv", accel);

@@ -3,8 +3,13 @@
 (X_DIR), along y (Y_DIR: the same motion turned by 90 degrees) and at 45
 degrees (D45_DIR):
   * every column of floor_displacement.csv, floor_acceleration.csv, drift.csv
-    (mass centres and slab corners) and ground_motion.csv of Y_DIR along y is
-    X_DIR's along x, column for column, and along x X_DIR's along y (none);
+    (mass centres and slab corners), ground_motion.csv, base_shear.csv and
+    storey_shear.csv of Y_DIR along y is X_DIR's along x, column for column,
+    and along x X_DIR's along y (none); so are the peaks and residuals of
+    drift_profile.csv, acceleration_profile.csv and residual_drift.csv, row
+    for row (the time of a peak along the axis shaken);
+  * base_shear.csv is storey_shear.csv's first storey (x, y and torque), and
+    its largest |V_x|, |V_y|, |T| are the summary's plan peaks;
   * at 45 degrees the columns along x and along y are both X_DIR's along x
     over sqrt(2), and so are the summary's PGA of each axis and the storeys'
     peaks along x and y;
@@ -49,7 +54,8 @@ def agree(what, got, want, scale):
 
 
 worst = 0.0
-for name in ("floor_displacement.csv", "floor_acceleration.csv", "drift.csv", "ground_motion.csv"):
+for name in ("floor_displacement.csv", "floor_acceleration.csv", "drift.csv", "ground_motion.csv",
+             "base_shear.csv", "storey_shear.csv"):
     x, y, d = table(x_dir, name), table(y_dir, name), table(d45_dir, name)
     columns = [c for c in x if c != "time_s"]
     if not any(along_x(c) for c in columns) or not all(swapped(c) in x for c in columns):
@@ -67,7 +73,47 @@ for name in ("floor_displacement.csv", "floor_acceleration.csv", "drift.csv", "g
                 worst = max(worst, agree(f"{name} {other} at 45 degrees against {c} / sqrt(2)",
                                          d[other], [v / math.sqrt(2) for v in x[c]], scale))
 
+
+
+def rows_of(directory, name):
+    """A table of one row per storey or floor: its numeric columns."""
+    with open(os.path.join(directory, name)) as f:
+        rows = list(csv.DictReader(f))
+    return {c: [float(r[c]) for r in rows] for c in rows[0] if c not in ("building", "storey", "floor")}
+
+
+# per storey / floor: the peaks and residuals along the axis shaken, and the
+# time of the peak along it; about z (twist, rotation) round-off in both runs
+for name in ("drift_profile.csv", "acceleration_profile.csv", "residual_drift.csv"):
+    x, y = rows_of(x_dir, name), rows_of(y_dir, name)
+    columns = [c for c in x if along_x(c)]
+    if not columns or not all(swapped(c) in x for c in columns):
+        failures.append(f"{name}: no columns along x and y ({', '.join(list(x)[:4])}, ...)")
+        continue
+    for c in columns:
+        scale = max(max(abs(v) for v in x[c]), 1e-300)
+        worst = max(worst, agree(f"{name} {swapped(c)} shaken along y against {c} along x",
+                                 y[swapped(c)], x[c], scale))
+    if "peak_resultant_disp_m" in x:
+        worst = max(worst, agree(f"{name} peak_resultant_disp_m shaken along y and along x",
+                                 y["peak_resultant_disp_m"], x["peak_resultant_disp_m"],
+                                 max(x["peak_resultant_disp_m"])))
+
 sx, sy, sd = summary(x_dir), summary(y_dir), summary(d45_dir)
+# the base shears are the first storey's, and their peaks the summary's
+for directory, run in ((x_dir, sx), (y_dir, sy)):
+    base, storeys = table(directory, "base_shear.csv"), table(directory, "storey_shear.csv")
+    for building in run["buildings"]:
+        n = building["name"]
+        for base_column, storey_column, key in (("base_shear_x_N", "storey1_shear_x_N", "peak_base_shear_x_N"),
+                                                ("base_shear_y_N", "storey1_shear_y_N", "peak_base_shear_y_N"),
+                                                ("base_torque_N_m", "storey1_torque_N_m", "peak_base_torque_N_m")):
+            if base[f"{n}_{base_column}"] != storeys[f"{n}_{storey_column}"]:
+                failures.append(f"{directory}: {n}_{base_column} is not {n}_{storey_column}")
+            peak = max(abs(v) for v in base[f"{n}_{base_column}"])
+            if peak != building["plan"][key]:
+                failures.append(f"{directory}: largest |{n}_{base_column}| {peak!r}, summary {key} "
+                                f"{building['plan'][key]!r}")
 pga = sx["ground_motion"]["pga_m_s2"]
 for key, want in (("pga_x_m_s2", pga / math.sqrt(2)), ("pga_y_m_s2", pga / math.sqrt(2))):
     worst = max(worst, agree(f"summary {key} at 45 degrees", [sd["ground_motion"][key]], [want], pga))

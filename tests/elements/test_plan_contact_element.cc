@@ -1,6 +1,8 @@
 // The plan contact element (elements/plan_contact_element.h): its tangent
-// against central differences of its force, and an eccentric collision of two
-// free rigid slabs that conserves linear and angular momentum.
+// against central differences of its force, an eccentric collision of two
+// free rigid slabs that conserves linear and angular momentum, and the work
+// of an undamped law against its stored energy (doc/verification.md,
+// "Contact work of an undamped law").
 #include <poundfe/elements/plan_contact_element.h>
 
 #include <boost/test/unit_test.hpp>
@@ -34,9 +36,20 @@ namespace
   }
 
   PlanContactElement
-  element(const unsigned int end)
+  element(const unsigned int end, std::unique_ptr<ContactLaw> law = kelvin_voigt())
   {
-    return PlanContactElement(0, "test", {0, 1, 2, 3, 4, 5}, offset_slabs(end), kelvin_voigt());
+    return PlanContactElement(0, "test", {0, 1, 2, 3, 4, 5}, offset_slabs(end), std::move(law));
+  }
+
+  /// The linear law, undamped: elastic, F = k δ.
+  std::unique_ptr<ContactLaw>
+  undamped_linear()
+  {
+    ContactLawParameters p;
+    p.law            = "linear";
+    p.stiffness      = 1e8;
+    p.effective_mass = 5e4;
+    return make_contact_law(p);
   }
 
   Vector6
@@ -126,6 +139,45 @@ BOOST_AUTO_TEST_CASE(eccentric_collision_conserves_momenta)
   BOOST_TEST(std::abs(after[0] - before[0]) < 1e-12 * m1);
   BOOST_TEST(std::abs(after[1] - before[1]) < 1e-12 * m1);
   BOOST_TEST(std::abs(after[2] - before[2]) < 1e-10 * std::abs(before[2]) + 1e-9 * i1);
+}
+
+BOOST_AUTO_TEST_CASE(undamped_work_is_the_stored_energy_unless_a_step_spans_the_touch)
+{
+  // Floor 1 pressed east into floor 2 while both turn (the normal turns with
+  // them), in 400 steps that stay in contact: the trapezoidal work
+  // Σ (F_n + F_n+1)/2 (δ_n+1 - δ_n) of F = k δ is exact, so the work done
+  // equals the stored energy k δ²/2 to round-off: nothing is dissipated.
+  // A step from open (δ_0 < 0) to closed (δ_1 > 0) counts (F_1/2)(δ_1 - δ_0),
+  // F_1 |δ_0| / 2 more than the spring stores: the kink of the law inside
+  // the step, which is the whole residue of an undamped contact in a run
+  // (the integrator's trapezoid, which the energy balance shares).
+  PlanContactElement e = element(0, undamped_linear());
+  const Vector6      v = Vector6::Zero();
+  const auto at = [](const double s) { // closed by 1-11 mm, turning
+    return Vector6(0.201 + 0.01 * s, 0.02 * s, 5e-4 * s, -0.001 * s, 0.0, -3e-4 * s);
+  };
+  BOOST_REQUIRE(e.set_trial(at(0), v));
+  BOOST_REQUIRE(e.is_active());
+  e.commit();
+  const double stored_at_start = e.stored_energy();
+  double       work            = stored_at_start;
+  for (unsigned int n = 1; n <= 400; ++n)
+    {
+      BOOST_REQUIRE(e.set_trial(at(n / 400.0), v));
+      work += e.work_increment();
+      e.commit();
+    }
+  BOOST_TEST(e.is_active());
+  BOOST_TEST(std::abs(work - e.stored_energy()) <= 1e-9 * e.stored_energy());
+
+  PlanContactElement touch = element(0, undamped_linear());
+  BOOST_REQUIRE(touch.set_trial(Vector6(0.199, 0, 0, 0, 0, 0), v)); // open by 1 mm
+  touch.commit();
+  const double delta_0 = touch.history_variable();
+  BOOST_REQUIRE(touch.set_trial(Vector6(0.203, 0, 0, 0, 0, 0), v)); // closed by 3 mm
+  BOOST_TEST(delta_0 == -1e-3, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(touch.work_increment() - touch.stored_energy() ==
+               0.5 * touch.force() * -delta_0, boost::test_tools::tolerance(1e-9));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -3,6 +3,7 @@
 // planar frame (with and without hinges), the rigid diaphragm of a
 // one-storey frame against Chopra's closed form, and the bad input a 3D
 // frame refuses (doc/verification.md, "3D frame buildings").
+#include <poundfe/assembly/linear_system.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/engine_parameters.h>
@@ -230,6 +231,31 @@ BOOST_AUTO_TEST_CASE(rigid_diaphragm_matches_chopra)
   // K_θ(C) = K_θR + e^2 K_y; I = m (12^2 + 5^2) / 12; u_x uncouples.
   check_chopra(one_storey_frame(1.3), 12 * 3e10 * 2e-3 / std::pow(3.5, 3),
                12 * 3e10 * 1e-3 / std::pow(3.5, 3), "chopra_frame_3d");
+}
+
+BOOST_AUTO_TEST_CASE(floor_mass_at_the_master_only_matches_chopra_with_three_modes)
+{
+  // Vertical floor mass = none: the floor mass at the diaphragm's master
+  // alone. The massless columns leave the master's three DOFs the only
+  // massive ones: exactly three modes, at Chopra's closed form (rigid beams:
+  // the joints do not move vertically in sway, so the frequencies are those
+  // with the joints' vertical mass too); with it, the joints' vertical modes
+  // follow. The floor's weight loads the joints either way.
+  const std::string none = one_storey_frame(1.3, " set Vertical floor mass = none\n");
+  check_chopra(none, 12 * 3e10 * 2e-3 / std::pow(3.5, 3), 12 * 3e10 * 1e-3 / std::pow(3.5, 3),
+               "chopra_master_only_3d");
+  const auto six_modes = [](std::string text) {
+    const std::string three = "Number of modes = 3";
+    return text.replace(text.find(three), three.size(), "Number of modes = 6");
+  };
+  const Analysis master = prepare_analysis(poundfe_test::input_of("master_only", six_modes(none)));
+  const Analysis joints =
+    prepare_analysis(poundfe_test::input_of("joints", six_modes(one_storey_frame(1.3))));
+  BOOST_TEST(master.modes.n_modes() == 3u);
+  BOOST_TEST(joints.modes.n_modes() == 6u);
+  const double weight = -master.model.gravity * 8e4;
+  BOOST_TEST(total_gravity_loads(master.model).sum() == weight, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(total_gravity_loads(joints.model).sum() == weight, boost::test_tools::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_CASE(base_hinges_about_both_axes_match_chopra)

@@ -228,6 +228,9 @@ namespace poundfe
   {
     unsigned int dof  = 0;
     double       mass = 0;
+    /// false: the mass's weight alone (a gravity load on the DOF), no
+    /// inertia in M (a 3D floor's Vertical floor mass = none)
+    bool inertia = true;
   };
 
   /// Two facing slab edges in plan, at rest, site coordinates: the edge of

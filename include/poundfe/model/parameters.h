@@ -87,6 +87,7 @@ namespace poundfe
     std::vector<double> beam_second_moment_z;
     std::vector<double> beam_torsion_constant;
     std::string         diaphragm = "rigid"; // rigid|none
+    std::string         vertical_floor_mass = "joints"; // joints|none
     /// A set-back (model/set_backs.h): from `storey` up to the next entry,
     /// the bays removed from the full grid on the sides -x, +x, -y, +y.
     struct SetBack
