@@ -81,7 +81,7 @@ namespace poundfe
       static const std::vector<std::string> entries{
         "Number of bays y", "Bay widths y", "Column G", "Column Iz", "Column J", "Column angle",
         "Beam G", "Beam Iz", "Beam J", "Column Avz", "Column Avy", "Beam Avz", "Beam Avy",
-        "Diaphragm", "Group G", "Group Iz", "Group J", "Group orientation",
+        "Diaphragm", "Vertical floor mass", "Group G", "Group Iz", "Group J", "Group orientation",
         "Hinges/Biaxial interaction", "Foundation/Horizontal stiffness y",
         "Foundation/Horizontal damping y", "Foundation/Rocking stiffness x",
         "Foundation/Rocking damping x", "Foundation/Torsional stiffness",

@@ -42,6 +42,8 @@ plan_pair() { # two 3D shear buildings; $1: Model entries, $2 and $3: their Plan
 # refused: a 3D entry in a planar model names its file, line and entry
 shear '  set Number of bays y = 2' > planar.prm
 expect 1 "planar.prm:6: parameter 'Building 1/Number of bays y': acts only with Model/Dimension = 3" run planar.prm --output out
+shear '  set Vertical floor mass = none' > planar-mass.prm
+expect 1 "planar-mass.prm:6: parameter 'Building 1/Vertical floor mass': acts only with Model/Dimension = 3" run planar-mass.prm --output out
 # warned: Separations when every building after the first has a Position
 plan_pair '  set Separations = 0.05' '    set Position = 0, 0' '    set Position = 6.1, 0' '  set Law = linear' > placed.prm
 expect 0 "results in out" run placed.prm --output out
