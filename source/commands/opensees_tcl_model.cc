@@ -733,9 +733,12 @@ namespace poundfe
         unsupported("recorder Node response '" + word + "'");
       }
 
-      void
-      recorder_option(opensees::Domain &d, Words &w, const std::string &option,
-                      opensees::NodeRecorderSpec &r)
+      /// The options of every recorder's output (-file, -time, -precision,
+      /// -closeOnWrite) into a Node or Element recorder's spec; false for
+      /// any other word.
+      template <typename RecorderSpec>
+      bool
+      output_option(Words &w, const std::string &option, RecorderSpec &r)
       {
         if (option == "-file")
           r.file = w.word("the file");
@@ -743,9 +746,20 @@ namespace poundfe
           r.time = true;
         else if (option == "-precision")
           r.precision = w.integer("-precision");
-        else if (option == "-closeOnWrite")
-          ; // the file is whole when the script ends either way
-        else if (option == "-node")
+        // -closeOnWrite is taken and has nothing to do: the file is whole
+        // when the script ends either way
+        else if (option != "-closeOnWrite")
+          return false;
+        return true;
+      }
+
+      void
+      recorder_option(opensees::Domain &d, Words &w, const std::string &option,
+                      opensees::NodeRecorderSpec &r)
+      {
+        if (output_option(w, option, r))
+          return;
+        if (option == "-node")
           for (const int tag : w.integers("a node's tag"))
             r.nodes.push_back(d.node(tag).tag);
         else if (option == "-nodeRange")
@@ -776,15 +790,9 @@ namespace poundfe
         while (!w.done() && r.response.empty())
           {
             const std::string word = w.word("an option");
-            if (word == "-file")
-              r.file = w.word("the file");
-            else if (word == "-time")
-              r.time = true;
-            else if (word == "-precision")
-              r.precision = w.integer("-precision");
-            else if (word == "-closeOnWrite")
-              ; // the file is whole when the script ends either way
-            else if (word == "-ele")
+            if (output_option(w, word, r))
+              continue;
+            if (word == "-ele")
               r.elements = w.integers("an element's tag");
             else if (word == "-eleRange")
               {

@@ -27,21 +27,12 @@ for model in "$@"; do
   done
 done
 
-python3 - "$work" "$@" <<'PY'
+PYTHONPATH=$(cd "$(dirname "$0")" && pwd) python3 - "$work" "$@" <<'PY'
 import json, os, sys
+from summary_peaks import peaks
 work, models = sys.argv[1], [os.path.basename(m)[:-4] for m in sys.argv[2:]]
 def summary(name, dt):
     return json.load(open(f"{work}/{name}/{dt}/summary.json"))
-def peaks(s):
-    p = {}
-    for b in s["buildings"]:
-        for st in b["storeys"]:
-            p[f"{b['name']} storey {st['storey']} drift"] = st["peak_drift_ratio"]
-            p[f"{b['name']} floor {st['storey']} acceleration"] = \
-                st["peak_absolute_floor_acceleration_m_s2"]
-    for g in s["gaps"]:
-        p[g["label"] + " peak force"] = g["peak_force_N"]
-    return p
 failed = []
 for name in models:
     reference = summary(name, "5e-5")

@@ -26,21 +26,12 @@ for dt in 1e-2 1e-3 1e-4 2e-4; do
   "$poundfe" run "$work/$dt.prm" --output "$work/$dt" > /dev/null
 done
 
-python3 - "$work" <<'PY'
+PYTHONPATH=$(cd "$(dirname "$0")" && pwd) python3 - "$work" <<'PY'
 import json, sys
+from summary_peaks import peaks
 work = sys.argv[1]
 def summary(dt):
     return json.load(open(f"{work}/{dt}/summary.json"))
-def peaks(s):
-    p = {}
-    for b in s["buildings"]:
-        for st in b["storeys"]:
-            p[f"{b['name']} storey {st['storey']} drift"] = st["peak_drift_ratio"]
-            p[f"{b['name']} floor {st['storey']} acceleration"] = \
-                st["peak_absolute_floor_acceleration_m_s2"]
-    for g in s["gaps"]:
-        p[g["label"] + " peak force"] = g["peak_force_N"]
-    return p
 failed = []
 reference = summary("1e-4")
 ref = peaks(reference)
