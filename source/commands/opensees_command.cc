@@ -13,6 +13,7 @@
 
 #include "opensees_tcl.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -67,6 +68,11 @@ namespace poundfe
       if (Tcl_GetDoubleFromObj(nullptr, objv[next - 1], &value) != TCL_OK)
         throw opensees::ScriptError("expected a number for " + std::string(what) + ", got '" +
                                     text + "'");
+      // Tcl reads "inf" as a double; no quantity of a model or an analysis is
+      // infinite, and one would surface later as a singular matrix
+      if (!std::isfinite(value))
+        throw opensees::ScriptError("expected a finite number for " + std::string(what) +
+                                    ", got '" + text + "'");
       return value;
     }
 

@@ -86,7 +86,12 @@ namespace poundfe
             if (option == "-tol")
               p.tolerance = w.real("the line search tolerance");
             else if (option == "-maxIter")
-              p.max_iterations = w.integer("the line search's iterations");
+              {
+                const int n = w.integer("the line search's iterations");
+                if (n < 1)
+                  throw ScriptError("NewtonLineSearch needs -maxIter >= 1");
+                p.max_iterations = n;
+              }
             else if (option == "-minEta")
               p.min_eta = w.real("minEta");
             else if (option == "-maxEta")
@@ -102,6 +107,10 @@ namespace poundfe
             else
               unsupported("algorithm NewtonLineSearch option '" + option + "'");
           }
+        if (!(p.tolerance > 0))
+          throw ScriptError("NewtonLineSearch needs -tol > 0");
+        if (!(p.min_eta > 0 && p.min_eta <= p.max_eta))
+          throw ScriptError("NewtonLineSearch needs 0 < -minEta <= -maxEta");
       }
 
       void

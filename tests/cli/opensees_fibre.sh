@@ -16,7 +16,8 @@
 #     (whose searches' etas are compared too) and element loads);
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration, a line search other than
-#     InitialInterpolated, HHT's alpha outside (0, 1], NewtonLineSearch with
+#     InitialInterpolated, HHT's alpha outside (0, 1] or an infinite number,
+#     NewtonLineSearch with -maxIter < 1 or -minEta > -maxEta or with
 #     DisplacementControl, eleLoad on a beam-column, of another type, or
 #     outside a pattern, rigidLink beam.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
@@ -128,6 +129,11 @@ printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\neleLoad -ele 1 -typ
 printf 'node 3 1.0 3.0\nrigidLink beam 2 3\n' | bad rigid-link-beam \
   '7: rigidLink beam: poundfe does not support it'
 echo "integrator HHT 1.5" | bad hht-alpha '6: integrator: HHT needs 0 < alpha <= 1'
+echo "integrator HHT 0.9 inf 0.25" | bad hht-infinite "6: integrator: expected a finite number for gamma, got 'inf'"
+echo "algorithm NewtonLineSearch -maxIter -5" | bad line-search-iterations \
+  '6: algorithm: NewtonLineSearch needs -maxIter >= 1'
+echo "algorithm NewtonLineSearch -minEta 10 -maxEta 0.1" | bad line-search-eta \
+  '6: algorithm: NewtonLineSearch needs 0 < -minEta <= -maxEta'
 printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm NewtonLineSearch\nintegrator DisplacementControl 2 1 0.001\nanalysis Static\nanalyze 1\n' \
   | bad line-search-dc '13: analyze: algorithm NewtonLineSearch with integrator DisplacementControl is not supported'
 printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1\nrecorder Element -file x.out -ele 1 plasticRotation\n' \
