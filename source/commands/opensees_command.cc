@@ -167,14 +167,12 @@ namespace poundfe
 
     namespace
     {
-      /// An empty list made a list object, not an empty text (Tcl makes
-      /// it one only when read as a list): poundfe.opensees answers [],
-      /// not None.
+      /// An empty list made a list object, not an empty text (Tcl's
+      /// Tcl_NewListObj(0) is one): poundfe.opensees answers [], not None.
       void
       as_list(Tcl_Obj *list)
       {
-        int n = 0;
-        Tcl_ListObjLength(nullptr, list, &n);
+        Tcl_ConvertToType(nullptr, list, Tcl_GetObjType("list"));
       }
     } // namespace
 

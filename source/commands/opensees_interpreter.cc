@@ -173,8 +173,13 @@ namespace poundfe
     const int code = Tcl_EvalObjv(i.interp, words.size(), words.data(), TCL_EVAL_GLOBAL);
     for (Tcl_Obj *word : words)
       Tcl_DecrRefCount(word);
-    if (code != TCL_OK)
-      throw OpenSeesCommandError(name, Tcl_GetStringResult(i.interp));
+    if (code != TCL_OK) // "name: ..." always (a script's message may start with the name alone)
+      {
+        const std::string message = Tcl_GetStringResult(i.interp);
+        throw OpenSeesCommandError(name, message.rfind(name + ": ", 0) == 0 ?
+                                           message :
+                                           name + ": " + message);
+      }
     OpenSeesValue result = value_of(Tcl_GetObjResult(i.interp));
     Tcl_ResetResult(i.interp);
     return result;
