@@ -54,6 +54,12 @@ CASES = {
                           ["initial", "NewtonLineSearch -tol 0.001"], 1e-9),
     "pounding_line_search": ("pounding_sticks.tcl",
                              ["ElasticPPGap", "NewtonLineSearch -tol 0.01 -pFlag 0"], 1e-9),
+    # KrylovNewton (OpenSees's AcceleratedNewton with KrylovAccelerator):
+    # the default subspace of 3 on the fibre frame, a subspace of 1 (a new
+    # tangent every second iteration) with the energy test on the pounding pair
+    "frame_krylov": ("fibre_frame_record.tcl", ["committed", "KrylovNewton"], 1e-9),
+    "pounding_krylov": ("pounding_sticks.tcl",
+                        ["ElasticPPGap", "KrylovNewton -maxDim 1", "EnergyIncr"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -160,9 +160,21 @@ namespace poundfe
     void
     define(Tcl_Interp *interp, Session &session, const std::string &name, Procedure procedure)
     {
+      session.commands[name] = true;
       Tcl_CreateObjCommand(interp, name.c_str(), run_procedure,
                            new Definition{&session, std::move(procedure)}, delete_definition);
     }
+
+    namespace
+    {
+      /// An empty list made a list object, not an empty text (Tcl's
+      /// Tcl_NewListObj(0) is one): poundfe.opensees answers [], not None.
+      void
+      as_list(Tcl_Obj *list)
+      {
+        Tcl_ConvertToType(nullptr, list, Tcl_GetObjType("list"));
+      }
+    } // namespace
 
     void
     set_result(Tcl_Interp *interp, const double value)
@@ -176,6 +188,7 @@ namespace poundfe
       Tcl_Obj *list = Tcl_NewListObj(0, nullptr);
       for (const double v : values)
         Tcl_ListObjAppendElement(interp, list, Tcl_NewDoubleObj(v));
+      as_list(list);
       Tcl_SetObjResult(interp, list);
     }
 
@@ -185,6 +198,7 @@ namespace poundfe
       Tcl_Obj *list = Tcl_NewListObj(0, nullptr);
       for (const int v : values)
         Tcl_ListObjAppendElement(interp, list, Tcl_NewIntObj(v));
+      as_list(list);
       Tcl_SetObjResult(interp, list);
     }
 
@@ -208,8 +222,11 @@ namespace poundfe
               "nodeResponse", "nodeUnbalance", "nodeDOFs", "numFact", "numIter",
               "systemSize", "getEleClassTags", "setParameter", "parameter", "updateParameter",
               "loadPackage", "video", "logFile", "start", "stop"})
-          define(interp, session, name,
-                 [](Session &, Words &words) { unsupported(words.name); });
+          {
+            define(interp, session, name,
+                   [](Session &, Words &words) { unsupported(words.name); });
+            session.commands[name] = false;
+          }
       }
 
       /// `exit ?status?`: the script ends here, cleanly (its recorders
@@ -304,6 +321,17 @@ namespace poundfe
         }
       };
     } // namespace
+
+    void
+    define_commands(Tcl_Interp *interp, Session &session)
+    {
+      define_model_commands(interp, session);
+      define_analysis_commands(interp, session);
+      define_section_commands(interp, session);
+      define_unsupported(interp, session);
+      define_exit(interp, session);
+      define_poundfe_namespace(interp, session);
+    }
   } // namespace opensees_tcl
 
   namespace commands
@@ -325,12 +353,7 @@ namespace poundfe
                          "Tcl could not start: " + std::string(Tcl_GetStringResult(interp)));
       set_arguments(interp, run.arguments);
       Session session(run.err);
-      define_model_commands(interp, session);
-      define_analysis_commands(interp, session);
-      define_section_commands(interp, session);
-      define_unsupported(interp, session);
-      define_exit(interp, session);
-      define_poundfe_namespace(interp, session);
+      define_commands(interp, session);
       const int code = Tcl_EvalFile(interp, script.c_str());
       if (code != TCL_OK && !session.exited)
         {

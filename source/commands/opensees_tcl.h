@@ -44,6 +44,15 @@ namespace poundfe
       std::vector<std::unique_ptr<opensees::Recorder>>     recorders;
       /// The fibres of the section Fiber whose body runs (nullptr outside).
       FibreGeometry *fibres = nullptr;
+      /// OpenSeesPy's conventions (poundfe.opensees): a Plain pattern and a
+      /// Fiber section take no body; the pattern stays the current one, and
+      /// the section stays open (`open_fibres`, tag `open_section`) for the
+      /// patch, layer and fiber commands after it, until close_open_section.
+      bool                           without_bodies = false;
+      std::shared_ptr<FibreGeometry> open_fibres;
+      int                            open_section = 0;
+      /// Every command defined, and whether poundfe implements it.
+      std::map<std::string, bool> commands;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
       int            current_pattern = -1; // the Plain pattern whose body runs
@@ -112,6 +121,14 @@ namespace poundfe
     /// the type).
     void beam_column_element(Session &session, Words &words, const std::string &type);
 
+    /// The open Fiber section of OpenSeesPy's conventions made and added to
+    /// the domain (nothing when none is open).
+    void close_open_section(Session &session);
+
+    /// Every command of a script (opensees_command.cc): the model, section
+    /// and analysis commands, the OpenSees commands poundfe lacks (each
+    /// refusing with its name), `exit` and the namespace poundfe::.
+    void define_commands(Tcl_Interp *interp, Session &session);
     void define_model_commands(Tcl_Interp *interp, Session &session);
     void define_section_commands(Tcl_Interp *interp, Session &session);
     void define_analysis_commands(Tcl_Interp *interp, Session &session);

@@ -113,6 +113,33 @@ namespace poundfe
           throw ScriptError("NewtonLineSearch needs 0 < -minEta <= -maxEta");
       }
 
+      /// KrylovNewton <-maxDim N> <-iterate current> <-increment current>
+      /// (OpenSees's defaults: 3, the current tangent).
+      void
+      krylov_options(opensees::AnalysisOptions &o, Words &w)
+      {
+        o.krylov_dimension = 3;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-maxDim")
+              {
+                const int n = w.integer("-maxDim");
+                if (n < 0)
+                  throw ScriptError("KrylovNewton needs -maxDim >= 0");
+                o.krylov_dimension = n;
+              }
+            else if (option == "-iterate" || option == "-increment")
+              {
+                const std::string tangent = w.word("the tangent");
+                if (tangent != "current")
+                  unsupported("algorithm KrylovNewton " + option + " " + tangent);
+              }
+            else
+              unsupported("algorithm KrylovNewton option '" + option + "'");
+          }
+      }
+
       void
       algorithm(Session &s, Words &w)
       {
@@ -128,6 +155,11 @@ namespace poundfe
           {
             s.options.algorithm = Algorithm::newton_line_search;
             line_search_options(s.options.line_search, w);
+          }
+        else if (type == "KrylovNewton")
+          {
+            s.options.algorithm = Algorithm::krylov_newton;
+            krylov_options(s.options, w);
           }
         else
           unsupported("algorithm " + type);

@@ -51,6 +51,8 @@ namespace poundfe
         s.has_static_integrator = s.has_transient_integrator = false;
         s.reactions.clear();
         s.current_pattern = -1;
+        s.open_fibres.reset();
+        s.fibres = nullptr;
       }
 
       void
@@ -467,7 +469,7 @@ namespace poundfe
               {
                 Tcl_Obj *list = Tcl_NewStringObj(w.word("the values").c_str(), -1);
                 Tcl_IncrRefCount(list);
-                int       n;
+                int       n = 0;
                 Tcl_Obj **items;
                 const int ok = Tcl_ListObjGetElements(w.interp, list, &n, &items);
                 for (int i = 0; ok == TCL_OK && i < n; ++i)
@@ -479,6 +481,10 @@ namespace poundfe
                     series->values.push_back(v);
                   }
                 Tcl_DecrRefCount(list);
+                // OpenSeesPy's other form: the values as words of their own
+                if (n == 1)
+                  for (const double v : w.numbers("a value"))
+                    series->values.push_back(v);
               }
             else if (series->kind == Kind::path && option == "-filePath")
               series->values = read_path_file(w.word("the file"), warnings);
@@ -606,6 +612,12 @@ namespace poundfe
             w.word("-fact");
             p.factor = w.real("-fact");
           }
+        if (w.done() && s.without_bodies) // OpenSeesPy: the loads follow it
+          {
+            d.patterns.emplace(p.tag, p);
+            s.current_pattern = p.tag;
+            return;
+          }
         const std::string body = w.word("the pattern's body");
         if (!w.done())
           unsupported("pattern Plain option '" + w.peek() + "'");
@@ -623,27 +635,37 @@ namespace poundfe
           }
       }
 
+      /// The Plain pattern a load goes to: the one whose body runs (OpenSeesPy:
+      /// the last one defined).
+      opensees::Pattern &
+      current_pattern(Session &s, const char *what)
+      {
+        if (s.current_pattern < 0)
+          throw ScriptError(std::string(what) +
+                            (s.without_bodies ? " needs a Plain pattern before it" :
+                                                " belongs in the body of a Plain pattern"));
+        return s.domain.patterns.at(s.current_pattern);
+      }
+
       void
       load(Session &s, Words &w)
       {
-        opensees::Domain &d = model_domain(s);
-        if (s.current_pattern < 0)
-          throw ScriptError("a load belongs in the body of a Plain pattern");
+        opensees::Domain  &d       = model_domain(s);
+        opensees::Pattern &pattern = current_pattern(s, "a load");
         opensees::NodalLoad l;
         l.node   = d.node(w.integer("the node's tag")).tag;
         l.values = exactly(w, d.ndf, "a load value");
         if (!w.done())
           unsupported("load option '" + w.peek() + "'");
-        d.patterns.at(s.current_pattern).loads.push_back(l);
+        pattern.loads.push_back(l);
       }
 
       /// eleLoad (-ele tag ... | -range first last) -type -beamUniform Wy <Wx>.
       void
       element_load(Session &s, Words &w)
       {
-        opensees::Domain &d = model_domain(s);
-        if (s.current_pattern < 0)
-          throw ScriptError("an eleLoad belongs in the body of a Plain pattern");
+        opensees::Domain  &d       = model_domain(s);
+        opensees::Pattern &pattern = current_pattern(s, "an eleLoad");
         std::vector<int>  tags;
         const std::string how = w.word("-ele or -range");
         if (how == "-ele")
@@ -678,7 +700,7 @@ namespace poundfe
                            " (only elasticBeamColumn and dispBeamColumn on a Linear or PDelta "
                           "transformation take it)");
             load.element = tag;
-            d.patterns.at(s.current_pattern).beam_loads.push_back(load);
+            pattern.beam_loads.push_back(load);
           }
       }
 

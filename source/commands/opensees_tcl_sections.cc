@@ -51,10 +51,27 @@ namespace poundfe
       }
 
       void
+      add_fibre_section(opensees::Domain &d, const int tag, const FibreGeometry &geometry)
+      {
+        if (geometry.fibres.empty())
+          throw ScriptError("section Fiber " + std::to_string(tag) + " has no fibre");
+        add_section(d, tag, std::make_shared<FibreSection>(geometry, 2));
+      }
+
+      void
       fibre_section(Session &s, opensees::Domain &d, Words &w, const int tag)
       {
         if (w.peek() == "-GJ")
           unsupported("section Fiber -GJ in the plane");
+        if (w.done() && s.without_bodies) // OpenSeesPy: the fibres follow it
+          {
+            if (d.sections.count(tag))
+              throw ScriptError("section " + std::to_string(tag) + " exists already");
+            s.open_fibres  = std::make_shared<FibreGeometry>();
+            s.open_section = tag;
+            s.fibres       = s.open_fibres.get();
+            return;
+          }
         const std::string body = w.word("the section's body");
         if (!w.done())
           unsupported("section Fiber option '" + w.peek() + "'");
@@ -64,9 +81,7 @@ namespace poundfe
         s.fibres       = nullptr;
         if (code != TCL_OK)
           throw ScriptError(Tcl_GetStringResult(w.interp));
-        if (geometry.fibres.empty())
-          throw ScriptError("section Fiber " + std::to_string(tag) + " has no fibre");
-        add_section(d, tag, std::make_shared<FibreSection>(geometry, 2));
+        add_fibre_section(d, tag, geometry);
       }
 
       /// Aggregator: mat dof pairs (P, Mz), then -section base.
@@ -159,7 +174,8 @@ namespace poundfe
       open_section(Session &s, const Words &w)
       {
         if (!s.fibres)
-          throw ScriptError(w.name + " belongs in the body of a section Fiber");
+          throw ScriptError(w.name + (s.without_bodies ? " needs a section Fiber before it" :
+                                                         " belongs in the body of a section Fiber"));
         return *s.fibres;
       }
 
@@ -364,6 +380,17 @@ namespace poundfe
       add_element(d,
                   opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
       add_lumped_mass(d, nodes, rho);
+    }
+
+    void
+    close_open_section(Session &s)
+    {
+      if (!s.open_fibres)
+        return;
+      const std::shared_ptr<FibreGeometry> geometry = std::move(s.open_fibres);
+      s.open_fibres.reset();
+      s.fibres = nullptr;
+      add_fibre_section(s.domain, s.open_section, *geometry);
     }
 
     void

@@ -318,19 +318,76 @@ namespace poundfe
       return true;
     }
 
+    namespace
+    {
+      /// OpenSees's KrylovAccelerator: the subspace of one tangent's
+      /// iterations (v: the accelerated increments, av: the differences of
+      /// the solutions, the last one the latest solution itself).
+      class KrylovAccelerator
+      {
+      public:
+        KrylovAccelerator(const unsigned int max_dimension, const unsigned int n_equations)
+          : max_dimension(std::min(max_dimension, n_equations))
+        {}
+
+        /// The accelerated increment of the solution r (accelerate()).
+        Vector
+        accelerate(const Vector &r)
+        {
+          const std::size_t k = v.size();
+          Vector            x = r;
+          av.push_back(r);
+          if (k > 0)
+            {
+              av[k - 1] -= r; // r_{k-1} - r_k
+              Matrix a(r.size(), k);
+              for (std::size_t j = 0; j < k; ++j)
+                a.col(j) = av[j];
+              const Vector c = a.householderQr().solve(r); // LAPACK's dgels: QR
+              for (std::size_t j = 0; j < k; ++j)
+                {
+                  x += c[j] * v[j];
+                  x -= c[j] * av[j];
+                }
+            }
+          v.push_back(x);
+          return x;
+        }
+
+        /// After an iteration that did not converge: true when the
+        /// subspace is past maxDim and emptied (then a new tangent).
+        bool
+        restart()
+        {
+          if (v.size() <= max_dimension)
+            return false;
+          v.clear();
+          av.clear();
+          return true;
+        }
+
+      private:
+        const unsigned int  max_dimension;
+        std::vector<Vector> v, av;
+      };
+    } // namespace
+
     int
     Analysis::iterate(std::string &why)
     {
       using Algorithm = AnalysisOptions::Algorithm;
       const bool searching = opts.algorithm == Algorithm::newton_line_search;
-      if (searching && opts.displacement_control && !opts.transient)
-        throw ScriptError("algorithm NewtonLineSearch with integrator DisplacementControl is "
-                          "not supported");
+      const bool krylov    = opts.algorithm == Algorithm::krylov_newton;
+      if ((searching || krylov) && opts.displacement_control && !opts.transient)
+        throw ScriptError(std::string("algorithm ") +
+                          (searching ? "NewtonLineSearch" : "KrylovNewton") +
+                          " with integrator DisplacementControl is not supported");
       const bool every_iteration = opts.algorithm == Algorithm::newton || searching;
       Vector     r               = residual();
-      if (!every_iteration) // Linear, ModifiedNewton: one tangent per step
+      if (!every_iteration) // Linear, ModifiedNewton, KrylovNewton: one tangent per step
         assemble_tangent(k_k, k_c, c_m);
-      Vector dx(n_equations);
+      KrylovAccelerator accelerator(opts.krylov_dimension, n_equations);
+      Vector            dx(n_equations);
       for (unsigned int iteration = 1;; ++iteration)
         {
           if (every_iteration)
@@ -341,7 +398,8 @@ namespace poundfe
           const double s0 = -dx.dot(r);
           ++last_iterations;
           ++counts.iterations;
-          if (!apply_increment(dx, why))
+          // the state moves by the accelerated increment; the test sees dx
+          if (!apply_increment(krylov ? accelerator.accelerate(dx) : dx, why))
             return -1;
           if (opts.algorithm == Algorithm::linear)
             return 1;
@@ -365,6 +423,8 @@ namespace poundfe
               why = text.str();
               return -1;
             }
+          if (krylov && accelerator.restart())
+            assemble_tangent(k_k, k_c, c_m);
         }
     }
 

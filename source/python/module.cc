@@ -68,20 +68,23 @@ namespace poundfe::python
           PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
         }
     }
+  } // namespace
 
-    /// An exception type `name` of the module, derived from `base`.
-    py::handle
-    exception_type(py::module_ &m, const char *name, PyObject *base, const char *doc)
-    {
-      const std::string qualified = std::string("poundfe.") + name;
-      py::object type = py::reinterpret_steal<py::object>(
-        PyErr_NewExceptionWithDoc(qualified.c_str(), doc, base, nullptr));
-      if (!type)
-        throw py::error_already_set();
-      m.attr(name) = type;
-      return type.release();
-    }
+  /// An exception type `name` of the module, derived from `base`.
+  py::handle
+  exception_type(py::module_ &m, const char *name, PyObject *base, const char *doc)
+  {
+    const std::string qualified = std::string("poundfe.") + name;
+    py::object type = py::reinterpret_steal<py::object>(
+      PyErr_NewExceptionWithDoc(qualified.c_str(), doc, base, nullptr));
+    if (!type)
+      throw py::error_already_set();
+    m.attr(name) = type;
+    return type.release();
+  }
 
+  namespace
+  {
     std::vector<ParameterOverride>
     overrides_of(const std::vector<std::pair<std::string, std::string>> &pairs)
     {
@@ -283,4 +286,5 @@ PYBIND11_MODULE(_core, m)
 
   bind_input(m);
   bind_run(m);
+  bind_opensees(m);
 }

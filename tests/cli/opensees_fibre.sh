@@ -12,13 +12,14 @@
 #     against OpenSees's own recorder output committed in
 #     tests/opensees/reference/ (bench/opensees/compare.py, tolerance per
 #     case in its CASES: 1e-10 of the peak linear, 1e-6 nonlinear, 1e-9 for
-#     the frame with committed-stiffness damping, HHT and NewtonLineSearch
-#     (whose searches' etas are compared too) and element loads);
+#     the frame with committed-stiffness damping, HHT, NewtonLineSearch
+#     (whose searches' etas are compared too), KrylovNewton and element loads);
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration, a line search other than
 #     InitialInterpolated, HHT's alpha outside (0, 1] or an infinite number,
 #     NewtonLineSearch with -maxIter < 1 or -minEta > -maxEta or with
-#     DisplacementControl, eleLoad on a beam-column, of another type, or
+#     DisplacementControl, KrylovNewton with a tangent other than the current
+#     one, -maxDim < 0 or DisplacementControl, eleLoad on a beam-column, of another type, or
 #     outside a pattern, rigidLink beam.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
@@ -136,6 +137,12 @@ echo "algorithm NewtonLineSearch -minEta 10 -maxEta 0.1" | bad line-search-eta \
   '6: algorithm: NewtonLineSearch needs 0 < -minEta <= -maxEta'
 printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm NewtonLineSearch\nintegrator DisplacementControl 2 1 0.001\nanalysis Static\nanalyze 1\n' \
   | bad line-search-dc '13: analyze: algorithm NewtonLineSearch with integrator DisplacementControl is not supported'
+echo "algorithm KrylovNewton -iterate initial" | bad krylov-tangent \
+  '6: algorithm KrylovNewton -iterate initial: poundfe does not support it'
+echo "algorithm KrylovNewton -maxDim -1" | bad krylov-dimension \
+  '6: algorithm: KrylovNewton needs -maxDim >= 0'
+printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm KrylovNewton\nintegrator DisplacementControl 2 1 0.001\nanalysis Static\nanalyze 1\n' \
+  | bad krylov-dc '13: analyze: algorithm KrylovNewton with integrator DisplacementControl is not supported'
 printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1\nrecorder Element -file x.out -ele 1 plasticRotation\n' \
   | bad unknown-response "8: recorder: element 1 has no response 'plasticRotation' in poundfe"
 

@@ -14,7 +14,14 @@
 // the test is met, s = -dU . R after it, and while |s/s0| > tol, eta *= s0 /
 // (s0 - s) within [minEta, maxEta] (1 where |s/s0| grew), the state moved
 // by (eta - eta_prev) dU and s = dU . R (OpenSees's sign); the test then sees
-// eta dU), the tests NormDispIncr (|dU|), NormUnbalance
+// eta dU), KrylovNewton as OpenSees 3.8's Tcl command makes it
+// (AcceleratedNewton.cpp with KrylovAccelerator.cpp, Carlson and Miller's
+// accelerated modified Newton: one tangent a step; each solution r_k of
+// K dU = R is corrected by the least-squares fit of its difference to the
+// earlier ones, v_k = r_k + sum c_j (v_j - (r_j - r_j+1)), c minimising
+// |A c - r_k| with A's columns r_j - r_j+1; the state moves by v_k, the test
+// sees r_k; after maxDim + 1 iterations a new tangent empties the
+// subspace), the tests NormDispIncr (|dU|), NormUnbalance
 // (|R| after the update) and EnergyIncr (|dU . R| / 2), a failed step
 // reverted to the last commit and reported by the return value, as
 // `analyze` does. No step is cut and no event located: poundfe's own
@@ -62,8 +69,11 @@ namespace poundfe
         linear,
         newton,
         modified_newton,
-        newton_line_search
+        newton_line_search,
+        krylov_newton
       } algorithm = Algorithm::newton;
+      /// KrylovNewton's -maxDim: the iterations accelerated by one tangent.
+      unsigned int krylov_dimension = 3;
       ConvergenceTest test;
       /// NewtonLineSearch's InitialInterpolated search: -tol, -maxIter,
       /// -minEta, -maxEta, and -pFlag 0 (print each search iteration).

@@ -12,6 +12,8 @@ Everything goes through the command line's own reader and engine: the same
 checks, messages and numbers (a run's arrays are the doubles of its CSV
 files). Bad input raises poundfe.InputError (a ValueError), a numerical
 failure poundfe.NumericalError (a RuntimeError).
+
+OpenSeesPy scripts run with `import poundfe.opensees as ops` (poundfe/opensees.py).
 """
 
 import contextlib

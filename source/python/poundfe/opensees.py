@@ -1,0 +1,68 @@
+"""OpenSees's commands with OpenSeesPy's calling conventions, on poundfe:
+
+    import poundfe.opensees as ops
+
+    ops.wipe()
+    ops.model('basic', '-ndm', 2, '-ndf', 3)
+    ops.node(1, 0.0, 0.0)
+    ...
+    ops.analyze(10)          # 0, or a negative int when a step failed
+    ops.nodeDisp(3, 1)       # a float; ops.nodeDisp(3): a list of floats
+
+so that an OpenSeesPy script runs by changing its import line. Each command
+is a thin function over ONE entry of the compiled core (opensees_call),
+which hands the arguments, as the words a Tcl script would give, to the same
+command procedures as `poundfe opensees SCRIPT.tcl` on one domain per Python
+process (`wipe` clears it). The functions are made from the core's own list
+of commands, so nothing is listed twice; a command poundfe lacks is here too
+and raises OpenSeesError naming it.
+
+Arguments: int, float, str, NumPy scalars; a list, tuple or NumPy array is
+one list argument (`'-values', values` of a Path series; `'-values',
+*values` works too). Results: float, int, list of floats or ints, or None,
+as OpenSeesPy returns them (`eigen` a list, `analyze` an int).
+
+OpenSeesPy has no script bodies: `pattern('Plain', ...)` makes the pattern
+that later `load` and `eleLoad` calls fill, and `section('Fiber', tag)` the
+section that later `patch`, `layer` and `fiber` calls fill.
+
+Recorders write their files at `wipe` and when Python exits.
+"""
+
+import atexit
+import sys
+
+from . import _core
+
+OpenSeesError = _core.OpenSeesError
+
+
+def _call(name, arguments):
+    """opensees_call, its refusal raised with the caller's file and line
+    (the frame that called the command's function)."""
+    try:
+        return _core.opensees_call(name, arguments)
+    except OpenSeesError as error:
+        caller = sys._getframe(2)
+        where = (caller.f_code.co_filename, caller.f_lineno)
+        refusal = OpenSeesError(f"{error} ({where[0]}, line {where[1]})")
+        refusal.command, refusal.file, refusal.line = error.command, where[0], where[1]
+    raise refusal
+
+
+def _command(name, supported):
+    def command(*arguments):
+        return _call(name, arguments)
+    command.__name__ = command.__qualname__ = name
+    command.__doc__ = (f"OpenSees's `{name}`: its Tcl words as arguments." if supported else
+                       f"OpenSees's `{name}`: poundfe does not support it (OpenSeesError).")
+    return command
+
+
+__all__ = ["OpenSeesError"]
+for _name, _supported in _core.opensees_commands():
+    globals()[_name] = _command(_name, _supported)
+    __all__.append(_name)
+del _name, _supported
+
+atexit.register(_core.opensees_finish)

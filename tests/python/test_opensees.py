@@ -1,0 +1,203 @@
+"""poundfe.opensees, OpenSeesPy's calling conventions: the types of the
+results (float, list of floats, int, list of ints, None), list arguments
+(a Path series' values as a list, a tuple, a NumPy array or words of their
+own; NumPy scalars), the errors (OpenSeesError naming the command and the
+caller's line; a command poundfe lacks; a bad argument), `wipe` between two
+models, and the commands made from the core's own list."""
+
+import math
+import os
+import sys
+
+import numpy as np
+
+import poundfe
+import poundfe.opensees as ops
+
+from common import TestCase
+
+
+def sdof(k=100.0, mass=1.0):
+    """Fresh: a spring of stiffness k from a fixed node 1 to node 2."""
+    ops.wipe()
+    ops.model('basic', '-ndm', 1, '-ndf', 1)
+    ops.node(1, 0.0)
+    ops.node(2, 0.0, '-mass', mass)
+    ops.fix(1, 1)
+    ops.uniaxialMaterial('Elastic', 1, k)
+    ops.element('zeroLength', 1, 1, 2, '-mat', 1, '-dir', 1)
+
+
+def static_analysis(steps=1):
+    ops.constraints('Plain')
+    ops.numberer('Plain')
+    ops.system('BandGeneral')
+    ops.test('NormDispIncr', 1.0e-12, 10)
+    ops.algorithm('Newton')
+    ops.integrator('LoadControl', 1.0 / steps)
+    ops.analysis('Static')
+
+
+def record_history(values_argument):
+    """Node 2's displacements of an SDOF under a Path record given by
+    `values_argument(values)`, a tuple of the timeSeries arguments after
+    -values."""
+    sdof(k=400.0)
+    values = [math.sin(0.3 * i) for i in range(51)]
+    ops.timeSeries('Path', 1, '-dt', 0.01, '-values', *values_argument(values), '-factor', 2.0)
+    ops.pattern('UniformExcitation', 1, 1, '-accel', 1)
+    ops.constraints('Plain')
+    ops.numberer('Plain')
+    ops.system('BandGeneral')
+    ops.test('NormDispIncr', 1.0e-12, 10)
+    ops.algorithm('Newton')
+    ops.integrator('Newmark', 0.5, 0.25)
+    ops.analysis('Transient')
+    history = []
+    for _ in range(50):
+        ops.analyze(1, 0.01)
+        history.append(ops.nodeDisp(2, 1))
+    return history
+
+
+class ConventionsTest(TestCase):
+    def tearDown(self):
+        ops.wipe()
+        super().tearDown()
+
+    def test_return_types(self):
+        ops.wipe()
+        self.assertEqual(ops.getNodeTags(), [])  # a list, also empty
+        self.assertEqual(ops.getEleTags(), [])
+        sdof(k=100.0)
+        self.assertIsNone(ops.node(3, 1.0))
+        ops.fix(3, 1)
+        self.assertEqual(ops.getNodeTags(), [1, 2, 3])
+        self.assertTrue(all(type(t) is int for t in ops.getNodeTags()))
+        self.assertEqual(ops.getEleTags(), [1])
+        self.assertEqual(ops.nodeCoord(3), [1.0])
+        ops.timeSeries('Linear', 1)
+        self.assertIsNone(ops.pattern('Plain', 1, 1))
+        ops.load(2, 50.0)  # into pattern 1: OpenSeesPy has no body
+        static_analysis(steps=2)
+        status = ops.analyze(2)
+        self.assertIs(type(status), int)
+        self.assertEqual(status, 0)
+        u = ops.nodeDisp(2, 1)
+        self.assertIs(type(u), float)
+        self.assertAlmostEqual(u, 0.5, delta=1e-15)
+        self.assertEqual(ops.nodeDisp(2), [u])
+        self.assertIs(type(ops.getTime()), float)
+        self.assertEqual(ops.getTime(), 1.0)
+        self.assertEqual(ops.eleForce(1), [-50.0, 50.0])
+        self.assertEqual(ops.eleForce(1, 2), 50.0)
+        self.assertIsNone(ops.reactions())
+        self.assertEqual(ops.nodeReaction(1, 1), -50.0)
+        eigenvalues = ops.eigen(1)
+        self.assertIsInstance(eigenvalues, list)  # a list, also of one mode
+        self.assertAlmostEqual(eigenvalues[0], 100.0, delta=1e-12)
+
+    def test_failed_analysis_is_a_negative_int(self):
+        sdof()
+        ops.uniaxialMaterial('Steel01', 2, 10.0, 100.0, 0.01)
+        ops.element('zeroLength', 2, 1, 2, '-mat', 2, '-dir', 1)
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(2, 50.0)
+        static_analysis()
+        ops.test('NormDispIncr', 1.0e-14, 1)  # Steel01 yields: one iteration is not enough
+        status = ops.analyze(1)
+        self.assertIs(type(status), int)
+        self.assertLess(status, 0)
+        self.assertEqual(ops.getTime(), 0.0)
+
+    def test_list_arguments(self):
+        as_list = record_history(lambda v: (v,))
+        self.assertGreater(max(abs(u) for u in as_list), 1e-4)
+        for form, argument in [("tuple", lambda v: (tuple(v),)),
+                               ("NumPy array", lambda v: (np.array(v),)),
+                               ("words of their own", lambda v: tuple(v)),
+                               ("NumPy scalars", lambda v: tuple(np.array(v)))]:
+            with self.subTest(form=form):
+                self.assertEqual(record_history(argument), as_list)
+
+    def test_numpy_scalars(self):
+        ops.wipe()
+        ops.model('basic', '-ndm', np.int64(2), '-ndf', np.int32(3))
+        ops.node(np.int64(7), np.float64(0.25), np.float32(0.5))
+        self.assertEqual(ops.getNodeTags(), [7])
+        self.assertEqual(ops.nodeCoord(7), [0.25, 0.5])
+        ops.fix(7, True, True, False)  # a bool is an integer, as OpenSeesPy takes it
+
+    def test_unsupported_command(self):
+        self.assertIn("printModel", ops.__all__)
+        with self.assertRaises(ops.OpenSeesError) as raised:
+            ops.printModel()  # the line named below
+        line = sys._getframe().f_lineno - 1
+        error = raised.exception
+        self.assertEqual(str(error), f"printModel: poundfe does not support it ({__file__}, line {line})")
+        self.assertEqual((error.command, error.file, error.line), ("printModel", __file__, line))
+        self.assertIs(ops.OpenSeesError, poundfe._core.OpenSeesError)
+        self.assertFalse(issubclass(ops.OpenSeesError, ValueError))  # as OpenSeesPy's: an Exception
+        with self.assertRaises(AttributeError):
+            ops.notAnOpenSeesCommand  # noqa: B018
+        self.assertNotIn("exit", ops.__all__)  # a script's commands only
+
+    def test_errors_name_command_and_line(self):
+        sdof()
+        with self.assertRaises(ops.OpenSeesError) as raised:
+            ops.node(1, 0.0)
+        self.assertRegex(str(raised.exception), r"^node: node 1 exists already \(.*test_opensees\.py, line \d+\)$")
+        with self.assertRaises(ops.OpenSeesError) as raised:
+            ops.node(5, {"x": 1.0})
+        self.assertTrue(str(raised.exception).startswith(
+            "node: argument 2 is a dict, not a number, a string or a list"))
+        with self.assertRaises(ops.OpenSeesError) as raised:
+            ops.node(5.0, 1.0)  # a tag is an integer
+        self.assertIn("expected an integer", str(raised.exception))
+        ops.wipe()
+        ops.model('basic', '-ndm', 1, '-ndf', 1)
+        ops.node(1, 0.0)
+        with self.assertRaises(ops.OpenSeesError) as raised:
+            ops.load(1, 1.0)
+        self.assertIn("a load needs a Plain pattern before it", str(raised.exception))
+
+    def test_fibre_section_filled_by_later_commands(self):
+        ops.wipe()
+        ops.model('basic', '-ndm', 2, '-ndf', 3)
+        ops.uniaxialMaterial('Elastic', 1, 2.0e8)
+        ops.section('Fiber', 1)
+        with self.assertRaises(ops.OpenSeesError) as raised:
+            ops.node(1, 0.0, 0.0)  # the section closes here, empty
+        self.assertIn("section Fiber 1 has no fibre", str(raised.exception))
+        ops.section('Fiber', 2)
+        ops.fiber(0.1, 0.0, 0.01, 1)
+        ops.fiber(-0.1, 0.0, 0.01, 1)
+        ops.beamIntegration('Lobatto', 1, 2, 3)  # section 2 exists now
+        with self.assertRaises(ops.OpenSeesError) as raised:
+            ops.patch('rect', 1, 1, 1, -0.1, -0.1, 0.1, 0.1)
+        self.assertTrue(str(raised.exception).startswith(
+            "patch: patch needs a section Fiber before it"))
+
+    def test_wipe_between_two_models(self):
+        recorded = os.path.join(self.tmp, "first.out")
+        sdof(k=100.0)
+        ops.recorder('Node', '-file', recorded, '-time', '-node', 2, '-dof', 1, 'disp')
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(2, 10.0)
+        static_analysis()
+        self.assertEqual(ops.analyze(1), 0)
+        first = ops.nodeDisp(2, 1)
+        ops.wipe()  # the recorder's file written, the domain empty
+        with open(recorded) as f:
+            self.assertEqual([float(v) for v in f.read().split()], [1.0, first])
+        self.assertEqual((ops.getNodeTags(), ops.getEleTags(), ops.getTime()), ([], [], 0.0))
+        sdof(k=400.0)  # the same tags again
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(2, 10.0)
+        static_analysis()
+        self.assertEqual(ops.analyze(1), 0)
+        self.assertAlmostEqual(first, 0.1, delta=1e-15)
+        self.assertAlmostEqual(ops.nodeDisp(2, 1), 0.025, delta=1e-15)
