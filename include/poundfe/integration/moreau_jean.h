@@ -1,0 +1,188 @@
+// Rigid (non-smooth) contact by Moreau–Jean's time-stepping scheme
+// (Jean, Comput. Methods Appl. Mech. Engrg. 177 (1999) 235; Acary &
+// Brogliato, Numerical Methods for Nonsmooth Dynamical Systems, Springer
+// 2008, §10.1): velocities may jump, contact forces are impulses.
+//   M (v+ - v) = h [theta F(t+, u+, v+) + (1 - theta) F(t, u, v)] + H^T P
+//   u+ = u + h [theta v+ + (1 - theta) v]          theta in [1/2, 1]
+// with F = p - C v - K u - f(u, v) the smooth forces (hinges, storeys,
+// springs: Newton on them inside the step), and per unilateral contact a
+// (gap g_a(u) = g0_a - d_a(u), d_a the closure, U_a = H_a v = dg_a/dt) that
+// is closed or closing, g_a + h U_a <= 0 at the start of the step, Newton's
+// impact law at the velocity level
+//   0 <= U_a+ + e_a U_a  ⊥  P_a >= 0.
+// Each Newton iteration k on the smooth part, with the iteration matrix
+//   J = M + h theta (C + C_t) + (h theta)^2 (K + K_t),
+// takes the free velocity v_free (the update without impulses) and the
+// Delassus operator W = H J^-1 H^T, and solves the LCP
+//   w = W P + (H v_free + e ∘ H v),  0 <= P ⊥ w >= 0
+// with Siconos Numerics (integration/lcp_solver.h); then v+ = v_free +
+// J^-1 H^T P. A linear model converges in one iteration.
+// The energy an impulse dissipates is -P_a (U_a+ + U_a) / 2, which for one
+// impact of two bodies is (1 - e^2) m_eff U_a^2 / 2; it is booked as the
+// work on the contact's gap element (the balance's contact term). With
+// theta = 1/2 the balance of a linear model is exact; theta > 1/2 damps
+// numerically (the balance error shows it).
+// The impact log takes a step with an impulse P as one with the mean force
+// P / h: its impulse is P, its peak force P / h of the largest step's
+// impulse, its approach and separation velocities the jumps' ends.
+#ifndef poundfe_integration_moreau_jean_h
+#define poundfe_integration_moreau_jean_h
+
+#include <poundfe/assembly/linear_system.h>
+#include <poundfe/elements/nonlinear_element.h>
+#include <poundfe/integration/lcp_solver.h>
+#include <poundfe/integration/newmark.h>
+#include <poundfe/integration/time_stepper.h>
+
+#include <Eigen/LU>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  /// A unilateral constraint g = initial_gap - d(u) >= 0 with closure
+  /// d = sum_i coefficients[i] u[equations[i]] (equations < 0: the ground).
+  struct UnilateralContact
+  {
+    std::string         label;
+    std::vector<int>    equations;
+    std::vector<double> coefficients;
+    double              initial_gap = 0;
+    double              restitution = 0;
+    /// The gap element of this contact among the nonlinear elements (its
+    /// work carries the energy lost at impacts); -1: none.
+    int element = -1;
+  };
+
+  /// The unilateral contacts of `model`'s gap elements among `elements`
+  /// (one per gap, between floors or against a barrier), each with
+  /// restitution e, into `contacts`; the reason when a gap is beyond them
+  /// (a gap in plan or on a column, bumpers), else empty.
+  std::string unilateral_contacts(const Model &model, const NonlinearElements &elements,
+                                  double restitution, std::vector<UnilateralContact> &contacts);
+
+  struct MoreauJeanParameters
+  {
+    double       time_step = 0.001;
+    double       theta     = 0.5;
+    LcpOptions   lcp;
+    /// Newton on the smooth part: |dv| <= tolerance (|v+| + velocity_scale).
+    double       newton_tolerance  = 1e-10;
+    double       velocity_scale    = 1e-6; // m/s
+    unsigned int newton_iterations = 50;
+    /// The largest model (equations) it takes: J is dense.
+    unsigned int max_equations = 500;
+  };
+
+  /// One impulse of one contact in one step.
+  struct ContactImpulse
+  {
+    double       time    = 0; // the end of the step
+    unsigned int contact = 0;
+    double       impulse = 0;                     // N s
+    double       velocity_before = 0, velocity_after = 0; // U_a, U_a+ (m/s; < 0 closing)
+    double       energy_lost = 0;                 // -P (U+ + U) / 2, J
+  };
+
+  class MoreauJeanIntegrator : public TimeStepper
+  {
+  public:
+    /// Why the scheme cannot take this system and these elements (too many
+    /// equations, an equation without mass, an element it does not take:
+    /// fibre members, friction, elements of rank > 1); empty when it can.
+    static std::string unsupported(const LinearSystem &system, const NonlinearElements *elements,
+                                   unsigned int max_equations);
+
+    /// `elements` may be null; gap elements are left alone (the contacts
+    /// replace them). Throws NumericalError from advance() when Siconos
+    /// fails or Newton does not converge.
+    MoreauJeanIntegrator(const LinearSystem &system, const MoreauJeanParameters &parameters,
+                         std::vector<UnilateralContact> contacts,
+                         NonlinearElements *elements = nullptr);
+
+    void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
+    void advance(const LoadFunction &load) override;
+    void set_substep_callback(std::function<void()> callback) override
+    {
+      substep_callback = std::move(callback);
+    }
+
+    double        time() const override { return current_time; }
+    unsigned long steps() const override { return step_count; }
+    const Vector &displacement() const override { return u; }
+    const Vector &velocity() const override { return v; }
+    /// The smooth part of the acceleration, (v+ - v - M^-1 H^T P) / h: the
+    /// impulses are Dirac measures, reported as impulses.
+    const Vector &acceleration() const override { return a; }
+
+    EnergyBalance energy() const override { return balance; }
+    double        max_energy_error() const override { return max_balance_error; }
+    double element_work(unsigned int h) const override { return work[h]; }
+    double element_supplied_work(unsigned int) const override { return 0; }
+    const ImpactLog           &impact_log() const override { return impacts; }
+    const StickSlipLog        &stick_slip_log() const override { return stick_slip; }
+    const IterationStatistics &statistics() const override { return stats; }
+
+    const std::vector<UnilateralContact> &contacts() const { return contact_list; }
+    /// Every nonzero impulse so far, in the order of the steps.
+    const std::vector<ContactImpulse> &impulses() const { return impulse_log; }
+    /// The gap of each contact at the current state (m, < 0 penetrated).
+    std::vector<double> gaps() const;
+    /// Siconos's solver name, LCPs solved, their largest iterations and residual.
+    const std::string &lcp_solver() const { return solver_name; }
+    unsigned long      n_lcps() const { return lcp_count; }
+    int                max_lcp_iterations() const { return lcp_iterations; }
+    double             max_lcp_residual() const { return lcp_residual; }
+
+  private:
+    /// g_a(u) and U_a(v) = H_a v.
+    double gap(unsigned int a, const Vector &x) const;
+    double normal_velocity(unsigned int a, const Vector &x) const;
+    /// Sets the (non-gap) elements' trial state at (x, y); their force
+    /// corrections added to `force`, their tangent to `jacobian` (if not
+    /// null) with weight (h theta)^2. NumericalError naming a refusal.
+    void   evaluate_elements(double t, const Vector &x, const Vector &y, Vector &force,
+                             Eigen::MatrixXd *jacobian);
+    /// C x + K y + element forces - p: the smooth forces' negative at (y, x).
+    Vector smooth_force(double t, const Vector &displacement, const Vector &velocity,
+                        const Vector &load_vector, Eigen::MatrixXd *jacobian);
+    /// The impulses of the active contacts for free velocity v_free.
+    Vector contact_impulses(const std::vector<unsigned int> &active, const Vector &v_free);
+    /// One step of h from the current state; returns the impulses.
+    void   step(const LoadFunction &load);
+    void   record_impulses(const std::vector<unsigned int> &active, const Vector &impulse,
+                           const Vector &v_end, double t_end);
+    void   update_energy();
+
+    const LinearSystem            &system;
+    MoreauJeanParameters           parameters;
+    std::vector<UnilateralContact> contact_list;
+    NonlinearElements             *elements   = nullptr;
+    unsigned int                   n          = 0;
+    unsigned int                   n_elements = 0;
+    Eigen::MatrixXd                mass, damping, stiffness, base_jacobian, H;
+    Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_factor;
+    Vector                         u, v, a, load_start, smooth_start, local_u, local_v;
+    double                         current_time = 0;
+    unsigned long                  step_count   = 0;
+    std::vector<double>            work, initial_stored;
+    std::vector<ContactImpulse>    impulse_log;
+    /// The energy lost at impacts of contacts without a gap element.
+    double                         unattached_loss = 0;
+    std::vector<double>            impulses_last_step;
+    std::string                    solver_name;
+    unsigned long                  lcp_count      = 0;
+    int                            lcp_iterations = 0;
+    double                         lcp_residual   = 0;
+    ImpactLog                      impacts;
+    StickSlipLog                   stick_slip;
+    IterationStatistics            stats;
+    EnergyBalance                  balance;
+    double                         energy_scale = 0, max_balance_error = 0;
+    std::function<void()>          substep_callback;
+  };
+} // namespace poundfe
+
+#endif

@@ -1,0 +1,379 @@
+// Moreau–Jean's theta-scheme with Newton's impact law, the impulses of each
+// step from Siconos Numerics' LCP solvers. The equations are those of
+// integration/moreau_jean.h:
+//   M (v+ - v) = h [theta F+ + (1 - theta) F] + H^T P,  u+ = u + h (theta v+ + (1 - theta) v),
+//   0 <= H_a v+ + e_a H_a v  ⊥  P_a >= 0   for g_a + h H_a v <= 0,
+// the smooth forces by Newton with J = M + h theta (C + C_t) + (h theta)^2 (K + K_t)
+// and the LCP w = H J^-1 H^T P + H v_free + e ∘ H v in every iteration.
+// Sources: Jean, CMAME 177 (1999) 235, §3-4; Acary & Brogliato, Numerical
+// Methods for Nonsmooth Dynamical Systems (2008), §10.1 (the scheme) and
+// §10.1.6 (Newton's law at the velocity level, the index set by prediction).
+#include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
+#include <poundfe/integration/moreau_jean.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+
+namespace poundfe
+{
+  std::string
+  unilateral_contacts(const Model &model, const NonlinearElements &elements,
+                      const double restitution, std::vector<UnilateralContact> &contacts)
+  {
+    contacts.clear();
+    if (model.bumper.law != BumperLaw::none)
+      return "does not take bumpers yet";
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      {
+        const NonlinearElement &e = elements[h];
+        if (e.kind != ElementKind::gap)
+          continue;
+        const auto gap = std::find_if(model.gaps.begin(), model.gaps.end(),
+                                      [&](const Gap &g) { return g.label == e.label; });
+        Assert(gap != model.gaps.end(), dealii::ExcMessage("a gap element without its gap"));
+        if (gap->in_plan || gap->on_column || e.rank() != 1)
+          return "takes gaps between floors and against barriers only, not " + e.label +
+                 (gap->in_plan ? " (in plan)" : " (on a column)");
+        UnilateralContact contact;
+        contact.label       = e.label;
+        contact.equations   = e.equations();
+        const Eigen::MatrixXd B = e.tangent_basis(); // the closure's coefficients
+        contact.coefficients.assign(B.data(), B.data() + B.rows());
+        contact.initial_gap = gap->initial_gap;
+        contact.restitution = restitution;
+        contact.element     = h;
+        contacts.push_back(contact);
+      }
+    return {};
+  }
+
+  std::string
+  MoreauJeanIntegrator::unsupported(const LinearSystem &system, const NonlinearElements *elements,
+                                    const unsigned int max_equations)
+  {
+    if (system.n_equations() > max_equations)
+      return "takes models of up to " + std::to_string(max_equations) + " equations (this one has " +
+             std::to_string(system.n_equations()) + ")";
+    for (unsigned int i = 0; i < system.n_equations(); ++i)
+      if (!(system.mass.coeff(i, i) > 0))
+        return "needs mass on every equation (a massless equation cannot take an impulse)";
+    if (elements)
+      for (const NonlinearElement &e : *elements)
+        if (e.kind == ElementKind::member || e.kind == ElementKind::friction)
+          return "does not take " +
+                 std::string(e.kind == ElementKind::member ? "fibre members" : "friction") +
+                 " yet (" + e.label + ")";
+    return {};
+  }
+
+  MoreauJeanIntegrator::MoreauJeanIntegrator(const LinearSystem &system_,
+                                             const MoreauJeanParameters &parameters_,
+                                             std::vector<UnilateralContact> contacts_,
+                                             NonlinearElements *elements_)
+    : system(system_)
+    , parameters(parameters_)
+    , contact_list(std::move(contacts_))
+    , elements(elements_)
+    , n(system_.n_equations())
+    , n_elements(elements_ ? elements_->size() : 0)
+  {
+    Assert(unsupported(system, elements, parameters.max_equations).empty(),
+           dealii::ExcMessage(unsupported(system, elements, parameters.max_equations)));
+    Assert(parameters.theta >= 0.5 && parameters.theta <= 1, dealii::ExcMessage("theta"));
+    mass      = Eigen::MatrixXd(system.mass);
+    stiffness = Eigen::MatrixXd(system.stiffness);
+    damping   = system.damping.size() > 0 ? Eigen::MatrixXd(system.damping) :
+                                            Eigen::MatrixXd::Zero(n, n);
+    if (!system.modal_damping.empty())
+      damping += system.modal_damping.factor * system.modal_damping.weights.asDiagonal() *
+                 system.modal_damping.factor.transpose();
+    const double ht = parameters.time_step * parameters.theta;
+    base_jacobian   = mass + ht * damping + ht * ht * stiffness;
+    // H_a = dg_a/du = -dd_a/du: U_a = H_a v < 0 while the gap closes
+    H.setZero(contact_list.size(), n);
+    for (unsigned int a = 0; a < contact_list.size(); ++a)
+      for (unsigned int i = 0; i < contact_list[a].equations.size(); ++i)
+        if (contact_list[a].equations[i] >= 0)
+          H(a, contact_list[a].equations[i]) -= contact_list[a].coefficients[i];
+    if (lcp_solver_available())
+      solver_name = solve_lcp(Eigen::MatrixXd(), Vector(), parameters.lcp).solver;
+  }
+
+  double
+  MoreauJeanIntegrator::gap(const unsigned int a, const Vector &x) const
+  {
+    return contact_list[a].initial_gap + H.row(a).dot(x);
+  }
+
+  double
+  MoreauJeanIntegrator::normal_velocity(const unsigned int a, const Vector &x) const
+  {
+    return H.row(a).dot(x);
+  }
+
+  std::vector<double>
+  MoreauJeanIntegrator::gaps() const
+  {
+    std::vector<double> g(contact_list.size());
+    for (unsigned int a = 0; a < g.size(); ++a)
+      g[a] = gap(a, u);
+    return g;
+  }
+
+  void
+  MoreauJeanIntegrator::evaluate_elements(const double t, const Vector &x, const Vector &y,
+                                          Vector &force, Eigen::MatrixXd *jacobian)
+  {
+    const double ht = parameters.time_step * parameters.theta;
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        NonlinearElement &e = (*elements)[h];
+        if (e.kind == ElementKind::gap)
+          continue; // replaced by the unilateral contacts
+        const std::vector<int> &equations = e.equations();
+        local_u.resize(e.n_dofs());
+        local_v.resize(e.n_dofs());
+        for (unsigned int i = 0; i < e.n_dofs(); ++i)
+          {
+            local_u[i] = equations[i] < 0 ? 0.0 : x[equations[i]];
+            local_v[i] = equations[i] < 0 ? 0.0 : y[equations[i]];
+          }
+        e.set_trial_time(t);
+        if (!e.set_trial(local_u, local_v))
+          throw NumericalError("t = " + number_text(t) + " s: " + e.label + ": " + e.failure());
+        Vector correction(e.n_dofs());
+        e.force_correction(correction);
+        for (unsigned int i = 0; i < e.n_dofs(); ++i)
+          if (equations[i] >= 0)
+            force[equations[i]] += correction[i];
+        if (!jacobian)
+          continue;
+        const Eigen::MatrixXd B = e.tangent_basis();
+        Eigen::MatrixXd       D(e.rank(), e.rank());
+        e.tangent_change(1 / ht, D);
+        const Eigen::MatrixXd local = ht * ht * B * D * B.transpose();
+        for (unsigned int i = 0; i < e.n_dofs(); ++i)
+          for (unsigned int j = 0; j < e.n_dofs(); ++j)
+            if (equations[i] >= 0 && equations[j] >= 0)
+              (*jacobian)(equations[i], equations[j]) += local(i, j);
+      }
+  }
+
+  Vector
+  MoreauJeanIntegrator::smooth_force(const double t, const Vector &displacement,
+                                     const Vector &velocity, const Vector &load_vector,
+                                     Eigen::MatrixXd *jacobian)
+  {
+    Vector force = damping * velocity + stiffness * displacement - load_vector;
+    evaluate_elements(t, displacement, velocity, force, jacobian);
+    return force;
+  }
+
+  void
+  MoreauJeanIntegrator::initialize(const Vector &load_0, const Vector &u0, const Vector &v0)
+  {
+    Assert(u0.size() == n && v0.size() == n, dealii::ExcDimensionMismatch(u0.size(), n));
+    current_time = 0;
+    step_count   = 0;
+    stats        = IterationStatistics();
+    stats.smallest_time_step = parameters.time_step;
+    balance = EnergyBalance();
+    impacts.reset(n_elements);
+    stick_slip.reset(n_elements);
+    impulse_log.clear();
+    unattached_loss = 0;
+    impulses_last_step.assign(contact_list.size(), 0.0);
+    lcp_count = lcp_iterations = 0;
+    lcp_residual = 0;
+    work.assign(n_elements, 0.0);
+    initial_stored.assign(n_elements, 0.0);
+    u          = u0;
+    v          = v0;
+    load_start = load_0;
+    for (unsigned int h = 0; h < n_elements; ++h)
+      (*elements)[h].reset();
+    smooth_start = smooth_force(0, u, v, load_start, nullptr);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        (*elements)[h].commit();
+        initial_stored[h] = (*elements)[h].stored_energy();
+        work[h]           = initial_stored[h];
+      }
+    a = mass.llt().solve(-smooth_start);
+    update_energy();
+    balance.initial = balance.kinetic + balance.strain;
+    energy_scale = max_balance_error = 0;
+    update_balance_error(balance, energy_scale, max_balance_error);
+  }
+
+  Vector
+  MoreauJeanIntegrator::contact_impulses(const std::vector<unsigned int> &active,
+                                         const Vector &v_free)
+  {
+    const unsigned int m = active.size();
+    Eigen::MatrixXd    Ht(n, m);
+    Vector             q(m);
+    for (unsigned int k = 0; k < m; ++k)
+      {
+        const unsigned int c = active[k];
+        Ht.col(k)            = H.row(c).transpose();
+        q[k] = normal_velocity(c, v_free) + contact_list[c].restitution * normal_velocity(c, v);
+      }
+    const Eigen::MatrixXd W        = Ht.transpose() * jacobian_factor.solve(Ht);
+    const LcpSolution     solution = solve_lcp(W, q, parameters.lcp);
+    ++lcp_count;
+    lcp_iterations = std::max(lcp_iterations, solution.iterations);
+    lcp_residual   = std::max(lcp_residual, solution.residual);
+    if (solution.info != 0 || !solution.z.allFinite())
+      throw NumericalError("t = " + number_text(current_time + parameters.time_step) +
+                           " s: Siconos's " + solution.solver + " did not solve the contact LCP of " +
+                           std::to_string(m) + " contacts (status " +
+                           std::to_string(solution.info) + ", error " +
+                           number_text(solution.residual) + ")");
+    return solution.z;
+  }
+
+  void
+  MoreauJeanIntegrator::step(const LoadFunction &load)
+  {
+    const double h = parameters.time_step, theta = parameters.theta;
+    const double t1 = current_time + h;
+    Vector       load_end(n);
+    load(t1, load_end);
+    // the index set: contacts closed, or closing within the step
+    std::vector<unsigned int> active;
+    for (unsigned int c = 0; c < contact_list.size(); ++c)
+      if (gap(c, u) + h * normal_velocity(c, v) <= 0)
+        active.push_back(c);
+    bool smooth_nonlinear = false;
+    for (unsigned int e = 0; e < n_elements; ++e)
+      smooth_nonlinear = smooth_nonlinear || (*elements)[e].kind != ElementKind::gap;
+    Vector       v_end = v, impulse = Vector::Zero(active.size());
+    unsigned int k     = 0;
+    for (;; ++k)
+      {
+        if (k == parameters.newton_iterations)
+          throw NumericalError("t = " + number_text(t1) + " s: Moreau-Jean's Newton did not " +
+                               "converge in " + std::to_string(k) + " iterations");
+        const Vector    u_end    = u + h * ((1 - theta) * v + theta * v_end);
+        Eigen::MatrixXd jacobian = base_jacobian;
+        const Vector    s_end    = smooth_force(t1, u_end, v_end, load_end, &jacobian);
+        const Vector residual = mass * (v_end - v) + h * (theta * s_end + (1 - theta) * smooth_start);
+        jacobian_factor.compute(jacobian);
+        const Vector v_free = v_end - jacobian_factor.solve(residual);
+        Vector       v_next = v_free;
+        impulse.setZero(active.size());
+        if (!active.empty())
+          {
+            impulse = contact_impulses(active, v_free);
+            for (unsigned int j = 0; j < active.size(); ++j)
+              v_next += impulse[j] * jacobian_factor.solve(Vector(H.row(active[j]).transpose()));
+          }
+        const double change = (v_next - v_end).norm();
+        v_end               = v_next;
+        ++stats.iterations;
+        if (!smooth_nonlinear ||
+            change <= parameters.newton_tolerance * (v_end.norm() + parameters.velocity_scale))
+          break;
+      }
+    stats.max_iterations = std::max(stats.max_iterations, k + 1);
+    const Vector u_end   = u + h * ((1 - theta) * v + theta * v_end);
+    const Vector s_end   = smooth_force(t1, u_end, v_end, load_end, nullptr);
+    const Vector v_theta = (1 - theta) * v + theta * v_end;
+    balance.input += h * v_theta.dot((1 - theta) * load_start + theta * load_end);
+    balance.damping += h * v_theta.dot(damping * v_theta);
+    for (unsigned int e = 0; e < n_elements; ++e)
+      if ((*elements)[e].kind != ElementKind::gap)
+        {
+          work[e] += (*elements)[e].work_increment();
+          (*elements)[e].commit();
+        }
+    record_impulses(active, impulse, v_end, t1);
+    Vector hp = Vector::Zero(n);
+    for (unsigned int j = 0; j < active.size(); ++j)
+      hp += impulse[j] * H.row(active[j]).transpose();
+    a = (v_end - v - mass.llt().solve(hp)) / h;
+    u = u_end;
+    v = v_end;
+    load_start   = load_end;
+    smooth_start = s_end;
+    current_time = t1;
+    ++step_count;
+    ++stats.steps;
+    update_energy();
+  }
+
+  void
+  MoreauJeanIntegrator::record_impulses(const std::vector<unsigned int> &active,
+                                        const Vector &impulse, const Vector &v_end,
+                                        const double t_end)
+  {
+    std::vector<double> this_step(contact_list.size(), 0.0);
+    for (unsigned int j = 0; j < active.size(); ++j)
+      if (impulse[j] > 0)
+        {
+          const unsigned int c = active[j];
+          ContactImpulse     record;
+          record.time            = t_end;
+          record.contact         = c;
+          record.impulse         = impulse[j];
+          record.velocity_before = normal_velocity(c, v);
+          record.velocity_after  = normal_velocity(c, v_end);
+          record.energy_lost =
+            -0.5 * impulse[j] * (record.velocity_before + record.velocity_after);
+          impulse_log.push_back(record);
+          this_step[c] = impulse[j];
+          if (contact_list[c].element >= 0)
+            work[contact_list[c].element] += record.energy_lost;
+          else
+            unattached_loss += record.energy_lost;
+        }
+    const Vector u_end = u + parameters.time_step *
+                               ((1 - parameters.theta) * v + parameters.theta * v_end);
+    // The impact log sees a step with an impulse as one carrying the mean
+    // force P / h at both ends (so its impulse is P and its peak force the
+    // mean force of the step), and the first step without one as its release.
+    const double h = parameters.time_step;
+    for (unsigned int c = 0; c < contact_list.size(); ++c)
+      if (contact_list[c].element >= 0 && (this_step[c] > 0 || impulses_last_step[c] > 0))
+        {
+          const double force = this_step[c] / h;
+          impacts.record(contact_list[c].element, current_time, t_end,
+                         {-gap(c, u), -normal_velocity(c, v), force},
+                         {-gap(c, u_end), -normal_velocity(c, v_end), force});
+        }
+    impulses_last_step = this_step;
+  }
+
+  void
+  MoreauJeanIntegrator::update_energy()
+  {
+    balance.kinetic = 0.5 * v.dot(mass * v);
+    balance.strain  = 0.5 * u.dot(stiffness * u);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      {
+        const NonlinearElement &e = (*elements)[h];
+        if (e.kind != ElementKind::gap)
+          balance.strain += e.stored_energy() - e.reference_energy();
+      }
+    if (elements)
+      set_element_dissipation(balance, *elements, work, std::vector<double>(n_elements, 0.0));
+    else
+      balance.contact = 0;
+    balance.contact += unattached_loss;
+    update_balance_error(balance, energy_scale, max_balance_error);
+  }
+
+  void
+  MoreauJeanIntegrator::advance(const LoadFunction &load)
+  {
+    step(load);
+    if (substep_callback)
+      substep_callback();
+  }
+} // namespace poundfe
