@@ -34,19 +34,29 @@ namespace poundfe
       /// Eigen's own solve() permutes in place, which allocates a mask on
       /// every call; the same steps (x = P^-1 L^-T D^-1 L^-1 P b) through a
       /// kept buffer allocate nothing and give the same numbers.
+      /// The permutations are copies by index (buffer[P(i)] = b[i], x[P^-1(j)]
+      /// = buffer[j], as Eigen's permutation products), without the
+      /// products' expression machinery: the same numbers, a few hundred
+      /// instructions less per solve of a small model.
       void
       solve(const Vector &b, Vector &x) override
       {
-        buffer.resize(b.size());
-        if (ldlt.permutationP().size() > 0)
-          buffer = ldlt.permutationP() * b;
+        const Eigen::Index n = b.size();
+        buffer.resize(n);
+        const auto &p = ldlt.permutationP().indices();
+        if (p.size() > 0)
+          for (Eigen::Index i = 0; i < n; ++i)
+            buffer[p[i]] = b[i];
         else
           buffer = b;
         ldlt.matrixL().solveInPlace(buffer);
         buffer.array() *= inverse_d.array();
         ldlt.matrixU().solveInPlace(buffer);
-        if (ldlt.permutationP().size() > 0)
-          x = ldlt.permutationPinv() * buffer;
+        x.resize(n);
+        const auto &p_inverse = ldlt.permutationPinv().indices();
+        if (p_inverse.size() > 0)
+          for (Eigen::Index j = 0; j < n; ++j)
+            x[p_inverse[j]] = buffer[j];
         else
           x = buffer;
       }

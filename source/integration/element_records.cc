@@ -47,29 +47,38 @@ namespace poundfe
   ElementRecords::accept(NonlinearElements &elements, const double t0, const double t1,
                          const Vector &v_next, const std::vector<char> *counted, double &belt)
   {
+    // A gap's or friction element's rate at v_next is taken once: its log
+    // closes the entry with it, and it is the committed rate noted for the
+    // next step (their deformation() reads only the velocities and the
+    // trial state, which a commit keeps).
     for (const unsigned int h : gaps)
       {
-        const NonlinearElement &e = elements[h];
+        const NonlinearElement &e    = elements[h];
+        const double            next = e.deformation(v_next);
         impacts.record(h, t0, t1, {history[h], rate[h], force[h]},
-                       {e.history_variable(), e.deformation(v_next), e.force(), e.contact_point(),
-                        e.phase()});
+                       {e.history_variable(), next, e.force(), e.contact_point(), e.phase()});
+        rate[h] = next;
       }
     for (const unsigned int h : frictions)
       {
-        const NonlinearElement &e = elements[h];
-        stick_slip.record(h, t0, t1, {e.was_active(), rate[h]}, {e.is_active(), e.deformation(v_next)});
+        const NonlinearElement &e    = elements[h];
+        const double            next = e.deformation(v_next);
+        stick_slip.record(h, t0, t1, {e.was_active(), rate[h]}, {e.is_active(), next});
+        rate[h] = next;
       }
     for (const unsigned int h : kept)
       {
-        NonlinearElement &e = elements[h];
+        NonlinearElement &e        = elements[h];
+        const double      supplied = e.supplied_work_increment();
         work_done[h] += e.work_increment();
-        work_supplied[h] += e.supplied_work_increment();
+        work_supplied[h] += supplied;
         if (!counted || (*counted)[h])
-          belt += e.supplied_work_increment();
+          belt += supplied;
         e.commit();
         force[h]   = e.force();
         history[h] = e.history_variable();
-        rate[h]    = e.deformation(v_next);
+        if (e.kind != ElementKind::gap && e.kind != ElementKind::friction)
+          rate[h] = e.deformation(v_next);
       }
   }
 
