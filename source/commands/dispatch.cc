@@ -92,6 +92,14 @@ namespace poundfe
                    "buildings spreads one run over the MPI ranks: only " +
                      command_names(CommandRule::partition_by_building, "'") + " takes it, not '" +
                      command.name + "'");
+      if (input.time_integration.partition == RunPartition::buildings)
+        for (unsigned int b = 0; b < input.model.buildings.size(); ++b)
+          if (input.model.buildings[b].fibre()) // a rank observes only its own members
+            input.fail("Time integration/Partition",
+                       "buildings does not follow the limit states of fibre members over the "
+                       "ranks (summary.json's section_limit_states); Building " +
+                         std::to_string(b + 1) +
+                         " has Member model = fibre: run it unpartitioned (Partition = none)");
       if (input.output.field_format == FieldFormat::xdmf && !command.has(CommandRule::field_output))
         input.fail("Output/Field format",
                    "xdmf chooses the field output of " +

@@ -3,7 +3,8 @@
 // drift, each hinge's force and deformation), the equal-energy bilinear
 // idealisation of the control building's curve and, with a Spectrum/Target,
 // the N2 target displacement (dynamics/capacity_curve.h), summary.json and
-// pushover.png. A push that cannot go on keeps the curve so far and exits 2.
+// pushover.png; with fibre members, their limit states along the push and
+// each storey's damage state at the target displacement. A push that cannot go on keeps the curve so far and exits 2.
 #include <poundfe/commands/command.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/dynamics/capacity_curve.h>
@@ -17,6 +18,8 @@
 #include <poundfe/output/plots.h>
 #include <poundfe/report/run_summary.h>
 
+#include <cmath>
+#include <limits>
 #include <ostream>
 
 namespace poundfe
@@ -89,15 +92,17 @@ namespace poundfe::commands
 {
   namespace
   {
-    /// summary.json's "capacity": the idealisation and the N2 target.
-    void
+    /// summary.json's "capacity": the idealisation and the N2 target; the
+    /// target displacement (m, from the start; NaN without one).
+    double
     write_capacity(JsonWriter &json, const InputParameters &input, const PushoverResult &r,
                    std::ostream &out)
     {
+      double              target = std::numeric_limits<double>::quiet_NaN();
       std::vector<double> d, F;
       sdof_curve(r, input.pushover.control_building - 1, d, F);
       if (d.size() < 2)
-        return;
+        return target;
       const BilinearCurve bilinear = ec8_bilinear(d, F);
       json.begin_object("capacity")
         .value("gamma", r.gamma)
@@ -124,8 +129,43 @@ namespace poundfe::commands
             .value("target_displacement_sdof_m", t.target_sdof)
             .value("target_displacement_m", t.target);
           out << "N2 target displacement: " << t.target << " m (T* " << t.period << " s)\n";
+          target = t.target;
         }
       json.end_object();
+      return target;
+    }
+
+    /// summary.json's "storey_damage_states": each storey's damage state
+    /// (theory §13.5) at the first point of the first excursion whose
+    /// displacement from the start reaches `target` (NaN, or not reached:
+    /// the last point, said so by "at").
+    void
+    write_storey_damage(JsonWriter &json, const Model &model, const PushoverResult &r,
+                        const double target)
+    {
+      const double start = r.points.front().control_displacement;
+      unsigned int at    = r.points.size() - 1;
+      bool         found = false;
+      for (unsigned int i = 0; i < r.points.size() && !std::isnan(target) && !found; ++i)
+        if (std::abs(r.points[i].control_displacement - start) >= std::abs(target))
+          {
+            at    = i;
+            found = true;
+          }
+      json.begin_object("storey_damage_states")
+        .value("at", found ? "target displacement" : "end of the push")
+        .value("point", at)
+        .value("control_displacement_m", r.points[at].control_displacement);
+      json.begin_array("buildings");
+      unsigned int k = 0;
+      for (const Building &b : model.buildings)
+        {
+          std::vector<std::string> states;
+          for (unsigned int f = 0; f < b.floors.size(); ++f)
+            states.push_back(damage_state_name(r.points[at].storey_damage[k++]));
+          json.begin_object().value("building", b.name).value("storeys", states).end_object();
+        }
+      json.end_array().end_object();
     }
   } // namespace
 
@@ -134,7 +174,8 @@ namespace poundfe::commands
   {
     const InputParameters &input    = *run.input;
     const Analysis         analysis = prepare_analysis(input);
-    const PushoverResult   result   = run_pushover(analysis, input.pushover, input);
+    const PushoverResult   result =
+      run_pushover(analysis, input.pushover, input, &input.section_limits);
     prepare_output_directory(run.directory);
     write_pushover_csv(run.directory + "/pushover.csv", analysis.model, result);
     if (!result.completed)
@@ -159,7 +200,12 @@ namespace poundfe::commands
             peak = std::max(peak, std::abs(v));
         return peak;
       }());
-    write_capacity(json, input, result, run.out);
+    const double target = write_capacity(json, input, result, run.out);
+    if (result.section_limits)
+      {
+        result.section_limits->write_json(json, analysis.model, "first_control_displacement_m");
+        write_storey_damage(json, analysis.model, result, target);
+      }
     std::vector<std::string> files{"pushover.csv", "summary.json"};
     files.insert(files.end(), figures.begin(), figures.end());
     json.begin_object("output").value("directory", run.directory).value("files", files).end_object();

@@ -124,7 +124,8 @@ namespace poundfe
     class Push
     {
     public:
-      Push(const Analysis &analysis, const PushoverParameters &parameters, const InputFile &input);
+      Push(const Analysis &analysis, const PushoverParameters &parameters, const InputFile &input,
+           const SectionLimitParameters *limits);
       PushoverResult run();
 
     private:
@@ -144,6 +145,7 @@ namespace poundfe
       PathPoint                 point;
       std::vector<unsigned int> reported; // the elements in the curve
       std::vector<std::vector<std::pair<unsigned int, double>>> lateral; // per building
+      std::shared_ptr<SectionLimitStates> section_limits; // with fibre members
     };
 
     PathSettings
@@ -156,7 +158,7 @@ namespace poundfe
     }
 
     Push::Push(const Analysis &analysis_, const PushoverParameters &parameters_,
-               const InputFile &input)
+               const InputFile &input, const SectionLimitParameters *limits)
       : analysis(analysis_)
       , model(analysis_.model)
       , parameters(parameters_)
@@ -199,6 +201,12 @@ namespace poundfe
             reported.push_back(h);
             result.elements.push_back(elements[h].label);
           }
+      if (limits)
+        {
+          section_limits = std::make_shared<SectionLimitStates>(model, elements, *limits);
+          if (section_limits->empty())
+            section_limits.reset();
+        }
     }
 
     void
@@ -240,6 +248,14 @@ namespace poundfe
         {
           p.element_forces.push_back(elements[h].force());
           p.element_deformations.push_back(elements[h].deformation(point.u));
+        }
+      if (section_limits)
+        {
+          if (!result.points.empty()) // the start is observed by initialize_at
+            section_limits->observe_at(p.control_displacement);
+          for (unsigned int b = 0; b < model.buildings.size(); ++b)
+            for (const int worst : section_limits->storey_worst_limits(model, b))
+              p.storey_damage.push_back(worst);
         }
       result.points.push_back(std::move(p));
     }
@@ -316,19 +332,22 @@ namespace poundfe
     PushoverResult
     Push::run()
     {
+      if (section_limits) // the start: gravity's axial forces give the yield curvatures
+        section_limits->initialize_at(point.u[result.control_equation]);
       record(false);
       for (const double drift : parameters.targets())
         if (!excursion(drift * result.control_height))
           break;
+      result.section_limits = section_limits;
       return std::move(result);
     }
   } // namespace
 
   PushoverResult
   run_pushover(const Analysis &analysis, const PushoverParameters &parameters,
-               const InputFile &input)
+               const InputFile &input, const SectionLimitParameters *limits)
   {
-    Push push(analysis, parameters, input);
+    Push push(analysis, parameters, input, limits);
     return push.run();
   }
 } // namespace poundfe

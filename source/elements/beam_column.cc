@@ -420,8 +420,16 @@ namespace poundfe
     constexpr unsigned int max_iterations = 20;
     const double           L              = this->length();
     const BasicVector      dv             = target - current.v;
+    // The energy scale of the tolerance: the target's and the increment's
+    // energies, and the sections' own work, sum_i w_i L |e_i . s_i|. The last
+    // is what round-off in the compatibility sum L sum_i w_i b_i^T e_i is
+    // relative to: a member back near v = 0 after cracking or yielding keeps
+    // residual e_i and s_i, and without it a tiny increment from there asks
+    // for a residual far below the round-off of those terms.
+    double scale = std::abs(target.dot(current.kv * target)) + std::abs(dv.dot(current.kv * dv));
+    for (unsigned int i = 0; i < this->rule.size(); ++i)
+      scale += this->rule.weights[i] * L * std::abs(current.e[i].dot(current.s[i]));
     current.q += current.kv * dv;
-    const double scale    = std::abs(target.dot(current.kv * target)) + std::abs(dv.dot(current.kv * dv));
     double       previous = std::numeric_limits<double>::infinity();
     for (unsigned int j = 0; j < max_iterations; ++j)
       {

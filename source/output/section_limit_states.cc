@@ -97,7 +97,7 @@ namespace poundfe
   }
 
   void
-  SectionLimitStates::initialize(const ResponseView &state)
+  SectionLimitStates::initialize_at(const double when)
   {
     for (MemberLimits &m : limits)
       for (unsigned int i = 0; i < m.sections.size(); ++i)
@@ -111,15 +111,15 @@ namespace poundfe
           m.sections[i].set_yield_curvatures(section_yield_curvature(section, n, yield, +1),
                                              section_yield_curvature(section, n, yield, -1));
         }
-    observe_step(state);
+    observe_at(when);
   }
 
   void
-  SectionLimitStates::observe_step(const ResponseView &state)
+  SectionLimitStates::observe_at(const double when)
   {
     for (MemberLimits &m : limits)
       for (unsigned int i = 0; i < m.sections.size(); ++i)
-        m.sections[i].observe(*fibre_section(*m.element, i), state.time());
+        m.sections[i].observe(*fibre_section(*m.element, i), when);
   }
 
   std::vector<int>
@@ -133,7 +133,8 @@ namespace poundfe
   }
 
   void
-  SectionLimitStates::write_json(JsonWriter &json, const Model &model) const
+  SectionLimitStates::write_json(JsonWriter &json, const Model &model,
+                                 const std::string &first_key) const
   {
     json.begin_array("section_limit_states");
     for (const MemberLimits &m : limits)
@@ -165,7 +166,7 @@ namespace poundfe
             json.begin_object(section_limit_name(limit))
               .value("strain", m.sections.front().limits().strain[l])
               .value("ratio", worst_ratio(m, limit))
-              .value("first_time_s", first_time(m, limit))
+              .value(first_key, first_time(m, limit))
               .end_object();
           }
         json.end_object().end_object();

@@ -15,7 +15,9 @@
 #include <poundfe/base/input_file.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/pushover_parameters.h>
+#include <poundfe/output/section_limit_states.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,10 @@ namespace poundfe
     std::vector<double> base_shears;  // N, per building: its supports' horizontal reaction
     std::vector<double> drifts;       // every storey of every building (PushoverResult::storeys)
     std::vector<double> element_forces, element_deformations; // hinges and storeys
+    /// With fibre members: each storey's damage state so far, the worst
+    /// limit of its members (output/section_limits.h; -1 none), in the order of
+    /// `drifts`; else empty.
+    std::vector<int> storey_damage;
     bool                arc_length = false; // reached by an arc-length step
   };
 
@@ -45,13 +51,21 @@ namespace poundfe
     bool                       completed = true;
     std::string                failure; // why it stopped early (completed false)
     unsigned int               iterations = 0, arc_length_steps = 0, step_cuts = 0;
+    /// The limit states of the fibre members along the push, their first
+    /// times the control displacements (m) that reach them; nullptr
+    /// without fibre members or limits asked for. Its elements are gone:
+    /// read it, do not observe with it.
+    std::shared_ptr<const SectionLimitStates> section_limits;
   };
 
   /// The pushover of `analysis`'s model. InputError (file, line, entry) for
   /// a control floor the building has not, a 3D model or a partitioned one;
   /// a numerical failure ends the curve early with `failure` set.
+  /// With `limits`, the fibre members' limit states are followed from the
+  /// start (their yield curvatures at its axial forces) through every point.
   PushoverResult run_pushover(const Analysis &analysis, const PushoverParameters &parameters,
-                              const InputFile &input);
+                              const InputFile &input,
+                              const SectionLimitParameters *limits = nullptr);
 
   /// The lateral load pattern p_ref (on the ux equations, each building's
   /// summing to 1) of `analysis`'s model; `shapes` gets Phi of the control

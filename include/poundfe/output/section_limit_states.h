@@ -4,7 +4,9 @@
 // (where each section's yield curvature is found at its own axial force),
 // and reports per member the worst over its sections, and per storey the
 // damage state of its worst member (the columns below a floor and the
-// beams of that floor make a storey).
+// beams of that floor make a storey). The pushover keeps one after its
+// elements are gone: its records (peaks, first times, damage states) need
+// no element; only observing does.
 #ifndef poundfe_output_section_limit_states_h
 #define poundfe_output_section_limit_states_h
 
@@ -40,16 +42,23 @@ namespace poundfe
     bool empty() const { return limits.empty(); }
     /// The yield curvatures at the state given (the gravity state), then
     /// its strains.
-    void initialize(const ResponseView &state) override;
-    void observe_step(const ResponseView &state) override;
+    void initialize(const ResponseView &state) override { initialize_at(state.time()); }
+    void observe_step(const ResponseView &state) override { observe_at(state.time()); }
     void observe_substep(const ResponseView &state) override { observe_step(state); }
+    /// The same at the members' current state, `when` the time of a run or
+    /// the control displacement of a pushover (the first times' axis).
+    void initialize_at(double when);
+    void observe_at(double when);
 
     const std::vector<MemberLimits> &members() const { return limits; }
     /// Building b's worst limit per storey (-1: none), bottom up.
     std::vector<int> storey_worst_limits(const Model &model, unsigned int b) const;
     /// "section_limit_states" of summary.json: the limits' definitions, and
-    /// per member its peaks, ratios, first times and damage state.
-    void write_json(JsonWriter &json, const Model &model) const;
+    /// per member its peaks, ratios, first times and damage state; each
+    /// limit's first time under the key `first_key` (a pushover's is a
+    /// control displacement).
+    void write_json(JsonWriter &json, const Model &model,
+                    const std::string &first_key = "first_time_s") const;
 
   private:
     std::vector<MemberLimits> limits;
