@@ -30,8 +30,11 @@
 //   e_i += f_s,i (b_i q - s_i),  s_i, k_s,i from the section law at e_i,
 // the residual deformation r = v - L sum_i w_i b_i^T (e_i + f_s,i (b_i q - s_i))
 // and q += F^-1 r, until the work r . F^-1 r is below 1e-20 of the
-// element's energy v . F^-1 v (or stalls at round-off below 1e-12 of it:
-// OpenSees stops at an absolute 1e-12). When the iterations do not
+// element's energy scale, v . F^-1 v + dv . F^-1 dv plus the sections' own
+// work L sum_i w_i |e_i . s_i| (a member back near v = 0 after cracking
+// keeps residual section forces that set the round-off of the sum), or
+// stalls at round-off below 1e-12 of it (OpenSees stops at an absolute
+// 1e-12). When the iterations do not
 // converge within 20, the increment is divided by 10 (up to 4 times) and
 // applied in pieces, each from the last converged one (OpenSees's
 // subdivision). The consistent tangent is k_b = F^-1 at convergence. For
