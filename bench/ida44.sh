@@ -9,6 +9,12 @@
 # runs (summary.json: runs_now / wall_time_s) and the whole command's wall
 # time (set-up and output included), the speed-up, and the load average
 # before and after. ida.csv must be the same on 1 and 2 ranks.
+#   Each rank runs under setsid (SETSID=0: not): with the kernel's autogroup
+# scheduling (/proc/sys/kernel/sched_autogroup_enabled = 1) the CPU is
+# shared between sessions, not processes, so on a machine that other
+# sessions load, the ranks of one session share one session's time and two
+# ranks cannot run faster than one; a session per rank gives each rank the
+# share a process of its own would have, as on a machine of its own.
 set -eu
 n=${1:-44}
 runs=${2:-20}
@@ -24,10 +30,13 @@ options=("${pair[@]}" --set "IDA/Suite=$work/suite/records/suite.csv"
          --set "IDA/Runs per record=$runs")
 echo "load average before: $(uptime | sed 's/.*load average: //')"
 best() { sort -g | tail -1; }
+isolate=setsid
+[ "${SETSID:-1}" = 0 ] && isolate=
+echo "autogroup scheduling: $(cat /proc/sys/kernel/sched_autogroup_enabled 2> /dev/null || echo unknown); ranks under: ${isolate:-none}"
 for i in $(seq "$repeats"); do
   for np in 1 2; do
     start=$(date +%s.%N)
-    mpirun -np "$np" build/poundfe ida input/ida-pounding-pair.prm --output "$work/np$np-$i" \
+    mpirun -np "$np" $isolate build/poundfe ida input/ida-pounding-pair.prm --output "$work/np$np-$i" \
       "${options[@]}" > /dev/null
     end=$(date +%s.%N)
     python3 -c "import json, sys; s = json.load(open(sys.argv[1])); print(s['runs_now'], s['runs_now'] / s['wall_time_s'], float(sys.argv[3]) - float(sys.argv[2]))" \

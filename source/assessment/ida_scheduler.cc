@@ -14,6 +14,10 @@
 //   record is done and nothing is under way, or at an interruption (its
 //   own signal or a worker's done with 1); a worker then drops the runs it
 //   had not started. Rank 0 receives until every worker is done.
+// Rank 0 writes each row to the journal as it comes and syncs the journal
+// every half second and at the end (append_file.h): a row is a few ms of
+// computing, and a sync per row made rank 0 wait on the disk longer than it
+// computed.
 // The record dealt is the free one with the fewest runs (the lowest number
 // among equals), so the records advance together and the last rounds, in
 // which few chains remain, are short; the order changes which rank runs
@@ -88,6 +92,7 @@ namespace poundfe
       std::unique_ptr<AppendFile>      journal;
       std::uint64_t                    next_id = 0;
       std::vector<std::vector<double>> rows;
+      std::chrono::steady_clock::time_point synced = std::chrono::steady_clock::now();
       unsigned int                     n_done = 0; // workers done
       bool                             stop   = false;
       std::deque<std::array<double, 2>> sent; // the tasks' buffers until Waitall
@@ -134,7 +139,11 @@ namespace poundfe
       busy[r] = 0;
       if (fresh)
         {
-          journal->append(realization_line({next_id++, true, taken}, 0));
+          journal->append(realization_line({next_id++, true, taken}, 0), false);
+          // synced in groups: a sync can outlast the run (append_file.h)
+          const auto now = std::chrono::steady_clock::now();
+          if (now - synced > std::chrono::milliseconds(500))
+            journal->sync(), synced = now;
           ++n_run_now;
         }
       rows.push_back(std::move(taken));
@@ -228,6 +237,7 @@ namespace poundfe
             ida_pause();
         }
       MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
+      journal->sync();
       return std::move(rows);
     }
 
