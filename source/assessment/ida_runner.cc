@@ -1,6 +1,6 @@
-// The IDA runner (a record at an intensity through the model) and the
-// rounds of hunt-and-fill over the ranks, journaled by the Monte Carlo
-// scheduler (ida.h).
+// The IDA runner (a record at an intensity through the model) and a list
+// of runs over the ranks, journaled by the Monte Carlo scheduler (ida.h);
+// the hunt and fill over the ranks is in ida_scheduler.cc.
 #include <poundfe/assessment/ida.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/progress.h>
@@ -105,21 +105,34 @@ namespace poundfe
     return point;
   }
 
+  std::vector<std::string>
+  ida_row_names(const IdaRunner &runner)
+  {
+    std::vector<std::string> names{"record", "intensity", "collapsed"};
+    names.insert(names.end(), runner.demand_names().begin(), runner.demand_names().end());
+    return names;
+  }
+
+  std::vector<double>
+  ida_row(IdaRunner &runner, const IdaTask &task)
+  {
+    const IdaPoint      point = runner.run(task.record, task.intensity);
+    std::vector<double> row{double(task.record), task.intensity, point.collapsed ? 1.0 : 0.0};
+    row.insert(row.end(), point.demands.begin(), point.demands.end());
+    return row;
+  }
+
   std::vector<std::vector<double>>
   run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
                 const MPI_Comm comm, Progress *const progress, const unsigned long offset,
                 IdaResult &result)
   {
     RealizationJob job;
-    job.names = {"record", "intensity", "collapsed"};
-    for (const std::string &n : runner.demand_names())
-      job.names.push_back(n);
+    job.names         = ida_row_names(runner);
     job.seed          = 0;
     job.report_lines  = false;
     job.run           = [&](const std::uint64_t i, std::vector<double> &row) {
-      const IdaPoint point = runner.run(tasks[i].record, tasks[i].intensity);
-      row = {double(tasks[i].record), tasks[i].intensity, point.collapsed ? 1.0 : 0.0};
-      row.insert(row.end(), point.demands.begin(), point.demands.end());
+      row = ida_row(runner, tasks[i]);
       return true;
     };
     const MonteCarloTable table =
@@ -134,65 +147,5 @@ namespace poundfe
     for (std::size_t i = 0; i < flat.size(); i += job.names.size())
       rows.emplace_back(flat.begin() + i, flat.begin() + i + job.names.size());
     return rows;
-  }
-
-  namespace
-  {
-    /// A round's row into its record's search and points.
-    void
-    take_row(const std::vector<double> &row, std::vector<HuntFill> &searches, IdaResult &result)
-    {
-      const unsigned int r = static_cast<unsigned int>(row[0]);
-      IdaPoint           point;
-      point.intensity = row[1];
-      point.collapsed = row[2] != 0;
-      point.demands.assign(row.begin() + 3, row.end());
-      searches.at(r).record(point.intensity, point.collapsed);
-      result.records[r].points.push_back(std::move(point));
-      ++result.n_runs;
-    }
-  } // namespace
-
-  IdaResult
-  run_ida(IdaRunner &runner, const std::string &journal, const MPI_Comm comm,
-          Progress *const progress)
-  {
-    const auto             start     = std::chrono::steady_clock::now();
-    const unsigned int     n_records = runner.suite().records.size();
-    std::vector<HuntFill>  searches(n_records, HuntFill(runner.search()));
-    IdaResult              result;
-    result.records.resize(n_records);
-    for (unsigned int round = 0; !result.interrupted; ++round)
-      {
-        std::vector<IdaTask> tasks;
-        for (unsigned int r = 0; r < n_records; ++r)
-          if (const std::optional<double> x = searches[r].next())
-            tasks.push_back({r, *x});
-        if (tasks.empty())
-          break;
-        // realizations.csv in a folder per round: the name the output
-        // directory keeps when a command resumes (output_directory.h)
-        const std::string folder = journal + "/round_" + std::to_string(round);
-        if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-          create_directories(folder);
-        const std::string file = folder + "/realizations.csv";
-        for (const std::vector<double> &row :
-             run_ida_tasks(runner, tasks, file, comm, progress, result.n_runs, result))
-          take_row(row, searches, result);
-      }
-    for (unsigned int r = 0; r < n_records; ++r)
-      {
-        IdaRecordResult &record = result.records[r];
-        std::sort(record.points.begin(), record.points.end(),
-                  [](const IdaPoint &a, const IdaPoint &b) { return a.intensity < b.intensity; });
-        for (IdaPoint &point : record.points)
-          point.scale_factor = point.intensity / runner.base_intensities()[r];
-        record.collapse_intensity = searches[r].collapse_intensity();
-        record.highest_survived   = searches[r].highest_survived();
-        record.done               = !searches[r].next();
-      }
-    result.wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
   }
 } // namespace poundfe

@@ -2,6 +2,7 @@
 // over the ranks (msa.h).
 #include <poundfe/assessment/msa.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/base/standard_normal.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_columns.h>
@@ -39,6 +40,53 @@ namespace poundfe
       fit.note = "no stripe is partly exceeded: the data do not bound beta (it tends to 0); "
                  "add stripes between the last one exceeded by none and the first by all";
     return fit;
+  }
+
+  std::vector<std::vector<unsigned int>>
+  nested_limit_states(const std::vector<LimitState> &states,
+                      const std::vector<const IdaPoint *> &points)
+  {
+    const unsigned int             n = states.size();
+    std::vector<std::vector<char>> excess(n); // [state][point]
+    for (unsigned int s = 0; s < n; ++s)
+      for (const IdaPoint *p : points)
+        if (!p->demands.empty())
+          excess[s].push_back(states[s].exceeded(*p) ? 1 : 0);
+    std::vector<std::vector<unsigned int>> within(n);
+    for (unsigned int b = 0; b < n; ++b)
+      {
+        if (std::count(excess[b].begin(), excess[b].end(), 1) == 0)
+          continue;
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            bool subset = a != b;
+            for (std::size_t i = 0; subset && i < excess[b].size(); ++i)
+              subset = !excess[b][i] || excess[a][i];
+            if (subset)
+              within[b].push_back(a);
+          }
+      }
+    return within;
+  }
+
+  NestedRate
+  order_nested_rates(const std::vector<LimitState> &states,
+                     const std::vector<std::vector<unsigned int>> &within,
+                     const std::vector<double> &rates)
+  {
+    NestedRate nested{within, rates, {}};
+    for (unsigned int b = 0; b < states.size(); ++b)
+      for (const unsigned int a : within[b])
+        if (std::isfinite(rates[b]) && std::isfinite(rates[a]) && rates[b] > rates[a])
+          {
+            nested.bound[b] = std::min(nested.bound[b], rates[a]);
+            nested.warnings.push_back(
+              "'" + states[b].name + "' is nested in '" + states[a].name + "' (every run that "
+              "exceeds it exceeds the other) but its fitted annual rate " + rounded(rates[b]) +
+              " per year exceeds the other's " + rounded(rates[a]) + " (the fragilities are "
+              "fitted one by one and cross): its rate is at most " + rounded(rates[a]));
+          }
+    return nested;
   }
 
   LognormalFragility

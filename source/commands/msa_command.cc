@@ -153,26 +153,52 @@ namespace poundfe::commands
     struct FittedState
     {
       LognormalFragility fragility;
-      double             rate = std::nan("");
+      double             rate = std::nan(""), bound = std::nan(""); // bound: msa.h, NestedRate
     };
+
+    /// The nesting of the states over the stripes' runs, and the rates'
+    /// bounds and warnings.
+    NestedRate
+    nest_rates(const std::vector<LimitState> &states, const MsaResult &result,
+               std::vector<FittedState> &fits)
+    {
+      std::vector<const IdaPoint *> points;
+      for (const std::vector<IdaPoint> &stripe : result.runs)
+        for (const IdaPoint &p : stripe)
+          points.push_back(&p);
+      std::vector<double> rates;
+      for (const FittedState &fit : fits)
+        rates.push_back(fit.fragility.fitted ? fit.rate : std::nan(""));
+      const NestedRate nested =
+        order_nested_rates(states, nested_limit_states(states, points), rates);
+      for (std::size_t s = 0; s < fits.size(); ++s)
+        fits[s].bound = nested.bound[s];
+      return nested;
+    }
 
     /// msa_fragility.csv and msa_curves.csv (100 intensities up to twice the top stripe).
     std::vector<FittedState>
     write_fragilities(const std::string &directory, const std::vector<LimitState> &states,
-                      const std::vector<std::vector<StripeCount>> &counts, const Stripes &stripes)
+                      const std::vector<std::vector<StripeCount>> &counts, const Stripes &stripes,
+                      const MsaResult &result, std::vector<std::string> &warnings)
     {
       std::vector<FittedState> fits;
-      std::string text = "limit_state,fitted,theta,beta,annual_rate_per_year,note\n";
       for (std::size_t s = 0; s < states.size(); ++s)
         {
-          FittedState fit{fit_stripe_fragility(counts[s])};
+          fits.push_back({fit_stripe_fragility(counts[s])});
           if (stripes.hazard)
-            fit.rate = exceedance_rate(*stripes.hazard, fit.fragility);
+            fits.back().rate = exceedance_rate(*stripes.hazard, fits.back().fragility);
+        }
+      warnings = nest_rates(states, result, fits).warnings;
+      std::string text =
+        "limit_state,fitted,theta,beta,annual_rate_per_year,annual_rate_bound_per_year,note\n";
+      for (std::size_t s = 0; s < states.size(); ++s)
+        {
+          const FittedState &fit = fits[s];
           text += column_label(states[s]) + (fit.fragility.fitted ? ",1" : ",0");
-          for (const double x : {fit.fragility.theta, fit.fragility.beta, fit.rate})
+          for (const double x : {fit.fragility.theta, fit.fragility.beta, fit.rate, fit.bound})
             append_field(text, fit.fragility.fitted ? x : std::nan(""));
           text += "," + fit.fragility.note + "\n";
-          fits.push_back(fit);
         }
       write_file_atomically(directory + "/msa_fragility.csv", text);
       const double top = 2 * *std::max_element(stripes.intensity.begin(), stripes.intensity.end());
@@ -259,6 +285,8 @@ namespace poundfe::commands
             json.value("theta", f.theta).value("beta", f.beta);
           if (std::isfinite(fits[s].rate))
             json.value("annual_rate_per_year", fits[s].rate);
+          if (std::isfinite(fits[s].bound))
+            json.value("annual_rate_bound_per_year", fits[s].bound);
           if (!f.note.empty())
             json.value("note", f.note);
           json.end_object();
@@ -296,7 +324,9 @@ namespace poundfe::commands
       write_runs(run.directory, runner, result, stripes);
       const auto counts = count_stripes(result, states);
       write_stripes(run.directory, states, counts, stripes);
-      const std::vector<FittedState> fits = write_fragilities(run.directory, states, counts, stripes);
+      std::vector<std::string>       warnings;
+      const std::vector<FittedState> fits =
+        write_fragilities(run.directory, states, counts, stripes, result, warnings);
       std::optional<CloudFit> cloud;
       if (input.msa.cloud && !result.cloud.empty())
         cloud = write_cloud(run.directory, runner, result, input);
@@ -307,6 +337,10 @@ namespace poundfe::commands
         .value("unit", unit)
         .value("periods_s", runner.measure_periods());
       write_summary(json, run.out, result, states, fits, cloud, unit);
+      if (!warnings.empty())
+        json.value("warnings", warnings);
+      for (const std::string &w : warnings)
+        run.out << "warning: " << w << "\n";
       json.end_object();
       if (input.output.plots && !result.counters.interrupted)
         draw_plots(run.directory, {msa_plot(states, intensity_measure_names().name(ida.measure) +

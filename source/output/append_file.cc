@@ -30,7 +30,13 @@ namespace poundfe
   }
 
   void
-  AppendFile::append(const std::string &line)
+  AppendFile::sync()
+  {
+    ::fdatasync(descriptor);
+  }
+
+  void
+  AppendFile::append(const std::string &line, const bool sync_now)
   {
     const char *data = line.data();
     std::size_t left = line.size();
@@ -46,7 +52,8 @@ namespace poundfe
         data += written;
         left -= written;
       }
-    ::fdatasync(descriptor);
+    if (sync_now)
+      sync();
   }
 
   void

@@ -39,35 +39,32 @@ namespace poundfe
       return header;
     }
 
-    struct Row
-    {
-      std::uint64_t       realization = 0;
-      bool                completed   = false;
-      std::vector<double> responses;
-    };
+  } // namespace
 
-    std::string
-    format_row(const Row &row, const std::uint64_t seed)
-    {
-      std::string line = std::to_string(row.realization) + "," + std::to_string(seed) + "," +
-                         (row.completed ? "1" : "0");
-      for (const double x : row.responses)
-        {
-          line += ',';
-          append_number(line, x);
-        }
-      return line + "\n";
-    }
+  std::string
+  realization_line(const RealizationRow &row, const std::uint64_t seed)
+  {
+    std::string line = std::to_string(row.realization) + "," + std::to_string(seed) + "," +
+                       (row.completed ? "1" : "0");
+    for (const double x : row.responses)
+      {
+        line += ',';
+        append_number(line, x);
+      }
+    return line + "\n";
+  }
 
+  namespace
+  {
     /// The complete rows of an existing realizations.csv; sets `damaged` when a
     /// line (a partial last line of a killed run) had to be dropped.
-    std::map<std::uint64_t, Row>
+    std::map<std::uint64_t, RealizationRow>
     read_rows(const std::string &file, const std::string &header, const std::uint64_t seed,
               const unsigned int n_responses, bool &damaged)
     {
       // bounded as any input: a FIFO or /dev/zero in its place is refused
       const std::string text = read_input_text(file, "table of realizations");
-      std::map<std::uint64_t, Row> rows;
+      std::map<std::uint64_t, RealizationRow> rows;
       damaged = false;
       std::size_t start = 0;
       bool        first = true;
@@ -112,7 +109,7 @@ namespace poundfe
                                std::to_string(static_cast<std::uint64_t>(fields[1])) +
                                ", the input asks for seed " + std::to_string(seed) +
                                "; remove it or choose another output directory");
-          Row row;
+          RealizationRow row;
           row.realization = static_cast<std::uint64_t>(fields[0]);
           row.completed   = fields[2] != 0;
           row.responses.assign(fields.begin() + 3, fields.end());
@@ -127,6 +124,50 @@ namespace poundfe
     }
 
   } // namespace
+
+  std::map<std::uint64_t, RealizationRow>
+  open_realization_table(const std::string &file, const std::vector<std::string> &names,
+                         const std::uint64_t seed, const MPI_Comm comm)
+  {
+    const std::string                       header = header_of(names);
+    std::map<std::uint64_t, RealizationRow> rows;
+    std::string error, error_parameter, error_file = file;
+    int         error_line = 0;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+        {
+          // its record first: an earlier run's rows must be of this model
+          const bool earlier_run = std::filesystem::exists(file);
+          resume_file(file);
+          if (earlier_run)
+            {
+              bool damaged = false;
+              rows = read_rows(file, header, seed, names.size(), damaged);
+              if (damaged) // keep only the complete rows, atomically
+                {
+                  std::string text = header + "\n";
+                  for (const auto &[r, row] : rows)
+                    text += realization_line(row, seed);
+                  write_file_atomically(file, text);
+                }
+            }
+          else
+            write_file_atomically(file, header + "\n");
+        }
+      catch (const InputError &e)
+        {
+          error           = e.problem();
+          error_parameter = e.parameter();
+          error_file      = e.file(); // the table or its record
+          error_line      = e.line();
+        }
+    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw InputError(dealii::Utilities::MPI::broadcast(comm, error_file, 0),
+                       dealii::Utilities::MPI::broadcast(comm, error_line, 0),
+                       dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
+    return rows;
+  }
 
   std::vector<double>
   MonteCarloTable::completed_values(const unsigned int c) const
@@ -208,7 +249,7 @@ namespace poundfe
       dealii::ConditionalOStream pcout;
       const std::string          header;
 
-      std::map<std::uint64_t, Row> rows; // rank 0
+      std::map<std::uint64_t, RealizationRow> rows; // rank 0
       std::vector<unsigned long>   todo;
       std::unique_ptr<AppendFile>  out; // rank 0
       unsigned long                n_done        = 0;
@@ -223,7 +264,7 @@ namespace poundfe
       bool                     released   = false; // a worker: has its stop message
       std::size_t              next       = 0;     // this rank's next index into todo
 
-      void store(Row row);
+      void store(RealizationRow row);
       void send_stop(unsigned int worker);
       void stop_all();
       void receive(const MPI_Status &status);
@@ -234,46 +275,11 @@ namespace poundfe
     void
     RealizationScheduler::resume()
     {
-      std::string error, error_parameter, error_file = file;
-      int         error_line = 0;
+      rows = open_realization_table(file, job.names, job.seed, comm);
       if (rank == 0)
-        {
-          try
-            {
-              // its record first: an earlier run's rows must be of this model
-              const bool earlier_run = std::filesystem::exists(file);
-              resume_file(file);
-              if (earlier_run)
-                {
-                  bool damaged = false;
-                  rows = read_rows(file, header, job.seed, job.names.size(), damaged);
-                  if (damaged) // keep only the complete rows, atomically
-                    {
-                      std::string text = header + "\n";
-                      for (const auto &[r, row] : rows)
-                        text += format_row(row, job.seed);
-                      write_file_atomically(file, text);
-                    }
-                }
-              else
-                write_file_atomically(file, header + "\n");
-            }
-          catch (const InputError &e)
-            {
-              error           = e.problem();
-              error_parameter = e.parameter();
-              error_file      = e.file(); // the table or its record
-              error_line      = e.line();
-            }
-          for (unsigned long r = 0; r < n; ++r)
-            if (!rows.count(r))
-              todo.push_back(r);
-        }
-      error = dealii::Utilities::MPI::broadcast(comm, error, 0);
-      if (!error.empty())
-        throw InputError(dealii::Utilities::MPI::broadcast(comm, error_file, 0),
-                         dealii::Utilities::MPI::broadcast(comm, error_line, 0),
-                         dealii::Utilities::MPI::broadcast(comm, error_parameter, 0), error);
+        for (unsigned long r = 0; r < n; ++r)
+          if (!rows.count(r))
+            todo.push_back(r);
       todo = dealii::Utilities::MPI::broadcast(comm, todo, 0);
       if (rows.size() > 0 && !todo.empty())
         pcout << label << "resuming: " << (n - todo.size()) << " of " << n
@@ -287,9 +293,9 @@ namespace poundfe
     }
 
     void
-    RealizationScheduler::store(Row row)
+    RealizationScheduler::store(RealizationRow row)
     {
-      out->append(format_row(row, job.seed));
+      out->append(realization_line(row, job.seed));
       rows.emplace(row.realization, std::move(row));
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
@@ -330,7 +336,7 @@ namespace poundfe
           send_stop(status.MPI_SOURCE);
           return;
         }
-      Row row;
+      RealizationRow row;
       row.realization = static_cast<std::uint64_t>(message[0]);
       row.completed   = message[1] != 0;
       row.responses.assign(message.begin() + 2, message.end());
@@ -363,7 +369,7 @@ namespace poundfe
         {
           if (stopping())
             break;
-          Row row;
+          RealizationRow row;
           row.realization = todo[next];
           row.completed   = job.run(row.realization, row.responses);
           ++n_run;

@@ -72,6 +72,31 @@ BOOST_AUTO_TEST_CASE(binomial_fit_is_the_likelihood_maximum)
       }
 }
 
+// Baker's (2015) worked example of a multiple-stripe analysis, as his
+// fragility-fitting script gives it (illustrate_msa_fits.m, "Created by Jack
+// Baker 2/4/2013", in the copy of his example_msa_code kept in the
+// repository vacalderon/NLTHA_ConditionDependentPBEE,
+// DataPlotter/FragilityFunction/, commit dd46700): eight IM levels, 40
+// ground motions each, the collapses counted at each. The script prints no
+// fit and the paper's own numbers were not at hand; the reference is the
+// maximum of eq. 11 found independently by a grid refined around its best
+// point (pure Python, 40 refinements: theta = 1.076116, beta = 0.429237, ln L
+// = -107.899826), which the Nelder-Mead fit must reach within 1e-4.
+BOOST_AUTO_TEST_CASE(binomial_fit_of_bakers_worked_example)
+{
+  const std::vector<double>       im{0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0};
+  const std::vector<unsigned int> collapses{0, 0, 0, 4, 6, 13, 12, 16};
+  std::vector<StripeCount>        stripes;
+  for (std::size_t j = 0; j < im.size(); ++j)
+    stripes.push_back({im[j], 40, collapses[j]});
+  const LognormalFragility fit = fit_stripe_fragility(stripes);
+  BOOST_REQUIRE(fit.fitted);
+  BOOST_TEST(fit.theta == 1.076116, boost::test_tools::tolerance(1e-4));
+  BOOST_TEST(fit.beta == 0.429237, boost::test_tools::tolerance(1e-4));
+  BOOST_TEST(binomial_log_likelihood(stripes, fit.theta, fit.beta) == -107.899826,
+             boost::test_tools::tolerance(1e-7));
+}
+
 BOOST_AUTO_TEST_CASE(binomial_fit_without_exceedance_is_no_fit)
 {
   BOOST_TEST(!fit_stripe_fragility({{0.5, 10, 0}, {1.0, 10, 0}}).fitted);
@@ -142,4 +167,55 @@ BOOST_AUTO_TEST_CASE(limit_states_count_collapse_and_thresholds)
   BOOST_TEST(!none.exceeded(point));
   point.collapsed = true;
   BOOST_TEST(none.exceeded(point));
+}
+
+// Nested limit states (msa.h, NestedRate): "force > 2e4" is exceeded only by
+// runs that also impact (3 stripes of 10 runs; 1, 5, 9 impacts and 1, 2, 5
+// of them above the force). Fitted one by one, the nested state gets the
+// wider curve (beta ~1.04 against ~0.54) and, on a power-law hazard, the
+// higher annual rate; the nesting is found from the runs, the inversion is
+// reported once, and the nested state's rate is bounded by the other's.
+BOOST_AUTO_TEST_CASE(nested_limit_states_keep_their_rates_in_order)
+{
+  const std::vector<double>       x{0.2, 0.4, 0.8};
+  const std::vector<unsigned int> impacts{1, 5, 9}, forces{1, 2, 5};
+  std::vector<IdaPoint>           points;
+  for (std::size_t j = 0; j < x.size(); ++j)
+    for (unsigned int i = 0; i < 10; ++i)
+      {
+        IdaPoint p;
+        p.intensity = x[j];
+        p.demands   = {i < impacts[j] ? 1.0 : 0.0, i < forces[j] ? 3e4 : (i < impacts[j] ? 1e4 : 0.0)};
+        points.push_back(p);
+      }
+  const std::vector<LimitState> states{{"collapse", -1, 0}, {"impact", 0, 0}, {"force", 1, 2e4}};
+  std::vector<const IdaPoint *> pointers;
+  for (const IdaPoint &p : points)
+    pointers.push_back(&p);
+  const auto within = nested_limit_states(states, pointers);
+  BOOST_TEST(within[0].empty()); // nothing collapsed: nothing to order
+  BOOST_TEST(within[1].empty());
+  BOOST_TEST(within[2] == std::vector<unsigned int>{1}, boost::test_tools::per_element());
+
+  HazardCurve curve;
+  for (double a = 0.01; a < 50; a *= 1.2)
+    curve.intensity.push_back(a), curve.rate.push_back(1e-4 * std::pow(a, -3));
+  std::vector<double> rates{std::nan("")};
+  for (const auto *counts : {&impacts, &forces})
+    {
+      std::vector<StripeCount> stripes;
+      for (std::size_t j = 0; j < x.size(); ++j)
+        stripes.push_back({x[j], 10, (*counts)[j]});
+      rates.push_back(exceedance_rate(curve, fit_stripe_fragility(stripes)));
+    }
+  BOOST_REQUIRE(rates[2] > rates[1]); // fitted one by one, the rates invert
+  const NestedRate nested = order_nested_rates(states, within, rates);
+  BOOST_TEST(nested.warnings.size() == 1u);
+  BOOST_TEST(nested.warnings[0].find("'force' is nested in 'impact'") != std::string::npos);
+  BOOST_TEST(nested.bound[1] == rates[1]);
+  BOOST_TEST(nested.bound[2] == rates[1]);
+  // in order already: no warning, the rates are their own bounds
+  const NestedRate ordered = order_nested_rates(states, within, {std::nan(""), 2.0, 1.0});
+  BOOST_TEST(ordered.warnings.empty());
+  BOOST_TEST(ordered.bound[2] == 1.0);
 }

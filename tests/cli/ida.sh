@@ -6,7 +6,9 @@
 #    PSA of the same AT2 file at T (9 digits: both print 17, the numbers are
 #    the same computation on the same samples; 1e-9 relative);
 #  - one rank and two (mpirun -np 2) give the same ida.csv; a second run
-#    into the same directory resumes from the journal and runs nothing;
+#    into the same directory resumes from the journal and runs nothing; a
+#    journal cut to half its runs and a partial line (a killed run) is
+#    resumed on two ranks: only the missing runs run, the same ida.csv;
 #  - the suite reader's bad input through the binary: exit 1, one line
 #    naming the suite's file, line and field, nothing written.
 poundfe=$(realpath "$1") mpirun=$2 example=$(realpath "$3")
@@ -57,6 +59,19 @@ cmp one/ida.csv two/ida.csv || die "one rank and two give different ida.csv"
 "$poundfe" ida ida.prm --output one "${short[@]}" "${suite[@]}" > again.log || die "resumed ida"
 grep -q '"runs_now": 0' one/summary.json || die "a finished ida ran again: $(grep runs one/summary.json)"
 cmp one/ida.csv two/ida.csv || die "the resumed run changed ida.csv"
+
+# a killed run's journal (two ranks): a prefix of its runs and a partial
+# line; the same command on two ranks runs only the missing runs
+total=$(($(wc -l < two/journal/realizations.csv) - 1))
+keep=$((total / 2))
+head -n $((keep + 1)) two/journal/realizations.csv > cut.csv
+printf '%s' "$(sed -n "$((keep + 2))p" two/journal/realizations.csv | cut -c1-12)" >> cut.csv
+mv cut.csv two/journal/realizations.csv
+"$mpirun" -np 2 "$poundfe" ida ida.prm --output two "${short[@]}" "${suite[@]}" > /dev/null ||
+  die "ida resumed on two ranks"
+grep -Eq "\"runs_now\": $((total - keep))([^0-9]|$)" two/summary.json ||
+  die "resumed from $keep of $total runs: $(grep runs_now two/summary.json), expected $((total - keep))"
+cmp one/ida.csv two/ida.csv || die "the run resumed on two ranks changed ida.csv"
 
 # bad suites: file, line, field
 at2=$work/gen/records/realization_0.AT2

@@ -187,13 +187,23 @@ namespace poundfe
   run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
                 MPI_Comm comm, Progress *progress, unsigned long offset, IdaResult &result);
 
+  /// The journal row of a run: record, intensity, collapsed (0/1), then the
+  /// demands of IdaRunner::demand_names().
+  std::vector<double> ida_row(IdaRunner &runner, const IdaTask &task);
+  /// The names of a journal row's columns.
+  std::vector<std::string> ida_row_names(const IdaRunner &runner);
+
   /// Hunt and fill every record of the runner's suite over the ranks of
-  /// `comm` (each must call it): in rounds, each running the next intensity
-  /// of every record not done, spread over the ranks by the Monte Carlo
-  /// scheduler (reliability/montecarlo.h), round k journaled in
-  /// journal/round_<k>.csv, so that a run started again resumes (the rounds
-  /// done are read back, not run). SIGINT/SIGTERM: stops after the round's
-  /// runs under way. The result is on every rank.
+  /// `comm` (each must call it), dealt run by run (ida_scheduler.cc): rank 0
+  /// holds every record's search and deals the next intensity of a record
+  /// with no run under way (the one with the fewest runs first) to whichever
+  /// rank is free, keeping a few runs queued at each worker so that none
+  /// waits for rank 0, which runs records itself between its messages. A
+  /// record's next intensity depends on its own runs alone, so the result is
+  /// the same on any number of ranks. Each run is appended by rank 0 to
+  /// journal/realizations.csv as it comes back, so that a run started again
+  /// resumes (the runs journaled are read back, not run). SIGINT/SIGTERM:
+  /// stops after the runs under way. The result is on every rank.
   IdaResult run_ida(IdaRunner &runner, const std::string &journal, MPI_Comm comm,
                     Progress *progress = nullptr);
 } // namespace poundfe

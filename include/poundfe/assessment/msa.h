@@ -103,6 +103,37 @@ namespace poundfe
     bool exceeded(const IdaPoint &point) const;
   };
 
+  /// Nested limit states. A limit state B is nested in A over a set of runs
+  /// when every run that exceeds B exceeds A (a collapse exceeds every state;
+  /// gap1_peak_impact_force_N > 2e4 is nested in gap1_impacts > 0): B is a
+  /// subset event, and its true annual rate is at most A's. Each state's
+  /// fragility is fitted on its own counts (the maximum of its own
+  /// likelihood), and two lognormal curves of different beta cross, so the
+  /// fitted rates can come out in the wrong order. They are not refitted
+  /// under a constraint: P(B | x) <= P(A | x) at every x holds for two
+  /// lognormal curves only with a common beta, which would bend both fits
+  /// away from their data; instead each inversion is reported (a warning)
+  /// with the bound the nesting gives, lambda_B <= min over A of lambda_A.
+  struct NestedRate
+  {
+    std::vector<std::vector<unsigned int>> within; // [B]: the states A that B is nested in
+    std::vector<double>                    bound;  // [B]: min(lambda_B, lambda_A over A)
+    std::vector<std::string>               warnings; // one per inverted pair
+  };
+
+  /// For each state (of `points`, the runs done: a point without demands
+  /// was not run) the states it is nested in; states exceeded by exactly
+  /// the same runs are nested in each other; a state no run exceeds is
+  /// nested in none (nothing to order).
+  std::vector<std::vector<unsigned int>>
+  nested_limit_states(const std::vector<LimitState> &states,
+                      const std::vector<const IdaPoint *> &points);
+
+  /// The bounds and warnings of `rates` (NaN: no rate) given the nesting.
+  NestedRate order_nested_rates(const std::vector<LimitState> &states,
+                                const std::vector<std::vector<unsigned int>> &within,
+                                const std::vector<double> &rates);
+
   /// Every stripe's run of every record, and the cloud's.
   struct MsaResult
   {

@@ -1,7 +1,11 @@
 // A results file that grows one line at a time and survives being killed:
 // each line goes out in a single write() on an O_APPEND descriptor and is
 // synced, so after a crash the file holds complete lines and at most one
-// partial last line (which its reader must drop).
+// partial last line (which its reader must drop). A line written is in the
+// kernel's page cache once write() returns, so it survives the process being
+// killed even unsynced; the sync guards against the machine going down. A
+// writer of many short lines (ida's journal, a line every few ms, where a
+// sync can take longer than the run the line records) syncs them in groups.
 #ifndef poundfe_output_append_file_h
 #define poundfe_output_append_file_h
 
@@ -17,8 +21,11 @@ namespace poundfe
     AppendFile(const AppendFile &) = delete;
     AppendFile &operator=(const AppendFile &) = delete;
 
-    /// Appends `line` (which must end with '\n') and syncs it to disk.
-    void append(const std::string &line);
+    /// Appends `line` (which must end with '\n') and, with `sync`, syncs
+    /// the file to disk.
+    void append(const std::string &line, bool sync = true);
+    /// Syncs what was appended to disk.
+    void sync();
 
   private:
     std::string path;

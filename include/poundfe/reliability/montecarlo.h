@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,28 @@ namespace poundfe
     /// does not show (a caller that runs many short tables says its own).
     bool report_lines = true;
   };
+
+  /// A row of realizations.csv: 'realization,seed,completed', then the responses.
+  struct RealizationRow
+  {
+    std::uint64_t       realization = 0;
+    bool                completed   = false;
+    std::vector<double> responses;
+  };
+
+  /// The line of `row` in realizations.csv (with its newline).
+  std::string realization_line(const RealizationRow &row, std::uint64_t seed);
+
+  /// Opens the realizations.csv `file` of the responses `names` and `seed`
+  /// for appending (each rank of `comm` calls it; rank 0 reads and writes):
+  /// a new file gets its header; an existing one, after its record is
+  /// checked (output_directory.h: resume_file), gives its complete rows by
+  /// realization (rank 0; empty elsewhere), and is rewritten without a
+  /// damaged line (the partial last line of a killed run). InputError on
+  /// every rank when the file or its record belongs to another run.
+  std::map<std::uint64_t, RealizationRow>
+  open_realization_table(const std::string &file, const std::vector<std::string> &names,
+                         std::uint64_t seed, MPI_Comm comm);
 
   /// Runs the realizations 0..n-1 of `job` that `file` does not hold yet over
   /// the ranks of `comm` (each must call it), appending each to `file` as it

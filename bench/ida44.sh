@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# A 44-record IDA of a 5-storey and a 3-storey Bouc-Wen shear building that
+# pound (input/ida-pounding-pair.prm with the storeys set), 20 runs per
+# record, on 1 and 2 ranks (Release build, from the repository root):
+#   bash bench/ida44.sh [RECORDS] [RUNS_PER_RECORD] [REPEATS]
+# Generates RECORDS Kanai-Tajimi records as an AT2 suite, then runs
+# `mpirun -np 1` and `mpirun -np 2` alternately REPEATS times each, into fresh
+# directories, and prints the best of each: the runs per second of the
+# runs (summary.json: runs_now / wall_time_s) and the whole command's wall
+# time (set-up and output included), the speed-up, and the load average
+# before and after. ida.csv must be the same on 1 and 2 ranks.
+#   Each rank runs under setsid (SETSID=0: not): with the kernel's autogroup
+# scheduling (/proc/sys/kernel/sched_autogroup_enabled = 1) the CPU is
+# shared between sessions, not processes, so on a machine that other
+# sessions load, the ranks of one session share one session's time and two
+# ranks cannot run faster than one; a session per rank gives each rank the
+# share a process of its own would have, as on a machine of its own.
+set -eu
+n=${1:-44}
+runs=${2:-20}
+repeats=${3:-3}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 POUNDFE_PROGRESS=0
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+pair=(--set "Building 1/Number of storeys=5" --set "Building 2/Number of storeys=3"
+      --set Output/Plots=false)
+build/poundfe ground-motion input/ida-pounding-pair.prm --realizations "$n" --write-at2 \
+  --output "$work/suite" "${pair[@]}" > /dev/null
+options=("${pair[@]}" --set "IDA/Suite=$work/suite/records/suite.csv"
+         --set "IDA/Runs per record=$runs")
+echo "load average before: $(uptime | sed 's/.*load average: //')"
+best() { sort -g | tail -1; }
+isolate=setsid
+[ "${SETSID:-1}" = 0 ] && isolate=
+echo "autogroup scheduling: $(cat /proc/sys/kernel/sched_autogroup_enabled 2> /dev/null || echo unknown); ranks under: ${isolate:-none}"
+for i in $(seq "$repeats"); do
+  for np in 1 2; do
+    start=$(date +%s.%N)
+    mpirun -np "$np" $isolate build/poundfe ida input/ida-pounding-pair.prm --output "$work/np$np-$i" \
+      "${options[@]}" > /dev/null
+    end=$(date +%s.%N)
+    python3 -c "import json, sys; s = json.load(open(sys.argv[1])); print(s['runs_now'], s['runs_now'] / s['wall_time_s'], float(sys.argv[3]) - float(sys.argv[2]))" \
+      "$work/np$np-$i/summary.json" "$start" "$end" >> "$work/rates$np"
+  done
+done
+cmp -s "$work/np1-1/ida.csv" "$work/np2-1/ida.csv" || echo "warning: ida.csv differs between 1 and 2 ranks"
+echo "load average after: $(uptime | sed 's/.*load average: //')"
+runs_done=$(head -1 "$work/rates1" | cut -d' ' -f1)
+r1=$(cut -d' ' -f2 "$work/rates1" | best)
+r2=$(cut -d' ' -f2 "$work/rates2" | best)
+w1=$(cut -d' ' -f3 "$work/rates1" | sort -g | head -1)
+w2=$(cut -d' ' -f3 "$work/rates2" | sort -g | head -1)
+echo "$n records x $runs runs per record: $runs_done runs"
+echo "all: $(tr '\n' ';' < "$work/rates1") | $(tr '\n' ';' < "$work/rates2")"
+printf '1 rank:  %.1f runs/s, %.1f s in all\n' "$r1" "$w1"
+printf '2 ranks: %.1f runs/s, %.1f s in all\n' "$r2" "$w2"
+awk -v a="$r1" -v b="$r2" 'BEGIN { printf "speed-up on 2 ranks: %.2f\n", b / a }'
