@@ -236,7 +236,7 @@ namespace poundfe
     {
       std::string error, error_parameter, error_file = file;
       int         error_line = 0;
-      if (rank == 0)
+      if (rank == 0 && !file.empty()) // none: results in memory, nothing to resume
         {
           try
             {
@@ -265,6 +265,9 @@ namespace poundfe
               error_file      = e.file(); // the table or its record
               error_line      = e.line();
             }
+        }
+      if (rank == 0)
+        {
           for (unsigned long r = 0; r < n; ++r)
             if (!rows.count(r))
               todo.push_back(r);
@@ -278,7 +281,7 @@ namespace poundfe
       if (rows.size() > 0 && !todo.empty())
         pcout << label << "resuming: " << (n - todo.size()) << " of " << n
               << " realizations are in " << file << "\n";
-      if (rank == 0)
+      if (rank == 0 && !file.empty())
         out = std::make_unique<AppendFile>(file);
       n_done        = n - todo.size();
       show_progress = rank == 0 && progress != nullptr && progress->active();
@@ -289,7 +292,8 @@ namespace poundfe
     void
     RealizationScheduler::store(Row row)
     {
-      out->append(format_row(row, job.seed));
+      if (out)
+        out->append(format_row(row, job.seed));
       rows.emplace(row.realization, std::move(row));
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
@@ -424,6 +428,7 @@ namespace poundfe
       if (rank != 0)
         return table;
       table.columns = job.names;
+      table.seed    = job.seed;
       for (auto &[r, row] : rows)
         if (r < n)
           {
@@ -434,6 +439,16 @@ namespace poundfe
       return table;
     }
   } // namespace
+
+  std::string
+  realizations_text(const MonteCarloTable &table)
+  {
+    std::string text = header_of(table.columns) + "\n";
+    for (std::size_t i = 0; i < table.realizations.size(); ++i)
+      text += format_row({table.realizations[i], table.completed[i], table.responses[i]},
+                         table.seed);
+    return text;
+  }
 
   MonteCarloTable
   run_realizations(const RealizationJob &job, const unsigned long n, const std::string &file,
