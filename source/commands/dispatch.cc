@@ -69,7 +69,8 @@ namespace poundfe
         throw CommandLineError("--write-at2 writes the realizations of --realizations N: give N");
       if (request.memory && !command.has(CommandRule::in_memory))
         throw CommandLineError("results in memory belong to " +
-                               command_names(CommandRule::in_memory) + ": give an output directory");
+                               command_names(CommandRule::in_memory) +
+                               ": give an output directory");
       if (!reads_file && !request.overrides.empty())
         throw CommandLineError("--set sets an entry of a parameter file, and '" + command.name +
                                "' reads none");
