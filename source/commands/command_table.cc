@@ -47,6 +47,7 @@ namespace poundfe
     constexpr CommandRules fields    = CommandRule::field_output; // Output/Field format = xdmf
     constexpr CommandRules resumable = CommandRule::resumable;    // resumes its table
     constexpr CommandRules script    = CommandRule::script_arguments; // SCRIPT [ARGS...]
+    constexpr CommandRules memory    = CommandRule::in_memory; // results in memory (Python)
     constexpr CommandRules none;
     const std::string      summary = "summary.json"; // what the guard writes
     // name, arguments, description, rules, summary, function
@@ -69,9 +70,9 @@ namespace poundfe
        "response spectrum (Sd, PSV, PSA), PGA/PGV/PGD, Arias intensity,\n"
        "D5-95 of the ground motion; with N, the ensemble mean spectrum\n"
        "against the Spectrum section's target and the S0 that matches it",
-       file | realizations, summary, commands::spectrum},
+       file | realizations | memory, summary, commands::spectrum},
       {"montecarlo", "FILE", "Monte Carlo over the random loading (MPI: mpirun -np P ...)",
-       file | mpi | own_interruption | resumable, summary, commands::montecarlo},
+       file | mpi | own_interruption | resumable | memory, summary, commands::montecarlo},
       {"subset", "FILE", "Subset Simulation of a small exceedance probability (MPI)",
        file | mpi | own_interruption | resumable, summary, commands::subset},
       {"fragility", "FILE", "Monte Carlo over PGA levels, lognormal fragility curves (MPI)",
@@ -97,7 +98,7 @@ namespace poundfe
       {"sweep", "FILE",
        "the run's peaks against the values of the Sweep section's\n"
        "parameter (sweep.csv, sweep.png, summary.json)",
-       file | own_interruption, summary, commands::sweep},
+       file | own_interruption | memory, summary, commands::sweep},
       {"bifurcation", "FILE",
        "Poincare samples, their period and the largest Lyapunov\n"
        "exponent against the Bifurcation section's parameter",
@@ -114,7 +115,7 @@ namespace poundfe
        "random loading, P(pounding) against the gap (MPI)\n"
        "and, with a site hazard, P(pounding in T years) and the gap\n"
        "for a target (Separation/Site hazard)",
-       file | mpi | own_interruption | resumable, summary, commands::separation},
+       file | mpi | own_interruption | resumable | memory, summary, commands::separation},
       {"mitigation", "FILE",
        "the bare pair against viscous dampers of each size and bumpers\n"
        "(Mitigation section): drifts, floor accelerations, impacts,\n"

@@ -67,6 +67,10 @@ namespace poundfe
         throw CommandLineError("--write-at2 belongs to " + command_names(CommandRule::writes_at2));
       if (request.write_at2 && request.n_realizations == 0)
         throw CommandLineError("--write-at2 writes the realizations of --realizations N: give N");
+      if (request.memory && !command.has(CommandRule::in_memory))
+        throw CommandLineError("results in memory belong to " +
+                               command_names(CommandRule::in_memory) +
+                               ": give an output directory");
       if (!reads_file && !request.overrides.empty())
         throw CommandLineError("--set sets an entry of a parameter file, and '" + command.name +
                                "' reads none");
@@ -159,10 +163,11 @@ namespace poundfe
       const bool        writes =
         !dispatch_has_mpi() || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const MPI_Comm communicator = dispatch_has_mpi() ? MPI_COMM_WORLD : MPI_COMM_SELF;
-      return guard_command({command, input, directory, writes}, [&]() -> int {
+      // results in memory: the guard writes no file either (no directory named, no summary)
+      return guard_command({command, input, directory, writes && !request.memory}, [&]() -> int {
         return command.run({request.arguments, &input, directory, request.n_realizations,
                             communicator, err, writes ? std::cout : silent_stream(),
-                            request.write_at2});
+                            request.write_at2, request.memory});
       });
     }
   } // namespace

@@ -13,6 +13,7 @@
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/montecarlo.h>
@@ -181,7 +182,7 @@ namespace poundfe::commands
     /// pdf_*.csv and cdf_*.csv of each distribution, their entries in
     /// summary.json and their plots.
     std::vector<Plot>
-    write_distributions(JsonWriter &json, const std::string &directory,
+    write_distributions(JsonWriter &json, const CommandRun &run,
                         const RealizationRunner &runner, const MonteCarloTable &table,
                         const unsigned int histogram_bins)
     {
@@ -210,8 +211,8 @@ namespace poundfe::commands
               append_number(cdf, (i + 1.0) / values.size());
               cdf += '\n';
             }
-          write_file_atomically(directory + "/pdf_" + d.stem + ".csv", pdf);
-          write_file_atomically(directory + "/cdf_" + d.stem + ".csv", cdf);
+          write_result_text(run.memory, run.directory, "pdf_" + d.stem + ".csv", pdf);
+          write_result_text(run.memory, run.directory, "cdf_" + d.stem + ".csv", cdf);
           json.begin_object()
             .value("response", d.stem)
             .value("pdf", "pdf_" + d.stem + ".csv")
@@ -234,7 +235,7 @@ namespace poundfe::commands
     void
     report(const dealii::ConditionalOStream &out, const InputParameters &input, const RealizationRunner &runner,
            const MonteCarloTable &table, const std::vector<double> &limits, const Exceedances &e,
-           const std::string &directory, const unsigned int n_ranks)
+           const std::string &place, const unsigned int n_ranks)
     {
       const unsigned long n      = input.monte_carlo.realizations;
       const unsigned long n_completed =
@@ -254,7 +255,7 @@ namespace poundfe::commands
       for (std::size_t i = 0; i < e.drift.size(); ++i)
         out << "P(max drift ratio > " << limits[i] << ") = " << rounded(e.drift[i].probability)
             << " (CoV " << rounded(e.drift[i].coefficient_of_variation) << ")\n";
-      out << "results in " << directory << "/ (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
+      out << "results in " << place << " (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
           << (input.output.plots && !table.interrupted ? ", *.png" : "") << ")\n";
     }
   } // namespace
@@ -280,15 +281,15 @@ namespace poundfe::commands
         std::make_unique<const ResponseLimitStates>(input.random_parameters,
                                                     runner.response_names(), input) :
         nullptr;
-    if (rank == 0) // an earlier run's realizations stay: it resumes from them
+    if (rank == 0 && !run.memory) // an earlier run's realizations stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});
     timer.leave_subsection();
 
     timer.enter_subsection("realizations");
     const unsigned long   n = input.monte_carlo.realizations;
     Progress              progress(std::cerr, "realizations", n);
-    const MonteCarloTable table =
-      run_monte_carlo(runner, n, 1.0, directory + "/realizations.csv", comm, "", &progress);
+    const MonteCarloTable table = run_monte_carlo(
+      runner, n, 1.0, run.memory ? "" : directory + "/realizations.csv", comm, "", &progress);
     progress.finish();
     timer.leave_subsection();
     const int status = table.interrupted ? interrupted_exit_status() : 0;
@@ -303,11 +304,13 @@ namespace poundfe::commands
     LimitStateProbabilities probabilities;
     write_limit_states(json, input.random_parameters, limit_states.get(), table, probabilities);
     const std::vector<Plot> plots =
-      write_distributions(json, directory, runner, table, input.monte_carlo.histogram_bins);
+      write_distributions(json, run, runner, table, input.monte_carlo.histogram_bins);
     json.end_object();
-    if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
+    if (input.output.plots && !table.interrupted && !run.memory) // the resumed run draws them
       draw_plots(directory, plots);
-    write_file_atomically(directory + "/summary.json", json.str());
+    if (run.memory) // the journal's rows, which a run into files appended as they came
+      write_result_text(run.memory, directory, "realizations.csv", realizations_text(table));
+    write_result_text(run.memory, directory, "summary.json", json.str());
     timer.leave_subsection();
 
     for (unsigned int k = 0; k < probabilities.limit_states.size(); ++k)
@@ -318,7 +321,7 @@ namespace poundfe::commands
       pcout << "P(" << system_names().name(input.random_parameters.system)
             << " system fails) = " << rounded(probabilities.system.probability) << " (CoV "
             << rounded(probabilities.system.coefficient_of_variation) << ")\n";
-    report(pcout, input, runner, table, limits, e, directory, n_ranks);
+    report(pcout, input, runner, table, limits, e, run.results_place(), n_ranks);
     print_timing(timer);
     return status;
   }

@@ -19,6 +19,7 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/random_parameters.h>
@@ -53,31 +54,32 @@ namespace poundfe::commands
     }
 
     void
-    write_spectrum_modes(const std::string &directory, const Model &model, const SpectrumPeaks &peaks)
+    write_spectrum_modes(const CommandRun &run, const Model &model, const SpectrumPeaks &peaks)
     {
-      write_file_atomically(directory + "/spectrum_modes.csv", spectrum_modes_table(model, peaks));
+      write_result_text(run.memory, run.directory, "spectrum_modes.csv",
+                        spectrum_modes_table(model, peaks));
     }
 
     /// separation.csv and its plot (one panel per pair).
     void
-    write_separation_table(const std::string &directory, const Model &model,
+    write_separation_table(const CommandRun &run, const Model &model,
                            const std::vector<AdjacentPair> &pairs,
                            const std::vector<PairResult> &results, std::vector<Plot> &plots,
                            const SpectrumPeaks *spectrum)
     {
-      write_file_atomically(directory + "/separation.csv",
-                            separation_table(model, pairs, results, spectrum));
+      write_result_text(run.memory, run.directory, "separation.csv",
+                        separation_table(model, pairs, results, spectrum));
       plots.push_back(separation_plot(pairs, spectrum));
     }
 
     /// pounding_probability.csv and its plot (one panel per pair).
     void
-    write_probability_table(const std::string &directory, const InputParameters &input,
+    write_probability_table(const CommandRun &run, const InputParameters &input,
                             const std::vector<AdjacentPair> &pairs,
                             const std::vector<PairResult> &results, std::vector<Plot> &plots)
     {
-      write_file_atomically(directory + "/pounding_probability.csv",
-                            pounding_probability_table(input.separation, pairs, results));
+      write_result_text(run.memory, run.directory, "pounding_probability.csv",
+                        pounding_probability_table(input.separation, pairs, results));
       plots.push_back(pounding_probability_plot(input.separation, pairs, results));
     }
 
@@ -150,7 +152,7 @@ namespace poundfe::commands
 
     /// pounding_given_pga.csv and a panel per pair: the empirical P(D > g | a_k) and the model's.
     void
-    write_conditional(const std::string &directory, const InputParameters &input,
+    write_conditional(const CommandRun &run, const InputParameters &input,
                       const std::vector<AdjacentPair> &pairs, const PoundingHazard &result,
                       const std::vector<double> &gaps, Plot &plot)
     {
@@ -181,7 +183,7 @@ namespace poundfe::commands
               }
           csv += '\n';
         }
-      write_file_atomically(directory + "/pounding_given_pga.csv", csv);
+      write_result_text(run.memory, run.directory, "pounding_given_pga.csv", csv);
 
       const std::size_t n_levels = result.pga_levels.size();
       for (std::size_t i = 0; i < pairs.size(); ++i)
@@ -210,7 +212,7 @@ namespace poundfe::commands
     }
 
     void
-    write_pounding_hazard(const std::string &directory, const InputParameters &input,
+    write_pounding_hazard(const CommandRun &run, const InputParameters &input,
                           const std::vector<AdjacentPair> &pairs, const PoundingHazard &result,
                           std::vector<Plot> &plots)
     {
@@ -231,10 +233,10 @@ namespace poundfe::commands
             }
           csv += '\n';
         }
-      write_file_atomically(directory + "/pounding_hazard.csv", csv);
+      write_result_text(run.memory, run.directory, "pounding_hazard.csv", csv);
 
       Plot plot;
-      write_conditional(directory, input, pairs, result, gaps, plot);
+      write_conditional(run, input, pairs, result, gaps, plot);
       const std::string target = rounded(p.target_probability);
       for (std::size_t i = 0; i < pairs.size(); ++i)
         {
@@ -331,7 +333,7 @@ namespace poundfe::commands
         out << "  warning: " << warning << "\n";
     }
     void
-    write_summary(const std::string &directory, const InputParameters &input,
+    write_summary(const CommandRun &run, const InputParameters &input,
                   const Model &model, const std::vector<AdjacentPair> &pairs,
                   const std::vector<PairResult> &results, const std::string &status,
                   const std::string &method, const unsigned long n_realizations,
@@ -360,7 +362,7 @@ namespace poundfe::commands
       if (hazard)
         write_pounding_hazard_json(json, input, pairs, *hazard);
       json.end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(run.memory, run.directory, "summary.json", json.str());
     }
 
     /// The console report: per pair and level the rules against the time
@@ -556,17 +558,21 @@ namespace poundfe::commands
     void
     run_random(const InputParameters &input, const Analysis &analysis,
                const std::vector<AdjacentPair> &pairs, const RandomParameterParameters &structure,
-               const RandomSeparations &separations, const std::string &directory,
-               const MPI_Comm comm, std::optional<PoundingHazard> &hazard, Outcome &outcome)
+               const RandomSeparations &separations, const CommandRun &run,
+               std::optional<PoundingHazard> &hazard, Outcome &outcome)
     {
-      const unsigned int    rank  = dealii::Utilities::MPI::this_mpi_process(comm);
-      const MonteCarloTable table = run_realizations_without_contact(
+      const MPI_Comm        comm      = run.communicator;
+      const std::string     directory = run.memory ? "" : run.directory; // "": no journal
+      const unsigned int    rank      = dealii::Utilities::MPI::this_mpi_process(comm);
+      const MonteCarloTable table     = run_realizations_without_contact(
         analysis, time_history_parameters(input), pairs, input.monte_carlo.realizations, directory,
         comm, outcome.results,
         [&](RealizationRunner &runner) {
           attach_random_parameters(runner, structure, input, input.model, input.contact, input.modal.eigensolver);
         },
         separations);
+      if (run.memory && rank == 0) // the journal's rows a run into files appended
+        write_result_text(run.memory, run.directory, "realizations.csv", realizations_text(table));
       if (hazard && table.interrupted) // the levels not begun: the same command runs them
         hazard->interrupted = true;
       else if (hazard)
@@ -624,22 +630,22 @@ namespace poundfe::commands
     /// separation.csv, spectrum_modes.csv, pounding_probability.csv, the
     /// pounding hazard's tables, the plots and summary.json (rank 0).
     void
-    write_results(const std::string &directory, const InputParameters &input,
+    write_results(const CommandRun &run, const InputParameters &input,
                   const Analysis &analysis, const std::vector<AdjacentPair> &pairs,
                   const Route &route, const Outcome &outcome, const SpectrumPeaks *by_modes,
                   const std::optional<PoundingHazard> &hazard)
     {
       std::vector<Plot> plots;
-      write_separation_table(directory, analysis.model, pairs, outcome.results, plots, by_modes);
+      write_separation_table(run, analysis.model, pairs, outcome.results, plots, by_modes);
       if (by_modes)
-        write_spectrum_modes(directory, analysis.model, *by_modes);
+        write_spectrum_modes(run, analysis.model, *by_modes);
       if (route.random)
-        write_probability_table(directory, input, pairs, outcome.results, plots);
+        write_probability_table(run, input, pairs, outcome.results, plots);
       if (hazard && !hazard->interrupted && hazard->failure.empty())
-        write_pounding_hazard(directory, input, pairs, *hazard, plots);
-      if (input.output.plots && outcome.status == "completed")
-        draw_plots(directory, plots);
-      write_summary(directory, input, analysis.model, pairs, outcome.results, outcome.status,
+        write_pounding_hazard(run, input, pairs, *hazard, plots);
+      if (input.output.plots && outcome.status == "completed" && !run.memory)
+        draw_plots(run.directory, plots);
+      write_summary(run, input, analysis.model, pairs, outcome.results, outcome.status,
                     outcome.method, outcome.n_completed, by_modes, hazard);
     }
   } // namespace
@@ -677,7 +683,7 @@ namespace poundfe::commands
     if (route.by_spectrum && rank == 0)
       spectrum = spectrum_peaks(analysis, pairs, input.spectrum, input.separation,
                                 input.modal.eigensolver, input);
-    if (rank == 0) // the earlier run's files go, but the realizations it resumes
+    if (rank == 0 && !run.memory) // the earlier run's files go, but the realizations it resumes
       prepare_output_directory(directory, route.random ? std::vector<std::string>{"realizations.csv"} :
                                                          std::vector<std::string>{});
 
@@ -693,8 +699,7 @@ namespace poundfe::commands
       }
     else if (route.random)
       {
-        run_random(input, analysis, pairs, structure, separations, directory, comm, hazard,
-                   outcome);
+        run_random(input, analysis, pairs, structure, separations, run, hazard, outcome);
         if (rank != 0)
           return outcome.exit_status;
       }
@@ -708,7 +713,7 @@ namespace poundfe::commands
       apply_rules(input.separation, pairs[p], outcome.results[p]);
 
     // The output (rank 0).
-    write_results(directory, input, analysis, pairs, route, outcome,
+    write_results(run, input, analysis, pairs, route, outcome,
                   spectrum ? &*spectrum : nullptr, hazard);
     if (outcome.status == "interrupted")
       pcout << "separation interrupted: the results are over what was completed before the "
@@ -718,11 +723,11 @@ namespace poundfe::commands
     report(pcout, input, pairs, outcome.results, !route.by_spectrum);
     if (hazard)
       report_pounding_hazard(pcout, input, pairs, *hazard);
-    pcout << "results in " << directory << "/ (summary.json, separation.csv"
+    pcout << "results in " << run.results_place() << " (summary.json, separation.csv"
           << (route.random ? ", pounding_probability.csv, realizations.csv" : "")
           << (route.by_spectrum ? ", spectrum_modes.csv" : "")
           << (hazard && hazard->failure.empty() ? ", pounding_hazard.csv, pounding_given_pga.csv" : "")
-          << (hazard ? ", pga_*g/" : "")
+          << (hazard && !run.memory ? ", pga_*g/" : "")
           << (input.output.plots && outcome.status == "completed" ? ", *.png" : "") << ")\n";
     return outcome.exit_status;
   }

@@ -10,6 +10,7 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/plots.h>
 
 #include <cmath>
@@ -90,7 +91,7 @@ namespace poundfe
     /// spectrum.csv: per damping ratio Sd, Sv, PSV, PSA (m/s^2 and g), Sa
     /// and the target.
     void
-    write_spectrum_csv(const std::string &file, const ResponseSpectrum &spectrum,
+    write_spectrum_csv(const CommandRun &run, const ResponseSpectrum &spectrum,
                        const SpectrumParameters &s)
     {
       const bool               target = s.target != DesignSpectrum::none;
@@ -104,25 +105,27 @@ namespace poundfe
           if (target)
             header.push_back("target_psa_m_s2_" + z);
         }
-      CsvWriter csv(file, header);
+      const std::unique_ptr<TableWriter> csv =
+        result_table_writer(run.memory, run.directory, "spectrum", header);
+      std::vector<double> row;
       for (unsigned int i = 0; i < spectrum.n_periods(); ++i)
         {
-          csv.begin_row(spectrum.periods[i]);
+          row.clear();
           for (unsigned int d = 0; d < s.damping_ratios.size(); ++d)
             {
               const unsigned int k = d * spectrum.n_periods() + i;
-              csv.add(spectrum.sd(d, i));
-              csv.add(spectrum.relative_velocity[k]);
-              csv.add(spectrum.psv(d, i));
-              csv.add(spectrum.psa(d, i));
-              csv.add(spectrum.psa(d, i) / standard_gravity);
-              csv.add(spectrum.absolute_acceleration[k]);
+              row.push_back(spectrum.sd(d, i));
+              row.push_back(spectrum.relative_velocity[k]);
+              row.push_back(spectrum.psv(d, i));
+              row.push_back(spectrum.psa(d, i));
+              row.push_back(spectrum.psa(d, i) / standard_gravity);
+              row.push_back(spectrum.absolute_acceleration[k]);
               if (target)
-                csv.add(s.target_psa(s.damping_ratios[d], spectrum.periods[i]));
+                row.push_back(s.target_psa(s.damping_ratios[d], spectrum.periods[i]));
             }
-          csv.end_row();
+          csv->add_row(spectrum.periods[i], row);
         }
-      csv.commit();
+      csv->commit();
     }
 
     /// spectrum.png from spectrum.csv: PSA of every damping ratio, the target.
@@ -146,8 +149,11 @@ namespace poundfe
 
     /// One motion: spectrum.csv, spectrum.png, summary.json.
     int
-    single_spectrum(const InputParameters &input, const std::string &directory, std::ostream &out)
+    single_spectrum(const CommandRun &run)
     {
+      const InputParameters &input     = *run.input;
+      const std::string     &directory = run.directory;
+      std::ostream          &out       = run.out;
       const GroundMotion motion =
         make_ground_motion(input.ground_motion, input, input.time_integration.newmark.time_step);
       if (motion.empty())
@@ -160,10 +166,11 @@ namespace poundfe
         if (spectrum.psa(0, i) > spectrum.psa(0, peak))
           peak = i;
 
-      create_directories(directory);
-      write_spectrum_csv(directory + "/spectrum.csv", spectrum, s);
+      if (!run.memory)
+        create_directories(directory);
+      write_spectrum_csv(run, spectrum, s);
       std::vector<std::string> files{"spectrum.csv"};
-      if (input.output.plots)
+      if (input.output.plots && !run.memory)
         for (const std::string &png : draw_spectrum(directory, motion.description(), s))
           files.push_back(png);
       files.push_back("summary.json");
@@ -188,7 +195,7 @@ namespace poundfe
         .end_object();
       write_target(json, s);
       json.value("files", files).end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(run.memory, directory, "summary.json", json.str());
 
       out << motion.description() << ": PGA " << intensity.pga << " m/s^2 ("
           << intensity.pga / standard_gravity << " g), PGV " << intensity.pgv
@@ -198,7 +205,7 @@ namespace poundfe
           << intensity.t95 << " s)\n"
           << "peak PSA (" << percent(s.damping_ratios.front()) << ") "
           << spectrum.psa(0, peak) << " m/s^2 at T = " << spectrum.periods[peak] << " s\n"
-          << "results in " << directory << "/ (spectrum.csv, summary.json)\n";
+          << "results in " << run.results_place() << " (spectrum.csv, summary.json)\n";
       return 0;
     }
 
@@ -219,7 +226,7 @@ namespace poundfe
     /// ensemble_spectrum.csv: per damping ratio the mean, std, mean -+ std
     /// and the target; the matched mean (first damping ratio).
     void
-    write_ensemble_csv(const std::string &file, const EnsembleSpectrum &ensemble,
+    write_ensemble_csv(const CommandRun &run, const EnsembleSpectrum &ensemble,
                        const SpectrumParameters &s, const SpectrumMatching *matching)
     {
       std::vector<std::string> header{"period_s"};
@@ -234,25 +241,27 @@ namespace poundfe
         }
       if (matching)
         header.push_back("matched_mean_psa_m_s2_" + damping_label(s.damping_ratios.front()));
-      CsvWriter csv(file, header);
+      const std::unique_ptr<TableWriter> csv =
+        result_table_writer(run.memory, run.directory, "ensemble_spectrum", header);
+      std::vector<double> row;
       for (unsigned int i = 0; i < ensemble.n_grid; ++i)
         {
-          csv.begin_row(ensemble.periods[i]);
+          row.clear();
           for (unsigned int d = 0; d < s.damping_ratios.size(); ++d)
             {
               const SampleStatistics &st = ensemble.at(d, i);
-              csv.add(st.mean);
-              csv.add(st.standard_deviation);
-              csv.add(st.mean - st.standard_deviation);
-              csv.add(st.mean + st.standard_deviation);
+              row.push_back(st.mean);
+              row.push_back(st.standard_deviation);
+              row.push_back(st.mean - st.standard_deviation);
+              row.push_back(st.mean + st.standard_deviation);
               if (matching)
-                csv.add(s.target_psa(s.damping_ratios[d], ensemble.periods[i]));
+                row.push_back(s.target_psa(s.damping_ratios[d], ensemble.periods[i]));
             }
           if (matching)
-            csv.add(std::sqrt(matching->s0_factor) * ensemble.at(0, i).mean);
-          csv.end_row();
+            row.push_back(std::sqrt(matching->s0_factor) * ensemble.at(0, i).mean);
+          csv->add_row(ensemble.periods[i], row);
         }
-      csv.commit();
+      csv->commit();
     }
 
     /// ensemble_spectrum.png from ensemble_spectrum.csv (first damping ratio).
@@ -299,9 +308,12 @@ namespace poundfe
 
     /// `spectrum --realizations N`: ensemble_spectrum.csv/png, summary.json.
     int
-    ensemble_spectrum(const InputParameters &input, const std::string &directory,
-                      const unsigned int n_realizations, std::ostream &out)
+    ensemble_spectrum(const CommandRun &run)
     {
+      const InputParameters &input          = *run.input;
+      const std::string     &directory      = run.directory;
+      const unsigned int     n_realizations = run.n_realizations;
+      std::ostream          &out            = run.out;
       const GroundMotionParameters &g = input.ground_motion;
       if (!g.is_stochastic())
         input.fail("Ground motion/Type", "--realizations needs a stochastic ground motion, got '" +
@@ -326,10 +338,11 @@ namespace poundfe
       const SpectrumMatching *matched = target ? &matching : nullptr;
       const double    s0      = generator.motion().spectral_intensity;
 
-      create_directories(directory);
-      write_ensemble_csv(directory + "/ensemble_spectrum.csv", ensemble, s, matched);
+      if (!run.memory)
+        create_directories(directory);
+      write_ensemble_csv(run, ensemble, s, matched);
       std::vector<std::string> files{"ensemble_spectrum.csv"};
-      if (input.output.plots)
+      if (input.output.plots && !run.memory)
         for (const std::string &png :
              draw_ensemble(directory,
                            "Mean spectrum of realizations 0.." + std::to_string(n_realizations - 1) +
@@ -367,7 +380,7 @@ namespace poundfe
       if (target)
         write_matching(json, matching, g, s0);
       json.value("files", files).end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(run.memory, directory, "summary.json", json.str());
 
       out << n_realizations << " realizations of " << generator.description() << "\n";
       if (target)
@@ -381,7 +394,7 @@ namespace poundfe
                 << " g";
           out << ")\n";
         }
-      out << "results in " << directory << "/ (ensemble_spectrum.csv, summary.json)\n";
+      out << "results in " << run.results_place() << " (ensemble_spectrum.csv, summary.json)\n";
       return 0;
     }
   } // namespace
@@ -394,7 +407,7 @@ namespace poundfe::commands
   spectrum(const CommandRun &run)
   {
     if (run.n_realizations > 0)
-      return ensemble_spectrum(*run.input, run.directory, run.n_realizations, run.out);
-    return single_spectrum(*run.input, run.directory, run.out);
+      return ensemble_spectrum(run);
+    return single_spectrum(run);
   }
 } // namespace poundfe::commands

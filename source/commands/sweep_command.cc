@@ -19,6 +19,7 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/plots.h>
@@ -190,24 +191,26 @@ namespace poundfe
     }
 
     void
-    write_sweep(const InputParameters &input, const SweepTable &table,
-                const std::string &directory, const double wall_time, const bool interrupted,
-                const bool model_built_once)
+    write_sweep(const CommandRun &run, const SweepTable &table, const double wall_time,
+                const bool interrupted, const bool model_built_once)
     {
-      const SweepParameters &sweep = input.sweep;
-      prepare_output_directory(directory);
+      const InputParameters &input     = *run.input;
+      const std::string     &directory = run.directory;
+      const SweepParameters &sweep     = input.sweep;
+      if (!run.memory)
+        prepare_output_directory(directory);
       std::vector<std::string> header{sweep.column_name(), "completed"};
       header.insert(header.end(), table.names.begin(), table.names.end());
-      CsvWriter csv(directory + "/sweep.csv", header);
+      const std::unique_ptr<TableWriter> csv =
+        result_table_writer(run.memory, directory, "sweep", header);
+      std::vector<double> row;
       for (std::size_t i = 0; i < table.rows.size(); ++i)
         {
-          csv.begin_row(table.values[i]);
-          csv.add(table.completed[i] ? 1 : 0);
-          for (const double x : table.rows[i])
-            csv.add(x);
-          csv.end_row();
+          row.assign(1, table.completed[i] ? 1 : 0);
+          row.insert(row.end(), table.rows[i].begin(), table.rows[i].end());
+          csv->add_row(table.values[i], row);
         }
-      csv.commit();
+      csv->commit();
 
       JsonWriter json;
       const bool all = std::all_of(table.completed.begin(), table.completed.end(),
@@ -230,9 +233,9 @@ namespace poundfe
       for (const Critical &c : critical_values(table))
         json.begin_object(c.name).value("value", c.value).value("peak", c.peak).end_object();
       json.end_object().end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(run.memory, directory, "summary.json", json.str());
 
-      if (!input.output.plots || table.rows.empty())
+      if (!input.output.plots || table.rows.empty() || run.memory)
         return;
       Plot plot{"sweep.png", "peak inter-storey drift ratio against " + sweep.axis_label(),
                 sweep.axis_label(), "peak drift ratio", {}};
@@ -311,20 +314,21 @@ namespace poundfe::commands
       timer.get_summary_data(dealii::TimerOutput::total_wall_time).at("runs");
 
     timer.enter_subsection("output");
-    write_sweep(input, table, run.directory, wall_time, table.interrupted, model != nullptr);
+    write_sweep(run, table, wall_time, table.interrupted, model != nullptr);
     timer.leave_subsection();
     if (table.interrupted)
       {
-        run.err << "poundfe: sweep interrupted (" << run.directory
-                << "/summary.json says interrupted): " << table.values.size() << " of "
+        run.err << "poundfe: sweep interrupted ("
+                << (run.memory ? "the summary" : run.directory + "/summary.json")
+                << " says interrupted): " << table.values.size() << " of "
                 << values.size() << " values kept in sweep.csv\n";
         return interrupted_exit_status();
       }
 
     const auto n_failed = std::count(table.completed.begin(), table.completed.end(), false);
     run.out << "poundfe sweep: " << values.size() << " values of " << sweep.parameter << " in "
-            << wall_time << " s\nresults in " << run.directory
-            << "/ (sweep.csv, summary.json, sweep.png)\n";
+            << wall_time << " s\nresults in " << run.results_place()
+            << " (sweep.csv, summary.json" << (run.memory ? "" : ", sweep.png") << ")\n";
     for (const Critical &c : critical_values(table)) // the largest demands
       if (c.name == "max_drift_ratio" || c.name.find("_max_corner_drift_ratio") != std::string::npos)
         run.out << "critical " << sweep.parameter << " for " << c.name << ": " << c.value

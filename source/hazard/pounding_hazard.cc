@@ -369,10 +369,12 @@ namespace poundfe
       {
         const double      a               = result.pga_levels[k];
         const std::string level_directory = directory + "/pga_" + rounded(a, 6) + "g";
-        if (rank == 0)
+        if (rank == 0 && !directory.empty())
           create_directories(level_directory);
         amplitude_factor            = a / result.reference_pga;
-        const MonteCarloTable table = run_realizations(job, n, level_directory + "/realizations.csv",
+        const MonteCarloTable table = run_realizations(job, n,
+                                                       directory.empty() ? "" :
+                                                         level_directory + "/realizations.csv",
                                                        comm, "PGA " + rounded(a) + " g: ",
                                                        &progress, k * n);
         result.interrupted = table.interrupted; // the same on every rank

@@ -69,6 +69,15 @@ namespace poundfe
       write_file_atomically(directory + "/" + name, text);
   }
 
+  std::unique_ptr<TableWriter>
+  result_table_writer(MemoryResults *memory, const std::string &directory, const std::string &stem,
+                      const std::vector<std::string> &header)
+  {
+    if (memory)
+      return memory->table_writer(stem, header);
+    return std::make_unique<CsvWriter>(directory + "/" + stem + ".csv", header);
+  }
+
   const NameTable<OutputFormat> &
   output_format_names()
   {

@@ -243,12 +243,13 @@ namespace poundfe::python
     run_command_of_table(const std::string &name, const std::vector<std::string> &arguments,
                          const std::string &output, const unsigned int n_realizations,
                          const std::vector<std::pair<std::string, std::string>> &overrides,
-                         std::string *report = nullptr)
+                         std::string *report = nullptr, MemoryResults *memory = nullptr)
     {
       const Command *command = find_command(name);
       if (command == nullptr)
         throw py::value_error("unknown command '" + name + "'\n" + usage_text());
       CommandRequest request{arguments, output, n_realizations, {}};
+      request.memory = memory;
       for (const auto &[path, value] : overrides)
         request.overrides.push_back({path, value});
       int status = 0;
@@ -279,6 +280,24 @@ namespace poundfe::python
       const int   status =
         run_command_of_table(name, arguments, output, n_realizations, overrides, &report);
       return {status, report};
+    }
+
+    /// A command of the table (a row with CommandRule::in_memory) with its
+    /// results in memory, no file written: {status, report, tables, texts}
+    /// (memory_dict's tables and texts by file name).
+    py::dict
+    run_command_in_memory(const std::string &name, const std::vector<std::string> &arguments,
+                          const unsigned int                                        n_realizations,
+                          const std::vector<std::pair<std::string, std::string>> &overrides)
+    {
+      std::string   report;
+      MemoryResults memory;
+      const int     status =
+        run_command_of_table(name, arguments, "", n_realizations, overrides, &report, &memory);
+      py::dict d        = memory_dict(memory);
+      d["exit_status"]  = status;
+      d["report"]       = report;
+      return d;
     }
   } // namespace
 
@@ -324,6 +343,18 @@ namespace poundfe::python
           py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
           "A command of the command table, its report returned: (status, report); use "
           "poundfe.montecarlo, ....");
+    m.def("command_in_memory", &run_command_in_memory, py::arg("name"), py::arg("arguments"),
+          py::arg("realizations") = 0,
+          py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
+          "A command of the command table with its results in memory (no file): {exit_status, "
+          "report, tables, texts}; use poundfe.montecarlo, ....");
+    m.def(
+      "in_memory",
+      [](const std::string &name) {
+        const Command *command = find_command(name);
+        return command != nullptr && command->has(CommandRule::in_memory);
+      },
+      py::arg("name"), "Whether command `name` can leave its results in memory.");
     py::module_::import("atexit").attr("register")(py::cpp_function([]() {
       delete mpi;
       mpi = nullptr;

@@ -275,7 +275,8 @@ namespace poundfe
     void
     RealizationScheduler::resume()
     {
-      rows = open_realization_table(file, job.names, job.seed, comm);
+      if (!file.empty()) // none: results in memory, nothing to resume
+        rows = open_realization_table(file, job.names, job.seed, comm);
       if (rank == 0)
         for (unsigned long r = 0; r < n; ++r)
           if (!rows.count(r))
@@ -284,7 +285,7 @@ namespace poundfe
       if (rows.size() > 0 && !todo.empty())
         pcout << label << "resuming: " << (n - todo.size()) << " of " << n
               << " realizations are in " << file << "\n";
-      if (rank == 0)
+      if (rank == 0 && !file.empty())
         out = std::make_unique<AppendFile>(file);
       n_done        = n - todo.size();
       show_progress = rank == 0 && progress != nullptr && progress->active();
@@ -295,7 +296,8 @@ namespace poundfe
     void
     RealizationScheduler::store(RealizationRow row)
     {
-      out->append(realization_line(row, job.seed));
+      if (out)
+        out->append(realization_line(row, job.seed));
       rows.emplace(row.realization, std::move(row));
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
@@ -430,6 +432,7 @@ namespace poundfe
       if (rank != 0)
         return table;
       table.columns = job.names;
+      table.seed    = job.seed;
       for (auto &[r, row] : rows)
         if (r < n)
           {
@@ -440,6 +443,16 @@ namespace poundfe
       return table;
     }
   } // namespace
+
+  std::string
+  realizations_text(const MonteCarloTable &table)
+  {
+    std::string text = header_of(table.columns) + "\n";
+    for (std::size_t i = 0; i < table.realizations.size(); ++i)
+      text += realization_line({table.realizations[i], table.completed[i], table.responses[i]},
+                         table.seed);
+    return text;
+  }
 
   MonteCarloTable
   run_realizations(const RealizationJob &job, const unsigned long n, const std::string &file,

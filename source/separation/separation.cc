@@ -423,8 +423,8 @@ namespace poundfe
       return completed;
     };
     Progress            progress(std::cerr, "realizations", n);
-    MonteCarloTable     table =
-      run_realizations(job, n, directory + "/realizations.csv", comm, "", &progress);
+    MonteCarloTable     table = run_realizations(
+      job, n, directory.empty() ? "" : directory + "/realizations.csv", comm, "", &progress);
     progress.finish();
     unsigned int column = 0;
     for (std::size_t p = 0; p < pairs.size(); ++p)

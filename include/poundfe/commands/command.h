@@ -14,6 +14,7 @@
 namespace poundfe
 {
   struct InputParameters;
+  class MemoryResults;
 
   /// What a command is given when it runs.
   struct CommandRun
@@ -37,6 +38,18 @@ namespace poundfe
     std::ostream &out;
     /// --write-at2; only for CommandRule::writes_at2.
     const bool write_at2 = false;
+    /// Where the results go instead of `directory` (Python without
+    /// output=): each file's text or table by name, nothing written, no
+    /// figure drawn; nullptr: into `directory`. Only for
+    /// CommandRule::in_memory.
+    MemoryResults *const memory = nullptr;
+
+    /// Where the report says the results are: "DIR/", or "memory".
+    std::string
+    results_place() const
+    {
+      return memory ? std::string("memory") : directory + "/";
+    }
   };
 
   /// One rule of a command: a column of the command table. A row lists the
@@ -72,6 +85,9 @@ namespace poundfe
     script_arguments = 1u << 8,
     /// Accepts --write-at2 (generated records as PEER AT2 files).
     writes_at2 = 1u << 9,
+    /// Can leave its results in memory (CommandRun::memory) instead of
+    /// files: what Python's call of the command gets without output=.
+    in_memory = 1u << 10,
   };
 
   /// A set of rules, written `CommandRule::a | CommandRule::b`.

@@ -36,6 +36,10 @@ namespace poundfe
     std::vector<ParameterOverride> overrides;
     /// --write-at2.
     bool write_at2 = false;
+    /// The results in memory instead of an output directory (Python
+    /// without output=; only for a row with CommandRule::in_memory): no
+    /// file written, not even the guard's summary.
+    MemoryResults *memory = nullptr;
   };
 
   /// A command line the command's row refuses (a wrong number of

@@ -131,7 +131,8 @@ namespace poundfe
 
   /// Runs `n_realizations` realizations of `job` at each level on every rank
   /// of `comm` (realizations.csv in directory/pga_<a>g/, resumed as
-  /// `fragility` does; the same realizations at every level) and, on rank 0,
+  /// `fragility` does; an empty `directory`: no file, results in memory; the
+  /// same realizations at every level) and, on rank 0,
   /// fits the demand of each pair and finds the gap for the target of
   /// `parameters`. A fit or a gap that fails leaves `failure` (the
   /// realizations stay on disk and the per-event results are still written).

@@ -45,6 +45,12 @@ namespace poundfe
   /// `memory` when given: the one place a run's text files go.
   void write_result_text(MemoryResults *memory, const std::string &directory,
                          const std::string &name, const std::string &text);
+
+  /// A writer of the table <directory>/<stem>.csv, or of `memory`'s table
+  /// `stem` when given: the one place a command's tables of numbers go.
+  std::unique_ptr<TableWriter> result_table_writer(MemoryResults *memory, const std::string &directory,
+                                                   const std::string              &stem,
+                                                   const std::vector<std::string> &header);
 } // namespace poundfe
 
 #endif

@@ -33,6 +33,7 @@ namespace poundfe
     std::vector<std::uint64_t>       realizations; // ascending
     std::vector<bool>                completed;
     std::vector<std::vector<double>> responses;
+    std::uint64_t                    seed      = 0; // the job's: realizations.csv's seed column
     unsigned long                    n_run_now = 0; // realizations run by this call
     double                           wall_time = 0; // s
     /// Stopped by SIGINT or SIGTERM (on every rank): realizations are missing,
@@ -81,7 +82,8 @@ namespace poundfe
 
   /// Runs the realizations 0..n-1 of `job` that `file` does not hold yet over
   /// the ranks of `comm` (each must call it), appending each to `file` as it
-  /// finishes; on SIGINT or SIGTERM (interruption.h) it stops after the
+  /// finishes (an empty `file`: all of them, nothing written: results in
+  /// memory); on SIGINT or SIGTERM (interruption.h) it stops after the
   /// realizations under way. Returns the table of the realizations of 0..n-1
   /// done on rank 0 and an empty one elsewhere. Rank 0 reports to `progress`
   /// (as progress_offset + realizations done) or, when that does not show,
@@ -97,6 +99,11 @@ namespace poundfe
                                   double amplitude_factor, const std::string &file,
                                   MPI_Comm comm, const std::string &label = "",
                                   Progress *progress = nullptr, unsigned long progress_offset = 0);
+
+  /// The text of realizations.csv holding `table`'s realizations in their
+  /// order (rank 0's table): what a run in memory gives for the journal a
+  /// run into files appends to.
+  std::string realizations_text(const MonteCarloTable &table);
 
   /// Pounding and drift-limit exceedances of a table's completed realizations.
   struct Exceedances

@@ -237,7 +237,8 @@ namespace poundfe
                                 std::vector<PairResult> &results);
 
   /// Monte Carlo of realizations 0..n-1 over the random loading on every rank
-  /// of `comm` (run_realizations: directory/realizations.csv, resumed): the
+  /// of `comm` (run_realizations: directory/realizations.csv, resumed; an
+  /// empty `directory`: none, results in memory): the
   /// means of the peaks and the largest approach of every realization into
   /// `results` (rank 0). `attach_parameters` makes model parameters random
   /// in the runner (reliability/random_parameters.h); `separations` samples

@@ -3,11 +3,14 @@ CommandResult: poundfe.montecarlo(model), poundfe.sweep(model, ...), ...
 
 Each runs through the command line's own dispatcher (the same rules, checks,
 messages and numbers as `poundfe NAME FILE --output DIR --set ...`) and
-takes a file name, an Input (its file and overrides) or a Model. The
-results are the command's own files, read back into arrays: into a
-temporary directory removed afterwards, or into `output=` when given (then
-the files stay). (poundfe.modal computes its Modes in memory, and
-poundfe.run its Results: neither reads files back.)
+takes a file name, an Input (its file and overrides) or a Model. Without
+`output=`, a command whose row can (spectrum, montecarlo, sweep,
+separation: _core.in_memory) leaves its results in memory and writes no
+file: its tables come as the doubles its CSV files would hold, its other
+files as their texts, parsed as the files would be. The others, and every
+command given `output=`, write their files, read back into arrays (without
+`output=` into a temporary directory removed afterwards). (poundfe.modal
+computes its Modes in memory, and poundfe.run its Results.)
 """
 
 import json
@@ -16,7 +19,7 @@ import shutil
 import tempfile
 
 from . import _core
-from .results import Table, _pandas, dataframe_of, read_csv, read_npy
+from .results import Table, _pandas, dataframe_of, memory_table, read_csv, read_csv_text, read_npy
 
 # The Python name of each command of item: its name on the command line.
 COMMANDS = {
@@ -67,6 +70,26 @@ class CommandResult:
                             for r, _, fs in os.walk(directory) for f in fs)
         self.output = directory if kept else None
 
+    @classmethod
+    def in_memory(cls, command, raw):
+        """What `_core.command_in_memory` left: its tables (doubles) and
+        texts by file name, as read_directory reads the same files; files
+        lists the names they would have had."""
+        result = cls.__new__(cls)
+        result.command = command
+        tables = {stem: memory_table(names, array) for stem, names, array in raw["tables"]}
+        texts = raw["texts"]
+        for name in texts:
+            if name.endswith(".csv"):
+                tables[name[:-4]] = read_csv_text(texts[name])
+        result.tables = dict(sorted(tables.items()))
+        result.summary = json.loads(texts["summary.json"]) if "summary.json" in texts else None
+        result.status = (result.summary or {}).get("status")
+        result.files = sorted([stem + ".csv" for stem, _, _ in raw["tables"]] + list(texts))
+        result.output = None
+        result.report = raw["report"]
+        return result
+
     def to_dataframe(self, name=None):
         """Table `name` as a pandas DataFrame (name may be left out when
         there is one table). ImportError without pandas."""
@@ -109,25 +132,42 @@ def _file_and_overrides(model, overrides, scratch):
     return os.fspath(model), pairs
 
 
+def _is_model(model):
+    """A Model, which the dispatcher reads from a file written for it."""
+    from . import Model
+    return isinstance(model, Model)
+
+
 def run_command(name, model, output=None, realizations=None, overrides=None):
     """`poundfe NAME FILE [--output DIR] [--realizations N] [--set ...]`
     through the command line's dispatcher, its files read back: a
     CommandResult. Bad input raises InputError (nothing written), a
     refused command line ValueError, a numerical failure NumericalError
-    (with output=, the files so far and summary.json stay there)."""
+    (with output=, the files so far and summary.json stay there). Without
+    output=, a command that can leaves its results in memory: no result
+    file (a Model's parameter file alone, in a temporary directory)."""
+    from . import _engine
     kept = output is not None
-    scratch = tempfile.mkdtemp(prefix="poundfe-")
-    directory = os.fspath(output) if kept else os.path.join(scratch, "output")
+    in_memory = not kept and _core.in_memory(name)
+    # a temporary directory only for what must be a file: a Model's
+    # parameter file, the output of a command that cannot keep it in memory
+    scratch = tempfile.mkdtemp(prefix="poundfe-") if _is_model(model) or not (kept or in_memory) \
+        else None
     try:
         file, pairs = _file_and_overrides(model, overrides, scratch)
-        from . import _engine
+        if in_memory:
+            with _engine():
+                raw = _core.command_in_memory(name, [file], realizations or 0, pairs)
+            return CommandResult.in_memory(name, raw)
+        directory = os.fspath(output) if kept else os.path.join(scratch, "output")
         with _engine():
             _, report = _core.command_reported(name, [file], directory, realizations or 0, pairs)
         result = CommandResult(name, directory, kept)
         result.report = report
         return result
     finally:
-        shutil.rmtree(scratch, ignore_errors=True)
+        if scratch:
+            shutil.rmtree(scratch, ignore_errors=True)
 
 
 def _command_function(python_name, name):
