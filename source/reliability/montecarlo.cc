@@ -450,7 +450,7 @@ namespace poundfe
     std::string text = header_of(table.columns) + "\n";
     for (std::size_t i = 0; i < table.realizations.size(); ++i)
       text += realization_line({table.realizations[i], table.completed[i], table.responses[i]},
-                         table.seed);
+                               table.seed);
     return text;
   }
 
