@@ -31,9 +31,7 @@ namespace poundfe
     std::istringstream words(rest);
     for (std::string word; std::getline(words, word, ',');)
       {
-        word = trimmed(word);
-        if (word.empty() && scope.only_3d && scope.types.empty() && !scope.only_fibre)
-          continue; // "[3D]": every Type
+        word = trimmed(word); // "[3D]" has none: every Type
         const std::vector<std::string> types = building_type_names().names();
         if (word == "fibre")
           scope.only_fibre = true;
