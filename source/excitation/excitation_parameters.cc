@@ -90,7 +90,8 @@ namespace poundfe
       prm.enter_subsection("Record");
       prm.add_parameter("Second file", p.second_record_file,
                         "The second horizontal component (Components = 2), along y before "
-                        "the incidence rotation; same format, units and scaling as File. "
+                        "the incidence rotation; same format and units as File, scaled as "
+                        "File is (to Target PGA by its own PGA, then times Scale factor). "
                         "Unit: -.");
       prm.add_parameter("Third file", p.third_record_file,
                         "The vertical component (Components = 3), upward positive: uz of "
@@ -110,8 +111,8 @@ namespace poundfe
       prm.add_parameter("Time step", p.record_time_step,
                         "Sample interval of a one-column text record. Unit: s.");
       prm.add_parameter("Target PGA", p.record_target_pga,
-                        "Scale the record to this PGA (0: keep it); the Scale factor multiplies "
-                        "it. Unit: g.");
+                        "Scale the record to this PGA (0: keep it); Scale factor then "
+                        "multiplies it: the PGA is Target PGA x Scale factor. Unit: g.");
       prm.leave_subsection();
     }
   } // namespace
@@ -125,8 +126,12 @@ namespace poundfe
                "Clough-Penzien sample, plain white noise (intensity S0 or D, held "
                "over the sample interval), a record, or none. Unit: -.",
                ground_motion_type_names());
-    prm.add_parameter("Scale factor", scale_factor, "Multiplies the motion, after any Target PGA (a record's or a stochastic "
-                      "motion's: the PGA is then Target PGA x Scale factor). Unit: dimensionless.");
+    prm.add_parameter("Scale factor", scale_factor,
+                      "Multiplies every component of the motion after any Target PGA: a "
+                      "record first scaled to Record/Target PGA, a Kanai-Tajimi or "
+                      "Clough-Penzien sample's S0 first set from Stochastic/Target PGA (its "
+                      "expected PGA); with both given, the PGA is Target PGA x Scale factor "
+                      "(the product: neither replaces the other). Unit: dimensionless.");
     prm.add_parameter("Components", n_components,
                       "Horizontal components: 1 (along x), or 2 (x and y, Model/Dimension = "
                       "3: Record/Second file, or a second independent stochastic sample "
@@ -169,7 +174,10 @@ namespace poundfe
     prm.add_parameter("D", noise_intensity_d,
                       "White-noise intensity in the thesis's convention <w(t) w(t')> = "
                       "2 D delta(t - t'), D = pi S0 (used when S0 = 0). Unit: m^2/s^3.");
-    prm.add_parameter("Target PGA", target_pga, "Target PGA (used when S0 = 0). Unit: g.");
+    prm.add_parameter("Target PGA", target_pga,
+                      "Expected PGA (Peak factor x the stationary standard deviation) that "
+                      "sets S0 when S0 and D are 0; Scale factor then multiplies the sample: "
+                      "the PGA is Target PGA x Scale factor, in expectation. Unit: g.");
     prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation. Unit: dimensionless.");
     prm.add_parameter("Duration", duration, "Length of the sample. Unit: s.");
     prm.add_parameter("Sample interval", sample_interval,

@@ -2,8 +2,12 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/input_text.h>
 #include <poundfe/base/numbers.h>
+#include <poundfe/model/section_shorthands.h>
 
 #include <deal.II/base/parameter_handler.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -174,7 +178,8 @@ namespace poundfe
         }
       for (std::size_t i = 0; i < split.sections.size(); ++i)
         prm.leave_subsection();
-      p.lines.erase(o.path.substr(0, o.path.rfind(':'))); // not the file's value any more
+      // written, but not on a line of the file any more (model/entry_scope.h)
+      p.lines[o.path.substr(0, o.path.rfind(':'))] = 0;
     }
 
     /// Parse `text` (a prepared .prm text, or JSON) into `prm`, then the overrides.
@@ -258,6 +263,7 @@ namespace poundfe
       }
     output.finalize(*this);
     model.sections = sections; // what fibre buildings name
+    apply_section_shorthands(*this, values, model);
     model.finalize(*this);
     ground_motion.check(*this, time_integration.newmark.time_step);
     time_integration.check(*this);
@@ -310,6 +316,20 @@ namespace poundfe
 
   namespace
   {
+    /// Every entry path a JSON parameter text writes, at line 0 (a JSON
+    /// file has no line index): the entries the user wrote, as a .prm
+    /// file's set lines are (model/entry_scope.h).
+    void
+    index_json_entries(const boost::property_tree::ptree &tree, const std::string &section,
+                       std::map<std::string, int> &lines)
+    {
+      for (const auto &[key, child] : tree)
+        if (child.empty())
+          lines.emplace(section + key, 0);
+        else
+          index_json_entries(child, section + key + "/", lines);
+    }
+
     /// The number k of the first key "Building k" of a JSON text with k >
     /// n_buildings, and its line; "" if there is none.
     std::string
@@ -408,7 +428,20 @@ namespace poundfe
         text        = std::move(prm.text);
       }
     else
-      check_json_text(file, text);
+      {
+        check_json_text(file, text);
+        std::istringstream             json(text);
+        boost::property_tree::ptree    tree;
+        try
+          {
+            boost::property_tree::read_json(json, tree);
+          }
+        catch (const boost::property_tree::json_parser_error &)
+          {
+            // deal.II's parser reports the fault with its line below
+          }
+        index_json_entries(tree, "", p.lines);
+      }
 
     // First pass: only the numbers of buildings and of cross-sections, which
     // shape the declarations.

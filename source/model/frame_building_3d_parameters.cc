@@ -5,6 +5,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/model/parameters.h>
 #include <poundfe/model/plan_builder.h>
+#include <poundfe/model/section_shorthands.h>
 #include <poundfe/model/set_backs.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -41,6 +42,7 @@ namespace poundfe
                       "[3D frame] Rotation of the columns' local axes about the vertical, "
                       "counter-clockwise from the building's x axis (0: Column I resists "
                       "sway along x). Unit: degrees.");
+    declare_poisson_ratio(prm);
     prm.add_parameter("Beam G", beam_shear_modulus,
                       "[3D frame] Beam shear modulus, one or per floor (required). Unit: Pa.");
     prm.add_parameter("Beam Iz", beam_second_moment_z,

@@ -1,5 +1,7 @@
 #include <poundfe/base/numbers.h>
+#include <poundfe/model/entry_scope.h>
 #include <poundfe/model/parameters.h>
+#include <poundfe/model/section_shorthands.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -72,52 +74,6 @@ namespace poundfe
         for (const double w : p.bay_widths)
           input.at_most(s + "Bay widths", w, largest_building_length, "m", why);
     }
-
-    /// The entries of a building that act only with Model/Dimension = 3
-    /// ([3D] in their documentation), besides all of Plan/.
-    bool
-    is_3d_entry(const std::string &entry)
-    {
-      static const std::vector<std::string> entries{
-        "Number of bays y", "Bay widths y", "Column G", "Column Iz", "Column J", "Column angle",
-        "Beam G", "Beam Iz", "Beam J", "Column Avz", "Column Avy", "Beam Avz", "Beam Avy",
-        "Diaphragm", "Vertical floor mass", "Group G", "Group Iz", "Group J", "Group orientation",
-        "Hinges/Biaxial interaction", "Foundation/Horizontal stiffness y",
-        "Foundation/Horizontal damping y", "Foundation/Rocking stiffness x",
-        "Foundation/Rocking damping x", "Foundation/Torsional stiffness",
-        "Foundation/Torsional damping", "Foundation/Rotary inertia x",
-        "Foundation/Polar inertia"};
-      return entry.rfind("Plan/", 0) == 0 ||
-             std::find(entries.begin(), entries.end(), entry) != entries.end();
-    }
-
-    /// A planar model would ignore a [3D] entry: the user meant a 3D model
-    /// or a different entry, and either way the results would not be what
-    /// the file says.
-    void
-    refuse_3d_entries(const InputFile &input, const std::string &s, const BuildingParameters &p)
-    {
-      const std::string why = "acts only with Model/Dimension = 3, and the model is planar "
-                              "(Dimension = 2): remove it or set Model/Dimension = 3";
-      for (const auto &[path, line] : input.lines)
-        if (path.rfind(s, 0) == 0 && is_3d_entry(path.substr(s.size())))
-          input.fail(path, why);
-      // a JSON file has no line index: its Plan values against the defaults
-      const PlanParameters defaults;
-      const PlanParameters &plan = p.plan;
-      using Entry                = std::pair<const char *, bool>;
-      for (const auto &[entry, given] :
-           {Entry{"Plan dimensions", plan.dimensions != defaults.dimensions},
-            Entry{"Position", plan.position != defaults.position},
-            Entry{"Rotation", plan.rotation != defaults.rotation},
-            Entry{"Polar moments", plan.polar_moments != defaults.polar_moments},
-            Entry{"Mass eccentricity", plan.mass_eccentricity != defaults.mass_eccentricity},
-            Entry{"Accidental eccentricity", plan.accidental != defaults.accidental},
-            Entry{"Resisting planes", plan.planes_text != defaults.planes_text},
-            Entry{"Storey law", plan.storey_law != defaults.storey_law}})
-        if (given)
-          input.fail(s + "Plan/" + entry, why);
-    }
   } // namespace
 
   const NameTable<BuildingType> &
@@ -179,7 +135,8 @@ namespace poundfe
                "mesh: frame read from a Gmsh mesh; shear: stick model. The entries "
                "tagged [frame], [shear] or [mesh] apply only to that Type, those tagged "
                "[3D] only with Model/Dimension = 3 ([3D frame], [3D shear], [3D mesh]: "
-               "and that Type). Unit: -.",
+               "and that Type), those tagged fibre only with Member model = fibre; such "
+               "an entry written for a building it does not apply to is refused. Unit: -.",
                building_type_names());
     prm.add_parameter("Floor masses", floor_masses,
                       "Mass of each floor, bottom up (roof last): one value for all or one "
@@ -228,6 +185,7 @@ namespace poundfe
     prm.add_parameter("Beam A", beam_area, "[frame] Beam area, one or per floor. Unit: m^2.");
     prm.add_parameter("Beam I", beam_second_moment,
                       "[frame] Beam second moment of area, one or per floor. Unit: m^4.");
+    declare_section_shorthands(prm);
     prm.add_parameter("Column mass per length", column_mass_per_length,
                       "[frame] Distributed column mass, one or per storey. Unit: kg/m.");
     prm.add_parameter("Beam mass per length", beam_mass_per_length,
@@ -317,7 +275,7 @@ namespace poundfe
                       "hinges keep the elastic frame nearly unchanged; Ibarra & Krawinkler "
                       "use 10). Unit: dimensionless.");
     prm.add_parameter("Biaxial interaction", hinge_biaxial,
-                      "[3D frame] false: the hinges about a member end's two bending axes "
+                      "[3D frame, mesh] false: the hinges about a member end's two bending axes "
                       "are independent uniaxial Bouc-Wen laws; true: one Park-Wen-Ang "
                       "bidirectional Bouc-Wen law on both rotations (circular yield surface "
                       "in the moments over their yield moments; Bouc-Wen n >= 2, no "
@@ -672,6 +630,9 @@ namespace poundfe
   void
   ModelParameters::finalize(const InputFile &input)
   {
+    // first: an entry of another Type or dimension is the mistake to name,
+    // not whatever its value would break further on
+    refuse_entries_without_effect(input, *this);
     input.positive("Model/Gravity analysis/Tolerance", gravity_analysis.tolerance);
     if (!(gravity_analysis.tolerance < 1))
       input.fail("Model/Gravity analysis/Tolerance",
@@ -687,16 +648,8 @@ namespace poundfe
                                            *this);
       }
     input.positive("Model/Gravity", gravity);
-    for (unsigned int b = 0; b < buildings.size(); ++b)
-      if (!buildings[b].set_backs_text.empty() &&
-          !(dimension == 3 && buildings[b].type == BuildingType::frame))
-        input.fail("Building " + std::to_string(b + 1) + "/Set-backs",
-                   "set-backs are for 3D frames (Model/Dimension = 3, Type = frame)");
     if (dimension == 3)
       finalize_plan(input);
-    else
-      for (unsigned int b = 0; b < buildings.size(); ++b)
-        refuse_3d_entries(input, "Building " + std::to_string(b + 1) + "/", buildings[b]);
     if (buildings.size() > 1)
       input.list("Model/Separations", separations, buildings.size() - 1, true,
                  "one per neighbouring pair");

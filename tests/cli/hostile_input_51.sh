@@ -35,11 +35,11 @@ random() {
 shear '  subsection Plan
     set Rotation = 30
   end' > plan-2d.prm
-expect 1 "plan-2d.prm:7: parameter 'Building 1/Plan/Rotation': acts only with Model/Dimension = 3" modal plan-2d.prm --output out
+expect 1 "plan-2d.prm:7: parameter 'Building 1/Plan/Rotation': has no effect on a 2D shear building: it is a [3D] entry" modal plan-2d.prm --output out
 printf '{ "Building 1": { "Type": "shear", "Number of storeys": "3", "Floor masses": "1000",\n  "Storey stiffnesses": "5e6", "Plan": { "Mass eccentricity": "1, 0" } } }\n' > plan-2d.json
-expect 1 "parameter 'Building 1/Plan/Mass eccentricity': acts only with Model/Dimension = 3" modal plan-2d.json --output out
+expect 1 "parameter 'Building 1/Plan/Mass eccentricity': has no effect on a 2D shear building" modal plan-2d.json --output out
 sed 's/  set Column I          = 6.75e-4/&\n  set Column Iz = 1e-3/' "$source/tests/cli/montecarlo-small.prm" > frame-2d.prm
-expect 1 "parameter 'Building 2/Column Iz': acts only with Model/Dimension = 3" modal frame-2d.prm --output out
+expect 1 "parameter 'Building 2/Column Iz': has no effect on a 2D frame building" modal frame-2d.prm --output out
 pair3d 's/set Mass eccentricity = 1.0, 0.5/set Mass eccentricity = 6, 0.5/' eccentric.prm
 expect 1 "parameter 'Building 1/Plan/Mass eccentricity': e_x = 6 m puts the mass centre outside the slab" modal eccentric.prm --output out
 pair3d 's/set Position                      = 14.05, 2/set Position = 1e17, 2/' far.prm

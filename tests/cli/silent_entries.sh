@@ -3,7 +3,10 @@
 # that has no effect in the model it is in is refused (exit 1, one line naming
 # file, line and entry, nothing written) or, where the run still makes sense,
 # reported as a warning on the terminal and in summary.json:
-#   refused: a 3D entry in a planar model;
+#   refused: an entry tagged for another building Type, dimension or member
+#     model ([frame], [3D], [frame, fibre] ...), written in a .prm file, a
+#     JSON file or by --set: a 3D entry in a planar model, Column E on a
+#     shear building;
 #   warned: a contact law that makes no gap element (3D slabs that face
 #     nothing), a contact-law entry the law does not use, Model/Separations
 #     with one building or beside a Plan/Position for every building it
@@ -41,9 +44,27 @@ plan_pair() { # two 3D shear buildings; $1: Model entries, $2 and $3: their Plan
 
 # refused: a 3D entry in a planar model names its file, line and entry
 shear '  set Number of bays y = 2' > planar.prm
-expect 1 "planar.prm:6: parameter 'Building 1/Number of bays y': acts only with Model/Dimension = 3" run planar.prm --output out
+expect 1 "planar.prm:6: parameter 'Building 1/Number of bays y': has no effect on a 2D shear building: it is a [3D frame] entry (Type = frame, Model/Dimension = 3); remove it, or set Type = frame and set Model/Dimension = 3" run planar.prm --output out
 shear '  set Vertical floor mass = none' > planar-mass.prm
-expect 1 "planar-mass.prm:6: parameter 'Building 1/Vertical floor mass': acts only with Model/Dimension = 3" run planar-mass.prm --output out
+expect 1 "planar-mass.prm:6: parameter 'Building 1/Vertical floor mass': has no effect on a 2D shear building" run planar-mass.prm --output out
+# refused: an entry of another Type (its help's tag) on a 3D shear building
+# (model/entry_scope.h; unit/model walks every tagged entry)
+for entry in 'Column E = 3e10' 'Diaphragm = none' 'Vertical floor mass = none'; do
+  { printf 'subsection Model\n  set Dimension = 3\nend\n'
+    shear "$(printf '  subsection Plan\n    set Plan dimensions = 6, 6\n  end\n  set %s' "$entry")"; } > other-type.prm
+  expect 1 "other-type.prm:12: parameter 'Building 1/${entry%% =*}': has no effect on a 3D shear building: it is a [" run other-type.prm --output out
+done
+# ... only with the fibre members it is for
+{ printf 'subsection Building 1\n  set Type = frame\n  set Member element = displacement\nend\n'
+  printf 'subsection Output\n  set Plots = false\nend\n'; } > hinges-frame.prm
+expect 1 "hinges-frame.prm:3: parameter 'Building 1/Member element': has no effect on a 2D frame building with Member model = elastic-hinges" run hinges-frame.prm --output out
+# ... a key of a JSON file (no line) and an override alike
+printf '{ "Building 1": { "Type": "shear", "Number of storeys": "2", "Floor masses": "1000",\n  "Storey stiffnesses": "5e6", "Column E": "3e10" } }\n' > shear.json
+expect 1 "shear.json: parameter 'Building 1/Column E': has no effect on a 2D shear building" run shear.json --output out
+shear '' > plain.prm
+expect 1 "plain.prm: parameter 'Building 1/Plan/Rotation': has no effect on a 2D shear building" run plain.prm --output out --set "Building 1/Plan/Rotation=30"
+# ... and the same entries run where they apply: a default never counts
+expect 0 "results in out" run plain.prm --output out
 # warned: Separations when every building after the first has a Position
 plan_pair '  set Separations = 0.05' '    set Position = 0, 0' '    set Position = 6.1, 0' '  set Law = linear' > placed.prm
 expect 0 "results in out" run placed.prm --output out

@@ -32,6 +32,6 @@ for bad in "template" "template nosuchkind" "template frame extra"; do
   message=$("$poundfe" $bad 2>&1 > /dev/null); status=$?
   set -e
   [ $status -eq 1 ] || fail "'$bad' exited $status"
-  echo "$message" | grep -q "one of: frame, mesh, pounding, shear, stochastic" || fail "'$bad': $message"
+  echo "$message" | grep -q "one of: frame, frame3d, mesh, pounding, shear, shear3d, stochastic" || fail "'$bad': $message"
 done
 echo "ok   bad kinds refused"

@@ -42,6 +42,9 @@ namespace
 {
   const std::string shear_pair = "tests/dynamics/uncertain-shear-pair.prm";
   const std::string pair_3d    = "tests/dynamics/uncertain-3d-pair.prm";
+  // the same without Building 1's entries of its own Type, for --set Type
+  const std::string shear_pair_any_type = "tests/dynamics/uncertain-pair-any-type.prm";
+  const std::string pair_3d_any_type    = "tests/dynamics/uncertain-3d-pair-any-type.prm";
 
   using poundfe_test::compare_with_rebuilt;
   using poundfe_test::Overrides;
@@ -129,7 +132,7 @@ BOOST_AUTO_TEST_CASE(random_mesh_groups)
                      {"Building 1/Group mass per length", "50, " + text_of(x[3])},
                      {"Building 1/Floor masses", list_with(x[4], 0, 3, "1000")}};
   };
-  compare_with_rebuilt(shear_pair, mesh_pair(variables), values, 4);
+  compare_with_rebuilt(shear_pair_any_type, mesh_pair(variables), values, 4);
 }
 
 namespace
@@ -379,7 +382,7 @@ BOOST_AUTO_TEST_CASE(random_3d_mesh_groups)
                      {"Building 1/Group mass per length", "400, " + text_of(x[6])},
                      {"Building 1/Floor masses", list_with(x[7], 1, 2, "6e4")}};
   };
-  BOOST_TEST(compare_with_rebuilt(pair_3d, mesh_3d_pair(variables), values, 4) > 0u);
+  BOOST_TEST(compare_with_rebuilt(pair_3d_any_type, mesh_3d_pair(variables), values, 4) > 0u);
 }
 
 // The Bouc-Wen shape of 3D hinges (the generated frame's, uniaxial about
@@ -441,7 +444,7 @@ BOOST_AUTO_TEST_CASE(random_3d_bouc_wen)
   // the 3D mesh's hinges, biaxial
   const std::string mesh = "alpha: Building 1/Bouc-Wen/alpha ~ uniform lower 0.02 upper 0.2; "
                            "n: Building 1/Bouc-Wen/n ~ uniform lower 2 upper 4";
-  compare_with_rebuilt(pair_3d,
+  compare_with_rebuilt(pair_3d_any_type,
                        mesh_3d_pair(mesh, {{"Building 1/Hinges/Biaxial interaction", "true"}}),
                        [](const std::vector<double> &x) {
                          return Overrides{{"Building 1/Bouc-Wen/alpha", text_of(x[0])},
@@ -550,7 +553,7 @@ BOOST_AUTO_TEST_CASE(random_polar_moments)
                      {"Building 2/Floor masses", list_with(x[2], 0, 2, "5e4")}};
   }, 3);
   const std::string mesh = "J: Building 1/Plan/Polar moments[1] ~ lognormal mean 1.2e6 cov 0.3";
-  compare_with_rebuilt(pair_3d,
+  compare_with_rebuilt(pair_3d_any_type,
                        mesh_3d_pair(mesh, {{"Building 1/Plan/Polar moments", "1.2e6, 9e5"}}),
                        [](const std::vector<double> &x) {
                          return Overrides{
@@ -614,7 +617,7 @@ BOOST_AUTO_TEST_CASE(refused_3d_mesh_paths_say_why)
 {
   const auto check = [](const Overrides &extra,
                         const std::vector<std::pair<std::string, std::string>> &paths) {
-    const InputParameters input    = read_parameters(pair_3d, mesh_3d_pair("", extra));
+    const InputParameters input    = read_parameters(pair_3d_any_type, mesh_3d_pair("", extra));
     const Analysis        analysis = prepare_analysis(input);
     const auto            origins  = std::make_shared<const std::vector<HingeOrigin>>(
       hinge_origins(analysis.model, input.model));
@@ -680,7 +683,7 @@ namespace
     // commands), before any realization
     {
       const InputParameters input =
-        read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1e308 upper "
+        read_parameters(pair_3d_any_type, mesh_3d_pair("x: " + path + " ~ uniform lower 1e308 upper "
                                               "1.5e308", typed));
       const Analysis    analysis = prepare_analysis(input);
       RealizationRunner runner(analysis, time_history_parameters(input));
@@ -694,7 +697,7 @@ namespace
     }
     // and the values themselves, as a realization receives them
     const InputParameters input =
-      read_parameters(pair_3d, mesh_3d_pair("x: " + path + " ~ uniform lower 1 upper 2", typed));
+      read_parameters(pair_3d_any_type, mesh_3d_pair("x: " + path + " ~ uniform lower 1 upper 2", typed));
     const Analysis analysis = prepare_analysis(input);
     const auto     origins  = std::make_shared<const std::vector<HingeOrigin>>(
       hinge_origins(analysis.model, input.model));

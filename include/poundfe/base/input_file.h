@@ -30,7 +30,7 @@ namespace poundfe
   {
     std::string file;
     std::string directory; // relative input paths are resolved against it
-    /// Line of "set <section/.../entry>" (only .prm files are indexed).
+    /// Line of "set <section/.../entry>" of each entry written (0: a JSON key, a --set).
     std::map<std::string, int> lines;
 
     /// Line of "set <path>" in the file (0 when unknown, e.g. JSON input).
