@@ -27,7 +27,7 @@ import sys
 from collections import OrderedDict
 
 UNIT = re.compile(r"\s*Unit:\s*(.+?)\.(?=\s|$)")
-TAG = re.compile(r"^\s*(\[[A-Za-z, ]+\])\s*")
+TAG = re.compile(r"^\s*(\[[A-Za-z0-9, ]+\])\s*")
 BLOCK = re.compile(r"(<!-- parameters: (.+?) -->\n)(.*?)(<!-- end parameters -->)", re.S)
 
 
