@@ -60,6 +60,14 @@ CASES = {
     "frame_krylov": ("fibre_frame_record.tcl", ["committed", "KrylovNewton"], 1e-9),
     "pounding_krylov": ("pounding_sticks.tcl",
                         ["ElasticPPGap", "KrylovNewton -maxDim 1", "EnergyIncr"], 1e-9),
+    # BFGS (OpenSees's BFGS.cpp): the default 10 quasi-Newton increments a
+    # tangent on the fibre frame; 3 on the pounding pair, whose inner test
+    # then runs out and a new tangent follows (33 times)
+    "frame_bfgs": ("fibre_frame_record.tcl", ["committed", "BFGS"], 1e-9),
+    "pounding_bfgs": ("pounding_sticks.tcl", ["ImpactMaterial", "BFGS -count 3"], 1e-9),
+    # sp in a Plain pattern (constraints Transformation): a fibre beam's end
+    # rotation and deflection imposed past cracking and yield and back
+    "beam_imposed": ("beam_imposed.tcl", [], 1e-6),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -28,6 +28,7 @@ namespace poundfe
     int print_parameters(const CommandRun &); // print_parameters_command.cc
     int input_template(const CommandRun &); // template_command.cc
     int opensees(const CommandRun &);       // opensees_command.cc
+    int export_opensees(const CommandRun &); // export_opensees_command.cc
     int ida(const CommandRun &);            // ida_command.cc
     int msa(const CommandRun &);            // msa_command.cc
     int select_records(const CommandRun &); // select_records_command.cc
@@ -144,6 +145,11 @@ namespace poundfe
        "runs an OpenSees Tcl script (Tcl 8.6, OpenSees's commands on\n"
        "poundfe's engine; ARGS are the script's argv; see the user guide)",
        script, "", commands::opensees},
+      {"export-opensees", "FILE",
+       "the model as an OpenSees 3.8 Tcl script (model.tcl) with its ground\n"
+       "motion (ground_motion.txt): shear buildings, linear gaps, Rayleigh\n"
+       "damping, Newmark at the time step; what OpenSees cannot express is refused",
+       file, "", commands::export_opensees},
       {"print-parameters", "", "every parameter with its documentation and default",
        none, "", commands::print_parameters},
       {"template", "KIND",

@@ -211,7 +211,6 @@ namespace poundfe
       {
         for (const char *name :
              {"rigidDiaphragm", "fixX", "fixY", "fixZ", "region", "remove",
-              "sp",
               "imposedMotion", "groundMotion", "modalDamping", "setElementRayleighDampingFactors",
               "printA", "printB", "printModel", "print",
               "basicDeformation", "basicForce", "localForce", "testIter", "testNorm", "getNP",

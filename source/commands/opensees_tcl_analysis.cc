@@ -140,6 +140,23 @@ namespace poundfe
           }
       }
 
+      /// BFGS <-count N> (OpenSees's default 10, the current tangent).
+      void
+      bfgs_options(opensees::AnalysisOptions &o, Words &w)
+      {
+        o.bfgs_count = 10;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option != "-count")
+              unsupported("algorithm BFGS option '" + option + "'");
+            const int n = w.integer("-count");
+            if (n < 1)
+              throw ScriptError("BFGS needs -count >= 1");
+            o.bfgs_count = n;
+          }
+      }
+
       void
       algorithm(Session &s, Words &w)
       {
@@ -160,6 +177,11 @@ namespace poundfe
           {
             s.options.algorithm = Algorithm::krylov_newton;
             krylov_options(s.options, w);
+          }
+        else if (type == "BFGS")
+          {
+            s.options.algorithm = Algorithm::bfgs;
+            bfgs_options(s.options, w);
           }
         else
           unsupported("algorithm " + type);
@@ -447,8 +469,10 @@ namespace poundfe
     void
     define_analysis_commands(Tcl_Interp *interp, Session &session)
     {
-      define(interp, session, "constraints", [](Session &, Words &w) {
+      define(interp, session, "constraints", [](Session &s, Words &w) {
+        s.options.transformation = w.peek() == "Transformation";
         accept_names(w, {"Plain", "Transformation"});
+        reconfigure(s);
       });
       define(interp, session, "numberer", [](Session &, Words &w) {
         accept_names(w, {"Plain", "RCM", "AMD"});

@@ -1,6 +1,6 @@
 // The model-building commands of OpenSees scripts, with OpenSees 3.8's
 // argument syntax: wipe, model, node, fix, mass, equalDOF, rigidLink bar, geomTransf,
-// element, uniaxialMaterial, timeSeries, pattern, load, eleLoad, loadConst, setTime,
+// element, uniaxialMaterial, timeSeries, pattern, load, sp, eleLoad, loadConst, setTime,
 // rayleigh, recorder. An option or type poundfe lacks is an error naming it.
 #include <poundfe/laws/material_registry.h>
 
@@ -660,6 +660,31 @@ namespace poundfe
         pattern.loads.push_back(l);
       }
 
+      /// sp node dof value: the DOF (1-based) imposed at value times the
+      /// pattern's factor.
+      void
+      imposed_displacement(Session &s, Words &w)
+      {
+        opensees::Domain             &d       = model_domain(s);
+        opensees::Pattern            &pattern = current_pattern(s, "an sp");
+        opensees::ImposedDisplacement sp;
+        const opensees::Node         &node = d.node(w.integer("the node's tag"));
+        const int                     dof  = w.integer("the DOF");
+        if (dof < 1 || dof > int(d.ndf))
+          throw ScriptError("sp: DOF " + std::to_string(dof) + " outside 1.." +
+                            std::to_string(d.ndf));
+        if (node.fixed[dof - 1])
+          throw ScriptError("sp: node " + std::to_string(node.tag) + " DOF " +
+                            std::to_string(dof) + " is fixed");
+        sp.node  = node.tag;
+        sp.dof   = dof - 1;
+        sp.value = w.real("the imposed displacement");
+        if (!w.done())
+          unsupported("sp option '" + w.peek() + "'");
+        pattern.imposed.push_back(sp);
+        d.changed = true;
+      }
+
       /// eleLoad (-ele tag ... | -range first last) -type -beamUniform Wy <Wx>.
       void
       element_load(Session &s, Words &w)
@@ -916,6 +941,7 @@ namespace poundfe
       define(interp, session, "timeSeries", time_series);
       define(interp, session, "pattern", pattern);
       define(interp, session, "load", load);
+      define(interp, session, "sp", imposed_displacement);
       define(interp, session, "eleLoad", element_load);
       define(interp, session, "loadConst", load_const);
       define(interp, session, "setTime", [](Session &s, Words &w) {

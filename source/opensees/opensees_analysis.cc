@@ -54,14 +54,23 @@ namespace poundfe
       for (const EqualDof &e : domain.equal_dofs)
         for (const unsigned int k : e.dofs)
           retained_by[{e.constrained, k}] = {e.retained, k};
+      imposed_dofs.clear();
+      for (const auto &[dof, value] : domain.imposed_displacements(domain.time))
+        imposed_dofs.push_back(dof);
       n_equations = 0;
       for (auto &[tag, node] : domain.nodes)
         {
           node.equation.assign(node.fixed.size(), -1);
           for (unsigned int k = 0; k < node.fixed.size(); ++k)
-            if (!node.fixed[k] && retained_by.count({tag, k}) == 0)
+            if (!node.fixed[k] && retained_by.count({tag, k}) == 0 &&
+                std::find(imposed_dofs.begin(), imposed_dofs.end(), std::make_pair(tag, k)) ==
+                  imposed_dofs.end())
               node.equation[k] = n_equations++;
         }
+      // an imposed DOF leaves the equations (Transformation's SP constraint)
+      for (unsigned int j = 0; j < imposed_dofs.size(); ++j)
+        domain.node(imposed_dofs[j].first).equation[imposed_dofs[j].second] = -2 - int(j);
+      imposed_u.setZero(imposed_dofs.size());
       // a constrained DOF takes its retained DOF's equation (chains followed)
       for (const auto &[dof, retained] : retained_by)
         {
@@ -112,7 +121,7 @@ namespace poundfe
         for (unsigned int k = 0; k < node.equation.size(); ++k)
           {
             const int eq  = node.equation[k];
-            node.disp[k]  = eq < 0 ? 0.0 : U[eq];
+            node.disp[k]  = eq >= 0 ? U[eq] : eq <= -2 ? imposed_u[-2 - eq] : 0.0;
             node.vel[k]   = eq < 0 ? 0.0 : V[eq];
             node.accel[k] = eq < 0 ? 0.0 : A[eq];
           }
@@ -120,13 +129,17 @@ namespace poundfe
 
     namespace
     {
-      /// The element's local values of a vector by equation (0 where fixed).
+      /// The element's local values of a vector by equation: 0 where fixed,
+      /// `imposed` where an sp command imposes the DOF (-2 - j: its j-th).
       Vector
-      element_values(const Element &element, const Vector &x)
+      element_values(const Element &element, const Vector &x, const Vector &imposed)
       {
         Vector local(element.equations.size());
         for (unsigned int i = 0; i < local.size(); ++i)
-          local[i] = element.equations[i] < 0 ? 0.0 : x[element.equations[i]];
+          {
+            const int eq = element.equations[i];
+            local[i]     = eq >= 0 ? x[eq] : eq <= -2 ? imposed[-2 - eq] : 0.0;
+          }
         return local;
       }
 
@@ -151,8 +164,16 @@ namespace poundfe
     Analysis::set_trial(std::string &why)
     {
       const Vector &u = at_alpha ? U_alpha : U, &v = at_alpha ? V_alpha : V;
+      if (!imposed_dofs.empty() && opts.transformation) // static only: they do not move
+        {
+          const auto imposed = domain.imposed_displacements(trial_time);
+          for (unsigned int j = 0; j < imposed_dofs.size(); ++j)
+            imposed_u[j] = imposed.at(imposed_dofs[j]);
+        }
+      const Vector still = Vector::Zero(imposed_u.size());
       for (auto &[tag, element] : domain.elements)
-        if (!element->set_trial(element_values(*element, u), element_values(*element, v)))
+        if (!element->set_trial(element_values(*element, u, imposed_u),
+                                element_values(*element, v, still)))
           {
             why = "element " + std::to_string(tag) + ": " + element->failure();
             return false;
@@ -177,7 +198,8 @@ namespace poundfe
         {
           Vector f = element->force();
           if (opts.transient && element->rayleigh_damped()) // materials' own damping is in f
-            f += element_damping(*element, domain.rayleigh) * element_values(*element, v);
+            f += element_damping(*element, domain.rayleigh) *
+               element_values(*element, v, Vector::Zero(imposed_u.size()));
           for (unsigned int i = 0; i < f.size(); ++i)
             if (element->equations[i] >= 0)
               r[element->equations[i]] -= f[i];
@@ -373,15 +395,132 @@ namespace poundfe
     } // namespace
 
     int
+    Analysis::judge(const unsigned int iteration, const unsigned int max_iterations,
+                    const Vector &dx, const Vector &r, std::string &why)
+    {
+      const double norm = test_norm(dx, r);
+      const int    flag = opts.test.print_flag;
+      if (flag == 1 || (flag == 2 && norm <= opts.test.tolerance))
+        print_iteration(iteration, norm);
+      if (norm <= opts.test.tolerance)
+        return iteration;
+      if ((flag == 5 || flag == 6) && iteration >= max_iterations)
+        return iteration; // OpenSees: "failed to converge but going on"
+      if (iteration < max_iterations)
+        return 0;
+      std::ostringstream text;
+      text << "failed to converge after " << iteration << " iterations, current norm " << norm
+           << " (max: " << opts.test.tolerance << ")";
+      why = text.str();
+      return -1;
+    }
+
+    namespace
+    {
+      /// BFGS::BFGSUpdate's history on one tangent: the increments s_i, the
+      /// solutions z_i = K^-1 dr_i of the residual changes dr_i = R_i-1 -
+      /// R_i, and s_i . dr_i, z_i . dr_i. OpenSees stops each sum at the
+      /// first s_i . dr_i below 1e-16 (a signed test, kept as it is).
+      class BfgsHistory
+      {
+      public:
+        explicit BfgsHistory(const Vector &s_1)
+          : s{s_1}
+        {}
+
+        /// z_n from K^-1 dr_n (z) corrected by the earlier pairs, then the
+        /// quasi-Newton increment du from K^-1 R_n (du) and R_n (b).
+        void
+        update(Vector z, const Vector &dr, Vector &du, const Vector &b)
+        {
+          correct(z, dr, z_i.size());
+          z_i.push_back(z);
+          s_dot_r.push_back(s.back().dot(dr));
+          r_dot_z.push_back(z.dot(dr));
+          correct(du, b, z_i.size());
+        }
+
+        /// The increment the state moved by: s_n+1.
+        void
+        add(const Vector &du)
+        {
+          s.push_back(du);
+        }
+
+      private:
+        /// x += sum_i [(1 + r.z_i / s.r_i) (s_i . b) s_i - (z_i . b) s_i -
+        /// (s_i . b) z_i] / s.r_i over the first n pairs.
+        void
+        correct(Vector &x, const Vector &b, const std::size_t n) const
+        {
+          for (std::size_t i = 0; i < n; ++i)
+            {
+              if (s_dot_r[i] < 1e-16)
+                break;
+              const double sb = s[i].dot(b), zb = z_i[i].dot(b);
+              x += (1 + r_dot_z[i] / s_dot_r[i]) / s_dot_r[i] * sb * s[i];
+              x -= zb / s_dot_r[i] * s[i];
+              x -= sb / s_dot_r[i] * z_i[i];
+            }
+        }
+
+        std::vector<Vector> s, z_i;
+        std::vector<double> s_dot_r, r_dot_z;
+      };
+    } // namespace
+
+    int
+    Analysis::iterate_bfgs(std::string &why)
+    {
+      Vector x(n_equations), du(n_equations);
+      for (unsigned int tangent = 1;; ++tangent)
+        {
+          assemble_tangent(k_k, k_c, c_m);
+          Vector r = residual();
+          solver->solve(r, x); // the Newton increment s_1
+          ++last_iterations;
+          ++counts.iterations;
+          if (!apply_increment(x, why))
+            return -1;
+          BfgsHistory history(x);
+          Vector      resid_old = -r;
+          r                     = residual();
+          for (unsigned int n = 1;; ++n)
+            {
+              const Vector dr = -r - resid_old; // OpenSees's residNew - residOld
+              solver->solve(r, du);
+              solver->solve(dr, x); // K^-1 dr: the system's last solution, which the test sees
+              history.update(x, dr, du, r);
+              resid_old = -r;
+              ++last_iterations;
+              ++counts.iterations;
+              if (!apply_increment(du, why))
+                return -1;
+              history.add(du);
+              r = residual();
+              std::string local_why; // the inner test only ends the sequence
+              if (judge(n, opts.bfgs_count, x, r, local_why) != 0 || n >= opts.bfgs_count)
+                break;
+            }
+          const int verdict = judge(tangent, opts.test.max_iterations, x, r, why);
+          if (verdict != 0)
+            return verdict;
+        }
+    }
+
+    int
     Analysis::iterate(std::string &why)
     {
       using Algorithm = AnalysisOptions::Algorithm;
       const bool searching = opts.algorithm == Algorithm::newton_line_search;
       const bool krylov    = opts.algorithm == Algorithm::krylov_newton;
-      if ((searching || krylov) && opts.displacement_control && !opts.transient)
+      const bool bfgs      = opts.algorithm == Algorithm::bfgs;
+      if ((searching || krylov || bfgs) && opts.displacement_control && !opts.transient)
         throw ScriptError(std::string("algorithm ") +
-                          (searching ? "NewtonLineSearch" : "KrylovNewton") +
+                          (searching ? "NewtonLineSearch" : krylov ? "KrylovNewton" : "BFGS") +
                           " with integrator DisplacementControl is not supported");
+      if (opts.algorithm == Algorithm::bfgs)
+        return iterate_bfgs(why);
       const bool every_iteration = opts.algorithm == Algorithm::newton || searching;
       Vector     r               = residual();
       if (!every_iteration) // Linear, ModifiedNewton, KrylovNewton: one tangent per step
@@ -407,22 +546,9 @@ namespace poundfe
           // NewtonLineSearch searches unless the test is already met
           if (searching && test_norm(dx, r) > opts.test.tolerance && !line_search(s0, dx, r, why))
             return -1;
-          const double norm = test_norm(dx, r);
-          const int    flag = opts.test.print_flag;
-          if (flag == 1 || (flag == 2 && norm <= opts.test.tolerance))
-            print_iteration(iteration, norm);
-          if (norm <= opts.test.tolerance)
-            return iteration;
-          if ((flag == 5 || flag == 6) && iteration >= opts.test.max_iterations)
-            return iteration; // OpenSees: "failed to converge but going on"
-          if (iteration >= opts.test.max_iterations)
-            {
-              std::ostringstream text;
-              text << "failed to converge after " << iteration << " iterations, current norm "
-                   << norm << " (max: " << opts.test.tolerance << ")";
-              why = text.str();
-              return -1;
-            }
+          const int verdict = judge(iteration, opts.test.max_iterations, dx, r, why);
+          if (verdict != 0)
+            return verdict;
           if (krylov && accelerator.restart())
             assemble_tangent(k_k, k_c, c_m);
         }
@@ -559,6 +685,11 @@ namespace poundfe
     {
       if (domain.changed || !numbered)
         number();
+      if (opts.transient && !imposed_dofs.empty())
+        throw ScriptError("sp in a transient analysis is not supported");
+      if (!opts.transformation && !imposed_dofs.empty())
+        warn("PlainHandler::handle() - non-homogeneous sp constraint: homogeneous constraint "
+             "assumed (constraints Transformation imposes its value)");
       print = warn;
       if (lambda_step == 0)
         {

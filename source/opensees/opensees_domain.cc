@@ -103,6 +103,16 @@ namespace poundfe
         }
     }
 
+    std::map<std::pair<int, unsigned int>, double>
+    Domain::imposed_displacements(const double at_time) const
+    {
+      std::map<std::pair<int, unsigned int>, double> imposed;
+      for (const auto &[tag, pattern] : patterns)
+        for (const ImposedDisplacement &sp : pattern.imposed)
+          imposed[{sp.node, sp.dof}] += sp.value * pattern.load_factor(at_time);
+      return imposed;
+    }
+
     std::vector<double>
     Domain::ground_acceleration(const double at_time) const
     {

@@ -13,14 +13,17 @@
 #     tests/opensees/reference/ (bench/opensees/compare.py, tolerance per
 #     case in its CASES: 1e-10 of the peak linear, 1e-6 nonlinear, 1e-9 for
 #     the frame with committed-stiffness damping, HHT, NewtonLineSearch
-#     (whose searches' etas are compared too), KrylovNewton and element loads);
+#     (whose searches' etas are compared too), KrylovNewton, BFGS, element
+#     loads and a beam's end displacements imposed by sp);
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration, a line search other than
 #     InitialInterpolated, HHT's alpha outside (0, 1] or an infinite number,
 #     NewtonLineSearch with -maxIter < 1 or -minEta > -maxEta or with
 #     DisplacementControl, KrylovNewton with a tangent other than the current
 #     one, -maxDim < 0 or DisplacementControl, eleLoad on a beam-column, of another type, or
-#     outside a pattern, rigidLink beam.
+#     outside a pattern, rigidLink beam, BFGS -secant or -count 0, sp in a transient
+#     analysis, on a fixed DOF or outside a pattern; sp imposed (Transformation) and
+#     held at zero (Plain) on an elastic cantilever.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
 poundfe=$1 corpus=$2 python=$3
@@ -145,6 +148,28 @@ printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSe
   | bad krylov-dc '13: analyze: algorithm KrylovNewton with integrator DisplacementControl is not supported'
 printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1\nrecorder Element -file x.out -ele 1 plasticRotation\n' \
   | bad unknown-response "8: recorder: element 1 has no response 'plasticRotation' in poundfe"
+echo "algorithm BFGS -secant" | bad bfgs-secant \
+  "6: algorithm BFGS option '-secant': poundfe does not support it"
+echo "algorithm BFGS -count 0" | bad bfgs-count '6: algorithm: BFGS needs -count >= 1'
+printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { sp 2 1 0.001 }\nanalysis Transient\nanalyze 1 0.01\n' \
+  | bad sp-transient '11: analyze: sp in a transient analysis is not supported'
+printf 'fix 2 1 1 1\ntimeSeries Linear 1\npattern Plain 1 1 { sp 2 1 0.001 }\n' \
+  | bad sp-fixed '8: pattern: sp: node 2 DOF 1 is fixed'
+echo "sp 2 1 0.001" | bad sp-outside '6: sp: an sp belongs in the body of a Plain pattern'
+
+# sp on an elastic cantilever (L = 3, EI = 2e4), its tip's ux imposed at
+# 0.001 times the factor: Transformation imposes it (two steps: 0.002, the
+# tip turning by -3 u / 2L, the base's reaction 3 EI u / L^3), Plain holds
+# it at zero with OpenSees's warning
+sp_check() { # CONSTRAINTS EXPECTED-LINE
+  printf 'model basic -ndm 2 -ndf 3\nnode 1 0.0 0.0\nnode 2 0.0 3.0\nfix 1 1 1 1\ngeomTransf Linear 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { sp 2 1 0.001 }\nconstraints %s\nsystem BandGeneral\ntest NormDispIncr 1e-12 10\nalgorithm Newton\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 2\nreactions\nputs [format "u %%.12g %%.12g r %%.12g" [nodeDisp 2 1] [nodeDisp 2 3] [nodeReaction 1 1]]\n' \
+    "$1" > "$work/sp.tcl"
+  "$poundfe" opensees "$work/sp.tcl" > "$work/sp.out" 2>&1 || { cat "$work/sp.out"; fail "sp $1"; }
+  grep -qx -- "$2" "$work/sp.out" || { cat "$work/sp.out"; fail "sp $1: response"; }
+}
+sp_check Transformation "u 0.002 -0.001 r -4.44444444444"
+sp_check Plain "u 0 0 r 0"
+grep -q "homogeneous constraint assumed" "$work/sp.out" || fail "sp Plain: no warning"
 
 # 3. side by side with OpenSees 3.8: its committed numbers (every 10th row)
 "$python" "$here/../../bench/opensees/compare.py" "$poundfe" --check "$corpus/reference" \

@@ -21,7 +21,14 @@
 // earlier ones, v_k = r_k + sum c_j (v_j - (r_j - r_j+1)), c minimising
 // |A c - r_k| with A's columns r_j - r_j+1; the state moves by v_k, the test
 // sees r_k; after maxDim + 1 iterations a new tangent empties the
-// subspace), the tests NormDispIncr (|dU|), NormUnbalance
+// subspace), BFGS (BFGS.cpp: each tangent solves and applies one Newton
+// increment s_1, then up to -count quasi-Newton increments du_n = K^-1 R_n
+// corrected by the BFGS product of the earlier s_i and z_i = K^-1 (R_i-1 -
+// R_i), with s_i . (R_i-1 - R_i) and z_i . (R_i-1 - R_i); an inner copy of
+// the test with -count iterations ends that sequence, the script's test then
+// judges it once per tangent, with the last solution of the system, K^-1
+// (R_n-1 - R_n), as its displacement increment, as OpenSees's does), the
+// tests NormDispIncr (|dU|), NormUnbalance
 // (|R| after the update) and EnergyIncr (|dU . R| / 2), a failed step
 // reverted to the last commit and reported by the return value, as
 // `analyze` does. No step is cut and no event located: poundfe's own
@@ -41,6 +48,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace poundfe
@@ -70,8 +78,11 @@ namespace poundfe
         newton,
         modified_newton,
         newton_line_search,
-        krylov_newton
+        krylov_newton,
+        bfgs
       } algorithm = Algorithm::newton;
+      /// BFGS's -count: the quasi-Newton increments on one tangent.
+      unsigned int bfgs_count = 10;
       /// KrylovNewton's -maxDim: the iterations accelerated by one tangent.
       unsigned int krylov_dimension = 3;
       ConvergenceTest test;
@@ -103,6 +114,9 @@ namespace poundfe
       /// fresh integrator (its increment, its reference load).
       unsigned int    integrator_serial = 0;
       std::string     linear_solver = "umfpack";
+      /// constraints Transformation: an sp command imposes its value;
+      /// Plain (OpenSees's PlainHandler) holds the DOF at zero, with a warning.
+      bool            transformation = false;
     };
 
     /// What the analyses of a script have done (poundfe::report).
@@ -147,6 +161,13 @@ namespace poundfe
       /// phat = R at the committed state and the factor lambda + 1.
       void   reference_load();
       int    iterate(std::string &why);
+      /// BFGS's iterations of a step (BFGS::solveCurrentStep).
+      int    iterate_bfgs(std::string &why);
+      /// The test's verdict on an iterate, with at most max_iterations: the
+      /// iteration when it converged (or goes on past the limit, print flag
+      /// 5), 0 to iterate again, -1 (with why) when it failed.
+      int    judge(unsigned int iteration, unsigned int max_iterations, const Vector &dx,
+                   const Vector &r, std::string &why);
       /// U += dx with V, A (Newmark's or HHT's update) and the elements at
       /// the evaluation point.
       bool   apply_increment(const Vector &dx, std::string &why);
@@ -169,6 +190,10 @@ namespace poundfe
       bool            at_alpha = false;    // HHT's iterations: elements at U_alpha
       double          step_dt  = 0;
       Vector          mass_of_equation;    // lumped nodal masses
+      /// The DOFs the sp commands impose (node, 0-based DOF) and their
+      /// values at the trial time.
+      std::vector<std::pair<int, unsigned int>> imposed_dofs;
+      Vector                                    imposed_u;
       double          trial_time = 0, lambda_step = 0, last_iterations = 1;
       double          c_c = 0, c_m = 0;    // the step's update coefficients
       double          k_k = 1, k_c = 0;    // the tangent's K and C factors (HHT: alpha, alpha c_c)

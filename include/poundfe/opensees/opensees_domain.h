@@ -53,7 +53,8 @@ namespace poundfe
       std::vector<bool>   fixed; // per DOF
       /// Committed response per DOF (relative to the ground).
       std::vector<double> disp, vel, accel;
-      /// The equation of each DOF (-1: fixed), set by the analysis.
+      /// The equation of each DOF (-1: fixed; -2 - j: the analysis's j-th
+      /// imposed displacement), set by the analysis.
       std::vector<int> equation;
     };
 
@@ -136,6 +137,17 @@ namespace poundfe
       double wy = 0, wx = 0;
     };
 
+    /// sp node dof value inside a Plain pattern: the DOF (0-based) held at
+    /// value times the pattern's factor (OpenSees's SP_Constraint of a
+    /// pattern, which the Transformation handler removes from the
+    /// equations and imposes).
+    struct ImposedDisplacement
+    {
+      int          node = 0;
+      unsigned int dof  = 0;
+      double       value = 0;
+    };
+
     /// A load pattern: Plain (nodal loads times its series) or
     /// UniformExcitation (ground acceleration along `direction`).
     struct Pattern
@@ -147,6 +159,7 @@ namespace poundfe
       unsigned int                direction = 0; // uniform excitation: 0-based DOF
       std::vector<NodalLoad>      loads;
       std::vector<BeamUniformLoad> beam_loads;
+      std::vector<ImposedDisplacement> imposed;
       /// loadConst: the factor frozen at the time it was called.
       bool   constant        = false;
       double constant_factor = 0;
@@ -207,6 +220,9 @@ namespace poundfe
       /// The Plain patterns' element loads at `time` handed to their
       /// elements (OpenSees's LoadPattern::applyLoad: zeroLoad, addLoad).
       void apply_element_loads(double time);
+      /// The displacement of each DOF the Plain patterns' sp commands
+      /// impose, at `time` (the sum over the patterns that impose it).
+      std::map<std::pair<int, unsigned int>, double> imposed_displacements(double time) const;
       /// The ground acceleration along each DOF at `time` (UniformExcitation).
       std::vector<double> ground_acceleration(double time) const;
       /// OpenSees's nodal reactions (Domain::calculateNodalReactions(flag)

@@ -1,0 +1,252 @@
+// A poundfe model described as an OpenSees 3.8 script (report/
+// opensees_export.h says what each part becomes and why it is the same
+// model). OpenSees's conventions: zeroLength's deformation is u_j - u_i
+// along its direction (ZeroLength.cpp), ElasticPPGap's gap and yield force
+// are negative for a gap that closes in compression (ElasticPPGap.cpp),
+// uniaxialMaterial Elastic E eta's force is E e + eta de/dt
+// (ElasticMaterial.cpp), UniformExcitation's load is -M r a_g.
+#include <poundfe/base/exceptions.h>
+#include <poundfe/report/opensees_export.h>
+
+#include <sstream>
+
+namespace poundfe
+{
+  namespace
+  {
+    /// A number as OpenSees reads it back to the last bit.
+    std::string
+    exact_text(const double value)
+    {
+      std::ostringstream text;
+      text.precision(17);
+      text << value;
+      return text.str();
+    }
+
+    std::string
+    building_entry(const unsigned int b, const std::string &entry)
+    {
+      return "Building " + std::to_string(b + 1) + "/" + entry;
+    }
+
+    /// The parts of the model OpenSees cannot be given the same way:
+    /// InputError naming the first one's entry.
+    void
+    refuse_model_parts(const Analysis &analysis, const InputFile &input)
+    {
+      const Model &model = analysis.model;
+      if (model.dimension != 2)
+        input.fail("Model/Dimension", "export-opensees writes 2D shear buildings only");
+      if (model.geometric_nonlinearity != GeometricNonlinearity::none)
+        input.fail("Model/Geometric nonlinearity", "export-opensees writes no P-Delta");
+      if (model.gravity_analysis.enabled)
+        input.fail("Model/Gravity analysis/Type", "export-opensees writes no gravity analysis");
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        {
+          if (model.buildings[b].type != BuildingType::shear)
+            input.fail(building_entry(b, "Type"),
+                       "export-opensees writes shear buildings only (not frames yet)");
+          if (model.buildings[b].damping.is_modal())
+            input.fail(building_entry(b, "Damping/Type"),
+                       "modal damping has no element form in OpenSees 3.8's Tcl commands "
+                       "that poundfe's export writes (Rayleigh damping: modes or coefficients)");
+        }
+      for (const StoreyLink &link : model.links)
+        if (link.hysteretic)
+          input.fail(building_entry(link.building, "Bouc-Wen"),
+                     "export-opensees writes elastic storeys only (Bouc-Wen not yet)");
+      if (!model.springs.empty() || !model.friction_surfaces.empty())
+        input.fail(model.springs.empty() ? "Friction" : "Springs",
+                   "export-opensees writes no springs to the ground or friction");
+      if (!model.building_links.empty())
+        input.fail("Links", "export-opensees writes no links between buildings");
+      if (!model.foundations.empty() || !model.constraints.empty())
+        input.fail(building_entry(model.foundations.empty() ? 0 : model.foundations[0].building,
+                                  "Foundation/Type"),
+                   "export-opensees writes fixed bases only");
+      if (model.bumper.law != BumperLaw::none)
+        input.fail("Contact/Bumper/Law", "export-opensees writes bare gaps only");
+      if (!model.gaps.empty() && model.contact.law != "linear")
+        input.fail("Contact/Law", "export-opensees writes the linear contact law (ElasticPPGap) "
+                                  "only; '" + model.contact.law + "' not yet");
+    }
+
+    /// The excitation and the integration OpenSees cannot be given.
+    void
+    refuse_excitation(const TimeHistoryParameters &parameters, const Excitation &excitation)
+    {
+      const InputFile &input = parameters.input;
+      if (parameters.time_integration.method != TimeIntegrationMethod::newmark)
+        input.fail("Time integration/Method", "export-opensees writes Newmark only");
+      if (excitation.has_horizontal_pair() || excitation.has_vertical())
+        input.fail("Ground motion/Components", "export-opensees writes one horizontal component");
+      if (!excitation.nodal_forces().empty())
+        input.fail("Nodal forces/File", "export-opensees writes no nodal forces");
+      if (const double a0 = excitation.ground_acceleration(0); a0 != 0)
+        input.fail("Ground motion/Type",
+                   "the ground motion starts at a_g(0) = " + exact_text(a0) +
+                     " m/s^2: OpenSees's Newmark starts from a zero acceleration, poundfe's "
+                     "from M a(0) = p(0), so the runs would differ");
+      const InitialConditionParameters &initial = parameters.initial_conditions;
+      if (!initial.floor_displacements.empty() || !initial.floor_velocities.empty() ||
+          !initial.equation_displacements.empty() || !initial.equation_velocities.empty() ||
+          !initial.state.empty())
+        input.fail("Initial conditions/Floor displacements",
+                   "export-opensees starts from rest only");
+    }
+
+    /// The lumped mass on the node's ux (0 when fixed); InputError when M
+    /// couples it to another equation.
+    double
+    node_mass(const Analysis &analysis, const unsigned int node, const InputFile &input)
+    {
+      const int eq = analysis.model.equation(Model::dof(node, Component::ux));
+      if (eq < 0)
+        return 0;
+      double diagonal = 0;
+      for (SparseMatrix::InnerIterator it(analysis.system.mass, eq); it; ++it)
+        if (it.row() == eq)
+          diagonal = it.value();
+        else if (it.value() != 0)
+          input.fail("Model/Mass matrix", "export-opensees writes lumped masses only");
+      return diagonal;
+    }
+
+    /// Numbers of the script being written: the next free tags.
+    struct Tags
+    {
+      int node = 0, material = 1, element = 1;
+    };
+
+    /// Each building's nodes (with masses and fixities) and the dashpots of
+    /// its a0 M term to fixed nodes of their own.
+    void
+    describe_nodes(const Analysis &analysis, const InputFile &input, Tags &tags,
+                   OpenSeesExport &out)
+    {
+      const Model &model = analysis.model;
+      for (unsigned int n = 0; n < model.n_nodes(); ++n)
+        {
+          const Node &node = model.nodes[n];
+          for (const Component c : {Component::uy, Component::rz})
+            if (model.equation(Model::dof(n, c)) >= 0)
+              input.fail(building_entry(node.building, "Type"),
+                         "a shear building's node moves in uy or rz");
+          const double m = node_mass(analysis, n, input);
+          std::string  line = "node " + std::to_string(n + 1) + " " + exact_text(node.position.x);
+          if (m != 0)
+            line += " -mass " + exact_text(m);
+          out.model.push_back(line);
+          if (model.equation(Model::dof(n, Component::ux)) < 0)
+            out.model.push_back("fix " + std::to_string(n + 1) + " 1");
+          const double a0 = analysis.system.rayleigh.at(node.building)[0];
+          if (a0 != 0 && m != 0)
+            {
+              const int ground = ++tags.node;
+              out.model.push_back("node " + std::to_string(ground) + " " +
+                                  exact_text(node.position.x));
+              out.model.push_back("fix " + std::to_string(ground) + " 1");
+              out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) +
+                                  " 0.0 " + exact_text(a0 * m) + " ;# a0 m of the Rayleigh damping");
+              out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                                  std::to_string(ground) + " " + std::to_string(n + 1) +
+                                  " -mat " + std::to_string(tags.material++) + " -dir 1");
+            }
+        }
+    }
+
+    /// The storeys: elastic springs with the a1 K and storey dashpots, and
+    /// the floors to record.
+    void
+    describe_storeys(const Analysis &analysis, Tags &tags, OpenSeesExport &out)
+    {
+      const Model &model = analysis.model;
+      out.model.push_back("# storeys: zeroLength on Elastic k eta, eta = a1 k + the storey's "
+                          "dashpot");
+      for (const StoreyLink &link : model.links)
+        {
+          const double a1  = analysis.system.rayleigh.at(link.building)[1];
+          const double eta = a1 * link.stiffness + link.damping;
+          out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) + " " +
+                              exact_text(link.stiffness) + " " + exact_text(eta));
+          out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                              std::to_string(link.nodes[0] + 1) + " " +
+                              std::to_string(link.nodes[1] + 1) + " -mat " +
+                              std::to_string(tags.material++) + " -dir 1");
+        }
+      for (const Building &building : model.buildings)
+        for (unsigned int f = 0; f < building.floors.size(); ++f) // floor 1 up
+          for (const unsigned int n : building.floors[f].nodes)
+            {
+              out.floor_nodes.push_back(n + 1);
+              out.floor_names.push_back(building.name + "_floor" + std::to_string(f + 1) +
+                                        "_disp_m");
+            }
+    }
+
+    /// The gaps: zeroLength on ElasticPPGap from the left node to the right
+    /// one, a fixed node standing for a barrier.
+    void
+    describe_gaps(const Analysis &analysis, Tags &tags, OpenSeesExport &out)
+    {
+      const Model &model = analysis.model;
+      if (model.gaps.empty())
+        return;
+      out.model.push_back("# gaps: the linear contact law F = k d as ElasticPPGap k Fy -gap, "
+                          "Fy beyond any impact's force");
+      for (unsigned int g = 0; g < model.gaps.size(); ++g)
+        {
+          const Gap  &gap = model.gaps[g];
+          std::string ends[2];
+          for (unsigned int side = 0; side < 2; ++side)
+            if (gap.nodes[side] >= 0)
+              ends[side] = std::to_string(gap.nodes[side] + 1);
+            else
+              {
+                const int barrier = ++tags.node;
+                out.model.push_back("node " + std::to_string(barrier) + " 0.0");
+                out.model.push_back("fix " + std::to_string(barrier) + " 1 ;# the barrier");
+                ends[side] = std::to_string(barrier);
+              }
+          const double k = model.contact.stiffness;
+          out.model.push_back("uniaxialMaterial ElasticPPGap " + std::to_string(tags.material) +
+                              " " + exact_text(k) + " " + exact_text(-1e6 * k) + " " +
+                              exact_text(-gap.initial_gap) + " ;# " + gap.label);
+          out.gap_elements.push_back(tags.element);
+          out.gap_names.push_back(gap.label.empty() ? "gap" + std::to_string(g + 1) : gap.label);
+          out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                              ends[0] + " " + ends[1] + " -mat " +
+                              std::to_string(tags.material++) + " -dir 1");
+        }
+      out.nonlinear = true;
+    }
+  } // namespace
+
+  OpenSeesExport
+  describe_opensees(const Analysis &analysis, const TimeHistoryParameters &parameters,
+                    const Excitation &excitation)
+  {
+    refuse_model_parts(analysis, parameters.input);
+    refuse_excitation(parameters, excitation);
+    OpenSeesExport out;
+    Tags           tags;
+    tags.node = analysis.model.n_nodes();
+    out.model.push_back("# nodes: a floor's ux with its mass; the base and the damping's "
+                        "ground nodes fixed");
+    describe_nodes(analysis, parameters.input, tags, out);
+    describe_storeys(analysis, tags, out);
+    describe_gaps(analysis, tags, out);
+    const NewmarkParameters &newmark = parameters.time_integration.newmark;
+    out.time_step                    = newmark.time_step;
+    out.gamma                        = newmark.gamma;
+    out.beta                         = newmark.beta;
+    out.n_steps                      = n_steps_of(parameters, excitation);
+    // one sample past the end: OpenSees's time after n steps, summed step by
+    // step, may pass n dt by round-off, where a Path of n + 1 values gives 0
+    out.ground_acceleration.resize(out.n_steps + 2);
+    for (unsigned long i = 0; i <= out.n_steps + 1; ++i)
+      out.ground_acceleration[i] = excitation.ground_acceleration(i * out.time_step);
+    return out;
+  }
+} // namespace poundfe

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# `poundfe export-opensees` (Exporting a model to OpenSees in
+# doc/user-guide.md): every example of input/ that OpenSees can express is
+# exported, the script run by poundfe's own `poundfe opensees`, and its
+# floor displacements compared with `poundfe run` of the same file, step by
+# step (Output interval = 0), relative to each floor's peak:
+#  - linear (no gaps): 1e-9, round-off of two implementations of the same
+#    Newmark recursion on the same M, C, K and record samples;
+#  - with linear gaps (ElasticPPGap): poundfe run without its event location
+#    and impact sub-steps (Contact/Event refinement = 0, Steps per contact =
+#    0), the same fixed-step Newmark-Newton: 1e-6, the difference of two
+#    converged Newton iterates (poundfe stops at a relative residual of
+#    1e-8, the script at |dU| < 1e-12);
+# and the refusals name the entry OpenSees cannot be given (frames, Bouc-Wen
+# storeys, a contact law other than the linear one, modal damping, a record
+# that does not start at zero).
+#   opensees_export.sh POUNDFE INPUT_DIR PYTHON3
+set -u
+poundfe=$1 inputs=$2 python=$3
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+. "$here/helpers.sh"
+"$python" -c "import numpy" 2> /dev/null || python=/usr/bin/python3
+
+# compare.py-like: floor_disp.out (time, floors) against floor_displacement.csv
+same_floors() { # OPENSEES_DIR RUN_DIR SCRIPT TOLERANCE
+  "$python" - "$@" <<'PY'
+import re, sys
+import numpy as np
+ours, run, script, tolerance = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+names = re.search(r"columns: time (.*)", open(script).read()).group(1).split()
+table = np.loadtxt(ours + "/floor_disp.out", ndmin=2)
+csv = np.genfromtxt(run + "/floor_displacement.csv", delimiter=",", names=True)
+assert len(csv) == len(table) + 1, (len(csv), len(table))  # the run's row at t = 0
+for j, name in enumerate(names):
+    mine, theirs = table[:, j + 1], csv[name][1:]
+    peak = np.abs(theirs).max()
+    d = np.abs(mine - theirs).max() / peak
+    print(f"{name}: peak {peak:.6e} largest difference / peak {d:.1e}")
+    assert d <= tolerance, (name, d)
+PY
+}
+
+check_example() { # NAME TOLERANCE [--set ...]
+  local name=$1 tolerance=$2
+  shift 2
+  local dir="$work/$name"
+  "$poundfe" export-opensees "$inputs/$name.prm" --output "$dir/script" > "$dir.log" 2>&1 \
+    || { cat "$dir.log"; fail "$name: export"; }
+  "$poundfe" opensees "$dir/script/model.tcl" "$dir/script" > "$dir.os.log" 2>&1 \
+    || { cat "$dir.os.log"; fail "$name: poundfe opensees"; }
+  grep -q "^status 0 " "$dir.os.log" || { cat "$dir.os.log"; fail "$name: analyze failed"; }
+  "$poundfe" run "$inputs/$name.prm" --output "$dir/run" --set "Output/Output interval=0" \
+    --set "Output/VTU interval=0" --set "Output/Plots=false" "$@" > "$dir.run.log" 2>&1 \
+    || { cat "$dir.run.log"; fail "$name: run"; }
+  same_floors "$dir/script" "$dir/run" "$dir/script/model.tcl" "$tolerance" > "$dir.cmp" 2>&1 \
+    || { cat "$dir.cmp"; fail "$name: floor displacements"; }
+  echo "ok $name"; cat "$dir.cmp"
+}
+
+# every example of input/ the export takes (the others are refused: below)
+check_example three-storey-shear 1e-9
+check_example floor-spectra 1e-9
+no_events=(--set "Contact/Event refinement=0" --set "Contact/Steps per contact=0")
+for name in shear-pair-pounding site-hazard separation-hazard mitigation-shear-pair; do
+  check_example $name 1e-6 "${no_events[@]}"
+done
+# the gaps closed: the pounding pair's script has gap forces, some non-zero
+"$python" -c "
+import numpy as np, sys
+f = np.loadtxt('$work/shear-pair-pounding/script/gap_force.out', ndmin=2)
+sys.exit(0 if np.abs(f[:, 1:]).max() > 0 else 'no impact')" || fail "shear-pair-pounding: no impact"
+
+# refusals by entry, nothing written
+refused() { # NAME EXPECTED-ENTRY-AND-MESSAGE-PART
+  local dir="$work/refused-$1"
+  "$poundfe" export-opensees "$inputs/$1.prm" --output "$dir" > "$dir.out" 2> "$dir.err"
+  local status=$?
+  [ "$status" = 1 ] || { cat "$dir.err"; fail "$1: exit status $status"; }
+  grep -qF -- "$2" "$dir.err" || { cat "$dir.err"; fail "$1: message"; }
+  [ ! -e "$dir/model.tcl" ] || fail "$1: model.tcl written"
+}
+refused two-storey-frame "'Building 1/Type': export-opensees writes shear buildings only"
+refused bouc-wen-sdof "'Building 1/Bouc-Wen': export-opensees writes elastic storeys only"
+refused spillway-abutment "'Contact/Law': export-opensees writes the linear contact law"
+refused three-storey-free-vibration "'Building 1/Damping/Type': modal damping"
+# white noise without an envelope: a_g(0) != 0, where the two Newmarks start apart
+refused subset-drift "'Ground motion/Type': the ground motion starts at a_g(0) = "
+echo "opensees_export: ok"
