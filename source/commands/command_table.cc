@@ -141,15 +141,15 @@ namespace poundfe
        "at constant axial force: first yield, peak, ultimate, ductility\n"
        "(moment_curvature.csv, summary.json, moment_curvature.png)",
        file, summary, commands::moment_curvature},
-      {"opensees", "SCRIPT [ARGS...]",
-       "runs an OpenSees Tcl script (Tcl 8.6, OpenSees's commands on\n"
-       "poundfe's engine; ARGS are the script's argv; see the user guide)",
-       script, "", commands::opensees},
       {"export-opensees", "FILE",
        "the model as an OpenSees 3.8 Tcl script (model.tcl) with its ground\n"
        "motion (ground_motion.txt): shear buildings, linear gaps, Rayleigh\n"
        "damping, Newmark at the time step; what OpenSees cannot express is refused",
        file, "", commands::export_opensees},
+      {"opensees", "SCRIPT [ARGS...]",
+       "runs an OpenSees Tcl script (Tcl 8.6, OpenSees's commands on\n"
+       "poundfe's engine; ARGS are the script's argv; see the user guide)",
+       script, "", commands::opensees},
       {"print-parameters", "", "every parameter with its documentation and default",
        none, "", commands::print_parameters},
       {"template", "KIND",

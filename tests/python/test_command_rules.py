@@ -56,6 +56,7 @@ ROWS = {
     "switching": (os.path.join(CLI, "switching-belt.prm"), set(), QUIET),
     "moment-curvature": (os.path.join("input", "moment-curvature-rc-column.prm"), set(),
                          {**QUIET, "Moment curvature/Steps": 30}),
+    "export-opensees": (os.path.join("input", "three-storey-shear.prm"), set(), QUIET),
 }
 SCRIPT_ROWS = {"opensees"}  # CommandRule::script_arguments
 NO_FILE = {"opensees": [os.path.join("tests", "opensees", "modes.tcl")],
