@@ -8,9 +8,8 @@
 #include <poundfe/base/interruption.h>
 #include <poundfe/commands/command.h>
 #include <poundfe/input/bifurcation_input.h>
-#include <poundfe/output/atomic_file.h>
-#include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 
@@ -42,39 +41,33 @@ namespace poundfe
 
     void
     write_tables(const InputParameters &input, const std::vector<BifurcationPoint> &points,
-                 const std::string &directory)
+                 const CommandRun &run)
     {
       const BifurcationParameters &b = input.bifurcation;
       const std::string x = b.sweep.column_name();
-      CsvWriter samples(directory + "/bifurcation.csv", {x, "sample", response_column(b)});
-      CsvWriter classes(directory + "/bifurcation_classification.csv",
-                        {x, "period", "lyapunov_exponent_1_s", "forcing_period_s", "time_step_s",
-                         "response_range", "completed"});
+      const std::unique_ptr<TableWriter> samples = result_table_writer(
+        run.memory, run.directory, "bifurcation", {x, "sample", response_column(b)});
+      const std::unique_ptr<TableWriter> classes =
+        result_table_writer(run.memory, run.directory, "bifurcation_classification",
+                            {x, "period", "lyapunov_exponent_1_s", "forcing_period_s",
+                             "time_step_s", "response_range", "completed"});
       for (const BifurcationPoint &point : points)
         {
           for (std::size_t k = 0; k < point.samples.size(); ++k)
-            {
-              samples.begin_row(point.value);
-              samples.add(k + 1);
-              samples.add(point.samples[k]);
-              samples.end_row();
-            }
-          classes.begin_row(point.value);
-          for (const double c : {double(point.period), point.lyapunov_exponent,
-                                 point.forcing_period, point.time_step, point.response_range,
-                                 point.completed ? 1.0 : 0.0})
-            classes.add(c);
-          classes.end_row();
+            samples->add_row(point.value, {double(k + 1), point.samples[k]});
+          classes->add_row(point.value, {double(point.period), point.lyapunov_exponent,
+                                         point.forcing_period, point.time_step,
+                                         point.response_range, point.completed ? 1.0 : 0.0});
         }
-      samples.commit();
-      classes.commit();
+      samples->commit();
+      classes->commit();
     }
 
     /// summary.json: the settings, how time was stepped, and per value the
     /// period (0: non-periodic) and the Lyapunov exponent.
     void
     write_summary(const InputParameters &input, const std::vector<BifurcationPoint> &points,
-                  const std::string &directory, const double wall_time, const bool interrupted)
+                  const CommandRun &run, const double wall_time, const bool interrupted)
     {
       const BifurcationParameters &b = input.bifurcation;
       std::vector<double> values, periods, exponents, forcing, steps;
@@ -103,7 +96,7 @@ namespace poundfe
         .value("perturbation", b.perturbation).value("wall_time_s", wall_time)
         .value("values", values).value("periods", periods).value("lyapunov_exponents_1_s", exponents)
         .value("forcing_periods_s", forcing).value("time_steps_s", steps).end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(run.memory, run.directory, "summary.json", json.str());
     }
 
     /// The diagram (Poincaré samples as dots against the value) with the
@@ -146,16 +139,18 @@ namespace poundfe::commands
     const bool interrupted = interruption_requested();
 
     timer.enter_subsection("output");
-    prepare_output_directory(run.directory);
-    write_tables(input, points, run.directory);
-    write_summary(input, points, run.directory, wall_time, interrupted);
-    if (input.output.plots && !points.empty())
+    if (!run.memory)
+      prepare_output_directory(run.directory);
+    write_tables(input, points, run);
+    write_summary(input, points, run, wall_time, interrupted);
+    if (input.output.plots && !points.empty() && !run.memory)
       draw_diagram(input, run.directory);
     timer.leave_subsection();
     if (interrupted)
       {
-        run.err << "poundfe: bifurcation interrupted (" << run.directory
-                << "/summary.json says interrupted): " << points.size() << " of "
+        run.err << "poundfe: bifurcation interrupted ("
+                << (run.memory ? "the summary" : run.directory + "/summary.json")
+                << " says interrupted): " << points.size() << " of "
                 << b.sweep.values().size() << " values kept in bifurcation.csv\n";
         return interrupted_exit_status();
       }
@@ -163,9 +158,9 @@ namespace poundfe::commands
     const auto n_failed = std::count_if(points.begin(), points.end(),
                                         [](const BifurcationPoint &p) { return !p.completed; });
     run.out << "poundfe bifurcation: " << points.size() << " values of " << b.sweep.parameter
-            << " in " << wall_time << " s\nresults in " << run.directory
-            << "/ (bifurcation.csv, bifurcation_classification.csv, summary.json, "
-               "bifurcation.png)\n";
+            << " in " << wall_time << " s\nresults in " << run.results_place()
+            << " (bifurcation.csv, bifurcation_classification.csv, summary.json"
+            << (run.memory ? "" : ", bifurcation.png") << ")\n";
     print_timing(timer);
     if (n_failed > 0)
       {

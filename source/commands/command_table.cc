@@ -60,13 +60,13 @@ namespace poundfe
       {"pushover", "FILE",
        "static pushover after the gravity state: capacity curve, storey\n"
        "drifts and hinges (pushover.csv, PNG), EC8 bilinear curve and N2 target",
-       file, summary, commands::pushover},
+       file | memory, summary, commands::pushover},
       {"ground-motion", "FILE [--realizations N [--write-at2]]",
        "the ground acceleration a run would use (CSV, PNG); with N,\n"
        "realizations 0..N-1 and their ensemble PSD against the target;\n"
        "--write-at2: each also as a PEER AT2 file, with a record suite\n"
        "(records/suite.csv) for the IDA section",
-       file | realizations | CommandRule::writes_at2, summary, commands::ground_motion},
+       file | realizations | CommandRule::writes_at2 | memory, summary, commands::ground_motion},
       {"spectrum", "FILE [--realizations N]",
        "response spectrum (Sd, PSV, PSA), PGA/PGV/PGD, Arias intensity,\n"
        "D5-95 of the ground motion; with N, the ensemble mean spectrum\n"
@@ -75,9 +75,9 @@ namespace poundfe
       {"montecarlo", "FILE", "Monte Carlo over the random loading (MPI: mpirun -np P ...)",
        file | mpi | own_interruption | resumable | memory, summary, commands::montecarlo},
       {"subset", "FILE", "Subset Simulation of a small exceedance probability (MPI)",
-       file | mpi | own_interruption | resumable, summary, commands::subset},
+       file | mpi | own_interruption | resumable | memory, summary, commands::subset},
       {"fragility", "FILE", "Monte Carlo over PGA levels, lognormal fragility curves (MPI)",
-       file | mpi | own_interruption | resumable, summary, commands::fragility},
+       file | mpi | own_interruption | resumable | memory, summary, commands::fragility},
       {"ida", "FILE",
        "incremental dynamic analysis of the IDA section's record suite:\n"
        "hunt and fill to collapse per record, every demand at every\n"
@@ -95,7 +95,7 @@ namespace poundfe
       {"stationary-pdf", "FILE",
        "stationary PDFs of a noisy response: histogram, kernel density,\n"
        "peaks, joint p(x, v) (MPI)",
-       file | mpi | own_interruption | resumable, summary, commands::stationary_pdf},
+       file | mpi | own_interruption | resumable | memory, summary, commands::stationary_pdf},
       {"sweep", "FILE",
        "the run's peaks against the values of the Sweep section's\n"
        "parameter (sweep.csv, sweep.png, summary.json)",
@@ -103,12 +103,12 @@ namespace poundfe
       {"bifurcation", "FILE",
        "Poincare samples, their period and the largest Lyapunov\n"
        "exponent against the Bifurcation section's parameter",
-       file | own_interruption, summary, commands::bifurcation},
+       file | own_interruption | memory, summary, commands::bifurcation},
       {"site-hazard", "FILE",
        "site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
        "Poisson fit, return periods, fragility x hazard; the earthquake\n"
        "coefficient, OBE and MCE of a Site study",
-       file, summary, commands::site_hazard},
+       file | memory, summary, commands::site_hazard},
       {"separation", "FILE",
        "joint width of adjacent buildings: ABS, SRSS, DDC, EC8 and\n"
        "ASCE 7 rules against the time history without contact (or\n"
@@ -121,21 +121,21 @@ namespace poundfe
        "the bare pair against viscous dampers of each size and bumpers\n"
        "(Mitigation section): drifts, floor accelerations, impacts,\n"
        "P(pounding) and the required gap of each case (MPI)",
-       file | mpi | own_interruption | resumable, summary, commands::mitigation},
+       file | mpi | own_interruption | resumable | memory, summary, commands::mitigation},
       {"reliability", "FILE",
        "failure probability of algebraic limit states (Reliability\n"
        "section): FORM, SORM, importance sampling, Monte Carlo, subset",
-       file | mpi | own_interruption, summary, commands::reliability},
+       file | mpi | own_interruption | memory, summary, commands::reliability},
       {"dynamic-form", "FILE",
        "FORM on a time-history limit state (Random parameters):\n"
        "beta, Pf, design point, alpha, number of time histories",
-       file, summary, commands::dynamic_form},
+       file | memory, summary, commands::dynamic_form},
       {"switching", "FILE",
        "Filippov switching analysis of a small model: each hit of a\n"
        "gap, its rate in contact or a slip velocity classified as\n"
        "crossing, sliding (stick), grazing or sliding exit; sliding by\n"
        "the convex method (switching.csv, phase_portrait.png)",
-       file, summary, commands::switching},
+       file | memory, summary, commands::switching},
       {"moment-curvature", "FILE",
        "moment-curvature of a fibre section (Sections, Moment curvature)\n"
        "at constant axial force: first yield, peak, ultimate, ductility\n"

@@ -11,9 +11,9 @@
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
-#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/reliability/dynamic_form.h>
 #include <poundfe/reliability/random_parameters.h>
@@ -149,7 +149,7 @@ namespace poundfe::commands
                 << result.importance->n_samples << " time histories)\n";
       if (!result.form_check.empty())
         run.err << "poundfe: warning: " << result.form_check << "\n";
-      run.out << "results in " << run.directory << "/ (summary.json"
+      run.out << "results in " << run.results_place() << " (summary.json"
               << (result.form.design_point_u.empty() ? "" : ", design_point.csv") << ")\n";
     }
   } // namespace
@@ -164,11 +164,12 @@ namespace poundfe::commands
     const ResponseLimitStates limit_states(input.random_parameters, runner.response_names(),
                                            input);
     const DynamicFormSettings settings = form_settings(input, runner);
-    prepare_output_directory(run.directory);
+    if (!run.memory)
+      prepare_output_directory(run.directory);
     const DynamicFormResult result = poundfe::dynamic_form(runner, limit_states, settings);
     if (!result.form.design_point_u.empty())
-      write_file_atomically(run.directory + "/design_point.csv", design_point_csv(result));
-    write_file_atomically(run.directory + "/summary.json", summary_json(input, result));
+      write_result_text(run.memory, run.directory, "design_point.csv", design_point_csv(result));
+    write_result_text(run.memory, run.directory, "summary.json", summary_json(input, result));
     report(run, result);
     if (!result.form.converged)
       {

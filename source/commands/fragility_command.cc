@@ -9,8 +9,8 @@
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/append_file.h>
-#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/montecarlo.h>
@@ -32,7 +32,7 @@ namespace poundfe::commands
   {
     /// fragility_points.csv: the observed fractions at each level done.
     void
-    write_points(const std::string &directory, const std::vector<double> &levels,
+    write_points(const CommandRun &run, const std::vector<double> &levels,
                  const std::vector<FragilityCurve> &curves)
     {
       std::string points = "pga_g,realizations";
@@ -50,12 +50,12 @@ namespace poundfe::commands
             }
           points += "\n";
         }
-      write_file_atomically(directory + "/fragility_points.csv", points);
+      write_result_text(run.memory, run.directory, "fragility_points.csv", points);
     }
 
     /// fragility_curves.csv: the fits from 0 to 1.5 times the highest level.
     void
-    write_fitted(const std::string &directory, const std::vector<double> &levels,
+    write_fitted(const CommandRun &run, const std::vector<double> &levels,
                  const std::vector<FragilityCurve> &curves)
     {
       std::string fitted = "pga_g";
@@ -75,7 +75,20 @@ namespace poundfe::commands
             }
           fitted += "\n";
         }
-      write_file_atomically(directory + "/fragility_curves.csv", fitted);
+      write_result_text(run.memory, run.directory, "fragility_curves.csv", fitted);
+    }
+
+    /// In memory, each level's realizations.csv under `folder`: the rows a
+    /// run into files journals as they come.
+    void
+    write_level_tables(const CommandRun &run, const FragilityLevels &done,
+                       const std::string &folder)
+    {
+      if (run.memory)
+        for (std::size_t j = 0; j < done.tables.size(); ++j)
+          write_result_text(run.memory, run.directory,
+                            folder + fragility_level_folder(done.levels[j]) + "/realizations.csv",
+                            realizations_text(done.tables[j]));
     }
 
     /// The curves in summary.json and the console, and fragility.png's series.
@@ -183,8 +196,9 @@ namespace poundfe::commands
       runner.n_parameters() > 0 ? std::make_unique<RealizationRunner>(analysis, parameters) :
                                   nullptr;
     const double      reference_pga = runner.reference_pga("fragility curves");
-    if (rank == 0) // an earlier run's realizations stay: it resumes from them
+    if (rank == 0 && !run.memory) // an earlier run's realizations stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});
+    const std::string journals = run.memory ? "" : directory; // "": none
     timer.leave_subsection();
 
     timer.enter_subsection("realizations");
@@ -194,11 +208,12 @@ namespace poundfe::commands
     Progress progress(std::cerr, "realizations",
                       (nominal ? 2 : 1) * all_levels.size() * per_level);
     const FragilityLevels done = run_fragility_levels(runner, input.fragility, limits,
-                                                      reference_pga, directory, comm, progress);
+                                                      reference_pga, journals, comm, progress);
     FragilityLevels nominal_done;
     if (nominal && !done.interrupted)
       nominal_done = run_fragility_levels(*nominal, input.fragility, limits, reference_pga,
-                                          directory + "/record-to-record", comm, progress);
+                                          run.memory ? "" : directory + "/record-to-record",
+                                          comm, progress);
     progress.finish();
     timer.leave_subsection();
     const bool interrupted = done.interrupted || nominal_done.interrupted;
@@ -219,30 +234,33 @@ namespace poundfe::commands
       .value("completed_levels", levels.size())
       .value("realizations_per_level", per_level)
       .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
+    write_level_tables(run, done, "");
+    write_level_tables(run, nominal_done, "record-to-record/");
     if (levels.empty()) // nothing to fit
       {
         json.end_object();
-        write_file_atomically(directory + "/summary.json", json.str());
+        write_result_text(run.memory, directory, "summary.json", json.str());
         return status;
       }
     // One curve for pounding (if there are gaps) and one per drift limit.
     const std::vector<FragilityCurve> curves =
       fit_fragility_curves(done, limits, runner.has_gaps());
-    write_points(directory, levels, curves);
-    write_fitted(directory, levels, curves);
+    write_points(run, levels, curves);
+    write_fitted(run, levels, curves);
     const Plot plot = write_curves(json, pcout, levels, curves);
     if (nominal && nominal_done.levels.size() == levels.size())
       write_dispersion_split(json, pcout, curves,
                              fit_fragility_curves(nominal_done, limits, runner.has_gaps()));
     json.end_object();
-    if (input.output.plots && !interrupted) // stop soon: the resumed run draws it
+    const bool draws = input.output.plots && !interrupted && !run.memory;
+    if (draws) // stop soon: the resumed run draws it
       draw_plots(directory, {plot});
-    write_file_atomically(directory + "/summary.json", json.str());
+    write_result_text(run.memory, directory, "summary.json", json.str());
     timer.leave_subsection();
 
-    pcout << "results in " << directory
-          << "/ (summary.json, fragility_points.csv, fragility_curves.csv"
-          << (input.output.plots && !interrupted ? ", fragility.png" : "")
+    pcout << "results in " << run.results_place()
+          << " (summary.json, fragility_points.csv, fragility_curves.csv"
+          << (draws ? ", fragility.png" : "")
           << ", pga_*/realizations.csv)\n";
     print_timing(timer);
     return status;

@@ -13,8 +13,8 @@
 #include <poundfe/commands/command.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/output/append_file.h>
-#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/separation/mitigation.h>
@@ -99,7 +99,7 @@ namespace poundfe::commands
 
     /// mitigation.csv: one row per case.
     void
-    write_table(const std::string &directory, const std::vector<std::string> &buildings,
+    write_table(const CommandRun &run, const std::vector<std::string> &buildings,
                 const std::vector<MitigationRow> &rows, const double exponent)
     {
       std::string text = "case,label,number,kind,damper_coefficient,damper_exponent,"
@@ -131,11 +131,11 @@ namespace poundfe::commands
             text += ',', append_number(text, v);
           text += '\n';
         }
-      write_file_atomically(directory + "/mitigation.csv", text);
+      write_result_text(run.memory, run.directory, "mitigation.csv", text);
     }
 
     void
-    write_summary(const std::string &directory, const InputParameters &input,
+    write_summary(const CommandRun &run, const InputParameters &input,
                   const std::vector<std::string> &buildings, const std::vector<MitigationRow> &rows,
                   const MonteCarloTable &table, const bool random)
     {
@@ -173,7 +173,7 @@ namespace poundfe::commands
             .end_object();
         }
       json.end_array().end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(run.memory, run.directory, "summary.json", json.str());
     }
 
     /// mitigation.png: drifts, pounding and the required gap against the case.
@@ -211,7 +211,7 @@ namespace poundfe::commands
 
     void
     report(const dealii::ConditionalOStream &out, const std::vector<MitigationRow> &rows,
-           const MonteCarloTable &table, const unsigned long n, const std::string &directory,
+           const MonteCarloTable &table, const unsigned long n, const std::string &place,
            const bool plots)
     {
       if (table.interrupted)
@@ -225,7 +225,7 @@ namespace poundfe::commands
             << rounded(r.max_drift_ratio) << "    " << rounded(r.pounding_probability) << "    "
             << rounded(r.n_impacts) << "    " << rounded(r.peak_impact_force) << "    "
             << rounded(r.required_gap) << "\n";
-      out << "results in " << directory << "/ (mitigation.csv, summary.json, realizations.csv"
+      out << "results in " << place << " (mitigation.csv, summary.json, realizations.csv"
           << (plots ? ", mitigation.png" : "") << ")\n";
     }
   } // namespace
@@ -246,15 +246,15 @@ namespace poundfe::commands
     const StudyAnalyses study_analyses(input);
     MitigationStudy     study(study_analyses.models, time_history_parameters(input),
                               input.mitigation, input.modal.eigensolver, random);
-    if (rank == 0) // an earlier run's realizations stay: it resumes from them
+    if (rank == 0 && !run.memory) // an earlier run's realizations stay: it resumes from them
       prepare_output_directory(run.directory, {"realizations.csv"});
     timer.leave_subsection();
 
     timer.enter_subsection("realizations");
     const unsigned long   n = random ? input.monte_carlo.realizations : 1;
     Progress              progress(std::cerr, "mitigation: realizations", n);
-    const MonteCarloTable table =
-      run_realizations(study.job(), n, run.directory + "/realizations.csv", comm, "", &progress);
+    const MonteCarloTable table = run_realizations(
+      study.job(), n, run.memory ? "" : run.directory + "/realizations.csv", comm, "", &progress);
     progress.finish();
     timer.leave_subsection();
     const int status = table.interrupted ? interrupted_exit_status() : 0;
@@ -270,14 +270,16 @@ namespace poundfe::commands
     timer.enter_subsection("output");
     const std::vector<MitigationRow> rows =
       study.rows(table, input.separation.target_probability);
-    write_table(run.directory, study.building_names(), rows, input.mitigation.damper_exponent);
-    const bool plots = input.output.plots && !table.interrupted;
+    write_table(run, study.building_names(), rows, input.mitigation.damper_exponent);
+    const bool plots = input.output.plots && !table.interrupted && !run.memory;
     if (plots)
       draw_plots(run.directory, {mitigation_plot(study.building_names())});
-    write_summary(run.directory, input, study.building_names(), rows, table, random);
+    if (run.memory) // the journal's rows, which a run into files appended as they came
+      write_result_text(run.memory, run.directory, "realizations.csv", realizations_text(table));
+    write_summary(run, input, study.building_names(), rows, table, random);
     timer.leave_subsection();
 
-    report(pcout, rows, table, n, run.directory, plots);
+    report(pcout, rows, table, n, run.results_place(), plots);
     print_timing(timer);
     return status;
   }

@@ -11,9 +11,8 @@
 #include <poundfe/dynamics/pushover.h>
 #include <poundfe/excitation/response_spectrum.h>
 #include <poundfe/input/engine_parameters.h>
-#include <poundfe/output/atomic_file.h>
-#include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/report/run_summary.h>
@@ -28,7 +27,7 @@ namespace poundfe
   {
     /// pushover.csv: one row per committed point.
     void
-    write_pushover_csv(const std::string &file, const Model &model, const PushoverResult &r)
+    write_pushover_csv(const CommandRun &run, const Model &model, const PushoverResult &r)
     {
       std::vector<std::string> header{"step", "load_factor", "control_displacement_m",
                                       "base_shear_N"};
@@ -42,30 +41,27 @@ namespace poundfe
           header.push_back(e + " deformation");
         }
       header.push_back("arc_length");
-      CsvWriter csv(file, header);
+      const std::unique_ptr<TableWriter> csv =
+        result_table_writer(run.memory, run.directory, "pushover", header);
+      std::vector<double> row;
       for (unsigned int i = 0; i < r.points.size(); ++i)
         {
           const PushoverPoint &p = r.points[i];
-          csv.begin_row(i);
-          csv.add(p.lambda);
-          csv.add(p.control_displacement);
           double total = 0;
           for (const double v : p.base_shears)
             total += v;
-          csv.add(total);
-          for (const double v : p.base_shears)
-            csv.add(v);
-          for (const double v : p.drifts)
-            csv.add(v);
+          row.assign({p.lambda, p.control_displacement, total});
+          row.insert(row.end(), p.base_shears.begin(), p.base_shears.end());
+          row.insert(row.end(), p.drifts.begin(), p.drifts.end());
           for (unsigned int e = 0; e < p.element_forces.size(); ++e)
             {
-              csv.add(p.element_forces[e]);
-              csv.add(p.element_deformations[e]);
+              row.push_back(p.element_forces[e]);
+              row.push_back(p.element_deformations[e]);
             }
-          csv.add(p.arc_length);
-          csv.end_row();
+          row.push_back(p.arc_length);
+          csv->add_row(i, row);
         }
-      csv.commit();
+      csv->commit();
     }
 
     /// The control building's first excursion as the equivalent system's
@@ -176,14 +172,17 @@ namespace poundfe::commands
     const Analysis         analysis = prepare_analysis(input);
     const PushoverResult   result =
       run_pushover(analysis, input.pushover, input, &input.section_limits);
-    prepare_output_directory(run.directory);
-    write_pushover_csv(run.directory + "/pushover.csv", analysis.model, result);
+    if (!run.memory)
+      prepare_output_directory(run.directory);
+    write_pushover_csv(run, analysis.model, result);
     if (!result.completed)
       throw NumericalError(result.failure);
-    const std::vector<std::string> figures = draw_plots(
-      run.directory, {Plot{"pushover.png", "capacity curve", "control displacement (m)",
-                           "base shear (N)",
-                           {PlotSeries{"pushover.csv", "3:4", "base shear", "lines"}}}});
+    std::vector<std::string> figures; // none in memory
+    if (input.output.plots && !run.memory)
+      figures = draw_plots(
+        run.directory, {Plot{"pushover.png", "capacity curve", "control displacement (m)",
+                             "base shear (N)",
+                             {PlotSeries{"pushover.csv", "3:4", "base shear", "lines"}}}});
     JsonWriter json;
     begin_summary(json, "pushover", input);
     write_model(json, analysis);
@@ -208,12 +207,14 @@ namespace poundfe::commands
       }
     std::vector<std::string> files{"pushover.csv", "summary.json"};
     files.insert(files.end(), figures.begin(), figures.end());
-    json.begin_object("output").value("directory", run.directory).value("files", files).end_object();
+    json.begin_object("output").value("directory", run.memory ? "" : run.directory)
+      .value("files", files).end_object();
     json.end_object();
-    write_file_atomically(run.directory + "/summary.json", json.str());
+    write_result_text(run.memory, run.directory, "summary.json", json.str());
     run.out << result.points.size() << " points to the control displacement "
-            << result.points.back().control_displacement << " m; results in " << run.directory
-            << "/ (pushover.csv, summary.json, pushover.png)\n";
+            << result.points.back().control_displacement << " m; results in "
+            << run.results_place() << " (pushover.csv, summary.json"
+            << (run.memory ? "" : ", pushover.png") << ")\n";
     return 0;
   }
 } // namespace poundfe::commands

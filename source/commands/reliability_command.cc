@@ -12,9 +12,9 @@
 #include <poundfe/commands/command.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/input_parameters.h>
-#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/reliability/distribution.h>
 #include <poundfe/reliability/reliability_analysis.h>
@@ -175,22 +175,22 @@ namespace poundfe::commands
     const InputParameters &input = *run.input;
     input.reliability.require_problem(input);
     const bool writes = dealii::Utilities::MPI::this_mpi_process(run.communicator) == 0;
-    if (writes)
+    if (writes && !run.memory)
       prepare_output_directory(run.directory);
     const ReliabilityReport report = run_reliability_analysis(input.reliability, run.communicator);
     const int status = report.interrupted ? interrupted_exit_status() :
                        !report.failure.empty() ? 2 : 0;
     if (!writes)
       return status;
-    write_file_atomically(run.directory + "/design_points.csv",
-                          design_points_csv(input.reliability, report));
-    write_file_atomically(run.directory + "/estimates.csv", estimates_csv(report));
-    write_file_atomically(run.directory + "/summary.json",
-                          summary_json(input, report,
-                                       report.interrupted        ? "interrupted" :
-                                       !report.failure.empty()   ? "failed" :
-                                       !report.warnings.empty()  ? "completed with warnings" :
-                                                                   "completed"));
+    write_result_text(run.memory, run.directory, "design_points.csv",
+                      design_points_csv(input.reliability, report));
+    write_result_text(run.memory, run.directory, "estimates.csv", estimates_csv(report));
+    write_result_text(run.memory, run.directory, "summary.json",
+                      summary_json(input, report,
+                                   report.interrupted        ? "interrupted" :
+                                   !report.failure.empty()   ? "failed" :
+                                   !report.warnings.empty()  ? "completed with warnings" :
+                                                               "completed"));
     std::ostringstream out;
     for (const LimitStateReliability &ls : report.limit_states)
       if (ls.form && !ls.form->converged)
@@ -216,8 +216,8 @@ namespace poundfe::commands
     if (report.interrupted)
       out << "reliability interrupted: the estimates above are over the samples drawn "
              "before the signal, the methods after it were not run\n";
-    run.out << out.str() << "results in " << run.directory
-              << "/ (summary.json, design_points.csv, estimates.csv)\n";
+    run.out << out.str() << "results in " << run.results_place()
+            << " (summary.json, design_points.csv, estimates.csv)\n";
     for (const std::string &warning : report.warnings)
       run.err << "poundfe: warning: " << warning << "\n";
     if (!report.failure.empty())

@@ -12,8 +12,9 @@
 #include <poundfe/hazard/site_study.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/append_file.h>
-#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/atomic_file.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 
@@ -31,7 +32,7 @@ namespace poundfe::commands
   namespace
   {
     void
-    write_events(const std::string &path, const std::vector<SiteEvent> &events)
+    write_events(const CommandRun &run, const std::vector<SiteEvent> &events)
     {
       std::string csv = "date,year,latitude_deg,longitude_deg,magnitude,distance_km,intensity,"
                         "pga_cm_s2,pga_g,annual_rate_of_exceeding_per_year\n";
@@ -50,11 +51,11 @@ namespace poundfe::commands
             append_number(csv, s.annual_rate);
           csv += "\n";
         }
-      write_file_atomically(path, csv);
+      write_result_text(run.memory, run.directory, "hazard.csv", csv);
     }
 
     void
-    write_curve(const std::string &path, const IntensityHazard &hazard, const double low,
+    write_curve(const CommandRun &run, const IntensityHazard &hazard, const double low,
                 const double high)
     {
       std::string csv = "intensity,pga_cm_s2,pga_g,annual_rate_per_year,"
@@ -72,11 +73,11 @@ namespace poundfe::commands
             }
           csv.back() = '\n';
         }
-      write_file_atomically(path, csv);
+      write_result_text(run.memory, run.directory, "hazard_curve.csv", csv);
     }
 
     void
-    write_return_periods(const std::string &path, const std::vector<double> &periods,
+    write_return_periods(const CommandRun &run, const std::vector<double> &periods,
                          const IntensityHazard &hazard)
     {
       std::string csv = "return_period_years,intensity,pga_cm_s2,pga_g,pga_m_s2,"
@@ -92,7 +93,7 @@ namespace poundfe::commands
             }
           csv.back() = '\n';
         }
-      write_file_atomically(path, csv);
+      write_result_text(run.memory, run.directory, "return_periods.csv", csv);
     }
 
     Plot
@@ -233,19 +234,22 @@ namespace poundfe::commands
     /// hazard.csv, hazard_curve.csv, return_periods.csv and hazard.png of a
     /// catalogue; returns the names written.
     std::vector<std::string>
-    write_catalogue_outputs(const std::string &directory, const InputParameters &input,
-                            const SiteHazardOfCatalogue &site)
+    write_catalogue_outputs(const CommandRun &run, const SiteHazardOfCatalogue &site)
     {
+      const InputParameters      &input     = *run.input;
+      const std::string          &directory = run.directory;
       const SiteHazardParameters &p = input.site_hazard;
       double top = p.minimum_intensity + 1;
       for (const SiteEvent &s : site.events)
         top = std::max(top, s.intensity);
       for (const double T : p.return_periods)
         top = std::max(top, site.hazard.intensity_for_return_period(T));
-      write_events(directory + "/hazard.csv", site.events);
-      write_curve(directory + "/hazard_curve.csv", site.hazard, p.minimum_intensity, top + 0.5);
-      write_return_periods(directory + "/return_periods.csv", p.return_periods, site.hazard);
+      write_events(run, site.events);
+      write_curve(run, site.hazard, p.minimum_intensity, top + 0.5);
+      write_return_periods(run, p.return_periods, site.hazard);
       std::vector<std::string> files{"hazard.csv", "hazard_curve.csv", "return_periods.csv"};
+      if (run.memory) // no figure
+        return files;
       if (input.output.plots)
         for (const std::string &png : draw_plots(directory, {hazard_plot(site.hazard)}))
           files.push_back(png);
@@ -261,7 +265,7 @@ namespace poundfe::commands
     }
 
     void
-    write_study(const std::string &path, const SiteStudyResult &study)
+    write_study(const CommandRun &run, const SiteStudyResult &study)
     {
       std::string csv = "method,scale,return_period_years,intensity,acceleration_gal,"
                         "coefficient_k\n";
@@ -276,7 +280,7 @@ namespace poundfe::commands
             }
           csv += "\n";
         }
-      write_file_atomically(path, csv);
+      write_result_text(run.memory, run.directory, "site_study.csv", csv);
     }
 
     void
@@ -347,13 +351,14 @@ namespace poundfe::commands
       study = site_study(p.study.entries(input, site ? &site->hazard : nullptr),
                          p.study.settings);
 
-    create_directories(directory);
+    if (!run.memory)
+      create_directories(directory);
     std::vector<std::string> files;
     if (site)
-      files = write_catalogue_outputs(directory, input, *site);
+      files = write_catalogue_outputs(run, *site);
     if (study)
       {
-        write_study(directory + "/site_study.csv", *study);
+        write_study(run, *study);
         files.push_back("site_study.csv");
       }
     files.push_back("summary.json");
@@ -369,14 +374,14 @@ namespace poundfe::commands
       write_study_summary(json, *study);
     json.begin_object("output").value("files", files).end_object();
     json.end_object();
-    write_file_atomically(directory + "/summary.json", json.str());
+    write_result_text(run.memory, directory, "summary.json", json.str());
     const dealii::ConditionalOStream pcout(run.out, writes_outputs());
     if (site)
       print_report(pcout, input, site->period, site->catalogue, site->events, site->hazard,
                    site->failure);
     if (study)
       print_study(pcout, *study);
-    pcout << "results in " << directory << "/ (summary.json lists the files)\n";
+    pcout << "results in " << run.results_place() << " (summary.json lists the files)\n";
     return 0;
   }
 } // namespace poundfe::commands

@@ -10,8 +10,8 @@
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/input/sweep.h>
 #include <poundfe/output/append_file.h>
-#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/stationary_pdf.h>
@@ -33,8 +33,29 @@ namespace poundfe::commands
     const std::array<const char *, 3> quantity_name = {
       {"displacement x (m)", "velocity v (m/s)", "amplitude a (m)"}};
 
+    /// Where one analysis's results go: the run's directory, or a value's
+    /// folder in it ("<column>_<value>/"); in memory, under the same names.
+    struct StationaryPdfPlace
+    {
+      const CommandRun &run;
+      std::string       folder; // "" or "<name>/"
+
+      std::string
+      directory() const
+      {
+        return folder.empty() ? run.directory :
+                                run.directory + "/" + folder.substr(0, folder.size() - 1);
+      }
+
+      void
+      write(const std::string &name, const std::string &text) const
+      {
+        write_result_text(run.memory, run.directory, folder + name, text);
+      }
+    };
+
     void
-    write_pdf_csv(const std::string &directory, const PdfLayout &layout,
+    write_pdf_csv(const StationaryPdfPlace &place, const PdfLayout &layout,
                   const std::array<QuantityEstimate, 3> &e)
     {
       std::string text;
@@ -51,12 +72,12 @@ namespace poundfe::commands
             append_number(text, e[q].kde[i]);
             text += q < 2 ? "," : "\n";
           }
-      write_file_atomically(directory + "/pdf.csv", text);
+      place.write("pdf.csv", text);
     }
 
     /// p(x, v) = c_ij / (N w_x w_v); a blank line after each x (gnuplot's grid).
     void
-    write_joint_csv(const std::string &directory, const PdfLayout &layout,
+    write_joint_csv(const StationaryPdfPlace &place, const PdfLayout &layout,
                     const std::vector<double> &total)
     {
       const BinGrid &gx = layout.grids[0], &gv = layout.grids[1];
@@ -73,7 +94,7 @@ namespace poundfe::commands
             }
           text += '\n';
         }
-      write_file_atomically(directory + "/joint_pdf.csv", text);
+      place.write("joint_pdf.csv", text);
     }
 
     /// The intervals as [low1, high1, low2, high2, ...].
@@ -157,7 +178,7 @@ namespace poundfe::commands
     XDensity
     write_results(const InputParameters &input, const StationaryPdfSetup &setup,
                   const StationaryPdfResult &result, const std::uint64_t seed,
-                  const std::string &directory, const unsigned int n_ranks)
+                  const StationaryPdfPlace &place, const unsigned int n_ranks)
     {
       const PdfSampling     &s      = setup.sampling;
       const PdfLayout       &layout = setup.layout;
@@ -196,10 +217,11 @@ namespace poundfe::commands
         {
           const std::array<QuantityEstimate, 3> &e = result.estimates;
           write_estimates(json, layout, e);
-          write_pdf_csv(directory, layout, e);
-          write_joint_csv(directory, layout, result.total);
-          if (input.output.plots && !table.interrupted) // stop soon: the resumed run draws them
-            draw_plots(directory, pdf_plots(n_samples, n_completed));
+          write_pdf_csv(place, layout, e);
+          write_joint_csv(place, layout, result.total);
+          // stop soon: the resumed run draws them
+          if (input.output.plots && !table.interrupted && !place.run.memory)
+            draw_plots(place.directory(), pdf_plots(n_samples, n_completed));
           const auto first = result.total.begin() + layout.histogram(0) + 1;
           x.counts.assign(first, first + x.grid.n_bins);
           x.n         = result.total[0];
@@ -208,7 +230,9 @@ namespace poundfe::commands
           x.support   = e[0].support;
         }
       json.end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      if (place.run.memory) // the journal's rows, which a run into files appended as they came
+        place.write("realizations.csv", realizations_text(table));
+      place.write("summary.json", json.str());
       return x;
     }
 
@@ -216,7 +240,7 @@ namespace poundfe::commands
     /// rank of `comm`; progress counts from `offset`. With a sampling time the
     /// runs end at burn-in + sampling time.
     XDensity
-    analyse(const InputParameters &file_input, const std::string &directory, const MPI_Comm comm,
+    analyse(const InputParameters &file_input, const StationaryPdfPlace &place, const MPI_Comm comm,
             const dealii::ConditionalOStream &out, const std::string &label, Progress &progress,
             const unsigned long offset)
     {
@@ -230,11 +254,14 @@ namespace poundfe::commands
       const StationaryPdfSetup setup =
         setup_stationary_pdf(analysis, runner, p, input, input.time_integration.newmark.time_step,
                              input.ground_motion);
-      if (rank == 0) // an earlier run's realizations stay: it resumes from them
+      const std::string directory = place.directory();
+      // an earlier run's realizations stay: it resumes from them
+      if (rank == 0 && !place.run.memory)
         prepare_output_directory(directory, {"realizations.csv"});
 
-      const StationaryPdfResult result = run_stationary_pdf(
-        setup, runner, p, directory + "/realizations.csv", comm, label, progress, offset);
+      const std::string         journal = place.run.memory ? "" : directory + "/realizations.csv";
+      const StationaryPdfResult result =
+        run_stationary_pdf(setup, runner, p, journal, comm, label, progress, offset);
       if (rank != 0)
         {
           XDensity stopped;
@@ -242,14 +269,15 @@ namespace poundfe::commands
           return stopped;
         }
       const XDensity x = write_results(input, setup, result, runner.stochastic_load().seed(),
-                                       directory, dealii::Utilities::MPI::n_mpi_processes(comm));
+                                       place, dealii::Utilities::MPI::n_mpi_processes(comm));
       if (result.table.interrupted)
         out << label << "stationary PDF interrupted after " << result.table.realizations.size()
             << " of " << p.realizations << " realizations: the estimates are over these; "
             << "the same command runs the rest\n";
       out << label << "stationary PDF of " << setup.sampling.label << ": "
-          << result.table.realizations.size() << " realizations; results in " << directory
-          << "/ (summary.json, pdf.csv, joint_pdf.csv, realizations.csv)\n";
+          << result.table.realizations.size() << " realizations; results in "
+          << (place.run.memory ? "memory" : directory + "/")
+          << " (summary.json, pdf.csv, joint_pdf.csv, realizations.csv)\n";
       return x;
     }
 
@@ -258,7 +286,7 @@ namespace poundfe::commands
     /// point fills in the image (halfway to the neighbouring values: they
     /// need not be equally spaced). At least two values.
     void
-    write_density_map(const std::string &directory, const std::string &column,
+    write_density_map(const CommandRun &run, const std::string &column,
                       const std::vector<double> &values, const std::vector<XDensity> &x)
     {
       BinGrid common = x[0].grid;
@@ -288,7 +316,7 @@ namespace poundfe::commands
               text += '\n';
             }
         }
-      write_file_atomically(directory + "/p_bifurcation_density.csv", text);
+      write_result_text(run.memory, run.directory, "p_bifurcation_density.csv", text);
     }
 
     /// The array `name` of summary.json: every pair of neighbouring values
@@ -312,7 +340,7 @@ namespace poundfe::commands
     /// of support intervals and their hull) and the
     /// summary's entries; returns the most peaks of a value.
     std::size_t
-    write_peaks(const std::string &directory, const std::string &column,
+    write_peaks(const CommandRun &run, const std::string &column,
                 const std::vector<double> &values, const std::vector<XDensity> &x, JsonWriter &json)
     {
       std::size_t most = 1;
@@ -358,7 +386,7 @@ namespace poundfe::commands
                           [&](std::size_t j) { return x[j].peaks.size(); });
       write_count_changes(json, "support_changes", "n_support_intervals", values,
                           [&](std::size_t j) { return x[j].support.size(); });
-      write_file_atomically(directory + "/p_bifurcation.csv", text);
+      write_result_text(run.memory, run.directory, "p_bifurcation.csv", text);
       return most;
     }
 
@@ -382,15 +410,18 @@ namespace poundfe::commands
     /// The P-bifurcation: one stationary-PDF run per value, each in its own
     /// directory (resumable), then the density of x against the value.
     int
-    p_bifurcation(const InputParameters &input, const std::string &directory, const MPI_Comm comm,
-                  const dealii::ConditionalOStream &out)
+    p_bifurcation(const CommandRun &run, const dealii::ConditionalOStream &out)
     {
+      const InputParameters     &input     = *run.input;
+      const std::string         &directory = run.directory;
+      const MPI_Comm             comm      = run.communicator;
       const SweepParameters     &sweep  = input.stationary_pdf.sweep;
       const std::vector<double>  values = sweep.values();
       std::vector<InputParameters> inputs; // every value checked before anything runs
       for (const double v : values)
         inputs.push_back(sweep_input(sweep, input, v));
-      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0) // each value's directory resumes
+      // each value's directory resumes
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0 && !run.memory)
         prepare_output_directory(directory);
       const unsigned long  per_value = input.stationary_pdf.realizations;
       Progress             progress(std::cerr, "realizations", values.size() * per_value);
@@ -398,7 +429,7 @@ namespace poundfe::commands
       for (std::size_t j = 0; j < values.size(); ++j)
         {
           const std::string name  = sweep.column_name() + "_" + format_value(values[j]);
-          XDensity          x     = analyse(inputs[j], directory + "/" + name, comm, out,
+          XDensity          x     = analyse(inputs[j], {run, name + "/"}, comm, out,
                                       name + ": ", progress, j * per_value);
           if (x.interrupted)
             break;
@@ -415,16 +446,16 @@ namespace poundfe::commands
       const std::vector<double> swept(values.begin(), values.begin() + done.size());
       if (done.size() >= 2)
         {
-          const std::size_t most = write_peaks(directory, sweep.column_name(), swept, done, json);
-          write_density_map(directory, sweep.column_name(), swept, done);
-          if (input.output.plots && !interrupted)
+          const std::size_t most = write_peaks(run, sweep.column_name(), swept, done, json);
+          write_density_map(run, sweep.column_name(), swept, done);
+          if (input.output.plots && !interrupted && !run.memory)
             draw_plots(directory, {p_bifurcation_plot(sweep.axis_label(), most)});
         }
       json.end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(run.memory, directory, "summary.json", json.str());
       out << "P-bifurcation over " << sweep.parameter << ": " << done.size() << " of "
-          << values.size() << " values; results in " << directory
-          << "/ (summary.json, p_bifurcation.csv, p_bifurcation_density.csv)\n";
+          << values.size() << " values; results in " << run.results_place()
+          << " (summary.json, p_bifurcation.csv, p_bifurcation_density.csv)\n";
       return status;
     }
   } // namespace
@@ -436,9 +467,9 @@ namespace poundfe::commands
     dealii::ConditionalOStream pcout(run.out,
                                      dealii::Utilities::MPI::this_mpi_process(run.communicator) == 0);
     if (!input.stationary_pdf.sweep.values().empty())
-      return p_bifurcation(input, run.directory, run.communicator, pcout);
+      return p_bifurcation(run, pcout);
     Progress       progress(std::cerr, "realizations", input.stationary_pdf.realizations);
-    const XDensity x = analyse(input, run.directory, run.communicator, pcout, "", progress, 0);
+    const XDensity x = analyse(input, {run, ""}, run.communicator, pcout, "", progress, 0);
     progress.finish();
     return x.interrupted ? interrupted_exit_status() : 0;
   }

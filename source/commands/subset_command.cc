@@ -8,9 +8,9 @@
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/input/input_parameters.h>
-#include <poundfe/output/atomic_file.h>
 #include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 #include <poundfe/reliability/random_parameters.h>
@@ -143,7 +143,7 @@ namespace poundfe::commands
 
     /// subset_levels.csv: each level's threshold and probabilities.
     void
-    write_levels(const std::string &directory, const SubsetResult &result)
+    write_levels(const CommandRun &command, const SubsetResult &result)
     {
       std::string csv = "level,threshold,conditional_probability,exceedance_probability,"
                         "acceptance_rate,coefficient_of_variation,"
@@ -162,7 +162,7 @@ namespace poundfe::commands
               << defined_or_empty(bounds[i].second) << "\n";
           csv += row.str();
         }
-      write_file_atomically(directory + "/subset_levels.csv", csv);
+      write_result_text(command.memory, command.directory, "subset_levels.csv", csv);
     }
 
     /// The run's facts besides the result (summary.json).
@@ -177,7 +177,7 @@ namespace poundfe::commands
     };
 
     void
-    write_summary(const std::string &directory, const InputParameters &input,
+    write_summary(const CommandRun &command, const InputParameters &input,
                   const SubsetRun &run, const SubsetResult &result)
     {
       const SubsetParameters &ss = input.subset;
@@ -214,13 +214,13 @@ namespace poundfe::commands
           .value("coefficient_of_variation", undefined_if_infinite(L.coefficient_of_variation))
           .end_object();
       json.end_array().end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(command.memory, command.directory, "summary.json", json.str());
     }
 
     void
     report(const dealii::ConditionalOStream &out, const InputParameters &input,
-           const std::string &directory, const SubsetRun &run, const std::string &unit,
-           const SubsetResult &result)
+           const std::string &place, const SubsetRun &run, const std::string &unit,
+           const SubsetResult &result, const bool drawn)
     {
       if (result.interrupted)
         out << "Subset Simulation interrupted after " << result.levels.size()
@@ -245,8 +245,8 @@ namespace poundfe::commands
         }
       if (result.resumed_runs > 0)
         out << " (and " << result.resumed_runs << " resumed from subset_runs.csv)";
-      out << "\nresults in " << directory << "/ (summary.json, subset_levels.csv, subset_runs.csv"
-          << (input.output.plots && !result.interrupted ? ", subset_levels.png" : "") << ")\n";
+      out << "\nresults in " << place << " (summary.json, subset_levels.csv, subset_runs.csv"
+          << (drawn ? ", subset_levels.png" : "") << ")\n";
     }
     /// The journal as the sampler sees it, for a limit state that can be
     /// undefined (NaN) at a sample: find() says which sample is about to
@@ -361,9 +361,9 @@ namespace poundfe::commands
                     nullptr;
     const double         threshold = limit_state ? 0.0 : ss.threshold;
     const SubsetSettings settings  = settings_of(ss, runner);
-    if (rank == 0) // an earlier run's journal stays: this run resumes from it
+    if (rank == 0 && !run.memory) // an earlier run's journal stays: this run resumes from it
       prepare_output_directory(directory, subset_journal_files(directory));
-    SubsetRunsFile journal(directory,
+    SubsetRunsFile journal(run.memory ? "" : directory, // "": in memory
                            subset_journal_settings(settings, runner.n_variables(), threshold),
                            comm);
     if (journal.n_resumed() > 0)
@@ -391,14 +391,17 @@ namespace poundfe::commands
       return status;
 
     timer.enter_subsection("output");
-    write_levels(directory, result);
-    write_summary(directory, input, facts, result);
-    if (input.output.plots && !result.interrupted) // stop soon
+    if (run.memory) // the journal's text, which a run into files merged into subset_runs.csv
+      write_result_text(run.memory, directory, "subset_runs.csv", journal.text());
+    write_levels(run, result);
+    write_summary(run, input, facts, result);
+    const bool draws = input.output.plots && !result.interrupted && !run.memory; // stop soon
+    if (draws)
       draw_plots(directory, {subset_plot(result, threshold, limit_state ? "-g (system)" :
                                                                    facts.response_name + unit)});
     timer.leave_subsection();
 
-    report(pcout, input, directory, facts, unit, result);
+    report(pcout, input, run.results_place(), facts, unit, result, draws);
     print_timing(timer);
     return status;
   }

@@ -17,10 +17,9 @@
 #include <poundfe/dynamics/initial_conditions.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/integration/model_switching.h>
-#include <poundfe/output/atomic_file.h>
-#include <poundfe/output/csv_writer.h>
 #include <poundfe/output/finite_output.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 
@@ -38,10 +37,10 @@ namespace poundfe
     /// 0: on the surface), h and the normal components a (side -), b (side +).
     void
     write_log(const ModelSwitching &analysis, const std::vector<SwitchingEvent> &events,
-              const std::string &directory)
+              const CommandRun &run)
     {
       const unsigned int n = analysis.n_equations();
-      const std::string  path = directory + "/switching.csv";
+      const std::string  path = run.directory + "/switching.csv";
       std::ostringstream csv;
       csv.precision(12);
       csv << "time_s";
@@ -63,12 +62,12 @@ namespace poundfe
               << e.region_after << "," << e.value << "," << e.normal_minus << ","
               << e.normal_plus << "," << switching_class_name(e.kind) << "\n";
         }
-      write_file_atomically(path, csv.str());
+      write_result_text(run.memory, run.directory, "switching.csv", csv.str());
     }
 
     /// trajectory.csv: the sampled state and the surface slid on (1-based; 0: none).
     void
-    write_trajectory(const ModelSwitching &analysis, const std::string &directory)
+    write_trajectory(const ModelSwitching &analysis, const CommandRun &run)
     {
       const unsigned int       n = analysis.n_equations();
       std::vector<std::string> header{"time_s"};
@@ -77,16 +76,16 @@ namespace poundfe
       for (unsigned int i = 1; i <= n; ++i)
         header.push_back("v_" + std::to_string(i));
       header.push_back("sliding_surface");
-      CsvWriter csv(directory + "/trajectory.csv", header);
+      const std::unique_ptr<TableWriter> csv =
+        result_table_writer(run.memory, run.directory, "trajectory", header);
+      std::vector<double> row;
       for (const SwitchingSample &s : analysis.system().samples())
         {
-          csv.begin_row(s.time);
-          for (Eigen::Index i = 0; i < s.state.size(); ++i)
-            csv.add(s.state[i]);
-          csv.add(s.sliding + 1);
-          csv.end_row();
+          row.assign(s.state.data(), s.state.data() + s.state.size());
+          row.push_back(s.sliding + 1);
+          csv->add_row(s.time, row);
         }
-      csv.commit();
+      csv->commit();
     }
 
     struct SlidingInterval
@@ -117,7 +116,7 @@ namespace poundfe
     void
     write_summary(const InputParameters &input, const ModelSwitching &analysis,
                   const std::vector<SlidingInterval> &intervals, const double t_end,
-                  const std::string &directory)
+                  const CommandRun &run)
     {
       JsonWriter json;
       begin_summary(json, "switching", input);
@@ -144,7 +143,7 @@ namespace poundfe
         json.begin_object().value("surface", s.surface).value("entry_s", s.entry)
           .value("exit_s", s.exit).value("until_the_end", s.open).end_object();
       json.end_array().end_object();
-      write_file_atomically(directory + "/summary.json", json.str());
+      write_result_text(run.memory, run.directory, "summary.json", json.str());
     }
 
     /// The phase portrait of equation 1: the surfaces on its u or v alone
@@ -234,9 +233,10 @@ namespace poundfe::commands
       {
         // the hits and the trajectory up to the failure are results: kept,
         // and the guard's summary.json says "failed" with the reason
-        prepare_output_directory(run.directory);
-        write_log(switching_analysis, switching_analysis.events(), run.directory);
-        write_trajectory(switching_analysis, run.directory);
+        if (!run.memory)
+          prepare_output_directory(run.directory);
+        write_log(switching_analysis, switching_analysis.events(), run);
+        write_trajectory(switching_analysis, run);
         throw;
       }
     timer.leave_subsection();
@@ -244,11 +244,12 @@ namespace poundfe::commands
     timer.enter_subsection("output");
     const std::vector<SwitchingEvent> events = switching_analysis.events();
     const auto intervals = sliding_intervals(switching_analysis, events, t_end);
-    prepare_output_directory(run.directory);
-    write_log(switching_analysis, events, run.directory);
-    write_trajectory(switching_analysis, run.directory);
-    write_summary(input, switching_analysis, intervals, t_end, run.directory);
-    if (input.output.plots)
+    if (!run.memory)
+      prepare_output_directory(run.directory);
+    write_log(switching_analysis, events, run);
+    write_trajectory(switching_analysis, run);
+    write_summary(input, switching_analysis, intervals, t_end, run);
+    if (input.output.plots && !run.memory)
       draw_phase_portrait(switching_analysis, run.directory);
     timer.leave_subsection();
 
@@ -263,8 +264,9 @@ namespace poundfe::commands
     for (const SlidingInterval &s : intervals)
       run.out << "  sliding on " << s.surface << " from " << s.entry << " s to " << s.exit
               << " s" << (s.open ? " (the end)" : "") << "\n";
-    run.out << "results in " << run.directory
-            << "/ (switching.csv, trajectory.csv, summary.json, phase_portrait.png)\n";
+    run.out << "results in " << run.results_place()
+            << " (switching.csv, trajectory.csv, summary.json"
+            << (run.memory ? "" : ", phase_portrait.png") << ")\n";
     print_timing(timer);
     return 0;
   }

@@ -485,6 +485,12 @@ namespace poundfe
     return e;
   }
 
+  std::string
+  fragility_level_folder(const double level)
+  {
+    return "pga_" + rounded(level, 6) + "g";
+  }
+
   FragilityLevels
   run_fragility_levels(RealizationRunner &runner, const FragilityParameters &parameters,
                        const std::vector<double> &drift_limits, const double reference_pga,
@@ -496,18 +502,21 @@ namespace poundfe
     FragilityLevels            result;
     for (std::size_t j = 0; j < levels.size() && !result.interrupted; ++j)
       {
-        const std::string level_directory = directory + "/pga_" + rounded(levels[j], 6) + "g";
-        if (rank == 0)
+        const bool        in_memory       = directory.empty();
+        const std::string level_directory = directory + "/" + fragility_level_folder(levels[j]);
+        if (rank == 0 && !in_memory)
           create_directories(level_directory);
-        const MonteCarloTable table =
+        MonteCarloTable table =
           run_monte_carlo(runner, per_level, levels[j] / reference_pga,
-                          level_directory + "/realizations.csv", comm,
+                          in_memory ? "" : level_directory + "/realizations.csv", comm,
                           "PGA " + rounded(levels[j]) + " g: ", &progress, j * per_level);
         result.interrupted = table.interrupted; // the same on every rank
         if (rank == 0 && !result.interrupted)
           {
             result.levels.push_back(levels[j]);
             result.counts.push_back(count_exceedances(table, runner, drift_limits));
+            if (in_memory)
+              result.tables.push_back(std::move(table));
           }
       }
     return result;

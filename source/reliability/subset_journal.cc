@@ -145,6 +145,12 @@ namespace poundfe
     , comm(comm)
   {
     const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+    if (directory.empty()) // in memory: nothing to resume, nothing written
+      {
+        AssertThrow(dealii::Utilities::MPI::n_mpi_processes(comm) == 1,
+                    dealii::ExcMessage("a Subset Simulation journal in memory is of one rank"));
+        return;
+      }
     std::string        file, problem, parameter; // of a journal refused on rank 0
     int                line = 0;
     if (rank == 0)
@@ -202,16 +208,10 @@ namespace poundfe
             if (entry.path().filename() != journal_name)
               rank_files.push_back(entry.path());
           }
-    std::string text = settings + "\n" + columns + "\n";
     earlier.clear();
     for (const auto &[key, run] : runs)
-      {
-        earlier[key] = {run.first, run.second};
-        text += std::to_string(key.first) + "," + std::to_string(key.second) + ",";
-        append_number(text, run.first);
-        text += run.second ? ",1\n" : ",0\n";
-      }
-    write_file_atomically(directory + "/" + journal_name, text);
+      earlier[key] = {run.first, run.second};
+    write_file_atomically(directory + "/" + journal_name, text());
     for (const auto &file : rank_files) // now in subset_runs.csv
       std::filesystem::remove(file);
   }
@@ -229,6 +229,12 @@ namespace poundfe
   void
   SubsetRunsFile::record(const unsigned int level, const unsigned int sample, const double response)
   {
+    if (directory.empty())
+      {
+        kept[{level, sample}] = {response, !last_failed};
+        last_failed           = false;
+        return;
+      }
     Assert(out != nullptr, dealii::ExcMessage("record() after finish()"));
     std::string line = std::to_string(level) + "," + std::to_string(sample) + ",";
     append_number(line, response);
@@ -244,10 +250,26 @@ namespace poundfe
     MPI_Barrier(comm); // every rank's file is complete
     if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
       return 0;
-    merge();
+    if (directory.empty())
+      earlier = std::move(kept);
+    else
+      merge();
     unsigned long failed = 0;
     for (const auto &[key, entry] : earlier)
       failed += entry.completed ? 0 : 1;
     return failed;
+  }
+
+  std::string
+  SubsetRunsFile::text() const
+  {
+    std::string text = settings + "\n" + columns + "\n";
+    for (const auto &[key, entry] : earlier)
+      {
+        text += std::to_string(key.first) + "," + std::to_string(key.second) + ",";
+        append_number(text, entry.response);
+        text += entry.completed ? ",1\n" : ",0\n";
+      }
+    return text;
   }
 } // namespace poundfe

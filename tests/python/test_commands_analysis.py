@@ -1,10 +1,10 @@
 """The analysis commands from Python (poundfe.reliability, dynamic_form,
-bifurcation, switching) against the same commands on the command line, and
-poundfe.modal's modes (computed in memory) against `poundfe modal`'s
-summary.json: the same doubles (reference: the command line's files parsed
-with Python's float() and json; tolerance none). Also how a command takes
-an Input or a Model, keeps its files with output=, and to_dataframe without
-pandas."""
+bifurcation, switching, pushover, ground_motion) against the same commands
+on the command line, and poundfe.modal's modes (computed in memory) against
+`poundfe modal`'s summary.json: the same doubles (reference: the command
+line's files parsed with Python's float() and json; tolerance none). Also
+how a command takes an Input or a Model, keeps its files with output=, and
+to_dataframe without pandas."""
 
 import os
 import sys
@@ -29,6 +29,13 @@ class AnalysisCommands(CommandTestCase):
 
     def test_switching(self):
         self.assertSameAsCommandLine("switching", "tests/cli/switching-belt.prm", QUIET)
+
+    def test_pushover(self):
+        self.assertSameAsCommandLine("pushover", "input/pushover-frame.prm", QUIET)
+
+    def test_ground_motion(self):
+        self.assertSameAsCommandLine("ground_motion", EXAMPLE, QUIET)
+        self.assertSameAsCommandLine("ground_motion", EXAMPLE, QUIET, realizations=2)
 
     def test_modal_in_memory(self):
         out = os.path.join(self.tmp, "modal")

@@ -122,13 +122,20 @@ namespace poundfe
   {
     std::vector<double>      levels;      // g: the levels done (rank 0)
     std::vector<Exceedances> counts;      // at each of them (rank 0)
+    /// Each level's realizations (rank 0), kept only when they went to no
+    /// file (results in memory)
+    std::vector<MonteCarloTable> tables;
     bool                     interrupted = false; // on every rank
   };
+
+  /// The folder of a fragility level's realizations: "pga_<a>g".
+  std::string fragility_level_folder(double level);
 
   /// Runs `parameters.realizations_per_level` realizations at each PGA level
   /// in turn (amplitudes scaled by level / reference_pga) over the ranks of
   /// `comm`, each level in directory/pga_<a>g/realizations.csv (resumed as
-  /// run_realizations does); stops after a level that was interrupted.
+  /// run_realizations does; an empty `directory`: no file, each level's
+  /// table kept in `tables`); stops after a level that was interrupted.
   /// Rank 0 counts the exceedances of `drift_limits` at the levels done.
   FragilityLevels run_fragility_levels(RealizationRunner &runner,
                                        const FragilityParameters &parameters,

@@ -43,7 +43,9 @@ namespace poundfe
   public:
     /// Reads the journal an earlier run left in `directory` (every rank
     /// calls it; rank 0 reads and merges, then broadcasts). Throws InputError
-    /// naming the file when it was written for other settings.
+    /// naming the file when it was written for other settings. An empty
+    /// `directory`: no file read or written, the runs kept in memory (one
+    /// rank; results in memory) for text().
     SubsetRunsFile(const std::string &directory, const std::string &settings, MPI_Comm comm);
     ~SubsetRunsFile() override;
 
@@ -60,6 +62,9 @@ namespace poundfe
     /// Merges every rank's runs into subset_runs.csv (collective); returns
     /// the number of runs that did not complete, on rank 0.
     unsigned long finish();
+    /// After finish(), on rank 0: the text subset_runs.csv holds (a journal
+    /// in memory: what it would hold).
+    std::string text() const;
 
   private:
     using Key = std::pair<unsigned int, unsigned int>; // (level, sample)
@@ -73,6 +78,7 @@ namespace poundfe
     const std::string           settings;
     const MPI_Comm              comm;
     std::map<Key, Entry>        earlier; // the same on every rank
+    std::map<Key, Entry>        kept;    // this run's, in memory (no directory)
     std::unique_ptr<AppendFile> out;     // this rank's runs
     bool                        last_failed = false;
 
