@@ -26,7 +26,10 @@ namespace poundfe
 {
   namespace
   {
-    /// pushover.csv: one row per committed point.
+    /// pushover.csv: one row per committed point; with fibre members each
+    /// storey's damage state so far as its number in the order of
+    /// damage_state_name (0 none, 1 yield, 2 spalling, 3 crushing, 4
+    /// fracture).
     void
     write_pushover_csv(const std::string &file, const Model &model, const PushoverResult &r)
     {
@@ -42,6 +45,9 @@ namespace poundfe
           header.push_back(e + " deformation");
         }
       header.push_back("arc_length");
+      if (!r.points.empty() && !r.points.front().storey_damage.empty()) // fibre members
+        for (const std::string &s : r.storeys)
+          header.push_back("damage_state " + s);
       CsvWriter csv(file, header);
       for (unsigned int i = 0; i < r.points.size(); ++i)
         {
@@ -63,6 +69,8 @@ namespace poundfe
               csv.add(p.element_deformations[e]);
             }
           csv.add(p.arc_length);
+          for (const int worst : p.storey_damage) // 0 none, 1 yield ... 4 fracture
+            csv.add(worst + 1);
           csv.end_row();
         }
       csv.commit();

@@ -2,8 +2,10 @@
 // `Section limits` entries, each section's limits and yield curvature, and
 // the tracker of its peaks and first times.
 #include <poundfe/output/section_limits.h>
+#include <poundfe/output/section_states.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
+#include <poundfe/elements/member_element.h>
 #include <poundfe/sections/moment_curvature.h>
 
 #include <deal.II/base/exceptions.h>
@@ -176,6 +178,30 @@ namespace poundfe
     if (!core) // no concrete with a crushing limit: a given one applies to all
       e.core = e.concrete;
     return e;
+  }
+
+  const FibreSection *
+  fibre_section_of(const NonlinearElement &element, const unsigned int i)
+  {
+    const auto *member = dynamic_cast<const MemberElement<2> *>(&element);
+    return member && i < member->member().n_points() ?
+             dynamic_cast<const FibreSection *>(&member->member().section(i)) :
+             nullptr;
+  }
+
+  BeamIntegration
+  fibre_member_integration(const FibreMember &fibre)
+  {
+    return fibre.force_based ? lobatto_integration(fibre.n_points) :
+                               legendre_integration(fibre.n_points);
+  }
+
+  SectionStateEntries
+  section_state_entries(const FibreSection &section, const std::vector<FibreKind> &kinds)
+  {
+    const ExtremeStrains e = extreme_strains(section, kinds);
+    return {{section.resultant()[0], section.resultant()[1], section.deformation()[0],
+             section.deformation()[1], e.concrete, e.steel_max, e.steel_min}};
   }
 
   SectionStrainLimits
