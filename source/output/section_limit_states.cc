@@ -92,7 +92,7 @@ namespace poundfe
   }
 
   void
-  SectionLimitStates::initialize_at(const double when)
+  SectionLimitStates::find_yield_curvatures()
   {
     for (MemberLimits &m : limits)
       for (unsigned int i = 0; i < m.sections.size(); ++i)
@@ -102,16 +102,25 @@ namespace poundfe
             m.sections[i].limits().strain[unsigned(SectionLimit::bar_yield)];
           if (std::isnan(yield)) // no bars: no yield curvature
             continue;
-          const double n = section.resultant()[0]; // the gravity state's axial force
+          const double n = section.resultant()[0];
           m.sections[i].set_yield_curvatures(section_yield_curvature(section, n, yield, +1),
                                              section_yield_curvature(section, n, yield, -1));
         }
+  }
+
+  void
+  SectionLimitStates::initialize_at(const double when)
+  {
+    if (!axial_force_followed) // else observe_at finds them
+      find_yield_curvatures(); // at the gravity state's axial forces
     observe_at(when);
   }
 
   void
   SectionLimitStates::observe_at(const double when)
   {
+    if (axial_force_followed)
+      find_yield_curvatures();
     for (MemberLimits &m : limits)
       for (unsigned int i = 0; i < m.sections.size(); ++i)
         m.sections[i].observe(*fibre_section_of(*m.element, i), when);

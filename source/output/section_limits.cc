@@ -315,6 +315,10 @@ namespace poundfe
     const double kappa = section.deformation()[1];
     kappa_max          = std::max(kappa_max, kappa);
     kappa_min          = std::min(kappa_min, kappa);
+    const double up    = strain_limits.yield_curvature_positive;
+    const double down  = strain_limits.yield_curvature_negative;
+    if (up > 0 && down > 0) // against the yield curvatures of this state
+      ductility = std::max({ductility, kappa / up, -kappa / down});
     const ExtremeStrains now = extreme_strains(section, kinds);
     peak.concrete  = std::min(peak.concrete, now.concrete);
     peak.core      = std::min(peak.core, now.core);
@@ -344,7 +348,7 @@ namespace poundfe
     const double down = strain_limits.yield_curvature_negative;
     if (!(up > 0 && down > 0)) // a section without bars
       return std::numeric_limits<double>::quiet_NaN();
-    return std::max(kappa_max / up, -kappa_min / down);
+    return ductility;
   }
 
   double

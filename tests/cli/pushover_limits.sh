@@ -12,6 +12,9 @@
 #     end of the push without a target;
 #   - pushover.csv's damage_state column of every storey at every step: the
 #     worst limit its members reached at or before that step's displacement;
+#   - the yield curvatures follow the axial force: the two columns of storey
+#     1 of A (the same N at the gravity state) end the push at yield
+#     curvatures more than 2 % apart (tension side against compression side);
 #   - a run partitioned by building (Partition = buildings) of fibre
 #     buildings: exit 1 naming Time integration/Partition, nothing written
 #     (a rank sees only its own members: their limit states would be lost).
@@ -81,6 +84,11 @@ for d, at in zip(sys.argv[1:], ["target displacement", "end of the push"]):
                 expected = max([0] + [o for (bb, st, o, f) in firsts
                                       if bb == b["building"] and st == i + 1 and f <= x + 1e-12])
                 assert float(r[column]) == expected, (d, column, x, r[column], expected)
+    # the yield curvatures follow the axial force: the two columns of storey 1
+    # (equal N under gravity) end the push at different ones
+    ky = [next(m for m in members if m["member"] == c)["yield_curvature_positive_1_m"][0]
+          for c in ("A_C1.1", "A_C1.2")]
+    assert abs(ky[0] - ky[1]) > 0.02 * max(ky), ky
     print("ok: %s at %s (%.4f m): %s" % (d, at, there,
           [b["storeys"] for b in damage["buildings"]]))
 PY
