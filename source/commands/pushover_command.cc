@@ -25,7 +25,10 @@ namespace poundfe
 {
   namespace
   {
-    /// pushover.csv: one row per committed point.
+    /// pushover.csv: one row per committed point; with fibre members each
+    /// storey's damage state so far as its number in the order of
+    /// damage_state_name (0 none, 1 yield, 2 spalling, 3 crushing, 4
+    /// fracture).
     void
     write_pushover_csv(const CommandRun &run, const Model &model, const PushoverResult &r)
     {
@@ -41,6 +44,9 @@ namespace poundfe
           header.push_back(e + " deformation");
         }
       header.push_back("arc_length");
+      if (!r.points.empty() && !r.points.front().storey_damage.empty()) // fibre members
+        for (const std::string &s : r.storeys)
+          header.push_back("damage_state " + s);
       const std::unique_ptr<TableWriter> csv =
         result_table_writer(run.memory, run.directory, "pushover", header);
       std::vector<double> row;
@@ -59,6 +65,8 @@ namespace poundfe
               row.push_back(p.element_deformations[e]);
             }
           row.push_back(p.arc_length);
+          for (const int worst : p.storey_damage) // 0 none, 1 yield ... 4 fracture
+            row.push_back(worst + 1);
           csv->add_row(i, row);
         }
       csv->commit();

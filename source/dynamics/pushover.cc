@@ -206,6 +206,8 @@ namespace poundfe
           section_limits = std::make_shared<SectionLimitStates>(model, elements, *limits);
           if (section_limits->empty())
             section_limits.reset();
+          else // the columns' axial forces change with the overturning moment
+            section_limits->follow_axial_force();
         }
     }
 

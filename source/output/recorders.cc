@@ -6,7 +6,7 @@
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
-#include <poundfe/output/section_limits.h>
+#include <poundfe/output/section_states.h>
 #include <poundfe/elements/member_element.h>
 #include <poundfe/output/storey_forces.h>
 
@@ -353,22 +353,12 @@ namespace poundfe
               owners_of(Owner::element, chosen, 3)};
     }
 
-    /// The fibre section at point i of element e (nullptr: not a fibre member).
-    const FibreSection *
-    fibre_section_of(const NonlinearElement &e, const unsigned int i)
-    {
-      const auto *member = dynamic_cast<const MemberElement<2> *>(&e);
-      return member && i < member->member().n_points() ?
-               dynamic_cast<const FibreSection *>(&member->member().section(i)) :
-               nullptr;
-    }
-
     /// At each integration point of the fibre members `chosen`: N, M, eps0,
     /// kappa and the extreme fibre strains (output/section_limits.h).
     Series
     section_state_series(const NonlinearElements &elements, const std::vector<unsigned int> &chosen)
     {
-      constexpr unsigned int n_per_point = 7;
+      constexpr unsigned int n_per_point = n_section_state_entries;
       std::vector<std::string> columns;
       std::vector<ColumnOwner> owners;
       auto points = std::make_shared<std::vector<std::array<unsigned int, 2>>>(); // element, point
@@ -392,12 +382,9 @@ namespace poundfe
                     const auto [h, i] = (*points)[p];
                     if (!s.observes_element(h))
                       continue;
-                    const FibreSection  &section = *fibre_section_of(s.elements[h], i);
-                    const ExtremeStrains e       = extreme_strains(section, (*kinds)[p]);
-                    const double row[n_per_point] = {
-                      section.resultant()[0], section.resultant()[1], section.deformation()[0],
-                      section.deformation()[1], e.concrete, e.steel_max, e.steel_min};
-                    std::copy(row, row + n_per_point, to.begin() + n_per_point * p);
+                    const SectionStateEntries row =
+                      section_state_entries(*fibre_section_of(s.elements[h], i), (*kinds)[p]);
+                    std::copy(row.begin(), row.end(), to.begin() + n_per_point * p);
                   }
               },
               owners};

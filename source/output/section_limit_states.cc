@@ -1,6 +1,7 @@
 // The limit states of a run's fibre members (output/section_limit_states.h).
 #include <poundfe/output/section_limit_states.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/section_states.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,12 +28,6 @@ namespace poundfe
       while (f + 1 < floors.size() && floors[f].level < top - tolerance)
         ++f;
       return f + 1;
-    }
-
-    const FibreSection *
-    fibre_section(const MemberElement<2> &element, const unsigned int i)
-    {
-      return dynamic_cast<const FibreSection *>(&element.member().section(i));
     }
 
     /// The smallest first time over the member's sections (NaN: never).
@@ -83,13 +78,13 @@ namespace poundfe
     for (const NonlinearElement &e : elements)
       {
         const auto *member = dynamic_cast<const MemberElement<2> *>(&e);
-        if (member == nullptr || fibre_section(*member, 0) == nullptr)
+        if (member == nullptr || fibre_section_of(*member, 0) == nullptr)
           continue;
         MemberLimits m{member, e.label, e.building, storey_of_member(model, e.label, e.building),
                        {}};
         for (unsigned int i = 0; i < member->member().n_points(); ++i)
           {
-            const FibreSection &section = *fibre_section(*member, i);
+            const FibreSection &section = *fibre_section_of(*member, i);
             m.sections.emplace_back(section, section_strain_limits(section, parameters));
           }
         limits.push_back(std::move(m));
@@ -97,29 +92,38 @@ namespace poundfe
   }
 
   void
-  SectionLimitStates::initialize_at(const double when)
+  SectionLimitStates::find_yield_curvatures()
   {
     for (MemberLimits &m : limits)
       for (unsigned int i = 0; i < m.sections.size(); ++i)
         {
-          const FibreSection &section = *fibre_section(*m.element, i);
+          const FibreSection &section = *fibre_section_of(*m.element, i);
           const double yield =
             m.sections[i].limits().strain[unsigned(SectionLimit::bar_yield)];
           if (std::isnan(yield)) // no bars: no yield curvature
             continue;
-          const double n = section.resultant()[0]; // the gravity state's axial force
+          const double n = section.resultant()[0];
           m.sections[i].set_yield_curvatures(section_yield_curvature(section, n, yield, +1),
                                              section_yield_curvature(section, n, yield, -1));
         }
+  }
+
+  void
+  SectionLimitStates::initialize_at(const double when)
+  {
+    if (!axial_force_followed) // else observe_at finds them
+      find_yield_curvatures(); // at the gravity state's axial forces
     observe_at(when);
   }
 
   void
   SectionLimitStates::observe_at(const double when)
   {
+    if (axial_force_followed)
+      find_yield_curvatures();
     for (MemberLimits &m : limits)
       for (unsigned int i = 0; i < m.sections.size(); ++i)
-        m.sections[i].observe(*fibre_section(*m.element, i), when);
+        m.sections[i].observe(*fibre_section_of(*m.element, i), when);
   }
 
   std::vector<int>

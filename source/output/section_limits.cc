@@ -2,8 +2,10 @@
 // `Section limits` entries, each section's limits and yield curvature, and
 // the tracker of its peaks and first times.
 #include <poundfe/output/section_limits.h>
+#include <poundfe/output/section_states.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
+#include <poundfe/elements/member_element.h>
 #include <poundfe/sections/moment_curvature.h>
 
 #include <deal.II/base/exceptions.h>
@@ -178,6 +180,30 @@ namespace poundfe
     return e;
   }
 
+  const FibreSection *
+  fibre_section_of(const NonlinearElement &element, const unsigned int i)
+  {
+    const auto *member = dynamic_cast<const MemberElement<2> *>(&element);
+    return member && i < member->member().n_points() ?
+             dynamic_cast<const FibreSection *>(&member->member().section(i)) :
+             nullptr;
+  }
+
+  BeamIntegration
+  fibre_member_integration(const FibreMember &fibre)
+  {
+    return fibre.force_based ? lobatto_integration(fibre.n_points) :
+                               legendre_integration(fibre.n_points);
+  }
+
+  SectionStateEntries
+  section_state_entries(const FibreSection &section, const std::vector<FibreKind> &kinds)
+  {
+    const ExtremeStrains e = extreme_strains(section, kinds);
+    return {{section.resultant()[0], section.resultant()[1], section.deformation()[0],
+             section.deformation()[1], e.concrete, e.steel_max, e.steel_min}};
+  }
+
   SectionStrainLimits
   section_strain_limits(const FibreSection &section, const SectionLimitParameters &parameters)
   {
@@ -289,6 +315,10 @@ namespace poundfe
     const double kappa = section.deformation()[1];
     kappa_max          = std::max(kappa_max, kappa);
     kappa_min          = std::min(kappa_min, kappa);
+    const double up    = strain_limits.yield_curvature_positive;
+    const double down  = strain_limits.yield_curvature_negative;
+    if (up > 0 && down > 0) // against the yield curvatures of this state
+      ductility = std::max({ductility, kappa / up, -kappa / down});
     const ExtremeStrains now = extreme_strains(section, kinds);
     peak.concrete  = std::min(peak.concrete, now.concrete);
     peak.core      = std::min(peak.core, now.core);
@@ -318,7 +348,7 @@ namespace poundfe
     const double down = strain_limits.yield_curvature_negative;
     if (!(up > 0 && down > 0)) // a section without bars
       return std::numeric_limits<double>::quiet_NaN();
-    return std::max(kappa_max / up, -kappa_min / down);
+    return ductility;
   }
 
   double

@@ -44,7 +44,8 @@ namespace poundfe
       hinge         = 3,
       slab          = 4, // a rigid floor's outline (3D)
       mass_centre   = 5, // a rigid floor's master node (3D)
-      contact_point = 6  // a gap's point of contact in plan (3D)
+      contact_point = 6, // a gap's point of contact in plan (3D)
+      section_point = 7  // an integration point of a member on fibre sections
     };
 
     static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,

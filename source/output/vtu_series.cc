@@ -4,6 +4,7 @@
 #include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/number_text.h>
+#include <poundfe/output/section_states.h>
 #include <poundfe/output/vtu_series.h>
 
 #include "vtu_arrays.h"
@@ -44,6 +45,10 @@ namespace poundfe
 
     Cells        cells;
     unsigned int first_gap_cell = 0, first_hinge_cell = 0;
+    /// The integration points of fibre members: their vertex cells follow
+    /// the hinges', one per point, in the order of the members' elements.
+    unsigned int              first_section_cell = 0;
+    std::vector<unsigned int> section_point_number; // 1-based along its member
     /// The cell of each hysteretic storey, in the order of the elements.
     std::vector<unsigned int> hysteretic_storey_cells;
     double      model_size = 0; // largest extent, m
@@ -80,6 +85,12 @@ namespace poundfe
     // points inside members and at barriers), the extent, the static text
     void  add_node_points();
     Cells make_cells();
+    /// The vertex cells of the fibre members' integration points; a point
+    /// where a member already has one (members[e]: its points at xi = k /
+    /// n_member_subdivisions) is shared.
+    void  add_section_cells(Cells &cells, const std::vector<std::vector<long>> &members);
+    /// The section arrays of a time frame (cell data, 0 off the points).
+    void  add_section_arrays(const ElementFrameStates &states, FieldFrame &frame) const;
     void  set_model_size();
     /// Global (ux, uy, rz) of every point.
     std::vector<std::array<double, 3>> point_displacements(const Vector &u) const;
@@ -184,6 +195,7 @@ namespace poundfe
   VtuSeries::Impl::make_cells()
   {
     Cells cells;
+    std::vector<std::vector<long>> member_points;
     std::map<std::string, int> member_id; // the pieces of a member share its label
     for (unsigned int e = 0; e < model.members.size(); ++e)
       {
@@ -201,6 +213,7 @@ namespace poundfe
         cell.push_back(point_of_node[m.nodes[1]]);
         const int id = member_id.emplace(m.label, member_id.size() + 1).first->second;
         cells.add(cell, vtk_poly_line, frame_element, m.building, id);
+        member_points.push_back(std::move(cell));
       }
     for (const StoreyLink &link : model.links)
       {
@@ -228,7 +241,36 @@ namespace poundfe
     for (const Hinge &h : model.hinges)
       cells.add({point_of_node[h.joint_node]}, vtk_vertex, hinge, h.building,
                 cells.members[h.member]);
+    add_section_cells(cells, member_points);
     return cells;
+  }
+
+  void
+  VtuSeries::Impl::add_section_cells(Cells &cells, const std::vector<std::vector<long>> &members)
+  {
+    first_section_cell = cells.types.size();
+    for (unsigned int e = 0; e < model.members.size(); ++e)
+      {
+        const Member &m = model.members[e];
+        if (!m.fibre.fibre() ||
+            !dynamic_cast<const FibreSection *>(model.section_laws.at(m.fibre.section).get()))
+          continue; // its element has no section states (ElementFrameStates::evaluate)
+        const Point2 &start = model.nodes[m.nodes[0]].position;
+        const Point2 &end   = model.nodes[m.nodes[1]].position;
+        const std::vector<double> xi = fibre_member_integration(m.fibre).points;
+        for (unsigned int i = 0; i < xi.size(); ++i)
+          {
+            const double k     = xi[i] * n_member_subdivisions;
+            const long   shared = std::lround(k);
+            const long   point =
+              std::abs(k - shared) < 1e-12 ?
+                members[e][shared] :
+                add_point({start.x + xi[i] * (end.x - start.x), start.y + xi[i] * (end.y - start.y)},
+                          {-1, static_cast<int>(e), xi[i]});
+            cells.add({point}, vtk_vertex, section_point, m.building, cells.members[e]);
+            section_point_number.push_back(i + 1);
+          }
+      }
   }
 
   void
@@ -344,6 +386,14 @@ namespace poundfe
     frame.point.push_back(std::move(displacement));
     frame.point.push_back(std::move(rotation));
     frame.cell = cell_id_arrays(cells);
+    if (!section_point_number.empty())
+      {
+        FieldArray number{"integration_point", 1, true, true,
+                          std::vector<double>(cells.types.size(), 0.0)};
+        std::copy(section_point_number.begin(), section_point_number.end(),
+                  number.values.begin() + first_section_cell);
+        frame.cell.push_back(std::move(number));
+      }
     return frame;
   }
 
@@ -487,7 +537,16 @@ namespace poundfe
       {
         const NonlinearElement &e = elements[h];
         kinds[h]                  = e.kind;
-        if (observed && !(*observed)[h])
+        const bool seen           = !observed || (*observed)[h];
+        for (unsigned int i = 0; fibre_section_of(e, i) != nullptr; ++i) // after all elements
+          {
+            const FibreSection &section = *fibre_section_of(e, i);
+            const SectionStateEntries entries =
+              seen ? section_state_entries(section, fibre_kinds(section.geometry())) :
+                     SectionStateEntries{};
+            values.insert(values.end(), entries.begin(), entries.end());
+          }
+        if (!seen)
           continue;
         double *x  = &values[n_entries * h];
         x[force]   = e.force();
@@ -615,7 +674,33 @@ namespace poundfe
           {"plastic_deformation", &plastic}})
       frame.cell.push_back({array_name, 1, false, false, *values});
     frame.cell.push_back({"contact", 1, true, false, std::vector<double>(contact.begin(), contact.end())});
+    add_section_arrays(states, frame);
     return frame;
+  }
+
+  void
+  VtuSeries::Impl::add_section_arrays(const ElementFrameStates &states, FieldFrame &frame) const
+  {
+    if (section_point_number.empty())
+      return;
+    static const char *names[n_section_state_entries] = {
+      "section_N",       "section_M",        "axial_strain",    "curvature",
+      "concrete_strain", "steel_strain_max", "steel_strain_min"};
+    std::vector<FieldArray> arrays;
+    for (const char *array_name : names)
+      arrays.push_back({array_name, 1, false, false, std::vector<double>(cells.types.size(), 0.0)});
+    // the section entries follow the elements', point after point in the
+    // order of the members' elements, which is the cells' order
+    const std::size_t first = ElementFrameStates::n_entries * states.kinds.size();
+    AssertThrow(states.values.size() ==
+                  first + n_section_state_entries * section_point_number.size(),
+                dealii::ExcMessage("the fibre members' integration points and their drawing differ"));
+    for (std::size_t p = 0; p < section_point_number.size(); ++p)
+      for (unsigned int k = 0; k < arrays.size(); ++k)
+        arrays[k].values[first_section_cell + p] =
+          states.values[first + n_section_state_entries * p + k];
+    for (FieldArray &array : arrays)
+      frame.cell.push_back(std::move(array));
   }
 
   void

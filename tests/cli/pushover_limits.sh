@@ -10,6 +10,11 @@
 #     (the columns below a floor, the beams of that floor) whose first
 #     control displacement is at or before that point's; the same at the
 #     end of the push without a target;
+#   - pushover.csv's damage_state column of every storey at every step: the
+#     worst limit its members reached at or before that step's displacement;
+#   - the yield curvatures follow the axial force: the two columns of storey
+#     1 of A (the same N at the gravity state) end the push at yield
+#     curvatures more than 2 % apart (tension side against compression side);
 #   - a run partitioned by building (Partition = buildings) of fibre
 #     buildings: exit 1 naming Time integration/Partition, nothing written
 #     (a rank sees only its own members: their limit states would be lost).
@@ -64,6 +69,26 @@ for d, at in zip(sys.argv[1:], ["target displacement", "end of the push"]):
         states = b["storeys"]
         expected = [worst[(b["building"], i + 1)] for i in range(len(states))]
         assert states == expected, (d, b["building"], states, expected)
+    # pushover.csv's damage state of every storey at every step: the worst
+    # limit its members reached at or before that step's displacement
+    storeys = [k[len("drift "):] for k in rows[0] if k.startswith("drift ")]
+    firsts = [(m["building"], m["storey"], order.index(limit_of[name]), limit["first_control_displacement_m"])
+              for m in members for name, limit in m["limits"].items()
+              if limit["first_control_displacement_m"] is not None]
+    k = 0
+    for b in damage["buildings"]:
+        for i in range(len(b["storeys"])):
+            column = "damage_state " + storeys[k]
+            k += 1
+            for r, x in zip(rows, u):
+                expected = max([0] + [o for (bb, st, o, f) in firsts
+                                      if bb == b["building"] and st == i + 1 and f <= x + 1e-12])
+                assert float(r[column]) == expected, (d, column, x, r[column], expected)
+    # the yield curvatures follow the axial force: the two columns of storey 1
+    # (equal N under gravity) end the push at different ones
+    ky = [next(m for m in members if m["member"] == c)["yield_curvature_positive_1_m"][0]
+          for c in ("A_C1.1", "A_C1.2")]
+    assert abs(ky[0] - ky[1]) > 0.02 * max(ky), ky
     print("ok: %s at %s (%.4f m): %s" % (d, at, there,
           [b["storeys"] for b in damage["buildings"]]))
 PY

@@ -10,6 +10,10 @@
 //   - two ElasticPP bars at +-0.2 m: at N = 0 the neutral axis is the
 //     centre by symmetry, so the first yield curvature is (fy / E) / 0.2
 //     either way;
+//   - the curvature ductility against yield curvatures that change between
+//     the states observed (a pushover following the axial force): each
+//     state's curvature over the yield curvature set when it was observed,
+//     the largest of them, not the peak curvature over the last one;
 //   - the Section limits entries: a wrong sign, zero or a word is refused
 //     naming the entry.
 #include <poundfe/base/exceptions.h>
@@ -82,6 +86,31 @@ BOOST_AUTO_TEST_CASE(bar_yield_spalling_and_fracture_of_an_imposed_curvature)
   BOOST_CHECK_CLOSE(tracker.ratio(SectionLimit::spalling), yc * kappa / 0.004, 1e-6);
   // fracture is the worst of the limits reached
   BOOST_CHECK_EQUAL(std::string(damage_state_name(tracker.worst_limit())), "fracture");
+}
+
+BOOST_AUTO_TEST_CASE(ductility_against_the_yield_curvature_of_each_state)
+{
+  FibreSection           section(rc_rectangle(column()), 2);
+  SectionLimitParameters parameters;
+  SectionLimitTracker    tracker(section, section_strain_limits(section, parameters));
+  const auto at = [&](const double kappa, const double yield_up, const double yield_down,
+                      const double t) {
+    tracker.set_yield_curvatures(yield_up, yield_down);
+    BOOST_REQUIRE(section.set_trial(curvature(kappa)));
+    section.commit();
+    tracker.observe(section, t);
+  };
+  // kappa / kappa_y of each state: 0.5, 1.5 (bending the other way), 1.2
+  // (the peak curvature), 2.2 (the largest), 0.04; measured against the
+  // last yield curvatures alone it would be max(0.012, 0.006) / 0.05 = 0.24
+  at(0.010, 0.020, 0.015, 0);
+  at(-0.006, 0.020, 0.004, 1);
+  at(0.012, 0.010, 0.004, 2);
+  at(0.011, 0.005, 0.004, 3);
+  at(0.002, 0.050, 0.050, 4);
+  BOOST_CHECK_CLOSE(tracker.curvature_ductility(), 0.011 / 0.005, 1e-12);
+  BOOST_CHECK_EQUAL(tracker.peak_curvature_positive(), 0.012);
+  BOOST_CHECK_EQUAL(tracker.limits().yield_curvature_positive, 0.05);
 }
 
 BOOST_AUTO_TEST_CASE(a_given_crushing_strain_applies_to_concrete_without_a_core)

@@ -40,6 +40,12 @@ namespace poundfe
                        const SectionLimitParameters &parameters);
 
     bool empty() const { return limits.empty(); }
+    /// From now on, each state observed first finds every section's yield
+    /// curvatures again at its current axial force (a pushover: the
+    /// columns' axial forces change with the overturning moment), so that
+    /// its ductility is measured against the yield curvature of that
+    /// state; without it they stay those of the state initialize() saw.
+    void follow_axial_force() { axial_force_followed = true; }
     /// The yield curvatures at the state given (the gravity state), then
     /// its strains.
     void initialize(const ResponseView &state) override { initialize_at(state.time()); }
@@ -61,7 +67,11 @@ namespace poundfe
                     const std::string &first_key = "first_time_s") const;
 
   private:
+    /// Each section's kappa_y± at its current axial force.
+    void find_yield_curvatures();
+
     std::vector<MemberLimits> limits;
+    bool                      axial_force_followed = false;
   };
 } // namespace poundfe
 

@@ -115,13 +115,18 @@ namespace poundfe
     /// The section's state at `time` (after each accepted step or substep).
     void observe(const FibreSection &section, double time);
 
-    /// kappa_y± (from section_yield_curvature at the gravity state).
+    /// kappa_y± (from section_yield_curvature at the gravity state, or at
+    /// the current axial force: SectionLimitStates::follow_axial_force);
+    /// the states observed from now on are measured against them.
     void set_yield_curvatures(double positive, double negative);
 
     const SectionStrainLimits &limits() const { return strain_limits; }
     double peak_curvature_positive() const { return kappa_max; }
     double peak_curvature_negative() const { return kappa_min; }
-    /// mu_kappa (NaN without yield curvatures: no bars).
+    /// mu_kappa: the largest over the states observed of kappa / kappa_y+
+    /// and -kappa / kappa_y-, each with the yield curvatures set when it
+    /// was observed (fixed ones: max(kappa_max / kappa_y+, -kappa_min /
+    /// kappa_y-)); NaN without yield curvatures (no bars).
     double curvature_ductility() const;
     /// The peak extreme strains (concrete, core, steel_min most negative).
     const ExtremeStrains &peaks() const { return peak; }
@@ -139,7 +144,7 @@ namespace poundfe
 
     std::vector<FibreKind>               kinds;
     SectionStrainLimits                  strain_limits;
-    double                               kappa_max = 0, kappa_min = 0;
+    double                               kappa_max = 0, kappa_min = 0, ductility = 0;
     ExtremeStrains                       peak, previous;
     double                               previous_time = 0;
     bool                                 started       = false;

@@ -18,6 +18,14 @@
 //   (1 while a gap is closed), `penetration`, the Bouc-Wen variable `z` and
 //   the plastic deformation (hinge rotation or storey drift minus force over
 //   initial stiffness) of hinges and hysteretic storeys.
+//   Members on fibre sections (Member model = fibre) add a vertex cell at
+//   each integration point (kind 7; its point shared with the member's own
+//   where they coincide), whose cell data `integration_point` (1-based
+//   along the member), `section_N`, `section_M`, `axial_strain`,
+//   `curvature`, `concrete_strain` (the most compressed concrete fibre),
+//   `steel_strain_max` and `steel_strain_min` are the section states
+//   recorder's at the same state (output/section_states.h); these arrays
+//   are 0 on every other cell and absent from models without fibre members.
 // 3D models (Model/Dimension = 3): members, slabs, mass centres, storeys and
 // gaps in space, drawn by source/output/vtu_series_3d.cc (doc/theory.md §10).
 // Arrays are written in VTK's compressed binary form (zlib, base64), as
@@ -49,7 +57,11 @@ namespace poundfe
   /// variable (a gap's penetration, a hinge's z), plastic deformation
   /// (deformation minus force over initial stiffness; 0 without one),
   /// whether it is active, and for a contact in plan whether it is in
-  /// reach, its contact point and its force on its first side.
+  /// reach, its contact point and its force on its first side. After the
+  /// n_entries of every element, `values` holds the section state entries
+  /// (output/section_states.h) of every integration point of each member
+  /// on fibre sections, member after member in the elements' order (those
+  /// of an element not observed: 0; a run over ranks has no fibre members).
   struct ElementFrameStates
   {
     enum Entry : unsigned int
@@ -75,7 +87,7 @@ namespace poundfe
     }
 
     std::vector<ElementKind> kinds;
-    std::vector<double>      values; // n_entries per element
+    std::vector<double>      values; // n_entries per element, then the sections'
   };
 
   class VtuSeries
