@@ -9,12 +9,14 @@ namespace poundfe
 {
   namespace
   {
-    /// "x/k" for gnuplot's using, or "x" when k = 1.
+    /// Column `column` over (or times) k for gnuplot's using: "($3/0.001)",
+    /// or the bare column number when k = 1 (gnuplot reads "$3" alone as
+    /// an error).
     std::string
     in_unit(const std::string &column, const double si_per_unit, const bool divide)
     {
       if (si_per_unit == 1)
-        return "$" + column;
+        return column;
       return "($" + column + (divide ? "/" : "*") + number_text(si_per_unit) + ")";
     }
 

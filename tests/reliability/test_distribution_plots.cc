@@ -72,6 +72,20 @@ BOOST_AUTO_TEST_CASE(impacts_get_one_bar_per_whole_number)
   BOOST_CHECK(pdf.settings.find("set xrange [-0.5:40.5]") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(a_ratio_is_drawn_from_its_columns_as_they_are)
+{
+  // gnuplot takes "3:5", not "$3:$5"
+  const std::vector<double> values{0.004, 0.006, 0.011};
+  const poundfe::ResponseFigure figure{"max_drift_ratio",
+                                       "Largest peak inter-storey drift ratio of all buildings",
+                                       "largest peak drift ratio", ""};
+  const auto [pdf, cdf] =
+    poundfe::distribution_plots(figure, poundfe::histogram(values, 3), values);
+  BOOST_CHECK_EQUAL(pdf.series[0].using_spec, "3:5");
+  BOOST_CHECK_EQUAL(cdf.series[0].using_spec, "1:2");
+  BOOST_CHECK_EQUAL(pdf.y_label, "probability density");
+}
+
 BOOST_AUTO_TEST_CASE(an_acceleration_in_g)
 {
   const std::vector<double> values{1.0, 2.0, 4.0};
