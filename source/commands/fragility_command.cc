@@ -102,9 +102,11 @@ namespace poundfe::commands
       range[0] << *std::min_element(levels.begin(), levels.end());
       range[1] << *std::max_element(levels.begin(), levels.end());
       const std::string lowest = range[0].str(), highest = range[1].str();
-      Plot plot{"fragility.png", "lognormal fragility (maximum likelihood)", "PGA (g)",
-                "P(exceedance | PGA)", {}};
-      plot.settings = "set xrange [0:" + highest + " * 1.1]\nset yrange [0:1]\n";
+      Plot plot{"fragility.png",
+                "Fragility of each limit state against PGA (lognormal, maximum likelihood)",
+                "PGA (g)", "P(exceedance | PGA)", {}};
+      // the observed fractions reach 0 and 1: a margin keeps their markers whole
+      plot.settings = "set xrange [0:" + highest + " * 1.1]\nset yrange [-0.02:1.05]\n";
       for (std::size_t i = 0; i < curves.size(); ++i)
         {
           const LognormalFragility &c = curves[i].fit;

@@ -154,7 +154,11 @@ namespace poundfe::commands
     ida_plot(const IdaRunner &runner, const std::string &measure)
     {
       const std::string column = std::to_string(6 + runner.max_drift_column());
-      Plot plot{"ida.png", "IDA curves", "largest peak drift ratio", measure, {}};
+      Plot plot{"ida.png",
+                "IDA curves of " + std::to_string(runner.suite().records.size()) +
+                  " records: largest peak drift ratio of all buildings against " + measure,
+                "largest peak drift ratio of all buildings", measure, {}};
+      plot.settings = "set xrange [0:*]\nset yrange [0:*]\n";
       for (std::size_t r = 0; r < runner.suite().records.size(); ++r)
         plot.series.push_back({"ida.csv",
                                "(($1 == " + std::to_string(r + 1) + " && $5 == 0) ? $" + column +

@@ -11,6 +11,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/commands/command.h>
+#include <poundfe/excitation/ground_motion.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/json_writer.h>
@@ -181,29 +182,36 @@ namespace poundfe::commands
     mitigation_plot(const std::vector<std::string> &buildings)
     {
       const std::string csv = "mitigation.csv", xtics = "set xtics rotate by -30\n";
-      Plot drift{"mitigation.png", "mitigation: the bare pair, dampers and bumpers", "",
-                 "mean peak drift ratio", {}};
+      std::string pair; // "A and B"
+      for (std::size_t b = 0; b < buildings.size(); ++b)
+        pair += (b == 0 ? "" : b + 1 == buildings.size() ? " and " : ", ") + buildings[b];
+      Plot drift{"mitigation.png",
+                 "Mitigation of the pounding of " + pair + ": the bare pair, dampers and bumpers",
+                 "", "mean peak drift ratio", {}};
       for (std::size_t b = 0; b < buildings.size(); ++b)
         drift.series.push_back({csv, "3:" + std::to_string(10 + b) + ":xtic(2)", buildings[b],
                                 "linespoints pt 7"});
       drift.settings = xtics + "set offsets 0.3, 0.3, 0, 0\n";
       // mitigation.csv's columns (1-based) after the drifts: max drift, floor
-      // acceleration, impacts, peak and max impact force, P(pounding), gaps
+      // acceleration, impacts, peak and max impact force, P(pounding), gaps;
+      // in SI, drawn in kN, mm and g
       const std::size_t after = 10 + buildings.size();
-      const auto column = [&](const std::size_t k) {
-        return "3:" + std::to_string(after + k) + ":xtic(2)";
+      const auto column = [&](const std::size_t k, const std::string &in_unit = "") {
+        const std::string c = std::to_string(after + k);
+        return "3:" + (in_unit.empty() ? c : "($" + c + in_unit + ")") + ":xtic(2)";
       };
       Plot pounding{"", "", "", "P(pounding)",
                     {{csv, column(5), "P(pounding)", "linespoints pt 7"},
-                     {csv, column(3), "mean peak impact force (N)", "linespoints pt 5", "x1y2"}}};
-      pounding.y2_label = "impact force (N)";
-      pounding.settings = drift.settings + "set yrange [0:1.05]\n";
-      Plot gap{"", "", "case", "required gap (m)",
-               {{csv, column(6), "mean largest approach without contact (+ bumper)",
+                     {csv, column(3, "/1000"), "mean peak impact force (kN)", "linespoints pt 5",
+                      "x1y2"}}};
+      pounding.y2_label = "impact force (kN)";
+      pounding.settings = drift.settings + "set yrange [-0.02:1.05]\n";
+      Plot gap{"", "", "case", "required gap (mm)",
+               {{csv, column(6, "*1000"), "mean largest approach without contact (+ bumper)",
                  "linespoints pt 7"},
-                {csv, column(1), "mean peak floor acceleration (m/s^2)", "linespoints pt 5",
-                 "x1y2"}}};
-      gap.y2_label = "floor acceleration (m/s^2)";
+                {csv, column(1, "/" + number_text(standard_gravity)),
+                 "mean peak floor acceleration (g)", "linespoints pt 5", "x1y2"}}};
+      gap.y2_label = "floor acceleration (g)";
       gap.settings = drift.settings;
       drift.below  = {pounding, gap};
       return drift;

@@ -6,6 +6,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/commands/command.h>
+#include <poundfe/excitation/ground_motion.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/append_file.h>
@@ -16,6 +17,7 @@
 #include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
+#include <poundfe/reliability/distribution_plots.h>
 #include <poundfe/reliability/montecarlo.h>
 #include <poundfe/reliability/random_parameters.h>
 #include <poundfe/reliability/reliability_analysis_parameters.h>
@@ -34,30 +36,41 @@ namespace poundfe::commands
   namespace
   {
     /// Quantities with a PDF and CDF: (column, file stem, axis label).
+    /// A response of the realizations table and its figures.
     struct ResponseDistribution
     {
-      unsigned int column;
-      std::string  stem, label;
-      bool         is_count = false; // whole numbers: bins centred on them
+      unsigned int   column;
+      ResponseFigure figure;
     };
 
     std::vector<ResponseDistribution>
     distributions(const RealizationRunner &runner)
     {
+      const double g = standard_gravity;
       std::vector<ResponseDistribution> d{
-        {runner.column("max_drift_ratio"), "max_drift_ratio", "largest peak drift ratio"},
-        {runner.column("max_floor_acceleration"), "max_floor_acceleration",
-         "largest peak absolute floor acceleration (m/s^2)"}};
+        {runner.column("max_drift_ratio"),
+         {"max_drift_ratio", "Largest peak inter-storey drift ratio of all buildings",
+          "largest peak drift ratio", ""}},
+        {runner.column("max_floor_acceleration"),
+         {"max_floor_acceleration", "Largest peak absolute floor acceleration of all buildings",
+          "largest peak absolute floor acceleration (g)", "g", g}}};
+      const std::string roof = "peak_roof_displacement_";
       for (const std::string &name : runner.response_names())
-        if (name.rfind("peak_roof_displacement_", 0) == 0)
-          d.push_back({runner.column(name), name, "peak roof displacement (m)"});
+        if (name.rfind(roof, 0) == 0)
+          d.push_back({runner.column(name),
+                       {name, "Peak roof displacement of building " + name.substr(roof.size()),
+                        "peak roof displacement (mm)", "mm", 1e-3}});
       if (runner.has_gaps())
         {
-          d.push_back({runner.column("n_impacts"), "n_impacts", "number of impacts", true});
-          d.push_back({runner.column("peak_contact_force"), "peak_contact_force",
-                       "peak contact force (N)"});
-          d.push_back({runner.column("min_clearance"), "min_clearance",
-                       "minimum clearance (m; negative: penetration)"});
+          d.push_back({runner.column("n_impacts"),
+                       {"n_impacts", "Number of impacts of all gap elements", "number of impacts",
+                        "", 1, true}});
+          d.push_back({runner.column("peak_contact_force"),
+                       {"peak_contact_force", "Peak contact force of all gap elements",
+                        "peak contact force (kN)", "kN", 1e3}});
+          d.push_back({runner.column("min_clearance"),
+                       {"min_clearance", "Minimum clearance of all gap elements",
+                        "minimum clearance (mm; negative: penetration)", "mm", 1e-3}});
         }
       return d;
     }
@@ -191,7 +204,7 @@ namespace poundfe::commands
       for (const ResponseDistribution &d : distributions(runner))
         {
           std::vector<double> values = table.completed_values(d.column);
-          const Histogram     h      = d.is_count ? count_histogram(values, histogram_bins) :
+          const Histogram     h      = d.figure.is_count ? count_histogram(values, histogram_bins) :
                                                    histogram(values, histogram_bins);
           std::string         pdf    = "bin_low,bin_high,bin_center,count,density\n";
           for (std::size_t i = 0; i < h.counts.size(); ++i)
@@ -211,21 +224,15 @@ namespace poundfe::commands
               append_number(cdf, (i + 1.0) / values.size());
               cdf += '\n';
             }
-          write_result_text(run.memory, run.directory, "pdf_" + d.stem + ".csv", pdf);
-          write_result_text(run.memory, run.directory, "cdf_" + d.stem + ".csv", cdf);
+          write_result_text(run.memory, run.directory, "pdf_" + d.figure.stem + ".csv", pdf);
+          write_result_text(run.memory, run.directory, "cdf_" + d.figure.stem + ".csv", cdf);
           json.begin_object()
-            .value("response", d.stem)
-            .value("pdf", "pdf_" + d.stem + ".csv")
-            .value("cdf", "cdf_" + d.stem + ".csv")
+            .value("response", d.figure.stem)
+            .value("pdf", "pdf_" + d.figure.stem + ".csv")
+            .value("cdf", "cdf_" + d.figure.stem + ".csv")
             .end_object();
-          plots.push_back(Plot{"pdf_" + d.stem + ".png",
-                               "PDF (histogram), " + std::to_string(values.size()) + " realizations",
-                               d.label, "probability density",
-                               {{"pdf_" + d.stem + ".csv", "3:5", "histogram", "boxes"}},
-                               false,
-                               true});
-          plots.push_back(Plot{"cdf_" + d.stem + ".png", "empirical CDF", d.label,
-                               "P(X <= x)", {{"cdf_" + d.stem + ".csv", "1:2", "ECDF", "steps"}}});
+          for (Plot &plot : distribution_plots(d.figure, h, values))
+            plots.push_back(std::move(plot));
         }
       json.end_array();
       return plots;

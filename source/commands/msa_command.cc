@@ -255,7 +255,10 @@ namespace poundfe::commands
     Plot
     msa_plot(const std::vector<LimitState> &states, const std::string &measure)
     {
-      Plot plot{"msa.png", "Multiple-stripe fragilities", measure, "P(limit state exceeded)", {}};
+      Plot plot{"msa.png", "Fragility of each limit state from the stripes (lognormal fit) against " + measure,
+                measure, "P(limit state exceeded)", {}};
+      // the observed fractions reach 0 and 1: a margin keeps their markers whole
+      plot.settings = "set xrange [0:*]\nset yrange [-0.02:1.05]\n";
       for (std::size_t s = 0; s < states.size(); ++s)
         {
           plot.series.push_back({"msa_curves.csv", "1:" + std::to_string(2 + s),

@@ -71,7 +71,9 @@ namespace poundfe::commands
           block << L.threshold << ',' << probability << ',' << probability * std::max(1 - cov, 1e-3)
                 << ',' << probability * (1 + cov) << '\n';
         }
-      Plot plot{"subset_levels.png", "Subset Simulation: P(Y > b) at the level thresholds",
+      Plot plot{"subset_levels.png",
+                "Subset Simulation: P(" + label + " > b) at the level thresholds, " +
+                  std::to_string(result.levels.size()) + " levels",
                 label, "exceedance probability", {{"$levels", "1:2:3:4", "levels (bars: +-1 CoV, upper bound)",
                                                    "yerrorlines pt 7"}}, true};
       plot.data_blocks = block.str() + "EOD\n";

@@ -22,10 +22,13 @@
 #include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
+#include <poundfe/report/switching_plot.h>
 
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <ostream>
 #include <sstream>
 
@@ -146,44 +149,25 @@ namespace poundfe
       write_result_text(run.memory, run.directory, "summary.json", json.str());
     }
 
-    /// The phase portrait of equation 1: the surfaces on its u or v alone
-    /// dashed, the sliding samples red, each hit marked by its class.
+    /// The phase portrait of equation 1 (report/switching_plot.h), with the
+    /// classes of hit that occurred and the unit of equation 1's DOF.
     void
-    draw_phase_portrait(const ModelSwitching &analysis, const std::string &directory)
+    draw_phase_portrait(const ModelSwitching &analysis, const Model &model, const bool slides,
+                        const std::string &directory)
     {
-      const unsigned int n = analysis.n_equations();
-      std::ostringstream settings;
-      for (const SwitchingSurface &s : analysis.system().switching_surfaces())
-        {
-          const double u_part = s.normal[0], v_part = s.normal[n];
-          if (s.normal.cwiseAbs().sum() != std::abs(u_part) + std::abs(v_part) ||
-              (u_part != 0) == (v_part != 0))
-            continue; // not a line of this portrait
-          const double at = s.offset / (u_part != 0 ? u_part : v_part);
-          settings << "set arrow from " << (u_part != 0 ? "first " : "graph 0, first ") << at
-                   << (u_part != 0 ? ", graph 0 to first " : " to graph 1, first ") << at
-                   << (u_part != 0 ? ", graph 1" : "") << " nohead dt 2 lc rgb 'gray40'\n";
-        }
-      const std::string u = "2", v = std::to_string(2 + n), sliding = std::to_string(2 + 2 * n);
-      const std::string cls = std::to_string(2 * n + 9);
-      auto of_class = [&](const char *name) {
-        return u + ":(strcol(" + cls + ") eq '" + name + "' ? $" + v + " : 1/0)";
-      };
-      Plot plot{"phase_portrait.png", "phase portrait of equation 1 with its switching surfaces",
-                "u_1", "v_1",
-                {{"trajectory.csv", u + ":" + v, "trajectory", "lines lc rgb 'black'"},
-                 {"trajectory.csv", u + ":($" + sliding + " > 0 ? $" + v + " : 1/0)",
-                  "sliding (Filippov)", "points pt 7 ps 0.6 lc rgb 'red'"},
-                 {"switching.csv", of_class("crossing"), "crossing", "points pt 6 ps 1.2 lc rgb 'blue'"},
-                 {"switching.csv", of_class("attracting-sliding"), "attracting sliding",
-                  "points pt 9 ps 1.4 lc rgb 'dark-green'"},
-                 {"switching.csv", of_class("sliding-exit"), "sliding exit",
-                  "points pt 11 ps 1.4 lc rgb 'orange'"},
-                 {"switching.csv", of_class("grazing"), "grazing", "points pt 4 ps 1.4 lc rgb 'magenta'"},
-                 {"switching.csv", of_class("repulsive-sliding"), "repulsive sliding",
-                  "points pt 2 ps 1.4 lc rgb 'purple'"}}};
-      plot.settings = "set datafile separator ','\n" + settings.str();
-      draw_plots(directory, {plot});
+      std::set<std::string> classes;
+      for (const auto &[surface, by_class] : analysis.counts())
+        for (const auto &[kind, count] : by_class)
+          if (count > 0)
+            classes.insert(kind);
+      const std::vector<int> &equation_of = model.equations();
+      const auto first = std::find(equation_of.begin(), equation_of.end(), 0);
+      const bool rotation = first != equation_of.end() &&
+                            (first - equation_of.begin()) % n_dofs_per_node ==
+                              static_cast<unsigned int>(Component::rz);
+      draw_plots(directory, {switching_phase_portrait(analysis.system().switching_surfaces(),
+                                                      analysis.n_equations(), classes, slides,
+                                                      rotation)});
     }
   } // namespace
 } // namespace poundfe
@@ -250,7 +234,7 @@ namespace poundfe::commands
     write_trajectory(switching_analysis, run);
     write_summary(input, switching_analysis, intervals, t_end, run);
     if (input.output.plots && !run.memory)
-      draw_phase_portrait(switching_analysis, run.directory);
+      draw_phase_portrait(switching_analysis, analysis.model, !intervals.empty(), run.directory);
     timer.leave_subsection();
 
     run.out << "poundfe switching: " << events.size() << " hits in [0, " << t_end << "] s\n";

@@ -245,7 +245,7 @@ namespace poundfe
   }
 
   std::vector<std::string>
-  damping_warnings(const Analysis &analysis, const InputFile &input)
+  damping_warnings(const Analysis &analysis)
   {
     const Model             &model = analysis.model;
     std::vector<std::string> warnings;
@@ -255,23 +255,7 @@ namespace poundfe
         const Modes           &modes   = analysis.building_modes[b];
         const std::string      section = "Building " + std::to_string(b + 1) + "/Damping/";
         const std::string      where   = "building '" + model.buildings[b].name + "': ";
-        const auto             set     = [&](const std::string &entry) {
-          return input.line_of(section + entry) > 0;
-        };
-        const std::vector<std::string> used =
-          d.kind == RayleighDamping::Kind::modes ?
-            std::vector<std::string>{"Damping ratio", "Modes"} :
-          d.kind == RayleighDamping::Kind::coefficients ? std::vector<std::string>{"a0", "a1"} :
-          d.kind == RayleighDamping::Kind::modal ? std::vector<std::string>{"Modal ratios"} :
-          d.kind == RayleighDamping::Kind::bands ?
-                                                   std::vector<std::string>{"Bands", "Damped modes"} :
-                                                   std::vector<std::string>{};
-        for (const std::string entry :
-             {"Damping ratio", "Modes", "a0", "a1", "Modal ratios", "Bands", "Damped modes"})
-          if (std::find(used.begin(), used.end(), entry) == used.end() && set(entry))
-            warnings.push_back(where + section + entry + " (line " +
-                               std::to_string(input.line_of(section + entry)) +
-                               ") is ignored: Type = " + damping_type_names().name(d.kind));
+        // entries of another Damping/Type: warn_entries_without_effect (model/entry_scope.h)
         if (d.kind == RayleighDamping::Kind::modes && modes.n_modes() > 0) // else another rank's
           {
             const SparseMatrix mass = block(analysis.system.mass, model.equation_range(b));
@@ -383,7 +367,7 @@ namespace poundfe
       if (model.dimension == 3)
         add_plan_participations(analysis);
       analysis.warnings = analysis.model.warnings; // the builder's, then the damping's
-      for (std::string &warning : damping_warnings(analysis, input))
+      for (std::string &warning : damping_warnings(analysis))
         analysis.warnings.push_back(std::move(warning));
       return analysis;
     }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <functional>
 #include <sstream>
 
 namespace poundfe
@@ -169,5 +170,134 @@ namespace poundfe
       }
     if (!problem.empty())
       input.fail(path, problem);
+  }
+
+  namespace
+  {
+    /// An entry (or, ending in '/', every entry of a subsection but its
+    /// `Type`) of `Building <i>` and why another entry's value leaves it
+    /// without effect on a building of a model of that dimension (empty:
+    /// it acts).
+    struct ConditionalEntry
+    {
+      std::string path;
+      std::function<std::string(const BuildingParameters &, unsigned int dimension)> why;
+    };
+
+    /// Typed Plan/Resisting planes of a 3D shear building: they replace the
+    /// perimeter planes made from the storey entries.
+    bool
+    typed_planes(const BuildingParameters &b, const unsigned int dimension)
+    {
+      return dimension == 3 && b.type == BuildingType::shear && !b.plan.planes.empty();
+    }
+
+    /// Whether the building has a Bouc-Wen element: a hinge of a frame or
+    /// mesh, a storey (or plane) with a yield drift of a shear building.
+    bool
+    has_bouc_wen(const BuildingParameters &b, const unsigned int dimension)
+    {
+      if (b.type != BuildingType::shear)
+        return !b.hinge_locations.empty() && !b.fibre();
+      if (typed_planes(b, dimension))
+        return std::any_of(b.plan.planes.begin(), b.plan.planes.end(),
+                           [](const PlaneEntry &plane) { return plane.yield_drift > 0; });
+      return std::any_of(b.storey_yield_drifts.begin(), b.storey_yield_drifts.end(),
+                         [](const double u_y) { return u_y > 0; });
+    }
+
+    /// A Damping entry used by Damping/Type = `user` alone.
+    ConditionalEntry
+    damping_entry(const std::string &entry, const RayleighDamping::Kind user)
+    {
+      return {"Damping/" + entry, [user](const BuildingParameters &b, unsigned int) {
+                const auto &names = damping_type_names();
+                return b.damping_type == user ?
+                         std::string() :
+                         "Damping/Type = " + names.name(b.damping_type) +
+                           " does not use it (Type = " + names.name(user) + " does)";
+              }};
+    }
+
+    /// The entries whose effect depends on another entry's value.
+    const std::vector<ConditionalEntry> &
+    conditional_entries()
+    {
+      using Kind = RayleighDamping::Kind;
+      const auto planes_replace = [](const BuildingParameters &b, const unsigned int dimension) {
+        return typed_planes(b, dimension) ?
+                 std::string("Plan/Resisting planes are typed: each plane has its own "
+                             "stiffness and yield drift (remove this entry, or the planes)") :
+                 std::string();
+      };
+      static const std::vector<ConditionalEntry> entries{
+        {"Storey stiffnesses", planes_replace},
+        {"Storey yield drifts", planes_replace},
+        {"Bouc-Wen/",
+         [](const BuildingParameters &b, const unsigned int dimension) {
+           return has_bouc_wen(b, dimension) ?
+                    std::string() :
+                    b.type == BuildingType::shear ?
+                    std::string("the building has no hysteretic storey (no yield drift above 0)") :
+                    std::string("the building has no hinge (Hinges/Locations is empty)");
+         }},
+        {"Hinges/",
+         [](const BuildingParameters &b, unsigned int) {
+           return b.type == BuildingType::shear || !b.hinge_locations.empty() ?
+                    std::string() :
+                    std::string("the building has no hinge (Hinges/Locations is empty)");
+         }},
+        {"Foundation/",
+         [](const BuildingParameters &b, unsigned int) {
+           return b.foundation.enabled() ? std::string() :
+                                           std::string("Foundation/Type = none: a fixed base");
+         }},
+        damping_entry("Damping ratio", Kind::modes),
+        damping_entry("Modes", Kind::modes),
+        damping_entry("a0", Kind::coefficients),
+        damping_entry("a1", Kind::coefficients),
+        damping_entry("Modal ratios", Kind::modal),
+        damping_entry("Bands", Kind::bands),
+        damping_entry("Damped modes", Kind::bands)};
+      return entries;
+    }
+
+    /// Whether `entry` (a path below `Building <i>/`) is `path` of a
+    /// ConditionalEntry, or an entry of its subsection other than Type.
+    bool
+    conditional_entry_matches(const std::string &path, const std::string &entry)
+    {
+      if (path.back() != '/')
+        return entry == path;
+      return entry.rfind(path, 0) == 0 && entry.find('/', path.size()) == std::string::npos &&
+             entry != path + "Type";
+    }
+  } // namespace
+
+  std::vector<std::string>
+  warn_entries_without_effect(const InputFile &input, const ModelParameters &model)
+  {
+    std::vector<std::pair<int, std::string>> found; // (line order, warning)
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      {
+        const std::string s = "Building " + std::to_string(b + 1) + "/";
+        for (const auto &[written, line] : input.lines)
+          {
+            if (written.rfind(s, 0) != 0)
+              continue;
+            const std::string entry = written.substr(s.size());
+            for (const ConditionalEntry &c : conditional_entries())
+              if (conditional_entry_matches(c.path, entry))
+                if (const std::string why = c.why(model.buildings[b], model.dimension); !why.empty())
+                  found.emplace_back(line > 0 ? line : INT_MAX, // JSON keys, overrides: after lines
+                                     input.warning(written, "has no effect: " + why));
+          }
+      }
+    std::stable_sort(found.begin(), found.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    std::vector<std::string> warnings;
+    for (auto &[order, warning] : found)
+      warnings.push_back(std::move(warning));
+    return warnings;
   }
 } // namespace poundfe

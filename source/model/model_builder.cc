@@ -1,6 +1,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/mesh/line_mesh.h>
+#include <poundfe/model/entry_scope.h>
 #include <poundfe/model/floor_mass.h>
 #include <poundfe/model/frame_foundation.h>
 #include <poundfe/model/frame_building_3d.h>
@@ -819,7 +820,9 @@ namespace poundfe
     set_fibre_rigidities(model);
     if (model.dimension == 3)
       check_plans_apart(model, parameters, input);
-    model.warnings = contact.entries_without_effect(input);
+    model.warnings = warn_entries_without_effect(input, parameters);
+    for (std::string &warning : contact.entries_without_effect(input))
+      model.warnings.push_back(std::move(warning));
     check_separations_used(parameters, input, model.warnings);
     add_contact(model, parameters, contact, input);
     if (contact.law != "none" && model.gaps.empty()) // nothing the law could act on

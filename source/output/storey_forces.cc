@@ -274,24 +274,42 @@ namespace poundfe
   {
     forces.emplace(state.model, state.elements);
     const unsigned int n_buildings = state.model.buildings.size();
-    peak_shear.assign(n_buildings, 0.0);
-    peak_time.assign(n_buildings, state.time());
+    const unsigned int n_plan      = state.model.dimension == 3 ? n_buildings : 0;
+    along_x.value.assign(n_buildings, 0.0);
+    along_x.time.assign(n_buildings, state.time());
+    for (Peaks *p : {&along_y, &resultant})
+      {
+        p->value.assign(n_plan, 0.0);
+        p->time.assign(n_plan, state.time());
+      }
     observe_step(state);
+  }
+
+  void
+  BaseShearPeaks::Peaks::keep(const unsigned int b, const double v, const double t)
+  {
+    if (std::abs(v) > value[b])
+      {
+        value[b] = std::abs(v);
+        time[b]  = t;
+      }
   }
 
   void
   BaseShearPeaks::observe_step(const ResponseView &state)
   {
-    for (unsigned int b = 0; b < peak_shear.size(); ++b)
+    for (unsigned int b = 0; b < along_x.value.size(); ++b)
       {
         if (!state.observes_building(b))
           continue;
-        const double V = std::abs(
-          forces->storey_shear(forces->index(b, 0), state.displacement(), state.velocity()));
-        if (V > peak_shear[b])
+        const unsigned int base = forces->index(b, 0);
+        const double V_x = forces->storey_shear(base, state.displacement(), state.velocity());
+        along_x.keep(b, V_x, state.time());
+        if (b < along_y.value.size()) // dimension 3
           {
-            peak_shear[b] = V;
-            peak_time[b]  = state.time();
+            const double V_y = forces->plan_forces(base, state.displacement())[1];
+            along_y.keep(b, V_y, state.time());
+            resultant.keep(b, std::hypot(V_x, V_y), state.time());
           }
       }
   }

@@ -737,4 +737,37 @@ namespace poundfe
       }
     impl->writer->finish();
   }
+  void
+  VtuRecorder::initialize(const ResponseView &state)
+  {
+    next = 0;
+    held = HeldStep();
+    observe_step(state);
+  }
+
+  void
+  VtuRecorder::observe_step(const ResponseView &state)
+  {
+    double force = 0; // the gaps' total |force| at this step
+    for (const NonlinearElement &e : state.elements)
+      if (e.kind == ElementKind::gap)
+        force += std::abs(e.force());
+    if (held.candidate && held.force >= held.force_before && force < held.force)
+      series.write(held.time, held.u, held.states); // the last step was an impact's peak
+    const bool regular = state.step() == next;
+    if (regular)
+      {
+        next += every;
+        series.write(state.time(), state.displacement(), state.elements);
+      }
+    held.force_before = held.force;
+    held.force        = force;
+    held.candidate    = force > 0 && !regular;
+    if (held.candidate)
+      {
+        held.time = state.time();
+        held.u    = state.displacement();
+        held.states.evaluate(state.elements, state.displacement());
+      }
+  }
 } // namespace poundfe

@@ -94,34 +94,39 @@ namespace poundfe
   }
 
   Plot
-  RunPlots::energy_plot() const
+  energy_plot(const Model &model)
   {
     // energy.csv: time, input, kinetic, damping, strain, hysteretic, contact,
-    // balance error, friction, belt, links, foundation (with foundations). Contact
-    // and friction energies are small beside the input: a panel of their own,
-    // with the balance error against the right-hand axis.
-    Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)", "energy (J)",
-                {}};
-    const char *terms[] = {"input", "kinetic", "damping", "strain", "hysteretic"};
-    for (unsigned int i = 0; i < 5; ++i)
-      energy.series.push_back({"energy.csv", "1:" + std::to_string(i + 2), terms[i], "lines"});
+    // balance error, friction, belt, links, foundation (with foundations), J,
+    // drawn in kJ. Contact and friction energies are small beside the input:
+    // a panel of their own, with the balance error (a ratio) against the
+    // right-hand axis. Each term has its own colour, the same in both panels,
+    // dark enough to read on white (gnuplot's default cycle has yellow).
+    const auto term = [](const unsigned int column, const char *title, const char *colour,
+                         const std::string &style = "lines lw 2") {
+      return PlotSeries{"energy.csv", "1:($" + std::to_string(column) + "/1000)", title,
+                        style + " lc rgb '" + colour + "'"};
+    };
+    Plot energy{"energy.png", "Energy balance (relative coordinates)", "time (s)", "energy (kJ)",
+                {term(2, "input", "black"), term(3, "kinetic", "#1f77b4"),
+                 term(4, "damping", "#d62728"), term(5, "strain", "#2ca02c"),
+                 term(6, "hysteretic", "#9467bd")}};
     Plot small{"", "Contact and friction energy, and the balance error", "time (s)",
-               "energy (J)", {{"energy.csv", "1:7", "contact", "lines lw 2"}}};
-    if (!analysis.model.friction_surfaces.empty())
-      for (const auto &[column, term] : {std::pair{9, "friction"}, std::pair{10, "belt"}})
+               "energy (kJ)", {term(7, "contact", "#ff7f0e")}};
+    if (!model.friction_surfaces.empty())
+      for (const PlotSeries &series : {term(9, "friction", "#8c564b"), term(10, "belt", "#17becf")})
         {
-          const PlotSeries series{"energy.csv", "1:" + std::to_string(column), term, "lines"};
           energy.series.push_back(series);
           small.series.push_back(series);
         }
     // links_J (column 11) and foundation_J (12, only with foundations):
     // devices and soil dissipate as much as the structure's damping
-    if (!analysis.model.building_links.empty())
-      energy.series.push_back({"energy.csv", "1:11", "links", "lines"});
-    if (!analysis.model.foundations.empty())
-      energy.series.push_back({"energy.csv", "1:12", "foundation", "lines"});
+    if (!model.building_links.empty())
+      energy.series.push_back(term(11, "links", "#e377c2"));
+    if (!model.foundations.empty())
+      energy.series.push_back(term(12, "foundation", "#7f7f7f"));
     small.y2_label = "balance error (relative)";
-    small.series.push_back({"energy.csv", "1:8", "balance error", "lines dt 2", "x1y2"});
+    small.series.push_back({"energy.csv", "1:8", "balance error", "lines dt 2 lc rgb 'gray40'", "x1y2"});
     energy.below.push_back(small);
     return energy;
   }
@@ -371,6 +376,52 @@ namespace poundfe
       }
   }
 
+  namespace
+  {
+    /// More gaps than a key can name: a curve of the total force between
+    /// each pair of buildings (or a building and a barrier) with `gaps`
+    /// between them (`forces`: each one's, at the rows of `time`), of the
+    /// max_named_curves pairs with the largest peaks when there are more.
+    void
+    add_pair_totals(Plot &plot, const Model &model, const std::vector<unsigned int> &gaps,
+                    const std::vector<double>                      &time,
+                    const std::vector<const std::vector<double> *> &forces)
+    {
+      std::map<std::string, std::vector<unsigned int>> pairs; // name: its gaps (of `gaps`)
+      for (unsigned int i = 0; i < gaps.size(); ++i)
+        {
+          const Gap &gap  = model.gaps[gaps[i]];
+          const auto side = [&](const unsigned int k) {
+            return gap.nodes[k] < 0 ? std::string("barrier") : model.buildings[gap.buildings[k]].name;
+          };
+          pairs[side(0) + "-" + side(1)].push_back(i);
+        }
+      std::vector<std::string>         titles;
+      std::vector<std::vector<double>> totals; // N, at each row
+      std::vector<double>              peaks;
+      for (const auto &[name, of_pair] : pairs)
+        {
+          std::vector<double> total(time.size(), 0.0);
+          for (const unsigned int i : of_pair)
+            for (std::size_t r = 0; r < total.size(); ++r)
+              total[r] += (*forces[i])[r];
+          titles.push_back(name);
+          peaks.push_back(peak_magnitude(total));
+          totals.push_back(std::move(total));
+        }
+      const std::vector<unsigned int> drawn = curves_to_draw(peaks);
+      const std::string what = std::to_string(gaps.size()) + " gap elements" +
+                               (plot.title.find(" that touched") != std::string::npos ?
+                                  " that touched" : "");
+      plot.title = title_of_drawn("Total contact force between adjacent buildings (" + what + ")",
+                                  drawn.size(), titles.size(), "pairs");
+      std::vector<const std::vector<double> *> curves;
+      for (const std::vector<double> &total : totals)
+        curves.push_back(&total);
+      add_drawn_curves(plot, "pair", "time,force", time, curves, titles, drawn, "1:($2/1000)");
+    }
+  } // namespace
+
   Plot
   contact_force_plot(const Model &model, const std::string &directory)
   {
@@ -389,53 +440,44 @@ namespace poundfe
           recorded.push_back(g);
           force_column.push_back(c->second);
         }
-    const unsigned int n_gaps = recorded.size();
-    if (n_gaps <= max_named_curves)
-      {
-        for (unsigned int i = 0; i < n_gaps; ++i)
-          plot.series.push_back({"contact_force.csv",
-                                 "1:($" + std::to_string(force_column[i] + 1) + "/1000)",
-                                 model.gaps[recorded[i]].label, "lines"});
-        return plot;
-      }
-    // More gaps than a key can name: the total force between each pair of
-    // buildings (or a building and a barrier) that have gaps between them.
-    std::map<std::string, std::vector<unsigned int>> pairs; // name: its gaps (of `recorded`)
-    for (unsigned int i = 0; i < n_gaps; ++i)
-      {
-        const Gap  &gap  = model.gaps[recorded[i]];
-        const auto  side = [&](const unsigned int i) {
-          return gap.nodes[i] < 0 ? std::string("barrier") : model.buildings[gap.buildings[i]].name;
-        };
-        pairs[side(0) + "-" + side(1)].push_back(i);
-      }
+    // only the gaps that touched (a force other than 0 at some row): a
+    // flat line at 0 says nothing, and many of them hide the curves that do
     std::vector<unsigned int> columns{0};
     columns.insert(columns.end(), force_column.begin(), force_column.end());
     const std::vector<std::vector<double>> values =
       columns_if_readable(directory + "/contact_force.csv", columns);
     if (values.empty())
       return plot; // drawn without curves: the run's file is missing or damaged
-    std::vector<std::string>         titles;
-    std::vector<std::vector<double>> totals; // N, at each row
-    std::vector<double>              peaks;
-    for (const auto &[name, gaps] : pairs)
+    const std::size_t n_recorded = recorded.size();
+    std::vector<unsigned int> touched, touched_column;
+    std::vector<const std::vector<double> *> touched_values;
+    for (unsigned int i = 0; i < n_recorded; ++i)
+      if (peak_magnitude(values[i + 1]) > 0)
+        {
+          touched.push_back(recorded[i]);
+          touched_column.push_back(force_column[i]);
+          touched_values.push_back(&values[i + 1]);
+        }
+    if (touched.empty())
       {
-        std::vector<double> total(values[0].size(), 0.0);
-        for (const unsigned int i : gaps)
-          for (std::size_t r = 0; r < total.size(); ++r)
-            total[r] += values[i + 1][r];
-        titles.push_back(name);
-        peaks.push_back(peak_magnitude(total));
-        totals.push_back(std::move(total));
+        plot.title = "Contact forces: none of the " + std::to_string(n_recorded) +
+                     " recorded gap elements touched";
+        plot.series.push_back({"contact_force.csv", "1:(0)", "no gap touched", "lines"});
+        return plot;
       }
-    const std::vector<unsigned int> drawn = curves_to_draw(peaks);
-    plot.title = title_of_drawn("Total contact force between adjacent buildings (" +
-                                  std::to_string(n_gaps) + " gap elements)",
-                                drawn.size(), titles.size(), "pairs");
-    std::vector<const std::vector<double> *> curves;
-    for (const std::vector<double> &total : totals)
-      curves.push_back(&total);
-    add_drawn_curves(plot, "pair", "time,force", values[0], curves, titles, drawn, "1:($2/1000)");
+    const unsigned int n_gaps = touched.size();
+    if (n_gaps < n_recorded)
+      plot.title = "Contact forces of the " + std::to_string(n_gaps) + " of " +
+                   std::to_string(n_recorded) + " recorded gap elements that touched";
+    if (n_gaps <= max_named_curves)
+      {
+        for (unsigned int i = 0; i < n_gaps; ++i)
+          plot.series.push_back({"contact_force.csv",
+                                 "1:($" + std::to_string(touched_column[i] + 1) + "/1000)",
+                                 model.gaps[touched[i]].label, "lines"});
+        return plot;
+      }
+    add_pair_totals(plot, model, touched, values[0], touched_values);
     return plot;
   }
 
@@ -667,7 +709,7 @@ namespace poundfe
     if (writes("base_shear.csv"))
       all.push_back(base_shear_plot());
     if (writes("energy.csv"))
-      all.push_back(energy_plot());
+      all.push_back(energy_plot(model));
     if (writes("hinges.csv"))
       draw_hysteresis(state, all);
     if (writes("floor_spectra.csv"))

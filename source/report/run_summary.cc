@@ -396,6 +396,27 @@ namespace poundfe
     file->commit();
   }
 
+  namespace
+  {
+    /// Building b's peak base shear and its time: in 3D along x, along y
+    /// and the resultant, each named by its direction; nothing for a run
+    /// stopped before its start.
+    void
+    write_base_shear(JsonWriter &json, const BaseShearPeaks &base_shears, const unsigned int b)
+    {
+      if (b < base_shears.peak_y().size())
+        json.value("peak_base_shear_x_N", base_shears.peak()[b])
+          .value("time_of_peak_base_shear_x_s", base_shears.time_of_peak()[b])
+          .value("peak_base_shear_y_N", base_shears.peak_y()[b])
+          .value("time_of_peak_base_shear_y_s", base_shears.time_of_peak_y()[b])
+          .value("peak_base_shear_resultant_N", base_shears.peak_resultant()[b])
+          .value("time_of_peak_base_shear_resultant_s", base_shears.time_of_peak_resultant()[b]);
+      else if (b < base_shears.peak().size())
+        json.value("peak_base_shear_N", base_shears.peak()[b])
+          .value("time_of_peak_base_shear_s", base_shears.time_of_peak()[b]);
+    }
+  } // namespace
+
   void
   RunSummary::write_buildings(JsonWriter &json) const
   {
@@ -416,9 +437,7 @@ namespace poundfe
         double residual = 0; // the largest residual drift ratio of the building
         for (unsigned int f = 0; f < building.floors.size(); ++f)
           residual = std::max(residual, std::abs(floors.drift_ratio()[floors.index(b, f)]));
-        if (b < base_shears.peak().size()) // observed (not a run stopped before its start)
-          json.value("peak_base_shear_N", base_shears.peak()[b])
-            .value("time_of_peak_base_shear_s", base_shears.time_of_peak()[b]);
+        write_base_shear(json, base_shears, b);
         json.value("max_residual_drift_ratio", residual);
         if (model.dimension == 3)
           write_plan_response(json, plan, b);

@@ -54,10 +54,12 @@ namespace poundfe
       {
         const AdjacentPair &pair = pairs[p];
         Plot panel{"separation.png",
-                   "required separation of " + pair.name + " against level" +
-                     (spectrum ? " (response spectrum)" : ""),
-                   "separation (m)", "level (m)", {}};
-        const std::string only = "(($1==" + std::to_string(p + 1) + ")?$";
+                   "Required separation of " + pair.name + " against level" +
+                     (spectrum ? " (response spectrum)" : " (time history)"),
+                   "separation (mm)", "level (m)", {}};
+        // separation.csv in m, drawn in mm; from 0, so that no point sits on the frame
+        panel.settings = "set xrange [0:*]\n";
+        const std::string only = "(($1==" + std::to_string(p + 1) + ")?1000*$";
         for (unsigned int c = 0; c < rule_names.size(); ++c) // ASCE 7 dashed: it may equal SRSS
           panel.series.push_back(
             {"separation.csv", only + std::to_string(8 + c) + ":1/0):4", rule_names[c],
@@ -66,7 +68,7 @@ namespace poundfe
           panel.series.push_back({"separation.csv", only + "13:1/0):4",
                                   "time history (no contact)", "linespoints lw 3 lc rgb 'black'"});
         panel.series.push_back({"separation.csv", "(($1==" + std::to_string(p + 1) + ")?" +
-                                                    std::to_string(pair.existing_gap) + ":1/0):4",
+                                                    number_text(1000 * pair.existing_gap) + ":1/0):4",
                                 "existing gap", "lines dt 2 lc rgb 'gray40'"});
         if (p == 0)
           plot = panel;
@@ -119,18 +121,19 @@ namespace poundfe
       {
         const std::string c = std::to_string(3 + 4 * p);
         Plot panel{"pounding_probability.png",
-                   "probability of pounding of " + pairs[p].name + ", " +
+                   "Probability of pounding of " + pairs[p].name + ", " +
                      std::to_string(results[p].largest_approach.size()) + " realizations",
-                   "gap width g (m)", "P(largest relative approach > g)", {}};
+                   "gap width g (mm)", "P(largest relative approach > g)", {}};
+        panel.settings = "set yrange [-0.02:1.05]\n"; // P reaches 0 and 1: the curve off the frame
         panel.series = {
-          {"pounding_probability.csv", "1:" + std::to_string(4 + 4 * p) + ":" +
+          {"pounding_probability.csv", "(1000*$1):" + std::to_string(4 + 4 * p) + ":" +
                                          std::to_string(5 + 4 * p),
            band, "filledcurves fs transparent solid 0.3 noborder lc rgb 'skyblue'"},
-          {"pounding_probability.csv", "1:" + c, "Monte Carlo", "lines lw 2 lc rgb 'navy'"},
+          {"pounding_probability.csv", "(1000*$1):" + c, "Monte Carlo", "lines lw 2 lc rgb 'navy'"},
           {"pounding_probability.csv",
-           "(" + std::to_string(pairs[p].existing_gap) + "):($0/" +
+           "(" + number_text(1000 * pairs[p].existing_gap) + "):($0/" +
              std::to_string(std::max<std::size_t>(1, n_gaps - 1)) + ".0)",
-           "existing gap " + rounded(pairs[p].existing_gap) + " m", "lines dt 2 lc rgb 'red'"}};
+           "existing gap " + rounded(1000 * pairs[p].existing_gap) + " mm", "lines dt 2 lc rgb 'red'"}};
         if (p == 0)
           plot = panel;
         else

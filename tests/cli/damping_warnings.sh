@@ -73,7 +73,7 @@ warned zero "a0 and a1 are both 0: the building has no Rayleigh damping"
 shear "    set Type          = none
     set Damping ratio = 0.05" > "$work/ignored.prm"
 run "$work/ignored.prm" ignored
-warned ignored "Building 1/Damping/Damping ratio (line 8) is ignored: Type = none"
+warned ignored "ignored.prm:8: parameter 'Building 1/Damping/Damping ratio': has no effect: Damping/Type = none does not use it (Type = modes does)"
 shear "    set Type = coefficients
     set a0   = 0.5
     set a1   = 0.002" > "$work/sound.prm"

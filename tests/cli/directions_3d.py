@@ -114,6 +114,27 @@ for directory, run in ((x_dir, sx), (y_dir, sy)):
             if peak != building["plan"][key]:
                 failures.append(f"{directory}: largest |{n}_{base_column}| {peak!r}, summary {key} "
                                 f"{building['plan'][key]!r}")
+# the summary's peak base shears of a 3D building: along x, along y and the
+# resultant, each named by its direction (no direction-free peak_base_shear_N),
+# the largest |V_x|, |V_y| and sqrt(V_x^2 + V_y^2) of base_shear.csv's rows
+for directory, run in ((x_dir, sx), (y_dir, sy), (d45_dir, sd)):
+    if not os.path.exists(os.path.join(directory, "base_shear.csv")):
+        continue
+    base = table(directory, "base_shear.csv")
+    for building in run["buildings"]:
+        n = building["name"]
+        if "peak_base_shear_N" in building:
+            failures.append(f"{directory}: {n} has peak_base_shear_N, a direction-free name in 3D")
+        vx, vy = base[f"{n}_base_shear_x_N"], base[f"{n}_base_shear_y_N"]
+        resultant = [math.hypot(a, b) for a, b in zip(vx, vy)]
+        for key, values in (("x", [abs(v) for v in vx]), ("y", [abs(v) for v in vy]),
+                            ("resultant", resultant)):
+            got = building.get(f"peak_base_shear_{key}_N")
+            if got is None or f"time_of_peak_base_shear_{key}_s" not in building:
+                failures.append(f"{directory}: {n} lacks peak_base_shear_{key}_N or its time")
+                continue
+            worst = max(worst, agree(f"{directory}: {n} summary peak_base_shear_{key}_N",
+                                     [got], [max(values)], max(max(resultant), 1e-300)))
 pga = sx["ground_motion"]["pga_m_s2"]
 for key, want in (("pga_x_m_s2", pga / math.sqrt(2)), ("pga_y_m_s2", pga / math.sqrt(2))):
     worst = max(worst, agree(f"summary {key} at 45 degrees", [sd["ground_motion"][key]], [want], pga))

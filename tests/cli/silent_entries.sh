@@ -10,7 +10,12 @@
 #   warned: a contact law that makes no gap element (3D slabs that face
 #     nothing), a contact-law entry the law does not use, Model/Separations
 #     with one building or beside a Plan/Position for every building it
-#     would place.
+#     would place; an entry another entry's value leaves without effect
+#     (model/entry_scope.h: warn_entries_without_effect): Storey stiffnesses
+#     beside typed Resisting planes of a 3D shear building, Bouc-Wen entries
+#     of a building with no hinge or hysteretic storey, Hinges entries
+#     without Locations, a Damping entry of another Damping/Type, a
+#     Foundation entry with Type = none.
 #   silent_entries.sh POUNDFE
 set -u
 poundfe=$1
@@ -89,4 +94,33 @@ warned "parameter 'Contact/Coefficient of restitution': has no effect: Damping f
 { printf 'subsection Model\n  set Separations = 0.05\nend\n'; shear; } > alone.prm
 expect 0 "results in out" run alone.prm --output out
 warned "alone.prm:2: parameter 'Model/Separations': has no effect: the model has one building"
+# warned: entries another entry's value leaves without effect, each with its
+# file, line and entry; the same entries where they act warn nothing
+planes='    set Resisting planes = 3 0 90 2.5e6; -3 0 90 2.5e6; 0 3 0 2.5e6; 0 -3 0 2.5e6'
+{ printf 'subsection Model\n  set Dimension = 3\nend\n'
+  shear "$(printf '  subsection Plan\n    set Plan dimensions = 6, 6\n%s\n  end' "$planes")"; short; } > planes.prm
+expect 0 "results in out" run planes.prm --output out
+warned "planes.prm:8: parameter 'Building 1/Storey stiffnesses': has no effect: Plan/Resisting planes are typed"
+{ printf 'subsection Model\n  set Dimension = 3\nend\n'
+  shear "$(printf '  subsection Plan\n    set Plan dimensions = 6, 6\n  end')"; short; } > perimeter.prm
+expect 0 "results in out" run perimeter.prm --output out
+grep -q "has no effect" stderr && fail "perimeter.prm warns: $(cat stderr)"
+{ printf 'subsection Building 1\n  set Type = frame\n  subsection Bouc-Wen\n    set alpha = 0.1\n  end\n'
+  printf '  subsection Hinges\n    set Yield moment = 1e5\n  end\nend\n'
+  printf 'subsection Output\n  set Plots = false\nend\n'; short; } > elastic-frame.prm
+expect 0 "results in out" run elastic-frame.prm --output out
+warned "elastic-frame.prm:4: parameter 'Building 1/Bouc-Wen/alpha': has no effect: the building has no hinge (Hinges/Locations is empty)"
+warned "elastic-frame.prm:7: parameter 'Building 1/Hinges/Yield moment': has no effect: the building has no hinge"
+sed 's/    set Yield moment = 1e5/    set Locations = column bases\n    set Yield moment = 1e5/' elastic-frame.prm > hinged-frame.prm
+expect 0 "results in out" run hinged-frame.prm --output out
+grep -q "has no effect" stderr && fail "hinged-frame.prm warns: $(cat stderr)"
+{ shear "$(printf '  subsection Bouc-Wen\n    set n = 2\n  end')"; short; } > elastic-shear.prm
+expect 0 "results in out" run elastic-shear.prm --output out
+warned "elastic-shear.prm:7: parameter 'Building 1/Bouc-Wen/n': has no effect: the building has no hysteretic storey"
+{ shear "$(printf '  subsection Damping\n    set Type = modal\n    set Modal ratios = 0.05\n    set a1 = 0.002\n  end')"; short; } > modal.prm
+expect 0 "results in out" run modal.prm --output out
+warned "modal.prm:9: parameter 'Building 1/Damping/a1': has no effect: Damping/Type = modal does not use it (Type = coefficients does)"
+{ shear "$(printf '  subsection Foundation\n    set Shear-wave velocity = 200\n  end')"; short; } > fixed.prm
+expect 0 "results in out" run fixed.prm --output out
+warned "fixed.prm:7: parameter 'Building 1/Foundation/Shear-wave velocity': has no effect: Foundation/Type = none: a fixed base"
 report "entries without effect"

@@ -8,7 +8,9 @@
 //    add the same doubles in the same order; the block's text reads back
 //    to the double written);
 //  - more pairs than that too: the max_named_curves pairs with the largest
-//    peaks, in the order of their names, and the title says so.
+//    peaks, in the order of their names, and the title says so;
+//  - only the gaps that touched (a force other than 0 in some row), the
+//    title saying how many of the recorded ones; none: a line at 0 titled so.
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/report/run_plots.h>
 
@@ -63,7 +65,8 @@ namespace
   /// contact_force.csv of `model` in `directory`: gap g's force in row r
   /// grows with its pair (so that the pairs' peaks differ), penetration beside.
   poundfe_test::Table
-  write_contact_forces(const poundfe::Model &model, const std::string &directory)
+  write_contact_forces(const poundfe::Model &model, const std::string &directory,
+                       const std::vector<bool> &touches = {})
   {
     std::filesystem::create_directories(directory);
     std::vector<std::string> header{"time_s"};
@@ -77,6 +80,8 @@ namespace
           {
             const double pair = model.gaps[g].buildings[1] + 1 + (model.gaps[g].nodes[0] < 0 ? 0.5 : 0);
             row[2 * g]     = 1e5 * pair * std::max(0.0, std::sin(0.3 * r + 0.1 * g)) + 0.1 * g;
+            if (!touches.empty() && !touches[g])
+              row[2 * g] = 0; // this gap never closed
             row[2 * g + 1] = 1e-4 * std::sin(0.3 * r);
           }
         csv.add_row(0.005 * r, row);
@@ -182,6 +187,48 @@ BOOST_AUTO_TEST_CASE(more_pairs_than_a_key_names_are_those_with_the_largest_peak
   BOOST_REQUIRE_EQUAL(plot.series.size(), kept.size());
   for (unsigned int p = 0; p < kept.size(); ++p)
     BOOST_CHECK_EQUAL(plot.series[p].title, kept[p]);
+}
+
+BOOST_AUTO_TEST_CASE(gaps_that_never_touched_are_left_out)
+{
+  const poundfe::Model model     = row_of_buildings(3, 2); // 5 gaps
+  const std::string    directory = poundfe_test::fresh_directory("contact-plot-touched");
+  write_contact_forces(model, directory, {true, false, true, false, false});
+  const poundfe::Plot plot = poundfe::contact_force_plot(model, directory);
+  BOOST_CHECK_EQUAL(plot.title, "Contact forces of the 2 of 5 recorded gap elements that touched");
+  BOOST_REQUIRE_EQUAL(plot.series.size(), 2u);
+  BOOST_CHECK_EQUAL(plot.series[0].title, model.gaps[0].label);
+  BOOST_CHECK_EQUAL(plot.series[0].using_spec, "1:($2/1000)");
+  BOOST_CHECK_EQUAL(plot.series[1].title, model.gaps[2].label);
+  BOOST_CHECK_EQUAL(plot.series[1].using_spec, "1:($6/1000)");
+}
+
+BOOST_AUTO_TEST_CASE(pairs_are_of_the_gaps_that_touched)
+{
+  const poundfe::Model model = row_of_buildings(4, 10); // barrier-B1, then 10 gaps per pair
+  std::vector<bool>    touches(model.gaps.size(), true);
+  for (unsigned int g = 11; g < 21; ++g) // B2-B3 never closed
+    touches[g] = false;
+  const std::string directory = poundfe_test::fresh_directory("contact-plot-touched-pairs");
+  write_contact_forces(model, directory, touches);
+  const poundfe::Plot plot = poundfe::contact_force_plot(model, directory);
+  BOOST_CHECK_EQUAL(plot.title,
+                    "Total contact force between adjacent buildings (21 gap elements that touched)");
+  BOOST_REQUIRE_EQUAL(plot.series.size(), 3u);
+  for (const poundfe::PlotSeries &series : plot.series)
+    BOOST_CHECK_NE(series.title, "B2-B3");
+}
+
+BOOST_AUTO_TEST_CASE(no_gap_touched_is_a_line_at_zero_that_says_so)
+{
+  const poundfe::Model model     = row_of_buildings(3, 2);
+  const std::string    directory = poundfe_test::fresh_directory("contact-plot-untouched");
+  write_contact_forces(model, directory, std::vector<bool>(model.gaps.size(), false));
+  const poundfe::Plot plot = poundfe::contact_force_plot(model, directory);
+  BOOST_CHECK_EQUAL(plot.title, "Contact forces: none of the 5 recorded gap elements touched");
+  BOOST_REQUIRE_EQUAL(plot.series.size(), 1u);
+  BOOST_CHECK_EQUAL(plot.series[0].using_spec, "1:(0)");
+  BOOST_CHECK_EQUAL(plot.series[0].title, "no gap touched");
 }
 
 BOOST_AUTO_TEST_CASE(without_the_file_the_figure_has_no_curves)

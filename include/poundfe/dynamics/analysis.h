@@ -99,9 +99,9 @@ namespace poundfe
   /// fitted at a mode whose kinetic energy is mostly vertical (a beam or
   /// column mode of a frame, not a storey mode), mass-proportional damping
   /// alone (a1 = 0: the higher modes nearly undamped), given coefficients
-  /// both 0 (no damping), and damping entries the chosen Type ignores
-  /// (set in `input`).
-  std::vector<std::string> damping_warnings(const Analysis &analysis, const InputFile &input);
+  /// both 0 (no damping). (Entries of another Damping/Type: the model's
+  /// warnings, model/entry_scope.h.)
+  std::vector<std::string> damping_warnings(const Analysis &analysis);
 } // namespace poundfe
 
 #endif

@@ -7,6 +7,15 @@
 // (Model/Dimension = 3), then comma-separated words, each a building Type
 // (frame, mesh, shear: any of them) or "fibre" (and Member model = fibre);
 // no Type: every Type. An untagged entry acts on every building.
+//
+// An entry can also lose its effect through another entry's value, which a
+// tag cannot say: the Bouc-Wen shape of a building with no hysteretic
+// hinge or storey, a Damping entry of another Damping/Type, a Foundation
+// entry under Type = none, the Storey stiffnesses (and yield drifts) beside
+// typed Plan/Resisting planes. The run still makes sense (random-structure
+// and sweep inputs write such entries on purpose), so these are warned
+// about (terminal and summary.json), not refused: one table of conditions,
+// warn_entries_without_effect.
 #ifndef poundfe_model_entry_scope_h
 #define poundfe_model_entry_scope_h
 
@@ -52,6 +61,13 @@ namespace poundfe
   /// keys of input.lines) and that has no effect on that building; the
   /// earliest such line first. Defaults are never refused.
   void refuse_entries_without_effect(const InputFile &input, const ModelParameters &model);
+
+  /// A warning (InputFile::warning: file, line, entry, "has no effect: ...")
+  /// for every entry of a building that the user wrote and that another
+  /// entry's value leaves without effect, earliest line first. Defaults are
+  /// never warned about.
+  std::vector<std::string> warn_entries_without_effect(const InputFile       &input,
+                                                       const ModelParameters &model);
 } // namespace poundfe
 
 #endif

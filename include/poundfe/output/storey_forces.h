@@ -105,7 +105,10 @@ namespace poundfe
 
   /// The largest |base shear| V_1 of every building over a run and when it
   /// occurred, at every step and sub-step (summary.json, whatever the
-  /// recorders): only the first storey's cut is evaluated.
+  /// recorders): only the first storey's cut is evaluated. Dimension 3: V_1
+  /// is V_x, and the peaks of |V_y| and of the resultant sqrt(V_x^2 + V_y^2)
+  /// are kept beside it (the resultant's peak is not a combination of the
+  /// two peaks: they need not coincide).
   class BaseShearPeaks : public StepObserver
   {
   public:
@@ -116,16 +119,32 @@ namespace poundfe
     /// it, on rank 0. Collective.
     void merge(const RankMerge &ranks) override
     {
-      ranks.owned(Owner::building, peak_shear);
-      ranks.owned(Owner::building, peak_time);
+      for (Peaks *p : {&along_x, &along_y, &resultant})
+        if (!p->value.empty() || p == &along_x) // along y and the resultant: 3D only
+          {
+            ranks.owned(Owner::building, p->value);
+            ranks.owned(Owner::building, p->time);
+          }
     }
-    /// Per building, N and s.
-    const std::vector<double> &peak() const { return peak_shear; }
-    const std::vector<double> &time_of_peak() const { return peak_time; }
+    /// Per building, N and s (3D: along x).
+    const std::vector<double> &peak() const { return along_x.value; }
+    const std::vector<double> &time_of_peak() const { return along_x.time; }
+    /// Dimension 3: per building, the peak |V_y| and the peak resultant, N,
+    /// and when each occurred, s; empty in 2D.
+    const std::vector<double> &peak_y() const { return along_y.value; }
+    const std::vector<double> &time_of_peak_y() const { return along_y.time; }
+    const std::vector<double> &peak_resultant() const { return resultant.value; }
+    const std::vector<double> &time_of_peak_resultant() const { return resultant.time; }
 
   private:
+    struct Peaks
+    {
+      std::vector<double> value, time;
+      /// Keep |v| of building b at time t if it is the largest yet.
+      void keep(unsigned int b, double v, double t);
+    };
     std::optional<StoreyForces> forces;
-    std::vector<double>         peak_shear, peak_time;
+    Peaks                       along_x, along_y, resultant;
   };
 } // namespace poundfe
 

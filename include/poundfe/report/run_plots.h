@@ -26,13 +26,20 @@ namespace poundfe
   /// Curves a figure's key can name: a figure with more draws groups of them.
   constexpr unsigned int max_named_curves = 12;
 
-  /// contact_force.png from <directory>/contact_force.csv: a curve per gap
-  /// element when there are at most max_named_curves, else a curve per pair
-  /// of buildings (or a building and a barrier) with gaps between them, the
-  /// total force of its gaps (of the max_named_curves pairs with the largest
-  /// peaks, when there are more), read from the file in one pass and given
-  /// to gnuplot as data blocks. Without a readable file: no curves.
+  /// contact_force.png from <directory>/contact_force.csv, of the gap
+  /// elements that touched (a force other than 0 in some row; the title
+  /// says how many of the recorded ones): a curve per gap element when
+  /// there are at most max_named_curves, else a curve per pair of buildings
+  /// (or a building and a barrier) with such gaps between them, the total
+  /// force of its gaps (of the max_named_curves pairs with the largest
+  /// peaks, when there are more), given to gnuplot as data blocks. No gap
+  /// touched: a line at 0 titled so. Without a readable file: no curves.
   Plot contact_force_plot(const Model &model, const std::string &directory);
+
+  /// energy.png from energy.csv: the terms of the model's energy balance
+  /// in kJ, each in its own dark colour, and a panel with the contact and
+  /// friction energies (kJ) and the balance error (a ratio, right axis).
+  Plot energy_plot(const Model &model);
 
   class RunPlots
   {
@@ -67,9 +74,6 @@ namespace poundfe
     Plot base_shear_plot() const;
     /// The ground motion's peak, m/s^2 (0 without one).
     double peak_ground_acceleration() const;
-    /// energy.png: the terms, and a panel with contact/friction energy and
-    /// the balance error.
-    Plot energy_plot() const;
     /// hysteresis_<label>.png: one loop per building.
     void draw_hysteresis(const ResponseView &state, std::vector<Plot> &plots) const;
     /// PSA of every floor and of the ground against the period (floor_spectra.csv).
