@@ -46,6 +46,7 @@ namespace poundfe
     constexpr CommandRules distributed_solver = CommandRule::distributed_solver; // on > 1 rank
     constexpr CommandRules partition = CommandRule::partition_by_building; // Partition = buildings
     constexpr CommandRules fields    = CommandRule::field_output; // Output/Field format = xdmf
+    constexpr CommandRules rigid     = CommandRule::rigid_contact; // Contact/Model = nonsmooth
     constexpr CommandRules resumable = CommandRule::resumable;    // resumes its table
     constexpr CommandRules script    = CommandRule::script_arguments; // SCRIPT [ARGS...]
     constexpr CommandRules memory    = CommandRule::in_memory; // results in memory (Python)
@@ -54,7 +55,8 @@ namespace poundfe
     // name, arguments, description, rules, summary, function
     static const std::vector<Command> table = {
       {"run", "FILE", "time-history analysis (summary.json, CSV, VTU, PNG)",
-       file | own_interruption | distributed_solver | partition | fields, summary, commands::run},
+       file | own_interruption | distributed_solver | partition | fields | rigid, summary,
+       commands::run},
       {"modal", "FILE", "frequencies, periods, participating masses, modes.pvd",
        file | fields, summary, commands::modal},
       {"pushover", "FILE",

@@ -104,6 +104,12 @@ namespace poundfe
                        "ranks (summary.json's section_limit_states); Building " +
                          std::to_string(b + 1) +
                          " has Member model = fibre: run it unpartitioned (Partition = none)");
+      if (input.time_integration.contact_model == ContactModel::nonsmooth &&
+          !command.has(CommandRule::rigid_contact))
+        input.fail("Contact/Model",
+                   "nonsmooth (rigid contact) is taken by " +
+                     command_names(CommandRule::rigid_contact, "'") + " only so far, not '" +
+                     command.name + "'");
       if (input.output.field_format == FieldFormat::xdmf && !command.has(CommandRule::field_output))
         input.fail("Output/Field format",
                    "xdmf chooses the field output of " +

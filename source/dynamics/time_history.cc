@@ -52,6 +52,36 @@ namespace poundfe
         parameters.input.fail("Time integration/Method", "dopri " + why);
       return std::make_unique<DormandPrinceIntegrator>(system, dopri, &elements);
     }
+
+    /// Contact/Model = nonsmooth: Moreau-Jean's integrator on the model's
+    /// gaps, refused (InputError naming the entry) for what it does not take
+    /// yet; null for penalty.
+    std::unique_ptr<MoreauJeanIntegrator>
+    make_moreau_jean(const Analysis &analysis, const TimeHistoryParameters &parameters,
+                     NonlinearElements &elements)
+    {
+      const TimeIntegrationParameters &time_integration = parameters.time_integration;
+      if (time_integration.contact_model != ContactModel::nonsmooth)
+        return nullptr;
+      const InputFile           &input      = parameters.input;
+      const MoreauJeanParameters moreau_jean = time_integration.moreau_jean_parameters();
+      if (analysis.model.dimension != 2)
+        input.fail("Contact/Model", "nonsmooth takes 2D models only (Model/Dimension = 2)");
+      if (analysis.gravity.active)
+        input.fail("Contact/Model", "nonsmooth does not take a gravity analysis first "
+                                    "(Model/Gravity analysis) yet");
+      if (const std::string why = MoreauJeanIntegrator::unsupported(analysis.system, &elements,
+                                                                    moreau_jean.max_equations);
+          !why.empty())
+        input.fail("Contact/Model", "nonsmooth " + why);
+      std::vector<UnilateralContact> contacts;
+      if (const std::string why = unilateral_contacts(analysis.model, elements,
+                                                      time_integration.restitution, contacts);
+          !why.empty())
+        input.fail("Contact/Model", "nonsmooth " + why);
+      return std::make_unique<MoreauJeanIntegrator>(analysis.system, moreau_jean,
+                                                    std::move(contacts), &elements);
+    }
   } // namespace
 
   namespace
@@ -123,7 +153,9 @@ namespace poundfe
         analysis_.system, linear_solver.empty() ? time_integration.linear_solver : linear_solver,
         time_integration.newmark, &elements))
     , dopri(make_dormand_prince(analysis_.system, parameters, elements))
-    , stepper(dopri ? static_cast<TimeStepper &>(*dopri) : *integrator)
+    , rigid(make_moreau_jean(analysis_, parameters, elements))
+    , stepper(dopri ? static_cast<TimeStepper &>(*dopri) :
+                      rigid ? static_cast<TimeStepper &>(*rigid) : *integrator)
     , view(analysis_.model, analysis_.system, elements, stepper)
     , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
   {

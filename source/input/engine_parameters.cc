@@ -3,6 +3,7 @@
 #include <poundfe/dynamics/partitioned_history.h>
 #include <poundfe/model/model_builder.h>
 
+#include <algorithm>
 #include <iostream>
 #include <set>
 
@@ -28,6 +29,16 @@ namespace poundfe
   {
     Analysis analysis = prepare_analysis(input, input.model, input.contact, input.springs,
                                          input.friction, input.modal, input.output.n_modes);
+    if (input.time_integration.contact_model == ContactModel::nonsmooth)
+      {
+        // the restitution is then Newton's impact law's, whatever the law's
+        // damping: what the builder says of it for the penalty law is moot
+        const std::string moot = input.warning("Contact/Coefficient of restitution", "");
+        std::vector<std::string> &w = analysis.warnings;
+        w.erase(std::remove_if(w.begin(), w.end(),
+                               [&](const std::string &x) { return x.rfind(moot, 0) == 0; }),
+                w.end());
+      }
     say_warnings(analysis);
     return analysis;
   }

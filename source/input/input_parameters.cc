@@ -272,7 +272,7 @@ namespace poundfe
       time_integration.linear_solver == "eigen-ldlt" && line_of("Time integration/Linear solver") == 0;
     initial_conditions.finalize(*this);
     check_stochastic_samples();
-    contact.check(*this);
+    check_contact();
     contact.links.check(*this);
     contact.bumpers.finalize(*this, contact.law);
     friction.check(*this);
@@ -297,6 +297,43 @@ namespace poundfe
     ida.check(*this);
     msa.check(*this);
     selection.check(*this);
+  }
+
+  void
+  InputParameters::check_contact()
+  {
+    time_integration.restitution = contact.restitution;
+    if (time_integration.contact_model != ContactModel::nonsmooth)
+      {
+        contact.check(*this);
+        return;
+      }
+    // rigid contact takes e = 0 (a plastic impact), which no law's damping
+    // formula does: the law's checks see e = 1 then (its damping is unused)
+    if (!(contact.restitution >= 0 && contact.restitution <= 1))
+      fail("Contact/Coefficient of restitution",
+           "must lie in [0, 1] with Contact/Model = nonsmooth, got " +
+             number_text(contact.restitution));
+    if (contact.law == "none")
+      fail("Contact/Model", "nonsmooth acts at the gaps, and Contact/Law = none makes none: "
+                            "name a law (its force parameters are unused)");
+    // what Moreau-Jean's stepper does not take yet, refused before anything
+    // is built (time_history.cc refuses the rest with the model at hand)
+    if (model.dimension != 2)
+      fail("Contact/Model", "nonsmooth takes 2D models only, not Model/Dimension = " +
+                              std::to_string(model.dimension));
+    for (unsigned int b = 0; b < model.buildings.size(); ++b)
+      if (model.buildings[b].fibre())
+        fail("Contact/Model", "nonsmooth does not take fibre members yet: Building " +
+                                std::to_string(b + 1) + " has Member model = fibre");
+    if (model.gravity_analysis.enabled)
+      fail("Contact/Model", "nonsmooth does not take a gravity analysis first "
+                            "(Model/Gravity analysis) yet");
+    if (!friction.surfaces.empty())
+      fail("Contact/Model", "nonsmooth does not take friction yet (Friction/Surfaces)");
+    ContactParameters checked = contact;
+    checked.restitution       = std::max(checked.restitution, 1e-3);
+    checked.check(*this);
   }
 
   void

@@ -170,7 +170,8 @@ namespace poundfe
           gap_elements.push_back(h);
         event_elements.push_back(h);
       }
-    for (auto *x : {&work, &supplied, &initial_stored, &committed_force, &committed_history,
+    work.assign(n_elements, 0.0);
+    for (auto *x : {&supplied, &initial_stored, &committed_force, &committed_history,
                     &committed_rate})
       x->assign(n_elements, 0.0);
     load_vector.setZero(n);
@@ -282,15 +283,8 @@ namespace poundfe
   DormandPrinceIntegrator::initialize(const Vector &load_0, const Vector &u0, const Vector &v0)
   {
     Assert(u0.size() == n && v0.size() == n, dealii::ExcDimensionMismatch(u0.size(), n));
-    current_time  = 0;
-    step_count    = 0;
+    reset_state(n_elements, parameters.time_step);
     proposed_step = 0;
-    stats         = IterationStatistics();
-    stats.smallest_time_step = parameters.time_step;
-    balance = EnergyBalance();
-    impacts.reset(n_elements);
-    stick_slip.reset(n_elements);
-    energy_scale = max_balance_error = 0;
     y.setZero(2 * n + n_energy_terms + n_elements);
     y.head(n)       = u0;
     y.segment(n, n) = v0;

@@ -178,19 +178,12 @@ namespace poundfe
   MoreauJeanIntegrator::initialize(const Vector &load_0, const Vector &u0, const Vector &v0)
   {
     Assert(u0.size() == n && v0.size() == n, dealii::ExcDimensionMismatch(u0.size(), n));
-    current_time = 0;
-    step_count   = 0;
-    stats        = IterationStatistics();
-    stats.smallest_time_step = parameters.time_step;
-    balance = EnergyBalance();
-    impacts.reset(n_elements);
-    stick_slip.reset(n_elements);
+    reset_state(n_elements, parameters.time_step);
     impulse_log.clear();
     unattached_loss = 0;
     impulses_last_step.assign(contact_list.size(), 0.0);
     lcp_count = lcp_iterations = 0;
     lcp_residual = 0;
-    work.assign(n_elements, 0.0);
     initial_stored.assign(n_elements, 0.0);
     u          = u0;
     v          = v0;
@@ -338,13 +331,16 @@ namespace poundfe
     // The impact log sees a step with an impulse as one carrying the mean
     // force P / h at both ends (so its impulse is P and its peak force the
     // mean force of the step), and the first step without one as its release.
+    // Its start is taken as touching (no penetration < 0): the log then puts
+    // the impact at the step's start with the velocity before the jump, and
+    // the release at the next step's start with the velocity after it.
     const double h = parameters.time_step;
     for (unsigned int c = 0; c < contact_list.size(); ++c)
       if (contact_list[c].element >= 0 && (this_step[c] > 0 || impulses_last_step[c] > 0))
         {
           const double force = this_step[c] / h;
           impacts.record(contact_list[c].element, current_time, t_end,
-                         {-gap(c, u), -normal_velocity(c, v), force},
+                         {std::max(-gap(c, u), 0.0), -normal_velocity(c, v), force},
                          {-gap(c, u_end), -normal_velocity(c, v_end), force});
         }
     impulses_last_step = this_step;

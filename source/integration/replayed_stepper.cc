@@ -48,8 +48,8 @@ namespace poundfe
   void
   ReplayedStepper::start()
   {
-    current_time = 0;
-    accepted = step_count = 0;
+    reset_state(0, 0); // its logs and work are the records'
+    accepted = 0;
     for (NonlinearElement &e : elements)
       e.reset();
     set_trial_states();
@@ -86,7 +86,7 @@ namespace poundfe
                                         const unsigned long steps)
   {
     balance    = energy;
-    max_error  = max_energy_error;
+    max_balance_error = max_energy_error;
     stats      = statistics;
     step_count = steps;
   }

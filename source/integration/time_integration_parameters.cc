@@ -28,6 +28,22 @@ namespace poundfe
     return table;
   }
 
+  const NameTable<ContactModel> &
+  contact_model_names()
+  {
+    static const NameTable<ContactModel> table(
+      {{ContactModel::penalty, "penalty"}, {ContactModel::nonsmooth, "nonsmooth"}});
+    return table;
+  }
+
+  MoreauJeanParameters
+  TimeIntegrationParameters::moreau_jean_parameters() const
+  {
+    MoreauJeanParameters p = moreau_jean;
+    p.time_step            = newmark.time_step;
+    return p;
+  }
+
   const NameTable<RunPartition> &
   run_partition_names()
   {
@@ -214,6 +230,27 @@ namespace poundfe
   void
   TimeIntegrationParameters::declare_event_refinement(dealii::ParameterHandler &prm)
   {
+    add_choice(prm, "Model", contact_model,
+               "penalty: each gap is its Law's force, stepped by Time integration/Method; "
+               "nonsmooth: rigid unilateral contact (the gap never closes beyond 0) with "
+               "Newton's impact law (Coefficient of restitution e in [0, 1]), stepped by "
+               "Moreau-Jean's theta-scheme with each step's impulses from an LCP solved by "
+               "Siconos Numerics (theory §3.9d); needs a Law other than none (its force "
+               "parameters are then unused), 2D gaps between floors or at barriers, no "
+               "bumpers, friction or fibre members, no gravity analysis; the command run "
+               "only; a build without Siconos offers penalty only (poundfe --version lists "
+               "the contact models). Unit: -.",
+               contact_model_names());
+    prm.add_parameter("Theta", moreau_jean.theta,
+                      "Model = nonsmooth: theta of Moreau-Jean's scheme, in [1/2, 1] (1/2: "
+                      "no numerical damping of the smooth motion; 1: implicit Euler). "
+                      "Unit: dimensionless.");
+    add_choice(prm, "LCP solver", moreau_jean.lcp.solver,
+               "Model = nonsmooth: Siconos Numerics' solver of each step's contact LCP: "
+               "lemke (pivoting, exact), nsgs (projected Gauss-Seidel), enum "
+               "(enumeration, a few contacts), newton-fb (semismooth Newton on "
+               "Fischer-Burmeister). Unit: -.",
+               lcp_solver_names());
     prm.add_parameter("Event refinement", newmark.newton.event_refinement,
                       "A step in which a contact starts or ends is redone in 2^r "
                       "sub-steps around the event, which is then located inside the "
@@ -262,6 +299,7 @@ namespace poundfe
     if (const std::string why = linear_solver_unavailable(linear_solver); !why.empty())
       input.fail("Time integration/Linear solver", linear_solver + " is not available: " + why);
     newmark.iterative.check(input);
+    check_contact_model(input);
     if (partition == RunPartition::buildings)
       {
         if (method != TimeIntegrationMethod::newmark)
@@ -279,5 +317,24 @@ namespace poundfe
                      linear_solver + " is not a one-process solver: with Partition = buildings "
                      "each rank factorises its own block with eigen-ldlt or umfpack");
       }
+  }
+
+  void
+  TimeIntegrationParameters::check_contact_model(const InputFile &input) const
+  {
+    if (!(moreau_jean.theta >= 0.5 && moreau_jean.theta <= 1))
+      input.fail("Contact/Theta", "must lie in [1/2, 1], got " + number_text(moreau_jean.theta));
+    if (contact_model != ContactModel::nonsmooth)
+      return;
+    if (!lcp_solver_available())
+      input.fail("Contact/Model", "nonsmooth is not available in this build: " +
+                                    lcp_solver_description());
+    if (method != TimeIntegrationMethod::newmark)
+      input.fail("Contact/Model", "nonsmooth is stepped by Moreau-Jean's scheme: not with Time "
+                                  "integration/Method = " +
+                                    time_integration_method_names().name(method));
+    if (partition != RunPartition::none)
+      input.fail("Contact/Model", "nonsmooth does not take Time integration/Partition = " +
+                                    run_partition_names().name(partition) + " yet");
   }
 } // namespace poundfe

@@ -55,8 +55,9 @@ namespace poundfe
     prm.add_parameter("Damping", damping,
                       "xi (Kelvin-Voigt laws, Jankowski) or xi_bar (Hertz-damp) when given. "
                       "Unit: dimensionless.");
-    prm.add_parameter("Coefficient of restitution", restitution, "e in (0, 1]; concrete ~0.65. "
-                      "Unit: dimensionless.");
+    prm.add_parameter("Coefficient of restitution", restitution,
+                      "e in (0, 1] for the penalty laws, in [0, 1] with Model = nonsmooth; "
+                      "concrete ~0.65. Unit: dimensionless.");
     add_choice(prm, "Hertz-damp formula", hertz_damp_formula,
                "xi_bar from e: 3(1 - e^2)/4 (Muthukumar & DesRoches) or "
                "8(1 - e)/(5e) (Ye, Li & Zhu). Unit: -.",

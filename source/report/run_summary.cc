@@ -645,12 +645,16 @@ namespace poundfe
   RunSummary::write_run(JsonWriter &json, const RunStatus &status,
                         const std::vector<std::string> &written) const
   {
-    const NewmarkParameters &newmark = parameters.time_history.time_integration.newmark;
-    json.begin_object("analysis")
-      .value("integrator", "Newmark")
-      .value("gamma", newmark.gamma)
-      .value("beta", newmark.beta)
-      .value("time_step_s", newmark.time_step)
+    const TimeIntegrationParameters &time_integration = parameters.time_history.time_integration;
+    const NewmarkParameters         &newmark          = time_integration.newmark;
+    json.begin_object("analysis");
+    if (time_integration.contact_model == ContactModel::nonsmooth) // rigid contact
+      json.value("integrator", "Moreau-Jean")
+        .value("theta", time_integration.moreau_jean.theta)
+        .value("lcp_solver", lcp_solver_names().name(time_integration.moreau_jean.lcp.solver));
+    else
+      json.value("integrator", "Newmark").value("gamma", newmark.gamma).value("beta", newmark.beta);
+    json.value("time_step_s", newmark.time_step)
       .value("end_time_s", status.end_time)
       .value("steps", status.steps)
       .value("linear_solver", solver)

@@ -3,7 +3,10 @@
 // times and apex heights on the geometric series, the accumulation point and
 // rest, the energy lost at impacts); two free masses colliding (Newton's
 // law, momentum to round-off); and a shear pair whose Hertz-damp penalty
-// contact (Newmark) approaches the rigid result as the stiffness grows.
+// contact (Newmark) approaches the rigid result as the stiffness grows; a
+// harmonically forced oscillator against a rigid stop on its periodic
+// impacting orbit (Shaw & Holmes 1983); Newton's cradle (three masses, one
+// simultaneous impact by the LCP rule).
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/engine_parameters.h>
@@ -247,4 +250,139 @@ BOOST_AUTO_TEST_CASE(hertz_damp_pounding_approaches_rigid_contact_as_the_stiffne
   for (unsigned int i = 1; i < errors.size(); ++i)
     BOOST_TEST(errors[i] < errors[i - 1]);
   BOOST_TEST(errors.back() < 0.03);
+}
+
+namespace
+{
+  /// One mass on a spring, m x'' + k x = F cos(omega t), against a rigid
+  /// stop at its rest position, x <= 0 (the gap g = -x).
+  struct StopOscillator
+  {
+    double m = 1, omega0 = 2 * M_PI, r = 1.5, force = 10, e = 0.5;
+    double omega() const { return r * omega0; }
+    /// The static-response amplitude of the forcing, X = F / (k (1 - r^2)).
+    double amplitude() const { return force / (m * omega0 * omega0 * (1 - r * r)); }
+  };
+} // namespace
+
+BOOST_AUTO_TEST_CASE(forced_oscillator_against_a_stop_settles_on_the_shaw_holmes_orbit)
+{
+  if (!lcp_solver_available())
+    return;
+  // The 1:1 orbit (one impact per forcing period T = 2 pi / omega; Shaw &
+  // Holmes, J. Sound Vib. 90 (1983) 129, §3). Between impacts
+  //   x = y + X cos(omega t),  y'' + omega0^2 y = 0.
+  // With the impact at phase phi = omega tau, x(tau) = 0, x'(tau-) = V > 0,
+  // x'(tau+) = -e V, write Y = y(tau) = -X cos phi, P = X omega sin phi and
+  // c, s = cos, sin(omega0 T). Periodicity over one flight of length T
+  // (omega T = 2 pi, so the forcing term repeats):
+  //   Y c + (P - e V) s / omega0 = Y,   -omega0 Y s + (P - e V) c = V + P.
+  // The first gives Y = (P - e V) cot(beta) / omega0 with beta = omega0 T / 2
+  // = pi / r (s / (1 - c) = cot beta); put in the second (s^2 / (1 - c) =
+  // 1 + c) it leaves -2 P = (1 - e) V. Hence
+  //   X omega sin phi = -(1 - e) V / 2,   X omega0 cos phi = (1 + e) V cot(beta) / 2,
+  // and sin^2 + cos^2 = 1 gives the impact velocity
+  //   V = 2 |X| omega0 / sqrt((1 - e)^2 / r^2 + (1 + e)^2 cot^2(pi / r)).
+  // For r = 1.5, e = 0.5, F / m = 10 m/s^2, omega0 = 2 pi: V = 2.74417 m/s at
+  // phi / 2 pi = 0.0584; an event-driven exact integration from x = -0.01
+  // reaches it to 1e-6 within 20 periods.
+  const StopOscillator o;
+  const double         h = 1e-4, omega = o.omega(), X = o.amplitude(), T = 2 * M_PI / omega;
+  const double         cot = 1 / std::tan(M_PI / o.r);
+  const double V = 2 * std::abs(X) * o.omega0 /
+                   std::sqrt(std::pow((1 - o.e) / o.r, 2) + std::pow((1 + o.e) * cot, 2));
+  const double phi = std::atan2(-(1 - o.e) * V / (2 * X * omega),
+                                (1 + o.e) * V * cot / (2 * X * o.omega0));
+  LinearSystem system = free_masses({o.m});
+  system.stiffness.insert(0, 0) = o.m * o.omega0 * o.omega0;
+  UnilateralContact stop;
+  stop.equations    = {0};
+  stop.coefficients = {1}; // closure d = x: g = -x
+  stop.restitution  = o.e;
+  MoreauJeanParameters parameters;
+  parameters.time_step = h;
+  MoreauJeanIntegrator integrator(system, parameters, {stop});
+  const LoadFunction   forcing = [&](double t, Vector &p) {
+    p = Vector::Constant(1, o.force * std::cos(omega * t));
+  };
+  integrator.initialize(Vector::Constant(1, o.force), Vector::Constant(1, -0.01), Vector::Zero(1));
+  while (integrator.time() < 30 * T)
+    integrator.advance(forcing);
+  std::vector<ContactImpulse> last;
+  for (const ContactImpulse &i : first_impulses(integrator.impulses(), h))
+    if (i.time > 25 * T)
+      last.push_back(i);
+  BOOST_REQUIRE_EQUAL(last.size(), 5u); // one impact per period
+  const double phase = (phi < 0 ? phi + 2 * M_PI : phi) / omega;
+  for (const ContactImpulse &i : last)
+    {
+      const double period = std::floor(i.time / T), t_closed = period * T + phase;
+      BOOST_TEST_MESSAGE("impact at " << i.time << " s (" << t_closed << "), V "
+                                      << -i.velocity_before << " m/s (" << V << ")");
+      // the impulse step ends within a step after the crossing; the
+      // velocity entering it is V less up to a step's acceleration
+      // (|x''| <= F/m at x = 0: 1e-3 m/s)
+      BOOST_TEST(i.time - t_closed >= -1e-9);
+      BOOST_TEST(i.time - t_closed <= 2 * h);
+      BOOST_TEST(std::abs(-i.velocity_before - V) <= 2 * o.force / o.m * h);
+      BOOST_TEST(std::abs(i.velocity_after + o.e * i.velocity_before) <= 1e-9 * V);
+    }
+  BOOST_TEST(integrator.max_energy_error() < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(newtons_cradle_takes_the_lcp_rule_of_simultaneous_impact)
+{
+  if (!lcp_solver_available())
+    return;
+  // Three equal masses touching (gaps 0), the first arriving at v0. Both
+  // contacts are in the step's index set, and Newton's law per contact,
+  //   0 <= U_a+ + e U_a ⊥ P_a >= 0,  U_a = v2 - v1 = -v0,  U_b = v3 - v2 = 0,
+  // with the Delassus operator W = [[2, -1], [-1, 2]] / m (positive
+  // definite: one solution) gives both impulses positive:
+  //   P_a = 2 (1 + e) m v0 / 3,  P_b = (1 + e) m v0 / 3,
+  //   v+ = v0 ((1 - 2 e) / 3, (1 + e) / 3, (1 + e) / 3),
+  // momentum kept and the energy lost (1 - e^2) m v0^2 / 3. At e = 1 the
+  // energy is kept but the first mass rebounds at -v0 / 3 and the last two
+  // leave together at 2 v0 / 3: not the cradle's (0, 0, v0), which takes
+  // the impacts one after the other (Acary & Brogliato 2008, §4.3.2).
+  const double       m = 2, v0 = 1.5, h = 1e-3;
+  const LinearSystem system = free_masses({m, m, m});
+  std::vector<UnilateralContact> contacts(2);
+  for (unsigned int c = 0; c < 2; ++c)
+    {
+      contacts[c].equations    = {int(c), int(c + 1)};
+      contacts[c].coefficients = {1, -1}; // closure u_c - u_c+1
+    }
+  for (const double e : {1.0, 0.9, 0.0})
+    {
+      for (UnilateralContact &c : contacts)
+        c.restitution = e;
+      MoreauJeanParameters parameters;
+      parameters.time_step = h;
+      MoreauJeanIntegrator integrator(system, parameters, contacts);
+      const Vector         zero = Vector::Zero(3);
+      integrator.initialize(zero, zero, Eigen::Vector3d(v0, 0, 0));
+      for (unsigned int i = 0; i < 20; ++i)
+        integrator.advance([](double, Vector &q) { q.setZero(3); });
+      const Vector &w = integrator.velocity();
+      const Eigen::Vector3d expected =
+        v0 * Eigen::Vector3d(1 - 2 * e, 1 + e, 1 + e) / 3;
+      std::vector<double> impulse(2, 0.0);
+      double              lost = 0;
+      for (const ContactImpulse &i : integrator.impulses())
+        if (i.impulse > 1e-12 * m * v0)
+          {
+            BOOST_TEST(i.time <= h * (1 + 1e-12)); // all in the first step
+            impulse[i.contact] += i.impulse;
+            lost += i.energy_lost;
+          }
+      BOOST_TEST_MESSAGE("e = " << e << ": v+ " << w.transpose() << " (" << expected.transpose()
+                                << "), impulses " << impulse[0] << ", " << impulse[1]);
+      BOOST_TEST((w - expected).norm() < 1e-12 * v0);
+      BOOST_TEST(std::abs(impulse[0] - 2 * (1 + e) * m * v0 / 3) < 1e-12 * m * v0);
+      BOOST_TEST(std::abs(impulse[1] - (1 + e) * m * v0 / 3) < 1e-12 * m * v0);
+      BOOST_TEST(std::abs(m * w.sum() - m * v0) < 1e-13 * m * v0);
+      BOOST_TEST(std::abs(lost - (1 - e * e) * m * v0 * v0 / 3) < 1e-12 * m * v0 * v0);
+      BOOST_TEST(integrator.max_energy_error() < 1e-9);
+    }
 }

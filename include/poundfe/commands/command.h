@@ -88,6 +88,8 @@ namespace poundfe
     /// Can leave its results in memory (CommandRun::memory) instead of
     /// files: what Python's call of the command gets without output=.
     in_memory = 1u << 10,
+    /// May take Contact/Model = nonsmooth (rigid contact, Moreau-Jean).
+    rigid_contact = 1u << 11,
   };
 
   /// A set of rules, written `CommandRule::a | CommandRule::b`.

@@ -131,7 +131,9 @@ namespace poundfe
     std::unique_ptr<NewmarkIntegrator> integrator; // null with a lockstep stepper
     /// Time integration/Method = dopri: the integrator that runs (null: Newmark).
     std::unique_ptr<DormandPrinceIntegrator> dopri;
-    TimeStepper      &stepper; // *integrator, *dopri or *lockstep
+    /// Contact/Model = nonsmooth: Moreau-Jean's rigid contact (null: penalty).
+    std::unique_ptr<MoreauJeanIntegrator> rigid;
+    TimeStepper      &stepper; // *integrator, *dopri, *rigid or *lockstep
     LockstepStepper  *lockstep = nullptr;
     ResponseView      view;
     const InitialState initial; // checked against the model on construction

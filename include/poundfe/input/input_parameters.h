@@ -100,6 +100,8 @@ namespace poundfe
     /// A stochastic motion (or white-noise force) is generated whole before
     /// a run: its samples are bounded like the steps (Maximum number of steps).
     void check_stochastic_samples() const;
+    /// The Contact section against Contact/Model (rigid contact takes e = 0).
+    void check_contact();
   };
 
   /// Read and check a .prm or .json file. Throws InputError.

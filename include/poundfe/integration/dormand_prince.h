@@ -33,7 +33,7 @@
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/integration/time_stepper.h>
+#include <poundfe/integration/stepper_state.h>
 
 #include <Eigen/Cholesky>
 
@@ -90,7 +90,7 @@ namespace poundfe
     Vector                stage, r1, r2, r3, r4, r5;
   };
 
-  class DormandPrinceIntegrator : public TimeStepper
+  class DormandPrinceIntegrator : public TimeStepperState
   {
   public:
     /// Why the method cannot take this system and these elements (too
@@ -105,24 +105,6 @@ namespace poundfe
 
     void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
     void advance(const LoadFunction &load) override;
-    void set_substep_callback(std::function<void()> callback) override
-    {
-      substep_callback = std::move(callback);
-    }
-
-    double        time() const override { return current_time; }
-    unsigned long steps() const override { return step_count; }
-    const Vector &displacement() const override { return u; }
-    const Vector &velocity() const override { return v; }
-    const Vector &acceleration() const override { return a; }
-
-    EnergyBalance energy() const override { return balance; }
-    double        max_energy_error() const override { return max_balance_error; }
-    double element_work(unsigned int h) const override { return work[h]; }
-    double element_supplied_work(unsigned int) const override { return 0; }
-    const ImpactLog           &impact_log() const override { return impacts; }
-    const StickSlipLog        &stick_slip_log() const override { return stick_slip; }
-    const IterationStatistics &statistics() const override { return stats; }
     /// Events located so far (switches of a gap's or a spring's phase).
     unsigned long n_events() const { return stats.event_refinements; }
     /// Right-hand-side evaluations so far.
@@ -162,17 +144,10 @@ namespace poundfe
     LoadFunction       load;
     DormandPrinceStep  step;
     Vector             y, k1, y_trial, load_vector, force, local_u, local_v;
-    Vector             u, v, a;
-    double             current_time = 0, proposed_step = 0;
-    unsigned long      step_count   = 0, evaluations = 0;
+    double             proposed_step = 0;
+    unsigned long      evaluations   = 0;
     std::vector<int>   phases, trial_phases;
-    std::vector<double> work, supplied, initial_stored, committed_force, committed_history, committed_rate;
-    ImpactLog           impacts;
-    StickSlipLog        stick_slip;
-    IterationStatistics stats;
-    EnergyBalance       balance;
-    double              energy_scale = 0, max_balance_error = 0;
-    std::function<void()> substep_callback;
+    std::vector<double> supplied, initial_stored, committed_force, committed_history, committed_rate;
   };
 } // namespace poundfe
 

@@ -32,7 +32,7 @@
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/integration/lcp_solver.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/integration/time_stepper.h>
+#include <poundfe/integration/stepper_state.h>
 
 #include <Eigen/LU>
 
@@ -86,7 +86,7 @@ namespace poundfe
     double       energy_lost = 0;                 // -P (U+ + U) / 2, J
   };
 
-  class MoreauJeanIntegrator : public TimeStepper
+  class MoreauJeanIntegrator : public TimeStepperState
   {
   public:
     /// Why the scheme cannot take this system and these elements (too many
@@ -104,26 +104,9 @@ namespace poundfe
 
     void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
     void advance(const LoadFunction &load) override;
-    void set_substep_callback(std::function<void()> callback) override
-    {
-      substep_callback = std::move(callback);
-    }
-
-    double        time() const override { return current_time; }
-    unsigned long steps() const override { return step_count; }
-    const Vector &displacement() const override { return u; }
-    const Vector &velocity() const override { return v; }
-    /// The smooth part of the acceleration, (v+ - v - M^-1 H^T P) / h: the
-    /// impulses are Dirac measures, reported as impulses.
-    const Vector &acceleration() const override { return a; }
-
-    EnergyBalance energy() const override { return balance; }
-    double        max_energy_error() const override { return max_balance_error; }
-    double element_work(unsigned int h) const override { return work[h]; }
-    double element_supplied_work(unsigned int) const override { return 0; }
-    const ImpactLog           &impact_log() const override { return impacts; }
-    const StickSlipLog        &stick_slip_log() const override { return stick_slip; }
-    const IterationStatistics &statistics() const override { return stats; }
+    /// TimeStepperState::acceleration() is the smooth part of the
+    /// acceleration, (v+ - v - M^-1 H^T P) / h: the impulses are Dirac
+    /// measures, reported as impulses.
 
     const std::vector<UnilateralContact> &contacts() const { return contact_list; }
     /// Every nonzero impulse so far, in the order of the steps.
@@ -164,10 +147,8 @@ namespace poundfe
     unsigned int                   n_elements = 0;
     Eigen::MatrixXd                mass, damping, stiffness, base_jacobian, H;
     Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_factor;
-    Vector                         u, v, a, load_start, smooth_start, local_u, local_v;
-    double                         current_time = 0;
-    unsigned long                  step_count   = 0;
-    std::vector<double>            work, initial_stored;
+    Vector                         load_start, smooth_start, local_u, local_v;
+    std::vector<double>            initial_stored;
     std::vector<ContactImpulse>    impulse_log;
     /// The energy lost at impacts of contacts without a gap element.
     double                         unattached_loss = 0;
@@ -176,12 +157,6 @@ namespace poundfe
     unsigned long                  lcp_count      = 0;
     int                            lcp_iterations = 0;
     double                         lcp_residual   = 0;
-    ImpactLog                      impacts;
-    StickSlipLog                   stick_slip;
-    IterationStatistics            stats;
-    EnergyBalance                  balance;
-    double                         energy_scale = 0, max_balance_error = 0;
-    std::function<void()>          substep_callback;
   };
 } // namespace poundfe
 

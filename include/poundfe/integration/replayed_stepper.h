@@ -19,13 +19,13 @@
 
 #include <poundfe/integration/element_records.h>
 #include <poundfe/integration/newmark.h>
-#include <poundfe/integration/time_stepper.h>
+#include <poundfe/integration/stepper_state.h>
 
 #include <array>
 
 namespace poundfe
 {
-  class ReplayedStepper final : public TimeStepper
+  class ReplayedStepper final : public TimeStepperState
   {
   public:
     /// `elements`: the whole model's, numbered as the model; it must
@@ -60,16 +60,9 @@ namespace poundfe
 
     void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
     void advance(const LoadFunction &load) override;
-    void set_substep_callback(std::function<void()>) override {}
 
-    double        time() const override { return current_time; }
-    unsigned long steps() const override { return step_count; }
-    const Vector &displacement() const override { return u; }
-    const Vector &velocity() const override { return v; }
-    const Vector &acceleration() const override { return a; }
-
-    EnergyBalance energy() const override { return balance; }
-    double        max_energy_error() const override { return max_error; }
+    // time, state, balance and statistics: TimeStepperState's; the work and
+    // the logs are the replay's records
     double element_work(unsigned int h) const override { return records.work()[h]; }
     double element_supplied_work(unsigned int h) const override
     {
@@ -77,7 +70,6 @@ namespace poundfe
     }
     const ImpactLog           &impact_log() const override { return records.impact_log(); }
     const StickSlipLog        &stick_slip_log() const override { return records.stick_slip_log(); }
-    const IterationStatistics &statistics() const override { return stats; }
 
   private:
     /// Every element's trial state at (u, v); NumericalError if one refuses
@@ -91,12 +83,8 @@ namespace poundfe
     // the DOFs of element replayed[i] are [dof_start[i], dof_start[i + 1]) of
     // local_u, local_v (a rank's own elements: its share of the model)
     std::vector<unsigned int> dof_start;
-    Vector              u, v, a, local_u, local_v;
-    double              current_time = 0;
-    unsigned long       accepted     = 0, step_count = 0;
-    EnergyBalance       balance;
-    double              max_error = 0;
-    IterationStatistics stats;
+    Vector              local_u, local_v;
+    unsigned long       accepted = 0;
   };
 } // namespace poundfe
 

@@ -9,6 +9,7 @@
 #include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/integration/dormand_prince.h>
+#include <poundfe/integration/moreau_jean.h>
 #include <poundfe/integration/newmark.h>
 
 #include <string>
@@ -38,6 +39,18 @@ namespace poundfe
 
   const NameTable<TimeIntegrationMethod> &time_integration_method_names();
 
+  /// Contact/Model: how the gaps act. penalty: each gap element's contact
+  /// law, stepped by Method; nonsmooth: rigid unilateral contact with
+  /// Newton's restitution, stepped by Moreau-Jean's scheme
+  /// (integration/moreau_jean.h), only in a build with Siconos Numerics.
+  enum class ContactModel
+  {
+    penalty,
+    nonsmooth
+  };
+
+  const NameTable<ContactModel> &contact_model_names();
+
   /// How `mpirun -np P poundfe run` spreads one run over its ranks.
   enum class RunPartition
   {
@@ -53,6 +66,12 @@ namespace poundfe
     TimeIntegrationMethod method = TimeIntegrationMethod::newmark;
     /// dopri's tolerances (its time_step is newmark.time_step: see dormand_prince()).
     DormandPrinceParameters dopri;
+    /// Contact/Model, Contact/Theta, Contact/LCP solver; the restitution is
+    /// Contact/Coefficient of restitution (InputParameters::finalize copies
+    /// it) and the time step newmark's: see moreau_jean_parameters().
+    ContactModel          contact_model = ContactModel::penalty;
+    MoreauJeanParameters  moreau_jean;
+    double                restitution = 0.65;
     double                end_time      = 0.0; // 0 = length of the ground motion
     std::string           linear_solver = "eigen-ldlt"; // one of linear_solver_names()
     RunPartition          partition     = RunPartition::none;
@@ -70,6 +89,9 @@ namespace poundfe
     /// dopri's parameters with the analysis time step.
     DormandPrinceParameters dormand_prince() const;
 
+    /// Moreau-Jean's parameters with the analysis time step.
+    MoreauJeanParameters moreau_jean_parameters() const;
+
     /// theta of the hysteretic laws' one-step rule.
     double hysteresis_theta() const;
 
@@ -79,6 +101,9 @@ namespace poundfe
     void declare_event_refinement(dealii::ParameterHandler &prm);
     /// Throws InputError.
     void check(const InputFile &input) const;
+    /// Contact/Model and Contact/Theta against this build and the method
+    /// (part of check()).
+    void check_contact_model(const InputFile &input) const;
   };
 } // namespace poundfe
 
