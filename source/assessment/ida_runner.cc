@@ -1,6 +1,5 @@
-// The IDA runner (a record at an intensity through the model) and a list
-// of runs over the ranks, journaled by the Monte Carlo scheduler (ida.h);
-// the hunt and fill over the ranks is in ida_scheduler.cc.
+// The IDA runner (a record at an intensity through the model) and its
+// journal rows (ida.h); the runs over the ranks are in ida_scheduler.cc.
 #include <poundfe/assessment/ida.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/progress.h>
@@ -9,7 +8,6 @@
 #include <poundfe/output/floor_response.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/peak_response.h>
-#include <poundfe/reliability/montecarlo.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -120,32 +118,5 @@ namespace poundfe
     std::vector<double> row{double(task.record), task.intensity, point.collapsed ? 1.0 : 0.0};
     row.insert(row.end(), point.demands.begin(), point.demands.end());
     return row;
-  }
-
-  std::vector<std::vector<double>>
-  run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
-                const MPI_Comm comm, Progress *const progress, const unsigned long offset,
-                IdaResult &result)
-  {
-    RealizationJob job;
-    job.names         = ida_row_names(runner);
-    job.seed          = 0;
-    job.report_lines  = false;
-    job.run           = [&](const std::uint64_t i, std::vector<double> &row) {
-      row = ida_row(runner, tasks[i]);
-      return true;
-    };
-    const MonteCarloTable table =
-      run_realizations(job, tasks.size(), file, comm, "IDA: ", progress, offset);
-    result.n_run_now += table.n_run_now; // summed over the ranks already
-    result.interrupted = result.interrupted || table.interrupted;
-    std::vector<double> flat;
-    for (const std::vector<double> &row : table.responses)
-      flat.insert(flat.end(), row.begin(), row.end());
-    flat = dealii::Utilities::MPI::broadcast(comm, flat, 0);
-    std::vector<std::vector<double>> rows;
-    for (std::size_t i = 0; i < flat.size(); i += job.names.size())
-      rows.emplace_back(flat.begin() + i, flat.begin() + i + job.names.size());
-    return rows;
   }
 } // namespace poundfe

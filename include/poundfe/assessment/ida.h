@@ -51,6 +51,7 @@
 
 #include <mpi.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -177,12 +178,56 @@ namespace poundfe
     double       intensity = 0;
   };
 
-  /// Runs `tasks` over the ranks of `comm` (each must call it), spread by
-  /// the Monte Carlo scheduler and journaled in `file` (a realizations.csv:
-  /// a call with the same file resumes); `offset` runs are counted done for
-  /// the progress line. Returns each task's row (record, intensity,
-  /// collapsed, the demands) on every rank; adds the runs of this call to
-  /// result.n_run_now and an interruption to result.interrupted.
+  /// What a run computes: the journal row of a task (ida_row below).
+  using IdaRun = std::function<std::vector<double>(const IdaTask &)>;
+
+  /// The runs a dealer deals (ida_scheduler.cc), held on rank 0: which run
+  /// to deal next and what came back.
+  class DealtRuns
+  {
+  public:
+    virtual ~DealtRuns() = default;
+    /// Whether a journaled row (record, intensity, ...) is one of these runs.
+    virtual bool holds(const std::vector<double> &row) const = 0;
+    /// The next run to deal, then under way; nothing: none until a run
+    /// under way comes back (or none is left).
+    virtual std::optional<IdaTask> next() = 0;
+    /// The row of a run, journaled or fresh: no longer under way.
+    virtual void take(const std::vector<double> &row) = 0;
+    /// Nothing left to deal and nothing under way.
+    virtual bool finished() const = 0;
+  };
+
+  /// Rows of `runs` dealt over the ranks of `comm` (ida_scheduler.cc).
+  struct DealtRows
+  {
+    std::vector<std::vector<double>> rows; // journaled ones first, then in the order taken
+    unsigned long                    n_run_now = 0; // by this call, over every rank
+    bool                             interrupted = false; // runs are left
+  };
+
+  /// Deals `runs` (rank 0's; nullptr on the others) run by run to whichever
+  /// rank is free, every rank computing rows with `run` (each must call
+  /// it); journaled by rank 0 in `file` (a realizations.csv with the
+  /// columns `names`: a call with the same file resumes: the journaled
+  /// rows are read back, not run; InputError when one is not of `runs`);
+  /// `offset` runs are counted done for the progress line. The rows are on
+  /// every rank.
+  DealtRows deal_runs(const IdaRun &run, DealtRuns *runs, const std::vector<std::string> &names,
+                      const std::string &file, MPI_Comm comm, Progress *progress,
+                      unsigned long offset = 0);
+
+  /// Runs `tasks` (each independent of the others) over the ranks of
+  /// `comm` (each must call it) by deal_runs, journaled in `file`; `offset`
+  /// runs are counted done for the progress line. Returns each task's row
+  /// (record, intensity, collapsed, the demands) done, on every rank; adds
+  /// the runs of this call to result.n_run_now and an interruption to
+  /// result.interrupted.
+  std::vector<std::vector<double>>
+  run_ida_tasks(const IdaRun &run, const std::vector<std::string> &names,
+                const std::vector<IdaTask> &tasks, const std::string &file, MPI_Comm comm,
+                Progress *progress, unsigned long offset, IdaResult &result);
+  /// The same with the runner's rows (ida_row).
   std::vector<std::vector<double>>
   run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
                 MPI_Comm comm, Progress *progress, unsigned long offset, IdaResult &result);
