@@ -253,6 +253,13 @@ namespace poundfe::commands
       d.peak_drift        = values(floors.column_names("storey", "peak_drift_ratio"));
       d.peak_acceleration = values(floors.column_names("floor", "peak_acc_m_s2"));
       d.residual_drift    = values(floors.column_names("storey", "residual_drift_ratio"));
+      if (model.dimension == 3)
+        {
+          d.pga_y               = row.at(runner.column("peak_ground_acc_y_m_s2"));
+          d.peak_drift_y        = values(floors.column_names("storey", "peak_drift_ratio_y"));
+          d.peak_acceleration_y = values(floors.column_names("floor", "peak_acc_y_m_s2"));
+          d.peak_rotation       = values(floors.column_names("floor", "peak_rotation_rad"));
+        }
       for (unsigned int g = 1; g <= model.gaps.size(); ++g)
         {
           const std::string gap = "gap" + std::to_string(g);

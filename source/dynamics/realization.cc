@@ -66,6 +66,14 @@ namespace poundfe
       for (unsigned int g = 0; g < analysis.model.gaps.size(); ++g)
         result.push_back({kind, g, "gap" + std::to_string(g + 1) + suffix});
     result.push_back({OptionalResponse::ground_acceleration, 0, "peak_ground_acc_m_s2"});
+    if (analysis.model.dimension == 3)
+      {
+        const std::vector<std::string> rotation =
+          FloorResponse(analysis.model).column_names("floor", "peak_rotation_rad");
+        for (unsigned int i = 0; i < rotation.size(); ++i)
+          result.push_back({OptionalResponse::rotation, i, rotation[i]});
+        result.push_back({OptionalResponse::ground_acceleration_y, 1, "peak_ground_acc_y_m_s2"});
+      }
     return result;
   }
 
@@ -258,6 +266,8 @@ namespace poundfe
     std::vector<double> count, force, velocity;
     gap_demands(model(), history->state().impact_log().impacts(), peaks->n_hysteretic(), count,
                 force, velocity);
+    ResponseDemands plan; // the PGA as applied, a 3D model's rotations
+    add_plan_demands(*peaks, excitation, plan);
     unsigned int c = first_residual_column;
     for (const OptionalResponse &o : chosen)
       switch (o.kind)
@@ -275,7 +285,13 @@ namespace poundfe
             responses[c++] = velocity[o.index];
             break;
           case OptionalResponse::ground_acceleration:
-            responses[c++] = excitation.ground_motion().peak();
+            responses[c++] = plan.pga;
+            break;
+          case OptionalResponse::rotation:
+            responses[c++] = plan.peak_rotation[o.index];
+            break;
+          case OptionalResponse::ground_acceleration_y:
+            responses[c++] = plan.pga_y;
             break;
         }
   }

@@ -47,10 +47,12 @@
 
 #include <poundfe/assessment/ida_parameters.h>
 #include <poundfe/dynamics/time_history.h>
+#include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/record_suite.h>
 
 #include <mpi.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -130,10 +132,19 @@ namespace poundfe
     /// Every demand traced: per storey the peak drift ratio, per floor the
     /// peak absolute acceleration (m/s^2), per storey the residual drift
     /// ratio (at the end), the largest peak drift ratio, and per gap the
-    /// impacts, the largest peak force (N) and approach velocity (m/s).
+    /// impacts, the largest peak force (N) and approach velocity (m/s);
+    /// then, for a 3D model, per storey the peak drift ratio along y, per
+    /// floor the peak absolute acceleration along y (m/s^2) and the peak
+    /// rotation |theta_z| (rad). A 3D model is shaken by a single record
+    /// along Ground motion/Incidence angle, by a pair turned by it.
     const std::vector<std::string> &demand_names() const { return names; }
     /// Column of the largest peak drift ratio in the demands.
     unsigned int max_drift_column() const { return max_drift; }
+    /// Column of a 3D model's first y drift (the number of columns in 2D).
+    unsigned int plan_column() const { return plan; }
+    /// The PGA along x and y of each record as applied, at its intensity
+    /// in the suite (m/s^2).
+    const std::vector<std::array<double, 2>> &ground_peaks() const { return peaks_xy; }
     const RecordSuite &suite() const { return records; }
     /// The measure of each record as scaled in the suite (IM unit).
     const std::vector<double> &base_intensities() const { return base; }
@@ -151,7 +162,12 @@ namespace poundfe
     std::unique_ptr<TimeHistory>   history;
     std::unique_ptr<PeakResponse>  peaks;
     std::vector<std::string>       names;
-    unsigned int                   max_drift = 0;
+    unsigned int                   max_drift = 0, plan = 0;
+    double                         angle = 0; // rad, Ground motion/Incidence angle
+    std::vector<std::array<double, 2>> peaks_xy;
+
+    /// The excitation of record r scaled by `factor` (with `free_vibration` s of rest).
+    Excitation excitation(unsigned int r, double factor, bool free_vibration) const;
   };
 
   /// What an IDA found for one record: its points in ascending intensity.

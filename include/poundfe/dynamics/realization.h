@@ -55,8 +55,11 @@ namespace poundfe
     /// (1-based, Model's order) the largest peak force of its impacts
     /// ("gap<j>_peak_contact_force", N), per gap its impacts
     /// ("gap<j>_impacts") and their largest approach speed
-    /// ("gap<j>_peak_impact_velocity", m/s), and the peak ground
-    /// acceleration of the realization ("peak_ground_acc_m_s2", along x).
+    /// ("gap<j>_peak_impact_velocity", m/s), the peak ground acceleration
+    /// of the realization as applied ("peak_ground_acc_m_s2", along x), and
+    /// of a 3D model per floor the peak rotation |theta_z|
+    /// ("<building>_floor<i>_peak_rotation_rad") and the peak ground
+    /// acceleration along y ("peak_ground_acc_y_m_s2").
     std::vector<std::string> optional_response_names() const;
     /// Adds the columns of those of `wanted` that are optional responses
     /// (others are ignored), after the standard ones. Call before
@@ -136,7 +139,9 @@ namespace poundfe
         peak_force,
         impacts,
         impact_velocity,
-        ground_acceleration
+        ground_acceleration,
+        rotation,
+        ground_acceleration_y
       } kind;
       unsigned int index;
       std::string  name;
