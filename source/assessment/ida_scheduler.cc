@@ -210,7 +210,6 @@ namespace poundfe
       std::unique_ptr<AppendFile>      journal;
       std::uint64_t                    next_id = 0;
       std::vector<std::vector<double>> rows;
-      std::chrono::steady_clock::time_point synced = std::chrono::steady_clock::now();
       unsigned int                     n_done = 0; // workers done
       bool                             stop   = false;
       std::deque<std::array<double, 2>> sent; // the tasks' buffers until Waitall
@@ -240,11 +239,8 @@ namespace poundfe
       runs.take(taken);
       if (fresh)
         {
-          journal->append(realization_line({next_id++, true, taken}, 0), false);
           // synced in groups: a sync can outlast the run (append_file.h)
-          const auto now = std::chrono::steady_clock::now();
-          if (now - synced > std::chrono::milliseconds(500))
-            journal->sync(), synced = now;
+          journal->append_grouped(realization_line({next_id++, true, taken}, 0));
           ++n_run_now;
         }
       rows.push_back(std::move(taken));
