@@ -9,6 +9,10 @@
 # runs (summary.json: runs_now / wall_time_s) and the whole command's wall
 # time (set-up and output included), the speed-up, and the load average
 # before and after. ida.csv must be the same on 1 and 2 ranks.
+#   COMMAND=msa: the same suite and model through `poundfe msa`, every record
+# at RUNS_PER_RECORD stripes of Sa(T1) (0.05, 0.10, ... g; no cloud): the
+# same number of runs per record, each dealt to the free rank as ida's;
+# msa.csv must be the same on 1 and 2 ranks.
 #   Each rank runs under setsid (SETSID=0: not): with the kernel's autogroup
 # scheduling (/proc/sys/kernel/sched_autogroup_enabled = 1) the CPU is
 # shared between sessions, not processes, so on a machine that other
@@ -26,8 +30,14 @@ pair=(--set "Building 1/Number of storeys=5" --set "Building 2/Number of storeys
       --set Output/Plots=false)
 build/poundfe ground-motion input/ida-pounding-pair.prm --realizations "$n" --write-at2 \
   --output "$work/suite" "${pair[@]}" > /dev/null
-options=("${pair[@]}" --set "IDA/Suite=$work/suite/records/suite.csv"
-         --set "IDA/Runs per record=$runs")
+command=${COMMAND:-ida}
+options=("${pair[@]}" --set "IDA/Suite=$work/suite/records/suite.csv")
+if [ "$command" = msa ]; then
+  stripes=$(python3 -c "print(', '.join('%.2f' % (0.05 * (k + 1)) for k in range($runs)))")
+  options+=(--set "MSA/Intensities=$stripes" --set "MSA/Cloud=false")
+else
+  options+=(--set "IDA/Runs per record=$runs")
+fi
 echo "load average before: $(uptime | sed 's/.*load average: //')"
 best() { sort -g | tail -1; }
 isolate=setsid
@@ -36,21 +46,22 @@ echo "autogroup scheduling: $(cat /proc/sys/kernel/sched_autogroup_enabled 2> /d
 for i in $(seq "$repeats"); do
   for np in 1 2; do
     start=$(date +%s.%N)
-    mpirun -np "$np" $isolate build/poundfe ida input/ida-pounding-pair.prm --output "$work/np$np-$i" \
+    mpirun -np "$np" $isolate build/poundfe "$command" input/ida-pounding-pair.prm --output "$work/np$np-$i" \
       "${options[@]}" > /dev/null
     end=$(date +%s.%N)
     python3 -c "import json, sys; s = json.load(open(sys.argv[1])); print(s['runs_now'], s['runs_now'] / s['wall_time_s'], float(sys.argv[3]) - float(sys.argv[2]))" \
       "$work/np$np-$i/summary.json" "$start" "$end" >> "$work/rates$np"
   done
 done
-cmp -s "$work/np1-1/ida.csv" "$work/np2-1/ida.csv" || echo "warning: ida.csv differs between 1 and 2 ranks"
+cmp -s "$work/np1-1/$command.csv" "$work/np2-1/$command.csv" ||
+  echo "warning: $command.csv differs between 1 and 2 ranks"
 echo "load average after: $(uptime | sed 's/.*load average: //')"
 runs_done=$(head -1 "$work/rates1" | cut -d' ' -f1)
 r1=$(cut -d' ' -f2 "$work/rates1" | best)
 r2=$(cut -d' ' -f2 "$work/rates2" | best)
 w1=$(cut -d' ' -f3 "$work/rates1" | sort -g | head -1)
 w2=$(cut -d' ' -f3 "$work/rates2" | sort -g | head -1)
-echo "$n records x $runs runs per record: $runs_done runs"
+echo "$command: $n records x $runs runs per record: $runs_done runs"
 echo "all: $(tr '\n' ';' < "$work/rates1") | $(tr '\n' ';' < "$work/rates2")"
 printf '1 rank:  %.1f runs/s, %.1f s in all\n' "$r1" "$w1"
 printf '2 ranks: %.1f runs/s, %.1f s in all\n' "$r2" "$w2"

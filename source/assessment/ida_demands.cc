@@ -29,8 +29,11 @@ namespace poundfe
   {
     // the runner's columns (IdaRunner::demand_names): per floor of the model
     // the peak drift ratio, the peak acceleration and the residual drift
-    // ratio, the largest drift ratio, then three per gap
+    // ratio, the largest drift ratio, then three per gap, then a 3D model's
+    // drift and acceleration along y and rotation per floor
     const unsigned int n_floors = runner.max_drift_column() / 3;
+    const unsigned int plan     = runner.plan_column();
+    const bool         three_d  = plan < runner.demand_names().size();
     IdaDemandSample    sample;
     sample.intensity = x;
     for (unsigned int r = 0; r < result.records.size(); ++r)
@@ -48,15 +51,23 @@ namespace poundfe
             continue;
           }
         ResponseDemands d;
-        d.pga = runner.suite().records[r].components[0].peak() * x / runner.base_intensities()[r];
+        const double scale = x / runner.base_intensities()[r];
+        d.pga = three_d ? runner.ground_peaks()[r][0] * scale :
+                          runner.suite().records[r].components[0].peak() * scale;
+        d.pga_y = runner.ground_peaks()[r][1] * scale;
         for (unsigned int f = 0; f < n_floors; ++f)
           {
             d.peak_drift.push_back(demand_at(record, f, x));
             d.peak_acceleration.push_back(demand_at(record, n_floors + f, x));
             d.residual_drift.push_back(demand_at(record, 2 * n_floors + f, x, true));
+            if (three_d)
+              {
+                d.peak_drift_y.push_back(demand_at(record, plan + f, x));
+                d.peak_acceleration_y.push_back(demand_at(record, plan + n_floors + f, x));
+                d.peak_rotation.push_back(demand_at(record, plan + 2 * n_floors + f, x));
+              }
           }
-        for (unsigned int c = runner.max_drift_column() + 1; c + 2 < runner.demand_names().size();
-             c += 3)
+        for (unsigned int c = runner.max_drift_column() + 1; c + 2 < plan; c += 3)
           {
             d.impacts.push_back(demand_at(record, c, x));
             d.impact_force.push_back(demand_at(record, c + 1, x));

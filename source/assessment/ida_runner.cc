@@ -1,6 +1,5 @@
-// The IDA runner (a record at an intensity through the model) and a list
-// of runs over the ranks, journaled by the Monte Carlo scheduler (ida.h);
-// the hunt and fill over the ranks is in ida_scheduler.cc.
+// The IDA runner (a record at an intensity through the model) and its
+// journal rows (ida.h); the runs over the ranks are in ida_scheduler.cc.
 #include <poundfe/assessment/ida.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/progress.h>
@@ -9,7 +8,6 @@
 #include <poundfe/output/floor_response.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/peak_response.h>
-#include <poundfe/reliability/montecarlo.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -26,6 +24,7 @@ namespace poundfe
     , records(std::move(suite))
     , history(std::make_unique<TimeHistory>(analysis_, parameters))
     , peaks(std::make_unique<PeakResponse>(analysis_.model, history->nonlinear_elements()))
+    , angle(parameters.ground_motion.incidence_angle * M_PI / 180)
   {
     const InputFile &input = parameters.input;
     if (records.pairs() && analysis.model.dimension != 3)
@@ -60,6 +59,39 @@ namespace poundfe
     for (unsigned int g = 1; g <= analysis.model.gaps.size(); ++g)
       for (const char *what : {"_impacts", "_peak_impact_force_N", "_peak_impact_velocity_m_s"})
         names.push_back("gap" + std::to_string(g) + what);
+    plan = names.size();
+    if (analysis.model.dimension == 3)
+      {
+        const FloorResponse y(analysis.model, Component::uy);
+        for (const std::string &n : y.column_names("storey", "peak_drift_ratio_y"))
+          names.push_back(n);
+        for (const std::string &n : y.column_names("floor", "peak_acc_y_m_s2"))
+          names.push_back(n);
+        for (const std::string &n : y.column_names("floor", "peak_rotation_rad"))
+          names.push_back(n);
+      }
+    for (unsigned int r = 0; r < records.records.size(); ++r)
+      peaks_xy.push_back(excitation(r, 1, false).applied_horizontal_peaks());
+  }
+
+  Excitation
+  IdaRunner::excitation(const unsigned int r, const double factor, const bool free_vibration) const
+  {
+    std::vector<GroundMotion> motions;
+    for (const GroundMotion &component : records.records.at(r).components)
+      {
+        std::vector<double> a = component.samples();
+        if (free_vibration)
+          a.resize(a.size() + static_cast<std::size_t>(std::ceil(ida.free_vibration /
+                                                                 component.time_step())), 0.0);
+        motions.emplace_back(component.time_step(), std::move(a), component.description());
+        motions.back().scale(factor);
+      }
+    Excitation result(analysis.system, motions[0], {});
+    if (analysis.model.dimension == 3) // a single record along the angle, a pair turned by it
+      result.set_horizontal_pair(analysis.system, motions.size() == 2 ? motions[1] : GroundMotion(),
+                                 angle);
+    return result;
   }
 
   IdaRunner::~IdaRunner() = default;
@@ -74,23 +106,11 @@ namespace poundfe
   IdaPoint
   IdaRunner::run(const unsigned int r, const double intensity)
   {
-    const SuiteRecord &record = records.records.at(r);
-    IdaPoint           point;
+    IdaPoint point;
     point.intensity    = intensity;
     point.scale_factor = intensity / base[r];
-    std::vector<GroundMotion> motions;
-    for (const GroundMotion &component : record.components)
-      {
-        std::vector<double> a = component.samples();
-        a.resize(a.size() + static_cast<std::size_t>(std::ceil(ida.free_vibration /
-                                                               component.time_step())), 0.0);
-        motions.emplace_back(component.time_step(), std::move(a), component.description());
-        motions.back().scale(point.scale_factor);
-      }
-    Excitation excitation(analysis.system, motions[0], {});
-    if (motions.size() == 2)
-      excitation.set_horizontal_pair(analysis.system, motions[1], 0);
-    const RunStatus      status = history->run(excitation, {peaks.get()});
+    const Excitation     shaking = excitation(r, point.scale_factor, true);
+    const RunStatus      status  = history->run(shaking, {peaks.get()});
     const FloorResponse &floors = peaks->floors();
     point.demands = floors.peak_drift_ratio();
     for (const std::vector<double> *part : {&floors.peak_acceleration(), &floors.drift_ratio()})
@@ -102,6 +122,10 @@ namespace poundfe
                 count, force, velocity);
     for (unsigned int g = 0; g < analysis.model.gaps.size(); ++g)
       point.demands.insert(point.demands.end(), {count[g], force[g], velocity[g]});
+    if (const FloorResponse *y = peaks->floors_y())
+      for (const std::vector<double> *part :
+           {&y->peak_drift_ratio(), &y->peak_acceleration(), &peaks->floors_rz()->peak_displacement()})
+        point.demands.insert(point.demands.end(), part->begin(), part->end());
     return point;
   }
 
@@ -120,32 +144,5 @@ namespace poundfe
     std::vector<double> row{double(task.record), task.intensity, point.collapsed ? 1.0 : 0.0};
     row.insert(row.end(), point.demands.begin(), point.demands.end());
     return row;
-  }
-
-  std::vector<std::vector<double>>
-  run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
-                const MPI_Comm comm, Progress *const progress, const unsigned long offset,
-                IdaResult &result)
-  {
-    RealizationJob job;
-    job.names         = ida_row_names(runner);
-    job.seed          = 0;
-    job.report_lines  = false;
-    job.run           = [&](const std::uint64_t i, std::vector<double> &row) {
-      row = ida_row(runner, tasks[i]);
-      return true;
-    };
-    const MonteCarloTable table =
-      run_realizations(job, tasks.size(), file, comm, "IDA: ", progress, offset);
-    result.n_run_now += table.n_run_now; // summed over the ranks already
-    result.interrupted = result.interrupted || table.interrupted;
-    std::vector<double> flat;
-    for (const std::vector<double> &row : table.responses)
-      flat.insert(flat.end(), row.begin(), row.end());
-    flat = dealii::Utilities::MPI::broadcast(comm, flat, 0);
-    std::vector<std::vector<double>> rows;
-    for (std::size_t i = 0; i < flat.size(); i += job.names.size())
-      rows.emplace_back(flat.begin() + i, flat.begin() + i + job.names.size());
-    return rows;
   }
 } // namespace poundfe

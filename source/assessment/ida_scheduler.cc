@@ -1,9 +1,15 @@
-// Hunt and fill over the ranks, dealt run by run (ida.h, run_ida).
+// Runs dealt one by one to the free rank (ida.h, deal_runs): the hunt and
+// fill of an IDA (run_ida) and a list of runs (run_ida_tasks: msa's stripes
+// and cloud).
 //
 // A record's hunt is a chain: its next intensity needs its last result. The
 // records' chains are independent, so rank 0 keeps every record's search
 // and deals (record, next intensity) of a record with no run under way to
 // whichever rank is free; no rank waits at a collective step between runs.
+// A list of runs (every record at every stripe) is the same with chains of
+// one run each: rank 0 deals them in the list's order. What is dealt is
+// decided by a DealtRuns (HuntFillRuns, ListedRuns); the dealer below
+// knows only tasks and rows.
 // Rank 0 computes too: between its own runs it reads the rows that came
 // back, journals them and deals again. A worker keeps up to `queue_depth`
 // runs dealt (one running, the others waiting), so it goes on while rank 0
@@ -55,60 +61,169 @@ namespace poundfe
       std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
 
-    /// Rank 0: the searches, what is under way where, the journal.
-    class IdaDealer
+    /// The hunt and fill of every record (the searches, a run under way).
+    class HuntFillRuns : public DealtRuns
     {
     public:
-      IdaDealer(IdaRunner &runner, std::map<std::uint64_t, RealizationRow> journaled,
-                const std::string &file, const MPI_Comm comm, Progress *const progress)
-        : runner(runner)
+      HuntFillRuns(const unsigned int n_records, const HuntFill::Settings &settings)
+        : searches(n_records, HuntFill(settings))
+        , busy(n_records, 0)
+      {}
+
+      bool
+      holds(const std::vector<double> &row) const override
+      {
+        return row[0] >= 0 && row[0] < searches.size();
+      }
+
+      /// The free record with the fewest runs (the lowest number among equals).
+      std::optional<IdaTask>
+      next() override
+      {
+        std::optional<IdaTask> task;
+        for (unsigned int r = 0; r < searches.size(); ++r)
+          if (!busy[r] && (!task || searches[r].n_runs() < searches[task->record].n_runs()))
+            if (const std::optional<double> x = searches[r].next())
+              task = IdaTask{r, *x};
+        if (task)
+          busy[task->record] = 1;
+        return task;
+      }
+
+      void
+      take(const std::vector<double> &row) override
+      {
+        const unsigned int r = static_cast<unsigned int>(row[0]);
+        searches.at(r).record(row[1], row[2] != 0);
+        busy[r] = 0;
+      }
+
+      bool
+      finished() const override
+      {
+        for (unsigned int r = 0; r < searches.size(); ++r)
+          if (busy[r] || searches[r].next())
+            return false;
+        return true;
+      }
+
+    private:
+      std::vector<HuntFill> searches;
+      std::vector<char>     busy; // a run of the record is under way
+    };
+
+    /// A list of independent runs, dealt in its order; a row is matched to
+    /// its task by (record, intensity), under way first (a list may hold
+    /// a task twice).
+    class ListedRuns : public DealtRuns
+    {
+    public:
+      explicit ListedRuns(const std::vector<IdaTask> &tasks)
+        : tasks(tasks)
+        , state(tasks.size(), todo)
+      {}
+
+      bool
+      holds(const std::vector<double> &row) const override
+      {
+        return std::any_of(tasks.begin(), tasks.end(), [&](const IdaTask &t) {
+          return row[0] == t.record && row[1] == t.intensity;
+        });
+      }
+
+      std::optional<IdaTask>
+      next() override
+      {
+        while (cursor < tasks.size() && state[cursor] != todo)
+          ++cursor;
+        if (cursor == tasks.size())
+          return {};
+        state[cursor] = under_way;
+        ++n_under_way;
+        return tasks[cursor];
+      }
+
+      void
+      take(const std::vector<double> &row) override
+      {
+        for (const char from : {under_way, todo})
+          for (std::size_t i = 0; i < tasks.size(); ++i)
+            if (state[i] == from && row[0] == tasks[i].record && row[1] == tasks[i].intensity)
+              {
+                n_under_way -= from == under_way ? 1 : 0;
+                state[i] = done;
+                return;
+              }
+        Assert(false, dealii::ExcMessage("a row of no task"));
+      }
+
+      bool
+      finished() const override
+      {
+        return n_under_way == 0 &&
+               std::find(state.begin(), state.end(), todo) == state.end();
+      }
+
+    private:
+      static constexpr char          todo = 0, under_way = 1, done = 2;
+      const std::vector<IdaTask>    &tasks;
+      std::vector<char>              state;
+      std::size_t                    cursor      = 0; // no task before it is to do
+      unsigned int                   n_under_way = 0;
+    };
+
+    /// Rank 0: what is under way where, the journal.
+    class RunDealer
+    {
+    public:
+      RunDealer(const IdaRun &run, DealtRuns &runs, const std::size_t width,
+                std::map<std::uint64_t, RealizationRow> journaled, const std::string &file,
+                const MPI_Comm comm, Progress *const progress, const unsigned long offset)
+        : run_row(run)
+        , runs(runs)
         , comm(comm)
         , n_workers(dealii::Utilities::MPI::n_mpi_processes(comm) - 1)
-        , searches(runner.suite().records.size(), HuntFill(runner.search()))
-        , busy(searches.size(), 0)
         , outstanding(n_workers + 1, 0)
         , done(n_workers + 1, 0)
-        , row(ida_row_names(runner).size())
+        , row(width)
         , progress(progress && progress->active() ? progress : nullptr)
+        , offset(offset)
       {
         resume(std::move(journaled), file);
       }
 
-      /// Deals and runs until every record is done or the run is stopped;
+      /// Deals and runs until every run is done or the run is stopped;
       /// returns every row (journaled ones first) in the order taken.
       std::vector<std::vector<double>> run();
       unsigned long                    n_run_now = 0;
 
     private:
-      IdaRunner                       &runner;
+      const IdaRun                    &run_row;
+      DealtRuns                       &runs;
       const MPI_Comm                   comm;
       const unsigned int               n_workers;
-      std::vector<HuntFill>            searches;
-      std::vector<char>                busy; // a run of the record is under way
       std::vector<unsigned int>        outstanding; // runs dealt to each worker
       std::vector<char>                done;
       std::vector<double>              row; // a receive buffer
       Progress *const                  progress;
+      const unsigned long              offset;
       std::unique_ptr<AppendFile>      journal;
       std::uint64_t                    next_id = 0;
       std::vector<std::vector<double>> rows;
-      std::chrono::steady_clock::time_point synced = std::chrono::steady_clock::now();
       unsigned int                     n_done = 0; // workers done
       bool                             stop   = false;
       std::deque<std::array<double, 2>> sent; // the tasks' buffers until Waitall
       std::vector<MPI_Request>         requests;
 
       void resume(std::map<std::uint64_t, RealizationRow> journaled, const std::string &file);
-      std::optional<IdaTask> pick();
       void take(std::vector<double> row, bool fresh);
       void deal();
       void poll();
       void stop_all();
-      bool finished() const;
     };
 
     void
-    IdaDealer::resume(std::map<std::uint64_t, RealizationRow> journaled, const std::string &file)
+    RunDealer::resume(std::map<std::uint64_t, RealizationRow> journaled, const std::string &file)
     {
       for (auto &[id, earlier] : journaled)
         {
@@ -118,46 +233,28 @@ namespace poundfe
       journal = std::make_unique<AppendFile>(file);
     }
 
-    std::optional<IdaTask>
-    IdaDealer::pick()
-    {
-      std::optional<IdaTask> task;
-      for (unsigned int r = 0; r < searches.size(); ++r)
-        if (!busy[r] && (!task || searches[r].n_runs() < searches[task->record].n_runs()))
-          if (const std::optional<double> x = searches[r].next())
-            task = IdaTask{r, *x};
-      if (task)
-        busy[task->record] = 1;
-      return task;
-    }
-
     void
-    IdaDealer::take(std::vector<double> taken, const bool fresh)
+    RunDealer::take(std::vector<double> taken, const bool fresh)
     {
-      const unsigned int r = static_cast<unsigned int>(taken[0]);
-      searches.at(r).record(taken[1], taken[2] != 0);
-      busy[r] = 0;
+      runs.take(taken);
       if (fresh)
         {
-          journal->append(realization_line({next_id++, true, taken}, 0), false);
           // synced in groups: a sync can outlast the run (append_file.h)
-          const auto now = std::chrono::steady_clock::now();
-          if (now - synced > std::chrono::milliseconds(500))
-            journal->sync(), synced = now;
+          journal->append_grouped(realization_line({next_id++, true, taken}, 0));
           ++n_run_now;
         }
       rows.push_back(std::move(taken));
       if (progress)
-        progress->update(rows.size());
+        progress->update(offset + rows.size());
     }
 
     void
-    IdaDealer::deal()
+    RunDealer::deal()
     {
       for (unsigned int w = 1; w <= n_workers; ++w)
         while (!done[w] && outstanding[w] < queue_depth)
           {
-            const std::optional<IdaTask> task = pick();
+            const std::optional<IdaTask> task = runs.next();
             if (!task)
               return;
             sent.push_back({{double(task->record), task->intensity}});
@@ -168,7 +265,7 @@ namespace poundfe
     }
 
     void
-    IdaDealer::poll()
+    RunDealer::poll()
     {
       int        waiting = 0;
       MPI_Status status;
@@ -192,7 +289,7 @@ namespace poundfe
     }
 
     void
-    IdaDealer::stop_all()
+    RunDealer::stop_all()
     {
       if (stop)
         return;
@@ -204,17 +301,8 @@ namespace poundfe
         }
     }
 
-    bool
-    IdaDealer::finished() const
-    {
-      for (unsigned int r = 0; r < searches.size(); ++r)
-        if (busy[r] || searches[r].next())
-          return false;
-      return true;
-    }
-
     std::vector<std::vector<double>>
-    IdaDealer::run()
+    RunDealer::run()
     {
       while (!stop || n_done < n_workers)
         {
@@ -223,7 +311,7 @@ namespace poundfe
           poll();
           if (!stop)
             deal();
-          if (!stop && finished())
+          if (!stop && runs.finished())
             stop_all();
           if (stop)
             {
@@ -231,8 +319,8 @@ namespace poundfe
                 ida_pause();
               continue;
             }
-          if (const std::optional<IdaTask> task = pick())
-            take(ida_row(runner, *task), true);
+          if (const std::optional<IdaTask> task = runs.next())
+            take(run_row(*task), true);
           else
             ida_pause();
         }
@@ -243,7 +331,7 @@ namespace poundfe
 
     /// A worker: runs what rank 0 deals, in order, until it says stop.
     void
-    run_ida_worker(IdaRunner &runner, const MPI_Comm comm)
+    run_dealt_worker(const IdaRun &run, const MPI_Comm comm)
     {
       std::deque<IdaTask> queue;
       bool                stopped = false;
@@ -269,7 +357,7 @@ namespace poundfe
               ida_pause();
               continue;
             }
-          const std::vector<double> row = ida_row(runner, queue.front());
+          const std::vector<double> row = run(queue.front());
           queue.pop_front();
           MPI_Send(row.data(), row.size(), MPI_DOUBLE, 0, ida_row_tag, comm);
         }
@@ -297,37 +385,65 @@ namespace poundfe
       result.records[r].points.push_back(std::move(point));
       ++result.n_runs;
     }
-
-    /// Every rank: the rows of rank 0, flat, in the order taken.
-    std::vector<double>
-    dealt_rows(IdaRunner &runner, const std::string &file, const MPI_Comm comm,
-               Progress *const progress, unsigned long &n_run_now)
-    {
-      const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-      std::map<std::uint64_t, RealizationRow> journaled =
-        open_realization_table(file, ida_row_names(runner), 0, comm);
-      bool foreign = false; // a record beyond the suite's
-      for (const auto &[id, row] : journaled)
-        foreign = foreign || !(row.responses[0] >= 0 &&
-                               row.responses[0] < runner.suite().records.size());
-      if (dealii::Utilities::MPI::broadcast(comm, foreign, 0))
-        throw InputError(file, 0, "record",
-                         "this journal holds other runs (another suite): remove the output "
-                         "directory's journal/ to start again");
-      std::vector<double> flat;
-      if (rank0)
-        {
-          IdaDealer dealer(runner, std::move(journaled), file, comm, progress);
-          for (const std::vector<double> &row : dealer.run())
-            flat.insert(flat.end(), row.begin(), row.end());
-          n_run_now = dealer.n_run_now;
-        }
-      else
-        run_ida_worker(runner, comm);
-      n_run_now = dealii::Utilities::MPI::broadcast(comm, n_run_now, 0);
-      return dealii::Utilities::MPI::broadcast(comm, flat, 0);
-    }
   } // namespace
+
+  DealtRows
+  deal_runs(const IdaRun &run, DealtRuns *const runs, const std::vector<std::string> &names,
+            const std::string &file, const MPI_Comm comm, Progress *const progress,
+            const unsigned long offset)
+  {
+    const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+    Assert(!rank0 || runs, dealii::ExcMessage("rank 0 deals"));
+    std::map<std::uint64_t, RealizationRow> journaled = open_realization_table(file, names, 0, comm);
+    bool foreign = false; // a row of none of these runs
+    for (const auto &[id, row] : journaled)
+      foreign = foreign || (runs && !runs->holds(row.responses));
+    if (dealii::Utilities::MPI::broadcast(comm, foreign, 0))
+      throw InputError(file, 0, "record",
+                       "this journal holds other runs (another suite, intensity measure or "
+                       "stripes): remove the output directory's journal/ to start again");
+    DealtRows           dealt;
+    std::vector<double> flat;
+    if (rank0)
+      {
+        RunDealer dealer(run, *runs, names.size(), std::move(journaled), file, comm, progress,
+                         offset);
+        for (const std::vector<double> &row : dealer.run())
+          flat.insert(flat.end(), row.begin(), row.end());
+        dealt.n_run_now   = dealer.n_run_now;
+        dealt.interrupted = !runs->finished();
+      }
+    else
+      run_dealt_worker(run, comm);
+    dealt.n_run_now   = dealii::Utilities::MPI::broadcast(comm, dealt.n_run_now, 0);
+    dealt.interrupted = dealii::Utilities::MPI::broadcast(comm, dealt.interrupted, 0);
+    flat              = dealii::Utilities::MPI::broadcast(comm, flat, 0);
+    for (std::size_t i = 0; i < flat.size(); i += names.size())
+      dealt.rows.emplace_back(flat.begin() + i, flat.begin() + i + names.size());
+    return dealt;
+  }
+
+  std::vector<std::vector<double>>
+  run_ida_tasks(const IdaRun &run, const std::vector<std::string> &names,
+                const std::vector<IdaTask> &tasks, const std::string &file, const MPI_Comm comm,
+                Progress *const progress, const unsigned long offset, IdaResult &result)
+  {
+    ListedRuns listed(tasks);
+    const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+    DealtRows  dealt = deal_runs(run, rank0 ? &listed : nullptr, names, file, comm, progress, offset);
+    result.n_run_now += dealt.n_run_now;
+    result.interrupted = result.interrupted || dealt.interrupted;
+    return std::move(dealt.rows);
+  }
+
+  std::vector<std::vector<double>>
+  run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
+                const MPI_Comm comm, Progress *const progress, const unsigned long offset,
+                IdaResult &result)
+  {
+    return run_ida_tasks([&](const IdaTask &task) { return ida_row(runner, task); },
+                         ida_row_names(runner), tasks, file, comm, progress, offset, result);
+  }
 
   IdaResult
   run_ida(IdaRunner &runner, const std::string &journal, const MPI_Comm comm,
@@ -339,13 +455,15 @@ namespace poundfe
       create_directories(journal);
     IdaResult result;
     result.records.resize(n_records);
-    const std::vector<double> flat = dealt_rows(runner, journal + "/realizations.csv", comm,
-                                                progress, result.n_run_now);
+    HuntFillRuns    hunts(n_records, runner.search());
+    const DealtRows dealt =
+      deal_runs([&](const IdaTask &task) { return ida_row(runner, task); },
+                dealii::Utilities::MPI::this_mpi_process(comm) == 0 ? &hunts : nullptr,
+                ida_row_names(runner), journal + "/realizations.csv", comm, progress);
+    result.n_run_now = dealt.n_run_now;
     std::vector<HuntFill> searches(n_records, HuntFill(runner.search()));
-    const std::size_t     width = ida_row_names(runner).size();
-    for (std::size_t i = 0; i < flat.size(); i += width)
-      take_ida_row(std::vector<double>(flat.begin() + i, flat.begin() + i + width), searches,
-                   result);
+    for (const std::vector<double> &row : dealt.rows)
+      take_ida_row(row, searches, result);
     for (unsigned int r = 0; r < n_records; ++r)
       {
         IdaRecordResult &record = result.records[r];

@@ -244,8 +244,8 @@ namespace poundfe
 
   namespace
   {
-    /// The rows of `tasks` (journaled in `folder`/realizations.csv) as points,
-    /// after checking that a journal read back holds these tasks.
+    /// The rows of `tasks` (journaled in `folder`/realizations.csv), dealt
+    /// to the free ranks, as points in the tasks' order.
     std::vector<IdaPoint>
     run_msa_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &folder,
                   const MPI_Comm comm, Progress *const progress, IdaResult &counters)
@@ -255,22 +255,20 @@ namespace poundfe
       const std::string file = folder + "/realizations.csv";
       const std::vector<std::vector<double>> rows =
         run_ida_tasks(runner, tasks, file, comm, progress, counters.n_runs, counters);
-      // a row is the task of its record and intensity (rows of the tasks
-      // done, in order); a point without demands was not run (interrupted)
+      // a row is the first task of its record and intensity without one
+      // (deal_runs refused a journal of other runs); a point without
+      // demands was not run (interrupted)
       std::vector<IdaPoint> points(tasks.size());
       for (const std::vector<double> &row : rows)
         {
-          const auto it = std::find_if(tasks.begin(), tasks.end(), [&](const IdaTask &t) {
-            return row[0] == t.record && row[1] == t.intensity;
-          });
-          if (it == tasks.end())
-            throw InputError(file, 0, "record",
-                             "this journal holds other runs (another suite, intensity "
-                             "measure or stripes): remove the output directory's journal/ "
-                             "to start again");
-          IdaPoint &point    = points[it - tasks.begin()];
+          std::size_t i = 0;
+          while (i < tasks.size() && !(row[0] == tasks[i].record && row[1] == tasks[i].intensity &&
+                                       points[i].demands.empty()))
+            ++i;
+          Assert(i < tasks.size(), dealii::ExcMessage("a row of no task"));
+          IdaPoint &point    = points[i];
           point.intensity    = row[1];
-          point.scale_factor = row[1] / runner.base_intensities()[it->record];
+          point.scale_factor = row[1] / runner.base_intensities()[tasks[i].record];
           point.collapsed    = row[2] != 0;
           point.demands.assign(row.begin() + 3, row.end());
         }

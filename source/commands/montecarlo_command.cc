@@ -1,6 +1,8 @@
 // `poundfe montecarlo`: Monte Carlo over the random loading, on the MPI
 // ranks (reliability/montecarlo.h runs the realizations); rank 0 writes the
-// statistics, the exceedance probabilities and the PDFs and CDFs.
+// statistics, the exceedance probabilities and the PDFs and CDFs, and with
+// Output/Demand tables each building's pelicun demand table over the
+// realizations (output/demand_table.h).
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/numbers.h>
@@ -11,8 +13,10 @@
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
+#include <poundfe/output/demand_table.h>
 #include <poundfe/output/drift_limits.h>
 #include <poundfe/output/finite_output.h>
+#include <poundfe/output/floor_response.h>
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
@@ -238,6 +242,74 @@ namespace poundfe::commands
       return plots;
     }
 
+    /// The demands of a realization's row (its optional responses asked
+    /// for: demand_table_responses).
+    ResponseDemands
+    row_demands(const RealizationRunner &runner, const std::vector<double> &row)
+    {
+      const Model         &model = runner.model();
+      const FloorResponse  floors(model);
+      const auto values = [&](const std::vector<std::string> &names) {
+        std::vector<double> v;
+        for (const std::string &name : names)
+          v.push_back(row.at(runner.column(name)));
+        return v;
+      };
+      ResponseDemands d;
+      d.pga               = row.at(runner.column("peak_ground_acc_m_s2"));
+      d.peak_drift        = values(floors.column_names("storey", "peak_drift_ratio"));
+      d.peak_acceleration = values(floors.column_names("floor", "peak_acc_m_s2"));
+      d.residual_drift    = values(floors.column_names("storey", "residual_drift_ratio"));
+      if (model.dimension == 3)
+        {
+          d.pga_y               = row.at(runner.column("peak_ground_acc_y_m_s2"));
+          d.peak_drift_y        = values(floors.column_names("storey", "peak_drift_ratio_y"));
+          d.peak_acceleration_y = values(floors.column_names("floor", "peak_acc_y_m_s2"));
+          d.peak_rotation       = values(floors.column_names("floor", "peak_rotation_rad"));
+        }
+      for (unsigned int g = 1; g <= model.gaps.size(); ++g)
+        {
+          const std::string gap = "gap" + std::to_string(g);
+          d.impacts.push_back(row.at(runner.column(gap + "_impacts")));
+          d.impact_force.push_back(row.at(runner.column(gap + "_peak_contact_force")));
+          d.impact_velocity.push_back(row.at(runner.column(gap + "_peak_impact_velocity")));
+        }
+      return d;
+    }
+
+    /// demands_<building>.csv: a row per completed realization (a failed
+    /// one, whose integration stopped, has no peaks to give a loss model);
+    /// their entry in summary.json.
+    void
+    write_demand_tables(JsonWriter &json, const CommandRun &run, const RealizationRunner &runner,
+                        const MonteCarloTable &table)
+    {
+      const Model             &model = runner.model();
+      std::vector<DemandTable> tables;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        tables.emplace_back(model, b, false);
+      unsigned long rows = 0;
+      for (std::size_t i = 0; i < table.responses.size(); ++i)
+        if (table.completed[i])
+          {
+            const ResponseDemands d = row_demands(runner, table.responses[i]);
+            for (DemandTable &t : tables)
+              t.add(d);
+            ++rows;
+          }
+      std::vector<std::string> files;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        {
+          files.push_back(demand_table_file(model, b));
+          write_result_text(run.memory, run.directory, files.back(), tables[b].csv());
+        }
+      json.begin_object("demand_tables")
+        .value("files", files)
+        .value("realizations", rows)
+        .value("failed_left_out", static_cast<unsigned long>(table.responses.size() - rows))
+        .end_object();
+    }
+
     /// The console lines of rank 0.
     void
     report(const dealii::ConditionalOStream &out, const InputParameters &input, const RealizationRunner &runner,
@@ -263,6 +335,7 @@ namespace poundfe::commands
         out << "P(max drift ratio > " << limits[i] << ") = " << rounded(e.drift[i].probability)
             << " (CoV " << rounded(e.drift[i].coefficient_of_variation) << ")\n";
       out << "results in " << place << " (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
+          << (input.output.demand_tables ? ", demands_*.csv" : "")
           << (input.output.plots && !table.interrupted ? ", *.png" : "") << ")\n";
     }
   } // namespace
@@ -282,6 +355,8 @@ namespace poundfe::commands
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
     RealizationRunner runner(analysis, time_history_parameters(input));
+    if (input.output.demand_tables) // the columns the tables read
+      runner.add_optional_responses(runner.optional_response_names());
     attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
     const std::unique_ptr<const ResponseLimitStates> limit_states =
       input.random_parameters.has_limit_states() ?
@@ -312,6 +387,8 @@ namespace poundfe::commands
     write_limit_states(json, input.random_parameters, limit_states.get(), table, probabilities);
     const std::vector<Plot> plots =
       write_distributions(json, run, runner, table, input.monte_carlo.histogram_bins);
+    if (input.output.demand_tables)
+      write_demand_tables(json, run, runner, table);
     json.end_object();
     if (input.output.plots && !table.interrupted && !run.memory) // the resumed run draws them
       draw_plots(directory, plots);

@@ -1,6 +1,7 @@
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/excitation/stochastic.h>
+#include <poundfe/output/demand_table.h>
 #include <poundfe/output/floor_response.h>
 
 #include <algorithm>
@@ -49,14 +50,40 @@ namespace poundfe
     first_parameter_column = first_residual_column = names.size();
   }
 
+  std::vector<RealizationRunner::OptionalResponse>
+  RealizationRunner::optional_responses() const
+  {
+    std::vector<OptionalResponse> result;
+    const std::vector<std::string> residual =
+      FloorResponse(analysis.model).column_names("storey", "residual_drift_ratio");
+    for (unsigned int i = 0; i < residual.size(); ++i)
+      result.push_back({OptionalResponse::residual_drift, i, residual[i]});
+    const std::pair<OptionalResponse::Kind, const char *> per_gap[] = {
+      {OptionalResponse::peak_force, "_peak_contact_force"},
+      {OptionalResponse::impacts, "_impacts"},
+      {OptionalResponse::impact_velocity, "_peak_impact_velocity"}};
+    for (const auto &[kind, suffix] : per_gap)
+      for (unsigned int g = 0; g < analysis.model.gaps.size(); ++g)
+        result.push_back({kind, g, "gap" + std::to_string(g + 1) + suffix});
+    result.push_back({OptionalResponse::ground_acceleration, 0, "peak_ground_acc_m_s2"});
+    if (analysis.model.dimension == 3)
+      {
+        const std::vector<std::string> rotation =
+          FloorResponse(analysis.model).column_names("floor", "peak_rotation_rad");
+        for (unsigned int i = 0; i < rotation.size(); ++i)
+          result.push_back({OptionalResponse::rotation, i, rotation[i]});
+        result.push_back({OptionalResponse::ground_acceleration_y, 1, "peak_ground_acc_y_m_s2"});
+      }
+    return result;
+  }
+
   std::vector<std::string>
   RealizationRunner::optional_response_names() const
   {
-    std::vector<std::string> result =
-      FloorResponse(analysis.model).column_names("storey", "residual_drift_ratio");
-    for (unsigned int g = 0; g < analysis.model.gaps.size(); ++g)
-      result.push_back("gap" + std::to_string(g + 1) + "_peak_contact_force");
-    return result;
+    std::vector<std::string> names;
+    for (const OptionalResponse &o : optional_responses())
+      names.push_back(o.name);
+    return names;
   }
 
   void
@@ -64,20 +91,22 @@ namespace poundfe
   {
     Assert(!structure && first_parameter_column == names.size(),
            dealii::ExcMessage("optional responses come before the random parameters"));
-    const std::vector<std::string> optional = optional_response_names();
-    const unsigned int             n_storeys = optional.size() - analysis.model.gaps.size();
-    for (unsigned int i = 0; i < optional.size(); ++i)
-      if (std::find(wanted.begin(), wanted.end(), optional[i]) != wanted.end() &&
-          std::find(names.begin(), names.end(), optional[i]) == names.end())
-        (i < n_storeys ? residual_storeys : peak_force_gaps).push_back(i < n_storeys ? i : i - n_storeys);
-    // the columns: residual drifts, then peak forces, each in the model's order
-    std::sort(residual_storeys.begin(), residual_storeys.end());
-    std::sort(peak_force_gaps.begin(), peak_force_gaps.end());
+    const auto asked = [&](const std::string &name) {
+      return std::find(wanted.begin(), wanted.end(), name) != wanted.end() ||
+             std::any_of(chosen.begin(), chosen.end(),
+                         [&](const OptionalResponse &o) { return o.name == name; });
+    };
+    // the columns in the order of the list, whatever the order asked in
+    std::vector<OptionalResponse> now;
+    for (const OptionalResponse &o : optional_responses())
+      if (asked(o.name) &&
+          std::find(names.begin(), names.begin() + first_residual_column, o.name) ==
+            names.begin() + first_residual_column)
+        now.push_back(o);
+    chosen = std::move(now);
     names.resize(first_residual_column);
-    for (const unsigned int i : residual_storeys)
-      names.push_back(optional[i]);
-    for (const unsigned int g : peak_force_gaps)
-      names.push_back(optional[n_storeys + g]);
+    for (const OptionalResponse &o : chosen)
+      names.push_back(o.name);
     first_parameter_column = names.size();
   }
 
@@ -232,17 +261,39 @@ namespace poundfe
   void
   RealizationRunner::fill_optional_responses(std::vector<double> &responses) const
   {
+    if (chosen.empty())
+      return;
+    std::vector<double> count, force, velocity;
+    gap_demands(model(), history->state().impact_log().impacts(), peaks->n_hysteretic(), count,
+                force, velocity);
+    ResponseDemands plan; // the PGA as applied, a 3D model's rotations
+    add_plan_demands(*peaks, excitation, plan);
     unsigned int c = first_residual_column;
-    for (const unsigned int i : residual_storeys) // the last observed step: the end
-      responses[c++] = peaks->floors().drift_ratio()[i];
-    for (const unsigned int g : peak_force_gaps)
-      {
-        double peak = 0;
-        for (const Impact &impact : history->state().impact_log().impacts())
-          if (impact.element == peaks->n_hysteretic() + g)
-            peak = std::max(peak, impact.peak_force);
-        responses[c++] = peak;
-      }
+    for (const OptionalResponse &o : chosen)
+      switch (o.kind)
+        {
+          case OptionalResponse::residual_drift: // the last observed step: the end
+            responses[c++] = peaks->floors().drift_ratio()[o.index];
+            break;
+          case OptionalResponse::peak_force:
+            responses[c++] = force[o.index];
+            break;
+          case OptionalResponse::impacts:
+            responses[c++] = count[o.index];
+            break;
+          case OptionalResponse::impact_velocity:
+            responses[c++] = velocity[o.index];
+            break;
+          case OptionalResponse::ground_acceleration:
+            responses[c++] = plan.pga;
+            break;
+          case OptionalResponse::rotation:
+            responses[c++] = plan.peak_rotation[o.index];
+            break;
+          case OptionalResponse::ground_acceleration_y:
+            responses[c++] = plan.pga_y;
+            break;
+        }
   }
 
   RunStatus

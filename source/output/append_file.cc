@@ -33,6 +33,15 @@ namespace poundfe
   AppendFile::sync()
   {
     ::fdatasync(descriptor);
+    synced = std::chrono::steady_clock::now();
+  }
+
+  void
+  AppendFile::append_grouped(const std::string &line)
+  {
+    append(line, false);
+    if (std::chrono::steady_clock::now() - synced > std::chrono::milliseconds(500))
+      sync();
   }
 
   void

@@ -1,11 +1,14 @@
 // pelicun demand tables of a building (output/demand_table.h).
+#include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/ground_motion.h>
+#include <poundfe/output/peak_response.h>
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/demand_table.h>
 
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace poundfe
@@ -26,6 +29,22 @@ namespace poundfe
           force[g]    = std::max(force[g], impact.peak_force);
           velocity[g] = std::max(velocity[g], std::abs(impact.approach_velocity));
         }
+  }
+
+  void
+  add_plan_demands(const PeakResponse &peaks, const Excitation &excitation, ResponseDemands &d)
+  {
+    if (!peaks.floors_y())
+      {
+        d.pga = excitation.ground_motion().peak();
+        return;
+      }
+    const std::array<double, 2> pga = excitation.applied_horizontal_peaks();
+    d.pga                 = pga[0];
+    d.pga_y               = pga[1];
+    d.peak_drift_y        = peaks.floors_y()->peak_drift_ratio();
+    d.peak_acceleration_y = peaks.floors_y()->peak_acceleration();
+    d.peak_rotation       = peaks.floors_rz()->peak_displacement(); // |theta_z|, rad
   }
 
   unsigned int
@@ -64,6 +83,7 @@ namespace poundfe
     , building(building_)
     , displacements(displacements_)
     , spectral(!spectral_type.empty())
+    , plan(model_.dimension == 3)
   {
     const unsigned int n = model.buildings.at(building).floors.size();
     header.push_back({"PFA", "0", "1", "g"});
@@ -71,15 +91,27 @@ namespace poundfe
       header.push_back({spectral_type, "0", "1", "g"});
     for (unsigned int f = 1; f <= n; ++f)
       header.push_back({"PFA", std::to_string(f), "1", "g"});
-    std::vector<std::pair<const char *, const char *>> storey_types = {{"PID", "rad"},
-                                                                        {"RID", "rad"}};
+    if (plan)
+      for (unsigned int f = 0; f <= n; ++f)
+        header.push_back({"PFA", std::to_string(f), "2", "g"});
+    struct StoreyType
+    {
+      const char *type, *direction, *unit;
+    };
+    std::vector<StoreyType> storey_types = {{"PID", "1", "rad"}};
+    if (plan)
+      storey_types.push_back({"PID", "2", "rad"});
+    storey_types.push_back({"RID", "1", "rad"});
     if (displacements)
-      storey_types.insert(storey_types.end(), {{"PFD", "m"}, {"RFD", "m"}});
-    for (const auto &[type, unit] : storey_types)
+      storey_types.insert(storey_types.end(), {{"PFD", "1", "m"}, {"RFD", "1", "m"}});
+    for (const auto &[type, direction, unit] : storey_types)
       for (unsigned int s = 1; s <= n; ++s)
-        header.push_back({type, std::to_string(s), "1", unit});
+        header.push_back({type, std::to_string(s), direction, unit});
     if (displacements)
       header.push_back({"PRD", std::to_string(n), "1", "rad"});
+    if (plan)
+      for (unsigned int f = 1; f <= n; ++f)
+        header.push_back({"PFR", std::to_string(f), "0", "rad"});
     for (unsigned int g = 0; g < model.gaps.size(); ++g)
       if (const unsigned int f = gap_floor(model, building, g); f > 0)
         for (const auto &[type, unit] :
@@ -101,12 +133,24 @@ namespace poundfe
     Assert(!displacements || (d.peak_displacement.size() >= first + n &&
                               d.residual_displacement.size() >= first + n),
            dealii::ExcInternalError());
+    Assert(!plan || (d.peak_drift_y.size() >= first + n && d.peak_acceleration_y.size() >= first + n &&
+                     d.peak_rotation.size() >= first + n),
+           dealii::ExcInternalError());
     std::vector<double> row = {d.pga / standard_gravity};
     if (spectral)
       row.push_back(d.sa);
     for (unsigned int f = 0; f < n; ++f)
       row.push_back(d.peak_acceleration[first + f] / standard_gravity);
-    std::vector<const std::vector<double> *> storey = {&d.peak_drift, &d.residual_drift};
+    if (plan)
+      {
+        row.push_back(d.pga_y / standard_gravity);
+        for (unsigned int f = 0; f < n; ++f)
+          row.push_back(d.peak_acceleration_y[first + f] / standard_gravity);
+      }
+    std::vector<const std::vector<double> *> storey = {&d.peak_drift};
+    if (plan)
+      storey.push_back(&d.peak_drift_y);
+    storey.push_back(&d.residual_drift);
     if (displacements)
       storey.insert(storey.end(), {&d.peak_displacement, &d.residual_displacement});
     for (const std::vector<double> *values : storey)
@@ -119,6 +163,9 @@ namespace poundfe
         row.push_back(d.peak_displacement[first + n - 1] /
                       (b.floors.back().level - b.base_level));
       }
+    if (plan)
+      for (unsigned int f = 0; f < n; ++f)
+        row.push_back(d.peak_rotation[first + f]);
     for (unsigned int g = 0; g < model.gaps.size(); ++g)
       if (gap_floor(model, building, g) > 0)
         row.insert(row.end(), {d.impacts.at(g), d.impact_force.at(g), d.impact_velocity.at(g)});

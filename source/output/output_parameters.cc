@@ -52,7 +52,8 @@ namespace poundfe
                       "drifts, floor accelerations and displacements, roof drift, residual "
                       "drifts and displacements and its gaps' impacts in pelicun's demand-sample "
                       "convention (output/demand_table.h; user guide, \"Demands for a loss "
-                      "model\"). Unit: -.");
+                      "model\"); montecarlo writes the same tables, without displacements, a "
+                      "row per completed realization. Unit: -.");
     prm.add_parameter("Number of modes", n_modes,
                       "Modes reported (0: no modal analysis, for a large model whose "
                       "damping needs no modes). Unit: count.",

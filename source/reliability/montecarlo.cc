@@ -296,8 +296,8 @@ namespace poundfe
     void
     RealizationScheduler::store(RealizationRow row)
     {
-      if (out)
-        out->append(realization_line(row, job.seed));
+      if (out) // synced in groups, and at the end (finish)
+        out->append_grouped(realization_line(row, job.seed));
       rows.emplace(row.realization, std::move(row));
       ++n_done;
       const unsigned long step = std::max(1UL, n / 10);
@@ -419,6 +419,8 @@ namespace poundfe
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
       MPI_Waitall(stop_requests.size(), stop_requests.data(), MPI_STATUSES_IGNORE);
+      if (out) // the rows since the last grouped sync
+        out->sync();
     }
 
     MonteCarloTable

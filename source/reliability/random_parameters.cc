@@ -187,8 +187,10 @@ namespace poundfe
                       "expressions over the response columns of realizations.csv (e.g. "
                       "max_drift_ratio, A_storey2_peak_drift_ratio, peak_contact_force, "
                       "n_impacts; also, computed when named, A_storey2_residual_drift_ratio, the "
-                      "signed drift ratio at the end of the record, and gap1_peak_contact_force, "
-                      "of gap 1 alone) and the Variables' names. Unit: that of the expression.");
+                      "signed drift ratio at the end of the record, gap1_peak_contact_force, "
+                      "gap1_impacts and gap1_peak_impact_velocity, of gap 1 alone, and "
+                      "peak_ground_acc_m_s2) and the Variables' names. Unit: that of the "
+                      "expression.");
     add_choice(prm, "System", system,
                "How the Limit states combine: series (failure when any fails) or parallel "
                "(when all fail). Unit: -.",

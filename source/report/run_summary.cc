@@ -281,7 +281,7 @@ namespace poundfe
     const Model         &model  = analysis.model;
     const FloorResponse &floors = peaks.floors();
     ResponseDemands      demands;
-    demands.pga                   = excitation.ground_motion().peak();
+    add_plan_demands(peaks, excitation, demands); // the PGA, and a 3D model's y and twist
     demands.peak_drift            = floors.peak_drift_ratio();
     demands.peak_acceleration     = floors.peak_acceleration();
     demands.residual_drift        = floors.drift_ratio(); // at the end of the run

@@ -15,6 +15,11 @@
 #  - run with Output/Demand tables = true: demands_<building>.csv with PID,
 #    PFA, PFD equal to drift_profile.csv and acceleration_profile.csv (PFA
 #    in g: 1e-15 relative); no table without it;
+#  - montecarlo with Output/Demand tables = true: demands_<building>.csv
+#    with a row per completed realization, its values those of
+#    realizations.csv (PFA in g: 1e-15 relative), the per-gap impacts and
+#    peak forces consistent with the totals (n_impacts, peak_contact_force);
+#    no table and no extra column without it;
 #  - bad input: demand intensities above the upper one, a margin on PGA:
 #    exit 1, one line naming the entry, nothing written.
 poundfe=$(realpath "$1") example=$(realpath "$2")
@@ -36,28 +41,13 @@ loss=(--set "IDA/Suite=$work/gen/records/suite.csv" --set "IDA/Demand intensitie
       --set "IDA/Collapse margin/Period-based ductility=4")
 "$poundfe" ida ida.prm --output ida "${short[@]}" "${loss[@]}" > ida.log || die "ida: $(cat ida.log)"
 grep -q "FEMA P-695: S_CT" ida.log || die "no collapse margin in the report: $(cat ida.log)"
-python3 - ida <<'PY' || die "ida's demand tables or collapse margin"
+HERE=$here python3 - ida <<'PY' || die "ida's demand tables or collapse margin"
 import csv, json, math, os, re, sys
 d = sys.argv[1]
 summary = json.load(open(os.path.join(d, "summary.json")))
 
-# pelicun 3's DEMAND sample (pelicun/file_io.py load_data, model/demand_model.py
-# load_sample): an index column with an empty header; column names
-# "<event>-<type>-<location>-<direction>" (split at '-', 4 parts); a second row
-# whose index is "Units" with a unit of pelicun's settings/default_units.json;
-# then one row per realization, numbers only.
-UNITS = {"rad", "unitless", "g", "mps2", "inps2", "m", "in", "mps", "inps", "N", "kN", "ea"}
-def check_schema(path):
-    rows = list(csv.reader(open(path)))
-    head, units, data = rows[0], rows[1], rows[2:]
-    assert head[0] == "" and units[0] == "Units", path
-    for h, u in zip(head[1:], units[1:]):
-        assert re.fullmatch(r"1-[A-Z][A-Z0-9_.]*-[0-9]+-[0-9]+", h), h
-        assert u in UNITS, u
-    for i, row in enumerate(data):
-        assert row[0] == str(i) and len(row) == len(head)
-        assert all(math.isfinite(float(x)) for x in row[1:])
-    return head[1:], data
+sys.path.insert(0, os.environ["HERE"])
+from pelicun_schema import check_schema  # pelicun 3's DEMAND sample
 
 runs = list(csv.DictReader(open(os.path.join(d, "ida.csv"))))
 for k, table in enumerate(summary["demand_tables"], 1):
@@ -124,6 +114,55 @@ PY
 "$poundfe" run ida.prm --output plain --set "Output/Plots=false" --set "Output/VTU interval=0" \
   --set "Ground motion/Stochastic/Duration=2" > /dev/null || die "run without tables"
 [ ! -e plain/demands_shear3.csv ] || die "a run wrote demand tables unasked"
+
+# montecarlo: a table per building, a row per completed realization, each
+# value the realization's own (realizations.csv); the new per-gap columns
+# against the totals montecarlo always wrote (impacts summed over the gaps =
+# n_impacts, the largest gap force = peak_contact_force)
+"$poundfe" montecarlo ida.prm --output mc --set "Output/Plots=false" --set "Monte Carlo/Realizations=4" \
+  --set "Ground motion/Stochastic/Duration=4" --set "Output/Demand tables=true" > mc.log ||
+  die "montecarlo: $(cat mc.log)"
+HERE=$here python3 - mc <<'PY' || die "montecarlo's demand tables"
+import csv, json, os, sys
+sys.path.insert(0, os.environ["HERE"])
+from pelicun_schema import check_schema
+d = sys.argv[1]
+tables = json.load(open(os.path.join(d, "summary.json")))["demand_tables"]
+assert tables["files"] == ["demands_shear3.csv", "demands_shear2.csv"], tables
+runs = [r for r in csv.DictReader(open(os.path.join(d, "realizations.csv"))) if r["completed"] == "1"]
+assert tables["realizations"] == len(runs) == 4, (tables, len(runs))
+g = 9.80665
+impacts = 0
+for b, n in (("shear3", 3), ("shear2", 2)):
+    head, data = check_schema(os.path.join(d, f"demands_{b}.csv"))
+    assert len(data) == len(runs)
+    for row, run in zip(data, runs):
+        v = dict(zip(head, map(float, row[1:])))
+        assert abs(v["1-PFA-0-1"] - float(run["peak_ground_acc_m_s2"]) / g) <= 1e-15 * v["1-PFA-0-1"]
+        for f in range(1, n + 1):
+            assert v[f"1-PID-{f}-1"] == float(run[f"{b}_storey{f}_peak_drift_ratio"])
+            assert v[f"1-RID-{f}-1"] == abs(float(run[f"{b}_storey{f}_residual_drift_ratio"]))
+            a = float(run[f"{b}_floor{f}_peak_acc_m_s2"])
+            assert abs(v[f"1-PFA-{f}-1"] - a / g) <= 1e-15 * a
+        gaps = [k for k in head if k.startswith("1-NIMP-")]
+        assert gaps, head
+        for k in gaps:
+            _, _, floor, gap = k.split("-")
+            assert v[k] == float(run[f"gap{gap}_impacts"])
+            assert v[f"1-PIMF-{floor}-{gap}"] == float(run[f"gap{gap}_peak_contact_force"])
+            assert v[f"1-PIMV-{floor}-{gap}"] == float(run[f"gap{gap}_peak_impact_velocity"])
+for run in runs:
+    gaps = [k[:-len("_impacts")] for k in run if k.startswith("gap") and k.endswith("_impacts")]
+    assert sum(float(run[k + "_impacts"]) for k in gaps) == float(run["n_impacts"]), run
+    assert max(float(run[k + "_peak_contact_force"]) for k in gaps) == float(run["peak_contact_force"])
+    impacts += float(run["n_impacts"])
+assert impacts > 0, "no realization pounded: the test checks nothing of the gaps"
+print(f"montecarlo's demand tables: {len(runs)} realizations, {impacts:.0f} impacts, realizations.csv's values")
+PY
+"$poundfe" montecarlo ida.prm --output mc-plain --set "Output/Plots=false" --set "Monte Carlo/Realizations=2" \
+  --set "Ground motion/Stochastic/Duration=2" > /dev/null || die "montecarlo without tables"
+[ ! -e mc-plain/demands_shear3.csv ] || die "montecarlo wrote demand tables unasked"
+! grep -q "peak_ground_acc" mc-plain/realizations.csv || die "montecarlo's journal has the tables' columns unasked"
 
 # bad input
 suite=(--set "IDA/Suite=$work/gen/records/suite.csv")

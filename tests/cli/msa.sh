@@ -8,8 +8,11 @@
 #    integrator's period error against the exact oscillator of the
 #    spectrum, (dt/T)^2 ~ 1e-4, and the peaks' sampling) and a dispersion
 #    below 0.01;
-#  - one rank and two give the same msa.csv; a second run resumes from the
-#    journal and runs nothing;
+#  - one rank and two give the same msa.csv (the runs dealt one by one to
+#    the free rank); a second run resumes from the journal and runs
+#    nothing; a journal cut to half its runs and a partial line (a killed
+#    run) is resumed on two ranks: only the missing runs run, the same
+#    msa.csv;
 #  - the example input (shortened) at the return periods of a hazard curve,
 #    with limit states on pounding: every file, an annual rate per state;
 #  - select-records writes a suite that msa reads; its mean spectrum is
@@ -66,6 +69,20 @@ cmp linear/msa.csv two/msa.csv || die "one rank and two give different msa.csv"
 "$poundfe" msa "$here/msa/linear.prm" --output linear "${suite[@]}" > again.log || die "resumed msa"
 grep -q '"runs_now": 0' linear/summary.json || die "a finished msa ran again"
 cmp linear/msa.csv two/msa.csv || die "the resumed run changed msa.csv"
+
+# a killed run's journal (two ranks): a prefix of its stripes' runs and a
+# partial line; the same command on two ranks runs only the missing runs
+journal=two/journal/stripes/realizations.csv
+total=$(($(wc -l < "$journal") - 1))
+keep=$((total / 2))
+head -n $((keep + 1)) "$journal" > cut.csv
+printf '%s' "$(sed -n "$((keep + 2))p" "$journal" | cut -c1-12)" >> cut.csv
+mv cut.csv "$journal"
+"$mpirun" -np 2 "$poundfe" msa "$here/msa/linear.prm" --output two "${suite[@]}" > /dev/null ||
+  die "msa resumed on two ranks"
+grep -Eq "\"runs_now\": $((total - keep))([^0-9]|\$)" two/summary.json ||
+  die "resumed from $keep of $total runs: $(grep runs_now two/summary.json), expected $((total - keep))"
+cmp linear/msa.csv two/msa.csv || die "the run resumed on two ranks changed msa.csv"
 
 # the example, short, on a hazard curve of PGA
 printf 'intensity,pga_g,annual_rate_per_year\n' > hazard.csv

@@ -47,10 +47,13 @@
 
 #include <poundfe/assessment/ida_parameters.h>
 #include <poundfe/dynamics/time_history.h>
+#include <poundfe/excitation/excitation.h>
 #include <poundfe/excitation/record_suite.h>
 
 #include <mpi.h>
 
+#include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -129,10 +132,19 @@ namespace poundfe
     /// Every demand traced: per storey the peak drift ratio, per floor the
     /// peak absolute acceleration (m/s^2), per storey the residual drift
     /// ratio (at the end), the largest peak drift ratio, and per gap the
-    /// impacts, the largest peak force (N) and approach velocity (m/s).
+    /// impacts, the largest peak force (N) and approach velocity (m/s);
+    /// then, for a 3D model, per storey the peak drift ratio along y, per
+    /// floor the peak absolute acceleration along y (m/s^2) and the peak
+    /// rotation |theta_z| (rad). A 3D model is shaken by a single record
+    /// along Ground motion/Incidence angle, by a pair turned by it.
     const std::vector<std::string> &demand_names() const { return names; }
     /// Column of the largest peak drift ratio in the demands.
     unsigned int max_drift_column() const { return max_drift; }
+    /// Column of a 3D model's first y drift (the number of columns in 2D).
+    unsigned int plan_column() const { return plan; }
+    /// The PGA along x and y of each record as applied, at its intensity
+    /// in the suite (m/s^2).
+    const std::vector<std::array<double, 2>> &ground_peaks() const { return peaks_xy; }
     const RecordSuite &suite() const { return records; }
     /// The measure of each record as scaled in the suite (IM unit).
     const std::vector<double> &base_intensities() const { return base; }
@@ -150,7 +162,12 @@ namespace poundfe
     std::unique_ptr<TimeHistory>   history;
     std::unique_ptr<PeakResponse>  peaks;
     std::vector<std::string>       names;
-    unsigned int                   max_drift = 0;
+    unsigned int                   max_drift = 0, plan = 0;
+    double                         angle = 0; // rad, Ground motion/Incidence angle
+    std::vector<std::array<double, 2>> peaks_xy;
+
+    /// The excitation of record r scaled by `factor` (with `free_vibration` s of rest).
+    Excitation excitation(unsigned int r, double factor, bool free_vibration) const;
   };
 
   /// What an IDA found for one record: its points in ascending intensity.
@@ -177,12 +194,56 @@ namespace poundfe
     double       intensity = 0;
   };
 
-  /// Runs `tasks` over the ranks of `comm` (each must call it), spread by
-  /// the Monte Carlo scheduler and journaled in `file` (a realizations.csv:
-  /// a call with the same file resumes); `offset` runs are counted done for
-  /// the progress line. Returns each task's row (record, intensity,
-  /// collapsed, the demands) on every rank; adds the runs of this call to
-  /// result.n_run_now and an interruption to result.interrupted.
+  /// What a run computes: the journal row of a task (ida_row below).
+  using IdaRun = std::function<std::vector<double>(const IdaTask &)>;
+
+  /// The runs a dealer deals (ida_scheduler.cc), held on rank 0: which run
+  /// to deal next and what came back.
+  class DealtRuns
+  {
+  public:
+    virtual ~DealtRuns() = default;
+    /// Whether a journaled row (record, intensity, ...) is one of these runs.
+    virtual bool holds(const std::vector<double> &row) const = 0;
+    /// The next run to deal, then under way; nothing: none until a run
+    /// under way comes back (or none is left).
+    virtual std::optional<IdaTask> next() = 0;
+    /// The row of a run, journaled or fresh: no longer under way.
+    virtual void take(const std::vector<double> &row) = 0;
+    /// Nothing left to deal and nothing under way.
+    virtual bool finished() const = 0;
+  };
+
+  /// Rows of `runs` dealt over the ranks of `comm` (ida_scheduler.cc).
+  struct DealtRows
+  {
+    std::vector<std::vector<double>> rows; // journaled ones first, then in the order taken
+    unsigned long                    n_run_now = 0; // by this call, over every rank
+    bool                             interrupted = false; // runs are left
+  };
+
+  /// Deals `runs` (rank 0's; nullptr on the others) run by run to whichever
+  /// rank is free, every rank computing rows with `run` (each must call
+  /// it); journaled by rank 0 in `file` (a realizations.csv with the
+  /// columns `names`: a call with the same file resumes: the journaled
+  /// rows are read back, not run; InputError when one is not of `runs`);
+  /// `offset` runs are counted done for the progress line. The rows are on
+  /// every rank.
+  DealtRows deal_runs(const IdaRun &run, DealtRuns *runs, const std::vector<std::string> &names,
+                      const std::string &file, MPI_Comm comm, Progress *progress,
+                      unsigned long offset = 0);
+
+  /// Runs `tasks` (each independent of the others) over the ranks of
+  /// `comm` (each must call it) by deal_runs, journaled in `file`; `offset`
+  /// runs are counted done for the progress line. Returns each task's row
+  /// (record, intensity, collapsed, the demands) done, on every rank; adds
+  /// the runs of this call to result.n_run_now and an interruption to
+  /// result.interrupted.
+  std::vector<std::vector<double>>
+  run_ida_tasks(const IdaRun &run, const std::vector<std::string> &names,
+                const std::vector<IdaTask> &tasks, const std::string &file, MPI_Comm comm,
+                Progress *progress, unsigned long offset, IdaResult &result);
+  /// The same with the runner's rows (ida_row).
   std::vector<std::vector<double>>
   run_ida_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &file,
                 MPI_Comm comm, Progress *progress, unsigned long offset, IdaResult &result);

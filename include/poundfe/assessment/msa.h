@@ -145,7 +145,9 @@ namespace poundfe
 
   /// Runs every record at every stripe (and, with `cloud`, at its own
   /// intensity, unscaled) over the ranks of `comm` (each calls it), through
-  /// run_ida_tasks, journaled in journal/stripes and journal/cloud: a run
+  /// run_ida_tasks: each run dealt to whichever rank is free, as ida's, so
+  /// that ranks with longer runs (collapses, pounding) do not hold back the
+  /// others; journaled in journal/stripes and journal/cloud: a run
   /// started again resumes. InputError if a journal holds other runs than
   /// these (another suite or other stripes). The result is on every rank.
   MsaResult run_msa(IdaRunner &runner, const std::vector<double> &stripes, bool cloud,

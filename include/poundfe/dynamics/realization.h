@@ -49,10 +49,17 @@ namespace poundfe
                                const std::vector<std::string> &names,
                                ParameterTransform to_physical, Eigensolver eigensolver);
     /// Responses a realization computes only when asked (a limit state
-    /// names them): per storey the residual drift ratio IDR(t_end) at the
-    /// end of the record, signed (abs() for its size) ("<building>_storey<i>_residual_drift_ratio"), per
-    /// gap j (1-based, Model's order) the largest peak force of its impacts
-    /// ("gap<j>_peak_contact_force", N).
+    /// names them, or the demand tables need them): per storey the residual
+    /// drift ratio IDR(t_end) at the end of the record, signed (abs() for
+    /// its size) ("<building>_storey<i>_residual_drift_ratio"), per gap j
+    /// (1-based, Model's order) the largest peak force of its impacts
+    /// ("gap<j>_peak_contact_force", N), per gap its impacts
+    /// ("gap<j>_impacts") and their largest approach speed
+    /// ("gap<j>_peak_impact_velocity", m/s), the peak ground acceleration
+    /// of the realization as applied ("peak_ground_acc_m_s2", along x), and
+    /// of a 3D model per floor the peak rotation |theta_z|
+    /// ("<building>_floor<i>_peak_rotation_rad") and the peak ground
+    /// acceleration along y ("peak_ground_acc_y_m_s2").
     std::vector<std::string> optional_response_names() const;
     /// Adds the columns of those of `wanted` that are optional responses
     /// (others are ignored), after the standard ones. Call before
@@ -122,10 +129,29 @@ namespace poundfe
     std::vector<unsigned int> roof_floor; // FloorResponse index of each building's roof
     unsigned int first_floor_column = 0, first_roof_column = 0, max_drift_column = 0;
     unsigned int first_plan_column = 0, first_parameter_column = 0;
-    /// optional responses: FloorResponse storey indices, then gap indices,
-    /// of the columns from first_residual_column on
-    std::vector<unsigned int> residual_storeys, peak_force_gaps;
-    unsigned int              first_residual_column = 0;
+    /// An optional response: what it is, of which storey (FloorResponse
+    /// index) or gap.
+    struct OptionalResponse
+    {
+      enum Kind : unsigned char
+      {
+        residual_drift,
+        peak_force,
+        impacts,
+        impact_velocity,
+        ground_acceleration,
+        rotation,
+        ground_acceleration_y
+      } kind;
+      unsigned int index;
+      std::string  name;
+    };
+    /// Every optional response, in the order of optional_response_names().
+    std::vector<OptionalResponse> optional_responses() const;
+    /// the optional responses asked for, in that order: the columns from
+    /// first_residual_column on
+    std::vector<OptionalResponse> chosen;
+    unsigned int                  first_residual_column = 0;
   };
 } // namespace poundfe
 

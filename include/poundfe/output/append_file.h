@@ -9,6 +9,7 @@
 #ifndef poundfe_output_append_file_h
 #define poundfe_output_append_file_h
 
+#include <chrono>
 #include <string>
 
 namespace poundfe
@@ -26,10 +27,15 @@ namespace poundfe
     void append(const std::string &line, bool sync = true);
     /// Syncs what was appended to disk.
     void sync();
+    /// Appends `line` and syncs when the last sync is over half a second
+    /// old: a journal of many short rows (a few ms each, where a sync can
+    /// outlast the row) synced in groups; its writer syncs at its end.
+    void append_grouped(const std::string &line);
 
   private:
     std::string path;
     int         descriptor = -1;
+    std::chrono::steady_clock::time_point synced = std::chrono::steady_clock::now();
   };
 
   /// Appends x in the shortest form that reads back to the same double;

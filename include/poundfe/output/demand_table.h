@@ -17,6 +17,12 @@
 //   PRD-n-1              peak roof drift ratio: the roof's peak displacement
 //                        over the building's height (rad) (PFD, RFD and PRD
 //                        when the analysis traces them: run, not ida);
+// and of a 3D model (Model/Dimension = 3) along y (direction 2) and in plan:
+//   PFA-0-2 ... PFA-n-2  peak absolute floor acceleration along y (g; floor
+//                        0: the PGA along y as applied);
+//   PID-1-2 ... PID-n-2  peak inter-storey drift ratio along y (rad);
+//   PFR-1-0 ... PFR-n-0  peak floor rotation |theta_z| about the vertical
+//                        axis (rad; direction 0: pelicun's non-directional);
 // and, per gap g touching the building at its floor f, poundfe's own types
 // (no pelicun fragility group reads them; PIF is pelicun's wind "Peak
 // Internal Force", hence the longer names):
@@ -34,13 +40,18 @@
 
 namespace poundfe
 {
+  class Excitation;
+  class PeakResponse;
+
   /// One realization's demands over the whole model: floor arrays indexed as
   /// FloorResponse (building by building, bottom up), gap arrays by gap.
   struct ResponseDemands
   {
-    double              pga = 0; // m/s^2
+    double              pga = 0; // m/s^2 (along x)
+    double              pga_y = 0; // m/s^2, along y (3D)
     double              sa  = 0; // g, of the SA_<T> column (when there is one)
     std::vector<double> peak_drift, peak_acceleration, residual_drift; // -, m/s^2, -
+    std::vector<double> peak_drift_y, peak_acceleration_y, peak_rotation; // 3D: -, m/s^2, rad
     std::vector<double> peak_displacement, residual_displacement;     // m; may be empty
     std::vector<double> impacts, impact_force, impact_velocity;       // per gap: -, N, m/s
   };
@@ -51,6 +62,12 @@ namespace poundfe
   void gap_demands(const Model &model, const std::vector<Impact> &impacts,
                    unsigned int first_gap, std::vector<double> &count,
                    std::vector<double> &force, std::vector<double> &velocity);
+
+  /// A 3D model's demands along y and in plan from the peaks of a run
+  /// (nothing for a 2D model), and the PGA along x and y as applied (the
+  /// excitation turned by its incidence angle; 2D: the record's peak).
+  void add_plan_demands(const PeakResponse &peaks, const Excitation &excitation,
+                        ResponseDemands &demands);
 
   /// The floor (1 = the first above the ground) of `building` that gap g
   /// touches; 0 when it does not touch it.
@@ -83,7 +100,7 @@ namespace poundfe
   private:
     const Model               &model;
     unsigned int               building;
-    bool                       displacements, spectral;
+    bool                       displacements, spectral, plan; // plan: a 3D model
     std::vector<DemandColumn>  header;
     std::vector<std::vector<double>> values;
   };

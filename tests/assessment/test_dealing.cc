@@ -1,0 +1,139 @@
+// Runs dealt to the free rank (assessment/ida.h: deal_runs, run_ida_tasks),
+// on a stand-in run (a row computed at once after a sleep) instead of a
+// model, so that the test is about the dealing alone:
+//  - every task of a list comes back once, with its own row, on one rank
+//    or several; the journal resumes it: a second call runs nothing and
+//    gives the same rows; a journal of other runs is refused;
+//  - on two ranks (mpi/dealing-2), two long runs (0.6 s) among short ones
+//    (0.02 s) placed where a static split (every other task to each rank)
+//    gives both to rank 0: dealt one by one to the free rank, the list
+//    takes about one long run (0.72 s by the dealer's order: the worker's
+//    first three tasks, rank 0 the fourth and the long fifth), a static
+//    split 1.24 s; the bound 1.0 s leaves 0.28 s to a loaded machine.
+#include <poundfe/assessment/ida.h>
+#include <poundfe/base/exceptions.h>
+
+#include "test_utilities.h"
+
+#include <boost/test/unit_test.hpp>
+
+#include <deal.II/base/mpi.h>
+
+#include <chrono>
+#include <filesystem>
+#include <set>
+#include <thread>
+
+#include <unistd.h>
+
+using namespace poundfe;
+using poundfe_test::MpiFixture;
+BOOST_GLOBAL_FIXTURE(MpiFixture);
+
+namespace
+{
+  /// A scratch journal the ranks agree on (rank 0's process id), empty.
+  std::string
+  dealing_journal(const std::string &name)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    const long     id   = dealii::Utilities::MPI::broadcast(comm, long(getpid()), 0);
+    const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("poundfe_dealing_" + std::to_string(id));
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::filesystem::create_directories(folder);
+        std::filesystem::remove(folder / name);
+        std::filesystem::remove(folder / (name + ".inputs"));
+      }
+    MPI_Barrier(comm);
+    return (folder / name).string();
+  }
+
+  const std::vector<std::string> dealing_names{"record", "intensity", "collapsed", "demand"};
+
+  /// The stand-in run: a row that names its task, after `seconds`.
+  std::vector<double>
+  stand_in_row(const IdaTask &task, const double seconds)
+  {
+    std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+    return {double(task.record), task.intensity, 0.0, 10 * task.record + task.intensity};
+  }
+
+  /// Removes the scratch folder of `file` once every rank is past it.
+  void
+  remove_dealing_journal(const std::string &file)
+  {
+    MPI_Barrier(MPI_COMM_WORLD);
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::filesystem::remove_all(std::filesystem::path(file).parent_path());
+  }
+
+  std::set<std::vector<double>>
+  as_set(const std::vector<std::vector<double>> &rows)
+  {
+    return {rows.begin(), rows.end()};
+  }
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(dealing)
+
+BOOST_AUTO_TEST_CASE(every_task_once_and_resumed)
+{
+  std::vector<IdaTask> tasks;
+  for (const double x : {0.1, 0.3, 0.7})
+    for (unsigned int r = 0; r < 5; ++r)
+      tasks.push_back({r, x});
+  const std::string file = dealing_journal("listed.csv");
+  const IdaRun      run  = [](const IdaTask &t) { return stand_in_row(t, 0.001); };
+  IdaResult         first;
+  const auto rows = run_ida_tasks(run, dealing_names, tasks, file, MPI_COMM_WORLD, nullptr, 0, first);
+  BOOST_TEST(rows.size() == tasks.size());
+  BOOST_TEST(first.n_run_now == tasks.size());
+  BOOST_TEST(!first.interrupted);
+  std::set<std::vector<double>> expected;
+  for (const IdaTask &t : tasks)
+    expected.insert(stand_in_row(t, 0));
+  BOOST_TEST((as_set(rows) == expected));
+
+  IdaResult  again;
+  const auto resumed =
+    run_ida_tasks(run, dealing_names, tasks, file, MPI_COMM_WORLD, nullptr, 0, again);
+  BOOST_TEST(again.n_run_now == 0u);
+  BOOST_TEST((as_set(resumed) == expected));
+
+  std::vector<IdaTask> other{{0, 0.2}};
+  IdaResult            refused;
+  BOOST_CHECK_THROW(
+    run_ida_tasks(run, dealing_names, other, file, MPI_COMM_WORLD, nullptr, 0, refused),
+    InputError);
+  remove_dealing_journal(file);
+}
+
+BOOST_AUTO_TEST_CASE(long_runs_go_to_the_free_rank)
+{
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) != 2)
+    {
+      BOOST_TEST_MESSAGE("the dealing of long runs is checked on two ranks (mpi/dealing-2)");
+      return;
+    }
+  std::vector<IdaTask> tasks;
+  for (unsigned int r = 0; r < 8; ++r)
+    tasks.push_back({r, 1.0});
+  const IdaRun run = [](const IdaTask &t) {
+    return stand_in_row(t, t.record == 0 || t.record == 4 ? 0.6 : 0.02);
+  };
+  const std::string file = dealing_journal("long.csv");
+  MPI_Barrier(MPI_COMM_WORLD);
+  const auto start = std::chrono::steady_clock::now();
+  IdaResult  result;
+  const auto rows = run_ida_tasks(run, dealing_names, tasks, file, MPI_COMM_WORLD, nullptr, 0, result);
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  BOOST_TEST(rows.size() == tasks.size());
+  BOOST_TEST_MESSAGE("8 runs, two of 0.6 s, on two ranks: " << seconds << " s");
+  BOOST_TEST(seconds < 1.0);
+  remove_dealing_journal(file);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
