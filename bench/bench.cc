@@ -27,9 +27,10 @@
 //   step (Output interval = Time step, no VTU, no plots) as CSV and as
 //   NumPy .npy (Output/Format), against the same run without an output
 //   directory (peaks only); best of `repeats` (10).
-// Step rate: build/poundfe-bench --step-rate [repeats] [MODEL...] [off|csv]
+// Step rate: build/poundfe-bench --step-rate [repeats] [MODEL...] [off|csv|npy]
 //   the models of bench/step-rate.txt (default: all of them) with outputs off
-//   (peaks only) and/or with every default CSV output at every step, best of
+//   (peaks only) and/or with every default CSV output at every step (or, named,
+//   as .npy), best of
 //   `repeats` (5), one line per model and case "step-rate MODEL CASE STEPS/S";
 //   bench/check-step-rate.sh compares them with the recorded figures.
 // Modes: build/poundfe-bench --modes [storeys ...]
@@ -254,12 +255,14 @@ namespace
 
   /// Steps/s of the recorded models with outputs off and with CSV at every
   /// step; `only` names the models to run and the cases (off, csv), each
-  /// all when it names none.
+  /// all when it names none; .npy at every step (npy) only when named.
   int
   measure_step_rate(const unsigned int repeats, std::set<std::string> only)
   {
     const bool off_only = only.erase("off") > 0, csv_only = only.erase("csv") > 0;
-    const bool run_off = off_only || !csv_only, run_csv = csv_only || !off_only;
+    const bool run_npy = only.erase("npy") > 0;
+    const bool run_off = off_only || (!csv_only && !run_npy),
+               run_csv = csv_only || (!off_only && !run_npy);
     const auto models  = step_rate_models();
     for (const std::string &name : only)
       if (std::none_of(models.begin(), models.end(), [&](const auto &m) { return m.first == name; }))
@@ -284,6 +287,9 @@ namespace
         if (run_csv)
           std::printf("step-rate %s csv %.0f\n", name.c_str(),
                       output_speed(input, OutputFormat::csv, repeats, steps).first);
+        if (run_npy)
+          std::printf("step-rate %s npy %.0f\n", name.c_str(),
+                      output_speed(input, OutputFormat::npy, repeats, steps).first);
         std::fflush(stdout);
       }
     return 0;
@@ -696,7 +702,7 @@ namespace
     "       poundfe-bench --partitioned FILE [END [SAVE]]  the model over the ranks by building\n"
     "       poundfe-bench --serial FILE [END [SAVE]]       the same on one process (reference)\n"
     "       poundfe-bench --bifurcation FILE    the values of FILE's Bifurcation section\n"
-    "       poundfe-bench --step-rate [REPEATS [MODEL...] [off|csv]]  bench/step-rate.txt\n"
+    "       poundfe-bench --step-rate [REPEATS [MODEL...] [off|csv|npy]]  bench/step-rate.txt\n"
     "       poundfe-bench --modes [STOREYS...]  dense against sparse eigensolver\n"
     "       poundfe-bench --reliability [FILE]  limit-state evaluations per second\n"
     "       poundfe-bench --help\n"

@@ -28,8 +28,11 @@ namespace poundfe
   {
     Assert(this->law, dealii::ExcMessage("a uniaxial element needs a law"));
     AssertDimension(equations.size(), coefficients.size());
-    for (const int e : equations)
-      on_ground.push_back(e < 0);
+    // an index list, not a std::vector<bool> of ground DOFs: local_deformation
+    // runs at every Newton iteration, and a bit vector costs shifts and masks
+    for (unsigned int i = 0; i < equations.size(); ++i)
+      if (equations[i] >= 0)
+        free_dofs.push_back(i);
     reset();
   }
 
@@ -43,9 +46,8 @@ namespace poundfe
   UniaxialElement::local_deformation(const LocalVector &x) const
   {
     double d = 0;
-    for (unsigned int i = 0; i < signs.size(); ++i)
-      if (!on_ground[i])
-        d += signs[i] * x[i];
+    for (const unsigned int i : free_dofs)
+      d += signs[i] * x[i];
     return d;
   }
 

@@ -149,7 +149,7 @@ namespace poundfe
     const unsigned int n = system.n_equations();
     for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &rhs, &residual,
                       &increment, &work_vector, &velocity_sum, &product, &step_displacement,
-                      &start_residual})
+                      &start_residual, &stiffness_product})
       x->setZero(n);
     for (Vector *x : {&local_u, &local_v, &correction})
       x->setZero(dof_start.back());
@@ -396,6 +396,7 @@ namespace poundfe
   {
     u            = u0;
     v            = v0;
+    stiffness_product_is_current = false;
     if (distribution) // the owners' initial state at the ghosts
       {
         distribution->update_ghosts(u);
@@ -431,6 +432,7 @@ namespace poundfe
     AssertThrow(!distribution, dealii::ExcMessage("a restart is not distributed"));
     u        = u_new;
     v        = v_new;
+    stiffness_product_is_current = false;
     load_now = load;
     set_consistent_acceleration(load);
   }
@@ -587,9 +589,9 @@ namespace poundfe
   {
     // r_0 = rhs - K_eff u = p - K u + M (c_v v + c_a a) + C (c_v' v + c_a' a),
     // each term of the size of the forces, not of M u / (beta dt^2)
-    product.noalias()     = system.stiffness * u;
-    residual_floor        = norm_of(p) + norm_of(product);
-    start_residual        = p - product;
+    const Vector &stiffness_u = stiffness_times_u();
+    residual_floor            = norm_of(p) + norm_of(stiffness_u);
+    start_residual            = p - stiffness_u;
     work_vector.noalias() = L.c_mass_v * v + L.c_mass_a * a;
     product.noalias()     = system.mass * work_vector;
     residual_floor += norm_of(product);
@@ -1004,6 +1006,7 @@ namespace poundfe
       records.accept(*elements, current_time, current_time + L.dt, v_next,
                      distribution ? &counted_here : nullptr, balance.belt);
     u.swap(u_next);
+    stiffness_product_is_current = false;
     v.swap(v_next);
     a.swap(a_next);
     load_now = p;
@@ -1209,11 +1212,21 @@ namespace poundfe
     return 0.5 * v.dot(product);
   }
 
+  const Vector &
+  NewmarkIntegrator::stiffness_times_u() const
+  {
+    if (!stiffness_product_is_current)
+      {
+        stiffness_product.noalias() = system.stiffness * u;
+        stiffness_product_is_current = true;
+      }
+    return stiffness_product;
+  }
+
   double
   NewmarkIntegrator::strain_energy() const
   {
-    product.noalias() = system.stiffness * u;
-    double energy     = 0.5 * u.dot(product);
+    double energy = 0.5 * u.dot(stiffness_times_u());
     // the elements' trial state is the committed state at u
     for (unsigned int h = 0; h < n_elements; ++h)
       if (!distribution || counted_here[h])

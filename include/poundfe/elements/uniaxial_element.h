@@ -76,7 +76,7 @@ namespace poundfe
     std::vector<double>          signs; // the coefficients of d
     double                       reference_stiffness;
     std::unique_ptr<UniaxialLaw> law;
-    std::vector<bool>            on_ground; // equation < 0
+    std::vector<unsigned int>    free_dofs; // local DOFs whose equation >= 0, in order
     // For the work of a step: the committed deformation and force, the trial deformation.
     double committed_deformation = 0, committed_force = 0, trial_deformation = 0;
   };

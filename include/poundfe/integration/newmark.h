@@ -282,6 +282,8 @@ namespace poundfe
     // (false when non-finite) and increment (false on a singular tangent)
     void   set_step_load(const Level &L, const Vector &load_next);
     void   set_start_residual(const Level &L, const Vector &load_next);
+    /// K u, formed once after each change of u.
+    const Vector &stiffness_times_u() const;
     /// u_next = u + step_displacement
     void   set_iterate();
     void   update_kinematics(const Level &L);
@@ -381,6 +383,11 @@ namespace poundfe
     double residual_floor = 0;
     /// Sparse products of the energy terms, so a step allocates nothing.
     mutable Vector product;
+    /// K u of the current u: the strain energy at a step's end and the next
+    /// step's start residual need the same product (stiffness_times_u); u
+    /// changes only in initialize, restart and accept, which mark it stale.
+    mutable Vector stiffness_product;
+    mutable bool   stiffness_product_is_current = false;
     // Local vectors of every element: displacement, velocity, force correction.
     Vector local_u, local_v, correction;
     std::vector<double> tangent_change;

@@ -1,0 +1,238 @@
+// The shortest round-trip text of a double, three ways, on the same numbers:
+// libstdc++'s std::to_chars(double) (Ryu; what the CSV writers use,
+// output/number_text.h), libfmt's fmt::format_to("{}") (Dragonbox, Jeon 2020,
+// with fmt's own choice of fixed or exponent form) and libfmt's Dragonbox
+// digits laid out by std::to_chars's rule (C++17 [charconv.to.chars]: the
+// fewer characters of plain and scientific, plain on a tie; exponents of at
+// least two digits), which is what the CSV writer would have to do to keep
+// every byte of its files. It counts the texts that differ from
+// std::to_chars's and times each way, best of the repeats.
+//
+//   build/poundfe-bench-shortest [repeats [to_chars|fmt|dragonbox|digits]]
+//
+// With a way named, it only times that one (for valgrind --tool=callgrind:
+// the inclusive count of best_ns_per_number over the numbers is the
+// instructions a number).
+//
+// The numbers: the times of a run's rows (i * 5e-4: short texts), responses
+// (sums of sines with 17 significant digits) and values of every magnitude
+// from 1e-12 to 1e6, both signs, and zeros, as in a run's CSV files.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace
+{
+  std::vector<double>
+  sample_numbers(const std::size_t n)
+  {
+    std::vector<double> x(n);
+    std::uint64_t       state = 88172645463325252ull; // xorshift64
+    auto next = [&state]() {
+      state ^= state << 13;
+      state ^= state >> 7;
+      state ^= state << 17;
+      return state;
+    };
+    for (std::size_t i = 0; i < n; ++i)
+      switch (i % 4)
+        {
+          case 0: x[i] = (i / 4) * 5e-4; break;
+          case 1: x[i] = 0.0123 * std::sin(0.37 * i) + 0.004 * std::sin(2.9 * i); break;
+          case 2:
+            {
+              const double mantissa = double(next() >> 11) / double(1ull << 53);
+              const int    exponent = int(next() % 19) - 12;
+              x[i] = (next() & 1 ? -1 : 1) * mantissa * std::pow(10.0, exponent);
+              break;
+            }
+          default: x[i] = (i % 16 == 3) ? 0.0 : -1.5e3 * std::cos(0.011 * i); break;
+        }
+    return x;
+  }
+
+  /// Dragonbox's shortest digits in std::to_chars's plain or scientific form.
+  char *
+  dragonbox_as_to_chars(char *out, const double x)
+  {
+    if (x == 0)
+      {
+        if (std::signbit(x))
+          *out++ = '-';
+        *out++ = '0';
+        return out;
+      }
+    const auto decimal = fmt::detail::dragonbox::to_decimal(x);
+    if (x < 0)
+      *out++ = '-';
+    char      digits[20];
+    const int k = std::to_chars(digits, digits + 20, decimal.significand).ptr - digits;
+    const int e = decimal.exponent, scientific_exponent = e + k - 1;
+    const int exponent_digits = std::abs(scientific_exponent) >= 100 ? 3 : 2;
+    const int scientific = k + (k > 1) + 2 + exponent_digits;
+    const int plain      = e >= 0 ? k + e : (-e < k ? k + 1 : 2 - e);
+    if (plain <= scientific)
+      {
+        if (e >= 0)
+          {
+            out = std::copy(digits, digits + k, out);
+            return std::fill_n(out, e, '0');
+          }
+        if (-e < k)
+          {
+            out    = std::copy(digits, digits + k + e, out);
+            *out++ = '.';
+            return std::copy(digits + k + e, digits + k, out);
+          }
+        *out++ = '0';
+        *out++ = '.';
+        out    = std::fill_n(out, -e - k, '0');
+        return std::copy(digits, digits + k, out);
+      }
+    *out++ = digits[0];
+    if (k > 1)
+      {
+        *out++ = '.';
+        out    = std::copy(digits + 1, digits + k, out);
+      }
+    *out++ = 'e';
+    *out++ = scientific_exponent < 0 ? '-' : '+';
+    const int magnitude = std::abs(scientific_exponent);
+    if (magnitude < 10)
+      *out++ = '0';
+    return std::to_chars(out, out + 4, magnitude).ptr;
+  }
+
+  /// Dragonbox's digits alone (significand and exponent as binary, no
+  /// text): what the layout above adds to them.
+  char *
+  dragonbox_digits_only(char *out, const double x)
+  {
+    const auto decimal = fmt::detail::dragonbox::to_decimal(x == 0 ? 1.0 : x);
+    std::memcpy(out, &decimal.significand, 8);
+    std::memcpy(out + 8, &decimal.exponent, 4);
+    return out + 12;
+  }
+
+  char *
+  with_to_chars(char *out, const double x)
+  {
+    return std::to_chars(out, out + 32, x).ptr;
+  }
+
+  char *
+  with_fmt(char *out, const double x)
+  {
+    return fmt::format_to(out, "{}", x);
+  }
+
+  template <typename Format>
+  std::string
+  all_text(const std::vector<double> &x, Format format)
+  {
+    std::string text(x.size() * 32, '\0');
+    char       *out = text.data();
+    for (const double value : x)
+      {
+        out    = format(out, value);
+        *out++ = ',';
+      }
+    text.resize(out - text.data());
+    return text;
+  }
+
+  template <typename Format>
+  double
+  best_ns_per_number(const std::vector<double> &x, Format format, const int repeats)
+  {
+    std::vector<char> buffer(x.size() * 32);
+    double            best = 1e300;
+    for (int r = 0; r < repeats; ++r)
+      {
+        const auto start = std::chrono::steady_clock::now();
+        char      *out   = buffer.data();
+        for (const double value : x)
+          {
+            out    = format(out, value);
+            *out++ = ',';
+          }
+        const auto stop = std::chrono::steady_clock::now();
+        if (out == buffer.data()) // keeps the loop
+          std::abort();
+        best = std::min(best, std::chrono::duration<double, std::nano>(stop - start).count());
+      }
+    return best / x.size();
+  }
+
+  std::size_t
+  differing_texts(const std::vector<double> &x, char *(*format)(char *, double))
+  {
+    std::size_t n = 0;
+    for (const double value : x)
+      {
+        char a[32], b[32];
+        const std::string reference(a, with_to_chars(a, value));
+        const std::string other(b, format(b, value));
+        if (reference != other)
+          {
+            if (n < 3)
+              std::printf("  e.g. %s against to_chars's %s\n", other.c_str(), reference.c_str());
+            ++n;
+          }
+      }
+    return n;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  const int                 repeats = argc > 1 ? std::atoi(argv[1]) : 20;
+  const std::vector<double> x       = sample_numbers(1 << 20);
+  if (argc > 2)
+    {
+      const std::string way = argv[2];
+      char *(*format)(char *, double) = way == "fmt"       ? with_fmt :
+                                        way == "dragonbox" ? dragonbox_as_to_chars :
+                                        way == "digits"    ? dragonbox_digits_only :
+                                                             with_to_chars;
+      std::printf("%s %.1f ns a number\n", way.c_str(), best_ns_per_number(x, format, repeats));
+      return 0;
+    }
+  std::printf("%zu numbers, best of %d\n", x.size(), repeats);
+  std::printf("fmt::format_to(\"{}\"): %zu texts differ from std::to_chars's\n",
+              differing_texts(x, with_fmt));
+  std::printf("Dragonbox in to_chars's layout: %zu texts differ from std::to_chars's\n",
+              differing_texts(x, dragonbox_as_to_chars));
+  // every text must read back to its double
+  for (const double value : x)
+    {
+      char         text[32];
+      char *const  end  = dragonbox_as_to_chars(text, value);
+      double       back = 0;
+      std::from_chars(text, end, back);
+      if (std::memcmp(&back, &value, sizeof back) != 0)
+        {
+          std::printf("round trip failed\n");
+          return 1;
+        }
+    }
+  if (all_text(x, with_to_chars) != all_text(x, dragonbox_as_to_chars))
+    std::printf("the texts of the whole sample differ\n");
+  std::printf("std::to_chars                  %6.1f ns a number\n",
+              best_ns_per_number(x, with_to_chars, repeats));
+  std::printf("fmt::format_to(\"{}\")           %6.1f ns a number\n",
+              best_ns_per_number(x, with_fmt, repeats));
+  std::printf("Dragonbox in to_chars's layout %6.1f ns a number\n",
+              best_ns_per_number(x, dragonbox_as_to_chars, repeats));
+  return 0;
+}
