@@ -232,7 +232,9 @@ namespace poundfe
   {
     add_choice(prm, "Model", contact_model,
                "penalty: each gap is its Law's force, stepped by Time integration/Method; "
-               "nonsmooth: rigid unilateral contact (the gap never closes beyond 0) with "
+               "nonsmooth: rigid unilateral contact at velocity level (a closing gap stops "
+               "closing; its penetration stays of the order of the step times the approach "
+               "velocity) with "
                "Newton's impact law (Coefficient of restitution e in [0, 1]), stepped by "
                "Moreau-Jean's theta-scheme with each step's impulses from an LCP solved by "
                "Siconos Numerics (theory §3.9d); needs a Law other than none (its force "

@@ -41,6 +41,12 @@ namespace poundfe
                       "Most VTU frames a run writes: when End time / VTU interval would give "
                       "more, the interval is widened to fit and the console says so. Unit: count.",
                       dealii::Patterns::Integer(2));
+    prm.add_parameter("VTU impact peaks", vtu_impact_peaks,
+                      "A run on one process, not partitioned by building, also writes a VTU "
+                      "frame at the peak of each impact (the step at which the gaps' total "
+                      "force stops rising), besides the frames of VTU interval; these frames "
+                      "are not counted in Maximum VTU frames (a run with much chatter writes "
+                      "many). Unit: -.");
     prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot. Unit: -.");
     prm.add_parameter("Floor spectra", floor_spectra,
                       "A run also writes floor_spectra.csv (and floor_spectra.png): the "

@@ -30,8 +30,9 @@ namespace poundfe
     void
     write_panel(std::ostream &script, const Plot &plot)
     {
-      // what an earlier panel may have set
-      script << "set autoscale\nunset arrow\nunset label\n";
+      // what an earlier panel may have set (a count histogram's one tic per
+      // whole number and its bars' width would reach the next figure's axis)
+      script << "set autoscale\nunset arrow\nunset label\nset xtics autofreq\nset boxwidth\n";
       if (plot.y2_label.empty())
         script << "unset y2label\nunset y2tics\nset ytics mirror\n";
       else

@@ -762,7 +762,7 @@ namespace poundfe
       }
     held.force_before = held.force;
     held.force        = force;
-    held.candidate    = force > 0 && !regular;
+    held.candidate    = impact_peaks && force > 0 && !regular;
     if (held.candidate)
       {
         held.time = state.time();

@@ -163,10 +163,17 @@ namespace poundfe
               const unsigned int every =
                 vtu_steps_per_frame(output, dt, n_steps, writes ? options.console : nullptr);
               if (field_recorder) // on every rank
-                outputs.push_back(field_recorder(every));
+                {
+                  outputs.push_back(field_recorder(every));
+                  if (output.vtu_impact_peaks && writes && options.console)
+                    *options.console << "poundfe: note: Output/VTU impact peaks: a run "
+                                        "partitioned by building writes the frames of VTU "
+                                        "interval only\n";
+                }
               else
                 outputs.push_back(std::make_unique<VtuRecorder>(analysis.model, directory, every,
-                                                                output.field_format));
+                                                                output.field_format,
+                                                                output.vtu_impact_peaks));
               if (output.field_format == FieldFormat::xdmf)
                 files.insert(files.end(), {"solution.xdmf", "solution.h5"}); // the index, the data
               else

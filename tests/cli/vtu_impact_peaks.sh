@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# A run's field series holds a frame at the peak of each impact as well as
-# its regular frames (doc/verification.md, "Entries another entry silences;
+# With Output/VTU impact peaks, a run's field series holds a frame at the
+# peak of each impact as well as its regular frames (without it, only those) (doc/verification.md, "Entries another entry silences;
 # ... figures"): the example pounding pair (10 s, 3 impacts) with a 0.5 s VTU interval and
 # contact_force.csv at every step; the steps at which the gaps' total |force|
 # peaks (it rose or held to a positive value and falls at the next step) are
@@ -12,7 +12,13 @@ poundfe=$1 input=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$poundfe" run "$input/shear-pair-pounding.prm" --output "$work/out" \
+  --set "Output/VTU interval=0.5" --set "Output/VTU impact peaks=true" \
+  --set "Output/Output interval=0" --set "Output/Plots=false" > /dev/null
+# Without the entry (its default, false) only the regular frames.
+"$poundfe" run "$input/shear-pair-pounding.prm" --output "$work/off" \
   --set "Output/VTU interval=0.5" --set "Output/Output interval=0" --set "Output/Plots=false" > /dev/null
+n_off=$(grep -c 'timestep=' "$work/off/solution.pvd")
+[ "$n_off" -eq 21 ] || { echo "FAIL VTU impact peaks = false: $n_off frames, not the 21 regular ones"; exit 1; }
 python3 - "$work/out" 0.5 <<'PY'
 import csv, os, re, sys
 out, interval = sys.argv[1], float(sys.argv[2])

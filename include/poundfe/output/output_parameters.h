@@ -32,6 +32,7 @@ namespace poundfe
     double             interval     = 0.0; // of CSV rows, s; 0 = every step
     double             vtu_interval = 0.1; // 0 = no VTU
     unsigned int       max_vtu_frames = 2000; // a longer run widens the VTU interval
+    bool               vtu_impact_peaks = false; // a frame at each impact's peak too
     FieldFormat        field_format   = FieldFormat::vtu;
     bool               plots        = true;
     unsigned int       n_modes      = 6;

@@ -142,8 +142,8 @@ namespace poundfe
   };
 
   /// A time history as a field series (solution.pvd, or solution.xdmf and
-  /// solution.h5): a frame every `every` steps and, with gap elements, a
-  /// frame at the peak of each impact, where the impact is strongest: the
+  /// solution.h5): a frame every `every` steps and, with `impact_peaks` and
+  /// gap elements, a frame at the peak of each impact, where the impact is strongest: the
   /// step at which the gaps' total |force| stops rising (it rose or held to
   /// it and falls at the next step), unless that step has its regular frame.
   /// A regular interval alone would show an impact of a few steps at a
@@ -153,8 +153,9 @@ namespace poundfe
   {
   public:
     VtuRecorder(const Model &model, const std::string &directory, unsigned int every,
-                FieldFormat format = FieldFormat::vtu)
+                FieldFormat format = FieldFormat::vtu, bool impact_peaks = false)
       : every(every)
+      , impact_peaks(impact_peaks)
       , series(model, directory, "solution", format)
     {}
     void initialize(const ResponseView &state) override;
@@ -163,6 +164,7 @@ namespace poundfe
 
   private:
     const unsigned int every;
+    const bool         impact_peaks; // Output/VTU impact peaks
     unsigned long      next = 0;
     VtuSeries          series;
     /// The last step, while it may be an impact's peak.
