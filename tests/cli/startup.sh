@@ -27,7 +27,7 @@ echo "ok   poundfe links only $needed"
 LD_DEBUG=files LD_DEBUG_OUTPUT="$work/loader" "$poundfe" --version > version || fail "--version exited $?"
 loaded=$(cat "$work"/loader.* | grep -c 'file=.*\[0\];  needed by\|file=.*\[0\];  dynamically loaded by')
 grep -q 'file=libdeal\|poundfe-program' "$work"/loader.* && fail "--version loaded deal.II or the program"
-grep -Eq '^poundfe \(git [^)]+\), deal\.II [0-9]+\.[0-9]+\.[0-9]+, contact models: penalty(, Siconos Numerics)?$' version || fail "--version said: $(cat version)"
+grep -Eq '^poundfe \(git [^)]+\), deal\.II [0-9]+\.[0-9]+\.[0-9]+, contact models: penalty(, nonsmooth, Siconos Numerics)?$' version || fail "--version said: $(cat version)"
 echo "ok   --version: $(cat version), $loaded libraries loaded"
 
 # 3. --version among other words goes to the program, which says the same.
