@@ -748,10 +748,11 @@ namespace poundfe
   void
   VtuRecorder::observe_step(const ResponseView &state)
   {
-    double force = 0; // the gaps' total |force| at this step
-    for (const NonlinearElement &e : state.elements)
-      if (e.kind == ElementKind::gap)
-        force += std::abs(e.force());
+    double force = 0; // the gaps' total |force| at this step (asked for only)
+    if (impact_peaks)
+      for (const NonlinearElement &e : state.elements)
+        if (e.kind == ElementKind::gap)
+          force += std::abs(e.force());
     if (held.candidate && held.force >= held.force_before && force < held.force)
       series.write(held.time, held.u, held.states); // the last step was an impact's peak
     const bool regular = state.step() == next;
