@@ -19,6 +19,12 @@
 # sessions load, the ranks of one session share one session's time and two
 # ranks cannot run faster than one; a session per rank gives each rank the
 # share a process of its own would have, as on a machine of its own.
+#   The machine's own ceiling: each repeat also runs two independent
+# one-rank processes at once, each on half of the suite (no dealer, no
+# messages), and prints their combined runs per second against one rank's.
+# Two processes on two cores do not always run twice as fast as one (shared
+# caches, memory bandwidth, clock); the dealer's speed-up is judged against
+# this ceiling.
 set -eu
 n=${1:-44}
 runs=${2:-20}
@@ -38,6 +44,11 @@ if [ "$command" = msa ]; then
 else
   options+=(--set "IDA/Runs per record=$runs")
 fi
+suite=$work/suite/records/suite.csv
+n_header=$(grep -c '^#\|^name,' "$suite")
+n_rows=$(($(wc -l < "$suite") - n_header))
+{ head -n "$n_header" "$suite"; tail -n +"$((n_header + 1))" "$suite" | head -n $((n_rows / 2)); } > "$work/suite/records/half1.csv"
+{ head -n "$n_header" "$suite"; tail -n +"$((n_header + 1 + n_rows / 2))" "$suite"; } > "$work/suite/records/half2.csv"
 echo "load average before: $(uptime | sed 's/.*load average: //')"
 best() { sort -g | tail -1; }
 isolate=setsid
@@ -52,6 +63,13 @@ for i in $(seq "$repeats"); do
     python3 -c "import json, sys; s = json.load(open(sys.argv[1])); print(s['runs_now'], s['runs_now'] / s['wall_time_s'], float(sys.argv[3]) - float(sys.argv[2]))" \
       "$work/np$np-$i/summary.json" "$start" "$end" >> "$work/rates$np"
   done
+  for half in 1 2; do
+    $isolate build/poundfe "$command" input/ida-pounding-pair.prm --output "$work/half$half-$i" \
+      "${options[@]}" --set "IDA/Suite=$work/suite/records/half$half.csv" > /dev/null &
+  done
+  wait
+  python3 -c "import json, sys; s = [json.load(open(f)) for f in sys.argv[1:]]; print(sum(x['runs_now'] for x in s) / max(x['wall_time_s'] for x in s))" \
+    "$work/half1-$i/summary.json" "$work/half2-$i/summary.json" >> "$work/rates_halves"
 done
 cmp -s "$work/np1-1/$command.csv" "$work/np2-1/$command.csv" ||
   echo "warning: $command.csv differs between 1 and 2 ranks"
@@ -66,3 +84,5 @@ echo "all: $(tr '\n' ';' < "$work/rates1") | $(tr '\n' ';' < "$work/rates2")"
 printf '1 rank:  %.1f runs/s, %.1f s in all\n' "$r1" "$w1"
 printf '2 ranks: %.1f runs/s, %.1f s in all\n' "$r2" "$w2"
 awk -v a="$r1" -v b="$r2" 'BEGIN { printf "speed-up on 2 ranks: %.2f\n", b / a }'
+rh=$(best < "$work/rates_halves")
+awk -v a="$r1" -v h="$rh" -v b="$r2" 'BEGIN { printf "two independent 1-rank processes on halves: %.1f runs/s, %.2f x one rank (the ceiling); 2 ranks reach %.0f %% of it\n", h, h / a, 100 * b / h }'
