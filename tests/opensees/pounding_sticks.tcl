@@ -28,11 +28,17 @@ uniaxialMaterial Elastic 1 $k2 [expr {0.05 * 2 * sqrt($k2 * $m)}]
 uniaxialMaterial Elastic 2 $k4 [expr {0.05 * 2 * sqrt($k4 * $m)}]
 element zeroLength 1 1 2 -mat 1 -dir 1
 element zeroLength 2 3 4 -mat 2 -dir 1
-# the gap closes when node 2 moves 10 mm more than node 4 (u4 - u2 < -0.01)
-if {$law eq "ElasticPPGap"} {
-    uniaxialMaterial ElasticPPGap 3 2.0e9 -4.0e6 -0.01 0.1 damage
-} else {
-    uniaxialMaterial ImpactMaterial 3 2.0e9 6.0e8 -0.002 -0.01
+# the gap closes when node 2 moves 10 mm more than node 4 (u4 - u2 < -0.01);
+# the rate-dependent gaps with e = 0.6 for the effective mass m/2;
+# Viscous: a fluid damper linking the two (no gap)
+switch -- $law {
+    ElasticPPGap { uniaxialMaterial ElasticPPGap 3 2.0e9 -4.0e6 -0.01 0.1 damage }
+    ImpactMaterial { uniaxialMaterial ImpactMaterial 3 2.0e9 6.0e8 -0.002 -0.01 }
+    Hertzdamp { uniaxialMaterial Hertzdamp 3 5.0e10 0.48 -0.01 }
+    JankowskiImpact { uniaxialMaterial JankowskiImpact 3 5.0e10 0.35 [expr {$m / 2}] -0.01 1.5 }
+    ViscoelasticGap { uniaxialMaterial ViscoelasticGap 3 2.0e9 4.0e6 -0.01 }
+    Viscous { uniaxialMaterial Viscous 3 2.0e6 0.5 }
+    default { error "pounding_sticks.tcl: no gap material '$law'" }
 }
 element zeroLength 3 2 4 -mat 3 -dir 1
 set dt 0.002
@@ -41,6 +47,8 @@ timeSeries Path 1 -dt $dt -values [synthetic_record $dt $n 0.6]
 pattern UniformExcitation 1 1 -accel 1
 recorder Node -file $out/pounding_$law.out -time -precision 16 -node 2 4 -dof 1 disp
 recorder Node -file $out/pounding_${law}_vel.out -time -precision 16 -node 2 4 -dof 1 vel
+recorder Element -file $out/pounding_${law}_gap.out -time -precision 16 -ele 3 \
+    material 1 stressStrainTangent
 constraints Plain
 numberer Plain
 system BandGeneral
