@@ -79,6 +79,10 @@ CASES = {
     "pounding_JankowskiImpact": ("pounding_sticks.tcl", ["JankowskiImpact"], 1e-8),
     "pounding_ViscoelasticGap": ("pounding_sticks.tcl", ["ViscoelasticGap"], 1e-9),
     "pounding_Viscous": ("pounding_sticks.tcl", ["Viscous"], 1e-9),
+    # OpenSees's BoucWen storey (its backward Euler and Newton for z from
+    # 0.01), with and without Baber-Noori degradation
+    "bouc_wen_storey": ("bouc_wen_storey.tcl", [], 1e-9),
+    "bouc_wen_degrading": ("bouc_wen_storey.tcl", ["degrading"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,
