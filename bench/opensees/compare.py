@@ -79,6 +79,11 @@ CASES = {
     "pounding_JankowskiImpact": ("pounding_sticks.tcl", ["JankowskiImpact"], 1e-8),
     "pounding_ViscoelasticGap": ("pounding_sticks.tcl", ["ViscoelasticGap"], 1e-9),
     "pounding_Viscous": ("pounding_sticks.tcl", ["Viscous"], 1e-9),
+    # Parallel (an ElasticPPGap and a ViscoelasticGap, factors 0.5: no damping
+    # tangent, as OpenSees 3.8's ParallelMaterial; both stop at 3.31 s under
+    # Newton) and MinMax (an ImpactMaterial failing for good in its third impact)
+    "pounding_Parallel": ("pounding_sticks.tcl", ["Parallel"], 1e-9),
+    "pounding_MinMax": ("pounding_sticks.tcl", ["MinMax"], 1e-9),
     # OpenSees's BoucWen storey (its backward Euler and Newton for z from
     # 0.01), with and without Baber-Noori degradation
     "bouc_wen_storey": ("bouc_wen_storey.tcl", [], 1e-9),
