@@ -67,8 +67,9 @@ namespace poundfe
           << "pattern UniformExcitation 1 1 -accel 1\n";
       write_recorders(e, tcl);
       tcl << "constraints Plain\nnumberer Plain\nsystem BandGeneral\n"
-          << (e.nonlinear ? "test NormDispIncr 1.0e-12 50\nalgorithm Newton\n" :
-                            "algorithm Linear\n")
+          << (e.nonlinear ? "test NormDispIncr 1.0e-12 " + std::to_string(e.test_iterations) +
+                              "\nalgorithm Newton\n" :
+                            std::string("algorithm Linear\n"))
           << "integrator Newmark " << e.gamma << " " << e.beta << "\n"
           << "analysis Transient\n"
           << "set status [analyze " << e.n_steps << " " << e.time_step << "]\n"

@@ -344,6 +344,14 @@ namespace poundfe
           {"ElasticPP", {"E", "epsyP", "epsyN", "eps0"}, {2, 3, 4}},
           {"ElasticPPGap", {"E", "Fy", "gap", "eta"}, {3, 4}},
           {"ImpactMaterial", {"K1", "K2", "Delta_y", "gap"}, {4}},
+          {"Hertzdamp", {"Kh", "xiNorm", "gap", "n"}, {3, 4}},
+          {"JankowskiImpact", {"Kh", "xi", "mEff", "gap", "n"}, {4, 5}},
+          {"ViscoelasticGap", {"K", "C", "gap"}, {3}},
+          {"Viscous", {"C", "alpha", "minVel"}, {2, 3}},
+          {"BoucWen",
+           {"alpha", "ko", "n", "gamma", "beta", "Ao", "deltaA", "deltaNu", "deltaEta", "tolerance",
+            "maxNumIter"},
+           {9, 10, 11}},
           {"Steel01", {"fy", "E0", "b", "a1", "a2", "a3", "a4"}, {3, 7}},
           {"Steel02", {"fy", "E0", "b", "R0", "cR1", "cR2", "a1", "a2", "a3", "a4"}, {3, 6, 10}},
           {"Concrete01", {"fpc", "epsc0", "fpcu", "epscu"}, {4}},
@@ -376,12 +384,50 @@ namespace poundfe
         return p;
       }
 
+      /// Parallel tag tag1 tag2 ... <-factors f1 f2 ...>; MinMax tag other
+      /// <-min eps> <-max eps>: the components must exist already, as in
+      /// OpenSees (which copies them there).
+      opensees::CombinedMaterial
+      combined_material(const opensees::Domain &d, const std::string &type, Words &w)
+      {
+        opensees::CombinedMaterial c{type, w.integers("a material's tag"), {}};
+        if (c.components.empty() || (type == "MinMax" && c.components.size() != 1))
+          throw ScriptError(type + " takes " + (type == "MinMax" ? "one material" : "materials"));
+        for (const int component : c.components)
+          if (d.materials.count(component) == 0 && d.combined_materials.count(component) == 0)
+            throw ScriptError("uniaxialMaterial " + text_of(component) + " does not exist");
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (type == "Parallel" && option == "-factors")
+              {
+                c.factors = w.numbers("a factor");
+                if (c.factors.size() != c.components.size())
+                  throw ScriptError("Parallel -factors takes one factor a material");
+              }
+            else if (type == "MinMax" && (option == "-min" || option == "-Min" || option == "-MIN"))
+              c.min_strain = w.real("the smallest strain");
+            else if (type == "MinMax" && (option == "-max" || option == "-Max" || option == "-MAX"))
+              c.max_strain = w.real("the largest strain");
+            else
+              unsupported("uniaxialMaterial " + type + " option '" + option + "'");
+          }
+        return c;
+      }
+
       void
       uniaxial_material(Session &s, Words &w)
       {
         opensees::Domain  &d    = model_domain(s);
         const std::string  type = w.word("the material's type");
         const int          tag  = w.integer("the material's tag");
+        if (d.materials.count(tag) != 0 || d.combined_materials.count(tag) != 0)
+          throw ScriptError("uniaxialMaterial " + text_of(tag) + " exists already");
+        if (type == "Parallel" || type == "MinMax")
+          {
+            d.combined_materials.emplace(tag, combined_material(d, type, w));
+            return;
+          }
         std::vector<double> values = w.numbers("a parameter");
         MaterialParameters  p{type, {}};
         if (type == "ElasticPPGap" && w.peek() == "damage")

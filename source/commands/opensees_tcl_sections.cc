@@ -118,7 +118,11 @@ namespace poundfe
             const unsigned int r = dof == "P" ? 0 : 1;
             const auto         p = d.materials.find(mat);
             if (p == d.materials.end())
-              throw ScriptError("uniaxialMaterial " + std::to_string(mat) + " does not exist");
+              throw ScriptError("uniaxialMaterial " + std::to_string(mat) +
+                                (d.combined_materials.count(mat) ?
+                                   " is a " + d.combined_materials.at(mat).type +
+                                     ": in zeroLength and truss elements only" :
+                                   std::string(" does not exist")));
             const MaterialParameters parameters = p->second;
             section->set_law(r, [parameters]() { return make_material(parameters); });
             has[r] = true;
@@ -159,7 +163,11 @@ namespace poundfe
       {
         const auto it = s.domain.materials.find(tag);
         if (it == s.domain.materials.end())
-          throw ScriptError("uniaxialMaterial " + std::to_string(tag) + " does not exist");
+          throw ScriptError("uniaxialMaterial " + std::to_string(tag) +
+                            (s.domain.combined_materials.count(tag) ?
+                               " is a " + s.domain.combined_materials.at(tag).type +
+                                 ": in zeroLength and truss elements only" :
+                               std::string(" does not exist")));
         const std::string name = std::to_string(tag);
         for (unsigned int i = 0; i < s.fibres->materials.size(); ++i)
           if (s.fibres->materials[i].name == name)

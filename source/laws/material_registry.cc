@@ -17,7 +17,9 @@ namespace poundfe
 #define POUNDFE_MATERIALS(MATERIAL)                                                           \
   MATERIAL(steel01) MATERIAL(steel02) MATERIAL(concrete01) MATERIAL(concrete02)               \
     MATERIAL(elastic_pp) MATERIAL(hysteretic)  \
-    MATERIAL(elastic) MATERIAL(elastic_pp_gap) MATERIAL(impact_material)
+    MATERIAL(elastic) MATERIAL(elastic_pp_gap) MATERIAL(impact_material)                      \
+      MATERIAL(hertzdamp) MATERIAL(jankowski_impact) MATERIAL(viscoelastic_gap) MATERIAL(viscous) \
+        MATERIAL(bouc_wen_material)
 
   namespace materials
   {

@@ -5,6 +5,7 @@
 // sin(2 pi (t - t_start)/T + phi) + zeroShift on [t_start, t_end]; LoadPattern::applyLoad:
 // the series' factor times the pattern's -fact, frozen by loadConst), its
 // nodal loads and ground accelerations, and OpenSees's nodal reactions.
+#include <poundfe/laws/combined_materials.h>
 #include <poundfe/opensees/opensees_domain.h>
 
 #include <cmath>
@@ -157,6 +158,18 @@ namespace poundfe
     std::unique_ptr<UniaxialLaw>
     make_domain_material(const Domain &domain, const int tag)
     {
+      const auto combined = domain.combined_materials.find(tag);
+      if (combined != domain.combined_materials.end())
+        {
+          const CombinedMaterial &c = combined->second;
+          std::vector<std::unique_ptr<UniaxialLaw>> parts;
+          for (const int component : c.components)
+            parts.push_back(make_domain_material(domain, component));
+          if (c.type == "MinMax")
+            return std::make_unique<MinMaxUniaxial>(std::move(parts[0]), c.min_strain,
+                                                    c.max_strain);
+          return std::make_unique<ParallelUniaxial>(std::move(parts), c.factors);
+        }
       const auto it = domain.materials.find(tag);
       if (it == domain.materials.end())
         throw ScriptError("uniaxialMaterial " + std::to_string(tag) + " does not exist");

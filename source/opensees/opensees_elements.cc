@@ -161,7 +161,8 @@ namespace poundfe
         bool
         set_trial(const Vector &u, const Vector &v) override
         {
-          const Vector strain = strain_scale * (t * u), rate = strain_scale * (t * v);
+          const Vector rate = strain_scale * (t * v);
+          strain            = strain_scale * (t * u);
           for (unsigned int m = 0; m < laws.size(); ++m)
             if (!laws[m]->set_trial(strain[m], rate[m]))
               {
@@ -187,6 +188,8 @@ namespace poundfe
           if (truss && words.size() == 1 &&
               (words[0] == "axialForce" || words[0] == "basicForce" || words[0] == "basicForces"))
             return {force_scale * laws[0]->force()};
+          if (words.size() == 3 && words[0] == "material")
+            return material_response(words[1], words[2]);
           return Element::response(words);
         }
 
@@ -206,22 +209,51 @@ namespace poundfe
         {
           for (auto &law : laws)
             law->commit();
+          committed_strain = strain;
         }
         void
         revert() override
         {
           for (auto &law : laws)
             law->revert();
+          strain = committed_strain;
         }
         void
         reset() override
         {
           for (auto &law : laws)
             law->reset();
+          strain = committed_strain = Vector::Zero(laws.size());
         }
         std::string failure() const override { return why; }
 
       private:
+        /// OpenSees's `material i stress|strain|tangent|stressStrain|
+        /// stressStrainTangent` (ZeroLength::setResponse passing the rest of
+        /// the words to UniaxialMaterial::setResponse).
+        std::vector<double>
+        material_response(const std::string &number, const std::string &what) const
+        {
+          const int i = std::atoi(number.c_str());
+          if (i < 1 || i > static_cast<int>(laws.size()))
+            throw ScriptError("element " + std::to_string(tag) + " has no material " + number +
+                              " (1 to " + std::to_string(laws.size()) + ")");
+          const UniaxialLaw &law = *laws[i - 1];
+          const double       e = strain.size() > 0 ? strain[i - 1] : 0.0;
+          if (what == "stress")
+            return {law.force()};
+          if (what == "strain")
+            return {e};
+          if (what == "tangent")
+            return {law.tangent()};
+          if (what == "stressStrain" || what == "stressANDstrain" || what == "stressAndStrain")
+            return {law.force(), e};
+          if (what == "stressStrainTangent" || what == "stressANDstrainANDtangent")
+            return {law.force(), e, law.tangent()};
+          throw ScriptError("element " + std::to_string(tag) + ": material response '" + what +
+                            "' is not supported");
+        }
+
         template <typename Value>
         Matrix
         weighted(const Value &value) const
@@ -234,6 +266,7 @@ namespace poundfe
 
         Matrix                                    t; // materials x DOFs
         std::vector<std::unique_ptr<UniaxialLaw>> laws;
+        Vector strain, committed_strain; // the materials' trial and committed strains
         bool                                      rayleigh = false;
         std::string                               why;
         double strain_scale = 1, force_scale = 1; // a truss: 1/L and A

@@ -30,6 +30,28 @@ namespace poundfe
       return "Building " + std::to_string(b + 1) + "/" + entry;
     }
 
+    /// The contact laws whose equations OpenSees 3.8's gap materials have:
+    /// linear (ElasticPPGap), hertz (Hertzdamp without damping), jankowski
+    /// (JankowskiImpact: the same force in approach and restitution, never
+    /// negative, so poundfe's clipping at zero never acts). The others differ
+    /// from their OpenSees namesakes: InputError naming Contact/Law.
+    void
+    refuse_contact_law(const std::string &law, const InputFile &input)
+    {
+      if (law == "linear" || law == "hertz" || law == "jankowski")
+        return;
+      std::string why = "OpenSees 3.8 has no material with its equations";
+      if (law == "hertz-damp")
+        why = "OpenSees's Hertzdamp takes the approach velocity from the first trial in "
+              "contact, poundfe from the committed state before it, and lets the force "
+              "turn negative during restitution, which poundfe clips at zero";
+      else if (law == "kelvin-voigt")
+        why = "OpenSees's ViscoelasticGap lets the force k d + c d' turn negative during "
+              "restitution, which poundfe clips at zero";
+      input.fail("Contact/Law", "export-opensees writes the contact laws linear, hertz and "
+                                "jankowski; '" + law + "' not: " + why);
+    }
+
     /// The parts of the model OpenSees cannot be given the same way:
     /// InputError naming the first one's entry.
     void
@@ -52,10 +74,15 @@ namespace poundfe
                        "modal damping has no element form in OpenSees 3.8's Tcl commands "
                        "that poundfe's export writes (Rayleigh damping: modes or coefficients)");
         }
+      // a storey is hysteretic because its yield drift is given: the
+      // entry the user wrote (the Bouc-Wen subsection only shapes the loop)
       for (const StoreyLink &link : model.links)
         if (link.hysteretic)
-          input.fail(building_entry(link.building, "Bouc-Wen"),
-                     "export-opensees writes elastic storeys only (Bouc-Wen not yet)");
+          input.fail(building_entry(link.building, "Storey yield drifts"),
+                     "export-opensees writes elastic storeys only: OpenSees 3.8's BoucWen "
+                     "integrates the Bouc-Wen law by backward Euler over the step (z from a "
+                     "Newton iteration started at 0.01, to |dz| < tolerance), poundfe's by the "
+                     "trapezoidal rule, so the two runs would differ by the discretisation");
       if (!model.springs.empty() || !model.friction_surfaces.empty())
         input.fail(model.springs.empty() ? "Friction" : "Springs",
                    "export-opensees writes no springs to the ground or friction");
@@ -67,9 +94,8 @@ namespace poundfe
                    "export-opensees writes fixed bases only");
       if (model.bumper.law != BumperLaw::none)
         input.fail("Contact/Bumper/Law", "export-opensees writes bare gaps only");
-      if (!model.gaps.empty() && model.contact.law != "linear")
-        input.fail("Contact/Law", "export-opensees writes the linear contact law (ElasticPPGap) "
-                                  "only; '" + model.contact.law + "' not yet");
+      if (!model.gaps.empty())
+        refuse_contact_law(model.contact.law, input);
     }
 
     /// The excitation and the integration OpenSees cannot be given.
@@ -185,7 +211,42 @@ namespace poundfe
             }
     }
 
-    /// The gaps: zeroLength on ElasticPPGap from the left node to the right
+    std::string
+    gap_comment(const std::string &law)
+    {
+      if (law == "hertz")
+        return "# gaps: the Hertz contact law F = k_h d^1.5 as Hertzdamp k_h 0 -gap 1.5";
+      if (law == "jankowski")
+        return "# gaps: Jankowski's law F = k_h d^1.5 + 2 xi sqrt(k_h d^0.5 m_e) d' (approach) "
+               "as JankowskiImpact k_h xi m_e -gap 1.5";
+      return "# gaps: the linear contact law F = k d as ElasticPPGap k Fy -gap, "
+             "Fy beyond any impact's force";
+    }
+
+    /// The OpenSees material of a gap under the (accepted) contact law.
+    std::string
+    gap_material(const ContactLawParameters &law, const Gap &)
+    {
+      return law.law == "hertz" ? "Hertzdamp" :
+             law.law == "jankowski" ? "JankowskiImpact" : "ElasticPPGap";
+    }
+
+    /// Its values after the tag, in OpenSees's order: the gap negative (a
+    /// closure is a negative deformation u_j - u_i).
+    std::string
+    gap_material_values(const ContactLawParameters &law, const Gap &gap)
+    {
+      const double k = law.stiffness;
+      const std::string gap_value = exact_text(-gap.initial_gap);
+      if (law.law == "hertz")
+        return exact_text(k) + " 0.0 " + gap_value + " 1.5";
+      if (law.law == "jankowski")
+        return exact_text(k) + " " + exact_text(law.damping) + " " +
+               exact_text(gap.effective_mass) + " " + gap_value + " 1.5";
+      return exact_text(k) + " " + exact_text(-1e6 * k) + " " + gap_value;
+    }
+
+    /// The gaps: zeroLength on a gap material from the left node to the right
     /// one, a fixed node standing for a barrier.
     void
     describe_gaps(const Analysis &analysis, Tags &tags, OpenSeesExport &out)
@@ -193,8 +254,7 @@ namespace poundfe
       const Model &model = analysis.model;
       if (model.gaps.empty())
         return;
-      out.model.push_back("# gaps: the linear contact law F = k d as ElasticPPGap k Fy -gap, "
-                          "Fy beyond any impact's force");
+      out.model.push_back(gap_comment(model.contact.law));
       for (unsigned int g = 0; g < model.gaps.size(); ++g)
         {
           const Gap  &gap = model.gaps[g];
@@ -209,10 +269,9 @@ namespace poundfe
                 out.model.push_back("fix " + std::to_string(barrier) + " 1 ;# the barrier");
                 ends[side] = std::to_string(barrier);
               }
-          const double k = model.contact.stiffness;
-          out.model.push_back("uniaxialMaterial ElasticPPGap " + std::to_string(tags.material) +
-                              " " + exact_text(k) + " " + exact_text(-1e6 * k) + " " +
-                              exact_text(-gap.initial_gap) + " ;# " + gap.label);
+          out.model.push_back("uniaxialMaterial " + gap_material(model.contact, gap) + " " +
+                              std::to_string(tags.material) + " " +
+                              gap_material_values(model.contact, gap) + " ;# " + gap.label);
           out.gap_elements.push_back(tags.element);
           out.gap_names.push_back(gap.label.empty() ? "gap" + std::to_string(g + 1) : gap.label);
           out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
@@ -220,6 +279,8 @@ namespace poundfe
                               std::to_string(tags.material++) + " -dir 1");
         }
       out.nonlinear = true;
+      if (model.contact.law != "linear")
+        out.test_iterations = 500; // OpenSees's tangent of the wrong sign (header)
     }
   } // namespace
 

@@ -7,8 +7,10 @@
 #     of an unsupported command's error, argv with words that look like
 #     options, `exit` with the recorders' files in place;
 #  3. bad input: an unknown command, an unsupported option, a node that does
-#     not exist, a script error: one line naming the file and line, exit 1,
-#     no recorder file left.
+#     not exist, a script error, a Parallel of a missing material or with a
+#     factor short, an unknown MinMax option, a Hertzdamp short of values, a
+#     BoucWen with ko < 0: one line naming the file and line, exit 1, no
+#     recorder file left.
 #   opensees.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
 poundfe=$1 corpus=$2 python=$3
@@ -171,4 +173,15 @@ printf 'timeSeries Linear 1\npattern Plain 1 1 {\n  load 2 1.0\n  load 9 1.0\n}\
   | bad load-in-a-pattern '8: pattern: load: node 9 does not exist' || exit 1
 printf 'uniaxialMaterial Steel01 1 -100.0 1000.0 0.05\n' \
   | bad bad-material "5: uniaxialMaterial: parameter 'fy': Steel01: must be a positive number (got -100)" || exit 1
+# the materials of other materials and the contact materials: their own refusals
+printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial Parallel 2 1 9\n' \
+  | bad parallel-missing '6: uniaxialMaterial 9 does not exist' || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial Parallel 2 1 1 -factors 0.5\n' \
+  | bad parallel-factors '6: uniaxialMaterial: Parallel -factors takes one factor a material' || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial MinMax 2 1 -cap 1.0\n' \
+  | bad minmax-option "6: uniaxialMaterial MinMax option '-cap': poundfe does not support it" || exit 1
+printf 'uniaxialMaterial Hertzdamp 1 1.0e9\n' \
+  | bad hertzdamp-count '5: uniaxialMaterial: Hertzdamp does not take 1 values' || exit 1
+printf 'uniaxialMaterial BoucWen 1 0.1 -1.0 2.0 1.0 1.0 1.0 0.0 0.0 0.0\n' \
+  | bad bouc-wen-ko "5: uniaxialMaterial: parameter 'ko': BoucWen: must be a positive number (got -1)" || exit 1
 echo "opensees: ok"

@@ -11,9 +11,13 @@
 #    0), the same fixed-step Newmark-Newton: 1e-6, the difference of two
 #    converged Newton iterates (poundfe stops at a relative residual of
 #    1e-8, the script at |dU| < 1e-12);
+#  - the nonlinear contact laws OpenSees has the same equations of (hertz as
+#    Hertzdamp without damping, jankowski as JankowskiImpact), the same way
+#    at 1e-6, on the pounding pair with Contact/Law set;
 # and the refusals name the entry OpenSees cannot be given (frames, Bouc-Wen
-# storeys, a contact law other than the linear one, modal damping, a record
-# that does not start at zero).
+# storeys by their Storey yield drifts, the contact laws hertz-damp and
+# kelvin-voigt (saying how OpenSees's namesakes differ), nodal forces, modal
+# damping, a record that does not start at zero).
 #   opensees_export.sh POUNDFE INPUT_DIR PYTHON3
 set -u
 poundfe=$1 inputs=$2 python=$3
@@ -42,11 +46,11 @@ for j, name in enumerate(names):
 PY
 }
 
-check_example() { # NAME TOLERANCE [--set ...]
+check_example() { # NAME TOLERANCE [--set ...] (to both the export and the run)
   local name=$1 tolerance=$2
   shift 2
-  local dir="$work/$name"
-  "$poundfe" export-opensees "$inputs/$name.prm" --output "$dir/script" > "$dir.log" 2>&1 \
+  local dir="$work/$name${case_suffix:-}"
+  "$poundfe" export-opensees "$inputs/$name.prm" --output "$dir/script" "$@" > "$dir.log" 2>&1 \
     || { cat "$dir.log"; fail "$name: export"; }
   "$poundfe" opensees "$dir/script/model.tcl" "$dir/script" > "$dir.os.log" 2>&1 \
     || { cat "$dir.os.log"; fail "$name: poundfe opensees"; }
@@ -56,7 +60,7 @@ check_example() { # NAME TOLERANCE [--set ...]
     || { cat "$dir.run.log"; fail "$name: run"; }
   same_floors "$dir/script" "$dir/run" "$dir/script/model.tcl" "$tolerance" > "$dir.cmp" 2>&1 \
     || { cat "$dir.cmp"; fail "$name: floor displacements"; }
-  echo "ok $name"; cat "$dir.cmp"
+  echo "ok $name${case_suffix:-}"; cat "$dir.cmp"
 }
 
 # every example of input/ the export takes (the others are refused: below)
@@ -66,11 +70,21 @@ no_events=(--set "Contact/Event refinement=0" --set "Contact/Steps per contact=0
 for name in shear-pair-pounding site-hazard separation-hazard mitigation-shear-pair; do
   check_example $name 1e-6 "${no_events[@]}"
 done
-# the gaps closed: the pounding pair's script has gap forces, some non-zero
-"$python" -c "
+# the nonlinear contact laws OpenSees 3.8 has: hertz as Hertzdamp without
+# damping, jankowski as JankowskiImpact (its damping from the restitution)
+for law in hertz jankowski; do
+  case_suffix=-$law check_example shear-pair-pounding 1e-6 "${no_events[@]}" \
+    --set "Contact/Law=$law" --set "Contact/Stiffness=2e10"
+  grep -q "^uniaxialMaterial $( [ $law = hertz ] && echo Hertzdamp || echo JankowskiImpact) " \
+    "$work/shear-pair-pounding-$law/script/model.tcl" || fail "$law: not its OpenSees material"
+done
+# the gaps closed: the pounding pair's scripts have gap forces, some non-zero
+for case in shear-pair-pounding shear-pair-pounding-hertz shear-pair-pounding-jankowski; do
+  "$python" -c "
 import numpy as np, sys
-f = np.loadtxt('$work/shear-pair-pounding/script/gap_force.out', ndmin=2)
-sys.exit(0 if np.abs(f[:, 1:]).max() > 0 else 'no impact')" || fail "shear-pair-pounding: no impact"
+f = np.loadtxt('$work/$case/script/gap_force.out', ndmin=2)
+sys.exit(0 if np.abs(f[:, 1:]).max() > 0 else 'no impact')" || fail "$case: no impact"
+done
 
 # refusals by entry, nothing written
 refused() { # NAME EXPECTED-ENTRY-AND-MESSAGE-PART
@@ -82,8 +96,19 @@ refused() { # NAME EXPECTED-ENTRY-AND-MESSAGE-PART
   [ ! -e "$dir/model.tcl" ] || fail "$1: model.tcl written"
 }
 refused two-storey-frame "'Building 1/Type': export-opensees writes shear buildings only"
-refused bouc-wen-sdof "'Building 1/Bouc-Wen': export-opensees writes elastic storeys only"
-refused spillway-abutment "'Contact/Law': export-opensees writes the linear contact law"
+refused bouc-wen-sdof "'Building 1/Storey yield drifts': export-opensees writes elastic storeys only"
+refused spillway-abutment "'Nodal forces/File': export-opensees writes no nodal forces"
+# laws whose OpenSees namesakes differ: refused, saying how
+refused_law() { # LAW EXPECTED-MESSAGE-PART
+  local dir="$work/refused-law-$1"
+  "$poundfe" export-opensees "$inputs/shear-pair-pounding.prm" --output "$dir" \
+    --set "Contact/Law=$1" > "$dir.out" 2> "$dir.err"
+  [ $? = 1 ] || { cat "$dir.err"; fail "$1: not refused"; }
+  grep -qF -- "$2" "$dir.err" || { cat "$dir.err"; fail "$1: message"; }
+  [ ! -e "$dir/model.tcl" ] || fail "$1: model.tcl written"
+}
+refused_law hertz-damp "'Contact/Law': export-opensees writes the contact laws linear, hertz and jankowski; 'hertz-damp' not: OpenSees's Hertzdamp takes the approach velocity"
+refused_law kelvin-voigt "ViscoelasticGap lets the force k d + c d' turn negative"
 refused three-storey-free-vibration "'Building 1/Damping/Type': modal damping"
 # white noise without an envelope: a_g(0) != 0, where the two Newmarks start apart
 refused subset-drift "'Ground motion/Type': the ground motion starts at a_g(0) = "

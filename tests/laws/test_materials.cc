@@ -519,7 +519,8 @@ BOOST_AUTO_TEST_CASE(registry_makes_every_material_by_name)
 {
   const std::vector<std::string> names{"Steel01",    "Steel02",   "Concrete01",   "Concrete02",
                                        "ElasticPP",  "Hysteretic", "Elastic",     "ElasticPPGap",
-                                       "ImpactMaterial"};
+                                       "ImpactMaterial", "Hertzdamp", "JankowskiImpact",
+                                       "ViscoelasticGap", "Viscous", "BoucWen"};
   BOOST_TEST(material_names() == names, boost::test_tools::per_element());
   // defaults filled in: Steel02 by name behaves as Steel02 with OpenSees's
   // R0 = 20, cR1 = 0.925, cR2 = 0.15, a1 = a3 = 0, a2 = a4 = 1

@@ -193,6 +193,17 @@ namespace poundfe
       double       hinge_length_i = 0, hinge_length_j = 0;
     };
 
+    /// A material of other materials (laws/combined_materials.h), made from
+    /// its components' tags when an element is: Parallel (with its factors,
+    /// empty: 1) or MinMax (one component and its strain limits).
+    struct CombinedMaterial
+    {
+      std::string         type;
+      std::vector<int>    components;
+      std::vector<double> factors;
+      double              min_strain = -1.0e16, max_strain = 1.0e16; // OpenSees's defaults
+    };
+
     /// What a script built; the analysis (opensees_analysis.h) moves it.
     struct Domain
     {
@@ -200,6 +211,7 @@ namespace poundfe
       std::map<int, Node>                     nodes;
       std::map<int, std::unique_ptr<Element>> elements;
       std::map<int, MaterialParameters>       materials;
+      std::map<int, CombinedMaterial>         combined_materials;
       std::map<int, Transformation>           transformations;
       /// Sections by tag, each cloned into every integration point.
       std::map<int, std::shared_ptr<const SectionLaw>> sections;

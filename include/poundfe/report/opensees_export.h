@@ -43,6 +43,10 @@ namespace poundfe
     unsigned long       n_steps   = 0;
     /// Gaps present: Newton with a displacement test; else algorithm Linear.
     bool nonlinear = false;
+    /// The test's iteration limit: OpenSees 3.8's Hertzdamp and
+    /// JankowskiImpact give Newton a tangent of the wrong sign, with which it
+    /// converges linearly, in more iterations than 50.
+    unsigned int test_iterations = 50;
   };
 
   /// The OpenSees description of `analysis` under `parameters`' excitation

@@ -1,0 +1,71 @@
+// OpenSees's uniaxial materials made of other materials, as OpenSees 3.8
+// defines them (SRC/material/uniaxial/), so that a script's combinations give
+// OpenSees's numbers:
+//
+// Parallel (ParallelMaterial): every component at the same strain and rate;
+//   sigma = sum f_i sigma_i, tangent sum f_i E_i (f_i = 1 without -factors).
+//   OpenSees 3.8's ParallelMaterial has no damping tangent (getDampTangent is
+//   UniaxialMaterial's 0), whatever its components have: so has this one.
+// MinMax (MinMaxMaterial): the component while min < eps < max; a trial
+//   outside fails the material (stress 0, tangent 1e-8 times the
+//   component's initial tangent, damping tangent 0), and a committed failure
+//   is for good.
+#ifndef poundfe_laws_combined_materials_h
+#define poundfe_laws_combined_materials_h
+
+#include <poundfe/laws/uniaxial_law.h>
+
+#include <memory>
+#include <vector>
+
+namespace poundfe
+{
+  class ParallelUniaxial : public UniaxialLaw
+  {
+  public:
+    /// `factors` empty: every factor 1.
+    ParallelUniaxial(std::vector<std::unique_ptr<UniaxialLaw>> parts, std::vector<double> factors);
+
+    bool        set_trial(double strain, double rate) override;
+    std::string failure() const override { return why; }
+    double      force() const override;
+    double      tangent() const override;
+    double      stored_energy() const override;
+    double      initial_stiffness() const override;
+    void        commit() override;
+    void        revert() override;
+    void        reset() override;
+
+  private:
+    template <typename Value>
+    double sum(const Value &value) const;
+
+    std::vector<std::unique_ptr<UniaxialLaw>> parts;
+    std::vector<double>                       factors;
+    std::string                               why;
+  };
+
+  class MinMaxUniaxial : public UniaxialLaw
+  {
+  public:
+    MinMaxUniaxial(std::unique_ptr<UniaxialLaw> part, double min_strain, double max_strain);
+
+    bool        set_trial(double strain, double rate) override;
+    std::string failure() const override { return part->failure(); }
+    double      force() const override { return trial_failed ? 0.0 : part->force(); }
+    double      tangent() const override;
+    double      damping_tangent() const override;
+    double      stored_energy() const override;
+    double      initial_stiffness() const override { return part->initial_stiffness(); }
+    void        commit() override;
+    void        revert() override;
+    void        reset() override;
+
+  private:
+    std::unique_ptr<UniaxialLaw> part;
+    double                       min_strain, max_strain;
+    bool                         trial_failed = false, committed_failed = false;
+  };
+} // namespace poundfe
+
+#endif
