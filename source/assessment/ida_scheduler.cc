@@ -230,7 +230,8 @@ namespace poundfe
           take(std::move(earlier.responses), false);
           next_id = id + 1;
         }
-      journal = std::make_unique<AppendFile>(file);
+      if (!file.empty()) // "": the journal in memory, its rows those returned
+        journal = std::make_unique<AppendFile>(file);
     }
 
     void
@@ -240,7 +241,9 @@ namespace poundfe
       if (fresh)
         {
           // synced in groups: a sync can outlast the run (append_file.h)
-          journal->append_grouped(realization_line({next_id++, true, taken}, 0));
+          if (journal)
+            journal->append_grouped(realization_line({next_id, true, taken}, 0));
+          ++next_id;
           ++n_run_now;
         }
       rows.push_back(std::move(taken));
@@ -325,7 +328,8 @@ namespace poundfe
             ida_pause();
         }
       MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
-      journal->sync();
+      if (journal)
+        journal->sync();
       return std::move(rows);
     }
 
@@ -385,6 +389,22 @@ namespace poundfe
       result.records[r].points.push_back(std::move(point));
       ++result.n_runs;
     }
+
+    /// The text realizations.csv would hold after a fresh run of `rows`
+    /// (the order taken): a journal kept in memory.
+    std::string
+    journal_text(const std::vector<std::string> &names, const std::vector<std::vector<double>> &rows)
+    {
+      MonteCarloTable table;
+      table.columns = names;
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        {
+          table.realizations.push_back(i);
+          table.completed.push_back(true);
+          table.responses.push_back(rows[i]);
+        }
+      return realizations_text(table);
+    }
   } // namespace
 
   DealtRows
@@ -394,7 +414,9 @@ namespace poundfe
   {
     const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
     Assert(!rank0 || runs, dealii::ExcMessage("rank 0 deals"));
-    std::map<std::uint64_t, RealizationRow> journaled = open_realization_table(file, names, 0, comm);
+    std::map<std::uint64_t, RealizationRow> journaled; // none in memory
+    if (!file.empty())
+      journaled = open_realization_table(file, names, 0, comm);
     bool foreign = false; // a row of none of these runs
     for (const auto &[id, row] : journaled)
       foreign = foreign || (runs && !runs->holds(row.responses));
@@ -408,8 +430,11 @@ namespace poundfe
       {
         RunDealer dealer(run, *runs, names.size(), std::move(journaled), file, comm, progress,
                          offset);
-        for (const std::vector<double> &row : dealer.run())
+        const std::vector<std::vector<double>> rows = dealer.run();
+        for (const std::vector<double> &row : rows)
           flat.insert(flat.end(), row.begin(), row.end());
+        if (file.empty())
+          dealt.journal = journal_text(names, rows);
         dealt.n_run_now   = dealer.n_run_now;
         dealt.interrupted = !runs->finished();
       }
@@ -431,6 +456,8 @@ namespace poundfe
     ListedRuns listed(tasks);
     const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
     DealtRows  dealt = deal_runs(run, rank0 ? &listed : nullptr, names, file, comm, progress, offset);
+    if (file.empty())
+      result.journals.emplace_back("realizations.csv", std::move(dealt.journal));
     result.n_run_now += dealt.n_run_now;
     result.interrupted = result.interrupted || dealt.interrupted;
     return std::move(dealt.rows);
@@ -451,7 +478,7 @@ namespace poundfe
   {
     const auto         start     = std::chrono::steady_clock::now();
     const unsigned int n_records = runner.suite().records.size();
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0 && !journal.empty())
       create_directories(journal);
     IdaResult result;
     result.records.resize(n_records);
@@ -459,8 +486,11 @@ namespace poundfe
     const DealtRows dealt =
       deal_runs([&](const IdaTask &task) { return ida_row(runner, task); },
                 dealii::Utilities::MPI::this_mpi_process(comm) == 0 ? &hunts : nullptr,
-                ida_row_names(runner), journal + "/realizations.csv", comm, progress);
+                ida_row_names(runner), journal.empty() ? "" : journal + "/realizations.csv", comm,
+                progress);
     result.n_run_now = dealt.n_run_now;
+    if (journal.empty()) // "": in memory
+      result.journals.emplace_back("realizations.csv", dealt.journal);
     std::vector<HuntFill> searches(n_records, HuntFill(runner.search()));
     for (const std::vector<double> &row : dealt.rows)
       take_ida_row(row, searches, result);

@@ -244,17 +244,22 @@ namespace poundfe
 
   namespace
   {
-    /// The rows of `tasks` (journaled in `folder`/realizations.csv), dealt
+    /// The rows of `tasks` (journaled in `journal`/`part`/realizations.csv;
+    /// an empty `journal`: in memory, as counters.journals' part/...), dealt
     /// to the free ranks, as points in the tasks' order.
     std::vector<IdaPoint>
-    run_msa_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &folder,
-                  const MPI_Comm comm, Progress *const progress, IdaResult &counters)
+    run_msa_tasks(IdaRunner &runner, const std::vector<IdaTask> &tasks, const std::string &journal,
+                  const std::string &part, const MPI_Comm comm, Progress *const progress,
+                  IdaResult &counters)
     {
-      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      const std::string folder = journal + "/" + part;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0 && !journal.empty())
         create_directories(folder);
-      const std::string file = folder + "/realizations.csv";
+      const std::string file = journal.empty() ? "" : folder + "/realizations.csv";
       const std::vector<std::vector<double>> rows =
         run_ida_tasks(runner, tasks, file, comm, progress, counters.n_runs, counters);
+      if (journal.empty()) // the journal's text under its part's name
+        counters.journals.back().first = part + "/" + counters.journals.back().first;
       // a row is the first task of its record and intensity without one
       // (deal_runs refused a journal of other runs); a point without
       // demands was not run (interrupted)
@@ -290,7 +295,7 @@ namespace poundfe
       for (unsigned int r = 0; r < n_records; ++r)
         tasks.push_back({r, x});
     const std::vector<IdaPoint> points =
-      run_msa_tasks(runner, tasks, journal + "/stripes", comm, progress, result.counters);
+      run_msa_tasks(runner, tasks, journal, "stripes", comm, progress, result.counters);
     for (std::size_t j = 0; j < stripes.size(); ++j)
       result.runs.emplace_back(points.begin() + j * n_records, points.begin() + (j + 1) * n_records);
     if (cloud && !result.counters.interrupted)
@@ -298,7 +303,7 @@ namespace poundfe
         std::vector<IdaTask> own;
         for (unsigned int r = 0; r < n_records; ++r)
           own.push_back({r, runner.base_intensities()[r]});
-        result.cloud = run_msa_tasks(runner, own, journal + "/cloud", comm, progress, result.counters);
+        result.cloud = run_msa_tasks(runner, own, journal, "cloud", comm, progress, result.counters);
       }
     result.counters.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,4 +1,5 @@
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/interruption_scope.h>
 
 #include <csignal>
 
@@ -79,6 +80,37 @@ namespace poundfe
   {
     if (stop_at_safe_points && received != 0)
       throw Interrupted();
+  }
+
+  namespace
+  {
+    /// The handlers an InterruptionScope replaced (one scope at a time:
+    /// Python runs one command at a time).
+    struct sigaction saved_actions[2];
+  } // namespace
+
+  InterruptionScope::InterruptionScope()
+  {
+    for (int i = 0; i < 2; ++i)
+      sigaction(signals[i], nullptr, &saved_actions[i]);
+    received = 0;
+    install_interruption_handlers();
+  }
+
+  InterruptionScope::~InterruptionScope()
+  {
+    for (int i = 0; i < 2; ++i)
+      {
+        sigaction(signals[i], &saved_actions[i], nullptr);
+        installed[i] = false;
+      }
+    received = 0;
+  }
+
+  int
+  InterruptionScope::signal() const
+  {
+    return received;
   }
 
   int

@@ -57,8 +57,10 @@ namespace poundfe
       {"run", "FILE", "time-history analysis (summary.json, CSV, VTU, PNG)",
        file | own_interruption | distributed_solver | partition | fields | rigid, summary,
        commands::run},
-      {"modal", "FILE", "frequencies, periods, participating masses, modes.pvd",
-       file | fields, summary, commands::modal},
+      {"modal", "FILE",
+       "frequencies, periods, participating masses, mode shapes\n"
+       "(mode_shapes.csv, modes.pvd)",
+       file | fields | memory, summary, commands::modal},
       {"pushover", "FILE",
        "static pushover after the gravity state: capacity curve, storey\n"
        "drifts and hinges (pushover.csv, PNG), EC8 bilinear curve and N2 target",
@@ -84,12 +86,12 @@ namespace poundfe
        "incremental dynamic analysis of the IDA section's record suite:\n"
        "hunt and fill to collapse per record, every demand at every\n"
        "intensity, fractile curves, collapse fragility (MPI)",
-       file | mpi | own_interruption | resumable, summary, commands::ida},
+       file | mpi | own_interruption | resumable | memory, summary, commands::ida},
       {"msa", "FILE",
        "multiple-stripe and cloud analysis of the IDA section's suite at\n"
        "the MSA section's intensities or hazard return periods: fragility\n"
        "of collapse and each limit state, annual rates of exceedance (MPI)",
-       file | mpi | own_interruption | resumable, summary, commands::msa},
+       file | mpi | own_interruption | resumable | memory, summary, commands::msa},
       {"select-records", "FILE",
        "select and scale records of a suite to a target spectrum (EC8,\n"
        "ASCE 7, a table, BSSA14's conditional mean spectrum): a suite file",

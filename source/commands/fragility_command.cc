@@ -79,16 +79,20 @@ namespace poundfe::commands
     }
 
     /// In memory, each level's realizations.csv under `folder`: the rows a
-    /// run into files journals as they come.
+    /// run into files journals as they come (an interrupted level's too,
+    /// which such a run keeps to resume from).
     void
     write_level_tables(const CommandRun &run, const FragilityLevels &done,
                        const std::string &folder)
     {
       if (run.memory)
         for (std::size_t j = 0; j < done.tables.size(); ++j)
-          write_result_text(run.memory, run.directory,
-                            folder + fragility_level_folder(done.levels[j]) + "/realizations.csv",
-                            realizations_text(done.tables[j]));
+          {
+            const double level = j < done.levels.size() ? done.levels[j] : done.interrupted_level;
+            write_result_text(run.memory, run.directory,
+                              folder + fragility_level_folder(level) + "/realizations.csv",
+                              realizations_text(done.tables[j]));
+          }
     }
 
     /// The curves in summary.json and the console, and fragility.png's series.

@@ -22,6 +22,7 @@
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 
@@ -40,7 +41,7 @@ namespace poundfe::commands
   {
     /// ida.csv: one row per run, by record and intensity.
     void
-    write_runs(const std::string &directory, const IdaRunner &runner, const IdaResult &result)
+    write_runs(const CommandRun &run, const IdaRunner &runner, const IdaResult &result)
     {
       std::string text = "record,name,intensity,scale_factor,collapsed";
       for (const std::string &n : runner.demand_names())
@@ -56,14 +57,14 @@ namespace poundfe::commands
               append_field(text, x);
             text += "\n";
           }
-      write_file_atomically(directory + "/ida.csv", text);
+      write_result_text(run.memory, run.directory, "ida.csv", text);
     }
 
     /// ida_records.csv: each record's metadata and intensity measures as
     /// scaled in the suite (the first component's; a pair's Sa as well by
     /// the geometric mean, RotD50 and RotD100).
     void
-    write_records(const std::string &directory, const IdaRunner &runner, const double period,
+    write_records(const CommandRun &run, const IdaRunner &runner, const double period,
                   const double zeta)
     {
       const RecordSuite &suite = runner.suite();
@@ -91,12 +92,12 @@ namespace poundfe::commands
                                               {period}, zeta));
           text += "\n";
         }
-      write_file_atomically(directory + "/ida_records.csv", text);
+      write_result_text(run.memory, run.directory, "ida_records.csv", text);
     }
 
     /// ida_fractiles.csv: the 16/50/84 % fractiles over 50 intensities.
     void
-    write_fractiles(const std::string &directory, const IdaRunner &runner,
+    write_fractiles(const CommandRun &run, const IdaRunner &runner,
                     const IdaResult &result, const double top)
     {
       std::string text = "intensity,max_drift_ratio_16,max_drift_ratio_50,max_drift_ratio_84,"
@@ -118,12 +119,12 @@ namespace poundfe::commands
             append_field(text, empirical_quantile(demands, p));
           text += "," + std::to_string(demands.size()) + "\n";
         }
-      write_file_atomically(directory + "/ida_fractiles.csv", text);
+      write_result_text(run.memory, run.directory, "ida_fractiles.csv", text);
     }
 
     /// The collapse intensities and the fit; collapse_fragility.csv.
     CollapseFragility
-    write_fragility(const std::string &directory, const IdaResult &result, const double upper)
+    write_fragility(const CommandRun &run, const IdaResult &result, const double upper)
     {
       std::vector<double> collapse;
       unsigned int        censored = 0;
@@ -145,7 +146,7 @@ namespace poundfe::commands
                                           std::nan(""));
           text += "\n";
         }
-      write_file_atomically(directory + "/collapse_fragility.csv", text);
+      write_result_text(run.memory, run.directory, "collapse_fragility.csv", text);
       return fit;
     }
     /// ida.png: each record's curve (largest drift ratio against the
@@ -243,14 +244,15 @@ namespace poundfe::commands
     RecordSuite    suite    = read_record_suite(input.resolve(ida.suite), "IDA/Suite");
     const Analysis analysis = prepare_analysis(input);
     IdaRunner      runner(analysis, time_history_parameters(input), ida, std::move(suite));
-    if (rank == 0) // the rounds of an earlier run stay: it resumes from them
+    if (rank == 0 && !run.memory) // the rounds of an earlier run stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});
     timer.leave_subsection();
 
     timer.enter_subsection("runs");
     Progress progress(std::cerr, "IDA runs",
                       runner.suite().records.size() * static_cast<unsigned long>(ida.runs_per_record));
-    const IdaResult result = run_ida(runner, directory + "/journal", comm, &progress);
+    // "": the journal in memory
+    const IdaResult result = run_ida(runner, run.memory ? "" : directory + "/journal", comm, &progress);
     progress.finish();
     timer.leave_subsection();
     const int status = result.interrupted ? interrupted_exit_status() : 0;
@@ -262,32 +264,34 @@ namespace poundfe::commands
       pcout << "ida interrupted after " << result.n_runs << " runs: the results are of these; "
             << "the same command runs the rest\n";
     const double upper = ida.upper_intensity;
-    write_runs(directory, runner, result);
+    write_runs(run, runner, result);
+    for (const auto &[name, text] : result.journals) // in memory: what journal/ would hold
+      write_result_text(run.memory, directory, "journal/" + name, text);
     const std::vector<double> &periods = runner.measure_periods();
     const double first = analysis.modes.omega.empty() ? 1.0 : 2 * M_PI / analysis.modes.omega[0];
-    write_records(directory, runner, ida.measure == IntensityMeasure::sa ? periods[0] : first,
+    write_records(run, runner, ida.measure == IntensityMeasure::sa ? periods[0] : first,
                   ida.damping_ratio);
-    write_fractiles(directory, runner, result, upper);
-    const CollapseFragility fit = write_fragility(directory, result, upper);
+    write_fractiles(run, runner, result, upper);
+    const CollapseFragility fit = write_fragility(run, result, upper);
     JsonWriter json;
     begin_summary(json, "ida", input, result.interrupted ? "interrupted" : "completed");
     write_summary(json, run.out, runner, result, ida, fit);
     write_collapse_margin(runner, result, ida, json, run.out);
     std::vector<std::string> tables;
-    write_ida_demand_tables(directory, analysis.model, runner, result, ida, json, run.out, tables);
+    write_ida_demand_tables(run, analysis.model, runner, result, ida, json, run.out, tables);
     json.end_object();
     const std::string measure = intensity_measure_names().name(ida.measure) + " (" +
                                 intensity_unit(ida.measure) + ")";
-    if (input.output.plots && !result.interrupted)
+    const bool draws = input.output.plots && !result.interrupted && !run.memory;
+    if (draws)
       draw_plots(directory, {ida_plot(runner, measure)});
-    write_file_atomically(directory + "/summary.json", json.str());
+    write_result_text(run.memory, directory, "summary.json", json.str());
     timer.leave_subsection();
     pcout << result.n_runs << " runs (" << result.n_run_now << " now, "
           << rounded(result.n_run_now / std::max(1e-9, result.wall_time)) << " runs/s); results in "
-          << directory << "/ (summary.json, ida.csv, ida_records.csv, ida_fractiles.csv, "
+          << run.results_place() << " (summary.json, ida.csv, ida_records.csv, ida_fractiles.csv, "
           << "collapse_fragility.csv" << (tables.empty() ? "" : ", demands_*.csv")
-          << (input.output.plots && !result.interrupted ? ", ida.png" : "")
-          << ", journal/)\n";
+          << (draws ? ", ida.png" : "") << ", journal/)\n";
     print_timing(timer);
     return status;
   }

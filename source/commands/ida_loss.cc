@@ -6,7 +6,8 @@
 #include <poundfe/assessment/ida_demands.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/excitation/intensity_measures.h>
-#include <poundfe/output/atomic_file.h>
+#include <poundfe/commands/command.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/demand_table.h>
 #include <poundfe/output/json_writer.h>
 
@@ -16,7 +17,7 @@
 namespace poundfe::commands
 {
   void
-  write_ida_demand_tables(const std::string &directory, const Model &model,
+  write_ida_demand_tables(const CommandRun &run, const Model &model,
                           const IdaRunner &runner, const IdaResult &result,
                           const IdaParameters &ida, JsonWriter &json, std::ostream &out,
                           std::vector<std::string> &files)
@@ -46,7 +47,7 @@ namespace poundfe::commands
             for (const ResponseDemands &row : sample.rows)
               table.add(row);
             names.push_back(demand_table_file(model, b, "_im" + std::to_string(k + 1)));
-            write_file_atomically(directory + "/" + names.back(), table.csv());
+            write_result_text(run.memory, run.directory, names.back(), table.csv());
           }
         std::vector<std::string> records;
         for (const unsigned int r : sample.records)

@@ -15,14 +15,16 @@ namespace poundfe
 {
   class JsonWriter;
   class Model;
+  struct CommandRun;
 } // namespace poundfe
 
 namespace poundfe::commands
 {
   /// demands_<building>_im<k>.csv for each intensity of IDA/Demand
-  /// intensities; summary.json's "demand_tables" and the report's lines.
+  /// intensities (into run.directory or run.memory); summary.json's
+  /// "demand_tables" and the report's lines.
   /// The names of the files written are appended to `files`.
-  void write_ida_demand_tables(const std::string &directory, const Model &model,
+  void write_ida_demand_tables(const CommandRun &run, const Model &model,
                                const IdaRunner &runner, const IdaResult &result,
                                const IdaParameters &ida, JsonWriter &json, std::ostream &out,
                                std::vector<std::string> &files);

@@ -1,10 +1,15 @@
 // `poundfe modal`: the frequencies, periods and participating masses of the
-// model and of each building (summary.json), and the mode shapes (modes.pvd).
+// model and of each building (summary.json), the mass-normalised mode shapes
+// as tables (mode_shapes.csv, mode_shapes_<building>.csv: what Python's
+// Modes holds, double for double) and drawn (modes.pvd, with a directory
+// only: results in memory draw none).
 #include <poundfe/commands/command.h>
 #include <poundfe/dynamics/foundation_periods.h>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
+#include <poundfe/output/recorders.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/vtu_series.h>
 #include <poundfe/report/run_summary.h>
@@ -79,6 +84,42 @@ namespace poundfe
       return json.str();
     }
 
+    /// mode_shapes<suffix>.csv: one row per mode (its number, ω in rad/s,
+    /// then its mass-normalised shape over the equations `labels`).
+    void
+    write_mode_shapes(const CommandRun &run, const std::string &suffix, const Modes &modes,
+                      const std::vector<std::string> &labels)
+    {
+      std::vector<std::string> header{"mode", "omega_rad_s"};
+      header.insert(header.end(), labels.begin(), labels.end());
+      const std::unique_ptr<TableWriter> table =
+        result_table_writer(run.memory, run.directory, "mode_shapes" + suffix, header);
+      std::vector<double> row(labels.size() + 1);
+      for (unsigned int i = 0; i < modes.n_modes(); ++i)
+        {
+          row[0] = modes.omega[i];
+          for (std::size_t k = 0; k < labels.size(); ++k)
+            row[k + 1] = modes.shapes(k, i);
+          table->add_row(i + 1, row);
+        }
+      table->commit();
+    }
+
+    /// The model's mode shapes and each building's (its own equations).
+    void
+    write_all_mode_shapes(const CommandRun &run, const Analysis &analysis)
+    {
+      const std::vector<std::string> labels = equation_labels(analysis.model);
+      write_mode_shapes(run, "", analysis.modes, labels);
+      for (unsigned int b = 0; b < analysis.model.buildings.size(); ++b)
+        {
+          const auto range = analysis.model.equation_range(b);
+          write_mode_shapes(run, "_" + analysis.model.buildings[b].name, analysis.building_modes[b],
+                            std::vector<std::string>(labels.begin() + range[0],
+                                                     labels.begin() + range[1]));
+        }
+    }
+
     /// The table of the model's modes.
     void
     print_modes(const Modes &modes, std::ostream &out)
@@ -110,20 +151,26 @@ namespace poundfe::commands
   modal(const CommandRun &run)
   {
     const Analysis analysis = prepare_analysis(*run.input);
-    prepare_output_directory(run.directory);
+    if (!run.memory)
+      prepare_output_directory(run.directory);
     const std::vector<FoundationPeriods> periods = foundation_periods(analysis.model);
     const std::string summary = modal_summary(analysis, *run.input, periods);
     const FieldFormat format = run.input->output.field_format;
-    VtuSeries         modes(analysis.model, run.directory, "modes", format);
-    for (unsigned int i = 0; i < analysis.modes.n_modes(); ++i)
-      modes.write_mode(i + 1, analysis.modes.frequency(i), analysis.modes.shapes.col(i));
-    modes.finish();
-    write_file_atomically(run.directory + "/summary.json", summary);
+    if (!run.memory) // the drawn shapes: files only
+      {
+        VtuSeries modes(analysis.model, run.directory, "modes", format);
+        for (unsigned int i = 0; i < analysis.modes.n_modes(); ++i)
+          modes.write_mode(i + 1, analysis.modes.frequency(i), analysis.modes.shapes.col(i));
+        modes.finish();
+      }
+    write_all_mode_shapes(run, analysis);
+    write_result_text(run.memory, run.directory, "summary.json", summary);
 
     print_modes(analysis.modes, run.out);
     print_foundation_periods(analysis.model, periods, run.out);
-    run.out << "results in " << run.directory << "/ (summary.json, "
-            << (format == FieldFormat::xdmf ? "modes.xdmf" : "modes.pvd") << ")\n";
+    run.out << "results in " << run.results_place() << " (summary.json, mode_shapes*.csv"
+            << (run.memory ? "" : format == FieldFormat::xdmf ? ", modes.xdmf" : ", modes.pvd")
+            << ")\n";
     return 0;
   }
 } // namespace poundfe::commands

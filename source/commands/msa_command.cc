@@ -19,6 +19,7 @@
 #include <poundfe/output/append_file.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/memory_results.h>
 #include <poundfe/output/output_directory.h>
 #include <poundfe/output/plots.h>
 
@@ -79,7 +80,7 @@ namespace poundfe::commands
 
     /// msa.csv: one row per run.
     void
-    write_runs(const std::string &directory, const IdaRunner &runner, const MsaResult &result,
+    write_runs(const CommandRun &run, const IdaRunner &runner, const MsaResult &result,
                const Stripes &stripes)
     {
       std::string text = "stripe,intensity,return_period_years,record,name,scale_factor,collapsed";
@@ -102,7 +103,7 @@ namespace poundfe::commands
               append_field(text, x);
             text += "\n";
           }
-      write_file_atomically(directory + "/msa.csv", text);
+      write_result_text(run.memory, run.directory, "msa.csv", text);
     }
 
     /// Each limit state's counts at every stripe (the runs done).
@@ -125,7 +126,7 @@ namespace poundfe::commands
 
     /// msa_stripes.csv: per stripe, the runs and the fraction exceeding each state.
     void
-    write_stripes(const std::string &directory, const std::vector<LimitState> &states,
+    write_stripes(const CommandRun &run, const std::vector<LimitState> &states,
                   const std::vector<std::vector<StripeCount>> &counts, const Stripes &stripes)
     {
       std::string text = "intensity,return_period_years,runs";
@@ -146,7 +147,7 @@ namespace poundfe::commands
             }
           text += "\n";
         }
-      write_file_atomically(directory + "/msa_stripes.csv", text);
+      write_result_text(run.memory, run.directory, "msa_stripes.csv", text);
     }
 
     /// A fitted limit state: by the stripes' binomial likelihood, its rate.
@@ -178,7 +179,7 @@ namespace poundfe::commands
 
     /// msa_fragility.csv and msa_curves.csv (100 intensities up to twice the top stripe).
     std::vector<FittedState>
-    write_fragilities(const std::string &directory, const std::vector<LimitState> &states,
+    write_fragilities(const CommandRun &run, const std::vector<LimitState> &states,
                       const std::vector<std::vector<StripeCount>> &counts, const Stripes &stripes,
                       const MsaResult &result, std::vector<std::string> &warnings)
     {
@@ -200,7 +201,7 @@ namespace poundfe::commands
             append_field(text, fit.fragility.fitted ? x : std::nan(""));
           text += "," + fit.fragility.note + "\n";
         }
-      write_file_atomically(directory + "/msa_fragility.csv", text);
+      write_result_text(run.memory, run.directory, "msa_fragility.csv", text);
       const double top = 2 * *std::max_element(stripes.intensity.begin(), stripes.intensity.end());
       std::string  curves = "intensity";
       for (const LimitState &state : states)
@@ -214,13 +215,13 @@ namespace poundfe::commands
                                                         std::nan(""));
           curves += "\n";
         }
-      write_file_atomically(directory + "/msa_curves.csv", curves);
+      write_result_text(run.memory, run.directory, "msa_curves.csv", curves);
       return fits;
     }
 
     /// cloud.csv and the regression of the cloud demand on the intensity.
     CloudFit
-    write_cloud(const std::string &directory, const IdaRunner &runner, const MsaResult &result,
+    write_cloud(const CommandRun &run, const IdaRunner &runner, const MsaResult &result,
                 const InputParameters &input)
     {
       const std::vector<std::string> &names = runner.demand_names();
@@ -247,7 +248,7 @@ namespace poundfe::commands
           if (!p.collapsed)
             x.push_back(p.intensity), d.push_back(p.demands[column - names.begin()]);
         }
-      write_file_atomically(directory + "/cloud.csv", text);
+      write_result_text(run.memory, run.directory, "cloud.csv", text);
       return fit_cloud(x, d);
     }
 
@@ -324,15 +325,17 @@ namespace poundfe::commands
       const IdaParameters    &ida   = input.ida;
       const std::vector<LimitState> states =
         input.msa.parse_limit_states(input, runner.demand_names());
-      write_runs(run.directory, runner, result, stripes);
+      write_runs(run, runner, result, stripes);
+      for (const auto &[name, text] : result.counters.journals) // in memory: journal/'s texts
+        write_result_text(run.memory, run.directory, "journal/" + name, text);
       const auto counts = count_stripes(result, states);
-      write_stripes(run.directory, states, counts, stripes);
+      write_stripes(run, states, counts, stripes);
       std::vector<std::string>       warnings;
       const std::vector<FittedState> fits =
-        write_fragilities(run.directory, states, counts, stripes, result, warnings);
+        write_fragilities(run, states, counts, stripes, result, warnings);
       std::optional<CloudFit> cloud;
       if (input.msa.cloud && !result.cloud.empty())
-        cloud = write_cloud(run.directory, runner, result, input);
+        cloud = write_cloud(run, runner, result, input);
       const std::string unit = intensity_unit(ida.measure);
       JsonWriter        json;
       begin_summary(json, "msa", input, result.counters.interrupted ? "interrupted" : "completed");
@@ -345,10 +348,10 @@ namespace poundfe::commands
       for (const std::string &w : warnings)
         run.out << "warning: " << w << "\n";
       json.end_object();
-      if (input.output.plots && !result.counters.interrupted)
+      if (input.output.plots && !result.counters.interrupted && !run.memory)
         draw_plots(run.directory, {msa_plot(states, intensity_measure_names().name(ida.measure) +
                                                      " (" + unit + ")")});
-      write_file_atomically(run.directory + "/summary.json", json.str());
+      write_result_text(run.memory, run.directory, "summary.json", json.str());
     }
   } // namespace
 
@@ -369,7 +372,7 @@ namespace poundfe::commands
     const Analysis analysis = prepare_analysis(input);
     IdaRunner      runner(analysis, time_history_parameters(input), input.ida, std::move(suite));
     input.msa.parse_limit_states(input, runner.demand_names()); // refused before any run
-    if (rank == 0) // the journal of an earlier run stays: it resumes from it
+    if (rank == 0 && !run.memory) // the journal of an earlier run stays: it resumes from it
       prepare_output_directory(run.directory, {"realizations.csv"});
     timer.leave_subsection();
 
@@ -378,7 +381,8 @@ namespace poundfe::commands
     Progress progress(std::cerr, "MSA runs",
                       n_records * (stripes.intensity.size() + (input.msa.cloud ? 1 : 0)));
     const MsaResult result =
-      run_msa(runner, stripes.intensity, input.msa.cloud, run.directory + "/journal", comm, &progress);
+      run_msa(runner, stripes.intensity, input.msa.cloud, run.memory ? "" : run.directory + "/journal",
+              comm, &progress); // "": the journal in memory
     progress.finish();
     timer.leave_subsection();
     const int status = result.counters.interrupted ? interrupted_exit_status() : 0;
@@ -392,9 +396,10 @@ namespace poundfe::commands
     write_msa(run, runner, result, stripes);
     timer.leave_subsection();
     pcout << result.counters.n_runs << " runs (" << result.counters.n_run_now << " now); results in "
-          << run.directory << "/ (summary.json, msa.csv, msa_stripes.csv, msa_fragility.csv, "
+          << run.results_place() << " (summary.json, msa.csv, msa_stripes.csv, msa_fragility.csv, "
           << "msa_curves.csv" << (input.msa.cloud ? ", cloud.csv" : "")
-          << (input.output.plots && !result.counters.interrupted ? ", msa.png" : "") << ", journal/)\n";
+          << (input.output.plots && !result.counters.interrupted && !run.memory ? ", msa.png" : "")
+          << ", journal/)\n";
     print_timing(timer);
     return status;
   }

@@ -1,4 +1,5 @@
 #include <poundfe/input/input_parameters.h>
+#include <poundfe/input/parameter_text.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/input_text.h>
 #include <poundfe/base/numbers.h>
@@ -445,78 +446,105 @@ namespace poundfe
     return inputs;
   }
 
+  namespace
+  {
+    /// The extension of a parameter file's name, .prm or .json.
+    std::string
+    parameter_file_extension(const std::string &file)
+    {
+      const std::string extension = std::filesystem::path(file).extension().string();
+      if (extension != ".prm" && extension != ".json")
+        throw InputError(file, 0, "", "parameter files end in .prm or .json");
+      return extension;
+    }
+
+    /// The text of a parameter file `file` in `directory` (the one against
+    /// which its relative file names are taken), read and checked.
+    InputParameters
+    read_parameter_input(const std::string &file, const std::string &directory, std::string text,
+                         const std::vector<ParameterOverride> &overrides)
+    {
+      const std::string extension = parameter_file_extension(file);
+      InputParameters   p;
+      p.file      = file;
+      p.directory = directory;
+      p.overrides = overrides;
+      if (extension == ".prm")
+        {
+          PrmText prm = prepare_prm_text(file, text);
+          p.lines     = std::move(prm.lines);
+          text        = std::move(prm.text);
+        }
+      else
+        {
+          check_json_text(file, text);
+          std::istringstream             json(text);
+          boost::property_tree::ptree    tree;
+          try
+            {
+              boost::property_tree::read_json(json, tree);
+            }
+          catch (const boost::property_tree::json_parser_error &)
+            {
+              // deal.II's parser reports the fault with its line below
+            }
+          index_json_entries(tree, "", p.lines);
+        }
+
+      // First pass: only the numbers of buildings and of cross-sections, which
+      // shape the declarations.
+      unsigned int n_buildings = 1, n_sections = 0;
+      {
+        ParameterHandler prm;
+        ModelParameters::declare_number_of_buildings(prm, n_buildings);
+        SectionsParameters::declare_number_of_sections(prm, n_sections);
+        parse(prm, p, text, extension == ".json", overrides, true);
+      }
+      p.model.buildings.resize(n_buildings);
+      p.sections.sections.resize(n_sections);
+      ParameterHandler prm;
+      p.declare(prm);
+      try
+        {
+          parse(prm, p, text, extension == ".json", overrides, false);
+        }
+      catch (const InputError &e)
+        {
+          // a building beyond the number declared: deal.II's words for it
+          // (.prm), or a "Building <k>" key whose entries it cannot find (JSON)
+          const std::string undeclared = "There is no such subsection to be entered: Building ";
+          std::string       building;
+          int               line = e.line();
+          if (e.problem().rfind(undeclared, 0) == 0)
+            building = e.problem().substr(undeclared.size());
+          else if (extension == ".json")
+            building = building_beyond(text, n_buildings, line);
+          if (building.empty())
+            throw;
+          throw InputError(e.file(), line, "",
+                           "'Building " + building + "' is given, but Model/Number of buildings is " +
+                             std::to_string(n_buildings) + " (raise it, or remove the section)");
+        }
+      p.values = flattened_values(prm);
+      p.finalize();
+      return p;
+    }
+  } // namespace
+
   InputParameters
   read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
   {
     check_input_file(file, "parameter file");
-    const std::string extension = std::filesystem::path(file).extension().string();
-    if (extension != ".prm" && extension != ".json")
-      throw InputError(file, 0, "", "parameter files end in .prm or .json");
+    parameter_file_extension(file);
+    return read_parameter_input(file, std::filesystem::path(file).parent_path().string(),
+                                read_input_text(file), overrides);
+  }
 
-    InputParameters p;
-    p.file      = file;
-    p.directory = std::filesystem::path(file).parent_path().string();
-    p.overrides = overrides;
-    std::string text = read_input_text(file);
-    if (extension == ".prm")
-      {
-        PrmText prm = prepare_prm_text(file, text);
-        p.lines     = std::move(prm.lines);
-        text        = std::move(prm.text);
-      }
-    else
-      {
-        check_json_text(file, text);
-        std::istringstream             json(text);
-        boost::property_tree::ptree    tree;
-        try
-          {
-            boost::property_tree::read_json(json, tree);
-          }
-        catch (const boost::property_tree::json_parser_error &)
-          {
-            // deal.II's parser reports the fault with its line below
-          }
-        index_json_entries(tree, "", p.lines);
-      }
-
-    // First pass: only the numbers of buildings and of cross-sections, which
-    // shape the declarations.
-    unsigned int n_buildings = 1, n_sections = 0;
-    {
-      ParameterHandler prm;
-      ModelParameters::declare_number_of_buildings(prm, n_buildings);
-      SectionsParameters::declare_number_of_sections(prm, n_sections);
-      parse(prm, p, text, extension == ".json", overrides, true);
-    }
-    p.model.buildings.resize(n_buildings);
-    p.sections.sections.resize(n_sections);
-    ParameterHandler prm;
-    p.declare(prm);
-    try
-      {
-        parse(prm, p, text, extension == ".json", overrides, false);
-      }
-    catch (const InputError &e)
-      {
-        // a building beyond the number declared: deal.II's words for it
-        // (.prm), or a "Building <k>" key whose entries it cannot find (JSON)
-        const std::string undeclared = "There is no such subsection to be entered: Building ";
-        std::string       building;
-        int               line = e.line();
-        if (e.problem().rfind(undeclared, 0) == 0)
-          building = e.problem().substr(undeclared.size());
-        else if (extension == ".json")
-          building = building_beyond(text, n_buildings, line);
-        if (building.empty())
-          throw;
-        throw InputError(e.file(), line, "",
-                         "'Building " + building + "' is given, but Model/Number of buildings is " +
-                           std::to_string(n_buildings) + " (raise it, or remove the section)");
-      }
-    p.values = flattened_values(prm);
-    p.finalize();
-    return p;
+  InputParameters
+  read_parameter_text(const std::string &name, const std::string &text,
+                      const std::vector<ParameterOverride> &overrides)
+  {
+    return read_parameter_input(name, "", text, overrides);
   }
 
   InputParameters

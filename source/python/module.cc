@@ -1,6 +1,6 @@
 // The compiled part of the Python module `poundfe` (poundfe._core): the
 // errors as Python exceptions, the parameter file as an `Input` object and
-// the modal analysis. The time history and the commands are in time_history_binding.cc; the
+// the modes of a prepared analysis (a run's Results.modes). The time history and the commands are in time_history_binding.cc; the
 // Pythonic layer (results as numpy arrays, the model builder) is in
 // source/python/poundfe/*.py.
 //
@@ -14,6 +14,7 @@
 #include <poundfe/base/interruption.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/input_parameters.h>
+#include <poundfe/input/parameter_text.h>
 #include <poundfe/output/recorders.h>
 #include <poundfe/sections/section_parameters.h>
 
@@ -246,6 +247,19 @@ namespace poundfe::python
         "Read and check a .prm or .json file, with (path, value) overrides.");
 
       m.def(
+        "read_text",
+        [](const std::string &name, const std::string &text,
+           const std::vector<std::pair<std::string, std::string>> &pairs) {
+          py::gil_scoped_release release;
+          return std::make_shared<InputParameters>(
+            read_parameter_text(name, text, overrides_of(pairs)));
+        },
+        py::arg("name"), py::arg("text"),
+        py::arg("overrides") = std::vector<std::pair<std::string, std::string>>{},
+        "Read and check a parameter file's text without a file (a Model's), named `name` in "
+        "messages; relative file names against the working directory.");
+
+      m.def(
         "declarations",
         []() {
           std::ostringstream text;
@@ -253,10 +267,6 @@ namespace poundfe::python
           return text.str();
         },
         "What `poundfe print-parameters` prints: every section and entry as declared.");
-
-      m.def(
-        "modal", [](const InputParameters &input) { return modes_of(*prepare(input)); },
-        py::arg("input"), "The whole model's modes and each building's, as a dict.");
 
       m.def("moment_curvature", &moment_curvature_of, py::arg("input"),
             "The Moment curvature section's curve (NumPy arrays) and its summary, as a dict.");

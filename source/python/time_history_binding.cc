@@ -7,6 +7,7 @@
 #include "module.h"
 
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/interruption_scope.h>
 #include <poundfe/commands/command_table.h>
 #include <poundfe/commands/dispatch.h>
 #include <poundfe/dynamics/time_history.h>
@@ -230,6 +231,9 @@ namespace poundfe::python
       static char *words[]  = {name, nullptr};
       static char **argv    = words;
       mpi = new dealii::Utilities::MPI::MPI_InitFinalize(argc, argv, 1);
+      // called inside a command's InterruptionScope: PETSc's initialisation
+      // replaced its handlers, as program.cc's
+      install_interruption_handlers();
     }
 
     /// `poundfe NAME ARGUMENTS... [--output DIR] [--realizations N] [--set
@@ -262,6 +266,9 @@ namespace poundfe::python
           std::streambuf *buffer;
           ~Restore() { std::cout.rdbuf(buffer); }
         } restore{report ? std::cout.rdbuf(captured.rdbuf()) : std::cout.rdbuf()};
+        // Ctrl-C stops the command as on the command line (its results so
+        // far kept, exit status 130), Python's handler back afterwards
+        const InterruptionScope signals;
         status = dispatch_command(*command, request, ensure_mpi, std::cerr);
         std::cout.flush();
         if (report)

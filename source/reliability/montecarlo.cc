@@ -517,9 +517,11 @@ namespace poundfe
           {
             result.levels.push_back(levels[j]);
             result.counts.push_back(count_exceedances(table, runner, drift_limits));
-            if (in_memory)
-              result.tables.push_back(std::move(table));
           }
+        if (rank == 0 && result.interrupted)
+          result.interrupted_level = levels[j];
+        if (rank == 0 && in_memory) // the interrupted level's too, last
+          result.tables.push_back(std::move(table));
       }
     return result;
   }

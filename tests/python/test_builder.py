@@ -5,6 +5,7 @@ Input.write reading back to the same entries (reference: the reader's
 entry-by-entry values, Input.values; tolerance none: text for text)."""
 
 import os
+import tempfile
 import unittest
 
 import numpy as np
@@ -59,6 +60,51 @@ class Values(TestCase):
         self.assertIn(f"set at {os.path.abspath(__file__)}:", message)
         self.assertNotIn("poundfe-model-", message)  # no temporary directory
         self.assertEqual(caught.exception.file, "model.prm")
+
+
+class WithoutFiles(TestCase):
+    """The reader parses a Model's text itself: no temporary file (tempfile's
+    directory is a plain file here, so that any use of it fails), and a bad
+    value is named by its entry, the Model's line and the caller's line."""
+
+    def setUp(self):
+        super().setUp()
+        self.blocked = os.path.join(self.tmp, "not-a-directory")
+        with open(self.blocked, "w") as f:
+            f.write("tempfile must not be used\n")
+        self.saved_tempdir, tempfile.tempdir = tempfile.tempdir, self.blocked
+
+    def tearDown(self):
+        tempfile.tempdir = self.saved_tempdir
+        super().tearDown()
+
+    def bad_model(self):
+        model = poundfe.Model.from_file(EXAMPLE)
+        model.set("Time integration", time_step=-0.001)  # refused by the entry's range
+        return model
+
+    def assertPointsAtTheCall(self, caught):
+        message = str(caught.exception)
+        self.assertIn("Time integration/Time step", message)
+        self.assertIn(f"set at {os.path.abspath(__file__)}:", message)
+        self.assertNotIn(self.tmp, message)
+        self.assertNotIn("/tmp", message)  # no temporary file named
+        self.assertEqual(caught.exception.file, "model.prm")
+        self.assertEqual(sorted(os.listdir(self.tmp)), ["not-a-directory"])
+
+    def test_input_and_run_read_no_file(self):
+        self.assertEqual(len(poundfe.Model.from_file(EXAMPLE).input().buildings), 2)
+        with self.assertRaises(poundfe.InputError) as caught:
+            self.bad_model().input()
+        self.assertPointsAtTheCall(caught)
+        with self.assertRaises(poundfe.InputError) as caught:
+            poundfe.run(self.bad_model())
+        self.assertPointsAtTheCall(caught)
+
+    def test_command_refuses_before_any_file(self):
+        with self.assertRaises(poundfe.InputError) as caught:
+            poundfe.spectrum(self.bad_model())
+        self.assertPointsAtTheCall(caught)
 
 
 class FromFileAndWrite(TestCase):

@@ -1,7 +1,7 @@
 """The analysis commands from Python (poundfe.reliability, dynamic_form,
-bifurcation, switching, pushover, ground_motion) against the same commands
-on the command line, and poundfe.modal's modes (computed in memory) against
-`poundfe modal`'s summary.json: the same doubles (reference: the command
+bifurcation, switching, pushover, ground_motion, ida, msa) against the same
+commands on the command line, and poundfe.modal's modes (in memory) against
+`poundfe modal`'s summary.json and mode_shapes*.csv: the same doubles (reference: the command
 line's files parsed with Python's float() and json; tolerance none). Also
 how a command takes an Input or a Model, keeps its files with output=, and
 to_dataframe without pandas."""
@@ -12,9 +12,11 @@ import unittest
 from unittest import mock
 
 import poundfe
-from common import EXAMPLE, CommandTestCase, read_summary, run_command_line
+from common import (EXAMPLE, CommandTestCase, read_summary, run_command_line, tables_of_directory,
+                    without_place)
 
 QUIET = {"Output/Plots": False}
+IDA = "tests/cli/ida/ida-small.prm"
 
 
 class AnalysisCommands(CommandTestCase):
@@ -43,12 +45,41 @@ class AnalysisCommands(CommandTestCase):
         self.assertEqual(status, 0, err)
         summary = read_summary(out)
         modes = poundfe.modal(EXAMPLE)
+        self.assertIsNone(modes.output)
+        self.assertEqual(without_place(modes.summary), without_place(summary))
+        expected = tables_of_directory(out)
+        self.assertEqual(sorted(modes.tables), sorted(expected))
+        for stem, (header, rows) in expected.items():
+            self.assertTableIdentical(modes.tables[stem], header, rows, stem)
         self.assertIdentical(modes.frequencies, summary["modes"]["frequencies_hz"], "frequencies")
         self.assertIdentical(modes.periods, summary["modes"]["periods_s"], "periods")
-        for building, expected in zip(modes.buildings, summary["buildings"]):
-            self.assertEqual(building.name, expected["name"])
-            self.assertIdentical(building.frequencies, expected["modes"]["frequencies_hz"],
+        _, shapes = expected["mode_shapes"]
+        self.assertIdentical(modes.omega, [float(row[1]) for row in shapes], "omega")
+        self.assertIdentical(modes.shapes.T, [[float(x) for x in row[2:]] for row in shapes],
+                             "shapes")
+        for building, expected_building in zip(modes.buildings, summary["buildings"]):
+            self.assertEqual(building.name, expected_building["name"])
+            self.assertIdentical(building.frequencies, expected_building["modes"]["frequencies_hz"],
                                  building.name)
+            header, rows = expected["mode_shapes_" + building.name]
+            self.assertEqual(building.equations, header[2:])
+            self.assertIdentical(building.shapes.T, [[float(x) for x in row[2:]] for row in rows],
+                                 building.name)
+
+    def test_modal_output_keeps_the_drawn_shapes(self):
+        kept = os.path.join(self.tmp, "kept")
+        modes = poundfe.modal(EXAMPLE, output=kept)
+        self.assertEqual(modes.output, kept)
+        self.assertTrue(os.path.exists(os.path.join(kept, "modes.pvd")))
+        self.assertIdentical(modes.shapes, poundfe.modal(EXAMPLE).shapes, "shapes")
+
+    def test_ida(self):
+        self.assertSameAsCommandLine("ida", IDA, {**QUIET, "IDA/Runs per record": 2,
+                                                  "IDA/Demand intensities": 0.2})
+
+    def test_msa(self):
+        self.assertSameAsCommandLine("msa", IDA, {**QUIET, "MSA/Intensities": "0.1, 0.3",
+                                                  "MSA/Cloud": True})
 
     def test_input_model_and_output(self):
         file = "tests/cli/dynamic-form-sdof.prm"
@@ -78,6 +109,26 @@ class AnalysisCommands(CommandTestCase):
             captured.seek(0)
             self.assertEqual(captured.read(), b"")
         self.assertIn("dynamic FORM: beta = 2.02652", result.report)
+
+    def test_two_threads_run_commands_in_turn(self):
+        import threading
+        file = "tests/cli/dynamic-form-sdof.prm"
+        results, errors = [None, None], []
+
+        def run(i):
+            try:
+                results[i] = poundfe.dynamic_form(file, overrides=QUIET)
+            except BaseException as error:  # reported below
+                errors.append(error)
+
+        threads = [threading.Thread(target=run, args=(i,)) for i in range(2)]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join()
+        self.assertEqual(errors, [])
+        self.assertIdentical(results[0].design_point["x_star"], results[1].design_point["x_star"],
+                             "two threads")
 
     def test_to_dataframe_without_pandas(self):
         result = poundfe.dynamic_form("tests/cli/dynamic-form-sdof.prm", overrides=QUIET)

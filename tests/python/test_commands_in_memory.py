@@ -1,19 +1,21 @@
 """The commands whose row takes results in memory (spectrum, montecarlo,
 sweep, separation, dynamic_form, reliability, switching, bifurcation,
 site_hazard, fragility, stationary_pdf, pushover, ground_motion, subset,
-mitigation) write no file from Python unless given output=: no temporary
+mitigation, ida, msa, modal) write no file from Python unless given output=: no temporary
 directory (tempfile's directory is a plain file here, so that any use of it
 fails), nothing in the input's Output/Directory; their tables and summary
 come from memory and their report says so. The same doubles as the command
 line's files are checked by test_commands_study.py, test_commands_random.py
-and test_commands_analysis.py, which now go through memory too. A command
-whose row does not take it still works through a temporary directory, and
-_core.command_in_memory refuses it with the command line's kind of message.
+and test_commands_analysis.py, which now go through memory too. A row
+without it (select-records) is refused by _core.command_in_memory with the
+command line's kind of message.
 Reference: the row's in_memory column (doc/architecture.md, "Commands and
 the guard")."""
 
 import os
+import signal
 import tempfile
+import threading
 import unittest
 
 import poundfe
@@ -40,6 +42,9 @@ CALLS = {
     "mitigation": ("input/mitigation-shear-pair.prm", {}, "mitigation"),
     "subset": (SMALL, {"Subset simulation/Samples per level": 10, "Subset simulation/Maximum levels": 2,
                        "Ground motion/Stochastic/Duration": 1}, "subset_runs"),
+    "ida": (IDA, {"IDA/Runs per record": 2, "IDA/Demand intensities": 0.2}, "ida"),
+    "msa": (IDA, {"MSA/Intensities": 0.2, "MSA/Cloud": True}, "msa"),
+    "modal": (EXAMPLE, {}, "mode_shapes"),
     "stationary_pdf": ("tests/cli/stationary-linear.prm",
                        {"Stationary PDF/Number of realizations": 2,
                         "Ground motion/Stochastic/Duration": 220}, "pdf"),
@@ -66,7 +71,9 @@ class CommandsInMemory(TestCase):
         self.assertFalse(os.path.exists(directory), f"{name} wrote {directory}")
         self.assertEqual(sorted(os.listdir(self.tmp)), ["not-a-directory"], name)
         self.assertIsNone(result.output)
-        self.assertIn(result.status, ("completed", "completed with warnings"))
+        # modal's summary.json has no status (as the command line's)
+        expected = (None,) if name == "modal" else ("completed", "completed with warnings")
+        self.assertIn(result.status, expected)
         self.assertIn(stem + ".csv", result.files)
         self.assertIn("summary.json", result.files)
         self.assertGreater(len(result.tables[stem]), 0, name)
@@ -134,15 +141,54 @@ class CommandsInMemory(TestCase):
             self.assertIn(f"Ground_motion_Stochastic_D_{value}/pdf.csv", result.files)
             self.assertIn(f"Ground_motion_Stochastic_D_{value}/realizations.csv", result.files)
 
+    def test_interrupted_fragility_keeps_its_partial_level(self):
+        # Ctrl-C stops the command as SIGINT stops the command line's: the
+        # levels done and the interrupted level's realizations so far (which
+        # a run into files keeps to resume from) come with KeyboardInterrupt
+        file, overrides, _ = CALLS["fragility"]
+        overrides = {**overrides, "Fragility/Realizations per level": 400,
+                     "Fragility/PGA levels": "0.1, 0.2, 0.3, 0.4"}
+        timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
+        timer.start()
+        try:
+            with self.assertRaises(KeyboardInterrupt) as caught:
+                poundfe.fragility(file, overrides={**QUIET, **overrides})
+        finally:
+            timer.cancel()
+        result = caught.exception.result
+        self.assertEqual(result.status, "interrupted")
+        self.assertEqual(sorted(os.listdir(self.tmp)), ["not-a-directory"])
+        levels = sorted(stem for stem in result.tables if stem.endswith("/realizations"))
+        self.assertEqual(len(levels), result.summary["completed_levels"] + 1)
+        self.assertLess(len(result.tables[levels[-1]]), 400)
+        # the signal is forgotten: the next command runs to its end
+        again = poundfe.fragility(file, overrides={**QUIET, **CALLS["fragility"][1]})
+        self.assertEqual(again.status, "completed")
+
+    def test_journals_in_memory(self):
+        # the texts of journal/ a run into files resumes from: every run once
+        file, overrides, _ = CALLS["ida"]
+        ida = self.assertNoFile("ida", file, overrides, "ida")
+        self.assertEqual(len(ida.tables["journal/realizations"]), len(ida.ida))
+        self.assertTrue(any(f.startswith("demands_") and f.endswith("_im1.csv") for f in ida.files))
+        file, overrides, _ = CALLS["msa"]
+        msa = self.assertNoFile("msa", file, overrides, "msa")
+        self.assertEqual(len(msa.tables["journal/stripes/realizations"]), len(msa.msa))
+        self.assertEqual(len(msa.tables["journal/cloud/realizations"]), len(msa.cloud))
+
+    def test_modal_shapes_without_vtu(self):
+        # the shapes as arrays; the drawn ones (modes.pvd) only with output=
+        modes = self.assertNoFile("modal", EXAMPLE, {}, "mode_shapes")
+        self.assertFalse(any(f.endswith((".pvd", ".vtu")) for f in modes.files))
+        self.assertEqual(modes.shapes.shape, (60, 6))
+        self.assertEqual(modes.buildings[0].shapes.shape[0], len(modes.buildings[0].equations))
+
     def test_rows_without_memory(self):
         self.assertTrue(_core.in_memory("montecarlo"))
-        self.assertFalse(_core.in_memory("ida"))
+        self.assertTrue(_core.in_memory("ida"))
+        self.assertFalse(_core.in_memory("select-records"))
         with self.assertRaisesRegex(ValueError, "results in memory belong to .*montecarlo"):
-            _core.command_in_memory("ida", [IDA])
-        tempfile.tempdir = self.saved_tempdir  # a row without memory goes through files
-        result = poundfe.ida(IDA, overrides=QUIET)
-        self.assertIsNone(result.output)
-        self.assertEqual(result.status, "completed")
+            _core.command_in_memory("select-records", [IDA])
 
 
 if __name__ == "__main__":

@@ -57,6 +57,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace poundfe
@@ -185,6 +186,10 @@ namespace poundfe
     unsigned long                n_runs = 0, n_run_now = 0;
     double                       wall_time = 0; // s
     bool                         interrupted = false;
+    /// A journal kept in memory (an empty journal folder: results in
+    /// memory): the text each realizations.csv would hold, by its name
+    /// under the journal folder ("realizations.csv", "stripes/...").
+    std::vector<std::pair<std::string, std::string>> journals;
   };
 
   /// One run to do: a record at an intensity.
@@ -220,6 +225,7 @@ namespace poundfe
     std::vector<std::vector<double>> rows; // journaled ones first, then in the order taken
     unsigned long                    n_run_now = 0; // by this call, over every rank
     bool                             interrupted = false; // runs are left
+    std::string                      journal; // the journal's text, when kept in memory
   };
 
   /// Deals `runs` (rank 0's; nullptr on the others) run by run to whichever
@@ -228,7 +234,8 @@ namespace poundfe
   /// columns `names`: a call with the same file resumes: the journaled
   /// rows are read back, not run; InputError when one is not of `runs`);
   /// `offset` runs are counted done for the progress line. The rows are on
-  /// every rank.
+  /// every rank. An empty `file`: no journal read or written; its text is
+  /// kept in DealtRows::journal on rank 0 (results in memory).
   DealtRows deal_runs(const IdaRun &run, DealtRuns *runs, const std::vector<std::string> &names,
                       const std::string &file, MPI_Comm comm, Progress *progress,
                       unsigned long offset = 0);
@@ -264,7 +271,8 @@ namespace poundfe
   /// the same on any number of ranks. Each run is appended by rank 0 to
   /// journal/realizations.csv as it comes back, so that a run started again
   /// resumes (the runs journaled are read back, not run). SIGINT/SIGTERM:
-  /// stops after the runs under way. The result is on every rank.
+  /// stops after the runs under way. The result is on every rank. An empty
+  /// `journal`: no file, the journal's text in IdaResult::journals.
   IdaResult run_ida(IdaRunner &runner, const std::string &journal, MPI_Comm comm,
                     Progress *progress = nullptr);
 } // namespace poundfe

@@ -150,6 +150,8 @@ namespace poundfe
   /// others; journaled in journal/stripes and journal/cloud: a run
   /// started again resumes. InputError if a journal holds other runs than
   /// these (another suite or other stripes). The result is on every rank.
+  /// An empty `journal`: no file, the journals' texts in
+  /// counters.journals (stripes/realizations.csv, cloud/realizations.csv).
   MsaResult run_msa(IdaRunner &runner, const std::vector<double> &stripes, bool cloud,
                     const std::string &journal, MPI_Comm comm, Progress *progress = nullptr);
 } // namespace poundfe

@@ -123,8 +123,11 @@ namespace poundfe
     std::vector<double>      levels;      // g: the levels done (rank 0)
     std::vector<Exceedances> counts;      // at each of them (rank 0)
     /// Each level's realizations (rank 0), kept only when they went to no
-    /// file (results in memory)
+    /// file (results in memory); after an interruption, the interrupted
+    /// level's realizations done last (its level: `interrupted_level`), as
+    /// a run into files keeps them for the next to resume from
     std::vector<MonteCarloTable> tables;
+    double                       interrupted_level = 0; // g
     bool                     interrupted = false; // on every rank
   };
 

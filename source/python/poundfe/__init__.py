@@ -96,12 +96,14 @@ def _input_of(model):
     return read(model)
 
 
-def modal(model):
-    """The undamped modes of the whole model and of each building (what
-    `poundfe modal` writes): an Input, a Model or a file name."""
-    model = _input_of(model)
-    with _engine():
-        return Modes(_core.modal(model))
+def modal(model, output=None, overrides=None):
+    """The undamped modes of the whole model and of each building: `poundfe
+    modal` through the command line's dispatcher (an Input, a Model or a
+    file name; overrides as --set). Without output= nothing is written (the
+    shapes are not drawn); with it, its files (summary.json,
+    mode_shapes*.csv, modes.pvd) stay there. Returns Modes, with the
+    command's summary, report, files and output."""
+    return Modes.of_command(run_command("modal", model, output=output, overrides=overrides))
 
 
 def moment_curvature(model, overrides=None):
@@ -132,7 +134,7 @@ def run(model, output=None, callback=None, every=1):
 
     Returns Results. A numerical failure raises NumericalError with the
     results up to the failure in its `results` attribute."""
-    model = _input_of(model)
+    parameters = _input_of(model)
     directory = None if output is None else os.fspath(output)
     if directory == "":
         raise ValueError("output: a directory, or None for results in memory")
@@ -140,8 +142,14 @@ def run(model, output=None, callback=None, every=1):
         raise TypeError(f"callback: a function of the step's state, not {callback!r}")
     if isinstance(every, bool) or not isinstance(every, (int, np.integer)) or every < 1:
         raise ValueError(f"every: a whole number of steps >= 1, not {every!r}")
-    with _engine():
-        raw = _core.run_time_history(model, directory or "", callback=callback, every=int(every))
+    try:
+        with _engine():
+            raw = _core.run_time_history(parameters, directory or "", callback=callback,
+                                         every=int(every))
+    except InputError as error:  # found when the model is built: named at the caller's line
+        if not isinstance(model, Model):
+            raise
+        raise model._pointed(error) from None
     results = Results(raw, directory)
     if raw["status"] == "failed":
         error = (OutputError if raw["output_failed"] else NumericalError)(raw["message"])

@@ -4,13 +4,12 @@ CommandResult: poundfe.montecarlo(model), poundfe.sweep(model, ...), ...
 Each runs through the command line's own dispatcher (the same rules, checks,
 messages and numbers as `poundfe NAME FILE --output DIR --set ...`) and
 takes a file name, an Input (its file and overrides) or a Model. Without
-`output=`, a command whose row can (spectrum, montecarlo, sweep,
-separation: _core.in_memory) leaves its results in memory and writes no
-file: its tables come as the doubles its CSV files would hold, its other
-files as their texts, parsed as the files would be. The others, and every
-command given `output=`, write their files, read back into arrays (without
-`output=` into a temporary directory removed afterwards). (poundfe.modal
-computes its Modes in memory, and poundfe.run its Results.)
+`output=`, every command here (its row's in_memory column: _core.in_memory)
+leaves its results in memory and writes no file: its tables come as the
+doubles its CSV files would hold, its other files as their texts, parsed as
+the files would be. Given `output=`, a command writes its files, read back
+into arrays. (poundfe.modal returns the modal command's results as Modes,
+and poundfe.run its Results.)
 """
 
 import json
@@ -27,7 +26,7 @@ COMMANDS = {
     "separation": "separation", "spectrum": "spectrum", "site_hazard": "site-hazard",
     "reliability": "reliability", "dynamic_form": "dynamic-form", "mitigation": "mitigation",
     "stationary_pdf": "stationary-pdf", "bifurcation": "bifurcation", "switching": "switching",
-    "ground_motion": "ground-motion", "pushover": "pushover", "ida": "ida",
+    "ground_motion": "ground-motion", "pushover": "pushover", "ida": "ida", "msa": "msa",
 }
 
 
@@ -146,7 +145,9 @@ def run_command(name, model, output=None, realizations=None, overrides=None):
     (with output=, the files so far and summary.json stay there). Without
     output=, a command that can leaves its results in memory: no result
     file (a Model's parameter file alone, in a temporary directory)."""
-    from . import _engine
+    from . import InputError, _engine
+    if _is_model(model):  # its bad values named at the caller's line, before any file
+        model.input(overrides)
     kept = output is not None
     in_memory = not kept and _core.in_memory(name)
     # a temporary directory only for what must be a file: a Model's
@@ -158,16 +159,34 @@ def run_command(name, model, output=None, realizations=None, overrides=None):
         if in_memory:
             with _engine():
                 raw = _core.command_in_memory(name, [file], realizations or 0, pairs)
-            return CommandResult.in_memory(name, raw)
+            return _interrupted_or(CommandResult.in_memory(name, raw), raw["exit_status"])
         directory = os.fspath(output) if kept else os.path.join(scratch, "output")
         with _engine():
-            _, report = _core.command_reported(name, [file], directory, realizations or 0, pairs)
+            status, report = _core.command_reported(name, [file], directory, realizations or 0,
+                                                    pairs)
         result = CommandResult(name, directory, kept)
         result.report = report
-        return result
+        return _interrupted_or(result, status)
+    except InputError as error:
+        if not _is_model(model):
+            raise
+        raise model._pointed(error, os.path.join(scratch, "")) from None
     finally:
         if scratch:
             shutil.rmtree(scratch, ignore_errors=True)
+
+
+def _interrupted_or(result, status):
+    """`result`, or KeyboardInterrupt carrying it when Ctrl-C (or SIGTERM)
+    stopped the command: the command line's exit status 128 + signal, its
+    results so far kept (in memory, or in output= for a later run to
+    resume from)."""
+    if status >= 128:
+        error = KeyboardInterrupt(f"poundfe: {result.command} interrupted; its results so far "
+                                  f"are in this exception's `result`")
+        error.result = result
+        raise error
+    return result
 
 
 def _command_function(python_name, name):

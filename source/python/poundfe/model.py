@@ -32,7 +32,6 @@ import difflib
 import os
 import re
 import sys
-import tempfile
 
 import numpy as np
 
@@ -299,24 +298,24 @@ class Model:
         return copy
 
     def input(self, overrides=None, name="model.prm"):
-        """Read through the command line's reader: an Input. The text goes
-        to a temporary file `name`; a bad entry raises the reader's
-        InputError naming `name`, the line, the entry and the line of the
-        caller's code that set it."""
-        from . import InputError, read
-        with tempfile.TemporaryDirectory(prefix="poundfe-model-") as directory:
-            path = os.path.join(directory, name)
-            self.absolute().write(path)
-            try:
-                return read(path, overrides)
-            except InputError as error:
-                raise self._pointed(error, directory + os.sep) from None
+        """Read through the command line's reader: an Input. The reader
+        parses the model's text itself (no file is written), named `name`;
+        a bad entry raises the reader's InputError naming `name`, the line
+        of the text, the entry and the line of the caller's code that set
+        it. (A command given the Model still reads it from a temporary
+        file: a sweep reads its file again for each value.)"""
+        from . import InputError, _core, _override_pairs
+        try:
+            return _core.read_text(name, self.absolute().text(), _override_pairs(overrides))
+        except InputError as error:
+            raise self._pointed(error) from None
 
-    def _pointed(self, error, temporary):
-        """The reader's error without the temporary directory, and with
-        the caller's line that set the entry."""
+    def _pointed(self, error, temporary=None):
+        """The reader's error with the caller's line that set the entry (and
+        without `temporary`, the directory a command read the model's file
+        from)."""
         from . import InputError
-        message = str(error).replace(temporary, "")
+        message = str(error).replace(temporary, "") if temporary else str(error)
         parameter = getattr(error, "parameter", "") or ""
         origin = self.origins.get(parameter)
         if origin is None:  # a whole list entry "Section/Entry:k", or a section
@@ -325,7 +324,9 @@ class Model:
         if origin is not None:
             message += f" (set at {origin})"
         pointed = InputError(message)
-        pointed.file = (getattr(error, "file", "") or "").replace(temporary, "")
+        pointed.file = getattr(error, "file", "") or ""
+        if temporary:
+            pointed.file = pointed.file.replace(temporary, "")
         pointed.line = getattr(error, "line", 0)
         pointed.parameter = parameter
         pointed.problem = getattr(error, "problem", "")

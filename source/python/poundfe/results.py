@@ -90,9 +90,11 @@ def read_csv_text(text):
     time_s and every entry a number, otherwise a structured array (one field
     per column, numbers as float64, the rest as text). Blank lines (between
     the blocks of a gnuplot surface) and comment lines ('#', a resumable
-    table's record of its inputs) are left out."""
+    table's record of its inputs) are left out; a column without a name (a
+    demand table's row number) is named "index"."""
     rows = [row for row in csv.reader(io.StringIO(text)) if row and not row[0].startswith("#")]
-    names, rows = rows[0], rows[1:]
+    # a pelicun demand table's first column, the row number, has no name
+    names, rows = [name or "index" for name in rows[0]], rows[1:]
     if names[0] == "time_s":
         try:
             return Table(names, [[float(x) for x in row] for row in rows])
@@ -150,6 +152,30 @@ class Modes:
         self.name = raw.get("name")
         self.rayleigh = (raw["rayleigh_a0"], raw["rayleigh_a1"]) if "rayleigh_a0" in raw else None
         self.buildings = [Modes(b) for b in raw.get("buildings", [])]
+
+    @classmethod
+    def of_command(cls, result):
+        """The Modes of `poundfe modal`'s CommandResult: summary.json's
+        frequencies, periods and participations, mode_shapes.csv's omega and
+        shapes (mode_shapes_<building>.csv each building's), so the same
+        doubles as its files; the result's summary, status, report, files,
+        tables and output kept as attributes."""
+        summary = result.summary
+
+        def raw(modes, table):
+            names = list(table.dtype.names)[2:]  # after mode, omega_rad_s
+            return dict(modes, omega_rad_s=table["omega_rad_s"], equations=names,
+                        shapes=np.array([table[n] for n in names]).reshape(len(names), len(table)))
+
+        whole = raw(summary["modes"], result.tables["mode_shapes"])
+        whole["buildings"] = [
+            dict(raw(b["modes"], result.tables["mode_shapes_" + b["name"]]), name=b["name"],
+                 rayleigh_a0=b["rayleigh_a0"], rayleigh_a1=b["rayleigh_a1"])
+            for b in summary["buildings"]]
+        modes = cls(whole)
+        for name in ("summary", "status", "report", "files", "tables", "output"):
+            setattr(modes, name, getattr(result, name, None))
+        return modes
 
     def to_dataframe(self):
         """One row per mode: frequency, period, participating mass ratio
