@@ -2,15 +2,17 @@
 # The convergence of a penalty law to rigid contact (`poundfe sweep` with
 # Contact/Model = nonsmooth and Sweep/Parameter = Contact/Stiffness): two
 # undamped one-storey shear buildings 10 mm apart released towards each
-# other (0.5 and -0.3 m/s), restitution 0.65, 1 s at 1e-4 s; the penalty law
-# is Hertz-damp with its damping calibrated to the same e, at k = 1e8 ...
-# 1e11 N/m^1.5:
+# other (0.5 and -0.3 m/s), restitution 0.65, over their first impact
+# (0.12 s) at 1e-5 s; the penalty law is Hertz-damp with its damping
+# calibrated to the same e, at k = 1e9 ... 1e12 N/m^1.5:
 #   - rigid_limit.csv is `poundfe run`'s nonsmooth run (to 1e-9 relative:
 #     the same run);
 #   - each peak drift's relative difference from rigid contact
 #     (contact_convergence.csv) decreases over the last three stiffnesses
 #     and is below 5 % at the stiffest (a Hertz contact's penetration, and
-#     so its difference from a rigid one, falls as k^(-2/5));
+#     so its difference from a rigid one, falls as k^(-2/5); over later
+#     impacts the differences compound and the rigid scheme's own first
+#     order error at impacts, ~ v h, takes over);
 #   - a bad law for the penalty runs is refused before anything is written.
 set -u
 poundfe=$1
@@ -38,9 +40,9 @@ building() {
   printf 'subsection Contact\n  set Model = nonsmooth\n  set Law = hertz-damp\n'
   printf '  set Damping from = calibrated\n  set Calibration velocity = 0.8\n'
   printf '  set Coefficient of restitution = 0.65\nend\n'
-  printf 'subsection Time integration\n  set Time step = 1e-4\n  set End time = 1\nend\n'
+  printf 'subsection Time integration\n  set Time step = 1e-5\n  set End time = 0.12\nend\n'
   printf 'subsection Output\n  set Plots = false\n  set VTU interval = 0\nend\n'
-  printf 'subsection Sweep\n  set Parameter = Contact/Stiffness\n  set Values = 1e8, 1e9, 1e10, 1e11\nend\n'
+  printf 'subsection Sweep\n  set Parameter = Contact/Stiffness\n  set Values = 1e9, 1e10, 1e11, 1e12\nend\n'
 } > pair.prm
 
 "$poundfe" sweep pair.prm --output sweep > sweep.out 2> sweep.err || fail "sweep exited $?: $(head -c 300 sweep.err)"
@@ -57,7 +59,7 @@ for name, value in drifts.items():
     assert abs(float(limit[name]) - value) <= 1e-9 * value, (name, limit[name], value)
 assert int(float(limit["n_impacts"])) == sum(g["impacts"] for g in s["gaps"]) > 0, limit
 rows = list(csv.DictReader(open(f"{sweep}/contact_convergence.csv")))
-assert [float(r["Contact_Stiffness"]) for r in rows] == [1e8, 1e9, 1e10, 1e11], rows
+assert [float(r["Contact_Stiffness"]) for r in rows] == [1e9, 1e10, 1e11, 1e12], rows
 for name in drifts:
     error = [float(r[f"{name}_relative_error"]) for r in rows]
     print(f"{name}: relative difference from rigid contact " + ", ".join(f"{x:.3g}" for x in error))
