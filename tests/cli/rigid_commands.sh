@@ -4,7 +4,8 @@
 # a run of the same realization, record or value (`poundfe run`, itself
 # checked by rigid_contact.sh and python/siconos_moreau_jean), on the shear
 # pair of input/shear-pair-pounding.prm at 2 mm, e = 0.65, 4 s at 1e-3 s:
-#   - montecarlo: realization 1's row equals run's Realization 1;
+#   - montecarlo: realization 1's row equals run's Realization 1; with a
+#     random separation, run's at the realization's separation;
 #   - subset: level 0's sample k is realization k: equal to run's;
 #   - fragility: the one realization at PGA 0.5 g equals run's at 0.5 g;
 #   - sweep: the point at a separation of 4 mm equals run's at 4 mm;
@@ -77,6 +78,18 @@ run pair.prm --set "Ground motion/Stochastic/Realization=1" --output run1
 same "montecarlo realization 1 = run's" \
   "$(csv_row mc/realizations.csv realization 1 shear3_storey1_peak_drift_ratio n_impacts max_drift_ratio)" \
   "$(run_peaks run1)"
+
+# montecarlo with a random separation: each realization's own gaps (the
+# rigid-contact engine made again; kept, it would step the file's 2 mm)
+printf 'subsection Random parameters\n  set Variables = s: Model/Separations ~ uniform lower 0.001 upper 0.004\nend\n' > random.prm
+cat pair.prm random.prm > pair-random.prm
+"$poundfe" montecarlo pair-random.prm --output mc-random > /dev/null 2>&1 || fail "montecarlo (random separation) exited $?"
+separation=$(csv_row mc-random/realizations.csv realization 1 s)
+run pair.prm --set "Ground motion/Stochastic/Realization=1" --set "Model/Separations=$separation" \
+  --output run1-random
+same "montecarlo realization 1 at its random separation $separation m = run's" \
+  "$(csv_row mc-random/realizations.csv realization 1 shear3_storey1_peak_drift_ratio n_impacts max_drift_ratio)" \
+  "$(run_peaks run1-random)"
 
 # subset: level 0's samples are the realizations 0, 1, ...
 printf 'subsection Subset simulation\n  set Response = peak drift ratio\n  set Building = 1\n  set Storey = 1\n  set Threshold = %s\n  set Samples per level = 4\n  set Conditional probability = 0.25\nend\n' \
