@@ -141,6 +141,10 @@ namespace poundfe
                const std::vector<double> &values)
     {
       const SweepParameters &sweep = first.sweep;
+      // rigid contact takes e from each value's input, not from the model
+      // (the registered restitution refits a penalty law's damping only)
+      if (first.time_integration.contact_model == ContactModel::nonsmooth)
+        return nullptr;
       std::vector<ModelParameter> parameter;
       try
         {

@@ -8,7 +8,8 @@
 #     random separation, run's at the realization's separation;
 #   - subset: level 0's sample k is realization k: equal to run's;
 #   - fragility: the one realization at PGA 0.5 g equals run's at 0.5 g;
-#   - sweep: the point at a separation of 4 mm equals run's at 4 mm;
+#   - sweep: the point at a separation of 4 mm equals run's at 4 mm, and
+#     with a damped law the point at e = 0.3 run's at 0.3;
 #   - separation: the free responses (no contact) are the penalty model's;
 #   - mitigation: the bare pair's row equals run's realization 0; bumper
 #     cases are refused (exit 1, nothing written);
@@ -120,6 +121,18 @@ same "sweep at 2 mm = run's" \
   "$(csv_row sweep/sweep.csv Model_Separations 0.002 shear3_storey1_peak_drift_ratio)" "$drift0"
 same "sweep at 4 mm = run's" \
   "$(csv_row sweep/sweep.csv Model_Separations 0.004 shear3_storey1_peak_drift_ratio)" "$d4"
+
+# sweep of the restitution (a damped law, whose registered e would refit
+# only its damping): the point at e = 0.3 is run's at 0.3
+printf 'subsection Sweep\n  set Parameter = Contact/Coefficient of restitution\n  set Values = 0.65, 0.3\nend\n' > sweep-e.prm
+sed 's/set Law *= linear/set Law = hertz-damp/' pair.prm > pair-damped.prm
+cat pair-damped.prm sweep-e.prm > pair-sweep-e.prm
+"$poundfe" sweep pair-sweep-e.prm --output sweep-e > /dev/null 2>&1 || fail "sweep of e exited $?"
+run pair-damped.prm --set "Contact/Coefficient of restitution=0.3" --output run-e
+read -r de ne me <<< "$(run_peaks run-e)"
+same "sweep at e = 0.3 = run's" \
+  "$(csv_row sweep-e/sweep.csv Contact_Coefficient_of_restitution 0.3 shear3_storey1_peak_drift_ratio n_impacts)" \
+  "$de $ne"
 
 # separation: the free responses have no contact, whatever its model
 "$poundfe" separation pair.prm --set "Monte Carlo/Realizations=1" --output sep-rigid > /dev/null 2>&1 ||
