@@ -434,7 +434,8 @@ namespace poundfe::commands
     const auto n_failed = std::count(table.completed.begin(), table.completed.end(), false);
     run.out << "poundfe sweep: " << values.size() << " values of " << sweep.parameter << " in "
             << wall_time << " s\nresults in " << run.results_place()
-            << " (sweep.csv, summary.json" << (run.memory ? "" : ", sweep.png") << ")\n";
+            << " (sweep.csv, summary.json" << (run.memory ? "" : ", sweep.png")
+            << (limit.rows.empty() ? "" : ", rigid_limit.csv, contact_convergence.csv") << ")\n";
     for (const Critical &c : critical_values(table)) // the largest demands
       if (c.name == "max_drift_ratio" || c.name.find("_max_corner_drift_ratio") != std::string::npos)
         run.out << "critical " << sweep.parameter << " for " << c.name << ": " << c.value

@@ -186,7 +186,10 @@ record_run 0 "$scale" run-ida
 read -r di ni mi <<< "$(run_peaks run-ida)"
 same "ida realization_0 at its highest intensity = run's" "$drift" "$di"
 
-# what still refuses rigid contact
+# what still refuses rigid contact: dynamic-form; a random restitution
+printf 'subsection Random parameters\n  set Variables = e: Contact/Coefficient of restitution ~ uniform lower 0.3 upper 0.9\nend\n' > random-e.prm
+cat pair-damped.prm random-e.prm > pair-random-e.prm
+expect 1 "parameter 'Random parameters/Variables'" montecarlo pair-random-e.prm --output out
 expect 1 "parameter 'Contact/Model'" dynamic-form pair.prm --output out
 echo "rigid-commands: $n refusals checked, $failures failures"
 exit $((failures > 0))
