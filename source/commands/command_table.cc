@@ -77,21 +77,21 @@ namespace poundfe
        "against the Spectrum section's target and the S0 that matches it",
        file | realizations | memory, summary, commands::spectrum},
       {"montecarlo", "FILE", "Monte Carlo over the random loading (MPI: mpirun -np P ...)",
-       file | mpi | own_interruption | resumable | memory, summary, commands::montecarlo},
+       file | mpi | own_interruption | resumable | memory | rigid, summary, commands::montecarlo},
       {"subset", "FILE", "Subset Simulation of a small exceedance probability (MPI)",
-       file | mpi | own_interruption | resumable | memory, summary, commands::subset},
+       file | mpi | own_interruption | resumable | memory | rigid, summary, commands::subset},
       {"fragility", "FILE", "Monte Carlo over PGA levels, lognormal fragility curves (MPI)",
-       file | mpi | own_interruption | resumable | memory, summary, commands::fragility},
+       file | mpi | own_interruption | resumable | memory | rigid, summary, commands::fragility},
       {"ida", "FILE",
        "incremental dynamic analysis of the IDA section's record suite:\n"
        "hunt and fill to collapse per record, every demand at every\n"
        "intensity, fractile curves, collapse fragility (MPI)",
-       file | mpi | own_interruption | resumable | memory, summary, commands::ida},
+       file | mpi | own_interruption | resumable | memory | rigid, summary, commands::ida},
       {"msa", "FILE",
        "multiple-stripe and cloud analysis of the IDA section's suite at\n"
        "the MSA section's intensities or hazard return periods: fragility\n"
        "of collapse and each limit state, annual rates of exceedance (MPI)",
-       file | mpi | own_interruption | resumable | memory, summary, commands::msa},
+       file | mpi | own_interruption | resumable | memory | rigid, summary, commands::msa},
       {"select-records", "FILE",
        "select and scale records of a suite to a target spectrum (EC8,\n"
        "ASCE 7, a table, BSSA14's conditional mean spectrum): a suite file",
@@ -103,7 +103,7 @@ namespace poundfe
       {"sweep", "FILE",
        "the run's peaks against the values of the Sweep section's\n"
        "parameter (sweep.csv, sweep.png, summary.json)",
-       file | own_interruption | memory, summary, commands::sweep},
+       file | own_interruption | memory | rigid, summary, commands::sweep},
       {"bifurcation", "FILE",
        "Poincare samples, their period and the largest Lyapunov\n"
        "exponent against the Bifurcation section's parameter",
@@ -120,12 +120,12 @@ namespace poundfe
        "random loading, P(pounding) against the gap (MPI)\n"
        "and, with a site hazard, P(pounding in T years) and the gap\n"
        "for a target (Separation/Site hazard)",
-       file | mpi | own_interruption | resumable | memory, summary, commands::separation},
+       file | mpi | own_interruption | resumable | memory | rigid, summary, commands::separation},
       {"mitigation", "FILE",
        "the bare pair against viscous dampers of each size and bumpers\n"
        "(Mitigation section): drifts, floor accelerations, impacts,\n"
        "P(pounding) and the required gap of each case (MPI)",
-       file | mpi | own_interruption | resumable | memory, summary, commands::mitigation},
+       file | mpi | own_interruption | resumable | memory | rigid, summary, commands::mitigation},
       {"reliability", "FILE",
        "failure probability of algebraic limit states (Reliability\n"
        "section): FORM, SORM, importance sampling, Monte Carlo, subset",

@@ -9,12 +9,21 @@
 //           value set in place (as a realization of a random structure), or
 //           on the model built from the value's input
 //   output: sweep.csv, summary.json, sweep.png; the console report
+// The convergence to rigid contact (Contact/Model = nonsmooth with
+// Parameter = Contact/Stiffness): the values are the penalty law's
+// stiffnesses (each run with Contact/Model = penalty), and the file's own
+// model, rigid contact, is run once more as their limit: rigid_limit.csv
+// (its row), contact_convergence.csv (per stiffness, each peak's relative
+// difference from the rigid limit), contact_convergence.png and
+// summary.json's rigid_limit. A sweep mode rather than a command: the runs
+// are a sweep's, on a registered parameter, and only their limit is added.
 #include <poundfe/base/console.h>
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/commands/command.h>
 #include <poundfe/dynamics/model_parameter.h>
 #include <poundfe/input/engine_parameters.h>
+#include <poundfe/input/input_parameters.h>
 #include <poundfe/input/sweep.h>
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
@@ -27,6 +36,8 @@
 #include <deal.II/base/timer.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -130,6 +141,10 @@ namespace poundfe
                const std::vector<double> &values)
     {
       const SweepParameters &sweep = first.sweep;
+      // rigid contact takes e from each value's input, not from the model
+      // (the registered restitution refits a penalty law's damping only)
+      if (first.time_integration.contact_model == ContactModel::nonsmooth)
+        return nullptr;
       std::vector<ModelParameter> parameter;
       try
         {
@@ -192,7 +207,7 @@ namespace poundfe
 
     void
     write_sweep(const CommandRun &run, const SweepTable &table, const double wall_time,
-                const bool interrupted, const bool model_built_once)
+                const bool interrupted, const bool model_built_once, const SweepTable &limit)
     {
       const InputParameters &input     = *run.input;
       const std::string     &directory = run.directory;
@@ -232,7 +247,15 @@ namespace poundfe
       json.end_object().begin_object("critical");
       for (const Critical &c : critical_values(table))
         json.begin_object(c.name).value("value", c.value).value("peak", c.peak).end_object();
-      json.end_object().end_object();
+      json.end_object();
+      if (!limit.rows.empty()) // rigid contact, the limit of the swept stiffnesses
+        {
+          json.begin_object("rigid_limit").value("completed", bool(limit.completed.front()));
+          for (std::size_t c = 0; c < limit.names.size(); ++c)
+            json.value(limit.names[c], limit.rows.front()[c]);
+          json.end_object();
+        }
+      json.end_object();
       write_result_text(run.memory, directory, "summary.json", json.str());
 
       if (!input.output.plots || table.rows.empty() || run.memory)
@@ -249,6 +272,76 @@ namespace poundfe
           plot.series.push_back({"sweep.csv", "1:" + std::to_string(3 + c), table.names[c],
                                  "linespoints"});
       draw_plots(directory, {plot});
+    }
+
+    /// Whether the sweep is the convergence of the penalty law's stiffness
+    /// to rigid contact, the file's Contact/Model = nonsmooth.
+    bool
+    contact_convergence(const InputParameters &input)
+    {
+      return input.sweep.parameter == "Contact/Stiffness" &&
+             input.time_integration.contact_model == ContactModel::nonsmooth;
+    }
+
+    /// The columns whose convergence is shown: the peak drifts,
+    /// displacements and floor accelerations (the rigid model's are the
+    /// smooth part, without the impulses), nonzero at the limit.
+    std::vector<unsigned int>
+    converging_columns(const SweepTable &table, const std::vector<double> &rigid)
+    {
+      const auto ends_with = [](const std::string &name, const std::string &suffix) {
+        return name.size() >= suffix.size() &&
+               name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+      };
+      std::vector<unsigned int> columns;
+      for (unsigned int c = 0; c < table.names.size(); ++c)
+        for (const char *suffix : {"drift_ratio", "peak_displacement_m", "peak_acc_m_s2"})
+          if (ends_with(table.names[c], suffix) && rigid[c] != 0)
+            {
+              columns.push_back(c);
+              break;
+            }
+      return columns;
+    }
+
+    /// rigid_limit.csv (rigid contact's row), contact_convergence.csv (per
+    /// stiffness |x_k - x_rigid| / |x_rigid| of each converging column) and
+    /// contact_convergence.png (the drifts' on log-log axes).
+    void
+    write_contact_convergence(const CommandRun &run, const SweepTable &table,
+                              const SweepTable &limit)
+    {
+      const std::vector<double> &rigid = limit.rows.front();
+      std::vector<std::string>   header{"completed"};
+      header.insert(header.end(), limit.names.begin(), limit.names.end());
+      const std::unique_ptr<TableWriter> limit_csv =
+        result_table_writer(run.memory, run.directory, "rigid_limit", header);
+      limit_csv->add_row(limit.completed.front() ? 1 : 0, rigid);
+      limit_csv->commit();
+      const std::vector<unsigned int> columns = converging_columns(table, rigid);
+      header.assign(1, run.input->sweep.column_name());
+      for (const unsigned int c : columns)
+        header.push_back(table.names[c] + "_relative_error");
+      const std::unique_ptr<TableWriter> csv =
+        result_table_writer(run.memory, run.directory, "contact_convergence", header);
+      for (std::size_t i = 0; i < table.rows.size(); ++i)
+        {
+          std::vector<double> row;
+          for (const unsigned int c : columns)
+            row.push_back(std::abs(table.rows[i][c] - rigid[c]) / std::abs(rigid[c]));
+          csv->add_row(table.values[i], row);
+        }
+      csv->commit();
+      if (!run.input->output.plots || run.memory || table.rows.empty())
+        return;
+      Plot plot{"contact_convergence.png", "peak drift ratios: penalty law against rigid contact",
+                "contact stiffness", "relative difference from rigid contact", {}};
+      plot.log_x = plot.log_y = true;
+      for (unsigned int k = 0; k < columns.size(); ++k)
+        if (table.names[columns[k]].find("drift_ratio") != std::string::npos)
+          plot.series.push_back({"contact_convergence.csv", "1:" + std::to_string(2 + k),
+                                 table.names[columns[k]], "linespoints"});
+      draw_plots(run.directory, {plot});
     }
 
     /// Each value's run, in order, with a progress line on a terminal: on
@@ -298,23 +391,36 @@ namespace poundfe::commands
     timer.enter_subsection("read");
     sweep.require(input);
     const std::vector<double> values = sweep.values();
-    // all read and checked first: bad input writes nothing
-    std::vector<InputParameters> inputs{sweep_input(sweep, input, values.front())};
+    // all read and checked first: bad input writes nothing; the swept
+    // stiffnesses of a convergence to rigid contact are the penalty law's
+    const bool convergence = contact_convergence(input);
+    const std::vector<ParameterOverride> penalty =
+      convergence ? std::vector<ParameterOverride>{{"Contact/Model", "penalty"}} :
+                    std::vector<ParameterOverride>{};
+    std::vector<InputParameters> inputs{sweep_input(sweep, input, values.front(), penalty)};
     const Analysis first_analysis = prepare_analysis(inputs.front());
     const std::unique_ptr<ModelRealization> model =
       built_once(inputs.front(), first_analysis, values);
     for (std::size_t i = 1; i < values.size() && !model; ++i)
-      inputs.push_back(sweep_input(sweep, input, values[i]));
+      inputs.push_back(sweep_input(sweep, input, values[i], penalty));
+    const std::unique_ptr<const Analysis> rigid =
+      convergence ? std::make_unique<const Analysis>(prepare_analysis(input)) : nullptr;
     timer.leave_subsection();
 
     timer.enter_subsection("runs");
-    const SweepTable table = run_values(inputs, first_analysis, model.get(), values);
+    SweepTable table = run_values(inputs, first_analysis, model.get(), values);
+    SweepTable limit; // rigid contact's row
+    if (rigid && !table.interrupted)
+      table.interrupted = !run_value(*rigid, time_history_parameters(input), input, sweep,
+                                     std::numeric_limits<double>::infinity(), limit);
     timer.leave_subsection();
     const double wall_time =
       timer.get_summary_data(dealii::TimerOutput::total_wall_time).at("runs");
 
     timer.enter_subsection("output");
-    write_sweep(run, table, wall_time, table.interrupted, model != nullptr);
+    write_sweep(run, table, wall_time, table.interrupted, model != nullptr, limit);
+    if (!limit.rows.empty())
+      write_contact_convergence(run, table, limit);
     timer.leave_subsection();
     if (table.interrupted)
       {
@@ -328,7 +434,8 @@ namespace poundfe::commands
     const auto n_failed = std::count(table.completed.begin(), table.completed.end(), false);
     run.out << "poundfe sweep: " << values.size() << " values of " << sweep.parameter << " in "
             << wall_time << " s\nresults in " << run.results_place()
-            << " (sweep.csv, summary.json" << (run.memory ? "" : ", sweep.png") << ")\n";
+            << " (sweep.csv, summary.json" << (run.memory ? "" : ", sweep.png")
+            << (limit.rows.empty() ? "" : ", rigid_limit.csv, contact_convergence.csv") << ")\n";
     for (const Critical &c : critical_values(table)) // the largest demands
       if (c.name == "max_drift_ratio" || c.name.find("_max_corner_drift_ratio") != std::string::npos)
         run.out << "critical " << sweep.parameter << " for " << c.name << ": " << c.value

@@ -139,7 +139,10 @@ namespace poundfe
     to_physical(parameter_normals, parameter_values);
     structure->apply(parameter_values);
     const Analysis &working = structure->analysis();
-    if (structure->changes_linear_part())
+    // rigid contact (Contact/Model = nonsmooth) reads the gaps' widths when
+    // its engine is made: a new one for every realization
+    const bool rigid = parameters.time_integration.contact_model == ContactModel::nonsmooth;
+    if (structure->changes_linear_part() || rigid)
       { // new M, K, C: a new engine (the factorisations change)
         const auto &targets = structure->parameters();
         if (std::any_of(targets.begin(), targets.end(), [](const ModelParameter &p) {

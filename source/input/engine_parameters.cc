@@ -24,21 +24,41 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// Contact/Model = nonsmooth: the restitution is Newton's impact law's,
+    /// whatever the law's damping, so what the builder says of the law's
+    /// entries is replaced by one warning per force entry written, each
+    /// without effect on rigid contact (model/entry_scope.h's warnings:
+    /// terminal and summary.json).
+    void
+    rigid_contact_warnings(const InputParameters &input, std::vector<std::string> &warnings)
+    {
+      static const std::vector<std::string> law_entries{
+        "Stiffness",       "Damping from",        "Damping", "Coefficient of restitution",
+        "Hertz-damp formula", "Effective mass", "Calibration velocity"};
+      for (const std::string &entry : law_entries)
+        {
+          const std::string moot = input.warning("Contact/" + entry, "");
+          warnings.erase(std::remove_if(warnings.begin(), warnings.end(),
+                                        [&](const std::string &x) { return x.rfind(moot, 0) == 0; }),
+                         warnings.end());
+          if (entry != "Coefficient of restitution" && input.line_of("Contact/" + entry) > 0)
+            warnings.push_back(input.warning(
+              "Contact/" + entry,
+              "has no effect: Contact/Model = nonsmooth is rigid contact (Newton's impact law "
+              "with the Coefficient of restitution); the law's force parameters are unused"));
+        }
+    }
+  } // namespace
+
   Analysis
   prepare_analysis(const InputParameters &input)
   {
     Analysis analysis = prepare_analysis(input, input.model, input.contact, input.springs,
                                          input.friction, input.modal, input.output.n_modes);
     if (input.time_integration.contact_model == ContactModel::nonsmooth)
-      {
-        // the restitution is then Newton's impact law's, whatever the law's
-        // damping: what the builder says of it for the penalty law is moot
-        const std::string moot = input.warning("Contact/Coefficient of restitution", "");
-        std::vector<std::string> &w = analysis.warnings;
-        w.erase(std::remove_if(w.begin(), w.end(),
-                               [&](const std::string &x) { return x.rfind(moot, 0) == 0; }),
-                w.end());
-      }
+      rigid_contact_warnings(input, analysis.warnings);
     say_warnings(analysis);
     return analysis;
   }

@@ -281,6 +281,14 @@ namespace poundfe
     subset.check(*this, model);
     reliability.check(*this);
     random_parameters.check(*this);
+    // rigid contact's e is the input's, read once: a random one would refit
+    // only a penalty law's damping
+    if (time_integration.contact_model == ContactModel::nonsmooth)
+      for (const std::string &path : random_parameters.paths)
+        if (path == "Contact/Coefficient of restitution")
+          fail("Random parameters/Variables",
+               "Contact/Coefficient of restitution is not a random parameter of rigid contact "
+               "(Contact/Model = nonsmooth) yet: sweep it instead");
     fragility.check(*this);
     stationary_pdf.check(*this, time_integration.newmark.time_step);
     sweep.check(*this);

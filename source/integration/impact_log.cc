@@ -29,6 +29,8 @@ namespace poundfe
         impact.start_time        = t0 + s * dt;
         impact.approach_velocity = a.rate + s * (b.rate - a.rate);
         impact.step_start        = t0;
+        // no penetration (a rigid contact's episode) peaks at its start
+        impact.max_penetration_time = impact.start_time;
         open[h]                  = log.size();
         log.push_back(impact);
       }

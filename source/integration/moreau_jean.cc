@@ -220,14 +220,24 @@ namespace poundfe
     const Eigen::MatrixXd W        = Ht.transpose() * jacobian_factor.solve(Ht);
     const LcpSolution     solution = solve_lcp(W, q, parameters.lcp);
     ++lcp_count;
+    // the LCPs are this stepper's solves: counted where a run's statistics
+    // count solves (summary.json's contact/lcp reads them there)
+    IterativeSolveCounts &counts = stats.linear;
+    ++counts.solves;
+    counts.iterations += std::max(solution.iterations, 0);
+    counts.max_iterations = std::max<unsigned int>(counts.max_iterations,
+                                                   std::max(solution.iterations, 0));
     lcp_iterations = std::max(lcp_iterations, solution.iterations);
     lcp_residual   = std::max(lcp_residual, solution.residual);
     if (solution.info != 0 || !solution.z.allFinite())
-      throw NumericalError("t = " + number_text(current_time + parameters.time_step) +
-                           " s: Siconos's " + solution.solver + " did not solve the contact LCP of " +
-                           std::to_string(m) + " contacts (status " +
-                           std::to_string(solution.info) + ", error " +
-                           number_text(solution.residual) + ")");
+      throw NumericalError("step " + std::to_string(step_count + 1) + " (t = " +
+                           number_text(current_time + parameters.time_step) + " s): Siconos's " +
+                           solution.solver + " did not solve the contact LCP of " +
+                           std::to_string(m) + " contacts to its tolerance " +
+                           number_text(parameters.lcp.tolerance) + " (status " +
+                           std::to_string(solution.info) + ", residual " +
+                           number_text(solution.residual) + " after " +
+                           std::to_string(solution.iterations) + " iterations)");
     return solution.z;
   }
 

@@ -239,8 +239,10 @@ namespace poundfe
                "Moreau-Jean's theta-scheme with each step's impulses from an LCP solved by "
                "Siconos Numerics (theory §3.9d); needs a Law other than none (its force "
                "parameters are then unused), 2D gaps between floors or at barriers, no "
-               "bumpers, friction or fibre members, no gravity analysis; the command run "
-               "only; a build without Siconos offers penalty only (poundfe --version lists "
+               "bumpers, friction or fibre members, no gravity analysis; the commands run, "
+               "montecarlo, subset, fragility, ida, msa, sweep, separation (its free "
+               "responses have no contact: Newmark) and mitigation (no bumper cases), and "
+               "Python's run; a build without Siconos offers penalty only (poundfe --version lists "
                "the contact models). Unit: -.",
                contact_model_names());
     prm.add_parameter("Theta", moreau_jean.theta,
@@ -253,6 +255,15 @@ namespace poundfe
                "(enumeration, a few contacts), newton-fb (semismooth Newton on "
                "Fischer-Burmeister). Unit: -.",
                lcp_solver_names());
+    prm.add_parameter("LCP tolerance", moreau_jean.lcp.tolerance,
+                      "Model = nonsmooth: the LCP solver's tolerance on Siconos's relative "
+                      "complementarity error (lcp_compute_error); a step whose LCP is not "
+                      "solved to it stops the run (exit 2, the results so far kept, the step "
+                      "and the residual named). Unit: dimensionless.");
+    prm.add_parameter("LCP iterations", moreau_jean.lcp.max_iterations,
+                      "Model = nonsmooth: the LCP solver's iteration limit (Lemke: pivots; "
+                      "nsgs: sweeps; newton-fb: Newton iterations). Unit: count.",
+                      Patterns::Integer(1, 100000000));
     prm.add_parameter("Event refinement", newmark.newton.event_refinement,
                       "A step in which a contact starts or ends is redone in 2^r "
                       "sub-steps around the event, which is then located inside the "
@@ -326,6 +337,9 @@ namespace poundfe
   {
     if (!(moreau_jean.theta >= 0.5 && moreau_jean.theta <= 1))
       input.fail("Contact/Theta", "must lie in [1/2, 1], got " + number_text(moreau_jean.theta));
+    if (!(moreau_jean.lcp.tolerance > 0 && moreau_jean.lcp.tolerance < 1))
+      input.fail("Contact/LCP tolerance",
+                 "must lie in (0, 1), got " + number_text(moreau_jean.lcp.tolerance));
     if (contact_model != ContactModel::nonsmooth)
       return;
     if (!lcp_solver_available())

@@ -539,6 +539,41 @@ namespace poundfe
     json.end_array();
   }
 
+  namespace
+  {
+    /// summary.json's `contact` of rigid contact (Contact/Model = nonsmooth):
+    /// the model, its scheme and LCP solver, the LCPs' counts (Moreau-Jean's
+    /// solves in the run's statistics) and Newton's e of each gap; no law
+    /// force parameter, which rigid contact ignores.
+    void
+    write_rigid_contact(JsonWriter &json, const Model &model, const IterationStatistics &stats,
+                        const TimeIntegrationParameters &time_integration)
+    {
+      const LcpOptions           &lcp    = time_integration.moreau_jean.lcp;
+      const IterativeSolveCounts &counts = stats.linear;
+      json.begin_object("contact")
+        .value("model", "nonsmooth")
+        .value("integrator", "Moreau-Jean")
+        .value("theta", time_integration.moreau_jean.theta)
+        .value("lcp_solver", lcp_solver_names().name(lcp.solver))
+        .value("lcp_tolerance", lcp.tolerance)
+        .value("lcp_iteration_limit", lcp.max_iterations);
+      json.begin_object("lcp")
+        .value("solves", counts.solves)
+        .value("max_iterations", counts.max_iterations)
+        .value("mean_iterations",
+               counts.solves > 0 ? double(counts.iterations) / counts.solves : 0.0)
+        .end_object();
+      json.begin_array("pairs");
+      for (const Gap &gap : model.gaps)
+        json.begin_object()
+          .value("gap", gap.label)
+          .value("coefficient_of_restitution", time_integration.restitution)
+          .end_object();
+      json.end_array().end_object();
+    }
+  } // namespace
+
   void
   RunSummary::write_gaps(JsonWriter &json, const ResponseView &state) const
   {
@@ -546,16 +581,21 @@ namespace poundfe
     const unsigned int n_hysteretic = peaks.n_hysteretic();
     const unsigned int n_gaps       = peaks.n_gaps();
     const ContactLawParameters &law          = model.contact;
-    json.begin_object("contact").value("law", law.law).value("stiffness", law.stiffness);
-    // an undamped law has no damping and no restitution of its own; a given
-    // damping parameter owes nothing to the coefficient of restitution
-    const ContactDampingFrom from = parameters.contact.damping_from;
-    if (contact_law_is_damped(law.law))
-      json.value("damping_parameter", law.damping)
-        .value("damping_from", contact_damping_from_names().name(from));
-    if (contact_law_is_damped(law.law) && from != ContactDampingFrom::given)
-      json.value("coefficient_of_restitution", parameters.contact.restitution);
-    json.end_object();
+    if (parameters.time_history.time_integration.contact_model == ContactModel::nonsmooth)
+      write_rigid_contact(json, model, state.statistics(), parameters.time_history.time_integration);
+    else
+      {
+        json.begin_object("contact").value("law", law.law).value("stiffness", law.stiffness);
+        // an undamped law has no damping and no restitution of its own; a
+        // given damping parameter owes nothing to the coefficient of restitution
+        const ContactDampingFrom from = parameters.contact.damping_from;
+        if (contact_law_is_damped(law.law))
+          json.value("damping_parameter", law.damping)
+            .value("damping_from", contact_damping_from_names().name(from));
+        if (contact_law_is_damped(law.law) && from != ContactDampingFrom::given)
+          json.value("coefficient_of_restitution", parameters.contact.restitution);
+        json.end_object();
+      }
     write_bumper(json, state);
     std::vector<unsigned int> count(n_gaps, 0);
     std::vector<double>       peak(n_gaps, 0.0), penetration(n_gaps, 0.0), impulse(n_gaps, 0.0);
