@@ -3,9 +3,10 @@ the slabs and members warped by `displacement`, and a Glyph (arrows,
 oriented and scaled by `contact_force`) of the same frame, rendered to a PNG
 to look at (the arrows must stand clear of the slabs).
 
-  pvbatch bench/vtu_contact_arrow.py SOLUTION.pvd TIME OUT.png [SCALE]
+  pvbatch bench/vtu_contact_arrow.py SOLUTION.pvd TIME OUT.png [SCALE [X Y Z]]
 
-SCALE: metres of arrow per newton (default 3e-6). pvbatch needs an X
+SCALE: metres of arrow per newton (default 3e-6); X Y Z: a point to look at
+from 12 m away (default: the whole model). pvbatch needs an X
 display (Xvfb :N and DISPLAY=:N; pvpython under xvfb-run could not open one
 here, pvbatch could)."""
 import sys
@@ -30,9 +31,14 @@ arrows.GlyphMode = "All Points"
 shown = Show(arrows, view)
 shown.ColorArrayName = [None, ""]
 shown.DiffuseColor = [1, 0, 0]
-view.CameraPosition = [40, -40, 40]
-view.CameraFocalPoint = [10, 5, 10]
 view.CameraViewUp = [0, 0, 1]
-view.ResetCamera()
+if len(sys.argv) > 7:
+    at = [float(x) for x in sys.argv[5:8]]
+    view.CameraFocalPoint = at
+    view.CameraPosition = [at[0] + 6, at[1] - 8, at[2] + 7]
+else:
+    view.CameraPosition = [40, -40, 40]
+    view.CameraFocalPoint = [10, 5, 10]
+    view.ResetCamera()
 Render(view)
 SaveScreenshot(png, view, ImageResolution=[1200, 900])
