@@ -252,16 +252,17 @@ namespace poundfe::commands
     }
 
     /// msa.png: each limit state's fitted curve and, beside it in its
-    /// colour, the fraction of each stripe's runs that exceeded it; the
-    /// fraction of each stripe's runs that collapsed as black squares.
+    /// colour and in the key, the fraction of each stripe's runs that
+    /// exceeded it (collapse is the first state: its fraction is the
+    /// stripe's collapses).
     Plot
-    msa_plot(const std::vector<LimitState> &states, const std::string &measure,
-             const MsaResult &result)
+    msa_plot(const std::vector<LimitState> &states, const std::string &measure)
     {
       Plot plot{"msa.png", "Fragility of each limit state from the stripes (lognormal fit) against " + measure,
                 measure, "P(limit state exceeded)", {}};
-      // the observed fractions reach 0 and 1: a margin keeps their markers whole
-      plot.settings = "set xrange [0:*]\nset yrange [-0.02:1.05]\n";
+      // the observed fractions reach 0 and 1, the last stripe the axis' end:
+      // margins keep their markers whole
+      plot.settings = "set xrange [0:*]\nset yrange [-0.02:1.05]\nset offsets 0, graph 0.04, 0, 0\n";
       for (std::size_t s = 0; s < states.size(); ++s)
         {
           const std::string colour = " lc " + std::to_string(s + 1);
@@ -270,20 +271,6 @@ namespace poundfe::commands
           plot.series.push_back({"msa_stripes.csv", "1:" + std::to_string(5 + 2 * s),
                                  states[s].name + " (observed fraction)", "points pt 7 ps 1" + colour});
         }
-      plot.data_blocks = "$collapses << EOD\nintensity,collapsed\n";
-      for (std::size_t j = 0; j < result.runs.size(); ++j)
-        {
-          unsigned int runs = 0, collapsed = 0;
-          for (const IdaPoint &p : result.runs[j])
-            if (!p.demands.empty())
-              ++runs, collapsed += p.collapsed ? 1 : 0;
-          if (runs > 0)
-            plot.data_blocks += number_text(result.stripes[j]) + "," +
-                                number_text(double(collapsed) / runs) + "\n";
-        }
-      plot.data_blocks += "EOD\n";
-      plot.series.push_back({"$collapses", "1:2", "collapse (observed fraction)",
-                             "points pt 5 ps 1.2 lc rgb 'black'"});
       return plot;
     }
 
@@ -365,8 +352,7 @@ namespace poundfe::commands
       json.end_object();
       if (input.output.plots && !result.counters.interrupted)
         draw_plots(run.directory, {msa_plot(states, intensity_measure_names().name(ida.measure) +
-                                                     " (" + unit + ")",
-                                            result)});
+                                                     " (" + unit + ")")});
       write_file_atomically(run.directory + "/summary.json", json.str());
     }
   } // namespace

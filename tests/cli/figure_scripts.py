@@ -159,8 +159,8 @@ if p:
     fits = [t[:-len(" (fit)")] for t in titles if t.endswith(" (fit)")]
     check(fits and all(f + " (observed fraction)" in titles for f in fits),
           f"msa.png: the observed fractions not in the key: {titles}")
-    check("collapse (observed fraction)" in titles and "$collapses" in p["blocks"],
-          f"msa.png: no collapse points: {titles}")
+    check("collapse (observed fraction)" in titles, f"msa.png: no collapse fractions: {titles}")
+    check("set offsets 0, graph 0.04, 0, 0" in p["lines"], "msa.png: the last stripe on the frame")
 
 p = first(every["ida"], "ida.png", "ida")
 if p:
