@@ -252,20 +252,25 @@ namespace poundfe::commands
       return fit_cloud(x, d);
     }
 
-    /// msa.png: each limit state's fitted curve and observed fractions.
+    /// msa.png: each limit state's fitted curve and, beside it in its
+    /// colour and in the key, the fraction of each stripe's runs that
+    /// exceeded it (collapse is the first state: its fraction is the
+    /// stripe's collapses).
     Plot
     msa_plot(const std::vector<LimitState> &states, const std::string &measure)
     {
       Plot plot{"msa.png", "Fragility of each limit state from the stripes (lognormal fit) against " + measure,
                 measure, "P(limit state exceeded)", {}};
-      // the observed fractions reach 0 and 1: a margin keeps their markers whole
-      plot.settings = "set xrange [0:*]\nset yrange [-0.02:1.05]\n";
+      // the observed fractions reach 0 and 1, the last stripe the axis' end:
+      // margins keep their markers whole
+      plot.settings = "set xrange [0:*]\nset yrange [-0.02:1.05]\nset offsets 0, graph 0.04, 0, 0\n";
       for (std::size_t s = 0; s < states.size(); ++s)
         {
+          const std::string colour = " lc " + std::to_string(s + 1);
           plot.series.push_back({"msa_curves.csv", "1:" + std::to_string(2 + s),
-                                 states[s].name + " (fit)", "lines lw 2 lc " + std::to_string(s + 1)});
-          plot.series.push_back({"msa_stripes.csv", "1:" + std::to_string(5 + 2 * s), "",
-                                 "points pt 7 ps 1 lc " + std::to_string(s + 1)});
+                                 states[s].name + " (fit)", "lines lw 2" + colour});
+          plot.series.push_back({"msa_stripes.csv", "1:" + std::to_string(5 + 2 * s),
+                                 states[s].name + " (observed fraction)", "points pt 7 ps 1" + colour});
         }
       return plot;
     }

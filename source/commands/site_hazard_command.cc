@@ -5,6 +5,7 @@
 // periods and, with a fragility, the annual probability of failure. Writes
 // hazard.csv, hazard_curve.csv, return_periods.csv, hazard.png and summary.json.
 #include <poundfe/base/input_file.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/commands/command.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/excitation/ground_motion.h>
@@ -97,12 +98,17 @@ namespace poundfe::commands
     }
 
     Plot
-    hazard_plot(const IntensityHazard &hazard)
+    hazard_plot(const IntensityHazard &hazard, const SiteHazardParameters &p)
     {
+      // the site the rates belong to, in the title
+      const std::string site = rounded(std::abs(p.site.latitude), 5) +
+                               (p.site.latitude < 0 ? " S, " : " N, ") +
+                               rounded(std::abs(p.site.longitude), 5) +
+                               (p.site.longitude < 0 ? " W" : " E");
       const std::string fit = hazard.model == IntensityHazard::Model::gumbel ?
                                 "Gumbel fit of the annual maxima" :
                                 "Poisson fit (exponential in intensity)";
-      Plot by_intensity{"hazard.png", "Site hazard: annual rate of exceedance",
+      Plot by_intensity{"hazard.png", "Site hazard at " + site + ": annual rate of exceedance",
                         "site intensity I (Cornell)", "annual rate of exceedance (1/year)",
                         {{"hazard.csv", "7:10", "catalogue (events with I >= x per year)",
                           "points pt 7 ps 1.2"},
@@ -251,7 +257,7 @@ namespace poundfe::commands
       if (run.memory) // no figure
         return files;
       if (input.output.plots)
-        for (const std::string &png : draw_plots(directory, {hazard_plot(site.hazard)}))
+        for (const std::string &png : draw_plots(directory, {hazard_plot(site.hazard, p)}))
           files.push_back(png);
       else
         std::remove((directory + "/hazard.png").c_str()); // not an earlier run's

@@ -117,6 +117,21 @@ namespace poundfe::commands
       return columns;
     }
 
+    /// The response with what it is of, for the figure: "peak drift ratio
+    /// of building A, storey 2", "peak roof displacement of building A",
+    /// "peak contact force of all gap elements".
+    std::string
+    response_of(const Model &model, const SubsetParameters &ss)
+    {
+      const std::string name = subset_response_names().name(ss.response);
+      if (ss.response == SubsetResponse::peak_contact_force)
+        return name + " of all gap elements";
+      std::string of = name + " of building " + model.buildings.at(ss.building - 1).name;
+      if (ss.response == SubsetResponse::peak_drift_ratio)
+        of += ss.storey > 0 ? ", storey " + std::to_string(ss.storey) : " (largest storey)";
+      return of;
+    }
+
     SubsetSettings
     settings_of(const SubsetParameters &ss, const RealizationRunner &runner)
     {
@@ -399,8 +414,9 @@ namespace poundfe::commands
     write_summary(run, input, facts, result);
     const bool draws = input.output.plots && !result.interrupted && !run.memory; // stop soon
     if (draws)
-      draw_plots(directory, {subset_plot(result, threshold, limit_state ? "-g (system)" :
-                                                                   facts.response_name + unit)});
+      draw_plots(directory, {subset_plot(result, threshold,
+                                         limit_state ? "-g (system)" :
+                                                       response_of(analysis.model, ss) + unit)});
     timer.leave_subsection();
 
     report(pcout, input, run.results_place(), facts, unit, result, draws);

@@ -12,6 +12,7 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <cmath>
 #include <utility>
 
 namespace poundfe
@@ -116,7 +117,8 @@ namespace poundfe
 
   std::unique_ptr<StepObserver>
   PartitionedStepper::field_recorder(const Model &model, const std::string &directory,
-                                     const FieldFormat format, const unsigned int every)
+                                     const FieldFormat format, const unsigned int every,
+                                     const bool impact_peaks)
   {
     const bool                 together = format == FieldFormat::xdmf;
     std::unique_ptr<VtuSeries> series; // every rank's, or rank 0's
@@ -124,7 +126,10 @@ namespace poundfe
       series = std::make_unique<VtuSeries>(model, directory, "solution", communicator);
     else if (ranks.writes_files())
       series = std::make_unique<VtuSeries>(model, directory, "solution", format);
-    auto recorder = std::make_unique<RankFieldRecorder>(ranks, std::move(series), every, together);
+    gap_forces_asked = impact_peaks;
+    auto recorder    = std::make_unique<RankFieldRecorder>(ranks, std::move(series), every,
+                                                        together,
+                                                        impact_peaks ? &gap_force : nullptr);
     field         = recorder.get();
     return recorder;
   }
@@ -179,6 +184,25 @@ namespace poundfe
   {
     keep_failure([this]() { part.initialize(); }); // every rank stops at the first step
     replay(true);
+    sum_gap_forces();
+  }
+
+  void
+  PartitionedStepper::sum_gap_forces()
+  {
+    if (!gap_forces_asked)
+      return;
+    // each gap's force from the rank that observes it (x + 0 = x), then
+    // summed in the elements' order as the whole-model recorder does
+    gap_forces.assign(elements.size(), 0.0);
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      if (elements[h].kind == ElementKind::gap && ranks.observed()[h])
+        gap_forces[h] = std::abs(elements[h].force());
+    MPI_Allreduce(MPI_IN_PLACE, gap_forces.data(), gap_forces.size(), MPI_DOUBLE, MPI_SUM,
+                  communicator);
+    gap_force = 0;
+    for (const double f : gap_forces)
+      gap_force += f;
   }
 
   void
@@ -186,6 +210,7 @@ namespace poundfe
   {
     part.advance(); // a NumericalError on every rank
     replay(false);
+    sum_gap_forces();
   }
 
   void

@@ -155,45 +155,73 @@ namespace poundfe
     rows.clear();
   }
 
-  /// The field output of a run observed by rank, at every `every`-th step.
-  /// VTU: each rank adds its own equations of u and the frame states of
-  /// the elements it observes (the others zero) as one row of `ranks`; on
-  /// rank 0 the sum is the whole model's frame, which `series` writes.
-  /// HDF5 + XDMF (`together`): every rank's series writes its own rows of
-
   RankFieldRecorder::RankFieldRecorder(RanksOfRun &ranks, std::unique_ptr<VtuSeries> series,
-                                       const unsigned int every, const bool together)
-    : PeriodicObserver(every)
-    , ranks(ranks)
+                                       const unsigned int every, const bool together,
+                                       const double *gap_force)
+    : ranks(ranks)
     , series(std::move(series))
     , together(together)
+    , every(every)
+    , gap_force(gap_force)
   {}
 
   void
-  RankFieldRecorder::write(const ResponseView &state)
+  RankFieldRecorder::initialize(const ResponseView &state)
   {
-    const Vector &u = state.displacement();
-    states.evaluate(state.elements, u, &ranks.observed());
+    next  = 0;
+    peaks = ImpactPeakRule();
+    observe_step(state);
+  }
+
+  void
+  RankFieldRecorder::observe_step(const ResponseView &state)
+  {
+    const double force = gap_force ? *gap_force : 0.0;
+    if (peaks.held_was_peak(force))
+      send(held);
+    const bool regular = state.step() == next;
+    if (regular)
+      {
+        next += every;
+        capture(state, current);
+        send(current);
+      }
+    if (peaks.hold(force, regular))
+      capture(state, held);
+  }
+
+  void
+  RankFieldRecorder::capture(const ResponseView &state, Frame &frame)
+  {
+    frame.time = state.time();
+    frame.u    = state.displacement();
+    states.evaluate(state.elements, frame.u, &ranks.observed());
+    constexpr double none  = std::numeric_limits<double>::quiet_NaN();
+    const double     empty = together ? none : 0.0;
+    const std::vector<char> &mine = together ? ranks.available() : ranks.equations();
+    for (Eigen::Index q = 0; q < frame.u.size(); ++q)
+      if (!mine[q])
+        frame.u[q] = empty;
+    if (together)
+      for (unsigned int h = 0; h < states.kinds.size(); ++h)
+        if (!ranks.observed()[h])
+          std::fill_n(states.values.begin() + ElementFrameStates::n_entries * h,
+                      ElementFrameStates::n_entries, none);
+    frame.states = states.values;
+  }
+
+  void
+  RankFieldRecorder::send(const Frame &frame)
+  {
     if (together)
       {
-        constexpr double none = std::numeric_limits<double>::quiet_NaN();
-        time                  = state.time();
-        this->u               = u;
-        for (Eigen::Index q = 0; q < u.size(); ++q)
-          if (!ranks.available()[q])
-            this->u[q] = none;
-        for (unsigned int h = 0; h < states.kinds.size(); ++h)
-          if (!ranks.observed()[h])
-            std::fill_n(states.values.begin() + ElementFrameStates::n_entries * h,
-                        ElementFrameStates::n_entries, none);
+        queued.push_back(frame);
         ranks.add(*this);
         return;
       }
-    frame.resize(u.size() + states.values.size());
-    for (Eigen::Index q = 0; q < u.size(); ++q)
-      frame[q] = ranks.equations()[q] ? u[q] : 0.0;
-    std::copy(states.values.begin(), states.values.end(), frame.begin() + u.size());
-    ranks.add(*this, state.time(), frame.data(), frame.size(), nullptr);
+    row.assign(frame.u.data(), frame.u.data() + frame.u.size());
+    row.insert(row.end(), frame.states.begin(), frame.states.end());
+    ranks.add(*this, frame.time, row.data(), row.size(), nullptr);
   }
 
   void
@@ -209,7 +237,11 @@ namespace poundfe
   void
   RankFieldRecorder::write_together()
   {
-    series->write(time, u, states);
+    Assert(!queued.empty(), dealii::ExcInternalError());
+    const Frame frame = std::move(queued.front());
+    queued.erase(queued.begin());
+    states.values = frame.states;
+    series->write(frame.time, frame.u, states);
   }
 
   void

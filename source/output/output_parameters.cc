@@ -42,11 +42,11 @@ namespace poundfe
                       "more, the interval is widened to fit and the console says so. Unit: count.",
                       dealii::Patterns::Integer(2));
     prm.add_parameter("VTU impact peaks", vtu_impact_peaks,
-                      "A run on one process, not partitioned by building, also writes a VTU "
-                      "frame at the peak of each impact (the step at which the gaps' total "
-                      "force stops rising), besides the frames of VTU interval; these frames "
-                      "are not counted in Maximum VTU frames (a run with much chatter writes "
-                      "many). Unit: -.");
+                      "A run also writes a VTU frame at the peak of each impact (the step at "
+                      "which the gaps' total force stops rising), besides the frames of VTU "
+                      "interval; a run partitioned by building writes the same frames as the "
+                      "whole model's run. These frames are not counted in Maximum VTU frames (a "
+                      "run with much chatter writes many). Unit: -.");
     prm.add_parameter("Plots", plots, "Make PNG plots with gnuplot. Unit: -.");
     prm.add_parameter("Floor spectra", floor_spectra,
                       "A run also writes floor_spectra.csv (and floor_spectra.png): the "

@@ -31,8 +31,10 @@ namespace poundfe
     write_panel(std::ostream &script, const Plot &plot)
     {
       // what an earlier panel may have set (a count histogram's one tic per
-      // whole number and its bars' width would reach the next figure's axis)
-      script << "set autoscale\nunset arrow\nunset label\nset xtics autofreq\nset boxwidth\n";
+      // whole number and its bars' width would reach the next figure's axis;
+      // mitigation's rotated case names and offsets)
+      script << "set autoscale\nunset arrow\nunset label\nset xtics norotate autofreq\n"
+                "set boxwidth\nset offsets 0, 0, 0, 0\n";
       if (plot.y2_label.empty())
         script << "unset y2label\nunset y2tics\nset ytics mirror\n";
       else
@@ -112,20 +114,9 @@ namespace poundfe
     missing().clear();
   }
 
-  std::vector<std::string>
-  draw_plots(const std::string &directory, const std::vector<Plot> &plots)
+  std::string
+  plot_script(const std::vector<Plot> &plots)
   {
-    std::vector<std::string> written;
-    if (plots.empty())
-      return written;
-    throw_if_interrupted(); // gnuplot can take seconds: a safe point before it
-    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
-      {
-        std::cerr << "poundfe: warning: gnuplot not found; no PNG plots written\n";
-        for (const Plot &plot : plots)
-          missing().push_back({plot.file, directory, "gnuplot not found"});
-        return written;
-      }
     std::ostringstream script;
     script << "set datafile separator ','\nset key autotitle columnhead below\n"
               "set grid\n";
@@ -142,12 +133,30 @@ namespace poundfe
           write_panel(script, panel);
         script << (n_panels > 1 ? "unset multiplot\n" : "") << "unset output\n";
       }
+    return script.str();
+  }
+
+  std::vector<std::string>
+  draw_plots(const std::string &directory, const std::vector<Plot> &plots)
+  {
+    std::vector<std::string> written;
+    if (plots.empty())
+      return written;
+    throw_if_interrupted(); // gnuplot can take seconds: a safe point before it
+    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+      {
+        std::cerr << "poundfe: warning: gnuplot not found; no PNG plots written\n";
+        for (const Plot &plot : plots)
+          missing().push_back({plot.file, directory, "gnuplot not found"});
+        return written;
+      }
+    const std::string script = plot_script(plots);
     // gnuplot writes these itself: listed first (output_directory.h)
     for (const Plot &plot : plots)
       register_output(directory + "/" + plot.file);
     register_output(directory + "/.plots.log");
     const std::string script_file = directory + "/.plots.gp";
-    write_file_atomically(script_file, script.str());
+    write_file_atomically(script_file, script);
     const std::string command =
       "cd " + quoted(directory) + " && gnuplot .plots.gp > .plots.log 2>&1";
     const int         status  = std::system(command.c_str());

@@ -45,7 +45,8 @@ namespace poundfe
       slab          = 4, // a rigid floor's outline (3D)
       mass_centre   = 5, // a rigid floor's master node (3D)
       contact_point = 6, // a gap's point of contact in plan (3D)
-      section_point = 7  // an integration point of a member on fibre sections
+      section_point = 7, // an integration point of a member on fibre sections
+      contact_arrow = 8  // the stem from a contact point up to its force arrow's point (3D)
     };
 
     static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
@@ -212,6 +213,10 @@ namespace poundfe
     {
     public:
       explicit VtuGeometry3D(const Model &model);
+      /// How far above its contact point a contact force's arrow point
+      /// stands, as a fraction of the model's size: clear of the slabs'
+      /// plane, near enough to be read as the same hit.
+      static constexpr double contact_arrow_lift = 0.02;
       /// The point and cell arrays of a frame: displacements times `scale`;
       /// the member end forces and the gaps' states when `states` is given
       /// (a time frame).
@@ -237,6 +242,9 @@ namespace poundfe
       void         add_floors();
       void         add_gaps();
       void         add_contact_point(unsigned int g);
+      /// Each contact point's arrow point, `lift` above it, and the stem
+      /// between them.
+      void         add_contact_arrows(double lift);
       double       value(const Combination &c, const Vector &u) const;
       void time_arrays(const Vector &u, const ElementFrameStates &states, FieldFrame &frame) const;
       /// The contact points' displacements (into d) and forces on the gaps'
@@ -256,6 +264,10 @@ namespace poundfe
       /// plan), -1: none. The point stands at the rest contact point; in a
       /// time frame it moves to the element's contact point.
       std::vector<int>                 gap_point, gap_vertex;
+      /// Per model gap: the point above its contact point that carries the
+      /// contact force (a Glyph's arrow there lies above the slabs, which
+      /// would hide it in their plane) and the stem cell; -1: none.
+      std::vector<int>                 gap_arrow, gap_stem;
       std::vector<int>                 master_point; // per model node; -1: none
       double                           model_size = 0;
     };

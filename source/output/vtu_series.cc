@@ -737,34 +737,39 @@ namespace poundfe
       }
     impl->writer->finish();
   }
+  double
+  total_gap_force(const NonlinearElements &elements)
+  {
+    double force = 0;
+    for (const NonlinearElement &e : elements)
+      if (e.kind == ElementKind::gap)
+        force += std::abs(e.force());
+    return force;
+  }
+
   void
   VtuRecorder::initialize(const ResponseView &state)
   {
-    next = 0;
-    held = HeldStep();
+    next  = 0;
+    peaks = ImpactPeakRule();
+    held  = HeldStep();
     observe_step(state);
   }
 
   void
   VtuRecorder::observe_step(const ResponseView &state)
   {
-    double force = 0; // the gaps' total |force| at this step (asked for only)
-    if (impact_peaks)
-      for (const NonlinearElement &e : state.elements)
-        if (e.kind == ElementKind::gap)
-          force += std::abs(e.force());
-    if (held.candidate && held.force >= held.force_before && force < held.force)
-      series.write(held.time, held.u, held.states); // the last step was an impact's peak
+    // the gaps' total |force| at this step (summed only when asked for)
+    const double force = impact_peaks ? total_gap_force(state.elements) : 0.0;
+    if (peaks.held_was_peak(force))
+      series.write(held.time, held.u, held.states);
     const bool regular = state.step() == next;
     if (regular)
       {
         next += every;
         series.write(state.time(), state.displacement(), state.elements);
       }
-    held.force_before = held.force;
-    held.force        = force;
-    held.candidate    = impact_peaks && force > 0 && !regular;
-    if (held.candidate)
+    if (peaks.hold(force, regular))
       {
         held.time = state.time();
         held.u    = state.displacement();

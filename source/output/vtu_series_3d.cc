@@ -18,15 +18,21 @@
 //     axis), in a time frame displaced to the element's contact point in the
 //     deformed configuration (x_c(t) - x_c(0), so that Warp By Vector puts it
 //     there), carrying the contact force on the gap's first building,
-//     F ∂g/∂u_1 = F n (model/plan_contact_geometry.h): a Glyph of
-//     `contact_force` draws the hits as arrows where they happen.
+//     F ∂g/∂u_1 = F n (model/plan_contact_geometry.h), on a point lifted
+//     above the contact point by `contact_arrow_lift` of the model's size
+//     and joined to it by a line (the stem): a Glyph of `contact_force`
+//     draws each hit as an arrow along the contact normal just above where
+//     it happens, clear of the two slabs, which lie in the contact point's
+//     plane and would hide an arrow drawn in it.
 // Point data: displacement, rotation, node (the model node of a mass centre
 // or of a joint's (uz, rx, ry); else -1), and in a time frame contact_force
-// (N; zero but at contact points). Cell data: kind (0 member, 1 storey, 2
-// gap, 4 slab, 5 mass centre, 6 contact point), building and member ids
+// (N; zero but at the contact arrows' points). Cell data: kind (0 member, 1
+// storey, 2 gap, 4 slab, 5 mass centre, 6 contact point, 8 contact arrow's
+// stem), building and member ids
 // (1-based; a slab's and a mass centre's floor number, a gap's number), and
 // in a time frame the member end forces in local axes (N, Vy, Vz, T, My, Mz)
-// at each end, the gap force and contact (on its line and its vertex).
+// at each end, the gap force and contact (on its line, its vertex and its
+// stem).
 #include <poundfe/elements/frame_element_3d.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/model/plan_contact_geometry.h>
@@ -57,6 +63,22 @@ namespace poundfe
           }
       for (unsigned int c = 0; c < 3; ++c)
         model_size = std::max(model_size, high[c] - low[c]);
+      add_contact_arrows(contact_arrow_lift * model_size);
+    }
+
+    void
+    VtuGeometry3D::add_contact_arrows(const double lift)
+    {
+      gap_arrow.assign(gap_point.size(), -1);
+      gap_stem.assign(gap_point.size(), -1);
+      for (unsigned int g = 0; g < gap_point.size(); ++g)
+        if (const int p = gap_point[g]; p >= 0)
+          {
+            const Point3 at = points[p];
+            gap_arrow[g]    = new_point({{at[0], at[1], at[2] + lift}}, {}, -1);
+            gap_stem[g]     = cells.types.size();
+            cells.add({p, gap_arrow[g]}, vtk_line, contact_arrow, model.gaps[g].buildings[0], g + 1);
+          }
     }
 
     unsigned int
@@ -204,10 +226,12 @@ namespace poundfe
                 continue; // the rest point, no force
               const std::array<double, 2> x{{states(h, State::point_x), states(h, State::point_y)}};
               const std::array<double, 2> f{{states(h, State::force_x), states(h, State::force_y)}};
+              const int                   arrow = gap_arrow.at(g - 1); // moves with its point
               for (unsigned int c = 0; c < 2; ++c)
                 {
-                  d[p][c]     = scale * (x[c] - points[p][c]);
-                  force[p][c] = f[c];
+                  d[p][c]         = scale * (x[c] - points[p][c]);
+                  d[arrow][c]     = d[p][c];
+                  force[arrow][c] = f[c];
                 }
             }
       return force;
@@ -266,7 +290,7 @@ namespace poundfe
       for (unsigned int h = 0; h < states.kinds.size(); ++h)
         if (states.kinds[h] == ElementKind::gap)
           {
-            for (const int cell : {gap_cell.at(g), gap_vertex.at(g)})
+            for (const int cell : {gap_cell.at(g), gap_vertex.at(g), gap_stem.at(g)})
               if (cell >= 0)
                 {
                   force.values[cell]   = states(h, ElementFrameStates::force);

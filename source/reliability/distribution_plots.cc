@@ -20,6 +20,15 @@ namespace poundfe
       return "($" + column + (divide ? "/" : "*") + number_text(si_per_unit) + ")";
     }
 
+    /// "set yrange [0:top]" a tenth above the tallest bar `tallest`, so that
+    /// no bar touches the frame (autoscaling stops at the bar when its
+    /// height is a tic).
+    std::string
+    range_above_bars(const double tallest)
+    {
+      return "set yrange [0:" + number_text(tallest > 0 ? 1.1 * tallest : 1.0) + "]\n";
+    }
+
     /// One bar per whole number of `values`: a data block "$counts" of
     /// (value, realizations), with its x range half a unit beyond the ends.
     void
@@ -36,7 +45,8 @@ namespace poundfe
       pdf.data_blocks += "EOD\n";
       pdf.y_label = "realizations";
       pdf.series  = {{"$counts", "1:2", "realizations", "boxes"}};
-      pdf.settings = "set boxwidth 0.8\nset yrange [0:*]\nset xrange [" +
+      const unsigned long tallest = *std::max_element(bars.counts.begin(), bars.counts.end());
+      pdf.settings = "set boxwidth 0.8\n" + range_above_bars(tallest) + "set xrange [" +
                      number_text(bars.edges.front()) + ":" + number_text(bars.edges.back()) +
                      "]\n" + (n_whole <= 30 ? "set xtics 1\n" : "");
     }
@@ -56,7 +66,9 @@ namespace poundfe
         pdf.series = {{"pdf_" + f.stem + ".csv",
                        in_unit("3", f.si_per_unit, true) + ":" + in_unit("5", f.si_per_unit, false),
                        "histogram", "boxes"}};
-        pdf.settings = "set yrange [0:*]\n";
+        const double tallest =
+          h.density.empty() ? 0.0 : *std::max_element(h.density.begin(), h.density.end());
+        pdf.settings = range_above_bars(tallest * f.si_per_unit); // the density per unit of the axis
         if (!h.edges.empty() && h.edges.back() > h.edges.front()) // the outer edges: no bar cut
           pdf.settings += "set xrange [" + number_text(h.edges.front() / f.si_per_unit) + ":" +
                           number_text(h.edges.back() / f.si_per_unit) + "]\n";

@@ -85,7 +85,10 @@ namespace poundfe
     class StandardObservers
     {
     public:
-      using FieldRecorderMaker = std::function<std::unique_ptr<StepObserver>(unsigned int)>;
+      /// The field recorder of a partitioned run: the steps between frames, whether
+      /// it adds impact-peak frames.
+      using FieldRecorderMaker =
+        std::function<std::unique_ptr<StepObserver>(unsigned int, bool)>;
 
       StandardObservers(const Analysis &analysis, const RunParameters &parameters,
                         const Excitation &excitation, const ResponseView &view,
@@ -163,13 +166,7 @@ namespace poundfe
               const unsigned int every =
                 vtu_steps_per_frame(output, dt, n_steps, writes ? options.console : nullptr);
               if (field_recorder) // on every rank
-                {
-                  outputs.push_back(field_recorder(every));
-                  if (output.vtu_impact_peaks && writes && options.console)
-                    *options.console << "poundfe: note: Output/VTU impact peaks: a run "
-                                        "partitioned by building writes the frames of VTU "
-                                        "interval only\n";
-                }
+                outputs.push_back(field_recorder(every, output.vtu_impact_peaks));
               else
                 outputs.push_back(std::make_unique<VtuRecorder>(analysis.model, directory, every,
                                                                 output.field_format,
@@ -238,9 +235,9 @@ namespace poundfe
     TimeHistory         history(analysis, parameters.time_history, stepper);
     const Excitation   &excitation = stepper.excitation();
     const unsigned long n_steps    = history.n_steps(excitation);
-    const auto field_recorder = [&](const unsigned int every) {
+    const auto field_recorder = [&](const unsigned int every, const bool impact_peaks) {
       return stepper.field_recorder(analysis.model, options.output_directory,
-                                    parameters.output.field_format, every);
+                                    parameters.output.field_format, every, impact_peaks);
     };
     // an error of a rank's observers (a recorder's bad entry) on every rank
     std::unique_ptr<StandardObservers> observers;

@@ -13,6 +13,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <sstream>
 
 namespace poundfe
@@ -599,6 +600,35 @@ namespace poundfe
       {name, "1:2", building.name + (plan ? (d == 0 ? " along x" : " along y") : ""), style});
   }
 
+  std::string
+  buildings_in_title(const Model &model)
+  {
+    const std::size_t n = model.buildings.size();
+    if (n == 0)
+      return "";
+    if (n > 4) // a city block: the legend names those drawn
+      return std::to_string(n) + " buildings: ";
+    std::string names = n == 1 ? "Building " : "Buildings ";
+    for (std::size_t b = 0; b < n; ++b)
+      names += (b == 0 ? "" : b + 1 == n ? " and " : ", ") + model.buildings[b].name;
+    return names + ": ";
+  }
+
+  void
+  name_buildings_in_titles(std::vector<Plot> &plots, const Model &model)
+  {
+    // the figures of the whole model; a hysteresis loop names its own storey
+    // and building, a phase portrait its DOF, ground_motion.png its record
+    const std::set<std::string> whole_model{
+      "drift_profile.png", "acceleration_profile.png", "roof_displacement.png",
+      "base_shear.png",    "energy.png",               "floor_spectra.png",
+      "contact_force.png", "impacts_plan.png"};
+    const std::string names = buildings_in_title(model);
+    for (Plot &plot : plots)
+      if (whole_model.count(plot.file) > 0)
+        plot.title = names + plot.title;
+  }
+
   Plot
   RunPlots::roof_plot() const
   {
@@ -619,7 +649,7 @@ namespace poundfe
     Plot roof{"roof_displacement.png",
               plan ? "Roof displacement of the mass centre (relative to the ground)" :
                      "Roof displacement (relative to the ground)",
-              "time (s)", "displacement (m)", {}};
+              "time (s)", "displacement (mm)", {}};
     if (!plan)
       {
         std::vector<unsigned int> roof_column;
@@ -629,7 +659,7 @@ namespace poundfe
             roof_column.push_back(column - 1);
           }
         add_building_series(roof, model, directory, "floor_displacement.csv", roof_column,
-                            peak_roof, "");
+                            peak_roof, "0.001"); // m to mm
         return roof;
       }
     std::vector<unsigned int> columns;
@@ -643,7 +673,7 @@ namespace poundfe
                                      model.buildings[b].name + " along y"});
       }
     roof.title = title_of_drawn(roof.title, drawn.size(), model.buildings.size(), "buildings");
-    add_time_series(roof, directory, "floor_displacement.csv", columns, titles, "",
+    add_time_series(roof, directory, "floor_displacement.csv", columns, titles, "0.001",
                     drawn.size() < model.buildings.size());
     return roof;
   }
@@ -720,6 +750,7 @@ namespace poundfe
       all.push_back(contact_force_plot(model, directory));
     if (model.dimension == 3 && !model.gaps.empty())
       all.push_back(impact_plan_plot(model, state.impact_log().impacts()));
+    name_buildings_in_titles(all, model);
     return draw_plots(directory, all);
   }
 } // namespace poundfe

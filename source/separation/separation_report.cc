@@ -5,6 +5,7 @@
 #include <poundfe/output/finite_output.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -60,16 +61,28 @@ namespace poundfe
         // separation.csv in m, drawn in mm; from 0, so that no point sits on the frame
         panel.settings = "set xrange [0:*]\n";
         const std::string only = "(($1==" + std::to_string(p + 1) + ")?1000*$";
-        for (unsigned int c = 0; c < rule_names.size(); ++c) // ASCE 7 dashed: it may equal SRSS
-          panel.series.push_back(
-            {"separation.csv", only + std::to_string(8 + c) + ":1/0):4", rule_names[c],
-             c == 4 ? "linespoints dt 2" : "linespoints"});
+        // a dark colour per rule (gnuplot's fifth default colour is a yellow
+        // unreadable on white); ASCE 7 dashed: it may equal SRSS
+        const std::array<const char *, 5> colour{
+          {"#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#a6761d"}};
+        for (unsigned int c = 0; c < rule_names.size(); ++c)
+          panel.series.push_back({"separation.csv", only + std::to_string(8 + c) + ":1/0):4",
+                                  rule_names[c],
+                                  std::string(c == 4 ? "linespoints dt 2" : "linespoints") +
+                                    " lc rgb '" + colour[c] + "'"});
         if (!spectrum)
           panel.series.push_back({"separation.csv", only + "13:1/0):4",
                                   "time history (no contact)", "linespoints lw 3 lc rgb 'black'"});
-        panel.series.push_back({"separation.csv", "(($1==" + std::to_string(p + 1) + ")?" +
-                                                    number_text(1000 * pair.existing_gap) + ":1/0):4",
-                                "existing gap", "lines dt 2 lc rgb 'gray40'"});
+        // the existing gap from the ground to the top common level: a line
+        // even when the pair has one common level
+        double top = 0;
+        for (const CommonLevel &level : pair.levels)
+          top = std::max(top, level.level);
+        const std::string gap   = number_text(1000 * pair.existing_gap);
+        const std::string block = "$gap" + std::to_string(p + 1);
+        panel.data_blocks = block + " << EOD\ngap_mm,level_m\n" + gap + ",0\n" + gap + "," +
+                            number_text(top) + "\nEOD\n";
+        panel.series.push_back({block, "1:2", "existing gap", "lines dt 2 lw 2 lc rgb 'gray40'"});
         if (p == 0)
           plot = panel;
         else
@@ -122,7 +135,8 @@ namespace poundfe
         const std::string c = std::to_string(3 + 4 * p);
         Plot panel{"pounding_probability.png",
                    "Probability of pounding of " + pairs[p].name + ", " +
-                     std::to_string(results[p].largest_approach.size()) + " realizations",
+                     std::to_string(results[p].largest_approach.size()) +
+                     (results[p].largest_approach.size() == 1 ? " realization" : " realizations"),
                    "gap width g (mm)", "P(largest relative approach > g)", {}};
         panel.settings = "set yrange [-0.02:1.05]\n"; // P reaches 0 and 1: the curve off the frame
         panel.series = {

@@ -25,7 +25,11 @@ checked against the run's CSV histories at the frame's time:
   * a gap's force is contact_force.csv's (exact) and contact is 1 exactly
     where it is > 0, in contact in some frame;
   * each gap's contact point (one vertex per gap) carries the same force and
-    flag; in contact its contact_force is the force on the gap's first
+    flag; its arrow point, joined to it by a stem (a line of kind 8 with the
+    same force and flag), stands straight above it (2 % of the model's size,
+    so that a Glyph's arrow there is not hidden in the slabs' plane) and
+    moves with it; the contact point carries no contact_force, the arrow
+    point in contact the force on the gap's first
     building: of magnitude the gap force (1e-12: |n| = 1 to round-off), in
     plan, pushing the first floor away from the second (positive along the
     line from the second's mass centre to the first's), and its displaced
@@ -54,7 +58,7 @@ import vtu  # noqa: E402  (the readers; its own checks run only as a script)
 
 failures = vtu.failures
 check = vtu.check
-MEMBER, STOREY, GAP, SLAB, CENTRE, CONTACT = 0, 1, 2, 4, 5, 6
+MEMBER, STOREY, GAP, SLAB, CENTRE, CONTACT, ARROW = 0, 1, 2, 4, 5, 6, 8
 
 
 def read(path):
@@ -204,7 +208,23 @@ def check_contact_point(v, name, c, want, centres):
     """A gap's contact point (the vertex cell c) against the gap's force
     `want` and the floors' motions (the mass centres `centres`)."""
     p, g = v["cells"][c][0], v["data"]["member"][c]
-    force, f = v["data"]["force"][c], v["data"]["contact_force"][p]
+    stems = [s for s, points in enumerate(v["cells"])
+             if v["data"]["kind"][s] == ARROW and v["data"]["member"][s] == g]
+    check(len(stems) == 1, f"{name}: contact point {g}: {len(stems)} arrow stems")
+    if len(stems) != 1:
+        return
+    bottom, a = v["cells"][stems[0]]
+    check(bottom == p, f"{name}: contact point {g}: the stem starts at point {bottom}")
+    lift = v["xyz"][a][2] - v["xyz"][p][2]
+    size = model_size(v)
+    check(v["xyz"][a][:2] == v["xyz"][p][:2] and abs(lift - 0.02 * size) <= 1e-9 * size and lift > 0,
+          f"{name}: contact point {g}: arrow point {v['xyz'][a]} not {0.02 * size} m above {v['xyz'][p]}")
+    check(v["data"]["displacement"][a] == v["data"]["displacement"][p],
+          f"{name}: contact point {g}: the arrow point does not move with it")
+    check(v["data"]["contact_force"][p] == [0, 0, 0], f"{name}: contact point {g} carries a force")
+    check(v["data"]["force"][stems[0]] == want and v["data"]["contact"][stems[0]] == (want > 0),
+          f"{name}: contact point {g}: the stem's force")
+    force, f = v["data"]["force"][c], v["data"]["contact_force"][a]
     check(force == want and v["data"]["contact"][c] == (force > 0), f"{name}: contact point {g} force")
     if force <= 0:
         check(f == [0, 0, 0], f"{name}: contact point {g}: force {f} while open")
@@ -290,6 +310,14 @@ def check_irregularity(out, names):
     return n_checked
 
 
+def model_size(v):
+    """The model's largest extent along x, y or z, without the contact
+    arrows' points (lifted above the model by a fraction of that size)."""
+    arrows = {points[1] for s, points in enumerate(v["cells"]) if v["data"]["kind"][s] == ARROW}
+    xyz = [x for i, x in enumerate(v["xyz"]) if i not in arrows]
+    return max(max(x[k] for x in xyz) - min(x[k] for x in xyz) for k in range(3))
+
+
 def check_modes(out):
     with open(os.path.join(out, "summary.json")) as f:
         frequencies = json.load(f)["modes"]["frequencies_hz"]
@@ -298,7 +326,7 @@ def check_modes(out):
     for (number, name), frequency in zip(modes, frequencies):
         v = read(os.path.join(out, name))
         check(abs(v["fields"]["frequency_Hz"] - frequency) <= 1e-12 * frequency, f"{name}: frequency")
-        size = max(max(p[k] for p in v["xyz"]) - min(p[k] for p in v["xyz"]) for k in range(3))
+        size = model_size(v)
         largest = max(math.hypot(*p) for p in v["data"]["displacement"])
         check(abs(largest - 0.05 * size) <= 1e-12 * size, f"{name}: largest translation {largest}")
     return len(modes)

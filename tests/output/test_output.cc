@@ -2,6 +2,7 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/json_writer.h>
+#include <poundfe/output/plots.h>
 
 #include <filesystem>
 #include <fstream>
@@ -104,4 +105,42 @@ BOOST_AUTO_TEST_CASE(a_streamed_json_is_the_in_memory_text)
   }
   BOOST_TEST(!std::filesystem::exists(path));
   BOOST_TEST(!std::filesystem::exists(path + ".tmp"));
+}
+
+// A count histogram's "set xtics 1" and "set boxwidth 0.8" once reached the
+// next figure drawn by the same gnuplot call (thousands of tics, overlapping
+// bars): the script resets them, and the ranges, before each panel's own
+// settings, a figure after another and a panel under another alike.
+BOOST_AUTO_TEST_CASE(plot_script_resets_each_panel)
+{
+  poundfe::Plot histogram{"pdf_n_impacts.png", "impacts", "number of impacts", "realizations",
+                          {{"$counts", "1:2", "realizations", "boxes"}}};
+  histogram.settings = "set boxwidth 0.8\nset xtics 1\nset yrange [0:3.3]\n";
+  poundfe::Plot next{"cdf_drift.png", "drift", "drift", "P", {{"cdf.csv", "1:2", "ECDF", "steps"}}};
+  next.below.push_back(next);
+  const std::string script = poundfe::plot_script({histogram, next});
+  // each "plot" command and the settings that precede it, back to the last one
+  std::vector<std::string> panels;
+  std::size_t              from = 0;
+  for (std::size_t at = script.find("\nplot "); at != std::string::npos;
+       at = script.find("\nplot ", at + 1))
+    {
+      panels.push_back(script.substr(from, at - from));
+      from = at + 1;
+    }
+  BOOST_REQUIRE_EQUAL(panels.size(), 3u);
+  for (const std::string &panel : panels)
+    {
+      const std::size_t reset = panel.find("set xtics norotate autofreq\n");
+      BOOST_CHECK_MESSAGE(reset != std::string::npos, panel);
+      BOOST_CHECK(panel.find("set boxwidth\n") != std::string::npos);
+      BOOST_CHECK(panel.find("set offsets 0, 0, 0, 0\n") != std::string::npos);
+      BOOST_CHECK(panel.find("set autoscale\n") != std::string::npos);
+      BOOST_CHECK(panel.find("unset logscale y\n") != std::string::npos);
+      // the histogram's own settings come after the reset
+      if (panel.find("set xtics 1\n") != std::string::npos)
+        BOOST_CHECK_LT(reset, panel.find("set xtics 1\n"));
+    }
+  BOOST_CHECK(panels[0].find("set boxwidth 0.8\n") != std::string::npos);
+  BOOST_CHECK(panels[1].find("set boxwidth 0.8\n") == std::string::npos);
 }

@@ -7,12 +7,14 @@
 //  - the histogram's x range is its bins' outer edges (no bar cut at either
 //    end);
 //  - a count gets one bar per whole number whatever the bins of its CSV,
-//    the bar's height the number of realizations with that count.
+//    the bar's height the number of realizations with that count;
+//  - the y range ends a tenth above the tallest bar (none touches the frame).
 #include <poundfe/base/numbers.h>
 #include <poundfe/reliability/distribution_plots.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 BOOST_AUTO_TEST_SUITE(distribution_plots)
@@ -38,6 +40,10 @@ BOOST_AUTO_TEST_CASE(a_displacement_in_millimetres_with_no_bar_cut)
   const std::string range = "set xrange [" + poundfe::number_text(h.edges.front() / 1e-3) + ":" +
                             poundfe::number_text(h.edges.back() / 1e-3) + "]";
   BOOST_CHECK_MESSAGE(pdf.settings.find(range) != std::string::npos, pdf.settings);
+  // the tallest bar's density per mm, and a tenth above it
+  const double tallest = *std::max_element(h.density.begin(), h.density.end()) * 1e-3;
+  const std::string top = "set yrange [0:" + poundfe::number_text(1.1 * tallest) + "]";
+  BOOST_CHECK_MESSAGE(pdf.settings.find(top) != std::string::npos, pdf.settings);
 }
 
 BOOST_AUTO_TEST_CASE(impacts_get_one_bar_per_whole_number)
@@ -70,6 +76,10 @@ BOOST_AUTO_TEST_CASE(impacts_get_one_bar_per_whole_number)
   BOOST_CHECK_EQUAL(bars, 41u);
   BOOST_CHECK_EQUAL(realizations, values.size());
   BOOST_CHECK(pdf.settings.find("set xrange [-0.5:40.5]") != std::string::npos);
+  // the tallest bar (3 realizations) below the frame
+  BOOST_CHECK_MESSAGE(pdf.settings.find("set yrange [0:" + poundfe::number_text(1.1 * 3) + "]") !=
+                        std::string::npos,
+                      pdf.settings);
 }
 
 BOOST_AUTO_TEST_CASE(a_ratio_is_drawn_from_its_columns_as_they_are)

@@ -6,7 +6,9 @@
 //    ratio on the right-hand axis, unscaled;
 //  - phase_portrait.png of `poundfe switching` (switching_phase_portrait):
 //    a key entry only for the classes of hit that occurred, sliding samples
-//    only when something slid, axes with the units of equation 1's DOF.
+//    only when something slid, axes with the units of equation 1's DOF;
+//  - the titles of a run's figures of the whole model name its buildings,
+//    and the other figures' titles (which name their own) are left alone.
 #include <poundfe/report/run_plots.h>
 #include <poundfe/report/switching_plot.h>
 
@@ -112,6 +114,31 @@ BOOST_AUTO_TEST_CASE(switching_portrait_of_a_stick_slip_rotation)
   BOOST_CHECK_EQUAL_COLLECTIONS(titles.begin(), titles.end(), expected.begin(), expected.end());
   BOOST_CHECK_EQUAL(plot.x_label, "rotation u_1 (rad)");
   BOOST_CHECK_EQUAL(plot.y_label, "angular velocity v_1 (rad/s)");
+}
+
+BOOST_AUTO_TEST_CASE(run_figure_titles_name_the_buildings)
+{
+  poundfe::Model model;
+  const auto     with = [&](const std::vector<std::string> &names) {
+    model.buildings.resize(names.size());
+    for (std::size_t b = 0; b < names.size(); ++b)
+      model.buildings[b].name = names[b];
+    return poundfe::buildings_in_title(model);
+  };
+  BOOST_CHECK_EQUAL(with({"A"}), "Building A: ");
+  BOOST_CHECK_EQUAL(with({"A", "B"}), "Buildings A and B: ");
+  BOOST_CHECK_EQUAL(with({"A", "B", "C"}), "Buildings A, B and C: ");
+  BOOST_CHECK_EQUAL(with({"1", "2", "3", "4", "5"}), "5 buildings: ");
+  with({"A", "B"});
+  std::vector<poundfe::Plot> plots{{"roof_displacement.png", "Roof displacement", "", "", {}},
+                                   {"energy.png", "Energy balance", "", "", {}},
+                                   {"hysteresis_A_S1.png", "Storey S1 of A", "", "", {}},
+                                   {"ground_motion.png", "El Centro", "", "", {}}};
+  poundfe::name_buildings_in_titles(plots, model);
+  BOOST_CHECK_EQUAL(plots[0].title, "Buildings A and B: Roof displacement");
+  BOOST_CHECK_EQUAL(plots[1].title, "Buildings A and B: Energy balance");
+  BOOST_CHECK_EQUAL(plots[2].title, "Storey S1 of A");
+  BOOST_CHECK_EQUAL(plots[3].title, "El Centro");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -20,9 +20,11 @@
 #include <poundfe/dynamics/realization.h>
 #include <poundfe/dynamics/time_history.h>
 #include <poundfe/separation/separation.h>
+#include <poundfe/separation/separation_report.h>
 #include <poundfe/reliability/statistics.h>
 
 #include <cmath>
+#include <set>
 
 #include "test_utilities.h"
 
@@ -246,4 +248,37 @@ BOOST_AUTO_TEST_CASE(levels_where_floors_differ_are_interpolated_in_height)
   BOOST_TEST(levels[3].sides[0].below == int(floors.index(0, 1)));
   BOOST_TEST(levels[3].sides[0].above == int(floors.index(0, 2)));
   BOOST_TEST(levels[3].sides[0].weight == 0.5, boost::test_tools::tolerance(1e-12));
+}
+
+// separation.png of a pair with one common level: the existing gap a line
+// from the ground to that level (a single point drew nothing), every rule in
+// a colour of its own, none of them gnuplot's default yellow.
+BOOST_AUTO_TEST_CASE(separation_figure_draws_the_gap_and_readable_rules)
+{
+  AdjacentPair pair;
+  pair.existing_gap = 0.025;
+  pair.name         = "A1-B1";
+  pair.levels.resize(1);
+  pair.levels[0].level = 3.5;
+  const Plot plot = separation_plot({pair}, nullptr);
+  BOOST_CHECK_EQUAL(plot.x_label, "separation (mm)");
+  BOOST_CHECK(plot.title.find("A1-B1") != std::string::npos);
+  BOOST_CHECK(plot.data_blocks.find("$gap1 << EOD\ngap_mm,level_m\n25,0\n25,3.5\nEOD\n") !=
+              std::string::npos);
+  std::set<std::string> colours;
+  bool                  gap_drawn = false;
+  for (const PlotSeries &s : plot.series)
+    {
+      const std::size_t at = s.style.find("lc rgb '");
+      BOOST_REQUIRE_MESSAGE(at != std::string::npos, s.title << ": gnuplot's default colour");
+      const std::string colour = s.style.substr(at + 8, s.style.find('\'', at + 8) - at - 8);
+      BOOST_CHECK_MESSAGE(colours.insert(colour).second, s.title << " shares " << colour);
+      if (colour.size() == 7 && colour[0] == '#') // not light yellow: red and green bright, blue low
+        BOOST_CHECK_MESSAGE(!(std::stoi(colour.substr(1, 2), nullptr, 16) > 180 &&
+                              std::stoi(colour.substr(3, 2), nullptr, 16) > 180 &&
+                              std::stoi(colour.substr(5, 2), nullptr, 16) < 120),
+                            s.title << " in " << colour);
+      gap_drawn |= s.title == "existing gap" && s.data_file == "$gap1" && s.using_spec == "1:2";
+    }
+  BOOST_CHECK(gap_drawn);
 }

@@ -49,9 +49,12 @@ namespace poundfe
     bool     writes_files() const { return ranks.writes_files(); }
     /// The field output of the run, written from every rank's part: every
     /// rank's (HDF5 + XDMF, written together) or rank 0's (VTU) series in
-    /// `directory`, a frame every `every`-th step. One per run.
+    /// `directory`, a frame every `every`-th step and, with `impact_peaks`,
+    /// at each impact's peak (the gaps' total force then summed over the
+    /// ranks at every step). One per run.
     std::unique_ptr<StepObserver> field_recorder(const Model &model, const std::string &directory,
-                                                 FieldFormat format, unsigned int every);
+                                                 FieldFormat format, unsigned int every,
+                                                 bool impact_peaks);
 
     const NonlinearElements &observed_elements() const override { return elements; }
     void set_observed(ResponseView &view) const override;
@@ -92,6 +95,10 @@ namespace poundfe
     /// `action`, an OutputError or NumericalError kept as the reason this
     /// rank stops (told to the others at the next agreed_stop).
     void keep_failure(const std::function<void()> &action);
+    /// The gaps' total |force| of the replayed state (`gap_force`), from
+    /// the ranks that observe them, when the field output asks for it.
+    /// Collective: after every step's replay, whether or not it failed.
+    void sum_gap_forces();
 
     const MPI_Comm         communicator;
     PartitionedHistory     part; // this rank's buildings, stepped with the other ranks
@@ -100,6 +107,9 @@ namespace poundfe
     ReplayedStepper        replayed;
     RankFieldRecorder     *field = nullptr; // of the observers, when there is a field output
     std::function<void()>  substep_callback;
+    bool                   gap_forces_asked = false;
+    double                 gap_force        = 0;
+    std::vector<double>    gap_forces; // each element's |force| (zero but for observed gaps)
     // why this rank cannot go on (rank 0 could not write, or a replay
     // failed), told to the others at the start of the next step
     std::string stop_reason;

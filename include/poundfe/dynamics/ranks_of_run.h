@@ -140,22 +140,28 @@ namespace poundfe
     mutable std::vector<unsigned int> entities;
   };
 
-  /// The field output of a run observed by rank, at every `every`-th step.
+  /// The field output of a run observed by rank, at every `every`-th step
+  /// and, given the gaps' total |force| of each step (`gap_force`, the
+  /// same on every rank), at each impact's peak by the whole-model
+  /// recorder's rule (output/vtu_series.h: ImpactPeakRule), so both write
+  /// the same frames.
   /// VTU: each rank adds its own equations of u and the frame states of
   /// the elements it observes (the others zero) as one row of `ranks`; on
   /// rank 0 the sum is the whole model's frame, which `series` writes.
   /// HDF5 + XDMF (`together`): every rank's series writes its own rows of
   /// the frame into one file at the flush (NaN where it has no value).
-  class RankFieldRecorder final : public PeriodicObserver,
+  class RankFieldRecorder final : public StepObserver,
                                   public RanksOfRun::RowConsumer,
                                   public RanksOfRun::CollectiveWriter
   {
   public:
     /// `series`: rank 0's (nullptr on the others), or every rank's
-    /// (`together`, VtuSeries's constructor for ranks).
+    /// (`together`, VtuSeries's constructor for ranks). `gap_force`:
+    /// nullptr for the regular frames alone.
     RankFieldRecorder(RanksOfRun &ranks, std::unique_ptr<VtuSeries> series, unsigned int every,
-                      bool together);
-    void write(const ResponseView &state) override;
+                      bool together, const double *gap_force = nullptr);
+    void initialize(const ResponseView &state) override;
+    void observe_step(const ResponseView &state) override;
     void take(double time, const std::vector<double> &row) override;
     void write_together() override;
     /// Rank 0's series at rank 0's end; collective when `together`, and
@@ -166,13 +172,30 @@ namespace poundfe
     void finish_together(RunStatus &status);
 
   private:
+    /// This rank's part of a frame: its u (NaN where it has no value when
+    /// `together`, else zero off its own equations) and element states.
+    struct Frame
+    {
+      double              time = 0;
+      Vector              u;
+      std::vector<double> states;
+    };
+    void capture(const ResponseView &state, Frame &frame);
+    /// `frame` to the ranks' next flush.
+    void send(const Frame &frame);
+
     RanksOfRun                &ranks;
     std::unique_ptr<VtuSeries> series;
     const bool                 together;
+    const unsigned int         every;
+    unsigned long              next = 0;
+    const double              *gap_force;
+    ImpactPeakRule             peaks;
+    Frame                      current, held;
+    std::vector<Frame>         queued; // the frames written together at the flush, in order
     ElementFrameStates         states; // this rank's, then (rank 0) the sums
-    std::vector<double>        frame;
+    std::vector<double>        row;
     Vector                     u;
-    double                     time = 0; // of the frame written together
   };
 } // namespace poundfe
 

@@ -44,6 +44,11 @@ namespace poundfe
     std::string             key{};     // gnuplot key placement, e.g. "outside right top"; empty: below
   };
 
+  /// The gnuplot script that draws `plots` (each PNG to its name + ".tmp"):
+  /// each panel first resets what an earlier one may have set (ranges,
+  /// arrows, labels, tics, box width, log scales, the right-hand axis), so
+  /// that a figure draws the same alone or after others.
+  std::string plot_script(const std::vector<Plot> &plots);
   /// Draw the plots; returns the files written. Writes each PNG atomically.
   std::vector<std::string> draw_plots(const std::string &directory, const std::vector<Plot> &plots);
 

@@ -141,6 +141,44 @@ namespace poundfe
     std::unique_ptr<Impl> impl;
   };
 
+  /// When a time history's field series adds a frame at an impact's peak:
+  /// at the step where the gaps' total |force| stops rising (it rose or
+  /// held to it and falls at the next step), unless that step has its
+  /// regular frame. The peak is known one step late, so the step that may
+  /// be one is held. One rule for the whole-model recorder and the
+  /// recorder of a run partitioned by building, so both write the same
+  /// frames.
+  class ImpactPeakRule
+  {
+  public:
+    /// At a step whose gaps' total |force| is `force`: whether the step
+    /// held last was an impact's peak (its frame is due now).
+    bool
+    held_was_peak(const double force) const
+    {
+      return candidate && held_force >= force_before && force < held_force;
+    }
+    /// Then, with whether this step has its regular frame: whether this
+    /// step must be held (it may be a peak).
+    bool
+    hold(const double force, const bool regular)
+    {
+      force_before = held_force;
+      held_force   = force;
+      candidate    = force > 0 && !regular;
+      return candidate;
+    }
+
+  private:
+    double held_force = 0, force_before = 0;
+    bool   candidate  = false; // in contact and without a regular frame
+  };
+
+  /// The gaps' total |force| of `elements`, in the elements' order (the
+  /// order fixes the rounding, alike in a whole-model and a partitioned run).
+  double
+  total_gap_force(const NonlinearElements &elements);
+
   /// A time history as a field series (solution.pvd, or solution.xdmf and
   /// solution.h5): a frame every `every` steps and, with `impact_peaks` and
   /// gap elements, a frame at the peak of each impact, where the impact is strongest: the
@@ -167,11 +205,11 @@ namespace poundfe
     const bool         impact_peaks; // Output/VTU impact peaks
     unsigned long      next = 0;
     VtuSeries          series;
+    ImpactPeakRule     peaks;
     /// The last step, while it may be an impact's peak.
     struct HeldStep
     {
-      double             time = 0, force = 0, force_before = 0;
-      bool               candidate = false; // in contact and without a regular frame
+      double             time = 0;
       Vector             u;
       ElementFrameStates states;
     } held;

@@ -41,6 +41,15 @@ namespace poundfe
   /// friction energies (kJ) and the balance error (a ratio, right axis).
   Plot energy_plot(const Model &model);
 
+  /// What opens the title of a figure of the whole model: "Building A: ",
+  /// "Buildings A and B: ", "Buildings A, B and C: ", or "12 buildings: "
+  /// past four (the key names the curves drawn).
+  std::string buildings_in_title(const Model &model);
+  /// The titles of a run's figures of the whole model (profiles, roof
+  /// displacement, base shear, energy, floor spectra, contact forces,
+  /// impacts in plan) opened by buildings_in_title.
+  void name_buildings_in_titles(std::vector<Plot> &plots, const Model &model);
+
   class RunPlots
   {
   public:
