@@ -31,6 +31,7 @@ namespace poundfe
       throw InputError(input.file, input.line_of("IDA/Suite"), "IDA/Suite",
                        "the suite's records are horizontal pairs: they need a 3D model "
                        "(Model/Dimension = 3)");
+    refuse_incidence_angle_in_plane(analysis.model, parameters.ground_motion, input);
     if ((ida.measure == IntensityMeasure::sa || ida.measure == IntensityMeasure::sa_avg) &&
         ida.period == 0 && analysis.modes.omega.empty())
       throw InputError(input.file, input.line_of("IDA/Period"), "IDA/Period",
@@ -68,6 +69,8 @@ namespace poundfe
         for (const std::string &n : y.column_names("floor", "peak_acc_y_m_s2"))
           names.push_back(n);
         for (const std::string &n : y.column_names("floor", "peak_rotation_rad"))
+          names.push_back(n);
+        for (const std::string &n : y.column_names("storey", "residual_drift_ratio_y"))
           names.push_back(n);
       }
     for (unsigned int r = 0; r < records.records.size(); ++r)
@@ -124,7 +127,8 @@ namespace poundfe
       point.demands.insert(point.demands.end(), {count[g], force[g], velocity[g]});
     if (const FloorResponse *y = peaks->floors_y())
       for (const std::vector<double> *part :
-           {&y->peak_drift_ratio(), &y->peak_acceleration(), &peaks->floors_rz()->peak_displacement()})
+           {&y->peak_drift_ratio(), &y->peak_acceleration(), &peaks->floors_rz()->peak_displacement(),
+            &y->drift_ratio()})
         point.demands.insert(point.demands.end(), part->begin(), part->end());
     return point;
   }

@@ -1,5 +1,5 @@
-// The demand tables and the collapse margin of `poundfe ida`
-// (commands/ida_loss.h).
+// The demand tables of `poundfe ida` and `poundfe msa`, and the collapse
+// margin of `poundfe ida` (commands/ida_loss.h).
 #include "ida_loss.h"
 
 #include <poundfe/assessment/collapse_margin.h>
@@ -17,13 +17,11 @@
 namespace poundfe::commands
 {
   void
-  write_ida_demand_tables(const CommandRun &run, const Model &model,
-                          const IdaRunner &runner, const IdaResult &result,
-                          const IdaParameters &ida, JsonWriter &json, std::ostream &out,
-                          std::vector<std::string> &files)
+  write_demand_samples(const CommandRun &run, const Model &model, const IdaRunner &runner,
+                       const IdaParameters &ida, const std::vector<IdaDemandSample> &samples,
+                       const std::string &suffix, JsonWriter &json, std::ostream &out,
+                       std::vector<std::string> &files)
   {
-    if (ida.demand_intensities.empty())
-      return;
     const std::string unit = intensity_unit(ida.measure);
     // Sa(T) of the rows (every record is scaled to it), as pelicun names a
     // spectral acceleration: SA_<T in s, two decimals>
@@ -35,18 +33,16 @@ namespace poundfe::commands
         spectral_type = std::string("SA_") + period;
       }
     json.begin_array("demand_tables");
-    for (std::size_t k = 0; k < ida.demand_intensities.size(); ++k)
+    for (std::size_t k = 0; k < samples.size(); ++k)
       {
-        IdaDemandSample sample = ida_demands_at(runner, result, ida.demand_intensities[k]);
-        for (ResponseDemands &row : sample.rows)
-          row.sa = sample.intensity;
+        const IdaDemandSample   &sample = samples[k];
         std::vector<std::string> names;
         for (unsigned int b = 0; b < model.buildings.size(); ++b)
           {
             DemandTable table(model, b, false, spectral_type);
             for (const ResponseDemands &row : sample.rows)
               table.add(row);
-            names.push_back(demand_table_file(model, b, "_im" + std::to_string(k + 1)));
+            names.push_back(demand_table_file(model, b, suffix + std::to_string(k + 1)));
             write_result_text(run.memory, run.directory, names.back(), table.csv());
           }
         std::vector<std::string> records;
@@ -67,6 +63,20 @@ namespace poundfe::commands
         files.insert(files.end(), names.begin(), names.end());
       }
     json.end_array();
+  }
+
+  void
+  write_ida_demand_tables(const CommandRun &run, const Model &model,
+                          const IdaRunner &runner, const IdaResult &result,
+                          const IdaParameters &ida, JsonWriter &json, std::ostream &out,
+                          std::vector<std::string> &files)
+  {
+    if (ida.demand_intensities.empty())
+      return;
+    std::vector<IdaDemandSample> samples;
+    for (const double x : ida.demand_intensities)
+      samples.push_back(ida_demands_at(runner, result, x));
+    write_demand_samples(run, model, runner, ida, samples, "_im", json, out, files);
   }
 
   void

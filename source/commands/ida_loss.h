@@ -1,11 +1,13 @@
-// What `poundfe ida` gives a loss model and a FEMA P-695 evaluation: the
-// pelicun demand tables at IDA/Demand intensities (assessment/ida_demands.h,
+// What `poundfe ida` and `poundfe msa` give a loss model and `ida` a FEMA
+// P-695 evaluation: the pelicun demand tables at IDA/Demand intensities and
+// at msa's stripes (assessment/ida_demands.h,
 // output/demand_table.h) and the collapse margin (assessment/collapse_margin.h);
 // private to the commands.
 #ifndef poundfe_commands_ida_loss_h
 #define poundfe_commands_ida_loss_h
 
 #include <poundfe/assessment/ida.h>
+#include <poundfe/assessment/ida_demands.h>
 
 #include <ostream>
 #include <string>
@@ -20,6 +22,16 @@ namespace poundfe
 
 namespace poundfe::commands
 {
+  /// demands_<building><suffix><k>.csv for each sample k = 1, 2, ... (the
+  /// rows of its records at its intensity: assessment/ida_demands.h), into
+  /// run.directory or run.memory;
+  /// summary.json's "demand_tables" and the report's lines. The names of
+  /// the files written are appended to `files`.
+  void write_demand_samples(const CommandRun &run, const Model &model,
+                            const IdaRunner &runner, const IdaParameters &ida,
+                            const std::vector<IdaDemandSample> &samples, const std::string &suffix,
+                            JsonWriter &json, std::ostream &out, std::vector<std::string> &files);
+
   /// demands_<building>_im<k>.csv for each intensity of IDA/Demand
   /// intensities (into run.directory or run.memory); summary.json's
   /// "demand_tables" and the report's lines.

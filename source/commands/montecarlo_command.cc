@@ -266,6 +266,7 @@ namespace poundfe::commands
           d.peak_drift_y        = values(floors.column_names("storey", "peak_drift_ratio_y"));
           d.peak_acceleration_y = values(floors.column_names("floor", "peak_acc_y_m_s2"));
           d.peak_rotation       = values(floors.column_names("floor", "peak_rotation_rad"));
+          d.residual_drift_y    = values(floors.column_names("storey", "residual_drift_ratio_y"));
         }
       for (unsigned int g = 1; g <= model.gaps.size(); ++g)
         {

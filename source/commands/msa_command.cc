@@ -6,8 +6,12 @@
 // state), msa_fragility.csv (each limit state's lognormal fit by the
 // binomial likelihood and its annual rate on the hazard curve),
 // msa_curves.csv and msa.png (the fitted curves), cloud.csv (with Cloud),
-// and summary.json. The journal (journal/stripes, journal/cloud) stays, so
-// that the same command resumes an interrupted run.
+// summary.json and, with Output/Demand tables, each building's pelicun
+// demand table at each stripe (commands/ida_loss.h). The journal
+// (journal/stripes, journal/cloud) stays, so that the same command resumes
+// an interrupted run.
+#include "ida_loss.h"
+
 #include <poundfe/assessment/msa.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
@@ -348,6 +352,15 @@ namespace poundfe::commands
         .value("unit", unit)
         .value("periods_s", runner.measure_periods());
       write_summary(json, run.out, result, states, fits, cloud, unit);
+      if (input.output.demand_tables) // a table per stripe, of its runs
+        {
+          std::vector<IdaDemandSample> samples;
+          for (std::size_t j = 0; j < result.runs.size(); ++j)
+            samples.push_back(stripe_demands(runner, result.runs[j], result.stripes[j]));
+          std::vector<std::string> files;
+          write_demand_samples(run, runner.model(), runner, ida, samples, "_stripe", json,
+                               run.out, files);
+        }
       if (!warnings.empty())
         json.value("warnings", warnings);
       for (const std::string &w : warnings)
@@ -403,6 +416,7 @@ namespace poundfe::commands
     pcout << result.counters.n_runs << " runs (" << result.counters.n_run_now << " now); results in "
           << run.results_place() << " (summary.json, msa.csv, msa_stripes.csv, msa_fragility.csv, "
           << "msa_curves.csv" << (input.msa.cloud ? ", cloud.csv" : "")
+          << (input.output.demand_tables ? ", demands_*.csv" : "")
           << (input.output.plots && !result.counters.interrupted && !run.memory ? ", msa.png" : "")
           << ", journal/)\n";
     print_timing(timer);

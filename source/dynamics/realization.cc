@@ -72,6 +72,10 @@ namespace poundfe
           FloorResponse(analysis.model).column_names("floor", "peak_rotation_rad");
         for (unsigned int i = 0; i < rotation.size(); ++i)
           result.push_back({OptionalResponse::rotation, i, rotation[i]});
+        const std::vector<std::string> residual_y =
+          FloorResponse(analysis.model, Component::uy).column_names("storey", "residual_drift_ratio_y");
+        for (unsigned int i = 0; i < residual_y.size(); ++i)
+          result.push_back({OptionalResponse::residual_drift_y, i, residual_y[i]});
         result.push_back({OptionalResponse::ground_acceleration_y, 1, "peak_ground_acc_y_m_s2"});
       }
     return result;
@@ -295,6 +299,9 @@ namespace poundfe
             break;
           case OptionalResponse::ground_acceleration_y:
             responses[c++] = plan.pga_y;
+            break;
+          case OptionalResponse::residual_drift_y:
+            responses[c++] = plan.residual_drift_y[o.index];
             break;
         }
   }

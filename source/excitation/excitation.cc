@@ -230,6 +230,15 @@ namespace poundfe
   }
 
   void
+  refuse_incidence_angle_in_plane(const Model &model, const GroundMotionParameters &g,
+                                  const InputFile &input)
+  {
+    if (model.dimension != 3 && g.incidence_angle != 0)
+      input.fail("Ground motion/Incidence angle", "an incidence angle needs "
+                                                  "Model/Dimension = 3");
+  }
+
+  void
   add_horizontal_component(Excitation &excitation, const LinearSystem &system, const Model &model,
                            const GroundMotionParameters &g, const InputFile &input,
                            const double time_step)
@@ -243,9 +252,7 @@ namespace poundfe
           input.fail("Ground motion/Record/Second file",
                      "a planar model has no y direction: Components = 3 shakes it along x "
                      "and vertically (File and Third file)");
-        if (g.incidence_angle != 0)
-          input.fail("Ground motion/Incidence angle", "an incidence angle needs "
-                                                      "Model/Dimension = 3");
+        refuse_incidence_angle_in_plane(model, g, input);
         return;
       }
     excitation.set_horizontal_pair(system,

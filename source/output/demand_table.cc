@@ -45,6 +45,7 @@ namespace poundfe
     d.peak_drift_y        = peaks.floors_y()->peak_drift_ratio();
     d.peak_acceleration_y = peaks.floors_y()->peak_acceleration();
     d.peak_rotation       = peaks.floors_rz()->peak_displacement(); // |theta_z|, rad
+    d.residual_drift_y    = peaks.floors_y()->drift_ratio();        // at the end of the run
   }
 
   unsigned int
@@ -102,6 +103,8 @@ namespace poundfe
     if (plan)
       storey_types.push_back({"PID", "2", "rad"});
     storey_types.push_back({"RID", "1", "rad"});
+    if (plan)
+      storey_types.push_back({"RID", "2", "rad"});
     if (displacements)
       storey_types.insert(storey_types.end(), {{"PFD", "1", "m"}, {"RFD", "1", "m"}});
     for (const auto &[type, direction, unit] : storey_types)
@@ -134,7 +137,7 @@ namespace poundfe
                               d.residual_displacement.size() >= first + n),
            dealii::ExcInternalError());
     Assert(!plan || (d.peak_drift_y.size() >= first + n && d.peak_acceleration_y.size() >= first + n &&
-                     d.peak_rotation.size() >= first + n),
+                     d.peak_rotation.size() >= first + n && d.residual_drift_y.size() >= first + n),
            dealii::ExcInternalError());
     std::vector<double> row = {d.pga / standard_gravity};
     if (spectral)
@@ -151,12 +154,18 @@ namespace poundfe
     if (plan)
       storey.push_back(&d.peak_drift_y);
     storey.push_back(&d.residual_drift);
+    if (plan)
+      storey.push_back(&d.residual_drift_y);
     if (displacements)
       storey.insert(storey.end(), {&d.peak_displacement, &d.residual_displacement});
     for (const std::vector<double> *values : storey)
-      for (unsigned int f = 0; f < n; ++f)
-        row.push_back(values == &d.residual_drift || values == &d.residual_displacement ?
-                        std::abs((*values)[first + f]) : (*values)[first + f]);
+      {
+        // a residual's magnitude: its sign is only the side it leans to
+        const bool residual = values == &d.residual_drift || values == &d.residual_drift_y ||
+                              values == &d.residual_displacement;
+        for (unsigned int f = 0; f < n; ++f)
+          row.push_back(residual ? std::abs((*values)[first + f]) : (*values)[first + f]);
+      }
     if (displacements) // the roof's peak displacement over the building's height
       {
         const Building &b = model.buildings[building];

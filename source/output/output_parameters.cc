@@ -59,7 +59,9 @@ namespace poundfe
                       "drifts and displacements and its gaps' impacts in pelicun's demand-sample "
                       "convention (output/demand_table.h; user guide, \"Demands for a loss "
                       "model\"); montecarlo writes the same tables, without displacements, a "
-                      "row per completed realization. Unit: -.");
+                      "row per completed realization, and msa a table per stripe, "
+                      "demands_<building>_stripe<j>.csv, a row per run that did not collapse. "
+                      "Unit: -.");
     prm.add_parameter("Number of modes", n_modes,
                       "Modes reported (0: no modal analysis, for a large model whose "
                       "damping needs no modes). Unit: count.",

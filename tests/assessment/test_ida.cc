@@ -15,7 +15,12 @@
 //    synthetic collapse intensities within three standard errors (the MLE's
 //    asymptotic ones: sd(ln theta) = beta / sqrt(n), sd(beta) =
 //    beta / sqrt(2 n); with censoring at the 80th percentile, 3.5 of them);
-//    the uncensored fit equals the closed form computed here.
+//    the uncensored fit equals the closed form computed here;
+//  - the fractiles of the IDA curves: the empirical quantile of type 7
+//    (Hyndman & Fan 1996) by hand, h = (n - 1) p, x_floor(h) + (h -
+//    floor(h)) (x_ceil - x_floor), exact to round-off (1e-14); a record
+//    collapsed (+inf) above a fractile's place makes it infinite, below it
+//    leaves it finite.
 #include <poundfe/assessment/ida.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/excitation/records.h>
@@ -27,6 +32,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 
 #include "test_utilities.h"
@@ -207,4 +213,22 @@ BOOST_AUTO_TEST_CASE(lognormal_collapse_fragility_recovers_its_parameters)
   // ignoring the censoring would bias theta low: the censored fit is closer
   BOOST_TEST(std::abs(std::log(censored.theta / theta)) <
              std::abs(std::log(fit_collapse_fragility(collapsed).theta / theta)));
+}
+
+BOOST_AUTO_TEST_CASE(fractiles_are_type_7_quantiles)
+{
+  const auto tol = boost::test_tools::tolerance(1e-14);
+  // 4 values: h = 3 p; 16 %: 1 + 0.48, 50 %: 2.5, 84 %: 3 + 0.52
+  const std::vector<double> x = {4, 1, 3, 2};
+  BOOST_TEST(empirical_quantile(x, 0.16) == 1.48, tol);
+  BOOST_TEST(empirical_quantile(x, 0.5) == 2.5, tol);
+  BOOST_TEST(empirical_quantile(x, 0.84) == 3.52, tol);
+  BOOST_TEST(empirical_quantile(x, 0.0) == 1.0);
+  BOOST_TEST(empirical_quantile(x, 1.0) == 4.0);
+  // one of 5 records collapsed: h = 4 p; 84 % (h = 3.36) reaches it, 50 % not
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<double> y = {0.1, inf, 0.3, 0.2, 0.4};
+  BOOST_TEST(empirical_quantile(y, 0.5) == 0.3, tol);
+  BOOST_TEST(std::isinf(empirical_quantile(y, 0.84)));
+  BOOST_TEST(empirical_quantile(y, 0.75) == 0.4); // h = 3 exactly: the value, not inf - inf
 }

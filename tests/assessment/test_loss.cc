@@ -13,7 +13,10 @@
 //    (interpolation along a linear curve is exact; 1e-9 relative);
 //  - an IDA's demands at an intensity from made-up runs: interpolated by
 //    hand (1e-14), a record collapsed at or below it and one not run that
-//    high left out and counted.
+//    high left out and counted;
+//  - an MSA stripe's demands from made-up runs: the runs' own (exactly), a
+//    residual's magnitude, the PGA scaled with the record, Sa the stripe's
+//    intensity; a collapsed run and one not run left out and counted.
 #include <poundfe/assessment/collapse_margin.h>
 #include <poundfe/assessment/ida_demands.h>
 #include <poundfe/dynamics/analysis.h>
@@ -319,4 +322,37 @@ BOOST_AUTO_TEST_CASE(ida_demands_leave_out_collapsed_and_short_records)
   BOOST_TEST(none.rows.empty());
   BOOST_TEST(none.collapsed == 1);
   BOOST_TEST(none.not_reached == 1);
+}
+
+BOOST_AUTO_TEST_CASE(stripe_demands_are_the_runs_own)
+{
+  // a stripe at 0.4 of made-up runs: record 0 every demand -2, record 1
+  // collapsed; then record 1 not run (no demands: an interrupted stripe)
+  const InputParameters input    = pair_input("loss_stripe", "");
+  const Analysis        analysis = prepare_analysis(input);
+  IdaRunner runner(analysis, time_history_parameters(input), input.ida,
+                   read_record_suite(input.ida.suite));
+  const std::size_t n = runner.demand_names().size();
+  IdaPoint          run;
+  run.intensity    = 0.4;
+  run.scale_factor = 0.4 / runner.base_intensities()[0];
+  run.demands.assign(n, -2.0);
+  IdaPoint collapsed = run;
+  collapsed.collapsed = true;
+  const IdaDemandSample sample = stripe_demands(runner, {run, collapsed}, 0.4);
+  BOOST_REQUIRE(sample.rows.size() == 1);
+  BOOST_TEST(sample.records == std::vector<unsigned int>{0}, boost::test_tools::per_element());
+  BOOST_TEST(sample.collapsed == 1);
+  BOOST_TEST(sample.not_reached == 0);
+  const ResponseDemands &d = sample.rows[0];
+  BOOST_TEST(d.peak_drift[0] == -2.0);
+  BOOST_TEST(d.residual_drift[1] == 2.0);
+  BOOST_TEST(d.impact_force[1] == -2.0);
+  BOOST_TEST(d.sa == 0.4);
+  BOOST_TEST(d.pga == runner.suite().records[0].components[0].peak() * run.scale_factor,
+             boost::test_tools::tolerance(1e-14));
+  const IdaDemandSample short_stripe = stripe_demands(runner, {run, IdaPoint()}, 0.4);
+  BOOST_TEST(short_stripe.rows.size() == 1);
+  BOOST_TEST(short_stripe.not_reached == 1);
+  BOOST_TEST(short_stripe.collapsed == 0);
 }

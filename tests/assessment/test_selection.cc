@@ -17,13 +17,21 @@
 //    selected with the scale 1 / constant and the set's mean equals the
 //    target (1e-12); a scale limit that excludes them selects others;
 //  - scaling to an intensity: the scaled record's Sa(T) is the target
-//    intensity (1e-12 relative: Sa is linear in the record).
+//    intensity (1e-12 relative: Sa is linear in the record);
+//  - Sa_avg: the geometric mean of Sa (the spectrum's PSA) over its
+//    periods, computed here from pseudo_spectral_acceleration (1e-12);
+//  - the selected set's spread (the standard deviation of ln Sa over the
+//    set, n - 1) against a second computation in the test, and the
+//    conditional mean spectrum's conditional standard deviation
+//    sigma(T) sqrt(1 - rho(T, T*)^2) against Baker & Jayaram's (2008)
+//    equations written out again here (1e-12).
 #include <poundfe/assessment/record_selection.h>
 #include <poundfe/excitation/intensity_measures.h>
 #include <poundfe/excitation/target_spectrum.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace poundfe;
@@ -137,4 +145,82 @@ BOOST_AUTO_TEST_CASE(scaling_hits_the_target_intensity)
                               {period}, 0.05) == target,
                  boost::test_tools::tolerance(1e-12));
     }
+}
+
+namespace
+{
+  /// Baker & Jayaram (2008), eqs. 6-9 and Table 2, written out again.
+  double
+  baker_jayaram_by_hand(const double t1, const double t2)
+  {
+    const double t_min = std::min(t1, t2), t_max = std::max(t1, t2);
+    const double c1 = 1 - std::cos(M_PI / 2 - 0.366 * std::log(t_max / std::max(t_min, 0.109)));
+    const double c2 = t_max < 0.2 ? 1 - 0.105 * (1 - 1 / (1 + std::exp(100 * t_max - 5))) *
+                                          (t_max - t_min) / (t_max - 0.0099) :
+                                    0.0;
+    const double c3 = t_max < 0.109 ? c2 : c1;
+    const double c4 = c1 + 0.5 * (std::sqrt(c3) - c3) * (1 + std::cos(M_PI * t_min / 0.109));
+    if (t_max < 0.109)
+      return c2;
+    if (t_min > 0.109)
+      return c1;
+    return t_max < 0.2 ? std::min(c2, c4) : c4;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(selected_set_spread_against_a_second_computation)
+{
+  // a conditional mean spectrum as the target, candidates its median times
+  // different wavy shapes: the set's spread is that of their ln Sa
+  Scenario s;
+  s.magnitude = 6.5, s.rjb_km = 15, s.vs30_m_s = 400;
+  TargetSpectrum target;
+  for (int i = 0; i < 12; ++i)
+    target.periods.push_back(0.05 * std::pow(60.0, i / 11.0));
+  for (const LogNormalValue &v : conditional_mean_spectrum(s, 0.8, 1.2, target.periods))
+    target.median.push_back(v.median), target.sigma.push_back(v.sigma);
+  for (std::size_t i = 0; i < target.periods.size(); ++i)
+    {
+      const double rho = baker_jayaram_by_hand(target.periods[i], 0.8);
+      BOOST_TEST(target.sigma[i] ==
+                   bssa14(s, target.periods[i]).sigma * std::sqrt(std::max(0.0, 1 - rho * rho)),
+                 boost::test_tools::tolerance(1e-12));
+    }
+  std::vector<std::vector<double>> spectra;
+  for (int r = 0; r < 6; ++r)
+    {
+      spectra.emplace_back();
+      for (std::size_t i = 0; i < target.periods.size(); ++i)
+        spectra.back().push_back(target.median[i] * (0.5 + 0.3 * r) *
+                                 std::exp(0.4 * std::sin(0.7 * i * (r + 1))));
+    }
+  const RecordSelection selection = select_records(spectra, target, 4, 0.1, 10);
+  BOOST_REQUIRE_EQUAL(selection.records.size(), 4u);
+  for (std::size_t i = 0; i < target.periods.size(); ++i)
+    {
+      std::vector<double> ln;
+      for (const SelectedRecord &r : selection.records)
+        ln.push_back(std::log(r.scale * spectra[r.index][i]));
+      const double mean = (ln[0] + ln[1] + ln[2] + ln[3]) / 4;
+      double       sum  = 0;
+      for (const double x : ln)
+        sum += (x - mean) * (x - mean);
+      BOOST_TEST(selection.sigma[i] == std::sqrt(sum / 3), boost::test_tools::tolerance(1e-12));
+      BOOST_TEST(selection.mean[i] == std::exp(mean), boost::test_tools::tolerance(1e-12));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(sa_avg_is_the_geometric_mean_of_sa)
+{
+  std::vector<double> a;
+  for (int k = 0; k < 1500; ++k)
+    a.push_back(std::exp(-0.3 * 0.01 * k) * (std::sin(7.0 * 0.01 * k) + 0.4 * std::sin(23.0 * 0.01 * k)));
+  const GroundMotion        record(0.01, a, "test");
+  const std::vector<double> periods = {0.1, 0.25, 0.6, 1.4, 3.0};
+  double                    log_sum = 0;
+  for (const double t : periods)
+    log_sum += std::log(pseudo_spectral_acceleration(record, t, 0.05) / standard_gravity);
+  BOOST_TEST(intensity_of({record}, IntensityMeasure::sa_avg, PairMeasure::geometric_mean, periods,
+                          0.05) == std::exp(log_sum / periods.size()),
+             boost::test_tools::tolerance(1e-12));
 }

@@ -10,7 +10,10 @@
 #    journal cut to half its runs and a partial line (a killed run) is
 #    resumed on two ranks: only the missing runs run, the same ida.csv;
 #  - the suite reader's bad input through the binary: exit 1, one line
-#    naming the suite's file, line and field, nothing written.
+#    naming the suite's file, line and field, nothing written;
+#  - a JSON suite of one record gives the ida.csv of the CSV suite of it;
+#  - a finished run resumed after its suite file changed: exit 1, the
+#    message naming the suite and IDA/Suite, the journal untouched.
 poundfe=$(realpath "$1") mpirun=$2 example=$(realpath "$3")
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
@@ -100,4 +103,27 @@ expect 1 "--write-at2 belongs to ground-motion" run ida.prm --write-at2 --output
 # a folder of AT2 files is a suite too
 expect 0 "collapse fragility" ida ida.prm "${short[@]}" --set "IDA/Suite=$work/gen/records" --output folder
 rm -rf folder out
+# a journal resumed after its suite changed: refused naming the suite and
+# its entry, the journal untouched (one record, two runs up to 0.2)
+printf 'file\n%s\n' "$at2" > resumed.csv
+cheap=(ida ida.prm "${short[@]}" --set "IDA/Suite=$work/resumed.csv" --set "IDA/Upper intensity=0.2"
+       --output resumed)
+"$poundfe" "${cheap[@]}" > /dev/null || die "ida of one record"
+cp resumed/journal/realizations.csv journal.before
+# the same record in a JSON suite: the same runs
+printf '{"records": [{"files": ["%s"], "scale": 1}]}\n' "$at2" > one.json
+"$poundfe" ida ida.prm "${short[@]}" --set "IDA/Suite=$work/one.json" --set "IDA/Upper intensity=0.2" \
+  --output json > /dev/null || die "ida of a JSON suite"
+cmp resumed/ida.csv json/ida.csv || die "a JSON suite and a CSV suite of one record differ"
+printf 'file,scale\n%s,2\n' "$at2" > resumed.csv
+n=$((n + 1))
+if "$poundfe" "${cheap[@]}" > resumed.log 2>&1; then
+  fail "resumed with a changed suite: not refused"
+elif [ $? -ne 1 ] || ! grep -q "the record suite '$work/resumed.csv' (IDA/Suite) changed since" resumed.log; then
+  fail "resumed with a changed suite: $(cat resumed.log)"
+elif ! cmp -s journal.before resumed/journal/realizations.csv; then
+  fail "resumed with a changed suite: the journal changed"
+else
+  echo "ok   resumed with a changed suite: $(head -c 200 resumed.log)"
+fi
 report "ida"

@@ -15,8 +15,16 @@
 #    msa.csv;
 #  - the example input (shortened) at the return periods of a hazard curve,
 #    with limit states on pounding: every file, an annual rate per state;
+#    with Output/Demand tables, a pelicun demand table per building and
+#    stripe (pelicun's schema, 1-PID-1-1 ...): a row per run that did not
+#    collapse, its demands those of msa.csv (1e-9 relative: the same
+#    numbers printed twice);
 #  - select-records writes a suite that msa reads; its mean spectrum is
-#    within the factor it reports of the target;
+#    within the factor it reports of the target; selected to a conditional
+#    mean spectrum, the set's +/- 1 sigma of ln Sa is the spread computed
+#    in the test from the records' columns (1e-9 in ln Sa: printed
+#    numbers), the target's band symmetric in ln Sa and up to BSSA14's
+#    sigma wide (0.1 to 1);
 #  - bad input: one line naming file, line and parameter, exit 1, nothing
 #    written.
 poundfe=$(realpath "$1") mpirun=$2 example=$(realpath "$3")
@@ -91,13 +99,44 @@ for x in 0.01 0.02 0.05 0.1 0.2 0.5 1 2; do
 done
 "$poundfe" msa "$example" --output example "${suite[@]}" --set "MSA/Hazard curve=$work/hazard.csv" \
   --set "MSA/Return periods=475" --set "MSA/Intensities=0.2, 0.8" \
-  --set "Ground motion/Stochastic/Duration=4" --set "Output/Plots=false" > example.log ||
-  die "msa example: $(cat example.log)"
+  --set "Ground motion/Stochastic/Duration=4" --set "Output/Plots=false" \
+  --set "Output/Demand tables=true" > example.log || die "msa example: $(cat example.log)"
 for f in summary.json msa.csv msa_stripes.csv msa_fragility.csv msa_curves.csv cloud.csv; do
   [ -f "example/$f" ] || die "msa wrote no $f"
 done
 grep -q "gap1_impacts_gt_0" example/msa_fragility.csv || die "no pounding limit state"
 [ "$(wc -l < example/msa.csv)" -eq 13 ] || die "expected 3 stripes x 4 records in msa.csv"
+HERE=$here python3 - example <<'PY' || die "msa's demand tables"
+import csv, json, os, sys
+sys.path.insert(0, os.environ["HERE"])
+from pelicun_schema import check_schema
+d = sys.argv[1]
+runs = list(csv.DictReader(open(f"{d}/msa.csv")))
+listed = json.load(open(f"{d}/summary.json"))["demand_tables"]
+assert len(listed) == 3, listed
+for j, entry in enumerate(listed, 1):
+    stripe = [r for r in runs if r["stripe"] == str(j)]
+    kept = [r for r in stripe if r["collapsed"] == "0"]
+    assert entry["collapsed"] == len(stripe) - len(kept) and len(entry["records"]) == len(kept), entry
+    for b, n in (("shear3", 3), ("shear2", 2)):
+        name = f"demands_{b}_stripe{j}.csv"
+        assert name in entry["files"], (name, entry)
+        head, rows = check_schema(f"{d}/{name}")
+        assert head[0] == "1-PFA-0-1" and "1-PID-1-1" in head and f"1-RID-{n}-1" in head, head
+        assert any(h.startswith("1-NIMP-") for h in head), head
+        assert len(rows) == len(kept), (name, len(rows), len(kept))
+        for row, run in zip(rows, kept):
+            v = dict(zip(head, map(float, row[1:])))
+            for s in range(1, n + 1):  # the run's own demands, exactly as msa.csv prints them
+                for col, key, f in ((f"1-PID-{s}-1", f"{b}_storey{s}_peak_drift_ratio", float),
+                                    (f"1-RID-{s}-1", f"{b}_storey{s}_residual_drift_ratio",
+                                     lambda x: abs(float(x))),
+                                    (f"1-PFA-{s}-1", f"{b}_floor{s}_peak_acc_m_s2",
+                                     lambda x: float(x) / 9.80665)):
+                    if abs(v[col] - f(run[key])) > 1e-9 * max(1e-12, abs(v[col])):
+                        sys.exit(f"{name} {col}: {v[col]} against {run[key]} of msa.csv")
+print("msa: a pelicun demand table per building and stripe, the runs' own demands")
+PY
 
 # select-records: a suite msa reads
 "$poundfe" select-records "$example" --output sel "${suite[@]}" --set "Selection/Records=2" \
@@ -111,6 +150,31 @@ worst = max(abs(math.log(float(r["mean_g"]) / float(r["target_g"]))) for r in ro
 said = json.load(open(sys.argv[2]))["max_mean_log_misfit"]
 assert abs(worst - said) < 1e-9 and worst < 1.0, (worst, said)
 print(f"selection: mean within exp({worst:.3f}) of the target")
+PY
+# to a conditional mean spectrum: the set's +/- 1 sigma of ln Sa in
+# selection.csv against the spread computed here from its records' columns,
+# and the target's band exp(+/- sigma) about its median
+"$poundfe" select-records "$example" --output cms "${suite[@]}" --set "Selection/Records=3" \
+  --set "Selection/Target=cms" --set "Selection/Scale limits=0.05, 20" \
+  --set "Output/Plots=false" > cms.log || die "select-records to a CMS: $(cat cms.log)"
+python3 - cms/selection.csv <<'PY' || die "the selected set's spread against a CMS"
+import csv, math, statistics, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+fixed = {"period_s", "target_g", "target_minus_g", "target_plus_g", "mean_g", "mean_minus_g",
+         "mean_plus_g"}
+records = [c for c in rows[0] if c not in fixed]
+assert len(records) == 3, records
+widest = 0
+for r in rows:
+    ln = [math.log(float(r[c])) for c in records]
+    m, s = statistics.mean(ln), statistics.stdev(ln)
+    for col, want in (("mean_g", m), ("mean_minus_g", m - s), ("mean_plus_g", m + s)):
+        assert abs(math.log(float(r[col])) - want) < 1e-9, (r["period_s"], col, r[col], want)
+    lo, mid, hi = (math.log(float(r[c])) for c in ("target_minus_g", "target_g", "target_plus_g"))
+    assert abs((hi - mid) - (mid - lo)) < 1e-9 and hi >= mid, r
+    widest = max(widest, hi - mid)
+assert 0.1 < widest < 1, widest  # BSSA14's sigma, reduced by the correlation
+print(f"selection to a CMS: the set's spread as computed here; conditional sigma up to {widest:.3f}")
 PY
 "$poundfe" msa "$example" --output selected --set "IDA/Suite=$work/sel/selected_suite.csv" \
   --set "MSA/Intensities=0.3" --set "MSA/Hazard curve=" --set "MSA/Return periods=" \
@@ -148,6 +212,11 @@ expect 1 "parameter 'MSA/Limit states': 'gap1_impacts' is not a demand of this m
 expect 1 "parameter 'MSA/Limit states': expected 'demand > threshold', got 'max_drift_ratio 0.01'" \
   "${ms[@]}" --set "MSA/Limit states=max_drift_ratio 0.01"
 expect 1 "parameter 'MSA/Intensities': msa needs stripes" "${ms[@]}" --set "MSA/Intensities="
+# an incidence angle on a planar model: refused as run refuses it, not ignored
+expect 1 "parameter 'Ground motion/Incidence angle': an incidence angle needs Model/Dimension = 3" \
+  "${ms[@]}" --set "Ground motion/Incidence angle=30"
+expect 1 "parameter 'Ground motion/Incidence angle': an incidence angle needs Model/Dimension = 3" \
+  ida "$m" "${suite[@]}" --output out --set "Ground motion/Incidence angle=90"
 expect 1 "parameter 'intensity': the hazard curve has no column 'intensity'" "${ms[@]}" \
   --set "MSA/Hazard curve=$work/zero.csv" --set "MSA/Hazard column=intensity"
 report "msa"

@@ -136,7 +136,8 @@ namespace poundfe
     /// impacts, the largest peak force (N) and approach velocity (m/s);
     /// then, for a 3D model, per storey the peak drift ratio along y, per
     /// floor the peak absolute acceleration along y (m/s^2) and the peak
-    /// rotation |theta_z| (rad). A 3D model is shaken by a single record
+    /// rotation |theta_z| (rad), per storey the residual drift ratio along
+    /// y (at the end). A 3D model is shaken by a single record
     /// along Ground motion/Incidence angle, by a pair turned by it.
     const std::vector<std::string> &demand_names() const { return names; }
     /// Column of the largest peak drift ratio in the demands.
@@ -147,6 +148,7 @@ namespace poundfe
     /// in the suite (m/s^2).
     const std::vector<std::array<double, 2>> &ground_peaks() const { return peaks_xy; }
     const RecordSuite &suite() const { return records; }
+    const Model &model() const { return analysis.model; }
     /// The measure of each record as scaled in the suite (IM unit).
     const std::vector<double> &base_intensities() const { return base; }
     const std::vector<double> &measure_periods() const { return periods; }

@@ -6,12 +6,15 @@
 // or below x has no finite demand there (+inf) and one whose runs stop
 // below x none at all (NaN). The ground's PGA scales exactly with the
 // record: PGA(x) = PGA of the record in the suite times x / its intensity.
+// An MSA stripe's demands are its runs' own (every record scaled to the
+// stripe's intensity): no interpolation, a collapsed run has none.
 #ifndef poundfe_assessment_ida_demands_h
 #define poundfe_assessment_ida_demands_h
 
 #include <poundfe/assessment/ida.h>
 #include <poundfe/output/demand_table.h>
 
+#include <functional>
 #include <vector>
 
 namespace poundfe
@@ -31,6 +34,17 @@ namespace poundfe
     unsigned int                 collapsed = 0, not_reached = 0;
   };
   IdaDemandSample ida_demands_at(const IdaRunner &runner, const IdaResult &result, double x);
+
+  /// The demands of a stripe's runs (record r at intensity x: stripe[r]; a
+  /// run with no demands was not run) that did not collapse.
+  IdaDemandSample stripe_demands(const IdaRunner &runner, const std::vector<IdaPoint> &stripe,
+                                 double x);
+
+  /// Record r's demands at intensity x as a demand table's row (the PGA
+  /// scaled with the record, Sa = x), `value(column, magnitude)` giving each
+  /// of the runner's demand columns (magnitude: |a signed residual|).
+  ResponseDemands record_demands(const IdaRunner &runner, unsigned int r, double x,
+                                 const std::function<double(unsigned int, bool)> &value);
 } // namespace poundfe
 
 #endif

@@ -58,8 +58,10 @@ namespace poundfe
     /// ("gap<j>_peak_impact_velocity", m/s), the peak ground acceleration
     /// of the realization as applied ("peak_ground_acc_m_s2", along x), and
     /// of a 3D model per floor the peak rotation |theta_z|
-    /// ("<building>_floor<i>_peak_rotation_rad") and the peak ground
-    /// acceleration along y ("peak_ground_acc_y_m_s2").
+    /// ("<building>_floor<i>_peak_rotation_rad"), the peak ground
+    /// acceleration along y ("peak_ground_acc_y_m_s2") and per storey the
+    /// residual drift ratio along y, signed
+    /// ("<building>_storey<i>_residual_drift_ratio_y").
     std::vector<std::string> optional_response_names() const;
     /// Adds the columns of those of `wanted` that are optional responses
     /// (others are ignored), after the standard ones. Call before
@@ -141,7 +143,8 @@ namespace poundfe
         impact_velocity,
         ground_acceleration,
         rotation,
-        ground_acceleration_y
+        ground_acceleration_y,
+        residual_drift_y
       } kind;
       unsigned int index;
       std::string  name;

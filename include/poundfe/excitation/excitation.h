@@ -101,6 +101,12 @@ namespace poundfe
   void correlate_second_component(const std::vector<double> &first, std::vector<double> &second,
                                   double intensity_ratio, double correlation);
 
+  /// Refuses Ground motion/Incidence angle on a planar model (file, line,
+  /// entry): it has no y direction to turn a record into, and an angle
+  /// silently ignored would give the results of another input.
+  void refuse_incidence_angle_in_plane(const Model &model, const GroundMotionParameters &g,
+                                       const InputFile &input);
+
   /// Model/Dimension = 3: the second horizontal component of `parameters`
   /// and its incidence angle, onto `excitation`. Throws InputError (two
   /// components asked of a 2D model, a bad second record).

@@ -21,6 +21,8 @@
 //   PFA-0-2 ... PFA-n-2  peak absolute floor acceleration along y (g; floor
 //                        0: the PGA along y as applied);
 //   PID-1-2 ... PID-n-2  peak inter-storey drift ratio along y (rad);
+//   RID-1-2 ... RID-n-2  residual inter-storey drift ratio along y at the
+//                        end (rad);
 //   PFR-1-0 ... PFR-n-0  peak floor rotation |theta_z| about the vertical
 //                        axis (rad; direction 0: pelicun's non-directional);
 // and, per gap g touching the building at its floor f, poundfe's own types
@@ -52,6 +54,7 @@ namespace poundfe
     double              sa  = 0; // g, of the SA_<T> column (when there is one)
     std::vector<double> peak_drift, peak_acceleration, residual_drift; // -, m/s^2, -
     std::vector<double> peak_drift_y, peak_acceleration_y, peak_rotation; // 3D: -, m/s^2, rad
+    std::vector<double> residual_drift_y;                             // 3D: -
     std::vector<double> peak_displacement, residual_displacement;     // m; may be empty
     std::vector<double> impacts, impact_force, impact_velocity;       // per gap: -, N, m/s
   };
