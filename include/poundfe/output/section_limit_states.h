@@ -31,6 +31,9 @@ namespace poundfe
       std::string                      label;
       unsigned int                     building = 0, storey = 1; // storey: 1-based
       std::vector<SectionLimitTracker> sections;                 // one per integration point
+      /// Per section: the axial force its kappa_y± were found at (NaN:
+      /// not yet) and the change of it that finds them again.
+      std::vector<double> yield_axial_force, axial_force_tolerance;
       /// The worst limit over its sections (-1: none).
       int worst_limit() const;
     };
@@ -45,7 +48,15 @@ namespace poundfe
     /// columns' axial forces change with the overturning moment), so that
     /// its ductility is measured against the yield curvature of that
     /// state; without it they stay those of the state initialize() saw.
+    /// Found again only once N has moved by more than
+    /// `yield_force_tolerance` EA eps_y since they were last found (EA the
+    /// section's initial axial stiffness, eps_y its bar yield strain): an
+    /// uncracked elastic section yields at kappa_y = (eps_y - N / EA) / y_s
+    /// (y_s the extreme bar's distance), so a change dN moves kappa_y by
+    /// dN / (EA eps_y - N) of itself, the tolerance over 1 - N / (EA eps_y)
+    /// (N < 0 in compression: less than the tolerance).
     void follow_axial_force() { axial_force_followed = true; }
+    static constexpr double yield_force_tolerance = 1e-3;
     /// The yield curvatures at the state given (the gravity state), then
     /// its strains.
     void initialize(const ResponseView &state) override { initialize_at(state.time()); }
