@@ -195,10 +195,11 @@ BOOST_AUTO_TEST_CASE(a_curve_stopped_at_the_yield_strain_is_the_whole_curves_sta
 BOOST_AUTO_TEST_CASE(yield_curvature_moves_less_than_the_axial_force_tolerance)
 {
   // SectionLimitStates finds kappa_y again once N has moved by more than
-  // d = yield_force_tolerance x EA eps_y; an uncracked elastic section's
-  // kappa_y = (eps_y - N / EA) / y_s moves by d / (EA eps_y - N) of itself.
-  // The RC column, cracked at yield, from high compression to tension: the
-  // change stays within that bound
+  // d = yield_force_tolerance x EA eps_y, so that kappa_y stays within 1e-3
+  // of the current N's. An uncracked elastic section's kappa_y = (eps_y - N
+  // / EA) / y_s moves by d / (EA eps_y - N) of itself; the RC column,
+  // cracked at yield, from high compression to tension, more (measured up
+  // to 5.3 times): within 1e-3 all the same
   const double       ey = 450e6 / 200e9;
   const FibreSection section(rc_rectangle(column()), 2);
   const double       ea = section_axial_stiffness(section);
@@ -211,9 +212,10 @@ BOOST_AUTO_TEST_CASE(yield_curvature_moves_less_than_the_axial_force_tolerance)
         const double moved = section_yield_curvature(section, n - d, ey, sense);
         const double bound = d / (ea * ey - n);
         worst              = std::max(worst, std::abs(moved / at - 1) / bound);
-        BOOST_CHECK_LE(std::abs(moved / at - 1), bound);
+        BOOST_CHECK_LE(std::abs(moved / at - 1), 1e-3);
       }
   BOOST_TEST_MESSAGE("largest change of kappa_y over its elastic bound: " << worst);
+  BOOST_CHECK_LE(worst, 10); // the sensitivity the tolerance was chosen for
 }
 
 BOOST_AUTO_TEST_CASE(limits_of_the_wrong_sign_are_refused)

@@ -50,13 +50,15 @@ namespace poundfe
     /// state; without it they stay those of the state initialize() saw.
     /// Found again only once N has moved by more than
     /// `yield_force_tolerance` EA eps_y since they were last found (EA the
-    /// section's initial axial stiffness, eps_y its bar yield strain): an
+    /// section's initial axial stiffness, eps_y its bar yield strain), so
+    /// that kappa_y± stay within 1e-3 of those at the current N: an
     /// uncracked elastic section yields at kappa_y = (eps_y - N / EA) / y_s
     /// (y_s the extreme bar's distance), so a change dN moves kappa_y by
-    /// dN / (EA eps_y - N) of itself, the tolerance over 1 - N / (EA eps_y)
-    /// (N < 0 in compression: less than the tolerance).
+    /// dN / (EA eps_y - N) of itself, 1e-4 / (1 - N / (EA eps_y)); an RC
+    /// section, cracked at yield, is up to 5.3 times as sensitive (the RC
+    /// column of unit/output from -1.5 MN to +100 kN): 5.3e-4 at most.
     void follow_axial_force() { axial_force_followed = true; }
-    static constexpr double yield_force_tolerance = 1e-3;
+    static constexpr double yield_force_tolerance = 1e-4;
     /// The yield curvatures at the state given (the gravity state), then
     /// its strains.
     void initialize(const ResponseView &state) override { initialize_at(state.time()); }
