@@ -180,6 +180,24 @@ namespace poundfe::commands
         }
       json.end_array();
     }
+
+    /// Fibre members: at each level done, each storey's probability of each
+    /// damage state (summary.json's "damage_states_per_level").
+    void
+    write_level_damage(JsonWriter &json, const RealizationRunner &runner,
+                       const FragilityLevels &done)
+    {
+      if (runner.damage_state_columns().empty())
+        return;
+      json.begin_array("damage_states_per_level");
+      for (std::size_t j = 0; j < done.levels.size(); ++j)
+        {
+          json.begin_object().value("pga_g", done.levels[j]);
+          write_damage_probabilities(json, runner, done.counts[j]);
+          json.end_object();
+        }
+      json.end_array();
+    }
   } // namespace
 
   int
@@ -196,6 +214,7 @@ namespace poundfe::commands
     const Analysis    analysis = prepare_analysis(input);
     const TimeHistoryParameters parameters = time_history_parameters(input);
     RealizationRunner runner(analysis, parameters);
+    runner.set_section_limits(input.section_limits);
     attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
     // with random parameters, the nominal model too: the record-to-record part
     const std::unique_ptr<RealizationRunner> nominal =
@@ -242,6 +261,7 @@ namespace poundfe::commands
       .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
     write_level_tables(run, done, "");
     write_level_tables(run, nominal_done, "record-to-record/");
+    write_level_damage(json, runner, done);
     if (levels.empty()) // nothing to fit
       {
         json.end_object();

@@ -79,15 +79,6 @@ namespace poundfe::commands
       return d;
     }
 
-    void
-    write_probability(JsonWriter &json, const ProbabilityEstimate &p)
-    {
-      json.value("probability", p.probability)
-        .value("coefficient_of_variation", undefined_if_infinite(p.coefficient_of_variation))
-        .value("failures", p.n_failures)
-        .value("realizations", p.n);
-    }
-
     /// The drift limits of the Monte Carlo section, then the Drift limits
     /// section's (named).
     std::vector<double>
@@ -154,7 +145,9 @@ namespace poundfe::commands
           write_probability(json, e.drift[i]);
           json.end_object();
         }
-      json.end_array().end_object();
+      json.end_array();
+      write_damage_probabilities(json, runner, e);
+      json.end_object();
     }
 
     /// summary.json's random model parameters and the probabilities of the
@@ -335,6 +328,14 @@ namespace poundfe::commands
       for (std::size_t i = 0; i < e.drift.size(); ++i)
         out << "P(max drift ratio > " << limits[i] << ") = " << rounded(e.drift[i].probability)
             << " (CoV " << rounded(e.drift[i].coefficient_of_variation) << ")\n";
+      for (std::size_t k = 0; k < e.damage.size(); ++k) // a storey's line
+        {
+          out << "P(damage state) " << runner.response_names()[runner.damage_state_columns()[k]]
+              << ":";
+          for (unsigned int l = 0; l < n_section_limits; ++l)
+            out << " " << damage_state_name(l) << " " << rounded(e.damage[k][l].probability);
+          out << "\n";
+        }
       out << "results in " << place << " (summary.json, realizations.csv, pdf_*.csv, cdf_*.csv"
           << (input.output.demand_tables ? ", demands_*.csv" : "")
           << (input.output.plots && !table.interrupted ? ", *.png" : "") << ")\n";
@@ -356,6 +357,7 @@ namespace poundfe::commands
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
     RealizationRunner runner(analysis, time_history_parameters(input));
+    runner.set_section_limits(input.section_limits);
     if (input.output.demand_tables) // the columns the tables read
       runner.add_optional_responses(runner.optional_response_names());
     attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);

@@ -47,6 +47,12 @@ namespace poundfe
     first_plan_column = names.size();
     for (const std::string &n : plan_scalar_names(analysis.model))
       names.push_back(n);
+    if (!SectionLimitStates(analysis.model, history->nonlinear_elements(), section_limits).empty())
+      for (const std::string &n : floors.column_names("storey", "damage_state"))
+        {
+          damage_columns.push_back(names.size());
+          names.push_back(n);
+        }
     first_parameter_column = first_residual_column = names.size();
   }
 
@@ -232,7 +238,7 @@ namespace poundfe
   RealizationRunner::run(const std::vector<double> &normals, std::vector<double> &responses,
                          const double amplitude_factor)
   {
-    const RunStatus      status = run_with(normals, {peaks.get()}, amplitude_factor);
+    const RunStatus      status = run_with(normals, {peaks.get()}, amplitude_factor, true);
     const FloorResponse &floors = peaks->floors();
 
     responses.assign(names.size(), 0.0);
@@ -259,10 +265,25 @@ namespace poundfe
     std::vector<double> plan;
     append_plan_scalars(model(), *peaks, plan);
     std::copy(plan.begin(), plan.end(), responses.begin() + first_plan_column);
+    fill_damage_states(responses);
     fill_optional_responses(responses);
     std::copy(parameter_values.begin(), parameter_values.end(),
               responses.begin() + first_parameter_column);
     return status.completed();
+  }
+
+  void
+  RealizationRunner::fill_damage_states(std::vector<double> &responses) const
+  {
+    if (damage_columns.empty())
+      return;
+    const FloorResponse floors(model());
+    for (unsigned int b = 0; b < model().buildings.size(); ++b)
+      {
+        const std::vector<int> worst = section_states->storey_worst_limits(model(), b);
+        for (unsigned int f = 0; f < worst.size(); ++f) // the damage state's number
+          responses[damage_columns[floors.index(b, f)]] = worst[f] + 1;
+      }
   }
 
   void
@@ -308,7 +329,7 @@ namespace poundfe
 
   RunStatus
   RealizationRunner::run_with(const std::vector<double> &normals, const Observers &observers,
-                              const double amplitude_factor)
+                              const double amplitude_factor, const bool damage)
   {
     AssertDimension(normals.size(), n_variables());
     // parameters that enter the linear part make a new engine and a new
@@ -321,6 +342,14 @@ namespace poundfe
     for (StepObserver *&observer : in_use)
       if (observer == old_peaks)
         observer = peaks.get();
+    section_states.reset();
+    if (damage && !damage_columns.empty()) // on the elements this run steps
+      {
+        const Model &working = structure ? structure->analysis().model : analysis.model;
+        section_states =
+          std::make_unique<SectionLimitStates>(working, history->nonlinear_elements(), section_limits);
+        in_use.push_back(section_states.get());
+      }
     load.apply(std::vector<double>(normals.begin(), normals.begin() + load.n_variables()),
                excitation, amplitude_factor);
     return history->run(excitation, in_use);

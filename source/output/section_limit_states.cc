@@ -81,11 +81,16 @@ namespace poundfe
         if (member == nullptr || fibre_section_of(*member, 0) == nullptr)
           continue;
         MemberLimits m{member, e.label, e.building, storey_of_member(model, e.label, e.building),
-                       {}};
+                       {}, {}, {}};
         for (unsigned int i = 0; i < member->member().n_points(); ++i)
           {
             const FibreSection &section = *fibre_section_of(*member, i);
             m.sections.emplace_back(section, section_strain_limits(section, parameters));
+            const double yield = m.sections.back().limits().strain[unsigned(SectionLimit::bar_yield)];
+            m.yield_axial_force.push_back(std::numeric_limits<double>::quiet_NaN());
+            const double ea = section_axial_stiffness(section);
+            m.axial_force_tolerance.push_back(
+              std::isnan(yield) ? 0.0 : yield_force_tolerance * ea * yield);
           }
         limits.push_back(std::move(m));
       }
@@ -103,6 +108,9 @@ namespace poundfe
           if (std::isnan(yield)) // no bars: no yield curvature
             continue;
           const double n = section.resultant()[0];
+          if (std::abs(n - m.yield_axial_force[i]) <= m.axial_force_tolerance[i])
+            continue; // kappa_y± of a close enough N (NaN: never found)
+          m.yield_axial_force[i] = n;
           m.sections[i].set_yield_curvatures(section_yield_curvature(section, n, yield, +1),
                                              section_yield_curvature(section, n, yield, -1));
         }

@@ -252,6 +252,9 @@ namespace poundfe
     settings.target_curvature = 10 * estimate;
     settings.steps            = 400;
     settings.drop_fraction    = 0;
+    // the points up to the first yield are those of the whole curve: the
+    // same kappa_y at a tenth of the cost (the curve ran to 10 estimates)
+    settings.stop_steel_strain = yield_strain;
     MomentCurvatureResult result;
     try
       {
@@ -274,6 +277,16 @@ namespace poundfe
           }
       }
     return estimate;
+  }
+
+  double
+  section_axial_stiffness(const FibreSection &section)
+  {
+    const FibreGeometry &g  = section.geometry();
+    double               ea = 0;
+    for (unsigned int i = 0; i < g.fibres.size(); ++i)
+      ea += g.fibres[i].area * section.fibre_law(i).initial_stiffness();
+    return ea;
   }
 
   SectionLimitTracker::SectionLimitTracker(const FibreSection        &section,

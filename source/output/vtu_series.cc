@@ -1,5 +1,6 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/frame_element.h>
+#include <poundfe/elements/member_element.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/elements/plan_contact_element.h>
 #include <poundfe/output/atomic_file.h>
@@ -49,6 +50,7 @@ namespace poundfe
     /// the hinges', one per point, in the order of the members' elements.
     unsigned int              first_section_cell = 0;
     std::vector<unsigned int> section_point_number; // 1-based along its member
+    std::vector<unsigned int> section_members;      // those members, in order
     /// The cell of each hysteretic storey, in the order of the elements.
     std::vector<unsigned int> hysteretic_storey_cells;
     double      model_size = 0; // largest extent, m
@@ -91,6 +93,10 @@ namespace poundfe
     void  add_section_cells(Cells &cells, const std::vector<std::vector<long>> &members);
     /// The section arrays of a time frame (cell data, 0 off the points).
     void  add_section_arrays(const ElementFrameStates &states, FieldFrame &frame) const;
+    /// The local end forces of the members on fibre sections: their
+    /// elements' resisting forces (the elastic K u is wrong once one cracks).
+    void  set_fibre_end_forces(const ElementFrameStates               &states,
+                               std::vector<std::array<double, 6>> &end_forces) const;
     void  set_model_size();
     /// Global (ux, uy, rz) of every point.
     std::vector<std::array<double, 3>> point_displacements(const Vector &u) const;
@@ -257,6 +263,7 @@ namespace poundfe
           continue; // its element has no section states (ElementFrameStates::evaluate)
         const Point2 &start = model.nodes[m.nodes[0]].position;
         const Point2 &end   = model.nodes[m.nodes[1]].position;
+        section_members.push_back(e);
         const std::vector<double> xi = fibre_member_integration(m.fibre).points;
         for (unsigned int i = 0; i < xi.size(); ++i)
           {
@@ -533,6 +540,7 @@ namespace poundfe
   {
     kinds.resize(elements.size());
     values.assign(n_entries * elements.size(), 0.0);
+    std::vector<double> member_forces; // appended after the sections' entries
     for (unsigned int h = 0; h < elements.size(); ++h)
       {
         const NonlinearElement &e = elements[h];
@@ -545,6 +553,12 @@ namespace poundfe
               seen ? section_state_entries(section, fibre_kinds(section.geometry())) :
                      SectionStateEntries{};
             values.insert(values.end(), entries.begin(), entries.end());
+          }
+        if (fibre_section_of(e, 0) != nullptr)
+          {
+            const auto &f = static_cast<const MemberElement<2> &>(e).member().resisting_force();
+            for (unsigned int k = 0; k < 6; ++k)
+              member_forces.push_back(seen ? f[k] : 0.0);
           }
         if (!seen)
           continue;
@@ -565,6 +579,7 @@ namespace poundfe
             x[force_y]                    = f[1];
           }
       }
+    values.insert(values.end(), member_forces.begin(), member_forces.end());
   }
 
   void
@@ -619,6 +634,7 @@ namespace poundfe
         for (unsigned int k = 0; k < 6; ++k)
           end_forces[e][k] = f[k];
       }
+    set_fibre_end_forces(states, end_forces);
     for (unsigned int l = 0; l < model.links.size(); ++l)
       {
         const StoreyLink &link  = model.links[l];
@@ -692,8 +708,9 @@ namespace poundfe
     // the section entries follow the elements', point after point in the
     // order of the members' elements, which is the cells' order
     const std::size_t first = ElementFrameStates::n_entries * states.kinds.size();
-    AssertThrow(states.values.size() ==
-                  first + n_section_state_entries * section_point_number.size(),
+    AssertThrow(states.values.size() == first +
+                                          n_section_state_entries * section_point_number.size() +
+                                          6 * section_members.size(),
                 dealii::ExcMessage("the fibre members' integration points and their drawing differ"));
     for (std::size_t p = 0; p < section_point_number.size(); ++p)
       for (unsigned int k = 0; k < arrays.size(); ++k)
@@ -701,6 +718,26 @@ namespace poundfe
           states.values[first + n_section_state_entries * p + k];
     for (FieldArray &array : arrays)
       frame.cell.push_back(std::move(array));
+  }
+
+  void
+  VtuSeries::Impl::set_fibre_end_forces(const ElementFrameStates               &states,
+                                        std::vector<std::array<double, 6>> &end_forces) const
+  {
+    // after the elements' entries and the sections' (add_section_arrays checks the size)
+    const std::size_t first = ElementFrameStates::n_entries * states.kinds.size() +
+                              n_section_state_entries * section_point_number.size();
+    if (states.values.size() != first + 6 * section_members.size())
+      return; // add_section_arrays refuses the frame
+    for (std::size_t k = 0; k < section_members.size(); ++k)
+      {
+        const Member      &m = model.members[section_members[k]];
+        const FrameElement element(model.nodes[m.nodes[0]].position,
+                                   model.nodes[m.nodes[1]].position, m.section);
+        const Vector6 f = element.rotation() * Eigen::Map<const Vector6>(&states.values[first + 6 * k]);
+        for (unsigned int c = 0; c < 6; ++c)
+          end_forces[section_members[k]][c] = f[c];
+      }
   }
 
   void

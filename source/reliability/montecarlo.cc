@@ -8,6 +8,8 @@
 #include <poundfe/base/progress.h>
 #include <poundfe/excitation/stochastic.h>
 #include <poundfe/output/append_file.h>
+#include <poundfe/output/finite_output.h>
+#include <poundfe/output/json_writer.h>
 #include <poundfe/output/atomic_file.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -484,7 +486,46 @@ namespace poundfe
     for (const double limit : drift_limits)
       e.drift.push_back(estimate_probability(
         std::count_if(drift.begin(), drift.end(), [limit](double x) { return x > limit; }), n));
+    for (const unsigned int c : runner.damage_state_columns())
+      {
+        const auto states = table.completed_values(c);
+        auto      &p      = e.damage.emplace_back();
+        for (unsigned int l = 0; l < n_section_limits; ++l) // state l + 1 or worse
+          p[l] = estimate_probability(
+            std::count_if(states.begin(), states.end(), [l](double x) { return x >= l + 1; }), n);
+      }
     return e;
+  }
+
+  void
+  write_probability(JsonWriter &json, const ProbabilityEstimate &p)
+  {
+    json.value("probability", p.probability)
+      .value("coefficient_of_variation", undefined_if_infinite(p.coefficient_of_variation))
+      .value("failures", p.n_failures)
+      .value("realizations", p.n);
+  }
+
+  void
+  write_damage_probabilities(JsonWriter &json, const RealizationRunner &runner,
+                             const Exceedances &e)
+  {
+    if (e.damage.empty())
+      return;
+    json.begin_array("storey_damage_states");
+    for (std::size_t k = 0; k < e.damage.size(); ++k)
+      {
+        json.begin_object().value("column",
+                                  runner.response_names()[runner.damage_state_columns()[k]]);
+        for (unsigned int l = 0; l < n_section_limits; ++l)
+          {
+            json.begin_object(damage_state_name(l));
+            write_probability(json, e.damage[k][l]);
+            json.end_object();
+          }
+        json.end_object();
+      }
+    json.end_array();
   }
 
   std::string

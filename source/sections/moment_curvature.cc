@@ -54,6 +54,8 @@ namespace poundfe
       /// curve ends (its last point then appended).
       bool check_watches(double from, double to);
       void add_watches();
+      /// Whether the curve ends at its new point p (the reason kept).
+      bool ends_at(const MomentCurvaturePoint &p);
 
       FibreSection                  &section;
       const MomentCurvatureSettings &settings;
@@ -308,6 +310,18 @@ namespace poundfe
       return false;
     }
 
+    bool
+    MomentCurvatureRun::ends_at(const MomentCurvaturePoint &p)
+    {
+      if (settings.drop_fraction > 0 && p.moment < settings.drop_fraction * result.peak.moment)
+        result.stop_reason =
+          "the moment fell below " + number_text(settings.drop_fraction) + " of the peak";
+      else if (settings.stop_steel_strain > 0 &&
+               std::max(p.steel_strain_max, -p.steel_strain_min) >= settings.stop_steel_strain)
+        result.stop_reason = "a steel strain reached " + number_text(settings.stop_steel_strain);
+      return !result.stop_reason.empty();
+    }
+
     MomentCurvatureResult
     MomentCurvatureRun::run()
     {
@@ -346,12 +360,8 @@ namespace poundfe
           const MomentCurvaturePoint &p = result.points.back();
           if (p.moment > result.peak.moment)
             result.peak = p;
-          if (settings.drop_fraction > 0 && p.moment < settings.drop_fraction * result.peak.moment)
-            {
-              result.stop_reason = "the moment fell below " + number_text(settings.drop_fraction) +
-                                   " of the peak";
-              break;
-            }
+          if (ends_at(p))
+            break;
         }
       if (result.stop_reason.empty())
         result.stop_reason = "the target curvature";

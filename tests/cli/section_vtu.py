@@ -13,6 +13,11 @@ checked against the section states recorder (sections.csv) of the same run:
   sections.csv's values at the frame's time, exactly (the same doubles: both
   outputs take them from one function, and the CSV's shortest form reads
   back exactly); every other cell holds 0;
+- at every frame, the end forces of each fibre member's cell (N_start ...
+  M_end) are member_forces.csv's at that time, exactly: both are the
+  member's element's own resisting forces in its local axes, not the
+  elastic K u; the run cracks its members (a bar strain beyond 1e-3, eight
+  times the concrete's cracking strain), where the two differ;
 - when ParaView's pvpython is installed, the last frame is opened by
   ParaView's own reader (XMLUnstructuredGridReader) and the arrays it sees
   compared with this reader's (exact).
@@ -68,6 +73,40 @@ def check_frame(name, v, header, row, failures):
     return sections
 
 
+END_FORCES = ["N_start", "V_start", "M_start", "N_end", "V_end", "M_end"]
+FORCE_COLUMNS = ["_N1_N", "_V1_N", "_M1_N_m", "_N2_N", "_V2_N", "_M2_N_m"]
+
+
+def member_labels():
+    """The members of input/fibre-frame-pounding.prm: two one-bay frames,
+    A of four storeys and B of three."""
+    return [f"{b}_{kind}{s}.{line}" for b, storeys in (("A", 4), ("B", 3))
+            for s in range(1, storeys + 1) for kind, line in (("C", 1), ("C", 2), ("B", 1))]
+
+
+def check_end_forces(name, v, header, sections, forces, failures):
+    """The end forces of each fibre member's cell against member_forces.csv."""
+    header_forces, row = forces
+    kind, members, buildings = v["cell"]["kind"], v["cell"]["member"], v["cell"]["building"]
+    checked = set()
+    for p, c in enumerate(sections):
+        label = header[1 + 7 * p][:-len(COLUMNS[0])].rsplit("_ip", 1)[0]
+        if label in checked:
+            continue
+        checked.add(label)
+        cells = [e for e in range(len(kind)) if kind[e] == 0 and members[e] == members[c]
+                 and buildings[e] == buildings[c]]
+        if len(cells) != 1 or label + FORCE_COLUMNS[0] not in header_forces:
+            failures.append(f"{name}: member {label}: cells {cells}, or not in member_forces.csv")
+            continue
+        for k, array in enumerate(END_FORCES):
+            expected = row[header_forces.index(label + FORCE_COLUMNS[k]) - 1]
+            if v["cell"][array][cells[0]] != expected:
+                failures.append(f"{name}: {array} of {label} {v['cell'][array][cells[0]]} "
+                                f"against member_forces.csv's {expected}")
+    return len(checked)
+
+
 def check_places(v, sections, failures):
     """Each section point lies on its member's line; end points are shared."""
     kind, members, buildings = v["cell"]["kind"], v["cell"]["member"], v["cell"]["building"]
@@ -110,12 +149,14 @@ def main():
         subprocess.run([poundfe, "run", prm, "--output", out, "--set", "Output/Plots=false",
                         "--set", "Output/VTU interval=0.5", "--set", "Output/Output interval=0",
                         "--set", "Ground motion/Stochastic/Duration=3",
-                        "--set", "Output/Recorders/Record=section states"],
+                        "--set", "Output/Recorders/Record=section states; member end forces of "
+                        + ", ".join(member_labels())],
                        check=True, stdout=subprocess.DEVNULL)
         header, rows = vtu.read_csv(os.path.join(out, "sections.csv"))
         header = open(os.path.join(out, "sections.csv")).readline().strip().split(",")
+        forces_header, forces = vtu.read_csv(os.path.join(out, "member_forces.csv"))
         frames = vtu.read_pvd(os.path.join(out, "solution.pvd"))
-        bending = 0
+        bending, cracked, n_members = 0, 0, 0
         for time, name in frames:
             v = vtu.read_vtu(os.path.join(out, name))
             if time not in rows:
@@ -123,15 +164,25 @@ def main():
                 continue
             sections = check_frame(name, v, header, rows[time], failures)
             bending = max([bending] + [abs(v["cell"]["curvature"][c]) for c in sections])
+            cracked = max([cracked] + [v["cell"]["steel_strain_max"][c] for c in sections])
+            if time not in forces:
+                failures.append(f"{name}: no row of member_forces.csv at t = {time}")
+                continue
+            n_members = check_end_forces(name, v, header, sections,
+                                         (forces_header, forces[time]), failures)
         check_places(v, sections, failures)
         failures += vtu.failures
         paraview = check_paraview(os.path.join(out, frames[-1][1]), v, failures)
     if len(frames) < 4 or bending == 0:
         failures.append(f"{len(frames)} frames, largest curvature {bending}: nothing checked")
+    if cracked <= 1e-3 or n_members != len(member_labels()):
+        failures.append(f"largest bar strain {cracked}, {n_members} members' end forces: "
+                        "no cracked member checked")
     for f in failures[:20]:
         print("FAIL", f)
     print(f"{len(frames)} frames, {len(sections)} integration points each, largest curvature "
-          f"{bending:.3g} 1/m; {paraview}; {len(failures)} failures")
+          f"{bending:.3g} 1/m, largest bar strain {cracked:.3g}, end forces of {n_members} "
+          f"members; {paraview}; {len(failures)} failures")
     sys.exit(1 if failures else 0)
 
 

@@ -15,13 +15,20 @@
 //     state's curvature over the yield curvature set when it was observed,
 //     the largest of them, not the peak curvature over the last one;
 //   - the Section limits entries: a wrong sign, zero or a word is refused
-//     naming the entry.
+//     naming the entry;
+//   - a moment-curvature stopped at the yield strain holds the whole
+//     curve's first points exactly (the yield curvature read from them is
+//     the same), and the yield curvature moves with N no more than the
+//     elastic bound of SectionLimitStates' tolerance (stated there).
 #include <poundfe/base/exceptions.h>
+#include <poundfe/output/section_limit_states.h>
 #include <poundfe/output/section_limits.h>
+#include <poundfe/sections/moment_curvature.h>
 #include <poundfe/sections/section_builders.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -155,6 +162,60 @@ BOOST_AUTO_TEST_CASE(first_yield_curvature_of_symmetric_bars)
   const double       ey = 450e6 / 200e9;
   for (const int sense : {+1, -1})
     BOOST_CHECK_CLOSE(section_yield_curvature(section, 0, ey, sense), ey / 0.2, 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(a_curve_stopped_at_the_yield_strain_is_the_whole_curves_start)
+{
+  // section_yield_curvature reads kappa_y from the points up to the first
+  // one past eps_y: a curve stopped there must hold exactly those points
+  const double ey = 450e6 / 200e9;
+  FibreSection full_section(rc_rectangle(column()), 2), stopped_section(rc_rectangle(column()), 2);
+  MomentCurvatureSettings settings;
+  settings.axial_force      = -4e5;
+  settings.target_curvature = 10 * 2.1 * ey / 0.4;
+  settings.steps            = 400;
+  settings.drop_fraction    = 0;
+  const MomentCurvatureResult full = moment_curvature(full_section, settings);
+  settings.stop_steel_strain       = ey;
+  const MomentCurvatureResult stopped = moment_curvature(stopped_section, settings);
+  const auto steel = [](const MomentCurvaturePoint &p) {
+    return std::max(p.steel_strain_max, -p.steel_strain_min);
+  };
+  const auto &p = stopped.points;
+  BOOST_REQUIRE(p.size() >= 2 && p.size() < full.points.size() / 4);
+  BOOST_CHECK(steel(p.back()) >= ey && steel(p[p.size() - 2]) < ey);
+  for (unsigned int k = 0; k < p.size(); ++k)
+    {
+      BOOST_CHECK_EQUAL(p[k].curvature, full.points[k].curvature);
+      BOOST_CHECK_EQUAL(p[k].moment, full.points[k].moment);
+      BOOST_CHECK_EQUAL(steel(p[k]), steel(full.points[k]));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(yield_curvature_moves_less_than_the_axial_force_tolerance)
+{
+  // SectionLimitStates finds kappa_y again once N has moved by more than
+  // d = yield_force_tolerance x EA eps_y, so that kappa_y stays within 1e-3
+  // of the current N's. An uncracked elastic section's kappa_y = (eps_y - N
+  // / EA) / y_s moves by d / (EA eps_y - N) of itself; the RC column,
+  // cracked at yield, from high compression to tension, more (measured up
+  // to 5.3 times): within 1e-3 all the same
+  const double       ey = 450e6 / 200e9;
+  const FibreSection section(rc_rectangle(column()), 2);
+  const double       ea = section_axial_stiffness(section);
+  const double       d  = SectionLimitStates::yield_force_tolerance * ea * ey;
+  double             worst = 0;
+  for (const double n : {-1.5e6, -8e5, -4e5, -1e5, 0.0, 1e5})
+    for (const int sense : {+1, -1})
+      {
+        const double at    = section_yield_curvature(section, n, ey, sense);
+        const double moved = section_yield_curvature(section, n - d, ey, sense);
+        const double bound = d / (ea * ey - n);
+        worst              = std::max(worst, std::abs(moved / at - 1) / bound);
+        BOOST_CHECK_LE(std::abs(moved / at - 1), 1e-3);
+      }
+  BOOST_TEST_MESSAGE("largest change of kappa_y over its elastic bound: " << worst);
+  BOOST_CHECK_LE(worst, 10); // the sensitivity the tolerance was chosen for
 }
 
 BOOST_AUTO_TEST_CASE(limits_of_the_wrong_sign_are_refused)

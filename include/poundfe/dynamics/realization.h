@@ -15,6 +15,7 @@
 #include <poundfe/dynamics/time_history.h>
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/output/peak_response.h>
+#include <poundfe/output/section_limit_states.h>
 
 #include <cstdint>
 #include <functional>
@@ -72,6 +73,18 @@ namespace poundfe
     /// The model as built (before any random parameter is applied).
     const Model &model() const { return analysis.model; }
 
+    /// The limits the fibre members' damage states are measured against
+    /// (default: the Section limits section's defaults). Call before any run.
+    void set_section_limits(const SectionLimitParameters &limits) { section_limits = limits; }
+    /// A model with members on fibre sections has a column per storey of
+    /// each building, "<building>_storey<i>_damage_state": the damage state
+    /// of the realization's worst member of that storey (output/
+    /// section_limit_states.h, the pushover's damage_state columns), as the
+    /// number of the worst limit reached, 0 none, 1 bar yield, 2 spalling,
+    /// 3 crushing, 4 bar fracture (damage_state_name(n - 1)). Those
+    /// columns, in FloorResponse order (none without fibre members).
+    const std::vector<unsigned int> &damage_state_columns() const { return damage_columns; }
+
     /// Names of the response columns (realizations.csv, after 'realization,completed').
     const std::vector<std::string> &response_names() const { return names; }
     /// Column of a named response; throws std::out_of_range if absent.
@@ -112,9 +125,12 @@ namespace poundfe
     void apply_parameters(const std::vector<double> &xi);
     /// The optional responses' columns of a run's row.
     void fill_optional_responses(std::vector<double> &responses) const;
-    /// The time history of the normals xi (parameters applied first).
+    /// The time history of the normals xi (parameters applied first);
+    /// `damage`: with the fibre members' limit states observed too.
     RunStatus run_with(const std::vector<double> &xi, const Observers &observers,
-                       double amplitude_factor);
+                       double amplitude_factor, bool damage = false);
+    /// The damage state columns of a run's row.
+    void fill_damage_states(std::vector<double> &responses) const;
 
     const Analysis          &analysis;
     const TimeHistoryParameters parameters;
@@ -126,6 +142,11 @@ namespace poundfe
     /// on the working model of `structure` when there is one
     std::unique_ptr<TimeHistory>  history;
     std::unique_ptr<PeakResponse> peaks; // the one observer of a realization
+    /// The fibre members' limit states of the last run (with damage state
+    /// columns): made again for each run, on the elements it runs.
+    SectionLimitParameters              section_limits;
+    std::unique_ptr<SectionLimitStates> section_states;
+    std::vector<unsigned int>           damage_columns;
     std::vector<std::string> names;
     std::vector<double>      xi;
     std::vector<unsigned int> roof_floor; // FloorResponse index of each building's roof

@@ -81,10 +81,15 @@ namespace poundfe
                                             const SectionLimitParameters &parameters);
   /// kappa_y at the axial force N bending one way (+1: positive curvature,
   /// -1: negative), by the moment-curvature engine on a clone (the first
-  /// yield of a bar at `yield_strain`); without a yield before the curve
-  /// ends, Priestley et al.'s 2.1 eps_y / h (h: the fibres' depth).
+  /// yield of a bar at `yield_strain`, the curve stopped there); without a
+  /// yield before the curve ends, Priestley et al.'s 2.1 eps_y / h (h: the
+  /// fibres' depth).
   double section_yield_curvature(const FibreSection &section, double axial_force,
                                  double yield_strain, int sense);
+
+  /// EA: the fibres' areas times their laws' initial moduli (the scale of
+  /// the axial force that moves kappa_y, SectionLimitStates).
+  double section_axial_stiffness(const FibreSection &section);
 
   /// What each fibre of a section is for the limits: concrete, core (a
   /// concrete with a crushing limit, SectionMaterial::min_strain), steel.

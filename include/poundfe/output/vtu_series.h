@@ -14,7 +14,8 @@
 //   Cell data: kind (0 frame element, 1 storey, 2 gap, 3 hinge), building and
 //   member ids (1-based; a member split into several elements keeps one id),
 //   member end forces in local axes (N, V, M at both ends; a storey's shear
-//   as V), `force` (storey shear, contact force, hinge moment), `contact`
+//   as V; a member on fibre sections's from its element's resisting forces,
+//   as the member end forces recorder's, an elastic member's from K u), `force` (storey shear, contact force, hinge moment), `contact`
 //   (1 while a gap is closed), `penetration`, the Bouc-Wen variable `z` and
 //   the plastic deformation (hinge rotation or storey drift minus force over
 //   initial stiffness) of hinges and hysteretic storeys.
@@ -60,8 +61,10 @@ namespace poundfe
   /// reach, its contact point and its force on its first side. After the
   /// n_entries of every element, `values` holds the section state entries
   /// (output/section_states.h) of every integration point of each member
-  /// on fibre sections, member after member in the elements' order (those
-  /// of an element not observed: 0; a run over ranks has no fibre members).
+  /// on fibre sections, member after member in the elements' order, and
+  /// then the six global resisting forces of each such member, in the same
+  /// order (those of an element not observed: 0; a run over ranks has no
+  /// fibre members).
   struct ElementFrameStates
   {
     enum Entry : unsigned int

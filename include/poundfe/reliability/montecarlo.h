@@ -17,6 +17,7 @@
 
 #include <mpi.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -110,12 +111,27 @@ namespace poundfe
   {
     ProbabilityEstimate              pounding; // when the runner has gaps
     std::vector<ProbabilityEstimate> drift;    // one per limit
+    /// Per damage state column of the runner (fibre members), the
+    /// probability that the storey reaches each limit or a worse one, in
+    /// the order of SectionLimit (yield, spalling, crushing, fracture).
+    std::vector<std::array<ProbabilityEstimate, n_section_limits>> damage;
   };
 
-  /// The realizations of `table` that pounded and those whose largest drift
-  /// ratio exceeds each of `drift_limits`.
+  /// The realizations of `table` that pounded, those whose largest drift
+  /// ratio exceeds each of `drift_limits`, and per storey those whose damage
+  /// state reaches each limit.
   Exceedances count_exceedances(const MonteCarloTable &table, const RealizationRunner &runner,
                                 const std::vector<double> &drift_limits);
+
+  class JsonWriter;
+  /// An estimate's "probability", "coefficient_of_variation" (null when
+  /// infinite), "failures" and "realizations" in the object open.
+  void write_probability(JsonWriter &json, const ProbabilityEstimate &p);
+  /// summary.json's "storey_damage_states" of `e` (nothing without damage
+  /// state columns): per storey column its name and, per damage state, the
+  /// probability of reaching it (failures, realizations, CoV).
+  void write_damage_probabilities(JsonWriter &json, const RealizationRunner &runner,
+                                  const Exceedances &e);
 
   /// The Monte Carlo at each PGA level of a fragility analysis.
   struct FragilityLevels

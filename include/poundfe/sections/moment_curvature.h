@@ -8,7 +8,8 @@
 //   dM/dkappa = d^T K_kk d - (d^T K_k0)(K_0k d) / K_00,  d = (cos a, sin a)
 // (d^T K_kk d when K_00 = 0: every fibre on a plateau).
 // It stops at the target curvature, when the moment falls below a
-// fraction of the peak, when a fibre passes its material's strain limit
+// fraction of the peak, after the first point whose extreme steel strain
+// reaches a given magnitude (when asked: the first yield alone is wanted), when a fibre passes its material's strain limit
 // (crushing, rupture: located within the step by the secant method on the
 // curvature), or when N can no longer be carried. Events: the first yield
 // of each steel material (its law's yield strain), each concrete
@@ -32,6 +33,10 @@ namespace poundfe
     double       target_curvature  = 0;  // 1/m, > 0
     unsigned int steps             = 200; // equal curvature increments to the target
     double       drop_fraction     = 0.8; // stop when M < fraction x peak (0: never)
+    /// Stop after the first point at which an extreme steel fibre's strain
+    /// magnitude reaches this (0: never): the points up to it are those of
+    /// the whole curve, so a first yield read from them is the same.
+    double       stop_steel_strain = 0;
     double       tolerance         = 1e-10; // |N - N_target| over the section's squash force
     unsigned int max_iterations    = 50;
   };
