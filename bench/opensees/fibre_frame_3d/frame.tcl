@@ -1,6 +1,6 @@
 # A two-storey, one-bay (5 m x 4 m) RC frame in space of fibre members, the
 # OpenSees twin of fibre-frame-3d.prm (poundfe run): forceBeamColumns (Lobatto
-# 5 points) on fibre sections with patches and layers (Concrete01 and
+# 5 points) on fibre sections with patches and layers (Concrete02 and
 # Steel02; columns 0.4 x 0.4 m with bars on all four faces, PDelta, vecxz
 # along X; beams 0.3 x 0.5 m, Linear, their depth vertical), rigid floors
 # (rigidDiaphragm to a master at the plan centre with the floor mass and its
@@ -33,7 +33,7 @@ foreach k {1 2} {
     foreach c {1 2 3 4} { mass [expr {10*$k + $c}] 0.0 0.0 [expr {$m/4}] 0.0 0.0 0.0 }
     rigidDiaphragm 3 $master [expr {10*$k + 1}] [expr {10*$k + 2}] [expr {10*$k + 3}] [expr {10*$k + 4}]
 }
-uniaxialMaterial Concrete01 1 -30e6 -0.002 -6e6 -0.006
+uniaxialMaterial Concrete02 1 -30e6 -0.002 -6e6 -0.006 0.1 3e6 1.5e9
 uniaxialMaterial Steel02 2 420e6 200e9 0.01 20 0.925 0.15
 section Fiber 1 -GJ 2.7e7 {
     patch rect 1 8 8 -0.2 -0.2 0.2 0.2
