@@ -277,8 +277,11 @@ namespace poundfe
         {
           const FrameElement3D element = element_of(member);
           const MemberMap      t       = map_of(member);
-          scatter(model, member.dofs, Eigen::MatrixXd(t.transpose() * element.stiffness() * t),
-                  k_triplets);
+          // a fibre member: its virgin tangent, K_ref of its MemberElement
+          const Eigen::MatrixXd k = member.fibre.fibre() ?
+                                      Eigen::MatrixXd(make_beam_column(model, member)->initial_tangent()) :
+                                      Eigen::MatrixXd(element.stiffness());
+          scatter(model, member.dofs, Eigen::MatrixXd(t.transpose() * k * t), k_triplets);
           scatter(model, member.dofs,
                   Eigen::MatrixXd(t.transpose() * element.mass(model.mass_matrix) * t),
                   m_triplets);

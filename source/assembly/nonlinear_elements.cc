@@ -100,6 +100,9 @@ namespace poundfe
       for (const Member &member : model.members) // fibre frames' beam-columns
         if (member.fibre.fibre())
           elements.push_back(make_member_element(model, member));
+      for (const Member3D &member : model.members_3d) // 3D fibre frames'
+        if (member.fibre.fibre())
+          elements.push_back(make_member_element(model, member));
       for (const Hinge &hinge : model.hinges)
         elements.emplace_back<UniaxialElement>(
           ElementKind::hinge, hinge.building, hinge.label,

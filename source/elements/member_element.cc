@@ -29,6 +29,32 @@ namespace poundfe
   }
 
   template <int dim>
+  MemberElement<dim>::MemberElement(const unsigned int building, std::string label,
+                                    std::vector<int> equations, Eigen::MatrixXd t,
+                                    std::unique_ptr<BeamColumn<dim>> member)
+    : NonlinearElement(ElementKind::member, building, std::move(label), std::move(equations))
+    , beam(std::move(member))
+    , map(std::move(t))
+  {
+    AssertDimension(map.rows(), static_cast<int>(BeamColumn<dim>::n_dofs));
+    AssertDimension(map.cols(), static_cast<int>(n_dofs()));
+    beam->reset();
+    reference       = beam->initial_tangent();
+    reference_basic = beam->basic_tangent();
+    committed_force.setZero();
+    committed_u.setZero();
+  }
+
+  template <int dim>
+  typename MemberElement<dim>::GlobalVector
+  MemberElement<dim>::end_displacements(const Eigen::Ref<const Eigen::VectorXd> &u) const
+  {
+    if (map.size() == 0)
+      return GlobalVector(u);
+    return GlobalVector(map * u);
+  }
+
+  template <int dim>
   unsigned int
   MemberElement<dim>::rank() const
   {
@@ -39,9 +65,10 @@ namespace poundfe
   Eigen::MatrixXd
   MemberElement<dim>::tangent_basis() const
   {
-    if (linear())
-      return beam->transformation().compatibility().transpose();
-    return Eigen::MatrixXd::Identity(n_dofs(), n_dofs());
+    const Eigen::MatrixXd basis =
+      linear() ? Eigen::MatrixXd(beam->transformation().compatibility().transpose()) :
+                 Eigen::MatrixXd::Identity(BeamColumn<dim>::n_dofs, BeamColumn<dim>::n_dofs);
+    return map.size() == 0 ? basis : Eigen::MatrixXd(map.transpose() * basis);
   }
 
   template <int dim>
@@ -55,14 +82,18 @@ namespace poundfe
   bool
   MemberElement<dim>::set_trial(const LocalVector &u, const LocalVector & /*v*/)
   {
-    return beam->set_trial(GlobalVector(u));
+    return beam->set_trial(end_displacements(u));
   }
 
   template <int dim>
   void
   MemberElement<dim>::force_correction(LocalVectorOut f) const
   {
-    f = beam->resisting_force() - reference * beam->trial_displacement();
+    const GlobalVector f_e = beam->resisting_force() - reference * beam->trial_displacement();
+    if (map.size() == 0)
+      f = f_e;
+    else
+      f = map.transpose() * f_e;
   }
 
   template <int dim>
@@ -120,12 +151,12 @@ namespace poundfe
   double
   MemberElement<dim>::deformation(const Eigen::VectorXd &u) const
   {
-    GlobalVector local = GlobalVector::Zero();
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(n_dofs());
     for (unsigned int i = 0; i < n_dofs(); ++i)
       if (equations()[i] >= 0)
-        local[i] = u[equations()[i]];
+        q[i] = u[equations()[i]];
     CrdTransformation<dim> transformation = beam->transformation();
-    transformation.update(local);
+    transformation.update(end_displacements(q));
     return transformation.basic_deformation()[1];
   }
 
@@ -156,6 +187,37 @@ namespace poundfe
     return std::make_unique<MemberElement<2>>(member.building, member.label, equations,
                                               make_beam_column(model, member),
                                               ReferenceStiffness::initial, ElementKind::member);
+  }
+
+  std::unique_ptr<BeamColumn<3>>
+  make_beam_column(const Model &model, const Member3D &member)
+  {
+    Assert(member.fibre.fibre() && model.section_laws.at(member.fibre.section),
+           dealii::ExcMessage("a fibre member needs its section"));
+    using Point              = Eigen::Map<const Eigen::Vector3d>;
+    const Eigen::Vector3d      a = Point(member.ends[0].data()), b = Point(member.ends[1].data());
+    const CrdTransformation<3> transformation(member.fibre.p_delta ? Transformation::pdelta :
+                                                                     Transformation::linear,
+                                              a, b, Eigen::Vector3d::Zero(),
+                                              Eigen::Vector3d::Zero(),
+                                              Point(member.orientation.data()));
+    const SectionLaw &section = *model.section_laws[member.fibre.section];
+    if (member.fibre.force_based)
+      return std::make_unique<ForceBeamColumn<3>>(transformation, section, member.fibre.n_points);
+    return std::make_unique<DispBeamColumn<3>>(transformation, section, member.fibre.n_points);
+  }
+
+  std::unique_ptr<MemberElement<3>>
+  make_member_element(const Model &model, const Member3D &member)
+  {
+    std::vector<int> equations;
+    for (const unsigned int dof : member.dofs)
+      equations.push_back(model.equation(dof));
+    const Eigen::MatrixXd map = Eigen::Map<const Eigen::Matrix<double, 12, Eigen::Dynamic,
+                                                               Eigen::RowMajor>>(
+      member.map.data(), 12, member.dofs.size());
+    return std::make_unique<MemberElement<3>>(member.building, member.label, equations, map,
+                                              make_beam_column(model, member));
   }
 
   Eigen::Matrix<double, 6, 6>

@@ -230,10 +230,11 @@ namespace poundfe
   FrameAssembler3D::add_member(const std::array<const FrameJoint3D *, 2> &ends,
                                const Eigen::Vector3d &orientation, const Section3D &section,
                                const MemberKind kind, const unsigned int group,
-                               const std::string &label)
+                               const std::string &label, const FibreMember &fibre)
   {
     Member3D member;
     member.section  = section;
+    member.fibre    = fibre;
     member.building = b;
     member.group    = group;
     member.kind     = kind;

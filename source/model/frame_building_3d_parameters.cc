@@ -99,10 +99,12 @@ namespace poundfe
   BuildingParameters::finalize_frame_3d(const InputFile &input, const std::string &s)
   {
     const unsigned int n        = n_storeys;
+    // a fibre building's rigidities are its sections' (its entries refused)
     const auto         required = [&](const std::string &entry, const std::vector<double> &values,
                               const char *what) {
-      require_positive_list(input, s + entry, values, n, "a 3D frame needs the " +
-                                                           std::string(what), "one per storey");
+      if (!fibre())
+        require_positive_list(input, s + entry, values, n, "a 3D frame needs the " +
+                                                             std::string(what), "one per storey");
     };
     required("Column G", column_shear_modulus, "columns' shear modulus G");
     required("Column Iz", column_second_moment_z, "columns' second moment Iz");

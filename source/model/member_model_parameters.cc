@@ -1,4 +1,4 @@
-// The member model of a generated 2D frame (Building <i>/Member model):
+// The member model of a generated frame, 2D or 3D (Building <i>/Member model):
 // elastic frame elements with Bouc-Wen hinges at their ends (the default),
 // or beam-columns on fibre sections (elements/beam_column.h: force-based on
 // Gauss-Lobatto points, Spacone, Filippou & Taucer 1996; or displacement-
@@ -20,7 +20,7 @@ namespace poundfe
     prm.add_parameter("Member model", member_model,
                       "[frame] elastic-hinges: elastic frame elements with the Bouc-Wen hinges "
                       "of Hinges; fibre: beam-columns on the fibre sections of `Sections` "
-                      "named by Column sections and Beam sections (2D frames). Unit: -.",
+                      "named by Column sections and Beam sections (2D and 3D frames). Unit: -.",
                       Patterns::Selection("elastic-hinges|fibre"));
     prm.add_parameter("Member element", member_element,
                       "[frame, fibre] force: force-based beam-column (Gauss-Lobatto points, "
@@ -72,6 +72,20 @@ namespace poundfe
       if (input.line_of(path) > 0)
         input.fail(path, "a fibre building (Member model = fibre) " + why);
     }
+    /// A member in space twists: its section needs its GJ (a rigid floor
+    /// turns the columns, the beams twist with the joints).
+    void
+    require_torsional_rigidities(const InputFile &input, const BuildingParameters &p,
+                                 const SectionsParameters &sections)
+    {
+      for (const auto *indices : {&p.column_section_index, &p.beam_section_index})
+        for (const unsigned int k : *indices)
+          if (!(sections.sections[k].torsional_rigidity > 0))
+            input.fail("Sections/Section " + std::to_string(k + 1) + "/Torsional rigidity",
+                       "section '" + trimmed(sections.sections[k].name) +
+                         "' is a member of a 3D frame (Model/Dimension = 3), which twists: "
+                         "give its GJ (> 0)");
+    }
   } // namespace
 
   void
@@ -85,8 +99,6 @@ namespace poundfe
     const std::string path = s + "Member model";
     if (type != BuildingType::frame)
       input.fail(path, "fibre members are for generated frames (Type = frame)");
-    if (model.dimension != 2)
-      input.fail(path, "fibre members are for 2D frames (Model/Dimension = 2)");
     if (!hinge_locations.empty())
       input.fail(s + "Hinges/Locations", "a fibre building's members yield in their fibres: "
                                          "hinges are for Member model = elastic-hinges");
@@ -102,11 +114,15 @@ namespace poundfe
       input.fail(s + "Integration points", "must lie in " + std::to_string(lowest) + ".." +
                                              std::to_string(10) +
                                              " for Member element = " + member_element);
-    for (const char *entry : {"Column E", "Column A", "Column I", "Beam E", "Beam A", "Beam I"})
+    for (const char *entry : {"Column E", "Column A", "Column I", "Beam E", "Beam A", "Beam I",
+                              "Column G", "Column Iz", "Column J", "Column Avy", "Column Avz",
+                              "Beam G", "Beam Iz", "Beam J", "Beam Avy", "Beam Avz"})
       refuse_unused(input, s + entry, "takes its rigidities from its sections");
     column_section_index = section_indices(input, s + "Column sections", column_sections,
                                            n_storeys, model.sections, "one per storey");
     beam_section_index   = section_indices(input, s + "Beam sections", beam_sections, n_storeys,
                                            model.sections, "one per floor");
+    if (model.dimension == 3)
+      require_torsional_rigidities(input, *this, model.sections);
   }
 } // namespace poundfe

@@ -220,25 +220,8 @@ namespace poundfe
         }
     }
 
-    /// Member model = fibre: the members of storey (floor) i are beam-columns
-    /// on their Sections entry (set_fibre_rigidities gives them its rigidities).
-    void
-    set_fibre_member(const Model &model, const BuildingParameters &p,
-                     const std::vector<unsigned int> &sections, const unsigned int storey,
-                     const bool column, FibreMember &fibre)
-    {
-      if (!p.fibre())
-        return;
-      fibre.section     = int(value_for(sections, storey));
-      fibre.force_based = p.member_element == "force";
-      fibre.n_points    = p.integration_points;
-      fibre.p_delta     = column && (p.member_transformation == "PDelta" ||
-                                 (p.member_transformation == "auto" &&
-                                  model.gravity_analysis.enabled));
-    }
-
-    /// The plane fibre section of each `Sections` entry a fibre building
-    /// names (model.section_laws).
+    /// The fibre section of each `Sections` entry a fibre building names
+    /// (model.section_laws): plane in 2D, in space in 3D.
     void
     add_section_laws(Model &model, const ModelParameters &parameters, const InputFile &input)
     {
@@ -248,7 +231,8 @@ namespace poundfe
           for (const unsigned int k : *indices)
             if (!model.section_laws[k])
               model.section_laws[k] =
-                std::make_shared<const FibreSection>(parameters.sections.section(input, k, 2));
+                std::make_shared<const FibreSection>(
+                  parameters.sections.section(input, k, model.section_resultants()));
     }
 
     void
@@ -284,9 +268,8 @@ namespace poundfe
           const Section beam{value_for(p.beam_youngs_modulus, i - 1), value_for(p.beam_area, i - 1),
                        value_for(p.beam_second_moment, i - 1),
                        value_for(p.beam_mass_per_length, i - 1)};
-          FibreMember column_fibre, beam_fibre;
-          set_fibre_member(model, p, p.column_section_index, i - 1, true, column_fibre);
-          set_fibre_member(model, p, p.beam_section_index, i - 1, false, beam_fibre);
+          const FibreMember column_fibre = fibre_member(model, p, i - 1, true);
+          const FibreMember beam_fibre   = fibre_member(model, p, i - 1, false);
           for (unsigned int j = 0; j < n_lines; ++j)
             add_member(model, joint[i - 1][j], joint[i][j], p.elements_per_member, column, b,
                        2 * i - 1, MemberKind::column, column_fibre);
@@ -735,6 +718,23 @@ namespace poundfe
     }
   } // namespace
 
+  FibreMember
+  fibre_member(const Model &model, const BuildingParameters &p, const unsigned int storey,
+               const bool column)
+  {
+    FibreMember fibre;
+    if (!p.fibre())
+      return fibre;
+    fibre.section     = int(value_for(column ? p.column_section_index : p.beam_section_index,
+                                      storey));
+    fibre.force_based = p.member_element == "force";
+    fibre.n_points    = p.integration_points;
+    fibre.p_delta     = column && (p.member_transformation == "PDelta" ||
+                               (p.member_transformation == "auto" &&
+                                model.gravity_analysis.enabled));
+    return fibre;
+  }
+
   void
   set_fibre_rigidities(Model &model)
   {
@@ -745,6 +745,20 @@ namespace poundfe
           member.section.youngs_modulus = 1;
           member.section.area           = k0(0, 0);
           member.section.second_moment  = k0(1, 1);
+        }
+    // (N, Mz, My, T): the mass's twist inertia m (Iy + Iz) / A keeps its
+    // ratio when E scales A and both I alike
+    for (Member3D &member : model.members_3d)
+      if (member.fibre.fibre())
+        {
+          const auto k0 = model.section_laws[member.fibre.section]->initial_tangent();
+          Section3D &s  = member.section;
+          s.youngs_modulus = s.shear_modulus = 1;
+          s.area                             = k0(0, 0);
+          s.second_moment_z                  = k0(1, 1);
+          s.second_moment_y                  = k0(2, 2);
+          s.torsion_constant                 = k0(3, 3);
+          s.shear_area_y = s.shear_area_z = 0;
         }
   }
 

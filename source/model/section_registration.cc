@@ -163,6 +163,12 @@ namespace poundfe::section_registration
                                 (column ? "storeys" : "floors") + " 1.." +
                                 std::to_string(building.floors.size()));
       };
+      const auto of_building = [&](const auto &m) {
+        return m.building == p.building && m.fibre.fibre();
+      };
+      const bool fibre =
+        std::any_of(model.members.begin(), model.members.end(), of_building) ||
+        std::any_of(model.members_3d.begin(), model.members_3d.end(), of_building);
       p.variant = building.type == BuildingType::frame && model.dimension == 3 ? 1 : 0;
       if (p.variant == 1)
         {
@@ -177,15 +183,12 @@ namespace poundfe::section_registration
             refuse_parameter(p, ": building '" + building.name +
                                   "' is not a generated frame (Type = frame)");
           check_entry();
-          const bool fibre = std::any_of(model.members.begin(), model.members.end(),
-                                         [&](const Member &m) {
-                                           return m.building == p.building && m.fibre.fibre();
-                                         });
-          if (fibre && f.planar != &Section::mass_per_length)
-            refuse_parameter(p, ": building '" + building.name + "' is made of fibre members, "
-                                  "whose rigidities come from their sections (Sections/Section "
-                                  "k/Concrete strength, ...)");
         }
+      if (fibre && (p.variant == 1 ? f.spatial != &Section3D::mass_per_length :
+                                     f.planar != &Section::mass_per_length))
+        refuse_parameter(p, ": building '" + building.name + "' is made of fibre members, "
+                              "whose rigidities come from their sections (Sections/Section "
+                              "k/Concrete strength, ...)");
       p.touches = section_touches(f, p.variant == 1);
     }
 
@@ -269,7 +272,8 @@ namespace poundfe::section_registration
       try
         {
           model.section_laws[p.group] =
-            std::make_shared<const FibreSection>(sections.section(InputFile(), p.group, 2));
+            std::make_shared<const FibreSection>(
+              sections.section(InputFile(), p.group, model.section_resultants()));
         }
       catch (const InputError &e)
         {

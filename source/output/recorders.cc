@@ -354,37 +354,49 @@ namespace poundfe
     }
 
     /// At each integration point of the fibre members `chosen`: N, M, eps0,
-    /// kappa and the extreme fibre strains (output/section_limits.h).
+    /// kappa and the extreme fibre strains (output/section_limits.h); a
+    /// section in space names M and kappa about z and adds My and kappa_y.
     Series
     section_state_series(const NonlinearElements &elements, const std::vector<unsigned int> &chosen)
     {
-      constexpr unsigned int n_per_point = n_section_state_entries;
       std::vector<std::string> columns;
       std::vector<ColumnOwner> owners;
-      auto points = std::make_shared<std::vector<std::array<unsigned int, 2>>>(); // element, point
+      auto points = std::make_shared<std::vector<std::array<unsigned int, 3>>>(); // element, point, first column
       auto kinds  = std::make_shared<std::vector<std::vector<FibreKind>>>();
       for (const unsigned int h : chosen)
         for (unsigned int i = 0; fibre_section_of(elements[h], i) != nullptr; ++i)
           {
-            points->push_back({{h, i}});
-            kinds->push_back(fibre_kinds(fibre_section_of(elements[h], i)->geometry()));
+            const FibreSection &section = *fibre_section_of(elements[h], i);
+            const bool          space   = section.n_resultants() == 4;
+            points->push_back({{h, i, static_cast<unsigned int>(columns.size())}});
+            kinds->push_back(fibre_kinds(section.geometry()));
             const std::string at = elements[h].label + "_ip" + std::to_string(i + 1);
-            for (const char *c : {"_N_N", "_M_N_m", "_eps0", "_kappa_1_m", "_concrete_strain",
+            for (const char *c : {"_N_N", space ? "_Mz_N_m" : "_M_N_m", "_eps0",
+                                  space ? "_kappa_z_1_m" : "_kappa_1_m", "_concrete_strain",
                                   "_steel_strain_max", "_steel_strain_min"})
               columns.push_back(at + c);
-            owners.insert(owners.end(), n_per_point, ColumnOwner{Owner::element, h});
+            if (space)
+              for (const char *c : {"_My_N_m", "_kappa_y_1_m"})
+                columns.push_back(at + c);
+            owners.resize(columns.size(), ColumnOwner{Owner::element, h});
           }
+      const unsigned int n_columns = columns.size();
       return {columns,
-              [points, kinds](const ResponseView &s, std::vector<double> &to) {
-                to.assign(n_per_point * points->size(), 0); // another rank's: 0
+              [points, kinds, n_columns](const ResponseView &s, std::vector<double> &to) {
+                to.assign(n_columns, 0); // another rank's: 0
                 for (unsigned int p = 0; p < points->size(); ++p)
                   {
-                    const auto [h, i] = (*points)[p];
+                    const auto [h, i, first] = (*points)[p];
                     if (!s.observes_element(h))
                       continue;
-                    const SectionStateEntries row =
-                      section_state_entries(*fibre_section_of(s.elements[h], i), (*kinds)[p]);
-                    std::copy(row.begin(), row.end(), to.begin() + n_per_point * p);
+                    const FibreSection       &section = *fibre_section_of(s.elements[h], i);
+                    const SectionStateEntries row = section_state_entries(section, (*kinds)[p]);
+                    std::copy(row.begin(), row.end(), to.begin() + first);
+                    if (section.n_resultants() == 4) // (N, Mz, My, T), (eps0, kz, ky, theta)
+                      {
+                        to[first + row.size()]     = section.resultant()[2];
+                        to[first + row.size() + 1] = section.deformation()[2];
+                      }
                   }
               },
               owners};

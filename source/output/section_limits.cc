@@ -183,10 +183,14 @@ namespace poundfe
   const FibreSection *
   fibre_section_of(const NonlinearElement &element, const unsigned int i)
   {
-    const auto *member = dynamic_cast<const MemberElement<2> *>(&element);
-    return member && i < member->member().n_points() ?
-             dynamic_cast<const FibreSection *>(&member->member().section(i)) :
-             nullptr;
+    const auto at = [i](const auto *member) -> const FibreSection * {
+      return member && i < member->member().n_points() ?
+               dynamic_cast<const FibreSection *>(&member->member().section(i)) :
+               nullptr;
+    };
+    if (const auto *plane = dynamic_cast<const MemberElement<2> *>(&element))
+      return at(plane);
+    return at(dynamic_cast<const MemberElement<3> *>(&element));
   }
 
   BeamIntegration

@@ -102,8 +102,14 @@ namespace poundfe
   {
     using RowMajor = Eigen::Matrix<double, 12, Eigen::Dynamic, Eigen::RowMajor>;
     using Point3   = Eigen::Map<const Eigen::Vector3d>;
+    // the 3D fibre members' elements follow the plane ones
+    int next_member = std::count_if(member_elements.begin(), member_elements.end(),
+                                    [](const int e) { return e >= 0; });
     for (const Member3D &member : model.members_3d)
       {
+        const int element_index = member.fibre.fibre() ? next_member++ : -1;
+        if (element_index >= 0)
+          member_elements_3d++;
         const Building    &building = model.buildings[member.building];
         const double       z0 = member.ends[0][2], z1 = member.ends[1][2];
         const unsigned int lower = z0 < z1 ? 0 : 1;
@@ -122,6 +128,8 @@ namespace poundfe
               cut_member.equations.push_back(model.equation(dof));
             cut_member.forces = (element.stiffness() * t).middleRows<6>(6 * lower);
             cut_member.at     = {member.ends[lower][0], member.ends[lower][1]};
+            cut_member.lower          = lower;
+            cut_member.member_element = element_index;
             storeys[index(member.building, s)].members_3d.push_back(std::move(cut_member));
           }
       }
@@ -133,8 +141,8 @@ namespace poundfe
     // the hysteretic planes' elements follow the hinges and the storey links;
     // a pair of planes shares one bidirectional element, made at its first
     // (and the fibre members', first of all)
-    int next = std::count_if(member_elements.begin(), member_elements.end(),
-                             [](const int e) { return e >= 0; });
+    int next = member_elements_3d + std::count_if(member_elements.begin(), member_elements.end(),
+                                                  [](const int e) { return e >= 0; });
     next += model.hinges.size() + std::count_if(model.links.begin(), model.links.end(),
                                                    [](const StoreyLink &l) { return l.hysteretic; });
     std::vector<int> element_of(model.plane_links.size(), -1);
@@ -159,7 +167,10 @@ namespace poundfe
         Eigen::VectorXd q(m.equations.size());
         for (unsigned int k = 0; k < m.equations.size(); ++k)
           q[k] = m.equations[k] >= 0 ? u[m.equations[k]] : 0.0;
-        const Eigen::Matrix<double, 6, 1> f = m.forces * q;
+        const Eigen::Matrix<double, 6, 1> f =
+          m.member_element >= 0 ? Eigen::Matrix<double, 6, 1>(
+                                    fibre_member_forces_3d(m.member_element).segment<6>(6 * m.lower)) :
+                                  Eigen::Matrix<double, 6, 1>(m.forces * q);
         V[0] -= f[0];
         V[1] -= f[1];
         V[2] -= (m.at.x - storey.centre.x) * f[1] - (m.at.y - storey.centre.y) * f[0] + f[5];
@@ -262,6 +273,14 @@ namespace poundfe
   StoreyForces::fibre_member_forces(const int e) const
   {
     const auto *member = dynamic_cast<const MemberElement<2> *>(&nonlinear[e]);
+    Assert(member, dealii::ExcMessage("a fibre member's element is a MemberElement"));
+    return member->member().resisting_force();
+  }
+
+  Eigen::Matrix<double, 12, 1>
+  StoreyForces::fibre_member_forces_3d(const int e) const
+  {
+    const auto *member = dynamic_cast<const MemberElement<3> *>(&nonlinear[e]);
     Assert(member, dealii::ExcMessage("a fibre member's element is a MemberElement"));
     return member->member().resisting_force();
   }

@@ -10,6 +10,9 @@
 //     PDelta, corotational: B changes with u, so B_e = I over the member's
 //       DOFs and D_e = K_t - K_ref,e (rank 6 or 12), the only constant
 //       basis the interface allows.
+// A member of a 3D frame moves with its joints' DOFs through u_e = T q (the
+// rigid diaphragm's master-slave map, model/frame_3d_assembler.h): over
+// the model DOFs q its force is T^T p, its basis T^T B_e, D_e unchanged.
 // The member has no rate dependence (C_t = 0): damping is the model's
 // Rayleigh or modal C. Its work is trapezoidal, its stored energy what
 // unloading the sections at their initial stiffness recovers, so the
@@ -52,8 +55,12 @@ namespace poundfe
                   std::unique_ptr<BeamColumn<dim>> member,
                   ReferenceStiffness reference_stiffness = ReferenceStiffness::initial,
                   ElementKind        kind                = ElementKind::hinge);
+    /// On model DOFs q with u_e = `map` q (n_dofs x equations.size()).
+    MemberElement(unsigned int building, std::string label, std::vector<int> equations,
+                  Eigen::MatrixXd map, std::unique_ptr<BeamColumn<dim>> member);
 
-    /// K_ref,e: what the linear K must hold for this member.
+    /// K_ref,e: what the linear K must hold for this member (over its end
+    /// DOFs u_e).
     const GlobalMatrix &reference_stiffness() const { return reference; }
     const BeamColumn<dim> &member() const { return *beam; }
 
@@ -81,11 +88,14 @@ namespace poundfe
 
   private:
     bool linear() const { return beam->transformation().kind() == Transformation::linear; }
+    /// u_e of the element's DOFs q.
+    GlobalVector end_displacements(const Eigen::Ref<const Eigen::VectorXd> &u) const;
 
     std::unique_ptr<BeamColumn<dim>> beam;
     GlobalMatrix                     reference;
     typename BeamColumn<dim>::BasicMatrix reference_basic;
     GlobalVector                     committed_force, committed_u;
+    Eigen::MatrixXd                  map; // T; empty: u_e = q
   };
 
   /// The beam-column of a fibre member of a 2D frame (Member::fibre):
@@ -94,6 +104,12 @@ namespace poundfe
   std::unique_ptr<BeamColumn<2>> make_beam_column(const Model &model, const Member &member);
   /// Its element on the equations of its nodes' (ux, uy, rz), kind member.
   std::unique_ptr<MemberElement<2>> make_member_element(const Model &model, const Member &member);
+  /// The beam-column of a fibre member of a 3D frame (Member3D::fibre),
+  /// its local axes by the member's orientation.
+  std::unique_ptr<BeamColumn<3>> make_beam_column(const Model &model, const Member3D &member);
+  /// Its element on the model DOFs it moves with (Member3D::dofs, map).
+  std::unique_ptr<MemberElement<3>> make_member_element(const Model &model,
+                                                        const Member3D &member);
 
   /// The plane member's mass: mass per length m, the frame element's matrix.
   Eigen::Matrix<double, 6, 6> member_mass(const CrdTransformation<2> &transformation,

@@ -78,10 +78,11 @@ namespace poundfe
     void make_free_joint(FrameJoint3D &joint);
     /// A member from ends[0] to ends[1] with local x-z plane through
     /// `orientation`, of `kind`, hinge group `group`, labelled
-    /// "<building>_<label>" (columns: ends[0] the bottom).
+    /// "<building>_<label>" (columns: ends[0] the bottom); `fibre`: its
+    /// beam-column on a fibre section (Member model = fibre).
     void add_member(const std::array<const FrameJoint3D *, 2> &ends,
                     const Eigen::Vector3d &orientation, const Section3D &section, MemberKind kind,
-                    unsigned int group, const std::string &label);
+                    unsigned int group, const std::string &label, const FibreMember &fibre = {});
 
   private:
     Model                    &model;

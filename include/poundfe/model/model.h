@@ -205,6 +205,10 @@ namespace poundfe
     std::string                          label;
     std::vector<unsigned int>            dofs;
     std::vector<double>                  map;
+    /// A fibre member: `section` then holds the initial rigidities of its
+    /// fibre section (E = G = 1, A = EA, Iz = EIz, Iy = EIy, J = GJ, no
+    /// shear areas) and its mass per length.
+    FibreMember                          fibre;
   };
 
   /// A Bouc-Wen hinge of a 3D member end about one local bending axis: its
@@ -497,6 +501,9 @@ namespace poundfe
     /// members name (FibreMember::section); null where none does. Shared:
     /// each member clones its own sections from them.
     std::vector<std::shared_ptr<const SectionLaw>> section_laws;
+    /// The resultants of those sections: (N, Mz) in the plane, (N, Mz, My,
+    /// T) in space.
+    unsigned int section_resultants() const { return dimension == 3 ? 4 : 2; }
     MassMatrixType          mass_matrix = MassMatrixType::lumped;
     GeometricNonlinearity   geometric_nonlinearity = GeometricNonlinearity::none;
     double                  gravity                = 9.81; // m/s^2, for P-Delta

@@ -17,8 +17,16 @@ namespace poundfe
                     const InputFile &input, const SpringParameters &springs = {},
                     const FrictionParameters &friction = {});
 
-  /// Member::section of every fibre member from its section law's initial
-  /// tangent (E = 1, A = EA, I = EI): what reads a member elastically.
+  /// Member model = fibre: the beam-column of the columns of storey
+  /// `storey` (0-based) or the beams of its floor on their Sections entry
+  /// (none for another member model). PDelta columns with
+  /// Member transformation = PDelta, or auto and a gravity analysis.
+  FibreMember fibre_member(const Model &model, const BuildingParameters &p,
+                           unsigned int storey, bool column);
+
+  /// Member::section and Member3D::section of every fibre member from its
+  /// section law's initial tangent (E = 1, A = EA, I = EI; in space also
+  /// G = 1, J = GJ): what reads a member elastically.
   void set_fibre_rigidities(Model &model);
 
   /// The building (0-based) that the field `token` of `entry` names: its

@@ -19,9 +19,9 @@ namespace poundfe
 {
   class NonlinearElement;
 
-  /// The fibre section at integration point i of a plane member element
-  /// (elements/member_element.h); nullptr: not a member on fibre sections,
-  /// or no point i.
+  /// The fibre section at integration point i of a member element, plane
+  /// or in space (elements/member_element.h); nullptr: not a member on
+  /// fibre sections, or no point i.
   const FibreSection *fibre_section_of(const NonlinearElement &element, unsigned int i);
 
   /// The places along a fibre member of its integration points: the rule

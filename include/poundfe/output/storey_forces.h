@@ -71,12 +71,15 @@ namespace poundfe
       int                member_element = -1; // a fibre member's element (its forces)
     };
     /// A 3D member crossing a cut: the global forces (fx, fy, fz, mx, my,
-    /// mz) at its lower end are `forces` times its model DOFs' values.
+    /// mz) at its lower end are `forces` times its model DOFs' values, or
+    /// a fibre member's element's end forces there.
     struct CutMember3D
     {
       std::vector<int>                        equations; // of its model DOFs; -1: fixed
       Eigen::Matrix<double, 6, Eigen::Dynamic> forces;
       Point2                                  at; // the lower end in plan
+      unsigned int                            lower          = 0;
+      int                                     member_element = -1;
     };
     struct Storey
     {
@@ -99,6 +102,10 @@ namespace poundfe
     std::vector<int> member_elements;
     /// The global end forces of fibre member element `e`, as it is now.
     Vector6 fibre_member_forces(int e) const;
+    /// The same of a 3D fibre member (its 12 global end forces).
+    Eigen::Matrix<double, 12, 1> fibre_member_forces_3d(int e) const;
+    /// How many 3D fibre members' elements follow the plane ones.
+    int member_elements_3d = 0;
     std::vector<unsigned int> first;
     std::vector<Storey>       storeys;
   };
