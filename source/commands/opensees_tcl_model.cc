@@ -475,9 +475,12 @@ namespace poundfe
             w.word("damage");
             p.values["damage"] = 1;
           }
-        // every parameter is a number: a word where one is due is not an option
-        if (!w.done())
+        // a word where a number may still follow is a bad number, not an option
+        const std::size_t most = syntax ? syntax->counts.back() : 17;
+        if (!w.done() && values.size() < most)
           throw ScriptError("'" + w.peek() + "' is not a number");
+        if (!w.done())
+          unsupported("uniaxialMaterial " + type + " option '" + w.peek() + "'");
         if (type == "Hysteretic")
           p = hysteretic_parameters(values);
         else
