@@ -79,11 +79,18 @@ CASES = {
     "pounding_JankowskiImpact": ("pounding_sticks.tcl", ["JankowskiImpact"], 1e-8),
     "pounding_ViscoelasticGap": ("pounding_sticks.tcl", ["ViscoelasticGap"], 1e-9),
     "pounding_Viscous": ("pounding_sticks.tcl", ["Viscous"], 1e-9),
-    # Parallel (an ElasticPPGap and a ViscoelasticGap, factors 0.5: no damping
-    # tangent, as OpenSees 3.8's ParallelMaterial; both stop at 3.31 s under
-    # Newton) and MinMax (an ImpactMaterial failing for good in its third impact)
+    # Parallel (an ElasticPPGap and a ViscoelasticGap, factors 0.5: both stop
+    # at 3.31 s under Newton; an ElasticPPGap and a Viscous, whose damping
+    # tangent times its factor is the Parallel's, as OpenSees 3.8's
+    # ParallelMaterial's, which zeroLength adds to its damping matrix) and
+    # MinMax (an ImpactMaterial failing for good in its third impact)
     "pounding_Parallel": ("pounding_sticks.tcl", ["Parallel"], 1e-9),
+    "pounding_ParallelViscous": ("pounding_sticks.tcl", ["ParallelViscous"], 1e-9),
     "pounding_MinMax": ("pounding_sticks.tcl", ["MinMax"], 1e-9),
+    # ElasticPPGap with Fy > 0 and gap < 0: strain 0 is past the yield strain,
+    # yet the virgin elastic range stays [gap, Fy/E + gap] (OpenSees 3.8's
+    # constructor, with its warning on the alternate signs)
+    "pounding_ElasticPPGapSigns": ("pounding_sticks.tcl", ["ElasticPPGapSigns"], 1e-9),
     # OpenSees's BoucWen storey (its backward Euler and Newton for z from
     # 0.01), with and without Baber-Noori degradation
     "bouc_wen_storey": ("bouc_wen_storey.tcl", [], 1e-9),

@@ -360,6 +360,35 @@ namespace poundfe
         return syntaxes;
       }
 
+      /// OpenSees's usage line: "Name tag p1 p2 <p3 <p4>>", the optional
+      /// parameters nested by the counts the material takes.
+      std::string
+      usage_of(const MaterialSyntax &m)
+      {
+        std::string text = std::string(m.name) + " tag";
+        std::size_t i = 0, open = 0;
+        for (const std::size_t count : m.counts)
+          {
+            if (i > 0)
+              text += " <", ++open;
+            for (; i < count; ++i)
+              text += (text.back() == '<' ? "" : " ") + std::string(m.parameters[i]);
+          }
+        if (std::string(m.name) == "ElasticPPGap")
+          text += " <damage>";
+        return text + std::string(open, '>');
+      }
+
+      /// OpenSees's EPPGapMaterial takes Fy and gap of opposite signs with a
+      /// warning (and strain 0 then past the yield strain): so does poundfe.
+      void
+      warn_eppgap_signs(std::ostream &warnings, const MaterialParameters &p)
+      {
+        if (p.values.at("Fy") * p.values.at("gap") < 0)
+          warnings << "EPPGapMaterial::EPPGapMaterial -- Alternate signs on fy and gap "
+                      "encountered, continuing anyway\n";
+      }
+
       /// Hysteretic: s1p e1p s2p e2p <s3p e3p> s1n e1n s2n e2n <s3n e3n>
       /// pinchX pinchY damage1 damage2 <beta>.
       MaterialParameters
@@ -428,18 +457,8 @@ namespace poundfe
             d.combined_materials.emplace(tag, combined_material(d, type, w));
             return;
           }
-        std::vector<double> values = w.numbers("a parameter");
-        MaterialParameters  p{type, {}};
-        if (type == "ElasticPPGap" && w.peek() == "damage")
-          {
-            w.word("damage");
-            p.values["damage"] = 1;
-          }
-        if (!w.done())
-          unsupported("uniaxialMaterial " + type + " option '" + w.peek() + "'");
-        if (type == "Hysteretic")
-          p = hysteretic_parameters(values);
-        else
+        const MaterialSyntax *syntax = nullptr;
+        if (type != "Hysteretic")
           {
             const auto &all = material_syntaxes();
             const auto  it  = std::find_if(all.begin(), all.end(), [&](const MaterialSyntax &m) {
@@ -447,10 +466,33 @@ namespace poundfe
             });
             if (it == all.end())
               unsupported("uniaxialMaterial " + type);
-            if (std::find(it->counts.begin(), it->counts.end(), values.size()) == it->counts.end())
-              throw ScriptError(type + " does not take " + text_of(values.size()) + " values");
+            syntax = &*it;
+          }
+        const std::vector<double> values = w.numbers("a parameter");
+        MaterialParameters        p{type, {}};
+        if (type == "ElasticPPGap" && w.peek() == "damage")
+          {
+            w.word("damage");
+            p.values["damage"] = 1;
+          }
+        // a word where a number may still follow is a bad number, not an option
+        const std::size_t most = syntax ? syntax->counts.back() : 17;
+        if (!w.done() && values.size() < most)
+          throw ScriptError("'" + w.peek() + "' is not a number");
+        if (!w.done())
+          unsupported("uniaxialMaterial " + type + " option '" + w.peek() + "'");
+        if (type == "Hysteretic")
+          p = hysteretic_parameters(values);
+        else
+          {
+            const auto &counts = syntax->counts;
+            if (std::find(counts.begin(), counts.end(), values.size()) == counts.end())
+              throw ScriptError(type + " does not take " + text_of(values.size()) +
+                                " values: want uniaxialMaterial " + usage_of(*syntax));
             for (std::size_t i = 0; i < values.size(); ++i)
-              p.values[it->parameters[i]] = values[i];
+              p.values[syntax->parameters[i]] = values[i];
+            if (type == "ElasticPPGap")
+              warn_eppgap_signs(s.warnings, p);
           }
         make_material(p); // the law's own checks, now at the script's line
         if (!d.materials.emplace(tag, p).second)

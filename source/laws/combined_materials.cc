@@ -49,6 +49,12 @@ namespace poundfe
   }
 
   double
+  ParallelUniaxial::damping_tangent() const
+  {
+    return sum([](const UniaxialLaw &l) { return l.damping_tangent(); });
+  }
+
+  double
   ParallelUniaxial::stored_energy() const
   {
     return sum([](const UniaxialLaw &l) { return l.stored_energy(); });

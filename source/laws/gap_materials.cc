@@ -14,7 +14,9 @@
 //   `damage`, committing gap < eps < e_min moves it back to
 //   [eps, (eps - eta gap)/(1 - eta) + Fy/E]. OpenSees updates the range in
 //   commitState; here the trial state carries the range its commit would
-//   leave, the same committed history.
+//   leave, the same committed history. The virgin state has the stress and
+//   tangent at strain 0 and the range [gap, Fy/E + gap] even when strain 0
+//   lies outside it (Fy and gap of opposite signs), as OpenSees's constructor.
 //
 // ImpactMaterial (Muthukumar and DesRoches 2006, Earthquake Engng Struct.
 //   Dyn. 35: 811-828; OpenSees ImpactMaterial): gap < 0, Delta_y < 0; with
@@ -77,10 +79,15 @@ namespace poundfe
   GapMaterialState
   ElasticPPGap::virgin() const
   {
+    // OpenSees's constructor takes the stress and tangent at strain 0 but
+    // commits no range: with Fy and gap of opposite signs strain 0 is past
+    // the yield strain, and the virgin range must stay [gap, Fy/E + gap].
     GapMaterialState s;
-    s.min_elastic = gap;
-    s.max_elastic = Fy / E + gap;
-    s             = respond(s, 0.0);
+    s.min_elastic               = gap;
+    s.max_elastic               = Fy / E + gap;
+    const GapMaterialState at_0 = respond(s, 0.0);
+    s.stress                    = at_0.stress;
+    s.tangent                   = at_0.tangent;
     return s;
   }
 

@@ -8,7 +8,9 @@
 #     options, `exit` with the recorders' files in place;
 #  3. bad input: an unknown command, an unsupported option, a node that does
 #     not exist, a script error, a Parallel of a missing material or with a
-#     factor short, an unknown MinMax option, a Hertzdamp short of values, a
+#     factor short, an unknown MinMax option, a Hertzdamp short of values
+#     (OpenSees's usage line) or with a word for a number, a Steel02 with 5
+#     values, a word after ElasticPPGap's values, a
 #     BoucWen with ko < 0: one line naming the file and line, exit 1, no
 #     recorder file left.
 #   opensees.sh POUNDFE CORPUS_DIR PYTHON3
@@ -181,7 +183,22 @@ printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial Parallel 2 1 1 -factors
 printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial MinMax 2 1 -cap 1.0\n' \
   | bad minmax-option "6: uniaxialMaterial MinMax option '-cap': poundfe does not support it" || exit 1
 printf 'uniaxialMaterial Hertzdamp 1 1.0e9\n' \
-  | bad hertzdamp-count '5: uniaxialMaterial: Hertzdamp does not take 1 values' || exit 1
+  | bad hertzdamp-count '5: uniaxialMaterial: Hertzdamp does not take 1 values: want uniaxialMaterial Hertzdamp tag Kh xiNorm gap <n>' || exit 1
+printf 'uniaxialMaterial Hertzdamp 10 2.0e7 abc -0.01\n' \
+  | bad hertzdamp-word "5: uniaxialMaterial: 'abc' is not a number" || exit 1
+printf 'uniaxialMaterial Steel02 1 1.0e9 2.0e11 0.01 20.0 0.9\n' \
+  | bad steel02-count '5: uniaxialMaterial: Steel02 does not take 5 values: want uniaxialMaterial Steel02 tag fy E0 b <R0 cR1 cR2 <a1 a2 a3 a4>>' || exit 1
+printf 'uniaxialMaterial ElasticPPGap 1 1.0e9 1.0 -0.1 0.1 dam\n' \
+  | bad eppgap-option "5: uniaxialMaterial ElasticPPGap option 'dam': poundfe does not support it" || exit 1
 printf 'uniaxialMaterial BoucWen 1 0.1 -1.0 2.0 1.0 1.0 1.0 0.0 0.0 0.0\n' \
   | bad bouc-wen-ko "5: uniaxialMaterial: parameter 'ko': BoucWen: must be a positive number (got -1)" || exit 1
+# 4. OpenSees's warning on an ElasticPPGap with Fy and gap of opposite signs,
+#    which it takes (its numbers: tests/opensees/reference/pounding_ElasticPPGapSigns)
+mkdir -p "$work/eppgap-signs"
+printf 'model basic -ndm 1 -ndf 1\nuniaxialMaterial ElasticPPGap 1 4.0e6 6.0e3 -0.004\n' \
+  > "$work/eppgap-signs/s.tcl"
+"$poundfe" opensees "$work/eppgap-signs/s.tcl" > /dev/null 2> "$work/eppgap-signs/err" \
+  || { cat "$work/eppgap-signs/err"; fail "eppgap-signs: exit status"; }
+grep -qxF "EPPGapMaterial::EPPGapMaterial -- Alternate signs on fy and gap encountered, continuing anyway" \
+  "$work/eppgap-signs/err" || { cat "$work/eppgap-signs/err"; fail "eppgap-signs: no warning"; }
 echo "opensees: ok"

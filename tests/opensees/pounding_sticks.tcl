@@ -48,6 +48,12 @@ switch -- $law {
         uniaxialMaterial ViscoelasticGap 5 2.0e9 4.0e6 -0.01
         uniaxialMaterial Parallel 3 4 5 -factors 0.5 0.5
     }
+    ParallelViscous {
+        uniaxialMaterial ElasticPPGap 4 2.0e9 -4.0e6 -0.01 0.1 damage
+        uniaxialMaterial Viscous 5 2.0e6 0.8
+        uniaxialMaterial Parallel 3 4 5 -factors 1.0 0.7
+    }
+    ElasticPPGapSigns { uniaxialMaterial ElasticPPGap 3 2.0e9 2.0e5 -0.01 }
     MinMax {
         uniaxialMaterial ImpactMaterial 4 2.0e9 6.0e8 -0.002 -0.01
         uniaxialMaterial MinMax 3 4 -min -0.014

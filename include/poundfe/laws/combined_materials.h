@@ -3,9 +3,10 @@
 // OpenSees's numbers:
 //
 // Parallel (ParallelMaterial): every component at the same strain and rate;
-//   sigma = sum f_i sigma_i, tangent sum f_i E_i (f_i = 1 without -factors).
-//   OpenSees 3.8's ParallelMaterial has no damping tangent (getDampTangent is
-//   UniaxialMaterial's 0), whatever its components have: so has this one.
+//   sigma = sum f_i sigma_i, tangent sum f_i E_i, damping tangent
+//   sum f_i eta_i (f_i = 1 without -factors), as ParallelMaterial's
+//   getDampTangent, which zeroLength adds to its damping matrix when it is
+//   given no -doRayleigh 1.
 // MinMax (MinMaxMaterial): the component while min < eps < max; a trial
 //   outside fails the material (stress 0, tangent 1e-8 times the
 //   component's initial tangent, damping tangent 0), and a committed failure
@@ -30,6 +31,7 @@ namespace poundfe
     std::string failure() const override { return why; }
     double      force() const override;
     double      tangent() const override;
+    double      damping_tangent() const override;
     double      stored_energy() const override;
     double      initial_stiffness() const override;
     void        commit() override;
