@@ -58,12 +58,27 @@ namespace poundfe
       return text;
     }
 
+    /// The entry "set" on line `line` of the parameter file (empty when
+    /// none is: a JSON file, a line of an included file).
+    std::string
+    entry_on_line(const InputFile &p, const int line)
+    {
+      if (line > 0)
+        for (const auto &[path, at] : p.lines)
+          if (at == line)
+            return path;
+      return "";
+    }
+
     /// deal.II's messages carry "Line <n> of file <f>:" (sometimes without
     /// the closing '>'): turn them into ours, blaming file f, which is an
-    /// included file when the error is in one.
+    /// included file when the error is in one, and naming the entry set on
+    /// that line of the parameter file (a value its pattern refuses), so
+    /// that a caller can say where the entry was set (Python's Model).
     [[noreturn]] void
-    rethrow_parse_error(const std::string &file, const dealii::ExceptionBase &e)
+    rethrow_parse_error(const InputFile &p, const dealii::ExceptionBase &e)
     {
+      const std::string &file = p.file;
       std::ostringstream info;
       e.print_info(info);
       std::string       text = collapse_whitespace(info.str());
@@ -87,7 +102,9 @@ namespace poundfe
         }
       if (text.empty())
         text = collapse_whitespace(e.what());
-      throw InputError(blamed.empty() ? file : blamed, line, "", plain_patterns(text));
+      const bool here = blamed.empty() || blamed == file;
+      throw InputError(here ? file : blamed, line, here ? entry_on_line(p, line) : "",
+                       plain_patterns(text));
     }
 
     /// An override's path taken apart: "A/B/Entry:k" is sections {A, B},
@@ -198,7 +215,7 @@ namespace poundfe
         }
       catch (const dealii::ExceptionBase &e)
         {
-          rethrow_parse_error(p.file, e);
+          rethrow_parse_error(p, e);
         }
       for (const ParameterOverride &o : overrides)
         apply_override(prm, p, o, skip_undefined);

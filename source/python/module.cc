@@ -226,6 +226,16 @@ namespace poundfe::python
           "time_step", [](const InputParameters &p) { return p.time_integration.newmark.time_step; })
         .def_property_readonly("output_directory",
                                [](const InputParameters &p) { return p.output.directory; })
+        .def_property_readonly(
+          "input_files",
+          [](const InputParameters &p) {
+            std::vector<std::pair<std::string, std::string>> files;
+            for (const NamedInputFile &f : named_input_files(p))
+              files.emplace_back(f.entry, f.name);
+            return files;
+          },
+          "The files the input names: (entry, name as written) pairs, e.g. "
+          "('IDA/Suite', 'recs/suite.csv'); a name is relative to `directory`.")
         .def_property_readonly("values",
                                [](const InputParameters &p) { return p.values; },
                                "Every entry as read (defaults included): (path, text) pairs "

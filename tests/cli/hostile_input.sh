@@ -106,7 +106,7 @@ expect 1 "expected 'building floor left|right gap'" modal barrier.prm --output o
 barrier '1 1x right 0.015' > barrier.prm
 expect 1 "expected 'building floor left|right gap'" modal barrier.prm --output out
 shear '  set Storey heights = 3, 1e-2x' > list.prm
-expect 1 "list.prm:6: The entry value 3, 1e-2x for the entry named Storey heights does not match the given pattern: a comma-separated list of numbers" modal list.prm --output out
+expect 1 "list.prm:6: parameter 'Building 1/Storey heights': The entry value 3, 1e-2x for the entry named Storey heights does not match the given pattern: a comma-separated list of numbers" modal list.prm --output out
 shear > force.prm
 printf 'subsection Time integration\n  set End time = 0.01\nend\n' >> force.prm
 printf 'subsection Nodal forces\n  set Harmonic = 1 1 0 ux 100 6.28 0.5rad\nend\n' >> force.prm

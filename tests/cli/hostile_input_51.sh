@@ -53,7 +53,7 @@ expect 1 "parameter 'Initial conditions/Floor displacements': building 'B1' is g
 { shear; printf 'subsection Initial conditions\n  set Equation velocities = 0 = 0.1; 2 = 0; 0 = 0.2\nend\n'; } > equations-twice.prm
 expect 1 "parameter 'Initial conditions/Equation velocities': equation 0 is given twice" run equations-twice.prm --output out
 { shear; printf 'subsection Ground motion\n  set Type = kanai-tajimi\n  subsection Stochastic\n    set Realization = -5\n  end\nend\n'; } > realization.prm
-expect 1 "realization.prm:15: The entry value -5 for the entry named Realization does not match" ground-motion realization.prm --output out
+expect 1 "realization.prm:15: parameter 'Ground motion/Stochastic/Realization': The entry value -5 for the entry named Realization does not match" ground-motion realization.prm --output out
 python3 - "$source/meshes/setback.msh" <<'PY' > twin.msh
 import sys
 s = open(sys.argv[1]).read()

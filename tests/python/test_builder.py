@@ -107,6 +107,63 @@ class WithoutFiles(TestCase):
         self.assertPointsAtTheCall(caught)
 
 
+class PatternErrors(TestCase):
+    """A value the entry's pattern refuses (NaN, text for a number, an
+    infinite step) is named by its whole entry path and the caller's line,
+    as a range check's error is."""
+
+    def assertNamed(self, model, parameter, call=lambda model: model.input()):
+        with self.assertRaises(poundfe.InputError) as caught:
+            call(model)
+        error = caught.exception
+        self.assertEqual(error.parameter, parameter)
+        self.assertIn(f"parameter '{parameter}'", str(error))
+        self.assertIn("does not match", str(error))
+        self.assertTrue(error.origin.startswith(os.path.abspath(__file__) + ":"), error.origin)
+        self.assertIn(f"(set at {error.origin})", str(error))
+        self.assertEqual(error.file, "model.prm")
+
+    def test_nan_text_and_infinity(self):
+        model = poundfe.Model.from_file(EXAMPLE)
+        model.add_building(name="C", type="shear", number_of_storeys=1, storey_heights=3.0,
+                           floor_masses=5000, storey_stiffnesses=np.array([np.nan]))
+        self.assertNamed(model, "Building 3/Storey stiffnesses")
+        self.assertNamed(model, "Building 3/Storey stiffnesses", poundfe.modal)
+        model = poundfe.Model.from_file(EXAMPLE).set("Contact", stiffness="stiff")
+        self.assertNamed(model, "Contact/Stiffness")
+        model = poundfe.Model.from_file(EXAMPLE).set("Time integration", time_step=float("inf"))
+        self.assertNamed(model, "Time integration/Time step", poundfe.spectrum)
+
+
+class RelativeFiles(TestCase):
+    """A Model's relative file names are taken against the working directory
+    also by a command, which reads the model from a temporary file: the
+    names the reader finds (Input.input_files) are written absolute, in the
+    text and in the overrides."""
+
+    IDA = "tests/cli/ida/ida-small.prm"
+    SHORT = {"MSA/Intensities": 0.2, "MSA/Cloud": False}
+
+    def test_suite_relative_to_the_working_directory(self):
+        model = poundfe.Model.from_file(self.IDA).set("IDA", suite="tests/cli/ida/suite.csv")
+        self.assertIn(("IDA/Suite", "tests/cli/ida/suite.csv"), model.input().input_files)
+        self.assertGreater(len(poundfe.msa(model, overrides=self.SHORT).msa), 0)
+        model = poundfe.Model.from_file(self.IDA)
+        self.assertTrue(os.path.isabs(model.sections["IDA"]["Suite"]))
+        overrides = dict(self.SHORT, **{"IDA/Suite": "tests/cli/ida/suite.csv"})
+        self.assertGreater(len(poundfe.msa(model, overrides=overrides).msa), 0)
+
+    def test_every_named_file_field(self):
+        sections = {"Nodal forces": {"Tabulated": "1 2 0 0 f.csv; 2 1 0 0 /abs/g.csv"},
+                    "Ground motion": {"Record": {"File": "r.AT2"}}}
+        files = [("Nodal forces/Tabulated", "f.csv"), ("Nodal forces/Tabulated", "/abs/g.csv"),
+                 ("Ground motion/Record/File", "r.AT2")]
+        out = poundfe.model.absolute_files(sections, files, "/base")
+        self.assertEqual(out["Nodal forces"]["Tabulated"], "1 2 0 0 /base/f.csv; 2 1 0 0 /abs/g.csv")
+        self.assertEqual(out["Ground motion"]["Record"]["File"], "/base/r.AT2")
+        self.assertEqual(sections["Ground motion"]["Record"]["File"], "r.AT2")  # a copy
+
+
 class FromFileAndWrite(TestCase):
     def test_model_from_file_is_the_same_input(self):
         original = poundfe.read(EXAMPLE)

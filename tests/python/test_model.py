@@ -75,7 +75,8 @@ class ModelInPython(TestCase):
         with self.assertRaisesRegex(poundfe.InputError, "Building 1/Floor masses") as caught:
             model.input()
         self.assertTrue(caught.exception.file.endswith("model.prm"))
-        with self.assertRaisesRegex(poundfe.InputError, r"model\.prm:\d+: No entry with name <Colour>"):
+        with self.assertRaisesRegex(poundfe.InputError, r"model\.prm:\d+: parameter "
+                                    r"'Building 1/Colour': No entry with name <Colour>"):
             bad = two_buildings()
             bad.buildings[0]["Colour"] = "red"
             bad.input()

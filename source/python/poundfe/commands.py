@@ -18,6 +18,7 @@ import shutil
 import tempfile
 
 from . import _core
+from .model import absolute_overrides
 from .results import Table, _pandas, dataframe_of, memory_table, read_csv, read_csv_text, read_npy
 
 # The Python name of each command of item: its name on the command line.
@@ -116,18 +117,21 @@ class CommandResult:
         return f"<poundfe.CommandResult {self.command} {self.status}: {', '.join(self.tables)}>"
 
 
-def _file_and_overrides(model, overrides, scratch):
+def _file_and_overrides(model, overrides, scratch, read):
     """The parameter file the dispatcher reads and the (path, text)
     overrides: a file name as it is, an Input's file and overrides (then
-    `overrides`), a Model written into `scratch`."""
+    `overrides`), a Model written into `scratch` (`read`: its Input, whose
+    relative file names, in the text and in the overrides, are made
+    absolute against the working directory, as the reader took them)."""
     from . import Input, Model, _override_pairs
     pairs = _override_pairs(overrides)
     if isinstance(model, Input):
         return model.file, list(model.overrides) + pairs
     if isinstance(model, Model):
         path = os.path.join(scratch, "model.prm")
-        model.absolute().write(path)
-        return path, pairs
+        with open(path, "w") as f:
+            f.write(model.absolute_text(read))
+        return path, absolute_overrides(pairs, read.input_files, os.getcwd())
     return os.fspath(model), pairs
 
 
@@ -146,8 +150,8 @@ def run_command(name, model, output=None, realizations=None, overrides=None):
     output=, a command that can leaves its results in memory: no result
     file (a Model's parameter file alone, in a temporary directory)."""
     from . import InputError, _engine
-    if _is_model(model):  # its bad values named at the caller's line, before any file
-        model.input(overrides)
+    # a Model's bad values named at the caller's line, before any file
+    read = model.input(overrides) if _is_model(model) else None
     kept = output is not None
     in_memory = not kept and _core.in_memory(name)
     # a temporary directory only for what must be a file: a Model's
@@ -155,7 +159,7 @@ def run_command(name, model, output=None, realizations=None, overrides=None):
     scratch = tempfile.mkdtemp(prefix="poundfe-") if _is_model(model) or not (kept or in_memory) \
         else None
     try:
-        file, pairs = _file_and_overrides(model, overrides, scratch)
+        file, pairs = _file_and_overrides(model, overrides, scratch, read)
         if in_memory:
             with _engine():
                 raw = _core.command_in_memory(name, [file], realizations or 0, pairs)

@@ -192,21 +192,46 @@ def _paths(entries, prefix):
             yield f"{prefix}/{name}"
 
 
-# Entries that name a file: made absolute (against the working directory,
-# or the directory of the file a model was read from) when written
-# elsewhere.
-_FILE_ENTRIES = ("File", "Mesh file", "Catalogue file")
+def _absolute_name(text, name, path):
+    """`text` (an entry's value) with `name` as a whole field (between blanks,
+    commas or semicolons: a tabulated force's file among its numbers)
+    replaced by `path`."""
+    return re.sub(r"(?<![^\s,;])" + re.escape(name) + r"(?![^\s,;])", lambda _: path, text)
 
 
-def absolute_files(sections, base):
-    out = {}
-    for name, value in sections.items():
-        if isinstance(value, dict):
-            out[name] = absolute_files(value, base)
-        elif name in _FILE_ENTRIES and isinstance(value, str) and value and not os.path.isabs(value):
-            out[name] = os.path.join(base, value)
-        else:
-            out[name] = value
+def absolute_files(sections, files, base):
+    """A copy of `sections` (nested dicts) in which each relative file name
+    of `files` ((entry, name) pairs: Input.input_files, every file the
+    reader found named) is made absolute against `base` (the working
+    directory, or the directory of the file a model was read from), so the
+    text reads the same files wherever it is written."""
+    out = {name: absolute_files(value, (), base) if isinstance(value, dict) else value
+           for name, value in sections.items()}
+    for entry, name in files:
+        if os.path.isabs(name):
+            continue
+        *parts, key = entry.split("/")
+        target = out
+        for part in parts:
+            target = target.get(part) if isinstance(target, dict) else None
+        if isinstance(target, dict) and key in target:
+            target[key] = _absolute_name(_value_text(target[key]), name,
+                                         os.path.abspath(os.path.join(base, name)))
+    return out
+
+
+def absolute_overrides(pairs, files, base):
+    """(path, text) overrides with the relative file names `files` names
+    for their entries made absolute against `base`."""
+    named = {}
+    for entry, name in files:
+        if not os.path.isabs(name):
+            named.setdefault(entry, []).append(name)
+    out = []
+    for path, text in pairs:
+        for name in named.get(path, []):
+            text = _absolute_name(text, name, os.path.abspath(os.path.join(base, name)))
+        out.append((path, text))
     return out
 
 
@@ -230,7 +255,7 @@ class Model:
     def from_input(cls, input):
         """The model of an Input (its entries that differ from their
         defaults, file names made absolute)."""
-        sections = absolute_files(nested(given_values(input.values)),
+        sections = absolute_files(nested(given_values(input.values)), input.input_files,
                                   input.directory or os.getcwd())
         model = cls()
         n = int(sections.get("Model", {}).pop("Number of buildings", 0))
@@ -274,39 +299,44 @@ class Model:
         """The Ground motion section, e.g. type="record", record={"File": ...}."""
         return self.set("Ground motion", entries, **keywords)
 
-    def text(self):
-        """The .prm text."""
+    def _all_sections(self):
+        """Every section as a parameter file holds them (buildings numbered)."""
         sections = {"Model": {"Number of buildings": len(self.buildings),
                               **self.sections["Model"]}}
         for i, building in enumerate(self.buildings, 1):
             sections[f"Building {i}"] = building
         sections.update({k: v for k, v in self.sections.items() if k != "Model"})
-        return parameter_text(sections) + "\n"
+        return sections
+
+    def text(self):
+        """The .prm text (file names as given: relative ones are taken
+        against the directory of the file it is written to)."""
+        return parameter_text(self._all_sections()) + "\n"
+
+    def absolute_text(self, input):
+        """The .prm text with the relative names of the files `input` (this
+        model read: Model.input) names made absolute against the working
+        directory, to be written elsewhere and read the same."""
+        return parameter_text(absolute_files(self._all_sections(), input.input_files,
+                                             os.getcwd())) + "\n"
 
     def write(self, path):
         """Write the .prm file (`poundfe run path` runs the same model)."""
         with open(path, "w") as f:
             f.write(self.text())
 
-    def absolute(self):
-        """A copy whose file names are absolute (against the working
-        directory), to be written elsewhere."""
-        copy = Model()
-        copy.sections = absolute_files(self.sections, os.getcwd())
-        copy.buildings = [absolute_files(b, os.getcwd()) for b in self.buildings]
-        copy.origins = self.origins
-        return copy
-
     def input(self, overrides=None, name="model.prm"):
         """Read through the command line's reader: an Input. The reader
         parses the model's text itself (no file is written), named `name`;
         a bad entry raises the reader's InputError naming `name`, the line
         of the text, the entry and the line of the caller's code that set
-        it. (A command given the Model still reads it from a temporary
-        file: a sweep reads its file again for each value.)"""
+        it. Relative file names are taken against the working directory.
+        (A command given the Model still reads it from a temporary file, its
+        file names made absolute: a sweep reads its file again for each
+        value.)"""
         from . import InputError, _core, _override_pairs
         try:
-            return _core.read_text(name, self.absolute().text(), _override_pairs(overrides))
+            return _core.read_text(name, self.text(), _override_pairs(overrides))
         except InputError as error:
             raise self._pointed(error) from None
 
@@ -341,6 +371,7 @@ def write_input(input, path):
     """Input.write(path): a read Input (with its overrides) as a .prm file
     of every entry that differs from its default (file names absolute),
     which reads back to the same entries."""
-    sections = absolute_files(nested(given_values(input.values)), input.directory or os.getcwd())
+    sections = absolute_files(nested(given_values(input.values)), input.input_files,
+                              input.directory or os.getcwd())
     with open(path, "w") as f:
         f.write(parameter_text(sections) + "\n")
