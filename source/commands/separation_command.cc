@@ -65,11 +65,11 @@ namespace poundfe::commands
     write_separation_table(const CommandRun &run, const Model &model,
                            const std::vector<AdjacentPair> &pairs,
                            const std::vector<PairResult> &results, std::vector<Plot> &plots,
-                           const SpectrumPeaks *spectrum)
+                           const SpectrumPeaks *spectrum, const bool monte_carlo)
     {
       write_result_text(run.memory, run.directory, "separation.csv",
                         separation_table(model, pairs, results, spectrum));
-      plots.push_back(separation_plot(pairs, spectrum));
+      plots.push_back(separation_plot(pairs, spectrum, monte_carlo));
     }
 
     /// pounding_probability.csv and its plot (one panel per pair).
@@ -639,7 +639,8 @@ namespace poundfe::commands
                   const std::optional<PoundingHazard> &hazard)
     {
       std::vector<Plot> plots;
-      write_separation_table(run, analysis.model, pairs, outcome.results, plots, by_modes);
+      write_separation_table(run, analysis.model, pairs, outcome.results, plots, by_modes,
+                             route.random);
       if (by_modes)
         write_spectrum_modes(run, analysis.model, *by_modes);
       if (route.random)

@@ -48,15 +48,19 @@ namespace poundfe
   }
 
   Plot
-  separation_plot(const std::vector<AdjacentPair> &pairs, const SpectrumPeaks *spectrum)
+  separation_plot(const std::vector<AdjacentPair> &pairs, const SpectrumPeaks *spectrum,
+                  const bool monte_carlo)
   {
+    // where u_1, u_2 of the rules came from: the title and the peaks' curve say it
+    const std::string source =
+      spectrum ? "response spectrum" : (monte_carlo ? "Monte Carlo mean" : "time history");
     Plot plot;
     for (std::size_t p = 0; p < pairs.size(); ++p)
       {
         const AdjacentPair &pair = pairs[p];
         Plot panel{"separation.png",
                    "Required separation of " + pair.name + " against level" +
-                     (spectrum ? " (response spectrum)" : " (time history)"),
+                     " (" + source + ")",
                    "separation (mm)", "level (m)", {}};
         // separation.csv in m, drawn in mm; from 0, so that no point sits on the frame
         panel.settings = "set xrange [0:*]\n";
@@ -72,7 +76,7 @@ namespace poundfe
                                     " lc rgb '" + colour[c] + "'"});
         if (!spectrum)
           panel.series.push_back({"separation.csv", only + "13:1/0):4",
-                                  "time history (no contact)", "linespoints lw 3 lc rgb 'black'"});
+                                  source + " (no contact)", "linespoints lw 3 lc rgb 'black'"});
         // the existing gap from the ground to the top common level: a line
         // even when the pair has one common level
         double top = 0;

@@ -15,6 +15,7 @@
 //     P(|u_1 - u_2| > g) = 2 (1 - Phi(g / sigma)) against its closed form;
 //   - the common levels of buildings whose floors differ and the height
 //     interpolation weights, worked by hand (input/floor-to-column.prm).
+#include <algorithm>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/realization.h>
@@ -260,9 +261,16 @@ BOOST_AUTO_TEST_CASE(separation_figure_draws_the_gap_and_readable_rules)
   pair.name         = "A1-B1";
   pair.levels.resize(1);
   pair.levels[0].level = 3.5;
-  const Plot plot = separation_plot({pair}, nullptr);
+  const Plot plot = separation_plot({pair}, nullptr, false);
   BOOST_CHECK_EQUAL(plot.x_label, "separation (mm)");
   BOOST_CHECK(plot.title.find("A1-B1") != std::string::npos);
+  BOOST_CHECK(plot.title.find("(time history)") != std::string::npos);
+  // a random run's peaks are the Monte Carlo means: the title and the curve say so
+  const Plot random = separation_plot({pair}, nullptr, true);
+  BOOST_CHECK(random.title.find("(Monte Carlo mean)") != std::string::npos);
+  BOOST_CHECK(std::any_of(random.series.begin(), random.series.end(), [](const PlotSeries &s) {
+    return s.title == "Monte Carlo mean (no contact)";
+  }));
   BOOST_CHECK(plot.data_blocks.find("$gap1 << EOD\ngap_mm,level_m\n25,0\n25,3.5\nEOD\n") !=
               std::string::npos);
   std::set<std::string> colours;

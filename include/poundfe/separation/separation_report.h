@@ -26,7 +26,8 @@ namespace poundfe
                                const std::vector<PairResult> &results,
                                const SpectrumPeaks *spectrum);
   /// separation.png, drawn from separation.csv: one panel per pair.
-  Plot separation_plot(const std::vector<AdjacentPair> &pairs, const SpectrumPeaks *spectrum);
+  Plot separation_plot(const std::vector<AdjacentPair> &pairs, const SpectrumPeaks *spectrum,
+                       bool monte_carlo);
 
   /// pounding_probability.csv: per gap of the grid (gap_grid) each pair's
   /// exceedances, P(pounding) and its Wilson band.
