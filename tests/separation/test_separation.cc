@@ -15,7 +15,6 @@
 //     P(|u_1 - u_2| > g) = 2 (1 - Phi(g / sigma)) against its closed form;
 //   - the common levels of buildings whose floors differ and the height
 //     interpolation weights, worked by hand (input/floor-to-column.prm).
-#include <algorithm>
 #include <poundfe/input/engine_parameters.h>
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/dynamics/realization.h>
@@ -24,6 +23,7 @@
 #include <poundfe/separation/separation_report.h>
 #include <poundfe/reliability/statistics.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
