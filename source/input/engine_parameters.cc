@@ -30,9 +30,12 @@ namespace poundfe
     /// whatever the law's damping, so what the builder says of the law's
     /// entries is replaced by one warning per force entry written, each
     /// without effect on rigid contact (model/entry_scope.h's warnings:
-    /// terminal and summary.json).
+    /// terminal and summary.json). With `law_used` (the rigid limit of a
+    /// sweep of the penalty law's stiffness) the penalty runs use those
+    /// entries and say the builder's warnings themselves: none is added.
     void
-    rigid_contact_warnings(const InputParameters &input, std::vector<std::string> &warnings)
+    rigid_contact_warnings(const InputParameters &input, const bool law_used,
+                           std::vector<std::string> &warnings)
     {
       static const std::vector<std::string> law_entries{
         "Stiffness",       "Damping from",        "Damping", "Coefficient of restitution",
@@ -43,7 +46,8 @@ namespace poundfe
           warnings.erase(std::remove_if(warnings.begin(), warnings.end(),
                                         [&](const std::string &x) { return x.rfind(moot, 0) == 0; }),
                          warnings.end());
-          if (entry != "Coefficient of restitution" && input.line_of("Contact/" + entry) > 0)
+          if (!law_used && entry != "Coefficient of restitution" &&
+              input.line_of("Contact/" + entry) > 0)
             warnings.push_back(input.warning(
               "Contact/" + entry,
               "has no effect: Contact/Model = nonsmooth is rigid contact (Newton's impact law "
@@ -52,15 +56,34 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// prepare_analysis() and prepare_rigid_limit_analysis(): `law_used`
+    /// as rigid_contact_warnings() takes it.
+    Analysis
+    prepare_input_analysis(const InputParameters &input, const bool law_used)
+    {
+      Analysis analysis = prepare_analysis(input, input.model, input.contact, input.springs,
+                                           input.friction, input.modal, input.output.n_modes);
+      if (input.time_integration.contact_model == ContactModel::nonsmooth)
+        rigid_contact_warnings(input, law_used, analysis.warnings);
+      say_warnings(analysis);
+      return analysis;
+    }
+  } // namespace
+
   Analysis
   prepare_analysis(const InputParameters &input)
   {
-    Analysis analysis = prepare_analysis(input, input.model, input.contact, input.springs,
-                                         input.friction, input.modal, input.output.n_modes);
-    if (input.time_integration.contact_model == ContactModel::nonsmooth)
-      rigid_contact_warnings(input, analysis.warnings);
-    say_warnings(analysis);
-    return analysis;
+    return prepare_input_analysis(input, false);
+  }
+
+  Analysis
+  prepare_rigid_limit_analysis(const InputParameters &input)
+  {
+    Assert(input.time_integration.contact_model == ContactModel::nonsmooth,
+           dealii::ExcMessage("the rigid limit is a nonsmooth input's"));
+    return prepare_input_analysis(input, true);
   }
 
   Analysis

@@ -18,6 +18,13 @@ namespace poundfe
   /// process on stderr ("poundfe: warning: ...") where writes_outputs().
   Analysis prepare_analysis(const InputParameters &input);
 
+  /// The analysis of a Contact/Model = nonsmooth input that is the rigid
+  /// limit of a sweep of the penalty law's stiffness (`poundfe sweep`,
+  /// Parameter = Contact/Stiffness): as prepare_analysis(), but the law's
+  /// entries are not warned about as unused, since the sweep's penalty
+  /// runs use them (and say the builder's own warnings on them).
+  Analysis prepare_rigid_limit_analysis(const InputParameters &input);
+
   /// This rank's part of the input's model partitioned by building over
   /// `communicator` (dynamics/partitioned_history.h: prepare_rank_analysis),
   /// with Output/Number of modes modes of each of its buildings (none of
