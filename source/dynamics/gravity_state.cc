@@ -10,6 +10,7 @@
 #include <poundfe/dynamics/time_history.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/integration/static_analysis.h>
+#include <poundfe/output/recorders.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -47,28 +48,37 @@ namespace poundfe
     }
 
     /// The peak translation of u_g and the vertical loads carried by each
-    /// building's structure.
+    /// building's structure: the applied loads on its vertical translations,
+    /// uy in 2D, a 3D frame joint's (or basemat's) uz in 3D (z is up there;
+    /// a 3D shear building has none). The loads of the rigid floors' maps are
+    /// already on their equations (gravity_loads), so the sum is the weight
+    /// of every mass on a free DOF.
     void
     describe_gravity_state(const Model &model, GravityState &gravity)
     {
+      const std::string vertical = model.dimension == 2 ? "uy" : "uz";
       gravity.base_reactions.assign(model.buildings.size(), 0.0);
       std::vector<char> seen(model.n_equations(), 0); // a hinge's two nodes share ux, uy
+      int               peak = -1; // named once, after the search (a name scans the model)
       for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
         {
           const int eq = model.equation(dof);
           if (eq < 0 || seen[eq])
             continue;
           seen[eq] = 1;
-          const unsigned int node = dof / n_dofs_per_node;
-          const auto         c    = static_cast<Component>(dof % n_dofs_per_node);
-          if (c != Component::rz && std::abs(gravity.displacement[eq]) > gravity.peak_displacement)
+          const unsigned int node      = dof / n_dofs_per_node;
+          const std::string  component = node_components(model, node)[dof % n_dofs_per_node];
+          if (!is_rotation(component) &&
+              std::abs(gravity.displacement[eq]) > gravity.peak_displacement)
             {
               gravity.peak_displacement = std::abs(gravity.displacement[eq]);
-              gravity.peak_where        = equation_name(model, eq);
+              peak                      = eq;
             }
-          if (model.dimension == 2 && c == Component::uy)
+          if (component == vertical)
             gravity.base_reactions[model.nodes[node].building] -= gravity.applied[eq];
         }
+      if (peak >= 0)
+        gravity.peak_where = equation_name(model, peak);
     }
   } // namespace
 

@@ -9,6 +9,7 @@
 #include <poundfe/integration/dormand_prince.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/integration/static_analysis.h>
+#include <poundfe/output/recorders.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -19,12 +20,6 @@ namespace poundfe
 {
   namespace
   {
-    const char *
-    component_name(const unsigned int c)
-    {
-      return c == 0 ? "ux" : (c == 1 ? "uy" : "rz");
-    }
-
     double
     end_time_of(const TimeIntegrationParameters &time_integration, const Excitation &excitation)
     {
@@ -86,15 +81,75 @@ namespace poundfe
 
   namespace
   {
-    /// "A3 node 12 at (6, 3) rz": the DOF `dof` of `model`.
+    /// Whether row `row` of member m's map u_e = T q is the one DOF of
+    /// `node` alone (a joint's own ux or uz): then the member's end is at it.
+    bool
+    row_is_own_dof_of(const Member3D &m, const unsigned int row, const unsigned int node)
+    {
+      const unsigned int n = m.dofs.size();
+      unsigned int       nonzero = 0, own = 0;
+      for (unsigned int j = 0; j < n; ++j)
+        if (m.map[row * n + j] != 0)
+          {
+            ++nonzero;
+            own += m.dofs[j] / n_dofs_per_node == node;
+          }
+      return nonzero == 1 && own == 1;
+    }
+
+    /// Where a node of a 3D model is, site (x, y, z): Node::position holds
+    /// only (x, z) there. A floor's master is at the floor's mass centre; a
+    /// joint's node at the end of a member that moves with it alone; a
+    /// hinge's at the member end it releases. false: none of these.
+    bool
+    site_point_of_node(const Model &model, const unsigned int node, std::array<double, 3> &at)
+    {
+      const Node     &n        = model.nodes[node];
+      const Building &building = model.buildings[n.building];
+      for (unsigned int i = 0; i < building.floors.size() && i < building.plan.size(); ++i)
+        if (building.floors[i].nodes.size() == 1 && building.floors[i].nodes[0] == node)
+          {
+            at = {{building.plan[i].mass_centre.x, building.plan[i].mass_centre.y, n.position.y}};
+            return true;
+          }
+      const bool hinge = n.generalized && !n.joint_translation_z;
+      for (const Member3D &m : model.members_3d)
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            if (m.ends[k][0] != n.position.x || m.ends[k][2] != n.position.y)
+              continue;
+            const unsigned int first = 6 * k;
+            bool               moves = false;
+            if (hinge)
+              for (unsigned int j = 0; j < m.dofs.size(); ++j)
+                for (unsigned int r = first + 3; r < first + 6; ++r)
+                  moves |= m.dofs[j] / n_dofs_per_node == node && m.map[r * m.dofs.size() + j] != 0;
+            else
+              moves = row_is_own_dof_of(m, first, node) || row_is_own_dof_of(m, first + 2, node);
+            if (moves)
+              {
+                at = m.ends[k];
+                return true;
+              }
+          }
+      return false;
+    }
+
+    /// "A3 node 12 at (6, 3) rz" (2D), "A node 7 at (6, 4.5, 3.6) uz" (3D):
+    /// the DOF `dof` of `model`, its component named as the recorders name it.
     std::string
     dof_name(const Model &model, const unsigned int dof)
     {
-      const Node        &node = model.nodes[dof / n_dofs_per_node];
-      std::ostringstream s;
-      s << model.buildings[node.building].name << " node " << dof / n_dofs_per_node << " at ("
-        << node.position.x << ", " << node.position.y << ") "
-        << component_name(dof % n_dofs_per_node);
+      const unsigned int    index = dof / n_dofs_per_node;
+      const Node           &node  = model.nodes[index];
+      std::array<double, 3> at{};
+      std::ostringstream    s;
+      s << model.buildings[node.building].name << " node " << index << " at (";
+      if (model.dimension == 3 && site_point_of_node(model, index, at))
+        s << at[0] << ", " << at[1] << ", " << at[2];
+      else
+        s << node.position.x << ", " << node.position.y;
+      s << ") " << node_components(model, index)[dof % n_dofs_per_node];
       return s.str();
     }
   } // namespace

@@ -47,6 +47,19 @@ periods = json.load(open(sys.argv[1]))["modes"]["periods_s"]
 print("periods", periods)
 sys.exit(0 if len(periods) == 6 and all(p > 0 for p in periods) else 1)
 PY
+# its gravity state: each frame's vertical reactions (the applied loads on
+# its joints' uz) sum to its floor masses x g (Model/Gravity = 9.81; no
+# member mass) to 1e-9; the peak is a column's shortening, uz at (x, y, z)
+python3 - modal/summary.json <<'PY' || fail "modal: gravity reactions or peak label"
+import json, re, sys
+g = json.load(open(sys.argv[1]))["gravity"]
+weights = [3 * 40000 * 9.81, 2 * 20000 * 9.81]  # A: 3 floors of 40 t, B: 2 of 20 t
+errors = [abs(r - w) / w for r, w in zip(g["base_vertical_reactions_N"], weights)]
+print("reactions", g["base_vertical_reactions_N"], "relative errors", errors, g["peak_displacement_at"])
+ok = len(errors) == 2 and max(errors) <= 1e-9
+ok = ok and re.search(r"at \([^,]+, [^,]+, [^,]+\) uz$", g["peak_displacement_at"]) is not None
+sys.exit(0 if ok else 1)
+PY
 
 # 2. bad input
 awk '/^subsection Building 1$/ { print; print "  set Member model = fibre"; print "  set Column sections = column40"; print "  set Beam sections = column40"; next } { print }' \

@@ -17,6 +17,24 @@ grep -q "mass ratio (y)" "$work/modal.out" || fail "modal prints no y mass ratio
 grep -q '"participating_mass_ratio_rz"' "$work/modal/summary.json" || fail "no rz ratios"
 echo "ok   modal of the 3D frames"
 
+# 1b. the gravity analysis first (Model/Gravity analysis = static): each
+#     frame's vertical reactions (the applied loads on its joints' uz) sum to
+#     its floor masses x g (Model/Gravity = 9.81; no member mass) to 1e-9,
+#     and the peak is a joint's uz, named at (x, y, z)
+"$poundfe" modal "$input/3d-torsional-pair.prm" --set "Model/Gravity analysis/Type=static" \
+  --output "$work/gravity" > /dev/null
+python3 - "$work/gravity/summary.json" <<'PY' || fail "3D gravity reactions or peak label"
+import json, re, sys
+g = json.load(open(sys.argv[1]))["gravity"]
+weights = [5 * 9e4 * 9.81, 5 * 7e4 * 9.81]  # 5 floors of 9e4 and of 7e4 kg
+errors = [abs(r - w) / w for r, w in zip(g["base_vertical_reactions_N"], weights)]
+print("reactions", g["base_vertical_reactions_N"], "relative errors", errors, g["peak_displacement_at"])
+ok = len(errors) == 2 and max(errors) <= 1e-9
+ok = ok and re.search(r"at \([^,]+, [^,]+, [^,]+\) uz$", g["peak_displacement_at"]) is not None
+sys.exit(0 if ok else 1)
+PY
+echo "ok   gravity of the 3D frames: vertical reactions = weights"
+
 "$poundfe" run "$input/3d-torsional-pair.prm" --output "$work/pair" > /dev/null
 grep -q '"status": "completed"' "$work/pair/summary.json" || fail "not completed"
 head -1 "$work/pair/impacts.csv" | grep -q "plan_x_m,plan_y_m" || fail "impacts.csv without plan point"
