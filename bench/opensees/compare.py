@@ -87,6 +87,20 @@ CASES = {
     "pounding_Parallel": ("pounding_sticks.tcl", ["Parallel"], 1e-9),
     "pounding_ParallelViscous": ("pounding_sticks.tcl", ["ParallelViscous"], 1e-9),
     "pounding_MinMax": ("pounding_sticks.tcl", ["MinMax"], 1e-9),
+    # ViscousDamper (its force integrated over the step by OpenSees's
+    # adaptive Dormand-Prince, Adams-Bashforth-Moulton with a pin's play, and
+    # Rosenbrock; tangent 0 as OpenSees's) and Series (a yielding link behind
+    # an elastic brace; two yielding links with -iter)
+    "pounding_ViscousDamper": ("pounding_sticks.tcl", ["ViscousDamper"], 1e-9),
+    "pounding_ViscousDamperABM": ("pounding_sticks.tcl", ["ViscousDamperABM"], 1e-9),
+    "pounding_ViscousDamperROS": ("pounding_sticks.tcl", ["ViscousDamperROS"], 1e-9),
+    "pounding_Series": ("pounding_sticks.tcl", ["Series"], 1e-9),
+    "pounding_SeriesIter": ("pounding_sticks.tcl", ["SeriesIter"], 1e-9),
+    # twoNodeLink: a bearing of three materials with -shearDist and -pDelta
+    # under a 2D cantilever, a gap link between the tops; 3D sticks of
+    # six-material links (-orient, -pDelta, -doRayleigh) and a diagonal gap
+    "links_2d": ("two_node_links.tcl", ["2d"], 1e-9),
+    "links_3d": ("two_node_links.tcl", ["3d"], 1e-9),
     # ElasticPPGap with Fy > 0 and gap < 0: strain 0 is past the yield strain,
     # yet the virgin elastic range stays [gap, Fy/E + gap] (OpenSees 3.8's
     # constructor, with its warning on the alternate signs)

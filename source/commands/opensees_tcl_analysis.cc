@@ -349,6 +349,8 @@ namespace poundfe
         check_done(w);
         if (steps < 0)
           throw ScriptError("the number of steps must be >= 0");
+        if (s.analysis->options().transient)
+          s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper)
         const int result = s.analysis->analyze(
           steps, dt, [&]() { s.record(); },
           [&](const std::string &why) {

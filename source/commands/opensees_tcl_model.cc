@@ -3,6 +3,7 @@
 // element, uniaxialMaterial, timeSeries, pattern, load, sp, eleLoad, loadConst, setTime,
 // rayleigh, recorder. An option or type poundfe lacks is an error naming it.
 #include <poundfe/laws/material_registry.h>
+#include <poundfe/laws/viscous_damper.h>
 
 #include "opensees_tcl.h"
 
@@ -201,7 +202,10 @@ namespace poundfe
           unsupported("geomTransf " + type);
         const int tag = w.integer("the transformation's tag");
         if (d.ndm == 3)
-          exactly(w, 3, "a component of vecxz");
+          {
+            const std::vector<double> v = exactly(w, 3, "a component of vecxz");
+            d.vecxz[tag]                = {{v[0], v[1], v[2]}};
+          }
         if (!w.done())
           unsupported("geomTransf option '" + w.peek() + "'");
         const Transformation kind = type == "PDelta"       ? Transformation::pdelta :
@@ -216,13 +220,21 @@ namespace poundfe
       void
       elastic_beam_column(opensees::Domain &d, Words &w)
       {
-        if (d.ndm != 2 || d.ndf != 3)
+        const bool three = d.ndm == 3 && d.ndf == 6;
+        if ((d.ndm != 2 || d.ndf != 3) && !three)
           unsupported("element elasticBeamColumn with -ndm " + text_of(d.ndm) + " -ndf " +
                       text_of(d.ndf));
         const int          tag = w.integer("the element's tag");
         std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
-        const double       A = w.real("A"), E = w.real("E"), I = w.real("Iz");
-        const int          transf = w.integer("the transformation's tag");
+        opensees::ElasticSection3d section;
+        section.A = w.real("A"), section.E = w.real("E");
+        if (three)
+          {
+            section.G = w.real("G"), section.J = w.real("J");
+            section.Iy = w.real("Iy");
+          }
+        section.Iz         = w.real("Iz");
+        const int transf   = w.integer("the transformation's tag");
         double             rho    = 0; // mass per length, lumped (OpenSees's default)
         while (w.peek() == "-mass" || w.peek() == "-lMass")
           if (w.word("-mass") == "-mass") // -lMass: lumped, the default
@@ -232,7 +244,12 @@ namespace poundfe
         const auto t = d.transformations.find(transf);
         if (t == d.transformations.end())
           throw ScriptError("geomTransf " + text_of(transf) + " does not exist");
-        add_element(d, opensees::make_elastic_beam_2d(d, tag, nodes, A, E, I, t->second));
+        if (three)
+          add_element(d, opensees::make_elastic_beam_3d(d, tag, nodes, section, t->second,
+                                                        d.vecxz.at(transf)));
+        else
+          add_element(d, opensees::make_elastic_beam_2d(d, tag, nodes, section.A, section.E,
+                                                        section.Iz, t->second));
         add_lumped_mass(d, nodes, rho);
       }
 
@@ -275,6 +292,51 @@ namespace poundfe
           throw ScriptError("zeroLength " + text_of(tag) +
                             " needs as many -dir directions as -mat materials, at least one");
         add_element(d, opensees::make_zero_length(d, tag, z));
+      }
+
+      /// twoNodeLink tag i j -mat m1 m2 ... -dir d1 d2 ... <-orient <x1 x2 x3>
+      /// yp1 yp2 yp3> <-pDelta ratios> <-shearDist ratios> <-doRayleigh>
+      /// (OpenSees's order: -mat, then -dir, then the options).
+      void
+      two_node_link(opensees::Domain &d, Words &w)
+      {
+        const int                 tag = w.integer("the element's tag");
+        opensees::TwoNodeLinkData link;
+        link.nodes = {{w.integer("node i"), w.integer("node j")}};
+        if (w.word("-mat") != "-mat")
+          throw ScriptError("want: element twoNodeLink tag i j -mat tags -dir dirs <options>");
+        link.materials = w.integers("a material's tag");
+        if (w.done() || (w.peek() != "-dir" && w.peek() != "-dof"))
+          throw ScriptError("want: element twoNodeLink tag i j -mat tags -dir dirs <options>");
+        w.word("-dir");
+        link.directions = w.integers("a direction");
+        if (link.materials.empty() || link.materials.size() != link.directions.size())
+          throw ScriptError("twoNodeLink " + text_of(tag) +
+                            " needs as many -dir directions as -mat materials, at least one");
+        const std::size_t ratios = d.ndm == 2 ? 2 : 4, distances = d.ndm == 2 ? 1 : 2;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-orient")
+              link.orient = w.numbers("a component of -orient");
+            else if (option == "-pDelta")
+              link.p_delta = w.numbers("a moment ratio");
+            else if (option == "-shearDist")
+              link.shear_distance = w.numbers("a shear distance ratio");
+            else if (option == "-doRayleigh")
+              link.rayleigh = true;
+            else
+              unsupported("element twoNodeLink option '" + option + "'");
+            if (option == "-orient" && link.orient.size() != 3 && link.orient.size() != 6)
+              throw ScriptError("twoNodeLink -orient takes 3 or 6 values");
+            if (option == "-pDelta" && link.p_delta.size() != ratios)
+              throw ScriptError("twoNodeLink -pDelta takes " + text_of(ratios) +
+                                " ratios in this model");
+            if (option == "-shearDist" && link.shear_distance.size() != distances)
+              throw ScriptError("twoNodeLink -shearDist takes " + text_of(distances) +
+                                " ratios in this model");
+          }
+        add_element(d, opensees::make_two_node_link(d, tag, link));
       }
 
       /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>
@@ -320,6 +382,8 @@ namespace poundfe
           zero_length(d, w);
         else if (type == "truss")
           truss(d, w);
+        else if (type == "twoNodeLink")
+          two_node_link(d, w);
         else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
                  type == "dispBeamColumn")
           beam_column_element(s, w, type);
@@ -348,6 +412,9 @@ namespace poundfe
           {"JankowskiImpact", {"Kh", "xi", "mEff", "gap", "n"}, {4, 5}},
           {"ViscoelasticGap", {"K", "C", "gap"}, {3}},
           {"Viscous", {"C", "alpha", "minVel"}, {2, 3}},
+          {"ViscousDamper",
+           {"K", "C", "Alpha", "LGap", "NM", "RelTol", "AbsTol", "MaxHalf"},
+           {3, 4, 8}},
           {"BoucWen",
            {"alpha", "ko", "n", "gamma", "beta", "Ao", "deltaA", "deltaNu", "deltaEta", "tolerance",
             "maxNumIter"},
@@ -413,15 +480,31 @@ namespace poundfe
         return p;
       }
 
-      /// Parallel tag tag1 tag2 ... <-factors f1 f2 ...>; MinMax tag other
-      /// <-min eps> <-max eps>: the components must exist already, as in
-      /// OpenSees (which copies them there).
+      /// Series ... -iter maxIter tol (OpenSees reads -iter's numbers only
+      /// after the components).
+      void
+      series_iterations(opensees::CombinedMaterial &c, Words &w)
+      {
+        if (w.left() < 2)
+          throw ScriptError("want: uniaxialMaterial Series tag tag1 tag2 ... <-iter maxIter tol>");
+        const int max_iterations = w.integer("-iter's maxIter");
+        if (max_iterations < 1)
+          throw ScriptError("Series -iter: maxIter must be >= 1");
+        c.max_iterations = max_iterations;
+        c.tolerance      = w.real("-iter's tol");
+      }
+
+      /// Parallel tag tag1 tag2 ... <-factors f1 f2 ...>; Series tag tag1
+      /// tag2 ... <-iter maxIter tol>; MinMax tag other <-min eps> <-max
+      /// eps>: the components must exist already, as in OpenSees (which
+      /// copies them there).
       opensees::CombinedMaterial
       combined_material(const opensees::Domain &d, const std::string &type, Words &w)
       {
         opensees::CombinedMaterial c{type, w.integers("a material's tag"), {}};
         if (c.components.empty() || (type == "MinMax" && c.components.size() != 1))
           throw ScriptError(type + " takes " + (type == "MinMax" ? "one material" : "materials"));
+
         for (const int component : c.components)
           if (d.materials.count(component) == 0 && d.combined_materials.count(component) == 0)
             throw ScriptError("uniaxialMaterial " + text_of(component) + " does not exist");
@@ -434,6 +517,8 @@ namespace poundfe
                 if (c.factors.size() != c.components.size())
                   throw ScriptError("Parallel -factors takes one factor a material");
               }
+            else if (type == "Series" && option == "-iter")
+              series_iterations(c, w);
             else if (type == "MinMax" && (option == "-min" || option == "-Min" || option == "-MIN"))
               c.min_strain = w.real("the smallest strain");
             else if (type == "MinMax" && (option == "-max" || option == "-Max" || option == "-MAX"))
@@ -452,7 +537,7 @@ namespace poundfe
         const int          tag  = w.integer("the material's tag");
         if (d.materials.count(tag) != 0 || d.combined_materials.count(tag) != 0)
           throw ScriptError("uniaxialMaterial " + text_of(tag) + " exists already");
-        if (type == "Parallel" || type == "MinMax")
+        if (type == "Parallel" || type == "Series" || type == "MinMax")
           {
             d.combined_materials.emplace(tag, combined_material(d, type, w));
             return;
@@ -493,8 +578,17 @@ namespace poundfe
               p.values[syntax->parameters[i]] = values[i];
             if (type == "ElasticPPGap")
               warn_eppgap_signs(s.warnings, p);
+            if (type == "ViscousDamper" && p.values.at("Alpha") < 0)
+              {
+                s.warnings << "ViscousDamper::ViscousDamper -- Alpha < 0.0, setting to 1.0\n";
+                p.values["Alpha"] = 1;
+              }
           }
-        make_material(p); // the law's own checks, now at the script's line
+        // the law's own checks, now at the script's line
+        if (type == "ViscousDamper")
+          make_viscous_damper(p.values, d.time_step);
+        else
+          make_material(p);
         if (!d.materials.emplace(tag, p).second)
           throw ScriptError("uniaxialMaterial " + text_of(tag) + " exists already");
       }
@@ -1003,9 +1097,11 @@ namespace poundfe
     add_lumped_mass(opensees::Domain &d, const std::array<int, 2> &nodes, const double rho)
     {
       const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
-      const double m = 0.5 * rho * std::hypot(b[0] - a[0], b[1] - a[1]);
+      const double L = a.size() == 3 ? std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) :
+                                       std::hypot(b[0] - a[0], b[1] - a[1]);
+      const double m = 0.5 * rho * L;
       for (const int n : nodes)
-        for (const unsigned int k : {0u, 1u})
+        for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
           d.node(n).element_mass[k] += m;
     }
 

@@ -85,6 +85,25 @@ namespace poundfe
       }
 
       /// Aggregator: mat dof pairs (P, Mz), then -section base.
+      /// The script's material `tag` for a section; a material of other
+      /// materials or one that needs the analysis' time step (ViscousDamper)
+      /// is for zeroLength and truss elements only.
+      const MaterialParameters &
+      section_material(const opensees::Domain &d, const int tag)
+      {
+        const auto        it = d.materials.find(tag);
+        const std::string type =
+          it != d.materials.end()         ? it->second.material :
+          d.combined_materials.count(tag) ? d.combined_materials.at(tag).type :
+                                            "";
+        if (type.empty())
+          throw ScriptError("uniaxialMaterial " + std::to_string(tag) + " does not exist");
+        if (it == d.materials.end() || type == "ViscousDamper")
+          throw ScriptError("uniaxialMaterial " + std::to_string(tag) + " is a " + type +
+                            ": in zeroLength, twoNodeLink and truss elements only");
+        return it->second;
+      }
+
       void
       aggregator_section(opensees::Domain &d, Words &w, const int tag)
       {
@@ -116,14 +135,7 @@ namespace poundfe
             if (dof != "P" && dof != "Mz")
               unsupported("section Aggregator dof '" + dof + "' in the plane");
             const unsigned int r = dof == "P" ? 0 : 1;
-            const auto         p = d.materials.find(mat);
-            if (p == d.materials.end())
-              throw ScriptError("uniaxialMaterial " + std::to_string(mat) +
-                                (d.combined_materials.count(mat) ?
-                                   " is a " + d.combined_materials.at(mat).type +
-                                     ": in zeroLength and truss elements only" :
-                                   std::string(" does not exist")));
-            const MaterialParameters parameters = p->second;
+            const MaterialParameters parameters = section_material(d, mat);
             section->set_law(r, [parameters]() { return make_material(parameters); });
             has[r] = true;
           }
@@ -161,20 +173,14 @@ namespace poundfe
       unsigned int
       fibre_material(Session &s, const int tag)
       {
-        const auto it = s.domain.materials.find(tag);
-        if (it == s.domain.materials.end())
-          throw ScriptError("uniaxialMaterial " + std::to_string(tag) +
-                            (s.domain.combined_materials.count(tag) ?
-                               " is a " + s.domain.combined_materials.at(tag).type +
-                                 ": in zeroLength and truss elements only" :
-                               std::string(" does not exist")));
+        const MaterialParameters &law = section_material(s.domain, tag);
         const std::string name = std::to_string(tag);
         for (unsigned int i = 0; i < s.fibres->materials.size(); ++i)
           if (s.fibres->materials[i].name == name)
             return i;
         SectionMaterial material;
         material.name = name;
-        material.law  = it->second;
+        material.law  = law;
         return s.fibres->add_material(material);
       }
 

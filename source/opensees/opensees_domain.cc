@@ -6,6 +6,7 @@
 // the series' factor times the pattern's -fact, frozen by loadConst), its
 // nodal loads and ground accelerations, and OpenSees's nodal reactions.
 #include <poundfe/laws/combined_materials.h>
+#include <poundfe/laws/viscous_damper.h>
 #include <poundfe/opensees/opensees_domain.h>
 
 #include <cmath>
@@ -168,11 +169,16 @@ namespace poundfe
           if (c.type == "MinMax")
             return std::make_unique<MinMaxUniaxial>(std::move(parts[0]), c.min_strain,
                                                     c.max_strain);
+          if (c.type == "Series")
+            return std::make_unique<SeriesUniaxial>(std::move(parts), c.max_iterations,
+                                                    c.tolerance);
           return std::make_unique<ParallelUniaxial>(std::move(parts), c.factors);
         }
       const auto it = domain.materials.find(tag);
       if (it == domain.materials.end())
         throw ScriptError("uniaxialMaterial " + std::to_string(tag) + " does not exist");
+      if (it->second.material == "ViscousDamper")
+        return make_viscous_damper(it->second.values, domain.time_step);
       return make_material(it->second);
     }
   } // namespace opensees

@@ -30,6 +30,8 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace poundfe
@@ -143,7 +145,17 @@ namespace poundfe
       class ZeroLength : public Element
       {
       public:
-        ZeroLength(const Domain &domain, const int tag, const ZeroLengthData &data);
+        /// Material m (the domain's tag materials[m]) on row m of t.
+        ZeroLength(const Domain &domain, const int tag, const std::array<int, 2> nodes,
+                   Matrix t, const std::vector<int> &materials, const bool rayleigh)
+          : Element(tag, {nodes[0], nodes[1]})
+          , t(std::move(t))
+          , rayleigh(rayleigh)
+        {
+          for (const int material : materials)
+            laws.push_back(make_domain_material(domain, material));
+          committed_tangent = tangent();
+        }
 
         unsigned int n_dofs() const override { return t.cols(); }
         bool         rayleigh_damped() const override { return rayleigh; }
@@ -227,7 +239,7 @@ namespace poundfe
         }
         std::string failure() const override { return why; }
 
-      private:
+      protected:
         /// OpenSees's `material i stress|strain|tangent|stressStrain|
         /// stressStrainTangent` (ZeroLength::setResponse passing the rest of
         /// the words to UniaxialMaterial::setResponse).
@@ -272,6 +284,207 @@ namespace poundfe
         double strain_scale = 1, force_scale = 1; // a truss: 1/L and A
       };
 
+      /// OpenSees's kinds of twoNodeLink by the model's ndm and ndf: D1N2,
+      /// D2N4, D2N6, D3N6, D3N12.
+      enum class LinkKind
+      {
+        d1n2,
+        d2n4,
+        d2n6,
+        d3n6,
+        d3n12
+      };
+
+      /// The P-Delta of a twoNodeLink: its kind, length, directions
+      /// (0-based) and moment ratios rMy1 rMy2 rMz1 rMz2.
+      struct LinkPDelta
+      {
+        LinkKind                  kind;
+        double                    L;
+        std::vector<int>          directions;
+        std::array<double, 4>     ratios;
+      };
+
+      class TwoNodeLink : public ZeroLength
+      {
+      public:
+        TwoNodeLink(const Domain &domain, const int tag, const TwoNodeLinkData &data,
+                    const Matrix &Tgl, const Matrix &Tlb, LinkPDelta p_delta)
+          : ZeroLength(domain, tag, data.nodes, Tlb * Tgl, data.materials, data.rayleigh)
+          , Tgl(Tgl)
+          , Tlb(Tlb)
+          , ul(Vector::Zero(Tgl.rows()))
+          , p_delta(std::move(p_delta))
+          , with_p_delta(!data.p_delta.empty())
+        {}
+
+        bool
+        set_trial(const Vector &u, const Vector &v) override
+        {
+          ul = Tgl * u;
+          return ZeroLength::set_trial(u, v);
+        }
+        Vector
+        force() const override
+        {
+          return with_p_delta ? Vector(Tgl.transpose() * local_force()) : ZeroLength::force();
+        }
+        Matrix
+        tangent() const override
+        {
+          if (!with_p_delta)
+            return ZeroLength::tangent();
+          Matrix kl = Tlb.transpose() * basic(&UniaxialLaw::tangent).asDiagonal() * Tlb;
+          add_p_delta_stiffness(kl);
+          return Tgl.transpose() * kl * Tgl;
+        }
+        std::vector<double>
+        response(const std::vector<std::string> &words) const override
+        {
+          const std::string what = words.size() == 1 ? words[0] : "";
+          const auto        list = [](const Vector &x) {
+            return std::vector<double>(x.data(), x.data() + x.size());
+          };
+          if (what == "localForce" || what == "localForces")
+            return list(local_force());
+          if (what == "basicForce" || what == "basicForces")
+            return list(basic(&UniaxialLaw::force));
+          if (what == "localDisplacement" || what == "localDisplacements")
+            return list(ul);
+          if (what == "deformation" || what == "deformations" || what == "basicDeformation" ||
+              what == "basicDeformations" || what == "basicDisplacement" ||
+              what == "basicDisplacements")
+            return list(strain);
+          return ZeroLength::response(words);
+        }
+
+      private:
+        Vector
+        basic(double (UniaxialLaw::*value)() const) const
+        {
+          Vector q(laws.size());
+          for (unsigned int i = 0; i < laws.size(); ++i)
+            q[i] = ((*laws[i]).*value)();
+          return q;
+        }
+        Vector
+        local_force() const
+        {
+          Vector pl = Tlb.transpose() * basic(&UniaxialLaw::force);
+          if (with_p_delta)
+            add_p_delta_forces(pl);
+          return pl;
+        }
+        /// The axial force N (of direction 1's material; 0 without one).
+        double axial_force() const;
+        void   add_p_delta_forces(Vector &pl) const;
+        void   add_p_delta_stiffness(Matrix &kl) const;
+
+        Matrix     Tgl, Tlb; // global to local, local to basic
+        Vector     ul;       // local displacements of the trial
+        LinkPDelta p_delta;
+        bool       with_p_delta;
+      };
+
+      double
+      TwoNodeLink::axial_force() const
+      {
+        double N = 0;
+        for (unsigned int i = 0; i < laws.size(); ++i)
+          if (p_delta.directions[i] == 0)
+            N = laws[i]->force();
+        return N;
+      }
+
+      /// OpenSees's TwoNodeLink::addPDeltaForces: shears N delta / L times
+      /// the share not taken by the end moments, and those moments.
+      void
+      TwoNodeLink::add_p_delta_forces(Vector &pl) const
+      {
+        const LinkPDelta &p = p_delta;
+        const auto       &r = p.ratios;
+        const int         h = pl.size() / 2;
+        const bool        has_y = std::count(p.directions.begin(), p.directions.end(), 1) > 0;
+        const bool        has_z = std::count(p.directions.begin(), p.directions.end(), 2) > 0;
+        const bool        three = p.kind == LinkKind::d3n6 || p.kind == LinkKind::d3n12;
+        const double      N  = axial_force();
+        const double      d1 = has_y && p.kind != LinkKind::d1n2 ? ul[1 + h] - ul[1] : 0.0;
+        const double      d2 = has_z && three ? ul[2 + h] - ul[2] : 0.0;
+        if (N == 0.0 || (d1 == 0.0 && d2 == 0.0) || p.kind == LinkKind::d1n2)
+          return;
+        for (const int dir : p.directions)
+          if (dir == 1)
+            {
+              const double V = N * d1 / p.L * (1.0 - r[2] - r[3]);
+              pl[1] -= V;
+              pl[h + 1] += V;
+            }
+          else if (dir == 2 && p.kind == LinkKind::d2n6)
+            {
+              pl[2] += r[2] * N * d1;
+              pl[5] += r[3] * N * d1;
+            }
+          else if (dir == 2 && three)
+            {
+              const double V = N * d2 / p.L * (1.0 - r[0] - r[1]);
+              pl[2] -= V;
+              pl[h + 2] += V;
+            }
+          else if (dir == 4 && p.kind == LinkKind::d3n12)
+            {
+              pl[4] -= r[0] * N * d2;
+              pl[10] -= r[1] * N * d2;
+            }
+          else if (dir == 5 && p.kind == LinkKind::d3n12)
+            {
+              pl[5] += r[2] * N * d1;
+              pl[11] += r[3] * N * d1;
+            }
+      }
+
+      /// OpenSees's TwoNodeLink::addPDeltaStiff (N held constant).
+      void
+      TwoNodeLink::add_p_delta_stiffness(Matrix &kl) const
+      {
+        const LinkPDelta &p = p_delta;
+        const auto       &r = p.ratios;
+        const int         h = kl.rows() / 2;
+        const double      N = axial_force();
+        const bool        three = p.kind == LinkKind::d3n6 || p.kind == LinkKind::d3n12;
+        if (N == 0.0 || p.kind == LinkKind::d1n2)
+          return;
+        const auto shear = [&](const int k, const double n_over_l) {
+          kl(k, k) += n_over_l;
+          kl(k, h + k) -= n_over_l;
+          kl(h + k, k) -= n_over_l;
+          kl(h + k, h + k) += n_over_l;
+        };
+        const auto moment = [&](const int row, const int col, const double m) {
+          kl(row, col) -= m;
+          kl(row, h + col) += m;
+        };
+        for (const int dir : p.directions)
+          if (dir == 1)
+            shear(1, N / p.L * (1.0 - r[2] - r[3]));
+          else if (dir == 2 && p.kind == LinkKind::d2n6)
+            {
+              moment(2, 1, r[2] * N);
+              moment(5, 1, r[3] * N);
+            }
+          else if (dir == 2 && three)
+            shear(2, N / p.L * (1.0 - r[0] - r[1]));
+          else if (dir == 4 && p.kind == LinkKind::d3n12)
+            {
+              moment(4, 2, -r[0] * N);
+              moment(10, 2, -r[1] * N);
+            }
+          else if (dir == 5 && p.kind == LinkKind::d3n12)
+            {
+              moment(5, 1, r[2] * N);
+              moment(11, 1, r[3] * N);
+            }
+      }
+
       /// The unit local axes x, y, z of a zeroLength from its -orient vectors.
       Eigen::Matrix3d
       zero_length_axes(const ZeroLengthData &data, const int tag)
@@ -289,9 +502,9 @@ namespace poundfe
         return axes;
       }
 
-      ZeroLength::ZeroLength(const Domain &domain, const int tag, const ZeroLengthData &data)
-        : Element(tag, {data.nodes[0], data.nodes[1]})
-        , rayleigh(data.rayleigh)
+      /// The rows of the zeroLength's materials over its nodes' DOFs.
+      Matrix
+      zero_length_rows(const Domain &domain, const int tag, const ZeroLengthData &data)
       {
         domain.node(data.nodes[0]);
         domain.node(data.nodes[1]);
@@ -300,7 +513,7 @@ namespace poundfe
         // the node's DOFs of translations and of rotations, in order
         const unsigned int n_translations = std::min(ndm, ndf);
         const unsigned int n_rotations    = ndf > ndm ? ndf - ndm : 0;
-        t.setZero(data.materials.size(), 2 * ndf);
+        Matrix t = Matrix::Zero(data.materials.size(), 2 * ndf);
         for (unsigned int m = 0; m < data.materials.size(); ++m)
           {
             const int direction = data.directions[m] - 1;
@@ -317,9 +530,8 @@ namespace poundfe
               for (unsigned int k = 0; k < 3; ++k)
                 t(m, ndf + ndm + k) = axes(axis, k);
             t.block(m, 0, 1, ndf) = -t.block(m, ndf, 1, ndf);
-            laws.push_back(make_domain_material(domain, data.materials[m]));
           }
-        committed_tangent = tangent();
+        return t;
       }
     } // namespace
 
@@ -362,7 +574,142 @@ namespace poundfe
     std::unique_ptr<Element>
     make_zero_length(const Domain &domain, const int tag, const ZeroLengthData &data)
     {
-      return std::make_unique<ZeroLength>(domain, tag, data);
+      return std::make_unique<ZeroLength>(domain, tag, data.nodes,
+                                          zero_length_rows(domain, tag, data), data.materials,
+                                          data.rayleigh);
+    }
+
+    namespace
+    {
+      LinkKind
+      link_kind(const Domain &domain, const int tag)
+      {
+        const unsigned int ndm = domain.ndm, ndf = domain.ndf;
+        if (ndm == 1 && ndf == 1)
+          return LinkKind::d1n2;
+        if (ndm == 2 && (ndf == 2 || ndf == 3))
+          return ndf == 2 ? LinkKind::d2n4 : LinkKind::d2n6;
+        if (ndm == 3 && (ndf == 3 || ndf == 6))
+          return ndf == 3 ? LinkKind::d3n6 : LinkKind::d3n12;
+        throw ScriptError("twoNodeLink " + std::to_string(tag) + ": -ndm " +
+                          std::to_string(ndm) + " -ndf " + std::to_string(ndf) +
+                          " is not a model OpenSees's twoNodeLink takes");
+      }
+
+      /// TwoNodeLink::setUp: x along the nodes (or -orient's), yp global Y
+      /// (global -X or X when x is along +Y or -Y; or -orient's), in 2D
+      /// y across x in the plane; the rows of direction cosines x, y, z.
+      Eigen::Matrix3d
+      link_axes(const Domain &domain, const int tag, const TwoNodeLinkData &data, double &L)
+      {
+        const auto &a = domain.node(data.nodes[0]).coordinates,
+                   &b = domain.node(data.nodes[1]).coordinates;
+        Eigen::Vector3d x = Eigen::Vector3d::Zero(), y(0, 1, 0);
+        for (unsigned int i = 0; i < domain.ndm; ++i)
+          x[i] = b[i] - a[i];
+        L = x.norm();
+        if (L > 0 && x[0] == 0.0 && x[2] == 0.0)
+          y = Eigen::Vector3d(x[1] > 0 ? -1 : 1, 0, 0);
+        const std::vector<double> &o = data.orient;
+        if (o.size() == 6 || (o.size() == 3 && domain.ndm < 3))
+          x = Eigen::Vector3d(o[0], o[1], o[2]);
+        if (o.size() == 6 || (o.size() == 3 && domain.ndm == 3))
+          y = Eigen::Vector3d(o[o.size() - 3], o[o.size() - 2], o[o.size() - 1]);
+        if (domain.ndm == 1)
+          x = Eigen::Vector3d(1, 0, 0), y = Eigen::Vector3d(0, 1, 0);
+        if (!(x.norm() > 0))
+          throw ScriptError("twoNodeLink " + std::to_string(tag) +
+                            ": its nodes coincide; -orient must give its local x");
+        x /= x.norm();
+        if (domain.ndm == 2)
+          y = Eigen::Vector3d(-x[1], x[0], 0);
+        const Eigen::Vector3d z = x.cross(y);
+        y                       = z.cross(x);
+        if (!(y.norm() > 0) || !(z.norm() > 0))
+          throw ScriptError("twoNodeLink " + std::to_string(tag) +
+                            ": -orient vectors are zero or parallel");
+        Eigen::Matrix3d trans;
+        trans.row(0) = x / x.norm();
+        trans.row(1) = y / y.norm();
+        trans.row(2) = z / z.norm();
+        return trans;
+      }
+
+      /// TwoNodeLink::setTranGlobalLocal: the direction cosines on each
+      /// node's translations (and rotations).
+      Matrix
+      link_global_to_local(const LinkKind kind, const Eigen::Matrix3d &trans, const int n_dofs)
+      {
+        Matrix    T = Matrix::Zero(n_dofs, n_dofs);
+        const int h = n_dofs / 2;
+        const int translations =
+          kind == LinkKind::d1n2 ? 1 : kind == LinkKind::d2n4 || kind == LinkKind::d2n6 ? 2 : 3;
+        for (const int node : {0, h})
+          {
+            T.block(node, node, translations, translations) =
+              trans.topLeftCorner(translations, translations);
+            if (kind == LinkKind::d2n6)
+              T(node + 2, node + 2) = trans(2, 2);
+            if (kind == LinkKind::d3n12)
+              T.block(node + 3, node + 3, 3, 3) = trans;
+          }
+        return T;
+      }
+
+      /// TwoNodeLink::setTranLocalBasic: node j's local DOF minus node i's,
+      /// a shear with the moments of its distance from each node.
+      Matrix
+      link_local_to_basic(const LinkKind kind, const std::vector<int> &directions,
+                          const int n_dofs, const double L, const std::array<double, 2> &s)
+      {
+        Matrix    T = Matrix::Zero(directions.size(), n_dofs);
+        const int h = n_dofs / 2;
+        for (unsigned int i = 0; i < directions.size(); ++i)
+          {
+            const int dir   = directions[i];
+            T(i, dir)       = -1.0;
+            T(i, dir + h)   = 1.0;
+            if (kind == LinkKind::d2n6 && dir == 1)
+              T(i, 2) = -s[0] * L, T(i, 5) = -(1.0 - s[0]) * L;
+            if (kind == LinkKind::d3n12 && dir == 1)
+              T(i, 5) = -s[0] * L, T(i, 11) = -(1.0 - s[0]) * L;
+            if (kind == LinkKind::d3n12 && dir == 2)
+              T(i, 4) = s[1] * L, T(i, 10) = (1.0 - s[1]) * L;
+          }
+        return T;
+      }
+    } // namespace
+
+    std::unique_ptr<Element>
+    make_two_node_link(const Domain &domain, const int tag, const TwoNodeLinkData &data)
+    {
+      const std::string name = "twoNodeLink " + std::to_string(tag);
+      const LinkKind    kind = link_kind(domain, tag);
+      const int         n_dofs = 2 * domain.ndf;
+      LinkPDelta        p{kind, 0.0, {}, {{0, 0, 0, 0}}};
+      const Eigen::Matrix3d trans = link_axes(domain, tag, data, p.L);
+      for (const int d : data.directions)
+        {
+          if (d < 1 || d > static_cast<int>(domain.ndf))
+            throw ScriptError(name + ": -dir " + std::to_string(d) + " is not one of 1 to " +
+                              std::to_string(domain.ndf));
+          p.directions.push_back(d - 1);
+        }
+      std::array<double, 2> shear{{0.5, 0.5}};
+      std::copy(data.shear_distance.begin(), data.shear_distance.end(), shear.begin());
+      for (const double ratio : shear)
+        if (!(ratio >= 0 && ratio <= 1))
+          throw ScriptError(name + ": -shearDist ratios must be in [0, 1]");
+      const std::vector<double> &r = data.p_delta;
+      std::copy(r.begin(), r.end(), p.ratios.begin() + (4 - r.size()));
+      if (!r.empty() && (*std::min_element(r.begin(), r.end()) < 0 ||
+                         p.ratios[0] + p.ratios[1] > 1 || p.ratios[2] + p.ratios[3] > 1))
+        throw ScriptError(name + ": -pDelta ratios must be >= 0 with each pair's sum <= 1");
+      if (!r.empty() && !(p.L > 0))
+        throw ScriptError(name + ": -pDelta on a link of zero length");
+      const Matrix Tgl = link_global_to_local(kind, trans, n_dofs);
+      const Matrix Tlb = link_local_to_basic(kind, p.directions, n_dofs, p.L, shear);
+      return std::make_unique<TwoNodeLink>(domain, tag, data, Tgl, Tlb, std::move(p));
     }
 
     std::unique_ptr<Element>
@@ -392,7 +739,8 @@ namespace poundfe
           data.x[k] = x[k];
           data.y[k] = y[k];
         }
-      auto truss = std::make_unique<ZeroLength>(domain, tag, data);
+      auto truss = std::make_unique<ZeroLength>(
+        domain, tag, nodes, zero_length_rows(domain, tag, data), data.materials, rayleigh);
       truss->as_truss(length, area);
       return truss;
     }

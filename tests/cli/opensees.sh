@@ -8,7 +8,9 @@
 #     options, `exit` with the recorders' files in place;
 #  3. bad input: an unknown command, an unsupported option, a node that does
 #     not exist, a script error, a Parallel of a missing material or with a
-#     factor short, an unknown MinMax option, a Hertzdamp short of values
+#     factor short, an unknown MinMax option, a Series -iter short of its
+#     tolerance, a ViscousDamper with NM 4 or 5 values, a twoNodeLink with
+#     -mass or a direction the model lacks, a Hertzdamp short of values
 #     (OpenSees's usage line) or with a word for a number, a Steel02 with 5
 #     values, a word after ElasticPPGap's values, a
 #     BoucWen with ko < 0: one line naming the file and line, exit 1, no
@@ -38,6 +40,8 @@ run_corpus portal_frame portal_frame.tcl
 run_corpus pounding_ElasticPPGap pounding_sticks.tcl ElasticPPGap
 run_corpus pounding_ImpactMaterial pounding_sticks.tcl ImpactMaterial
 run_corpus steel01_cyclic steel01_cyclic.tcl
+run_corpus pounding_ViscousDamper pounding_sticks.tcl ViscousDamper
+run_corpus pounding_Series pounding_sticks.tcl Series
 run_corpus pounding_ImpactMaterial_ModifiedNewton_EnergyIncr pounding_sticks.tcl ImpactMaterial \
   ModifiedNewton EnergyIncr
 run_corpus portal_pdelta portal_pdelta.tcl
@@ -96,7 +100,9 @@ grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
 
 # every material's OpenSees argument order, by its initial stiffness: a
 # spring of it in parallel with an elastic one (k = 1000) under a load in its
-# elastic range moves F / (E0 + k); and a 3D zeroLength with rotated axes
+# elastic range moves F / (E0 + k); a 3D zeroLength with rotated axes; a
+# Series of springs; twoNodeLinks in 2D (shear distance and P-Delta against
+# the closed form) and 3D (-orient)
 mkdir -p "$work/materials"
 cat > "$work/materials/m.tcl" <<'TCL'
 proc check {what got expected {tolerance 1e-12}} {
@@ -142,10 +148,72 @@ analysis Static
 analyze 1
 check "3D translation" [nodeDisp 2 2] 0.02
 check "3D rotation" [nodeDisp 2 6] 0.1
+# Series of two springs: k1 k2 / (k1 + k2) beside the elastic one
+wipe
+model basic -ndm 1 -ndf 1
+node 1 0.0
+node 2 0.0
+fix 1 1
+uniaxialMaterial Elastic 5 3000.0
+uniaxialMaterial Elastic 6 6000.0
+uniaxialMaterial Series 1 5 6
+uniaxialMaterial Elastic 2 1000.0
+element zeroLength 1 1 2 -mat 1 2 -dir 1 1
+pattern Plain 1 Constant { load 2 10.0 }
+analysis Static
+analyze 1
+check Series [nodeDisp 2 1] [expr {10.0 / 3000.0}]
+# twoNodeLink in 2D: a horizontal link of length L from a fixed node (axial
+# ka, shear ks, rotation kr, -shearDist s, -pDelta r2 r3) under an axial N
+# and a transverse P: its end's shear v and rotation t solve
+#   (ks + N (1 - r2 - r3)/L) v - ks (1 - s) L t = P,
+#   (r3 N - ks (1 - s) L) v + (ks (1 - s)^2 L^2 + kr) t = 0,
+# the basic forces ks (v - (1 - s) L t) and kr t with OpenSees's P-Delta
+# shears and moment at the end
+wipe
+model basic -ndm 2 -ndf 3
+set L 2.0; set ks 400.0; set kr 900.0; set ka 1.0e5; set s 0.3; set r2 0.2; set r3 0.3
+set N -50.0; set P 10.0
+node 1 0.0 0.0
+node 2 $L 0.0
+fix 1 1 1 1
+uniaxialMaterial Elastic 1 $ka
+uniaxialMaterial Elastic 2 $ks
+uniaxialMaterial Elastic 3 $kr
+element twoNodeLink 1 1 2 -mat 1 2 3 -dir 1 2 3 -shearDist $s -pDelta $r2 $r3
+pattern Plain 1 Constant { load 2 $N $P 0.0 }
+test NormDispIncr 1.0e-14 100
+algorithm Newton
+integrator LoadControl 1.0
+analysis Static
+analyze 1
+set a11 [expr {$ks + $N * (1 - $r2 - $r3) / $L}]
+set a12 [expr {-$ks * (1 - $s) * $L}]
+set a21 [expr {$r3 * $N - $ks * (1 - $s) * $L}]
+set a22 [expr {$ks * pow((1 - $s) * $L, 2) + $kr}]
+set det [expr {$a11 * $a22 - $a12 * $a21}]
+check "twoNodeLink axial" [nodeDisp 2 1] [expr {$N / $ka}]
+check "twoNodeLink shear" [nodeDisp 2 2] [expr {$P * $a22 / $det}] 1e-10
+check "twoNodeLink rotation" [nodeDisp 2 3] [expr {-$P * $a21 / $det}] 1e-10
+# twoNodeLink in 3D along Z with yp = X: local y is global X, local z global Y
+wipe
+model basic -ndm 3 -ndf 6
+node 1 0.0 0.0 0.0
+node 2 0.0 0.0 1.5
+fix 1 1 1 1 1 1 1
+fix 2 0 0 1 1 1 1
+uniaxialMaterial Elastic 1 200.0
+uniaxialMaterial Elastic 2 800.0
+element twoNodeLink 1 1 2 -mat 1 2 -dir 2 3 -orient 1.0 0.0 0.0
+pattern Plain 1 Constant { load 2 10.0 4.0 0.0 0.0 0.0 0.0 }
+analysis Static
+analyze 1
+check "twoNodeLink 3D local y" [nodeDisp 2 1] [expr {10.0 / 200.0}]
+check "twoNodeLink 3D local z" [nodeDisp 2 2] [expr {4.0 / 800.0}]
 TCL
 "$poundfe" opensees "$work/materials/m.tcl" > "$work/materials/log" 2>&1 \
   || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
-[ "$(grep -c '^ok ' "$work/materials/log")" = 9 ] || { cat "$work/materials/log"; fail "materials"; }
+[ "$(grep -c '^ok ' "$work/materials/log")" = 15 ] || { cat "$work/materials/log"; fail "materials"; }
 
 # 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
 bad() { # NAME EXPECTED (the script on standard input)
@@ -164,8 +232,18 @@ bad() { # NAME EXPECTED (the script on standard input)
   [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
 }
 echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"' || exit 1
-echo "element twoNodeLink 1 1 2 -mat 1 -dir 1" | bad unsupported-element \
-  '5: element twoNodeLink: poundfe does not support it' || exit 1
+echo "element corotTruss 1 1 2 1.0 1" | bad unsupported-element \
+  '5: element corotTruss: poundfe does not support it' || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass 1.0\n' \
+  | bad link-mass "6: element twoNodeLink option '-mass': poundfe does not support it" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 2\n' \
+  | bad link-direction '6: element: twoNodeLink 1: -dir 2 is not one of 1 to 1' || exit 1
+printf 'uniaxialMaterial ViscousDamper 1 1.0e8 2.0e6 0.5 0.0 4 1.0e-6 1.0e-10 15\n' \
+  | bad damper-method "5: uniaxialMaterial: parameter 'NM': ViscousDamper: must be 1, 2 or 3" || exit 1
+printf 'uniaxialMaterial ViscousDamper 1 1.0e8 2.0e6 0.5 0.0 1\n' \
+  | bad damper-count '5: uniaxialMaterial: ViscousDamper does not take 5 values: want uniaxialMaterial ViscousDamper tag K C Alpha <LGap <NM RelTol AbsTol MaxHalf>>' || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial Series 2 1 1 -iter 5\n' \
+  | bad series-iter '6: uniaxialMaterial: want: uniaxialMaterial Series tag tag1 tag2 ... <-iter maxIter tol>' || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1 -doRayleigh 2\n' \
   | bad unsupported-option '6: element zeroLength -doRayleigh 2: poundfe does not support it' || exit 1
 printf 'fix 1 1\nfix 9 1\n' | bad missing-node '6: fix: node 9 does not exist' || exit 1

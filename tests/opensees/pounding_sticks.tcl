@@ -6,7 +6,11 @@
 # ViscoelasticGap, Viscous (a nonlinear damper between the two, no gap),
 # Parallel (half an ElasticPPGap beside half a ViscoelasticGap) or MinMax
 # (the ImpactMaterial failing for good at 4 mm of closure, in its third
-# impact); optionally the algorithm
+# impact), ViscousDamper (a brace and nonlinear damper linking the two,
+# Dormand-Prince), ViscousDamperABM (Adams-Bashforth-Moulton, a pin's play
+# LGap), ViscousDamperROS (Rosenbrock), Series (a yielding Steel01 link in
+# series with an elastic brace) or SeriesIter (Steel01 and Steel02 links in
+# series, -iter 10 1e-12); optionally the algorithm
 # (Newton, the default, or ModifiedNewton) and the test (NormDispIncr, the
 # default, or EnergyIncr) and the integrator's words (Newmark 0.5 0.25, the
 # default, or e.g. HHT 0.7).
@@ -57,6 +61,19 @@ switch -- $law {
     MinMax {
         uniaxialMaterial ImpactMaterial 4 2.0e9 6.0e8 -0.002 -0.01
         uniaxialMaterial MinMax 3 4 -min -0.014
+    }
+    ViscousDamper { uniaxialMaterial ViscousDamper 3 1.0e8 2.0e6 0.5 }
+    ViscousDamperABM { uniaxialMaterial ViscousDamper 3 1.0e8 2.0e6 0.35 0.002 2 1.0e-6 1.0e-10 15 }
+    ViscousDamperROS { uniaxialMaterial ViscousDamper 3 1.0e8 2.0e6 0.5 0.0 3 1.0e-6 1.0e-10 15 }
+    Series {
+        uniaxialMaterial Steel01 4 2.0e5 5.0e7 0.05
+        uniaxialMaterial Elastic 5 1.0e8
+        uniaxialMaterial Series 3 4 5
+    }
+    SeriesIter {
+        uniaxialMaterial Steel01 4 2.0e5 5.0e7 0.05
+        uniaxialMaterial Steel02 5 2.5e5 1.0e8 0.02
+        uniaxialMaterial Series 3 4 5 -iter 10 1.0e-12
     }
     default { error "pounding_sticks.tcl: no gap material '$law'" }
 }

@@ -8,7 +8,8 @@ Each model is built here again from its numbers (numpy), and integrated with
 the discrete equations OpenSees 3.8 solves: Newmark's average acceleration
 with OpenSees's initial acceleration of zero, its Newton iteration and
 convergence test, LoadControl's load factors, and the uniaxial laws as
-OpenSees's sources define them (ElasticPPGap, ImpactMaterial, Steel01). The
+OpenSees's sources define them (ElasticPPGap, ImpactMaterial, Steel01,
+ViscousDamper's Dormand-Prince sub-steps, Series's incremental iteration). The
 linear models (sdof_linear, stick3_linear, portal_frame) must agree to
 1e-10 of their peak (round-off of a few thousand steps of the recursion),
 the nonlinear ones (pounding_sticks, steel01_cyclic) to 1e-6 of their peak
@@ -204,13 +205,125 @@ def steel01(fy, E0, b):
     return respond, (0.0, 0.0, E0)
 
 
+class CommittedLaw:
+    """A law whose trial is a function of its committed state and strain."""
+    def __init__(self, respond, state):
+        self.respond, self.state, self.trial_state = respond, state, state
+
+    def trial(self, strain, rate):
+        stress, tangent, self.trial_state = self.respond(self.state, strain)
+        return stress, tangent
+
+    def commit(self):
+        self.state = self.trial_state
+
+
+class ViscousDamper:
+    """OpenSees ViscousDamper with NM = 1 (Dormand-Prince), RelTol 1e-6,
+    AbsTol 1e-10, MaxHalf 15, no LGap: dF/dt = K (v - sign(F) (|F|/C)^(1/alpha))
+    over the step dt, v linear from the committed rate to the trial one;
+    tangent 0."""
+    def __init__(self, K, C, alpha, dt):
+        self.K, self.C, self.alpha, self.dt = K, C, alpha, dt
+        self.state = self.trial_state = (0.0, 0.0)  # force, rate
+
+    def f(self, v, F):
+        return (v - (-1.0 if F < 0 else 1.0) * (abs(F) / self.C) ** (1.0 / self.alpha)) * self.K
+
+    def dormand_prince(self, v0, v1, y0, h):
+        f, dv = self.f, v1 - v0
+        k1 = f(v0, y0) * h
+        k2 = f(dv * (1 / 5) + v0, y0 + (1 / 5) * k1) * h
+        k3 = f(dv * (3 / 10) + v0, y0 + (3 / 40) * k1 + (9 / 40) * k2) * h
+        k4 = f(dv * (4 / 5) + v0, y0 + (44 / 45) * k1 + (-56 / 15) * k2 + (32 / 9) * k3) * h
+        k5 = f(dv * (8 / 9) + v0, y0 + (19372 / 6561) * k1 + (-25360 / 2187) * k2
+               + (64448 / 6561) * k3 + (-212 / 729) * k4) * h
+        k6 = f(dv + v0, y0 + (9017 / 3168) * k1 + (-355 / 33) * k2 + (46732 / 5247) * k3
+               + (49 / 176) * k4 + (-5103 / 18656) * k5) * h
+        y = y0 + (35 / 384) * k1 + (500 / 1113) * k3 + (125 / 192) * k4 \
+            + (-2187 / 6784) * k5 + (11 / 84) * k6
+        k7 = f(dv + v0, y) * h
+        error = (71 / 57600) * k1 + (-71 / 16695) * k3 + (71 / 1920) * k4 \
+            + (-17253 / 339200) * k5 + (22 / 525) * k6 + (-1 / 40) * k7
+        return y, error, abs(error / y) if y != 0 else math.inf
+
+    def trial(self, strain, rate):
+        force, rate0 = self.state
+        acc = 0.0 if rate == 0 else (rate - rate0) / self.dt
+        s, done, v0, y0, smallest = 1.0, 0.0, rate0, force, 0.5 ** 15
+        while done != 1.0:
+            v1 = v0 + acc * s * self.dt
+            y, error, relative = self.dormand_prince(v0, v1, y0, s * self.dt)
+            if relative <= 1e-6 or s == smallest or abs(error) <= 1e-10:
+                v0, y0, done = v1, y, done + s
+            else:
+                s = 0.5 * s if s > smallest else smallest
+        self.trial_state = (y0, 0.0 if rate == 0 else rate)
+        return y0, 0.0
+
+    def commit(self):
+        self.state = self.trial_state
+
+
+class Series:
+    """OpenSees SeriesMaterial of two laws (maxIter 1, tol 1e-10): from the
+    last trial, not the committed state."""
+    def __init__(self, laws, initial_tangent, max_iterations=1, tolerance=1e-10):
+        self.laws, self.max_iterations, self.tolerance = laws, max_iterations, tolerance
+        self.strain, self.stress, self.tangent = 0.0, 0.0, initial_tangent
+        self.strains, self.stresses = [0.0] * len(laws), [0.0] * len(laws)
+        self.compliances = [0.0] * len(laws)
+
+    @staticmethod
+    def inverse(x):
+        return 1.0 / x if abs(x) > 1e-12 else (-1e12 if x < 0 else 1e12)
+
+    def trial(self, strain, rate):
+        dv = strain - self.strain
+        if abs(dv) < sys.float_info.epsilon:
+            return self.stress, self.tangent
+        self.strain = strain
+        dq = self.tangent * dv
+        self.stress += dq
+        for _ in range(self.max_iterations):
+            compliance, total = 0.0, 0.0
+            for i, law in enumerate(self.laws):
+                self.strains[i] += self.compliances[i] * (self.stress - self.stresses[i])
+                self.stresses[i], tangent = law.trial(self.strains[i], 0.0)
+                self.compliances[i] = self.inverse(tangent)
+                compliance += self.compliances[i]
+                total += self.strains[i] + self.compliances[i] * (self.stress - self.stresses[i])
+            self.tangent = self.inverse(compliance)
+            dv = self.strain - total
+            dq = self.tangent * dv
+            if abs(dq * dv) < self.tolerance:
+                break
+        self.stress += dq
+        return self.stress, self.tangent
+
+    def commit(self):
+        for law in self.laws:
+            law.commit()
+
+
+def gap_law(law, dt):
+    if law == "ElasticPPGap":
+        return CommittedLaw(*eppgap(2.0e9, -4.0e6, -0.01, 0.1, True))
+    if law == "ImpactMaterial":
+        return CommittedLaw(*impact(2.0e9, 6.0e8, -0.002, -0.01))
+    if law == "ViscousDamper":
+        return ViscousDamper(1.0e8, 2.0e6, 0.5, dt)
+    spring = CommittedLaw(lambda state, strain: (1.0e8 * strain, 1.0e8, state), None)
+    return Series([CommittedLaw(*steel01(2.0e5, 5.0e7, 0.05)), spring],
+                  5.0e7 * 1.0e8 / (5.0e7 + 1.0e8))
+
+
 def pounding_sticks(law, algorithm="Newton", test="NormDispIncr"):
     m = 1.0e5
     k = np.array([m * (2 * PI / 0.5) ** 2, m * (2 * PI / 1.0) ** 2])
     c = 0.05 * 2 * np.sqrt(k * m)
-    respond, state = (eppgap(2.0e9, -4.0e6, -0.01, 0.1, True) if law == "ElasticPPGap"
-                      else impact(2.0e9, 6.0e8, -0.002, -0.01))
     dt, n, gamma, beta = 0.002, 4000, 0.5, 0.25
+    gap = gap_law(law, dt)
     ag = synthetic_record(dt, n, 0.6)
     t_gap = np.array([-1.0, 1.0])
     u, v, a = np.zeros(2), np.zeros(2), np.zeros(2)
@@ -218,8 +331,8 @@ def pounding_sticks(law, algorithm="Newton", test="NormDispIncr"):
     tolerance = 1e-14 if test == "EnergyIncr" else 1e-10
 
     def forces(u, v):
-        s, tangent, trial = respond(state, t_gap @ u)
-        return k * u + c * v + s * t_gap, np.diag(k) + tangent * np.outer(t_gap, t_gap), trial
+        s, tangent = gap.trial(t_gap @ u, t_gap @ v)
+        return k * u + c * v + s * t_gap, np.diag(k) + tangent * np.outer(t_gap, t_gap)
     time = 0.0
     for i in range(1, n + 1):
         time += dt
@@ -227,21 +340,21 @@ def pounding_sticks(law, algorithm="Newton", test="NormDispIncr"):
         vn = (1 - gamma / beta) * v + dt * (1 - 0.5 * gamma / beta) * a
         a = (1 - 0.5 / beta) * a - v / (beta * dt)
         v = vn
-        f, kt, trial = forces(u, v)
+        f, kt = forces(u, v)
         keff = kt + gamma / (beta * dt) * np.diag(c) + m / (beta * dt * dt) * np.eye(2)
         for iteration in range(50):
             if algorithm == "Newton":
                 keff = kt + gamma / (beta * dt) * np.diag(c) + m / (beta * dt * dt) * np.eye(2)
             dx = np.linalg.solve(keff, -m * (a + g) - f)
             u, v, a = u + dx, v + gamma / (beta * dt) * dx, a + dx / (beta * dt * dt)
-            f, kt, trial = forces(u, v)
+            f, kt = forces(u, v)
             norm = (0.5 * abs(dx @ (-m * (a + g) - f)) if test == "EnergyIncr"
                     else np.linalg.norm(dx))
             if norm <= tolerance:
                 break
         else:
             sys.exit(f"reference: pounding {law} did not converge at step {i}")
-        state = trial
+        gap.commit()
         rows.append([time, u[0], u[1]])
         rows_v.append([time, v[0], v[1]])
     return {f"pounding_{law}.out": np.array(rows), f"pounding_{law}_vel.out": np.array(rows_v)}
@@ -279,6 +392,8 @@ MODELS = {
     "pounding_ElasticPPGap": (lambda: pounding_sticks("ElasticPPGap"), 1e-6),
     "pounding_ImpactMaterial": (lambda: pounding_sticks("ImpactMaterial"), 1e-6),
     "steel01_cyclic": (steel01_cyclic, 1e-6),
+    "pounding_ViscousDamper": (lambda: pounding_sticks("ViscousDamper"), 1e-6),
+    "pounding_Series": (lambda: pounding_sticks("Series"), 1e-6),
     "pounding_ImpactMaterial_ModifiedNewton_EnergyIncr":
         (lambda: pounding_sticks("ImpactMaterial", "ModifiedNewton", "EnergyIncr"), 1e-6),
 }

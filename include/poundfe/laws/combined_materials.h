@@ -11,6 +11,17 @@
 //   outside fails the material (stress 0, tangent 1e-8 times the
 //   component's initial tangent, damping tangent 0), and a committed failure
 //   is for good.
+// Series (SeriesMaterial): the components carry one stress sigma at strains
+//   eps_i summing to eps. From the last trial (not the committed state:
+//   OpenSees's iteration is incremental), sigma += E (eps - eps_last); then
+//   up to maxIter times: each component's strain eps_i += (sigma - sigma_i)
+//   / E_i at its last stress sigma_i and tangent E_i, evaluated there (at
+//   rate 0), E = 1 / sum 1/E_i (each 1/E_i, and 1/E, kept within
+//   [-1e12, 1e12]), the residual strain dv = eps - sum (eps_i + (sigma -
+//   sigma_i) / E_i) and dq = E dv, stopping when |dq dv| < tol; sigma += dq
+//   of the last pass. A strain change below machine epsilon changes nothing.
+//   Initial tangent 1 / sum 1/E0_i; no damping tangent (the components see
+//   no rate).
 #ifndef poundfe_laws_combined_materials_h
 #define poundfe_laws_combined_materials_h
 
@@ -45,6 +56,40 @@ namespace poundfe
     std::vector<std::unique_ptr<UniaxialLaw>> parts;
     std::vector<double>                       factors;
     std::string                               why;
+  };
+
+  class SeriesUniaxial : public UniaxialLaw
+  {
+  public:
+    SeriesUniaxial(std::vector<std::unique_ptr<UniaxialLaw>> parts, unsigned int max_iterations,
+                   double tolerance);
+
+    bool        set_trial(double strain, double rate) override;
+    std::string failure() const override { return why; }
+    double      force() const override { return trial.stress; }
+    double      tangent() const override { return trial.tangent; }
+    double      stored_energy() const override;
+    double      initial_stiffness() const override;
+    void        commit() override;
+    void        revert() override;
+    void        reset() override;
+
+  private:
+    /// One pass over the components at the trial stress; the residual strain.
+    double balance();
+
+    struct State
+    {
+      double strain = 0, stress = 0, tangent = 0;
+    };
+    std::vector<std::unique_ptr<UniaxialLaw>> parts;
+    unsigned int                              max_iterations;
+    double                                    tolerance;
+    State                                     trial, committed;
+    /// Each component's last strain, stress and compliance 1/E_i, and its
+    /// strain at the last commit.
+    std::vector<double> strains, stresses, compliances, committed_strains;
+    std::string         why;
   };
 
   class MinMaxUniaxial : public UniaxialLaw

@@ -195,13 +195,16 @@ namespace poundfe
 
     /// A material of other materials (laws/combined_materials.h), made from
     /// its components' tags when an element is: Parallel (with its factors,
-    /// empty: 1) or MinMax (one component and its strain limits).
+    /// empty: 1), Series (with -iter's maxIter and tol) or MinMax (one
+    /// component and its strain limits).
     struct CombinedMaterial
     {
       std::string         type;
       std::vector<int>    components;
       std::vector<double> factors;
       double              min_strain = -1.0e16, max_strain = 1.0e16; // OpenSees's defaults
+      unsigned int        max_iterations = 1;
+      double              tolerance      = 1.0e-10;
     };
 
     /// What a script built; the analysis (opensees_analysis.h) moves it.
@@ -213,6 +216,8 @@ namespace poundfe
       std::map<int, MaterialParameters>       materials;
       std::map<int, CombinedMaterial>         combined_materials;
       std::map<int, Transformation>           transformations;
+      /// The vecxz of each 3D geomTransf (by its tag).
+      std::map<int, std::array<double, 3>>    vecxz;
       /// Sections by tag, each cloned into every integration point.
       std::map<int, std::shared_ptr<const SectionLaw>> sections;
       std::map<int, IntegrationSpec>   integrations;
@@ -221,6 +226,10 @@ namespace poundfe
       std::vector<EqualDof>                   equal_dofs;
       RayleighFactors                         rayleigh;
       double                                  time = 0; // committed
+      /// OpenSees's global ops_Dt: the step of the last transient
+      /// `analyze` (0 until then), over which a ViscousDamper integrates.
+      /// Its materials hold a reference to it: a Domain is never moved.
+      double time_step = 0;
       /// Set whenever nodes, elements or constraints change: the analysis
       /// numbers the equations again.
       bool changed = true;
@@ -252,6 +261,19 @@ namespace poundfe
     std::unique_ptr<Element> make_elastic_beam_2d(const Domain &domain, int tag,
                                                   std::array<int, 2> nodes, double A, double E,
                                                   double I, Transformation transformation);
+
+    /// elasticBeamColumn in 3D (OpenSees's ElasticBeam3d with
+    /// LinearCrdTransf3d or PDeltaCrdTransf3d): local axes x along the
+    /// member, y = vecxz × x, z = x × y.
+    struct ElasticSection3d
+    {
+      double A = 0, E = 0, G = 0, J = 0, Iy = 0, Iz = 0;
+    };
+    std::unique_ptr<Element> make_elastic_beam_3d(const Domain &domain, int tag,
+                                                  std::array<int, 2>   nodes,
+                                                  const ElasticSection3d &section,
+                                                  Transformation        transformation,
+                                                  const std::array<double, 3> &vecxz);
 
     /// forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn in 2D on the
     /// domain's integration (OpenSees's ForceBeamColumn2d, DispBeamColumn2d).
@@ -293,6 +315,25 @@ namespace poundfe
     };
     std::unique_ptr<Element> make_zero_length(const Domain &domain, int tag,
                                               const ZeroLengthData &data);
+    /// twoNodeLink (OpenSees's TwoNodeLink): uniaxial materials on the
+    /// basic deformations of directions 1 to the node's number of DOFs (the
+    /// local DOFs of node j minus node i, shear with the moments of
+    /// -shearDist), on the local axes of -orient or of the nodes; -pDelta's
+    /// moment ratios (2D: rMz1 rMz2; 3D: rMy1 rMy2 rMz1 rMz2).
+    struct TwoNodeLinkData
+    {
+      std::array<int, 2>    nodes{};
+      std::vector<int>      materials;
+      std::vector<int>      directions; // 1-based
+      /// -orient: x and yp (6 values), or one vector (3 values: x in 1D and
+      /// 2D, yp in 3D).
+      std::vector<double>   orient;
+      std::vector<double>   p_delta;        // empty: no P-Delta
+      std::vector<double>   shear_distance; // empty: 0.5 0.5
+      bool                  rayleigh = false;
+    };
+    std::unique_ptr<Element> make_two_node_link(const Domain &domain, int tag,
+                                                const TwoNodeLinkData &data);
     /// truss: a uniaxial material over the area A along the member, small
     /// strains (OpenSees's Truss); Rayleigh-damped only when asked.
     std::unique_ptr<Element> make_truss(const Domain &domain, int tag, std::array<int, 2> nodes,
