@@ -102,11 +102,12 @@ grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
 # spring of it in parallel with an elastic one (k = 1000) under a load in its
 # elastic range moves F / (E0 + k); a 3D zeroLength with rotated axes; a
 # Series of springs; twoNodeLinks in 2D (shear distance and P-Delta against
-# the closed form) and 3D (-orient)
+# the closed form) and 3D (-orient); a 3D elasticBeamColumn cantilever
+# (Linear: axial, both bending planes, torsion; PDelta: the sway)
 mkdir -p "$work/materials"
 cat > "$work/materials/m.tcl" <<'TCL'
 proc check {what got expected {tolerance 1e-12}} {
-    if {abs($got - $expected) > $tolerance * abs($expected)} {
+    if {!(abs($expected) < 1e300) || abs($got - $expected) > $tolerance * abs($expected)} {
         error "$what: $got, expected $expected"
     }
     puts "ok $what"
@@ -210,10 +211,49 @@ analysis Static
 analyze 1
 check "twoNodeLink 3D local y" [nodeDisp 2 1] [expr {10.0 / 200.0}]
 check "twoNodeLink 3D local z" [nodeDisp 2 2] [expr {4.0 / 800.0}]
+# elasticBeamColumn in 3D: a cantilever along global Y with vecxz = X (local
+# y is global Z, local z global X) under tip forces and a torque: the
+# cantilever's closed forms about each axis
+wipe
+model basic -ndm 3 -ndf 6
+set L 3.0; set E 2.0e11; set G 8.0e10; set A 0.01; set J 2.0e-5; set Iy 3.0e-5; set Iz 7.0e-5
+node 1 0.0 0.0 0.0
+node 2 0.0 $L 0.0
+fix 1 1 1 1 1 1 1
+geomTransf Linear 1 1.0 0.0 0.0
+element elasticBeamColumn 1 1 2 $A $E $G $J $Iy $Iz 1
+pattern Plain 1 Constant { load 2 3.0e3 5.0e4 2.0e3 0.0 4.0e2 0.0 }
+analysis Static
+analyze 1
+check "3D beam axial" [nodeDisp 2 2] [expr {5.0e4 * $L / ($E * $A)}] 1e-10
+check "3D beam about local z" [nodeDisp 2 3] [expr {2.0e3 * pow($L, 3) / (3 * $E * $Iz)}] 1e-10
+check "3D beam rotation about local z" [nodeDisp 2 4] [expr {2.0e3 * $L * $L / (2 * $E * $Iz)}] 1e-10
+check "3D beam about local y" [nodeDisp 2 1] [expr {3.0e3 * pow($L, 3) / (3 * $E * $Iy)}] 1e-10
+check "3D beam torsion" [nodeDisp 2 5] [expr {4.0e2 * $L / ($G * $J)}] 1e-10
+# PDelta in 3D: a column along Z under -P and a lateral H along X (local z):
+# the tip's w and rotation from the member's stiffness plus N/L on w, N = -P
+wipe
+model basic -ndm 3 -ndf 6
+node 1 0.0 0.0 0.0
+node 2 0.0 0.0 $L
+fix 1 1 1 1 1 1 1
+geomTransf PDelta 1 1.0 0.0 0.0
+element elasticBeamColumn 1 1 2 $A $E $G $J $Iy $Iz 1
+set P 1.0e6; set H 1.0e3
+pattern Plain 1 Constant { load 2 $H 0.0 [expr {-$P}] 0.0 0.0 0.0 }
+test NormDispIncr 1.0e-14 50
+algorithm Newton
+integrator LoadControl 1.0
+analysis Static
+analyze 1
+set a [expr {12 * $E * $Iy / pow($L, 3) - $P / $L}]
+set b [expr {6 * $E * $Iy / pow($L, 2)}]
+set c [expr {4 * $E * $Iy / $L}]
+check "3D PDelta sway" [nodeDisp 2 1] [expr {$H * $c / ($a * $c - $b * $b)}] 1e-10
 TCL
 "$poundfe" opensees "$work/materials/m.tcl" > "$work/materials/log" 2>&1 \
   || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
-[ "$(grep -c '^ok ' "$work/materials/log")" = 15 ] || { cat "$work/materials/log"; fail "materials"; }
+[ "$(grep -c '^ok ' "$work/materials/log")" = 21 ] || { cat "$work/materials/log"; fail "materials"; }
 
 # 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
 bad() { # NAME EXPECTED (the script on standard input)
