@@ -101,6 +101,10 @@ CASES = {
     # six-material links (-orient, -pDelta, -doRayleigh) and a diagonal gap
     "links_2d": ("two_node_links.tcl", ["2d"], 1e-9),
     "links_3d": ("two_node_links.tcl", ["3d"], 1e-9),
+    # a 3D frame of elasticBeamColumns (PDelta columns, Linear beams, vecxz)
+    # pounding a neighbour's column through a twoNodeLink gap, gravity then
+    # the record along X and Y
+    "frame_3d_elastic": ("elastic_frame_3d.tcl", [], 1e-9),
     # ElasticPPGap with Fy > 0 and gap < 0: strain 0 is past the yield strain,
     # yet the virgin elastic range stays [gap, Fy/E + gap] (OpenSees 3.8's
     # constructor, with its warning on the alternate signs)
