@@ -105,6 +105,9 @@ CASES = {
     # pounding a neighbour's column through a twoNodeLink gap, gravity then
     # the record along X and Y
     "frame_3d_elastic": ("elastic_frame_3d.tcl", [], 1e-9),
+    # forceBeamColumn columns and dispBeamColumn beams on 3D fibre sections
+    # (-GJ), gravity then two components
+    "frame_3d_fibre": ("fibre_frame_3d.tcl", [], 1e-6),
     # ElasticPPGap with Fy > 0 and gap < 0: strain 0 is past the yield strain,
     # yet the virgin elastic range stays [gap, Fy/E + gap] (OpenSees 3.8's
     # constructor, with its warning on the alternate signs)

@@ -51,6 +51,7 @@ namespace poundfe
       bool                           without_bodies = false;
       std::shared_ptr<FibreGeometry> open_fibres;
       int                            open_section = 0;
+      double                         open_torsion = 0; // its GJ (3D)
       /// Every command defined, and whether poundfe implements it.
       std::map<std::string, bool> commands;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`

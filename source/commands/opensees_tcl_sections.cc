@@ -50,25 +50,46 @@ namespace poundfe
           throw ScriptError("section " + std::to_string(tag) + " exists already");
       }
 
+      /// The plane or 3D (-ndm 3 -ndf 6) domain of a section or beam-column.
+      opensees::Domain &
+      frame_domain(Session &s, const std::string &what)
+      {
+        opensees::Domain &d = s.domain;
+        if (d.ndm == 3 && d.ndf == 6)
+          return d;
+        return plane_domain(s, what);
+      }
+
+      /// In 3D the section's torsional rigidity GJ (FiberSection3d's -GJ).
       void
-      add_fibre_section(opensees::Domain &d, const int tag, const FibreGeometry &geometry)
+      add_fibre_section(opensees::Domain &d, const int tag, const FibreGeometry &geometry,
+                        const double torsion)
       {
         if (geometry.fibres.empty())
           throw ScriptError("section Fiber " + std::to_string(tag) + " has no fibre");
-        add_section(d, tag, std::make_shared<FibreSection>(geometry, 2));
+        add_section(d, tag, std::make_shared<FibreSection>(geometry, d.ndm == 3 ? 4 : 2, torsion));
       }
 
       void
       fibre_section(Session &s, opensees::Domain &d, Words &w, const int tag)
       {
-        if (w.peek() == "-GJ")
+        double torsion = 0;
+        if (w.peek() == "-GJ" && d.ndm != 3)
           unsupported("section Fiber -GJ in the plane");
+        if (w.peek() == "-GJ")
+          {
+            w.word("-GJ");
+            torsion = w.real("GJ");
+          }
+        else if (d.ndm == 3)
+          throw ScriptError("a 3D section Fiber needs -GJ (poundfe has no -torsion)");
         if (w.done() && s.without_bodies) // OpenSeesPy: the fibres follow it
           {
             if (d.sections.count(tag))
               throw ScriptError("section " + std::to_string(tag) + " exists already");
             s.open_fibres  = std::make_shared<FibreGeometry>();
             s.open_section = tag;
+            s.open_torsion = torsion;
             s.fibres       = s.open_fibres.get();
             return;
           }
@@ -81,7 +102,7 @@ namespace poundfe
         s.fibres       = nullptr;
         if (code != TCL_OK)
           throw ScriptError(Tcl_GetStringResult(w.interp));
-        add_fibre_section(d, tag, geometry);
+        add_fibre_section(d, tag, geometry, torsion);
       }
 
       /// Aggregator: mat dof pairs (P, Mz), then -section base.
@@ -150,9 +171,20 @@ namespace poundfe
       section(Session &s, Words &w)
       {
         const std::string type = w.word("the section's type");
-        opensees::Domain &d    = plane_domain(s, "section " + type);
-        const int         tag  = w.integer("the section's tag");
-        if (type == "Elastic")
+        opensees::Domain &d =
+          type == "Aggregator" ? plane_domain(s, "section " + type) : frame_domain(s, "section " + type);
+        const int tag = w.integer("the section's tag");
+        if (type == "Elastic" && d.ndm == 3)
+          {
+            const double E = w.real("E"), A = w.real("A"), Iz = w.real("Iz"), Iy = w.real("Iy"),
+                         G = w.real("G"), J = w.real("J");
+            if (!w.done())
+              unsupported("section Elastic with shear (alphaY alphaZ)");
+            if (!(E > 0 && A > 0 && Iz > 0 && Iy > 0 && G > 0 && J > 0))
+              throw ScriptError("section Elastic needs E, A, Iz, Iy, G, J > 0");
+            add_section(d, tag, std::make_shared<ElasticSection>(E * A, E * Iz, E * Iy, G * J));
+          }
+        else if (type == "Elastic")
           {
             const double E = w.real("E"), A = w.real("A"), I = w.real("Iz");
             if (!w.done())
@@ -290,7 +322,7 @@ namespace poundfe
       beam_integration(Session &s, Words &w)
       {
         const std::string type = w.word("the rule's type");
-        opensees::Domain &d    = plane_domain(s, "beamIntegration " + type);
+        opensees::Domain &d    = frame_domain(s, "beamIntegration " + type);
         const int         tag  = w.integer("the rule's tag");
         using Kind             = opensees::IntegrationSpec::Kind;
         opensees::IntegrationSpec r;
@@ -357,7 +389,7 @@ namespace poundfe
     void
     beam_column_element(Session &s, Words &w, const std::string &type)
     {
-      opensees::Domain  &d   = plane_domain(s, "element " + type);
+      opensees::Domain  &d   = frame_domain(s, "element " + type);
       const int          tag = w.integer("the element's tag");
       std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
       const std::vector<int> numbers = w.integers("a tag");
@@ -391,8 +423,12 @@ namespace poundfe
         throw ScriptError("geomTransf " + std::to_string(transf) + " does not exist");
       const auto kind = type == "dispBeamColumn" ? opensees::BeamColumnKind::displacement_based :
                                                    opensees::BeamColumnKind::force_based;
-      add_element(d,
-                  opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
+      if (d.ndm == 3)
+        add_element(d, opensees::make_beam_column_3d(d, tag, nodes, kind, t->second,
+                                                     d.vecxz.at(transf), rule, iteration));
+      else
+        add_element(d,
+                    opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
       add_lumped_mass(d, nodes, rho);
     }
 
@@ -404,7 +440,7 @@ namespace poundfe
       const std::shared_ptr<FibreGeometry> geometry = std::move(s.open_fibres);
       s.open_fibres.reset();
       s.fibres = nullptr;
-      add_fibre_section(s.domain, s.open_section, *geometry);
+      add_fibre_section(s.domain, s.open_section, *geometry, s.open_torsion);
     }
 
     void

@@ -1,5 +1,8 @@
 // The distributed-plasticity beam-columns of an OpenSees script in the
-// plane: forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn on the
+// plane and in space (BeamColumn<2>, BeamColumn<3>; in space on a Linear or
+// PDelta transformation with the geomTransf's vecxz, without element loads,
+// the localForce of ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI, MzI, N, -Vy,
+// Vz, T, MyJ, MzJ)): forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn on the
 // sections of a `beamIntegration` (elements/beam_column.h: OpenSees's
 // ForceBeamColumn2d and DispBeamColumn2d state determinations), and
 // elasticBeamColumn on a Corotational transformation; the force-based one
@@ -20,6 +23,8 @@
 #include <poundfe/elements/beam_column.h>
 #include <poundfe/opensees/opensees_domain.h>
 #include <poundfe/sections/elastic_section.h>
+
+#include <Eigen/Geometry>
 
 namespace poundfe
 {
@@ -137,15 +142,119 @@ namespace poundfe
         return Element::response(words);
       }
 
+      /// The section of `tag` with the member's resultants (2: plane, 4: space).
       const SectionLaw &
-      section_of(const Domain &domain, const int tag)
+      section_of(const Domain &domain, const int tag, const unsigned int n_resultants)
       {
         const auto it = domain.sections.find(tag);
         if (it == domain.sections.end())
           throw ScriptError("section " + std::to_string(tag) + " does not exist");
-        if (it->second->n_resultants() != 2)
-          throw ScriptError("section " + std::to_string(tag) + " is not a plane section");
+        if (it->second->n_resultants() != n_resultants)
+          throw ScriptError("section " + std::to_string(tag) + " is not a " +
+                            (n_resultants == 2 ? "plane" : "3D") + " section");
         return *it->second;
+      }
+
+      /// The member of a beam-column on the domain's integration rule.
+      template <int dim>
+      std::unique_ptr<BeamColumn<dim>>
+      make_member(const Domain &domain, const CrdTransformation<dim> &transf,
+                  const BeamColumnKind kind, const IntegrationSpec &integration,
+                  const OpenSeesIteration &iteration)
+      {
+        constexpr unsigned int n_resultants = MemberSize<dim>::resultants;
+        BeamIntegration                          rule;
+        std::vector<std::unique_ptr<SectionLaw>> sections;
+        using Kind = IntegrationSpec::Kind;
+        if (integration.kind == Kind::hinge_radau)
+          {
+            rule = hinge_radau_integration(integration.hinge_length_i,
+                                           integration.hinge_length_j, transf.initial_length());
+            // OpenSees's HingeRadau: end I's section at xi = 0 only, end J's at
+            // xi = 1 only; the points at 8 lp/3 and the interior's take the
+            // interior section (OPS_HingeRadauBeamIntegration's secTags)
+            const SectionLaw &end_i    = section_of(domain, integration.section_i, n_resultants);
+            const SectionLaw &interior = section_of(domain, integration.section, n_resultants);
+            const SectionLaw &end_j    = section_of(domain, integration.section_j, n_resultants);
+            for (const SectionLaw *s : {&end_i, &interior, &interior, &interior, &interior, &end_j})
+              sections.push_back(s->clone());
+          }
+        else
+          {
+            rule     = integration.kind == Kind::lobatto ? lobatto_integration(integration.n_points) :
+                                                           legendre_integration(integration.n_points);
+            sections = sections_along(rule, section_of(domain, integration.section, n_resultants));
+          }
+        if (kind == BeamColumnKind::displacement_based)
+          return std::make_unique<DispBeamColumn<dim>>(transf, rule, std::move(sections));
+        auto force_based = std::make_unique<ForceBeamColumn<dim>>(transf, rule, std::move(sections));
+        force_based->use_opensees_iteration(iteration);
+        return force_based;
+      }
+
+      /// A 3D beam-column of poundfe's BeamColumn<3> (no element loads). Its
+      /// localForce as OpenSees's ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI,
+      /// MzI, N, -Vy, Vz, T, MyJ, MzJ) with Vy = (MzI + MzJ)/L, Vz = (MyI +
+      /// MyJ)/L.
+      class BeamColumnElement3d : public Element
+      {
+      public:
+        BeamColumnElement3d(const int tag, const std::array<int, 2> nodes,
+                            std::unique_ptr<BeamColumn<3>> beam)
+          : Element(tag, {nodes[0], nodes[1]})
+          , member(std::move(beam))
+        {
+          committed_tangent = tangent();
+        }
+
+        unsigned int n_dofs() const override { return 12; }
+        bool         rayleigh_damped() const override { return true; }
+        bool
+        set_trial(const Vector &u, const Vector &) override
+        {
+          return member->set_trial(BeamColumn<3>::GlobalVector(u));
+        }
+        Vector      force() const override { return member->resisting_force(); }
+        Matrix      tangent() const override { return member->tangent(); }
+        Matrix      initial_tangent() const override { return member->initial_tangent(); }
+        void        commit() override { member->commit(); }
+        void        revert() override { member->revert(); }
+        void        reset() override { member->reset(); }
+        std::string failure() const override { return member->failure(); }
+        std::vector<double> response(const std::vector<std::string> &words) const override;
+
+      private:
+        std::unique_ptr<BeamColumn<3>> member;
+      };
+
+      std::vector<double>
+      BeamColumnElement3d::response(const std::vector<std::string> &words) const
+      {
+        const std::string what = words.empty() ? "" : words[0];
+        const auto       &q    = member->basic_force();
+        if (words.size() == 1 && (what == "localForce" || what == "localForces"))
+          {
+            const double L = member->length(), vy = (q[1] + q[2]) / L, vz = (q[3] + q[4]) / L;
+            return {-q[0], vy, -vz, -q[5], q[3], q[1], q[0], -vy, vz, q[5], q[4], q[2]};
+          }
+        if (words.size() == 1 && (what == "basicForce" || what == "basicForces"))
+          return values_of(q);
+        if (words.size() == 1 && (what == "basicDeformation" || what == "chordRotation" ||
+                                  what == "chordDeformation"))
+          return values_of(member->basic_deformation());
+        if (words.size() == 3 && what == "section")
+          {
+            const int i = std::atoi(words[1].c_str());
+            if (i < 1 || i > static_cast<int>(member->n_points()))
+              throw ScriptError("element " + std::to_string(tag) + " has no section " +
+                                words[1] + " (1 to " + std::to_string(member->n_points()) + ")");
+            const SectionLaw &s = member->section(i - 1);
+            if (words[2] == "force" || words[2] == "forces")
+              return values_of(s.resultant());
+            if (words[2] == "deformation" || words[2] == "deformations")
+              return values_of(s.deformation());
+          }
+        return Element::response(words);
       }
 
       CrdTransformation<2>
@@ -168,42 +277,37 @@ namespace poundfe
                         const IntegrationSpec &integration, const OpenSeesIteration &iteration)
     {
       const CrdTransformation<2> transf = transformation_of(domain, nodes, transformation, tag);
-      BeamIntegration            rule;
-      std::vector<std::unique_ptr<SectionLaw>> sections;
-      using Kind = IntegrationSpec::Kind;
-      if (integration.kind == Kind::hinge_radau)
-        {
-          rule     = hinge_radau_integration(integration.hinge_length_i,
-                                             integration.hinge_length_j, transf.initial_length());
-          // OpenSees's HingeRadau: end I's section at xi = 0 only, end J's at
-          // xi = 1 only; the points at 8 lp/3 and the interior's take the
-          // interior section (OPS_HingeRadauBeamIntegration's secTags)
-          const SectionLaw &end_i    = section_of(domain, integration.section_i);
-          const SectionLaw &interior = section_of(domain, integration.section);
-          const SectionLaw &end_j    = section_of(domain, integration.section_j);
-          for (const SectionLaw *s : {&end_i, &interior, &interior, &interior, &interior, &end_j})
-            sections.push_back(s->clone());
-        }
-      else
-        {
-          rule     = integration.kind == Kind::lobatto ? lobatto_integration(integration.n_points) :
-                                                         legendre_integration(integration.n_points);
-          sections = sections_along(rule, section_of(domain, integration.section));
-        }
-      std::unique_ptr<BeamColumn<2>> beam;
-      if (kind == BeamColumnKind::force_based)
-        {
-          auto force_based = std::make_unique<ForceBeamColumn<2>>(transf, rule, std::move(sections));
-          force_based->use_opensees_iteration(iteration);
-          beam = std::move(force_based);
-        }
-      else
-        beam = std::make_unique<DispBeamColumn<2>>(transf, rule, std::move(sections));
+      std::unique_ptr<BeamColumn<2>> beam =
+        make_member<2>(domain, transf, kind, integration, iteration);
       // element loads on the displacement-based element only: the force-based
       // one would need them in its force interpolation
       const bool takes_loads =
         kind == BeamColumnKind::displacement_based && transformation != Transformation::corotational;
       return std::make_unique<BeamColumnElement>(tag, nodes, std::move(beam), takes_loads);
+    }
+
+    std::unique_ptr<Element>
+    make_beam_column_3d(const Domain &domain, const int tag, const std::array<int, 2> nodes,
+                        const BeamColumnKind kind, const Transformation transformation,
+                        const std::array<double, 3> &vecxz, const IntegrationSpec &integration,
+                        const OpenSeesIteration &iteration)
+    {
+      if (transformation == Transformation::corotational)
+        throw ScriptError("element " + std::to_string(tag) +
+                          ": a Corotational transformation in 3D: poundfe does not support it");
+      const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
+      const Eigen::Vector3d i(a[0], a[1], a[2]), j(b[0], b[1], b[2]);
+      if (i == j)
+        throw ScriptError("element " + std::to_string(tag) + " has zero length");
+      const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
+      if (!((j - i).cross(v).norm() > 0))
+        throw ScriptError("element " + std::to_string(tag) +
+                          ": the transformation's vecxz is parallel to its axis");
+      CrdTransformation<3> transf(transformation, i, j, Eigen::Vector3d::Zero(),
+                                  Eigen::Vector3d::Zero(), v);
+      transf.use_opensees_tangent();
+      return std::make_unique<BeamColumnElement3d>(
+        tag, nodes, make_member<3>(domain, transf, kind, integration, iteration));
     }
 
     std::unique_ptr<Element>

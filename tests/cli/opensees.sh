@@ -103,7 +103,8 @@ grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
 # elastic range moves F / (E0 + k); a 3D zeroLength with rotated axes; a
 # Series of springs; twoNodeLinks in 2D (shear distance and P-Delta against
 # the closed form) and 3D (-orient); a 3D elasticBeamColumn cantilever
-# (Linear: axial, both bending planes, torsion; PDelta: the sway)
+# (Linear: axial, both bending planes, torsion; PDelta: the sway); 3D
+# forceBeamColumn and dispBeamColumn on an elastic fibre section
 mkdir -p "$work/materials"
 cat > "$work/materials/m.tcl" <<'TCL'
 proc check {what got expected {tolerance 1e-12}} {
@@ -250,10 +251,38 @@ set a [expr {12 * $E * $Iy / pow($L, 3) - $P / $L}]
 set b [expr {6 * $E * $Iy / pow($L, 2)}]
 set c [expr {4 * $E * $Iy / $L}]
 check "3D PDelta sway" [nodeDisp 2 1] [expr {$H * $c / ($a * $c - $b * $b)}] 1e-10
+# forceBeamColumn and dispBeamColumn in 3D on an elastic fibre section (-GJ):
+# a cantilever along Z (vecxz X: local y is -Y, local z is X) under tip
+# forces and a torque; the fibres' own A, Iz = b h^3/12 (1 - 1/nY^2), Iy
+# likewise: both elements are exact for end loads on a prismatic member
+foreach element {forceBeamColumn dispBeamColumn} {
+    wipe
+    model basic -ndm 3 -ndf 6
+    set L 2.5; set E 2.0e11; set GJ 4.0e7; set b 0.3; set hh 0.5; set nY 10; set nZ 6
+    node 1 0.0 0.0 0.0
+    node 2 0.0 0.0 $L
+    fix 1 1 1 1 1 1 1
+    uniaxialMaterial Elastic 1 $E
+    section Fiber 1 -GJ $GJ {
+        patch rect 1 $nY $nZ [expr {-$hh / 2}] [expr {-$b / 2}] [expr {$hh / 2}] [expr {$b / 2}]
+    }
+    geomTransf Linear 1 1.0 0.0 0.0
+    beamIntegration Lobatto 1 1 5
+    element $element 1 1 2 1 1
+    pattern Plain 1 Constant { load 2 2.0e3 3.0e3 -4.0e4 0.0 0.0 5.0e2 }
+    analysis Static
+    analyze 1
+    set Iz [expr {$b * pow($hh, 3) / 12 * (1 - 1.0 / ($nY * $nY))}]
+    set Iy [expr {$hh * pow($b, 3) / 12 * (1 - 1.0 / ($nZ * $nZ))}]
+    check "$element 3D about local y" [nodeDisp 2 1] [expr {2.0e3 * pow($L, 3) / (3 * $E * $Iy)}] 1e-9
+    check "$element 3D about local z" [nodeDisp 2 2] [expr {3.0e3 * pow($L, 3) / (3 * $E * $Iz)}] 1e-9
+    check "$element 3D axial" [nodeDisp 2 3] [expr {-4.0e4 * $L / ($E * $b * $hh)}] 1e-9
+    check "$element 3D torsion" [nodeDisp 2 6] [expr {5.0e2 * $L / $GJ}] 1e-9
+}
 TCL
 "$poundfe" opensees "$work/materials/m.tcl" > "$work/materials/log" 2>&1 \
   || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
-[ "$(grep -c '^ok ' "$work/materials/log")" = 21 ] || { cat "$work/materials/log"; fail "materials"; }
+[ "$(grep -c '^ok ' "$work/materials/log")" = 29 ] || { cat "$work/materials/log"; fail "materials"; }
 
 # 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
 bad() { # NAME EXPECTED (the script on standard input)

@@ -289,6 +289,15 @@ namespace poundfe
                                                  Transformation           transformation,
                                                  const IntegrationSpec   &integration,
                                                  const OpenSeesIteration &iteration);
+    /// forceBeamColumn and dispBeamColumn in 3D (BeamColumn<3>: OpenSees's
+    /// ForceBeamColumn3d, DispBeamColumn3d) on a Linear or PDelta
+    /// transformation with the geomTransf's vecxz; no element loads.
+    std::unique_ptr<Element> make_beam_column_3d(const Domain &domain, int tag,
+                                                 std::array<int, 2> nodes, BeamColumnKind kind,
+                                                 Transformation               transformation,
+                                                 const std::array<double, 3> &vecxz,
+                                                 const IntegrationSpec       &integration,
+                                                 const OpenSeesIteration     &iteration);
     /// elasticBeamColumn on a Corotational transformation: the exact
     /// elastic basic stiffness (a displacement-based member on an elastic
     /// section with two Gauss points) on the corotational basic system, as
