@@ -3,7 +3,9 @@ results (float, list of floats, int, list of ints, None), list arguments
 (a Path series' values as a list, a tuple, a NumPy array or words of their
 own; NumPy scalars), the errors (OpenSeesError naming the command and the
 caller's line; a command poundfe lacks; a bad argument), `wipe` between two
-models, and the commands made from the core's own list."""
+models, the commands made from the core's own list, a 3D fibre section
+with '-GJ' filled by later calls (a cantilever against its closed form),
+and twoNodeLink, Series and ViscousDamper made with OpenSeesPy's words."""
 
 import math
 import os
@@ -178,6 +180,50 @@ class ConventionsTest(TestCase):
             ops.patch('rect', 1, 1, 1, -0.1, -0.1, 0.1, 0.1)
         self.assertTrue(str(raised.exception).startswith(
             "patch: patch needs a section Fiber before it"))
+
+    def test_fibre_section_in_3d_with_gj(self):
+        # OpenSeesPy's section('Fiber', tag, '-GJ', GJ) and its patch after
+        # it, on a 3D forceBeamColumn cantilever along Z (vecxz X: local z
+        # is X): the tip's PL^3/3EIy with the fibres' own Iy, and TL/GJ
+        ops.wipe()
+        ops.model('basic', '-ndm', 3, '-ndf', 6)
+        length, modulus, torsion, b, h, n_z = 2.0, 2.0e11, 3.0e7, 0.3, 0.4, 6
+        ops.node(1, 0.0, 0.0, 0.0)
+        ops.node(2, 0.0, 0.0, length)
+        ops.fix(1, 1, 1, 1, 1, 1, 1)
+        ops.uniaxialMaterial('Elastic', 1, modulus)
+        ops.section('Fiber', 1, '-GJ', torsion)
+        ops.patch('rect', 1, 8, n_z, -h / 2, -b / 2, h / 2, b / 2)
+        ops.geomTransf('Linear', 1, 1.0, 0.0, 0.0)
+        ops.beamIntegration('Lobatto', 1, 1, 5)
+        ops.element('forceBeamColumn', 1, 1, 2, 1, 1)
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(2, 1.0e3, 0.0, 0.0, 0.0, 0.0, 2.0e2)
+        static_analysis()
+        self.assertEqual(ops.analyze(1), 0)
+        inertia_y = h * b ** 3 / 12 * (1 - 1.0 / n_z ** 2)
+        self.assertAlmostEqual(ops.nodeDisp(2, 1) / (1.0e3 * length ** 3 / (3 * modulus * inertia_y)),
+                               1.0, delta=1e-9)
+        self.assertAlmostEqual(ops.nodeDisp(2, 6) / (2.0e2 * length / torsion), 1.0, delta=1e-9)
+
+    def test_link_and_damper_arguments(self):
+        # twoNodeLink with its options and a ViscousDamper, Series: made as
+        # OpenSeesPy makes them, the link's basicForce as a list
+        sdof()
+        ops.uniaxialMaterial('ViscousDamper', 2, 1.0e3, 50.0, 0.5)
+        ops.uniaxialMaterial('Series', 3, 1, 1, '-iter', 5, 1.0e-12)
+        ops.element('twoNodeLink', 2, 1, 2, '-mat', 3, '-dir', 1, '-doRayleigh')
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(2, 10.0)
+        static_analysis()
+        self.assertEqual(ops.analyze(1), 0)
+        # the spring (100) beside the Series of two (50): 10/150
+        self.assertAlmostEqual(ops.nodeDisp(2, 1), 10.0 / 150.0, delta=1e-14)
+        force = ops.eleResponse(2, 'basicForce')
+        self.assertIsInstance(force, list)
+        self.assertAlmostEqual(force[0], 50.0 * 10.0 / 150.0, delta=1e-11)
 
     def test_wipe_between_two_models(self):
         recorded = os.path.join(self.tmp, "first.out")
