@@ -210,7 +210,7 @@ namespace poundfe
       define_unsupported(Tcl_Interp *interp, Session &session)
       {
         for (const char *name :
-             {"rigidDiaphragm", "fixX", "fixY", "fixZ", "region", "remove",
+             {"fixX", "fixY", "fixZ", "region", "remove",
               "imposedMotion", "groundMotion", "modalDamping", "setElementRayleighDampingFactors",
               "printA", "printB", "printModel", "print",
               "basicDeformation", "basicForce", "localForce", "testIter", "testNorm", "getNP",

@@ -1,5 +1,5 @@
 // The model-building commands of OpenSees scripts, with OpenSees 3.8's
-// argument syntax: wipe, model, node, fix, mass, equalDOF, rigidLink bar, geomTransf,
+// argument syntax: wipe, model, node, fix, mass, equalDOF, rigidLink bar, rigidDiaphragm, geomTransf,
 // element, uniaxialMaterial, timeSeries, pattern, load, sp, eleLoad, loadConst, setTime,
 // rayleigh, recorder. An option or type poundfe lacks is an error naming it.
 #include <poundfe/laws/material_registry.h>
@@ -190,6 +190,31 @@ namespace poundfe
         for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
           e.dofs.push_back(k);
         d.equal_dofs.push_back(e);
+        d.changed = true;
+      }
+
+      /// rigidDiaphragm perpDirn rNode cNode1 cNode2 ... (3D, -ndf 6).
+      void
+      rigid_diaphragm(Session &s, Words &w)
+      {
+        opensees::Domain &d = model_domain(s);
+        if (d.ndm != 3 || d.ndf != 6)
+          unsupported("rigidDiaphragm outside -ndm 3 -ndf 6");
+        const int perpendicular = w.integer("perpDirn");
+        if (perpendicular < 1 || perpendicular > 3)
+          throw ScriptError("perpDirn " + text_of(perpendicular) + " is not 1, 2 or 3");
+        opensees::Diaphragm diaphragm;
+        diaphragm.perpendicular = perpendicular - 1;
+        diaphragm.retained      = d.node(w.integer("the retained node")).tag;
+        for (const int c : w.integers("a constrained node"))
+          {
+            if (d.node(c).tag == diaphragm.retained)
+              throw ScriptError("the retained node " + text_of(c) + " is among the constrained");
+            diaphragm.constrained.push_back(c);
+          }
+        if (!w.done())
+          throw ScriptError("'" + w.peek() + "' is not a node's tag");
+        d.diaphragms.push_back(diaphragm);
         d.changed = true;
       }
 
@@ -1118,6 +1143,7 @@ namespace poundfe
       define(interp, session, "fix", fix);
       define(interp, session, "mass", mass);
       define(interp, session, "equalDOF", equal_dof);
+      define(interp, session, "rigidDiaphragm", rigid_diaphragm);
       define(interp, session, "rigidLink", rigid_link);
       define(interp, session, "geomTransf", geom_transf);
       define(interp, session, "element", element);

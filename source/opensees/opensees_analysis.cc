@@ -24,12 +24,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 namespace poundfe
 {
   namespace opensees
   {
+    namespace
+    {
+      /// The equation of a diaphragm's j-th combination: first_combination - j.
+      constexpr int first_combination = -1000000;
+    } // namespace
+
     Analysis::Analysis(Domain &domain, AnalysisOptions options)
       : domain(domain)
       , opts(std::move(options))
@@ -54,6 +61,12 @@ namespace poundfe
       for (const EqualDof &e : domain.equal_dofs)
         for (const unsigned int k : e.dofs)
           retained_by[{e.constrained, k}] = {e.retained, k};
+      std::set<std::pair<int, unsigned int>> in_diaphragm; // numbered by number_diaphragms
+      for (const Diaphragm &d : domain.diaphragms)
+        for (const int c : d.constrained)
+          for (const unsigned int k :
+               {(d.perpendicular + 1) % 3, (d.perpendicular + 2) % 3, 3 + d.perpendicular})
+            in_diaphragm.insert({c, k});
       imposed_dofs.clear();
       for (const auto &[dof, value] : domain.imposed_displacements(domain.time))
         imposed_dofs.push_back(dof);
@@ -63,6 +76,7 @@ namespace poundfe
           node.equation.assign(node.fixed.size(), -1);
           for (unsigned int k = 0; k < node.fixed.size(); ++k)
             if (!node.fixed[k] && retained_by.count({tag, k}) == 0 &&
+                in_diaphragm.count({tag, k}) == 0 &&
                 std::find(imposed_dofs.begin(), imposed_dofs.end(), std::make_pair(tag, k)) ==
                   imposed_dofs.end())
               node.equation[k] = n_equations++;
@@ -79,6 +93,7 @@ namespace poundfe
             r = retained_by.at(r);
           domain.node(dof.first).equation[dof.second] = domain.node(r.first).equation[r.second];
         }
+      number_diaphragms();
       mass_of_equation.setZero(n_equations);
       for (const auto &[tag, node] : domain.nodes)
         for (unsigned int k = 0; k < node.fixed.size(); ++k)
@@ -94,6 +109,59 @@ namespace poundfe
       domain.changed = false;
       numbered       = true;
       analysed       = false;
+    }
+
+    /// OpenSees's RigidDiaphragm as the Transformation handler imposes it:
+    /// each constrained DOF a combination of the retained node's two
+    /// in-plane translations and its rotation (a fixed one contributing 0).
+    /// The constrained nodes must carry no mass in the plane (their inertia
+    /// would need the transformed, non-diagonal mass matrix).
+    void
+    Analysis::number_diaphragms()
+    {
+      combinations.clear();
+      for (const Diaphragm &d : domain.diaphragms)
+        {
+          const unsigned int a = (d.perpendicular + 1) % 3, b = (d.perpendicular + 2) % 3,
+                             r = 3 + d.perpendicular;
+          const Node        &retained = domain.node(d.retained);
+          for (const unsigned int k : {a, b, r})
+            if (retained.equation[k] < -1)
+              throw ScriptError("rigidDiaphragm: the retained node " + std::to_string(d.retained) +
+                                " is itself constrained along DOF " + std::to_string(k + 1));
+          const auto term = [&](const unsigned int k, const double c) {
+            return std::make_pair(retained.equation[k], c);
+          };
+          for (const int c : d.constrained)
+            {
+              Node &node = domain.node(c);
+              const double da = node.coordinates[a] - retained.coordinates[a],
+                           db = node.coordinates[b] - retained.coordinates[b];
+              for (const unsigned int k : {a, b, r})
+                {
+                  if (node.fixed[k] || node.equation[k] != -1)
+                    throw ScriptError("rigidDiaphragm: node " + std::to_string(c) + " DOF " +
+                                      std::to_string(k + 1) +
+                                      " is fixed or constrained already");
+                  if (node.mass[k] + node.element_mass[k] != 0)
+                    throw ScriptError("rigidDiaphragm: node " + std::to_string(c) +
+                                      " has mass along DOF " + std::to_string(k + 1) +
+                                      ": poundfe takes a diaphragm's mass at its retained node");
+                }
+              std::vector<std::vector<std::pair<int, double>>> rows = {
+                {term(a, 1.0), term(r, -db)}, {term(b, 1.0), term(r, da)}, {term(r, 1.0)}};
+              const std::array<unsigned int, 3> dofs{{a, b, r}};
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  auto &row = rows[i];
+                  row.erase(std::remove_if(row.begin(), row.end(),
+                                           [](const auto &t) { return t.first < 0; }),
+                            row.end());
+                  node.equation[dofs[i]] = first_combination - int(combinations.size());
+                  combinations.push_back(row);
+                }
+            }
+        }
     }
 
     void
@@ -120,25 +188,61 @@ namespace poundfe
       for (auto &[tag, node] : domain.nodes)
         for (unsigned int k = 0; k < node.equation.size(); ++k)
           {
-            const int eq  = node.equation[k];
+            const int eq = node.equation[k];
+            if (eq <= first_combination)
+              {
+                node.disp[k] = node.vel[k] = node.accel[k] = 0.0;
+                for (const auto &[e, c] : combinations[first_combination - eq])
+                  {
+                    node.disp[k] += c * U[e];
+                    node.vel[k] += c * V[e];
+                    node.accel[k] += c * A[e];
+                  }
+                continue;
+              }
             node.disp[k]  = eq >= 0 ? U[eq] : eq <= -2 ? imposed_u[-2 - eq] : 0.0;
             node.vel[k]   = eq < 0 ? 0.0 : V[eq];
             node.accel[k] = eq < 0 ? 0.0 : A[eq];
           }
     }
 
+    std::vector<std::pair<int, double>>
+    Analysis::terms(const int eq) const
+    {
+      if (eq <= first_combination)
+        return combinations[first_combination - eq];
+      return {{eq, 1.0}};
+    }
+
+    void
+    Analysis::add_to(Vector &r, const int eq, const double value) const
+    {
+      if (eq >= 0)
+        r[eq] += value;
+      else if (eq <= first_combination)
+        for (const auto &[e, c] : combinations[first_combination - eq])
+          r[e] += c * value;
+    }
+
     namespace
     {
+      using Combinations = std::vector<std::vector<std::pair<int, double>>>;
+
       /// The element's local values of a vector by equation: 0 where fixed,
-      /// `imposed` where an sp command imposes the DOF (-2 - j: its j-th).
+      /// `imposed` where an sp command imposes the DOF (-2 - j: its j-th),
+      /// a diaphragm's combination of equations where it constrains the DOF.
       Vector
-      element_values(const Element &element, const Vector &x, const Vector &imposed)
+      element_values(const Element &element, const Vector &x, const Vector &imposed,
+                     const Combinations &combinations)
       {
         Vector local(element.equations.size());
         for (unsigned int i = 0; i < local.size(); ++i)
           {
             const int eq = element.equations[i];
-            local[i]     = eq >= 0 ? x[eq] : eq <= -2 ? imposed[-2 - eq] : 0.0;
+            local[i]     = eq >= 0 ? x[eq] : eq > first_combination && eq <= -2 ? imposed[-2 - eq] : 0.0;
+            if (eq <= first_combination)
+              for (const auto &[e, c] : combinations[first_combination - eq])
+                local[i] += c * x[e];
           }
         return local;
       }
@@ -172,8 +276,8 @@ namespace poundfe
         }
       const Vector still = Vector::Zero(imposed_u.size());
       for (auto &[tag, element] : domain.elements)
-        if (!element->set_trial(element_values(*element, u, imposed_u),
-                                element_values(*element, v, still)))
+        if (!element->set_trial(element_values(*element, u, imposed_u, combinations),
+                                element_values(*element, v, still, combinations)))
           {
             why = "element " + std::to_string(tag) + ": " + element->failure();
             return false;
@@ -191,18 +295,16 @@ namespace poundfe
         {
           const Node &node = domain.node(tag);
           for (unsigned int k = 0; k < load.size(); ++k)
-            if (node.equation[k] >= 0)
-              r[node.equation[k]] += load[k];
+            add_to(r, node.equation[k], load[k]);
         }
       for (const auto &[tag, element] : domain.elements)
         {
           Vector f = element->force();
           if (opts.transient && element->rayleigh_damped()) // materials' own damping is in f
             f += element_damping(*element, domain.rayleigh) *
-               element_values(*element, v, Vector::Zero(imposed_u.size()));
+               element_values(*element, v, Vector::Zero(imposed_u.size()), combinations);
           for (unsigned int i = 0; i < f.size(); ++i)
-            if (element->equations[i] >= 0)
-              r[element->equations[i]] -= f[i];
+            add_to(r, element->equations[i], -f[i]);
         }
       if (!opts.transient)
         return r;
@@ -232,6 +334,11 @@ namespace poundfe
             for (unsigned int j = 0; j < eq.size(); ++j)
               if (eq[i] >= 0 && eq[j] >= 0)
                 entries.emplace_back(eq[i], eq[j], k(i, j));
+              else if ((eq[i] >= 0 || eq[i] <= first_combination) &&
+                       (eq[j] >= 0 || eq[j] <= first_combination))
+                for (const auto &[ei, ci] : terms(eq[i]))
+                  for (const auto &[ej, cj] : terms(eq[j]))
+                    entries.emplace_back(ei, ej, ci * cj * k(i, j));
         }
       const double diagonal = c_m + c_c * domain.rayleigh.alpha_m;
       for (unsigned int i = 0; i < n_equations; ++i) // the diagonal always in the pattern

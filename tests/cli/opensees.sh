@@ -72,7 +72,7 @@ set n 0
 foreach tag [getNodeTags] { incr n }
 while {$n > 3} { incr n -1 }
 puts "nodes $n elements [getEleTags]"
-if {[catch {rigidDiaphragm 3 1 2} message]} { puts "caught: $message" }
+if {[catch {region 1 -ele 1} message]} { puts "caught: $message" }
 if {[catch {element zeroLength 9 0 1 -mat 1 -dir 1 -orient 1 0 0 0 1 0 -dampMats 1} message]} {
     puts "caught: $message"
 }
@@ -91,7 +91,7 @@ status=$?
 expect_line() { grep -qxF -- "$1" "$work/tcl/log" || { cat "$work/tcl/log"; fail "no line '$1'"; }; }
 expect_line "argc 4 argv $work/tcl -x --output y"
 expect_line "nodes 3 elements 1 2 3"
-expect_line "caught: rigidDiaphragm: poundfe does not support it"
+expect_line "caught: region: poundfe does not support it"
 expect_line "caught: element zeroLength option '-dampMats': poundfe does not support it"
 expect_line "analyze 0 disp 0.06"
 grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
@@ -103,8 +103,9 @@ grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
 # elastic range moves F / (E0 + k); a 3D zeroLength with rotated axes; a
 # Series of springs; twoNodeLinks in 2D (shear distance and P-Delta against
 # the closed form) and 3D (-orient); a 3D elasticBeamColumn cantilever
-# (Linear: axial, both bending planes, torsion; PDelta: the sway); 3D
-# forceBeamColumn and dispBeamColumn on an elastic fibre section
+# (Linear: axial, both bending planes, torsion; PDelta: the sway); a
+# rigidDiaphragm's sway and twist; 3D forceBeamColumn and dispBeamColumn on
+# an elastic fibre section
 mkdir -p "$work/materials"
 cat > "$work/materials/m.tcl" <<'TCL'
 proc check {what got expected {tolerance 1e-12}} {
@@ -251,6 +252,34 @@ set a [expr {12 * $E * $Iy / pow($L, 3) - $P / $L}]
 set b [expr {6 * $E * $Iy / pow($L, 2)}]
 set c [expr {4 * $E * $Iy / $L}]
 check "3D PDelta sway" [nodeDisp 2 1] [expr {$H * $c / ($a * $c - $b * $b)}] 1e-10
+# rigidDiaphragm 3: two cantilever columns at x = +-d tied at their tops
+# to a master at the centre under a force Px and a torque Tz: ux = Px/(2 kx),
+# theta = Tz/(2 ky d^2 + 2 GJ/L), each top's uy = +-d theta (k = 3EI/L^3)
+wipe
+model basic -ndm 3 -ndf 6
+set L 3.0; set d 2.0; set E 2.0e11; set G 8.0e10; set A 0.01; set J 2.0e-5; set Iy 3.0e-5; set Iz 7.0e-5
+node 1 $d 0.0 0.0
+node 2 [expr {-$d}] 0.0 0.0
+node 11 $d 0.0 $L
+node 12 [expr {-$d}] 0.0 $L
+node 10 0.0 0.0 $L
+fix 1 1 1 1 1 1 1
+fix 2 1 1 1 1 1 1
+fix 10 0 0 1 1 1 0
+rigidDiaphragm 3 10 11 12
+geomTransf Linear 1 1.0 0.0 0.0
+element elasticBeamColumn 1 1 11 $A $E $G $J $Iy $Iz 1
+element elasticBeamColumn 2 2 12 $A $E $G $J $Iy $Iz 1
+pattern Plain 1 Constant { load 10 1.0e4 0.0 0.0 0.0 0.0 3.0e4 }
+analysis Static
+analyze 1
+set kx [expr {3 * $E * $Iy / pow($L, 3)}]
+set ky [expr {3 * $E * $Iz / pow($L, 3)}]
+set theta [expr {3.0e4 / (2 * $ky * $d * $d + 2 * $G * $J / $L)}]
+check "rigidDiaphragm sway" [nodeDisp 10 1] [expr {1.0e4 / (2 * $kx)}] 1e-10
+check "rigidDiaphragm twist" [nodeDisp 10 6] $theta 1e-10
+check "rigidDiaphragm constrained uy" [nodeDisp 11 2] [expr {$d * $theta}] 1e-10
+check "rigidDiaphragm constrained ux" [nodeDisp 12 1] [expr {1.0e4 / (2 * $kx)}] 1e-10
 # forceBeamColumn and dispBeamColumn in 3D on an elastic fibre section (-GJ):
 # a cantilever along Z (vecxz X: local y is -Y, local z is X) under tip
 # forces and a torque; the fibres' own A, Iz = b h^3/12 (1 - 1/nY^2), Iy
@@ -282,7 +311,7 @@ foreach element {forceBeamColumn dispBeamColumn} {
 TCL
 "$poundfe" opensees "$work/materials/m.tcl" > "$work/materials/log" 2>&1 \
   || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
-[ "$(grep -c '^ok ' "$work/materials/log")" = 29 ] || { cat "$work/materials/log"; fail "materials"; }
+[ "$(grep -c '^ok ' "$work/materials/log")" = 33 ] || { cat "$work/materials/log"; fail "materials"; }
 
 # 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
 bad() { # NAME EXPECTED (the script on standard input)

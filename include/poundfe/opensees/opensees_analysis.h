@@ -193,6 +193,15 @@ namespace poundfe
       /// The DOFs the sp commands impose (node, 0-based DOF) and their
       /// values at the trial time.
       std::vector<std::pair<int, unsigned int>> imposed_dofs;
+      /// A DOF a rigidDiaphragm constrains has the equation
+      /// -1000000 - j: the j-th combination, sum c_k x[e_k].
+      std::vector<std::vector<std::pair<int, double>>> combinations;
+      /// The combinations of the domain's diaphragms (in number()).
+      void number_diaphragms();
+      /// r[e] += c value for the equation's terms (none where fixed or imposed).
+      void add_to(Vector &r, int eq, double value) const;
+      /// An equation's terms: itself, or a diaphragm's combination.
+      std::vector<std::pair<int, double>> terms(int eq) const;
       Vector                                    imposed_u;
       double          trial_time = 0, lambda_step = 0, last_iterations = 1;
       double          c_c = 0, c_m = 0;    // the step's update coefficients

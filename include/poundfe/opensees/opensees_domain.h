@@ -172,6 +172,18 @@ namespace poundfe
       std::vector<unsigned int> dofs; // 0-based
     };
 
+    /// rigidDiaphragm perpDirn rNode cNodes (3D, -ndf 6): each constrained
+    /// node's in-plane translations and rotation about perpDirn follow the
+    /// retained node's as a rigid plane (OpenSees's RigidDiaphragm),
+    ///   u_a = u_a,r - d_b theta_r,  u_b = u_b,r + d_a theta_r,  theta = theta_r,
+    /// (a, b, perp) cyclic, d the constrained node's offset from the retained.
+    struct Diaphragm
+    {
+      unsigned int     perpendicular = 2; // 0-based axis
+      int              retained      = 0;
+      std::vector<int> constrained;
+    };
+
     struct RayleighFactors
     {
       double alpha_m = 0, beta_k = 0, beta_k_init = 0, beta_k_committed = 0;
@@ -224,6 +236,7 @@ namespace poundfe
       std::map<int, std::shared_ptr<TimeSeries>> series;
       std::map<int, Pattern>                  patterns;
       std::vector<EqualDof>                   equal_dofs;
+      std::vector<Diaphragm>                  diaphragms;
       RayleighFactors                         rayleigh;
       double                                  time = 0; // committed
       /// OpenSees's global ops_Dt: the step of the last transient
