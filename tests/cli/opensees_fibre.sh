@@ -183,7 +183,8 @@ grep -c '^ok ' "$work/vs.log" | grep -qx "$files" || { cat "$work/vs.log"; fail 
 #    rigidDiaphragm, forceBeamColumn on 3D fibre sections, PDelta with vecxz) against
 #    OpenSees's peaks as doc/verification.md gives them to ten digits (2e-10: their rounding)
 mkdir -p "$work/frame3d"
-(cd "$here/../../bench/opensees/fibre_frame_3d" && "$poundfe" opensees frame.tcl "$work/frame3d") \
+program=$(cd "$(dirname "$poundfe")" && pwd)/$(basename "$poundfe")
+(cd "$here/../../bench/opensees/fibre_frame_3d" && "$program" opensees frame.tcl "$work/frame3d") \
   > "$work/frame3d/log" 2>&1 || { cat "$work/frame3d/log"; fail "frame.tcl"; }
 "$python" - "$work/frame3d" <<'PY' || fail "frame.tcl against OpenSees 3.8's peaks"
 import sys
