@@ -112,6 +112,34 @@ namespace poundfe
         return std::vector<double>(v.data(), v.data() + v.size());
       }
 
+      /// The responses of both dimensions: basicForce (q), basicDeformation,
+      /// section i force|deformation; empty for any other words.
+      template <int dim, typename Basic>
+      std::vector<double>
+      member_response(const BeamColumn<dim> &member, const int tag,
+                      const std::vector<std::string> &words, const Basic &q)
+      {
+        const std::string what = words.empty() ? "" : words[0];
+        if (words.size() == 1 && (what == "basicForce" || what == "basicForces"))
+          return values_of(q);
+        if (words.size() == 1 && (what == "basicDeformation" || what == "chordRotation" ||
+                                  what == "chordDeformation"))
+          return values_of(member.basic_deformation());
+        if (words.size() == 3 && what == "section")
+          {
+            const int i = std::atoi(words[1].c_str());
+            if (i < 1 || i > static_cast<int>(member.n_points()))
+              throw ScriptError("element " + std::to_string(tag) + " has no section " +
+                                words[1] + " (1 to " + std::to_string(member.n_points()) + ")");
+            const SectionLaw &s = member.section(i - 1);
+            if (words[2] == "force" || words[2] == "forces")
+              return values_of(s.resultant());
+            if (words[2] == "deformation" || words[2] == "deformations")
+              return values_of(s.deformation());
+          }
+        return {};
+      }
+
       std::vector<double>
       BeamColumnElement::response(const std::vector<std::string> &words) const
       {
@@ -122,24 +150,8 @@ namespace poundfe
             const double shear = (q[1] + q[2]) / member->length();
             return {-q[0] + p0[0], shear + p0[1], q[1], q[0], -shear + p0[2], q[2]};
           }
-        if (words.size() == 1 && (what == "basicForce" || what == "basicForces"))
-          return values_of(q);
-        if (words.size() == 1 && (what == "basicDeformation" || what == "chordRotation" ||
-                                  what == "chordDeformation"))
-          return values_of(member->basic_deformation());
-        if (words.size() == 3 && what == "section")
-          {
-            const int i = std::atoi(words[1].c_str());
-            if (i < 1 || i > static_cast<int>(member->n_points()))
-              throw ScriptError("element " + std::to_string(tag) + " has no section " +
-                                words[1] + " (1 to " + std::to_string(member->n_points()) + ")");
-            const SectionLaw &s = member->section(i - 1);
-            if (words[2] == "force" || words[2] == "forces")
-              return values_of(s.resultant());
-            if (words[2] == "deformation" || words[2] == "deformations")
-              return values_of(s.deformation());
-          }
-        return Element::response(words);
+        const std::vector<double> shared = member_response(*member, tag, words, q);
+        return shared.empty() ? Element::response(words) : shared;
       }
 
       /// The section of `tag` with the member's resultants (2: plane, 4: space).
@@ -237,24 +249,8 @@ namespace poundfe
             const double L = member->length(), vy = (q[1] + q[2]) / L, vz = (q[3] + q[4]) / L;
             return {-q[0], vy, -vz, -q[5], q[3], q[1], q[0], -vy, vz, q[5], q[4], q[2]};
           }
-        if (words.size() == 1 && (what == "basicForce" || what == "basicForces"))
-          return values_of(q);
-        if (words.size() == 1 && (what == "basicDeformation" || what == "chordRotation" ||
-                                  what == "chordDeformation"))
-          return values_of(member->basic_deformation());
-        if (words.size() == 3 && what == "section")
-          {
-            const int i = std::atoi(words[1].c_str());
-            if (i < 1 || i > static_cast<int>(member->n_points()))
-              throw ScriptError("element " + std::to_string(tag) + " has no section " +
-                                words[1] + " (1 to " + std::to_string(member->n_points()) + ")");
-            const SectionLaw &s = member->section(i - 1);
-            if (words[2] == "force" || words[2] == "forces")
-              return values_of(s.resultant());
-            if (words[2] == "deformation" || words[2] == "deformations")
-              return values_of(s.deformation());
-          }
-        return Element::response(words);
+        const std::vector<double> shared = member_response(*member, tag, words, q);
+        return shared.empty() ? Element::response(words) : shared;
       }
 
       CrdTransformation<2>
