@@ -14,7 +14,11 @@
 // the increment scaled by Jd over the last step's iterations, clamped),
 // algorithm/equiSolnAlgo/NewtonRaphson.cpp, ModifiedNewton.cpp, Linear.cpp,
 // convergenceTest/CTest*.cpp, DirectIntegrationAnalysis.cpp and
-// StaticAnalysis.cpp (a failed step: the domain reverted, analyze < 0).
+// StaticAnalysis.cpp (a failed step: the domain reverted, analyze < 0),
+// TransformationConstraintHandler.cpp with RigidDiaphragm.cpp (a
+// diaphragm's constrained DOFs leave the equations: u_c = C u_r, the
+// elements' forces and stiffness taken through C; nodal masses stay
+// diagonal because the constrained nodes may carry none in the plane).
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/opensees/opensees_analysis.h>

@@ -26,6 +26,17 @@
 //   direction the node has no DOF for contributes nothing, as in
 //   ZeroLength::setTran1d); strain t_m u, rate t_m v; force sum t_m^T
 //   sigma_m, tangent sum t_m^T E_m t_m, damping sum t_m^T eta_m t_m.
+//
+// twoNodeLink (TwoNodeLink.cpp): the zeroLength's frame with t = T_lb T_gl:
+//   T_gl the direction cosines (x from node i to j or -orient's, yp global
+//   Y unless given, in 2D y across x) on each node's translations (and
+//   rotations), T_lb node j's local DOF d minus node i's, the shears of a
+//   link of length L with the end rotations times -s L, -(1 - s) L (local
+//   y; +s L, +(1 - s) L for local z), s of -shearDist (0.5). -pDelta adds
+//   to the local forces the shears N (u_j - u_i)/L (1 - r_1 - r_2) of the
+//   axial force N and the end moments r_i N (u_j - u_i), and to the local
+//   stiffness their derivatives with N held (addPDeltaForces,
+//   addPDeltaStiff).
 #include <poundfe/opensees/opensees_domain.h>
 
 #include <Eigen/Geometry>
