@@ -4,10 +4,12 @@
 # ~200 libraries whose relocations cost 0.4-0.6 s of CPU, doc/benchmarks.md
 # "Start-up"); every other command line runs the program module
 # poundfe-program.so beside it, whose --version says the same line; without
-# the module the executable says so in one line and exits 1.
+# the module the executable says so in one line and exits 1. Not under mpirun,
+# a small modal, an empty opensees script and --help start no MPI.
 # Argument: the poundfe executable of the build tree.
 set -u
 poundfe=$(realpath "$1")
+source_dir=$(realpath "$(dirname "${BASH_SOURCE[0]}")/../..")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
@@ -44,3 +46,26 @@ alone/poundfe modal x.prm > stdout 2> stderr && fail "ran without its module"
 [ "$(wc -l < stderr)" -eq 1 ] && grep -q "poundfe: error: cannot load the program" stderr ||
   fail "without the module: $(cat stderr)"
 echo "ok   without the module: $(cat stderr)"
+
+# 5. Not under mpirun, a command whose row and input do not need MPI starts
+# neither MPI nor PETSc (MPI_InitFinalize: the dominant cost after the loader's).
+# The probe: PETSC_OPTIONS=-version makes PETSc's initialisation print its
+# version line; a command of the mpi column shows that it can (it initialises
+# MPI before reading its file, which does not exist here).
+if ! ldd "$(dirname "$poundfe")/poundfe-program.so" | grep -q libpetsc; then
+  echo "ok   (deal.II without PETSc: no probe of MPI's start)"
+  exit 0
+fi
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+PETSC_OPTIONS=-version "$poundfe" montecarlo absent.prm > mpi-probe 2>&1
+grep -q 'Petsc Release Version' mpi-probe || fail "the probe does not see MPI_InitFinalize: $(cat mpi-probe)"
+: > empty.tcl
+PETSC_OPTIONS=-version "$poundfe" modal "$source_dir/input/three-storey-shear.prm" --output modal \
+  > modal-stdout 2>&1 || fail "modal exited $?: $(cat modal-stdout)"
+PETSC_OPTIONS=-version "$poundfe" opensees empty.tcl > opensees-stdout 2>&1 ||
+  fail "opensees on an empty script exited $?: $(cat opensees-stdout)"
+PETSC_OPTIONS=-version "$poundfe" --help > help-stdout 2>&1 || fail "--help exited $?"
+for run in modal-stdout opensees-stdout help-stdout; do
+  grep -q 'Petsc Release Version' $run && fail "${run%-stdout} initialised MPI and PETSc"
+done
+echo "ok   modal, an empty opensees script and --help start no MPI (montecarlo does)"

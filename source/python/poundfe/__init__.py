@@ -18,11 +18,22 @@ OpenSeesPy scripts run with `import poundfe.opensees as ops` (poundfe/opensees.p
 
 import contextlib
 import os
+import sys
 import threading
 
 import numpy as np
 
-from . import _core
+# _core brings deal.II's ~200 shared libraries. Python loads an extension with
+# RTLD_NOW, which binds every function each of them calls before the import
+# returns (a third more of the loader's work than binding each on its first call,
+# as the poundfe executable does: doc/benchmarks.md, "Start-up").
+_dlopen_flags = sys.getdlopenflags()
+sys.setdlopenflags((_dlopen_flags & ~os.RTLD_NOW) | os.RTLD_LAZY)
+try:
+    from . import _core
+finally:
+    sys.setdlopenflags(_dlopen_flags)
+    del _dlopen_flags
 from ._core import Input, InputError, NumericalError, OutputError, StepState
 from .model import Model, _value_text, keyword_table, parameter_text, write_input
 from .results import Modes, Results, Table
