@@ -880,6 +880,33 @@ namespace poundfe
 
   namespace
   {
+    /// Inside a contact episode (a gap closed, penetrated or closing within
+    /// the step h: episode_duration), Newton's start from u_n + h v_n + h^2
+    /// a_n / 2 (Newmark's with a_{n+1} = a_n) in `step`: a gap closing in the
+    /// step then starts closed, with its tangent, rather than open, from
+    /// where the first correction is the free flight that overshoots into
+    /// it. The convergence tests stay relative to the step from u_n: the
+    /// residual to ||r_0|| (`start_residual`, Delta u = 0 without the
+    /// elements' forces) and the work to |step . r_0| (the first correction
+    /// from u_n is about the whole step), or a better start would tighten
+    /// them. False (nothing set) outside an episode (theory §3.7a).
+    bool
+    start_from_extrapolation(const ElementRecords &records, const NonlinearElements &elements,
+                             const double h, const Vector &v, const Vector &a,
+                             const Vector &start_residual, Vector &step, double &first_residual,
+                             double &first_energy)
+    {
+      bool in_episode = false;
+      for (const unsigned int gap : records.gap_elements())
+        in_episode = in_episode || episode_duration(records, elements, gap, a, h, true) > 0;
+      if (!in_episode)
+        return false;
+      step.noalias()  = h * v + (0.5 * h * h) * a;
+      first_residual = start_residual.norm();
+      first_energy   = std::abs(step.dot(start_residual));
+      return true;
+    }
+
     /// The length s <= 1 of a Newton correction `increment` from the step
     /// displacement `step` such that no gap open at the step's start and
     /// closed at this iterate is opened again by it: such a gap lands at a
@@ -922,41 +949,25 @@ namespace poundfe
       }
 
     const NewtonParameters &newton = parameters.newton;
-    const auto in_contact_episode = [&](const double h) {
-      if (!newton.contact_onset_from_acceleration || distribution)
-        return false;
-      for (const unsigned int gap : records.gap_elements())
-        if (episode_duration(records, *elements, gap, a, h, true) > 0)
-          return true;
-      return false;
-    };
     // Predictor: the last displacement; with friction, the last velocity
     // carried over the step, so a mass stuck to a moving belt starts its
     // iteration stuck (from u_n its stick spring would see the belt's whole
     // step, v0 dt, and the first iterate would break away; with static >
     // kinetic friction the slip it starts can be a converged discrete
-    // solution too, and the mass would break away early).
+    // solution too, and the mass would break away early); inside a contact
+    // episode, the extrapolation (start_from_extrapolation; not on a model
+    // partitioned by building, whose ranks would each decide on their own
+    // gaps and disagree at the ghost equations).
     set_start_residual(L, p);
-    const bool extrapolated = records.friction_elements().empty() && in_contact_episode(L.dt);
-    // The tolerances are relative to the residual of the step at u_n and the
-    // work of its first correction, whatever the predictor: from the
-    // extrapolation, r_0 and the predicted step (which the first correction
-    // from u_n approximates), or the criteria would tighten as the predictor
-    // improves.
     double first_residual = 0, first_energy = 0, previous_norm = 0;
+    const bool extrapolated = records.friction_elements().empty() && !distribution &&
+                              newton.contact_onset_from_acceleration &&
+                              start_from_extrapolation(records, *elements, L.dt, v, a,
+                                                       start_residual, step_displacement,
+                                                       first_residual, first_energy);
     if (!records.friction_elements().empty())
       step_displacement.noalias() = L.dt * v;
-    else if (extrapolated)
-      {
-        // inside a contact episode (Contact onset from acceleration): from
-        // u_n + h v_n + h^2 a_n / 2, the gaps near their state at the step's
-        // end; from u_n a gap closing in the step starts open, without its
-        // tangent, and the first iterate overshoots into it (theory §3.7a)
-        step_displacement.noalias() = L.dt * v + (0.5 * L.dt * L.dt) * a;
-        first_residual = norm_of(start_residual);
-        first_energy   = std::abs(dot_of(step_displacement, start_residual));
-      }
-    else
+    else if (!extrapolated)
       step_displacement.setZero();
     set_iterate();
     const NonlinearSolver method = active_method();
@@ -1015,11 +1026,8 @@ namespace poundfe
           first_energy = std::abs(dot_of(increment, residual));
         if (newton.line_search)
           search_line(L, it);
-        if (extrapolated)
-          if (const double length =
-                onset_correction_length(records, *elements, step_displacement, increment);
-              length < 1)
-            increment *= length;
+        if (extrapolated) // a gap closing in the step not reopened (theory §3.7a)
+          increment *= onset_correction_length(records, *elements, step_displacement, increment);
         if (method == NonlinearSolver::krylov_newton || method == NonlinearSolver::automatic)
           krylov.record_step(increment);
         if (method == NonlinearSolver::bfgs)

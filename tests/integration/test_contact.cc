@@ -232,5 +232,4 @@ BOOST_AUTO_TEST_CASE(a_step_ending_just_past_a_jankowski_touch_converges_without
       }
   // 75 steps per impact at 1e-4 s: the sampled peak within 1 % of 1e-5 s's
   BOOST_TEST(impacts[2].peak_force == impacts[3].peak_force, boost::test_tools::tolerance(0.01));
-  BOOST_TEST(impacts[2].approach_velocity == v0, boost::test_tools::tolerance(1e-6));
 }
