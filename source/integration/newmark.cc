@@ -843,6 +843,100 @@ namespace poundfe
       }
   }
 
+  namespace
+  {
+    /// The duration of the contact episode gap `gap` is in, or enters within
+    /// a step of h from the committed state (penetration, its rate and the
+    /// accelerations a), by Contact/Steps per contact's prediction; 0 when it
+    /// neither is in nor enters one (theory §3.7a).
+    double
+    episode_duration(const ElementRecords &records, const NonlinearElements &elements,
+                     const unsigned int gap, const Vector &a, const double h,
+                     const bool onset_from_acceleration)
+    {
+      const NonlinearElement &e = elements[gap];
+      // the gap's history variable is its penetration, negative while open
+      const double delta = records.committed_history(gap);
+      const double rate  = records.committed_rate(gap);
+      if (e.was_active())
+        return e.contact_duration(0);
+      if (onset_from_acceleration && delta >= 0)
+        // penetrated without force (a damped law's restitution, its force
+        // clipped at zero): still inside the contact episode, on the law's
+        // time scale at the present rate
+        return e.contact_duration(std::abs(rate));
+      if (delta + rate * h > 0) // closing within the step at the committed rate
+        return e.contact_duration(rate);
+      if (!onset_from_acceleration)
+        return 0;
+      // A gap that a constant rate would not close but the floors'
+      // acceleration does: missed, it would close deep inside a step too
+      // long for its impact, which Newton then fails (a step cut). Over two
+      // steps, since the acceleration changes within one.
+      const double closing = predicted_closing_rate(delta, rate, e.deformation(a), 2 * h);
+      return closing > 0 ? e.contact_duration(closing) : 0;
+    }
+  } // namespace
+
+  namespace
+  {
+    /// Inside a contact episode (a gap closed, penetrated or closing within
+    /// the step h: episode_duration), Newton's start from u_n + h v_n + h^2
+    /// a_n / 2 (Newmark's with a_{n+1} = a_n) in `step`: a gap closing in the
+    /// step then starts closed, with its tangent, rather than open, from
+    /// where the first correction is the free flight that overshoots into
+    /// it. The convergence tests stay relative to the step from u_n: the
+    /// residual to ||r_0|| (`start_residual`, Delta u = 0 without the
+    /// elements' forces) and the work to |step . r_0| (the first correction
+    /// from u_n is about the whole step), or a better start would tighten
+    /// them. False (nothing set) outside an episode (theory §3.7a).
+    bool
+    start_from_extrapolation(const ElementRecords &records, const NonlinearElements &elements,
+                             const double h, const Vector &v, const Vector &a,
+                             const Vector &start_residual, Vector &step, double &first_residual,
+                             double &first_energy)
+    {
+      bool in_episode = false;
+      for (const unsigned int gap : records.gap_elements())
+        in_episode = in_episode || episode_duration(records, elements, gap, a, h, true) > 0;
+      if (!in_episode)
+        return false;
+      step.noalias()  = h * v + (0.5 * h * h) * a;
+      first_residual = start_residual.norm();
+      first_energy   = std::abs(step.dot(start_residual));
+      return true;
+    }
+
+    /// The length s <= 1 of a Newton correction `increment` from the step
+    /// displacement `step` such that no gap open at the step's start and
+    /// closed at this iterate is opened again by it: such a gap lands at a
+    /// sixteenth of its penetration instead. A law whose force rises with a
+    /// power below 1/2 of the penetration at onset (Jankowski's damping,
+    /// c(delta) ~ delta^(1/4)) makes Newton overshoot a root near touch to
+    /// the open side, from where the open tangent brings it back: a cycle
+    /// that no step cut but the one moving the touch away from the step's
+    /// end breaks. From below the root the concave force converges
+    /// monotonically (theory §3.7a).
+    double
+    onset_correction_length(const ElementRecords &records, const NonlinearElements &elements,
+                            const Vector &step, const Vector &increment)
+    {
+      double length = 1;
+      for (const unsigned int gap : records.gap_elements())
+        {
+          const NonlinearElement &e = elements[gap];
+          if (e.was_active())
+            continue;
+          // the penetration is linear in u: its committed value plus the step's
+          const double delta = records.committed_history(gap) + e.deformation(step);
+          const double change = e.deformation(increment);
+          if (delta > 0 && delta + change < 0)
+            length = std::min(length, (15.0 / 16.0) * delta / -change);
+        }
+      return length;
+    }
+  } // namespace
+
   bool
   NewmarkIntegrator::try_step(Level &L, const Vector &p)
   {
@@ -860,14 +954,22 @@ namespace poundfe
     // iteration stuck (from u_n its stick spring would see the belt's whole
     // step, v0 dt, and the first iterate would break away; with static >
     // kinetic friction the slip it starts can be a converged discrete
-    // solution too, and the mass would break away early).
+    // solution too, and the mass would break away early); inside a contact
+    // episode, the extrapolation (start_from_extrapolation; not on a model
+    // partitioned by building, whose ranks would each decide on their own
+    // gaps and disagree at the ghost equations).
     set_start_residual(L, p);
-    if (records.friction_elements().empty())
-      step_displacement.setZero();
-    else
-      step_displacement.noalias() = L.dt * v;
-    set_iterate();
     double first_residual = 0, first_energy = 0, previous_norm = 0;
+    const bool extrapolated = records.friction_elements().empty() && !distribution &&
+                              newton.contact_onset_from_acceleration &&
+                              start_from_extrapolation(records, *elements, L.dt, v, a,
+                                                       start_residual, step_displacement,
+                                                       first_residual, first_energy);
+    if (!records.friction_elements().empty())
+      step_displacement.noalias() = L.dt * v;
+    else if (!extrapolated)
+      step_displacement.setZero();
+    set_iterate();
     const NonlinearSolver method = active_method();
     for (unsigned int it = 0;; ++it)
       {
@@ -878,7 +980,7 @@ namespace poundfe
         double norm = 0;
         if (!newton_residual(L, it, norm))
           return false;
-        if (it == 0)
+        if (it == 0 && !extrapolated)
           first_residual = norm;
         const double floor = residual_floor;
         if (it == 0 && norm <= floor)
@@ -920,10 +1022,12 @@ namespace poundfe
           return false;
         if (distribution) // the owners' increments at the ghost equations
           distribution->update_ghosts(increment);
-        if (it == 0)
+        if (it == 0 && !extrapolated)
           first_energy = std::abs(dot_of(increment, residual));
         if (newton.line_search)
           search_line(L, it);
+        if (extrapolated) // a gap closing in the step not reopened (theory §3.7a)
+          increment *= onset_correction_length(records, *elements, step_displacement, increment);
         if (method == NonlinearSolver::krylov_newton || method == NonlinearSolver::automatic)
           krylov.record_step(increment);
         if (method == NonlinearSolver::bfgs)
@@ -1037,33 +1141,8 @@ namespace poundfe
     const unsigned int n = parameters.newton.steps_per_contact;
     for (const unsigned int h : records.gap_elements())
       {
-        const NonlinearElement &e = (*elements)[h];
-        // Closed, or closing within the step at the committed rate (the
-        // gap's history variable is its penetration, negative while open).
-        double       duration = 0;
-        const double delta    = records.committed_history(h);
-        const double rate     = records.committed_rate(h);
-        const bool   onset_from_acceleration = parameters.newton.contact_onset_from_acceleration;
-        if (e.was_active())
-          duration = e.contact_duration(0);
-        else if (onset_from_acceleration && delta >= 0)
-          // penetrated without force (a damped law's restitution, its force
-          // clipped at zero): still inside the contact episode, on the law's
-          // time scale at the present rate
-          duration = e.contact_duration(std::abs(rate));
-        else if (delta + rate * L.dt > 0)
-          duration = e.contact_duration(rate);
-        else if (onset_from_acceleration)
-          {
-            // A gap that a constant rate would not close but the floors'
-            // acceleration does: missed, it would close deep inside a step
-            // too long for its impact, which Newton then fails (a step cut).
-            // Over two steps, since the acceleration changes within one.
-            const double closing =
-              predicted_closing_rate(delta, rate, e.deformation(a), 2 * L.dt);
-            if (closing > 0)
-              duration = e.contact_duration(closing);
-          }
+        const double duration = episode_duration(records, *elements, h, a, L.dt,
+                                                 parameters.newton.contact_onset_from_acceleration);
         if (duration > 0 && n * L.dt > duration)
           return true;
       }

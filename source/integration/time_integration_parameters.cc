@@ -158,8 +158,12 @@ namespace poundfe
                       "and relative acceleration (not only within the step at the constant "
                       "rate), with the approach velocity at the crossing, and a step from a gap "
                       "penetrated without force; so that a contact the floors accelerate into "
-                      "is resolved before it is tried rather than cut after Newton fails "
-                      "(theory §3.7a). false: the constant rate alone. Unit: -.");
+                      "is resolved before it is tried rather than cut after Newton fails. "
+                      "Inside a contact episode Newton then starts from u + h v + h^2 a / 2 "
+                      "(its tolerances still relative to the step from u), and a correction "
+                      "that would open again a gap closing in the step lands it at a sixteenth "
+                      "of its penetration instead (theory §3.7a). false: the constant rate "
+                      "alone, Newton from u. Unit: -.");
     prm.add_parameter("End time", end_time,
                       "s; 0: the length of the ground motion. Unit: s.");
     prm.add_parameter("Maximum number of steps", max_steps,

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Coarse steps through pounding (theory §3.7a, Time integration/Contact
-# onset from acceleration) on two pairs of its own: a 2 + 4 storey shear
-# pair with Jankowski contact (coarse-contact-shear.prm) and a pair of
-# elastic frames with Hertz-damp contact (coarse-contact-frames.prm), each
-# run with the option at Time step = 5e-5 (the reference), 1e-4, 1e-3 and
+# onset from acceleration) on four pairs of its own: a 2 + 4 and a 3 + 5
+# storey shear pair with Jankowski contact (coarse-contact-shear.prm,
+# coarse-onset-shear.prm) and two pairs of elastic frames with Hertz-damp
+# contact (coarse-contact-frames.prm, coarse-onset-frames.prm), each run
+# with the option at Time step = 5e-5 (the reference), 1e-4, 1e-3 and
 # 1e-2 s:
 #   - at 1e-2 and 1e-3 s no step cut and at most 4 Newton iterations in any
-#     step or sub-step (without the option the shear pair takes 4 cuts and
-#     5 iterations at 1e-2 s);
+#     step or sub-step (without the option the first shear pair takes 4 cuts
+#     and 5 iterations at 1e-2 s; with the option but without its predictor
+#     and onset correction the second frame pair takes 5 iterations);
 #   - every peak (drift ratio and absolute acceleration of every storey,
 #     each gap's peak force) within 0.5 % of the 5e-5 s run at 1e-3 s;
 #   - the reference within 0.2 % of the 1e-4 s run (second order: its own
