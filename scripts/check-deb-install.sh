@@ -12,7 +12,8 @@
 # then, with the recommended gnuplot-nox and openmpi-bin, the run's figures
 # and `mpirun -np 2 poundfe montecarlo`, and removes the package again
 # (nothing of it left in dist-packages).
-# It downloads a Debian system (~250 MB with deal.II's dependencies) and
+# It downloads a Debian system and deal.II's dependencies (~400 MB; 2.3 GB
+# unpacked) and
 # needs root (debootstrap, chroot, mount): not run by CI.
 #
 #   scripts/check-deb-install.sh DEB ROOT
