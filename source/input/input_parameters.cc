@@ -121,8 +121,9 @@ namespace poundfe
                           const std::string &parameter)
     {
       static const std::string entry   = "No entry with name <";
+      static const std::string json    = "You can't ask for entry <";
       static const std::string section = "There is no such subsection to be entered: ";
-      if (text.rfind(entry, 0) == 0 && !parameter.empty())
+      if ((text.rfind(entry, 0) == 0 || text.rfind(json, 0) == 0) && !parameter.empty())
         return unknown_path_problem(declared_paths(prm), parameter, false);
       if (text.rfind(section, 0) == 0)
         {
@@ -131,6 +132,26 @@ namespace poundfe
           return unknown_path_problem(declared_paths(prm), path, true);
         }
       return text;
+    }
+
+    /// deal.II's JSON reader names an undeclared entry alone ("You can't ask
+    /// for entry <E> ..."): the path of the file's first entry E that is not
+    /// declared ("" when there is none, or the text is another).
+    std::string
+    undeclared_json_path(const ParameterHandler &prm, const InputFile &p, const std::string &text)
+    {
+      static const std::string json = "You can't ask for entry <";
+      const std::size_t        end  = text.find('>', json.size());
+      if (text.rfind(json, 0) != 0 || end == std::string::npos)
+        return "";
+      const std::string              name     = text.substr(json.size(), end - json.size());
+      const std::vector<std::string> declared = declared_paths(prm);
+      for (const auto &[path, line] : p.lines)
+        if (path.size() > name.size() && path.compare(path.size() - name.size(), name.size(), name) == 0 &&
+            path[path.size() - name.size() - 1] == '/' &&
+            std::find(declared.begin(), declared.end(), path) == declared.end())
+          return path;
+      return "";
     }
 
     /// deal.II's messages carry "Line <n> of file <f>:" (sometimes without
@@ -167,7 +188,9 @@ namespace poundfe
       if (text.empty())
         text = collapse_whitespace(e.what());
       const bool        here      = blamed.empty() || blamed == file;
-      const std::string parameter = here ? entry_on_line(p, line) : "";
+      std::string       parameter = here ? entry_on_line(p, line) : "";
+      if (parameter.empty() && here)
+        parameter = undeclared_json_path(prm, p, text);
       throw InputError(here ? file : blamed, line, parameter,
                        plain_patterns(reworded_unknown_path(prm, text, parameter)));
     }

@@ -180,6 +180,29 @@ BOOST_AUTO_TEST_CASE(an_unknown_path_is_refused_in_the_same_words_by_the_file_an
       BOOST_TEST(from_override.parameter() == c.path);
       BOOST_TEST(from_override.file() == plain);
     }
+  // a JSON file: deal.II's JSON reader names the entry alone; the reader
+  // finds its path among the file's keys
+  for (const Case &c : std::vector<Case>{
+         {R"({"Time integration": {"Tim step": "0.01"}})", "Time integration/Tim step",
+          "No entry with name <Tim step> in 'Time integration' (did you mean 'Time step'?)"},
+         {R"({"Building 1": {"Dampng": {"Type": "none"}}})", "Building 1/Dampng/Type",
+          "There is no such subsection to be entered: Building 1/Dampng (did you mean 'Damping'?)"}})
+    {
+      const std::string file =
+        (std::filesystem::temp_directory_path() / "poundfe-test-unknown-path.json").string();
+      std::ofstream(file) << c.block;
+      try
+        {
+          read_parameters(file);
+          BOOST_ERROR("no InputError for " + c.path + " in the JSON file");
+        }
+      catch (const InputError &e)
+        {
+          BOOST_TEST(e.parameter() == c.path);
+          BOOST_TEST(e.problem() == c.problem);
+        }
+      std::filesystem::remove(file);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(suggestions_for_an_unknown_path)
