@@ -92,27 +92,45 @@ namespace poundfe
     return sample;
   }
 
+  namespace
+  {
+    /// The rows of `runs` (record r: runs[r]) that did not collapse, each
+    /// at intensity `x`, or at its run's own when x is NaN.
+    IdaDemandSample
+    demands_of_runs(const IdaRunner &runner, const std::vector<IdaPoint> &runs, const double x)
+    {
+      IdaDemandSample sample;
+      sample.intensity = x;
+      for (unsigned int r = 0; r < runs.size(); ++r)
+        {
+          const IdaPoint &p = runs[r];
+          if (p.demands.empty())
+            ++sample.not_reached;
+          else if (p.collapsed)
+            ++sample.collapsed;
+          else
+            {
+              sample.records.push_back(r);
+              sample.rows.push_back(record_demands(
+                runner, r, std::isnan(x) ? p.intensity : x,
+                [&](const unsigned int column, const bool magnitude) {
+                  return magnitude ? std::abs(p.demands[column]) : p.demands[column];
+                }));
+            }
+        }
+      return sample;
+    }
+  } // namespace
+
   IdaDemandSample
   stripe_demands(const IdaRunner &runner, const std::vector<IdaPoint> &stripe, const double x)
   {
-    IdaDemandSample sample;
-    sample.intensity = x;
-    for (unsigned int r = 0; r < stripe.size(); ++r)
-      {
-        const IdaPoint &p = stripe[r];
-        if (p.demands.empty())
-          ++sample.not_reached;
-        else if (p.collapsed)
-          ++sample.collapsed;
-        else
-          {
-            sample.records.push_back(r);
-            sample.rows.push_back(
-              record_demands(runner, r, x, [&](const unsigned int column, const bool magnitude) {
-                return magnitude ? std::abs(p.demands[column]) : p.demands[column];
-              }));
-          }
-      }
-    return sample;
+    return demands_of_runs(runner, stripe, x);
+  }
+
+  IdaDemandSample
+  cloud_demands(const IdaRunner &runner, const std::vector<IdaPoint> &cloud)
+  {
+    return demands_of_runs(runner, cloud, std::numeric_limits<double>::quiet_NaN());
   }
 } // namespace poundfe

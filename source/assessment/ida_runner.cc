@@ -2,6 +2,7 @@
 // journal rows (ida.h); the runs over the ranks are in ida_scheduler.cc.
 #include <poundfe/assessment/ida.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/numbers.h>
 #include <poundfe/base/progress.h>
 #include <poundfe/excitation/excitation.h>
 #include <poundfe/output/demand_table.h>
@@ -14,9 +15,51 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace poundfe
 {
+  namespace
+  {
+    /// Refuses (InputError naming IDA/Period, or IDA/Sa_avg range for
+    /// Sa_avg) the measure's periods outside the range every record of
+    /// `suite` resolves: from its Nyquist period, twice its time step (below
+    /// it the oscillator follows the ground and Sa is the PGA), to its
+    /// duration (beyond it the record holds not one cycle).
+    void
+    refuse_periods_the_records_do_not_resolve(const IdaParameters &ida, const double first_period,
+                                              const RecordSuite &suite, const InputFile &input)
+    {
+      const std::vector<double> periods = ida.measure_periods(first_period);
+      if (periods.empty() || suite.records.empty())
+        return;
+      double      shortest = 0, longest = std::numeric_limits<double>::infinity();
+      std::string shortest_of, longest_of;
+      for (const SuiteRecord &record : suite.records)
+        for (const GroundMotion &component : record.components)
+          {
+            if (2 * component.time_step() > shortest)
+              shortest = 2 * component.time_step(), shortest_of = record.name;
+            if (component.duration() < longest)
+              longest = component.duration(), longest_of = record.name;
+          }
+      const auto [low, high] = std::minmax_element(periods.begin(), periods.end());
+      if (*low >= shortest && *high <= longest)
+        return;
+      const bool        average = ida.measure == IntensityMeasure::sa_avg;
+      const std::string centre =
+        ida.period > 0 ? "" : " (IDA/Period = 0: the model's first period, " + rounded(first_period) + " s)";
+      const std::string taken = average ? "Sa_avg's periods, " + rounded(*low) + " to " +
+                                            rounded(*high) + " s" + centre + ", lie" :
+                                          "Sa's period, " + rounded(*low) + " s" + centre + ", lies";
+      input.fail(average ? "IDA/Sa_avg range" : "IDA/Period",
+                 taken + " outside the periods every record of the suite resolves, " +
+                   rounded(shortest) + " to " + rounded(longest) +
+                   " s: from twice the time step (the Nyquist period) of record '" + shortest_of +
+                   "' to the duration of record '" + longest_of + "'");
+    }
+  } // namespace
+
   IdaRunner::IdaRunner(const Analysis &analysis_, const TimeHistoryParameters &parameters,
                        const IdaParameters &ida_, RecordSuite suite)
     : analysis(analysis_)
@@ -39,6 +82,7 @@ namespace poundfe
                        "Output/Number of modes >= 1 or a Period");
     const double first = analysis.modes.omega.empty() ? 1.0 : 2 * M_PI / analysis.modes.omega[0];
     periods            = ida.measure_periods(first);
+    refuse_periods_the_records_do_not_resolve(ida, first, records, input);
     for (const SuiteRecord &record : records.records)
       {
         base.push_back(intensity_of(record.components, ida.measure, ida.pair, periods,

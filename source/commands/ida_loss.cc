@@ -1,5 +1,6 @@
-// The demand tables of `poundfe ida` and `poundfe msa`, and the collapse
-// margin of `poundfe ida` (commands/ida_loss.h).
+// The demand tables of `poundfe ida` and `poundfe msa` (msa: stripes and cloud),
+// the collapse margin of `poundfe ida` and the warnings of both for the Ground
+// motion entries they ignore (commands/ida_loss.h).
 #include "ida_loss.h"
 
 #include <poundfe/assessment/collapse_margin.h>
@@ -11,6 +12,9 @@
 #include <poundfe/output/demand_table.h>
 #include <poundfe/output/json_writer.h>
 
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -19,9 +23,10 @@ namespace poundfe::commands
   void
   write_demand_samples(const CommandRun &run, const Model &model, const IdaRunner &runner,
                        const IdaParameters &ida, const std::vector<IdaDemandSample> &samples,
-                       const std::string &suffix, JsonWriter &json, std::ostream &out,
-                       std::vector<std::string> &files)
+                       const std::vector<std::string> &labels, JsonWriter &json,
+                       std::ostream &out, std::vector<std::string> &files)
   {
+    Assert(labels.size() == samples.size(), dealii::ExcMessage("a label per sample"));
     const std::string unit = intensity_unit(ida.measure);
     // Sa(T) of the rows (every record is scaled to it), as pelicun names a
     // spectral acceleration: SA_<T in s, two decimals>
@@ -42,20 +47,27 @@ namespace poundfe::commands
             DemandTable table(model, b, false, spectral_type);
             for (const ResponseDemands &row : sample.rows)
               table.add(row);
-            names.push_back(demand_table_file(model, b, suffix + std::to_string(k + 1)));
+            names.push_back(demand_table_file(model, b, labels[k]));
             write_result_text(run.memory, run.directory, names.back(), table.csv());
           }
         std::vector<std::string> records;
         for (const unsigned int r : sample.records)
           records.push_back(runner.suite().records[r].name);
-        json.begin_object()
-          .value("intensity", sample.intensity)
-          .value("files", names)
+        const bool cloud = std::isnan(sample.intensity); // each row at its own
+        json.begin_object();
+        if (cloud)
+          json.value("cloud", true);
+        else
+          json.value("intensity", sample.intensity);
+        json.value("files", names)
           .value("records", records)
           .value("collapsed", sample.collapsed)
           .value("not_reached", sample.not_reached)
           .end_object();
-        out << "demands at " << rounded(sample.intensity) << " " << unit << ": "
+        out << "demands "
+            << (cloud ? "of the cloud (each record at its own intensity)" :
+                        "at " + rounded(sample.intensity) + " " + unit)
+            << ": "
             << sample.rows.size() << " records, " << sample.collapsed << " collapsed";
         if (sample.not_reached > 0)
           out << ", " << sample.not_reached << " not run that high";
@@ -74,9 +86,13 @@ namespace poundfe::commands
     if (ida.demand_intensities.empty())
       return;
     std::vector<IdaDemandSample> samples;
+    std::vector<std::string>     labels;
     for (const double x : ida.demand_intensities)
-      samples.push_back(ida_demands_at(runner, result, x));
-    write_demand_samples(run, model, runner, ida, samples, "_im", json, out, files);
+      {
+        samples.push_back(ida_demands_at(runner, result, x));
+        labels.push_back("_im" + std::to_string(samples.size()));
+      }
+    write_demand_samples(run, model, runner, ida, samples, labels, json, out, files);
   }
 
   void
@@ -123,5 +139,21 @@ namespace poundfe::commands
         << (m.passes_20 ? "passes" : (m.lower_bound ? "not shown" : "fails")) << ", "
         << rounded(m.acceptable_10) << " (10 %, a group's mean): "
         << (m.passes_10 ? "passes" : (m.lower_bound ? "not shown" : "fails")) << "\n";
+  }
+
+  std::vector<std::string>
+  ignored_ground_motion_entries(const InputFile &input, const std::string &command)
+  {
+    std::vector<std::pair<int, std::string>> written; // (line, path): the file's order
+    for (const auto &[path, line] : input.lines)
+      if (path.rfind("Ground motion/", 0) == 0 && path != "Ground motion/Incidence angle")
+        written.emplace_back(line, path);
+    std::sort(written.begin(), written.end());
+    std::vector<std::string> warnings;
+    for (const auto &[line, path] : written)
+      warnings.push_back(input.warning(path, "has no effect on " + command +
+                                               ": it shakes the model with the records of "
+                                               "IDA/Suite alone"));
+    return warnings;
   }
 } // namespace poundfe::commands

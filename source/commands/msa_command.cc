@@ -339,9 +339,11 @@ namespace poundfe::commands
         write_result_text(run.memory, run.directory, "journal/" + name, text);
       const auto counts = count_stripes(result, states);
       write_stripes(run, states, counts, stripes);
-      std::vector<std::string>       warnings;
+      std::vector<std::string>       rates;
       const std::vector<FittedState> fits =
-        write_fragilities(run, states, counts, stripes, result, warnings);
+        write_fragilities(run, states, counts, stripes, result, rates);
+      std::vector<std::string> warnings = ignored_ground_motion_entries(input, "msa");
+      warnings.insert(warnings.end(), rates.begin(), rates.end());
       std::optional<CloudFit> cloud;
       if (input.msa.cloud && !result.cloud.empty())
         cloud = write_cloud(run, runner, result, input);
@@ -352,18 +354,27 @@ namespace poundfe::commands
         .value("unit", unit)
         .value("periods_s", runner.measure_periods());
       write_summary(json, run.out, result, states, fits, cloud, unit);
-      if (input.output.demand_tables) // a table per stripe, of its runs
+      if (input.output.demand_tables) // a table per stripe, of its runs, and the cloud's
         {
           std::vector<IdaDemandSample> samples;
+          std::vector<std::string>     labels;
           for (std::size_t j = 0; j < result.runs.size(); ++j)
-            samples.push_back(stripe_demands(runner, result.runs[j], result.stripes[j]));
+            {
+              samples.push_back(stripe_demands(runner, result.runs[j], result.stripes[j]));
+              labels.push_back("_stripe" + std::to_string(j + 1));
+            }
+          if (!result.cloud.empty())
+            {
+              samples.push_back(cloud_demands(runner, result.cloud));
+              labels.push_back("_cloud");
+            }
           std::vector<std::string> files;
-          write_demand_samples(run, runner.model(), runner, ida, samples, "_stripe", json,
-                               run.out, files);
+          write_demand_samples(run, runner.model(), runner, ida, samples, labels, json, run.out,
+                               files);
         }
       if (!warnings.empty())
         json.value("warnings", warnings);
-      for (const std::string &w : warnings)
+      for (const std::string &w : rates) // the entries' ones: on stderr at the start
         run.out << "warning: " << w << "\n";
       json.end_object();
       if (input.output.plots && !result.counters.interrupted && !run.memory)
@@ -390,6 +401,9 @@ namespace poundfe::commands
     const Analysis analysis = prepare_analysis(input);
     IdaRunner      runner(analysis, time_history_parameters(input), input.ida, std::move(suite));
     input.msa.parse_limit_states(input, runner.demand_names()); // refused before any run
+    if (rank == 0)
+      for (const std::string &w : ignored_ground_motion_entries(input, "msa"))
+        std::cerr << "poundfe: warning: " << w << "\n";
     if (rank == 0 && !run.memory) // the journal of an earlier run stays: it resumes from it
       prepare_output_directory(run.directory, {"realizations.csv"});
     timer.leave_subsection();

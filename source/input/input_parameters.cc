@@ -1,5 +1,6 @@
 #include <poundfe/input/input_parameters.h>
 #include <poundfe/input/parameter_text.h>
+#include <poundfe/input/unknown_path.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/input_text.h>
 #include <poundfe/base/numbers.h>
@@ -70,13 +71,97 @@ namespace poundfe
       return "";
     }
 
+    /// Every entry of `prm` as (path, value), from deal.II's short PRM
+    /// listing ("subsection S", "set E = V", "end"), in declaration order.
+    std::vector<std::pair<std::string, std::string>>
+    flattened_values(const ParameterHandler &prm)
+    {
+      std::ostringstream listing;
+      prm.print_parameters(listing, ParameterHandler::OutputStyle(ParameterHandler::ShortPRM |
+                                                                  ParameterHandler::KeepDeclarationOrder));
+      std::vector<std::pair<std::string, std::string>> values;
+      std::vector<std::string>                         sections;
+      std::istringstream                               in(listing.str());
+      for (std::string line; std::getline(in, line);)
+        {
+          const std::string text = trimmed(line);
+          if (text.rfind("subsection ", 0) == 0)
+            sections.push_back(trimmed(text.substr(11)));
+          else if (text == "end" && !sections.empty())
+            sections.pop_back();
+          else if (text.rfind("set ", 0) == 0)
+            {
+              const std::size_t equals = text.find('=');
+              std::string       path;
+              for (const std::string &s : sections)
+                path += s + "/";
+              path += trimmed(text.substr(4, equals - 4));
+              values.emplace_back(path, equals == std::string::npos ? "" : trimmed(text.substr(equals + 1)));
+            }
+        }
+      return values;
+    }
+
+    /// The path of every entry of `prm`, in declaration order.
+    std::vector<std::string>
+    declared_paths(const ParameterHandler &prm)
+    {
+      std::vector<std::string> paths;
+      for (const auto &[path, value] : flattened_values(prm))
+        paths.push_back(path);
+      return paths;
+    }
+
+    /// deal.II's words for an entry or subsection of a file that is not
+    /// declared, in the reader's own (unknown_path.h, the same as for an
+    /// override) where the path is known: `parameter`, the entry set on the
+    /// line, or the subsection path deal.II names ('.' between its parts).
+    std::string
+    reworded_unknown_path(const ParameterHandler &prm, const std::string &text,
+                          const std::string &parameter)
+    {
+      static const std::string entry   = "No entry with name <";
+      static const std::string json    = "You can't ask for entry <";
+      static const std::string section = "There is no such subsection to be entered: ";
+      if ((text.rfind(entry, 0) == 0 || text.rfind(json, 0) == 0) && !parameter.empty())
+        return unknown_path_problem(declared_paths(prm), parameter, false);
+      if (text.rfind(section, 0) == 0)
+        {
+          std::string path = text.substr(section.size());
+          std::replace(path.begin(), path.end(), '.', '/');
+          return unknown_path_problem(declared_paths(prm), path, true);
+        }
+      return text;
+    }
+
+    /// deal.II's JSON reader names an undeclared entry alone ("You can't ask
+    /// for entry <E> ..."): the path of the file's first entry E that is not
+    /// declared ("" when there is none, or the text is another).
+    std::string
+    undeclared_json_path(const ParameterHandler &prm, const InputFile &p, const std::string &text)
+    {
+      static const std::string json = "You can't ask for entry <";
+      const std::size_t        end  = text.find('>', json.size());
+      if (text.rfind(json, 0) != 0 || end == std::string::npos)
+        return "";
+      const std::string              name     = text.substr(json.size(), end - json.size());
+      const std::vector<std::string> declared = declared_paths(prm);
+      for (const auto &[path, line] : p.lines)
+        if (path.size() > name.size() && path.compare(path.size() - name.size(), name.size(), name) == 0 &&
+            path[path.size() - name.size() - 1] == '/' &&
+            std::find(declared.begin(), declared.end(), path) == declared.end())
+          return path;
+      return "";
+    }
+
     /// deal.II's messages carry "Line <n> of file <f>:" (sometimes without
     /// the closing '>'): turn them into ours, blaming file f, which is an
     /// included file when the error is in one, and naming the entry set on
     /// that line of the parameter file (a value its pattern refuses), so
     /// that a caller can say where the entry was set (Python's Model).
     [[noreturn]] void
-    rethrow_parse_error(const InputFile &p, const dealii::ExceptionBase &e)
+    rethrow_parse_error(const ParameterHandler &prm, const InputFile &p,
+                        const dealii::ExceptionBase &e)
     {
       const std::string &file = p.file;
       std::ostringstream info;
@@ -102,9 +187,12 @@ namespace poundfe
         }
       if (text.empty())
         text = collapse_whitespace(e.what());
-      const bool here = blamed.empty() || blamed == file;
-      throw InputError(here ? file : blamed, line, here ? entry_on_line(p, line) : "",
-                       plain_patterns(text));
+      const bool        here      = blamed.empty() || blamed == file;
+      std::string       parameter = here ? entry_on_line(p, line) : "";
+      if (parameter.empty() && here)
+        parameter = undeclared_json_path(prm, p, text);
+      throw InputError(here ? file : blamed, line, parameter,
+                       plain_patterns(reworded_unknown_path(prm, text, parameter)));
     }
 
     /// An override's path taken apart: "A/B/Entry:k" is sections {A, B},
@@ -160,44 +248,52 @@ namespace poundfe
 
     /// Set one override in `prm` (at its top level). With `skip_undeclared`
     /// (the first pass, which declares only the number of buildings) a path
-    /// not declared is left alone; otherwise it is an InputError. (A failed
-    /// override leaves `prm` inside the sections: it is thrown away then.)
+    /// not declared is left alone; otherwise it is an InputError in the
+    /// file reader's words (unknown_path.h). (A failed value leaves `prm`
+    /// inside the sections: it is thrown away then.)
     void
     apply_override(ParameterHandler &prm, InputFile &p, const ParameterOverride &o,
                    const bool skip_undeclared)
     {
       const OverridePath split = split_override_path(p, o.path);
-      if (!prm.subsection_path_exists(split.sections))
+      std::string        path;
+      for (const std::string &section : split.sections)
+        path += section + "/";
+      path += split.entry;
+      bool declared = prm.subsection_path_exists(split.sections);
+      if (declared)
+        {
+          for (const std::string &section : split.sections)
+            prm.enter_subsection(section);
+          try
+            {
+              const std::string current = prm.get(split.entry); // throws when undeclared
+              prm.set(split.entry, split.field == 0 ?
+                                     o.value :
+                                     replace_field(p, o.path, current, split.field, o.value));
+            }
+          catch (const dealii::ParameterHandler::ExcEntryUndeclared &)
+            {
+              declared = false;
+            }
+          catch (const dealii::ExceptionBase &e)
+            {
+              std::ostringstream info;
+              e.print_info(info);
+              p.fail(o.path, "override value '" + o.value + "' is not allowed: " +
+                               collapse_whitespace(info.str()));
+            }
+          for (std::size_t i = 0; i < split.sections.size(); ++i)
+            prm.leave_subsection();
+        }
+      if (!declared)
         {
           if (skip_undeclared)
             return;
-          p.fail(o.path, "override: there is no such section");
+          p.fail(path, unknown_path_problem(declared_paths(prm), path, false));
         }
-      for (const std::string &section : split.sections)
-        prm.enter_subsection(section);
-      try
-        {
-          const std::string current = prm.get(split.entry); // throws when undeclared
-          prm.set(split.entry, split.field == 0 ?
-                                 o.value :
-                                 replace_field(p, o.path, current, split.field, o.value));
-        }
-      catch (const dealii::ParameterHandler::ExcEntryUndeclared &)
-        {
-          if (!skip_undeclared)
-            p.fail(o.path, "override: there is no such parameter");
-        }
-      catch (const dealii::ExceptionBase &e)
-        {
-          std::ostringstream info;
-          e.print_info(info);
-          p.fail(o.path, "override value '" + o.value + "' is not allowed: " +
-                           collapse_whitespace(info.str()));
-        }
-      for (std::size_t i = 0; i < split.sections.size(); ++i)
-        prm.leave_subsection();
       // written, but not on a line of the file any more (model/entry_scope.h)
-      p.lines[o.path.substr(0, o.path.rfind(':'))] = 0;
+      p.lines[path] = 0;
     }
 
     /// Parse `text` (a prepared .prm text, or JSON) into `prm`, then the overrides.
@@ -215,7 +311,7 @@ namespace poundfe
         }
       catch (const dealii::ExceptionBase &e)
         {
-          rethrow_parse_error(p, e);
+          rethrow_parse_error(prm, p, e);
         }
       for (const ParameterOverride &o : overrides)
         apply_override(prm, p, o, skip_undefined);
@@ -415,40 +511,6 @@ namespace poundfe
     }
   } // namespace
 
-  namespace
-  {
-    /// Every entry of `prm` as (path, value), from deal.II's short PRM
-    /// listing ("subsection S", "set E = V", "end"), in declaration order.
-    std::vector<std::pair<std::string, std::string>>
-    flattened_values(const ParameterHandler &prm)
-    {
-      std::ostringstream listing;
-      prm.print_parameters(listing, ParameterHandler::OutputStyle(ParameterHandler::ShortPRM |
-                                                                  ParameterHandler::KeepDeclarationOrder));
-      std::vector<std::pair<std::string, std::string>> values;
-      std::vector<std::string>                         sections;
-      std::istringstream                               in(listing.str());
-      for (std::string line; std::getline(in, line);)
-        {
-          const std::string text = trimmed(line);
-          if (text.rfind("subsection ", 0) == 0)
-            sections.push_back(trimmed(text.substr(11)));
-          else if (text == "end" && !sections.empty())
-            sections.pop_back();
-          else if (text.rfind("set ", 0) == 0)
-            {
-              const std::size_t equals = text.find('=');
-              std::string       path;
-              for (const std::string &s : sections)
-                path += s + "/";
-              path += trimmed(text.substr(4, equals - 4));
-              values.emplace_back(path, equals == std::string::npos ? "" : trimmed(text.substr(equals + 1)));
-            }
-        }
-      return values;
-    }
-  } // namespace
-
   std::vector<std::pair<std::string, std::string>>
   resume_inputs(const InputParameters &input, const std::string &command)
   {
@@ -541,12 +603,20 @@ namespace poundfe
           std::string       building;
           int               line = e.line();
           if (e.problem().rfind(undeclared, 0) == 0)
-            building = e.problem().substr(undeclared.size());
+            {
+              // its number alone, beyond the buildings declared
+              const std::string rest   = e.problem().substr(undeclared.size());
+              const std::size_t digits = std::min(rest.find_first_not_of("0123456789"), rest.size());
+              if (digits > 0 && digits <= 9 && (digits == rest.size() || rest[digits] == '/' ||
+                                                rest[digits] == ' ') &&
+                  std::stoul(rest.substr(0, digits)) > n_buildings)
+                building = rest.substr(0, digits);
+            }
           else if (extension == ".json")
             building = building_beyond(text, n_buildings, line);
           if (building.empty())
             throw;
-          throw InputError(e.file(), line, "",
+          throw InputError(e.file(), line, e.parameter(),
                            "'Building " + building + "' is given, but Model/Number of buildings is " +
                              std::to_string(n_buildings) + " (raise it, or remove the section)");
         }

@@ -210,8 +210,9 @@ namespace poundfe
                "their history; the ranks exchange the far ends of the elements between "
                "them; every rank observes its own buildings and rank 0 writes every "
                "output, merged from the ranks; theory §3.5d). buildings needs Method = newmark, a one-process Linear "
-               "solver (eigen-ldlt or umfpack) for each rank's block, a nonlinear solver "
-               "that reuses its factorisation (auto is then krylov-newton), Tangent "
+               "solver (eigen-ldlt or umfpack) for each rank's block, a Nonlinear solver "
+               "that reuses its factorisation (krylov-newton, modified-newton, bfgs, or auto, "
+               "then krylov-newton; not the default newton), Tangent "
                "update = refactorize or auto (then refactorize), no friction "
                "surfaces and no initial conditions, and at least as many separable "
                "buildings as ranks; other commands than run refuse it. Unit: -.",

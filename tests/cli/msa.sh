@@ -25,8 +25,13 @@
 #    in the test from the records' columns (1e-9 in ln Sa: printed
 #    numbers), the target's band symmetric in ln Sa and up to BSSA14's
 #    sigma wide (0.1 to 1);
+#  - with MSA/Cloud, a demand table of the cloud too (a row per unscaled
+#    run that did not collapse, its demands those of cloud.csv, its PGA the
+#    run's intensity, 1e-9 relative);
+#  - msa and ida warn of each Ground motion entry written (but the incidence
+#    angle), with its file and line, also in summary.json;
 #  - bad input: one line naming file, line and parameter, exit 1, nothing
-#    written.
+#    written; among it Sa's period outside what every record resolves.
 poundfe=$(realpath "$1") mpirun=$2 example=$(realpath "$3")
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
@@ -100,7 +105,7 @@ done
 "$poundfe" msa "$example" --output example "${suite[@]}" --set "MSA/Hazard curve=$work/hazard.csv" \
   --set "MSA/Return periods=475" --set "MSA/Intensities=0.2, 0.8" \
   --set "Ground motion/Stochastic/Duration=4" --set "Output/Plots=false" \
-  --set "Output/Demand tables=true" > example.log || die "msa example: $(cat example.log)"
+  --set "Output/Demand tables=true" > example.log 2> example.err || die "msa example: $(cat example.log example.err)"
 for f in summary.json msa.csv msa_stripes.csv msa_fragility.csv msa_curves.csv cloud.csv; do
   [ -f "example/$f" ] || die "msa wrote no $f"
 done
@@ -113,8 +118,8 @@ from pelicun_schema import check_schema
 d = sys.argv[1]
 runs = list(csv.DictReader(open(f"{d}/msa.csv")))
 listed = json.load(open(f"{d}/summary.json"))["demand_tables"]
-assert len(listed) == 3, listed
-for j, entry in enumerate(listed, 1):
+assert len(listed) == 4 and listed[3]["cloud"] is True and "intensity" not in listed[3], listed
+for j, entry in enumerate(listed[:3], 1):
     stripe = [r for r in runs if r["stripe"] == str(j)]
     kept = [r for r in stripe if r["collapsed"] == "0"]
     assert entry["collapsed"] == len(stripe) - len(kept) and len(entry["records"]) == len(kept), entry
@@ -135,8 +140,49 @@ for j, entry in enumerate(listed, 1):
                                      lambda x: float(x) / 9.80665)):
                     if abs(v[col] - f(run[key])) > 1e-9 * max(1e-12, abs(v[col])):
                         sys.exit(f"{name} {col}: {v[col]} against {run[key]} of msa.csv")
-print("msa: a pelicun demand table per building and stripe, the runs' own demands")
+# the cloud's: a row per unscaled run that did not collapse, its demands
+# those of cloud.csv, PGA (the measure) the record's own
+cloud = list(csv.DictReader(open(f"{d}/cloud.csv")))
+kept = [r for r in cloud if r["collapsed"] == "0"]
+assert len(listed[3]["records"]) == len(kept) and kept, listed[3]
+for b, n in (("shear3", 3), ("shear2", 2)):
+    name = f"demands_{b}_cloud.csv"
+    assert name in listed[3]["files"], listed[3]
+    head, rows = check_schema(f"{d}/{name}")
+    assert len(rows) == len(kept), (name, len(rows), len(kept))
+    for row, run in zip(rows, kept):
+        v = dict(zip(head, map(float, row[1:])))
+        if abs(v["1-PFA-0-1"] - float(run["intensity"])) > 1e-9 * v["1-PFA-0-1"]:
+            sys.exit(f"{name}: PGA {v['1-PFA-0-1']} g against the run's {run['intensity']}")
+        for s in range(1, n + 1):
+            want = float(run[f"{b}_storey{s}_peak_drift_ratio"])
+            if abs(v[f"1-PID-{s}-1"] - want) > 1e-9 * max(1e-12, abs(want)):
+                sys.exit(f"{name} 1-PID-{s}-1: {v[f'1-PID-{s}-1']} against {want} of cloud.csv")
+print("msa: a pelicun demand table per building and stripe, and of the cloud, the runs' own demands")
 PY
+# the Ground motion entries the example writes for its suite's generator
+# (ground-motion --write-at2) do nothing in msa: each warned of with its
+# file, line and entry, and listed in summary.json (--set ones: no line)
+n=$((n + 1))
+for entry in Type Stochastic/Soil "Stochastic/Target PGA" Stochastic/Seed; do
+  line=$(awk -v e="${entry#Stochastic/}" '/^subsection Ground motion/ {g = 1} g && $0 ~ "set " e " *=" {print NR; exit}' "$example")
+  grep -qF "poundfe: warning: $example:$line: parameter 'Ground motion/$entry': has no effect on msa: it shakes the model with the records of IDA/Suite alone" example.err ||
+    die "no warning for Ground motion/$entry (line $line): $(cat example.err)"
+done
+grep -qF "poundfe: warning: $example: parameter 'Ground motion/Stochastic/Duration': has no effect on msa" example.err ||
+  die "no warning for Ground motion/Stochastic/Duration (--set): $(cat example.err)"
+[ "$(grep -c "has no effect on msa" example.err)" -eq 5 ] || die "expected 5 warnings: $(cat example.err)"
+python3 -c 'import json, sys; w = json.load(open(sys.argv[1]))["warnings"]
+sys.exit(sum("has no effect on msa" in x for x in w) != 5)' example/summary.json ||
+  die "summary.json: not 5 warnings"
+"$poundfe" ida "$here/msa/linear.prm" --output idawarn "${suite[@]}" --set "Ground motion/Type=none" \
+  --set "IDA/Upper intensity=0.3" --set "Ground motion/Incidence angle=0" > /dev/null 2> idawarn.err ||
+  die "ida with a Ground motion entry: $(cat idawarn.err)"
+[ "$(grep -c "has no effect on ida" idawarn.err)" -eq 1 ] &&
+  grep -qF "parameter 'Ground motion/Type': has no effect on ida" idawarn.err &&
+  grep -qF "parameter 'Ground motion/Type': has no effect on ida" idawarn/summary.json ||
+  die "ida's warning (Type alone, not the incidence angle): $(cat idawarn.err)"
+echo "ok   msa and ida warn of each Ground motion entry they ignore, file:line"
 
 # select-records: a suite msa reads
 "$poundfe" select-records "$example" --output sel "${suite[@]}" --set "Selection/Records=2" \
@@ -219,4 +265,17 @@ expect 1 "parameter 'Ground motion/Incidence angle': an incidence angle needs Mo
   ida "$m" "${suite[@]}" --output out --set "Ground motion/Incidence angle=90"
 expect 1 "parameter 'intensity': the hazard curve has no column 'intensity'" "${ms[@]}" \
   --set "MSA/Hazard curve=$work/zero.csv" --set "MSA/Hazard column=intensity"
+# Sa's periods outside those every record resolves (twice its time step to
+# its duration): refused naming the entry, with its line when written
+resolves="outside the periods every record of the suite resolves"
+expect 1 "parameter 'IDA/Period': Sa's period, 0.001 s, lies $resolves" "${ms[@]}" --set "IDA/Period=0.001"
+expect 1 "parameter 'IDA/Period': Sa's period, 1e+03 s, lies $resolves" \
+  ida "$m" "${suite[@]}" --output out --set "IDA/Period=1000"
+expect 1 "parameter 'IDA/Sa_avg range': Sa_avg's periods, 0.2 to 1e+03 s, lie $resolves" "${ms[@]}" \
+  --set "IDA/Intensity measure=Sa_avg" --set "IDA/Period=1" --set "IDA/Sa_avg range=0.2, 1000"
+sed 's/^  set Intensity measure    = Sa$/&\n  set Period               = 0.001/' "$m" > period.prm
+expect 1 "period.prm:17: parameter 'IDA/Period': Sa's period, 0.001 s, lies $resolves" \
+  msa "$work/period.prm" "${suite[@]}" --output out
+expect 0 "runs" msa "$m" "${suite[@]}" --output periods --set "IDA/Period=0.05" --set "MSA/Intensities=0.1"
+rm -rf periods
 report "msa"

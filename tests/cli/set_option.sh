@@ -7,7 +7,8 @@
 #  2. applied in order: the last --set of an entry wins;
 #  3. an unknown entry or section is refused with the reader's own message
 #     (that of poundfe.read's overrides: tests/python/test_command_rules.py
-#     compares the two), a value out of range names the
+#     compares the two), in the words the file reader has for the same entry
+#     written in the file, with the closest declared names, a value out of range names the
 #     entry, a malformed --set and --set for a command that reads no file
 #     are refused: exit 1, one line, nothing written (tests/cli/expect.sh);
 #  4. the distributed-solver column (several ranks only, so not in Python's
@@ -64,10 +65,22 @@ cmp -s plain/summary.json set-modal/summary.json && fail "--set changed nothing 
 same_output "the last --set of an entry wins" file-modal twice
 
 # refused as the reader refuses an override (read_parameters), nothing written
-expect 1 "parameter 'Building 1/Storey stiffnes': override: there is no such parameter" \
+misspelt="No entry with name <Storey stiffnes> in 'Building 1' (did you mean 'Storey stiffnesses'?)"
+expect 1 "parameter 'Building 1/Storey stiffnes': $misspelt" \
   modal "$base" --set "Building 1/Storey stiffnes=4e6" --output out
-expect 1 "parameter 'Buildin 1/Storey stiffnesses': override: there is no such section" \
+expect 1 "parameter 'Buildin 1/Storey stiffnesses': There is no such subsection to be entered: Buildin 1 (did you mean 'Building 1'?)" \
   modal "$base" --set "Buildin 1/Storey stiffnesses=4e6" --output out
+# the same words as the file reader's for the same entry written in the file
+# (the reference: that file's message, after its file:line)
+sed 's/set Storey stiffnesses = 5e6/set Storey stiffnes = 4e6/' "$base" > misspelt.prm
+cmp -s "$base" misspelt.prm && fail "misspelt.prm: the sed expression changed nothing"
+expect 1 "misspelt.prm:" modal misspelt.prm --output out
+n=$((n + 1))
+from_file=$(sed 's/^.*misspelt\.prm:[0-9]*: //' stderr)
+"$poundfe" modal "$base" --set "Building 1/Storey stiffnes=4e6" --output out > /dev/null 2> stderr
+from_set=$(sed 's/^.*three-storey-shear\.prm: //' stderr)
+[ "$from_file" = "$from_set" ] && [ "$from_file" = "parameter 'Building 1/Storey stiffnes': $misspelt" ] ||
+  fail "the file says '$from_file', --set '$from_set'"
 expect 1 "override value 'often' is not allowed" \
   run "$base" --set "Output/Plots=often" --output out
 expect 1 "Building 1/Damping/Damping ratio" \

@@ -4,10 +4,13 @@
 // patterns and checks; an unknown path or a refused value is one InputError
 // naming the path.
 #include <poundfe/input/input_parameters.h>
+#include <poundfe/input/unknown_path.h>
 #include <poundfe/base/exceptions.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -111,8 +114,12 @@ BOOST_AUTO_TEST_CASE(bad_overrides_are_input_errors_naming_the_path)
   for (const Case &c : std::vector<Case>{
          {two_buildings, "Model/Separations", "-0.1", "must be zero or positive"},
          {two_buildings, "Model/Separations", "wide", "is not allowed"},
-         {two_buildings, "Model/Spacing", "0.1", "no such parameter"},
-         {two_buildings, "Building 3/Floor masses", "1", "no such section"},
+         {two_buildings, "Model/Spacing", "0.1", "No entry with name <Spacing> in 'Model'"},
+         {two_buildings, "Building 3/Floor masses", "1",
+          "'Building 3' is given, but Model/Number of buildings is 2"},
+         {two_buildings, "Buildin 1/Floor masses", "1",
+          "There is no such subsection to be entered: Buildin 1 (did you mean 'Building 1' or "
+          "'Building 2'?)"},
          {two_buildings, "Separations", "0.1", "a path is"},
          {json, "Building 1/Floor masses", "-5", "positive"},
          {sdof, "Nodal forces/Harmonic:8", "1", "has 7 fields, not 8"},
@@ -125,6 +132,103 @@ BOOST_AUTO_TEST_CASE(bad_overrides_are_input_errors_naming_the_path)
                  c.path << " = " << c.value << ": " << e.what());
       BOOST_TEST(e.file() == c.file);
     }
+}
+
+BOOST_AUTO_TEST_CASE(an_unknown_path_is_refused_in_the_same_words_by_the_file_and_an_override)
+{
+  // the reference: the same misspelt path written into the file
+  struct Case
+  {
+    std::string block, path, problem;
+  };
+  for (const Case &c : std::vector<Case>{
+         {"subsection Time integration\n  set Tim step = 0.01\nend\n", "Time integration/Tim step",
+          "No entry with name <Tim step> in 'Time integration' (did you mean 'Time step'?)"},
+         {"subsection Time integraton\n  set Time step = 0.01\nend\n", "Time integraton/Time step",
+          "There is no such subsection to be entered: Time integraton (did you mean 'Time "
+          "integration'?)"},
+         {"subsection Building 1\n  subsection Dampng\n    set Type = none\n  end\nend\n",
+          "Building 1/Dampng/Type",
+          "There is no such subsection to be entered: Building 1/Dampng (did you mean 'Damping'?)"},
+         {"subsection Model\n  set Time step = 0.01\nend\n", "Model/Time step",
+          "No entry with name <Time step> in 'Model' (did you mean 'Ground motion/Record/Time "
+          "step' or 'Time integration/Time step'?)"}})
+    {
+      // a file of no other section (a section may be entered only once)
+      const std::string base = "subsection Output\n  set Plots = false\nend\n";
+      const std::filesystem::path directory = std::filesystem::temp_directory_path();
+      const std::string file = (directory / "poundfe-test-unknown-path.prm").string();
+      const std::string plain = (directory / "poundfe-test-known-paths.prm").string();
+      std::ofstream(file) << base << c.block;
+      std::ofstream(plain) << base;
+      std::string from_file;
+      try
+        {
+          read_parameters(file);
+          BOOST_ERROR("no InputError for " + c.path + " in the file");
+        }
+      catch (const InputError &e)
+        {
+          from_file = e.problem();
+          BOOST_TEST(e.line() > 0, c.path);
+        }
+      const InputError from_override = error_of(plain, c.path, "0.01");
+      std::filesystem::remove(file);
+      std::filesystem::remove(plain);
+      BOOST_TEST(from_file == c.problem);
+      BOOST_TEST(from_override.problem() == c.problem);
+      BOOST_TEST(from_override.parameter() == c.path);
+      BOOST_TEST(from_override.file() == plain);
+    }
+  // a JSON file: deal.II's JSON reader names the entry alone; the reader
+  // finds its path among the file's keys
+  for (const Case &c : std::vector<Case>{
+         {R"({"Time integration": {"Tim step": "0.01"}})", "Time integration/Tim step",
+          "No entry with name <Tim step> in 'Time integration' (did you mean 'Time step'?)"},
+         {R"({"Building 1": {"Dampng": {"Type": "none"}}})", "Building 1/Dampng/Type",
+          "There is no such subsection to be entered: Building 1/Dampng (did you mean 'Damping'?)"}})
+    {
+      const std::string file =
+        (std::filesystem::temp_directory_path() / "poundfe-test-unknown-path.json").string();
+      std::ofstream(file) << c.block;
+      try
+        {
+          read_parameters(file);
+          BOOST_ERROR("no InputError for " + c.path + " in the JSON file");
+        }
+      catch (const InputError &e)
+        {
+          BOOST_TEST(e.parameter() == c.path);
+          BOOST_TEST(e.problem() == c.problem);
+        }
+      std::filesystem::remove(file);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(suggestions_for_an_unknown_path)
+{
+  // Levenshtein's classic pair (Wagner & Fischer 1974): 3 edits, case ignored
+  BOOST_TEST(edit_distance("kitten", "SITTING") == 3u);
+  BOOST_TEST(edit_distance("", "abc") == 3u);
+  const std::vector<std::string> declared{"Alpha/Speed", "Alpha/Spread", "Alpha/Beta/Speed",
+                                          "Gamma/Seed", "Gamma/Duration"};
+  // one edit from both: in their order of declaration
+  BOOST_TEST(unknown_path_problem(declared, "Alpha/Spead", false) ==
+             "No entry with name <Spead> in 'Alpha' (did you mean 'Speed' or 'Spread'?)");
+  BOOST_TEST(unknown_path_problem(declared, "Alpha/Sped", false) ==
+             "No entry with name <Sped> in 'Alpha' (did you mean 'Speed'?)");
+  BOOST_TEST(unknown_path_problem(declared, "Gamma/Colour", false) ==
+             "No entry with name <Colour> in 'Gamma'");
+  // the same name in another subsection
+  BOOST_TEST(unknown_path_problem(declared, "Alpha/duration", false) ==
+             "No entry with name <duration> in 'Alpha' (did you mean 'Gamma/Duration'?)");
+  BOOST_TEST(unknown_path_problem(declared, "Delta/Seed", false) ==
+             "There is no such subsection to be entered: Delta");
+  // names are case-sensitive; the suggestions are not
+  BOOST_TEST(unknown_path_problem(declared, "Alpha/beta/Speed", false) ==
+             "There is no such subsection to be entered: Alpha/beta (did you mean 'Beta'?)");
+  BOOST_TEST(unknown_path_problem(declared, "Alpha/Beta/Gamma", true) ==
+             "There is no such subsection to be entered: Alpha/Beta/Gamma");
 }
 
 BOOST_AUTO_TEST_CASE(sweep_values_and_one_input_per_value)

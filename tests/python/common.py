@@ -129,6 +129,10 @@ class CommandTestCase(TestCase):
         import numpy as np
         import poundfe
         header = [name or "index" for name in header]  # a demand table's row numbers
+        if header[0] == "index" and rows and rows[0][0] == "Units":  # its units row
+            self.assertIsInstance(table, poundfe.DemandTable, what)
+            self.assertEqual(table.units, dict(zip(header[1:], rows[0][1:])), f"{what}: units")
+            rows = rows[1:]
         if isinstance(table, poundfe.Table) and not any("wall" in name for name in header):
             self.assertEqual(table.names, header, what)
             self.assertIdentical(table.data, [[float(x) for x in row] for row in rows], what)

@@ -156,7 +156,8 @@ class CommandRules(TestCase):
             poundfe.read(EXAMPLE, overrides)
         message = self.refused_alike("modal", EXAMPLE, overrides)
         self.assertEqual(message, str(read.exception))
-        self.assertIn("override: there is no such parameter", message)
+        self.assertIn("No entry with name <Storey stiffnes> in 'Building 1' "
+                      "(did you mean 'Storey stiffnesses'?)", message)
 
     def test_the_usage_text_lists_the_rows(self):
         status, usage, _ = run_command_line("--help")

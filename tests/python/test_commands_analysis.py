@@ -78,8 +78,29 @@ class AnalysisCommands(CommandTestCase):
                                                   "IDA/Demand intensities": 0.2})
 
     def test_msa(self):
-        self.assertSameAsCommandLine("msa", IDA, {**QUIET, "MSA/Intensities": "0.1, 0.3",
-                                                  "MSA/Cloud": True})
+        # with the demand tables of each stripe and of the cloud (common.py
+        # checks their units against the files' units rows)
+        msa = self.assertSameAsCommandLine("msa", IDA, {**QUIET, "MSA/Intensities": "0.1, 0.3",
+                                                        "MSA/Cloud": True,
+                                                        "Output/Demand tables": True})
+        self.assertIn("demands_B1_cloud", msa.tables)
+        self.assertEqual(msa.summary["demand_tables"][-1]["cloud"], True)
+
+    def test_demand_tables_are_numbers_with_their_units_apart(self):
+        # pelicun's units row is no row of the array: every column float64,
+        # the units as table.units (reference: the units poundfe declares
+        # per demand type, output/demand_table.cc: PID rad, PFA g)
+        ida = poundfe.ida(IDA, overrides={**QUIET, "IDA/Runs per record": 2,
+                                          "IDA/Demand intensities": 0.2})
+        table = ida.tables["demands_B1_im1"]
+        self.assertIsInstance(table, poundfe.DemandTable)
+        self.assertEqual([table.dtype[name].kind for name in table.dtype.names],
+                         ["f"] * len(table.dtype.names))
+        self.assertEqual(table.units["1-PID-1-1"], "rad")
+        self.assertEqual(table.units["1-PFA-0-1"], "g")
+        self.assertEqual(sorted(table.units), sorted(set(table.dtype.names) - {"index"}))
+        self.assertEqual(list(table["index"]), list(range(len(table))))
+        self.assertEqual(table[:1].units, table.units)  # a slice keeps them
 
     def test_input_model_and_output(self):
         file = "tests/cli/dynamic-form-sdof.prm"

@@ -36,7 +36,7 @@ class Errors(TestCase):
                          (BAD, 12, "Building 1/Damping/Damping ratio"))
 
     def test_bad_override(self):
-        with self.assertRaisesRegex(poundfe.InputError, "Model/Gap.*no such parameter"):
+        with self.assertRaisesRegex(poundfe.InputError, "Model/Gap.*No entry with name <Gap> in 'Model'"):
             poundfe.read(EXAMPLE, overrides={"Model/Gap": 0.02})
         with self.assertRaisesRegex(poundfe.InputError, "must be zero or positive, got -1"):
             poundfe.read(EXAMPLE, overrides={"Model/Separations": -1})

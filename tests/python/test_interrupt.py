@@ -5,6 +5,8 @@ after drawing as always), and summary.json says "interrupted";
 the KeyboardInterrupt still reaches the caller. Two ways in: raised inside
 the callback (Ctrl-C while Python code runs), and a real SIGINT that
 arrives while poundfe steps (seen by the check every 256 steps).
+poundfe.command, the command line's own dispatcher, raises it too (not the
+exit status 130), its result the files written so far.
 Reference: the directory itself (what exists afterwards)."""
 
 import os
@@ -60,6 +62,25 @@ class InterruptedRun(TestCase):
             poundfe.run(poundfe.read(EXAMPLE), output=directory, callback=start, every=10**9)
         for timer in timers:
             timer.join()
+        self.check_directory(directory)
+
+    def test_command_raises_keyboard_interrupt(self):
+        # poundfe.command raises where the command line exits 130, with the
+        # files written so far as its result (before: it returned 130)
+        directory = os.path.join(self.tmp, "command")
+        timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
+        timer.start()
+        try:
+            with self.assertRaises(KeyboardInterrupt) as caught:
+                poundfe.command("run", EXAMPLE, output=directory,
+                                overrides={"Time integration/End time": 200})
+        finally:
+            timer.cancel()
+        result = caught.exception.result
+        self.assertIsInstance(result, poundfe.CommandResult)
+        self.assertEqual(result.status, "interrupted")
+        self.assertEqual(result.output, directory)
+        self.assertLess(result.drift.time[-1], 200)
         self.check_directory(directory)
 
 

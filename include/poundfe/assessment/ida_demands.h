@@ -39,6 +39,10 @@ namespace poundfe
   /// run with no demands was not run) that did not collapse.
   IdaDemandSample stripe_demands(const IdaRunner &runner, const std::vector<IdaPoint> &stripe,
                                  double x);
+  /// The demands of a cloud's runs (record r at its own intensity:
+  /// cloud[r]) that did not collapse, each row at its run's intensity; the
+  /// sample's intensity is NaN (none common to its rows).
+  IdaDemandSample cloud_demands(const IdaRunner &runner, const std::vector<IdaPoint> &cloud);
 
   /// Record r's demands at intensity x as a demand table's row (the PGA
   /// scaled with the record, Sa = x), `value(column, magnitude)` giving each

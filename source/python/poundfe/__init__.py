@@ -36,10 +36,11 @@ finally:
     del _dlopen_flags
 from ._core import Input, InputError, NumericalError, OutputError, StepState
 from .model import Model, _value_text, keyword_table, parameter_text, write_input
-from .results import Modes, Results, Table
+from .results import DemandTable, Modes, Results, Table
 from .commands import COMMANDS, CommandResult, _command_function, run_command
 
 __all__ = ["read", "run", "modal", "moment_curvature", "command", "Model", "Input", "Results", "Modes", "Table",
+           "DemandTable",
            "CommandResult", "StepState", "InputError", "NumericalError", "OutputError",
            "parameter_text", "keyword_table", *COMMANDS]
 
@@ -178,8 +179,17 @@ def command(name, *arguments, output=None, realizations=None, overrides=None):
     overrides: {"Section/Entry": value} (or (path, value) pairs), as read()'s.
     Returns the exit status (0; 2 after a numerical failure, the files so far
     kept); bad input raises InputError and writes nothing, a command line
-    the command refuses raises ValueError with the command line's message."""
+    the command refuses raises ValueError with the command line's message.
+    Ctrl-C (or SIGTERM) raises KeyboardInterrupt, as every command of
+    poundfe does from Python, where the command line exits 128 + the
+    signal; its `result` is the CommandResult of what the command wrote
+    into output= so far (None without output=)."""
+    from .commands import CommandResult, interrupted_or
     with _engine():
-        return _core.command(name, [os.fspath(a) for a in arguments],
-                             "" if output is None else os.fspath(output), realizations or 0,
-                             _override_pairs(overrides))
+        status = _core.command(name, [os.fspath(a) for a in arguments],
+                               "" if output is None else os.fspath(output), realizations or 0,
+                               _override_pairs(overrides))
+    if status >= 128:
+        kept = output is not None and os.path.isdir(output)
+        interrupted_or(CommandResult(name, os.fspath(output), True) if kept else None, status, name)
+    return status

@@ -163,14 +163,14 @@ def run_command(name, model, output=None, realizations=None, overrides=None):
         if in_memory:
             with _engine():
                 raw = _core.command_in_memory(name, [file], realizations or 0, pairs)
-            return _interrupted_or(CommandResult.in_memory(name, raw), raw["exit_status"])
+            return interrupted_or(CommandResult.in_memory(name, raw), raw["exit_status"])
         directory = os.fspath(output) if kept else os.path.join(scratch, "output")
         with _engine():
             status, report = _core.command_reported(name, [file], directory, realizations or 0,
                                                     pairs)
         result = CommandResult(name, directory, kept)
         result.report = report
-        return _interrupted_or(result, status)
+        return interrupted_or(result, status)
     except InputError as error:
         if not _is_model(model):
             raise
@@ -180,14 +180,15 @@ def run_command(name, model, output=None, realizations=None, overrides=None):
             shutil.rmtree(scratch, ignore_errors=True)
 
 
-def _interrupted_or(result, status):
+def interrupted_or(result, status, command=None):
     """`result`, or KeyboardInterrupt carrying it when Ctrl-C (or SIGTERM)
     stopped the command: the command line's exit status 128 + signal, its
     results so far kept (in memory, or in output= for a later run to
-    resume from)."""
+    resume from). `command`: its name when there is no result (None)."""
     if status >= 128:
-        error = KeyboardInterrupt(f"poundfe: {result.command} interrupted; its results so far "
-                                  f"are in this exception's `result`")
+        name = command if result is None else result.command
+        kept = "none" if result is None else "in this exception's `result`"
+        error = KeyboardInterrupt(f"poundfe: {name} interrupted; its results so far: {kept}")
         error.result = result
         raise error
     return result

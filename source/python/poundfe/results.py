@@ -26,7 +26,10 @@ def dataframe_of(table):
     pandas = _pandas()
     if isinstance(table, Table):
         return pandas.DataFrame(table.data, columns=table.names)
-    return pandas.DataFrame({name: table[name] for name in table.dtype.names})
+    frame = pandas.DataFrame({name: np.asarray(table[name]) for name in table.dtype.names})
+    if isinstance(table, DemandTable):
+        frame.attrs["units"] = dict(table.units)
+    return frame
 
 
 class Table:
@@ -85,16 +88,33 @@ def structured(names, columns):
     return array
 
 
+class DemandTable(np.ndarray):
+    """A demand table in pelicun's demand-sample convention (demands_*.csv):
+    a structured array, one float64 field per column ("index": the row
+    number), and `units` {column: unit} from the file's units row, which is
+    not a row of the array (to_dataframe keeps it as DataFrame.attrs["units"])."""
+
+    def __array_finalize__(self, obj):
+        self.units = getattr(obj, "units", {})
+
+
 def read_csv_text(text):
     """A CSV table's text with a header: a Table when its first column is
     time_s and every entry a number, otherwise a structured array (one field
     per column, numbers as float64, the rest as text). Blank lines (between
     the blocks of a gnuplot surface) and comment lines ('#', a resumable
     table's record of its inputs) are left out; a column without a name (a
-    demand table's row number) is named "index"."""
+    demand table's row number) is named "index", and a demand table's units
+    row (its first row, "Units" under that column) becomes the DemandTable's
+    units."""
     rows = [row for row in csv.reader(io.StringIO(text)) if row and not row[0].startswith("#")]
     # a pelicun demand table's first column, the row number, has no name
     names, rows = [name or "index" for name in rows[0]], rows[1:]
+    if names[0] == "index" and rows and rows[0][0] == "Units":
+        table = structured(names, [_number_or_text([row[i] for row in rows[1:]])
+                                   for i in range(len(names))]).view(DemandTable)
+        table.units = dict(zip(names[1:], rows[0][1:]))
+        return table
     if names[0] == "time_s":
         try:
             return Table(names, [[float(x) for x in row] for row in rows])
