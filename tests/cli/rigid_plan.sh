@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Rigid contact in plan (Model/Dimension = 3, Contact/Model = nonsmooth):
+# two one-storey torsionally coupled shear buildings whose slabs face each
+# other 10 mm apart along x over part of their edges, with mass
+# eccentricities, released towards each other obliquely (ux and uy), e =
+# 0.65, over their first contacts (0.1 s at 1e-5 s). `poundfe sweep` of
+# Contact/Stiffness runs Hertz-damp (damping calibrated to the same e) at
+# 1e9 ... 1e12 N/m^1.5 and rigid contact once as the limit:
+#   - rigid_limit.csv is `poundfe run`'s nonsmooth run (1e-9 relative);
+#   - each peak drift's (x, y) and peak floor displacement's relative
+#     difference from rigid contact decreases over the last three
+#     stiffnesses and is below 5 % at the stiffest (a Hertz penetration,
+#     and so its difference from rigid contact, falls as k^(-2/5));
+#   - the run has impacts in plan, and its summary names the LCP solver.
+set -u
+poundfe=$1
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+cd "$work"
+. "$here/expect.sh"
+
+if ! "$poundfe" --version | grep -q "nonsmooth"; then
+  echo "rigid-plan: this build has no Siconos (penalty only): nothing to check"
+  exit 0
+fi
+building() { # number name position plan eccentricity stiffness
+  printf 'subsection Building %s\n  set Name = %s\n  set Type = shear\n  set Number of storeys = 1\n' "$1" "$2"
+  printf '  set Storey heights = 3.0\n  set Floor masses = 2e4\n  set Storey stiffnesses = %s\n' "$6"
+  printf '  subsection Plan\n    set Position = %s\n    set Plan dimensions = %s\n' "$3" "$4"
+  printf '    set Mass eccentricity = %s\n  end\n' "$5"
+  printf '  subsection Damping\n    set Type = none\n  end\nend\n'
+}
+{
+  printf 'subsection Model\n  set Number of buildings = 2\n  set Dimension = 3\nend\n'
+  building 1 A "0, 0" "10, 8" "1.0, 0.5" 2e7
+  building 2 B "9.01, 2" "8, 6" "-0.5, 0.8" 1.2e7
+  printf 'subsection Ground motion\n  set Type = none\nend\n'
+  # (ux, uy, θz) of A's floor, then B's
+  printf 'subsection Initial conditions\n  set Equation velocities = 0 = 0.5; 1 = 0.2; 3 = -0.3; 4 = -0.1\nend\n'
+  printf 'subsection Contact\n  set Model = nonsmooth\n  set Law = hertz-damp\n'
+  printf '  set Stiffness = 1e10\n  set Damping from = calibrated\n  set Calibration velocity = 0.8\n'
+  printf '  set Coefficient of restitution = 0.65\nend\n'
+  printf 'subsection Time integration\n  set Time step = 1e-5\n  set End time = 0.1\nend\n'
+  printf 'subsection Output\n  set Plots = false\n  set VTU interval = 0\nend\n'
+  printf 'subsection Sweep\n  set Parameter = Contact/Stiffness\n  set Values = 1e9, 1e10, 1e11, 1e12\nend\n'
+} > plan.prm
+
+"$poundfe" sweep plan.prm --output sweep > sweep.out 2> sweep.err || fail "sweep exited $?: $(head -c 300 sweep.err)"
+"$poundfe" run plan.prm --output run > /dev/null 2> run.err || fail "run exited $?: $(head -c 300 run.err)"
+python3 - sweep run <<'PY' || fail "convergence to rigid contact in plan"
+import csv, json, sys
+sweep, run = sys.argv[1:]
+limit = next(csv.DictReader(open(f"{sweep}/rigid_limit.csv")))
+s = json.load(open(f"{run}/summary.json"))
+print("contact:", {k: s["contact"][k] for k in ("model", "lcp_solver")}, "impacts:",
+      [g["impacts"] for g in s["gaps"]])
+assert s["contact"]["model"] == "nonsmooth" and s["contact"]["lcp_solver"]
+assert sum(g["impacts"] for g in s["gaps"]) > 0
+assert int(float(limit["completed"])) == 1, limit
+rows = list(csv.DictReader(open(f"{sweep}/contact_convergence.csv")))
+assert [float(r["Contact_Stiffness"]) for r in rows] == [1e9, 1e10, 1e11, 1e12], rows
+names = [n[: -len("_relative_error")] for n in rows[0] if n.endswith("_relative_error")]
+assert any("drift" in n and "_y" in n for n in names), names
+for name in names:
+    error = [float(r[f"{name}_relative_error"]) for r in rows]
+    print(f"{name}: {float(limit[name]):.4g}, relative difference " + ", ".join(f"{x:.3g}" for x in error))
+    assert error[-3] > error[-2] > error[-1], (name, error)
+    assert error[-1] < 0.05, (name, error)
+PY
+echo "rigid-plan: $failures failures"
+exit $((failures > 0))
