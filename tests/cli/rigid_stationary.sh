@@ -23,7 +23,7 @@ if ! "$poundfe" --version | grep -q "nonsmooth"; then
 fi
 sed -e 's/^\( *set Time step *=\).*/\1 0.01/' -e 's/^\( *set Duration *=\).*/\1 1020/' \
     -e 's/^\( *set Number of realizations *=\).*/\1 16/' "$input" > impact.prm
-printf 'subsection Contact\n  set Model = nonsmooth\n  set Barriers = 1 1 right 0\n  set Coefficient of restitution = 1\nend\n' >> impact.prm
+printf 'subsection Contact\n  set Model = nonsmooth\n  set Law = linear\n  set Barriers = 1 1 right 0\n  set Coefficient of restitution = 1\nend\n' >> impact.prm
 "$poundfe" stationary-pdf impact.prm --output pdf > pdf.out 2> pdf.err ||
   fail "stationary-pdf exited $?: $(head -c 300 pdf.err)"
 python3 "$here/stationary_pdf_check.py" pdf impact 0.1 1 1 || fail "the folded densities"
