@@ -352,6 +352,10 @@ namespace poundfe
     if (model.gravity_analysis.enabled)
       fail("Contact/Model", "nonsmooth does not take a gravity analysis first "
                             "(Model/Gravity analysis) yet");
+    if (time_integration.moreau_jean.friction_coefficient > 0 && model.dimension != 3)
+      fail("Contact/Friction coefficient",
+           "acts along contacts in plan (Model/Dimension = 3), where the slabs slide along the "
+           "edge they touch; a 2D gap closes along one direction only, with no sliding to resist");
     if (!friction.surfaces.empty())
       fail("Contact/Model", "nonsmooth does not take friction surfaces yet (Friction/Surfaces; "
                             "Contact/Friction coefficient is friction along rigid contacts "
