@@ -83,6 +83,30 @@ namespace poundfe
         }
       return SICONOS_LCP_LEMKE;
     }
+
+    // Siconos owns what it allocates: the matrix and the options are freed
+    // by its own functions on every path out of a solve.
+    using SiconosMatrix  = std::unique_ptr<NumericsMatrix, NumericsMatrix *(*)(NumericsMatrix *)>;
+    using SiconosOptions = std::unique_ptr<SolverOptions, void (*)(SolverOptions *)>;
+
+    /// A dense NumericsMatrix holding M (column-major, as Eigen's).
+    SiconosMatrix
+    dense_matrix(const Eigen::MatrixXd &M)
+    {
+      SiconosMatrix matrix(NM_create(NM_DENSE, M.rows(), M.cols()), NM_free);
+      std::copy(M.data(), M.data() + M.size(), matrix->matrix0);
+      return matrix;
+    }
+
+    /// Solver `id`'s options with the tolerance and iteration limit.
+    SiconosOptions
+    solver_options(const int id, const double tolerance, const unsigned int max_iterations)
+    {
+      SiconosOptions options(solver_options_create(id), solver_options_delete);
+      options->dparam[SICONOS_DPARAM_TOL]      = tolerance;
+      options->iparam[SICONOS_IPARAM_MAX_ITER] = max_iterations;
+      return options;
+    }
   } // namespace
 
   bool
@@ -108,20 +132,14 @@ namespace poundfe
     solution.solver = solver_options_id_to_name(siconos_solver_id(options.solver));
     if (n == 0)
       return solution;
-    // Siconos owns what it allocates: the matrix and the options are freed
-    // by its own functions on every path out of here.
-    const std::unique_ptr<NumericsMatrix, NumericsMatrix *(*)(NumericsMatrix *)> matrix(
-      NM_create(NM_DENSE, n, n), NM_free);
-    std::copy(M.data(), M.data() + n * n, matrix->matrix0);
-    Eigen::VectorXd q_copy = q; // the problem's q is not const
+    const SiconosMatrix matrix = dense_matrix(M);
+    Eigen::VectorXd     q_copy = q; // the problem's q is not const
     LinearComplementarityProblem problem;
     problem.size = n;
     problem.M    = matrix.get();
     problem.q    = q_copy.data();
-    const std::unique_ptr<SolverOptions, void (*)(SolverOptions *)> solver(
-      solver_options_create(siconos_solver_id(options.solver)), solver_options_delete);
-    solver->dparam[SICONOS_DPARAM_TOL]     = options.tolerance;
-    solver->iparam[SICONOS_IPARAM_MAX_ITER] = options.max_iterations;
+    const SiconosOptions solver =
+      solver_options(siconos_solver_id(options.solver), options.tolerance, options.max_iterations);
     solution.info = linearComplementarity_driver(&problem, solution.z.data(), solution.w.data(),
                                                  solver.get());
     solution.iterations = solver->iparam[SICONOS_IPARAM_ITER_DONE];
@@ -144,9 +162,7 @@ namespace poundfe
     solution.solver = solver_options_id_to_name(siconos_solver_id(options.solver));
     if (n == 0)
       return solution;
-    const std::unique_ptr<NumericsMatrix, NumericsMatrix *(*)(NumericsMatrix *)> matrix(
-      NM_create(NM_DENSE, n, n), NM_free);
-    std::copy(W.data(), W.data() + n * n, matrix->matrix0);
+    const SiconosMatrix    matrix = dense_matrix(W);
     Eigen::VectorXd        q_copy = q, mu_copy = mu; // the problem's are not const
     FrictionContactProblem problem;
     problem.dimension        = 2;
@@ -154,10 +170,8 @@ namespace poundfe
     problem.M                = matrix.get();
     problem.q                = q_copy.data();
     problem.mu               = mu_copy.data();
-    const std::unique_ptr<SolverOptions, void (*)(SolverOptions *)> solver(
-      solver_options_create(siconos_solver_id(options.solver)), solver_options_delete);
-    solver->dparam[SICONOS_DPARAM_TOL]      = options.tolerance;
-    solver->iparam[SICONOS_IPARAM_MAX_ITER] = options.max_iterations;
+    const SiconosOptions solver =
+      solver_options(siconos_solver_id(options.solver), options.tolerance, options.max_iterations);
     solution.info = fc2d_driver(&problem, solution.z.data(), solution.w.data(), solver.get());
     solution.iterations = solver->iparam[SICONOS_IPARAM_ITER_DONE];
     // the same measure for every solver, relative to |q| as the LCP's
