@@ -12,7 +12,9 @@
 #     over the last three stiffnesses and is below 5 % at the stiffest (a
 #     Hertz penetration, and so its difference from rigid contact, falls
 #     as k^(-2/5));
-#   - the run has an impact in plan, and its summary names the LCP solver.
+#   - the run has an impact in plan, and its summary names the LCP solver;
+#   - with a Friction coefficient, summary.json names the fc2d solver and
+#     counts its problems, and the energy balance closes to 1e-9.
 # (Two corners closing within a fraction of the contact's duration, a flat
 # edge, are another matter: rigid contact takes them one step apart, a
 # penalty law as overlapping contacts; doc/verification.md.)
@@ -72,6 +74,22 @@ for name in names:
     print(f"{name}: {float(limit[name]):.4g}, relative difference " + ", ".join(f"{x:.3g}" for x in error))
     failed.extend(n for n in [name] if not (error[-3] > error[-2] > error[-1] and error[-1] < 0.05))
 assert not failed, failed
+PY
+# with Coulomb friction along the edge: the friction-contact problem's
+# solver and counts in summary.json, the energy balance (friction's work in
+# the contact term) closed to 1e-9 as without it
+"$poundfe" run plan.prm --set "Contact/Friction coefficient=0.5" --output friction > /dev/null 2> friction.err ||
+  fail "run with friction exited $?: $(head -c 300 friction.err)"
+python3 - friction <<'PY' || fail "rigid contact in plan with friction"
+import json, sys
+s = json.load(open(f"{sys.argv[1]}/summary.json"))
+c = s["contact"]
+print("friction:", c["friction_coefficient"], c["friction_solver"], c["friction_contact"],
+      "balance error", s["energy"]["max_relative_balance_error"])
+assert c["friction_coefficient"] == 0.5 and c["friction_solver"] == "nsgs", c
+assert c["friction_contact"]["solves"] > 0 and "lcp" not in c, c
+assert c["friction_contact"]["max_residual"] <= c["lcp_tolerance"], c
+assert s["energy"]["max_relative_balance_error"] <= 1e-9, s["energy"]
 PY
 echo "rigid-plan: $failures failures"
 exit $((failures > 0))
