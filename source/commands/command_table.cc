@@ -99,7 +99,8 @@ namespace poundfe
       {"stationary-pdf", "FILE",
        "stationary PDFs of a noisy response: histogram, kernel density,\n"
        "peaks, joint p(x, v) (MPI)",
-       file | mpi | own_interruption | resumable | memory, summary, commands::stationary_pdf},
+       file | mpi | own_interruption | resumable | memory | rigid, summary,
+       commands::stationary_pdf},
       {"sweep", "FILE",
        "the run's peaks against the values of the Sweep section's\n"
        "parameter (sweep.csv, sweep.png, summary.json)",
@@ -107,7 +108,10 @@ namespace poundfe
       {"bifurcation", "FILE",
        "Poincare samples, their period and the largest Lyapunov\n"
        "exponent against the Bifurcation section's parameter",
-       file | own_interruption | memory, summary, commands::bifurcation},
+       file | own_interruption | memory, summary, commands::bifurcation,
+       "its Lyapunov exponent follows a neighbouring trajectory by Newmark's scheme on the "
+       "contact law, and rigid contact has no law to follow it on (the neighbour of an "
+       "impacting orbit needs the impacts' own linearisation); use a stiff penalty law"},
       {"site-hazard", "FILE",
        "site intensity and PGA of a catalogue's earthquakes, Gumbel or\n"
        "Poisson fit, return periods, fragility x hazard; the earthquake\n"
@@ -133,7 +137,12 @@ namespace poundfe
       {"dynamic-form", "FILE",
        "FORM on a time-history limit state (Random parameters):\n"
        "beta, Pf, design point, alpha, number of time histories",
-       file | memory, summary, commands::dynamic_form},
+       file | memory, summary, commands::dynamic_form,
+       "FORM differentiates the limit state by finite differences (Random "
+       "parameters/FORM/Gradient step), and Moreau-Jean's time stepping takes an impact at "
+       "the step in which the gap closes: a perturbation that moves an impact to the next step changes the peaks by "
+       "a jump of the order of the step times the closing velocity, which a difference cannot "
+       "tell from a slope; use a penalty law, whose contacts are located in time"},
       {"switching", "FILE",
        "Filippov switching analysis of a small model: each hit of a\n"
        "gap, its rate in contact or a slip velocity classified as\n"

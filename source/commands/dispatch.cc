@@ -108,8 +108,11 @@ namespace poundfe
           !command.has(CommandRule::rigid_contact))
         input.fail("Contact/Model",
                    "nonsmooth (rigid contact) is taken by " +
-                     command_names(CommandRule::rigid_contact, "'") + " only so far, not '" +
-                     command.name + "'");
+                     command_names(CommandRule::rigid_contact, "'") + " only, not '" +
+                     command.name + "'" +
+                     (command.without_rigid_contact.empty() ?
+                        std::string(" so far") :
+                        ": " + command.without_rigid_contact));
       if (input.output.field_format == FieldFormat::xdmf && !command.has(CommandRule::field_output))
         input.fail("Output/Field format",
                    "xdmf chooses the field output of " +

@@ -60,8 +60,6 @@ namespace poundfe
         return nullptr;
       const InputFile           &input      = parameters.input;
       const MoreauJeanParameters moreau_jean = time_integration.moreau_jean_parameters();
-      if (analysis.model.dimension != 2)
-        input.fail("Contact/Model", "nonsmooth takes 2D models only (Model/Dimension = 2)");
       if (analysis.gravity.active)
         input.fail("Contact/Model", "nonsmooth does not take a gravity analysis first "
                                     "(Model/Gravity analysis) yet");
@@ -74,6 +72,16 @@ namespace poundfe
                                                       time_integration.restitution, contacts);
           !why.empty())
         input.fail("Contact/Model", "nonsmooth " + why);
+      if (moreau_jean.friction_coefficient > 0)
+        for (UnilateralContact &contact : contacts)
+          {
+            if (!contact.in_plan)
+              input.fail("Contact/Friction coefficient",
+                         "acts along contacts in plan (Model/Dimension = 3), where the slabs "
+                         "slide along the edge they touch; gap " + contact.label +
+                           " closes along one direction only, with no sliding to resist");
+            contact.friction = moreau_jean.friction_coefficient;
+          }
       return std::make_unique<MoreauJeanIntegrator>(analysis.system, moreau_jean,
                                                     std::move(contacts), &elements);
     }

@@ -441,9 +441,6 @@ namespace poundfe
                             "name a law (its force parameters are unused)");
     // what Moreau-Jean's stepper does not take yet, refused before anything
     // is built (time_history.cc refuses the rest with the model at hand)
-    if (model.dimension != 2)
-      fail("Contact/Model", "nonsmooth takes 2D models only, not Model/Dimension = " +
-                              std::to_string(model.dimension));
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       if (model.buildings[b].fibre())
         fail("Contact/Model", "nonsmooth does not take fibre members yet: Building " +
@@ -451,8 +448,14 @@ namespace poundfe
     if (model.gravity_analysis.enabled)
       fail("Contact/Model", "nonsmooth does not take a gravity analysis first "
                             "(Model/Gravity analysis) yet");
+    if (time_integration.moreau_jean.friction_coefficient > 0 && model.dimension != 3)
+      fail("Contact/Friction coefficient",
+           "acts along contacts in plan (Model/Dimension = 3), where the slabs slide along the "
+           "edge they touch; a 2D gap closes along one direction only, with no sliding to resist");
     if (!friction.surfaces.empty())
-      fail("Contact/Model", "nonsmooth does not take friction yet (Friction/Surfaces)");
+      fail("Contact/Model", "nonsmooth does not take friction surfaces yet (Friction/Surfaces; "
+                            "Contact/Friction coefficient is friction along rigid contacts "
+                            "in plan)");
     ContactParameters checked = contact;
     checked.restitution       = std::max(checked.restitution, 1e-3);
     checked.check(*this);

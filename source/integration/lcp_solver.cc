@@ -2,7 +2,8 @@
 // (integration/lcp_solver.h): a dense NumericsMatrix (column-major, as
 // Eigen's), the solver's SolverOptions with the tolerance and iteration
 // limit, linearComplementarity_driver, and lcp_compute_error for the
-// residual every solver reports alike. Compiled alone, with Siconos's
+// residual every solver reports alike; the 2D friction-contact problem the
+// same way through fc2d_driver and fc2d_compute_error. Compiled alone, with Siconos's
 // include directories and POUNDFE_WITH_SICONOS when the build found it.
 #include <poundfe/integration/lcp_solver.h>
 
@@ -15,6 +16,12 @@
 #  include <NumericsMatrix.h>
 #  include <SolverOptions.h>
 #  include <lcp_cst.h>
+#  include <FrictionContactProblem.h>
+#  include <Friction_cst.h>
+// fc2d_compute_error.h writes C99's restrict, which C++ spells __restrict
+#  define restrict __restrict
+#  include <fc2d_compute_error.h>
+#  undef restrict
 #endif
 
 #include <algorithm>
@@ -32,9 +39,34 @@ namespace poundfe
     return table;
   }
 
+  const NameTable<FrictionSolverKind> &
+  friction_solver_names()
+  {
+    static const NameTable<FrictionSolverKind> table(
+      {{FrictionSolverKind::nsgs, "nsgs"},
+       {FrictionSolverKind::lemke, "lemke"},
+       {FrictionSolverKind::enumeration, "enum"}});
+    return table;
+  }
+
 #ifdef POUNDFE_WITH_SICONOS
   namespace
   {
+    int
+    siconos_solver_id(const FrictionSolverKind kind)
+    {
+      switch (kind)
+        {
+          case FrictionSolverKind::nsgs:
+            return SICONOS_FRICTION_2D_NSGS;
+          case FrictionSolverKind::lemke:
+            return SICONOS_FRICTION_2D_LEMKE;
+          case FrictionSolverKind::enumeration:
+            return SICONOS_FRICTION_2D_ENUM;
+        }
+      return SICONOS_FRICTION_2D_NSGS;
+    }
+
     int
     siconos_solver_id(const LcpSolverKind kind)
     {
@@ -50,6 +82,30 @@ namespace poundfe
             return SICONOS_LCP_NEWTON_FB_FBLSA;
         }
       return SICONOS_LCP_LEMKE;
+    }
+
+    // Siconos owns what it allocates: the matrix and the options are freed
+    // by its own functions on every path out of a solve.
+    using SiconosMatrix  = std::unique_ptr<NumericsMatrix, NumericsMatrix *(*)(NumericsMatrix *)>;
+    using SiconosOptions = std::unique_ptr<SolverOptions, void (*)(SolverOptions *)>;
+
+    /// A dense NumericsMatrix holding M (column-major, as Eigen's).
+    SiconosMatrix
+    dense_matrix(const Eigen::MatrixXd &M)
+    {
+      SiconosMatrix matrix(NM_create(NM_DENSE, M.rows(), M.cols()), NM_free);
+      std::copy(M.data(), M.data() + M.size(), matrix->matrix0);
+      return matrix;
+    }
+
+    /// Solver `id`'s options with the tolerance and iteration limit.
+    SiconosOptions
+    solver_options(const int id, const double tolerance, const unsigned int max_iterations)
+    {
+      SiconosOptions options(solver_options_create(id), solver_options_delete);
+      options->dparam[SICONOS_DPARAM_TOL]      = tolerance;
+      options->iparam[SICONOS_IPARAM_MAX_ITER] = max_iterations;
+      return options;
     }
   } // namespace
 
@@ -76,26 +132,51 @@ namespace poundfe
     solution.solver = solver_options_id_to_name(siconos_solver_id(options.solver));
     if (n == 0)
       return solution;
-    // Siconos owns what it allocates: the matrix and the options are freed
-    // by its own functions on every path out of here.
-    const std::unique_ptr<NumericsMatrix, NumericsMatrix *(*)(NumericsMatrix *)> matrix(
-      NM_create(NM_DENSE, n, n), NM_free);
-    std::copy(M.data(), M.data() + n * n, matrix->matrix0);
-    Eigen::VectorXd q_copy = q; // the problem's q is not const
+    const SiconosMatrix matrix = dense_matrix(M);
+    Eigen::VectorXd     q_copy = q; // the problem's q is not const
     LinearComplementarityProblem problem;
     problem.size = n;
     problem.M    = matrix.get();
     problem.q    = q_copy.data();
-    const std::unique_ptr<SolverOptions, void (*)(SolverOptions *)> solver(
-      solver_options_create(siconos_solver_id(options.solver)), solver_options_delete);
-    solver->dparam[SICONOS_DPARAM_TOL]     = options.tolerance;
-    solver->iparam[SICONOS_IPARAM_MAX_ITER] = options.max_iterations;
+    const SiconosOptions solver =
+      solver_options(siconos_solver_id(options.solver), options.tolerance, options.max_iterations);
     solution.info = linearComplementarity_driver(&problem, solution.z.data(), solution.w.data(),
                                                  solver.get());
     solution.iterations = solver->iparam[SICONOS_IPARAM_ITER_DONE];
     // Lemke does not fill dparam's residual: the same measure for every solver
     lcp_compute_error(&problem, solution.z.data(), solution.w.data(), options.tolerance,
                       &solution.residual);
+    return solution;
+  }
+
+  LcpSolution
+  solve_friction_contact(const Eigen::MatrixXd &W, const Eigen::VectorXd &q,
+                         const Eigen::VectorXd &mu, const FrictionContactOptions &options)
+  {
+    const int n = q.size();
+    Assert(W.rows() == n && W.cols() == n && 2 * mu.size() == n,
+           dealii::ExcDimensionMismatch(W.rows(), n));
+    LcpSolution solution;
+    solution.z.setZero(n);
+    solution.w = q;
+    solution.solver = solver_options_id_to_name(siconos_solver_id(options.solver));
+    if (n == 0)
+      return solution;
+    const SiconosMatrix    matrix = dense_matrix(W);
+    Eigen::VectorXd        q_copy = q, mu_copy = mu; // the problem's are not const
+    FrictionContactProblem problem;
+    problem.dimension        = 2;
+    problem.numberOfContacts = mu.size();
+    problem.M                = matrix.get();
+    problem.q                = q_copy.data();
+    problem.mu               = mu_copy.data();
+    const SiconosOptions solver =
+      solver_options(siconos_solver_id(options.solver), options.tolerance, options.max_iterations);
+    solution.info = fc2d_driver(&problem, solution.z.data(), solution.w.data(), solver.get());
+    solution.iterations = solver->iparam[SICONOS_IPARAM_ITER_DONE];
+    // the same measure for every solver, relative to |q| as the LCP's
+    fc2d_compute_error(&problem, solution.z.data(), solution.w.data(), options.tolerance,
+                       std::max(q.norm(), 1e-300), &solution.residual);
     return solution;
   }
 #else
@@ -117,6 +198,16 @@ namespace poundfe
   {
     AssertThrow(false, dealii::ExcMessage("solve_lcp: this build has no Siconos Numerics; "
                                           "Contact/Model = nonsmooth must have been refused"));
+    return {};
+  }
+
+  LcpSolution
+  solve_friction_contact(const Eigen::MatrixXd &, const Eigen::VectorXd &,
+                         const Eigen::VectorXd &, const FrictionContactOptions &)
+  {
+    AssertThrow(false, dealii::ExcMessage("solve_friction_contact: this build has no Siconos "
+                                          "Numerics; Contact/Model = nonsmooth must have been "
+                                          "refused"));
     return {};
   }
 #endif

@@ -7,7 +7,9 @@
 // and the LCP w = H J^-1 H^T P + H v_free + e ∘ H v in every iteration.
 // Sources: Jean, CMAME 177 (1999) 235, §3-4; Acary & Brogliato, Numerical
 // Methods for Nonsmooth Dynamical Systems (2008), §10.1 (the scheme) and
-// §10.1.6 (Newton's law at the velocity level, the index set by prediction).
+// §10.1.6 (Newton's law at the velocity level, the index set by prediction);
+// contacts in plan: the gap of model/plan_contact_geometry.h, its gradient
+// at the step's start as H_a (§10.1.7).
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/integration/moreau_jean.h>
@@ -18,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace poundfe
 {
@@ -36,17 +39,23 @@ namespace poundfe
         const auto gap = std::find_if(model.gaps.begin(), model.gaps.end(),
                                       [&](const Gap &g) { return g.label == e.label; });
         Assert(gap != model.gaps.end(), dealii::ExcMessage("a gap element without its gap"));
-        if (gap->in_plan || gap->on_column || e.rank() != 1)
-          return "takes gaps between floors and against barriers only, not " + e.label +
-                 (gap->in_plan ? " (in plan)" : " (on a column)");
+        if (gap->on_column || (!gap->in_plan && e.rank() != 1))
+          return "takes gaps between floors, against barriers and in plan, not a slab against "
+                 "a column yet (" + e.label + ")";
         UnilateralContact contact;
         contact.label       = e.label;
         contact.equations   = e.equations();
-        const Eigen::MatrixXd B = e.tangent_basis(); // the closure's coefficients
-        contact.coefficients.assign(B.data(), B.data() + B.rows());
-        contact.initial_gap = gap->initial_gap;
         contact.restitution = restitution;
         contact.element     = h;
+        contact.in_plan     = gap->in_plan;
+        if (gap->in_plan)
+          contact.plan = gap->plan;
+        else
+          {
+            const Eigen::MatrixXd B = e.tangent_basis(); // the closure's coefficients
+            contact.coefficients.assign(B.data(), B.data() + B.rows());
+            contact.initial_gap = gap->initial_gap;
+          }
         contacts.push_back(contact);
       }
     return {};
@@ -96,18 +105,92 @@ namespace poundfe
     base_jacobian   = mass + ht * damping + ht * ht * stiffness;
     // H_a = dg_a/du = -dd_a/du: U_a = H_a v < 0 while the gap closes
     H.setZero(contact_list.size(), n);
-    for (unsigned int a = 0; a < contact_list.size(); ++a)
-      for (unsigned int i = 0; i < contact_list[a].equations.size(); ++i)
-        if (contact_list[a].equations[i] >= 0)
-          H(a, contact_list[a].equations[i]) -= contact_list[a].coefficients[i];
-    if (lcp_solver_available())
-      solver_name = solve_lcp(Eigen::MatrixXd(), Vector(), parameters.lcp).solver;
+    for (unsigned int c = 0; c < contact_list.size(); ++c)
+      {
+        const UnilateralContact &contact = contact_list[c];
+        Assert(!contact.in_plan || contact.equations.size() == 6,
+               dealii::ExcMessage("a contact in plan joins (ux, uy, θz) of two floors"));
+        if (!contact.in_plan) // in plan: linearize_plan_contacts()
+          for (unsigned int i = 0; i < contact.equations.size(); ++i)
+            if (contact.equations[i] >= 0)
+              H(c, contact.equations[i]) -= contact.coefficients[i];
+      }
+    T.setZero(contact_list.size(), n);
+    for (const UnilateralContact &c : contact_list)
+      {
+        Assert(c.friction == 0 || c.in_plan,
+               dealii::ExcMessage("friction on a contact without a tangent (not in plan)"));
+        has_friction = has_friction || c.friction > 0;
+      }
+    if (!lcp_solver_available())
+      return;
+    solver_name = solve_lcp(Eigen::MatrixXd(), Vector(), parameters.lcp).solver;
+    if (has_friction)
+      friction_solver_name =
+        solve_friction_contact(Eigen::MatrixXd(), Vector(), Vector(), parameters.friction).solver;
+  }
+
+  PlanContactState
+  MoreauJeanIntegrator::plan_state(const unsigned int a, const Vector &x) const
+  {
+    const std::vector<int> &equations = contact_list[a].equations;
+    Vector6                 q;
+    for (unsigned int i = 0; i < 6; ++i)
+      q[i] = equations[i] < 0 ? 0.0 : x[equations[i]];
+    return plan_contact_state(contact_list[a].plan, q);
   }
 
   double
   MoreauJeanIntegrator::gap(const unsigned int a, const Vector &x) const
   {
-    return contact_list[a].initial_gap + H.row(a).dot(x);
+    if (!contact_list[a].in_plan)
+      return contact_list[a].initial_gap + H.row(a).dot(x);
+    const PlanContactState state = plan_state(a, x);
+    // edges that do not overlap cannot touch: open however far they cross
+    return state.defined ? state.gap : std::numeric_limits<double>::infinity();
+  }
+
+  void
+  MoreauJeanIntegrator::linearize_plan_contacts()
+  {
+    for (unsigned int a = 0; a < contact_list.size(); ++a)
+      if (contact_list[a].in_plan)
+        {
+          const PlanContactState state = plan_state(a, u);
+          H.row(a).setZero();
+          T.row(a).setZero();
+          if (!state.defined)
+            continue;
+          const Vector6 tangent = plan_tangent(a, state);
+          for (unsigned int i = 0; i < 6; ++i)
+            if (contact_list[a].equations[i] >= 0)
+              {
+                H(a, contact_list[a].equations[i]) += state.gradient[i];
+                T(a, contact_list[a].equations[i]) += tangent[i];
+              }
+        }
+  }
+
+  Vector6
+  MoreauJeanIntegrator::plan_tangent(const unsigned int a, const PlanContactState &state) const
+  {
+    // floor k's block of the gradient is (s_k n, s_k (x_c - c_k) × n),
+    // s_k = ±1: its block of the tangent's, (s_k J n, s_k (x_c - c_k) × J n),
+    // is the relative velocity of the contact point along J n
+    const std::vector<int> &equations = contact_list[a].equations;
+    Vector6                 tangent;
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const Point2  &centre = contact_list[a].plan.centres[k];
+        const double   ux = equations[3 * k] < 0 ? 0.0 : u[equations[3 * k]];
+        const double   uy = equations[3 * k + 1] < 0 ? 0.0 : u[equations[3 * k + 1]];
+        const double   rx = state.point.x - centre.x - ux, ry = state.point.y - centre.y - uy;
+        const double   tx = -state.gradient[3 * k + 1], ty = state.gradient[3 * k]; // J (s_k n)
+        tangent[3 * k]     = tx;
+        tangent[3 * k + 1] = ty;
+        tangent[3 * k + 2] = rx * ty - ry * tx;
+      }
+    return tangent;
   }
 
   double
@@ -182,12 +265,11 @@ namespace poundfe
     impulse_log.clear();
     unattached_loss = 0;
     impulses_last_step.assign(contact_list.size(), 0.0);
-    lcp_count = lcp_iterations = 0;
-    lcp_residual = 0;
     initial_stored.assign(n_elements, 0.0);
     u          = u0;
     v          = v0;
     load_start = load_0;
+    linearize_plan_contacts();
     for (unsigned int h = 0; h < n_elements; ++h)
       (*elements)[h].reset();
     smooth_start = smooth_force(0, u, v, load_start, nullptr);
@@ -204,40 +286,81 @@ namespace poundfe
     update_balance_error(balance, energy_scale, max_balance_error);
   }
 
+  Eigen::MatrixXd
+  MoreauJeanIntegrator::active_rows(const std::vector<unsigned int> &active) const
+  {
+    const unsigned int per_contact = has_friction ? 2 : 1;
+    Eigen::MatrixXd    rows(per_contact * active.size(), n);
+    for (unsigned int k = 0; k < active.size(); ++k)
+      {
+        rows.row(per_contact * k) = H.row(active[k]);
+        if (has_friction)
+          rows.row(2 * k + 1) = T.row(active[k]);
+      }
+    return rows;
+  }
+
+  void
+  MoreauJeanIntegrator::count_solve(const LcpSolution &solution, const unsigned int n_contacts,
+                                    const char *problem)
+  {
+    ContactProblemCounts &counts = stats.contact;
+    ++counts.solves;
+    counts.iterations += std::max(solution.iterations, 0);
+    counts.max_iterations =
+      std::max<unsigned int>(counts.max_iterations, std::max(solution.iterations, 0));
+    counts.max_residual = std::max(counts.max_residual, solution.residual);
+    if (solution.info != 0 || !solution.z.allFinite())
+      throw NumericalError("step " + std::to_string(step_count + 1) + " (t = " +
+                           number_text(current_time + parameters.time_step) + " s): Siconos's " +
+                           solution.solver + " did not solve the " + problem + " of " +
+                           std::to_string(n_contacts) + " contacts to its tolerance " +
+                           number_text(has_friction ? parameters.friction.tolerance :
+                                                      parameters.lcp.tolerance) +
+                           " (status " + std::to_string(solution.info) + ", residual " +
+                           number_text(solution.residual) + " after " +
+                           std::to_string(solution.iterations) + " iterations)");
+  }
+
   Vector
   MoreauJeanIntegrator::contact_impulses(const std::vector<unsigned int> &active,
                                          const Vector &v_free)
   {
+    if (has_friction)
+      return friction_impulses(active, v_free);
     const unsigned int m = active.size();
-    Eigen::MatrixXd    Ht(n, m);
     Vector             q(m);
     for (unsigned int k = 0; k < m; ++k)
       {
         const unsigned int c = active[k];
-        Ht.col(k)            = H.row(c).transpose();
         q[k] = normal_velocity(c, v_free) + contact_list[c].restitution * normal_velocity(c, v);
       }
-    const Eigen::MatrixXd W        = Ht.transpose() * jacobian_factor.solve(Ht);
+    const Eigen::MatrixXd rows     = active_rows(active);
+    const Eigen::MatrixXd W        = rows * jacobian_factor.solve(Eigen::MatrixXd(rows.transpose()));
     const LcpSolution     solution = solve_lcp(W, q, parameters.lcp);
-    ++lcp_count;
-    // the LCPs are this stepper's solves: counted where a run's statistics
-    // count solves (summary.json's contact/lcp reads them there)
-    IterativeSolveCounts &counts = stats.linear;
-    ++counts.solves;
-    counts.iterations += std::max(solution.iterations, 0);
-    counts.max_iterations = std::max<unsigned int>(counts.max_iterations,
-                                                   std::max(solution.iterations, 0));
-    lcp_iterations = std::max(lcp_iterations, solution.iterations);
-    lcp_residual   = std::max(lcp_residual, solution.residual);
-    if (solution.info != 0 || !solution.z.allFinite())
-      throw NumericalError("step " + std::to_string(step_count + 1) + " (t = " +
-                           number_text(current_time + parameters.time_step) + " s): Siconos's " +
-                           solution.solver + " did not solve the contact LCP of " +
-                           std::to_string(m) + " contacts to its tolerance " +
-                           number_text(parameters.lcp.tolerance) + " (status " +
-                           std::to_string(solution.info) + ", residual " +
-                           number_text(solution.residual) + " after " +
-                           std::to_string(solution.iterations) + " iterations)");
+    count_solve(solution, m, "contact LCP");
+    return solution.z;
+  }
+
+  Vector
+  MoreauJeanIntegrator::friction_impulses(const std::vector<unsigned int> &active,
+                                          const Vector &v_free)
+  {
+    // per contact (U_N, U_T) = W (P_N, P_T) + q, Newton's law on the normal:
+    // q_N = H v_free + e H v (Siconos's Moreau-Jean does the same)
+    const unsigned int m = active.size();
+    Vector             q(2 * m), mu(m);
+    for (unsigned int k = 0; k < m; ++k)
+      {
+        const unsigned int c = active[k];
+        q[2 * k] = normal_velocity(c, v_free) + contact_list[c].restitution * normal_velocity(c, v);
+        q[2 * k + 1] = T.row(c).dot(v_free);
+        mu[k]        = contact_list[c].friction;
+      }
+    const Eigen::MatrixXd rows = active_rows(active);
+    const Eigen::MatrixXd W    = rows * jacobian_factor.solve(Eigen::MatrixXd(rows.transpose()));
+    const LcpSolution solution = solve_friction_contact(W, q, mu, parameters.friction);
+    count_solve(solution, m, "friction-contact problem");
     return solution.z;
   }
 
@@ -256,7 +379,8 @@ namespace poundfe
     bool smooth_nonlinear = false;
     for (unsigned int e = 0; e < n_elements; ++e)
       smooth_nonlinear = smooth_nonlinear || (*elements)[e].kind != ElementKind::gap;
-    Vector       v_end = v, impulse = Vector::Zero(active.size());
+    const Eigen::MatrixXd rows = active_rows(active); // H's, and T's with friction
+    Vector       v_end = v, impulse = Vector::Zero(rows.rows());
     unsigned int k     = 0;
     for (;; ++k)
       {
@@ -270,12 +394,11 @@ namespace poundfe
         jacobian_factor.compute(jacobian);
         const Vector v_free = v_end - jacobian_factor.solve(residual);
         Vector       v_next = v_free;
-        impulse.setZero(active.size());
+        impulse.setZero(rows.rows());
         if (!active.empty())
           {
             impulse = contact_impulses(active, v_free);
-            for (unsigned int j = 0; j < active.size(); ++j)
-              v_next += impulse[j] * jacobian_factor.solve(Vector(H.row(active[j]).transpose()));
+            v_next += jacobian_factor.solve(Vector(rows.transpose() * impulse));
           }
         const double change = (v_next - v_end).norm();
         v_end               = v_next;
@@ -297,9 +420,7 @@ namespace poundfe
           (*elements)[e].commit();
         }
     record_impulses(active, impulse, v_end, t1);
-    Vector hp = Vector::Zero(n);
-    for (unsigned int j = 0; j < active.size(); ++j)
-      hp += impulse[j] * H.row(active[j]).transpose();
+    const Vector hp = rows.transpose() * impulse;
     a = (v_end - v - mass.llt().solve(hp)) / h;
     u = u_end;
     v = v_end;
@@ -308,6 +429,7 @@ namespace poundfe
     current_time = t1;
     ++step_count;
     ++stats.steps;
+    linearize_plan_contacts();
     update_energy();
   }
 
@@ -317,20 +439,27 @@ namespace poundfe
                                         const double t_end)
   {
     std::vector<double> this_step(contact_list.size(), 0.0);
+    const unsigned int  per_contact = has_friction ? 2 : 1;
     for (unsigned int j = 0; j < active.size(); ++j)
-      if (impulse[j] > 0)
+      if (impulse[per_contact * j] > 0)
         {
           const unsigned int c = active[j];
           ContactImpulse     record;
           record.time            = t_end;
           record.contact         = c;
-          record.impulse         = impulse[j];
+          record.impulse         = impulse[per_contact * j];
           record.velocity_before = normal_velocity(c, v);
           record.velocity_after  = normal_velocity(c, v_end);
           record.energy_lost =
-            -0.5 * impulse[j] * (record.velocity_before + record.velocity_after);
+            -0.5 * record.impulse * (record.velocity_before + record.velocity_after);
+          if (has_friction)
+            {
+              record.tangential_impulse = impulse[2 * j + 1];
+              record.energy_lost -= 0.5 * record.tangential_impulse *
+                                    (T.row(c).dot(v) + T.row(c).dot(v_end));
+            }
           impulse_log.push_back(record);
-          this_step[c] = impulse[j];
+          this_step[c] = record.impulse;
           if (contact_list[c].element >= 0)
             work[contact_list[c].element] += record.energy_lost;
           else
@@ -349,9 +478,11 @@ namespace poundfe
       if (contact_list[c].element >= 0 && (this_step[c] > 0 || impulses_last_step[c] > 0))
         {
           const double force = this_step[c] / h;
+          const double end_gap = gap(c, u_end); // infinite: a plan contact out of reach
           impacts.record(contact_list[c].element, current_time, t_end,
                          {std::max(-gap(c, u), 0.0), -normal_velocity(c, v), force},
-                         {-gap(c, u_end), -normal_velocity(c, v_end), force});
+                         {std::isfinite(end_gap) ? -end_gap : 0.0, -normal_velocity(c, v_end),
+                          force});
         }
     impulses_last_step = this_step;
   }

@@ -41,6 +41,8 @@ namespace poundfe
   {
     MoreauJeanParameters p = moreau_jean;
     p.time_step            = newmark.time_step;
+    p.friction.tolerance      = moreau_jean.lcp.tolerance;
+    p.friction.max_iterations = moreau_jean.lcp.max_iterations;
     return p;
   }
 
@@ -243,8 +245,9 @@ namespace poundfe
                "Newton's impact law (Coefficient of restitution e in [0, 1]), stepped by "
                "Moreau-Jean's theta-scheme with each step's impulses from an LCP solved by "
                "Siconos Numerics (theory §3.9d); needs a Law other than none (its force "
-               "parameters are then unused), 2D gaps between floors or at barriers, no "
-               "bumpers, friction or fibre members, no gravity analysis; the commands run, "
+               "parameters are then unused), gaps between floors, at barriers or in plan "
+               "(3D; not a slab against a column), no bumpers, friction surfaces or fibre "
+               "members, no gravity analysis; the commands run, stationary-pdf, "
                "montecarlo, subset, fragility, ida, msa, sweep, separation (its free "
                "responses have no contact: Newmark) and mitigation (no bumper cases), and "
                "Python's run; a build without Siconos offers penalty only (poundfe --version lists "
@@ -269,6 +272,18 @@ namespace poundfe
                       "Model = nonsmooth: the LCP solver's iteration limit (Lemke: pivots; "
                       "nsgs: sweeps; newton-fb: Newton iterations). Unit: count.",
                       Patterns::Integer(1, 100000000));
+    prm.add_parameter("Friction coefficient", moreau_jean.friction_coefficient,
+                      "Model = nonsmooth: Coulomb's coefficient mu along the contacts in plan "
+                      "(Model/Dimension = 3: the slabs slide along the edge they touch); each "
+                      "step's contact problem is then a friction-contact problem (tangential "
+                      "impulse at most mu times the normal one). 0: frictionless. Unit: "
+                      "dimensionless.");
+    add_choice(prm, "Friction solver", moreau_jean.friction.solver,
+               "Model = nonsmooth with a Friction coefficient: Siconos Numerics' fc2d solver "
+               "of each step's friction-contact problem: nsgs (Gauss-Seidel over the "
+               "contacts, each solved exactly), lemke (Lemke on its LCP), enum (enumeration, a "
+               "few contacts); its tolerance and iteration limit are the LCP's. Unit: -.",
+               friction_solver_names());
     prm.add_parameter("Event refinement", newmark.newton.event_refinement,
                       "A step in which a contact starts or ends is redone in 2^r "
                       "sub-steps around the event, which is then located inside the "
@@ -345,6 +360,13 @@ namespace poundfe
     if (!(moreau_jean.lcp.tolerance > 0 && moreau_jean.lcp.tolerance < 1))
       input.fail("Contact/LCP tolerance",
                  "must lie in (0, 1), got " + number_text(moreau_jean.lcp.tolerance));
+    if (!(moreau_jean.friction_coefficient >= 0 && moreau_jean.friction_coefficient <= 10))
+      input.fail("Contact/Friction coefficient",
+                 "must lie in [0, 10], got " + number_text(moreau_jean.friction_coefficient));
+    if (contact_model != ContactModel::nonsmooth && moreau_jean.friction_coefficient > 0)
+      input.fail("Contact/Friction coefficient",
+                 "acts along a rigid contact (Model = nonsmooth): with Model = penalty there "
+                 "is no normal contact impulse to bound the friction by");
     if (contact_model != ContactModel::nonsmooth)
       return;
     if (!lcp_solver_available())

@@ -549,20 +549,27 @@ namespace poundfe
     write_rigid_contact(JsonWriter &json, const Model &model, const IterationStatistics &stats,
                         const TimeIntegrationParameters &time_integration)
     {
-      const LcpOptions           &lcp    = time_integration.moreau_jean.lcp;
-      const IterativeSolveCounts &counts = stats.linear;
+      const MoreauJeanParameters &moreau_jean = time_integration.moreau_jean;
+      const LcpOptions           &lcp         = moreau_jean.lcp;
+      const ContactProblemCounts &counts      = stats.contact;
+      const bool                  friction    = moreau_jean.friction_coefficient > 0;
       json.begin_object("contact")
         .value("model", "nonsmooth")
         .value("integrator", "Moreau-Jean")
-        .value("theta", time_integration.moreau_jean.theta)
+        .value("theta", moreau_jean.theta)
         .value("lcp_solver", lcp_solver_names().name(lcp.solver))
         .value("lcp_tolerance", lcp.tolerance)
-        .value("lcp_iteration_limit", lcp.max_iterations);
-      json.begin_object("lcp")
+        .value("lcp_iteration_limit", lcp.max_iterations)
+        .value("friction_coefficient", moreau_jean.friction_coefficient);
+      if (friction)
+        json.value("friction_solver", friction_solver_names().name(moreau_jean.friction.solver));
+      // the step's problems: LCPs, or friction-contact problems with friction
+      json.begin_object(friction ? "friction_contact" : "lcp")
         .value("solves", counts.solves)
         .value("max_iterations", counts.max_iterations)
         .value("mean_iterations",
                counts.solves > 0 ? double(counts.iterations) / counts.solves : 0.0)
+        .value("max_residual", counts.max_residual)
         .end_object();
       json.begin_array("pairs");
       for (const Gap &gap : model.gaps)

@@ -17,7 +17,8 @@
 #     times the scale factor the command wrote;
 # the same numbers, so to 1e-9 relative (the engines are the same code
 # path); each with impacts, so that the contact was exercised. dynamic-form
-# (and stationary-pdf, bifurcation) still refuse nonsmooth.
+# and bifurcation refuse nonsmooth saying why (rigid_stationary.sh, which
+# also checks stationary-pdf).
 set -u
 poundfe=$1 input=$2
 here=$(cd "$(dirname "$0")" && pwd)
@@ -186,7 +187,7 @@ record_run 0 "$scale" run-ida
 read -r di ni mi <<< "$(run_peaks run-ida)"
 same "ida realization_0 at its highest intensity = run's" "$drift" "$di"
 
-# what still refuses rigid contact: dynamic-form; a random restitution
+# what refuses rigid contact: dynamic-form; a random restitution
 printf 'subsection Random parameters\n  set Variables = e: Contact/Coefficient of restitution ~ uniform lower 0.3 upper 0.9\nend\n' > random-e.prm
 cat pair-damped.prm random-e.prm > pair-random-e.prm
 expect 1 "parameter 'Random parameters/Variables'" montecarlo pair-random-e.prm --output out

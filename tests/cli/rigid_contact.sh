@@ -19,8 +19,9 @@
 #     the run with exit 2, the step and residual named, the results so far
 #     kept (summary.json "failed");
 # then bad input: Theta outside [1/2, 1], a restitution outside [0, 1], no
-# gaps (Law = none), a command that does not take it (modal, dynamic-form), a 3D model, fibre members,
-# friction: exit 1, one message naming the file, line and parameter, no
+# gaps (Law = none), a command that does not take it (modal, dynamic-form), fibre members,
+# friction surfaces, a Friction coefficient on a 2D gap, with penalty
+# contact or negative: exit 1, one message naming the file, line and parameter, no
 # output directory. A build without Siconos refuses nonsmooth itself
 # (Contact/Model) and offers penalty only.
 set -u
@@ -71,6 +72,8 @@ assert "stiffness" not in c and "law" not in c, c
 assert [p["coefficient_of_restitution"] for p in c["pairs"]] == [e] * len(s["gaps"]), c
 # (Lemke reports no iteration count: its iterations are 0)
 assert c["lcp"]["solves"] > 0 and c["lcp"]["mean_iterations"] <= c["lcp"]["max_iterations"], c
+# the largest residual of the run's LCPs (Siconos's lcp_compute_error), each solved
+assert 0 <= c["lcp"]["max_residual"] <= c["lcp_tolerance"], c
 # the law's stiffness, written in the file, is warned about as without effect
 assert any("Contact/Stiffness" in w and "no effect" in w for w in s["warnings"]), s["warnings"]
 # each episode's largest penetration lies in it (0 would be before it)
@@ -95,6 +98,7 @@ s = json.load(open(f"{sys.argv[1]}/summary.json"))
 assert s["status"] == "failed" and "did not solve the contact LCP" in s["message"], s["status"]
 assert 0 < s["analysis"]["end_time_s"] < 0.5, s["analysis"]
 assert s["contact"]["lcp"]["max_iterations"] == 1, s["contact"]
+assert s["contact"]["lcp"]["max_residual"] > s["contact"]["lcp_tolerance"], s["contact"]
 print(f"unsolved LCP: exit 2 at t = {s['analysis']['end_time_s']} s, results so far kept")
 PY
 "$poundfe" run "$here/rigid-squeeze.prm" --output squeeze > /dev/null 2>&1 ||
@@ -120,8 +124,13 @@ nonsmooth() {
     printf 'subsection Contact\n  set Model = nonsmooth\n  set Law = linear\nend\n'
   fi
 }
-nonsmooth 3d-torsional-shear-pair.prm > plan.prm
-expect 1 "parameter 'Contact/Model'" run plan.prm --output out
+# friction: along contacts in plan only, with rigid contact only, mu >= 0
+expect 1 "parameter 'Contact/Friction coefficient'" run pair.prm \
+  --set "Contact/Friction coefficient=0.3" --output out
+expect 1 "parameter 'Contact/Friction coefficient'" run pair.prm --set "Contact/Model=penalty" \
+  --set "Contact/Friction coefficient=0.3" --output out
+expect 1 "parameter 'Contact/Friction coefficient'" run pair.prm \
+  --set "Contact/Friction coefficient=-0.1" --output out
 nonsmooth fibre-frame-pounding.prm > fibre.prm
 expect 1 "parameter 'Contact/Model'" run fibre.prm --output out
 nonsmooth sd-oscillator.prm > friction.prm

@@ -2,6 +2,7 @@
 """Checks a stationary-pdf result against an exact stationary density.
 
 usage: stationary_pdf_check.py DIR linear D c omega0
+       stationary_pdf_check.py DIR impact D c omega0
        stationary_pdf_check.py DIR sd D c alpha
        stationary_pdf_check.py DIR p-bifurcation alpha1 alpha2 ...
 
@@ -14,6 +15,14 @@ sqrt(P (1 - P) / N_eff). For the SD oscillator, whose correlation time is
 set by the hops between the wells, the standard error of a bin comes from
 the scatter of the independent realizations instead (batch means, the
 realizations.csv rows). Tolerances: 4 standard errors.
+
+impact: the same linear oscillator against a rigid barrier at its
+equilibrium (x <= 0) with restitution e = 1, whose response is the linear
+one folded, x = -|y| (Zhuravlev's transformation; Dimentberg & Iourtchenko,
+Nonlinear Dynamics 36 (2004) 229): p(x) = 2 p_y(x) for x <= 0, the mean
+-sigma sqrt(2/pi), the variance sigma^2 (1 - 2/pi) (its relative standard
+error sqrt((kappa - 1)/N_eff) with the half-normal's kurtosis kappa =
+3.869), v and the amplitude as the linear oscillator's.
 """
 import csv
 import json
@@ -83,6 +92,31 @@ def linear(directory, D, c, omega0):
         if len(peaks) != 1 or abs(peaks[0]) > 0.3 * sigma:
             fail("%s: peaks %s, expected one within 0.3 sigma of 0" % (q, peaks))
         print("ok   %s: one peak, at %.3g (|.| <= 0.3 sigma = %.3g)" % (q, peaks[0], 0.3 * sigma))
+
+
+def impact(directory, D, c, omega0):
+    summary, rows = read(directory)
+    zeta = c / (2 * omega0)
+    n_eff = effective_samples(summary, 1 / (zeta * omega0))
+    var_y, var_v = D / (c * omega0 ** 2), D / c
+    sigma = math.sqrt(var_y)
+    mean, variance = summary["x"]["mean"], summary["x"]["variance"]
+    exact_mean, exact_variance = -sigma * math.sqrt(2 / math.pi), var_y * (1 - 2 / math.pi)
+    se_mean = math.sqrt(exact_variance / n_eff)
+    if abs(mean - exact_mean) > 4 * se_mean:
+        fail("impact x: mean %.5g, exact %.5g (> 4 SE = %.3g)" % (mean, exact_mean, 4 * se_mean))
+    print("ok   impact x mean %.5g, exact %.5g (within 4 SE = %.3g)" % (mean, exact_mean, 4 * se_mean))
+    se = math.sqrt((3.869 - 1) / n_eff)
+    error = abs(variance / exact_variance - 1)
+    if error > 4 * se:
+        fail("impact x: variance %.5g, exact %.5g (relative error %.3g > %.3g)" % (variance, exact_variance, error, 4 * se))
+    print("ok   impact x variance %.5g, exact %.5g (relative error %.3g <= 4 SE = %.3g)" % (variance, exact_variance, error, 4 * se))
+    check_variance(summary["v"]["variance"], var_v, n_eff, "impact v")
+    folded = lambda x: min(1.0, 2 * normal_cdf(sigma)(x))
+    check_bins(rows, "p_x_histogram_1_m", "x_m", folded, n_eff, "impact x")
+    check_bins(rows, "p_v_histogram_s_m", "v_m_s", normal_cdf(math.sqrt(var_v)), n_eff, "impact v")
+    rayleigh = lambda a: 1 - math.exp(-max(a, 0) ** 2 / (2 * var_y))
+    check_bins(rows, "p_a_histogram_1_m", "a_m", rayleigh, n_eff, "impact amplitude")
 
 
 def sd_potential(alpha):
@@ -206,4 +240,4 @@ def p_bifurcation(directory, *alphas):
 if __name__ == "__main__":
     kind, directory = sys.argv[2], sys.argv[1]
     values = [float(v) for v in sys.argv[3:]]
-    {"linear": linear, "sd": sd, "p-bifurcation": p_bifurcation}[kind](directory, *values)
+    {"linear": linear, "impact": impact, "sd": sd, "p-bifurcation": p_bifurcation}[kind](directory, *values)

@@ -141,6 +141,10 @@ namespace poundfe
     std::string summary;
     /// Runs the command; returns the exit status.
     int (*run)(const CommandRun &) = nullptr;
+    /// Without CommandRule::rigid_contact, what in the command's method
+    /// rigid contact cannot give (the refusal of Contact/Model = nonsmooth
+    /// says it); empty: not taken yet.
+    std::string without_rigid_contact = {};
 
     bool
     has(const CommandRule rule) const

@@ -8,6 +8,14 @@
 // function. The program writes no LCP solver of its own: without Siconos
 // (a build that did not find it) lcp_solver_available() is false and
 // solve_lcp() is a programming error.
+// With Coulomb friction the step's problem is a friction-contact problem
+// in a contact space of two dimensions (normal and tangent in plan),
+//   u = W r + q,  K* ∋ u + (μ |u_T|, 0)  ⊥  r ∈ K,  K = {r : |r_T| <= μ r_N}
+// (De Saxcé's bipotential form; Acary & Brogliato 2008, §13.2), handed to
+// Siconos Numerics' fc2d solvers (fc2d_Solvers.h): projected Gauss-Seidel
+// over the contacts (NSGS), Lemke's method on its LCP reformulation, and
+// enumeration. (Siconos's local Newton solvers are fc3d's, for a contact
+// space of three dimensions, which a contact in plan has not.)
 // Only source/integration/lcp_solver.cc includes Siconos's headers.
 #ifndef poundfe_integration_lcp_solver_h
 #define poundfe_integration_lcp_solver_h
@@ -49,6 +57,22 @@ namespace poundfe
     int         info = 0;
   };
 
+  enum class FrictionSolverKind
+  {
+    nsgs,       // SICONOS_FRICTION_2D_NSGS: Gauss-Seidel over the contacts, each solved exactly
+    lemke,      // SICONOS_FRICTION_2D_LEMKE: Lemke on the problem's LCP (fc2d_tolcp)
+    enumeration // SICONOS_FRICTION_2D_ENUM: every complementary basis, a few contacts
+  };
+
+  const NameTable<FrictionSolverKind> &friction_solver_names();
+
+  struct FrictionContactOptions
+  {
+    FrictionSolverKind solver         = FrictionSolverKind::nsgs;
+    double             tolerance      = 1e-12; // on Siconos's fc2d_compute_error
+    unsigned int       max_iterations = 10000;
+  };
+
   /// Whether this build has Siconos Numerics (Contact/Model = nonsmooth).
   bool lcp_solver_available();
   /// "Siconos Numerics" with its version, or why it is missing.
@@ -59,6 +83,14 @@ namespace poundfe
   /// decides: a step's NumericalError).
   LcpSolution solve_lcp(const Eigen::MatrixXd &M, const Eigen::VectorXd &q,
                         const LcpOptions &options = LcpOptions());
+
+  /// Solve the 2D friction-contact problem (W, q, mu): contact k's
+  /// reaction (r_N, r_T) is z[2k], z[2k + 1], its velocity (u_N, u_T)
+  /// w[2k], w[2k + 1] (W and q ordered alike); `info`, `residual`
+  /// (fc2d_compute_error) and `iterations` as solve_lcp's.
+  LcpSolution solve_friction_contact(const Eigen::MatrixXd &W, const Eigen::VectorXd &q,
+                                     const Eigen::VectorXd       &mu,
+                                     const FrictionContactOptions &options);
 } // namespace poundfe
 
 #endif

@@ -25,6 +25,14 @@
 // The impact log takes a step with an impulse P as one with the mean force
 // P / h: its impulse is P, its peak force P / h of the largest step's
 // impulse, its approach and separation velocities the jumps' ends.
+// A contact in plan (Model/Dimension = 3: a corner of one floor's slab
+// against the edge of the other's, model/plan_contact_geometry.h) has a gap
+// g_a(u) nonlinear in the floors' (ux, uy, θz): its row H_a = ∇g_a(u) is
+// taken at the start of each step (the impulse acts along the normal through
+// the contact point there, equal and opposite on the two floors, so that
+// linear and angular momentum are kept), g_a(u) is evaluated exactly, and a
+// contact whose edges do not overlap is open (Acary & Brogliato §10.1.7:
+// the constraint's Jacobian at the beginning of the step).
 #ifndef poundfe_integration_moreau_jean_h
 #define poundfe_integration_moreau_jean_h
 
@@ -33,6 +41,7 @@
 #include <poundfe/integration/lcp_solver.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/integration/stepper_state.h>
+#include <poundfe/model/plan_contact_geometry.h>
 
 #include <Eigen/LU>
 
@@ -54,12 +63,19 @@ namespace poundfe
     /// The gap element of this contact among the nonlinear elements (its
     /// work carries the energy lost at impacts); -1: none.
     int element = -1;
+    /// A contact in plan: g(u) from `plan` on `equations`, the (ux, uy, θz)
+    /// of its two floors (coefficients and initial_gap unused).
+    bool                in_plan = false;
+    PlanContactGeometry plan;
+    /// Coulomb's coefficient along the contact (in plan only: the tangent
+    /// J n of the normal through the contact point); 0: frictionless.
+    double friction = 0;
   };
 
   /// The unilateral contacts of `model`'s gap elements among `elements`
-  /// (one per gap, between floors or against a barrier), each with
+  /// (one per gap: between floors, against a barrier or in plan), each with
   /// restitution e, into `contacts`; the reason when a gap is beyond them
-  /// (a gap in plan or on a column, bumpers), else empty.
+  /// (a slab against a column, bumpers), else empty.
   std::string unilateral_contacts(const Model &model, const NonlinearElements &elements,
                                   double restitution, std::vector<UnilateralContact> &contacts);
 
@@ -68,6 +84,11 @@ namespace poundfe
     double       time_step = 0.001;
     double       theta     = 0.5;
     LcpOptions   lcp;
+    /// Coulomb's coefficient of the contacts in plan (Contact/Friction
+    /// coefficient; copied to each contact), and with it the solver of the
+    /// friction-contact problem.
+    double                 friction_coefficient = 0;
+    FrictionContactOptions friction;
     /// Newton on the smooth part: |dv| <= tolerance (|v+| + velocity_scale).
     double       newton_tolerance  = 1e-10;
     double       velocity_scale    = 1e-6; // m/s
@@ -81,9 +102,10 @@ namespace poundfe
   {
     double       time    = 0; // the end of the step
     unsigned int contact = 0;
-    double       impulse = 0;                     // N s
+    double       impulse = 0;                     // N s, along the normal
+    double       tangential_impulse = 0;          // N s, along J n (friction)
     double       velocity_before = 0, velocity_after = 0; // U_a, U_a+ (m/s; < 0 closing)
-    double       energy_lost = 0;                 // -P (U+ + U) / 2, J
+    double       energy_lost = 0; // -P (U+ + U) / 2 - P_T (U_T+ + U_T) / 2, J
   };
 
   class MoreauJeanIntegrator : public TimeStepperState
@@ -115,13 +137,21 @@ namespace poundfe
     std::vector<double> gaps() const;
     /// Siconos's solver name, LCPs solved, their largest iterations and residual.
     const std::string &lcp_solver() const { return solver_name; }
-    unsigned long      n_lcps() const { return lcp_count; }
-    int                max_lcp_iterations() const { return lcp_iterations; }
-    double             max_lcp_residual() const { return lcp_residual; }
+    /// Siconos's name of the friction-contact solver ("" without friction).
+    const std::string &friction_solver() const { return friction_solver_name; }
+    unsigned long      n_lcps() const { return stats.contact.solves; }
+    int                max_lcp_iterations() const { return stats.contact.max_iterations; }
+    double             max_lcp_residual() const { return stats.contact.max_residual; }
 
   private:
-    /// g_a(u) and U_a(v) = H_a v.
+    /// g_a(u) (exact, also in plan) and U_a(v) = H_a v.
     double gap(unsigned int a, const Vector &x) const;
+    /// The geometry of contact in plan a at displacements x.
+    PlanContactState plan_state(unsigned int a, const Vector &x) const;
+    /// H_a and T_a of the contacts in plan at the current displacements.
+    void   linearize_plan_contacts();
+    /// T_a of contact in plan a at the current displacements, `state` its geometry.
+    Vector6 plan_tangent(unsigned int a, const PlanContactState &state) const;
     double normal_velocity(unsigned int a, const Vector &x) const;
     /// Sets the (non-gap) elements' trial state at (x, y); their force
     /// corrections added to `force`, their tangent to `jacobian` (if not
@@ -131,8 +161,17 @@ namespace poundfe
     /// C x + K y + element forces - p: the smooth forces' negative at (y, x).
     Vector smooth_force(double t, const Vector &displacement, const Vector &velocity,
                         const Vector &load_vector, Eigen::MatrixXd *jacobian);
-    /// The impulses of the active contacts for free velocity v_free.
+    /// The impulses of the active contacts for free velocity v_free: P_a
+    /// (normal) for each, and with friction P_T after them, in the order
+    /// of `active` (the columns of the active contacts' H, then T).
     Vector contact_impulses(const std::vector<unsigned int> &active, const Vector &v_free);
+    /// The same with friction: Siconos's fc2d on the normal and tangent rows.
+    Vector friction_impulses(const std::vector<unsigned int> &active, const Vector &v_free);
+    /// Count a contact problem's solve; NumericalError when it failed.
+    void   count_solve(const LcpSolution &solution, unsigned int n_contacts,
+                       const char *problem);
+    /// The rows of the active contacts: H's, then T's of those with friction.
+    Eigen::MatrixXd active_rows(const std::vector<unsigned int> &active) const;
     /// One step of h from the current state; returns the impulses.
     void   step(const LoadFunction &load);
     void   record_impulses(const std::vector<unsigned int> &active, const Vector &impulse,
@@ -146,6 +185,9 @@ namespace poundfe
     unsigned int                   n          = 0;
     unsigned int                   n_elements = 0;
     Eigen::MatrixXd                mass, damping, stiffness, base_jacobian, H;
+    /// The tangent rows (J n through the contact point) of contacts in plan.
+    Eigen::MatrixXd                T;
+    bool                           has_friction = false;
     Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_factor;
     Vector                         load_start, smooth_start, local_u, local_v;
     std::vector<double>            initial_stored;
@@ -153,10 +195,7 @@ namespace poundfe
     /// The energy lost at impacts of contacts without a gap element.
     double                         unattached_loss = 0;
     std::vector<double>            impulses_last_step;
-    std::string                    solver_name;
-    unsigned long                  lcp_count      = 0;
-    int                            lcp_iterations = 0;
-    double                         lcp_residual   = 0;
+    std::string                    solver_name, friction_solver_name;
   };
 } // namespace poundfe
 

@@ -140,6 +140,16 @@ namespace poundfe
     }
   };
 
+  /// The one-step contact problems of rigid contact (Moreau-Jean's LCPs, or
+  /// friction-contact problems with friction), solved by Siconos Numerics.
+  struct ContactProblemCounts
+  {
+    unsigned long solves         = 0;
+    unsigned long iterations     = 0; // the solver's, over all solves (Lemke: pivots)
+    unsigned int  max_iterations = 0; // of one solve
+    double        max_residual   = 0; // Siconos's error, the largest of one solve
+  };
+
   struct IterationStatistics
   {
     unsigned long steps      = 0; // accepted steps and sub-steps
@@ -158,6 +168,8 @@ namespace poundfe
     /// CG + AMG solves and preconditioner builds, over the integrator's
     /// life (the preconditioners outlive initialize()).
     IterativeSolveCounts linear;
+    /// Rigid contact's contact problems (Contact/Model = nonsmooth).
+    ContactProblemCounts contact;
   };
 
   class NewmarkIntegrator : public TimeStepper

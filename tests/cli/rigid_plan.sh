@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Rigid contact in plan (Model/Dimension = 3, Contact/Model = nonsmooth):
+# two one-storey torsionally coupled shear buildings, B turned by 2 degrees
+# so that one corner of its slab (the other 0.2 m behind) faces A's edge
+# 10 mm away, with mass eccentricities, released towards each other
+# obliquely (ux and uy), e = 0.65, over their first contact (0.1 s at
+# 1e-5 s): an eccentric impact that twists both floors. `poundfe sweep` of
+# Contact/Stiffness runs Hertz-damp (damping calibrated to the same e) at
+# 1e10 ... 1e13 N/m^1.5 and rigid contact once as the limit:
+#   - each peak drift's, peak floor displacement's and largest corner
+#     drift's (the twist) relative difference from rigid contact decreases
+#     over the last three stiffnesses and is below 5 % at the stiffest (a
+#     Hertz penetration, and so its difference from rigid contact, falls
+#     as k^(-2/5));
+#   - the run has an impact in plan, and its summary names the LCP solver;
+#   - with a Friction coefficient, summary.json names the fc2d solver and
+#     counts its problems, and the energy balance closes to 1e-9.
+# (Two corners closing within a fraction of the contact's duration, a flat
+# edge, are another matter: rigid contact takes them one step apart, a
+# penalty law as overlapping contacts; doc/verification.md.)
+set -u
+poundfe=$1
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+cd "$work"
+. "$here/expect.sh"
+
+if ! "$poundfe" --version | grep -q "nonsmooth"; then
+  echo "rigid-plan: this build has no Siconos (penalty only): nothing to check"
+  exit 0
+fi
+building() { # number name position plan eccentricity stiffness rotation
+  printf 'subsection Building %s\n  set Name = %s\n  set Type = shear\n  set Number of storeys = 1\n' "$1" "$2"
+  printf '  set Storey heights = 3.0\n  set Floor masses = 2e4\n  set Storey stiffnesses = %s\n' "$6"
+  printf '  subsection Plan\n    set Position = %s\n    set Plan dimensions = %s\n' "$3" "$4"
+  printf '    set Mass eccentricity = %s\n    set Rotation = %s\n  end\n' "$5" "$7"
+  printf '  subsection Damping\n    set Type = none\n  end\nend\n'
+}
+{
+  printf 'subsection Model\n  set Number of buildings = 2\n  set Dimension = 3\nend\n'
+  building 1 A "0, 0" "10, 8" "1.0, 0.5" 2e7 0
+  building 2 B "9.1123, 0" "8, 6" "-0.5, 0.8" 1.2e7 2
+  printf 'subsection Ground motion\n  set Type = none\nend\n'
+  # (ux, uy, θz) of A's floor, then B's
+  printf 'subsection Initial conditions\n  set Equation velocities = 0 = 0.5; 1 = 0.2; 3 = -0.3; 4 = -0.1\nend\n'
+  printf 'subsection Contact\n  set Model = nonsmooth\n  set Law = hertz-damp\n'
+  printf '  set Stiffness = 1e10\n  set Damping from = calibrated\n  set Calibration velocity = 0.8\n'
+  printf '  set Coefficient of restitution = 0.65\nend\n'
+  printf 'subsection Time integration\n  set Time step = 1e-5\n  set End time = 0.1\nend\n'
+  printf 'subsection Output\n  set Plots = false\n  set VTU interval = 0\nend\n'
+  printf 'subsection Sweep\n  set Parameter = Contact/Stiffness\n  set Values = 1e10, 1e11, 1e12, 1e13\nend\n'
+} > plan.prm
+
+"$poundfe" sweep plan.prm --output sweep > sweep.out 2> sweep.err || fail "sweep exited $?: $(head -c 300 sweep.err)"
+"$poundfe" run plan.prm --output run > /dev/null 2> run.err || fail "run exited $?: $(head -c 300 run.err)"
+python3 - sweep run <<'PY' || fail "convergence to rigid contact in plan"
+import csv, json, sys
+sweep, run = sys.argv[1:]
+limit = next(csv.DictReader(open(f"{sweep}/rigid_limit.csv")))
+s = json.load(open(f"{run}/summary.json"))
+print("contact:", {k: s["contact"][k] for k in ("model", "lcp_solver")}, "impacts:",
+      [g["impacts"] for g in s["gaps"]])
+assert s["contact"]["model"] == "nonsmooth" and s["contact"]["lcp_solver"]
+assert sum(g["impacts"] for g in s["gaps"]) > 0
+assert int(float(limit["completed"])) == 1, limit
+rows = list(csv.DictReader(open(f"{sweep}/contact_convergence.csv")))
+assert [float(r["Contact_Stiffness"]) for r in rows] == [1e10, 1e11, 1e12, 1e13], rows
+names = [n[: -len("_relative_error")] for n in rows[0] if n.endswith("_relative_error")]
+assert any("corner_drift" in n for n in names), names  # the twist: each corner's drift
+failed = []
+for name in names:
+    error = [float(r[f"{name}_relative_error"]) for r in rows]
+    print(f"{name}: {float(limit[name]):.4g}, relative difference " + ", ".join(f"{x:.3g}" for x in error))
+    failed.extend(n for n in [name] if not (error[-3] > error[-2] > error[-1] and error[-1] < 0.05))
+assert not failed, failed
+PY
+# with Coulomb friction along the edge: the friction-contact problem's
+# solver and counts in summary.json, the energy balance (friction's work in
+# the contact term) closed to 1e-9 as without it
+"$poundfe" run plan.prm --set "Contact/Friction coefficient=0.5" --output friction > /dev/null 2> friction.err ||
+  fail "run with friction exited $?: $(head -c 300 friction.err)"
+python3 - friction <<'PY' || fail "rigid contact in plan with friction"
+import json, sys
+s = json.load(open(f"{sys.argv[1]}/summary.json"))
+c = s["contact"]
+print("friction:", c["friction_coefficient"], c["friction_solver"], c["friction_contact"],
+      "balance error", s["energy"]["max_relative_balance_error"])
+assert c["friction_coefficient"] == 0.5 and c["friction_solver"] == "nsgs", c
+assert c["friction_contact"]["solves"] > 0 and "lcp" not in c, c
+assert c["friction_contact"]["max_residual"] <= c["lcp_tolerance"], c
+assert s["energy"]["max_relative_balance_error"] <= 1e-9, s["energy"]
+PY
+echo "rigid-plan: $failures failures"
+exit $((failures > 0))
