@@ -1,5 +1,15 @@
 // The displacement-based and force-based beam-columns: their common state
 // handling and the two state determinations (equations in the header).
+// The force-based element's last resort (basic_state): when even the
+// smallest piece of the subdivision fails, the rest of the increment is
+// applied again the same way with the sections' deformations corrected by
+// their initial flexibility, e_i += f_s0,i (b_i q - s_i), in up to 200
+// iterations (OpenSees's ForceBeamColumn second strategy, which it tries
+// before subdividing; here after, so that every path the tangent's Newton
+// iteration converges on keeps its numbers): a fixed, stiffest flexibility
+// contracts where the tangent's Newton cycles, at a fibre law's kink, as
+// Concrete01 without tension about zero strain, a beam cracking and
+// closing at once near zero deformation.
 #include <poundfe/elements/beam_column.h>
 
 #include <deal.II/base/exceptions.h>
@@ -377,12 +387,15 @@ namespace poundfe
     BasicVector  remaining = v - current.v;
     BasicVector  piece     = remaining;
     unsigned int level     = 0;
+    // the sections' initial flexibility, once the tangent's has failed at
+    // every level (OpenSees's second strategy; see iterate)
+    bool initial = false;
     while (remaining.squaredNorm() > 0 && current.v != v)
       {
         start = current;
         // the last piece ends at v exactly
         const BasicVector target = v - (remaining - piece);
-        if (iterate(target))
+        if (iterate(target, initial))
           {
             current.v = target;
             remaining -= piece;
@@ -394,7 +407,14 @@ namespace poundfe
           }
         current = start;
         if (++level > max_levels)
-          break;
+          {
+            if (initial)
+              break;
+            initial = true;
+            level   = 0;
+            piece   = remaining;
+            continue;
+          }
         piece /= 10;
       }
     q = current.q;
@@ -415,9 +435,9 @@ namespace poundfe
 
   template <int dim>
   bool
-  ForceBeamColumn<dim>::iterate(const BasicVector &target)
+  ForceBeamColumn<dim>::iterate(const BasicVector &target, const bool initial)
   {
-    constexpr unsigned int max_iterations = 20;
+    const unsigned int     max_iterations = initial ? 200 : 20;
     const double           L              = this->length();
     const BasicVector      dv             = target - current.v;
     // The energy scale of the tolerance: the target's and the increment's
@@ -440,7 +460,9 @@ namespace poundfe
           {
             const Interpolation   b  = force_interpolation(this->rule.points[i]);
             const ResultantVector ss = b * current.q;
-            current.e[i] += current.fs[i] * (ss - current.s[i]);
+            current.e[i] += (initial ? ResultantMatrix(initial_section_stiffness[i].inverse()) :
+                                       current.fs[i]) *
+                            (ss - current.s[i]);
             SectionLaw &section = *this->sections[i];
             if (!section.set_trial(SectionVector(current.e[i])))
               {

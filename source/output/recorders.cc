@@ -242,12 +242,54 @@ namespace poundfe
               owners_of(Owner::floor, first_integers(n), 3)};
     }
 
-    /// The six end forces of each requested member; an unknown label is bad input.
+    /// The twelve local end forces of each requested 3D member.
+    Series
+    member_force_series_3d(const std::vector<std::string> &labels, const Model &model,
+                           const std::shared_ptr<const StoreyForces> &forces)
+    {
+      std::vector<std::string>  columns;
+      std::vector<unsigned int> buildings; // of each member
+      for (const std::string &label : labels)
+        {
+          for (const Member3D &member : model.members_3d)
+            if (member.label == label)
+              {
+                buildings.push_back(member.building);
+                break;
+              }
+          for (const char *end : {"1", "2"})
+            for (const auto &[name, unit] : {std::pair{"N", "_N"}, {"Vy", "_N"}, {"Vz", "_N"},
+                                             {"T", "_N_m"}, {"My", "_N_m"}, {"Mz", "_N_m"}})
+              columns.push_back(label + "_" + name + end + unit);
+        }
+      return {columns,
+              [forces, labels](const ResponseView &s, std::vector<double> &to) {
+                to.resize(12 * labels.size());
+                for (unsigned int m = 0; m < labels.size(); ++m)
+                  {
+                    const auto f = forces->member_end_forces_3d(labels[m], s.displacement());
+                    std::copy(f.data(), f.data() + 12, to.begin() + 12 * m);
+                  }
+              },
+              owners_of(Owner::building, buildings, 12)};
+    }
+
+    /// The six end forces of each requested member (twelve in space); an
+    /// unknown label is bad input.
     Series
     member_force_series(const RecorderRequest &request, const Model &model,
                         const std::shared_ptr<const StoreyForces> &forces,
                         const std::string &input_file, const int line)
     {
+      for (const std::string &label : request.labels)
+        if (!forces->has_member(label))
+          throw InputError(input_file, line, "Output/Recorders/Record",
+                           "'member end forces of " + label + "': no member is labelled so "
+                             "(members are named like A3_C1.2: building, C<storey>.<column line> "
+                             "or B<floor>.<bay>; in a 3D frame A_C1.2.1, A_BX1.1.1, A_BY1.1.1: "
+                             "storey or floor, x and y line)");
+      if (model.dimension == 3)
+        return member_force_series_3d(request.labels, model, forces);
       std::vector<std::string>  columns;
       std::vector<unsigned int> buildings; // of each member
       for (const std::string &label : request.labels)
@@ -258,11 +300,6 @@ namespace poundfe
                 buildings.push_back(model.nodes[member.nodes[0]].building);
                 break;
               }
-          if (!forces->has_member(label))
-            throw InputError(input_file, line, "Output/Recorders/Record",
-                             "'member end forces of " + label + "': no member is labelled so "
-                               "(members are named like A3_C1.2: building, C<storey>.<column line> "
-                               "or B<floor>.<bay>)");
           for (const char *c : {"_N1_N", "_V1_N", "_M1_N_m", "_N2_N", "_V2_N", "_M2_N_m"})
             columns.push_back(label + c);
         }
@@ -389,14 +426,8 @@ namespace poundfe
                     const auto [h, i, first] = (*points)[p];
                     if (!s.observes_element(h))
                       continue;
-                    const FibreSection       &section = *fibre_section_of(s.elements[h], i);
-                    const SectionStateEntries row = section_state_entries(section, (*kinds)[p]);
-                    std::copy(row.begin(), row.end(), to.begin() + first);
-                    if (section.n_resultants() == 4) // (N, Mz, My, T), (eps0, kz, ky, theta)
-                      {
-                        to[first + row.size()]     = section.resultant()[2];
-                        to[first + row.size() + 1] = section.deformation()[2];
-                      }
+                    section_state_values(*fibre_section_of(s.elements[h], i), (*kinds)[p],
+                                         &to[first]);
                   }
               },
               owners};
@@ -865,7 +896,9 @@ namespace poundfe
                       "('every 0': every step). A quantity listed here replaces its default. "
                       "Quantities (files): " + names + ". 'member end forces' needs the members, "
                       "e.g. 'member end forces of A3_C1.1, A3_B2.1' (building, C<storey>.<column "
-                      "line> or B<floor>.<bay>). 'hinge states' and 'gap states' record all by "
+                      "line> or B<floor>.<bay>; in a 3D frame A_C1.2.1, A_BX1.1.1, A_BY1.1.1: "
+                      "storey or floor, x and y line, with N, Vy, Vz, T, My, Mz at each end). "
+                      "'hinge states' and 'gap states' record all by "
                       "default, or only those named: 'hinge states of A3_C1.2_bottom, B2' (a "
                       "label, or a building's name for all of its hinges or gaps): for large "
                       "models. Storey and base shear are element forces "

@@ -13,7 +13,7 @@ namespace poundfe
   {
     /// The storey (1-based) a member of building b stands in: the first
     /// floor at or above its upper end (the columns below a floor, the
-    /// beams of that floor).
+    /// beams of that floor); a 3D member's ends by their z.
     unsigned int
     storey_of_member(const Model &model, const std::string &label, const unsigned int b)
     {
@@ -22,6 +22,10 @@ namespace poundfe
         if (member.label == label)
           for (const unsigned int n : member.nodes)
             top = std::max(top, model.nodes[n].position.y);
+      for (const Member3D &member : model.members_3d)
+        if (member.label == label)
+          for (const auto &end : member.ends)
+            top = std::max(top, end[2]);
       const std::vector<Floor> &floors    = model.buildings[b].floors;
       const double              tolerance = 1e-6 * std::max(1.0, std::abs(top));
       unsigned int              f         = 0;
@@ -77,14 +81,13 @@ namespace poundfe
   {
     for (const NonlinearElement &e : elements)
       {
-        const auto *member = dynamic_cast<const MemberElement<2> *>(&e);
-        if (member == nullptr || fibre_section_of(*member, 0) == nullptr)
+        if (fibre_section_of(e, 0) == nullptr) // not a member on fibre sections
           continue;
-        MemberLimits m{member, e.label, e.building, storey_of_member(model, e.label, e.building),
+        MemberLimits m{&e, e.label, e.building, storey_of_member(model, e.label, e.building),
                        {}, {}, {}};
-        for (unsigned int i = 0; i < member->member().n_points(); ++i)
+        for (unsigned int i = 0; fibre_section_of(e, i) != nullptr; ++i)
           {
-            const FibreSection &section = *fibre_section_of(*member, i);
+            const FibreSection &section = *fibre_section_of(e, i);
             m.sections.emplace_back(section, section_strain_limits(section, parameters));
             const double yield = m.sections.back().limits().strain[unsigned(SectionLimit::bar_yield)];
             m.yield_axial_force.push_back(std::numeric_limits<double>::quiet_NaN());
@@ -113,6 +116,10 @@ namespace poundfe
           m.yield_axial_force[i] = n;
           m.sections[i].set_yield_curvatures(section_yield_curvature(section, n, yield, +1),
                                              section_yield_curvature(section, n, yield, -1));
+          if (section.n_resultants() == 4) // in space: about y too
+            m.sections[i].set_yield_curvatures_y(
+              section_yield_curvature(section, n, yield, +1, BendingAxis::y),
+              section_yield_curvature(section, n, yield, -1, BendingAxis::y));
         }
   }
 
@@ -171,6 +178,20 @@ namespace poundfe
           .value("peak_steel_strain_max", per_point(m, [](auto &s) { return s.peaks().steel_max; }))
           .value("peak_steel_strain_min",
                  per_point(m, [](auto &s) { return s.peaks().steel_min; }));
+        if (m.sections.front().in_space()) // the first fields about z, these about y
+          json
+            .value("curvature_ductility_z",
+                   per_point(m, [](auto &s) { return s.curvature_ductility_z(); }))
+            .value("curvature_ductility_y",
+                   per_point(m, [](auto &s) { return s.curvature_ductility_y(); }))
+            .value("yield_curvature_y_positive_1_m",
+                   per_point(m, [](auto &s) { return s.limits().yield_curvature_y_positive; }))
+            .value("yield_curvature_y_negative_1_m",
+                   per_point(m, [](auto &s) { return s.limits().yield_curvature_y_negative; }))
+            .value("peak_curvature_y_positive_1_m",
+                   per_point(m, [](auto &s) { return s.peak_curvature_y_positive(); }))
+            .value("peak_curvature_y_negative_1_m",
+                   per_point(m, [](auto &s) { return s.peak_curvature_y_negative(); }));
         json.begin_object("limits");
         for (unsigned int l = 0; l < n_section_limits; ++l)
           {

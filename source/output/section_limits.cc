@@ -56,14 +56,20 @@ namespace poundfe
       return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
     }
 
-    /// The same fibres mirrored about z (y -> -y): its positive curvature
-    /// is the original's negative one.
+    /// The fibres as a plane section bending one way about `axis`: about z
+    /// its fibres' y (sense -1: y -> -y, whose positive curvature is the
+    /// original's negative one); about y their depth -z (a fibre's strain
+    /// is eps0 + z kappa_y, the plane's eps0 - y kappa), sense -1: +z.
     FibreGeometry
-    mirrored(const FibreGeometry &geometry)
+    bent_about(const FibreGeometry &geometry, const BendingAxis axis, const int sense)
     {
       FibreGeometry m = geometry;
       for (Fibre &f : m.fibres)
-        f.y = -f.y;
+        {
+          const double depth = axis == BendingAxis::z ? f.y : -f.z;
+          f.y                = sense > 0 ? depth : -depth;
+          f.z                = 0;
+        }
       return m;
     }
 
@@ -208,6 +214,25 @@ namespace poundfe
              section.deformation()[1], e.concrete, e.steel_max, e.steel_min}};
   }
 
+  unsigned int
+  n_section_state_values(const FibreSection &section)
+  {
+    return n_section_state_entries + (section.n_resultants() == 4 ? 2 : 0);
+  }
+
+  void
+  section_state_values(const FibreSection &section, const std::vector<FibreKind> &kinds,
+                       double *to)
+  {
+    const SectionStateEntries entries = section_state_entries(section, kinds);
+    std::copy(entries.begin(), entries.end(), to);
+    if (section.n_resultants() == 4) // (N, Mz, My, T), (eps0, kz, ky, theta)
+      {
+        to[n_section_state_entries]     = section.resultant()[2];
+        to[n_section_state_entries + 1] = section.deformation()[2];
+      }
+  }
+
   SectionStrainLimits
   section_strain_limits(const FibreSection &section, const SectionLimitParameters &parameters)
   {
@@ -244,13 +269,13 @@ namespace poundfe
 
   double
   section_yield_curvature(const FibreSection &section, const double axial_force,
-                          const double yield_strain, const int sense)
+                          const double yield_strain, const int sense, const BendingAxis axis)
   {
-    const FibreGeometry &g     = section.geometry();
-    const double         depth = depth_of(g);
+    const FibreGeometry g     = bent_about(section.geometry(), axis, sense);
+    const double        depth = depth_of(g);
     Assert(yield_strain > 0 && depth > 0, dealii::ExcInternalError());
     const double estimate = 2.1 * yield_strain / depth; // Priestley et al. (2007) §4.2
-    FibreSection bending(sense > 0 ? g : mirrored(g), 2);
+    FibreSection bending(g, 2);
     MomentCurvatureSettings settings;
     settings.axial_force      = axial_force;
     settings.target_curvature = 10 * estimate;
@@ -297,6 +322,7 @@ namespace poundfe
                                            const SectionStrainLimits &limits)
     : kinds(fibre_kinds(section.geometry()))
     , strain_limits(limits)
+    , space(section.n_resultants() == 4)
   {
     first.fill(not_checked);
   }
@@ -307,6 +333,14 @@ namespace poundfe
     Assert(positive > 0 && negative > 0, dealii::ExcInternalError());
     strain_limits.yield_curvature_positive = positive;
     strain_limits.yield_curvature_negative = negative;
+  }
+
+  void
+  SectionLimitTracker::set_yield_curvatures_y(const double positive, const double negative)
+  {
+    Assert(space && positive > 0 && negative > 0, dealii::ExcInternalError());
+    strain_limits.yield_curvature_y_positive = positive;
+    strain_limits.yield_curvature_y_negative = negative;
   }
 
   double
@@ -329,13 +363,20 @@ namespace poundfe
   void
   SectionLimitTracker::observe(const FibreSection &section, const double time)
   {
-    const double kappa = section.deformation()[1];
-    kappa_max          = std::max(kappa_max, kappa);
-    kappa_min          = std::min(kappa_min, kappa);
-    const double up    = strain_limits.yield_curvature_positive;
-    const double down  = strain_limits.yield_curvature_negative;
-    if (up > 0 && down > 0) // against the yield curvatures of this state
-      ductility = std::max({ductility, kappa / up, -kappa / down});
+    // against the yield curvatures of this state
+    const auto follow = [](const double kappa, const double up, const double down, double &high,
+                           double &low, double &mu) {
+      high = std::max(high, kappa);
+      low  = std::min(low, kappa);
+      if (up > 0 && down > 0)
+        mu = std::max({mu, kappa / up, -kappa / down});
+    };
+    const SectionStrainLimits &l = strain_limits;
+    follow(section.deformation()[1], l.yield_curvature_positive, l.yield_curvature_negative,
+           kappa_max, kappa_min, ductility);
+    if (space) // (eps0, kappa_z, kappa_y, theta)
+      follow(section.deformation()[2], l.yield_curvature_y_positive,
+             l.yield_curvature_y_negative, kappa_y_max, kappa_y_min, ductility_y);
     const ExtremeStrains now = extreme_strains(section, kinds);
     peak.concrete  = std::min(peak.concrete, now.concrete);
     peak.core      = std::min(peak.core, now.core);
@@ -359,13 +400,30 @@ namespace poundfe
   }
 
   double
-  SectionLimitTracker::curvature_ductility() const
+  SectionLimitTracker::curvature_ductility_z() const
   {
     const double up   = strain_limits.yield_curvature_positive;
     const double down = strain_limits.yield_curvature_negative;
     if (!(up > 0 && down > 0)) // a section without bars
       return std::numeric_limits<double>::quiet_NaN();
     return ductility;
+  }
+
+  double
+  SectionLimitTracker::curvature_ductility_y() const
+  {
+    const double up   = strain_limits.yield_curvature_y_positive;
+    const double down = strain_limits.yield_curvature_y_negative;
+    if (!(space && up > 0 && down > 0)) // in the plane, or without bars
+      return std::numeric_limits<double>::quiet_NaN();
+    return ductility_y;
+  }
+
+  double
+  SectionLimitTracker::curvature_ductility() const
+  {
+    return space ? std::max(curvature_ductility_z(), curvature_ductility_y()) :
+                      curvature_ductility_z();
   }
 
   double

@@ -110,6 +110,7 @@ namespace poundfe
         const int element_index = member.fibre.fibre() ? next_member++ : -1;
         if (element_index >= 0)
           member_elements_3d++;
+        member_3d_elements.push_back(element_index);
         const Building    &building = model.buildings[member.building];
         const double       z0 = member.ends[0][2], z1 = member.ends[1][2];
         const unsigned int lower = z0 < z1 ? 0 : 1;
@@ -247,7 +248,37 @@ namespace poundfe
   StoreyForces::has_member(const std::string &label) const
   {
     return std::any_of(model.members.begin(), model.members.end(),
-                       [&](const Member &m) { return m.label == label; });
+                       [&](const Member &m) { return m.label == label; }) ||
+           std::any_of(model.members_3d.begin(), model.members_3d.end(),
+                       [&](const Member3D &m) { return m.label == label; });
+  }
+
+  Eigen::Matrix<double, 12, 1>
+  StoreyForces::member_end_forces_3d(const std::string &label, const Vector &u) const
+  {
+    using Point = Eigen::Map<const Eigen::Vector3d>;
+    for (unsigned int k = 0; k < model.members_3d.size(); ++k)
+      if (const Member3D &member = model.members_3d[k]; member.label == label)
+        {
+          const FrameElement3D element(Point(member.ends[0].data()), Point(member.ends[1].data()),
+                                       Point(member.orientation.data()), member.section);
+          if (member_3d_elements[k] >= 0)
+            return element.rotation() * fibre_member_forces_3d(member_3d_elements[k]);
+          return element.local_end_forces(member_3d_end_displacements(model, member, u));
+        }
+    return Vector12::Zero();
+  }
+
+  Eigen::Matrix<double, 12, 1>
+  member_3d_end_displacements(const Model &model, const Member3D &member, const Vector &u)
+  {
+    const unsigned int           n  = member.dofs.size();
+    Eigen::Matrix<double, 12, 1> ue = Eigen::Matrix<double, 12, 1>::Zero();
+    for (unsigned int i = 0; i < 12; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (const int q = model.equation(member.dofs[j]); q >= 0)
+          ue[i] += member.map[i * n + j] * u[q];
+    return ue;
   }
 
   Vector6

@@ -173,6 +173,21 @@ namespace poundfe
     /// The cell ids (kind, building, member), constant arrays.
     std::vector<FieldArray> cell_id_arrays(const Cells &cells);
 
+    /// The fibre members' integration points, as cell data: their vertex
+    /// cells from `first_cell` on, one per point, in the order of the
+    /// members' elements, `numbers` their places along their members.
+    struct SectionPointCells
+    {
+      unsigned int              first_cell = 0;
+      std::vector<unsigned int> numbers; // 1-based along its member
+      /// "integration_point" of every cell (0 off the points), constant.
+      FieldArray number_array(std::size_t n_cells) const;
+      /// One array per name of the points' values, `names.size()` per point
+      /// from values[first] on (0 off the points).
+      void add_arrays(const std::vector<const char *> &names, const std::vector<double> &values,
+                      std::size_t first, std::size_t n_cells, FieldFrame &frame) const;
+    };
+
     /// Where the frames of a series go: VTU files and a .pvd index
     /// (make_vtu_writer, vtu_series.cc) or one HDF5 file and its XDMF index
     /// (make_xdmf_writer, xdmf_series.cc). The geometry is given once.
@@ -247,6 +262,20 @@ namespace poundfe
       void         add_contact_arrows(double lift);
       double       value(const Combination &c, const Vector &u) const;
       void time_arrays(const Vector &u, const ElementFrameStates &states, FieldFrame &frame) const;
+      /// The vertex cells of the fibre members' integration points (after
+      /// every other cell), on their member's line; a Gauss-Lobatto end
+      /// point is the member's end point.
+      void add_section_points();
+      /// The local end forces of the members on fibre sections: their
+      /// elements' resisting forces (the elastic K u is wrong once one
+      /// cracks), into end_forces_start/end.
+      void set_fibre_end_forces(const ElementFrameStates &states, FieldArray &start,
+                                FieldArray &end) const;
+      /// The section arrays of a time frame (cell data, 0 off the points).
+      void add_section_arrays(const ElementFrameStates &states, FieldFrame &frame) const;
+      /// Where the fibre members' forces begin in `states`, after the
+      /// elements' entries and the sections'; Assert the sizes agree.
+      std::size_t first_member_force(const ElementFrameStates &states) const;
       /// The contact points' displacements (into d) and forces on the gaps'
       /// first buildings, per point, at the elements' state.
       std::vector<std::array<double, 3>>
@@ -269,6 +298,12 @@ namespace poundfe
       /// would hide it in their plane) and the stem cell; -1: none.
       std::vector<int>                 gap_arrow, gap_stem;
       std::vector<int>                 master_point; // per model node; -1: none
+      /// Per member: the points of its ends.
+      std::vector<std::array<long, 2>> member_ends;
+      /// The integration points of fibre members: their vertex cells come
+      /// last, one per point, in the order of the members' elements.
+      SectionPointCells                section_points;
+      std::vector<unsigned int>        section_members; // those members, in order
       double                           model_size = 0;
     };
   } // namespace vtu

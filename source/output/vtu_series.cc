@@ -48,9 +48,8 @@ namespace poundfe
     unsigned int first_gap_cell = 0, first_hinge_cell = 0;
     /// The integration points of fibre members: their vertex cells follow
     /// the hinges', one per point, in the order of the members' elements.
-    unsigned int              first_section_cell = 0;
-    std::vector<unsigned int> section_point_number; // 1-based along its member
-    std::vector<unsigned int> section_members;      // those members, in order
+    SectionPointCells         section_points;
+    std::vector<unsigned int> section_members; // those members, in order
     /// The cell of each hysteretic storey, in the order of the elements.
     std::vector<unsigned int> hysteretic_storey_cells;
     double      model_size = 0; // largest extent, m
@@ -254,7 +253,7 @@ namespace poundfe
   void
   VtuSeries::Impl::add_section_cells(Cells &cells, const std::vector<std::vector<long>> &members)
   {
-    first_section_cell = cells.types.size();
+    section_points.first_cell = cells.types.size();
     for (unsigned int e = 0; e < model.members.size(); ++e)
       {
         const Member &m = model.members[e];
@@ -275,7 +274,7 @@ namespace poundfe
                 add_point({start.x + xi[i] * (end.x - start.x), start.y + xi[i] * (end.y - start.y)},
                           {-1, static_cast<int>(e), xi[i]});
             cells.add({point}, vtk_vertex, section_point, m.building, cells.members[e]);
-            section_point_number.push_back(i + 1);
+            section_points.numbers.push_back(i + 1);
           }
       }
   }
@@ -393,14 +392,8 @@ namespace poundfe
     frame.point.push_back(std::move(displacement));
     frame.point.push_back(std::move(rotation));
     frame.cell = cell_id_arrays(cells);
-    if (!section_point_number.empty())
-      {
-        FieldArray number{"integration_point", 1, true, true,
-                          std::vector<double>(cells.types.size(), 0.0)};
-        std::copy(section_point_number.begin(), section_point_number.end(),
-                  number.values.begin() + first_section_cell);
-        frame.cell.push_back(std::move(number));
-      }
+    if (!section_points.numbers.empty())
+      frame.cell.push_back(section_points.number_array(cells.types.size()));
     return frame;
   }
 
@@ -549,16 +542,21 @@ namespace poundfe
         for (unsigned int i = 0; fibre_section_of(e, i) != nullptr; ++i) // after all elements
           {
             const FibreSection &section = *fibre_section_of(e, i);
-            const SectionStateEntries entries =
-              seen ? section_state_entries(section, fibre_kinds(section.geometry())) :
-                     SectionStateEntries{};
-            values.insert(values.end(), entries.begin(), entries.end());
+            const std::size_t   at      = values.size();
+            values.resize(at + n_section_state_values(section), 0.0);
+            if (seen)
+              section_state_values(section, fibre_kinds(section.geometry()), &values[at]);
           }
-        if (fibre_section_of(e, 0) != nullptr)
+        if (fibre_section_of(e, 0) != nullptr) // global end forces: 6 in the plane, 12 in space
           {
-            const auto &f = static_cast<const MemberElement<2> &>(e).member().resisting_force();
-            for (unsigned int k = 0; k < 6; ++k)
-              member_forces.push_back(seen ? f[k] : 0.0);
+            const auto append = [&](const auto &f) {
+              for (Eigen::Index k = 0; k < f.size(); ++k)
+                member_forces.push_back(seen ? f[k] : 0.0);
+            };
+            if (const auto *plane = dynamic_cast<const MemberElement<2> *>(&e))
+              append(plane->member().resisting_force());
+            else
+              append(static_cast<const MemberElement<3> &>(e).member().resisting_force());
           }
         if (!seen)
           continue;
@@ -697,27 +695,41 @@ namespace poundfe
   void
   VtuSeries::Impl::add_section_arrays(const ElementFrameStates &states, FieldFrame &frame) const
   {
-    if (section_point_number.empty())
+    if (section_points.numbers.empty())
       return;
-    static const char *names[n_section_state_entries] = {
-      "section_N",       "section_M",        "axial_strain",    "curvature",
-      "concrete_strain", "steel_strain_max", "steel_strain_min"};
-    std::vector<FieldArray> arrays;
-    for (const char *array_name : names)
-      arrays.push_back({array_name, 1, false, false, std::vector<double>(cells.types.size(), 0.0)});
     // the section entries follow the elements', point after point in the
     // order of the members' elements, which is the cells' order
     const std::size_t first = ElementFrameStates::n_entries * states.kinds.size();
     AssertThrow(states.values.size() == first +
-                                          n_section_state_entries * section_point_number.size() +
+                                          n_section_state_entries * section_points.numbers.size() +
                                           6 * section_members.size(),
                 dealii::ExcMessage("the fibre members' integration points and their drawing differ"));
-    for (std::size_t p = 0; p < section_point_number.size(); ++p)
-      for (unsigned int k = 0; k < arrays.size(); ++k)
-        arrays[k].values[first_section_cell + p] =
-          states.values[first + n_section_state_entries * p + k];
-    for (FieldArray &array : arrays)
-      frame.cell.push_back(std::move(array));
+    section_points.add_arrays({"section_N", "section_M", "axial_strain", "curvature",
+                               "concrete_strain", "steel_strain_max", "steel_strain_min"},
+                              states.values, first, cells.types.size(), frame);
+  }
+
+  FieldArray
+  vtu::SectionPointCells::number_array(const std::size_t n_cells) const
+  {
+    FieldArray number{"integration_point", 1, true, true, std::vector<double>(n_cells, 0.0)};
+    std::copy(numbers.begin(), numbers.end(), number.values.begin() + first_cell);
+    return number;
+  }
+
+  void
+  vtu::SectionPointCells::add_arrays(const std::vector<const char *> &names,
+                                     const std::vector<double> &values, const std::size_t first,
+                                     const std::size_t n_cells, FieldFrame &frame) const
+  {
+    const std::size_t n_values = names.size();
+    for (std::size_t k = 0; k < n_values; ++k)
+      {
+        FieldArray array{names[k], 1, false, false, std::vector<double>(n_cells, 0.0)};
+        for (std::size_t p = 0; p < numbers.size(); ++p)
+          array.values[first_cell + p] = values[first + n_values * p + k];
+        frame.cell.push_back(std::move(array));
+      }
   }
 
   void
@@ -726,7 +738,7 @@ namespace poundfe
   {
     // after the elements' entries and the sections' (add_section_arrays checks the size)
     const std::size_t first = ElementFrameStates::n_entries * states.kinds.size() +
-                              n_section_state_entries * section_point_number.size();
+                              n_section_state_entries * section_points.numbers.size();
     if (states.values.size() != first + 6 * section_members.size())
       return; // add_section_arrays refuses the frame
     for (std::size_t k = 0; k < section_members.size(); ++k)

@@ -26,16 +26,29 @@
 //     plane and would hide an arrow drawn in it.
 // Point data: displacement, rotation, node (the model node of a mass centre
 // or of a joint's (uz, rx, ry); else -1), and in a time frame contact_force
-// (N; zero but at the contact arrows' points). Cell data: kind (0 member, 1
-// storey, 2 gap, 4 slab, 5 mass centre, 6 contact point, 8 contact arrow's
-// stem), building and member ids
-// (1-based; a slab's and a mass centre's floor number, a gap's number), and
-// in a time frame the member end forces in local axes (N, Vy, Vz, T, My, Mz)
-// at each end, the gap force and contact (on its line, its vertex and its
-// stem).
+// (N; zero but at the contact arrows' points);
+//   - each integration point of a member on fibre sections a vertex on its
+//     member's line at the rule's place (a Gauss-Lobatto end point is the
+//     member's end point), moving as the straight line drawn between the
+//     member's ends, u = (1 - ξ) u_1 + ξ u_2.
+// Cell data: kind (0 member, 1
+// storey, 2 gap, 4 slab, 5 mass centre, 6 contact point, 7 integration
+// point, 8 contact arrow's stem), building and member ids
+// (1-based; a slab's and a mass centre's floor number, a gap's number; an
+// integration point's its member's), integration_point (1-based along its
+// member), and in a time frame the member end forces in local axes (N, Vy,
+// Vz, T, My, Mz) at each end (a fibre member's from its element's resisting
+// forces: the elastic K u is wrong once it cracks), the gap force and
+// contact (on its line, its vertex and its stem), and at the integration
+// points the section states of output/section_states.h (section_N,
+// section_Mz, axial_strain, curvature_z, the extreme fibre strains,
+// section_My, curvature_y).
 #include <poundfe/elements/frame_element_3d.h>
+#include <poundfe/elements/member_element.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/model/plan_contact_geometry.h>
+#include <poundfe/output/section_states.h>
+#include <poundfe/output/storey_forces.h>
 #include <poundfe/output/vtu_series.h>
 
 #include "vtu_arrays.h"
@@ -64,6 +77,42 @@ namespace poundfe
       for (unsigned int c = 0; c < 3; ++c)
         model_size = std::max(model_size, high[c] - low[c]);
       add_contact_arrows(contact_arrow_lift * model_size);
+      add_section_points();
+    }
+
+    void
+    VtuGeometry3D::add_section_points()
+    {
+      section_points.first_cell = cells.types.size();
+      for (unsigned int e = 0; e < model.members_3d.size(); ++e)
+        {
+          const Member3D &member = model.members_3d[e];
+          if (!member.fibre.fibre() ||
+              !dynamic_cast<const FibreSection *>(model.section_laws.at(member.fibre.section).get()))
+            continue; // its element has no section states (ElementFrameStates::evaluate)
+          section_members.push_back(e);
+          const std::vector<double> xi = fibre_member_integration(member.fibre).points;
+          for (unsigned int i = 0; i < xi.size(); ++i)
+            {
+              long point = xi[i] < 1e-12 ? member_ends[e][0] :
+                           xi[i] > 1 - 1e-12 ? member_ends[e][1] : -1;
+              if (point < 0) // on the member's line, moving with it
+                {
+                  Point3 at;
+                  Motion motion;
+                  for (unsigned int c = 0; c < 3; ++c)
+                    at[c] = (1 - xi[i]) * member.ends[0][c] + xi[i] * member.ends[1][c];
+                  for (unsigned int end = 0; end < 2; ++end)
+                    for (unsigned int c = 0; c < 6; ++c)
+                      for (const auto &[dof, a] : motions[member_ends[e][end]][c])
+                        motion[c].emplace_back(dof, (end == 0 ? 1 - xi[i] : xi[i]) * a);
+                  point = new_point(at, motion, -1);
+                }
+              cells.add({point}, vtk_vertex, section_point, member.building,
+                        cells.members[e]);
+              section_points.numbers.push_back(i + 1);
+            }
+        }
     }
 
     void
@@ -130,6 +179,7 @@ namespace poundfe
                     }
               ends[k] = point_at(member.building, member.ends[k], motion, node);
             }
+          member_ends.push_back(ends);
           cells.add({ends[0], ends[1]}, vtk_line, frame_element, member.building,
                     ++n_members[member.building]);
         }
@@ -267,23 +317,18 @@ namespace poundfe
       end.values.assign(6 * n_cells, 0.0);
       for (unsigned int e = 0; e < model.members_3d.size(); ++e) // the first cells
         {
-          const Member3D    &member = model.members_3d[e];
-          const unsigned int n      = member.dofs.size();
-          using Point           = Eigen::Map<const Eigen::Vector3d>;
+          const Member3D &member = model.members_3d[e];
+          using Point            = Eigen::Map<const Eigen::Vector3d>;
           const FrameElement3D element(Point(member.ends[0].data()), Point(member.ends[1].data()),
                                        Point(member.orientation.data()), member.section);
-          Vector12 ue = Vector12::Zero();
-          for (unsigned int i = 0; i < 12; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              if (const int q = model.equation(member.dofs[j]); q >= 0)
-                ue[i] += member.map[i * n + j] * u[q];
-          const Vector12 f = element.local_end_forces(ue);
+          const Vector12 f = element.local_end_forces(member_3d_end_displacements(model, member, u));
           for (unsigned int k = 0; k < 6; ++k)
             {
               start.values[6 * e + k] = f[k];
               end.values[6 * e + k]   = f[6 + k];
             }
         }
+      set_fibre_end_forces(states, start, end);
       FieldArray   force{"force", 1, false, false, std::vector<double>(n_cells, 0.0)};
       FieldArray   contact{"contact", 1, true, false, std::vector<double>(n_cells, 0.0)};
       unsigned int g = 0;
@@ -300,6 +345,55 @@ namespace poundfe
           }
       for (FieldArray *array : {&start, &end, &force, &contact})
         frame.cell.push_back(std::move(*array));
+      add_section_arrays(states, frame);
+    }
+
+    std::size_t
+    VtuGeometry3D::first_member_force(const ElementFrameStates &states) const
+    {
+      constexpr unsigned int n_values = n_section_state_entries + 2; // in space
+      const std::size_t      first    = ElementFrameStates::n_entries * states.kinds.size() +
+                                 n_values * section_points.numbers.size();
+      AssertThrow(states.values.size() == first + 12 * section_members.size(),
+                  dealii::ExcMessage(
+                    "the fibre members' integration points and their drawing differ"));
+      return first;
+    }
+
+    void
+    VtuGeometry3D::set_fibre_end_forces(const ElementFrameStates &states, FieldArray &start,
+                                        FieldArray &end) const
+    {
+      const std::size_t first = first_member_force(states);
+      using Point             = Eigen::Map<const Eigen::Vector3d>;
+      for (std::size_t k = 0; k < section_members.size(); ++k)
+        {
+          const unsigned int   e      = section_members[k];
+          const Member3D      &member = model.members_3d[e];
+          const FrameElement3D element(Point(member.ends[0].data()), Point(member.ends[1].data()),
+                                       Point(member.orientation.data()), member.section);
+          const Vector12 f =
+            element.rotation() * Eigen::Map<const Vector12>(&states.values[first + 12 * k]);
+          for (unsigned int c = 0; c < 6; ++c)
+            {
+              start.values[6 * e + c] = f[c];
+              end.values[6 * e + c]   = f[6 + c];
+            }
+        }
+    }
+
+    void
+    VtuGeometry3D::add_section_arrays(const ElementFrameStates &states, FieldFrame &frame) const
+    {
+      if (section_points.numbers.empty())
+        return;
+      first_member_force(states); // checks the sizes
+      // section_state_values' order in space
+      section_points.add_arrays({"section_N", "section_Mz", "axial_strain", "curvature_z",
+                                 "concrete_strain", "steel_strain_max", "steel_strain_min",
+                                 "section_My", "curvature_y"},
+                                states.values, ElementFrameStates::n_entries * states.kinds.size(),
+                                cells.types.size(), frame);
     }
 
     FieldFrame
@@ -331,6 +425,8 @@ namespace poundfe
           frame.point.push_back(std::move(force));
         }
       frame.cell = cell_id_arrays(cells);
+      if (!section_points.numbers.empty())
+        frame.cell.push_back(section_points.number_array(cells.types.size()));
       if (states != nullptr)
         time_arrays(u, *states, frame);
       return frame;

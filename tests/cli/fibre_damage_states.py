@@ -18,7 +18,13 @@ recorder of the same realizations run one by one:
   column, and each probability of summary.json is the count of realizations
   at that state or worse over the realizations. Crushing is read from the
   most compressed concrete fibre, which bounds the core's: the test stops if
-  that bound cannot decide.
+  that bound cannot decide;
+- `fragility` at PGA levels 0.005 g and 1.2 g, 3 realizations per level: at
+  each level summary.json's damage_states_per_level (the level's PGA, each
+  storey's probability of each state or worse, its failures and
+  realizations) is the count over that level's pga_*/realizations.csv
+  damage state columns, read independently; at 0.005 g every probability is
+  0, at 1.2 g P(yield) of each building's first storey is 1.
 """
 import csv
 import json
@@ -86,6 +92,44 @@ def states_from_sections(out):
     return worst
 
 
+def check_fragility(poundfe, prm, out, failures):
+    """fragility's damage states per level against its realizations' columns."""
+    subprocess.run([poundfe, "fragility", prm, "--output", out, "--set",
+                    "Fragility/PGA levels=0.005, 1.2", "--set",
+                    "Fragility/Realizations per level=3"] + COMMON,
+                   check=True, stdout=subprocess.DEVNULL)
+    levels = json.load(open(os.path.join(out, "summary.json")))["damage_states_per_level"]
+    if [level["pga_g"] for level in levels] != [0.005, 1.2]:
+        failures.append(f"fragility: levels {[level['pga_g'] for level in levels]}")
+        return 0
+    n_rows = 0
+    for level in levels:
+        name = "pga_" + ("%g" % level["pga_g"]) + "g"
+        rows = list(csv.DictReader(open(os.path.join(out, name, "realizations.csv"))))
+        rows = [r for r in rows if r["completed"] == "1"]
+        n_rows += len(rows)
+        storeys = level["storey_damage_states"]
+        if len(storeys) != 7:
+            failures.append(f"fragility {name}: {len(storeys)} storeys, 7 expected")
+        for s in storeys:
+            states = [float(r[s["column"]]) for r in rows]
+            for l, state in enumerate(STATES):
+                count = sum(x >= l + 1 for x in states)
+                p = s[state]
+                if (p["failures"], p["realizations"], p["probability"]) != \
+                        (count, len(rows), count / len(rows)):
+                    failures.append(f"fragility {name}: P({state}) of {s['column']} "
+                                    f"{p['probability']} ({p['failures']} of "
+                                    f"{p['realizations']}), its realizations {count} of "
+                                    f"{len(rows)}")
+                if level["pga_g"] == 0.005 and p["probability"] != 0:
+                    failures.append(f"fragility {name}: {s['column']} P({state}) nonzero")
+                if level["pga_g"] == 1.2 and state == "yield" and \
+                        s["column"].endswith("_storey1_damage_state") and p["probability"] != 1:
+                    failures.append(f"fragility {name}: P(yield) of {s['column']} not 1")
+    return n_rows
+
+
 def main():
     poundfe, prm = sys.argv[1], sys.argv[2]
     failures = []
@@ -131,10 +175,12 @@ def main():
                     failures.append(f"1.2 g: P({state}) of {c} {p['probability']} "
                                     f"({p['failures']}), sections.csv counts {counts[c][l]}")
         seen = {state: sum(counts[c][l] for c in columns) for l, state in enumerate(STATES)}
+        n_fragility = check_fragility(poundfe, prm, os.path.join(work, "fragility"), failures)
     for f in failures[:20]:
         print("FAIL", f)
     print(f"{len(columns)} storeys, {len(rows)} realizations at 1.2 g; storeys x realizations "
-          f"at each state or worse: {seen}; {len(failures)} failures")
+          f"at each state or worse: {seen}; fragility: {n_fragility} realizations over 2 "
+          f"levels; {len(failures)} failures")
     sys.exit(1 if failures else 0)
 
 

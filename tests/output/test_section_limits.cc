@@ -253,3 +253,82 @@ BOOST_AUTO_TEST_CASE(limits_of_the_wrong_sign_are_refused)
   p.finalize(input);
   BOOST_CHECK_EQUAL(p.crushing_strain, -0.018);
 }
+
+BOOST_AUTO_TEST_CASE(first_yield_curvatures_about_both_axes_in_space)
+{
+  // four ElasticPP bars at (y, z) = (+-0.2, +-0.15): at N = 0 the neutral
+  // axes are the centre's by symmetry, so a bar first yields at kappa_z =
+  // (fy / E) / 0.2 bending about z and at kappa_y = (fy / E) / 0.15 about
+  // y, either way; a section read about the wrong axis gives the other
+  FibreGeometry   g;
+  SectionMaterial steel;
+  steel.name = "steel";
+  steel.law  = {"ElasticPP", {{"E", 200e9}, {"epsyP", 450e6 / 200e9}}};
+  g.add_material(steel);
+  g.fibres = {{0.2, 0.15, 1e-3, 0}, {-0.2, 0.15, 1e-3, 0}, {0.2, -0.15, 1e-3, 0},
+              {-0.2, -0.15, 1e-3, 0}};
+  const FibreSection section(g, 4, 1e6);
+  const double       ey = 450e6 / 200e9;
+  for (const int sense : {+1, -1})
+    {
+      BOOST_CHECK_CLOSE(section_yield_curvature(section, 0, ey, sense), ey / 0.2, 1e-6);
+      BOOST_CHECK_CLOSE(section_yield_curvature(section, 0, ey, sense, BendingAxis::y), ey / 0.15,
+                        1e-6);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(yield_curvature_about_y_of_an_rc_section_turned_a_quarter)
+{
+  // the beam's RC rectangle (4 bars on top, 3 below: its yield curvatures
+  // differ with the sense) turned a quarter about the member axis, each
+  // fibre (y, z) to (y', z') = (z, -y): its strain under kappa_y, eps0 +
+  // z' kappa_y = eps0 - y kappa_y, is the original's under kappa_z = kappa_y,
+  // so its first yield about y, either way, is the original's about z, at
+  // any N (the moment-curvature engine finds both)
+  RcRectangle beam = column();
+  beam.depth       = 0.5;
+  beam.width       = 0.3;
+  beam.bars_top    = 4;
+  beam.bars_bottom = 3;
+  const FibreGeometry g = rc_rectangle(beam);
+  FibreGeometry       turned = g;
+  for (Fibre &f : turned.fibres)
+    f = {f.z, -f.y, f.area, f.material};
+  const FibreSection section(g, 4, 1e6), quarter(turned, 4, 1e6);
+  const double       ey = 450e6 / 200e9;
+  for (const double n : {-8e5, 0.0})
+    {
+      const double up   = section_yield_curvature(section, n, ey, +1);
+      const double down = section_yield_curvature(section, n, ey, -1);
+      BOOST_CHECK_GT(std::abs(up / down - 1), 1e-3); // the two senses differ
+      BOOST_CHECK_CLOSE(section_yield_curvature(quarter, n, ey, +1, BendingAxis::y), up, 1e-9);
+      BOOST_CHECK_CLOSE(section_yield_curvature(quarter, n, ey, -1, BendingAxis::y), down, 1e-9);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(ductility_about_each_axis_of_a_section_in_space)
+{
+  // an imposed (eps0, kappa_z, kappa_y, theta) path on a section in space:
+  // the tracker's peaks about y are the path's, its ductility about y the
+  // largest kappa_y / kappa_y+ or -kappa_y / kappa_y-, about z likewise, and
+  // its curvature ductility the larger of the two
+  FibreSection        section(rc_rectangle(column()), 4, 1e6);
+  SectionLimitTracker tracker(section, section_strain_limits(section, SectionLimitParameters()));
+  BOOST_CHECK(tracker.in_space());
+  tracker.set_yield_curvatures(0.010, 0.012);
+  tracker.set_yield_curvatures_y(0.008, 0.009);
+  const double path[][2] = {{0.002, -0.004}, {-0.006, 0.012}, {0.009, -0.018}, {0.001, 0.0}};
+  for (unsigned int k = 0; k < 4; ++k)
+    {
+      SectionVector e(4);
+      e << 0, path[k][0], path[k][1], 0;
+      BOOST_REQUIRE(section.set_trial(e));
+      section.commit();
+      tracker.observe(section, k);
+    }
+  BOOST_CHECK_EQUAL(tracker.peak_curvature_y_positive(), 0.012);
+  BOOST_CHECK_EQUAL(tracker.peak_curvature_y_negative(), -0.018);
+  BOOST_CHECK_CLOSE(tracker.curvature_ductility_z(), std::max(0.009 / 0.010, 0.006 / 0.012), 1e-12);
+  BOOST_CHECK_CLOSE(tracker.curvature_ductility_y(), std::max(0.012 / 0.008, 0.018 / 0.009), 1e-12);
+  BOOST_CHECK_CLOSE(tracker.curvature_ductility(), 0.018 / 0.009, 1e-12);
+}

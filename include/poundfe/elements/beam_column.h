@@ -237,8 +237,10 @@ namespace poundfe
       std::vector<ResultantMatrix> fs;
     };
     /// Iterate from `current` to compatibility with `target`; false (and
-    /// `current` spoiled) when it does not converge.
-    bool iterate(const BasicVector &target);
+    /// `current` spoiled) when it does not converge. `initial`: the
+    /// sections' deformations corrected by their initial flexibility (ten
+    /// times the iterations), OpenSees's fallback.
+    bool iterate(const BasicVector &target, bool initial);
     /// f_s from the section's tangent, its small diagonal raised.
     ResultantMatrix flexibility(unsigned int i) const;
     /// OpenSeesIteration's state determination.

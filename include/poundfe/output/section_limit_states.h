@@ -1,5 +1,6 @@
 // The limit states of a run's fibre members (output/section_limits.h): an
-// observer that follows every integration point of every fibre member
+// observer that follows every integration point of every fibre member,
+// plane or in space (about both bending axes),
 // through the accepted steps and substeps, from the gravity state at t = 0
 // (where each section's yield curvature is found at its own axial force),
 // and reports per member the worst over its sections, and per storey the
@@ -27,12 +28,12 @@ namespace poundfe
     /// The sections of a member and where it stands.
     struct MemberLimits
     {
-      const MemberElement<2>          *element = nullptr;
+      const NonlinearElement          *element = nullptr; // a MemberElement<2> or <3>
       std::string                      label;
       unsigned int                     building = 0, storey = 1; // storey: 1-based
       std::vector<SectionLimitTracker> sections;                 // one per integration point
-      /// Per section: the axial force its kappa_y± were found at (NaN:
-      /// not yet) and the change of it that finds them again.
+      /// Per section: the axial force its kappa_y± (both axes) were found
+      /// at (NaN: not yet) and the change of it that finds them again.
       std::vector<double> yield_axial_force, axial_force_tolerance;
       /// The worst limit over its sections (-1: none).
       int worst_limit() const;

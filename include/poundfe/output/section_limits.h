@@ -1,6 +1,9 @@
 // Limit states of the fibre sections of a member (doc/theory.md §13.5):
 // at each integration point the peak curvature and its ductility
 //   mu_kappa = max(kappa_max / kappa_y+, -kappa_min / kappa_y-),
+// in space about each bending axis (kappa_z and kappa_y, each with its own
+// yield curvatures, found on the section bent about that axis alone) and
+// mu_kappa the larger of the two,
 // kappa_y± the first yield of a bar at the gravity axial force by the
 // moment-curvature engine (sections/moment_curvature.h) bending either way,
 // and the extreme fibre strains against four strain limits, after the
@@ -72,8 +75,18 @@ namespace poundfe
   struct SectionStrainLimits
   {
     std::array<double, n_section_limits> strain;
-    /// kappa_y for positive and negative curvature (1/m, both > 0).
+    /// kappa_y for positive and negative curvature (1/m, both > 0); about
+    /// z in space.
     double yield_curvature_positive = 0, yield_curvature_negative = 0;
+    /// A section in space: the same about its local y axis (0 in the plane).
+    double yield_curvature_y_positive = 0, yield_curvature_y_negative = 0;
+  };
+
+  /// The bending axis of a section in space (the plane's is z).
+  enum class BendingAxis
+  {
+    z,
+    y
   };
 
   /// The section's limits: the parameters' where given, else its own.
@@ -83,9 +96,11 @@ namespace poundfe
   /// -1: negative), by the moment-curvature engine on a clone (the first
   /// yield of a bar at `yield_strain`, the curve stopped there); without a
   /// yield before the curve ends, Priestley et al.'s 2.1 eps_y / h (h: the
-  /// fibres' depth).
+  /// fibres' depth). In space about `axis` (y: the fibres' z taken as
+  /// their depth, kappa_y positive where z > 0 stretches).
   double section_yield_curvature(const FibreSection &section, double axial_force,
-                                 double yield_strain, int sense);
+                                 double yield_strain, int sense,
+                                 BendingAxis axis = BendingAxis::z);
 
   /// EA: the fibres' areas times their laws' initial moduli (the scale of
   /// the axial force that moves kappa_y, SectionLimitStates).
@@ -124,15 +139,26 @@ namespace poundfe
     /// the current axial force: SectionLimitStates::follow_axial_force);
     /// the states observed from now on are measured against them.
     void set_yield_curvatures(double positive, double negative);
+    /// The same about y (a section in space).
+    void set_yield_curvatures_y(double positive, double negative);
 
     const SectionStrainLimits &limits() const { return strain_limits; }
     double peak_curvature_positive() const { return kappa_max; }
     double peak_curvature_negative() const { return kappa_min; }
+    /// About y (a section in space; 0 in the plane).
+    double peak_curvature_y_positive() const { return kappa_y_max; }
+    double peak_curvature_y_negative() const { return kappa_y_min; }
     /// mu_kappa: the largest over the states observed of kappa / kappa_y+
     /// and -kappa / kappa_y-, each with the yield curvatures set when it
     /// was observed (fixed ones: max(kappa_max / kappa_y+, -kappa_min /
-    /// kappa_y-)); NaN without yield curvatures (no bars).
+    /// kappa_y-)); in space the larger of the two axes'; NaN without yield
+    /// curvatures (no bars).
     double curvature_ductility() const;
+    /// Whether the section is in space (N, Mz, My, T).
+    bool in_space() const { return space; }
+    /// About z alone, and about y alone (NaN in the plane).
+    double curvature_ductility_z() const;
+    double curvature_ductility_y() const;
     /// The peak extreme strains (concrete, core, steel_min most negative).
     const ExtremeStrains &peaks() const { return peak; }
     /// The peak demand of limit l over its limit strain (NaN: not checked).
@@ -150,6 +176,8 @@ namespace poundfe
     std::vector<FibreKind>               kinds;
     SectionStrainLimits                  strain_limits;
     double                               kappa_max = 0, kappa_min = 0, ductility = 0;
+    double                               kappa_y_max = 0, kappa_y_min = 0, ductility_y = 0;
+    bool                                 space = false; // a section in space
     ExtremeStrains                       peak, previous;
     double                               previous_time = 0;
     bool                                 started       = false;

@@ -35,6 +35,13 @@ namespace poundfe
   using SectionStateEntries = std::array<double, n_section_state_entries>;
   SectionStateEntries section_state_entries(const FibreSection          &section,
                                             const std::vector<FibreKind> &kinds);
+
+  /// A section in space adds My and kappa_y to the entries above: the
+  /// number of values of section_state_values, 7 in the plane, 9 in space.
+  unsigned int n_section_state_values(const FibreSection &section);
+  /// The entries above, then (in space) My and kappa_y, written to `to`.
+  void section_state_values(const FibreSection &section, const std::vector<FibreKind> &kinds,
+                            double *to);
 } // namespace poundfe
 
 #endif

@@ -25,7 +25,10 @@
 //            d_j at p_j: V = Σ F_j d_j, T = Σ (p_j - C) × F_j d_j;
 // V_x is the storey shear above (as in 2D, along x).
 // Member end forces are the local (N, V, M) at both ends of a whole member
-// (its first and last element when it is split), Przemieniecki (1968) ch. 5.
+// (its first and last element when it is split), Przemieniecki (1968) ch. 5;
+// a 3D member's the local (N, Vy, Vz, T, My, Mz) at both ends. A fibre
+// member's are its element's resisting forces (not K_e u, wrong once it
+// cracks).
 #ifndef poundfe_output_storey_forces_h
 #define poundfe_output_storey_forces_h
 
@@ -57,10 +60,14 @@ namespace poundfe
     /// Index of storey s (0-based) of building b in that layout.
     unsigned int index(unsigned int b, unsigned int s) const { return first[b] + s; }
 
-    /// The whole members with this label (A3_C1.2); empty if none.
+    /// The whole members with this label (A3_C1.2, a 3D frame's A_C1.1.2); empty if none.
     bool has_member(const std::string &label) const;
     /// Local end forces (N1, V1, M1, N2, V2, M2) of the labelled member.
     Vector6 member_end_forces(const std::string &label, const Vector &u) const;
+    /// Local end forces (N, Vy, Vz, T, My, Mz at end 1, then at end 2) of
+    /// the labelled 3D member.
+    Eigen::Matrix<double, 12, 1> member_end_forces_3d(const std::string &label,
+                                                      const Vector &u) const;
 
   private:
     struct CutElement
@@ -106,9 +113,17 @@ namespace poundfe
     Eigen::Matrix<double, 12, 1> fibre_member_forces_3d(int e) const;
     /// How many 3D fibre members' elements follow the plane ones.
     int member_elements_3d = 0;
+    /// The nonlinear element of each 3D member (model.members_3d order;
+    /// -1: an elastic member).
+    std::vector<int> member_3d_elements;
     std::vector<unsigned int> first;
     std::vector<Storey>       storeys;
   };
+
+  /// The 12 global end displacements of a 3D member, u_e = T q (its map
+  /// over the model DOFs; fixed DOFs give 0).
+  Eigen::Matrix<double, 12, 1> member_3d_end_displacements(const Model &model, const Member3D &member,
+                                                           const Vector &u);
 
   /// The largest |base shear| V_1 of every building over a run and when it
   /// occurred, at every step and sub-step (summary.json, whatever the

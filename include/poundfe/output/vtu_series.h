@@ -60,10 +60,11 @@ namespace poundfe
   /// whether it is active, and for a contact in plan whether it is in
   /// reach, its contact point and its force on its first side. After the
   /// n_entries of every element, `values` holds the section state entries
-  /// (output/section_states.h) of every integration point of each member
-  /// on fibre sections, member after member in the elements' order, and
-  /// then the six global resisting forces of each such member, in the same
-  /// order (those of an element not observed: 0; a run over ranks has no
+  /// (output/section_states.h: section_state_values, 7 in the plane, 9 in
+  /// space) of every integration point of each member on fibre sections,
+  /// member after member in the elements' order, and then the global
+  /// resisting forces of each such member (6 in the plane, 12 in space), in
+  /// the same order (those of an element not observed: 0; a run over ranks has no
   /// fibre members).
   struct ElementFrameStates
   {
