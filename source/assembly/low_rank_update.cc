@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace poundfe
 {
@@ -57,6 +58,9 @@ namespace poundfe
     column_buffer.resize(n_rows);
     w_buffer.resize(n_rows);
     active.reserve(m);
+    pivot.reserve(m);
+    factored_active.reserve(m);
+    factored = false; // a new A: new W and G
     is_active.assign(m, 0);
     slot_of.assign(m, -1);
     column_in.assign(n_slots, -1);
@@ -163,6 +167,8 @@ namespace poundfe
     // are d G and d b^T y exactly.
     for (unsigned int a = 0; a < k; ++a)
       bty[a] = column_dot(active[a], y);
+    // one column: its elimination costs less than the comparison
+    const bool reuse = k > 1 && reuses_capacitance(d);
     for (unsigned int a = 0; a < k; ++a)
       {
         const unsigned int c = active[a], e = column_block[c];
@@ -174,6 +180,8 @@ namespace poundfe
         for (unsigned int j = 1; j < size; ++j)
           rhs += D[i + j * size] * bty[first + j];
         rhs_small[a] = rhs;
+        if (reuse)
+          continue;
         if (size == 1) // the common case, kept lean
           {
             const int row = slot_of[c];
@@ -190,17 +198,41 @@ namespace poundfe
               S(a, b) = (a == b ? 1.0 : 0.0) + value;
             }
       }
-    solve_capacitance(k);
+    if (!reuse)
+      {
+        factor_capacitance(k);
+        factored = k > 1; // what one column overwrote is no longer the LU noted
+      }
+    substitute_capacitance(k);
     x = y;
     for (unsigned int a = 0; a < k; ++a)
       x.noalias() -= rhs_small[a] * W.col(slot_of[active[a]]);
     return true;
   }
 
-  void
-  LowRankUpdateSolver::solve_capacitance(const unsigned int k)
+  bool
+  LowRankUpdateSolver::reuses_capacitance(const std::vector<double> &d)
   {
-    // in place in the leading k x k block of the preallocated S
+    // bit for bit (memcmp, not ==: -0 and NaN too), so that the reused LU is
+    // the one the elimination would form again
+    if (factored && factored_columns == columns_computed && factored_active == active &&
+        factored_d.size() == d.size() &&
+        std::memcmp(factored_d.data(), d.data(), d.size() * sizeof(double)) == 0)
+      return true;
+    factored = false; // until solve has factorised S for them
+    factored_active.assign(active.begin(), active.end());
+    factored_d.assign(d.begin(), d.end());
+    factored_columns = columns_computed;
+    return false;
+  }
+
+  void
+  LowRankUpdateSolver::factor_capacitance(const unsigned int k)
+  {
+    // in place in the leading k x k block of the preallocated S; a row
+    // swap moves only the columns from j on (those left of j are
+    // multipliers, kept where their step found them for the substitution)
+    pivot.resize(k);
     for (unsigned int j = 0; j < k; ++j)
       {
         unsigned int p = j;
@@ -210,22 +242,33 @@ namespace poundfe
         if (!(std::abs(S(p, j)) > 0))
           throw NumericalError("the tangent matrix is singular (Woodbury capacitance "
                                "matrix has a zero pivot)");
+        pivot[j] = p;
         if (p != j)
-          {
-            for (unsigned int c = 0; c < k; ++c)
-              std::swap(S(j, c), S(p, c));
-            std::swap(rhs_small[j], rhs_small[p]);
-          }
+          for (unsigned int c = j; c < k; ++c)
+            std::swap(S(j, c), S(p, c));
         const double inverse_pivot = 1.0 / S(j, j);
         for (unsigned int i = j + 1; i < k; ++i)
           {
             const double f = S(i, j) * inverse_pivot;
+            S(i, j)        = f;
             if (f == 0)
               continue;
             for (unsigned int c = j + 1; c < k; ++c)
               S(i, c) -= f * S(j, c);
-            rhs_small[i] -= f * rhs_small[j];
           }
+      }
+  }
+
+  void
+  LowRankUpdateSolver::substitute_capacitance(const unsigned int k)
+  {
+    for (unsigned int j = 0; j < k; ++j)
+      {
+        if (pivot[j] != j)
+          std::swap(rhs_small[j], rhs_small[pivot[j]]);
+        for (unsigned int i = j + 1; i < k; ++i)
+          if (const double f = S(i, j); f != 0)
+            rhs_small[i] -= f * rhs_small[j];
       }
     for (int i = k - 1; i >= 0; --i)
       {

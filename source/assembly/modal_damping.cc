@@ -108,6 +108,19 @@ namespace poundfe
   {
     if (damping.empty())
       return;
+    // D U^T v on the stack up to a few dozen modes: a Newmark step calls this
+    // two or three times and allocates nothing. The same products as
+    // weights.cwiseProduct(U^T v) into a heap temporary, so the same bits.
+    constexpr int max_stack_modes = 32;
+    if (damping.weights.size() <= max_stack_modes)
+      {
+        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, max_stack_modes, 1> modal(
+          damping.weights.size());
+        modal.noalias() = damping.factor.transpose() * v;
+        modal.array() *= damping.weights.array();
+        out.noalias() += damping.factor * modal;
+        return;
+      }
     const Vector modal = damping.weights.cwiseProduct(damping.factor.transpose() * v);
     out.noalias() += damping.factor * modal;
   }

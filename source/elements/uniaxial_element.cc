@@ -68,6 +68,27 @@ namespace poundfe
     return law->set_trial(trial_deformation, local_deformation(v));
   }
 
+  bool
+  UniaxialElement::evaluate(const int *equations, const Eigen::VectorXd &u,
+                            const Eigen::VectorXd &v, const double damping_factor, double *f,
+                            double &d)
+  {
+    double deformation = 0, rate = 0; // as local_deformation of the gathered u and v
+    for (const unsigned int i : free_dofs)
+      {
+        deformation += signs[i] * u[equations[i]];
+        rate += signs[i] * v[equations[i]];
+      }
+    trial_deformation = deformation;
+    if (!law->set_trial(deformation, rate))
+      return false;
+    const double correction = law->force() - reference_stiffness * trial_deformation;
+    for (unsigned int i = 0; i < signs.size(); ++i)
+      f[i] = signs[i] * correction;
+    d = law->tangent() - reference_stiffness + damping_factor * law->damping_tangent();
+    return true;
+  }
+
   std::string
   UniaxialElement::failure() const
   {

@@ -2,6 +2,7 @@
 #include <poundfe/assembly/low_rank_update.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
+#include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/integration/accuracy_substeps.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/assembly/modal_damping.h>
@@ -51,6 +52,32 @@ namespace poundfe
       }
     };
 
+    /// local_u[q], local_v[q] = u[i], v[i] of the local DOFs q in [first,
+    /// end), i = local_equation[q]; 0 on the ground (i < 0).
+    void
+    gather_dofs(const unsigned int first, const unsigned int end,
+                const std::vector<int> &local_equation, const Vector &u, const Vector &v,
+                Vector &local_u, Vector &local_v)
+    {
+      for (unsigned int q = first; q < end; ++q)
+        if (const int i = local_equation[q]; i >= 0)
+          {
+            local_u[q] = u[i];
+            local_v[q] = v[i];
+          }
+        else
+          local_u[q] = local_v[q] = 0.0;
+    }
+
+    /// Why `element` refused its trial state, for a failure message.
+    std::string
+    refusal_text(const NonlinearElement &element)
+    {
+      const std::string why = element.failure();
+      return element.label + ": " +
+             (why.empty() ? "the element refused its trial state (it gave no reason)" : why);
+    }
+
     /// "equation 12, A3 (6, 3) ux" for a message.
     /// The first equation whose entry of `x` is not finite, -1 if none.
     Eigen::Index
@@ -84,6 +111,11 @@ namespace poundfe
     /// p at the end of a step of this size; the sub-steps of a cut step
     /// use their own level's, so it stays valid across them.
     Vector load_end;
+    /// Element h as the concrete UniaxialElement it is, else null: the
+    /// element loop evaluates these through UniaxialElement::evaluate, with
+    /// no virtual call of the element's own (the same elements at every
+    /// level; each level lists them once, when it is made).
+    std::vector<UniaxialElement *> uniaxial;
     /// The frozen tangent K_0 = K_eff + sum_e B_e D_0,e B_e^T of every
     /// method but newton: D_0 (laid out as tangent_change), whether it is
     /// set, whether the assembled K_0 is the factorisation held (the
@@ -272,6 +304,8 @@ namespace poundfe
     set_coefficients(*L, parameters.time_step / std::ldexp(1.0, cuts));
     assemble_effective_matrix(*L);
     L->solver = new_linear_solver(*L);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      L->uniaxial.push_back(dynamic_cast<UniaxialElement *>(&(*elements)[h]));
     // every step size has K_eff's pattern: one symbolic analysis where the
     // backend can share it (UMFPACK)
     stats.shared_analyses +=
@@ -515,36 +549,37 @@ namespace poundfe
   void
   NewmarkIntegrator::gather(const Vector &u_global, const Vector &v_global)
   {
-    for (unsigned int q = 0; q < local_equation.size(); ++q)
-      if (const int i = local_equation[q]; i >= 0)
-        {
-          local_u[q] = u_global[i];
-          local_v[q] = v_global[i];
-        }
-      else
-        local_u[q] = local_v[q] = 0.0;
+    gather_dofs(0, local_equation.size(), local_equation, u_global, v_global, local_u, local_v);
   }
 
   bool
   NewmarkIntegrator::evaluate_elements(const Vector &u_trial, const Vector &v_trial,
                                        const Level &L)
   {
-    gather(u_trial, v_trial);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
-        NonlinearElement  &e = (*elements)[h];
         const unsigned int s = dof_start[h], k = dof_start[h + 1] - s, r = basis[h].cols();
-        if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
+        bool               accepted = false;
+        if (UniaxialElement *const typed = L.uniaxial[h]) // no gather, no virtual call
+          accepted = typed->evaluate(local_equation.data() + s, u_trial, v_trial, L.c_damp_u,
+                                 correction.data() + s, tangent_change[d_start[h]]);
+        else
           {
-            const std::string why = e.failure();
-            failure = e.label + ": " +
-                      (why.empty() ? "the element refused its trial state (it gave no reason)" :
-                                     why);
+            NonlinearElement &e = (*elements)[h];
+            gather_dofs(s, s + k, local_equation, u_trial, v_trial, local_u, local_v);
+            accepted = e.set_trial(local_u.segment(s, k), local_v.segment(s, k));
+            if (accepted)
+              {
+                e.force_correction(correction.segment(s, k));
+                e.tangent_change(
+                  L.c_damp_u, Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h], r, r));
+              }
+          }
+        if (!accepted)
+          {
+            failure = refusal_text((*elements)[h]);
             return false;
           }
-        e.force_correction(correction.segment(s, k));
-        e.tangent_change(L.c_damp_u,
-                         Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h], r, r));
       }
     return true;
   }

@@ -134,3 +134,61 @@ BOOST_AUTO_TEST_CASE(woodbury_solve_with_nonsymmetric_blocks_matches_dense_lu)
         }
     }
 }
+
+BOOST_AUTO_TEST_CASE(woodbury_solve_reusing_its_capacitance_matrix_is_a_fresh_solve)
+{
+  // A solve whose active blocks of D are those of the last one to the bit
+  // reuses the LU of I + D_a G_aa (modal damping's constant D, a linear
+  // law's tangent at every iteration). Against a fresh solver (no LU to
+  // reuse) on the same A: the same x to the bit, whatever came before: the
+  // same d again, a changed d, an inactive block, d back to an earlier one,
+  // one active column in between (its elimination overwrites S);
+  // and within 1e-8 of a dense LU of A + B D B^T, as above.
+  const Analysis     analysis = prepare_analysis(read_parameters("input/two-buildings.prm"));
+  const SparseMatrix A        = analysis.system.stiffness + 1e4 * analysis.system.mass;
+  const unsigned int n        = A.rows();
+  std::mt19937       random(23);
+  std::uniform_int_distribution<int> row(0, n - 1);
+  std::uniform_real_distribution<>   unit(-1, 1);
+  std::vector<SparseColumn>          columns(6);
+  for (unsigned int h = 0; h < columns.size(); ++h)
+    columns[h] = SparseColumn{{row(random), h % 3 == 0 ? -1 : row(random)}, {1.0, -1.0}};
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, columns.size());
+  for (unsigned int h = 0; h < columns.size(); ++h)
+    for (unsigned int i = 0; i < 2; ++i)
+      if (columns[h].rows[i] >= 0)
+        B(columns[h].rows[i], h) += columns[h].values[i];
+  const double        scale = A.diagonal().maxCoeff();
+  std::vector<double> first(columns.size()), second(columns.size()), single(columns.size());
+  for (unsigned int h = 0; h < columns.size(); ++h)
+    {
+      first[h]  = 0.3 * scale * unit(random);
+      second[h] = h == 2 ? 0.0 : 0.3 * scale * unit(random); // one block inactive
+    }
+  single[4] = first[4]; // one active column, eliminated afresh: not the LU of `first`
+  auto solver = create_linear_solver("eigen-ldlt");
+  solver->analyze_and_factorize(A);
+  LowRankUpdateSolver reused;
+  reused.initialize(*solver, columns, n);
+  const std::vector<const std::vector<double> *> sequence{&first, &first, &second, &second,
+                                                          &first, &single, &first, &first};
+  for (unsigned int call = 0; call < sequence.size(); ++call)
+    {
+      const std::vector<double> &d = *sequence[call];
+      Vector r(n);
+      for (unsigned int i = 0; i < n; ++i)
+        r[i] = unit(random);
+      LowRankUpdateSolver fresh;
+      fresh.initialize(*solver, columns, n);
+      Vector x, expected;
+      BOOST_REQUIRE(reused.solve(r, d, x));
+      BOOST_REQUIRE(fresh.solve(r, d, expected));
+      BOOST_TEST_INFO("call " << call);
+      BOOST_TEST((x.array() == expected.array()).all()); // to the bit
+      Eigen::MatrixXd D = Eigen::MatrixXd::Zero(columns.size(), columns.size());
+      for (unsigned int h = 0; h < d.size(); ++h)
+        D(h, h) = d[h];
+      const Vector dense = (Eigen::MatrixXd(A) + B * D * B.transpose()).partialPivLu().solve(r);
+      BOOST_TEST((x - dense).norm() / dense.norm() < 1e-8); // as above
+    }
+}

@@ -8,7 +8,8 @@
 // active blocks (those with any nonzero entry). The form with I + D G
 // (rather than D^{-1} + G) stays valid when some D_e are singular, vanish
 // or change sign. Per call: one solve with A and a dense LU of size
-// sum_a r_e; nothing is allocated.
+// sum_a r_e, the LU kept while the active blocks of D stay the same to the
+// bit; nothing is allocated.
 // With many elements, W (n x m, dense) would not fit: then at most
 // `max_columns` columns of W (and their entries of G) are kept, each
 // computed the first time its block is active (one solve with A), and a
@@ -67,9 +68,18 @@ namespace poundfe
     /// Column c of W into `slot`, with its entries of G against the
     /// columns in the other slots.
     void   compute_column(unsigned int c, unsigned int slot);
+    /// Whether S's factorisation is that of the active blocks of `d` (the
+    /// same active columns, slots and entries: modal damping's constant D,
+    /// a linear law's tangent at every iteration); else notes them, and the
+    /// caller sets `factored` once it has factorised S for them.
+    bool   reuses_capacitance(const std::vector<double> &d);
     /// Gaussian elimination with partial pivoting of the leading k x k
-    /// block of S, applied to rhs_small, which becomes z.
-    void   solve_capacitance(unsigned int k);
+    /// block of S: the multipliers below its diagonal, the pivot rows in
+    /// `pivot`.
+    void   factor_capacitance(unsigned int k);
+    /// The elimination's steps applied to rhs_small, in the order the
+    /// elimination made them, and the back substitution: rhs_small becomes z.
+    void   substitute_capacitance(unsigned int k);
 
     LinearSolver *base = nullptr;
     // B in compressed columns: column c's entries are [column_start[c], column_start[c + 1]).
@@ -86,6 +96,11 @@ namespace poundfe
     std::vector<int>          slot_of, column_in;
     std::vector<char>         is_active;
     unsigned long             columns_computed = 0;
+    // S's factorisation: its pivot rows, and what it was formed from
+    std::vector<unsigned int> pivot, factored_active;
+    std::vector<double>       factored_d;
+    unsigned long             factored_columns = 0;
+    bool                      factored         = false;
   };
 } // namespace poundfe
 

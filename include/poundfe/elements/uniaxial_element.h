@@ -62,6 +62,16 @@ namespace poundfe
       return law->contact_duration(closing_rate);
     }
 
+    /// set_trial, force_correction and tangent_change in one call that is
+    /// not virtual (the integrator's loop over its uniaxial elements: no
+    /// virtual call per element per iteration but the law's): the local
+    /// DOFs read from the global u and v through `equations` (those of
+    /// equations(), -1 the ground), f_e - K_ref,e u_e into f (n_dofs()
+    /// entries), D_e into d. The same operations in the same order as the
+    /// three calls, so the same bits. False as set_trial.
+    bool evaluate(const int *equations, const Eigen::VectorXd &u, const Eigen::VectorXd &v,
+                  double damping_factor, double *f, double &d);
+
     double force() const override { return law->force(); }
     double deformation(const Eigen::VectorXd &u) const override;
     double history_variable() const override { return law->history_variable(); }
