@@ -603,6 +603,10 @@ namespace poundfe
               p.values[syntax->parameters[i]] = values[i];
             if (type == "ElasticPPGap")
               warn_eppgap_signs(s.warnings, p);
+            // OpenSees's Steel02(tag, Fy, E0, b) takes R0 = 15, where
+            // poundfe's law defaults to 20 (cR1 and cR2 agree)
+            if (type == "Steel02" && values.size() == 3)
+              p.values["R0"] = 15.0;
             if (type == "ViscousDamper" && p.values.at("Alpha") < 0)
               {
                 s.warnings << "ViscousDamper::ViscousDamper -- Alpha < 0.0, setting to 1.0\n";

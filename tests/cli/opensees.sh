@@ -377,4 +377,35 @@ printf 'model basic -ndm 1 -ndf 1\nuniaxialMaterial ElasticPPGap 1 4.0e6 6.0e3 -
   || { cat "$work/eppgap-signs/err"; fail "eppgap-signs: exit status"; }
 grep -qxF "EPPGapMaterial::EPPGapMaterial -- Alternate signs on fy and gap encountered, continuing anyway" \
   "$work/eppgap-signs/err" || { cat "$work/eppgap-signs/err"; fail "eppgap-signs: no warning"; }
+# Steel02 with three values is OpenSees's Steel02(tag, Fy, E0, b): R0 = 15,
+# cR1 0.925, cR2 0.15 (poundfe's own law defaults to R0 = 20). Loaded into
+# the transition (1.02 fy, where R moves the strain by 4.9e-5 of it), it
+# matches the explicit 15 0.925 0.15 exactly and not the explicit 20
+mkdir -p "$work/steel02-default"
+cat > "$work/steel02-default/s.tcl" <<'TCL'
+model basic -ndm 1 -ndf 1
+node 1 0.0
+fix 1 1
+set n 2
+foreach extra {{} {15.0 0.925 0.15} {20.0 0.925 0.15}} {
+    node $n 0.0
+    eval uniaxialMaterial Steel02 $n 100.0 3000.0 0.02 $extra
+    element zeroLength $n 1 $n -mat $n -dir 1
+    incr n
+}
+pattern Plain 1 Linear { load 2 102.0; load 3 102.0; load 4 102.0 }
+test NormDispIncr 1.0e-14 50
+algorithm Newton
+integrator LoadControl 0.1
+analysis Static
+analyze 10
+puts [format "steel02 %.15g %.15g %.15g" [nodeDisp 2 1] [nodeDisp 3 1] [nodeDisp 4 1]]
+TCL
+"$poundfe" opensees "$work/steel02-default/s.tcl" > "$work/steel02-default/out" 2>&1 \
+  || { cat "$work/steel02-default/out"; fail "steel02-default: exit status"; }
+"$python" - "$work/steel02-default/out" <<'PY' || fail "steel02-default: R0"
+import sys
+three, fifteen, twenty = (float(v) for v in open(sys.argv[1]).read().split("steel02")[1].split())
+assert three == fifteen and abs(three - twenty) > 1e-6 * abs(three), (three, fifteen, twenty)
+PY
 echo "opensees: ok"

@@ -14,7 +14,9 @@
 #     case in its CASES: 1e-10 of the peak linear, 1e-6 nonlinear, 1e-9 for
 #     the frame with committed-stiffness damping, HHT, NewtonLineSearch
 #     (whose searches' etas are compared too), KrylovNewton, BFGS, element
-#     loads and a beam's end displacements imposed by sp);
+#     loads and a beam's end displacements imposed by sp; ViscousDamper,
+#     Series, twoNodeLink and the 3D beam-columns); a kept value moved by
+#     1e-8 of its peak must fail that check;
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration, a line search other than
 #     InitialInterpolated, HHT's alpha outside (0, 1] or an infinite number,
@@ -178,6 +180,24 @@ grep -q "homogeneous constraint assumed" "$work/sp.out" || fail "sp Plain: no wa
   "$work/vs" > "$work/vs.log" 2>&1 || { cat "$work/vs.log"; fail "against OpenSees 3.8's numbers"; }
 files=$(find "$corpus/reference" -type f | wc -l)
 grep -c '^ok ' "$work/vs.log" | grep -qx "$files" || { cat "$work/vs.log"; fail "not every file compared"; }
+# the check can fail: one of OpenSees's kept values (the pounding pair's
+# largest displacement with Viscous) moved by 1e-8 of its column's peak, ten
+# times that case's tolerance, is reported by name
+mkdir -p "$work/perturbed"
+cp -r "$corpus/reference/pounding_Viscous" "$work/perturbed/"
+"$python" - "$work/perturbed/pounding_Viscous/pounding_Viscous.out" <<'PY' || fail "perturbing a reference"
+import sys
+import numpy as np
+table = np.loadtxt(sys.argv[1], ndmin=2)
+row, col = np.unravel_index(np.abs(table[:, 1:]).argmax(), table[:, 1:].shape)
+table[row, col + 1] *= 1 + 1e-8
+np.savetxt(sys.argv[1], table, fmt="%.12g")
+PY
+"$python" "$here/../../bench/opensees/compare.py" "$poundfe" --check "$work/perturbed" \
+  "$work/vs-perturbed" > "$work/perturbed.log" 2>&1 \
+  && { cat "$work/perturbed.log"; fail "a perturbed reference value passed"; }
+grep -q '^FAIL pounding_Viscous/pounding_Viscous.out' "$work/perturbed.log" \
+  || { cat "$work/perturbed.log"; fail "the perturbed file not named"; }
 
 # 5. OpenSees's script of a 3D RC frame (bench/opensees/fibre_frame_3d/frame.tcl:
 #    rigidDiaphragm, forceBeamColumn on 3D fibre sections, PDelta with vecxz) against
