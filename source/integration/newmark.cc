@@ -995,6 +995,7 @@ namespace poundfe
     // gaps and disagree at the ghost equations).
     set_start_residual(L, p);
     double first_residual = 0, first_energy = 0, previous_norm = 0;
+    bool   onset_corrected = false;
     const bool extrapolated = records.friction_elements().empty() && !distribution &&
                               newton.contact_onset_from_acceleration &&
                               start_from_extrapolation(records, *elements, L.dt, v, a,
@@ -1061,8 +1062,16 @@ namespace poundfe
           first_energy = std::abs(dot_of(increment, residual));
         if (newton.line_search)
           search_line(L, it);
-        if (extrapolated) // a gap closing in the step not reopened (theory §3.7a)
-          increment *= onset_correction_length(records, *elements, step_displacement, increment);
+        // a gap closing in the step not reopened, once per step: repeated, a
+        // step whose gap really ends open would approach it by sixteenths
+        // (theory §3.7a)
+        if (extrapolated && !onset_corrected)
+          {
+            const double length =
+              onset_correction_length(records, *elements, step_displacement, increment);
+            onset_corrected = length < 1;
+            increment *= length;
+          }
         if (method == NonlinearSolver::krylov_newton || method == NonlinearSolver::automatic)
           krylov.record_step(increment);
         if (method == NonlinearSolver::bfgs)

@@ -164,8 +164,10 @@ namespace poundfe
                       "Inside a contact episode Newton then starts from u + h v + h^2 a / 2 "
                       "(its tolerances still relative to the step from u), and a correction "
                       "that would open again a gap closing in the step lands it at a sixteenth "
-                      "of its penetration instead (theory §3.7a). false: the constant rate "
-                      "alone, Newton from u. Unit: -.");
+                      "of its penetration instead, once per step (theory §3.7a); the start "
+                      "and correction are skipped with friction or a partitioned run; no "
+                      "effect with dopri or Contact/Model = nonsmooth. false: the constant "
+                      "rate alone, Newton from u. Unit: -.");
     prm.add_parameter("End time", end_time,
                       "s; 0: the length of the ground motion. Unit: s.");
     prm.add_parameter("Maximum number of steps", max_steps,
