@@ -244,10 +244,6 @@ namespace poundfe::commands
     RecordSuite    suite    = read_record_suite(input.resolve(ida.suite), "IDA/Suite");
     const Analysis analysis = prepare_analysis(input);
     IdaRunner      runner(analysis, time_history_parameters(input), ida, std::move(suite));
-    const std::vector<std::string> warnings = ignored_ground_motion_entries(input, "ida");
-    if (rank == 0)
-      for (const std::string &w : warnings)
-        std::cerr << "poundfe: warning: " << w << "\n";
     if (rank == 0 && !run.memory) // the rounds of an earlier run stay: it resumes from them
       prepare_output_directory(directory, {"realizations.csv"});
     timer.leave_subsection();
@@ -283,8 +279,6 @@ namespace poundfe::commands
     write_collapse_margin(runner, result, ida, json, run.out);
     std::vector<std::string> tables;
     write_ida_demand_tables(run, analysis.model, runner, result, ida, json, run.out, tables);
-    if (!warnings.empty())
-      json.value("warnings", warnings);
     json.end_object();
     const std::string measure = intensity_measure_names().name(ida.measure) + " (" +
                                 intensity_unit(ida.measure) + ")";

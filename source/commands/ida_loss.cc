@@ -1,6 +1,5 @@
-// The demand tables of `poundfe ida` and `poundfe msa` (msa: stripes and cloud),
-// the collapse margin of `poundfe ida` and the warnings of both for the Ground
-// motion entries they ignore (commands/ida_loss.h).
+// The demand tables of `poundfe ida` and `poundfe msa` (msa: stripes and cloud)
+// and the collapse margin of `poundfe ida` (commands/ida_loss.h).
 #include "ida_loss.h"
 
 #include <poundfe/assessment/collapse_margin.h>
@@ -14,7 +13,6 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -139,21 +137,5 @@ namespace poundfe::commands
         << (m.passes_20 ? "passes" : (m.lower_bound ? "not shown" : "fails")) << ", "
         << rounded(m.acceptable_10) << " (10 %, a group's mean): "
         << (m.passes_10 ? "passes" : (m.lower_bound ? "not shown" : "fails")) << "\n";
-  }
-
-  std::vector<std::string>
-  ignored_ground_motion_entries(const InputFile &input, const std::string &command)
-  {
-    std::vector<std::pair<int, std::string>> written; // (line, path): the file's order
-    for (const auto &[path, line] : input.lines)
-      if (path.rfind("Ground motion/", 0) == 0 && path != "Ground motion/Incidence angle")
-        written.emplace_back(line, path);
-    std::sort(written.begin(), written.end());
-    std::vector<std::string> warnings;
-    for (const auto &[line, path] : written)
-      warnings.push_back(input.warning(path, "has no effect on " + command +
-                                               ": it shakes the model with the records of "
-                                               "IDA/Suite alone"));
-    return warnings;
   }
 } // namespace poundfe::commands

@@ -44,12 +44,6 @@ namespace poundfe::commands
                                const IdaParameters &ida, JsonWriter &json, std::ostream &out,
                                std::vector<std::string> &files);
 
-  /// A warning for each Ground motion entry written (in the file, or by an
-  /// override) but the incidence angle, in the order of the file: `command`
-  /// (ida, msa) shakes the model with the records of IDA/Suite alone.
-  std::vector<std::string> ignored_ground_motion_entries(const InputFile &input,
-                                                         const std::string &command);
-
   /// summary.json's "collapse_margin" and the report's lines, when
   /// IDA/Collapse margin/MCE spectral acceleration is given.
   void write_collapse_margin(const IdaRunner &runner, const IdaResult &result,

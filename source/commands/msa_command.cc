@@ -339,11 +339,9 @@ namespace poundfe::commands
         write_result_text(run.memory, run.directory, "journal/" + name, text);
       const auto counts = count_stripes(result, states);
       write_stripes(run, states, counts, stripes);
-      std::vector<std::string>       rates;
+      std::vector<std::string>       warnings;
       const std::vector<FittedState> fits =
-        write_fragilities(run, states, counts, stripes, result, rates);
-      std::vector<std::string> warnings = ignored_ground_motion_entries(input, "msa");
-      warnings.insert(warnings.end(), rates.begin(), rates.end());
+        write_fragilities(run, states, counts, stripes, result, warnings);
       std::optional<CloudFit> cloud;
       if (input.msa.cloud && !result.cloud.empty())
         cloud = write_cloud(run, runner, result, input);
@@ -374,7 +372,7 @@ namespace poundfe::commands
         }
       if (!warnings.empty())
         json.value("warnings", warnings);
-      for (const std::string &w : rates) // the entries' ones: on stderr at the start
+      for (const std::string &w : warnings)
         run.out << "warning: " << w << "\n";
       json.end_object();
       if (input.output.plots && !result.counters.interrupted && !run.memory)
@@ -401,9 +399,6 @@ namespace poundfe::commands
     const Analysis analysis = prepare_analysis(input);
     IdaRunner      runner(analysis, time_history_parameters(input), input.ida, std::move(suite));
     input.msa.parse_limit_states(input, runner.demand_names()); // refused before any run
-    if (rank == 0)
-      for (const std::string &w : ignored_ground_motion_entries(input, "msa"))
-        std::cerr << "poundfe: warning: " << w << "\n";
     if (rank == 0 && !run.memory) // the journal of an earlier run stays: it resumes from it
       prepare_output_directory(run.directory, {"realizations.csv"});
     timer.leave_subsection();

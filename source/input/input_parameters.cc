@@ -71,6 +71,33 @@ namespace poundfe
       return "";
     }
 
+    /// The entry set on `line` of `file`, a .prm file the input includes
+    /// (its name as the include names it: from the working directory, or
+    /// the input's), its paths as written there; "" when it cannot be read.
+    std::string
+    entry_on_included_line(const InputFile &p, const std::string &file, const int line)
+    {
+      for (const std::string &name : {file, (std::filesystem::path(p.directory) / file).string()})
+        {
+          std::ifstream in(name);
+          if (!in)
+            continue;
+          std::ostringstream text;
+          text << in.rdbuf();
+          try
+            {
+              InputFile included;
+              included.lines = prepare_prm_text(file, text.str()).lines;
+              return entry_on_line(included, line);
+            }
+          catch (const InputError &)
+            {
+              return "";
+            }
+        }
+      return "";
+    }
+
     /// Every entry of `prm` as (path, value), from deal.II's short PRM
     /// listing ("subsection S", "set E = V", "end"), in declaration order.
     std::vector<std::pair<std::string, std::string>>
@@ -188,7 +215,7 @@ namespace poundfe
       if (text.empty())
         text = collapse_whitespace(e.what());
       const bool        here      = blamed.empty() || blamed == file;
-      std::string       parameter = here ? entry_on_line(p, line) : "";
+      std::string       parameter = here ? entry_on_line(p, line) : entry_on_included_line(p, blamed, line);
       if (parameter.empty() && here)
         parameter = undeclared_json_path(prm, p, text);
       throw InputError(here ? file : blamed, line, parameter,
@@ -260,21 +287,20 @@ namespace poundfe
       for (const std::string &section : split.sections)
         path += section + "/";
       path += split.entry;
-      bool declared = prm.subsection_path_exists(split.sections);
+      // looked up, not left to prm.get, which gives "" for an undeclared
+      // entry in a release build of deal.II (its check is an Assert)
+      const std::vector<std::string> paths    = declared_paths(prm);
+      const bool                     declared = std::find(paths.begin(), paths.end(), path) != paths.end();
       if (declared)
         {
           for (const std::string &section : split.sections)
             prm.enter_subsection(section);
           try
             {
-              const std::string current = prm.get(split.entry); // throws when undeclared
+              const std::string current = prm.get(split.entry);
               prm.set(split.entry, split.field == 0 ?
                                      o.value :
                                      replace_field(p, o.path, current, split.field, o.value));
-            }
-          catch (const dealii::ParameterHandler::ExcEntryUndeclared &)
-            {
-              declared = false;
             }
           catch (const dealii::ExceptionBase &e)
             {
@@ -290,7 +316,7 @@ namespace poundfe
         {
           if (skip_undeclared)
             return;
-          p.fail(path, unknown_path_problem(declared_paths(prm), path, false));
+          p.fail(path, unknown_path_problem(paths, path, false));
         }
       // written, but not on a line of the file any more (model/entry_scope.h)
       p.lines[path] = 0;

@@ -73,8 +73,8 @@ namespace poundfe::python
     /// Ctrl-C every `signal_steps` steps. A Python exception raised by
     /// either (KeyboardInterrupt) is kept and ends the run as an
     /// interruption (RunStopped), so that its files are finished and its
-    /// summary says "interrupted"; raise_kept() raises it again once the
-    /// run has returned.
+    /// summary says "interrupted"; kept_exception() gives it to Python,
+    /// which raises it with the results so far once the run has returned.
     class CallbackObserver : public StepObserver
     {
     public:
@@ -114,13 +114,21 @@ namespace poundfe::python
           }
       }
 
-      /// The Python exception that stopped the run, raised again (with the
-      /// GIL held); nothing when none did.
-      void
-      raise_kept() const
+      /// The Python exception that stopped the run (with the GIL held);
+      /// None when none did.
+      py::object
+      kept_exception() const
       {
-        if (kept)
-          std::rethrow_exception(kept);
+        if (!kept)
+          return py::none();
+        try
+          {
+            std::rethrow_exception(kept);
+          }
+        catch (const py::error_already_set &e)
+          {
+            return e.value();
+          }
       }
 
     private:
@@ -201,7 +209,6 @@ namespace poundfe::python
         options.observers        = {&observer};
         result                   = run_time_history(*analysis, parameters, excitation, options);
       }
-      observer.raise_kept(); // its results finished, the summary saying "interrupted"
       py::dict d = directory.empty() ? memory_dict(memory) : py::dict();
       d["status"]               = result.status.name();
       d["message"]              = result.status.message;
@@ -214,6 +221,7 @@ namespace poundfe::python
       d["max_energy_error"]     = result.max_energy_error;
       d["warnings"]             = result.warnings;
       d["modes"]                = modes_of(*analysis);
+      d["exception"]            = observer.kept_exception(); // raised by run() with the results
       return d;
     }
 

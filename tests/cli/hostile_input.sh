@@ -129,7 +129,8 @@ expect 1 "got 1.00000000001" modal restitution.prm --output out
 printf 'subsection Time integration\n  set Time step = 0.01\n  set Tim step = 1\nend\n' > included.prm
 shear > including.prm
 echo "include included.prm" >> including.prm
-expect 1 "included.prm:3: No entry with name <Tim step>" modal including.prm --output out
+expect 1 "included.prm:3: parameter 'Time integration/Tim step': No entry with name <Tim step> in 'Time integration' (did you mean 'Time step'?)" \
+  modal including.prm --output out
 shear > unclosed.prm
 printf 'subsection Time integration\n  set Time step = 0.01\n' >> unclosed.prm
 expect 1 "unclosed.prm:12: 'subsection Time integration' is never closed by 'end'" modal unclosed.prm --output out

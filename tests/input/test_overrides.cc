@@ -124,6 +124,8 @@ BOOST_AUTO_TEST_CASE(bad_overrides_are_input_errors_naming_the_path)
          {json, "Building 1/Floor masses", "-5", "positive"},
          {sdof, "Nodal forces/Harmonic:8", "1", "has 7 fields, not 8"},
          {sdof, "Nodal forces/Harmonic:0", "1", "fields count from 1"},
+         {sdof, "Nodal forces/Harmonc:2", "1",
+          "No entry with name <Harmonc> in 'Nodal forces' (did you mean 'Harmonic'?)"},
          {sdof, "Time integration/Time step", "0", "positive"}})
     {
       const InputError e = error_of(c.file, c.path, c.value);

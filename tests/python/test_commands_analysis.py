@@ -6,10 +6,13 @@ line's files parsed with Python's float() and json; tolerance none). Also
 how a command takes an Input or a Model, keeps its files with output=, and
 to_dataframe without pandas."""
 
+import json
 import os
 import sys
 import unittest
 from unittest import mock
+
+import numpy as np
 
 import poundfe
 from common import (EXAMPLE, CommandTestCase, read_summary, run_command_line, tables_of_directory,
@@ -101,6 +104,14 @@ class AnalysisCommands(CommandTestCase):
         self.assertEqual(sorted(table.units), sorted(set(table.dtype.names) - {"index"}))
         self.assertEqual(list(table["index"]), list(range(len(table))))
         self.assertEqual(table[:1].units, table.units)  # a slice keeps them
+        # a column and its reductions are plain NumPy, not tables
+        column = table["1-PID-1-1"]
+        self.assertIs(type(column), np.ndarray)
+        self.assertIs(type(column.max()), np.float64)
+        self.assertIs(type(np.mean(column)), np.float64)
+        self.assertIs(type(column * 2), np.ndarray)
+        self.assertEqual(json.loads(json.dumps({"max": column.max()}))["max"],
+                         max(float(x) for x in column))
 
     def test_input_model_and_output(self):
         file = "tests/cli/dynamic-form-sdof.prm"

@@ -6,7 +6,8 @@ the KeyboardInterrupt still reaches the caller. Two ways in: raised inside
 the callback (Ctrl-C while Python code runs), and a real SIGINT that
 arrives while poundfe steps (seen by the check every 256 steps).
 poundfe.command, the command line's own dispatcher, raises it too (not the
-exit status 130), its result the files written so far.
+exit status 130), its result the files written so far; poundfe.run's
+KeyboardInterrupt holds its results so far (in memory too) as `result`.
 Reference: the directory itself (what exists afterwards)."""
 
 import os
@@ -58,11 +59,34 @@ class InterruptedRun(TestCase):
             timer.start()
             timers.append(timer)
 
-        with self.assertRaises(KeyboardInterrupt):
+        with self.assertRaises(KeyboardInterrupt) as caught:
             poundfe.run(poundfe.read(EXAMPLE), output=directory, callback=start, every=10**9)
         for timer in timers:
             timer.join()
         self.check_directory(directory)
+        self.check_result_so_far(caught.exception, directory)
+
+    def check_result_so_far(self, exception, directory):
+        # the results so far ride on the KeyboardInterrupt, as a command's
+        # result does: the summary's status and steps (reference: the files)
+        result = exception.result
+        self.assertIsInstance(result, poundfe.Results)
+        self.assertEqual(result.status, "interrupted")
+        if directory is not None:
+            self.assertEqual(read_summary(directory)["status"], result.status)
+        self.assertGreater(result.steps, 0)
+        self.assertGreater(len(result.drift), 1)
+        self.assertLess(result.drift.time[-1], 200)
+
+    def test_sigint_in_memory_keeps_the_results_so_far(self):
+        timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+        timer.start()
+        try:
+            with self.assertRaises(KeyboardInterrupt) as caught:
+                poundfe.run(poundfe.read(EXAMPLE, overrides={"Time integration/End time": 200}))
+        finally:
+            timer.cancel()
+        self.check_result_so_far(caught.exception, None)
 
     def test_command_raises_keyboard_interrupt(self):
         # poundfe.command raises where the command line exits 130, with the

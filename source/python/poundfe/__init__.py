@@ -145,7 +145,10 @@ def run(model, output=None, callback=None, every=1):
     an exception it raises stops the run and propagates.
 
     Returns Results. A numerical failure raises NumericalError with the
-    results up to the failure in its `results` attribute."""
+    results up to the failure in its `results` attribute. Ctrl-C (or an
+    exception of the callback) raises KeyboardInterrupt (or that exception)
+    with the results so far, status "interrupted", in its `result`
+    attribute, as a command's KeyboardInterrupt holds its result."""
     parameters = _input_of(model)
     directory = None if output is None else os.fspath(output)
     if directory == "":
@@ -163,6 +166,10 @@ def run(model, output=None, callback=None, every=1):
             raise
         raise model._pointed(error) from None
     results = Results(raw, directory)
+    if raw["exception"] is not None:  # Ctrl-C, or the callback's: after the files are finished
+        error = raw["exception"]
+        error.result = results
+        raise error
     if raw["status"] == "failed":
         error = (OutputError if raw["output_failed"] else NumericalError)(raw["message"])
         error.results = results

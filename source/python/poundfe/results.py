@@ -92,10 +92,20 @@ class DemandTable(np.ndarray):
     """A demand table in pelicun's demand-sample convention (demands_*.csv):
     a structured array, one float64 field per column ("index": the row
     number), and `units` {column: unit} from the file's units row, which is
-    not a row of the array (to_dataframe keeps it as DataFrame.attrs["units"])."""
+    not a row of the array (to_dataframe keeps it as DataFrame.attrs["units"]).
+    A column, table["1-PID-1-1"], is a plain float64 array: its reductions
+    are NumPy float64 scalars (a Python float: json.dumps takes them)."""
 
     def __array_finalize__(self, obj):
         self.units = getattr(obj, "units", {})
+
+    def __getitem__(self, key):
+        # a field or a field's element is no longer a table: without this
+        # view, numpy keeps the subclass and max() of a column is a 0-d table
+        item = super().__getitem__(key)
+        if isinstance(item, np.ndarray) and item.dtype.names is None:
+            return item.view(np.ndarray)
+        return item
 
 
 def read_csv_text(text):
