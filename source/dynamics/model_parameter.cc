@@ -30,6 +30,13 @@ namespace poundfe
               b.foundation = b.foundation.as_typed(base.model.dimension == 3);
           }
       }
+    // with gravity, a damping fitted at modes is fitted on the gravity
+    // tangent, which a parameter of a nonlinear element changes too
+    const auto fitted = [](const Building &b) {
+      return b.damping.kind == RayleighDamping::Kind::modes || b.damping.is_modal();
+    };
+    linear = linear || (base.model.gravity_analysis.enabled &&
+                        std::any_of(base.model.buildings.begin(), base.model.buildings.end(), fitted));
   }
 
   bool
@@ -61,11 +68,15 @@ namespace poundfe
   ModelRealization::apply(const std::vector<double> &values)
   {
     const bool matrices_changed = write(values, working.model, inputs);
-    if (linear)
-      assemble_linear_part(matrices_changed);
+    if (matrices_changed)
+      assemble_matrices();
     if (!working.model.friction_surfaces.empty()) // k_s (automatic) and c_s of the new K, M
       fit_stick_laws(working.system, working.model);
     set_gravity_state(working); // the gravity state of the new model (nothing when off)
+    // as prepare_analysis: damping fitted at modes after gravity, on its
+    // tangent, which any parameter of an element may change
+    if (linear)
+      assemble_damping_of_modes(matrices_changed || working.gravity.active);
   }
 
   void
@@ -77,21 +88,27 @@ namespace poundfe
   }
 
   void
-  ModelRealization::assemble_linear_part(const bool matrices_changed)
+  ModelRealization::assemble_matrices()
   {
-    const Model &model = working.model;
-    if (matrices_changed)
-      {
-        // M and K as prepare_analysis assembles them (with P-Delta, K_G of
-        // the unchanged gravity loads on the new K_E)
-        LinearSystem fresh = assemble_mass_and_stiffness(model);
-        working.system.mass                = std::move(fresh.mass);
-        working.system.stiffness           = std::move(fresh.stiffness);
-        working.system.geometric_stiffness = std::move(fresh.geometric_stiffness);
-        working.system.structure_mass      = std::move(fresh.structure_mass);
-        working.system.structure_stiffness = std::move(fresh.structure_stiffness);
-      }
+    // M and K as prepare_analysis assembles them (with P-Delta, K_G of the
+    // unchanged gravity loads on the new K_E)
+    LinearSystem fresh = assemble_mass_and_stiffness(working.model);
+    LinearSystem &system       = working.system;
+    system.mass                = std::move(fresh.mass);
+    system.stiffness           = std::move(fresh.stiffness);
+    system.geometric_stiffness = std::move(fresh.geometric_stiffness);
+    system.structure_mass      = std::move(fresh.structure_mass);
+    system.structure_stiffness = std::move(fresh.structure_stiffness);
+  }
+
+  void
+  ModelRealization::assemble_damping_of_modes(const bool modes_changed)
+  {
+    const Model  &model  = working.model;
     LinearSystem &system = working.system;
+    // the modes of the state the dynamics start from, as prepare_analysis
+    const SparseMatrix &modal_stiffness =
+      working.gravity.active ? working.gravity.tangent : system.stiffness;
     std::vector<std::array<double, 2>> coefficients = system.rayleigh;
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
@@ -101,10 +118,10 @@ namespace poundfe
         if (d.kind != RayleighDamping::Kind::modes && !d.is_modal())
           continue;
         Modes &modes = working.building_modes[b];
-        if (matrices_changed)
+        if (modes_changed)
           {
             const auto range = model.equation_range(b);
-            modes = compute_modes(block(system.mass, range), block(system.stiffness, range),
+            modes = compute_modes(block(system.mass, range), block(modal_stiffness, range),
                                   system.influence.segment(range[0], range[1] - range[0]),
                                   modes.n_modes(), eigensolver);
           }

@@ -10,7 +10,9 @@
 #   - the example input/fibre-frame-pounding.prm: run (energy balance <= 1e-8
 #     of the energy scale while the frames pound), modal after gravity,
 #     pushover, and a Monte Carlo whose random f'c of the column section
-#     changes the peak drift from one realization to the next;
+#     changes the peak drift from one realization to the next, and whose
+#     realization 1 is the run of Realization = 1 at its f'c (gravity, then
+#     the damping fitted at modes of that gravity tangent; 1e-12 relative);
 #   - bad input (expect.sh): an unknown section name, a wrong count of
 #     per-storey names, a fibre building without Sections, hinges in a fibre
 #     building, a random Column E of a fibre building: exit 1, one line naming
@@ -161,6 +163,24 @@ drifts = [float(r["max_drift_ratio"]) for r in rows]
 fc = [float(r["fc"]) for r in rows]
 print("f'c", fc, "peak drifts", drifts)
 sys.exit(0 if len(set(drifts)) == len(drifts) and len(set(fc)) == len(fc) else 1)
+PY
+# realization 1 is the run of Realization = 1 at its f'c: gravity, then the
+# Rayleigh damping fitted at modes of the gravity tangent of that f'c, in
+# both (the same code path: 1e-12 relative, round-off)
+fc1=$(python3 -c "import csv; print([r for r in csv.DictReader(open('mc/realizations.csv')) if r['realization'] == '1'][0]['fc'])")
+"$poundfe" run mc.prm --set "Ground motion/Stochastic/Realization=1" \
+  --set "Sections/Section 1/Concrete strength=$fc1" --output run1 > /dev/null || fail "run of realization 1: exit $?"
+python3 - mc/realizations.csv run1/summary.json <<'PY' || fail "montecarlo realization 1 is not the run of it (gravity, Damping/Type = modes)"
+import csv, json, sys
+row = [r for r in csv.DictReader(open(sys.argv[1])) if r["realization"] == "1"][0]
+s = json.load(open(sys.argv[2]))
+bad = 0
+for b in s["buildings"]:
+    for i, st in enumerate(b["storeys"]):
+        mc, run = float(row[f"{b['name']}_storey{i + 1}_peak_drift_ratio"]), st["peak_drift_ratio"]
+        print(f"{b['name']} storey {i + 1}: montecarlo {mc:.17g}, run {run:.17g}")
+        bad += abs(mc - run) > 1e-12 * max(abs(mc), abs(run))
+sys.exit(bad)
 PY
 
 # 4. bad input

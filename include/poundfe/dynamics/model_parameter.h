@@ -9,7 +9,10 @@
 // made again, the checks of two values together). Only when a value enters
 // the linear part (M, K, C) are M, K (and, for Rayleigh damping fitted at
 // modes, the building's modes) and C assembled again; a value that enters a
-// nonlinear element only leaves M, K, C and their factorisations as they are.
+// nonlinear element only leaves M, K, C and their factorisations as they are,
+// unless the model has a gravity analysis and a damping fitted at modes: as
+// in prepare_analysis, gravity comes first and the modes are those of its
+// tangent, which every element's parameter changes, so C is fitted again.
 #ifndef poundfe_dynamics_model_parameter_h
 #define poundfe_dynamics_model_parameter_h
 
@@ -34,7 +37,8 @@ namespace poundfe
     const std::vector<ModelParameter> &parameters() const { return targets; }
     /// The analysis with the values last applied (the base's before any).
     const Analysis &analysis() const { return working; }
-    /// Whether any parameter enters the linear part.
+    /// Whether a realization changes the linear part: a parameter enters
+    /// it, or a damping fitted at modes is fitted on the gravity tangent.
     bool changes_linear_part() const { return linear; }
 
     /// Writes values[p] into parameter p; assembles M, K, C again when a
@@ -52,7 +56,12 @@ namespace poundfe
     /// Writes `values` into `model` and `to` (the working input sections)
     /// and runs what follows them; whether M or K changed.
     bool write(const std::vector<double> &values, Model &model, ModelInputs &to) const;
-    void assemble_linear_part(bool matrices_changed);
+    /// M and K of the working model again.
+    void assemble_matrices();
+    /// C again: a damping fitted at modes (Type = modes, modal, bands) from
+    /// the modes of the state the dynamics start from (the gravity tangent
+    /// when there is one), computed again when `modes_changed`.
+    void assemble_damping_of_modes(bool modes_changed);
 
     Analysis                    working;
     /// The input sections the parameters write into before the builder's
