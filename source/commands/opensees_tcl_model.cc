@@ -513,10 +513,14 @@ namespace poundfe
         if (w.left() < 2)
           throw ScriptError("want: uniaxialMaterial Series tag tag1 tag2 ... <-iter maxIter tol>");
         const int max_iterations = w.integer("-iter's maxIter");
-        if (max_iterations < 1)
-          throw ScriptError("Series -iter: maxIter must be >= 1");
+        // Every pass costs a trial of each material: a bound keeps a
+        // mistyped count from stalling the analysis.
+        if (max_iterations < 1 || max_iterations > 1000)
+          throw ScriptError("Series -iter: maxIter must be from 1 to 1000");
         c.max_iterations = max_iterations;
         c.tolerance      = w.real("-iter's tol");
+        if (!(c.tolerance > 0))
+          throw ScriptError("Series -iter: tol must be > 0");
       }
 
       /// Parallel tag tag1 tag2 ... <-factors f1 f2 ...>; Series tag tag1

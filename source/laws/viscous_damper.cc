@@ -43,13 +43,16 @@ namespace poundfe
         require_non_negative("ViscousDamper", "LGap", gap);
         if (method != 1 && method != 2 && method != 3)
           refuse_parameter("ViscousDamper", "NM", "must be 1, 2 or 3");
-        if (!std::isfinite(rel_tol))
-          refuse_parameter("ViscousDamper", "RelTol", "must be a number");
-        if (!std::isfinite(abs_tol))
-          refuse_parameter("ViscousDamper", "AbsTol", "must be a number");
+        // A tolerance no sub-step can meet halves every sub-step down to
+        // 0.5^MaxHalf of the step: 2^MaxHalf evaluations a trial. Both
+        // bounds keep that finite and short (2^20 at most).
+        if (!(std::isfinite(rel_tol) && rel_tol >= 1e-15))
+          refuse_parameter("ViscousDamper", "RelTol", "must be a number of at least 1e-15");
+        if (!(std::isfinite(abs_tol) && abs_tol >= 0))
+          refuse_parameter("ViscousDamper", "AbsTol", "must be a number >= 0");
         const double max_half = v.at("MaxHalf");
-        if (!(max_half >= 0 && max_half <= 30 && max_half == std::floor(max_half)))
-          refuse_parameter("ViscousDamper", "MaxHalf", "must be an integer from 0 to 30");
+        if (!(max_half >= 0 && max_half <= 20 && max_half == std::floor(max_half)))
+          refuse_parameter("ViscousDamper", "MaxHalf", "must be an integer from 0 to 20");
       }
 
       bool set_trial(double strain, double rate) override;

@@ -342,6 +342,15 @@ printf 'uniaxialMaterial ViscousDamper 1 1.0e8 2.0e6 0.5 0.0 1\n' \
   | bad damper-count '5: uniaxialMaterial: ViscousDamper does not take 5 values: want uniaxialMaterial ViscousDamper tag K C Alpha <LGap <NM RelTol AbsTol MaxHalf>>' || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial Series 2 1 1 -iter 5\n' \
   | bad series-iter '6: uniaxialMaterial: want: uniaxialMaterial Series tag tag1 tag2 ... <-iter maxIter tol>' || exit 1
+# Inputs that would make every trial take 2^30 sub-steps or 2e9 passes.
+printf 'uniaxialMaterial ViscousDamper 1 1.0e8 2.0e6 0.5 0.0 1 -1.0 -1.0 15\n' \
+  | bad damper-tolerance "5: uniaxialMaterial: parameter 'RelTol': ViscousDamper: must be a number of at least 1e-15" || exit 1
+printf 'uniaxialMaterial ViscousDamper 1 1.0e8 2.0e6 0.5 0.0 1 1.0e-6 1.0e-10 30\n' \
+  | bad damper-halvings "5: uniaxialMaterial: parameter 'MaxHalf': ViscousDamper: must be an integer from 0 to 20" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial Series 2 1 1 -iter 2000000000 1.0e-10\n' \
+  | bad series-passes '6: uniaxialMaterial: Series -iter: maxIter must be from 1 to 1000' || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nuniaxialMaterial Series 2 1 1 -iter 10 -1.0\n' \
+  | bad series-tolerance '6: uniaxialMaterial: Series -iter: tol must be > 0' || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1 -doRayleigh 2\n' \
   | bad unsupported-option '6: element zeroLength -doRayleigh 2: poundfe does not support it' || exit 1
 printf 'fix 1 1\nfix 9 1\n' | bad missing-node '6: fix: node 9 does not exist' || exit 1

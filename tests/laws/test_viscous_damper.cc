@@ -143,9 +143,10 @@ BOOST_AUTO_TEST_CASE(damper_refuses_bad_parameters_by_name)
 {
   const double time_step = dt;
   const std::map<std::string, double> good{{"K", K}, {"C", C}, {"Alpha", 0.5}};
-  for (const auto &[name, value] : std::map<std::string, double>{
-         {"K", 0}, {"C", -1}, {"Alpha", 0}, {"NM", 4}, {"MaxHalf", 2.5}, {"MaxHalf", 40},
-         {"LGap", -1}})
+  // A list, not a map: one parameter is tried with several bad values.
+  for (const auto &[name, value] : std::vector<std::pair<std::string, double>>{
+         {"K", 0}, {"C", -1}, {"Alpha", 0}, {"NM", 4}, {"MaxHalf", 2.5}, {"MaxHalf", 21},
+         {"RelTol", -1.0}, {"RelTol", 0.0}, {"AbsTol", -1.0}, {"LGap", -1}})
     {
       auto bad  = good;
       bad[name] = value;
