@@ -88,6 +88,19 @@ namespace poundfe
           return i;
       return -1;
     }
+
+    /// Element h of `elements` as the concrete UniaxialElement it is, else
+    /// null. Listed again at every initialize(): the elements may have been
+    /// replaced between runs (TimeHistory::replace_nonlinear_elements), so a
+    /// list kept from an earlier run would point to freed elements.
+    void
+    list_uniaxial(NonlinearElements *const elements, const unsigned int n_elements,
+                  std::vector<UniaxialElement *> &uniaxial)
+    {
+      uniaxial.assign(n_elements, nullptr);
+      for (unsigned int h = 0; h < n_elements; ++h)
+        uniaxial[h] = dynamic_cast<UniaxialElement *>(&(*elements)[h]);
+    }
   } // namespace
 
   /// Everything that depends on the step size: Newmark coefficients, the
@@ -114,7 +127,8 @@ namespace poundfe
     /// Element h as the concrete UniaxialElement it is, else null: the
     /// element loop evaluates these through UniaxialElement::evaluate, with
     /// no virtual call of the element's own (the same elements at every
-    /// level; each level lists them once, when it is made).
+    /// level; listed when the level is made and again at every initialize,
+    /// since the elements may be replaced between runs).
     std::vector<UniaxialElement *> uniaxial;
     /// The frozen tangent K_0 = K_eff + sum_e B_e D_0,e B_e^T of every
     /// method but newton: D_0 (laid out as tangent_change), whether it is
@@ -304,8 +318,7 @@ namespace poundfe
     set_coefficients(*L, parameters.time_step / std::ldexp(1.0, cuts));
     assemble_effective_matrix(*L);
     L->solver = new_linear_solver(*L);
-    for (unsigned int h = 0; h < n_elements; ++h)
-      L->uniaxial.push_back(dynamic_cast<UniaxialElement *>(&(*elements)[h]));
+    list_uniaxial(elements, n_elements, L->uniaxial);
     // every step size has K_eff's pattern: one symbolic analysis where the
     // backend can share it (UMFPACK)
     stats.shared_analyses +=
@@ -448,6 +461,9 @@ namespace poundfe
     max_balance_error = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
       (*elements)[h].reset();
+    for (const std::unique_ptr<Level> &L : levels)
+      if (L)
+        list_uniaxial(elements, n_elements, L->uniaxial);
     if (element_preload && elements)
       element_preload(*elements);
     set_consistent_acceleration(load);
