@@ -138,4 +138,11 @@ assert c["friction_contact"]["max_iterations"] == 10000, c
 assert c["friction_contact"]["max_residual"] <= 1e-9, c
 PY
 
+# a Friction solver without friction is warned as without effect
+sed 's/set Friction coefficient = 0.3/set Friction coefficient = 0\n  set Friction solver = lemke/' \
+  slide-nsgs.prm > nofriction.prm
+"$poundfe" run nofriction.prm --set "Time integration/End time=0.01" --output nofriction > /dev/null 2> nofriction.err ||
+  fail "run without friction exited $?: $(head -c 300 nofriction.err)"
+grep -q "Friction solver.*has no effect" nofriction/summary.json || fail "Friction solver with μ = 0 not warned"
+
 exit $((failures > 0))
