@@ -53,6 +53,12 @@ namespace poundfe
               "has no effect: Contact/Model = nonsmooth is rigid contact (Newton's impact law "
               "with the Coefficient of restitution); the law's force parameters are unused"));
         }
+      // the friction-contact problem is solved only with friction
+      if (input.time_integration.moreau_jean.friction_coefficient == 0 &&
+          input.line_of("Contact/Friction solver") > 0)
+        warnings.push_back(input.warning("Contact/Friction solver",
+                                         "has no effect: Contact/Friction coefficient is 0 (the "
+                                         "contacts' LCP is solved by Contact/LCP solver)"));
     }
   } // namespace
 
