@@ -16,6 +16,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -449,6 +450,19 @@ namespace poundfe
     double scale = std::abs(target.dot(current.kv * target)) + std::abs(dv.dot(current.kv * dv));
     for (unsigned int i = 0; i < this->rule.size(); ++i)
       scale += this->rule.weights[i] * L * std::abs(current.e[i].dot(current.s[i]));
+    // An absolute floor, for a member near v = 0 with nothing behind it
+    // (the scale above then ~ |v|^2, a tolerance that the residual's
+    // round-off at a fibre law's kink, as Concrete01's at zero strain, never
+    // meets): the work of a residual axial strain at round-off of a
+    // yield-level strain, DBL_EPSILON * 2e-3 (reinforcing steel's yield,
+    // concrete's strain at peak), over the member, sum_i w_i L EA_i eps^2.
+    // It is ~1e-31 of the member's yield work, below 1e-20 of any loaded
+    // member's scale, so converged paths keep their numbers.
+    constexpr double noise_strain = 2e-3 * std::numeric_limits<double>::epsilon();
+    double           noise_work   = 0;
+    for (unsigned int i = 0; i < this->rule.size(); ++i)
+      noise_work += this->rule.weights[i] * L * std::abs(initial_section_stiffness[i](0, 0)) *
+                    noise_strain * noise_strain;
     current.q += current.kv * dv;
     double       previous = std::numeric_limits<double>::infinity();
     for (unsigned int j = 0; j < max_iterations; ++j)
@@ -483,7 +497,8 @@ namespace poundfe
         if (!current.q.allFinite() || !current.kv.allFinite())
           return false;
         // converged, or stalled at round-off well below OpenSees's tolerance
-        if (work <= 1e-20 * scale || (work <= 1e-12 * scale && work > 0.25 * previous))
+        if (work <= std::max(1e-20 * scale, noise_work) ||
+            (work <= 1e-12 * scale && work > 0.25 * previous))
           return true;
         previous = work;
       }

@@ -429,10 +429,15 @@ namespace poundfe
   {
     const SparseMatrix none;
     StaticSolver       solver(none, &elements);
-    for (const Vector &u : path)
+    for (unsigned int step = 0; step < path.size(); ++step)
       {
-        AssertThrow(solver.set_state(u),
-                    dealii::ExcMessage("an element refuses a state it committed before"));
+        // an element's iteration from its committed state may fail where
+        // the Newton iteration's trials converged: a numerical failure,
+        // the element named
+        if (!solver.set_state(path[step]))
+          throw NumericalError("restoring the gravity state, load step " +
+                               std::to_string(step + 1) + " of " + std::to_string(path.size()) +
+                               ": " + solver.failure());
         solver.commit();
       }
   }

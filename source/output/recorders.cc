@@ -706,7 +706,9 @@ namespace poundfe
                 [&](const unsigned int h, const unsigned int b) {
                   return elements[h].building == b;
                 },
-                "section states", "fibre member", "A_C1.1 or A_B2.1", input_file, line);
+                "section states", "fibre member",
+                state.model.dimension == 3 ? "A_C1.1.1 or A_BX1.1.1" : "A_C1.1 or A_B2.1",
+                input_file, line);
               chosen.erase(std::remove_if(chosen.begin(), chosen.end(),
                                           [&](const unsigned int h) {
                                             return !fibre_section_of(elements[h], 0);

@@ -9,8 +9,13 @@
 #     columns about both local axes under the pair (Mz and My columns);
 #   - modal after gravity completes with six modes, also with Concrete01
 #     (no tension) beams, its reactions the floor weights;
+#   - run after gravity of a frame with Concrete02 columns and Concrete01
+#     beams (fibre-3d-concrete02-columns.prm), modal of a pair with
+#     Concrete01 in both (fibre-3d-concrete01-pair.prm): both complete,
+#     their reactions the floor weights;
 #   - bad input (expect.sh): a fibre building drawn in Gmsh (Type = mesh),
-#     a 3D rigidity given to a fibre building, a section without its GJ:
+#     a 3D rigidity given to a fibre building, a section without its GJ, a
+#     section states label no member has (the example in 3D form):
 #     exit 1, one line naming the entry, nothing written.
 #   fibre_frames_3d.sh POUNDFE EXAMPLE MESH_INPUT
 set -u
@@ -79,6 +84,27 @@ print("Concrete01 beams: reactions", g["base_vertical_reactions_N"], "relative e
 sys.exit(0 if len(errors) == 2 and max(errors) <= 1e-9 else 1)
 PY
 
+# building A alone with Concrete02 columns and Concrete01 beams: `run`
+# restores gravity's committed state in the time history's own elements
+# (the gravity path replayed), which must reach what gravity committed;
+# reactions = floor weights, 1e-9. And the pair with Concrete01 in both
+# frames, whose virgin beams sit at deformations ~1e-20: gravity converges
+# (exit 2, "no compatible state", without the element's absolute floor)
+tests=$(dirname "$mesh_input")
+"$poundfe" run "$tests/fibre-3d-concrete02-columns.prm" --output mix > /dev/null ||
+  fail "Concrete02 columns: run exit $?"
+"$poundfe" modal "$tests/fibre-3d-concrete01-pair.prm" --output pair > /dev/null ||
+  fail "Concrete01 pair: modal exit $?"
+python3 - mix/summary.json pair/summary.json <<'PY' || fail "Concrete02 columns / Concrete01 pair: gravity reactions"
+import json, sys
+for name, weights in zip(sys.argv[1:], ([60000 * 9.81], [60000 * 9.81, 18000 * 9.81])):
+    g = json.load(open(name))["gravity"]["base_vertical_reactions_N"]
+    errors = [abs(r - w) / w for r, w in zip(g, weights)]
+    print(name, "reactions", g, "relative errors", errors)
+    if len(errors) != len(weights) or max(errors) > 1e-9:
+        sys.exit(1)
+PY
+
 # 2. bad input
 awk '/^subsection Building 1$/ { print; print "  set Member model = fibre"; print "  set Column sections = column40"; print "  set Beam sections = column40"; next } { print }' \
   "$mesh_input" > mesh.prm
@@ -90,5 +116,8 @@ awk '/set Member model         = fibre/ && !done { print; print "  set Column Iz
 expect 1 "Column Iz': a fibre building (Member model = fibre) takes its rigidities" run iz.prm --output out
 sed '0,/set Torsional rigidity  = 2.7e7/{/set Torsional rigidity  = 2.7e7/d}' "$example" > gj.prm
 expect 1 "Sections/Section 1/Torsional rigidity" run gj.prm --output out
+sed 's/set Record = section states every 0;.*/set Record = section states of A_C9.9/' \
+  "$tests/fibre-3d-concrete02-columns.prm" > label.prm
+expect 1 "labels are like A_C1.1.1 or A_BX1.1.1" run label.prm --output out
 [ "$failures" -eq 0 ] || { echo "$failures checks failed"; exit 1; }
 echo "fibre frames 3d: all checks passed"
