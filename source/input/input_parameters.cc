@@ -641,11 +641,21 @@ namespace poundfe
                   std::stoul(rest.substr(0, digits)) > n_buildings)
                 building = rest.substr(0, digits);
             }
-          else if (extension == ".json")
-            building = building_beyond(text, n_buildings, line);
+          // JSON has the building's key on a line of its own, and no one
+          // entry of it is to blame: the key's line, no parameter
+          const bool json = extension == ".json";
+          if (json)
+            {
+              int               key_line = 0;
+              const std::string beyond   = building_beyond(text, n_buildings, key_line);
+              if (building.empty())
+                building = beyond;
+              if (!beyond.empty())
+                line = key_line;
+            }
           if (building.empty())
             throw;
-          throw InputError(e.file(), line, e.parameter(),
+          throw InputError(e.file(), line, json ? std::string() : e.parameter(),
                            "'Building " + building + "' is given, but Model/Number of buildings is " +
                              std::to_string(n_buildings) + " (raise it, or remove the section)");
         }
