@@ -270,24 +270,26 @@ namespace poundfe::commands
         blocks << "EOD\n";
         plot.series.push_back({name, "1:2", title, "lines dt 2 lw 2"});
       };
-      const auto target_line = [&](const double target, const std::string &label) {
+      const auto target_line = [&](const double target, const std::string &label,
+                                   const double height) { // labels of near targets apart
         const double x = start.control_displacement + sign * target;
         settings << "set arrow from " << x << ", graph 0 to " << x << ", graph 1 nohead dt 3\n"
-                 << "set label '" << label << "' at " << x << ", graph 0.1 left offset 0.5, 0\n";
+                 << "set label '" << label << "' at " << x << ", graph " << height
+                 << " left offset 0.5, 0\n";
       };
       if (c.has_n2)
         {
           const double g = r.gamma; // Annex B's curve back on the building's axes
           polyline("$ec8", {0, g * c.ec8.yield_displacement, g * c.ec8.ultimate_displacement},
                    {0, g * c.ec8.yield_force, g * c.ec8.yield_force}, "EC8 idealisation");
-          target_line(c.n2.target, "N2 target");
+          target_line(c.n2.target, "N2 target", 0.06);
         }
       if (c.has_asce41)
         {
           const Asce41Bilinear &b = c.asce41.bilinear;
           polyline("$asce41", {0, b.yield_displacement, b.end_displacement},
                    {0, b.yield_force, b.end_force}, "ASCE 41 idealisation");
-          target_line(c.asce41.target, "ASCE 41 target");
+          target_line(c.asce41.target, "ASCE 41 target", 0.14);
         }
       plot.data_blocks = blocks.str();
       plot.settings    = settings.str();
