@@ -63,7 +63,8 @@ namespace poundfe
        file | fields | memory, summary, commands::modal},
       {"pushover", "FILE",
        "static pushover after the gravity state: capacity curve, storey\n"
-       "drifts and hinges (pushover.csv, PNG), EC8 bilinear curve and N2 target",
+       "drifts and hinges (pushover.csv, PNG), EC8 bilinear curve, N2 and\n"
+       "ASCE 41 target displacements",
        file | memory, summary, commands::pushover},
       {"ground-motion", "FILE [--realizations N [--write-at2]]",
        "the ground acceleration a run would use (CSV, PNG); with N,\n"

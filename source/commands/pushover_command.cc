@@ -2,11 +2,13 @@
 // state (dynamics/pushover.h): pushover.csv (the curve, each storey's
 // drift, each hinge's force and deformation), the equal-energy bilinear
 // idealisation of the control building's curve and, with a Spectrum/Target,
-// the N2 target displacement (dynamics/capacity_curve.h), summary.json and
-// pushover.png; with fibre members, their limit states along the push and
+// the N2 target displacement (dynamics/capacity_curve.h) and/or ASCE 41's
+// (dynamics/asce41_target.h), summary.json and pushover.png (the curve, the
+// idealisations and the targets); with fibre members, their limit states along the push and
 // each storey's damage state at the target displacement. A push that cannot go on keeps the curve so far and exits 2.
 #include <poundfe/commands/command.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/dynamics/asce41_target.h>
 #include <poundfe/dynamics/capacity_curve.h>
 #include <poundfe/dynamics/pushover.h>
 #include <poundfe/excitation/response_spectrum.h>
@@ -20,6 +22,7 @@
 #include <cmath>
 #include <limits>
 #include <ostream>
+#include <sstream>
 
 namespace poundfe
 {
@@ -72,21 +75,20 @@ namespace poundfe
       csv->commit();
     }
 
-    /// The control building's first excursion as the equivalent system's
-    /// curve (d*, F*), from (0, 0).
+    /// The control building's first excursion from the start: its control
+    /// displacement d and base shear V, both from (0, 0) and positive.
     void
-    sdof_curve(const PushoverResult &r, const unsigned int building, std::vector<double> &d,
-               std::vector<double> &F)
+    control_curve(const PushoverResult &r, const unsigned int building, std::vector<double> &d,
+                  std::vector<double> &V)
     {
-      const double start = r.points.front().control_displacement;
+      const PushoverPoint &start = r.points.front();
       for (const PushoverPoint &p : r.points)
         {
-          const double displacement = (p.control_displacement - start) / r.gamma;
-          if (!d.empty() && std::abs(displacement) < std::abs(d.back()))
+          const double displacement = std::abs(p.control_displacement - start.control_displacement);
+          if (!d.empty() && displacement < d.back())
             break; // the first excursion ends
-          d.push_back(std::abs(displacement));
-          F.push_back(std::abs(p.base_shears[building] - r.points.front().base_shears[building]) /
-                      r.gamma);
+          d.push_back(displacement);
+          V.push_back(std::abs(p.base_shears[building] - start.base_shears[building]));
         }
     }
   } // namespace
@@ -96,36 +98,120 @@ namespace poundfe::commands
 {
   namespace
   {
-    /// summary.json's "capacity": the idealisation and the N2 target; the
-    /// target displacement (m, from the start; NaN without one).
-    double
-    write_capacity(JsonWriter &json, const InputParameters &input, const PushoverResult &r,
-                   std::ostream &out)
+    /// The control building's curve, its idealisations and the targets
+    /// the Target method asks for.
+    struct Capacity
     {
-      double              target = std::numeric_limits<double>::quiet_NaN();
-      std::vector<double> d, F;
-      sdof_curve(r, input.pushover.control_building - 1, d, F);
-      if (d.size() < 2)
-        return target;
-      const BilinearCurve bilinear = ec8_bilinear(d, F);
+      std::vector<double> d, V; // the first excursion (control_curve)
+      BilinearCurve       ec8;  // of the equivalent system (d / Gamma, V / Gamma)
+      bool                has_n2 = false, has_asce41 = false;
+      N2Target            n2;
+      Asce41Target        asce41;
+    };
+
+    Capacity
+    capacity_of(const InputParameters &input, const PushoverResult &r)
+    {
+      Capacity c;
+      control_curve(r, input.pushover.control_building - 1, c.d, c.V);
+      if (c.d.size() < 2)
+        return c;
+      std::vector<double> d_star, F_star;
+      for (unsigned int i = 0; i < c.d.size(); ++i)
+        {
+          d_star.push_back(c.d[i] / r.gamma);
+          F_star.push_back(c.V[i] / r.gamma);
+        }
+      c.ec8 = ec8_bilinear(d_star, F_star);
+      const SpectrumParameters &s = input.spectrum;
+      const auto spectrum = [&s](const double period) { return s.target_psa(0.05, period); };
+      if (s.target == DesignSpectrum::none || !(c.ec8.yield_force > 0))
+        return c;
+      c.has_n2 = input.pushover.n2() && c.ec8.yield_displacement > 0;
+      if (c.has_n2)
+        c.n2 = ec8_n2_target(c.ec8, r.equivalent_mass, r.gamma, spectrum,
+                             ec8_ground_parameters(s.target, s.ground_type).TC);
+      c.has_asce41 = input.pushover.asce41() && c.d.back() > 0 && r.first_period > 0;
+      if (c.has_asce41)
+        {
+          Asce41Building building;
+          building.initial_period = r.first_period;
+          building.c0             = r.first_mode_c0;
+          building.mass           = r.building_mass;
+          building.mass_factor    = input.pushover.effective_mass_factor;
+          building.site_class     = input.pushover.site_class;
+          c.asce41                = asce41_target(c.d, c.V, building, spectrum);
+        }
+      return c;
+    }
+
+    /// summary.json's "capacity" "asce41" and its lines of the report.
+    void
+    write_asce41(JsonWriter &json, const PushoverParameters &p, const PushoverResult &r,
+                 const Asce41Target &t, std::ostream &out)
+    {
+      const Asce41Bilinear &b = t.bilinear;
+      json.begin_object("asce41")
+        .value("site_class", site_class_names().name(p.site_class))
+        .value("site_factor_a", asce41_site_factor(p.site_class))
+        .value("seismic_mass_kg", r.building_mass)
+        .value("initial_period_s", r.first_period)
+        .value("initial_stiffness_N_m", t.initial_stiffness)
+        .value("yield_base_shear_N", b.yield_force)
+        .value("yield_displacement_m", b.yield_displacement)
+        .value("effective_stiffness_N_m", b.effective_stiffness)
+        .value("post_yield_stiffness_ratio", b.post_yield_ratio)
+        .value("idealisation_end_displacement_m", b.end_displacement)
+        .value("idealisation_end_base_shear_N", b.end_force)
+        .value("elastic_to_target", b.elastic)
+        .value("effective_period_s", t.effective_period)
+        .value("spectral_acceleration_m_s2", t.spectral_acceleration)
+        .value("effective_mass_factor", t.mass_factor)
+        .value("strength_ratio", t.strength_ratio)
+        .value("C0", t.c0).value("C1", t.c1).value("C2", t.c2)
+        .value("target_displacement_m", t.target)
+        .value("iterations", t.iterations)
+        .value("converged", t.converged)
+        .value("target_beyond_curve", t.beyond_curve)
+        .value("degrading_slope_ratio", t.degrading_slope_ratio) // null: the curve does not fall
+        .value("max_strength_ratio", t.max_strength_ratio)
+        .value("strength_ratio_exceeds_limit", t.exceeds_strength_limit)
+        .end_object();
+      out << "ASCE 41 target displacement: " << t.target << " m (T_e " << t.effective_period
+          << " s, C0 " << t.c0 << ", C1 " << t.c1 << ", C2 " << t.c2 << ", mu_strength "
+          << t.strength_ratio << ")\n";
+      if (t.exceeds_strength_limit)
+        out << "ASCE 41: mu_strength " << t.strength_ratio << " exceeds mu_max "
+            << t.max_strength_ratio << " (strength degradation, 7.4.3.3.2): the nonlinear "
+            << "static procedure does not apply; a nonlinear dynamic one is required\n";
+      if (t.beyond_curve)
+        out << "ASCE 41: the target lies beyond the push (" << r.points.back().control_displacement
+            << " m): raise Pushover/Target drift\n";
+      if (!t.converged)
+        out << "ASCE 41: the target and its idealisation did not settle in " << t.iterations
+            << " iterations\n";
+    }
+
+    /// summary.json's "capacity": the idealisation and the targets asked for.
+    void
+    write_capacity(JsonWriter &json, const PushoverResult &r, const PushoverParameters &p,
+                   const Capacity &c, std::ostream &out)
+    {
+      if (c.d.size() < 2)
+        return;
       json.begin_object("capacity")
         .value("gamma", r.gamma)
         .value("equivalent_mass_kg", r.equivalent_mass)
-        .value("yield_force_N", bilinear.yield_force)
-        .value("yield_displacement_m", bilinear.yield_displacement)
-        .value("ultimate_displacement_m", bilinear.ultimate_displacement)
-        .value("energy_J", bilinear.energy);
+        .value("yield_force_N", c.ec8.yield_force)
+        .value("yield_displacement_m", c.ec8.yield_displacement)
+        .value("ultimate_displacement_m", c.ec8.ultimate_displacement)
+        .value("energy_J", c.ec8.energy);
       out << "equivalent system: Gamma " << r.gamma << ", m* " << r.equivalent_mass
-          << " kg, F_y* " << bilinear.yield_force << " N, d_y* " << bilinear.yield_displacement
+          << " kg, F_y* " << c.ec8.yield_force << " N, d_y* " << c.ec8.yield_displacement
           << " m\n";
-      const SpectrumParameters &s = input.spectrum;
-      if (s.target != DesignSpectrum::none && bilinear.yield_force > 0 &&
-          bilinear.yield_displacement > 0)
+      if (c.has_n2)
         {
-          const double   tc = ec8_ground_parameters(s.target, s.ground_type).TC;
-          const N2Target t  = ec8_n2_target(
-            bilinear, r.equivalent_mass, r.gamma,
-            [&s](const double period) { return s.target_psa(0.05, period); }, tc);
+          const N2Target &t = c.n2;
           json.value("period_s", t.period)
             .value("spectral_acceleration_m_s2", t.spectral_acceleration)
             .value("elastic_displacement_m", t.elastic_displacement)
@@ -133,10 +219,81 @@ namespace poundfe::commands
             .value("target_displacement_sdof_m", t.target_sdof)
             .value("target_displacement_m", t.target);
           out << "N2 target displacement: " << t.target << " m (T* " << t.period << " s)\n";
-          target = t.target;
         }
+      if (c.has_asce41)
+        write_asce41(json, p, r, c.asce41, out);
       json.end_object();
+    }
+
+    /// The target displacement the storeys' damage states are read at (m,
+    /// from the start; NaN without one): N2's or ASCE 41's, the larger of
+    /// the two when both are asked for; `method` names it.
+    double
+    governing_target(const Capacity &c, std::string &method)
+    {
+      double target = std::numeric_limits<double>::quiet_NaN();
+      if (c.has_n2)
+        {
+          target = c.n2.target;
+          method = "N2";
+        }
+      if (c.has_asce41 && !(c.asce41.target <= target))
+        {
+          target = c.asce41.target;
+          method = "ASCE41";
+        }
       return target;
+    }
+
+    /// pushover.png: the control building's curve (pushover.csv's column of
+    /// its base shear), and the idealisations and targets asked for (drawn
+    /// from the start of the push, along the first excursion).
+    Plot
+    capacity_plot(const PushoverResult &r, const Model &model, const unsigned int building,
+                  const Capacity &c)
+    {
+      Plot plot{"pushover.png", "capacity curve", "control displacement (m)", "base shear (N)",
+                {PlotSeries{"pushover.csv", "3:" + std::to_string(5 + building),
+                            "base shear, " + model.buildings[building].name, "lines"}}};
+      const PushoverPoint &start = r.points.front();
+      const double sign = c.d.size() > 1 && r.points[c.d.size() - 1].control_displacement <
+                                              start.control_displacement ? -1.0 : 1.0;
+      std::ostringstream blocks, settings;
+      blocks.precision(12);
+      settings.precision(12);
+      const auto polyline = [&](const std::string &name, const std::vector<double> &d,
+                                const std::vector<double> &V, const std::string &title) {
+        blocks << name << " << EOD\ndisplacement,shear\n";
+        for (unsigned int i = 0; i < d.size(); ++i)
+          blocks << start.control_displacement + sign * d[i] << ','
+                 << start.base_shears[building] + sign * V[i] << '\n';
+        blocks << "EOD\n";
+        plot.series.push_back({name, "1:2", title, "lines dt 2 lw 2"});
+      };
+      const auto target_line = [&](const double target, const std::string &label,
+                                   const double height) { // labels of near targets apart
+        const double x = start.control_displacement + sign * target;
+        settings << "set arrow from " << x << ", graph 0 to " << x << ", graph 1 nohead dt 3\n"
+                 << "set label '" << label << "' at " << x << ", graph " << height
+                 << " left offset 0.5, 0\n";
+      };
+      if (c.has_n2)
+        {
+          const double g = r.gamma; // Annex B's curve back on the building's axes
+          polyline("$ec8", {0, g * c.ec8.yield_displacement, g * c.ec8.ultimate_displacement},
+                   {0, g * c.ec8.yield_force, g * c.ec8.yield_force}, "EC8 idealisation");
+          target_line(c.n2.target, "N2 target", 0.06);
+        }
+      if (c.has_asce41)
+        {
+          const Asce41Bilinear &b = c.asce41.bilinear;
+          polyline("$asce41", {0, b.yield_displacement, b.end_displacement},
+                   {0, b.yield_force, b.end_force}, "ASCE 41 idealisation");
+          target_line(c.asce41.target, "ASCE 41 target", 0.14);
+        }
+      plot.data_blocks = blocks.str();
+      plot.settings    = settings.str();
+      return plot;
     }
 
     /// summary.json's "storey_damage_states": each storey's damage state
@@ -145,7 +302,7 @@ namespace poundfe::commands
     /// the last point, said so by "at").
     void
     write_storey_damage(JsonWriter &json, const Model &model, const PushoverResult &r,
-                        const double target)
+                        const double target, const std::string &method)
     {
       const double start = r.points.front().control_displacement;
       unsigned int at    = r.points.size() - 1;
@@ -158,6 +315,7 @@ namespace poundfe::commands
           }
       json.begin_object("storey_damage_states")
         .value("at", found ? "target displacement" : "end of the push")
+        .value("target_method", method.empty() ? "none" : method)
         .value("point", at)
         .value("control_displacement_m", r.points[at].control_displacement);
       json.begin_array("buildings");
@@ -185,12 +343,12 @@ namespace poundfe::commands
     write_pushover_csv(run, analysis.model, result);
     if (!result.completed)
       throw NumericalError(result.failure);
+    const Capacity           capacity = capacity_of(input, result);
     std::vector<std::string> figures; // none in memory
     if (input.output.plots && !run.memory)
-      figures = draw_plots(
-        run.directory, {Plot{"pushover.png", "capacity curve", "control displacement (m)",
-                             "base shear (N)",
-                             {PlotSeries{"pushover.csv", "3:4", "base shear", "lines"}}}});
+      figures = draw_plots(run.directory, {capacity_plot(result, analysis.model,
+                                                         input.pushover.control_building - 1,
+                                                         capacity)});
     JsonWriter json;
     begin_summary(json, "pushover", input);
     write_model(json, analysis);
@@ -207,11 +365,13 @@ namespace poundfe::commands
             peak = std::max(peak, std::abs(v));
         return peak;
       }());
-    const double target = write_capacity(json, input, result, run.out);
+    write_capacity(json, result, input.pushover, capacity, run.out);
     if (result.section_limits)
       {
+        std::string  method;
+        const double target = governing_target(capacity, method);
         result.section_limits->write_json(json, analysis.model, "first_control_displacement_m");
-        write_storey_damage(json, analysis.model, result, target);
+        write_storey_damage(json, analysis.model, result, target, method);
       }
     std::vector<std::string> files{"pushover.csv", "summary.json"};
     files.insert(files.end(), figures.begin(), figures.end());

@@ -40,20 +40,37 @@ namespace poundfe
       return result;
     }
 
-    /// The first mode of building b (its own, or computed on the state's
-    /// tangent when the analysis kept none).
-    Vector
-    first_mode(const Analysis &analysis, const unsigned int b)
+    /// The first mode of building b and its period (its own, or computed
+    /// on the state's tangent when the analysis kept none).
+    std::pair<Vector, double>
+    first_mode_of(const Analysis &analysis, const unsigned int b)
     {
       const auto range = analysis.model.equation_range(b);
       const unsigned int n = range[1] - range[0];
       if (analysis.building_modes.size() > b && analysis.building_modes[b].n_modes() > 0)
-        return analysis.building_modes[b].shapes.col(0);
+        return {analysis.building_modes[b].shapes.col(0), analysis.building_modes[b].period(0)};
       const SparseMatrix &k =
         analysis.gravity.active ? analysis.gravity.tangent : analysis.system.stiffness;
       const Modes modes = compute_modes(block(analysis.system.mass, range), block(k, range),
                                         analysis.system.influence.segment(range[0], n), 1);
-      return modes.shapes.col(0);
+      return {modes.shapes.col(0), modes.period(0)};
+    }
+
+    /// ASCE 41-17's C0 of the control building b (its first mode phi's
+    /// participation factor phi^T M r / phi^T M phi times phi at the control
+    /// equation), its period T_i and its mass r^T M r along x.
+    void
+    asce41_first_mode(const Analysis &analysis, const unsigned int b,
+                      const unsigned int control_equation, PushoverResult &result)
+    {
+      const auto         range         = analysis.model.equation_range(b);
+      const auto         [phi, period] = first_mode_of(analysis, b);
+      const SparseMatrix mass          = block(analysis.system.mass, range);
+      const Vector r  = analysis.system.influence.segment(range[0], range[1] - range[0]);
+      const Vector Mr = mass * r, Mphi = mass * phi;
+      result.first_period  = period;
+      result.building_mass = r.dot(Mr);
+      result.first_mode_c0 = phi[control_equation - range[0]] * phi.dot(Mr) / phi.dot(Mphi);
     }
 
     /// The control node's ux equation and its height above the base.
@@ -90,7 +107,7 @@ namespace poundfe
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       {
         const LoadPattern kind  = parameters.patterns[b];
-        const Vector      mode  = kind == LoadPattern::mode ? first_mode(analysis, b) : Vector();
+        const Vector      mode  = kind == LoadPattern::mode ? first_mode_of(analysis, b).first : Vector();
         const unsigned int first = model.equation_range(b)[0];
         double             sum   = 0;
         for (const auto &[eq, z] : lateral_equations(model, b))
@@ -188,6 +205,8 @@ namespace poundfe
           sum_m_phi2 += mass[eq] * shapes[eq] * shapes[eq];
         }
       result.gamma = result.equivalent_mass / sum_m_phi2;
+      if (parameters.asce41())
+        asce41_first_mode(analysis, parameters.control_building - 1, result.control_equation, result);
       for (unsigned int b = 0; b < model.buildings.size(); ++b)
         {
           lateral.push_back(lateral_equations(model, b));

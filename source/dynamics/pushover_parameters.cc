@@ -17,6 +17,14 @@ namespace poundfe
     return table;
   }
 
+  const NameTable<TargetMethod> &
+  target_method_names()
+  {
+    static const NameTable<TargetMethod> table(
+      {{TargetMethod::n2, "N2"}, {TargetMethod::asce41, "ASCE41"}, {TargetMethod::both, "both"}});
+    return table;
+  }
+
   void
   PushoverParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -62,11 +70,27 @@ namespace poundfe
                       "Where displacement control fails (a peak of the control displacement, "
                       "a snap-back), continue by arc length (Crisfield's cylindrical "
                       "constraint). Unit: -.");
+    add_choice(prm, "Target method", target_method,
+               "The target displacement of the control building's curve under "
+               "Spectrum/Target: N2 (EN 1998-1 Annex B, when a Spectrum/Target is given), "
+               "ASCE41 (ASCE/SEI 41-17 7.4.3.3: C0 C1 C2 S_a T_e^2 / 4 pi^2 on the "
+               "bilinear idealisation of 7.4.3.2.4; needs a Spectrum/Target) or both. "
+               "Unit: -.",
+               target_method_names());
+    add_choice(prm, "ASCE41 site class", site_class,
+               "ASCE41: the site class (ASCE 7 ch. 20) of C1's factor a: 130 for A and B, "
+               "90 for C, 60 for D, E and F. Unit: -.",
+               site_class_names());
+    prm.add_parameter("ASCE41 effective mass factor", effective_mass_factor,
+                      "ASCE41: C_m of ASCE 41-17 Table 7-4 in mu_strength = S_a / (V_y / W) "
+                      "C_m (1.0 for one storey; 0.8 to 0.9 for two or more storeys by the "
+                      "system); taken as 1.0 where T_e exceeds 1 s. Unit: -.");
     prm.leave_subsection();
   }
 
   void
-  PushoverParameters::finalize(const InputFile &input, const unsigned int n_buildings)
+  PushoverParameters::finalize(const InputFile &input, const unsigned int n_buildings,
+                               const bool spectrum_target)
   {
     if (pattern_names.size() != 1 && pattern_names.size() != n_buildings)
       input.fail("Pushover/Load pattern", "needs one value or one per building (" +
@@ -91,6 +115,13 @@ namespace poundfe
       if (!(drift != 0 && std::abs(drift) < 1))
         input.fail("Pushover/Protocol",
                    "each drift must be nonzero (and below 1 in size), got " + number_text(drift));
+    if (!(effective_mass_factor > 0 && effective_mass_factor <= 1))
+      input.fail("Pushover/ASCE41 effective mass factor",
+                 "C_m must lie in (0, 1], got " + number_text(effective_mass_factor));
+    if (asce41() && !spectrum_target)
+      input.fail("Pushover/Target method",
+                 target_method_names().name(target_method) +
+                   " needs the spectrum S_a(T_e): set Spectrum/Target");
   }
 
   std::vector<double>

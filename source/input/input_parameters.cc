@@ -441,7 +441,7 @@ namespace poundfe
     spectrum.check(*this);
     sections.check(*this);
     moment_curvature.check(*this, sections);
-    pushover.finalize(*this, model.buildings.size());
+    pushover.finalize(*this, model.buildings.size(), spectrum.target != DesignSpectrum::none);
     ida.check(*this);
     msa.check(*this);
     selection.check(*this);

@@ -6,8 +6,11 @@
 #   a push that cannot go on (a mechanism at once: storeys with no
 #     post-yield stiffness pushed beyond their strength without arc length)
 #     exits 2 with the curve so far in pushover.csv and a failed summary;
+#   ASCE 41's target without a Spectrum/Target, with an unknown site class or
+#     C_m outside (0, 1]: exit 1;
 #   the example input: pushover.csv, summary.json with the gravity state and
-#     the capacity curve's idealisation and N2 target, and a run of the same
+#     the capacity curve's idealisation, N2 and ASCE 41 targets (7-28 and
+#     mu_strength recomputed from the reported terms), and a run of the same
 #     file that starts from the gravity state (summary.json "gravity").
 #   pushover.sh POUNDFE SOURCE_DIR
 set -u
@@ -34,6 +37,18 @@ push '' '  set Target drift = 0' > target.prm
 expect 1 "Pushover/Target drift" pushover target.prm --output out
 push '' '  set Target drift = -0.01' > negative-target.prm
 expect 1 "Pushover/Target drift" pushover negative-target.prm --output out
+# ASCE 41's target: a Spectrum/Target, a known site class, C_m in (0, 1]
+push '' '  set Target method = ASCE41' > asce-spectrum.prm
+expect 1 "Pushover/Target method" pushover asce-spectrum.prm --output out
+spectrum='subsection Spectrum\n  set Target = ec8-type-1\nend\n'
+{ push '' '  set Target method = both
+  set ASCE41 site class = G'; printf "$spectrum"; } > asce-site.prm
+expect 1 "Pushover/ASCE41 site class" pushover asce-site.prm --output out
+for cm in 0 1.5 -0.5; do
+  { push '' "  set Target method = ASCE41
+  set ASCE41 effective mass factor = $cm"; printf "$spectrum"; } > asce-cm.prm
+  expect 1 "Pushover/ASCE41 effective mass factor" pushover asce-cm.prm --output out
+done
 push '  set Floor loads = 1e4, -5, 0' '' > loads.prm
 expect 1 "Building 1/Floor loads" pushover loads.prm --output out
 expect 1 "Building 1/Floor loads" run loads.prm --output out
@@ -67,6 +82,16 @@ assert g["peak_displacement_m"] > 0 and all(r > 0 for r in g["base_vertical_reac
 c = s["capacity"]
 assert 0 < c["yield_displacement_m"] < c["ultimate_displacement_m"], c
 assert c["target_displacement_m"] > 0, c
+# ASCE 41 (Target method = both): its equation 7-28 from the reported terms
+import math
+a = c["asce41"]
+assert a["C0"] > 1 and a["C1"] >= 1 and a["C2"] >= 1 and a["converged"], a
+assert a["effective_period_s"] >= a["initial_period_s"] and a["site_class"] == "D", a
+assert 0 < a["yield_base_shear_N"] <= s["peak_base_shear_N"] * (1 + 1e-12), a
+t = a["C0"] * a["C1"] * a["C2"] * a["spectral_acceleration_m_s2"] * (a["effective_period_s"] / (2 * math.pi)) ** 2
+assert abs(a["target_displacement_m"] - t) <= 1e-9 * t, (a, t)
+mu = a["spectral_acceleration_m_s2"] * a["seismic_mass_kg"] * a["effective_mass_factor"] / a["yield_base_shear_N"]
+assert abs(a["strength_ratio"] - mu) <= 1e-9 * mu, (a, mu)
 rows = list(csv.DictReader(open(sys.argv[2])))
 assert len(rows) > 10 and float(rows[0]["load_factor"]) == 0.0
 assert float(rows[-1]["base_shear_N"]) > 0

@@ -1,9 +1,13 @@
 // The equal-energy bilinear idealisation and the N2 target displacement
-// (dynamics/capacity_curve.h) against EN 1998-1 Annex B written out here.
+// (dynamics/capacity_curve.h) against EN 1998-1 Annex B written out here;
+// ASCE 41-17's bilinear idealisation, coefficients and target displacement
+// (dynamics/asce41_target.h) against the standard's equations solved here.
+#include <poundfe/dynamics/asce41_target.h>
 #include <poundfe/dynamics/capacity_curve.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -38,6 +42,62 @@ namespace
     if (T <= TD)
       return ag * S * 2.5 * TC / T;
     return ag * S * 2.5 * TC * TD / (T * T);
+  }
+
+  /// The curve (d, V) cut at x (linear interpolation), as a new polyline.
+  void
+  cut_at(const std::vector<double> &d, const std::vector<double> &V, const double x,
+         std::vector<double> &dc, std::vector<double> &Vc)
+  {
+    for (unsigned int i = 0; i < d.size() && d[i] < x; ++i)
+      {
+        dc.push_back(d[i]);
+        Vc.push_back(V[i]);
+      }
+    const unsigned int j = dc.size(); // d[j - 1] < x <= d[j]
+    dc.push_back(x);
+    Vc.push_back(V[j - 1] + (V[j] - V[j - 1]) * (x - d[j - 1]) / (d[j] - d[j - 1]));
+  }
+
+  double
+  trapezoid_area(const std::vector<double> &d, const std::vector<double> &V)
+  {
+    double area = 0;
+    for (unsigned int i = 1; i < d.size(); ++i)
+      area += 0.5 * (V[i] + V[i - 1]) * (d[i] - d[i - 1]);
+    return area;
+  }
+
+  /// ASCE 41-17 7.4.3.2.4 by hand: with 0.6 V_y on segment j of the
+  /// (rising) curve, Delta_y = (d_{j-1} + (0.6 V_y - V_{j-1}) / k_j) / 0.6
+  /// is linear in V_y, and so is the balance of the areas
+  ///   V_y D + V_d (D - Delta_y) = 2 A,
+  /// solved per segment; the root whose 0.6 V_y lies on its segment.
+  double
+  hand_yield_force(const std::vector<double> &d, const std::vector<double> &V, const double D)
+  {
+    std::vector<double> dc, Vc;
+    cut_at(d, V, D, dc, Vc);
+    const double A = trapezoid_area(dc, Vc), Vd = Vc.back();
+    for (unsigned int j = 1; j < d.size(); ++j)
+      {
+        const double k     = (V[j] - V[j - 1]) / (d[j] - d[j - 1]);
+        const double alpha = (d[j - 1] - V[j - 1] / k) / 0.6, beta = 1 / k;
+        const double Vy    = (2 * A - Vd * D + Vd * alpha) / (D - Vd * beta);
+        if (k > 0 && 0.6 * Vy >= V[j - 1] && 0.6 * Vy <= V[j])
+          return Vy;
+      }
+    return std::nan("");
+  }
+
+  /// The curve's secant stiffness where it first reaches f.
+  double
+  secant_at(const std::vector<double> &d, const std::vector<double> &V, const double f)
+  {
+    for (unsigned int j = 1; j < d.size(); ++j)
+      if (V[j] >= f)
+        return f / (d[j - 1] + (d[j] - d[j - 1]) * (f - V[j - 1]) / (V[j] - V[j - 1]));
+    return std::nan("");
   }
 } // namespace
 
@@ -98,6 +158,184 @@ BOOST_AUTO_TEST_CASE(n2_target_displacement_by_hand)
                gamma * se_type1_c(T2) * std::pow(T2 / (2 * M_PI), 2),
              boost::test_tools::tolerance(1e-12));
   BOOST_TEST(long_period.reduction == 1.0);
+}
+
+
+// ASCE 41-17 7.4.3.2.4 on a piecewise-linear curve, to D within its
+// second segment, at its third vertex and within its third: V_y by the
+// balance of areas solved by hand per segment (hand_yield_force; e.g. D =
+// 0.08 m: 0.6 V_y on the second segment, V_y = 2433.33 / 0.014 = 173809.52
+// N) to 1e-9 (the bisection's 1e-15 and the round-off of the areas). The
+// fixed point checked on its own terms: the idealisation's area equals the
+// curve's (trapezoids here) and K_e is the curve's secant at 0.6 V_y, both
+// to 1e-9.
+BOOST_AUTO_TEST_CASE(asce41_idealisation_by_hand)
+{
+  const std::vector<double> d{0, 0.01, 0.03, 0.08, 0.12}, V{0, 1e5, 2e5, 2.6e5, 2.4e5};
+  BOOST_TEST(hand_yield_force(d, V, 0.08) == 2433.3333333333333 / 0.014,
+             boost::test_tools::tolerance(1e-9));
+  for (const double D : {0.02, 0.03, 0.05, 0.08, 0.1})
+    {
+      const Asce41Bilinear b = asce41_bilinear(d, V, D);
+      BOOST_TEST_CONTEXT("Delta_d " << D)
+      {
+        BOOST_TEST(!b.elastic);
+        BOOST_TEST(b.yield_force == hand_yield_force(d, V, D), boost::test_tools::tolerance(1e-9));
+        std::vector<double> dc, Vc;
+        cut_at(d, V, D, dc, Vc);
+        BOOST_TEST(b.end_force == Vc.back(), boost::test_tools::tolerance(1e-12));
+        const double idealised = trapezoid_area({0, b.yield_displacement, D},
+                                                {0, b.yield_force, b.end_force});
+        BOOST_TEST(idealised == trapezoid_area(dc, Vc), boost::test_tools::tolerance(1e-9));
+        BOOST_TEST(b.effective_stiffness == secant_at(d, V, 0.6 * b.yield_force),
+                   boost::test_tools::tolerance(1e-9));
+        BOOST_TEST(b.yield_displacement * b.effective_stiffness == b.yield_force,
+                   boost::test_tools::tolerance(1e-12));
+        BOOST_TEST(b.post_yield_ratio == (b.end_force - b.yield_force) /
+                                           (D - b.yield_displacement) / b.effective_stiffness,
+                   boost::test_tools::tolerance(1e-9));
+      }
+    }
+}
+
+// A bilinear curve is its own idealisation (hardening 5 % and perfectly
+// plastic), to 1e-9; to a point on its first branch it is elastic.
+BOOST_AUTO_TEST_CASE(asce41_a_bilinear_curve_is_its_own_idealisation)
+{
+  const std::vector<double> d{0, 0.01, 0.1};
+  for (const double hardening : {0.05, 0.0})
+    {
+      const std::vector<double> V{0, 1e5, 1e5 + hardening * 1e7 * 0.09};
+      const Asce41Bilinear      b = asce41_bilinear(d, V, 0.1);
+      BOOST_TEST(b.yield_force == 1e5, boost::test_tools::tolerance(1e-9));
+      BOOST_TEST(b.yield_displacement == 0.01, boost::test_tools::tolerance(1e-9));
+      BOOST_TEST(b.post_yield_ratio == hardening, boost::test_tools::tolerance(1e-7));
+    }
+  const Asce41Bilinear elastic = asce41_bilinear(d, {0, 1e5, 1.45e5}, 0.005);
+  BOOST_TEST(elastic.elastic);
+  BOOST_TEST(elastic.yield_force == 5e4, boost::test_tools::tolerance(1e-12));
+}
+
+// C1 and C2 (7-29, 7-30) by hand at a few points (e.g. mu 3, T_e 0.5 s,
+// site class C: C1 = 1 + 2 / (90 0.25), C2 = 1 + (2 / 0.5)^2 / 800), and on
+// a grid of site classes, periods and strength ratios against the
+// equations written here, to 1e-14.
+BOOST_AUTO_TEST_CASE(asce41_coefficients_by_the_standard)
+{
+  struct Case
+  {
+    SiteClass site;
+    double    mu, Te, C1, C2;
+  };
+  for (const Case &c : {Case{SiteClass::C, 3, 0.5, 1 + 2 / 22.5, 1.02},
+                        Case{SiteClass::D, 3, 0.1, 1 + 2 / 2.4, 1.5}, // T_e < 0.2 s: C1 at 0.2 s
+                        Case{SiteClass::A, 4, 0.8, 1 + 3 / 83.2, 1.0}, // T_e > 0.7 s: C2 = 1
+                        Case{SiteClass::E, 2, 1.2, 1.0, 1.0},          // T_e > 1 s: C1 = 1
+                        Case{SiteClass::B, 0.6, 0.3, 1.0, 1.0}})       // elastic
+    {
+      const Asce41Coefficients k = asce41_coefficients(c.mu, c.Te, c.site);
+      BOOST_TEST(k.c1 == c.C1, boost::test_tools::tolerance(1e-14));
+      BOOST_TEST(k.c2 == c.C2, boost::test_tools::tolerance(1e-14));
+    }
+  const double a[6] = {130, 130, 90, 60, 60, 60}; // A ... F
+  for (unsigned int s = 0; s < 6; ++s)
+    for (const double Te : {0.05, 0.2, 0.35, 0.7, 0.71, 1.0, 1.01, 2.0})
+      for (const double mu : {0.5, 1.0, 1.5, 4.0, 8.0})
+        {
+          const SiteClass          site = site_class_names().value(std::string(1, char('A' + s)));
+          const Asce41Coefficients k    = asce41_coefficients(mu, Te, site);
+          const double             R    = std::max(mu, 1.0);
+          const double C1 = Te > 1.0 ? 1.0 : 1 + (R - 1) / (a[s] * std::pow(std::max(Te, 0.2), 2));
+          const double C2 = Te > 0.7 ? 1.0 : 1 + std::pow((R - 1) / Te, 2) / 800;
+          BOOST_TEST(k.c1 == C1, boost::test_tools::tolerance(1e-14));
+          BOOST_TEST(k.c2 == C2, boost::test_tools::tolerance(1e-14));
+        }
+}
+
+// The target's fixed point, checked from its result alone: Delta_d =
+// min(delta_t, the displacement at the largest base shear), the
+// idealisation there by hand (hand_yield_force, secant_at), T_e = T_i
+// sqrt(K_i / K_e), S_a of EC8 type 1 ground C, mu_strength, C1, C2 and
+// delta_t = C0 C1 C2 S_a T_e^2 / 4 pi^2 written here, to 1e-8 (the
+// iteration stops at 1e-10 of Delta_d). A heavy building's target passes
+// the peak (Delta_d at the peak; the curve then falls: mu_max by 7-32); a
+// light one's stays before it (C_m = 0.9 applies, T_e <= 1 s).
+BOOST_AUTO_TEST_CASE(asce41_target_is_the_fixed_point_of_the_coefficient_method)
+{
+  std::vector<double> d, V;
+  sample_curve(d, V);
+  const double peak_at = d[std::max_element(V.begin(), V.end()) - V.begin()];
+  for (const auto &[mass, Ti] : {std::pair{1.5e5, 0.5}, std::pair{4e4, 0.3}})
+    {
+      Asce41Building building;
+      building.initial_period = Ti;
+      building.c0             = 1.3;
+      building.mass           = mass;
+      building.mass_factor    = 0.9;
+      building.site_class     = SiteClass::C;
+      const Asce41Target t    = asce41_target(d, V, building, se_type1_c);
+      BOOST_TEST_CONTEXT("mass " << mass)
+      {
+        BOOST_TEST(t.converged);
+        const double D = std::min(t.target, peak_at);
+        BOOST_TEST(t.bilinear.end_displacement == D, boost::test_tools::tolerance(1e-9));
+        const double Vy = hand_yield_force(d, V, D);
+        const double Ke = secant_at(d, V, 0.6 * Vy);
+        const double Te = Ti * std::sqrt(V[1] / d[1] / Ke);
+        const double Sa = se_type1_c(Te);
+        const double mu = Sa * mass * (Te > 1 ? 1.0 : 0.9) / Vy;
+        const double C1 = Te > 1.0 ? 1.0 : 1 + (mu - 1) / (90 * std::pow(std::max(Te, 0.2), 2));
+        const double C2 = Te > 0.7 ? 1.0 : 1 + std::pow((mu - 1) / Te, 2) / 800;
+        BOOST_REQUIRE(mu > 1);
+        BOOST_TEST(t.strength_ratio == mu, boost::test_tools::tolerance(1e-8));
+        BOOST_TEST(t.effective_period == Te, boost::test_tools::tolerance(1e-8));
+        BOOST_TEST(t.target == 1.3 * C1 * C2 * Sa * std::pow(Te / (2 * M_PI), 2),
+                   boost::test_tools::tolerance(1e-8));
+        BOOST_TEST(t.beyond_curve == (t.target > d.back()));
+        if (mass > 1e5)
+          {
+            BOOST_TEST(t.target > peak_at);
+            // the curve never falls to 0.6 V_y: alpha_2 to its last point
+            const double alpha2 = (V.back() - t.bilinear.end_force) / (d.back() - D) / Ke;
+            const double mu_max =
+              D / (Vy / Ke) + std::pow(std::abs(alpha2), -(1 + 0.15 * std::log(Te))) / 4;
+            BOOST_TEST(t.degrading_slope_ratio == alpha2, boost::test_tools::tolerance(1e-8));
+            BOOST_TEST(t.max_strength_ratio == mu_max, boost::test_tools::tolerance(1e-8));
+            BOOST_TEST(t.exceeds_strength_limit == (mu > mu_max));
+          }
+        else
+          {
+            BOOST_TEST(t.target < peak_at);
+            BOOST_TEST(t.mass_factor == 0.9);
+          }
+      }
+    }
+}
+
+// Strength degradation (7-32): a curve that falls past its peak to 0.6 V_y
+// and below; alpha_2 runs from (Delta_d, V_d) to where it crosses 0.6 V_y
+// (interpolated here), to 1e-9.
+BOOST_AUTO_TEST_CASE(asce41_strength_degradation_to_sixty_percent)
+{
+  const std::vector<double> d{0, 0.01, 0.03, 0.05, 0.09}, V{0, 1e5, 1.2e5, 0.8e5, 0.2e5};
+  Asce41Building building;
+  building.initial_period = 0.3;
+  building.mass           = 1e5; // S_a m / V_y > 6: far beyond the peak
+  building.site_class     = SiteClass::D;
+  const Asce41Target t    = asce41_target(d, V, building, se_type1_c);
+  const Asce41Bilinear &b = t.bilinear;
+  BOOST_TEST(b.end_displacement == 0.03, boost::test_tools::tolerance(1e-12));
+  const double floor = 0.6 * b.yield_force; // within the segment 0.05 .. 0.09
+  BOOST_REQUIRE(floor < 0.8e5);
+  BOOST_REQUIRE(floor > 0.2e5);
+  const double d2     = 0.05 + 0.04 * (0.8e5 - floor) / 0.6e5;
+  const double alpha2 = (floor - 1.2e5) / (d2 - 0.03) / b.effective_stiffness;
+  BOOST_TEST(t.degrading_slope_ratio == alpha2, boost::test_tools::tolerance(1e-9));
+  const double h = 1 + 0.15 * std::log(t.effective_period);
+  BOOST_TEST(t.max_strength_ratio ==
+               0.03 / b.yield_displacement + std::pow(std::abs(alpha2), -h) / 4,
+             boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(t.exceeds_strength_limit == (t.strength_ratio > t.max_strength_ratio));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -174,4 +174,40 @@ BOOST_AUTO_TEST_CASE(two_buildings_push_through_their_gap)
   BOOST_TEST(closed);
 }
 
+// ASCE 41-17's C0 by its first way (7.4.3.3.2): the first mode's
+// participation factor phi^T M 1 / phi^T M phi times its roof ordinate, its
+// period T_i and the building's mass, against the shear building's
+// eigenproblem K phi = omega^2 M phi solved here (Eigen's generalized
+// self-adjoint solver), to 1e-9; a push without ASCE 41 computes no mode.
+BOOST_AUTO_TEST_CASE(asce41_c0_is_the_first_mode_participation_at_the_roof)
+{
+  const std::string pushover = " set Target drift = 0.002\n set Number of steps = 2\n";
+  const std::string spectrum = "subsection Spectrum\n set Target = ec8-type-1\nend\n";
+  const PushoverResult r = pushover_of(
+    "pushover_asce41", shear_building("", pushover + " set Target method = ASCE41\n") + spectrum);
+  BOOST_REQUIRE(r.completed);
+  const double    m[3] = {4e4, 3e4, 2e4}, k[3] = {6e7, 5e7, 4e7};
+  Eigen::Matrix3d K    = Eigen::Matrix3d::Zero(), M = Eigen::Matrix3d::Zero();
+  for (unsigned int i = 0; i < 3; ++i)
+    {
+      M(i, i) = m[i];
+      K(i, i) += k[i];
+      if (i > 0)
+        {
+          K(i - 1, i - 1) += k[i];
+          K(i - 1, i) = K(i, i - 1) = -k[i];
+        }
+    }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix3d> eigen(K, M);
+  const Eigen::Vector3d phi = eigen.eigenvectors().col(0);
+  const double          c0  = phi[2] * phi.dot(M * Eigen::Vector3d::Ones()) / phi.dot(M * phi);
+  BOOST_TEST(c0 > 1.0);
+  BOOST_TEST(r.first_mode_c0 == c0, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(r.first_period == 2 * M_PI / std::sqrt(eigen.eigenvalues()[0]),
+             boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(r.building_mass == 9e4, boost::test_tools::tolerance(1e-12));
+  const PushoverResult n2 = pushover_of("pushover_n2", shear_building("", pushover) + spectrum);
+  BOOST_TEST(n2.first_period == 0.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

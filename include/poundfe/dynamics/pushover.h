@@ -8,7 +8,9 @@
 // Two buildings side by side are pushed together; their gaps close and
 // carry force as in the dynamics (the same nonlinear elements). The curve's
 // equivalent system (EN 1998-1 Annex B: dynamics/capacity_curve.h) is of the
-// control building's pattern shape Phi (Phi = 1 at the control node).
+// control building's pattern shape Phi (Phi = 1 at the control node); ASCE
+// 41's coefficient method (dynamics/asce41_target.h) takes the building's
+// first mode.
 #ifndef poundfe_dynamics_pushover_h
 #define poundfe_dynamics_pushover_h
 
@@ -48,6 +50,10 @@ namespace poundfe
     double                     control_height = 0; // m, above the base
     /// The equivalent system of the control building (Annex B).
     double                     gamma = 1, equivalent_mass = 0;
+    /// ASCE 41 (asked by Target method): the control building's mass along
+    /// x (kg, W / g), its first mode's period T_i (s) and C0, the mode's
+    /// participation factor times its ordinate at the control node.
+    double                     building_mass = 0, first_period = 0, first_mode_c0 = 1;
     bool                       completed = true;
     std::string                failure; // why it stopped early (completed false)
     unsigned int               iterations = 0, arc_length_steps = 0, step_cuts = 0;
