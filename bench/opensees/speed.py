@@ -10,7 +10,10 @@ twice: the whole script ("full") and the script with its transient `analyze`
 skipped ("setup": start-up, the model, the record's Tcl loop, the static
 steps; bench/opensees/run_with.tcl). A run's time is its wall time and its
 CPU time (user + system, os.wait4), the CPU time being less sensitive to
-other jobs on the machine. Prints, per case and program, the medians over
+other jobs on the machine. Both programs run with OPENBLAS_NUM_THREADS=1 and
+OMP_NUM_THREADS=1: OpenSees 3.8 built on Debian's threaded OpenBLAS has its
+idle BLAS threads spin in sched_yield (356 621 calls on fibre_frame_3d.tcl),
+which costs it more than its own work where other jobs hold the cores. Prints, per case and program, the medians over
 the rounds of the full run's wall and CPU times, and the CPU time of a
 transient step, (full - setup) / steps, with the ratios OpenSees / poundfe.
 Second form: compare.py's cases as they are (the whole script, alternating
@@ -50,7 +53,8 @@ def timed_command(program, arguments, out):
     os.makedirs(out, exist_ok=True)
     command = [program] + (["opensees"] if program.endswith("poundfe") else []) + arguments
     start = time.perf_counter()
-    child = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    child = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                             env=dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1"))
     _, status, usage = os.wait4(child.pid, 0)
     wall = time.perf_counter() - start
     if status != 0:
