@@ -94,13 +94,21 @@ CASES = {
     "pounding_ViscousDamper": ("pounding_sticks.tcl", ["ViscousDamper"], 1e-9),
     "pounding_ViscousDamperABM": ("pounding_sticks.tcl", ["ViscousDamperABM"], 1e-9),
     "pounding_ViscousDamperROS": ("pounding_sticks.tcl", ["ViscousDamperROS"], 1e-9),
+    # Adams-Bashforth-Moulton at Alpha 0.3 at the onset of a steady
+    # velocity, and the exact force (Dormand-Prince, tolerances 1e-12)
+    "damper_onset_ABM": ("damper_onset.tcl", ["ABM"], 1e-9),
+    "damper_onset_exact": ("damper_onset.tcl", ["exact"], 1e-9),
     "pounding_Series": ("pounding_sticks.tcl", ["Series"], 1e-9),
     "pounding_SeriesIter": ("pounding_sticks.tcl", ["SeriesIter"], 1e-9),
     # twoNodeLink: a bearing of three materials with -shearDist and -pDelta
     # under a 2D cantilever, a gap link between the tops; 3D sticks of
-    # six-material links (-orient, -pDelta, -doRayleigh) and a diagonal gap
-    "links_2d": ("two_node_links.tcl", ["2d"], 1e-9),
-    "links_3d": ("two_node_links.tcl", ["3d"], 1e-9),
+    # six-material links (-orient, -pDelta, -doRayleigh) and a diagonal gap.
+    # Both agree to 4e-15 up to the first contact; each contact of the stiff
+    # gap then multiplies round-off by about 100: OpenSees 3.8 against itself
+    # with another solver (UmfPack for BandGeneral) differs by 3.1e-10 (2d)
+    # and 5.8e-8 (3d), poundfe from OpenSees by 4.8e-10 and 3.9e-8
+    "links_2d": ("two_node_links.tcl", ["2d"], 1e-8),
+    "links_3d": ("two_node_links.tcl", ["3d"], 1e-6),
     # a 3D frame of elasticBeamColumns (PDelta columns, Linear beams, vecxz)
     # pounding a neighbour's column through a twoNodeLink gap, gravity then
     # the record along X and Y
@@ -145,13 +153,25 @@ def run(program, case, out):
     return time.perf_counter() - start
 
 
-def largest(ours, theirs):
-    """The largest difference of each column relative to its peak, at most."""
-    a, b = np.loadtxt(ours, ndmin=2), np.loadtxt(theirs, ndmin=2)
+def peaks(table):
+    """Each column's peak; a column below 1e-9 of the file's largest peak
+    (an end moment or force zero but for round-off, such as a cantilever's
+    free-end moment) is held to the file's largest peak instead."""
+    peak = np.abs(table).max(axis=0)
+    largest_peak = max(peak.max(), 1e-300)
+    return np.where(peak < 1e-9 * largest_peak, largest_peak, peak)
+
+
+def difference(a, b):
+    """The largest difference of a's columns from b's relative to b's peaks."""
     if a.shape != b.shape:
         return float("inf")
-    peak = np.maximum(np.abs(b).max(axis=0), 1e-300)
-    return float((np.abs(a - b).max(axis=0) / peak).max())
+    return float((np.abs(a - b).max(axis=0) / peaks(b)).max())
+
+
+def largest(ours, theirs):
+    """The largest difference of each column relative to its peak, at most."""
+    return difference(np.loadtxt(ours, ndmin=2), np.loadtxt(theirs, ndmin=2))
 
 
 def rows_kept(table):
@@ -186,9 +206,7 @@ def check(poundfe, reference, work):
         for name in sorted(os.listdir(os.path.join(reference, case))):
             kept = np.loadtxt(os.path.join(reference, case, name), ndmin=2)
             ours = rows_kept(np.loadtxt(os.path.join(mine, name), ndmin=2))
-            peak = np.maximum(np.abs(kept).max(axis=0), 1e-300)
-            d = float((np.abs(ours - kept).max(axis=0) / peak).max()) \
-                if ours.shape == kept.shape else float("inf")
+            d = difference(ours, kept)
             ok = d <= max(tolerance_of(case, name), 1e-11)  # the kept rows have 12 digits
             failed |= not ok
             print(f"{'ok  ' if ok else 'FAIL'} {case}/{name}: {d:.1e}")

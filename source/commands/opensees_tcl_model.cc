@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -184,7 +185,8 @@ namespace poundfe
         e.retained    = d.node(w.integer("the retained node")).tag;
         e.constrained = d.node(w.integer("the constrained node")).tag;
         if (!w.done())
-          unsupported("rigidLink option '" + w.peek() + "'");
+          throw ScriptError("'" + w.peek() +
+                            "' after the constrained node: rigidLink bar takes two nodes");
         if (e.retained == e.constrained)
           throw ScriptError("the retained and the constrained node are the same");
         for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
@@ -193,7 +195,10 @@ namespace poundfe
         d.changed = true;
       }
 
-      /// rigidDiaphragm perpDirn rNode cNode1 cNode2 ... (3D, -ndf 6).
+      std::pair<std::string, int> calling_line(Tcl_Interp *interp);
+
+      /// rigidDiaphragm perpDirn rNode cNode1 cNode2 ... (3D, -ndf 6); its
+      /// file and line kept for the errors its constraints meet at analyze.
       void
       rigid_diaphragm(Session &s, Words &w)
       {
@@ -214,6 +219,9 @@ namespace poundfe
           }
         if (!w.done())
           throw ScriptError("'" + w.peek() + "' is not a node's tag");
+        const auto [file, line] = calling_line(w.interp);
+        if (line > 0)
+          diaphragm.where = std::filesystem::path(file).filename().string() + ":" + text_of(line);
         d.diaphragms.push_back(diaphragm);
         d.changed = true;
       }
@@ -319,49 +327,105 @@ namespace poundfe
         add_element(d, opensees::make_zero_length(d, tag, z));
       }
 
+      /// "'word'" for the word where something is due, or the line's end.
+      std::string
+      where_due(const Words &w)
+      {
+        return w.done() ? std::string("the end of the line") : "'" + w.peek() + "'";
+      }
+
+      /// The values of a twoNodeLink's option taking one of `counts` numbers
+      /// (ascending); the word where the next is due, or the first in excess,
+      /// named when their number is none of them.
+      std::vector<double>
+      link_option_values(Words &w, const std::string &link, const std::string &option,
+                         const std::vector<std::size_t> &counts, const std::string &model = "")
+      {
+        std::vector<std::string> texts;
+        double                   value;
+        while (!w.done() && Tcl_GetDouble(nullptr, w.peek().c_str(), &value) == TCL_OK)
+          texts.push_back(w.word("a value"));
+        using std::to_string;
+        std::string takes = "takes " + to_string(counts[0]);
+        if (counts.size() > 1)
+          takes += " or " + to_string(counts[1]);
+        takes += (counts.back() == 1 ? " value" : " values") + model;
+        const std::size_t n = texts.size();
+        if (n > counts.back())
+          throw ScriptError(link + ": '" + texts[counts.back()] + "' is value " +
+                            to_string(counts.back() + 1) + " of " + option + ", which " + takes);
+        if (std::find(counts.begin(), counts.end(), n) == counts.end())
+          throw ScriptError(link + ": " + where_due(w) + " where value " + to_string(n + 1) +
+                            " of " + option + " is due (" + option + " " + takes + ")");
+        std::vector<double> values;
+        for (const std::string &text : texts)
+          {
+            Tcl_GetDouble(nullptr, text.c_str(), &value);
+            if (!std::isfinite(value))
+              throw ScriptError(link + ": " + option + " value '" + text + "' is not finite");
+            values.push_back(value);
+          }
+        return values;
+      }
+
+      /// -mat's tags and -dir's directions, one for each, the word where
+      /// one is missing or the first in excess named.
+      void
+      link_materials_and_directions(Words &w, const std::string &link,
+                                    opensees::TwoNodeLinkData &data)
+      {
+        if (w.done() || w.peek() != "-mat")
+          throw ScriptError(link + ": " + where_due(w) + " where -mat is due");
+        w.word("-mat");
+        data.materials = w.integers("a material's tag");
+        if (data.materials.empty())
+          throw ScriptError(link + ": " + where_due(w) + " where a material's tag is due");
+        if (w.done() || (w.peek() != "-dir" && w.peek() != "-dof"))
+          throw ScriptError(link + ": " + where_due(w) + " where a material's tag or -dir is due");
+        w.word("-dir");
+        const std::size_t n = data.materials.size();
+        while (data.directions.size() < n && !w.done() && w.peek()[0] != '-')
+          data.directions.push_back(w.integer("a direction"));
+        if (data.directions.size() < n)
+          throw ScriptError(link + ": " + where_due(w) + " where the direction of material " +
+                            text_of(data.materials[data.directions.size()]) + " is due");
+        int excess;
+        if (!w.done() && Tcl_GetInt(nullptr, w.peek().c_str(), &excess) == TCL_OK)
+          throw ScriptError(link + ": direction '" + w.peek() + "' has no material (-mat gives " +
+                            std::to_string(n) + ")");
+      }
+
       /// twoNodeLink tag i j -mat m1 m2 ... -dir d1 d2 ... <-orient <x1 x2 x3>
       /// yp1 yp2 yp3> <-pDelta ratios> <-shearDist ratios> <-doRayleigh>
-      /// (OpenSees's order: -mat, then -dir, then the options).
+      /// (OpenSees's order: -mat, then -dir, then the options). A bad word is
+      /// named, as is the word where a missing value is due.
       void
       two_node_link(opensees::Domain &d, Words &w)
       {
         const int                 tag = w.integer("the element's tag");
-        opensees::TwoNodeLinkData link;
-        link.nodes = {{w.integer("node i"), w.integer("node j")}};
-        if (w.word("-mat") != "-mat")
-          throw ScriptError("want: element twoNodeLink tag i j -mat tags -dir dirs <options>");
-        link.materials = w.integers("a material's tag");
-        if (w.done() || (w.peek() != "-dir" && w.peek() != "-dof"))
-          throw ScriptError("want: element twoNodeLink tag i j -mat tags -dir dirs <options>");
-        w.word("-dir");
-        link.directions = w.integers("a direction");
-        if (link.materials.empty() || link.materials.size() != link.directions.size())
-          throw ScriptError("twoNodeLink " + text_of(tag) +
-                            " needs as many -dir directions as -mat materials, at least one");
+        const std::string         link = "twoNodeLink " + text_of(tag);
+        opensees::TwoNodeLinkData data;
+        data.nodes = {{w.integer("node i"), w.integer("node j")}};
+        link_materials_and_directions(w, link, data);
         const std::size_t ratios = d.ndm == 2 ? 2 : 4, distances = d.ndm == 2 ? 1 : 2;
+        const std::string model = " in -ndm " + text_of(static_cast<int>(d.ndm));
         while (!w.done())
           {
             const std::string option = w.word("an option");
             if (option == "-orient")
-              link.orient = w.numbers("a component of -orient");
+              data.orient = link_option_values(w, link, option, {3, 6});
             else if (option == "-pDelta")
-              link.p_delta = w.numbers("a moment ratio");
+              data.p_delta = link_option_values(w, link, option, {ratios}, model);
             else if (option == "-shearDist")
-              link.shear_distance = w.numbers("a shear distance ratio");
+              data.shear_distance = link_option_values(w, link, option, {distances}, model);
             else if (option == "-doRayleigh")
-              link.rayleigh = true;
+              data.rayleigh = true;
+            else if (option[0] != '-')
+              throw ScriptError(link + ": '" + option + "' where an option is due");
             else
               unsupported("element twoNodeLink option '" + option + "'");
-            if (option == "-orient" && link.orient.size() != 3 && link.orient.size() != 6)
-              throw ScriptError("twoNodeLink -orient takes 3 or 6 values");
-            if (option == "-pDelta" && link.p_delta.size() != ratios)
-              throw ScriptError("twoNodeLink -pDelta takes " + text_of(ratios) +
-                                " ratios in this model");
-            if (option == "-shearDist" && link.shear_distance.size() != distances)
-              throw ScriptError("twoNodeLink -shearDist takes " + text_of(distances) +
-                                " ratios in this model");
           }
-        add_element(d, opensees::make_two_node_link(d, tag, link));
+        add_element(d, opensees::make_two_node_link(d, tag, data));
       }
 
       /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>

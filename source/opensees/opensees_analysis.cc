@@ -129,9 +129,11 @@ namespace poundfe
           const unsigned int a = (d.perpendicular + 1) % 3, b = (d.perpendicular + 2) % 3,
                              r = 3 + d.perpendicular;
           const Node        &retained = domain.node(d.retained);
+          // the diaphragm's own command named: the error surfaces at analyze
+          const std::string name = "rigidDiaphragm" + (d.where.empty() ? "" : " (" + d.where + ")");
           for (const unsigned int k : {a, b, r})
             if (retained.equation[k] < -1)
-              throw ScriptError("rigidDiaphragm: the retained node " + std::to_string(d.retained) +
+              throw ScriptError(name + ": the retained node " + std::to_string(d.retained) +
                                 " is itself constrained along DOF " + std::to_string(k + 1));
           const auto term = [&](const unsigned int k, const double c) {
             return std::make_pair(retained.equation[k], c);
@@ -144,11 +146,11 @@ namespace poundfe
               for (const unsigned int k : {a, b, r})
                 {
                   if (node.fixed[k] || node.equation[k] != -1)
-                    throw ScriptError("rigidDiaphragm: node " + std::to_string(c) + " DOF " +
+                    throw ScriptError(name + ": node " + std::to_string(c) + " DOF " +
                                       std::to_string(k + 1) +
                                       " is fixed or constrained already");
                   if (node.mass[k] + node.element_mass[k] != 0)
-                    throw ScriptError("rigidDiaphragm: node " + std::to_string(c) +
+                    throw ScriptError(name + ": node " + std::to_string(c) +
                                       " has mass along DOF " + std::to_string(k + 1) +
                                       ": poundfe takes a diaphragm's mass at its retained node");
                 }

@@ -11,7 +11,8 @@
 // (written out as the 12 x 12 matrix); P-Delta (PDeltaCrdTransf3d) adds
 // N (u_l1 - u_l7)/L to the local forces 1 and -7, N (u_l2 - u_l8)/L to 2
 // and -8, and N/L [[1, -1], [-1, 1]] on the DOFs (1, 7) and (2, 8) of the
-// stiffness (N without its variation, as OpenSees's).
+// stiffness (N without its variation, as OpenSees's); the response
+// localForce is k_l u_l without those shears (ElasticBeam3d::getResponse).
 #include <poundfe/opensees/opensees_domain.h>
 
 #include <Eigen/Geometry>
@@ -125,9 +126,12 @@ namespace poundfe
         std::vector<double>
         response(const std::vector<std::string> &words) const override
         {
+          // ElasticBeam3d's local forces are its basic forces' (shears (M_i +
+          // M_j)/L): PDeltaCrdTransf3d's shears N (u_l1 - u_l7)/L enter the
+          // resisting force, not this response
           if (words.size() == 1 && (words[0] == "localForce" || words[0] == "localForces"))
             {
-              const Vector pl = R * force();
+              const Vector pl = kl0 * ul;
               return std::vector<double>(pl.data(), pl.data() + pl.size());
             }
           return Element::response(words);

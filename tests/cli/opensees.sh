@@ -10,7 +10,11 @@
 #     not exist, a script error, a Parallel of a missing material or with a
 #     factor short, an unknown MinMax option, a Series -iter short of its
 #     tolerance, a ViscousDamper with NM 4 or 5 values, a twoNodeLink with
-#     -mass or a direction the model lacks, a Hertzdamp short of values
+#     -mass or a direction the model lacks, a twoNodeLink's word where a
+#     direction, -mat, a material or an option's value is due (named) and a
+#     direction or a value in excess, rigidLink bar with a third node, a
+#     rigidDiaphragm's node fixed or with mass (named with the diaphragm's
+#     own line at analyze), a Hertzdamp short of values
 #     (OpenSees's usage line) or with a word for a number, a Steel02 with 5
 #     values, a word after ElasticPPGap's values, a
 #     BoucWen with ko < 0: one line naming the file and line, exit 1, no
@@ -336,6 +340,24 @@ printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 
   | bad link-mass "6: element twoNodeLink option '-mass': poundfe does not support it" || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 2\n' \
   | bad link-direction '6: element: twoNodeLink 1: -dir 2 is not one of 1 to 1' || exit 1
+# a twoNodeLink's or rigidLink's bad word named, or the word where one is due
+link() { printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 %s\n' "$1"; }
+link "-mat 1 1 -dir 1" \
+  | bad link-directions-short '6: element: twoNodeLink 1: the end of the line where the direction of material 1 is due' || exit 1
+link "-mat 1 -dir 1 1 -doRayleigh" \
+  | bad link-directions-long "6: element: twoNodeLink 1: direction '1' has no material (-mat gives 1)" || exit 1
+link "-mat 1 x -dir 1" \
+  | bad link-material-word "6: element: twoNodeLink 1: 'x' where a material's tag or -dir is due" || exit 1
+link "-dir 1" | bad link-no-mat "6: element: twoNodeLink 1: '-dir' where -mat is due" || exit 1
+link "-mat 1 -dir 1 -orient 1.0 0.0 -doRayleigh" \
+  | bad link-orient-short "6: element: twoNodeLink 1: '-doRayleigh' where value 3 of -orient is due (-orient takes 3 or 6 values)" || exit 1
+link "-mat 1 -dir 1 -pDelta 0.1 0.2 0.3 0.4 0.5" \
+  | bad link-pdelta-long "6: element: twoNodeLink 1: '0.5' is value 5 of -pDelta, which takes 4 values in -ndm 1" || exit 1
+link "-mat 1 -dir 1 -shearDist 0.5 abc" \
+  | bad link-shear-word "6: element: twoNodeLink 1: 'abc' where value 2 of -shearDist is due (-shearDist takes 2 values in -ndm 1)" || exit 1
+link "-mat 1 -dir 1 1.5" | bad link-stray-word "6: element: twoNodeLink 1: '1.5' where an option is due" || exit 1
+printf 'rigidLink bar 1 2 3\n' \
+  | bad rigid-link-extra "5: rigidLink: '3' after the constrained node: rigidLink bar takes two nodes" || exit 1
 printf 'uniaxialMaterial ViscousDamper 1 1.0e8 2.0e6 0.5 0.0 4 1.0e-6 1.0e-10 15\n' \
   | bad damper-method "5: uniaxialMaterial: parameter 'NM': ViscousDamper: must be 1, 2 or 3" || exit 1
 printf 'uniaxialMaterial ViscousDamper 1 1.0e8 2.0e6 0.5 0.0 1\n' \
@@ -417,4 +439,29 @@ import sys
 three, fifteen, twenty = (float(v) for v in open(sys.argv[1]).read().split("steel02")[1].split())
 assert three == fifteen and abs(three - twenty) > 1e-6 * abs(three), (three, fifteen, twenty)
 PY
+# a rigidDiaphragm's constrained node fixed in the plane, or with mass there:
+# refused at analyze (the constraints are numbered then), naming the node, the
+# DOF and the diaphragm's own line; exit 1
+mkdir -p "$work/diaphragm"
+for node2 in "node 2 1.0 0.0 0.0 -mass 1.0 1.0 1.0 0.0 0.0 0.0" "node 2 1.0 0.0 0.0"; do
+  cat > "$work/diaphragm/s.tcl" <<TCL
+model basic -ndm 3 -ndf 6
+node 1 0.0 0.0 0.0
+$node2
+node 3 0.0 1.0 0.0
+fix 3 0 1 0 0 0 0
+rigidDiaphragm 3 1 2 3
+integrator LoadControl 0.1
+analysis Static
+analyze 1
+TCL
+  "$poundfe" opensees "$work/diaphragm/s.tcl" > /dev/null 2> "$work/diaphragm/err"
+  [ $? = 1 ] || fail "diaphragm: exit status"
+  case "$node2" in
+    *-mass*) why="node 2 has mass along DOF 1: poundfe takes a diaphragm's mass at its retained node" ;;
+    *) why="node 3 DOF 2 is fixed or constrained already" ;;
+  esac
+  grep -qxF "poundfe: error: $work/diaphragm/s.tcl:9: analyze: rigidDiaphragm (s.tcl:6): $why" \
+    "$work/diaphragm/err" || { cat "$work/diaphragm/err"; fail "diaphragm: message"; }
+done
 echo "opensees: ok"

@@ -57,10 +57,12 @@ if {$case eq "2d"} {
     uniaxialMaterial Elastic 13 1.0e7
     uniaxialMaterial Elastic 14 4.0e7
     uniaxialMaterial Elastic 15 3.0e7
-    element twoNodeLink 1 1 2 -mat 10 11 12 13 14 15 -dir 1 2 3 4 5 6 -orient 1.0 0.0 0.0 \
-        -shearDist 0.4 0.6 -pDelta 0.1 0.2 0.3 0.1
-    element twoNodeLink 2 3 4 -mat 10 12 11 13 15 14 -dir 1 2 3 4 5 6 -orient 0.0 1.0 0.0 \
-        -pDelta 0.5 0.5 0.0 0.0 -doRayleigh
+    # -orient's yp alone last: OpenSees 3.8 reads six values after -orient
+    # whenever six words or more follow it
+    element twoNodeLink 1 1 2 -mat 10 11 12 13 14 15 -dir 1 2 3 4 5 6 \
+        -shearDist 0.4 0.6 -pDelta 0.1 0.2 0.3 0.1 -orient 1.0 0.0 0.0
+    element twoNodeLink 2 3 4 -mat 10 12 11 13 15 14 -dir 1 2 3 4 5 6 \
+        -pDelta 0.5 0.5 0.0 0.0 -doRayleigh -orient 0.0 1.0 0.0
     uniaxialMaterial ElasticPPGap 20 2.0e9 -4.0e6 -0.01 0.1 damage
     # the gap's axis along the diagonal, given as -orient's x and yp
     element twoNodeLink 3 2 4 -mat 20 -dir 1 -orient 0.6 0.8 0.0 -0.8 0.6 0.0

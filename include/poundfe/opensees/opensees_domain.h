@@ -182,6 +182,7 @@ namespace poundfe
       unsigned int     perpendicular = 2; // 0-based axis
       int              retained      = 0;
       std::vector<int> constrained;
+      std::string      where; // "file:line" of its command ("" outside a file)
     };
 
     struct RayleighFactors
