@@ -8,27 +8,50 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/report/opensees_export.h>
 
+#include "opensees_export_parts.h"
+
+#include <algorithm>
 #include <sstream>
+
+namespace poundfe::opensees_export
+{
+  std::string
+  exact_text(const double value)
+  {
+    std::ostringstream text;
+    text.precision(17);
+    text << value;
+    return text.str();
+  }
+
+  std::string
+  building_entry(const unsigned int b, const std::string &entry)
+  {
+    return "Building " + std::to_string(b + 1) + "/" + entry;
+  }
+
+  double
+  node_mass(const Analysis &analysis, const unsigned int node, const Component c,
+            const InputFile &input)
+  {
+    const int eq = analysis.model.equation(Model::dof(node, c));
+    if (eq < 0)
+      return 0;
+    double diagonal = 0;
+    for (SparseMatrix::InnerIterator it(analysis.system.mass, eq); it; ++it)
+      if (it.row() == eq)
+        diagonal = it.value();
+      else if (it.value() != 0)
+        input.fail("Model/Mass matrix", "export-opensees writes lumped masses only");
+    return diagonal;
+  }
+} // namespace poundfe::opensees_export
 
 namespace poundfe
 {
   namespace
   {
-    /// A number as OpenSees reads it back to the last bit.
-    std::string
-    exact_text(const double value)
-    {
-      std::ostringstream text;
-      text.precision(17);
-      text << value;
-      return text.str();
-    }
-
-    std::string
-    building_entry(const unsigned int b, const std::string &entry)
-    {
-      return "Building " + std::to_string(b + 1) + "/" + entry;
-    }
+    using namespace opensees_export;
 
     /// The contact laws whose equations OpenSees 3.8's gap materials have:
     /// linear (ElasticPPGap), hertz (Hertzdamp without damping), jankowski
@@ -59,16 +82,15 @@ namespace poundfe
     {
       const Model &model = analysis.model;
       if (model.dimension != 2)
-        input.fail("Model/Dimension", "export-opensees writes 2D shear buildings only");
+        input.fail("Model/Dimension", "export-opensees writes 2D models only");
       if (model.geometric_nonlinearity != GeometricNonlinearity::none)
-        input.fail("Model/Geometric nonlinearity", "export-opensees writes no P-Delta");
-      if (model.gravity_analysis.enabled)
-        input.fail("Model/Gravity analysis/Type", "export-opensees writes no gravity analysis");
+        input.fail("Model/Geometric nonlinearity",
+                   "export-opensees writes no P-Delta: poundfe's is the geometric stiffness "
+                   "of the gravity state's axial forces, held constant, OpenSees's PDelta "
+                   "transformation that of each step's axial force");
+      refuse_frame_parts(analysis, input);
       for (unsigned int b = 0; b < model.buildings.size(); ++b)
         {
-          if (model.buildings[b].type != BuildingType::shear)
-            input.fail(building_entry(b, "Type"),
-                       "export-opensees writes shear buildings only (not frames yet)");
           if (model.buildings[b].damping.is_modal())
             input.fail(building_entry(b, "Damping/Type"),
                        "modal damping has no element form in OpenSees 3.8's Tcl commands "
@@ -122,28 +144,52 @@ namespace poundfe
                    "export-opensees starts from rest only");
     }
 
-    /// The lumped mass on the node's ux (0 when fixed); InputError when M
-    /// couples it to another equation.
-    double
-    node_mass(const Analysis &analysis, const unsigned int node, const InputFile &input)
+    /// "node tag x [y]" of a node at `position` in the script's space.
+    std::string
+    node_line(const int tag, const Point2 &position, const OpenSeesExport &out)
     {
-      const int eq = analysis.model.equation(Model::dof(node, Component::ux));
-      if (eq < 0)
-        return 0;
-      double diagonal = 0;
-      for (SparseMatrix::InnerIterator it(analysis.system.mass, eq); it; ++it)
-        if (it.row() == eq)
-          diagonal = it.value();
-        else if (it.value() != 0)
-          input.fail("Model/Mass matrix", "export-opensees writes lumped masses only");
-      return diagonal;
+      return "node " + std::to_string(tag) + " " + exact_text(position.x) +
+             (out.ndm == 2 ? " " + exact_text(position.y) : std::string());
     }
 
-    /// Numbers of the script being written: the next free tags.
-    struct Tags
+    /// A node fixed in every DOF (a dashpot's ground, a barrier).
+    void
+    add_fixed_node(const int tag, const Point2 &position, const std::string &what,
+                   OpenSeesExport &out)
     {
-      int node = 0, material = 1, element = 1;
-    };
+      out.model.push_back(node_line(tag, position, out));
+      std::string fixity = "fix " + std::to_string(tag);
+      for (unsigned int c = 0; c < out.ndf; ++c)
+        fixity += " 1";
+      out.model.push_back(fixity + (what.empty() ? "" : " ;# " + what));
+    }
+
+    /// The a0 M term of node n with `masses` on its DOFs: a zeroLength of
+    /// dashpots Elastic 0 a0 m, one a DOF with a mass, to a fixed node.
+    void
+    describe_mass_dashpots(const Analysis &analysis, const unsigned int n,
+                           const std::vector<double> &masses, Tags &tags, OpenSeesExport &out)
+    {
+      const Node  &node = analysis.model.nodes[n];
+      const double a0   = analysis.system.rayleigh.at(node.building)[0];
+      std::string  materials, directions;
+      for (unsigned int c = 0; c < masses.size(); ++c)
+        if (a0 != 0 && masses[c] != 0)
+          {
+            out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) +
+                                " 0.0 " + exact_text(a0 * masses[c]) +
+                                " ;# a0 m of the Rayleigh damping");
+            materials += " " + std::to_string(tags.material++);
+            directions += " " + std::to_string(c + 1);
+          }
+      if (materials.empty())
+        return;
+      const int ground = ++tags.node;
+      add_fixed_node(ground, node.position, "", out);
+      out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                          std::to_string(ground) + " " + std::to_string(n + 1) + " -mat" +
+                          materials + " -dir" + directions);
+    }
 
     /// Each building's nodes (with masses and fixities) and the dashpots of
     /// its a0 M term to fixed nodes of their own.
@@ -155,30 +201,25 @@ namespace poundfe
       for (unsigned int n = 0; n < model.n_nodes(); ++n)
         {
           const Node &node = model.nodes[n];
-          for (const Component c : {Component::uy, Component::rz})
-            if (model.equation(Model::dof(n, c)) >= 0)
+          for (unsigned int c = out.ndf; c < n_dofs_per_node; ++c)
+            if (model.equation(Model::dof(n, Component(c))) >= 0)
               input.fail(building_entry(node.building, "Type"),
                          "a shear building's node moves in uy or rz");
-          const double m = node_mass(analysis, n, input);
-          std::string  line = "node " + std::to_string(n + 1) + " " + exact_text(node.position.x);
-          if (m != 0)
-            line += " -mass " + exact_text(m);
-          out.model.push_back(line);
-          if (model.equation(Model::dof(n, Component::ux)) < 0)
-            out.model.push_back("fix " + std::to_string(n + 1) + " 1");
-          const double a0 = analysis.system.rayleigh.at(node.building)[0];
-          if (a0 != 0 && m != 0)
+          std::vector<double> masses(out.ndf);
+          std::string         mass_text, fixity;
+          for (unsigned int c = 0; c < out.ndf; ++c)
             {
-              const int ground = ++tags.node;
-              out.model.push_back("node " + std::to_string(ground) + " " +
-                                  exact_text(node.position.x));
-              out.model.push_back("fix " + std::to_string(ground) + " 1");
-              out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) +
-                                  " 0.0 " + exact_text(a0 * m) + " ;# a0 m of the Rayleigh damping");
-              out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
-                                  std::to_string(ground) + " " + std::to_string(n + 1) +
-                                  " -mat " + std::to_string(tags.material++) + " -dir 1");
+              masses[c] = node_mass(analysis, n, Component(c), input);
+              mass_text += " " + exact_text(masses[c]);
+              fixity += model.equation(Model::dof(n, Component(c))) < 0 ? " 1" : " 0";
             }
+          const bool has_mass = std::any_of(masses.begin(), masses.end(),
+                                            [](const double m) { return m != 0; });
+          out.model.push_back(node_line(n + 1, node.position, out) +
+                              (has_mass ? " -mass" + mass_text : std::string()));
+          if (fixity.find('1') != std::string::npos)
+            out.model.push_back("fix " + std::to_string(n + 1) + fixity);
+          describe_mass_dashpots(analysis, n, masses, tags, out);
         }
     }
 
@@ -188,8 +229,9 @@ namespace poundfe
     describe_storeys(const Analysis &analysis, Tags &tags, OpenSeesExport &out)
     {
       const Model &model = analysis.model;
-      out.model.push_back("# storeys: zeroLength on Elastic k eta, eta = a1 k + the storey's "
-                          "dashpot");
+      if (!model.links.empty())
+        out.model.push_back("# storeys: zeroLength on Elastic k eta, eta = a1 k + the storey's "
+                            "dashpot");
       for (const StoreyLink &link : model.links)
         {
           const double a1  = analysis.system.rayleigh.at(link.building)[1];
@@ -265,8 +307,7 @@ namespace poundfe
             else
               {
                 const int barrier = ++tags.node;
-                out.model.push_back("node " + std::to_string(barrier) + " 0.0");
-                out.model.push_back("fix " + std::to_string(barrier) + " 1 ;# the barrier");
+                add_fixed_node(barrier, Point2{0.0, gap.level}, "the barrier", out);
                 ends[side] = std::to_string(barrier);
               }
           out.model.push_back("uniaxialMaterial " + gap_material(model.contact, gap) + " " +
@@ -293,10 +334,16 @@ namespace poundfe
     OpenSeesExport out;
     Tags           tags;
     tags.node = analysis.model.n_nodes();
-    out.model.push_back("# nodes: a floor's ux with its mass; the base and the damping's "
-                        "ground nodes fixed");
+    if (in_plane(analysis.model))
+      out.ndm = 2, out.ndf = 3;
+    out.model.push_back(out.ndf == 1 ? "# nodes: a floor's ux with its mass; the base and the "
+                                       "damping's ground nodes fixed" :
+                                       "# nodes (x, y): M's masses on ux, uy, rz; the "
+                                       "supports and the damping's ground nodes fixed");
     describe_nodes(analysis, parameters.input, tags, out);
     describe_storeys(analysis, tags, out);
+    describe_members(analysis, parameters.input, tags, out);
+    describe_gravity(analysis, out);
     describe_gaps(analysis, tags, out);
     const NewmarkParameters &newmark = parameters.time_integration.newmark;
     out.time_step                    = newmark.time_step;

@@ -33,12 +33,14 @@ same_floors() { # OPENSEES_DIR RUN_DIR SCRIPT TOLERANCE
 import re, sys
 import numpy as np
 ours, run, script, tolerance = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
-names = re.search(r"columns: time (.*)", open(script).read()).group(1).split()
+columns = re.search(r"columns: time (.*)", open(script).read()).group(1).split()
 table = np.loadtxt(ours + "/floor_disp.out", ndmin=2)
 csv = np.genfromtxt(run + "/floor_displacement.csv", delimiter=",", names=True)
 assert len(csv) == len(table) + 1, (len(csv), len(table))  # the run's row at t = 0
-for j, name in enumerate(names):
-    mine, theirs = table[:, j + 1], csv[name][1:]
+# a frame's floor: a column per node, its displacement their mean (poundfe's)
+for name in dict.fromkeys(columns):
+    mine = table[:, [j + 1 for j, c in enumerate(columns) if c == name]].mean(axis=1)
+    theirs = csv[name][1:]
     peak = np.abs(theirs).max()
     d = np.abs(mine - theirs).max() / peak
     print(f"{name}: peak {peak:.6e} largest difference / peak {d:.1e}")
@@ -78,8 +80,52 @@ for law in hertz jankowski; do
   grep -q "^uniaxialMaterial $( [ $law = hertz ] && echo Hertzdamp || echo JankowskiImpact) " \
     "$work/shear-pair-pounding-$law/script/model.tcl" || fail "$law: not its OpenSees material"
 done
-# the gaps closed: the pounding pair's scripts have gap forces, some non-zero
-for case in shear-pair-pounding shear-pair-pounding-hertz shear-pair-pounding-jankowski; do
+# 2D frames of elastic members (elasticBeamColumn on geomTransf Linear): the
+# same M, K, C and Newmark, 1e-9 as the shear buildings
+for name in one-storey-frame two-storey-frame three-storey-frame; do
+  check_example $name 1e-9
+done
+# with the gravity analysis first, on two unequal bays: the floors at 1e-9,
+# and the gravity state, OpenSees's vertical displacement of the node where
+# poundfe's is largest (summary.json), at 1e-9 of it (the same linear solve)
+gravity=(--set "Model/Gravity analysis/Type=static" --set "Building 1/Number of bays=2"
+  --set "Building 1/Bay widths=6.0, 4.0")
+case_suffix=-gravity check_example three-storey-frame 1e-9 "${gravity[@]}"
+dir=$work/three-storey-frame-gravity
+grep -q "^pattern Plain 2 Linear {" "$dir/script/model.tcl" || fail "gravity: no gravity pattern"
+"$python" - "$dir" "$poundfe" <<'PY' || fail "gravity: the gravity state"
+import json, re, subprocess, sys
+dir, poundfe = sys.argv[1], sys.argv[2]
+summary = json.load(open(dir + "/run/summary.json"))
+text = json.dumps(summary)
+peak = float(re.search(r'"peak_displacement_m": ([-0-9.e]+)', text).group(1))
+where = re.search(r'"peak_displacement_at": "\S+ node \d+ at \(([-0-9.e]+), ([-0-9.e]+)\) uy"',
+                  text)
+script = open(dir + "/script/model.tcl").read()
+tag = re.search(r"^node (\d+) %s %s\b" % where.groups(), script, re.M).group(1)
+probe = script.replace("wipeAnalysis\n", 'puts "gravity uy [nodeDisp %s 2]"\nwipeAnalysis\n' % tag)
+open(dir + "/probe.tcl", "w").write(probe.replace("[file dirname [info script]]",
+                                                  '"%s/script"' % dir))
+out = subprocess.run([poundfe, "opensees", dir + "/probe.tcl", dir + "/probe"],
+                     capture_output=True, text=True).stdout
+uy = float(re.search(r"gravity uy (\S+)", out).group(1))
+print(f"gravity: node {tag} uy {uy:.9e}, poundfe's peak {peak:.9e}")
+assert abs(abs(uy) - peak) <= 1e-9 * peak, (uy, peak)
+PY
+# a pounding pair of frames: two-buildings without its hinges, with the linear
+# law and one set of Rayleigh coefficients (OpenSees's rayleigh acts on every
+# element), without event location: 1e-6 as the shear pairs
+frame_pair=(--set "Building 1/Hinges/Locations=" --set "Building 2/Hinges/Locations="
+  --set "Contact/Law=linear" "${no_events[@]}")
+for b in 1 2; do
+  frame_pair+=(--set "Building $b/Damping/Type=coefficients" --set "Building $b/Damping/a0=0.5"
+    --set "Building $b/Damping/a1=0.002")
+done
+check_example two-buildings 1e-6 "${frame_pair[@]}"
+
+# the gaps closed: the pounding pairs' scripts have gap forces, some non-zero
+for case in shear-pair-pounding shear-pair-pounding-hertz shear-pair-pounding-jankowski \
+  two-buildings; do
   "$python" -c "
 import numpy as np, sys
 f = np.loadtxt('$work/$case/script/gap_force.out', ndmin=2)
@@ -95,7 +141,10 @@ refused() { # NAME EXPECTED-ENTRY-AND-MESSAGE-PART
   grep -qF -- "$2" "$dir.err" || { cat "$dir.err"; fail "$1: message"; }
   [ ! -e "$dir/model.tcl" ] || fail "$1: model.tcl written"
 }
-refused two-storey-frame "'Building 1/Type': export-opensees writes shear buildings only"
+refused three-storey-frame-hinges "'Building 1/Hinges/Locations': export-opensees writes frames of elastic members only"
+refused fibre-frame-pounding "'Building 1/Member model': export-opensees writes frames of elastic members only"
+refused pushover-frame "'Model/Geometric nonlinearity': export-opensees writes no P-Delta"
+refused 3d-torsional-pair "'Model/Dimension': export-opensees writes 2D models only"
 refused bouc-wen-sdof "'Building 1/Storey yield drifts': export-opensees writes elastic storeys only"
 refused spillway-abutment "'Nodal forces/File': export-opensees writes no nodal forces"
 # laws whose OpenSees namesakes differ: refused, saying how

@@ -1,0 +1,141 @@
+// The 2D frames of a poundfe model in an OpenSees 3.8 script (report/
+// opensees_export.h). A member is poundfe's Euler-Bernoulli frame element
+// (elements/frame_element.h: the exact stiffness of a prismatic member loaded
+// at its ends, k = E I / L [12/L^2, 6/L, 4, 2] in bending, E A / L axially),
+// which is OpenSees's elasticBeamColumn on geomTransf Linear
+// (ElasticBeam2d.cpp); its mass is in M, which the nodes carry. Rayleigh's
+// a1 K is `rayleigh 0 0 a1 0`: betaKinit, the initial stiffness of the
+// elements that take Rayleigh damping (the members; zeroLength does not by
+// default, ZeroLength.cpp), as poundfe's C = a0 M + a1 K, K without the
+// gaps (assembly/linear_system.cc, assemble_damping). The gravity analysis
+// is OpenSees's usual one (Plain pattern on a Linear series, LoadControl
+// 1/n over n steps, loadConst -time 0) with the loads poundfe applies
+// (assembly/linear_system.h, total_gravity_loads).
+#include <poundfe/base/exceptions.h>
+
+#include "opensees_export_parts.h"
+
+namespace poundfe::opensees_export
+{
+  namespace
+  {
+    /// The a1 of the frames' buildings, one for all: OpenSees's rayleigh
+    /// acts on every element (its per-building form, region, is not among
+    /// `poundfe opensees`'s commands).
+    double
+    frames_stiffness_damping(const Analysis &analysis, const InputFile &input)
+    {
+      const Model &model = analysis.model;
+      const double a1    = analysis.system.rayleigh.at(model.members.front().building)[1];
+      for (const Member &member : model.members)
+        if (const double b1 = analysis.system.rayleigh.at(member.building)[1]; b1 != a1)
+          input.fail(building_entry(member.building, "Damping/Type"),
+                     "its stiffness-proportional Rayleigh coefficient a1 = " + exact_text(b1) +
+                       " differs from building " +
+                       std::to_string(model.members.front().building + 1) + "'s " +
+                       exact_text(a1) +
+                       ": export-opensees writes one a1 for every frame (OpenSees's rayleigh "
+                       "command; a coefficient per building needs OpenSees's region, which "
+                       "`poundfe opensees` does not run); give the frames the same Damping/"
+                       "Coefficients");
+      return a1;
+    }
+
+    /// The loads of node n's DOFs among `loads` (by equation), each
+    /// equation's once: `seen` marks those given.
+    std::string
+    node_loads(const Model &model, const unsigned int n, const Vector &loads,
+               std::vector<char> &seen)
+    {
+      std::string text;
+      bool        any = false;
+      for (unsigned int c = 0; c < n_dofs_per_node; ++c)
+        {
+          const int eq    = model.equation(Model::dof(n, Component(c)));
+          double    value = 0;
+          if (eq >= 0 && !seen[eq])
+            {
+              seen[eq] = 1;
+              value    = loads[eq];
+            }
+          any = any || value != 0;
+          text += " " + exact_text(value);
+        }
+      return any ? "  load " + std::to_string(n + 1) + text : std::string();
+    }
+  } // namespace
+
+  bool
+  in_plane(const Model &model)
+  {
+    for (const Building &building : model.buildings)
+      if (building.type != BuildingType::shear)
+        return true;
+    return false;
+  }
+
+  void
+  refuse_frame_parts(const Analysis &analysis, const InputFile &input)
+  {
+    const Model &model = analysis.model;
+    for (const Hinge &hinge : model.hinges)
+      input.fail(building_entry(hinge.building, "Hinges/Locations"),
+                 "export-opensees writes frames of elastic members only (no Bouc-Wen hinges)");
+    for (const Member &member : model.members)
+      if (member.fibre.fibre())
+        input.fail(building_entry(member.building, "Member model"),
+                   "export-opensees writes frames of elastic members only (no fibre members)");
+  }
+
+  void
+  describe_members(const Analysis &analysis, const InputFile &input, Tags &tags,
+                   OpenSeesExport &out)
+  {
+    const Model &model = analysis.model;
+    if (model.members.empty())
+      return;
+    out.model.push_back("# members: elasticBeamColumn A E Iz on geomTransf Linear (poundfe's "
+                        "Euler-Bernoulli frame element); their mass is on the nodes");
+    out.model.push_back("geomTransf Linear 1");
+    for (const Member &member : model.members)
+      {
+        const Section &s = member.section;
+        out.model.push_back("element elasticBeamColumn " + std::to_string(tags.element++) + " " +
+                            std::to_string(member.nodes[0] + 1) + " " +
+                            std::to_string(member.nodes[1] + 1) + " " + exact_text(s.area) + " " +
+                            exact_text(s.youngs_modulus) + " " + exact_text(s.second_moment) +
+                            " 1 ;# " + member.label);
+      }
+    out.member_stiffness_damping = frames_stiffness_damping(analysis, input);
+  }
+
+  void
+  describe_gravity(const Analysis &analysis, OpenSeesExport &out)
+  {
+    const Model &model = analysis.model;
+    if (!model.gravity_analysis.enabled)
+      return;
+    const unsigned int n_steps = model.gravity_analysis.n_steps;
+    std::vector<std::string> &lines = out.gravity;
+    lines.push_back("# Model/Gravity analysis: the weights of M's masses and the floor loads "
+                    "(Fx Fy Mz), in " + std::to_string(n_steps) +
+                    " load steps, then held through the record");
+    lines.push_back("pattern Plain 2 Linear {");
+    std::vector<char> seen(model.n_equations(), 0); // an equation's load once
+    for (unsigned int n = 0; n < model.n_nodes(); ++n)
+      if (const std::string load = node_loads(model, n, analysis.gravity.applied, seen);
+          !load.empty())
+        lines.push_back(load);
+    lines.push_back("}");
+    for (const std::string &line :
+         {std::string("constraints Plain"), std::string("numberer Plain"),
+          std::string("system BandGeneral"),
+          "test NormDispIncr 1.0e-12 " + std::to_string(model.gravity_analysis.max_iterations),
+          std::string("algorithm Newton"),
+          "integrator LoadControl " + exact_text(1.0 / n_steps), std::string("analysis Static"),
+          "set status [analyze " + std::to_string(n_steps) + "]",
+          std::string("puts \"gravity status $status\""), std::string("loadConst -time 0.0"),
+          std::string("wipeAnalysis")})
+      lines.push_back(line);
+  }
+} // namespace poundfe::opensees_export

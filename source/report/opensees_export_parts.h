@@ -1,0 +1,53 @@
+// The parts of `poundfe export-opensees`'s description shared by its two
+// files (report/opensees_export.cc: shear buildings, gaps, the excitation;
+// report/opensees_export_frames.cc: frames and the gravity analysis). Private
+// to source/report/.
+#ifndef poundfe_report_opensees_export_parts_h
+#define poundfe_report_opensees_export_parts_h
+
+#include <poundfe/base/input_file.h>
+#include <poundfe/report/opensees_export.h>
+
+#include <string>
+
+namespace poundfe::opensees_export
+{
+  /// A number as OpenSees reads it back to the last bit.
+  std::string exact_text(double value);
+
+  /// "Building <b + 1>/entry".
+  std::string building_entry(unsigned int b, const std::string &entry);
+
+  /// Numbers of the script being written: the next free tags.
+  struct Tags
+  {
+    int node = 0, material = 1, element = 1;
+  };
+
+  /// The lumped mass on the node's DOF `c` (0 when fixed); InputError when
+  /// M couples it to another equation.
+  double node_mass(const Analysis &analysis, unsigned int node, Component c,
+                   const InputFile &input);
+
+  /// Whether the model is written in the plane (model basic -ndm 2 -ndf 3):
+  /// some building is not a shear building.
+  bool in_plane(const Model &model);
+
+  /// The parts of a 2D frame OpenSees cannot be given the same way:
+  /// InputError naming the first one's entry.
+  void refuse_frame_parts(const Analysis &analysis, const InputFile &input);
+
+  /// Every node in the plane (-ndm 2 -ndf 3) with its masses and fixities,
+  /// and each building's a0 M as dashpots to fixed nodes of their own.
+  void describe_plane_nodes(const Analysis &analysis, const InputFile &input, Tags &tags,
+                            OpenSeesExport &out);
+
+  /// The frames' members (elasticBeamColumn) and their a1 K (rayleigh).
+  void describe_members(const Analysis &analysis, const InputFile &input, Tags &tags,
+                        OpenSeesExport &out);
+
+  /// Model/Gravity analysis: the loads and the static analysis.
+  void describe_gravity(const Analysis &analysis, OpenSeesExport &out);
+} // namespace poundfe::opensees_export
+
+#endif
