@@ -13,6 +13,8 @@
 // (assembly/linear_system.h, total_gravity_loads).
 #include <poundfe/base/exceptions.h>
 
+#include <algorithm>
+
 #include "opensees_export_parts.h"
 
 namespace poundfe::opensees_export
@@ -63,6 +65,16 @@ namespace poundfe::opensees_export
         }
       return any ? "  load " + std::to_string(n + 1) + text : std::string();
     }
+
+    std::string
+    elastic_member_command(const Member &member, Tags &tags)
+    {
+      const Section &s = member.section;
+      return "element elasticBeamColumn " + std::to_string(tags.element++) + " " +
+             std::to_string(member.nodes[0] + 1) + " " + std::to_string(member.nodes[1] + 1) +
+             " " + exact_text(s.area) + " " + exact_text(s.youngs_modulus) + " " +
+             exact_text(s.second_moment) + " 1";
+    }
   } // namespace
 
   bool
@@ -80,11 +92,7 @@ namespace poundfe::opensees_export
     const Model &model = analysis.model;
     for (const Hinge &hinge : model.hinges)
       input.fail(building_entry(hinge.building, "Hinges/Locations"),
-                 "export-opensees writes frames of elastic members only (no Bouc-Wen hinges)");
-    for (const Member &member : model.members)
-      if (member.fibre.fibre())
-        input.fail(building_entry(member.building, "Member model"),
-                   "export-opensees writes frames of elastic members only (no fibre members)");
+                 "export-opensees writes frames without Bouc-Wen hinges");
   }
 
   void
@@ -94,18 +102,17 @@ namespace poundfe::opensees_export
     const Model &model = analysis.model;
     if (model.members.empty())
       return;
-    out.model.push_back("# members: elasticBeamColumn A E Iz on geomTransf Linear (poundfe's "
-                        "Euler-Bernoulli frame element); their mass is on the nodes");
+    out.model.push_back("# members: elasticBeamColumn A E Iz (poundfe's Euler-Bernoulli frame "
+                        "element) or fibre beam-columns; their mass is on the nodes");
     out.model.push_back("geomTransf Linear 1");
+    if (std::any_of(model.members.begin(), model.members.end(),
+                    [](const Member &m) { return m.fibre.fibre() && m.fibre.p_delta; }))
+      out.model.push_back("geomTransf PDelta 2 ;# the columns of Member transformation PDelta");
     for (const Member &member : model.members)
-      {
-        const Section &s = member.section;
-        out.model.push_back("element elasticBeamColumn " + std::to_string(tags.element++) + " " +
-                            std::to_string(member.nodes[0] + 1) + " " +
-                            std::to_string(member.nodes[1] + 1) + " " + exact_text(s.area) + " " +
-                            exact_text(s.youngs_modulus) + " " + exact_text(s.second_moment) +
-                            " 1 ;# " + member.label);
-      }
+      out.model.push_back(
+        (member.fibre.fibre() ? fibre_member_command(model, member, input, tags, out) :
+                                elastic_member_command(member, tags)) +
+        " ;# " + member.label);
     out.member_stiffness_damping = frames_stiffness_damping(analysis, input);
   }
 

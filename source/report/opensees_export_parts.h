@@ -8,6 +8,8 @@
 #include <poundfe/base/input_file.h>
 #include <poundfe/report/opensees_export.h>
 
+#include <array>
+#include <map>
 #include <string>
 
 namespace poundfe::opensees_export
@@ -21,7 +23,11 @@ namespace poundfe::opensees_export
   /// Numbers of the script being written: the next free tags.
   struct Tags
   {
-    int node = 0, material = 1, element = 1;
+    int node = 0, material = 1, element = 1, section = 1, integration = 1;
+    /// The sections written (Model::section_laws index -> tag) and the
+    /// beamIntegrations ((section, force-based, points) -> tag).
+    std::map<int, int>                sections;
+    std::map<std::array<int, 3>, int> integrations;
   };
 
   /// The lumped mass on the node's DOF `c` (0 when fixed); InputError when
@@ -42,9 +48,16 @@ namespace poundfe::opensees_export
   void describe_plane_nodes(const Analysis &analysis, const InputFile &input, Tags &tags,
                             OpenSeesExport &out);
 
-  /// The frames' members (elasticBeamColumn) and their a1 K (rayleigh).
+  /// The frames' members (elasticBeamColumn, or fibre beam-columns) and
+  /// their a1 K (rayleigh).
   void describe_members(const Analysis &analysis, const InputFile &input, Tags &tags,
                         OpenSeesExport &out);
+
+  /// The element command of a fibre member (report/opensees_export_fibres.cc),
+  /// its section, materials and beamIntegration written first when new;
+  /// geomTransf 1 is Linear, 2 PDelta.
+  std::string fibre_member_command(const Model &model, const Member &member,
+                                   const InputFile &input, Tags &tags, OpenSeesExport &out);
 
   /// Model/Gravity analysis: the loads and the static analysis.
   void describe_gravity(const Analysis &analysis, OpenSeesExport &out);
