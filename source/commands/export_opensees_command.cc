@@ -73,7 +73,7 @@ namespace poundfe
           << " -filePath [file join $here ground_motion.txt]\n"
           << "pattern UniformExcitation 1 1 -accel 1\n";
       write_recorders(e, tcl);
-      tcl << "constraints Plain\nnumberer Plain\nsystem BandGeneral\n"
+      tcl << "constraints " << e.constraints() << "\nnumberer Plain\nsystem BandGeneral\n"
           << (e.nonlinear ? "test NormDispIncr 1.0e-12 " + std::to_string(e.test_iterations) +
                               "\nalgorithm Newton\n" :
                             std::string("algorithm Linear\n"))

@@ -180,7 +180,7 @@ namespace poundfe
                                 " 0.0 " + exact_text(a0 * masses[c]) +
                                 " ;# a0 m of the Rayleigh damping");
             materials += " " + std::to_string(tags.material++);
-            directions += " " + std::to_string(c + 1);
+            directions += c == 2 ? " 6" : " " + std::to_string(c + 1); // rz: dir 6
           }
       if (materials.empty())
         return;
@@ -197,7 +197,8 @@ namespace poundfe
     describe_nodes(const Analysis &analysis, const InputFile &input, Tags &tags,
                    OpenSeesExport &out)
     {
-      const Model &model = analysis.model;
+      const Model     &model = analysis.model;
+      std::vector<int> owner(model.n_equations(), -1); // the first node of each equation
       for (unsigned int n = 0; n < model.n_nodes(); ++n)
         {
           const Node &node = model.nodes[n];
@@ -206,12 +207,20 @@ namespace poundfe
               input.fail(building_entry(node.building, "Type"),
                          "a shear building's node moves in uy or rz");
           std::vector<double> masses(out.ndf);
-          std::string         mass_text, fixity;
+          std::string         mass_text, fixity, tied;
+          int                 tied_to = -1;
           for (unsigned int c = 0; c < out.ndf; ++c)
             {
-              masses[c] = node_mass(analysis, n, Component(c), input);
+              const int eq = model.equation(Model::dof(n, Component(c)));
+              if (eq >= 0 && owner[eq] >= 0) // a hinge's node: the joint's translation
+                {
+                  tied_to = owner[eq];
+                  tied += " " + std::to_string(c + 1);
+                }
+              else if (eq >= 0)
+                owner[eq] = n, masses[c] = node_mass(analysis, n, Component(c), input);
               mass_text += " " + exact_text(masses[c]);
-              fixity += model.equation(Model::dof(n, Component(c))) < 0 ? " 1" : " 0";
+              fixity += eq < 0 ? " 1" : " 0";
             }
           const bool has_mass = std::any_of(masses.begin(), masses.end(),
                                             [](const double m) { return m != 0; });
@@ -219,6 +228,10 @@ namespace poundfe
                               (has_mass ? " -mass" + mass_text : std::string()));
           if (fixity.find('1') != std::string::npos)
             out.model.push_back("fix " + std::to_string(n + 1) + fixity);
+          if (tied_to >= 0)
+            out.model.push_back("equalDOF " + std::to_string(tied_to + 1) + " " +
+                                std::to_string(n + 1) + tied);
+          out.tied = out.tied || tied_to >= 0;
           describe_mass_dashpots(analysis, n, masses, tags, out);
         }
     }
@@ -343,6 +356,7 @@ namespace poundfe
     describe_nodes(analysis, parameters.input, tags, out);
     describe_storeys(analysis, tags, out);
     describe_members(analysis, parameters.input, tags, out);
+    describe_hinges(analysis, tags, out);
     describe_gravity(analysis, out);
     describe_gaps(analysis, tags, out);
     const NewmarkParameters &newmark = parameters.time_integration.newmark;

@@ -14,6 +14,7 @@
 #include <poundfe/base/exceptions.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "opensees_export_parts.h"
 
@@ -89,10 +90,44 @@ namespace poundfe::opensees_export
   void
   refuse_frame_parts(const Analysis &analysis, const InputFile &input)
   {
+    for (const Hinge &hinge : analysis.model.hinges)
+      if (hinge.law.A != 1)
+        input.fail(building_entry(hinge.building, "Bouc-Wen/A"),
+                   "export-opensees writes hinges of A = 1 only: OpenSees's rayleigh damps a "
+                   "zeroLength by its initial tangent alpha k + (1 - alpha) k A, poundfe's C "
+                   "by the hinge's k");
+  }
+
+  void
+  describe_hinges(const Analysis &analysis, Tags &tags, OpenSeesExport &out)
+  {
     const Model &model = analysis.model;
+    if (model.hinges.empty())
+      return;
+    out.model.push_back(
+      "# hinges: zeroLength rz (joint, member end; -dir 6, the rotation about z) on BoucWen alpha k n gamma beta A dA dnu "
+      "deta tol maxIter with z = u_y z_poundfe: gamma and beta over u_y^n, the degradations "
+      "over (1 - alpha) k u_y^2; OpenSeesBoucWen integrates by backward Euler, poundfe by the "
+      "trapezoidal rule, so the two agree as the time step shrinks, not at one step");
     for (const Hinge &hinge : model.hinges)
-      input.fail(building_entry(hinge.building, "Hinges/Locations"),
-                 "export-opensees writes frames without Bouc-Wen hinges");
+      {
+        const BoucWenParameters &p      = hinge.law;
+        const double             u_y    = p.yield_deformation;
+        const double             u_y_n  = std::pow(u_y, p.n);
+        const double             energy = (1 - p.alpha) * p.stiffness * u_y * u_y;
+        out.model.push_back(
+          "uniaxialMaterial BoucWen " + std::to_string(tags.material) + " " +
+          exact_text(p.alpha) + " " + exact_text(p.stiffness) + " " + exact_text(p.n) + " " +
+          exact_text(p.gamma / u_y_n) + " " + exact_text(p.beta / u_y_n) + " " +
+          exact_text(p.A) + " " + exact_text(p.delta_A / energy) + " " +
+          exact_text(p.delta_nu / energy) + " " + exact_text(p.delta_eta / energy) + " " +
+          exact_text(1e-12 * u_y) + " 50 ;# " + hinge.label);
+        out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                            std::to_string(hinge.joint_node + 1) + " " +
+                            std::to_string(hinge.member_node + 1) + " -mat " +
+                            std::to_string(tags.material++) + " -dir 6 -doRayleigh 1");
+      }
+    out.nonlinear = true;
   }
 
   void
@@ -135,7 +170,7 @@ namespace poundfe::opensees_export
         lines.push_back(load);
     lines.push_back("}");
     for (const std::string &line :
-         {std::string("constraints Plain"), std::string("numberer Plain"),
+         {"constraints " + out.constraints(), std::string("numberer Plain"),
           std::string("system BandGeneral"),
           "test NormDispIncr 1.0e-12 " + std::to_string(model.gravity_analysis.max_iterations),
           std::string("algorithm Newton"),

@@ -59,6 +59,9 @@ namespace poundfe::opensees_export
   std::string fibre_member_command(const Model &model, const Member &member,
                                    const InputFile &input, Tags &tags, OpenSeesExport &out);
 
+  /// The frames' Bouc-Wen hinges: zeroLength rotational springs on BoucWen.
+  void describe_hinges(const Analysis &analysis, Tags &tags, OpenSeesExport &out);
+
   /// Model/Gravity analysis: the loads and the static analysis.
   void describe_gravity(const Analysis &analysis, OpenSeesExport &out);
 } // namespace poundfe::opensees_export

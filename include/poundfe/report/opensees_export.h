@@ -42,6 +42,11 @@ namespace poundfe
     std::vector<std::string> model;
     /// The model's space: 1 and 1 for shear buildings alone, else 2 and 3.
     unsigned int ndm = 1, ndf = 1;
+    /// Some node shares DOFs of another (equalDOF: constraints
+    /// Transformation, else Plain).
+    bool tied = false;
+    /// The constraint handler those ties need.
+    std::string constraints() const { return tied ? "Transformation" : "Plain"; }
     /// The gravity analysis before the record (empty without one): the
     /// pattern and the static analysis, ending with loadConst -time 0.
     std::vector<std::string> gravity;
