@@ -96,15 +96,6 @@ namespace poundfe
                        "modal damping has no element form in OpenSees 3.8's Tcl commands "
                        "that poundfe's export writes (Rayleigh damping: modes or coefficients)");
         }
-      // a storey is hysteretic because its yield drift is given: the
-      // entry the user wrote (the Bouc-Wen subsection only shapes the loop)
-      for (const StoreyLink &link : model.links)
-        if (link.hysteretic)
-          input.fail(building_entry(link.building, "Storey yield drifts"),
-                     "export-opensees writes elastic storeys only: OpenSees 3.8's BoucWen "
-                     "integrates the Bouc-Wen law by backward Euler over the step (z from a "
-                     "Newton iteration started at 0.01, to |dz| < tolerance), poundfe's by the "
-                     "trapezoidal rule, so the two runs would differ by the discretisation");
       if (!model.springs.empty() || !model.friction_surfaces.empty())
         input.fail(model.springs.empty() ? "Friction" : "Springs",
                    "export-opensees writes no springs to the ground or friction");
@@ -245,16 +236,30 @@ namespace poundfe
       if (!model.links.empty())
         out.model.push_back("# storeys: zeroLength on Elastic k eta, eta = a1 k + the storey's "
                             "dashpot");
+      if (std::any_of(model.links.begin(), model.links.end(),
+                      [](const StoreyLink &link) { return link.hysteretic; }))
+        out.model.push_back("# a Bouc-Wen storey: a zeroLength on " + bouc_wen_comment() +
+                            "; beside it a zeroLength on Elastic 0 eta");
       for (const StoreyLink &link : model.links)
         {
-          const double a1  = analysis.system.rayleigh.at(link.building)[1];
-          const double eta = a1 * link.stiffness + link.damping;
+          const double      a1  = analysis.system.rayleigh.at(link.building)[1];
+          const double      eta = a1 * link.stiffness + link.damping;
+          const std::string ends =
+            std::to_string(link.nodes[0] + 1) + " " + std::to_string(link.nodes[1] + 1);
+          if (link.hysteretic)
+            {
+              out.model.push_back(bouc_wen_material(link.hysteresis, tags.material,
+                                                    model.buildings[link.building].name +
+                                                      " storey"));
+              out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                                  ends + " -mat " + std::to_string(tags.material++) + " -dir 1");
+              out.nonlinear = true;
+            }
           out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) + " " +
-                              exact_text(link.stiffness) + " " + exact_text(eta));
-          out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
-                              std::to_string(link.nodes[0] + 1) + " " +
-                              std::to_string(link.nodes[1] + 1) + " -mat " +
-                              std::to_string(tags.material++) + " -dir 1");
+                              (link.hysteretic ? "0.0" : exact_text(link.stiffness)) + " " +
+                              exact_text(eta));
+          out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " + ends +
+                              " -mat " + std::to_string(tags.material++) + " -dir 1");
         }
       for (const Building &building : model.buildings)
         for (unsigned int f = 0; f < building.floors.size(); ++f) // floor 1 up

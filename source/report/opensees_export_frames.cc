@@ -87,6 +87,15 @@ namespace poundfe::opensees_export
     return false;
   }
 
+  std::string
+  bouc_wen_comment()
+  {
+    return "BoucWen alpha k n gamma beta A dA dnu deta tol maxIter with z = u_y z_poundfe: "
+           "gamma and beta over u_y^n, the degradations over (1 - alpha) k u_y^2; OpenSees's "
+           "BoucWen integrates z by backward Euler, poundfe's by the trapezoidal rule, so the "
+           "two agree as the time step shrinks (to first order), not at one step";
+  }
+
   void
   refuse_frame_parts(const Analysis &analysis, const InputFile &input)
   {
@@ -96,6 +105,24 @@ namespace poundfe::opensees_export
                    "export-opensees writes hinges of A = 1 only: OpenSees's rayleigh damps a "
                    "zeroLength by its initial tangent alpha k + (1 - alpha) k A, poundfe's C "
                    "by the hinge's k");
+    for (const StoreyLink &link : analysis.model.links)
+      if (link.hysteretic && link.hysteresis.A != 1)
+        input.fail(building_entry(link.building, "Bouc-Wen/A"),
+                   "export-opensees writes Bouc-Wen storeys of A = 1 only: their initial "
+                   "stiffness alpha k + (1 - alpha) k A would differ from the k in poundfe's K");
+  }
+
+  std::string
+  bouc_wen_material(const BoucWenParameters &p, const int tag, const std::string &label)
+  {
+    const double u_y    = p.yield_deformation;
+    const double u_y_n  = std::pow(u_y, p.n);
+    const double energy = (1 - p.alpha) * p.stiffness * u_y * u_y;
+    return "uniaxialMaterial BoucWen " + std::to_string(tag) + " " + exact_text(p.alpha) + " " +
+           exact_text(p.stiffness) + " " + exact_text(p.n) + " " + exact_text(p.gamma / u_y_n) +
+           " " + exact_text(p.beta / u_y_n) + " " + exact_text(p.A) + " " +
+           exact_text(p.delta_A / energy) + " " + exact_text(p.delta_nu / energy) + " " +
+           exact_text(p.delta_eta / energy) + " " + exact_text(1e-12 * u_y) + " 50 ;# " + label;
   }
 
   void
@@ -104,24 +131,11 @@ namespace poundfe::opensees_export
     const Model &model = analysis.model;
     if (model.hinges.empty())
       return;
-    out.model.push_back(
-      "# hinges: zeroLength rz (joint, member end; -dir 6, the rotation about z) on BoucWen alpha k n gamma beta A dA dnu "
-      "deta tol maxIter with z = u_y z_poundfe: gamma and beta over u_y^n, the degradations "
-      "over (1 - alpha) k u_y^2; OpenSeesBoucWen integrates by backward Euler, poundfe by the "
-      "trapezoidal rule, so the two agree as the time step shrinks, not at one step");
+    out.model.push_back("# hinges: zeroLength rz (joint, member end; -dir 6, the rotation about z) "
+                        "on " + bouc_wen_comment());
     for (const Hinge &hinge : model.hinges)
       {
-        const BoucWenParameters &p      = hinge.law;
-        const double             u_y    = p.yield_deformation;
-        const double             u_y_n  = std::pow(u_y, p.n);
-        const double             energy = (1 - p.alpha) * p.stiffness * u_y * u_y;
-        out.model.push_back(
-          "uniaxialMaterial BoucWen " + std::to_string(tags.material) + " " +
-          exact_text(p.alpha) + " " + exact_text(p.stiffness) + " " + exact_text(p.n) + " " +
-          exact_text(p.gamma / u_y_n) + " " + exact_text(p.beta / u_y_n) + " " +
-          exact_text(p.A) + " " + exact_text(p.delta_A / energy) + " " +
-          exact_text(p.delta_nu / energy) + " " + exact_text(p.delta_eta / energy) + " " +
-          exact_text(1e-12 * u_y) + " 50 ;# " + hinge.label);
+        out.model.push_back(bouc_wen_material(hinge.law, tags.material, hinge.label));
         out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
                             std::to_string(hinge.joint_node + 1) + " " +
                             std::to_string(hinge.member_node + 1) + " -mat " +

@@ -59,6 +59,12 @@ namespace poundfe::opensees_export
   std::string fibre_member_command(const Model &model, const Member &member,
                                    const InputFile &input, Tags &tags, OpenSeesExport &out);
 
+  /// uniaxialMaterial BoucWen of poundfe's Bouc-Wen law `p` (z scaled by
+  /// its yield deformation) with a comment naming `label`, and the comment
+  /// that says what the parameters are.
+  std::string bouc_wen_material(const BoucWenParameters &p, int tag, const std::string &label);
+  std::string bouc_wen_comment();
+
   /// The frames' Bouc-Wen hinges: zeroLength rotational springs on BoucWen.
   void describe_hinges(const Analysis &analysis, Tags &tags, OpenSeesExport &out);
 
