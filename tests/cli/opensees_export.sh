@@ -84,9 +84,10 @@ for law in hertz jankowski; do
   grep -q "^uniaxialMaterial $( [ $law = hertz ] && echo Hertzdamp || echo JankowskiImpact) " \
     "$work/shear-pair-pounding-$law/script/model.tcl" || fail "$law: not its OpenSees material"
 done
-# 2D frames of elastic members (elasticBeamColumn on geomTransf Linear): the
-# same M, K, C and Newmark, 1e-9 as the shear buildings
-for name in one-storey-frame two-storey-frame three-storey-frame; do
+# 2D frames of elastic members (elasticBeamColumn on geomTransf Linear; a
+# Gmsh building, Type = mesh, the same way): the same M, K, C and Newmark,
+# 1e-9 as the shear buildings
+for name in one-storey-frame two-storey-frame three-storey-frame setback-frame; do
   check_example $name 1e-9
 done
 # with the gravity analysis first, on two unequal bays: the floors at 1e-9,

@@ -18,11 +18,19 @@
 //    member an elasticBeamColumn on geomTransf Linear with the member's E,
 //    A and I, the lumped masses of M on the nodes, the building's a0 M as
 //    dashpots to fixed nodes and a1 K as `rayleigh 0 0 a1 0` (betaKinit:
-//    the members' elastic stiffness, the gaps left out as poundfe's C leaves
-//    them; one a1 for every frame, since OpenSees 3.8's per-building form,
+//    the members' and hinges' initial stiffness, the gaps left out as
+//    poundfe's C leaves them; one a1 for every frame, since OpenSees 3.8's per-building form,
 //    region, is not among `poundfe opensees`'s commands); Model/Gravity
 //    analysis as OpenSees's gravity analysis: the same nodal loads in a
-//    Plain pattern, LoadControl in as many steps, then loadConst -time 0.
+//    Plain pattern, LoadControl in as many steps, then loadConst -time 0;
+//  - a fibre member (report/opensees_export_fibres.cc): section Fiber of
+//    its fibres and materials, forceBeamColumn (Lobatto) or dispBeamColumn
+//    (Legendre), geomTransf PDelta for a PDelta column;
+//  - a Bouc-Wen hinge: the member's end node tied to the joint (equalDOF
+//    1 2), a zeroLength -dir 6 on BoucWen; a Bouc-Wen storey a zeroLength on
+//    BoucWen beside one on Elastic 0 eta. OpenSees's BoucWen integrates by
+//    backward Euler, poundfe's by the trapezoidal rule: the runs agree as
+//    the step shrinks, to first order, not at one step.
 // Anything else the model has is refused by InputError naming its entry.
 #ifndef poundfe_report_opensees_export_h
 #define poundfe_report_opensees_export_h
