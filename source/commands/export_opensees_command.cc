@@ -38,7 +38,7 @@ namespace poundfe
       for (const std::string &name : e.floor_names)
         tcl << " " << name;
       tcl << "\nrecorder Node -file [file join $out floor_disp.out] -time -precision 16 -node"
-          << joined(e.floor_nodes) << " -dof 1 disp\n";
+          << joined(e.floor_nodes) << " -dof " << e.floor_dofs << " disp\n";
       if (e.gap_elements.empty())
         return;
       tcl << "# gap forces (zeroLength force: node i, node j; compression closes); gaps:";
@@ -105,7 +105,7 @@ namespace poundfe::commands
     write_file_atomically(run.directory + "/ground_motion.txt", record.str());
     write_file_atomically(run.directory + "/model.tcl", script_text(e, parameters.input.file));
     const std::set<std::string> floors(e.floor_names.begin(), e.floor_names.end());
-    run.out << "poundfe export-opensees: " << floors.size() << " floors, "
+    run.out << "poundfe export-opensees: " << floors.size() / (e.ndm == 3 ? 3 : 1) << " floors, "
             << e.gap_elements.size() << " gaps, " << e.n_steps << " steps of " << e.time_step
             << " s\nresults in " << run.directory << "/ (model.tcl, ground_motion.txt)\n";
     return 0;

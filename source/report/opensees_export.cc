@@ -45,6 +45,41 @@ namespace poundfe::opensees_export
         input.fail("Model/Mass matrix", "export-opensees writes lumped masses only");
     return diagonal;
   }
+
+  void
+  add_fixed_node(const int tag, const std::string &position, const std::string &what,
+                 OpenSeesExport &out)
+  {
+    out.model.push_back("node " + std::to_string(tag) + " " + position);
+    std::string fixity = "fix " + std::to_string(tag);
+    for (unsigned int c = 0; c < out.ndf; ++c)
+      fixity += " 1";
+    out.model.push_back(fixity + (what.empty() ? "" : " ;# " + what));
+  }
+
+  void
+  describe_mass_dashpots(const Analysis &analysis, const unsigned int n,
+                         const std::vector<std::pair<unsigned int, double>> &masses,
+                         const std::string &position, Tags &tags, OpenSeesExport &out)
+  {
+    const double a0 = analysis.system.rayleigh.at(analysis.model.nodes[n].building)[0];
+    std::string  materials, directions;
+    for (const auto &[direction, mass] : masses)
+      if (a0 != 0 && mass != 0)
+        {
+          out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) +
+                              " 0.0 " + exact_text(a0 * mass) + " ;# a0 m of the Rayleigh damping");
+          materials += " " + std::to_string(tags.material++);
+          directions += " " + std::to_string(direction);
+        }
+    if (materials.empty())
+      return;
+    const int ground = ++tags.node;
+    add_fixed_node(ground, position, "", out);
+    out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                        std::to_string(ground) + " " + std::to_string(n + 1) + " -mat" +
+                        materials + " -dir" + directions);
+  }
 } // namespace poundfe::opensees_export
 
 namespace poundfe
@@ -81,8 +116,8 @@ namespace poundfe
     refuse_model_parts(const Analysis &analysis, const InputFile &input)
     {
       const Model &model = analysis.model;
-      if (model.dimension != 2)
-        input.fail("Model/Dimension", "export-opensees writes 2D models only");
+      if (model.dimension == 3)
+        refuse_3d_parts(analysis, input);
       if (model.geometric_nonlinearity != GeometricNonlinearity::none)
         input.fail("Model/Geometric nonlinearity",
                    "export-opensees writes no P-Delta: poundfe's is the geometric stiffness "
@@ -118,8 +153,12 @@ namespace poundfe
       const InputFile &input = parameters.input;
       if (parameters.time_integration.method != TimeIntegrationMethod::newmark)
         input.fail("Time integration/Method", "export-opensees writes Newmark only");
-      if (excitation.has_horizontal_pair() || excitation.has_vertical())
-        input.fail("Ground motion/Components", "export-opensees writes one horizontal component");
+      // a 3D model's pair: its second component none and no rotation
+      if ((excitation.has_horizontal_pair() && excitation.applied_horizontal_peaks()[1] != 0) ||
+          excitation.has_vertical())
+        input.fail("Ground motion/Components",
+                   "export-opensees writes one horizontal component, along x (in 3D: "
+                   "Components = 1 and Incidence angle = 0)");
       if (!excitation.nodal_forces().empty())
         input.fail("Nodal forces/File", "export-opensees writes no nodal forces");
       if (const double a0 = excitation.ground_acceleration(0); a0 != 0)
@@ -135,51 +174,31 @@ namespace poundfe
                    "export-opensees starts from rest only");
     }
 
-    /// "node tag x [y]" of a node at `position` in the script's space.
+    /// "x [y]" of `position` in the script's space.
     std::string
-    node_line(const int tag, const Point2 &position, const OpenSeesExport &out)
+    position_text(const Point2 &position, const OpenSeesExport &out)
     {
-      return "node " + std::to_string(tag) + " " + exact_text(position.x) +
+      return exact_text(position.x) +
              (out.ndm == 2 ? " " + exact_text(position.y) : std::string());
     }
 
-    /// A node fixed in every DOF (a dashpot's ground, a barrier).
-    void
-    add_fixed_node(const int tag, const Point2 &position, const std::string &what,
-                   OpenSeesExport &out)
+    std::string
+    node_line(const int tag, const Point2 &position, const OpenSeesExport &out)
     {
-      out.model.push_back(node_line(tag, position, out));
-      std::string fixity = "fix " + std::to_string(tag);
-      for (unsigned int c = 0; c < out.ndf; ++c)
-        fixity += " 1";
-      out.model.push_back(fixity + (what.empty() ? "" : " ;# " + what));
+      return "node " + std::to_string(tag) + " " + position_text(position, out);
     }
 
-    /// The a0 M term of node n with `masses` on its DOFs: a zeroLength of
-    /// dashpots Elastic 0 a0 m, one a DOF with a mass, to a fixed node.
+    /// The a0 M term of node n with `masses` on its DOFs (the rotation, the
+    /// third, a zeroLength's direction 6).
     void
     describe_mass_dashpots(const Analysis &analysis, const unsigned int n,
                            const std::vector<double> &masses, Tags &tags, OpenSeesExport &out)
     {
-      const Node  &node = analysis.model.nodes[n];
-      const double a0   = analysis.system.rayleigh.at(node.building)[0];
-      std::string  materials, directions;
+      std::vector<std::pair<unsigned int, double>> on_directions;
       for (unsigned int c = 0; c < masses.size(); ++c)
-        if (a0 != 0 && masses[c] != 0)
-          {
-            out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) +
-                                " 0.0 " + exact_text(a0 * masses[c]) +
-                                " ;# a0 m of the Rayleigh damping");
-            materials += " " + std::to_string(tags.material++);
-            directions += c == 2 ? " 6" : " " + std::to_string(c + 1); // rz: dir 6
-          }
-      if (materials.empty())
-        return;
-      const int ground = ++tags.node;
-      add_fixed_node(ground, node.position, "", out);
-      out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
-                          std::to_string(ground) + " " + std::to_string(n + 1) + " -mat" +
-                          materials + " -dir" + directions);
+        on_directions.emplace_back(c == 2 ? 6 : c + 1, masses[c]);
+      describe_mass_dashpots(analysis, n, on_directions,
+                             position_text(analysis.model.nodes[n].position, out), tags, out);
     }
 
     /// Each building's nodes (with masses and fixities) and the dashpots of
@@ -325,7 +344,8 @@ namespace poundfe
             else
               {
                 const int barrier = ++tags.node;
-                add_fixed_node(barrier, Point2{0.0, gap.level}, "the barrier", out);
+                add_fixed_node(barrier, position_text(Point2{0.0, gap.level}, out),
+                               "the barrier", out);
                 ends[side] = std::to_string(barrier);
               }
           out.model.push_back("uniaxialMaterial " + gap_material(model.contact, gap) + " " +
@@ -352,16 +372,25 @@ namespace poundfe
     OpenSeesExport out;
     Tags           tags;
     tags.node = analysis.model.n_nodes();
-    if (in_plane(analysis.model))
+    if (analysis.model.dimension == 3)
+      out.ndm = 3, out.ndf = 6;
+    else if (in_plane(analysis.model))
       out.ndm = 2, out.ndf = 3;
-    out.model.push_back(out.ndf == 1 ? "# nodes: a floor's ux with its mass; the base and the "
-                                       "damping's ground nodes fixed" :
-                                       "# nodes (x, y): M's masses on ux, uy, rz; the "
-                                       "supports and the damping's ground nodes fixed");
-    describe_nodes(analysis, parameters.input, tags, out);
-    describe_storeys(analysis, tags, out);
-    describe_members(analysis, parameters.input, tags, out);
-    describe_hinges(analysis, tags, out);
+    if (out.ndm < 3)
+      out.model.push_back(out.ndf == 1 ? "# nodes: a floor's ux with its mass; the base and the "
+                                         "damping's ground nodes fixed" :
+                                         "# nodes (x, y): M's masses on ux, uy, rz; the "
+                                         "supports and the damping's ground nodes fixed");
+    if (out.ndm == 3)
+      describe_frames_3d(analysis, parameters.input, tags, out);
+    else
+      {
+        describe_nodes(analysis, parameters.input, tags, out);
+        describe_storeys(analysis, tags, out);
+        describe_members(analysis, parameters.input, tags, out);
+        describe_hinges(analysis, tags, out);
+      }
+    out.member_stiffness_damping = frames_stiffness_damping(analysis, parameters.input);
     describe_gravity(analysis, out);
     describe_gaps(analysis, tags, out);
     const NewmarkParameters &newmark = parameters.time_integration.newmark;

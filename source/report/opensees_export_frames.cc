@@ -22,49 +22,36 @@ namespace poundfe::opensees_export
 {
   namespace
   {
-    /// The a1 of the frames' buildings, one for all: OpenSees's rayleigh
-    /// acts on every element (its per-building form, region, is not among
-    /// `poundfe opensees`'s commands).
-    double
-    frames_stiffness_damping(const Analysis &analysis, const InputFile &input)
+    /// The script's DOF (1-based) of slot c of model node n: a 3D joint's
+    /// (uz, rx, ry) are 3, 4, 5, a 3D floor's (ux, uy, θz) 1, 2, 6.
+    unsigned int
+    script_dof(const Model &model, const unsigned int n, const unsigned int c,
+               const OpenSeesExport &out)
     {
-      const Model &model = analysis.model;
-      const double a1    = analysis.system.rayleigh.at(model.members.front().building)[1];
-      for (const Member &member : model.members)
-        if (const double b1 = analysis.system.rayleigh.at(member.building)[1]; b1 != a1)
-          input.fail(building_entry(member.building, "Damping/Type"),
-                     "its stiffness-proportional Rayleigh coefficient a1 = " + exact_text(b1) +
-                       " differs from building " +
-                       std::to_string(model.members.front().building + 1) + "'s " +
-                       exact_text(a1) +
-                       ": export-opensees writes one a1 for every frame (OpenSees's rayleigh "
-                       "command; a coefficient per building needs OpenSees's region, which "
-                       "`poundfe opensees` does not run); give the frames the same Damping/"
-                       "Coefficients");
-      return a1;
+      if (out.ndm != 3)
+        return c + 1;
+      return model.nodes[n].generalized ? 3 + c : c == 2 ? 6 : c + 1;
     }
 
     /// The loads of node n's DOFs among `loads` (by equation), each
     /// equation's once: `seen` marks those given.
     std::string
     node_loads(const Model &model, const unsigned int n, const Vector &loads,
-               std::vector<char> &seen)
+               const OpenSeesExport &out, std::vector<char> &seen)
     {
-      std::string text;
-      bool        any = false;
+      std::vector<double> values(out.ndf, 0.0);
       for (unsigned int c = 0; c < n_dofs_per_node; ++c)
-        {
-          const int eq    = model.equation(Model::dof(n, Component(c)));
-          double    value = 0;
-          if (eq >= 0 && !seen[eq])
-            {
-              seen[eq] = 1;
-              value    = loads[eq];
-            }
-          any = any || value != 0;
-          text += " " + exact_text(value);
-        }
-      return any ? "  load " + std::to_string(n + 1) + text : std::string();
+        if (const int eq = model.equation(Model::dof(n, Component(c))); eq >= 0 && !seen[eq])
+          {
+            seen[eq]                                  = 1;
+            values[script_dof(model, n, c, out) - 1] = loads[eq];
+          }
+      std::string text;
+      for (const double value : values)
+        text += " " + exact_text(value);
+      return std::any_of(values.begin(), values.end(), [](double v) { return v != 0; }) ?
+               "  load " + std::to_string(n + 1) + text :
+               std::string();
     }
 
     std::string
@@ -77,6 +64,31 @@ namespace poundfe::opensees_export
              exact_text(s.second_moment) + " 1";
     }
   } // namespace
+
+  double
+  frames_stiffness_damping(const Analysis &analysis, const InputFile &input)
+  {
+    const Model              &model = analysis.model;
+    std::vector<unsigned int> buildings;
+    for (const Member &member : model.members)
+      buildings.push_back(member.building);
+    for (const Member3D &member : model.members_3d)
+      buildings.push_back(member.building);
+    if (buildings.empty())
+      return 0;
+    const double a1 = analysis.system.rayleigh.at(buildings.front())[1];
+    for (const unsigned int b : buildings)
+      if (const double b1 = analysis.system.rayleigh.at(b)[1]; b1 != a1)
+        input.fail(building_entry(b, "Damping/Type"),
+                   "its stiffness-proportional Rayleigh coefficient a1 = " + exact_text(b1) +
+                     " differs from building " + std::to_string(buildings.front() + 1) + "'s " +
+                     exact_text(a1) +
+                     ": export-opensees writes one a1 for every frame (OpenSees's rayleigh "
+                     "command; a coefficient per building needs OpenSees's region, which "
+                     "`poundfe opensees` does not run); give the frames the same Damping/a0 "
+                     "and Damping/a1");
+    return a1;
+  }
 
   bool
   in_plane(const Model &model)
@@ -162,7 +174,6 @@ namespace poundfe::opensees_export
         (member.fibre.fibre() ? fibre_member_command(model, member, input, tags, out) :
                                 elastic_member_command(member, tags)) +
         " ;# " + member.label);
-    out.member_stiffness_damping = frames_stiffness_damping(analysis, input);
   }
 
   void
@@ -179,7 +190,7 @@ namespace poundfe::opensees_export
     lines.push_back("pattern Plain 2 Linear {");
     std::vector<char> seen(model.n_equations(), 0); // an equation's load once
     for (unsigned int n = 0; n < model.n_nodes(); ++n)
-      if (const std::string load = node_loads(model, n, analysis.gravity.applied, seen);
+      if (const std::string load = node_loads(model, n, analysis.gravity.applied, out, seen);
           !load.empty())
         lines.push_back(load);
     lines.push_back("}");

@@ -11,6 +11,8 @@
 #include <array>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace poundfe::opensees_export
 {
@@ -34,6 +36,18 @@ namespace poundfe::opensees_export
   /// M couples it to another equation.
   double node_mass(const Analysis &analysis, unsigned int node, Component c,
                    const InputFile &input);
+
+  /// A node at `position` ("x [y [z]]") fixed in every DOF (a dashpot's
+  /// ground, a barrier), with `what` as its comment.
+  void add_fixed_node(int tag, const std::string &position, const std::string &what,
+                      OpenSeesExport &out);
+
+  /// The a0 M term of node n (the building's a0) with `masses` on the
+  /// zeroLength directions given: a zeroLength of dashpots Elastic 0 a0 m to
+  /// a fixed node at `position`.
+  void describe_mass_dashpots(const Analysis &analysis, unsigned int n,
+                              const std::vector<std::pair<unsigned int, double>> &masses,
+                              const std::string &position, Tags &tags, OpenSeesExport &out);
 
   /// Whether the model is written in the plane (model basic -ndm 2 -ndf 3):
   /// some building is not a shear building.
@@ -67,6 +81,20 @@ namespace poundfe::opensees_export
 
   /// The frames' Bouc-Wen hinges: zeroLength rotational springs on BoucWen.
   void describe_hinges(const Analysis &analysis, Tags &tags, OpenSeesExport &out);
+
+  /// The parts of a 3D frame OpenSees cannot be given the same way
+  /// (report/opensees_export_3d.cc): InputError naming the first one's entry.
+  void refuse_3d_parts(const Analysis &analysis, const InputFile &input);
+
+  /// 3D frames (-ndm 3 -ndf 6): the floors' masters, the joints under
+  /// rigidDiaphragm, the fixed bases, the members, and the floors to record.
+  void describe_frames_3d(const Analysis &analysis, const InputFile &input, Tags &tags,
+                          OpenSeesExport &out);
+
+  /// The stiffness-proportional Rayleigh a1 of the buildings of the
+  /// model's members (2D and 3D), one for all; InputError naming a building's
+  /// Damping/Type if they differ; 0 without members.
+  double frames_stiffness_damping(const Analysis &analysis, const InputFile &input);
 
   /// Model/Gravity analysis: the loads and the static analysis.
   void describe_gravity(const Analysis &analysis, OpenSeesExport &out);

@@ -18,8 +18,9 @@
 #    state checked), fibre members at 1e-6 as the other nonlinear cases,
 #    Bouc-Wen hinges by first-order convergence in the time step (below);
 #  - Bouc-Wen storeys by the same convergence;
+#  - 3D frames of elastic members on rigid floors at 1e-9;
 # and the refusals name the entry OpenSees cannot be given (P-Delta, 3D
-# models, frames of their own Rayleigh a1, hinges of A != 1, the contact laws hertz-damp and
+# shear buildings, 3D hinges and fibre members, frames of their own Rayleigh a1, hinges of A != 1, the contact laws hertz-damp and
 # kelvin-voigt (saying how OpenSees's namesakes differ), nodal forces, modal
 # damping, a record that does not start at zero).
 #   opensees_export.sh POUNDFE INPUT_DIR PYTHON3
@@ -185,6 +186,28 @@ converges three-storey-frame-hinges 5e-4 0.002 0.001 0.0005 -- \
 # 1e-2 of the peak at the finest step
 converges ida-pounding-pair 1e-2 0.005 0.0025 0.00125 -- --set "Model/Separations=1" \
   --set "Ground motion/Stochastic/Sample interval=0.005"
+# 3D frames (-ndm 3 -ndf 6: a master at each floor's mass centre, the joints
+# under rigidDiaphragm 3, elasticBeamColumn A E G J Iy Iz on poundfe's v_xz):
+# building A5 of 3d-torsional-pair alone, without hinges, one horizontal
+# component along x; its mass eccentricity couples x, y and the twist. Each
+# floor's x, y and theta_z at 1e-9 (linear), with the gravity analysis too
+"$python" - "$inputs/3d-torsional-pair.prm" "$work/frame3d.prm" <<'PY'
+import sys
+text = open(sys.argv[1]).read()
+start = text.index("subsection Building 2")
+end = text.index("end\n", text.index("subsection Damping", start))
+end = text.index("end\n", end + 4) + 4
+open(sys.argv[2], "w").write((text[:start] + text[end:]).replace(
+    "set Number of buildings = 2", "set Number of buildings = 1"))
+PY
+frame3d=(--set "Building 1/Hinges/Locations=" --set "Ground motion/Stochastic/Duration=4"
+  --set "Ground motion/Components=1" --set "Ground motion/Incidence angle=0")
+inputs=$work check_example frame3d 1e-9 "${frame3d[@]}"
+grep -q "^rigidDiaphragm 3 " "$work/frame3d/script/model.tcl" || fail "3D: no rigidDiaphragm"
+inputs=$work case_suffix=-gravity check_example frame3d 1e-9 "${frame3d[@]}" \
+  --set "Model/Gravity analysis/Type=static"
+grep -q "^pattern Plain 2 Linear {" "$work/frame3d-gravity/script/model.tcl" \
+  || fail "3D: no gravity pattern"
 
 # the gaps closed: the pounding pairs' scripts have gap forces, some non-zero
 for case in shear-pair-pounding shear-pair-pounding-hertz shear-pair-pounding-jankowski \
@@ -217,7 +240,9 @@ refused_with two-buildings rayleigh "'Building 2/Damping/Type': its stiffness-pr
 refused_with three-storey-frame-hinges bouc-wen-a "'Building 1/Bouc-Wen/A': export-opensees writes hinges of A = 1 only" \
   --set "Building 1/Bouc-Wen/A=0.9"
 refused pushover-frame "'Model/Geometric nonlinearity': export-opensees writes no P-Delta"
-refused 3d-torsional-pair "'Model/Dimension': export-opensees writes 2D models only"
+refused 3d-torsional-pair "'Building 1/Hinges/Locations': export-opensees writes 3D frames without hinges"
+refused 3d-torsional-shear-pair "'Building 1/Type': export-opensees writes 3D frames only"
+refused fibre-frame-3d "'Building 1/Member model': export-opensees writes 3D frames of elastic members only"
 refused spillway-abutment "'Nodal forces/File': export-opensees writes no nodal forces"
 # laws whose OpenSees namesakes differ: refused, saying how
 refused_law() { # LAW EXPECTED-MESSAGE-PART

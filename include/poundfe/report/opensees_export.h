@@ -48,7 +48,8 @@ namespace poundfe
     /// The model's commands, one a line, with comment lines (# ...) that
     /// say what each part is in poundfe's terms.
     std::vector<std::string> model;
-    /// The model's space: 1 and 1 for shear buildings alone, else 2 and 3.
+    /// The model's space: 1 and 1 for shear buildings alone, 3 and 6 in 3D,
+    /// else 2 and 3.
     unsigned int ndm = 1, ndf = 1;
     /// Some node shares DOFs of another (equalDOF: constraints
     /// Transformation, else Plain).
@@ -67,6 +68,9 @@ namespace poundfe
     /// floor displacement is their mean.
     std::vector<int>         floor_nodes;
     std::vector<std::string> floor_names;
+    /// The DOFs recorded at each floor node ("1"; a 3D floor's "1 2 6": its
+    /// three columns are x, y and θz).
+    std::string floor_dofs = "1";
     /// The gap elements and their names (gap1, ...).
     std::vector<int>         gap_elements;
     std::vector<std::string> gap_names;
