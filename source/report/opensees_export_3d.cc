@@ -163,9 +163,6 @@ namespace poundfe::opensees_export
     for (const Member3D &member : model.members_3d)
       {
         const Section3D &s = member.section;
-        if (member.fibre.fibre())
-          input.fail(building_entry(member.building, "Member model"),
-                     "export-opensees writes 3D frames of elastic members only");
         if (s.shear_area_y != 0 || s.shear_area_z != 0)
           input.fail(building_entry(member.building, member.kind == MemberKind::beam ?
                                                        "Beam Avy" : "Column Avy"),
@@ -209,24 +206,29 @@ namespace poundfe::opensees_export
           }
       }
     out.floor_dofs = "1 2 6";
-    out.model.push_back("# members: elasticBeamColumn A E G J Iy Iz on geomTransf Linear with "
-                        "poundfe's v_xz");
-    std::map<std::string, int> transformations;
+    out.model.push_back("# members: elasticBeamColumn A E G J Iy Iz, or fibre beam-columns, on "
+                        "geomTransf with poundfe's v_xz");
+    std::map<std::string, int> transformations; // (type, v_xz) -> tag
     for (unsigned int m = 0; m < model.members_3d.size(); ++m)
       {
         const Member3D   &member = model.members_3d[m];
-        const std::string v      = point_text(member.orientation);
-        auto [at, fresh]         = transformations.emplace(v, transformations.size() + 1);
+        const std::string kind =
+          member.fibre.fibre() && member.fibre.p_delta ? "PDelta " : "Linear ";
+        const std::string v = point_text(member.orientation);
+        auto [at, fresh]    = transformations.emplace(kind + v, transformations.size() + 1);
         if (fresh)
-          out.model.push_back("geomTransf Linear " + std::to_string(at->second) + " " + v);
+          out.model.push_back("geomTransf " + kind + std::to_string(at->second) + " " + v);
         const Section3D &s = member.section;
         out.model.push_back(
-          "element elasticBeamColumn " + std::to_string(tags.element++) + " " +
-          std::to_string(j.ends[m][0]) + " " + std::to_string(j.ends[m][1]) + " " +
-          exact_text(s.area) + " " + exact_text(s.youngs_modulus) + " " +
-          exact_text(s.shear_modulus) + " " + exact_text(s.torsion_constant) + " " +
-          exact_text(s.second_moment_y) + " " + exact_text(s.second_moment_z) + " " +
-          std::to_string(at->second) + " ;# " + member.label);
+          (member.fibre.fibre() ?
+             fibre_element_command(model, member.fibre, j.ends[m], at->second, input, tags, out) :
+             "element elasticBeamColumn " + std::to_string(tags.element++) + " " +
+               std::to_string(j.ends[m][0]) + " " + std::to_string(j.ends[m][1]) + " " +
+               exact_text(s.area) + " " + exact_text(s.youngs_modulus) + " " +
+               exact_text(s.shear_modulus) + " " + exact_text(s.torsion_constant) + " " +
+               exact_text(s.second_moment_y) + " " + exact_text(s.second_moment_z) + " " +
+               std::to_string(at->second)) +
+          " ;# " + member.label);
       }
   }
 } // namespace poundfe::opensees_export

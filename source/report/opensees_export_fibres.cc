@@ -8,7 +8,8 @@
 // they came from), each material uniaxialMaterial NAME with the registry's
 // parameters, which are OpenSees's in OpenSees's order (laws/
 // material_registry.h), the points beamIntegration Lobatto (force-based)
-// or Legendre (displacement-based), and a PDelta column geomTransf PDelta.
+// or Legendre (displacement-based), and a PDelta column geomTransf PDelta;
+// in space (FiberSection3d, ForceBeamColumn3d) the section's -GJ.
 // A material's strain limits (Sections/Materials) only mark a fibre failed
 // in poundfe's reports: they are not written.
 #include <poundfe/base/exceptions.h>
@@ -62,7 +63,10 @@ namespace poundfe::opensees_export
           out.model.push_back(material_command(m.law, tags.material++) + " ;# " + m.name);
         }
       const int tag = tags.section++;
-      out.model.push_back("section Fiber " + std::to_string(tag) + " {");
+      // in space the torque is elastic, GJ the initial tangent's last term
+      const std::string torsion =
+        model.dimension == 3 ? " -GJ " + exact_text(section->initial_tangent()(3, 3)) : "";
+      out.model.push_back("section Fiber " + std::to_string(tag) + torsion + " {");
       for (const Fibre &f : g.fibres)
         out.model.push_back("  fiber " + exact_text(f.y) + " " + exact_text(f.z) + " " +
                             exact_text(f.area) + " " +
@@ -94,15 +98,24 @@ namespace poundfe::opensees_export
   } // namespace
 
   std::string
+  fibre_element_command(const Model &model, const FibreMember &fibre,
+                        const std::array<int, 2> &nodes, const int transformation,
+                        const InputFile &input, Tags &tags, OpenSeesExport &out)
+  {
+    const int integration = integration_tag(model, fibre, input, tags, out);
+    out.nonlinear         = true;
+    return std::string("element ") + (fibre.force_based ? "forceBeamColumn " : "dispBeamColumn ") +
+           std::to_string(tags.element++) + " " + std::to_string(nodes[0]) + " " +
+           std::to_string(nodes[1]) + " " + std::to_string(transformation) + " " +
+           std::to_string(integration);
+  }
+
+  std::string
   fibre_member_command(const Model &model, const Member &member, const InputFile &input,
                        Tags &tags, OpenSeesExport &out)
   {
-    const FibreMember &fibre       = member.fibre;
-    const int          integration = integration_tag(model, fibre, input, tags, out);
-    out.nonlinear                  = true;
-    return std::string("element ") + (fibre.force_based ? "forceBeamColumn " : "dispBeamColumn ") +
-           std::to_string(tags.element++) + " " + std::to_string(member.nodes[0] + 1) + " " +
-           std::to_string(member.nodes[1] + 1) + " " + (fibre.p_delta ? "2 " : "1 ") +
-           std::to_string(integration);
+    return fibre_element_command(model, member.fibre,
+                                 {{int(member.nodes[0]) + 1, int(member.nodes[1]) + 1}},
+                                 member.fibre.p_delta ? 2 : 1, input, tags, out);
   }
 } // namespace poundfe::opensees_export

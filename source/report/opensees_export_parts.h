@@ -72,6 +72,11 @@ namespace poundfe::opensees_export
   /// geomTransf 1 is Linear, 2 PDelta.
   std::string fibre_member_command(const Model &model, const Member &member,
                                    const InputFile &input, Tags &tags, OpenSeesExport &out);
+  /// The same for a member of `fibre` between the script's `nodes` on the
+  /// geomTransf `transformation` (2D or 3D).
+  std::string fibre_element_command(const Model &model, const FibreMember &fibre,
+                                    const std::array<int, 2> &nodes, int transformation,
+                                    const InputFile &input, Tags &tags, OpenSeesExport &out);
 
   /// uniaxialMaterial BoucWen of poundfe's Bouc-Wen law `p` (z scaled by
   /// its yield deformation) with a comment naming `label`, and the comment

@@ -18,9 +18,10 @@
 #    state checked), fibre members at 1e-6 as the other nonlinear cases,
 #    Bouc-Wen hinges by first-order convergence in the time step (below);
 #  - Bouc-Wen storeys by the same convergence;
-#  - 3D frames of elastic members on rigid floors at 1e-9;
+#  - 3D frames on rigid floors: elastic members at 1e-9, fibre members at
+#    1e-6;
 # and the refusals name the entry OpenSees cannot be given (P-Delta, 3D
-# shear buildings, 3D hinges and fibre members, frames of their own Rayleigh a1, hinges of A != 1, the contact laws hertz-damp and
+# shear buildings, 3D hinges, contact in plan, frames of their own Rayleigh a1, hinges of A != 1, the contact laws hertz-damp and
 # kelvin-voigt (saying how OpenSees's namesakes differ), nodal forces, modal
 # damping, a record that does not start at zero).
 #   opensees_export.sh POUNDFE INPUT_DIR PYTHON3
@@ -191,7 +192,8 @@ converges ida-pounding-pair 1e-2 0.005 0.0025 0.00125 -- --set "Model/Separation
 # building A5 of 3d-torsional-pair alone, without hinges, one horizontal
 # component along x; its mass eccentricity couples x, y and the twist. Each
 # floor's x, y and theta_z at 1e-9 (linear), with the gravity analysis too
-"$python" - "$inputs/3d-torsional-pair.prm" "$work/frame3d.prm" <<'PY'
+first_building() { # INPUT OUTPUT: the input with its first building alone
+  "$python" - "$1" "$2" <<'PY'
 import sys
 text = open(sys.argv[1]).read()
 start = text.index("subsection Building 2")
@@ -200,6 +202,8 @@ end = text.index("end\n", end + 4) + 4
 open(sys.argv[2], "w").write((text[:start] + text[end:]).replace(
     "set Number of buildings = 2", "set Number of buildings = 1"))
 PY
+}
+first_building "$inputs/3d-torsional-pair.prm" "$work/frame3d.prm"
 frame3d=(--set "Building 1/Hinges/Locations=" --set "Ground motion/Stochastic/Duration=4"
   --set "Ground motion/Components=1" --set "Ground motion/Incidence angle=0")
 inputs=$work check_example frame3d 1e-9 "${frame3d[@]}"
@@ -208,6 +212,14 @@ inputs=$work case_suffix=-gravity check_example frame3d 1e-9 "${frame3d[@]}" \
   --set "Model/Gravity analysis/Type=static"
 grep -q "^pattern Plain 2 Linear {" "$work/frame3d-gravity/script/model.tcl" \
   || fail "3D: no gravity pattern"
+# 3D fibre members (section Fiber with -GJ, forceBeamColumn on 4 Lobatto
+# points, the columns on geomTransf PDelta): building A of fibre-frame-3d
+# alone, gravity first, its mass centre moved (Plan/Mass eccentricity) so
+# that y and the twist respond; its steel yields. 1e-6 as the 2D fibre frames
+first_building "$inputs/fibre-frame-3d.prm" "$work/fibre3d.prm"
+inputs=$work check_example fibre3d 1e-6 --set "Ground motion/Components=1" \
+  --set "Ground motion/Incidence angle=0" --set "Building 1/Plan/Mass eccentricity=0.5, 0.3"
+grep -q "^section Fiber 1 -GJ " "$work/fibre3d/script/model.tcl" || fail "3D fibre: no -GJ"
 
 # the gaps closed: the pounding pairs' scripts have gap forces, some non-zero
 for case in shear-pair-pounding shear-pair-pounding-hertz shear-pair-pounding-jankowski \
@@ -242,7 +254,7 @@ refused_with three-storey-frame-hinges bouc-wen-a "'Building 1/Bouc-Wen/A': expo
 refused pushover-frame "'Model/Geometric nonlinearity': export-opensees writes no P-Delta"
 refused 3d-torsional-pair "'Building 1/Hinges/Locations': export-opensees writes 3D frames without hinges"
 refused 3d-torsional-shear-pair "'Building 1/Type': export-opensees writes 3D frames only"
-refused fibre-frame-3d "'Building 1/Member model': export-opensees writes 3D frames of elastic members only"
+refused fibre-frame-3d "'Contact/Law': export-opensees writes no contact in plan (3D)"
 refused spillway-abutment "'Nodal forces/File': export-opensees writes no nodal forces"
 # laws whose OpenSees namesakes differ: refused, saying how
 refused_law() { # LAW EXPECTED-MESSAGE-PART
