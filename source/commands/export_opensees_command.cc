@@ -13,6 +13,7 @@
 #include <poundfe/report/opensees_export.h>
 
 #include <ostream>
+#include <set>
 #include <sstream>
 
 namespace poundfe
@@ -32,11 +33,12 @@ namespace poundfe
     void
     write_recorders(const OpenSeesExport &e, std::ostream &tcl)
     {
-      tcl << "# floor displacements relative to the ground; columns: time";
+      tcl << "# floor displacements relative to the ground (a floor of several nodes: their "
+             "mean); columns: time";
       for (const std::string &name : e.floor_names)
         tcl << " " << name;
       tcl << "\nrecorder Node -file [file join $out floor_disp.out] -time -precision 16 -node"
-          << joined(e.floor_nodes) << " -dof 1 disp\n";
+          << joined(e.floor_nodes) << " -dof " << e.floor_dofs << " disp\n";
       if (e.gap_elements.empty())
         return;
       tcl << "# gap forces (zeroLength force: node i, node j; compression closes); gaps:";
@@ -58,15 +60,20 @@ namespace poundfe
           << "set here [file dirname [info script]]\n"
           << "set out [expr {[info exists argv] && [llength $argv] > 0 ? [lindex $argv 0] : "
              "$here}]\n"
-          << "wipe\nmodel basic -ndm 1 -ndf 1\n";
+          << "wipe\nmodel basic -ndm " << e.ndm << " -ndf " << e.ndf << "\n";
       for (const std::string &line : e.model)
         tcl << line << "\n";
+      for (const std::string &line : e.gravity)
+        tcl << line << "\n";
+      if (e.member_stiffness_damping != 0)
+        tcl << "# the members' a1 K of the Rayleigh damping (betaKinit)\n"
+            << "rayleigh 0.0 0.0 " << e.member_stiffness_damping << " 0.0\n";
       tcl << "# the ground motion, a_g (m/s^2) at the time step\n"
           << "timeSeries Path 1 -dt " << e.time_step
           << " -filePath [file join $here ground_motion.txt]\n"
           << "pattern UniformExcitation 1 1 -accel 1\n";
       write_recorders(e, tcl);
-      tcl << "constraints Plain\nnumberer Plain\nsystem BandGeneral\n"
+      tcl << "constraints " << e.constraints() << "\nnumberer Plain\nsystem BandGeneral\n"
           << (e.nonlinear ? "test NormDispIncr 1.0e-12 " + std::to_string(e.test_iterations) +
                               "\nalgorithm Newton\n" :
                             std::string("algorithm Linear\n"))
@@ -97,7 +104,8 @@ namespace poundfe::commands
       record << a << "\n";
     write_file_atomically(run.directory + "/ground_motion.txt", record.str());
     write_file_atomically(run.directory + "/model.tcl", script_text(e, parameters.input.file));
-    run.out << "poundfe export-opensees: " << e.floor_nodes.size() << " floors, "
+    const std::set<std::string> floors(e.floor_names.begin(), e.floor_names.end());
+    run.out << "poundfe export-opensees: " << floors.size() / (e.ndm == 3 ? 3 : 1) << " floors, "
             << e.gap_elements.size() << " gaps, " << e.n_steps << " steps of " << e.time_step
             << " s\nresults in " << run.directory << "/ (model.tcl, ground_motion.txt)\n";
     return 0;

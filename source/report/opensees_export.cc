@@ -8,27 +8,85 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/report/opensees_export.h>
 
+#include "opensees_export_parts.h"
+
+#include <algorithm>
 #include <sstream>
+
+namespace poundfe::opensees_export
+{
+  std::string
+  exact_text(const double value)
+  {
+    std::ostringstream text;
+    text.precision(17);
+    text << value;
+    return text.str();
+  }
+
+  std::string
+  building_entry(const unsigned int b, const std::string &entry)
+  {
+    return "Building " + std::to_string(b + 1) + "/" + entry;
+  }
+
+  double
+  node_mass(const Analysis &analysis, const unsigned int node, const Component c,
+            const InputFile &input)
+  {
+    const int eq = analysis.model.equation(Model::dof(node, c));
+    if (eq < 0)
+      return 0;
+    double diagonal = 0;
+    for (SparseMatrix::InnerIterator it(analysis.system.mass, eq); it; ++it)
+      if (it.row() == eq)
+        diagonal = it.value();
+      else if (it.value() != 0)
+        input.fail("Model/Mass matrix", "export-opensees writes lumped masses only");
+    return diagonal;
+  }
+
+  void
+  add_fixed_node(const int tag, const std::string &position, const std::string &what,
+                 OpenSeesExport &out)
+  {
+    out.model.push_back("node " + std::to_string(tag) + " " + position);
+    std::string fixity = "fix " + std::to_string(tag);
+    for (unsigned int c = 0; c < out.ndf; ++c)
+      fixity += " 1";
+    out.model.push_back(fixity + (what.empty() ? "" : " ;# " + what));
+  }
+
+  void
+  describe_mass_dashpots(const Analysis &analysis, const unsigned int n,
+                         const std::vector<std::pair<unsigned int, double>> &masses,
+                         const std::string &position, Tags &tags, OpenSeesExport &out)
+  {
+    const double a0 = analysis.system.rayleigh.at(analysis.model.nodes[n].building)[0];
+    std::string  materials, directions;
+    for (const auto &[direction, mass] : masses)
+      if (a0 != 0 && mass != 0)
+        {
+          out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) +
+                              " 0.0 " + exact_text(a0 * mass) + " ;# a0 m of the Rayleigh damping");
+          materials += " " + std::to_string(tags.material++);
+          directions += " " + std::to_string(direction);
+        }
+    if (materials.empty())
+      return;
+    const int ground = ++tags.node;
+    add_fixed_node(ground, position, "", out);
+    out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                        std::to_string(ground) + " " + std::to_string(n + 1) + " -mat" +
+                        materials + " -dir" + directions);
+  }
+} // namespace poundfe::opensees_export
 
 namespace poundfe
 {
   namespace
   {
-    /// A number as OpenSees reads it back to the last bit.
-    std::string
-    exact_text(const double value)
-    {
-      std::ostringstream text;
-      text.precision(17);
-      text << value;
-      return text.str();
-    }
-
-    std::string
-    building_entry(const unsigned int b, const std::string &entry)
-    {
-      return "Building " + std::to_string(b + 1) + "/" + entry;
-    }
+    using namespace opensees_export;
 
     /// The contact laws whose equations OpenSees 3.8's gap materials have:
     /// linear (ElasticPPGap), hertz (Hertzdamp without damping), jankowski
@@ -58,31 +116,21 @@ namespace poundfe
     refuse_model_parts(const Analysis &analysis, const InputFile &input)
     {
       const Model &model = analysis.model;
-      if (model.dimension != 2)
-        input.fail("Model/Dimension", "export-opensees writes 2D shear buildings only");
+      if (model.dimension == 3)
+        refuse_3d_parts(analysis, input);
       if (model.geometric_nonlinearity != GeometricNonlinearity::none)
-        input.fail("Model/Geometric nonlinearity", "export-opensees writes no P-Delta");
-      if (model.gravity_analysis.enabled)
-        input.fail("Model/Gravity analysis/Type", "export-opensees writes no gravity analysis");
+        input.fail("Model/Geometric nonlinearity",
+                   "export-opensees writes no P-Delta: poundfe's is the geometric stiffness "
+                   "of the gravity state's axial forces, held constant, OpenSees's PDelta "
+                   "transformation that of each step's axial force");
+      refuse_frame_parts(analysis, input);
       for (unsigned int b = 0; b < model.buildings.size(); ++b)
         {
-          if (model.buildings[b].type != BuildingType::shear)
-            input.fail(building_entry(b, "Type"),
-                       "export-opensees writes shear buildings only (not frames yet)");
           if (model.buildings[b].damping.is_modal())
             input.fail(building_entry(b, "Damping/Type"),
                        "modal damping has no element form in OpenSees 3.8's Tcl commands "
                        "that poundfe's export writes (Rayleigh damping: modes or coefficients)");
         }
-      // a storey is hysteretic because its yield drift is given: the
-      // entry the user wrote (the Bouc-Wen subsection only shapes the loop)
-      for (const StoreyLink &link : model.links)
-        if (link.hysteretic)
-          input.fail(building_entry(link.building, "Storey yield drifts"),
-                     "export-opensees writes elastic storeys only: OpenSees 3.8's BoucWen "
-                     "integrates the Bouc-Wen law by backward Euler over the step (z from a "
-                     "Newton iteration started at 0.01, to |dz| < tolerance), poundfe's by the "
-                     "trapezoidal rule, so the two runs would differ by the discretisation");
       if (!model.springs.empty() || !model.friction_surfaces.empty())
         input.fail(model.springs.empty() ? "Friction" : "Springs",
                    "export-opensees writes no springs to the ground or friction");
@@ -105,8 +153,12 @@ namespace poundfe
       const InputFile &input = parameters.input;
       if (parameters.time_integration.method != TimeIntegrationMethod::newmark)
         input.fail("Time integration/Method", "export-opensees writes Newmark only");
-      if (excitation.has_horizontal_pair() || excitation.has_vertical())
-        input.fail("Ground motion/Components", "export-opensees writes one horizontal component");
+      // a 3D model's pair: its second component none and no rotation
+      if ((excitation.has_horizontal_pair() && excitation.applied_horizontal_peaks()[1] != 0) ||
+          excitation.has_vertical())
+        input.fail("Ground motion/Components",
+                   "export-opensees writes one horizontal component, along x (in 3D: "
+                   "Components = 1 and Incidence angle = 0)");
       if (!excitation.nodal_forces().empty())
         input.fail("Nodal forces/File", "export-opensees writes no nodal forces");
       if (const double a0 = excitation.ground_acceleration(0); a0 != 0)
@@ -122,28 +174,32 @@ namespace poundfe
                    "export-opensees starts from rest only");
     }
 
-    /// The lumped mass on the node's ux (0 when fixed); InputError when M
-    /// couples it to another equation.
-    double
-    node_mass(const Analysis &analysis, const unsigned int node, const InputFile &input)
+    /// "x [y]" of `position` in the script's space.
+    std::string
+    position_text(const Point2 &position, const OpenSeesExport &out)
     {
-      const int eq = analysis.model.equation(Model::dof(node, Component::ux));
-      if (eq < 0)
-        return 0;
-      double diagonal = 0;
-      for (SparseMatrix::InnerIterator it(analysis.system.mass, eq); it; ++it)
-        if (it.row() == eq)
-          diagonal = it.value();
-        else if (it.value() != 0)
-          input.fail("Model/Mass matrix", "export-opensees writes lumped masses only");
-      return diagonal;
+      return exact_text(position.x) +
+             (out.ndm == 2 ? " " + exact_text(position.y) : std::string());
     }
 
-    /// Numbers of the script being written: the next free tags.
-    struct Tags
+    std::string
+    node_line(const int tag, const Point2 &position, const OpenSeesExport &out)
     {
-      int node = 0, material = 1, element = 1;
-    };
+      return "node " + std::to_string(tag) + " " + position_text(position, out);
+    }
+
+    /// The a0 M term of node n with `masses` on its DOFs (the rotation, the
+    /// third, a zeroLength's direction 6).
+    void
+    describe_mass_dashpots(const Analysis &analysis, const unsigned int n,
+                           const std::vector<double> &masses, Tags &tags, OpenSeesExport &out)
+    {
+      std::vector<std::pair<unsigned int, double>> on_directions;
+      for (unsigned int c = 0; c < masses.size(); ++c)
+        on_directions.emplace_back(c == 2 ? 6 : c + 1, masses[c]);
+      describe_mass_dashpots(analysis, n, on_directions,
+                             position_text(analysis.model.nodes[n].position, out), tags, out);
+    }
 
     /// Each building's nodes (with masses and fixities) and the dashpots of
     /// its a0 M term to fixed nodes of their own.
@@ -151,34 +207,42 @@ namespace poundfe
     describe_nodes(const Analysis &analysis, const InputFile &input, Tags &tags,
                    OpenSeesExport &out)
     {
-      const Model &model = analysis.model;
+      const Model     &model = analysis.model;
+      std::vector<int> owner(model.n_equations(), -1); // the first node of each equation
       for (unsigned int n = 0; n < model.n_nodes(); ++n)
         {
           const Node &node = model.nodes[n];
-          for (const Component c : {Component::uy, Component::rz})
-            if (model.equation(Model::dof(n, c)) >= 0)
+          for (unsigned int c = out.ndf; c < n_dofs_per_node; ++c)
+            if (model.equation(Model::dof(n, Component(c))) >= 0)
               input.fail(building_entry(node.building, "Type"),
                          "a shear building's node moves in uy or rz");
-          const double m = node_mass(analysis, n, input);
-          std::string  line = "node " + std::to_string(n + 1) + " " + exact_text(node.position.x);
-          if (m != 0)
-            line += " -mass " + exact_text(m);
-          out.model.push_back(line);
-          if (model.equation(Model::dof(n, Component::ux)) < 0)
-            out.model.push_back("fix " + std::to_string(n + 1) + " 1");
-          const double a0 = analysis.system.rayleigh.at(node.building)[0];
-          if (a0 != 0 && m != 0)
+          std::vector<double> masses(out.ndf);
+          std::string         mass_text, fixity, tied;
+          int                 tied_to = -1;
+          for (unsigned int c = 0; c < out.ndf; ++c)
             {
-              const int ground = ++tags.node;
-              out.model.push_back("node " + std::to_string(ground) + " " +
-                                  exact_text(node.position.x));
-              out.model.push_back("fix " + std::to_string(ground) + " 1");
-              out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) +
-                                  " 0.0 " + exact_text(a0 * m) + " ;# a0 m of the Rayleigh damping");
-              out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
-                                  std::to_string(ground) + " " + std::to_string(n + 1) +
-                                  " -mat " + std::to_string(tags.material++) + " -dir 1");
+              const int eq = model.equation(Model::dof(n, Component(c)));
+              if (eq >= 0 && owner[eq] >= 0) // a hinge's node: the joint's translation
+                {
+                  tied_to = owner[eq];
+                  tied += " " + std::to_string(c + 1);
+                }
+              else if (eq >= 0)
+                owner[eq] = n, masses[c] = node_mass(analysis, n, Component(c), input);
+              mass_text += " " + exact_text(masses[c]);
+              fixity += eq < 0 ? " 1" : " 0";
             }
+          const bool has_mass = std::any_of(masses.begin(), masses.end(),
+                                            [](const double m) { return m != 0; });
+          out.model.push_back(node_line(n + 1, node.position, out) +
+                              (has_mass ? " -mass" + mass_text : std::string()));
+          if (fixity.find('1') != std::string::npos)
+            out.model.push_back("fix " + std::to_string(n + 1) + fixity);
+          if (tied_to >= 0)
+            out.model.push_back("equalDOF " + std::to_string(tied_to + 1) + " " +
+                                std::to_string(n + 1) + tied);
+          out.tied = out.tied || tied_to >= 0;
+          describe_mass_dashpots(analysis, n, masses, tags, out);
         }
     }
 
@@ -188,18 +252,33 @@ namespace poundfe
     describe_storeys(const Analysis &analysis, Tags &tags, OpenSeesExport &out)
     {
       const Model &model = analysis.model;
-      out.model.push_back("# storeys: zeroLength on Elastic k eta, eta = a1 k + the storey's "
-                          "dashpot");
+      if (!model.links.empty())
+        out.model.push_back("# storeys: zeroLength on Elastic k eta, eta = a1 k + the storey's "
+                            "dashpot");
+      if (std::any_of(model.links.begin(), model.links.end(),
+                      [](const StoreyLink &link) { return link.hysteretic; }))
+        out.model.push_back("# a Bouc-Wen storey: a zeroLength on " + bouc_wen_comment() +
+                            "; beside it a zeroLength on Elastic 0 eta");
       for (const StoreyLink &link : model.links)
         {
-          const double a1  = analysis.system.rayleigh.at(link.building)[1];
-          const double eta = a1 * link.stiffness + link.damping;
+          const double      a1  = analysis.system.rayleigh.at(link.building)[1];
+          const double      eta = a1 * link.stiffness + link.damping;
+          const std::string ends =
+            std::to_string(link.nodes[0] + 1) + " " + std::to_string(link.nodes[1] + 1);
+          if (link.hysteretic)
+            {
+              out.model.push_back(bouc_wen_material(link.hysteresis, tags.material,
+                                                    model.buildings[link.building].name +
+                                                      " storey"));
+              out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
+                                  ends + " -mat " + std::to_string(tags.material++) + " -dir 1");
+              out.nonlinear = true;
+            }
           out.model.push_back("uniaxialMaterial Elastic " + std::to_string(tags.material) + " " +
-                              exact_text(link.stiffness) + " " + exact_text(eta));
-          out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
-                              std::to_string(link.nodes[0] + 1) + " " +
-                              std::to_string(link.nodes[1] + 1) + " -mat " +
-                              std::to_string(tags.material++) + " -dir 1");
+                              (link.hysteretic ? "0.0" : exact_text(link.stiffness)) + " " +
+                              exact_text(eta));
+          out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " + ends +
+                              " -mat " + std::to_string(tags.material++) + " -dir 1");
         }
       for (const Building &building : model.buildings)
         for (unsigned int f = 0; f < building.floors.size(); ++f) // floor 1 up
@@ -265,8 +344,8 @@ namespace poundfe
             else
               {
                 const int barrier = ++tags.node;
-                out.model.push_back("node " + std::to_string(barrier) + " 0.0");
-                out.model.push_back("fix " + std::to_string(barrier) + " 1 ;# the barrier");
+                add_fixed_node(barrier, position_text(Point2{0.0, gap.level}, out),
+                               "the barrier", out);
                 ends[side] = std::to_string(barrier);
               }
           out.model.push_back("uniaxialMaterial " + gap_material(model.contact, gap) + " " +
@@ -293,10 +372,26 @@ namespace poundfe
     OpenSeesExport out;
     Tags           tags;
     tags.node = analysis.model.n_nodes();
-    out.model.push_back("# nodes: a floor's ux with its mass; the base and the damping's "
-                        "ground nodes fixed");
-    describe_nodes(analysis, parameters.input, tags, out);
-    describe_storeys(analysis, tags, out);
+    if (analysis.model.dimension == 3)
+      out.ndm = 3, out.ndf = 6;
+    else if (in_plane(analysis.model))
+      out.ndm = 2, out.ndf = 3;
+    if (out.ndm < 3)
+      out.model.push_back(out.ndf == 1 ? "# nodes: a floor's ux with its mass; the base and the "
+                                         "damping's ground nodes fixed" :
+                                         "# nodes (x, y): M's masses on ux, uy, rz; the "
+                                         "supports and the damping's ground nodes fixed");
+    if (out.ndm == 3)
+      describe_frames_3d(analysis, parameters.input, tags, out);
+    else
+      {
+        describe_nodes(analysis, parameters.input, tags, out);
+        describe_storeys(analysis, tags, out);
+        describe_members(analysis, parameters.input, tags, out);
+        describe_hinges(analysis, tags, out);
+      }
+    out.member_stiffness_damping = frames_stiffness_damping(analysis, parameters.input);
+    describe_gravity(analysis, out);
     describe_gaps(analysis, tags, out);
     const NewmarkParameters &newmark = parameters.time_integration.newmark;
     out.time_step                    = newmark.time_step;

@@ -14,8 +14,14 @@
 #  - the nonlinear contact laws OpenSees has the same equations of (hertz as
 #    Hertzdamp without damping, jankowski as JankowskiImpact), the same way
 #    at 1e-6, on the pounding pair with Contact/Law set;
-# and the refusals name the entry OpenSees cannot be given (frames, Bouc-Wen
-# storeys by their Storey yield drifts, the contact laws hertz-damp and
+#  - 2D frames: elastic members at 1e-9 (with the gravity analysis, and its
+#    state checked), fibre members at 1e-6 as the other nonlinear cases,
+#    Bouc-Wen hinges by first-order convergence in the time step (below);
+#  - Bouc-Wen storeys by the same convergence;
+#  - 3D frames on rigid floors: elastic members at 1e-9, fibre members at
+#    1e-6;
+# and the refusals name the entry OpenSees cannot be given (P-Delta, 3D
+# shear buildings, 3D hinges, contact in plan, frames of their own Rayleigh a1, hinges of A != 1, the contact laws hertz-damp and
 # kelvin-voigt (saying how OpenSees's namesakes differ), nodal forces, modal
 # damping, a record that does not start at zero).
 #   opensees_export.sh POUNDFE INPUT_DIR PYTHON3
@@ -33,12 +39,14 @@ same_floors() { # OPENSEES_DIR RUN_DIR SCRIPT TOLERANCE
 import re, sys
 import numpy as np
 ours, run, script, tolerance = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
-names = re.search(r"columns: time (.*)", open(script).read()).group(1).split()
+columns = re.search(r"columns: time (.*)", open(script).read()).group(1).split()
 table = np.loadtxt(ours + "/floor_disp.out", ndmin=2)
 csv = np.genfromtxt(run + "/floor_displacement.csv", delimiter=",", names=True)
 assert len(csv) == len(table) + 1, (len(csv), len(table))  # the run's row at t = 0
-for j, name in enumerate(names):
-    mine, theirs = table[:, j + 1], csv[name][1:]
+# a frame's floor: a column per node, its displacement their mean (poundfe's)
+for name in dict.fromkeys(columns):
+    mine = table[:, [j + 1 for j, c in enumerate(columns) if c == name]].mean(axis=1)
+    theirs = csv[name][1:]
     peak = np.abs(theirs).max()
     d = np.abs(mine - theirs).max() / peak
     print(f"{name}: peak {peak:.6e} largest difference / peak {d:.1e}")
@@ -78,8 +86,144 @@ for law in hertz jankowski; do
   grep -q "^uniaxialMaterial $( [ $law = hertz ] && echo Hertzdamp || echo JankowskiImpact) " \
     "$work/shear-pair-pounding-$law/script/model.tcl" || fail "$law: not its OpenSees material"
 done
-# the gaps closed: the pounding pair's scripts have gap forces, some non-zero
-for case in shear-pair-pounding shear-pair-pounding-hertz shear-pair-pounding-jankowski; do
+# 2D frames of elastic members (elasticBeamColumn on geomTransf Linear; a
+# Gmsh building, Type = mesh, the same way): the same M, K, C and Newmark,
+# 1e-9 as the shear buildings
+for name in one-storey-frame two-storey-frame three-storey-frame setback-frame; do
+  check_example $name 1e-9
+done
+# with the gravity analysis first, on two unequal bays: the floors at 1e-9,
+# and the gravity state, OpenSees's vertical displacement of the node where
+# poundfe's is largest (summary.json), at 1e-9 of it (the same linear solve)
+gravity=(--set "Model/Gravity analysis/Type=static" --set "Building 1/Number of bays=2"
+  --set "Building 1/Bay widths=6.0, 4.0")
+case_suffix=-gravity check_example three-storey-frame 1e-9 "${gravity[@]}"
+dir=$work/three-storey-frame-gravity
+grep -q "^pattern Plain 2 Linear {" "$dir/script/model.tcl" || fail "gravity: no gravity pattern"
+"$python" - "$dir" "$poundfe" <<'PY' || fail "gravity: the gravity state"
+import json, re, subprocess, sys
+dir, poundfe = sys.argv[1], sys.argv[2]
+summary = json.load(open(dir + "/run/summary.json"))
+text = json.dumps(summary)
+peak = float(re.search(r'"peak_displacement_m": ([-0-9.e]+)', text).group(1))
+where = re.search(r'"peak_displacement_at": "\S+ node \d+ at \(([-0-9.e]+), ([-0-9.e]+)\) uy"',
+                  text)
+script = open(dir + "/script/model.tcl").read()
+tag = re.search(r"^node (\d+) %s %s\b" % where.groups(), script, re.M).group(1)
+probe = script.replace("wipeAnalysis\n", 'puts "gravity uy [nodeDisp %s 2]"\nwipeAnalysis\n' % tag)
+open(dir + "/probe.tcl", "w").write(probe.replace("[file dirname [info script]]",
+                                                  '"%s/script"' % dir))
+out = subprocess.run([poundfe, "opensees", dir + "/probe.tcl", dir + "/probe"],
+                     capture_output=True, text=True).stdout
+uy = float(re.search(r"gravity uy (\S+)", out).group(1))
+print(f"gravity: node {tag} uy {uy:.9e}, poundfe's peak {peak:.9e}")
+assert abs(abs(uy) - peak) <= 1e-9 * peak, (uy, peak)
+PY
+# a pounding pair of frames: two-buildings without its hinges, with the linear
+# law and one set of Rayleigh coefficients (OpenSees's rayleigh acts on every
+# element), without event location: 1e-6 as the shear pairs
+frame_pair=(--set "Building 1/Hinges/Locations=" --set "Building 2/Hinges/Locations="
+  --set "Contact/Law=linear" "${no_events[@]}")
+for b in 1 2; do
+  frame_pair+=(--set "Building $b/Damping/Type=coefficients" --set "Building $b/Damping/a0=0.5"
+    --set "Building $b/Damping/a1=0.002")
+done
+check_example two-buildings 1e-6 "${frame_pair[@]}"
+# fibre members (forceBeamColumn on Lobatto points, dispBeamColumn on
+# Legendre, section Fiber of poundfe's fibres, Concrete02 and Steel02, the
+# columns on geomTransf PDelta), gravity first: fibre-frame-pounding with the
+# linear law and one set of Rayleigh coefficients, without event location;
+# its steel yields and its concrete passes its peak strain. 1e-6 as the other
+# nonlinear cases: the difference of two converged Newton iterates, carried
+# along the path of the materials' histories
+fibre_pair=(--set "Contact/Law=linear" "${no_events[@]}")
+for b in 1 2; do
+  fibre_pair+=(--set "Building $b/Damping/Type=coefficients" --set "Building $b/Damping/a0=0.5"
+    --set "Building $b/Damping/a1=0.002")
+done
+check_example fibre-frame-pounding 1e-6 "${fibre_pair[@]}"
+grep -q "^element forceBeamColumn .* 2 1 ;# A_C1.1" "$work/fibre-frame-pounding/script/model.tcl" \
+  || fail "fibre: not a forceBeamColumn on PDelta"
+for b in 1 2; do
+  fibre_pair+=(--set "Building $b/Member element=displacement" --set "Building $b/Integration points=3")
+done
+case_suffix=-displacement check_example fibre-frame-pounding 1e-6 "${fibre_pair[@]}"
+grep -q "^beamIntegration Legendre 1 1 3" "$work/fibre-frame-pounding-displacement/script/model.tcl" \
+  || fail "fibre: not Legendre points"
+# Bouc-Wen hinges (zeroLength -dir 6 on BoucWen, the member end's node
+# tied to the joint by equalDOF): elastic (yield moments far beyond reach)
+# at 1e-9 as the elastic frames; yielding (three-storey-frame-hinges, whose
+# hinges reach ductilities near 30), by convergence: OpenSees's BoucWen
+# integrates z by backward Euler, poundfe's by the trapezoidal rule, so at
+# the steps 0.002, 0.001 and 0.0005 s (the record held over 0.002 s,
+# Sample interval, the same motion at every step) the difference must
+# halve with each halving (first order: ratios 0.4 to 0.6) and be below
+# 5e-4 of the peak at the finest
+case_suffix=-elastic check_example three-storey-frame-hinges 1e-9 \
+  --set "Building 1/Hinges/Yield moment=200e9, 150e9, 150e9, 120e9"
+grep -q -- "-dir 6 -doRayleigh 1$" "$work/three-storey-frame-hinges-elastic/script/model.tcl" \
+  || fail "hinges: no rotational zeroLength"
+converges() { # NAME FINEST-TOLERANCE DT1 DT2 DT3 -- [--set ...]: first order in the step
+  local name=$1 finest=$2 steps=("$3" "$4" "$5")
+  shift 6
+  for dt in "${steps[@]}"; do
+    case_suffix=-$dt check_example $name 1 --set "Time integration/Time step=$dt" "$@"
+  done
+  "$python" - "$work" $name $finest "${steps[@]}" <<'PY' || fail "$name: no first-order convergence"
+import re, sys
+work, name, finest, steps = sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4:]
+d = [max(float(x) for x in re.findall(r"peak ([0-9.e+-]+)$",
+                                          open(f"{work}/{name}-{dt}.cmp").read(), re.M))
+     for dt in steps]
+print(f"{name}: largest difference / peak at dt, dt/2, dt/4:", " ".join(f"{x:.2e}" for x in d))
+assert all(0.4 <= b / a <= 0.6 for a, b in zip(d, d[1:])) and d[-1] < finest, d
+PY
+}
+converges three-storey-frame-hinges 5e-4 0.002 0.001 0.0005 -- \
+  --set "Ground motion/Stochastic/Sample interval=0.002"
+# Bouc-Wen storeys (a zeroLength on BoucWen beside one on Elastic 0 eta), the
+# same way: ida-pounding-pair, its buildings apart (Separations 1 m: no
+# impact; storey ductilities up to 2.6), the record held over 0.005 s; below
+# 1e-2 of the peak at the finest step
+converges ida-pounding-pair 1e-2 0.005 0.0025 0.00125 -- --set "Model/Separations=1" \
+  --set "Ground motion/Stochastic/Sample interval=0.005"
+# 3D frames (-ndm 3 -ndf 6: a master at each floor's mass centre, the joints
+# under rigidDiaphragm 3, elasticBeamColumn A E G J Iy Iz on poundfe's v_xz):
+# building A5 of 3d-torsional-pair alone, without hinges, one horizontal
+# component along x; its mass eccentricity couples x, y and the twist. Each
+# floor's x, y and theta_z at 1e-9 (linear), with the gravity analysis too
+first_building() { # INPUT OUTPUT: the input with its first building alone
+  "$python" - "$1" "$2" <<'PY'
+import sys
+text = open(sys.argv[1]).read()
+start = text.index("subsection Building 2")
+end = text.index("end\n", text.index("subsection Damping", start))
+end = text.index("end\n", end + 4) + 4
+open(sys.argv[2], "w").write((text[:start] + text[end:]).replace(
+    "set Number of buildings = 2", "set Number of buildings = 1"))
+PY
+}
+first_building "$inputs/3d-torsional-pair.prm" "$work/frame3d.prm"
+frame3d=(--set "Building 1/Hinges/Locations=" --set "Ground motion/Stochastic/Duration=4"
+  --set "Ground motion/Components=1" --set "Ground motion/Incidence angle=0")
+inputs=$work check_example frame3d 1e-9 "${frame3d[@]}"
+grep -q "^rigidDiaphragm 3 " "$work/frame3d/script/model.tcl" || fail "3D: no rigidDiaphragm"
+inputs=$work case_suffix=-gravity check_example frame3d 1e-9 "${frame3d[@]}" \
+  --set "Model/Gravity analysis/Type=static"
+grep -q "^pattern Plain 2 Linear {" "$work/frame3d-gravity/script/model.tcl" \
+  || fail "3D: no gravity pattern"
+# 3D fibre members (section Fiber with -GJ, forceBeamColumn on 4 Lobatto
+# points, the columns on geomTransf PDelta): building A of fibre-frame-3d
+# alone, gravity first, its mass centre moved (Plan/Mass eccentricity) so
+# that y and the twist respond; its steel yields. 1e-6 as the 2D fibre frames
+first_building "$inputs/fibre-frame-3d.prm" "$work/fibre3d.prm"
+inputs=$work check_example fibre3d 1e-6 --set "Ground motion/Components=1" \
+  --set "Ground motion/Incidence angle=0" --set "Building 1/Plan/Mass eccentricity=0.5, 0.3"
+grep -q "^section Fiber 1 -GJ " "$work/fibre3d/script/model.tcl" || fail "3D fibre: no -GJ"
+
+# the gaps closed: the pounding pairs' scripts have gap forces, some non-zero
+for case in shear-pair-pounding shear-pair-pounding-hertz shear-pair-pounding-jankowski \
+  two-buildings fibre-frame-pounding; do
   "$python" -c "
 import numpy as np, sys
 f = np.loadtxt('$work/$case/script/gap_force.out', ndmin=2)
@@ -95,8 +239,22 @@ refused() { # NAME EXPECTED-ENTRY-AND-MESSAGE-PART
   grep -qF -- "$2" "$dir.err" || { cat "$dir.err"; fail "$1: message"; }
   [ ! -e "$dir/model.tcl" ] || fail "$1: model.tcl written"
 }
-refused two-storey-frame "'Building 1/Type': export-opensees writes shear buildings only"
-refused bouc-wen-sdof "'Building 1/Storey yield drifts': export-opensees writes elastic storeys only"
+# one a1 for every frame (OpenSees's rayleigh): two frames of their own a1
+refused_with() { # NAME LABEL EXPECTED-MESSAGE-PART [--set ...]
+  local dir="$work/refused-$2" message=$3
+  "$poundfe" export-opensees "$inputs/$1.prm" --output "$dir" "${@:4}" > "$dir.out" 2> "$dir.err"
+  [ $? = 1 ] || { cat "$dir.err"; fail "$2: not refused"; }
+  grep -qF -- "$message" "$dir.err" || { cat "$dir.err"; fail "$2: message"; }
+  [ ! -e "$dir/model.tcl" ] || fail "$2: model.tcl written"
+}
+refused_with two-buildings rayleigh "'Building 2/Damping/Type': its stiffness-proportional Rayleigh coefficient a1 = " \
+  --set "Building 1/Hinges/Locations=" --set "Building 2/Hinges/Locations=" --set "Contact/Law=linear"
+refused_with three-storey-frame-hinges bouc-wen-a "'Building 1/Bouc-Wen/A': export-opensees writes hinges of A = 1 only" \
+  --set "Building 1/Bouc-Wen/A=0.9"
+refused pushover-frame "'Model/Geometric nonlinearity': export-opensees writes no P-Delta"
+refused 3d-torsional-pair "'Building 1/Hinges/Locations': export-opensees writes 3D frames without hinges"
+refused 3d-torsional-shear-pair "'Building 1/Type': export-opensees writes 3D frames only"
+refused fibre-frame-3d "'Contact/Law': export-opensees writes no contact in plan (3D)"
 refused spillway-abutment "'Nodal forces/File': export-opensees writes no nodal forces"
 # laws whose OpenSees namesakes differ: refused, saying how
 refused_law() { # LAW EXPECTED-MESSAGE-PART

@@ -12,7 +12,25 @@
 //  - a gap with the linear contact law (F = k d, d the penetration): a
 //    zeroLength on ElasticPPGap k Fy -g with a yield force no impact
 //    reaches (the same law), from the left node to the right one (or to
-//    a fixed barrier node), so that closing compresses it.
+//    a fixed barrier node), so that closing compresses it;
+//  - a 2D frame (report/opensees_export_frames.cc; then every building in
+//    model basic -ndm 2 -ndf 3, a shear building's uy and rz fixed): each
+//    member an elasticBeamColumn on geomTransf Linear with the member's E,
+//    A and I, the lumped masses of M on the nodes, the building's a0 M as
+//    dashpots to fixed nodes and a1 K as `rayleigh 0 0 a1 0` (betaKinit:
+//    the members' and hinges' initial stiffness, the gaps left out as
+//    poundfe's C leaves them; one a1 for every frame, since OpenSees 3.8's per-building form,
+//    region, is not among `poundfe opensees`'s commands); Model/Gravity
+//    analysis as OpenSees's gravity analysis: the same nodal loads in a
+//    Plain pattern, LoadControl in as many steps, then loadConst -time 0;
+//  - a fibre member (report/opensees_export_fibres.cc): section Fiber of
+//    its fibres and materials, forceBeamColumn (Lobatto) or dispBeamColumn
+//    (Legendre), geomTransf PDelta for a PDelta column;
+//  - a Bouc-Wen hinge: the member's end node tied to the joint (equalDOF
+//    1 2), a zeroLength -dir 6 on BoucWen; a Bouc-Wen storey a zeroLength on
+//    BoucWen beside one on Elastic 0 eta. OpenSees's BoucWen integrates by
+//    backward Euler, poundfe's by the trapezoidal rule: the runs agree as
+//    the step shrinks, to first order, not at one step.
 // Anything else the model has is refused by InputError naming its entry.
 #ifndef poundfe_report_opensees_export_h
 #define poundfe_report_opensees_export_h
@@ -30,10 +48,29 @@ namespace poundfe
     /// The model's commands, one a line, with comment lines (# ...) that
     /// say what each part is in poundfe's terms.
     std::vector<std::string> model;
+    /// The model's space: 1 and 1 for shear buildings alone, 3 and 6 in 3D,
+    /// else 2 and 3.
+    unsigned int ndm = 1, ndf = 1;
+    /// Some node shares DOFs of another (equalDOF: constraints
+    /// Transformation, else Plain).
+    bool tied = false;
+    /// The constraint handler those ties need.
+    std::string constraints() const { return tied ? "Transformation" : "Plain"; }
+    /// The gravity analysis before the record (empty without one): the
+    /// pattern and the static analysis, ending with loadConst -time 0.
+    std::vector<std::string> gravity;
+    /// The members' stiffness-proportional damping a1 (rayleigh's
+    /// betaKinit); 0: no rayleigh command.
+    double member_stiffness_damping = 0;
     /// The floor nodes to record, building by building, bottom to top, with
-    /// poundfe's names of their columns (shear3_floor1_disp_m, ...).
+    /// poundfe's names of their columns (shear3_floor1_disp_m, ...): a
+    /// frame's floor has a column per node, of one name, and poundfe's
+    /// floor displacement is their mean.
     std::vector<int>         floor_nodes;
     std::vector<std::string> floor_names;
+    /// The DOFs recorded at each floor node ("1"; a 3D floor's "1 2 6": its
+    /// three columns are x, y and θz).
+    std::string floor_dofs = "1";
     /// The gap elements and their names (gap1, ...).
     std::vector<int>         gap_elements;
     std::vector<std::string> gap_names;
