@@ -20,7 +20,8 @@
 //
 // zeroLength (ZeroLength): the local axes x, y (-orient), z = x × y,
 //   y = z × x; material m along direction d (1-3: translation along axis
-//   d, 4-6: rotation about axis d - 3) has the row t_m of the local
+//   d, 4-6: rotation about axis d - 3; in a planar model 3 is the rotation
+//   about z, as 6) has the row t_m of the local
 //   deformation over the global DOFs (the axis' components at node j, their
 //   negatives at node i, within the DOFs the model's ndm/ndf give; a
 //   direction the node has no DOF for contributes nothing, as in
@@ -527,10 +528,14 @@ namespace poundfe
         Matrix t = Matrix::Zero(data.materials.size(), 2 * ndf);
         for (unsigned int m = 0; m < data.materials.size(); ++m)
           {
-            const int direction = data.directions[m] - 1;
+            int direction = data.directions[m] - 1;
             if (direction < 0 || direction > 5)
               throw ScriptError("zeroLength " + std::to_string(tag) + ": -dir " +
                                 std::to_string(direction + 1) + " is not one of 1 to 6");
+            // In a planar model OpenSees reads -dir 3 as the rotation about z
+            // (ZeroLength's constructors: direction 2 becomes 5 when ndm = 2).
+            if (direction == 2 && ndm == 2)
+              direction = 5;
             const unsigned int axis = direction % 3;
             if (direction < 3)
               for (unsigned int k = 0; k < n_translations; ++k)

@@ -155,6 +155,22 @@ analysis Static
 analyze 1
 check "3D translation" [nodeDisp 2 2] 0.02
 check "3D rotation" [nodeDisp 2 6] 0.1
+# in a planar model -dir 3 is the rotation about z, as -dir 6 (OpenSees's
+# ZeroLength); a translation along z would leave the moment unresisted
+foreach direction {3 6} {
+    wipe
+    model basic -ndm 2 -ndf 3
+    node 1 0.0 0.0
+    node 2 0.0 0.0
+    fix 1 1 1 1
+    fix 2 1 1 0
+    uniaxialMaterial Elastic 1 250.0
+    element zeroLength 1 1 2 -mat 1 -dir $direction
+    pattern Plain 1 Linear { load 2 0 0 5.0 }
+    analysis Static
+    analyze 1
+    check "planar rotation -dir $direction" [nodeDisp 2 3] 0.02
+}
 # Series of two springs: k1 k2 / (k1 + k2) beside the elastic one
 wipe
 model basic -ndm 1 -ndf 1
@@ -315,7 +331,7 @@ foreach element {forceBeamColumn dispBeamColumn} {
 TCL
 "$poundfe" opensees "$work/materials/m.tcl" > "$work/materials/log" 2>&1 \
   || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
-[ "$(grep -c '^ok ' "$work/materials/log")" = 33 ] || { cat "$work/materials/log"; fail "materials"; }
+[ "$(grep -c '^ok ' "$work/materials/log")" = 35 ] || { cat "$work/materials/log"; fail "materials"; }
 
 # 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
 bad() { # NAME EXPECTED (the script on standard input)
