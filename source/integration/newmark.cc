@@ -4,6 +4,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/integration/accuracy_substeps.h>
+#include <poundfe/integration/fixed_size_step.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/assembly/modal_damping.h>
 
@@ -103,14 +104,45 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// |x| over every rank's own equations (distribution null: one process).
+    double
+    norm_over_ranks(const RankOwnership *distribution, const Vector &x)
+    {
+      return distribution ? distribution->norm(x) : x.norm();
+    }
+
+    /// The general storage of the step's formulas (fixed_size_step.h): the
+    /// sparse matrices, modal damping's low-rank part, norms over ranks.
+    struct GeneralStorage
+    {
+      const LinearSystem  &system;
+      const SparseMatrix  &effective;
+      const RankOwnership *distribution;
+
+      void mass_product(const Vector &x, Vector &y) const { y.noalias() = system.mass * x; }
+      void damping_product(const Vector &x, Vector &y) const
+      {
+        y.noalias() = system.damping * x;
+        add_low_rank_damping_product(system.modal_damping, x, y);
+      }
+      void subtract_effective_product(const Vector &x, Vector &y) const
+      {
+        y.noalias() -= effective * x;
+      }
+      double norm(const Vector &x) const { return norm_over_ranks(distribution, x); }
+    };
+  } // namespace
+
   /// Everything that depends on the step size: Newmark coefficients, the
   /// effective matrix and its factorisation. Level c has dt / 2^c.
-  struct NewmarkIntegrator::Level
+  struct NewmarkIntegrator::Level : NewmarkCoefficients
   {
-    double                        dt = 0;
-    double                        c_mass_u, c_mass_v, c_mass_a; // a_{n+1} = c_u du - c_v v - c_a a
-    double                        c_damp_u, c_damp_v, c_damp_a;
     SparseMatrix                  effective;
+    /// The step's arithmetic in fixed size (fixed_size_step.h), or null:
+    /// the general storage.
+    std::unique_ptr<FixedSizeStep> fixed;
     std::vector<double>           base_values;
     std::unique_ptr<LinearSolver> solver;
     /// hybrid: the assembled tangent's factorisation (same pattern).
@@ -272,12 +304,17 @@ namespace poundfe
   double
   NewmarkIntegrator::norm_of(const Vector &x) const
   {
-    return distribution ? distribution->norm(x) : x.norm();
+    // the fixed-size arithmetic of M, K and the norms is every level's: level 0's
+    if (const FixedSizeStep *const fixed = levels[0]->fixed.get())
+      return fixed->norm(x);
+    return norm_over_ranks(distribution, x);
   }
 
   double
   NewmarkIntegrator::dot_of(const Vector &x, const Vector &y) const
   {
+    if (const FixedSizeStep *const fixed = levels[0]->fixed.get())
+      return fixed->dot(x, y);
     return distribution ? distribution->dot(x, y) : x.dot(y);
   }
 
@@ -317,6 +354,8 @@ namespace poundfe
     auto L = std::make_unique<Level>();
     set_coefficients(*L, parameters.time_step / std::ldexp(1.0, cuts));
     assemble_effective_matrix(*L);
+    if (!distribution)
+      L->fixed = make_fixed_size_step(system, L->effective);
     L->solver = new_linear_solver(*L);
     list_uniaxial(elements, n_elements, L->uniaxial);
     // every step size has K_eff's pattern: one symbolic analysis where the
@@ -337,6 +376,7 @@ namespace poundfe
   {
     const double g = parameters.gamma, b = parameters.beta;
     L.dt       = dt;
+    L.gamma    = g;
     L.load_end.setZero(system.n_equations());
     L.c_mass_u = 1 / (b * dt * dt);
     L.c_mass_v = 1 / (b * dt);
@@ -381,6 +421,8 @@ namespace poundfe
     std::unique_ptr<LinearSolver> solver = create_linear_solver(solver_name, iterative);
     if (distribution) // this rank's block
       solver = restrict_to_block(std::move(solver), distribution->owned_range());
+    else // eigen-ldlt's solves of a small model in fixed size
+      solver = with_fixed_size_solve(std::move(solver), system.n_equations());
     // modal damping: K_eff + c U D U^T by the Woodbury identity (assembly/modal_damping.h)
     return with_low_rank_damping(std::move(solver), system.modal_damping, L.c_damp_u);
   }
@@ -641,33 +683,29 @@ namespace poundfe
     // r_0 = rhs - K_eff u = p - K u + M (c_v v + c_a a) + C (c_v' v + c_a' a),
     // each term of the size of the forces, not of M u / (beta dt^2)
     const Vector &stiffness_u = stiffness_times_u();
-    residual_floor            = norm_of(p) + norm_of(stiffness_u);
-    start_residual            = p - stiffness_u;
-    work_vector.noalias() = L.c_mass_v * v + L.c_mass_a * a;
-    product.noalias()     = system.mass * work_vector;
-    residual_floor += norm_of(product);
-    start_residual += product;
-    work_vector.noalias() = L.c_damp_v * v + L.c_damp_a * a;
-    product.noalias()     = system.damping * work_vector;
-    add_low_rank_damping_product(system.modal_damping, work_vector, product);
-    residual_floor += norm_of(product);
-    start_residual += product;
-    // below this a residual is the round-off of its terms
-    residual_floor *= 1e-13;
+    residual_floor =
+      L.fixed ? L.fixed->start_residual(L, p, stiffness_u, v, a, start_residual) :
+                newmark_formulas::start_residual(GeneralStorage{system, L.effective, distribution},
+                                                 L, p, stiffness_u, v, a, work_vector, product,
+                                                 start_residual);
   }
 
   void
   NewmarkIntegrator::set_iterate()
   {
-    u_next.noalias() = u + step_displacement;
+    if (const FixedSizeStep *const fixed = levels[0]->fixed.get())
+      fixed->iterate(u, step_displacement, u_next);
+    else
+      u_next.noalias() = u + step_displacement;
   }
 
   void
   NewmarkIntegrator::update_kinematics(const Level &L)
   {
-    const double g = parameters.gamma, dt = L.dt;
-    a_next.noalias() = L.c_mass_u * step_displacement - L.c_mass_v * v - L.c_mass_a * a;
-    v_next.noalias() = v + dt * ((1 - g) * a + g * a_next);
+    if (L.fixed)
+      L.fixed->kinematics(L, step_displacement, v, a, v_next, a_next);
+    else
+      newmark_formulas::kinematics(L, step_displacement, v, a, v_next, a_next);
   }
 
   bool
@@ -705,11 +743,14 @@ namespace poundfe
       }
     // A step's first iterate from u_n (no friction) has du = 0: r = r_0 to
     // the bit, without the sparse products.
-    const bool from_start = (step_displacement.array() == 0.0).all();
-    if (from_start)
+    const bool from_start = !L.fixed && (step_displacement.array() == 0.0).all();
+    if (L.fixed)
+      L.fixed->effective_residual(start_residual, step_displacement, residual);
+    else if (from_start)
       residual = start_residual;
     else
-      residual.noalias() = start_residual - L.effective * step_displacement;
+      newmark_formulas::effective_residual(GeneralStorage{system, L.effective, distribution},
+                                           start_residual, step_displacement, residual);
     if (!from_start && !system.modal_damping.empty()) // the modal part of K_eff: c U D U^T
       {
         product.setZero();
@@ -1128,10 +1169,9 @@ namespace poundfe
   {
     AssertThrow(!distribution,
                 dealii::ExcMessage("the dense tangent is of one process's model"));
-    Level       &L  = level(0);
-    const double g  = parameters.gamma;
-    Vector       an = L.c_mass_u * (u_trial - u) - L.c_mass_v * v - L.c_mass_a * a;
-    Vector       vn = v + L.dt * ((1 - g) * a + g * an);
+    Level &L = level(0);
+    Vector an(u.size()), vn(u.size());
+    newmark_formulas::kinematics(L, Vector(u_trial - u), v, a, vn, an);
     if (!evaluate_elements(u_trial, vn, L))
       throw NumericalError(failure);
     if (L.holds_tangent)
@@ -1160,12 +1200,13 @@ namespace poundfe
   NewmarkIntegrator::accept(const Level &L, const Vector &p)
   {
     // Trapezoidal work of the step; exact for the average-acceleration rule.
-    work_vector = step_displacement;
-    balance.input += 0.5 * work_vector.dot(load_now + p);
-    velocity_sum = v + v_next;
-    product.noalias() = system.damping * velocity_sum;
-    add_low_rank_damping_product(system.modal_damping, velocity_sum, product);
-    balance.damping += 0.5 * work_vector.dot(product);
+    if (L.fixed)
+      L.fixed->add_step_work(step_displacement, load_now, p, v, v_next, balance.input,
+                             balance.damping);
+    else
+      newmark_formulas::add_step_work(GeneralStorage{system, L.effective, distribution},
+                                      step_displacement, load_now, p, v, v_next, velocity_sum,
+                                      product, balance.input, balance.damping);
     if (n_elements > 0) // no call per step without elements
       records.accept(*elements, current_time, current_time + L.dt, v_next,
                      distribution ? &counted_here : nullptr, balance.belt);
@@ -1347,8 +1388,12 @@ namespace poundfe
   double
   NewmarkIntegrator::kinetic_energy() const
   {
-    product.noalias() = system.mass * v; // no temporary per step
-    return 0.5 * v.dot(product);
+    if (const FixedSizeStep *const fixed = levels[0]->fixed.get())
+      return fixed->kinetic_energy(v);
+    // no temporary per step
+    return newmark_formulas::kinetic_energy(GeneralStorage{system, levels[0]->effective,
+                                                           distribution},
+                                            v, product);
   }
 
   const Vector &
@@ -1356,7 +1401,10 @@ namespace poundfe
   {
     if (!stiffness_product_is_current)
       {
-        stiffness_product.noalias() = system.stiffness * u;
+        if (const FixedSizeStep *const fixed = levels[0]->fixed.get())
+          fixed->stiffness_product(u, stiffness_product);
+        else
+          stiffness_product.noalias() = system.stiffness * u;
         stiffness_product_is_current = true;
       }
     return stiffness_product;
@@ -1365,7 +1413,10 @@ namespace poundfe
   double
   NewmarkIntegrator::strain_energy() const
   {
-    double energy = 0.5 * u.dot(stiffness_times_u());
+    // this rank's part (the ranks' are summed with the other terms)
+    const FixedSizeStep *const fixed = levels[0]->fixed.get();
+    const Vector &stiffness_u = stiffness_times_u();
+    double energy = 0.5 * (fixed ? fixed->dot(u, stiffness_u) : u.dot(stiffness_u));
     // the elements' trial state is the committed state at u
     for (unsigned int h = 0; h < n_elements; ++h)
       if (!distribution || counted_here[h])
