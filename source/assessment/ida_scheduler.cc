@@ -16,7 +16,9 @@
 // is in the middle of a run and reads its message only after; for the same
 // reason every message is sent without waiting for its receiver
 // (PendingSends): a worker that waited for rank 0 to take each row stood
-// still, after each of its runs, until rank 0's run under way ended.
+// still, after each of its runs, until rank 0's run under way ended; and a
+// probe that finds nothing is asked again once (message_waiting), since
+// Open MPI's first answer after a run is no.
 //   Messages: rank 0 -> worker: a task (record, intensity) or stop (no
 //   more tasks); worker -> rank 0: a row (ida_row) per run, then done (1
 //   when it stopped on its own signal). Rank 0 sends stop once: when every
@@ -55,6 +57,20 @@ namespace poundfe
   {
     constexpr int          ida_task_tag = 21, ida_row_tag = 22, ida_done_tag = 23, ida_stop_tag = 24;
     constexpr unsigned int queue_depth  = 4; // runs dealt to a worker at a time
+
+    /// Whether a message from `source` has arrived (its envelope in
+    /// `status`). Open MPI's MPI_Iprobe answers no on a call that first had
+    /// to progress the transport, and matches what that call took in only
+    /// on the next: a miss is asked again once, or the rows that came in
+    /// during rank 0's run were read only after its next one.
+    bool
+    message_waiting(const int source, const MPI_Comm comm, MPI_Status &status)
+    {
+      int waiting = 0;
+      for (unsigned int attempt = 0; attempt < 2 && !waiting; ++attempt)
+        MPI_Iprobe(source, MPI_ANY_TAG, comm, &waiting, &status);
+      return waiting != 0;
+    }
 
     /// Messages sent without waiting for their receiver: each buffer kept
     /// until its send completes. A blocking MPI_Send, even of a short row,
@@ -315,9 +331,8 @@ namespace poundfe
     void
     RunDealer::poll()
     {
-      int        waiting = 0;
       MPI_Status status;
-      while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status), waiting)
+      while (message_waiting(MPI_ANY_SOURCE, comm, status))
         {
           const int w = status.MPI_SOURCE;
           if (status.MPI_TAG == ida_row_tag)
@@ -395,9 +410,8 @@ namespace poundfe
       };
       while (true)
         {
-          int        waiting = 0;
           MPI_Status status;
-          while (!stopped && (MPI_Iprobe(0, MPI_ANY_TAG, comm, &waiting, &status), waiting))
+          while (!stopped && message_waiting(0, comm, status))
             receive(status);
           if (stopped || interruption_requested())
             break;
