@@ -13,6 +13,8 @@
 # at RUNS_PER_RECORD stripes of Sa(T1) (0.05, 0.10, ... g; no cloud): the
 # same number of runs per record, each dealt to the free rank as ida's;
 # msa.csv must be the same on 1 and 2 ranks.
+#   POUNDFE=path: that binary (default build/poundfe), e.g. an earlier
+# build kept aside, to compare two builds under the same load.
 #   Each rank runs under setsid (SETSID=0: not): with the kernel's autogroup
 # scheduling (/proc/sys/kernel/sched_autogroup_enabled = 1) the CPU is
 # shared between sessions, not processes, so on a machine that other
@@ -26,6 +28,7 @@
 # caches, memory bandwidth, clock); the dealer's speed-up is judged against
 # this ceiling.
 set -eu
+poundfe=${POUNDFE:-build/poundfe}
 n=${1:-44}
 runs=${2:-20}
 repeats=${3:-3}
@@ -34,7 +37,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 pair=(--set "Building 1/Number of storeys=5" --set "Building 2/Number of storeys=3"
       --set Output/Plots=false)
-build/poundfe ground-motion input/ida-pounding-pair.prm --realizations "$n" --write-at2 \
+"$poundfe" ground-motion input/ida-pounding-pair.prm --realizations "$n" --write-at2 \
   --output "$work/suite" "${pair[@]}" > /dev/null
 command=${COMMAND:-ida}
 options=("${pair[@]}" --set "IDA/Suite=$work/suite/records/suite.csv")
@@ -57,14 +60,14 @@ echo "autogroup scheduling: $(cat /proc/sys/kernel/sched_autogroup_enabled 2> /d
 for i in $(seq "$repeats"); do
   for np in 1 2; do
     start=$(date +%s.%N)
-    mpirun -np "$np" $isolate build/poundfe "$command" input/ida-pounding-pair.prm --output "$work/np$np-$i" \
+    mpirun -np "$np" $isolate "$poundfe" "$command" input/ida-pounding-pair.prm --output "$work/np$np-$i" \
       "${options[@]}" > /dev/null
     end=$(date +%s.%N)
     python3 -c "import json, sys; s = json.load(open(sys.argv[1])); print(s['runs_now'], s['runs_now'] / s['wall_time_s'], float(sys.argv[3]) - float(sys.argv[2]))" \
       "$work/np$np-$i/summary.json" "$start" "$end" >> "$work/rates$np"
   done
   for half in 1 2; do
-    $isolate build/poundfe "$command" input/ida-pounding-pair.prm --output "$work/half$half-$i" \
+    $isolate "$poundfe" "$command" input/ida-pounding-pair.prm --output "$work/half$half-$i" \
       "${options[@]}" --set "IDA/Suite=$work/suite/records/half$half.csv" > /dev/null &
   done
   wait

@@ -15,62 +15,40 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 
 namespace poundfe
 {
-  namespace
+  void
+  refuse_periods_the_records_do_not_resolve(const IdaParameters &ida, const double first_period,
+                                            const RecordSuite &suite, const InputFile &input)
   {
-    /// Refuses (InputError naming IDA/Period, or IDA/Sa_avg range for
-    /// Sa_avg when the period itself lies within) the measure's periods
-    /// outside the range every record of `suite` resolves: from its Nyquist
-    /// period, twice its time step (below it the oscillator follows the
-    /// ground and Sa is the PGA), to its duration (beyond it the record holds
-    /// not one cycle). Six digits: the period and the limit it passes differ
-    /// visibly.
-    void
-    refuse_periods_the_records_do_not_resolve(const IdaParameters &ida, const double first_period,
-                                              const RecordSuite &suite, const InputFile &input)
-    {
-      const std::vector<double> periods = ida.measure_periods(first_period);
-      if (periods.empty() || suite.records.empty())
-        return;
-      double      shortest = 0, longest = std::numeric_limits<double>::infinity();
-      std::string shortest_of, longest_of;
-      for (const SuiteRecord &record : suite.records)
-        for (const GroundMotion &component : record.components)
-          {
-            if (2 * component.time_step() > shortest)
-              shortest = 2 * component.time_step(), shortest_of = record.name;
-            if (component.duration() < longest)
-              longest = component.duration(), longest_of = record.name;
-          }
-      const auto [low, high] = std::minmax_element(periods.begin(), periods.end());
-      if (*low >= shortest && *high <= longest)
-        return;
-      const auto        six     = [](const double x) { return rounded(x, 6); };
-      const double      centre  = ida.period > 0 ? ida.period : first_period;
-      const bool        average = ida.measure == IntensityMeasure::sa_avg;
-      const bool        blame_range = average && centre >= shortest && centre <= longest;
-      const std::string parameter   = blame_range ? "IDA/Sa_avg range" : "IDA/Period";
-      for (const SuiteRecord &record : suite.records)
-        for (const GroundMotion &component : record.components)
-          if (component.duration() < 2 * component.time_step())
-            input.fail(parameter, "record '" + record.name + "' lasts " + six(component.duration()) +
-                                    " s, less than twice its time step of " +
-                                    six(component.time_step()) +
-                                    " s: it resolves no period, and Sa cannot be taken from it");
-      const std::string first =
-        ida.period > 0 ? "" : " (IDA/Period = 0: the model's first period, " + six(first_period) + " s)";
-      const std::string taken = average ? "Sa_avg's periods, " + six(*low) + " to " + six(*high) +
-                                            " s" + first + ", lie" :
-                                          "Sa's period, " + six(*low) + " s" + first + ", lies";
-      input.fail(parameter, taken + " outside the periods every record of the suite resolves, " +
-                              six(shortest) + " to " + six(longest) +
-                              " s: from twice the time step (the Nyquist period) of record '" +
-                              shortest_of + "' to the duration of record '" + longest_of + "'");
-    }
-  } // namespace
+    const std::vector<double> periods = ida.measure_periods(first_period);
+    if (periods.empty() || suite.records.empty())
+      return;
+    const ResolvedPeriods resolved = resolved_periods(suite);
+    const auto [low, high]         = std::minmax_element(periods.begin(), periods.end());
+    if (resolved.holds(*low) && resolved.holds(*high))
+      return;
+    const auto        six         = [](const double x) { return rounded(x, 6); };
+    const double      centre      = ida.period > 0 ? ida.period : first_period;
+    const bool        average     = ida.measure == IntensityMeasure::sa_avg;
+    const bool        blame_range = average && resolved.holds(centre);
+    const std::string parameter   = blame_range ? "IDA/Sa_avg range" : "IDA/Period";
+    for (const SuiteRecord &record : suite.records)
+      for (const GroundMotion &component : record.components)
+        if (component.duration() < 2 * component.time_step())
+          input.fail(parameter, "record '" + record.name + "' lasts " + six(component.duration()) +
+                                  " s, less than twice its time step of " +
+                                  six(component.time_step()) +
+                                  " s: it resolves no period, and Sa cannot be taken from it");
+    const std::string first =
+      ida.period > 0 ? "" : " (IDA/Period = 0: the model's first period, " + six(first_period) + " s)";
+    const std::string taken = average ? "Sa_avg's periods, " + six(*low) + " to " + six(*high) +
+                                          " s" + first + ", lie" :
+                                        "Sa's period, " + six(*low) + " s" + first + ", lies";
+    input.fail(parameter, taken + " outside the periods every record of the suite resolves, " +
+                            resolved.text());
+  }
 
   IdaRunner::IdaRunner(const Analysis &analysis_, const TimeHistoryParameters &parameters,
                        const IdaParameters &ida_, RecordSuite suite)

@@ -13,7 +13,12 @@
 // Rank 0 computes too: between its own runs it reads the rows that came
 // back, journals them and deals again. A worker keeps up to `queue_depth`
 // runs dealt (one running, the others waiting), so it goes on while rank 0
-// is in the middle of a run and reads its message only after.
+// is in the middle of a run and reads its message only after; for the same
+// reason every message is sent without waiting for its receiver
+// (PendingSends): a worker that waited for rank 0 to take each row stood
+// still, after each of its runs, until rank 0's run under way ended; and a
+// probe that finds nothing is asked again once (message_waiting), since
+// Open MPI's first answer after a run is no.
 //   Messages: rank 0 -> worker: a task (record, intensity) or stop (no
 //   more tasks); worker -> rank 0: a row (ida_row) per run, then done (1
 //   when it stopped on its own signal). Rank 0 sends stop once: when every
@@ -51,7 +56,66 @@ namespace poundfe
   namespace
   {
     constexpr int          ida_task_tag = 21, ida_row_tag = 22, ida_done_tag = 23, ida_stop_tag = 24;
-    constexpr unsigned int queue_depth  = 3; // runs dealt to a worker at a time
+    constexpr unsigned int queue_depth  = 4; // runs dealt to a worker at a time
+
+    /// Whether a message from `source` has arrived (its envelope in
+    /// `status`). Open MPI's MPI_Iprobe answers no on a call that first had
+    /// to progress the transport, and matches what that call took in only
+    /// on the next: a miss is asked again once, or the rows that came in
+    /// during rank 0's run were read only after its next one.
+    bool
+    message_waiting(const int source, const MPI_Comm comm, MPI_Status &status)
+    {
+      int waiting = 0;
+      for (unsigned int attempt = 0; attempt < 2 && !waiting; ++attempt)
+        MPI_Iprobe(source, MPI_ANY_TAG, comm, &waiting, &status);
+      return waiting != 0;
+    }
+
+    /// Messages sent without waiting for their receiver: each buffer kept
+    /// until its send completes. A blocking MPI_Send, even of a short row,
+    /// can return only once the receiver has taken the message (Open MPI's
+    /// shared memory), and rank 0 takes rows between its own runs: a worker
+    /// that sent its rows so waited for rank 0's run to end after each of
+    /// its own.
+    class PendingSends
+    {
+    public:
+      void
+      send(std::vector<double> data, const int destination, const int tag, const MPI_Comm comm)
+      {
+        pending.push_back({std::move(data), MPI_REQUEST_NULL});
+        MPI_Isend(pending.back().data.data(), pending.back().data.size(), MPI_DOUBLE,
+                  destination, tag, comm, &pending.back().request);
+        release_completed();
+      }
+
+      /// Frees the buffers of the sends completed, oldest first.
+      void
+      release_completed()
+      {
+        int completed = 1;
+        while (!pending.empty() &&
+               (MPI_Test(&pending.front().request, &completed, MPI_STATUS_IGNORE), completed))
+          pending.pop_front();
+      }
+
+      void
+      wait_all()
+      {
+        for (Pending &p : pending)
+          MPI_Wait(&p.request, MPI_STATUS_IGNORE);
+        pending.clear();
+      }
+
+    private:
+      struct Pending
+      {
+        std::vector<double> data;
+        MPI_Request         request;
+      };
+      std::deque<Pending> pending; // a deque: an element stays where it is
+    };
 
     /// A short sleep while polling: a blocking MPI wait would spin on a core
     /// that the other rank needs.
@@ -212,8 +276,7 @@ namespace poundfe
       std::vector<std::vector<double>> rows;
       unsigned int                     n_done = 0; // workers done
       bool                             stop   = false;
-      std::deque<std::array<double, 2>> sent; // the tasks' buffers until Waitall
-      std::vector<MPI_Request>         requests;
+      PendingSends                     sends; // tasks and stops
 
       void resume(std::map<std::uint64_t, RealizationRow> journaled, const std::string &file);
       void take(std::vector<double> row, bool fresh);
@@ -260,9 +323,7 @@ namespace poundfe
             const std::optional<IdaTask> task = runs.next();
             if (!task)
               return;
-            sent.push_back({{double(task->record), task->intensity}});
-            requests.emplace_back();
-            MPI_Isend(sent.back().data(), 2, MPI_DOUBLE, w, ida_task_tag, comm, &requests.back());
+            sends.send({double(task->record), task->intensity}, w, ida_task_tag, comm);
             ++outstanding[w];
           }
     }
@@ -270,9 +331,8 @@ namespace poundfe
     void
     RunDealer::poll()
     {
-      int        waiting = 0;
       MPI_Status status;
-      while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &waiting, &status), waiting)
+      while (message_waiting(MPI_ANY_SOURCE, comm, status))
         {
           const int w = status.MPI_SOURCE;
           if (status.MPI_TAG == ida_row_tag)
@@ -299,8 +359,7 @@ namespace poundfe
       stop = true;
       for (unsigned int w = 1; w <= n_workers; ++w)
         {
-          requests.emplace_back();
-          MPI_Isend(nullptr, 0, MPI_DOUBLE, w, ida_stop_tag, comm, &requests.back());
+          sends.send({}, w, ida_stop_tag, comm);
         }
     }
 
@@ -327,7 +386,7 @@ namespace poundfe
           else
             ida_pause();
         }
-      MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
+      sends.wait_all();
       if (journal)
         journal->sync();
       return std::move(rows);
@@ -338,6 +397,7 @@ namespace poundfe
     run_dealt_worker(const IdaRun &run, const MPI_Comm comm)
     {
       std::deque<IdaTask> queue;
+      PendingSends        rows;
       bool                stopped = false;
       auto                receive = [&](const MPI_Status &status) {
         std::array<double, 2> task{};
@@ -350,9 +410,8 @@ namespace poundfe
       };
       while (true)
         {
-          int        waiting = 0;
           MPI_Status status;
-          while (!stopped && (MPI_Iprobe(0, MPI_ANY_TAG, comm, &waiting, &status), waiting))
+          while (!stopped && message_waiting(0, comm, status))
             receive(status);
           if (stopped || interruption_requested())
             break;
@@ -361,9 +420,9 @@ namespace poundfe
               ida_pause();
               continue;
             }
-          const std::vector<double> row = run(queue.front());
+          std::vector<double> row = run(queue.front());
           queue.pop_front();
-          MPI_Send(row.data(), row.size(), MPI_DOUBLE, 0, ida_row_tag, comm);
+          rows.send(std::move(row), 0, ida_row_tag, comm);
         }
       double flag = stopped ? 0 : 1;
       MPI_Send(&flag, 1, MPI_DOUBLE, 0, ida_done_tag, comm);
@@ -373,6 +432,7 @@ namespace poundfe
           MPI_Probe(0, MPI_ANY_TAG, comm, &status);
           receive(status);
         }
+      rows.wait_all();
     }
 
     /// A row into its record's search and points.

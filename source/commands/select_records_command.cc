@@ -6,6 +6,7 @@
 // their scale factors), selection.csv (per period the target, its
 // +/- 1 sigma, the selected set's geometric mean and +/- 1 sigma, and each
 // selected record's scaled Sa), selection.png and summary.json.
+#include <poundfe/assessment/ida.h>
 #include <poundfe/assessment/record_selection.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
@@ -111,6 +112,23 @@ namespace poundfe::commands
       return target;
     }
 
+    /// Refuses a fit's periods outside those every record resolves
+    /// (record_suite.h): a record's Sa there is not of its own motion.
+    void
+    refuse_fit_periods_the_records_do_not_resolve(const RecordSuite &suite,
+                                                  const InputParameters &input)
+    {
+      const ResolvedPeriods      resolved = resolved_periods(suite);
+      const SelectionParameters &s        = input.selection;
+      if (resolved.holds(s.min_period) && resolved.holds(s.max_period))
+        return;
+      input.fail(resolved.holds(s.min_period) ? "Selection/Maximum period" : "Selection/Minimum period",
+                 "the fit's periods, " + rounded(s.min_period, 6) + " to " +
+                   rounded(s.max_period, 6) +
+                   " s, lie outside the periods every record of the suite resolves, " +
+                   resolved.text());
+    }
+
     /// Each record's Sa (g) at the target's periods (IDA/Pair measure for pairs).
     std::vector<std::vector<double>>
     record_spectra(const RecordSuite &suite, const InputParameters &input,
@@ -140,6 +158,7 @@ namespace poundfe::commands
       if ((ida.measure == IntensityMeasure::sa || ida.measure == IntensityMeasure::sa_avg) &&
           ida.period == 0)
         input.fail("IDA/Period", "select-records builds no model: scaling to Sa needs a Period > 0");
+      refuse_periods_the_records_do_not_resolve(ida, ida.period, suite, input);
       std::vector<double> scales;
       for (const SuiteRecord &record : suite.records)
         scales.push_back(input.selection.target_intensity /
@@ -257,6 +276,7 @@ namespace poundfe::commands
       input.fail("Selection/Records", "the suite has " + std::to_string(suite.records.size()) +
                                         " records, fewer than the " + std::to_string(s.n_records) +
                                         " requested");
+    refuse_fit_periods_the_records_do_not_resolve(suite, input);
     const TargetSpectrum target = target_spectrum(input);
     const std::vector<std::vector<double>> spectra = record_spectra(suite, input, target.periods);
     const RecordSelection selection =

@@ -302,6 +302,29 @@ namespace poundfe
     return columns;
   }
 
+  std::string
+  ResolvedPeriods::text() const
+  {
+    return rounded(shortest, 6) + " to " + rounded(longest, 6) +
+           " s: from twice the time step (the Nyquist period) of record '" + shortest_of +
+           "' to the duration of record '" + longest_of + "'";
+  }
+
+  ResolvedPeriods
+  resolved_periods(const RecordSuite &suite)
+  {
+    ResolvedPeriods resolved;
+    for (const SuiteRecord &record : suite.records)
+      for (const GroundMotion &component : record.components)
+        {
+          if (2 * component.time_step() > resolved.shortest)
+            resolved.shortest = 2 * component.time_step(), resolved.shortest_of = record.name;
+          if (component.duration() < resolved.longest)
+            resolved.longest = component.duration(), resolved.longest_of = record.name;
+        }
+    return resolved;
+  }
+
   RecordSuite
   read_record_suite(const std::string &path, const std::string &parameter)
   {

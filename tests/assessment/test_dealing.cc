@@ -7,10 +7,19 @@
 //  - on two ranks (mpi/dealing-2), two long runs (0.6 s) among short ones
 //    (0.02 s) placed where a static split (every other task to each rank)
 //    gives both to rank 0: dealt one by one to the free rank, the list
-//    takes about one long run (0.72 s by the dealer's order: the worker's
-//    first three tasks, rank 0 the fourth and the long fifth), a static
-//    split 1.24 s. The check is where the two long runs went (one to each
-//    rank), not the wall time, which a loaded machine stretches.
+//    takes about one long run (~0.7 s by the dealer's order: the worker's
+//    first four tasks, rank 0 the long fifth), a static split 1.24 s. The
+//    check is where the two long runs went (one to each rank), not the
+//    wall time, which a loaded machine stretches;
+//  - on two ranks, rank 0's runs twenty times as long as the worker's (0.2 s,
+//    0.01 s): the worker goes on with the runs dealt to it while rank 0 is
+//    in a run, and rank 0 reads every row that came in during its run
+//    right after it and deals again, so the worker runs the four runs dealt
+//    ahead per run of rank 0 (20 and 5 of the 25): at least three times as
+//    many is checked. A worker that waited for rank 0 to take each row (a
+//    blocking send: rank 0 takes rows between its own runs) ran about as
+//    many as rank 0; a rank 0 that saw the rows only after its next run
+//    (MPI_Iprobe's first answer after a run), half as many again (17, 8).
 #include <poundfe/assessment/ida.h>
 #include <poundfe/base/exceptions.h>
 
@@ -144,6 +153,35 @@ BOOST_AUTO_TEST_CASE(long_runs_go_to_the_free_rank)
   BOOST_TEST(where[0] >= 0);
   BOOST_TEST(where[1] >= 0);
   BOOST_TEST(where[0] != where[1]); // a static split gives both to rank 0
+  remove_dealing_journal(file);
+}
+
+BOOST_AUTO_TEST_CASE(a_worker_does_not_wait_for_rank_0)
+{
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) != 2)
+    {
+      BOOST_TEST_MESSAGE("a worker's waiting is checked on two ranks (mpi/dealing-2)");
+      return;
+    }
+  std::vector<IdaTask> tasks;
+  for (unsigned int r = 0; r < 25; ++r)
+    tasks.push_back({r, 1.0});
+  const unsigned int rank   = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  unsigned int       n_runs = 0; // on this rank
+  const IdaRun       run    = [&n_runs, rank](const IdaTask &t) {
+    ++n_runs;
+    return stand_in_row(t, rank == 0 ? 0.2 : 0.01);
+  };
+  const std::string file = dealing_journal("waiting.csv");
+  IdaResult         result;
+  const auto rows = run_ida_tasks(run, dealing_names, tasks, file, MPI_COMM_WORLD, nullptr, 0, result);
+  BOOST_TEST(rows.size() == tasks.size());
+  const unsigned int on_rank_0 = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, n_runs, 0);
+  const unsigned int on_worker = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, n_runs, 1);
+  BOOST_TEST_MESSAGE("runs of 0.2 s on rank 0: " << on_rank_0 << ", of 0.01 s on the worker: "
+                                                 << on_worker);
+  BOOST_TEST(on_rank_0 + on_worker == tasks.size());
+  BOOST_TEST(on_worker >= 3 * on_rank_0);
   remove_dealing_journal(file);
 }
 

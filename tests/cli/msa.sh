@@ -31,7 +31,9 @@
 #  - the example's Ground motion section (its suite's generator) draws no
 #    warning from msa;
 #  - bad input: one line naming file, line and parameter, exit 1, nothing
-#    written; among it Sa's period outside what every record resolves.
+#    written; among it Sa's period outside what every record resolves
+#    (twice its time step to its duration), and select-records' fit range
+#    or Scaling = intensity's period outside it.
 poundfe=$(realpath "$1") mpirun=$2 example=$(realpath "$3")
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
@@ -266,5 +268,21 @@ sed 's/^  set Intensity measure    = Sa$/&\n  set Period               = 0.001/'
 expect 1 "period.prm:17: parameter 'IDA/Period': Sa's period, 0.001 s, lies $resolves" \
   msa "$work/period.prm" "${suite[@]}" --output out
 expect 0 "runs" msa "$m" "${suite[@]}" --output periods --set "IDA/Period=0.05" --set "MSA/Intensities=0.1"
+rm -rf periods
+# select-records: the fit's period range, and Scaling = intensity's Sa
+# period, outside the periods every record resolves (its time step of
+# 0.005 s: 0.01 s; its duration: 4 s); a range within them is taken
+expect 1 "parameter 'Selection/Maximum period': the fit's periods, 0.1 to 10 s, lie $resolves, 0.01 to 4 s" \
+  "${sel[@]}" --set "Selection/Maximum period=10"
+expect 1 "parameter 'Selection/Minimum period': the fit's periods, 0.005 to 2 s, lie $resolves" \
+  "${sel[@]}" --set "Selection/Minimum period=0.005"
+printf 'subsection Selection\n  set Minimum period = 0.05\n  set Maximum period = 5\nend\n' > fit.prm
+cat "$m" fit.prm > fit-range.prm
+expect 1 "fit-range.prm:31: parameter 'Selection/Maximum period': the fit's periods, 0.05 to 5 s" \
+  select-records "$work/fit-range.prm" "${suite[@]}" --output out --set "Selection/Records=2"
+expect 1 "parameter 'IDA/Period': Sa's period, 6 s, lies $resolves" "${sel[@]}" \
+  --set "Selection/Scaling=intensity" --set "Selection/Target intensity=0.3" --set "IDA/Period=6"
+expect 0 "results in" select-records "$m" "${suite[@]}" --output periods --set "Selection/Records=2" \
+  --set "Selection/Minimum period=0.01" --set "Selection/Maximum period=4"
 rm -rf periods
 report "msa"

@@ -120,6 +120,13 @@ namespace poundfe
     std::vector<double> demands; // in the order of IdaRunner::demand_names()
   };
 
+  /// Refuses (InputError naming IDA/Period, or IDA/Sa_avg range for Sa_avg
+  /// when the period itself lies within) the measure's periods outside
+  /// those every record of `suite` resolves (record_suite.h); nothing for a
+  /// measure of no period. `first_period`: the model's, for IDA/Period = 0.
+  void refuse_periods_the_records_do_not_resolve(const IdaParameters &ida, double first_period,
+                                                 const RecordSuite &suite, const InputFile &input);
+
   /// Runs records of a suite at given intensities through the model; built
   /// once (model, integrator and factorisations), like a RealizationRunner.
   class IdaRunner

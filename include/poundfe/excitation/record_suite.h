@@ -44,6 +44,24 @@ namespace poundfe
     bool pairs() const { return !records.empty() && records[0].components.size() == 2; }
   };
 
+  /// The periods every record of a suite resolves: from the longest
+  /// Nyquist period, twice a record's time step (below it an oscillator
+  /// follows the ground and Sa is the PGA), to the shortest duration
+  /// (beyond it a record holds not one cycle); the records that set them.
+  struct ResolvedPeriods
+  {
+    double      shortest = 0, longest = INFINITY; // s
+    std::string shortest_of, longest_of;          // the records' names
+
+    bool holds(const double period) const { return period >= shortest && period <= longest; }
+    /// "0.02 to 4 s: from twice the time step (the Nyquist period) of
+    /// record 'a' to the duration of record 'b'" (six digits: a period and
+    /// the limit it passes differ visibly).
+    std::string text() const;
+  };
+
+  ResolvedPeriods resolved_periods(const RecordSuite &suite);
+
   /// Reads the suite at `path` (a .csv, a .json or a folder of .AT2 files);
   /// `parameter` is the entry that names it, for messages about the path
   /// itself. Throws InputError.
