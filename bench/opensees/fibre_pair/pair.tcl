@@ -47,35 +47,28 @@ proc joint {b k j} { return [expr {1000*$b + 10*$k + $j}] }
 uniaxialMaterial Concrete02 1 -39e6 -0.0035 -31e6 -0.02 0.1 3.9e6 1.95e9 ;# core
 uniaxialMaterial Concrete02 2 -30e6 -0.002 -6e6 -0.006 0.1 3e6 1.5e9    ;# cover
 uniaxialMaterial Steel02 3 420e6 200e9 0.01 20 0.925 0.15               ;# bars
-section Fiber 1 {
-    patch rect 1 10 1 -0.21 -0.21 0.21 0.21
-    patch rect 2 2 1 0.21 -0.25 0.25 0.25
-    patch rect 2 2 1 -0.25 -0.25 -0.21 0.25
-    patch rect 2 10 1 -0.21 0.21 0.21 0.25
-    patch rect 2 10 1 -0.21 -0.25 0.21 -0.21
-    layer straight 3 4 4.91e-4 0.21 -0.21 0.21 0.21
-    layer straight 3 4 4.91e-4 -0.21 -0.21 -0.21 0.21
-    layer straight 3 2 4.91e-4 0.0 -0.21 0.0 0.21
+# An RC rectangle (depth h along y, width b, cover c to the bars' axis):
+# the core in n fibres along y, the cover top and bottom in 2, at the sides
+# in n; bars top, bottom and (if any) at mid-depth, each of area A.
+proc rc_fibres {tag h b c n top bottom middle A} {
+    set y1 [expr {$h/2.0}]; set z1 [expr {$b/2.0}]
+    set yc [expr {$y1 - $c}]; set zc [expr {$z1 - $c}]
+    section Fiber $tag {
+        patch rect 1 $n 1 [expr {-$yc}] [expr {-$zc}] $yc $zc
+        patch rect 2 2 1 $yc [expr {-$z1}] $y1 $z1
+        patch rect 2 2 1 [expr {-$y1}] [expr {-$z1}] [expr {-$yc}] $z1
+        patch rect 2 $n 1 [expr {-$yc}] $zc $yc $z1
+        patch rect 2 $n 1 [expr {-$yc}] [expr {-$z1}] $yc [expr {-$zc}]
+        layer straight 3 $top $A $yc [expr {-$zc}] $yc $zc
+        layer straight 3 $bottom $A [expr {-$yc}] [expr {-$zc}] [expr {-$yc}] $zc
+        if {$middle > 0} {
+            layer straight 3 $middle $A 0.0 [expr {-$zc}] 0.0 $zc
+        }
+    }
 }
-section Fiber 2 {
-    patch rect 1 8 1 -0.16 -0.16 0.16 0.16
-    patch rect 2 2 1 0.16 -0.2 0.2 0.2
-    patch rect 2 2 1 -0.2 -0.2 -0.16 0.2
-    patch rect 2 8 1 -0.16 0.16 0.16 0.2
-    patch rect 2 8 1 -0.16 -0.2 0.16 -0.16
-    layer straight 3 3 3.14e-4 0.16 -0.16 0.16 0.16
-    layer straight 3 3 3.14e-4 -0.16 -0.16 -0.16 0.16
-    layer straight 3 2 3.14e-4 0.0 -0.16 0.0 0.16
-}
-section Fiber 3 {
-    patch rect 1 10 1 -0.235 -0.11 0.235 0.11
-    patch rect 2 2 1 0.235 -0.15 0.275 0.15
-    patch rect 2 2 1 -0.275 -0.15 -0.235 0.15
-    patch rect 2 10 1 -0.235 0.11 0.235 0.15
-    patch rect 2 10 1 -0.235 -0.15 0.235 -0.11
-    layer straight 3 4 3.14e-4 0.235 -0.11 0.235 0.11
-    layer straight 3 3 3.14e-4 -0.235 -0.11 -0.235 0.11
-}
+rc_fibres 1 0.5 0.5 0.04 10 4 4 2 4.91e-4  ;# column50
+rc_fibres 2 0.4 0.4 0.04 8 3 3 2 3.14e-4   ;# column40
+rc_fibres 3 0.55 0.3 0.04 10 4 3 0 3.14e-4 ;# beam30x55
 geomTransf PDelta 1
 geomTransf Linear 2
 beamIntegration Lobatto 1 1 5
