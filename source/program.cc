@@ -37,7 +37,29 @@ namespace
     std::string              error;   // not empty: the message for bad options
     bool                     help    = false;
     bool                     version = false;
+    /// --threads: deal.II's (TBB's) thread limit, 1 unless given.
+    unsigned int threads = 1;
   };
+
+  /// --threads's value: a whole number in 1..256, or the message.
+  void
+  parse_threads(const std::string &text, CommandLine &line)
+  {
+    std::size_t end = 0;
+    long        n   = 0;
+    try
+      {
+        n = std::stol(text, &end);
+      }
+    catch (const std::exception &)
+      {
+        end = 0;
+      }
+    if (end != text.size() || n < 1 || n > 256)
+      line.error = "poundfe: error: --threads needs a whole number in 1..256, got '" + text + "'\n";
+    else
+      line.threads = n;
+  }
 
   /// --realizations's value: a whole number in 1..100000, or the message.
   void
@@ -91,7 +113,7 @@ namespace
   parse_command_line(std::vector<std::string> args)
   {
     CommandLine           line;
-    std::string           realizations;
+    std::string           realizations, threads;
     std::set<std::string> given; // the options seen (-h is --help)
     std::size_t           words = 0; // the words that are no option, so far
     for (std::size_t i = 0; i < args.size() && line.error.empty(); ++i)
@@ -104,14 +126,16 @@ namespace
         if (option && name != "--set" && !given.insert(name).second)
           // which of two values was meant cannot be known (--set: each is applied, in order)
           line.error = "poundfe: error: " + name + " is given twice (see poundfe --help)\n";
-        else if (name == "--output" || name == "--realizations" || name == "--set")
+        else if (name == "--output" || name == "--realizations" || name == "--set" ||
+                 name == "--threads")
           {
             if (i + 1 >= args.size() || args[i + 1].empty())
               line.error = "poundfe: error: " + name + " needs a value (see poundfe --help)\n";
             else if (name == "--set")
               parse_set(args[i + 1], line);
             else
-              (name == "--output" ? line.request.output : realizations) = args[i + 1];
+              (name == "--output" ? line.request.output :
+               name == "--threads" ? threads : realizations) = args[i + 1];
             args.erase(args.begin() + i, args.begin() + std::min(i + 2, args.size()));
             --i;
           }
@@ -135,6 +159,8 @@ namespace
       line.request.arguments.assign(line.args.begin() + 1, line.args.end());
     if (!realizations.empty())
       parse_realizations(realizations, line);
+    if (!threads.empty() && line.error.empty())
+      parse_threads(threads, line);
     return line;
   }
 
@@ -246,9 +272,10 @@ poundfe_program_main(int argc, char **argv)
   // command whose input needs it once the input is read.
   std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
   if (command && initialises_mpi_first(*command, launched_size()))
-    mpi.emplace(argc, argv, 1);
+    mpi.emplace(argc, argv, line.threads);
   else
-    dealii::MultithreadInfo::set_thread_limit(1); // what MPI_InitFinalize(argc, argv, 1) sets
+    // what MPI_InitFinalize(argc, argv, threads) sets: one thread unless --threads
+    dealii::MultithreadInfo::set_thread_limit(line.threads);
   dealii::deal_II_exceptions::disable_abort_on_exception();
   // Rank 0 speaks (also before MPI is initialised): the ranks agree on their
   // inputs before a command runs, and rank 0 prints any rank's refusal.
@@ -262,7 +289,7 @@ poundfe_program_main(int argc, char **argv)
   if (command->has(CommandRule::reads_file))
     install_interruption_handlers();
   const MpiStarter start_mpi = [&]() {
-    mpi.emplace(argc, argv, 1);
+    mpi.emplace(argc, argv, line.threads);
     install_interruption_handlers(); // PETSc's initialisation replaced them
   };
   try

@@ -203,6 +203,7 @@ namespace poundfe
     const std::size_t  column = 22; // where the descriptions start
     std::ostringstream out;
     out << "usage: poundfe <command> [FILE] [--output DIR] [--set Section/Entry=value]...\n"
+           "       [--threads N]\n"
            "       poundfe --help | --version\n"
            "commands:\n";
     for (const Command &command : command_table())
@@ -220,7 +221,9 @@ namespace poundfe
       }
     out << "--output DIR overrides the file's 'Output/Directory'. --set Section/Entry=value\n"
            "(repeatable, in order) sets an entry of FILE before it is checked, as the file\n"
-           "would ('Section/Entry:k' sets the k-th field of a list entry). Any other option\n"
+           "would ('Section/Entry:k' sets the k-th field of a list entry). --threads N (1 by\n"
+           "default) evaluates a time history's elements on N threads when at least 8 are\n"
+           "other than uniaxial (fibre members), with the same numbers. Any other option\n"
            "is an error. Time integration/Partition = buildings is taken only by "
         << command_names(CommandRule::partition_by_building, "'")
         << ",\na distributed linear solver on more than one rank only by "

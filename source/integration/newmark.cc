@@ -9,10 +9,13 @@
 #include <poundfe/assembly/modal_damping.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/parallel.h>
 
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -52,6 +55,45 @@ namespace poundfe
         return s.str();
       }
     };
+
+    /// Whether the element loop pays on more threads than one: when there
+    /// are, and at least 8 elements other than the uniaxial ones (those
+    /// whose pointer is null: fibre members, a section state per
+    /// integration point, microseconds each; a uniaxial element's tens of
+    /// nanoseconds do not pay for a thread's start).
+    bool
+    worth_threads(const std::vector<UniaxialElement *> &uniaxial)
+    {
+      constexpr long heavy_elements = 8;
+      return dealii::MultithreadInfo::n_threads() > 1 &&
+             std::count(uniaxial.begin(), uniaxial.end(), nullptr) >= heavy_elements;
+    }
+
+    /// evaluate(h) for h in [0, n) over deal.II's threads (TBB), in ranges
+    /// of a few elements; the first h (in order) whose evaluate refused, or
+    /// n. A range stops at its refusal; the others run to their end.
+    template <typename Evaluate>
+    unsigned int
+    first_refusal_in_parallel(const unsigned int n, const Evaluate &evaluate)
+    {
+      constexpr unsigned int    elements_per_range = 4;
+      std::atomic<unsigned int> first{n};
+      dealii::parallel::apply_to_subranges(
+        0u, n,
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int h = begin; h < end; ++h)
+            if (!evaluate(h))
+              {
+                unsigned int seen = first.load();
+                while (h < seen && !first.compare_exchange_weak(seen, h))
+                  {
+                  }
+                return;
+              }
+        },
+        elements_per_range);
+      return first.load();
+    }
 
     /// local_u[q], local_v[q] = u[i], v[i] of the local DOFs q in [first,
     /// end), i = local_equation[q]; 0 on the ground (i < 0).
@@ -614,32 +656,39 @@ namespace poundfe
   NewmarkIntegrator::evaluate_elements(const Vector &u_trial, const Vector &v_trial,
                                        const Level &L)
   {
-    for (unsigned int h = 0; h < n_elements; ++h)
-      {
-        const unsigned int s = dof_start[h], k = dof_start[h + 1] - s, r = basis[h].cols();
-        bool               accepted = false;
-        if (UniaxialElement *const typed = L.uniaxial[h]) // no gather, no virtual call
-          accepted = typed->evaluate(local_equation.data() + s, u_trial, v_trial, L.c_damp_u,
-                                 correction.data() + s, tangent_change[d_start[h]]);
-        else
-          {
-            NonlinearElement &e = (*elements)[h];
-            gather_dofs(s, s + k, local_equation, u_trial, v_trial, local_u, local_v);
-            accepted = e.set_trial(local_u.segment(s, k), local_v.segment(s, k));
-            if (accepted)
-              {
-                e.force_correction(correction.segment(s, k));
-                e.tangent_change(
-                  L.c_damp_u, Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h], r, r));
-              }
-          }
-        if (!accepted)
-          {
-            failure = refusal_text((*elements)[h]);
-            return false;
-          }
-      }
-    return true;
+    // one element's trial state, force correction and tangent change, each
+    // in its own slices of local_u, local_v, correction and tangent_change:
+    // the elements are independent, so their order (or thread) does not
+    // change a number
+    const auto evaluate = [&](const unsigned int h) {
+      const unsigned int s = dof_start[h], k = dof_start[h + 1] - s, r = basis[h].cols();
+      if (UniaxialElement *const typed = L.uniaxial[h]) // no gather, no virtual call
+        return typed->evaluate(local_equation.data() + s, u_trial, v_trial, L.c_damp_u,
+                               correction.data() + s, tangent_change[d_start[h]]);
+      NonlinearElement &e = (*elements)[h];
+      gather_dofs(s, s + k, local_equation, u_trial, v_trial, local_u, local_v);
+      if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
+        return false;
+      e.force_correction(correction.segment(s, k));
+      e.tangent_change(L.c_damp_u,
+                       Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h], r, r));
+      return true;
+    };
+    unsigned int refused = n_elements;
+    // A line search tries trial states without a revert in between, from
+    // which a force-based element iterates on: there the elements past a
+    // refusal stay untouched, as in order. Elsewhere a refusal cuts the
+    // step, which reverts every element.
+    if (!parameters.newton.line_search && worth_threads(L.uniaxial))
+      refused = first_refusal_in_parallel(n_elements, evaluate);
+    else
+      for (unsigned int h = 0; h < n_elements && refused == n_elements; ++h)
+        if (!evaluate(h))
+          refused = h;
+    if (refused == n_elements)
+      return true;
+    failure = refusal_text((*elements)[refused]);
+    return false;
   }
 
   void
