@@ -599,26 +599,54 @@ namespace poundfe
     return {joined.begin(), joined.end()};
   }
 
+  namespace
+  {
+    /// Loads on the equations of a model, added DOF by DOF (a constrained
+    /// DOF's to its masters').
+    class EquationLoads
+    {
+    public:
+      explicit EquationLoads(const Model &model)
+        : model(model)
+        , loads(Vector::Zero(model.n_equations()))
+      {}
+      void
+      operator()(const unsigned int dof, const double value)
+      {
+        model.equation_terms(dof, terms);
+        for (const auto &[row, coefficient] : terms)
+          loads[row] += coefficient * value;
+      }
+
+      const Model                        &model;
+      Vector                              loads;
+      std::vector<std::pair<int, double>> terms;
+    };
+  } // namespace
+
   Vector
   gravity_loads(const Model &model)
   {
-    Vector loads = Vector::Zero(model.n_equations());
-    std::vector<std::pair<int, double>> terms;
-    const auto add = [&](const unsigned int dof, const double value) {
-      model.equation_terms(dof, terms);
-      for (const auto &[row, coefficient] : terms)
-        loads[row] += coefficient * value;
-    };
+    EquationLoads add(model);
+    Vector       &loads = add.loads;
     // Element by element, so that a member's weight shared with a support
     // goes there (M r_y restricted to the free DOFs would lose the coupling
     // terms of a consistent mass to the supported ones).
+    // A member's self-weight as a distributed load replaces its mass's
+    // weight: an elastic member's consistent nodal loads, a fibre member's
+    // element load (its element, not the load vector, carries it).
     Vector6 vertical;
     vertical << 0, 1, 0, 0, 1, 0;
     for (const Member &member : model.members)
       {
-        const FrameElement element = element_of(model, member);
-        const Vector6 weight = -model.gravity * (element.mass(model.mass_matrix) * vertical);
-        const auto    dofs   = member_dofs(member);
+        if (member.weight_per_length != 0 && member.fibre.fibre())
+          continue;
+        const Vector6 weight =
+          member.weight_per_length != 0 ?
+            Vector6(-self_weight_end_forces(model, member)) :
+            Vector6(-model.gravity *
+                    (element_of(model, member).mass(model.mass_matrix) * vertical));
+        const auto dofs = member_dofs(member);
         for (unsigned int i = 0; i < 6; ++i)
           add(dofs[i], weight[i]);
       }
@@ -632,8 +660,12 @@ namespace poundfe
         vertical[2] = vertical[8] = 1;
         for (const Member3D &member : model.members_3d)
           {
+            if (member.weight_per_length != 0 && member.fibre.fibre())
+              continue;
             const Vector12 weight =
-              -model.gravity * (element_of(member).mass(model.mass_matrix) * vertical);
+              member.weight_per_length != 0 ?
+                Vector12(-self_weight_end_forces(member)) :
+                Vector12(-model.gravity * (element_of(member).mass(model.mass_matrix) * vertical));
             const Vector on_dofs = map_of(member).transpose() * weight;
             for (unsigned int i = 0; i < member.dofs.size(); ++i)
               add(member.dofs[i], on_dofs[i]);
@@ -643,6 +675,28 @@ namespace poundfe
     for (const NodalMass &mass : model.masses)
       add(Model::dof(mass.node, Component::uy), -model.gravity * mass.mass);
     return loads;
+  }
+
+  Vector
+  member_element_loads(const Model &model)
+  {
+    EquationLoads add(model);
+    for (const Member &member : model.members)
+      if (member.weight_per_length != 0 && member.fibre.fibre())
+        {
+          const Vector6 weight = -self_weight_end_forces(model, member);
+          const auto    dofs   = member_dofs(member);
+          for (unsigned int i = 0; i < 6; ++i)
+            add(dofs[i], weight[i]);
+        }
+    for (const Member3D &member : model.members_3d)
+      if (member.weight_per_length != 0 && member.fibre.fibre())
+        {
+          const Vector on_dofs = map_of(member).transpose() * (-self_weight_end_forces(member));
+          for (unsigned int i = 0; i < member.dofs.size(); ++i)
+            add(member.dofs[i], on_dofs[i]);
+        }
+    return add.loads;
   }
 
   Vector

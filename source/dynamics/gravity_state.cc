@@ -52,12 +52,15 @@ namespace poundfe
     /// uy in 2D, a 3D frame joint's (or basemat's) uz in 3D (z is up there;
     /// a 3D shear building has none). The loads of the rigid floors' maps are
     /// already on their equations (gravity_loads), so the sum is the weight
-    /// of every mass on a free DOF.
+    /// of every mass on a free DOF (and of the fibre members' self-weight,
+    /// by its consistent nodal loads).
     void
     describe_gravity_state(const Model &model, GravityState &gravity)
     {
       const std::string vertical = model.dimension == 2 ? "uy" : "uz";
       gravity.base_reactions.assign(model.buildings.size(), 0.0);
+      // the fibre members' self-weight is in their elements, not in `applied`
+      const Vector carried = gravity.applied + member_element_loads(model);
       std::vector<char> seen(model.n_equations(), 0); // a hinge's two nodes share ux, uy
       int               peak = -1; // named once, after the search (a name scans the model)
       for (unsigned int dof = 0; dof < model.n_dofs(); ++dof)
@@ -75,7 +78,7 @@ namespace poundfe
               peak                      = eq;
             }
           if (component == vertical)
-            gravity.base_reactions[model.nodes[node].building] -= gravity.applied[eq];
+            gravity.base_reactions[model.nodes[node].building] -= carried[eq];
         }
       if (peak >= 0)
         gravity.peak_where = equation_name(model, peak);
@@ -114,6 +117,7 @@ namespace poundfe
     AssertThrow(solver.set_state(state.displacement),
                 dealii::ExcMessage("an element refuses its committed state"));
     gravity.path         = std::move(state.path);
+    gravity.path_factors = std::move(state.load_factors);
     gravity.displacement = state.displacement;
     gravity.held         = solver.resisting_force(gravity.displacement);
     gravity.tangent      = solver.tangent();

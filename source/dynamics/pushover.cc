@@ -193,7 +193,7 @@ namespace poundfe
       point.u             = Vector::Zero(model.n_equations());
       if (analysis.gravity.active)
         {
-          restore_static_state(analysis.gravity.path, elements);
+          restore_static_state(analysis.gravity.path, analysis.gravity.path_factors, elements);
           constant = analysis.gravity.held;
           point.u  = analysis.gravity.displacement;
         }

@@ -229,9 +229,10 @@ namespace poundfe
           parameters.input.fail("Model/Gravity analysis/Type",
                                 "a gravity analysis first is not available with Time "
                                 "integration/Method = dopri; use newmark");
-        const std::vector<Vector> &path = analysis_.gravity.path;
+        const std::vector<Vector> &path    = analysis_.gravity.path;
+        const std::vector<double> &factors = analysis_.gravity.path_factors;
         integrator->set_element_preload(
-          [&path](NonlinearElements &e) { restore_static_state(path, e); });
+          [&path, &factors](NonlinearElements &e) { restore_static_state(path, factors, e); });
       }
     // known before the observers are made (the recorders choose their columns)
     view.set_vertical_ground_motion(parameters.ground_motion.has_vertical());

@@ -40,6 +40,64 @@ namespace poundfe
     return sections;
   }
 
+  // ---------------------------------------------------------- element loads
+
+  template <int dim>
+  UniformLoadForces<dim>
+  uniform_load_forces(const double L, const MemberLoad<dim> &w)
+  {
+    UniformLoadForces<dim> f;
+    const double           axial = w[0] * L, vy = 0.5 * w[1] * L, mz = vy * L / 6;
+    f.q0.setZero();
+    f.q0[0] = -0.5 * axial;
+    f.q0[1] = -mz;
+    f.q0[2] = mz;
+    f.p0[0] = -axial;
+    f.p0[1] = f.p0[2] = -vy;
+    if constexpr (dim == 3)
+      {
+        const double vz = 0.5 * w[2] * L, my = vz * L / 6;
+        f.q0[3] = my;
+        f.q0[4] = -my;
+        f.p0[3] = f.p0[4] = -vz;
+      }
+    return f;
+  }
+
+  template <int dim>
+  typename CrdTransformation<dim>::GlobalVector
+  basic_reactions(const CrdTransformation<dim> &transformation,
+                  const Eigen::Matrix<double, 2 * dim - 1, 1> &p0)
+  {
+    using Translation = Eigen::Matrix<double, dim, 1>;
+    constexpr int j   = dim == 2 ? 3 : 6; // end J's first DOF
+    Translation   at_i = Translation::Zero(), at_j = Translation::Zero();
+    at_i[0] = p0[0];
+    at_i[1] = p0[1];
+    at_j[1] = p0[2];
+    if constexpr (dim == 3)
+      {
+        at_i[2] = p0[3];
+        at_j[2] = p0[4];
+      }
+    typename CrdTransformation<dim>::GlobalVector p =
+      CrdTransformation<dim>::GlobalVector::Zero();
+    const auto &axes              = transformation.local_axes(); // rows: local axes
+    p.template segment<dim>(0)    = axes.transpose() * at_i;
+    p.template segment<dim>(j)    = axes.transpose() * at_j;
+    return transformation.offset_matrix().transpose() * p;
+  }
+
+  template <int dim>
+  typename CrdTransformation<dim>::GlobalVector
+  fixed_end_forces(const CrdTransformation<dim> &transformation, const MemberLoad<dim> &w)
+  {
+    CrdTransformation<dim> at_rest = transformation;
+    at_rest.update(CrdTransformation<dim>::GlobalVector::Zero());
+    const UniformLoadForces<dim> f = uniform_load_forces<dim>(at_rest.initial_length(), w);
+    return at_rest.global_force(f.q0) + basic_reactions(at_rest, f.p0);
+  }
+
   // ---------------------------------------------------------------- common
 
   template <int dim>
@@ -60,6 +118,32 @@ namespace poundfe
     committed = trial;
     trial_u = committed_u = GlobalVector::Zero();
     virgin_stiffness.setZero();
+    load_reactions.setZero();
+  }
+
+  template <int dim>
+  void
+  BeamColumn<dim>::set_uniform_load(const MemberLoad<dim> &w)
+  {
+    Assert(transf.kind() != Transformation::corotational,
+           dealii::ExcMessage("a uniform load on a corotational member"));
+    load           = w;
+    has_load       = !w.isZero(0);
+    load_forces    = uniform_load_forces<dim>(length(), w);
+    load_reactions = basic_reactions(transf, load_forces.p0);
+  }
+
+  template <int dim>
+  typename BeamColumn<dim>::ResultantVector
+  BeamColumn<dim>::particular_forces(const unsigned int i) const
+  {
+    const double    xi = rule.points[i], L = length();
+    ResultantVector s  = ResultantVector::Zero();
+    s[0]               = load[0] * L * (1 - xi);
+    s[1]               = 0.5 * load[1] * L * L * xi * (xi - 1);
+    if constexpr (dim == 3)
+      s[2] = 0.5 * load[2] * L * L * xi * (1 - xi);
+    return s;
   }
 
   template <int dim>
@@ -71,7 +155,11 @@ namespace poundfe
     why.clear();
     if (!basic_state(transf.basic_deformation(), trial.basic_force, trial.basic_stiffness))
       return false;
-    trial.force     = transf.global_force(trial.basic_force);
+    if (has_load && !sections_carry_load())
+      trial.basic_force += load_factor * load_forces.q0;
+    trial.force = transf.global_force(trial.basic_force);
+    if (has_load)
+      trial.force += load_factor * load_reactions;
     trial.stiffness = transf.global_tangent(trial.basic_force, trial.basic_stiffness);
     return trial.force.allFinite() && trial.stiffness.allFinite();
   }
@@ -104,6 +192,7 @@ namespace poundfe
   void
   BeamColumn<dim>::reset()
   {
+    load_factor = 0;
     for (const auto &s : sections)
       s->reset();
     reset_basic();
@@ -269,7 +358,8 @@ namespace poundfe
       }
     current.v.setZero();
     current.q.setZero();
-    current.kv  = f.inverse();
+    current.factor = 0;
+    current.kv     = f.inverse();
     committed   = current;
     initialised = false;
   }
@@ -375,6 +465,7 @@ namespace poundfe
   {
     if (opensees)
       {
+        Assert(!this->has_load, dealii::ExcMessage("OpenSees's iteration takes no element load"));
         const bool ok = opensees_state(v);
         q             = current.q;
         k             = current.kv;
@@ -385,23 +476,31 @@ namespace poundfe
       }
     constexpr unsigned int max_levels = 4, max_pieces = 100;
     iterations = pieces = 0;
-    BasicVector  remaining = v - current.v;
-    BasicVector  piece     = remaining;
-    unsigned int level     = 0;
+    // the load factor's change goes in the same pieces as v's (an unloaded
+    // member stays at factor 0: its pieces are v's alone)
+    const double lambda         = this->has_load ? this->load_factor : 0.0;
+    BasicVector  remaining      = v - current.v;
+    BasicVector  piece          = remaining;
+    double       load_remaining = lambda - current.factor, load_piece = load_remaining;
+    unsigned int level          = 0;
     // the sections' initial flexibility, once the tangent's has failed at
     // every level (OpenSees's second strategy; see iterate)
     bool initial = false;
-    while (remaining.squaredNorm() > 0 && current.v != v)
+    while ((remaining.squaredNorm() > 0 && current.v != v) || current.factor != lambda)
       {
         start = current;
-        // the last piece ends at v exactly
-        const BasicVector target = v - (remaining - piece);
-        if (iterate(target, initial))
+        // the last piece ends at v and lambda exactly
+        const BasicVector target        = v - (remaining - piece);
+        const double      target_factor = lambda - (load_remaining - load_piece);
+        if (iterate(target, target_factor, initial))
           {
-            current.v = target;
+            current.v      = target;
+            current.factor = target_factor;
             remaining -= piece;
             piece = remaining;
-            level = 0;
+            load_remaining -= load_piece;
+            load_piece = load_remaining;
+            level      = 0;
             if (++pieces > max_pieces)
               break;
             continue;
@@ -411,16 +510,18 @@ namespace poundfe
           {
             if (initial)
               break;
-            initial = true;
-            level   = 0;
-            piece   = remaining;
+            initial    = true;
+            level      = 0;
+            piece      = remaining;
+            load_piece = load_remaining;
             continue;
           }
         piece /= 10;
+        load_piece /= 10;
       }
     q = current.q;
     k = current.kv;
-    if (current.v == v)
+    if (current.v == v && current.factor == lambda)
       return true;
     // the sections back at the last compatible state (a commit must not
     // see the failed iteration's)
@@ -435,8 +536,33 @@ namespace poundfe
   }
 
   template <int dim>
+  typename ForceBeamColumn<dim>::ResultantVector
+  ForceBeamColumn<dim>::section_forces(const unsigned int i, const BasicVector &q,
+                                       const double factor) const
+  {
+    const ResultantVector s = force_interpolation(this->rule.points[i]) * q;
+    return this->has_load ? ResultantVector(s + factor * this->particular_forces(i)) : s;
+  }
+
+  template <int dim>
+  double
+  ForceBeamColumn<dim>::load_energy(const double factor) const
+  {
+    if (!this->has_load || factor == 0)
+      return 0;
+    double energy = 0;
+    for (unsigned int i = 0; i < this->rule.size(); ++i)
+      {
+        const ResultantVector sp = factor * this->particular_forces(i);
+        energy += this->rule.weights[i] * this->length() * std::abs(sp.dot(current.fs[i] * sp));
+      }
+    return energy;
+  }
+
+  template <int dim>
   bool
-  ForceBeamColumn<dim>::iterate(const BasicVector &target, const bool initial)
+  ForceBeamColumn<dim>::iterate(const BasicVector &target, const double target_factor,
+                                const bool initial)
   {
     const unsigned int     max_iterations = initial ? 200 : 20;
     const double           L              = this->length();
@@ -450,6 +576,8 @@ namespace poundfe
     double scale = std::abs(target.dot(current.kv * target)) + std::abs(dv.dot(current.kv * dv));
     for (unsigned int i = 0; i < this->rule.size(); ++i)
       scale += this->rule.weights[i] * L * std::abs(current.e[i].dot(current.s[i]));
+    // and the element load's: a fixed-fixed member under it alone has v = 0
+    scale += load_energy(target_factor);
     // An absolute floor, for a member near v = 0 with nothing behind it
     // (the scale above then ~ |v|^2, a tolerance that the residual's
     // round-off at a fibre law's kink, as Concrete01's at zero strain, never
@@ -473,7 +601,7 @@ namespace poundfe
         for (unsigned int i = 0; i < this->rule.size(); ++i)
           {
             const Interpolation   b  = force_interpolation(this->rule.points[i]);
-            const ResultantVector ss = b * current.q;
+            const ResultantVector ss = section_forces(i, current.q, target_factor);
             current.e[i] += (initial ? ResultantMatrix(initial_section_stiffness[i].inverse()) :
                                        current.fs[i]) *
                             (ss - current.s[i]);
@@ -505,6 +633,16 @@ namespace poundfe
     return false;
   }
 
+  template UniformLoadForces<2> uniform_load_forces<2>(double, const MemberLoad<2> &);
+  template UniformLoadForces<3> uniform_load_forces<3>(double, const MemberLoad<3> &);
+  template CrdTransformation<2>::GlobalVector
+  basic_reactions<2>(const CrdTransformation<2> &, const Eigen::Matrix<double, 3, 1> &);
+  template CrdTransformation<3>::GlobalVector
+  basic_reactions<3>(const CrdTransformation<3> &, const Eigen::Matrix<double, 5, 1> &);
+  template CrdTransformation<2>::GlobalVector fixed_end_forces<2>(const CrdTransformation<2> &,
+                                                                  const MemberLoad<2> &);
+  template CrdTransformation<3>::GlobalVector fixed_end_forces<3>(const CrdTransformation<3> &,
+                                                                  const MemberLoad<3> &);
   template class BeamColumn<2>;
   template class BeamColumn<3>;
   template class DispBeamColumn<2>;

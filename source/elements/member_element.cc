@@ -160,21 +160,85 @@ namespace poundfe
     return transformation.basic_deformation()[1];
   }
 
+  namespace
+  {
+    /// The member's transformation between its nodes: PDelta or Linear.
+    CrdTransformation<2>
+    transformation_of(const Model &model, const Member &member, const Transformation kind)
+    {
+      const Point2 a = model.nodes[member.nodes[0]].position;
+      const Point2 b = model.nodes[member.nodes[1]].position;
+      return CrdTransformation<2>(kind, Eigen::Vector2d(a.x, a.y), Eigen::Vector2d(b.x, b.y));
+    }
+
+    /// The 3D member's, its local axes by its orientation.
+    CrdTransformation<3>
+    transformation_of(const Member3D &member, const Transformation kind)
+    {
+      using Point = Eigen::Map<const Eigen::Vector3d>;
+      return CrdTransformation<3>(kind, Point(member.ends[0].data()), Point(member.ends[1].data()),
+                                  Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                  Point(member.orientation.data()));
+    }
+
+    /// A fibre member's beam-column on its section, with its self-weight.
+    template <int dim>
+    std::unique_ptr<BeamColumn<dim>>
+    make_fibre_beam_column(const Model &model, const FibreMember &fibre,
+                           const CrdTransformation<dim> &transformation, const double weight)
+    {
+      Assert(fibre.fibre() && model.section_laws.at(fibre.section),
+             dealii::ExcMessage("a fibre member needs its section"));
+      const SectionLaw &section = *model.section_laws[fibre.section];
+      std::unique_ptr<BeamColumn<dim>> beam;
+      if (fibre.force_based)
+        beam = std::make_unique<ForceBeamColumn<dim>>(transformation, section, fibre.n_points);
+      else
+        beam = std::make_unique<DispBeamColumn<dim>>(transformation, section, fibre.n_points);
+      if (weight != 0)
+        beam->set_uniform_load(self_weight_load(transformation, weight));
+      return beam;
+    }
+  } // namespace
+
+  MemberLoad<2>
+  self_weight_load(const CrdTransformation<2> &transformation, const double weight)
+  {
+    return transformation.local_axes() * Eigen::Vector2d(0, -weight);
+  }
+
+  MemberLoad<3>
+  self_weight_load(const CrdTransformation<3> &transformation, const double weight)
+  {
+    return transformation.local_axes() * Eigen::Vector3d(0, 0, -weight);
+  }
+
+  Eigen::Matrix<double, 6, 1>
+  self_weight_end_forces(const Model &model, const Member &member)
+  {
+    if (member.weight_per_length == 0)
+      return Eigen::Matrix<double, 6, 1>::Zero();
+    const CrdTransformation<2> t = transformation_of(model, member, Transformation::linear);
+    return fixed_end_forces(t, self_weight_load(t, member.weight_per_length));
+  }
+
+  Eigen::Matrix<double, 12, 1>
+  self_weight_end_forces(const Member3D &member)
+  {
+    if (member.weight_per_length == 0)
+      return Eigen::Matrix<double, 12, 1>::Zero();
+    const CrdTransformation<3> t = transformation_of(member, Transformation::linear);
+    return fixed_end_forces(t, self_weight_load(t, member.weight_per_length));
+  }
+
   std::unique_ptr<BeamColumn<2>>
   make_beam_column(const Model &model, const Member &member)
   {
-    Assert(member.fibre.fibre() && model.section_laws.at(member.fibre.section),
-           dealii::ExcMessage("a fibre member needs its section"));
-    const Point2 a = model.nodes[member.nodes[0]].position;
-    const Point2 b = model.nodes[member.nodes[1]].position;
-    const CrdTransformation<2> transformation(member.fibre.p_delta ? Transformation::pdelta :
-                                                                     Transformation::linear,
-                                              Eigen::Vector2d(a.x, a.y),
-                                              Eigen::Vector2d(b.x, b.y));
-    const SectionLaw &section = *model.section_laws[member.fibre.section];
-    if (member.fibre.force_based)
-      return std::make_unique<ForceBeamColumn<2>>(transformation, section, member.fibre.n_points);
-    return std::make_unique<DispBeamColumn<2>>(transformation, section, member.fibre.n_points);
+    return make_fibre_beam_column<2>(
+      model, member.fibre,
+      transformation_of(model, member,
+                        member.fibre.p_delta ? Transformation::pdelta : Transformation::linear),
+      member.weight_per_length);
   }
 
   std::unique_ptr<MemberElement<2>>
@@ -192,19 +256,11 @@ namespace poundfe
   std::unique_ptr<BeamColumn<3>>
   make_beam_column(const Model &model, const Member3D &member)
   {
-    Assert(member.fibre.fibre() && model.section_laws.at(member.fibre.section),
-           dealii::ExcMessage("a fibre member needs its section"));
-    using Point              = Eigen::Map<const Eigen::Vector3d>;
-    const Eigen::Vector3d      a = Point(member.ends[0].data()), b = Point(member.ends[1].data());
-    const CrdTransformation<3> transformation(member.fibre.p_delta ? Transformation::pdelta :
-                                                                     Transformation::linear,
-                                              a, b, Eigen::Vector3d::Zero(),
-                                              Eigen::Vector3d::Zero(),
-                                              Point(member.orientation.data()));
-    const SectionLaw &section = *model.section_laws[member.fibre.section];
-    if (member.fibre.force_based)
-      return std::make_unique<ForceBeamColumn<3>>(transformation, section, member.fibre.n_points);
-    return std::make_unique<DispBeamColumn<3>>(transformation, section, member.fibre.n_points);
+    return make_fibre_beam_column<3>(
+      model, member.fibre,
+      transformation_of(member,
+                        member.fibre.p_delta ? Transformation::pdelta : Transformation::linear),
+      member.weight_per_length);
   }
 
   std::unique_ptr<MemberElement<3>>

@@ -200,6 +200,14 @@ namespace poundfe
     return true;
   }
 
+  void
+  StaticSolver::set_load_factor(const double lambda)
+  {
+    if (elements)
+      for (NonlinearElement &e : *elements)
+        e.set_load_factor(lambda);
+  }
+
   namespace
   {
     /// The NumericalError of a load step that failed at its smallest size.
@@ -232,6 +240,7 @@ namespace poundfe
     if (lambda0 == lambda1) // one solve at the same load (re-equilibrate)
       {
         Vector u = state.displacement;
+        solver.set_load_factor(lambda1);
         if (!solver.newton(lambda1 * p_ref, u, settings.tolerance, scale, settings.max_iterations))
           {
             solver.revert();
@@ -240,6 +249,7 @@ namespace poundfe
         solver.commit();
         state.displacement = u;
         state.path.push_back(u);
+        state.load_factors.push_back(lambda1);
         ++state.steps;
         state.iterations += solver.iterations();
         return;
@@ -251,11 +261,13 @@ namespace poundfe
         const double next =
           std::abs(remaining) <= std::abs(step) * (1 + 1e-9) ? lambda1 : lambda + step;
         Vector u = state.displacement;
+        solver.set_load_factor(next);
         if (solver.newton(next * p_ref, u, settings.tolerance, scale, settings.max_iterations))
           {
             solver.commit();
             state.displacement = u;
             state.path.push_back(u);
+            state.load_factors.push_back(next);
             ++state.steps;
             state.iterations += solver.iterations();
             lambda = next;
@@ -425,12 +437,15 @@ namespace poundfe
   }
 
   void
-  restore_static_state(const std::vector<Vector> &path, NonlinearElements &elements)
+  restore_static_state(const std::vector<Vector> &path, const std::vector<double> &load_factors,
+                       NonlinearElements &elements)
   {
+    AssertDimension(path.size(), load_factors.size());
     const SparseMatrix none;
     StaticSolver       solver(none, &elements);
     for (unsigned int step = 0; step < path.size(); ++step)
       {
+        solver.set_load_factor(load_factors[step]);
         // an element's iteration from its committed state may fail where
         // the Newton iteration's trials converged: a numerical failure,
         // the element named

@@ -4,6 +4,7 @@
 #include <poundfe/mesh/line_mesh.h>
 #include <poundfe/model/frame_3d_assembler.h>
 #include <poundfe/model/mesh_building_3d.h>
+#include <poundfe/model/model_builder.h>
 #include <poundfe/model/plan_builder.h>
 
 #include <Eigen/Geometry>
@@ -81,7 +82,8 @@ namespace poundfe
     public:
       MeshFrameBuilder(Model &model, const InputFile &input, const BuildingParameters &p,
                        const unsigned int b, Building &building)
-          : input(input)
+          : model(model)
+          , input(input)
           , p(p)
           , b(b)
           , building(building)
@@ -113,6 +115,7 @@ namespace poundfe
       }
 
     private:
+      const Model              &model; // its section laws (fibre members)
       const InputFile          &input;
       const BuildingParameters &p;
       const unsigned int        b;
@@ -359,39 +362,66 @@ namespace poundfe
             if (kind == MemberKind::column && joints[v1].position.z() < joints[v0].position.z())
               std::swap(v0, v1); // columns bottom to top, as a generated frame's
             const Eigen::Vector3d a = joints[v0].position, e = joints[v1].position;
-            const Eigen::Vector3d v = orientation(g, kind), site_v = plan_turned(v);
+            const Eigen::Vector3d v = orientation(g, kind);
+            // a fibre member's section stands with its y axis up unless told
+            // (v = x × Z), as a generated frame's fibre beams
+            const Eigen::Vector3d site_v =
+              p.fibre() && kind != MemberKind::column && !given_orientation(g) ?
+                Eigen::Vector3d((e - a).cross(Eigen::Vector3d::UnitZ()).normalized()) :
+                plan_turned(v);
             if (site_v.cross((e - a).normalized()).norm() <= 1e-9 * v.norm())
               fail("Group orientation",
                    "group " + std::to_string(p.group_ids[g]) + ": the vector (" +
                      number_text(v[0]) + ", " + number_text(v[1]) + ", " + number_text(v[2]) +
                      ") is along line element " + std::to_string(c + 1) + " from " + at(v0) +
                      " to " + at(v1) + ": it cannot fix the member's local axes");
-            const Section3D section{value_for(p.group_youngs_modulus, g),
-                                    value_for(p.group_shear_modulus, g),
-                                    value_for(p.group_area, g),
-                                    value_for(p.group_second_moment, g),
-                                    value_for(p.group_second_moment_z, g),
-                                    value_for(p.group_torsion_constant, g),
-                                    0,
-                                    0,
-                                    value_for(p.group_mass_per_length, g)};
+            const Section3D   section = group_section(g);
             const std::string prefix =
               kind == MemberKind::column ? "C" + std::to_string(storey_of(e.z())) + "." :
               kind == MemberKind::beam   ? "B" + std::to_string(storey_of(a.z())) + "." :
                                            "M";
             parts.add_member({{&joints[v0], &joints[v1]}}, site_v, section, kind,
-                             p.group_ids[g], prefix + std::to_string(++counts[prefix]));
+                             p.group_ids[g], prefix + std::to_string(++counts[prefix]),
+                             group_fibre_member(model, p, g, kind));
           }
+      }
+
+      /// Group g's elastic section; a fibre member's mass alone (its
+      /// rigidities come from its section law: set_fibre_rigidities).
+      Section3D
+      group_section(const unsigned int g) const
+      {
+        Section3D section;
+        section.mass_per_length = value_for(p.group_mass_per_length, g);
+        if (p.fibre())
+          return section;
+        section.youngs_modulus   = value_for(p.group_youngs_modulus, g);
+        section.shear_modulus    = value_for(p.group_shear_modulus, g);
+        section.area             = value_for(p.group_area, g);
+        section.second_moment_y  = value_for(p.group_second_moment, g);
+        section.second_moment_z  = value_for(p.group_second_moment_z, g);
+        section.torsion_constant = value_for(p.group_torsion_constant, g);
+        return section;
+      }
+
+      /// Whether Group orientation gives group g's vector.
+      bool
+      given_orientation(const unsigned int g) const
+      {
+        const std::array<double, 3> given =
+          g < p.group_orientations.size() ? p.group_orientations[g] : std::array<double, 3>{};
+        return given[0] != 0 || given[1] != 0 || given[2] != 0;
       }
 
       /// Group g's vector v (building frame): given, or the default.
       Eigen::Vector3d
       orientation(const unsigned int g, const MemberKind kind) const
       {
-        const std::array<double, 3> given =
-          g < p.group_orientations.size() ? p.group_orientations[g] : std::array<double, 3>{};
-        if (given[0] != 0 || given[1] != 0 || given[2] != 0)
-          return {given[0], given[1], given[2]};
+        if (given_orientation(g))
+          {
+            const std::array<double, 3> &given = p.group_orientations[g];
+            return {given[0], given[1], given[2]};
+          }
         return kind == MemberKind::column ? Eigen::Vector3d(1, 0, 0) : Eigen::Vector3d(0, 0, 1);
       }
 

@@ -46,9 +46,12 @@ namespace poundfe
                             "a 3D mesh building needs the " + std::string(what),
                             "one per group id");
     };
-    required("Group G", group_shear_modulus, "groups' shear modulus G");
-    required("Group Iz", group_second_moment_z, "groups' second moment Iz");
-    required("Group J", group_torsion_constant, "groups' torsion constant J");
+    if (!fibre()) // a fibre mesh's members take their rigidities from their sections
+      {
+        required("Group G", group_shear_modulus, "groups' shear modulus G");
+        required("Group Iz", group_second_moment_z, "groups' second moment Iz");
+        required("Group J", group_torsion_constant, "groups' torsion constant J");
+      }
     for (const auto &[entry, values] :
          {std::pair<const char *, const std::vector<double> *>{"Group E", &group_youngs_modulus},
           {"Group A", &group_area},

@@ -10,6 +10,8 @@
 #include <poundfe/model/plan_builder.h>
 #include <poundfe/sections/fibre_section.h>
 
+#include <deal.II/base/exceptions.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -227,7 +229,8 @@ namespace poundfe
     {
       model.section_laws.assign(parameters.sections.sections.size(), nullptr);
       for (const BuildingParameters &p : parameters.buildings)
-        for (const auto *indices : {&p.column_section_index, &p.beam_section_index})
+        for (const auto *indices :
+             {&p.column_section_index, &p.beam_section_index, &p.group_section_index})
           for (const unsigned int k : *indices)
             if (!model.section_laws[k])
               model.section_laws[k] =
@@ -418,7 +421,8 @@ namespace poundfe
               kind = MemberKind::beam;
               beam_levels.push_back(p0.y);
             }
-          add_member(model, n0, n1, 1, section, b, mesh.material_ids[c], kind);
+          add_member(model, n0, n1, 1, section, b, mesh.material_ids[c], kind,
+                     group_fibre_member(model, p, g, kind));
           if (kind == MemberKind::column)
             for (const unsigned int n : {n0, n1})
               joints_at_level[model.nodes[n].position.y].push_back(n);
@@ -718,21 +722,45 @@ namespace poundfe
     }
   } // namespace
 
+  namespace
+  {
+    /// A fibre building's member on Sections entry `section`; PDelta when a
+    /// column with Member transformation = PDelta, or auto and a gravity
+    /// analysis.
+    FibreMember
+    fibre_member_on_section(const Model &model, const BuildingParameters &p, const int section,
+                            const bool column)
+    {
+      FibreMember fibre;
+      fibre.section     = section;
+      fibre.force_based = p.member_element == "force";
+      fibre.n_points    = p.integration_points;
+      fibre.p_delta     = column && (p.member_transformation == "PDelta" ||
+                                 (p.member_transformation == "auto" &&
+                                  model.gravity_analysis.enabled));
+      return fibre;
+    }
+  } // namespace
+
   FibreMember
   fibre_member(const Model &model, const BuildingParameters &p, const unsigned int storey,
                const bool column)
   {
-    FibreMember fibre;
     if (!p.fibre())
-      return fibre;
-    fibre.section     = int(value_for(column ? p.column_section_index : p.beam_section_index,
-                                      storey));
-    fibre.force_based = p.member_element == "force";
-    fibre.n_points    = p.integration_points;
-    fibre.p_delta     = column && (p.member_transformation == "PDelta" ||
-                               (p.member_transformation == "auto" &&
-                                model.gravity_analysis.enabled));
-    return fibre;
+      return {};
+    return fibre_member_on_section(
+      model, p, int(value_for(column ? p.column_section_index : p.beam_section_index, storey)),
+      column);
+  }
+
+  FibreMember
+  group_fibre_member(const Model &model, const BuildingParameters &p, const unsigned int group,
+                     const MemberKind kind)
+  {
+    if (!p.fibre())
+      return {};
+    return fibre_member_on_section(model, p, int(value_for(p.group_section_index, group)),
+                                   kind == MemberKind::column);
   }
 
   void
@@ -760,6 +788,42 @@ namespace poundfe
           s.torsion_constant                 = k0(3, 3);
           s.shear_area_y = s.shear_area_z = 0;
         }
+  }
+
+  namespace
+  {
+    /// A member's area for its unit weight: a fibre member's section's
+    /// fibres (bars included), an elastic member's A.
+    double
+    weighed_area(const Model &model, const FibreMember &fibre, const double elastic_area)
+    {
+      if (!fibre.fibre())
+        return elastic_area;
+      const auto *section = dynamic_cast<const FibreSection *>(
+        model.section_laws[fibre.section].get());
+      Assert(section, dealii::ExcMessage("a fibre member's section is a fibre section"));
+      return section->geometry().area();
+    }
+  } // namespace
+
+  void
+  set_member_self_weights(Model &model, const ModelParameters &parameters)
+  {
+    const auto weight = [&](const unsigned int b, const FibreMember &fibre, const double area,
+                            const double mass_per_length) {
+      const BuildingParameters &p = parameters.buildings[b];
+      if (p.member_self_weight != "distributed")
+        return 0.0;
+      return p.member_unit_weight > 0 ?
+               p.member_unit_weight * weighed_area(model, fibre, area) :
+               mass_per_length * model.gravity;
+    };
+    for (Member &m : model.members)
+      m.weight_per_length =
+        weight(m.building, m.fibre, m.section.area, m.section.mass_per_length);
+    for (Member3D &m : model.members_3d)
+      m.weight_per_length =
+        weight(m.building, m.fibre, m.section.area, m.section.mass_per_length);
   }
 
   Model
@@ -831,6 +895,7 @@ namespace poundfe
           left = building.right + value_for(parameters.separations, b);
         model.buildings.push_back(std::move(building));
       }
+    set_member_self_weights(model, parameters); // before the rigidities replace A
     set_fibre_rigidities(model);
     if (model.dimension == 3)
       check_plans_apart(model, parameters, input);

@@ -646,6 +646,8 @@ namespace poundfe
         buildings[b].finalize(input, b + 1);
         buildings[b].finalize_member_model(input, "Building " + std::to_string(b + 1) + "/",
                                            *this);
+        buildings[b].finalize_self_weight(input, "Building " + std::to_string(b + 1) + "/",
+                                          *this);
       }
     input.positive("Model/Gravity", gravity);
     if (dimension == 3)

@@ -38,6 +38,7 @@
 //   axial force N and the end moments r_i N (u_j - u_i), and to the local
 //   stiffness their derivatives with N held (addPDeltaForces,
 //   addPDeltaStiff).
+#include <poundfe/elements/beam_column.h>
 #include <poundfe/opensees/opensees_domain.h>
 
 #include <Eigen/Geometry>
@@ -555,9 +556,9 @@ namespace poundfe
     add_uniform_beam_load(const double L, const double wy, const double wx, Eigen::Vector3d &q0,
                           Eigen::Vector3d &p0)
     {
-      const double V = 0.5 * wy * L, P = wx * L, M = V * L / 6.0;
-      p0 -= Eigen::Vector3d(P, V, V);
-      q0 -= Eigen::Vector3d(0.5 * P, M, -M);
+      const UniformLoadForces<2> f = uniform_load_forces<2>(L, MemberLoad<2>(wx, wy));
+      p0 += f.p0;
+      q0 += f.q0;
     }
 
     std::vector<double>

@@ -264,7 +264,9 @@ namespace poundfe
                                        Point(member.orientation.data()), member.section);
           if (member_3d_elements[k] >= 0)
             return element.rotation() * fibre_member_forces_3d(member_3d_elements[k]);
-          return element.local_end_forces(member_3d_end_displacements(model, member, u));
+          // K_e u_e plus the fixed-end forces of its self-weight
+          return element.local_end_forces(member_3d_end_displacements(model, member, u)) +
+                 element.rotation() * self_weight_end_forces(member);
         }
     return Vector12::Zero();
   }
@@ -291,8 +293,10 @@ namespace poundfe
           const FrameElement element(model.nodes[member.nodes[0]].position,
                                      model.nodes[member.nodes[1]].position, member.section);
           const int     e = member_elements[&member - model.members.data()];
-          const Vector6 f = e < 0 ? element.local_end_forces(member_end_displacements(model, member, u)) :
-                                    Vector6(element.rotation() * fibre_member_forces(e));
+          const Vector6 f =
+            e < 0 ? Vector6(element.local_end_forces(member_end_displacements(model, member, u)) +
+                            element.rotation() * self_weight_end_forces(model, member)) :
+                    Vector6(element.rotation() * fibre_member_forces(e));
           for (unsigned int end = 0; end < 2; ++end)
             if (member.at_joint[end])
               forces.segment<3>(3 * end) = f.segment<3>(3 * end);

@@ -628,7 +628,9 @@ namespace poundfe
         const Member      &m = model.members[e];
         const FrameElement element(model.nodes[m.nodes[0]].position,
                                    model.nodes[m.nodes[1]].position, m.section);
-        const Vector6      f = element.local_end_forces(element_displacements(m, u));
+        // K_e u_e plus the fixed-end forces of a distributed self-weight
+        const Vector6 f = element.local_end_forces(element_displacements(m, u)) +
+                          element.rotation() * self_weight_end_forces(model, m);
         for (unsigned int k = 0; k < 6; ++k)
           end_forces[e][k] = f[k];
       }

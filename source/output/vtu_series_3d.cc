@@ -321,7 +321,9 @@ namespace poundfe
           using Point            = Eigen::Map<const Eigen::Vector3d>;
           const FrameElement3D element(Point(member.ends[0].data()), Point(member.ends[1].data()),
                                        Point(member.orientation.data()), member.section);
-          const Vector12 f = element.local_end_forces(member_3d_end_displacements(model, member, u));
+          const Vector12 f =
+            element.local_end_forces(member_3d_end_displacements(model, member, u)) +
+            element.rotation() * self_weight_end_forces(member);
           for (unsigned int k = 0; k < 6; ++k)
             {
               start.values[6 * e + k] = f[k];

@@ -13,7 +13,8 @@
 #     beams (fibre-3d-concrete02-columns.prm), modal of a pair with
 #     Concrete01 in both (fibre-3d-concrete01-pair.prm): both complete,
 #     their reactions the floor weights;
-#   - bad input (expect.sh): a fibre building drawn in Gmsh (Type = mesh),
+#   - bad input (expect.sh): a fibre building drawn in Gmsh (Type = mesh)
+#     with a generated frame's Column sections (a mesh's are Group sections),
 #     a 3D rigidity given to a fibre building, a section without its GJ, a
 #     section states label no member has (the example in 3D form):
 #     exit 1, one line naming the entry, nothing written.
@@ -110,7 +111,7 @@ awk '/^subsection Building 1$/ { print; print "  set Member model = fibre"; prin
   "$mesh_input" > mesh.prm
 sed -n '/^subsection Sections/,/^end/p' "$example" >> mesh.prm
 sed -i "s#set Mesh file             = ../../meshes/#set Mesh file = $(dirname "$mesh_input")/../../meshes/#" mesh.prm
-expect 1 "Building 1/Member model': has no effect on a 3D mesh building" run mesh.prm --output out
+expect 1 "Building 1/Column sections': has no effect on a 3D mesh building" run mesh.prm --output out
 awk '/set Member model         = fibre/ && !done { print; print "  set Column Iz = 1e-3"; done = 1; next } { print }' \
   "$example" > iz.prm
 expect 1 "Column Iz': a fibre building (Member model = fibre) takes its rigidities" run iz.prm --output out

@@ -2,12 +2,15 @@
 // integration/static_analysis.h): the columns' axial forces against statics
 // by hand, a run without excitation that stays at the gravity state, an
 // elastic run that is the run without gravity plus the static offset, the
-// P-Delta periods of the gravity state against the closed form, and hinges
-// that start from their gravity moments.
+// P-Delta periods of the gravity state against the closed form, hinges
+// that start from their gravity moments, and the members' distributed
+// self-weight (elastic and fibre members) carried to the base and held.
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/assembly/nonlinear_elements.h>
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/input/engine_parameters.h>
+#include <poundfe/integration/static_analysis.h>
+#include <poundfe/output/storey_forces.h>
 
 #include "time_history_helpers.h"
 
@@ -195,6 +198,96 @@ BOOST_AUTO_TEST_CASE(hinges_start_from_their_gravity_moments)
     BOOST_TEST(std::abs(start.moments[h] -
                         elements[h].initial_stiffness() * elements[h].deformation(static_u)) <=
                1e-4 * largest);
+}
+
+namespace
+{
+  /// A two-storey, one-bay frame with its members' weight distributed
+  /// (unit weight 25e3 N/m^3), elastic members or fibre members on a
+  /// two-fibre elastic section of the same EA and EI (Linear columns).
+  std::string
+  self_weight_frame(const bool fibre, const std::string &element = "force")
+  {
+    const std::string members =
+      fibre ? " set Member model = fibre\n set Member element = " + element +
+                "\n set Member transformation = Linear\n set Column sections = two-fibres\n"
+                " set Beam sections = two-fibres\n" :
+              " set Column E = 3e10\n set Column A = 0.16\n set Column I = 1.6e-3\n"
+              " set Beam E = 3e10\n set Beam A = 0.16\n set Beam I = 1.6e-3\n";
+    return "subsection Model\n subsection Gravity analysis\n  set Type = static\n"
+           "  set Number of steps = 4\n  set Tolerance = 1e-12\n end\nend\n"
+           "subsection Sections\n set Number of sections = 1\n"
+           " set Materials = el: Elastic E=3e10\n subsection Section 1\n"
+           "  set Name = two-fibres\n  set Type = fibres\n"
+           "  set Fibres = fiber 0.1 0 0.08 el; fiber -0.1 0 0.08 el\n end\nend\n"
+           "subsection Building 1\n set Name = F\n set Type = frame\n"
+           " set Number of storeys = 2\n set Number of bays = 1\n set Storey heights = 3.5, 3\n"
+           " set Bay widths = 5\n set Floor masses = 3e4, 2e4\n"
+           " set Member self-weight = distributed\n set Member unit weight = 25e3\n" +
+           members + " subsection Damping\n  set Type = coefficients\n  set a0 = 0.3\n"
+           "  set a1 = 0.002\n end\nend\n" + motionless;
+  }
+
+  /// The sum of the base columns' axial end forces (local x at their
+  /// lower ends, up) at the gravity state.
+  double
+  base_column_forces(const Analysis &a)
+  {
+    NonlinearElements elements = make_nonlinear_elements(a.model);
+    restore_static_state(a.gravity.path, a.gravity.path_factors, elements);
+    const StoreyForces forces(a.model, elements);
+    double             sum = 0;
+    for (const std::string label : {"F_C1.1", "F_C1.2"})
+      {
+        BOOST_REQUIRE(forces.has_member(label));
+        sum += forces.member_end_forces(label, a.gravity.displacement)[0];
+      }
+    return sum;
+  }
+} // namespace
+
+// Member self-weight = distributed: the elastic members' consistent nodal
+// loads and the force-based and displacement-based fibre members' element
+// loads (their sections carry s_p, or their q0) on the same rigidities give
+// the same gravity state (to 1e-9: the elements' iterations against the
+// linear solve), and the base columns' lower-end axial forces (elastic: K_e
+// u plus the fixed-end forces) carry the whole weight by statics: the
+// floors' m g and every member's 25e3 A L (to 1e-9).
+BOOST_AUTO_TEST_CASE(distributed_self_weight_is_carried_to_the_base)
+{
+  const double total = 9.81 * 5e4 + 25e3 * 0.16 * (2 * (3.5 + 3) + 2 * 5);
+  const Analysis elastic =
+    prepare_analysis(poundfe_test::input_of("weight_elastic", self_weight_frame(false)));
+  BOOST_REQUIRE(elastic.gravity.active);
+  BOOST_TEST(base_column_forces(elastic) == total, boost::test_tools::tolerance(1e-9));
+  const double scale = elastic.gravity.displacement.lpNorm<Eigen::Infinity>();
+  BOOST_TEST(scale > 1e-5);
+  for (const std::string element : {"force", "displacement"})
+    {
+      const Analysis fibre = prepare_analysis(
+        poundfe_test::input_of("weight_fibre_" + element, self_weight_frame(true, element)));
+      BOOST_TEST((fibre.gravity.displacement - elastic.gravity.displacement)
+                     .lpNorm<Eigen::Infinity>() <= 1e-9 * scale);
+      BOOST_TEST(base_column_forces(fibre) == total, boost::test_tools::tolerance(1e-9));
+    }
+}
+
+// The self-weight is held through the dynamics: a fibre frame's run
+// without excitation stays at its gravity state (1e-12 of its largest
+// displacement), the elements replaying their load factors.
+BOOST_AUTO_TEST_CASE(a_run_holds_the_distributed_self_weight)
+{
+  for (const std::string element : {"force", "displacement"})
+    {
+      const InputParameters p =
+        poundfe_test::input_of("weight_still_" + element, self_weight_frame(true, element));
+      const Analysis                   a   = prepare_analysis(p);
+      const poundfe_test::StepRecorder run = poundfe_test::recorded_run(a, p);
+      BOOST_REQUIRE(run.u.size() >= 50u);
+      const auto [difference, scale] = largest_difference(run, a.gravity.displacement);
+      BOOST_TEST(scale > 1e-5);
+      BOOST_TEST(difference <= 1e-12 * scale);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

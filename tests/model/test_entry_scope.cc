@@ -135,8 +135,8 @@ BOOST_AUTO_TEST_CASE(the_entries_of_the_issue)
              "entry (every Type, Model/Dimension = 3); remove it, or set Model/Dimension = 3");
   BOOST_TEST(OneEntry(BuildingType::frame, 2, false, "Member element").refusal() ==
              "Building 1/Member element: has no effect on a 2D frame building with Member "
-             "model = elastic-hinges: it is a [frame, fibre] entry (Type = frame, Member model "
-             "= fibre); remove it, or set Member model = fibre");
+             "model = elastic-hinges: it is a [frame, mesh, fibre] entry (Type = frame or mesh, "
+             "Member model = fibre); remove it, or set Member model = fibre");
   // an entry not written is never refused, whatever its default
   OneEntry nothing_written(BuildingType::shear, 3, false, "Name");
   BOOST_TEST(nothing_written.refusal().empty());

@@ -98,9 +98,17 @@ namespace poundfe
   /// The gravity loads -g M r_y on the equations (g = model.gravity), from
   /// every mass: nodal weights, and the members' self-weight as their mass
   /// matrix distributes it (lumped: mL/2 per end; consistent: also the end
-  /// moments mL/12 of a beam). Dimension 3 (z up, r_z): the joints' vertical
+  /// moments mL/12 of a beam); a member with a distributed self-weight
+  /// (Member::weight_per_length) instead its consistent nodal loads when it
+  /// is elastic, nothing when it is a fibre member (its element carries it). Dimension 3 (z up, r_z): the joints' vertical
   /// masses (DofMass) and the 3D members' self-weight through T_eᵀ.
   Vector gravity_loads(const Model &model);
+
+  /// The consistent nodal loads of the fibre members' self-weight
+  /// (Member::weight_per_length), which their elements carry as element
+  /// loads and gravity_loads leaves out: what a report adds to the loads
+  /// the structure carries.
+  Vector member_element_loads(const Model &model);
 
   /// The Floor::gravity_load of every floor of a 2D frame, -q / n on uy
   /// of each of its n nodes (shear buildings have no vertical DOF: their

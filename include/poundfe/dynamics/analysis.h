@@ -27,6 +27,8 @@ namespace poundfe
     /// The committed displacements of every load step (restore_static_state
     /// brings a fresh set of elements to the gravity state through them).
     std::vector<Vector> path;
+    /// The load factor of each (the elements' own loads: self-weight).
+    std::vector<double> path_factors;
     /// u_g, the last of them.
     Vector displacement;
     /// The gravity loads applied (total_gravity_loads).

@@ -46,6 +46,26 @@
 // converged forces are those of the section laws (the iteration ends when
 // compatibility holds), only the tangent differs, by 1e-8 relative.
 //
+// Element loads (a uniform load w per unit length in the local axes, w_x
+// along the chord, w_y, w_z across it, times a load factor lambda; OpenSees's
+// eleLoad -beamUniform): the basic system's reactions p0 = -(w_x L, w_y L/2,
+// w_y L/2[, w_z L/2, w_z L/2]) (end I axial, end I and J transverse) are added
+// to the local end forces, and
+//   displacement-based (DispBeamColumn2d/3d::addLoad): the fixed-end basic
+//     forces q0 = (-w_x L/2, -w_y L^2/12, w_y L^2/12[, w_z L^2/12,
+//     -w_z L^2/12, 0]) are added to q: the consistent nodal loads of the
+//     cubic and linear fields; the sections do not see the load;
+//   force-based (Spacone et al. 1996 eq. 9; ForceBeamColumn2d/3d::
+//     computeSectionForces): the sections carry the simply supported
+//     member's forces under the load, s(x) = b(x) q + s_p(x),
+//       N_p = w_x (L - x),  Mz_p = w_y x (x - L)/2,  My_p = w_z x (L - x)/2,
+//     and q follows by compatibility, exactly as without the load (for an
+//     elastic fixed-fixed member q then holds the end moments w L^2/12 and
+//     the mid-span section w L^2/24). A change of lambda is stepped as a
+//     change of v is, in the same pieces.
+// The elastic frame elements take the same q0 and p0 (fixed_end_forces: the
+// global end forces of the member held fixed at both ends).
+//
 // State: set_trial(u) -> resisting_force(), tangent() -> commit() or
 // revert(); revert() restores the committed state bit for bit (the
 // forces and tangent are stored, the sections revert); reset() goes back
@@ -71,6 +91,37 @@ namespace poundfe
   /// end J (beam_integration.h).
   std::vector<std::unique_ptr<SectionLaw>>
   hinge_sections(const SectionLaw &end_i, const SectionLaw &interior, const SectionLaw &end_j);
+
+  /// A uniform load along a member per unit length, in its local axes:
+  /// 2D (w_x, w_y), 3D (w_x, w_y, w_z); x along the chord.
+  template <int dim>
+  using MemberLoad = Eigen::Matrix<double, MemberSize<dim>::space, 1>;
+
+  /// The fixed-end basic forces q0 and the basic system's reactions p0
+  /// (2D: axial at I, transverse at I and J; 3D: then along z at I and J)
+  /// of a uniform load on a member of length L (see above; OpenSees's
+  /// ElasticBeam2d/3d and DispBeamColumn2d/3d::addLoad).
+  template <int dim>
+  struct UniformLoadForces
+  {
+    typename CrdTransformation<dim>::BasicVector q0;
+    Eigen::Matrix<double, 2 * dim - 1, 1>      p0;
+  };
+  template <int dim>
+  UniformLoadForces<dim> uniform_load_forces(double length, const MemberLoad<dim> &w);
+  /// The basic reactions p0 as global end forces of the member of
+  /// `transformation` (local components at its ends, carried to the nodes
+  /// by the rigid offsets).
+  template <int dim>
+  typename CrdTransformation<dim>::GlobalVector
+  basic_reactions(const CrdTransformation<dim> &transformation,
+                  const Eigen::Matrix<double, 2 * dim - 1, 1> &p0);
+  /// The global end forces that hold an elastic member fixed at both ends
+  /// under the uniform load w (local axes): B^T q0 + p0 at u = 0. Their
+  /// negative is the load's consistent nodal loads.
+  template <int dim>
+  typename CrdTransformation<dim>::GlobalVector
+  fixed_end_forces(const CrdTransformation<dim> &transformation, const MemberLoad<dim> &w);
 
   template <int dim>
   class BeamColumn
@@ -105,6 +156,16 @@ namespace poundfe
     const GlobalMatrix &initial_tangent() const { return virgin_stiffness; }
     const GlobalVector &trial_displacement() const { return trial_u; }
 
+    /// A uniform load along the member (local axes, per unit length, at load
+    /// factor 1; see above). Not on a corotational member.
+    void set_uniform_load(const MemberLoad<dim> &w);
+    const MemberLoad<dim> &uniform_load() const { return load; }
+    bool                   loaded() const { return has_load; }
+    /// The factor of the uniform load from the next set_trial on; reset()
+    /// and the constructor leave it at 0.
+    void   set_load_factor(const double lambda) { load_factor = lambda; }
+    double current_load_factor() const { return load_factor; }
+
     void commit();
     void revert();
     void reset();
@@ -126,6 +187,11 @@ namespace poundfe
     virtual void commit_basic() {}
     virtual void revert_basic() {}
     virtual void reset_basic() {}
+    /// Whether the sections carry the uniform load (force-based: s_p), or
+    /// the fixed-end forces q0 are added to q (displacement-based).
+    virtual bool sections_carry_load() const { return false; }
+    /// The sections' forces s_p at point i of the uniform load at factor 1.
+    ResultantVector particular_forces(unsigned int i) const;
 
     struct State
     {
@@ -139,8 +205,13 @@ namespace poundfe
     BeamIntegration                          rule;
     std::vector<std::unique_ptr<SectionLaw>> sections;
     std::string                              why;
+    MemberLoad<dim>                          load = MemberLoad<dim>::Zero();
+    bool                                     has_load    = false;
+    double                                   load_factor = 0;
 
   private:
+    UniformLoadForces<dim> load_forces{};   // at factor 1
+    GlobalVector           load_reactions; // p0 in global components, at factor 1
     State        trial, committed;
     GlobalVector trial_u, committed_u;
     GlobalMatrix virgin_stiffness;
@@ -225,22 +296,30 @@ namespace poundfe
       initialised = false;
     }
     void reset_basic() override;
+    bool sections_carry_load() const override { return true; }
 
   private:
     /// The element's state between trials: the compatible v, q, F^-1, and
-    /// at each point e_i, s_i, f_s,i.
+    /// at each point e_i, s_i, f_s,i; the load factor it is compatible at.
     struct IterationState
     {
       BasicVector                  v, q;
+      double                       factor = 0;
       BasicMatrix                  kv;
       std::vector<ResultantVector> e, s;
       std::vector<ResultantMatrix> fs;
     };
-    /// Iterate from `current` to compatibility with `target`; false (and
-    /// `current` spoiled) when it does not converge. `initial`: the
-    /// sections' deformations corrected by their initial flexibility (ten
-    /// times the iterations), OpenSees's fallback.
-    bool iterate(const BasicVector &target, bool initial);
+    /// Iterate from `current` to compatibility with `target` at the load
+    /// factor `target_factor`; false (and `current` spoiled) when it does
+    /// not converge. `initial`: the sections' deformations corrected by
+    /// their initial flexibility (ten times the iterations), OpenSees's
+    /// fallback.
+    bool iterate(const BasicVector &target, double target_factor, bool initial);
+    /// b_i q + lambda s_p,i: the forces section i must carry.
+    ResultantVector section_forces(unsigned int i, const BasicVector &q, double factor) const;
+    /// lambda^2 sum_i w_i L |s_p,i . f_s,i s_p,i|: the load's share of the
+    /// tolerance's energy scale (0 without a load).
+    double load_energy(double factor) const;
     /// f_s from the section's tangent, its small diagonal raised.
     ResultantMatrix flexibility(unsigned int i) const;
     /// OpenSeesIteration's state determination.

@@ -17,6 +17,8 @@
 // Rayleigh or modal C. Its work is trapezoidal, its stored energy what
 // unloading the sections at their initial stiffness recovers, so the
 // energy balance books its dissipation as hysteretic (as a hinge's).
+// A member's self-weight (Member::weight_per_length) is a uniform load along
+// it (elements/beam_column.h), its factor that of the gravity analysis.
 // The mass (member_mass) is the elastic frame elements' consistent or
 // lumped mass over the flexible length, carried to the nodes by the rigid
 // offsets.
@@ -68,6 +70,7 @@ namespace poundfe
     Eigen::MatrixXd tangent_basis() const override;
     bool            has_symmetric_tangent() const override;
 
+    void   set_load_factor(const double lambda) override { beam->set_load_factor(lambda); }
     bool   set_trial(const LocalVector &u, const LocalVector &v) override;
     void   force_correction(LocalVectorOut f) const override;
     void   tangent_change(double damping_factor, LocalMatrixOut d) const override;
@@ -110,6 +113,17 @@ namespace poundfe
   /// Its element on the model DOFs it moves with (Member3D::dofs, map).
   std::unique_ptr<MemberElement<3>> make_member_element(const Model &model,
                                                         const Member3D &member);
+
+  /// A member's self-weight (Member::weight_per_length, downwards: -y in
+  /// the plane, -z in space) in its local axes, per unit length.
+  MemberLoad<2> self_weight_load(const CrdTransformation<2> &transformation, double weight);
+  MemberLoad<3> self_weight_load(const CrdTransformation<3> &transformation, double weight);
+  /// The global end forces that hold an elastic member fixed at both ends
+  /// under its self-weight (fixed_end_forces; 0 without one): the
+  /// consistent nodal loads are their negative, its end forces K_e u_e plus
+  /// them.
+  Eigen::Matrix<double, 6, 1>  self_weight_end_forces(const Model &model, const Member &member);
+  Eigen::Matrix<double, 12, 1> self_weight_end_forces(const Member3D &member);
 
   /// The plane member's mass: mass per length m, the frame element's matrix.
   Eigen::Matrix<double, 6, 6> member_mass(const CrdTransformation<2> &transformation,

@@ -90,6 +90,10 @@ namespace poundfe
 
     /// The time at the end of the step about to be tried (before set_trial).
     virtual void set_trial_time(double) {}
+    /// The factor of the element's own loads (a member's self-weight) from
+    /// the next set_trial on: the gravity analysis's load factor, 1 once
+    /// it is done. Elements without loads ignore it.
+    virtual void set_load_factor(double) {}
     /// Evaluate the trial state at local displacements and velocities (0 on
     /// ground DOFs). Returns false when the element's own iteration fails;
     /// failure() then says why, and the trial state must not be used.

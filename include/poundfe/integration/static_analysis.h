@@ -3,8 +3,9 @@
 // by Newton-Raphson on the tangent K + sum_e B_e D_e B_e^T (D_e at c = 0:
 // the elements' static tangent; elements/nonlinear_element.h), velocities 0.
 // Load control (OpenSees's LoadControl + Newton): p = lambda p_ref with
-// lambda in equal steps to 1; a step that does not converge is halved, down
-// to a given number of cuts. Each accepted step commits the elements; the
+// lambda in equal steps to 1, and the elements' own loads (element loads:
+// a member's self-weight) at the same factor; a step that does not converge
+// is halved, down to a given number of cuts. Each accepted step commits the elements; the
 // sequence of committed displacements (the path) restores the same state in
 // a fresh set of elements (restore_static_state), which is how the gravity
 // state is handed to each time history: the elements are path dependent,
@@ -59,6 +60,9 @@ namespace poundfe
     /// The elements set to the trial u (v = 0), no residual formed; false
     /// when an element refuses it.
     bool set_state(const Vector &u);
+    /// The factor of the elements' own loads (a member's self-weight) from
+    /// the next trial on: load control's lambda (0 to 1).
+    void set_load_factor(double lambda);
     void commit();
     void revert();
     /// Why the last residual or newton failed (an element, a singular
@@ -83,8 +87,10 @@ namespace poundfe
   /// The state a load-controlled static analysis ends in.
   struct StaticState
   {
-    /// The committed displacements after each accepted step, in order.
+    /// The committed displacements after each accepted step, in order, and
+    /// the load factor of each (the elements' own loads follow it).
     std::vector<Vector> path;
+    std::vector<double> load_factors;
     /// The last of them (0 before any step).
     Vector displacement;
     unsigned int steps = 0, iterations = 0, cuts = 0;
@@ -157,8 +163,11 @@ namespace poundfe
   };
 
   /// Bring fresh (reset) elements to the state of `path`: each committed
-  /// displacement set as a trial at v = 0 and committed, in order.
-  void restore_static_state(const std::vector<Vector> &path, NonlinearElements &elements);
+  /// displacement set as a trial at v = 0 at its load factor and
+  /// committed, in order.
+  void restore_static_state(const std::vector<Vector> &path,
+                            const std::vector<double> &load_factors,
+                            NonlinearElements         &elements);
 } // namespace poundfe
 
 #endif

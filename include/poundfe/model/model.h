@@ -115,6 +115,11 @@ namespace poundfe
     /// A fibre member: `section` then holds the initial rigidities of its
     /// fibre section (E = 1, A = EA, I = EI) and its mass per length.
     FibreMember                 fibre;
+    /// Its self-weight as a uniform load along it, downwards (N/m; Building
+    /// <i>/Member self-weight = distributed): in the gravity analysis, an
+    /// element load of a fibre member, the consistent nodal loads of an
+    /// elastic one; its mass's weight then does not load its nodes. 0: none.
+    double                      weight_per_length = 0;
   };
 
   /// Shear-building storey: a horizontal spring and dashpot between floors.
@@ -209,6 +214,8 @@ namespace poundfe
     /// fibre section (E = G = 1, A = EA, Iz = EIz, Iy = EIy, J = GJ, no
     /// shear areas) and its mass per length.
     FibreMember                          fibre;
+    /// Its self-weight along it, along -z (N/m), as Member's.
+    double                               weight_per_length = 0;
   };
 
   /// A Bouc-Wen hinge of a 3D member end about one local bending axis: its

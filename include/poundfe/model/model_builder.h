@@ -24,10 +24,22 @@ namespace poundfe
   FibreMember fibre_member(const Model &model, const BuildingParameters &p,
                            unsigned int storey, bool column);
 
+  /// The beam-column of a mesh's members of group `group` (its index in
+  /// Group ids) on its Group sections entry (none for another member
+  /// model); PDelta columns as fibre_member's.
+  FibreMember group_fibre_member(const Model &model, const BuildingParameters &p,
+                                 unsigned int group, MemberKind kind);
+
   /// Member::section and Member3D::section of every fibre member from its
   /// section law's initial tangent (E = 1, A = EA, I = EI; in space also
   /// G = 1, J = GJ): what reads a member elastically.
   void set_fibre_rigidities(Model &model);
+
+  /// Member::weight_per_length and Member3D's of every member of a building
+  /// with Member self-weight = distributed: Member unit weight times its
+  /// area (a fibre member's: its section's fibres), or its mass per length
+  /// times Gravity when the unit weight is 0. Before set_fibre_rigidities.
+  void set_member_self_weights(Model &model, const ModelParameters &parameters);
 
   /// The building (0-based) that the field `token` of `entry` names: its
   /// number, 1-based (a field that is a whole number is always a number),

@@ -69,10 +69,16 @@ namespace poundfe
     unsigned int             integration_points = 5;
     std::string              member_transformation = "auto"; // |Linear|PDelta
     std::vector<std::string> column_sections, beam_sections; // one or per storey (floor)
+    std::vector<std::string> group_sections; // a mesh's: one or per Group ids entry
     /// finalize_member_model: the Sections index of each storey's columns
-    /// and beams (fibre buildings; empty otherwise).
-    std::vector<unsigned int> column_section_index, beam_section_index;
+    /// and beams, of each mesh group (fibre buildings; empty otherwise).
+    std::vector<unsigned int> column_section_index, beam_section_index, group_section_index;
     bool fibre() const { return member_model == "fibre"; }
+    /// The members' weight in the gravity analysis: nodal (their mass's
+    /// weight at their nodes) or distributed (a uniform load along each,
+    /// unit weight times area, or the mass's weight when the unit weight is 0).
+    std::string member_self_weight = "nodal"; // |distributed
+    double      member_unit_weight = 0;       // N/m^3
 
     // 3D frames (Model/Dimension = 3): bays along y, the sections' second
     // axis and twist (Column I, Beam I: bending in the frame's vertical
@@ -170,6 +176,10 @@ namespace poundfe
     /// (model/member_model_parameters.cc). Throws InputError.
     void finalize_member_model(const InputFile &input, const std::string &section,
                                const ModelParameters &model);
+    /// Member self-weight and Member unit weight against the gravity
+    /// analysis (model/member_model_parameters.cc). Throws InputError.
+    void finalize_self_weight(const InputFile &input, const std::string &section,
+                              const ModelParameters &model) const;
 
   private:
     // declare()'s groups, in the order print_parameters shows them

@@ -5,8 +5,9 @@
 // resists a positive drift:
 //   frames:  V_i = -sum over the elements crossing the cut of f_x at their
 //            lower node, with f = K_e u_e the element's end forces in
-//            global axes (no distributed load acts on an element, so the
-//            shear is the same anywhere along it);
+//            global axes (a distributed self-weight is vertical: along a
+//            vertical column it changes N alone, so the shear is the same
+//            anywhere along it);
 //   shear buildings: V_i = F_i + c_i d'_i, the storey spring (k_i d_i, or
 //            the Bouc-Wen force) plus the storey dashpot.
 // The base shear is V_1. Rayleigh damping forces are not element forces:
@@ -26,9 +27,10 @@
 // V_x is the storey shear above (as in 2D, along x).
 // Member end forces are the local (N, V, M) at both ends of a whole member
 // (its first and last element when it is split), Przemieniecki (1968) ch. 5;
-// a 3D member's the local (N, Vy, Vz, T, My, Mz) at both ends. A fibre
-// member's are its element's resisting forces (not K_e u, wrong once it
-// cracks).
+// a 3D member's the local (N, Vy, Vz, T, My, Mz) at both ends; an elastic
+// member's K_e u plus the fixed-end forces of its distributed self-weight. A
+// fibre member's are its element's resisting forces (not K_e u, wrong once it
+// cracks; its self-weight included).
 #ifndef poundfe_output_storey_forces_h
 #define poundfe_output_storey_forces_h
 
