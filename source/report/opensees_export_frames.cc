@@ -111,6 +111,18 @@ namespace poundfe::opensees_export
   void
   refuse_frame_parts(const Analysis &analysis, const InputFile &input)
   {
+    const auto self_weight = [&](const unsigned int building) {
+      input.fail(building_entry(building, "Member self-weight"),
+                 "export-opensees writes no element loads: a distributed self-weight would be "
+                 "eleLoad -beamUniform on every member, which poundfe opensees does not take "
+                 "on force-based members (use Member self-weight = nodal)");
+    };
+    for (const Member &member : analysis.model.members)
+      if (member.weight_per_length != 0)
+        self_weight(member.building);
+    for (const Member3D &member : analysis.model.members_3d)
+      if (member.weight_per_length != 0)
+        self_weight(member.building);
     for (const Hinge &hinge : analysis.model.hinges)
       if (hinge.law.A != 1)
         input.fail(building_entry(hinge.building, "Bouc-Wen/A"),
