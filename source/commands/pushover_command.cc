@@ -19,10 +19,12 @@
 #include <poundfe/output/plots.h>
 #include <poundfe/report/run_summary.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <ostream>
 #include <sstream>
+#include <string>
 
 namespace poundfe
 {
@@ -107,31 +109,37 @@ namespace poundfe::commands
       bool                has_n2 = false, has_asce41 = false;
       N2Target            n2;
       Asce41Target        asce41;
+      std::string         asce41_missing; // why ASCE 41 asked for has no target
     };
+
+    /// Why the coefficient method cannot run on the curve (d, V) of `r`;
+    /// empty where it can.
+    std::string
+    asce41_missing(const std::vector<double> &d, const std::vector<double> &V,
+                   const PushoverResult &r, const DesignSpectrum target)
+    {
+      if (target == DesignSpectrum::none)
+        return "no Spectrum/Target";
+      if (d.size() < 2 || !(d.back() > 0))
+        return "the push does not move the control node forward";
+      if (!(r.first_period > 0))
+        return "the control building's first period is not positive";
+      const auto first_step = std::find_if(d.begin(), d.end(), [](const double x) { return x > 0; });
+      if (!(V[first_step - d.begin()] > 0))
+        return "the curve's first step has no positive stiffness";
+      return "";
+    }
 
     Capacity
     capacity_of(const InputParameters &input, const PushoverResult &r)
     {
       Capacity c;
       control_curve(r, input.pushover.control_building - 1, c.d, c.V);
-      if (c.d.size() < 2)
-        return c;
-      std::vector<double> d_star, F_star;
-      for (unsigned int i = 0; i < c.d.size(); ++i)
-        {
-          d_star.push_back(c.d[i] / r.gamma);
-          F_star.push_back(c.V[i] / r.gamma);
-        }
-      c.ec8 = ec8_bilinear(d_star, F_star);
       const SpectrumParameters &s = input.spectrum;
       const auto spectrum = [&s](const double period) { return s.target_psa(0.05, period); };
-      if (s.target == DesignSpectrum::none || !(c.ec8.yield_force > 0))
-        return c;
-      c.has_n2 = input.pushover.n2() && c.ec8.yield_displacement > 0;
-      if (c.has_n2)
-        c.n2 = ec8_n2_target(c.ec8, r.equivalent_mass, r.gamma, spectrum,
-                             ec8_ground_parameters(s.target, s.ground_type).TC);
-      c.has_asce41 = input.pushover.asce41() && c.d.back() > 0 && r.first_period > 0;
+      if (input.pushover.asce41())
+        c.asce41_missing = asce41_missing(c.d, c.V, r, s.target);
+      c.has_asce41 = input.pushover.asce41() && c.asce41_missing.empty();
       if (c.has_asce41)
         {
           Asce41Building building;
@@ -142,6 +150,21 @@ namespace poundfe::commands
           building.site_class     = input.pushover.site_class;
           c.asce41                = asce41_target(c.d, c.V, building, spectrum);
         }
+      if (c.d.size() < 2)
+        return c;
+      std::vector<double> d_star, F_star;
+      for (unsigned int i = 0; i < c.d.size(); ++i)
+        {
+          d_star.push_back(c.d[i] / r.gamma);
+          F_star.push_back(c.V[i] / r.gamma);
+        }
+      c.ec8 = ec8_bilinear(d_star, F_star);
+      if (s.target == DesignSpectrum::none || !(c.ec8.yield_force > 0))
+        return c;
+      c.has_n2 = input.pushover.n2() && c.ec8.yield_displacement > 0;
+      if (c.has_n2)
+        c.n2 = ec8_n2_target(c.ec8, r.equivalent_mass, r.gamma, spectrum,
+                             ec8_ground_parameters(s.target, s.ground_type).TC);
       return c;
     }
 
@@ -152,6 +175,7 @@ namespace poundfe::commands
     {
       const Asce41Bilinear &b = t.bilinear;
       json.begin_object("asce41")
+        .value("computed", true)
         .value("site_class", site_class_names().name(p.site_class))
         .value("site_factor_a", asce41_site_factor(p.site_class))
         .value("seismic_mass_kg", r.building_mass)
@@ -188,8 +212,18 @@ namespace poundfe::commands
         out << "ASCE 41: the target lies beyond the push (" << r.points.back().control_displacement
             << " m): raise Pushover/Target drift\n";
       if (!t.converged)
-        out << "ASCE 41: the target and its idealisation did not settle in " << t.iterations
-            << " iterations\n";
+        out << "ASCE 41: no fixed point of the target and its idealisation within the push: "
+            << "delta_t - Delta_d jumps across zero at Delta_d = " << b.end_displacement
+            << " m; the target given is delta_t there\n";
+    }
+
+    /// summary.json's "asce41" and a line of the report where ASCE 41 was
+    /// asked for but has no target.
+    void
+    write_asce41_missing(JsonWriter &json, const std::string &why, std::ostream &out)
+    {
+      json.begin_object("asce41").value("computed", false).value("why", why).end_object();
+      out << "ASCE 41 target displacement: not computed (" << why << ")\n";
     }
 
     /// summary.json's "capacity": the idealisation and the targets asked for.
@@ -198,7 +232,15 @@ namespace poundfe::commands
                    const Capacity &c, std::ostream &out)
     {
       if (c.d.size() < 2)
-        return;
+        {
+          if (!c.asce41_missing.empty())
+            {
+              json.begin_object("capacity");
+              write_asce41_missing(json, c.asce41_missing, out);
+              json.end_object();
+            }
+          return;
+        }
       json.begin_object("capacity")
         .value("gamma", r.gamma)
         .value("equivalent_mass_kg", r.equivalent_mass)
@@ -222,6 +264,8 @@ namespace poundfe::commands
         }
       if (c.has_asce41)
         write_asce41(json, p, r, c.asce41, out);
+      else if (!c.asce41_missing.empty())
+        write_asce41_missing(json, c.asce41_missing, out);
       json.end_object();
     }
 

@@ -1,5 +1,13 @@
 // The coefficient method of ASCE/SEI 41-17 §7.4.3.3 and its bilinear
-// idealisation §7.4.3.2.4 (dynamics/asce41_target.h).
+// idealisation §7.4.3.2.4 (dynamics/asce41_target.h, which states the
+// equations). Delta_d is the fixed point of Delta_d = min(delta_t(Delta_d),
+// Delta at the largest base shear), to 1e-10 of the latter: plain iteration
+// first (20 steps), then, where it cycles (jagged curves), a root of the
+// mismatch g = min(delta_t, peak) - Delta_d, bracketed on 64 samples from the
+// peak down and bisected (the root nearest the peak). `converged` is false
+// only where every bracket closes on a jump of g (no fixed point found);
+// `iterations` counts the evaluations of delta_t. A curve straight to
+// Delta_d (V_y = V_d, no yield) is elastic response: C1 = C2 = 1 (7.4.3.3.2).
 #include <poundfe/dynamics/asce41_target.h>
 
 #include <deal.II/base/exceptions.h>
@@ -48,9 +56,22 @@ namespace poundfe
       return d.back();
     }
 
+    /// Whether the curve is straight from the origin to `end` (each point
+    /// before it within 1e-6 of V(end) of the chord: round-off and the
+    /// solver's tolerance, not a bend).
+    bool
+    straight_to(const std::vector<double> &d, const std::vector<double> &V, const double end)
+    {
+      const double end_force = asce41_force_at(d, V, end);
+      for (unsigned int i = 1; i < d.size() && d[i] < end; ++i)
+        if (std::abs(V[i] - end_force * d[i] / end) > 1e-6 * std::abs(end_force))
+          return false;
+      return true;
+    }
+
     /// K_e, T_e, S_a, mu_strength, C1, C2 and delta_t of the idealisation in t.
     void
-    evaluate_target(Asce41Target &t, const Asce41Building &building,
+    evaluate_target(Asce41Target &t, const bool straight, const Asce41Building &building,
                     const std::function<double(double)> &spectrum)
     {
       const Asce41Bilinear &b = t.bilinear;
@@ -59,8 +80,12 @@ namespace poundfe
       t.spectral_acceleration = spectrum(t.effective_period);
       t.mass_factor           = t.effective_period > 1.0 ? 1.0 : building.mass_factor;
       t.strength_ratio        = t.spectral_acceleration * building.mass * t.mass_factor / b.yield_force;
+      // straight to Delta_d (V_y = V_d): elastic response, no strength
+      // ratio above 1, whatever C_m W / M_1 makes of S_a M C_m / V_d
+      // (7.4.3.3.2); a curve that stiffens is not elastic for this
       const Asce41Coefficients c =
-        asce41_coefficients(t.strength_ratio, t.effective_period, building.site_class);
+        straight ? Asce41Coefficients() :
+                    asce41_coefficients(t.strength_ratio, t.effective_period, building.site_class);
       t.c0     = building.c0;
       t.c1     = c.c1;
       t.c2     = c.c2;
@@ -122,6 +147,58 @@ namespace poundfe
             }
         }
       return closest;
+    }
+
+    /// Bisects g on [low, high] (g(low) > 0 > g(high)) until |g| <=
+    /// `tolerance` (true) or the bracket closes on a jump of g (false, the
+    /// bracket left around it).
+    bool
+    bisect_bracket(const std::function<double(double)> &g, double &low, double &high,
+                   const double tolerance)
+    {
+      while (high - low > 4 * std::numeric_limits<double>::epsilon() * high)
+        {
+          const double middle = 0.5 * (low + high);
+          const double value  = g(middle);
+          if (std::abs(value) <= tolerance)
+            return true;
+          (value > 0 ? low : high) = middle;
+        }
+      return false;
+    }
+
+    /// A root of the fixed-point mismatch g(Delta_d) = min(delta_t, peak) -
+    /// Delta_d (`g` also leaves the target evaluated at its argument), g
+    /// negative at the peak: 64 samples from the peak down to 1e-12 of it,
+    /// each step from g <= 0 above to g > 0 below bisected in turn, the
+    /// first root found (the one nearest the peak) kept. False where every
+    /// such step closes on a jump of g instead (no fixed point found), the
+    /// target then evaluated at the highest jump.
+    bool
+    search_fixed_point(const std::function<double(double)> &g, const double peak,
+                       const double tolerance)
+    {
+      const unsigned int n_samples = 64;
+      double             above = peak, jump = 0;
+      for (unsigned int k = n_samples; k-- > 0;)
+        {
+          const double x     = k > 0 ? peak * k / n_samples : 1e-12 * peak;
+          const double value = g(x);
+          if (std::abs(value) <= tolerance)
+            return true;
+          if (value <= 0)
+            above = x;
+          else if (above > x)
+            {
+              double low = x;
+              if (bisect_bracket(g, low, above, tolerance))
+                return true;
+              jump  = jump > 0 ? jump : above;
+              above = 0; // the next bracket starts at the next g <= 0
+            }
+        }
+      g(jump > 0 ? jump : 1e-12 * peak);
+      return false;
     }
   } // namespace
 
@@ -232,16 +309,24 @@ namespace poundfe
     for (unsigned int i = 0; i < d.size(); ++i)
       if (V[i] >= (1 - 1e-6) * peak)
         peak_displacement = d[i];
-    double       end               = peak_displacement;
-    while (t.iterations < 100 && !t.converged)
+    const auto mismatch = [&](const double end) {
+      ++t.iterations;
+      t.bilinear = asce41_bilinear(d, V, end);
+      evaluate_target(t, straight_to(d, V, end), building, spectrum);
+      return std::min(t.target, peak_displacement) - end;
+    };
+    const double tolerance = 1e-10 * peak_displacement;
+    // plain iteration settles within a few steps on a smooth curve ...
+    double end = peak_displacement;
+    for (unsigned int i = 0; i < 20 && !t.converged; ++i)
       {
-        ++t.iterations;
-        t.bilinear = asce41_bilinear(d, V, end);
-        evaluate_target(t, building, spectrum);
-        const double next = std::min(t.target, peak_displacement);
-        t.converged       = std::abs(next - end) <= 1e-10 * peak_displacement;
-        end               = next;
+        const double g = mismatch(end);
+        t.converged    = std::abs(g) <= tolerance;
+        end += t.converged ? 0 : g;
       }
+    // ... but can cycle on a jagged one: bracket and bisect g instead
+    if (!t.converged)
+      t.converged = search_fixed_point(mismatch, peak_displacement, tolerance);
     t.beyond_curve = t.target > d.back();
     check_strength_degradation(t, d, V);
     return t;

@@ -85,7 +85,7 @@ assert c["target_displacement_m"] > 0, c
 # ASCE 41 (Target method = both): its equation 7-28 from the reported terms
 import math
 a = c["asce41"]
-assert a["C0"] > 1 and a["C1"] >= 1 and a["C2"] >= 1 and a["converged"], a
+assert a["computed"] is True and a["C0"] > 1 and a["C1"] >= 1 and a["C2"] >= 1 and a["converged"], a
 assert a["effective_period_s"] >= a["initial_period_s"] and a["site_class"] == "D", a
 assert 0 < a["yield_base_shear_N"] <= s["peak_base_shear_N"] * (1 + 1e-12), a
 t = a["C0"] * a["C1"] * a["C2"] * a["spectral_acceleration_m_s2"] * (a["effective_period_s"] / (2 * math.pi)) ** 2

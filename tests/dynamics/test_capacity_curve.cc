@@ -338,4 +338,104 @@ BOOST_AUTO_TEST_CASE(asce41_strength_degradation_to_sixty_percent)
   BOOST_TEST(t.exceeds_strength_limit == (t.strength_ratio > t.max_strength_ratio));
 }
 
+// The fixed point on jagged curves (a drop, then stiffening, as on member
+// failure and contact), where plain iteration of Delta_d cycles between two
+// values: under a constant S_a, site D, the mismatch g(D) = min(delta_t(D),
+// peak) - D is scanned here on 20 000 points of (0, peak] (delta_t from the
+// idealisation asce41_bilinear, checked by hand above, and T_e, mu_strength,
+// C1, C2 and 7-28 written here), each sign change without a jump bisected
+// to a root; the program's Delta_d must be one of them to 1e-8 of the peak
+// displacement, a true fixed point (|delta_t - Delta_d| <= 1e-10 of it,
+// its own stop) and within the push (no "beyond").
+BOOST_AUTO_TEST_CASE(asce41_target_is_a_true_fixed_point_on_jagged_curves)
+{
+  struct Case
+  {
+    std::vector<double> d, V;
+    double              Ti, C0, mass, Cm, Sa;
+  };
+  const std::vector<Case> cases{
+    {{0.0, 0.013037747610539649, 0.02848519689986699, 0.030812315052643834, 0.0500867123911902, 0.06928998558742985, 0.0782063934855419, 0.08812809986100766},
+     {0.0, 53652.55299285121, 115135.5389128925, 218704.24121355868, 208988.51624613663, 267900.1328844745, 311157.7851374999, 457997.1812700605},
+     0.44046632114401163, 1.4417588078262087, 131959.71153623355, 0.7638584733109565,
+     10.943459883634935},
+    {{0.0, 0.019309236436023867, 0.03401090390129667, 0.050008302078401665, 0.06513106672543106, 0.06719030323636176, 0.08307382778541694, 0.09734157597278684, 0.10479732274193912, 0.10662730174639475, 0.11434001426220025, 0.12585231817237533, 0.1337073142084453, 0.14575204406688425, 0.15429686652228877, 0.16850461600444824, 0.1872930042752963, 0.18857796029561877, 0.2013328129427269, 0.21773292003397912, 0.21919095281598872, 0.22890296853269862, 0.245229840658125, 0.2592274691956602, 0.2675090257837696, 0.2749954224380521, 0.2766133666205901, 0.2871206401055105, 0.3037098608115355, 0.3203826156949064},
+     {0.0, 56225.29776679683, 215989.4459754796, 73810.58289167142, 70034.57211954058, 10963.932779113538, 205566.7245081093, 239157.82299582605, 165904.44970928, 147458.06072116797, 336261.85236243263, 272067.9228955887, 379023.49902453815, 452910.1575562766, 629436.4394535273, 712625.1074841055, 702903.2919173358, 785762.6162043964, 822794.235478339, 950224.1038376616, 974543.496524347, 1202055.1733262737, 1222565.0234898215, 1297034.7619012066, 1262430.166611319, 1305804.2578794588, 1339428.9073144167, 1387346.8571836094, 1508053.2419236898, 1485654.5853157088},
+     1.1461417706900123, 1.2976934407904306, 26492.51329147618, 0.9464917508145333,
+     5.490167876893021}};
+  for (const Case &c : cases)
+    {
+      const std::vector<double> &d = c.d, &V = c.V;
+      const double peak_at = d[std::max_element(V.begin(), V.end()) - V.begin()];
+      const double Ki      = V[1] / d[1];
+      const auto   g       = [&](const double D) {
+        const Asce41Bilinear b  = asce41_bilinear(d, V, D);
+        const double         Te = c.Ti * std::sqrt(Ki / b.effective_stiffness);
+        const double mu = D <= d[1] ? 1.0 : c.Sa * c.mass * (Te > 1 ? 1.0 : c.Cm) / b.yield_force;
+        const double excess = std::max(mu, 1.0) - 1;
+        const double C1 = Te > 1.0 ? 1.0 : 1 + excess / (60 * std::pow(std::max(Te, 0.2), 2));
+        const double C2 = Te > 0.7 ? 1.0 : 1 + std::pow(excess / Te, 2) / 800;
+        return std::min(c.C0 * C1 * C2 * c.Sa * std::pow(Te / (2 * M_PI), 2), peak_at) - D;
+      };
+      std::vector<double> roots;
+      const unsigned int  n = 20000;
+      for (unsigned int k = 1; k < n; ++k)
+        {
+          double low = peak_at * k / n, high = peak_at * (k + 1) / n;
+          if ((g(low) > 0) == (g(high) > 0))
+            continue;
+          const bool rising = g(high) > 0;
+          for (unsigned int i = 0; i < 60; ++i)
+            ((g(0.5 * (low + high)) > 0) != rising ? low : high) = 0.5 * (low + high);
+          if (std::abs(g(low)) <= 1e-9 * peak_at)
+            roots.push_back(low);
+        }
+      BOOST_REQUIRE(!roots.empty());
+      Asce41Building building;
+      building.initial_period = c.Ti;
+      building.c0             = c.C0;
+      building.mass           = c.mass;
+      building.mass_factor    = c.Cm;
+      building.site_class     = SiteClass::D;
+      const Asce41Target t    = asce41_target(d, V, building, [&c](double) { return c.Sa; });
+      const double       D    = t.bilinear.end_displacement;
+      BOOST_TEST_CONTEXT("peak at " << peak_at << ", " << roots.size() << " roots from "
+                                    << roots.front() << ", Delta_d " << D)
+      {
+        BOOST_TEST(t.converged);
+        BOOST_TEST(std::abs(t.target - D) <= 1e-10 * peak_at);
+        BOOST_TEST(std::any_of(roots.begin(), roots.end(),
+                               [&](const double r) { return std::abs(r - D) <= 1e-8 * peak_at; }));
+        BOOST_TEST(!t.beyond_curve);
+        BOOST_TEST(t.target < peak_at);
+      }
+    }
+}
+
+// An elastic building (the curve straight to the target and beyond): no
+// yield, so C1 = C2 = 1 although S_a M C_m / V_d is well above 1, and
+// delta_t = C0 S_a(T_i) T_i^2 / 4 pi^2 (T_e = T_i: K_e is the curve's
+// slope), to 1e-12 (round-off of the secants).
+BOOST_AUTO_TEST_CASE(asce41_an_elastic_building_is_not_amplified)
+{
+  const double              k = 1e7;
+  const std::vector<double> d{0, 0.01, 0.02, 0.05, 0.1}, V{0, 0.01 * k, 0.02 * k, 0.05 * k, 0.1 * k};
+  Asce41Building            building;
+  building.initial_period = 0.3;
+  building.c0             = 1.25;
+  building.mass           = 1e5;
+  building.mass_factor    = 1;
+  building.site_class     = SiteClass::D;
+  const Asce41Target t       = asce41_target(d, V, building, se_type1_c);
+  const double       elastic = 1.25 * se_type1_c(0.3) * std::pow(0.3 / (2 * M_PI), 2);
+  BOOST_REQUIRE(elastic < 0.1);
+  BOOST_TEST(t.converged);
+  BOOST_TEST(t.bilinear.elastic);
+  BOOST_TEST(t.strength_ratio > 2); // what C1 and C2 would have amplified
+  BOOST_TEST(t.c1 == 1.0);
+  BOOST_TEST(t.c2 == 1.0);
+  BOOST_TEST(t.effective_period == 0.3, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(t.target == elastic, boost::test_tools::tolerance(1e-12));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
