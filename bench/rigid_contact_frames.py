@@ -16,7 +16,9 @@ two runs ending CALLGRIND_ENDS apart over their difference in steps: the set-up 
   bench/rigid_contact_frames.py [INPUT] [--callgrind]
   POUNDFE (binary, default build/poundfe), WORK (default /tmp/rigid_contact_frames),
   PENALTY_STEPS (default 1e-3,5e-4,2.5e-4,1.25e-4), END (End time, default: the input's),
-  STIFFNESS (Contact/Stiffness of the penalty law, default: the input's)"""
+  STIFFNESS (Contact/Stiffness of the penalty law, default: the input's), SAMPLE (a generated
+  motion's Sample interval, default 0.01 s: its white noise is otherwise drawn at the time
+  step, a different record at each step)"""
 import json, os, re, subprocess, sys
 
 BIN = os.environ.get('POUNDFE', 'build/poundfe')
@@ -29,6 +31,7 @@ PENALTY_STEPS = [float(h) for h in os.environ.get(
     'PENALTY_STEPS', '1e-3,5e-4,2.5e-4,1.25e-4').split(',')]
 END = os.environ.get('END')
 STIFFNESS = os.environ.get('STIFFNESS')
+SAMPLE = os.environ.get('SAMPLE', '0.01')
 CALLGRIND_ENDS = (2.0, 3.0)
 
 
@@ -44,6 +47,8 @@ def set_in(text, section, name, value):
 
 def prm(name, h, nonsmooth, end=None):
     text = set_in(BASE, 'Time integration', 'Time step', h)
+    if 'subsection Stochastic\n' in text:  # the same record at every step
+        text = set_in(text, 'Stochastic', 'Sample interval', SAMPLE)
     text = set_in(text, 'Contact', 'Steps per contact', 0)
     text = set_in(text, 'Contact', 'Event refinement', 0)
     if STIFFNESS:

@@ -25,6 +25,18 @@
 
 namespace poundfe
 {
+  namespace
+  {
+    /// Whether any element but the gaps (which the contacts replace) is
+    /// nonlinear: else the step's equations are linear, one iteration.
+    bool
+    has_smooth_nonlinearity(const NonlinearElements &elements)
+    {
+      return std::any_of(elements.begin(), elements.end(),
+                         [](const NonlinearElement &e) { return e.kind != ElementKind::gap; });
+    }
+  } // namespace
+
   std::string
   unilateral_contacts(const Model &model, const NonlinearElements &elements,
                       const double restitution, std::vector<UnilateralContact> &contacts)
@@ -410,9 +422,7 @@ namespace poundfe
     for (unsigned int c = 0; c < contact_list.size(); ++c)
       if (gap(c, u) + h * normal_velocity(c, v) <= 0)
         active.push_back(c);
-    bool smooth_nonlinear = false;
-    for (unsigned int e = 0; e < n_elements; ++e)
-      smooth_nonlinear = smooth_nonlinear || (*elements)[e].kind != ElementKind::gap;
+    const bool smooth_nonlinear = elements && has_smooth_nonlinearity(*elements);
     const Eigen::MatrixXd rows = active_rows(active); // H's, and T's with friction
     Vector       v_end = v, impulse = Vector::Zero(rows.rows());
     double       last_change = std::numeric_limits<double>::infinity();
