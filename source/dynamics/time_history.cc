@@ -72,6 +72,9 @@ namespace poundfe
                                                       time_integration.restitution, contacts);
           !why.empty())
         input.fail("Contact/Model", "nonsmooth " + why);
+      if (const std::string why = MoreauJeanIntegrator::unsupported(analysis.system, contacts);
+          !why.empty())
+        input.fail("Contact/Model", "nonsmooth " + why);
       if (moreau_jean.friction_coefficient > 0)
         for (UnilateralContact &contact : contacts)
           {

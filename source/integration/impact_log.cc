@@ -38,6 +38,7 @@ namespace poundfe
       return;
     Impact &impact = log[open[h]];
     impact.impulse += 0.5 * (a.force + b.force) * dt;
+    impact.tangential_impulse += 0.5 * (a.tangential_force + b.tangential_force) * dt;
     impact.bumper    = impact.bumper || b.phase == bumper_contact;
     impact.structure = impact.structure || b.phase == structure_contact;
     if (b.force > impact.peak_force)
@@ -78,7 +79,7 @@ namespace poundfe
   void
   ImpactLog::merge(const RankMerge &ranks)
   {
-    constexpr unsigned int n_numbers = 14; // per impact, in the order below
+    constexpr unsigned int n_numbers = 15; // per impact, in the order below
     std::vector<double>    numbers;
     numbers.reserve(n_numbers * log.size());
     for (const Impact &i : log)
@@ -86,7 +87,7 @@ namespace poundfe
                      {double(i.element), i.start_time, i.max_penetration_time, i.end_time,
                       i.approach_velocity, i.separation_velocity, i.max_penetration, i.peak_force,
                       i.impulse, i.point[0], i.point[1], double(i.bumper), double(i.structure),
-                      i.step_start});
+                      i.step_start, i.tangential_impulse});
     ranks.concatenated(numbers);
     log.clear();
     std::fill(open.begin(), open.end(), -1);
@@ -107,6 +108,7 @@ namespace poundfe
         i.bumper               = x[11] != 0;
         i.structure            = x[12] != 0;
         i.step_start           = x[13];
+        i.tangential_impulse   = x[14];
         log.push_back(i);
       }
     // one process opens the impacts of a step in the order of the elements

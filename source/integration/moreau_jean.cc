@@ -19,11 +19,24 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 namespace poundfe
 {
+  namespace
+  {
+    /// Whether any element but the gaps (which the contacts replace) is
+    /// nonlinear: else the step's equations are linear, one iteration.
+    bool
+    has_smooth_nonlinearity(const NonlinearElements &elements)
+    {
+      return std::any_of(elements.begin(), elements.end(),
+                         [](const NonlinearElement &e) { return e.kind != ElementKind::gap; });
+    }
+  } // namespace
+
   std::string
   unilateral_contacts(const Model &model, const NonlinearElements &elements,
                       const double restitution, std::vector<UnilateralContact> &contacts)
@@ -68,15 +81,28 @@ namespace poundfe
     if (system.n_equations() > max_equations)
       return "takes models of up to " + std::to_string(max_equations) + " equations (this one has " +
              std::to_string(system.n_equations()) + ")";
-    for (unsigned int i = 0; i < system.n_equations(); ++i)
-      if (!(system.mass.coeff(i, i) > 0))
-        return "needs mass on every equation (a massless equation cannot take an impulse)";
     if (elements)
       for (const NonlinearElement &e : *elements)
         if (e.kind == ElementKind::member || e.kind == ElementKind::friction)
           return "does not take " +
                  std::string(e.kind == ElementKind::member ? "fibre members" : "friction") +
                  " yet (" + e.label + ")";
+    return {};
+  }
+
+  std::string
+  MoreauJeanIntegrator::unsupported(const LinearSystem                   &system,
+                                    const std::vector<UnilateralContact> &contacts)
+  {
+    for (const UnilateralContact &contact : contacts)
+      for (unsigned int i = 0; i < contact.equations.size(); ++i)
+        {
+          const int  equation = contact.equations[i];
+          const bool acts     = contact.in_plan || contact.coefficients[i] != 0;
+          if (equation >= 0 && acts && !(system.mass.coeff(equation, equation) > 0))
+            return "needs mass on the equations a contact acts on (an impulse needs inertia): "
+                   "gap " + contact.label + " acts on an equation without mass";
+        }
     return {};
   }
 
@@ -94,7 +120,13 @@ namespace poundfe
     Assert(unsupported(system, elements, parameters.max_equations).empty(),
            dealii::ExcMessage(unsupported(system, elements, parameters.max_equations)));
     Assert(parameters.theta >= 0.5 && parameters.theta <= 1, dealii::ExcMessage("theta"));
+    Assert(unsupported(system, contact_list).empty(),
+           dealii::ExcMessage(unsupported(system, contact_list)));
     mass      = Eigen::MatrixXd(system.mass);
+    for (unsigned int i = 0; i < n; ++i)
+      if (mass(i, i) > 0)
+        massive.push_back(i);
+    mass_factor.compute(mass(massive, massive));
     stiffness = Eigen::MatrixXd(system.stiffness);
     damping   = system.damping.size() > 0 ? Eigen::MatrixXd(system.damping) :
                                             Eigen::MatrixXd::Zero(n, n);
@@ -193,6 +225,15 @@ namespace poundfe
     return tangent;
   }
 
+  Vector
+  MoreauJeanIntegrator::inverse_mass(const Vector &x) const
+  {
+    const Vector reduced = mass_factor.solve(Vector(x(massive)));
+    Vector       result  = Vector::Zero(n);
+    result(massive)      = reduced;
+    return result;
+  }
+
   double
   MoreauJeanIntegrator::normal_velocity(const unsigned int a, const Vector &x) const
   {
@@ -264,6 +305,7 @@ namespace poundfe
     reset_state(n_elements, parameters.time_step);
     impulse_log.clear();
     unattached_loss = 0;
+    refactor        = true;
     impulses_last_step.assign(contact_list.size(), 0.0);
     initial_stored.assign(n_elements, 0.0);
     u          = u0;
@@ -279,7 +321,7 @@ namespace poundfe
         initial_stored[h] = (*elements)[h].stored_energy();
         work[h]           = initial_stored[h];
       }
-    a = mass.llt().solve(-smooth_start);
+    a = inverse_mass(-smooth_start);
     update_energy();
     balance.initial = balance.kinetic + balance.strain;
     energy_scale = max_balance_error = 0;
@@ -380,22 +422,21 @@ namespace poundfe
     for (unsigned int c = 0; c < contact_list.size(); ++c)
       if (gap(c, u) + h * normal_velocity(c, v) <= 0)
         active.push_back(c);
-    bool smooth_nonlinear = false;
-    for (unsigned int e = 0; e < n_elements; ++e)
-      smooth_nonlinear = smooth_nonlinear || (*elements)[e].kind != ElementKind::gap;
+    const bool smooth_nonlinear = elements && has_smooth_nonlinearity(*elements);
     const Eigen::MatrixXd rows = active_rows(active); // H's, and T's with friction
     Vector       v_end = v, impulse = Vector::Zero(rows.rows());
-    unsigned int k     = 0;
+    double       last_change = std::numeric_limits<double>::infinity();
+    unsigned int k           = 0;
     for (;; ++k)
       {
         if (k == parameters.newton_iterations)
           throw NumericalError("t = " + number_text(t1) + " s: Moreau-Jean's Newton did not " +
                                "converge in " + std::to_string(k) + " iterations");
-        const Vector    u_end    = u + h * ((1 - theta) * v + theta * v_end);
-        Eigen::MatrixXd jacobian = base_jacobian;
-        const Vector    s_end    = smooth_force(t1, u_end, v_end, load_end, &jacobian);
+        const Vector u_end  = u + h * ((1 - theta) * v + theta * v_end);
+        const Vector s_end  = smooth_force(t1, u_end, v_end, load_end, nullptr);
         const Vector residual = mass * (v_end - v) + h * (theta * s_end + (1 - theta) * smooth_start);
-        jacobian_factor.compute(jacobian);
+        if (refactor)
+          factor_jacobian(t1, u_end, v_end, load_end);
         const Vector v_free = v_end - jacobian_factor.solve(residual);
         Vector       v_next = v_free;
         impulse.setZero(rows.rows());
@@ -410,6 +451,9 @@ namespace poundfe
         if (!smooth_nonlinear ||
             change <= parameters.newton_tolerance * (v_end.norm() + parameters.velocity_scale))
           break;
+        // an older tangent that contracts the iteration too slowly is renewed
+        refactor    = change > max_contraction * last_change;
+        last_change = change;
       }
     stats.max_iterations = std::max(stats.max_iterations, k + 1);
     const Vector u_end   = u + h * ((1 - theta) * v + theta * v_end);
@@ -425,7 +469,7 @@ namespace poundfe
         }
     record_impulses(active, impulse, v_end, t1);
     const Vector hp = rows.transpose() * impulse;
-    a = (v_end - v - mass.llt().solve(hp)) / h;
+    a = (v_end - v - inverse_mass(hp)) / h;
     u = u_end;
     v = v_end;
     load_start   = load_end;
@@ -438,11 +482,22 @@ namespace poundfe
   }
 
   void
+  MoreauJeanIntegrator::factor_jacobian(const double t, const Vector &u_end, const Vector &v_end,
+                                        const Vector &load_end)
+  {
+    Eigen::MatrixXd jacobian = base_jacobian;
+    smooth_force(t, u_end, v_end, load_end, &jacobian);
+    jacobian_factor.compute(jacobian);
+    ++stats.refactorizations;
+    refactor = false;
+  }
+
+  void
   MoreauJeanIntegrator::record_impulses(const std::vector<unsigned int> &active,
                                         const Vector &impulse, const Vector &v_end,
                                         const double t_end)
   {
-    std::vector<double> this_step(contact_list.size(), 0.0);
+    std::vector<double> this_step(contact_list.size(), 0.0), tangential(contact_list.size(), 0.0);
     const unsigned int  per_contact = has_friction ? 2 : 1;
     for (unsigned int j = 0; j < active.size(); ++j)
       if (impulse[per_contact * j] > 0)
@@ -463,7 +518,8 @@ namespace poundfe
                                     (T.row(c).dot(v) + T.row(c).dot(v_end));
             }
           impulse_log.push_back(record);
-          this_step[c] = record.impulse;
+          this_step[c]  = record.impulse;
+          tangential[c] = record.tangential_impulse;
           if (contact_list[c].element >= 0)
             work[contact_list[c].element] += record.energy_lost;
           else
@@ -477,16 +533,23 @@ namespace poundfe
     // Its start is taken as touching (no penetration < 0): the log then puts
     // the impact at the step's start with the velocity before the jump, and
     // the release at the next step's start with the velocity after it.
+    // A contact in plan acts at the contact point of the step's start, where
+    // its rows H_a and T_a were taken.
     const double h = parameters.time_step;
     for (unsigned int c = 0; c < contact_list.size(); ++c)
       if (contact_list[c].element >= 0 && (this_step[c] > 0 || impulses_last_step[c] > 0))
         {
-          const double force = this_step[c] / h;
+          const double force = this_step[c] / h, tangential_force = tangential[c] / h;
           const double end_gap = gap(c, u_end); // infinite: a plan contact out of reach
+          std::array<double, 2> point{{std::nan(""), std::nan("")}};
+          if (contact_list[c].in_plan)
+            if (const PlanContactState state = plan_state(c, u); state.defined)
+              point = {{state.point.x, state.point.y}};
           impacts.record(contact_list[c].element, current_time, t_end,
-                         {std::max(-gap(c, u), 0.0), -normal_velocity(c, v), force},
+                         {std::max(-gap(c, u), 0.0), -normal_velocity(c, v), force, point, 0,
+                          tangential_force},
                          {std::isfinite(end_gap) ? -end_gap : 0.0, -normal_velocity(c, v_end),
-                          force});
+                          force, point, 0, tangential_force});
         }
     impulses_last_step = this_step;
   }

@@ -309,7 +309,7 @@ namespace poundfe
     std::string csv = "gap,buildings,level_m,start_time_s,max_penetration_time_s,end_time_s,"
                       "approach_velocity_m_s,separation_velocity_m_s,max_penetration_m,"
                       "peak_force_N,impulse_N_s" +
-                      std::string(model.dimension == 3 ? ",plan_x_m,plan_y_m,contact" : "") +
+                      std::string(model.dimension == 3 ? ",plan_x_m,plan_y_m,contact,tangential_impulse_N_s" : "") +
                       std::string(bumpers ? ",touched\n" : "\n");
     for (const Impact &impact : state.impact_log().impacts())
       {
@@ -327,7 +327,7 @@ namespace poundfe
             << impact.max_penetration << "," << impact.peak_force << "," << impact.impulse;
         if (model.dimension == 3)
           row << "," << impact.point[0] << "," << impact.point[1] << ","
-              << (gap.on_column ? "slab-column" : "slab-slab");
+              << (gap.on_column ? "slab-column" : "slab-slab") << "," << impact.tangential_impulse;
         if (bumpers) // which surface the impact reached
           row << "," << (impact.structure ? (impact.bumper ? "bumper+structure" : "structure") :
                                             "bumper");

@@ -14,7 +14,9 @@
 #     as k^(-2/5));
 #   - the run has an impact in plan, and its summary names the LCP solver;
 #   - with a Friction coefficient, summary.json names the fc2d solver and
-#     counts its problems, and the energy balance closes to 1e-9.
+#     counts its problems, and the energy balance closes to 1e-9;
+#   - impacts.csv of a block sliding along a wall: the contact point in
+#     plan, and a tangential impulse of μ times the normal one.
 # (Two corners closing within a fraction of the contact's duration, a flat
 # edge, are another matter: rigid contact takes them one step apart, a
 # penalty law as overlapping contacts; doc/verification.md.)
@@ -126,6 +128,30 @@ status=0
 [ "$status" = 2 ] || fail "lemke on the sticking block exited $status, not 2"
 grep -q "step [0-9]* .*F2D_LEMKE did not solve the friction-contact problem .*residual .* above the tolerance 1e-12" stick.err ||
   fail "lemke's failure not named: $(head -c 300 stick.err)"
+# impacts.csv of the sliding block (NSGS, before it sticks): each episode of
+# each corner of B against A's edge (x = 5 m, B's corners at y = ±2 m plus
+# its slide in +y of less than 0.25 m) has its contact point in plan and, B
+# sliding one way all along, a tangential impulse of μ = 0.3 times its
+# normal impulse (Coulomb's law on each step's impulses; the sum of the
+# steps keeps the ratio). Tolerance 1e-6 relative: the friction-contact
+# problem is solved to its residual 1e-12 of the program's measure.
+"$poundfe" run slide-stick.prm --set "Time integration/End time=0.5" --output slide > /dev/null \
+  2> slide.err || fail "sliding block exited $?: $(head -c 300 slide.err)"
+python3 - slide <<'PY' || fail "impacts.csv of the sliding block"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1] + "/impacts.csv")))
+assert rows, "no impacts"
+corners = set()
+for r in rows:
+    x, y = float(r["plan_x_m"]), float(r["plan_y_m"])
+    normal, tangential = float(r["impulse_N_s"]), float(r["tangential_impulse_N_s"])
+    assert abs(x - 5.0) <= 1e-3 and 0 <= y - math.copysign(2.0, y) <= 0.25, r
+    corners.add(math.copysign(1, y))
+    if normal > 1e-6 * max(float(s["impulse_N_s"]) for s in rows):
+        assert abs(abs(tangential) - 0.3 * normal) <= 1e-6 * normal, (normal, tangential)
+print(f"sliding block: {len(rows)} episodes, corners {sorted(corners)}, |P_T| / P_N = 0.3")
+assert corners == {-1.0, 1.0}, corners
+PY
 slide 1e6 1e11 1e13 1e12 > slide-nsgs.prm
 "$poundfe" run slide-nsgs.prm --set "Contact/LCP tolerance=1e-9" --set "Time integration/End time=0.033" \
   --output nsgs > /dev/null 2> nsgs.err || fail "nsgs at 1e-9 exited $?: $(head -c 300 nsgs.err)"

@@ -6,7 +6,7 @@
 // penetration and its time are those of the cubic Hermite interpolant of
 // the penetration (values and rates at both ends) where the interpolated
 // rate vanishes. The impulse is the trapezoidal integral of the contact
-// force.
+// force, the tangential impulse that of the tangential (friction) force.
 #ifndef poundfe_integration_impact_log_h
 #define poundfe_integration_impact_log_h
 
@@ -29,6 +29,9 @@ namespace poundfe
     double       max_penetration      = 0;
     double       peak_force           = 0;
     double       impulse              = 0;
+    /// Along the contact's tangent (friction of rigid contact in plan,
+    /// integration/moreau_jean.h: signed along J n); 0 without friction.
+    double       tangential_impulse   = 0;
     /// Where the peak force acted in plan (3D plan contact; NaN otherwise).
     std::array<double, 2> point{{std::nan(""), std::nan("")}};
     /// What was touched: a gap's bumper, the structure (laws/bumper.h's
@@ -50,6 +53,8 @@ namespace poundfe
       std::array<double, 2> point{{std::nan(""), std::nan("")}};
       /// The element's phase (laws/bumper.h: 1 structure, 2 bumper only).
       int phase = 0;
+      /// The force along the contact's tangent (friction), N.
+      double tangential_force = 0;
     };
 
     void reset(unsigned int n_elements);

@@ -12,6 +12,9 @@
 //   0 <= U_a+ + e_a U_a  ⊥  P_a >= 0.
 // Each Newton iteration k on the smooth part, with the iteration matrix
 //   J = M + h theta (C + C_t) + (h theta)^2 (K + K_t),
+// (factored anew only when the one in hand, of an earlier iteration or
+// step, contracts the iteration by less than a factor 4: the iteration's
+// fixed point is the step's equations whatever J, which sets only its pace)
 // takes the free velocity v_free (the update without impulses) and the
 // Delassus operator W = H J^-1 H^T, and solves the LCP
 //   w = W P + (H v_free + e ∘ H v),  0 <= P ⊥ w >= 0
@@ -33,6 +36,12 @@
 // linear and angular momentum are kept), g_a(u) is evaluated exactly, and a
 // contact whose edges do not overlap is open (Acary & Brogliato §10.1.7:
 // the constraint's Jacobian at the beginning of the step).
+// Equations without mass (a frame's rotations under lumped masses) keep
+// their rows of the scheme, which there read θ F+ + (1 - θ) F = 0: J's rows
+// h θ (C + C_t) + (h θ)^2 (K + K_t) stay regular, and from the equilibrium
+// F = 0 of the start (at rest) θ = 1/2 keeps F+ = 0 at every step, as
+// Newmark's average acceleration (the same scheme on the smooth part) does.
+// The contacts act on equations with mass only: an impulse needs inertia.
 #ifndef poundfe_integration_moreau_jean_h
 #define poundfe_integration_moreau_jean_h
 
@@ -43,6 +52,7 @@
 #include <poundfe/integration/stepper_state.h>
 #include <poundfe/model/plan_contact_geometry.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 #include <functional>
@@ -116,6 +126,10 @@ namespace poundfe
     /// fibre members, friction, elements of rank > 1); empty when it can.
     static std::string unsupported(const LinearSystem &system, const NonlinearElements *elements,
                                    unsigned int max_equations);
+    /// Why the scheme cannot take these contacts on this system (one acting
+    /// on an equation without mass); empty when it can.
+    static std::string unsupported(const LinearSystem &system,
+                                   const std::vector<UnilateralContact> &contacts);
 
     /// `elements` may be null; gap elements are left alone (the contacts
     /// replace them). Throws NumericalError from advance() when Siconos
@@ -148,6 +162,8 @@ namespace poundfe
     double gap(unsigned int a, const Vector &x) const;
     /// The geometry of contact in plan a at displacements x.
     PlanContactState plan_state(unsigned int a, const Vector &x) const;
+    /// M^-1 x on the equations with mass, 0 on the others.
+    Vector inverse_mass(const Vector &x) const;
     /// H_a and T_a of the contacts in plan at the current displacements.
     void   linearize_plan_contacts();
     /// T_a of contact in plan a at the current displacements, `state` its geometry.
@@ -172,6 +188,9 @@ namespace poundfe
                        const char *problem);
     /// The rows of the active contacts: H's, then T's of those with friction.
     Eigen::MatrixXd active_rows(const std::vector<unsigned int> &active) const;
+    /// Factor J at the end-of-step state (u_end, v_end) into jacobian_factor.
+    void   factor_jacobian(double t, const Vector &u_end, const Vector &v_end,
+                           const Vector &load_end);
     /// One step of h from the current state; returns the impulses.
     void   step(const LoadFunction &load);
     void   record_impulses(const std::vector<unsigned int> &active, const Vector &impulse,
@@ -189,6 +208,14 @@ namespace poundfe
     Eigen::MatrixXd                T;
     bool                           has_friction = false;
     Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_factor;
+    /// Whether the next iteration factors J anew (the one in hand is
+    /// renewed when an iteration's change exceeds max_contraction times
+    /// the last one's).
+    bool                           refactor        = true;
+    static constexpr double        max_contraction = 0.25;
+    /// The equations with mass and the Cholesky factor of M on them.
+    std::vector<unsigned int>    massive;
+    Eigen::LLT<Eigen::MatrixXd>  mass_factor;
     Vector                         load_start, smooth_start, local_u, local_v;
     std::vector<double>            initial_stored;
     std::vector<ContactImpulse>    impulse_log;

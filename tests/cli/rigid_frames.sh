@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Rigid contact (Contact/Model = nonsmooth) on frames whose rotations carry
+# no mass (lumped masses) and carry Bouc-Wen hinges: the default example,
+# input/two-buildings.prm, over its first 4 s.
+#   - far apart (Separations = 1 m, no contact), Moreau-Jean's theta = 1/2 is
+#     Newmark's average acceleration on the smooth part, the massless rows
+#     equilibrium in both: drift.csv and the peak drifts within 1e-9 of the
+#     penalty run's (Event refinement and Steps per contact 0, the same
+#     steps; the two Newton loops stop on different measures, 1e-10 of the
+#     velocity against a residual of 1e-12, hence not round-off);
+#   - 1 cm apart, a Hertz-damp law of growing stiffness (damping calibrated
+#     to e = 0.65, 2.75e9 ... 2.75e12 N/m^1.5) at 1e-4 s, sweep of
+#     Contact/Stiffness: each peak drift's difference from rigid contact
+#     falls by at least 5 times from the softest to the stiffest and is
+#     below 0.5 % there (over several impacts the differences compound, so
+#     they need not fall at every stiffness).
+set -u
+poundfe=$1 input=$2
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+cd "$work"
+. "$here/expect.sh"
+
+if ! "$poundfe" --version | grep -q "nonsmooth"; then
+  echo "rigid-frames: this build has no Siconos (penalty only): nothing to check"
+  exit 0
+fi
+sed -e 's/^\( *set Duration *=\).*/\1 4/' -e '/^subsection Contact/a\  set Event refinement = 0\n  set Steps per contact = 0' \
+    -e 's/^\( *set Output interval *=\).*/\1 0.01/' -e 's/^\( *set VTU interval *=\).*/\1 0/' \
+    -e 's/^\( *set Number of modes *=\).*/\1 0/' -e '/^subsection Output/a\  set Plots = false' \
+    "$input" > pair.prm
+sed 's/^\( *set Separations *=\).*/\1 1.0/' pair.prm > apart.prm
+"$poundfe" run apart.prm --set "Time integration/Newton residual tolerance=1e-12" --output penalty > /dev/null 2> penalty.err || fail "penalty exited $?: $(head -c 300 penalty.err)"
+"$poundfe" run apart.prm --set "Contact/Model=nonsmooth" --output rigid > /dev/null 2> rigid.err ||
+  fail "nonsmooth on frames exited $?: $(head -c 300 rigid.err)"
+python3 "$here/same_trajectory.py" 1e-9 penalty/drift.csv rigid/drift.csv || fail "apart: drift.csv differs"
+python3 - penalty rigid <<'PY' || fail "apart: hinge peaks differ"
+import json, sys
+a, b = (json.load(open(f"{d}/summary.json")) for d in sys.argv[1:])
+assert a["analysis"]["steps"] == b["analysis"]["steps"], (a["analysis"]["steps"], b["analysis"]["steps"])
+peaks = lambda s: [x["peak_drift_ratio"] for g in s["buildings"] for x in g["storeys"]]
+print("apart: peak drifts", peaks(a), peaks(b))
+assert all(abs(x - y) <= 1e-9 * max(peaks(a)) for x, y in zip(peaks(a), peaks(b)))
+PY
+
+{
+  cat pair.prm
+  printf 'subsection Sweep\n  set Parameter = Contact/Stiffness\n  set Values = 2.75e9, 2.75e10, 2.75e11, 2.75e12\nend\n'
+} > sweep.prm
+"$poundfe" sweep sweep.prm --set "Contact/Model=nonsmooth" --set "Time integration/Time step=1e-4" \
+  --output sweep > /dev/null 2> sweep.err || fail "sweep exited $?: $(head -c 300 sweep.err)"
+python3 - sweep <<'PY' || fail "frames: convergence to rigid contact"
+import csv, sys
+rows = list(csv.DictReader(open(f"{sys.argv[1]}/contact_convergence.csv")))
+names = [n[: -len("_relative_error")] for n in rows[0] if n.endswith("_relative_error") and "drift" in n]
+failed = []
+for name in names:
+    error = [float(r[f"{name}_relative_error"]) for r in rows]
+    print(f"{name}: relative difference " + ", ".join(f"{x:.3g}" for x in error))
+    failed.extend(n for n in [name] if not (error[-1] < error[0] / 5 and error[-1] < 0.005))
+assert names and not failed, failed
+PY
+echo "rigid-frames: $failures failures"
+exit $((failures > 0))
