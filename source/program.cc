@@ -41,44 +41,42 @@ namespace
     unsigned int threads = 1;
   };
 
-  /// --threads's value: a whole number in 1..256, or the message.
+  /// An option's whole-number value in [1, largest], or 0 with the message
+  /// in line.error.
+  long
+  whole_number_option(const std::string &option, const std::string &text, const long largest,
+                      CommandLine &line)
+  {
+    std::size_t end = 0;
+    long        n   = 0;
+    try
+      {
+        n = std::stol(text, &end);
+      }
+    catch (const std::exception &)
+      {
+        end = 0;
+      }
+    if (end == text.size() && n >= 1 && n <= largest)
+      return n;
+    line.error = "poundfe: error: " + option + " needs a whole number in 1.." +
+                 std::to_string(largest) + ", got '" + text + "'\n";
+    return 0;
+  }
+
+  /// --threads's value: deal.II's (TBB's) thread limit, 1..256.
   void
   parse_threads(const std::string &text, CommandLine &line)
   {
-    std::size_t end = 0;
-    long        n   = 0;
-    try
-      {
-        n = std::stol(text, &end);
-      }
-    catch (const std::exception &)
-      {
-        end = 0;
-      }
-    if (end != text.size() || n < 1 || n > 256)
-      line.error = "poundfe: error: --threads needs a whole number in 1..256, got '" + text + "'\n";
-    else
+    if (const long n = whole_number_option("--threads", text, 256, line))
       line.threads = n;
   }
 
-  /// --realizations's value: a whole number in 1..100000, or the message.
+  /// --realizations's value: 1..100000.
   void
   parse_realizations(const std::string &text, CommandLine &line)
   {
-    std::size_t end = 0;
-    long        n   = 0;
-    try
-      {
-        n = std::stol(text, &end);
-      }
-    catch (const std::exception &)
-      {
-        end = 0;
-      }
-    if (end != text.size() || n < 1 || n > 100000)
-      line.error =
-        "poundfe: error: --realizations needs a whole number in 1..100000, got '" + text + "'\n";
-    else
+    if (const long n = whole_number_option("--realizations", text, 100000, line))
       line.request.n_realizations = n;
   }
 

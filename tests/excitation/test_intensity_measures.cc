@@ -11,6 +11,7 @@
 //    tolerance 2e-5 relative;
 //  - an AT2 file written by at2_text read back by read_record (9 digits).
 #include <poundfe/excitation/intensity_measures.h>
+#include <poundfe/excitation/record_suite.h>
 #include <poundfe/excitation/records.h>
 #include <poundfe/excitation/response_spectrum.h>
 
@@ -112,4 +113,19 @@ BOOST_AUTO_TEST_CASE(at2_round_trip)
   BOOST_REQUIRE(b.samples().size() == a.samples().size());
   for (std::size_t k = 0; k < a.samples().size(); ++k)
     BOOST_TEST(std::abs(b.samples()[k] - a.samples()[k]) <= 5e-9 * std::abs(a.samples()[k]) + 1e-300);
+}
+
+// A record of 241 samples at 0.015 s lasts 0.015 * 240 = 3.5999999999999996 s
+// in doubles: the period 3.6 s written as a decimal is its duration, held;
+// a period visibly beyond it is not.
+BOOST_AUTO_TEST_CASE(resolved_periods_hold_their_limits_but_for_round_off)
+{
+  ResolvedPeriods resolved;
+  resolved.shortest = 2 * 0.015;
+  resolved.longest  = 0.015 * 240;
+  BOOST_TEST(resolved.longest < 3.6);
+  BOOST_TEST(resolved.holds(3.6));
+  BOOST_TEST(resolved.holds(0.03));
+  BOOST_TEST(!resolved.holds(3.6 * (1 + 1e-9)));
+  BOOST_TEST(!resolved.holds(0.03 * (1 - 1e-9)));
 }

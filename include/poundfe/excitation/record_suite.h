@@ -53,7 +53,14 @@ namespace poundfe
     double      shortest = 0, longest = INFINITY; // s
     std::string shortest_of, longest_of;          // the records' names
 
-    bool holds(const double period) const { return period >= shortest && period <= longest; }
+    /// Within the range but for round-off: a duration dt (n - 1) may fall
+    /// an ulp short of the period written as its decimal.
+    bool
+    holds(const double period) const
+    {
+      const double slack = 1e-12;
+      return period >= shortest * (1 - slack) && period <= longest * (1 + slack);
+    }
     /// "0.02 to 4 s: from twice the time step (the Nyquist period) of
     /// record 'a' to the duration of record 'b'" (six digits: a period and
     /// the limit it passes differ visibly).
