@@ -184,8 +184,10 @@ namespace poundfe
         bool
         set_trial(const Vector &u, const Vector &v) override
         {
-          const Vector rate = strain_scale * (t * v);
-          strain            = strain_scale * (t * u);
+          rate.noalias()   = t * v; // into the members' storage: no allocation
+          strain.noalias() = t * u;
+          rate *= strain_scale;
+          strain *= strain_scale;
           for (unsigned int m = 0; m < laws.size(); ++m)
             if (!laws[m]->set_trial(strain[m], rate[m]))
               {
@@ -290,6 +292,7 @@ namespace poundfe
         Matrix                                    t; // materials x DOFs
         std::vector<std::unique_ptr<UniaxialLaw>> laws;
         Vector strain, committed_strain; // the materials' trial and committed strains
+        Vector rate;                     // the trial strain rates
         bool                                      rayleigh = false;
         std::string                               why;
         double strain_scale = 1, force_scale = 1; // a truss: 1/L and A
