@@ -200,10 +200,17 @@ namespace poundfe
         Vector
         force() const override
         {
-          Vector stress(laws.size());
+          // sum_m t_m^T sigma_m by rows: t is mostly zeros, and a product
+          // of Eigen's dynamic matrices allocates its temporaries
+          Vector f = Vector::Zero(t.cols());
           for (unsigned int m = 0; m < laws.size(); ++m)
-            stress[m] = laws[m]->force();
-          return force_scale * (t.transpose() * stress);
+            {
+              const double stress = laws[m]->force();
+              for (Eigen::Index j = 0; j < t.cols(); ++j)
+                f[j] += t(m, j) * stress;
+            }
+          f *= force_scale;
+          return f;
         }
 
         std::vector<double>
@@ -283,10 +290,19 @@ namespace poundfe
         Matrix
         weighted(const Value &value) const
         {
-          Vector d(laws.size());
+          // sum_m t_m^T d_m t_m by rows, skipping t_m's zeros (as force())
+          const Eigen::Index n = t.cols();
+          Matrix             k = Matrix::Zero(n, n);
           for (unsigned int m = 0; m < laws.size(); ++m)
-            d[m] = value(*laws[m]);
-          return force_scale * strain_scale * (t.transpose() * d.asDiagonal() * t);
+            {
+              const double d = value(*laws[m]);
+              for (Eigen::Index i = 0; i < n; ++i)
+                if (t(m, i) != 0)
+                  for (Eigen::Index j = 0; j < n; ++j)
+                    k(i, j) += t(m, i) * d * t(m, j);
+            }
+          k *= force_scale * strain_scale;
+          return k;
         }
 
         Matrix                                    t; // materials x DOFs
