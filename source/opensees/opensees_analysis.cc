@@ -376,7 +376,6 @@ namespace poundfe
     Analysis::assemble_tangent(const double c_k, const double c_c, const double c_m)
     {
       const double diagonal = c_m + c_c * domain.rayleigh.alpha_m;
-      ++counts.factorizations;
       if (dense())
         {
           dense_tangent.setZero(n_equations, n_equations);
@@ -385,6 +384,7 @@ namespace poundfe
           dense_factors.compute(dense_tangent);
           if ((dense_factors.matrixLU().diagonal().array() == 0).any())
             throw NumericalError("LU: the effective matrix is singular");
+          ++counts.factorizations;
           return;
         }
       tangent_entries.clear();
@@ -399,6 +399,7 @@ namespace poundfe
         solver->analyze(tangent_matrix);
       analysed = true;
       solver->factorize(tangent_matrix);
+      ++counts.factorizations;
     }
 
     void
