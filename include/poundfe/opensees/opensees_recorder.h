@@ -5,8 +5,9 @@
 // basicDeformation, section i force|deformation), separated by spaces,
 // with -precision significant digits (6 by default), as OpenSees's
 // DataFileStream writes them (setprecision(p): printf's %.pg, which
-// std::to_chars gives in general format with precision p). The file appears complete when the script
-// ends (or at wipe), and not at all when it fails.
+// std::to_chars gives in general format with precision p). The file
+// appears complete when the script ends (or at wipe), and not at all when
+// it fails.
 #ifndef poundfe_opensees_opensees_recorder_h
 #define poundfe_opensees_opensees_recorder_h
 
