@@ -234,39 +234,43 @@ namespace poundfe
     {
       using Combinations = std::vector<std::vector<std::pair<int, double>>>;
 
-      /// The element's local values of a vector by equation: 0 where fixed,
-      /// `imposed` where an sp command imposes the DOF (-2 - j: its j-th),
-      /// a diaphragm's combination of equations where it constrains the DOF.
-      Vector
-      element_values(const Element &element, const Vector &x, const Vector &imposed,
-                     const Combinations &combinations)
+      /// The element's local values of a vector by equation (into `local`,
+      /// its storage kept): 0 where fixed, `imposed` where an sp command
+      /// imposes the DOF (-2 - j: its j-th), a diaphragm's combination of
+      /// equations where it constrains the DOF; `imposed` null: 0 there too.
+      void
+      element_values(const Element &element, const Vector &x, const Vector *imposed,
+                     const Combinations &combinations, Vector &local)
       {
-        Vector local(element.equations.size());
+        local.resize(element.equations.size());
         for (unsigned int i = 0; i < local.size(); ++i)
           {
             const int eq = element.equations[i];
-            local[i]     = eq >= 0 ? x[eq] : eq > first_combination && eq <= -2 ? imposed[-2 - eq] : 0.0;
+            local[i]     = eq >= 0 ? x[eq] :
+                           imposed && eq > first_combination && eq <= -2 ? (*imposed)[-2 - eq] :
+                                                                           0.0;
             if (eq <= first_combination)
               for (const auto &[e, c] : combinations[first_combination - eq])
                 local[i] += c * x[e];
           }
-        return local;
       }
 
-      /// The element's damping matrix C_e (see opensees_analysis.h).
-      Matrix
-      element_damping(const Element &element, const RayleighFactors &r)
+      /// The element's damping matrix C_e (see opensees_analysis.h) into c.
+      void
+      element_damping(const Element &element, const RayleighFactors &r, Matrix &c)
       {
         if (!element.rayleigh_damped())
-          return element.material_damping();
-        Matrix c = Matrix::Zero(element.n_dofs(), element.n_dofs());
+          {
+            c = element.material_damping();
+            return;
+          }
+        c.setZero(element.n_dofs(), element.n_dofs());
         if (r.beta_k != 0)
           c += r.beta_k * element.tangent();
         if (r.beta_k_init != 0)
           c += r.beta_k_init * element.initial_tangent();
         if (r.beta_k_committed != 0)
           c += r.beta_k_committed * element.committed_tangent;
-        return c;
       }
     } // namespace
 
@@ -280,19 +284,24 @@ namespace poundfe
           for (unsigned int j = 0; j < imposed_dofs.size(); ++j)
             imposed_u[j] = imposed.at(imposed_dofs[j]);
         }
-      const Vector still = Vector::Zero(imposed_u.size());
+      element_state.resize(domain.elements.size());
+      auto state = element_state.begin();
       for (auto &[tag, element] : domain.elements)
-        if (!element->set_trial(element_values(*element, u, imposed_u, combinations),
-                                element_values(*element, v, still, combinations)))
-          {
-            why = "element " + std::to_string(tag) + ": " + element->failure();
-            return false;
-          }
+        {
+          auto &[local_u, local_v] = *state++;
+          element_values(*element, u, &imposed_u, combinations, local_u);
+          element_values(*element, v, nullptr, combinations, local_v);
+          if (!element->set_trial(local_u, local_v))
+            {
+              why = "element " + std::to_string(tag) + ": " + element->failure();
+              return false;
+            }
+        }
       return true;
     }
 
     Vector
-    Analysis::residual() const
+    Analysis::residual()
     {
       Vector        r = Vector::Zero(n_equations);
       const Vector &v = at_alpha ? V_alpha : V; // HHT: the damping at t + alpha dt
@@ -305,10 +314,14 @@ namespace poundfe
         }
       for (const auto &[tag, element] : domain.elements)
         {
-          Vector f = element->force();
+          Vector &f = element_force;
+          f         = element->force();
           if (opts.transient && element->rayleigh_damped()) // materials' own damping is in f
-            f += element_damping(*element, domain.rayleigh) *
-               element_values(*element, v, Vector::Zero(imposed_u.size()), combinations);
+            {
+              element_damping(*element, domain.rayleigh, element_damping_matrix);
+              element_values(*element, v, nullptr, combinations, element_velocity);
+              f.noalias() += element_damping_matrix * element_velocity;
+            }
           for (unsigned int i = 0; i < f.size(); ++i)
             add_to(r, element->equations[i], -f[i]);
         }
@@ -327,30 +340,59 @@ namespace poundfe
     }
 
     void
-    Analysis::assemble_tangent(const double c_k, const double c_c, const double c_m)
+    Analysis::add_element_tangents(const double c_k, const double c_c)
     {
-      std::vector<Eigen::Triplet<double>> entries;
+      const bool as_dense = dense();
+      const auto add      = [&](const int i, const int j, const double value) {
+        if (as_dense)
+          dense_tangent(i, j) += value;
+        else
+          tangent_entries.emplace_back(i, j, value);
+      };
       for (const auto &[tag, element] : domain.elements)
         {
-          Matrix k = c_k * element->tangent();
+          Matrix &k = element_matrix;
+          k         = element->tangent();
+          k *= c_k;
           if (c_c != 0)
-            k += c_c * element_damping(*element, domain.rayleigh);
+            {
+              element_damping(*element, domain.rayleigh, element_damping_matrix);
+              k += c_c * element_damping_matrix;
+            }
           const auto &eq = element->equations;
           for (unsigned int i = 0; i < eq.size(); ++i)
             for (unsigned int j = 0; j < eq.size(); ++j)
               if (eq[i] >= 0 && eq[j] >= 0)
-                entries.emplace_back(eq[i], eq[j], k(i, j));
+                add(eq[i], eq[j], k(i, j));
               else if ((eq[i] >= 0 || eq[i] <= first_combination) &&
                        (eq[j] >= 0 || eq[j] <= first_combination))
                 for (const auto &[ei, ci] : terms(eq[i]))
                   for (const auto &[ej, cj] : terms(eq[j]))
-                    entries.emplace_back(ei, ej, ci * cj * k(i, j));
+                    add(ei, ej, ci * cj * k(i, j));
         }
+    }
+
+    void
+    Analysis::assemble_tangent(const double c_k, const double c_c, const double c_m)
+    {
       const double diagonal = c_m + c_c * domain.rayleigh.alpha_m;
+      if (dense())
+        {
+          dense_tangent.setZero(n_equations, n_equations);
+          add_element_tangents(c_k, c_c);
+          dense_tangent.diagonal() += diagonal * mass_of_equation;
+          dense_factors.compute(dense_tangent);
+          if ((dense_factors.matrixLU().diagonal().array() == 0).any())
+            throw NumericalError("LU: the effective matrix is singular");
+          ++counts.factorizations;
+          return;
+        }
+      tangent_entries.clear();
+      add_element_tangents(c_k, c_c);
       for (unsigned int i = 0; i < n_equations; ++i) // the diagonal always in the pattern
-        entries.emplace_back(i, i, diagonal * mass_of_equation[i]);
+        tangent_entries.emplace_back(i, i, diagonal * mass_of_equation[i]);
       tangent_matrix.resize(n_equations, n_equations);
-      tangent_matrix.setFromTriplets(entries.begin(), entries.end());
+      tangent_matrix.setFromTriplets(tangent_entries.begin(), tangent_entries.end());
       if (!solver)
         solver = create_linear_solver(opts.linear_solver);
       if (!analysed)
@@ -358,6 +400,18 @@ namespace poundfe
       analysed = true;
       solver->factorize(tangent_matrix);
       ++counts.factorizations;
+    }
+
+    void
+    Analysis::solve(const Vector &b, Vector &x)
+    {
+      if (!dense())
+        {
+          solver->solve(b, x);
+          return;
+        }
+      x.resize(b.size());
+      x = dense_factors.solve(b);
     }
 
     double
@@ -590,7 +644,7 @@ namespace poundfe
         {
           assemble_tangent(k_k, k_c, c_m);
           Vector r = residual();
-          solver->solve(r, x); // the Newton increment s_1
+          solve(r, x); // the Newton increment s_1
           ++last_iterations;
           ++counts.iterations;
           if (!apply_increment(x, why))
@@ -601,8 +655,8 @@ namespace poundfe
           for (unsigned int n = 1;; ++n)
             {
               const Vector dr = -r - resid_old; // OpenSees's residNew - residOld
-              solver->solve(r, du);
-              solver->solve(dr, x); // K^-1 dr: the system's last solution, which the test sees
+              solve(r, du);
+              solve(dr, x); // K^-1 dr: the system's last solution, which the test sees
               history.update(x, dr, du, r);
               resid_old = -r;
               ++last_iterations;
@@ -644,7 +698,7 @@ namespace poundfe
         {
           if (every_iteration)
             assemble_tangent(k_k, k_c, c_m);
-          solver->solve(r, dx);
+          solve(r, dx);
           if (opts.displacement_control && !opts.transient && !correct_displacement(dx, why))
             return -1;
           const double s0 = -dx.dot(r);
@@ -746,7 +800,7 @@ namespace poundfe
         return false;
       assemble_tangent(1, 0, 0);
       Vector dx_hat(n_equations);
-      solver->solve(phat, dx_hat);
+      solve(phat, dx_hat);
       if (dx_hat[control_equation] == 0)
         {
           why = "DisplacementControl: zero reference displacement at the control DOF";
@@ -765,7 +819,7 @@ namespace poundfe
     Analysis::correct_displacement(Vector &dx, std::string &why)
     {
       Vector dx_hat(n_equations);
-      solver->solve(phat, dx_hat);
+      solve(phat, dx_hat);
       if (dx_hat[control_equation] == 0)
         {
           why = "DisplacementControl: zero reference displacement at the control DOF";
@@ -849,7 +903,7 @@ namespace poundfe
       if (!set_trial(why))
         throw ScriptError("eigen: " + why);
       assemble_tangent(1, 0, 0);
-      const Matrix K = Matrix(tangent_matrix);
+      const Matrix K = dense() ? dense_tangent : Matrix(tangent_matrix);
       const Matrix M = mass_of_equation.asDiagonal();
       // K phi = lambda M phi as M phi = (1/lambda) K phi: M may be singular
       // (massless rotations), K is positive definite for a stable structure

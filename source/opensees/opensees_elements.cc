@@ -186,8 +186,10 @@ namespace poundfe
         bool
         set_trial(const Vector &u, const Vector &v) override
         {
-          const Vector rate = strain_scale * (t * v);
-          strain            = strain_scale * (t * u);
+          rate.noalias()   = t * v; // into the members' storage: no allocation
+          strain.noalias() = t * u;
+          rate *= strain_scale;
+          strain *= strain_scale;
           for (unsigned int m = 0; m < laws.size(); ++m)
             if (!laws[m]->set_trial(strain[m], rate[m]))
               {
@@ -200,10 +202,17 @@ namespace poundfe
         Vector
         force() const override
         {
-          Vector stress(laws.size());
+          // sum_m t_m^T sigma_m by rows: t is mostly zeros, and a product
+          // of Eigen's dynamic matrices allocates its temporaries
+          Vector f = Vector::Zero(t.cols());
           for (unsigned int m = 0; m < laws.size(); ++m)
-            stress[m] = laws[m]->force();
-          return force_scale * (t.transpose() * stress);
+            {
+              const double stress = laws[m]->force();
+              for (Eigen::Index j = 0; j < t.cols(); ++j)
+                f[j] += t(m, j) * stress;
+            }
+          f *= force_scale;
+          return f;
         }
 
         std::vector<double>
@@ -283,15 +292,25 @@ namespace poundfe
         Matrix
         weighted(const Value &value) const
         {
-          Vector d(laws.size());
+          // sum_m t_m^T d_m t_m by rows, skipping t_m's zeros (as force())
+          const Eigen::Index n = t.cols();
+          Matrix             k = Matrix::Zero(n, n);
           for (unsigned int m = 0; m < laws.size(); ++m)
-            d[m] = value(*laws[m]);
-          return force_scale * strain_scale * (t.transpose() * d.asDiagonal() * t);
+            {
+              const double d = value(*laws[m]);
+              for (Eigen::Index i = 0; i < n; ++i)
+                if (t(m, i) != 0)
+                  for (Eigen::Index j = 0; j < n; ++j)
+                    k(i, j) += t(m, i) * d * t(m, j);
+            }
+          k *= force_scale * strain_scale;
+          return k;
         }
 
         Matrix                                    t; // materials x DOFs
         std::vector<std::unique_ptr<UniaxialLaw>> laws;
         Vector strain, committed_strain; // the materials' trial and committed strains
+        Vector rate;                     // the trial strain rates
         bool                                      rayleigh = false;
         std::string                               why;
         double strain_scale = 1, force_scale = 1; // a truss: 1/L and A

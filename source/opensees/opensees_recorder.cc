@@ -4,33 +4,49 @@
 #include <poundfe/opensees/opensees_recorder.h>
 #include <poundfe/output/atomic_file.h>
 
-#include <sstream>
+#include <charconv>
 
 namespace poundfe
 {
   namespace opensees
   {
+    namespace
+    {
+      /// The text a recorder keeps before it writes to its file.
+      constexpr std::size_t flush_size = 1u << 16;
+    } // namespace
+
     Recorder::Recorder(const std::string &file_name, const bool with_time, const int digits)
       : file(std::make_unique<AtomicFile>(file_name))
       , time(with_time)
-      , precision(digits)
-    {}
+      , precision(digits < 0 ? 6 : digits) // as the stream's precision
+    {
+      buffer.reserve(2 * flush_size);
+    }
 
     Recorder::~Recorder() = default;
 
     void
     Recorder::record(const Domain &domain)
     {
-      std::vector<double> line;
+      line.clear();
       if (time)
         line.push_back(domain.time);
       values(domain, line);
-      std::ostringstream text;
-      text.precision(precision);
+      // room for each number: sign, the digits, the point and an exponent
+      const std::size_t start = buffer.size(), room = precision + 16;
+      buffer.resize(start + line.size() * room + 1);
+      char *const end = buffer.data() + buffer.size();
+      char       *out = buffer.data() + start;
       for (std::size_t i = 0; i < line.size(); ++i)
-        text << (i == 0 ? "" : " ") << line[i];
-      buffer += text.str() + "\n";
-      if (buffer.size() > (1u << 16))
+        {
+          if (i > 0)
+            *out++ = ' ';
+          out = std::to_chars(out, end, line[i], std::chars_format::general, precision).ptr;
+        }
+      *out++ = '\n';
+      buffer.resize(out - buffer.data());
+      if (buffer.size() > flush_size)
         {
           file->write(buffer);
           buffer.clear();

@@ -38,11 +38,17 @@
 //   K_eff = sum_e (K_e + c2 C_e) + (c3 + c2 alpha_M) M,
 // C_e = beta_K K_e + beta_K0 K_e,0 + beta_Kc K_e,c for Rayleigh-damped
 // elements and the materials' damping tangents for the others.
+// K_eff is solved by LU with partial pivoting on a dense matrix up to
+// dense_equation_limit equations (as OpenSees's BandGeneral, LAPACK's
+// dgbsv), above by poundfe's sparse solver with its symbolic analysis kept
+// while the equations stay; the work vectors keep their storage between
+// iterations.
 #ifndef poundfe_opensees_opensees_analysis_h
 #define poundfe_opensees_opensees_analysis_h
 
 #include <poundfe/opensees/opensees_domain.h>
 
+#include <Eigen/LU>
 #include <Eigen/SparseCore>
 
 #include <functional>
@@ -128,6 +134,10 @@ namespace poundfe
     class Analysis
     {
     public:
+      /// The largest system solved dense: at a few dozen equations LU on a
+      /// dense matrix costs less than a sparse factorisation's bookkeeping.
+      static constexpr unsigned int dense_equation_limit = 32;
+
       Analysis(Domain &domain, AnalysisOptions options);
       ~Analysis();
 
@@ -151,8 +161,13 @@ namespace poundfe
       void   gather();
       void   scatter();
       bool   set_trial(std::string &why);
-      Vector residual() const;
+      Vector residual();
       void   assemble_tangent(double c_k, double c_c, double c_m);
+      /// K_eff's entries into the dense matrix or the triplets.
+      void   add_element_tangents(double c_k, double c_c);
+      /// x = K_eff^-1 b with the last factorisation.
+      void   solve(const Vector &b, Vector &x);
+      bool   dense() const { return n_equations > 0 && n_equations <= dense_equation_limit; }
       bool   step(double dt, std::string &why);
       /// DisplacementControl's predictor (newStep).
       bool   displacement_step(std::string &why);
@@ -207,6 +222,14 @@ namespace poundfe
       double          c_c = 0, c_m = 0;    // the step's update coefficients
       double          k_k = 1, k_c = 0;    // the tangent's K and C factors (HHT: alpha, alpha c_c)
       Eigen::SparseMatrix<double>   tangent_matrix;
+      std::vector<Eigen::Triplet<double>> tangent_entries; // its storage kept
+      Matrix                        dense_tangent;       // K_eff of a small system
+      Eigen::PartialPivLU<Matrix>   dense_factors;
+      /// Each element's local displacements and velocities (set_trial's
+      /// arguments), by the elements' order, and its tangent and damping.
+      std::vector<std::pair<Vector, Vector>> element_state;
+      Matrix                        element_matrix, element_damping_matrix;
+      Vector                        element_force, element_velocity;
       std::unique_ptr<LinearSolver> solver;
       std::function<void(const std::string &)> print; // analyze's `warn`
       bool                          analysed = false; // the solver saw the pattern

@@ -4,8 +4,10 @@
 // response (Element::response: force, localForce, basicForce,
 // basicDeformation, section i force|deformation), separated by spaces,
 // with -precision significant digits (6 by default), as OpenSees's
-// DataFileStream writes them. The file appears complete when the script
-// ends (or at wipe), and not at all when it fails.
+// DataFileStream writes them (setprecision(p): printf's %.pg, which
+// std::to_chars gives in general format with precision p). The file
+// appears complete when the script ends (or at wipe), and not at all when
+// it fails.
 #ifndef poundfe_opensees_opensees_recorder_h
 #define poundfe_opensees_opensees_recorder_h
 
@@ -55,6 +57,7 @@ namespace poundfe
     private:
       std::unique_ptr<AtomicFile> file;
       std::string                 buffer;
+      std::vector<double>         line; // the values of one record, its storage kept
       bool                        time;
       int                         precision;
     };
