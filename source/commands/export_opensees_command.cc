@@ -36,14 +36,14 @@ namespace poundfe
       tcl << "# floor displacements relative to the ground (a floor of several nodes: their "
              "mean); columns: time";
       for (const std::string &name : e.floor_names)
-        tcl << " " << name;
+        tcl << " " << comment_word(name);
       tcl << "\nrecorder Node -file [file join $out floor_disp.out] -time -precision 16 -node"
           << joined(e.floor_nodes) << " -dof " << e.floor_dofs << " disp\n";
       if (e.gap_elements.empty())
         return;
       tcl << "# gap forces (zeroLength force: node i, node j; compression closes); gaps:";
       for (const std::string &name : e.gap_names)
-        tcl << " " << name;
+        tcl << " " << comment_word(name);
       tcl << "\nrecorder Element -file [file join $out gap_force.out] -time -precision 16 -ele"
           << joined(e.gap_elements) << " force\n";
     }

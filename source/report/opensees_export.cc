@@ -13,6 +13,20 @@
 #include <algorithm>
 #include <sstream>
 
+namespace poundfe
+{
+  std::string
+  comment_word(const std::string &name)
+  {
+    if (name.find_first_of(" \t\"\\") == std::string::npos)
+      return name;
+    std::string quoted = "\"";
+    for (const char c : name)
+      quoted += (c == '"' || c == '\\' ? "\\" : "") + std::string(1, c);
+    return quoted + "\"";
+  }
+} // namespace poundfe
+
 namespace poundfe::opensees_export
 {
   std::string
@@ -267,9 +281,9 @@ namespace poundfe
             std::to_string(link.nodes[0] + 1) + " " + std::to_string(link.nodes[1] + 1);
           if (link.hysteretic)
             {
-              out.model.push_back(bouc_wen_material(link.hysteresis, tags.material,
-                                                    model.buildings[link.building].name +
-                                                      " storey"));
+              const std::string label =
+                comment_word(model.buildings[link.building].name) + " storey";
+              out.model.push_back(bouc_wen_material(link.hysteresis, tags.material, label));
               out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
                                   ends + " -mat " + std::to_string(tags.material++) + " -dir 1");
               out.nonlinear = true;
@@ -350,7 +364,8 @@ namespace poundfe
               }
           out.model.push_back("uniaxialMaterial " + gap_material(model.contact, gap) + " " +
                               std::to_string(tags.material) + " " +
-                              gap_material_values(model.contact, gap) + " ;# " + gap.label);
+                              gap_material_values(model.contact, gap) + " ;# " +
+                              comment_word(gap.label));
           out.gap_elements.push_back(tags.element);
           out.gap_names.push_back(gap.label.empty() ? "gap" + std::to_string(g + 1) : gap.label);
           out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +

@@ -117,7 +117,7 @@ namespace poundfe::opensees_export
     {
       std::array<double, 6> masses{};
       std::vector<std::pair<unsigned int, double>> dashpots;
-      for (const auto [c, dof] : {std::pair{0u, 1u}, std::pair{1u, 2u}, std::pair{2u, 6u}})
+      for (const auto &[c, dof] : {std::pair{0u, 1u}, std::pair{1u, 2u}, std::pair{2u, 6u}})
         {
           masses[dof - 1] = node_mass(analysis, master, Component(c), input);
           dashpots.emplace_back(dof, masses[dof - 1]);
@@ -172,8 +172,8 @@ namespace poundfe::opensees_export
           input.fail(building_entry(member.building, member.kind == MemberKind::beam ?
                                                        "Beam mass per length" :
                                                        "Column mass per length"),
-                     "export-opensees writes 3D members without mass (a rigid floor's mass "
-                     "is its master's in `poundfe opensees`)");
+                     "export-opensees writes 3D members without mass: the script's check, "
+                     "`poundfe opensees`, takes no mass on a node under rigidDiaphragm");
       }
     if (!model.gaps.empty())
       input.fail("Contact/Law", "export-opensees writes no contact in plan (3D)");
@@ -228,7 +228,7 @@ namespace poundfe::opensees_export
                exact_text(s.shear_modulus) + " " + exact_text(s.torsion_constant) + " " +
                exact_text(s.second_moment_y) + " " + exact_text(s.second_moment_z) + " " +
                std::to_string(at->second)) +
-          " ;# " + member.label);
+          " ;# " + comment_word(member.label));
       }
   }
 } // namespace poundfe::opensees_export

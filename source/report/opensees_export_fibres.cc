@@ -7,8 +7,10 @@
 // `fiber y z A mat` (the fibres as poundfe placed them, not the patches
 // they came from), each material uniaxialMaterial NAME with the registry's
 // parameters, which are OpenSees's in OpenSees's order (laws/
-// material_registry.h), the points beamIntegration Lobatto (force-based)
-// or Legendre (displacement-based), and a PDelta column geomTransf PDelta;
+// material_registry.h; a default that stands for another value written as
+// that value, ElasticPP's epsyN 0 as -epsyP), the points beamIntegration
+// Lobatto (force-based) or Legendre (displacement-based), and a PDelta
+// column geomTransf PDelta;
 // in space (FiberSection3d, ForceBeamColumn3d) the section's -GJ.
 // A material's strain limits (Sections/Materials) only mark a fibre failed
 // in poundfe's reports: they are not written.
@@ -17,29 +19,47 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <cmath>
+#include <map>
+
 #include "opensees_export_parts.h"
 
 namespace poundfe::opensees_export
 {
   namespace
   {
-    /// "Sections/Section <k + 1>/entry".
-    std::string
-    section_entry(const int k, const std::string &entry)
+    /// The law's parameters, each given or its registry default, with the
+    /// defaults that stand for another value resolved: OpenSees reads a
+    /// written value literally (ElasticPP's epsyN = 0 as no compressive
+    /// strength, Elastic's Eneg = inf as an infinite modulus).
+    std::map<std::string, double>
+    resolved_values(const MaterialParameters &law)
     {
-      return "Sections/Section " + std::to_string(k + 1) + "/" + entry;
+      std::map<std::string, double> v;
+      for (const MaterialParameter &p : material_type(law.material).parameters)
+        {
+          const auto given = law.values.find(p.name);
+          v[p.name]        = given != law.values.end() ? given->second : p.default_value;
+        }
+      if (law.material == "ElasticPP" && v.at("epsyN") == 0) // poundfe's law: symmetric
+        v["epsyN"] = -v.at("epsyP");
+      if (law.material == "Elastic" && std::isinf(v.at("Eneg"))) // poundfe's law: E
+        v["Eneg"] = v.at("E");
+      return v;
     }
 
-    /// uniaxialMaterial NAME tag and the parameters in the registry's order.
+    /// uniaxialMaterial NAME tag and the parameters in the registry's order
+    /// (ElasticPPGap's damage as OpenSees's word).
     std::string
     material_command(const MaterialParameters &law, const int tag)
     {
       std::string command = "uniaxialMaterial " + law.material + " " + std::to_string(tag);
+      const std::map<std::string, double> values = resolved_values(law);
       for (const MaterialParameter &p : material_type(law.material).parameters)
-        {
-          const auto given = law.values.find(p.name);
-          command += " " + exact_text(given != law.values.end() ? given->second : p.default_value);
-        }
+        if (law.material == "ElasticPPGap" && p.name == "damage")
+          command += values.at("damage") != 0 ? " damage" : "";
+        else
+          command += " " + exact_text(values.at(p.name));
       return command;
     }
 
@@ -56,11 +76,12 @@ namespace poundfe::opensees_export
         {
           // the registry's materials whose Tcl arguments are a fixed list
           if (m.law.material == "Hysteretic")
-            input.fail(section_entry(k, "Type"),
+            input.fail("Sections/Materials",
                        "export-opensees writes no Hysteretic fibre material (material '" +
-                         m.name + "')");
+                         m.name + "', used by Section " + std::to_string(k + 1) + ")");
           material_tags.push_back(tags.material);
-          out.model.push_back(material_command(m.law, tags.material++) + " ;# " + m.name);
+          out.model.push_back(material_command(m.law, tags.material++) + " ;# " +
+                              comment_word(m.name));
         }
       const int tag = tags.section++;
       // in space the torque is elastic, GJ the initial tangent's last term

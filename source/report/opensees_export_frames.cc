@@ -142,11 +142,16 @@ namespace poundfe::opensees_export
     const double u_y    = p.yield_deformation;
     const double u_y_n  = std::pow(u_y, p.n);
     const double energy = (1 - p.alpha) * p.stiffness * u_y * u_y;
+    // alpha = 1: F = k u whatever z, and OpenSees's energy (1 - alpha) k int z du
+    // stays 0, so any rate degrades nothing there: written as 0
+    const auto per_energy = [energy](const double delta) {
+      return exact_text(energy == 0 ? 0.0 : delta / energy);
+    };
     return "uniaxialMaterial BoucWen " + std::to_string(tag) + " " + exact_text(p.alpha) + " " +
            exact_text(p.stiffness) + " " + exact_text(p.n) + " " + exact_text(p.gamma / u_y_n) +
            " " + exact_text(p.beta / u_y_n) + " " + exact_text(p.A) + " " +
-           exact_text(p.delta_A / energy) + " " + exact_text(p.delta_nu / energy) + " " +
-           exact_text(p.delta_eta / energy) + " " + exact_text(1e-12 * u_y) + " 50 ;# " + label;
+           per_energy(p.delta_A) + " " + per_energy(p.delta_nu) + " " + per_energy(p.delta_eta) +
+           " " + exact_text(1e-12 * u_y) + " 50 ;# " + label;
   }
 
   void
@@ -159,7 +164,7 @@ namespace poundfe::opensees_export
                         "on " + bouc_wen_comment());
     for (const Hinge &hinge : model.hinges)
       {
-        out.model.push_back(bouc_wen_material(hinge.law, tags.material, hinge.label));
+        out.model.push_back(bouc_wen_material(hinge.law, tags.material, comment_word(hinge.label)));
         out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
                             std::to_string(hinge.joint_node + 1) + " " +
                             std::to_string(hinge.member_node + 1) + " -mat " +
@@ -185,7 +190,7 @@ namespace poundfe::opensees_export
       out.model.push_back(
         (member.fibre.fibre() ? fibre_member_command(model, member, input, tags, out) :
                                 elastic_member_command(member, tags)) +
-        " ;# " + member.label);
+        " ;# " + comment_word(member.label));
   }
 
   void

@@ -20,8 +20,12 @@
 #  - Bouc-Wen storeys by the same convergence;
 #  - 3D frames on rigid floors: elastic members at 1e-9, fibre members at
 #    1e-6;
+#  - Bouc-Wen hinges of alpha = 1 (rates written as 0) at 1e-9; ElasticPP's
+#    default epsyN written as -epsyP (the script's text); names with a blank
+#    and a backslash one quoted word of the comments;
 # and the refusals name the entry OpenSees cannot be given (P-Delta, 3D
-# shear buildings, 3D hinges, contact in plan, frames of their own Rayleigh a1, hinges of A != 1, the contact laws hertz-damp and
+# shear buildings, 3D hinges, 3D member mass, contact in plan, frames of their own Rayleigh a1, hinges of A != 1,
+# a Hysteretic fibre material (by Sections/Materials), the contact laws hertz-damp and
 # kelvin-voigt (saying how OpenSees's namesakes differ), nodal forces, modal
 # damping, a record that does not start at zero).
 #   opensees_export.sh POUNDFE INPUT_DIR PYTHON3
@@ -36,10 +40,10 @@ trap 'rm -rf "$work"' EXIT
 # compare.py-like: floor_disp.out (time, floors) against floor_displacement.csv
 same_floors() { # OPENSEES_DIR RUN_DIR SCRIPT TOLERANCE
   "$python" - "$@" <<'PY'
-import re, sys
+import re, shlex, sys
 import numpy as np
 ours, run, script, tolerance = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
-columns = re.search(r"columns: time (.*)", open(script).read()).group(1).split()
+columns = shlex.split(re.search(r"columns: time (.*)", open(script).read()).group(1))
 table = np.loadtxt(ours + "/floor_disp.out", ndmin=2)
 csv = np.genfromtxt(run + "/floor_displacement.csv", delimiter=",", names=True)
 assert len(csv) == len(table) + 1, (len(csv), len(table))  # the run's row at t = 0
@@ -163,6 +167,13 @@ case_suffix=-elastic check_example three-storey-frame-hinges 1e-9 \
   --set "Building 1/Hinges/Yield moment=200e9, 150e9, 150e9, 120e9"
 grep -q -- "-dir 6 -doRayleigh 1$" "$work/three-storey-frame-hinges-elastic/script/model.tcl" \
   || fail "hinges: no rotational zeroLength"
+# alpha = 1: F = k u whatever z, so both laws give the same force and the
+# degradation rates, over OpenSees's energy (1 - alpha) k int z du = 0, are
+# written as 0 (not 0/0): 1e-9 as the elastic frames
+case_suffix=-alpha1 check_example three-storey-frame-hinges 1e-9 \
+  --set "Building 1/Bouc-Wen/alpha=1" --set "Building 1/Bouc-Wen/delta nu=0.1"
+grep -q "^uniaxialMaterial BoucWen [0-9]* 1 [^;]* 1 0 0 0 " \
+  "$work/three-storey-frame-hinges-alpha1/script/model.tcl" || fail "alpha = 1: its rates"
 converges() { # NAME FINEST-TOLERANCE DT1 DT2 DT3 -- [--set ...]: first order in the step
   local name=$1 finest=$2 steps=("$3" "$4" "$5")
   shift 6
@@ -212,6 +223,13 @@ inputs=$work case_suffix=-gravity check_example frame3d 1e-9 "${frame3d[@]}" \
   --set "Model/Gravity analysis/Type=static"
 grep -q "^pattern Plain 2 Linear {" "$work/frame3d-gravity/script/model.tcl" \
   || fail "3D: no gravity pattern"
+# a 3D member's mass per length: refused by its entry, saying whose limit it is
+"$poundfe" export-opensees "$work/frame3d.prm" --output "$work/frame3d-mass" "${frame3d[@]}" \
+  --set "Building 1/Column mass per length=300" > /dev/null 2> "$work/frame3d-mass.err"
+[ $? = 1 ] && [ ! -e "$work/frame3d-mass/model.tcl" ] || fail "3D member mass: not refused"
+grep -qF "'Building 1/Column mass per length': export-opensees writes 3D members without mass: \
+the script's check, \`poundfe opensees\`, takes no mass" "$work/frame3d-mass.err" \
+  || { cat "$work/frame3d-mass.err"; fail "3D member mass: message"; }
 # 3D fibre members (section Fiber with -GJ, forceBeamColumn on 4 Lobatto
 # points, the columns on geomTransf PDelta): building A of fibre-frame-3d
 # alone, gravity first, its mass centre moved (Plan/Mass eccentricity) so
@@ -229,6 +247,59 @@ import numpy as np, sys
 f = np.loadtxt('$work/$case/script/gap_force.out', ndmin=2)
 sys.exit(0 if np.abs(f[:, 1:]).max() > 0 else 'no impact')" || fail "$case: no impact"
 done
+
+# a default that stands for another value is written as that value:
+# ElasticPP's epsyN, 0 for -epsyP in poundfe, would be no compressive
+# strength in OpenSees 3.8 (ElasticPPMaterial: fyn = E epsyN), which
+# `poundfe opensees` reads as poundfe does: so the text. The sections'
+# steel law (Section 1) and a material of Sections/Materials without epsyN
+# (Section 2 of fibres), exported, each ElasticPP line's epsyN = -epsyP
+fibre_materials() { # OUTPUT MATERIALS: fibre-frame-pounding, Section 2 fibres of m and c
+  "$python" - "$inputs/fibre-frame-pounding.prm" "$1" "$2" <<'PY'
+import sys
+text = open(sys.argv[1]).read()
+text = text.replace("  set Number of sections = 2\n",
+                    "  set Number of sections = 2\n  set Materials = %s\n" % sys.argv[3])
+text = text.replace("    set Type                = RC rectangle\n    set Depth               = 0.5",
+                    "    set Type = fibres\n    set Fibres = patch rect c 8 2 -0.25 -0.15 0.25 0.15;"
+                    " layer straight m 3 3e-4 -0.2 -0.1 -0.2 0.1; layer straight m 3 3e-4 0.2 -0.1 0.2 0.1\n"
+                    "    set Depth               = 0.5")
+open(sys.argv[2], "w").write(text)
+PY
+}
+concrete="c: Concrete01 fpc=-30e6 epsc0=-0.002 fpcu=-6e6 epscu=-0.0035"
+fibre_materials "$work/fibre-elasticpp.prm" "m: ElasticPP E=2e11 epsyP=0.002; $concrete"
+"$poundfe" export-opensees "$work/fibre-elasticpp.prm" --output "$work/fibre-elasticpp" \
+  --set "Sections/Section 1/Steel law=ElasticPP" "${fibre_pair[@]}" > "$work/fibre-elasticpp.log" \
+  2>&1 || { cat "$work/fibre-elasticpp.log"; fail "ElasticPP: export"; }
+"$python" - "$work/fibre-elasticpp/model.tcl" <<'PY' || fail "ElasticPP: epsyN not -epsyP"
+import sys
+lines = [l.split() for l in open(sys.argv[1]) if l.startswith("uniaxialMaterial ElasticPP ")]
+print("ElasticPP:", "; ".join(" ".join(l[3:6]) for l in lines))
+assert len(lines) == 2 and all(float(l[5]) == -float(l[4]) < 0 for l in lines), lines
+PY
+# a name with a blank and an end backslash (a building's, a material's):
+# one quoted word of the comments, which then end on the quote (a backslash
+# there would join the next line to the comment); the script runs
+fibre_materials "$work/fibre-names.prm" \
+  "m\\: ElasticPP E=2e11 epsyP=0.002; c\\: Concrete01 fpc=-30e6 epsc0=-0.002 fpcu=-6e6 epscu=-0.0035"
+sed -i 's/patch rect c /patch rect c\\ /; s/layer straight m /layer straight m\\ /g' \
+  "$work/fibre-names.prm"
+names=(--set "Building 1/Name=my bldg\\" --set "Time integration/End time=0.05")
+"$poundfe" export-opensees "$work/fibre-names.prm" --output "$work/fibre-names" "${fibre_pair[@]}" \
+  "${names[@]}" > "$work/fibre-names.log" 2>&1 || { cat "$work/fibre-names.log"; fail "names: export"; }
+"$poundfe" opensees "$work/fibre-names/model.tcl" "$work/fibre-names" \
+  > "$work/fibre-names.os.log" 2>&1 || { cat "$work/fibre-names.os.log"; fail "names: poundfe opensees"; }
+grep -q "^status 0 " "$work/fibre-names.os.log" || { cat "$work/fibre-names.os.log"; fail "names: analyze"; }
+"$python" - "$work/fibre-names/model.tcl" <<'PY' || fail "names: the comments' words"
+import re, shlex, sys
+script = open(sys.argv[1]).read()
+columns = shlex.split(re.search(r"columns: time (.*)", script).group(1))
+assert columns[0] == "my bldg\\_floor1_disp_m", columns
+assert re.search(r';# "m\\\\"$', script, re.M), "material m\\"
+assert re.search(r';# "my bldg\\\\_C1.1"$', script, re.M), "member my bldg\\_C1.1"
+PY
+echo "ok ElasticPP's epsyN, names in comments"
 
 # refusals by entry, nothing written
 refused() { # NAME EXPECTED-ENTRY-AND-MESSAGE-PART
@@ -267,6 +338,11 @@ refused_law() { # LAW EXPECTED-MESSAGE-PART
   grep -qF -- "$2" "$dir.err" || { cat "$dir.err"; fail "$1: message"; }
   [ ! -e "$dir/model.tcl" ] || fail "$1: model.tcl written"
 }
+# a Hysteretic fibre material: by the Materials entry that defines it
+fibre_materials "$work/fibre-hysteretic.prm" \
+  "m: Hysteretic s1p=3e8 e1p=0.0015 s2p=4e8 e2p=0.02 s1n=-3e8 e1n=-0.0015 s2n=-4e8 e2n=-0.02; $concrete"
+inputs=$work refused_with fibre-hysteretic hysteretic "fibre-hysteretic.prm:22: parameter 'Sections/Materials': export-opensees writes no Hysteretic fibre material (material 'm', used by Section 2)" \
+  "${fibre_pair[@]}"
 refused_law hertz-damp "'Contact/Law': export-opensees writes the contact laws linear, hertz and jankowski; 'hertz-damp' not: OpenSees's Hertzdamp takes the approach velocity"
 refused_law kelvin-voigt "ViscoelasticGap lets the force k d + c d' turn negative"
 refused three-storey-free-vibration "'Building 1/Damping/Type': modal damping"

@@ -86,6 +86,13 @@ namespace poundfe
     unsigned int test_iterations = 50;
   };
 
+  /// A name (a building's, a member's, a material's) as one word of the
+  /// script's comments: in double quotes, with a backslash before " and \,
+  /// when it has a blank, a quote or a backslash, so that `my bldg` stays one
+  /// word and no name ends a comment's line with a backslash, which Tcl
+  /// would join to the next line.
+  std::string comment_word(const std::string &name);
+
   /// The OpenSees description of `analysis` under `parameters`' excitation
   /// (`excitation`, made from them). Throws InputError naming the first
   /// entry OpenSees cannot express the same way.
