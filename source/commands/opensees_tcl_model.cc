@@ -675,6 +675,11 @@ namespace poundfe
             // poundfe's law defaults to 20 (cR1 and cR2 agree)
             if (type == "Steel02" && values.size() == 3)
               p.values["R0"] = 15.0;
+            // OpenSees's ElasticPP takes a given epsyN of 0 as no compressive
+            // strength (a tension-only bar); poundfe's law reads +0 as not
+            // given (symmetric) and -0 as given
+            if (type == "ElasticPP" && values.size() >= 3 && values[2] == 0)
+              p.values["epsyN"] = -0.0;
             if (type == "ViscousDamper" && p.values.at("Alpha") < 0)
               {
                 s.warnings << "ViscousDamper::ViscousDamper -- Alpha < 0.0, setting to 1.0\n";

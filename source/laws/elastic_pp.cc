@@ -1,6 +1,7 @@
 // ElasticPP: elastic-perfectly-plastic with an initial strain.
 //   sigma_trial = E (eps - eps0 - eps_p);
-//   elastic while -E epsyN' < sigma_trial < E epsyP (epsyN' = |epsyN|):
+//   elastic while -E epsyN' < sigma_trial < E epsyP (epsyN' = |epsyN|; a
+//   given epsyN of -0 is no compressive strength, +0 not given, -epsyP):
 //     sigma = sigma_trial, tangent E;
 //   otherwise sigma = E epsyP or -E |epsyN|, tangent 0, and the plastic
 //   strain eps_p grows by the excess (sigma_trial - sigma) / E.
@@ -22,9 +23,12 @@ namespace poundfe
   {
     require_positive("ElasticPP", "E", p.E);
     require_positive("ElasticPP", "epsyP", p.epsyP);
-    if (p.epsyN == 0) // not given: symmetric, as OpenSees
+    if (p.epsyN == 0 && !std::signbit(p.epsyN)) // not given: symmetric, as OpenSees
       p.epsyN = -p.epsyP;
-    require_positive("ElasticPP", "epsyN", std::abs(p.epsyN));
+    // -0: given as zero, no compressive strength (OpenSees's ElasticPP of a
+    // given epsyN = 0)
+    if (p.epsyN != 0)
+      require_positive("ElasticPP", "epsyN", std::abs(p.epsyN));
     if (!std::isfinite(p.eps0))
       refuse_parameter("ElasticPP", "eps0", "must be a finite number");
     p.epsyN = -std::abs(p.epsyN);

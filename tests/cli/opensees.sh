@@ -172,6 +172,26 @@ foreach direction {3 6} {
     analyze 1
     check "planar rotation -dir $direction" [nodeDisp 2 3] 0.02
 }
+# ElasticPP beside an elastic spring (1000) pushed by 100 in compression: a
+# given epsyN of 0 is no compressive strength (OpenSees 3.8: -0.1), none given
+# is symmetric (-0.07: yield at 30), -0.005 yields at 15 (-0.085)
+foreach {arguments expected} {{3000.0 0.01 0.0} -0.1 {3000.0 0.01} -0.07 {3000.0 0.01 -0.005} -0.085} {
+    wipe
+    model basic -ndm 1 -ndf 1
+    node 1 0.0
+    node 2 0.0
+    fix 1 1
+    eval uniaxialMaterial ElasticPP 1 $arguments
+    uniaxialMaterial Elastic 2 1000.0
+    element zeroLength 1 1 2 -mat 1 2 -dir 1 1
+    pattern Plain 1 Linear { load 2 -100.0 }
+    test NormDispIncr 1e-12 20
+    algorithm Newton
+    integrator LoadControl 1.0
+    analysis Static
+    analyze 1
+    check "ElasticPP $arguments in compression" [nodeDisp 2 1] $expected
+}
 # Series of two springs: k1 k2 / (k1 + k2) beside the elastic one
 wipe
 model basic -ndm 1 -ndf 1
@@ -332,7 +352,7 @@ foreach element {forceBeamColumn dispBeamColumn} {
 TCL
 "$poundfe" opensees "$work/materials/m.tcl" > "$work/materials/log" 2>&1 \
   || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
-[ "$(grep -c '^ok ' "$work/materials/log")" = 35 ] || { cat "$work/materials/log"; fail "materials"; }
+[ "$(grep -c '^ok ' "$work/materials/log")" = 38 ] || { cat "$work/materials/log"; fail "materials"; }
 
 # 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
 bad() { # NAME EXPECTED (the script on standard input)
