@@ -1027,6 +1027,24 @@ namespace poundfe
         }
       return length;
     }
+
+    /// The scale of Newton's tests that is not finite, empty if none: a floor,
+    /// first residual or first work that overflowed (|x|^2 beyond 1e308 at
+    /// forces of ~1e154) would accept any iterate, the zero correction too.
+    std::string
+    non_finite_scale(const double floor, const double first_residual, const double first_energy)
+    {
+      const auto text = [](const char *what, const double x) {
+        return std::string(what) + " is not finite (" + number_text(x) + ")";
+      };
+      if (!std::isfinite(floor))
+        return text("the residual floor (the size of the step's forces)", floor);
+      if (!std::isfinite(first_residual))
+        return text("the first residual norm", first_residual);
+      if (!std::isfinite(first_energy))
+        return text("the first correction's work", first_energy);
+      return {};
+    }
   } // namespace
 
   bool
@@ -1076,6 +1094,13 @@ namespace poundfe
         if (it == 0 && !extrapolated)
           first_residual = norm;
         const double floor = residual_floor;
+        if (const std::string scale = non_finite_scale(floor, first_residual, first_energy);
+            !agreed(scale.empty(), "a Newton scale became non-finite on another rank"))
+          {
+            if (!scale.empty())
+              failure = "Newton iteration " + std::to_string(it) + ": " + scale;
+            return false;
+          }
         if (it == 0 && norm <= floor)
           return true;
         NewtonCheck check{};
@@ -1113,6 +1138,15 @@ namespace poundfe
                                              newton.residual_tolerance * first_residual),
                     "another rank's tangent is singular"))
           return false;
+        if (const Eigen::Index i = first_non_finite(increment);
+            !agreed(i < 0, "the Newton correction became non-finite on another rank"))
+          {
+            if (i >= 0)
+              failure = "Newton iteration " + std::to_string(it) +
+                        ": the correction became non-finite (" + number_text(increment[i]) +
+                        " at " + equation_text(i) + ")";
+            return false;
+          }
         if (distribution) // the owners' increments at the ghost equations
           distribution->update_ghosts(increment);
         if (it == 0 && !extrapolated)
