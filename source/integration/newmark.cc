@@ -1031,6 +1031,8 @@ namespace poundfe
     /// The scale of Newton's tests that is not finite, empty if none: a floor,
     /// first residual or first work that overflowed (|x|^2 beyond 1e308 at
     /// forces of ~1e154) would accept any iterate, the zero correction too.
+    /// A non-finite correction needs no test of its own: at the next iterate
+    /// an element refuses it (naming itself) or the residual is non-finite.
     std::string
     non_finite_scale(const double floor, const double first_residual, const double first_energy)
     {
@@ -1138,15 +1140,6 @@ namespace poundfe
                                              newton.residual_tolerance * first_residual),
                     "another rank's tangent is singular"))
           return false;
-        if (const Eigen::Index i = first_non_finite(increment);
-            !agreed(i < 0, "the Newton correction became non-finite on another rank"))
-          {
-            if (i >= 0)
-              failure = "Newton iteration " + std::to_string(it) +
-                        ": the correction became non-finite (" + number_text(increment[i]) +
-                        " at " + equation_text(i) + ")";
-            return false;
-          }
         if (distribution) // the owners' increments at the ghost equations
           distribution->update_ghosts(increment);
         if (it == 0 && !extrapolated)
