@@ -1096,11 +1096,12 @@ namespace poundfe
         if (it == 0 && !extrapolated)
           first_residual = norm;
         const double floor = residual_floor;
-        if (const std::string scale = non_finite_scale(floor, first_residual, first_energy);
-            !agreed(scale.empty(), "a Newton scale became non-finite on another rank"))
+        // the same on every rank (norms and dots over ranks): no agreement
+        if (!std::isfinite(floor) || !std::isfinite(first_residual) ||
+            !std::isfinite(first_energy))
           {
-            if (!scale.empty())
-              failure = "Newton iteration " + std::to_string(it) + ": " + scale;
+            failure = "Newton iteration " + std::to_string(it) + ": " +
+                      non_finite_scale(floor, first_residual, first_energy);
             return false;
           }
         if (it == 0 && norm <= floor)
