@@ -3,6 +3,8 @@
 // the dense products give the sparse ones' bits).
 #include <poundfe/integration/fixed_size_step.h>
 
+#include <poundfe/base/exceptions.h>
+
 #include <Eigen/SparseCholesky>
 
 #include <array>
@@ -154,18 +156,19 @@ namespace poundfe
         : base(std::move(base))
       {}
 
-      void analyze(const SparseMatrix &matrix) override
-      {
-        base->analyze(matrix);
-        ldlt.analyzePattern(matrix);
-      }
+      /// Our own analysis only: the base is never factorised (its solve is
+      /// not used), so a refactorised tangent costs one factorisation. No
+      /// reuse_analysis (LinearSolver's false): a reused analysis would skip
+      /// this, and our own ldlt would be factorised unanalysed.
+      void analyze(const SparseMatrix &matrix) override { ldlt.analyzePattern(matrix); }
 
-      /// The base's factorisation (and its checks), then the same factors
-      /// of our own analysis, copied into fixed size.
+      /// eigen-ldlt's factors (and its singularity checks) of our own
+      /// analysis, copied into fixed size.
       void factorize(const SparseMatrix &matrix) override
       {
-        base->factorize(matrix);
         ldlt.factorize(matrix);
+        if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() == 0).any())
+          throw NumericalError("Eigen LDLT: the effective matrix is singular");
         // L's stored entries (strictly lower; its unit diagonal is implied)
         lower.setZero();
         const SparseMatrix &factor = ldlt.matrixL().nestedExpression();
@@ -204,12 +207,6 @@ namespace poundfe
         x.resize(N);
         for (int j = 0; j < N; ++j)
           x[inverse_permutation[j]] = y[j];
-      }
-
-      bool reuse_analysis(const LinearSolver &analysed, const SparseMatrix &matrix) override
-      {
-        const auto *other = dynamic_cast<const FixedSizeLdltSolver *>(&analysed);
-        return base->reuse_analysis(other ? *other->base : analysed, matrix);
       }
 
       std::string name() const override { return base->name(); }

@@ -1076,6 +1076,26 @@ namespace poundfe
         }
       return length;
     }
+
+    /// The scale of Newton's tests that is not finite, empty if none: a floor,
+    /// first residual or first work that overflowed (|x|^2 beyond 1e308 at
+    /// forces of ~1e154) would accept any iterate, the zero correction too.
+    /// A non-finite correction needs no test of its own: at the next iterate
+    /// an element refuses it (naming itself) or the residual is non-finite.
+    std::string
+    non_finite_scale(const double floor, const double first_residual, const double first_energy)
+    {
+      const auto text = [](const char *what, const double x) {
+        return std::string(what) + " is not finite (" + number_text(x) + ")";
+      };
+      if (!std::isfinite(floor))
+        return text("the residual floor (the size of the step's forces)", floor);
+      if (!std::isfinite(first_residual))
+        return text("the first residual norm", first_residual);
+      if (!std::isfinite(first_energy))
+        return text("the first correction's work", first_energy);
+      return {};
+    }
   } // namespace
 
   bool
@@ -1125,6 +1145,14 @@ namespace poundfe
         if (it == 0 && !extrapolated)
           first_residual = norm;
         const double floor = residual_floor;
+        // the same on every rank (norms and dots over ranks): no agreement
+        if (!std::isfinite(floor) || !std::isfinite(first_residual) ||
+            !std::isfinite(first_energy))
+          {
+            failure = "Newton iteration " + std::to_string(it) + ": " +
+                      non_finite_scale(floor, first_residual, first_energy);
+            return false;
+          }
         if (it == 0 && norm <= floor)
           return true;
         NewtonCheck check{};

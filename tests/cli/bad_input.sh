@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every bad-input class: exit status 1, one message naming the file and what
 # was wrong (the '# expect:' line of each file), and no output directory.
-# A missing parameter file, and a numerical failure (exit 2), as well.
+# A missing parameter file, and numerical failures (exit 2), as well.
 # A file's '# command:' line names the command to run it with (run by default).
 set -u
 poundfe=$1
@@ -49,6 +49,9 @@ for f in summary.json hinges.csv energy.csv drift.csv; do
   [ -s "$work/out/$f" ] || { echo "FAIL newton-failure: results so far not kept ($f)"; failures=$((failures + 1)); }
 done
 grep -q '"status": "failed"' "$work/out/summary.json" || { echo "FAIL newton-failure: status"; failures=$((failures + 1)); }
+# forces whose squares overflow: a failure naming the quantity, not exit 0 with zeros
+check "$dir/../overflowing-forces.prm" 2 "failed even at dt" "from t = 0 s" "is not finite (inf)"
+[ -s "$work/out/summary.json" ] || { echo "FAIL overflowing-forces: results so far not kept"; failures=$((failures + 1)); }
 check "$dir/../reliability-form-failure.prm" 2 "its gradient is zero at the start"
 grep -q '"status": "failed"' "$work/out/summary.json" || { echo "FAIL reliability-form-failure: status"; failures=$((failures + 1)); }
 echo "$n bad-input files, $failures failures"
