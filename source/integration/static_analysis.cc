@@ -125,6 +125,13 @@ namespace poundfe
       {
         if (!residual(load, u, r))
           return false;
+        // an overflowed norm would pass (or never pass) the test below unnoticed
+        if (!std::isfinite(r.norm()) || !std::isfinite(target))
+          {
+            why = "the load or residual norm is not finite (" + number_text(r.norm()) +
+                  ", load " + number_text(load.norm()) + ")";
+            return false;
+          }
         if (r.norm() <= target)
           return true;
         if (last_iterations == max_iterations)

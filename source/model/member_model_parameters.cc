@@ -178,5 +178,9 @@ namespace poundfe
                  "a distributed self-weight is a load of the gravity analysis: set "
                  "Model/Gravity analysis/Type = static");
     input.non_negative(s + "Member unit weight", member_unit_weight);
+    // the bound of masses and stiffnesses (dynamics/analysis.cc): beyond it the
+    // gravity analysis' residual norm overflows
+    input.at_most(s + "Member unit weight", member_unit_weight, largest_model_value, "N/m^3",
+                  "beyond any material");
   }
 } // namespace poundfe

@@ -90,6 +90,16 @@ namespace poundfe
       return rank + 1;
     }
 
+    /// 1-based bay holding x: the number of column lines left of x. A piece
+    /// of a beam split into several elements is placed by its midpoint, which
+    /// lies inside its bay whichever piece it is; a beam left of every line
+    /// counts as bay 1.
+    unsigned int
+    bay_of(const std::vector<double> &column_lines, const double x, const double tolerance)
+    {
+      return std::max(rank_of(column_lines, x, tolerance) - 1, 1u);
+    }
+
     /// Label every member of a building by its place: C<storey>.<column line>
     /// for columns, B<floor>.<bay> for beams (lines and bays counted from the
     /// left, 1-based), M<n> for other members. The pieces of a member split
@@ -131,8 +141,7 @@ namespace poundfe
                     std::to_string(rank_of(column_lines, p0.x, tolerance));
           else if (member.kind == MemberKind::beam)
             where = "B" + std::to_string(floor_above(p0.y)) + "." +
-                    std::to_string(rank_of(column_lines, std::min(p0.x, p1.x) + tolerance,
-                                           tolerance));
+                    std::to_string(bay_of(column_lines, 0.5 * (p0.x + p1.x), tolerance));
           else
             where = "M" + std::to_string(m - first_member + 1);
           member.label = building.name + "_" + where;

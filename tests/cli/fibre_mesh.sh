@@ -15,8 +15,9 @@
 #     count of names that is neither one nor the groups', a rigidity entry
 #     (Group E) in a fibre mesh, a physical id the Group ids do not list, a
 #     distributed self-weight without a gravity analysis, a unit weight with
-#     the nodal self-weight: exit 1, one line naming file, line and entry,
-#     nothing written.
+#     the nodal self-weight, a unit weight beyond 1e150: exit 1, one line
+#     naming file, line and entry, nothing written; floor loads of 1e200,
+#     whose norm overflows: the gravity analysis fails, exit 2.
 #   fibre_mesh.sh POUNDFE
 set -u
 poundfe=$1
@@ -213,5 +214,12 @@ expect 1 "Member self-weight': a distributed self-weight is a load of the gravit
 model "${mesh_entries/distributed/nodal}" > unit.prm
 expect 1 "Member unit weight': has effect only with Member self-weight = distributed" \
   run unit.prm --output out
+model "${mesh_entries/25e3/1e160}" > huge-weight.prm
+expect 1 "Member unit weight': got 1e+160 N/m^3, at most 1e+150" run huge-weight.prm --output out
+# floor loads whose norm overflows: the gravity analysis fails (exit 2)
+# instead of passing its convergence test with no iteration
+model "${mesh_entries}
+  set Floor loads = 1e200" > huge-load.prm
+expect 2 "norm is not finite" modal huge-load.prm --output out
 [ "$failures" -eq 0 ] || { echo "$failures checks failed"; exit 1; }
 echo "fibre meshes: all checks passed"

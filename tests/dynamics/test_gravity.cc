@@ -206,7 +206,8 @@ namespace
   /// (unit weight 25e3 N/m^3), elastic members or fibre members on a
   /// two-fibre elastic section of the same EA and EI (Linear columns).
   std::string
-  self_weight_frame(const bool fibre, const std::string &element = "force")
+  self_weight_frame(const bool fibre, const std::string &element = "force",
+                    const std::string &extra = "")
   {
     const std::string members =
       fibre ? " set Member model = fibre\n set Member element = " + element +
@@ -224,8 +225,19 @@ namespace
            " set Number of storeys = 2\n set Number of bays = 1\n set Storey heights = 3.5, 3\n"
            " set Bay widths = 5\n set Floor masses = 3e4, 2e4\n"
            " set Member self-weight = distributed\n set Member unit weight = 25e3\n" +
-           members + " subsection Damping\n  set Type = coefficients\n  set a0 = 0.3\n"
+           members + extra + " subsection Damping\n  set Type = coefficients\n  set a0 = 0.3\n"
            "  set a1 = 0.002\n end\nend\n" + motionless;
+  }
+
+  /// The local end forces of member `label` at the gravity state.
+  Vector6
+  gravity_end_forces(const Analysis &a, const std::string &label)
+  {
+    NonlinearElements elements = make_nonlinear_elements(a.model);
+    restore_static_state(a.gravity.path, a.gravity.path_factors, elements);
+    const StoreyForces forces(a.model, elements);
+    BOOST_REQUIRE(forces.has_member(label));
+    return forces.member_end_forces(label, a.gravity.displacement);
   }
 
   /// The sum of the base columns' axial end forces (local x at their
@@ -233,16 +245,7 @@ namespace
   double
   base_column_forces(const Analysis &a)
   {
-    NonlinearElements elements = make_nonlinear_elements(a.model);
-    restore_static_state(a.gravity.path, a.gravity.path_factors, elements);
-    const StoreyForces forces(a.model, elements);
-    double             sum = 0;
-    for (const std::string label : {"F_C1.1", "F_C1.2"})
-      {
-        BOOST_REQUIRE(forces.has_member(label));
-        sum += forces.member_end_forces(label, a.gravity.displacement)[0];
-      }
-    return sum;
+    return gravity_end_forces(a, "F_C1.1")[0] + gravity_end_forces(a, "F_C1.2")[0];
   }
 } // namespace
 
@@ -287,6 +290,36 @@ BOOST_AUTO_TEST_CASE(a_run_holds_the_distributed_self_weight)
       const auto [difference, scale] = largest_difference(run, a.gravity.displacement);
       BOOST_TEST(scale > 1e-5);
       BOOST_TEST(difference <= 1e-12 * scale);
+    }
+}
+
+// A beam split into 3 elements (Elements per member = 3) reports the end
+// forces of the unsplit beam at both its ends, its label naming every piece
+// and no piece of another bay (before, the middle and last pieces were
+// placed in bay 2, so end J read 0): against the unsplit member to 1e-9 of
+// the largest force (uniform loads are exact in each element), and each
+// end's shear against the closed form q L / 2 of the symmetric frame (q =
+// 25e3 A, L = 5; to 1e-9).
+BOOST_AUTO_TEST_CASE(split_beams_keep_their_end_forces)
+{
+  const double half_span_load = 25e3 * 0.16 * 5 / 2;
+  for (const bool fibre : {false, true})
+    {
+      const Analysis whole = prepare_analysis(
+        poundfe_test::input_of("weight_whole", self_weight_frame(fibre)));
+      const Analysis split = prepare_analysis(poundfe_test::input_of(
+        "weight_split", self_weight_frame(fibre, "force", " set Elements per member = 3\n")));
+      BOOST_REQUIRE(split.model.members.size() == 3 * whole.model.members.size());
+      for (const std::string label : {"F_B1.1", "F_B2.1"})
+        {
+          const Vector6 reference = gravity_end_forces(whole, label);
+          const Vector6 pieces    = gravity_end_forces(split, label);
+          const double  largest   = reference.lpNorm<Eigen::Infinity>();
+          BOOST_TEST(largest > 1e3);
+          BOOST_TEST((pieces - reference).lpNorm<Eigen::Infinity>() <= 1e-9 * largest);
+          BOOST_TEST(std::abs(pieces[1]) == half_span_load, boost::test_tools::tolerance(1e-9));
+          BOOST_TEST(std::abs(pieces[4]) == half_span_load, boost::test_tools::tolerance(1e-9));
+        }
     }
 }
 
