@@ -154,7 +154,8 @@ BOOST_AUTO_TEST_CASE(building_entries_use_the_type_tags)
         BOOST_TEST((tag == "[frame]" || tag == "[shear]" || tag == "[mesh]" ||
                     tag == "[frame, shear]" || tag == "[frame, mesh]" || tag == "[3D]" ||
                     tag == "[3D shear]" || tag == "[3D frame]" || tag == "[3D mesh]" ||
-                    tag == "[3D frame, mesh]" || tag == "[frame, fibre]"),
+                    tag == "[3D frame, mesh]" || tag == "[frame, fibre]" ||
+                    tag == "[frame, mesh, fibre]" || tag == "[mesh, fibre]"),
                    path << ": tag " << tag);
         BOOST_TEST(path.rfind("Building 1/", 0) == 0u, path << " is tagged outside a building");
         ++n_tagged;
