@@ -323,7 +323,7 @@ refused_with two-buildings rayleigh "'Building 2/Damping/Type': its stiffness-pr
 refused_with three-storey-frame-hinges bouc-wen-a "'Building 1/Bouc-Wen/A': export-opensees writes hinges of A = 1 only" \
   --set "Building 1/Bouc-Wen/A=0.9"
 refused_with fibre-frame-pounding self-weight "'Building 1/Member self-weight': export-opensees writes no element loads" \
-  --set "Building 1/Member self-weight=distributed"
+  --set "Building 1/Member self-weight=distributed" --set "Building 1/Member unit weight=25000" "${fibre_pair[@]}"
 refused pushover-frame "'Model/Geometric nonlinearity': export-opensees writes no P-Delta"
 refused 3d-torsional-pair "'Building 1/Hinges/Locations': export-opensees writes 3D frames without hinges"
 refused 3d-torsional-shear-pair "'Building 1/Type': export-opensees writes 3D frames only"
