@@ -47,6 +47,9 @@ CASES = {
     # dispBeamColumns of fibre sections, PDelta columns
     "portal_element_loads": ("portal_element_loads.tcl", [], 1e-9),
     "portal_element_loads_fibre": ("portal_element_loads.tcl", ["fibre"], 1e-9),
+    # the same on forceBeamColumns (the sections carry s = b q + s_p):
+    # gravity by element loads, loadConst, then the record
+    "portal_element_loads_force": ("portal_element_loads.tcl", ["force"], 1e-9),
     "frame_hht": ("fibre_frame_record.tcl", ["committed", "Newton", "HHT 0.8"], 1e-9),
     "pounding_hht": ("pounding_sticks.tcl",
                      ["ImpactMaterial", "Newton", "NormDispIncr", "HHT 0.9"], 1e-9),
@@ -116,6 +119,16 @@ CASES = {
     # forceBeamColumn columns and dispBeamColumn beams on 3D fibre sections
     # (-GJ), gravity then two components
     "frame_3d_fibre": ("fibre_frame_3d.tcl", [], 1e-6),
+    # the same with element loads in space (eleLoad -beamUniform Wy Wz Wx on
+    # the forceBeamColumn columns and dispBeamColumn beams), and on members
+    # of 3D Aggregator sections (P, Mz, My, T; Mz and My yield)
+    "frame_3d_loads": ("fibre_frame_3d.tcl", ["loads"], 1e-6),
+    "frame_3d_aggregator": ("fibre_frame_3d.tcl", ["aggregator"], 1e-9),
+    # Rayleigh damping by region (-ele, -node, -eleOnly over a domain's
+    # rayleigh) and twoNodeLink -mass with and without -doRayleigh, a gap
+    # between two frames; then one rayleigh after the regions, which clears them
+    "region_damping": ("region_damping.tcl", [], 1e-9),
+    "region_damping_uniform": ("region_damping.tcl", ["uniform"], 1e-9),
     # ElasticPPGap with Fy > 0 and gap < 0: strain 0 is past the yield strain,
     # yet the virgin elastic range stays [gap, Fy/E + gap] (OpenSees 3.8's
     # constructor, with its warning on the alternate signs)

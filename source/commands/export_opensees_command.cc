@@ -68,6 +68,12 @@ namespace poundfe
       if (e.member_stiffness_damping != 0)
         tcl << "# the members' a1 K of the Rayleigh damping (betaKinit)\n"
             << "rayleigh 0.0 0.0 " << e.member_stiffness_damping << " 0.0\n";
+      if (!e.damping_regions.empty())
+        tcl << "# each frame's a1 K of the Rayleigh damping (betaKinit) on its members and "
+               "hinges\n";
+      for (const OpenSeesExport::DampingRegion &r : e.damping_regions)
+        tcl << "region " << r.building << " -eleOnly" << joined(r.elements) << " -rayleigh 0.0 0.0 "
+            << r.a1 << " 0.0 ;# " << comment_word(r.name) << "\n";
       tcl << "# the ground motion, a_g (m/s^2) at the time step\n"
           << "timeSeries Path 1 -dt " << e.time_step
           << " -filePath [file join $here ground_motion.txt]\n"

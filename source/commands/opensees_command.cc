@@ -210,8 +210,8 @@ namespace poundfe
       define_unsupported(Tcl_Interp *interp, Session &session)
       {
         for (const char *name :
-             {"fixX", "fixY", "fixZ", "region", "remove",
-              "imposedMotion", "groundMotion", "modalDamping", "setElementRayleighDampingFactors",
+             {"fixX", "fixY", "fixZ", "remove",
+              "imposedMotion", "groundMotion", "modalDamping",
               "printA", "printB", "printModel", "print",
               "basicDeformation", "basicForce", "localForce", "testIter", "testNorm", "getNP",
               "getPID", "reset", "block2D", "block3D", "nDMaterial", "frictionModel",
@@ -327,6 +327,7 @@ namespace poundfe
       define_model_commands(interp, session);
       define_analysis_commands(interp, session);
       define_section_commands(interp, session);
+      define_region_commands(interp, session);
       define_unsupported(interp, session);
       define_exit(interp, session);
       define_poundfe_namespace(interp, session);

@@ -4,7 +4,8 @@
 // analysis and recorders; opensees/) and the helpers of the command
 // procedures. The commands are in opensees_tcl_model.cc (model, loads,
 // recorders), opensees_tcl_sections.cc (sections, beam integrations,
-// beam-column elements) and opensees_tcl_analysis.cc (analysis and queries).
+// beam-column elements), opensees_tcl_regions.cc (region, damping by
+// element) and opensees_tcl_analysis.cc (analysis and queries).
 #ifndef poundfe_commands_opensees_tcl_h
 #define poundfe_commands_opensees_tcl_h
 
@@ -116,8 +117,13 @@ namespace poundfe
     /// Adds the element; ScriptError when its tag exists already.
     void add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element);
     /// A member's mass per length rho, lumped: rho L/2 on each node's
-    /// translations (OpenSees's beam-columns without -cMass).
-    void add_lumped_mass(opensees::Domain &d, const std::array<int, 2> &nodes, double rho);
+    /// translations (OpenSees's beam-columns without -cMass), as the
+    /// element's (opensees::Domain::LumpedMass).
+    void add_lumped_mass(opensees::Domain &d, int element, const std::array<int, 2> &nodes,
+                         double rho);
+    /// m on each translation of both nodes, as the element's.
+    void add_node_masses(opensees::Domain &d, int element, const std::array<int, 2> &nodes,
+                         double m);
     /// element forceBeamColumn | nonlinearBeamColumn | dispBeamColumn (after
     /// the type).
     void beam_column_element(Session &session, Words &words, const std::string &type);
@@ -133,6 +139,8 @@ namespace poundfe
     void define_model_commands(Tcl_Interp *interp, Session &session);
     void define_section_commands(Tcl_Interp *interp, Session &session);
     void define_analysis_commands(Tcl_Interp *interp, Session &session);
+    /// region (opensees_tcl_regions.cc).
+    void define_region_commands(Tcl_Interp *interp, Session &session);
   } // namespace opensees_tcl
 } // namespace poundfe
 

@@ -283,7 +283,7 @@ namespace poundfe
         else
           add_element(d, opensees::make_elastic_beam_2d(d, tag, nodes, section.A, section.E,
                                                         section.Iz, t->second));
-        add_lumped_mass(d, nodes, rho);
+        add_lumped_mass(d, tag, nodes, rho);
       }
 
       void
@@ -396,7 +396,7 @@ namespace poundfe
       }
 
       /// twoNodeLink tag i j -mat m1 m2 ... -dir d1 d2 ... <-orient <x1 x2 x3>
-      /// yp1 yp2 yp3> <-pDelta ratios> <-shearDist ratios> <-doRayleigh>
+      /// yp1 yp2 yp3> <-pDelta ratios> <-shearDist ratios> <-doRayleigh> <-mass m>
       /// (OpenSees's order: -mat, then -dir, then the options). A bad word is
       /// named, as is the word where a missing value is due.
       void
@@ -420,12 +420,17 @@ namespace poundfe
               data.shear_distance = link_option_values(w, link, option, {distances}, model);
             else if (option == "-doRayleigh")
               data.rayleigh = true;
+            else if (option == "-mass")
+              data.mass = link_option_values(w, link, option, {1})[0];
             else if (option[0] != '-')
               throw ScriptError(link + ": '" + option + "' where an option is due");
             else
               unsupported("element twoNodeLink option '" + option + "'");
           }
+        if (data.mass < 0)
+          throw ScriptError(link + ": -mass must not be negative");
         add_element(d, opensees::make_two_node_link(d, tag, data));
+        add_node_masses(d, tag, data.nodes, 0.5 * data.mass); // TwoNodeLink::getMass
       }
 
       /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>
@@ -455,7 +460,7 @@ namespace poundfe
           }
         add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
         if (d.ndm == 2)
-          add_lumped_mass(d, nodes, rho);
+          add_lumped_mass(d, tag, nodes, rho);
         else if (rho != 0)
           unsupported("element truss -rho outside -ndm 2");
       }
@@ -969,7 +974,8 @@ namespace poundfe
         d.changed = true;
       }
 
-      /// eleLoad (-ele tag ... | -range first last) -type -beamUniform Wy <Wx>.
+      /// eleLoad (-ele tag ... | -range first last) -type -beamUniform Wy <Wx>
+      /// (in 3D: Wy Wz <Wx>).
       void
       element_load(Session &s, Words &w)
       {
@@ -996,9 +1002,12 @@ namespace poundfe
           unsupported("eleLoad -type " + type);
         opensees::BeamUniformLoad load;
         load.wy = w.real("Wy");
+        if (d.ndm == 3)
+          load.wz = w.real("Wz");
         load.wx = w.done() ? 0.0 : w.real("Wx");
         if (!w.done())
-          unsupported("eleLoad -beamUniform with more than Wy and Wx");
+          unsupported(d.ndm == 3 ? "eleLoad -beamUniform with more than Wy, Wz and Wx" :
+                                   "eleLoad -beamUniform with more than Wy and Wx");
         for (const int tag : tags)
           {
             const auto it = d.elements.find(tag);
@@ -1006,8 +1015,8 @@ namespace poundfe
               throw ScriptError("element " + std::to_string(tag) + " does not exist");
             if (!it->second->takes_beam_loads())
               unsupported("eleLoad on element " + std::to_string(tag) +
-                           " (only elasticBeamColumn and dispBeamColumn on a Linear or PDelta "
-                          "transformation take it)");
+                          " (only elasticBeamColumn in the plane, and forceBeamColumn and "
+                          "dispBeamColumn, on a Linear or PDelta transformation take it)");
             load.element = tag;
             pattern.beam_loads.push_back(load);
           }
@@ -1042,6 +1051,11 @@ namespace poundfe
         r.beta_k_committed            = w.real("betaKcomm");
         if (!w.done())
           unsupported("rayleigh with more than 4 values");
+        // OpenSees's Domain::setRayleighDampingFactors sets every element's
+        // and node's: a region's factors are gone
+        model_domain(s).element_rayleigh.clear();
+        model_domain(s).node_alpha_m.clear();
+        model_domain(s).changed = true;
         // OpenSees's K_c starts as the element's tangent now (after gravity:
         // the gravity state's, not the virgin one); every commit renews it
         if (r.beta_k_committed != 0)
@@ -1196,15 +1210,28 @@ namespace poundfe
     }
 
     void
-    add_lumped_mass(opensees::Domain &d, const std::array<int, 2> &nodes, const double rho)
+    add_lumped_mass(opensees::Domain &d, const int element, const std::array<int, 2> &nodes,
+                    const double rho)
     {
       const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
       const double L = a.size() == 3 ? std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) :
                                        std::hypot(b[0] - a[0], b[1] - a[1]);
-      const double m = 0.5 * rho * L;
+      add_node_masses(d, element, nodes, 0.5 * rho * L);
+    }
+
+    void
+    add_node_masses(opensees::Domain &d, const int element, const std::array<int, 2> &nodes,
+                    const double m)
+    {
+      if (m == 0)
+        return;
       for (const int n : nodes)
-        for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
-          d.node(n).element_mass[k] += m;
+        {
+          for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
+            d.node(n).element_mass[k] += m;
+          d.lumped_masses.push_back({element, n, m});
+        }
+      d.changed = true;
     }
 
     void

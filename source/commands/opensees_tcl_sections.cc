@@ -4,8 +4,9 @@
 //   section Fiber tag { patch rect|quad|circ ...; layer straight|circ ...; fiber y z A mat }
 //     (sections/fibre_generators.h: the fibres exactly as OpenSees places
 //     them; the reference axis at the area centroid, as FiberSection2d)
-//   section Aggregator tag mat1 dof1 <mat2 dof2> <-section baseTag>
-//     (dofs P and Mz; the base an Elastic section, or both dofs given)
+//   section Aggregator tag mat1 dof1 <mat2 dof2 ...> <-section baseTag>
+//     (dofs P and Mz, in 3D also My and T; the base an Elastic section
+//     for the dofs not given, or every dof given)
 //   beamIntegration Lobatto|Legendre tag secTag N
 //   beamIntegration HingeRadau tag secI lpI secJ lpJ secInterior
 //   element forceBeamColumn tag i j transfTag integrationTag <-mass rho> <-iter maxIter tol>
@@ -134,7 +135,11 @@ namespace poundfe
             const int mat = w.integer("a material's tag");
             laws.emplace_back(mat, w.word("the material's dof"));
           }
-        SectionVector rigidity(2);
+        // the resultants' order of poundfe's sections: N, Mz (, My, T in space)
+        const std::vector<std::string> names =
+          d.ndm == 3 ? std::vector<std::string>{"P", "Mz", "My", "T"} :
+                       std::vector<std::string>{"P", "Mz"};
+        SectionVector rigidity(names.size());
         rigidity.setConstant(std::numeric_limits<double>::quiet_NaN());
         if (!w.done())
           {
@@ -145,24 +150,40 @@ namespace poundfe
               throw ScriptError("section " + std::to_string(base) + " does not exist");
             if (!dynamic_cast<const ElasticSection *>(it->second.get()))
               unsupported("section Aggregator on a base section other than Elastic");
+            if (it->second->n_resultants() != names.size())
+              throw ScriptError("section " + std::to_string(base) + " is not a " +
+                                (d.ndm == 3 ? "3D" : "plane") + " section");
             rigidity = it->second->initial_tangent().diagonal();
           }
         if (!w.done())
           unsupported("section Aggregator option '" + w.peek() + "'");
         auto section = std::make_shared<AggregatorSection>(rigidity);
-        std::array<bool, 2> has{{false, false}};
+        std::vector<bool> has(names.size(), false);
         for (const auto &[mat, dof] : laws)
           {
-            if (dof != "P" && dof != "Mz")
-              unsupported("section Aggregator dof '" + dof + "' in the plane");
-            const unsigned int r = dof == "P" ? 0 : 1;
+            const auto at = std::find(names.begin(), names.end(), dof);
+            if (at == names.end())
+              unsupported("section Aggregator dof '" + dof + "'" +
+                          (d.ndm == 3 ? "" : " in the plane") + " (it takes " +
+                          (d.ndm == 3 ? "P, Mz, My and T)" : "P and Mz)"));
+            const unsigned int r = at - names.begin();
+            // OpenSees 3.8 would hold two resultants of the code, in series in
+            // a forceBeamColumn and in parallel in a dispBeamColumn
+            if (!std::isnan(rigidity[r]))
+              throw ScriptError("section Aggregator " + std::to_string(tag) + ": dof " + dof +
+                                " is in the -section already (OpenSees 3.8 then has two " + dof +
+                                " resultants: in series in forceBeamColumn, in parallel in "
+                                "dispBeamColumn)");
+            if (has[r])
+              throw ScriptError("section Aggregator " + std::to_string(tag) + ": dof " + dof +
+                                " given twice");
             const MaterialParameters parameters = section_material(d, mat);
             section->set_law(r, [parameters]() { return make_material(parameters); });
             has[r] = true;
           }
-        for (unsigned int r = 0; r < 2; ++r)
+        for (unsigned int r = 0; r < names.size(); ++r)
           if (!has[r] && std::isnan(rigidity[r]))
-            unsupported(std::string("section Aggregator without ") + (r == 0 ? "P" : "Mz") +
+            unsupported("section Aggregator without " + names[r] +
                         " and without an Elastic -section");
         add_section(d, tag, section);
       }
@@ -171,8 +192,7 @@ namespace poundfe
       section(Session &s, Words &w)
       {
         const std::string type = w.word("the section's type");
-        opensees::Domain &d =
-          type == "Aggregator" ? plane_domain(s, "section " + type) : frame_domain(s, "section " + type);
+        opensees::Domain &d = frame_domain(s, "section " + type);
         const int tag = w.integer("the section's tag");
         if (type == "Elastic" && d.ndm == 3)
           {
@@ -429,7 +449,7 @@ namespace poundfe
       else
         add_element(d,
                     opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
-      add_lumped_mass(d, nodes, rho);
+      add_lumped_mass(d, tag, nodes, rho);
     }
 
     void

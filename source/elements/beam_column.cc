@@ -390,7 +390,9 @@ namespace poundfe
         for (unsigned int i = 0; i < this->rule.size(); ++i)
           {
             const Interpolation   b  = force_interpolation(this->rule.points[i]);
-            const ResultantVector ss = b * start.q;
+            // s = b q + s_p at the load's current factor: OpenSees applies
+            // the whole load in every piece (computeSectionForces)
+            const ResultantVector ss = section_forces(i, start.q, this->load_factor);
             const bool initial = pass == 1 || (pass == 2 && j == 0);
             if (initialised)
               start.e[i] += (initial ? ResultantMatrix(initial_section_stiffness[i].inverse()) :
@@ -426,7 +428,8 @@ namespace poundfe
   {
     iterations = pieces = 0;
     BasicVector to_do = v - current.v;
-    if (initialised && to_do.norm() <= std::numeric_limits<double>::epsilon())
+    // a loaded member iterates at every update (OpenSees: numEleLoads > 0)
+    if (initialised && to_do.norm() <= std::numeric_limits<double>::epsilon() && !this->has_load)
       return true;
     BasicVector  dv           = to_do;
     unsigned int subdivisions = 1;
@@ -465,7 +468,6 @@ namespace poundfe
   {
     if (opensees)
       {
-        Assert(!this->has_load, dealii::ExcMessage("OpenSees's iteration takes no element load"));
         const bool ok = opensees_state(v);
         q             = current.q;
         k             = current.kv;

@@ -103,6 +103,7 @@ namespace poundfe
         for (unsigned int k = 0; k < node.fixed.size(); ++k)
           if (node.equation[k] >= 0)
             mass_of_equation[node.equation[k]] += node.mass[k] + node.element_mass[k];
+      number_mass_damping();
       for (auto &[tag, element] : domain.elements)
         {
           element->equations.clear();
@@ -113,6 +114,24 @@ namespace poundfe
       domain.changed = false;
       numbered       = true;
       analysed       = false;
+    }
+
+    /// The masses' damping by equation when regions give alpha_M by element
+    /// and node, or an element's mass is not Rayleigh-damped.
+    void
+    Analysis::number_mass_damping()
+    {
+      uniform_mass_damping = domain.uniform_mass_damping();
+      if (uniform_mass_damping)
+        return;
+      mass_damping_of_equation.setZero(n_equations);
+      for (const auto &[tag, c] : domain.mass_damping())
+        {
+          const Node &node = domain.node(tag);
+          for (unsigned int k = 0; k < c.size(); ++k)
+            if (node.equation[k] >= 0)
+              mass_damping_of_equation[node.equation[k]] += c[k];
+        }
     }
 
     /// OpenSees's RigidDiaphragm as the Transformation handler imposes it:
@@ -318,7 +337,7 @@ namespace poundfe
           f         = element->force();
           if (opts.transient && element->rayleigh_damped()) // materials' own damping is in f
             {
-              element_damping(*element, domain.rayleigh, element_damping_matrix);
+              element_damping(*element, domain.rayleigh_of(tag), element_damping_matrix);
               element_values(*element, v, nullptr, combinations, element_velocity);
               f.noalias() += element_damping_matrix * element_velocity;
             }
@@ -328,14 +347,17 @@ namespace poundfe
       if (!opts.transient)
         return r;
       const std::vector<double> ag = domain.ground_acceleration(trial_time);
+      const double alpha_m = uniform_mass_damping ? domain.rayleigh.alpha_m : 0.0;
       for (const auto &[tag, node] : domain.nodes)
         for (unsigned int k = 0; k < node.equation.size(); ++k)
           if (node.equation[k] >= 0)
             {
               const int    eq = node.equation[k];
               const double m  = node.mass[k] + node.element_mass[k];
-              r[eq] -= m * (A[eq] + ag[k] + domain.rayleigh.alpha_m * v[eq]);
+              r[eq] -= m * (A[eq] + ag[k] + alpha_m * v[eq]);
             }
+      if (!uniform_mass_damping)
+        r -= mass_damping_of_equation.cwiseProduct(v);
       return r;
     }
 
@@ -356,7 +378,7 @@ namespace poundfe
           k *= c_k;
           if (c_c != 0)
             {
-              element_damping(*element, domain.rayleigh, element_damping_matrix);
+              element_damping(*element, domain.rayleigh_of(tag), element_damping_matrix);
               k += c_c * element_damping_matrix;
             }
           const auto &eq = element->equations;
@@ -375,12 +397,14 @@ namespace poundfe
     void
     Analysis::assemble_tangent(const double c_k, const double c_c, const double c_m)
     {
-      const double diagonal = c_m + c_c * domain.rayleigh.alpha_m;
+      const double diagonal = c_m + (uniform_mass_damping ? c_c * domain.rayleigh.alpha_m : 0.0);
       if (dense())
         {
           dense_tangent.setZero(n_equations, n_equations);
           add_element_tangents(c_k, c_c);
           dense_tangent.diagonal() += diagonal * mass_of_equation;
+          if (!uniform_mass_damping)
+            dense_tangent.diagonal() += c_c * mass_damping_of_equation;
           dense_factors.compute(dense_tangent);
           if ((dense_factors.matrixLU().diagonal().array() == 0).any())
             throw NumericalError("LU: the effective matrix is singular");
@@ -390,7 +414,10 @@ namespace poundfe
       tangent_entries.clear();
       add_element_tangents(c_k, c_c);
       for (unsigned int i = 0; i < n_equations; ++i) // the diagonal always in the pattern
-        tangent_entries.emplace_back(i, i, diagonal * mass_of_equation[i]);
+        tangent_entries.emplace_back(i, i,
+                                     diagonal * mass_of_equation[i] +
+                                       (uniform_mass_damping ? 0.0 :
+                                                               c_c * mass_damping_of_equation[i]));
       tangent_matrix.resize(n_equations, n_equations);
       tangent_matrix.setFromTriplets(tangent_entries.begin(), tangent_entries.end());
       if (!solver)
@@ -834,10 +861,11 @@ namespace poundfe
     void
     Analysis::commit()
     {
+      const bool committed_stiffness = domain.committed_stiffness_damping();
       for (auto &[tag, element] : domain.elements)
         {
           element->commit();
-          if (domain.rayleigh.beta_k_committed != 0)
+          if (committed_stiffness)
             element->committed_tangent = element->tangent();
         }
       domain.time = trial_time;

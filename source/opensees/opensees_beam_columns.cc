@@ -1,7 +1,6 @@
 // The distributed-plasticity beam-columns of an OpenSees script in the
 // plane and in space (BeamColumn<2>, BeamColumn<3>; in space on a Linear or
-// PDelta transformation with the geomTransf's vecxz, without element loads,
-// the localForce of ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI, MzI, N, -Vy,
+// PDelta transformation with the geomTransf's vecxz, the localForce of ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI, MzI, N, -Vy,
 // Vz, T, MyJ, MzJ)): forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn on the
 // sections of a `beamIntegration` (elements/beam_column.h: OpenSees's
 // ForceBeamColumn2d and DispBeamColumn2d state determinations), and
@@ -18,7 +17,13 @@
 // element loads as OpenSees's DispBeamColumn2d: the fixed-end basic forces
 // q0 added to q (so to P-Delta's N and its N/L tangent), the basic
 // reactions p0 to the local end forces 0, 1 and 4; the sections do not
-// see the load.
+// see the load. A forceBeamColumn on a Linear or PDelta transformation,
+// and both elements in space, take them through the member's own load
+// (BeamColumn::set_uniform_load at factor 1, the patterns' factors in the
+// load): the force-based sections carry s = b q + s_p (OpenSees's
+// ForceBeamColumn2d/3d::computeSectionForces, the whole load in every
+// iteration), the basic reactions p0 enter the resisting force and
+// localForce as OpenSees's computeReactions gives them.
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/beam_column.h>
 #include <poundfe/opensees/opensees_domain.h>
@@ -35,28 +40,53 @@ namespace poundfe
       class BeamColumnElement : public Element
       {
       public:
+        /// `loads`: none, the displacement-based q0 and p0 kept here, or
+        /// the member's own load (force-based).
+        enum class Loads
+        {
+          none,
+          fixed_end_forces,
+          member
+        };
         BeamColumnElement(const int tag, const std::array<int, 2> nodes,
-                          std::unique_ptr<BeamColumn<2>> beam, const bool takes_loads = false)
+                          std::unique_ptr<BeamColumn<2>> beam, const Loads loads = Loads::none)
           : Element(tag, {nodes[0], nodes[1]})
           , member(std::move(beam))
-          , takes_loads(takes_loads)
+          , takes_loads(loads == Loads::fixed_end_forces)
+          , member_loads(loads == Loads::member)
         {
           q0.setZero();
           p0.setZero();
+          w.setZero();
           committed_tangent = tangent();
         }
 
-        bool takes_beam_loads() const override { return takes_loads; }
+        bool takes_beam_loads() const override { return takes_loads || member_loads; }
         void
         zero_loads() override
         {
           q0.setZero();
           p0.setZero();
+          if (member_loads && !w.isZero(0))
+            {
+              w.setZero();
+              member->set_uniform_load(w);
+            }
         }
         void
-        add_beam_uniform(const double wy, const double wx) override
+        add_beam_uniform(const double wy, const double wx, const double) override
         {
-          add_uniform_beam_load(member->length(), wy, wx, q0, p0);
+          if (!member_loads)
+            {
+              add_uniform_beam_load(member->length(), wy, wx, q0, p0);
+              return;
+            }
+          // the reactions for localForce; the member takes q0's place
+          Eigen::Vector3d unused = Eigen::Vector3d::Zero();
+          add_uniform_beam_load(member->length(), wy, wx, unused, p0);
+          w += MemberLoad<2>(wx, wy);
+          member->set_uniform_load(w);
+          member->set_load_factor(1);
         }
 
         unsigned int n_dofs() const override { return 6; }
@@ -101,8 +131,9 @@ namespace poundfe
 
       private:
         std::unique_ptr<BeamColumn<2>> member;
-        bool                           takes_loads;
+        bool                           takes_loads, member_loads;
         Eigen::Vector3d                q0, p0; // element loads: basic fixed-end forces, reactions
+        MemberLoad<2>                  w;      // the member's load (w_x, w_y)
       };
 
       template <typename V>
@@ -204,10 +235,10 @@ namespace poundfe
         return force_based;
       }
 
-      /// A 3D beam-column of poundfe's BeamColumn<3> (no element loads). Its
-      /// localForce as OpenSees's ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI,
-      /// MzI, N, -Vy, Vz, T, MyJ, MzJ) with Vy = (MzI + MzJ)/L, Vz = (MyI +
-      /// MyJ)/L.
+      /// A 3D beam-column of poundfe's BeamColumn<3>, its element loads the
+      /// member's. Its localForce as OpenSees's ForceBeamColumn3d: (-N, Vy,
+      /// -Vz, -T, MyI, MzI, N, -Vy, Vz, T, MyJ, MzJ) with Vy = (MzI + MzJ)/L,
+      /// Vz = (MyI + MyJ)/L, and the load's basic reactions p0.
       class BeamColumnElement3d : public Element
       {
       public:
@@ -216,7 +247,25 @@ namespace poundfe
           : Element(tag, {nodes[0], nodes[1]})
           , member(std::move(beam))
         {
+          w.setZero();
           committed_tangent = tangent();
+        }
+
+        bool takes_beam_loads() const override { return true; }
+        void
+        zero_loads() override
+        {
+          if (w.isZero(0))
+            return;
+          w.setZero();
+          member->set_uniform_load(w);
+        }
+        void
+        add_beam_uniform(const double wy, const double wx, const double wz) override
+        {
+          w += MemberLoad<3>(wx, wy, wz);
+          member->set_uniform_load(w);
+          member->set_load_factor(1);
         }
 
         unsigned int n_dofs() const override { return 12; }
@@ -237,6 +286,7 @@ namespace poundfe
 
       private:
         std::unique_ptr<BeamColumn<3>> member;
+        MemberLoad<3>                  w; // the member's load (w_x, w_y, w_z)
       };
 
       std::vector<double>
@@ -247,7 +297,10 @@ namespace poundfe
         if (words.size() == 1 && (what == "localForce" || what == "localForces"))
           {
             const double L = member->length(), vy = (q[1] + q[2]) / L, vz = (q[3] + q[4]) / L;
-            return {-q[0], vy, -vz, -q[5], q[3], q[1], q[0], -vy, vz, q[5], q[4], q[2]};
+            // the basic reactions of the load (ForceBeamColumn3d::getResponse)
+            const auto p0 = uniform_load_forces<3>(L, w).p0;
+            return {-q[0] + p0[0], vy + p0[1], -vz + p0[3], -q[5], q[3], q[1],
+                    q[0],          -vy + p0[2], vz + p0[4], q[5],  q[4], q[2]};
           }
         const std::vector<double> shared = member_response(*member, tag, words, q);
         return shared.empty() ? Element::response(words) : shared;
@@ -275,11 +328,12 @@ namespace poundfe
       const CrdTransformation<2> transf = transformation_of(domain, nodes, transformation, tag);
       std::unique_ptr<BeamColumn<2>> beam =
         make_member<2>(domain, transf, kind, integration, iteration);
-      // element loads on the displacement-based element only: the force-based
-      // one would need them in its force interpolation
-      const bool takes_loads =
-        kind == BeamColumnKind::displacement_based && transformation != Transformation::corotational;
-      return std::make_unique<BeamColumnElement>(tag, nodes, std::move(beam), takes_loads);
+      // no element loads on a corotational member (BeamColumn's)
+      using Loads       = BeamColumnElement::Loads;
+      const Loads loads = transformation == Transformation::corotational ? Loads::none :
+                          kind == BeamColumnKind::displacement_based     ? Loads::fixed_end_forces :
+                                                                           Loads::member;
+      return std::make_unique<BeamColumnElement>(tag, nodes, std::move(beam), loads);
     }
 
     std::unique_ptr<Element>

@@ -9,6 +9,7 @@
 #include <poundfe/laws/viscous_damper.h>
 #include <poundfe/opensees/opensees_domain.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace poundfe
@@ -101,7 +102,8 @@ namespace poundfe
             continue;
           const double lambda = pattern.load_factor(at_time);
           for (const BeamUniformLoad &load : pattern.beam_loads)
-            elements.at(load.element)->add_beam_uniform(load.wy * lambda, load.wx * lambda);
+            elements.at(load.element)
+              ->add_beam_uniform(load.wy * lambda, load.wx * lambda, load.wz * lambda);
         }
     }
 
@@ -125,6 +127,67 @@ namespace poundfe
       return a;
     }
 
+    const RayleighFactors &
+    Domain::rayleigh_of(const int element) const
+    {
+      const auto it = element_rayleigh.find(element);
+      return it == element_rayleigh.end() ? rayleigh : it->second;
+    }
+
+    double
+    Domain::alpha_m_of(const int node) const
+    {
+      const auto it = node_alpha_m.find(node);
+      return it == node_alpha_m.end() ? rayleigh.alpha_m : it->second;
+    }
+
+    bool
+    Domain::committed_stiffness_damping() const
+    {
+      if (rayleigh.beta_k_committed != 0)
+        return true;
+      for (const auto &[tag, r] : element_rayleigh)
+        if (r.beta_k_committed != 0)
+          return true;
+      return false;
+    }
+
+    bool
+    Domain::uniform_mass_damping() const
+    {
+      if (!element_rayleigh.empty() || !node_alpha_m.empty())
+        return false;
+      if (rayleigh.alpha_m == 0)
+        return true;
+      for (const LumpedMass &m : lumped_masses)
+        if (!elements.at(m.element)->rayleigh_damped())
+          return false;
+      return true;
+    }
+
+    std::map<int, std::vector<double>>
+    Domain::mass_damping() const
+    {
+      std::map<int, std::vector<double>> c;
+      for (const auto &[tag, n] : nodes)
+        {
+          std::vector<double> &row = c[tag];
+          row.assign(n.mass.size(), 0.0);
+          const double alpha = alpha_m_of(tag);
+          for (unsigned int k = 0; k < row.size(); ++k)
+            row[k] = alpha * n.mass[k];
+        }
+      for (const LumpedMass &m : lumped_masses)
+        {
+          const Element &element = *elements.at(m.element);
+          const double   alpha   = element.rayleigh_damped() ? rayleigh_of(m.element).alpha_m : 0.0;
+          std::vector<double> &row = c[m.node];
+          for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
+            row[k] += alpha * m.mass;
+        }
+      return c;
+    }
+
     std::map<int, std::vector<double>>
     Domain::reactions() const
     {
@@ -137,7 +200,7 @@ namespace poundfe
           const auto p = loads.find(tag);
           for (unsigned int k = 0; k < v.size(); ++k)
             v[k] = (p == loads.end() ? 0.0 : -p->second[k]) +
-                   rayleigh.alpha_m * n.mass[k] * n.vel[k];
+                   alpha_m_of(tag) * n.mass[k] * n.vel[k];
         }
       for (const auto &[tag, element] : elements)
         {

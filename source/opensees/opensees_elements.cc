@@ -102,7 +102,7 @@ namespace poundfe
         }
 
         void
-        add_beam_uniform(const double wy, const double wx) override
+        add_beam_uniform(const double wy, const double wx, const double) override
         {
           add_uniform_beam_load(L, wy, wx, q0, p0);
         }

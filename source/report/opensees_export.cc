@@ -405,7 +405,7 @@ namespace poundfe
         describe_members(analysis, parameters.input, tags, out);
         describe_hinges(analysis, tags, out);
       }
-    out.member_stiffness_damping = frames_stiffness_damping(analysis, parameters.input);
+    frames_stiffness_damping(analysis, tags, out);
     describe_gravity(analysis, out);
     describe_gaps(analysis, tags, out);
     const NewmarkParameters &newmark = parameters.time_integration.newmark;

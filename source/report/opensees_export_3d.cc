@@ -219,6 +219,7 @@ namespace poundfe::opensees_export
         if (fresh)
           out.model.push_back("geomTransf " + kind + std::to_string(at->second) + " " + v);
         const Section3D &s = member.section;
+        tags.damped[member.building].push_back(tags.element);
         out.model.push_back(
           (member.fibre.fibre() ?
              fibre_element_command(model, member.fibre, j.ends[m], at->second, input, tags, out) :

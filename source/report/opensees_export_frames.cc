@@ -5,9 +5,12 @@
 // which is OpenSees's elasticBeamColumn on geomTransf Linear
 // (ElasticBeam2d.cpp); its mass is in M, which the nodes carry. Rayleigh's
 // a1 K is `rayleigh 0 0 a1 0`: betaKinit, the initial stiffness of the
-// elements that take Rayleigh damping (the members; zeroLength does not by
-// default, ZeroLength.cpp), as poundfe's C = a0 M + a1 K, K without the
-// gaps (assembly/linear_system.cc, assemble_damping). The gravity analysis
+// elements that take Rayleigh damping (the members and hinges; zeroLength
+// does not by default, ZeroLength.cpp), as poundfe's C = a0 M + a1 K, K
+// without the gaps (assembly/linear_system.cc, assemble_damping); frames of
+// different a1 each get theirs by `region tag -eleOnly ... -rayleigh 0 0 a1
+// 0` over their members and hinges (OpenSees's MeshRegion sets the
+// elements' factors; the nodes' alphaM stays 0: a0 M is the dashpots'). The gravity analysis
 // is OpenSees's usual one (Plain pattern on a Linear series, LoadControl
 // 1/n over n steps, loadConst -time 0) with the loads poundfe applies
 // (assembly/linear_system.h, total_gravity_loads).
@@ -65,29 +68,23 @@ namespace poundfe::opensees_export
     }
   } // namespace
 
-  double
-  frames_stiffness_damping(const Analysis &analysis, const InputFile &input)
+  void
+  frames_stiffness_damping(const Analysis &analysis, const Tags &tags, OpenSeesExport &out)
   {
-    const Model              &model = analysis.model;
-    std::vector<unsigned int> buildings;
-    for (const Member &member : model.members)
-      buildings.push_back(member.building);
-    for (const Member3D &member : model.members_3d)
-      buildings.push_back(member.building);
-    if (buildings.empty())
-      return 0;
-    const double a1 = analysis.system.rayleigh.at(buildings.front())[1];
-    for (const unsigned int b : buildings)
-      if (const double b1 = analysis.system.rayleigh.at(b)[1]; b1 != a1)
-        input.fail(building_entry(b, "Damping/Type"),
-                   "its stiffness-proportional Rayleigh coefficient a1 = " + exact_text(b1) +
-                     " differs from building " + std::to_string(buildings.front() + 1) + "'s " +
-                     exact_text(a1) +
-                     ": export-opensees writes one a1 for every frame (OpenSees's rayleigh "
-                     "command; a coefficient per building needs OpenSees's region, which "
-                     "`poundfe opensees` does not run); give the frames the same Damping/a0 "
-                     "and Damping/a1");
-    return a1;
+    if (tags.damped.empty())
+      return;
+    const auto a1_of = [&](const unsigned int b) { return analysis.system.rayleigh.at(b)[1]; };
+    const double a1  = a1_of(tags.damped.begin()->first);
+    if (std::all_of(tags.damped.begin(), tags.damped.end(),
+                    [&](const auto &building) { return a1_of(building.first) == a1; }))
+      {
+        out.member_stiffness_damping = a1;
+        return;
+      }
+    for (const auto &[b, elements] : tags.damped)
+      if (a1_of(b) != 0)
+        out.damping_regions.push_back(
+          {b + 1, analysis.model.buildings[b].name, a1_of(b), elements});
   }
 
   bool
@@ -164,6 +161,7 @@ namespace poundfe::opensees_export
                         "on " + bouc_wen_comment());
     for (const Hinge &hinge : model.hinges)
       {
+        tags.damped[hinge.building].push_back(tags.element);
         out.model.push_back(bouc_wen_material(hinge.law, tags.material, comment_word(hinge.label)));
         out.model.push_back("element zeroLength " + std::to_string(tags.element++) + " " +
                             std::to_string(hinge.joint_node + 1) + " " +
@@ -187,10 +185,13 @@ namespace poundfe::opensees_export
                     [](const Member &m) { return m.fibre.fibre() && m.fibre.p_delta; }))
       out.model.push_back("geomTransf PDelta 2 ;# the columns of Member transformation PDelta");
     for (const Member &member : model.members)
-      out.model.push_back(
-        (member.fibre.fibre() ? fibre_member_command(model, member, input, tags, out) :
-                                elastic_member_command(member, tags)) +
-        " ;# " + comment_word(member.label));
+      {
+        tags.damped[member.building].push_back(tags.element);
+        out.model.push_back(
+          (member.fibre.fibre() ? fibre_member_command(model, member, input, tags, out) :
+                                  elastic_member_command(member, tags)) +
+          " ;# " + comment_word(member.label));
+      }
   }
 
   void

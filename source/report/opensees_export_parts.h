@@ -30,6 +30,8 @@ namespace poundfe::opensees_export
     /// beamIntegrations ((section, force-based, points) -> tag).
     std::map<int, int>                sections;
     std::map<std::array<int, 3>, int> integrations;
+    /// The Rayleigh-damped elements (members, hinges) of each building.
+    std::map<unsigned int, std::vector<int>> damped;
   };
 
   /// The lumped mass on the node's DOF `c` (0 when fixed); InputError when
@@ -97,9 +99,11 @@ namespace poundfe::opensees_export
                           OpenSeesExport &out);
 
   /// The stiffness-proportional Rayleigh a1 of the buildings of the
-  /// model's members (2D and 3D), one for all; InputError naming a building's
-  /// Damping/Type if they differ; 0 without members.
-  double frames_stiffness_damping(const Analysis &analysis, const InputFile &input);
+  /// model's members (2D and 3D): one `rayleigh` for all when they share it
+  /// (out.member_stiffness_damping), else a `region` of each building's
+  /// damped elements (out.damping_regions).
+  void frames_stiffness_damping(const Analysis &analysis, const Tags &tags,
+                                OpenSeesExport &out);
 
   /// Model/Gravity analysis: the loads and the static analysis.
   void describe_gravity(const Analysis &analysis, OpenSeesExport &out);

@@ -76,7 +76,7 @@ set n 0
 foreach tag [getNodeTags] { incr n }
 while {$n > 3} { incr n -1 }
 puts "nodes $n elements [getEleTags]"
-if {[catch {region 1 -ele 1} message]} { puts "caught: $message" }
+if {[catch {remove element 1} message]} { puts "caught: $message" }
 if {[catch {element zeroLength 9 0 1 -mat 1 -dir 1 -orient 1 0 0 0 1 0 -dampMats 1} message]} {
     puts "caught: $message"
 }
@@ -96,7 +96,7 @@ status=$?
 expect_line() { grep -qxF -- "$1" "$work/tcl/log" || { cat "$work/tcl/log"; fail "no line '$1'"; }; }
 expect_line "argc 4 argv $work/tcl -x --output y"
 expect_line "nodes 3 elements 1 2 3"
-expect_line "caught: region: poundfe does not support it"
+expect_line "caught: remove: poundfe does not support it"
 expect_line "caught: element zeroLength option '-dampMats': poundfe does not support it"
 expect_line "analyze 0 disp 0.06"
 grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
@@ -373,8 +373,18 @@ bad() { # NAME EXPECTED (the script on standard input)
 echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"' || exit 1
 echo "element corotTruss 1 1 2 1.0 1" | bad unsupported-element \
   '5: element corotTruss: poundfe does not support it' || exit 1
-printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass 1.0\n' \
-  | bad link-mass "6: element twoNodeLink option '-mass': poundfe does not support it" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass\n' \
+  | bad link-mass "6: element: twoNodeLink 1: the end of the line where value 1 of -mass is due (-mass takes 1 value)" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass -1.0\n' \
+  | bad link-mass-negative "6: element: twoNodeLink 1: -mass must not be negative" || exit 1
+# region and setElementRayleighDampingFactors
+echo "region 1 -ele 1 -rayleigh 0.1 0.0 0.0" | bad region-factors '5: region: missing bKc' || exit 1
+echo "region 1 -ele 1 -frob 2" | bad region-option "5: region 1: '-frob' where an option is due" || exit 1
+printf 'region 1\nregion 1 -node 1\n' | bad region-twice '6: region 1 exists already' || exit 1
+echo "region 1 -ele" | bad region-no-tag '5: region 1: -ele: no tag given' || exit 1
+echo "region 1 -damp 3" | bad region-damp '5: region -damp: poundfe does not support it' || exit 1
+echo "setElementRayleighDampingFactors 4 0.1 0 0 0" \
+  | bad element-factors '5: setElementRayleighDampingFactors: element 4 does not exist' || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 2\n' \
   | bad link-direction '6: element: twoNodeLink 1: -dir 2 is not one of 1 to 1' || exit 1
 # a twoNodeLink's or rigidLink's bad word named, or the word where one is due

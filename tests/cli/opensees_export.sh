@@ -24,7 +24,7 @@
 #    default epsyN written as -epsyP (the script's text); names with a blank
 #    and a backslash one quoted word of the comments;
 # and the refusals name the entry OpenSees cannot be given (P-Delta, 3D
-# shear buildings, 3D hinges, 3D member mass, contact in plan, frames of their own Rayleigh a1, hinges of A != 1,
+# shear buildings, 3D hinges, 3D member mass, contact in plan, hinges of A != 1,
 # a Hysteretic fibre material (by Sections/Materials), the contact laws hertz-damp and
 # kelvin-voigt (saying how OpenSees's namesakes differ), nodal forces, modal
 # damping, a record that does not start at zero).
@@ -133,6 +133,19 @@ for b in 1 2; do
     --set "Building $b/Damping/a1=0.002")
 done
 check_example two-buildings 1e-6 "${frame_pair[@]}"
+# the same pair with each frame's own Rayleigh coefficients (a0 0.3 and 0.5, a1
+# 0.004 and 0.001): each frame's a1 on its members by a region (region -eleOnly
+# -rayleigh 0 0 a1 0), 1e-6 as above
+own_a1=(--set "Building 1/Hinges/Locations=" --set "Building 2/Hinges/Locations="
+  --set "Contact/Law=linear" "${no_events[@]}")
+for b in 1 2; do
+  own_a1+=(--set "Building $b/Damping/Type=coefficients" --set "Building $b/Damping/a0=0.$((2 * b + 1))"
+    --set "Building $b/Damping/a1=$([ $b = 1 ] && echo 0.004 || echo 0.001)")
+done
+case_suffix=-own-a1 check_example two-buildings 1e-6 "${own_a1[@]}"
+[ "$(grep -c '^region [12] -eleOnly [0-9 ]* -rayleigh 0.0 0.0 [0-9.e-]* 0.0 ;# ' \
+  "$work/two-buildings-own-a1/script/model.tcl")" = 2 ] || fail "own a1: not a region a frame"
+grep -q "^rayleigh " "$work/two-buildings-own-a1/script/model.tcl" && fail "own a1: a rayleigh"
 # fibre members (forceBeamColumn on Lobatto points, dispBeamColumn on
 # Legendre, section Fiber of poundfe's fibres, Concrete02 and Steel02, the
 # columns on geomTransf PDelta), gravity first: fibre-frame-pounding with the
@@ -310,7 +323,6 @@ refused() { # NAME EXPECTED-ENTRY-AND-MESSAGE-PART
   grep -qF -- "$2" "$dir.err" || { cat "$dir.err"; fail "$1: message"; }
   [ ! -e "$dir/model.tcl" ] || fail "$1: model.tcl written"
 }
-# one a1 for every frame (OpenSees's rayleigh): two frames of their own a1
 refused_with() { # NAME LABEL EXPECTED-MESSAGE-PART [--set ...]
   local dir="$work/refused-$2" message=$3
   "$poundfe" export-opensees "$inputs/$1.prm" --output "$dir" "${@:4}" > "$dir.out" 2> "$dir.err"
@@ -318,8 +330,6 @@ refused_with() { # NAME LABEL EXPECTED-MESSAGE-PART [--set ...]
   grep -qF -- "$message" "$dir.err" || { cat "$dir.err"; fail "$2: message"; }
   [ ! -e "$dir/model.tcl" ] || fail "$2: model.tcl written"
 }
-refused_with two-buildings rayleigh "'Building 2/Damping/Type': its stiffness-proportional Rayleigh coefficient a1 = " \
-  --set "Building 1/Hinges/Locations=" --set "Building 2/Hinges/Locations=" --set "Contact/Law=linear"
 refused_with three-storey-frame-hinges bouc-wen-a "'Building 1/Bouc-Wen/A': export-opensees writes hinges of A = 1 only" \
   --set "Building 1/Bouc-Wen/A=0.9"
 refused_with fibre-frame-pounding self-weight "'Building 1/Member self-weight': export-opensees writes no element loads" \

@@ -128,8 +128,16 @@ echo "algorithm NewtonLineSearch -type Bisection" | bad line-search-type \
   '6: algorithm NewtonLineSearch -type Bisection: poundfe does not support it'
 echo "algorithm NewtonLineSearch -tol 0.5 -beta 2" | bad line-search-option \
   "6: algorithm NewtonLineSearch option '-beta': poundfe does not support it"
-printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nelement forceBeamColumn 1 1 2 3 1 1\ntimeSeries Linear 1\npattern Plain 1 1 { eleLoad -ele 1 -type -beamUniform -1.0 }\n' \
-  | bad element-load-beam-column '9: pattern: eleLoad on element 1 (only elasticBeamColumn and dispBeamColumn on a Linear or PDelta transformation take it): poundfe does not support it'
+printf 'section Elastic 1 2.0e8 0.01 1.0e-4\ngeomTransf Corotational 2\nelement forceBeamColumn 1 1 2 3 1 2\ntimeSeries Linear 1\npattern Plain 1 1 { eleLoad -ele 1 -type -beamUniform -1.0 }\n' \
+  | bad element-load-beam-column '10: pattern: eleLoad on element 1 (only elasticBeamColumn in the plane, and forceBeamColumn and dispBeamColumn, on a Linear or PDelta transformation take it): poundfe does not support it'
+printf 'section Elastic 1 2.0e8 0.01 1.0e-4\nsection Aggregator 2 1 Mz -section 1\n' \
+  | bad aggregator-base-dof '7: section Aggregator 2: dof Mz is in the -section already (OpenSees 3.8 then has two Mz resultants: in series in forceBeamColumn, in parallel in dispBeamColumn)'
+printf 'section Aggregator 2 1 Mz 1 Vy\n' \
+  | bad aggregator-shear "6: section Aggregator dof 'Vy' in the plane (it takes P and Mz): poundfe does not support it"
+printf 'section Aggregator 2 1 Mz 1 Mz\n' \
+  | bad aggregator-twice '6: section Aggregator 2: dof Mz given twice'
+printf 'section Aggregator 2 1 Mz\n' \
+  | bad aggregator-missing '6: section Aggregator without P and without an Elastic -section: poundfe does not support it'
 printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { eleLoad -ele 1 -type -beamPoint -1.0 0.5 }\n' \
   | bad element-load-point '8: pattern: eleLoad -type -beamPoint: poundfe does not support it'
 printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\neleLoad -ele 1 -type -beamUniform -1.0\n' \

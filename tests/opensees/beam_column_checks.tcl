@@ -64,8 +64,8 @@ foreach {name define element} {
         {dispBeamColumn 1 1 2 1 1}
     forceBeamColumn_HingeRadau {geomTransf Linear 1; section Elastic 1 $E $A $I; section Elastic 2 $E $A $I;
         beamIntegration HingeRadau 1 1 0.25 2 0.3 1} {forceBeamColumn 1 1 2 1 1}
-    Aggregator_Mz {geomTransf Linear 1; section Elastic 1 $E $A $I;
-        uniaxialMaterial Elastic 5 [expr {$E*$I}]; section Aggregator 2 5 Mz -section 1}
+    Aggregator_Mz {geomTransf Linear 1; uniaxialMaterial Elastic 6 [expr {$E*$A}];
+        uniaxialMaterial Elastic 5 [expr {$E*$I}]; section Aggregator 2 5 Mz 6 P}
         {forceBeamColumn 1 1 2 3 2 1}
 } {
     cantilever [subst $define] [subst $element]

@@ -6,8 +6,13 @@
 # 3 s of the synthetic record along X and 0.8 of it along Y, Newmark
 # average acceleration at 0.01 s, Newton with NormDispIncr 1e-10,
 # Rayleigh damping on mass and initial stiffness.
-# argv: the output directory.
+# argv: the output directory, then the variant: fibre (the default), loads
+# (the members' own weight and a lateral pressure as element loads,
+# eleLoad -beamUniform Wy Wz Wx, on the columns and beams in the gravity
+# pattern) or aggregator (those loads on members whose sections are
+# Aggregators of uniaxial laws: P and T elastic, Mz and My Steel01).
 set out [lindex $argv 0]
+set variant [expr {$argc > 1 ? [lindex $argv 1] : "fibre"}]
 source [file join [file dirname [info script]] record.tcl]
 wipe
 model basic -ndm 3 -ndf 6
@@ -21,17 +26,31 @@ foreach {x y} [list 0.0 0.0 $Lx 0.0 0.0 $Ly $Lx $Ly] {
 }
 uniaxialMaterial Concrete02 1 -30e6 -0.002 -6e6 -0.006 0.1 3e6 1.5e9
 uniaxialMaterial Steel02 2 420e6 200e9 0.01 20 0.925 0.15
-section Fiber 1 -GJ 2.7e7 {
-    patch rect 1 8 8 -0.2 -0.2 0.2 0.2
-    layer straight 2 3 3.14e-4 0.16 -0.16 0.16 0.16
-    layer straight 2 3 3.14e-4 -0.16 -0.16 -0.16 0.16
-    fiber 0.0 -0.16 3.14e-4 2
-    fiber 0.0 0.16 3.14e-4 2
-}
-section Fiber 2 -GJ 2.2e7 {
-    patch rect 1 10 4 -0.25 -0.15 0.25 0.15
-    layer straight 2 3 2.01e-4 0.21 -0.11 0.21 0.11
-    layer straight 2 3 2.01e-4 -0.21 -0.11 -0.21 0.11
+if {$variant eq "aggregator"} {
+    # column: EA, Mz 120 kNm (EI 5e7), My 140 kNm (EI 4e7), GJ; beam: EA, Mz, My, GJ
+    uniaxialMaterial Elastic 11 4.8e9
+    uniaxialMaterial Steel01 12 1.2e5 5.0e7 0.02
+    uniaxialMaterial Steel01 13 1.4e5 4.0e7 0.03
+    uniaxialMaterial Elastic 14 2.7e7
+    section Aggregator 1 11 P 12 Mz 13 My 14 T
+    uniaxialMaterial Elastic 21 4.5e9
+    uniaxialMaterial Steel01 22 3.0e5 6.0e7 0.02
+    uniaxialMaterial Steel01 23 1.5e5 2.5e7 0.02
+    uniaxialMaterial Elastic 24 2.2e7
+    section Aggregator 2 21 P 23 My 22 Mz 24 T
+} else {
+    section Fiber 1 -GJ 2.7e7 {
+        patch rect 1 8 8 -0.2 -0.2 0.2 0.2
+        layer straight 2 3 3.14e-4 0.16 -0.16 0.16 0.16
+        layer straight 2 3 3.14e-4 -0.16 -0.16 -0.16 0.16
+        fiber 0.0 -0.16 3.14e-4 2
+        fiber 0.0 0.16 3.14e-4 2
+    }
+    section Fiber 2 -GJ 2.2e7 {
+        patch rect 1 10 4 -0.25 -0.15 0.25 0.15
+        layer straight 2 3 2.01e-4 0.21 -0.11 0.21 0.11
+        layer straight 2 3 2.01e-4 -0.21 -0.11 -0.21 0.11
+    }
 }
 geomTransf PDelta 1 1 0 0
 geomTransf Linear 2 0 -1 0
@@ -50,6 +69,12 @@ recorder Element -file $out/frame3d_section.out -time -precision 16 -ele 1 secti
 timeSeries Linear 1
 pattern Plain 1 1 {
     foreach c {11 12 13 14} { load $c 0.0 0.0 [expr {-$m * $g}] 0.0 0.0 0.0 }
+    if {$variant ne "fibre"} {
+        # columns: local x up, y along -Y, z along X; beams: local y up
+        eleLoad -ele 1 2 3 4 -type -beamUniform 500.0 -800.0 -4.0e3
+        eleLoad -range 5 8 -type -beamUniform -2.0e4 1.5e3 600.0
+        eleLoad -ele 5 -type -beamUniform -5.0e3 0.0
+    }
 }
 constraints Plain
 numberer Plain

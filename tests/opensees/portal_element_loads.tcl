@@ -6,8 +6,10 @@
 # with Rayleigh damping on the committed stiffness (the columns on PDelta, so
 # that N from the element loads enters the P-Delta forces and the tangent).
 # Units kN, m, t.   argv: the output directory and the members: elastic
-# (elasticBeamColumn, the default) or fibre (dispBeamColumns, Legendre 3, on
-# the RC sections of rc_section.tcl).
+# (elasticBeamColumn, the default), fibre (dispBeamColumns, Legendre 3, on
+# the RC sections of rc_section.tcl) or force (forceBeamColumns, Lobatto 5,
+# on the same sections: OpenSees's common gravity-then-record script, the
+# element loads carried by the sections, s = b q + s_p).
 set out [lindex $argv 0]
 set members [expr {$argc > 1 ? [lindex $argv 1] : "elastic"}]
 source [file join [file dirname [info script]] record.tcl]
@@ -26,15 +28,21 @@ geomTransf PDelta 1
 geomTransf Linear 2
 set E 3.0e7
 foreach {tag i j transf} {1 1 3 1  2 2 4 1  3 3 5 1  4 4 6 1  5 3 4 2  6 5 6 2} {
-    if {$members eq "fibre"} {
+    if {$members eq "fibre" || $members eq "force"} {
         if {$tag == 1} {
             rc_materials
             rc_section 1 0.4 0.4 0.04 3 3.14e-4
             rc_section 2 0.3 0.5 0.04 3 2.01e-4
-            beamIntegration Legendre 1 1 3
-            beamIntegration Legendre 2 2 3
+            if {$members eq "fibre"} {
+                beamIntegration Legendre 1 1 3
+                beamIntegration Legendre 2 2 3
+            } else {
+                beamIntegration Lobatto 1 1 5
+                beamIntegration Lobatto 2 2 5
+            }
         }
-        element dispBeamColumn $tag $i $j $transf $transf
+        element [expr {$members eq "fibre" ? "dispBeamColumn" : "forceBeamColumn"}] \
+            $tag $i $j $transf $transf
     } elseif {$transf == 1} {
         element elasticBeamColumn $tag $i $j 0.16 $E 2.13e-3 1
     } else {
@@ -53,7 +61,7 @@ pattern Plain 1 1 {
 recorder Node -file $out/loads_disp.out -time -precision 12 -node 3 5 6 -dof 1 2 3 disp
 recorder Node -file $out/loads_base.out -time -precision 12 -node 1 2 -dof 1 2 3 reaction
 recorder Element -file $out/loads_force.out -time -precision 12 -ele 1 5 6 force
-if {$members eq "fibre"} {
+if {$members ne "elastic"} {
     recorder Element -file $out/loads_local.out -time -precision 12 -ele 1 5 localForce
     recorder Element -file $out/loads_section.out -time -precision 12 -ele 5 section 1 force
 }

@@ -205,6 +205,10 @@ namespace poundfe
       bool            at_alpha = false;    // HHT's iterations: elements at U_alpha
       double          step_dt  = 0;
       Vector          mass_of_equation;    // lumped nodal masses
+      /// alpha_M M by equation, when alpha_M differs between masses
+      /// (Domain::uniform_mass_damping false; else domain.rayleigh's times M).
+      Vector          mass_damping_of_equation;
+      bool            uniform_mass_damping = true;
       /// The DOFs the sp commands impose (node, 0-based DOF) and their
       /// values at the trial time.
       std::vector<std::pair<int, unsigned int>> imposed_dofs;
@@ -213,6 +217,8 @@ namespace poundfe
       std::vector<std::vector<std::pair<int, double>>> combinations;
       /// The combinations of the domain's diaphragms (in number()).
       void number_diaphragms();
+      /// mass_damping_of_equation and uniform_mass_damping (in number()).
+      void number_mass_damping();
       /// r[e] += c value for the equation's terms (none where fixed or imposed).
       void add_to(Vector &r, int eq, double value) const;
       /// An equation's terms: itself, or a diaphragm's combination.

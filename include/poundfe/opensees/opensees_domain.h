@@ -58,6 +58,13 @@ namespace poundfe
       std::vector<int> equation;
     };
 
+    /// OpenSees's Rayleigh factors: C = alpha_M M + beta_K K_t + beta_K0 K_0 +
+    /// beta_Kc K_c (Element::getDamp, Node::getDamp).
+    struct RayleighFactors
+    {
+      double alpha_m = 0, beta_k = 0, beta_k_init = 0, beta_k_committed = 0;
+    };
+
     /// An element in OpenSees's terms: trial response from the end nodes'
     /// displacements and velocities, resisting force and tangents in the
     /// global DOFs of its nodes (node after node), commit/revert.
@@ -88,12 +95,12 @@ namespace poundfe
       virtual void reset() {}
       virtual std::string failure() const { return {}; }
       /// Element loads (eleLoad -beamUniform): whether it takes them; its
-      /// loads zeroed, and a uniform load added, wy across its local x and
-      /// wx along it, already times its pattern's factor (OpenSees's
-      /// Element::zeroLoad and addLoad).
+      /// loads zeroed, and a uniform load added, wy across its local x (and
+      /// wz along local z, in 3D) and wx along it, already times its
+      /// pattern's factor (OpenSees's Element::zeroLoad and addLoad).
       virtual bool takes_beam_loads() const { return false; }
       virtual void zero_loads() {}
-      virtual void add_beam_uniform(double /*wy*/, double /*wx*/) {}
+      virtual void add_beam_uniform(double /*wy*/, double /*wx*/, double /*wz*/) {}
       /// A response by OpenSees's words (recorder Element, eleResponse):
       /// "force" (or "globalForce") for every element, and for beam-columns
       /// "localForce", "basicForce", "basicDeformation", "section" i
@@ -130,11 +137,11 @@ namespace poundfe
       std::vector<double> values;
     };
 
-    /// eleLoad -ele tag -type -beamUniform Wy <Wx>.
+    /// eleLoad -ele tag -type -beamUniform Wy <Wx> (in 3D: Wy Wz <Wx>).
     struct BeamUniformLoad
     {
       int    element = 0;
-      double wy = 0, wx = 0;
+      double wy = 0, wx = 0, wz = 0;
     };
 
     /// sp node dof value inside a Plain pattern: the DOF (0-based) held at
@@ -183,11 +190,6 @@ namespace poundfe
       int              retained      = 0;
       std::vector<int> constrained;
       std::string      where; // "file:line" of its command ("" outside a file)
-    };
-
-    struct RayleighFactors
-    {
-      double alpha_m = 0, beta_k = 0, beta_k_init = 0, beta_k_committed = 0;
     };
 
     /// `beamIntegration`: Lobatto or Legendre with n points on one section,
@@ -239,6 +241,25 @@ namespace poundfe
       std::vector<EqualDof>                   equal_dofs;
       std::vector<Diaphragm>                  diaphragms;
       RayleighFactors                         rayleigh;
+      /// region -rayleigh: the factors of its elements and the alpha_M of
+      /// its nodes in place of `rayleigh`'s (OpenSees's MeshRegion sets
+      /// them on each object); the `rayleigh` command, which sets every
+      /// object's, clears them.
+      std::map<int, RayleighFactors> element_rayleigh;
+      std::map<int, double>          node_alpha_m;
+      /// The tags of the script's regions (a tag once only).
+      std::vector<int> regions;
+      /// An element's mass lumped on a node (elasticBeamColumn and
+      /// beam-column -mass, truss -rho, twoNodeLink -mass): `mass` on each
+      /// of its translations, in Node::element_mass too. Its alpha_M
+      /// damping is the element's, and only when the element is
+      /// Rayleigh-damped (Element::getDamp's alpha_M M_e).
+      struct LumpedMass
+      {
+        int    element = 0, node = 0;
+        double mass = 0;
+      };
+      std::vector<LumpedMass> lumped_masses;
       double                                  time = 0; // committed
       /// OpenSees's global ops_Dt: the step of the last transient
       /// `analyze` (0 until then), over which a ViscousDamper integrates.
@@ -250,6 +271,19 @@ namespace poundfe
 
       const Node &node(int tag) const;
       Node       &node(int tag);
+      /// The Rayleigh factors of an element, of a node (its alpha_M).
+      const RayleighFactors &rayleigh_of(int element) const;
+      double                 alpha_m_of(int node) const;
+      /// Whether some element's damping takes K_c (its committed tangent
+      /// renewed at every commit).
+      bool committed_stiffness_damping() const;
+      /// Whether alpha_M is the same for every mass, the domain's
+      /// `rayleigh` one (no region's, every lumped mass on a Rayleigh-damped
+      /// element, or alpha_M 0).
+      bool uniform_mass_damping() const;
+      /// alpha_M M by node and DOF: the node's mass times its alpha_M plus
+      /// each lumped mass times its element's (see LumpedMass).
+      std::map<int, std::vector<double>> mass_damping() const;
       /// The nodal loads of the Plain patterns at `time` (per node, per DOF).
       std::map<int, std::vector<double>> nodal_loads(double time) const;
       /// The Plain patterns' element loads at `time` handed to their
@@ -290,7 +324,9 @@ namespace poundfe
                                                   const std::array<double, 3> &vecxz);
 
     /// forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn in 2D on the
-    /// domain's integration (OpenSees's ForceBeamColumn2d, DispBeamColumn2d).
+    /// domain's integration (OpenSees's ForceBeamColumn2d, DispBeamColumn2d),
+    /// both with uniform element loads except on a Corotational
+    /// transformation.
     enum class BeamColumnKind
     {
       force_based,
@@ -305,7 +341,8 @@ namespace poundfe
                                                  const OpenSeesIteration &iteration);
     /// forceBeamColumn and dispBeamColumn in 3D (BeamColumn<3>: OpenSees's
     /// ForceBeamColumn3d, DispBeamColumn3d) on a Linear or PDelta
-    /// transformation with the geomTransf's vecxz; no element loads.
+    /// transformation with the geomTransf's vecxz; uniform element loads
+    /// as the member's own (BeamColumn::set_uniform_load).
     std::unique_ptr<Element> make_beam_column_3d(const Domain &domain, int tag,
                                                  std::array<int, 2> nodes, BeamColumnKind kind,
                                                  Transformation               transformation,
@@ -354,6 +391,8 @@ namespace poundfe
       std::vector<double>   p_delta;        // empty: no P-Delta
       std::vector<double>   shear_distance; // empty: 0.5 0.5
       bool                  rayleigh = false;
+      /// -mass: half on each node's translations (a Domain::LumpedMass).
+      double                mass = 0;
     };
     std::unique_ptr<Element> make_two_node_link(const Domain &domain, int tag,
                                                 const TwoNodeLinkData &data);

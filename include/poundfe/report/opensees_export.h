@@ -60,8 +60,19 @@ namespace poundfe
     /// pattern and the static analysis, ending with loadConst -time 0.
     std::vector<std::string> gravity;
     /// The members' stiffness-proportional damping a1 (rayleigh's
-    /// betaKinit); 0: no rayleigh command.
+    /// betaKinit) when every frame has the same; 0: no rayleigh command.
     double member_stiffness_damping = 0;
+    /// Frames of different a1: each building's (1-based, its name) a1 on its
+    /// Rayleigh-damped elements (members, hinges), as `region building
+    /// -eleOnly elements -rayleigh 0 0 a1 0`.
+    struct DampingRegion
+    {
+      unsigned int     building = 0;
+      std::string      name;
+      double           a1 = 0;
+      std::vector<int> elements;
+    };
+    std::vector<DampingRegion> damping_regions;
     /// The floor nodes to record, building by building, bottom to top, with
     /// poundfe's names of their columns (shear3_floor1_disp_m, ...): a
     /// frame's floor has a column per node, of one name, and poundfe's
