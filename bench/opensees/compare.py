@@ -129,6 +129,7 @@ CASES = {
     # between two frames; then one rayleigh after the regions, which clears them
     "region_damping": ("region_damping.tcl", [], 1e-9),
     "region_damping_uniform": ("region_damping.tcl", ["uniform"], 1e-9),
+    "region_damping_ranges": ("region_damping.tcl", ["ranges"], 1e-9),
     # ElasticPPGap with Fy > 0 and gap < 0: strain 0 is past the yield strain,
     # yet the virgin elastic range stays [gap, Fy/E + gap] (OpenSees 3.8's
     # constructor, with its warning on the alternate signs)

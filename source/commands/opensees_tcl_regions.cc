@@ -174,6 +174,7 @@ namespace poundfe
           set_element_factors(d, e, f);
         for (const int n : nodes)
           d.node_alpha_m[n] = f.alpha_m;
+        d.changed = true; // the analysis takes the masses' damping anew
       }
 
       void

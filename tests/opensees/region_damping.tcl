@@ -1,17 +1,18 @@
 # Damping by region, and masses on elements: two planar frames 0.02 m apart
 # (units kN, m, t). Frame A: a one-bay two-storey elastic frame (nodes 1-6,
-# a twoNodeLink with -mass along the roof beam); frame B: a two-storey stick of elastic columns (nodes
-# 7-9) standing on a twoNodeLink bearing (Steel01 in shear, -doRayleigh,
-# -mass); an ElasticPPGap twoNodeLink with -mass between the roofs. A
-# `rayleigh` for the whole domain, then
+# a twoNodeLink with -mass along the roof beam); frame B: a two-storey stick
+# of elastic columns (nodes 7-9) standing on a twoNodeLink bearing (Steel01
+# in shear, -doRayleigh, -mass); an ElasticPPGap twoNodeLink with -mass
+# between the roofs. A `rayleigh` for the whole domain, then
 #   region 1 -ele (frame A's members: their nodes too) -rayleigh aM, bKc,
 #   region 2 -node (frame B's nodes: the columns whose nodes all are in it)
 #     -rayleigh aM, bK0,
 #   region 3 -eleOnly (the bearing: its mass, not its nodes) -rayleigh bK;
 # the gap's mass and the roof link's take no alpha_M (no -doRayleigh), the
-# bearing's takes region 3's (0). argv: the output directory, then "uniform" for one
-# `rayleigh` after the regions (which clears them: OpenSees sets every
-# element's and node's factors).
+# bearing's takes region 3's (0). argv: the output directory, then
+# "uniform" for one `rayleigh` after the regions (which clears them:
+# OpenSees sets every element's and node's factors), or "ranges" for
+# region 2 given by -eleRange and -nodeOnlyRange.
 set out [lindex $argv 0]
 set variant [expr {$argc > 1 ? [lindex $argv 1] : "regions"}]
 source [file join [file dirname [info script]] record.tcl]
