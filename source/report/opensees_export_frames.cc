@@ -111,8 +111,8 @@ namespace poundfe::opensees_export
     const auto self_weight = [&](const unsigned int building) {
       input.fail(building_entry(building, "Member self-weight"),
                  "export-opensees writes no element loads: a distributed self-weight would be "
-                 "eleLoad -beamUniform on every member, which poundfe opensees does not take "
-                 "on force-based members (use Member self-weight = nodal)");
+                 "eleLoad -beamUniform on every member, which the export does not write yet "
+                 "(use Member self-weight = nodal)");
     };
     for (const Member &member : analysis.model.members)
       if (member.weight_per_length != 0)
