@@ -1,8 +1,10 @@
 # Runs a corpus script for bench/opensees/speed.py, in poundfe or OpenSees.
 # argv: the output directory, the number of transient steps (0: the
-# script's own; the script reads ::bench_steps), "full" or "setup" (every
+# script's own; the script reads ::bench_steps), "full", "setup" (every
 # analyze with a time step, the transient one, skipped: the model, the
-# record and the static steps alone), the script and its own words.
+# record and the static steps alone) or "loop" (each `analyze n dt` run as
+# n calls of `analyze 1 dt` in a Tcl loop, as scripts often step), the
+# script and its own words.
 lassign $argv out steps mode script
 set argv [list $out {*}[lrange $argv 4 end]]
 set argc [llength $argv]
@@ -16,6 +18,21 @@ if {$mode eq "setup"} {
             return 0
         }
         return [bench_analyze $n]
+    }
+}
+if {$mode eq "loop"} {
+    rename analyze bench_analyze
+    proc analyze {n args} {
+        if {[llength $args] == 0} {
+            return [bench_analyze $n]
+        }
+        for {set i 0} {$i < $n} {incr i} {
+            set status [bench_analyze 1 {*}$args]
+            if {$status != 0} {
+                return $status
+            }
+        }
+        return 0
     }
 }
 source $script

@@ -6,8 +6,10 @@ per transient step.
     speed.py POUNDFE OPENSEES WORK_DIR ROUNDS --compare CASE,...
 
 First form: each round runs every case in both programs, alternating which goes first,
-twice: the whole script ("full") and the script with its transient `analyze`
-skipped ("setup": start-up, the model, the record's Tcl loop, the static
+twice: the whole script ("full"; for the "loop" cases its transient
+`analyze n dt` as n calls of `analyze 1 dt` in a Tcl loop) and the script
+with its transient `analyze` skipped ("setup": start-up, the model, the
+record's Tcl loop, the static
 steps; bench/opensees/run_with.tcl). A run's time is its wall time and its
 CPU time (user + system, os.wait4), the CPU time being less sensitive to
 other jobs on the machine. Both programs run with OPENBLAS_NUM_THREADS=1 and
@@ -31,20 +33,30 @@ import compare  # noqa: E402  (its CASES: the corpus scripts and their words)
 HERE = os.path.dirname(os.path.abspath(__file__))
 CORPUS = os.path.join(HERE, "..", "..", "tests", "opensees")
 WRAPPER = os.path.join(HERE, "run_with.tcl")
-# case: (script, its words, transient steps: the script's own or set by ::bench_steps)
+SHEAR_PAIR = os.path.join(HERE, "shear_pair_3storey.tcl")
+# case: (script, its words, transient steps: the script's own or set by
+# ::bench_steps, whether set, and how the full run steps: "full", one
+# `analyze n dt`, or "loop", n calls of `analyze 1 dt` in a Tcl loop)
 CASES = {
-    "pounding ElasticPPGap, 4000 steps": ("pounding_sticks.tcl", ["ElasticPPGap"], 4000, False),
-    "pounding ElasticPPGap, 40000 steps": ("pounding_sticks.tcl", ["ElasticPPGap"], 40000, True),
-    "pounding ViscousDamper, 4000 steps": ("pounding_sticks.tcl", ["ViscousDamper"], 4000, False),
-    "3D fibre frame, 300 steps": ("fibre_frame_3d.tcl", [], 300, False),
-    "3D fibre frame, 3000 steps": ("fibre_frame_3d.tcl", [], 3000, True),
+    "pounding ElasticPPGap, 4000 steps": ("pounding_sticks.tcl", ["ElasticPPGap"], 4000, False,
+                                          "full"),
+    "pounding ElasticPPGap, 4000 steps, analyze 1 in a loop": (
+        "pounding_sticks.tcl", ["ElasticPPGap"], 4000, False, "loop"),
+    "pounding ElasticPPGap, 40000 steps": ("pounding_sticks.tcl", ["ElasticPPGap"], 40000, True,
+                                           "full"),
+    "pounding ViscousDamper, 4000 steps": ("pounding_sticks.tcl", ["ViscousDamper"], 4000, False,
+                                           "full"),
+    "3-storey shear pair, ImpactMaterial gaps, 4000 steps": (SHEAR_PAIR, [], 4000, False, "full"),
+    "3D fibre frame, 300 steps": ("fibre_frame_3d.tcl", [], 300, False, "full"),
+    "3D fibre frame, 3000 steps": ("fibre_frame_3d.tcl", [], 3000, True, "full"),
 }
 
 
 def timed(program, case, mode, out):
     """Wall and CPU seconds of one run of the case."""
-    script, words, steps, override = CASES[case]
-    return timed_command(program, [WRAPPER, out, str(steps if override else 0), mode,
+    script, words, steps, override, stepping = CASES[case]
+    return timed_command(program, [WRAPPER, out, str(steps if override else 0),
+                                   stepping if mode == "full" else mode,
                                    os.path.join(CORPUS, script)] + words, out)
 
 

@@ -99,13 +99,20 @@ namespace poundfe
         }
       number_diaphragms();
       mass_of_equation.setZero(n_equations);
+      inertia_terms.clear();
       for (const auto &[tag, node] : domain.nodes)
         for (unsigned int k = 0; k < node.fixed.size(); ++k)
           if (node.equation[k] >= 0)
-            mass_of_equation[node.equation[k]] += node.mass[k] + node.element_mass[k];
+            {
+              const double m = node.mass[k] + node.element_mass[k];
+              mass_of_equation[node.equation[k]] += m;
+              inertia_terms.push_back({node.equation[k], k, m});
+            }
       number_mass_damping();
+      beam_loads_taken = false;
       for (auto &[tag, element] : domain.elements)
         {
+          beam_loads_taken = beam_loads_taken || element->takes_beam_loads();
           element->equations.clear();
           for (const int n : element->node_tags)
             for (const int eq : domain.node(n).equation)
@@ -274,20 +281,27 @@ namespace poundfe
           }
       }
 
-      /// The element's damping matrix C_e (see opensees_analysis.h) into c.
+      /// The element's damping matrix C_e (see opensees_analysis.h) into c,
+      /// `work` the storage of its tangents.
       void
-      element_damping(const Element &element, const RayleighFactors &r, Matrix &c)
+      element_damping(const Element &element, const RayleighFactors &r, Matrix &c, Matrix &work)
       {
         if (!element.rayleigh_damped())
           {
-            c = element.material_damping();
+            element.material_damping_into(c);
             return;
           }
         c.setZero(element.n_dofs(), element.n_dofs());
         if (r.beta_k != 0)
-          c += r.beta_k * element.tangent();
+          {
+            element.tangent_into(work);
+            c += r.beta_k * work;
+          }
         if (r.beta_k_init != 0)
-          c += r.beta_k_init * element.initial_tangent();
+          {
+            element.initial_tangent_into(work);
+            c += r.beta_k_init * work;
+          }
         if (r.beta_k_committed != 0)
           c += r.beta_k_committed * element.committed_tangent;
       }
@@ -319,12 +333,14 @@ namespace poundfe
       return true;
     }
 
-    Vector
+    const Vector &
     Analysis::residual()
     {
-      Vector        r = Vector::Zero(n_equations);
+      Vector &r = unbalance;
+      r.setZero(n_equations);
       const Vector &v = at_alpha ? V_alpha : V; // HHT: the damping at t + alpha dt
-      domain.apply_element_loads(trial_time);   // their resisting forces take them
+      if (beam_loads_taken)
+        domain.apply_element_loads(trial_time); // their resisting forces take them
       for (const auto &[tag, load] : domain.nodal_loads(trial_time))
         {
           const Node &node = domain.node(tag);
@@ -334,10 +350,11 @@ namespace poundfe
       for (const auto &[tag, element] : domain.elements)
         {
           Vector &f = element_force;
-          f         = element->force();
+          element->force_into(f);
           if (opts.transient && element->rayleigh_damped()) // materials' own damping is in f
             {
-              element_damping(*element, domain.rayleigh_of(tag), element_damping_matrix);
+              element_damping(*element, domain.rayleigh_of(tag), element_damping_matrix,
+                              element_work_matrix);
               element_values(*element, v, nullptr, combinations, element_velocity);
               f.noalias() += element_damping_matrix * element_velocity;
             }
@@ -346,16 +363,16 @@ namespace poundfe
         }
       if (!opts.transient)
         return r;
-      const std::vector<double> ag = domain.ground_acceleration(trial_time);
       const double alpha_m = uniform_mass_damping ? domain.rayleigh.alpha_m : 0.0;
-      for (const auto &[tag, node] : domain.nodes)
-        for (unsigned int k = 0; k < node.equation.size(); ++k)
-          if (node.equation[k] >= 0)
-            {
-              const int    eq = node.equation[k];
-              const double m  = node.mass[k] + node.element_mass[k];
-              r[eq] -= m * (A[eq] + ag[k] + alpha_m * v[eq]);
-            }
+      if (!ground_known || ground_time != trial_time)
+        {
+          ground       = domain.ground_acceleration(trial_time);
+          ground_time  = trial_time;
+          ground_known = true;
+        }
+      for (const InertiaTerm &t : inertia_terms) // the nodes' order, as OpenSees sums
+        r[t.equation] -=
+          t.mass * (A[t.equation] + ground[t.dof] + alpha_m * v[t.equation]);
       if (!uniform_mass_damping)
         r -= mass_damping_of_equation.cwiseProduct(v);
       return r;
@@ -374,11 +391,12 @@ namespace poundfe
       for (const auto &[tag, element] : domain.elements)
         {
           Matrix &k = element_matrix;
-          k         = element->tangent();
+          element->tangent_into(k);
           k *= c_k;
           if (c_c != 0)
             {
-              element_damping(*element, domain.rayleigh_of(tag), element_damping_matrix);
+              element_damping(*element, domain.rayleigh_of(tag), element_damping_matrix,
+                              element_work_matrix);
               k += c_c * element_damping_matrix;
             }
           const auto &eq = element->equations;
@@ -716,11 +734,13 @@ namespace poundfe
       if (opts.algorithm == Algorithm::bfgs)
         return iterate_bfgs(why);
       const bool every_iteration = opts.algorithm == Algorithm::newton || searching;
-      Vector     r               = residual();
+      Vector    &r               = iteration_residual; // their storage kept
+      Vector    &dx              = iteration_increment;
+      Vector     accelerated; // KrylovNewton's increment
+      r                          = residual();
       if (!every_iteration) // Linear, ModifiedNewton, KrylovNewton: one tangent per step
         assemble_tangent(k_k, k_c, c_m);
       KrylovAccelerator accelerator(opts.krylov_dimension, n_equations);
-      Vector            dx(n_equations);
       for (unsigned int iteration = 1;; ++iteration)
         {
           if (every_iteration)
@@ -732,7 +752,7 @@ namespace poundfe
           ++last_iterations;
           ++counts.iterations;
           // the state moves by the accelerated increment; the test sees dx
-          if (!apply_increment(krylov ? accelerator.accelerate(dx) : dx, why))
+          if (!apply_increment(krylov ? accelerated = accelerator.accelerate(dx) : dx, why))
             return -1;
           if (opts.algorithm == Algorithm::linear)
             return 1;
@@ -759,8 +779,9 @@ namespace poundfe
           k_k            = a;
           k_c            = a * c_c;
           step_dt        = dt;
-          const Vector v = V;
-          V              = (1 - g / b) * v + dt * (1 - 0.5 * g / b) * A;
+          const Vector &v = step_velocity; // V_n, its storage kept
+          step_velocity   = V;
+          V               = (1 - g / b) * v + dt * (1 - 0.5 * g / b) * A;
           A              = (1 - 0.5 / b) * A - 1 / (b * dt) * v;
           trial_time     = domain.time + a * dt;
           if (a != 1) // HHT: the elements at U_n (exactly), the velocity V_alpha
@@ -885,7 +906,8 @@ namespace poundfe
       if (!opts.transformation && !imposed_dofs.empty())
         warn("PlainHandler::handle() - non-homogeneous sp constraint: homogeneous constraint "
              "assumed (constraints Transformation imposes its value)");
-      print = warn;
+      print        = warn;
+      ground_known = false; // the patterns may have changed since the last analyze
       if (lambda_step == 0)
         {
           lambda_step     = opts.d_lambda;

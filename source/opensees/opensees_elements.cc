@@ -186,10 +186,21 @@ namespace poundfe
         bool
         set_trial(const Vector &u, const Vector &v) override
         {
-          rate.noalias()   = t * v; // into the members' storage: no allocation
-          strain.noalias() = t * u;
-          rate *= strain_scale;
-          strain *= strain_scale;
+          // t u and t v by rows into the members' storage: Eigen's dynamic
+          // product costs more than these few terms
+          rate.resize(laws.size());
+          strain.resize(laws.size());
+          for (unsigned int m = 0; m < laws.size(); ++m)
+            {
+              double e = 0, e_dot = 0;
+              for (Eigen::Index j = 0; j < t.cols(); ++j)
+                {
+                  e_dot += t(m, j) * v[j];
+                  e += t(m, j) * u[j];
+                }
+              rate[m]   = e_dot * strain_scale;
+              strain[m] = e * strain_scale;
+            }
           for (unsigned int m = 0; m < laws.size(); ++m)
             if (!laws[m]->set_trial(strain[m], rate[m]))
               {
@@ -202,9 +213,17 @@ namespace poundfe
         Vector
         force() const override
         {
+          Vector f;
+          force_into(f);
+          return f;
+        }
+
+        void
+        force_into(Vector &f) const override
+        {
           // sum_m t_m^T sigma_m by rows: t is mostly zeros, and a product
           // of Eigen's dynamic matrices allocates its temporaries
-          Vector f = Vector::Zero(t.cols());
+          f.setZero(t.cols());
           for (unsigned int m = 0; m < laws.size(); ++m)
             {
               const double stress = laws[m]->force();
@@ -212,7 +231,6 @@ namespace poundfe
                 f[j] += t(m, j) * stress;
             }
           f *= force_scale;
-          return f;
         }
 
         std::vector<double>
@@ -227,16 +245,31 @@ namespace poundfe
           return Element::response(words);
         }
 
-        Matrix tangent() const override { return weighted([](auto &l) { return l.tangent(); }); }
+        Matrix tangent() const override { return as_value(&ZeroLength::tangent_into); }
         Matrix
         initial_tangent() const override
         {
-          return weighted([](auto &l) { return l.initial_stiffness(); });
+          return as_value(&ZeroLength::initial_tangent_into);
         }
         Matrix
         material_damping() const override
         {
-          return weighted([](auto &l) { return l.damping_tangent(); });
+          return as_value(&ZeroLength::material_damping_into);
+        }
+        void
+        tangent_into(Matrix &k) const override
+        {
+          weighted([](auto &l) { return l.tangent(); }, k);
+        }
+        void
+        initial_tangent_into(Matrix &k) const override
+        {
+          weighted([](auto &l) { return l.initial_stiffness(); }, k);
+        }
+        void
+        material_damping_into(Matrix &c) const override
+        {
+          weighted([](auto &l) { return l.damping_tangent(); }, c);
         }
         void
         commit() override
@@ -288,13 +321,22 @@ namespace poundfe
                             "' is not supported");
         }
 
-        template <typename Value>
+        /// One of the *_into matrices as a new matrix.
         Matrix
-        weighted(const Value &value) const
+        as_value(void (ZeroLength::*into)(Matrix &) const) const
+        {
+          Matrix k;
+          (this->*into)(k);
+          return k;
+        }
+
+        template <typename Value>
+        void
+        weighted(const Value &value, Matrix &k) const
         {
           // sum_m t_m^T d_m t_m by rows, skipping t_m's zeros (as force())
           const Eigen::Index n = t.cols();
-          Matrix             k = Matrix::Zero(n, n);
+          k.setZero(n, n);
           for (unsigned int m = 0; m < laws.size(); ++m)
             {
               const double d = value(*laws[m]);
@@ -304,7 +346,6 @@ namespace poundfe
                     k(i, j) += t(m, i) * d * t(m, j);
             }
           k *= force_scale * strain_scale;
-          return k;
         }
 
         Matrix                                    t; // materials x DOFs
@@ -369,6 +410,22 @@ namespace poundfe
           Matrix kl = Tlb.transpose() * basic(&UniaxialLaw::tangent).asDiagonal() * Tlb;
           add_p_delta_stiffness(kl);
           return Tgl.transpose() * kl * Tgl;
+        }
+        void
+        force_into(Vector &f) const override
+        {
+          if (with_p_delta)
+            f = force();
+          else
+            ZeroLength::force_into(f);
+        }
+        void
+        tangent_into(Matrix &k) const override
+        {
+          if (with_p_delta)
+            k = tangent();
+          else
+            ZeroLength::tangent_into(k);
         }
         std::vector<double>
         response(const std::vector<std::string> &words) const override

@@ -1,10 +1,17 @@
 // OpenSees's Node and Element recorders (NodeRecorder.cpp,
 // ElementRecorder.cpp, DataFileStream.cpp: values streamed with
-// setprecision(p), separated by " ", one line per record).
+// setprecision(p), separated by " ", one line per record), and printf's
+// %.{p}g text (ISO C 7.21.6.1's g conversion; opensees_recorder.h says how
+// its short path is exact).
 #include <poundfe/opensees/opensees_recorder.h>
 #include <poundfe/output/atomic_file.h>
 
+#include <algorithm>
+#include <array>
 #include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace poundfe
 {
@@ -14,7 +21,192 @@ namespace poundfe
     {
       /// The text a recorder keeps before it writes to its file.
       constexpr std::size_t flush_size = 1u << 16;
+
+      using Wide = unsigned __int128;
+
+      /// 5^0 to 5^27 (5^27 < 2^63).
+      constexpr std::array<std::uint64_t, 28> powers_of_five = [] {
+        std::array<std::uint64_t, 28> p{};
+        p[0] = 1;
+        for (std::size_t i = 1; i < p.size(); ++i)
+          p[i] = 5 * p[i - 1];
+        return p;
+      }();
+
+      /// |x| = m 2^e times 10^q = m 5^q 2^(e + q) as an integer `whole`
+      /// and the comparison of its fraction with one half (-1 below, 0 a
+      /// tie, 1 above), exactly in 128-bit integers; false when 10^|q| is
+      /// past the table or the value past 2^64.
+      bool
+      scaled(const std::uint64_t m, const int e, const int q, std::uint64_t &whole, int &half)
+      {
+        if (q > 27 || q < -27)
+          return false;
+        Wide numerator = m, denominator = 1; // the value numerator / denominator
+        int  shift     = e + q;              // times 2^shift
+        if (q >= 0)
+          numerator *= powers_of_five[q];    // < 2^116
+        else
+          denominator = powers_of_five[-q];
+        if (q >= 0 && shift < 0) // a power of two below: shifts, not a division
+          {
+            const int k = -shift;
+            if (k >= 127 || (numerator >> k) >> 64 != 0)
+              return false;
+            whole                = static_cast<std::uint64_t>(numerator >> k);
+            const Wide remainder = numerator & ((Wide(1) << k) - 1), one_half = Wide(1) << (k - 1);
+            half = remainder < one_half ? -1 : remainder == one_half ? 0 : 1;
+            return true;
+          }
+        if (shift > 0)
+          {
+            if (shift > 60 || (numerator >> (127 - shift)) != 0)
+              return false;
+            numerator <<= shift;
+          }
+        else if (shift < 0)
+          {
+            if (-shift > 64 || (denominator >> (127 + shift)) != 0)
+              return false;
+            denominator <<= -shift;
+          }
+        const Wide quotient = numerator / denominator;
+        if (quotient >> 64 != 0)
+          return false;
+        whole                = static_cast<std::uint64_t>(quotient);
+        const Wide remainder = numerator - quotient * denominator;
+        half = 2 * remainder < denominator ? -1 : 2 * remainder == denominator ? 0 : 1;
+        return true;
+      }
+
+      /// The p digits of |x| rounded and its decimal exponent, or false
+      /// where the short path leaves it to std::to_chars (a tie, a
+      /// subnormal, a power of ten past the table).
+      bool
+      rounded_digits(const double magnitude, const int p, std::uint64_t &digits, int &exponent)
+      {
+        std::uint64_t bits;
+        std::memcpy(&bits, &magnitude, sizeof bits);
+        const int biased = static_cast<int>(bits >> 52);
+        if (biased == 0)
+          return false; // subnormal
+        const std::uint64_t m = (bits & ((std::uint64_t(1) << 52) - 1)) | (std::uint64_t(1) << 52);
+        const int           e = biased - 1075; // |x| = m 2^e
+        // floor(log10 |x|) from the binary exponent: exact or one too small
+        exponent         = ((biased - 1023) * 78913) >> 18;
+        const auto lower = std::uint64_t(1) * powers_of_five[p - 1] << (p - 1); // 10^(p-1)
+        const auto upper = lower * 10;
+        int        half  = 0;
+        if (!scaled(m, e, p - 1 - exponent, digits, half))
+          return false;
+        if (digits >= upper && !scaled(m, e, p - 1 - ++exponent, digits, half))
+          return false;
+        if (digits < lower || digits >= upper || half == 0)
+          return false; // the estimate off by more, or a tie (to_chars rounds those)
+        if (half > 0 && ++digits == upper)
+          {
+            digits = lower;
+            ++exponent;
+          }
+        return true;
+      }
+
+      /// "00" to "99".
+      constexpr std::array<char, 200> digit_pairs = [] {
+        std::array<char, 200> pairs{};
+        for (int i = 0; i < 100; ++i)
+          {
+            pairs[2 * i]     = static_cast<char>('0' + i / 10);
+            pairs[2 * i + 1] = static_cast<char>('0' + i % 10);
+          }
+        return pairs;
+      }();
+
+      /// The n decimal digits of `value` (< 10^n, n <= 9, leading zeros
+      /// kept) at text[0, n), two at a time from the last.
+      void
+      write_small_digits(char *text, int n, std::uint32_t value)
+      {
+        for (; n >= 2; n -= 2, value /= 100)
+          std::memcpy(text + n - 2, &digit_pairs[2 * (value % 100)], 2);
+        if (n == 1)
+          text[0] = static_cast<char>('0' + value);
+      }
+
+      /// The same for n <= 17: the last eight digits and the others apart,
+      /// each in 32-bit arithmetic.
+      void
+      write_digits(char *text, const int n, const std::uint64_t value)
+      {
+        if (n <= 9)
+          return write_small_digits(text, n, static_cast<std::uint32_t>(value));
+        write_small_digits(text, n - 8, static_cast<std::uint32_t>(value / 100000000));
+        write_small_digits(text + n - 8, 8, static_cast<std::uint32_t>(value % 100000000));
+      }
+
+      /// printf's exponent: its sign and two digits at least.
+      char *
+      write_exponent(char *out, const int exponent)
+      {
+        *out++      = 'e';
+        *out++      = exponent < 0 ? '-' : '+';
+        const int e = exponent < 0 ? -exponent : exponent;
+        if (e < 10)
+          *out++ = '0';
+        return std::to_chars(out, out + 3, e).ptr;
+      }
     } // namespace
+
+    char *
+    write_precision_text(char *out, const double x, int precision)
+    {
+      if (precision == 0)
+        precision = 1; // C's rule for %g
+      if (x == 0) // zeros are most of a gap's open steps
+        {
+          if (std::signbit(x))
+            *out++ = '-';
+          *out++ = '0';
+          return out;
+        }
+      std::uint64_t digits   = 0;
+      int           exponent = 0;
+      if (precision < 1 || precision > 17 || !std::isfinite(x) ||
+          !rounded_digits(std::fabs(x), precision, digits, exponent))
+        return std::to_chars(out, out + precision_text_room(precision), x,
+                             std::chars_format::general, precision)
+          .ptr;
+      char text[20];
+      write_digits(text, precision, digits); // exactly `precision` digits
+      int n = precision;
+      while (n > 1 && text[n - 1] == '0') // trailing zeros go
+        --n;
+      if (x < 0)
+        *out++ = '-';
+      if (exponent < -4 || exponent >= precision)
+        {
+          *out++ = text[0];
+          if (n > 1)
+            {
+              *out++ = '.';
+              out    = std::copy(text + 1, text + n, out);
+            }
+          return write_exponent(out, exponent);
+        }
+      if (exponent < 0)
+        {
+          *out++ = '0';
+          *out++ = '.';
+          out    = std::fill_n(out, -exponent - 1, '0');
+          return std::copy(text, text + n, out);
+        }
+      const int whole = exponent + 1; // the digits before the point
+      if (n <= whole)
+        return std::fill_n(std::copy(text, text + n, out), whole - n, '0');
+      out    = std::copy(text, text + whole, out);
+      *out++ = '.';
+      return std::copy(text + whole, text + n, out);
+    }
 
     Recorder::Recorder(const std::string &file_name, const bool with_time, const int digits)
       : file(std::make_unique<AtomicFile>(file_name))
@@ -34,15 +226,14 @@ namespace poundfe
         line.push_back(domain.time);
       values(domain, line);
       // room for each number: sign, the digits, the point and an exponent
-      const std::size_t start = buffer.size(), room = precision + 16;
+      const std::size_t start = buffer.size(), room = precision_text_room(precision) + 1;
       buffer.resize(start + line.size() * room + 1);
-      char *const end = buffer.data() + buffer.size();
-      char       *out = buffer.data() + start;
+      char *out = buffer.data() + start;
       for (std::size_t i = 0; i < line.size(); ++i)
         {
           if (i > 0)
             *out++ = ' ';
-          out = std::to_chars(out, end, line[i], std::chars_format::general, precision).ptr;
+          out = write_precision_text(out, line[i], precision);
         }
       *out++ = '\n';
       buffer.resize(out - buffer.data());

@@ -161,7 +161,8 @@ namespace poundfe
       void   gather();
       void   scatter();
       bool   set_trial(std::string &why);
-      Vector residual();
+      /// R at the trial state, in `unbalance` (valid until the next call).
+      const Vector &residual();
       void   assemble_tangent(double c_k, double c_c, double c_m);
       /// K_eff's entries into the dense matrix or the triplets.
       void   add_element_tangents(double c_k, double c_c);
@@ -209,6 +210,25 @@ namespace poundfe
       /// (Domain::uniform_mass_damping false; else domain.rayleigh's times M).
       Vector          mass_damping_of_equation;
       bool            uniform_mass_damping = true;
+      /// A node's mass on an equation, along its DOF (the ground
+      /// acceleration's component), in the nodes' order.
+      struct InertiaTerm
+      {
+        int          equation;
+        unsigned int dof;
+        double       mass;
+      };
+      std::vector<InertiaTerm> inertia_terms;
+      /// Whether an element takes beam loads (the residual applies them).
+      bool            beam_loads_taken = false;
+      /// The ground acceleration at ground_time (per DOF), the residual's
+      /// iterations at one time sharing it.
+      std::vector<double> ground;
+      double              ground_time  = 0;
+      bool                ground_known = false;
+      /// The residual's, the iterations' and the step's vectors, their
+      /// storage kept.
+      Vector          unbalance, iteration_residual, iteration_increment, step_velocity;
       /// The DOFs the sp commands impose (node, 0-based DOF) and their
       /// values at the trial time.
       std::vector<std::pair<int, unsigned int>> imposed_dofs;
@@ -234,7 +254,7 @@ namespace poundfe
       /// Each element's local displacements and velocities (set_trial's
       /// arguments), by the elements' order, and its tangent and damping.
       std::vector<std::pair<Vector, Vector>> element_state;
-      Matrix                        element_matrix, element_damping_matrix;
+      Matrix element_matrix, element_damping_matrix, element_work_matrix;
       Vector                        element_force, element_velocity;
       std::unique_ptr<LinearSolver> solver;
       std::function<void(const std::string &)> print; // analyze's `warn`

@@ -87,6 +87,13 @@ namespace poundfe
       virtual Matrix initial_tangent() const = 0;
       /// The damping matrix of its materials (used when not Rayleigh-damped).
       virtual Matrix material_damping() const { return Matrix::Zero(n_dofs(), n_dofs()); }
+      /// The same four into the caller's storage, which keeps its memory
+      /// from one iteration to the next (the analysis's calls); an element
+      /// that computes them in place overrides these.
+      virtual void force_into(Vector &f) const { f = force(); }
+      virtual void tangent_into(Matrix &k) const { k = tangent(); }
+      virtual void initial_tangent_into(Matrix &k) const { k = initial_tangent(); }
+      virtual void material_damping_into(Matrix &c) const { c = material_damping(); }
       /// Whether the domain's Rayleigh factors damp it (OpenSees: beams
       /// always, zeroLength with -doRayleigh).
       virtual bool rayleigh_damped() const = 0;

@@ -5,7 +5,8 @@
 // basicDeformation, section i force|deformation), separated by spaces,
 // with -precision significant digits (6 by default), as OpenSees's
 // DataFileStream writes them (setprecision(p): printf's %.pg, which
-// std::to_chars gives in general format with precision p). The file
+// std::to_chars gives in general format with precision p;
+// write_precision_text below gives the same text faster). The file
 // appears complete when the script ends (or at wipe), and not at all when
 // it fails.
 #ifndef poundfe_opensees_opensees_recorder_h
@@ -13,6 +14,7 @@
 
 #include <poundfe/opensees/opensees_domain.h>
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +25,26 @@ namespace poundfe
 
   namespace opensees
   {
+    /// The room write_precision_text needs after `out` for precision p.
+    constexpr std::size_t
+    precision_text_room(const int precision)
+    {
+      return static_cast<std::size_t>(precision > 0 ? precision : 6) + 16;
+    }
+
+    /// Writes x as printf's %.{precision}g at `out` (precision_text_room
+    /// characters of room) and returns the end of the text: x correctly
+    /// rounded to p significant digits, trailing zeros removed, fixed
+    /// notation when its decimal exponent X (after the rounding) has
+    /// -4 <= X < p, scientific (d.ddde-05) otherwise. std::to_chars(general,
+    /// p) gives that text (Ryu printf, some 600 instructions a number); the
+    /// short path here writes |x| = m 2^e times 10^(p-1-X) = m 5^q 2^(e+q)
+    /// as a quotient of 128-bit integers, whose integer part and remainder
+    /// give the p digits and the rounding exactly. Ties, and all the short
+    /// path does not cover (p outside 1 to 17, |q| > 27, subnormals,
+    /// infinities, NaN), go to std::to_chars.
+    char *write_precision_text(char *out, double x, int precision);
+
     struct NodeRecorderSpec
     {
       std::string               file;
