@@ -1,3 +1,4 @@
+#include <poundfe/excitation/ground_motion_bounds.h>
 #include <poundfe/excitation/spectrum_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -60,8 +61,8 @@ namespace poundfe
                "the soil factor S and corner periods TB, TC, TD of the target. Unit: -.",
                ground_type_names());
     prm.add_parameter("Design ground acceleration", design_ground_acceleration,
-                      "a_g of the target on type A ground (EN 1998-1: gamma_I a_gR). "
-                      "Unit: g.",
+                      "a_g of the target on type A ground (EN 1998-1: gamma_I a_gR), at "
+                      "most 10 g (twice the largest ground acceleration recorded). Unit: g.",
                       Patterns::Double(0));
     prm.add_parameter("Matching period", matching_period,
                       "Period at which `spectrum --realizations N` matches the ensemble's mean "
@@ -86,6 +87,8 @@ namespace poundfe
     input.distinct(s + "Damping ratios", damping_ratios);
     if (target != DesignSpectrum::none)
       input.positive(s + "Design ground acceleration", design_ground_acceleration);
+    input.at_most(s + "Design ground acceleration", design_ground_acceleration,
+                  largest_ground_acceleration_g, "g", largest_ground_acceleration_why);
     input.non_negative(s + "Matching period", matching_period);
   }
 
