@@ -9,6 +9,16 @@ namespace poundfe
 {
   namespace Patterns = dealii::Patterns;
 
+  namespace
+  {
+    /// The longest period of a spectrum: far past any structure's, where
+    /// the oscillator only follows the ground (Sd is its peak displacement).
+    /// A maximum period of 1e200 s had not finished after 100 s, nor
+    /// stopped at once on SIGTERM, where input/floor-spectra.prm's spectrum
+    /// takes a second.
+    constexpr double largest_spectral_period = 1000;
+  } // namespace
+
   const NameTable<DesignSpectrum> &
   design_spectrum_names()
   {
@@ -36,8 +46,8 @@ namespace poundfe
     prm.add_parameter("Minimum period", min_period,
                       "Shortest period of the response spectra (> 0). Unit: s.",
                       Patterns::Double(0));
-    prm.add_parameter("Maximum period", max_period, "Longest period of the response spectra. "
-                      "Unit: s.",
+    prm.add_parameter("Maximum period", max_period, "Longest period of the response spectra, "
+                      "at most 1000 s (far past any structure's period). Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Number of periods", n_periods,
                       "Periods from the minimum to the maximum, both included. Unit: count.",
@@ -78,6 +88,8 @@ namespace poundfe
     const std::string s = "Spectrum/";
     input.positive(s + "Minimum period", min_period);
     input.positive(s + "Maximum period", max_period);
+    input.at_most(s + "Maximum period", max_period, largest_spectral_period, "s",
+                  "far past any structure's period, where Sd is the peak ground displacement");
     if (!(max_period > min_period) && n_periods > 1)
       input.fail(s + "Maximum period", "must exceed the minimum period (" +
                                          std::to_string(min_period) + " s)");
