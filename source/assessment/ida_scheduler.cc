@@ -25,10 +25,13 @@
 //   record is done and nothing is under way, or at an interruption (its
 //   own signal or a worker's done with 1); a worker then drops the runs it
 //   had not started. Rank 0 receives until every worker is done.
-// Rank 0 writes each row to the journal as it comes and syncs the journal
-// every half second and at the end (append_file.h): a row is a few ms of
-// computing, and a sync per row made rank 0 wait on the disk longer than it
-// computed.
+// Rank 0 writes each row to the journal as it comes; the journal is synced
+// every half second on a thread of its own and at the end (append_file.h):
+// a row is a few ms of computing, and a sync per row made rank 0 wait on
+// the disk longer than it computed; a sync in its loop still cost ~3 % of
+// its time under disk load. What a crash can lose is only rows that a
+// resume runs again: a killed process none (written rows are in the page
+// cache), a machine going down the rows since the last sync.
 // The record dealt is the free one with the fewest runs (the lowest number
 // among equals), so the records advance together and the last rounds, in
 // which few chains remain, are short; the order changes which rank runs
@@ -106,6 +109,32 @@ namespace poundfe
         for (Pending &p : pending)
           MPI_Wait(&p.request, MPI_STATUS_IGNORE);
         pending.clear();
+      }
+
+      PendingSends() = default;
+      PendingSends(const PendingSends &) = delete;
+      PendingSends &operator=(const PendingSends &) = delete;
+
+      /// Left by an exception with sends in flight: MPI may still read a
+      /// buffer freed here, so each is cancelled and then waited for, which
+      /// the standard makes a local call (it returns whether or not the
+      /// receiver ever posts its receive), before its buffer goes.
+      ~PendingSends()
+      {
+        int finalized = 0;
+        MPI_Finalized(&finalized);
+        if (finalized)
+          return;
+        for (Pending &p : pending)
+          {
+            int completed = 0;
+            MPI_Test(&p.request, &completed, MPI_STATUS_IGNORE);
+            if (!completed)
+              {
+                MPI_Cancel(&p.request);
+                MPI_Wait(&p.request, MPI_STATUS_IGNORE);
+              }
+          }
       }
 
     private:

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace poundfe::commands
@@ -198,6 +199,55 @@ namespace poundfe::commands
         }
       json.end_array();
     }
+    /// Rank 0's results of the levels done (all, or those before an
+    /// interruption): the tables, the fits, summary.json and the figure;
+    /// whether the figure is drawn, nothing when no level was done.
+    std::optional<bool>
+    write_fragility(const CommandRun &run, const RealizationRunner &runner,
+                    const FragilityLevels &done, const FragilityLevels *const nominal_done,
+                    const bool interrupted, dealii::ConditionalOStream &pcout)
+    {
+      const InputParameters     &input      = *run.input;
+      const std::string         &directory  = run.directory;
+      const std::vector<double> &all_levels = input.fragility.pga_levels;
+      const std::vector<double> &limits     = input.monte_carlo.drift_limits;
+      const std::vector<double> &levels     = done.levels;
+      if (interrupted)
+        pcout << "fragility interrupted after " << levels.size() << " of " << all_levels.size()
+              << " PGA levels: the points and curves are of these; the same command runs the "
+                 "rest\n";
+      JsonWriter json;
+      begin_summary(json, "fragility", input, interrupted ? "interrupted" : "completed");
+      json.value("intensity_measure", "PGA (g)")
+        .value("pga_levels_g", all_levels)
+        .value("completed_levels", levels.size())
+        .value("realizations_per_level", input.fragility.realizations_per_level)
+        .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
+      write_level_tables(run, done, "");
+      write_level_tables(run, nominal_done ? *nominal_done : FragilityLevels(), "record-to-record/");
+      write_level_damage(json, runner, done);
+      if (levels.empty()) // nothing to fit
+        {
+          json.end_object();
+          write_result_text(run.memory, directory, "summary.json", json.str());
+          return std::nullopt;
+        }
+      // One curve for pounding (if there are gaps) and one per drift limit.
+      const std::vector<FragilityCurve> curves =
+        fit_fragility_curves(done, limits, runner.has_gaps());
+      write_points(run, levels, curves);
+      write_fitted(run, levels, curves);
+      const Plot plot = write_curves(json, pcout, levels, curves);
+      if (nominal_done && nominal_done->levels.size() == levels.size())
+        write_dispersion_split(json, pcout, curves,
+                               fit_fragility_curves(*nominal_done, limits, runner.has_gaps()));
+      json.end_object();
+      const bool draws = input.output.plots && !interrupted && !run.memory;
+      if (draws) // stop soon: the resumed run draws it
+        draw_plots(directory, {plot});
+      write_result_text(run.memory, directory, "summary.json", json.str());
+      return draws;
+    }
   } // namespace
 
   int
@@ -247,46 +297,15 @@ namespace poundfe::commands
       return status;
 
     timer.enter_subsection("fit and output");
-    // Interrupted: the points and curves of the levels done.
-    const std::vector<double> &levels = done.levels;
-    if (interrupted)
-      pcout << "fragility interrupted after " << levels.size() << " of " << all_levels.size()
-            << " PGA levels: the points and curves are of these; the same command runs the rest\n";
-    JsonWriter json;
-    begin_summary(json, "fragility", input, interrupted ? "interrupted" : "completed");
-    json.value("intensity_measure", "PGA (g)")
-      .value("pga_levels_g", all_levels)
-      .value("completed_levels", levels.size())
-      .value("realizations_per_level", per_level)
-      .value("seed", static_cast<unsigned long>(runner.stochastic_load().seed()));
-    write_level_tables(run, done, "");
-    write_level_tables(run, nominal_done, "record-to-record/");
-    write_level_damage(json, runner, done);
-    if (levels.empty()) // nothing to fit
-      {
-        json.end_object();
-        write_result_text(run.memory, directory, "summary.json", json.str());
-        return status;
-      }
-    // One curve for pounding (if there are gaps) and one per drift limit.
-    const std::vector<FragilityCurve> curves =
-      fit_fragility_curves(done, limits, runner.has_gaps());
-    write_points(run, levels, curves);
-    write_fitted(run, levels, curves);
-    const Plot plot = write_curves(json, pcout, levels, curves);
-    if (nominal && nominal_done.levels.size() == levels.size())
-      write_dispersion_split(json, pcout, curves,
-                             fit_fragility_curves(nominal_done, limits, runner.has_gaps()));
-    json.end_object();
-    const bool draws = input.output.plots && !interrupted && !run.memory;
-    if (draws) // stop soon: the resumed run draws it
-      draw_plots(directory, {plot});
-    write_result_text(run.memory, directory, "summary.json", json.str());
+    const std::optional<bool> draws =
+      write_fragility(run, runner, done, nominal ? &nominal_done : nullptr, interrupted, pcout);
+    if (!draws)
+      return status;
     timer.leave_subsection();
 
     pcout << "results in " << run.results_place()
           << " (summary.json, fragility_points.csv, fragility_curves.csv"
-          << (draws ? ", fragility.png" : "")
+          << (*draws ? ", fragility.png" : "")
           << ", pga_*/realizations.csv)\n";
     print_timing(timer);
     return status;

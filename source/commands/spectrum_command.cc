@@ -306,6 +306,51 @@ namespace poundfe
       json.end_object();
     }
 
+    /// summary.json of `spectrum --realizations N`: the motion, the
+    /// ensemble's intensity measures, the spectrum's grid, the target and
+    /// its matching.
+    void
+    write_ensemble_summary(const CommandRun &run, const MotionGenerator &generator,
+                           const EnsembleSpectrum &ensemble, const SpectrumMatching *const matched,
+                           const std::vector<std::string> &files)
+    {
+      const InputParameters        &input          = *run.input;
+      const GroundMotionParameters &g              = input.ground_motion;
+      const SpectrumParameters     &s              = input.spectrum;
+      const unsigned int            n_realizations = run.n_realizations;
+      const double                  s0             = generator.motion().spectral_intensity;
+      JsonWriter json;
+      begin_summary(json, "spectrum", input);
+      json.begin_object("ground_motion")
+        .value("description", generator.description())
+        .value("realizations", n_realizations)
+        .value("time_step_s", generator.motion().sample_interval)
+        .value("spectral_intensity_s0_m2_s3", s0)
+        .value("scale_factor", g.scale_factor)
+        .end_object();
+      json.begin_object("intensity");
+      const char *names[] = {"pga_m_s2", "pgv_m_s", "pgd_m", "arias_intensity_m_s",
+                             "significant_duration_5_95_s"};
+      for (unsigned int k = 0; k < 5; ++k)
+        json.begin_object(names[k])
+          .value("mean", ensemble.measures[k].mean)
+          .value("standard_deviation", ensemble.measures[k].standard_deviation)
+          .end_object();
+      json.value("baseline_correction", "none").end_object();
+      json.begin_object("spectrum")
+        .value("method", "Nigam-Jennings exact recursion, piecewise-linear excitation")
+        .value("damping_ratios", s.damping_ratios)
+        .value("min_period_s", s.periods().front())
+        .value("max_period_s", s.periods().back())
+        .value("periods", ensemble.n_grid)
+        .end_object();
+      write_target(json, s);
+      if (matched)
+        write_matching(json, *matched, g, s0);
+      json.value("files", files).end_object();
+      write_result_text(run.memory, run.directory, "summary.json", json.str());
+    }
+
     /// `spectrum --realizations N`: ensemble_spectrum.csv/png, summary.json.
     int
     ensemble_spectrum(const CommandRun &run)
@@ -351,36 +396,7 @@ namespace poundfe
           files.push_back(png);
       files.push_back("summary.json");
 
-      JsonWriter json;
-      begin_summary(json, "spectrum", input);
-      json.begin_object("ground_motion")
-        .value("description", generator.description())
-        .value("realizations", n_realizations)
-        .value("time_step_s", generator.motion().sample_interval)
-        .value("spectral_intensity_s0_m2_s3", s0)
-        .value("scale_factor", g.scale_factor)
-        .end_object();
-      json.begin_object("intensity");
-      const char *names[] = {"pga_m_s2", "pgv_m_s", "pgd_m", "arias_intensity_m_s",
-                             "significant_duration_5_95_s"};
-      for (unsigned int k = 0; k < 5; ++k)
-        json.begin_object(names[k])
-          .value("mean", ensemble.measures[k].mean)
-          .value("standard_deviation", ensemble.measures[k].standard_deviation)
-          .end_object();
-      json.value("baseline_correction", "none").end_object();
-      json.begin_object("spectrum")
-        .value("method", "Nigam-Jennings exact recursion, piecewise-linear excitation")
-        .value("damping_ratios", s.damping_ratios)
-        .value("min_period_s", s.periods().front())
-        .value("max_period_s", s.periods().back())
-        .value("periods", ensemble.n_grid)
-        .end_object();
-      write_target(json, s);
-      if (target)
-        write_matching(json, matching, g, s0);
-      json.value("files", files).end_object();
-      write_result_text(run.memory, directory, "summary.json", json.str());
+      write_ensemble_summary(run, generator, ensemble, matched, files);
 
       out << n_realizations << " realizations of " << generator.description() << "\n";
       if (target)

@@ -2,6 +2,8 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/excitation/excitation_parameters.h>
 
+#include <poundfe/excitation/ground_motion_bounds.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
@@ -112,7 +114,8 @@ namespace poundfe
                         "Sample interval of a one-column text record. Unit: s.");
       prm.add_parameter("Target PGA", p.record_target_pga,
                         "Scale the record to this PGA (0: keep it); Scale factor then "
-                        "multiplies it: the PGA is Target PGA x Scale factor. Unit: g.");
+                        "multiplies it: the PGA is Target PGA x Scale factor. At most 10 g (twice the "
+                        "largest ground acceleration recorded). Unit: g.");
       prm.leave_subsection();
     }
   } // namespace
@@ -177,7 +180,8 @@ namespace poundfe
     prm.add_parameter("Target PGA", target_pga,
                       "Expected PGA (Peak factor x the stationary standard deviation) that "
                       "sets S0 when S0 and D are 0; Scale factor then multiplies the sample: "
-                      "the PGA is Target PGA x Scale factor, in expectation. Unit: g.");
+                      "the PGA is Target PGA x Scale factor, in expectation. At most 10 g (twice the "
+                      "largest ground acceleration recorded). Unit: g.");
     prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation. Unit: dimensionless.");
     prm.add_parameter("Duration", duration, "Length of the sample. Unit: s.");
     prm.add_parameter("Sample interval", sample_interval,
@@ -328,6 +332,8 @@ namespace poundfe
     check_vertical(input);
     input.non_negative(gm + "Record/Time step", record_time_step);
     input.non_negative(gm + "Record/Target PGA", record_target_pga);
+    input.at_most(gm + "Record/Target PGA", record_target_pga, largest_ground_acceleration_g, "g",
+                  largest_ground_acceleration_why);
     if (!std::isfinite(scale_factor))
       input.fail(gm + "Scale factor", "must be finite");
     if (type == GroundMotionType::white_noise && !(spectral_intensity > 0 || noise_intensity_d > 0))
@@ -349,6 +355,8 @@ namespace poundfe
           input.fail(st + "zeta_f", "must lie in (0, 1)");
         input.non_negative(st + "S0", spectral_intensity);
         input.non_negative(st + "Target PGA", target_pga);
+        input.at_most(st + "Target PGA", target_pga, largest_ground_acceleration_g, "g",
+                      largest_ground_acceleration_why);
         input.positive(st + "Peak factor", peak_factor);
         input.positive(st + "Duration", duration);
         input.non_negative(st + "Sample interval", sample_interval);

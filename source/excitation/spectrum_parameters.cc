@@ -1,3 +1,4 @@
+#include <poundfe/excitation/ground_motion_bounds.h>
 #include <poundfe/excitation/spectrum_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -7,6 +8,16 @@
 namespace poundfe
 {
   namespace Patterns = dealii::Patterns;
+
+  namespace
+  {
+    /// The longest period of a spectrum: far past any structure's, where
+    /// the oscillator only follows the ground (Sd is its peak displacement).
+    /// A maximum period of 1e200 s had not finished after 100 s, nor
+    /// stopped at once on SIGTERM, where input/floor-spectra.prm's spectrum
+    /// takes a second.
+    constexpr double largest_spectral_period = 1000;
+  } // namespace
 
   const NameTable<DesignSpectrum> &
   design_spectrum_names()
@@ -35,8 +46,8 @@ namespace poundfe
     prm.add_parameter("Minimum period", min_period,
                       "Shortest period of the response spectra (> 0). Unit: s.",
                       Patterns::Double(0));
-    prm.add_parameter("Maximum period", max_period, "Longest period of the response spectra. "
-                      "Unit: s.",
+    prm.add_parameter("Maximum period", max_period, "Longest period of the response spectra, "
+                      "at most 1000 s (far past any structure's period). Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Number of periods", n_periods,
                       "Periods from the minimum to the maximum, both included. Unit: count.",
@@ -60,8 +71,8 @@ namespace poundfe
                "the soil factor S and corner periods TB, TC, TD of the target. Unit: -.",
                ground_type_names());
     prm.add_parameter("Design ground acceleration", design_ground_acceleration,
-                      "a_g of the target on type A ground (EN 1998-1: gamma_I a_gR). "
-                      "Unit: g.",
+                      "a_g of the target on type A ground (EN 1998-1: gamma_I a_gR), at "
+                      "most 10 g (twice the largest ground acceleration recorded). Unit: g.",
                       Patterns::Double(0));
     prm.add_parameter("Matching period", matching_period,
                       "Period at which `spectrum --realizations N` matches the ensemble's mean "
@@ -77,6 +88,8 @@ namespace poundfe
     const std::string s = "Spectrum/";
     input.positive(s + "Minimum period", min_period);
     input.positive(s + "Maximum period", max_period);
+    input.at_most(s + "Maximum period", max_period, largest_spectral_period, "s",
+                  "far past any structure's period, where Sd is the peak ground displacement");
     if (!(max_period > min_period) && n_periods > 1)
       input.fail(s + "Maximum period", "must exceed the minimum period (" +
                                          std::to_string(min_period) + " s)");
@@ -86,6 +99,8 @@ namespace poundfe
     input.distinct(s + "Damping ratios", damping_ratios);
     if (target != DesignSpectrum::none)
       input.positive(s + "Design ground acceleration", design_ground_acceleration);
+    input.at_most(s + "Design ground acceleration", design_ground_acceleration,
+                  largest_ground_acceleration_g, "g", largest_ground_acceleration_why);
     input.non_negative(s + "Matching period", matching_period);
   }
 

@@ -25,7 +25,9 @@
 #endif
 
 #include <algorithm>
+#include <cstddef>
 #include <memory>
+#include <utility>
 
 namespace poundfe
 {
@@ -52,36 +54,40 @@ namespace poundfe
 #ifdef POUNDFE_WITH_SICONOS
   namespace
   {
+    /// Siconos's solver of each choice, one row a choice: the LCP's nsgs
+    /// is Siconos's projected Gauss-Seidel.
+    constexpr std::pair<LcpSolverKind, int> lcp_solver_ids[] = {
+      {LcpSolverKind::lemke, SICONOS_LCP_LEMKE},
+      {LcpSolverKind::nsgs, SICONOS_LCP_PGS},
+      {LcpSolverKind::enumeration, SICONOS_LCP_ENUM},
+      {LcpSolverKind::newton_fb, SICONOS_LCP_NEWTON_FB_FBLSA}};
+
+    constexpr std::pair<FrictionSolverKind, int> friction_solver_ids[] = {
+      {FrictionSolverKind::nsgs, SICONOS_FRICTION_2D_NSGS},
+      {FrictionSolverKind::lemke, SICONOS_FRICTION_2D_LEMKE},
+      {FrictionSolverKind::enumeration, SICONOS_FRICTION_2D_ENUM}};
+
+    template <typename Kind, std::size_t n>
     int
-    siconos_solver_id(const FrictionSolverKind kind)
+    siconos_solver_id(const std::pair<Kind, int> (&ids)[n], const Kind kind)
     {
-      switch (kind)
-        {
-          case FrictionSolverKind::nsgs:
-            return SICONOS_FRICTION_2D_NSGS;
-          case FrictionSolverKind::lemke:
-            return SICONOS_FRICTION_2D_LEMKE;
-          case FrictionSolverKind::enumeration:
-            return SICONOS_FRICTION_2D_ENUM;
-        }
-      return SICONOS_FRICTION_2D_NSGS;
+      for (const auto &[choice, id] : ids)
+        if (choice == kind)
+          return id;
+      Assert(false, dealii::ExcMessage("a solver choice without its Siconos solver"));
+      return ids[0].second;
     }
 
     int
     siconos_solver_id(const LcpSolverKind kind)
     {
-      switch (kind)
-        {
-          case LcpSolverKind::lemke:
-            return SICONOS_LCP_LEMKE;
-          case LcpSolverKind::nsgs:
-            return SICONOS_LCP_PGS;
-          case LcpSolverKind::enumeration:
-            return SICONOS_LCP_ENUM;
-          case LcpSolverKind::newton_fb:
-            return SICONOS_LCP_NEWTON_FB_FBLSA;
-        }
-      return SICONOS_LCP_LEMKE;
+      return siconos_solver_id(lcp_solver_ids, kind);
+    }
+
+    int
+    siconos_solver_id(const FrictionSolverKind kind)
+    {
+      return siconos_solver_id(friction_solver_ids, kind);
     }
 
     // Siconos owns what it allocates: the matrix and the options are freed

@@ -64,7 +64,8 @@ namespace poundfe
                hertz_damp_formula_names());
     prm.add_parameter("Effective mass", effective_mass,
                       "m_e; 0: m1 m2/(m1 + m2) of the colliding floor masses (the "
-                      "floor mass against a barrier). Unit: kg.");
+                      "floor mass against a barrier); at most 1e150 kg, the largest mass of a "
+                      "model. Unit: kg.");
     prm.add_parameter("Calibration velocity", calibration_velocity,
                       "Approach velocity of the calibration impact. Unit: m/s.");
     prm.add_parameter("Between buildings", between_buildings,
@@ -105,6 +106,8 @@ namespace poundfe
                  "must lie in (0, 1], got " + number_text(restitution));
     input.non_negative("Contact/Damping", damping);
     input.non_negative("Contact/Effective mass", effective_mass);
+    input.at_most("Contact/Effective mass", effective_mass, largest_model_value, "kg",
+                  "the largest mass of a model");
     input.positive("Contact/Calibration velocity", calibration_velocity);
   }
 

@@ -43,6 +43,13 @@ namespace poundfe
     constexpr unsigned int largest_storey_count = 100000;
     constexpr unsigned int largest_bay_count    = 10000;
 
+    /// A floor load beyond any floor: 1e10 N is a million tonnes' weight,
+    /// more than the heaviest building weighs in all (about 5e9 N). A load
+    /// far beyond it (1e200 N) passed the input and failed only in the
+    /// gravity analysis, as a numerical failure (exit 2).
+    constexpr double largest_floor_load = 1e10;
+    constexpr const char *largest_floor_load_why = "a million tonnes' weight on one floor";
+
     /// The counts of a generated frame or a shear building, before the
     /// lists are sized by them.
     void
@@ -148,7 +155,8 @@ namespace poundfe
                       "none. A 2D frame's floor load is shared equally by its joints and "
                       "enters the gravity analysis (Model/Gravity analysis) and the P-Delta "
                       "axial forces; a shear building's adds to the P-Delta compression of "
-                      "the storeys below it. Unit: N.");
+                      "the storeys below it. At most 1e10 N each (a million tonnes' weight, "
+                      "more than the heaviest building's whole weight). Unit: N.");
     declare_frame_entries(prm);
     declare_member_model(prm);
     declare_frame_3d_entries(prm);
@@ -238,7 +246,8 @@ namespace poundfe
                       "damping). Unit: N s/m.");
     prm.add_parameter("Storey yield drifts", storey_yield_drifts,
                       "[shear] Yield drift u_y of a Bouc-Wen storey (force k u_y at yield), "
-                      "one value or one per storey; empty or 0: elastic. Unit: m.");
+                      "one value or one per storey; empty or 0: elastic; at most 1e4 m (beyond any "
+                      "storey). Unit: m.");
     prm.add_parameter("Drawing width", drawing_width,
                       "[shear] Width used for placement and pictures. Unit: m.");
   }
@@ -358,6 +367,8 @@ namespace poundfe
           if (!b.floor_loads.empty())
             input.list(s + "Floor loads", b.floor_loads, n, true, "one per floor");
         }
+      for (const double q : b.floor_loads)
+        input.at_most(s + "Floor loads", q, largest_floor_load, "N", largest_floor_load_why);
       if (b.type == BuildingType::frame)
         {
           input.list(s + "Bay widths", b.bay_widths, b.n_bays, false, "one per bay");
@@ -407,6 +418,9 @@ namespace poundfe
         {
           input.list(s + "Hinges/Yield moment", b.hinge_yield_moments, n_groups, true,
                  "one per hinge group");
+          for (const double m_y : b.hinge_yield_moments) // 1e200 came out as a NaN energy
+            input.at_most(s + "Hinges/Yield moment", m_y, largest_model_value, "N m",
+                          "the largest force of a model");
           input.list(s + "Hinges/Yield rotation", b.hinge_yield_rotations, n_groups, true,
                  "one per hinge group");
           input.list(s + "Hinges/Stiffness", b.hinge_stiffnesses, n_groups, true,
@@ -420,6 +434,9 @@ namespace poundfe
         }
       if (b.type == BuildingType::shear && !b.storey_yield_drifts.empty())
         input.list(s + "Storey yield drifts", b.storey_yield_drifts, n, true, "one per storey");
+      for (const double u_y : b.storey_yield_drifts) // the force k u_y overflowed past it
+        input.at_most(s + "Storey yield drifts", u_y, largest_building_length, "m",
+                      "a drift beyond any storey");
       const bool hysteretic = (b.type != BuildingType::shear && !b.hinge_locations.empty()) ||
                               (b.type == BuildingType::shear && !b.storey_yield_drifts.empty());
       if (hysteretic)

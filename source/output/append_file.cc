@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <stdexcept>
+#include <system_error>
 #include <unistd.h>
 
 namespace poundfe
@@ -25,6 +26,8 @@ namespace poundfe
 
   AppendFile::~AppendFile()
   {
+    if (syncing.valid())
+      syncing.wait(); // the descriptor it syncs stays open until then
     if (descriptor >= 0)
       ::close(descriptor);
   }
@@ -32,6 +35,8 @@ namespace poundfe
   void
   AppendFile::sync()
   {
+    if (syncing.valid())
+      syncing.wait();
     ::fdatasync(descriptor);
     synced = std::chrono::steady_clock::now();
   }
@@ -40,8 +45,21 @@ namespace poundfe
   AppendFile::append_grouped(const std::string &line)
   {
     append(line, false);
+    if (syncing.valid() && syncing.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+      return;
     if (std::chrono::steady_clock::now() - synced > std::chrono::milliseconds(500))
-      sync();
+      {
+        synced           = std::chrono::steady_clock::now();
+        const int handle = descriptor;
+        try
+          {
+            syncing = std::async(std::launch::async, [handle] { ::fdatasync(handle); });
+          }
+        catch (const std::system_error &) // no thread to be had: sync here
+          {
+            ::fdatasync(handle);
+          }
+      }
   }
 
   void

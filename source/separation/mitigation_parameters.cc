@@ -20,7 +20,7 @@ namespace poundfe
                       Patterns::List(Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Damper coefficients", damper_coefficients,
                       "c of the dampers, one case each, >= 0: F = c |v|^alpha sgn(v); 0 is a "
-                      "damper without force, which equals the bare pair. Unit: N s/m (with alpha = 1; in general N s^alpha/m^alpha).",
+                      "damper without force, which equals the bare pair; at most 1e150 as every link's. Unit: N s/m (with alpha = 1; in general N s^alpha/m^alpha).",
                       Patterns::List(Patterns::Double(), 0));
     prm.add_parameter("Damper exponent", damper_exponent,
                       "alpha of every damper of the study, in (0, 1]. Unit: dimensionless.",
@@ -36,7 +36,7 @@ namespace poundfe
                       Patterns::List(Patterns::Double(), 0));
     prm.add_parameter("Bumper stiffnesses", bumper_stiffnesses,
                       "k of the bumpers (Bumpers/Stiffness): one for all thicknesses or one per "
-                      "thickness. Unit: N/m or N/m^1.5.",
+                      "thickness; at most 1e150 as Bumpers/Stiffness. Unit: N/m or N/m^1.5.",
                       Patterns::List(Patterns::Double(), 0));
     prm.leave_subsection();
   }
@@ -45,8 +45,12 @@ namespace poundfe
   MitigationParameters::check(const InputFile &input) const
   {
     const std::string s = "Mitigation/";
-    for (const double c : damper_coefficients)
-      input.non_negative(s + "Damper coefficients", c);
+    for (const double c : damper_coefficients) // the bounds of Links and Bumpers
+      {
+        input.non_negative(s + "Damper coefficients", c);
+        input.at_most(s + "Damper coefficients", c, largest_model_value, "",
+                      "beyond any physical link");
+      }
     input.distinct(s + "Damper coefficients", damper_coefficients);
     if (!(damper_exponent > 0 && damper_exponent <= 1))
       input.fail(s + "Damper exponent",
@@ -64,6 +68,9 @@ namespace poundfe
     if (!bumper_thicknesses.empty())
       input.list(s + "Bumper stiffnesses", bumper_stiffnesses, bumper_thicknesses.size(), false,
                  "one per thickness");
+    for (const double k : bumper_stiffnesses)
+      input.at_most(s + "Bumper stiffnesses", k, largest_model_value, "",
+                    "beyond any physical contact");
   }
 
   void

@@ -32,6 +32,14 @@ PATTERNS = [
     (r"\bleadership\b", "the project's leadership"),
     (r"\bthe issue's\b", "an issue"),
     (r"\bother engineers'", "the people who built it"),
+    (r"\bother (?:jobs|builds)\b", "the machine's other work"),
+    (r"\bother processes' builds\b", "the machine's other work"),
+    (r"\b(?:jobs|builds) running\b", "the machine's other work"),
+    (r"\bshared (?:2-core |two-core )?(?:machine|VM)\b", "the machine's load"),
+    (r"\b(?:machine|VM) shared with\b", "the machine's load"),
+    (r"\bunder heavy load\b", "the machine's load"),
+    (r"\bcompile jobs?\b|\bjobs compiling\b|\boverlapping a compile\b"
+     r"|\b(?:with|beside) (?:\w+ )?compiles\b", "the machine's other work"),
 ]
 PATTERNS = [(re.compile(p, re.IGNORECASE), why) for p, why in PATTERNS]
 
@@ -55,11 +63,20 @@ FLAGGED = ["Python module (issue 27 item 3: python/run)", "since stop 30", "Stop
            "see #51", "measured beside other sessions' builds", "on this machine",
            "under machine load", "on a quiet machine", "measured at load 3",
            "the issue's bound", "Issues 44-50 were not started",
-           "load 16 from other engineers' builds"]
+           "load 16 from other engineers' builds", "with other jobs running",
+           "beside other builds", "(load average 9, other builds on the 2 cores)",
+           "as other processes' builds started", "four builds running",
+           "on the shared 2-core machine", "2-core VM shared with four builds",
+           "**under heavy load**", "one compile job ran on the other core",
+           "three other jobs compiling", "its first runs overlapping a compile",
+           "shared the cores with six compiles", "a busy machine"]
 LEGITIMATE = ["a Tcl session", "in a ParaView session", "the run stops 2 s later",
               "subset stops 3 times", "&#39;", "https://github.com/x/y/issues/27",
               "the response stops at 5 % of the peak", "Newton stops after 3 iterations",
-              "a gnuplot session"]
+              "a gnuplot session", "load average 9.4",
+              "busy-polling MPI ranks", "a C program the script compiles",
+              "the library and the tests compile in batches", "on an idle machine",
+              "where the cores are busy with other work", "shared memory"]
 
 
 def check_patterns():
