@@ -6,8 +6,8 @@
 // over 60 decades, short decimals (k / 1000, whose scaled value is near an
 // integer), dyadic numbers with exact ties at some precision (k / 2^j),
 // integers, numbers next to powers of ten (the exponent's estimate and the
-// carry to 10^p), both signs, each precision from 1 to 17 and some outside
-// (0, -1, 20: to_chars's own), and the non-finite values and zeros. Any
+// carry to 10^p), both signs, each precision from 1 to 17 and, every seventh
+// number, -1, 9 or 19 (outside 1-17 to_chars decides), and the non-finite values and zeros. Any
 // difference is a bug: the comparison is of the texts.
 #include <poundfe/opensees/opensees_recorder.h>
 
