@@ -1,4 +1,5 @@
 #include <poundfe/input/input_parameters.h>
+#include <poundfe/input/override_origin.h>
 #include <poundfe/input/parameter_text.h>
 #include <poundfe/input/unknown_path.h>
 #include <poundfe/base/exceptions.h>
@@ -660,10 +661,36 @@ namespace poundfe
                              std::to_string(n_buildings) + " (raise it, or remove the section)");
         }
       p.values = flattened_values(prm);
-      p.finalize();
+      try
+        {
+          p.finalize();
+        }
+      catch (const InputError &e)
+        {
+          throw with_override_origin(e, overrides);
+        }
       return p;
     }
   } // namespace
+
+  InputError
+  with_override_origin(const InputError &error, const std::vector<ParameterOverride> &overrides)
+  {
+    if (error.line() > 0 || error.parameter().empty())
+      return error;
+    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+      if (o->path.substr(0, o->path.find(':')) == error.parameter())
+        {
+          const std::string origin = "--set '" + o->path + "=" + o->value + "'";
+          const std::string &file  = error.file();
+          if (file.size() >= origin.size() &&
+              file.compare(file.size() - origin.size(), origin.size(), origin) == 0)
+            return error; // named already (a command's own reading of its file)
+          return InputError((file.empty() ? "" : file + ", ") + origin, 0, error.parameter(),
+                            error.problem());
+        }
+    return error;
+  }
 
   InputParameters
   read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)

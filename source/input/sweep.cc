@@ -28,7 +28,8 @@ namespace poundfe
       }
     catch (const InputError &e) // say which value of the sweep it was
       {
-        throw InputError(e.file(), e.line(), e.parameter(),
+        // the swept value is an override of the reader's, not a --set
+        throw InputError(e.parameter() == parameter ? input.file : e.file(), e.line(), e.parameter(),
                          "at " + section + " value " + parameter + " = " + format_value(value) +
                            ": " + e.problem());
       }
