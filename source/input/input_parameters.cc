@@ -673,6 +673,12 @@ namespace poundfe
     }
   } // namespace
 
+  std::string
+  override_origin(const ParameterOverride &o)
+  {
+    return "--set '" + o.path + "=" + o.value + "': ";
+  }
+
   InputError
   with_override_origin(const InputError &error, const std::vector<ParameterOverride> &overrides)
   {
@@ -681,13 +687,10 @@ namespace poundfe
     for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
       if (o->path.substr(0, o->path.find(':')) == error.parameter())
         {
-          const std::string origin = "--set '" + o->path + "=" + o->value + "'";
-          const std::string &file  = error.file();
-          if (file.size() >= origin.size() &&
-              file.compare(file.size() - origin.size(), origin.size(), origin) == 0)
+          const std::string origin = override_origin(*o);
+          if (error.problem().rfind(origin, 0) == 0)
             return error; // named already (a command's own reading of its file)
-          return InputError((file.empty() ? "" : file + ", ") + origin, 0, error.parameter(),
-                            error.problem());
+          return InputError(error.file(), 0, error.parameter(), origin + error.problem());
         }
     return error;
   }

@@ -17,7 +17,7 @@
 #     distributed self-weight without a gravity analysis, a unit weight with
 #     the nodal self-weight, a unit weight beyond 1e150: exit 1, one line
 #     naming file, line and entry, nothing written (an entry a --set gave:
-#     naming the --set where the line would be); floor loads of 1e200,
+#     naming the --set); floor loads of 1e200,
 #     whose norm overflows: the gravity analysis fails, exit 2;
 #   - a brace (an inclined line element, the 7th) is labelled F_M7, never a
 #     beam's or a column's label: its recorded end forces balance its own
@@ -221,9 +221,9 @@ expect 1 "Member unit weight': has effect only with Member self-weight = distrib
   run unit.prm --output out
 model "${mesh_entries/25e3/1e160}" > huge-weight.prm
 expect 1 "Member unit weight': got 1e+160 N/m^3, at most 1e+150" run huge-weight.prm --output out
-expect 1 "mesh.prm, --set 'Building 1/Group sections=col, beam, col': parameter 'Building 1/Group sections': has 3 names" \
+expect 1 "mesh.prm: parameter 'Building 1/Group sections': --set 'Building 1/Group sections=col, beam, col': has 3 names" \
   run mesh.prm --output out --set "Building 1/Group sections=col, beam, col"
-expect 1 "mesh.prm, --set 'Building 1/Group sections=col, girder': parameter 'Building 1/Group sections': no section named 'girder'" \
+expect 1 "mesh.prm: parameter 'Building 1/Group sections': --set 'Building 1/Group sections=col, girder': no section named 'girder'" \
   run mesh.prm --output out --set "Building 1/Group sections=col, girder"
 # floor loads whose norm overflows: the gravity analysis fails (exit 2)
 # instead of passing its convergence test with no iteration
