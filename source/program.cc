@@ -38,26 +38,31 @@ namespace
     bool                     help    = false;
     bool                     version = false;
     /// --threads: deal.II's (TBB's) thread limit, 1 unless given.
-    unsigned int threads = 1;
+    unsigned int threads       = 1;
+    bool         threads_given = false;
   };
 
-  /// An option's whole-number value in [1, largest], or 0 with the message
-  /// in line.error.
+  /// An option's whole-number value in [1, largest], written in decimal
+  /// digits alone (no blank, sign or leading zero, which std::stol would
+  /// pass), or 0 with the message in line.error.
   long
   whole_number_option(const std::string &option, const std::string &text, const long largest,
                       CommandLine &line)
   {
-    std::size_t end = 0;
-    long        n   = 0;
+    const bool  digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos &&
+                        text[0] != '0';
+    std::size_t end    = 0;
+    long        n      = 0;
     try
       {
-        n = std::stol(text, &end);
+        if (digits)
+          n = std::stol(text, &end);
       }
     catch (const std::exception &)
       {
         end = 0;
       }
-    if (end == text.size() && n >= 1 && n <= largest)
+    if (digits && end == text.size() && n >= 1 && n <= largest)
       return n;
     line.error = "poundfe: error: " + option + " needs a whole number in 1.." +
                  std::to_string(largest) + ", got '" + text + "'\n";
@@ -68,6 +73,7 @@ namespace
   void
   parse_threads(const std::string &text, CommandLine &line)
   {
+    line.threads_given = true;
     if (const long n = whole_number_option("--threads", text, 256, line))
       line.threads = n;
   }
@@ -187,6 +193,12 @@ namespace
     if (command == nullptr)
       {
         err << "poundfe: error: unknown command '" << line.args[0] << "'\n" << usage_text();
+        return 1;
+      }
+    if (line.threads_given && !command->has(CommandRule::reads_file))
+      { // as --set: a command that reads no file runs no time history
+        err << "poundfe: error: --threads sets the threads of a time history's elements, and '"
+            << command->name << "' reads no parameter file and runs none\n";
         return 1;
       }
     return std::nullopt;

@@ -7,6 +7,7 @@
 #include <poundfe/commands/command_table.h>
 #include <poundfe/commands/dispatch.h>
 #include <poundfe/commands/rank_agreement.h>
+#include <poundfe/input/override_origin.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -212,6 +213,13 @@ namespace poundfe
       }
     else if (refusal)
       std::rethrow_exception(refusal);
-    return run_guarded(command, request, *input, err);
+    try
+      {
+        return run_guarded(command, request, *input, err);
+      }
+    catch (const InputError &e) // the model builder's, of an entry a --set gave
+      {
+        throw with_override_origin(e, request.overrides);
+      }
   }
 } // namespace poundfe

@@ -6,6 +6,15 @@
 // re-equilibrated on K_E + K_G at the full load. The load held through the
 // dynamics is the resisting force K u_g + f(u_g) of the end state, so that a
 // run without excitation stays at u_g to round-off.
+// The modes of the gravity state are those of the symmetric part of its
+// tangent, K_s = (K_t + K_t^T)/2. K_t is nonsymmetric where a PDelta member's
+// axial force varies on a drifted chord ((delta/L) g (dN/du)^T,
+// elements/crd_transformation.h), and the symmetric eigensolvers read one
+// triangle of what they are given, which would make the frequencies depend
+// on the numbering. For K_t = K_s + A with A antisymmetric, phi^T A phi = 0:
+// the eigenvalues of K_s are those of the linearised equations of motion
+// M du'' + K_t du = 0 to second order in A (a 2-storey frame with self-weight:
+// 3e-10 apart; OpenSees's eigen, which drops the term, 2.5e-7; doc/verification.md).
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/dynamics/time_history.h>
 #include <poundfe/assembly/nonlinear_elements.h>
@@ -29,6 +38,15 @@ namespace poundfe
       settings.max_iterations = g.max_iterations;
       settings.max_step_cuts  = g.max_step_cuts;
       return settings;
+    }
+
+    /// (K + K^T)/2.
+    SparseMatrix
+    symmetric_part(const SparseMatrix &k)
+    {
+      SparseMatrix s = 0.5 * (k + SparseMatrix(k.transpose()));
+      s.makeCompressed();
+      return s;
     }
 
     /// P-Delta: K_G of the axial forces at u_g in K (and the structure's
@@ -120,7 +138,7 @@ namespace poundfe
     gravity.path_factors = std::move(state.load_factors);
     gravity.displacement = state.displacement;
     gravity.held         = solver.resisting_force(gravity.displacement);
-    gravity.tangent      = solver.tangent();
+    gravity.tangent      = symmetric_part(solver.tangent());
     gravity.steps        = state.steps;
     gravity.iterations   = state.iterations;
     gravity.cuts         = state.cuts;

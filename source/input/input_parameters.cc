@@ -1,4 +1,5 @@
 #include <poundfe/input/input_parameters.h>
+#include <poundfe/input/override_origin.h>
 #include <poundfe/input/parameter_text.h>
 #include <poundfe/input/unknown_path.h>
 #include <poundfe/base/exceptions.h>
@@ -660,10 +661,39 @@ namespace poundfe
                              std::to_string(n_buildings) + " (raise it, or remove the section)");
         }
       p.values = flattened_values(prm);
-      p.finalize();
+      try
+        {
+          p.finalize();
+        }
+      catch (const InputError &e)
+        {
+          throw with_override_origin(e, overrides);
+        }
       return p;
     }
   } // namespace
+
+  std::string
+  override_origin(const ParameterOverride &o)
+  {
+    return "--set '" + o.path + "=" + o.value + "': ";
+  }
+
+  InputError
+  with_override_origin(const InputError &error, const std::vector<ParameterOverride> &overrides)
+  {
+    if (error.line() > 0 || error.parameter().empty())
+      return error;
+    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+      if (o->path.substr(0, o->path.find(':')) == error.parameter())
+        {
+          const std::string origin = override_origin(*o);
+          if (error.problem().rfind(origin, 0) == 0)
+            return error; // named already (a command's own reading of its file)
+          return InputError(error.file(), 0, error.parameter(), origin + error.problem());
+        }
+    return error;
+  }
 
   InputParameters
   read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)

@@ -1,5 +1,6 @@
 // One checked input per value of a parameter sweep (input/sweep.h).
 #include <poundfe/input/input_parameters.h>
+#include <poundfe/input/override_origin.h>
 #include <poundfe/input/sweep.h>
 #include <poundfe/base/exceptions.h>
 
@@ -28,9 +29,14 @@ namespace poundfe
       }
     catch (const InputError &e) // say which value of the sweep it was
       {
+        // the swept value is an override of the reader's, not a --set
+        const std::string swept   = override_origin({parameter, format_value(value)});
+        const std::string problem = e.problem().rfind(swept, 0) == 0 ?
+                                      e.problem().substr(swept.size()) :
+                                      e.problem();
         throw InputError(e.file(), e.line(), e.parameter(),
                          "at " + section + " value " + parameter + " = " + format_value(value) +
-                           ": " + e.problem());
+                           ": " + problem);
       }
   }
 } // namespace poundfe

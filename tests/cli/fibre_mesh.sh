@@ -16,8 +16,13 @@
 #     (Group E) in a fibre mesh, a physical id the Group ids do not list, a
 #     distributed self-weight without a gravity analysis, a unit weight with
 #     the nodal self-weight, a unit weight beyond 1e150: exit 1, one line
-#     naming file, line and entry, nothing written; floor loads of 1e200,
-#     whose norm overflows: the gravity analysis fails, exit 2.
+#     naming file, line and entry, nothing written (an entry a --set gave:
+#     naming the --set); floor loads of 1e200,
+#     whose norm overflows: the gravity analysis fails, exit 2;
+#   - a brace (an inclined line element, the 7th) is labelled F_M7, never a
+#     beam's or a column's label: its recorded end forces balance its own
+#     weight by statics (N1 + N2 = W sin(a), V1 + V2 = W cos(a), W = 25e3 A L,
+#     to 1e-9), which no beam's or column's would.
 #   fibre_mesh.sh POUNDFE
 set -u
 poundfe=$1
@@ -216,10 +221,35 @@ expect 1 "Member unit weight': has effect only with Member self-weight = distrib
   run unit.prm --output out
 model "${mesh_entries/25e3/1e160}" > huge-weight.prm
 expect 1 "Member unit weight': got 1e+160 N/m^3, at most 1e+150" run huge-weight.prm --output out
+expect 1 "mesh.prm: parameter 'Building 1/Group sections': --set 'Building 1/Group sections=col, beam, col': has 3 names" \
+  run mesh.prm --output out --set "Building 1/Group sections=col, beam, col"
+expect 1 "mesh.prm: parameter 'Building 1/Group sections': --set 'Building 1/Group sections=col, girder': no section named 'girder'" \
+  run mesh.prm --output out --set "Building 1/Group sections=col, girder"
 # floor loads whose norm overflows: the gravity analysis fails (exit 2)
 # instead of passing its convergence test with no iteration
 model "${mesh_entries}
   set Floor loads = 1e200" > huge-load.prm
 expect 2 "norm is not finite" modal huge-load.prm --output out
+# a brace from (0, 0) to (5, 3) (physical line 3, on the beams' section)
+awk '/^\$Elements/ { print; getline; print $1 + 1; next }
+     /^\$EndElements/ { print "7 1 2 3 7 1 4" } { print }' frame.msh > braced.msh
+braced="${mesh_entries/frame.msh/braced.msh}"
+braced="${braced/Group ids = 1, 2/Group ids = 1, 2, 3}"
+model "${braced/col, beam/col, beam, beam}" > braced.prm
+"$poundfe" run braced.prm --output run-braced --set "Time integration/End time=0.01" \
+  --set "Output/Recorders/Record=member end forces of F_M7, F_B1.1, F_C1.1 every 0" > /dev/null ||
+  fail "run braced: exit $?"
+python3 - run-braced/member_forces.csv <<'PY' || fail "the brace's label or its statics"
+import csv, math, sys
+row = next(csv.DictReader(open(sys.argv[1])))
+f = {k: float(row[f"F_M7_{k}"]) for k in ("N1_N", "V1_N", "N2_N", "V2_N")}
+area, length = 0.12, math.hypot(5, 3)
+weight = 25e3 * area * length
+axial, transverse = f["N1_N"] + f["N2_N"], f["V1_N"] + f["V2_N"]
+error = max(abs(axial - weight * 3 / length), abs(transverse - weight * 5 / length)) / weight
+others = [abs(float(row[f"{m}_N1_N"]) - f["N1_N"]) for m in ("F_B1.1", "F_C1.1")]
+print(f"brace F_M7: N1 + N2 = {axial:.6f}, V1 + V2 = {transverse:.6f} N, weight {weight:.6f} N: {error:.3g}")
+sys.exit(0 if error <= 1e-9 and min(others) > 1 else 1)
+PY
 [ "$failures" -eq 0 ] || { echo "$failures checks failed"; exit 1; }
 echo "fibre meshes: all checks passed"

@@ -37,7 +37,8 @@ namespace poundfe
     /// `applied` to the tolerance; the equations at t = 0 are in equilibrium
     /// to round-off with it.
     Vector held;
-    /// K + sum_e B_e D_e B_e^T at the gravity state (the modes' stiffness).
+    /// The symmetric part of K + sum_e B_e D_e B_e^T at the gravity state
+    /// (the modes' stiffness; the PDelta tangent is nonsymmetric).
     SparseMatrix tangent;
     /// The largest |u_g| of a translation, and its equation's name.
     double      peak_displacement = 0;
