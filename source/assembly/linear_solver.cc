@@ -78,10 +78,13 @@ namespace poundfe
     return std::make_unique<EigenLdltSolver>();
   }
 
+  // LAPACK's banded LU after a Cuthill-McKee numbering (band_lu_solver.cc)
+  std::unique_ptr<LinearSolver> create_band_lu_solver();
+
   std::vector<std::string>
   linear_solver_names()
   {
-    return {"eigen-ldlt", "umfpack", "petsc", "trilinos", "petsc-mumps", "petsc-cg-boomeramg",
+    return {"eigen-ldlt", "umfpack", "band-lu", "petsc", "trilinos", "petsc-mumps", "petsc-cg-boomeramg",
             "trilinos-cg-ml"};
   }
 
@@ -108,6 +111,8 @@ namespace poundfe
       return create_eigen_ldlt_solver();
     if (name == "umfpack")
       return create_umfpack_solver();
+    if (name == "band-lu")
+      return create_band_lu_solver();
     if (name == "petsc")
       return create_petsc_solver();
     if (name == "trilinos")

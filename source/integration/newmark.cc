@@ -1227,10 +1227,15 @@ namespace poundfe
         for (unsigned int h = 0; h < n_elements; ++h)
           {
             const unsigned int k = (*elements)[h].n_dofs();
+            // B_e = I (a member of full rank): B D B^T is D itself, bit for
+            // bit (the sum's other terms are signed zeros), without the k^2 r^2
+            // products of tangent_change_entry
+            const bool   identity = basis[h].cols() == k && basis[h].isIdentity(0.0);
+            const double *D       = d.data() + d_start[h];
             for (unsigned int i = 0; i < k; ++i)
               for (unsigned int j = 0; j < k; ++j)
                 if (const int index = L.entry_index[h][i * k + j]; index >= 0)
-                  values[index] += tangent_change_entry(d, h, i, j);
+                  values[index] += identity ? D[i + j * k] : tangent_change_entry(d, h, i, j);
           }
         L.holds_tangent = true;
         L.frozen_factorised = false; // the factorisation held is this one

@@ -196,7 +196,9 @@ namespace poundfe
                       "acceleration). Unit: dimensionless.");
     add_choice(prm, "Linear solver", linear_solver,
                "Solver of the effective matrix: direct (factorised once) or conjugate "
-               "gradients with algebraic multigrid; petsc and trilinos need MPI; "
+               "gradients with algebraic multigrid; band-lu is LAPACK's banded LU after a "
+               "Cuthill-McKee numbering, for a refactorised nonsymmetric tangent of a few "
+               "hundred equations (fibre frames on PDelta columns); petsc and trilinos need MPI; "
                "petsc-mumps (MUMPS through PETSc) splits the matrix and its factorisation "
                "over the ranks of mpirun -np P poundfe run (each rank keeps the whole "
                "state; rank 0 writes); petsc-cg-boomeramg (PETSc CG, hypre BoomerAMG) and "

@@ -32,6 +32,10 @@ namespace poundfe
     , lambda(parameters.lambda)
     , ft(parameters.ft)
     , Ets(parameters.Ets)
+    , Ec0(envelope.initial_modulus())
+    , eps_R((envelope.fpcu - lambda * Ec0 * envelope.epscu) / (Ec0 * (1 - lambda)))
+    , crack_strain(ft / Ec0)
+    , tension_end(ft * (1 / Ets + 1 / Ec0))
   {
     require_in("Concrete02", "lambda", lambda, 0, 1);
     require_non_negative("Concrete02", "ft", ft);
@@ -43,19 +47,32 @@ namespace poundfe
   Concrete02::virgin() const
   {
     Concrete02State s;
-    s.tangent = envelope.initial_modulus();
+    s.tangent = Ec0;
+    s.min_stress = envelope.at(0).stress;
+    // never compressed: the initial line (the limit of the formula of
+    // set_min_strain, which is 0/0 when eps_R = 0)
+    s.reload_slope = Ec0;
+    s.zero_strain  = 0;
     return s;
+  }
+
+  void
+  Concrete02::set_min_strain(Concrete02State &s, const double strain,
+                             const StressPoint &on_envelope) const
+  {
+    s.min_strain   = strain;
+    s.min_stress   = on_envelope.stress;
+    s.reload_slope = strain == 0 ? Ec0 : (s.min_stress - Ec0 * eps_R) / (strain - eps_R);
+    s.zero_strain  = strain == 0 ? 0.0 : strain - s.min_stress / s.reload_slope;
   }
 
   StressPoint
   Concrete02::tension_envelope(const double strain) const
   {
-    const double Ec0 = envelope.initial_modulus();
-    const double eps_t = ft / Ec0, eps_u = ft * (1 / Ets + 1 / Ec0);
-    if (strain <= eps_t)
+    if (strain <= crack_strain)
       return {Ec0 * strain, Ec0};
-    if (strain <= eps_u)
-      return {ft - Ets * (strain - eps_t), -Ets};
+    if (strain <= tension_end)
+      return {ft - Ets * (strain - crack_strain), -Ets};
     return {0, 0};
   }
 
@@ -68,9 +85,10 @@ namespace poundfe
       {
         Concrete02State   s = from;
         const StressPoint e = envelope.at(strain);
-        s.strain = s.min_strain = strain;
-        s.stress                = e.stress;
-        s.tangent               = e.tangent;
+        s.strain            = strain;
+        set_min_strain(s, strain, e);
+        s.stress  = e.stress;
+        s.tangent = e.tangent;
         return s;
       }
     return unload_or_reload(from, strain);
@@ -79,16 +97,9 @@ namespace poundfe
   Concrete02State
   Concrete02::unload_or_reload(const Concrete02State &from, const double strain) const
   {
-    Concrete02State s = from;
-    s.strain          = strain;
-    const double Ec0  = envelope.initial_modulus();
-    const double eps_R = (envelope.fpcu - lambda * Ec0 * envelope.epscu) / (Ec0 * (1 - lambda));
-    const double sigma_m = envelope.at(from.min_strain).stress;
-    // never compressed: the initial line (the limit of the formula, which
-    // is 0/0 when eps_R = 0)
-    const bool   virgin  = from.min_strain == 0;
-    const double Er      = virgin ? Ec0 : (sigma_m - Ec0 * eps_R) / (from.min_strain - eps_R);
-    const double eps_t   = virgin ? 0.0 : from.min_strain - sigma_m / Er;
+    Concrete02State s    = from;
+    s.strain             = strain;
+    const double sigma_m = from.min_stress, Er = from.reload_slope, eps_t = from.zero_strain;
     if (strain <= eps_t)
       {
         const double reloading = sigma_m + Er * (strain - from.min_strain);

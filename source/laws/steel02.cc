@@ -27,6 +27,8 @@ namespace poundfe
 {
   Steel02::Steel02(const Steel02Parameters &parameters)
     : p(parameters)
+    , eps_y(p.fy / p.E0)
+    , hardening(p.b * p.E0)
   {
     require_positive("Steel02", "fy", p.fy);
     require_positive("Steel02", "E0", p.E0);
@@ -51,14 +53,22 @@ namespace poundfe
     return s;
   }
 
+  void
+  Steel02::set_branch(Steel02State &s) const
+  {
+    const double xi = std::abs((s.eps_pl - s.eps_0) / eps_y);
+    s.R             = p.R0 * (1 - p.cR1 * xi / (p.cR2 + xi));
+    s.inverse_R     = 1 / s.R;
+    s.secant        = (s.sig_0 - s.sig_r) / (s.eps_0 - s.eps_r);
+  }
+
   Steel02State
   Steel02::respond(const Steel02State &from, const double strain) const
   {
     const double d_strain = strain - from.strain;
     if (from.direction == 0 && d_strain == 0)
       return from;
-    const double eps_y = p.fy / p.E0, hardening = p.b * p.E0;
-    Steel02State s     = from;
+    Steel02State s = from;
     s.strain           = strain;
     if (s.direction == 0) // first loading: towards (±eps_y, ±fy)
       {
@@ -66,6 +76,7 @@ namespace poundfe
         s.direction       = d_strain > 0 ? 1 : 2;
         s.eps_0 = s.eps_pl = sign * eps_y;
         s.sig_0            = sign * p.fy;
+        set_branch(s);
       }
     else if ((s.direction == 2 && d_strain > 0) || (s.direction == 1 && d_strain < 0))
       {
@@ -88,16 +99,14 @@ namespace poundfe
         s.sig_0     = sign * p.fy * shift + hardening * (s.eps_0 - sign * eps_y * shift);
         s.eps_pl    = reloading ? s.eps_max : s.eps_min;
         s.direction = reloading ? 1 : 2;
+        set_branch(s);
       }
 
-    const double xi    = std::abs((s.eps_pl - s.eps_0) / eps_y);
-    const double R     = p.R0 * (1 - p.cR1 * xi / (p.cR2 + xi));
     const double ratio = (strain - s.eps_r) / (s.eps_0 - s.eps_r);
-    const double g     = 1 + std::pow(std::abs(ratio), R);
-    const double g_R   = std::pow(g, 1 / R);
-    const double secant = (s.sig_0 - s.sig_r) / (s.eps_0 - s.eps_r);
+    const double g     = 1 + std::pow(std::abs(ratio), s.R);
+    const double g_R   = std::pow(g, s.inverse_R);
     s.stress  = s.sig_r + (p.b * ratio + (1 - p.b) * ratio / g_R) * (s.sig_0 - s.sig_r);
-    s.tangent = (p.b + (1 - p.b) / (g * g_R)) * secant;
+    s.tangent = (p.b + (1 - p.b) / (g * g_R)) * s.secant;
     return s;
   }
 

@@ -92,6 +92,47 @@ namespace poundfe
         }
       return std::make_shared<const FibreGeometry>(geometry);
     }
+
+    /// Every fibre's trial state at e and the sums s = sum sigma_i A_i a_i,
+    /// k_s = sum E_t,i A_i a_i a_i^T of the m = 2 (plane) or 3 (N, Mz, My in
+    /// space) resultants the fibres carry, into the first m entries of s, k;
+    /// returns the first fibre that refused its strain, or the number of
+    /// fibres. m fixed at compile time: the sums unrolled, in registers.
+    template <unsigned int m>
+    unsigned int
+    sum_fibres(const std::vector<Fibre> &fibres, const std::vector<std::unique_ptr<UniaxialLaw>> &laws,
+               const double y_ref, const double z_ref, const SectionVector &e, SectionVector &s,
+               SectionMatrix &k)
+    {
+      double       sums[m] = {}, stiffness_sums[m][m] = {};
+      const double e0 = e(0), e1 = e(1), e2 = m == 3 ? e(2) : 0.0;
+      for (unsigned int i = 0; i < laws.size(); ++i)
+        {
+          const Fibre &f = fibres[i];
+          // a_i . e, as FibreSection::strain_at
+          const double a[3]   = {1, -(f.y - y_ref), f.z - z_ref};
+          double       strain = e0 - (f.y - y_ref) * e1;
+          if constexpr (m == 3)
+            strain += a[2] * e2;
+          UniaxialLaw &law = *laws[i];
+          if (!law.set_trial(strain, 0))
+            return i;
+          const double force = law.force() * f.area, stiffness = law.tangent() * f.area;
+          for (unsigned int r = 0; r < m; ++r)
+            {
+              sums[r] += force * a[r];
+              for (unsigned int c = 0; c < m; ++c)
+                stiffness_sums[r][c] += stiffness * a[r] * a[c];
+            }
+        }
+      for (unsigned int r = 0; r < m; ++r)
+        {
+          s(r) = sums[r];
+          for (unsigned int c = 0; c < m; ++c)
+            k(r, c) = stiffness_sums[r][c];
+        }
+      return laws.size();
+    }
   } // namespace
 
   FibreSection::FibreSection(const FibreGeometry &geometry, const unsigned int n_resultants,
@@ -144,30 +185,13 @@ namespace poundfe
     trial.deformation = e;
     trial.resultant.setZero();
     trial.tangent.setZero();
-    double s[3] = {0, 0, 0}, k[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    const unsigned int m = n == 4 ? 3 : 2; // the fibres' share: N, Mz[, My]
-    for (unsigned int i = 0; i < laws.size(); ++i)
+    const unsigned int refused =
+      n == 4 ? sum_fibres<3>(fibres->fibres, laws, y_ref, z_ref, e, trial.resultant, trial.tangent) :
+               sum_fibres<2>(fibres->fibres, laws, y_ref, z_ref, e, trial.resultant, trial.tangent);
+    if (refused < laws.size())
       {
-        const Fibre &f = fibres->fibres[i];
-        if (!laws[i]->set_trial(strain_at(i, e), 0))
-          {
-            failed_fibre = i;
-            return false;
-          }
-        const double a[3]  = {1, -(f.y - y_ref), f.z - z_ref};
-        const double force = laws[i]->force() * f.area, stiffness = laws[i]->tangent() * f.area;
-        for (unsigned int r = 0; r < m; ++r)
-          {
-            s[r] += force * a[r];
-            for (unsigned int c = 0; c < m; ++c)
-              k[r][c] += stiffness * a[r] * a[c];
-          }
-      }
-    for (unsigned int r = 0; r < m; ++r)
-      {
-        trial.resultant(r) = s[r];
-        for (unsigned int c = 0; c < m; ++c)
-          trial.tangent(r, c) = k[r][c];
+        failed_fibre = refused;
+        return false;
       }
     if (n == 4)
       {

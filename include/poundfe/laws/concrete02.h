@@ -21,6 +21,11 @@ namespace poundfe
     double strain = 0, stress = 0, tangent = 0;
     double min_strain = 0;     // the largest compression reached
     double tension_strain = 0; // the largest tensile strain beyond the zero-stress strain
+    // functions of min_strain alone, set with it (an unloading or reloading
+    // trial, the most frequent, then evaluates no envelope and no division):
+    double min_stress = 0;     // sigma_m, the envelope's stress at min_strain
+    double reload_slope = 0;   // Er
+    double zero_strain = 0;    // eps_t, where the unloading curve reaches zero stress
   };
 
   class Concrete02 : public UniaxialMaterial<Concrete02State>
@@ -38,9 +43,14 @@ namespace poundfe
     Concrete02State virgin() const override;
     /// Between the largest compression and the tension side.
     Concrete02State unload_or_reload(const Concrete02State &from, double strain) const;
+    /// Sets min_strain = strain on the envelope and what follows from it.
+    void set_min_strain(Concrete02State &s, double strain, const StressPoint &on_envelope) const;
 
     KentScottParkEnvelope envelope;
     double                lambda, ft, Ets;
+    // constants of the law, computed once: Ec0, eps_R, and the tension
+    // envelope's cracking and zero-stress strains
+    double Ec0, eps_R, crack_strain, tension_end;
   };
 } // namespace poundfe
 

@@ -30,6 +30,10 @@ namespace poundfe
     double eps_0 = 0, sig_0 = 0;     // where the two asymptotes meet
     double eps_r = 0, sig_r = 0;     // the last reversal point
     int    direction = 0;            // 1 loading, 2 unloading, 0 virgin
+    // the branch's constants, set with eps_0 at a reversal (a trial on the
+    // branch then divides once and calls pow twice): R, 1/R and the secant
+    // (sig_0 - sig_r) / (eps_0 - eps_r)
+    double R = 0, inverse_R = 0, secant = 0;
   };
 
   class Steel02 : public UniaxialMaterial<Steel02State>
@@ -46,8 +50,11 @@ namespace poundfe
   private:
     Steel02State respond(const Steel02State &from, double strain) const override;
     Steel02State virgin() const override;
+    /// R, 1/R and the secant of the branch that starts at (eps_r, sig_r).
+    void set_branch(Steel02State &s) const;
 
     Steel02Parameters p;
+    double            eps_y, hardening; // fy / E0, b E0
   };
 } // namespace poundfe
 
