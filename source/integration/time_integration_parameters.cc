@@ -41,6 +41,7 @@ namespace poundfe
   {
     MoreauJeanParameters p = moreau_jean;
     p.time_step            = newmark.time_step;
+    p.linear_solver        = linear_solver;
     p.friction.tolerance      = moreau_jean.lcp.tolerance;
     p.friction.max_iterations = moreau_jean.lcp.max_iterations;
     return p;
@@ -249,7 +250,9 @@ namespace poundfe
                "Siconos Numerics (theory §3.9d); needs a Law other than none (its force "
                "parameters are then unused), gaps between floors, at barriers or in plan "
                "(3D; not a slab against a column), no bumpers, friction surfaces or fibre "
-               "members, no gravity analysis; the commands run, stationary-pdf, "
+               "members, no gravity analysis; above 500 equations its iteration matrix is "
+               "sparse, factored by Time integration/Linear solver (eigen-ldlt, or umfpack), "
+               "without modal damping; the commands run, stationary-pdf, "
                "montecarlo, subset, fragility, ida, msa, sweep, separation (its free "
                "responses have no contact: Newmark) and mitigation (no bumper cases), and "
                "Python's run; a build without Siconos offers penalty only (poundfe --version lists "
