@@ -87,7 +87,7 @@ namespace poundfe
       return {};
     const std::string beyond = " on models of more than " +
                                std::to_string(parameters.max_dense_equations) +
-                               " equations (this one has " +
+                               " equations (Contact/Dense matrix limit; this one has " +
                                std::to_string(system.n_equations()) + ")";
     if (!system.modal_damping.empty())
       return "takes modal damping only" + beyond;
@@ -486,6 +486,7 @@ namespace poundfe
     count_solve(solution, m, "friction-contact problem");
     return solution.z;
   }
+
   double
   MoreauJeanIntegrator::newton_update(Vector &v_next)
   {
