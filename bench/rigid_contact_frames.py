@@ -8,6 +8,8 @@ Bouc-Wen hinges), by default the default example input/two-buildings.prm, run
     of the finest penalty run's;
   - with Contact/Model = nonsmooth (e = the input's Coefficient of restitution, theta =
     1/2) at 10 h_p, h_p and h_p / 10.
+Also run: the buildings 1 m apart (no contact) with Newmark at 10 h_p and at the finest
+penalty step, the error the frames and the record leave at 10 h_p to any contact model.
 Printed: every storey's peak drift ratio per run, steps, wall time and the cost per step,
 the largest relative difference of the nonsmooth run at 10 h_p from the finer nonsmooth
 runs and from the converged penalty run; with --callgrind, the instructions per step of
@@ -53,8 +55,10 @@ def set_in(text, section, name, value):
     return text.replace(f'subsection {section}\n', f'subsection {section}\n  set {name} = {value}\n', 1)
 
 
-def prm(name, h, nonsmooth, end=None):
+def prm(name, h, nonsmooth, end=None, apart=False):
     text = set_in(BASE, 'Time integration', 'Time step', h)
+    if apart:  # the buildings 1 m apart: the structure alone, no contact
+        text = set_in(text, 'Model', 'Separations', 1.0)
     if 'subsection Stochastic\n' in text:  # the same record at every step
         text = set_in(text, 'Stochastic', 'Sample interval', SAMPLE)
     text = set_in(text, 'Contact', 'Steps per contact', 0)
@@ -74,9 +78,9 @@ def prm(name, h, nonsmooth, end=None):
     return path
 
 
-def run(name, h, nonsmooth):
+def run(name, h, nonsmooth, apart=False):
     out = os.path.join(WORK, name)
-    r = subprocess.run([BIN, 'run', prm(name, h, nonsmooth), '--output', out],
+    r = subprocess.run([BIN, 'run', prm(name, h, nonsmooth, apart=apart), '--output', out],
                        capture_output=True, text=True)
     if r.returncode == 2:  # a numerical failure: reported, left out
         print(f"{name}: failed: {r.stderr.strip().splitlines()[-1]}")
@@ -129,6 +133,14 @@ for h in sorted(PENALTY_STEPS)[1:]:
     h_p = h
 print(f"penalty's converged step h_p = {h_p:g} s (peaks within 1 % of the run at "
       f"{min(PENALTY_STEPS):g} s: {worst(penalty[h_p][0], finest):.4f})")
+# the structure alone (Newmark, no contact) at 10 h_p against its finest step: what the
+# frames and the record's sampling leave to any contact model at 10 h_p
+apart_fine = run(f'apart-{min(PENALTY_STEPS):g}', min(PENALTY_STEPS), False, apart=True)
+apart_coarse = run(f'apart-{10 * h_p:g}', 10 * h_p, False, apart=True)
+row(f'apart {min(PENALTY_STEPS):g}', apart_fine)
+row(f'apart {10 * h_p:g}', apart_coarse)
+print(f"no contact (1 m apart), Newmark at {10 * h_p:g} against {min(PENALTY_STEPS):g}: largest "
+      f"drift difference {worst(apart_coarse[0], apart_fine[0]):.4f}")
 rigid = {}
 for factor in NONSMOOTH_FACTORS:
     h = h_p * factor
