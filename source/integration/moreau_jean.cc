@@ -90,7 +90,7 @@ namespace poundfe
                                " equations (Contact/Dense matrix limit; this one has " +
                                std::to_string(system.n_equations()) + ")";
     if (!system.modal_damping.empty())
-      return "takes modal damping only" + beyond;
+      return "does not take modal damping" + beyond;
     if (parameters.linear_solver != "eigen-ldlt" && parameters.linear_solver != "umfpack")
       return "factors its sparse iteration matrix with Time integration/Linear solver = "
              "eigen-ldlt or umfpack" + beyond + ", not " + parameters.linear_solver;
