@@ -7,6 +7,7 @@
 #include <poundfe/base/interruption.h>
 #include <poundfe/excitation/stochastic_load.h>
 #include <poundfe/integration/dormand_prince.h>
+#include <poundfe/integration/moreau_jean.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/integration/static_analysis.h>
 #include <poundfe/output/recorders.h>
@@ -64,7 +65,7 @@ namespace poundfe
         input.fail("Contact/Model", "nonsmooth does not take a gravity analysis first "
                                     "(Model/Gravity analysis) yet");
       if (const std::string why = MoreauJeanIntegrator::unsupported(analysis.system, &elements,
-                                                                    moreau_jean.max_equations);
+                                                                    moreau_jean);
           !why.empty())
         input.fail("Contact/Model", "nonsmooth " + why);
       std::vector<UnilateralContact> contacts;
@@ -240,6 +241,8 @@ namespace poundfe
     // known before the observers are made (the recorders choose their columns)
     view.set_vertical_ground_motion(parameters.ground_motion.has_vertical());
   }
+
+  TimeHistory::~TimeHistory() = default;
 
   TimeHistory::TimeHistory(const Analysis &analysis_, const TimeHistoryParameters &parameters,
                            LockstepStepper &lockstep_stepper)

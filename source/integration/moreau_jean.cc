@@ -16,7 +16,6 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <Eigen/Cholesky>
 
 #include <algorithm>
 #include <array>
@@ -76,17 +75,30 @@ namespace poundfe
 
   std::string
   MoreauJeanIntegrator::unsupported(const LinearSystem &system, const NonlinearElements *elements,
-                                    const unsigned int max_equations)
+                                    const MoreauJeanParameters &parameters)
   {
-    if (system.n_equations() > max_equations)
-      return "takes models of up to " + std::to_string(max_equations) + " equations (this one has " +
-             std::to_string(system.n_equations()) + ")";
     if (elements)
       for (const NonlinearElement &e : *elements)
         if (e.kind == ElementKind::member || e.kind == ElementKind::friction)
           return "does not take " +
                  std::string(e.kind == ElementKind::member ? "fibre members" : "friction") +
                  " yet (" + e.label + ")";
+    if (system.n_equations() <= parameters.max_dense_equations)
+      return {};
+    const std::string beyond = " on models of more than " +
+                               std::to_string(parameters.max_dense_equations) +
+                               " equations (Contact/Dense matrix limit; this one has " +
+                               std::to_string(system.n_equations()) + ")";
+    if (!system.modal_damping.empty())
+      return "does not take modal damping" + beyond;
+    if (parameters.linear_solver != "eigen-ldlt" && parameters.linear_solver != "umfpack")
+      return "factors its sparse iteration matrix with Time integration/Linear solver = "
+             "eigen-ldlt or umfpack" + beyond + ", not " + parameters.linear_solver;
+    if (elements && parameters.linear_solver == "eigen-ldlt")
+      for (const NonlinearElement &e : *elements)
+        if (e.kind != ElementKind::gap && !e.has_symmetric_tangent())
+          return "needs Time integration/Linear solver = umfpack (an LU) for an element with a "
+                 "nonsymmetric tangent (" + e.label + ")" + beyond;
     return {};
   }
 
@@ -106,6 +118,26 @@ namespace poundfe
     return {};
   }
 
+  namespace
+  {
+    /// The rows and columns `kept` of `matrix`.
+    SparseMatrix
+    submatrix(const SparseMatrix &matrix, const std::vector<unsigned int> &kept)
+    {
+      std::vector<int> position(matrix.rows(), -1);
+      for (unsigned int k = 0; k < kept.size(); ++k)
+        position[kept[k]] = k;
+      std::vector<Eigen::Triplet<double>> entries;
+      for (Eigen::Index j = 0; j < matrix.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(matrix, j); it; ++it)
+          if (position[it.row()] >= 0 && position[it.col()] >= 0)
+            entries.emplace_back(position[it.row()], position[it.col()], it.value());
+      SparseMatrix result(kept.size(), kept.size());
+      result.setFromTriplets(entries.begin(), entries.end());
+      return result;
+    }
+  } // namespace
+
   MoreauJeanIntegrator::MoreauJeanIntegrator(const LinearSystem &system_,
                                              const MoreauJeanParameters &parameters_,
                                              std::vector<UnilateralContact> contacts_,
@@ -117,42 +149,44 @@ namespace poundfe
     , n(system_.n_equations())
     , n_elements(elements_ ? elements_->size() : 0)
   {
-    Assert(unsupported(system, elements, parameters.max_equations).empty(),
-           dealii::ExcMessage(unsupported(system, elements, parameters.max_equations)));
+    Assert(unsupported(system, elements, parameters).empty(),
+           dealii::ExcMessage(unsupported(system, elements, parameters)));
     Assert(parameters.theta >= 0.5 && parameters.theta <= 1, dealii::ExcMessage("theta"));
     Assert(unsupported(system, contact_list).empty(),
            dealii::ExcMessage(unsupported(system, contact_list)));
-    mass      = Eigen::MatrixXd(system.mass);
     for (unsigned int i = 0; i < n; ++i)
-      if (mass(i, i) > 0)
+      if (system.mass.coeff(i, i) > 0)
         massive.push_back(i);
-    mass_factor.compute(mass(massive, massive));
-    stiffness = Eigen::MatrixXd(system.stiffness);
-    damping   = system.damping.size() > 0 ? Eigen::MatrixXd(system.damping) :
-                                            Eigen::MatrixXd::Zero(n, n);
-    if (!system.modal_damping.empty())
-      damping += system.modal_damping.factor * system.modal_damping.weights.asDiagonal() *
-                 system.modal_damping.factor.transpose();
+    mass_factor.compute(submatrix(system.mass, massive));
+    smooth_nonlinear = elements && has_smooth_nonlinearity(*elements);
+    // J's constant part M + h theta C + (h theta)^2 K; the elements' B_e
     const double ht = parameters.time_step * parameters.theta;
-    base_jacobian   = mass + ht * damping + ht * ht * stiffness;
-    // H_a = dg_a/du = -dd_a/du: U_a = H_a v < 0 while the gap closes
-    H.setZero(contact_list.size(), n);
-    for (unsigned int c = 0; c < contact_list.size(); ++c)
-      {
-        const UnilateralContact &contact = contact_list[c];
-        Assert(!contact.in_plan || contact.equations.size() == 6,
-               dealii::ExcMessage("a contact in plan joins (ux, uy, θz) of two floors"));
-        if (!contact.in_plan) // in plan: linearize_plan_contacts()
-          for (unsigned int i = 0; i < contact.equations.size(); ++i)
-            if (contact.equations[i] >= 0)
-              H(c, contact.equations[i]) -= contact.coefficients[i];
-      }
-    T.setZero(contact_list.size(), n);
+    SparseMatrix base = system.mass + ht * ht * system.stiffness;
+    if (system.damping.size() > 0)
+      base += ht * system.damping;
+    Eigen::MatrixXd modal;
+    if (!system.modal_damping.empty())
+      modal = ht * system.modal_damping.factor * system.modal_damping.weights.asDiagonal() *
+              system.modal_damping.factor.transpose();
+    std::vector<const std::vector<int> *> element_equations;
+    bases.resize(n_elements);
+    for (unsigned int h = 0; h < n_elements; ++h)
+      if ((*elements)[h].kind != ElementKind::gap)
+        {
+          element_equations.push_back(&(*elements)[h].equations());
+          bases[h] = (*elements)[h].tangent_basis();
+        }
+    jacobian = std::make_unique<MoreauJeanMatrix>(base, modal, element_equations,
+                                                  n <= parameters.max_dense_equations,
+                                                  parameters.linear_solver);
     for (const UnilateralContact &c : contact_list)
       {
+        Assert(!c.in_plan || c.equations.size() == 6,
+               dealii::ExcMessage("a contact in plan joins (ux, uy, θz) of two floors"));
         Assert(c.friction == 0 || c.in_plan,
                dealii::ExcMessage("friction on a contact without a tangent (not in plan)"));
-        has_friction = has_friction || c.friction > 0;
+        has_friction      = has_friction || c.friction > 0;
+        has_plan_contacts = has_plan_contacts || c.in_plan;
       }
     if (!lcp_solver_available())
       return;
@@ -183,26 +217,37 @@ namespace poundfe
   }
 
   void
-  MoreauJeanIntegrator::linearize_plan_contacts()
+  MoreauJeanIntegrator::linearize_contacts()
   {
+    // H_a = dg_a/du = -dd_a/du: U_a = H_a v < 0 while the gap closes
+    std::vector<Eigen::Triplet<double>> normal, tangential;
     for (unsigned int a = 0; a < contact_list.size(); ++a)
-      if (contact_list[a].in_plan)
-        {
-          const PlanContactState state = plan_state(a, u);
-          H.row(a).setZero();
-          T.row(a).setZero();
-          if (!state.defined)
+      {
+        const UnilateralContact &contact = contact_list[a];
+        if (!contact.in_plan)
+          {
+            for (unsigned int i = 0; i < contact.equations.size(); ++i)
+              if (contact.equations[i] >= 0)
+                normal.emplace_back(a, contact.equations[i], -contact.coefficients[i]);
             continue;
-          const Vector6 tangent = plan_tangent(a, state);
-          for (unsigned int i = 0; i < 6; ++i)
-            if (contact_list[a].equations[i] >= 0)
-              {
-                H(a, contact_list[a].equations[i]) += state.gradient[i];
-                T(a, contact_list[a].equations[i]) += tangent[i];
-              }
-        }
+          }
+        const PlanContactState state = plan_state(a, u);
+        if (!state.defined)
+          continue;
+        const Vector6 tangent = plan_tangent(a, state);
+        for (unsigned int i = 0; i < 6; ++i)
+          if (contact.equations[i] >= 0)
+            {
+              normal.emplace_back(a, contact.equations[i], state.gradient[i]);
+              tangential.emplace_back(a, contact.equations[i], tangent[i]);
+            }
+      }
+    H.resize(contact_list.size(), n);
+    H.setFromTriplets(normal.begin(), normal.end());
+    T.resize(contact_list.size(), n);
+    T.setFromTriplets(tangential.begin(), tangential.end());
+    delassus_valid = false;
   }
-
   Vector6
   MoreauJeanIntegrator::plan_tangent(const unsigned int a, const PlanContactState &state) const
   {
@@ -234,6 +279,18 @@ namespace poundfe
     return result;
   }
 
+  void
+  MoreauJeanIntegrator::damping_times(const Vector &x, Vector &y) const
+  {
+    if (system.damping.size() > 0)
+      y.noalias() = system.damping * x;
+    else
+      y.setZero(n);
+    const LowRankDamping &modal = system.modal_damping;
+    if (!modal.empty())
+      y.noalias() += modal.factor * modal.weights.cwiseProduct(modal.factor.transpose() * x);
+  }
+
   double
   MoreauJeanIntegrator::normal_velocity(const unsigned int a, const Vector &x) const
   {
@@ -251,7 +308,7 @@ namespace poundfe
 
   void
   MoreauJeanIntegrator::evaluate_elements(const double t, const Vector &x, const Vector &y,
-                                          Vector &force, Eigen::MatrixXd *jacobian)
+                                          Vector &force, const bool tangent)
   {
     const double ht = parameters.time_step * parameters.theta;
     for (unsigned int h = 0; h < n_elements; ++h)
@@ -260,42 +317,46 @@ namespace poundfe
         if (e.kind == ElementKind::gap)
           continue; // replaced by the unilateral contacts
         const std::vector<int> &equations = e.equations();
-        local_u.resize(e.n_dofs());
-        local_v.resize(e.n_dofs());
-        for (unsigned int i = 0; i < e.n_dofs(); ++i)
+        const unsigned int      n_dofs    = e.n_dofs();
+        if (local_u.size() < n_dofs) // grown once to the largest element
+          {
+            local_u.resize(n_dofs);
+            local_v.resize(n_dofs);
+            local_force.resize(n_dofs);
+          }
+        for (unsigned int i = 0; i < n_dofs; ++i)
           {
             local_u[i] = equations[i] < 0 ? 0.0 : x[equations[i]];
             local_v[i] = equations[i] < 0 ? 0.0 : y[equations[i]];
           }
         e.set_trial_time(t);
-        if (!e.set_trial(local_u, local_v))
+        if (!e.set_trial(local_u.head(n_dofs), local_v.head(n_dofs)))
           throw NumericalError("t = " + number_text(t) + " s: " + e.label + ": " + e.failure());
-        Vector correction(e.n_dofs());
-        e.force_correction(correction);
-        for (unsigned int i = 0; i < e.n_dofs(); ++i)
+        e.force_correction(local_force.head(n_dofs));
+        for (unsigned int i = 0; i < n_dofs; ++i)
           if (equations[i] >= 0)
-            force[equations[i]] += correction[i];
-        if (!jacobian)
+            force[equations[i]] += local_force[i];
+        if (!tangent)
           continue;
-        const Eigen::MatrixXd B = e.tangent_basis();
-        Eigen::MatrixXd       D(e.rank(), e.rank());
-        e.tangent_change(1 / ht, D);
-        const Eigen::MatrixXd local = ht * ht * B * D * B.transpose();
-        for (unsigned int i = 0; i < e.n_dofs(); ++i)
-          for (unsigned int j = 0; j < e.n_dofs(); ++j)
-            if (equations[i] >= 0 && equations[j] >= 0)
-              (*jacobian)(equations[i], equations[j]) += local(i, j);
+        const Eigen::MatrixXd &B = bases[h];
+        element_d.resize(e.rank(), e.rank());
+        e.tangent_change(1 / ht, element_d);
+        element_local.noalias() = (ht * ht) * B * element_d * B.transpose();
+        jacobian->add(equations, element_local);
       }
   }
 
-  Vector
+  void
   MoreauJeanIntegrator::smooth_force(const double t, const Vector &displacement,
                                      const Vector &velocity, const Vector &load_vector,
-                                     Eigen::MatrixXd *jacobian)
+                                     Vector &force, const bool tangent)
   {
-    Vector force = damping * velocity + stiffness * displacement - load_vector;
-    evaluate_elements(t, displacement, velocity, force, jacobian);
-    return force;
+    damping_times(velocity, force);
+    force.noalias() += system.stiffness * displacement;
+    force -= load_vector;
+    if (tangent)
+      jacobian->start();
+    evaluate_elements(t, displacement, velocity, force, tangent);
   }
 
   void
@@ -311,10 +372,10 @@ namespace poundfe
     u          = u0;
     v          = v0;
     load_start = load_0;
-    linearize_plan_contacts();
+    linearize_contacts();
     for (unsigned int h = 0; h < n_elements; ++h)
       (*elements)[h].reset();
-    smooth_start = smooth_force(0, u, v, load_start, nullptr);
+    smooth_force(0, u, v, load_start, smooth_start, false);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         (*elements)[h].commit();
@@ -328,18 +389,40 @@ namespace poundfe
     update_balance_error(balance, energy_scale, max_balance_error);
   }
 
-  Eigen::MatrixXd
-  MoreauJeanIntegrator::active_rows(const std::vector<unsigned int> &active) const
+  void
+  MoreauJeanIntegrator::find_active_contacts()
   {
+    const double h = parameters.time_step;
+    active.clear();
+    for (unsigned int c = 0; c < contact_list.size(); ++c)
+      if (gap(c, u) + h * normal_velocity(c, v) <= 0)
+        active.push_back(c);
     const unsigned int per_contact = has_friction ? 2 : 1;
-    Eigen::MatrixXd    rows(per_contact * active.size(), n);
+    std::vector<Eigen::Triplet<double>> entries;
     for (unsigned int k = 0; k < active.size(); ++k)
       {
-        rows.row(per_contact * k) = H.row(active[k]);
+        for (SparseRows::InnerIterator it(H, active[k]); it; ++it)
+          entries.emplace_back(per_contact * k, it.col(), it.value());
         if (has_friction)
-          rows.row(2 * k + 1) = T.row(active[k]);
+          for (SparseRows::InnerIterator it(T, active[k]); it; ++it)
+            entries.emplace_back(2 * k + 1, it.col(), it.value());
       }
-    return rows;
+    rows.resize(per_contact * active.size(), n);
+    rows.setFromTriplets(entries.begin(), entries.end());
+  }
+
+  const Eigen::MatrixXd &
+  MoreauJeanIntegrator::delassus()
+  {
+    if (!delassus_valid || delassus_active != active ||
+        delassus_factorization != jacobian->n_factorizations())
+      {
+        jacobian->delassus(rows, W);
+        delassus_active        = active;
+        delassus_factorization = jacobian->n_factorizations();
+        delassus_valid         = true;
+      }
+    return W;
   }
 
   void
@@ -369,11 +452,10 @@ namespace poundfe
   }
 
   Vector
-  MoreauJeanIntegrator::contact_impulses(const std::vector<unsigned int> &active,
-                                         const Vector &v_free)
+  MoreauJeanIntegrator::contact_impulses(const Vector &v_free)
   {
     if (has_friction)
-      return friction_impulses(active, v_free);
+      return friction_impulses(v_free);
     const unsigned int m = active.size();
     Vector             q(m);
     for (unsigned int k = 0; k < m; ++k)
@@ -381,16 +463,13 @@ namespace poundfe
         const unsigned int c = active[k];
         q[k] = normal_velocity(c, v_free) + contact_list[c].restitution * normal_velocity(c, v);
       }
-    const Eigen::MatrixXd rows     = active_rows(active);
-    const Eigen::MatrixXd W        = rows * jacobian_factor.solve(Eigen::MatrixXd(rows.transpose()));
-    const LcpSolution     solution = solve_lcp(W, q, parameters.lcp);
+    const LcpSolution solution = solve_lcp(delassus(), q, parameters.lcp);
     count_solve(solution, m, "contact LCP");
     return solution.z;
   }
 
   Vector
-  MoreauJeanIntegrator::friction_impulses(const std::vector<unsigned int> &active,
-                                          const Vector &v_free)
+  MoreauJeanIntegrator::friction_impulses(const Vector &v_free)
   {
     // per contact (U_N, U_T) = W (P_N, P_T) + q, Newton's law on the normal:
     // q_N = H v_free + e H v (Siconos's Moreau-Jean does the same)
@@ -403,99 +482,131 @@ namespace poundfe
         q[2 * k + 1] = T.row(c).dot(v_free);
         mu[k]        = contact_list[c].friction;
       }
-    const Eigen::MatrixXd rows = active_rows(active);
-    const Eigen::MatrixXd W    = rows * jacobian_factor.solve(Eigen::MatrixXd(rows.transpose()));
-    const LcpSolution solution = solve_friction_contact(W, q, mu, parameters.friction);
+    const LcpSolution solution = solve_friction_contact(delassus(), q, mu, parameters.friction);
     count_solve(solution, m, "friction-contact problem");
     return solution.z;
+  }
+
+  double
+  MoreauJeanIntegrator::newton_update(Vector &v_next)
+  {
+    // from the smooth residual r at the iterate v_end, the free velocity
+    // v_free = v_end - J^-1 r, then the impulses and v_next = v_free + J^-1 R^T P
+    const double h = parameters.time_step, theta = parameters.theta;
+    residual.noalias() = system.mass * (v_end - v);
+    residual += h * (theta * s_end + (1 - theta) * smooth_start);
+    if (refactor)
+      {
+        jacobian->factorize();
+        ++stats.refactorizations;
+        refactor = false;
+      }
+    jacobian->solve(residual, correction_velocity);
+    v_free = v_end - correction_velocity;
+    v_next = v_free;
+    if (active.empty())
+      impulse.setZero(0);
+    else
+      {
+        impulse            = contact_impulses(v_free);
+        product.noalias()  = rows.transpose() * impulse;
+        jacobian->solve(product, correction_velocity);
+        v_next += correction_velocity;
+      }
+    ++stats.iterations;
+    return (v_next - v_end).norm();
+  }
+
+  unsigned int
+  MoreauJeanIntegrator::solve_step(const double t1, const bool full_newton)
+  {
+    const double h = parameters.time_step, theta = parameters.theta;
+    v_end = v;
+    Vector       v_next(n);
+    double       last_change = std::numeric_limits<double>::infinity();
+    for (unsigned int k = 0;; ++k)
+      {
+        if (k == parameters.newton_iterations)
+          throw NumericalError("t = " + number_text(t1) + " s: Moreau-Jean's Newton did not " +
+                               "converge in " + std::to_string(k) + " iterations");
+        u_end = u + h * ((1 - theta) * v + theta * v_end);
+        smooth_force(t1, u_end, v_end, load_end, s_end, refactor);
+        // converged at the last iterate: the elements' trial state and s_end
+        // are those of v_end, which the impulses of the last LCP took
+        if (k > 0 && last_change <= parameters.newton_tolerance *
+                                       (v_end.norm() + parameters.velocity_scale))
+          return k;
+        const double change = newton_update(v_next);
+        std::swap(v_end, v_next);
+        if (!smooth_nonlinear)
+          {
+            // linear: one iteration solves the step; s_end at its velocity
+            u_end = u + h * ((1 - theta) * v + theta * v_end);
+            smooth_force(t1, u_end, v_end, load_end, s_end, false);
+            return 1;
+          }
+        // an older tangent that contracts the iteration too slowly is renewed
+        refactor    = full_newton || change > max_contraction * last_change;
+        last_change = change;
+      }
   }
 
   void
   MoreauJeanIntegrator::step(const LoadFunction &load)
   {
-    const double h = parameters.time_step, theta = parameters.theta;
-    const double t1 = current_time + h;
-    Vector       load_end(n);
+    const double t1 = current_time + parameters.time_step;
+    load_end.resize(n);
     load(t1, load_end);
-    // the index set: contacts closed, or closing within the step
-    std::vector<unsigned int> active;
-    for (unsigned int c = 0; c < contact_list.size(); ++c)
-      if (gap(c, u) + h * normal_velocity(c, v) <= 0)
-        active.push_back(c);
-    const bool smooth_nonlinear = elements && has_smooth_nonlinearity(*elements);
-    const Eigen::MatrixXd rows = active_rows(active); // H's, and T's with friction
-    Vector       v_end = v, impulse = Vector::Zero(rows.rows());
-    double       last_change = std::numeric_limits<double>::infinity();
-    unsigned int k           = 0;
-    for (;; ++k)
+    find_active_contacts();
+    unsigned int iterations = 0;
+    try
       {
-        if (k == parameters.newton_iterations)
-          throw NumericalError("t = " + number_text(t1) + " s: Moreau-Jean's Newton did not " +
-                               "converge in " + std::to_string(k) + " iterations");
-        const Vector u_end  = u + h * ((1 - theta) * v + theta * v_end);
-        const Vector s_end  = smooth_force(t1, u_end, v_end, load_end, nullptr);
-        const Vector residual = mass * (v_end - v) + h * (theta * s_end + (1 - theta) * smooth_start);
-        if (refactor)
-          factor_jacobian(t1, u_end, v_end, load_end);
-        const Vector v_free = v_end - jacobian_factor.solve(residual);
-        Vector       v_next = v_free;
-        impulse.setZero(rows.rows());
-        if (!active.empty())
-          {
-            impulse = contact_impulses(active, v_free);
-            v_next += jacobian_factor.solve(Vector(rows.transpose() * impulse));
-          }
-        const double change = (v_next - v_end).norm();
-        v_end               = v_next;
-        ++stats.iterations;
-        if (!smooth_nonlinear ||
-            change <= parameters.newton_tolerance * (v_end.norm() + parameters.velocity_scale))
-          break;
-        // an older tangent that contracts the iteration too slowly is renewed
-        refactor    = change > max_contraction * last_change;
-        last_change = change;
+        iterations = solve_step(t1, false);
       }
-    stats.max_iterations = std::max(stats.max_iterations, k + 1);
-    const Vector u_end   = u + h * ((1 - theta) * v + theta * v_end);
-    const Vector s_end   = smooth_force(t1, u_end, v_end, load_end, nullptr);
+    catch (const NumericalError &)
+      {
+        // a kept tangent can leave the impulses and the hinges' branches
+        // cycling: the step again with J at every iterate, as full Newton
+        refactor   = true;
+        iterations = solve_step(t1, true);
+      }
+    stats.max_iterations = std::max(stats.max_iterations, iterations);
+    accept_step(t1);
+  }
+
+  void
+  MoreauJeanIntegrator::accept_step(const double t1)
+  {
+    const double h = parameters.time_step, theta = parameters.theta;
     const Vector v_theta = (1 - theta) * v + theta * v_end;
     balance.input += h * v_theta.dot((1 - theta) * load_start + theta * load_end);
-    balance.damping += h * v_theta.dot(damping * v_theta);
+    damping_times(v_theta, product);
+    balance.damping += h * v_theta.dot(product);
     for (unsigned int e = 0; e < n_elements; ++e)
       if ((*elements)[e].kind != ElementKind::gap)
         {
           work[e] += (*elements)[e].work_increment();
           (*elements)[e].commit();
         }
-    record_impulses(active, impulse, v_end, t1);
-    const Vector hp = rows.transpose() * impulse;
-    a = (v_end - v - inverse_mass(hp)) / h;
-    u = u_end;
-    v = v_end;
-    load_start   = load_end;
-    smooth_start = s_end;
+    record_impulses(t1);
+    // the smooth part of the acceleration: the impulses' jumps taken out
+    a = (v_end - v) / h;
+    if (impulse.size() > 0 && impulse.cwiseAbs().maxCoeff() > 0)
+      a -= inverse_mass(rows.transpose() * impulse) / h;
+    std::swap(u, u_end);
+    std::swap(v, v_end);
+    std::swap(load_start, load_end);
+    std::swap(smooth_start, s_end);
     current_time = t1;
     ++step_count;
     ++stats.steps;
-    linearize_plan_contacts();
+    if (has_plan_contacts)
+      linearize_contacts();
     update_energy();
   }
 
   void
-  MoreauJeanIntegrator::factor_jacobian(const double t, const Vector &u_end, const Vector &v_end,
-                                        const Vector &load_end)
-  {
-    Eigen::MatrixXd jacobian = base_jacobian;
-    smooth_force(t, u_end, v_end, load_end, &jacobian);
-    jacobian_factor.compute(jacobian);
-    ++stats.refactorizations;
-    refactor = false;
-  }
-
-  void
-  MoreauJeanIntegrator::record_impulses(const std::vector<unsigned int> &active,
-                                        const Vector &impulse, const Vector &v_end,
-                                        const double t_end)
+  MoreauJeanIntegrator::record_impulses(const double t_end)
   {
     std::vector<double> this_step(contact_list.size(), 0.0), tangential(contact_list.size(), 0.0);
     const unsigned int  per_contact = has_friction ? 2 : 1;
@@ -525,8 +636,6 @@ namespace poundfe
           else
             unattached_loss += record.energy_lost;
         }
-    const Vector u_end = u + parameters.time_step *
-                               ((1 - parameters.theta) * v + parameters.theta * v_end);
     // The impact log sees a step with an impulse as one carrying the mean
     // force P / h at both ends (so its impulse is P and its peak force the
     // mean force of the step), and the first step without one as its release.
@@ -557,8 +666,10 @@ namespace poundfe
   void
   MoreauJeanIntegrator::update_energy()
   {
-    balance.kinetic = 0.5 * v.dot(mass * v);
-    balance.strain  = 0.5 * u.dot(stiffness * u);
+    product.noalias() = system.mass * v;
+    balance.kinetic   = 0.5 * v.dot(product);
+    product.noalias() = system.stiffness * u;
+    balance.strain    = 0.5 * u.dot(product);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         const NonlinearElement &e = (*elements)[h];

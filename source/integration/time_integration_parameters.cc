@@ -41,6 +41,7 @@ namespace poundfe
   {
     MoreauJeanParameters p = moreau_jean;
     p.time_step            = newmark.time_step;
+    p.linear_solver        = linear_solver;
     p.friction.tolerance      = moreau_jean.lcp.tolerance;
     p.friction.max_iterations = moreau_jean.lcp.max_iterations;
     return p;
@@ -251,7 +252,8 @@ namespace poundfe
                "Siconos Numerics (theory §3.9d); needs a Law other than none (its force "
                "parameters are then unused), gaps between floors, at barriers or in plan "
                "(3D; not a slab against a column), no bumpers, friction surfaces or fibre "
-               "members, no gravity analysis; the commands run, stationary-pdf, "
+               "members, no gravity analysis (large models: Dense matrix limit); the "
+               "commands run, stationary-pdf, "
                "montecarlo, subset, fragility, ida, msa, sweep, separation (its free "
                "responses have no contact: Newmark) and mitigation (no bumper cases), and "
                "Python's run; a build without Siconos offers penalty only (poundfe --version lists "
@@ -288,6 +290,13 @@ namespace poundfe
                "contacts, each solved exactly), lemke (Lemke on its LCP), enum (enumeration, a "
                "few contacts); its tolerance and iteration limit are the LCP's. Unit: -.",
                friction_solver_names());
+    prm.add_parameter("Dense matrix limit", moreau_jean.max_dense_equations,
+                      "Model = nonsmooth: Moreau-Jean's iteration matrix is dense (LU) on "
+                      "models of up to this many equations, sparse above, factored by Time "
+                      "integration/Linear solver (eigen-ldlt, or umfpack), without modal "
+                      "damping; each step's Delassus operator by one solve per contact of its "
+                      "index set either way (theory §3.9d). Unit: count.",
+                      Patterns::Integer(0, 1000000000));
     prm.add_parameter("Event refinement", newmark.newton.event_refinement,
                       "A step in which a contact starts or ends is redone in 2^r "
                       "sub-steps around the event, which is then located inside the "

@@ -22,6 +22,8 @@
 
 namespace poundfe
 {
+  class MoreauJeanIntegrator; // integration/moreau_jean.h
+
   /// What a time history of the model reads from the input: how to
   /// integrate, what loads it, and the file they came from (for messages).
   /// Each part is its module's own section.
@@ -82,6 +84,7 @@ namespace poundfe
     /// the whole model.
     TimeHistory(const Analysis &analysis, const TimeHistoryParameters &parameters,
                 LockstepStepper &stepper);
+    ~TimeHistory();
     TimeHistory(const TimeHistory &) = delete;
     TimeHistory &operator=(const TimeHistory &) = delete;
 

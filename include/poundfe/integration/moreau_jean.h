@@ -42,18 +42,22 @@
 // F = 0 of the start (at rest) θ = 1/2 keeps F+ = 0 at every step, as
 // Newmark's average acceleration (the same scheme on the smooth part) does.
 // The contacts act on equations with mass only: an impulse needs inertia.
+// J is dense on small models and sparse on large ones (W then from one solve
+// with J's factor per active contact's row: integration/moreau_jean_matrix.h);
+// the products with M, C and K are sparse.
 #ifndef poundfe_integration_moreau_jean_h
 #define poundfe_integration_moreau_jean_h
 
 #include <poundfe/assembly/linear_system.h>
 #include <poundfe/elements/nonlinear_element.h>
 #include <poundfe/integration/lcp_solver.h>
+#include <poundfe/integration/moreau_jean_matrix.h>
+#include <poundfe/integration/moreau_jean_parameters.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/integration/stepper_state.h>
 #include <poundfe/model/plan_contact_geometry.h>
 
-#include <Eigen/Cholesky>
-#include <Eigen/LU>
+#include <Eigen/SparseCholesky>
 
 #include <functional>
 #include <string>
@@ -89,24 +93,6 @@ namespace poundfe
   std::string unilateral_contacts(const Model &model, const NonlinearElements &elements,
                                   double restitution, std::vector<UnilateralContact> &contacts);
 
-  struct MoreauJeanParameters
-  {
-    double       time_step = 0.001;
-    double       theta     = 0.5;
-    LcpOptions   lcp;
-    /// Coulomb's coefficient of the contacts in plan (Contact/Friction
-    /// coefficient; copied to each contact), and with it the solver of the
-    /// friction-contact problem.
-    double                 friction_coefficient = 0;
-    FrictionContactOptions friction;
-    /// Newton on the smooth part: |dv| <= tolerance (|v+| + velocity_scale).
-    double       newton_tolerance  = 1e-10;
-    double       velocity_scale    = 1e-6; // m/s
-    unsigned int newton_iterations = 50;
-    /// The largest model (equations) it takes: J is dense.
-    unsigned int max_equations = 500;
-  };
-
   /// One impulse of one contact in one step.
   struct ContactImpulse
   {
@@ -121,11 +107,13 @@ namespace poundfe
   class MoreauJeanIntegrator : public TimeStepperState
   {
   public:
-    /// Why the scheme cannot take this system and these elements (too many
-    /// equations, an equation without mass, an element it does not take:
-    /// fibre members, friction, elements of rank > 1); empty when it can.
+    /// Why the scheme cannot take this system and these elements (an
+    /// element it does not take: fibre members, friction; beyond
+    /// parameters.max_dense_equations, where J is sparse: modal damping, a
+    /// linear solver on several processes, a nonsymmetric element tangent
+    /// on a symmetric solver); empty when it can.
     static std::string unsupported(const LinearSystem &system, const NonlinearElements *elements,
-                                   unsigned int max_equations);
+                                   const MoreauJeanParameters &parameters);
     /// Why the scheme cannot take these contacts on this system (one acting
     /// on an equation without mass); empty when it can.
     static std::string unsupported(const LinearSystem &system,
@@ -164,37 +152,50 @@ namespace poundfe
     PlanContactState plan_state(unsigned int a, const Vector &x) const;
     /// M^-1 x on the equations with mass, 0 on the others.
     Vector inverse_mass(const Vector &x) const;
-    /// H_a and T_a of the contacts in plan at the current displacements.
-    void   linearize_plan_contacts();
+    /// C x (the sparse part and the modal one) into y.
+    void   damping_times(const Vector &x, Vector &y) const;
+    /// H (and T) anew: the constant rows, and the rows of the contacts in
+    /// plan at the current displacements.
+    void   linearize_contacts();
     /// T_a of contact in plan a at the current displacements, `state` its geometry.
     Vector6 plan_tangent(unsigned int a, const PlanContactState &state) const;
     double normal_velocity(unsigned int a, const Vector &x) const;
     /// Sets the (non-gap) elements' trial state at (x, y); their force
-    /// corrections added to `force`, their tangent to `jacobian` (if not
-    /// null) with weight (h theta)^2. NumericalError naming a refusal.
+    /// corrections added to `force`, and with `tangent` their tangents to J
+    /// with weight (h theta)^2. NumericalError naming a refusal.
     void   evaluate_elements(double t, const Vector &x, const Vector &y, Vector &force,
-                             Eigen::MatrixXd *jacobian);
-    /// C x + K y + element forces - p: the smooth forces' negative at (y, x).
-    Vector smooth_force(double t, const Vector &displacement, const Vector &velocity,
-                        const Vector &load_vector, Eigen::MatrixXd *jacobian);
+                             bool tangent);
+    /// C x + K y + element forces - p, the smooth forces' negative at (y, x),
+    /// into `force`; with `tangent`, J assembled at (y, x) too.
+    void   smooth_force(double t, const Vector &displacement, const Vector &velocity,
+                        const Vector &load_vector, Vector &force, bool tangent);
     /// The impulses of the active contacts for free velocity v_free: P_a
     /// (normal) for each, and with friction P_T after them, in the order
-    /// of `active` (the columns of the active contacts' H, then T).
-    Vector contact_impulses(const std::vector<unsigned int> &active, const Vector &v_free);
+    /// of `active` (the rows of `rows`: the active contacts' H, then T).
+    Vector contact_impulses(const Vector &v_free);
     /// The same with friction: Siconos's fc2d on the normal and tangent rows.
-    Vector friction_impulses(const std::vector<unsigned int> &active, const Vector &v_free);
+    Vector friction_impulses(const Vector &v_free);
+    /// W of the active rows with J's factor in hand (kept while neither
+    /// changes).
+    const Eigen::MatrixXd &delassus();
     /// Count a contact problem's solve; NumericalError when it failed.
     void   count_solve(const LcpSolution &solution, unsigned int n_contacts,
                        const char *problem);
-    /// The rows of the active contacts: H's, then T's of those with friction.
-    Eigen::MatrixXd active_rows(const std::vector<unsigned int> &active) const;
-    /// Factor J at the end-of-step state (u_end, v_end) into jacobian_factor.
-    void   factor_jacobian(double t, const Vector &u_end, const Vector &v_end,
-                           const Vector &load_end);
-    /// One step of h from the current state; returns the impulses.
+    /// The index set (contacts closed, or closing within the step) into
+    /// `active`, their rows (H's, then T's with friction) into `rows`.
+    void   find_active_contacts();
+    /// Newton on the step's equations with the impulses: v_end, impulse,
+    /// u_end and s_end (the smooth forces there) of the step to t1; returns
+    /// its iterations. `full_newton`: J factored anew at every iteration.
+    unsigned int solve_step(double t1, bool full_newton);
+    /// One Newton iteration from v_end: the next iterate and its change.
+    double newton_update(Vector &v_next);
+    /// One step of h from the current state.
     void   step(const LoadFunction &load);
-    void   record_impulses(const std::vector<unsigned int> &active, const Vector &impulse,
-                           const Vector &v_end, double t_end);
+    /// The energy terms of the step, the elements' commit, the state moved to t1.
+    void   accept_step(double t1);
+    /// The step's impulses into the impulse and impact logs and the gaps' work.
+    void   record_impulses(double t_end);
     void   update_energy();
 
     const LinearSystem            &system;
@@ -203,20 +204,35 @@ namespace poundfe
     NonlinearElements             *elements   = nullptr;
     unsigned int                   n          = 0;
     unsigned int                   n_elements = 0;
-    Eigen::MatrixXd                mass, damping, stiffness, base_jacobian, H;
-    /// The tangent rows (J n through the contact point) of contacts in plan.
-    Eigen::MatrixXd                T;
+    bool                           smooth_nonlinear = false;
+    /// H_a = dg_a/du (U_a = H_a v < 0 while gap a closes) and the tangent
+    /// rows (J n through the contact point) of contacts in plan.
+    SparseRows                     H, T;
     bool                           has_friction = false;
-    Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_factor;
+    bool                           has_plan_contacts = false;
+    std::unique_ptr<MoreauJeanMatrix> jacobian;
+    /// Each element's B_e (constant), D_e and (h theta)^2 B_e D_e B_e^T.
+    std::vector<Eigen::MatrixXd>   bases;
+    Eigen::MatrixXd                element_d, element_local;
     /// Whether the next iteration factors J anew (the one in hand is
     /// renewed when an iteration's change exceeds max_contraction times
     /// the last one's).
     bool                           refactor        = true;
     static constexpr double        max_contraction = 0.25;
-    /// The equations with mass and the Cholesky factor of M on them.
-    std::vector<unsigned int>    massive;
-    Eigen::LLT<Eigen::MatrixXd>  mass_factor;
-    Vector                         load_start, smooth_start, local_u, local_v;
+    /// W of `active` on J's factorisation `delassus_factorization`.
+    Eigen::MatrixXd                W;
+    std::vector<unsigned int>      delassus_active;
+    unsigned long                  delassus_factorization = 0;
+    bool                           delassus_valid         = false;
+    /// The equations with mass and the factor of M on them.
+    std::vector<unsigned int>      massive;
+    Eigen::SimplicialLDLT<SparseMatrix> mass_factor;
+    /// The step in hand: its index set and rows, the iterate, its impulses.
+    std::vector<unsigned int>      active;
+    SparseRows                     rows;
+    Vector                         load_end, u_end, v_end, s_end, impulse;
+    Vector                         residual, v_free, correction_velocity, product;
+    Vector                         load_start, smooth_start, local_u, local_v, local_force;
     std::vector<double>            initial_stored;
     std::vector<ContactImpulse>    impulse_log;
     /// The energy lost at impacts of contacts without a gap element.

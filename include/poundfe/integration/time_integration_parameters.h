@@ -9,7 +9,7 @@
 #include <poundfe/base/choices.h>
 #include <poundfe/base/input_file.h>
 #include <poundfe/integration/dormand_prince.h>
-#include <poundfe/integration/moreau_jean.h>
+#include <poundfe/integration/moreau_jean_parameters.h>
 #include <poundfe/integration/newmark.h>
 
 #include <string>

@@ -1,0 +1,104 @@
+// Moreau–Jean's iteration matrix J, dense or sparse, its factor and the
+// Delassus operator W = R J^-1 R^T of the active contacts' rows R by one
+// solve per row (integration/moreau_jean_matrix.h; Acary & Brogliato 2008,
+// §10.1.3).
+#include <poundfe/integration/moreau_jean_matrix.h>
+
+#include <deal.II/base/exceptions.h>
+
+namespace poundfe
+{
+  MoreauJeanMatrix::MoreauJeanMatrix(const SparseMatrix &base, const Eigen::MatrixXd &dense_extra,
+                                     const std::vector<const std::vector<int> *> &element_equations,
+                                     const bool dense_, const std::string &linear_solver)
+    : dense(dense_)
+  {
+    const Eigen::Index n = base.rows();
+    column.setZero(n);
+    solution.setZero(n);
+    if (dense)
+      {
+        dense_base = Eigen::MatrixXd(base);
+        if (dense_extra.size() > 0)
+          dense_base += dense_extra;
+        return;
+      }
+    Assert(dense_extra.size() == 0, dealii::ExcMessage("a dense term on a sparse J"));
+    // the pattern: the constant part's entries and every element's pairs
+    std::vector<Eigen::Triplet<double>> entries;
+    for (Eigen::Index k = 0; k < base.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(base, k); it; ++it)
+        entries.emplace_back(it.row(), it.col(), it.value());
+    for (const std::vector<int> *equations : element_equations)
+      for (const int i : *equations)
+        for (const int j : *equations)
+          if (i >= 0 && j >= 0)
+            entries.emplace_back(i, j, 0.0);
+    sparse_matrix.resize(n, n);
+    sparse_matrix.setFromTriplets(entries.begin(), entries.end());
+    sparse_matrix.makeCompressed();
+    base_values.assign(sparse_matrix.valuePtr(),
+                       sparse_matrix.valuePtr() + sparse_matrix.nonZeros());
+    sparse_factor = create_linear_solver(linear_solver);
+    sparse_factor->analyze(sparse_matrix);
+  }
+
+  MoreauJeanMatrix::~MoreauJeanMatrix() = default;
+
+  void
+  MoreauJeanMatrix::start()
+  {
+    if (dense)
+      dense_matrix = dense_base;
+    else
+      std::copy(base_values.begin(), base_values.end(), sparse_matrix.valuePtr());
+  }
+
+  void
+  MoreauJeanMatrix::add(const std::vector<int> &equations, const Eigen::MatrixXd &local)
+  {
+    for (unsigned int j = 0; j < equations.size(); ++j)
+      for (unsigned int i = 0; i < equations.size(); ++i)
+        if (equations[i] >= 0 && equations[j] >= 0)
+          {
+            if (dense)
+              dense_matrix(equations[i], equations[j]) += local(i, j);
+            else // on the pattern: no insertion
+              sparse_matrix.coeffRef(equations[i], equations[j]) += local(i, j);
+          }
+  }
+
+  void
+  MoreauJeanMatrix::factorize()
+  {
+    if (dense)
+      dense_factor.compute(dense_matrix);
+    else
+      sparse_factor->factorize(sparse_matrix);
+    ++factorizations;
+  }
+
+  void
+  MoreauJeanMatrix::solve(const Vector &b, Vector &x)
+  {
+    if (dense)
+      x = dense_factor.solve(b);
+    else
+      sparse_factor->solve(b, x);
+  }
+
+  void
+  MoreauJeanMatrix::delassus(const SparseRows &rows, Eigen::MatrixXd &W)
+  {
+    const Eigen::Index m = rows.rows();
+    W.resize(m, m);
+    for (Eigen::Index k = 0; k < m; ++k)
+      {
+        column.setZero();
+        for (SparseRows::InnerIterator it(rows, k); it; ++it)
+          column[it.col()] = it.value();
+        solve(column, solution);
+        W.col(k) = rows * solution;
+      }
+  }
+} // namespace poundfe
