@@ -49,18 +49,47 @@ namespace poundfe
     const double c  = du / uy;
     const double s  = du > 0 ? 1.0 : (du < 0 ? -1.0 : committed.direction);
     const double z0 = committed.z, e0 = committed.epsilon;
-    const double g0 = rate_of(z0, e0, s).g;
+    // Without degradation (delta_A = delta_nu = delta_eta = 0) and at a
+    // finite eps, A, nu = 1 and eta = 1 are exact whatever eps is: the rate
+    // is rate_of's to the bit with its divisions by 1 left out, and the
+    // rate at (z0, eps1) is the one at (z0, eps0).
+    const bool plain = p.delta_A == 0 && p.delta_nu == 0 && p.delta_eta == 0;
+    const auto rate  = [&](const double z1, const double e) {
+      if (!plain || !std::isfinite(e))
+        return rate_of(z1, e, s);
+      const double a    = std::abs(z1);
+      const double sz   = (z1 > 0) - (z1 < 0);
+      const double a_n1 = (a == 0) ? 0.0 : (p.n == 2) ? a : (p.n == 1) ? 1.0 : std::pow(a, p.n - 1);
+      const double a_n  = a_n1 * a;
+      const double psi  = p.beta * s * sz + p.gamma;
+      const double phi  = p.A - a_n * psi;
+      Rate         r;
+      r.g         = phi;
+      r.g_z       = -p.n * a_n1 * sz * psi;
+      r.g_epsilon = (-p.delta_A - p.delta_nu * a_n * psi) - phi * p.delta_eta;
+      return r;
+    };
+    const Rate   r0 = rate(z0, e0);
+    const double g0 = r0.g;
 
     // Residual of the discrete map and its derivative in z1.
     auto residual = [&](const double z1, Rate &r1, double &e1) {
       e1 = e0 + 0.5 * c * (z0 + z1);
-      r1 = rate_of(z1, e1, s);
+      r1 = rate(z1, e1);
       return z1 - z0 - c * ((1 - th) * g0 + th * r1.g);
     };
 
     double z = z0, e1 = e0;
     Rate   r1{};
-    double R = residual(z, r1, e1);
+    double R = 0;
+    if (plain && std::isfinite(e0 + 0.5 * c * (z0 + z0)))
+      {
+        e1 = e0 + 0.5 * c * (z0 + z0);
+        r1 = r0;
+        R  = z0 - z0 - c * ((1 - th) * g0 + th * r1.g);
+      }
+    else
+      R = residual(z, r1, e1);
     // At least one Newton step whenever the deformation changed: z1 = z0
     // would already pass the tolerance for an increment below about
     // tolerance * u_y, and the force would then ignore (1 - alpha) k du
