@@ -153,13 +153,13 @@ namespace poundfe
       is_active[c] = 1;
     if (!fill_slots())
       return false;
-    base->solve(r, y);
     const unsigned int k = active.size();
-    if (k == 0)
+    if (k == 0) // x = A^{-1} r: the solve writes x without reading it
       {
-        x = y;
+        base->solve(r, x);
         return true;
       }
+    base->solve(r, y);
 
     // S = I + D_a G_aa and rhs = D_a B_a^T y. Row a is row i of its block
     // D_e, whose columns are the active positions first, ..., first + r_e - 1.

@@ -11,7 +11,8 @@ namespace poundfe
     reset();
   }
 
-  BoucWen::Rate
+  // inline: set_trial calls it at every residual of its local iteration
+  inline BoucWen::Rate
   BoucWen::rate_of(const double z, const double epsilon, const double direction) const
   {
     const double a     = std::abs(z);
@@ -24,11 +25,22 @@ namespace poundfe
                                       std::pow(a, p.n - 1);
     const double a_n   = a_n1 * a;
     const double psi   = p.beta * direction * sz + p.gamma;
+    Rate         r;
+    // Without degradation (delta_A = delta_nu = delta_eta = 0) and at a
+    // finite eps, A = A0, nu = 1 and eta = 1 exactly: the same bits without
+    // the terms of eps and the divisions by 1, whatever eps is.
+    if (p.delta_A == 0 && p.delta_nu == 0 && p.delta_eta == 0 && std::isfinite(epsilon))
+      {
+        const double phi = p.A - a_n * psi;
+        r.g              = phi;
+        r.g_z            = -p.n * a_n1 * sz * psi;
+        r.g_epsilon      = (-p.delta_A - p.delta_nu * a_n * psi) - phi * p.delta_eta;
+        return r;
+      }
     const double A     = p.A - p.delta_A * epsilon;
     const double nu    = 1 + p.delta_nu * epsilon;
     const double eta   = 1 + p.delta_eta * epsilon;
     const double phi   = A - nu * a_n * psi;
-    Rate         r;
     r.g         = phi / eta;
     r.g_z       = -nu * p.n * a_n1 * sz * psi / eta;
     r.g_epsilon = (-p.delta_A - p.delta_nu * a_n * psi) / eta - phi * p.delta_eta / (eta * eta);
@@ -49,7 +61,11 @@ namespace poundfe
     const double c  = du / uy;
     const double s  = du > 0 ? 1.0 : (du < 0 ? -1.0 : committed.direction);
     const double z0 = committed.z, e0 = committed.epsilon;
-    const double g0 = rate_of(z0, e0, s).g;
+    // Without degradation the rate does not depend on eps (rate_of): the
+    // first residual's rate at (z0, eps1) is the one at (z0, eps0).
+    const bool   plain = p.delta_A == 0 && p.delta_nu == 0 && p.delta_eta == 0;
+    const Rate   r0    = rate_of(z0, e0, s);
+    const double g0    = r0.g;
 
     // Residual of the discrete map and its derivative in z1.
     auto residual = [&](const double z1, Rate &r1, double &e1) {
@@ -60,7 +76,15 @@ namespace poundfe
 
     double z = z0, e1 = e0;
     Rate   r1{};
-    double R = residual(z, r1, e1);
+    double R = 0;
+    if (plain && std::isfinite(e0 + 0.5 * c * (z0 + z0)))
+      {
+        e1 = e0 + 0.5 * c * (z0 + z0);
+        r1 = r0;
+        R  = z0 - z0 - c * ((1 - th) * g0 + th * r1.g);
+      }
+    else
+      R = residual(z, r1, e1);
     // At least one Newton step whenever the deformation changed: z1 = z0
     // would already pass the tolerance for an increment below about
     // tolerance * u_y, and the force would then ignore (1 - alpha) k du

@@ -8,21 +8,23 @@ namespace poundfe
   FloorResponse::FloorResponse(const Model &model, const Component direction)
     : model(model)
   {
+    equation_start.push_back(0);
     for (const Building &building : model.buildings)
       {
-        first.push_back(floor_equations.size());
+        first.push_back(weight.size());
         for (unsigned int f = 0; f < building.floors.size(); ++f)
           {
-            const Floor     &floor = building.floors[f];
-            std::vector<int> equations;
+            const Floor &floor = building.floors[f];
             for (const unsigned int node : floor.nodes)
-              equations.push_back(model.equation(Model::dof(node, direction)));
-            floor_equations.push_back(equations);
+              if (const int e = model.equation(Model::dof(node, direction)); e >= 0)
+                equations.push_back(e);
+            equation_start.push_back(equations.size());
+            weight.push_back(1.0 / floor.nodes.size());
             inverse_height.push_back(1 / floor.storey_height);
             is_bottom_floor.push_back(f == 0);
           }
       }
-    const unsigned int n = floor_equations.size();
+    const unsigned int n = weight.size();
     for (auto *v : {&floor_displacement, &floor_velocity, &drift, &acceleration, &peak_u, &peak_drift,
                     &peak_drift_at, &peak_a})
       v->assign(n, 0.0);
@@ -40,20 +42,28 @@ namespace poundfe
   FloorResponse::evaluate(const double time, const Vector &u, const Vector &v, const Vector &a,
                           const double ground_acceleration)
   {
-    for (unsigned int i = 0; i < floor_equations.size(); ++i)
+    for (unsigned int i = 0; i < weight.size(); ++i)
       {
-        double sum_u = 0, sum_v = 0, sum_a = 0;
-        for (const int e : floor_equations[i])
-          if (e >= 0)
+        double             sum_u = 0, sum_v = 0, sum_a = 0;
+        const unsigned int begin = equation_start[i], end = equation_start[i + 1];
+        if (end == begin + 1) // a shear building's floor: one equation, no loop
+          {
+            const int e = equations[begin];
+            sum_u += u[e];
+            sum_v += v[e];
+            sum_a += a[e];
+          }
+        else
+          for (unsigned int k = begin; k < end; ++k)
             {
+              const int e = equations[k];
               sum_u += u[e];
               sum_v += v[e];
               sum_a += a[e];
             }
-        const double weight   = 1.0 / floor_equations[i].size();
-        floor_displacement[i] = sum_u * weight;
-        floor_velocity[i]     = sum_v * weight;
-        acceleration[i]       = sum_a * weight + ground_acceleration;
+        floor_displacement[i] = sum_u * weight[i];
+        floor_velocity[i]     = sum_v * weight[i];
+        acceleration[i]       = sum_a * weight[i] + ground_acceleration;
         const double below    = is_bottom_floor[i] ? 0.0 : floor_displacement[i - 1];
         drift[i]              = (floor_displacement[i] - below) * inverse_height[i];
 

@@ -12,14 +12,13 @@ namespace poundfe
     , peaks(peaks)
     , drift_limit(drift_limit)
     , rotation_limit(rotation_limit)
-    , rotation_equations(model.buildings.size())
-    , rotation_nodes(model.buildings.size())
   {
     for (unsigned int node = 0; node < model.n_nodes(); ++node)
       if (const int q = model.equation(Model::dof(node, Component::rz)); q >= 0)
         {
-          rotation_equations[model.nodes[node].building].push_back(q);
-          rotation_nodes[model.nodes[node].building].push_back(node);
+          rotation_equations.push_back(q);
+          rotation_nodes.push_back(node);
+          rotation_buildings.push_back(model.nodes[node].building);
         }
   }
 
@@ -35,17 +34,22 @@ namespace poundfe
   void
   ResponseRange::observe_step(const ResponseView &state)
   {
-    if (!(rotation_limit > 0))
+    if (!(rotation_limit > 0) || rotation_equations.empty())
       return;
+    // each building's nodes in node order, as its peak's ties are kept
     const Vector &u = state.displacement();
-    for (unsigned int b = 0; b < rotation_equations.size(); ++b)
-      for (unsigned int i = 0; state.observes_building(b) && i < rotation_equations[b].size(); ++i)
-        if (const double theta = std::abs(u[rotation_equations[b][i]]); theta > peak_rotation[b])
+    for (unsigned int i = 0; i < rotation_equations.size(); ++i)
+      {
+        const unsigned int b = rotation_buildings[i];
+        if (!state.observes_building(b))
+          continue;
+        if (const double theta = std::abs(u[rotation_equations[i]]); theta > peak_rotation[b])
           {
             peak_rotation[b]      = theta;
             peak_rotation_time[b] = state.time();
-            peak_rotation_node[b] = rotation_nodes[b][i];
+            peak_rotation_node[b] = rotation_nodes[i];
           }
+      }
   }
 
   std::vector<std::string>

@@ -226,3 +226,122 @@ BOOST_AUTO_TEST_CASE(local_failure_is_reported)
   BOOST_TEST(!law.set_trial(0.05, 0));
   BOOST_TEST(law.failure().find("did not converge") != std::string::npos);
 }
+
+namespace
+{
+  /// The discrete map of the law written here with every term of the
+  /// degradation (A = A0 - dA eps, nu = 1 + dnu eps, eta = 1 + deta eps and
+  /// the divisions by eta), the local Newton iteration and its backtracking
+  /// as bouc_wen.h states them: the law's z, force and tangent must be these
+  /// to the bit, without degradation too, where the law leaves the terms of
+  /// eps out.
+  struct GeneralMap
+  {
+    BoucWenParameters p;
+    double            u0 = 0, z0 = 0, e0 = 0, direction = 1;
+    double            z = 0, e = 0, force = 0, tangent = 0, s = 1;
+
+    void
+    rate(const double zz, const double eps, const double dir, double &g, double &g_z,
+         double &g_e) const
+    {
+      const double a    = std::abs(zz);
+      const double sz   = (zz > 0) - (zz < 0);
+      const double a_n1 = (a == 0) ? 0.0 : (p.n == 2) ? a : (p.n == 1) ? 1.0 : std::pow(a, p.n - 1);
+      const double a_n  = a_n1 * a;
+      const double psi  = p.beta * dir * sz + p.gamma;
+      const double A    = p.A - p.delta_A * eps;
+      const double nu   = 1 + p.delta_nu * eps;
+      const double eta  = 1 + p.delta_eta * eps;
+      const double phi  = A - nu * a_n * psi;
+      g   = phi / eta;
+      g_z = -nu * p.n * a_n1 * sz * psi / eta;
+      g_e = (-p.delta_A - p.delta_nu * a_n * psi) / eta - phi * p.delta_eta / (eta * eta);
+    }
+
+    void
+    set_trial(const double u)
+    {
+      const double uy = p.yield_deformation, th = p.theta, du = u - u0, c = du / uy;
+      s = du > 0 ? 1.0 : (du < 0 ? -1.0 : direction);
+      double g0, gz0, ge0;
+      rate(z0, e0, s, g0, gz0, ge0);
+      double g = 0, g_z = 0, g_e = 0;
+      const auto residual = [&](const double z1, double &e1, double &r, double &rz, double &re) {
+        e1 = e0 + 0.5 * c * (z0 + z1);
+        rate(z1, e1, s, r, rz, re);
+        return z1 - z0 - c * ((1 - th) * g0 + th * r);
+      };
+      z       = z0;
+      double R = residual(z, e, g, g_z, g_e);
+      bool converged = du == 0;
+      for (unsigned int it = 0; it < p.max_iterations && !converged; ++it)
+        {
+          const double dR = 1 - c * th * (g_z + 0.5 * c * g_e);
+          double       step = -R / dR;
+          for (unsigned int half = 0; half < 30; ++half)
+            {
+              double       e_try, r, rz, re;
+              const double R_try = residual(z + step, e_try, r, rz, re);
+              if (std::abs(R_try) < std::abs(R) || half == 29)
+                {
+                  z = z + step, R = R_try, g = r, g_z = rz, g_e = re, e = e_try;
+                  break;
+                }
+              step *= 0.5;
+            }
+          converged = std::abs(R) <= p.tolerance;
+        }
+      const double dR    = 1 - c * th * (g_z + 0.5 * c * g_e);
+      const double dR_c  = -((1 - th) * g0 + th * g) - c * th * g_e * 0.5 * (z0 + z);
+      const double dz_du = -dR_c / dR / uy;
+      const double k     = p.stiffness;
+      force   = p.alpha * k * u + (1 - p.alpha) * k * uy * z;
+      tangent = p.alpha * k + (1 - p.alpha) * k * uy * dz_du;
+      u_trial = u;
+    }
+
+    void
+    commit()
+    {
+      direction = (u_trial != u0) ? s : direction;
+      u0 = u_trial, z0 = z, e0 = e;
+    }
+
+    double u_trial = 0;
+  };
+} // namespace
+
+BOOST_AUTO_TEST_CASE(the_law_is_the_general_map_to_the_bit)
+{
+  // random increments up to 3 u_y, with reversals and repeated points
+  // (du = 0), committed after every other trial; tolerance: none
+  for (const double n : {2.0, 1.0, 1.5})
+    for (const double delta : {0.0, 0.05})
+      {
+        BoucWenParameters p = storey(0.1, n);
+        p.delta_A = p.delta_nu = p.delta_eta = delta;
+        BoucWen    law(p);
+        GeneralMap reference{p};
+        unsigned int state = 12345, differing = 0;
+        double       u     = 0;
+        for (unsigned int i = 0; i < 2000; ++i)
+          {
+            state = state * 1103515245u + 12345u;
+            const double r = double(state >> 8) / double(1u << 24) - 0.5;
+            u += (i % 7 == 3) ? 0.0 : 6 * r * p.yield_deformation * (i % 50 == 0 ? 1 : 0.1);
+            BOOST_REQUIRE(law.set_trial(u, 0));
+            reference.set_trial(u);
+            differing += law.force() != reference.force || law.tangent() != reference.tangent ||
+                         law.history_variable() != reference.z ||
+                         law.normalised_energy() != reference.e;
+            if (i % 2 == 0)
+              {
+                law.commit();
+                reference.commit();
+              }
+          }
+        BOOST_TEST_INFO("n = " << n << ", delta = " << delta);
+        BOOST_TEST(differing == 0u);
+      }
+}

@@ -32,7 +32,7 @@ namespace poundfe
     /// its building, on rank 0 (base/rank_merge.h). Collective.
     void merge(const RankMerge &ranks);
 
-    unsigned int n_floors() const { return floor_equations.size(); }
+    unsigned int n_floors() const { return weight.size(); }
     /// Index of floor f (0-based, bottom up) of building b in the flat arrays.
     unsigned int index(unsigned int b, unsigned int f) const { return first[b] + f; }
 
@@ -52,11 +52,16 @@ namespace poundfe
                                           const std::string &suffix) const;
 
   private:
+    // Flat arrays, read at every step: floor i's free equations are
+    // equations[equation_start[i]] up to equation_start[i + 1] (its fixed
+    // nodes are left out but counted in weight[i] = 1 / number of nodes).
     const Model                    &model;
     std::vector<unsigned int>       first;
-    std::vector<std::vector<int>>   floor_equations; // ux equations; fixed nodes: -1
+    std::vector<int>                equations;
+    std::vector<unsigned int>       equation_start;
+    std::vector<double>             weight;
     std::vector<double>             inverse_height;
-    std::vector<bool>               is_bottom_floor;
+    std::vector<char>               is_bottom_floor;
     std::vector<double>             floor_displacement, floor_velocity, drift, acceleration;
     std::vector<double>             peak_u, peak_drift, peak_drift_at, peak_a;
   };

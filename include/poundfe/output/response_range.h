@@ -48,9 +48,10 @@ namespace poundfe
     const Model        &model;
     const PeakResponse &peaks;
     const double        drift_limit, rotation_limit;
-    /// The rz equations of each building's nodes, and their node.
-    std::vector<std::vector<int>>          rotation_equations;
-    std::vector<std::vector<unsigned int>> rotation_nodes;
+    /// The rz equations of the nodes, in node order (none in a shear
+    /// building: nothing to do per step), with their node and building.
+    std::vector<int>          rotation_equations;
+    std::vector<unsigned int> rotation_nodes, rotation_buildings;
     /// Peak |rz| of each building, the node and time where it was reached.
     std::vector<double>       peak_rotation, peak_rotation_time;
     std::vector<unsigned int> peak_rotation_node;
