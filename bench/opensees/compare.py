@@ -50,6 +50,13 @@ CASES = {
     # the same on forceBeamColumns (the sections carry s = b q + s_p):
     # gravity by element loads, loadConst, then the record
     "portal_element_loads_force": ("portal_element_loads.tcl", ["force"], 1e-9),
+    # the same with the columns on section Aggregator (Elastic P, Steel01 Mz
+    # that yields): a loaded member re-trials its sections at each step by
+    # increments inside DBL_EPSILON, which Steel01 must take as no change
+    "portal_element_loads_aggregator": ("portal_element_loads.tcl", ["aggregator"], 1e-9),
+    # Steel01's dead band alone: a -1e-17 step on the hardening branch keeps
+    # the hardening tangent, exposed by one Linear step of load
+    "steel01_dead_band": ("steel01_dead_band.tcl", [], 1e-9),
     "frame_hht": ("fibre_frame_record.tcl", ["committed", "Newton", "HHT 0.8"], 1e-9),
     "pounding_hht": ("pounding_sticks.tcl",
                      ["ImpactMaterial", "Newton", "NormDispIncr", "HHT 0.9"], 1e-9),
