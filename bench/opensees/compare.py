@@ -141,6 +141,9 @@ CASES = {
     # yet the virgin elastic range stays [gap, Fy/E + gap] (OpenSees 3.8's
     # constructor, with its warning on the alternate signs)
     "pounding_ElasticPPGapSigns": ("pounding_sticks.tcl", ["ElasticPPGapSigns"], 1e-9),
+    # the ElasticPPGap under initial-stiffness damping (-doRayleigh 1): an
+    # open gap's initial tangent is 0 (EPPGapMaterial::getInitialTangent)
+    "pounding_ElasticPPGapK0": ("pounding_sticks.tcl", ["ElasticPPGapK0"], 1e-9),
     # OpenSees's BoucWen storey (its backward Euler and Newton for z from
     # 0.01), with and without Baber-Noori degradation
     "bouc_wen_storey": ("bouc_wen_storey.tcl", [], 1e-9),
