@@ -144,6 +144,9 @@ CASES = {
     # the ElasticPPGap under initial-stiffness damping (-doRayleigh 1): an
     # open gap's initial tangent is 0 (EPPGapMaterial::getInitialTangent)
     "pounding_ElasticPPGapK0": ("pounding_sticks.tcl", ["ElasticPPGapK0"], 1e-9),
+    # truss -rho at the supports under a record: the bars' ground-motion
+    # load enters the reactions (Truss::getResistingForce)
+    "truss_mass": ("truss_mass.tcl", [], 1e-9),
     # OpenSees's BoucWen storey (its backward Euler and Newton for z from
     # 0.01), with and without Baber-Noori degradation
     "bouc_wen_storey": ("bouc_wen_storey.tcl", [], 1e-9),

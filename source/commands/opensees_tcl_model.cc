@@ -464,7 +464,11 @@ namespace poundfe
           }
         add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
         if (d.ndm == 2)
-          add_lumped_mass(d, tag, nodes, rho);
+          {
+            add_lumped_mass(d, tag, nodes, rho);
+            for (auto &m : d.lumped_masses)
+              m.load_in_reaction |= m.element == tag;
+          }
         else if (rho != 0)
           unsupported("element truss -rho outside -ndm 2");
       }
