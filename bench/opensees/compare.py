@@ -50,6 +50,13 @@ CASES = {
     # the same on forceBeamColumns (the sections carry s = b q + s_p):
     # gravity by element loads, loadConst, then the record
     "portal_element_loads_force": ("portal_element_loads.tcl", ["force"], 1e-9),
+    # the same with the columns on section Aggregator (Elastic P, Steel01 Mz
+    # that yields): a loaded member re-trials its sections at each step by
+    # increments inside DBL_EPSILON, which Steel01 must take as no change
+    "portal_element_loads_aggregator": ("portal_element_loads.tcl", ["aggregator"], 1e-9),
+    # Steel01's dead band alone: a -1e-17 step on the hardening branch keeps
+    # the hardening tangent, exposed by one Linear step of load
+    "steel01_dead_band": ("steel01_dead_band.tcl", [], 1e-9),
     "frame_hht": ("fibre_frame_record.tcl", ["committed", "Newton", "HHT 0.8"], 1e-9),
     "pounding_hht": ("pounding_sticks.tcl",
                      ["ImpactMaterial", "Newton", "NormDispIncr", "HHT 0.9"], 1e-9),
@@ -134,6 +141,12 @@ CASES = {
     # yet the virgin elastic range stays [gap, Fy/E + gap] (OpenSees 3.8's
     # constructor, with its warning on the alternate signs)
     "pounding_ElasticPPGapSigns": ("pounding_sticks.tcl", ["ElasticPPGapSigns"], 1e-9),
+    # the ElasticPPGap under initial-stiffness damping (-doRayleigh 1): an
+    # open gap's initial tangent is 0 (EPPGapMaterial::getInitialTangent)
+    "pounding_ElasticPPGapK0": ("pounding_sticks.tcl", ["ElasticPPGapK0"], 1e-9),
+    # truss -rho at the supports under a record: the bars' ground-motion
+    # load enters the reactions (Truss::getResistingForce)
+    "truss_mass": ("truss_mass.tcl", [], 1e-9),
     # OpenSees's BoucWen storey (its backward Euler and Newton for z from
     # 0.01), with and without Baber-Noori degradation
     "bouc_wen_storey": ("bouc_wen_storey.tcl", [], 1e-9),

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 namespace poundfe
 {
@@ -409,9 +410,12 @@ namespace poundfe
         link_materials_and_directions(w, link, data);
         const std::size_t ratios = d.ndm == 2 ? 2 : 4, distances = d.ndm == 2 ? 1 : 2;
         const std::string model = " in -ndm " + text_of(static_cast<int>(d.ndm));
+        std::set<std::string> given;
         while (!w.done())
           {
             const std::string option = w.word("an option");
+            if (option[0] == '-' && !given.insert(option).second)
+              throw ScriptError(link + ": " + option + " given twice");
             if (option == "-orient")
               data.orient = link_option_values(w, link, option, {3, 6});
             else if (option == "-pDelta")
@@ -460,7 +464,11 @@ namespace poundfe
           }
         add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
         if (d.ndm == 2)
-          add_lumped_mass(d, tag, nodes, rho);
+          {
+            add_lumped_mass(d, tag, nodes, rho);
+            for (auto &m : d.lumped_masses)
+              m.load_in_reaction |= m.element == tag;
+          }
         else if (rho != 0)
           unsupported("element truss -rho outside -ndm 2");
       }

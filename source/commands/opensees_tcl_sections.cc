@@ -5,8 +5,8 @@
 //     (sections/fibre_generators.h: the fibres exactly as OpenSees places
 //     them; the reference axis at the area centroid, as FiberSection2d)
 //   section Aggregator tag mat1 dof1 <mat2 dof2 ...> <-section baseTag>
-//     (dofs P and Mz, in 3D also My and T; the base an Elastic section
-//     for the dofs not given, or every dof given)
+//     (dofs P and Mz, in 3D also My and T, every dof given; an Elastic
+//     base holds them all, so with it no dof can be given)
 //   beamIntegration Lobatto|Legendre tag secTag N
 //   beamIntegration HingeRadau tag secI lpI secJ lpJ secInterior
 //   element forceBeamColumn tag i j transfTag integrationTag <-mass rho> <-iter maxIter tol>

@@ -20,6 +20,7 @@
 #include <poundfe/laws/steel01.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace poundfe
@@ -48,8 +49,10 @@ namespace poundfe
   Steel01State
   Steel01::respond(const Steel01State &from, const double strain) const
   {
+    // OpenSees's dead band: a change of at most DBL_EPSILON keeps the
+    // committed state, tangent included (Steel01::setTrialStrain).
     const double d_strain = strain - from.strain;
-    if (d_strain == 0)
+    if (std::abs(d_strain) <= DBL_EPSILON)
       return from;
     Steel01State to = from;
     to.strain       = strain;

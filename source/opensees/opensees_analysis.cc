@@ -326,7 +326,10 @@ namespace poundfe
           element_values(*element, v, nullptr, combinations, local_v);
           if (!element->set_trial(local_u, local_v))
             {
-              why = "element " + std::to_string(tag) + ": " + element->failure();
+              // an element without a law to blame refuses non-finite forces
+              const std::string reason = element->failure();
+              why = "element " + std::to_string(tag) + ": " +
+                    (reason.empty() ? "its forces are not finite" : reason);
               return false;
             }
         }
@@ -416,6 +419,10 @@ namespace poundfe
     Analysis::assemble_tangent(const double c_k, const double c_c, const double c_m)
     {
       const double diagonal = c_m + (uniform_mass_damping ? c_c * domain.rayleigh.alpha_m : 0.0);
+      // a mass or factor near the largest double overflows m / dt^2: the
+      // solution would be 0 where it is not
+      const char *not_finite = "the effective matrix is not finite (a mass, damping factor or "
+                               "stiffness too large)";
       if (dense())
         {
           dense_tangent.setZero(n_equations, n_equations);
@@ -423,6 +430,8 @@ namespace poundfe
           dense_tangent.diagonal() += diagonal * mass_of_equation;
           if (!uniform_mass_damping)
             dense_tangent.diagonal() += c_c * mass_damping_of_equation;
+          if (!dense_tangent.allFinite())
+            throw NumericalError(not_finite);
           dense_factors.compute(dense_tangent);
           if ((dense_factors.matrixLU().diagonal().array() == 0).any())
             throw NumericalError("LU: the effective matrix is singular");
@@ -438,6 +447,8 @@ namespace poundfe
                                                                c_c * mass_damping_of_equation[i]));
       tangent_matrix.resize(n_equations, n_equations);
       tangent_matrix.setFromTriplets(tangent_entries.begin(), tangent_entries.end());
+      if (!Eigen::Map<const Vector>(tangent_matrix.valuePtr(), tangent_matrix.nonZeros()).allFinite())
+        throw NumericalError(not_finite);
       if (!solver)
         solver = create_linear_solver(opts.linear_solver);
       if (!analysed)

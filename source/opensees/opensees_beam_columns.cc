@@ -27,6 +27,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/beam_column.h>
 #include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/sections/aggregator_section.h>
 #include <poundfe/sections/elastic_section.h>
 
 #include <Eigen/Geometry>
@@ -143,6 +144,20 @@ namespace poundfe
         return std::vector<double>(v.data(), v.data() + v.size());
       }
 
+      /// A section's resultants or deformations in OpenSees's order of its
+      /// codes: an Aggregator's in the order the script gave its dofs.
+      std::vector<double>
+      section_values(const SectionLaw &s, const SectionVector &v)
+      {
+        const auto *aggregator = dynamic_cast<const AggregatorSection *>(&s);
+        if (!aggregator)
+          return values_of(v);
+        std::vector<double> values;
+        for (const unsigned int r : aggregator->response_order())
+          values.push_back(v[r]);
+        return values;
+      }
+
       /// The responses of both dimensions: basicForce (q), basicDeformation,
       /// section i force|deformation; empty for any other words.
       template <int dim, typename Basic>
@@ -164,9 +179,9 @@ namespace poundfe
                                 words[1] + " (1 to " + std::to_string(member.n_points()) + ")");
             const SectionLaw &s = member.section(i - 1);
             if (words[2] == "force" || words[2] == "forces")
-              return values_of(s.resultant());
+              return section_values(s, s.resultant());
             if (words[2] == "deformation" || words[2] == "deformations")
-              return values_of(s.deformation());
+              return section_values(s, s.deformation());
           }
         return {};
       }

@@ -210,6 +210,11 @@ namespace poundfe
             for (double &value : r[node_tag])
               value += f[i++];
         }
+      const std::vector<double> a_g = ground_acceleration(time);
+      for (const LumpedMass &m : lumped_masses)
+        if (m.load_in_reaction)
+          for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
+            r[m.node][k] += m.mass * a_g[k];
       return r;
     }
 

@@ -4,6 +4,8 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
+
 namespace poundfe
 {
   AggregatorSection::AggregatorSection(const SectionVector &rigidities)
@@ -20,6 +22,11 @@ namespace poundfe
     AssertIndexRange(r, n_resultants());
     factories[r] = std::move(factory);
     laws[r]      = factories[r] ? factories[r]() : nullptr;
+    const auto at = std::find(given.begin(), given.end(), r);
+    if (laws[r] && at == given.end())
+      given.push_back(r);
+    else if (!laws[r] && at != given.end())
+      given.erase(at);
     reset();
     return *this;
   }
@@ -96,10 +103,20 @@ namespace poundfe
   AggregatorSection::clone() const
   {
     auto copy = std::make_unique<AggregatorSection>(rigidity);
-    for (unsigned int r = 0; r < n_resultants(); ++r)
-      if (factories[r])
-        copy->set_law(r, factories[r]);
+    for (const unsigned int r : given)
+      copy->set_law(r, factories[r]);
     return copy;
+  }
+
+  std::vector<unsigned int>
+  AggregatorSection::response_order() const
+  {
+    std::vector<unsigned int> order;
+    for (unsigned int r = 0; r < n_resultants(); ++r)
+      if (!laws[r])
+        order.push_back(r);
+    order.insert(order.end(), given.begin(), given.end());
+    return order;
   }
 
   std::string

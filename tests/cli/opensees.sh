@@ -10,7 +10,9 @@
 #     not exist, a script error, a Parallel of a missing material or with a
 #     factor short, an unknown MinMax option, a Series -iter short of its
 #     tolerance, a ViscousDamper with NM 4 or 5 values, a twoNodeLink with
-#     -mass or a direction the model lacks, a twoNodeLink's word where a
+#     an option given twice, a failed step's reason (forces or a mass that
+#     overflow), a twoNodeLink with -mass or a direction the model lacks,
+#     a twoNodeLink's word where a
 #     direction, -mat, a material or an option's value is due (named) and a
 #     direction or a value in excess, rigidLink bar with a third node, a
 #     rigidDiaphragm's node fixed or with mass (named with the diaphragm's
@@ -377,6 +379,8 @@ printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 
   | bad link-mass "6: element: twoNodeLink 1: the end of the line where value 1 of -mass is due (-mass takes 1 value)" || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass -1.0\n' \
   | bad link-mass-negative "6: element: twoNodeLink 1: -mass must not be negative" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass 1.0 -mass 2.0\n' \
+  | bad link-mass-twice "6: element: twoNodeLink 1: -mass given twice" || exit 1
 # region and setElementRayleighDampingFactors
 echo "region 1 -ele 1 -rayleigh 0.1 0.0 0.0" | bad region-factors '5: region: missing bKc' || exit 1
 echo "region 1 -ele 1 -frob 2" | bad region-option "5: region 1: '-frob' where an option is due" || exit 1
@@ -511,4 +515,53 @@ TCL
   grep -qxF "poundfe: error: $work/diaphragm/s.tcl:9: analyze: rigidDiaphragm (s.tcl:6): $why" \
     "$work/diaphragm/err" || { cat "$work/diaphragm/err"; fail "diaphragm: message"; }
 done
+# a failed step names its reason: a region's factor of 1e308 or a link mass
+# whose m 4/dt^2 overflows (its answer would be a displacement of 0), a beam
+# whose forces overflow (a load of 2e308); analyze returns -3, the domain
+# back at the last step
+mkdir -p "$work/overflow"
+step_fails() { # WHAT REASON (the script in $work/overflow/s.tcl)
+  "$poundfe" opensees "$work/overflow/s.tcl" > "$work/overflow/out" 2>&1
+  grep -qxF "analyze -3" "$work/overflow/out" && grep -qF "failed ($2)" "$work/overflow/out" \
+    || { cat "$work/overflow/out"; fail "overflow: $1"; }
+}
+matrix="the effective matrix is not finite (a mass, damping factor or stiffness too large)"
+for case in "region 1 -ele 1 -rayleigh 0 0 0 1e308|$matrix" \
+  "element twoNodeLink 4 2 3 -mat 5 -dir 1 -mass 1e308|$matrix"; do
+  cat > "$work/overflow/s.tcl" <<TCL
+model basic -ndm 2 -ndf 3
+node 1 0 0
+node 2 0 3 -mass 1 1 0
+node 3 0 6
+fix 1 1 1 1
+fix 3 0 1 1
+geomTransf Linear 1
+element elasticBeamColumn 1 1 2 0.1 2e8 1e-3 1
+uniaxialMaterial Elastic 5 100.0
+element twoNodeLink 2 2 3 -mat 5 -dir 1
+${case%%|*}
+timeSeries Path 2 -dt 0.01 -values {0 1 2 1 0 -1}
+pattern UniformExcitation 2 1 -accel 2
+test NormDispIncr 1.0e-10 20
+algorithm Newton
+integrator Newmark 0.5 0.25
+analysis Transient
+puts "analyze [analyze 5 0.01]"
+TCL
+  step_fails "${case%%|*}" "${case#*|}"
+done
+cat > "$work/overflow/s.tcl" <<TCL
+model basic -ndm 2 -ndf 3
+node 1 0 0
+node 2 0 3
+fix 1 1 1 1
+geomTransf Linear 1
+element elasticBeamColumn 1 1 2 0.1 2e8 1e-3 1
+timeSeries Linear 1
+pattern Plain 1 1 { load 2 1e308 0 0 }
+integrator LoadControl 2.0
+analysis Static
+puts "analyze [analyze 1]"
+TCL
+step_fails "a load of 2e308" "element 1: its forces are not finite"
 echo "opensees: ok"

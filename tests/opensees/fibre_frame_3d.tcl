@@ -66,6 +66,10 @@ recorder Node -file $out/frame3d_roof.out -time -precision 16 -node 11 14 -dof 1
 recorder Node -file $out/frame3d_base.out -time -precision 16 -node 1 2 -dof 1 2 3 reaction
 recorder Element -file $out/frame3d_column.out -time -precision 16 -ele 1 localForce
 recorder Element -file $out/frame3d_section.out -time -precision 16 -ele 1 section 1 deformation
+if {$variant eq "aggregator"} {
+    # a beam's section, declared P My Mz T: OpenSees writes its columns so
+    recorder Element -file $out/frame3d_beam_section.out -time -precision 16 -ele 5 section 1 force
+}
 timeSeries Linear 1
 pattern Plain 1 1 {
     foreach c {11 12 13 14} { load $c 0.0 0.0 [expr {-$m * $g}] 0.0 0.0 0.0 }

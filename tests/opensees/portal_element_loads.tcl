@@ -9,7 +9,11 @@
 # (elasticBeamColumn, the default), fibre (dispBeamColumns, Legendre 3, on
 # the RC sections of rc_section.tcl) or force (forceBeamColumns, Lobatto 5,
 # on the same sections: OpenSees's common gravity-then-record script, the
-# element loads carried by the sections, s = b q + s_p).
+# element loads carried by the sections, s = b q + s_p) or aggregator (the
+# same, the columns on section Aggregator: a Steel01 Mz that yields and
+# Elastic P, declared in that order, which the columns of their section
+# force recorder follow; the Steel01's re-trials inside DBL_EPSILON at each
+# step must keep the committed tangent, as OpenSees's Steel01 does).
 set out [lindex $argv 0]
 set members [expr {$argc > 1 ? [lindex $argv 1] : "elastic"}]
 source [file join [file dirname [info script]] record.tcl]
@@ -28,10 +32,16 @@ geomTransf PDelta 1
 geomTransf Linear 2
 set E 3.0e7
 foreach {tag i j transf} {1 1 3 1  2 2 4 1  3 3 5 1  4 4 6 1  5 3 4 2  6 5 6 2} {
-    if {$members eq "fibre" || $members eq "force"} {
+    if {$members eq "fibre" || $members eq "force" || $members eq "aggregator"} {
         if {$tag == 1} {
             rc_materials
-            rc_section 1 0.4 0.4 0.04 3 3.14e-4
+            if {$members eq "aggregator"} {
+                uniaxialMaterial Elastic 11 [expr {$E * 0.16}]
+                uniaxialMaterial Steel01 12 60.0 [expr {$E * 2.13e-3}] 0.02
+                section Aggregator 1 12 Mz 11 P
+            } else {
+                rc_section 1 0.4 0.4 0.04 3 3.14e-4
+            }
             rc_section 2 0.3 0.5 0.04 3 2.01e-4
             if {$members eq "fibre"} {
                 beamIntegration Legendre 1 1 3
@@ -64,6 +74,10 @@ recorder Element -file $out/loads_force.out -time -precision 12 -ele 1 5 6 force
 if {$members ne "elastic"} {
     recorder Element -file $out/loads_local.out -time -precision 12 -ele 1 5 localForce
     recorder Element -file $out/loads_section.out -time -precision 12 -ele 5 section 1 force
+    if {$members eq "aggregator"} {
+        # declared Mz P: OpenSees writes the columns in that order
+        recorder Element -file $out/loads_column_section.out -time -precision 12 -ele 1 section 1 force
+    }
 }
 constraints Plain
 numberer Plain

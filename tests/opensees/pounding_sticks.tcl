@@ -1,7 +1,8 @@
 # Two single-storey sticks (T = 0.5 s and 1.0 s, 5 % Rayleigh damping in
 # their own springs) 10 mm apart, pounding through a zero-length gap under
 # the synthetic record. argv: the output directory and the gap material,
-# ElasticPPGap (elastic-plastic gap that stays damaged), ImpactMaterial
+# ElasticPPGap (elastic-plastic gap that stays damaged), ElasticPPGapK0 (the
+# same gap with -doRayleigh 1 under damping on the initial stiffness), ImpactMaterial
 # (Muthukumar-DesRoches bilinear contact), Hertzdamp, JankowskiImpact,
 # ViscoelasticGap, Viscous (a nonlinear damper between the two, no gap),
 # Parallel (half an ElasticPPGap beside half a ViscoelasticGap) or MinMax
@@ -58,6 +59,7 @@ switch -- $law {
         uniaxialMaterial Parallel 3 4 5 -factors 1.0 0.7
     }
     ElasticPPGapSigns { uniaxialMaterial ElasticPPGap 3 2.0e9 2.0e5 -0.01 }
+    ElasticPPGapK0 { uniaxialMaterial ElasticPPGap 3 2.0e9 -4.0e6 -0.01 0.1 damage }
     MinMax {
         uniaxialMaterial ImpactMaterial 4 2.0e9 6.0e8 -0.002 -0.01
         uniaxialMaterial MinMax 3 4 -min -0.014
@@ -77,7 +79,13 @@ switch -- $law {
     }
     default { error "pounding_sticks.tcl: no gap material '$law'" }
 }
-element zeroLength 3 2 4 -mat 3 -dir 1
+if {$law eq "ElasticPPGapK0"} {
+    # damping on the initial stiffness, the gap's too: an open gap's is 0, not E
+    element zeroLength 3 2 4 -mat 3 -dir 1 -doRayleigh 1
+    rayleigh 0.0 0.0 2.0e-3 0.0
+} else {
+    element zeroLength 3 2 4 -mat 3 -dir 1
+}
 set dt 0.002
 # bench/opensees/speed.py sets ::bench_steps for a longer run
 set n [expr {[info exists ::bench_steps] ? $::bench_steps : 4000}]

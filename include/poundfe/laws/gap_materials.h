@@ -47,7 +47,12 @@ namespace poundfe
   {
   public:
     ElasticPPGap(double E, double Fy, double gap, double eta, bool damage);
-    double initial_stiffness() const override { return E; }
+    /// 0 for a real gap (Fy and gap of one sign: open at strain 0), as
+    /// OpenSees's EPPGapMaterial::getInitialTangent; E otherwise.
+    double initial_stiffness() const override
+    {
+      return (Fy >= 0 && gap > 0) || (Fy < 0 && gap < 0) ? 0 : E;
+    }
 
   private:
     GapMaterialState respond(const GapMaterialState &from, double strain) const override;

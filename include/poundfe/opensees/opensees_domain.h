@@ -265,6 +265,9 @@ namespace poundfe
       {
         int    element = 0, node = 0;
         double mass = 0;
+        /// Its ground-motion load -m a_g enters the reactions (a truss's:
+        /// Truss::getResistingForce subtracts its theLoad).
+        bool load_in_reaction = false;
       };
       std::vector<LumpedMass> lumped_masses;
       double                                  time = 0; // committed

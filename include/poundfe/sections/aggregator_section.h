@@ -19,6 +19,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace poundfe
 {
@@ -51,6 +52,11 @@ namespace poundfe
     /// The law of resultant r; nullptr when it is elastic.
     const UniaxialLaw *law(unsigned int r) const { return laws[r].get(); }
 
+    /// The resultants in OpenSees's order of a SectionAggregator's codes
+    /// (its section force|deformation columns): the elastic ones first, as
+    /// its base section's, then those with laws in the order first given.
+    std::vector<unsigned int> response_order() const;
+
   private:
     /// The trial resultants and tangent from the laws' trial states.
     void gather();
@@ -58,6 +64,7 @@ namespace poundfe
     SectionVector                               rigidity;
     std::array<UniaxialLawFactory, 4>           factories;
     std::array<std::unique_ptr<UniaxialLaw>, 4> laws;
+    std::vector<unsigned int>                   given; // resultants with laws, in order
     SectionVector committed_deformation, trial_deformation, trial_resultant;
     SectionMatrix                               trial_tangent;
     int                                         failed = -1; // the resultant whose law refused
