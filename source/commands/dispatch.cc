@@ -217,6 +217,10 @@ namespace poundfe
       {
         return run_guarded(command, request, *input, err);
       }
+    catch (const SweepValueError &) // its origin named by the sweep
+      {
+        throw;
+      }
     catch (const InputError &e) // the model builder's, of an entry a --set gave
       {
         throw with_override_origin(e, request.overrides);

@@ -579,7 +579,8 @@ namespace poundfe
     /// which its relative file names are taken), read and checked.
     InputParameters
     read_parameter_input(const std::string &file, const std::string &directory, std::string text,
-                         const std::vector<ParameterOverride> &overrides)
+                         const std::vector<ParameterOverride> &overrides,
+                         const std::size_t                     n_named)
     {
       const std::string extension = parameter_file_extension(file);
       InputParameters   p;
@@ -667,7 +668,7 @@ namespace poundfe
         }
       catch (const InputError &e)
         {
-          throw with_override_origin(e, overrides);
+          throw with_override_origin(e, overrides, n_named);
         }
       return p;
     }
@@ -680,35 +681,50 @@ namespace poundfe
   }
 
   InputError
-  with_override_origin(const InputError &error, const std::vector<ParameterOverride> &overrides)
+  with_override_origin(const InputError &error, const std::vector<ParameterOverride> &overrides,
+                       const std::size_t n_named)
   {
     if (error.line() > 0 || error.parameter().empty())
       return error;
-    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
-      if (o->path.substr(0, o->path.find(':')) == error.parameter())
+    const auto entry = [](const std::string &path) { return path.substr(0, path.find(':')); };
+    for (std::size_t i = overrides.size(); i-- > 0;)
+      if (entry(overrides[i].path) == error.parameter())
         {
-          const std::string origin = override_origin(*o);
-          if (error.problem().rfind(origin, 0) == 0)
-            return error; // named already (a command's own reading of its file)
+          const std::string origin = override_origin(overrides[i]);
+          if (i >= n_named || error.problem().rfind(origin, 0) == 0)
+            return error; // a command's own override, or named already
           return InputError(error.file(), 0, error.parameter(), origin + error.problem());
         }
     return error;
   }
 
+  InputError
+  with_override_origin(const InputError &error, const std::vector<ParameterOverride> &overrides)
+  {
+    return with_override_origin(error, overrides, overrides.size());
+  }
+
   InputParameters
-  read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
+  read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides,
+                  const std::size_t n_named)
   {
     check_input_file(file, "parameter file");
     parameter_file_extension(file);
     return read_parameter_input(file, std::filesystem::path(file).parent_path().string(),
-                                read_input_text(file), overrides);
+                                read_input_text(file), overrides, n_named);
+  }
+
+  InputParameters
+  read_parameters(const std::string &file, const std::vector<ParameterOverride> &overrides)
+  {
+    return read_parameters(file, overrides, overrides.size());
   }
 
   InputParameters
   read_parameter_text(const std::string &name, const std::string &text,
                       const std::vector<ParameterOverride> &overrides)
   {
-    return read_parameter_input(name, "", text, overrides);
+    return read_parameter_input(name, "", text, overrides, overrides.size());
   }
 
   InputParameters

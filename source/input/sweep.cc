@@ -25,18 +25,13 @@ namespace poundfe
     overrides.insert(overrides.end(), more.begin(), more.end());
     try
       {
-        return read_parameters(input.file, overrides);
+        return read_parameters(input.file, overrides, input.overrides.size());
       }
     catch (const InputError &e) // say which value of the sweep it was
       {
-        // the swept value is an override of the reader's, not a --set
-        const std::string swept   = override_origin({parameter, format_value(value)});
-        const std::string problem = e.problem().rfind(swept, 0) == 0 ?
-                                      e.problem().substr(swept.size()) :
-                                      e.problem();
-        throw InputError(e.file(), e.line(), e.parameter(),
-                         "at " + section + " value " + parameter + " = " + format_value(value) +
-                           ": " + problem);
+        throw SweepValueError(e.file(), e.line(), e.parameter(),
+                              "at " + section + " value " + parameter + " = " +
+                                format_value(value) + ": " + e.problem());
       }
   }
 } // namespace poundfe

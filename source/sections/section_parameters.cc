@@ -196,6 +196,12 @@ namespace poundfe
           !(std::isnan(m.max_strain) || m.max_strain > 0))
         throw InputError("", 0, "", "material '" + m.name + "': min must be < 0 and max > 0");
       make_material(m.law); // its own checks, naming its parameter
+      // Elastic's own check takes a modulus of either sign; a fibre of
+      // negative modulus makes the section's stiffness indefinite
+      if (m.law.material == "Elastic")
+        for (const char *modulus : {"E", "Eneg"})
+          if (const auto given = m.law.values.find(modulus); given != m.law.values.end())
+            require_non_negative("Elastic", modulus, given->second);
       return m;
     }
 

@@ -15,7 +15,8 @@
 #     count of names that is neither one nor the groups', a rigidity entry
 #     (Group E) in a fibre mesh, a physical id the Group ids do not list, a
 #     distributed self-weight without a gravity analysis, a unit weight with
-#     the nodal self-weight, a unit weight beyond 1e150: exit 1, one line
+#     the nodal self-weight, a unit weight beyond 1e150, an Elastic fibre
+#     material of negative E or Eneg: exit 1, one line
 #     naming file, line and entry, nothing written (an entry a --set gave:
 #     naming the --set); floor loads of 1e200,
 #     whose norm overflows: the gravity analysis fails, exit 2;
@@ -225,6 +226,15 @@ expect 1 "mesh.prm: parameter 'Building 1/Group sections': --set 'Building 1/Gro
   run mesh.prm --output out --set "Building 1/Group sections=col, beam, col"
 expect 1 "mesh.prm: parameter 'Building 1/Group sections': --set 'Building 1/Group sections=col, girder': no section named 'girder'" \
   run mesh.prm --output out --set "Building 1/Group sections=col, girder"
+# a fibre of negative modulus: refused by the section's material list (the
+# Elastic law alone takes either sign), its parameter named, not a failed
+# eigensolution (exit 2)
+sed 's/el: Elastic E=3e10/el: Elastic E=-3e10/' mesh.prm > negative-modulus.prm
+cmp -s mesh.prm negative-modulus.prm && fail "negative-modulus.prm: the sed expression changed nothing"
+expect 1 "negative-modulus.prm:8: parameter 'Sections/Materials': E: Elastic: must be a number >= 0 (got -3e+10)" \
+  modal negative-modulus.prm --output out
+expect 1 "mesh.prm: parameter 'Sections/Materials': --set 'Sections/Materials=el: Elastic E=3e10 Eneg=-3e10': Eneg: Elastic: must be a number >= 0 (got -3e+10)" \
+  modal mesh.prm --output out --set "Sections/Materials=el: Elastic E=3e10 Eneg=-3e10"
 # floor loads whose norm overflows: the gravity analysis fails (exit 2)
 # instead of passing its convergence test with no iteration
 model "${mesh_entries}

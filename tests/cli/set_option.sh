@@ -11,6 +11,9 @@
 #     written in the file, with the closest declared names, a value out of range names the
 #     entry, a malformed --set and --set for a command that reads no file
 #     are refused: exit 1, one line, nothing written (tests/cli/expect.sh);
+#     Only the user's own --set is named, once: not bifurcation's end time
+#     or a sweep's value, which the command sets when it reads the file
+#     again (input/override_origin.h);
 #  4. the distributed-solver column (several ranks only, so not in Python's
 #     tests): montecarlo with petsc-mumps on 2 ranks refused, one message.
 #   set_option.sh POUNDFE SOURCE_DIR
@@ -91,6 +94,40 @@ expect 1 "--set needs Section/Entry=value, got 'Output/Plots'" \
 expect 1 "--set needs a value" run "$base" --set
 expect 1 "--set sets an entry of a parameter file, and 'template' reads none" \
   template frame --set "Output/Plots=false"
+
+# only the user's own --set is named, never an override a command adds when
+# it reads the file again: bifurcation's end time, a sweep's value. The
+# --set refused during a sweep is named, after the sweep's value.
+no_set() { # label: the last expect's message names no --set
+  grep -qF -- "--set '" stderr && fail "$1: names a --set: $(head -c 400 stderr)"
+}
+set_absent() { # label TEXT: the last expect's message does not contain TEXT
+  grep -qF -- "$2" stderr && fail "$1: names $2: $(head -c 400 stderr)"
+}
+sed -e 's/set End time  = 20/set End time = 0.04\n  set Maximum number of steps = 10/' \
+  "$source/input/linear-bifurcation.prm" > short-bifurcation.prm
+cmp -s "$source/input/linear-bifurcation.prm" short-bifurcation.prm &&
+  fail "short-bifurcation.prm: the sed expression changed nothing"
+expect 1 "parameter 'Time integration/End time': at Bifurcation value Nodal forces/Harmonic:6 = 5: needs" \
+  bifurcation short-bifurcation.prm --output out
+no_set "bifurcation without --set"
+expect 1 "parameter 'Time integration/End time': at Bifurcation value Nodal forces/Harmonic:6 = 5: needs" \
+  bifurcation "$source/input/linear-bifurcation.prm" --set "Time integration/End time=0.04" \
+  --set "Time integration/Maximum number of steps=10" --output out
+set_absent "bifurcation's own end time" "--set 'Time integration/End time"
+sweep_of() { # parameter values: the shear building swept
+  cat "$base"
+  printf 'subsection Sweep\n  set Parameter = %s\n  set Values = %s\nend\n' "$1" "$2"
+}
+sweep_of "Model/Gravity" "9.81, 0" > sweep-gravity.prm
+expect 1 "parameter 'Model/Gravity': at Sweep value Model/Gravity = 0: must be positive and finite, got 0" \
+  sweep sweep-gravity.prm --set "Model/Gravity=5" --output out
+no_set "a sweep's value refused"
+sweep_of "Building 1/Number of storeys" "3, 4" > sweep-storeys.prm
+expect 1 "parameter 'Building 1/Storey stiffnesses': at Sweep value Building 1/Number of storeys = 4: --set 'Building 1/Storey stiffnesses=5e6, 5e6, 5e6': needs 1 value or 4" \
+  sweep sweep-storeys.prm --set "Building 1/Storey stiffnesses=5e6, 5e6, 5e6" --output out
+no_set_twice=$(grep -o -- "--set '" stderr | wc -l)
+[ "$no_set_twice" -eq 1 ] || fail "a --set refused during a sweep named $no_set_twice times"
 
 # the distributed-solver column, which only a job of several ranks can meet
 # (Python runs one process): montecarlo on 2 ranks with petsc-mumps, refused
