@@ -115,24 +115,28 @@ namespace poundfe
       PendingSends(const PendingSends &) = delete;
       PendingSends &operator=(const PendingSends &) = delete;
 
-      /// Left by an exception with sends in flight: MPI may still read a
-      /// buffer freed here, so each is cancelled and then waited for, which
-      /// the standard makes a local call (it returns whether or not the
-      /// receiver ever posts its receive), before its buffer goes.
+      /// Left by an exception with sends in flight (the normal paths end in
+      /// wait_all): MPI may still read a buffer, and its receiver may never
+      /// take the message. Open MPI does not cancel a send (MPI_Cancel then
+      /// MPI_Wait blocks until the receiver takes it, forever if it never
+      /// does), so each request is freed, which returns at once and lets the
+      /// send complete or not, and its buffer is kept alive, leaked on
+      /// purpose: a few rows, once, on the way to an error exit.
       ~PendingSends()
       {
         int finalized = 0;
         MPI_Finalized(&finalized);
         if (finalized)
           return;
+        static std::deque<std::vector<double>> *const in_flight = new std::deque<std::vector<double>>;
         for (Pending &p : pending)
           {
             int completed = 0;
             MPI_Test(&p.request, &completed, MPI_STATUS_IGNORE);
             if (!completed)
               {
-                MPI_Cancel(&p.request);
-                MPI_Wait(&p.request, MPI_STATUS_IGNORE);
+                MPI_Request_free(&p.request);
+                in_flight->push_back(std::move(p.data)); // a moved vector keeps its buffer
               }
           }
       }

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 namespace poundfe
@@ -114,8 +115,9 @@ namespace poundfe
                         "Sample interval of a one-column text record. Unit: s.");
       prm.add_parameter("Target PGA", p.record_target_pga,
                         "Scale the record to this PGA (0: keep it); Scale factor then "
-                        "multiplies it: the PGA is Target PGA x Scale factor. At most 10 g (twice the "
-                        "largest ground acceleration recorded). Unit: g.");
+                        "multiplies it: the PGA is Target PGA x Scale factor. At most 10 g, and so is "
+                        "Target PGA x Scale factor (more than twice the largest ground acceleration "
+                        "recorded). Unit: g.");
       prm.leave_subsection();
     }
   } // namespace
@@ -180,8 +182,10 @@ namespace poundfe
     prm.add_parameter("Target PGA", target_pga,
                       "Expected PGA (Peak factor x the stationary standard deviation) that "
                       "sets S0 when S0 and D are 0; Scale factor then multiplies the sample: "
-                      "the PGA is Target PGA x Scale factor, in expectation. At most 10 g (twice the "
-                      "largest ground acceleration recorded). Unit: g.");
+                      "the PGA is Target PGA x Scale factor, in expectation. At most 10 g, and so is "
+                      "Target PGA x Scale factor, times Intensity ratio or Vertical ratio where one "
+                      "exceeds 1 (more than twice the largest ground acceleration recorded). "
+                      "Unit: g.");
     prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation. Unit: dimensionless.");
     prm.add_parameter("Duration", duration, "Length of the sample. Unit: s.");
     prm.add_parameter("Sample interval", sample_interval,
@@ -319,6 +323,44 @@ namespace poundfe
                    ground_motion_type_names().name(type) + "'");
   }
 
+  namespace
+  {
+    /// The peak a target PGA asks for, times Scale factor and the largest
+    /// ratio of a generated component to the first, is bounded as the
+    /// target PGA alone is: a scale factor of 1000 on 10 g ran, and of
+    /// 1e200 gave an inf floor force. Only the input is checked: IDA, MSA
+    /// and fragility scale each run themselves, past this check.
+    void
+    check_scaled_peak(const GroundMotionParameters &g, const InputFile &input)
+    {
+      const std::string gm     = "Ground motion/";
+      const bool        record = g.type == GroundMotionType::record;
+      const bool        set_by_target =
+        record ? g.record_target_pga > 0 :
+                 g.is_stochastic() && g.spectral_intensity == 0 && g.noise_intensity_d == 0;
+      if (!set_by_target)
+        return;
+      std::string product = "Target PGA x Scale factor", blamed = gm + "Scale factor";
+      double      ratio   = 1;
+      for (const auto &[entry, value, used] :
+           {std::tuple{"Intensity ratio", g.intensity_ratio, g.n_components >= 2},
+            std::tuple{"Vertical ratio", g.vertical_ratio, g.has_vertical()}})
+        if (!record && used && value > ratio)
+          {
+            ratio   = value;
+            product = std::string("Target PGA x Scale factor x ") + entry;
+            if (g.scale_factor == 1)
+              blamed = gm + "Stochastic/" + entry;
+          }
+      const double peak = (record ? g.record_target_pga : g.target_pga) * std::abs(g.scale_factor) * ratio;
+      if (!(peak <= largest_ground_acceleration_g))
+        input.fail(blamed, product + " = " + number_text(peak) + " g, the motion's peak ground " +
+                             "acceleration" + (record ? "" : " in expectation") + ": at most " +
+                             number_text(largest_ground_acceleration_g) + " g (" +
+                             largest_ground_acceleration_why + ")");
+    }
+  } // namespace
+
   void
   GroundMotionParameters::check(const InputFile &input, const double time_step) const
   {
@@ -373,6 +415,7 @@ namespace poundfe
                      "needs Shinozuka alpha < Shinozuka beta, got alpha = " +
                        number_text(shinozuka_alpha) + ", beta = " + number_text(shinozuka_beta));
       }
+    check_scaled_peak(*this, input);
   }
 
   std::vector<NamedInputFile>

@@ -72,7 +72,7 @@ namespace poundfe
                ground_type_names());
     prm.add_parameter("Design ground acceleration", design_ground_acceleration,
                       "a_g of the target on type A ground (EN 1998-1: gamma_I a_gR), at "
-                      "most 10 g (twice the largest ground acceleration recorded). Unit: g.",
+                      "most 10 g (more than twice the largest ground acceleration recorded). Unit: g.",
                       Patterns::Double(0));
     prm.add_parameter("Matching period", matching_period,
                       "Period at which `spectrum --realizations N` matches the ensemble's mean "

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
 #include <memory>
 #include <utility>
 
@@ -74,9 +75,31 @@ namespace poundfe
       for (const auto &[choice, id] : ids)
         if (choice == kind)
           return id;
-      Assert(false, dealii::ExcMessage("a solver choice without its Siconos solver"));
-      return ids[0].second;
+      // thrown in every build: a Release build must not run another solver
+      // than the one chosen (the static_asserts below cannot see a choice
+      // added after the last one)
+      AssertThrow(false, dealii::ExcMessage("a solver choice without its Siconos solver"));
+      return -1;
     }
+
+    /// Whether row i of `ids` is the choice numbered i: with the count of
+    /// rows checked against the last choice below, every choice declared so
+    /// far has its row.
+    template <typename Kind, std::size_t n>
+    constexpr bool
+    in_choice_order(const std::pair<Kind, int> (&ids)[n])
+    {
+      for (std::size_t i = 0; i < n; ++i)
+        if (ids[i].first != static_cast<Kind>(i))
+          return false;
+      return true;
+    }
+    static_assert(in_choice_order(lcp_solver_ids) &&
+                    std::size(lcp_solver_ids) == std::size_t(LcpSolverKind::newton_fb) + 1,
+                  "lcp_solver_ids: one row for each LcpSolverKind, in order");
+    static_assert(in_choice_order(friction_solver_ids) &&
+                    std::size(friction_solver_ids) == std::size_t(FrictionSolverKind::enumeration) + 1,
+                  "friction_solver_ids: one row for each FrictionSolverKind, in order");
 
     int
     siconos_solver_id(const LcpSolverKind kind)

@@ -420,7 +420,7 @@ namespace poundfe
                  "one per hinge group");
           for (const double m_y : b.hinge_yield_moments) // 1e200 came out as a NaN energy
             input.at_most(s + "Hinges/Yield moment", m_y, largest_model_value, "N m",
-                          "the largest force of a model");
+                          "the largest value of a model");
           input.list(s + "Hinges/Yield rotation", b.hinge_yield_rotations, n_groups, true,
                  "one per hinge group");
           input.list(s + "Hinges/Stiffness", b.hinge_stiffnesses, n_groups, true,

@@ -144,7 +144,7 @@ echo "ok   bad input: $(cat "$work/stderr")"
 # group leaves unsynced survive a killed process (they are written at once).
 # The grouped syncs run on a thread of their own (append_file.h): of the
 # journal's syncs the main thread (its id is the process's, execve's line)
-# makes only the last, so no realization waits on the disk.
+# makes at most one, the last, so no realization waits on the disk.
 if command -v strace > /dev/null; then
   sed -e 's/set Realizations   = 8/set Realizations   = 200/' -e 's/set Duration    = 8/set Duration    = 0.5/' \
     "$input" > "$work/many.prm"
@@ -154,7 +154,11 @@ if command -v strace > /dev/null; then
   main=$(awk '/execve/ { print $1; exit }' "$work/syncs")
   journal_syncs=$(grep -c 'fdatasync([0-9]*<[^>]*realizations.csv>' "$work/syncs" || true)
   main_syncs=$(grep 'fdatasync([0-9]*<[^>]*realizations.csv>' "$work/syncs" | awk -v m="$main" '$1 == m' | wc -l)
-  [ "$journal_syncs" -ge 2 ] || fail "journal: $journal_syncs syncs of realizations.csv (a group's and the end's at least)"
+  # at least the end's sync; a group's comes only after half a second of
+  # rows, which a fast machine may not take (then the check below is met
+  # whichever thread syncs, but with a sync per group on the main thread,
+  # as before, any run of two syncs or more fails it)
+  [ "$journal_syncs" -ge 1 ] || fail "journal: never synced (the end's sync at least)"
   [ "$main_syncs" -le 1 ] || fail "journal: $main_syncs of its $journal_syncs syncs on the main thread (at most the last)"
   rows=$(($(wc -l < "$work/many/realizations.csv") - 1))
   bound=$(python3 -c "import json; print(int(2 * json.load(open('$work/many/summary.json'))['wall_time_s']) + 5)")

@@ -13,7 +13,7 @@ namespace poundfe
   inline constexpr double largest_ground_acceleration_g = 10;
   /// Why, for the message of a value beyond it.
   inline constexpr const char *largest_ground_acceleration_why =
-    "twice the largest ground acceleration recorded";
+    "more than twice the largest ground acceleration recorded";
 } // namespace poundfe
 
 #endif
