@@ -558,19 +558,22 @@ namespace poundfe
     load_end.resize(n);
     load(t1, load_end);
     find_active_contacts();
-    unsigned int iterations = 0;
+    // the step's iterations count both attempts, as stats.iterations does
+    const unsigned long iterations_before = stats.iterations;
     try
       {
-        iterations = solve_step(t1, false);
+        solve_step(t1, false);
       }
     catch (const NumericalError &)
       {
         // a kept tangent can leave the impulses and the hinges' branches
         // cycling: the step again with J at every iterate, as full Newton
-        refactor   = true;
-        iterations = solve_step(t1, true);
+        ++stats.full_newton_retries;
+        refactor = true;
+        solve_step(t1, true);
       }
-    stats.max_iterations = std::max(stats.max_iterations, iterations);
+    stats.max_iterations = std::max<unsigned int>(stats.max_iterations,
+                                                   stats.iterations - iterations_before);
     accept_step(t1);
   }
 

@@ -629,7 +629,6 @@ namespace
     Vector                      u, v;
     std::vector<ContactImpulse> impulses;
     double                      peak = 0;
-    bool                        dense = false;
   };
 
   FramesRun
