@@ -114,8 +114,8 @@ namespace poundfe
     template <unsigned int m>
     unsigned int
     sum_fibres(const std::vector<Fibre>                       &fibres,
-               const std::vector<std::unique_ptr<UniaxialLaw>> &laws, const double y_ref, const double z_ref, const SectionVector &e, SectionVector &s,
-               SectionMatrix &k)
+               const std::vector<std::unique_ptr<UniaxialLaw>> &laws, const double y_ref,
+               const double z_ref, const SectionVector &e, SectionVector &s, SectionMatrix &k)
     {
       double       sums[m] = {}, stiffness_sums[m][m] = {};
       const double e0 = e(0), e1 = e(1), e2 = m == 3 ? e(2) : 0.0;
