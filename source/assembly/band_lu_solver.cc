@@ -21,6 +21,8 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <vector>
 
 extern "C"
@@ -57,15 +59,26 @@ namespace poundfe
       return std::vector<int>(new_index.begin(), new_index.end());
     }
 
+    /// The largest band storage band-lu takes (2 GiB): beyond it the band is
+    /// the wrong format (umfpack stores only the fill), and LAPACK's 32-bit
+    /// indices stay far from overflow below it.
+    constexpr std::size_t max_band_bytes = std::size_t(1) << 31;
+
     class BandLuSolver : public LinearSolver
     {
     public:
       void
       analyze(const SparseMatrix &matrix) override
       {
-        n          = matrix.rows();
-        new_index  = cuthill_mckee_numbering(matrix);
+        n     = matrix.rows();
         lower = upper = 0;
+        leading       = 1;
+        new_index.clear();
+        place.clear();
+        band.clear();
+        if (n == 0)
+          return;
+        new_index = cuthill_mckee_numbering(matrix);
         for (int j = 0; j < n; ++j)
           for (SparseMatrix::InnerIterator it(matrix, j); it; ++it)
             {
@@ -76,13 +89,14 @@ namespace poundfe
         // LAPACK's layout: A(i, j) at ab[(kl + ku + i - j) + j ldab], with
         // kl rows above for the fill of the row interchanges
         leading = 2 * lower + upper + 1;
-        place.clear();
+        check_band_size();
         place.reserve(matrix.nonZeros());
         for (int j = 0; j < n; ++j)
           for (SparseMatrix::InnerIterator it(matrix, j); it; ++it)
             {
               const int row = new_index[it.row()], column = new_index[j];
-              place.push_back(lower + upper + row - column + column * leading);
+              place.push_back(static_cast<std::size_t>(lower + upper + row - column) +
+                              static_cast<std::size_t>(column) * leading);
             }
         band.assign(static_cast<std::size_t>(leading) * n, 0.0);
         pivots.assign(n, 0);
@@ -94,18 +108,35 @@ namespace poundfe
         Assert(static_cast<std::size_t>(matrix.nonZeros()) == place.size(),
                dealii::ExcMessage("factorize a matrix of the analysed pattern"));
         std::fill(band.begin(), band.end(), 0.0);
+        if (n == 0)
+          return;
         const double *values = matrix.valuePtr();
+        bool          finite = true;
         for (std::size_t k = 0; k < place.size(); ++k)
-          band[place[k]] += values[k];
+          {
+            band[place[k]] += values[k];
+            finite = finite && std::isfinite(values[k]);
+          }
+        // dgbtrf reports only exact zero pivots: a NaN or inf entry, or a
+        // factor that overflowed, is refused as UMFPACK refuses it
+        if (!finite)
+          throw_singular();
         int info = 0;
         dgbtrf_(&n, &n, &lower, &upper, band.data(), &leading, pivots.data(), &info);
         if (info > 0)
-          throw NumericalError("band LU: the effective matrix is singular");
+          throw_singular();
         AssertThrow(info == 0, dealii::ExcMessage("dgbtrf refused its arguments"));
+        // U's diagonal: row kl + ku of the band
+        for (int j = 0; j < n; ++j)
+          if (!std::isfinite(band[lower + upper + static_cast<std::size_t>(j) * leading]))
+            throw_singular();
       }
       void
       solve(const Vector &b, Vector &x) override
       {
+        x.resize(n);
+        if (n == 0)
+          return;
         for (int i = 0; i < n; ++i)
           buffer[new_index[i]] = b[i];
         const int one = 1;
@@ -113,7 +144,6 @@ namespace poundfe
         dgbtrs_("N", &n, &lower, &upper, &one, band.data(), &leading, pivots.data(),
                 buffer.data(), &n, &info, 1);
         AssertThrow(info == 0, dealii::ExcMessage("dgbtrs refused its arguments"));
-        x.resize(n);
         for (int i = 0; i < n; ++i)
           x[i] = buffer[new_index[i]];
       }
@@ -124,12 +154,31 @@ namespace poundfe
       }
 
     private:
-      int                 n = 0, lower = 0, upper = 0, leading = 1;
-      std::vector<int>    new_index;   // equation -> its place in the band
-      std::vector<int>    place;       // stored entry k -> its index in `band`
-      std::vector<double> band;        // the factors after factorize()
-      std::vector<int>    pivots;
-      Vector              buffer;
+      [[noreturn]] static void
+      throw_singular()
+      {
+        throw NumericalError("band LU: the effective matrix is singular");
+      }
+
+      /// Refuses a band of more than max_band_bytes before it is allocated.
+      void
+      check_band_size() const
+      {
+        const double bytes = double(leading) * n * sizeof(double);
+        if (bytes > double(max_band_bytes))
+          throw NumericalError(
+            "band-lu: the band of " + std::to_string(n) + " equations, bandwidths " +
+            std::to_string(lower) + " and " + std::to_string(upper) + ", would take " +
+            std::to_string(bytes / double(std::size_t(1) << 30)) +
+            " GiB, more than its limit of 2 GiB; set Linear solver = umfpack");
+      }
+
+      int                      n = 0, lower = 0, upper = 0, leading = 1;
+      std::vector<int>         new_index; // equation -> its place in the band
+      std::vector<std::size_t> place;     // stored entry k -> its index in `band`
+      std::vector<double>      band;      // the factors after factorize()
+      std::vector<int>         pivots;
+      Vector                   buffer;
     };
   } // namespace
 

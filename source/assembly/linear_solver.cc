@@ -84,8 +84,8 @@ namespace poundfe
   std::vector<std::string>
   linear_solver_names()
   {
-    return {"eigen-ldlt", "umfpack", "band-lu", "petsc", "trilinos", "petsc-mumps", "petsc-cg-boomeramg",
-            "trilinos-cg-ml"};
+    return {"eigen-ldlt", "umfpack", "band-lu", "petsc", "trilinos", "petsc-mumps",
+            "petsc-cg-boomeramg", "trilinos-cg-ml"};
   }
 
   bool

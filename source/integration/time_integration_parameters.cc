@@ -360,8 +360,8 @@ namespace poundfe
                        "the tangent is assembled (refactorize, or auto)");
         if (linear_solver != "eigen-ldlt" && linear_solver != "umfpack")
           input.fail("Time integration/Linear solver",
-                     linear_solver + " is not a one-process solver: with Partition = buildings "
-                     "each rank factorises its own block with eigen-ldlt or umfpack");
+                     "with Partition = buildings each rank factorises its own block with "
+                     "eigen-ldlt or umfpack only, not " + linear_solver);
       }
   }
 

@@ -68,7 +68,7 @@ namespace poundfe
     const double d_strain = strain - from.strain;
     if (from.direction == 0 && d_strain == 0)
       return from;
-    Steel02State s = from;
+    Steel02State s     = from;
     s.strain           = strain;
     if (s.direction == 0) // first loading: towards (±eps_y, ±fy)
       {

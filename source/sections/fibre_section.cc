@@ -93,6 +93,19 @@ namespace poundfe
       return std::make_shared<const FibreGeometry>(geometry);
     }
 
+    /// a_i . e = e0 - (y - y_ref) e1 [+ (z - z_ref) e2 in space]: fibre f's
+    /// strain; the one formula of FibreSection::strain_at and sum_fibres,
+    /// so both give the same bits.
+    inline double
+    strain_of(const Fibre &f, const double y_ref, const double z_ref, const double e0,
+              const double e1, const double e2, const bool in_space)
+    {
+      double strain = e0 - (f.y - y_ref) * e1;
+      if (in_space)
+        strain += (f.z - z_ref) * e2;
+      return strain;
+    }
+
     /// Every fibre's trial state at e and the sums s = sum sigma_i A_i a_i,
     /// k_s = sum E_t,i A_i a_i a_i^T of the m = 2 (plane) or 3 (N, Mz, My in
     /// space) resultants the fibres carry, into the first m entries of s, k;
@@ -100,20 +113,17 @@ namespace poundfe
     /// fibres. m fixed at compile time: the sums unrolled, in registers.
     template <unsigned int m>
     unsigned int
-    sum_fibres(const std::vector<Fibre> &fibres, const std::vector<std::unique_ptr<UniaxialLaw>> &laws,
-               const double y_ref, const double z_ref, const SectionVector &e, SectionVector &s,
-               SectionMatrix &k)
+    sum_fibres(const std::vector<Fibre>                       &fibres,
+               const std::vector<std::unique_ptr<UniaxialLaw>> &laws, const double y_ref,
+               const double z_ref, const SectionVector &e, SectionVector &s, SectionMatrix &k)
     {
       double       sums[m] = {}, stiffness_sums[m][m] = {};
       const double e0 = e(0), e1 = e(1), e2 = m == 3 ? e(2) : 0.0;
       for (unsigned int i = 0; i < laws.size(); ++i)
         {
           const Fibre &f = fibres[i];
-          // a_i . e, as FibreSection::strain_at
           const double a[3]   = {1, -(f.y - y_ref), f.z - z_ref};
-          double       strain = e0 - (f.y - y_ref) * e1;
-          if constexpr (m == 3)
-            strain += a[2] * e2;
+          const double strain = strain_of(f, y_ref, z_ref, e0, e1, e2, m == 3);
           UniaxialLaw &law = *laws[i];
           if (!law.set_trial(strain, 0))
             return i;
@@ -165,11 +175,7 @@ namespace poundfe
   double
   FibreSection::strain_at(const unsigned int i, const SectionVector &e) const
   {
-    const Fibre &f      = fibres->fibres[i];
-    double       strain = e(0) - (f.y - y_ref) * e(1);
-    if (n == 4)
-      strain += (f.z - z_ref) * e(2);
-    return strain;
+    return strain_of(fibres->fibres[i], y_ref, z_ref, e(0), e(1), n == 4 ? e(2) : 0.0, n == 4);
   }
 
   double
@@ -186,8 +192,9 @@ namespace poundfe
     trial.resultant.setZero();
     trial.tangent.setZero();
     const unsigned int refused =
-      n == 4 ? sum_fibres<3>(fibres->fibres, laws, y_ref, z_ref, e, trial.resultant, trial.tangent) :
-               sum_fibres<2>(fibres->fibres, laws, y_ref, z_ref, e, trial.resultant, trial.tangent);
+      n == 4 ?
+        sum_fibres<3>(fibres->fibres, laws, y_ref, z_ref, e, trial.resultant, trial.tangent) :
+        sum_fibres<2>(fibres->fibres, laws, y_ref, z_ref, e, trial.resultant, trial.tangent);
     if (refused < laws.size())
       {
         failed_fibre = refused;

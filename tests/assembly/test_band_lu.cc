@@ -6,7 +6,12 @@
 // 1e-12 of the solution's norm: both factorisations are backward stable and
 // the matrices well conditioned (condition numbers below 1e2), so they agree
 // to a few hundred round-offs. A refactorisation with other values of the
-// same pattern solves that matrix; a singular one is a NumericalError.
+// same pattern solves that matrix; a singular one is a NumericalError, and
+// so is one with a NaN or inf entry or whose factor overflows (LAPACK
+// reports only exact zero pivots), as UMFPACK refuses them. A 0 x 0 matrix
+// gives the empty solution; a band beyond band-lu's 2 GiB limit (an arrow
+// matrix of 20 000 equations: bandwidths about n, 9.6 GB of band) is
+// refused before it is allocated.
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 
@@ -15,6 +20,7 @@
 #include <Eigen/SparseLU>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -88,4 +94,61 @@ BOOST_AUTO_TEST_CASE(band_lu_refuses_a_singular_matrix)
   solver->analyze(A);
   A *= 0.0; // the pattern kept, every value zero
   BOOST_CHECK_THROW(solver->factorize(A), NumericalError);
+}
+
+BOOST_AUTO_TEST_CASE(band_lu_refuses_a_non_finite_matrix)
+{
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::infinity()})
+    {
+      SparseMatrix A      = shuffled_chain(20, 1.0);
+      auto         solver = create_linear_solver("band-lu");
+      solver->analyze_and_factorize(A);
+      A.coeffRef(7, 7) = bad;
+      BOOST_CHECK_THROW(solver->factorize(A), NumericalError);
+    }
+  // finite entries, a factor that overflows: with the row interchange
+  // (|1| = |-1|, the first row kept) U(1,1) = 1e308 + 1e308 = inf
+  SparseMatrix A(2, 2);
+  A.insert(0, 0) = 1.0;
+  A.insert(0, 1) = 1e308;
+  A.insert(1, 0) = -1.0;
+  A.insert(1, 1) = 1e308;
+  A.makeCompressed();
+  auto solver = create_linear_solver("band-lu");
+  solver->analyze(A);
+  BOOST_CHECK_THROW(solver->factorize(A), NumericalError);
+}
+
+BOOST_AUTO_TEST_CASE(band_lu_solves_an_empty_matrix)
+{
+  SparseMatrix A(0, 0);
+  A.makeCompressed();
+  auto solver = create_linear_solver("band-lu");
+  solver->analyze_and_factorize(A);
+  Vector x = Vector::Ones(3);
+  solver->solve(Vector(0), x);
+  BOOST_TEST(x.size() == 0);
+}
+
+BOOST_AUTO_TEST_CASE(band_lu_refuses_a_band_beyond_its_limit)
+{
+  // an arrow: equation 0 coupled to every other; any numbering leaves a
+  // bandwidth of about n / 2 on each side (Cuthill-McKee's about n)
+  const int                           n = 20000;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i)
+    {
+      t.emplace_back(i, i, 4.0);
+      if (i > 0)
+        {
+          t.emplace_back(0, i, 1.0);
+          t.emplace_back(i, 0, -1.0);
+        }
+    }
+  SparseMatrix A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  auto solver = create_linear_solver("band-lu");
+  BOOST_CHECK_THROW(solver->analyze(A), NumericalError);
 }
