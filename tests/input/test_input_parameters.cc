@@ -38,7 +38,7 @@ BOOST_AUTO_TEST_CASE(help_lists_the_allowed_values)
        {"Allowed: none, modes, coefficients, modal, bands.", "Allowed: fixed, pinned.",
         "Allowed: kanai-tajimi, clough-penzien, white-noise, record, none.",
         "Allowed: none, jennings, saragoni-hart, shinozuka-sato.", "Allowed: g, m/s^2.",
-        "Allowed: eigen-ldlt, umfpack, petsc, trilinos, petsc-mumps, petsc-cg-boomeramg, "
+        "Allowed: eigen-ldlt, umfpack, band-lu, petsc, trilinos, petsc-mumps, petsc-cg-boomeramg, "
         "trilinos-cg-ml.",
         "Allowed: peak drift ratio, peak roof displacement, peak contact force, limit state.",
         "Allowed: auto, woodbury, refactorize, hybrid.", "up to a total rank of Woodbury columns"})
