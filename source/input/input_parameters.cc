@@ -677,7 +677,7 @@ namespace poundfe
   std::string
   override_origin(const ParameterOverride &o)
   {
-    return "--set '" + o.path + "=" + o.value + "': ";
+    return " (--set '" + o.path + "=" + o.value + "')";
   }
 
   InputError
@@ -691,9 +691,9 @@ namespace poundfe
       if (entry(overrides[i].path) == error.parameter())
         {
           const std::string origin = override_origin(overrides[i]);
-          if (i >= n_named || error.problem().rfind(origin, 0) == 0)
+          if (i >= n_named || error.problem().find(origin) != std::string::npos)
             return error; // a command's own override, or named already
-          return InputError(error.file(), 0, error.parameter(), origin + error.problem());
+          return InputError(error.file(), 0, error.parameter(), error.problem() + origin);
         }
     return error;
   }

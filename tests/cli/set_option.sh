@@ -124,7 +124,7 @@ expect 1 "parameter 'Model/Gravity': at Sweep value Model/Gravity = 0: must be p
   sweep sweep-gravity.prm --set "Model/Gravity=5" --output out
 no_set "a sweep's value refused"
 sweep_of "Building 1/Number of storeys" "3, 4" > sweep-storeys.prm
-expect 1 "parameter 'Building 1/Storey stiffnesses': at Sweep value Building 1/Number of storeys = 4: --set 'Building 1/Storey stiffnesses=5e6, 5e6, 5e6': needs 1 value or 4" \
+expect 1 "parameter 'Building 1/Storey stiffnesses': at Sweep value Building 1/Number of storeys = 4: needs 1 value or 4" \
   sweep sweep-storeys.prm --set "Building 1/Storey stiffnesses=5e6, 5e6, 5e6" --output out
 no_set_twice=$(grep -o -- "--set '" stderr | wc -l)
 [ "$no_set_twice" -eq 1 ] || fail "a --set refused during a sweep named $no_set_twice times"

@@ -67,7 +67,7 @@ expect 1 "hinges-frame.prm:3: parameter 'Building 1/Member element': has no effe
 printf '{ "Building 1": { "Type": "shear", "Number of storeys": "2", "Floor masses": "1000",\n  "Storey stiffnesses": "5e6", "Column E": "3e10" } }\n' > shear.json
 expect 1 "shear.json: parameter 'Building 1/Column E': has no effect on a 2D shear building" run shear.json --output out
 shear '' > plain.prm
-expect 1 "plain.prm: parameter 'Building 1/Plan/Rotation': --set 'Building 1/Plan/Rotation=30': has no effect on a 2D shear building" run plain.prm --output out --set "Building 1/Plan/Rotation=30"
+expect 1 "plain.prm: parameter 'Building 1/Plan/Rotation': has no effect on a 2D shear building" run plain.prm --output out --set "Building 1/Plan/Rotation=30"
 # ... and the same entries run where they apply: a default never counts
 expect 0 "results in out" run plain.prm --output out
 # warned: Separations when every building after the first has a Position

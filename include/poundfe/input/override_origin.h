@@ -1,8 +1,8 @@
 // Where a refused entry came from when no line of the file holds it: the
 // override that set it (--set on the command line, overrides= in Python),
-// named before the problem, e.g.
-//   frame.prm: parameter 'Building 1/Group sections': --set 'Building
-//   1/Group sections=col, beam': has 2 names ...
+// named after the problem, e.g.
+//   frame.prm: parameter 'Building 1/Group sections': has 2 names ...
+//   (--set 'Building 1/Group sections=col, beam')
 // The reader applies it to the checks that follow the parsing
 // (read_parameters), the dispatcher to the refusals of a command's run (the
 // model builder's), so that the command line and Python say the same. Only
@@ -23,14 +23,14 @@ namespace poundfe
   struct InputParameters;
   struct ParameterOverride;
 
-  /// "--set 'Section/Entry=value': ", what a refusal of the entry `o` set
-  /// starts its problem with.
+  /// " (--set 'Section/Entry=value')", what a refusal of the entry `o` set
+  /// ends its problem with.
   std::string override_origin(const ParameterOverride &o);
 
-  /// `error` with its problem led by the last override of its entry (a
+  /// `error` with its problem followed by the last override of its entry (a
   /// field override "Section/Entry:k" counts as its entry), when it has no
   /// line, that override is one of the first `n_named` (the user's; the
-  /// others a command's own) and the problem does not start with it yet;
+  /// others a command's own) and the problem does not name it yet;
   /// otherwise `error` itself.
   InputError with_override_origin(const InputError                     &error,
                                   const std::vector<ParameterOverride> &overrides,
