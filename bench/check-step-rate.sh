@@ -10,6 +10,10 @@
 # -b  the benchmark binary (default build/poundfe-bench)
 # -t  exit 1 when a figure fell by more than PERCENT below the recorded one
 #     (default: never; the table is printed either way)
+# A model's line may carry two more figures, off and csv of the baseline
+# build named on the table's "# baseline:" line (run alternately with the
+# recorded ones): each row then also gives today's figure as a multiple of
+# the baseline's.
 # Run from the repository root, on a Release build.
 set -eu
 repeats=5 bench=build/poundfe-bench threshold=
@@ -28,17 +32,26 @@ table=bench/step-rate.txt
 before=$(cut -d' ' -f1-3 /proc/loadavg)
 today=$("$bench" --step-rate "$repeats" "$@")
 after=$(cut -d' ' -f1-3 /proc/loadavg)
-sed -n 's/^# recorded: /recorded: /p' "$table"
+sed -n 's/^# recorded: /recorded: /p; s/^# baseline: /baseline: /p' "$table"
 echo "today: $(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u '+%Y-%m-%d %H:%M UTC'), load average $before before, $after after"
 # today's lines are "step-rate MODEL CASE STEPS/S"; the table's
-# "MODEL INPUT OFF CSV"
+# "MODEL INPUT OFF CSV [BASELINE_OFF BASELINE_CSV]"
 echo "$today" | awk -v threshold="$threshold" '
-  NR == FNR { if ($0 !~ /^#/ && NF >= 4) { recorded[$1, "off"] = $3; recorded[$1, "csv"] = $4 }; next }
+  NR == FNR {
+    if ($0 !~ /^#/ && NF >= 4) {
+      recorded[$1, "off"] = $3; recorded[$1, "csv"] = $4
+      if (NF >= 6) { baseline[$1, "off"] = $5; baseline[$1, "csv"] = $6 }
+    }
+    next
+  }
   $1 == "step-rate" {
     was = recorded[$2, $3]
     if (was > 0) {
       change = 100 * ($4 - was) / was
-      printf "%-22s %-4s recorded %9.0f  today %9.0f  %+6.1f %%\n", $2, $3, was, $4, change
+      printf "%-22s %-4s recorded %9.0f  today %9.0f  %+6.1f %%", $2, $3, was, $4, change
+      if (baseline[$2, $3] > 0)
+        printf "  %.2fx baseline", $4 / baseline[$2, $3]
+      printf "\n"
       if (threshold != "" && change < -threshold) fell = 1
     } else
       printf "%-22s %-4s recorded         -  today %9.0f\n", $2, $3, $4

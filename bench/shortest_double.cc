@@ -1,14 +1,22 @@
-// The shortest round-trip text of a double, three ways, on the same numbers:
+// The shortest round-trip text of a double, four ways, on the same numbers:
 // libstdc++'s std::to_chars(double) (Ryu; what the CSV writers use,
 // output/number_text.h), libfmt's fmt::format_to("{}") (Dragonbox, Jeon 2020,
 // with fmt's own choice of fixed or exponent form) and libfmt's Dragonbox
 // digits laid out by std::to_chars's rule (C++17 [charconv.to.chars]: the
 // fewer characters of plain and scientific, plain on a tie; exponents of at
 // least two digits), which is what the CSV writer would have to do to keep
-// every byte of its files. It counts the texts that differ from
-// std::to_chars's and times each way, best of the repeats.
+// every byte of its files, and poundfe::shortest_text (output/shortest_text.h:
+// the same rule with the copies in fixed-size blocks), which the CSV writers
+// use. It counts the texts that differ from std::to_chars's and times each
+// way, best of the repeats.
 //
-//   build/poundfe-bench-shortest [repeats [to_chars|fmt|dragonbox|digits]]
+//   build/poundfe-bench-shortest [repeats [to_chars|fmt|dragonbox|digits|poundfe]]
+//   build/poundfe-bench-shortest --check N
+//
+// --check compares poundfe::shortest_text's text with std::to_chars's on N
+// doubles of random bits (every exponent, subnormals, NaNs and infinities)
+// and on edge values (zeros, powers of 2 and 10 and their neighbours, the
+// integers around 2^53, the limits), and exits 1 on the first difference.
 //
 // With a way named, it only times that one (for valgrind --tool=callgrind:
 // the inclusive count of best_ns_per_number over the numbers is the
@@ -17,6 +25,8 @@
 // The numbers: the times of a run's rows (i * 5e-4: short texts), responses
 // (sums of sines with 17 significant digits) and values of every magnitude
 // from 1e-12 to 1e6, both signs, and zeros, as in a run's CSV files.
+#include <poundfe/output/shortest_text.h>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -27,6 +37,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -135,6 +146,83 @@ namespace
     return fmt::format_to(out, "{}", x);
   }
 
+  char *
+  with_poundfe(char *out, const double x)
+  {
+    return poundfe::shortest_text(out, x);
+  }
+
+  /// The edge values of --check: zeros, the limits, powers of 2 and 10 and
+  /// the doubles next to them, integers around 2^53 and 10^15..10^17.
+  std::vector<double>
+  edge_numbers()
+  {
+    std::vector<double> x{0.0,
+                          std::numeric_limits<double>::denorm_min(),
+                          std::numeric_limits<double>::min(),
+                          std::numeric_limits<double>::max(),
+                          std::numeric_limits<double>::epsilon(),
+                          std::numeric_limits<double>::infinity(),
+                          std::numeric_limits<double>::quiet_NaN()};
+    for (int p = -1074; p <= 1023; ++p)
+      x.push_back(std::ldexp(1.0, p));
+    for (int p = -324; p <= 308; ++p)
+      x.push_back(std::strtod(("1e" + std::to_string(p)).c_str(), nullptr));
+    for (double base : {std::ldexp(1.0, 53), 1e15, 1e16, 1e17, 1e21, 1e22, 1e23})
+      for (int i = -1000; i <= 1000; ++i)
+        x.push_back(base + i * (base / 1e15));
+    const std::size_t n = x.size();
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        x.push_back(std::nextafter(x[i], 0.0));
+        x.push_back(std::nextafter(x[i], HUGE_VAL));
+      }
+    for (std::size_t i = 0, m = x.size(); i < m; ++i)
+      x.push_back(-x[i]);
+    return x;
+  }
+
+  /// std::to_chars's text against shortest_text's for x; prints a
+  /// difference.
+  bool
+  same_text(const double x)
+  {
+    char       a[64], b[64];
+    const auto end_a = std::to_chars(a, a + sizeof a, x).ptr;
+    const auto end_b = poundfe::shortest_text(b, x);
+    if (end_a - a == end_b - b && std::memcmp(a, b, end_a - a) == 0)
+      return true;
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    std::printf("bits %016llx: shortest_text %.*s, to_chars %.*s\n", (unsigned long long)bits,
+                int(end_b - b), b, int(end_a - a), a);
+    return false;
+  }
+
+  int
+  check(const unsigned long long n_random)
+  {
+    const std::vector<double> edges = edge_numbers();
+    for (const double x : edges)
+      if (!same_text(x))
+        return 1;
+    std::uint64_t state = 0x9e3779b97f4a7c15ull; // splitmix64
+    for (unsigned long long i = 0; i < n_random; ++i)
+      {
+        std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+        z               = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z               = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        z ^= z >> 31;
+        double x;
+        std::memcpy(&x, &z, sizeof x);
+        if (!same_text(x))
+          return 1;
+      }
+    std::printf("shortest_text = std::to_chars on %zu edge values and %llu of random bits\n",
+                edges.size(), n_random);
+    return 0;
+  }
+
   template <typename Format>
   std::string
   all_text(const std::vector<double> &x, Format format)
@@ -196,6 +284,8 @@ namespace
 int
 main(int argc, char **argv)
 {
+  if (argc == 3 && std::string(argv[1]) == "--check")
+    return check(std::strtoull(argv[2], nullptr, 10));
   const int                 repeats = argc > 1 ? std::atoi(argv[1]) : 20;
   const std::vector<double> x       = sample_numbers(1 << 20);
   if (argc > 2)
@@ -204,6 +294,7 @@ main(int argc, char **argv)
       char *(*format)(char *, double) = way == "fmt"       ? with_fmt :
                                         way == "dragonbox" ? dragonbox_as_to_chars :
                                         way == "digits"    ? dragonbox_digits_only :
+                                        way == "poundfe"   ? with_poundfe :
                                                              with_to_chars;
       std::printf("%s %.1f ns a number\n", way.c_str(), best_ns_per_number(x, format, repeats));
       return 0;
@@ -213,6 +304,8 @@ main(int argc, char **argv)
               differing_texts(x, with_fmt));
   std::printf("Dragonbox in to_chars's layout: %zu texts differ from std::to_chars's\n",
               differing_texts(x, dragonbox_as_to_chars));
+  std::printf("poundfe::shortest_text: %zu texts differ from std::to_chars's\n",
+              differing_texts(x, with_poundfe));
   // every text must read back to its double
   for (const double value : x)
     {
@@ -234,5 +327,7 @@ main(int argc, char **argv)
               best_ns_per_number(x, with_fmt, repeats));
   std::printf("Dragonbox in to_chars's layout %6.1f ns a number\n",
               best_ns_per_number(x, dragonbox_as_to_chars, repeats));
+  std::printf("poundfe::shortest_text         %6.1f ns a number\n",
+              best_ns_per_number(x, with_poundfe, repeats));
   return 0;
 }

@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(libdeal.ii-dev libeigen3-dev zlib1g-dev libboost-test-dev tcl-dev numdiff gmsh gnuplot-nox cmake g++ make python3
-          libmuparser-dev libsiconos-numerics-dev pybind11-dev python3-pybind11 python3-dev python3-numpy python3-matplotlib python3-siconos)
+          libmuparser-dev libfmt-dev libsiconos-numerics-dev pybind11-dev python3-pybind11 python3-dev python3-numpy python3-matplotlib python3-siconos)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

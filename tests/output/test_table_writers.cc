@@ -2,6 +2,9 @@
 // write.
 //  - NumberText gives std::to_chars's text for every double, whether it
 //    remembers the number or not (its table is keyed by the bits).
+//  - shortest_text (Dragonbox's digits in std::to_chars's layout) gives
+//    std::to_chars's bytes on 2*10^6 doubles of random bits and on edge
+//    values (bench/shortest_double.cc --check runs 10^8).
 //  - Buffering: CsvWriter and NpyWriter write exactly the rows given, across
 //    many buffers and for rows wider than a buffer's block.
 //  - Decimation: a recorder every k steps writes the rows of steps 0, k, 2k,
@@ -29,6 +32,7 @@
 #include <poundfe/output/npy_writer.h>
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/output_directory.h>
+#include <poundfe/output/shortest_text.h>
 
 #include "output_test_files.h"
 
@@ -174,6 +178,44 @@ BOOST_AUTO_TEST_CASE(number_text_is_to_chars_text)
       char         expected[64], got[NumberText::max_length + 8];
       const auto   end = std::to_chars(expected, expected + sizeof expected, x).ptr;
       different += std::string(got, text.write(got, x)) != std::string(expected, end);
+    }
+  BOOST_TEST(different == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(shortest_text_is_to_chars_text)
+{
+  // Edge values: ±0, the limits, every power of 2, the powers of 10, the
+  // integers around 2^53 and 10^16 (plain texts of the exact integer), and
+  // their neighbours; then 2*10^6 doubles of random bits (every exponent,
+  // subnormals, NaN, infinities). Exact bytes.
+  std::vector<double> edges{0.0, 5e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
+                            INFINITY, std::nan(""), 123456789012345678.0};
+  for (int p = -1074; p <= 1023; ++p)
+    edges.push_back(std::ldexp(1.0, p));
+  for (int p = -323; p <= 308; ++p)
+    edges.push_back(std::pow(10.0, p));
+  for (const double base : {9007199254740992.0, 1e16, 1e17})
+    for (int i = -300; i <= 300; ++i)
+      edges.push_back(base + i * 16.0);
+  for (std::size_t i = 0, n = edges.size(); i < n; ++i)
+    for (const double x : {edges[i], std::nextafter(edges[i], 0.0), std::nextafter(edges[i], INFINITY)})
+      for (const double signed_x : {x, -x})
+        edges.push_back(signed_x);
+  std::mt19937_64 random(57);
+  std::size_t     different = 0;
+  auto            compare   = [&different](const double x) {
+    char       expected[64], got[shortest_text_room + 8];
+    const auto end = std::to_chars(expected, expected + sizeof expected, x).ptr;
+    different += std::string(got, shortest_text(got, x)) != std::string(expected, end);
+  };
+  for (const double x : edges)
+    compare(x);
+  for (int i = 0; i < 2000000; ++i)
+    {
+      const std::uint64_t bits = random();
+      double              x;
+      std::memcpy(&x, &bits, sizeof x);
+      compare(x);
     }
   BOOST_TEST(different == 0u);
 }
