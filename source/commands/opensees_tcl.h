@@ -117,8 +117,9 @@ namespace poundfe
     /// Adds the element; ScriptError when its tag exists already.
     void add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element);
     /// A member's mass per length rho, lumped: rho L/2 on each node's
-    /// translations (OpenSees's beam-columns without -cMass), as the
-    /// element's (opensees::Domain::LumpedMass).
+    /// translations (OpenSees's beam-columns and truss without -cMass), as
+    /// the element's (opensees::Domain::LumpedMass), its ground-motion load
+    /// in the reactions.
     void add_lumped_mass(opensees::Domain &d, int element, const std::array<int, 2> &nodes,
                          double rho);
     /// m on each translation of both nodes, as the element's.

@@ -108,6 +108,15 @@ namespace poundfe
               mass_of_equation[node.equation[k]] += m;
               inertia_terms.push_back({node.equation[k], k, m});
             }
+      second_ground_terms.clear();
+      for (const Domain::LumpedMass &m : domain.lumped_masses)
+        if (m.ground_load_twice)
+          {
+            const Node &node = domain.node(m.node);
+            for (unsigned int k = 0; k < std::min(domain.ndm, domain.ndf); ++k)
+              if (node.equation[k] >= 0)
+                second_ground_terms.push_back({node.equation[k], k, m.mass});
+          }
       number_mass_damping();
       beam_loads_taken = false;
       for (auto &[tag, element] : domain.elements)
@@ -376,6 +385,8 @@ namespace poundfe
       for (const InertiaTerm &t : inertia_terms) // the nodes' order, as OpenSees sums
         r[t.equation] -=
           t.mass * (A[t.equation] + ground[t.dof] + alpha_m * v[t.equation]);
+      for (const InertiaTerm &t : second_ground_terms)
+        r[t.equation] -= t.mass * ground[t.dof];
       if (!uniform_mass_damping)
         r -= mass_damping_of_equation.cwiseProduct(v);
       return r;

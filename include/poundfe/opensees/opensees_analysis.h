@@ -219,6 +219,9 @@ namespace poundfe
         double       mass;
       };
       std::vector<InertiaTerm> inertia_terms;
+      /// The second ground-motion load of the masses that take it twice
+      /// (Domain::LumpedMass::ground_load_twice), after the inertia terms.
+      std::vector<InertiaTerm> second_ground_terms;
       /// Whether an element takes beam loads (the residual applies them).
       bool            beam_loads_taken = false;
       /// The ground acceleration at ground_time (per DOF), the residual's
