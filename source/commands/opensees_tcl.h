@@ -43,6 +43,9 @@ namespace poundfe
       bool has_static_integrator = false, has_transient_integrator = false;
       std::unique_ptr<opensees::Analysis>                  analysis;
       std::vector<std::unique_ptr<opensees::Recorder>>     recorders;
+      /// Each recorder's tag (`remove recorder`), and the next one.
+      std::vector<int> recorder_tags;
+      int              next_recorder_tag = 0;
       /// The fibres of the section Fiber whose body runs (nullptr outside).
       FibreGeometry *fibres = nullptr;
       /// OpenSeesPy's conventions (poundfe.opensees): a Plain pattern and a

@@ -140,6 +140,36 @@ namespace poundfe
         d.changed = true;
       }
 
+      /// fixX|fixY|fixZ coordinate flags... <-tol tol>: `fix` on every node
+      /// within tol (1e-10) of the coordinate along the axis, a DOF fixed
+      /// already left as it is (Domain::addSP_Constraint(axis, ...)).
+      void
+      fix_at_coordinate(Session &s, Words &w, const unsigned int axis)
+      {
+        opensees::Domain &d          = model_domain(s);
+        const double      coordinate = w.real("the coordinate");
+        std::vector<int>  flags      = w.integers("a fixity (0 or 1)");
+        double            tolerance  = 1e-10;
+        if (w.peek() == "-tol")
+          {
+            w.word("-tol");
+            tolerance = w.real("the tolerance");
+          }
+        if (!w.done())
+          unsupported(w.name + " word '" + w.peek() + "'");
+        if (flags.empty() || flags.size() > d.ndf)
+          throw ScriptError("needs 1 to ndf = " + text_of(d.ndf) + " fixities, got " +
+                            text_of(flags.size()));
+        if (axis >= d.ndm)
+          throw ScriptError("the model has no axis " + text_of(axis + 1) + " (-ndm " +
+                            text_of(d.ndm) + ")");
+        for (auto &[tag, node] : d.nodes)
+          if (std::fabs(node.coordinates[axis] - coordinate) <= tolerance)
+            for (std::size_t k = 0; k < flags.size(); ++k)
+              node.fixed[k] = node.fixed[k] || flags[k] == 1;
+        d.changed = true;
+      }
+
       void
       mass(Session &s, Words &w)
       {
@@ -1281,6 +1311,36 @@ namespace poundfe
         else
           s.recorders.push_back(std::make_unique<opensees::EnvelopeNodeRecorder>(r));
       }
+      /// remove recorders | recorder tag | loadPattern tag | pattern tag
+      /// (OpenSees's `remove`): a recorder removed writes its file.
+      void
+      remove(Session &s, Words &w)
+      {
+        const std::string what = w.word("what to remove");
+        if (what == "recorders")
+          s.finish_recorders();
+        else if (what == "recorder")
+          {
+            const int  tag = w.integer("the recorder's tag");
+            const auto it  = std::find(s.recorder_tags.begin(), s.recorder_tags.end(), tag);
+            if (it == s.recorder_tags.end())
+              throw ScriptError("recorder " + text_of(tag) + " does not exist");
+            const auto i = it - s.recorder_tags.begin();
+            s.recorders[i]->finish();
+            s.recorders.erase(s.recorders.begin() + i);
+            s.recorder_tags.erase(it);
+          }
+        else if (what == "loadPattern" || what == "pattern")
+          {
+            opensees::Domain &d = model_domain(s);
+            d.patterns.erase(w.integer("the pattern's tag"));
+            d.changed = true;
+          }
+        else
+          unsupported("remove " + what);
+        if (!w.done())
+          unsupported("remove " + what + " word '" + w.peek() + "'");
+      }
     } // namespace
 
     void
@@ -1332,6 +1392,10 @@ namespace poundfe
       define(interp, session, "model", model);
       define(interp, session, "node", node);
       define(interp, session, "fix", fix);
+      for (unsigned int axis = 0; axis < 3; ++axis)
+        define(interp, session, std::string("fix") + "XYZ"[axis],
+               [axis](Session &s, Words &w) { fix_at_coordinate(s, w, axis); });
+      define(interp, session, "remove", remove);
       define(interp, session, "mass", mass);
       define(interp, session, "equalDOF", equal_dof);
       define(interp, session, "rigidDiaphragm", rigid_diaphragm);
@@ -1349,7 +1413,13 @@ namespace poundfe
         model_domain(s).time = w.real("the time");
       });
       define(interp, session, "rayleigh", rayleigh);
-      define(interp, session, "recorder", recorder);
+      define(interp, session, "recorder", [](Session &s, Words &w) {
+        recorder(s, w);
+        // OpenSees's recorders are numbered from 0 in the order made, over
+        // the whole run (Recorder::lastRecorderTag)
+        s.recorder_tags.push_back(s.next_recorder_tag++);
+        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(s.recorder_tags.back()));
+      });
       define(interp, session, "record", [](Session &s, Words &) { s.record(); });
     }
   } // namespace opensees_tcl

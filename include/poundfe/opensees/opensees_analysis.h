@@ -155,6 +155,11 @@ namespace poundfe
       /// The script changed the test, algorithm or integrator of this analysis.
       void configure(const AnalysisOptions &options);
       AnalysisCounts         counts;
+      /// The script's test at the last step that ran it (testIter,
+      /// testNorm: CTest's currentIter and norms, maxIter of them, those
+      /// not reached 0).
+      unsigned int        test_iterations = 0;
+      std::vector<double> test_norms;
 
     private:
       void   number();
@@ -183,7 +188,7 @@ namespace poundfe
       /// iteration when it converged (or goes on past the limit, print flag
       /// 5), 0 to iterate again, -1 (with why) when it failed.
       int    judge(unsigned int iteration, unsigned int max_iterations, const Vector &dx,
-                   const Vector &r, std::string &why);
+                   const Vector &r, std::string &why, bool script_test = true);
       /// U += dx with V, A (Newmark's or HHT's update) and the elements at
       /// the evaluation point.
       bool   apply_increment(const Vector &dx, std::string &why);
