@@ -73,6 +73,9 @@ CASES = {
     # BFGS (OpenSees's BFGS.cpp): the default 10 quasi-Newton increments a
     # tangent on the fibre frame; 3 on the pounding pair, whose inner test
     # then runs out and a new tangent follows (33 times)
+    # RelativeNormDispIncr (|dx| over the step's first |dx|)
+    "pounding_relative": ("pounding_sticks.tcl",
+                          ["ImpactMaterial", "Newton", "RelativeNormDispIncr"], 1e-9),
     "frame_bfgs": ("fibre_frame_record.tcl", ["committed", "BFGS"], 1e-9),
     "pounding_bfgs": ("pounding_sticks.tcl", ["ImpactMaterial", "BFGS -count 3"], 1e-9),
     # sp in a Plain pattern (constraints Transformation): a fibre beam's end

@@ -60,6 +60,8 @@ namespace poundfe
           t.kind = Kind::norm_unbalance;
         else if (type == "EnergyIncr")
           t.kind = Kind::energy_incr;
+        else if (type == "RelativeNormDispIncr")
+          t.kind = Kind::relative_norm_disp_incr;
         else
           unsupported("test " + type);
         t.tolerance      = w.real("the tolerance");
@@ -351,6 +353,10 @@ namespace poundfe
         check_done(w);
         if (steps < 0)
           throw ScriptError("the number of steps must be >= 0");
+        const opensees::AnalysisOptions &o = s.analysis->options();
+        if (o.test.kind == opensees::ConvergenceTest::Kind::relative_norm_disp_incr &&
+            o.algorithm == opensees::AnalysisOptions::Algorithm::newton_line_search)
+          unsupported("test RelativeNormDispIncr with algorithm NewtonLineSearch");
         if (s.analysis->options().transient)
           s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper)
         const int result = s.analysis->analyze(

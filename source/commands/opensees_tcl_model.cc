@@ -1317,12 +1317,20 @@ namespace poundfe
       remove(Session &s, Words &w)
       {
         const std::string what = w.word("what to remove");
+        const auto        done = [&]() {
+          if (!w.done())
+            unsupported("remove " + what + " word '" + w.peek() + "'");
+        };
         if (what == "recorders")
-          s.finish_recorders();
+          {
+            done();
+            s.finish_recorders();
+          }
         else if (what == "recorder")
           {
-            const int  tag = w.integer("the recorder's tag");
-            const auto it  = std::find(s.recorder_tags.begin(), s.recorder_tags.end(), tag);
+            const int tag = w.integer("the recorder's tag");
+            done();
+            const auto it = std::find(s.recorder_tags.begin(), s.recorder_tags.end(), tag);
             if (it == s.recorder_tags.end())
               throw ScriptError("recorder " + text_of(tag) + " does not exist");
             const auto i = it - s.recorder_tags.begin();
@@ -1332,14 +1340,14 @@ namespace poundfe
           }
         else if (what == "loadPattern" || what == "pattern")
           {
-            opensees::Domain &d = model_domain(s);
-            d.patterns.erase(w.integer("the pattern's tag"));
+            opensees::Domain &d   = model_domain(s);
+            const int         tag = w.integer("the pattern's tag");
+            done();
+            d.patterns.erase(tag);
             d.changed = true;
           }
         else
           unsupported("remove " + what);
-        if (!w.done())
-          unsupported("remove " + what + " word '" + w.peek() + "'");
       }
     } // namespace
 

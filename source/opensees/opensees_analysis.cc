@@ -487,6 +487,7 @@ namespace poundfe
       switch (opts.test.kind)
         {
           case ConvergenceTest::Kind::norm_disp_incr:
+          case ConvergenceTest::Kind::relative_norm_disp_incr: // judge divides
             return dx.norm();
           case ConvergenceTest::Kind::norm_unbalance:
             return r.norm();
@@ -502,9 +503,10 @@ namespace poundfe
       const Kind         kind = opts.test.kind;
       std::ostringstream text;
       text << "CTest"
-           << (kind == Kind::norm_disp_incr ? "NormDispIncr" :
-               kind == Kind::norm_unbalance ? "NormUnbalance" :
-                                              "EnergyIncr")
+           << (kind == Kind::norm_disp_incr          ? "NormDispIncr" :
+               kind == Kind::relative_norm_disp_incr ? "RelativeNormDispIncr" :
+               kind == Kind::norm_unbalance          ? "NormUnbalance" :
+                                                       "EnergyIncr")
            << "::test() - iteration: " << iteration << " current "
            << (kind == Kind::energy_incr ? "EnergyIncr" : "Norm") << ": " << norm
            << " (max: " << opts.test.tolerance << ")";
@@ -632,8 +634,8 @@ namespace poundfe
     Analysis::judge(const unsigned int iteration, const unsigned int max_iterations,
                     const Vector &dx, const Vector &r, std::string &why, const bool script_test)
     {
-      const double norm = test_norm(dx, r);
-      const int    flag = opts.test.print_flag;
+      double    norm = test_norm(dx, r);
+      const int flag = opts.test.print_flag;
       if (script_test) // CTest::start zeroes the norms, test() counts on but when met
         {
           if (iteration == 1 || test_norms.size() != max_iterations)
@@ -641,6 +643,14 @@ namespace poundfe
           if (iteration <= max_iterations)
             test_norms[iteration - 1] = norm;
           test_iterations = iteration + 1;
+        }
+      if (opts.test.kind == ConvergenceTest::Kind::relative_norm_disp_incr)
+        {
+          double &first = first_norms[script_test ? 0 : 1];
+          if (iteration == 1)
+            first = norm;
+          if (first != 0)
+            norm /= first;
         }
       if (flag == 1 || (flag == 2 && norm <= opts.test.tolerance))
         print_iteration(iteration, norm);

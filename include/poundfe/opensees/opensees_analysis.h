@@ -51,6 +51,7 @@
 #include <Eigen/LU>
 #include <Eigen/SparseCore>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -69,7 +70,9 @@ namespace poundfe
       {
         norm_disp_incr,
         norm_unbalance,
-        energy_incr
+        energy_incr,
+        /// |dx| over the step's first |dx| (CTestRelativeNormDispIncr)
+        relative_norm_disp_incr
       } kind                     = Kind::norm_unbalance;
       double       tolerance      = 1e-6; // OpenSees's default test
       unsigned int max_iterations = 25;
@@ -160,6 +163,9 @@ namespace poundfe
       /// not reached 0).
       unsigned int        test_iterations = 0;
       std::vector<double> test_norms;
+      /// RelativeNormDispIncr's first norm of the step, of the script's test
+      /// and of BFGS's inner copy.
+      std::array<double, 2> first_norms{{0, 0}};
 
     private:
       void   number();
