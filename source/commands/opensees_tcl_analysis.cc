@@ -485,7 +485,7 @@ namespace poundfe
         if (s.without_bodies)
           return set_result(w.interp, s.domain.time);
         static const std::regex one_conversion(
-          "[^%]*%[-+ #0]*[0-9]{0,3}(\\.[0-9]{1,3})?[eEfFgG][^%]*");
+          "[^%]*%[-+# 0]*[0-9]{0,3}(\\.[0-9]{1,3})?[eEfFgG][^%]*");
         if (!std::regex_match(format, one_conversion))
           throw ScriptError("format '" + format + "' is not one floating-point conversion");
         char text[512];
