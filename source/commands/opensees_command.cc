@@ -30,6 +30,7 @@ namespace poundfe
       for (auto &recorder : recorders)
         recorder->finish();
       recorders.clear();
+      recorder_tags.clear();
     }
 
     void
@@ -210,11 +211,9 @@ namespace poundfe
       define_unsupported(Tcl_Interp *interp, Session &session)
       {
         for (const char *name :
-             {"fixX", "fixY", "fixZ", "remove",
-              "imposedMotion", "groundMotion", "modalDamping",
+             {"imposedMotion", "groundMotion", "modalDamping",
               "printA", "printB", "printModel", "print",
-              "basicDeformation", "basicForce", "localForce", "testIter", "testNorm", "getNP",
-              "getPID", "reset", "block2D", "block3D", "nDMaterial", "frictionModel",
+              "basicDeformation", "basicForce", "localForce", "reset", "block2D", "block3D", "nDMaterial", "frictionModel",
               "database", "geomTransfPDelta", "mp", "domainChange", "remesh", "setNodeCoord",
               "setNodeDisp", "setNodeVel", "setNodeAccel", "getLoadFactor", "sectionForce",
               "sectionDeformation", "sectionStiffness", "nodeEigenvector", "nodeMass",

@@ -43,6 +43,9 @@ namespace poundfe
       bool has_static_integrator = false, has_transient_integrator = false;
       std::unique_ptr<opensees::Analysis>                  analysis;
       std::vector<std::unique_ptr<opensees::Recorder>>     recorders;
+      /// Each recorder's tag (`remove recorder`), and the next one.
+      std::vector<int> recorder_tags;
+      int              next_recorder_tag = 0;
       /// The fibres of the section Fiber whose body runs (nullptr outside).
       FibreGeometry *fibres = nullptr;
       /// OpenSeesPy's conventions (poundfe.opensees): a Plain pattern and a
@@ -117,8 +120,9 @@ namespace poundfe
     /// Adds the element; ScriptError when its tag exists already.
     void add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element);
     /// A member's mass per length rho, lumped: rho L/2 on each node's
-    /// translations (OpenSees's beam-columns without -cMass), as the
-    /// element's (opensees::Domain::LumpedMass).
+    /// translations (OpenSees's beam-columns and truss without -cMass), as
+    /// the element's (opensees::Domain::LumpedMass), its ground-motion load
+    /// in the reactions.
     void add_lumped_mass(opensees::Domain &d, int element, const std::array<int, 2> &nodes,
                          double rho);
     /// m on each translation of both nodes, as the element's.

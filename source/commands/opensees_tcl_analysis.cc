@@ -2,12 +2,14 @@
 // argument syntax: constraints, numberer, system, test, algorithm,
 // integrator, analysis, analyze, eigen, wipeAnalysis, getTime, nodeDisp,
 // nodeVel, nodeAccel, nodeReaction, reactions, getNodeTags, getEleTags,
-// nodeCoord, eleForce, eleResponse. A component the script leaves out takes
-// OpenSees's default (NormUnbalance 1e-6 25, Newton, Newmark 0.5 0.25 or
+// nodeCoord, eleForce, eleResponse, testIter, testNorm, getNP, getPID. A
+// component the script leaves out takes OpenSees's default (NormUnbalance 1e-6 25, Newton, Newmark 0.5 0.25 or
 // LoadControl 1), with OpenSees's warning.
 #include "opensees_tcl.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <regex>
 #include <ostream>
 
 namespace poundfe
@@ -58,6 +60,8 @@ namespace poundfe
           t.kind = Kind::norm_unbalance;
         else if (type == "EnergyIncr")
           t.kind = Kind::energy_incr;
+        else if (type == "RelativeNormDispIncr")
+          t.kind = Kind::relative_norm_disp_incr;
         else
           unsupported("test " + type);
         t.tolerance      = w.real("the tolerance");
@@ -349,6 +353,10 @@ namespace poundfe
         check_done(w);
         if (steps < 0)
           throw ScriptError("the number of steps must be >= 0");
+        const opensees::AnalysisOptions &o = s.analysis->options();
+        if (o.test.kind == opensees::ConvergenceTest::Kind::relative_norm_disp_incr &&
+            o.algorithm == opensees::AnalysisOptions::Algorithm::newton_line_search)
+          unsupported("test RelativeNormDispIncr with algorithm NewtonLineSearch");
         if (s.analysis->options().transient)
           s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper)
         const int result = s.analysis->analyze(
@@ -466,6 +474,43 @@ namespace poundfe
         s.has_test = s.has_algorithm = false;
         s.has_static_integrator = s.has_transient_integrator = false;
       }
+      /// getTime <format>: in a script OpenSees's text, printf's "%f" (six
+      /// decimals) or the script's format of one floating conversion; a
+      /// float in poundfe.opensees (OpenSeesPy's).
+      void
+      get_time(Session &s, Words &w)
+      {
+        const std::string format = w.done() ? "%f" : w.word("the format");
+        check_done(w);
+        if (s.without_bodies)
+          return set_result(w.interp, s.domain.time);
+        static const std::regex one_conversion(
+          "[^%]*%[-+# 0]*[0-9]{0,3}(\\.[0-9]{1,3})?[eEfFgG][^%]*");
+        if (!std::regex_match(format, one_conversion))
+          throw ScriptError("format '" + format + "' is not one floating-point conversion");
+        char text[512];
+        std::snprintf(text, sizeof text, format.c_str(), s.domain.time);
+        Tcl_SetObjResult(w.interp, Tcl_NewStringObj(text, -1));
+      }
+
+      /// testIter, testNorm: the script's test at its last step (none run
+      /// yet: 0 and maxIter zeros).
+      void
+      test_results(Session &s, Words &w, const bool norms)
+      {
+        check_done(w);
+        if (!s.analysis && !s.has_test)
+          throw ScriptError("no convergence test");
+        if (norms)
+          {
+            const auto &n = s.analysis ? s.analysis->test_norms : std::vector<double>();
+            set_result(w.interp, !n.empty() ? n :
+                                              std::vector<double>(s.options.test.max_iterations));
+          }
+        else
+          Tcl_SetObjResult(w.interp,
+                           Tcl_NewIntObj(s.analysis ? s.analysis->test_iterations : 0));
+      }
     } // namespace
 
     void
@@ -500,10 +545,20 @@ namespace poundfe
           words.push_back(w.word("the response"));
         set_result(w.interp, e.response(words));
       });
-      define(interp, session, "getTime", [](Session &s, Words &w) {
+      define(interp, session, "testIter",
+             [](Session &s, Words &w) { test_results(s, w, false); });
+      for (const char *name : {"testNorm", "testNorms"})
+        define(interp, session, name, [](Session &s, Words &w) { test_results(s, w, true); });
+      // one process, as OpenSees's sequential interpreter
+      define(interp, session, "getNP", [](Session &, Words &w) {
         check_done(w);
-        set_result(w.interp, s.domain.time);
+        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(1));
       });
+      define(interp, session, "getPID", [](Session &, Words &w) {
+        check_done(w);
+        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(0));
+      });
+      define(interp, session, "getTime", get_time);
       define(interp, session, "nodeDisp",
              [](Session &s, Words &w) { node_response(s, w, &opensees::Node::disp); });
       define(interp, session, "nodeVel",

@@ -1,7 +1,8 @@
 // The model-building commands of OpenSees scripts, with OpenSees 3.8's
 // argument syntax: wipe, model, node, fix, mass, equalDOF, rigidLink bar, rigidDiaphragm, geomTransf,
 // element, uniaxialMaterial, timeSeries, pattern, load, sp, eleLoad, loadConst, setTime,
-// rayleigh, recorder. An option or type poundfe lacks is an error naming it.
+// rayleigh, recorder (Node, Element, Drift, EnvelopeNode, EnvelopeElement).
+// An option or type poundfe lacks is an error naming it.
 #include <poundfe/laws/material_registry.h>
 #include <poundfe/laws/viscous_damper.h>
 
@@ -136,6 +137,36 @@ namespace poundfe
                                   " is fixed already");
               n.fixed[k] = true;
             }
+        d.changed = true;
+      }
+
+      /// fixX|fixY|fixZ coordinate flags... <-tol tol>: `fix` on every node
+      /// within tol (1e-10) of the coordinate along the axis, a DOF fixed
+      /// already left as it is (Domain::addSP_Constraint(axis, ...)).
+      void
+      fix_at_coordinate(Session &s, Words &w, const unsigned int axis)
+      {
+        opensees::Domain &d          = model_domain(s);
+        const double      coordinate = w.real("the coordinate");
+        std::vector<int>  flags      = w.integers("a fixity (0 or 1)");
+        double            tolerance  = 1e-10;
+        if (w.peek() == "-tol")
+          {
+            w.word("-tol");
+            tolerance = w.real("the tolerance");
+          }
+        if (!w.done())
+          unsupported(w.name + " word '" + w.peek() + "'");
+        if (flags.empty() || flags.size() > d.ndf)
+          throw ScriptError("needs 1 to ndf = " + text_of(d.ndf) + " fixities, got " +
+                            text_of(flags.size()));
+        if (axis >= d.ndm)
+          throw ScriptError("the model has no axis " + text_of(axis + 1) + " (-ndm " +
+                            text_of(d.ndm) + ")");
+        for (auto &[tag, node] : d.nodes)
+          if (std::fabs(node.coordinates[axis] - coordinate) <= tolerance)
+            for (std::size_t k = 0; k < flags.size(); ++k)
+              node.fixed[k] = node.fixed[k] || flags[k] == 1;
         d.changed = true;
       }
 
@@ -285,6 +316,8 @@ namespace poundfe
           add_element(d, opensees::make_elastic_beam_2d(d, tag, nodes, section.A, section.E,
                                                         section.Iz, t->second));
         add_lumped_mass(d, tag, nodes, rho);
+        for (auto &m : d.lumped_masses)
+          m.ground_load_twice |= m.element == tag && !three;
       }
 
       void
@@ -464,11 +497,7 @@ namespace poundfe
           }
         add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
         if (d.ndm == 2)
-          {
-            add_lumped_mass(d, tag, nodes, rho);
-            for (auto &m : d.lumped_masses)
-              m.load_in_reaction |= m.element == tag;
-          }
+          add_lumped_mass(d, tag, nodes, rho);
         else if (rho != 0)
           unsupported("element truss -rho outside -ndm 2");
       }
@@ -1087,11 +1116,11 @@ namespace poundfe
       }
 
       /// The options of every recorder's output (-file, -time, -precision,
-      /// -closeOnWrite) into a Node or Element recorder's spec; false for
-      /// any other word.
-      template <typename RecorderSpec>
+      /// -dT, -rTolDt, -closeOnWrite but in an Envelope) into its spec;
+      /// false for any other word.
       bool
-      output_option(Words &w, const std::string &option, RecorderSpec &r)
+      output_option(Words &w, const std::string &option, opensees::OutputSpec &r,
+                    const std::string &type)
       {
         if (option == "-file")
           r.file = w.word("the file");
@@ -1099,18 +1128,43 @@ namespace poundfe
           r.time = true;
         else if (option == "-precision")
           r.precision = w.integer("-precision");
+        else if (option == "-dT" || option == "-rTolDt")
+          {
+            const double value = w.real(option.c_str());
+            if (value < 0)
+              throw ScriptError(option + " must be >= 0");
+            (option == "-dT" ? r.interval : r.interval_tolerance) = value;
+          }
         // -closeOnWrite is taken and has nothing to do: the file is whole
-        // when the script ends either way
-        else if (option != "-closeOnWrite")
+        // when the script ends either way (an Envelope's rows would be
+        // written at each change, then again at the end)
+        else if (option != "-closeOnWrite" || type.compare(0, 8, "Envelope") == 0)
           return false;
         return true;
       }
 
+      /// -timeSeries: a series' tag for each DOF (0 or -1: none).
+      std::vector<std::shared_ptr<const opensees::TimeSeries>>
+      recorder_series(const opensees::Domain &d, Words &w)
+      {
+        std::vector<std::shared_ptr<const opensees::TimeSeries>> series;
+        for (const int tag : w.integers("a series' tag"))
+          {
+            const auto it = d.series.find(tag);
+            if (tag != 0 && tag != -1 && it == d.series.end())
+              throw ScriptError("timeSeries " + text_of(tag) + " does not exist");
+            series.push_back(tag == 0 || tag == -1 ? nullptr : it->second);
+          }
+        if (series.empty())
+          throw ScriptError("-timeSeries needs a series' tag for each DOF");
+        return series;
+      }
+
       void
       recorder_option(opensees::Domain &d, Words &w, const std::string &option,
-                      opensees::NodeRecorderSpec &r)
+                      opensees::NodeRecorderSpec &r, const std::string &type)
       {
-        if (output_option(w, option, r))
+        if (output_option(w, option, r, type))
           return;
         if (option == "-node")
           for (const int tag : w.integers("a node's tag"))
@@ -1129,21 +1183,23 @@ namespace poundfe
                 throw ScriptError("DOF " + text_of(dof) + " is not one of 1 to ndf");
               r.dofs.push_back(dof - 1);
             }
+        else if (option == "-timeSeries")
+          r.series = recorder_series(d, w);
         else
-          unsupported("recorder Node option '" + option + "'");
+          unsupported("recorder " + type + " option '" + option + "'");
       }
 
       /// recorder Element: -file, -time, -precision, -ele, -eleRange, then
       /// the response's words (each element checked to have it).
       void
-      element_recorder(Session &s, Words &w)
+      element_recorder(Session &s, Words &w, const std::string &type)
       {
         const opensees::Domain       &d = s.domain;
         opensees::ElementRecorderSpec r;
         while (!w.done() && r.response.empty())
           {
             const std::string word = w.word("an option");
-            if (output_option(w, word, r))
+            if (output_option(w, word, r, type))
               continue;
             if (word == "-ele")
               r.elements = w.integers("an element's tag");
@@ -1156,16 +1212,17 @@ namespace poundfe
                   r.elements.push_back(it->first);
               }
             else if (word[0] == '-')
-              unsupported("recorder Element option '" + word + "'");
+              unsupported("recorder " + type + " option '" + word + "'");
             else
               r.response.push_back(word);
           }
         while (!w.done())
           r.response.push_back(w.word("the response"));
         if (r.file.empty())
-          unsupported("recorder Element without -file");
+          unsupported("recorder " + type + " without -file");
         if (r.elements.empty() || r.response.empty())
-          throw ScriptError("recorder Element needs elements (-ele, -eleRange) and a response");
+          throw ScriptError("recorder " + type +
+                            " needs elements (-ele, -eleRange) and a response");
         for (const int tag : r.elements)
           {
             const auto it = d.elements.find(tag);
@@ -1173,7 +1230,47 @@ namespace poundfe
               throw ScriptError("element " + text_of(tag) + " does not exist");
             it->second->response(r.response);
           }
-        s.recorders.push_back(std::make_unique<opensees::ElementRecorder>(r));
+        if (type == "Element")
+          s.recorders.push_back(std::make_unique<opensees::ElementRecorder>(r));
+        else
+          s.recorders.push_back(std::make_unique<opensees::EnvelopeElementRecorder>(r));
+      }
+
+      /// recorder Drift: -iNode, -jNode (as many), -dof, -perpDirn (1-based,
+      /// defaults 1 and 2) and the output's options.
+      void
+      drift_recorder(Session &s, Words &w)
+      {
+        const opensees::Domain     &d = s.domain;
+        opensees::DriftRecorderSpec r;
+        int                         dof = 1, perpendicular = 2;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (output_option(w, option, r, "Drift"))
+              continue;
+            if (option == "-iNode" || option == "-iNodes" || option == "-jNode" ||
+                option == "-jNodes")
+              for (const int tag : w.integers("a node's tag"))
+                (option[1] == 'i' ? r.i_nodes : r.j_nodes).push_back(d.node(tag).tag);
+            else if (option == "-dof")
+              dof = w.integer("-dof");
+            else if (option == "-perpDirn")
+              perpendicular = w.integer("-perpDirn");
+            else
+              unsupported("recorder Drift option '" + option + "'");
+          }
+        if (r.file.empty())
+          unsupported("recorder Drift without -file");
+        if (r.i_nodes.empty() || r.i_nodes.size() != r.j_nodes.size())
+          throw ScriptError("recorder Drift needs as many -jNode as -iNode nodes, one at least");
+        if (dof < 1 || dof > static_cast<int>(d.ndf))
+          throw ScriptError("-dof " + text_of(dof) + " is not one of 1 to ndf");
+        if (perpendicular < 1 || perpendicular > static_cast<int>(d.ndm))
+          throw ScriptError("-perpDirn " + text_of(perpendicular) + " is not one of 1 to ndm");
+        r.dof           = dof - 1;
+        r.perpendicular = perpendicular - 1;
+        s.recorders.push_back(std::make_unique<opensees::DriftRecorder>(r, d));
       }
 
       void
@@ -1181,9 +1278,11 @@ namespace poundfe
       {
         opensees::Domain &d    = model_domain(s);
         const std::string type = w.word("the recorder's type");
-        if (type == "Element")
-          return element_recorder(s, w);
-        if (type != "Node")
+        if (type == "Element" || type == "EnvelopeElement")
+          return element_recorder(s, w, type);
+        if (type == "Drift")
+          return drift_recorder(s, w);
+        if (type != "Node" && type != "EnvelopeNode")
           unsupported("recorder " + type);
         opensees::NodeRecorderSpec r;
         bool                       has_response = false;
@@ -1191,20 +1290,64 @@ namespace poundfe
           {
             const std::string word = w.word("an option");
             if (word[0] == '-')
-              recorder_option(d, w, word, r);
+              recorder_option(d, w, word, r, type);
             else if (!has_response)
               {
                 r.response   = recorder_response(word);
                 has_response = true;
               }
             else
-              unsupported("recorder Node word '" + word + "' after the response");
+              unsupported("recorder " + type + " word '" + word + "' after the response");
           }
         if (r.file.empty())
-          unsupported("recorder Node without -file");
+          unsupported("recorder " + type + " without -file");
         if (!has_response || r.nodes.empty() || r.dofs.empty())
-          throw ScriptError("recorder Node needs nodes, -dof and a response");
-        s.recorders.push_back(std::make_unique<opensees::NodeRecorder>(r));
+          throw ScriptError("recorder " + type + " needs nodes, -dof and a response");
+        if (!r.series.empty() && r.series.size() != r.dofs.size())
+          throw ScriptError("-timeSeries gives " + text_of(r.series.size()) + " series for " +
+                            text_of(r.dofs.size()) + " DOFs");
+        if (type == "Node")
+          s.recorders.push_back(std::make_unique<opensees::NodeRecorder>(r));
+        else
+          s.recorders.push_back(std::make_unique<opensees::EnvelopeNodeRecorder>(r));
+      }
+      /// remove recorders | recorder tag | loadPattern tag | pattern tag
+      /// (OpenSees's `remove`): a recorder removed writes its file.
+      void
+      remove(Session &s, Words &w)
+      {
+        const std::string what = w.word("what to remove");
+        const auto        done = [&]() {
+          if (!w.done())
+            unsupported("remove " + what + " word '" + w.peek() + "'");
+        };
+        if (what == "recorders")
+          {
+            done();
+            s.finish_recorders();
+          }
+        else if (what == "recorder")
+          {
+            const int tag = w.integer("the recorder's tag");
+            done();
+            const auto it = std::find(s.recorder_tags.begin(), s.recorder_tags.end(), tag);
+            if (it == s.recorder_tags.end())
+              throw ScriptError("recorder " + text_of(tag) + " does not exist");
+            const auto i = it - s.recorder_tags.begin();
+            s.recorders[i]->finish();
+            s.recorders.erase(s.recorders.begin() + i);
+            s.recorder_tags.erase(it);
+          }
+        else if (what == "loadPattern" || what == "pattern")
+          {
+            opensees::Domain &d   = model_domain(s);
+            const int         tag = w.integer("the pattern's tag");
+            done();
+            d.patterns.erase(tag);
+            d.changed = true;
+          }
+        else
+          unsupported("remove " + what);
       }
     } // namespace
 
@@ -1225,6 +1368,10 @@ namespace poundfe
       const double L = a.size() == 3 ? std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) :
                                        std::hypot(b[0] - a[0], b[1] - a[1]);
       add_node_masses(d, element, nodes, 0.5 * rho * L);
+      // a member's getResistingForce subtracts its inertia load (rho != 0):
+      // the reactions take it
+      for (auto &m : d.lumped_masses)
+        m.load_in_reaction |= m.element == element;
     }
 
     void
@@ -1237,7 +1384,7 @@ namespace poundfe
         {
           for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
             d.node(n).element_mass[k] += m;
-          d.lumped_masses.push_back({element, n, m});
+          d.lumped_masses.push_back({element, n, m, false, false});
         }
       d.changed = true;
     }
@@ -1253,6 +1400,10 @@ namespace poundfe
       define(interp, session, "model", model);
       define(interp, session, "node", node);
       define(interp, session, "fix", fix);
+      for (unsigned int axis = 0; axis < 3; ++axis)
+        define(interp, session, std::string("fix") + "XYZ"[axis],
+               [axis](Session &s, Words &w) { fix_at_coordinate(s, w, axis); });
+      define(interp, session, "remove", remove);
       define(interp, session, "mass", mass);
       define(interp, session, "equalDOF", equal_dof);
       define(interp, session, "rigidDiaphragm", rigid_diaphragm);
@@ -1270,7 +1421,13 @@ namespace poundfe
         model_domain(s).time = w.real("the time");
       });
       define(interp, session, "rayleigh", rayleigh);
-      define(interp, session, "recorder", recorder);
+      define(interp, session, "recorder", [](Session &s, Words &w) {
+        recorder(s, w);
+        // OpenSees's recorders are numbered from 0 in the order made, over
+        // the whole run (Recorder::lastRecorderTag)
+        s.recorder_tags.push_back(s.next_recorder_tag++);
+        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(s.recorder_tags.back()));
+      });
       define(interp, session, "record", [](Session &s, Words &) { s.record(); });
     }
   } // namespace opensees_tcl

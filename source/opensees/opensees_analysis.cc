@@ -108,6 +108,15 @@ namespace poundfe
               mass_of_equation[node.equation[k]] += m;
               inertia_terms.push_back({node.equation[k], k, m});
             }
+      second_ground_terms.clear();
+      for (const Domain::LumpedMass &m : domain.lumped_masses)
+        if (m.ground_load_twice)
+          {
+            const Node &node = domain.node(m.node);
+            for (unsigned int k = 0; k < std::min(domain.ndm, domain.ndf); ++k)
+              if (node.equation[k] >= 0)
+                second_ground_terms.push_back({node.equation[k], k, m.mass});
+          }
       number_mass_damping();
       beam_loads_taken = false;
       for (auto &[tag, element] : domain.elements)
@@ -376,6 +385,8 @@ namespace poundfe
       for (const InertiaTerm &t : inertia_terms) // the nodes' order, as OpenSees sums
         r[t.equation] -=
           t.mass * (A[t.equation] + ground[t.dof] + alpha_m * v[t.equation]);
+      for (const InertiaTerm &t : second_ground_terms)
+        r[t.equation] -= t.mass * ground[t.dof];
       if (!uniform_mass_damping)
         r -= mass_damping_of_equation.cwiseProduct(v);
       return r;
@@ -476,6 +487,7 @@ namespace poundfe
       switch (opts.test.kind)
         {
           case ConvergenceTest::Kind::norm_disp_incr:
+          case ConvergenceTest::Kind::relative_norm_disp_incr: // judge divides
             return dx.norm();
           case ConvergenceTest::Kind::norm_unbalance:
             return r.norm();
@@ -491,9 +503,10 @@ namespace poundfe
       const Kind         kind = opts.test.kind;
       std::ostringstream text;
       text << "CTest"
-           << (kind == Kind::norm_disp_incr ? "NormDispIncr" :
-               kind == Kind::norm_unbalance ? "NormUnbalance" :
-                                              "EnergyIncr")
+           << (kind == Kind::norm_disp_incr          ? "NormDispIncr" :
+               kind == Kind::relative_norm_disp_incr ? "RelativeNormDispIncr" :
+               kind == Kind::norm_unbalance          ? "NormUnbalance" :
+                                                       "EnergyIncr")
            << "::test() - iteration: " << iteration << " current "
            << (kind == Kind::energy_incr ? "EnergyIncr" : "Norm") << ": " << norm
            << " (max: " << opts.test.tolerance << ")";
@@ -619,16 +632,33 @@ namespace poundfe
 
     int
     Analysis::judge(const unsigned int iteration, const unsigned int max_iterations,
-                    const Vector &dx, const Vector &r, std::string &why)
+                    const Vector &dx, const Vector &r, std::string &why, const bool script_test)
     {
-      const double norm = test_norm(dx, r);
-      const int    flag = opts.test.print_flag;
+      double    norm = test_norm(dx, r);
+      const int flag = opts.test.print_flag;
+      if (script_test) // CTest::start zeroes the norms, test() counts on but when met
+        {
+          if (iteration == 1 || test_norms.size() != max_iterations)
+            test_norms.assign(max_iterations, 0.0);
+          if (iteration <= max_iterations)
+            test_norms[iteration - 1] = norm;
+          test_iterations = iteration + 1;
+        }
+      if (opts.test.kind == ConvergenceTest::Kind::relative_norm_disp_incr)
+        {
+          double &first = first_norms[script_test ? 0 : 1];
+          if (iteration == 1)
+            first = norm;
+          if (first != 0)
+            norm /= first;
+        }
       if (flag == 1 || (flag == 2 && norm <= opts.test.tolerance))
         print_iteration(iteration, norm);
-      if (norm <= opts.test.tolerance)
-        return iteration;
-      if ((flag == 5 || flag == 6) && iteration >= max_iterations)
-        return iteration; // OpenSees: "failed to converge but going on"
+      if (norm <= opts.test.tolerance || ((flag == 5 || flag == 6) && iteration >= max_iterations))
+        {
+          test_iterations -= script_test ? 1 : 0;
+          return iteration; // met, or OpenSees's "failed to converge but going on"
+        }
       if (iteration < max_iterations)
         return 0;
       std::ostringstream text;
@@ -722,7 +752,8 @@ namespace poundfe
               history.add(du);
               r = residual();
               std::string local_why; // the inner test only ends the sequence
-              if (judge(n, opts.bfgs_count, x, r, local_why) != 0 || n >= opts.bfgs_count)
+              if (judge(n, opts.bfgs_count, x, r, local_why, false) != 0 ||
+                  n >= opts.bfgs_count)
                 break;
             }
           const int verdict = judge(tangent, opts.test.max_iterations, x, r, why);

@@ -9,6 +9,7 @@
 //   q_0 (u_l1 - u_l4)/L to the local transverse forces (+ at i, - at j) and
 //   the geometric stiffness q_0/L [[1, -1], [-1, 1]] on those two DOFs
 //   (PDeltaCrdTransf2d::getGlobalResistingForce, getGlobalStiffMatrix).
+//   Its responses: force, localForce, basicForce, basicDeformation.
 //   A uniform load wy (transverse), wx (axial) adds the fixed-end basic
 //   forces q_0 = (-wx L/2, -wy L^2/12, wy L^2/12) to q (P-Delta's N too)
 //   and the basic reactions p_0 = (-wx L, -wy L/2, -wy L/2) to the local
@@ -145,6 +146,30 @@ namespace poundfe
           return R.transpose() * (B.transpose() * kb * B) * R;
         }
 
+        /// ElasticBeam2d::getResponse: localForce (-N + p0_0, V + p0_1, M1,
+        /// N, -V + p0_2, M2 with V = (M1 + M2)/L), basicForce q (with q_0)
+        /// and basicDeformation (the transformation's basic displacements).
+        std::vector<double>
+        response(const std::vector<std::string> &words) const override
+        {
+          const std::string what = words.size() == 1 ? words[0] : "";
+          const Eigen::Vector3d qq = q + q0;
+          if (what == "localForce" || what == "localForces")
+            {
+              const double V = (qq[1] + qq[2]) / L;
+              return {-qq[0] + p0[0], V + p0[1], qq[1], qq[0], -V + p0[2], qq[2]};
+            }
+          if (what == "basicForce" || what == "basicForces")
+            return {qq[0], qq[1], qq[2]};
+          if (what == "basicDeformation" || what == "basicDeformations" ||
+              what == "chordRotation" || what == "chordDeformation")
+            {
+              const Eigen::Vector3d v = B * ul;
+              return {v[0], v[1], v[2]};
+            }
+          return Element::response(words);
+        }
+
       private:
         bool                   p_delta;
         double                 L = 0;
@@ -242,6 +267,24 @@ namespace poundfe
             return {force_scale * laws[0]->force()};
           if (words.size() == 3 && words[0] == "material")
             return material_response(words[1], words[2]);
+          const std::string what = words.size() == 1 ? words[0] : "";
+          // ZeroLength::getResponse: each material's stress, or its strain
+          if (!truss && (what == "basicForce" || what == "basicForces" ||
+                         what == "localForce" || what == "localForces"))
+            {
+              std::vector<double> stresses;
+              for (const auto &law : laws)
+                stresses.push_back(law->force());
+              return stresses;
+            }
+          if (!truss && (what == "deformation" || what == "deformations" || what == "defo" ||
+                         what == "basicDeformation"))
+            {
+              std::vector<double> strains(laws.size(), 0.0);
+              for (Eigen::Index m = 0; m < strain.size(); ++m)
+                strains[m] = strain[m];
+              return strains;
+            }
           return Element::response(words);
         }
 

@@ -208,32 +208,53 @@ namespace poundfe
       return std::copy(text + whole, text + n, out);
     }
 
-    Recorder::Recorder(const std::string &file_name, const bool with_time, const int digits)
-      : file(std::make_unique<AtomicFile>(file_name))
-      , time(with_time)
-      , precision(digits < 0 ? 6 : digits) // as the stream's precision
+    Recorder::Recorder(const OutputSpec &output)
+      : time(output.time)
+      , file(std::make_unique<AtomicFile>(output.file))
+      , precision(output.precision < 0 ? 6 : output.precision) // as the stream's precision
+      , interval(output.interval)
+      , interval_tolerance(output.interval_tolerance)
     {
       buffer.reserve(2 * flush_size);
     }
 
     Recorder::~Recorder() = default;
 
+    bool
+    Recorder::due(const double now)
+    {
+      // relDeltaTTol: the time steps' rounding must not skip a record
+      if (interval != 0 && now - next_time < -interval * interval_tolerance)
+        return false;
+      if (interval != 0)
+        next_time = now + interval;
+      return true;
+    }
+
     void
     Recorder::record(const Domain &domain)
     {
+      if (!due(domain.time))
+        return;
       line.clear();
       if (time)
         line.push_back(domain.time);
       values(domain, line);
+      write_line(line);
+    }
+
+    void
+    Recorder::write_line(const std::vector<double> &numbers)
+    {
       // room for each number: sign, the digits, the point and an exponent
       const std::size_t start = buffer.size(), room = precision_text_room(precision) + 1;
-      buffer.resize(start + line.size() * room + 1);
+      buffer.resize(start + numbers.size() * room + 1);
       char *out = buffer.data() + start;
-      for (std::size_t i = 0; i < line.size(); ++i)
+      for (std::size_t i = 0; i < numbers.size(); ++i)
         {
           if (i > 0)
             *out++ = ' ';
-          out = write_precision_text(out, line[i], precision);
+          out = write_precision_text(out, numbers[i], precision);
         }
       *out++ = '\n';
       buffer.resize(out - buffer.data());
@@ -256,7 +277,7 @@ namespace poundfe
     }
 
     NodeRecorder::NodeRecorder(NodeRecorderSpec s)
-      : Recorder(s.file, s.time, s.precision)
+      : Recorder(s)
       , spec(std::move(s))
     {}
 
@@ -267,30 +288,38 @@ namespace poundfe
       std::map<int, std::vector<double>> reactions;
       if (spec.response == Response::reaction)
         reactions = domain.reactions();
+      // -timeSeries: each DOF's series' factor now, added to disp, vel and
+      // accel (OpenSees adds 0 without one)
+      const auto offset = [&](const std::size_t j) {
+        return j < spec.series.size() && spec.series[j] ? spec.series[j]->at(domain.time) : 0.0;
+      };
       for (const int tag : spec.nodes)
         {
           const Node &node = domain.node(tag);
-          for (const unsigned int k : spec.dofs)
-            switch (spec.response)
-              {
-                case Response::disp:
-                  line.push_back(node.disp.at(k));
-                  break;
-                case Response::vel:
-                  line.push_back(node.vel.at(k));
-                  break;
-                case Response::accel:
-                  line.push_back(node.accel.at(k));
-                  break;
-                case Response::reaction:
-                  line.push_back(reactions.at(tag).at(k));
-                  break;
-              }
+          for (std::size_t j = 0; j < spec.dofs.size(); ++j)
+            {
+              const unsigned int k = spec.dofs[j];
+              switch (spec.response)
+                {
+                  case Response::disp:
+                    line.push_back(node.disp.at(k) + offset(j));
+                    break;
+                  case Response::vel:
+                    line.push_back(node.vel.at(k) + offset(j));
+                    break;
+                  case Response::accel:
+                    line.push_back(node.accel.at(k) + offset(j));
+                    break;
+                  case Response::reaction:
+                    line.push_back(reactions.at(tag).at(k));
+                    break;
+                }
+            }
         }
     }
 
     ElementRecorder::ElementRecorder(ElementRecorderSpec s)
-      : Recorder(s.file, s.time, s.precision)
+      : Recorder(s)
       , spec(std::move(s))
     {}
 

@@ -98,7 +98,7 @@ status=$?
 expect_line() { grep -qxF -- "$1" "$work/tcl/log" || { cat "$work/tcl/log"; fail "no line '$1'"; }; }
 expect_line "argc 4 argv $work/tcl -x --output y"
 expect_line "nodes 3 elements 1 2 3"
-expect_line "caught: remove: poundfe does not support it"
+expect_line "caught: remove element: poundfe does not support it"
 expect_line "caught: element zeroLength option '-dampMats': poundfe does not support it"
 expect_line "analyze 0 disp 0.06"
 grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
@@ -381,6 +381,40 @@ printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 
   | bad link-mass-negative "6: element: twoNodeLink 1: -mass must not be negative" || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass 1.0 -mass 2.0\n' \
   | bad link-mass-twice "6: element: twoNodeLink 1: -mass given twice" || exit 1
+# the recorders' options, Drift, the Envelope recorders, remove, fixX|Y|Z,
+# getTime's format, testIter
+echo "recorder Node -file $work/x.out -dT -0.1 -node 2 -dof 1 disp" \
+  | bad record-interval '5: recorder: -dT must be >= 0' || exit 1
+echo "recorder Node -file $work/x.out -rTolDt x -node 2 -dof 1 disp" \
+  | bad record-tolerance "5: recorder: expected a number for -rTolDt, got 'x'" || exit 1
+echo "recorder EnvelopeNode -file $work/x.out -closeOnWrite -node 2 -dof 1 disp" \
+  | bad envelope-close "5: recorder EnvelopeNode option '-closeOnWrite': poundfe does not support it" || exit 1
+echo "recorder Node -file $work/x.out -timeSeries 7 -node 2 -dof 1 accel" \
+  | bad record-series '5: recorder: timeSeries 7 does not exist' || exit 1
+printf 'timeSeries Linear 1\nrecorder Node -file %s/x.out -timeSeries 1 1 -node 2 -dof 1 accel\n' "$work" \
+  | bad record-series-count '6: recorder: -timeSeries gives 2 series for 1 DOFs' || exit 1
+echo "recorder Drift -file $work/x.out -iNode 1 -jNode 2 -dof 1 -perpDirn 2" \
+  | bad drift-direction '5: recorder: -perpDirn 2 is not one of 1 to ndm' || exit 1
+echo "recorder Drift -file $work/x.out -iNode 1 2 -jNode 2 -dof 1 -perpDirn 1" \
+  | bad drift-pairs '5: recorder Drift needs as many -jNode as -iNode nodes, one at least' || exit 1
+echo "recorder Drift -file $work/x.out -frob 2" \
+  | bad drift-option "5: recorder Drift option '-frob': poundfe does not support it" || exit 1
+echo "recorder Drift -file $work/x.out -iNode 9 -jNode 2" \
+  | bad drift-node '5: recorder: node 9 does not exist' || exit 1
+echo "recorder EnvelopeElement -file $work/x.out -ele 5 force" \
+  | bad envelope-element '5: recorder: element 5 does not exist' || exit 1
+echo "remove recorder 7" | bad remove-recorder '5: remove: recorder 7 does not exist' || exit 1
+echo "remove recorders extra" \
+  | bad remove-recorders "5: remove recorders word 'extra': poundfe does not support it" || exit 1
+echo "remove element 1" | bad remove-element '5: remove element: poundfe does not support it' || exit 1
+echo "fixX 0.0 1 1" | bad fix-x '5: fixX: needs 1 to ndf = 1 fixities, got 2' || exit 1
+echo "fixY 0.0 1" | bad fix-y '5: fixY: the model has no axis 2 (-ndm 1)' || exit 1
+echo "fixX 0.0 1 -tol" | bad fix-tolerance '5: fixX: missing the tolerance' || exit 1
+echo "getTime %d" \
+  | bad time-format "5: getTime: format '%d' is not one floating-point conversion" || exit 1
+echo "testIter" | bad test-iterations '5: testIter: no convergence test' || exit 1
+printf 'test RelativeNormDispIncr 1e-8 10\nalgorithm NewtonLineSearch\nintegrator Newmark 0.5 0.25\nanalysis Transient\nanalyze 1 0.01\n' \
+  | bad relative-search '9: analyze: test RelativeNormDispIncr with algorithm NewtonLineSearch: poundfe does not support it' || exit 1
 # region and setElementRayleighDampingFactors
 echo "region 1 -ele 1 -rayleigh 0.1 0.0 0.0" | bad region-factors '5: region: missing bKc' || exit 1
 echo "region 1 -ele 1 -frob 2" | bad region-option "5: region 1: '-frob' where an option is due" || exit 1

@@ -72,7 +72,7 @@ pattern Plain 1 1 { load 3 1.0 0.0 0.0 }
 integrator DisplacementControl 3 1 0.01
 analysis Static
 analyze 3
-puts "time [getTime]"
+puts "time [getTime %.17g]"
 puts "force [eleResponse 1 force] [eleResponse 2 force]"
 puts "local [eleResponse 1 localForce] [eleResponse 2 localForce]"
 puts "section [eleResponse 1 section 2 deformation]"

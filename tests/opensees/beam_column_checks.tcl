@@ -122,7 +122,7 @@ integrator DisplacementControl 2 1 0.001
 analysis Static
 analyze 7
 check "DisplacementControl u" [nodeDisp 2 1] 0.007 1e-12
-check "DisplacementControl lambda" [getTime] [expr {3*$E*$In/($L*$L*$L)*0.007}] 1e-10
+check "DisplacementControl lambda" [getTime %.17g] [expr {3*$E*$In/($L*$L*$L)*0.007}] 1e-10
 # back, with a new integrator: exactly to -0.002
 integrator DisplacementControl 2 1 -0.0015
 analyze 6

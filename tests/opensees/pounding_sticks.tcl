@@ -13,7 +13,7 @@
 # series with an elastic brace) or SeriesIter (Steel01 and Steel02 links in
 # series, -iter 10 1e-12); optionally the algorithm
 # (Newton, the default, or ModifiedNewton) and the test (NormDispIncr, the
-# default, or EnergyIncr) and the integrator's words (Newmark 0.5 0.25, the
+# default, EnergyIncr or RelativeNormDispIncr) and the integrator's words (Newmark 0.5 0.25, the
 # default, or e.g. HHT 0.7).
 set out [lindex $argv 0]
 set law [lindex $argv 1]
@@ -108,6 +108,8 @@ numberer Plain
 system BandGeneral
 if {$test eq "EnergyIncr"} {
     test EnergyIncr 1.0e-14 50
+} elseif {$test eq "RelativeNormDispIncr"} {
+    test RelativeNormDispIncr 1.0e-8 50
 } else {
     test NormDispIncr 1.0e-10 50
 }

@@ -9,7 +9,9 @@ and twoNodeLink, Series and ViscousDamper made with OpenSeesPy's words."""
 
 import math
 import os
+import shutil
 import sys
+import tempfile
 
 import numpy as np
 
@@ -98,6 +100,29 @@ class ConventionsTest(TestCase):
         eigenvalues = ops.eigen(1)
         self.assertIsInstance(eigenvalues, list)  # a list, also of one mode
         self.assertAlmostEqual(eigenvalues[0], 100.0, delta=1e-12)
+
+    def test_queries_return_types(self):
+        sdof()
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(2, 50.0)
+        directory = tempfile.mkdtemp()
+        envelope = os.path.join(directory, 'envelope.out')
+        tag = ops.recorder('EnvelopeNode', '-file', envelope, '-node', 2, '-dof', 1, 'disp')
+        self.assertIs(type(tag), int)
+        static_analysis(steps=2)
+        ops.test('NormDispIncr', 1.0e-12, 6)
+        ops.analyze(1)
+        self.assertEqual(ops.testIter(), 2)  # linear: the second increment is 0
+        norms = ops.testNorm()
+        self.assertEqual(len(norms), 6)
+        self.assertAlmostEqual(norms[0], 0.25, delta=1e-15)
+        self.assertEqual(norms[1:], [0.0] * 5)
+        self.assertEqual((ops.getNP(), ops.getPID()), (1, 0))
+        self.assertIs(type(ops.getTime()), float)  # OpenSeesPy's float, not Tcl's text
+        self.assertIsNone(ops.remove('recorder', tag))  # its file written now
+        self.assertEqual(np.loadtxt(envelope).tolist(), [0.25, 0.25, 0.25])
+        shutil.rmtree(directory)
 
     def test_failed_analysis_is_a_negative_int(self):
         sdof()

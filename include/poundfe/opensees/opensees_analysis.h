@@ -51,6 +51,7 @@
 #include <Eigen/LU>
 #include <Eigen/SparseCore>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -69,7 +70,9 @@ namespace poundfe
       {
         norm_disp_incr,
         norm_unbalance,
-        energy_incr
+        energy_incr,
+        /// |dx| over the step's first |dx| (CTestRelativeNormDispIncr)
+        relative_norm_disp_incr
       } kind                     = Kind::norm_unbalance;
       double       tolerance      = 1e-6; // OpenSees's default test
       unsigned int max_iterations = 25;
@@ -155,6 +158,14 @@ namespace poundfe
       /// The script changed the test, algorithm or integrator of this analysis.
       void configure(const AnalysisOptions &options);
       AnalysisCounts         counts;
+      /// The script's test at the last step that ran it (testIter,
+      /// testNorm: CTest's currentIter and norms, maxIter of them, those
+      /// not reached 0).
+      unsigned int        test_iterations = 0;
+      std::vector<double> test_norms;
+      /// RelativeNormDispIncr's first norm of the step, of the script's test
+      /// and of BFGS's inner copy.
+      std::array<double, 2> first_norms{{0, 0}};
 
     private:
       void   number();
@@ -183,7 +194,7 @@ namespace poundfe
       /// iteration when it converged (or goes on past the limit, print flag
       /// 5), 0 to iterate again, -1 (with why) when it failed.
       int    judge(unsigned int iteration, unsigned int max_iterations, const Vector &dx,
-                   const Vector &r, std::string &why);
+                   const Vector &r, std::string &why, bool script_test = true);
       /// U += dx with V, A (Newmark's or HHT's update) and the elements at
       /// the evaluation point.
       bool   apply_increment(const Vector &dx, std::string &why);
@@ -219,6 +230,9 @@ namespace poundfe
         double       mass;
       };
       std::vector<InertiaTerm> inertia_terms;
+      /// The second ground-motion load of the masses that take it twice
+      /// (Domain::LumpedMass::ground_load_twice), after the inertia terms.
+      std::vector<InertiaTerm> second_ground_terms;
       /// Whether an element takes beam loads (the residual applies them).
       bool            beam_loads_taken = false;
       /// The ground acceleration at ground_time (per DOF), the residual's

@@ -265,9 +265,14 @@ namespace poundfe
       {
         int    element = 0, node = 0;
         double mass = 0;
-        /// Its ground-motion load -m a_g enters the reactions (a truss's:
-        /// Truss::getResistingForce subtracts its theLoad).
+        /// Its ground-motion load -m a_g enters the reactions (a truss's
+        /// and a beam-column's: their getResistingForce subtracts theLoad).
         bool load_in_reaction = false;
+        /// Its ground-motion load acts twice: OpenSees 3.8's ElasticBeam2d
+        /// subtracts its inertia load Q in getResistingForce (when rho is
+        /// not 0) and again in getResistingForceIncInertia, so that a
+        /// 2D elasticBeamColumn's -mass takes 2 m a_g (doc/user-guide.md).
+        bool ground_load_twice = false;
       };
       std::vector<LumpedMass> lumped_masses;
       double                                  time = 0; // committed

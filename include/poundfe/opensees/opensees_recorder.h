@@ -1,4 +1,5 @@
-// OpenSees's Node and Element recorders: after each committed step, one
+// OpenSees's Node, Element and Drift recorders: after each committed step
+// (or, with -dT, each step at least dT after the last record), one
 // line of the committed time (-time) and then each node's DOFs of one
 // response (disp, vel, accel, reaction), or each element's values of one
 // response (Element::response: force, localForce, basicForce,
@@ -8,12 +9,14 @@
 // std::to_chars gives in general format with precision p;
 // write_precision_text below gives the same text faster). The file
 // appears complete when the script ends (or at wipe), and not at all when
-// it fails.
+// it fails. The Envelope recorders keep each value's extremes and write
+// three rows when they finish.
 #ifndef poundfe_opensees_opensees_recorder_h
 #define poundfe_opensees_opensees_recorder_h
 
 #include <poundfe/opensees/opensees_domain.h>
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -45,10 +48,19 @@ namespace poundfe
     /// infinities, NaN), go to std::to_chars.
     char *write_precision_text(char *out, double x, int precision);
 
-    struct NodeRecorderSpec
+    /// What every recorder's output takes: -file, -time, -precision, and
+    /// when it records (-dT, -rTolDt: OpenSees's deltaT and relDeltaTTol).
+    struct OutputSpec
     {
-      std::string               file;
-      bool                      time = false;
+      std::string file;
+      bool        time      = false;
+      int         precision = 6;
+      double      interval  = 0;    // -dT: 0 records at every commit
+      double      interval_tolerance = 1e-5; // -rTolDt
+    };
+
+    struct NodeRecorderSpec : OutputSpec
+    {
       std::vector<int>          nodes;
       std::vector<unsigned int> dofs; // 0-based
       enum class Response
@@ -57,61 +69,117 @@ namespace poundfe
         vel,
         accel,
         reaction
-      } response    = Response::disp;
-      int precision = 6;
+      } response = Response::disp;
+      /// -timeSeries: a series for each DOF (or none) whose factor at the
+      /// time is added to the value (absolute accelerations).
+      std::vector<std::shared_ptr<const TimeSeries>> series;
     };
 
     /// A recorder's file: lines of numbers, written when the script ends.
     class Recorder
     {
     public:
-      Recorder(const std::string &file, bool time, int precision);
+      explicit Recorder(const OutputSpec &output);
       virtual ~Recorder();
-      /// One line of the domain's committed state.
-      void record(const Domain &domain);
+      /// One line of the domain's committed state, when it is due.
+      virtual void record(const Domain &domain);
       /// Writes the last lines and puts the file in place.
-      void finish();
+      virtual void finish();
 
     protected:
       /// The line's values after the time.
       virtual void values(const Domain &domain, std::vector<double> &line) const = 0;
+      /// Whether a record at `time` is due (OpenSees's recorders: always
+      /// without -dT, else when time - next >= -dT rTolDt, the next then
+      /// time + dT), and the next due time moved on if so.
+      bool due(double time);
+      /// One line of numbers into the file's text.
+      void write_line(const std::vector<double> &numbers);
+      const bool time;
 
     private:
       std::unique_ptr<AtomicFile> file;
       std::string                 buffer;
       std::vector<double>         line; // the values of one record, its storage kept
-      bool                        time;
       int                         precision;
+      double                      interval, interval_tolerance, next_time = 0;
     };
 
     class NodeRecorder : public Recorder
     {
     public:
+      using Spec = NodeRecorderSpec;
       explicit NodeRecorder(NodeRecorderSpec spec);
 
-    private:
+    protected:
       void             values(const Domain &domain, std::vector<double> &line) const override;
       NodeRecorderSpec spec;
     };
 
-    struct ElementRecorderSpec
+    struct ElementRecorderSpec : OutputSpec
     {
-      std::string              file;
-      bool                     time = false;
       std::vector<int>         elements;
       std::vector<std::string> response; // OpenSees's words ("section", "1", "force")
-      int                      precision = 6;
     };
 
     class ElementRecorder : public Recorder
     {
     public:
+      using Spec = ElementRecorderSpec;
       explicit ElementRecorder(ElementRecorderSpec spec);
 
-    private:
+    protected:
       void values(const Domain &domain, std::vector<double> &line) const override;
       ElementRecorderSpec spec;
     };
+
+    /// recorder Drift (DriftRecorder.cpp): for each pair of nodes i, j whose
+    /// coordinates differ along perpDirn, (u_j - u_i) / |x_j - x_i| along
+    /// -dof, after the time (the domain's) with -time; a pair at the same
+    /// coordinate is left out, as OpenSees leaves it.
+    struct DriftRecorderSpec : OutputSpec
+    {
+      std::vector<int> i_nodes, j_nodes;
+      unsigned int     dof = 0, perpendicular = 1; // 0-based
+    };
+
+    class DriftRecorder : public Recorder
+    {
+    public:
+      DriftRecorder(DriftRecorderSpec spec, const Domain &domain);
+
+    private:
+      void values(const Domain &domain, std::vector<double> &line) const override;
+      /// The pairs kept, each with 1 / its length.
+      std::vector<std::array<int, 2>> pairs;
+      std::vector<double>             inverse_lengths;
+      unsigned int                    dof;
+    };
+
+    /// recorder EnvelopeNode and EnvelopeElement (EnvelopeNodeRecorder.cpp,
+    /// EnvelopeElementRecorder.cpp): the values of a Node or Element
+    /// recorder at each record that is due, kept as three rows, the least,
+    /// the largest and the largest magnitude of each, written when the
+    /// recorder finishes (the script's end, wipe, remove recorders); with
+    /// -time each value is preceded by the time it was reached (of the
+    /// magnitude: the time it last grew).
+    template <typename Values>
+    class EnvelopeRecorder : public Values
+    {
+    public:
+      explicit EnvelopeRecorder(typename Values::Spec spec);
+      void record(const Domain &domain) override;
+      void finish() override;
+
+    private:
+      std::vector<double> current;
+      /// Rows min, max, max |.|: value k at 2k + 1 after its time with
+      /// -time, else at k.
+      std::array<std::vector<double>, 3> rows;
+      bool                               first = true;
+    };
+    using EnvelopeNodeRecorder    = EnvelopeRecorder<NodeRecorder>;
+    using EnvelopeElementRecorder = EnvelopeRecorder<ElementRecorder>;
   } // namespace opensees
 } // namespace poundfe
 
