@@ -85,10 +85,19 @@ namespace poundfe
                  " yet (" + e.label + ")";
     if (system.n_equations() <= parameters.max_dense_equations)
       return {};
-    const std::string beyond = " on models of more than " +
-                               std::to_string(parameters.max_dense_equations) +
-                               " equations (Contact/Dense matrix limit; this one has " +
-                               std::to_string(system.n_equations()) + ")";
+    return sparse_unsupported(system, elements, parameters,
+                              " on models of more than " +
+                                std::to_string(parameters.max_dense_equations) +
+                                " equations (Contact/Dense matrix limit; this one has " +
+                                std::to_string(system.n_equations()) + ")");
+  }
+
+  std::string
+  MoreauJeanIntegrator::sparse_unsupported(const LinearSystem         &system,
+                                           const NonlinearElements    *elements,
+                                           const MoreauJeanParameters &parameters,
+                                           const std::string          &beyond)
+  {
     if (!system.modal_damping.empty())
       return "does not take modal damping" + beyond;
     if (parameters.linear_solver != "eigen-ldlt" && parameters.linear_solver != "umfpack")
@@ -141,7 +150,8 @@ namespace poundfe
   MoreauJeanIntegrator::MoreauJeanIntegrator(const LinearSystem &system_,
                                              const MoreauJeanParameters &parameters_,
                                              std::vector<UnilateralContact> contacts_,
-                                             NonlinearElements *elements_)
+                                             NonlinearElements *elements_,
+                                             const JacobianStorage storage)
     : system(system_)
     , parameters(parameters_)
     , contact_list(std::move(contacts_))
@@ -176,8 +186,14 @@ namespace poundfe
           element_equations.push_back(&(*elements)[h].equations());
           bases[h] = (*elements)[h].tangent_basis();
         }
-    jacobian = std::make_unique<MoreauJeanMatrix>(base, modal, element_equations,
-                                                  n <= parameters.max_dense_equations,
+    // beyond the limit sparse; within it dense where sparse is refused,
+    // else the cheaper (moreau_jean_matrix.h), unless the caller chose
+    const JacobianStorage chosen =
+      n > parameters.max_dense_equations ? JacobianStorage::sparse :
+      storage != JacobianStorage::automatic ? storage :
+      sparse_unsupported(system, elements, parameters, "").empty() ? JacobianStorage::automatic :
+                                                                     JacobianStorage::dense;
+    jacobian = std::make_unique<MoreauJeanMatrix>(base, modal, element_equations, chosen,
                                                   parameters.linear_solver);
     for (const UnilateralContact &c : contact_list)
       {
@@ -365,9 +381,12 @@ namespace poundfe
     Assert(u0.size() == n && v0.size() == n, dealii::ExcDimensionMismatch(u0.size(), n));
     reset_state(n_elements, parameters.time_step);
     impulse_log.clear();
+    fallback_solves = 0;
     unattached_loss = 0;
     refactor        = true;
     impulses_last_step.assign(contact_list.size(), 0.0);
+    impulses_this_step.assign(contact_list.size(), 0.0);
+    tangential_this_step.assign(contact_list.size(), 0.0);
     initial_stored.assign(n_elements, 0.0);
     u          = u0;
     v          = v0;
@@ -425,30 +444,60 @@ namespace poundfe
     return W;
   }
 
-  void
-  MoreauJeanIntegrator::count_solve(const LcpSolution &solution, const unsigned int n_contacts,
-                                    const char *problem)
+  bool
+  MoreauJeanIntegrator::is_solved(const LcpSolution &solution) const
   {
-    ContactProblemCounts &counts = stats.contact;
-    ++counts.solves;
-    counts.iterations += std::max(solution.iterations, 0);
-    counts.max_iterations =
-      std::max<unsigned int>(counts.max_iterations, std::max(solution.iterations, 0));
-    counts.max_residual = std::max(counts.max_residual, solution.residual);
     // Success is judged by the program's own residual (the same measure for
     // every solver), not by Siconos's status: Lemke on the friction problem
     // reports success on unsolved problems, NSGS failure on solved ones.
     const double tolerance =
       has_friction ? parameters.friction.tolerance : parameters.lcp.tolerance;
-    if (!(solution.residual <= tolerance) || !solution.z.allFinite())
-      throw NumericalError("step " + std::to_string(step_count + 1) + " (t = " +
-                           number_text(current_time + parameters.time_step) + " s): Siconos's " +
-                           solution.solver + " did not solve the " + problem + " of " +
-                           std::to_string(n_contacts) + " contacts: residual " +
-                           number_text(solution.residual) + " above the tolerance " +
-                           number_text(tolerance) + " after " +
-                           std::to_string(solution.iterations) + " iterations (Siconos status " +
-                           std::to_string(solution.info) + ")");
+    return solution.residual <= tolerance && solution.z.allFinite();
+  }
+
+  namespace
+  {
+    /// "Siconos's S ... residual r above the tolerance t after k iterations
+    /// (Siconos status i)" of one solver's attempt.
+    std::string
+    attempt_text(const LcpSolution &solution, const std::string &what, const double tolerance)
+    {
+      return "Siconos's " + solution.solver + what + ": residual " +
+             number_text(solution.residual) + " above the tolerance " + number_text(tolerance) +
+             " after " + std::to_string(solution.iterations) + " iterations (Siconos status " +
+             std::to_string(solution.info) + ")";
+    }
+  } // namespace
+
+  void
+  MoreauJeanIntegrator::count_solve(const LcpSolution &solution, const unsigned int n_contacts,
+                                    const char *problem, const LcpSolution *first_attempt)
+  {
+    ContactProblemCounts &counts = stats.contact;
+    ++counts.solves;
+    // a solve's iterations count both attempts, as a step's Newton iterations do
+    int iterations = 0;
+    for (const LcpSolution *attempt : {first_attempt, &solution})
+      if (attempt)
+        iterations += std::max(attempt->iterations, 0);
+    counts.iterations += iterations;
+    counts.max_iterations = std::max<unsigned int>(counts.max_iterations, iterations);
+    counts.max_residual = std::max(counts.max_residual, solution.residual);
+    if (is_solved(solution))
+      {
+        fallback_solves += first_attempt ? 1 : 0;
+        return;
+      }
+    const double tolerance =
+      has_friction ? parameters.friction.tolerance : parameters.lcp.tolerance;
+    const std::string what = " did not solve the " + std::string(problem) + " of " +
+                             std::to_string(n_contacts) + " contacts";
+    throw NumericalError("step " + std::to_string(step_count + 1) + " (t = " +
+                         number_text(current_time + parameters.time_step) + " s): " +
+                         (first_attempt ? attempt_text(*first_attempt, what, tolerance) +
+                                            "; nor did the fallback, " +
+                                            attempt_text(solution, "", tolerance)
+                                        : attempt_text(solution, what, tolerance)));
   }
 
   Vector
@@ -483,8 +532,21 @@ namespace poundfe
         mu[k]        = contact_list[c].friction;
       }
     const LcpSolution solution = solve_friction_contact(delassus(), q, mu, parameters.friction);
-    count_solve(solution, m, "friction-contact problem");
-    return solution.z;
+    if (is_solved(solution))
+      {
+        count_solve(solution, m, "friction-contact problem");
+        return solution.z;
+      }
+    // NSGS can stall short of the tolerance where Lemke's pivots solve the
+    // problem exactly, and Lemke can stop on an unsolved sticking contact
+    // where NSGS converges: the same problem by the other method
+    FrictionContactOptions fallback = parameters.friction;
+    fallback.solver = parameters.friction.solver == FrictionSolverKind::lemke ?
+                        FrictionSolverKind::nsgs :
+                        FrictionSolverKind::lemke;
+    const LcpSolution second = solve_friction_contact(delassus(), q, mu, fallback);
+    count_solve(second, m, "friction-contact problem", &solution);
+    return second.z;
   }
 
   double
@@ -611,8 +673,10 @@ namespace poundfe
   void
   MoreauJeanIntegrator::record_impulses(const double t_end)
   {
-    std::vector<double> this_step(contact_list.size(), 0.0), tangential(contact_list.size(), 0.0);
-    const unsigned int  per_contact = has_friction ? 2 : 1;
+    std::vector<double> &this_step = impulses_this_step, &tangential = tangential_this_step;
+    std::fill(this_step.begin(), this_step.end(), 0.0);
+    std::fill(tangential.begin(), tangential.end(), 0.0);
+    const unsigned int per_contact = has_friction ? 2 : 1;
     for (unsigned int j = 0; j < active.size(); ++j)
       if (impulse[per_contact * j] > 0)
         {
@@ -663,7 +727,7 @@ namespace poundfe
                          {std::isfinite(end_gap) ? -end_gap : 0.0, -normal_velocity(c, v_end),
                           force, point, 0, tangential_force});
         }
-    impulses_last_step = this_step;
+    std::swap(impulses_last_step, impulses_this_step);
   }
 
   void

@@ -122,9 +122,15 @@ namespace poundfe
     /// `elements` may be null; gap elements are left alone (the contacts
     /// replace them). Throws NumericalError from advance() when Siconos
     /// fails or Newton does not converge.
+    /// J is sparse beyond parameters.max_dense_equations; within it as
+    /// `storage` asks (`automatic`: dense, or sparse where allowed and
+    /// cheaper, integration/moreau_jean_matrix.h).
     MoreauJeanIntegrator(const LinearSystem &system, const MoreauJeanParameters &parameters,
                          std::vector<UnilateralContact> contacts,
-                         NonlinearElements *elements = nullptr);
+                         NonlinearElements *elements = nullptr,
+                         JacobianStorage storage = JacobianStorage::automatic);
+    /// Whether J is kept dense.
+    bool dense_jacobian() const { return jacobian->is_dense(); }
 
     void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
     void advance(const LoadFunction &load) override;
@@ -144,8 +150,17 @@ namespace poundfe
     unsigned long      n_lcps() const { return stats.contact.solves; }
     int                max_lcp_iterations() const { return stats.contact.max_iterations; }
     double             max_lcp_residual() const { return stats.contact.max_residual; }
+    /// Friction-contact problems the chosen solver left unsolved and the
+    /// fallback solved.
+    unsigned long      n_fallback_solves() const { return fallback_solves; }
 
   private:
+    /// Why J cannot be sparse (modal damping, the linear solver, an element
+    /// tangent); `beyond` closes each reason. Empty when it can.
+    static std::string sparse_unsupported(const LinearSystem &system,
+                                          const NonlinearElements *elements,
+                                          const MoreauJeanParameters &parameters,
+                                          const std::string &beyond);
     /// g_a(u) (exact, also in plan) and U_a(v) = H_a v.
     double gap(unsigned int a, const Vector &x) const;
     /// The geometry of contact in plan a at displacements x.
@@ -173,14 +188,20 @@ namespace poundfe
     /// (normal) for each, and with friction P_T after them, in the order
     /// of `active` (the rows of `rows`: the active contacts' H, then T).
     Vector contact_impulses(const Vector &v_free);
-    /// The same with friction: Siconos's fc2d on the normal and tangent rows.
+    /// The same with friction: Siconos's fc2d on the normal and tangent rows,
+    /// by the chosen solver and, when it leaves the problem unsolved, by
+    /// the fallback (Lemke's, or NSGS when Lemke is the chosen one).
     Vector friction_impulses(const Vector &v_free);
     /// W of the active rows with J's factor in hand (kept while neither
     /// changes).
     const Eigen::MatrixXd &delassus();
-    /// Count a contact problem's solve; NumericalError when it failed.
+    /// Whether a contact problem's solution meets the tolerance by the
+    /// program's residual (Siconos's status aside).
+    bool   is_solved(const LcpSolution &solution) const;
+    /// Count a contact problem's solve; NumericalError naming the solver
+    /// (and the fallback's, when one ran) when it failed.
     void   count_solve(const LcpSolution &solution, unsigned int n_contacts,
-                       const char *problem);
+                       const char *problem, const LcpSolution *first_attempt = nullptr);
     /// The index set (contacts closed, or closing within the step) into
     /// `active`, their rows (H's, then T's with friction) into `rows`.
     void   find_active_contacts();
@@ -237,8 +258,11 @@ namespace poundfe
     std::vector<ContactImpulse>    impulse_log;
     /// The energy lost at impacts of contacts without a gap element.
     double                         unattached_loss = 0;
-    std::vector<double>            impulses_last_step;
+    /// Each contact's normal and tangential impulse of the step in hand
+    /// (sized once) and the normal ones of the step before.
+    std::vector<double>            impulses_this_step, tangential_this_step, impulses_last_step;
     std::string                    solver_name, friction_solver_name;
+    unsigned long                  fallback_solves = 0;
   };
 } // namespace poundfe
 
