@@ -51,17 +51,19 @@ namespace poundfe
         const auto gap = std::find_if(model.gaps.begin(), model.gaps.end(),
                                       [&](const Gap &g) { return g.label == e.label; });
         Assert(gap != model.gaps.end(), dealii::ExcMessage("a gap element without its gap"));
-        if (gap->on_column || (!gap->in_plan && e.rank() != 1))
-          return "takes gaps between floors, against barriers and in plan, not a slab against "
-                 "a column yet (" + e.label + ")";
+        Assert(gap->in_plan || gap->on_column || e.rank() == 1,
+               dealii::ExcMessage("a gap between floors with a closure of rank > 1"));
         UnilateralContact contact;
         contact.label       = e.label;
         contact.equations   = e.equations();
         contact.restitution = restitution;
         contact.element     = h;
         contact.in_plan     = gap->in_plan;
+        contact.on_column   = gap->on_column;
         if (gap->in_plan)
           contact.plan = gap->plan;
+        else if (gap->on_column)
+          contact.column = gap->column;
         else
           {
             const Eigen::MatrixXd B = e.tangent_basis(); // the closure's coefficients
@@ -118,8 +120,14 @@ namespace poundfe
     for (const UnilateralContact &contact : contacts)
       for (unsigned int i = 0; i < contact.equations.size(); ++i)
         {
-          const int  equation = contact.equations[i];
-          const bool acts     = contact.in_plan || contact.coefficients[i] != 0;
+          const int          equation = contact.equations[i];
+          const unsigned int n_column = contact.equations.size() - 3;
+          // a column's DOF acts where its Hermite weight at the slab is nonzero
+          const bool acts =
+            contact.in_plan ||
+            (contact.on_column ? i >= n_column || contact.column.weights[i] != 0 ||
+                                   contact.column.weights[n_column + i] != 0 :
+                                 contact.coefficients[i] != 0);
           if (equation >= 0 && acts && !(system.mass.coeff(equation, equation) > 0))
             return "needs mass on the equations a contact acts on (an impulse needs inertia): "
                    "gap " + contact.label + " acts on an equation without mass";
@@ -195,6 +203,21 @@ namespace poundfe
                                                                      JacobianStorage::dense;
     jacobian = std::make_unique<MoreauJeanMatrix>(base, modal, element_equations, chosen,
                                                   parameters.linear_solver);
+    column_bases.resize(contact_list.size());
+    for (unsigned int a = 0; a < contact_list.size(); ++a)
+      if (contact_list[a].on_column)
+        {
+          // z = B^T u: w = W u_column (W row-major, 2 x n_column), the slab's own
+          const UnilateralContact &c        = contact_list[a];
+          const unsigned int       n_column = c.equations.size() - 3;
+          Assert(c.column.weights.size() == 2 * n_column, dealii::ExcMessage("column weights"));
+          Eigen::MatrixXd &B = column_bases[a];
+          B.setZero(n_column + 3, 5);
+          for (unsigned int r = 0; r < 2; ++r)
+            for (unsigned int j = 0; j < n_column; ++j)
+              B(j, r) = c.column.weights[r * n_column + j];
+          B.bottomRightCorner<3, 3>().setIdentity();
+        }
     for (const UnilateralContact &c : contact_list)
       {
         Assert(!c.in_plan || c.equations.size() == 6,
@@ -202,7 +225,7 @@ namespace poundfe
         Assert(c.friction == 0 || c.in_plan,
                dealii::ExcMessage("friction on a contact without a tangent (not in plan)"));
         has_friction      = has_friction || c.friction > 0;
-        has_plan_contacts = has_plan_contacts || c.in_plan;
+        has_plan_contacts = has_plan_contacts || c.in_plan || c.on_column;
       }
     if (!lcp_solver_available())
       return;
@@ -222,14 +245,28 @@ namespace poundfe
     return plan_contact_state(contact_list[a].plan, q);
   }
 
+  ColumnContactState
+  MoreauJeanIntegrator::column_state(const unsigned int a, const Vector &x) const
+  {
+    const std::vector<int> &equations = contact_list[a].equations;
+    Vector5                 z         = Vector5::Zero();
+    for (unsigned int i = 0; i < equations.size(); ++i)
+      if (equations[i] >= 0)
+        z += x[equations[i]] * column_bases[a].row(i).transpose();
+    return column_contact_state(contact_list[a].column, z);
+  }
+
   double
   MoreauJeanIntegrator::gap(const unsigned int a, const Vector &x) const
   {
-    if (!contact_list[a].in_plan)
-      return contact_list[a].initial_gap + H.row(a).dot(x);
-    const PlanContactState state = plan_state(a, x);
-    // edges that do not overlap cannot touch: open however far they cross
-    return state.defined ? state.gap : std::numeric_limits<double>::infinity();
+    const UnilateralContact &contact = contact_list[a];
+    if (!contact.in_plan && !contact.on_column)
+      return contact.initial_gap + H.row(a).dot(x);
+    // a point beyond the edge's ends cannot touch: open however far it crosses
+    const auto open = [](const auto &state) {
+      return state.defined ? state.gap : std::numeric_limits<double>::infinity();
+    };
+    return contact.in_plan ? open(plan_state(a, x)) : open(column_state(a, x));
   }
 
   void
@@ -240,6 +277,18 @@ namespace poundfe
     for (unsigned int a = 0; a < contact_list.size(); ++a)
       {
         const UnilateralContact &contact = contact_list[a];
+        if (contact.on_column)
+          {
+            // dg/du = B dg/dz at the step's start (no tangent: frictionless)
+            const ColumnContactState state = column_state(a, u);
+            if (!state.defined)
+              continue;
+            const Eigen::VectorXd gradient = column_bases[a] * state.gradient;
+            for (unsigned int i = 0; i < contact.equations.size(); ++i)
+              if (contact.equations[i] >= 0 && gradient[i] != 0)
+                normal.emplace_back(a, contact.equations[i], gradient[i]);
+            continue;
+          }
         if (!contact.in_plan)
           {
             for (unsigned int i = 0; i < contact.equations.size(); ++i)
@@ -720,6 +769,9 @@ namespace poundfe
           std::array<double, 2> point{{std::nan(""), std::nan("")}};
           if (contact_list[c].in_plan)
             if (const PlanContactState state = plan_state(c, u); state.defined)
+              point = {{state.point.x, state.point.y}};
+          if (contact_list[c].on_column)
+            if (const ColumnContactState state = column_state(c, u); state.defined)
               point = {{state.point.x, state.point.y}};
           impacts.record(contact_list[c].element, current_time, t_end,
                          {std::max(-gap(c, u), 0.0), -normal_velocity(c, v), force, point, 0,

@@ -55,6 +55,7 @@
 #include <poundfe/integration/moreau_jean_parameters.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/integration/stepper_state.h>
+#include <poundfe/model/column_contact_geometry.h>
 #include <poundfe/model/plan_contact_geometry.h>
 
 #include <Eigen/SparseCholesky>
@@ -81,15 +82,20 @@ namespace poundfe
     /// of its two floors (coefficients and initial_gap unused).
     bool                in_plan = false;
     PlanContactGeometry plan;
+    /// A slab against a column between the column's floors (Model/Dimension
+    /// = 3): g(u) from `column` on `equations`, the column's DOFs then the
+    /// slab's floor's (ux, uy, θz) (coefficients and initial_gap unused).
+    bool                  on_column = false;
+    ColumnContactGeometry column;
     /// Coulomb's coefficient along the contact (in plan only: the tangent
     /// J n of the normal through the contact point); 0: frictionless.
     double friction = 0;
   };
 
   /// The unilateral contacts of `model`'s gap elements among `elements`
-  /// (one per gap: between floors, against a barrier or in plan), each with
-  /// restitution e, into `contacts`; the reason when a gap is beyond them
-  /// (a slab against a column, bumpers), else empty.
+  /// (one per gap: between floors, against a barrier, in plan or a slab
+  /// against a column), each with restitution e, into `contacts`; the
+  /// reason when a gap is beyond them (bumpers), else empty.
   std::string unilateral_contacts(const Model &model, const NonlinearElements &elements,
                                   double restitution, std::vector<UnilateralContact> &contacts);
 
@@ -165,6 +171,9 @@ namespace poundfe
     double gap(unsigned int a, const Vector &x) const;
     /// The geometry of contact in plan a at displacements x.
     PlanContactState plan_state(unsigned int a, const Vector &x) const;
+    /// The geometry of slab-against-column contact a at displacements x
+    /// (z = B_a^T u_a: the column's plan displacement at the slab, the slab's).
+    ColumnContactState column_state(unsigned int a, const Vector &x) const;
     /// M^-1 x on the equations with mass, 0 on the others.
     Vector inverse_mass(const Vector &x) const;
     /// C x (the sparse part and the modal one) into y.
@@ -231,6 +240,9 @@ namespace poundfe
     SparseRows                     H, T;
     bool                           has_friction = false;
     bool                           has_plan_contacts = false;
+    /// B_a of each slab-against-column contact (its equations x 5), empty
+    /// for the others.
+    std::vector<Eigen::MatrixXd>   column_bases;
     std::unique_ptr<MoreauJeanMatrix> jacobian;
     /// Each element's B_e (constant), D_e and (h theta)^2 B_e D_e B_e^T.
     std::vector<Eigen::MatrixXd>   bases;
