@@ -137,6 +137,22 @@ namespace poundfe
 
   namespace
   {
+    /// B of a slab against a column (its equations x 5): z = B^T u is the
+    /// column point's plan displacement w = W u_column (W row-major,
+    /// 2 x n_column) and the slab's (ux, uy, θz).
+    Eigen::MatrixXd
+    column_basis(const UnilateralContact &contact)
+    {
+      const unsigned int n_column = contact.equations.size() - 3;
+      Assert(contact.column.weights.size() == 2 * n_column, dealii::ExcMessage("column weights"));
+      Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n_column + 3, 5);
+      for (unsigned int r = 0; r < 2; ++r)
+        for (unsigned int j = 0; j < n_column; ++j)
+          B(j, r) = contact.column.weights[r * n_column + j];
+      B.bottomRightCorner<3, 3>().setIdentity();
+      return B;
+    }
+
     /// The rows and columns `kept` of `matrix`.
     SparseMatrix
     submatrix(const SparseMatrix &matrix, const std::vector<unsigned int> &kept)
@@ -177,6 +193,31 @@ namespace poundfe
         massive.push_back(i);
     mass_factor.compute(submatrix(system.mass, massive));
     smooth_nonlinear = elements && has_smooth_nonlinearity(*elements);
+    make_jacobian(storage);
+    column_bases.resize(contact_list.size());
+    for (unsigned int a = 0; a < contact_list.size(); ++a)
+      if (contact_list[a].on_column)
+        column_bases[a] = column_basis(contact_list[a]);
+    for (const UnilateralContact &c : contact_list)
+      {
+        Assert(!c.in_plan || c.equations.size() == 6,
+               dealii::ExcMessage("a contact in plan joins (ux, uy, θz) of two floors"));
+        Assert(c.friction == 0 || c.in_plan,
+               dealii::ExcMessage("friction on a contact without a tangent (not in plan)"));
+        has_friction      = has_friction || c.friction > 0;
+        has_plan_contacts = has_plan_contacts || c.in_plan || c.on_column;
+      }
+    if (!lcp_solver_available())
+      return;
+    solver_name = solve_lcp(Eigen::MatrixXd(), Vector(), parameters.lcp).solver;
+    if (has_friction)
+      friction_solver_name =
+        solve_friction_contact(Eigen::MatrixXd(), Vector(), Vector(), parameters.friction).solver;
+  }
+
+  void
+  MoreauJeanIntegrator::make_jacobian(const JacobianStorage storage)
+  {
     // J's constant part M + h theta C + (h theta)^2 K; the elements' B_e
     const double ht = parameters.time_step * parameters.theta;
     SparseMatrix base = system.mass + ht * ht * system.stiffness;
@@ -203,36 +244,6 @@ namespace poundfe
                                                                      JacobianStorage::dense;
     jacobian = std::make_unique<MoreauJeanMatrix>(base, modal, element_equations, chosen,
                                                   parameters.linear_solver);
-    column_bases.resize(contact_list.size());
-    for (unsigned int a = 0; a < contact_list.size(); ++a)
-      if (contact_list[a].on_column)
-        {
-          // z = B^T u: w = W u_column (W row-major, 2 x n_column), the slab's own
-          const UnilateralContact &c        = contact_list[a];
-          const unsigned int       n_column = c.equations.size() - 3;
-          Assert(c.column.weights.size() == 2 * n_column, dealii::ExcMessage("column weights"));
-          Eigen::MatrixXd &B = column_bases[a];
-          B.setZero(n_column + 3, 5);
-          for (unsigned int r = 0; r < 2; ++r)
-            for (unsigned int j = 0; j < n_column; ++j)
-              B(j, r) = c.column.weights[r * n_column + j];
-          B.bottomRightCorner<3, 3>().setIdentity();
-        }
-    for (const UnilateralContact &c : contact_list)
-      {
-        Assert(!c.in_plan || c.equations.size() == 6,
-               dealii::ExcMessage("a contact in plan joins (ux, uy, θz) of two floors"));
-        Assert(c.friction == 0 || c.in_plan,
-               dealii::ExcMessage("friction on a contact without a tangent (not in plan)"));
-        has_friction      = has_friction || c.friction > 0;
-        has_plan_contacts = has_plan_contacts || c.in_plan || c.on_column;
-      }
-    if (!lcp_solver_available())
-      return;
-    solver_name = solve_lcp(Eigen::MatrixXd(), Vector(), parameters.lcp).solver;
-    if (has_friction)
-      friction_solver_name =
-        solve_friction_contact(Eigen::MatrixXd(), Vector(), Vector(), parameters.friction).solver;
   }
 
   PlanContactState

@@ -35,7 +35,12 @@
 // the contact point there, equal and opposite on the two floors, so that
 // linear and angular momentum are kept), g_a(u) is evaluated exactly, and a
 // contact whose edges do not overlap is open (Acary & Brogliato §10.1.7:
-// the constraint's Jacobian at the beginning of the step).
+// the constraint's Jacobian at the beginning of the step). A slab against a
+// column (model/column_contact_geometry.h) is taken the same way, its gap a
+// function of z = B^T u (the column point's Hermite displacement, the slab's
+// motion) and its row B ∇g(z) at the step's start.
+// A friction-contact problem the chosen fc2d solver leaves unsolved goes to
+// a fallback (Lemke's pivoting after NSGS, NSGS after Lemke).
 // Equations without mass (a frame's rotations under lumped masses) keep
 // their rows of the scheme, which there read θ F+ + (1 - θ) F = 0: J's rows
 // h θ (C + C_t) + (h θ)^2 (K + K_t) stay regular, and from the equilibrium
@@ -167,6 +172,9 @@ namespace poundfe
                                           const NonlinearElements *elements,
                                           const MoreauJeanParameters &parameters,
                                           const std::string &beyond);
+    /// J's constant part M + h θ C + (h θ)^2 K, the elements' B_e, and J
+    /// kept as `storage` asks (sparse beyond the Dense matrix limit).
+    void make_jacobian(JacobianStorage storage);
     /// g_a(u) (exact, also in plan) and U_a(v) = H_a v.
     double gap(unsigned int a, const Vector &x) const;
     /// The geometry of contact in plan a at displacements x.
