@@ -51,17 +51,19 @@ namespace poundfe
         const auto gap = std::find_if(model.gaps.begin(), model.gaps.end(),
                                       [&](const Gap &g) { return g.label == e.label; });
         Assert(gap != model.gaps.end(), dealii::ExcMessage("a gap element without its gap"));
-        if (gap->on_column || (!gap->in_plan && e.rank() != 1))
-          return "takes gaps between floors, against barriers and in plan, not a slab against "
-                 "a column yet (" + e.label + ")";
+        Assert(gap->in_plan || gap->on_column || e.rank() == 1,
+               dealii::ExcMessage("a gap between floors with a closure of rank > 1"));
         UnilateralContact contact;
         contact.label       = e.label;
         contact.equations   = e.equations();
         contact.restitution = restitution;
         contact.element     = h;
         contact.in_plan     = gap->in_plan;
+        contact.on_column   = gap->on_column;
         if (gap->in_plan)
           contact.plan = gap->plan;
+        else if (gap->on_column)
+          contact.column = gap->column;
         else
           {
             const Eigen::MatrixXd B = e.tangent_basis(); // the closure's coefficients
@@ -85,10 +87,19 @@ namespace poundfe
                  " yet (" + e.label + ")";
     if (system.n_equations() <= parameters.max_dense_equations)
       return {};
-    const std::string beyond = " on models of more than " +
-                               std::to_string(parameters.max_dense_equations) +
-                               " equations (Contact/Dense matrix limit; this one has " +
-                               std::to_string(system.n_equations()) + ")";
+    return sparse_unsupported(system, elements, parameters,
+                              " on models of more than " +
+                                std::to_string(parameters.max_dense_equations) +
+                                " equations (Contact/Dense matrix limit; this one has " +
+                                std::to_string(system.n_equations()) + ")");
+  }
+
+  std::string
+  MoreauJeanIntegrator::sparse_unsupported(const LinearSystem         &system,
+                                           const NonlinearElements    *elements,
+                                           const MoreauJeanParameters &parameters,
+                                           const std::string          &beyond)
+  {
     if (!system.modal_damping.empty())
       return "does not take modal damping" + beyond;
     if (parameters.linear_solver != "eigen-ldlt" && parameters.linear_solver != "umfpack")
@@ -109,8 +120,14 @@ namespace poundfe
     for (const UnilateralContact &contact : contacts)
       for (unsigned int i = 0; i < contact.equations.size(); ++i)
         {
-          const int  equation = contact.equations[i];
-          const bool acts     = contact.in_plan || contact.coefficients[i] != 0;
+          const int          equation = contact.equations[i];
+          const unsigned int n_column = contact.equations.size() - 3;
+          // a column's DOF acts where its Hermite weight at the slab is nonzero
+          const bool acts =
+            contact.in_plan ||
+            (contact.on_column ? i >= n_column || contact.column.weights[i] != 0 ||
+                                   contact.column.weights[n_column + i] != 0 :
+                                 contact.coefficients[i] != 0);
           if (equation >= 0 && acts && !(system.mass.coeff(equation, equation) > 0))
             return "needs mass on the equations a contact acts on (an impulse needs inertia): "
                    "gap " + contact.label + " acts on an equation without mass";
@@ -120,6 +137,22 @@ namespace poundfe
 
   namespace
   {
+    /// B of a slab against a column (its equations x 5): z = B^T u is the
+    /// column point's plan displacement w = W u_column (W row-major,
+    /// 2 x n_column) and the slab's (ux, uy, θz).
+    Eigen::MatrixXd
+    column_basis(const UnilateralContact &contact)
+    {
+      const unsigned int n_column = contact.equations.size() - 3;
+      Assert(contact.column.weights.size() == 2 * n_column, dealii::ExcMessage("column weights"));
+      Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n_column + 3, 5);
+      for (unsigned int r = 0; r < 2; ++r)
+        for (unsigned int j = 0; j < n_column; ++j)
+          B(j, r) = contact.column.weights[r * n_column + j];
+      B.bottomRightCorner<3, 3>().setIdentity();
+      return B;
+    }
+
     /// The rows and columns `kept` of `matrix`.
     SparseMatrix
     submatrix(const SparseMatrix &matrix, const std::vector<unsigned int> &kept)
@@ -141,7 +174,8 @@ namespace poundfe
   MoreauJeanIntegrator::MoreauJeanIntegrator(const LinearSystem &system_,
                                              const MoreauJeanParameters &parameters_,
                                              std::vector<UnilateralContact> contacts_,
-                                             NonlinearElements *elements_)
+                                             NonlinearElements *elements_,
+                                             const JacobianStorage storage)
     : system(system_)
     , parameters(parameters_)
     , contact_list(std::move(contacts_))
@@ -159,6 +193,31 @@ namespace poundfe
         massive.push_back(i);
     mass_factor.compute(submatrix(system.mass, massive));
     smooth_nonlinear = elements && has_smooth_nonlinearity(*elements);
+    make_jacobian(storage);
+    column_bases.resize(contact_list.size());
+    for (unsigned int a = 0; a < contact_list.size(); ++a)
+      if (contact_list[a].on_column)
+        column_bases[a] = column_basis(contact_list[a]);
+    for (const UnilateralContact &c : contact_list)
+      {
+        Assert(!c.in_plan || c.equations.size() == 6,
+               dealii::ExcMessage("a contact in plan joins (ux, uy, θz) of two floors"));
+        Assert(c.friction == 0 || c.in_plan,
+               dealii::ExcMessage("friction on a contact without a tangent (not in plan)"));
+        has_friction      = has_friction || c.friction > 0;
+        has_plan_contacts = has_plan_contacts || c.in_plan || c.on_column;
+      }
+    if (!lcp_solver_available())
+      return;
+    solver_name = solve_lcp(Eigen::MatrixXd(), Vector(), parameters.lcp).solver;
+    if (has_friction)
+      friction_solver_name =
+        solve_friction_contact(Eigen::MatrixXd(), Vector(), Vector(), parameters.friction).solver;
+  }
+
+  void
+  MoreauJeanIntegrator::make_jacobian(const JacobianStorage storage)
+  {
     // J's constant part M + h theta C + (h theta)^2 K; the elements' B_e
     const double ht = parameters.time_step * parameters.theta;
     SparseMatrix base = system.mass + ht * ht * system.stiffness;
@@ -176,24 +235,15 @@ namespace poundfe
           element_equations.push_back(&(*elements)[h].equations());
           bases[h] = (*elements)[h].tangent_basis();
         }
-    jacobian = std::make_unique<MoreauJeanMatrix>(base, modal, element_equations,
-                                                  n <= parameters.max_dense_equations,
+    // beyond the limit sparse; within it dense where sparse is refused,
+    // else the cheaper (moreau_jean_matrix.h), unless the caller chose
+    const JacobianStorage chosen =
+      n > parameters.max_dense_equations ? JacobianStorage::sparse :
+      storage != JacobianStorage::automatic ? storage :
+      sparse_unsupported(system, elements, parameters, "").empty() ? JacobianStorage::automatic :
+                                                                     JacobianStorage::dense;
+    jacobian = std::make_unique<MoreauJeanMatrix>(base, modal, element_equations, chosen,
                                                   parameters.linear_solver);
-    for (const UnilateralContact &c : contact_list)
-      {
-        Assert(!c.in_plan || c.equations.size() == 6,
-               dealii::ExcMessage("a contact in plan joins (ux, uy, θz) of two floors"));
-        Assert(c.friction == 0 || c.in_plan,
-               dealii::ExcMessage("friction on a contact without a tangent (not in plan)"));
-        has_friction      = has_friction || c.friction > 0;
-        has_plan_contacts = has_plan_contacts || c.in_plan;
-      }
-    if (!lcp_solver_available())
-      return;
-    solver_name = solve_lcp(Eigen::MatrixXd(), Vector(), parameters.lcp).solver;
-    if (has_friction)
-      friction_solver_name =
-        solve_friction_contact(Eigen::MatrixXd(), Vector(), Vector(), parameters.friction).solver;
   }
 
   PlanContactState
@@ -206,14 +256,28 @@ namespace poundfe
     return plan_contact_state(contact_list[a].plan, q);
   }
 
+  ColumnContactState
+  MoreauJeanIntegrator::column_state(const unsigned int a, const Vector &x) const
+  {
+    const std::vector<int> &equations = contact_list[a].equations;
+    Vector5                 z         = Vector5::Zero();
+    for (unsigned int i = 0; i < equations.size(); ++i)
+      if (equations[i] >= 0)
+        z += x[equations[i]] * column_bases[a].row(i).transpose();
+    return column_contact_state(contact_list[a].column, z);
+  }
+
   double
   MoreauJeanIntegrator::gap(const unsigned int a, const Vector &x) const
   {
-    if (!contact_list[a].in_plan)
-      return contact_list[a].initial_gap + H.row(a).dot(x);
-    const PlanContactState state = plan_state(a, x);
-    // edges that do not overlap cannot touch: open however far they cross
-    return state.defined ? state.gap : std::numeric_limits<double>::infinity();
+    const UnilateralContact &contact = contact_list[a];
+    if (!contact.in_plan && !contact.on_column)
+      return contact.initial_gap + H.row(a).dot(x);
+    // a point beyond the edge's ends cannot touch: open however far it crosses
+    const auto open = [](const auto &state) {
+      return state.defined ? state.gap : std::numeric_limits<double>::infinity();
+    };
+    return contact.in_plan ? open(plan_state(a, x)) : open(column_state(a, x));
   }
 
   void
@@ -224,6 +288,18 @@ namespace poundfe
     for (unsigned int a = 0; a < contact_list.size(); ++a)
       {
         const UnilateralContact &contact = contact_list[a];
+        if (contact.on_column)
+          {
+            // dg/du = B dg/dz at the step's start (no tangent: frictionless)
+            const ColumnContactState state = column_state(a, u);
+            if (!state.defined)
+              continue;
+            const Eigen::VectorXd gradient = column_bases[a] * state.gradient;
+            for (unsigned int i = 0; i < contact.equations.size(); ++i)
+              if (contact.equations[i] >= 0 && gradient[i] != 0)
+                normal.emplace_back(a, contact.equations[i], gradient[i]);
+            continue;
+          }
         if (!contact.in_plan)
           {
             for (unsigned int i = 0; i < contact.equations.size(); ++i)
@@ -365,9 +441,12 @@ namespace poundfe
     Assert(u0.size() == n && v0.size() == n, dealii::ExcDimensionMismatch(u0.size(), n));
     reset_state(n_elements, parameters.time_step);
     impulse_log.clear();
+    fallback_solves = 0;
     unattached_loss = 0;
     refactor        = true;
     impulses_last_step.assign(contact_list.size(), 0.0);
+    impulses_this_step.assign(contact_list.size(), 0.0);
+    tangential_this_step.assign(contact_list.size(), 0.0);
     initial_stored.assign(n_elements, 0.0);
     u          = u0;
     v          = v0;
@@ -425,30 +504,60 @@ namespace poundfe
     return W;
   }
 
-  void
-  MoreauJeanIntegrator::count_solve(const LcpSolution &solution, const unsigned int n_contacts,
-                                    const char *problem)
+  bool
+  MoreauJeanIntegrator::is_solved(const LcpSolution &solution) const
   {
-    ContactProblemCounts &counts = stats.contact;
-    ++counts.solves;
-    counts.iterations += std::max(solution.iterations, 0);
-    counts.max_iterations =
-      std::max<unsigned int>(counts.max_iterations, std::max(solution.iterations, 0));
-    counts.max_residual = std::max(counts.max_residual, solution.residual);
     // Success is judged by the program's own residual (the same measure for
     // every solver), not by Siconos's status: Lemke on the friction problem
     // reports success on unsolved problems, NSGS failure on solved ones.
     const double tolerance =
       has_friction ? parameters.friction.tolerance : parameters.lcp.tolerance;
-    if (!(solution.residual <= tolerance) || !solution.z.allFinite())
-      throw NumericalError("step " + std::to_string(step_count + 1) + " (t = " +
-                           number_text(current_time + parameters.time_step) + " s): Siconos's " +
-                           solution.solver + " did not solve the " + problem + " of " +
-                           std::to_string(n_contacts) + " contacts: residual " +
-                           number_text(solution.residual) + " above the tolerance " +
-                           number_text(tolerance) + " after " +
-                           std::to_string(solution.iterations) + " iterations (Siconos status " +
-                           std::to_string(solution.info) + ")");
+    return solution.residual <= tolerance && solution.z.allFinite();
+  }
+
+  namespace
+  {
+    /// "Siconos's S ... residual r above the tolerance t after k iterations
+    /// (Siconos status i)" of one solver's attempt.
+    std::string
+    attempt_text(const LcpSolution &solution, const std::string &what, const double tolerance)
+    {
+      return "Siconos's " + solution.solver + what + ": residual " +
+             number_text(solution.residual) + " above the tolerance " + number_text(tolerance) +
+             " after " + std::to_string(solution.iterations) + " iterations (Siconos status " +
+             std::to_string(solution.info) + ")";
+    }
+  } // namespace
+
+  void
+  MoreauJeanIntegrator::count_solve(const LcpSolution &solution, const unsigned int n_contacts,
+                                    const char *problem, const LcpSolution *first_attempt)
+  {
+    ContactProblemCounts &counts = stats.contact;
+    ++counts.solves;
+    // a solve's iterations count both attempts, as a step's Newton iterations do
+    int iterations = 0;
+    for (const LcpSolution *attempt : {first_attempt, &solution})
+      if (attempt)
+        iterations += std::max(attempt->iterations, 0);
+    counts.iterations += iterations;
+    counts.max_iterations = std::max<unsigned int>(counts.max_iterations, iterations);
+    counts.max_residual = std::max(counts.max_residual, solution.residual);
+    if (is_solved(solution))
+      {
+        fallback_solves += first_attempt ? 1 : 0;
+        return;
+      }
+    const double tolerance =
+      has_friction ? parameters.friction.tolerance : parameters.lcp.tolerance;
+    const std::string what = " did not solve the " + std::string(problem) + " of " +
+                             std::to_string(n_contacts) + " contacts";
+    throw NumericalError("step " + std::to_string(step_count + 1) + " (t = " +
+                         number_text(current_time + parameters.time_step) + " s): " +
+                         (first_attempt ? attempt_text(*first_attempt, what, tolerance) +
+                                            "; nor did the fallback, " +
+                                            attempt_text(solution, "", tolerance)
+                                        : attempt_text(solution, what, tolerance)));
   }
 
   Vector
@@ -483,8 +592,21 @@ namespace poundfe
         mu[k]        = contact_list[c].friction;
       }
     const LcpSolution solution = solve_friction_contact(delassus(), q, mu, parameters.friction);
-    count_solve(solution, m, "friction-contact problem");
-    return solution.z;
+    if (is_solved(solution))
+      {
+        count_solve(solution, m, "friction-contact problem");
+        return solution.z;
+      }
+    // NSGS can stall short of the tolerance where Lemke's pivots solve the
+    // problem exactly, and Lemke can stop on an unsolved sticking contact
+    // where NSGS converges: the same problem by the other method
+    FrictionContactOptions fallback = parameters.friction;
+    fallback.solver = parameters.friction.solver == FrictionSolverKind::lemke ?
+                        FrictionSolverKind::nsgs :
+                        FrictionSolverKind::lemke;
+    const LcpSolution second = solve_friction_contact(delassus(), q, mu, fallback);
+    count_solve(second, m, "friction-contact problem", &solution);
+    return second.z;
   }
 
   double
@@ -611,8 +733,10 @@ namespace poundfe
   void
   MoreauJeanIntegrator::record_impulses(const double t_end)
   {
-    std::vector<double> this_step(contact_list.size(), 0.0), tangential(contact_list.size(), 0.0);
-    const unsigned int  per_contact = has_friction ? 2 : 1;
+    std::vector<double> &this_step = impulses_this_step, &tangential = tangential_this_step;
+    std::fill(this_step.begin(), this_step.end(), 0.0);
+    std::fill(tangential.begin(), tangential.end(), 0.0);
+    const unsigned int per_contact = has_friction ? 2 : 1;
     for (unsigned int j = 0; j < active.size(); ++j)
       if (impulse[per_contact * j] > 0)
         {
@@ -657,13 +781,16 @@ namespace poundfe
           if (contact_list[c].in_plan)
             if (const PlanContactState state = plan_state(c, u); state.defined)
               point = {{state.point.x, state.point.y}};
+          if (contact_list[c].on_column)
+            if (const ColumnContactState state = column_state(c, u); state.defined)
+              point = {{state.point.x, state.point.y}};
           impacts.record(contact_list[c].element, current_time, t_end,
                          {std::max(-gap(c, u), 0.0), -normal_velocity(c, v), force, point, 0,
                           tangential_force},
                          {std::isfinite(end_gap) ? -end_gap : 0.0, -normal_velocity(c, v_end),
                           force, point, 0, tangential_force});
         }
-    impulses_last_step = this_step;
+    std::swap(impulses_last_step, impulses_this_step);
   }
 
   void

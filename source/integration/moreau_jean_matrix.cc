@@ -6,24 +6,65 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <Eigen/SparseCholesky>
+
 namespace poundfe
 {
+  namespace
+  {
+    /// Instructions of one solve with J's factor per entry of the dense J
+    /// and per entry of the sparse L below its diagonal (callgrind on
+    /// frames and shear pairs of 8 to 150 equations, doc/benchmarks.md; the
+    /// ~100 per equation of either is the same and drops out).
+    constexpr double dense_cost_per_entry  = 2.6;
+    constexpr double sparse_cost_per_entry = 12.9;
+  } // namespace
+
+  bool
+  MoreauJeanMatrix::sparse_solve_is_cheaper(const SparseMatrix &pattern)
+  {
+    // L's entries under Eigen's AMD ordering, from one factorisation of
+    // the constant part (a regular J: M, and h θ C + (h θ)^2 K on the
+    // massless rows)
+    const Eigen::SimplicialLDLT<SparseMatrix> probe(pattern);
+    if (probe.info() != Eigen::Success)
+      return false; // not factored as LDL^T: the LU
+    const double n              = pattern.rows();
+    const double factor_entries = probe.matrixL().nestedExpression().nonZeros();
+    return sparse_cost_per_entry * factor_entries < dense_cost_per_entry * n * n;
+  }
+
   MoreauJeanMatrix::MoreauJeanMatrix(const SparseMatrix &base, const Eigen::MatrixXd &dense_extra,
                                      const std::vector<const std::vector<int> *> &element_equations,
-                                     const bool dense_, const std::string &linear_solver)
-    : dense(dense_)
+                                     const JacobianStorage storage, const std::string &linear_solver)
   {
     const Eigen::Index n = base.rows();
     column.setZero(n);
     solution.setZero(n);
+    sparse_matrix = sparse_pattern(base, element_equations);
+    dense         = storage == JacobianStorage::dense ||
+            (storage == JacobianStorage::automatic &&
+             (dense_extra.size() > 0 || linear_solver != "eigen-ldlt" ||
+              !sparse_solve_is_cheaper(sparse_matrix)));
     if (dense)
       {
         dense_base = Eigen::MatrixXd(base);
         if (dense_extra.size() > 0)
           dense_base += dense_extra;
+        sparse_matrix.resize(0, 0);
         return;
       }
     Assert(dense_extra.size() == 0, dealii::ExcMessage("a dense term on a sparse J"));
+    base_values.assign(sparse_matrix.valuePtr(),
+                       sparse_matrix.valuePtr() + sparse_matrix.nonZeros());
+    sparse_factor = create_linear_solver(linear_solver);
+    sparse_factor->analyze(sparse_matrix);
+  }
+
+  SparseMatrix
+  MoreauJeanMatrix::sparse_pattern(const SparseMatrix                          &base,
+                                   const std::vector<const std::vector<int> *> &element_equations)
+  {
     // the pattern: the constant part's entries and every element's pairs
     std::vector<Eigen::Triplet<double>> entries;
     for (Eigen::Index k = 0; k < base.outerSize(); ++k)
@@ -34,13 +75,10 @@ namespace poundfe
         for (const int j : *equations)
           if (i >= 0 && j >= 0)
             entries.emplace_back(i, j, 0.0);
-    sparse_matrix.resize(n, n);
-    sparse_matrix.setFromTriplets(entries.begin(), entries.end());
-    sparse_matrix.makeCompressed();
-    base_values.assign(sparse_matrix.valuePtr(),
-                       sparse_matrix.valuePtr() + sparse_matrix.nonZeros());
-    sparse_factor = create_linear_solver(linear_solver);
-    sparse_factor->analyze(sparse_matrix);
+    SparseMatrix pattern(base.rows(), base.cols());
+    pattern.setFromTriplets(entries.begin(), entries.end());
+    pattern.makeCompressed();
+    return pattern;
   }
 
   MoreauJeanMatrix::~MoreauJeanMatrix() = default;

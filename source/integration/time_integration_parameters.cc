@@ -250,8 +250,9 @@ namespace poundfe
                "Newton's impact law (Coefficient of restitution e in [0, 1]), stepped by "
                "Moreau-Jean's theta-scheme with each step's impulses from an LCP solved by "
                "Siconos Numerics (theory §3.9d); needs a Law other than none (its force "
-               "parameters are then unused), gaps between floors, at barriers or in plan "
-               "(3D; not a slab against a column), no bumpers, friction surfaces or fibre "
+               "parameters are then unused), gaps between floors, at barriers, in plan "
+               "or a slab against a column (3D; a column with mass: Mass matrix = "
+               "consistent), no bumpers, friction surfaces or fibre "
                "members, no gravity analysis (large models: Dense matrix limit); the "
                "commands run, stationary-pdf, "
                "montecarlo, subset, fragility, ida, msa, sweep, separation (its free "
@@ -288,14 +289,19 @@ namespace poundfe
                "Model = nonsmooth with a Friction coefficient: Siconos Numerics' fc2d solver "
                "of each step's friction-contact problem: nsgs (Gauss-Seidel over the "
                "contacts, each solved exactly), lemke (Lemke on its LCP), enum (enumeration, a "
-               "few contacts); its tolerance and iteration limit are the LCP's. Unit: -.",
+               "few contacts); its tolerance and iteration limit are the LCP's. A problem it "
+               "leaves unsolved goes to a fallback, lemke (nsgs when lemke is chosen); the "
+               "run stops (exit 2) only when both fail. Unit: -.",
                friction_solver_names());
     prm.add_parameter("Dense matrix limit", moreau_jean.max_dense_equations,
-                      "Model = nonsmooth: Moreau-Jean's iteration matrix is dense (LU) on "
-                      "models of up to this many equations, sparse above, factored by Time "
-                      "integration/Linear solver (eigen-ldlt, or umfpack), without modal "
-                      "damping; each step's Delassus operator by one solve per contact of its "
-                      "index set either way (theory §3.9d). Unit: count.",
+                      "Model = nonsmooth: Moreau-Jean's iteration matrix is sparse on models "
+                      "of more than this many equations, factored by Time integration/Linear "
+                      "solver (eigen-ldlt, or umfpack), without modal damping; up to it, "
+                      "sparse where Linear solver = eigen-ldlt and its solves are estimated "
+                      "cheaper than a dense LU's (from the factor's entries), else dense "
+                      "(LU; so with modal damping or another Linear solver); each step's "
+                      "Delassus operator by one solve per contact of its index set either way "
+                      "(theory §3.9d). Unit: count.",
                       Patterns::Integer(0, 1000000000));
     prm.add_parameter("Event refinement", newmark.newton.event_refinement,
                       "A step in which a contact starts or ends is redone in 2^r "

@@ -621,9 +621,8 @@ BOOST_AUTO_TEST_CASE(an_oblique_impact_in_plan_sticks_or_slips_by_coulombs_law)
 namespace
 {
   /// The default example's frames (hinges, massless rotations, two gaps)
-  /// under a harmonic ground acceleration for 3 s, stepped with J dense
-  /// (max_dense_equations = 500) or sparse (0): the end state, every
-  /// impulse, the largest |u|.
+  /// under a harmonic ground acceleration for 3 s, stepped with J kept as
+  /// `storage` asks: the end state, every impulse, the largest |u|.
   struct FramesRun
   {
     Vector                      u, v;
@@ -632,15 +631,17 @@ namespace
   };
 
   FramesRun
-  default_example_run(const Analysis &analysis, const unsigned int max_dense_equations)
+  default_example_run(const Analysis &analysis, const JacobianStorage storage)
   {
     NonlinearElements              elements = make_nonlinear_elements(analysis.model);
     std::vector<UnilateralContact> contacts;
     BOOST_REQUIRE(unilateral_contacts(analysis.model, elements, 0.65, contacts).empty());
     MoreauJeanParameters parameters;
-    parameters.time_step           = 2e-3;
-    parameters.max_dense_equations = max_dense_equations;
-    MoreauJeanIntegrator stepper(analysis.system, parameters, contacts, &elements);
+    parameters.time_step = 2e-3;
+    MoreauJeanIntegrator stepper(analysis.system, parameters, contacts, &elements, storage);
+    // the default example (60 equations) left to choose is sparse: its L
+    // has 265 entries, 12.9 x 265 instructions a solve against 2.6 x 60^2
+    BOOST_TEST(stepper.dense_jacobian() == (storage == JacobianStorage::dense));
     const Vector zero = Vector::Zero(analysis.system.n_equations());
     const Vector inertia = analysis.system.mass * analysis.system.influence;
     stepper.initialize(zero, zero, zero);
@@ -665,8 +666,8 @@ BOOST_AUTO_TEST_CASE(sparse_and_dense_iteration_matrices_agree_on_frames)
   if (!lcp_solver_available())
     return;
   const Analysis  analysis = prepare_analysis(read_parameters("input/two-buildings.prm"));
-  const FramesRun dense    = default_example_run(analysis, 500);
-  const FramesRun sparse   = default_example_run(analysis, 0);
+  const FramesRun dense    = default_example_run(analysis, JacobianStorage::dense);
+  const FramesRun sparse   = default_example_run(analysis, JacobianStorage::automatic);
   BOOST_TEST_MESSAGE(dense.impulses.size() << " impulses; peak |u| " << dense.peak << " m");
   BOOST_REQUIRE(dense.impulses.size() > 10);
   BOOST_REQUIRE_EQUAL(dense.impulses.size(), sparse.impulses.size());
@@ -689,4 +690,28 @@ BOOST_AUTO_TEST_CASE(sparse_and_dense_iteration_matrices_agree_on_frames)
   BOOST_TEST(u_difference < 1e-9);
   BOOST_TEST(v_difference < 1e-9);
   BOOST_TEST(impulse_difference < 1e-9 * impulse_scale);
+}
+
+BOOST_AUTO_TEST_CASE(sparse_iteration_matrix_where_its_solves_are_cheaper)
+{
+  // the cost model's choice on two patterns whose factor is known in closed
+  // form: a tridiagonal J of n equations factors without fill (n - 1 entries
+  // in L: 12.9 (n - 1) < 2.6 n^2 from n = 4), a full one fills all of L
+  // (n (n - 1) / 2 entries: 6.45 n^2 > 2.6 n^2 at every n)
+  const auto tridiagonal = [](const int n) {
+    SparseMatrix J(n, n);
+    for (int i = 0; i < n; ++i)
+      {
+        J.insert(i, i) = 4;
+        if (i > 0)
+          J.insert(i, i - 1) = J.insert(i - 1, i) = -1;
+      }
+    return J;
+  };
+  BOOST_TEST(!MoreauJeanMatrix::sparse_solve_is_cheaper(tridiagonal(3)));
+  BOOST_TEST(MoreauJeanMatrix::sparse_solve_is_cheaper(tridiagonal(4)));
+  BOOST_TEST(MoreauJeanMatrix::sparse_solve_is_cheaper(tridiagonal(200)));
+  const Eigen::MatrixXd full =
+    Eigen::MatrixXd::Constant(30, 30, 1.0) + 30 * Eigen::MatrixXd::Identity(30, 30);
+  BOOST_TEST(!MoreauJeanMatrix::sparse_solve_is_cheaper(full.sparseView()));
 }

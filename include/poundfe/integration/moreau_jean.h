@@ -35,7 +35,12 @@
 // the contact point there, equal and opposite on the two floors, so that
 // linear and angular momentum are kept), g_a(u) is evaluated exactly, and a
 // contact whose edges do not overlap is open (Acary & Brogliato §10.1.7:
-// the constraint's Jacobian at the beginning of the step).
+// the constraint's Jacobian at the beginning of the step). A slab against a
+// column (model/column_contact_geometry.h) is taken the same way, its gap a
+// function of z = B^T u (the column point's Hermite displacement, the slab's
+// motion) and its row B ∇g(z) at the step's start.
+// A friction-contact problem the chosen fc2d solver leaves unsolved goes to
+// a fallback (Lemke's pivoting after NSGS, NSGS after Lemke).
 // Equations without mass (a frame's rotations under lumped masses) keep
 // their rows of the scheme, which there read θ F+ + (1 - θ) F = 0: J's rows
 // h θ (C + C_t) + (h θ)^2 (K + K_t) stay regular, and from the equilibrium
@@ -55,6 +60,7 @@
 #include <poundfe/integration/moreau_jean_parameters.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/integration/stepper_state.h>
+#include <poundfe/model/column_contact_geometry.h>
 #include <poundfe/model/plan_contact_geometry.h>
 
 #include <Eigen/SparseCholesky>
@@ -81,15 +87,20 @@ namespace poundfe
     /// of its two floors (coefficients and initial_gap unused).
     bool                in_plan = false;
     PlanContactGeometry plan;
+    /// A slab against a column between the column's floors (Model/Dimension
+    /// = 3): g(u) from `column` on `equations`, the column's DOFs then the
+    /// slab's floor's (ux, uy, θz) (coefficients and initial_gap unused).
+    bool                  on_column = false;
+    ColumnContactGeometry column;
     /// Coulomb's coefficient along the contact (in plan only: the tangent
     /// J n of the normal through the contact point); 0: frictionless.
     double friction = 0;
   };
 
   /// The unilateral contacts of `model`'s gap elements among `elements`
-  /// (one per gap: between floors, against a barrier or in plan), each with
-  /// restitution e, into `contacts`; the reason when a gap is beyond them
-  /// (a slab against a column, bumpers), else empty.
+  /// (one per gap: between floors, against a barrier, in plan or a slab
+  /// against a column), each with restitution e, into `contacts`; the
+  /// reason when a gap is beyond them (bumpers), else empty.
   std::string unilateral_contacts(const Model &model, const NonlinearElements &elements,
                                   double restitution, std::vector<UnilateralContact> &contacts);
 
@@ -122,9 +133,15 @@ namespace poundfe
     /// `elements` may be null; gap elements are left alone (the contacts
     /// replace them). Throws NumericalError from advance() when Siconos
     /// fails or Newton does not converge.
+    /// J is sparse beyond parameters.max_dense_equations; within it as
+    /// `storage` asks (`automatic`: dense, or sparse where allowed and
+    /// cheaper, integration/moreau_jean_matrix.h).
     MoreauJeanIntegrator(const LinearSystem &system, const MoreauJeanParameters &parameters,
                          std::vector<UnilateralContact> contacts,
-                         NonlinearElements *elements = nullptr);
+                         NonlinearElements *elements = nullptr,
+                         JacobianStorage storage = JacobianStorage::automatic);
+    /// Whether J is kept dense.
+    bool dense_jacobian() const { return jacobian->is_dense(); }
 
     void initialize(const Vector &load, const Vector &u0, const Vector &v0) override;
     void advance(const LoadFunction &load) override;
@@ -144,12 +161,27 @@ namespace poundfe
     unsigned long      n_lcps() const { return stats.contact.solves; }
     int                max_lcp_iterations() const { return stats.contact.max_iterations; }
     double             max_lcp_residual() const { return stats.contact.max_residual; }
+    /// Friction-contact problems the chosen solver left unsolved and the
+    /// fallback solved.
+    unsigned long      n_fallback_solves() const { return fallback_solves; }
 
   private:
+    /// Why J cannot be sparse (modal damping, the linear solver, an element
+    /// tangent); `beyond` closes each reason. Empty when it can.
+    static std::string sparse_unsupported(const LinearSystem &system,
+                                          const NonlinearElements *elements,
+                                          const MoreauJeanParameters &parameters,
+                                          const std::string &beyond);
+    /// J's constant part M + h θ C + (h θ)^2 K, the elements' B_e, and J
+    /// kept as `storage` asks (sparse beyond the Dense matrix limit).
+    void make_jacobian(JacobianStorage storage);
     /// g_a(u) (exact, also in plan) and U_a(v) = H_a v.
     double gap(unsigned int a, const Vector &x) const;
     /// The geometry of contact in plan a at displacements x.
     PlanContactState plan_state(unsigned int a, const Vector &x) const;
+    /// The geometry of slab-against-column contact a at displacements x
+    /// (z = B_a^T u_a: the column's plan displacement at the slab, the slab's).
+    ColumnContactState column_state(unsigned int a, const Vector &x) const;
     /// M^-1 x on the equations with mass, 0 on the others.
     Vector inverse_mass(const Vector &x) const;
     /// C x (the sparse part and the modal one) into y.
@@ -173,14 +205,20 @@ namespace poundfe
     /// (normal) for each, and with friction P_T after them, in the order
     /// of `active` (the rows of `rows`: the active contacts' H, then T).
     Vector contact_impulses(const Vector &v_free);
-    /// The same with friction: Siconos's fc2d on the normal and tangent rows.
+    /// The same with friction: Siconos's fc2d on the normal and tangent rows,
+    /// by the chosen solver and, when it leaves the problem unsolved, by
+    /// the fallback (Lemke's, or NSGS when Lemke is the chosen one).
     Vector friction_impulses(const Vector &v_free);
     /// W of the active rows with J's factor in hand (kept while neither
     /// changes).
     const Eigen::MatrixXd &delassus();
-    /// Count a contact problem's solve; NumericalError when it failed.
+    /// Whether a contact problem's solution meets the tolerance by the
+    /// program's residual (Siconos's status aside).
+    bool   is_solved(const LcpSolution &solution) const;
+    /// Count a contact problem's solve; NumericalError naming the solver
+    /// (and the fallback's, when one ran) when it failed.
     void   count_solve(const LcpSolution &solution, unsigned int n_contacts,
-                       const char *problem);
+                       const char *problem, const LcpSolution *first_attempt = nullptr);
     /// The index set (contacts closed, or closing within the step) into
     /// `active`, their rows (H's, then T's with friction) into `rows`.
     void   find_active_contacts();
@@ -210,6 +248,9 @@ namespace poundfe
     SparseRows                     H, T;
     bool                           has_friction = false;
     bool                           has_plan_contacts = false;
+    /// B_a of each slab-against-column contact (its equations x 5), empty
+    /// for the others.
+    std::vector<Eigen::MatrixXd>   column_bases;
     std::unique_ptr<MoreauJeanMatrix> jacobian;
     /// Each element's B_e (constant), D_e and (h theta)^2 B_e D_e B_e^T.
     std::vector<Eigen::MatrixXd>   bases;
@@ -237,8 +278,11 @@ namespace poundfe
     std::vector<ContactImpulse>    impulse_log;
     /// The energy lost at impacts of contacts without a gap element.
     double                         unattached_loss = 0;
-    std::vector<double>            impulses_last_step;
+    /// Each contact's normal and tangential impulse of the step in hand
+    /// (sized once) and the normal ones of the step before.
+    std::vector<double>            impulses_this_step, tangential_this_step, impulses_last_step;
     std::string                    solver_name, friction_solver_name;
+    unsigned long                  fallback_solves = 0;
   };
 } // namespace poundfe
 
