@@ -325,22 +325,53 @@ namespace poundfe
 
   namespace
   {
-    /// The peak a target PGA asks for, times Scale factor and the largest
-    /// ratio of a generated component to the first, is bounded as the
-    /// target PGA alone is: a scale factor of 1000 on 10 g ran, and of
-    /// 1e200 gave an inf floor force. Only the input is checked: IDA, MSA
+    /// The expected PGA (g) of a generated motion given by its intensity
+    /// (S0, or D = pi S0): Peak factor x the standard deviation, of the
+    /// filtered stationary motion (Kanai-Tajimi, Clough-Penzien), or of the
+    /// white noise held over its sample interval, sqrt(2 pi S0 / dt).
+    double
+    expected_peak_of_intensity(const GroundMotionParameters &g, const double time_step)
+    {
+      const double s0 = g.spectral_intensity > 0 ? g.spectral_intensity : g.noise_intensity_d / M_PI;
+      const bool   cp = g.type == GroundMotionType::clough_penzien;
+      const double dt = g.held_interval(time_step);
+      if (g.type == GroundMotionType::white_noise && !(dt > 0))
+        return 0; // the time step's own check refuses it
+      const double variance =
+        g.type == GroundMotionType::white_noise ?
+          2 * M_PI * s0 / dt :
+          s0 * stationary_variance_per_unit_s0(
+                 g.soil == Soil::custom ? FilterParameters{cp, g.omega_g, g.zeta_g, g.omega_f, g.zeta_f} :
+                                          soil_preset(g.soil, cp));
+      return g.peak_factor * std::sqrt(variance) / standard_gravity;
+    }
+
+    /// The peak a target PGA or a stochastic intensity asks for, times Scale
+    /// factor and the largest ratio of a generated component to the first,
+    /// is bounded as the target PGA alone is: a scale factor of 1000 on
+    /// 10 g ran, of 1e200 gave an inf floor force, and an S0 of 1e200 ran
+    /// with exit 0 to a drift of 6e99 m. Only the input is checked: IDA, MSA
     /// and fragility scale each run themselves, past this check.
     void
-    check_scaled_peak(const GroundMotionParameters &g, const InputFile &input)
+    check_scaled_peak(const GroundMotionParameters &g, const InputFile &input, const double time_step)
     {
       const std::string gm     = "Ground motion/";
       const bool        record = g.type == GroundMotionType::record;
-      const bool        set_by_target =
-        record ? g.record_target_pga > 0 :
-                 g.is_stochastic() && g.spectral_intensity == 0 && g.noise_intensity_d == 0;
-      if (!set_by_target)
+      if (record ? !(g.record_target_pga > 0) : !g.is_stochastic())
         return;
-      std::string product = "Target PGA x Scale factor", blamed = gm + "Scale factor";
+      const bool by_target = record || (g.spectral_intensity == 0 && g.noise_intensity_d == 0);
+      const std::string intensity = g.spectral_intensity > 0 ? "S0" : "D";
+      double            peak = by_target ? (record ? g.record_target_pga : g.target_pga) :
+                                           expected_peak_of_intensity(g, time_step);
+      if (!by_target && !(peak <= largest_ground_acceleration_g))
+        input.fail(gm + "Stochastic/" + intensity,
+                   "gives an expected peak ground acceleration of " + number_text(peak) +
+                     " g (Peak factor x its standard deviation): at most " +
+                     number_text(largest_ground_acceleration_g) + " g (" +
+                     largest_ground_acceleration_why + ")");
+      const std::string scaled = (by_target ? "Target PGA" : "the expected PGA of " + intensity) +
+                                 " x Scale factor";
+      std::string product = scaled, blamed = gm + "Scale factor";
       double      ratio   = 1;
       for (const auto &[entry, value, used] :
            {std::tuple{"Intensity ratio", g.intensity_ratio, g.n_components >= 2},
@@ -348,11 +379,11 @@ namespace poundfe
         if (!record && used && value > ratio)
           {
             ratio   = value;
-            product = std::string("Target PGA x Scale factor x ") + entry;
+            product = scaled + " x " + entry;
             if (g.scale_factor == 1)
               blamed = gm + "Stochastic/" + entry;
           }
-      const double peak = (record ? g.record_target_pga : g.target_pga) * std::abs(g.scale_factor) * ratio;
+      peak *= std::abs(g.scale_factor) * ratio;
       if (!(peak <= largest_ground_acceleration_g))
         input.fail(blamed, product + " = " + number_text(peak) + " g, the motion's peak ground " +
                              "acceleration" + (record ? "" : " in expectation") + ": at most " +
@@ -415,7 +446,7 @@ namespace poundfe
                      "needs Shinozuka alpha < Shinozuka beta, got alpha = " +
                        number_text(shinozuka_alpha) + ", beta = " + number_text(shinozuka_beta));
       }
-    check_scaled_peak(*this, input);
+    check_scaled_peak(*this, input, time_step);
   }
 
   std::vector<NamedInputFile>

@@ -1,3 +1,4 @@
+#include <poundfe/base/interruption.h>
 #include <poundfe/excitation/response_spectrum.h>
 
 #include <deal.II/base/exceptions.h>
@@ -138,6 +139,7 @@ namespace poundfe
       prepare(h);
     for (std::size_t j = 0; j < omega.size(); ++j)
       {
+        throw_if_interrupted(); // a spectrum of many periods and a long step is a long loop
         const OscillatorStep &s  = steps[j];
         const unsigned int    m  = n_substeps[j];
         const double          da = (a1 - a0) / m;
@@ -153,6 +155,8 @@ namespace poundfe
             peak_u = std::max(peak_u, std::abs(x));
             peak_v = std::max(peak_v, std::abs(y));
             peak_a = std::max(peak_a, std::abs(w2 * x + c * y)); // |u'' + a|
+            if ((k & 0xfffffu) == 0xfffffu) // a long free vibration: ~1e6 sub-steps a check
+              throw_if_interrupted();
           }
         u[j] = x, v[j] = y;
         max_u[j] = peak_u, max_v[j] = peak_v, max_a[j] = peak_a;

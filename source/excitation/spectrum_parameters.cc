@@ -1,3 +1,4 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/excitation/ground_motion_bounds.h>
 #include <poundfe/excitation/spectrum_parameters.h>
 
@@ -17,6 +18,11 @@ namespace poundfe
     /// stopped at once on SIGTERM, where input/floor-spectra.prm's spectrum
     /// takes a second.
     constexpr double largest_spectral_period = 1000;
+    /// The shortest: 1 ms, 1000 Hz, past any structure's frequency and any
+    /// record's sampling (an oscillator far stiffer than the record's step
+    /// is rigid: PSA = PGA). A minimum period of 1e-300 s asked for ~1e300
+    /// sub-steps an oscillator, an endless loop.
+    constexpr double shortest_spectral_period = 1e-3;
   } // namespace
 
   const NameTable<DesignSpectrum> &
@@ -44,7 +50,8 @@ namespace poundfe
   {
     prm.enter_subsection("Spectrum");
     prm.add_parameter("Minimum period", min_period,
-                      "Shortest period of the response spectra (> 0). Unit: s.",
+                      "Shortest period of the response spectra, at least 0.001 s (1000 Hz). "
+                      "Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Maximum period", max_period, "Longest period of the response spectra, "
                       "at most 1000 s (far past any structure's period). Unit: s.",
@@ -87,6 +94,11 @@ namespace poundfe
   {
     const std::string s = "Spectrum/";
     input.positive(s + "Minimum period", min_period);
+    if (!(min_period >= shortest_spectral_period))
+      input.fail(s + "Minimum period",
+                 "must be at least " + number_text(shortest_spectral_period) + " s, got " +
+                   number_text(min_period) + " s (1000 Hz: past any structure's frequency and "
+                   "any record's sampling, where the oscillator is rigid)");
     input.positive(s + "Maximum period", max_period);
     input.at_most(s + "Maximum period", max_period, largest_spectral_period, "s",
                   "far past any structure's period, where Sd is the peak ground displacement");

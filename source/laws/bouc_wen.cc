@@ -1,7 +1,10 @@
+#include <poundfe/base/numbers.h>
 #include <poundfe/laws/bouc_wen.h>
+#include <poundfe/laws/bouc_wen_bounds.h>
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace poundfe
 {
@@ -168,5 +171,44 @@ namespace poundfe
   {
     committed = State();
     revert();
+  }
+
+  namespace
+  {
+    /// "must lie in [lower, upper], got value" when value is outside it.
+    std::string
+    outside_bouc_wen_range(const double value, const double lower, const double upper)
+    {
+      if (value >= lower && value <= upper)
+        return "";
+      return "must lie in [" + number_text(lower) + ", " + number_text(upper) + "], got " +
+             number_text(value);
+    }
+  } // namespace
+
+  BoucWenShapeProblem
+  bouc_wen_shape_problem(const BoucWenParameters &h)
+  {
+    if (const std::string p = outside_bouc_wen_range(h.alpha, 0, 1); !p.empty())
+      return {"alpha", p};
+    if (const std::string p = outside_bouc_wen_range(h.A, 0.01, 100); !p.empty())
+      return {"A", p + " (the hysteretic part's initial stiffness is A (1 - alpha) k; A = 1 "
+                       "makes the stiffness entry the initial stiffness)"};
+    if (const std::string p = outside_bouc_wen_range(h.n, 1, 100); !p.empty())
+      return {"n", p + " (at n = 100 the yield transition is already the bilinear law's)"};
+    for (const auto &[entry, value] : {std::pair{"beta", h.beta}, std::pair{"gamma", h.gamma}})
+      if (!(std::abs(value) <= 100))
+        return {entry, "must be at most 100 in size, got " + number_text(value) +
+                         " (beta + gamma = A, at most 100, in the normalised law)"};
+    if (!(h.beta + h.gamma > 0))
+      return {"beta", "beta + gamma must be positive (|z| stays bounded)"};
+    if (!(h.beta >= std::abs(h.gamma)) && !(h.gamma >= std::abs(h.beta)))
+      return {"gamma", "needs beta >= |gamma| or gamma >= |beta|"};
+    const double z_u = std::pow(h.A / (h.beta + h.gamma), 1 / h.n);
+    if (!(z_u >= 0.01 && z_u <= 100))
+      return {"beta", "(A / (beta + gamma))^(1/n) = " + number_text(z_u) +
+                        ", the hysteretic strength over (1 - alpha) k u_y: must lie in "
+                        "[0.01, 100], near the yield force the stiffness and yield entries give"};
+    return {};
   }
 } // namespace poundfe

@@ -12,6 +12,7 @@
 //                                      or resisting plane of b (nonlinear; a
 //                                      bidirectional law: n >= 2, no degradation)
 #include <poundfe/base/numbers.h>
+#include <poundfe/laws/bouc_wen_bounds.h>
 #include <poundfe/model/parameter_registry.h>
 
 #include <deal.II/base/exceptions.h>
@@ -251,16 +252,17 @@ namespace poundfe::hinge_registration
                          [b](const PlaneLink &l) { return l.building == b && l.partner >= 0; });
     }
 
-    /// beta + gamma > 0 and beta >= |gamma| or gamma >= |beta|, as the input
-    /// checks them (model/parameters.cc).
+    /// The shape within the ranges of laws/bouc_wen_bounds.h, as the input
+    /// checks it (model/parameters.cc).
     void
     require_bouc_wen_shape(const ModelParameter &p, const BoucWenParameters &h)
     {
-      if (!(h.beta + h.gamma > 0) || !(h.beta >= std::abs(h.gamma) || h.gamma >= std::abs(h.beta)))
-        throw std::invalid_argument("'" + p.path + "': the sampled value gives beta = " +
-                                    number_text(h.beta) + ", gamma = " + number_text(h.gamma) +
-                                    ", which need beta + gamma > 0 and beta >= |gamma| or "
-                                    "gamma >= |beta|");
+      if (const BoucWenShapeProblem shape = bouc_wen_shape_problem(h); !shape.entry.empty())
+        throw std::invalid_argument("'" + p.path + "': the sampled value gives A = " +
+                                    number_text(h.A) + ", beta = " + number_text(h.beta) +
+                                    ", gamma = " + number_text(h.gamma) + ", n = " +
+                                    number_text(h.n) + ", whose " + shape.entry + " " +
+                                    shape.problem);
     }
 
     /// The values Bouc-Wen entry `shape` can take (variant 1: bidirectional).

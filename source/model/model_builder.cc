@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace poundfe
@@ -152,16 +153,54 @@ namespace poundfe
     /// b: the member end moves to a new node that shares the joint's
     /// translations, and a rotational spring joins the two rotations. The
     /// hinge is labelled by its member and end (A3_C1.2_bottom, A3_B1.1_left).
+    /// The label's suffix of a hinge at the end `here` of `member` (its
+    /// other end `there`), or nothing where Hinges/Locations puts none.
+    std::optional<std::string>
+    hinge_suffix(const BuildingParameters &p, const Member &member, const Point2 &here,
+                 const Point2 &there, const bool supported)
+    {
+      auto wants = [&](const char *location) {
+        return std::find(p.hinge_locations.begin(), p.hinge_locations.end(), location) !=
+               p.hinge_locations.end();
+      };
+      if (member.kind == MemberKind::column)
+        {
+          const bool bottom = here.y < there.y;
+          if (!((wants("column ends")) || (wants("column tops") && !bottom) ||
+                (wants("column bases") && bottom && supported)))
+            return std::nullopt;
+          return bottom ? "_bottom" : "_top";
+        }
+      if (member.kind == MemberKind::beam && wants("beam ends"))
+        return here.x < there.x ? "_left" : "_right";
+      return std::nullopt;
+    }
+
+    /// The Bouc-Wen law of a hinge of `member` in hinge group `group_index`:
+    /// k given, or Stiffness factor x 6 E I / L; u_y = M_y / k, or given.
+    BoucWenParameters
+    hinge_law(const BuildingParameters &p, const Member &member, const unsigned int group_index)
+    {
+      const double k_given = value_for(p.hinge_stiffnesses, group_index);
+      const double stiffness =
+        k_given > 0 ? k_given :
+                      p.hinge_stiffness_factor * 6 * member.section.youngs_modulus *
+                        member.section.second_moment / member.member_length;
+      const double      yield_moment = value_for(p.hinge_yield_moments, group_index);
+      BoucWenParameters law          = p.hysteresis;
+      law.stiffness                  = stiffness;
+      law.yield_deformation          = yield_moment > 0 ?
+                                         yield_moment / stiffness :
+                                         value_for(p.hinge_yield_rotations, group_index);
+      return law;
+    }
+
     void
     insert_hinges(Model &model, const BuildingParameters &p, const unsigned int b,
                   const unsigned int first_member)
     {
       if (p.hinge_locations.empty())
         return;
-      auto wants = [&](const char *location) {
-        return std::find(p.hinge_locations.begin(), p.hinge_locations.end(), location) !=
-               p.hinge_locations.end();
-      };
       const unsigned int last_member = model.members.size();
       for (unsigned int m = first_member; m < last_member; ++m)
         {
@@ -186,43 +225,17 @@ namespace poundfe
               if (supported && !jn.fixed[2])
                 continue; // a pinned support already releases the rotation
               const Point2 here  = k == 0 ? p0 : p1;
-              const Point2 there = k == 0 ? p1 : p0;
-              std::string  where;
-              if (member.kind == MemberKind::column)
-                {
-                  const bool bottom = here.y < there.y;
-                  if (!((wants("column ends")) || (wants("column tops") && !bottom) ||
-                        (wants("column bases") && bottom && supported)))
-                    continue;
-                  where = bottom ? "_bottom" : "_top";
-                }
-              else if (member.kind == MemberKind::beam)
-                {
-                  if (!wants("beam ends"))
-                    continue;
-                  const bool left = here.x < there.x;
-                  where = left ? "_left" : "_right";
-                }
-              else
+              const std::optional<std::string> where =
+                hinge_suffix(p, member, here, k == 0 ? p1 : p0, supported);
+              if (!where)
                 continue;
-
-              const double k_given = value_for(p.hinge_stiffnesses, group_index);
-              const double stiffness =
-                k_given > 0 ? k_given :
-                              p.hinge_stiffness_factor * 6 * member.section.youngs_modulus *
-                                member.section.second_moment / member.member_length;
-              const double yield_moment = value_for(p.hinge_yield_moments, group_index);
-              Hinge        hinge;
+              Hinge hinge;
               hinge.joint_node  = joint;
               hinge.member_node = add_node(model, here, b);
               hinge.member      = m;
               hinge.building    = b;
-              hinge.label       = member.label + where;
-              hinge.law         = p.hysteresis;
-              hinge.law.stiffness = stiffness;
-              hinge.law.yield_deformation =
-                yield_moment > 0 ? yield_moment / stiffness :
-                                   value_for(p.hinge_yield_rotations, group_index);
+              hinge.label       = member.label + *where;
+              hinge.law         = hinge_law(p, member, group_index);
               model.nodes[hinge.member_node].tied_to = joint;
               model.nodes[hinge.member_node].fixed   = {{jn.fixed[0], jn.fixed[1], false}};
               model.members[m].nodes[k]              = hinge.member_node;
@@ -835,6 +848,75 @@ namespace poundfe
         weight(m.building, m.fibre, m.section.area, m.section.mass_per_length);
   }
 
+  namespace
+  {
+    /// A building's damping as its entries give it (the modes' ratios and
+    /// coefficients are found once the modes are known).
+    RayleighDamping
+    building_damping(const BuildingParameters &p)
+    {
+      RayleighDamping d;
+      d.damping_ratio = p.damping_ratio;
+      d.a0            = p.rayleigh_a0;
+      d.a1            = p.rayleigh_a1;
+      d.kind          = p.damping_type;
+      if (p.damping_type == RayleighDamping::Kind::modes)
+        {
+          d.first_mode  = p.damping_modes[0];
+          d.second_mode = p.damping_modes[1];
+        }
+      d.modal_ratios = p.modal_damping_ratios;
+      d.bands        = p.damping_bands;
+      d.damped_modes = p.damped_modes;
+      return d;
+    }
+
+    /// Building b's nodes, members, hinges, foundation and floor loads,
+    /// added to `model`, its left edge at `left`.
+    Building
+    build_building(Model &model, const ModelParameters &parameters, const unsigned int b,
+                   const double left, const InputFile &input)
+    {
+      const BuildingParameters &p = parameters.buildings[b];
+      Building                  building;
+      building.name       = p.name;
+      building.left       = left;
+      building.first_node = model.n_nodes();
+      building.type       = p.type;
+      const unsigned int first_member = model.members.size();
+      switch (p.type)
+        {
+          case BuildingType::frame:
+            if (parameters.dimension == 3)
+              build_frame_3d(model, p, b, building, plan_centre(p, left));
+            else
+              build_frame(model, p, b, building);
+            break;
+          case BuildingType::shear:
+            if (parameters.dimension == 3)
+              build_plan_building(model, p, b, building, plan_centre(p, left), input);
+            else
+              build_shear(model, p, b, building);
+            break;
+          case BuildingType::mesh:
+            if (parameters.dimension == 3)
+              build_mesh_frame_3d(model, input, p, b, building, left);
+            else
+              build_from_mesh(model, input, p, b, building);
+            break;
+        }
+      label_members(model, building, first_member);
+      insert_hinges(model, p, b, first_member);
+      // a mesh's supports are its column bases as a generated frame's
+      if (p.type != BuildingType::shear && parameters.dimension == 2 && p.foundation.enabled())
+        add_frame_foundation(model, p.foundation, b, building);
+      building.n_nodes = model.n_nodes() - building.first_node;
+      set_floor_loads(input, p, b, building);
+      building.damping = building_damping(p);
+      return building;
+    }
+  } // namespace
+
   Model
   build_model(const ModelParameters &parameters, const ContactParameters &contact,
               const InputFile &input, const SpringParameters &springs,
@@ -850,56 +932,7 @@ namespace poundfe
     double left = 0;
     for (unsigned int b = 0; b < parameters.buildings.size(); ++b)
       {
-        const BuildingParameters &p = parameters.buildings[b];
-        Building                  building;
-        building.name       = p.name;
-        building.left       = left;
-        building.first_node = model.n_nodes();
-        building.type       = p.type;
-        const unsigned int first_member = model.members.size();
-        switch (p.type)
-          {
-            case BuildingType::frame:
-              if (parameters.dimension == 3)
-                build_frame_3d(model, p, b, building, plan_centre(p, left));
-              else
-                build_frame(model, p, b, building);
-              break;
-            case BuildingType::shear:
-              if (parameters.dimension == 3)
-                build_plan_building(model, p, b, building, plan_centre(p, left), input);
-              else
-                build_shear(model, p, b, building);
-              break;
-            case BuildingType::mesh:
-              if (parameters.dimension == 3)
-                build_mesh_frame_3d(model, input, p, b, building, left);
-              else
-                build_from_mesh(model, input, p, b, building);
-              break;
-          }
-        label_members(model, building, first_member);
-        insert_hinges(model, p, b, first_member);
-        // a mesh's supports are its column bases as a generated frame's
-        if (p.type != BuildingType::shear && parameters.dimension == 2 && p.foundation.enabled())
-          add_frame_foundation(model, p.foundation, b, building);
-        building.n_nodes = model.n_nodes() - building.first_node;
-        set_floor_loads(input, p, b, building);
-
-        RayleighDamping &d = building.damping;
-        d.damping_ratio    = p.damping_ratio;
-        d.a0               = p.rayleigh_a0;
-        d.a1               = p.rayleigh_a1;
-        d.kind             = p.damping_type;
-        if (p.damping_type == RayleighDamping::Kind::modes)
-          {
-            d.first_mode  = p.damping_modes[0];
-            d.second_mode = p.damping_modes[1];
-          }
-        d.modal_ratios = p.modal_damping_ratios;
-        d.bands        = p.damping_bands;
-        d.damped_modes = p.damped_modes;
-
+        Building building = build_building(model, parameters, b, left, input);
         if (b + 1 < parameters.buildings.size())
           left = building.right + value_for(parameters.separations, b);
         model.buildings.push_back(std::move(building));

@@ -1,4 +1,5 @@
 #include <poundfe/base/numbers.h>
+#include <poundfe/laws/bouc_wen_bounds.h>
 #include <poundfe/model/entry_scope.h>
 #include <poundfe/model/parameters.h>
 #include <poundfe/model/section_shorthands.h>
@@ -301,11 +302,18 @@ namespace poundfe
                       "Of the hinges [frame, mesh] and hysteretic storeys [shear]: post-yield "
                       "to elastic stiffness ratio. Unit: dimensionless.");
     prm.add_parameter("A", h.A,
-                      "A0 (1 with beta + gamma = 1 keeps |z| <= 1). Unit: dimensionless.");
-    prm.add_parameter("beta", h.beta, "Loop shape. Unit: dimensionless.");
-    prm.add_parameter("gamma", h.gamma, "Loop shape. Unit: dimensionless.");
+                      "A0 (1 with beta + gamma = 1 keeps |z| <= 1), in [0.01, 100]: the "
+                      "hysteretic part's initial stiffness is A (1 - alpha) k. "
+                      "Unit: dimensionless.");
+    prm.add_parameter("beta", h.beta,
+                      "Loop shape, at most 100 in size; beta + gamma > 0, beta >= |gamma| or "
+                      "gamma >= |beta|, and the largest |z|, (A / (beta + gamma))^(1/n), in "
+                      "[0.01, 100] (the strength near k u_y). Unit: dimensionless.");
+    prm.add_parameter("gamma", h.gamma,
+                      "Loop shape, at most 100 in size (see beta). Unit: dimensionless.");
     prm.add_parameter("n", h.n,
-                      "Sharpness of the yield transition (>= 1). Unit: dimensionless.");
+                      "Sharpness of the yield transition, in [1, 100] (at 100 the law is "
+                      "already bilinear). Unit: dimensionless.");
     prm.add_parameter("delta A", h.delta_A,
                       "Baber-Noori strength degradation of A. Unit: dimensionless.");
     prm.add_parameter("delta nu", h.delta_nu,
@@ -443,15 +451,8 @@ namespace poundfe
         {
           const BoucWenParameters &h  = b.hysteresis;
           const std::string        bw = s + "Bouc-Wen/";
-          if (!(h.alpha >= 0 && h.alpha <= 1))
-            input.fail(bw + "alpha", "must lie in [0, 1], got " + number_text(h.alpha));
-          input.positive(bw + "A", h.A);
-          if (!(h.n >= 1) || !std::isfinite(h.n))
-            input.fail(bw + "n", "must be >= 1, got " + number_text(h.n));
-          if (!(h.beta + h.gamma > 0))
-            input.fail(bw + "beta", "beta + gamma must be positive (|z| stays bounded)");
-          if (!(h.beta >= std::abs(h.gamma)) && !(h.gamma >= std::abs(h.beta)))
-            input.fail(bw + "gamma", "needs beta >= |gamma| or gamma >= |beta|");
+          if (const BoucWenShapeProblem shape = bouc_wen_shape_problem(h); !shape.entry.empty())
+            input.fail(bw + shape.entry, shape.problem);
           input.non_negative(bw + "delta A", h.delta_A);
           input.non_negative(bw + "delta nu", h.delta_nu);
           input.non_negative(bw + "delta eta", h.delta_eta);

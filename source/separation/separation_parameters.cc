@@ -1,6 +1,11 @@
 #include <poundfe/separation/separation_parameters.h>
 
+#include <poundfe/base/numbers.h>
+
 #include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
 
 namespace poundfe
 {
@@ -32,16 +37,18 @@ namespace poundfe
                       "building): delta_M = C_d delta_max / I_e (eq. 12.12-1). 1 (with I_e = 1) "
                       "takes the run's displacements as the inelastic ones, as a nonlinear "
                       "response history gives them; use the code's C_d when the run is an "
-                      "elastic analysis at the reduced design forces. Unit: dimensionless.",
+                      "elastic analysis at the reduced design forces. In [1, 10] (the code's "
+                      "C_d: 1.25 to 6.5). Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Importance factor", importance_factor,
-                      "ASCE 7-16 I_e of each building (one for all, or one per building). "
-                      "Unit: dimensionless.",
+                      "ASCE 7-16 I_e of each building (one for all, or one per building), "
+                      "in [1, 2] (the code's: 1 to 1.5). Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Behaviour factor", behaviour_factor,
                       "Eurocode 8 q of each building (one for all, or one per building): "
                       "d_s = q d_e (EN 1998-1 eq. 4.23, q_d = q). 1 takes the run's "
-                      "displacements as d_s. Unit: dimensionless.",
+                      "displacements as d_s. In [1, 10] (the code's q: 1 to 6.5). "
+                      "Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Coinciding levels factor", coinciding_levels_factor,
                       "Eurocode 8 §4.4.2.7(4): the SRSS separation is multiplied by this "
@@ -90,6 +97,22 @@ namespace poundfe
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /// The codes' factors within the range of the codes' own values: a C_d
+    /// of 1e200 gave an ASCE 7 gap of 8e198 m with exit 0.
+    void
+    check_code_factors(const InputFile &input, const std::string &entry,
+                       const std::vector<double> &factors, const double lower, const double upper,
+                       const std::string &why)
+    {
+      for (const double f : factors)
+        if (!(f >= lower && f <= upper))
+          input.fail(entry, "must lie in [" + number_text(lower) + ", " + number_text(upper) +
+                              "], got " + number_text(f) + " (" + why + ")");
+    }
+  } // namespace
+
   void
   SeparationParameters::check(const InputFile &input, const unsigned int n_buildings) const
   {
@@ -98,6 +121,13 @@ namespace poundfe
                "one per building");
     input.list(s + "Importance factor", importance_factor, n_buildings, false, "one per building");
     input.list(s + "Behaviour factor", behaviour_factor, n_buildings, false, "one per building");
+    check_code_factors(input, s + "Deflection amplification", deflection_amplification, 1, 10,
+                       "ASCE 7-16 Table 12.2-1 gives C_d from 1.25 to 6.5; 1: the run's own "
+                       "inelastic displacements");
+    check_code_factors(input, s + "Importance factor", importance_factor, 1, 2,
+                       "ASCE 7-16 Table 1.5-2 gives I_e from 1 to 1.5");
+    check_code_factors(input, s + "Behaviour factor", behaviour_factor, 1, 10,
+                       "EN 1998-1 gives q from 1 to 6.5 (5 alpha_u/alpha_1 of ductile frames)");
     input.positive(s + "Coinciding levels factor", coinciding_levels_factor);
     if (!(target_probability > 0 && target_probability < 1))
       input.fail(s + "Target probability", "must lie in (0, 1)");
