@@ -213,7 +213,7 @@ namespace poundfe
       , time(with_time)
       , precision(digits < 0 ? 6 : digits) // as the stream's precision
     {
-      buffer.reserve(2 * flush_size);
+      buffer.resize(2 * flush_size);
     }
 
     Recorder::~Recorder() = default;
@@ -226,9 +226,10 @@ namespace poundfe
         line.push_back(domain.time);
       values(domain, line);
       // room for each number: sign, the digits, the point and an exponent
-      const std::size_t start = buffer.size(), room = precision_text_room(precision) + 1;
-      buffer.resize(start + line.size() * room + 1);
-      char *out = buffer.data() + start;
+      const std::size_t room = precision_text_room(precision) + 1;
+      if (used + line.size() * room + 1 > buffer.size()) // grows for a long line only
+        buffer.resize(used + line.size() * room + 1);
+      char *out = buffer.data() + used;
       for (std::size_t i = 0; i < line.size(); ++i)
         {
           if (i > 0)
@@ -236,11 +237,11 @@ namespace poundfe
           out = write_precision_text(out, line[i], precision);
         }
       *out++ = '\n';
-      buffer.resize(out - buffer.data());
-      if (buffer.size() > flush_size)
+      used   = out - buffer.data();
+      if (used > flush_size)
         {
-          file->write(buffer);
-          buffer.clear();
+          file->write(buffer.data(), used);
+          used = 0;
         }
     }
 
@@ -249,8 +250,8 @@ namespace poundfe
     {
       if (!file)
         return;
-      file->write(buffer);
-      buffer.clear();
+      file->write(buffer.data(), used);
+      used = 0;
       file->commit();
       file.reset();
     }
@@ -261,15 +262,23 @@ namespace poundfe
     {}
 
     void
-    NodeRecorder::values(const Domain &domain, std::vector<double> &line) const
+    NodeRecorder::values(const Domain &domain, std::vector<double> &line)
     {
       using Response = NodeRecorderSpec::Response;
       std::map<int, std::vector<double>> reactions;
       if (spec.response == Response::reaction)
         reactions = domain.reactions();
-      for (const int tag : spec.nodes)
+      if (nodes.size() != spec.nodes.size())
         {
-          const Node &node = domain.node(tag);
+          std::vector<const Node *> found; // all or none (node() may throw)
+          for (const int tag : spec.nodes)
+            found.push_back(&domain.node(tag));
+          nodes = std::move(found);
+        }
+      for (std::size_t n = 0; n < nodes.size(); ++n)
+        {
+          const Node &node = *nodes[n];
+          const int   tag  = spec.nodes[n];
           for (const unsigned int k : spec.dofs)
             switch (spec.response)
               {
@@ -295,13 +304,17 @@ namespace poundfe
     {}
 
     void
-    ElementRecorder::values(const Domain &domain, std::vector<double> &line) const
+    ElementRecorder::values(const Domain &domain, std::vector<double> &line)
     {
-      for (const int tag : spec.elements)
+      if (readers.size() != spec.elements.size())
         {
-          const std::vector<double> v = domain.elements.at(tag)->response(spec.response);
-          line.insert(line.end(), v.begin(), v.end());
+          std::vector<Element::ResponseReader> found; // all or none (they may throw)
+          for (const int tag : spec.elements)
+            found.push_back(domain.elements.at(tag)->response_reader(spec.response));
+          readers = std::move(found);
         }
+      for (const Element::ResponseReader &read : readers)
+        read(line);
     }
   } // namespace opensees
 } // namespace poundfe

@@ -74,11 +74,12 @@ namespace poundfe
 
     protected:
       /// The line's values after the time.
-      virtual void values(const Domain &domain, std::vector<double> &line) const = 0;
+      virtual void values(const Domain &domain, std::vector<double> &line) = 0;
 
     private:
       std::unique_ptr<AtomicFile> file;
-      std::string                 buffer;
+      std::string                 buffer; // its first `used` characters are text
+      std::size_t                 used = 0;
       std::vector<double>         line; // the values of one record, its storage kept
       bool                        time;
       int                         precision;
@@ -90,8 +91,11 @@ namespace poundfe
       explicit NodeRecorder(NodeRecorderSpec spec);
 
     private:
-      void             values(const Domain &domain, std::vector<double> &line) const override;
+      void             values(const Domain &domain, std::vector<double> &line) override;
       NodeRecorderSpec spec;
+      /// The nodes, found at the first record (nodes are never removed
+      /// while a recorder lives: wipe finishes the recorders first).
+      std::vector<const Node *> nodes;
     };
 
     struct ElementRecorderSpec
@@ -109,8 +113,12 @@ namespace poundfe
       explicit ElementRecorder(ElementRecorderSpec spec);
 
     private:
-      void values(const Domain &domain, std::vector<double> &line) const override;
+      void values(const Domain &domain, std::vector<double> &line) override;
       ElementRecorderSpec spec;
+      /// Each element's response resolved at the first record
+      /// (Element::response_reader), instead of its words matched at every
+      /// step.
+      std::vector<Element::ResponseReader> readers;
     };
   } // namespace opensees
 } // namespace poundfe
