@@ -491,8 +491,17 @@ namespace poundfe
     } // namespace
 
     void
-    Analysis::list_elements()
+    Analysis::list_elements(const bool renumbered)
     {
+      nodal_loads_given = std::any_of(domain.patterns.begin(), domain.patterns.end(),
+                                      [](const auto &p) { return !p.second.loads.empty(); });
+      if (!renumbered && element_list.size() == domain.elements.size())
+        {
+          auto listed = element_list.begin();
+          for (const auto &[tag, element] : domain.elements)
+            (listed++)->rayleigh = &domain.rayleigh_of(tag);
+          return;
+        }
       element_list.clear();
       std::vector<Element *> elements;
       for (auto &[tag, element] : domain.elements)
@@ -504,8 +513,6 @@ namespace poundfe
           elements.push_back(element.get());
         }
       links = dense() && imposed_dofs.empty() ? UniaxialLinks::of(elements) : nullptr;
-      nodal_loads_given = std::any_of(domain.patterns.begin(), domain.patterns.end(),
-                                      [](const auto &p) { return !p.second.loads.empty(); });
     }
 
     bool
@@ -1156,9 +1163,10 @@ namespace poundfe
                       const std::function<void()>                     &after_step,
                       const std::function<void(const std::string &)> &warn)
     {
-      if (domain.changed || !numbered)
+      const bool renumber = domain.changed || !numbered;
+      if (renumber)
         number();
-      list_elements();
+      list_elements(renumber);
       if (opts.transient && !imposed_dofs.empty())
         throw ScriptError("sp in a transient analysis is not supported");
       if (!opts.transformation && !imposed_dofs.empty())
@@ -1204,9 +1212,10 @@ namespace poundfe
     std::vector<double>
     Analysis::eigenvalues(const unsigned int n)
     {
-      if (domain.changed || !numbered)
+      const bool renumber = domain.changed || !numbered;
+      if (renumber)
         number();
-      list_elements();
+      list_elements(renumber);
       gather();
       std::string why;
       if (!set_trial(why))

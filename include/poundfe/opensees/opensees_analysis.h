@@ -178,9 +178,10 @@ namespace poundfe
       /// Eigen's arithmetic in fixed storage.
       bool   small() const { return n_equations <= SmallLU::max_size; }
       /// The elements in the domain's order with their Rayleigh factors
-      /// and whether a diaphragm's combination is among their equations
-      /// (at each analyze: regions and `rayleigh` may have changed them).
-      void   list_elements();
+      /// and whether a diaphragm's combination is among their equations,
+      /// and the typed loops of a small model, after number(); at every
+      /// analyze the Rayleigh factors alone (`rayleigh` may have changed).
+      void   list_elements(bool renumbered);
       bool   step(double dt, std::string &why);
       /// DisplacementControl's predictor (newStep).
       bool   displacement_step(std::string &why);
