@@ -27,6 +27,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -40,6 +41,188 @@ namespace poundfe
       /// The equation of a diaphragm's j-th combination: first_combination - j.
       constexpr int first_combination = -1000000;
     } // namespace
+
+    /// The elements of a small model (a dense system) that are all
+    /// UniaxialRows (zeroLength, truss) without Rayleigh damping, on
+    /// equations without diaphragm combinations or imposed displacements:
+    /// their trial states, forces and iteration matrices by typed loops
+    /// over each element's laws and rows (UniaxialLinksOf, of the elements'
+    /// number of DOFs), in place of the elements' virtual calls, local
+    /// vectors and matrices of dynamic size. The same operations in the
+    /// same order as ZeroLength's set_trial, force_into and
+    /// tangent_and_damping_into (opensees_elements.cc) and as the
+    /// analysis's assembly, so the same bits.
+    class UniaxialLinks
+    {
+    public:
+      virtual ~UniaxialLinks() = default;
+      /// Null when some element does not qualify.
+      static std::unique_ptr<UniaxialLinks> of(const std::vector<Element *> &elements);
+      /// The laws' trial states at the elements' displacements u and
+      /// velocities v (ZeroLength::set_trial); false, with why, when a law
+      /// refuses.
+      virtual bool set_trial(const Vector &u, const Vector &v, std::string &why) const = 0;
+      /// r -= each element's force (ZeroLength::force_into).
+      virtual void subtract_forces(Vector &r) const = 0;
+      /// k += each element's c_k K_e + c_c C_e (ZeroLength's
+      /// tangent_and_damping_into, the analysis's assembly).
+      virtual void add_tangents(double c_k, double c_c, Matrix &k) const = 0;
+    };
+
+    namespace
+    {
+      /// UniaxialLinks of n_dofs DOFs each (2 ndf).
+      template <unsigned int n_dofs>
+      class UniaxialLinksOf : public UniaxialLinks
+      {
+      public:
+        void
+        add(Element &element, UniaxialRows &rows)
+        {
+          Link link{&element, &rows, {}};
+          std::copy(element.equations.begin(), element.equations.end(), link.equations.begin());
+          links.push_back(link);
+        }
+
+        bool
+        set_trial(const Vector &u, const Vector &v, std::string &why) const override
+        {
+          for (const Link &link : links)
+            {
+              UniaxialRows &z = *link.rows;
+              const auto    n = z.laws.size();
+              std::array<double, n_dofs> local_u, local_v;
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                {
+                  const int eq = link.equations[j];
+                  local_u[j]   = eq >= 0 ? u[eq] : 0.0;
+                  local_v[j]   = eq >= 0 ? v[eq] : 0.0;
+                }
+              z.rate.resize(n);
+              z.strain.resize(n);
+              for (unsigned int m = 0; m < n; ++m)
+                {
+                  double e = 0, e_dot = 0;
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    {
+                      e_dot += z.t(m, j) * local_v[j];
+                      e += z.t(m, j) * local_u[j];
+                    }
+                  z.rate[m]   = e_dot * z.strain_scale;
+                  z.strain[m] = e * z.strain_scale;
+                }
+              for (unsigned int m = 0; m < n; ++m)
+                if (!z.laws[m]->set_trial(z.strain[m], z.rate[m]))
+                  {
+                    z.why = z.laws[m]->failure();
+                    why   = "element " + std::to_string(link.element->tag) + ": " +
+                          (z.why.empty() ? "its forces are not finite" : z.why);
+                    return false;
+                  }
+            }
+          return true;
+        }
+
+        void
+        subtract_forces(Vector &r) const override
+        {
+          for (const Link &link : links)
+            {
+              const UniaxialRows        &z = *link.rows;
+              std::array<double, n_dofs> f{};
+              for (unsigned int m = 0; m < z.laws.size(); ++m)
+                {
+                  const double stress = z.laws[m]->force();
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    f[j] += z.t(m, j) * stress;
+                }
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                if (link.equations[j] >= 0)
+                  r[link.equations[j]] += -(f[j] * z.force_scale);
+            }
+        }
+
+        void
+        add_tangents(const double c_k, const double c_c, Matrix &k) const override
+        {
+          for (const Link &link : links)
+            {
+              const UniaxialRows                  &z = *link.rows;
+              std::array<double, n_dofs * n_dofs> kt{}, ct{};
+              for (unsigned int m = 0; m < z.laws.size(); ++m)
+                {
+                  const double d = z.laws[m]->tangent();
+                  const double e = c_c != 0 ? z.laws[m]->damping_tangent() : 0.0;
+                  for (unsigned int i = 0; i < n_dofs; ++i)
+                    if (z.t(m, i) != 0)
+                      for (unsigned int j = 0; j < n_dofs; ++j)
+                        {
+                          kt[i * n_dofs + j] += z.t(m, i) * d * z.t(m, j);
+                          if (c_c != 0)
+                            ct[i * n_dofs + j] += z.t(m, i) * e * z.t(m, j);
+                        }
+                }
+              const double scale = z.force_scale * z.strain_scale;
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                  {
+                    const int ei = link.equations[i], ej = link.equations[j];
+                    if (ei < 0 || ej < 0)
+                      continue;
+                    double value = kt[i * n_dofs + j] * scale * c_k;
+                    if (c_c != 0)
+                      value += c_c * (ct[i * n_dofs + j] * scale);
+                    k(ei, ej) += value;
+                  }
+            }
+        }
+
+      private:
+        struct Link
+        {
+          Element                      *element;
+          UniaxialRows                 *rows;
+          std::array<int, n_dofs>       equations;
+        };
+        std::vector<Link> links;
+      };
+
+      template <unsigned int n_dofs>
+      std::unique_ptr<UniaxialLinks>
+      links_of(const std::vector<Element *> &elements)
+      {
+        auto links = std::make_unique<UniaxialLinksOf<n_dofs>>();
+        for (Element *element : elements)
+          {
+            UniaxialRows *rows = element->uniaxial_rows();
+            const auto   &eq   = element->equations;
+            if (!rows || element->rayleigh_damped() || eq.size() != n_dofs ||
+                rows->t.cols() != n_dofs ||
+                std::any_of(eq.begin(), eq.end(), [](const int e) { return e < -1; }))
+              return nullptr;
+            links->add(*element, *rows);
+          }
+        return links;
+      }
+    } // namespace
+
+    std::unique_ptr<UniaxialLinks>
+    UniaxialLinks::of(const std::vector<Element *> &elements)
+    {
+      switch (elements.empty() ? 0 : elements.front()->equations.size())
+        {
+          case 2: // ndf 1, 2, 3, 6
+            return links_of<2>(elements);
+          case 4:
+            return links_of<4>(elements);
+          case 6:
+            return links_of<6>(elements);
+          case 12:
+            return links_of<12>(elements);
+          default:
+            return nullptr;
+        }
+    }
 
     Analysis::Analysis(Domain &domain, AnalysisOptions options)
       : domain(domain)
@@ -316,6 +499,31 @@ namespace poundfe
       }
     } // namespace
 
+    void
+    Analysis::list_elements(const bool renumbered)
+    {
+      nodal_loads_given = std::any_of(domain.patterns.begin(), domain.patterns.end(),
+                                      [](const auto &p) { return !p.second.loads.empty(); });
+      if (!renumbered && element_list.size() == domain.elements.size())
+        {
+          auto listed = element_list.begin();
+          for (const auto &[tag, element] : domain.elements)
+            (listed++)->rayleigh = &domain.rayleigh_of(tag);
+          return;
+        }
+      element_list.clear();
+      std::vector<Element *> elements;
+      for (auto &[tag, element] : domain.elements)
+        {
+          const std::vector<int> &eq = element->equations;
+          element_list.push_back(
+            {element.get(), &domain.rayleigh_of(tag),
+             std::any_of(eq.begin(), eq.end(), [](const int e) { return e <= first_combination; })});
+          elements.push_back(element.get());
+        }
+      links = dense() && imposed_dofs.empty() ? UniaxialLinks::of(elements) : nullptr;
+    }
+
     bool
     Analysis::set_trial(std::string &why)
     {
@@ -326,18 +534,21 @@ namespace poundfe
           for (unsigned int j = 0; j < imposed_dofs.size(); ++j)
             imposed_u[j] = imposed.at(imposed_dofs[j]);
         }
-      element_state.resize(domain.elements.size());
+      if (links)
+        return links->set_trial(u, v, why);
+      element_state.resize(element_list.size());
       auto state = element_state.begin();
-      for (auto &[tag, element] : domain.elements)
+      for (const ListedElement &listed : element_list)
         {
+          Element &element        = *listed.element;
           auto &[local_u, local_v] = *state++;
-          element_values(*element, u, &imposed_u, combinations, local_u);
-          element_values(*element, v, nullptr, combinations, local_v);
-          if (!element->set_trial(local_u, local_v))
+          element_values(element, u, &imposed_u, combinations, local_u);
+          element_values(element, v, nullptr, combinations, local_v);
+          if (!element.set_trial(local_u, local_v))
             {
               // an element without a law to blame refuses non-finite forces
-              const std::string reason = element->failure();
-              why = "element " + std::to_string(tag) + ": " +
+              const std::string reason = element.failure();
+              why = "element " + std::to_string(element.tag) + ": " +
                     (reason.empty() ? "its forces are not finite" : reason);
               return false;
             }
@@ -353,32 +564,23 @@ namespace poundfe
       const Vector &v = at_alpha ? V_alpha : V; // HHT: the damping at t + alpha dt
       if (beam_loads_taken)
         domain.apply_element_loads(trial_time); // their resisting forces take them
-      for (const auto &[tag, load] : domain.nodal_loads(trial_time))
+      for (const auto &[tag, load] :
+           nodal_loads_given ? domain.nodal_loads(trial_time) : no_nodal_loads)
         {
           const Node &node = domain.node(tag);
           for (unsigned int k = 0; k < load.size(); ++k)
             add_to(r, node.equation[k], load[k]);
         }
-      for (const auto &[tag, element] : domain.elements)
-        {
-          Vector &f = element_force;
-          element->force_into(f);
-          if (opts.transient && element->rayleigh_damped()) // materials' own damping is in f
-            {
-              element_damping(*element, domain.rayleigh_of(tag), element_damping_matrix,
-                              element_work_matrix);
-              element_values(*element, v, nullptr, combinations, element_velocity);
-              f.noalias() += element_damping_matrix * element_velocity;
-            }
-          for (unsigned int i = 0; i < f.size(); ++i)
-            add_to(r, element->equations[i], -f[i]);
-        }
+      if (links)
+        links->subtract_forces(r);
+      else
+        subtract_element_forces(r, v);
       if (!opts.transient)
         return r;
       const double alpha_m = uniform_mass_damping ? domain.rayleigh.alpha_m : 0.0;
       if (!ground_known || ground_time != trial_time)
         {
-          ground       = domain.ground_acceleration(trial_time);
+          domain.ground_acceleration(trial_time, ground);
           ground_time  = trial_time;
           ground_known = true;
         }
@@ -393,6 +595,30 @@ namespace poundfe
     }
 
     void
+    Analysis::subtract_element_forces(Vector &r, const Vector &v)
+    {
+      for (const ListedElement &listed : element_list)
+        {
+          const Element &element = *listed.element;
+          Vector        &f       = element_force;
+          element.force_into(f);
+          if (opts.transient && element.rayleigh_damped()) // materials' own damping is in f
+            {
+              element_damping(element, *listed.rayleigh, element_damping_matrix,
+                              element_work_matrix);
+              element_values(element, v, nullptr, combinations, element_velocity);
+              f.noalias() += element_damping_matrix * element_velocity;
+            }
+          const std::vector<int> &eq = element.equations;
+          for (unsigned int i = 0; i < f.size(); ++i)
+            if (listed.combined)
+              add_to(r, eq[i], -f[i]);
+            else if (eq[i] >= 0)
+              r[eq[i]] += -f[i];
+        }
+    }
+
+    void
     Analysis::add_element_tangents(const double c_k, const double c_c)
     {
       const bool as_dense = dense();
@@ -402,18 +628,34 @@ namespace poundfe
         else
           tangent_entries.emplace_back(i, j, value);
       };
-      for (const auto &[tag, element] : domain.elements)
+      if (links) // dense, the elements' equations without combinations
+        return links->add_tangents(c_k, c_c, dense_tangent);
+      for (const ListedElement &listed : element_list)
         {
-          Matrix &k = element_matrix;
-          element->tangent_into(k);
-          k *= c_k;
-          if (c_c != 0)
+          const Element &element = *listed.element;
+          Matrix        &k       = element_matrix;
+          if (!element.rayleigh_damped()) // c_k K_e + c_c C_e in one pass
+            element.tangent_and_damping_into(c_k, c_c, k, element_damping_matrix);
+          else
             {
-              element_damping(*element, domain.rayleigh_of(tag), element_damping_matrix,
-                              element_work_matrix);
-              k += c_c * element_damping_matrix;
+              element.tangent_into(k);
+              k *= c_k;
+              if (c_c != 0)
+                {
+                  element_damping(element, *listed.rayleigh, element_damping_matrix,
+                                  element_work_matrix);
+                  k += c_c * element_damping_matrix;
+                }
             }
-          const auto &eq = element->equations;
+          const auto &eq = element.equations;
+          if (as_dense && !listed.combined) // the entries where they go, in the same order
+            {
+              for (unsigned int i = 0; i < eq.size(); ++i)
+                for (unsigned int j = 0; j < eq.size(); ++j)
+                  if (eq[i] >= 0 && eq[j] >= 0)
+                    dense_tangent(eq[i], eq[j]) += k(i, j);
+              continue;
+            }
           for (unsigned int i = 0; i < eq.size(); ++i)
             for (unsigned int j = 0; j < eq.size(); ++j)
               if (eq[i] >= 0 && eq[j] >= 0)
@@ -443,9 +685,17 @@ namespace poundfe
             dense_tangent.diagonal() += c_c * mass_damping_of_equation;
           if (!dense_tangent.allFinite())
             throw NumericalError(not_finite);
+          const char *singular = "LU: the effective matrix is singular";
+          if (small())
+            {
+              if (!small_factors.factorize(dense_tangent, n_equations))
+                throw NumericalError(singular);
+              ++counts.factorizations;
+              return;
+            }
           dense_factors.compute(dense_tangent);
           if ((dense_factors.matrixLU().diagonal().array() == 0).any())
-            throw NumericalError("LU: the effective matrix is singular");
+            throw NumericalError(singular);
           ++counts.factorizations;
           return;
         }
@@ -478,7 +728,10 @@ namespace poundfe
           return;
         }
       x.resize(b.size());
-      x = dense_factors.solve(b);
+      if (small())
+        small_factors.solve(b, x);
+      else
+        x = dense_factors.solve(b);
     }
 
     double
@@ -925,11 +1178,11 @@ namespace poundfe
     Analysis::commit()
     {
       const bool committed_stiffness = domain.committed_stiffness_damping();
-      for (auto &[tag, element] : domain.elements)
+      for (const ListedElement &listed : element_list)
         {
-          element->commit();
+          listed.element->commit();
           if (committed_stiffness)
-            element->committed_tangent = element->tangent();
+            listed.element->committed_tangent = listed.element->tangent();
         }
       domain.time = trial_time;
       scatter();
@@ -941,8 +1194,10 @@ namespace poundfe
                       const std::function<void()>                     &after_step,
                       const std::function<void(const std::string &)> &warn)
     {
-      if (domain.changed || !numbered)
+      const bool renumber = domain.changed || !numbered;
+      if (renumber)
         number();
+      list_elements(renumber);
       if (opts.transient && !imposed_dofs.empty())
         throw ScriptError("sp in a transient analysis is not supported");
       if (!opts.transformation && !imposed_dofs.empty())
@@ -988,8 +1243,10 @@ namespace poundfe
     std::vector<double>
     Analysis::eigenvalues(const unsigned int n)
     {
-      if (domain.changed || !numbered)
+      const bool renumber = domain.changed || !numbered;
+      if (renumber)
         number();
+      list_elements(renumber);
       gather();
       std::string why;
       if (!set_trial(why))

@@ -120,11 +120,18 @@ namespace poundfe
     std::vector<double>
     Domain::ground_acceleration(const double at_time) const
     {
-      std::vector<double> a(ndf, 0.0);
+      std::vector<double> a;
+      ground_acceleration(at_time, a);
+      return a;
+    }
+
+    void
+    Domain::ground_acceleration(const double at_time, std::vector<double> &a) const
+    {
+      a.assign(ndf, 0.0);
       for (const auto &[tag, pattern] : patterns)
         if (pattern.uniform_excitation)
           a[pattern.direction] += pattern.load_factor(at_time);
-      return a;
     }
 
     const RayleighFactors &

@@ -180,16 +180,16 @@ namespace poundfe
         Eigen::Vector3d        q0, p0; // element loads: basic fixed-end forces, reactions
       };
 
-      class ZeroLength : public Element
+      class ZeroLength : public Element, protected UniaxialRows
       {
       public:
         /// Material m (the domain's tag materials[m]) on row m of t.
         ZeroLength(const Domain &domain, const int tag, const std::array<int, 2> nodes,
-                   Matrix t, const std::vector<int> &materials, const bool rayleigh)
+                   Matrix rows, const std::vector<int> &materials, const bool rayleigh)
           : Element(tag, {nodes[0], nodes[1]})
-          , t(std::move(t))
           , rayleigh(rayleigh)
         {
+          t = std::move(rows);
           for (const int material : materials)
             laws.push_back(make_domain_material(domain, material));
           committed_tangent = tangent();
@@ -288,6 +288,17 @@ namespace poundfe
           return Element::response(words);
         }
 
+        ResponseReader
+        response_reader(const std::vector<std::string> &words) const override
+        {
+          if (words.size() != 3 || words[0] != "material")
+            return Element::response_reader(words);
+          const auto [i, kind] = material_response_of(words[1], words[2]);
+          return [this, i = i, kind = kind](std::vector<double> &values) {
+            material_values(i, kind, values);
+          };
+        }
+
         Matrix tangent() const override { return as_value(&ZeroLength::tangent_into); }
         Matrix
         initial_tangent() const override
@@ -303,6 +314,21 @@ namespace poundfe
         tangent_into(Matrix &k) const override
         {
           weighted([](auto &l) { return l.tangent(); }, k);
+        }
+        void
+        tangent_and_damping_into(const double c_k, const double c_c, Matrix &k,
+                                 Matrix &c) const override
+        {
+          // the sums of tangent_into and material_damping_into in one pass
+          // over the materials, then Element's c_k K + c_c C
+          if (c_c == 0)
+            weighted([](auto &l) { return l.tangent(); }, k);
+          else
+            weighted([](auto &l) { return l.tangent(); }, k,
+                     [](auto &l) { return l.damping_tangent(); }, &c);
+          k *= c_k;
+          if (c_c != 0)
+            k += c_c * c;
         }
         void
         initial_tangent_into(Matrix &k) const override
@@ -336,32 +362,81 @@ namespace poundfe
           strain = committed_strain = Vector::Zero(laws.size());
         }
         std::string failure() const override { return why; }
+        UniaxialRows *uniaxial_rows() override { return this; }
 
       protected:
         /// OpenSees's `material i stress|strain|tangent|stressStrain|
         /// stressStrainTangent` (ZeroLength::setResponse passing the rest of
         /// the words to UniaxialMaterial::setResponse).
-        std::vector<double>
-        material_response(const std::string &number, const std::string &what) const
+        enum class MaterialResponse
+        {
+          stress,
+          strain,
+          tangent,
+          stress_strain,
+          stress_strain_tangent
+        };
+
+        /// The 0-based material of `number` and the kind of `what`;
+        /// ScriptError when the element has no such material or response.
+        std::pair<unsigned int, MaterialResponse>
+        material_response_of(const std::string &number, const std::string &what) const
         {
           const int i = std::atoi(number.c_str());
           if (i < 1 || i > static_cast<int>(laws.size()))
             throw ScriptError("element " + std::to_string(tag) + " has no material " + number +
                               " (1 to " + std::to_string(laws.size()) + ")");
-          const UniaxialLaw &law = *laws[i - 1];
-          const double       e = strain.size() > 0 ? strain[i - 1] : 0.0;
-          if (what == "stress")
-            return {law.force()};
-          if (what == "strain")
-            return {e};
-          if (what == "tangent")
-            return {law.tangent()};
-          if (what == "stressStrain" || what == "stressANDstrain" || what == "stressAndStrain")
-            return {law.force(), e};
-          if (what == "stressStrainTangent" || what == "stressANDstrainANDtangent")
-            return {law.force(), e, law.tangent()};
+          using R = MaterialResponse;
+          const std::pair<const char *, R> kinds[] = {
+            {"stress", R::stress},
+            {"strain", R::strain},
+            {"tangent", R::tangent},
+            {"stressStrain", R::stress_strain},
+            {"stressANDstrain", R::stress_strain},
+            {"stressAndStrain", R::stress_strain},
+            {"stressStrainTangent", R::stress_strain_tangent},
+            {"stressANDstrainANDtangent", R::stress_strain_tangent}};
+          for (const auto &[name, kind] : kinds)
+            if (what == name)
+              return {static_cast<unsigned int>(i - 1), kind};
           throw ScriptError("element " + std::to_string(tag) + ": material response '" + what +
                             "' is not supported");
+        }
+
+        /// The values of material i's response appended to `values`.
+        void
+        material_values(const unsigned int i, const MaterialResponse what,
+                        std::vector<double> &values) const
+        {
+          const UniaxialLaw &law = *laws[i];
+          const double       e   = strain.size() > 0 ? strain[i] : 0.0;
+          switch (what)
+            {
+              case MaterialResponse::stress:
+                values.push_back(law.force());
+                break;
+              case MaterialResponse::strain:
+                values.push_back(e);
+                break;
+              case MaterialResponse::tangent:
+                values.push_back(law.tangent());
+                break;
+              case MaterialResponse::stress_strain:
+                values.insert(values.end(), {law.force(), e});
+                break;
+              case MaterialResponse::stress_strain_tangent:
+                values.insert(values.end(), {law.force(), e, law.tangent()});
+                break;
+            }
+        }
+
+        std::vector<double>
+        material_response(const std::string &number, const std::string &what) const
+        {
+          const auto [i, kind] = material_response_of(number, what);
+          std::vector<double> values;
+          material_values(i, kind, values);
+          return values;
         }
 
         /// One of the *_into matrices as a new matrix.
@@ -373,31 +448,44 @@ namespace poundfe
           return k;
         }
 
+        /// sum_m t_m^T d_m t_m into k, d_m = value(law m).
         template <typename Value>
         void
         weighted(const Value &value, Matrix &k) const
         {
-          // sum_m t_m^T d_m t_m by rows, skipping t_m's zeros (as force())
+          weighted(value, k, value, nullptr);
+        }
+
+        /// The same, and with `c` the sum of other_value into c, in one
+        /// pass over the materials.
+        template <typename Value, typename OtherValue>
+        void
+        weighted(const Value &value, Matrix &k, const OtherValue &other_value, Matrix *c) const
+        {
+          // by rows, skipping t_m's zeros (as force())
           const Eigen::Index n = t.cols();
           k.setZero(n, n);
+          if (c)
+            c->setZero(n, n);
           for (unsigned int m = 0; m < laws.size(); ++m)
             {
-              const double d = value(*laws[m]);
+              const double d = value(*laws[m]), e = c ? other_value(*laws[m]) : 0.0;
               for (Eigen::Index i = 0; i < n; ++i)
                 if (t(m, i) != 0)
                   for (Eigen::Index j = 0; j < n; ++j)
-                    k(i, j) += t(m, i) * d * t(m, j);
+                    {
+                      k(i, j) += t(m, i) * d * t(m, j);
+                      if (c)
+                        (*c)(i, j) += t(m, i) * e * t(m, j);
+                    }
             }
           k *= force_scale * strain_scale;
+          if (c)
+            *c *= force_scale * strain_scale;
         }
 
-        Matrix                                    t; // materials x DOFs
-        std::vector<std::unique_ptr<UniaxialLaw>> laws;
-        Vector strain, committed_strain; // the materials' trial and committed strains
-        Vector rate;                     // the trial strain rates
-        bool                                      rayleigh = false;
-        std::string                               why;
-        double strain_scale = 1, force_scale = 1; // a truss: 1/L and A
+        Vector committed_strain; // the materials' committed strains
+        bool   rayleigh = false;
       };
 
       /// OpenSees's kinds of twoNodeLink by the model's ndm and ndf: D1N2,
@@ -440,6 +528,7 @@ namespace poundfe
           ul = Tgl * u;
           return ZeroLength::set_trial(u, v);
         }
+        UniaxialRows *uniaxial_rows() override { return nullptr; } // ul, P-Delta
         Vector
         force() const override
         {
@@ -454,21 +543,23 @@ namespace poundfe
           add_p_delta_stiffness(kl);
           return Tgl.transpose() * kl * Tgl;
         }
+        // with P-Delta the values above, without it ZeroLength's in place
         void
         force_into(Vector &f) const override
         {
-          if (with_p_delta)
-            f = force();
-          else
-            ZeroLength::force_into(f);
+          with_p_delta ? void(f = force()) : ZeroLength::force_into(f);
         }
         void
         tangent_into(Matrix &k) const override
         {
-          if (with_p_delta)
-            k = tangent();
-          else
-            ZeroLength::tangent_into(k);
+          with_p_delta ? void(k = tangent()) : ZeroLength::tangent_into(k);
+        }
+        void
+        tangent_and_damping_into(const double c_k, const double c_c, Matrix &k,
+                                 Matrix &c) const override
+        {
+          with_p_delta ? Element::tangent_and_damping_into(c_k, c_c, k, c) :
+                         ZeroLength::tangent_and_damping_into(c_k, c_c, k, c);
         }
         std::vector<double>
         response(const std::vector<std::string> &words) const override
@@ -678,6 +769,28 @@ namespace poundfe
       const UniformLoadForces<2> f = uniform_load_forces<2>(L, MemberLoad<2>(wx, wy));
       p0 += f.p0;
       q0 += f.q0;
+    }
+
+    void
+    Element::tangent_and_damping_into(const double c_k, const double c_c, Matrix &k,
+                                      Matrix &c) const
+    {
+      tangent_into(k);
+      k *= c_k;
+      if (c_c == 0)
+        return;
+      material_damping_into(c);
+      k += c_c * c;
+    }
+
+    Element::ResponseReader
+    Element::response_reader(const std::vector<std::string> &words) const
+    {
+      response(words); // refuses what the element does not give
+      return [this, words](std::vector<double> &values) {
+        const std::vector<double> v = response(words);
+        values.insert(values.end(), v.begin(), v.end());
+      };
     }
 
     std::vector<double>

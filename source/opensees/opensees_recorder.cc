@@ -215,7 +215,7 @@ namespace poundfe
       , interval(output.interval)
       , interval_tolerance(output.interval_tolerance)
     {
-      buffer.reserve(2 * flush_size);
+      buffer.resize(2 * flush_size);
     }
 
     Recorder::~Recorder() = default;
@@ -247,9 +247,10 @@ namespace poundfe
     Recorder::write_line(const std::vector<double> &numbers)
     {
       // room for each number: sign, the digits, the point and an exponent
-      const std::size_t start = buffer.size(), room = precision_text_room(precision) + 1;
-      buffer.resize(start + numbers.size() * room + 1);
-      char *out = buffer.data() + start;
+      const std::size_t room = precision_text_room(precision) + 1;
+      if (used + numbers.size() * room + 1 > buffer.size()) // grows for a long line only
+        buffer.resize(used + numbers.size() * room + 1);
+      char *out = buffer.data() + used;
       for (std::size_t i = 0; i < numbers.size(); ++i)
         {
           if (i > 0)
@@ -257,11 +258,11 @@ namespace poundfe
           out = write_precision_text(out, numbers[i], precision);
         }
       *out++ = '\n';
-      buffer.resize(out - buffer.data());
-      if (buffer.size() > flush_size)
+      used   = out - buffer.data();
+      if (used > flush_size)
         {
-          file->write(buffer);
-          buffer.clear();
+          file->write(buffer.data(), used);
+          used = 0;
         }
     }
 
@@ -270,8 +271,8 @@ namespace poundfe
     {
       if (!file)
         return;
-      file->write(buffer);
-      buffer.clear();
+      file->write(buffer.data(), used);
+      used = 0;
       file->commit();
       file.reset();
     }
@@ -282,20 +283,28 @@ namespace poundfe
     {}
 
     void
-    NodeRecorder::values(const Domain &domain, std::vector<double> &line) const
+    NodeRecorder::values(const Domain &domain, std::vector<double> &line)
     {
       using Response = NodeRecorderSpec::Response;
       std::map<int, std::vector<double>> reactions;
       if (spec.response == Response::reaction)
         reactions = domain.reactions();
+      if (nodes.size() != spec.nodes.size())
+        {
+          std::vector<const Node *> found; // all or none (node() may throw)
+          for (const int tag : spec.nodes)
+            found.push_back(&domain.node(tag));
+          nodes = std::move(found);
+        }
       // -timeSeries: each DOF's series' factor now, added to disp, vel and
       // accel (OpenSees adds 0 without one)
       const auto offset = [&](const std::size_t j) {
         return j < spec.series.size() && spec.series[j] ? spec.series[j]->at(domain.time) : 0.0;
       };
-      for (const int tag : spec.nodes)
+      for (std::size_t n = 0; n < nodes.size(); ++n)
         {
-          const Node &node = domain.node(tag);
+          const Node &node = *nodes[n];
+          const int   tag  = spec.nodes[n];
           for (std::size_t j = 0; j < spec.dofs.size(); ++j)
             {
               const unsigned int k = spec.dofs[j];
@@ -324,13 +333,17 @@ namespace poundfe
     {}
 
     void
-    ElementRecorder::values(const Domain &domain, std::vector<double> &line) const
+    ElementRecorder::values(const Domain &domain, std::vector<double> &line)
     {
-      for (const int tag : spec.elements)
+      if (readers.size() != spec.elements.size())
         {
-          const std::vector<double> v = domain.elements.at(tag)->response(spec.response);
-          line.insert(line.end(), v.begin(), v.end());
+          std::vector<Element::ResponseReader> found; // all or none (they may throw)
+          for (const int tag : spec.elements)
+            found.push_back(domain.elements.at(tag)->response_reader(spec.response));
+          readers = std::move(found);
         }
+      for (const Element::ResponseReader &read : readers)
+        read(line);
     }
   } // namespace opensees
 } // namespace poundfe

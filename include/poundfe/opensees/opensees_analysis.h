@@ -46,6 +46,7 @@
 #ifndef poundfe_opensees_opensees_analysis_h
 #define poundfe_opensees_opensees_analysis_h
 
+#include <poundfe/assembly/small_lu.h>
 #include <poundfe/opensees/opensees_domain.h>
 
 #include <Eigen/LU>
@@ -134,6 +135,8 @@ namespace poundfe
       unsigned long steps = 0, iterations = 0, factorizations = 0, failed_steps = 0;
     };
 
+    class UniaxialLinks;
+
     class Analysis
     {
     public:
@@ -174,12 +177,22 @@ namespace poundfe
       bool   set_trial(std::string &why);
       /// R at the trial state, in `unbalance` (valid until the next call).
       const Vector &residual();
+      /// r -= the elements' forces (with their Rayleigh damping's C_e v_e).
+      void   subtract_element_forces(Vector &r, const Vector &v);
       void   assemble_tangent(double c_k, double c_c, double c_m);
       /// K_eff's entries into the dense matrix or the triplets.
       void   add_element_tangents(double c_k, double c_c);
       /// x = K_eff^-1 b with the last factorisation.
       void   solve(const Vector &b, Vector &x);
       bool   dense() const { return n_equations > 0 && n_equations <= dense_equation_limit; }
+      /// Up to SmallLU::max_size equations the dense LU is SmallLU's:
+      /// Eigen's arithmetic in fixed storage.
+      bool   small() const { return n_equations <= SmallLU::max_size; }
+      /// The elements in the domain's order with their Rayleigh factors
+      /// and whether a diaphragm's combination is among their equations,
+      /// and the typed loops of a small model, after number(); at every
+      /// analyze the Rayleigh factors alone (`rayleigh` may have changed).
+      void   list_elements(bool renumbered);
       bool   step(double dt, std::string &why);
       /// DisplacementControl's predictor (newStep).
       bool   displacement_step(std::string &why);
@@ -265,6 +278,20 @@ namespace poundfe
       std::vector<Eigen::Triplet<double>> tangent_entries; // its storage kept
       Matrix                        dense_tangent;       // K_eff of a small system
       Eigen::PartialPivLU<Matrix>   dense_factors;
+      SmallLU                       small_factors;       // up to SmallLU::max_size
+      struct ListedElement
+      {
+        Element               *element;
+        const RayleighFactors *rayleigh;
+        bool                   combined; // some equation a diaphragm's combination
+      };
+      std::vector<ListedElement> element_list;
+      /// A small model's elements, all UniaxialRows without Rayleigh
+      /// damping, in typed loops (null otherwise; list_elements decides).
+      std::unique_ptr<UniaxialLinks> links;
+      /// Whether a pattern has nodal loads (else the residual takes none).
+      bool nodal_loads_given = true;
+      const std::map<int, std::vector<double>> no_nodal_loads;
       /// Each element's local displacements and velocities (set_trial's
       /// arguments), by the elements' order, and its tangent and damping.
       std::vector<std::pair<Vector, Vector>> element_state;

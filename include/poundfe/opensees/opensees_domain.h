@@ -21,6 +21,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -65,6 +66,21 @@ namespace poundfe
       double alpha_m = 0, beta_k = 0, beta_k_init = 0, beta_k_committed = 0;
     };
 
+    /// Uniaxial laws on rows of an element's DOFs (zeroLength, truss): the
+    /// strains (t u) strain_scale and rates (t v) strain_scale of the
+    /// laws, the force force_scale t^T sigma, the tangent (force_scale
+    /// strain_scale) t^T E t. The state of such an element, which the
+    /// analysis's typed loops over small models read and set in place of
+    /// the element's calls (opensees_analysis.cc, UniaxialLinks).
+    struct UniaxialRows
+    {
+      Matrix                                    t; // materials x DOFs
+      std::vector<std::unique_ptr<UniaxialLaw>> laws;
+      Vector strain, rate; // the materials' trial strains and strain rates
+      double strain_scale = 1, force_scale = 1; // a truss: 1/L and A
+      std::string why; // a law's refusal of its trial state
+    };
+
     /// An element in OpenSees's terms: trial response from the end nodes'
     /// displacements and velocities, resisting force and tangents in the
     /// global DOFs of its nodes (node after node), commit/revert.
@@ -94,6 +110,11 @@ namespace poundfe
       virtual void tangent_into(Matrix &k) const { k = tangent(); }
       virtual void initial_tangent_into(Matrix &k) const { k = initial_tangent(); }
       virtual void material_damping_into(Matrix &c) const { c = material_damping(); }
+      /// c_k K_t + c_c C_m into k, C_m the materials' damping (an element
+      /// not Rayleigh-damped), `c` the storage of C_m: the iteration
+      /// matrix's terms of the element. The default from tangent_into and
+      /// material_damping_into; an element that sums both at once overrides it.
+      virtual void tangent_and_damping_into(double c_k, double c_c, Matrix &k, Matrix &c) const;
       /// Whether the domain's Rayleigh factors damp it (OpenSees: beams
       /// always, zeroLength with -doRayleigh).
       virtual bool rayleigh_damped() const = 0;
@@ -101,6 +122,9 @@ namespace poundfe
       virtual void revert() {}
       virtual void reset() {}
       virtual std::string failure() const { return {}; }
+      /// The element as UniaxialRows alone (its set_trial, force and
+      /// tangents those of the rows); null for any other element.
+      virtual UniaxialRows *uniaxial_rows() { return nullptr; }
       /// Element loads (eleLoad -beamUniform): whether it takes them; its
       /// loads zeroed, and a uniform load added, wy across its local x (and
       /// wz along local z, in 3D) and wx along it, already times its
@@ -114,6 +138,11 @@ namespace poundfe
       /// "force"|"deformation" (i 1-based). ScriptError naming the words
       /// when the element has no such response.
       virtual std::vector<double> response(const std::vector<std::string> &words) const;
+      /// The same response resolved once (a recorder's, read at every
+      /// step): appends the values of the element's state to its argument.
+      /// ScriptError as response(); the default reads response() each time.
+      using ResponseReader = std::function<void(std::vector<double> &)>;
+      virtual ResponseReader response_reader(const std::vector<std::string> &words) const;
 
       /// The tangent at the last commit (OpenSees's K_c for betaKc).
       Matrix committed_tangent;
@@ -309,6 +338,8 @@ namespace poundfe
       std::map<std::pair<int, unsigned int>, double> imposed_displacements(double time) const;
       /// The ground acceleration along each DOF at `time` (UniformExcitation).
       std::vector<double> ground_acceleration(double time) const;
+      /// The same into `a` (ndf values), its storage kept.
+      void ground_acceleration(double time, std::vector<double> &a) const;
       /// OpenSees's nodal reactions (Domain::calculateNodalReactions(flag)
       /// with flag 0: element resisting forces minus applied loads, plus
       /// alpha_M M v) at the committed state.

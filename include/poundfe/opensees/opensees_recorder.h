@@ -88,7 +88,7 @@ namespace poundfe
 
     protected:
       /// The line's values after the time.
-      virtual void values(const Domain &domain, std::vector<double> &line) const = 0;
+      virtual void values(const Domain &domain, std::vector<double> &line) = 0;
       /// Whether a record at `time` is due (OpenSees's recorders: always
       /// without -dT, else when time - next >= -dT rTolDt, the next then
       /// time + dT), and the next due time moved on if so.
@@ -99,7 +99,8 @@ namespace poundfe
 
     private:
       std::unique_ptr<AtomicFile> file;
-      std::string                 buffer;
+      std::string                 buffer; // its first `used` characters are text
+      std::size_t                 used = 0;
       std::vector<double>         line; // the values of one record, its storage kept
       int                         precision;
       double                      interval, interval_tolerance, next_time = 0;
@@ -112,8 +113,11 @@ namespace poundfe
       explicit NodeRecorder(NodeRecorderSpec spec);
 
     protected:
-      void             values(const Domain &domain, std::vector<double> &line) const override;
+      void             values(const Domain &domain, std::vector<double> &line) override;
       NodeRecorderSpec spec;
+      /// The nodes, found at the first record (nodes are never removed
+      /// while a recorder lives: wipe finishes the recorders first).
+      std::vector<const Node *> nodes;
     };
 
     struct ElementRecorderSpec : OutputSpec
@@ -129,8 +133,12 @@ namespace poundfe
       explicit ElementRecorder(ElementRecorderSpec spec);
 
     protected:
-      void values(const Domain &domain, std::vector<double> &line) const override;
+      void values(const Domain &domain, std::vector<double> &line) override;
       ElementRecorderSpec spec;
+      /// Each element's response resolved at the first record
+      /// (Element::response_reader), instead of its words matched at every
+      /// step.
+      std::vector<Element::ResponseReader> readers;
     };
 
     /// recorder Drift (DriftRecorder.cpp): for each pair of nodes i, j whose
@@ -149,7 +157,7 @@ namespace poundfe
       DriftRecorder(DriftRecorderSpec spec, const Domain &domain);
 
     private:
-      void values(const Domain &domain, std::vector<double> &line) const override;
+      void values(const Domain &domain, std::vector<double> &line) override;
       /// The pairs kept, each with 1 / its length.
       std::vector<std::array<int, 2>> pairs;
       std::vector<double>             inverse_lengths;
