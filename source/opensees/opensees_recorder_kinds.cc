@@ -43,7 +43,7 @@ namespace poundfe
     }
 
     void
-    DriftRecorder::values(const Domain &domain, std::vector<double> &line) const
+    DriftRecorder::values(const Domain &domain, std::vector<double> &line)
     {
       for (std::size_t k = 0; k < pairs.size(); ++k)
         {
