@@ -237,6 +237,7 @@ namespace poundfe
         const std::vector<double> &factors = analysis_.gravity.path_factors;
         integrator->set_element_preload(
           [&path, &factors](NonlinearElements &e) { restore_static_state(path, factors, e); });
+        integrator->hold_gravity_state(analysis_.gravity.held, analysis_.gravity.displacement);
       }
     // known before the observers are made (the recorders choose their columns)
     view.set_vertical_ground_motion(parameters.ground_motion.has_vertical());

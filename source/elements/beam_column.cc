@@ -224,6 +224,24 @@ namespace poundfe
     return energy;
   }
 
+  template <int dim>
+  double
+  BeamColumn<dim>::held_load_work() const
+  {
+    if (!has_load || load_factor == 0)
+      return 0;
+    double work = -load_reactions.dot(trial_u);
+    if (!sections_carry_load())
+      work -= load_forces.q0.dot(transf.basic_deformation());
+    else
+      for (unsigned int i = 0; i < rule.size(); ++i)
+        {
+          const ResultantVector e = sections[i]->deformation();
+          work += rule.weights[i] * length() * particular_forces(i).dot(e);
+        }
+    return load_factor * work;
+  }
+
   // ---------------------------------------------------- displacement-based
 
   template <int dim>

@@ -111,7 +111,15 @@ namespace poundfe
   MemberElement<dim>::work_increment() const
   {
     return 0.5 * (committed_force + beam->resisting_force())
-                   .dot(beam->trial_displacement() - committed_u);
+                   .dot(beam->trial_displacement() - committed_u) +
+           held_load_work_increment();
+  }
+
+  template <int dim>
+  double
+  MemberElement<dim>::held_load_work_increment() const
+  {
+    return beam->held_load_work() - committed_held_work;
   }
 
   template <int dim>
@@ -127,8 +135,9 @@ namespace poundfe
   MemberElement<dim>::commit()
   {
     beam->commit();
-    committed_force = beam->resisting_force();
-    committed_u     = beam->trial_displacement();
+    committed_force     = beam->resisting_force();
+    committed_u         = beam->trial_displacement();
+    committed_held_work = beam->held_load_work();
   }
 
   template <int dim>
@@ -145,6 +154,7 @@ namespace poundfe
     beam->reset();
     committed_force.setZero();
     committed_u.setZero();
+    committed_held_work = 0;
   }
 
   template <int dim>

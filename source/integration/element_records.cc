@@ -39,6 +39,7 @@ namespace poundfe
     impacts.reset(elements.size());
     stick_slip.reset(elements.size());
     std::fill(work_supplied.begin(), work_supplied.end(), 0.0);
+    held_work = 0;
     for (const unsigned int h : kept)
       work_done[h] = elements[h].stored_energy();
   }
@@ -73,7 +74,10 @@ namespace poundfe
         work_done[h] += e.work_increment();
         work_supplied[h] += supplied;
         if (!counted || (*counted)[h])
-          belt += supplied;
+          {
+            belt += supplied;
+            held_work += e.held_load_work_increment();
+          }
         e.commit();
         force[h]   = e.force();
         history[h] = e.history_variable();

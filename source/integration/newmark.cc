@@ -550,14 +550,33 @@ namespace poundfe
         list_uniaxial(elements, n_elements, L->uniaxial);
     if (element_preload && elements)
       element_preload(*elements);
+    gravity_strain  = 0;
+    input_with_held = 0;
+    if (held_load.size() > 0) // the elements are at the gravity state now
+      {
+        gravity_strain     = strain_energy_at(gravity_displacement);
+        start_displacement = u;
+      }
     set_consistent_acceleration(load);
     if (elements)
       records.start(*elements);
     balance.strain  = strain_energy();
     balance.kinetic = kinetic_energy();
     balance.initial = balance.strain + balance.kinetic;
+    // the strain term from the gravity state is a difference of energies of
+    // this size, to their round-off: the error's scale is at least it
+    energy_scale = std::abs(gravity_strain);
     if (distribution)
       sum_balance_over_ranks();
+  }
+
+  void
+  NewmarkIntegrator::hold_gravity_state(const Vector &held, const Vector &displacement)
+  {
+    AssertThrow(!distribution, dealii::ExcMessage("a gravity state is not distributed"));
+    AssertDimension(held.size(), displacement.size());
+    held_load            = held;
+    gravity_displacement = displacement;
   }
 
   void
@@ -1282,13 +1301,15 @@ namespace poundfe
   NewmarkIntegrator::accept(const Level &L, const Vector &p)
   {
     // Trapezoidal work of the step; exact for the average-acceleration rule.
+    // with a gravity state p holds p_g: its work is split off the input by
+    // update_energy_error
+    double &input = held_load.size() > 0 ? input_with_held : balance.input;
     if (L.fixed)
-      L.fixed->add_step_work(step_displacement, load_now, p, v, v_next, balance.input,
-                             balance.damping);
+      L.fixed->add_step_work(step_displacement, load_now, p, v, v_next, input, balance.damping);
     else
       newmark_formulas::add_step_work(GeneralStorage{system, L.effective, distribution},
                                       step_displacement, load_now, p, v, v_next, velocity_sum,
-                                      product, balance.input, balance.damping);
+                                      product, input, balance.damping);
     if (n_elements > 0) // no call per step without elements
       records.accept(*elements, current_time, current_time + L.dt, v_next,
                      distribution ? &counted_here : nullptr, balance.belt);
@@ -1431,6 +1452,15 @@ namespace poundfe
   {
     balance.kinetic = kinetic_energy();
     balance.strain  = strain_energy();
+    if (elements)
+      balance.constant_load = records.held_load_work();
+    if (held_load.size() > 0)
+      {
+        // p_g is constant: its trapezoidal work is p_g . (u - u_0) exactly
+        const double nodal = held_load.dot(u - start_displacement);
+        balance.input      = input_with_held - nodal;
+        balance.constant_load += nodal;
+      }
     if (!distribution)
       {
         if (elements)
@@ -1450,10 +1480,10 @@ namespace poundfe
   {
     total_balance = balance;
     EnergyBalance &b = total_balance;
-    std::array<double *, 11> terms{{&b.initial, &b.input, &b.belt, &b.kinetic, &b.damping,
-                                    &b.strain, &b.hysteretic, &b.contact, &b.friction, &b.links,
-                                    &b.foundation}};
-    std::array<double, 11> values;
+    std::array<double *, 12> terms{{&b.initial, &b.input, &b.belt, &b.constant_load,
+                                    &b.kinetic, &b.damping, &b.strain, &b.hysteretic,
+                                    &b.contact, &b.friction, &b.links, &b.foundation}};
+    std::array<double, 12> values;
     for (unsigned int i = 0; i < terms.size(); ++i)
       values[i] = *terms[i];
     distribution->sum(values.data(), values.size());
@@ -1500,6 +1530,19 @@ namespace poundfe
     const Vector &stiffness_u = stiffness_times_u();
     double energy = 0.5 * (fixed ? fixed->dot(u, stiffness_u) : u.dot(stiffness_u));
     // the elements' trial state is the committed state at u
+    return energy + elements_strain_energy() - gravity_strain;
+  }
+
+  double
+  NewmarkIntegrator::strain_energy_at(const Vector &x) const
+  {
+    return 0.5 * x.dot(system.stiffness * x) + elements_strain_energy();
+  }
+
+  double
+  NewmarkIntegrator::elements_strain_energy() const
+  {
+    double energy = 0;
     for (unsigned int h = 0; h < n_elements; ++h)
       if (!distribution || counted_here[h])
         energy += (*elements)[h].stored_energy() - (*elements)[h].reference_energy();

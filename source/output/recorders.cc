@@ -660,19 +660,26 @@ namespace poundfe
             }
           case RecordedQuantity::energy:
             {
-              // a column for the foundations' dashpots only when there are some
+              // a column for the foundations' dashpots only when there are
+              // some, for the held gravity loads' work only after gravity
               const bool foundations = !state.model.foundations.empty();
+              const bool gravity     = state.model.gravity_analysis.enabled;
               std::vector<std::string> names{"input_J", "kinetic_J", "damping_J", "strain_J",
                                              "hysteretic_J", "contact_J", "balance_error",
                                              "friction_J", "belt_J", "links_J"};
               if (foundations)
                 names.push_back("foundation_J");
-              return {names, [foundations](const ResponseView &s, std::vector<double> &to) {
+              if (gravity)
+                names.push_back("constant_load_J");
+              return {names, [foundations, gravity](const ResponseView   &s,
+                                                    std::vector<double> &to) {
                         const EnergyBalance e = s.energy();
                         to = {e.input, e.kinetic, e.damping, e.strain, e.hysteretic, e.contact,
                               s.max_energy_error(), e.friction, e.belt, e.links};
                         if (foundations)
                           to.push_back(e.foundation);
+                        if (gravity)
+                          to.push_back(e.constant_load);
                       }, {}};
             }
           case RecordedQuantity::ground_motion:

@@ -98,7 +98,8 @@ namespace poundfe
   energy_plot(const Model &model)
   {
     // energy.csv: time, input, kinetic, damping, strain, hysteretic, contact,
-    // balance error, friction, belt, links, foundation (with foundations), J,
+    // balance error, friction, belt, links, foundation (with foundations),
+    // constant load (after gravity), J,
     // drawn in kJ. Contact and friction energies are small beside the input:
     // a panel of their own, with the balance error (a ratio) against the
     // right-hand axis. Each term has its own colour, the same in both panels,
@@ -126,6 +127,11 @@ namespace poundfe
       energy.series.push_back(term(11, "links", "#e377c2"));
     if (!model.foundations.empty())
       energy.series.push_back(term(12, "foundation", "#7f7f7f"));
+    // constant_load_J, the last column after gravity first: the held loads'
+    // work, of the size of the strain energy it moves
+    if (model.gravity_analysis.enabled)
+      energy.series.push_back(
+        term(model.foundations.empty() ? 12 : 13, "constant load", "#bcbd22"));
     small.y2_label = "balance error (relative)";
     small.series.push_back({"energy.csv", "1:8", "balance error", "lines dt 2 lc rgb 'gray40'", "x1y2"});
     energy.below.push_back(small);

@@ -650,6 +650,8 @@ namespace poundfe
       .value("belt_J", energy.belt);
     if (!analysis.model.foundations.empty())
       json.value("foundation_J", energy.foundation);
+    if (analysis.gravity.active) // the gravity loads' work, held from t = 0
+      json.value("constant_load_J", energy.constant_load);
     json
       .value("max_relative_balance_error", state.max_energy_error())
       .end_object();

@@ -180,6 +180,17 @@ namespace poundfe
     /// sum_i w_i L s_i^T k_s0,i^-1 s_i / 2: the energy unloading at the
     /// sections' initial stiffness recovers.
     double stored_energy() const;
+    /// The work the uniform load, held at its current factor lambda, does
+    /// from the undeformed member to the trial state: with p0 the basic
+    /// reactions (global, load_reactions) and u the end displacements,
+    ///   displacement-based: -lambda (q0 . v + p0 . u) (the consistent loads
+    ///     on the cubic and linear fields),
+    ///   force-based: lambda (L sum_i w_i s_p,i . e_i - p0 . u) (the load
+    ///     on the field of the sections' deformations, by virtual work on
+    ///     the simply supported member, plus its rigid motion).
+    /// Linear in the state: its change at a constant factor is the load's
+    /// work, which the resisting force's work then lacks (0 without a load).
+    double held_load_work() const;
 
   protected:
     /// q and k_b at the basic deformations v (from the last trial state).

@@ -74,7 +74,10 @@ namespace poundfe
     bool   set_trial(const LocalVector &u, const LocalVector &v) override;
     void   force_correction(LocalVectorOut f) const override;
     void   tangent_change(double damping_factor, LocalMatrixOut d) const override;
+    /// The end forces' work plus the member's own load's
+    /// (held_load_work_increment): the work its sections take.
     double work_increment() const override;
+    double held_load_work_increment() const override;
     double reference_energy() const override;
     void   commit() override;
     void   revert() override;
@@ -98,6 +101,7 @@ namespace poundfe
     GlobalMatrix                     reference;
     typename BeamColumn<dim>::BasicMatrix reference_basic;
     GlobalVector                     committed_force, committed_u;
+    double                           committed_held_work = 0; // BeamColumn::held_load_work
     Eigen::MatrixXd                  map; // T; empty: u_e = q
   };
 

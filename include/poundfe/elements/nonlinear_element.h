@@ -108,6 +108,11 @@ namespace poundfe
     /// Work done on the structure from the committed to the trial state by
     /// what drives the element (a moving belt under a friction element).
     virtual double supplied_work_increment() const { return 0; }
+    /// Work done on the element from the committed to the trial state by
+    /// its own loads (a member's self-weight, held at its factor after the
+    /// gravity analysis), J; work_increment() includes it. The integrator
+    /// books it as the work of the loads held constant.
+    virtual double held_load_work_increment() const { return 0; }
     /// u_e^T K_ref,e u_e / 2 at the trial state: the part of
     /// stored_energy() that the linear K already counts.
     virtual double reference_energy() const = 0;

@@ -39,8 +39,9 @@ namespace poundfe
     /// The step [t0, t1], whose trial state (velocity `v_next`) the
     /// elements hold: log its impacts and stick-slip episodes, add each
     /// element's work, commit every element and note its committed values.
-    /// Adds to `belt` what the drives supplied over the step, of the
-    /// elements that `counted` marks (every element when nullptr).
+    /// Adds to `belt` what the drives supplied over the step, and to
+    /// held_load_work() what the elements' own loads did, of the elements
+    /// that `counted` marks (every element when nullptr).
     void accept(NonlinearElements &elements, double t0, double t1, const Vector &v_next,
                 const std::vector<char> *counted, double &belt);
 
@@ -51,6 +52,9 @@ namespace poundfe
 
     const std::vector<double> &work() const { return work_done; }
     const std::vector<double> &supplied_work() const { return work_supplied; }
+    /// The work of the elements' own loads held constant (a member's
+    /// self-weight after gravity) since start(), of the counted elements, J.
+    double held_load_work() const { return held_work; }
     const ImpactLog           &impact_log() const { return impacts; }
     const StickSlipLog        &stick_slip_log() const { return stick_slip; }
     const std::vector<unsigned int> &gap_elements() const { return gaps; }
@@ -62,6 +66,7 @@ namespace poundfe
   private:
     std::vector<unsigned int> kept, gaps, frictions;
     std::vector<double>       work_done, work_supplied, force, history, rate;
+    double                    held_work = 0;
     ImpactLog                 impacts;
     StickSlipLog              stick_slip;
   };

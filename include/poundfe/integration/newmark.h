@@ -117,23 +117,27 @@ namespace poundfe
   };
 
   /// Work and energy terms of the relative-coordinate energy balance, J:
-  /// initial + input + belt = kinetic + damping + strain + hysteretic +
-  /// contact + friction.
+  /// initial + input + belt + constant_load = kinetic + damping + strain +
+  /// hysteretic + contact + friction + links + foundation. With a gravity
+  /// analysis first the strain and initial terms are measured from the
+  /// gravity state, and the work of the gravity loads held through the
+  /// dynamics is constant_load, not input (doc/theory.md §3.9).
   struct EnergyBalance
   {
     double initial    = 0; // kinetic + strain at t = 0
-    double input      = 0; // int u'^T p dt (p includes -M r a_g)
+    double input      = 0; // int u'^T p dt (p includes -M r a_g; not the held loads)
     double belt       = 0; // done on the structure by moving belts under friction
+    double constant_load = 0; // done by the gravity loads held constant (loadConst)
     double kinetic    = 0;
     double damping    = 0; // int u'^T C u' dt
     double strain     = 0; // recoverable: elastic structure and laws
-    double hysteretic = 0; // dissipated by hinges and storeys
+    double hysteretic = 0; // dissipated by hinges, storeys and members
     double contact    = 0; // dissipated by gaps
     double friction   = 0; // dissipated by friction, int F (x' - v0) dt
     double links      = 0; // dissipated by links between buildings (dampers)
     double foundation = 0; // dissipated by the foundations' dashpots (soil radiation)
 
-    double supplied() const { return initial + input + belt; }
+    double supplied() const { return initial + input + belt + constant_load; }
     double stored_and_dissipated() const
     {
       return kinetic + damping + strain + hysteretic + contact + friction + links + foundation;
@@ -200,6 +204,13 @@ namespace poundfe
     {
       element_preload = std::move(preload);
     }
+    /// The gravity state the run starts from (u_g) and the load held
+    /// constant through it (p_g, OpenSees's loadConst; a part of every
+    /// load(t) the integrator is given): the strain energy is measured from
+    /// the state at u_g (the elements' after the preload), and p_g's work,
+    /// with that of the elements' own held loads, is the balance's
+    /// constant_load instead of input. Before initialize(); not distributed.
+    void hold_gravity_state(const Vector &held_load, const Vector &gravity_displacement);
     /// Start from rest.
     void initialize(const Vector &load);
     /// Continue from (u_new, v_new) at the current time under p = load
@@ -233,7 +244,8 @@ namespace poundfe
     const Vector &acceleration() const override { return a; }
 
     double kinetic_energy() const;
-    /// Recoverable strain energy: elastic structure plus the laws' stored energy.
+    /// Recoverable strain energy: elastic structure plus the laws' stored
+    /// energy, less their sum at the gravity state (hold_gravity_state).
     double strain_energy() const;
     /// The energy terms at the current time.
     EnergyBalance energy() const override;
@@ -356,6 +368,10 @@ namespace poundfe
     /// Norm and inner product over every rank's own equations.
     double norm_of(const Vector &x) const;
     double dot_of(const Vector &a, const Vector &b) const;
+    /// x^T K x / 2 plus the elements' stored energy less their part in K,
+    /// at their trial state (this rank's elements).
+    double strain_energy_at(const Vector &x) const;
+    double elements_strain_energy() const;
     /// `ok` on every rank; else false, with `failure` set where it was not
     /// already (the cause is on another rank). Collective when distributed.
     bool   agreed(bool ok, const char *elsewhere);
@@ -431,6 +447,12 @@ namespace poundfe
     unsigned int base_level = 0;
     IterationStatistics stats;
     EnergyBalance       balance;
+    /// hold_gravity_state: p_g and u_g (empty: no gravity state), the
+    /// displacements at t = 0, the strain energy at u_g, and the input's
+    /// trapezoidal sums with p_g's work in them.
+    Vector              held_load, gravity_displacement, start_displacement;
+    double              gravity_strain = 0;
+    double              input_with_held = 0;
     double              energy_scale      = 0;
     double              max_balance_error = 0;
   };
