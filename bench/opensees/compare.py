@@ -167,6 +167,10 @@ CASES = {
     "beam_mass_elastic_3d": ("beam_mass.tcl", ["elasticBeamColumn", "3d"], 1e-10),
     "beam_mass_force_3d": ("beam_mass.tcl", ["forceBeamColumn", "3d"], 1e-10),
     "beam_mass_disp_3d": ("beam_mass.tcl", ["dispBeamColumn", "3d"], 1e-10),
+    # reactions at nodes with their own mass under two ground components:
+    # a fixed support and a roller with mass, free nodes with mass (each
+    # node's ground-motion load -m a_g is in its unbalanced load)
+    "node_mass_reactions": ("node_mass_reactions.tcl", [], 1e-10),
     # fixX, fixY -tol, the tags recorder returns, remove recorder, remove
     # recorders, remove loadPattern, testIter, testNorm (its norms to the
     # yielding stick's round-off: those below 1e-15 of the peak are noise),

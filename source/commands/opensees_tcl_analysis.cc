@@ -494,7 +494,8 @@ namespace poundfe
       }
 
       /// testIter, testNorm: the script's test at its last step (none run
-      /// yet: 0 and maxIter zeros).
+      /// yet: 0 and maxIter zeros). testNorm in a script is OpenSees's text,
+      /// each norm as "%35.20e"; a list of floats in poundfe.opensees.
       void
       test_results(Session &s, Words &w, const bool norms)
       {
@@ -503,9 +504,20 @@ namespace poundfe
           throw ScriptError("no convergence test");
         if (norms)
           {
-            const auto &n = s.analysis ? s.analysis->test_norms : std::vector<double>();
-            set_result(w.interp, !n.empty() ? n :
-                                              std::vector<double>(s.options.test.max_iterations));
+            const auto &reached = s.analysis ? s.analysis->test_norms : std::vector<double>();
+            const auto  n       = !reached.empty() ?
+                                    reached :
+                                    std::vector<double>(s.options.test.max_iterations);
+            if (s.without_bodies)
+              return set_result(w.interp, n);
+            std::string text;
+            char        number[64];
+            for (const double norm : n)
+              {
+                std::snprintf(number, sizeof number, "%35.20e", norm);
+                text += number;
+              }
+            Tcl_SetObjResult(w.interp, Tcl_NewStringObj(text.c_str(), -1));
           }
         else
           Tcl_SetObjResult(w.interp,

@@ -1270,7 +1270,10 @@ namespace poundfe
           throw ScriptError("-perpDirn " + text_of(perpendicular) + " is not one of 1 to ndm");
         r.dof           = dof - 1;
         r.perpendicular = perpendicular - 1;
-        s.recorders.push_back(std::make_unique<opensees::DriftRecorder>(r, d));
+        auto recorder = std::make_unique<opensees::DriftRecorder>(r, d);
+        if (!recorder->has_pairs())
+          s.warnings << "DriftRecorder::initialize() - no valid nodes or perpendicular direction\n";
+        s.recorders.push_back(std::move(recorder));
       }
 
       void
@@ -1303,9 +1306,12 @@ namespace poundfe
           unsupported("recorder " + type + " without -file");
         if (!has_response || r.nodes.empty() || r.dofs.empty())
           throw ScriptError("recorder " + type + " needs nodes, -dof and a response");
-        if (!r.series.empty() && r.series.size() != r.dofs.size())
+        // OpenSees takes the first tags, one a DOF (fewer: it reads past them)
+        if (!r.series.empty() && r.series.size() < r.dofs.size())
           throw ScriptError("-timeSeries gives " + text_of(r.series.size()) + " series for " +
                             text_of(r.dofs.size()) + " DOFs");
+        if (!r.series.empty())
+          r.series.resize(r.dofs.size());
         if (type == "Node")
           s.recorders.push_back(std::make_unique<opensees::NodeRecorder>(r));
         else

@@ -281,6 +281,25 @@ namespace poundfe
           domain.node(dof.first).equation[dof.second] = domain.node(r.first).equation[r.second];
         }
       number_diaphragms();
+      number_inertia();
+      number_mass_damping();
+      beam_loads_taken = false;
+      for (auto &[tag, element] : domain.elements)
+        {
+          beam_loads_taken = beam_loads_taken || element->takes_beam_loads();
+          element->equations.clear();
+          for (const int n : element->node_tags)
+            for (const int eq : domain.node(n).equation)
+              element->equations.push_back(eq);
+        }
+      domain.changed = false;
+      numbered       = true;
+      analysed       = false;
+    }
+
+    void
+    Analysis::number_inertia()
+    {
       mass_of_equation.setZero(n_equations);
       inertia_terms.clear();
       for (const auto &[tag, node] : domain.nodes)
@@ -300,19 +319,6 @@ namespace poundfe
               if (node.equation[k] >= 0)
                 second_ground_terms.push_back({node.equation[k], k, m.mass});
           }
-      number_mass_damping();
-      beam_loads_taken = false;
-      for (auto &[tag, element] : domain.elements)
-        {
-          beam_loads_taken = beam_loads_taken || element->takes_beam_loads();
-          element->equations.clear();
-          for (const int n : element->node_tags)
-            for (const int eq : domain.node(n).equation)
-              element->equations.push_back(eq);
-        }
-      domain.changed = false;
-      numbered       = true;
-      analysed       = false;
     }
 
     /// The masses' damping by equation when regions give alpha_M by element

@@ -198,8 +198,12 @@ namespace poundfe
     std::map<int, std::vector<double>>
     Domain::reactions() const
     {
+      // The applied loads include each node's own ground-motion load
+      // -m a_g (Node::addInertiaLoadToUnbalance), in fixed DOFs too:
+      // Node::resetReactionForce subtracts it, so it enters as +m a_g.
       std::map<int, std::vector<double>> r;
-      const auto loads = nodal_loads(time);
+      const auto                         loads = nodal_loads(time);
+      const std::vector<double>          a_g   = ground_acceleration(time);
       for (const auto &[tag, n] : nodes)
         {
           std::vector<double> &v = r[tag];
@@ -207,7 +211,7 @@ namespace poundfe
           const auto p = loads.find(tag);
           for (unsigned int k = 0; k < v.size(); ++k)
             v[k] = (p == loads.end() ? 0.0 : -p->second[k]) +
-                   alpha_m_of(tag) * n.mass[k] * n.vel[k];
+                   n.mass[k] * (a_g[k] + alpha_m_of(tag) * n.vel[k]);
         }
       for (const auto &[tag, element] : elements)
         {
@@ -217,7 +221,6 @@ namespace poundfe
             for (double &value : r[node_tag])
               value += f[i++];
         }
-      const std::vector<double> a_g = ground_acceleration(time);
       for (const LumpedMass &m : lumped_masses)
         if (m.load_in_reaction)
           for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)

@@ -3,7 +3,7 @@
 // Drift (DriftRecorder.cpp): for each pair (i, j) of nodes whose
 // coordinates along perpDirn differ,
 //     drift = (u_j[dof] - u_i[dof]) / |x_j[perpDirn] - x_i[perpDirn]|,
-// pairs at the same coordinate left out.
+// pairs at the same coordinate left out; with none left, no file at all.
 //
 // EnvelopeNode, EnvelopeElement (EnvelopeNodeRecorder.cpp,
 // EnvelopeElementRecorder.cpp): of each value v of a Node or Element
@@ -40,6 +40,20 @@ namespace poundfe
               inverse_lengths.push_back(1.0 / std::fabs(b[p] - a[p]));
             }
         }
+    }
+
+    void
+    DriftRecorder::record(const Domain &domain)
+    {
+      if (has_pairs())
+        Recorder::record(domain);
+    }
+
+    void
+    DriftRecorder::finish()
+    {
+      if (has_pairs())
+        Recorder::finish();
     }
 
     void

@@ -391,8 +391,8 @@ echo "recorder EnvelopeNode -file $work/x.out -closeOnWrite -node 2 -dof 1 disp"
   | bad envelope-close "5: recorder EnvelopeNode option '-closeOnWrite': poundfe does not support it" || exit 1
 echo "recorder Node -file $work/x.out -timeSeries 7 -node 2 -dof 1 accel" \
   | bad record-series '5: recorder: timeSeries 7 does not exist' || exit 1
-printf 'timeSeries Linear 1\nrecorder Node -file %s/x.out -timeSeries 1 1 -node 2 -dof 1 accel\n' "$work" \
-  | bad record-series-count '6: recorder: -timeSeries gives 2 series for 1 DOFs' || exit 1
+printf 'timeSeries Linear 1\nrecorder Node -file %s/x.out -timeSeries 1 -node 2 -dof 1 1 accel\n' "$work" \
+  | bad record-series-count '6: recorder: -timeSeries gives 1 series for 2 DOFs' || exit 1
 echo "recorder Drift -file $work/x.out -iNode 1 -jNode 2 -dof 1 -perpDirn 2" \
   | bad drift-direction '5: recorder: -perpDirn 2 is not one of 1 to ndm' || exit 1
 echo "recorder Drift -file $work/x.out -iNode 1 2 -jNode 2 -dof 1 -perpDirn 1" \
@@ -401,6 +401,30 @@ echo "recorder Drift -file $work/x.out -frob 2" \
   | bad drift-option "5: recorder Drift option '-frob': poundfe does not support it" || exit 1
 echo "recorder Drift -file $work/x.out -iNode 9 -jNode 2" \
   | bad drift-node '5: recorder: node 9 does not exist' || exit 1
+# a Drift recorder whose every pair is at the same coordinate along
+# perpDirn writes no file, with OpenSees's message
+mkdir -p "$work/drift-none"
+cat > "$work/drift-none/s.tcl" <<TCL
+model basic -ndm 2 -ndf 2
+node 1 0.0 3.0
+node 2 4.0 3.0 -mass 1.0 1.0
+fix 1 1 1
+uniaxialMaterial Elastic 1 100.0
+element twoNodeLink 1 1 2 -mat 1 -dir 1
+recorder Drift -file $work/drift-none/drift.out -time -iNode 1 -jNode 2 -dof 1 -perpDirn 2
+recorder Node -file $work/drift-none/disp.out -node 2 -dof 1 disp
+timeSeries Linear 1
+pattern Plain 1 1 { load 2 1.0 0.0 }
+integrator LoadControl 0.5
+analysis Static
+analyze 2
+TCL
+"$poundfe" opensees "$work/drift-none/s.tcl" > "$work/drift-none/out" 2>&1 \
+  || fail "drift-none: exit status $?"
+[ "$(ls "$work/drift-none")" = "$(printf 'disp.out\nout\ns.tcl')" ] \
+  || fail "drift-none: files $(ls "$work/drift-none")"
+grep -qF "DriftRecorder::initialize() - no valid nodes or perpendicular direction" \
+  "$work/drift-none/out" || fail "drift-none: no message"
 echo "recorder EnvelopeElement -file $work/x.out -ele 5 force" \
   | bad envelope-element '5: recorder: element 5 does not exist' || exit 1
 echo "remove recorder 7" | bad remove-recorder '5: remove: recorder 7 does not exist' || exit 1

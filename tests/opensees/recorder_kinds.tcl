@@ -2,8 +2,9 @@
 # EnvelopeElement (three rows: min, max, max |.|, with -time the time of
 # each), -dT (a record when the time is at least dT past the last, within
 # OpenSees's relative tolerance -rTolDt) and -timeSeries (absolute
-# accelerations). A two-storey elastic frame (6 m bay, 3 m storeys) pounds
-# through an ElasticPPGap link on a stick beside its roof (a mass on a
+# accelerations; more tags than DOFs: the first ones, as OpenSees). A
+# two-storey elastic frame (6 m bay, 3 m storeys) pounds through an
+# ElasticPPGap link on a stick beside its roof (a mass on a
 # spring, both nodes where the roof's corner is): gravity, then the
 # synthetic record with Rayleigh damping. argv: the output directory.
 set out [lindex $argv 0]
@@ -55,7 +56,7 @@ recorder Drift -file $out/drift.out -time -precision 16 -iNode 1 3 3 -jNode 3 5 
 recorder Drift -file $out/drift_dT.out -precision 16 -dT 0.1 -rTolDt 0.001 -iNode 2 -jNode 6 -dof 1 -perpDirn 2
 recorder EnvelopeNode -file $out/env_disp.out -precision 16 -node 3 5 6 8 -dof 1 2 3 disp
 recorder EnvelopeNode -file $out/env_vel.out -time -precision 16 -node 5 8 -dof 1 vel
-recorder EnvelopeNode -file $out/env_accel.out -time -precision 16 -timeSeries 2 -node 5 8 -dof 1 accel
+recorder EnvelopeNode -file $out/env_accel.out -time -precision 16 -timeSeries 2 0 2 -node 5 8 -dof 1 accel
 recorder EnvelopeNode -file $out/env_reaction.out -time -precision 16 -dT 0.02 -node 1 2 7 -dof 1 2 3 reaction
 recorder EnvelopeElement -file $out/env_local.out -time -precision 16 -ele 1 4 6 localForce
 recorder EnvelopeElement -file $out/env_force.out -precision 16 -eleRange 7 8 force

@@ -264,6 +264,8 @@ namespace poundfe
       std::vector<std::vector<std::pair<int, double>>> combinations;
       /// The combinations of the domain's diaphragms (in number()).
       void number_diaphragms();
+      /// mass_of_equation, inertia_terms and second_ground_terms (in number()).
+      void number_inertia();
       /// mass_damping_of_equation and uniform_mass_damping (in number()).
       void number_mass_damping();
       /// r[e] += c value for the equation's terms (none where fixed or imposed).

@@ -155,6 +155,10 @@ namespace poundfe
     {
     public:
       DriftRecorder(DriftRecorderSpec spec, const Domain &domain);
+      /// With no pair kept, nothing: no file, as OpenSees's.
+      void record(const Domain &domain) override;
+      void finish() override;
+      bool has_pairs() const { return !pairs.empty(); }
 
     private:
       void values(const Domain &domain, std::vector<double> &line) override;
