@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <poundfe/excitation/excitation.h>
+#include <poundfe/excitation/ground_motion_filter.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/excitation/records.h>
 #include <poundfe/excitation/stochastic.h>
@@ -125,18 +126,12 @@ namespace poundfe
   make_motion_generator(const GroundMotionParameters &g, const double time_step)
   {
     StochasticMotion s;
-    const bool       cp = g.type == GroundMotionType::clough_penzien;
-    if (g.soil == Soil::custom)
-      s.filter = FilterParameters{cp, g.omega_g, g.zeta_g, g.omega_f, g.zeta_f};
-    else
-      s.filter = soil_preset(g.soil, cp);
+    s.filter = ground_motion_filter(g);
     s.method = g.type == GroundMotionType::white_noise ? StochasticMethod::white_noise : g.method;
-    s.spectral_intensity =
-      g.spectral_intensity > 0 ?
-        g.spectral_intensity :
-        (g.noise_intensity_d > 0 ?
-           g.noise_intensity_d / M_PI :
-           intensity_from_pga(s.filter, g.target_pga * standard_gravity, g.peak_factor));
+    const double given   = given_spectral_intensity(g);
+    s.spectral_intensity = given > 0 ? given :
+                                       intensity_from_pga(s.filter, g.target_pga * standard_gravity,
+                                                          g.peak_factor);
     s.duration               = g.duration;
     s.sample_interval        = g.held_interval(time_step);
     s.cutoff_frequency       = g.cutoff_frequency;

@@ -3,6 +3,7 @@
 #include <poundfe/excitation/excitation_parameters.h>
 
 #include <poundfe/excitation/ground_motion_bounds.h>
+#include <poundfe/excitation/ground_motion_filter.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -175,10 +176,14 @@ namespace poundfe
                       "does not repeat within twice its duration). Unit: count.");
     prm.add_parameter("S0", spectral_intensity,
                       "Two-sided PSD intensity of the white noise; 0: from D, or "
-                      "from the target PGA and peak factor. Unit: m^2/s^3.");
+                      "from the target PGA and peak factor. At most what gives 3 standard "
+                      "deviations of 10 g: of the filtered motion, or of a white noise below "
+                      "25 Hz, sqrt(2 S0 x 2 pi 25 rad/s), whatever the time step (S0 <= 3.4 for "
+                      "white noise). Unit: m^2/s^3.");
     prm.add_parameter("D", noise_intensity_d,
                       "White-noise intensity in the thesis's convention <w(t) w(t')> = "
-                      "2 D delta(t - t'), D = pi S0 (used when S0 = 0). Unit: m^2/s^3.");
+                      "2 D delta(t - t'), D = pi S0 (used when S0 = 0), bounded as S0. "
+                      "Unit: m^2/s^3.");
     prm.add_parameter("Target PGA", target_pga,
                       "Expected PGA (Peak factor x the stationary standard deviation) that "
                       "sets S0 when S0 and D are 0; Scale factor then multiplies the sample: "
@@ -186,7 +191,8 @@ namespace poundfe
                       "Target PGA x Scale factor, times Intensity ratio or Vertical ratio where one "
                       "exceeds 1 (more than twice the largest ground acceleration recorded). "
                       "Unit: g.");
-    prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation. Unit: dimensionless.");
+    prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation, with which Target PGA sets S0 (a given S0 "
+                      "or D does not use it). Unit: dimensionless.");
     prm.add_parameter("Duration", duration, "Length of the sample. Unit: s.");
     prm.add_parameter("Sample interval", sample_interval,
                       "White-noise sample interval (0: the analysis time step). Unit: s.");
@@ -323,27 +329,44 @@ namespace poundfe
                    ground_motion_type_names().name(type) + "'");
   }
 
+  FilterParameters
+  ground_motion_filter(const GroundMotionParameters &g)
+  {
+    const bool cp = g.type == GroundMotionType::clough_penzien;
+    return g.soil == Soil::custom ? FilterParameters{cp, g.omega_g, g.zeta_g, g.omega_f, g.zeta_f} :
+                                    soil_preset(g.soil, cp);
+  }
+
+  double
+  given_spectral_intensity(const GroundMotionParameters &g)
+  {
+    return g.spectral_intensity > 0 ? g.spectral_intensity : g.noise_intensity_d / M_PI;
+  }
+
   namespace
   {
-    /// The expected PGA (g) of a generated motion given by its intensity
-    /// (S0, or D = pi S0): Peak factor x the standard deviation, of the
-    /// filtered stationary motion (Kanai-Tajimi, Clough-Penzien), or of the
-    /// white noise held over its sample interval, sqrt(2 pi S0 / dt).
+    /// The engineering band of a white noise's bound: 25 Hz, above the
+    /// frequencies that carry a ground motion's energy to a structure, so
+    /// the bound does not move with the time step or Sample interval (the
+    /// held samples' own deviation, sqrt(2 pi S0 / dt), grows without end
+    /// as dt shrinks although the response does not).
+    constexpr double white_noise_bound_band_hz = 25;
+    /// A fixed peak factor for the bound (Davenport's for a stationary
+    /// motion of some tens of seconds is about 3); the input's Peak factor
+    /// only sets S0 from a target PGA and does not change a given S0.
+    constexpr double bound_peak_factor = 3;
+
+    /// The standard deviation (m/s^2) of a generated motion given by its
+    /// intensity S0 (or D = pi S0): of the filtered stationary motion
+    /// (Kanai-Tajimi, Clough-Penzien), or of the white noise band-limited
+    /// to 25 Hz, sqrt(2 S0 w_c) with w_c = 2 pi 25 rad/s.
     double
-    expected_peak_of_intensity(const GroundMotionParameters &g, const double time_step)
+    deviation_of_intensity(const GroundMotionParameters &g)
     {
-      const double s0 = g.spectral_intensity > 0 ? g.spectral_intensity : g.noise_intensity_d / M_PI;
-      const bool   cp = g.type == GroundMotionType::clough_penzien;
-      const double dt = g.held_interval(time_step);
-      if (g.type == GroundMotionType::white_noise && !(dt > 0))
-        return 0; // the time step's own check refuses it
-      const double variance =
-        g.type == GroundMotionType::white_noise ?
-          2 * M_PI * s0 / dt :
-          s0 * stationary_variance_per_unit_s0(
-                 g.soil == Soil::custom ? FilterParameters{cp, g.omega_g, g.zeta_g, g.omega_f, g.zeta_f} :
-                                          soil_preset(g.soil, cp));
-      return g.peak_factor * std::sqrt(variance) / standard_gravity;
+      const double s0 = given_spectral_intensity(g);
+      if (g.type == GroundMotionType::white_noise)
+        return std::sqrt(2 * s0 * 2 * M_PI * white_noise_bound_band_hz);
+      return std::sqrt(s0 * stationary_variance_per_unit_s0(ground_motion_filter(g)));
     }
 
     /// The peak a target PGA or a stochastic intensity asks for, times Scale
@@ -353,7 +376,7 @@ namespace poundfe
     /// with exit 0 to a drift of 6e99 m. Only the input is checked: IDA, MSA
     /// and fragility scale each run themselves, past this check.
     void
-    check_scaled_peak(const GroundMotionParameters &g, const InputFile &input, const double time_step)
+    check_scaled_peak(const GroundMotionParameters &g, const InputFile &input)
     {
       const std::string gm     = "Ground motion/";
       const bool        record = g.type == GroundMotionType::record;
@@ -361,13 +384,15 @@ namespace poundfe
         return;
       const bool by_target = record || (g.spectral_intensity == 0 && g.noise_intensity_d == 0);
       const std::string intensity = g.spectral_intensity > 0 ? "S0" : "D";
-      double            peak = by_target ? (record ? g.record_target_pga : g.target_pga) :
-                                           expected_peak_of_intensity(g, time_step);
+      double            peak =
+        by_target ? (record ? g.record_target_pga : g.target_pga) :
+                    bound_peak_factor * deviation_of_intensity(g) / standard_gravity;
       if (!by_target && !(peak <= largest_ground_acceleration_g))
         input.fail(gm + "Stochastic/" + intensity,
-                   "gives an expected peak ground acceleration of " + number_text(peak) +
-                     " g (Peak factor x its standard deviation): at most " +
-                     number_text(largest_ground_acceleration_g) + " g (" +
+                   "gives an expected peak ground acceleration of " + number_text(peak) + " g (3 x its " +
+                     (g.type == GroundMotionType::white_noise ? "standard deviation below 25 Hz" :
+                                                                "standard deviation") +
+                     "): at most " + number_text(largest_ground_acceleration_g) + " g (" +
                      largest_ground_acceleration_why + ")");
       const std::string scaled = (by_target ? "Target PGA" : "the expected PGA of " + intensity) +
                                  " x Scale factor";
@@ -446,7 +471,7 @@ namespace poundfe
                      "needs Shinozuka alpha < Shinozuka beta, got alpha = " +
                        number_text(shinozuka_alpha) + ", beta = " + number_text(shinozuka_beta));
       }
-    check_scaled_peak(*this, input, time_step);
+    check_scaled_peak(*this, input);
   }
 
   std::vector<NamedInputFile>

@@ -258,10 +258,10 @@ namespace poundfe::hinge_registration
     require_bouc_wen_shape(const ModelParameter &p, const BoucWenParameters &h)
     {
       if (const BoucWenShapeProblem shape = bouc_wen_shape_problem(h); !shape.entry.empty())
-        throw std::invalid_argument("'" + p.path + "': the sampled value gives A = " +
+        throw std::invalid_argument("'" + p.path + "': the value gives the shape A = " +
                                     number_text(h.A) + ", beta = " + number_text(h.beta) +
                                     ", gamma = " + number_text(h.gamma) + ", n = " +
-                                    number_text(h.n) + ", whose " + shape.entry + " " +
+                                    number_text(h.n) + "; its " + shape.entry + ": " +
                                     shape.problem);
     }
 

@@ -37,17 +37,18 @@ namespace poundfe
                       "building): delta_M = C_d delta_max / I_e (eq. 12.12-1). 1 (with I_e = 1) "
                       "takes the run's displacements as the inelastic ones, as a nonlinear "
                       "response history gives them; use the code's C_d when the run is an "
-                      "elastic analysis at the reduced design forces. In [1, 10] (the code's "
-                      "C_d: 1.25 to 6.5). Unit: dimensionless.",
+                      "elastic analysis at the reduced design forces. In [1, 10] (the C_d "
+                      "values of ASCE 7-16 Table 12.2-1 lie well below 10). Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Importance factor", importance_factor,
                       "ASCE 7-16 I_e of each building (one for all, or one per building), "
-                      "in [1, 2] (the code's: 1 to 1.5). Unit: dimensionless.",
+                      "in [1, 2] (ASCE 7-16 Table 1.5-2: 1, 1.25 or 1.5). Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Behaviour factor", behaviour_factor,
                       "Eurocode 8 q of each building (one for all, or one per building): "
                       "d_s = q d_e (EN 1998-1 eq. 4.23, q_d = q). 1 takes the run's "
-                      "displacements as d_s. In [1, 10] (the code's q: 1 to 6.5). "
+                      "displacements as d_s. In [1, 10] (the behaviour factors of EN 1998-1 "
+                      "lie well below 10). "
                       "Unit: dimensionless.",
                       Patterns::List(Patterns::Double(0), 1));
     prm.add_parameter("Coinciding levels factor", coinciding_levels_factor,
@@ -122,12 +123,12 @@ namespace poundfe
     input.list(s + "Importance factor", importance_factor, n_buildings, false, "one per building");
     input.list(s + "Behaviour factor", behaviour_factor, n_buildings, false, "one per building");
     check_code_factors(input, s + "Deflection amplification", deflection_amplification, 1, 10,
-                       "ASCE 7-16 Table 12.2-1 gives C_d from 1.25 to 6.5; 1: the run's own "
-                       "inelastic displacements");
+                       "the C_d values of ASCE 7-16 Table 12.2-1 lie well below 10; 1: the "
+                       "run's own inelastic displacements");
     check_code_factors(input, s + "Importance factor", importance_factor, 1, 2,
-                       "ASCE 7-16 Table 1.5-2 gives I_e from 1 to 1.5");
+                       "ASCE 7-16 Table 1.5-2 gives I_e = 1, 1.25 or 1.5");
     check_code_factors(input, s + "Behaviour factor", behaviour_factor, 1, 10,
-                       "EN 1998-1 gives q from 1 to 6.5 (5 alpha_u/alpha_1 of ductile frames)");
+                       "the behaviour factors of EN 1998-1 lie well below 10");
     input.positive(s + "Coinciding levels factor", coinciding_levels_factor);
     if (!(target_probability > 0 && target_probability < 1))
       input.fail(s + "Target probability", "must lie in (0, 1)");
