@@ -10,10 +10,11 @@
 # -b  the benchmark binary (default build/poundfe-bench)
 # -t  exit 1 when a figure fell by more than PERCENT below the recorded one
 #     (default: never; the table is printed either way)
-# A model's line may carry two more figures, off and csv of the baseline
-# build named on the table's "# baseline:" line (run alternately with the
-# recorded ones): each row then also gives today's figure as a multiple of
-# the baseline's.
+# A model's line may carry four more figures, from the alternating runs
+# named on the table's "# baseline:" line: off and csv of this code, then of
+# the baseline build. Each row then also gives the first over the second,
+# "recorded alternately: N.NNx baseline": a ratio of those recorded runs,
+# at the load that line states, never of today's run (which runs one build).
 # Run from the repository root, on a Release build.
 set -eu
 repeats=5 bench=build/poundfe-bench threshold=
@@ -22,7 +23,7 @@ while getopts r:b:t: option; do
     r) repeats=$OPTARG ;;
     b) bench=$OPTARG ;;
     t) threshold=$OPTARG ;;
-    *) sed -n '2,13p' "$0" >&2; exit 2 ;;
+    *) sed -n '2,18p' "$0" >&2; exit 2 ;;
   esac
 done
 shift $((OPTIND - 1))
@@ -35,12 +36,15 @@ after=$(cut -d' ' -f1-3 /proc/loadavg)
 sed -n 's/^# recorded: /recorded: /p; s/^# baseline: /baseline: /p' "$table"
 echo "today: $(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u '+%Y-%m-%d %H:%M UTC'), load average $before before, $after after"
 # today's lines are "step-rate MODEL CASE STEPS/S"; the table's
-# "MODEL INPUT OFF CSV [BASELINE_OFF BASELINE_CSV]"
+# "MODEL INPUT OFF CSV [ALT_OFF ALT_CSV BASELINE_OFF BASELINE_CSV]"
 echo "$today" | awk -v threshold="$threshold" '
   NR == FNR {
     if ($0 !~ /^#/ && NF >= 4) {
       recorded[$1, "off"] = $3; recorded[$1, "csv"] = $4
-      if (NF >= 6) { baseline[$1, "off"] = $5; baseline[$1, "csv"] = $6 }
+      if (NF >= 8) {
+        alternate[$1, "off"] = $5; alternate[$1, "csv"] = $6
+        baseline[$1, "off"] = $7;  baseline[$1, "csv"] = $8
+      }
     }
     next
   }
@@ -50,7 +54,7 @@ echo "$today" | awk -v threshold="$threshold" '
       change = 100 * ($4 - was) / was
       printf "%-22s %-4s recorded %9.0f  today %9.0f  %+6.1f %%", $2, $3, was, $4, change
       if (baseline[$2, $3] > 0)
-        printf "  %.2fx baseline", $4 / baseline[$2, $3]
+        printf "  recorded alternately: %.2fx baseline", alternate[$2, $3] / baseline[$2, $3]
       printf "\n"
       if (threshold != "" && change < -threshold) fell = 1
     } else

@@ -12,6 +12,10 @@
 //
 //   build/poundfe-bench-shortest [repeats [to_chars|fmt|dragonbox|digits|poundfe]]
 //   build/poundfe-bench-shortest --check N
+//   build/poundfe-bench-shortest --help
+//
+// Anything else (a count that is not a whole number above 0, an unknown way,
+// more arguments) prints the usage and exits 1.
 //
 // --check compares poundfe::shortest_text's text with std::to_chars's on N
 // doubles of random bits (every exponent, subnormals, NaNs and infinities)
@@ -279,55 +283,114 @@ namespace
       }
     return n;
   }
+  constexpr const char *usage =
+    "usage: poundfe-bench-shortest [REPEATS [WAY]]\n"
+    "       poundfe-bench-shortest --check N\n"
+    "Times the shortest text of 2^20 doubles, best of REPEATS runs (default 20),\n"
+    "every way or only WAY: to_chars, fmt, dragonbox, digits or poundfe.\n"
+    "--check N compares poundfe::shortest_text with std::to_chars on N doubles\n"
+    "of random bits and on edge values; exit 1 on the first difference.\n";
+  constexpr unsigned long long max_repeats = 1000000;
+
+  using Format = char *(*)(char *, double);
+
+  /// The whole of `text` as a whole number above 0, or 0 when it is not one
+  /// (a sign, other characters, nothing or too large).
+  unsigned long long
+  positive_count(const std::string &text)
+  {
+    unsigned long long n   = 0;
+    const char *const  end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, n);
+    return error == std::errc() && stop == end ? n : 0;
+  }
+
+  int
+  refuse(const std::string &why)
+  {
+    std::fprintf(stderr, "poundfe-bench-shortest: %s\n%s", why.c_str(), usage);
+    return 1;
+  }
+
+  /// The way called `way`, or nullptr.
+  Format
+  way_named(const std::string &way)
+  {
+    return way == "to_chars"  ? with_to_chars :
+           way == "fmt"       ? with_fmt :
+           way == "dragonbox" ? dragonbox_as_to_chars :
+           way == "digits"    ? dragonbox_digits_only :
+           way == "poundfe"   ? with_poundfe :
+                                nullptr;
+  }
+
+  /// Every way on the sample: how many texts differ from std::to_chars's,
+  /// that the texts read back, and the best time a number of each.
+  int
+  compare_all(const int repeats)
+  {
+    const std::vector<double> x = sample_numbers(1 << 20);
+    std::printf("%zu numbers, best of %d\n", x.size(), repeats);
+    std::printf("fmt::format_to(\"{}\"): %zu texts differ from std::to_chars's\n",
+                differing_texts(x, with_fmt));
+    std::printf("Dragonbox in to_chars's layout: %zu texts differ from std::to_chars's\n",
+                differing_texts(x, dragonbox_as_to_chars));
+    std::printf("poundfe::shortest_text: %zu texts differ from std::to_chars's\n",
+                differing_texts(x, with_poundfe));
+    // every text must read back to its double
+    for (const double value : x)
+      {
+        char         text[32];
+        char *const  end  = dragonbox_as_to_chars(text, value);
+        double       back = 0;
+        std::from_chars(text, end, back);
+        if (std::memcmp(&back, &value, sizeof back) != 0)
+          {
+            std::printf("round trip failed\n");
+            return 1;
+          }
+      }
+    if (all_text(x, with_to_chars) != all_text(x, dragonbox_as_to_chars))
+      std::printf("the texts of the whole sample differ\n");
+    std::printf("std::to_chars                  %6.1f ns a number\n",
+                best_ns_per_number(x, with_to_chars, repeats));
+    std::printf("fmt::format_to(\"{}\")           %6.1f ns a number\n",
+                best_ns_per_number(x, with_fmt, repeats));
+    std::printf("Dragonbox in to_chars's layout %6.1f ns a number\n",
+                best_ns_per_number(x, dragonbox_as_to_chars, repeats));
+    std::printf("poundfe::shortest_text         %6.1f ns a number\n",
+                best_ns_per_number(x, with_poundfe, repeats));
+    return 0;
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  if (argc == 3 && std::string(argv[1]) == "--check")
-    return check(std::strtoull(argv[2], nullptr, 10));
-  const int                 repeats = argc > 1 ? std::atoi(argv[1]) : 20;
-  const std::vector<double> x       = sample_numbers(1 << 20);
-  if (argc > 2)
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h"))
     {
-      const std::string way = argv[2];
-      char *(*format)(char *, double) = way == "fmt"       ? with_fmt :
-                                        way == "dragonbox" ? dragonbox_as_to_chars :
-                                        way == "digits"    ? dragonbox_digits_only :
-                                        way == "poundfe"   ? with_poundfe :
-                                                             with_to_chars;
-      std::printf("%s %.1f ns a number\n", way.c_str(), best_ns_per_number(x, format, repeats));
+      std::fputs(usage, stdout);
       return 0;
     }
-  std::printf("%zu numbers, best of %d\n", x.size(), repeats);
-  std::printf("fmt::format_to(\"{}\"): %zu texts differ from std::to_chars's\n",
-              differing_texts(x, with_fmt));
-  std::printf("Dragonbox in to_chars's layout: %zu texts differ from std::to_chars's\n",
-              differing_texts(x, dragonbox_as_to_chars));
-  std::printf("poundfe::shortest_text: %zu texts differ from std::to_chars's\n",
-              differing_texts(x, with_poundfe));
-  // every text must read back to its double
-  for (const double value : x)
+  if (!args.empty() && args[0] == "--check")
     {
-      char         text[32];
-      char *const  end  = dragonbox_as_to_chars(text, value);
-      double       back = 0;
-      std::from_chars(text, end, back);
-      if (std::memcmp(&back, &value, sizeof back) != 0)
-        {
-          std::printf("round trip failed\n");
-          return 1;
-        }
+      if (args.size() != 2 || positive_count(args[1]) == 0)
+        return refuse("--check needs one count of random doubles, a whole number above 0");
+      return check(positive_count(args[1]));
     }
-  if (all_text(x, with_to_chars) != all_text(x, dragonbox_as_to_chars))
-    std::printf("the texts of the whole sample differ\n");
-  std::printf("std::to_chars                  %6.1f ns a number\n",
-              best_ns_per_number(x, with_to_chars, repeats));
-  std::printf("fmt::format_to(\"{}\")           %6.1f ns a number\n",
-              best_ns_per_number(x, with_fmt, repeats));
-  std::printf("Dragonbox in to_chars's layout %6.1f ns a number\n",
-              best_ns_per_number(x, dragonbox_as_to_chars, repeats));
-  std::printf("poundfe::shortest_text         %6.1f ns a number\n",
-              best_ns_per_number(x, with_poundfe, repeats));
+  if (args.size() > 2)
+    return refuse("at most two arguments, REPEATS and WAY");
+  const unsigned long long repeats = args.empty() ? 20 : positive_count(args[0]);
+  if (repeats == 0 || repeats > max_repeats)
+    return refuse("REPEATS must be a whole number from 1 to " + std::to_string(max_repeats) +
+                  ", not \"" + args[0] + "\"");
+  if (args.size() < 2)
+    return compare_all(int(repeats));
+  const Format format = way_named(args[1]);
+  if (format == nullptr)
+    return refuse("no way \"" + args[1] + "\"");
+  std::printf("%s %.1f ns a number\n", args[1].c_str(),
+              best_ns_per_number(sample_numbers(1 << 20), format, int(repeats)));
   return 0;
 }

@@ -1,15 +1,15 @@
 // The text of doubles in CSV files: std::to_chars's shortest form that reads
-// back to the same double (exact; Ryu in libstdc++), with a memory of the
-// numbers written lately.
+// back to the same double, byte for byte, written by shortest_text
+// (output/shortest_text.h: Dragonbox's digits in to_chars's layout), with a
+// memory of the numbers written lately.
 //
-// Formatting is most of the cost of writing a row (perf on
-// input/bouc-wen-sdof.prm with a row every step: 47 % in to_chars), and the
-// recorders of one run write the same number many times: the time in every
-// file of a step, a floor displacement also as a hinge's drift and in the
-// phase portrait, a running maximum or a zero in the same column step after
-// step. A direct-mapped table keyed by the bits of the double keeps the text
-// of the last number in each of its slots; a hit copies the text instead of
-// converting again. The text is that of std::to_chars either way.
+// The recorders of one run write the same number many times: the time in
+// every file of a step, a floor displacement also as a hinge's drift and in
+// the phase portrait, a running maximum or a zero in the same column step
+// after step. A direct-mapped table keyed by the bits of the double keeps the
+// text of the last number in each of its slots; a hit copies the text instead
+// of converting again (doc/benchmarks.md, "Shortest text", has the cost of a
+// conversion). The text is that of std::to_chars either way.
 #ifndef poundfe_output_number_text_h
 #define poundfe_output_number_text_h
 
