@@ -225,8 +225,11 @@ printf 'subsection Sweep\n  set Parameter = Contact/Stiffness\n  set Values = 1e
 columns=(--set "Contact/Model=nonsmooth" --set "Model/Mass matrix=consistent" --set "Output/Plots=false"
          --set "Building 2/Column mass per length=400")
 sed -e '/set Stiffness *=/d' -e '/set Damping from *=/d' -e '/^subsection Sweep/,/^end/d' column.prm > lumped.prm
-expect 1 "needs mass on the equations a contact acts on (an impulse needs inertia): gap A5@16.8-B5_C5" \
+expect 1 "needs mass on the equations a contact acts on (an impulse needs inertia): gap A5@16.8-B5_C5 acts on an equation without mass (a contact on a column acts on its end rotations, which have mass only with Model/Mass matrix = consistent and a Column mass per length above 0)" \
   run lumped.prm --set "Contact/Model=nonsmooth" --output out
+# friction along a column is not set up: refused, saying so
+expect 1 "friction between a slab and a column is not set up (gap " \
+  run lumped.prm "${columns[@]}" --set "Contact/Friction coefficient=0.3" --output out
 "$poundfe" run column.prm "${columns[@]}" --output column-rigid > /dev/null 2> column-rigid.err ||
   fail "slab against column, rigid, exited $?: $(head -c 300 column-rigid.err)"
 "$poundfe" sweep column.prm "${columns[@]}" --output column-sweep > /dev/null 2> column-sweep.err ||
