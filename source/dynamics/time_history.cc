@@ -79,6 +79,12 @@ namespace poundfe
       if (moreau_jean.friction_coefficient > 0)
         for (UnilateralContact &contact : contacts)
           {
+            if (contact.on_column)
+              input.fail("Contact/Friction coefficient",
+                         "acts along contacts between two slabs in plan; friction between a "
+                         "slab and a column is not set up (gap " + contact.label +
+                           "): set Contact/Friction coefficient = 0 or Contact/Floor to column "
+                           "in plan = false");
             if (!contact.in_plan)
               input.fail("Contact/Friction coefficient",
                          "acts along contacts in plan (Model/Dimension = 3), where the slabs "

@@ -16,6 +16,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
@@ -113,28 +114,6 @@ namespace poundfe
     return {};
   }
 
-  std::string
-  MoreauJeanIntegrator::unsupported(const LinearSystem                   &system,
-                                    const std::vector<UnilateralContact> &contacts)
-  {
-    for (const UnilateralContact &contact : contacts)
-      for (unsigned int i = 0; i < contact.equations.size(); ++i)
-        {
-          const int          equation = contact.equations[i];
-          const unsigned int n_column = contact.equations.size() - 3;
-          // a column's DOF acts where its Hermite weight at the slab is nonzero
-          const bool acts =
-            contact.in_plan ||
-            (contact.on_column ? i >= n_column || contact.column.weights[i] != 0 ||
-                                   contact.column.weights[n_column + i] != 0 :
-                                 contact.coefficients[i] != 0);
-          if (equation >= 0 && acts && !(system.mass.coeff(equation, equation) > 0))
-            return "needs mass on the equations a contact acts on (an impulse needs inertia): "
-                   "gap " + contact.label + " acts on an equation without mass";
-        }
-    return {};
-  }
-
   namespace
   {
     /// B of a slab against a column (its equations x 5): z = B^T u is the
@@ -169,7 +148,96 @@ namespace poundfe
       result.setFromTriplets(entries.begin(), entries.end());
       return result;
     }
+
+    /// The smallest ratio, below which a slab against a column is refused,
+    /// of the column point's effective mass in plan to the slab's floor's
+    /// mass. An impact changes the slab's velocity by at most (1 + e) times
+    /// this ratio of the approach velocity, so below 1e-6 rigid contact
+    /// transmits nothing (the column passes through the slab). The point's
+    /// effective mass is of the order of the column's mass per length times
+    /// a metre (1.3 m on a 3 m column struck 2/3 up), so a real column, tens
+    /// of kg/m or more against a floor of tens of tonnes, is above 1e-4.
+    constexpr double min_column_mass_ratio = 1e-6;
+
+    /// What gives a column's end rotations mass (a contact on a column acts
+    /// on them; lumped masses leave them none).
+    const char *const column_mass_hint =
+      " (a contact on a column acts on its end rotations, which have mass only with "
+      "Model/Mass matrix = consistent and a Column mass per length above 0)";
+
+    /// Why slab-against-column contact `contact` is too light to act (the
+    /// column point's effective mass 1 / λ_max(W M^-1 W^T), in its lightest
+    /// plan direction, below min_column_mass_ratio of the floor's mass
+    /// M(ux, ux)); empty else. `mass_factor` factors M on `position`'s
+    /// equations (-1: without mass, where W is 0).
+    std::string
+    column_too_light(const UnilateralContact &contact, const LinearSystem &system,
+                     const Eigen::SimplicialLDLT<SparseMatrix> &mass_factor,
+                     const std::vector<int> &position)
+    {
+      const unsigned int n_column = contact.equations.size() - 3;
+      const int          slab_ux  = contact.equations[n_column];
+      if (slab_ux < 0)
+        return {};
+      Eigen::MatrixXd W = Eigen::MatrixXd::Zero(mass_factor.rows(), 2);
+      for (unsigned int r = 0; r < 2; ++r)
+        for (unsigned int j = 0; j < n_column; ++j)
+          if (contact.equations[j] >= 0 && position[contact.equations[j]] >= 0)
+            W(position[contact.equations[j]], r) = contact.column.weights[r * n_column + j];
+      const Eigen::Matrix2d G = W.transpose() * mass_factor.solve(W);
+      const double effective  = 1 / Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(G)
+                                     .eigenvalues()
+                                     .maxCoeff();
+      const double floor = system.mass.coeff(slab_ux, slab_ux);
+      if (!(effective < min_column_mass_ratio * floor))
+        return {};
+      return "needs a column with inertia against the slab it strikes: gap " + contact.label +
+             "'s column point has an effective mass of " + rounded(effective) +
+             " kg, less than " + number_text(min_column_mass_ratio) + " of the floor's " +
+             rounded(floor) + " kg, so rigid contact would transmit nothing; raise the "
+             "Column mass per length of the building of column " + contact.column.column;
+    }
   } // namespace
+
+  std::string
+  MoreauJeanIntegrator::unsupported(const LinearSystem                   &system,
+                                    const std::vector<UnilateralContact> &contacts)
+  {
+    for (const UnilateralContact &contact : contacts)
+      for (unsigned int i = 0; i < contact.equations.size(); ++i)
+        {
+          const int          equation = contact.equations[i];
+          const unsigned int n_column = contact.equations.size() - 3;
+          // a column's DOF acts where its Hermite weight at the slab is nonzero
+          const bool acts =
+            contact.in_plan ||
+            (contact.on_column ? i >= n_column || contact.column.weights[i] != 0 ||
+                                   contact.column.weights[n_column + i] != 0 :
+                                 contact.coefficients[i] != 0);
+          if (equation >= 0 && acts && !(system.mass.coeff(equation, equation) > 0))
+            return "needs mass on the equations a contact acts on (an impulse needs inertia): "
+                   "gap " + contact.label + " acts on an equation without mass" +
+                   (contact.in_plan ? std::string() : column_mass_hint);
+        }
+    if (std::none_of(contacts.begin(), contacts.end(),
+                     [](const UnilateralContact &c) { return c.on_column; }))
+      return {};
+    std::vector<unsigned int> massive;
+    std::vector<int>          position(system.n_equations(), -1);
+    for (unsigned int i = 0; i < system.n_equations(); ++i)
+      if (system.mass.coeff(i, i) > 0)
+        {
+          position[i] = massive.size();
+          massive.push_back(i);
+        }
+    const Eigen::SimplicialLDLT<SparseMatrix> mass_factor(submatrix(system.mass, massive));
+    for (const UnilateralContact &contact : contacts)
+      if (contact.on_column)
+        if (const std::string why = column_too_light(contact, system, mass_factor, position);
+            !why.empty())
+          return why;
+    return {};
+  }
 
   MoreauJeanIntegrator::MoreauJeanIntegrator(const LinearSystem &system_,
                                              const MoreauJeanParameters &parameters_,
@@ -235,13 +303,17 @@ namespace poundfe
           element_equations.push_back(&(*elements)[h].equations());
           bases[h] = (*elements)[h].tangent_basis();
         }
-    // beyond the limit sparse; within it dense where sparse is refused,
-    // else the cheaper (moreau_jean_matrix.h), unless the caller chose
+    // beyond the limit sparse; within it dense where sparse by eigen-ldlt
+    // (the solver the cost model measured) is refused, else the cheaper
+    // (moreau_jean_matrix.h), unless the caller chose. The one place that
+    // decides: MoreauJeanMatrix only applies the cost model when asked.
+    const bool sparse_by_ldlt_allowed = parameters.linear_solver == "eigen-ldlt" &&
+                                        sparse_unsupported(system, elements, parameters, "").empty();
     const JacobianStorage chosen =
-      n > parameters.max_dense_equations ? JacobianStorage::sparse :
+      n > parameters.max_dense_equations    ? JacobianStorage::sparse :
       storage != JacobianStorage::automatic ? storage :
-      sparse_unsupported(system, elements, parameters, "").empty() ? JacobianStorage::automatic :
-                                                                     JacobianStorage::dense;
+      sparse_by_ldlt_allowed                ? JacobianStorage::automatic :
+                                              JacobianStorage::dense;
     jacobian = std::make_unique<MoreauJeanMatrix>(base, modal, element_equations, chosen,
                                                   parameters.linear_solver);
   }

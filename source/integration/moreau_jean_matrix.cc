@@ -42,10 +42,12 @@ namespace poundfe
     column.setZero(n);
     solution.setZero(n);
     sparse_matrix = sparse_pattern(base, element_equations);
-    dense         = storage == JacobianStorage::dense ||
-            (storage == JacobianStorage::automatic &&
-             (dense_extra.size() > 0 || linear_solver != "eigen-ldlt" ||
-              !sparse_solve_is_cheaper(sparse_matrix)));
+    // whether sparse is allowed is the caller's (MoreauJeanIntegrator::make_jacobian)
+    Assert(storage != JacobianStorage::automatic ||
+             (dense_extra.size() == 0 && linear_solver == "eigen-ldlt"),
+           dealii::ExcMessage("the cost model is of sparse J by eigen-ldlt"));
+    dense = storage == JacobianStorage::dense ||
+            (storage == JacobianStorage::automatic && !sparse_solve_is_cheaper(sparse_matrix));
     if (dense)
       {
         dense_base = Eigen::MatrixXd(base);
