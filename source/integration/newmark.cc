@@ -1552,7 +1552,9 @@ namespace poundfe
   double
   NewmarkIntegrator::strain_energy_at(const Vector &x) const
   {
-    return 0.5 * x.dot(system.stiffness * x) + elements_strain_energy();
+    // summed in strain_energy()'s order, so that E_S(u_g) - E_S(u_g) is 0 exactly
+    return add_element_energies(0.5 * x.dot(system.stiffness * x), elements, n_elements,
+                                distribution, counted_here);
   }
 
   double
