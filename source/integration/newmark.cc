@@ -144,6 +144,21 @@ namespace poundfe
       for (unsigned int h = 0; h < n_elements; ++h)
         uniaxial[h] = dynamic_cast<UniaxialElement *>(&(*elements)[h]);
     }
+
+    /// `start` plus the elements' stored energies above their reference
+    /// (this rank's counted elements), added one by one onto `start`: the
+    /// order of the sum, and so its last bits, is that of a run without a
+    /// gravity state.
+    double
+    add_element_energies(double start, const NonlinearElements *const elements,
+                         const unsigned int n_elements, const RankOwnership *const distribution,
+                         const std::vector<char> &counted_here)
+    {
+      for (unsigned int h = 0; h < n_elements; ++h)
+        if (!distribution || counted_here[h])
+          start += (*elements)[h].stored_energy() - (*elements)[h].reference_energy();
+      return start;
+    }
   } // namespace
 
   namespace
@@ -1530,22 +1545,21 @@ namespace poundfe
     const Vector &stiffness_u = stiffness_times_u();
     double energy = 0.5 * (fixed ? fixed->dot(u, stiffness_u) : u.dot(stiffness_u));
     // the elements' trial state is the committed state at u
-    return energy + elements_strain_energy() - gravity_strain;
+    energy = add_element_energies(energy, elements, n_elements, distribution, counted_here);
+    return held_load.size() > 0 ? energy - gravity_strain : energy;
   }
 
   double
   NewmarkIntegrator::strain_energy_at(const Vector &x) const
   {
-    return 0.5 * x.dot(system.stiffness * x) + elements_strain_energy();
+    // summed in strain_energy()'s order, so that E_S(u_g) - E_S(u_g) is 0 exactly
+    return add_element_energies(0.5 * x.dot(system.stiffness * x), elements, n_elements,
+                                distribution, counted_here);
   }
 
   double
   NewmarkIntegrator::elements_strain_energy() const
   {
-    double energy = 0;
-    for (unsigned int h = 0; h < n_elements; ++h)
-      if (!distribution || counted_here[h])
-        energy += (*elements)[h].stored_energy() - (*elements)[h].reference_energy();
-    return energy;
+    return add_element_energies(0, elements, n_elements, distribution, counted_here);
   }
 } // namespace poundfe

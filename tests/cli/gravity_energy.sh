@@ -17,6 +17,9 @@
 #   - the held loads do work (constant_load_J != 0) and the run starts from
 #     rest at the gravity state (strain 0 at t = 0, initial_J 0 to 1e-9 of
 #     the input).
+# A member's own load's work enters both constant_load and the member's work,
+# so it cancels here: the unit test energy_terms_after_gravity_by_member_model
+# (hysteretic 0 on elastic sections, both formulations) is what checks it.
 #   gravity_energy.sh POUNDFE EXAMPLE_2D EXAMPLE_3D
 set -u
 poundfe=$1 example_2d=$2 example_3d=$3
