@@ -187,7 +187,9 @@ namespace poundfe
         set_trial(const Vector &u, const Vector &v) override
         {
           // t u and t v by rows into the members' storage: Eigen's dynamic
-          // product costs more than these few terms
+          // product costs more than these few terms. Kept in step with
+          // UniaxialLinksOf::set_trial (opensees_analysis.cc), which repeats
+          // these operations in this order for small models: edit both.
           rate.resize(laws.size());
           strain.resize(laws.size());
           for (unsigned int m = 0; m < laws.size(); ++m)
@@ -222,7 +224,8 @@ namespace poundfe
         force_into(Vector &f) const override
         {
           // sum_m t_m^T sigma_m by rows: t is mostly zeros, and a product
-          // of Eigen's dynamic matrices allocates its temporaries
+          // of Eigen's dynamic matrices allocates its temporaries. Kept in
+          // step with UniaxialLinksOf::subtract_forces (opensees_analysis.cc).
           f.setZero(t.cols());
           for (unsigned int m = 0; m < laws.size(); ++m)
             {
@@ -419,7 +422,8 @@ namespace poundfe
         void
         weighted(const Value &value, Matrix &k, const OtherValue &other_value, Matrix *c) const
         {
-          // by rows, skipping t_m's zeros (as force())
+          // by rows, skipping t_m's zeros (as force()). Kept in step with
+          // UniaxialLinksOf::add_tangents (opensees_analysis.cc).
           const Eigen::Index n = t.cols();
           k.setZero(n, n);
           if (c)
@@ -924,7 +928,7 @@ namespace poundfe
     {
       const auto     &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
       Eigen::Vector3d d = Eigen::Vector3d::Zero();
-      for (unsigned int k = 0; k < a.size(); ++k)
+      for (unsigned int k = 0; k < std::min(a.size(), b.size()); ++k) // nodes of two -ndm
         d[k] = b[k] - a[k];
       const double length = d.norm();
       if (!(length > 0))

@@ -373,6 +373,14 @@ bad() { # NAME EXPECTED (the script on standard input)
   [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
 }
 echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"' || exit 1
+# an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused
+# at its line, before analyze reads past a node's DOFs
+for kind in "truss 1 3 1 1.0 1" "zeroLength 1 3 1 -mat 1 -dir 1"; do
+  printf 'model basic -ndm 2 -ndf 2\nnode 3 1.0 0.0\nuniaxialMaterial Elastic 1 1.0\nelement %s\nanalyze 1\n' "$kind" \
+    | bad "differing-ndf-${kind%% *}" "8: element 1 takes 4 DOFs (-ndf 2 at each node) but node 3 has 2, node 1 has 1: nodes of differing dof at the element's ends" || exit 1
+done
+printf 'model basic -ndm 2 -ndf 2\nuniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1\n' \
+  | bad differing-ndf-model "7: element 1 takes 4 DOFs (-ndf 2 at each node) but node 1 has 1, node 2 has 1: nodes of differing dof at the element's ends" || exit 1
 echo "element corotTruss 1 1 2 1.0 1" | bad unsupported-element \
   '5: element corotTruss: poundfe does not support it' || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass\n' \
