@@ -151,6 +151,9 @@ CASES = {
     # 0.01), with and without Baber-Noori degradation
     "bouc_wen_storey": ("bouc_wen_storey.tcl", [], 1e-9),
     "bouc_wen_degrading": ("bouc_wen_storey.tcl", ["degrading"], 1e-9),
+    # zeroLengths added after an analyze to moved nodes, strains and rates
+    # measured from that moment (ZeroLength's d0 and v0; measured 5e-15)
+    "zero_length_late": ("zero_length_late.tcl", [], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -25,7 +25,8 @@
 //   deformation over the global DOFs (the axis' components at node j, their
 //   negatives at node i, within the DOFs the model's ndm/ndf give; a
 //   direction the node has no DOF for contributes nothing, as in
-//   ZeroLength::setTran1d); strain t_m u, rate t_m v; force sum t_m^T
+//   ZeroLength::setTran1d); strain t_m u, rate t_m v, u and v from the
+//   nodes' state when it was made (ZeroLength::setDomain's d0, v0); force sum t_m^T
 //   sigma_m, tangent sum t_m^T E_m t_m, damping sum t_m^T eta_m t_m.
 //
 // twoNodeLink (TwoNodeLink.cpp): the zeroLength's frame with t = T_lb T_gl:
@@ -173,6 +174,30 @@ namespace poundfe
         unsigned int n_dofs() const override { return t.cols(); }
         bool         rayleigh_damped() const override { return rayleigh; }
 
+        /// OpenSees's zeroLength made on nodes that have moved
+        /// (ZeroLength::setDomain's d0 and v0): its strains and rates
+        /// measured from the nodes' displacements and velocities now.
+        void
+        measure_from_now(const Domain &domain)
+        {
+          Vector u(n_dofs()), v(n_dofs());
+          const unsigned int ndf = n_dofs() / 2;
+          for (unsigned int a = 0; a < 2; ++a)
+            {
+              const Node &node = domain.node(node_tags[a]);
+              // a node of another -ndf is refused when the element is added
+              for (unsigned int k = 0; k < std::min<std::size_t>(ndf, node.disp.size()); ++k)
+                {
+                  u[a * ndf + k] = node.disp[k];
+                  v[a * ndf + k] = node.vel[k];
+                }
+            }
+          if (!u.isZero(0))
+            u_at_creation = u;
+          if (!v.isZero(0))
+            v_at_creation = v;
+        }
+
         /// A truss of length L and area A along direction 1: strain t u / L,
         /// force A t^T sigma.
         void
@@ -184,8 +209,14 @@ namespace poundfe
         }
 
         bool
-        set_trial(const Vector &u, const Vector &v) override
+        set_trial(const Vector &u_total, const Vector &v_total) override
         {
+          if (u_at_creation.size() > 0)
+            u_since_creation = u_total - u_at_creation;
+          if (v_at_creation.size() > 0)
+            v_since_creation = v_total - v_at_creation;
+          const Vector &u = u_at_creation.size() > 0 ? u_since_creation : u_total;
+          const Vector &v = v_at_creation.size() > 0 ? v_since_creation : v_total;
           // t u and t v by rows into the members' storage: Eigen's dynamic
           // product costs more than these few terms. Kept in step with
           // UniaxialLinksOf::set_trial (opensees_analysis.cc), which repeats
@@ -322,7 +353,13 @@ namespace poundfe
           strain = committed_strain = Vector::Zero(laws.size());
         }
         std::string failure() const override { return why; }
-        UniaxialRows *uniaxial_rows() override { return this; }
+        /// None when made on moved nodes: the typed loops read total
+        /// displacements.
+        UniaxialRows *
+        uniaxial_rows() override
+        {
+          return u_at_creation.size() + v_at_creation.size() > 0 ? nullptr : this;
+        }
 
       protected:
         /// OpenSees's `material i stress|strain|tangent|stressStrain|
@@ -446,6 +483,9 @@ namespace poundfe
         }
 
         Vector committed_strain; // the materials' committed strains
+        /// The nodes' displacements and velocities when it was made, if any
+        /// is not zero (measure_from_now), and storage for u - u_at_creation.
+        Vector u_at_creation, v_at_creation, u_since_creation, v_since_creation;
         bool   rayleigh = false;
       };
 
@@ -784,9 +824,11 @@ namespace poundfe
     std::unique_ptr<Element>
     make_zero_length(const Domain &domain, const int tag, const ZeroLengthData &data)
     {
-      return std::make_unique<ZeroLength>(domain, tag, data.nodes,
-                                          zero_length_rows(domain, tag, data), data.materials,
-                                          data.rayleigh);
+      auto element = std::make_unique<ZeroLength>(domain, tag, data.nodes,
+                                                  zero_length_rows(domain, tag, data),
+                                                  data.materials, data.rayleigh);
+      element->measure_from_now(domain);
+      return element;
     }
 
     namespace
