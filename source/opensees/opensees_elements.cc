@@ -16,7 +16,9 @@
 //
 // truss (Truss, small strains): the zeroLength's row t along the member's
 //   axis x, strain t u / L, force A t^T sigma, tangent (A/L) t^T E t;
-//   Rayleigh-damped only with -doRayleigh 1 (OpenSees's default 0).
+//   Rayleigh-damped only with -doRayleigh 1 (OpenSees's default 0); made
+//   on nodes that have moved, x and L those of the moved member and u
+//   measured from then (Truss::setDomain's initialDisp, -useInitialDisp).
 //
 // zeroLength (ZeroLength): the local axes x, y (-orient), z = x × y,
 //   y = z × x; material m along direction d (1-3: translation along axis
@@ -176,9 +178,10 @@ namespace poundfe
 
         /// OpenSees's zeroLength made on nodes that have moved
         /// (ZeroLength::setDomain's d0 and v0): its strains and rates
-        /// measured from the nodes' displacements and velocities now.
+        /// measured from the nodes' displacements and velocities now; a
+        /// truss's strains only (Truss::setDomain's initialDisp).
         void
-        measure_from_now(const Domain &domain)
+        measure_from_now(const Domain &domain, const bool rates = true)
         {
           Vector u(n_dofs()), v(n_dofs());
           const unsigned int ndf = n_dofs() / 2;
@@ -194,7 +197,7 @@ namespace poundfe
             }
           if (!u.isZero(0))
             u_at_creation = u;
-          if (!v.isZero(0))
+          if (rates && !v.isZero(0))
             v_at_creation = v;
         }
 
@@ -972,6 +975,14 @@ namespace poundfe
       Eigen::Vector3d d = Eigen::Vector3d::Zero();
       for (unsigned int k = 0; k < std::min(a.size(), b.size()); ++k) // nodes of two -ndm
         d[k] = b[k] - a[k];
+      // made on nodes that have moved: along and as long as the member is
+      // then (Truss::setDomain with -useInitialDisp, OpenSees's default)
+      const auto     &u_a = domain.node(nodes[0]).disp, &u_b = domain.node(nodes[1]).disp;
+      Eigen::Vector3d moved = Eigen::Vector3d::Zero();
+      for (unsigned int k = 0; k < std::min({a.size(), b.size(), u_a.size(), u_b.size()}); ++k)
+        moved[k] = u_b[k] - u_a[k];
+      if (!moved.isZero(0))
+        d += moved;
       const double length = d.norm();
       if (!(length > 0))
         throw ScriptError("truss " + std::to_string(tag) + " has zero length");
@@ -994,6 +1005,7 @@ namespace poundfe
       auto truss = std::make_unique<ZeroLength>(
         domain, tag, nodes, zero_length_rows(domain, tag, data), data.materials, rayleigh);
       truss->as_truss(length, area);
+      truss->measure_from_now(domain, false);
       return truss;
     }
   } // namespace opensees
