@@ -176,6 +176,11 @@ CASES = {
     # yielding stick's round-off: those below 1e-15 of the peak are noise),
     # getNP, getPID and getTime's six decimals
     "queries": ("queries.tcl", [], 1e-10),
+    # zeroLengths added after an analyze to moved nodes, strains and rates
+    # measured from that moment (ZeroLength's d0 and v0; measured 5e-15)
+    "zero_length_late": ("zero_length_late.tcl", [], 1e-9),
+    # the same with a truss added (Truss's -useInitialDisp, OpenSees's default)
+    "truss_late": ("zero_length_late.tcl", ["truss"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -1361,6 +1361,24 @@ namespace poundfe
     add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element)
     {
       const int tag = element->tag;
+      // An element takes the model's -ndf DOFs at each node; a node made
+      // under another -ndf would leave it reading past the node's DOFs
+      // (OpenSees 3.8 warns "differing dof at ends" and stops at analyze).
+      std::string node_dofs;
+      std::size_t n_node_dofs = 0;
+      for (const int n : element->node_tags)
+        {
+          const std::size_t ndf = d.node(n).fixed.size();
+          n_node_dofs += ndf;
+          node_dofs += (node_dofs.empty() ? "node " : ", node ") + text_of(n) + " has " +
+                       text_of(static_cast<int>(ndf));
+        }
+      if (n_node_dofs != element->n_dofs())
+        throw ScriptError("element " + text_of(tag) + " takes " +
+                          text_of(static_cast<int>(element->n_dofs())) +
+                          " DOFs (-ndf " + text_of(static_cast<int>(d.ndf)) +
+                          " at each node) but " + node_dofs +
+                          ": nodes of differing dof at the element's ends");
       if (!d.elements.emplace(tag, std::move(element)).second)
         throw ScriptError("element " + text_of(tag) + " exists already");
       d.changed = true;

@@ -71,7 +71,9 @@ namespace poundfe
 
     namespace
     {
-      /// UniaxialLinks of n_dofs DOFs each (2 ndf).
+      /// UniaxialLinks of n_dofs DOFs each (2 ndf). Each loop repeats the
+      /// operations of ZeroLength's (opensees_elements.cc) in their order, so
+      /// that a model gives the same bits on either path: edit both.
       template <unsigned int n_dofs>
       class UniaxialLinksOf : public UniaxialLinks
       {
@@ -87,6 +89,7 @@ namespace poundfe
         bool
         set_trial(const Vector &u, const Vector &v, std::string &why) const override
         {
+          // ZeroLength::set_trial's sums, in its order
           for (const Link &link : links)
             {
               UniaxialRows &z = *link.rows;
@@ -126,6 +129,7 @@ namespace poundfe
         void
         subtract_forces(Vector &r) const override
         {
+          // ZeroLength::force_into's sums, in its order
           for (const Link &link : links)
             {
               const UniaxialRows        &z = *link.rows;
@@ -145,6 +149,7 @@ namespace poundfe
         void
         add_tangents(const double c_k, const double c_c, Matrix &k) const override
         {
+          // ZeroLength::weighted's sums, in its order
           for (const Link &link : links)
             {
               const UniaxialRows                  &z = *link.rows;

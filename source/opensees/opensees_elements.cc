@@ -17,7 +17,9 @@
 //
 // truss (Truss, small strains): the zeroLength's row t along the member's
 //   axis x, strain t u / L, force A t^T sigma, tangent (A/L) t^T E t;
-//   Rayleigh-damped only with -doRayleigh 1 (OpenSees's default 0).
+//   Rayleigh-damped only with -doRayleigh 1 (OpenSees's default 0); made
+//   on nodes that have moved, x and L those of the moved member and u
+//   measured from then (Truss::setDomain's initialDisp, -useInitialDisp).
 //
 // zeroLength (ZeroLength): the local axes x, y (-orient), z = x × y,
 //   y = z × x; material m along direction d (1-3: translation along axis
@@ -26,7 +28,8 @@
 //   deformation over the global DOFs (the axis' components at node j, their
 //   negatives at node i, within the DOFs the model's ndm/ndf give; a
 //   direction the node has no DOF for contributes nothing, as in
-//   ZeroLength::setTran1d); strain t_m u, rate t_m v; force sum t_m^T
+//   ZeroLength::setTran1d); strain t_m u, rate t_m v, u and v from the
+//   nodes' state when it was made (ZeroLength::setDomain's d0, v0); force sum t_m^T
 //   sigma_m, tangent sum t_m^T E_m t_m, damping sum t_m^T eta_m t_m.
 //
 // twoNodeLink (TwoNodeLink.cpp): the zeroLength's frame with t = T_lb T_gl:
@@ -198,6 +201,31 @@ namespace poundfe
         unsigned int n_dofs() const override { return t.cols(); }
         bool         rayleigh_damped() const override { return rayleigh; }
 
+        /// OpenSees's zeroLength made on nodes that have moved
+        /// (ZeroLength::setDomain's d0 and v0): its strains and rates
+        /// measured from the nodes' displacements and velocities now; a
+        /// truss's strains only (Truss::setDomain's initialDisp).
+        void
+        measure_from_now(const Domain &domain, const bool rates = true)
+        {
+          Vector u(n_dofs()), v(n_dofs());
+          const unsigned int ndf = n_dofs() / 2;
+          for (unsigned int a = 0; a < 2; ++a)
+            {
+              const Node &node = domain.node(node_tags[a]);
+              // a node of another -ndf is refused when the element is added
+              for (unsigned int k = 0; k < std::min<std::size_t>(ndf, node.disp.size()); ++k)
+                {
+                  u[a * ndf + k] = node.disp[k];
+                  v[a * ndf + k] = node.vel[k];
+                }
+            }
+          if (!u.isZero(0))
+            u_at_creation = u;
+          if (rates && !v.isZero(0))
+            v_at_creation = v;
+        }
+
         /// A truss of length L and area A along direction 1: strain t u / L,
         /// force A t^T sigma.
         void
@@ -209,10 +237,18 @@ namespace poundfe
         }
 
         bool
-        set_trial(const Vector &u, const Vector &v) override
+        set_trial(const Vector &u_total, const Vector &v_total) override
         {
+          if (u_at_creation.size() > 0)
+            u_since_creation = u_total - u_at_creation;
+          if (v_at_creation.size() > 0)
+            v_since_creation = v_total - v_at_creation;
+          const Vector &u = u_at_creation.size() > 0 ? u_since_creation : u_total;
+          const Vector &v = v_at_creation.size() > 0 ? v_since_creation : v_total;
           // t u and t v by rows into the members' storage: Eigen's dynamic
-          // product costs more than these few terms
+          // product costs more than these few terms. Kept in step with
+          // UniaxialLinksOf::set_trial (opensees_analysis.cc), which repeats
+          // these operations in this order for small models: edit both.
           rate.resize(laws.size());
           strain.resize(laws.size());
           for (unsigned int m = 0; m < laws.size(); ++m)
@@ -247,7 +283,8 @@ namespace poundfe
         force_into(Vector &f) const override
         {
           // sum_m t_m^T sigma_m by rows: t is mostly zeros, and a product
-          // of Eigen's dynamic matrices allocates its temporaries
+          // of Eigen's dynamic matrices allocates its temporaries. Kept in
+          // step with UniaxialLinksOf::subtract_forces (opensees_analysis.cc).
           f.setZero(t.cols());
           for (unsigned int m = 0; m < laws.size(); ++m)
             {
@@ -362,7 +399,13 @@ namespace poundfe
           strain = committed_strain = Vector::Zero(laws.size());
         }
         std::string failure() const override { return why; }
-        UniaxialRows *uniaxial_rows() override { return this; }
+        /// None when made on moved nodes: the typed loops read total
+        /// displacements.
+        UniaxialRows *
+        uniaxial_rows() override
+        {
+          return u_at_creation.size() + v_at_creation.size() > 0 ? nullptr : this;
+        }
 
       protected:
         /// OpenSees's `material i stress|strain|tangent|stressStrain|
@@ -462,7 +505,8 @@ namespace poundfe
         void
         weighted(const Value &value, Matrix &k, const OtherValue &other_value, Matrix *c) const
         {
-          // by rows, skipping t_m's zeros (as force())
+          // by rows, skipping t_m's zeros (as force()). Kept in step with
+          // UniaxialLinksOf::add_tangents (opensees_analysis.cc).
           const Eigen::Index n = t.cols();
           k.setZero(n, n);
           if (c)
@@ -485,6 +529,9 @@ namespace poundfe
         }
 
         Vector committed_strain; // the materials' committed strains
+        /// The nodes' displacements and velocities when it was made, if any
+        /// is not zero (measure_from_now), and storage for u - u_at_creation.
+        Vector u_at_creation, v_at_creation, u_since_creation, v_since_creation;
         bool   rayleigh = false;
       };
 
@@ -823,9 +870,11 @@ namespace poundfe
     std::unique_ptr<Element>
     make_zero_length(const Domain &domain, const int tag, const ZeroLengthData &data)
     {
-      return std::make_unique<ZeroLength>(domain, tag, data.nodes,
-                                          zero_length_rows(domain, tag, data), data.materials,
-                                          data.rayleigh);
+      auto element = std::make_unique<ZeroLength>(domain, tag, data.nodes,
+                                                  zero_length_rows(domain, tag, data),
+                                                  data.materials, data.rayleigh);
+      element->measure_from_now(domain);
+      return element;
     }
 
     namespace
@@ -967,8 +1016,16 @@ namespace poundfe
     {
       const auto     &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
       Eigen::Vector3d d = Eigen::Vector3d::Zero();
-      for (unsigned int k = 0; k < a.size(); ++k)
+      for (unsigned int k = 0; k < std::min(a.size(), b.size()); ++k) // nodes of two -ndm
         d[k] = b[k] - a[k];
+      // made on nodes that have moved: along and as long as the member is
+      // then (Truss::setDomain with -useInitialDisp, OpenSees's default)
+      const auto     &u_a = domain.node(nodes[0]).disp, &u_b = domain.node(nodes[1]).disp;
+      Eigen::Vector3d moved = Eigen::Vector3d::Zero();
+      for (unsigned int k = 0; k < std::min({a.size(), b.size(), u_a.size(), u_b.size()}); ++k)
+        moved[k] = u_b[k] - u_a[k];
+      if (!moved.isZero(0))
+        d += moved;
       const double length = d.norm();
       if (!(length > 0))
         throw ScriptError("truss " + std::to_string(tag) + " has zero length");
@@ -991,6 +1048,7 @@ namespace poundfe
       auto truss = std::make_unique<ZeroLength>(
         domain, tag, nodes, zero_length_rows(domain, tag, data), data.materials, rayleigh);
       truss->as_truss(length, area);
+      truss->measure_from_now(domain, false);
       return truss;
     }
   } // namespace opensees

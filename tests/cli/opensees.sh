@@ -6,7 +6,9 @@
 #  2. Tcl's own semantics: procs, loops, `source` of a second file, `catch`
 #     of an unsupported command's error, argv with words that look like
 #     options, `exit` with the recorders' files in place;
-#  3. bad input: an unknown command, an unsupported option, a node that does
+#  2b. a small zeroLength model with the typed loops and on the general
+#     path: the same bits;
+#  3. bad input: an element between nodes of differing -ndf, an unknown command, an unsupported option, a node that does
 #     not exist, a script error, a Parallel of a missing material or with a
 #     factor short, an unknown MinMax option, a Series -iter short of its
 #     tolerance, a ViscousDamper with NM 4 or 5 values, a twoNodeLink with
@@ -356,6 +358,47 @@ TCL
   || { cat "$work/materials/log"; fail "materials by their OpenSees argument order"; }
 [ "$(grep -c '^ok ' "$work/materials/log")" = 38 ] || { cat "$work/materials/log"; fail "materials"; }
 
+# 2b. the typed loops over small zeroLength models (UniaxialLinksOf in
+# opensees_analysis.cc) repeat ZeroLength's arithmetic: the same model, yielding
+# and pounding, gives the same bits with them and on the general path
+mkdir -p "$work/typed/on" "$work/typed/off"
+cat > "$work/typed/s.tcl" <<'EOF'
+set out [lindex $argv 0]
+model basic -ndm 1 -ndf 1
+node 1 0.0
+node 2 0.0 -mass 2.0
+node 3 0.0 -mass 1.0
+node 4 0.0
+fix 1 1; fix 4 1
+uniaxialMaterial Steel01 1 3.0 800.0 0.05
+uniaxialMaterial ElasticPPGap 2 5000.0 -4.0 -0.002 0.1 damage
+uniaxialMaterial Elastic 3 300.0 0.5
+element zeroLength 1 1 2 -mat 1 3 -dir 1 1
+element zeroLength 2 2 3 -mat 2 3 -dir 1 1
+element zeroLength 3 3 4 -mat 3 -dir 1
+# a zeroLength between the two fixed nodes adds nothing, but -doRayleigh
+# keeps the whole model off the typed loops
+if {[lindex $argv 1] eq "general"} { element zeroLength 4 1 4 -mat 3 -dir 1 -doRayleigh 1 }
+set values {}
+for {set k 0} {$k <= 400} {incr k} { lappend values [expr {6.0 * sin(0.11 * $k) * exp(-0.004 * $k)}] }
+timeSeries Path 1 -dt 0.01 -values $values
+pattern UniformExcitation 1 1 -accel 1
+recorder Node -file $out/d.out -time -precision 17 -node 2 3 -dof 1 disp
+recorder Element -file $out/f.out -time -precision 17 -ele 1 2 3 force
+constraints Plain; numberer Plain; system BandGeneral
+test NormDispIncr 1.0e-12 50; algorithm Newton
+integrator Newmark 0.5 0.25; analysis Transient
+puts [analyze 400 0.01]
+EOF
+for mode in on:typed off:general; do
+  "$poundfe" opensees "$work/typed/s.tcl" "$work/typed/${mode%%:*}" "${mode#*:}" \
+    > "$work/typed/${mode%%:*}.log" 2>&1 || { cat "$work/typed/${mode%%:*}.log"; fail "typed loops: ${mode#*:} run"; }
+done
+for f in d.out f.out; do
+  [ -s "$work/typed/on/$f" ] && cmp "$work/typed/on/$f" "$work/typed/off/$f" \
+    || fail "typed loops: $f differs from the general path's"
+done
+
 # 3. bad input: SCRIPT-BODY and the expected message (after "poundfe: error: ")
 bad() { # NAME EXPECTED (the script on standard input)
   local dir="$work/bad-$1"
@@ -373,6 +416,14 @@ bad() { # NAME EXPECTED (the script on standard input)
   [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
 }
 echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"' || exit 1
+# an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused
+# at its line, before analyze reads past a node's DOFs
+for kind in "truss 1 3 1 1.0 1" "zeroLength 1 3 1 -mat 1 -dir 1"; do
+  printf 'model basic -ndm 2 -ndf 2\nnode 3 1.0 0.0\nuniaxialMaterial Elastic 1 1.0\nelement %s\nanalyze 1\n' "$kind" \
+    | bad "differing-ndf-${kind%% *}" "8: element 1 takes 4 DOFs (-ndf 2 at each node) but node 3 has 2, node 1 has 1: nodes of differing dof at the element's ends" || exit 1
+done
+printf 'model basic -ndm 2 -ndf 2\nuniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1\n' \
+  | bad differing-ndf-model "7: element 1 takes 4 DOFs (-ndf 2 at each node) but node 1 has 1, node 2 has 1: nodes of differing dof at the element's ends" || exit 1
 echo "element corotTruss 1 1 2 1.0 1" | bad unsupported-element \
   '5: element corotTruss: poundfe does not support it' || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass\n' \
