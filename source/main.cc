@@ -1,14 +1,17 @@
 // The poundfe executable: answers `poundfe --version` itself and hands every
 // other command line to the program (source/program.cc), a module it loads
 // with dlopen from beside itself (the build tree) or from the installed
-// library directory.
+// library directory; `poundfe opensees SCRIPT [ARGS...]` goes to the lean
+// module of the OpenSees interpreter instead (source/opensees_program.cc).
 //
-// Why a module: deal.II links PETSc, SLEPc, Trilinos, OpenCASCADE, Gmsh and
+// Why modules: deal.II links PETSc, SLEPc, Trilinos, OpenCASCADE, Gmsh and
 // MPI unconditionally, ~200 shared libraries whose ~320 000 symbol
-// relocations take the dynamic loader 0.4-0.6 s of CPU before main runs
+// relocations take the dynamic loader 0.3-0.6 s of CPU before main runs
 // (doc/benchmarks.md, "Start-up"). The executable itself links only the C and
-// C++ runtimes, so that the version line costs a millisecond; every command
-// needs deal.II and pays that load once, as before.
+// C++ runtimes, so that the version line costs a millisecond; the
+// interpreter's module links Tcl, UMFPACK and the runtimes, no deal.II, so
+// that a short script is not dominated by that load; every other command
+// needs deal.II and pays it once, as before.
 #include <dlfcn.h>
 #include <unistd.h>
 
@@ -36,17 +39,17 @@ namespace
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
   }
 
-  /// The program module, loaded with its libraries (global, as MPI's
+  /// The module `name`, loaded with its libraries (global, as MPI's
   /// plugins need libmpi's symbols), or nullptr and the reason in `error`.
   void *
-  load_program(std::string &error)
+  load_module(const std::string &name, std::string &error)
   {
     const std::string directory = executable_directory();
-    // beside the executable in the build tree; POUNDFE_PROGRAM_FROM_BINDIR
+    // beside the executable in the build tree; in POUNDFE_MODULES_FROM_BINDIR
     // (CMakeLists.txt) when installed
-    for (const char *relative : {"poundfe-program.so", POUNDFE_PROGRAM_FROM_BINDIR})
+    for (const std::string &path : {directory + name,
+                                    directory + POUNDFE_MODULES_FROM_BINDIR + name})
       {
-        const std::string path = directory + relative;
         if (access(path.c_str(), F_OK) != 0)
           continue;
         if (void *handle = dlopen(path.c_str(), RTLD_LAZY | RTLD_GLOBAL))
@@ -54,9 +57,20 @@ namespace
         error = dlerror();
         return nullptr;
       }
-    error = "poundfe-program.so is neither in " + directory + " nor at " + directory +
-            POUNDFE_PROGRAM_FROM_BINDIR;
+    error = name + " is neither in " + directory + " nor in " + directory +
+            POUNDFE_MODULES_FROM_BINDIR;
     return nullptr;
+  }
+
+  /// Whether the command line is `poundfe opensees SCRIPT [ARGS...]`, which
+  /// the interpreter's module runs alone: every word after the script is
+  /// the script's own (the program's parsing, program.cc), and any other
+  /// form (an option first, no script) is the program's to parse or refuse.
+  bool
+  runs_a_script(const int argc, char **argv)
+  {
+    const auto is_option = [](const char *word) { return word[0] == '-' && word[1] != '\0'; };
+    return argc >= 3 && std::strcmp(argv[1], "opensees") == 0 && !is_option(argv[2]);
   }
 } // namespace
 
@@ -70,17 +84,18 @@ main(int argc, char **argv)
       std::printf("%s\n", poundfe::version_line);
       return 0;
     }
+  const bool  lean   = runs_a_script(argc, argv);
   std::string error;
-  void       *program = load_program(error);
-  using Main          = int (*)(int, char **);
-  const Main program_main =
-    program ? reinterpret_cast<Main>(dlsym(program, "poundfe_program_main")) : nullptr;
-  if (program && !program_main)
+  void       *module = load_module(lean ? "poundfe-opensees.so" : "poundfe-program.so", error);
+  using Main         = int (*)(int, char **);
+  const char *entry  = lean ? "poundfe_opensees_main" : "poundfe_program_main";
+  const Main  module_main = module ? reinterpret_cast<Main>(dlsym(module, entry)) : nullptr;
+  if (module && !module_main)
     error = dlerror();
-  if (!program_main)
+  if (!module_main)
     {
       std::fprintf(stderr, "poundfe: error: cannot load the program: %s\n", error.c_str());
       return 1;
     }
-  return program_main(argc, argv);
+  return module_main(argc, argv);
 }

@@ -235,37 +235,12 @@ namespace
   int
   exit_status_of(const std::exception_ptr &thrown, std::ostream &err, const bool several_ranks)
   {
-    using namespace poundfe;
-    std::string message;
-    int         status   = 1;
-    bool        any_rank = false; // not necessarily on every rank: the others may wait forever
-    try
-      {
-        std::rethrow_exception(thrown);
-      }
-    catch (const CommandLineError &e)
-      {
-        message = "poundfe: error: " + std::string(e.what()) + "\n" + e.trailer();
-      }
-    catch (const InputError &e)
-      {
-        message = "poundfe: error: " + std::string(e.what()) + "\n";
-      }
-    catch (const NumericalError &e)
-      {
-        message = "poundfe: numerical failure: " + std::string(e.what()) + "\n";
-        status  = 2;
-      }
-    catch (const std::exception &e)
-      {
-        message  = "poundfe: error: " + std::string(e.what()) + "\n";
-        any_rank = true;
-      }
+    const poundfe::CommandFailure failure = poundfe::command_failure(thrown);
     std::cout.flush();
-    (any_rank ? std::cerr : err) << message << std::flush;
-    if (any_rank && several_ranks)
+    (failure.any_rank ? std::cerr : err) << failure.message << std::flush;
+    if (failure.any_rank && several_ranks)
       MPI_Abort(MPI_COMM_WORLD, 1);
-    return status;
+    return failure.status;
   }
 } // namespace
 

@@ -16,11 +16,6 @@
 
 namespace poundfe
 {
-  CommandLineError::CommandLineError(const std::string &problem, std::string trailer)
-    : std::invalid_argument(problem)
-    , after(std::move(trailer))
-  {}
-
   bool
   initialises_mpi_first(const Command &command, const unsigned int launched_processes)
   {
@@ -53,10 +48,13 @@ namespace poundfe
     }
 
     /// Refuses (CommandLineError) what the row does not take: the number of
-    /// arguments, --realizations, --set without a file.
+    /// arguments (a row of script arguments needs its script), --realizations,
+    /// --set without a file.
     void
     check_request(const Command &command, const CommandRequest &request)
     {
+      if (command.has(CommandRule::script_arguments) && request.arguments.empty())
+        throw CommandLineError("'" + command.name + "' needs a script", usage_text());
       const bool reads_file = command.has(CommandRule::reads_file);
       if (reads_file && request.arguments.size() != 1)
         throw CommandLineError("'" + command.name + "' needs exactly one parameter file",

@@ -7,9 +7,8 @@
 // no recorder file written). `exit` ends it cleanly with the recorders'
 // files in place. poundfe's additions live in the namespace poundfe::.
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/commands/command.h>
-#include <poundfe/commands/command_table.h>
-#include <poundfe/commands/dispatch.h>
 
 #include "opensees_tcl.h"
 
@@ -339,8 +338,7 @@ namespace poundfe
     opensees(const CommandRun &run)
     {
       using namespace opensees_tcl;
-      if (run.arguments.empty())
-        throw CommandLineError("'opensees' needs a Tcl script", usage_text());
+      Assert(!run.arguments.empty(), dealii::ExcMessage("the dispatcher refuses no script"));
       const std::string &script = run.arguments[0];
       if (!std::ifstream(script))
         throw InputError(script, 0, "", "cannot be read");

@@ -10,9 +10,8 @@
 // contracts where the tangent's Newton cycles, at a fibre law's kink, as
 // Concrete01 without tension about zero strain, a beam cracking and
 // closing at once near zero deformation.
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/elements/beam_column.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <Eigen/LU>
 

@@ -1,8 +1,7 @@
 // A two-deformation element around the bidirectional Bouc-Wen law
 // (include/poundfe/elements/biaxial_element.h; doc/theory.md §2).
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/elements/biaxial_element.h>
-
-#include <deal.II/base/exceptions.h>
 
 namespace poundfe
 {

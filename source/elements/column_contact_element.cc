@@ -1,8 +1,7 @@
 // The floor-to-column contact element of
 // include/poundfe/elements/column_contact_element.h.
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/elements/column_contact_element.h>
-
-#include <deal.II/base/exceptions.h>
 
 namespace poundfe
 {

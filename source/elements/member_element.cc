@@ -1,8 +1,7 @@
 // A beam-column as a NonlinearElement, and a member's mass (see the header).
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/elements/frame_element.h>
 #include <poundfe/elements/member_element.h>
-
-#include <deal.II/base/exceptions.h>
 
 namespace poundfe
 {

@@ -1,8 +1,7 @@
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/elements/uniaxial_element.h>
-
-#include <deal.II/base/exceptions.h>
 
 namespace poundfe
 {

@@ -1,9 +1,8 @@
 // Bidirectional Bouc-Wen hysteresis (Park, Wen & Ang 1986): the equations,
 // their integration and the consistent tangent are stated in
 // include/poundfe/laws/bidirectional_bouc_wen.h (doc/theory.md §2).
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/laws/bidirectional_bouc_wen.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <Eigen/LU>
 

@@ -1,10 +1,9 @@
 // A bumper in front of a gap's contact law; equations and sources in
 // include/poundfe/laws/bumper.h and doc/theory.md §4.9.
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/base/numbers.h>
 #include <poundfe/laws/bumper.h>
 #include <poundfe/laws/contact_law.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <algorithm>
 #include <cmath>

@@ -722,7 +722,7 @@ namespace poundfe
       if (!Eigen::Map<const Vector>(tangent_matrix.valuePtr(), tangent_matrix.nonZeros()).allFinite())
         throw NumericalError(not_finite);
       if (!solver)
-        solver = create_linear_solver(opts.linear_solver);
+        solver = create_umfpack_solver(); // what every `system` of a script solves with
       if (!analysed)
         solver->analyze(tangent_matrix);
       analysed = true;

@@ -14,9 +14,8 @@
 // may raise the magnitude). With -time each value is preceded by the time it
 // was reached. The rows are written once, when the recorder finishes; none
 // if it never recorded.
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/opensees/opensees_recorder.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <cmath>
 

@@ -1,8 +1,7 @@
 // The section of uncoupled resultants (see the header): each resultant its
 // own uniaxial law of its own deformation, elastic where none is given.
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/sections/aggregator_section.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <algorithm>
 

@@ -1,7 +1,6 @@
 // The elastic cross-section: s = diag(EA, EIz[, EIy, GJ]) e (see the header).
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/sections/elastic_section.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <cmath>
 

@@ -2,12 +2,12 @@
 // with a_i = (1, -y_i[, z_i]) (see the header; Spacone, Filippou & Taucer
 // 1996; OpenSees's FiberSection2d/3d).
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/lean_assert.h>
 #include <poundfe/sections/fibre_section.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace poundfe
 {
@@ -161,7 +161,8 @@ namespace poundfe
     , y_ref(y_ref)
     , z_ref(z_ref)
   {
-    AssertThrow(n == 2 || n == 4, dealii::ExcMessage("a fibre section has 2 or 4 resultants"));
+    if (n != 2 && n != 4)
+      throw std::logic_error("a fibre section has 2 or 4 resultants");
     if (n == 4 && !(std::isfinite(torsional_rigidity) && torsional_rigidity > 0))
       throw InputError("", 0, "GJ", "a section in space needs a positive torsional rigidity");
     // one law per fibre: each fibre keeps its own history

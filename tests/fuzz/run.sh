@@ -132,7 +132,7 @@ done
 # the program module's link line (libraries of deal.II and its dependencies)
 libraries=$(sed -e 's/^[^ ]* //' -e 's#CMakeFiles/poundfe_program.dir/source/program.cc.o##' \
                 -e 's#-o poundfe-program.so##' -e 's#\(^\| \)-shared\( \|$\)# #' \
-                -e "s#libpoundfe_core.a#$build/libpoundfe_core.a#" \
+                -e "s#\(^\| \)\(libpoundfe_[a-z]*\.a\)#\1$build/\2#g" \
                 -e 's#CMakeFiles/poundfe_program.dir/revision.cc.o##' \
                 "$build/CMakeFiles/poundfe_program.dir/link.txt")
 for target in $targets; do

@@ -13,6 +13,7 @@
 #include <poundfe/commands/command.h>
 #include <poundfe/input/input_parameters.h>
 
+#include <exception>
 #include <functional>
 #include <iosfwd>
 #include <stdexcept>
@@ -89,6 +90,20 @@ namespace poundfe
   /// A stream that drops what it is given: the messages and report of a
   /// rank that does not speak.
   std::ostream &silent_stream();
+
+  /// What a command line says of what a command threw, and its exit status.
+  struct CommandFailure
+  {
+    std::string  message; // "poundfe: error: ...\n" (CommandLineError: and its trailer)
+    int          status = 1; // 1 a refusal or bad input, 2 a numerical failure
+    /// Not one of poundfe's refusals (which every rank makes alike): any
+    /// rank may have thrown it alone, so that rank says it.
+    bool         any_rank = false;
+  };
+
+  /// The failure that `thrown` (dispatch_command's, or a command's) is
+  /// (commands/command_failure.cc).
+  CommandFailure command_failure(const std::exception_ptr &thrown);
 } // namespace poundfe
 
 #endif

@@ -123,7 +123,6 @@ namespace poundfe
       /// Counts the script's `integrator` commands: a new one starts a
       /// fresh integrator (its increment, its reference load).
       unsigned int    integrator_serial = 0;
-      std::string     linear_solver = "umfpack";
       /// constraints Transformation: an sp command imposes its value;
       /// Plain (OpenSees's PlainHandler) holds the DOF at zero, with a warning.
       bool            transformation = false;
