@@ -27,8 +27,11 @@ if [ -n "$python" ]; then
 fi
 for file in "${expected[@]}"; do [ -f "$prefix/$file" ] || fail "not installed: $file"; done
 # the program module bin/poundfe loads, in LIBDIR/poundfe (CMakeLists.txt)
-[ -n "$(find "$prefix/lib" -path '*/poundfe/poundfe-program.so' 2> /dev/null)" ] ||
-  fail "no lib/.../poundfe/poundfe-program.so"
+# and the OpenSees interpreter's module beside it
+for module in poundfe-program.so poundfe-opensees.so; do
+  [ -n "$(find "$prefix/lib" -path "*/poundfe/$module" 2> /dev/null)" ] ||
+    fail "no lib/.../poundfe/$module"
+done
 # and nothing else at its top: no test, bench or build file
 top=$(cd "$prefix" && ls | tr '\n' ' ')
 [ "$top" = "bin lib share " ] || [ "$top" = "bin share " ] || fail "unexpected top of the tree: $top"
@@ -55,7 +58,12 @@ grep -q '"status": "completed' installed/summary.json || fail "installed run not
 for file in drift.csv impacts.csv contact_force.csv energy.csv; do
   cmp -s installed/$file built/$file || fail "$file differs between the installed and the built program"
 done
-echo "ok   installed poundfe: default example identical to build/poundfe's"
+# an OpenSees script, through the installed interpreter's module
+mkdir opensees
+"$installed" opensees "$source/tests/opensees/sdof_linear.tcl" opensees > opensees.log 2>&1 ||
+  fail "installed opensees exited $?: $(cat opensees.log)"
+[ -s opensees/sdof_disp.out ] || fail "installed opensees wrote no sdof_disp.out: $(ls opensees)"
+echo "ok   installed poundfe: default example identical to build/poundfe's; an OpenSees script runs"
 
 # 3. The Python tests against the installed module, the build tree off the path.
 if [ -n "$python" ]; then
