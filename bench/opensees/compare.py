@@ -181,6 +181,10 @@ CASES = {
     "zero_length_late": ("zero_length_late.tcl", [], 1e-9),
     # the same with a truss added (Truss's -useInitialDisp, OpenSees's default)
     "truss_late": ("zero_length_late.tcl", ["truss"], 1e-9),
+    # ArcLength past the limit point of a shallow arch of corotational
+    # beams, down its unstable branch to the second limit point and, as
+    # OpenSees's sign of the last step's load increment takes it, back
+    "arc_length_arch": ("arc_length_arch.tcl", [], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -221,6 +221,19 @@ namespace poundfe
         s.has_static_integrator = true;
       }
 
+      /// ArcLength s alpha (OpenSees 3.8's interpreter takes both).
+      void
+      arc_length(Session &s, Words &w)
+      {
+        opensees::AnalysisOptions &o = s.options;
+        o.arc_s                      = w.real("the arc length");
+        o.arc_alpha                  = w.real("alpha");
+        if (!(o.arc_s > 0))
+          throw ScriptError("ArcLength needs an arc length > 0");
+        o.displacement_control  = false;
+        s.has_static_integrator = true;
+      }
+
       /// HHT alpha <gamma beta> (OpenSees's alpha: 1 is Newmark's average
       /// acceleration, 2/3 the most dissipative; by default gamma = 3/2 -
       /// alpha, beta = (2 - alpha)^2 / 4).
@@ -247,6 +260,7 @@ namespace poundfe
       integrator(Session &s, Words &w)
       {
         const std::string type = w.word("the integrator's type");
+        s.options.arc_length   = type == "ArcLength";
         if (type == "Newmark")
           {
             s.options.gamma = w.real("gamma");
@@ -274,6 +288,8 @@ namespace poundfe
           }
         else if (type == "DisplacementControl")
           displacement_control(s, w);
+        else if (type == "ArcLength")
+          arc_length(s, w);
         else
           unsupported("integrator " + type);
         check_done(w);

@@ -1037,6 +1037,10 @@ namespace poundfe
         throw ScriptError(std::string("algorithm ") +
                           (searching ? "NewtonLineSearch" : krylov ? "KrylovNewton" : "BFGS") +
                           " with integrator DisplacementControl is not supported");
+      if ((searching || krylov || bfgs) && opts.arc_length && !opts.transient)
+        throw ScriptError(std::string("algorithm ") +
+                          (searching ? "NewtonLineSearch" : krylov ? "KrylovNewton" : "BFGS") +
+                          " with integrator ArcLength is not supported");
       if (opts.algorithm == Algorithm::bfgs)
         return iterate_bfgs(why);
       const bool every_iteration = opts.algorithm == Algorithm::newton || searching;
@@ -1053,6 +1057,8 @@ namespace poundfe
             assemble_tangent(k_k, k_c, c_m);
           solve(r, dx);
           if (opts.displacement_control && !opts.transient && !correct_displacement(dx, why))
+            return -1;
+          if (opts.arc_length && !opts.transient && !correct_arc_length(dx, why))
             return -1;
           const double s0 = -dx.dot(r);
           ++last_iterations;
@@ -1100,6 +1106,8 @@ namespace poundfe
         }
       else if (opts.displacement_control)
         return displacement_step(why);
+      else if (opts.arc_length)
+        return arc_length_step(why);
       else
         {
           lambda_step *= opts.lambda_iterations / last_iterations;

@@ -6,6 +6,7 @@
 #     cantilever, a layered fibre section's inertia, the responses (eleForce,
 #     eleResponse), DisplacementControl reaching its displacements exactly,
 #     the plastic moment of a yielded section, a corotational quarter circle,
+#     ArcLength's load factors in equilibrium with the reactions past the limit point,
 #     two cantilevers tied by rigidLink bar;
 #  2. the recorder Element file layout against eleResponse;
 #  3. side by side with OpenSees 3.8: the scripts of tests/opensees/fibre_*.tcl
@@ -146,6 +147,10 @@ printf 'node 3 1.0 3.0\nrigidLink beam 2 3\n' | bad rigid-link-beam \
   '7: rigidLink beam: poundfe does not support it'
 echo "integrator HHT 1.5" | bad hht-alpha '6: integrator: HHT needs 0 < alpha <= 1'
 echo "integrator HHT 0.9 inf 0.25" | bad hht-infinite "6: integrator: expected a finite number for gamma, got 'inf'"
+echo "integrator ArcLength 0.01" | bad arc-length-alpha '6: integrator: missing alpha'
+echo "integrator ArcLength 0.0 1.0" | bad arc-length-zero '6: integrator: ArcLength needs an arc length > 0'
+printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm BFGS\nintegrator ArcLength 0.001 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad bfgs-arc-length '13: analyze: algorithm BFGS with integrator ArcLength is not supported'
 echo "algorithm NewtonLineSearch -maxIter -5" | bad line-search-iterations \
   '6: algorithm: NewtonLineSearch needs -maxIter >= 1'
 echo "algorithm NewtonLineSearch -minEta 10 -maxEta 0.1" | bad line-search-eta \
@@ -188,6 +193,18 @@ grep -q "homogeneous constraint assumed" "$work/sp.out" || fail "sp Plain: no wa
   "$work/vs" > "$work/vs.log" 2>&1 || { cat "$work/vs.log"; fail "against OpenSees 3.8's numbers"; }
 files=$(find "$corpus/reference" -type f | wc -l)
 grep -c '^ok ' "$work/vs.log" | grep -qx "$files" || { cat "$work/vs.log"; fail "not every file compared"; }
+# ArcLength's load factor (the recorder's time) is the load the supports
+# carry: each takes half the apex load of the symmetric arch (1e-10 of the
+# peak: the residual left by NormDispIncr 1e-12), past its limit point
+"$python" - "$work/vs/arc_length_arch/support.out" <<'PY' || fail "ArcLength: load factor and reactions"
+import sys
+import numpy as np
+support = np.loadtxt(sys.argv[1])
+lam = support[:, 0]
+worst = abs(2 * support[:, 2] - lam).max() / abs(lam).max()
+print(f"ArcLength: 2 R_y - lambda {worst:.1e} of the peak, lambda from {lam.max():.4g} to {lam.min():.4g}")
+sys.exit(0 if worst <= 1e-10 and lam.max() > 80 and lam.min() < -50 else 1)
+PY
 # the check can fail: one of OpenSees's kept values (a file's largest, past
 # the time column) moved by ten times its case's tolerance of its column's
 # peak is reported by name: the pounding pair's displacement with Viscous

@@ -120,6 +120,9 @@ namespace poundfe
       int             control_node = 0;
       unsigned int    control_dof = 0;
       double          d_u = 0, d_u_min = 0, d_u_max = 0, d_u_iterations = 1;
+      /// ArcLength s alpha (ArcLength.cpp) in place of LoadControl.
+      bool            arc_length = false;
+      double          arc_s = 0, arc_alpha = 1;
       /// Counts the script's `integrator` commands: a new one starts a
       /// fresh integrator (its increment, its reference load).
       unsigned int    integrator_serial = 0;
@@ -198,6 +201,10 @@ namespace poundfe
       bool   displacement_step(std::string &why);
       /// DisplacementControl's corrector of a Newton iterate dx (update).
       bool   correct_displacement(Vector &dx, std::string &why);
+      /// ArcLength's predictor (newStep) and corrector (update), in
+      /// opensees_arc_length.cc.
+      bool   arc_length_step(std::string &why);
+      bool   correct_arc_length(Vector &dx, std::string &why);
       /// phat = R at the committed state and the factor lambda + 1.
       void   reference_load();
       int    iterate(std::string &why);
@@ -307,6 +314,10 @@ namespace poundfe
       double                        d_u_step = 0;       // its current increment
       int                           control_equation = -1;
       bool                          fresh_integrator = true;
+      /// ArcLength's step so far: Delta U and Delta lambda (its sign the
+      /// next predictor's).
+      Vector                        arc_u_step;
+      double                        arc_lambda_step = 0;
     };
   } // namespace opensees
 } // namespace poundfe
