@@ -185,6 +185,13 @@ CASES = {
     # beams, down its unstable branch to the second limit point and, as
     # OpenSees's sign of the last step's load increment takes it, back
     "arc_length_arch": ("arc_length_arch.tcl", [], 1e-9),
+    # a 3D storey with rigidDiaphragm, equalDOF and rigidLink bar under
+    # constraints Lagrange (poundfe: Transformation's displacements, which
+    # meet the constraints as exactly; measured 9e-15) and Penalty 1e13 1e13
+    # (measured 2.5e-10: the penalty's condition number times round-off; its
+    # own error, Penalty against Lagrange, is 3.6e-4)
+    "handlers_lagrange": ("constraint_handlers.tcl", ["Lagrange"], 1e-10),
+    "handlers_penalty": ("constraint_handlers.tcl", ["Penalty", "1.0e13", "1.0e13"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

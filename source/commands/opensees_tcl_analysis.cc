@@ -221,6 +221,36 @@ namespace poundfe
         s.has_static_integrator = true;
       }
 
+      /// constraints Plain | Transformation | Penalty alphaSP alphaMP |
+      /// Lagrange <alphaSP alphaMP>. Lagrange's multipliers meet linear
+      /// constraints exactly, so its displacements are Transformation's,
+      /// which gives them (its factors scale the multipliers alone).
+      void
+      constraint_handler(Session &s, Words &w)
+      {
+        opensees::AnalysisOptions &o    = s.options;
+        const std::string          type = w.word("the handler's type");
+        if (type != "Plain" && type != "Transformation" && type != "Penalty" &&
+            type != "Lagrange")
+          unsupported("constraints " + type);
+        o.transformation = type == "Transformation" || type == "Lagrange";
+        o.penalty        = type == "Penalty";
+        if (o.penalty)
+          {
+            o.alpha_sp = w.real("alphaSP");
+            o.alpha_mp = w.real("alphaMP");
+            if (!(o.alpha_sp > 0 && o.alpha_mp > 0))
+              throw ScriptError("Penalty needs alphaSP > 0 and alphaMP > 0");
+          }
+        else if (type == "Lagrange" && !w.done())
+          {
+            w.real("alphaSP");
+            w.real("alphaMP");
+          }
+        check_done(w);
+        reconfigure(s);
+      }
+
       /// ArcLength s alpha (OpenSees 3.8's interpreter takes both).
       void
       arc_length(Session &s, Words &w)
@@ -544,11 +574,7 @@ namespace poundfe
     void
     define_analysis_commands(Tcl_Interp *interp, Session &session)
     {
-      define(interp, session, "constraints", [](Session &s, Words &w) {
-        s.options.transformation = w.peek() == "Transformation";
-        accept_names(w, {"Plain", "Transformation"});
-        reconfigure(s);
-      });
+      define(interp, session, "constraints", constraint_handler);
       define(interp, session, "numberer", [](Session &, Words &w) {
         accept_names(w, {"Plain", "RCM", "AMD"});
       });

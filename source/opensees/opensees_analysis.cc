@@ -243,31 +243,37 @@ namespace poundfe
         lambda_step = 0; // a new LoadControl integrator
       if (options.integrator_serial != opts.integrator_serial)
         fresh_integrator = true;
+      if (options.penalty != opts.penalty) // the equations differ
+        numbered = false;
       opts = options;
     }
 
     void
     Analysis::number()
     {
+      const bool eliminating = !opts.penalty; // Penalty keeps every DOF an equation
       std::map<std::pair<int, unsigned int>, std::pair<int, unsigned int>> retained_by;
       for (const EqualDof &e : domain.equal_dofs)
         for (const unsigned int k : e.dofs)
-          retained_by[{e.constrained, k}] = {e.retained, k};
+          if (eliminating)
+            retained_by[{e.constrained, k}] = {e.retained, k};
       std::set<std::pair<int, unsigned int>> in_diaphragm; // numbered by number_diaphragms
       for (const Diaphragm &d : domain.diaphragms)
         for (const int c : d.constrained)
           for (const unsigned int k :
                {(d.perpendicular + 1) % 3, (d.perpendicular + 2) % 3, 3 + d.perpendicular})
-            in_diaphragm.insert({c, k});
+            if (eliminating)
+              in_diaphragm.insert({c, k});
       imposed_dofs.clear();
       for (const auto &[dof, value] : domain.imposed_displacements(domain.time))
-        imposed_dofs.push_back(dof);
+        if (eliminating)
+          imposed_dofs.push_back(dof);
       n_equations = 0;
       for (auto &[tag, node] : domain.nodes)
         {
           node.equation.assign(node.fixed.size(), -1);
           for (unsigned int k = 0; k < node.fixed.size(); ++k)
-            if (!node.fixed[k] && retained_by.count({tag, k}) == 0 &&
+            if ((!node.fixed[k] || !eliminating) && retained_by.count({tag, k}) == 0 &&
                 in_diaphragm.count({tag, k}) == 0 &&
                 std::find(imposed_dofs.begin(), imposed_dofs.end(), std::make_pair(tag, k)) ==
                   imposed_dofs.end())
@@ -285,7 +291,11 @@ namespace poundfe
             r = retained_by.at(r);
           domain.node(dof.first).equation[dof.second] = domain.node(r.first).equation[r.second];
         }
-      number_diaphragms();
+      penalty_rows.clear();
+      if (eliminating)
+        number_diaphragms();
+      else
+        number_penalty();
       number_inertia();
       number_mass_damping();
       beam_loads_taken = false;
@@ -586,6 +596,7 @@ namespace poundfe
         links->subtract_forces(r);
       else
         subtract_element_forces(r, v);
+      add_penalty_forces(r);
       if (!opts.transient)
         return r;
       const double alpha_m = uniform_mass_damping ? domain.rayleigh.alpha_m : 0.0;
@@ -691,6 +702,7 @@ namespace poundfe
         {
           dense_tangent.setZero(n_equations, n_equations);
           add_element_tangents(c_k, c_c);
+          add_penalty_tangent();
           dense_tangent.diagonal() += diagonal * mass_of_equation;
           if (!uniform_mass_damping)
             dense_tangent.diagonal() += c_c * mass_damping_of_equation;
@@ -712,6 +724,7 @@ namespace poundfe
         }
       tangent_entries.clear();
       add_element_tangents(c_k, c_c);
+      add_penalty_tangent();
       for (unsigned int i = 0; i < n_equations; ++i) // the diagonal always in the pattern
         tangent_entries.emplace_back(i, i,
                                      diagonal * mass_of_equation[i] +
@@ -1217,7 +1230,9 @@ namespace poundfe
       if (renumber)
         number();
       list_elements(renumber);
-      if (opts.transient && !imposed_dofs.empty())
+      const bool penalty_imposed = std::any_of(penalty_rows.begin(), penalty_rows.end(),
+                                               [](const PenaltyRow &p) { return p.is_imposed; });
+      if (opts.transient && (!imposed_dofs.empty() || penalty_imposed))
         throw ScriptError("sp in a transient analysis is not supported");
       if (!opts.transformation && !imposed_dofs.empty())
         warn("PlainHandler::handle() - non-homogeneous sp constraint: homogeneous constraint "

@@ -7,6 +7,7 @@
 #     eleResponse), DisplacementControl reaching its displacements exactly,
 #     the plastic moment of a yielded section, a corotational quarter circle,
 #     ArcLength's load factors in equilibrium with the reactions past the limit point,
+#     an sp imposed by constraints Lagrange and Penalty (OpenSees 3.8's numbers),
 #     two cantilevers tied by rigidLink bar;
 #  2. the recorder Element file layout against eleResponse;
 #  3. side by side with OpenSees 3.8: the scripts of tests/opensees/fibre_*.tcl
@@ -147,6 +148,10 @@ printf 'node 3 1.0 3.0\nrigidLink beam 2 3\n' | bad rigid-link-beam \
   '7: rigidLink beam: poundfe does not support it'
 echo "integrator HHT 1.5" | bad hht-alpha '6: integrator: HHT needs 0 < alpha <= 1'
 echo "integrator HHT 0.9 inf 0.25" | bad hht-infinite "6: integrator: expected a finite number for gamma, got 'inf'"
+echo "constraints Penalty 1.0e12" | bad penalty-alpha '6: constraints: missing alphaMP'
+echo "constraints Penalty 0.0 1.0e12" | bad penalty-zero \
+  '6: constraints: Penalty needs alphaSP > 0 and alphaMP > 0'
+echo "constraints Auto" | bad handler-auto '6: constraints Auto: poundfe does not support it'
 echo "integrator ArcLength 0.01" | bad arc-length-alpha '6: integrator: missing alpha'
 echo "integrator ArcLength 0.0 1.0" | bad arc-length-zero '6: integrator: ArcLength needs an arc length > 0'
 printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm BFGS\nintegrator ArcLength 0.001 1.0\nanalysis Static\nanalyze 1\n' \
@@ -187,6 +192,10 @@ sp_check() { # CONSTRAINTS EXPECTED-LINE
 sp_check Transformation "u 0.002 -0.001 r -4.44444444444"
 sp_check Plain "u 0 0 r 0"
 grep -q "homogeneous constraint assumed" "$work/sp.out" || fail "sp Plain: no warning"
+# Lagrange imposes it exactly, Penalty 1e12 to its error: OpenSees 3.8's
+# lines, to its 12 digits
+sp_check Lagrange "u 0.002 -0.001 r -4.44444444444"
+sp_check "Penalty 1.0e12 1.0e12" "u 0.00199999999556 -0.000999999988889 r -4.4444443358"
 
 # 3. side by side with OpenSees 3.8: its committed numbers (every 10th row)
 "$python" "$here/../../bench/opensees/compare.py" "$poundfe" --check "$corpus/reference" \

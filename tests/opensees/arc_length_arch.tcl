@@ -2,11 +2,12 @@
 # corotational elastic beams pinned at the supports) under a load at its
 # apex, followed past its limit point, down the unstable branch and up again
 # by ArcLength s alpha. The recorder's time is the load factor lambda.
-# argv: the output directory <s alpha <steps>>.
+# argv: the output directory <s alpha <steps <the constraints handler's words>>>.
 set out [lindex $argv 0]
 set s [expr {[llength $argv] > 1 ? [lindex $argv 1] : 0.01}]
 set alpha [expr {[llength $argv] > 2 ? [lindex $argv 2] : 0.0005}]
 set steps [expr {[llength $argv] > 3 ? [lindex $argv 3] : 45}]
+set handler [expr {[llength $argv] > 4 ? [lrange $argv 4 end] : "Plain"}]
 wipe
 model basic -ndm 2 -ndf 3
 node 1 0.0 0.0
@@ -23,7 +24,7 @@ pattern Plain 1 1 {
 }
 recorder Node -file $out/apex.out -time -precision 16 -node 2 -dof 2 disp
 recorder Node -file $out/support.out -time -precision 16 -node 1 -dof 1 2 reaction
-constraints Plain
+constraints {*}$handler
 numberer Plain
 system BandGeneral
 test NormDispIncr 1.0e-12 30

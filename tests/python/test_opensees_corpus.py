@@ -5,7 +5,8 @@ script) write the Tcl runs' recorder files byte for byte: a linear portal
 frame (gravity, eigen, Rayleigh damping, a record), a pounding pair through
 a zero-length gap (ElasticPPGap, ImpactMaterial), a fibre frame with gravity
 then a record (Fiber sections and a Plain pattern filled by the commands
-after them). The same command procedures run both: a difference would be
+after them), a shallow arch followed past its limit point by ArcLength
+under constraints Plain and Penalty. The same command procedures run both: a difference would be
 in how the values reach them."""
 
 import os
@@ -18,6 +19,7 @@ from common import POUNDFE, ROOT, TestCase
 CORPUS = os.path.join(ROOT, "tests", "opensees")
 sys.path.insert(0, os.path.join(CORPUS, "python"))
 
+import arc_length_arch  # noqa: E402
 import fibre_frame_record  # noqa: E402
 import portal_frame  # noqa: E402
 import pounding_sticks  # noqa: E402
@@ -66,3 +68,15 @@ class CorpusTest(TestCase):
             ["frame_disp.out", "frame_base.out", "frame_section.out", "frame_beam.out"])
         self.assertEqual(status, 0)
         self.assertIn(f"frame: status 0 roof {roof!r} ", stdout)
+
+    def test_arc_length_arch(self):
+        for handler in ([], ["Penalty", "1.0e12", "1.0e12"]):
+            with self.subTest(handler=handler):
+                arguments = ["0.01", "0.0005", "45", *handler]
+                stdout, (status, lam) = self.run_both(
+                    "arc_length_arch.tcl", arc_length_arch.run, ["apex.out", "support.out"],
+                    *arguments)
+                self.assertEqual(status, 0)
+                self.assertIn(f"arch: analyze 0 lambda {lam:f} ", stdout)
+                for name in os.listdir(self.tmp):
+                    subprocess.run(["rm", "-rf", os.path.join(self.tmp, name)], check=True)

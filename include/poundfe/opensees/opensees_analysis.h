@@ -130,6 +130,12 @@ namespace poundfe
       /// constraints Transformation: an sp command imposes its value;
       /// Plain (OpenSees's PlainHandler) holds the DOF at zero, with a warning.
       bool            transformation = false;
+      /// constraints Penalty alphaSP alphaMP (PenaltyConstraintHandler):
+      /// every DOF an equation, each fix and sp a spring alphaSP to its
+      /// value, each equalDOF, rigidLink bar and rigidDiaphragm row c . u = 0
+      /// the stiffness alphaMP c c^T (opensees_penalty.cc).
+      bool            penalty = false;
+      double          alpha_sp = 0, alpha_mp = 0;
     };
 
     /// What the analyses of a script have done (poundfe::report).
@@ -271,6 +277,21 @@ namespace poundfe
       std::vector<std::vector<std::pair<int, double>>> combinations;
       /// The combinations of the domain's diaphragms (in number()).
       void number_diaphragms();
+      /// Penalty's rows (in number(), every DOF an equation): a fix, an sp
+      /// (its value by its node and DOF) or a row of a multi-point constraint.
+      struct PenaltyRow
+      {
+        std::vector<std::pair<int, double>> terms; // equation, coefficient
+        double                              alpha = 0;
+        std::pair<int, unsigned int>        imposed{0, 0};
+        bool                                is_imposed = false;
+      };
+      std::vector<PenaltyRow> penalty_rows;
+      void number_penalty();
+      /// r += alpha c (g(t) - c . u) for each row, u at the elements' point.
+      void add_penalty_forces(Vector &r);
+      /// alpha c c^T into K_eff (OpenSees's Penalty FE: unscaled by c_k).
+      void add_penalty_tangent();
       /// mass_of_equation, inertia_terms and second_ground_terms (in number()).
       void number_inertia();
       /// mass_damping_of_equation and uniform_mass_damping (in number()).
