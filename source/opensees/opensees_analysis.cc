@@ -1169,21 +1169,35 @@ namespace poundfe
         }
       d_u_step *= opts.d_u_iterations / last_iterations;
       d_u_step = std::min(std::max(d_u_step, opts.d_u_min), opts.d_u_max);
-      c_c = c_m = k_c = 0;
-      k_k             = 1;
-      if (!set_trial(why))
-        return false;
-      assemble_tangent(1, 0, 0);
       Vector dx_hat(n_equations);
-      solve(phat, dx_hat);
+      if (!reference_displacement(dx_hat, why))
+        return false;
       if (dx_hat[control_equation] == 0)
         {
           why = "DisplacementControl: zero reference displacement at the control DOF";
           return false;
         }
       const double d_lambda = d_u_step / dx_hat[control_equation];
-      trial_time            = domain.time + d_lambda;
-      U += d_lambda * dx_hat;
+      return predict_and_iterate(d_lambda, d_lambda * dx_hat, why);
+    }
+
+    bool
+    Analysis::reference_displacement(Vector &dx_hat, std::string &why)
+    {
+      c_c = c_m = k_c = 0;
+      k_k             = 1;
+      if (!set_trial(why))
+        return false;
+      assemble_tangent(1, 0, 0);
+      solve(phat, dx_hat);
+      return true;
+    }
+
+    bool
+    Analysis::predict_and_iterate(const double d_lambda, const Vector &dx, std::string &why)
+    {
+      trial_time = domain.time + d_lambda;
+      U += dx;
       last_iterations = 0;
       if (!set_trial(why))
         return false;

@@ -36,24 +36,15 @@ namespace poundfe
           fresh_integrator = false;
         }
       const double sign = arc_lambda_step < 0 ? -1 : 1;
-      c_c = c_m = k_c = 0;
-      k_k             = 1;
-      if (!set_trial(why))
+      Vector       dx_hat(n_equations);
+      if (!reference_displacement(dx_hat, why))
         return false;
-      assemble_tangent(1, 0, 0);
-      Vector dx_hat(n_equations);
-      solve(phat, dx_hat);
       const double d_lambda =
         sign * std::sqrt(opts.arc_s * opts.arc_s /
                          (dx_hat.squaredNorm() + opts.arc_alpha * opts.arc_alpha));
       arc_lambda_step = d_lambda;
       arc_u_step      = d_lambda * dx_hat;
-      trial_time      = domain.time + d_lambda;
-      U += arc_u_step;
-      last_iterations = 0;
-      if (!set_trial(why))
-        return false;
-      return iterate(why) >= 0;
+      return predict_and_iterate(d_lambda, arc_u_step, why);
     }
 
     bool

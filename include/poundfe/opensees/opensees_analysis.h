@@ -207,6 +207,10 @@ namespace poundfe
       bool   displacement_step(std::string &why);
       /// DisplacementControl's corrector of a Newton iterate dx (update).
       bool   correct_displacement(Vector &dx, std::string &why);
+      /// A static predictor's dUhat = K^-1 phat, K at the committed state.
+      bool   reference_displacement(Vector &dx_hat, std::string &why);
+      /// The predictor's load increment and displacements, then the iterations.
+      bool   predict_and_iterate(double d_lambda, const Vector &dx, std::string &why);
       /// ArcLength's predictor (newStep) and corrector (update), in
       /// opensees_arc_length.cc.
       bool   arc_length_step(std::string &why);
