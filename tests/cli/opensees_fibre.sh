@@ -17,8 +17,9 @@
 #     the frame with committed-stiffness damping, HHT, NewtonLineSearch
 #     (whose searches' etas are compared too), KrylovNewton, BFGS, element
 #     loads and a beam's end displacements imposed by sp; ViscousDamper,
-#     Series, twoNodeLink and the 3D beam-columns); a kept value moved by
-#     ten times its case's tolerance must fail that check (four cases);
+#     Series, twoNodeLink and the 3D beam-columns; ArcLength, constraints
+#     Lagrange and Penalty); a kept value moved by ten times its case's
+#     tolerance must fail that check (five cases);
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration, a line search other than
 #     InitialInterpolated, HHT's alpha outside (0, 1] or an infinite number,
@@ -240,6 +241,7 @@ perturbed_fails pounding_Viscous pounding_Viscous.out 1e-8
 perturbed_fails frame_3d_elastic frame3d_column.out 1e-8
 perturbed_fails links_3d links_3d_gap.out 1e-5
 perturbed_fails frame_3d_fibre frame3d_section.out 1e-5
+perturbed_fails handlers_penalty handler_disp.out 1e-8
 
 # 5. OpenSees's script of a 3D RC frame (bench/opensees/fibre_frame_3d/frame.tcl:
 #    rigidDiaphragm, forceBeamColumn on 3D fibre sections, PDelta with vecxz) against

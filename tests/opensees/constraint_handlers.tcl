@@ -5,10 +5,17 @@
 # column: gravity by LoadControl, then the synthetic record along X and 0.6
 # of it along Y with mass-proportional Rayleigh damping. The constraints are
 # imposed by the handler of the script's argv: Transformation,
-# Lagrange <alphaSP alphaMP> or Penalty alphaSP alphaMP.
-# argv: the output directory <handler words>.
+# Lagrange <alphaSP alphaMP> or Penalty alphaSP alphaMP; with -cornerMass m
+# each corner carries m in the floor's plane, which only Penalty takes.
+# argv: the output directory <-cornerMass m> <handler words>.
 set out [lindex $argv 0]
-set handler [expr {[llength $argv] > 1 ? [lrange $argv 1 end] : "Transformation"}]
+set words [lrange $argv 1 end]
+set corner_mass 0.0
+if {[lindex $words 0] eq "-cornerMass"} {
+    set corner_mass [lindex $words 1]
+    set words [lrange $words 2 end]
+}
+set handler [expr {[llength $words] > 0 ? $words : "Transformation"}]
 source [file join [file dirname [info script]] record.tcl]
 wipe
 model basic -ndm 3 -ndf 6
@@ -21,7 +28,7 @@ set n 1
 foreach {x y} [list 0.0 0.0 $b 0.0 $b $b 0.0 $b] {
     node $n $x $y 0.0
     fix $n 1 1 1 1 1 1
-    node [expr {$n + 10}] $x $y $h
+    node [expr {$n + 10}] $x $y $h -mass $corner_mass $corner_mass 0.0 0.0 0.0 0.0
     incr n
 }
 node 15 [expr {$b / 2}] [expr {$b / 2}] $h -mass [expr {4 * $m}] [expr {4 * $m}] 0.0 0.0 0.0 \
