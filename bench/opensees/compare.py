@@ -181,6 +181,18 @@ CASES = {
     "zero_length_late": ("zero_length_late.tcl", [], 1e-9),
     # the same with a truss added (Truss's -useInitialDisp, OpenSees's default)
     "truss_late": ("zero_length_late.tcl", ["truss"], 1e-9),
+    # reset halfway through a record (a yielded brace, time 0, an
+    # EnvelopeNode's extremes), reactions -dynamic and -rayleigh, and the
+    # force of members with mass under a record (with their ground-motion
+    # load: twice for a 2D elasticBeamColumn, once for a truss -rho)
+    "domain_commands": ("domain_commands.tcl", [], 1e-9),
+    # RelativeNormDispIncr under NewtonLineSearch, whose own copy of the
+    # test, started afresh at each iteration, measures a ratio of 1 and so
+    # always searches, at the last iteration on a residual of round-off
+    # (whose etas differ between the programs: no -pFlag 0 here)
+    "pounding_relative_line_search": ("pounding_sticks.tcl",
+                                      ["ImpactMaterial", "NewtonLineSearch -tol 0.01",
+                                       "RelativeNormDispIncr"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -145,6 +145,8 @@ namespace poundfe
     void define_analysis_commands(Tcl_Interp *interp, Session &session);
     /// region (opensees_tcl_regions.cc).
     void define_region_commands(Tcl_Interp *interp, Session &session);
+    /// reset (opensees_tcl_domain.cc).
+    void define_domain_commands(Tcl_Interp *interp, Session &session);
   } // namespace opensees_tcl
 } // namespace poundfe
 

@@ -353,10 +353,6 @@ namespace poundfe
         check_done(w);
         if (steps < 0)
           throw ScriptError("the number of steps must be >= 0");
-        const opensees::AnalysisOptions &o = s.analysis->options();
-        if (o.test.kind == opensees::ConvergenceTest::Kind::relative_norm_disp_incr &&
-            o.algorithm == opensees::AnalysisOptions::Algorithm::newton_line_search)
-          unsupported("test RelativeNormDispIncr with algorithm NewtonLineSearch");
         if (s.analysis->options().transient)
           s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper)
         const int result = s.analysis->analyze(
@@ -428,11 +424,28 @@ namespace poundfe
                     "DOF");
       }
 
+      /// reactions <-dynamic|-rayleigh> (OpenSees's calculateNodalReactions:
+      /// -incInertia, -dynamical, -Dynamic and -dynamic include the inertia
+      /// and damping forces, -rayleigh gives the Rayleigh damping forces alone).
       void
       reactions(Session &s, Words &w)
       {
+        using Flag = opensees::Domain::ReactionFlag;
+        Flag flag  = Flag::resisting;
+        if (!w.done())
+          {
+            const std::string option = w.word("the option");
+            if (option == "-incInertia" || option == "-dynamical" || option == "-Dynamic" ||
+                option == "-dynamic")
+              flag = Flag::dynamic;
+            else if (option == "-rayleigh")
+              flag = Flag::rayleigh;
+            else
+              throw ScriptError("option '" + option +
+                                "' is not -dynamic (-incInertia, -dynamical, -Dynamic) or -rayleigh");
+          }
         check_done(w);
-        s.reactions = s.domain.reactions();
+        s.reactions = s.domain.reactions(flag);
       }
 
       template <typename Map>
@@ -461,7 +474,7 @@ namespace poundfe
       element_force(Session &s, Words &w)
       {
         const opensees::Element &e = element_of(s, w);
-        node_values(w, e.response({"force"}), "DOF");
+        node_values(w, s.domain.element_response(e, {"force"}), "DOF");
       }
 
       void
@@ -555,7 +568,7 @@ namespace poundfe
         std::vector<std::string> words;
         while (!w.done())
           words.push_back(w.word("the response"));
-        set_result(w.interp, e.response(words));
+        set_result(w.interp, s.domain.element_response(e, words));
       });
       define(interp, session, "testIter",
              [](Session &s, Words &w) { test_results(s, w, false); });

@@ -760,6 +760,18 @@ namespace poundfe
         }
       return 0;
     }
+
+    bool
+    Analysis::fresh_test_met(const Vector &dx, const Vector &r) const
+    {
+      double norm = test_norm(dx, r);
+      // a relative test started afresh takes this norm as its first: the
+      // ratio is 1 (0 when dx is 0), as CTestRelativeNormDispIncr's copy
+      if (opts.test.kind == ConvergenceTest::Kind::relative_norm_disp_incr && norm != 0)
+        norm = 1;
+      return norm <= opts.test.tolerance;
+    }
+
     void
     Analysis::print_iteration(const unsigned int iteration, const double norm) const
     {
@@ -1064,7 +1076,7 @@ namespace poundfe
             return 1;
           r = residual();
           // NewtonLineSearch searches unless the test is already met
-          if (searching && test_norm(dx, r) > opts.test.tolerance && !line_search(s0, dx, r, why))
+          if (searching && !fresh_test_met(dx, r) && !line_search(s0, dx, r, why))
             return -1;
           const int verdict = judge(iteration, opts.test.max_iterations, dx, r, why);
           if (verdict != 0)

@@ -217,6 +217,9 @@ namespace poundfe
       /// HHT: U_alpha, V_alpha from U_n, V_n and the trial U, V.
       void   update_alpha_point();
       double test_norm(const Vector &dx, const Vector &r) const;
+      /// Whether NewtonLineSearch's own copy of the test (its theOtherTest,
+      /// started afresh at every iteration) is met by the Newton step.
+      bool   fresh_test_met(const Vector &dx, const Vector &r) const;
       /// The test's line of print flag 1 (each iteration) or 2 (convergence).
       void   print_iteration(unsigned int iteration, double norm) const;
       void   commit();

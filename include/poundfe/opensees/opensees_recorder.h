@@ -85,6 +85,9 @@ namespace poundfe
       virtual void record(const Domain &domain);
       /// Writes the last lines and puts the file in place.
       virtual void finish();
+      /// `reset` (OpenSees's Recorder::restart): the Envelope recorders
+      /// start their extremes again; the others go on.
+      virtual void restart() {}
 
     protected:
       /// The line's values after the time.
@@ -182,6 +185,7 @@ namespace poundfe
       explicit EnvelopeRecorder(typename Values::Spec spec);
       void record(const Domain &domain) override;
       void finish() override;
+      void restart() override { first = true; }
 
     private:
       std::vector<double> current;
