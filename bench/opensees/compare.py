@@ -193,6 +193,12 @@ CASES = {
     "pounding_relative_line_search": ("pounding_sticks.tcl",
                                       ["ImpactMaterial", "NewtonLineSearch -tol 0.01",
                                        "RelativeNormDispIncr"], 1e-9),
+    # analysis VariableTransient (6 steps fail and are tried again shorter,
+    # 16 step lengths) under a record of uneven times: Path -time -values,
+    # and -fileTime -filePath; a Path -dt with -startTime, -prependZero and
+    # -useLast
+    "variable_steps": ("variable_steps.tcl", [], 1e-9),
+    "variable_steps_files": ("variable_steps.tcl", ["files"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <regex>
+#include <optional>
 #include <ostream>
 
 namespace poundfe
@@ -325,16 +326,43 @@ namespace poundfe
       analysis(Session &s, Words &w)
       {
         const std::string type = w.word("the analysis' type");
-        if (type != "Static" && type != "Transient")
+        // OpenSees's three names of VariableTimeStepDirectIntegrationAnalysis
+        const bool variable = type == "VariableTransient" || type == "VariableTimeStepTransient" ||
+                              type == "TransientWithVariableTimeStep";
+        if (type != "Static" && type != "Transient" && !variable)
           unsupported("analysis " + type);
         check_done(w);
         if (s.domain.ndf == 0)
           throw ScriptError("no model yet");
-        const bool transient = type == "Transient";
+        const bool transient = type == "Transient" || variable;
         default_components(s, transient);
-        s.options.transient = transient;
+        s.options.transient          = transient;
+        s.options.variable_time_step = variable;
         add_counts(s);
         s.analysis = std::make_unique<opensees::Analysis>(s.domain, s.options);
+      }
+
+      /// analyze's dtMin dtMax Jd (when given: a VariableTransient analysis
+      /// only, as OpenSees's analyze).
+      std::optional<opensees::Analysis::VariableSteps>
+      variable_steps(Session &s, Words &w, const int steps, const double dt)
+      {
+        if (w.done() || w.peek() == "-noFlush")
+          return std::nullopt;
+        if (!s.analysis->options().variable_time_step)
+          throw ScriptError("dtMin dtMax Jd given to an analysis that is not VariableTransient "
+                            "(no variable time step transient analysis object constructed)");
+        opensees::Analysis::VariableSteps v;
+        v.n_steps = std::max(steps, 0);
+        v.dt      = dt;
+        v.dt_min  = w.real("dtMin");
+        v.dt_max  = w.real("dtMax");
+        v.jd      = w.integer("Jd");
+        if (!(v.dt_min > 0) || !(v.dt_max >= v.dt_min))
+          throw ScriptError("dtMin must be > 0 and dtMax >= dtMin");
+        if (v.jd < 1)
+          throw ScriptError("Jd must be >= 1");
+        return v;
       }
 
       void
@@ -350,19 +378,24 @@ namespace poundfe
             if (!(dt > 0))
               throw ScriptError("the time step must be > 0");
           }
+        const std::optional<opensees::Analysis::VariableSteps> variable =
+          variable_steps(s, w, steps, dt);
+        if (!w.done() && w.peek() == "-noFlush") // the files are written at the end anyway
+          w.word("-noFlush");
         check_done(w);
         if (steps < 0)
           throw ScriptError("the number of steps must be >= 0");
         if (s.analysis->options().transient)
-          s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper)
-        const int result = s.analysis->analyze(
-          steps, dt, [&]() { s.record(); },
-          [&](const std::string &why) {
-            // the test's and the line search's own lines are not warnings
-            const bool report = why.compare(0, 5, "CTest") == 0 ||
-                                why.compare(0, 19, "InitialInterpolated") == 0;
-            s.warnings << (report ? "" : "WARNING ") << why << "\n";
-          });
+          s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper), the first step's
+        const auto record = [&]() { s.record(); };
+        const auto warn   = [&](const std::string &why) {
+          // the test's and the line search's own lines are not warnings
+          const bool report = why.compare(0, 5, "CTest") == 0 ||
+                              why.compare(0, 19, "InitialInterpolated") == 0;
+          s.warnings << (report ? "" : "WARNING ") << why << "\n";
+        };
+        const int result = variable ? s.analysis->analyze_variable(*variable, record, warn) :
+                                      s.analysis->analyze(steps, dt, record, warn);
         Tcl_SetObjResult(w.interp, Tcl_NewIntObj(result));
       }
 

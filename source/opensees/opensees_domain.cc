@@ -17,6 +17,22 @@ namespace poundfe
   namespace opensees
   {
     double
+    TimeSeries::path_time_factor(const double time) const
+    {
+      // PathTimeSeries::getFactor as it searches forward: the value at the
+      // first time, else the interval (t_k, t_k+1] that holds the time
+      // (at a repeated time the first of its values); 0 outside
+      if (time == times.front())
+        return factor * values.front();
+      if (time < times.front() || time > times.back())
+        return 0;
+      const std::size_t k =
+        std::lower_bound(times.begin(), times.end(), time) - times.begin() - 1;
+      const double t1 = times[k], t2 = times[k + 1];
+      return factor * (values[k] + (values[k + 1] - values[k]) * (time - t1) / (t2 - t1));
+    }
+
+    double
     TimeSeries::at(const double time) const
     {
       switch (kind)
@@ -27,12 +43,14 @@ namespace poundfe
             return factor * time;
           case Kind::path:
             {
-              if (time < 0 || values.empty())
+              if (!times.empty())
+                return path_time_factor(time);
+              if (time < start_time || values.empty())
                 return 0;
-              const double    position = time / dt;
+              const double    position = (time - start_time) / dt;
               const long long i        = static_cast<long long>(std::floor(position));
               if (i + 1 >= static_cast<long long>(values.size()))
-                return 0;
+                return use_last ? factor * values.back() : 0.0;
               return factor * (values[i] + (values[i + 1] - values[i]) * (position - i));
             }
           case Kind::trig:

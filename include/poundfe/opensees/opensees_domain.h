@@ -167,8 +167,18 @@ namespace poundfe
       double              factor = 1;
       double              dt     = 0; // path: the values' spacing
       std::vector<double> values;    // path
+      /// path: the values' times, not decreasing (OpenSees's
+      /// PathTimeSeries: -time, -fileTime), in place of dt; 0 before the
+      /// first and after the last.
+      std::vector<double> times;
+      /// path with dt (OpenSees's PathSeries): -useLast (the last value
+      /// after the end, in place of 0) and -startTime (the first value's).
+      bool                use_last   = false;
+      double              start_time = 0;
       double start = 0, finish = 0, period = 1, shift = 0, zero_shift = 0; // trig
       double              at(double time) const;
+      /// at() of a series with times (PathTimeSeries::getFactor).
+      double path_time_factor(double time) const;
     };
 
     struct NodalLoad
