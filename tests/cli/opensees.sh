@@ -21,7 +21,11 @@
 #     own line at analyze), a Hertzdamp short of values
 #     (OpenSees's usage line) or with a word for a number, a Steel02 with 5
 #     values, a word after ElasticPPGap's values, a
-#     BoucWen with ko < 0: one line naming the file and line, exit 1, no
+#     BoucWen with ko < 0, reset with a word or under HHT, reactions with
+#     an unknown option, a Path series of times and values in unequal numbers,
+#     of decreasing times, with -dt and -time, of a missing -fileTime file
+#     or without values, analyze with dtMin dtMax Jd on a Transient analysis,
+#     dtMin 0 or Jd 0: one line naming the file and line, exit 1, no
 #     recorder file left.
 #   opensees.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
@@ -416,6 +420,30 @@ bad() { # NAME EXPECTED (the script on standard input)
   [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
 }
 echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"' || exit 1
+# reset, reactions, Path of times, VariableTransient's analyze
+echo "reset 1" | bad reset-word "5: reset: takes no words, '1' given" || exit 1
+echo "reactions -inertia" | bad reactions-option \
+  "5: reactions: option '-inertia' is not -dynamic (-incInertia, -dynamical, -Dynamic) or -rayleigh" || exit 1
+echo "timeSeries Path 1 -time {0 1 2} -values {0 1}" | bad path-times-count \
+  "5: timeSeries: a Path series has 3 times and 2 values (they must be as many)" || exit 1
+echo "timeSeries Path 1 -time {0 2 1} -values {0 1 2}" | bad path-times-order \
+  "5: timeSeries: a Path series' times must not decrease (time 3 is before time 2)" || exit 1
+echo "timeSeries Path 1 -dt 0.1 -time {0 1} -values {0 1}" | bad path-dt-and-times \
+  "5: timeSeries: a Path series takes -dt or -time (-fileTime), not both" || exit 1
+echo "timeSeries Path 1 -fileTime $work/none.txt -filePath $work/none.txt" | bad path-file-time \
+  "5: timeSeries: the file '$work/none.txt' cannot be read" || exit 1
+echo "timeSeries Path 1 -time {0 1}" | bad path-no-values "5: timeSeries: a Path series needs -values or -filePath" || exit 1
+transient="test NormDispIncr 1e-8 10
+algorithm Newton
+integrator Newmark 0.5 0.25"
+printf '%s\nanalysis Transient\nanalyze 10 0.01 0.001 0.02 3\n' "$transient" | bad variable-not-variable \
+  "9: analyze: dtMin dtMax Jd given to an analysis that is not VariableTransient (no variable time step transient analysis object constructed)" || exit 1
+printf '%s\nanalysis VariableTransient\nanalyze 10 0.01 0.0 0.02 3\n' "$transient" | bad variable-dt-min \
+  "9: analyze: dtMin must be > 0 and dtMax >= dtMin" || exit 1
+printf '%s\nanalysis VariableTransient\nanalyze 10 0.01 0.001 0.02 0\n' "$transient" | bad variable-jd \
+  "9: analyze: Jd must be >= 1" || exit 1
+printf 'test NormDispIncr 1e-8 10\nalgorithm Newton\nintegrator HHT 0.8\nanalysis Transient\nreset\n' \
+  | bad reset-hht "9: reset with integrator HHT: poundfe does not support it" || exit 1
 # an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused
 # at its line, before analyze reads past a node's DOFs
 for kind in "truss 1 3 1 1.0 1" "zeroLength 1 3 1 -mat 1 -dir 1"; do
@@ -488,8 +516,6 @@ echo "fixX 0.0 1 -tol" | bad fix-tolerance '5: fixX: missing the tolerance' || e
 echo "getTime %d" \
   | bad time-format "5: getTime: format '%d' is not one floating-point conversion" || exit 1
 echo "testIter" | bad test-iterations '5: testIter: no convergence test' || exit 1
-printf 'test RelativeNormDispIncr 1e-8 10\nalgorithm NewtonLineSearch\nintegrator Newmark 0.5 0.25\nanalysis Transient\nanalyze 1 0.01\n' \
-  | bad relative-search '9: analyze: test RelativeNormDispIncr with algorithm NewtonLineSearch: poundfe does not support it' || exit 1
 # region and setElementRayleighDampingFactors
 echo "region 1 -ele 1 -rayleigh 0.1 0.0 0.0" | bad region-factors '5: region: missing bKc' || exit 1
 echo "region 1 -ele 1 -frob 2" | bad region-option "5: region 1: '-frob' where an option is due" || exit 1
