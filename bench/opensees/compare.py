@@ -199,6 +199,9 @@ CASES = {
     # -useLast
     "variable_steps": ("variable_steps.tcl", [], 1e-9),
     "variable_steps_files": ("variable_steps.tcl", ["files"], 1e-9),
+    # remove element (a yielded link, a spring), node (its anchor), sp (a
+    # fixity: the mass then swings) and timeSeries mid-record
+    "remove_objects": ("remove_objects.tcl", [], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -1417,7 +1417,7 @@ namespace poundfe
             d.patterns.erase(tag);
             d.changed = true;
           }
-        else
+        else if (!remove_model_object(s, w, what))
           unsupported("remove " + what);
       }
     } // namespace

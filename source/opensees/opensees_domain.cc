@@ -361,6 +361,61 @@ namespace poundfe
     }
 
     void
+    Domain::remove_element(const int tag)
+    {
+      if (elements.count(tag) == 0)
+        return;
+      for (const auto &[pattern_tag, pattern] : patterns)
+        for (const BeamUniformLoad &load : pattern.beam_loads)
+          if (load.element == tag)
+            throw ScriptError("element " + std::to_string(tag) + " has an element load in pattern " +
+                              std::to_string(pattern_tag) + " (remove the pattern first)");
+      for (auto m = lumped_masses.begin(); m != lumped_masses.end();)
+        if (m->element == tag)
+          {
+            std::vector<double> &mass = node(m->node).element_mass;
+            for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
+              mass[k] -= m->mass;
+            m = lumped_masses.erase(m);
+          }
+        else
+          ++m;
+      element_rayleigh.erase(tag);
+      elements.erase(tag);
+      changed = true;
+    }
+
+    void
+    Domain::remove_node(const int tag)
+    {
+      if (nodes.count(tag) == 0)
+        return;
+      const std::string name = "node " + std::to_string(tag);
+      for (const auto &[element_tag, element] : elements)
+        for (const int n : element->node_tags)
+          if (n == tag)
+            throw ScriptError(name + " is a node of element " + std::to_string(element_tag));
+      for (const EqualDof &e : equal_dofs)
+        if (e.retained == tag || e.constrained == tag)
+          throw ScriptError(name + " is tied by an equalDOF");
+      for (const Diaphragm &d : diaphragms)
+        if (d.retained == tag || std::count(d.constrained.begin(), d.constrained.end(), tag) > 0)
+          throw ScriptError(name + " is in a rigidDiaphragm");
+      for (const auto &[pattern_tag, pattern] : patterns)
+        {
+          for (const NodalLoad &load : pattern.loads)
+            if (load.node == tag)
+              throw ScriptError(name + " has a load in pattern " + std::to_string(pattern_tag));
+          for (const ImposedDisplacement &sp : pattern.imposed)
+            if (sp.node == tag)
+              throw ScriptError(name + " has an sp in pattern " + std::to_string(pattern_tag));
+        }
+      node_alpha_m.erase(tag);
+      nodes.erase(tag);
+      changed = true;
+    }
+
+    void
     Domain::revert_to_start()
     {
       for (auto &[tag, n] : nodes)

@@ -25,7 +25,9 @@
 #     an unknown option, a Path series of times and values in unequal numbers,
 #     of decreasing times, with -dt and -time, of a missing -fileTime file
 #     or without values, analyze with dtMin dtMax Jd on a Transient analysis,
-#     dtMin 0 or Jd 0: one line naming the file and line, exit 1, no
+#     dtMin 0 or Jd 0, remove of a node an element or a recorder names, of
+#     a DOF the node lacks or of a pattern's sp: one line naming the file
+#     and line, exit 1, no
 #     recorder file left.
 #   opensees.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
@@ -84,7 +86,7 @@ set n 0
 foreach tag [getNodeTags] { incr n }
 while {$n > 3} { incr n -1 }
 puts "nodes $n elements [getEleTags]"
-if {[catch {remove element 1} message]} { puts "caught: $message" }
+if {[catch {remove mp 1} message]} { puts "caught: $message" }
 if {[catch {element zeroLength 9 0 1 -mat 1 -dir 1 -orient 1 0 0 0 1 0 -dampMats 1} message]} {
     puts "caught: $message"
 }
@@ -104,7 +106,7 @@ status=$?
 expect_line() { grep -qxF -- "$1" "$work/tcl/log" || { cat "$work/tcl/log"; fail "no line '$1'"; }; }
 expect_line "argc 4 argv $work/tcl -x --output y"
 expect_line "nodes 3 elements 1 2 3"
-expect_line "caught: remove element: poundfe does not support it"
+expect_line "caught: remove mp: poundfe does not support it"
 expect_line "caught: element zeroLength option '-dampMats': poundfe does not support it"
 expect_line "analyze 0 disp 0.06"
 grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
@@ -420,6 +422,14 @@ bad() { # NAME EXPECTED (the script on standard input)
   [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
 }
 echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"' || exit 1
+# remove of what an element, a recorder names; of a fixity out of range, of a pattern's sp
+printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1\nremove node 1\n' \
+  | bad remove-node-of-element "7: remove: node 1 is a node of element 1" || exit 1
+echo "remove node 2" | bad remove-recorded-node \
+  "5: remove: node 2 is recorded by recorder 0 (remove the recorder first)" || exit 1
+printf 'fix 1 1\nremove sp 1 2\n' | bad remove-sp-dof "6: remove: node 1 has no DOF 2" || exit 1
+printf 'fix 1 1\nremove sp 1 1 3\n' | bad remove-sp-pattern \
+  "6: remove sp node dof patternTag (OpenSees 3.8 leaves a pattern's sp in place): poundfe does not support it" || exit 1
 # reset, reactions, Path of times, VariableTransient's analyze
 echo "reset 1" | bad reset-word "5: reset: takes no words, '1' given" || exit 1
 echo "reactions -inertia" | bad reactions-option \

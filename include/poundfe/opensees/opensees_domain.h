@@ -389,6 +389,15 @@ namespace poundfe
       /// global force ("force", "globalForce": force_with_ground_load).
       std::vector<double> element_response(const Element                  &element,
                                            const std::vector<std::string> &words) const;
+      /// `remove element tag` (OpenSees's Domain::removeElement): the
+      /// element, its lumped masses and its region's factors; nothing when
+      /// there is none. ScriptError when a pattern's element load names it
+      /// (OpenSees 3.8 keeps the load on the removed element).
+      void remove_element(int tag);
+      /// `remove node tag`: ScriptError when an element, an equalDOF, a
+      /// rigidDiaphragm or a pattern's load or sp names it (OpenSees 3.8
+      /// removes it from under them); nothing when there is none.
+      void remove_node(int tag);
       /// OpenSees's Domain::revertToStart (`reset`): every node's response
       /// zero, every element back to its initial state (and its trial
       /// state at those displacements), the time 0.
