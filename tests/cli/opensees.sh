@@ -519,7 +519,7 @@ echo "recorder EnvelopeElement -file $work/x.out -ele 5 force" \
 echo "remove recorder 7" | bad remove-recorder '5: remove: recorder 7 does not exist' || exit 1
 echo "remove recorders extra" \
   | bad remove-recorders "5: remove recorders word 'extra': poundfe does not support it" || exit 1
-echo "remove element 1" | bad remove-element '5: remove element: poundfe does not support it' || exit 1
+echo "remove mp 1" | bad remove-mp '5: remove mp: poundfe does not support it' || exit 1
 echo "fixX 0.0 1 1" | bad fix-x '5: fixX: needs 1 to ndf = 1 fixities, got 2' || exit 1
 echo "fixY 0.0 1" | bad fix-y '5: fixY: the model has no axis 2 (-ndm 1)' || exit 1
 echo "fixX 0.0 1 -tol" | bad fix-tolerance '5: fixX: missing the tolerance' || exit 1
