@@ -197,6 +197,27 @@ CASES = {
     # case without them)
     "handlers_penalty_mass": ("constraint_handlers.tcl",
                               ["-cornerMass", "5000.0", "Penalty", "1.0e13", "1.0e13"], 1e-9),
+    # reset halfway through a record (a yielded brace, time 0, an
+    # EnvelopeNode's extremes), reactions -dynamic and -rayleigh, and the
+    # force of members with mass under a record (with their ground-motion
+    # load: twice for a 2D elasticBeamColumn, once for a truss -rho)
+    "domain_commands": ("domain_commands.tcl", [], 1e-9),
+    # RelativeNormDispIncr under NewtonLineSearch, whose own copy of the
+    # test, started afresh at each iteration, measures a ratio of 1 and so
+    # always searches, at the last iteration on a residual of round-off
+    # (whose etas differ between the programs: no -pFlag 0 here)
+    "pounding_relative_line_search": ("pounding_sticks.tcl",
+                                      ["ImpactMaterial", "NewtonLineSearch -tol 0.01",
+                                       "RelativeNormDispIncr"], 1e-9),
+    # analysis VariableTransient (6 steps fail and are tried again shorter,
+    # 16 step lengths) under a record of uneven times: Path -time -values,
+    # and -fileTime -filePath; a Path -dt with -startTime, -prependZero and
+    # -useLast
+    "variable_steps": ("variable_steps.tcl", [], 1e-9),
+    "variable_steps_files": ("variable_steps.tcl", ["files"], 1e-9),
+    # remove element (a yielded link, a spring), node (its anchor), sp (a
+    # fixity: the mass then swings) and timeSeries mid-record
+    "remove_objects": ("remove_objects.tcl", [], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

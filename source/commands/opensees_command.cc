@@ -213,7 +213,7 @@ namespace poundfe
         for (const char *name :
              {"imposedMotion", "groundMotion", "modalDamping",
               "printA", "printB", "printModel", "print",
-              "basicDeformation", "basicForce", "localForce", "reset", "block2D", "block3D", "nDMaterial", "frictionModel",
+              "basicDeformation", "basicForce", "localForce", "block2D", "block3D", "nDMaterial", "frictionModel",
               "database", "geomTransfPDelta", "mp", "domainChange", "remesh", "setNodeCoord",
               "setNodeDisp", "setNodeVel", "setNodeAccel", "getLoadFactor", "sectionForce",
               "sectionDeformation", "sectionStiffness", "nodeEigenvector", "nodeMass",
@@ -327,6 +327,7 @@ namespace poundfe
       define_analysis_commands(interp, session);
       define_section_commands(interp, session);
       define_region_commands(interp, session);
+      define_domain_commands(interp, session);
       define_unsupported(interp, session);
       define_exit(interp, session);
       define_poundfe_namespace(interp, session);

@@ -145,6 +145,11 @@ namespace poundfe
     void define_analysis_commands(Tcl_Interp *interp, Session &session);
     /// region (opensees_tcl_regions.cc).
     void define_region_commands(Tcl_Interp *interp, Session &session);
+    /// reset (opensees_tcl_domain.cc).
+    void define_domain_commands(Tcl_Interp *interp, Session &session);
+    /// remove element | ele | node | sp | SPconstraint | timeSeries (after
+    /// the word `what`); false for any other word.
+    bool remove_model_object(Session &session, Words &words, const std::string &what);
   } // namespace opensees_tcl
 } // namespace poundfe
 

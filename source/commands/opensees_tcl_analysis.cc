@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <regex>
+#include <optional>
 #include <ostream>
 
 namespace poundfe
@@ -371,16 +372,43 @@ namespace poundfe
       analysis(Session &s, Words &w)
       {
         const std::string type = w.word("the analysis' type");
-        if (type != "Static" && type != "Transient")
+        // OpenSees's three names of VariableTimeStepDirectIntegrationAnalysis
+        const bool variable = type == "VariableTransient" || type == "VariableTimeStepTransient" ||
+                              type == "TransientWithVariableTimeStep";
+        if (type != "Static" && type != "Transient" && !variable)
           unsupported("analysis " + type);
         check_done(w);
         if (s.domain.ndf == 0)
           throw ScriptError("no model yet");
-        const bool transient = type == "Transient";
+        const bool transient = type == "Transient" || variable;
         default_components(s, transient);
-        s.options.transient = transient;
+        s.options.transient          = transient;
+        s.options.variable_time_step = variable;
         add_counts(s);
         s.analysis = std::make_unique<opensees::Analysis>(s.domain, s.options);
+      }
+
+      /// analyze's dtMin dtMax Jd (when given: a VariableTransient analysis
+      /// only, as OpenSees's analyze).
+      std::optional<opensees::Analysis::VariableSteps>
+      variable_steps(Session &s, Words &w, const int steps, const double dt)
+      {
+        if (w.done() || w.peek() == "-noFlush")
+          return std::nullopt;
+        if (!s.analysis->options().variable_time_step)
+          throw ScriptError("dtMin dtMax Jd given to an analysis that is not VariableTransient "
+                            "(no variable time step transient analysis object constructed)");
+        opensees::Analysis::VariableSteps v;
+        v.n_steps = std::max(steps, 0);
+        v.dt      = dt;
+        v.dt_min  = w.real("dtMin");
+        v.dt_max  = w.real("dtMax");
+        v.jd      = w.integer("Jd");
+        if (!(v.dt_min > 0) || !(v.dt_max >= v.dt_min))
+          throw ScriptError("dtMin must be > 0 and dtMax >= dtMin");
+        if (v.jd < 1)
+          throw ScriptError("Jd must be >= 1");
+        return v;
       }
 
       void
@@ -396,23 +424,24 @@ namespace poundfe
             if (!(dt > 0))
               throw ScriptError("the time step must be > 0");
           }
+        const std::optional<opensees::Analysis::VariableSteps> variable =
+          variable_steps(s, w, steps, dt);
+        if (!w.done() && w.peek() == "-noFlush") // the files are written at the end anyway
+          w.word("-noFlush");
         check_done(w);
         if (steps < 0)
           throw ScriptError("the number of steps must be >= 0");
-        const opensees::AnalysisOptions &o = s.analysis->options();
-        if (o.test.kind == opensees::ConvergenceTest::Kind::relative_norm_disp_incr &&
-            o.algorithm == opensees::AnalysisOptions::Algorithm::newton_line_search)
-          unsupported("test RelativeNormDispIncr with algorithm NewtonLineSearch");
         if (s.analysis->options().transient)
-          s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper)
-        const int result = s.analysis->analyze(
-          steps, dt, [&]() { s.record(); },
-          [&](const std::string &why) {
-            // the test's and the line search's own lines are not warnings
-            const bool report = why.compare(0, 5, "CTest") == 0 ||
-                                why.compare(0, 19, "InitialInterpolated") == 0;
-            s.warnings << (report ? "" : "WARNING ") << why << "\n";
-          });
+          s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper), the first step's
+        const auto record = [&]() { s.record(); };
+        const auto warn   = [&](const std::string &why) {
+          // the test's and the line search's own lines are not warnings
+          const bool report = why.compare(0, 5, "CTest") == 0 ||
+                              why.compare(0, 19, "InitialInterpolated") == 0;
+          s.warnings << (report ? "" : "WARNING ") << why << "\n";
+        };
+        const int result = variable ? s.analysis->analyze_variable(*variable, record, warn) :
+                                      s.analysis->analyze(steps, dt, record, warn);
         Tcl_SetObjResult(w.interp, Tcl_NewIntObj(result));
       }
 
@@ -474,11 +503,28 @@ namespace poundfe
                     "DOF");
       }
 
+      /// reactions <-dynamic|-rayleigh> (OpenSees's calculateNodalReactions:
+      /// -incInertia, -dynamical, -Dynamic and -dynamic include the inertia
+      /// and damping forces, -rayleigh gives the Rayleigh damping forces alone).
       void
       reactions(Session &s, Words &w)
       {
+        using Flag = opensees::Domain::ReactionFlag;
+        Flag flag  = Flag::resisting;
+        if (!w.done())
+          {
+            const std::string option = w.word("the option");
+            if (option == "-incInertia" || option == "-dynamical" || option == "-Dynamic" ||
+                option == "-dynamic")
+              flag = Flag::dynamic;
+            else if (option == "-rayleigh")
+              flag = Flag::rayleigh;
+            else
+              throw ScriptError("option '" + option +
+                                "' is not -dynamic (-incInertia, -dynamical, -Dynamic) or -rayleigh");
+          }
         check_done(w);
-        s.reactions = s.domain.reactions();
+        s.reactions = s.domain.reactions(flag);
       }
 
       template <typename Map>
@@ -507,7 +553,7 @@ namespace poundfe
       element_force(Session &s, Words &w)
       {
         const opensees::Element &e = element_of(s, w);
-        node_values(w, e.response({"force"}), "DOF");
+        node_values(w, s.domain.element_response(e, {"force"}), "DOF");
       }
 
       void
@@ -597,7 +643,7 @@ namespace poundfe
         std::vector<std::string> words;
         while (!w.done())
           words.push_back(w.word("the response"));
-        set_result(w.interp, e.response(words));
+        set_result(w.interp, s.domain.element_response(e, words));
       });
       define(interp, session, "testIter",
              [](Session &s, Words &w) { test_results(s, w, false); });

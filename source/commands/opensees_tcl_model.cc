@@ -762,6 +762,79 @@ namespace poundfe
         return values;
       }
 
+      /// A list of numbers: one list word or, as OpenSeesPy gives them, the
+      /// numbers as words of their own.
+      std::vector<double>
+      number_list(Words &w, const char *what)
+      {
+        std::vector<double> values;
+        Tcl_Obj            *list = Tcl_NewStringObj(w.word(what).c_str(), -1);
+        Tcl_IncrRefCount(list);
+        int       n = 0;
+        Tcl_Obj **items;
+        const int ok = Tcl_ListObjGetElements(w.interp, list, &n, &items);
+        for (int i = 0; ok == TCL_OK && i < n; ++i)
+          {
+            double v;
+            if (Tcl_GetDoubleFromObj(nullptr, items[i], &v) != TCL_OK)
+              {
+                const std::string item = Tcl_GetString(items[i]);
+                Tcl_DecrRefCount(list);
+                throw ScriptError(std::string(what) + " holds '" + item + "', not a number");
+              }
+            values.push_back(v);
+          }
+        Tcl_DecrRefCount(list);
+        if (n == 1)
+          for (const double v : w.numbers(what))
+            values.push_back(v);
+        return values;
+      }
+
+      /// A Path series' options besides its values and factor (OpenSees's
+      /// OPS_PathSeries).
+      struct PathOptions
+      {
+        std::vector<double> times; // -time or -fileTime
+        bool                use_last = false, prepend_zero = false;
+        double              start_time = 0;
+      };
+
+      /// A Path series as OpenSees's OPS_PathSeries makes it: with -dt a
+      /// PathSeries (-useLast, -prependZero, -startTime), else with times a
+      /// PathTimeSeries, which takes none of the three (with a warning).
+      void
+      finish_path(opensees::TimeSeries &series, const PathOptions &path, std::ostream &warnings)
+      {
+        if (series.values.empty())
+          throw ScriptError("a Path series needs -values or -filePath");
+        if (series.dt > 0 && !path.times.empty())
+          throw ScriptError("a Path series takes -dt or -time (-fileTime), not both");
+        if (series.dt > 0)
+          {
+            if (path.prepend_zero)
+              series.values.insert(series.values.begin(), 0.0);
+            series.use_last   = path.use_last;
+            series.start_time = path.start_time;
+            return;
+          }
+        if (path.times.empty())
+          throw ScriptError("a Path series needs -dt > 0, -time or -fileTime");
+        if (path.times.size() != series.values.size())
+          throw ScriptError("a Path series has " + std::to_string(path.times.size()) +
+                            " times and " + std::to_string(series.values.size()) +
+                            " values (they must be as many)");
+        for (std::size_t i = 1; i < path.times.size(); ++i)
+          if (path.times[i] < path.times[i - 1])
+            throw ScriptError("a Path series' times must not decrease (time " +
+                              std::to_string(i + 1) + " is before time " + std::to_string(i) +
+                              ")");
+        if (path.use_last || path.prepend_zero || path.start_time != 0)
+          warnings << "WARNING timeSeries Path: -useLast, -prependZero and -startTime are "
+                      "ignored with -time or -fileTime (OpenSees 3.8's PathTimeSeries)\n";
+        series.times = path.times;
+      }
+
       /// The options of a Path, Linear or Constant series (after its tag).
       std::shared_ptr<opensees::TimeSeries>
       series_options(const std::string &type, Words &w, std::ostream &warnings)
@@ -780,6 +853,7 @@ namespace poundfe
             if (!(series->period > 0))
               throw ScriptError("the period must be > 0");
           }
+        PathOptions path;
         while (!w.done())
           {
             const std::string option = w.word("an option");
@@ -792,33 +866,24 @@ namespace poundfe
             else if (series->kind == Kind::path && option == "-dt")
               series->dt = w.real("-dt");
             else if (series->kind == Kind::path && option == "-values")
-              {
-                Tcl_Obj *list = Tcl_NewStringObj(w.word("the values").c_str(), -1);
-                Tcl_IncrRefCount(list);
-                int       n = 0;
-                Tcl_Obj **items;
-                const int ok = Tcl_ListObjGetElements(w.interp, list, &n, &items);
-                for (int i = 0; ok == TCL_OK && i < n; ++i)
-                  {
-                    double v;
-                    if (Tcl_GetDoubleFromObj(nullptr, items[i], &v) != TCL_OK)
-                      throw ScriptError("-values holds '" + std::string(Tcl_GetString(items[i])) +
-                                        "', not a number");
-                    series->values.push_back(v);
-                  }
-                Tcl_DecrRefCount(list);
-                // OpenSeesPy's other form: the values as words of their own
-                if (n == 1)
-                  for (const double v : w.numbers("a value"))
-                    series->values.push_back(v);
-              }
+              series->values = number_list(w, "-values");
+            else if (series->kind == Kind::path && option == "-time")
+              path.times = number_list(w, "-time");
             else if (series->kind == Kind::path && option == "-filePath")
               series->values = read_path_file(w.word("the file"), warnings);
+            else if (series->kind == Kind::path && option == "-fileTime")
+              path.times = read_path_file(w.word("the file"), warnings);
+            else if (series->kind == Kind::path && option == "-useLast")
+              path.use_last = true;
+            else if (series->kind == Kind::path && option == "-prependZero")
+              path.prepend_zero = true;
+            else if (series->kind == Kind::path && (option == "-startTime" || option == "-tStart"))
+              path.start_time = w.real(option.c_str());
             else
               unsupported("timeSeries " + type + " option '" + option + "'");
           }
-        if (series->kind == Kind::path && !(series->dt > 0))
-          throw ScriptError("a Path series needs -dt > 0 (-time and -fileTime: not supported)");
+        if (series->kind == Kind::path)
+          finish_path(*series, path, warnings);
         return series;
       }
 
@@ -1352,7 +1417,7 @@ namespace poundfe
             d.patterns.erase(tag);
             d.changed = true;
           }
-        else
+        else if (!remove_model_object(s, w, what))
           unsupported("remove " + what);
       }
     } // namespace

@@ -30,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <set>
+#include <limits>
 #include <sstream>
 
 namespace poundfe
@@ -773,6 +774,18 @@ namespace poundfe
         }
       return 0;
     }
+
+    bool
+    Analysis::fresh_test_met(const Vector &dx, const Vector &r) const
+    {
+      double norm = test_norm(dx, r);
+      // a relative test started afresh takes this norm as its first: the
+      // ratio is 1 (0 when dx is 0), as CTestRelativeNormDispIncr's copy
+      if (opts.test.kind == ConvergenceTest::Kind::relative_norm_disp_incr && norm != 0)
+        norm = 1;
+      return norm <= opts.test.tolerance;
+    }
+
     void
     Analysis::print_iteration(const unsigned int iteration, const double norm) const
     {
@@ -1083,7 +1096,7 @@ namespace poundfe
             return 1;
           r = residual();
           // NewtonLineSearch searches unless the test is already met
-          if (searching && test_norm(dx, r) > opts.test.tolerance && !line_search(s0, dx, r, why))
+          if (searching && !fresh_test_met(dx, r) && !line_search(s0, dx, r, why))
             return -1;
           const int verdict = judge(iteration, opts.test.max_iterations, dx, r, why);
           if (verdict != 0)
@@ -1235,10 +1248,8 @@ namespace poundfe
       ++counts.steps;
     }
 
-    int
-    Analysis::analyze(const unsigned int n_steps, const double dt,
-                      const std::function<void()>                     &after_step,
-                      const std::function<void(const std::string &)> &warn)
+    void
+    Analysis::begin_analysis(const std::function<void(const std::string &)> &warn)
     {
       const bool renumber = domain.changed || !numbered;
       if (renumber)
@@ -1258,32 +1269,94 @@ namespace poundfe
           lambda_step     = opts.d_lambda;
           last_iterations = opts.lambda_iterations;
         }
+    }
+
+    bool
+    Analysis::advance(const double dt, std::string &why)
+    {
+      gather();
+      bool converged = false;
+      try
+        {
+          converged = step(dt, why);
+        }
+      catch (const NumericalError &e)
+        {
+          why = e.what();
+        }
+      if (!converged)
+        {
+          for (auto &[tag, element] : domain.elements)
+            element->revert();
+          ++counts.failed_steps;
+          return false;
+        }
+      commit();
+      return true;
+    }
+
+    int
+    Analysis::analyze(const unsigned int n_steps, const double dt,
+                      const std::function<void()>                     &after_step,
+                      const std::function<void(const std::string &)> &warn)
+    {
+      begin_analysis(warn);
       for (unsigned int i = 0; i < n_steps; ++i)
         {
-          gather();
           std::string why;
-          bool        converged = false;
-          try
+          if (!advance(dt, why))
             {
-              converged = step(dt, why);
-            }
-          catch (const NumericalError &e)
-            {
-              why = e.what();
-            }
-          if (!converged)
-            {
-              for (auto &[tag, element] : domain.elements)
-                element->revert();
-              ++counts.failed_steps;
               std::ostringstream text;
               text << "analyze: the step to time " << trial_time << " failed (" << why
                    << "); the domain is back at time " << domain.time;
               warn(text.str());
               return -3;
             }
-          commit();
           after_step();
+        }
+      return 0;
+    }
+
+    int
+    Analysis::analyze_variable(const VariableSteps &v, const std::function<void()> &after_step,
+                               const std::function<void(const std::string &)> &warn)
+    {
+      begin_analysis(warn);
+      const double total = v.n_steps * v.dt;
+      double       done = 0, dt = v.dt;
+      while (done < total)
+        {
+          std::string why;
+          if (advance(dt, why))
+            {
+              done += dt;
+              after_step();
+            }
+          else if (dt <= v.dt_min)
+            {
+              std::ostringstream text;
+              text << "analyze: the step of " << dt << " to time " << trial_time << " failed ("
+                   << why << ") at dtMin; the domain is back at time " << domain.time;
+              warn(text.str());
+              return -3;
+            }
+          // determineDt: the test's iterations (Linear has no test: 1)
+          const double iterations =
+            opts.algorithm == AnalysisOptions::Algorithm::linear ? 1.0 : test_iterations;
+          const double failed = why.empty() ? 0.0 : dt;
+          dt *= v.jd / iterations;
+          if (failed > 0 && !(dt < failed)) // OpenSees would try the same step for ever
+            {
+              std::ostringstream text;
+              text << "analyze: the step of " << failed << " to time " << trial_time
+                   << " failed (" << why << ") and Jd " << v.jd << " does not shorten it";
+              warn(text.str());
+              return -3;
+            }
+          if (dt < v.dt_min)
+            dt = v.dt_min - std::numeric_limits<double>::epsilon();
+          else if (dt > v.dt_max)
+            dt = v.dt_max;
         }
       return 0;
     }

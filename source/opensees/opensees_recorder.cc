@@ -339,7 +339,17 @@ namespace poundfe
         {
           std::vector<Element::ResponseReader> found; // all or none (they may throw)
           for (const int tag : spec.elements)
-            found.push_back(domain.elements.at(tag)->response_reader(spec.response));
+            {
+              const Element &element = *domain.elements.at(tag);
+              if (is_global_force(spec.response) && domain.has_ground_load(element))
+                // OpenSees's getResistingForce: with the element's ground-motion load
+                found.push_back([&domain, &element](std::vector<double> &values) {
+                  const Vector f = domain.force_with_ground_load(element);
+                  values.insert(values.end(), f.data(), f.data() + f.size());
+                });
+              else
+                found.push_back(element.response_reader(spec.response));
+            }
           readers = std::move(found);
         }
       for (const Element::ResponseReader &read : readers)

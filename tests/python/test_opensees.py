@@ -42,13 +42,13 @@ def static_analysis(steps=1):
     ops.analysis('Static')
 
 
-def record_history(values_argument):
+def record_history(values_argument, spacing=('-dt', 0.01)):
     """Node 2's displacements of an SDOF under a Path record given by
     `values_argument(values)`, a tuple of the timeSeries arguments after
-    -values."""
+    -values, and `spacing`'s arguments before them."""
     sdof(k=400.0)
     values = [math.sin(0.3 * i) for i in range(51)]
-    ops.timeSeries('Path', 1, '-dt', 0.01, '-values', *values_argument(values), '-factor', 2.0)
+    ops.timeSeries('Path', 1, *spacing, '-values', *values_argument(values), '-factor', 2.0)
     ops.pattern('UniformExcitation', 1, 1, '-accel', 1)
     ops.constraints('Plain')
     ops.numberer('Plain')
@@ -249,6 +249,32 @@ class ConventionsTest(TestCase):
         force = ops.eleResponse(2, 'basicForce')
         self.assertIsInstance(force, list)
         self.assertAlmostEqual(force[0], 50.0 * 10.0 / 150.0, delta=1e-11)
+
+    def test_domain_commands(self):
+        """reset, reactions('-dynamic'), a Path of times and VariableTransient
+        through the same command table as the Tcl scripts."""
+        uniform = record_history(lambda values: (values,))
+        # the same record at its times 0, 0.01, ...: the same interpolation
+        # but for the round-off of i * 0.01 against t / 0.01
+        def at_times(values):
+            return (values, '-time', [0.01 * i for i in range(len(values))])
+        at_times_history = record_history(at_times, spacing=())
+        self.assertLess(max(abs(a - b) for a, b in zip(uniform, at_times_history)),
+                        1e-12 * max(map(abs, uniform)))
+        # the free node's dynamic reaction is its unbalance: 0 once converged
+        ops.reactions('-dynamic')
+        self.assertLess(abs(ops.nodeReaction(2, 1)), 1e-9 * abs(ops.nodeReaction(1, 1)))
+        # reset: the record again from time 0 gives the same history exactly
+        ops.reset()
+        self.assertEqual((ops.getTime(), ops.nodeDisp(2, 1)), (0.0, 0.0))
+        again = []
+        for _ in range(50):
+            ops.analyze(1, 0.01)
+            again.append(ops.nodeDisp(2, 1))
+        self.assertEqual(again, at_times_history)
+        ops.wipeAnalysis()
+        ops.analysis('VariableTransient')
+        self.assertEqual(ops.analyze(5, 0.01, 0.001, 0.02, 1), 0)
 
     def test_wipe_between_two_models(self):
         recorded = os.path.join(self.tmp, "first.out")

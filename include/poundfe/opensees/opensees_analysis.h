@@ -105,6 +105,10 @@ namespace poundfe
         bool         print          = false;
       } line_search;
       bool            transient = false;
+      /// analysis VariableTransient (OpenSees's
+      /// VariableTimeStepDirectIntegrationAnalysis): `analyze n dt dtMin
+      /// dtMax Jd` varies the step.
+      bool            variable_time_step = false;
       double          gamma = 0.5, beta = 0.25;       // Newmark
       double          alpha = 1; // HHT's (OpenSees's convention: 1 is Newmark)
       double          d_lambda = 1, lambda_min = 1, lambda_max = 1; // LoadControl
@@ -163,6 +167,21 @@ namespace poundfe
       int analyze(unsigned int n_steps, double dt, const std::function<void()> &after_step,
                   const std::function<void(const std::string &)> &warn);
 
+      /// `analyze n dt dtMin dtMax Jd` of a VariableTransient analysis
+      /// (VariableTimeStepDirectIntegrationAnalysis::analyze): steps until
+      /// their sum reaches n dt, each next one the last times Jd over the
+      /// test's iterations (determineDt), within [dtMin, dtMax]; a failed
+      /// step is reverted and tried again shorter, and ends the analysis
+      /// (-3) when it was not longer than dtMin.
+      struct VariableSteps
+      {
+        unsigned int n_steps = 0;
+        double       dt = 0, dt_min = 0, dt_max = 0;
+        int          jd = 1;
+      };
+      int analyze_variable(const VariableSteps &steps, const std::function<void()> &after_step,
+                           const std::function<void(const std::string &)> &warn);
+
       /// The lowest n eigenvalues omega^2 of K_t phi = omega^2 M phi.
       std::vector<double> eigenvalues(unsigned int n);
 
@@ -203,6 +222,11 @@ namespace poundfe
       /// analyze the Rayleigh factors alone (`rayleigh` may have changed).
       void   list_elements(bool renumbered);
       bool   step(double dt, std::string &why);
+      /// The checks and settings every `analyze` starts with.
+      void   begin_analysis(const std::function<void(const std::string &)> &warn);
+      /// One step of dt from the committed state, committed; false (why
+      /// said, the elements reverted) when it failed.
+      bool   advance(double dt, std::string &why);
       /// DisplacementControl's predictor (newStep).
       bool   displacement_step(std::string &why);
       /// DisplacementControl's corrector of a Newton iterate dx (update).
@@ -234,6 +258,9 @@ namespace poundfe
       /// HHT: U_alpha, V_alpha from U_n, V_n and the trial U, V.
       void   update_alpha_point();
       double test_norm(const Vector &dx, const Vector &r) const;
+      /// Whether NewtonLineSearch's own copy of the test (its theOtherTest,
+      /// started afresh at every iteration) is met by the Newton step.
+      bool   fresh_test_met(const Vector &dx, const Vector &r) const;
       /// The test's line of print flag 1 (each iteration) or 2 (convergence).
       void   print_iteration(unsigned int iteration, double norm) const;
       void   commit();

@@ -16,6 +16,7 @@
 
 #include <poundfe/opensees/opensees_domain.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -85,6 +86,13 @@ namespace poundfe
       virtual void record(const Domain &domain);
       /// Writes the last lines and puts the file in place.
       virtual void finish();
+      /// `reset` (OpenSees's Recorder::restart): the Envelope recorders
+      /// start their extremes again; the others go on.
+      virtual void restart() {}
+      /// Whether it records the node or the element (`remove node`,
+      /// `remove element` refuse what a recorder records).
+      virtual bool records_node(int /*tag*/) const { return false; }
+      virtual bool records_element(int /*tag*/) const { return false; }
 
     protected:
       /// The line's values after the time.
@@ -111,6 +119,10 @@ namespace poundfe
     public:
       using Spec = NodeRecorderSpec;
       explicit NodeRecorder(NodeRecorderSpec spec);
+      bool records_node(const int tag) const override
+      {
+        return std::find(spec.nodes.begin(), spec.nodes.end(), tag) != spec.nodes.end();
+      }
 
     protected:
       void             values(const Domain &domain, std::vector<double> &line) override;
@@ -131,6 +143,10 @@ namespace poundfe
     public:
       using Spec = ElementRecorderSpec;
       explicit ElementRecorder(ElementRecorderSpec spec);
+      bool records_element(const int tag) const override
+      {
+        return std::find(spec.elements.begin(), spec.elements.end(), tag) != spec.elements.end();
+      }
 
     protected:
       void values(const Domain &domain, std::vector<double> &line) override;
@@ -155,6 +171,13 @@ namespace poundfe
     {
     public:
       DriftRecorder(DriftRecorderSpec spec, const Domain &domain);
+      bool records_node(const int tag) const override
+      {
+        for (const auto &pair : pairs)
+          if (pair[0] == tag || pair[1] == tag)
+            return true;
+        return false;
+      }
       /// With no pair kept, nothing: no file, as OpenSees's.
       void record(const Domain &domain) override;
       void finish() override;
@@ -182,6 +205,7 @@ namespace poundfe
       explicit EnvelopeRecorder(typename Values::Spec spec);
       void record(const Domain &domain) override;
       void finish() override;
+      void restart() override { first = true; }
 
     private:
       std::vector<double> current;
