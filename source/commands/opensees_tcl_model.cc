@@ -6,6 +6,8 @@
 #include <poundfe/laws/material_registry.h>
 #include <poundfe/laws/viscous_damper.h>
 
+#include <poundfe/opensees/opensees_section_links.h>
+
 #include "opensees_tcl.h"
 
 #include <algorithm>
@@ -502,6 +504,89 @@ namespace poundfe
           unsupported("element truss -rho outside -ndm 2");
       }
 
+      /// A 0|1 flag's value (-doRayleigh, -cMass), the option named when
+      /// it is neither.
+      bool
+      flag_value(Words &w, const std::string &element, const std::string &option)
+      {
+        const int flag = w.integer(("the " + option + " flag").c_str());
+        if (flag != 0 && flag != 1)
+          throw ScriptError(element + ": " + option + " takes 0 or 1, not " + text_of(flag));
+        return flag == 1;
+      }
+
+      /// zeroLengthSection tag i j secTag <-orient x1 x2 x3 yp1 yp2 yp3>
+      /// <-doRayleigh <0|1>> (Rayleigh-damped by default, as OpenSees's);
+      /// in 2D, -orient's x alone too (OpenSeesPy's form: y across x).
+      void
+      zero_length_section(opensees::Domain &d, Words &w)
+      {
+        const int                       tag  = w.integer("the element's tag");
+        const std::string               name = "zeroLengthSection " + text_of(tag);
+        opensees::ZeroLengthSectionData z;
+        z.nodes    = {{w.integer("node i"), w.integer("node j")}};
+        z.section  = w.integer("the section's tag");
+        z.rayleigh = true;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-orient")
+              {
+                for (double &x : z.x)
+                  x = w.real("a component of x");
+                if (d.ndm == 2 && (w.done() || w.peek()[0] == '-'))
+                  z.y = {{-z.x[1], z.x[0], 0.0}};
+                else
+                  for (double &y : z.y)
+                    y = w.real("a component of yp");
+              }
+            else if (option == "-doRayleigh")
+              z.rayleigh = w.done() || w.peek()[0] == '-' || flag_value(w, name, option);
+            else
+              unsupported("element zeroLengthSection option '" + option + "'");
+          }
+        add_element(d, opensees::make_zero_length_section(d, tag, z));
+      }
+
+      /// corotTruss tag i j A matTag <-rho r> <-cMass 0|1> <-doRayleigh 0|1>:
+      /// -rho lumped (rho L/2 on each end's translations); -cMass 1 with a
+      /// mass refused (poundfe's M of a script is diagonal).
+      void
+      corot_truss(opensees::Domain &d, Words &w)
+      {
+        const int          tag  = w.integer("the element's tag");
+        const std::string  name = "corotTruss " + text_of(tag);
+        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
+        const double       area     = w.real("A");
+        const int          material = w.integer("the material's tag");
+        double             rho      = 0;
+        bool               rayleigh = false, consistent = false;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-rho")
+              rho = w.real("the mass per length");
+            else if (option == "-cMass")
+              consistent = flag_value(w, name, option);
+            else if (option == "-doRayleigh")
+              rayleigh = flag_value(w, name, option);
+            else
+              throw ScriptError("invalid option " + option + " in: element " + name +
+                                " $iNode $jNode $A $matTag <-rho $rho> <-cMass $flag> "
+                                "<-doRayleigh $flag>");
+          }
+        if (consistent && rho != 0)
+          unsupported("element corotTruss -cMass 1 with a mass (a consistent mass matrix)");
+        add_element(d, opensees::make_corot_truss(d, tag, nodes, area, material, rayleigh));
+        const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
+        double       L2 = 0;
+        for (unsigned int k = 0; k < d.ndm; ++k)
+          L2 += (b[k] - a[k]) * (b[k] - a[k]);
+        // CorotTruss::getResistingForce does not subtract its inertia load:
+        // the reactions leave it out (add_node_masses, not add_lumped_mass)
+        add_node_masses(d, tag, nodes, 0.5 * rho * std::sqrt(L2));
+      }
+
       void
       element(Session &s, Words &w)
       {
@@ -513,6 +598,10 @@ namespace poundfe
           zero_length(d, w);
         else if (type == "truss")
           truss(d, w);
+        else if (type == "zeroLengthSection")
+          zero_length_section(d, w);
+        else if (type == "corotTruss" || type == "CorotTruss")
+          corot_truss(d, w);
         else if (type == "twoNodeLink")
           two_node_link(d, w);
         else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
