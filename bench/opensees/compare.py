@@ -181,6 +181,15 @@ CASES = {
     "zero_length_late": ("zero_length_late.tcl", [], 1e-9),
     # the same with a truss added (Truss's -useInitialDisp, OpenSees's default)
     "truss_late": ("zero_length_late.tcl", ["truss"], 1e-9),
+    # zeroLengthSection hinges (Fiber, Aggregator, Elastic; -orient,
+    # -doRayleigh 0) under elastic columns, in the plane and in space
+    # (measured 3e-15 and 8e-15)
+    "zls_2d": ("zero_length_section.tcl", ["2d"], 1e-9),
+    "zls_3d": ("zero_length_section.tcl", ["3d"], 1e-9),
+    # corotTruss: a shallow truss pushed through its snap-through (the same
+    # bits), a yielding tripod under two components (measured 1.6e-12)
+    "corot_2d": ("corot_truss.tcl", ["2d"], 1e-9),
+    "corot_3d": ("corot_truss.tcl", ["3d"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

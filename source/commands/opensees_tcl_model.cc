@@ -534,7 +534,9 @@ namespace poundfe
               {
                 for (double &x : z.x)
                   x = w.real("a component of x");
-                if (d.ndm == 2 && (w.done() || w.peek()[0] == '-'))
+                double value;
+                if (d.ndm == 2 &&
+                    (w.done() || Tcl_GetDouble(nullptr, w.peek().c_str(), &value) != TCL_OK))
                   z.y = {{-z.x[1], z.x[0], 0.0}};
                 else
                   for (double &y : z.y)
