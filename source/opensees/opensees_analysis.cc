@@ -299,6 +299,7 @@ namespace poundfe
         }
       domain.changed = false;
       numbered       = true;
+      modal_numbered = false;
       analysed       = false;
     }
 
@@ -602,6 +603,9 @@ namespace poundfe
         r[t.equation] -= t.mass * ground[t.dof];
       if (!uniform_mass_damping)
         r -= mass_damping_of_equation.cwiseProduct(v);
+      if (modal_damping_active())
+        r -= modal_mass_shapes *
+             modal_coefficients.cwiseProduct(modal_mass_shapes.transpose() * v);
       return r;
     }
 
@@ -694,6 +698,9 @@ namespace poundfe
           dense_tangent.diagonal() += diagonal * mass_of_equation;
           if (!uniform_mass_damping)
             dense_tangent.diagonal() += c_c * mass_damping_of_equation;
+          if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
+            dense_tangent += c_c * modal_mass_shapes * modal_coefficients.asDiagonal() *
+                             modal_mass_shapes.transpose();
           if (!dense_tangent.allFinite())
             throw NumericalError(not_finite);
           const char *singular = "LU: the effective matrix is singular";
@@ -717,6 +724,15 @@ namespace poundfe
                                      diagonal * mass_of_equation[i] +
                                        (uniform_mass_damping ? 0.0 :
                                                                c_c * mass_damping_of_equation[i]));
+      if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
+        {
+          const Matrix C = modal_mass_shapes * modal_coefficients.asDiagonal() *
+                           modal_mass_shapes.transpose();
+          for (unsigned int j = 0; j < n_equations; ++j)
+            for (unsigned int i = 0; i < n_equations; ++i)
+              if (C(i, j) != 0)
+                tangent_entries.emplace_back(i, j, c_c * C(i, j));
+        }
       tangent_matrix.resize(n_equations, n_equations);
       tangent_matrix.setFromTriplets(tangent_entries.begin(), tangent_entries.end());
       if (!Eigen::Map<const Vector>(tangent_matrix.valuePtr(), tangent_matrix.nonZeros()).allFinite())
@@ -1271,12 +1287,17 @@ namespace poundfe
       if (solution.info() != Eigen::Success)
         throw ScriptError("eigen: the stiffness matrix is not positive definite");
       std::vector<double> lambda;
+      Matrix              shapes(n_equations, n);
       for (int i = solution.eigenvalues().size() - 1; i >= 0 && lambda.size() < n; --i)
         if (solution.eigenvalues()[i] > 0)
-          lambda.push_back(1 / solution.eigenvalues()[i]);
+          {
+            shapes.col(lambda.size()) = solution.eigenvectors().col(i);
+            lambda.push_back(1 / solution.eigenvalues()[i]);
+          }
       if (lambda.size() < n)
         throw ScriptError("eigen: " + std::to_string(n) + " modes asked for, the model has " +
                           std::to_string(lambda.size()) + " with mass");
+      keep_modes(shapes, lambda);
       return lambda;
     }
   } // namespace opensees

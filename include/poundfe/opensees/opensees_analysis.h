@@ -268,6 +268,18 @@ namespace poundfe
       void number_inertia();
       /// mass_damping_of_equation and uniform_mass_damping (in number()).
       void number_mass_damping();
+      /// OpenSees 3.8's modal damping (IncrementalIntegrator::
+      /// addModalDampingForce, addModalDampingMatrix): C = W diag(c) W^T,
+      /// W's columns M phi_i, c_i = 2 zeta_i omega_i; renewed from the
+      /// domain's modes when they or the equations change.
+      Matrix       modal_mass_shapes;
+      Vector       modal_coefficients;
+      unsigned int modal_stamp_seen = 0;
+      bool         modal_numbered   = false;
+      /// Whether modal damping acts (its vectors renewed first).
+      bool modal_damping_active();
+      /// The domain's M-normalised modes from the solution of `eigen`.
+      void keep_modes(const Matrix &shapes, const std::vector<double> &eigenvalues);
       /// r[e] += c value for the equation's terms (none where fixed or imposed).
       void add_to(Vector &r, int eq, double value) const;
       /// An equation's terms: itself, or a diaphragm's combination.
