@@ -472,36 +472,36 @@ namespace poundfe
         add_node_masses(d, tag, data.nodes, 0.5 * data.mass); // TwoNodeLink::getMass
       }
 
-      /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>
-      void
-      truss(opensees::Domain &d, Words &w)
+      /// The length of a member between its nodes' coordinates.
+      double
+      member_length(const opensees::Domain &d, const std::array<int, 2> &nodes)
       {
-        const int          tag = w.integer("the element's tag");
-        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
-        const double       area     = w.real("A");
-        const int          material = w.integer("the material's tag");
-        double             rho      = 0;
-        bool               rayleigh = false;
-        while (!w.done())
+        const auto &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
+        double      L2 = 0;
+        for (unsigned int k = 0; k < std::min(a.size(), b.size()); ++k)
+          L2 += (b[k] - a[k]) * (b[k] - a[k]);
+        return std::sqrt(L2);
+      }
+
+      /// A truss's consistent mass (Truss and CorotTruss::getMass with
+      /// cMass): rho L/6 [2 1; 1 2] on each of its ends' ndm translations.
+      void
+      add_consistent_truss_mass(opensees::Domain &d, const int element,
+                                const std::array<int, 2> &nodes, const double rho,
+                                const bool load_in_reaction)
+      {
+        if (rho == 0)
+          return;
+        const double       m   = rho * member_length(d, nodes) / 6.0;
+        const unsigned int ndf = d.ndf;
+        opensees::Matrix   M   = opensees::Matrix::Zero(2 * ndf, 2 * ndf);
+        for (unsigned int i = 0; i < std::min(d.ndm, ndf); ++i)
           {
-            const std::string option = w.word("an option");
-            if (option == "-rho")
-              rho = w.real("the mass per length");
-            else if (option == "-doRayleigh")
-              {
-                const int flag = w.integer("the -doRayleigh flag");
-                if (flag != 0 && flag != 1)
-                  unsupported("element truss -doRayleigh " + text_of(flag));
-                rayleigh = flag == 1;
-              }
-            else
-              unsupported("element truss option '" + option + "'");
+            M(i, i) = M(ndf + i, ndf + i) = 2.0 * m;
+            M(i, ndf + i) = M(ndf + i, i) = m;
           }
-        add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
-        if (d.ndm == 2)
-          add_lumped_mass(d, tag, nodes, rho);
-        else if (rho != 0)
-          unsupported("element truss -rho outside -ndm 2");
+        d.consistent_masses.push_back({element, {nodes[0], nodes[1]}, M, load_in_reaction});
+        d.changed = true;
       }
 
       /// A 0|1 flag's value (-doRayleigh, -cMass), the option named when
@@ -513,6 +513,42 @@ namespace poundfe
         if (flag != 0 && flag != 1)
           throw ScriptError(element + ": " + option + " takes 0 or 1, not " + text_of(flag));
         return flag == 1;
+      }
+
+      /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>
+      void
+      truss(opensees::Domain &d, Words &w)
+      {
+        const int          tag = w.integer("the element's tag");
+        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
+        const double       area     = w.real("A");
+        const int          material = w.integer("the material's tag");
+        double             rho      = 0;
+        bool               rayleigh = false, consistent = false;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-rho")
+              rho = w.real("the mass per length");
+            else if (option == "-cMass")
+              consistent = flag_value(w, "truss " + text_of(tag), option);
+            else if (option == "-doRayleigh")
+              {
+                const int flag = w.integer("the -doRayleigh flag");
+                if (flag != 0 && flag != 1)
+                  unsupported("element truss -doRayleigh " + text_of(flag));
+                rayleigh = flag == 1;
+              }
+            else
+              unsupported("element truss option '" + option + "'");
+          }
+        add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
+        if (d.ndm == 2 && consistent)
+          add_consistent_truss_mass(d, tag, nodes, rho, true);
+        else if (d.ndm == 2)
+          add_lumped_mass(d, tag, nodes, rho);
+        else if (rho != 0)
+          unsupported("element truss -rho outside -ndm 2");
       }
 
       /// zeroLengthSection tag i j secTag <-orient x1 x2 x3 yp1 yp2 yp3>
@@ -577,16 +613,13 @@ namespace poundfe
                                 " $iNode $jNode $A $matTag <-rho $rho> <-cMass $flag> "
                                 "<-doRayleigh $flag>");
           }
-        if (consistent && rho != 0)
-          unsupported("element corotTruss -cMass 1 with a mass (a consistent mass matrix)");
         add_element(d, opensees::make_corot_truss(d, tag, nodes, area, material, rayleigh));
-        const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
-        double       L2 = 0;
-        for (unsigned int k = 0; k < d.ndm; ++k)
-          L2 += (b[k] - a[k]) * (b[k] - a[k]);
         // CorotTruss::getResistingForce does not subtract its inertia load:
         // the reactions leave it out (add_node_masses, not add_lumped_mass)
-        add_node_masses(d, tag, nodes, 0.5 * rho * std::sqrt(L2));
+        if (consistent)
+          add_consistent_truss_mass(d, tag, nodes, rho, false);
+        else
+          add_node_masses(d, tag, nodes, 0.5 * rho * member_length(d, nodes));
       }
 
       void

@@ -287,6 +287,7 @@ namespace poundfe
         }
       number_diaphragms();
       number_inertia();
+      number_coupled_masses();
       number_mass_damping();
       beam_loads_taken = false;
       for (auto &[tag, element] : domain.elements)
@@ -601,6 +602,8 @@ namespace poundfe
           t.mass * (A[t.equation] + ground[t.dof] + alpha_m * v[t.equation]);
       for (const InertiaTerm &t : second_ground_terms)
         r[t.equation] -= t.mass * ground[t.dof];
+      if (!coupled_masses.empty())
+        subtract_coupled_inertia(r, v);
       if (!uniform_mass_damping)
         r -= mass_damping_of_equation.cwiseProduct(v);
       if (modal_damping_active())
@@ -696,6 +699,7 @@ namespace poundfe
           dense_tangent.setZero(n_equations, n_equations);
           add_element_tangents(c_k, c_c);
           dense_tangent.diagonal() += diagonal * mass_of_equation;
+          add_coupled_masses(c_m, c_c);
           if (!uniform_mass_damping)
             dense_tangent.diagonal() += c_c * mass_damping_of_equation;
           if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
@@ -724,6 +728,7 @@ namespace poundfe
                                      diagonal * mass_of_equation[i] +
                                        (uniform_mass_damping ? 0.0 :
                                                                c_c * mass_damping_of_equation[i]));
+      add_coupled_masses(c_m, c_c);
       if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
         {
           const Matrix C = modal_mass_shapes * modal_coefficients.asDiagonal() *
@@ -1280,7 +1285,9 @@ namespace poundfe
         throw ScriptError("eigen: " + why);
       assemble_tangent(1, 0, 0);
       const Matrix K = dense() ? dense_tangent : Matrix(tangent_matrix);
-      const Matrix M = mass_of_equation.asDiagonal();
+      Matrix M = mass_of_equation.asDiagonal();
+      for (Eigen::Index j = 0; j < M.cols() && !coupled_masses.empty(); ++j)
+        M.col(j) = mass_times(Matrix::Identity(n_equations, n_equations).col(j));
       // K phi = lambda M phi as M phi = (1/lambda) K phi: M may be singular
       // (massless rotations), K is positive definite for a stable structure
       Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solution(M, K);

@@ -23,14 +23,14 @@ namespace poundfe
       public:
         CorotTruss(const Domain &domain, const int tag, const std::array<int, 2> nodes,
                    const Eigen::Matrix3d &R, const double L0, const double area,
-                   const int material, const bool rayleigh)
+                   std::unique_ptr<UniaxialLaw> material, const bool rayleigh)
           : Element(tag, {nodes[0], nodes[1]})
           , ndm(domain.ndm)
           , ndf(domain.ndf)
           , R(R)
           , L0(L0)
           , area(area)
-          , law(make_domain_material(domain, material))
+          , law(std::move(material))
           , rayleigh(rayleigh)
           , d(L0, 0, 0)
           , Ln(L0)
@@ -169,6 +169,7 @@ namespace poundfe
                      const double area, const int material, const bool rayleigh)
     {
       const std::string name = "corotTruss " + std::to_string(tag);
+      auto              law  = make_domain_material(domain, material); // OpenSees's order
       const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
       Eigen::Vector3d chord = Eigen::Vector3d::Zero();
       for (unsigned int k = 0; k < domain.ndm; ++k)
@@ -177,7 +178,7 @@ namespace poundfe
       if (!(L0 > 0))
         throw ScriptError(name + " has zero length");
       return std::make_unique<CorotTruss>(domain, tag, nodes, chord_axes(chord / L0), L0, area,
-                                          material, rayleigh);
+                                          std::move(law), rayleigh);
     }
   } // namespace opensees
 } // namespace poundfe

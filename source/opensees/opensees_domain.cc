@@ -225,6 +225,16 @@ namespace poundfe
         if (m.load_in_reaction)
           for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
             r[m.node][k] += m.mass * a_g[k];
+      for (const ConsistentMass &m : consistent_masses)
+        if (m.load_in_reaction)
+          {
+            Vector g(m.matrix.rows());
+            for (Eigen::Index i = 0; i < g.size(); ++i)
+              g[i] = a_g[i % ndf];
+            const Vector load = m.matrix * g;
+            for (Eigen::Index i = 0; i < g.size(); ++i)
+              r[m.nodes[i / ndf]][i % ndf] += load[i];
+          }
       return r;
     }
 

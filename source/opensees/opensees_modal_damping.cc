@@ -25,7 +25,7 @@ namespace poundfe
         {
           Vector phi = shapes.col(i);
           // the solver's phi^T K phi = 1: rescaled to phi^T M phi = 1
-          const double mass = phi.dot(mass_of_equation.cwiseProduct(phi));
+          const double mass = phi.dot(mass_times(phi));
           if (mass > 0)
             phi /= std::sqrt(mass);
           std::map<int, std::vector<double>> by_node;
@@ -71,7 +71,7 @@ namespace poundfe
                 if (equation[k] >= 0)
                   modal_mass_shapes(equation[k], i) = values[k];
             }
-          modal_mass_shapes.col(i) = modal_mass_shapes.col(i).cwiseProduct(mass_of_equation);
+          modal_mass_shapes.col(i) = mass_times(modal_mass_shapes.col(i));
         }
       if (modal_coefficients.isZero(0))
         modal_coefficients.resize(0);

@@ -304,6 +304,19 @@ namespace poundfe
         bool ground_load_twice = false;
       };
       std::vector<LumpedMass> lumped_masses;
+      /// An element's consistent mass (-cMass 1): its matrix on the
+      /// element's DOFs (node after node, -ndf each), in M beside the
+      /// nodes' diagonal; alpha_M damps it when the element is
+      /// Rayleigh-damped. Its ground-motion load -M r a_g enters the
+      /// reactions when `load_in_reaction` (a truss's, as LumpedMass's).
+      struct ConsistentMass
+      {
+        int              element = 0;
+        std::vector<int> nodes;
+        Matrix           matrix;
+        bool             load_in_reaction = false;
+      };
+      std::vector<ConsistentMass> consistent_masses;
       /// The modes of the last `eigen` (OpenSees's Domain eigenvalues and
       /// its DOF groups' eigenvectors), M-normalised, by node and DOF.
       struct Modes
