@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <set>
 
@@ -515,39 +516,54 @@ namespace poundfe
         return flag == 1;
       }
 
-      /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>
-      void
-      truss(opensees::Domain &d, Words &w)
+      /// The words of truss and corotTruss: tag i j A matTag <-rho r>
+      /// <-cMass 0|1> <-doRayleigh 0|1>; `unknown` refuses another option.
+      struct TrussWords
       {
-        const int          tag = w.integer("the element's tag");
-        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
-        const double       area     = w.real("A");
-        const int          material = w.integer("the material's tag");
-        double             rho      = 0;
+        int                tag = 0;
+        std::array<int, 2> nodes{};
+        double             area = 0, rho = 0;
+        int                material = 0;
         bool               rayleigh = false, consistent = false;
+      };
+      TrussWords
+      truss_words(Words &w, const std::string &type,
+                  const std::function<void(const std::string &, const std::string &)> &unknown)
+      {
+        TrussWords t;
+        t.tag                  = w.integer("the element's tag");
+        const std::string name = type + " " + text_of(t.tag);
+        t.nodes                = {{w.integer("node i"), w.integer("node j")}};
+        t.area                 = w.real("A");
+        t.material             = w.integer("the material's tag");
         while (!w.done())
           {
             const std::string option = w.word("an option");
             if (option == "-rho")
-              rho = w.real("the mass per length");
+              t.rho = w.real("the mass per length");
             else if (option == "-cMass")
-              consistent = flag_value(w, "truss " + text_of(tag), option);
+              t.consistent = flag_value(w, name, option);
             else if (option == "-doRayleigh")
-              {
-                const int flag = w.integer("the -doRayleigh flag");
-                if (flag != 0 && flag != 1)
-                  unsupported("element truss -doRayleigh " + text_of(flag));
-                rayleigh = flag == 1;
-              }
+              t.rayleigh = flag_value(w, name, option);
             else
-              unsupported("element truss option '" + option + "'");
+              unknown(name, option);
           }
-        add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
-        if (d.ndm == 2 && consistent)
-          add_consistent_truss_mass(d, tag, nodes, rho, true);
+        return t;
+      }
+
+      /// truss tag i j A matTag <-rho rho> <-cMass 0|1> <-doRayleigh 0|1>
+      void
+      truss(opensees::Domain &d, Words &w)
+      {
+        const TrussWords t = truss_words(w, "truss", [](const std::string &, const std::string &o) {
+          unsupported("element truss option '" + o + "'");
+        });
+        add_element(d, opensees::make_truss(d, t.tag, t.nodes, t.area, t.material, t.rayleigh));
+        if (d.ndm == 2 && t.consistent)
+          add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, true);
         else if (d.ndm == 2)
-          add_lumped_mass(d, tag, nodes, rho);
-        else if (rho != 0)
+          add_lumped_mass(d, t.tag, t.nodes, t.rho);
+        else if (t.rho != 0)
           unsupported("element truss -rho outside -ndm 2");
       }
 
@@ -587,39 +603,24 @@ namespace poundfe
       }
 
       /// corotTruss tag i j A matTag <-rho r> <-cMass 0|1> <-doRayleigh 0|1>:
-      /// -rho lumped (rho L/2 on each end's translations); -cMass 1 with a
-      /// mass refused (poundfe's M of a script is diagonal).
+      /// -rho lumped (rho L/2 on each end's translations) or consistent.
       void
       corot_truss(opensees::Domain &d, Words &w)
       {
-        const int          tag  = w.integer("the element's tag");
-        const std::string  name = "corotTruss " + text_of(tag);
-        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
-        const double       area     = w.real("A");
-        const int          material = w.integer("the material's tag");
-        double             rho      = 0;
-        bool               rayleigh = false, consistent = false;
-        while (!w.done())
-          {
-            const std::string option = w.word("an option");
-            if (option == "-rho")
-              rho = w.real("the mass per length");
-            else if (option == "-cMass")
-              consistent = flag_value(w, name, option);
-            else if (option == "-doRayleigh")
-              rayleigh = flag_value(w, name, option);
-            else
-              throw ScriptError("invalid option " + option + " in: element " + name +
-                                " $iNode $jNode $A $matTag <-rho $rho> <-cMass $flag> "
-                                "<-doRayleigh $flag>");
-          }
-        add_element(d, opensees::make_corot_truss(d, tag, nodes, area, material, rayleigh));
+        const TrussWords t =
+          truss_words(w, "corotTruss", [](const std::string &name, const std::string &option) {
+            throw ScriptError("invalid option " + option + " in: element " + name +
+                              " $iNode $jNode $A $matTag <-rho $rho> <-cMass $flag> "
+                              "<-doRayleigh $flag>");
+          });
+        add_element(d, opensees::make_corot_truss(d, t.tag, t.nodes, t.area, t.material,
+                                                  t.rayleigh));
         // CorotTruss::getResistingForce does not subtract its inertia load:
         // the reactions leave it out (add_node_masses, not add_lumped_mass)
-        if (consistent)
-          add_consistent_truss_mass(d, tag, nodes, rho, false);
+        if (t.consistent)
+          add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, false);
         else
-          add_node_masses(d, tag, nodes, 0.5 * rho * member_length(d, nodes));
+          add_node_masses(d, t.tag, t.nodes, 0.5 * t.rho * member_length(d, t.nodes));
       }
 
       void

@@ -1,6 +1,6 @@
 // OpenSees's ZeroLengthSection (element/zeroLength/ZeroLengthSection.cpp,
 // OpenSees 3.8): a section between two nodes at one point. With the local
-// axes x, y = (x × yp) × x... normalised, z = x × yp (rows of T), the
+// axes x, z = x × yp, y = z × x, normalised (the rows of T), the
 // section's deformations are relative displacements of node j to node i,
 //   e = A u,  A = [-A_j  A_j],
 // row by resultant: P  = x · Δu (translations), Mz = z · Δθ, My = y · Δθ,

@@ -296,6 +296,35 @@ class ConventionsTest(TestCase):
         self.assertAlmostEqual(ops.eleResponse(1, 'deformation')[0], length - 5.0, delta=1e-14)
         self.assertAlmostEqual(ops.eleResponse(1, 'axialForce')[0] / force, 1.0, delta=1e-12)
 
+    def test_modal_damping_of_one_mode_is_mass_proportional(self):
+        # one mode (k 400, m 1: omega 20): modalDamping 0.05 gives
+        # C = 2 zeta omega m = 2.0, the same as rayleigh 2.0 0 0 0
+        def history(damping):
+            sdof(k=400.0)
+            ops.eigen('-fullGenLapack', 1)
+            damping()
+            values = [math.sin(0.3 * i) for i in range(101)]
+            ops.timeSeries('Path', 1, '-dt', 0.01, '-values', *values)
+            ops.pattern('UniformExcitation', 1, 1, '-accel', 1)
+            ops.constraints('Plain')
+            ops.numberer('Plain')
+            ops.system('BandGeneral')
+            ops.test('NormDispIncr', 1.0e-12, 10)
+            ops.algorithm('Newton')
+            ops.integrator('Newmark', 0.5, 0.25)
+            ops.analysis('Transient')
+            result = []
+            for _ in range(100):
+                self.assertEqual(ops.analyze(1, 0.01), 0)
+                result.append(ops.nodeDisp(2, 1))
+            return result
+        modal = history(lambda: ops.modalDamping(0.05))
+        rayleigh = history(lambda: ops.rayleigh(2.0, 0.0, 0.0, 0.0))
+        undamped = history(lambda: None)
+        peak = max(abs(x) for x in rayleigh)
+        self.assertLess(max(abs(a - b) for a, b in zip(modal, rayleigh)), 1e-13 * peak)
+        self.assertGreater(max(abs(a - b) for a, b in zip(undamped, rayleigh)), 0.01 * peak)
+
     def test_wipe_between_two_models(self):
         recorded = os.path.join(self.tmp, "first.out")
         sdof(k=100.0)
