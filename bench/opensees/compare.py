@@ -218,6 +218,28 @@ CASES = {
     # remove element (a yielded link, a spring), node (its anchor), sp (a
     # fixity: the mass then swings) and timeSeries mid-record
     "remove_objects": ("remove_objects.tcl", [], 1e-9),
+    # zeroLengthSection hinges (Fiber, Aggregator, Elastic; -orient,
+    # -doRayleigh 0) under elastic columns, in the plane and in space
+    # (measured 3e-15 and 8e-15)
+    "zls_2d": ("zero_length_section.tcl", ["2d"], 1e-9),
+    "zls_3d": ("zero_length_section.tcl", ["3d"], 1e-9),
+    # corotTruss: a shallow truss pushed through its snap-through (the same
+    # bits), a yielding tripod under two components (measured 1.6e-12)
+    "corot_2d": ("corot_truss.tcl", ["2d"], 1e-9),
+    "corot_3d": ("corot_truss.tcl", ["3d"], 1e-9),
+    # modalDamping on a yielding three-storey frame: OpenSees's BandGeneral
+    # keeps only the modal damping matrix's entries inside the band in its
+    # tangent, so Newton's path differs (2.3e-9; with FullGeneral the two
+    # agree to 2.6e-14); modalDampingQ (the force alone) agrees to 4.7e-14
+    "modal_one": ("modal_damping.tcl", ["one"], 1e-8),
+    "modal_each": ("modal_damping.tcl", ["each"], 1e-8),
+    "modal_fewer": ("modal_damping.tcl", ["fewer"], 1e-8),
+    "modal_quasi": ("modal_damping.tcl", ["quasi"], 1e-12),
+    "modal_rayleigh": ("modal_damping.tcl", ["rayleigh"], 1e-8),
+    # -cMass 1 on truss and corotTruss: eigenvalues, a yielding truss's
+    # history and reactions (measured 3.2e-14), a yielding tripod (9.6e-13)
+    "cmass_truss": ("consistent_mass.tcl", ["truss"], 1e-9),
+    "cmass_corot": ("consistent_mass.tcl", ["corot"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -211,7 +211,7 @@ namespace poundfe
       define_unsupported(Tcl_Interp *interp, Session &session)
       {
         for (const char *name :
-             {"imposedMotion", "groundMotion", "modalDamping",
+             {"imposedMotion", "groundMotion",
               "printA", "printB", "printModel", "print",
               "basicDeformation", "basicForce", "localForce", "block2D", "block3D", "nDMaterial", "frictionModel",
               "database", "geomTransfPDelta", "mp", "domainChange", "remesh", "setNodeCoord",

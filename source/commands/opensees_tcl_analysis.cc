@@ -8,6 +8,7 @@
 #include "opensees_tcl.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <regex>
 #include <optional>
@@ -470,6 +471,43 @@ namespace poundfe
           set_result(w.interp, s.analysis->eigenvalues(n));
       }
 
+      /// modalDamping zeta... (modalDampingQ: `in_tangent` false): one
+      /// factor for every mode of the last `eigen`, or one per mode (0 for
+      /// those left out, extras ignored), with OpenSees 3.8's warnings.
+      void
+      modal_damping(Session &s, Words &w, const bool in_tangent)
+      {
+        const std::string name = w.name;
+        std::vector<double> factors;
+        while (!w.done())
+          factors.push_back(w.real("a damping factor"));
+        if (factors.empty())
+          throw ScriptError(name + " ?factor - not enough arguments to command");
+        for (const double zeta : factors)
+          if (!std::isfinite(zeta))
+            throw ScriptError(name + ": a damping factor is not finite");
+        const std::size_t n_modes = s.domain.modes.eigenvalues.size();
+        if (n_modes == 0)
+          s.warnings << "WARNING - " << name
+                     << " - eigen command needs to be called first - NO MODAL DAMPING APPLIED\n";
+        if (factors.size() != 1 && factors.size() < n_modes)
+          s.warnings << "WARNING " << name
+                     << " - fewer damping factors than modes were specified\n"
+                     << std::string(name.size() + 9, ' ')
+                     << "- zero damping will be applied to un-specified modes\n";
+        if (factors.size() > n_modes && n_modes > 0)
+          s.warnings << "WARNING " << name
+                     << " - more damping factors than modes were specifed\n"
+                     << std::string(name.size() + 9, ' ')
+                     << "- ignoring additional damping factors\n";
+        std::vector<double> zeta(n_modes, factors.size() == 1 ? factors[0] : 0.0);
+        for (std::size_t i = 0; factors.size() > 1 && i < std::min(n_modes, factors.size()); ++i)
+          zeta[i] = factors[i];
+        s.domain.modal_damping            = zeta;
+        s.domain.modal_damping_in_tangent = in_tangent;
+        ++s.domain.modal_stamp;
+      }
+
       /// nodeDisp/nodeVel/nodeAccel/nodeReaction/nodeCoord: one DOF's value
       /// (1-based) or the whole node's.
       void
@@ -636,6 +674,8 @@ namespace poundfe
       define(interp, session, "analysis", analysis);
       define(interp, session, "analyze", analyze);
       define(interp, session, "eigen", eigen);
+      define(interp, session, "modalDamping", [](Session &s, Words &w) { modal_damping(s, w, true); });
+      define(interp, session, "modalDampingQ", [](Session &s, Words &w) { modal_damping(s, w, false); });
       define(interp, session, "wipeAnalysis", wipe_analysis);
       define(interp, session, "eleForce", element_force);
       define(interp, session, "eleResponse", [](Session &s, Words &w) {

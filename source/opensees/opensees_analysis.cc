@@ -298,6 +298,7 @@ namespace poundfe
       else
         number_penalty();
       number_inertia();
+      number_coupled_masses();
       number_mass_damping();
       beam_loads_taken = false;
       for (auto &[tag, element] : domain.elements)
@@ -310,6 +311,7 @@ namespace poundfe
         }
       domain.changed = false;
       numbered       = true;
+      modal_numbered = false;
       analysed       = false;
     }
 
@@ -612,8 +614,13 @@ namespace poundfe
           t.mass * (A[t.equation] + ground[t.dof] + alpha_m * v[t.equation]);
       for (const InertiaTerm &t : second_ground_terms)
         r[t.equation] -= t.mass * ground[t.dof];
+      if (!coupled_masses.empty())
+        subtract_coupled_inertia(r, v);
       if (!uniform_mass_damping)
         r -= mass_damping_of_equation.cwiseProduct(v);
+      if (modal_damping_active())
+        r -= modal_mass_shapes *
+             modal_coefficients.cwiseProduct(modal_mass_shapes.transpose() * v);
       return r;
     }
 
@@ -705,8 +712,12 @@ namespace poundfe
           add_element_tangents(c_k, c_c);
           add_penalty_tangent();
           dense_tangent.diagonal() += diagonal * mass_of_equation;
+          add_coupled_masses(c_m, c_c);
           if (!uniform_mass_damping)
             dense_tangent.diagonal() += c_c * mass_damping_of_equation;
+          if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
+            dense_tangent += c_c * modal_mass_shapes * modal_coefficients.asDiagonal() *
+                             modal_mass_shapes.transpose();
           if (!dense_tangent.allFinite())
             throw NumericalError(not_finite);
           const char *singular = "LU: the effective matrix is singular";
@@ -731,6 +742,16 @@ namespace poundfe
                                      diagonal * mass_of_equation[i] +
                                        (uniform_mass_damping ? 0.0 :
                                                                c_c * mass_damping_of_equation[i]));
+      add_coupled_masses(c_m, c_c);
+      if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
+        {
+          const Matrix C = modal_mass_shapes * modal_coefficients.asDiagonal() *
+                           modal_mass_shapes.transpose();
+          for (unsigned int j = 0; j < n_equations; ++j)
+            for (unsigned int i = 0; i < n_equations; ++i)
+              if (C(i, j) != 0)
+                tangent_entries.emplace_back(i, j, c_c * C(i, j));
+        }
       tangent_matrix.resize(n_equations, n_equations);
       tangent_matrix.setFromTriplets(tangent_entries.begin(), tangent_entries.end());
       if (!Eigen::Map<const Vector>(tangent_matrix.valuePtr(), tangent_matrix.nonZeros()).allFinite())
@@ -1374,19 +1395,26 @@ namespace poundfe
         throw ScriptError("eigen: " + why);
       assemble_tangent(1, 0, 0);
       const Matrix K = dense() ? dense_tangent : Matrix(tangent_matrix);
-      const Matrix M = mass_of_equation.asDiagonal();
+      Matrix M = mass_of_equation.asDiagonal();
+      for (Eigen::Index j = 0; j < M.cols() && !coupled_masses.empty(); ++j)
+        M.col(j) = mass_times(Matrix::Identity(n_equations, n_equations).col(j));
       // K phi = lambda M phi as M phi = (1/lambda) K phi: M may be singular
       // (massless rotations), K is positive definite for a stable structure
       Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solution(M, K);
       if (solution.info() != Eigen::Success)
         throw ScriptError("eigen: the stiffness matrix is not positive definite");
       std::vector<double> lambda;
+      Matrix              shapes(n_equations, n);
       for (int i = solution.eigenvalues().size() - 1; i >= 0 && lambda.size() < n; --i)
         if (solution.eigenvalues()[i] > 0)
-          lambda.push_back(1 / solution.eigenvalues()[i]);
+          {
+            shapes.col(lambda.size()) = solution.eigenvectors().col(i);
+            lambda.push_back(1 / solution.eigenvalues()[i]);
+          }
       if (lambda.size() < n)
         throw ScriptError("eigen: " + std::to_string(n) + " modes asked for, the model has " +
                           std::to_string(lambda.size()) + " with mass");
+      keep_modes(shapes, lambda);
       return lambda;
     }
   } // namespace opensees

@@ -27,6 +27,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/beam_column.h>
 #include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/opensees/opensees_section_links.h>
 #include <poundfe/sections/aggregator_section.h>
 #include <poundfe/sections/elastic_section.h>
 
@@ -142,20 +143,6 @@ namespace poundfe
       values_of(const V &v)
       {
         return std::vector<double>(v.data(), v.data() + v.size());
-      }
-
-      /// A section's resultants or deformations in OpenSees's order of its
-      /// codes: an Aggregator's in the order the script gave its dofs.
-      std::vector<double>
-      section_values(const SectionLaw &s, const SectionVector &v)
-      {
-        const auto *aggregator = dynamic_cast<const AggregatorSection *>(&s);
-        if (!aggregator)
-          return values_of(v);
-        std::vector<double> values;
-        for (const unsigned int r : aggregator->response_order())
-          values.push_back(v[r]);
-        return values;
       }
 
       /// The responses of both dimensions: basicForce (q), basicDeformation,
@@ -385,6 +372,17 @@ namespace poundfe
       const ElasticSection section(E * A, E * I);
       return std::make_unique<BeamColumnElement>(
         tag, nodes, std::make_unique<DispBeamColumn<2>>(transf, section, 2));
+    }
+    std::vector<double>
+    section_values(const SectionLaw &section, const SectionVector &v)
+    {
+      const auto *aggregator = dynamic_cast<const AggregatorSection *>(&section);
+      if (!aggregator)
+        return std::vector<double>(v.data(), v.data() + v.size());
+      std::vector<double> values;
+      for (const unsigned int r : aggregator->response_order())
+        values.push_back(v[r]);
+      return values;
     }
   } // namespace opensees
 } // namespace poundfe

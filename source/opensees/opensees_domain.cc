@@ -282,6 +282,31 @@ namespace poundfe
                 }
             }
       }
+
+      /// The element's consistent mass (-cMass) times x(i), x of the
+      /// element's DOF i (its node's DOF i % ndf), added to f.
+      template <typename X>
+      void
+      add_consistent_mass_times(const Domain &d, const Element &element, const X &x, Vector &f)
+      {
+        for (const Domain::ConsistentMass &m : d.consistent_masses)
+          if (m.element == element.tag)
+            {
+              Vector values(m.matrix.rows());
+              for (Eigen::Index i = 0; i < values.size(); ++i)
+                values[i] = x(i);
+              f += m.matrix * values;
+            }
+      }
+
+      bool
+      has_consistent_ground_load(const Domain &d, const Element &element)
+      {
+        for (const Domain::ConsistentMass &m : d.consistent_masses)
+          if (m.element == element.tag && m.load_in_reaction)
+            return true;
+        return false;
+      }
     } // namespace
 
     Vector
@@ -297,10 +322,13 @@ namespace poundfe
       if (c.beta_k_committed != 0 && element.committed_tangent.rows() == v.size())
         f += c.beta_k_committed * (element.committed_tangent * v);
       if (c.alpha_m != 0)
-        for_lumped_masses(*this, element, [&](const LumpedMass &m, const unsigned int offset) {
-          for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
-            f[offset + k] += c.alpha_m * m.mass * v[offset + k];
-        });
+        {
+          for_lumped_masses(*this, element, [&](const LumpedMass &m, const unsigned int offset) {
+            for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
+              f[offset + k] += c.alpha_m * m.mass * v[offset + k];
+          });
+          add_consistent_mass_times(*this, element, [&](Eigen::Index i) { return c.alpha_m * v[i]; }, f);
+        }
       return f;
     }
 
@@ -314,6 +342,8 @@ namespace poundfe
           for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
             f[offset + k] += m.mass * a_g[k];
       });
+      if (has_consistent_ground_load(*this, element))
+        add_consistent_mass_times(*this, element, [&](Eigen::Index i) { return a_g[i % ndf]; }, f);
       return f;
     }
 
@@ -323,7 +353,7 @@ namespace poundfe
       for (const LumpedMass &m : lumped_masses)
         if (m.element == element.tag && m.load_in_reaction)
           return true;
-      return false;
+      return has_consistent_ground_load(*this, element);
     }
 
     bool
@@ -355,6 +385,9 @@ namespace poundfe
         for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
           f[offset + k] += m.mass * (loads * a_g[k] + a[offset + k]);
       });
+      // a consistent mass (-cMass: trusses) takes its ground load once
+      add_consistent_mass_times(
+        *this, element, [&](Eigen::Index i) { return a[i] + a_g[i % ndf]; }, f);
       if (element.rayleigh_damped())
         f += rayleigh_damping_forces(element);
       return f;
@@ -380,6 +413,12 @@ namespace poundfe
           }
         else
           ++m;
+      consistent_masses.erase(std::remove_if(consistent_masses.begin(),
+                                             consistent_masses.end(),
+                                             [tag](const ConsistentMass &m) {
+                                               return m.element == tag;
+                                             }),
+                              consistent_masses.end());
       element_rayleigh.erase(tag);
       elements.erase(tag);
       changed = true;

@@ -462,8 +462,22 @@ for kind in "truss 1 3 1 1.0 1" "zeroLength 1 3 1 -mat 1 -dir 1"; do
 done
 printf 'model basic -ndm 2 -ndf 2\nuniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1\n' \
   | bad differing-ndf-model "7: element 1 takes 4 DOFs (-ndf 2 at each node) but node 1 has 1, node 2 has 1: nodes of differing dof at the element's ends" || exit 1
-echo "element corotTruss 1 1 2 1.0 1" | bad unsupported-element \
-  '5: element corotTruss: poundfe does not support it' || exit 1
+echo "element quad 1 1 2 3 4 1.0 PlaneStress 1" | bad unsupported-element \
+  '5: element quad: poundfe does not support it' || exit 1
+# corotTruss and zeroLengthSection: a bad flag, an unknown option, a
+# missing material, a model or a section they cannot take; modalDamping
+# without a factor
+printf 'uniaxialMaterial Elastic 1 1.0\nelement corotTruss 1 1 2 1.0 1 -cMass 2\n' \
+  | bad corot-flag "6: element: corotTruss 1: -cMass takes 0 or 1, not 2" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement corotTruss 1 1 2 1.0 1 -mass 2.0\n' \
+  | bad corot-option "6: element: invalid option -mass in: element corotTruss 1 \$iNode \$jNode \$A \$matTag <-rho \$rho> <-cMass \$flag> <-doRayleigh \$flag>" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement corotTruss 1 1 2 1.0 7\n' \
+  | bad corot-material "6: element: uniaxialMaterial 7 does not exist" || exit 1
+echo "element zeroLengthSection 1 1 2 1" | bad zls-model \
+  "5: element: zeroLengthSection 1: OpenSees's zeroLengthSection takes -ndm 2 -ndf 3 or -ndm 3 -ndf 6 (this model: -ndm 1 -ndf 1)" || exit 1
+printf 'model basic -ndm 2 -ndf 3\nnode 3 0.0 0.0\nnode 4 0.0 0.0\nelement zeroLengthSection 1 3 4 9\n' \
+  | bad zls-section "8: element: zeroLengthSection 1: no section with tag 9 exists" || exit 1
+echo "modalDamping" | bad modal-no-factor "5: modalDamping ?factor - not enough arguments to command" || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass\n' \
   | bad link-mass "6: element: twoNodeLink 1: the end of the line where value 1 of -mass is due (-mass takes 1 value)" || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass -1.0\n' \

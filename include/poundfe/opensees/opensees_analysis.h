@@ -327,6 +327,36 @@ namespace poundfe
       void number_inertia();
       /// mass_damping_of_equation and uniform_mass_damping (in number()).
       void number_mass_damping();
+      /// The consistent masses by equation (-1: fixed), their alpha_M (0
+      /// unless the element is Rayleigh-damped) and matrices (in number()).
+      struct CoupledMass
+      {
+        std::vector<int>          equations;
+        std::vector<unsigned int> dofs; // each row's DOF at its node
+        const Matrix             *matrix = nullptr;
+        double                    alpha_m = 0;
+      };
+      std::vector<CoupledMass> coupled_masses;
+      Vector                   coupled_work; // the residual's local storage
+      void                     number_coupled_masses();
+      /// r -= M_e (A + alpha_M v + r a_g) of the consistent masses.
+      void subtract_coupled_inertia(Vector &r, const Vector &v);
+      /// (c_m + c_c alpha_M) M_e of the consistent masses into the tangent.
+      void add_coupled_masses(double c_m, double c_c);
+      /// M x with the consistent masses (the modes' M).
+      Vector mass_times(const Vector &x) const;
+      /// OpenSees 3.8's modal damping (IncrementalIntegrator::
+      /// addModalDampingForce, addModalDampingMatrix): C = W diag(c) W^T,
+      /// W's columns M phi_i, c_i = 2 zeta_i omega_i; renewed from the
+      /// domain's modes when they or the equations change.
+      Matrix       modal_mass_shapes;
+      Vector       modal_coefficients;
+      unsigned int modal_stamp_seen = 0;
+      bool         modal_numbered   = false;
+      /// Whether modal damping acts (its vectors renewed first).
+      bool modal_damping_active();
+      /// The domain's M-normalised modes from the solution of `eigen`.
+      void keep_modes(const Matrix &shapes, const std::vector<double> &eigenvalues);
       /// r[e] += c value for the equation's terms (none where fixed or imposed).
       void add_to(Vector &r, int eq, double value) const;
       /// An equation's terms: itself, or a diaphragm's combination.

@@ -318,6 +318,35 @@ namespace poundfe
         bool ground_load_twice = false;
       };
       std::vector<LumpedMass> lumped_masses;
+      /// An element's consistent mass (-cMass 1): its matrix on the
+      /// element's DOFs (node after node, -ndf each), in M beside the
+      /// nodes' diagonal; alpha_M damps it when the element is
+      /// Rayleigh-damped. Its ground-motion load -M r a_g enters the
+      /// reactions when `load_in_reaction` (a truss's, as LumpedMass's).
+      struct ConsistentMass
+      {
+        int              element = 0;
+        std::vector<int> nodes;
+        Matrix           matrix;
+        bool             load_in_reaction = false;
+      };
+      std::vector<ConsistentMass> consistent_masses;
+      /// The modes of the last `eigen` (OpenSees's Domain eigenvalues and
+      /// its DOF groups' eigenvectors), M-normalised, by node and DOF.
+      struct Modes
+      {
+        std::vector<double>                             eigenvalues;
+        std::vector<std::map<int, std::vector<double>>> shapes;
+      };
+      Modes modes;
+      /// modalDamping's factors zeta_i (one per mode of the last `eigen`)
+      /// and whether its matrix enters the tangent (modalDamping) or only
+      /// its force the unbalance (modalDampingQ); empty: none.
+      std::vector<double> modal_damping;
+      bool                modal_damping_in_tangent = true;
+      /// Counts the changes of `modes` and `modal_damping` (an analysis
+      /// renews its own vectors of them).
+      unsigned int modal_stamp = 0;
       double                                  time = 0; // committed
       /// OpenSees's global ops_Dt: the step of the last transient
       /// `analyze` (0 until then), over which a ViscousDamper integrates.
