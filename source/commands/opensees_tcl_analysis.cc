@@ -29,14 +29,22 @@ namespace poundfe
           unsupported(w.name + " option '" + w.peek() + "'");
       }
 
-      /// The script changed a component: the analysis, if any, takes it.
+      /// The script changed a component: the analysis, if any, takes it,
+      /// but keeps its kind and its constraint handler (OpenSees 3.8's
+      /// `constraints` makes the handler of the next `analysis`).
       void
       reconfigure(Session &s)
       {
         if (s.analysis)
           {
-            opensees::AnalysisOptions o = s.options;
-            o.transient                 = s.analysis->options().transient;
+            const opensees::AnalysisOptions &now = s.analysis->options();
+            opensees::AnalysisOptions        o   = s.options;
+            o.transient                          = now.transient;
+            o.transformation                     = now.transformation;
+            o.penalty                            = now.penalty;
+            o.lagrange                           = now.lagrange;
+            o.alpha_sp                           = now.alpha_sp;
+            o.alpha_mp                           = now.alpha_mp;
             s.analysis->configure(o);
           }
       }
@@ -166,44 +174,45 @@ namespace poundfe
       void
       algorithm(Session &s, Words &w)
       {
-        using Algorithm        = opensees::AnalysisOptions::Algorithm;
-        const std::string type = w.word("the algorithm's type");
+        using Algorithm             = opensees::AnalysisOptions::Algorithm;
+        const std::string         type = w.word("the algorithm's type");
+        opensees::AnalysisOptions o    = s.options; // stored once every word is checked
         if (type == "Linear")
-          s.options.algorithm = Algorithm::linear;
+          o.algorithm = Algorithm::linear;
         else if (type == "Newton")
-          s.options.algorithm = Algorithm::newton;
+          o.algorithm = Algorithm::newton;
         else if (type == "ModifiedNewton")
-          s.options.algorithm = Algorithm::modified_newton;
+          o.algorithm = Algorithm::modified_newton;
         else if (type == "NewtonLineSearch")
           {
-            s.options.algorithm = Algorithm::newton_line_search;
-            line_search_options(s.options.line_search, w);
+            o.algorithm = Algorithm::newton_line_search;
+            line_search_options(o.line_search, w);
           }
         else if (type == "KrylovNewton")
           {
-            s.options.algorithm = Algorithm::krylov_newton;
-            krylov_options(s.options, w);
+            o.algorithm = Algorithm::krylov_newton;
+            krylov_options(o, w);
           }
         else if (type == "BFGS")
           {
-            s.options.algorithm = Algorithm::bfgs;
-            bfgs_options(s.options, w);
+            o.algorithm = Algorithm::bfgs;
+            bfgs_options(o, w);
           }
         else
           unsupported("algorithm " + type);
         check_done(w);
+        s.options       = o;
         s.has_algorithm = true;
         reconfigure(s);
       }
 
       /// DisplacementControl node dof dU <Jd minIncr maxIncr>.
       void
-      displacement_control(Session &s, Words &w)
+      displacement_control(const opensees::Domain &domain, opensees::AnalysisOptions &o, Words &w)
       {
-        opensees::AnalysisOptions &o = s.options;
-        o.control_node               = s.domain.node(w.integer("the node")).tag;
+        o.control_node = domain.node(w.integer("the node")).tag;
         const int dof                = w.integer("the DOF");
-        if (dof < 1 || dof > static_cast<int>(s.domain.ndf))
+        if (dof < 1 || dof > static_cast<int>(domain.ndf))
           throw ScriptError("DOF " + std::to_string(dof) + " is not one of 1 to ndf");
         o.control_dof    = dof - 1;
         o.d_u            = w.real("the displacement increment");
@@ -219,29 +228,27 @@ namespace poundfe
           unsupported("integrator DisplacementControl -initial");
         if (o.d_u_iterations < 1)
           throw ScriptError("Jd must be >= 1");
-        o.displacement_control  = true;
-        s.has_static_integrator = true;
+        o.displacement_control = true;
       }
 
       /// constraints Plain | Transformation | Penalty alphaSP alphaMP |
       /// Lagrange <alphaSP alphaMP>. Lagrange's multipliers meet linear
       /// constraints exactly, so its displacements are Transformation's,
-      /// which gives them (its factors scale the multipliers alone).
+      /// which gives them (its factors scale the multipliers alone). As in
+      /// OpenSees 3.8 the handler is the next `analysis` command's.
       void
       constraint_handler(Session &s, Words &w)
       {
-        opensees::AnalysisOptions &o    = s.options;
-        const std::string          type = w.word("the handler's type");
+        const std::string type = w.word("the handler's type");
         if (type != "Plain" && type != "Transformation" && type != "Penalty" &&
             type != "Lagrange")
           unsupported("constraints " + type);
-        o.transformation = type == "Transformation" || type == "Lagrange";
-        o.penalty        = type == "Penalty";
-        if (o.penalty)
+        double alpha_sp = 0, alpha_mp = 0;
+        if (type == "Penalty")
           {
-            o.alpha_sp = w.real("alphaSP");
-            o.alpha_mp = w.real("alphaMP");
-            if (!(o.alpha_sp > 0 && o.alpha_mp > 0))
+            alpha_sp = w.real("alphaSP");
+            alpha_mp = w.real("alphaMP");
+            if (!(alpha_sp > 0 && alpha_mp > 0))
               throw ScriptError("Penalty needs alphaSP > 0 and alphaMP > 0");
           }
         else if (type == "Lagrange" && !w.done())
@@ -250,30 +257,32 @@ namespace poundfe
             w.real("alphaMP");
           }
         check_done(w);
-        reconfigure(s);
+        opensees::AnalysisOptions &o = s.options; // every word checked
+        o.transformation             = type == "Transformation" || type == "Lagrange";
+        o.penalty                    = type == "Penalty";
+        o.lagrange                   = type == "Lagrange";
+        o.alpha_sp                   = alpha_sp;
+        o.alpha_mp                   = alpha_mp;
       }
 
       /// ArcLength s alpha (OpenSees 3.8's interpreter takes both).
       void
-      arc_length(Session &s, Words &w)
+      arc_length(opensees::AnalysisOptions &o, Words &w)
       {
-        opensees::AnalysisOptions &o = s.options;
-        o.arc_s                      = w.real("the arc length");
-        o.arc_alpha                  = w.real("alpha");
+        o.arc_s     = w.real("the arc length");
+        o.arc_alpha = w.real("alpha");
         if (!(o.arc_s > 0))
           throw ScriptError("ArcLength needs an arc length > 0");
-        o.displacement_control  = false;
-        s.has_static_integrator = true;
+        o.displacement_control = false;
       }
 
       /// HHT alpha <gamma beta> (OpenSees's alpha: 1 is Newmark's average
       /// acceleration, 2/3 the most dissipative; by default gamma = 3/2 -
       /// alpha, beta = (2 - alpha)^2 / 4).
       void
-      hht(Session &s, Words &w)
+      hht(opensees::AnalysisOptions &o, Words &w)
       {
-        opensees::AnalysisOptions &o = s.options;
-        o.alpha                      = w.real("alpha");
+        o.alpha = w.real("alpha");
         o.gamma                      = 1.5 - o.alpha;
         o.beta                       = 0.25 * (2 - o.alpha) * (2 - o.alpha);
         if (!w.done())
@@ -285,47 +294,53 @@ namespace poundfe
           throw ScriptError("HHT needs 0 < alpha <= 1");
         if (!(o.beta > 0 && o.gamma > 0))
           throw ScriptError("HHT needs beta > 0 and gamma > 0");
-        s.has_transient_integrator = true;
+      }
+
+      /// LoadControl dLambda <numIter minLambda maxLambda>.
+      void
+      load_control(opensees::AnalysisOptions &o, Words &w)
+      {
+        o.d_lambda          = w.real("the load increment");
+        o.lambda_iterations = 1;
+        o.lambda_min = o.lambda_max = o.d_lambda;
+        if (!w.done())
+          {
+            o.lambda_iterations = w.integer("the number of iterations");
+            o.lambda_min        = w.real("the smallest increment");
+            o.lambda_max        = w.real("the largest increment");
+          }
+        o.displacement_control = false;
       }
 
       void
       integrator(Session &s, Words &w)
       {
-        const std::string type = w.word("the integrator's type");
-        s.options.arc_length   = type == "ArcLength";
+        const std::string         type = w.word("the integrator's type");
+        opensees::AnalysisOptions o    = s.options; // stored once every word is checked
+        o.arc_length                   = type == "ArcLength";
+        const bool transient           = type == "Newmark" || type == "HHT";
         if (type == "Newmark")
           {
-            s.options.gamma = w.real("gamma");
-            s.options.beta  = w.real("beta");
-            s.options.alpha = 1;
-            if (!(s.options.beta > 0))
+            o.gamma = w.real("gamma");
+            o.beta  = w.real("beta");
+            o.alpha = 1;
+            if (!(o.beta > 0))
               throw ScriptError("Newmark needs beta > 0");
-            s.has_transient_integrator = true;
           }
         else if (type == "HHT")
-          hht(s, w);
+          hht(o, w);
         else if (type == "LoadControl")
-          {
-            s.options.d_lambda   = w.real("the load increment");
-            s.options.lambda_iterations = 1;
-            s.options.lambda_min = s.options.lambda_max = s.options.d_lambda;
-            if (!w.done())
-              {
-                s.options.lambda_iterations = w.integer("the number of iterations");
-                s.options.lambda_min        = w.real("the smallest increment");
-                s.options.lambda_max        = w.real("the largest increment");
-              }
-            s.has_static_integrator          = true;
-            s.options.displacement_control = false;
-          }
+          load_control(o, w);
         else if (type == "DisplacementControl")
-          displacement_control(s, w);
+          displacement_control(s.domain, o, w);
         else if (type == "ArcLength")
-          arc_length(s, w);
+          arc_length(o, w);
         else
           unsupported("integrator " + type);
         check_done(w);
-        ++s.options.integrator_serial;
+        ++o.integrator_serial;
+        s.options = o;
+        (transient ? s.has_transient_integrator : s.has_static_integrator) = true;
         reconfigure(s);
       }
 

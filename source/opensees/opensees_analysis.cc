@@ -41,6 +41,37 @@ namespace poundfe
     {
       /// The equation of a diaphragm's j-th combination: first_combination - j.
       constexpr int first_combination = -1000000;
+
+      /// The combination of a static analysis's components that poundfe
+      /// refuses, named; empty if none. A line search, Krylov's acceleration
+      /// or BFGS would move the state off DisplacementControl's or
+      /// ArcLength's constraint. Under Lagrange OpenSees's multipliers enter
+      /// ArcLength's arc and the test's norm (so an adaptive increment's
+      /// iteration counts), which poundfe's exact elimination has not.
+      std::string
+      unsupported_combination(const AnalysisOptions &o)
+      {
+        using Algorithm = AnalysisOptions::Algorithm;
+        if (o.transient || !(o.displacement_control || o.arc_length))
+          return "";
+        const std::string integrator =
+          o.arc_length ? "ArcLength" : "DisplacementControl";
+        const Algorithm a = o.algorithm;
+        if (a == Algorithm::newton_line_search || a == Algorithm::krylov_newton ||
+            a == Algorithm::bfgs)
+          return std::string("algorithm ") +
+                 (a == Algorithm::newton_line_search ? "NewtonLineSearch" :
+                  a == Algorithm::krylov_newton      ? "KrylovNewton" :
+                                                       "BFGS") +
+                 " with integrator " + integrator;
+        if (o.lagrange && o.arc_length)
+          return "integrator ArcLength with constraints Lagrange (OpenSees's multipliers enter "
+                 "the arc)";
+        if (o.lagrange && o.d_u_min != o.d_u_max)
+          return "integrator DisplacementControl with an adaptive increment (minIncr != maxIncr) "
+                 "with constraints Lagrange (OpenSees's multipliers enter the iteration counts)";
+        return "";
+      }
     } // namespace
 
     /// The elements of a small model (a dense system) that are all
@@ -1079,15 +1110,6 @@ namespace poundfe
       using Algorithm = AnalysisOptions::Algorithm;
       const bool searching = opts.algorithm == Algorithm::newton_line_search;
       const bool krylov    = opts.algorithm == Algorithm::krylov_newton;
-      const bool bfgs      = opts.algorithm == Algorithm::bfgs;
-      if ((searching || krylov || bfgs) && opts.displacement_control && !opts.transient)
-        throw ScriptError(std::string("algorithm ") +
-                          (searching ? "NewtonLineSearch" : krylov ? "KrylovNewton" : "BFGS") +
-                          " with integrator DisplacementControl is not supported");
-      if ((searching || krylov || bfgs) && opts.arc_length && !opts.transient)
-        throw ScriptError(std::string("algorithm ") +
-                          (searching ? "NewtonLineSearch" : krylov ? "KrylovNewton" : "BFGS") +
-                          " with integrator ArcLength is not supported");
       if (opts.algorithm == Algorithm::bfgs)
         return iterate_bfgs(why);
       const bool every_iteration = opts.algorithm == Algorithm::newton || searching;
@@ -1272,6 +1294,9 @@ namespace poundfe
     void
     Analysis::begin_analysis(const std::function<void(const std::string &)> &warn)
     {
+      const std::string refused = unsupported_combination(opts);
+      if (!refused.empty())
+        throw ScriptError(refused + " is not supported");
       const bool renumber = domain.changed || !numbered;
       if (renumber)
         number();
@@ -1385,6 +1410,9 @@ namespace poundfe
     std::vector<double>
     Analysis::eigenvalues(const unsigned int n)
     {
+      const std::string refused = unsupported_combination(opts);
+      if (!refused.empty())
+        throw ScriptError(refused + " is not supported");
       const bool renumber = domain.changed || !numbered;
       if (renumber)
         number();

@@ -27,8 +27,11 @@
 #     DisplacementControl, KrylovNewton with a tangent other than the current
 #     one, -maxDim < 0 or DisplacementControl, eleLoad on a beam-column, of another type, or
 #     outside a pattern, rigidLink beam, BFGS -secant or -count 0, sp in a transient
-#     analysis, on a fixed DOF or outside a pattern; sp imposed (Transformation) and
-#     held at zero (Plain) on an elastic cantilever.
+#     analysis, on a fixed DOF or outside a pattern, ArcLength or an adaptive
+#     DisplacementControl under constraints Lagrange; sp imposed (Transformation) and
+#     held at zero (Plain) on an elastic cantilever; a refused command caught
+#     by catch leaves the settings before it; constraints after analysis
+#     waits for the next analysis (OpenSees 3.8's line).
 #  5. OpenSees's 3D RC frame script (bench/opensees/fibre_frame_3d/frame.tcl:
 #     rigidDiaphragm, 3D forceBeamColumns on fibre sections) against its peaks.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
@@ -157,6 +160,10 @@ echo "integrator ArcLength 0.01" | bad arc-length-alpha '6: integrator: missing 
 echo "integrator ArcLength 0.0 1.0" | bad arc-length-zero '6: integrator: ArcLength needs an arc length > 0'
 printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm BFGS\nintegrator ArcLength 0.001 1.0\nanalysis Static\nanalyze 1\n' \
   | bad bfgs-arc-length '13: analyze: algorithm BFGS with integrator ArcLength is not supported'
+printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nconstraints Lagrange\nintegrator ArcLength 0.001 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad lagrange-arc-length "13: analyze: integrator ArcLength with constraints Lagrange (OpenSees's multipliers enter the arc) is not supported"
+printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nconstraints Lagrange\nintegrator DisplacementControl 2 1 0.001 3 0.0001 0.01\nanalysis Static\nanalyze 1\n' \
+  | bad lagrange-adaptive-dc "13: analyze: integrator DisplacementControl with an adaptive increment (minIncr != maxIncr) with constraints Lagrange (OpenSees's multipliers enter the iteration counts) is not supported"
 echo "algorithm NewtonLineSearch -maxIter -5" | bad line-search-iterations \
   '6: algorithm: NewtonLineSearch needs -maxIter >= 1'
 echo "algorithm NewtonLineSearch -minEta 10 -maxEta 0.1" | bad line-search-eta \
@@ -197,6 +204,22 @@ grep -q "homogeneous constraint assumed" "$work/sp.out" || fail "sp Plain: no wa
 # lines, to its 12 digits
 sp_check Lagrange "u 0.002 -0.001 r -4.44444444444"
 sp_check "Penalty 1.0e12 1.0e12" "u 0.00199999999556 -0.000999999988889 r -4.4444443358"
+
+# a refused command leaves the settings before it: Transformation keeps
+# the equalDOF (node 3's uy is node 2's), LoadControl 1.0 two steps (t 2)
+# on a linear frame, the column shortened by 2 L / EA = 3e-6
+two_bays='model basic -ndm 2 -ndf 3\nnode 1 0.0 0.0\nnode 2 0.0 3.0\nnode 3 4.0 3.0\nfix 1 1 1 1\ngeomTransf Linear 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nelement elasticBeamColumn 2 2 3 0.01 2.0e8 1.0e-4 1\nequalDOF 2 3 2\ntimeSeries Linear 1\npattern Plain 1 1 { load 3 1.0 -1.0 0.0 }\nsystem BandGeneral\ntest NormDispIncr 1e-10 20\n'
+printf "$two_bays"'constraints Transformation\ncatch {constraints Penalty 1.0e10}\nalgorithm Newton\ncatch {algorithm NewtonLineSearch -tol 0.5 -beta 2}\nintegrator LoadControl 1.0\ncatch {integrator ArcLength -1.0 0.0}\ncatch {integrator DisplacementControl 3 2 0.1 0 0.1 0.1}\nanalysis Static\nputs [format "analyze %%d t %%g uy %%.6g %%.6g" [analyze 2] [getTime] [nodeDisp 3 2] [nodeDisp 2 2]]\n' \
+  > "$work/kept.tcl"
+"$poundfe" opensees "$work/kept.tcl" > "$work/kept.out" 2>&1 || { cat "$work/kept.out"; fail "refused commands"; }
+grep -qx "analyze 0 t 2 uy -3e-06 -3e-06" "$work/kept.out" || { cat "$work/kept.out"; fail "a refused command changed the settings"; }
+# constraints after analysis: the next analysis's handler, as OpenSees 3.8's
+# (its line: the fixed base moved 2e-10 by Penalty, Transformation's uy)
+printf "$two_bays"'constraints Penalty 1.0e10 1.0e10\nanalysis Static\nanalyze 1\nconstraints Transformation\nanalyze 1\nset kept [nodeDisp 1 1]\nanalysis Static\nanalyze 1\nputs [format "Penalty kept %%.3g, then Transformation %%.3g" $kept [nodeDisp 3 2]]\n' \
+  > "$work/switch.tcl"
+"$poundfe" opensees "$work/switch.tcl" > "$work/switch.out" 2>&1 || { cat "$work/switch.out"; fail "constraints after analysis"; }
+grep -qx "Penalty kept 2e-10, then Transformation -4.5e-06" "$work/switch.out" \
+  || { cat "$work/switch.out"; fail "constraints after analysis: not the next analysis's"; }
 
 # 3. side by side with OpenSees 3.8: its committed numbers (every 10th row)
 "$python" "$here/../../bench/opensees/compare.py" "$poundfe" --check "$corpus/reference" \

@@ -69,6 +69,39 @@ class CorpusTest(TestCase):
         self.assertEqual(status, 0)
         self.assertIn(f"frame: status 0 roof {roof!r} ", stdout)
 
+    def test_refused_command_keeps_settings(self):
+        """A caught refusal leaves the settings before it: Transformation
+        keeps the equalDOF (node 3's uy is node 2's), LoadControl 1.0 its
+        two steps of a linear frame, the column shortened by 2 L / EA =
+        3e-6 (to round-off, 1e-12 relative)."""
+        import poundfe.opensees as ops
+        ops.wipe()
+        ops.model('basic', '-ndm', 2, '-ndf', 3)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, 0.0, 3.0)
+        ops.node(3, 4.0, 3.0)
+        ops.fix(1, 1, 1, 1)
+        ops.geomTransf('Linear', 1)
+        ops.element('elasticBeamColumn', 1, 1, 2, 0.01, 2.0e8, 1.0e-4, 1)
+        ops.element('elasticBeamColumn', 2, 2, 3, 0.01, 2.0e8, 1.0e-4, 1)
+        ops.equalDOF(2, 3, 2)
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(3, 1.0, -1.0, 0.0)
+        ops.test('NormDispIncr', 1e-10, 20)
+        ops.constraints('Transformation')
+        ops.integrator('LoadControl', 1.0)
+        for refused in (('constraints', 'Penalty', 1.0e10), ('integrator', 'ArcLength', -1.0, 0.0),
+                        ('integrator', 'DisplacementControl', 3, 2, 0.1, 0, 0.1, 0.1)):
+            with self.assertRaises(ops.OpenSeesError):
+                getattr(ops, refused[0])(*refused[1:])
+        ops.analysis('Static')
+        self.assertEqual(ops.analyze(2), 0)
+        self.assertEqual(ops.getTime(), 2.0)
+        self.assertAlmostEqual(ops.nodeDisp(2, 2) / -3e-6, 1.0, delta=1e-12)
+        self.assertEqual(ops.nodeDisp(3, 2), ops.nodeDisp(2, 2))
+        ops.wipe()
+
     def test_arc_length_arch(self):
         for handler in ([], ["Penalty", "1.0e12", "1.0e12"]):
             with self.subTest(handler=handler):

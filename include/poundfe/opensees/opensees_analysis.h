@@ -140,6 +140,10 @@ namespace poundfe
       /// the stiffness alphaMP c c^T (opensees_penalty.cc).
       bool            penalty = false;
       double          alpha_sp = 0, alpha_mp = 0;
+      /// constraints Lagrange: Transformation's displacements; ArcLength and
+      /// an adaptive DisplacementControl are refused with it (OpenSees's
+      /// multipliers enter their norms).
+      bool            lagrange = false;
     };
 
     /// What the analyses of a script have done (poundfe::report).
