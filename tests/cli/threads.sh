@@ -8,9 +8,12 @@
 # whole number in 1..256 written in digits alone (a blank, a sign or a
 # leading zero included) is refused: exit 1, one line naming the option,
 # nothing written; so is --threads for a command that reads no file.
-#   threads.sh POUNDFE BENCH_PRM
+# The same for `poundfe opensees --threads N`: the benchmark's OpenSees
+# script (140 forceBeamColumn members, 10 zeroLength gaps) for 2 s of a
+# sine record strong enough to pound, every recorder file compared.
+#   threads.sh POUNDFE BENCH_PRM PAIR_TCL
 set -u
-poundfe=$1 prm=$2
+poundfe=$1 prm=$2 pair_tcl=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 status=0
@@ -30,6 +33,27 @@ impacts=$(grep -o '[0-9]* impacts' "$work/t2.log" | cut -d' ' -f1)
 if [ "$files" -lt 8 ] || [ "${impacts:-0}" -lt 1 ]; then
   echo "FAIL: $files CSV files, ${impacts:-0} impacts: the run did not pound"; status=1
 fi
+sed 's/analyze 4000 0.005/analyze 400 0.005/' "$pair_tcl" > "$work/pair.tcl"
+awk 'BEGIN { for (i = 0; i <= 400; i++) { t = i * 0.005
+  print 3.5 * sin(2 * 3.141592653589793 * t / 0.9) * (t < 1 ? t : 1) } }' > "$work/record.txt"
+for n in 1 2; do
+  mkdir -p "$work/s$n"
+  if ! "$poundfe" opensees --threads "$n" "$work/pair.tcl" "$work/s$n" "$work/record.txt" \
+      > "$work/s$n.log" 2>&1; then
+    echo "FAIL: opensees --threads $n:"; tail -3 "$work/s$n.log"; exit 1
+  fi
+done
+script_files=0
+for f in "$work"/s1/*.out; do
+  script_files=$((script_files + 1))
+  cmp -s "$f" "$work/s2/$(basename "$f")" ||
+    { echo "FAIL: opensees $(basename "$f") differs between --threads 1 and 2"; status=1; }
+done
+contacts=$(awk '{ for (i = 2; i <= NF; i++) if ($i != 0) { n++; break } } END { print n + 0 }' \
+  "$work/s1/gap_force.out")
+if [ "$script_files" -ne 6 ] || [ "$contacts" -lt 1 ]; then
+  echo "FAIL: opensees: $script_files recorder files, $contacts steps in contact"; status=1
+fi
 for bad in 0 257 two 1.5 "" " 2" "2 " +2 02; do
   out=$("$poundfe" run "$prm" --output "$work/bad" --threads "$bad" 2>&1)
   code=$?
@@ -43,5 +67,6 @@ code=$?
 if [ "$code" -ne 1 ] || ! printf '%s' "$out" | grep -q -- "--threads .*'template' reads no"; then
   echo "FAIL: template --threads 2: exit $code, output: $out"; status=1
 fi
-[ "$status" -eq 0 ] && echo "threads: $files files the same on 1 and 2 threads, bad values refused"
+[ "$status" -eq 0 ] && echo "threads: $files files of run and $script_files of opensees" \
+  "($contacts steps in contact) the same on 1 and 2 threads, bad values refused"
 exit "$status"
