@@ -681,17 +681,12 @@ namespace poundfe
                        Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h], r, r));
       return true;
     };
-    unsigned int refused = n_elements;
     // A line search tries trial states without a revert in between, from
     // which a force-based element iterates on: there the elements past a
     // refusal stay untouched, as in order. Elsewhere a refusal cuts the
     // step, which reverts every element.
-    if (!parameters.newton.line_search && worth_threads(L.uniaxial))
-      refused = first_refusal_in_parallel(n_elements, evaluate);
-    else
-      for (unsigned int h = 0; h < n_elements && refused == n_elements; ++h)
-        if (!evaluate(h))
-          refused = h;
+    const unsigned int refused = first_refusal(
+      n_elements, evaluate, !parameters.newton.line_search && worth_threads(L.uniaxial));
     if (refused == n_elements)
       return true;
     failure = refusal_text((*elements)[refused]);

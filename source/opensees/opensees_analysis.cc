@@ -566,15 +566,9 @@ namespace poundfe
         element_values(element, v, nullptr, combinations, local_v);
         return element.set_trial(local_u, local_v);
       };
-      const unsigned int n       = element_list.size();
-      unsigned int       refused = n;
-      if (elements_on_threads)
-        refused = first_refusal_in_parallel(n, evaluate);
-      else
-        for (unsigned int e = 0; e < n && refused == n; ++e)
-          if (!evaluate(e))
-            refused = e;
-      if (refused == n)
+      const unsigned int refused =
+        first_refusal(element_list.size(), evaluate, elements_on_threads);
+      if (refused == element_list.size())
         return true;
       // an element without a law to blame refuses non-finite forces
       const Element    &element = *element_list[refused].element;

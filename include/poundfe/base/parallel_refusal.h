@@ -40,6 +40,21 @@ namespace poundfe
       elements_per_range);
     return first.load();
   }
+
+  /// The first h in [0, n) whose evaluate(h) refused, or n: over the
+  /// threads when on_threads, else in order, stopping at the refusal (the
+  /// elements past it untouched).
+  template <typename Evaluate>
+  unsigned int
+  first_refusal(const unsigned int n, const Evaluate &evaluate, const bool on_threads)
+  {
+    if (on_threads)
+      return first_refusal_in_parallel(n, evaluate);
+    for (unsigned int h = 0; h < n; ++h)
+      if (!evaluate(h))
+        return h;
+    return n;
+  }
 } // namespace poundfe
 
 #endif
