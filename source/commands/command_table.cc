@@ -223,9 +223,10 @@ namespace poundfe
            "(repeatable, in order) sets an entry of FILE before it is checked, as the file\n"
            "would ('Section/Entry:k' sets the k-th field of a list entry). --threads N (1 by\n"
            "default) evaluates a time history's elements on N threads when at least 8 are\n"
-           "other than uniaxial (fibre or 3D hinge members, biaxial storeys, plan contacts),\n"
-           "with the same numbers; a command that runs no time history ignores it, one that\n"
-           "reads no file refuses it. Any other option\n"
+           "other than uniaxial (fibre or 3D hinge members, biaxial storeys, plan contacts;\n"
+           "under opensees: beam-column members), with the same numbers; a command that\n"
+           "runs no time history ignores it, one that reads no file refuses it. Any other\n"
+           "option "
            "is an error. Time integration/Partition = buildings is taken only by "
         << command_names(CommandRule::partition_by_building, "'")
         << ",\na distributed linear solver on more than one rank only by "

@@ -2,6 +2,7 @@
 #include <poundfe/assembly/low_rank_update.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
+#include <poundfe/base/parallel_refusal.h>
 #include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/integration/accuracy_substeps.h>
 #include <poundfe/integration/fixed_size_step.h>
@@ -10,12 +11,10 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/multithread_info.h>
-#include <deal.II/base/parallel.h>
 
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -67,32 +66,6 @@ namespace poundfe
       constexpr long heavy_elements = 8;
       return dealii::MultithreadInfo::n_threads() > 1 &&
              std::count(uniaxial.begin(), uniaxial.end(), nullptr) >= heavy_elements;
-    }
-
-    /// evaluate(h) for h in [0, n) over deal.II's threads (TBB), in ranges
-    /// of a few elements; the first h (in order) whose evaluate refused, or
-    /// n. A range stops at its refusal; the others run to their end.
-    template <typename Evaluate>
-    unsigned int
-    first_refusal_in_parallel(const unsigned int n, const Evaluate &evaluate)
-    {
-      constexpr unsigned int    elements_per_range = 4;
-      std::atomic<unsigned int> first{n};
-      dealii::parallel::apply_to_subranges(
-        0u, n,
-        [&](const unsigned int begin, const unsigned int end) {
-          for (unsigned int h = begin; h < end; ++h)
-            if (!evaluate(h))
-              {
-                unsigned int seen = first.load();
-                while (h < seen && !first.compare_exchange_weak(seen, h))
-                  {
-                  }
-                return;
-              }
-        },
-        elements_per_range);
-      return first.load();
     }
 
     /// local_u[q], local_v[q] = u[i], v[i] of the local DOFs q in [first,
@@ -735,21 +708,15 @@ namespace poundfe
                        Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h], r, r));
       return true;
     };
-    unsigned int refused = n_elements;
     // A line search tries trial states without a revert in between, from
     // which a force-based element iterates on: there the elements past a
     // refusal stay untouched, as in order. Elsewhere a refusal cuts the
     // step, which reverts every element. Uniaxial elements alone: one plain
     // loop in order (never worth threads), without the general branch.
-    if (L.all_uniaxial)
-      for (unsigned int h = 0; h < n_elements && refused == n_elements; ++h)
-        refused = evaluate_uniaxial(h) ? n_elements : h;
-    else if (!parameters.newton.line_search && worth_threads(L.uniaxial))
-      refused = first_refusal_in_parallel(n_elements, evaluate);
-    else
-      for (unsigned int h = 0; h < n_elements && refused == n_elements; ++h)
-        if (!evaluate(h))
-          refused = h;
+    const unsigned int refused =
+      L.all_uniaxial ? first_refusal(n_elements, evaluate_uniaxial, false) :
+                       first_refusal(n_elements, evaluate,
+                                     !parameters.newton.line_search && worth_threads(L.uniaxial));
     if (refused == n_elements)
       return true;
     failure = refusal_text((*elements)[refused]);

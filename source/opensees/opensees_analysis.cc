@@ -21,7 +21,10 @@
 // diagonal because the constrained nodes may carry none in the plane).
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/parallel_refusal.h>
 #include <poundfe/opensees/opensees_analysis.h>
+
+#include <deal.II/base/multithread_info.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -577,6 +580,12 @@ namespace poundfe
           elements.push_back(element.get());
         }
       links = dense() && imposed_dofs.empty() ? UniaxialLinks::of(elements) : nullptr;
+      // a member's microseconds pay for a thread, a spring's nanoseconds do not
+      constexpr long costly_elements = 8;
+      elements_on_threads =
+        dealii::MultithreadInfo::n_threads() > 1 &&
+        std::count_if(elements.begin(), elements.end(),
+                      [](const Element *e) { return e->costly_trial(); }) >= costly_elements;
     }
 
     bool
@@ -592,23 +601,25 @@ namespace poundfe
       if (links)
         return links->set_trial(u, v, why);
       element_state.resize(element_list.size());
-      auto state = element_state.begin();
-      for (const ListedElement &listed : element_list)
-        {
-          Element &element        = *listed.element;
-          auto &[local_u, local_v] = *state++;
-          element_values(element, u, &imposed_u, combinations, local_u);
-          element_values(element, v, nullptr, combinations, local_v);
-          if (!element.set_trial(local_u, local_v))
-            {
-              // an element without a law to blame refuses non-finite forces
-              const std::string reason = element.failure();
-              why = "element " + std::to_string(element.tag) + ": " +
-                    (reason.empty() ? "its forces are not finite" : reason);
-              return false;
-            }
-        }
-      return true;
+      // each element writes only its own state, so threads keep the bits;
+      // a refusal fails the step, which reverts every element
+      const auto evaluate = [&](const unsigned int e) {
+        Element &element         = *element_list[e].element;
+        auto &[local_u, local_v] = element_state[e];
+        element_values(element, u, &imposed_u, combinations, local_u);
+        element_values(element, v, nullptr, combinations, local_v);
+        return element.set_trial(local_u, local_v);
+      };
+      const unsigned int refused =
+        first_refusal(element_list.size(), evaluate, elements_on_threads);
+      if (refused == element_list.size())
+        return true;
+      // an element without a law to blame refuses non-finite forces
+      const Element    &element = *element_list[refused].element;
+      const std::string reason  = element.failure();
+      why = "element " + std::to_string(element.tag) + ": " +
+            (reason.empty() ? "its forces are not finite" : reason);
+      return false;
     }
 
     const Vector &

@@ -93,6 +93,7 @@ namespace poundfe
 
         unsigned int n_dofs() const override { return 6; }
         bool         rayleigh_damped() const override { return true; }
+        bool         costly_trial() const override { return true; }
 
         bool
         set_trial(const Vector &u, const Vector &) override
@@ -272,6 +273,7 @@ namespace poundfe
 
         unsigned int n_dofs() const override { return 12; }
         bool         rayleigh_damped() const override { return true; }
+        bool         costly_trial() const override { return true; }
         bool
         set_trial(const Vector &u, const Vector &) override
         {

@@ -381,6 +381,10 @@ namespace poundfe
         bool                   combined; // some equation a diaphragm's combination
       };
       std::vector<ListedElement> element_list;
+      /// Whether set_trial evaluates the elements over deal.II's threads
+      /// (list_elements decides: more than one thread and at least 8
+      /// costly elements).
+      bool elements_on_threads = false;
       /// A small model's elements, all UniaxialRows without Rayleigh
       /// damping, in typed loops (null otherwise; list_elements decides).
       std::unique_ptr<UniaxialLinks> links;

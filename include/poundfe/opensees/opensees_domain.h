@@ -118,6 +118,9 @@ namespace poundfe
       /// Whether the domain's Rayleigh factors damp it (OpenSees: beams
       /// always, zeroLength with -doRayleigh).
       virtual bool rayleigh_damped() const = 0;
+      /// Whether its set_trial costs microseconds (a member's section
+      /// states at its integration points), enough to pay for a thread.
+      virtual bool costly_trial() const { return false; }
       virtual void commit() {}
       virtual void revert() {}
       virtual void reset() {}
