@@ -195,9 +195,10 @@ namespace
         err << "poundfe: error: unknown command '" << line.args[0] << "'\n" << usage_text();
         return 1;
       }
-    if (line.threads_given && !command->has(CommandRule::reads_file))
+    if (line.threads_given && !command->has(CommandRule::reads_file) &&
+        !command->has(CommandRule::script_arguments))
       { // as --set: a command that reads no file runs no time history
-        err << "poundfe: error: --threads sets the threads of a time history's elements, and '"
+        err << "poundfe: error: --threads sets the threads of a time history, and '"
             << command->name << "' reads no parameter file and runs none\n";
         return 1;
       }

@@ -224,8 +224,10 @@ namespace poundfe
            "would ('Section/Entry:k' sets the k-th field of a list entry). --threads N (1 by\n"
            "default) evaluates a time history's elements on N threads when at least 8 are\n"
            "other than uniaxial (fibre or 3D hinge members, biaxial storeys, plan contacts),\n"
-           "with the same numbers; a command that runs no time history ignores it, one that\n"
-           "reads no file refuses it. Any other option\n"
+           "with the same numbers, and from 2 on formats and writes a run's tables and\n"
+           "opensees's recorder files on a thread of their own, with the same bytes; a\n"
+           "command that runs no time history ignores it, one that reads no file (but\n"
+           "opensees) refuses it. Any other option\n"
            "is an error. Time integration/Partition = buildings is taken only by "
         << command_names(CommandRule::partition_by_building, "'")
         << ",\na distributed linear solver on more than one rank only by "

@@ -42,6 +42,9 @@ namespace poundfe
       bool has_test = false, has_algorithm = false;
       bool has_static_integrator = false, has_transient_integrator = false;
       std::unique_ptr<opensees::Analysis>                  analysis;
+      /// The recorders' writer thread (made with the first recorder when
+      /// output_writer_threaded()); before `recorders`, which drain it as they go.
+      std::shared_ptr<OutputQueue>                         writer;
       std::vector<std::unique_ptr<opensees::Recorder>>     recorders;
       /// Each recorder's tag (`remove recorder`), and the next one.
       std::vector<int> recorder_tags;

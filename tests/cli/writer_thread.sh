@@ -4,9 +4,12 @@
 # 2.1795 s fails, exit 2), every table at every step, in CSV and in .npy,
 # with --threads 1 (formatted and written inline) and --threads 2 (on the
 # writer thread): the same files byte for byte (summary.json but for its
-# wall time and steps/s), and both keep the rows up to the failure.
+# wall time and steps/s), and both keep the rows up to the failure. The
+# same for `poundfe opensees` on OpenSees scripts with Node, Element,
+# Drift and Envelope recorders (-precision 16, -dT, -time).
 set -eu
 poundfe=$1 input=$2
+shift 2 # the Tcl scripts, each taking its output directory as argv
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -39,4 +42,20 @@ done
 rows=$(wc -l < "$work/csv-2/drift.csv")
 [ "$rows" -eq 4360 ] || { echo "FAIL drift.csv has $rows lines, not 4360"; failures=$((failures + 1)); }
 grep -q '"status": "failed"' "$work/csv-2/summary.json" || { echo "FAIL status"; failures=$((failures + 1)); }
+for script in "$@"; do
+  name=$(basename "$script" .tcl)
+  for threads in 1 2; do
+    mkdir -p "$work/$name-$threads"
+    "$poundfe" opensees --threads $threads "$script" "$work/$name-$threads" > /dev/null 2>&1 ||
+      { echo "FAIL $name, --threads $threads: exit $?"; failures=$((failures + 1)); }
+  done
+  n=0
+  for f in "$work/$name-1"/*; do
+    cmp -s "$f" "$work/$name-2/$(basename "$f")" ||
+      { echo "FAIL $name: $(basename "$f") differs"; failures=$((failures + 1)); }
+    n=$((n + 1))
+  done
+  [ $n -gt 0 ] || { echo "FAIL $name: no recorder file"; failures=$((failures + 1)); }
+  echo "$name: $n files the same"
+done
 [ $failures -eq 0 ] && echo "writer thread: PASS" || { echo "writer thread: $failures failures"; exit 1; }
