@@ -224,7 +224,7 @@ namespace poundfe
            "would ('Section/Entry:k' sets the k-th field of a list entry). --threads N (1 by\n"
            "default) evaluates a time history's elements on N threads when at least 8 are\n"
            "other than uniaxial (fibre or 3D hinge members, biaxial storeys, plan contacts),\n"
-           "with the same numbers, and from 2 on formats and writes a run's tables and\n"
+           "with the same numbers, and from 2 on formats and writes a run's CSV tables and\n"
            "opensees's recorder files on a thread of their own, with the same bytes; a\n"
            "command that runs no time history ignores it, one that reads no file (but\n"
            "opensees) refuses it. Any other option\n"

@@ -35,6 +35,12 @@ namespace poundfe
       explicit Session(std::ostream &warnings)
         : warnings(warnings)
       {}
+      /// The recorders' lines still queued reach them before they go.
+      ~Session()
+      {
+        if (writer)
+          writer->drain();
+      }
       opensees::Domain                                     domain;
       opensees::AnalysisOptions                            options;
       /// Which of `test`, `algorithm` and the static and transient

@@ -1025,9 +1025,10 @@ namespace poundfe
       remove_stale_files(directory, recorders.files); // before this run's temporaries exist
 
     auto text = std::make_shared<NumberText>(); // shared by the CSV files of the run
-    // their formatting and writing off the stepping thread (output_queue.h)
-    const auto queue =
-      writes_files && !series.empty() ? std::make_shared<OutputQueue>(output_writer_threaded()) : nullptr;
+    // CSV's text made and written off the stepping thread (output_queue.h);
+    // an .npy row is a copy into its buffer already, as cheap as into a block
+    const bool queued = writes_files && !series.empty() && parameters.format == OutputFormat::csv;
+    const auto queue  = queued ? std::make_shared<OutputQueue>(output_writer_threaded()) : nullptr;
     auto next = series.begin();
     for (const RecorderRequest &r : requests)
       {

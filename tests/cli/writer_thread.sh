@@ -2,8 +2,8 @@
 # The outputs' writer thread (output/output_queue.h): a pounding pair whose
 # run fails half-way (one Newton iteration, no step cuts: the step at
 # 2.1795 s fails, exit 2), every table at every step, in CSV and in .npy,
-# with --threads 1 (formatted and written inline) and --threads 2 (on the
-# writer thread): the same files byte for byte (summary.json but for its
+# with --threads 1 (formatted and written inline) and --threads 2 (CSV on
+# the writer thread; .npy stays inline): the same files byte for byte (summary.json but for its
 # wall time and steps/s), and both keep the rows up to the failure. The
 # same for `poundfe opensees` on OpenSees scripts with Node, Element,
 # Drift and Envelope recorders (-precision 16, -dT, -time).

@@ -1,4 +1,6 @@
-// Formatting and writing a run's time series off the stepping thread. At
+// Formatting and writing a run's CSV tables and OpenSees recorder files off
+// the stepping thread (an .npy row is a copy into its buffer already, no
+// dearer than the copy into a block: those tables stay inline). At
 // each record the stepping thread copies the raw doubles of a row into a
 // block (64 KiB of doubles) of a ring of four; a full block is handed to one
 // writer thread, which gives every row to its sink (CsvWriter's text,
