@@ -224,9 +224,10 @@ namespace poundfe
            "would ('Section/Entry:k' sets the k-th field of a list entry). --threads N (1 by\n"
            "default) evaluates a time history's elements on N threads when at least 8 are\n"
            "other than uniaxial (fibre or 3D hinge members, biaxial storeys, plan contacts;\n"
-           "under opensees: beam-column members), with the same numbers; a command that\n"
-           "runs no time history ignores it, one that reads no file refuses it. Any other\n"
-           "option "
+           "under opensees: beam-column members), with the same numbers, and from 2 on\n"
+           "formats and writes a run's CSV tables and opensees's recorder files on a thread\n"
+           "of their own, with the same bytes; a command that runs no time history ignores\n"
+           "it, one that reads no file refuses it. Any other option\n"
            "is an error. Time integration/Partition = buildings is taken only by "
         << command_names(CommandRule::partition_by_building, "'")
         << ",\na distributed linear solver on more than one rank only by "

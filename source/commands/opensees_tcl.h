@@ -35,6 +35,12 @@ namespace poundfe
       explicit Session(std::ostream &warnings)
         : warnings(warnings)
       {}
+      /// The recorders' lines still queued reach them before they go.
+      ~Session()
+      {
+        if (writer)
+          writer->drain();
+      }
       opensees::Domain                                     domain;
       opensees::AnalysisOptions                            options;
       /// Which of `test`, `algorithm` and the static and transient
@@ -42,6 +48,9 @@ namespace poundfe
       bool has_test = false, has_algorithm = false;
       bool has_static_integrator = false, has_transient_integrator = false;
       std::unique_ptr<opensees::Analysis>                  analysis;
+      /// The recorders' writer thread (made with the first recorder when
+      /// output_writer_threaded()); before `recorders`, which drain it as they go.
+      std::shared_ptr<OutputQueue>                         writer;
       std::vector<std::unique_ptr<opensees::Recorder>>     recorders;
       /// Each recorder's tag (`remove recorder`), and the next one.
       std::vector<int> recorder_tags;

@@ -1637,6 +1637,9 @@ namespace poundfe
       define(interp, session, "rayleigh", rayleigh);
       define(interp, session, "recorder", [](Session &s, Words &w) {
         recorder(s, w);
+        if (!s.writer) // the lines' text made and written off the stepping thread
+          s.writer = std::make_shared<OutputQueue>(output_writer_threaded());
+        s.recorders.back()->set_queue(s.writer);
         // OpenSees's recorders are numbered from 0 in the order made, over
         // the whole run (Recorder::lastRecorderTag)
         s.recorder_tags.push_back(s.next_recorder_tag++);

@@ -218,7 +218,17 @@ namespace poundfe
       buffer.resize(2 * flush_size);
     }
 
-    Recorder::~Recorder() = default;
+    Recorder::~Recorder()
+    {
+      if (queue)
+        queue->drain();
+    }
+
+    void
+    Recorder::set_queue(std::shared_ptr<OutputQueue> writer)
+    {
+      queue = writer && writer->threaded() ? std::move(writer) : nullptr;
+    }
 
     bool
     Recorder::due(const double now)
@@ -246,12 +256,21 @@ namespace poundfe
     void
     Recorder::write_line(const std::vector<double> &numbers)
     {
+      if (queue)
+        queue->push(*this, numbers.data(), numbers.size());
+      else
+        consume(numbers.data(), numbers.size());
+    }
+
+    void
+    Recorder::consume(const double *numbers, const std::size_t n)
+    {
       // room for each number: sign, the digits, the point and an exponent
       const std::size_t room = precision_text_room(precision) + 1;
-      if (used + numbers.size() * room + 1 > buffer.size()) // grows for a long line only
-        buffer.resize(used + numbers.size() * room + 1);
+      if (used + n * room + 1 > buffer.size()) // grows for a long line only
+        buffer.resize(used + n * room + 1);
       char *out = buffer.data() + used;
-      for (std::size_t i = 0; i < numbers.size(); ++i)
+      for (std::size_t i = 0; i < n; ++i)
         {
           if (i > 0)
             *out++ = ' ';
@@ -271,6 +290,11 @@ namespace poundfe
     {
       if (!file)
         return;
+      if (queue)
+        {
+          queue->drain();
+          OutputQueue::take_error(*this);
+        }
       file->write(buffer.data(), used);
       used = 0;
       file->commit();

@@ -10,11 +10,14 @@
 // write_precision_text below gives the same text faster). The file
 // appears complete when the script ends (or at wipe), and not at all when
 // it fails. The Envelope recorders keep each value's extremes and write
-// three rows when they finish.
+// three rows when they finish. Given a writer thread (set_queue,
+// output/output_queue.h), a recorder hands each line's doubles to it and
+// the text is made and written there: the same bytes.
 #ifndef poundfe_opensees_opensees_recorder_h
 #define poundfe_opensees_opensees_recorder_h
 
 #include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/output/output_queue.h>
 
 #include <algorithm>
 #include <array>
@@ -77,11 +80,14 @@ namespace poundfe
     };
 
     /// A recorder's file: lines of numbers, written when the script ends.
-    class Recorder
+    class Recorder : public OutputQueue::Sink
     {
     public:
       explicit Recorder(const OutputSpec &output);
-      virtual ~Recorder();
+      /// Its lines pushed reach the file's text before it goes.
+      ~Recorder() override;
+      /// Its lines formatted and written on `queue`'s thread from now on.
+      void set_queue(std::shared_ptr<OutputQueue> queue);
       /// One line of the domain's committed state, when it is due.
       virtual void record(const Domain &domain);
       /// Writes the last lines and puts the file in place.
@@ -101,12 +107,16 @@ namespace poundfe
       /// without -dT, else when time - next >= -dT rTolDt, the next then
       /// time + dT), and the next due time moved on if so.
       bool due(double time);
-      /// One line of numbers into the file's text.
+      /// One line of numbers into the file's text (through the queue, if any).
       void write_line(const std::vector<double> &numbers);
       const bool time;
 
     private:
-      std::unique_ptr<AtomicFile> file;
+      /// The text of one line of `n` numbers, written out when enough.
+      void consume(const double *numbers, std::size_t n) override;
+
+      std::shared_ptr<OutputQueue> queue; // none: inline
+      std::unique_ptr<AtomicFile>  file;
       std::string                 buffer; // its first `used` characters are text
       std::size_t                 used = 0;
       std::vector<double>         line; // the values of one record, its storage kept
