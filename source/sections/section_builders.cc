@@ -26,6 +26,10 @@ namespace poundfe
     /// eps_cu = 0.004 + 1.4 rho_s fyh eps_su / f'cc it makes the core
     /// crush at strains no concrete reaches.
     constexpr double largest_ultimate_strain = 0.5;
+    /// The largest concrete strain taken for the cover's spalling: twice the
+    /// most confined cores' crushing strain (Mander's eps_cu, up to about
+    /// 0.05); more is a typing error (1e200 left a cover that never spalls).
+    constexpr double largest_concrete_strain = 0.1;
 
     [[noreturn]] void
     refuse_builder(const char *parameter, const std::string &problem)
@@ -81,6 +85,12 @@ namespace poundfe
       if (!(c.spalling_strain > c.eps_c0))
         refuse_builder("Spalling strain", "must exceed the peak strain " + number_text(c.eps_c0) +
                                             " (got " + number_text(c.spalling_strain) + ")");
+      if (c.spalling_strain > largest_concrete_strain)
+        refuse_builder("Spalling strain", "must be at most " +
+                                            number_text(largest_concrete_strain) +
+                                            ": no concrete, confined or not, reaches a larger "
+                                            "compressive strain (got " +
+                                            number_text(c.spalling_strain) + ")");
       if (!(std::isfinite(c.tensile_ratio) && c.tensile_ratio >= 0 && c.tensile_ratio < 1))
         refuse_builder("Tensile ratio", "must lie in [0, 1)");
       if (c.crushing_strain != 0 && !(c.crushing_strain > c.eps_c0))
