@@ -278,7 +278,7 @@ namespace poundfe
                        "conjugate gradients needs a symmetric tangent, and a nonlinear "
                        "element's is not: use a direct solver or Tangent update = woodbury");
     const unsigned int n = system.n_equations();
-    for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &rhs, &residual,
+    for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &residual,
                       &increment, &work_vector, &velocity_sum, &product, &step_displacement,
                       &start_residual, &stiffness_product})
       x->setZero(n);
@@ -564,10 +564,11 @@ namespace poundfe
     gravity_strain  = 0;
     input_with_held = 0;
     if (held_load.size() > 0) // the elements are at the gravity state now
-      {
-        gravity_strain     = strain_energy_at(gravity_displacement);
-        start_displacement = u;
-      }
+      gravity_strain = strain_energy_at(gravity_displacement);
+    if (equilibrate_massless)
+      equilibrate_massless_dofs(load);
+    if (held_load.size() > 0)
+      start_displacement = u;
     set_consistent_acceleration(load);
     if (elements)
       records.start(*elements);
@@ -625,28 +626,34 @@ namespace poundfe
   }
 
   void
-  NewmarkIntegrator::solve_consistent_acceleration(const Vector &load)
+  NewmarkIntegrator::evaluate_start(const Vector &load, Vector &r, const bool commit)
   {
-    Vector r = load - damping_product(system, v) - system.stiffness * u;
+    r = load - damping_product(system, v) - system.stiffness * u;
     gather(u, v);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         NonlinearElement  &e = (*elements)[h];
-        const unsigned int s = dof_start[h], k = e.n_dofs();
+        const unsigned int s = dof_start[h], k = e.n_dofs(), rank = basis[h].cols();
         if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
           throw NumericalError("state at t = " + number_text(current_time) + " s: " + e.label +
                                ": " + e.failure());
-        e.commit();
+        if (commit)
+          e.commit();
+        else // the static tangent, for the massless equations' Newton
+          e.tangent_change(0, Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h],
+                                                           rank, rank));
         e.force_correction(correction.segment(s, k));
       }
-    if (elements)
-      records.note_committed(*elements, v);
     subtract_element_forces(r);
+  }
 
+  std::vector<int>
+  NewmarkIntegrator::massive_numbering(unsigned int &n_massive) const
+  {
     // Equations that carry mass: any nonzero in their row of M.
     const unsigned int n = system.n_equations();
     std::vector<int>   reduced(n, -1);
-    unsigned int       n_massive = 0;
+    n_massive = 0;
     for (int column = 0; column < system.mass.outerSize(); ++column)
       for (SparseMatrix::InnerIterator it(system.mass, column); it; ++it)
         if (it.value() != 0 && reduced[it.row()] < 0)
@@ -654,6 +661,20 @@ namespace poundfe
     for (unsigned int i = 0; i < n; ++i)
       if (reduced[i] == 0)
         reduced[i] = n_massive++;
+    return reduced;
+  }
+
+  void
+  NewmarkIntegrator::solve_consistent_acceleration(const Vector &load)
+  {
+    Vector r;
+    evaluate_start(load, r, true);
+    if (elements)
+      records.note_committed(*elements, v);
+
+    const unsigned int n = system.n_equations();
+    unsigned int       n_massive = 0;
+    const std::vector<int> reduced = massive_numbering(n_massive);
 
     std::vector<Eigen::Triplet<double>> triplets;
     for (int column = 0; column < system.mass.outerSize(); ++column)
@@ -744,18 +765,6 @@ namespace poundfe
       for (unsigned int a = (b == 0 ? 1 : 0); a < r; ++a)
         value += D[a + b * r] * B(i, a) * B(j, b);
     return value;
-  }
-
-  void
-  NewmarkIntegrator::set_step_load(const Level &L, const Vector &p)
-  {
-    // rhs = p + M (c_u u + c_v v + c_a a) + C (c_u' u + c_v' v + c_a' a)
-    rhs                   = p;
-    work_vector.noalias() = L.c_mass_u * u + L.c_mass_v * v + L.c_mass_a * a;
-    rhs.noalias() += system.mass * work_vector;
-    work_vector.noalias() = L.c_damp_u * u + L.c_damp_v * v + L.c_damp_a * a;
-    rhs.noalias() += system.damping * work_vector;
-    add_low_rank_damping_product(system.modal_damping, work_vector, rhs);
   }
 
   void
@@ -1579,11 +1588,5 @@ namespace poundfe
     // summed in strain_energy()'s order, so that E_S(u_g) - E_S(u_g) is 0 exactly
     return add_element_energies(0.5 * x.dot(system.stiffness * x), elements, nullptr,
                                 n_elements, distribution, counted_here);
-  }
-
-  double
-  NewmarkIntegrator::elements_strain_energy() const
-  {
-    return add_element_energies(0, elements, nullptr, n_elements, distribution, counted_here);
   }
 } // namespace poundfe
