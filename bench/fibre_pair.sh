@@ -15,7 +15,8 @@
 # peaks; poundfe run against OpenSees: the peaks per storey and gap).
 #   bash bench/fibre_pair.sh [BUILD_DIR [ROUNDS]]
 # OPENSEES names the OpenSees 3.8 binary (default: OpenSees on the PATH);
-# POUNDFE_THREADS, if set, is passed as --threads to poundfe run. About 4
+# POUNDFE_THREADS, if set, is passed as --threads to poundfe run and to
+# poundfe opensees. About 4
 # minutes a round on one free core.
 set -euo pipefail
 build=${1:-build}
@@ -54,7 +55,7 @@ for round in $(seq 1 "$rounds"); do
   mkdir -p "$work/poundfe-opensees" "$work/opensees"
   time_it poundfe-run "$build/poundfe" run "$here/fibre-pair.prm" --output "$work/run" "${threads[@]}"
   tail -n +2 "$work/run/ground_motion.csv" | cut -d, -f2 > "$work/record.txt"
-  time_it poundfe-opensees "$build/poundfe" opensees "$here/opensees/fibre_pair/pair.tcl" \
+  time_it poundfe-opensees "$build/poundfe" opensees "${threads[@]}" "$here/opensees/fibre_pair/pair.tcl" \
     "$work/poundfe-opensees" "$work/record.txt"
   time_it OpenSees "$opensees" "$here/opensees/fibre_pair/pair.tcl" "$work/opensees" "$work/record.txt"
 done

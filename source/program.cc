@@ -195,10 +195,11 @@ namespace
         err << "poundfe: error: unknown command '" << line.args[0] << "'\n" << usage_text();
         return 1;
       }
-    if (line.threads_given && !command->has(CommandRule::reads_file))
-      { // as --set: a command that reads no file runs no time history
+    if (line.threads_given && !command->has(CommandRule::reads_file) &&
+        !command->has(CommandRule::script_arguments))
+      { // a command that reads neither a parameter file nor a script runs no time history
         err << "poundfe: error: --threads sets the threads of a time history's elements, and '"
-            << command->name << "' reads no parameter file and runs none\n";
+            << command->name << "' reads no parameter file or script and runs none\n";
         return 1;
       }
     return std::nullopt;

@@ -181,6 +181,65 @@ CASES = {
     "zero_length_late": ("zero_length_late.tcl", [], 1e-9),
     # the same with a truss added (Truss's -useInitialDisp, OpenSees's default)
     "truss_late": ("zero_length_late.tcl", ["truss"], 1e-9),
+    # ArcLength past the limit point of a shallow arch of corotational
+    # beams, down its unstable branch to the second limit point and, as
+    # OpenSees's sign of the last step's load increment takes it, back
+    "arc_length_arch": ("arc_length_arch.tcl", [], 1e-9),
+    # a 3D storey with rigidDiaphragm, equalDOF and rigidLink bar under
+    # constraints Lagrange (poundfe: Transformation's displacements, which
+    # meet the constraints as exactly; measured 9e-15) and Penalty 1e13 1e13
+    # (measured 2.5e-10: the penalty's condition number times round-off; its
+    # own error, Penalty against Lagrange, is 3.6e-4)
+    "handlers_lagrange": ("constraint_handlers.tcl", ["Lagrange"], 1e-10),
+    "handlers_penalty": ("constraint_handlers.tcl", ["Penalty", "1.0e13", "1.0e13"], 1e-9),
+    # the same with 5 t in the plane at each corner of the diaphragm, which
+    # only Penalty takes (measured 7.8e-11; 2.0 times the peak from the
+    # case without them)
+    "handlers_penalty_mass": ("constraint_handlers.tcl",
+                              ["-cornerMass", "5000.0", "Penalty", "1.0e13", "1.0e13"], 1e-9),
+    # reset halfway through a record (a yielded brace, time 0, an
+    # EnvelopeNode's extremes), reactions -dynamic and -rayleigh, and the
+    # force of members with mass under a record (with their ground-motion
+    # load: twice for a 2D elasticBeamColumn, once for a truss -rho)
+    "domain_commands": ("domain_commands.tcl", [], 1e-9),
+    # RelativeNormDispIncr under NewtonLineSearch, whose own copy of the
+    # test, started afresh at each iteration, measures a ratio of 1 and so
+    # always searches, at the last iteration on a residual of round-off
+    # (whose etas differ between the programs: no -pFlag 0 here)
+    "pounding_relative_line_search": ("pounding_sticks.tcl",
+                                      ["ImpactMaterial", "NewtonLineSearch -tol 0.01",
+                                       "RelativeNormDispIncr"], 1e-9),
+    # analysis VariableTransient (6 steps fail and are tried again shorter,
+    # 16 step lengths) under a record of uneven times: Path -time -values,
+    # and -fileTime -filePath; a Path -dt with -startTime, -prependZero and
+    # -useLast
+    "variable_steps": ("variable_steps.tcl", [], 1e-9),
+    "variable_steps_files": ("variable_steps.tcl", ["files"], 1e-9),
+    # remove element (a yielded link, a spring), node (its anchor), sp (a
+    # fixity: the mass then swings) and timeSeries mid-record
+    "remove_objects": ("remove_objects.tcl", [], 1e-9),
+    # zeroLengthSection hinges (Fiber, Aggregator, Elastic; -orient,
+    # -doRayleigh 0) under elastic columns, in the plane and in space
+    # (measured 3e-15 and 8e-15)
+    "zls_2d": ("zero_length_section.tcl", ["2d"], 1e-9),
+    "zls_3d": ("zero_length_section.tcl", ["3d"], 1e-9),
+    # corotTruss: a shallow truss pushed through its snap-through (the same
+    # bits), a yielding tripod under two components (measured 1.6e-12)
+    "corot_2d": ("corot_truss.tcl", ["2d"], 1e-9),
+    "corot_3d": ("corot_truss.tcl", ["3d"], 1e-9),
+    # modalDamping on a yielding three-storey frame: OpenSees's BandGeneral
+    # keeps only the modal damping matrix's entries inside the band in its
+    # tangent, so Newton's path differs (2.3e-9; with FullGeneral the two
+    # agree to 2.6e-14); modalDampingQ (the force alone) agrees to 4.7e-14
+    "modal_one": ("modal_damping.tcl", ["one"], 1e-8),
+    "modal_each": ("modal_damping.tcl", ["each"], 1e-8),
+    "modal_fewer": ("modal_damping.tcl", ["fewer"], 1e-8),
+    "modal_quasi": ("modal_damping.tcl", ["quasi"], 1e-12),
+    "modal_rayleigh": ("modal_damping.tcl", ["rayleigh"], 1e-8),
+    # -cMass 1 on truss and corotTruss: eigenvalues, a yielding truss's
+    # history and reactions (measured 3.2e-14), a yielding tripod (9.6e-13)
+    "cmass_truss": ("consistent_mass.tcl", ["truss"], 1e-9),
+    "cmass_corot": ("consistent_mass.tcl", ["corot"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -210,9 +210,9 @@ namespace poundfe
       define_unsupported(Tcl_Interp *interp, Session &session)
       {
         for (const char *name :
-             {"imposedMotion", "groundMotion", "modalDamping",
+             {"imposedMotion", "groundMotion",
               "printA", "printB", "printModel", "print",
-              "basicDeformation", "basicForce", "localForce", "reset", "block2D", "block3D", "nDMaterial", "frictionModel",
+              "basicDeformation", "basicForce", "localForce", "block2D", "block3D", "nDMaterial", "frictionModel",
               "database", "geomTransfPDelta", "mp", "domainChange", "remesh", "setNodeCoord",
               "setNodeDisp", "setNodeVel", "setNodeAccel", "getLoadFactor", "sectionForce",
               "sectionDeformation", "sectionStiffness", "nodeEigenvector", "nodeMass",
@@ -326,6 +326,7 @@ namespace poundfe
       define_analysis_commands(interp, session);
       define_section_commands(interp, session);
       define_region_commands(interp, session);
+      define_domain_commands(interp, session);
       define_unsupported(interp, session);
       define_exit(interp, session);
       define_poundfe_namespace(interp, session);

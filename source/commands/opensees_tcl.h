@@ -35,6 +35,12 @@ namespace poundfe
       explicit Session(std::ostream &warnings)
         : warnings(warnings)
       {}
+      /// The recorders' lines still queued reach them before they go.
+      ~Session()
+      {
+        if (writer)
+          writer->drain();
+      }
       opensees::Domain                                     domain;
       opensees::AnalysisOptions                            options;
       /// Which of `test`, `algorithm` and the static and transient
@@ -42,6 +48,9 @@ namespace poundfe
       bool has_test = false, has_algorithm = false;
       bool has_static_integrator = false, has_transient_integrator = false;
       std::unique_ptr<opensees::Analysis>                  analysis;
+      /// The recorders' writer thread (made with the first recorder when
+      /// output_writer_threaded()); before `recorders`, which drain it as they go.
+      std::shared_ptr<OutputQueue>                         writer;
       std::vector<std::unique_ptr<opensees::Recorder>>     recorders;
       /// Each recorder's tag (`remove recorder`), and the next one.
       std::vector<int> recorder_tags;
@@ -145,6 +154,11 @@ namespace poundfe
     void define_analysis_commands(Tcl_Interp *interp, Session &session);
     /// region (opensees_tcl_regions.cc).
     void define_region_commands(Tcl_Interp *interp, Session &session);
+    /// reset (opensees_tcl_domain.cc).
+    void define_domain_commands(Tcl_Interp *interp, Session &session);
+    /// remove element | ele | node | sp | SPconstraint | timeSeries (after
+    /// the word `what`); false for any other word.
+    bool remove_model_object(Session &session, Words &words, const std::string &what);
   } // namespace opensees_tcl
 } // namespace poundfe
 

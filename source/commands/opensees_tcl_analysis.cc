@@ -8,8 +8,10 @@
 #include "opensees_tcl.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <regex>
+#include <optional>
 #include <ostream>
 
 namespace poundfe
@@ -27,14 +29,22 @@ namespace poundfe
           unsupported(w.name + " option '" + w.peek() + "'");
       }
 
-      /// The script changed a component: the analysis, if any, takes it.
+      /// The script changed a component: the analysis, if any, takes it,
+      /// but keeps its kind and its constraint handler (OpenSees 3.8's
+      /// `constraints` makes the handler of the next `analysis`).
       void
       reconfigure(Session &s)
       {
         if (s.analysis)
           {
-            opensees::AnalysisOptions o = s.options;
-            o.transient                 = s.analysis->options().transient;
+            const opensees::AnalysisOptions &now = s.analysis->options();
+            opensees::AnalysisOptions        o   = s.options;
+            o.transient                          = now.transient;
+            o.transformation                     = now.transformation;
+            o.penalty                            = now.penalty;
+            o.lagrange                           = now.lagrange;
+            o.alpha_sp                           = now.alpha_sp;
+            o.alpha_mp                           = now.alpha_mp;
             s.analysis->configure(o);
           }
       }
@@ -164,44 +174,45 @@ namespace poundfe
       void
       algorithm(Session &s, Words &w)
       {
-        using Algorithm        = opensees::AnalysisOptions::Algorithm;
-        const std::string type = w.word("the algorithm's type");
+        using Algorithm             = opensees::AnalysisOptions::Algorithm;
+        const std::string         type = w.word("the algorithm's type");
+        opensees::AnalysisOptions o    = s.options; // stored once every word is checked
         if (type == "Linear")
-          s.options.algorithm = Algorithm::linear;
+          o.algorithm = Algorithm::linear;
         else if (type == "Newton")
-          s.options.algorithm = Algorithm::newton;
+          o.algorithm = Algorithm::newton;
         else if (type == "ModifiedNewton")
-          s.options.algorithm = Algorithm::modified_newton;
+          o.algorithm = Algorithm::modified_newton;
         else if (type == "NewtonLineSearch")
           {
-            s.options.algorithm = Algorithm::newton_line_search;
-            line_search_options(s.options.line_search, w);
+            o.algorithm = Algorithm::newton_line_search;
+            line_search_options(o.line_search, w);
           }
         else if (type == "KrylovNewton")
           {
-            s.options.algorithm = Algorithm::krylov_newton;
-            krylov_options(s.options, w);
+            o.algorithm = Algorithm::krylov_newton;
+            krylov_options(o, w);
           }
         else if (type == "BFGS")
           {
-            s.options.algorithm = Algorithm::bfgs;
-            bfgs_options(s.options, w);
+            o.algorithm = Algorithm::bfgs;
+            bfgs_options(o, w);
           }
         else
           unsupported("algorithm " + type);
         check_done(w);
+        s.options       = o;
         s.has_algorithm = true;
         reconfigure(s);
       }
 
       /// DisplacementControl node dof dU <Jd minIncr maxIncr>.
       void
-      displacement_control(Session &s, Words &w)
+      displacement_control(const opensees::Domain &domain, opensees::AnalysisOptions &o, Words &w)
       {
-        opensees::AnalysisOptions &o = s.options;
-        o.control_node               = s.domain.node(w.integer("the node")).tag;
+        o.control_node = domain.node(w.integer("the node")).tag;
         const int dof                = w.integer("the DOF");
-        if (dof < 1 || dof > static_cast<int>(s.domain.ndf))
+        if (dof < 1 || dof > static_cast<int>(domain.ndf))
           throw ScriptError("DOF " + std::to_string(dof) + " is not one of 1 to ndf");
         o.control_dof    = dof - 1;
         o.d_u            = w.real("the displacement increment");
@@ -217,18 +228,61 @@ namespace poundfe
           unsupported("integrator DisplacementControl -initial");
         if (o.d_u_iterations < 1)
           throw ScriptError("Jd must be >= 1");
-        o.displacement_control  = true;
-        s.has_static_integrator = true;
+        o.displacement_control = true;
+      }
+
+      /// constraints Plain | Transformation | Penalty alphaSP alphaMP |
+      /// Lagrange <alphaSP alphaMP>. Lagrange's multipliers meet linear
+      /// constraints exactly, so its displacements are Transformation's,
+      /// which gives them (its factors scale the multipliers alone). As in
+      /// OpenSees 3.8 the handler is the next `analysis` command's.
+      void
+      constraint_handler(Session &s, Words &w)
+      {
+        const std::string type = w.word("the handler's type");
+        if (type != "Plain" && type != "Transformation" && type != "Penalty" &&
+            type != "Lagrange")
+          unsupported("constraints " + type);
+        double alpha_sp = 0, alpha_mp = 0;
+        if (type == "Penalty")
+          {
+            alpha_sp = w.real("alphaSP");
+            alpha_mp = w.real("alphaMP");
+            if (!(alpha_sp > 0 && alpha_mp > 0))
+              throw ScriptError("Penalty needs alphaSP > 0 and alphaMP > 0");
+          }
+        else if (type == "Lagrange" && !w.done())
+          {
+            w.real("alphaSP");
+            w.real("alphaMP");
+          }
+        check_done(w);
+        opensees::AnalysisOptions &o = s.options; // every word checked
+        o.transformation             = type == "Transformation" || type == "Lagrange";
+        o.penalty                    = type == "Penalty";
+        o.lagrange                   = type == "Lagrange";
+        o.alpha_sp                   = alpha_sp;
+        o.alpha_mp                   = alpha_mp;
+      }
+
+      /// ArcLength s alpha (OpenSees 3.8's interpreter takes both).
+      void
+      arc_length(opensees::AnalysisOptions &o, Words &w)
+      {
+        o.arc_s     = w.real("the arc length");
+        o.arc_alpha = w.real("alpha");
+        if (!(o.arc_s > 0))
+          throw ScriptError("ArcLength needs an arc length > 0");
+        o.displacement_control = false;
       }
 
       /// HHT alpha <gamma beta> (OpenSees's alpha: 1 is Newmark's average
       /// acceleration, 2/3 the most dissipative; by default gamma = 3/2 -
       /// alpha, beta = (2 - alpha)^2 / 4).
       void
-      hht(Session &s, Words &w)
+      hht(opensees::AnalysisOptions &o, Words &w)
       {
-        opensees::AnalysisOptions &o = s.options;
-        o.alpha                      = w.real("alpha");
+        o.alpha = w.real("alpha");
         o.gamma                      = 1.5 - o.alpha;
         o.beta                       = 0.25 * (2 - o.alpha) * (2 - o.alpha);
         if (!w.done())
@@ -240,44 +294,53 @@ namespace poundfe
           throw ScriptError("HHT needs 0 < alpha <= 1");
         if (!(o.beta > 0 && o.gamma > 0))
           throw ScriptError("HHT needs beta > 0 and gamma > 0");
-        s.has_transient_integrator = true;
+      }
+
+      /// LoadControl dLambda <numIter minLambda maxLambda>.
+      void
+      load_control(opensees::AnalysisOptions &o, Words &w)
+      {
+        o.d_lambda          = w.real("the load increment");
+        o.lambda_iterations = 1;
+        o.lambda_min = o.lambda_max = o.d_lambda;
+        if (!w.done())
+          {
+            o.lambda_iterations = w.integer("the number of iterations");
+            o.lambda_min        = w.real("the smallest increment");
+            o.lambda_max        = w.real("the largest increment");
+          }
+        o.displacement_control = false;
       }
 
       void
       integrator(Session &s, Words &w)
       {
-        const std::string type = w.word("the integrator's type");
+        const std::string         type = w.word("the integrator's type");
+        opensees::AnalysisOptions o    = s.options; // stored once every word is checked
+        o.arc_length                   = type == "ArcLength";
+        const bool transient           = type == "Newmark" || type == "HHT";
         if (type == "Newmark")
           {
-            s.options.gamma = w.real("gamma");
-            s.options.beta  = w.real("beta");
-            s.options.alpha = 1;
-            if (!(s.options.beta > 0))
+            o.gamma = w.real("gamma");
+            o.beta  = w.real("beta");
+            o.alpha = 1;
+            if (!(o.beta > 0))
               throw ScriptError("Newmark needs beta > 0");
-            s.has_transient_integrator = true;
           }
         else if (type == "HHT")
-          hht(s, w);
+          hht(o, w);
         else if (type == "LoadControl")
-          {
-            s.options.d_lambda   = w.real("the load increment");
-            s.options.lambda_iterations = 1;
-            s.options.lambda_min = s.options.lambda_max = s.options.d_lambda;
-            if (!w.done())
-              {
-                s.options.lambda_iterations = w.integer("the number of iterations");
-                s.options.lambda_min        = w.real("the smallest increment");
-                s.options.lambda_max        = w.real("the largest increment");
-              }
-            s.has_static_integrator          = true;
-            s.options.displacement_control = false;
-          }
+          load_control(o, w);
         else if (type == "DisplacementControl")
-          displacement_control(s, w);
+          displacement_control(s.domain, o, w);
+        else if (type == "ArcLength")
+          arc_length(o, w);
         else
           unsupported("integrator " + type);
         check_done(w);
-        ++s.options.integrator_serial;
+        ++o.integrator_serial;
+        s.options = o;
+        (transient ? s.has_transient_integrator : s.has_static_integrator) = true;
         reconfigure(s);
       }
 
@@ -325,16 +388,43 @@ namespace poundfe
       analysis(Session &s, Words &w)
       {
         const std::string type = w.word("the analysis' type");
-        if (type != "Static" && type != "Transient")
+        // OpenSees's three names of VariableTimeStepDirectIntegrationAnalysis
+        const bool variable = type == "VariableTransient" || type == "VariableTimeStepTransient" ||
+                              type == "TransientWithVariableTimeStep";
+        if (type != "Static" && type != "Transient" && !variable)
           unsupported("analysis " + type);
         check_done(w);
         if (s.domain.ndf == 0)
           throw ScriptError("no model yet");
-        const bool transient = type == "Transient";
+        const bool transient = type == "Transient" || variable;
         default_components(s, transient);
-        s.options.transient = transient;
+        s.options.transient          = transient;
+        s.options.variable_time_step = variable;
         add_counts(s);
         s.analysis = std::make_unique<opensees::Analysis>(s.domain, s.options);
+      }
+
+      /// analyze's dtMin dtMax Jd (when given: a VariableTransient analysis
+      /// only, as OpenSees's analyze).
+      std::optional<opensees::Analysis::VariableSteps>
+      variable_steps(Session &s, Words &w, const int steps, const double dt)
+      {
+        if (w.done() || w.peek() == "-noFlush")
+          return std::nullopt;
+        if (!s.analysis->options().variable_time_step)
+          throw ScriptError("dtMin dtMax Jd given to an analysis that is not VariableTransient "
+                            "(no variable time step transient analysis object constructed)");
+        opensees::Analysis::VariableSteps v;
+        v.n_steps = std::max(steps, 0);
+        v.dt      = dt;
+        v.dt_min  = w.real("dtMin");
+        v.dt_max  = w.real("dtMax");
+        v.jd      = w.integer("Jd");
+        if (!(v.dt_min > 0) || !(v.dt_max >= v.dt_min))
+          throw ScriptError("dtMin must be > 0 and dtMax >= dtMin");
+        if (v.jd < 1)
+          throw ScriptError("Jd must be >= 1");
+        return v;
       }
 
       void
@@ -350,23 +440,24 @@ namespace poundfe
             if (!(dt > 0))
               throw ScriptError("the time step must be > 0");
           }
+        const std::optional<opensees::Analysis::VariableSteps> variable =
+          variable_steps(s, w, steps, dt);
+        if (!w.done() && w.peek() == "-noFlush") // the files are written at the end anyway
+          w.word("-noFlush");
         check_done(w);
         if (steps < 0)
           throw ScriptError("the number of steps must be >= 0");
-        const opensees::AnalysisOptions &o = s.analysis->options();
-        if (o.test.kind == opensees::ConvergenceTest::Kind::relative_norm_disp_incr &&
-            o.algorithm == opensees::AnalysisOptions::Algorithm::newton_line_search)
-          unsupported("test RelativeNormDispIncr with algorithm NewtonLineSearch");
         if (s.analysis->options().transient)
-          s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper)
-        const int result = s.analysis->analyze(
-          steps, dt, [&]() { s.record(); },
-          [&](const std::string &why) {
-            // the test's and the line search's own lines are not warnings
-            const bool report = why.compare(0, 5, "CTest") == 0 ||
-                                why.compare(0, 19, "InitialInterpolated") == 0;
-            s.warnings << (report ? "" : "WARNING ") << why << "\n";
-          });
+          s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper), the first step's
+        const auto record = [&]() { s.record(); };
+        const auto warn   = [&](const std::string &why) {
+          // the test's and the line search's own lines are not warnings
+          const bool report = why.compare(0, 5, "CTest") == 0 ||
+                              why.compare(0, 19, "InitialInterpolated") == 0;
+          s.warnings << (report ? "" : "WARNING ") << why << "\n";
+        };
+        const int result = variable ? s.analysis->analyze_variable(*variable, record, warn) :
+                                      s.analysis->analyze(steps, dt, record, warn);
         Tcl_SetObjResult(w.interp, Tcl_NewIntObj(result));
       }
 
@@ -393,6 +484,43 @@ namespace poundfe
           }
         else
           set_result(w.interp, s.analysis->eigenvalues(n));
+      }
+
+      /// modalDamping zeta... (modalDampingQ: `in_tangent` false): one
+      /// factor for every mode of the last `eigen`, or one per mode (0 for
+      /// those left out, extras ignored), with OpenSees 3.8's warnings.
+      void
+      modal_damping(Session &s, Words &w, const bool in_tangent)
+      {
+        const std::string name = w.name;
+        std::vector<double> factors;
+        while (!w.done())
+          factors.push_back(w.real("a damping factor"));
+        if (factors.empty())
+          throw ScriptError(name + " ?factor - not enough arguments to command");
+        for (const double zeta : factors)
+          if (!std::isfinite(zeta))
+            throw ScriptError(name + ": a damping factor is not finite");
+        const std::size_t n_modes = s.domain.modes.eigenvalues.size();
+        if (n_modes == 0)
+          s.warnings << "WARNING - " << name
+                     << " - eigen command needs to be called first - NO MODAL DAMPING APPLIED\n";
+        if (factors.size() != 1 && factors.size() < n_modes)
+          s.warnings << "WARNING " << name
+                     << " - fewer damping factors than modes were specified\n"
+                     << std::string(name.size() + 9, ' ')
+                     << "- zero damping will be applied to un-specified modes\n";
+        if (factors.size() > n_modes && n_modes > 0)
+          s.warnings << "WARNING " << name
+                     << " - more damping factors than modes were specifed\n"
+                     << std::string(name.size() + 9, ' ')
+                     << "- ignoring additional damping factors\n";
+        std::vector<double> zeta(n_modes, factors.size() == 1 ? factors[0] : 0.0);
+        for (std::size_t i = 0; factors.size() > 1 && i < std::min(n_modes, factors.size()); ++i)
+          zeta[i] = factors[i];
+        s.domain.modal_damping            = zeta;
+        s.domain.modal_damping_in_tangent = in_tangent;
+        ++s.domain.modal_stamp;
       }
 
       /// nodeDisp/nodeVel/nodeAccel/nodeReaction/nodeCoord: one DOF's value
@@ -428,11 +556,28 @@ namespace poundfe
                     "DOF");
       }
 
+      /// reactions <-dynamic|-rayleigh> (OpenSees's calculateNodalReactions:
+      /// -incInertia, -dynamical, -Dynamic and -dynamic include the inertia
+      /// and damping forces, -rayleigh gives the Rayleigh damping forces alone).
       void
       reactions(Session &s, Words &w)
       {
+        using Flag = opensees::Domain::ReactionFlag;
+        Flag flag  = Flag::resisting;
+        if (!w.done())
+          {
+            const std::string option = w.word("the option");
+            if (option == "-incInertia" || option == "-dynamical" || option == "-Dynamic" ||
+                option == "-dynamic")
+              flag = Flag::dynamic;
+            else if (option == "-rayleigh")
+              flag = Flag::rayleigh;
+            else
+              throw ScriptError("option '" + option +
+                                "' is not -dynamic (-incInertia, -dynamical, -Dynamic) or -rayleigh");
+          }
         check_done(w);
-        s.reactions = s.domain.reactions();
+        s.reactions = s.domain.reactions(flag);
       }
 
       template <typename Map>
@@ -461,7 +606,7 @@ namespace poundfe
       element_force(Session &s, Words &w)
       {
         const opensees::Element &e = element_of(s, w);
-        node_values(w, e.response({"force"}), "DOF");
+        node_values(w, s.domain.element_response(e, {"force"}), "DOF");
       }
 
       void
@@ -528,11 +673,7 @@ namespace poundfe
     void
     define_analysis_commands(Tcl_Interp *interp, Session &session)
     {
-      define(interp, session, "constraints", [](Session &s, Words &w) {
-        s.options.transformation = w.peek() == "Transformation";
-        accept_names(w, {"Plain", "Transformation"});
-        reconfigure(s);
-      });
+      define(interp, session, "constraints", constraint_handler);
       define(interp, session, "numberer", [](Session &, Words &w) {
         accept_names(w, {"Plain", "RCM", "AMD"});
       });
@@ -548,6 +689,8 @@ namespace poundfe
       define(interp, session, "analysis", analysis);
       define(interp, session, "analyze", analyze);
       define(interp, session, "eigen", eigen);
+      define(interp, session, "modalDamping", [](Session &s, Words &w) { modal_damping(s, w, true); });
+      define(interp, session, "modalDampingQ", [](Session &s, Words &w) { modal_damping(s, w, false); });
       define(interp, session, "wipeAnalysis", wipe_analysis);
       define(interp, session, "eleForce", element_force);
       define(interp, session, "eleResponse", [](Session &s, Words &w) {
@@ -555,7 +698,7 @@ namespace poundfe
         std::vector<std::string> words;
         while (!w.done())
           words.push_back(w.word("the response"));
-        set_result(w.interp, e.response(words));
+        set_result(w.interp, s.domain.element_response(e, words));
       });
       define(interp, session, "testIter",
              [](Session &s, Words &w) { test_results(s, w, false); });

@@ -6,12 +6,15 @@
 #include <poundfe/laws/material_registry.h>
 #include <poundfe/laws/viscous_damper.h>
 
+#include <poundfe/opensees/opensees_section_links.h>
+
 #include "opensees_tcl.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <set>
 
@@ -470,36 +473,154 @@ namespace poundfe
         add_node_masses(d, tag, data.nodes, 0.5 * data.mass); // TwoNodeLink::getMass
       }
 
-      /// truss tag i j A matTag <-rho rho> <-doRayleigh 0|1>
-      void
-      truss(opensees::Domain &d, Words &w)
+      /// The length of a member between its nodes' coordinates.
+      double
+      member_length(const opensees::Domain &d, const std::array<int, 2> &nodes)
       {
-        const int          tag = w.integer("the element's tag");
-        std::array<int, 2> nodes{{w.integer("node i"), w.integer("node j")}};
-        const double       area     = w.real("A");
-        const int          material = w.integer("the material's tag");
-        double             rho      = 0;
-        bool               rayleigh = false;
+        const auto &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
+        double      L2 = 0;
+        for (unsigned int k = 0; k < std::min(a.size(), b.size()); ++k)
+          L2 += (b[k] - a[k]) * (b[k] - a[k]);
+        return std::sqrt(L2);
+      }
+
+      /// A truss's consistent mass (Truss and CorotTruss::getMass with
+      /// cMass): rho L/6 [2 1; 1 2] on each of its ends' ndm translations.
+      void
+      add_consistent_truss_mass(opensees::Domain &d, const int element,
+                                const std::array<int, 2> &nodes, const double rho,
+                                const bool load_in_reaction)
+      {
+        if (rho == 0)
+          return;
+        const double       m   = rho * member_length(d, nodes) / 6.0;
+        const unsigned int ndf = d.ndf;
+        opensees::Matrix   M   = opensees::Matrix::Zero(2 * ndf, 2 * ndf);
+        for (unsigned int i = 0; i < std::min(d.ndm, ndf); ++i)
+          {
+            M(i, i) = M(ndf + i, ndf + i) = 2.0 * m;
+            M(i, ndf + i) = M(ndf + i, i) = m;
+          }
+        d.consistent_masses.push_back({element, {nodes[0], nodes[1]}, M, load_in_reaction});
+        d.changed = true;
+      }
+
+      /// A 0|1 flag's value (-doRayleigh, -cMass), the option named when
+      /// it is neither.
+      bool
+      flag_value(Words &w, const std::string &element, const std::string &option)
+      {
+        const int flag = w.integer(("the " + option + " flag").c_str());
+        if (flag != 0 && flag != 1)
+          throw ScriptError(element + ": " + option + " takes 0 or 1, not " + text_of(flag));
+        return flag == 1;
+      }
+
+      /// The words of truss and corotTruss: tag i j A matTag <-rho r>
+      /// <-cMass 0|1> <-doRayleigh 0|1>; `unknown` refuses another option.
+      struct TrussWords
+      {
+        int                tag = 0;
+        std::array<int, 2> nodes{};
+        double             area = 0, rho = 0;
+        int                material = 0;
+        bool               rayleigh = false, consistent = false;
+      };
+      TrussWords
+      truss_words(Words &w, const std::string &type,
+                  const std::function<void(const std::string &, const std::string &)> &unknown)
+      {
+        TrussWords t;
+        t.tag                  = w.integer("the element's tag");
+        const std::string name = type + " " + text_of(t.tag);
+        t.nodes                = {{w.integer("node i"), w.integer("node j")}};
+        t.area                 = w.real("A");
+        t.material             = w.integer("the material's tag");
         while (!w.done())
           {
             const std::string option = w.word("an option");
             if (option == "-rho")
-              rho = w.real("the mass per length");
+              t.rho = w.real("the mass per length");
+            else if (option == "-cMass")
+              t.consistent = flag_value(w, name, option);
             else if (option == "-doRayleigh")
-              {
-                const int flag = w.integer("the -doRayleigh flag");
-                if (flag != 0 && flag != 1)
-                  unsupported("element truss -doRayleigh " + text_of(flag));
-                rayleigh = flag == 1;
-              }
+              t.rayleigh = flag_value(w, name, option);
             else
-              unsupported("element truss option '" + option + "'");
+              unknown(name, option);
           }
-        add_element(d, opensees::make_truss(d, tag, nodes, area, material, rayleigh));
-        if (d.ndm == 2)
-          add_lumped_mass(d, tag, nodes, rho);
-        else if (rho != 0)
+        return t;
+      }
+
+      /// truss tag i j A matTag <-rho rho> <-cMass 0|1> <-doRayleigh 0|1>
+      void
+      truss(opensees::Domain &d, Words &w)
+      {
+        const TrussWords t = truss_words(w, "truss", [](const std::string &, const std::string &o) {
+          unsupported("element truss option '" + o + "'");
+        });
+        add_element(d, opensees::make_truss(d, t.tag, t.nodes, t.area, t.material, t.rayleigh));
+        if (d.ndm == 2 && t.consistent)
+          add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, true);
+        else if (d.ndm == 2)
+          add_lumped_mass(d, t.tag, t.nodes, t.rho);
+        else if (t.rho != 0)
           unsupported("element truss -rho outside -ndm 2");
+      }
+
+      /// zeroLengthSection tag i j secTag <-orient x1 x2 x3 yp1 yp2 yp3>
+      /// <-doRayleigh <0|1>> (Rayleigh-damped by default, as OpenSees's);
+      /// in 2D, -orient's x alone too (OpenSeesPy's form: y across x).
+      void
+      zero_length_section(opensees::Domain &d, Words &w)
+      {
+        const int                       tag  = w.integer("the element's tag");
+        const std::string               name = "zeroLengthSection " + text_of(tag);
+        opensees::ZeroLengthSectionData z;
+        z.nodes    = {{w.integer("node i"), w.integer("node j")}};
+        z.section  = w.integer("the section's tag");
+        z.rayleigh = true;
+        while (!w.done())
+          {
+            const std::string option = w.word("an option");
+            if (option == "-orient")
+              {
+                for (double &x : z.x)
+                  x = w.real("a component of x");
+                double value;
+                if (d.ndm == 2 &&
+                    (w.done() || Tcl_GetDouble(nullptr, w.peek().c_str(), &value) != TCL_OK))
+                  z.y = {{-z.x[1], z.x[0], 0.0}};
+                else
+                  for (double &y : z.y)
+                    y = w.real("a component of yp");
+              }
+            else if (option == "-doRayleigh")
+              z.rayleigh = w.done() || w.peek()[0] == '-' || flag_value(w, name, option);
+            else
+              unsupported("element zeroLengthSection option '" + option + "'");
+          }
+        add_element(d, opensees::make_zero_length_section(d, tag, z));
+      }
+
+      /// corotTruss tag i j A matTag <-rho r> <-cMass 0|1> <-doRayleigh 0|1>:
+      /// -rho lumped (rho L/2 on each end's translations) or consistent.
+      void
+      corot_truss(opensees::Domain &d, Words &w)
+      {
+        const TrussWords t =
+          truss_words(w, "corotTruss", [](const std::string &name, const std::string &option) {
+            throw ScriptError("invalid option " + option + " in: element " + name +
+                              " $iNode $jNode $A $matTag <-rho $rho> <-cMass $flag> "
+                              "<-doRayleigh $flag>");
+          });
+        add_element(d, opensees::make_corot_truss(d, t.tag, t.nodes, t.area, t.material,
+                                                  t.rayleigh));
+        // CorotTruss::getResistingForce does not subtract its inertia load:
+        // the reactions leave it out (add_node_masses, not add_lumped_mass)
+        if (t.consistent)
+          add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, false);
+        else
+          add_node_masses(d, t.tag, t.nodes, 0.5 * t.rho * member_length(d, t.nodes));
       }
 
       void
@@ -513,6 +634,10 @@ namespace poundfe
           zero_length(d, w);
         else if (type == "truss")
           truss(d, w);
+        else if (type == "zeroLengthSection")
+          zero_length_section(d, w);
+        else if (type == "corotTruss" || type == "CorotTruss")
+          corot_truss(d, w);
         else if (type == "twoNodeLink")
           two_node_link(d, w);
         else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
@@ -762,6 +887,79 @@ namespace poundfe
         return values;
       }
 
+      /// A list of numbers: one list word or, as OpenSeesPy gives them, the
+      /// numbers as words of their own.
+      std::vector<double>
+      number_list(Words &w, const char *what)
+      {
+        std::vector<double> values;
+        Tcl_Obj            *list = Tcl_NewStringObj(w.word(what).c_str(), -1);
+        Tcl_IncrRefCount(list);
+        int       n = 0;
+        Tcl_Obj **items;
+        const int ok = Tcl_ListObjGetElements(w.interp, list, &n, &items);
+        for (int i = 0; ok == TCL_OK && i < n; ++i)
+          {
+            double v;
+            if (Tcl_GetDoubleFromObj(nullptr, items[i], &v) != TCL_OK)
+              {
+                const std::string item = Tcl_GetString(items[i]);
+                Tcl_DecrRefCount(list);
+                throw ScriptError(std::string(what) + " holds '" + item + "', not a number");
+              }
+            values.push_back(v);
+          }
+        Tcl_DecrRefCount(list);
+        if (n == 1)
+          for (const double v : w.numbers(what))
+            values.push_back(v);
+        return values;
+      }
+
+      /// A Path series' options besides its values and factor (OpenSees's
+      /// OPS_PathSeries).
+      struct PathOptions
+      {
+        std::vector<double> times; // -time or -fileTime
+        bool                use_last = false, prepend_zero = false;
+        double              start_time = 0;
+      };
+
+      /// A Path series as OpenSees's OPS_PathSeries makes it: with -dt a
+      /// PathSeries (-useLast, -prependZero, -startTime), else with times a
+      /// PathTimeSeries, which takes none of the three (with a warning).
+      void
+      finish_path(opensees::TimeSeries &series, const PathOptions &path, std::ostream &warnings)
+      {
+        if (series.values.empty())
+          throw ScriptError("a Path series needs -values or -filePath");
+        if (series.dt > 0 && !path.times.empty())
+          throw ScriptError("a Path series takes -dt or -time (-fileTime), not both");
+        if (series.dt > 0)
+          {
+            if (path.prepend_zero)
+              series.values.insert(series.values.begin(), 0.0);
+            series.use_last   = path.use_last;
+            series.start_time = path.start_time;
+            return;
+          }
+        if (path.times.empty())
+          throw ScriptError("a Path series needs -dt > 0, -time or -fileTime");
+        if (path.times.size() != series.values.size())
+          throw ScriptError("a Path series has " + std::to_string(path.times.size()) +
+                            " times and " + std::to_string(series.values.size()) +
+                            " values (they must be as many)");
+        for (std::size_t i = 1; i < path.times.size(); ++i)
+          if (path.times[i] < path.times[i - 1])
+            throw ScriptError("a Path series' times must not decrease (time " +
+                              std::to_string(i + 1) + " is before time " + std::to_string(i) +
+                              ")");
+        if (path.use_last || path.prepend_zero || path.start_time != 0)
+          warnings << "WARNING timeSeries Path: -useLast, -prependZero and -startTime are "
+                      "ignored with -time or -fileTime (OpenSees 3.8's PathTimeSeries)\n";
+        series.times = path.times;
+      }
+
       /// The options of a Path, Linear or Constant series (after its tag).
       std::shared_ptr<opensees::TimeSeries>
       series_options(const std::string &type, Words &w, std::ostream &warnings)
@@ -780,6 +978,7 @@ namespace poundfe
             if (!(series->period > 0))
               throw ScriptError("the period must be > 0");
           }
+        PathOptions path;
         while (!w.done())
           {
             const std::string option = w.word("an option");
@@ -792,33 +991,24 @@ namespace poundfe
             else if (series->kind == Kind::path && option == "-dt")
               series->dt = w.real("-dt");
             else if (series->kind == Kind::path && option == "-values")
-              {
-                Tcl_Obj *list = Tcl_NewStringObj(w.word("the values").c_str(), -1);
-                Tcl_IncrRefCount(list);
-                int       n = 0;
-                Tcl_Obj **items;
-                const int ok = Tcl_ListObjGetElements(w.interp, list, &n, &items);
-                for (int i = 0; ok == TCL_OK && i < n; ++i)
-                  {
-                    double v;
-                    if (Tcl_GetDoubleFromObj(nullptr, items[i], &v) != TCL_OK)
-                      throw ScriptError("-values holds '" + std::string(Tcl_GetString(items[i])) +
-                                        "', not a number");
-                    series->values.push_back(v);
-                  }
-                Tcl_DecrRefCount(list);
-                // OpenSeesPy's other form: the values as words of their own
-                if (n == 1)
-                  for (const double v : w.numbers("a value"))
-                    series->values.push_back(v);
-              }
+              series->values = number_list(w, "-values");
+            else if (series->kind == Kind::path && option == "-time")
+              path.times = number_list(w, "-time");
             else if (series->kind == Kind::path && option == "-filePath")
               series->values = read_path_file(w.word("the file"), warnings);
+            else if (series->kind == Kind::path && option == "-fileTime")
+              path.times = read_path_file(w.word("the file"), warnings);
+            else if (series->kind == Kind::path && option == "-useLast")
+              path.use_last = true;
+            else if (series->kind == Kind::path && option == "-prependZero")
+              path.prepend_zero = true;
+            else if (series->kind == Kind::path && (option == "-startTime" || option == "-tStart"))
+              path.start_time = w.real(option.c_str());
             else
               unsupported("timeSeries " + type + " option '" + option + "'");
           }
-        if (series->kind == Kind::path && !(series->dt > 0))
-          throw ScriptError("a Path series needs -dt > 0 (-time and -fileTime: not supported)");
+        if (series->kind == Kind::path)
+          finish_path(*series, path, warnings);
         return series;
       }
 
@@ -1352,7 +1542,7 @@ namespace poundfe
             d.patterns.erase(tag);
             d.changed = true;
           }
-        else
+        else if (!remove_model_object(s, w, what))
           unsupported("remove " + what);
       }
     } // namespace
@@ -1447,6 +1637,9 @@ namespace poundfe
       define(interp, session, "rayleigh", rayleigh);
       define(interp, session, "recorder", [](Session &s, Words &w) {
         recorder(s, w);
+        if (!s.writer) // the lines' text made and written off the stepping thread
+          s.writer = std::make_shared<OutputQueue>(output_writer_threaded());
+        s.recorders.back()->set_queue(s.writer);
         // OpenSees's recorders are numbered from 0 in the order made, over
         // the whole run (Recorder::lastRecorderTag)
         s.recorder_tags.push_back(s.next_recorder_tag++);

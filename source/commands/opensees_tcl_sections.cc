@@ -385,6 +385,10 @@ namespace poundfe
             const std::string option = w.word("an option");
             if (option == "-mass")
               rho = w.real("the mass per length");
+            // OpenSees 3.8's ForceBeamColumn2d/3d read -cMass and keep their
+            // mass lumped
+            else if (option == "-lMass" || (option == "-cMass" && type != "dispBeamColumn"))
+              continue;
             else if (option == "-iter" && type != "dispBeamColumn")
               {
                 const int n         = w.integer("maxIter");

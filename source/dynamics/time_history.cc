@@ -233,6 +233,7 @@ namespace poundfe
     , initial(initial_state(parameters.initial_conditions, analysis_.model, parameters.input))
   {
     integrator->set_equation_names(equation_names(analysis_.model));
+    integrator->equilibrate_massless_start(!parameters.initial_conditions.at_rest());
     if (analysis_.gravity.active)
       {
         if (dopri)

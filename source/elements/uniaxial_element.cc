@@ -53,10 +53,13 @@ namespace poundfe
   double
   UniaxialElement::deformation(const Eigen::VectorXd &u) const
   {
+    const std::vector<int> &e = equations();
+    if (signs.size() == 2 && free_dofs.size() == 2) // as evaluate's: the same bits
+      return (0.0 + signs[0] * u[e[0]]) + signs[1] * u[e[1]];
     double d = 0;
     for (unsigned int i = 0; i < signs.size(); ++i)
-      if (equations()[i] >= 0)
-        d += signs[i] * u[equations()[i]];
+      if (e[i] >= 0)
+        d += signs[i] * u[e[i]];
     return d;
   }
 
@@ -72,18 +75,35 @@ namespace poundfe
                             const Eigen::VectorXd &v, const double damping_factor, double *f,
                             double &d)
   {
-    double deformation = 0, rate = 0; // as local_deformation of the gathered u and v
-    for (const unsigned int i : free_dofs)
+    // A two-terminal element between two free DOFs (a gap, a hinge, a storey
+    // above the first) takes the same sums unrolled: 0 + s0 u0 + s1 u1 in
+    // this order, so the same bits, without the loops' set-up.
+    const bool two_free = signs.size() == 2 && free_dofs.size() == 2;
+    double     deformation = 0, rate = 0; // as local_deformation of the gathered u and v
+    if (two_free)
       {
-        deformation += signs[i] * u[equations[i]];
-        rate += signs[i] * v[equations[i]];
+        const int e0 = equations[0], e1 = equations[1];
+        deformation = (0.0 + signs[0] * u[e0]) + signs[1] * u[e1];
+        rate        = (0.0 + signs[0] * v[e0]) + signs[1] * v[e1];
       }
+    else
+      for (const unsigned int i : free_dofs)
+        {
+          deformation += signs[i] * u[equations[i]];
+          rate += signs[i] * v[equations[i]];
+        }
     trial_deformation = deformation;
     if (!law->set_trial(deformation, rate))
       return false;
     const double correction = law->force() - reference_stiffness * trial_deformation;
-    for (unsigned int i = 0; i < signs.size(); ++i)
-      f[i] = signs[i] * correction;
+    if (two_free)
+      {
+        f[0] = signs[0] * correction;
+        f[1] = signs[1] * correction;
+      }
+    else
+      for (unsigned int i = 0; i < signs.size(); ++i)
+        f[i] = signs[i] * correction;
     d = law->tangent() - reference_stiffness + damping_factor * law->damping_tangent();
     return true;
   }

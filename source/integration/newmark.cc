@@ -2,6 +2,7 @@
 #include <poundfe/assembly/low_rank_update.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/numbers.h>
+#include <poundfe/base/parallel_refusal.h>
 #include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/integration/accuracy_substeps.h>
 #include <poundfe/integration/fixed_size_step.h>
@@ -10,12 +11,10 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/multithread_info.h>
-#include <deal.II/base/parallel.h>
 
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -69,32 +68,6 @@ namespace poundfe
              std::count(uniaxial.begin(), uniaxial.end(), nullptr) >= heavy_elements;
     }
 
-    /// evaluate(h) for h in [0, n) over deal.II's threads (TBB), in ranges
-    /// of a few elements; the first h (in order) whose evaluate refused, or
-    /// n. A range stops at its refusal; the others run to their end.
-    template <typename Evaluate>
-    unsigned int
-    first_refusal_in_parallel(const unsigned int n, const Evaluate &evaluate)
-    {
-      constexpr unsigned int    elements_per_range = 4;
-      std::atomic<unsigned int> first{n};
-      dealii::parallel::apply_to_subranges(
-        0u, n,
-        [&](const unsigned int begin, const unsigned int end) {
-          for (unsigned int h = begin; h < end; ++h)
-            if (!evaluate(h))
-              {
-                unsigned int seen = first.load();
-                while (h < seen && !first.compare_exchange_weak(seen, h))
-                  {
-                  }
-                return;
-              }
-        },
-        elements_per_range);
-      return first.load();
-    }
-
     /// local_u[q], local_v[q] = u[i], v[i] of the local DOFs q in [first,
     /// end), i = local_equation[q]; 0 on the ground (i < 0).
     void
@@ -136,27 +109,47 @@ namespace poundfe
     /// null. Listed again at every initialize(): the elements may have been
     /// replaced between runs (TimeHistory::replace_nonlinear_elements), so a
     /// list kept from an earlier run would point to freed elements.
-    void
+    /// Returns whether every element is one.
+    bool
     list_uniaxial(NonlinearElements *const elements, const unsigned int n_elements,
                   std::vector<UniaxialElement *> &uniaxial)
     {
       uniaxial.assign(n_elements, nullptr);
       for (unsigned int h = 0; h < n_elements; ++h)
         uniaxial[h] = dynamic_cast<UniaxialElement *>(&(*elements)[h]);
+      return std::count(uniaxial.begin(), uniaxial.end(), nullptr) == 0;
+    }
+
+    /// f(element h): as the UniaxialElement it is when `uniaxial` lists it,
+    /// so that f's calls go through the final class with no virtual call of
+    /// the element's own (only its law's), else as a NonlinearElement. The
+    /// same functions either way, so the same bits.
+    template <typename Elements, typename F>
+    decltype(auto)
+    on_element(Elements &elements, const std::vector<UniaxialElement *> &uniaxial,
+               const unsigned int h, F &&f)
+    {
+      if (UniaxialElement *const typed = uniaxial[h])
+        return f(*typed);
+      return f(elements[h]);
     }
 
     /// `start` plus the elements' stored energies above their reference
     /// (this rank's counted elements), added one by one onto `start`: the
     /// order of the sum, and so its last bits, is that of a run without a
     /// gravity state.
+    /// `uniaxial`: the elements listed by list_uniaxial since they were
+    /// last replaced (the energies read through the final class), or null.
     double
     add_element_energies(double start, const NonlinearElements *const elements,
+                         const std::vector<UniaxialElement *> *const uniaxial,
                          const unsigned int n_elements, const RankOwnership *const distribution,
                          const std::vector<char> &counted_here)
     {
+      const auto energy = [](const auto &e) { return e.stored_energy() - e.reference_energy(); };
       for (unsigned int h = 0; h < n_elements; ++h)
         if (!distribution || counted_here[h])
-          start += (*elements)[h].stored_energy() - (*elements)[h].reference_energy();
+          start += uniaxial ? on_element(*elements, *uniaxial, h, energy) : energy((*elements)[h]);
       return start;
     }
   } // namespace
@@ -219,6 +212,9 @@ namespace poundfe
     /// level; listed when the level is made and again at every initialize,
     /// since the elements may be replaced between runs).
     std::vector<UniaxialElement *> uniaxial;
+    /// Whether every element is listed in `uniaxial`: then the element loop
+    /// is one plain loop over them.
+    bool all_uniaxial = false;
     /// The frozen tangent K_0 = K_eff + sum_e B_e D_0,e B_e^T of every
     /// method but newton: D_0 (laid out as tangent_change), whether it is
     /// set, whether the assembled K_0 is the factorisation held (the
@@ -282,7 +278,7 @@ namespace poundfe
                        "conjugate gradients needs a symmetric tangent, and a nonlinear "
                        "element's is not: use a direct solver or Tangent update = woodbury");
     const unsigned int n = system.n_equations();
-    for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &rhs, &residual,
+    for (Vector *x : {&u, &v, &a, &load_now, &u_next, &v_next, &a_next, &residual,
                       &increment, &work_vector, &velocity_sum, &product, &step_displacement,
                       &start_residual, &stiffness_product})
       x->setZero(n);
@@ -414,7 +410,7 @@ namespace poundfe
     if (!distribution)
       L->fixed = make_fixed_size_step(system, L->effective);
     L->solver = new_linear_solver(*L);
-    list_uniaxial(elements, n_elements, L->uniaxial);
+    L->all_uniaxial = list_uniaxial(elements, n_elements, L->uniaxial);
     // every step size has K_eff's pattern: one symbolic analysis where the
     // backend can share it (UMFPACK)
     stats.shared_analyses +=
@@ -562,16 +558,17 @@ namespace poundfe
       (*elements)[h].reset();
     for (const std::unique_ptr<Level> &L : levels)
       if (L)
-        list_uniaxial(elements, n_elements, L->uniaxial);
+        L->all_uniaxial = list_uniaxial(elements, n_elements, L->uniaxial);
     if (element_preload && elements)
       element_preload(*elements);
     gravity_strain  = 0;
     input_with_held = 0;
     if (held_load.size() > 0) // the elements are at the gravity state now
-      {
-        gravity_strain     = strain_energy_at(gravity_displacement);
-        start_displacement = u;
-      }
+      gravity_strain = strain_energy_at(gravity_displacement);
+    if (equilibrate_massless)
+      equilibrate_massless_dofs(load);
+    if (held_load.size() > 0)
+      start_displacement = u;
     set_consistent_acceleration(load);
     if (elements)
       records.start(*elements);
@@ -629,28 +626,34 @@ namespace poundfe
   }
 
   void
-  NewmarkIntegrator::solve_consistent_acceleration(const Vector &load)
+  NewmarkIntegrator::evaluate_start(const Vector &load, Vector &r, const bool commit)
   {
-    Vector r = load - damping_product(system, v) - system.stiffness * u;
+    r = load - damping_product(system, v) - system.stiffness * u;
     gather(u, v);
     for (unsigned int h = 0; h < n_elements; ++h)
       {
         NonlinearElement  &e = (*elements)[h];
-        const unsigned int s = dof_start[h], k = e.n_dofs();
+        const unsigned int s = dof_start[h], k = e.n_dofs(), rank = basis[h].cols();
         if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
           throw NumericalError("state at t = " + number_text(current_time) + " s: " + e.label +
                                ": " + e.failure());
-        e.commit();
+        if (commit)
+          e.commit();
+        else // the static tangent, for the massless equations' Newton
+          e.tangent_change(0, Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h],
+                                                           rank, rank));
         e.force_correction(correction.segment(s, k));
       }
-    if (elements)
-      records.note_committed(*elements, v);
     subtract_element_forces(r);
+  }
 
+  std::vector<int>
+  NewmarkIntegrator::massive_numbering(unsigned int &n_massive) const
+  {
     // Equations that carry mass: any nonzero in their row of M.
     const unsigned int n = system.n_equations();
     std::vector<int>   reduced(n, -1);
-    unsigned int       n_massive = 0;
+    n_massive = 0;
     for (int column = 0; column < system.mass.outerSize(); ++column)
       for (SparseMatrix::InnerIterator it(system.mass, column); it; ++it)
         if (it.value() != 0 && reduced[it.row()] < 0)
@@ -658,6 +661,20 @@ namespace poundfe
     for (unsigned int i = 0; i < n; ++i)
       if (reduced[i] == 0)
         reduced[i] = n_massive++;
+    return reduced;
+  }
+
+  void
+  NewmarkIntegrator::solve_consistent_acceleration(const Vector &load)
+  {
+    Vector r;
+    evaluate_start(load, r, true);
+    if (elements)
+      records.note_committed(*elements, v);
+
+    const unsigned int n = system.n_equations();
+    unsigned int       n_massive = 0;
+    const std::vector<int> reduced = massive_numbering(n_massive);
 
     std::vector<Eigen::Triplet<double>> triplets;
     for (int column = 0; column < system.mass.outerSize(); ++column)
@@ -694,11 +711,15 @@ namespace poundfe
     // in its own slices of local_u, local_v, correction and tangent_change:
     // the elements are independent, so their order (or thread) does not
     // change a number
+    const auto evaluate_uniaxial = [&](const unsigned int h) { // no gather, no virtual call
+      const unsigned int s = dof_start[h];
+      return L.uniaxial[h]->evaluate(local_equation.data() + s, u_trial, v_trial, L.c_damp_u,
+                                     correction.data() + s, tangent_change[d_start[h]]);
+    };
     const auto evaluate = [&](const unsigned int h) {
       const unsigned int s = dof_start[h], k = dof_start[h + 1] - s, r = basis[h].cols();
-      if (UniaxialElement *const typed = L.uniaxial[h]) // no gather, no virtual call
-        return typed->evaluate(local_equation.data() + s, u_trial, v_trial, L.c_damp_u,
-                               correction.data() + s, tangent_change[d_start[h]]);
+      if (L.uniaxial[h])
+        return evaluate_uniaxial(h);
       NonlinearElement &e = (*elements)[h];
       gather_dofs(s, s + k, local_equation, u_trial, v_trial, local_u, local_v);
       if (!e.set_trial(local_u.segment(s, k), local_v.segment(s, k)))
@@ -708,17 +729,15 @@ namespace poundfe
                        Eigen::Map<Eigen::MatrixXd>(tangent_change.data() + d_start[h], r, r));
       return true;
     };
-    unsigned int refused = n_elements;
     // A line search tries trial states without a revert in between, from
     // which a force-based element iterates on: there the elements past a
     // refusal stay untouched, as in order. Elsewhere a refusal cuts the
-    // step, which reverts every element.
-    if (!parameters.newton.line_search && worth_threads(L.uniaxial))
-      refused = first_refusal_in_parallel(n_elements, evaluate);
-    else
-      for (unsigned int h = 0; h < n_elements && refused == n_elements; ++h)
-        if (!evaluate(h))
-          refused = h;
+    // step, which reverts every element. Uniaxial elements alone: one plain
+    // loop in order (never worth threads), without the general branch.
+    const unsigned int refused =
+      L.all_uniaxial ? first_refusal(n_elements, evaluate_uniaxial, false) :
+                       first_refusal(n_elements, evaluate,
+                                     !parameters.newton.line_search && worth_threads(L.uniaxial));
     if (refused == n_elements)
       return true;
     failure = refusal_text((*elements)[refused]);
@@ -746,18 +765,6 @@ namespace poundfe
       for (unsigned int a = (b == 0 ? 1 : 0); a < r; ++a)
         value += D[a + b * r] * B(i, a) * B(j, b);
     return value;
-  }
-
-  void
-  NewmarkIntegrator::set_step_load(const Level &L, const Vector &p)
-  {
-    // rhs = p + M (c_u u + c_v v + c_a a) + C (c_u' u + c_v' v + c_a' a)
-    rhs                   = p;
-    work_vector.noalias() = L.c_mass_u * u + L.c_mass_v * v + L.c_mass_a * a;
-    rhs.noalias() += system.mass * work_vector;
-    work_vector.noalias() = L.c_damp_u * u + L.c_damp_v * v + L.c_damp_a * a;
-    rhs.noalias() += system.damping * work_vector;
-    add_low_rank_damping_product(system.modal_damping, work_vector, rhs);
   }
 
   void
@@ -794,10 +801,21 @@ namespace poundfe
   bool
   NewmarkIntegrator::solve_linear_step(const Level &L)
   {
+    // Without elements the equations are linear: one solve, K_eff du = r_0
+    // on the factorisation of K_eff kept for the step size, u_{n+1} = u_n +
+    // du. It is Newton's first correction from u_n to the bit (r_0 from
+    // set_start_residual, each term of the size of the forces, solved by
+    // the same factorisation), and the residual Newton would form next,
+    // r_0 - K_eff du, is that solve's round-off (a backward-stable LDL^T:
+    // of the order of eps cond(K_eff) |r_0|), far below any tolerance that
+    // could reject it: it is not formed. (Solved for u_{n+1} from the whole
+    // rhs = K_eff u_n + r_0 instead, the step keeps fewer digits at short
+    // steps, where rhs is M u_n / (beta dt^2) and the forces are its last
+    // digits: doc/theory.md §3.3.)
     try
       {
-        L.solver->solve(rhs, u_next);
-        step_displacement.noalias() = u_next - u;
+        L.solver->solve(start_residual, step_displacement);
+        set_iterate();
       }
     catch (const NumericalError &e) // an iterative solve that failed: cut the step
       {
@@ -1020,19 +1038,13 @@ namespace poundfe
 
   namespace
   {
-    /// The duration of the contact episode gap `gap` is in, or enters within
-    /// a step of h from the committed state (penetration, its rate and the
-    /// accelerations a), by Contact/Steps per contact's prediction; 0 when it
-    /// neither is in nor enters one (theory §3.7a).
+    /// episode_duration of gap element e, whose committed penetration (its
+    /// history variable, negative while open) is delta and rate is `rate`.
+    template <typename E>
     double
-    episode_duration(const ElementRecords &records, const NonlinearElements &elements,
-                     const unsigned int gap, const Vector &a, const double h,
-                     const bool onset_from_acceleration)
+    episode_duration_of(const E &e, const double delta, const double rate, const Vector &a,
+                        const double h, const bool onset_from_acceleration)
     {
-      const NonlinearElement &e = elements[gap];
-      // the gap's history variable is its penetration, negative while open
-      const double delta = records.committed_history(gap);
-      const double rate  = records.committed_rate(gap);
       if (e.was_active())
         return e.contact_duration(0);
       if (onset_from_acceleration && delta >= 0)
@@ -1051,6 +1063,21 @@ namespace poundfe
       const double closing = predicted_closing_rate(delta, rate, e.deformation(a), 2 * h);
       return closing > 0 ? e.contact_duration(closing) : 0;
     }
+
+    /// The duration of the contact episode gap `gap` is in, or enters within
+    /// a step of h from the committed state (penetration, its rate and the
+    /// accelerations a), by Contact/Steps per contact's prediction; 0 when it
+    /// neither is in nor enters one (theory §3.7a).
+    double
+    episode_duration(const ElementRecords &records, const NonlinearElements &elements,
+                     const std::vector<UniaxialElement *> &uniaxial, const unsigned int gap,
+                     const Vector &a, const double h, const bool onset_from_acceleration)
+    {
+      return on_element(elements, uniaxial, gap, [&](const auto &e) {
+        return episode_duration_of(e, records.committed_history(gap),
+                                   records.committed_rate(gap), a, h, onset_from_acceleration);
+      });
+    }
   } // namespace
 
   namespace
@@ -1067,13 +1094,14 @@ namespace poundfe
     /// them. False (nothing set) outside an episode (theory §3.7a).
     bool
     start_from_extrapolation(const ElementRecords &records, const NonlinearElements &elements,
-                             const double h, const Vector &v, const Vector &a,
-                             const Vector &start_residual, Vector &step, double &first_residual,
-                             double &first_energy)
+                             const std::vector<UniaxialElement *> &uniaxial, const double h,
+                             const Vector &v, const Vector &a, const Vector &start_residual,
+                             Vector &step, double &first_residual, double &first_energy)
     {
       bool in_episode = false;
       for (const unsigned int gap : records.gap_elements())
-        in_episode = in_episode || episode_duration(records, elements, gap, a, h, true) > 0;
+        in_episode =
+          in_episode || episode_duration(records, elements, uniaxial, gap, a, h, true) > 0;
       if (!in_episode)
         return false;
       step.noalias()  = h * v + (0.5 * h * h) * a;
@@ -1139,7 +1167,7 @@ namespace poundfe
     // buildings have no nonlinear element takes part in the others' sums
     if (n_elements == 0 && !distribution)
       {
-        set_step_load(L, p);
+        set_start_residual(L, p);
         return solve_linear_step(L);
       }
 
@@ -1158,7 +1186,7 @@ namespace poundfe
     bool   onset_corrected = false;
     const bool extrapolated = records.friction_elements().empty() && !distribution &&
                               newton.contact_onset_from_acceleration &&
-                              start_from_extrapolation(records, *elements, L.dt, v, a,
+                              start_from_extrapolation(records, *elements, L.uniaxial, L.dt, v, a,
                                                        start_residual, step_displacement,
                                                        first_residual, first_energy);
     if (!records.friction_elements().empty())
@@ -1360,8 +1388,9 @@ namespace poundfe
     const unsigned int n = parameters.newton.steps_per_contact;
     for (const unsigned int h : records.gap_elements())
       {
-        const double duration = episode_duration(records, *elements, h, a, L.dt,
-                                                 parameters.newton.contact_onset_from_acceleration);
+        const double duration =
+          episode_duration(records, *elements, L.uniaxial, h, a, L.dt,
+                           parameters.newton.contact_onset_from_acceleration);
         if (duration > 0 && n * L.dt > duration)
           return true;
       }
@@ -1394,7 +1423,7 @@ namespace poundfe
     Vector &p = L.load_end; // no allocation per step
     load(t1, p);
     for (unsigned int h = 0; h < n_elements; ++h)
-      (*elements)[h].set_trial_time(t1);
+      on_element(*elements, L.uniaxial, h, [t1](auto &e) { e.set_trial_time(t1); });
     bool converged = try_step(L, p);
     if (!converged && active_method() != NonlinearSolver::newton)
       {
@@ -1411,7 +1440,9 @@ namespace poundfe
     bool       event     = false;
     if (converged && cuts < base_level + parameters.newton.event_refinement)
       for (const unsigned int h : event_elements)
-        event = event || (*elements)[h].phase() != (*elements)[h].committed_phase();
+        event = event || on_element(*elements, L.uniaxial, h, [](const auto &e) {
+                  return e.phase() != e.committed_phase();
+                });
     if (converged && cuts < base_level + parameters.newton.event_refinement && distribution)
       event = distribution->any(event);
     if (converged && !event)
@@ -1545,7 +1576,9 @@ namespace poundfe
     const Vector &stiffness_u = stiffness_times_u();
     double energy = 0.5 * (fixed ? fixed->dot(u, stiffness_u) : u.dot(stiffness_u));
     // the elements' trial state is the committed state at u
-    energy = add_element_energies(energy, elements, n_elements, distribution, counted_here);
+    // at a step, the elements listed at initialize()
+    energy = add_element_energies(energy, elements, &levels[0]->uniaxial, n_elements,
+                                  distribution, counted_here);
     return held_load.size() > 0 ? energy - gravity_strain : energy;
   }
 
@@ -1553,13 +1586,7 @@ namespace poundfe
   NewmarkIntegrator::strain_energy_at(const Vector &x) const
   {
     // summed in strain_energy()'s order, so that E_S(u_g) - E_S(u_g) is 0 exactly
-    return add_element_energies(0.5 * x.dot(system.stiffness * x), elements, n_elements,
-                                distribution, counted_here);
-  }
-
-  double
-  NewmarkIntegrator::elements_strain_energy() const
-  {
-    return add_element_energies(0, elements, n_elements, distribution, counted_here);
+    return add_element_energies(0.5 * x.dot(system.stiffness * x), elements, nullptr,
+                                n_elements, distribution, counted_here);
   }
 } // namespace poundfe

@@ -361,6 +361,36 @@ namespace poundfe
 
   namespace
   {
+    /// A floor mass or storey stiffness (kg, N/m) is at least this: a
+    /// nondimensional model's 1 lies far above it, and below it a value is
+    /// no structure but a typing error (1e-300 gave periods of 1e-150 s).
+    constexpr double smallest_mass_or_stiffness = 1e-6;
+    /// ... and at least this fraction of the building's largest of the
+    /// list: below it, a floor or storey adds nothing but ill-conditioning
+    /// (the matrices' 16 digits cannot hold both).
+    constexpr double smallest_relative_mass_or_stiffness = 1e-8;
+
+    /// Each nonzero value of `values` (a list already checked) within the
+    /// two lower bounds above.
+    void
+    check_lower_bounds(const InputFile &input, const std::string &path,
+                       const std::vector<double> &values, const std::string &unit)
+    {
+      double largest = 0;
+      for (const double x : values)
+        largest = std::max(largest, std::abs(x));
+      const double bound = std::max(smallest_mass_or_stiffness,
+                                    smallest_relative_mass_or_stiffness * largest);
+      for (const double x : values)
+        if (x != 0 && x < bound)
+          input.fail(path, "must be at least " + number_text(bound) + " " + unit +
+                             " (got " + number_text(x) + "): the larger of " +
+                             number_text(smallest_mass_or_stiffness) + " " + unit + " and " +
+                             number_text(smallest_relative_mass_or_stiffness) +
+                             " of the largest in the list; a smaller one is a typing error, "
+                             "not a floor or storey");
+    }
+
     /// The members' lists of a frame, shear or mesh building: one value per
     /// storey, floor, bay or group id.
     void
@@ -372,6 +402,7 @@ namespace poundfe
           check_building_sizes(input, s, b);
           input.list(s + "Storey heights", b.storey_heights, n, false, "one per storey");
           input.list(s + "Floor masses", b.floor_masses, n, false, "one per floor");
+          check_lower_bounds(input, s + "Floor masses", b.floor_masses, "kg");
           if (!b.floor_loads.empty())
             input.list(s + "Floor loads", b.floor_loads, n, true, "one per floor");
         }
@@ -396,6 +427,7 @@ namespace poundfe
       if (b.type == BuildingType::shear)
         {
           input.list(s + "Storey stiffnesses", b.storey_stiffnesses, n, true, "one per storey");
+          check_lower_bounds(input, s + "Storey stiffnesses", b.storey_stiffnesses, "N/m");
           input.list(s + "Storey damping", b.storey_damping, n, true, "one per storey");
           input.non_negative(s + "Drawing width", b.drawing_width);
         }

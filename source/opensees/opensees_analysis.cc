@@ -21,7 +21,10 @@
 // diagonal because the constrained nodes may carry none in the plane).
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/parallel_refusal.h>
 #include <poundfe/opensees/opensees_analysis.h>
+
+#include <deal.II/base/multithread_info.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -30,6 +33,7 @@
 #include <array>
 #include <cmath>
 #include <set>
+#include <limits>
 #include <sstream>
 
 namespace poundfe
@@ -40,6 +44,37 @@ namespace poundfe
     {
       /// The equation of a diaphragm's j-th combination: first_combination - j.
       constexpr int first_combination = -1000000;
+
+      /// The combination of a static analysis's components that poundfe
+      /// refuses, named; empty if none. A line search, Krylov's acceleration
+      /// or BFGS would move the state off DisplacementControl's or
+      /// ArcLength's constraint. Under Lagrange OpenSees's multipliers enter
+      /// ArcLength's arc and the test's norm (so an adaptive increment's
+      /// iteration counts), which poundfe's exact elimination has not.
+      std::string
+      unsupported_combination(const AnalysisOptions &o)
+      {
+        using Algorithm = AnalysisOptions::Algorithm;
+        if (o.transient || !(o.displacement_control || o.arc_length))
+          return "";
+        const std::string integrator =
+          o.arc_length ? "ArcLength" : "DisplacementControl";
+        const Algorithm a = o.algorithm;
+        if (a == Algorithm::newton_line_search || a == Algorithm::krylov_newton ||
+            a == Algorithm::bfgs)
+          return std::string("algorithm ") +
+                 (a == Algorithm::newton_line_search ? "NewtonLineSearch" :
+                  a == Algorithm::krylov_newton      ? "KrylovNewton" :
+                                                       "BFGS") +
+                 " with integrator " + integrator;
+        if (o.lagrange && o.arc_length)
+          return "integrator ArcLength with constraints Lagrange (OpenSees's multipliers enter "
+                 "the arc)";
+        if (o.lagrange && o.d_u_min != o.d_u_max)
+          return "integrator DisplacementControl with an adaptive increment (minIncr != maxIncr) "
+                 "with constraints Lagrange (OpenSees's multipliers enter the iteration counts)";
+        return "";
+      }
     } // namespace
 
     /// The elements of a small model (a dense system) that are all
@@ -243,31 +278,37 @@ namespace poundfe
         lambda_step = 0; // a new LoadControl integrator
       if (options.integrator_serial != opts.integrator_serial)
         fresh_integrator = true;
+      if (options.penalty != opts.penalty) // the equations differ
+        numbered = false;
       opts = options;
     }
 
     void
     Analysis::number()
     {
+      const bool eliminating = !opts.penalty; // Penalty keeps every DOF an equation
       std::map<std::pair<int, unsigned int>, std::pair<int, unsigned int>> retained_by;
       for (const EqualDof &e : domain.equal_dofs)
         for (const unsigned int k : e.dofs)
-          retained_by[{e.constrained, k}] = {e.retained, k};
+          if (eliminating)
+            retained_by[{e.constrained, k}] = {e.retained, k};
       std::set<std::pair<int, unsigned int>> in_diaphragm; // numbered by number_diaphragms
       for (const Diaphragm &d : domain.diaphragms)
         for (const int c : d.constrained)
           for (const unsigned int k :
                {(d.perpendicular + 1) % 3, (d.perpendicular + 2) % 3, 3 + d.perpendicular})
-            in_diaphragm.insert({c, k});
+            if (eliminating)
+              in_diaphragm.insert({c, k});
       imposed_dofs.clear();
       for (const auto &[dof, value] : domain.imposed_displacements(domain.time))
-        imposed_dofs.push_back(dof);
+        if (eliminating)
+          imposed_dofs.push_back(dof);
       n_equations = 0;
       for (auto &[tag, node] : domain.nodes)
         {
           node.equation.assign(node.fixed.size(), -1);
           for (unsigned int k = 0; k < node.fixed.size(); ++k)
-            if (!node.fixed[k] && retained_by.count({tag, k}) == 0 &&
+            if ((!node.fixed[k] || !eliminating) && retained_by.count({tag, k}) == 0 &&
                 in_diaphragm.count({tag, k}) == 0 &&
                 std::find(imposed_dofs.begin(), imposed_dofs.end(), std::make_pair(tag, k)) ==
                   imposed_dofs.end())
@@ -285,8 +326,13 @@ namespace poundfe
             r = retained_by.at(r);
           domain.node(dof.first).equation[dof.second] = domain.node(r.first).equation[r.second];
         }
-      number_diaphragms();
+      penalty_rows.clear();
+      if (eliminating)
+        number_diaphragms();
+      else
+        number_penalty();
       number_inertia();
+      number_coupled_masses();
       number_mass_damping();
       beam_loads_taken = false;
       for (auto &[tag, element] : domain.elements)
@@ -299,6 +345,7 @@ namespace poundfe
         }
       domain.changed = false;
       numbered       = true;
+      modal_numbered = false;
       analysed       = false;
     }
 
@@ -533,6 +580,12 @@ namespace poundfe
           elements.push_back(element.get());
         }
       links = dense() && imposed_dofs.empty() ? UniaxialLinks::of(elements) : nullptr;
+      // a member's microseconds pay for a thread, a spring's nanoseconds do not
+      constexpr long costly_elements = 8;
+      elements_on_threads =
+        dealii::MultithreadInfo::n_threads() > 1 &&
+        std::count_if(elements.begin(), elements.end(),
+                      [](const Element *e) { return e->costly_trial(); }) >= costly_elements;
     }
 
     bool
@@ -548,23 +601,25 @@ namespace poundfe
       if (links)
         return links->set_trial(u, v, why);
       element_state.resize(element_list.size());
-      auto state = element_state.begin();
-      for (const ListedElement &listed : element_list)
-        {
-          Element &element        = *listed.element;
-          auto &[local_u, local_v] = *state++;
-          element_values(element, u, &imposed_u, combinations, local_u);
-          element_values(element, v, nullptr, combinations, local_v);
-          if (!element.set_trial(local_u, local_v))
-            {
-              // an element without a law to blame refuses non-finite forces
-              const std::string reason = element.failure();
-              why = "element " + std::to_string(element.tag) + ": " +
-                    (reason.empty() ? "its forces are not finite" : reason);
-              return false;
-            }
-        }
-      return true;
+      // each element writes only its own state, so threads keep the bits;
+      // a refusal fails the step, which reverts every element
+      const auto evaluate = [&](const unsigned int e) {
+        Element &element         = *element_list[e].element;
+        auto &[local_u, local_v] = element_state[e];
+        element_values(element, u, &imposed_u, combinations, local_u);
+        element_values(element, v, nullptr, combinations, local_v);
+        return element.set_trial(local_u, local_v);
+      };
+      const unsigned int refused =
+        first_refusal(element_list.size(), evaluate, elements_on_threads);
+      if (refused == element_list.size())
+        return true;
+      // an element without a law to blame refuses non-finite forces
+      const Element    &element = *element_list[refused].element;
+      const std::string reason  = element.failure();
+      why = "element " + std::to_string(element.tag) + ": " +
+            (reason.empty() ? "its forces are not finite" : reason);
+      return false;
     }
 
     const Vector &
@@ -586,6 +641,7 @@ namespace poundfe
         links->subtract_forces(r);
       else
         subtract_element_forces(r, v);
+      add_penalty_forces(r);
       if (!opts.transient)
         return r;
       const double alpha_m = uniform_mass_damping ? domain.rayleigh.alpha_m : 0.0;
@@ -600,8 +656,13 @@ namespace poundfe
           t.mass * (A[t.equation] + ground[t.dof] + alpha_m * v[t.equation]);
       for (const InertiaTerm &t : second_ground_terms)
         r[t.equation] -= t.mass * ground[t.dof];
+      if (!coupled_masses.empty())
+        subtract_coupled_inertia(r, v);
       if (!uniform_mass_damping)
         r -= mass_damping_of_equation.cwiseProduct(v);
+      if (modal_damping_active())
+        r -= modal_mass_shapes *
+             modal_coefficients.cwiseProduct(modal_mass_shapes.transpose() * v);
       return r;
     }
 
@@ -691,9 +752,14 @@ namespace poundfe
         {
           dense_tangent.setZero(n_equations, n_equations);
           add_element_tangents(c_k, c_c);
+          add_penalty_tangent();
           dense_tangent.diagonal() += diagonal * mass_of_equation;
+          add_coupled_masses(c_m, c_c);
           if (!uniform_mass_damping)
             dense_tangent.diagonal() += c_c * mass_damping_of_equation;
+          if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
+            dense_tangent += c_c * modal_mass_shapes * modal_coefficients.asDiagonal() *
+                             modal_mass_shapes.transpose();
           if (!dense_tangent.allFinite())
             throw NumericalError(not_finite);
           const char *singular = "LU: the effective matrix is singular";
@@ -712,11 +778,22 @@ namespace poundfe
         }
       tangent_entries.clear();
       add_element_tangents(c_k, c_c);
+      add_penalty_tangent();
       for (unsigned int i = 0; i < n_equations; ++i) // the diagonal always in the pattern
         tangent_entries.emplace_back(i, i,
                                      diagonal * mass_of_equation[i] +
                                        (uniform_mass_damping ? 0.0 :
                                                                c_c * mass_damping_of_equation[i]));
+      add_coupled_masses(c_m, c_c);
+      if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
+        {
+          const Matrix C = modal_mass_shapes * modal_coefficients.asDiagonal() *
+                           modal_mass_shapes.transpose();
+          for (unsigned int j = 0; j < n_equations; ++j)
+            for (unsigned int i = 0; i < n_equations; ++i)
+              if (C(i, j) != 0)
+                tangent_entries.emplace_back(i, j, c_c * C(i, j));
+        }
       tangent_matrix.resize(n_equations, n_equations);
       tangent_matrix.setFromTriplets(tangent_entries.begin(), tangent_entries.end());
       if (!Eigen::Map<const Vector>(tangent_matrix.valuePtr(), tangent_matrix.nonZeros()).allFinite())
@@ -760,6 +837,18 @@ namespace poundfe
         }
       return 0;
     }
+
+    bool
+    Analysis::fresh_test_met(const Vector &dx, const Vector &r) const
+    {
+      double norm = test_norm(dx, r);
+      // a relative test started afresh takes this norm as its first: the
+      // ratio is 1 (0 when dx is 0), as CTestRelativeNormDispIncr's copy
+      if (opts.test.kind == ConvergenceTest::Kind::relative_norm_disp_incr && norm != 0)
+        norm = 1;
+      return norm <= opts.test.tolerance;
+    }
+
     void
     Analysis::print_iteration(const unsigned int iteration, const double norm) const
     {
@@ -1032,11 +1121,6 @@ namespace poundfe
       using Algorithm = AnalysisOptions::Algorithm;
       const bool searching = opts.algorithm == Algorithm::newton_line_search;
       const bool krylov    = opts.algorithm == Algorithm::krylov_newton;
-      const bool bfgs      = opts.algorithm == Algorithm::bfgs;
-      if ((searching || krylov || bfgs) && opts.displacement_control && !opts.transient)
-        throw ScriptError(std::string("algorithm ") +
-                          (searching ? "NewtonLineSearch" : krylov ? "KrylovNewton" : "BFGS") +
-                          " with integrator DisplacementControl is not supported");
       if (opts.algorithm == Algorithm::bfgs)
         return iterate_bfgs(why);
       const bool every_iteration = opts.algorithm == Algorithm::newton || searching;
@@ -1054,6 +1138,8 @@ namespace poundfe
           solve(r, dx);
           if (opts.displacement_control && !opts.transient && !correct_displacement(dx, why))
             return -1;
+          if (opts.arc_length && !opts.transient && !correct_arc_length(dx, why))
+            return -1;
           const double s0 = -dx.dot(r);
           ++last_iterations;
           ++counts.iterations;
@@ -1064,7 +1150,7 @@ namespace poundfe
             return 1;
           r = residual();
           // NewtonLineSearch searches unless the test is already met
-          if (searching && test_norm(dx, r) > opts.test.tolerance && !line_search(s0, dx, r, why))
+          if (searching && !fresh_test_met(dx, r) && !line_search(s0, dx, r, why))
             return -1;
           const int verdict = judge(iteration, opts.test.max_iterations, dx, r, why);
           if (verdict != 0)
@@ -1100,6 +1186,8 @@ namespace poundfe
         }
       else if (opts.displacement_control)
         return displacement_step(why);
+      else if (opts.arc_length)
+        return arc_length_step(why);
       else
         {
           lambda_step *= opts.lambda_iterations / last_iterations;
@@ -1148,21 +1236,35 @@ namespace poundfe
         }
       d_u_step *= opts.d_u_iterations / last_iterations;
       d_u_step = std::min(std::max(d_u_step, opts.d_u_min), opts.d_u_max);
-      c_c = c_m = k_c = 0;
-      k_k             = 1;
-      if (!set_trial(why))
-        return false;
-      assemble_tangent(1, 0, 0);
       Vector dx_hat(n_equations);
-      solve(phat, dx_hat);
+      if (!reference_displacement(dx_hat, why))
+        return false;
       if (dx_hat[control_equation] == 0)
         {
           why = "DisplacementControl: zero reference displacement at the control DOF";
           return false;
         }
       const double d_lambda = d_u_step / dx_hat[control_equation];
-      trial_time            = domain.time + d_lambda;
-      U += d_lambda * dx_hat;
+      return predict_and_iterate(d_lambda, d_lambda * dx_hat, why);
+    }
+
+    bool
+    Analysis::reference_displacement(Vector &dx_hat, std::string &why)
+    {
+      c_c = c_m = k_c = 0;
+      k_k             = 1;
+      if (!set_trial(why))
+        return false;
+      assemble_tangent(1, 0, 0);
+      solve(phat, dx_hat);
+      return true;
+    }
+
+    bool
+    Analysis::predict_and_iterate(const double d_lambda, const Vector &dx, std::string &why)
+    {
+      trial_time = domain.time + d_lambda;
+      U += dx;
       last_iterations = 0;
       if (!set_trial(why))
         return false;
@@ -1200,16 +1302,19 @@ namespace poundfe
       ++counts.steps;
     }
 
-    int
-    Analysis::analyze(const unsigned int n_steps, const double dt,
-                      const std::function<void()>                     &after_step,
-                      const std::function<void(const std::string &)> &warn)
+    void
+    Analysis::begin_analysis(const std::function<void(const std::string &)> &warn)
     {
+      const std::string refused = unsupported_combination(opts);
+      if (!refused.empty())
+        throw ScriptError(refused + " is not supported");
       const bool renumber = domain.changed || !numbered;
       if (renumber)
         number();
       list_elements(renumber);
-      if (opts.transient && !imposed_dofs.empty())
+      const bool penalty_imposed = std::any_of(penalty_rows.begin(), penalty_rows.end(),
+                                               [](const PenaltyRow &p) { return p.is_imposed; });
+      if (opts.transient && (!imposed_dofs.empty() || penalty_imposed))
         throw ScriptError("sp in a transient analysis is not supported");
       if (!opts.transformation && !imposed_dofs.empty())
         warn("PlainHandler::handle() - non-homogeneous sp constraint: homogeneous constraint "
@@ -1221,32 +1326,94 @@ namespace poundfe
           lambda_step     = opts.d_lambda;
           last_iterations = opts.lambda_iterations;
         }
+    }
+
+    bool
+    Analysis::advance(const double dt, std::string &why)
+    {
+      gather();
+      bool converged = false;
+      try
+        {
+          converged = step(dt, why);
+        }
+      catch (const NumericalError &e)
+        {
+          why = e.what();
+        }
+      if (!converged)
+        {
+          for (auto &[tag, element] : domain.elements)
+            element->revert();
+          ++counts.failed_steps;
+          return false;
+        }
+      commit();
+      return true;
+    }
+
+    int
+    Analysis::analyze(const unsigned int n_steps, const double dt,
+                      const std::function<void()>                     &after_step,
+                      const std::function<void(const std::string &)> &warn)
+    {
+      begin_analysis(warn);
       for (unsigned int i = 0; i < n_steps; ++i)
         {
-          gather();
           std::string why;
-          bool        converged = false;
-          try
+          if (!advance(dt, why))
             {
-              converged = step(dt, why);
-            }
-          catch (const NumericalError &e)
-            {
-              why = e.what();
-            }
-          if (!converged)
-            {
-              for (auto &[tag, element] : domain.elements)
-                element->revert();
-              ++counts.failed_steps;
               std::ostringstream text;
               text << "analyze: the step to time " << trial_time << " failed (" << why
                    << "); the domain is back at time " << domain.time;
               warn(text.str());
               return -3;
             }
-          commit();
           after_step();
+        }
+      return 0;
+    }
+
+    int
+    Analysis::analyze_variable(const VariableSteps &v, const std::function<void()> &after_step,
+                               const std::function<void(const std::string &)> &warn)
+    {
+      begin_analysis(warn);
+      const double total = v.n_steps * v.dt;
+      double       done = 0, dt = v.dt;
+      while (done < total)
+        {
+          std::string why;
+          if (advance(dt, why))
+            {
+              done += dt;
+              after_step();
+            }
+          else if (dt <= v.dt_min)
+            {
+              std::ostringstream text;
+              text << "analyze: the step of " << dt << " to time " << trial_time << " failed ("
+                   << why << ") at dtMin; the domain is back at time " << domain.time;
+              warn(text.str());
+              return -3;
+            }
+          // determineDt: the test's iterations (Linear has no test: 1)
+          const double iterations =
+            opts.algorithm == AnalysisOptions::Algorithm::linear ? 1.0 : test_iterations;
+          const double failed = why.empty() ? 0.0 : dt;
+          dt *= v.jd / iterations;
+          if (failed > 0 && !(dt < failed)) // OpenSees would try the same step for ever
+            {
+              std::ostringstream text;
+              text << "analyze: the step of " << failed << " to time " << trial_time
+                   << " failed (" << why << ") and Jd " << v.jd << " does not shorten it";
+              warn(text.str());
+              return -3;
+            }
+          if (dt < v.dt_min)
+            dt = v.dt_min - std::numeric_limits<double>::epsilon();
+          else if (dt > v.dt_max)
+            dt = v.dt_max;
         }
       return 0;
     }
@@ -1254,6 +1421,9 @@ namespace poundfe
     std::vector<double>
     Analysis::eigenvalues(const unsigned int n)
     {
+      const std::string refused = unsupported_combination(opts);
+      if (!refused.empty())
+        throw ScriptError(refused + " is not supported");
       const bool renumber = domain.changed || !numbered;
       if (renumber)
         number();
@@ -1264,19 +1434,26 @@ namespace poundfe
         throw ScriptError("eigen: " + why);
       assemble_tangent(1, 0, 0);
       const Matrix K = dense() ? dense_tangent : Matrix(tangent_matrix);
-      const Matrix M = mass_of_equation.asDiagonal();
+      Matrix M = mass_of_equation.asDiagonal();
+      for (Eigen::Index j = 0; j < M.cols() && !coupled_masses.empty(); ++j)
+        M.col(j) = mass_times(Matrix::Identity(n_equations, n_equations).col(j));
       // K phi = lambda M phi as M phi = (1/lambda) K phi: M may be singular
       // (massless rotations), K is positive definite for a stable structure
       Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solution(M, K);
       if (solution.info() != Eigen::Success)
         throw ScriptError("eigen: the stiffness matrix is not positive definite");
       std::vector<double> lambda;
+      Matrix              shapes(n_equations, n);
       for (int i = solution.eigenvalues().size() - 1; i >= 0 && lambda.size() < n; --i)
         if (solution.eigenvalues()[i] > 0)
-          lambda.push_back(1 / solution.eigenvalues()[i]);
+          {
+            shapes.col(lambda.size()) = solution.eigenvectors().col(i);
+            lambda.push_back(1 / solution.eigenvalues()[i]);
+          }
       if (lambda.size() < n)
         throw ScriptError("eigen: " + std::to_string(n) + " modes asked for, the model has " +
                           std::to_string(lambda.size()) + " with mass");
+      keep_modes(shapes, lambda);
       return lambda;
     }
   } // namespace opensees

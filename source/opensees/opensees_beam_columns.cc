@@ -27,6 +27,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/beam_column.h>
 #include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/opensees/opensees_section_links.h>
 #include <poundfe/sections/aggregator_section.h>
 #include <poundfe/sections/elastic_section.h>
 
@@ -92,6 +93,7 @@ namespace poundfe
 
         unsigned int n_dofs() const override { return 6; }
         bool         rayleigh_damped() const override { return true; }
+        bool         costly_trial() const override { return true; }
 
         bool
         set_trial(const Vector &u, const Vector &) override
@@ -142,20 +144,6 @@ namespace poundfe
       values_of(const V &v)
       {
         return std::vector<double>(v.data(), v.data() + v.size());
-      }
-
-      /// A section's resultants or deformations in OpenSees's order of its
-      /// codes: an Aggregator's in the order the script gave its dofs.
-      std::vector<double>
-      section_values(const SectionLaw &s, const SectionVector &v)
-      {
-        const auto *aggregator = dynamic_cast<const AggregatorSection *>(&s);
-        if (!aggregator)
-          return values_of(v);
-        std::vector<double> values;
-        for (const unsigned int r : aggregator->response_order())
-          values.push_back(v[r]);
-        return values;
       }
 
       /// The responses of both dimensions: basicForce (q), basicDeformation,
@@ -285,6 +273,7 @@ namespace poundfe
 
         unsigned int n_dofs() const override { return 12; }
         bool         rayleigh_damped() const override { return true; }
+        bool         costly_trial() const override { return true; }
         bool
         set_trial(const Vector &u, const Vector &) override
         {
@@ -385,6 +374,17 @@ namespace poundfe
       const ElasticSection section(E * A, E * I);
       return std::make_unique<BeamColumnElement>(
         tag, nodes, std::make_unique<DispBeamColumn<2>>(transf, section, 2));
+    }
+    std::vector<double>
+    section_values(const SectionLaw &section, const SectionVector &v)
+    {
+      const auto *aggregator = dynamic_cast<const AggregatorSection *>(&section);
+      if (!aggregator)
+        return std::vector<double>(v.data(), v.data() + v.size());
+      std::vector<double> values;
+      for (const unsigned int r : aggregator->response_order())
+        values.push_back(v[r]);
+      return values;
     }
   } // namespace opensees
 } // namespace poundfe

@@ -17,6 +17,22 @@ namespace poundfe
   namespace opensees
   {
     double
+    TimeSeries::path_time_factor(const double time) const
+    {
+      // PathTimeSeries::getFactor as it searches forward: the value at the
+      // first time, else the interval (t_k, t_k+1] that holds the time
+      // (at a repeated time the first of its values); 0 outside
+      if (time == times.front())
+        return factor * values.front();
+      if (time < times.front() || time > times.back())
+        return 0;
+      const std::size_t k =
+        std::lower_bound(times.begin(), times.end(), time) - times.begin() - 1;
+      const double t1 = times[k], t2 = times[k + 1];
+      return factor * (values[k] + (values[k + 1] - values[k]) * (time - t1) / (t2 - t1));
+    }
+
+    double
     TimeSeries::at(const double time) const
     {
       switch (kind)
@@ -27,12 +43,14 @@ namespace poundfe
             return factor * time;
           case Kind::path:
             {
-              if (time < 0 || values.empty())
+              if (!times.empty())
+                return path_time_factor(time);
+              if (time < start_time || values.empty())
                 return 0;
-              const double    position = time / dt;
+              const double    position = (time - start_time) / dt;
               const long long i        = static_cast<long long>(std::floor(position));
               if (i + 1 >= static_cast<long long>(values.size()))
-                return 0;
+                return use_last ? factor * values.back() : 0.0;
               return factor * (values[i] + (values[i + 1] - values[i]) * (position - i));
             }
           case Kind::trig:
@@ -196,36 +214,263 @@ namespace poundfe
     }
 
     std::map<int, std::vector<double>>
-    Domain::reactions() const
+    Domain::reactions(const ReactionFlag flag) const
     {
-      // The applied loads include each node's own ground-motion load
-      // -m a_g (Node::addInertiaLoadToUnbalance), in fixed DOFs too:
-      // Node::resetReactionForce subtracts it, so it enters as +m a_g.
+      // Node::resetReactionForce(flag): flag 0 subtracts the unbalanced
+      // load and (its missing else) adds alpha_M M v; flag 1 subtracts the
+      // unbalanced load with inertia (-M a - alpha_M M v); flag 2 alpha_M M
+      // v alone. The unbalanced load holds each node's own ground-motion
+      // load -m a_g (Node::addInertiaLoadToUnbalance), in fixed DOFs too.
       std::map<int, std::vector<double>> r;
       const auto                         loads = nodal_loads(time);
       const std::vector<double>          a_g   = ground_acceleration(time);
+      const bool static_loads = flag != ReactionFlag::rayleigh;
+      const bool inertia      = flag == ReactionFlag::dynamic;
       for (const auto &[tag, n] : nodes)
         {
           std::vector<double> &v = r[tag];
           v.assign(n.disp.size(), 0.0);
           const auto p = loads.find(tag);
           for (unsigned int k = 0; k < v.size(); ++k)
-            v[k] = (p == loads.end() ? 0.0 : -p->second[k]) +
-                   n.mass[k] * (a_g[k] + alpha_m_of(tag) * n.vel[k]);
+            v[k] = (static_loads ? (p == loads.end() ? 0.0 : -p->second[k]) + n.mass[k] * a_g[k] :
+                                   0.0) +
+                   n.mass[k] * ((inertia ? n.accel[k] : 0.0) + alpha_m_of(tag) * n.vel[k]);
         }
+      // Element::addResistingForceToNodalReaction(flag)
       for (const auto &[tag, element] : elements)
         {
-          const Vector f = element->force();
+          const Vector f = flag == ReactionFlag::resisting ? force_with_ground_load(*element) :
+                           inertia                         ? force_with_inertia(*element) :
+                                                             rayleigh_damping_forces(*element);
           unsigned int i = 0;
           for (const int node_tag : element->node_tags)
             for (double &value : r[node_tag])
               value += f[i++];
         }
-      for (const LumpedMass &m : lumped_masses)
+      return r;
+    }
+
+    Vector
+    Domain::element_values(const Element &element,
+                           const std::vector<double> Node::*response) const
+    {
+      Vector       values(element.n_dofs());
+      unsigned int i = 0;
+      for (const int tag : element.node_tags)
+        for (const double value : node(tag).*response)
+          values[i++] = value;
+      return values;
+    }
+
+    namespace
+    {
+      /// Each lumped mass of the element, the offset of its node's first
+      /// DOF in the element's DOFs, by f(mass, offset).
+      template <typename F>
+      void
+      for_lumped_masses(const Domain &d, const Element &element, const F &f)
+      {
+        for (const Domain::LumpedMass &m : d.lumped_masses)
+          if (m.element == element.tag)
+            {
+              unsigned int offset = 0;
+              for (const int tag : element.node_tags)
+                {
+                  if (tag == m.node)
+                    f(m, offset);
+                  offset += d.node(tag).disp.size();
+                }
+            }
+      }
+
+      /// The element's consistent mass (-cMass) times x(i), x of the
+      /// element's DOF i (its node's DOF i % ndf), added to f.
+      template <typename X>
+      void
+      add_consistent_mass_times(const Domain &d, const Element &element, const X &x, Vector &f)
+      {
+        for (const Domain::ConsistentMass &m : d.consistent_masses)
+          if (m.element == element.tag)
+            {
+              Vector values(m.matrix.rows());
+              for (Eigen::Index i = 0; i < values.size(); ++i)
+                values[i] = x(i);
+              f += m.matrix * values;
+            }
+      }
+
+      bool
+      has_consistent_ground_load(const Domain &d, const Element &element)
+      {
+        for (const Domain::ConsistentMass &m : d.consistent_masses)
+          if (m.element == element.tag && m.load_in_reaction)
+            return true;
+        return false;
+      }
+    } // namespace
+
+    Vector
+    Domain::rayleigh_damping_forces(const Element &element) const
+    {
+      const RayleighFactors &c = rayleigh_of(element.tag);
+      const Vector           v = element_values(element, &Node::vel);
+      Vector                 f = Vector::Zero(v.size());
+      if (c.beta_k != 0)
+        f += c.beta_k * (element.tangent() * v);
+      if (c.beta_k_init != 0)
+        f += c.beta_k_init * (element.initial_tangent() * v);
+      if (c.beta_k_committed != 0 && element.committed_tangent.rows() == v.size())
+        f += c.beta_k_committed * (element.committed_tangent * v);
+      if (c.alpha_m != 0)
+        {
+          for_lumped_masses(*this, element, [&](const LumpedMass &m, const unsigned int offset) {
+            for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
+              f[offset + k] += c.alpha_m * m.mass * v[offset + k];
+          });
+          add_consistent_mass_times(*this, element, [&](Eigen::Index i) { return c.alpha_m * v[i]; }, f);
+        }
+      return f;
+    }
+
+    Vector
+    Domain::force_with_ground_load(const Element &element) const
+    {
+      Vector                    f   = element.force();
+      const std::vector<double> a_g = ground_acceleration(time);
+      for_lumped_masses(*this, element, [&](const LumpedMass &m, const unsigned int offset) {
         if (m.load_in_reaction)
           for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
-            r[m.node][k] += m.mass * a_g[k];
-      return r;
+            f[offset + k] += m.mass * a_g[k];
+      });
+      if (has_consistent_ground_load(*this, element))
+        add_consistent_mass_times(*this, element, [&](Eigen::Index i) { return a_g[i % ndf]; }, f);
+      return f;
+    }
+
+    bool
+    Domain::has_ground_load(const Element &element) const
+    {
+      for (const LumpedMass &m : lumped_masses)
+        if (m.element == element.tag && m.load_in_reaction)
+          return true;
+      return has_consistent_ground_load(*this, element);
+    }
+
+    bool
+    is_global_force(const std::vector<std::string> &words)
+    {
+      return words.size() == 1 && (words[0] == "force" || words[0] == "forces" ||
+                                   words[0] == "globalForce" || words[0] == "globalForces");
+    }
+
+    std::vector<double>
+    Domain::element_response(const Element &element, const std::vector<std::string> &words) const
+    {
+      if (!is_global_force(words) || !has_ground_load(element))
+        return element.response(words);
+      const Vector f = force_with_ground_load(element);
+      return std::vector<double>(f.data(), f.data() + f.size());
+    }
+
+    Vector
+    Domain::force_with_inertia(const Element &element) const
+    {
+      // every element's getResistingForceIncInertia subtracts its load
+      // once; OpenSees 3.8's ElasticBeam2d once more (LumpedMass)
+      Vector                    f   = element.force();
+      const std::vector<double> a_g = ground_acceleration(time);
+      const Vector              a   = element_values(element, &Node::accel);
+      for_lumped_masses(*this, element, [&](const LumpedMass &m, const unsigned int offset) {
+        const double loads = m.ground_load_twice ? 2.0 : 1.0;
+        for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
+          f[offset + k] += m.mass * (loads * a_g[k] + a[offset + k]);
+      });
+      // a consistent mass (-cMass: trusses) takes its ground load once
+      add_consistent_mass_times(
+        *this, element, [&](Eigen::Index i) { return a[i] + a_g[i % ndf]; }, f);
+      if (element.rayleigh_damped())
+        f += rayleigh_damping_forces(element);
+      return f;
+    }
+
+    void
+    Domain::remove_element(const int tag)
+    {
+      if (elements.count(tag) == 0)
+        return;
+      for (const auto &[pattern_tag, pattern] : patterns)
+        for (const BeamUniformLoad &load : pattern.beam_loads)
+          if (load.element == tag)
+            throw ScriptError("element " + std::to_string(tag) + " has an element load in pattern " +
+                              std::to_string(pattern_tag) + " (remove the pattern first)");
+      for (auto m = lumped_masses.begin(); m != lumped_masses.end();)
+        if (m->element == tag)
+          {
+            std::vector<double> &mass = node(m->node).element_mass;
+            for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
+              mass[k] -= m->mass;
+            m = lumped_masses.erase(m);
+          }
+        else
+          ++m;
+      consistent_masses.erase(std::remove_if(consistent_masses.begin(),
+                                             consistent_masses.end(),
+                                             [tag](const ConsistentMass &m) {
+                                               return m.element == tag;
+                                             }),
+                              consistent_masses.end());
+      element_rayleigh.erase(tag);
+      elements.erase(tag);
+      changed = true;
+    }
+
+    void
+    Domain::remove_node(const int tag)
+    {
+      if (nodes.count(tag) == 0)
+        return;
+      const std::string name = "node " + std::to_string(tag);
+      for (const auto &[element_tag, element] : elements)
+        for (const int n : element->node_tags)
+          if (n == tag)
+            throw ScriptError(name + " is a node of element " + std::to_string(element_tag));
+      for (const EqualDof &e : equal_dofs)
+        if (e.retained == tag || e.constrained == tag)
+          throw ScriptError(name + " is tied by an equalDOF");
+      for (const Diaphragm &d : diaphragms)
+        if (d.retained == tag || std::count(d.constrained.begin(), d.constrained.end(), tag) > 0)
+          throw ScriptError(name + " is in a rigidDiaphragm");
+      for (const auto &[pattern_tag, pattern] : patterns)
+        {
+          for (const NodalLoad &load : pattern.loads)
+            if (load.node == tag)
+              throw ScriptError(name + " has a load in pattern " + std::to_string(pattern_tag));
+          for (const ImposedDisplacement &sp : pattern.imposed)
+            if (sp.node == tag)
+              throw ScriptError(name + " has an sp in pattern " + std::to_string(pattern_tag));
+        }
+      node_alpha_m.erase(tag);
+      nodes.erase(tag);
+      changed = true;
+    }
+
+    void
+    Domain::revert_to_start()
+    {
+      for (auto &[tag, n] : nodes)
+        for (std::vector<double> *response : {&n.disp, &n.vel, &n.accel})
+          std::fill(response->begin(), response->end(), 0.0);
+      for (auto &[tag, element] : elements)
+        element->reset();
+      time      = 0;
+      time_step = 0;
+      apply_element_loads(time); // applyLoad(0), then update():
+      for (auto &[tag, element] : elements)
+        {
+          // the trial state at the nodes' displacements
+          const Vector zero = Vector::Zero(element->n_dofs());
+          element->set_trial(zero, zero);
+        }
     }
 
     void

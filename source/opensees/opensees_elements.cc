@@ -843,8 +843,7 @@ namespace poundfe
     std::vector<double>
     Element::response(const std::vector<std::string> &words) const
     {
-      if (words.size() == 1 && (words[0] == "force" || words[0] == "forces" ||
-                                words[0] == "globalForce" || words[0] == "globalForces"))
+      if (is_global_force(words))
         {
           const Vector f = force();
           return std::vector<double>(f.data(), f.data() + f.size());

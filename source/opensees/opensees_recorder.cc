@@ -218,7 +218,17 @@ namespace poundfe
       buffer.resize(2 * flush_size);
     }
 
-    Recorder::~Recorder() = default;
+    Recorder::~Recorder()
+    {
+      if (queue)
+        queue->drain();
+    }
+
+    void
+    Recorder::set_queue(std::shared_ptr<OutputQueue> writer)
+    {
+      queue = writer && writer->threaded() ? std::move(writer) : nullptr;
+    }
 
     bool
     Recorder::due(const double now)
@@ -246,12 +256,21 @@ namespace poundfe
     void
     Recorder::write_line(const std::vector<double> &numbers)
     {
+      if (queue)
+        queue->push(*this, numbers.data(), numbers.size());
+      else
+        consume(numbers.data(), numbers.size());
+    }
+
+    void
+    Recorder::consume(const double *numbers, const std::size_t n)
+    {
       // room for each number: sign, the digits, the point and an exponent
       const std::size_t room = precision_text_room(precision) + 1;
-      if (used + numbers.size() * room + 1 > buffer.size()) // grows for a long line only
-        buffer.resize(used + numbers.size() * room + 1);
+      if (used + n * room + 1 > buffer.size()) // grows for a long line only
+        buffer.resize(used + n * room + 1);
       char *out = buffer.data() + used;
-      for (std::size_t i = 0; i < numbers.size(); ++i)
+      for (std::size_t i = 0; i < n; ++i)
         {
           if (i > 0)
             *out++ = ' ';
@@ -271,6 +290,11 @@ namespace poundfe
     {
       if (!file)
         return;
+      if (queue)
+        {
+          queue->drain();
+          OutputQueue::take_error(*this);
+        }
       file->write(buffer.data(), used);
       used = 0;
       file->commit();
@@ -339,7 +363,17 @@ namespace poundfe
         {
           std::vector<Element::ResponseReader> found; // all or none (they may throw)
           for (const int tag : spec.elements)
-            found.push_back(domain.elements.at(tag)->response_reader(spec.response));
+            {
+              const Element &element = *domain.elements.at(tag);
+              if (is_global_force(spec.response) && domain.has_ground_load(element))
+                // OpenSees's getResistingForce: with the element's ground-motion load
+                found.push_back([&domain, &element](std::vector<double> &values) {
+                  const Vector f = domain.force_with_ground_load(element);
+                  values.insert(values.end(), f.data(), f.data() + f.size());
+                });
+              else
+                found.push_back(element.response_reader(spec.response));
+            }
           readers = std::move(found);
         }
       for (const Element::ResponseReader &read : readers)

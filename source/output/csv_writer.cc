@@ -1,5 +1,6 @@
 #include <poundfe/output/csv_writer.h>
 #include <poundfe/output/finite_output.h>
+#include <poundfe/output/finite_row.h>
 #include <poundfe/output/number_text.h>
 
 #include <deal.II/base/exceptions.h>
@@ -81,9 +82,7 @@ namespace poundfe
         file.write(buffer.data(), used);
         used = 0;
       }
-    check(first, 0);
-    for (std::size_t i = 0; i < values.size(); ++i)
-      check(values[i], i + 1);
+    check_row_finite(first, values, columns, file.path());
     char *out = text->write(buffer.data() + used, first);
     for (const double v : values)
       {

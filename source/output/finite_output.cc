@@ -1,5 +1,6 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/output/finite_output.h>
+#include <poundfe/output/finite_row.h>
 
 #include <cmath>
 
@@ -13,5 +14,24 @@ namespace poundfe
                          " is " + what +
                          ": a quantity overflowed or an input is out of any physical range "
                          "(look for an absurd value); nothing infinite is written");
+  }
+
+  void
+  check_row_finite(const double first, const std::vector<double> &values,
+                   const std::vector<std::string> &columns, const std::string &file)
+  {
+    bool finite = std::isfinite(first); // one test per number, no branch
+    for (const double v : values)
+      finite &= std::isfinite(v);
+    if (finite)
+      return;
+    const auto name = [&](const std::size_t c) {
+      return c < columns.size() ? columns[c] : "column " + std::to_string(c + 1);
+    };
+    if (!std::isfinite(first))
+      throw_not_finite(first, name(0), file);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values[i]))
+        throw_not_finite(values[i], name(i + 1), file);
   }
 } // namespace poundfe

@@ -1,9 +1,8 @@
-#include <poundfe/output/finite_output.h>
+#include <poundfe/output/finite_row.h>
 #include <poundfe/output/npy_writer.h>
 
 #include <deal.II/base/exceptions.h>
 
-#include <cmath>
 #include <cstring>
 
 namespace poundfe
@@ -71,11 +70,7 @@ namespace poundfe
     Assert(values.size() + 1 == n_columns, dealii::ExcMessage("a row of the wrong width"));
     if (used >= block) // a whole row fits after `block` (see the constructor)
       write_buffer();
-    if (!std::isfinite(first))
-      throw_not_finite(first, columns[0], file.path());
-    for (std::size_t i = 0; i < values.size(); ++i)
-      if (!std::isfinite(values[i]))
-        throw_not_finite(values[i], columns[i + 1], file.path());
+    check_row_finite(first, values, columns, file.path());
     buffer[used] = first;
     std::memcpy(buffer.data() + used + 1, values.data(), values.size() * sizeof(double));
     used += n_columns;

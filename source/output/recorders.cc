@@ -4,6 +4,7 @@
 #include <poundfe/output/memory_results.h>
 #include <poundfe/output/number_text.h>
 #include <poundfe/output/output_directory.h>
+#include <poundfe/output/output_queue.h>
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/recorders.h>
 #include <poundfe/output/section_states.h>
@@ -1024,6 +1025,10 @@ namespace poundfe
       remove_stale_files(directory, recorders.files); // before this run's temporaries exist
 
     auto text = std::make_shared<NumberText>(); // shared by the CSV files of the run
+    // CSV's text made and written off the stepping thread (output_queue.h);
+    // an .npy row is a copy into its buffer already, as cheap as into a block
+    const bool queued = writes_files && !series.empty() && parameters.format == OutputFormat::csv;
+    const auto queue  = queued ? std::make_shared<OutputQueue>(output_writer_threaded()) : nullptr;
     auto next = series.begin();
     for (const RecorderRequest &r : requests)
       {
@@ -1043,7 +1048,9 @@ namespace poundfe
                                     static_cast<unsigned int>(header.size()), every});
         std::unique_ptr<TableWriter> table =
           memory       ? memory->table_writer(q.stem, header) :
-          writes_files ? make_table_writer(parameters.format, directory, q.stem, header, text) :
+          writes_files ? queued_table_writer(
+                           make_table_writer(parameters.format, directory, q.stem, header, text), queue,
+                           header, directory + "/" + recorders.tables.back().file) :
                          nullptr;
         if (ranks)
           table = ranks->merged(std::move(table), std::move(next->owners));

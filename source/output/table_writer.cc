@@ -1,12 +1,11 @@
 // The table writers' formats, and the memory a run's results go to instead
 // of files (output/memory_results.h).
 #include <poundfe/output/csv_writer.h>
-#include <poundfe/output/finite_output.h>
+#include <poundfe/output/finite_row.h>
 #include <poundfe/output/memory_results.h>
 #include <poundfe/output/npy_writer.h>
 #include <poundfe/output/table_writer.h>
 
-#include <cmath>
 
 namespace poundfe
 {
@@ -24,11 +23,7 @@ namespace poundfe
       add_row(const double first, const std::vector<double> &values) override
       {
         // the message a file would give, naming the table as its CSV
-        if (!std::isfinite(first))
-          throw_not_finite(first, table.header[0], table.stem + ".csv");
-        for (std::size_t i = 0; i < values.size(); ++i)
-          if (!std::isfinite(values[i]))
-            throw_not_finite(values[i], table.header[i + 1], table.stem + ".csv");
+        check_row_finite(first, values, table.header, table.stem + ".csv");
         table.values.push_back(first);
         table.values.insert(table.values.end(), values.begin(), values.end());
       }

@@ -7,6 +7,8 @@
 #include <poundfe/output/peak_response.h>
 #include <poundfe/output/plan_plot.h>
 
+#include <deal.II/base/exceptions.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>

@@ -21,6 +21,15 @@ namespace poundfe
   namespace
   {
     const double builder_pi = std::acos(-1.0);
+    /// The largest steel rupture strain taken: twice the most ductile
+    /// steels' (about 0.25); more is a typing error, and through Mander's
+    /// eps_cu = 0.004 + 1.4 rho_s fyh eps_su / f'cc it makes the core
+    /// crush at strains no concrete reaches.
+    constexpr double largest_ultimate_strain = 0.5;
+    /// The largest concrete strain taken for the cover's spalling: twice the
+    /// most confined cores' crushing strain (Mander's eps_cu, up to about
+    /// 0.05); more is a typing error (1e200 left a cover that never spalls).
+    constexpr double largest_concrete_strain = 0.1;
 
     [[noreturn]] void
     refuse_builder(const char *parameter, const std::string &problem)
@@ -76,6 +85,12 @@ namespace poundfe
       if (!(c.spalling_strain > c.eps_c0))
         refuse_builder("Spalling strain", "must exceed the peak strain " + number_text(c.eps_c0) +
                                             " (got " + number_text(c.spalling_strain) + ")");
+      if (c.spalling_strain > largest_concrete_strain)
+        refuse_builder("Spalling strain", "must be at most " +
+                                            number_text(largest_concrete_strain) +
+                                            ": no concrete, confined or not, reaches a larger "
+                                            "compressive strain (got " +
+                                            number_text(c.spalling_strain) + ")");
       if (!(std::isfinite(c.tensile_ratio) && c.tensile_ratio >= 0 && c.tensile_ratio < 1))
         refuse_builder("Tensile ratio", "must lie in [0, 1)");
       if (c.crushing_strain != 0 && !(c.crushing_strain > c.eps_c0))
@@ -88,8 +103,20 @@ namespace poundfe
     {
       builder_positive("Yield stress", s.fy);
       builder_positive("Elastic modulus", s.E);
+      // b E is the slope after yield: a negative one softens (no unique
+      // section response), one of E or more is no yield at all
+      if (!(s.b >= 0 && s.b < 1))
+        refuse_builder("Hardening ratio", "must lie in [0, 1): Esh = b E, the slope after "
+                                          "yield, is not negative and below E (got " +
+                                            number_text(s.b) + ")");
       if (!(std::isfinite(s.ultimate_strain) && s.ultimate_strain >= 0))
         refuse_builder("Ultimate strain", "must be >= 0");
+      if (s.ultimate_strain > largest_ultimate_strain)
+        refuse_builder("Ultimate strain", "must be at most " +
+                                            number_text(largest_ultimate_strain) +
+                                            ": reinforcing and structural steels rupture at "
+                                            "0.05 to 0.25 (got " +
+                                            number_text(s.ultimate_strain) + ")");
       if (s.ultimate_strain > 0 && !(s.ultimate_strain > s.fy / s.E))
         refuse_builder("Ultimate strain", "must exceed the yield strain fy / E = " +
                                             number_text(s.fy / s.E));

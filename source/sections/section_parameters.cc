@@ -10,9 +10,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <memory>
 #include <sstream>
+#include <utility>
 
 namespace poundfe
 {
@@ -37,7 +40,9 @@ namespace poundfe
       prm.add_parameter("Bars bottom", s.bars_bottom, "[RC rectangle] Bars along the -y face, "
                         "corners included. Unit: count.", Patterns::Integer(0, 1000));
       prm.add_parameter("Bars per side", s.bars_side, "[RC rectangle] Bars on each z face between "
-                        "the corners. Unit: count.", Patterns::Integer(0, 1000));
+                        "the corners: 0 (bars on the top and bottom faces only, a beam's usual "
+                        "layout) or more, as many as fit between the corner bars without "
+                        "overlapping. Unit: count.", Patterns::Integer(0, 1000));
       prm.add_parameter("Bars", s.bars, "[RC circle] Bars evenly round the circle, the first on "
                         "+y. Unit: count.", Patterns::Integer(0, 1000));
       prm.add_parameter("Bar diameter", s.bar_diameter, "[RC] Longitudinal bars. Unit: m.",
@@ -331,6 +336,55 @@ namespace poundfe
                        (known.empty() ? "none" : known) + ")");
   }
 
+  namespace
+  {
+    /// The largest compressive (first, <= 0) and tensile (second) axial
+    /// force of `section` under a uniform strain growing to +-0.1 (beyond
+    /// concrete's crushing and most steels' rupture), or until a fibre
+    /// refuses its strain: the squash and tension capacities.
+    std::pair<double, double>
+    axial_capacity(const SectionLaw &section)
+    {
+      constexpr unsigned int n_steps      = 200;
+      constexpr double       largest_strain = 0.1;
+      std::pair<double, double> capacity{0, 0};
+      for (const double sign : {-1.0, 1.0})
+        {
+          const std::unique_ptr<SectionLaw> ramp = section.clone();
+          ramp->reset();
+          SectionVector strain = SectionVector::Zero(ramp->n_resultants());
+          for (unsigned int i = 1; i <= n_steps; ++i)
+            {
+              strain[0] = sign * largest_strain * i / n_steps;
+              if (!ramp->set_trial(strain))
+                break;
+              ramp->commit();
+              capacity.first  = std::min(capacity.first, ramp->resultant()[0]);
+              capacity.second = std::max(capacity.second, ramp->resultant()[0]);
+            }
+        }
+      return capacity;
+    }
+
+    /// The axial force within twice the section's capacity: more is a
+    /// typing error (a force of 1e200 N once passed with a tolerance scaled
+    /// by it); up to twice it, the analysis says whether the section
+    /// carries it.
+    void
+    check_axial_force(const InputFile &input, const SectionLaw &section, const double force)
+    {
+      constexpr double margin = 2;
+      const std::pair<double, double> capacity = axial_capacity(section);
+      if (force < margin * capacity.first || force > margin * capacity.second)
+        input.fail("Moment curvature/Axial force",
+                   "must lie within " + number_text(margin) + " x the section's capacity, [" +
+                     number_text(margin * capacity.first) + ", " +
+                     number_text(margin * capacity.second) +
+                     "] N (its squash and tension forces, tension positive), got " +
+                     number_text(force));
+    }
+  } // namespace
+
   void
   MomentCurvatureParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -377,6 +431,7 @@ namespace poundfe
     const unsigned int k = sections.find(input, path, section);
     FibreSection fibres  = sections.section(input, k, settings.angle == 0 ? 2 : 4);
     n_fibres             = fibres.geometry().fibres.size();
+    check_axial_force(input, fibres, settings.axial_force);
     try
       {
         return moment_curvature(fibres, settings);

@@ -21,7 +21,13 @@
 #     own line at analyze), a Hertzdamp short of values
 #     (OpenSees's usage line) or with a word for a number, a Steel02 with 5
 #     values, a word after ElasticPPGap's values, a
-#     BoucWen with ko < 0: one line naming the file and line, exit 1, no
+#     BoucWen with ko < 0, reset with a word or under HHT, reactions with
+#     an unknown option, a Path series of times and values in unequal numbers,
+#     of decreasing times, with -dt and -time, of a missing -fileTime file
+#     or without values, analyze with dtMin dtMax Jd on a Transient analysis,
+#     dtMin 0 or Jd 0, remove of a node an element or a recorder names, of
+#     a DOF the node lacks or of a pattern's sp: one line naming the file
+#     and line, exit 1, no
 #     recorder file left.
 #   opensees.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
@@ -80,7 +86,7 @@ set n 0
 foreach tag [getNodeTags] { incr n }
 while {$n > 3} { incr n -1 }
 puts "nodes $n elements [getEleTags]"
-if {[catch {remove element 1} message]} { puts "caught: $message" }
+if {[catch {remove mp 1} message]} { puts "caught: $message" }
 if {[catch {element zeroLength 9 0 1 -mat 1 -dir 1 -orient 1 0 0 0 1 0 -dampMats 1} message]} {
     puts "caught: $message"
 }
@@ -100,7 +106,7 @@ status=$?
 expect_line() { grep -qxF -- "$1" "$work/tcl/log" || { cat "$work/tcl/log"; fail "no line '$1'"; }; }
 expect_line "argc 4 argv $work/tcl -x --output y"
 expect_line "nodes 3 elements 1 2 3"
-expect_line "caught: remove element: poundfe does not support it"
+expect_line "caught: remove mp: poundfe does not support it"
 expect_line "caught: element zeroLength option '-dampMats': poundfe does not support it"
 expect_line "analyze 0 disp 0.06"
 grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
@@ -416,6 +422,38 @@ bad() { # NAME EXPECTED (the script on standard input)
   [ -z "$(ls "$dir" | grep r.out)" ] || fail "$1: a recorder file was left: $(ls "$dir")"
 }
 echo "frobnicate 1" | bad unknown-command '5: invalid command name "frobnicate"' || exit 1
+# remove of what an element, a recorder names; of a fixity out of range, of a pattern's sp
+printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1\nremove node 1\n' \
+  | bad remove-node-of-element "7: remove: node 1 is a node of element 1" || exit 1
+echo "remove node 2" | bad remove-recorded-node \
+  "5: remove: node 2 is recorded by recorder 0 (remove the recorder first)" || exit 1
+printf 'fix 1 1\nremove sp 1 2\n' | bad remove-sp-dof "6: remove: node 1 has no DOF 2" || exit 1
+printf 'fix 1 1\nremove sp 1 1 3\n' | bad remove-sp-pattern \
+  "6: remove sp node dof patternTag (OpenSees 3.8 leaves a pattern's sp in place): poundfe does not support it" || exit 1
+# reset, reactions, Path of times, VariableTransient's analyze
+echo "reset 1" | bad reset-word "5: reset: takes no words, '1' given" || exit 1
+echo "reactions -inertia" | bad reactions-option \
+  "5: reactions: option '-inertia' is not -dynamic (-incInertia, -dynamical, -Dynamic) or -rayleigh" || exit 1
+echo "timeSeries Path 1 -time {0 1 2} -values {0 1}" | bad path-times-count \
+  "5: timeSeries: a Path series has 3 times and 2 values (they must be as many)" || exit 1
+echo "timeSeries Path 1 -time {0 2 1} -values {0 1 2}" | bad path-times-order \
+  "5: timeSeries: a Path series' times must not decrease (time 3 is before time 2)" || exit 1
+echo "timeSeries Path 1 -dt 0.1 -time {0 1} -values {0 1}" | bad path-dt-and-times \
+  "5: timeSeries: a Path series takes -dt or -time (-fileTime), not both" || exit 1
+echo "timeSeries Path 1 -fileTime $work/none.txt -filePath $work/none.txt" | bad path-file-time \
+  "5: timeSeries: the file '$work/none.txt' cannot be read" || exit 1
+echo "timeSeries Path 1 -time {0 1}" | bad path-no-values "5: timeSeries: a Path series needs -values or -filePath" || exit 1
+transient="test NormDispIncr 1e-8 10
+algorithm Newton
+integrator Newmark 0.5 0.25"
+printf '%s\nanalysis Transient\nanalyze 10 0.01 0.001 0.02 3\n' "$transient" | bad variable-not-variable \
+  "9: analyze: dtMin dtMax Jd given to an analysis that is not VariableTransient (no variable time step transient analysis object constructed)" || exit 1
+printf '%s\nanalysis VariableTransient\nanalyze 10 0.01 0.0 0.02 3\n' "$transient" | bad variable-dt-min \
+  "9: analyze: dtMin must be > 0 and dtMax >= dtMin" || exit 1
+printf '%s\nanalysis VariableTransient\nanalyze 10 0.01 0.001 0.02 0\n' "$transient" | bad variable-jd \
+  "9: analyze: Jd must be >= 1" || exit 1
+printf 'test NormDispIncr 1e-8 10\nalgorithm Newton\nintegrator HHT 0.8\nanalysis Transient\nreset\n' \
+  | bad reset-hht "9: reset with integrator HHT: poundfe does not support it" || exit 1
 # an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused
 # at its line, before analyze reads past a node's DOFs
 for kind in "truss 1 3 1 1.0 1" "zeroLength 1 3 1 -mat 1 -dir 1"; do
@@ -424,8 +462,22 @@ for kind in "truss 1 3 1 1.0 1" "zeroLength 1 3 1 -mat 1 -dir 1"; do
 done
 printf 'model basic -ndm 2 -ndf 2\nuniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1\n' \
   | bad differing-ndf-model "7: element 1 takes 4 DOFs (-ndf 2 at each node) but node 1 has 1, node 2 has 1: nodes of differing dof at the element's ends" || exit 1
-echo "element corotTruss 1 1 2 1.0 1" | bad unsupported-element \
-  '5: element corotTruss: poundfe does not support it' || exit 1
+echo "element quad 1 1 2 3 4 1.0 PlaneStress 1" | bad unsupported-element \
+  '5: element quad: poundfe does not support it' || exit 1
+# corotTruss and zeroLengthSection: a bad flag, an unknown option, a
+# missing material, a model or a section they cannot take; modalDamping
+# without a factor
+printf 'uniaxialMaterial Elastic 1 1.0\nelement corotTruss 1 1 2 1.0 1 -cMass 2\n' \
+  | bad corot-flag "6: element: corotTruss 1: -cMass takes 0 or 1, not 2" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement corotTruss 1 1 2 1.0 1 -mass 2.0\n' \
+  | bad corot-option "6: element: invalid option -mass in: element corotTruss 1 \$iNode \$jNode \$A \$matTag <-rho \$rho> <-cMass \$flag> <-doRayleigh \$flag>" || exit 1
+printf 'uniaxialMaterial Elastic 1 1.0\nelement corotTruss 1 1 2 1.0 7\n' \
+  | bad corot-material "6: element: uniaxialMaterial 7 does not exist" || exit 1
+echo "element zeroLengthSection 1 1 2 1" | bad zls-model \
+  "5: element: zeroLengthSection 1: OpenSees's zeroLengthSection takes -ndm 2 -ndf 3 or -ndm 3 -ndf 6 (this model: -ndm 1 -ndf 1)" || exit 1
+printf 'model basic -ndm 2 -ndf 3\nnode 3 0.0 0.0\nnode 4 0.0 0.0\nelement zeroLengthSection 1 3 4 9\n' \
+  | bad zls-section "8: element: zeroLengthSection 1: no section with tag 9 exists" || exit 1
+echo "modalDamping" | bad modal-no-factor "5: modalDamping ?factor - not enough arguments to command" || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass\n' \
   | bad link-mass "6: element: twoNodeLink 1: the end of the line where value 1 of -mass is due (-mass takes 1 value)" || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass -1.0\n' \
@@ -481,15 +533,13 @@ echo "recorder EnvelopeElement -file $work/x.out -ele 5 force" \
 echo "remove recorder 7" | bad remove-recorder '5: remove: recorder 7 does not exist' || exit 1
 echo "remove recorders extra" \
   | bad remove-recorders "5: remove recorders word 'extra': poundfe does not support it" || exit 1
-echo "remove element 1" | bad remove-element '5: remove element: poundfe does not support it' || exit 1
+echo "remove mp 1" | bad remove-mp '5: remove mp: poundfe does not support it' || exit 1
 echo "fixX 0.0 1 1" | bad fix-x '5: fixX: needs 1 to ndf = 1 fixities, got 2' || exit 1
 echo "fixY 0.0 1" | bad fix-y '5: fixY: the model has no axis 2 (-ndm 1)' || exit 1
 echo "fixX 0.0 1 -tol" | bad fix-tolerance '5: fixX: missing the tolerance' || exit 1
 echo "getTime %d" \
   | bad time-format "5: getTime: format '%d' is not one floating-point conversion" || exit 1
 echo "testIter" | bad test-iterations '5: testIter: no convergence test' || exit 1
-printf 'test RelativeNormDispIncr 1e-8 10\nalgorithm NewtonLineSearch\nintegrator Newmark 0.5 0.25\nanalysis Transient\nanalyze 1 0.01\n' \
-  | bad relative-search '9: analyze: test RelativeNormDispIncr with algorithm NewtonLineSearch: poundfe does not support it' || exit 1
 # region and setElementRayleighDampingFactors
 echo "region 1 -ele 1 -rayleigh 0.1 0.0 0.0" | bad region-factors '5: region: missing bKc' || exit 1
 echo "region 1 -ele 1 -frob 2" | bad region-option "5: region 1: '-frob' where an option is due" || exit 1

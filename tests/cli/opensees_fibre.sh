@@ -6,6 +6,8 @@
 #     cantilever, a layered fibre section's inertia, the responses (eleForce,
 #     eleResponse), DisplacementControl reaching its displacements exactly,
 #     the plastic moment of a yielded section, a corotational quarter circle,
+#     ArcLength's load factors in equilibrium with the reactions past the limit point,
+#     an sp imposed by constraints Lagrange and Penalty (OpenSees 3.8's numbers),
 #     two cantilevers tied by rigidLink bar;
 #  2. the recorder Element file layout against eleResponse;
 #  3. side by side with OpenSees 3.8: the scripts of tests/opensees/fibre_*.tcl
@@ -15,8 +17,9 @@
 #     the frame with committed-stiffness damping, HHT, NewtonLineSearch
 #     (whose searches' etas are compared too), KrylovNewton, BFGS, element
 #     loads and a beam's end displacements imposed by sp; ViscousDamper,
-#     Series, twoNodeLink and the 3D beam-columns); a kept value moved by
-#     ten times its case's tolerance must fail that check (four cases);
+#     Series, twoNodeLink and the 3D beam-columns; ArcLength, constraints
+#     Lagrange and Penalty); a kept value moved by ten times its case's
+#     tolerance must fail that check (five cases);
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration, a line search other than
 #     InitialInterpolated, HHT's alpha outside (0, 1] or an infinite number,
@@ -24,8 +27,11 @@
 #     DisplacementControl, KrylovNewton with a tangent other than the current
 #     one, -maxDim < 0 or DisplacementControl, eleLoad on a beam-column, of another type, or
 #     outside a pattern, rigidLink beam, BFGS -secant or -count 0, sp in a transient
-#     analysis, on a fixed DOF or outside a pattern; sp imposed (Transformation) and
-#     held at zero (Plain) on an elastic cantilever.
+#     analysis, on a fixed DOF or outside a pattern, ArcLength or an adaptive
+#     DisplacementControl under constraints Lagrange; sp imposed (Transformation) and
+#     held at zero (Plain) on an elastic cantilever; a refused command caught
+#     by catch leaves the settings before it; constraints after analysis
+#     waits for the next analysis (OpenSees 3.8's line).
 #  5. OpenSees's 3D RC frame script (bench/opensees/fibre_frame_3d/frame.tcl:
 #     rigidDiaphragm, 3D forceBeamColumns on fibre sections) against its peaks.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
@@ -146,6 +152,18 @@ printf 'node 3 1.0 3.0\nrigidLink beam 2 3\n' | bad rigid-link-beam \
   '7: rigidLink beam: poundfe does not support it'
 echo "integrator HHT 1.5" | bad hht-alpha '6: integrator: HHT needs 0 < alpha <= 1'
 echo "integrator HHT 0.9 inf 0.25" | bad hht-infinite "6: integrator: expected a finite number for gamma, got 'inf'"
+echo "constraints Penalty 1.0e12" | bad penalty-alpha '6: constraints: missing alphaMP'
+echo "constraints Penalty 0.0 1.0e12" | bad penalty-zero \
+  '6: constraints: Penalty needs alphaSP > 0 and alphaMP > 0'
+echo "constraints Auto" | bad handler-auto '6: constraints Auto: poundfe does not support it'
+echo "integrator ArcLength 0.01" | bad arc-length-alpha '6: integrator: missing alpha'
+echo "integrator ArcLength 0.0 1.0" | bad arc-length-zero '6: integrator: ArcLength needs an arc length > 0'
+printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nalgorithm BFGS\nintegrator ArcLength 0.001 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad bfgs-arc-length '13: analyze: algorithm BFGS with integrator ArcLength is not supported'
+printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nconstraints Lagrange\nintegrator ArcLength 0.001 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad lagrange-arc-length "13: analyze: integrator ArcLength with constraints Lagrange (OpenSees's multipliers enter the arc) is not supported"
+printf 'fix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1\npattern Plain 1 1 { load 2 1.0 0.0 0.0 }\nconstraints Lagrange\nintegrator DisplacementControl 2 1 0.001 3 0.0001 0.01\nanalysis Static\nanalyze 1\n' \
+  | bad lagrange-adaptive-dc "13: analyze: integrator DisplacementControl with an adaptive increment (minIncr != maxIncr) with constraints Lagrange (OpenSees's multipliers enter the iteration counts) is not supported"
 echo "algorithm NewtonLineSearch -maxIter -5" | bad line-search-iterations \
   '6: algorithm: NewtonLineSearch needs -maxIter >= 1'
 echo "algorithm NewtonLineSearch -minEta 10 -maxEta 0.1" | bad line-search-eta \
@@ -182,12 +200,44 @@ sp_check() { # CONSTRAINTS EXPECTED-LINE
 sp_check Transformation "u 0.002 -0.001 r -4.44444444444"
 sp_check Plain "u 0 0 r 0"
 grep -q "homogeneous constraint assumed" "$work/sp.out" || fail "sp Plain: no warning"
+# Lagrange imposes it exactly, Penalty 1e12 to its error: OpenSees 3.8's
+# lines, to its 12 digits
+sp_check Lagrange "u 0.002 -0.001 r -4.44444444444"
+sp_check "Penalty 1.0e12 1.0e12" "u 0.00199999999556 -0.000999999988889 r -4.4444443358"
+
+# a refused command leaves the settings before it: Transformation keeps
+# the equalDOF (node 3's uy is node 2's), LoadControl 1.0 two steps (t 2)
+# on a linear frame, the column shortened by 2 L / EA = 3e-6
+two_bays='model basic -ndm 2 -ndf 3\nnode 1 0.0 0.0\nnode 2 0.0 3.0\nnode 3 4.0 3.0\nfix 1 1 1 1\ngeomTransf Linear 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nelement elasticBeamColumn 2 2 3 0.01 2.0e8 1.0e-4 1\nequalDOF 2 3 2\ntimeSeries Linear 1\npattern Plain 1 1 { load 3 1.0 -1.0 0.0 }\nsystem BandGeneral\ntest NormDispIncr 1e-10 20\n'
+printf "$two_bays"'constraints Transformation\ncatch {constraints Penalty 1.0e10}\nalgorithm Newton\ncatch {algorithm NewtonLineSearch -tol 0.5 -beta 2}\nintegrator LoadControl 1.0\ncatch {integrator ArcLength -1.0 0.0}\ncatch {integrator DisplacementControl 3 2 0.1 0 0.1 0.1}\nanalysis Static\nputs [format "analyze %%d t %%g uy %%.6g %%.6g" [analyze 2] [getTime] [nodeDisp 3 2] [nodeDisp 2 2]]\n' \
+  > "$work/kept.tcl"
+"$poundfe" opensees "$work/kept.tcl" > "$work/kept.out" 2>&1 || { cat "$work/kept.out"; fail "refused commands"; }
+grep -qx "analyze 0 t 2 uy -3e-06 -3e-06" "$work/kept.out" || { cat "$work/kept.out"; fail "a refused command changed the settings"; }
+# constraints after analysis: the next analysis's handler, as OpenSees 3.8's
+# (its line: the fixed base moved 2e-10 by Penalty, Transformation's uy)
+printf "$two_bays"'constraints Penalty 1.0e10 1.0e10\nanalysis Static\nanalyze 1\nconstraints Transformation\nanalyze 1\nset kept [nodeDisp 1 1]\nanalysis Static\nanalyze 1\nputs [format "Penalty kept %%.3g, then Transformation %%.3g" $kept [nodeDisp 3 2]]\n' \
+  > "$work/switch.tcl"
+"$poundfe" opensees "$work/switch.tcl" > "$work/switch.out" 2>&1 || { cat "$work/switch.out"; fail "constraints after analysis"; }
+grep -qx "Penalty kept 2e-10, then Transformation -4.5e-06" "$work/switch.out" \
+  || { cat "$work/switch.out"; fail "constraints after analysis: not the next analysis's"; }
 
 # 3. side by side with OpenSees 3.8: its committed numbers (every 10th row)
 "$python" "$here/../../bench/opensees/compare.py" "$poundfe" --check "$corpus/reference" \
   "$work/vs" > "$work/vs.log" 2>&1 || { cat "$work/vs.log"; fail "against OpenSees 3.8's numbers"; }
 files=$(find "$corpus/reference" -type f | wc -l)
 grep -c '^ok ' "$work/vs.log" | grep -qx "$files" || { cat "$work/vs.log"; fail "not every file compared"; }
+# ArcLength's load factor (the recorder's time) is the load the supports
+# carry: each takes half the apex load of the symmetric arch (1e-10 of the
+# peak: the residual left by NormDispIncr 1e-12), past its limit point
+"$python" - "$work/vs/arc_length_arch/support.out" <<'PY' || fail "ArcLength: load factor and reactions"
+import sys
+import numpy as np
+support = np.loadtxt(sys.argv[1])
+lam = support[:, 0]
+worst = abs(2 * support[:, 2] - lam).max() / abs(lam).max()
+print(f"ArcLength: 2 R_y - lambda {worst:.1e} of the peak, lambda from {lam.max():.4g} to {lam.min():.4g}")
+sys.exit(0 if worst <= 1e-10 and lam.max() > 80 and lam.min() < -50 else 1)
+PY
 # the check can fail: one of OpenSees's kept values (a file's largest, past
 # the time column) moved by ten times its case's tolerance of its column's
 # peak is reported by name: the pounding pair's displacement with Viscous
@@ -214,6 +264,7 @@ perturbed_fails pounding_Viscous pounding_Viscous.out 1e-8
 perturbed_fails frame_3d_elastic frame3d_column.out 1e-8
 perturbed_fails links_3d links_3d_gap.out 1e-5
 perturbed_fails frame_3d_fibre frame3d_section.out 1e-5
+perturbed_fails handlers_penalty handler_disp.out 1e-8
 
 # 5. OpenSees's script of a 3D RC frame (bench/opensees/fibre_frame_3d/frame.tcl:
 #    rigidDiaphragm, forceBeamColumn on 3D fibre sections, PDelta with vecxz) against

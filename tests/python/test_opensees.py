@@ -5,7 +5,9 @@ own; NumPy scalars), the errors (OpenSeesError naming the command and the
 caller's line; a command poundfe lacks; a bad argument), `wipe` between two
 models, the commands made from the core's own list, a 3D fibre section
 with '-GJ' filled by later calls (a cantilever against its closed form),
-and twoNodeLink, Series and ViscousDamper made with OpenSeesPy's words."""
+twoNodeLink, Series and ViscousDamper made with OpenSeesPy's words, and
+zeroLengthSection (OpenSeesPy's 2D -orient) and corotTruss against their
+closed forms."""
 
 import math
 import os
@@ -42,13 +44,13 @@ def static_analysis(steps=1):
     ops.analysis('Static')
 
 
-def record_history(values_argument):
+def record_history(values_argument, spacing=('-dt', 0.01)):
     """Node 2's displacements of an SDOF under a Path record given by
     `values_argument(values)`, a tuple of the timeSeries arguments after
-    -values."""
+    -values, and `spacing`'s arguments before them."""
     sdof(k=400.0)
     values = [math.sin(0.3 * i) for i in range(51)]
-    ops.timeSeries('Path', 1, '-dt', 0.01, '-values', *values_argument(values), '-factor', 2.0)
+    ops.timeSeries('Path', 1, *spacing, '-values', *values_argument(values), '-factor', 2.0)
     ops.pattern('UniformExcitation', 1, 1, '-accel', 1)
     ops.constraints('Plain')
     ops.numberer('Plain')
@@ -249,6 +251,105 @@ class ConventionsTest(TestCase):
         force = ops.eleResponse(2, 'basicForce')
         self.assertIsInstance(force, list)
         self.assertAlmostEqual(force[0], 50.0 * 10.0 / 150.0, delta=1e-11)
+
+    def test_domain_commands(self):
+        """reset, reactions('-dynamic'), a Path of times and VariableTransient
+        through the same command table as the Tcl scripts."""
+        uniform = record_history(lambda values: (values,))
+        # the same record at its times 0, 0.01, ...: the same interpolation
+        # but for the round-off of i * 0.01 against t / 0.01
+        def at_times(values):
+            return (values, '-time', [0.01 * i for i in range(len(values))])
+        at_times_history = record_history(at_times, spacing=())
+        self.assertLess(max(abs(a - b) for a, b in zip(uniform, at_times_history)),
+                        1e-12 * max(map(abs, uniform)))
+        # the free node's dynamic reaction is its unbalance: 0 once converged
+        ops.reactions('-dynamic')
+        self.assertLess(abs(ops.nodeReaction(2, 1)), 1e-9 * abs(ops.nodeReaction(1, 1)))
+        # reset: the record again from time 0 gives the same history exactly
+        ops.reset()
+        self.assertEqual((ops.getTime(), ops.nodeDisp(2, 1)), (0.0, 0.0))
+        again = []
+        for _ in range(50):
+            ops.analyze(1, 0.01)
+            again.append(ops.nodeDisp(2, 1))
+        self.assertEqual(again, at_times_history)
+        ops.wipeAnalysis()
+        ops.analysis('VariableTransient')
+        self.assertEqual(ops.analyze(5, 0.01, 0.001, 0.02, 1), 0)
+
+    def test_zero_length_section_and_corot_truss(self):
+        # zeroLengthSection with OpenSeesPy's 2D -orient (x alone: y across
+        # it): x along Y takes the vertical load as P (u = F/EA) and the
+        # moment as Mz (theta = M/EI)
+        ops.wipe()
+        ops.model('basic', '-ndm', 2, '-ndf', 3)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, 0.0, 0.0)
+        ops.fix(1, 1, 1, 1)
+        ops.fix(2, 1, 0, 0)
+        ops.section('Elastic', 1, 2.0e11, 0.01, 1.0e-4)
+        ops.element('zeroLengthSection', 1, 1, 2, 1, '-orient', 0.0, 1.0, 0.0)
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(2, 0.0, 1.0e5, 2.0e4)
+        static_analysis()
+        self.assertEqual(ops.analyze(1), 0)
+        self.assertAlmostEqual(ops.nodeDisp(2, 2), 1.0e5 / 2.0e9, delta=1e-18)
+        self.assertAlmostEqual(ops.nodeDisp(2, 3), 2.0e4 / 2.0e7, delta=1e-16)
+        self.assertEqual(len(ops.eleResponse(1, 'section', 'force')), 2)
+        # corotTruss from (0, 0) to (3, 4) on a roller (node 2's Y fixed)
+        # pushed along X by P: its new length L = |(3 + u, 4)| takes
+        # EA (L - 5)/5 (3 + u)/L = P, large enough to turn the bar visibly
+        ops.wipe()
+        ops.model('basic', '-ndm', 2, '-ndf', 2)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, 3.0, 4.0)
+        ops.fix(1, 1, 1)
+        ops.fix(2, 0, 1)
+        ops.uniaxialMaterial('Elastic', 1, 2.0e11)
+        ops.element('corotTruss', 1, 1, 2, 1.0e-3, 1, '-rho', 0.0, '-cMass', 1)
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(2, 2.0e7, 0.0)
+        static_analysis(4)
+        self.assertEqual(ops.analyze(4), 0)
+        u = ops.nodeDisp(2, 1)
+        length = math.hypot(3.0 + u, 4.0)
+        force = 2.0e8 * (length - 5.0) / 5.0
+        self.assertGreater(u, 0.5)
+        self.assertAlmostEqual(force * (3.0 + u) / length / 2.0e7, 1.0, delta=1e-12)
+        self.assertAlmostEqual(ops.eleResponse(1, 'deformation')[0], length - 5.0, delta=1e-14)
+        self.assertAlmostEqual(ops.eleResponse(1, 'axialForce')[0] / force, 1.0, delta=1e-12)
+
+    def test_modal_damping_of_one_mode_is_mass_proportional(self):
+        # one mode (k 400, m 1: omega 20): modalDamping 0.05 gives
+        # C = 2 zeta omega m = 2.0, the same as rayleigh 2.0 0 0 0
+        def history(damping):
+            sdof(k=400.0)
+            ops.eigen('-fullGenLapack', 1)
+            damping()
+            values = [math.sin(0.3 * i) for i in range(101)]
+            ops.timeSeries('Path', 1, '-dt', 0.01, '-values', *values)
+            ops.pattern('UniformExcitation', 1, 1, '-accel', 1)
+            ops.constraints('Plain')
+            ops.numberer('Plain')
+            ops.system('BandGeneral')
+            ops.test('NormDispIncr', 1.0e-12, 10)
+            ops.algorithm('Newton')
+            ops.integrator('Newmark', 0.5, 0.25)
+            ops.analysis('Transient')
+            result = []
+            for _ in range(100):
+                self.assertEqual(ops.analyze(1, 0.01), 0)
+                result.append(ops.nodeDisp(2, 1))
+            return result
+        modal = history(lambda: ops.modalDamping(0.05))
+        rayleigh = history(lambda: ops.rayleigh(2.0, 0.0, 0.0, 0.0))
+        undamped = history(lambda: None)
+        peak = max(abs(x) for x in rayleigh)
+        self.assertLess(max(abs(a - b) for a, b in zip(modal, rayleigh)), 1e-13 * peak)
+        self.assertGreater(max(abs(a - b) for a, b in zip(undamped, rayleigh)), 0.01 * peak)
 
     def test_wipe_between_two_models(self):
         recorded = os.path.join(self.tmp, "first.out")

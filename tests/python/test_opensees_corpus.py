@@ -5,7 +5,8 @@ script) write the Tcl runs' recorder files byte for byte: a linear portal
 frame (gravity, eigen, Rayleigh damping, a record), a pounding pair through
 a zero-length gap (ElasticPPGap, ImpactMaterial), a fibre frame with gravity
 then a record (Fiber sections and a Plain pattern filled by the commands
-after them). The same command procedures run both: a difference would be
+after them), a shallow arch followed past its limit point by ArcLength
+under constraints Plain and Penalty. The same command procedures run both: a difference would be
 in how the values reach them."""
 
 import os
@@ -18,6 +19,7 @@ from common import POUNDFE, ROOT, TestCase
 CORPUS = os.path.join(ROOT, "tests", "opensees")
 sys.path.insert(0, os.path.join(CORPUS, "python"))
 
+import arc_length_arch  # noqa: E402
 import fibre_frame_record  # noqa: E402
 import portal_frame  # noqa: E402
 import pounding_sticks  # noqa: E402
@@ -66,3 +68,48 @@ class CorpusTest(TestCase):
             ["frame_disp.out", "frame_base.out", "frame_section.out", "frame_beam.out"])
         self.assertEqual(status, 0)
         self.assertIn(f"frame: status 0 roof {roof!r} ", stdout)
+
+    def test_refused_command_keeps_settings(self):
+        """A caught refusal leaves the settings before it: Transformation
+        keeps the equalDOF (node 3's uy is node 2's), LoadControl 1.0 its
+        two steps of a linear frame, the column shortened by 2 L / EA =
+        3e-6 (to round-off, 1e-12 relative)."""
+        import poundfe.opensees as ops
+        ops.wipe()
+        ops.model('basic', '-ndm', 2, '-ndf', 3)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, 0.0, 3.0)
+        ops.node(3, 4.0, 3.0)
+        ops.fix(1, 1, 1, 1)
+        ops.geomTransf('Linear', 1)
+        ops.element('elasticBeamColumn', 1, 1, 2, 0.01, 2.0e8, 1.0e-4, 1)
+        ops.element('elasticBeamColumn', 2, 2, 3, 0.01, 2.0e8, 1.0e-4, 1)
+        ops.equalDOF(2, 3, 2)
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(3, 1.0, -1.0, 0.0)
+        ops.test('NormDispIncr', 1e-10, 20)
+        ops.constraints('Transformation')
+        ops.integrator('LoadControl', 1.0)
+        for refused in (('constraints', 'Penalty', 1.0e10), ('integrator', 'ArcLength', -1.0, 0.0),
+                        ('integrator', 'DisplacementControl', 3, 2, 0.1, 0, 0.1, 0.1)):
+            with self.assertRaises(ops.OpenSeesError):
+                getattr(ops, refused[0])(*refused[1:])
+        ops.analysis('Static')
+        self.assertEqual(ops.analyze(2), 0)
+        self.assertEqual(ops.getTime(), 2.0)
+        self.assertAlmostEqual(ops.nodeDisp(2, 2) / -3e-6, 1.0, delta=1e-12)
+        self.assertEqual(ops.nodeDisp(3, 2), ops.nodeDisp(2, 2))
+        ops.wipe()
+
+    def test_arc_length_arch(self):
+        for handler in ([], ["Penalty", "1.0e12", "1.0e12"]):
+            with self.subTest(handler=handler):
+                arguments = ["0.01", "0.0005", "45", *handler]
+                stdout, (status, lam) = self.run_both(
+                    "arc_length_arch.tcl", arc_length_arch.run, ["apex.out", "support.out"],
+                    *arguments)
+                self.assertEqual(status, 0)
+                self.assertIn(f"arch: analyze 0 lambda {lam:f} ", stdout)
+                for name in os.listdir(self.tmp):
+                    subprocess.run(["rm", "-rf", os.path.join(self.tmp, name)], check=True)

@@ -211,6 +211,14 @@ namespace poundfe
     /// with that of the elements' own held loads, is the balance's
     /// constant_load instead of input. Before initialize(); not distributed.
     void hold_gravity_state(const Vector &held_load, const Vector &gravity_displacement);
+    /// Whether initialize() brings the massless equations into equilibrium
+    /// with the massive ones first (set when the run is given initial
+    /// conditions): u_0 on them from p - C v - K u - f(u, v) = 0, and v_0
+    /// from the static tangent, -K_00^-1 K_0m v_m (doc/theory.md §3.8a).
+    /// A massless equation has no state of its own, and one out of
+    /// equilibrium at t = 0 does work in the first step that no energy term
+    /// holds. Not distributed.
+    void equilibrate_massless_start(const bool on) { equilibrate_massless = on; }
     /// Start from rest.
     void initialize(const Vector &load);
     /// Continue from (u_new, v_new) at the current time under p = load
@@ -301,10 +309,8 @@ namespace poundfe
     void   set_up_woodbury(Level &L) const;
     void   set_up_assembled_tangent(Level &L);
     bool   try_step(Level &L, const Vector &load_next);
-    // try_step's phases: the step's effective load, a and v of u_next, the
-    // linear solve (no nonlinear elements), a Newton iteration's residual
-    // (false when non-finite) and increment (false on a singular tangent)
-    void   set_step_load(const Level &L, const Vector &load_next);
+    // try_step's start: the step's effective load less K_eff u, formed term
+    // by term (r_0 below)
     void   set_start_residual(const Level &L, const Vector &load_next);
     /// K u, formed once after each change of u.
     const Vector &stiffness_times_u() const;
@@ -329,6 +335,23 @@ namespace poundfe
     void   set_consistent_acceleration(const Vector &load);
     /// Its local part (distributed: agreed and the ghosts updated after).
     void   solve_consistent_acceleration(const Vector &load);
+    /// The massive equations' numbers among themselves (-1: massless), and
+    /// how many there are.
+    std::vector<int> massive_numbering(unsigned int &n_massive) const;
+    /// equilibrate_massless_start's state at t = 0 (massless_start.cc).
+    void   equilibrate_massless_dofs(const Vector &load);
+    /// Newton on the massless equations of u at fixed v, the elements left
+    /// at the last (converged) evaluation.
+    void   relax_massless_displacements(const Vector &load, const std::vector<int> &massless);
+    /// r = load - C v - K u - f(u, v) with the elements set to (u, v) and
+    /// committed, or not committed and their static tangent changes (D_e at
+    /// damping factor 0) in tangent_change; NumericalError if an element
+    /// refuses the state.
+    void   evaluate_start(const Vector &load, Vector &r, bool commit);
+    /// Rows `massless` of the static tangent K + sum_e B_e D_e B_e^T at
+    /// the last evaluation: the massless columns in `square`, all in `rows`.
+    void   massless_tangent(const std::vector<int> &massless, SparseMatrix &square,
+                            SparseMatrix &rows) const;
     /// local_u, local_v: the elements' local vectors (0 on ground DOFs).
     void   gather(const Vector &u_global, const Vector &v_global);
     /// r -= sum_e (f_e - K_ref,e u_e) at the last evaluated trial state.
@@ -371,7 +394,6 @@ namespace poundfe
     /// x^T K x / 2 plus the elements' stored energy less their part in K,
     /// at their trial state (this rank's elements).
     double strain_energy_at(const Vector &x) const;
-    double elements_strain_energy() const;
     /// `ok` on every rank; else false, with `failure` set where it was not
     /// already (the cause is on another rank). Collective when distributed.
     bool   agreed(bool ok, const char *elsewhere);
@@ -388,6 +410,7 @@ namespace poundfe
     std::vector<char>   counted_here;
     /// Distributed: the energy terms summed over the ranks.
     EnergyBalance       total_balance;
+    bool                equilibrate_massless = false;
     bool                use_woodbury = true;
     bool                use_hybrid   = false;
     // Element h's local DOFs are [dof_start[h], dof_start[h + 1]) of the
@@ -399,7 +422,7 @@ namespace poundfe
     std::vector<std::unique_ptr<Level>> levels;
 
     Vector u, v, a, load_now;
-    Vector u_next, v_next, a_next, rhs, residual, increment, work_vector, velocity_sum;
+    Vector u_next, v_next, a_next, residual, increment, work_vector, velocity_sum;
     /// Newton's unknown is the step's displacement increment du = u_next - u,
     /// and its residual r_0 - K_eff du - f(u + du), with r_0 = rhs - K_eff u
     /// formed term by term (set_start_residual): rhs and K_eff u are both

@@ -105,6 +105,10 @@ namespace poundfe
         bool         print          = false;
       } line_search;
       bool            transient = false;
+      /// analysis VariableTransient (OpenSees's
+      /// VariableTimeStepDirectIntegrationAnalysis): `analyze n dt dtMin
+      /// dtMax Jd` varies the step.
+      bool            variable_time_step = false;
       double          gamma = 0.5, beta = 0.25;       // Newmark
       double          alpha = 1; // HHT's (OpenSees's convention: 1 is Newmark)
       double          d_lambda = 1, lambda_min = 1, lambda_max = 1; // LoadControl
@@ -120,12 +124,25 @@ namespace poundfe
       int             control_node = 0;
       unsigned int    control_dof = 0;
       double          d_u = 0, d_u_min = 0, d_u_max = 0, d_u_iterations = 1;
+      /// ArcLength s alpha (ArcLength.cpp) in place of LoadControl.
+      bool            arc_length = false;
+      double          arc_s = 0, arc_alpha = 1;
       /// Counts the script's `integrator` commands: a new one starts a
       /// fresh integrator (its increment, its reference load).
       unsigned int    integrator_serial = 0;
       /// constraints Transformation: an sp command imposes its value;
       /// Plain (OpenSees's PlainHandler) holds the DOF at zero, with a warning.
       bool            transformation = false;
+      /// constraints Penalty alphaSP alphaMP (PenaltyConstraintHandler):
+      /// every DOF an equation, each fix and sp a spring alphaSP to its
+      /// value, each equalDOF, rigidLink bar and rigidDiaphragm row c . u = 0
+      /// the stiffness alphaMP c c^T (opensees_penalty.cc).
+      bool            penalty = false;
+      double          alpha_sp = 0, alpha_mp = 0;
+      /// constraints Lagrange: Transformation's displacements; ArcLength and
+      /// an adaptive DisplacementControl are refused with it (OpenSees's
+      /// multipliers enter their norms).
+      bool            lagrange = false;
     };
 
     /// What the analyses of a script have done (poundfe::report).
@@ -152,6 +169,21 @@ namespace poundfe
       /// each committed step (the recorders).
       int analyze(unsigned int n_steps, double dt, const std::function<void()> &after_step,
                   const std::function<void(const std::string &)> &warn);
+
+      /// `analyze n dt dtMin dtMax Jd` of a VariableTransient analysis
+      /// (VariableTimeStepDirectIntegrationAnalysis::analyze): steps until
+      /// their sum reaches n dt, each next one the last times Jd over the
+      /// test's iterations (determineDt), within [dtMin, dtMax]; a failed
+      /// step is reverted and tried again shorter, and ends the analysis
+      /// (-3) when it was not longer than dtMin.
+      struct VariableSteps
+      {
+        unsigned int n_steps = 0;
+        double       dt = 0, dt_min = 0, dt_max = 0;
+        int          jd = 1;
+      };
+      int analyze_variable(const VariableSteps &steps, const std::function<void()> &after_step,
+                           const std::function<void(const std::string &)> &warn);
 
       /// The lowest n eigenvalues omega^2 of K_t phi = omega^2 M phi.
       std::vector<double> eigenvalues(unsigned int n);
@@ -193,10 +225,23 @@ namespace poundfe
       /// analyze the Rayleigh factors alone (`rayleigh` may have changed).
       void   list_elements(bool renumbered);
       bool   step(double dt, std::string &why);
+      /// The checks and settings every `analyze` starts with.
+      void   begin_analysis(const std::function<void(const std::string &)> &warn);
+      /// One step of dt from the committed state, committed; false (why
+      /// said, the elements reverted) when it failed.
+      bool   advance(double dt, std::string &why);
       /// DisplacementControl's predictor (newStep).
       bool   displacement_step(std::string &why);
       /// DisplacementControl's corrector of a Newton iterate dx (update).
       bool   correct_displacement(Vector &dx, std::string &why);
+      /// A static predictor's dUhat = K^-1 phat, K at the committed state.
+      bool   reference_displacement(Vector &dx_hat, std::string &why);
+      /// The predictor's load increment and displacements, then the iterations.
+      bool   predict_and_iterate(double d_lambda, const Vector &dx, std::string &why);
+      /// ArcLength's predictor (newStep) and corrector (update), in
+      /// opensees_arc_length.cc.
+      bool   arc_length_step(std::string &why);
+      bool   correct_arc_length(Vector &dx, std::string &why);
       /// phat = R at the committed state and the factor lambda + 1.
       void   reference_load();
       int    iterate(std::string &why);
@@ -216,6 +261,9 @@ namespace poundfe
       /// HHT: U_alpha, V_alpha from U_n, V_n and the trial U, V.
       void   update_alpha_point();
       double test_norm(const Vector &dx, const Vector &r) const;
+      /// Whether NewtonLineSearch's own copy of the test (its theOtherTest,
+      /// started afresh at every iteration) is met by the Newton step.
+      bool   fresh_test_met(const Vector &dx, const Vector &r) const;
       /// The test's line of print flag 1 (each iteration) or 2 (convergence).
       void   print_iteration(unsigned int iteration, double norm) const;
       void   commit();
@@ -263,10 +311,55 @@ namespace poundfe
       std::vector<std::vector<std::pair<int, double>>> combinations;
       /// The combinations of the domain's diaphragms (in number()).
       void number_diaphragms();
+      /// Penalty's rows (in number(), every DOF an equation): a fix, an sp
+      /// (its value by its node and DOF) or a row of a multi-point constraint.
+      struct PenaltyRow
+      {
+        std::vector<std::pair<int, double>> terms; // equation, coefficient
+        double                              alpha = 0;
+        std::pair<int, unsigned int>        imposed{0, 0};
+        bool                                is_imposed = false;
+      };
+      std::vector<PenaltyRow> penalty_rows;
+      void number_penalty();
+      /// r += alpha c (g(t) - c . u) for each row, u at the elements' point.
+      void add_penalty_forces(Vector &r);
+      /// alpha c c^T into K_eff (OpenSees's Penalty FE: unscaled by c_k).
+      void add_penalty_tangent();
       /// mass_of_equation, inertia_terms and second_ground_terms (in number()).
       void number_inertia();
       /// mass_damping_of_equation and uniform_mass_damping (in number()).
       void number_mass_damping();
+      /// The consistent masses by equation (-1: fixed), their alpha_M (0
+      /// unless the element is Rayleigh-damped) and matrices (in number()).
+      struct CoupledMass
+      {
+        std::vector<int>          equations;
+        std::vector<unsigned int> dofs; // each row's DOF at its node
+        const Matrix             *matrix = nullptr;
+        double                    alpha_m = 0;
+      };
+      std::vector<CoupledMass> coupled_masses;
+      Vector                   coupled_work; // the residual's local storage
+      void                     number_coupled_masses();
+      /// r -= M_e (A + alpha_M v + r a_g) of the consistent masses.
+      void subtract_coupled_inertia(Vector &r, const Vector &v);
+      /// (c_m + c_c alpha_M) M_e of the consistent masses into the tangent.
+      void add_coupled_masses(double c_m, double c_c);
+      /// M x with the consistent masses (the modes' M).
+      Vector mass_times(const Vector &x) const;
+      /// OpenSees 3.8's modal damping (IncrementalIntegrator::
+      /// addModalDampingForce, addModalDampingMatrix): C = W diag(c) W^T,
+      /// W's columns M phi_i, c_i = 2 zeta_i omega_i; renewed from the
+      /// domain's modes when they or the equations change.
+      Matrix       modal_mass_shapes;
+      Vector       modal_coefficients;
+      unsigned int modal_stamp_seen = 0;
+      bool         modal_numbered   = false;
+      /// Whether modal damping acts (its vectors renewed first).
+      bool modal_damping_active();
+      /// The domain's M-normalised modes from the solution of `eigen`.
+      void keep_modes(const Matrix &shapes, const std::vector<double> &eigenvalues);
       /// r[e] += c value for the equation's terms (none where fixed or imposed).
       void add_to(Vector &r, int eq, double value) const;
       /// An equation's terms: itself, or a diaphragm's combination.
@@ -287,6 +380,10 @@ namespace poundfe
         bool                   combined; // some equation a diaphragm's combination
       };
       std::vector<ListedElement> element_list;
+      /// Whether set_trial evaluates the elements over deal.II's threads
+      /// (list_elements decides: more than one thread and at least 8
+      /// costly elements).
+      bool elements_on_threads = false;
       /// A small model's elements, all UniaxialRows without Rayleigh
       /// damping, in typed loops (null otherwise; list_elements decides).
       std::unique_ptr<UniaxialLinks> links;
@@ -306,6 +403,10 @@ namespace poundfe
       double                        d_u_step = 0;       // its current increment
       int                           control_equation = -1;
       bool                          fresh_integrator = true;
+      /// ArcLength's step so far: Delta U and Delta lambda (its sign the
+      /// next predictor's).
+      Vector                        arc_u_step;
+      double                        arc_lambda_step = 0;
     };
   } // namespace opensees
 } // namespace poundfe

@@ -118,6 +118,9 @@ namespace poundfe
       /// Whether the domain's Rayleigh factors damp it (OpenSees: beams
       /// always, zeroLength with -doRayleigh).
       virtual bool rayleigh_damped() const = 0;
+      /// Whether its set_trial costs microseconds (a member's section
+      /// states at its integration points), enough to pay for a thread.
+      virtual bool costly_trial() const { return false; }
       virtual void commit() {}
       virtual void revert() {}
       virtual void reset() {}
@@ -150,6 +153,10 @@ namespace poundfe
       std::vector<int> equations;
     };
 
+    /// Whether the words ask for the global resisting force ("force",
+    /// "forces", "globalForce", "globalForces").
+    bool is_global_force(const std::vector<std::string> &words);
+
     /// A time series: the factor at time t (OpenSees's TimeSeries::getFactor).
     struct TimeSeries
     {
@@ -163,8 +170,18 @@ namespace poundfe
       double              factor = 1;
       double              dt     = 0; // path: the values' spacing
       std::vector<double> values;    // path
+      /// path: the values' times, not decreasing (OpenSees's
+      /// PathTimeSeries: -time, -fileTime), in place of dt; 0 before the
+      /// first and after the last.
+      std::vector<double> times;
+      /// path with dt (OpenSees's PathSeries): -useLast (the last value
+      /// after the end, in place of 0) and -startTime (the first value's).
+      bool                use_last   = false;
+      double              start_time = 0;
       double start = 0, finish = 0, period = 1, shift = 0, zero_shift = 0; // trig
       double              at(double time) const;
+      /// at() of a series with times (PathTimeSeries::getFactor).
+      double path_time_factor(double time) const;
     };
 
     struct NodalLoad
@@ -304,6 +321,35 @@ namespace poundfe
         bool ground_load_twice = false;
       };
       std::vector<LumpedMass> lumped_masses;
+      /// An element's consistent mass (-cMass 1): its matrix on the
+      /// element's DOFs (node after node, -ndf each), in M beside the
+      /// nodes' diagonal; alpha_M damps it when the element is
+      /// Rayleigh-damped. Its ground-motion load -M r a_g enters the
+      /// reactions when `load_in_reaction` (a truss's, as LumpedMass's).
+      struct ConsistentMass
+      {
+        int              element = 0;
+        std::vector<int> nodes;
+        Matrix           matrix;
+        bool             load_in_reaction = false;
+      };
+      std::vector<ConsistentMass> consistent_masses;
+      /// The modes of the last `eigen` (OpenSees's Domain eigenvalues and
+      /// its DOF groups' eigenvectors), M-normalised, by node and DOF.
+      struct Modes
+      {
+        std::vector<double>                             eigenvalues;
+        std::vector<std::map<int, std::vector<double>>> shapes;
+      };
+      Modes modes;
+      /// modalDamping's factors zeta_i (one per mode of the last `eigen`)
+      /// and whether its matrix enters the tangent (modalDamping) or only
+      /// its force the unbalance (modalDampingQ); empty: none.
+      std::vector<double> modal_damping;
+      bool                modal_damping_in_tangent = true;
+      /// Counts the changes of `modes` and `modal_damping` (an analysis
+      /// renews its own vectors of them).
+      unsigned int modal_stamp = 0;
       double                                  time = 0; // committed
       /// OpenSees's global ops_Dt: the step of the last transient
       /// `analyze` (0 until then), over which a ViscousDamper integrates.
@@ -340,10 +386,54 @@ namespace poundfe
       std::vector<double> ground_acceleration(double time) const;
       /// The same into `a` (ndf values), its storage kept.
       void ground_acceleration(double time, std::vector<double> &a) const;
-      /// OpenSees's nodal reactions (Domain::calculateNodalReactions(flag)
-      /// with flag 0: element resisting forces minus applied loads, plus
-      /// alpha_M M v) at the committed state.
-      std::map<int, std::vector<double>> reactions() const;
+      /// The flag of OpenSees's Domain::calculateNodalReactions (`reactions`,
+      /// `reactions -dynamic`, `reactions -rayleigh`).
+      enum class ReactionFlag
+      {
+        resisting, // 0: element resisting forces minus applied loads, plus alpha_M M v
+        dynamic,   // 1: with the inertia and Rayleigh damping forces of nodes and elements
+        rayleigh   // 2: the Rayleigh damping forces alone
+      };
+      /// OpenSees's nodal reactions at the committed state.
+      std::map<int, std::vector<double>>
+      reactions(ReactionFlag flag = ReactionFlag::resisting) const;
+      /// An element's nodal values of a node response (disp, vel, accel),
+      /// node after node, in its DOFs' order.
+      Vector element_values(const Element &element,
+                            const std::vector<double> Node::*response) const;
+      /// OpenSees's Element::getRayleighDampingForces: (alpha_M M_e +
+      /// beta_K K_t + beta_K0 K_0 + beta_Kc K_c) v_e with the element's
+      /// factors, whether or not they damp it in the analysis.
+      Vector rayleigh_damping_forces(const Element &element) const;
+      /// An element's OpenSees getResistingForceIncInertia: its resisting
+      /// force, its Rayleigh damping when it is damped, its lumped masses'
+      /// inertia m a and ground-motion load (see LumpedMass).
+      Vector force_with_inertia(const Element &element) const;
+      /// OpenSees's getResistingForce of an element with mass under a
+      /// ground motion (its `force` response and eleForce): the element's
+      /// force plus its lumped masses' ground-motion load m a_g on the
+      /// translations (load_in_reaction).
+      Vector force_with_ground_load(const Element &element) const;
+      /// Whether the element has a lumped mass whose ground-motion load its
+      /// getResistingForce subtracts (LumpedMass::load_in_reaction).
+      bool has_ground_load(const Element &element) const;
+      /// Element::response with OpenSees's getResistingForce for the
+      /// global force ("force", "globalForce": force_with_ground_load).
+      std::vector<double> element_response(const Element                  &element,
+                                           const std::vector<std::string> &words) const;
+      /// `remove element tag` (OpenSees's Domain::removeElement): the
+      /// element, its lumped masses and its region's factors; nothing when
+      /// there is none. ScriptError when a pattern's element load names it
+      /// (OpenSees 3.8 keeps the load on the removed element).
+      void remove_element(int tag);
+      /// `remove node tag`: ScriptError when an element, an equalDOF, a
+      /// rigidDiaphragm or a pattern's load or sp names it (OpenSees 3.8
+      /// removes it from under them); nothing when there is none.
+      void remove_node(int tag);
+      /// OpenSees's Domain::revertToStart (`reset`): every node's response
+      /// zero, every element back to its initial state (and its trial
+      /// state at those displacements), the time 0.
+      void revert_to_start();
       void clear();
     };
 

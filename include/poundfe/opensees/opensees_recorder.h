@@ -10,12 +10,16 @@
 // write_precision_text below gives the same text faster). The file
 // appears complete when the script ends (or at wipe), and not at all when
 // it fails. The Envelope recorders keep each value's extremes and write
-// three rows when they finish.
+// three rows when they finish. Given a writer thread (set_queue,
+// output/output_queue.h), a recorder hands each line's doubles to it and
+// the text is made and written there: the same bytes.
 #ifndef poundfe_opensees_opensees_recorder_h
 #define poundfe_opensees_opensees_recorder_h
 
 #include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/output/output_queue.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -76,15 +80,25 @@ namespace poundfe
     };
 
     /// A recorder's file: lines of numbers, written when the script ends.
-    class Recorder
+    class Recorder : public OutputQueue::Sink
     {
     public:
       explicit Recorder(const OutputSpec &output);
-      virtual ~Recorder();
+      /// Its lines pushed reach the file's text before it goes.
+      ~Recorder() override;
+      /// Its lines formatted and written on `queue`'s thread from now on.
+      void set_queue(std::shared_ptr<OutputQueue> queue);
       /// One line of the domain's committed state, when it is due.
       virtual void record(const Domain &domain);
       /// Writes the last lines and puts the file in place.
       virtual void finish();
+      /// `reset` (OpenSees's Recorder::restart): the Envelope recorders
+      /// start their extremes again; the others go on.
+      virtual void restart() {}
+      /// Whether it records the node or the element (`remove node`,
+      /// `remove element` refuse what a recorder records).
+      virtual bool records_node(int /*tag*/) const { return false; }
+      virtual bool records_element(int /*tag*/) const { return false; }
 
     protected:
       /// The line's values after the time.
@@ -93,12 +107,16 @@ namespace poundfe
       /// without -dT, else when time - next >= -dT rTolDt, the next then
       /// time + dT), and the next due time moved on if so.
       bool due(double time);
-      /// One line of numbers into the file's text.
+      /// One line of numbers into the file's text (through the queue, if any).
       void write_line(const std::vector<double> &numbers);
       const bool time;
 
     private:
-      std::unique_ptr<AtomicFile> file;
+      /// The text of one line of `n` numbers, written out when enough.
+      void consume(const double *numbers, std::size_t n) override;
+
+      std::shared_ptr<OutputQueue> queue; // none: inline
+      std::unique_ptr<AtomicFile>  file;
       std::string                 buffer; // its first `used` characters are text
       std::size_t                 used = 0;
       std::vector<double>         line; // the values of one record, its storage kept
@@ -111,6 +129,10 @@ namespace poundfe
     public:
       using Spec = NodeRecorderSpec;
       explicit NodeRecorder(NodeRecorderSpec spec);
+      bool records_node(const int tag) const override
+      {
+        return std::find(spec.nodes.begin(), spec.nodes.end(), tag) != spec.nodes.end();
+      }
 
     protected:
       void             values(const Domain &domain, std::vector<double> &line) override;
@@ -131,6 +153,10 @@ namespace poundfe
     public:
       using Spec = ElementRecorderSpec;
       explicit ElementRecorder(ElementRecorderSpec spec);
+      bool records_element(const int tag) const override
+      {
+        return std::find(spec.elements.begin(), spec.elements.end(), tag) != spec.elements.end();
+      }
 
     protected:
       void values(const Domain &domain, std::vector<double> &line) override;
@@ -155,6 +181,13 @@ namespace poundfe
     {
     public:
       DriftRecorder(DriftRecorderSpec spec, const Domain &domain);
+      bool records_node(const int tag) const override
+      {
+        for (const auto &pair : pairs)
+          if (pair[0] == tag || pair[1] == tag)
+            return true;
+        return false;
+      }
       /// With no pair kept, nothing: no file, as OpenSees's.
       void record(const Domain &domain) override;
       void finish() override;
@@ -182,6 +215,7 @@ namespace poundfe
       explicit EnvelopeRecorder(typename Values::Spec spec);
       void record(const Domain &domain) override;
       void finish() override;
+      void restart() override { first = true; }
 
     private:
       std::vector<double> current;
