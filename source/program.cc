@@ -6,6 +6,7 @@
 // --version.
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/thread_limit.h>
 #include <poundfe/commands/command_table.h>
 #include <poundfe/commands/dispatch.h>
 
@@ -262,6 +263,7 @@ poundfe_program_main(int argc, char **argv)
   else
     // what MPI_InitFinalize(argc, argv, threads) sets: one thread unless --threads
     dealii::MultithreadInfo::set_thread_limit(line.threads);
+  poundfe::set_thread_limit(line.threads); // the same for the parts built without deal.II
   dealii::deal_II_exceptions::disable_abort_on_exception();
   // Rank 0 speaks (also before MPI is initialised): the ranks agree on their
   // inputs before a command runs, and rank 0 prints any rank's refusal.

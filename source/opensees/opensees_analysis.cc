@@ -19,12 +19,12 @@
 // diaphragm's constrained DOFs leave the equations: u_c = C u_r, the
 // elements' forces and stiffness taken through C; nodal masses stay
 // diagonal because the constrained nodes may carry none in the plane).
+#include <poundfe/base/thread_limit.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/parallel_refusal.h>
 #include <poundfe/opensees/opensees_analysis.h>
 
-#include <deal.II/base/multithread_info.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -583,7 +583,7 @@ namespace poundfe
       // a member's microseconds pay for a thread, a spring's nanoseconds do not
       constexpr long costly_elements = 8;
       elements_on_threads =
-        dealii::MultithreadInfo::n_threads() > 1 &&
+        thread_limit() > 1 &&
         std::count_if(elements.begin(), elements.end(),
                       [](const Element *e) { return e->costly_trial(); }) >= costly_elements;
     }

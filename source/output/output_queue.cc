@@ -5,8 +5,8 @@
 // handed % n_blocks while filling and free again once `written` passes it.
 #include <poundfe/output/output_queue.h>
 
-#include <deal.II/base/exceptions.h>
-#include <deal.II/base/multithread_info.h>
+#include <poundfe/base/lean_assert.h>
+#include <poundfe/base/thread_limit.h>
 
 #include <cstdint>
 #include <cstring>
@@ -193,6 +193,6 @@ namespace poundfe
   bool
   output_writer_threaded()
   {
-    return dealii::MultithreadInfo::n_threads() > 1;
+    return thread_limit() > 1;
   }
 } // namespace poundfe

@@ -8,7 +8,8 @@
 #ifndef poundfe_base_parallel_refusal_h
 #define poundfe_base_parallel_refusal_h
 
-#include <deal.II/base/parallel.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <atomic>
 
@@ -24,10 +25,12 @@ namespace poundfe
   {
     constexpr unsigned int    elements_per_range = 4;
     std::atomic<unsigned int> first{n};
-    dealii::parallel::apply_to_subranges(
-      0u, n,
-      [&](const unsigned int begin, const unsigned int end) {
-        for (unsigned int h = begin; h < end; ++h)
+    // TBB directly (the pool deal.II's thread limit sizes): the interpreter's
+    // module, which uses it too, links without deal.II
+    tbb::parallel_for(
+      tbb::blocked_range<unsigned int>(0u, n, elements_per_range),
+      [&](const tbb::blocked_range<unsigned int> &range) {
+        for (unsigned int h = range.begin(); h < range.end(); ++h)
           if (!evaluate(h))
             {
               unsigned int seen = first.load();
@@ -36,8 +39,7 @@ namespace poundfe
                 }
               return;
             }
-      },
-      elements_per_range);
+      });
     return first.load();
   }
 
