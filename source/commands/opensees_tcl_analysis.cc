@@ -230,6 +230,7 @@ namespace poundfe
       {
         opensees::AnalysisOptions &o = s.options;
         o.alpha                      = w.real("alpha");
+        o.hht                        = true;
         o.gamma                      = 1.5 - o.alpha;
         o.beta                       = 0.25 * (2 - o.alpha) * (2 - o.alpha);
         if (!w.done())
@@ -253,6 +254,7 @@ namespace poundfe
             s.options.gamma = w.real("gamma");
             s.options.beta  = w.real("beta");
             s.options.alpha = 1;
+            s.options.hht   = false;
             if (!(s.options.beta > 0))
               throw ScriptError("Newmark needs beta > 0");
             s.has_transient_integrator = true;
@@ -301,6 +303,7 @@ namespace poundfe
             s.options.gamma = 0.5;
             s.options.beta  = 0.25;
             s.options.alpha = 1;
+            s.options.hht   = false;
           }
         if (!transient && !s.has_static_integrator)
           {

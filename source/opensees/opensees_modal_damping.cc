@@ -6,6 +6,9 @@
 //   f_d = -sum_i 2 zeta_i omega_i (M phi_i) (M phi_i)^T v
 // joins the unbalance of a transient step, and c_c times the same matrix
 // its tangent (modalDamping; modalDampingQ leaves the tangent alone).
+// Under HHT, v is the velocity at t + dt (HHT::getVel), not at t + alpha
+// dt, and the matrix stays out of the tangent (HHT has no getCFactor: the
+// base's 0 leaves addModalDampingMatrix empty).
 // Modes with lambda_i <= 0 or zeta_i = 0 add nothing; modes past the
 // factors, or factors past the modes, none either.
 #include <poundfe/opensees/opensees_analysis.h>
@@ -42,6 +45,12 @@ namespace poundfe
         }
       domain.modes = std::move(modes);
       ++domain.modal_stamp;
+    }
+
+    bool
+    Analysis::modal_damping_in_tangent(const double c_c)
+    {
+      return c_c != 0 && !opts.hht && domain.modal_damping_in_tangent && modal_damping_active();
     }
 
     bool
