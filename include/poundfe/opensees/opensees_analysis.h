@@ -297,6 +297,9 @@ namespace poundfe
       Vector       modal_coefficients;
       unsigned int modal_stamp_seen = 0;
       bool         modal_numbered   = false;
+      /// The nodes' equations when M phi was formed: a renumbering that
+      /// keeps them keeps M phi (OpenSees forms it anew only on new modes).
+      std::vector<int> modal_equations;
       /// Whether modal damping acts (its vectors renewed first).
       bool modal_damping_active();
       /// Whether c_c times the modal damping matrix joins the tangent
