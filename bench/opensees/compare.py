@@ -235,6 +235,12 @@ CASES = {
     "modal_each": ("modal_damping.tcl", ["each"], 1e-8),
     "modal_fewer": ("modal_damping.tcl", ["fewer"], 1e-8),
     "modal_quasi": ("modal_damping.tcl", ["quasi"], 1e-12),
+    # the same under HHT 0.8 with FullGeneral in both: the modal force at
+    # HHT's velocity at t + dt, no modal matrix in HHT's tangent
+    "modal_hht": ("modal_damping.tcl", ["hht"], 1e-12),
+    "modal_hht_quasi": ("modal_damping.tcl", ["hht_quasi"], 1e-12),
+    # the roof's mass doubled after `eigen`: M phi kept from `eigen`
+    "modal_mass": ("modal_damping.tcl", ["mass"], 1e-12),
     "modal_rayleigh": ("modal_damping.tcl", ["rayleigh"], 1e-8),
     # -cMass 1 on truss and corotTruss: eigenvalues, a yielding truss's
     # history and reactions (measured 3.2e-14), a yielding tripod (9.6e-13)

@@ -282,7 +282,8 @@ namespace poundfe
       void
       hht(opensees::AnalysisOptions &o, Words &w)
       {
-        o.alpha = w.real("alpha");
+        o.alpha                      = w.real("alpha");
+        o.hht                        = true;
         o.gamma                      = 1.5 - o.alpha;
         o.beta                       = 0.25 * (2 - o.alpha) * (2 - o.alpha);
         if (!w.done())
@@ -324,6 +325,7 @@ namespace poundfe
             o.gamma = w.real("gamma");
             o.beta  = w.real("beta");
             o.alpha = 1;
+            o.hht   = false;
             if (!(o.beta > 0))
               throw ScriptError("Newmark needs beta > 0");
           }
@@ -363,6 +365,7 @@ namespace poundfe
             s.options.gamma = 0.5;
             s.options.beta  = 0.25;
             s.options.alpha = 1;
+            s.options.hht   = false;
           }
         if (!transient && !s.has_static_integrator)
           {

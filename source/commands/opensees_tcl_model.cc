@@ -569,9 +569,10 @@ namespace poundfe
 
       /// zeroLengthSection tag i j secTag <-orient x1 x2 x3 yp1 yp2 yp3>
       /// <-doRayleigh <0|1>> (Rayleigh-damped by default, as OpenSees's);
-      /// in 2D, -orient's x alone too (OpenSeesPy's form: y across x).
+      /// in 2D, OpenSeesPy's -orient x1 x2 x3 too (`python`: y across x);
+      /// Tcl wants all six values, as OpenSees 3.8's Tcl command.
       void
-      zero_length_section(opensees::Domain &d, Words &w)
+      zero_length_section(opensees::Domain &d, Words &w, const bool python)
       {
         const int                       tag  = w.integer("the element's tag");
         const std::string               name = "zeroLengthSection " + text_of(tag);
@@ -587,8 +588,12 @@ namespace poundfe
                 for (double &x : z.x)
                   x = w.real("a component of x");
                 double value;
-                if (d.ndm == 2 &&
-                    (w.done() || Tcl_GetDouble(nullptr, w.peek().c_str(), &value) != TCL_OK))
+                const bool x_alone =
+                  w.done() || Tcl_GetDouble(nullptr, w.peek().c_str(), &value) != TCL_OK;
+                if (x_alone && !(python && d.ndm == 2))
+                  throw ScriptError(name + ": not enough parameters after -orient (x1 x2 x3 "
+                                           "yp1 yp2 yp3)");
+                if (x_alone)
                   z.y = {{-z.x[1], z.x[0], 0.0}};
                 else
                   for (double &y : z.y)
@@ -635,7 +640,7 @@ namespace poundfe
         else if (type == "truss")
           truss(d, w);
         else if (type == "zeroLengthSection")
-          zero_length_section(d, w);
+          zero_length_section(d, w, s.without_bodies);
         else if (type == "corotTruss" || type == "CorotTruss")
           corot_truss(d, w);
         else if (type == "twoNodeLink")

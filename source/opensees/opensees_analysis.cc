@@ -660,9 +660,9 @@ namespace poundfe
         subtract_coupled_inertia(r, v);
       if (!uniform_mass_damping)
         r -= mass_damping_of_equation.cwiseProduct(v);
-      if (modal_damping_active())
+      if (modal_damping_active()) // HHT: OpenSees's getVel is the velocity at t + dt
         r -= modal_mass_shapes *
-             modal_coefficients.cwiseProduct(modal_mass_shapes.transpose() * v);
+             modal_coefficients.cwiseProduct(modal_mass_shapes.transpose() * (opts.hht ? V : v));
       return r;
     }
 
@@ -757,7 +757,7 @@ namespace poundfe
           add_coupled_masses(c_m, c_c);
           if (!uniform_mass_damping)
             dense_tangent.diagonal() += c_c * mass_damping_of_equation;
-          if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
+          if (modal_damping_in_tangent(c_c))
             dense_tangent += c_c * modal_mass_shapes * modal_coefficients.asDiagonal() *
                              modal_mass_shapes.transpose();
           if (!dense_tangent.allFinite())
@@ -785,7 +785,7 @@ namespace poundfe
                                        (uniform_mass_damping ? 0.0 :
                                                                c_c * mass_damping_of_equation[i]));
       add_coupled_masses(c_m, c_c);
-      if (c_c != 0 && modal_damping_active() && domain.modal_damping_in_tangent)
+      if (modal_damping_in_tangent(c_c))
         {
           const Matrix C = modal_mass_shapes * modal_coefficients.asDiagonal() *
                            modal_mass_shapes.transpose();

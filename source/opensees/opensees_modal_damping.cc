@@ -6,6 +6,12 @@
 //   f_d = -sum_i 2 zeta_i omega_i (M phi_i) (M phi_i)^T v
 // joins the unbalance of a transient step, and c_c times the same matrix
 // its tangent (modalDamping; modalDampingQ leaves the tangent alone).
+// Under HHT, v is the velocity at t + dt (HHT::getVel), not at t + alpha
+// dt, and the matrix stays out of the tangent (HHT has no getCFactor: the
+// base's 0 leaves addModalDampingMatrix empty).
+// M phi_i is formed once per `eigen` (or modalDamping command, or new
+// analysis): a mass changed afterwards leaves it as it was (OpenSees's
+// setupModal runs only when the eigenvalues change).
 // Modes with lambda_i <= 0 or zeta_i = 0 add nothing; modes past the
 // factors, or factors past the modes, none either.
 #include <poundfe/opensees/opensees_analysis.h>
@@ -45,12 +51,27 @@ namespace poundfe
     }
 
     bool
+    Analysis::modal_damping_in_tangent(const double c_c)
+    {
+      return c_c != 0 && !opts.hht && domain.modal_damping_in_tangent && modal_damping_active();
+    }
+
+    bool
     Analysis::modal_damping_active()
     {
       if (!opts.transient || domain.modal_damping.empty())
         return false;
       if (modal_numbered && modal_stamp_seen == domain.modal_stamp)
         return modal_coefficients.size() > 0;
+      std::vector<int> equations;
+      for (const auto &[tag, node] : domain.nodes)
+        equations.insert(equations.end(), node.equation.begin(), node.equation.end());
+      // a mass changed since `eigen` renumbers but keeps M phi, as OpenSees
+      modal_numbered = true;
+      if (modal_stamp_seen == domain.modal_stamp && equations == modal_equations &&
+          modal_mass_shapes.rows() == n_equations)
+        return modal_coefficients.size() > 0;
+      modal_equations = std::move(equations);
       const std::size_t n_modes =
         std::min(domain.modal_damping.size(), domain.modes.eigenvalues.size());
       modal_mass_shapes.setZero(n_equations, n_modes);

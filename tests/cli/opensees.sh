@@ -477,6 +477,9 @@ echo "element zeroLengthSection 1 1 2 1" | bad zls-model \
   "5: element: zeroLengthSection 1: OpenSees's zeroLengthSection takes -ndm 2 -ndf 3 or -ndm 3 -ndf 6 (this model: -ndm 1 -ndf 1)" || exit 1
 printf 'model basic -ndm 2 -ndf 3\nnode 3 0.0 0.0\nnode 4 0.0 0.0\nelement zeroLengthSection 1 3 4 9\n' \
   | bad zls-section "8: element: zeroLengthSection 1: no section with tag 9 exists" || exit 1
+# 2D -orient with x alone: OpenSeesPy's form, refused in Tcl as OpenSees 3.8
+printf 'model basic -ndm 2 -ndf 3\nnode 3 0.0 0.0\nnode 4 0.0 0.0\nelement zeroLengthSection 1 3 4 9 -orient 0 1 0\n' \
+  | bad zls-orient-short "8: element: zeroLengthSection 1: not enough parameters after -orient (x1 x2 x3 yp1 yp2 yp3)" || exit 1
 echo "modalDamping" | bad modal-no-factor "5: modalDamping ?factor - not enough arguments to command" || exit 1
 printf 'uniaxialMaterial Elastic 1 1.0\nelement twoNodeLink 1 1 2 -mat 1 -dir 1 -mass\n' \
   | bad link-mass "6: element: twoNodeLink 1: the end of the line where value 1 of -mass is due (-mass takes 1 value)" || exit 1

@@ -9,7 +9,12 @@
 # every mode of eigen 3), each (modalDamping 0.02 0.05 0.08), fewer
 # (modalDamping 0.03 0.06 with eigen 3: the third mode undamped) or
 # quasi (modalDampingQ 0.05: the force only, not the tangent), and
-# rayleigh (modalDamping 0.03 beside rayleigh 0.2 0 0 0).
+# rayleigh (modalDamping 0.03 beside rayleigh 0.2 0 0 0); hht and
+# hht_quasi: each's and quasi's factors under HHT 0.8 (OpenSees's modal
+# force takes HHT's velocity at t + dt, not at t + alpha dt, and HHT keeps
+# the matrix out of the tangent), with system FullGeneral; mass: each's
+# factors, the roof's mass doubled after 400 steps (OpenSees keeps M phi
+# of the time of `eigen`), with system FullGeneral.
 set out [lindex $argv 0]
 set variant [expr {$argc > 1 ? [lindex $argv 1] : "one"}]
 source [file join [file dirname [info script]] record.tcl]
@@ -44,9 +49,9 @@ set lambda [eigen 3]
 puts "modal damping $variant: periods [lmap l $lambda {expr {2 * 3.14159265358979 / sqrt($l)}}]"
 switch $variant {
     one { modalDamping 0.05 }
-    each { modalDamping 0.02 0.05 0.08 }
+    each - hht - mass { modalDamping 0.02 0.05 0.08 }
     fewer { modalDamping 0.03 0.06 }
-    quasi { modalDampingQ 0.05 }
+    quasi - hht_quasi { modalDampingQ 0.05 }
     rayleigh { modalDamping 0.03; rayleigh 0.2 0.0 0.0 0.0 }
 }
 timeSeries Path 1 -dt 0.01 -values [synthetic_record 0.01 800 1.2]
@@ -57,9 +62,17 @@ recorder Node -file $out/modal_${variant}_reaction.out -time -precision 16 -node
 recorder Element -file $out/modal_${variant}_hinge.out -time -precision 16 -ele 1 force
 constraints Transformation
 numberer Plain
-system BandGeneral
+set hht [string match hht* $variant]
+system [expr {$hht || $variant eq "mass" ? "FullGeneral" : "BandGeneral"}]
 test NormDispIncr 1.0e-10 50
 algorithm Newton
-integrator Newmark 0.5 0.25
+if {$hht} { integrator HHT 0.8 } else { integrator Newmark 0.5 0.25 }
 analysis Transient
-puts "modal damping $variant: status [analyze 800 0.01] roof [nodeDisp 31 1]"
+if {$variant eq "mass"} {
+    analyze 400 0.01
+    mass 31 3.0e4 3.0e4 0.0
+    mass 32 3.0e4 3.0e4 0.0
+    puts "modal damping $variant: status [analyze 400 0.01] roof [nodeDisp 31 1]"
+} else {
+    puts "modal damping $variant: status [analyze 800 0.01] roof [nodeDisp 31 1]"
+}

@@ -111,6 +111,9 @@ namespace poundfe
       bool            variable_time_step = false;
       double          gamma = 0.5, beta = 0.25;       // Newmark
       double          alpha = 1; // HHT's (OpenSees's convention: 1 is Newmark)
+      /// HHT (any alpha): modal damping takes the velocity at t + dt and
+      /// stays out of the tangent (OpenSees 3.8's HHT::getVel, no getCFactor).
+      bool hht = false;
       double          d_lambda = 1, lambda_min = 1, lambda_max = 1; // LoadControl
       double          lambda_iterations = 1;
       /// DisplacementControl (DisplacementControl.cpp) in place of
@@ -356,8 +359,14 @@ namespace poundfe
       Vector       modal_coefficients;
       unsigned int modal_stamp_seen = 0;
       bool         modal_numbered   = false;
+      /// The nodes' equations when M phi was formed: a renumbering that
+      /// keeps them keeps M phi (OpenSees forms it anew only on new modes).
+      std::vector<int> modal_equations;
       /// Whether modal damping acts (its vectors renewed first).
       bool modal_damping_active();
+      /// Whether c_c times the modal damping matrix joins the tangent
+      /// (modalDamping, not Q; not HHT, whose getCFactor is OpenSees's 0).
+      bool modal_damping_in_tangent(double c_c);
       /// The domain's M-normalised modes from the solution of `eigen`.
       void keep_modes(const Matrix &shapes, const std::vector<double> &eigenvalues);
       /// r[e] += c value for the equation's terms (none where fixed or imposed).
