@@ -202,6 +202,9 @@ CASES = {
     # remove element (a yielded link, a spring), node (its anchor), sp (a
     # fixity: the mass then swings) and timeSeries mid-record
     "remove_objects": ("remove_objects.tcl", [], 1e-9),
+    # an elasticBeamColumn (PDelta) and a truss with -rho added on nodes
+    # that have moved: measured from their displacements then
+    "moved_nodes": ("moved_nodes.tcl", [], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

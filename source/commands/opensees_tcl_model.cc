@@ -1453,10 +1453,16 @@ namespace poundfe
     add_lumped_mass(opensees::Domain &d, const int element, const std::array<int, 2> &nodes,
                     const double rho)
     {
-      const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
-      const double L = a.size() == 3 ? std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) :
-                                       std::hypot(b[0] - a[0], b[1] - a[1]);
-      add_node_masses(d, element, nodes, 0.5 * rho * L);
+      // the member's length when it is made, on nodes that may have moved
+      // (the transformations' and Truss's initial displacements)
+      const opensees::Node &i = d.node(nodes[0]), &j = d.node(nodes[1]);
+      double                L2 = 0;
+      for (unsigned int k = 0; k < std::min(i.coordinates.size(), j.coordinates.size()); ++k)
+        {
+          const double moved = k < std::min(i.disp.size(), j.disp.size()) ? j.disp[k] - i.disp[k] : 0;
+          L2 += std::pow(j.coordinates[k] - i.coordinates[k] + moved, 2);
+        }
+      add_node_masses(d, element, nodes, 0.5 * rho * std::sqrt(L2));
       // a member's getResistingForce subtracts its inertia load (rho != 0):
       // the reactions take it
       for (auto &m : d.lumped_masses)

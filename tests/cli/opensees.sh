@@ -452,6 +452,54 @@ printf '%s\nanalysis VariableTransient\nanalyze 10 0.01 0.0 0.02 3\n' "$transien
   "9: analyze: dtMin must be > 0 and dtMax >= dtMin" || exit 1
 printf '%s\nanalysis VariableTransient\nanalyze 10 0.01 0.001 0.02 0\n' "$transient" | bad variable-jd \
   "9: analyze: Jd must be >= 1" || exit 1
+# a first step longer than dtMax that fails is tried again at dtMax (determineDt
+# clips before the step is compared with the failed one): the steps of 0.01 go
+# on until the spring yields, where Jd 3 over 3 iterations no longer shortens them
+mkdir -p "$work/variable-clip"
+cat > "$work/variable-clip/s.tcl" <<'TCL'
+model basic -ndm 1 -ndf 1
+node 1 0.0
+node 2 0.0 -mass 1.0
+fix 1 1
+uniaxialMaterial Steel01 1 1.0 100.0 0.1
+element zeroLength 1 1 2 -mat 1 -dir 1
+timeSeries Linear 1
+pattern Plain 1 1 { load 2 2.0 }
+test NormDispIncr 1e-12 2
+algorithm Newton
+integrator Newmark 0.5 0.25
+analysis VariableTransient
+puts "analyze [analyze 1 2.0 0.0001 0.01 3] time [format %.2f [getTime]]"
+TCL
+"$poundfe" opensees "$work/variable-clip/s.tcl" > "$work/variable-clip/out" 2>&1
+grep -qxF "analyze -3 time 0.41" "$work/variable-clip/out" \
+  && grep -qF "the step of 0.01 to time 0.42 failed" "$work/variable-clip/out" \
+  || { cat "$work/variable-clip/out"; fail "variable-clip: the failed first step is not tried at dtMax"; }
+# a beam-column on nodes that have moved, where poundfe does not yet measure
+# it from their displacements then, is refused by name
+for kind in "forceBeamColumn 2 2 3 3 1 1" "dispBeamColumn 2 2 3 3 1 1" \
+  "elasticBeamColumn 2 2 3 0.1 2e8 1e-3 2"; do
+  mkdir -p "$work/moved"
+  cat > "$work/moved/s.tcl" <<TCL
+model basic -ndm 2 -ndf 3
+node 1 0 0
+node 2 0 3
+fix 1 1 1 1
+geomTransf Linear 1
+geomTransf Corotational 2
+element elasticBeamColumn 1 1 2 0.1 2e8 1e-3 1
+section Elastic 1 2e8 0.1 1e-3
+pattern Plain 1 Linear { load 2 1.0 0 0 }
+integrator LoadControl 1.0
+analysis Static
+analyze 1
+node 3 3 3
+element $kind
+TCL
+  "$poundfe" opensees "$work/moved/s.tcl" > "$work/moved/out" 2> "$work/moved/err"
+  [ $? = 1 ] && grep -qE "^poundfe: error: $work/moved/s.tcl:14: .* 2: node 2 has moved; poundfe cannot yet measure this element" \
+    "$work/moved/err" || { cat "$work/moved/err"; fail "moved: $kind is not refused"; }
+done
 printf 'test NormDispIncr 1e-8 10\nalgorithm Newton\nintegrator HHT 0.8\nanalysis Transient\nreset\n' \
   | bad reset-hht "9: reset with integrator HHT: poundfe does not support it" || exit 1
 # an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused
