@@ -796,6 +796,7 @@ namespace poundfe
       struct PathOptions
       {
         std::vector<double> times; // -time or -fileTime
+        bool times_from_file = false, values_from_file = false; // -fileTime, -filePath
         bool                use_last = false, prepend_zero = false;
         double              start_time = 0;
       };
@@ -820,6 +821,9 @@ namespace poundfe
           }
         if (path.times.empty())
           throw ScriptError("a Path series needs -dt > 0, -time or -fileTime");
+        if (path.times_from_file != path.values_from_file) // OPS_PathSeries's choices
+          throw ScriptError("a Path series takes -time with -values or -fileTime with -filePath "
+                            "(OpenSees 3.8: choice of options for path series is invalid)");
         if (path.times.size() != series.values.size())
           throw ScriptError("a Path series has " + std::to_string(path.times.size()) +
                             " times and " + std::to_string(series.values.size()) +
@@ -866,13 +870,15 @@ namespace poundfe
             else if (series->kind == Kind::path && option == "-dt")
               series->dt = w.real("-dt");
             else if (series->kind == Kind::path && option == "-values")
-              series->values = number_list(w, "-values");
+              series->values = number_list(w, "-values"), path.values_from_file = false;
             else if (series->kind == Kind::path && option == "-time")
-              path.times = number_list(w, "-time");
+              path.times = number_list(w, "-time"), path.times_from_file = false;
             else if (series->kind == Kind::path && option == "-filePath")
-              series->values = read_path_file(w.word("the file"), warnings);
+              series->values          = read_path_file(w.word("the file"), warnings),
+              path.values_from_file   = true;
             else if (series->kind == Kind::path && option == "-fileTime")
-              path.times = read_path_file(w.word("the file"), warnings);
+              path.times = read_path_file(w.word("the file"), warnings),
+              path.times_from_file = true;
             else if (series->kind == Kind::path && option == "-useLast")
               path.use_last = true;
             else if (series->kind == Kind::path && option == "-prependZero")

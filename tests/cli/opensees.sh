@@ -427,7 +427,14 @@ printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1\n
   | bad remove-node-of-element "7: remove: node 1 is a node of element 1" || exit 1
 echo "remove node 2" | bad remove-recorded-node \
   "5: remove: node 2 is recorded by recorder 0 (remove the recorder first)" || exit 1
-printf 'fix 1 1\nremove sp 1 2\n' | bad remove-sp-dof "6: remove: node 1 has no DOF 2" || exit 1
+# remove sp of a node or DOF that does not exist removes nothing, as OpenSees's
+# removeSP_Constraint: node 1 stays fixed and the spring carries the load
+mkdir -p "$work/remove-sp-missing"
+printf 'model basic -ndm 1 -ndf 1\nnode 1 0.0\nnode 2 0.0\nfix 1 1\nuniaxialMaterial Elastic 1 4.0
+element zeroLength 1 1 2 -mat 1 -dir 1\nremove sp 99 1\nremove sp 1 2\npattern Plain 1 Linear { load 2 2.0 }
+analysis Static\nanalyze 1\nputs "disp [nodeDisp 2 1]"\n' > "$work/remove-sp-missing/s.tcl"
+"$poundfe" opensees "$work/remove-sp-missing/s.tcl" 2>&1 | grep -qxF "disp 0.5" \
+  || { "$poundfe" opensees "$work/remove-sp-missing/s.tcl"; fail "remove sp of a missing node or DOF"; }
 printf 'fix 1 1\nremove sp 1 1 3\n' | bad remove-sp-pattern \
   "6: remove sp node dof patternTag (OpenSees 3.8 leaves a pattern's sp in place): poundfe does not support it" || exit 1
 # reset, reactions, Path of times, VariableTransient's analyze
@@ -442,6 +449,32 @@ echo "timeSeries Path 1 -dt 0.1 -time {0 1} -values {0 1}" | bad path-dt-and-tim
   "5: timeSeries: a Path series takes -dt or -time (-fileTime), not both" || exit 1
 echo "timeSeries Path 1 -fileTime $work/none.txt -filePath $work/none.txt" | bad path-file-time \
   "5: timeSeries: the file '$work/none.txt' cannot be read" || exit 1
+# reactions with two options computes the static reactions, as OpenSees's
+# calculateNodalReactions (it reads an option only when it is the one word)
+mkdir -p "$work/reactions-two"
+cat > "$work/reactions-two/s.tcl" <<'TCL'
+model basic -ndm 1 -ndf 1
+node 1 0.0
+node 2 0.0 -mass 1.0
+fix 1 1
+uniaxialMaterial Elastic 1 40.0 0.5
+element zeroLength 1 1 2 -mat 1 -dir 1 -doRayleigh 1
+timeSeries Path 1 -dt 0.01 -values {0 1 2 1 0 -1 -2}
+pattern UniformExcitation 1 1 -accel 1
+rayleigh 0.1 0.0 0.0 0.0
+integrator Newmark 0.5 0.25
+analysis Transient
+analyze 5 0.01
+foreach flag {{} -dynamic {-dynamic -rayleigh}} { reactions {*}$flag; puts "r$flag [nodeReaction 2 1]" }
+TCL
+"$poundfe" opensees "$work/reactions-two/s.tcl" > "$work/reactions-two/out" 2>&1
+static=$(sed -n 's/^r \(.*\)/\1/p' "$work/reactions-two/out")
+[ -n "$static" ] && grep -qxF "r-dynamic -rayleigh $static" "$work/reactions-two/out" \
+  && ! grep -qxF "r-dynamic $static" "$work/reactions-two/out" \
+  || { cat "$work/reactions-two/out"; fail "reactions -dynamic -rayleigh"; }
+printf '0.0\n1.0\n' > "$work/path-times.txt"
+echo "timeSeries Path 1 -fileTime $work/path-times.txt -values {0 1}" | bad path-file-time-values \
+  "5: timeSeries: a Path series takes -time with -values or -fileTime with -filePath (OpenSees 3.8: choice of options for path series is invalid)" || exit 1
 echo "timeSeries Path 1 -time {0 1}" | bad path-no-values "5: timeSeries: a Path series needs -values or -filePath" || exit 1
 transient="test NormDispIncr 1e-8 10
 algorithm Newton
