@@ -246,6 +246,9 @@ CASES = {
     # history and reactions (measured 3.2e-14), a yielding tripod (9.6e-13)
     "cmass_truss": ("consistent_mass.tcl", ["truss"], 1e-9),
     "cmass_corot": ("consistent_mass.tcl", ["corot"], 1e-9),
+    # an elasticBeamColumn (PDelta) and a truss with -rho added on nodes
+    # that have moved: measured from their displacements then
+    "moved_nodes": ("moved_nodes.tcl", [], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

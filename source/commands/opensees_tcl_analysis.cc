@@ -561,13 +561,21 @@ namespace poundfe
 
       /// reactions <-dynamic|-rayleigh> (OpenSees's calculateNodalReactions:
       /// -incInertia, -dynamical, -Dynamic and -dynamic include the inertia
-      /// and damping forces, -rayleigh gives the Rayleigh damping forces alone).
+      /// and damping forces, -rayleigh gives the Rayleigh damping forces alone;
+      /// with more than one word the static reactions).
       void
       reactions(Session &s, Words &w)
       {
         using Flag = opensees::Domain::ReactionFlag;
         Flag flag  = Flag::resisting;
-        if (!w.done())
+        if (w.left() > 1) // OpenSees reads an option only when it is the one word
+          {
+            s.warnings << "WARNING reactions: " << w.left()
+                       << " options given; the static reactions computed, as OpenSees 3.8\n";
+            while (!w.done())
+              w.word("an option");
+          }
+        else if (!w.done())
           {
             const std::string option = w.word("the option");
             if (option == "-incInertia" || option == "-dynamical" || option == "-Dynamic" ||

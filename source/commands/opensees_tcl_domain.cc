@@ -56,10 +56,12 @@ namespace poundfe
         const int dof  = w.integer("the DOF");
         if (!w.done())
           unsupported("remove sp node dof patternTag (OpenSees 3.8 leaves a pattern's sp in place)");
-        opensees::Node &n = s.domain.node(node);
-        if (dof < 1 || dof > static_cast<int>(n.fixed.size()))
-          throw ScriptError("node " + std::to_string(node) + " has no DOF " + std::to_string(dof));
-        n.fixed[dof - 1] = false;
+        // a node or DOF that does not exist: nothing to remove, as OpenSees's
+        const auto n = s.domain.nodes.find(node);
+        if (n == s.domain.nodes.end() || dof < 1 ||
+            dof > static_cast<int>(n->second.fixed.size()))
+          return;
+        n->second.fixed[dof - 1] = false;
         s.domain.changed = true;
       }
     } // namespace

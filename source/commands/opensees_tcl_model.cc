@@ -926,6 +926,7 @@ namespace poundfe
       struct PathOptions
       {
         std::vector<double> times; // -time or -fileTime
+        bool times_from_file = false, values_from_file = false; // -fileTime, -filePath
         bool                use_last = false, prepend_zero = false;
         double              start_time = 0;
       };
@@ -950,6 +951,9 @@ namespace poundfe
           }
         if (path.times.empty())
           throw ScriptError("a Path series needs -dt > 0, -time or -fileTime");
+        if (path.times_from_file != path.values_from_file) // OPS_PathSeries's choices
+          throw ScriptError("a Path series takes -time with -values or -fileTime with -filePath "
+                            "(OpenSees 3.8: choice of options for path series is invalid)");
         if (path.times.size() != series.values.size())
           throw ScriptError("a Path series has " + std::to_string(path.times.size()) +
                             " times and " + std::to_string(series.values.size()) +
@@ -996,13 +1000,15 @@ namespace poundfe
             else if (series->kind == Kind::path && option == "-dt")
               series->dt = w.real("-dt");
             else if (series->kind == Kind::path && option == "-values")
-              series->values = number_list(w, "-values");
+              series->values = number_list(w, "-values"), path.values_from_file = false;
             else if (series->kind == Kind::path && option == "-time")
-              path.times = number_list(w, "-time");
+              path.times = number_list(w, "-time"), path.times_from_file = false;
             else if (series->kind == Kind::path && option == "-filePath")
-              series->values = read_path_file(w.word("the file"), warnings);
+              series->values          = read_path_file(w.word("the file"), warnings),
+              path.values_from_file   = true;
             else if (series->kind == Kind::path && option == "-fileTime")
-              path.times = read_path_file(w.word("the file"), warnings);
+              path.times = read_path_file(w.word("the file"), warnings),
+              path.times_from_file = true;
             else if (series->kind == Kind::path && option == "-useLast")
               path.use_last = true;
             else if (series->kind == Kind::path && option == "-prependZero")
@@ -1583,10 +1589,16 @@ namespace poundfe
     add_lumped_mass(opensees::Domain &d, const int element, const std::array<int, 2> &nodes,
                     const double rho)
     {
-      const auto  &a = d.node(nodes[0]).coordinates, &b = d.node(nodes[1]).coordinates;
-      const double L = a.size() == 3 ? std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) :
-                                       std::hypot(b[0] - a[0], b[1] - a[1]);
-      add_node_masses(d, element, nodes, 0.5 * rho * L);
+      // the member's length when it is made, on nodes that may have moved
+      // (the transformations' and Truss's initial displacements)
+      const opensees::Node &i = d.node(nodes[0]), &j = d.node(nodes[1]);
+      double                L2 = 0;
+      for (unsigned int k = 0; k < std::min(i.coordinates.size(), j.coordinates.size()); ++k)
+        {
+          const double moved = k < std::min(i.disp.size(), j.disp.size()) ? j.disp[k] - i.disp[k] : 0;
+          L2 += std::pow(j.coordinates[k] - i.coordinates[k] + moved, 2);
+        }
+      add_node_masses(d, element, nodes, 0.5 * rho * std::sqrt(L2));
       // a member's getResistingForce subtracts its inertia load (rho != 0):
       // the reactions take it
       for (auto &m : d.lumped_masses)

@@ -1401,7 +1401,7 @@ namespace poundfe
           const double iterations =
             opts.algorithm == AnalysisOptions::Algorithm::linear ? 1.0 : test_iterations;
           const double failed = why.empty() ? 0.0 : dt;
-          dt *= v.jd / iterations;
+          dt = std::min(dt * v.jd / iterations, v.dt_max); // clipped first, as determineDt
           if (failed > 0 && !(dt < failed)) // OpenSees would try the same step for ever
             {
               std::ostringstream text;
@@ -1412,8 +1412,6 @@ namespace poundfe
             }
           if (dt < v.dt_min)
             dt = v.dt_min - std::numeric_limits<double>::epsilon();
-          else if (dt > v.dt_max)
-            dt = v.dt_max;
         }
       return 0;
     }

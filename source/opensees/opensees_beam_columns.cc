@@ -324,11 +324,21 @@ namespace poundfe
       }
     } // namespace
 
+    namespace
+    {
+      std::string
+      beam_column_name(const BeamColumnKind kind)
+      {
+        return kind == BeamColumnKind::displacement_based ? "dispBeamColumn" : "forceBeamColumn";
+      }
+    } // namespace
+
     std::unique_ptr<Element>
     make_beam_column_2d(const Domain &domain, const int tag, const std::array<int, 2> nodes,
                         const BeamColumnKind kind, const Transformation transformation,
                         const IntegrationSpec &integration, const OpenSeesIteration &iteration)
     {
+      refuse_on_moved_nodes(domain, beam_column_name(kind), tag, nodes);
       const CrdTransformation<2> transf = transformation_of(domain, nodes, transformation, tag);
       std::unique_ptr<BeamColumn<2>> beam =
         make_member<2>(domain, transf, kind, integration, iteration);
@@ -349,6 +359,7 @@ namespace poundfe
       if (transformation == Transformation::corotational)
         throw ScriptError("element " + std::to_string(tag) +
                           ": a Corotational transformation in 3D: poundfe does not support it");
+      refuse_on_moved_nodes(domain, beam_column_name(kind), tag, nodes);
       const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
       const Eigen::Vector3d i(a[0], a[1], a[2]), j(b[0], b[1], b[2]);
       if (i == j)

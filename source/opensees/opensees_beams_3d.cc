@@ -157,6 +157,7 @@ namespace poundfe
         throw ScriptError("element " + std::to_string(tag) +
                           ": elasticBeamColumn on a Corotational transformation in 3D: poundfe "
                           "does not support it");
+      refuse_on_moved_nodes(domain, "elasticBeamColumn (3D)", tag, nodes);
       return std::make_unique<ElasticBeam3d>(domain, tag, nodes, section,
                                              transformation == Transformation::pdelta, vecxz);
     }

@@ -65,8 +65,18 @@ namespace poundfe
           : Element(tag, {nodes[0], nodes[1]})
           , p_delta(p_delta)
         {
-          const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
-          const double dx = b[0] - a[0], dy = b[1] - a[1];
+          // made on nodes that have moved: along and as long as the member
+          // is then, its displacements measured from then
+          // (LinearCrdTransf2d::initialize's nodeIInitialDisp, nodeJInitialDisp)
+          const Node &i = domain.node(nodes[0]), &j = domain.node(nodes[1]);
+          u_at_creation.setZero(6);
+          for (unsigned int k = 0; k < std::min({std::size_t(3), i.disp.size(), j.disp.size()}); ++k)
+            {
+              u_at_creation[k]     = i.disp[k];
+              u_at_creation[3 + k] = j.disp[k];
+            }
+          const double dx = j.coordinates[0] - i.coordinates[0] + u_at_creation[3] - u_at_creation[0];
+          const double dy = j.coordinates[1] - i.coordinates[1] + u_at_creation[4] - u_at_creation[1];
           L               = std::hypot(dx, dy);
           if (!(L > 0))
             throw ScriptError("element " + std::to_string(tag) + " has zero length");
@@ -92,7 +102,7 @@ namespace poundfe
         bool
         set_trial(const Vector &u, const Vector &) override
         {
-          ul = R * u;
+          ul = R * (u - u_at_creation);
           q  = kb * (B * ul);
           return q.allFinite();
         }
@@ -178,7 +188,7 @@ namespace poundfe
         double                 L = 0;
         Matrix                 R, B;
         Eigen::Matrix3d        kb;
-        Vector                 ul;
+        Vector                 ul, u_at_creation;
         Eigen::Vector3d        q;
         Eigen::Vector3d        q0, p0; // element loads: basic fixed-end forces, reactions
       };
@@ -861,9 +871,26 @@ namespace poundfe
                          const Transformation transformation)
     {
       if (transformation == Transformation::corotational)
-        return make_elastic_corotational_2d(domain, tag, nodes, A, E, I);
+        {
+          refuse_on_moved_nodes(domain, "elasticBeamColumn with a Corotational geomTransf", tag,
+                                nodes);
+          return make_elastic_corotational_2d(domain, tag, nodes, A, E, I);
+        }
       return std::make_unique<ElasticBeam2d>(domain, tag, nodes, A, E, I,
                                              transformation == Transformation::pdelta);
+    }
+
+    void
+    refuse_on_moved_nodes(const Domain &domain, const std::string &element, const int tag,
+                          const std::array<int, 2> &nodes)
+    {
+      for (const int n : nodes)
+        for (const double u : domain.node(n).disp)
+          if (u != 0.0)
+            throw ScriptError(element + " " + std::to_string(tag) + ": node " +
+                              std::to_string(n) +
+                              " has moved; poundfe cannot yet measure this element from the "
+                              "nodes' displacements when it is made, as OpenSees does");
     }
 
     std::unique_ptr<Element>

@@ -427,7 +427,14 @@ printf 'uniaxialMaterial Elastic 1 1.0\nelement zeroLength 1 1 2 -mat 1 -dir 1\n
   | bad remove-node-of-element "7: remove: node 1 is a node of element 1" || exit 1
 echo "remove node 2" | bad remove-recorded-node \
   "5: remove: node 2 is recorded by recorder 0 (remove the recorder first)" || exit 1
-printf 'fix 1 1\nremove sp 1 2\n' | bad remove-sp-dof "6: remove: node 1 has no DOF 2" || exit 1
+# remove sp of a node or DOF that does not exist removes nothing, as OpenSees's
+# removeSP_Constraint: node 1 stays fixed and the spring carries the load
+mkdir -p "$work/remove-sp-missing"
+printf 'model basic -ndm 1 -ndf 1\nnode 1 0.0\nnode 2 0.0\nfix 1 1\nuniaxialMaterial Elastic 1 4.0
+element zeroLength 1 1 2 -mat 1 -dir 1\nremove sp 99 1\nremove sp 1 2\npattern Plain 1 Linear { load 2 2.0 }
+analysis Static\nanalyze 1\nputs "disp [nodeDisp 2 1]"\n' > "$work/remove-sp-missing/s.tcl"
+"$poundfe" opensees "$work/remove-sp-missing/s.tcl" 2>&1 | grep -qxF "disp 0.5" \
+  || { "$poundfe" opensees "$work/remove-sp-missing/s.tcl"; fail "remove sp of a missing node or DOF"; }
 printf 'fix 1 1\nremove sp 1 1 3\n' | bad remove-sp-pattern \
   "6: remove sp node dof patternTag (OpenSees 3.8 leaves a pattern's sp in place): poundfe does not support it" || exit 1
 # reset, reactions, Path of times, VariableTransient's analyze
@@ -442,6 +449,32 @@ echo "timeSeries Path 1 -dt 0.1 -time {0 1} -values {0 1}" | bad path-dt-and-tim
   "5: timeSeries: a Path series takes -dt or -time (-fileTime), not both" || exit 1
 echo "timeSeries Path 1 -fileTime $work/none.txt -filePath $work/none.txt" | bad path-file-time \
   "5: timeSeries: the file '$work/none.txt' cannot be read" || exit 1
+# reactions with two options computes the static reactions, as OpenSees's
+# calculateNodalReactions (it reads an option only when it is the one word)
+mkdir -p "$work/reactions-two"
+cat > "$work/reactions-two/s.tcl" <<'TCL'
+model basic -ndm 1 -ndf 1
+node 1 0.0
+node 2 0.0 -mass 1.0
+fix 1 1
+uniaxialMaterial Elastic 1 40.0 0.5
+element zeroLength 1 1 2 -mat 1 -dir 1 -doRayleigh 1
+timeSeries Path 1 -dt 0.01 -values {0 1 2 1 0 -1 -2}
+pattern UniformExcitation 1 1 -accel 1
+rayleigh 0.1 0.0 0.0 0.0
+integrator Newmark 0.5 0.25
+analysis Transient
+analyze 5 0.01
+foreach flag {{} -dynamic {-dynamic -rayleigh}} { reactions {*}$flag; puts "r$flag [nodeReaction 2 1]" }
+TCL
+"$poundfe" opensees "$work/reactions-two/s.tcl" > "$work/reactions-two/out" 2>&1
+static=$(sed -n 's/^r \(.*\)/\1/p' "$work/reactions-two/out")
+[ -n "$static" ] && grep -qxF "r-dynamic -rayleigh $static" "$work/reactions-two/out" \
+  && ! grep -qxF "r-dynamic $static" "$work/reactions-two/out" \
+  || { cat "$work/reactions-two/out"; fail "reactions -dynamic -rayleigh"; }
+printf '0.0\n1.0\n' > "$work/path-times.txt"
+echo "timeSeries Path 1 -fileTime $work/path-times.txt -values {0 1}" | bad path-file-time-values \
+  "5: timeSeries: a Path series takes -time with -values or -fileTime with -filePath (OpenSees 3.8: choice of options for path series is invalid)" || exit 1
 echo "timeSeries Path 1 -time {0 1}" | bad path-no-values "5: timeSeries: a Path series needs -values or -filePath" || exit 1
 transient="test NormDispIncr 1e-8 10
 algorithm Newton
@@ -452,6 +485,54 @@ printf '%s\nanalysis VariableTransient\nanalyze 10 0.01 0.0 0.02 3\n' "$transien
   "9: analyze: dtMin must be > 0 and dtMax >= dtMin" || exit 1
 printf '%s\nanalysis VariableTransient\nanalyze 10 0.01 0.001 0.02 0\n' "$transient" | bad variable-jd \
   "9: analyze: Jd must be >= 1" || exit 1
+# a first step longer than dtMax that fails is tried again at dtMax (determineDt
+# clips before the step is compared with the failed one): the steps of 0.01 go
+# on until the spring yields, where Jd 3 over 3 iterations no longer shortens them
+mkdir -p "$work/variable-clip"
+cat > "$work/variable-clip/s.tcl" <<'TCL'
+model basic -ndm 1 -ndf 1
+node 1 0.0
+node 2 0.0 -mass 1.0
+fix 1 1
+uniaxialMaterial Steel01 1 1.0 100.0 0.1
+element zeroLength 1 1 2 -mat 1 -dir 1
+timeSeries Linear 1
+pattern Plain 1 1 { load 2 2.0 }
+test NormDispIncr 1e-12 2
+algorithm Newton
+integrator Newmark 0.5 0.25
+analysis VariableTransient
+puts "analyze [analyze 1 2.0 0.0001 0.01 3] time [format %.2f [getTime]]"
+TCL
+"$poundfe" opensees "$work/variable-clip/s.tcl" > "$work/variable-clip/out" 2>&1
+grep -qxF "analyze -3 time 0.41" "$work/variable-clip/out" \
+  && grep -qF "the step of 0.01 to time 0.42 failed" "$work/variable-clip/out" \
+  || { cat "$work/variable-clip/out"; fail "variable-clip: the failed first step is not tried at dtMax"; }
+# a beam-column on nodes that have moved, where poundfe does not yet measure
+# it from their displacements then, is refused by name
+for kind in "forceBeamColumn 2 2 3 3 1 1" "dispBeamColumn 2 2 3 3 1 1" \
+  "elasticBeamColumn 2 2 3 0.1 2e8 1e-3 2"; do
+  mkdir -p "$work/moved"
+  cat > "$work/moved/s.tcl" <<TCL
+model basic -ndm 2 -ndf 3
+node 1 0 0
+node 2 0 3
+fix 1 1 1 1
+geomTransf Linear 1
+geomTransf Corotational 2
+element elasticBeamColumn 1 1 2 0.1 2e8 1e-3 1
+section Elastic 1 2e8 0.1 1e-3
+pattern Plain 1 Linear { load 2 1.0 0 0 }
+integrator LoadControl 1.0
+analysis Static
+analyze 1
+node 3 3 3
+element $kind
+TCL
+  "$poundfe" opensees "$work/moved/s.tcl" > "$work/moved/out" 2> "$work/moved/err"
+  [ $? = 1 ] && grep -qE "^poundfe: error: $work/moved/s.tcl:14: .* 2: node 2 has moved; poundfe cannot yet measure this element" \
+    "$work/moved/err" || { cat "$work/moved/err"; fail "moved: $kind is not refused"; }
+done
 printf 'test NormDispIncr 1e-8 10\nalgorithm Newton\nintegrator HHT 0.8\nanalysis Transient\nreset\n' \
   | bad reset-hht "9: reset with integrator HHT: poundfe does not support it" || exit 1
 # an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused

@@ -441,7 +441,16 @@ namespace poundfe
     /// OpenSees copies a material into every element that names it).
     std::unique_ptr<UniaxialLaw> make_domain_material(const Domain &domain, int tag);
 
-    /// elasticBeamColumn in 2D with a Linear or PDelta transformation.
+    /// Refuses `element` (its kind, for the message) made on nodes that
+    /// have moved: OpenSees measures its transformation from the nodes'
+    /// displacements then (nodeIInitialDisp, nodeJInitialDisp), which
+    /// poundfe does for the 2D elasticBeamColumn on a Linear or PDelta
+    /// transformation, a truss and a zeroLength only.
+    void refuse_on_moved_nodes(const Domain &domain, const std::string &element, int tag,
+                               const std::array<int, 2> &nodes);
+
+    /// elasticBeamColumn in 2D with a Linear or PDelta transformation,
+    /// measured from the nodes' displacements when it is made.
     std::unique_ptr<Element> make_elastic_beam_2d(const Domain &domain, int tag,
                                                   std::array<int, 2> nodes, double A, double E,
                                                   double I, Transformation transformation);
