@@ -209,6 +209,42 @@ namespace poundfe
       result.warnings             = range.warnings();
       return result;
     }
+
+    /// A warning per massless equation (no mass in its row: a frame's joint
+    /// rotation) given a displacement or velocity at t = 0 that the Newmark
+    /// start replaces by the equilibrium's (integration/massless_start.cc).
+    std::vector<std::string>
+    replaced_initial_values(const Analysis &analysis, const TimeHistoryParameters &parameters)
+    {
+      const InitialConditionParameters &given = parameters.initial_conditions;
+      if (given.at_rest() || parameters.time_integration.method == TimeIntegrationMethod::dopri ||
+          parameters.time_integration.contact_model == ContactModel::nonsmooth)
+        return {};
+      const InitialState state = initial_state(given, analysis.model, parameters.input);
+      const SparseMatrix &mass = analysis.system.mass;
+      std::vector<bool>   massive(mass.rows(), false);
+      for (int column = 0; column < mass.outerSize(); ++column)
+        for (SparseMatrix::InnerIterator it(mass, column); it; ++it)
+          if (it.value() != 0)
+            massive[it.row()] = true;
+      const std::vector<std::string> names = equation_names(analysis.model);
+      std::string                    replaced;
+      unsigned int                   n_replaced = 0;
+      for (unsigned int i = 0; i < massive.size(); ++i)
+        if (!massive[i] && (state.displacement[i] != 0 || state.velocity[i] != 0) &&
+            n_replaced++ < 3)
+          replaced += (replaced.empty() ? "" : ", ") + std::to_string(i) + " (" + names[i] + ")";
+      if (n_replaced > 3)
+        replaced += " and " + std::to_string(n_replaced - 3) + " more";
+      std::vector<std::string> warnings;
+      if (n_replaced > 0)
+        warnings.push_back("Initial conditions: equation" + std::string(n_replaced > 1 ? "s " : " ") +
+                           replaced + " carr" + (n_replaced > 1 ? "y" : "ies") +
+                           " no mass: the displacement and velocity given are replaced by "
+                           "those in equilibrium with the massive equations (a massless "
+                           "equation has no state of its own)");
+      return warnings;
+    }
   } // namespace
 
   RunResult
@@ -222,7 +258,10 @@ namespace poundfe
                                       history.linear_solver_name(), history.tangent_update(),
                                       options);
     const RunStatus status = history.run(excitation, observers.all(), options.interruptible);
-    return observers.result(status, history.state());
+    RunResult       result = observers.result(status, history.state());
+    for (std::string &warning : replaced_initial_values(analysis, parameters.time_history))
+      result.warnings.push_back(std::move(warning));
+    return result;
   }
 
   RunResult

@@ -377,10 +377,11 @@ namespace poundfe
       const std::pair<double, double> capacity = axial_capacity(section);
       if (force < margin * capacity.first || force > margin * capacity.second)
         input.fail("Moment curvature/Axial force",
-                   "must lie within " + number_text(margin) + " x the section's capacity, [" +
-                     number_text(margin * capacity.first) + ", " +
+                   "must lie within [" + number_text(margin * capacity.first) + ", " +
                      number_text(margin * capacity.second) +
-                     "] N (its squash and tension forces, tension positive), got " +
+                     "] N, twice the section's capacity (its squash force " +
+                     number_text(capacity.first) + " N and tension force " +
+                     number_text(capacity.second) + " N, tension positive), got " +
                      number_text(force));
     }
   } // namespace
