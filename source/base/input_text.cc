@@ -307,42 +307,24 @@ namespace poundfe
     return prm;
   }
 
-  void
-  check_json_structure(const std::string &file, const std::string &text,
-                       const std::string &parameter)
+  namespace
   {
-    /// An open object or array: its closing bracket, an object's keys (key -> line).
-    struct Level
+    /// The brackets and keys of a JSON text outside its strings, scanned
+    /// character by character by check_json_structure().
+    class JsonStructureScan
     {
-      char                       close;
-      std::map<std::string, int> keys;
-    };
-    int                line      = 1;
-    bool               in_string = false, escaped = false;
-    std::size_t        string_start = 0;
-    std::string        last_string; // a key if ':' follows it
-    std::vector<Level> open;
-    for (std::size_t i = 0; i < text.size(); ++i)
+    public:
+      JsonStructureScan(const std::string &file, const std::string &parameter)
+        : file(file)
+        , parameter(parameter)
+      {}
+
+      /// A character outside the strings at `line`; `last_string` is the
+      /// string before it (a key if `c` is ':').
+      void
+      take(const char c, const int line, const std::string &last_string)
       {
-        const char c = text[i];
-        if (c == '\n')
-          ++line;
-        if (in_string)
-          {
-            if (escaped)
-              escaped = false;
-            else if (c == '\\')
-              escaped = true;
-            else if (c == '"')
-              {
-                in_string   = false;
-                last_string = text.substr(string_start, i - string_start);
-              }
-            continue;
-          }
-        if (c == '"')
-          in_string = true, string_start = i + 1;
-        else if (c == ':' && !open.empty() && open.back().close == '}')
+        if (c == ':' && !open.empty() && open.back().close == '}')
           {
             // a key given twice: boost's reader keeps both, readers take one
             const auto [first, is_new] = open.back().keys.emplace(last_string, line);
@@ -367,7 +349,60 @@ namespace poundfe
             open.pop_back();
           }
       }
-    if (in_string || !open.empty())
+
+      /// Whether an object or an array is still open.
+      bool
+      inside() const
+      {
+        return !open.empty();
+      }
+
+    private:
+      /// An open object or array: its closing bracket, an object's keys (key -> line).
+      struct Level
+      {
+        char                       close;
+        std::map<std::string, int> keys;
+      };
+      const std::string &file;
+      const std::string &parameter;
+      std::vector<Level> open;
+    };
+  } // namespace
+
+  void
+  check_json_structure(const std::string &file, const std::string &text,
+                       const std::string &parameter)
+  {
+    int               line      = 1;
+    bool              in_string = false, escaped = false;
+    std::size_t       string_start = 0;
+    std::string       last_string; // a key if ':' follows it
+    JsonStructureScan scan(file, parameter);
+    for (std::size_t i = 0; i < text.size(); ++i)
+      {
+        const char c = text[i];
+        if (c == '\n')
+          ++line;
+        if (in_string)
+          {
+            if (escaped)
+              escaped = false;
+            else if (c == '\\')
+              escaped = true;
+            else if (c == '"')
+              {
+                in_string   = false;
+                last_string = text.substr(string_start, i - string_start);
+              }
+            continue;
+          }
+        if (c == '"')
+          in_string = true, string_start = i + 1;
+        else
+          scan.take(c, line, last_string);
+      }
+    if (in_string || scan.inside())
       throw InputError(file, line, parameter,
                        "the file ends inside a string or an open '{' or '['");
   }

@@ -225,6 +225,38 @@ namespace poundfe::commands
                            fit.note)
           << "\n";
     }
+
+    /// ida.csv, the journal's files (held in memory: what journal/ would
+    /// hold), ida_records.csv, ida_fractiles.csv and collapse_fragility.csv;
+    /// returns the collapse fragility fitted.
+    CollapseFragility
+    write_ida_tables(const CommandRun &run, const Analysis &analysis, const IdaRunner &runner,
+                     const IdaResult &result)
+    {
+      const IdaParameters &ida   = run.input->ida;
+      const double         upper = ida.upper_intensity;
+      write_runs(run, runner, result);
+      for (const auto &[name, text] : result.journals)
+        write_result_text(run.memory, run.directory, "journal/" + name, text);
+      const std::vector<double> &periods = runner.measure_periods();
+      const double first = analysis.modes.omega.empty() ? 1.0 : 2 * M_PI / analysis.modes.omega[0];
+      write_records(run, runner, ida.measure == IntensityMeasure::sa ? periods[0] : first,
+                    ida.damping_ratio);
+      write_fractiles(run, runner, result, upper);
+      return write_fragility(run, result, upper);
+    }
+
+    /// The runs done, their rate and the files written, on the terminal.
+    void
+    print_ida_runs(const dealii::ConditionalOStream &out, const CommandRun &run,
+                   const IdaResult &result, const bool demand_tables, const bool draws)
+    {
+      out << result.n_runs << " runs (" << result.n_run_now << " now, "
+          << rounded(result.n_run_now / std::max(1e-9, result.wall_time)) << " runs/s); results in "
+          << run.results_place() << " (summary.json, ida.csv, ida_records.csv, ida_fractiles.csv, "
+          << "collapse_fragility.csv" << (demand_tables ? ", demands_*.csv" : "")
+          << (draws ? ", ida.png" : "") << ", journal/)\n";
+    }
   } // namespace
 
   int
@@ -263,16 +295,7 @@ namespace poundfe::commands
     if (result.interrupted)
       pcout << "ida interrupted after " << result.n_runs << " runs: the results are of these; "
             << "the same command runs the rest\n";
-    const double upper = ida.upper_intensity;
-    write_runs(run, runner, result);
-    for (const auto &[name, text] : result.journals) // in memory: what journal/ would hold
-      write_result_text(run.memory, directory, "journal/" + name, text);
-    const std::vector<double> &periods = runner.measure_periods();
-    const double first = analysis.modes.omega.empty() ? 1.0 : 2 * M_PI / analysis.modes.omega[0];
-    write_records(run, runner, ida.measure == IntensityMeasure::sa ? periods[0] : first,
-                  ida.damping_ratio);
-    write_fractiles(run, runner, result, upper);
-    const CollapseFragility fit = write_fragility(run, result, upper);
+    const CollapseFragility fit = write_ida_tables(run, analysis, runner, result);
     JsonWriter json;
     begin_summary(json, "ida", input, result.interrupted ? "interrupted" : "completed");
     write_summary(json, run.out, runner, result, ida, fit);
@@ -287,11 +310,7 @@ namespace poundfe::commands
       draw_plots(directory, {ida_plot(runner, measure)});
     write_result_text(run.memory, directory, "summary.json", json.str());
     timer.leave_subsection();
-    pcout << result.n_runs << " runs (" << result.n_run_now << " now, "
-          << rounded(result.n_run_now / std::max(1e-9, result.wall_time)) << " runs/s); results in "
-          << run.results_place() << " (summary.json, ida.csv, ida_records.csv, ida_fractiles.csv, "
-          << "collapse_fragility.csv" << (tables.empty() ? "" : ", demands_*.csv")
-          << (draws ? ", ida.png" : "") << ", journal/)\n";
+    print_ida_runs(pcout, run, result, !tables.empty(), draws);
     print_timing(timer);
     return status;
   }

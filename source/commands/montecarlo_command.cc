@@ -340,6 +340,34 @@ namespace poundfe::commands
           << (input.output.demand_tables ? ", demands_*.csv" : "")
           << (input.output.plots && !table.interrupted ? ", *.png" : "") << ")\n";
     }
+
+    /// The runner's responses (the damage states of the section limits, the
+    /// demand tables' columns when asked for) and its random variables.
+    void
+    set_responses_and_variables(RealizationRunner &runner, const InputParameters &input)
+    {
+      runner.set_section_limits(input.section_limits);
+      if (input.output.demand_tables) // the columns the tables read
+        runner.add_optional_responses(runner.optional_response_names());
+      attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact,
+                               input.modal.eigensolver);
+    }
+
+    /// P(g_k <= 0) of each limit state and, with more than one, the system's.
+    void
+    print_limit_state_probabilities(const dealii::ConditionalOStream &out,
+                                    const RandomParameterParameters  &random,
+                                    const LimitStateProbabilities    &probabilities)
+    {
+      for (unsigned int k = 0; k < probabilities.limit_states.size(); ++k)
+        out << "P(" << random.limit_state_names[k]
+            << " <= 0) = " << rounded(probabilities.limit_states[k].probability) << " (CoV "
+            << rounded(probabilities.limit_states[k].coefficient_of_variation) << ")\n";
+      if (probabilities.limit_states.size() > 1)
+        out << "P(" << system_names().name(random.system)
+            << " system fails) = " << rounded(probabilities.system.probability) << " (CoV "
+            << rounded(probabilities.system.coefficient_of_variation) << ")\n";
+    }
   } // namespace
 
   int
@@ -357,10 +385,7 @@ namespace poundfe::commands
     timer.enter_subsection("set-up");
     const Analysis    analysis = prepare_analysis(input);
     RealizationRunner runner(analysis, time_history_parameters(input));
-    runner.set_section_limits(input.section_limits);
-    if (input.output.demand_tables) // the columns the tables read
-      runner.add_optional_responses(runner.optional_response_names());
-    attach_random_parameters(runner, input.random_parameters, input, input.model, input.contact, input.modal.eigensolver);
+    set_responses_and_variables(runner, input);
     const std::unique_ptr<const ResponseLimitStates> limit_states =
       input.random_parameters.has_limit_states() ?
         std::make_unique<const ResponseLimitStates>(input.random_parameters,
@@ -400,14 +425,7 @@ namespace poundfe::commands
     write_result_text(run.memory, directory, "summary.json", json.str());
     timer.leave_subsection();
 
-    for (unsigned int k = 0; k < probabilities.limit_states.size(); ++k)
-      pcout << "P(" << input.random_parameters.limit_state_names[k]
-            << " <= 0) = " << rounded(probabilities.limit_states[k].probability) << " (CoV "
-            << rounded(probabilities.limit_states[k].coefficient_of_variation) << ")\n";
-    if (probabilities.limit_states.size() > 1)
-      pcout << "P(" << system_names().name(input.random_parameters.system)
-            << " system fails) = " << rounded(probabilities.system.probability) << " (CoV "
-            << rounded(probabilities.system.coefficient_of_variation) << ")\n";
+    print_limit_state_probabilities(pcout, input.random_parameters, probabilities);
     report(pcout, input, runner, table, limits, e, run.results_place(), n_ranks);
     print_timing(timer);
     return status;

@@ -652,6 +652,49 @@ namespace poundfe::commands
       write_summary(run, input, analysis.model, pairs, outcome.results, outcome.status,
                     outcome.method, outcome.n_completed, by_modes, hazard);
     }
+
+    /// The Random parameters split into the structure's and the pairs'
+    /// separations; the structure's paths and distributions checked on a
+    /// runner before any output.
+    void
+    split_checked_random_parameters(const InputParameters &input, const Analysis &analysis,
+                                    const std::vector<AdjacentPair> &pairs,
+                                    RandomParameterParameters       &structure,
+                                    RandomSeparations               &separations)
+    {
+      split_random_parameters(input, pairs, structure, separations);
+      if (!structure.has_variables())
+        return;
+      RealizationRunner check(analysis, time_history_parameters(input));
+      attach_random_parameters(check, structure, input, input.model, input.contact,
+                               input.modal.eigensolver);
+    }
+
+    /// The run's outcome on the terminal: how it ended, the method, the
+    /// pairs' peaks and what files it wrote (rank 0; pcout is silent elsewhere).
+    void
+    print_outcome(dealii::ConditionalOStream &pcout, const CommandRun &run,
+                  const InputParameters &input, const std::vector<AdjacentPair> &pairs,
+                  const Route &route, const Outcome &outcome,
+                  const std::optional<PoundingHazard> &hazard)
+    {
+      if (outcome.status == "interrupted")
+        pcout << "separation interrupted: the results are over what was completed before the "
+                 "signal (summary.json says interrupted)"
+              << (route.random ? "; the same command runs the rest" : "") << "\n";
+      pcout << "poundfe separation: " << outcome.method << "\n";
+      report(pcout, input, pairs, outcome.results, !route.by_spectrum);
+      if (hazard)
+        report_pounding_hazard(pcout, input, pairs, *hazard);
+      pcout << "results in " << run.results_place() << " (summary.json, separation.csv"
+            << (route.random ? ", pounding_probability.csv, realizations.csv" : "")
+            << (route.by_spectrum ? ", spectrum_modes.csv" : "")
+            << (hazard && hazard->failure.empty() ?
+                  ", pounding_hazard.csv, pounding_given_pga.csv" :
+                  "")
+            << (hazard && !run.memory ? ", pga_*g/" : "")
+            << (input.output.plots && outcome.status == "completed" ? ", *.png" : "") << ")\n";
+    }
   } // namespace
 
   int
@@ -675,14 +718,7 @@ namespace poundfe::commands
     RandomParameterParameters structure; // Random parameters: the structure's
     RandomSeparations         separations; // and the pairs' separations
     if (route.random)
-      {
-        split_random_parameters(input, pairs, structure, separations);
-        if (structure.has_variables()) // their paths and distributions, checked
-          {
-            RealizationRunner check(analysis, time_history_parameters(input));
-            attach_random_parameters(check, structure, input, input.model, input.contact, input.modal.eigensolver);
-          }
-      }
+      split_checked_random_parameters(input, analysis, pairs, structure, separations);
     std::optional<SpectrumPeaks> spectrum; // it may find bad input
     if (route.by_spectrum && rank == 0)
       spectrum = spectrum_peaks(analysis, pairs, input.spectrum, input.separation,
@@ -719,20 +755,7 @@ namespace poundfe::commands
     // The output (rank 0).
     write_results(run, input, analysis, pairs, route, outcome,
                   spectrum ? &*spectrum : nullptr, hazard);
-    if (outcome.status == "interrupted")
-      pcout << "separation interrupted: the results are over what was completed before the "
-               "signal (summary.json says interrupted)"
-            << (route.random ? "; the same command runs the rest" : "") << "\n";
-    pcout << "poundfe separation: " << outcome.method << "\n";
-    report(pcout, input, pairs, outcome.results, !route.by_spectrum);
-    if (hazard)
-      report_pounding_hazard(pcout, input, pairs, *hazard);
-    pcout << "results in " << run.results_place() << " (summary.json, separation.csv"
-          << (route.random ? ", pounding_probability.csv, realizations.csv" : "")
-          << (route.by_spectrum ? ", spectrum_modes.csv" : "")
-          << (hazard && hazard->failure.empty() ? ", pounding_hazard.csv, pounding_given_pga.csv" : "")
-          << (hazard && !run.memory ? ", pga_*g/" : "")
-          << (input.output.plots && outcome.status == "completed" ? ", *.png" : "") << ")\n";
+    print_outcome(pcout, run, input, pairs, route, outcome, hazard);
     return outcome.exit_status;
   }
 } // namespace poundfe::commands

@@ -350,6 +350,38 @@ namespace poundfe::commands
         if (!message.empty())
           throw NumericalError(message);
     }
+
+    /// The model runs of an earlier run that this one resumes from, if any.
+    void
+    print_resumed_runs(const dealii::ConditionalOStream &out, const SubsetRunsFile &journal,
+                       const std::string &directory)
+    {
+      if (journal.n_resumed() > 0)
+        out << "subset: resuming: " << journal.n_resumed()
+            << " model runs of an earlier run are in " << directory << "/subset_runs.csv\n";
+    }
+
+    /// subset_runs.csv (held in memory; a run into files merged it as it
+    /// went), the levels, summary.json and the plot of the levels (not
+    /// after a stop: it should stop soon); returns whether it drew it.
+    bool
+    write_subset_results(const CommandRun &run, const Model &model, const SubsetRunsFile &journal,
+                         const SubsetRun &facts, const SubsetResult &result,
+                         const double threshold, const bool limit_state, const std::string &unit)
+    {
+      const InputParameters &input = *run.input;
+      if (run.memory)
+        write_result_text(run.memory, run.directory, "subset_runs.csv", journal.text());
+      write_levels(run, result);
+      write_summary(run, input, facts, result);
+      const bool draws = input.output.plots && !result.interrupted && !run.memory;
+      if (draws)
+        draw_plots(run.directory, {subset_plot(result, threshold,
+                                               limit_state ?
+                                                 "-g (system)" :
+                                                 response_of(model, input.subset) + unit)});
+      return draws;
+    }
   } // namespace
 
   int
@@ -383,9 +415,7 @@ namespace poundfe::commands
     SubsetRunsFile journal(run.memory ? "" : directory, // "": in memory
                            subset_journal_settings(settings, runner.n_variables(), threshold),
                            comm);
-    if (journal.n_resumed() > 0)
-      pcout << "subset: resuming: " << journal.n_resumed()
-            << " model runs of an earlier run are in " << directory << "/subset_runs.csv\n";
+    print_resumed_runs(pcout, journal, directory);
     timer.leave_subsection();
 
     timer.enter_subsection("levels");
@@ -408,15 +438,8 @@ namespace poundfe::commands
       return status;
 
     timer.enter_subsection("output");
-    if (run.memory) // the journal's text, which a run into files merged into subset_runs.csv
-      write_result_text(run.memory, directory, "subset_runs.csv", journal.text());
-    write_levels(run, result);
-    write_summary(run, input, facts, result);
-    const bool draws = input.output.plots && !result.interrupted && !run.memory; // stop soon
-    if (draws)
-      draw_plots(directory, {subset_plot(result, threshold,
-                                         limit_state ? "-g (system)" :
-                                                       response_of(analysis.model, ss) + unit)});
+    const bool draws = write_subset_results(run, analysis.model, journal, facts, result,
+                                            threshold, limit_state, unit);
     timer.leave_subsection();
 
     report(pcout, input, run.results_place(), facts, unit, result, draws);

@@ -205,19 +205,14 @@ namespace poundfe
       return critical;
     }
 
+    /// sweep.csv: the swept value, whether its run completed, its peaks.
     void
-    write_sweep(const CommandRun &run, const SweepTable &table, const double wall_time,
-                const bool interrupted, const bool model_built_once, const SweepTable &limit)
+    write_sweep_table(const CommandRun &run, const SweepTable &table)
     {
-      const InputParameters &input     = *run.input;
-      const std::string     &directory = run.directory;
-      const SweepParameters &sweep     = input.sweep;
-      if (!run.memory)
-        prepare_output_directory(directory);
-      std::vector<std::string> header{sweep.column_name(), "completed"};
+      std::vector<std::string> header{run.input->sweep.column_name(), "completed"};
       header.insert(header.end(), table.names.begin(), table.names.end());
       const std::unique_ptr<TableWriter> csv =
-        result_table_writer(run.memory, directory, "sweep", header);
+        result_table_writer(run.memory, run.directory, "sweep", header);
       std::vector<double> row;
       for (std::size_t i = 0; i < table.rows.size(); ++i)
         {
@@ -226,9 +221,19 @@ namespace poundfe
           csv->add_row(table.values[i], row);
         }
       csv->commit();
+    }
 
-      JsonWriter json;
-      const bool all = std::all_of(table.completed.begin(), table.completed.end(),
+    /// summary.json: the table by columns, the critical values and, for a
+    /// convergence to rigid contact, the rigid limit's row.
+    void
+    write_sweep_summary(const CommandRun &run, const SweepTable &table, const double wall_time,
+                        const bool interrupted, const bool model_built_once,
+                        const SweepTable &limit)
+    {
+      const InputParameters &input = *run.input;
+      const SweepParameters &sweep = input.sweep;
+      JsonWriter             json;
+      const bool             all = std::all_of(table.completed.begin(), table.completed.end(),
                                    [](const bool c) { return c; });
       begin_summary(json, "sweep", input, interrupted ? "interrupted" : all ? "completed" : "failed");
       json.value("parameter", sweep.parameter).value("command_swept", sweep.command)
@@ -256,10 +261,15 @@ namespace poundfe
           json.end_object();
         }
       json.end_object();
-      write_result_text(run.memory, directory, "summary.json", json.str());
+      write_result_text(run.memory, run.directory, "summary.json", json.str());
+    }
 
-      if (!input.output.plots || table.rows.empty() || run.memory)
-        return;
+    /// sweep.png: the storeys' peak drift ratios (and a 3D model's along y)
+    /// against the swept value.
+    void
+    draw_sweep_plot(const std::string &directory, const SweepParameters &sweep,
+                    const SweepTable &table)
+    {
       Plot plot{"sweep.png", "peak inter-storey drift ratio against " + sweep.axis_label(),
                 sweep.axis_label(), "peak drift ratio", {}};
       const auto along_y = [](const std::string &name) { // a 3D model's drifts along y
@@ -272,6 +282,18 @@ namespace poundfe
           plot.series.push_back({"sweep.csv", "1:" + std::to_string(3 + c), table.names[c],
                                  "linespoints"});
       draw_plots(directory, {plot});
+    }
+
+    void
+    write_sweep(const CommandRun &run, const SweepTable &table, const double wall_time,
+                const bool interrupted, const bool model_built_once, const SweepTable &limit)
+    {
+      if (!run.memory)
+        prepare_output_directory(run.directory);
+      write_sweep_table(run, table);
+      write_sweep_summary(run, table, wall_time, interrupted, model_built_once, limit);
+      if (run.input->output.plots && !table.rows.empty() && !run.memory)
+        draw_sweep_plot(run.directory, run.input->sweep, table);
     }
 
     /// Whether the sweep is the convergence of the penalty law's stiffness
@@ -377,6 +399,24 @@ namespace poundfe
         }
       return table;
     }
+
+    /// What was swept in how long, the files written and the critical
+    /// values of the largest demands, on the terminal.
+    void
+    print_sweep_results(const CommandRun &run, const std::size_t n_values, const SweepTable &table,
+                        const SweepTable &limit, const double wall_time)
+    {
+      const SweepParameters &sweep = run.input->sweep;
+      run.out << "poundfe sweep: " << n_values << " values of " << sweep.parameter << " in "
+              << wall_time << " s\nresults in " << run.results_place()
+              << " (sweep.csv, summary.json" << (run.memory ? "" : ", sweep.png")
+              << (limit.rows.empty() ? "" : ", rigid_limit.csv, contact_convergence.csv") << ")\n";
+      for (const Critical &c : critical_values(table)) // the largest demands
+        if (c.name == "max_drift_ratio" ||
+            c.name.find("_max_corner_drift_ratio") != std::string::npos)
+          run.out << "critical " << sweep.parameter << " for " << c.name << ": " << c.value
+                  << " (peak " << c.peak << ")\n";
+    }
   } // namespace
 
 } // namespace poundfe
@@ -435,14 +475,7 @@ namespace poundfe::commands
       }
 
     const auto n_failed = std::count(table.completed.begin(), table.completed.end(), false);
-    run.out << "poundfe sweep: " << values.size() << " values of " << sweep.parameter << " in "
-            << wall_time << " s\nresults in " << run.results_place()
-            << " (sweep.csv, summary.json" << (run.memory ? "" : ", sweep.png")
-            << (limit.rows.empty() ? "" : ", rigid_limit.csv, contact_convergence.csv") << ")\n";
-    for (const Critical &c : critical_values(table)) // the largest demands
-      if (c.name == "max_drift_ratio" || c.name.find("_max_corner_drift_ratio") != std::string::npos)
-        run.out << "critical " << sweep.parameter << " for " << c.name << ": " << c.value
-                << " (peak " << c.peak << ")\n";
+    print_sweep_results(run, values.size(), table, limit, wall_time);
     print_timing(timer);
     if (n_failed > 0)
       {

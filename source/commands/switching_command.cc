@@ -169,6 +169,71 @@ namespace poundfe
                                                       analysis.n_equations(), classes, slides,
                                                       rotation)});
     }
+
+    /// The end of the switching analysis: Time integration/End time, or
+    /// the ground motion's duration when that is not given.
+    double
+    switching_end_time(const InputParameters &input, const TimeHistoryParameters &parameters,
+                       const Excitation &excitation)
+    {
+      const double t_end = parameters.time_integration.end_time > 0 ?
+                             parameters.time_integration.end_time :
+                             excitation.ground_motion().duration();
+      if (!(t_end > 0))
+        input.fail("Time integration/End time", "needs a positive end time when there is no "
+                                                "ground motion");
+      return t_end;
+    }
+
+    /// The Filippov integrator's tolerances, those of the Dormand-Prince
+    /// parameters, sampled at the output interval (the Newmark step if none).
+    FilippovParameters
+    filippov_parameters(const InputParameters &input, const TimeHistoryParameters &parameters,
+                        const DormandPrinceParameters &dopri)
+    {
+      FilippovParameters filippov;
+      filippov.relative_tolerance = dopri.relative_tolerance;
+      filippov.absolute_tolerance = dopri.absolute_tolerance;
+      filippov.event_resolution   = dopri.event_resolution;
+      filippov.sample_interval    = input.output.interval > 0 ?
+                                      input.output.interval :
+                                      parameters.time_integration.newmark.time_step;
+      return filippov;
+    }
+
+    /// switching.csv and trajectory.csv in a fresh output directory.
+    void
+    write_hits_and_trajectory(const ModelSwitching &analysis,
+                              const std::vector<SwitchingEvent> &events, const CommandRun &run)
+    {
+      if (!run.memory)
+        prepare_output_directory(run.directory);
+      write_log(analysis, events, run);
+      write_trajectory(analysis, run);
+    }
+
+    /// The hits by surface and class, the sliding intervals and the files
+    /// written, on the terminal.
+    void
+    print_hits(const ModelSwitching &analysis, const std::vector<SwitchingEvent> &events,
+               const std::vector<SlidingInterval> &intervals, const double t_end,
+               const CommandRun &run)
+    {
+      run.out << "poundfe switching: " << events.size() << " hits in [0, " << t_end << "] s\n";
+      for (const auto &[name, by_class] : analysis.counts())
+        {
+          run.out << "  " << name << ":";
+          for (const auto &[kind, count] : by_class)
+            run.out << " " << kind << " " << count;
+          run.out << (by_class.empty() ? " none\n" : "\n");
+        }
+      for (const SlidingInterval &s : intervals)
+        run.out << "  sliding on " << s.surface << " from " << s.entry << " s to " << s.exit
+                << " s" << (s.open ? " (the end)" : "") << "\n";
+      run.out << "results in " << run.results_place()
+              << " (switching.csv, trajectory.csv, summary.json"
+              << (run.memory ? "" : ", phase_portrait.png") << ")\n";
+    }
   } // namespace
 } // namespace poundfe
 
@@ -189,23 +254,13 @@ namespace poundfe::commands
                                                             elements, dopri.max_equations);
         !why.empty())
       input.fail("Model/Number of buildings", "the switching analysis " + why);
-    const double t_end = parameters.time_integration.end_time > 0 ?
-                           parameters.time_integration.end_time :
-                           excitation.ground_motion().duration();
-    if (!(t_end > 0))
-      input.fail("Time integration/End time", "needs a positive end time when there is no "
-                                              "ground motion");
+    const double       t_end = switching_end_time(input, parameters, excitation);
     const InitialState initial =
       initial_state(parameters.initial_conditions, analysis.model, parameters.input);
-    FilippovParameters filippov;
-    filippov.relative_tolerance = dopri.relative_tolerance;
-    filippov.absolute_tolerance = dopri.absolute_tolerance;
-    filippov.event_resolution   = dopri.event_resolution;
-    filippov.sample_interval =
-      input.output.interval > 0 ? input.output.interval : parameters.time_integration.newmark.time_step;
     ModelSwitching switching_analysis(
       analysis.system, analysis.model, elements,
-      [&excitation](const double t, Vector &p) { excitation.load(t, p); }, filippov);
+      [&excitation](const double t, Vector &p) { excitation.load(t, p); },
+      filippov_parameters(input, parameters, dopri));
     timer.leave_subsection();
 
     timer.enter_subsection("integration");
@@ -217,10 +272,7 @@ namespace poundfe::commands
       {
         // the hits and the trajectory up to the failure are results: kept,
         // and the guard's summary.json says "failed" with the reason
-        if (!run.memory)
-          prepare_output_directory(run.directory);
-        write_log(switching_analysis, switching_analysis.events(), run);
-        write_trajectory(switching_analysis, run);
+        write_hits_and_trajectory(switching_analysis, switching_analysis.events(), run);
         throw;
       }
     timer.leave_subsection();
@@ -228,29 +280,13 @@ namespace poundfe::commands
     timer.enter_subsection("output");
     const std::vector<SwitchingEvent> events = switching_analysis.events();
     const auto intervals = sliding_intervals(switching_analysis, events, t_end);
-    if (!run.memory)
-      prepare_output_directory(run.directory);
-    write_log(switching_analysis, events, run);
-    write_trajectory(switching_analysis, run);
+    write_hits_and_trajectory(switching_analysis, events, run);
     write_summary(input, switching_analysis, intervals, t_end, run);
     if (input.output.plots && !run.memory)
       draw_phase_portrait(switching_analysis, analysis.model, !intervals.empty(), run.directory);
     timer.leave_subsection();
 
-    run.out << "poundfe switching: " << events.size() << " hits in [0, " << t_end << "] s\n";
-    for (const auto &[name, by_class] : switching_analysis.counts())
-      {
-        run.out << "  " << name << ":";
-        for (const auto &[kind, count] : by_class)
-          run.out << " " << kind << " " << count;
-        run.out << (by_class.empty() ? " none\n" : "\n");
-      }
-    for (const SlidingInterval &s : intervals)
-      run.out << "  sliding on " << s.surface << " from " << s.entry << " s to " << s.exit
-              << " s" << (s.open ? " (the end)" : "") << "\n";
-    run.out << "results in " << run.results_place()
-            << " (switching.csv, trajectory.csv, summary.json"
-            << (run.memory ? "" : ", phase_portrait.png") << ")\n";
+    print_hits(switching_analysis, events, intervals, t_end, run);
     print_timing(timer);
     return 0;
   }

@@ -183,66 +183,89 @@ namespace poundfe
 
   } // namespace
 
+  namespace
+  {
+    /// The columns of date, latitude, longitude and magnitude in a
+    /// catalogue's header row `fields` (line `number` of `file`).
+    std::vector<int>
+    catalogue_columns(const std::string &file, const int number,
+                      const std::vector<std::string> &fields)
+    {
+      const std::vector<std::string> required{"date", "latitude", "longitude", "magnitude"};
+      std::vector<int>               column(required.size(), -1);
+      for (std::size_t i = 0; i < fields.size(); ++i)
+        {
+          std::string name = fields[i];
+          std::transform(name.begin(), name.end(), name.begin(), ::tolower);
+          for (std::size_t c = 0; c < required.size(); ++c)
+            if (name == required[c])
+              column[c] = i;
+        }
+      for (std::size_t c = 0; c < required.size(); ++c)
+        if (column[c] < 0)
+          throw InputError(file, number, catalogue_parameter,
+                           "the header has no column '" + required[c] +
+                             "' (it needs date, latitude, longitude, magnitude)");
+      return column;
+    }
+
+    /// The event of a catalogue's row `fields` (line `number` of `file`),
+    /// its date, epicentre and magnitude checked.
+    CatalogueEvent
+    catalogue_event(const std::string &file, const int number,
+                    const std::vector<std::string> &fields, const std::vector<int> &column)
+    {
+      CatalogueEvent e;
+      e.line = number;
+      e.date = fields[column[0]];
+      e.year = year_of(e.date);
+      if (e.year == 0)
+        throw InputError(file, number, catalogue_parameter,
+                         "date '" + e.date + "' is not YYYY, YYYY-MM or YYYY-MM-DD");
+      e.epicentre.latitude  = number_in(fields[column[1]]);
+      e.epicentre.longitude = number_in(fields[column[2]]);
+      e.magnitude           = number_in(fields[column[3]]);
+      if (!(std::abs(e.epicentre.latitude) <= 90))
+        throw InputError(file, number, catalogue_parameter,
+                         "latitude '" + fields[column[1]] + "' is not a number in [-90, 90]");
+      if (!(e.epicentre.longitude >= -180 && e.epicentre.longitude <= 360))
+        throw InputError(file, number, catalogue_parameter,
+                         "longitude '" + fields[column[2]] + "' is not a number in [-180, 360]");
+      // A negative magnitude is a micro-earthquake, never felt at a site:
+      // in a hazard catalogue it is a typing error; none on
+      // Earth has reached 10.
+      if (!(e.magnitude >= 0 && e.magnitude < 10))
+        throw InputError(file, number, catalogue_parameter,
+                         "magnitude '" + fields[column[3]] + "' is not a number in [0, 10)");
+      return e;
+    }
+  } // namespace
+
   std::vector<CatalogueEvent>
   read_catalogue(const std::string &file)
   {
     std::istringstream in(read_input_text(file, "catalogue", catalogue_parameter));
-    const std::vector<std::string> required{"date", "latitude", "longitude", "magnitude"};
-    std::vector<int>               column(required.size(), -1);
-    std::size_t                    n_fields = 0;
-    std::vector<CatalogueEvent>    events;
-    std::string                    line;
+    std::vector<int>            column;
+    std::size_t                 n_fields = 0;
+    std::vector<CatalogueEvent> events;
+    std::string                 line;
     for (int number = 1; std::getline(in, line); ++number)
       {
         line = trimmed(line);
         if (line.empty() || line[0] == '#')
           continue;
-        std::vector<std::string> fields = split_fields(line);
+        const std::vector<std::string> fields = split_fields(line);
         if (n_fields == 0) // the header
           {
             n_fields = fields.size();
-            for (std::size_t i = 0; i < fields.size(); ++i)
-              {
-                std::string name = fields[i];
-                std::transform(name.begin(), name.end(), name.begin(), ::tolower);
-                for (std::size_t c = 0; c < required.size(); ++c)
-                  if (name == required[c])
-                    column[c] = i;
-              }
-            for (std::size_t c = 0; c < required.size(); ++c)
-              if (column[c] < 0)
-                throw InputError(file, number, catalogue_parameter,
-                                 "the header has no column '" + required[c] +
-                                   "' (it needs date, latitude, longitude, magnitude)");
+            column   = catalogue_columns(file, number, fields);
             continue;
           }
         if (fields.size() != n_fields)
           throw InputError(file, number, catalogue_parameter,
                            "a row of " + std::to_string(fields.size()) + " fields; the header has " +
                              std::to_string(n_fields));
-        CatalogueEvent e;
-        e.line = number;
-        e.date = fields[column[0]];
-        e.year = year_of(e.date);
-        if (e.year == 0)
-          throw InputError(file, number, catalogue_parameter,
-                           "date '" + e.date + "' is not YYYY, YYYY-MM or YYYY-MM-DD");
-        e.epicentre.latitude  = number_in(fields[column[1]]);
-        e.epicentre.longitude = number_in(fields[column[2]]);
-        e.magnitude           = number_in(fields[column[3]]);
-        if (!(std::abs(e.epicentre.latitude) <= 90))
-          throw InputError(file, number, catalogue_parameter,
-                           "latitude '" + fields[column[1]] + "' is not a number in [-90, 90]");
-        if (!(e.epicentre.longitude >= -180 && e.epicentre.longitude <= 360))
-          throw InputError(file, number, catalogue_parameter,
-                           "longitude '" + fields[column[2]] + "' is not a number in [-180, 360]");
-        // A negative magnitude is a micro-earthquake, never felt at a site:
-        // in a hazard catalogue it is a typing error; none on
-        // Earth has reached 10.
-        if (!(e.magnitude >= 0 && e.magnitude < 10))
-          throw InputError(file, number, catalogue_parameter,
-                           "magnitude '" + fields[column[3]] + "' is not a number in [0, 10)");
-        events.push_back(e);
+        events.push_back(catalogue_event(file, number, fields, column));
       }
     if (n_fields == 0)
       throw InputError(file, 0, catalogue_parameter, "the catalogue has no header row");

@@ -575,6 +575,79 @@ namespace poundfe
       return extension;
     }
 
+    /// Reads the text of a parameter file into the lines of its entries
+    /// (for messages) and, for .prm files, the text deal.II parses.
+    void
+    index_parameter_text(const std::string &file, const std::string &extension, std::string &text,
+                         InputParameters &p)
+    {
+      if (extension == ".prm")
+        {
+          PrmText prm = prepare_prm_text(file, text);
+          p.lines     = std::move(prm.lines);
+          text        = std::move(prm.text);
+          return;
+        }
+      check_json_text(file, text);
+      std::istringstream          json(text);
+      boost::property_tree::ptree tree;
+      try
+        {
+          boost::property_tree::read_json(json, tree);
+        }
+      catch (const boost::property_tree::json_parser_error &)
+        {
+          // deal.II's parser reports the fault with its line below
+        }
+      index_json_entries(tree, "", p.lines);
+    }
+
+    /// The number of a building beyond the `n_buildings` declared that
+    /// deal.II's "no such subsection" message names, or an empty string.
+    std::string
+    undeclared_building_number(const std::string &problem, const unsigned int n_buildings)
+    {
+      const std::string undeclared = "There is no such subsection to be entered: Building ";
+      if (problem.rfind(undeclared, 0) != 0)
+        return {};
+      // its number alone, beyond the buildings declared
+      const std::string rest   = problem.substr(undeclared.size());
+      const std::size_t digits = std::min(rest.find_first_not_of("0123456789"), rest.size());
+      if (digits > 0 && digits <= 9 &&
+          (digits == rest.size() || rest[digits] == '/' || rest[digits] == ' ') &&
+          std::stoul(rest.substr(0, digits)) > n_buildings)
+        return rest.substr(0, digits);
+      return {};
+    }
+
+    /// Rethrows `e` as the message that a building beyond the number
+    /// declared is given, if that is its cause (deal.II's words for it in
+    /// .prm files, or a "Building <k>" key whose entries it cannot find in
+    /// JSON); rethrows `e` unchanged otherwise. Called inside its catch.
+    [[noreturn]] void
+    rethrow_as_building_beyond_declared(const InputError &e, const std::string &text,
+                                        const bool json, const unsigned int n_buildings)
+    {
+      std::string building = undeclared_building_number(e.problem(), n_buildings);
+      int         line     = e.line();
+      // JSON has the building's key on a line of its own, and no one
+      // entry of it is to blame: the key's line, no parameter
+      if (json)
+        {
+          int               key_line = 0;
+          const std::string beyond   = building_beyond(text, n_buildings, key_line);
+          if (building.empty())
+            building = beyond;
+          if (!beyond.empty())
+            line = key_line;
+        }
+      if (building.empty())
+        throw;
+      throw InputError(e.file(), line, json ? std::string() : e.parameter(),
+                       "'Building " + building + "' is given, but Model/Number of buildings is " +
+                         std::to_string(n_buildings) + " (raise it, or remove the section)");
+    }
+
     /// The text of a parameter file `file` in `directory` (the one against
     /// which its relative file names are taken), read and checked.
     InputParameters
@@ -583,31 +656,12 @@ namespace poundfe
                          const std::size_t                     n_named)
     {
       const std::string extension = parameter_file_extension(file);
+      const bool        json      = extension == ".json";
       InputParameters   p;
       p.file      = file;
       p.directory = directory;
       p.overrides = overrides;
-      if (extension == ".prm")
-        {
-          PrmText prm = prepare_prm_text(file, text);
-          p.lines     = std::move(prm.lines);
-          text        = std::move(prm.text);
-        }
-      else
-        {
-          check_json_text(file, text);
-          std::istringstream             json(text);
-          boost::property_tree::ptree    tree;
-          try
-            {
-              boost::property_tree::read_json(json, tree);
-            }
-          catch (const boost::property_tree::json_parser_error &)
-            {
-              // deal.II's parser reports the fault with its line below
-            }
-          index_json_entries(tree, "", p.lines);
-        }
+      index_parameter_text(file, extension, text, p);
 
       // First pass: only the numbers of buildings and of cross-sections, which
       // shape the declarations.
@@ -616,7 +670,7 @@ namespace poundfe
         ParameterHandler prm;
         ModelParameters::declare_number_of_buildings(prm, n_buildings);
         SectionsParameters::declare_number_of_sections(prm, n_sections);
-        parse(prm, p, text, extension == ".json", overrides, true);
+        parse(prm, p, text, json, overrides, true);
       }
       p.model.buildings.resize(n_buildings);
       p.sections.sections.resize(n_sections);
@@ -624,42 +678,11 @@ namespace poundfe
       p.declare(prm);
       try
         {
-          parse(prm, p, text, extension == ".json", overrides, false);
+          parse(prm, p, text, json, overrides, false);
         }
       catch (const InputError &e)
         {
-          // a building beyond the number declared: deal.II's words for it
-          // (.prm), or a "Building <k>" key whose entries it cannot find (JSON)
-          const std::string undeclared = "There is no such subsection to be entered: Building ";
-          std::string       building;
-          int               line = e.line();
-          if (e.problem().rfind(undeclared, 0) == 0)
-            {
-              // its number alone, beyond the buildings declared
-              const std::string rest   = e.problem().substr(undeclared.size());
-              const std::size_t digits = std::min(rest.find_first_not_of("0123456789"), rest.size());
-              if (digits > 0 && digits <= 9 && (digits == rest.size() || rest[digits] == '/' ||
-                                                rest[digits] == ' ') &&
-                  std::stoul(rest.substr(0, digits)) > n_buildings)
-                building = rest.substr(0, digits);
-            }
-          // JSON has the building's key on a line of its own, and no one
-          // entry of it is to blame: the key's line, no parameter
-          const bool json = extension == ".json";
-          if (json)
-            {
-              int               key_line = 0;
-              const std::string beyond   = building_beyond(text, n_buildings, key_line);
-              if (building.empty())
-                building = beyond;
-              if (!beyond.empty())
-                line = key_line;
-            }
-          if (building.empty())
-            throw;
-          throw InputError(e.file(), line, json ? std::string() : e.parameter(),
-                           "'Building " + building + "' is given, but Model/Number of buildings is " +
-                             std::to_string(n_buildings) + " (raise it, or remove the section)");
+          rethrow_as_building_beyond_declared(e, text, json, n_buildings);
         }
       p.values = flattened_values(prm);
       try

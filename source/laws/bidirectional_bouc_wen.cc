@@ -98,6 +98,43 @@ namespace poundfe
     return k;
   }
 
+  namespace
+  {
+    /// z + step, the step halved until the residual's largest entry
+    /// decreases (taken at the 30th try regardless); R: the residual there.
+    template <typename Residual>
+    void
+    take_backtracked_step(const Residual &residual, Eigen::Vector2d step, Eigen::Vector2d &z,
+                          Eigen::Vector2d &R)
+    {
+      for (unsigned int half = 0; half < 30; ++half)
+        {
+          const Eigen::Vector2d R_try = residual(z + step);
+          if (R_try.lpNorm<Eigen::Infinity>() < R.lpNorm<Eigen::Infinity>() || half == 29)
+            {
+              z += step;
+              R = R_try;
+              return;
+            }
+          step *= 0.5;
+        }
+    }
+
+    /// Why the local Newton iteration for z failed, with its increment, start
+    /// and last residual.
+    std::string
+    newton_failure(const unsigned int max_iterations, const Eigen::Vector2d &du,
+                   const Eigen::Vector2d &z0, const Eigen::Vector2d &R)
+    {
+      std::ostringstream message;
+      message << "bidirectional Bouc-Wen: the local Newton iteration for z did not converge in "
+              << max_iterations << " iterations (increment " << du[0] << ", " << du[1]
+              << "; z0 = " << z0[0] << ", " << z0[1]
+              << "; |residual| = " << R.lpNorm<Eigen::Infinity>() << ")";
+      return message.str();
+    }
+  } // namespace
+
   bool
   BidirectionalBoucWen::set_trial(const Eigen::Vector2d &deformation)
   {
@@ -127,29 +164,12 @@ namespace poundfe
           Eigen::Matrix2d::Identity() - th * rate_jacobian(z, s, dc);
         if (!(std::abs(J.determinant()) > 0))
           break;
-        Eigen::Vector2d step = -J.inverse() * R;
-        // Backtrack until the residual decreases.
-        for (unsigned int half = 0; half < 30; ++half)
-          {
-            const Eigen::Vector2d R_try = residual(z + step);
-            if (R_try.lpNorm<Eigen::Infinity>() < R.lpNorm<Eigen::Infinity>() || half == 29)
-              {
-                z += step;
-                R = R_try;
-                break;
-              }
-            step *= 0.5;
-          }
+        take_backtracked_step(residual, -J.inverse() * R, z, R);
         converged = R.lpNorm<Eigen::Infinity>() <= p.tolerance;
       }
     if (!converged || !z.allFinite())
       {
-        std::ostringstream message;
-        message << "bidirectional Bouc-Wen: the local Newton iteration for z did not converge in "
-                << p.max_iterations << " iterations (increment " << du[0] << ", " << du[1]
-                << "; z0 = " << z0[0] << ", " << z0[1]
-                << "; |residual| = " << R.lpNorm<Eigen::Infinity>() << ")";
-        failure_message = message.str();
+        failure_message = newton_failure(p.max_iterations, du, z0, R);
         return false;
       }
 

@@ -390,15 +390,11 @@ namespace poundfe
         }
     }
 
-    void
-    build_from_mesh(Model &model, const InputFile &input, const BuildingParameters &p,
-                    const unsigned int b, Building &building)
+    /// The extent min x, max x, min y, max y of the vertices a line mesh's
+    /// cells use (a mesh file may hold points no cell uses).
+    std::array<double, 4>
+    used_vertex_extent(const LineMesh &mesh)
     {
-      const std::string file = input.resolve(p.mesh_file);
-      const LineMesh    mesh = read_building_mesh(input, p, b, &read_line_mesh);
-
-      // Keep only vertices that cells use, in their order of first use.
-      std::vector<int> node_of_vertex(mesh.vertices.size(), -1);
       double min_x = 1e300, max_x = -1e300, min_y = 1e300, max_y = -1e300;
       for (const auto &cell : mesh.cells)
         for (const unsigned int v : cell)
@@ -408,6 +404,52 @@ namespace poundfe
             min_y = std::min(min_y, mesh.vertices[v].y);
             max_y = std::max(max_y, mesh.vertices[v].y);
           }
+      return {{min_x, max_x, min_y, max_y}};
+    }
+
+    /// The group of Building <b + 1>'s parameters that a mesh cell's
+    /// physical id `id` names; an id not listed is bad input.
+    unsigned int
+    mesh_group_of(const InputFile &input, const BuildingParameters &p, const unsigned int b,
+                  const std::string &mesh_file, const unsigned int id)
+    {
+      const auto it = std::find(p.group_ids.begin(), p.group_ids.end(), id);
+      if (it == p.group_ids.end())
+      {
+        const std::string parameter = "Building " + std::to_string(b + 1) + "/Group ids";
+        throw InputError(input.file, input.line_of(parameter), parameter,
+                         "the mesh " + mesh_file + " uses physical id " + std::to_string(id) +
+                           ", which is not listed");
+      }
+      return it - p.group_ids.begin();
+    }
+
+    /// Building <b + 1>/Floor masses lumped on a mesh's floors (one for all
+    /// or one per floor: the floors are known only once the mesh is read).
+    void
+    lump_mesh_floor_masses(Model &model, const InputFile &input, const BuildingParameters &p,
+                           const unsigned int b, Building &building)
+    {
+      const std::string masses = "Building " + std::to_string(b + 1) + "/Floor masses";
+      if (p.floor_masses.size() != 1 && p.floor_masses.size() != building.floors.size())
+        throw InputError(input.file, input.line_of(masses), masses,
+                         "needs 1 value or " + std::to_string(building.floors.size()) +
+                           " (the mesh has that many floors), got " +
+                           std::to_string(p.floor_masses.size()));
+      for (unsigned int i = 0; i < building.floors.size(); ++i)
+        lump_floor_mass(model, building.floors[i], value_for(p.floor_masses, i));
+    }
+
+    void
+    build_from_mesh(Model &model, const InputFile &input, const BuildingParameters &p,
+                    const unsigned int b, Building &building)
+    {
+      const std::string file = input.resolve(p.mesh_file);
+      const LineMesh    mesh = read_building_mesh(input, p, b, &read_line_mesh);
+
+      // Keep only vertices that cells use, in their order of first use.
+      std::vector<int> node_of_vertex(mesh.vertices.size(), -1);
+      const auto [min_x, max_x, min_y, max_y] = used_vertex_extent(mesh);
       const double shift = building.left - min_x;
       building.right     = max_x + shift;
       building.base_level = min_y;
@@ -422,13 +464,7 @@ namespace poundfe
       std::vector<double>                         beam_levels;
       for (unsigned int c = 0; c < mesh.cells.size(); ++c)
         {
-          const auto it = std::find(p.group_ids.begin(), p.group_ids.end(), mesh.material_ids[c]);
-          if (it == p.group_ids.end())
-            throw InputError(input.file, input.line_of("Building " + std::to_string(b + 1) + "/Group ids"),
-                             "Building " + std::to_string(b + 1) + "/Group ids",
-                             "the mesh " + file + " uses physical id " +
-                               std::to_string(mesh.material_ids[c]) + ", which is not listed");
-          const unsigned int g = it - p.group_ids.begin();
+          const unsigned int g = mesh_group_of(input, p, b, file, mesh.material_ids[c]);
           const Section section{value_for(p.group_youngs_modulus, g), value_for(p.group_area, g),
                                 value_for(p.group_second_moment, g),
                                 value_for(p.group_mass_per_length, g)};
@@ -454,14 +490,7 @@ namespace poundfe
           fix_base(model, n, p.base_fixity);
 
       add_mesh_floors(model, beam_levels, joints_at_level, min_y, tolerance, building);
-      const std::string masses = "Building " + std::to_string(b + 1) + "/Floor masses";
-      if (p.floor_masses.size() != 1 && p.floor_masses.size() != building.floors.size())
-        throw InputError(input.file, input.line_of(masses), masses,
-                         "needs 1 value or " + std::to_string(building.floors.size()) +
-                           " (the mesh has that many floors), got " +
-                           std::to_string(p.floor_masses.size()));
-      for (unsigned int i = 0; i < building.floors.size(); ++i)
-        lump_floor_mass(model, building.floors[i], value_for(p.floor_masses, i));
+      lump_mesh_floor_masses(model, input, p, b, building);
     }
 
     /// Building <b + 1>/Floor loads on its floors (one for all or one per

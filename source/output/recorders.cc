@@ -592,6 +592,140 @@ namespace poundfe
               {}};
     }
 
+    /// A row function that copies `from`, a vector the peaks keep current
+    /// (the recorder reads it after each step, so it refers, not copies).
+    auto
+    copy_of(const std::vector<double> &from)
+    {
+      return [&from](const ResponseView &, std::vector<double> &to) { to = from; };
+    }
+
+    /// The hinge states of the hinges and Bouc-Wen storeys `request` names.
+    Series
+    hinge_series_named(const RecorderRequest &request, const ResponseView &state,
+                       const PeakResponse &peaks, const std::string &input_file, const int line)
+    {
+      const NonlinearElements &elements = state.elements;
+      const unsigned int       n_hyst   = peaks.n_hysteretic();
+      return hinge_state_series(
+        elements, elements_named(request.labels, state.model, elements, 0, n_hyst,
+                                 [&](const unsigned int h, const unsigned int b) {
+                                   return elements[h].building == b;
+                                 },
+                                 "hinge states", "hinge or Bouc-Wen storey",
+                                 "A3_C1.2_bottom, A3_storey1 or in 3D A5_C1.3.2_bottom_z",
+                                 input_file, line));
+    }
+
+    /// The gap states of the gap elements `request` names: a gap is a
+    /// building's if either of its nodes is.
+    Series
+    gap_series_named(const RecorderRequest &request, const ResponseView &state,
+                     const PeakResponse &peaks, const std::string &input_file, const int line)
+    {
+      // gaps follow the hysteretic elements, in model.gaps order
+      const NonlinearElements &elements = state.elements;
+      const Model             &model    = state.model;
+      const unsigned int       n_hyst   = peaks.n_hysteretic();
+      return gap_state_series(
+        elements, elements_named(request.labels, model, elements, n_hyst,
+                                 n_hyst + peaks.n_gaps(),
+                                 [&](const unsigned int h, const unsigned int b) {
+                                   const Gap &gap = model.gaps[h - n_hyst];
+                                   return (gap.nodes[0] >= 0 && gap.buildings[0] == b) ||
+                                          (gap.nodes[1] >= 0 && gap.buildings[1] == b);
+                                 },
+                                 "gap states", "gap element",
+                                 "A3-B2@6.5 or in 3D A5-B5@13.6/1", input_file, line));
+    }
+
+    /// The energy balance's terms and its error.
+    Series
+    energy_series(const Model &model)
+    {
+      // a column for the foundations' dashpots only when there are
+      // some, for the held gravity loads' work only after gravity
+      const bool               foundations = !model.foundations.empty();
+      const bool               gravity     = model.gravity_analysis.enabled;
+      std::vector<std::string> names{"input_J",      "kinetic_J",  "damping_J",
+                                     "strain_J",     "hysteretic_J", "contact_J",
+                                     "balance_error", "friction_J", "belt_J",
+                                     "links_J"};
+      if (foundations)
+        names.push_back("foundation_J");
+      if (gravity)
+        names.push_back("constant_load_J");
+      return {names,
+              [foundations, gravity](const ResponseView &s, std::vector<double> &to) {
+                const EnergyBalance e = s.energy();
+                to = {e.input,   e.kinetic,          e.damping,  e.strain, e.hysteretic,
+                      e.contact, s.max_energy_error(), e.friction, e.belt,   e.links};
+                if (foundations)
+                  to.push_back(e.foundation);
+                if (gravity)
+                  to.push_back(e.constant_load);
+              },
+              {}};
+    }
+
+    /// The ground acceleration as applied: its components along x and y in
+    /// 3D (`plan`), and the vertical one too when there is one.
+    Series
+    ground_motion_series(const ResponseView &state, const bool plan)
+    {
+      if (plan) // every component as applied: along x and y (after the incidence rotation)
+        return ground_motion_3d_series(state.has_vertical_ground_motion());
+      if (state.has_vertical_ground_motion()) // Components = 3: the vertical one too
+        return {{"ground_acceleration_m_s2", "ground_acceleration_z_m_s2"},
+                [](const ResponseView &s, std::vector<double> &to) {
+                  to = {s.ground_acceleration(), s.ground_acceleration_z()};
+                },
+                {}};
+      return {{"ground_acceleration_m_s2"},
+              [](const ResponseView &s, std::vector<double> &to) {
+                to.assign(1, s.ground_acceleration());
+              },
+              {}};
+    }
+
+    /// The plan corners' accelerations, x and y of each corner of each floor,
+    /// each its building's, as the peaks' plan holds them.
+    Series
+    corner_acceleration_series(const ResponseView &state, const PeakResponse &peaks)
+    {
+      const PlanResponse *plan = peaks.plan(); // requests_of refused it in 2D
+      std::vector<ColumnOwner> owners; // x and y of each corner of each floor
+      for (unsigned int b = 0; b < state.model.buildings.size(); ++b)
+        for (const PlanFloor &floor : state.model.buildings[b].plan)
+          owners.insert(owners.end(), 2 * floor.outline.size(), ColumnOwner{Owner::building, b});
+      return {plan->corner_acceleration_names(), copy_of(plan->corner_accelerations()), owners};
+    }
+
+    /// The section states of the fibre members `request` names; those named
+    /// that are not fibre members are left out, and none at all is bad input.
+    Series
+    section_series_named(const RecorderRequest &request, const ResponseView &state,
+                         const std::string &input_file, const int line)
+    {
+      const NonlinearElements  &elements = state.elements;
+      std::vector<unsigned int> chosen   = elements_named(
+        request.labels, state.model, elements, 0, elements.size(),
+        [&](const unsigned int h, const unsigned int b) { return elements[h].building == b; },
+        "section states", "fibre member",
+        state.model.dimension == 3 ? "A_C1.1.1 or A_BX1.1.1" : "A_C1.1 or A_B2.1", input_file,
+        line);
+      chosen.erase(std::remove_if(chosen.begin(), chosen.end(),
+                                  [&](const unsigned int h) {
+                                    return !fibre_section_of(elements[h], 0);
+                                  }),
+                   chosen.end());
+      if (chosen.empty())
+        throw InputError(input_file, line, "Output/Recorders/Record",
+                         "'section states': no fibre member among those asked for "
+                         "(Building <i>/Member model = fibre)");
+      return section_state_series(elements, chosen);
+    }
+
     /// The columns and the row function of one recorded quantity (the
     /// owners of its columns: series_of).
     Series
@@ -599,31 +733,26 @@ namespace poundfe
               const std::shared_ptr<const StoreyForces> &forces, const std::string &input_file,
               const int line)
     {
-      const FloorResponse    &floors   = peaks.floors();
-      const NonlinearElements &elements = state.elements;
-      const unsigned int      n_hyst   = peaks.n_hysteretic();
-      auto copy = [](const std::vector<double> &from) {
-        return [&from](const ResponseView &, std::vector<double> &to) { to = from; };
-      };
+      const FloorResponse &floors = peaks.floors();
       const bool plan = peaks.plan() != nullptr; // a 3D model: x, y and θz
       switch (request.quantity)
         {
           case RecordedQuantity::floor_displacement:
             if (plan)
               return plan_series(request.quantity, state.model, peaks);
-            return {floors.column_names("floor", "disp_m"), copy(floors.displacement()), {}};
+            return {floors.column_names("floor", "disp_m"), copy_of(floors.displacement()), {}};
           case RecordedQuantity::floor_velocity:
             if (plan)
               return plan_series(request.quantity, state.model, peaks);
-            return {floors.column_names("floor", "vel_m_s"), copy(floors.velocity()), {}};
+            return {floors.column_names("floor", "vel_m_s"), copy_of(floors.velocity()), {}};
           case RecordedQuantity::floor_acceleration:
             if (plan)
               return plan_series(request.quantity, state.model, peaks);
-            return {floors.column_names("floor", "acc_m_s2"), copy(floors.absolute_acceleration()), {}};
+            return {floors.column_names("floor", "acc_m_s2"), copy_of(floors.absolute_acceleration()), {}};
           case RecordedQuantity::drift_ratio:
             if (plan)
               return plan_series(request.quantity, state.model, peaks);
-            return {floors.column_names("storey", "drift_ratio"), copy(floors.drift_ratio()), {}};
+            return {floors.column_names("storey", "drift_ratio"), copy_of(floors.drift_ratio()), {}};
           case RecordedQuantity::storey_shear:
             if (plan)
               return plan_storey_shear_series(peaks, forces);
@@ -636,98 +765,19 @@ namespace poundfe
           case RecordedQuantity::member_forces:
             return member_force_series(request, state.model, forces, input_file, line);
           case RecordedQuantity::hinge_states:
-            return hinge_state_series(
-              elements, elements_named(request.labels, state.model, elements, 0, n_hyst,
-                                       [&](const unsigned int h, const unsigned int b) {
-                                         return elements[h].building == b;
-                                       },
-                                       "hinge states", "hinge or Bouc-Wen storey",
-                                       "A3_C1.2_bottom, A3_storey1 or in 3D A5_C1.3.2_bottom_z",
-                                       input_file, line));
+            return hinge_series_named(request, state, peaks, input_file, line);
           case RecordedQuantity::gap_states:
-            {
-              // gaps follow the hysteretic elements, in model.gaps order
-              const Model &model = state.model;
-              return gap_state_series(
-                elements, elements_named(request.labels, model, elements, n_hyst,
-                                         n_hyst + peaks.n_gaps(),
-                                         [&](const unsigned int h, const unsigned int b) {
-                                           const Gap &gap = model.gaps[h - n_hyst];
-                                           return (gap.nodes[0] >= 0 && gap.buildings[0] == b) ||
-                                                  (gap.nodes[1] >= 0 && gap.buildings[1] == b);
-                                         },
-                                         "gap states", "gap element",
-                                         "A3-B2@6.5 or in 3D A5-B5@13.6/1", input_file, line));
-            }
+            return gap_series_named(request, state, peaks, input_file, line);
           case RecordedQuantity::energy:
-            {
-              // a column for the foundations' dashpots only when there are
-              // some, for the held gravity loads' work only after gravity
-              const bool foundations = !state.model.foundations.empty();
-              const bool gravity     = state.model.gravity_analysis.enabled;
-              std::vector<std::string> names{"input_J", "kinetic_J", "damping_J", "strain_J",
-                                             "hysteretic_J", "contact_J", "balance_error",
-                                             "friction_J", "belt_J", "links_J"};
-              if (foundations)
-                names.push_back("foundation_J");
-              if (gravity)
-                names.push_back("constant_load_J");
-              return {names, [foundations, gravity](const ResponseView   &s,
-                                                    std::vector<double> &to) {
-                        const EnergyBalance e = s.energy();
-                        to = {e.input, e.kinetic, e.damping, e.strain, e.hysteretic, e.contact,
-                              s.max_energy_error(), e.friction, e.belt, e.links};
-                        if (foundations)
-                          to.push_back(e.foundation);
-                        if (gravity)
-                          to.push_back(e.constant_load);
-                      }, {}};
-            }
+            return energy_series(state.model);
           case RecordedQuantity::ground_motion:
-            if (plan) // every component as applied: along x and y (after the incidence rotation)
-              return ground_motion_3d_series(state.has_vertical_ground_motion());
-            if (state.has_vertical_ground_motion()) // Components = 3: the vertical one too
-              return {{"ground_acceleration_m_s2", "ground_acceleration_z_m_s2"},
-                      [](const ResponseView &s, std::vector<double> &to) {
-                        to = {s.ground_acceleration(), s.ground_acceleration_z()};
-                      }, {}};
-            return {{"ground_acceleration_m_s2"}, [](const ResponseView &s, std::vector<double> &to) {
-                      to.assign(1, s.ground_acceleration());
-                    }, {}};
+            return ground_motion_series(state, plan);
           case RecordedQuantity::phase_portrait:
             return phase_portrait_series(state);
           case RecordedQuantity::corner_acceleration:
-            {
-              const PlanResponse *plan = peaks.plan(); // requests_of refused it in 2D
-              std::vector<ColumnOwner> owners; // x and y of each corner of each floor
-              for (unsigned int b = 0; b < state.model.buildings.size(); ++b)
-                for (const PlanFloor &floor : state.model.buildings[b].plan)
-                  owners.insert(owners.end(), 2 * floor.outline.size(),
-                                ColumnOwner{Owner::building, b});
-              return {plan->corner_acceleration_names(), copy(plan->corner_accelerations()),
-                      owners};
-            }
+            return corner_acceleration_series(state, peaks);
           case RecordedQuantity::section_states:
-            {
-              std::vector<unsigned int> chosen = elements_named(
-                request.labels, state.model, elements, 0, elements.size(),
-                [&](const unsigned int h, const unsigned int b) {
-                  return elements[h].building == b;
-                },
-                "section states", "fibre member",
-                state.model.dimension == 3 ? "A_C1.1.1 or A_BX1.1.1" : "A_C1.1 or A_B2.1",
-                input_file, line);
-              chosen.erase(std::remove_if(chosen.begin(), chosen.end(),
-                                          [&](const unsigned int h) {
-                                            return !fibre_section_of(elements[h], 0);
-                                          }),
-                           chosen.end());
-              if (chosen.empty())
-                throw InputError(input_file, line, "Output/Recorders/Record",
-                                 "'section states': no fibre member among those asked for "
-                                 "(Building <i>/Member model = fibre)");
-              return section_state_series(elements, chosen);
-            }
+            return section_series_named(request, state, input_file, line);
           case RecordedQuantity::residual_drift:
             break; // not a time series
         }
@@ -936,6 +986,23 @@ namespace poundfe
       }
   }
 
+  namespace
+  {
+    /// The recorded quantity of Record's name `name` (std::invalid_argument
+    /// with the names known if there is none).
+    RecordedQuantity
+    quantity_named(const std::string &name)
+    {
+      for (const QuantityInfo &q : quantities)
+        if (name == q.name)
+          return q.quantity;
+      std::string list;
+      for (const QuantityInfo &q : quantities)
+        list += (list.empty() ? "" : ", ") + std::string(q.name);
+      throw std::invalid_argument("unknown quantity '" + name + "' (one of: " + list + ")");
+    }
+  } // namespace
+
   std::vector<RecorderRequest>
   RecorderParameters::parse(const std::string &text)
   {
@@ -961,17 +1028,7 @@ namespace poundfe
           }
         const auto of = (item + " ").find(" of "); // also a trailing " of" with no list
         const std::string name = trim(of == std::string::npos ? item : item.substr(0, of));
-        bool              known = false;
-        for (const QuantityInfo &q : quantities)
-          if (name == q.name)
-            request.quantity = q.quantity, known = true;
-        if (!known)
-          {
-            std::string list;
-            for (const QuantityInfo &q : quantities)
-              list += (list.empty() ? "" : ", ") + std::string(q.name);
-            throw std::invalid_argument("unknown quantity '" + name + "' (one of: " + list + ")");
-          }
+        request.quantity       = quantity_named(name);
         if (of != std::string::npos)
           {
             std::istringstream labels(of + 4 <= item.size() ? item.substr(of + 4) : "");

@@ -80,6 +80,20 @@ namespace poundfe
     FieldRanks rows_of_ranks(const Vector &u, const ElementFrameStates &states) const;
     /// The arrays of a time frame.
     FieldFrame time_frame(double time, const Vector &u, const ElementFrameStates &states) const;
+    /// The cell values of the nonlinear elements and storey links in a time
+    /// frame: force, penetration, hysteretic z, plastic deformation, contact.
+    struct ElementCellValues
+    {
+      std::vector<double> force, penetration, z, plastic;
+      std::vector<int>    contact;
+    };
+    ElementCellValues element_cell_values(const Vector &u, const ElementFrameStates &states) const;
+    /// The local end forces N V M at both ends of every cell: the members'
+    /// (K_e u_e plus self-weight's fixed-end forces, or the fibre members'
+    /// resisting forces) and a storey link's shear as V.
+    std::vector<std::array<double, 6>>
+    cell_end_forces(const Vector &u, const ElementFrameStates &states,
+                    const std::vector<double> &link_force) const;
 
     unsigned int add_point(const Point2 &position, const PointSource &source);
     // the constructor's phases: points of the nodes, the cells (adding the
@@ -609,39 +623,20 @@ namespace poundfe
     impl->writer->write_frame(time, impl->time_frame(time, u, states));
   }
 
-  FieldFrame
-  VtuSeries::Impl::time_frame(const double time, const Vector &u,
-                              const ElementFrameStates &states) const
+  VtuSeries::Impl::ElementCellValues
+  VtuSeries::Impl::element_cell_values(const Vector &u, const ElementFrameStates &states) const
   {
-    FieldFrame frame = this->frame(u, 1.0, &states);
-    frame.field.push_back({"TIME", 1, false, false, {time}});
-    if (space)
-      return frame;
     const unsigned int n = cells.types.size();
-    // end forces N V M at both ends, then force, contact, penetration, z,
-    // plastic deformation
-    std::vector<std::array<double, 6>> end_forces(n, {{0, 0, 0, 0, 0, 0}});
-    std::vector<double> force(n, 0), penetration(n, 0), z(n, 0), plastic(n, 0);
-    std::vector<int>    contact(n, 0);
-    for (unsigned int e = 0; e < model.members.size(); ++e)
-      {
-        const Member      &m = model.members[e];
-        const FrameElement element(model.nodes[m.nodes[0]].position,
-                                   model.nodes[m.nodes[1]].position, m.section);
-        // K_e u_e plus the fixed-end forces of a distributed self-weight
-        const Vector6 f = element.local_end_forces(element_displacements(m, u)) +
-                          element.rotation() * self_weight_end_forces(model, m);
-        for (unsigned int k = 0; k < 6; ++k)
-          end_forces[e][k] = f[k];
-      }
-    set_fibre_end_forces(states, end_forces);
+    ElementCellValues  values{std::vector<double>(n, 0), std::vector<double>(n, 0),
+                             std::vector<double>(n, 0), std::vector<double>(n, 0),
+                             std::vector<int>(n, 0)};
     for (unsigned int l = 0; l < model.links.size(); ++l)
       {
         const StoreyLink &link  = model.links[l];
         const unsigned int cell = model.members.size() + l;
         if (!link.hysteretic) // a hysteretic storey's force comes from its element
-          force[cell] = link.stiffness * (dof_value(u, link.nodes[1], Component::ux) -
-                                          dof_value(u, link.nodes[0], Component::ux));
+          values.force[cell] = link.stiffness * (dof_value(u, link.nodes[1], Component::ux) -
+                                                 dof_value(u, link.nodes[0], Component::ux));
       }
     unsigned int n_hinges = 0, n_storeys = 0, n_gaps = 0;
     using State = ElementFrameStates;
@@ -658,23 +653,57 @@ namespace poundfe
               break;
             case ElementKind::gap:
               cell = first_gap_cell + n_gaps++;
-              contact[cell]     = states(h, State::active) != 0;
-              penetration[cell] = std::max(0.0, states(h, State::history));
-              force[cell]       = states(h, State::force);
+              values.contact[cell]     = states(h, State::active) != 0;
+              values.penetration[cell] = std::max(0.0, states(h, State::history));
+              values.force[cell]       = states(h, State::force);
               continue;
             default: // springs and friction to the ground: not drawn
               continue;
           }
-        force[cell]   = states(h, State::force);
-        z[cell]       = states(h, State::history);
-        plastic[cell] = states(h, State::plastic);
+        values.force[cell]   = states(h, State::force);
+        values.z[cell]       = states(h, State::history);
+        values.plastic[cell] = states(h, State::plastic);
       }
+    return values;
+  }
+
+  std::vector<std::array<double, 6>>
+  VtuSeries::Impl::cell_end_forces(const Vector &u, const ElementFrameStates &states,
+                                   const std::vector<double> &link_force) const
+  {
+    std::vector<std::array<double, 6>> end_forces(cells.types.size(), {{0, 0, 0, 0, 0, 0}});
+    for (unsigned int e = 0; e < model.members.size(); ++e)
+      {
+        const Member      &m = model.members[e];
+        const FrameElement element(model.nodes[m.nodes[0]].position,
+                                   model.nodes[m.nodes[1]].position, m.section);
+        // K_e u_e plus the fixed-end forces of a distributed self-weight
+        const Vector6 f = element.local_end_forces(element_displacements(m, u)) +
+                          element.rotation() * self_weight_end_forces(model, m);
+        for (unsigned int k = 0; k < 6; ++k)
+          end_forces[e][k] = f[k];
+      }
+    set_fibre_end_forces(states, end_forces);
     for (unsigned int l = 0; l < model.links.size(); ++l) // a storey's shear as V
       {
         const unsigned int cell = model.members.size() + l;
-        end_forces[cell][1]     = force[cell];
-        end_forces[cell][4]     = -force[cell];
+        end_forces[cell][1]     = link_force[cell];
+        end_forces[cell][4]     = -link_force[cell];
       }
+    return end_forces;
+  }
+
+  FieldFrame
+  VtuSeries::Impl::time_frame(const double time, const Vector &u,
+                              const ElementFrameStates &states) const
+  {
+    FieldFrame frame = this->frame(u, 1.0, &states);
+    frame.field.push_back({"TIME", 1, false, false, {time}});
+    if (space)
+      return frame;
+    const ElementCellValues values = element_cell_values(u, states);
+    const std::vector<std::array<double, 6>> end_forces =
+      cell_end_forces(u, states, values.force);
 
     static const char *end_force_names[6] = {"N_start", "V_start", "M_start",
                                              "N_end",   "V_end",   "M_end"};
@@ -685,11 +714,12 @@ namespace poundfe
           array.values.push_back(f[k]);
         frame.cell.push_back(std::move(array));
       }
-    for (const auto &[array_name, values] :
-         {std::pair{"force", &force}, {"penetration", &penetration}, {"z", &z},
-          {"plastic_deformation", &plastic}})
-      frame.cell.push_back({array_name, 1, false, false, *values});
-    frame.cell.push_back({"contact", 1, true, false, std::vector<double>(contact.begin(), contact.end())});
+    for (const auto &[array_name, cell_values] :
+         {std::pair{"force", &values.force}, {"penetration", &values.penetration},
+          {"z", &values.z}, {"plastic_deformation", &values.plastic}})
+      frame.cell.push_back({array_name, 1, false, false, *cell_values});
+    frame.cell.push_back({"contact", 1, true, false,
+                          std::vector<double>(values.contact.begin(), values.contact.end())});
     add_section_arrays(states, frame);
     return frame;
   }

@@ -10,6 +10,29 @@
 
 namespace poundfe
 {
+  namespace
+  {
+    /// The marginals of dynamic FORM's variables: the scale factor's, then
+    /// standard normals for the excitation's and the parameters'; their
+    /// names appended to `names`.
+    std::vector<Distribution>
+    variables_of(const RealizationRunner &runner, const DynamicFormSettings &settings,
+                 std::vector<std::string> &names)
+    {
+      const unsigned int        n_p = runner.n_parameters(), n_e = settings.n_excitation;
+      std::vector<Distribution> marginals = settings.scale;
+      for (unsigned int i = 0; i < n_e + n_p; ++i)
+        marginals.push_back(Distribution::from_moments(DistributionType::normal, 0, 1));
+      if (!settings.scale.empty())
+        names.push_back("scale");
+      for (unsigned int i = 0; i < n_e; ++i)
+        names.push_back("xi" + std::to_string(i + 1));
+      const std::vector<std::string> &columns = runner.response_names();
+      names.insert(names.end(), columns.end() - n_p, columns.end());
+      return marginals;
+    }
+  } // namespace
+
   DynamicFormResult
   dynamic_form(RealizationRunner &runner, const ResponseLimitStates &limit_states,
                const DynamicFormSettings &settings)
@@ -18,17 +41,9 @@ namespace poundfe
     const unsigned int n_s = settings.scale.size(), n_e = settings.n_excitation;
     AssertThrow(n_e <= n_load && n_s <= 1, dealii::ExcMessage("dynamic FORM variables"));
 
-    DynamicFormResult result;
-    // the marginals: the scale factor's, standard normals for the others
-    std::vector<Distribution> marginals = settings.scale;
-    for (unsigned int i = 0; i < n_e + n_p; ++i)
-      marginals.push_back(Distribution::from_moments(DistributionType::normal, 0, 1));
-    if (n_s)
-      result.variable_names.push_back("scale");
-    for (unsigned int i = 0; i < n_e; ++i)
-      result.variable_names.push_back("xi" + std::to_string(i + 1));
-    const std::vector<std::string> &columns = runner.response_names();
-    result.variable_names.insert(result.variable_names.end(), columns.end() - n_p, columns.end());
+    DynamicFormResult               result;
+    const std::vector<Distribution> marginals =
+      variables_of(runner, settings, result.variable_names);
 
     // the held normals of the loading, then G(x) = system value of one run
     std::vector<double> held(runner.n_variables());

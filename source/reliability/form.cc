@@ -60,6 +60,24 @@ namespace poundfe
       return d.type() == DistributionType::truncated_normal ? d.parameters()[1] :
                                                               d.standard_deviation();
     }
+
+    /// Why FORM has no direction to search at iteration `it`, where the
+    /// limit state is `value` and its gradient's norm `ng`: either is not
+    /// finite, or the gradient is zero; empty when it has one.
+    std::string
+    why_no_search_direction(const double value, const double ng, const unsigned int it)
+    {
+      if (!std::isfinite(value) || !std::isfinite(ng))
+        return "the limit state or its gradient is not finite at iteration " + std::to_string(it) +
+               " (an expression undefined or infinite near that point)";
+      if (ng > 0)
+        return {};
+      return it == 0 ? "its gradient is zero at the start (u = 0, the variables' medians): "
+                       "the limit state does not vary there, so FORM has no direction to "
+                       "search (a limit state that does not depend on the variables FORM "
+                       "varies, or is flat around the medians); FORM does not apply" :
+                       "its gradient vanished at iteration " + std::to_string(it);
+    }
   } // namespace
 
   FormResult
@@ -77,23 +95,12 @@ namespace poundfe
         if (it == 0)
           scale = std::abs(value) > 0 ? std::abs(value) : 1;
         const double ng = norm(grad);
-        if (!std::isfinite(value) || !std::isfinite(ng))
+        if (const std::string why = why_no_search_direction(value, ng, it); !why.empty())
           {
-            result.failure = "the limit state or its gradient is not finite at iteration " +
-                             std::to_string(it) + " (an expression undefined or infinite near "
-                             "that point)";
-            break;
-          }
-        if (!(ng > 0))
-          {
-            // no direction to search: say so rather than report u = 0 as a design point
-            result.zero_gradient_at_start = it == 0;
-            result.failure =
-              it == 0 ? "its gradient is zero at the start (u = 0, the variables' medians): "
-                        "the limit state does not vary there, so FORM has no direction to "
-                        "search (a limit state that does not depend on the variables FORM "
-                        "varies, or is flat around the medians); FORM does not apply" :
-                        "its gradient vanished at iteration " + std::to_string(it);
+            // say so rather than report u = 0 as a design point
+            const bool finite             = std::isfinite(value) && std::isfinite(ng);
+            result.zero_gradient_at_start = finite && it == 0;
+            result.failure                = why;
             break;
           }
         for (std::size_t i = 0; i < u.size(); ++i)

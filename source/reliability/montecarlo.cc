@@ -58,6 +58,24 @@ namespace poundfe
 
   namespace
   {
+    /// The comma-separated numbers of a table's row `line` into `fields`;
+    /// false when a field is not a number (a row cut by a kill).
+    bool
+    read_numbers(const std::string &line, std::vector<double> &fields)
+    {
+      const char *p    = line.c_str();
+      bool        good = true;
+      while (*p && good)
+        {
+          char        *next = nullptr;
+          const double x    = std::strtod(p, &next);
+          good              = next != p && (*next == ',' || *next == '\0');
+          fields.push_back(x);
+          p = *next == ',' ? next + 1 : next;
+        }
+      return good;
+    }
+
     /// The complete rows of an existing realizations.csv; sets `damaged` when a
     /// line (a partial last line of a killed run) had to be dropped.
     std::map<std::uint64_t, RealizationRow>
@@ -90,16 +108,7 @@ namespace poundfe
               continue;
             }
           std::vector<double> fields;
-          const char         *p    = line.c_str();
-          bool                good = true;
-          while (*p && good)
-            {
-              char        *next = nullptr;
-              const double x    = std::strtod(p, &next);
-              good              = next != p && (*next == ',' || *next == '\0');
-              fields.push_back(x);
-              p = *next == ',' ? next + 1 : next;
-            }
+          const bool          good = read_numbers(line, fields);
           if (!good || fields.size() != n_responses + 3)
             {
               damaged = true;

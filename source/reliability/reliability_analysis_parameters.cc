@@ -177,6 +177,53 @@ namespace poundfe
     return method_names().name(method);
   }
 
+  namespace
+  {
+    /// Reliability/FORM, Sampling and Subset: the settings of each method.
+    void
+    declare_method_entries(dealii::ParameterHandler &prm, ReliabilityAnalysisParameters &p)
+    {
+      using dealii::Patterns::Double;
+      using dealii::Patterns::Integer;
+      prm.enter_subsection("FORM");
+      prm.add_parameter("Maximum iterations", p.form_max_iterations,
+                        "HL-RF steps before FORM gives up (exit 2). Unit: count.", Integer(1));
+      prm.add_parameter("Tolerance", p.form_tolerance,
+                        "e1 = e2: |G|/|G(u0)| and the distance of u from the line of alpha. "
+                        "Unit: dimensionless (standard deviations for e2).", Double(1e-14, 0.1));
+      prm.add_parameter("Gradient step", p.gradient_step,
+                        "Finite-difference step in the standard normal space. Unit: "
+                        "dimensionless (standard deviations).", Double(1e-10, 0.5));
+      prm.add_parameter("Central differences", p.central_difference,
+                        "Central (2n evaluations) rather than forward (n) differences for the "
+                        "gradient. Unit: -.");
+      prm.add_parameter("Hessian step", p.hessian_step,
+                        "SORM: finite-difference step of the Hessian at the design point. Unit: "
+                        "dimensionless (standard deviations).", Double(1e-8, 0.5));
+      prm.leave_subsection();
+      prm.enter_subsection("Sampling");
+      prm.add_parameter("Monte Carlo samples", p.monte_carlo_samples,
+                        "Largest number of crude Monte Carlo samples. Unit: count.", Integer(1));
+      prm.add_parameter("Importance samples", p.importance_samples,
+                        "Largest number of importance samples: of the method, and of the check "
+                        "of each FORM around its design point. Unit: count.", Integer(1));
+      prm.add_parameter("Target COV", p.target_cov,
+                        "Stop sampling once the estimator's COV reaches this (0: all samples). "
+                        "Unit: dimensionless.", Double(0, 1));
+      prm.leave_subsection();
+      prm.enter_subsection("Subset");
+      prm.add_parameter("Samples per level", p.subset_samples_per_level, "N. Unit: count.",
+                        Integer(2));
+      prm.add_parameter("Conditional probability", p.subset_conditional_probability,
+                        "p0 in (0, 0.5]. Unit: dimensionless.", Double(0, 0.5));
+      prm.add_parameter("Maximum levels", p.subset_max_levels, "Unit: count.", Integer(1, 100));
+      prm.add_parameter("Proposal spread", p.subset_proposal_spread,
+                        "Standard deviation of the modified Metropolis proposal. Unit: "
+                        "dimensionless.", Double(1e-3, 10));
+      prm.leave_subsection();
+    }
+  } // namespace
+
   void
   ReliabilityAnalysisParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -212,44 +259,42 @@ namespace poundfe
                       "sampling (around the design points), Monte Carlo, subset. Unit: -.");
     prm.add_parameter("Seed", seed, "Seed of the random streams of the sampling methods. "
                       "Unit: -.", Integer(0));
-    prm.enter_subsection("FORM");
-    prm.add_parameter("Maximum iterations", form_max_iterations,
-                      "HL-RF steps before FORM gives up (exit 2). Unit: count.", Integer(1));
-    prm.add_parameter("Tolerance", form_tolerance,
-                      "e1 = e2: |G|/|G(u0)| and the distance of u from the line of alpha. "
-                      "Unit: dimensionless (standard deviations for e2).", Double(1e-14, 0.1));
-    prm.add_parameter("Gradient step", gradient_step,
-                      "Finite-difference step in the standard normal space. Unit: "
-                      "dimensionless (standard deviations).", Double(1e-10, 0.5));
-    prm.add_parameter("Central differences", central_difference,
-                      "Central (2n evaluations) rather than forward (n) differences for the "
-                      "gradient. Unit: -.");
-    prm.add_parameter("Hessian step", hessian_step,
-                      "SORM: finite-difference step of the Hessian at the design point. Unit: "
-                      "dimensionless (standard deviations).", Double(1e-8, 0.5));
-    prm.leave_subsection();
-    prm.enter_subsection("Sampling");
-    prm.add_parameter("Monte Carlo samples", monte_carlo_samples,
-                      "Largest number of crude Monte Carlo samples. Unit: count.", Integer(1));
-    prm.add_parameter("Importance samples", importance_samples,
-                      "Largest number of importance samples: of the method, and of the check "
-                      "of each FORM around its design point. Unit: count.", Integer(1));
-    prm.add_parameter("Target COV", target_cov,
-                      "Stop sampling once the estimator's COV reaches this (0: all samples). "
-                      "Unit: dimensionless.", Double(0, 1));
-    prm.leave_subsection();
-    prm.enter_subsection("Subset");
-    prm.add_parameter("Samples per level", subset_samples_per_level, "N. Unit: count.",
-                      Integer(2));
-    prm.add_parameter("Conditional probability", subset_conditional_probability,
-                      "p0 in (0, 0.5]. Unit: dimensionless.", Double(0, 0.5));
-    prm.add_parameter("Maximum levels", subset_max_levels, "Unit: count.", Integer(1, 100));
-    prm.add_parameter("Proposal spread", subset_proposal_spread,
-                      "Standard deviation of the modified Metropolis proposal. Unit: "
-                      "dimensionless.", Double(1e-3, 10));
-    prm.leave_subsection();
+    declare_method_entries(prm, *this);
     prm.leave_subsection();
   }
+
+  namespace
+  {
+    /// Reliability/Limit states `text`, "NAME: EXPRESSION; ...": each name
+    /// once, each expression parsed over the variables and constants.
+    void
+    read_limit_states(const InputFile &input, const std::string &text,
+                      const std::vector<std::string>                    &variable_names,
+                      const std::vector<std::pair<std::string, double>> &constants,
+                      std::vector<std::string> &names, std::vector<std::string> &expressions)
+    {
+      for (const std::string &item : input_items(text, ';'))
+        {
+          const std::size_t colon = item.find(':');
+          const std::string name  = colon == std::string::npos ? "" : trimmed(item.substr(0, colon));
+          if (!is_identifier(name))
+            input.fail(section + "Limit states", "'" + item + "' is not 'NAME: EXPRESSION'");
+          if (std::find(names.begin(), names.end(), name) != names.end())
+            input.fail(section + "Limit states", "limit state '" + name + "' is given twice");
+          const std::string expression = trimmed(item.substr(colon + 1));
+          try
+            {
+              LimitStateExpression(expression, variable_names, constants);
+            }
+          catch (const std::invalid_argument &e)
+            {
+              input.fail(section + "Limit states", "limit state '" + name + "': " + e.what());
+            }
+          names.push_back(name);
+          expressions.push_back(expression);
+        }
+    }
+  } // namespace
 
   void
   ReliabilityAnalysisParameters::check(const InputFile &input)
@@ -283,27 +328,8 @@ namespace poundfe
         constants.emplace_back(w[0], number(input, section + "Constants", w[1], "constant " + w[0]));
       }
     correlation = parse_correlation(input, section + "Correlation", correlation_text, distributions);
-    for (const std::string &item : input_items(limit_states_text, ';'))
-      {
-        const std::size_t colon = item.find(':');
-        const std::string name  = colon == std::string::npos ? "" : trimmed(item.substr(0, colon));
-        if (!is_identifier(name))
-          input.fail(section + "Limit states", "'" + item + "' is not 'NAME: EXPRESSION'");
-        if (std::find(limit_state_names.begin(), limit_state_names.end(), name) !=
-            limit_state_names.end())
-          input.fail(section + "Limit states", "limit state '" + name + "' is given twice");
-        const std::string expression = trimmed(item.substr(colon + 1));
-        try
-          {
-            LimitStateExpression(expression, variable_names, constants);
-          }
-        catch (const std::invalid_argument &e)
-          {
-            input.fail(section + "Limit states", "limit state '" + name + "': " + e.what());
-          }
-        limit_state_names.push_back(name);
-        expressions.push_back(expression);
-      }
+    read_limit_states(input, limit_states_text, variable_names, constants, limit_state_names,
+                      expressions);
     for (const std::string &m : input_items(methods_text, ','))
       {
         try

@@ -146,6 +146,63 @@ namespace poundfe
         }
       return std::isfinite(sum) ? -sum : std::numeric_limits<double>::max();
     }
+
+    using Point2D = std::array<double, 2>;
+
+    /// The minimum of a smooth unimodal `f` of two variables by Nelder-Mead
+    /// (reflection -1, expansion -2, contraction ±0.5, shrink 0.5) from a
+    /// simplex of sides 0.5 at `start`: the point and f there.
+    template <typename Function>
+    std::pair<Point2D, double>
+    nelder_mead_minimum(const Function &f, const Point2D &start)
+    {
+      // a + t (b - a)
+      auto between = [](const Point2D &a, const Point2D &b, const double t) {
+        return Point2D{{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])}};
+      };
+      std::array<Point2D, 3> simplex{
+        {start, {{start[0] + 0.5, start[1]}}, {{start[0], start[1] + 0.5}}}};
+      std::array<double, 3> value{{f(simplex[0]), f(simplex[1]), f(simplex[2])}};
+      for (unsigned int iteration = 0; iteration < 2000; ++iteration)
+        {
+          std::array<int, 3> order{{0, 1, 2}};
+          std::sort(order.begin(), order.end(), [&](int a, int b) { return value[a] < value[b]; });
+          const int best = order[0], middle = order[1], worst = order[2];
+          if (std::abs(value[worst] - value[best]) < 1e-12 * (1 + std::abs(value[best])) &&
+              std::abs(simplex[worst][0] - simplex[best][0]) +
+                  std::abs(simplex[worst][1] - simplex[best][1]) <
+                1e-10)
+            break;
+          const Point2D centroid = between(simplex[best], simplex[middle], 0.5);
+          auto along = [&](const double t) { return between(centroid, simplex[worst], t); };
+          const Point2D reflected = along(-1);
+          const double  fr        = f(reflected);
+          if (fr < value[best])
+            {
+              const Point2D expanded = along(-2);
+              const double  fe       = f(expanded);
+              simplex[worst] = fe < fr ? expanded : reflected;
+              value[worst]   = std::min(fe, fr);
+            }
+          else if (fr < value[middle])
+            simplex[worst] = reflected, value[worst] = fr;
+          else
+            {
+              const Point2D contracted = fr < value[worst] ? along(-0.5) : along(0.5);
+              const double  fc         = f(contracted);
+              if (fc < std::min(fr, value[worst]))
+                simplex[worst] = contracted, value[worst] = fc;
+              else
+                for (const int i : {middle, worst}) // shrink towards the best
+                  {
+                    simplex[i] = between(simplex[i], simplex[best], 0.5);
+                    value[i]   = f(simplex[i]);
+                  }
+            }
+        }
+      const int best = std::min_element(value.begin(), value.end()) - value.begin();
+      return {simplex[best], value[best]};
+    }
   } // namespace
 
   LognormalFragility
@@ -172,58 +229,12 @@ namespace poundfe
     double log_mean = 0;
     for (const double x : intensity)
       log_mean += std::log(x) / intensity.size();
-    // Nelder-Mead on (ln theta, ln beta); the likelihood is smooth and unimodal here.
-    using Point = std::array<double, 2>;
-    auto f      = [&](const Point &x) {
-      return negative_log_likelihood(x, intensity, n_failures, n_trials);
-    };
-    // a + t (b - a)
-    auto between = [](const Point &a, const Point &b, const double t) {
-      return Point{{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])}};
-    };
-    std::array<Point, 3>  simplex{{{{log_mean, std::log(0.5)}},
-                                   {{log_mean + 0.5, std::log(0.5)}},
-                                   {{log_mean, std::log(0.5) + 0.5}}}};
-    std::array<double, 3> value{{f(simplex[0]), f(simplex[1]), f(simplex[2])}};
-    for (unsigned int iteration = 0; iteration < 2000; ++iteration)
-      {
-        std::array<int, 3> order{{0, 1, 2}};
-        std::sort(order.begin(), order.end(), [&](int a, int b) { return value[a] < value[b]; });
-        const int best = order[0], middle = order[1], worst = order[2];
-        if (std::abs(value[worst] - value[best]) < 1e-12 * (1 + std::abs(value[best])) &&
-            std::abs(simplex[worst][0] - simplex[best][0]) + std::abs(simplex[worst][1] - simplex[best][1]) < 1e-10)
-          break;
-        const Point centroid = between(simplex[best], simplex[middle], 0.5);
-        auto along = [&](const double t) { return between(centroid, simplex[worst], t); };
-        const Point  reflected = along(-1);
-        const double fr        = f(reflected);
-        if (fr < value[best])
-          {
-            const Point  expanded = along(-2);
-            const double fe       = f(expanded);
-            simplex[worst] = fe < fr ? expanded : reflected;
-            value[worst]   = std::min(fe, fr);
-          }
-        else if (fr < value[middle])
-          simplex[worst] = reflected, value[worst] = fr;
-        else
-          {
-            const Point  contracted = fr < value[worst] ? along(-0.5) : along(0.5);
-            const double fc         = f(contracted);
-            if (fc < std::min(fr, value[worst]))
-              simplex[worst] = contracted, value[worst] = fc;
-            else
-              for (const int i : {middle, worst}) // shrink towards the best
-                {
-                  simplex[i] = between(simplex[i], simplex[best], 0.5);
-                  value[i]   = f(simplex[i]);
-                }
-          }
-      }
-    const int best = std::min_element(value.begin(), value.end()) - value.begin();
-    curve.theta          = std::exp(simplex[best][0]);
-    curve.beta           = std::exp(simplex[best][1]);
-    curve.log_likelihood = -value[best];
+    const auto [x, value] = nelder_mead_minimum(
+      [&](const Point2D &p) { return negative_log_likelihood(p, intensity, n_failures, n_trials); },
+      {{log_mean, std::log(0.5)}});
+    curve.theta          = std::exp(x[0]);
+    curve.beta           = std::exp(x[1]);
+    curve.log_likelihood = -value;
     curve.fitted         = true;
     if (curve.beta < 1e-3)
       curve.note = "the levels separate failures from survivals: beta tends to zero";

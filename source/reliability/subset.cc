@@ -251,6 +251,27 @@ namespace poundfe
       return my_seeds;
     }
 
+    /// The modified Metropolis candidate (reliability/subset.h): each
+    /// component x of `state` moves to x + spread ξ (ξ standard normal) with the
+    /// probability min(1, φ(x + spread ξ) / φ(x)), into `candidate`; returns
+    /// whether any moved.
+    bool
+    propose_component_wise(const std::vector<double> &state, const double spread,
+                           NormalStream &random, std::vector<double> &candidate)
+    {
+      bool moved = false;
+      for (unsigned int c = 0; c < candidate.size(); ++c)
+        {
+          const double x     = state[c];
+          const double xi    = x + spread * random.next();
+          const double ratio = std::exp(0.5 * (x * x - xi * xi));
+          const double u     = standard_normal_cdf(random.next());
+          candidate[c]       = u < ratio ? xi : x;
+          moved |= u < ratio;
+        }
+      return moved;
+    }
+
     void
     SubsetRun::run_chains(const unsigned int l, const double b,
                           const std::vector<unsigned int> &seeds)
@@ -280,18 +301,8 @@ namespace poundfe
                 {
                   if ((stopped = interruption_requested()))
                     break;
-                  bool moved = false;
-                  for (unsigned int c = 0; c < n_variables; ++c)
-                    {
-                      const double x     = state[c];
-                      const double xi    = x + settings.proposal_spread * random.next();
-                      const double ratio = std::exp(0.5 * (x * x - xi * xi));
-                      const double u     = standard_normal_cdf(random.next());
-                      candidate[c]       = u < ratio ? xi : x;
-                      moved |= u < ratio;
-                    }
                   ++proposed;
-                  if (moved)
+                  if (propose_component_wise(state, settings.proposal_spread, random, candidate))
                     {
                       const double y_candidate = evaluate(l, start[j] + k, candidate);
                       if (y_candidate > b)

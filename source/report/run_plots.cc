@@ -311,6 +311,72 @@ namespace poundfe
           peak[b] = std::max(peak[b], values[floors.index(b, f)]);
       return peak;
     }
+
+    /// A hysteresis loop to draw: a hinge's or storey's element and its
+    /// force and deformation columns in hinges.csv.
+    struct HysteresisLoop
+    {
+      unsigned int element, force_column, deformation_column;
+    };
+
+    /// Whether element `e` is drawn as a hinge (moment against rotation)
+    /// rather than as a storey (force against drift).
+    bool
+    drawn_as_hinge(const NonlinearElement &e)
+    {
+      return e.kind == ElementKind::hinge || e.kind == ElementKind::member;
+    }
+
+    /// One loop per building: of its recorded hinges or storeys (`column_of`:
+    /// hinges.csv's columns by name), the one with the largest peak plastic
+    /// deformation (|d - F/k0|; mirror-image hinges of a symmetric frame tie,
+    /// and the first is kept).
+    std::vector<HysteresisLoop>
+    hysteresis_loops(const Model &model, const ResponseView &state, const PeakResponse &peaks,
+                     const std::map<std::string, unsigned int> &column_of)
+    {
+      std::vector<HysteresisLoop> loops;
+      for (unsigned int b = 0; b < model.buildings.size(); ++b)
+        {
+          std::optional<HysteresisLoop> chosen;
+          for (unsigned int h = 0; h < peaks.n_hysteretic(); ++h)
+            {
+              const NonlinearElement &e     = state.elements[h];
+              const bool              hinge = drawn_as_hinge(e);
+              const auto f = column_of.find(e.label + (hinge ? "_moment_N_m" : "_force_N"));
+              const auto d = column_of.find(e.label + (hinge ? "_rotation_rad" : "_drift_m"));
+              if (e.building == b && f != column_of.end() && d != column_of.end() &&
+                  (!chosen || peaks.peak_plastic_deformation()[h] >
+                                peaks.peak_plastic_deformation()[chosen->element]))
+                chosen = HysteresisLoop{h, f->second, d->second};
+            }
+          if (chosen)
+            loops.push_back(*chosen);
+        }
+      return loops;
+    }
+
+    /// The plot of one loop, moments in kN m, forces in kN, read from
+    /// hinges.csv by gnuplot.
+    Plot
+    hysteresis_plot(const Model &model, const ResponseView &state, const PeakResponse &peaks,
+                    const HysteresisLoop &loop)
+    {
+      const unsigned int      h     = loop.element;
+      const NonlinearElement &e     = state.elements[h];
+      const bool              hinge = drawn_as_hinge(e);
+      std::ostringstream      title;
+      title << std::setprecision(3) << (hinge ? "Hinge " : "Storey ") << e.label << " of "
+            << model.buildings[e.building].name << ": peak plastic "
+            << (hinge ? "rotation " : "drift ") << peaks.peak_plastic_deformation()[h]
+            << (hinge ? " rad" : " m") << ", ductility " << peaks.ductility(h);
+      return Plot{"hysteresis_" + e.label + ".png", title.str(),
+                  hinge ? "rotation (rad)" : "drift (m)", hinge ? "moment (kN m)" : "force (kN)",
+                  {{"hinges.csv",
+                    std::to_string(loop.deformation_column + 1) + ":($" +
+                      std::to_string(loop.force_column + 1) + "/1000)",
+                    e.label, "lines"}}};
+    }
   } // namespace
 
   void
@@ -321,59 +387,18 @@ namespace poundfe
     const auto names = columns_by_name_if_readable(directory + "/hinges.csv");
     if (!names)
       return; // no loops without the file
-    const std::map<std::string, unsigned int> &column_of = *names;
-    // One loop per building: of its recorded hinges or storeys, the one with
-    // the largest peak plastic deformation (|d - F/k0|; mirror-image hinges
-    // of a symmetric frame tie, and the first is kept), moments in kN m,
-    // forces in kN.
-    struct Loop
-    {
-      unsigned int element, force_column, deformation_column;
-    };
-    const Model      &model = analysis.model;
-    std::vector<Loop> loops;
-    for (unsigned int b = 0; b < model.buildings.size(); ++b)
-      {
-        std::optional<Loop> chosen;
-        for (unsigned int h = 0; h < peaks.n_hysteretic(); ++h)
-          {
-            const NonlinearElement &e     = state.elements[h];
-            const bool              hinge =
-              e.kind == ElementKind::hinge || e.kind == ElementKind::member;
-            const auto f = column_of.find(e.label + (hinge ? "_moment_N_m" : "_force_N"));
-            const auto d = column_of.find(e.label + (hinge ? "_rotation_rad" : "_drift_m"));
-            if (e.building == b && f != column_of.end() && d != column_of.end() &&
-                (!chosen || peaks.peak_plastic_deformation()[h] >
-                              peaks.peak_plastic_deformation()[chosen->element]))
-              chosen = Loop{h, f->second, d->second};
-          }
-        if (chosen)
-          loops.push_back(*chosen);
-      }
+    const std::vector<HysteresisLoop> loops =
+      hysteresis_loops(analysis.model, state, peaks, *names);
     // the loops' columns in one pass (gnuplot would read the file once per
     // loop); if that fails, gnuplot reads the file
     std::vector<unsigned int> columns;
-    for (const Loop &loop : loops)
+    for (const HysteresisLoop &loop : loops)
       columns.insert(columns.end(), {loop.deformation_column, loop.force_column});
     const std::vector<std::vector<double>> values =
       columns_if_readable(directory + "/hinges.csv", columns);
     for (unsigned int i = 0; i < loops.size(); ++i)
       {
-        const unsigned int      h     = loops[i].element;
-        const NonlinearElement &e     = state.elements[h];
-        const bool              hinge =
-              e.kind == ElementKind::hinge || e.kind == ElementKind::member;
-        std::ostringstream      title;
-        title << std::setprecision(3) << (hinge ? "Hinge " : "Storey ") << e.label << " of "
-              << model.buildings[e.building].name << ": peak plastic "
-              << (hinge ? "rotation " : "drift ") << peaks.peak_plastic_deformation()[h]
-              << (hinge ? " rad" : " m") << ", ductility " << peaks.ductility(h);
-        Plot plot{"hysteresis_" + e.label + ".png", title.str(),
-                  hinge ? "rotation (rad)" : "drift (m)", hinge ? "moment (kN m)" : "force (kN)",
-                  {{"hinges.csv",
-                    std::to_string(loops[i].deformation_column + 1) + ":($" +
-                      std::to_string(loops[i].force_column + 1) + "/1000)",
-                    e.label, "lines"}}};
+        Plot plot = hysteresis_plot(analysis.model, state, peaks, loops[i]);
         if (!values.empty())
           {
             const std::string name = "$loop" + std::to_string(i + 1);

@@ -208,6 +208,53 @@ namespace poundfe
     write_json(state, reported, written); // its own failure goes to the caller
   }
 
+  namespace
+  {
+    /// drift_profile.csv's header: in 3D along x, along y and about z (a
+    /// storey's twist); with fibre members each storey's damage state (its
+    /// worst member's limit).
+    std::string
+    drift_profile_header(const bool three_d, const bool damage_states)
+    {
+      return (three_d ? std::string("building,storey,peak_drift_ratio_x,time_of_peak_x_s,"
+                                    "peak_drift_ratio_y,time_of_peak_y_s,peak_twist_rad,"
+                                    "time_of_peak_twist_s") :
+                        std::string("building,storey,peak_drift_ratio,time_of_peak_s")) +
+             (damage_states ? ",damage_state\n" : "\n");
+    }
+
+    /// acceleration_profile.csv's header: in 3D along x, along y and about
+    /// z (a floor's rotation and angular acceleration), and the floor's
+    /// peak resultant displacement.
+    std::string
+    acceleration_profile_header(const bool three_d)
+    {
+      return three_d ?
+               "building,floor,peak_absolute_acc_x_m_s2,peak_floor_disp_x_m,"
+               "peak_absolute_acc_y_m_s2,peak_floor_disp_y_m,peak_angular_acc_rad_s2,"
+               "peak_floor_rot_rad,peak_resultant_disp_m\n" :
+               "building,floor,peak_absolute_acc_m_s2,peak_floor_disp_m\n";
+    }
+
+    /// A profile's row: `name`, then every number in the shortest text that
+    /// reads back exactly (std::to_string kept 6 decimals: 3 digits of a
+    /// drift ratio); `last` ends the row (a damage state, if any).
+    void
+    append_profile_row(std::string &text, const std::string &name,
+                       const std::initializer_list<double> values,
+                       const std::string &last = std::string())
+    {
+      text += name;
+      for (const double *v = values.begin(); v != values.end(); ++v)
+        {
+          append_number(text, *v);
+          if (v + 1 != values.end())
+            text += ',';
+        }
+      text += last + '\n';
+    }
+  } // namespace
+
   void
   RunSummary::write_profiles() const
   {
@@ -217,33 +264,8 @@ namespace poundfe
     const Model         &model  = analysis.model;
     const FloorResponse &floors = peaks.floors();
     const FloorResponse *y = peaks.floors_y(), *rz = peaks.floors_rz();
-    // fibre members: each storey's damage state (its worst member's limit)
-    const std::string damage_header = section_limits ? ",damage_state\n" : "\n";
-    std::string drift = (y ? std::string("building,storey,peak_drift_ratio_x,time_of_peak_x_s,"
-                                         "peak_drift_ratio_y,time_of_peak_y_s,peak_twist_rad,"
-                                         "time_of_peak_twist_s") :
-                             std::string("building,storey,peak_drift_ratio,time_of_peak_s")) +
-                        damage_header;
-    std::string accel =
-      y ? "building,floor,peak_absolute_acc_x_m_s2,peak_floor_disp_x_m,peak_absolute_acc_y_m_s2,"
-          "peak_floor_disp_y_m,peak_angular_acc_rad_s2,peak_floor_rot_rad,"
-          "peak_resultant_disp_m\n" :
-          "building,floor,peak_absolute_acc_m_s2,peak_floor_disp_m\n";
-    // every number in the shortest text that reads back exactly
-    // (std::to_string kept 6 decimals: 3 digits of a drift ratio); `last`
-    // ends the row (a damage state, if any)
-    const auto row = [](std::string &text, const std::string &name,
-                        const std::initializer_list<double> values,
-                        const std::string &last = std::string()) {
-      text += name;
-      for (const double *v = values.begin(); v != values.end(); ++v)
-        {
-          append_number(text, *v);
-          if (v + 1 != values.end())
-            text += ',';
-        }
-      text += last + '\n';
-    };
+    std::string drift = drift_profile_header(y != nullptr, static_cast<bool>(section_limits));
+    std::string accel = acceleration_profile_header(y != nullptr);
     for (unsigned int b = 0; b < model.buildings.size(); ++b)
       for (unsigned int f = 0; f < model.buildings[b].floors.size(); ++f)
         {
@@ -255,21 +277,26 @@ namespace poundfe
             section_limits ? std::string(",") + damage_state_name(damage[f]) : std::string();
           if (!y)
             {
-              row(drift, name, {floors.peak_drift_ratio()[i], floors.peak_drift_time()[i]},
-                  damage_column);
-              row(accel, name, {floors.peak_acceleration()[i], floors.peak_displacement()[i]});
+              append_profile_row(drift, name,
+                                 {floors.peak_drift_ratio()[i], floors.peak_drift_time()[i]},
+                                 damage_column);
+              append_profile_row(accel, name,
+                                 {floors.peak_acceleration()[i], floors.peak_displacement()[i]});
               continue;
             }
           const double height = model.buildings[b].floors[f].storey_height;
-          row(drift, name, {floors.peak_drift_ratio()[i], floors.peak_drift_time()[i],
-                            y->peak_drift_ratio()[i], y->peak_drift_time()[i],
-                            rz->peak_drift_ratio()[i] * height, rz->peak_drift_time()[i]},
-              damage_column);
-          row(accel, name, {floors.peak_acceleration()[i], floors.peak_displacement()[i],
-                            y->peak_acceleration()[i], y->peak_displacement()[i],
-                            rz->peak_acceleration()[i], rz->peak_displacement()[i],
-                            b < plan.buildings().size() ? // observed
-                              plan.buildings()[b].storeys[f].resultant_displacement : 0.0});
+          append_profile_row(drift, name,
+                             {floors.peak_drift_ratio()[i], floors.peak_drift_time()[i],
+                              y->peak_drift_ratio()[i], y->peak_drift_time()[i],
+                              rz->peak_drift_ratio()[i] * height, rz->peak_drift_time()[i]},
+                             damage_column);
+          append_profile_row(accel, name,
+                             {floors.peak_acceleration()[i], floors.peak_displacement()[i],
+                              y->peak_acceleration()[i], y->peak_displacement()[i],
+                              rz->peak_acceleration()[i], rz->peak_displacement()[i],
+                              b < plan.buildings().size() ? // observed
+                                plan.buildings()[b].storeys[f].resultant_displacement :
+                                0.0});
         }
     write_result_text(memory, directory, "drift_profile.csv", drift);
     write_result_text(memory, directory, "acceleration_profile.csv", accel);

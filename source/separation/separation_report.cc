@@ -183,6 +183,68 @@ namespace poundfe
     return csv;
   }
 
+  namespace
+  {
+    /// The "levels" array of a pair: each level's displacements and the
+    /// separations the rules require there.
+    void
+    write_level_objects(JsonWriter &json, const AdjacentPair &pair, const PairResult &r,
+                        const bool time_history)
+    {
+      json.begin_array("levels");
+      for (std::size_t l = 0; l < r.levels.size(); ++l)
+        {
+          const LevelResult &level = r.levels[l];
+          json.begin_object()
+            .value("level_m", pair.levels[l].level)
+            .value("floors_coincide", pair.levels[l].floors_coincide)
+            .value("u_left_m", level.u_left)
+            .value("u_right_m", level.u_right);
+          if (time_history)
+            json.value("time_history_m", level.time_history);
+          const auto values = rule_values(level.rules);
+          for (unsigned int c = 0; c < 5; ++c)
+            json.value(rule_names[c], values[c]);
+          json.end_object();
+        }
+      json.end_array();
+    }
+
+    /// The probabilities of pounding of a pair, when its runs were random:
+    /// at the existing gap (with the gap for the target probability), and
+    /// at the random separations.
+    void
+    write_pounding_probabilities(JsonWriter &json, const SeparationParameters &s,
+                                 const AdjacentPair &pair, const PairResult &r)
+    {
+      if (!r.largest_approach.empty())
+        {
+          const auto at_gap =
+            exceedance_curve(r.largest_approach, {pair.existing_gap}, s.confidence_level)[0];
+          json.begin_object("pounding")
+            .value("probability_at_existing_gap", at_gap.probability)
+            .value("lower", at_gap.lower)
+            .value("upper", at_gap.upper)
+            .value("gap_for_target_probability_m",
+                   gap_for_probability(r.largest_approach, s.target_probability))
+            .value("gap_for_target_probability_upper_band_m",
+                   gap_for_probability_upper(r.largest_approach, s.target_probability,
+                                             s.confidence_level))
+            .end_object();
+        }
+      if (!r.random_separation.empty())
+        {
+          const ProbabilityEstimate e = pounding_at_random_separation(r);
+          json.begin_object("pounding_at_random_separation")
+            .value("probability", e.probability)
+            .value("coefficient_of_variation", undefined_if_infinite(e.coefficient_of_variation))
+            .value("pounding_realizations", e.n_failures)
+            .value("realizations", e.n)
+            .end_object();
+        }
+    }
+  } // namespace
+
   void
   write_pair_json(JsonWriter &json, const SeparationParameters &s, const Model &model,
                 const AdjacentPair &pair, const PairResult &r, const bool time_history)
@@ -214,48 +276,8 @@ namespace poundfe
         json.end_object();
       }
     json.value("governing_code_rule", rule_names[joint.governing_code_rule()]);
-    json.begin_array("levels");
-    for (std::size_t l = 0; l < r.levels.size(); ++l)
-      {
-        const LevelResult &level = r.levels[l];
-        json.begin_object()
-          .value("level_m", pair.levels[l].level)
-          .value("floors_coincide", pair.levels[l].floors_coincide)
-          .value("u_left_m", level.u_left)
-          .value("u_right_m", level.u_right);
-        if (time_history)
-          json.value("time_history_m", level.time_history);
-        const auto values = rule_values(level.rules);
-        for (unsigned int c = 0; c < 5; ++c)
-          json.value(rule_names[c], values[c]);
-        json.end_object();
-      }
-    json.end_array();
-    if (!r.largest_approach.empty())
-      {
-        const auto at_gap =
-          exceedance_curve(r.largest_approach, {pair.existing_gap}, s.confidence_level)[0];
-        json.begin_object("pounding")
-          .value("probability_at_existing_gap", at_gap.probability)
-          .value("lower", at_gap.lower)
-          .value("upper", at_gap.upper)
-          .value("gap_for_target_probability_m",
-                 gap_for_probability(r.largest_approach, s.target_probability))
-          .value("gap_for_target_probability_upper_band_m",
-                 gap_for_probability_upper(r.largest_approach, s.target_probability,
-                                           s.confidence_level))
-          .end_object();
-      }
-    if (!r.random_separation.empty())
-      {
-        const ProbabilityEstimate e = pounding_at_random_separation(r);
-        json.begin_object("pounding_at_random_separation")
-          .value("probability", e.probability)
-          .value("coefficient_of_variation", undefined_if_infinite(e.coefficient_of_variation))
-          .value("pounding_realizations", e.n_failures)
-          .value("realizations", e.n)
-          .end_object();
-      }
+    write_level_objects(json, pair, r, time_history);
+    write_pounding_probabilities(json, s, pair, r);
     json.end_object();
   }
 } // namespace poundfe
