@@ -1,5 +1,4 @@
 // The element dissipation shared by the time integrators (time_stepper.h).
-#include <poundfe/elements/typed_element.h>
 #include <poundfe/integration/newmark.h>
 #include <poundfe/integration/time_stepper.h>
 
@@ -8,24 +7,14 @@
 
 namespace poundfe
 {
-  namespace
-  {
-    template <typename Element>
-    double
-    dissipation_of(const Element &element, const double work, const double supplied)
-    {
-      // Not yet element.dissipates() ? ... : 0: for an undamped contact law the
-      // difference is the quadrature of its work over the steps that open or
-      // close a gap (up to 2e-6 of the input in 3D plan contact), which would
-      // then show in the energy balance error instead.
-      return work - element.stored_energy() + supplied;
-    }
-  } // namespace
-
   double
   element_dissipation(const NonlinearElement &element, const double work, const double supplied)
   {
-    return dissipation_of(element, work, supplied);
+    // Not yet element.dissipates() ? ... : 0: for an undamped contact law the
+    // difference is the quadrature of its work over the steps that open or
+    // close a gap (up to 2e-6 of the input in 3D plan contact), which would
+    // then show in the energy balance error instead.
+    return work - element.stored_energy() + supplied;
   }
 
   void
@@ -39,11 +28,8 @@ namespace poundfe
       {
         if (!counted.empty() && !counted[h])
           continue;
-        const NonlinearElement &e = elements[h];
-        // its stored energy through its concrete class (elements/typed_element.h): the same bits
-        const double dissipated = on_concrete_element(e, [&](const auto &typed) {
-          return dissipation_of(typed, work[h], supplied_work[h]);
-        });
+        const NonlinearElement &e          = elements[h];
+        const double dissipated = element_dissipation(e, work[h], supplied_work[h]);
         switch (e.kind)
           {
             case ElementKind::gap:
