@@ -15,6 +15,9 @@
 # MODEL: linear, jankowski (default both). From the repository root.
 # With CALLGRIND=1: instructions instead of CPU times (valgrind --tool=callgrind,
 # one run each, whole process; the start-up runs likewise).
+# With POUNDFE_THREADS=N: poundfe runs with --threads N (from 2, its CSV tables
+# are formatted and written on a thread of their own; CPU times and
+# instructions count both threads).
 set -eu
 poundfe=$1 opensees=$2 work=$3 rounds=${4:-3}
 shift $(( $# < 4 ? $# : 4 ))
@@ -62,6 +65,9 @@ for model in $models; do
   run_p_full=("$poundfe" run "$prm" --output "$work/$model-poundfe" --set "Output/Plots=false")
   run_p_short=("$poundfe" run "$prm" --output "$work/$model-poundfe-short" --set "Output/Plots=false"
                --set "Time integration/End time=0.0005")
+  if [ -n "${POUNDFE_THREADS:-}" ]; then
+    run_p_full+=(--threads "$POUNDFE_THREADS") run_p_short+=(--threads "$POUNDFE_THREADS")
+  fi
   run_o_full=("$opensees" "$full/all.tcl" "$full")
   run_o_short=("$opensees" "$short/all.tcl" "$short")
   if [ "${CALLGRIND:-0}" = 1 ]; then

@@ -9,6 +9,47 @@
 
 namespace poundfe
 {
+  namespace
+  {
+    /// x = y - w (d b^T y) / (1 + d g), g = b^T A^{-1} b: one active column of
+    /// a one-column block, the capacitance a number. The operations of the
+    /// general path for k = 1 (S = 1 + d g, its LU with no elimination, the
+    /// one substitution), so the same bits, without its loops and pivots.
+    void
+    solve_one_column(const double d, const double g, const double bty, const Vector &y,
+                     const Eigen::Ref<const Vector> &w, Vector &x)
+    {
+      const double capacitance = 1.0 + d * g;
+      if (!(std::abs(capacitance) > 0))
+        throw NumericalError("the tangent matrix is singular (Woodbury capacitance "
+                             "matrix has a zero pivot)");
+      const double coefficient = d * bty / capacitance;
+      x                        = y;
+      x.noalias() -= coefficient * w;
+    }
+
+    /// The columns of the blocks whose D_e has an entry other than 0, in order.
+    void
+    list_active_columns(const std::vector<unsigned int> &block_start,
+                        const std::vector<unsigned int> &d_offset, const std::vector<double> &d,
+                        std::vector<unsigned int> &active)
+    {
+      active.clear();
+      for (unsigned int e = 0; e + 1 < block_start.size(); ++e)
+        {
+          const double      *block     = d.data() + d_offset[e];
+          const unsigned int n_entries = d_offset[e + 1] - d_offset[e];
+          for (unsigned int q = 0; q < n_entries; ++q)
+            if (block[q] != 0)
+              {
+                for (unsigned int c = block_start[e]; c < block_start[e + 1]; ++c)
+                  active.push_back(c);
+                break;
+              }
+        }
+    }
+  } // namespace
+
   void
   LowRankUpdateSolver::initialize(LinearSolver                    &factorised,
                                   const std::vector<SparseColumn> &columns,
@@ -136,19 +177,7 @@ namespace poundfe
     AssertDimension(d.size(), d_offset.back());
     for (const unsigned int c : active)
       is_active[c] = 0;
-    active.clear();
-    for (unsigned int e = 0; e + 1 < block_start.size(); ++e)
-      {
-        const double *block = d.data() + d_offset[e];
-        const unsigned int n_entries = d_offset[e + 1] - d_offset[e];
-        for (unsigned int q = 0; q < n_entries; ++q)
-          if (block[q] != 0)
-            {
-              for (unsigned int c = block_start[e]; c < block_start[e + 1]; ++c)
-                active.push_back(c);
-              break;
-            }
-      }
+    list_active_columns(block_start, d_offset, d, active);
     for (const unsigned int c : active)
       is_active[c] = 1;
     if (!fill_slots())
@@ -160,6 +189,14 @@ namespace poundfe
         return true;
       }
     base->solve(r, y);
+    if (const unsigned int c = active[0], e = column_block[c];
+        k == 1 && block_start[e + 1] - block_start[e] == 1)
+      {
+        const int slot = slot_of[c];
+        solve_one_column(d[d_offset[e]], G(slot, slot), column_dot(c, y), y, W.col(slot), x);
+        factored = false; // as the general path leaves it for k = 1
+        return true;
+      }
 
     // S = I + D_a G_aa and rhs = D_a B_a^T y. Row a is row i of its block
     // D_e, whose columns are the active positions first, ..., first + r_e - 1.

@@ -1,4 +1,5 @@
 // The elements' records across accepted steps (integration/element_records.h).
+#include <poundfe/elements/typed_element.h>
 #include <poundfe/integration/element_records.h>
 
 namespace poundfe
@@ -51,26 +52,24 @@ namespace poundfe
     // A gap's or friction element's rate at v_next is taken once: its log
     // closes the entry with it, and it is the committed rate noted for the
     // next step (their deformation() reads only the velocities and the
-    // trial state, which a commit keeps).
+    // trial state, which a commit keeps). Each element through its concrete
+    // class (elements/typed_element.h): the same calls, so the same bits.
     for (const unsigned int h : gaps)
-      {
-        const NonlinearElement &e    = elements[h];
-        const double            next = e.deformation(v_next);
+      on_concrete_element(elements[h], [&](const auto &e) {
+        const double next = e.deformation(v_next);
         impacts.record(h, t0, t1, {history[h], rate[h], force[h]},
                        {e.history_variable(), next, e.force(), e.contact_point(), e.phase()});
         rate[h] = next;
-      }
+      });
     for (const unsigned int h : frictions)
-      {
-        const NonlinearElement &e    = elements[h];
-        const double            next = e.deformation(v_next);
+      on_concrete_element(elements[h], [&](const auto &e) {
+        const double next = e.deformation(v_next);
         stick_slip.record(h, t0, t1, {e.was_active(), rate[h]}, {e.is_active(), next});
         rate[h] = next;
-      }
+      });
     for (const unsigned int h : kept)
-      {
-        NonlinearElement &e        = elements[h];
-        const double      supplied = e.supplied_work_increment();
+      on_concrete_element(elements[h], [&](auto &e) {
+        const double supplied = e.supplied_work_increment();
         work_done[h] += e.work_increment();
         work_supplied[h] += supplied;
         if (!counted || (*counted)[h])
@@ -83,7 +82,7 @@ namespace poundfe
         history[h] = e.history_variable();
         if (e.kind != ElementKind::gap && e.kind != ElementKind::friction)
           rate[h] = e.deformation(v_next);
-      }
+      });
   }
 
   void

@@ -1,5 +1,7 @@
 #include <poundfe/output/peak_response.h>
 
+#include <poundfe/elements/typed_element.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -55,27 +57,28 @@ namespace poundfe
                                     state.acceleration(), 0.0); // the ground does not turn
         plan_response->observe_step(state);
       }
+    const Vector &u = state.displacement();
+    // each element through its concrete class (elements/typed_element.h): the same bits
+    const auto observe_element = [&](const unsigned int h, const auto &e) {
+      const double d = e.deformation(u);
+      if (std::abs(d) > peak_d[h])
+        {
+          peak_d[h]    = std::abs(d);
+          peak_d_at[h] = t;
+        }
+      const double f = e.force();
+      peak_f[h]      = std::max(peak_f[h], std::abs(f));
+      if (e.kind == ElementKind::gap) // its opening is minus its penetration
+        smallest_clearance = std::min(smallest_clearance, -e.history_variable());
+      // plastic part: the deformation left after elastic unloading
+      // (a fibre member's yields in its sections: no one k0 of its end)
+      const double k0 = e.initial_stiffness();
+      if (k0 > 0 && e.kind != ElementKind::member)
+        peak_plastic[h] = std::max(peak_plastic[h], std::abs(d - f / k0));
+    };
     for (unsigned int h = 0; h < elements.size(); ++h)
-      {
-        if (!state.observes_element(h))
-          continue;
-        const NonlinearElement &e = elements[h];
-        const double           d = e.deformation(state.displacement());
-        if (std::abs(d) > peak_d[h])
-          {
-            peak_d[h]    = std::abs(d);
-            peak_d_at[h] = t;
-          }
-        const double f = e.force();
-        peak_f[h]      = std::max(peak_f[h], std::abs(f));
-        if (e.kind == ElementKind::gap) // its opening is minus its penetration
-          smallest_clearance = std::min(smallest_clearance, -e.history_variable());
-        // plastic part: the deformation left after elastic unloading
-        // (a fibre member's yields in its sections: no one k0 of its end)
-        const double k0 = e.initial_stiffness();
-        if (k0 > 0 && e.kind != ElementKind::member)
-          peak_plastic[h] = std::max(peak_plastic[h], std::abs(d - f / k0));
-      }
+      if (state.observes_element(h))
+        on_concrete_element(elements[h], [&](const auto &e) { observe_element(h, e); });
   }
 
   void

@@ -192,3 +192,45 @@ BOOST_AUTO_TEST_CASE(woodbury_solve_reusing_its_capacitance_matrix_is_a_fresh_so
       BOOST_TEST((x - dense).norm() / dense.norm() < 1e-8); // as above
     }
 }
+
+BOOST_AUTO_TEST_CASE(woodbury_solve_with_one_active_column_is_sherman_morrison)
+{
+  // One active column (a single storey's law, one gap in contact): the
+  // solve is x = y - w (d b^T y) / (1 + d b^T w), y = A^{-1} r, w = A^{-1} b,
+  // formed here from the same factorisation with b^T y and b^T w summed over
+  // b's entries in order, as the solver sums them: equal to the bit. And
+  // against a dense LU of A + d b b^T (1e-8, as above).
+  const Analysis     analysis = prepare_analysis(read_parameters("input/two-buildings.prm"));
+  const SparseMatrix A        = analysis.system.stiffness + 1e4 * analysis.system.mass;
+  const unsigned int n        = A.rows();
+  std::mt19937       random(23);
+  std::uniform_real_distribution<> unit(-1, 1);
+  const std::vector<SparseColumn>  columns{{{3, 7}, {1.0, -1.0}}, {{5, -1}, {1.0, -1.0}}};
+  auto solver = create_linear_solver("eigen-ldlt");
+  solver->analyze_and_factorize(A);
+  LowRankUpdateSolver woodbury;
+  woodbury.initialize(*solver, columns, n);
+  Vector r(n), b = Vector::Zero(n), y, w;
+  for (unsigned int i = 0; i < n; ++i)
+    r[i] = unit(random);
+  b[3] += 1.0;
+  b[7] += -1.0;
+  solver->solve(r, y);
+  solver->solve(b, w);
+  for (const double d : {0.3, -0.2, 5.0})
+    {
+      const double dk = d * A.diagonal().maxCoeff();
+      Vector       x;
+      BOOST_REQUIRE(woodbury.solve(r, {dk, 0.0}, x));
+      const double bty = (0.0 + 1.0 * y[3]) + -1.0 * y[7];
+      const double btw = (0.0 + 1.0 * w[3]) + -1.0 * w[7];
+      Vector       expected = y;
+      expected.noalias() -= (dk * bty / (1.0 + dk * btw)) * w;
+      BOOST_TEST_INFO("d = " << d);
+      BOOST_TEST(woodbury.n_active() == 1u);
+      BOOST_TEST((x.array() == expected.array()).all()); // to the bit
+      const Vector dense =
+        (Eigen::MatrixXd(A) + dk * b * b.transpose()).partialPivLu().solve(r);
+      BOOST_TEST((x - dense).norm() / dense.norm() < 1e-8);
+    }
+}
