@@ -57,6 +57,16 @@ CASES = {
     # Steel01's dead band alone: a -1e-17 step on the hardening branch keeps
     # the hardening tangent, exposed by one Linear step of load
     "steel01_dead_band": ("steel01_dead_band.tcl", [], 1e-9),
+    # the dead bands of Concrete01, Concrete02 (its last trial's stress and
+    # tangent) and Steel02 (from the virgin state) in an RC fibre section:
+    # curvature steps of 5e-16 at each peak, one Linear step of moment after
+    # the first
+    "dead_bands_section": ("dead_bands_section.tcl", [], 1e-9),
+    # the fibre frame of dispBeamColumns, damping on the committed stiffness:
+    # its beams' fibres sit at strains of ~1e-20 after gravity, inside
+    # Concrete01's band (their tangent E_c, not 0, enters K_c)
+    "frame_record_disp": ("fibre_frame_record.tcl",
+                          ["committed", "Newton", "Newmark 0.5 0.25", "disp"], 1e-9),
     "frame_hht": ("fibre_frame_record.tcl", ["committed", "Newton", "HHT 0.8"], 1e-9),
     "pounding_hht": ("pounding_sticks.tcl",
                      ["ImpactMaterial", "Newton", "NormDispIncr", "HHT 0.9"], 1e-9),

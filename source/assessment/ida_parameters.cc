@@ -83,6 +83,11 @@ namespace poundfe
                                       std::pair{"IDA/Tolerance", tolerance},
                                       std::pair{"IDA/Collapse drift ratio", collapse_drift_ratio}})
       input.positive(path, value);
+    // a drift of the storey's height has brought down any building long
+    // before (collapse limits lie near 0.02 to 0.1); 1e200 ran as a
+    // building that never collapses
+    input.at_most("IDA/Collapse drift ratio", collapse_drift_ratio, 1, "",
+                  "a drift of the whole storey height");
     if (!(upper_intensity > initial_step))
       input.fail("IDA/Upper intensity", "must exceed IDA/Initial step");
     for (const double x : demand_intensities)

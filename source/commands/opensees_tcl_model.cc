@@ -4,6 +4,7 @@
 // rayleigh, recorder (Node, Element, Drift, EnvelopeNode, EnvelopeElement).
 // An option or type poundfe lacks is an error naming it.
 #include <poundfe/laws/material_registry.h>
+#include <poundfe/laws/opensees_dead_bands.h>
 #include <poundfe/laws/viscous_damper.h>
 
 #include <poundfe/opensees/opensees_section_links.h>
@@ -858,6 +859,10 @@ namespace poundfe
                 p.values["Alpha"] = 1;
               }
           }
+        // OpenSees 3.8's laws skip strain changes below DBL_EPSILON: a
+        // script's numbers are OpenSees's with them
+        if (type == "Concrete01" || type == "Concrete02" || type == "Steel02")
+          p.values[opensees_dead_band_entry] = 1;
         // the law's own checks, now at the script's line
         if (type == "ViscousDamper")
           make_viscous_damper(p.values, d.time_step);

@@ -9,6 +9,20 @@ namespace poundfe
 {
   namespace Patterns = dealii::Patterns;
 
+  namespace
+  {
+    /// The largest annual rate of PGAs beyond 1 g taken (1/year).
+    constexpr double largest_rate_at_1g = 10;
+    /// The steepest power law taken: hazard curves fall as a^-1 to a^-4;
+    /// a^-1e200 overflowed the hazard integral (a numerical failure).
+    constexpr double largest_exponent = 20;
+    /// The largest PGA taken (g): the strongest records reach about 4 g.
+    constexpr double largest_pga = 10;
+    /// The longest exposure taken (years): beyond any structure's life
+    /// (1e200 years ran without end).
+    constexpr double longest_exposure = 1e4;
+  } // namespace
+
   void
   PoundingHazardParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -68,6 +82,14 @@ namespace poundfe
     const std::string s = "Separation/Site hazard/";
     if (!hazard_file.empty() && power_law_coefficient > 0)
       input.fail(s + "File", "give the hazard either by File or by the power law, not both");
+    // k0 is the annual rate of PGAs beyond 1 g: the most active sites have
+    // about 1e-2, ten a year is beyond any (1e200 once ran without end)
+    input.at_most(s + "Annual rate at 1 g", power_law_coefficient, largest_rate_at_1g,
+                  "1/year", "ten events of 1 g a year, beyond any site's hazard");
+    input.at_most(s + "Exponent", power_law_exponent, largest_exponent, "",
+                  "hazard curves fall as a^-1 to a^-4");
+    input.at_most(s + "Minimum PGA", minimum_pga, largest_pga, "g",
+                  "the strongest records reach about 4 g");
     if (power_law_coefficient > 0 && !(power_law_exponent > 0))
       input.fail(s + "Exponent", "the power-law hazard needs an Exponent > 0");
     if (power_law_coefficient > 0 && !(minimum_pga > 0))
@@ -79,6 +101,8 @@ namespace poundfe
     for (const double a : pga_levels)
       if (!(a > 0) || !std::isfinite(a))
         input.fail(s + "PGA levels", "every level must be positive");
+      else
+        input.at_most(s + "PGA levels", a, largest_pga, "g", "the strongest records reach about 4 g");
     input.distinct(s + "PGA levels", pga_levels);
     std::vector<double> sorted = pga_levels;
     std::sort(sorted.begin(), sorted.end());
@@ -86,6 +110,8 @@ namespace poundfe
       input.fail(s + "PGA levels", "needs two or more distinct levels");
     if (!(exposure_years > 0) || !std::isfinite(exposure_years))
       input.fail(s + "Exposure", "must be positive");
+    input.at_most(s + "Exposure", exposure_years, longest_exposure, "years",
+                  "beyond any structure's life");
     if (!(target_probability > 0 && target_probability < 1))
       input.fail(s + "Target probability", "must lie in (0, 1)");
   }

@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
+#include <utility>
 
 namespace poundfe
 {
@@ -342,8 +343,18 @@ namespace poundfe
     if (!(newmark.beta >= 0.25 * (0.5 + newmark.gamma) * (0.5 + newmark.gamma) - 1e-12))
       input.fail("Time integration/Newmark beta",
              "must be >= (1/2 + gamma)^2 / 4 for unconditional stability");
-    input.positive("Time integration/Newton residual tolerance", newmark.newton.residual_tolerance);
-    input.positive("Time integration/Newton energy tolerance", newmark.newton.energy_tolerance);
+    // fractions (of the effective load's norm, of the first iteration's
+    // work): 1 or more accepts an iterate far from equilibrium (1e200 ran to
+    // its end on the first iterates)
+    for (const auto &[entry, tolerance] :
+         {std::pair{"Time integration/Newton residual tolerance", newmark.newton.residual_tolerance},
+          {"Time integration/Newton energy tolerance", newmark.newton.energy_tolerance}})
+      {
+        input.positive(entry, tolerance);
+        if (!(tolerance < 1))
+          input.fail(entry, "must be below 1, a fraction (got " + number_text(tolerance) +
+                              "): 1 or more accepts an iterate far from equilibrium");
+      }
     input.positive("Time integration/Law tolerance", law_tolerance);
     input.positive("Time integration/Relative tolerance", dopri.relative_tolerance);
     input.positive("Time integration/Absolute tolerance", dopri.absolute_tolerance);

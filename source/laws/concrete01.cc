@@ -16,13 +16,16 @@
 //   strain; beyond the end strain (towards tension) the stress is 0; past
 //   eps_min the envelope again; positive strains carry no stress.
 // Sources: OpenSees Concrete01 (F. Filippou, M. Scott), whose behaviour this
-// reproduces, stress, tangent and history alike; D.C. Kent & R. Park (1971),
+// reproduces, stress, tangent and history alike (under `poundfe opensees`
+// its dead band too: a strain within DBL_EPSILON of the committed one keeps
+// the committed state, Concrete01::setTrialStrain); D.C. Kent & R. Park (1971),
 // J. Struct. Div. ASCE 97(7) 1969; B.D. Scott, R. Park & M.J.N. Priestley
 // (1982), ACI J. 79(2) 13; I.D. Karsan & J.O. Jirsa (1969), J. Struct. Div.
 // ASCE 95(12) 2543. Theory: doc/theory.md §12.3.
 #include <poundfe/laws/concrete01.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -61,8 +64,9 @@ namespace poundfe
     return {fpcu, 0};
   }
 
-  Concrete01::Concrete01(const Concrete01Parameters &parameters)
+  Concrete01::Concrete01(const Concrete01Parameters &parameters, const bool opensees_dead_band)
     : envelope("Concrete01", parameters)
+    , opensees_dead_band(opensees_dead_band)
   {
     reset();
   }
@@ -117,7 +121,7 @@ namespace poundfe
   Concrete01State
   Concrete01::respond(const Concrete01State &from, const double strain) const
   {
-    if (strain == from.strain)
+    if (strain == from.strain || in_dead_band(from, strain))
       return from;
     Concrete01State s = from;
     s.strain          = strain;
@@ -155,8 +159,25 @@ namespace poundfe
     return s;
   }
 
+  bool
+  Concrete01::in_dead_band(const Concrete01State &from, const double strain) const
+  {
+    return opensees_dead_band && std::abs(strain - from.strain) < DBL_EPSILON;
+  }
+
   namespace materials
   {
+    namespace
+    {
+      std::unique_ptr<UniaxialLaw>
+      make_concrete01(const std::map<std::string, double> &v, const bool opensees_dead_band)
+      {
+        return std::make_unique<Concrete01>(
+          Concrete01Parameters{v.at("fpc"), v.at("epsc0"), v.at("fpcu"), v.at("epscu")},
+          opensees_dead_band);
+      }
+    } // namespace
+
     MaterialType
     concrete01()
     {
@@ -166,10 +187,13 @@ namespace poundfe
                {"epsc0", NAN, "strain at fpc (negative)"},
                {"fpcu", NAN, "crushing strength (negative)"},
                {"epscu", NAN, "strain at fpcu (negative)"}},
-              [](const std::map<std::string, double> &v) -> std::unique_ptr<UniaxialLaw> {
-                return std::make_unique<Concrete01>(
-                  Concrete01Parameters{v.at("fpc"), v.at("epsc0"), v.at("fpcu"), v.at("epscu")});
-              }};
+              [](const std::map<std::string, double> &v) { return make_concrete01(v, false); }};
+    }
+
+    std::unique_ptr<UniaxialLaw>
+    concrete01_with_dead_band(const std::map<std::string, double> &values)
+    {
+      return make_concrete01(values, true);
     }
   } // namespace materials
 } // namespace poundfe

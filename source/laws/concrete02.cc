@@ -17,17 +17,21 @@
 //   line to that envelope point, sigma = sigma_env,t(e_max) / e_max e.
 // Sources: OpenSees Concrete02 (F. Filippou), whose behaviour this
 // reproduces, stress and history alike (its tangent 1e-10 on the flat
-// branches is 0 here, the derivative of the stress); A.H.M. Yassin (1994),
+// branches is 0 here, the derivative of the stress; under `poundfe opensees`
+// its dead band too: a strain within DBL_EPSILON of the committed one keeps
+// the committed history with the last trial's stress and tangent,
+// Concrete02::setTrialStrain); A.H.M. Yassin (1994),
 // Nonlinear analysis of prestressed concrete structures under monotonic and
 // cyclic loads, PhD thesis, UC Berkeley; D.C. Kent & R. Park (1971). Theory:
 // doc/theory.md §12.4.
 #include <poundfe/laws/concrete02.h>
 
+#include <cfloat>
 #include <cmath>
 
 namespace poundfe
 {
-  Concrete02::Concrete02(const Concrete02Parameters &parameters)
+  Concrete02::Concrete02(const Concrete02Parameters &parameters, const bool opensees_dead_band)
     : envelope("Concrete02", parameters.compression)
     , lambda(parameters.lambda)
     , ft(parameters.ft)
@@ -36,6 +40,7 @@ namespace poundfe
     , eps_R((envelope.fpcu - lambda * Ec0 * envelope.epscu) / (Ec0 * (1 - lambda)))
     , crack_strain(ft / Ec0)
     , tension_end(ft * (1 / Ets + 1 / Ec0))
+    , opensees_dead_band(opensees_dead_band)
   {
     require_in("Concrete02", "lambda", lambda, 0, 1);
     require_non_negative("Concrete02", "ft", ft);
@@ -79,6 +84,8 @@ namespace poundfe
   Concrete02State
   Concrete02::respond(const Concrete02State &from, const double strain) const
   {
+    if (opensees_dead_band && std::abs(strain - from.strain) < DBL_EPSILON)
+      return in_dead_band(from, strain);
     if (strain == from.strain)
       return from;
     if (strain < from.min_strain)
@@ -134,8 +141,36 @@ namespace poundfe
     return s;
   }
 
+  Concrete02State
+  Concrete02::in_dead_band(const Concrete02State &from, const double strain) const
+  {
+    // OpenSees's setTrialStrain restores ecmin and dept, sets eps and returns,
+    // leaving sig and e as its last trial set them: this->trial, which
+    // set_trial replaces only when respond returns (after a commit or a
+    // revert it is the committed state, as OpenSees's sig and e are then)
+    Concrete02State s = from;
+    s.strain          = strain;
+    s.stress          = trial.stress;
+    s.tangent         = trial.tangent;
+    return s;
+  }
+
   namespace materials
   {
+    namespace
+    {
+      std::unique_ptr<UniaxialLaw>
+      make_concrete02(const std::map<std::string, double> &v, const bool opensees_dead_band)
+      {
+        Concrete02Parameters q;
+        q.compression = {v.at("fpc"), v.at("epsc0"), v.at("fpcu"), v.at("epscu")};
+        q.lambda      = v.at("lambda");
+        q.ft          = v.at("ft");
+        q.Ets         = v.at("Ets");
+        return std::make_unique<Concrete02>(q, opensees_dead_band);
+      }
+    } // namespace
+
     MaterialType
     concrete02()
     {
@@ -148,14 +183,13 @@ namespace poundfe
                {"lambda", 0.1, "unloading slope at epscu over the initial slope"},
                {"ft", NAN, "tensile strength"},
                {"Ets", NAN, "tension softening modulus"}},
-              [](const std::map<std::string, double> &v) -> std::unique_ptr<UniaxialLaw> {
-                Concrete02Parameters q;
-                q.compression = {v.at("fpc"), v.at("epsc0"), v.at("fpcu"), v.at("epscu")};
-                q.lambda      = v.at("lambda");
-                q.ft          = v.at("ft");
-                q.Ets         = v.at("Ets");
-                return std::make_unique<Concrete02>(q);
-              }};
+              [](const std::map<std::string, double> &v) { return make_concrete02(v, false); }};
+    }
+
+    std::unique_ptr<UniaxialLaw>
+    concrete02_with_dead_band(const std::map<std::string, double> &values)
+    {
+      return make_concrete02(values, true);
     }
   } // namespace materials
 } // namespace poundfe

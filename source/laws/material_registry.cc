@@ -7,6 +7,7 @@
 // because the core is a static library: see contact_law_registry.cc).
 #include <poundfe/base/exceptions.h>
 #include <poundfe/laws/material_registry.h>
+#include <poundfe/laws/opensees_dead_bands.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,10 @@ namespace poundfe
 #define POUNDFE_DECLARE_MATERIAL(material) MaterialType material();
     POUNDFE_MATERIALS(POUNDFE_DECLARE_MATERIAL)
 #undef POUNDFE_DECLARE_MATERIAL
+    // the laws with an OpenSees dead band, in their files
+    std::unique_ptr<UniaxialLaw> concrete01_with_dead_band(const std::map<std::string, double> &);
+    std::unique_ptr<UniaxialLaw> concrete02_with_dead_band(const std::map<std::string, double> &);
+    std::unique_ptr<UniaxialLaw> steel02_with_dead_band(const std::map<std::string, double> &);
   } // namespace materials
 
   namespace
@@ -78,6 +83,7 @@ namespace poundfe
     const MaterialType &type   = material_type(parameters.material);
     const char         *name   = type.name.c_str();
     auto                values = parameters.values;
+    const bool dead_band = values.erase(std::string(opensees_dead_band_entry)) > 0;
     for (const auto &[key, value] : values)
       {
         const bool known = std::any_of(type.parameters.begin(), type.parameters.end(),
@@ -94,7 +100,22 @@ namespace poundfe
             refuse_parameter(name, q.name.c_str(), "is required (" + q.meaning + ")");
           values[q.name] = q.default_value;
         }
+    if (dead_band)
+      if (std::unique_ptr<UniaxialLaw> law = make_with_opensees_dead_band(type.name, values))
+        return law;
     return type.make(values);
+  }
+
+  std::unique_ptr<UniaxialLaw>
+  make_with_opensees_dead_band(const std::string &name, const std::map<std::string, double> &values)
+  {
+    if (name == "Concrete01")
+      return materials::concrete01_with_dead_band(values);
+    if (name == "Concrete02")
+      return materials::concrete02_with_dead_band(values);
+    if (name == "Steel02")
+      return materials::steel02_with_dead_band(values);
+    return nullptr;
   }
 
   void

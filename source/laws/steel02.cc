@@ -16,19 +16,23 @@
 //   on reloading the tension asymptote through fy s with a3, a4.
 //   First loading starts at the origin towards (±eps_y, ±fy) with R = R0.
 // Sources: OpenSees Steel02 (F. Filippou), whose behaviour this reproduces
-// without its initial-stress option; M. Menegotto & P.E. Pinto (1973), IABSE
+// without its initial-stress option (under `poundfe opensees` its dead band
+// too: a virgin state given a strain change below 10 DBL_EPSILON stays
+// virgin, Steel02::setTrialStrain); M. Menegotto & P.E. Pinto (1973), IABSE
 // Symposium, Lisbon; F.C. Filippou, E.P. Popov & V.V. Bertero (1983), EERC
 // 83/19. Theory: doc/theory.md §12.2.
 #include <poundfe/laws/steel02.h>
 
+#include <cfloat>
 #include <cmath>
 
 namespace poundfe
 {
-  Steel02::Steel02(const Steel02Parameters &parameters)
+  Steel02::Steel02(const Steel02Parameters &parameters, const bool opensees_dead_band)
     : p(parameters)
     , eps_y(p.fy / p.E0)
     , hardening(p.b * p.E0)
+    , opensees_dead_band(opensees_dead_band)
   {
     require_positive("Steel02", "fy", p.fy);
     require_positive("Steel02", "E0", p.E0);
@@ -66,10 +70,10 @@ namespace poundfe
   Steel02::respond(const Steel02State &from, const double strain) const
   {
     const double d_strain = strain - from.strain;
-    if (from.direction == 0 && d_strain == 0)
-      return from;
-    Steel02State s     = from;
-    s.strain           = strain;
+    Steel02State s        = from;
+    s.strain              = strain;
+    if (from.direction == 0 && stays_virgin(d_strain))
+      return s;
     if (s.direction == 0) // first loading: towards (±eps_y, ±fy)
       {
         const double sign = d_strain > 0 ? 1 : -1;
@@ -110,8 +114,26 @@ namespace poundfe
     return s;
   }
 
+  bool
+  Steel02::stays_virgin(const double d_strain) const
+  {
+    return d_strain == 0 || (opensees_dead_band && std::abs(d_strain) < 10 * DBL_EPSILON);
+  }
+
   namespace materials
   {
+    namespace
+    {
+      std::unique_ptr<UniaxialLaw>
+      make_steel02(const std::map<std::string, double> &v, const bool opensees_dead_band)
+      {
+        return std::make_unique<Steel02>(
+          Steel02Parameters{v.at("fy"), v.at("E0"), v.at("b"), v.at("R0"), v.at("cR1"),
+                            v.at("cR2"), v.at("a1"), v.at("a2"), v.at("a3"), v.at("a4")},
+          opensees_dead_band);
+      }
+    } // namespace
+
     MaterialType
     steel02()
     {
@@ -127,11 +149,13 @@ namespace poundfe
                {"a2", 1, "its plastic-excursion scale"},
                {"a3", 0, "isotropic hardening in tension"},
                {"a4", 1, "its plastic-excursion scale"}},
-              [](const std::map<std::string, double> &v) -> std::unique_ptr<UniaxialLaw> {
-                return std::make_unique<Steel02>(Steel02Parameters{
-                  v.at("fy"), v.at("E0"), v.at("b"), v.at("R0"), v.at("cR1"), v.at("cR2"),
-                  v.at("a1"), v.at("a2"), v.at("a3"), v.at("a4")});
-              }};
+              [](const std::map<std::string, double> &v) { return make_steel02(v, false); }};
+    }
+
+    std::unique_ptr<UniaxialLaw>
+    steel02_with_dead_band(const std::map<std::string, double> &values)
+    {
+      return make_steel02(values, true);
     }
   } // namespace materials
 } // namespace poundfe

@@ -3,6 +3,7 @@
 // the columns' local axes and the floor diaphragm (model/frame_building_3d.h,
 // doc/theory.md §1.15), and the set-backs (model/set_backs.h).
 #include <poundfe/base/numbers.h>
+#include <poundfe/model/member_rigidities.h>
 #include <poundfe/model/parameters.h>
 #include <poundfe/model/plan_builder.h>
 #include <poundfe/model/section_shorthands.h>
@@ -118,6 +119,13 @@ namespace poundfe
     required("Beam E", beam_youngs_modulus, "beams' Young's modulus E");
     required("Beam A", beam_area, "beams' area A");
     required("Beam I", beam_second_moment, "beams' second moment I");
+    if (!fibre())
+      {
+        check_member_rigidities(input, s, "Column", column_youngs_modulus, column_area,
+                                column_second_moment);
+        check_member_rigidities(input, s, "Beam", beam_youngs_modulus, beam_area,
+                                beam_second_moment);
+      }
     for (const auto &[entry, values] :
          {std::pair<const char *, const std::vector<double> *>{"Column Avz", &column_shear_area_z},
           {"Column Avy", &column_shear_area_y},

@@ -1,6 +1,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/laws/bouc_wen_bounds.h>
 #include <poundfe/model/entry_scope.h>
+#include <poundfe/model/member_rigidities.h>
 #include <poundfe/model/parameters.h>
 #include <poundfe/model/section_shorthands.h>
 
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace poundfe
@@ -83,6 +85,29 @@ namespace poundfe
           input.at_most(s + "Bay widths", w, largest_building_length, "m", why);
     }
   } // namespace
+
+  void
+  check_member_rigidities(const InputFile &input, const std::string &section,
+                          const std::string &member, const std::vector<double> &E,
+                          const std::vector<double> &A, const std::vector<double> &I)
+  {
+    const auto at = [](const std::vector<double> &v, const std::size_t i) {
+      return v[std::min(i, v.size() - 1)];
+    };
+    const std::size_t n = std::max({E.size(), A.size(), I.size()});
+    if (E.empty() || A.empty() || I.empty())
+      return;
+    for (std::size_t i = 0; i < n; ++i)
+      for (const auto &[name, value, unit] :
+           {std::tuple<const char *, double, const char *>{" A", at(A, i), "N"},
+            {" I", at(I, i), "N m^2"}})
+        if (at(E, i) * value > largest_model_value)
+          input.fail(section + member + name,
+                     "gives the " + std::string(member == "Column" ? "columns'" : "beams'") +
+                       " rigidity E" + (name + 1) + " = " + number_text(at(E, i) * value) +
+                       " " + unit + ", beyond " + number_text(largest_model_value) +
+                       " (no structure comes near it; the solvers square the stiffnesses)");
+  }
 
   const NameTable<BuildingType> &
   building_type_names()
@@ -417,6 +442,10 @@ namespace poundfe
           input.list(s + "Beam E", b.beam_youngs_modulus, n, false, "one per floor");
           input.list(s + "Beam A", b.beam_area, n, false, "one per floor");
           input.list(s + "Beam I", b.beam_second_moment, n, false, "one per floor");
+          check_member_rigidities(input, s, "Column", b.column_youngs_modulus, b.column_area,
+                                  b.column_second_moment);
+          check_member_rigidities(input, s, "Beam", b.beam_youngs_modulus, b.beam_area,
+                                  b.beam_second_moment);
           input.list(s + "Column mass per length", b.column_mass_per_length, n, true,
                  "one per storey");
           input.list(s + "Beam mass per length", b.beam_mass_per_length, n, true,

@@ -37,6 +37,23 @@ namespace poundfe
       throw InputError("", 0, parameter, problem);
     }
 
+    /// The largest elastic modulus taken: ten times diamond's (1.2e12 Pa),
+    /// the stiffest material; more is a typing error (1e200 Pa made the
+    /// section's stiffness overflow in the analysis, a numerical failure).
+    constexpr double largest_modulus = 1e13;
+    /// The largest strength taken (yield stress, concrete strength): ten
+    /// times the strongest steel wires' (about 5e9 Pa).
+    constexpr double largest_strength = 5e10;
+
+    void
+    builder_at_most(const char *parameter, const double value, const double bound,
+                    const std::string &why)
+    {
+      if (value > bound)
+        refuse_builder(parameter, "must be at most " + number_text(bound) + " Pa, " + why +
+                                    " (got " + number_text(value) + ")");
+    }
+
     void
     builder_positive(const char *parameter, const double value)
     {
@@ -81,6 +98,8 @@ namespace poundfe
     check_concrete(const SectionConcrete &c)
     {
       builder_positive("Concrete strength", c.fc);
+      builder_at_most("Concrete strength", c.fc, largest_strength,
+                      "ten times the strongest steel wires' strength");
       builder_positive("Peak strain", c.eps_c0);
       if (!(c.spalling_strain > c.eps_c0))
         refuse_builder("Spalling strain", "must exceed the peak strain " + number_text(c.eps_c0) +
@@ -103,6 +122,10 @@ namespace poundfe
     {
       builder_positive("Yield stress", s.fy);
       builder_positive("Elastic modulus", s.E);
+      builder_at_most("Yield stress", s.fy, largest_strength,
+                      "ten times the strongest steel wires' strength");
+      builder_at_most("Elastic modulus", s.E, largest_modulus,
+                      "ten times diamond's, the stiffest material");
       // b E is the slope after yield: a negative one softens (no unique
       // section response), one of E or more is no yield at all
       if (!(s.b >= 0 && s.b < 1))

@@ -366,6 +366,26 @@ namespace poundfe
       return capacity;
     }
 
+    /// The target curvature within a strain of 1 (100 %) at the fibre
+    /// farthest from the reference point, beyond the rupture of any concrete
+    /// or steel: more is a typing error (a target of 1e200 1/m once ran to
+    /// its end and reported a curve of absurd strains).
+    void
+    check_target_curvature(const InputFile &input, const FibreSection &fibres,
+                           const double curvature)
+    {
+      constexpr double largest_strain = 1;
+      double           reach          = 0;
+      for (const Fibre &f : fibres.geometry().fibres)
+        reach = std::max(reach, std::hypot(f.y - fibres.reference_y(), f.z - fibres.reference_z()));
+      if (reach > 0 && curvature * reach > largest_strain)
+        input.fail("Moment curvature/Target curvature",
+                   "must be at most " + number_text(largest_strain / reach) +
+                     " 1/m, a strain of 1 at the section's farthest fibre (" +
+                     number_text(reach) + " m from the reference point), beyond the rupture "
+                     "of any concrete or steel (got " + number_text(curvature) + ")");
+    }
+
     /// The axial force within twice the section's capacity: more is a
     /// typing error (a force of 1e200 N once passed with a tolerance scaled
     /// by it); up to twice it, the analysis says whether the section
@@ -433,6 +453,7 @@ namespace poundfe
     FibreSection fibres  = sections.section(input, k, settings.angle == 0 ? 2 : 4);
     n_fibres             = fibres.geometry().fibres.size();
     check_axial_force(input, fibres, settings.axial_force);
+    check_target_curvature(input, fibres, settings.target_curvature);
     try
       {
         return moment_curvature(fibres, settings);

@@ -9,6 +9,7 @@
 #include <poundfe/laws/elastic_pp.h>
 #include <poundfe/laws/hysteretic.h>
 #include <poundfe/laws/mander_confinement.h>
+#include <poundfe/laws/opensees_dead_bands.h>
 #include <poundfe/laws/steel01.h>
 #include <poundfe/laws/steel02.h>
 
@@ -815,4 +816,45 @@ BOOST_AUTO_TEST_CASE(elastic_is_openSees_elastic_with_eta_and_eneg)
   auto symmetric = make_material({"Elastic", {{"E", 5}}});
   BOOST_REQUIRE(symmetric->set_trial(-0.5, 0));
   BOOST_TEST(symmetric->force() == -2.5);
+}
+
+BOOST_AUTO_TEST_CASE(opensees_dead_bands_only_when_asked)
+{
+  // the rules of OpenSees 3.8's setTrialStrain (Concrete01, Concrete02,
+  // Steel02) for a strain change below DBL_EPSILON (Steel02: 10 DBL_EPSILON
+  // from a virgin state), and poundfe's laws without the entry
+  const auto banded = [](const std::string &name, std::map<std::string, double> values) {
+    values[opensees_dead_band_entry] = 1;
+    return make_material({name, std::move(values)});
+  };
+  const std::map<std::string, double> c01{
+    {"fpc", -30e6}, {"epsc0", -0.002}, {"fpcu", -6e6}, {"epscu", -0.005}};
+  // Concrete01 stretched by 1e-17 from the virgin state: its committed
+  // tangent Ec0 = 2 fpc / epsc0 in the band, tension's 0 without it
+  auto with = banded("Concrete01", c01), without = make_material({"Concrete01", c01});
+  BOOST_REQUIRE(with->set_trial(1e-17, 0) && without->set_trial(1e-17, 0));
+  BOOST_TEST(with->tangent() == 3e10);
+  BOOST_TEST(without->tangent() == 0);
+  // Concrete02: a trial in the band keeps the stress and tangent of the last
+  // trial (here -0.001, not committed); after a revert, the committed ones
+  std::map<std::string, double> c02 = c01;
+  c02.insert({{"lambda", 0.1}, {"ft", 3e6}, {"Ets", 1.5e9}});
+  auto concrete02 = banded("Concrete02", c02);
+  BOOST_REQUIRE(concrete02->set_trial(-0.001, 0));
+  const double stress = concrete02->force(), tangent = concrete02->tangent();
+  BOOST_TEST(stress < 0);
+  BOOST_REQUIRE(concrete02->set_trial(1e-17, 0));
+  BOOST_TEST(concrete02->force() == stress);
+  BOOST_TEST(concrete02->tangent() == tangent);
+  concrete02->revert();
+  BOOST_REQUIRE(concrete02->set_trial(1e-17, 0));
+  BOOST_TEST(concrete02->force() == 0);
+  // Steel02 given 1e-15 from the virgin state: virgin (stress 0, E0) in the
+  // band, on its curve (E0 1e-15) without it
+  const std::map<std::string, double> s02{{"fy", 450e6}, {"E0", 2e11}, {"b", 0.01}};
+  auto steel = banded("Steel02", s02), plain_steel = make_material({"Steel02", s02});
+  BOOST_REQUIRE(steel->set_trial(1e-15, 0) && plain_steel->set_trial(1e-15, 0));
+  BOOST_TEST(steel->force() == 0);
+  BOOST_TEST(steel->tangent() == 2e11);
+  BOOST_TEST(plain_steel->force() == 2e11 * 1e-15, boost::test_tools::tolerance(1e-9));
 }

@@ -6,7 +6,8 @@
 # NormDispIncr, 5 % Rayleigh damping on the committed (or initial) stiffness and mass.
 #   argv: OUTPUT_DIR <committed|initial> <ALGORITHM> <INTEGRATOR>: the
 #   record's algorithm (Newton by default; e.g. NewtonLineSearch) and
-#   integrator words (Newmark 0.5 0.25 by default; e.g. HHT 0.8)
+#   integrator words (Newmark 0.5 0.25 by default; e.g. HHT 0.8); a fifth
+#   word disp makes the members dispBeamColumns on Legendre points
 set out [lindex $argv 0]
 source [file join [file dirname [info script]] record.tcl]
 source [file join [file dirname [info script]] rc_section.tcl]
@@ -26,14 +27,17 @@ rc_section 1 0.4 0.4 0.04 3 3.14e-4
 rc_section 2 0.3 0.5 0.04 3 2.01e-4
 geomTransf PDelta 1
 geomTransf Linear 2
-beamIntegration Lobatto 1 1 5
-beamIntegration Lobatto 2 2 5
-element forceBeamColumn 1 1 3 1 1
-element forceBeamColumn 2 2 4 1 1
-element forceBeamColumn 3 3 5 1 1
-element forceBeamColumn 4 4 6 1 1
-element forceBeamColumn 5 3 4 2 2
-element forceBeamColumn 6 5 6 2 2
+set disp [expr {$argc > 4 && [lindex $argv 4] eq "disp"}]
+set rule [expr {$disp ? "Legendre" : "Lobatto"}]
+set member [expr {$disp ? "dispBeamColumn" : "forceBeamColumn"}]
+beamIntegration $rule 1 1 5
+beamIntegration $rule 2 2 5
+element $member 1 1 3 1 1
+element $member 2 2 4 1 1
+element $member 3 3 5 1 1
+element $member 4 4 6 1 1
+element $member 5 3 4 2 2
+element $member 6 5 6 2 2
 recorder Node -file $out/frame_disp.out -time -precision 12 -node 3 5 -dof 1 2 3 disp
 recorder Node -file $out/frame_base.out -time -precision 12 -node 1 2 -dof 1 2 3 reaction
 recorder Element -file $out/frame_section.out -time -precision 12 -ele 1 2 section 1 force

@@ -50,7 +50,9 @@ namespace poundfe
   class Concrete01 : public UniaxialMaterial<Concrete01State>
   {
   public:
-    explicit Concrete01(const Concrete01Parameters &parameters);
+    /// With `opensees_dead_band`, OpenSees 3.8's: a strain within
+    /// DBL_EPSILON of the committed one keeps the committed state.
+    explicit Concrete01(const Concrete01Parameters &parameters, bool opensees_dead_band = false);
 
     double initial_stiffness() const override { return envelope.initial_modulus(); }
     double stored_energy() const override;
@@ -63,8 +65,11 @@ namespace poundfe
     Concrete01State virgin() const override;
     /// A new largest compression: the envelope point and the unloading line from it.
     Concrete01State on_envelope(double strain) const;
+    /// Whether `strain` lies in the dead band around the committed strain.
+    bool in_dead_band(const Concrete01State &from, double strain) const;
 
     KentScottParkEnvelope envelope;
+    bool                  opensees_dead_band;
   };
 } // namespace poundfe
 

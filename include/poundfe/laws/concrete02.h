@@ -31,7 +31,10 @@ namespace poundfe
   class Concrete02 : public UniaxialMaterial<Concrete02State>
   {
   public:
-    explicit Concrete02(const Concrete02Parameters &parameters);
+    /// With `opensees_dead_band`, OpenSees 3.8's: a strain within DBL_EPSILON
+    /// of the committed one keeps the committed history and the last trial's
+    /// stress and tangent.
+    explicit Concrete02(const Concrete02Parameters &parameters, bool opensees_dead_band = false);
 
     double initial_stiffness() const override { return envelope.initial_modulus(); }
     double history_variable() const override { return trial.min_strain; }
@@ -45,12 +48,16 @@ namespace poundfe
     Concrete02State unload_or_reload(const Concrete02State &from, double strain) const;
     /// Sets min_strain = strain on the envelope and what follows from it.
     void set_min_strain(Concrete02State &s, double strain, const StressPoint &on_envelope) const;
+    /// The trial in the dead band (OpenSees's): the committed history at
+    /// `strain` with the stress and tangent of the last trial.
+    Concrete02State in_dead_band(const Concrete02State &from, double strain) const;
 
     KentScottParkEnvelope envelope;
     double                lambda, ft, Ets;
     // constants of the law, computed once: Ec0, eps_R, and the tension
     // envelope's cracking and zero-stress strains
     double Ec0, eps_R, crack_strain, tension_end;
+    bool   opensees_dead_band;
   };
 } // namespace poundfe
 

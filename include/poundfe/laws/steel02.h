@@ -40,8 +40,10 @@ namespace poundfe
   {
   public:
     /// InputError naming the parameter unless fy, E0, R0, cR2, a2, a4 > 0,
-    /// b and cR1 in [0, 1), a1, a3 >= 0.
-    explicit Steel02(const Steel02Parameters &parameters);
+    /// b and cR1 in [0, 1), a1, a3 >= 0. With `opensees_dead_band`, OpenSees
+    /// 3.8's: a virgin state given a strain change below 10 DBL_EPSILON
+    /// stays virgin (stress 0, tangent E0) at the trial strain.
+    explicit Steel02(const Steel02Parameters &parameters, bool opensees_dead_band = false);
 
     double initial_stiffness() const override { return p.E0; }
     double yield_deformation() const override { return p.fy / p.E0; }
@@ -52,9 +54,12 @@ namespace poundfe
     Steel02State virgin() const override;
     /// R, 1/R and the secant of the branch that starts at (eps_r, sig_r).
     void set_branch(Steel02State &s) const;
+    /// Whether a virgin state stays virgin after the change `d_strain`.
+    bool stays_virgin(double d_strain) const;
 
     Steel02Parameters p;
     double            eps_y, hardening; // fy / E0, b E0
+    bool              opensees_dead_band;
   };
 } // namespace poundfe
 
