@@ -6,6 +6,7 @@
 // --version.
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/launched_job.h>
 #include <poundfe/base/thread_limit.h>
 #include <poundfe/commands/command_table.h>
 #include <poundfe/commands/dispatch.h>
@@ -204,29 +205,6 @@ namespace
         return 1;
       }
     return std::nullopt;
-  }
-
-  /// This process's rank in mpirun's job before MPI is initialised (Open
-  /// MPI's, MPICH's and PMIx's launchers say it in the environment); 0 when
-  /// launched alone.
-  int
-  launched_rank()
-  {
-    for (const char *name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
-      if (const char *rank = std::getenv(name))
-        return std::atoi(rank);
-    return 0;
-  }
-
-  /// The number of processes of mpirun's job before MPI is initialised (Open
-  /// MPI's and MPICH's launchers say it); 1 when launched alone.
-  int
-  launched_size()
-  {
-    for (const char *name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-      if (const char *size = std::getenv(name))
-        return std::max(1, std::atoi(size));
-    return 1;
   }
 
   /// The exit status of what dispatch_command threw, after its message on

@@ -7,6 +7,7 @@
 // no recorder file written). `exit` ends it cleanly with the recorders'
 // files in place. poundfe's additions live in the namespace poundfe::.
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/base/lean_assert.h>
 #include <poundfe/commands/command.h>
 
@@ -35,6 +36,8 @@ namespace poundfe
     void
     Session::record()
     {
+      if (interruption_requested()) // after each committed step of an analysis
+        throw Interrupted();
       for (auto &recorder : recorders)
         recorder->record(domain);
     }
@@ -130,6 +133,8 @@ namespace poundfe
         try
           {
             Tcl_ResetResult(interp);
+            if (interruption_requested()) // a safe point: the script's next OpenSees command
+              throw Interrupted();
             definition.procedure(*definition.session, words);
             return TCL_OK;
           }
@@ -353,6 +358,8 @@ namespace poundfe
       Session session(run.err);
       define_commands(interp, session);
       const int code = Tcl_EvalFile(interp, script.c_str());
+      if (interruption_requested()) // the recorders' temporaries go with the session
+        throw Interrupted();
       if (code != TCL_OK && !session.exited)
         {
           const std::string message = Tcl_GetStringResult(interp);
