@@ -19,6 +19,7 @@
 #include <iostream>
 #include <ostream>
 #include <regex>
+#include <sstream>
 
 namespace poundfe
 {
@@ -27,10 +28,26 @@ namespace poundfe
     void
     Session::finish_recorders()
     {
-      for (auto &recorder : recorders)
-        recorder->finish();
+      for (std::size_t i = 0; i < recorders.size(); ++i)
+        finish_recorder(i);
       recorders.clear();
       recorder_tags.clear();
+    }
+
+    void
+    Session::finish_recorder(const std::size_t i)
+    {
+      try
+        {
+          recorders[i]->finish();
+        }
+      catch (const OutputError &e)
+        {
+          std::ostringstream message;
+          message << "recorder " << recorder_tags[i] << ": " << e.what()
+                  << " (its lines up to time " << recorders[i]->last_line_time() << ")";
+          throw opensees::ScriptError(message.str());
+        }
     }
 
     void

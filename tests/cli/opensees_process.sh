@@ -71,3 +71,19 @@ n=$(grep -c "node: no model yet" "$work/ranks.log")
 "$poundfe" opensees "$work/ranks.tcl" "$work" > /dev/null 2>&1
 [ "$(cat "$work/rank0.txt")" = "0 of 1" ] || fail "alone: getPID 0, getNP 1"
 echo "ok   mpirun -np 2: one file per rank (getPID, getNP), the error printed once"
+
+# 3. a write error met by the writer thread (--threads 2) after the last
+# record, and inline: 10 steps of 0.001 s, the last line at t = 0.01 s
+for threads in 2 1; do
+  rm -f "$work"/disp.out*
+  ln -s /dev/full "$work/disp.out.tmp" # opened through the link: every write fails (ENOSPC)
+  "$poundfe" opensees --threads $threads "$work/long.tcl" "$work/disp.out" 10 > "$work/full.log" 2>&1
+  status=$?
+  [ "$status" -eq 1 ] || { cat "$work/full.log"; fail "write error (--threads $threads): exit $status"; }
+  expected="poundfe: error: recorder 0: disk full: cannot write $work/disp.out: No space left on device (its lines up to time 0.01)"
+  grep -qxF "$expected" "$work/full.log" ||
+    { cat "$work/full.log"; fail "write error (--threads $threads): not '$expected'"; }
+  leftover=$(ls "$work" | grep '^disp\.out')
+  [ -z "$leftover" ] || fail "write error (--threads $threads) left $leftover"
+  echo "ok   a write error after the last record (--threads $threads): recorder 0, t = 0.01, exit 1"
+done
