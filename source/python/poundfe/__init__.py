@@ -38,8 +38,9 @@ def __getattr__(name):
     loaded = sys.modules.get(__name__ + "._api")  # partly, while it is being imported
     if loaded is not None and name in vars(loaded):
         return vars(loaded)[name]
-    if importlib.util.find_spec(f"{__name__}.{name}") is not None:
-        return importlib.import_module(f"{__name__}.{name}")
+    submodule = f"{__name__}.{name}"
+    if submodule in sys.modules or importlib.util.find_spec(submodule) is not None:
+        return importlib.import_module(submodule)
     try:
         return getattr(_full(), name)
     except AttributeError:
