@@ -251,8 +251,9 @@ poundfe_program_main(int argc, char **argv)
   if (const std::optional<int> status = answer_without_command(line, command, err))
     return *status;
   // Every command that writes files stops cleanly on SIGINT/SIGTERM: at its
-  // own safe points, or at the next file write (commands/command_guard.h).
-  if (command->has(CommandRule::reads_file))
+  // own safe points, or at the next file write (commands/command_guard.h);
+  // an OpenSees script at its next command or step (opensees_program.cc).
+  if (command->has(CommandRule::reads_file) || command->has(CommandRule::script_arguments))
     install_interruption_handlers();
   const MpiStarter start_mpi = [&]() {
     mpi.emplace(argc, argv, line.threads);

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # `poundfe opensees` as a process (Running OpenSees scripts in
 # doc/user-guide.md, "Signals, mpirun and write errors"):
-#  1. SIGTERM and SIGINT during an analysis that records: exit 128 + the
-#     signal (143, 130), one message, and no recorder file, complete or
-#     temporary (*.out.tmp), left behind;
+#  1. SIGTERM and SIGINT during an analysis that records (and SIGTERM with
+#     --threads 2, which the program's module runs): exit 128 + the signal
+#     (143, 130), one message, and no recorder file, complete or temporary
+#     (*.out.tmp), left behind;
 #  2. under mpirun -np 2 each rank runs the script: getPID and getNP give
 #     each its file, and an error all ranks make is printed once (rank 0);
 #  3. a recorder's write error (its temporary a link to /dev/full: every
@@ -34,9 +35,13 @@ analyze [lindex $argv 1] 0.001
 TCL
 
 # 1. signals: sent once the recorder's temporary exists (the analysis runs)
-for signal in TERM INT; do
+for case in "TERM 1" "INT 1" "TERM 2"; do
+  read -r signal threads <<< "$case"
   rm -f "$work"/disp.out*
-  timeout -s KILL 120 "$poundfe" opensees "$work/long.tcl" "$work/disp.out" 100000000 \
+  # --threads 2: the program's module (source/program.cc) runs the script
+  threads_option=()
+  [ "$threads" = 1 ] || threads_option=(--threads "$threads")
+  timeout -s KILL 120 "$poundfe" opensees "${threads_option[@]}" "$work/long.tcl" "$work/disp.out" 100000000 \
     > "$work/signal.log" 2>&1 &
   pid=$!
   for _ in $(seq 1 1500); do [ -e "$work/disp.out.tmp" ] && break; sleep 0.02; done
@@ -51,7 +56,7 @@ for signal in TERM INT; do
     { cat "$work/signal.log"; fail "SIG$signal: no message"; }
   leftover=$(ls "$work" | grep '^disp\.out')
   [ -z "$leftover" ] || fail "SIG$signal left $leftover"
-  echo "ok   SIG$signal during analyze: exit $status, no recorder file left"
+  echo "ok   SIG$signal during analyze (--threads $threads): exit $status, no recorder file left"
 done
 
 # 2. mpirun -np 2: a file per rank, then one error message for both ranks
