@@ -38,6 +38,8 @@ def __getattr__(name):
     loaded = sys.modules.get(__name__ + "._api")  # partly, while it is being imported
     if loaded is not None and name in vars(loaded):
         return vars(loaded)[name]
+    if name == "_core" and loaded is None:  # as _api loads it (RTLD_LAZY: _api.py says why)
+        return _full()._core
     submodule = f"{__name__}.{name}"
     if submodule in sys.modules or importlib.util.find_spec(submodule) is not None:
         return importlib.import_module(submodule)
