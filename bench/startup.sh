@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Start-up (Release build, from the repository root): what `poundfe --version`, a small
-# `modal`, an empty `opensees` script and `import poundfe` cost, against the floor of
+# `modal`, an empty `opensees` script, `import poundfe.opensees` (the lean extension) and
+# the full module's core (`import poundfe` and its first name) cost, against the floor of
 # loading deal.II alone (a three-line C program compiled here: dlopen of libdeal.ii.so)
 # and, when OPENSEES names its binary, OpenSees on the same empty script.
 #   bash bench/startup.sh [RUNS]          (default 20 runs of each, alternated)
@@ -22,7 +23,8 @@ commands=(
   "poundfe --version|$poundfe --version"
   "poundfe modal input/three-storey-shear.prm|$poundfe modal input/three-storey-shear.prm --output $work/modal"
   "poundfe opensees (empty script)|$poundfe opensees $work/empty.tcl"
-  "python3 -c 'import poundfe'|env PYTHONPATH=build/python $python -c 'import poundfe'"
+  "python3 -c 'import poundfe.opensees'|env PYTHONPATH=build/python $python -c 'import poundfe.opensees'"
+  "python3 -c 'import poundfe; poundfe.Input'|env PYTHONPATH=build/python $python -c 'import poundfe; poundfe.Input'"
   "floor: dlopen of libdeal.ii.so|$work/floor"
 )
 if [ -n "${OPENSEES:-}" ]; then

@@ -7,7 +7,14 @@
 // It runs the command as the program's dispatcher does for a row that
 // reads no parameter file (commands/dispatch.cc): the script and its
 // arguments, no output directory, messages and exit statuses alike
-// (commands/command_failure.cc).
+// (commands/command_failure.cc). Under mpirun every rank runs the script
+// (getPID and getNP say which and how many), and rank 0 alone prints the
+// refusals all ranks make alike, as the program does. SIGINT or SIGTERM
+// stops the script at its next OpenSees command or analysis step: the
+// recorders' temporaries are removed (no file of an unfinished script
+// appears, as after an error) and the exit status is 128 + the signal.
+#include <poundfe/base/interruption.h>
+#include <poundfe/base/launched_job.h>
 #include <poundfe/commands/command.h>
 #include <poundfe/commands/dispatch.h>
 
@@ -32,17 +39,19 @@ poundfe_opensees_main(int argc, char **argv)
   using namespace poundfe;
   const std::vector<std::string> arguments(argv + 2, argv + argc);
   const std::string              no_output_directory;
+  std::ostream &err = launched_rank() == 0 ? std::cerr : silent_stream();
+  install_interruption_handlers();
   try
     {
       // the communicator: none, as MPI is not loaded (the interpreter uses none)
       return commands::opensees(
-        {arguments, nullptr, no_output_directory, 0, MPI_Comm(), std::cerr, std::cout});
+        {arguments, nullptr, no_output_directory, 0, MPI_Comm(), err, std::cout});
     }
   catch (...)
     {
       const CommandFailure failure = command_failure(std::current_exception());
       std::cout.flush();
-      std::cerr << failure.message << std::flush;
+      (failure.any_rank ? std::cerr : err) << failure.message << std::flush;
       return failure.status;
     }
 }

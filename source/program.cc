@@ -6,6 +6,7 @@
 // --version.
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/launched_job.h>
 #include <poundfe/base/thread_limit.h>
 #include <poundfe/commands/command_table.h>
 #include <poundfe/commands/dispatch.h>
@@ -206,29 +207,6 @@ namespace
     return std::nullopt;
   }
 
-  /// This process's rank in mpirun's job before MPI is initialised (Open
-  /// MPI's, MPICH's and PMIx's launchers say it in the environment); 0 when
-  /// launched alone.
-  int
-  launched_rank()
-  {
-    for (const char *name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
-      if (const char *rank = std::getenv(name))
-        return std::atoi(rank);
-    return 0;
-  }
-
-  /// The number of processes of mpirun's job before MPI is initialised (Open
-  /// MPI's and MPICH's launchers say it); 1 when launched alone.
-  int
-  launched_size()
-  {
-    for (const char *name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-      if (const char *size = std::getenv(name))
-        return std::max(1, std::atoi(size));
-    return 1;
-  }
-
   /// The exit status of what dispatch_command threw, after its message on
   /// `err`: 1 for a refused command line or bad input, 2 for a numerical
   /// failure. The message goes in one write after the report is flushed:
@@ -273,8 +251,9 @@ poundfe_program_main(int argc, char **argv)
   if (const std::optional<int> status = answer_without_command(line, command, err))
     return *status;
   // Every command that writes files stops cleanly on SIGINT/SIGTERM: at its
-  // own safe points, or at the next file write (commands/command_guard.h).
-  if (command->has(CommandRule::reads_file))
+  // own safe points, or at the next file write (commands/command_guard.h);
+  // an OpenSees script at its next command or step (opensees_program.cc).
+  if (command->has(CommandRule::reads_file) || command->has(CommandRule::script_arguments))
     install_interruption_handlers();
   const MpiStarter start_mpi = [&]() {
     mpi.emplace(argc, argv, line.threads);

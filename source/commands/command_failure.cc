@@ -3,7 +3,10 @@
 // OpenSees interpreter's module (opensees_program.cc), which links without
 // deal.II, so this file needs none of it.
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/commands/dispatch.h>
+
+#include <ostream>
 
 namespace poundfe
 {
@@ -11,6 +14,13 @@ namespace poundfe
     : std::invalid_argument(problem)
     , after(std::move(trailer))
   {}
+
+  std::ostream &
+  silent_stream()
+  {
+    static std::ostream silent(nullptr);
+    return silent;
+  }
 
   CommandFailure
   command_failure(const std::exception_ptr &thrown)
@@ -32,6 +42,11 @@ namespace poundfe
       {
         failure.message = "poundfe: numerical failure: " + std::string(e.what()) + "\n";
         failure.status  = 2;
+      }
+    catch (const Interrupted &e) // the OpenSees interpreter's (the guarded commands catch theirs)
+      {
+        failure.message = "poundfe: " + std::string(e.what()) + "\n";
+        failure.status  = interrupted_exit_status();
       }
     catch (const std::exception &e)
       {

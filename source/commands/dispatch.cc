@@ -26,13 +26,6 @@ namespace poundfe
     return command.has(CommandRule::over_mpi) || (spreads_one_run && launched_processes > 1);
   }
 
-  std::ostream &
-  silent_stream()
-  {
-    static std::ostream silent(nullptr);
-    return silent;
-  }
-
   namespace
   {
     bool

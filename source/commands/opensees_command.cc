@@ -7,6 +7,7 @@
 // no recorder file written). `exit` ends it cleanly with the recorders'
 // files in place. poundfe's additions live in the namespace poundfe::.
 #include <poundfe/base/exceptions.h>
+#include <poundfe/base/interruption.h>
 #include <poundfe/base/lean_assert.h>
 #include <poundfe/commands/command.h>
 
@@ -18,6 +19,7 @@
 #include <iostream>
 #include <ostream>
 #include <regex>
+#include <sstream>
 
 namespace poundfe
 {
@@ -26,15 +28,33 @@ namespace poundfe
     void
     Session::finish_recorders()
     {
-      for (auto &recorder : recorders)
-        recorder->finish();
+      for (std::size_t i = 0; i < recorders.size(); ++i)
+        finish_recorder(i);
       recorders.clear();
       recorder_tags.clear();
     }
 
     void
+    Session::finish_recorder(const std::size_t i)
+    {
+      try
+        {
+          recorders[i]->finish();
+        }
+      catch (const OutputError &e)
+        {
+          std::ostringstream message;
+          message << "recorder " << recorder_tags[i] << ": " << e.what()
+                  << " (its lines up to time " << recorders[i]->last_line_time() << ")";
+          throw opensees::ScriptError(message.str());
+        }
+    }
+
+    void
     Session::record()
     {
+      if (interruption_requested()) // after each committed step of an analysis
+        throw Interrupted();
       for (auto &recorder : recorders)
         recorder->record(domain);
     }
@@ -130,6 +150,8 @@ namespace poundfe
         try
           {
             Tcl_ResetResult(interp);
+            if (interruption_requested()) // a safe point: the script's next OpenSees command
+              throw Interrupted();
             definition.procedure(*definition.session, words);
             return TCL_OK;
           }
@@ -353,6 +375,8 @@ namespace poundfe
       Session session(run.err);
       define_commands(interp, session);
       const int code = Tcl_EvalFile(interp, script.c_str());
+      if (interruption_requested()) // the recorders' temporaries go with the session
+        throw Interrupted();
       if (code != TCL_OK && !session.exited)
         {
           const std::string message = Tcl_GetStringResult(interp);

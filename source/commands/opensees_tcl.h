@@ -83,6 +83,10 @@ namespace poundfe
 
       /// Every recorder's file written and closed (wipe, the script's end).
       void finish_recorders();
+      /// Recorder i's file written and closed. A write error, which the
+      /// writer thread may have met after the script's last record, names
+      /// the recorder and the time of the last line the failed write held.
+      void finish_recorder(std::size_t i);
       /// Every recorder records the committed state.
       void record();
     };

@@ -7,6 +7,8 @@
 // LoadControl 1), with OpenSees's warning.
 #include "opensees_tcl.h"
 
+#include <poundfe/base/launched_job.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -715,14 +717,17 @@ namespace poundfe
              [](Session &s, Words &w) { test_results(s, w, false); });
       for (const char *name : {"testNorm", "testNorms"})
         define(interp, session, name, [](Session &s, Words &w) { test_results(s, w, true); });
-      // one process, as OpenSees's sequential interpreter
+      // Each process runs the whole script alone; under mpirun, its rank and
+      // the job's size as OpenSeesMP says them (1 and 0 launched alone, as
+      // OpenSees's sequential interpreter), so that a script can write one
+      // file per process.
       define(interp, session, "getNP", [](Session &, Words &w) {
         check_done(w);
-        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(1));
+        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(launched_size()));
       });
       define(interp, session, "getPID", [](Session &, Words &w) {
         check_done(w);
-        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(0));
+        Tcl_SetObjResult(w.interp, Tcl_NewIntObj(launched_rank()));
       });
       define(interp, session, "getTime", get_time);
       define(interp, session, "nodeDisp",

@@ -1546,7 +1546,7 @@ namespace poundfe
             if (it == s.recorder_tags.end())
               throw ScriptError("recorder " + text_of(tag) + " does not exist");
             const auto i = it - s.recorder_tags.begin();
-            s.recorders[i]->finish();
+            s.finish_recorder(i);
             s.recorders.erase(s.recorders.begin() + i);
             s.recorder_tags.erase(it);
           }

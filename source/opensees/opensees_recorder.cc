@@ -238,6 +238,7 @@ namespace poundfe
         return false;
       if (interval != 0)
         next_time = now + interval;
+      recorded_time = now;
       return true;
     }
 
@@ -250,21 +251,28 @@ namespace poundfe
       if (time)
         line.push_back(domain.time);
       values(domain, line);
-      write_line(line);
+      write_line(domain.time, line);
     }
 
     void
-    Recorder::write_line(const std::vector<double> &numbers)
+    Recorder::write_line(const double at, const std::vector<double> &numbers)
     {
-      if (queue)
-        queue->push(*this, numbers.data(), numbers.size());
+      if (queue) // the time travels with the line: a write error says which lines it lost
+        queue->push(*this, at, numbers);
       else
-        consume(numbers.data(), numbers.size());
+        append_text(numbers.data(), numbers.size(), at);
     }
 
     void
     Recorder::consume(const double *numbers, const std::size_t n)
     {
+      append_text(numbers + 1, n - 1, numbers[0]);
+    }
+
+    void
+    Recorder::append_text(const double *numbers, const std::size_t n, const double at)
+    {
+      text_time = at;
       // room for each number: sign, the digits, the point and an exponent
       const std::size_t room = precision_text_room(precision) + 1;
       if (used + n * room + 1 > buffer.size()) // grows for a long line only

@@ -121,7 +121,7 @@ namespace poundfe
     {
       if (!first)
         for (const auto &row : rows)
-          this->write_line(row);
+          this->write_line(this->recorded_time, row);
       first = true;
       Values::finish();
     }

@@ -2,7 +2,8 @@
 // errors as Python exceptions, the parameter file as an `Input` object and
 // the modes of a prepared analysis (a run's Results.modes). The time history and the commands are in time_history_binding.cc; the
 // Pythonic layer (results as numpy arrays, the model builder) is in
-// source/python/poundfe/*.py.
+// source/python/poundfe/*.py. The OpenSees commands of poundfe.opensees are
+// the lean extension poundfe._opensees (opensees_binding.cc), without deal.II.
 //
 // Every entry point reads its input through the command line's reader
 // (read_parameters, with overrides): a Python user gets the same checks and
@@ -70,19 +71,6 @@ namespace poundfe::python
         }
     }
   } // namespace
-
-  /// An exception type `name` of the module, derived from `base`.
-  py::handle
-  exception_type(py::module_ &m, const char *name, PyObject *base, const char *doc)
-  {
-    const std::string qualified = std::string("poundfe.") + name;
-    py::object type = py::reinterpret_steal<py::object>(
-      PyErr_NewExceptionWithDoc(qualified.c_str(), doc, base, nullptr));
-    if (!type)
-      throw py::error_already_set();
-    m.attr(name) = type;
-    return type.release();
-  }
 
   namespace
   {
@@ -306,5 +294,4 @@ PYBIND11_MODULE(_core, m)
 
   bind_input(m);
   bind_run(m);
-  bind_opensees(m);
 }

@@ -1,12 +1,15 @@
 // What the translation units of poundfe._core share (module.cc: errors,
-// Input, modal; time_history_binding.cc: time history, commands;
-// opensees_binding.cc: the OpenSees commands of poundfe.opensees).
+// Input, modal; time_history_binding.cc: time history, commands), and
+// exception_type, which the lean extension poundfe._opensees
+// (opensees_binding.cc: the OpenSees commands of poundfe.opensees) uses too.
+// Nothing here names deal.II.
 #ifndef poundfe_python_module_h
 #define poundfe_python_module_h
 
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <string>
 
 namespace poundfe
 {
@@ -25,15 +28,22 @@ namespace poundfe::python
   pybind11::dict modes_of(const Analysis &analysis);
 
   /// An exception type `name` of the module m (poundfe.NAME), derived
-  /// from `base`; the module keeps it alive.
-  pybind11::handle exception_type(pybind11::module_ &m, const char *name, PyObject *base,
-                                  const char *doc);
+  /// from `base`; the module keeps it alive (a handle: nothing is released
+  /// after Python has finalised).
+  inline pybind11::handle
+  exception_type(pybind11::module_ &m, const char *name, PyObject *base, const char *doc)
+  {
+    const std::string qualified = std::string("poundfe.") + name;
+    pybind11::object  type      = pybind11::reinterpret_steal<pybind11::object>(
+      PyErr_NewExceptionWithDoc(qualified.c_str(), doc, base, nullptr));
+    if (!type)
+      throw pybind11::error_already_set();
+    m.attr(name) = type;
+    return type.release();
+  }
 
   /// run_time_history and command (time_history_binding.cc).
   void bind_run(pybind11::module_ &m);
-
-  /// opensees_call, opensees_commands, opensees_finish (opensees_binding.cc).
-  void bind_opensees(pybind11::module_ &m);
 } // namespace poundfe::python
 
 #endif

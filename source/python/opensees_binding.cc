@@ -1,5 +1,8 @@
-// poundfe._core's OpenSees commands, under poundfe.opensees (OpenSeesPy's
-// calling conventions): one entry, opensees_call(name, arguments), over the
+// The lean extension poundfe._opensees, under poundfe.opensees (OpenSeesPy's
+// calling conventions): over the interpreter's library alone (poundfe_lean:
+// no deal.II, MPI, PETSc or Trilinos, as poundfe-opensees.so), so that
+// `import poundfe.opensees` loads none of them. One entry,
+// opensees_call(name, arguments), over the
 // process's one OpenSeesInterpreter (commands/opensees_interpreter.h: the
 // Tcl command procedures of `poundfe opensees` on one domain, which `wipe`
 // clears). Python's values become the words a Tcl script would give: an
@@ -123,40 +126,46 @@ namespace poundfe::python
         }
       return python_of(result);
     }
-  } // namespace
 
-  void
-  bind_opensees(py::module_ &m)
-  {
-    opensees_error_type =
-      exception_type(m, "OpenSeesError", PyExc_Exception,
-                     "An OpenSees command refused (poundfe.opensees): the message starts with the "
-                     "command's name and ends with the caller's file and line (attributes "
-                     "command, file, line).");
-    m.def("opensees_call", &call, py::arg("name"), py::arg("arguments"),
-          "Runs OpenSees command `name` with the tuple `arguments` (poundfe.opensees).");
-    m.def(
-      "opensees_commands",
-      []() {
-        py::list list;
-        try
-          {
-            for (const auto &[name, supported] : interpreter().commands())
-              list.append(py::make_tuple(name, supported));
-          }
-        catch (const OpenSeesCommandError &e)
-          {
-            raise(e);
-          }
-        return list;
-      },
-      "The OpenSees commands (name, supported) that opensees_call runs.");
-    m.def(
-      "opensees_finish",
-      []() {
-        if (instance)
-          instance->finish_recorders();
-      },
-      "Every OpenSees recorder's file written (at the interpreter's exit).");
-  }
+    void
+    bind_opensees(py::module_ &m)
+    {
+      opensees_error_type =
+        exception_type(m, "OpenSeesError", PyExc_Exception,
+                       "An OpenSees command refused (poundfe.opensees): the message starts with the "
+                       "command's name and ends with the caller's file and line (attributes "
+                       "command, file, line).");
+      m.def("opensees_call", &call, py::arg("name"), py::arg("arguments"),
+            "Runs OpenSees command `name` with the tuple `arguments` (poundfe.opensees).");
+      m.def(
+        "opensees_commands",
+        []() {
+          py::list list;
+          try
+            {
+              for (const auto &[name, supported] : interpreter().commands())
+                list.append(py::make_tuple(name, supported));
+            }
+          catch (const OpenSeesCommandError &e)
+            {
+              raise(e);
+            }
+          return list;
+        },
+        "The OpenSees commands (name, supported) that opensees_call runs.");
+      m.def(
+        "opensees_finish",
+        []() {
+          if (instance)
+            instance->finish_recorders();
+        },
+        "Every OpenSees recorder's file written (at the interpreter's exit).");
+    }
+  } // namespace
 } // namespace poundfe::python
+
+PYBIND11_MODULE(_opensees, m)
+{
+  m.doc() = "The OpenSees interpreter's compiled part; use poundfe.opensees.";
+  poundfe::python::bind_opensees(m);
+}

@@ -26,6 +26,12 @@ if [ -n "$python" ]; then
   for file in "$source"/source/python/poundfe/*.py; do expected+=("$pydir/poundfe/$(basename "$file")"); done
 fi
 for file in "${expected[@]}"; do [ -f "$prefix/$file" ] || fail "not installed: $file"; done
+# the compiled parts of the Python package: the full module's and the interpreter's
+if [ -n "$python" ]; then
+  for extension in _core _opensees; do
+    compgen -G "$prefix/$pydir/poundfe/$extension.*.so" > /dev/null || fail "not installed: $extension"
+  done
+fi
 # the program module bin/poundfe loads, in LIBDIR/poundfe (CMakeLists.txt)
 # and the OpenSees interpreter's module beside it
 for module in poundfe-program.so poundfe-opensees.so; do
@@ -102,7 +108,10 @@ dpkg-deb -c "$deb" | awk '{print $NF}' | sed 's|^\./|/|' > "$work/contents"
 for file in "${expected[@]}"; do
   grep -qxF "/usr/$file" "$work/contents" || fail "not in the package: /usr/$file"
 done
-grep -q "^/usr/$pydir/poundfe/_core.*\.so$" "$work/contents" || [ -z "$python" ] || fail "no _core module in the package"
+for extension in _core _opensees; do # the full module's and the lean interpreter's
+  grep -q "^/usr/$pydir/poundfe/$extension.*\.so$" "$work/contents" || [ -z "$python" ] ||
+    fail "no $extension module in the package"
+done
 grep -v -e '^/usr/$' -e '^/usr/bin/' -e '^/usr/share/' -e '^/usr/lib/' -e '^/$' "$work/contents" &&
   fail "the package has files outside /usr/bin, /usr/lib and /usr/share"
 dpkg-deb -f "$deb" > "$work/control"

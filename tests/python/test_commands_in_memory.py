@@ -22,6 +22,8 @@ import poundfe
 from poundfe import _core
 from common import EXAMPLE, TestCase
 
+poundfe.Input  # the core loaded now (poundfe loads it at its first name), before any timer
+
 QUIET = {"Output/Plots": False}
 SMALL = "tests/cli/montecarlo-small.prm"
 IDA = "tests/cli/ida/ida-small.prm"

@@ -18,6 +18,8 @@ import unittest
 import poundfe
 from common import EXAMPLE, TestCase, read_summary
 
+poundfe.Input  # the core loaded now (poundfe loads it at its first name), before any timer
+
 
 class InterruptedRun(TestCase):
     def check_directory(self, directory):

@@ -166,7 +166,7 @@ class ConventionsTest(TestCase):
         error = raised.exception
         self.assertEqual(str(error), f"printModel: poundfe does not support it ({__file__}, line {line})")
         self.assertEqual((error.command, error.file, error.line), ("printModel", __file__, line))
-        self.assertIs(ops.OpenSeesError, poundfe._core.OpenSeesError)
+        self.assertIs(ops.OpenSeesError, poundfe._opensees.OpenSeesError)
         self.assertFalse(issubclass(ops.OpenSeesError, ValueError))  # as OpenSeesPy's: an Exception
         with self.assertRaises(AttributeError):
             ops.notAnOpenSeesCommand  # noqa: B018

@@ -95,7 +95,8 @@ namespace poundfe
   struct CommandFailure
   {
     std::string  message; // "poundfe: error: ...\n" (CommandLineError: and its trailer)
-    int          status = 1; // 1 a refusal or bad input, 2 a numerical failure
+    int          status = 1; // 1 a refusal or bad input, 2 a numerical failure,
+                             // 128 + the signal for Interrupted
     /// Not one of poundfe's refusals (which every rank makes alike): any
     /// rank may have thrown it alone, so that rank says it.
     bool         any_rank = false;

@@ -99,6 +99,10 @@ namespace poundfe
       /// `remove element` refuse what a recorder records).
       virtual bool records_node(int /*tag*/) const { return false; }
       virtual bool records_element(int /*tag*/) const { return false; }
+      /// The analysis time of the last line given to the file's text: after
+      /// a write error, of the last line the failed write held (found on
+      /// the writer thread, the error may surface at a later command).
+      double last_line_time() const { return text_time; }
 
     protected:
       /// The line's values after the time.
@@ -107,13 +111,18 @@ namespace poundfe
       /// without -dT, else when time - next >= -dT rTolDt, the next then
       /// time + dT), and the next due time moved on if so.
       bool due(double time);
-      /// One line of numbers into the file's text (through the queue, if any).
-      void write_line(const std::vector<double> &numbers);
+      /// One line of numbers, recorded at analysis time `at`, into the
+      /// file's text (through the queue, if any).
+      void write_line(double at, const std::vector<double> &numbers);
       const bool time;
+      /// The time of the last record that was due.
+      double recorded_time = 0;
 
     private:
-      /// The text of one line of `n` numbers, written out when enough.
+      /// A queued line: its time, then its `n - 1` numbers (append_text).
       void consume(const double *numbers, std::size_t n) override;
+      /// The text of one line of `n` numbers, written out when enough.
+      void append_text(const double *numbers, std::size_t n, double at);
 
       std::shared_ptr<OutputQueue> queue; // none: inline
       std::unique_ptr<AtomicFile>  file;
@@ -122,6 +131,7 @@ namespace poundfe
       std::vector<double>         line; // the values of one record, its storage kept
       int                         precision;
       double                      interval, interval_tolerance, next_time = 0;
+      double                      text_time = 0; // last_line_time()
     };
 
     class NodeRecorder : public Recorder

@@ -10,7 +10,8 @@
     ops.nodeDisp(3, 1)       # a float; ops.nodeDisp(3): a list of floats
 
 so that an OpenSeesPy script runs by changing its import line. Each command
-is a thin function over ONE entry of the compiled core (opensees_call),
+is a thin function over ONE entry of the lean extension _opensees
+(opensees_call: the interpreter's library alone, no deal.II),
 which hands the arguments, as the words a Tcl script would give, to the same
 command procedures as `poundfe opensees SCRIPT.tcl` on one domain per Python
 process (`wipe` clears it). The functions are made from the core's own list
@@ -32,16 +33,16 @@ Recorders write their files at `wipe` and when Python exits.
 import atexit
 import sys
 
-from . import _core
+from . import _opensees
 
-OpenSeesError = _core.OpenSeesError
+OpenSeesError = _opensees.OpenSeesError
 
 
 def _call(name, arguments):
     """opensees_call, its refusal raised with the caller's file and line
     (the frame that called the command's function)."""
     try:
-        return _core.opensees_call(name, arguments)
+        return _opensees.opensees_call(name, arguments)
     except OpenSeesError as error:
         caller = sys._getframe(2)
         where = (caller.f_code.co_filename, caller.f_lineno)
@@ -60,9 +61,9 @@ def _command(name, supported):
 
 
 __all__ = ["OpenSeesError"]
-for _name, _supported in _core.opensees_commands():
+for _name, _supported in _opensees.opensees_commands():
     globals()[_name] = _command(_name, _supported)
     __all__.append(_name)
 del _name, _supported
 
-atexit.register(_core.opensees_finish)
+atexit.register(_opensees.opensees_finish)

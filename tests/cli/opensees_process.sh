@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# `poundfe opensees` as a process (Running OpenSees scripts in
+# doc/user-guide.md, "Signals, mpirun and write errors"):
+#  1. SIGTERM and SIGINT during an analysis that records (and SIGTERM with
+#     --threads 2, which the program's module runs): exit 128 + the signal
+#     (143, 130), one message, and no recorder file, complete or temporary
+#     (*.out.tmp), left behind;
+#  2. under mpirun -np 2 each rank runs the script: getPID and getNP give
+#     each its file, and an error all ranks make is printed once (rank 0);
+#  3. a recorder's write error (its temporary a link to /dev/full: every
+#     write fails with ENOSPC) found by the writer thread after the
+#     script's last record names the recorder, its file and the analysis
+#     time of the failed lines, exit 1, no file left.
+#   opensees_process.sh POUNDFE MPIRUN
+set -u
+poundfe=$1 mpirun=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL $*"; exit 1; }
+
+# A spring and mass driven by a linear ramp, recorded at every step: long
+# enough (1e8 steps) that only a signal ends it.
+cat > "$work/long.tcl" <<'TCL'
+model basic -ndm 1 -ndf 1
+node 1 0.0; node 2 1.0; fix 1 1
+mass 2 1.0
+uniaxialMaterial Elastic 1 4.0
+element zeroLength 1 1 2 -mat 1 -dir 1
+timeSeries Linear 1
+pattern Plain 1 1 { load 2 1.0 }
+recorder Node -file [lindex $argv 0] -time -node 2 -dof 1 disp
+system BandGeneral; numberer Plain; constraints Plain; test NormUnbalance 1e-6 25
+integrator Newmark 0.5 0.25; algorithm Linear; analysis Transient
+analyze [lindex $argv 1] 0.001
+TCL
+
+# 1. signals: sent once the recorder's temporary exists (the analysis runs)
+for case in "TERM 1" "INT 1" "TERM 2"; do
+  read -r signal threads <<< "$case"
+  rm -f "$work"/disp.out*
+  # --threads 2: the program's module (source/program.cc) runs the script
+  threads_option=()
+  [ "$threads" = 1 ] || threads_option=(--threads "$threads")
+  timeout -s KILL 120 "$poundfe" opensees "${threads_option[@]}" "$work/long.tcl" "$work/disp.out" 100000000 \
+    > "$work/signal.log" 2>&1 &
+  pid=$!
+  for _ in $(seq 1 1500); do [ -e "$work/disp.out.tmp" ] && break; sleep 0.02; done
+  [ -e "$work/disp.out.tmp" ] || fail "SIG$signal: the analysis did not start in 30 s"
+  # the timeout's child: poundfe itself
+  kill -s "$signal" "$(pgrep -P "$pid" -x poundfe || echo "$pid")"
+  wait "$pid"
+  status=$?
+  expected=$((128 + $(kill -l "$signal")))
+  [ "$status" -eq "$expected" ] || { cat "$work/signal.log"; fail "SIG$signal: exit $status, not $expected"; }
+  grep -q "^poundfe: interrupted by a signal$" "$work/signal.log" ||
+    { cat "$work/signal.log"; fail "SIG$signal: no message"; }
+  leftover=$(ls "$work" | grep '^disp\.out')
+  [ -z "$leftover" ] || fail "SIG$signal left $leftover"
+  echo "ok   SIG$signal during analyze (--threads $threads): exit $status, no recorder file left"
+done
+
+# 2. mpirun -np 2: a file per rank, then one error message for both ranks
+cat > "$work/ranks.tcl" <<'TCL'
+set f [open [file join [lindex $argv 0] rank[getPID].txt] w]
+puts $f "[getPID] of [getNP]"
+close $f
+node 1 0.0
+TCL
+OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+  "$mpirun" -np 2 "$poundfe" opensees "$work/ranks.tcl" "$work" > "$work/ranks.log" 2>&1 &&
+  fail "mpirun: the script's error exited 0"
+[ "$(cat "$work/rank0.txt" 2> /dev/null)" = "0 of 2" ] || fail "mpirun: rank 0's file"
+[ "$(cat "$work/rank1.txt" 2> /dev/null)" = "1 of 2" ] || fail "mpirun: rank 1's file"
+n=$(grep -c "node: no model yet" "$work/ranks.log")
+[ "$n" -eq 1 ] || { cat "$work/ranks.log"; fail "mpirun: the error printed $n times, not once"; }
+"$poundfe" opensees "$work/ranks.tcl" "$work" > /dev/null 2>&1
+[ "$(cat "$work/rank0.txt")" = "0 of 1" ] || fail "alone: getPID 0, getNP 1"
+echo "ok   mpirun -np 2: one file per rank (getPID, getNP), the error printed once"
+
+# 3. a write error met by the writer thread (--threads 2) after the last
+# record, and inline: 10 steps of 0.001 s, the last line at t = 0.01 s
+for threads in 2 1; do
+  rm -f "$work"/disp.out*
+  ln -s /dev/full "$work/disp.out.tmp" # opened through the link: every write fails (ENOSPC)
+  "$poundfe" opensees --threads $threads "$work/long.tcl" "$work/disp.out" 10 > "$work/full.log" 2>&1
+  status=$?
+  [ "$status" -eq 1 ] || { cat "$work/full.log"; fail "write error (--threads $threads): exit $status"; }
+  expected="poundfe: error: recorder 0: disk full: cannot write $work/disp.out: No space left on device (its lines up to time 0.01)"
+  grep -qxF "$expected" "$work/full.log" ||
+    { cat "$work/full.log"; fail "write error (--threads $threads): not '$expected'"; }
+  leftover=$(ls "$work" | grep '^disp\.out')
+  [ -z "$leftover" ] || fail "write error (--threads $threads) left $leftover"
+  echo "ok   a write error after the last record (--threads $threads): recorder 0, t = 0.01, exit 1"
+done
