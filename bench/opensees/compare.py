@@ -167,6 +167,12 @@ CASES = {
     "beam_mass_elastic_3d": ("beam_mass.tcl", ["elasticBeamColumn", "3d"], 1e-10),
     "beam_mass_force_3d": ("beam_mass.tcl", ["forceBeamColumn", "3d"], 1e-10),
     "beam_mass_disp_3d": ("beam_mass.tcl", ["dispBeamColumn", "3d"], 1e-10),
+    # the same with -cMass (the consistent mass on every DOF of the
+    # members' ends; 3D with the roof's rotations free): eigenvalues, history
+    "beam_cmass_elastic": ("beam_mass.tcl", ["elasticBeamColumn", "2d", "-cMass"], 1e-10),
+    "beam_cmass_disp": ("beam_mass.tcl", ["dispBeamColumn", "2d", "-cMass"], 1e-10),
+    "beam_cmass_elastic_3d": ("beam_mass.tcl", ["elasticBeamColumn", "3d", "-cMass"], 1e-10),
+    "beam_cmass_disp_3d": ("beam_mass.tcl", ["dispBeamColumn", "3d", "-cMass"], 1e-10),
     # reactions at nodes with their own mass under two ground components:
     # a fixed support and a roller with mass, free nodes with mass (each
     # node's ground-motion load -m a_g is in its unbalanced load)
@@ -246,6 +252,15 @@ CASES = {
     # history and reactions (measured 3.2e-14), a yielding tripod (9.6e-13)
     "cmass_truss": ("consistent_mass.tcl", ["truss"], 1e-9),
     "cmass_corot": ("consistent_mass.tcl", ["corot"], 1e-9),
+    # rigidLink beam (2D and 3D, offsets along every axis) under each
+    # handler, gravity then a record, `remove mp` halfway (Lagrange:
+    # algorithm Linear, as OpenSees's NormDispIncr counts its multipliers)
+    "rigid_beam_2d": ("rigid_beam.tcl", ["2d"], 1e-10),
+    "rigid_beam_2d_lagrange": ("rigid_beam.tcl", ["2d", "Lagrange"], 1e-10),
+    "rigid_beam_2d_penalty": ("rigid_beam.tcl", ["2d", "Penalty", "1.0e12", "1.0e12"], 1e-9),
+    "rigid_beam_3d": ("rigid_beam.tcl", ["3d"], 1e-10),
+    "rigid_beam_3d_lagrange": ("rigid_beam.tcl", ["3d", "Lagrange"], 1e-10),
+    "rigid_beam_3d_penalty": ("rigid_beam.tcl", ["3d", "Penalty", "1.0e12", "1.0e12"], 1e-9),
     # an elasticBeamColumn (PDelta) and a truss with -rho added on nodes
     # that have moved: measured from their displacements then
     "moved_nodes": ("moved_nodes.tcl", [], 1e-9),

@@ -15,10 +15,11 @@
 // algorithm/equiSolnAlgo/NewtonRaphson.cpp, ModifiedNewton.cpp, Linear.cpp,
 // convergenceTest/CTest*.cpp, DirectIntegrationAnalysis.cpp and
 // StaticAnalysis.cpp (a failed step: the domain reverted, analyze < 0),
-// TransformationConstraintHandler.cpp with RigidDiaphragm.cpp (a
-// diaphragm's constrained DOFs leave the equations: u_c = C u_r, the
-// elements' forces and stiffness taken through C; nodal masses stay
-// diagonal because the constrained nodes may carry none in the plane).
+// TransformationConstraintHandler.cpp with RigidDiaphragm.cpp and
+// RigidBeam.cpp (a rigid tie's constrained DOFs leave the equations:
+// u_c = C u_r, the elements' forces and stiffness taken through C; nodal
+// masses stay diagonal because the constrained nodes may carry none along
+// their tied DOFs).
 #include <poundfe/base/thread_limit.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
@@ -295,8 +296,7 @@ namespace poundfe
       std::set<std::pair<int, unsigned int>> in_diaphragm; // numbered by number_diaphragms
       for (const Diaphragm &d : domain.diaphragms)
         for (const int c : d.constrained)
-          for (const unsigned int k :
-               {(d.perpendicular + 1) % 3, (d.perpendicular + 2) % 3, 3 + d.perpendicular})
+          for (const unsigned int k : d.tied_dofs(domain.ndf))
             if (eliminating)
               in_diaphragm.insert({c, k});
       imposed_dofs.clear();
@@ -391,35 +391,29 @@ namespace poundfe
         }
     }
 
-    /// OpenSees's RigidDiaphragm as the Transformation handler imposes it:
-    /// each constrained DOF a combination of the retained node's two
-    /// in-plane translations and its rotation (a fixed one contributing 0).
-    /// The constrained nodes must carry no mass in the plane (their inertia
-    /// would need the transformed, non-diagonal mass matrix).
+    /// OpenSees's RigidDiaphragm and RigidBeam as the Transformation handler
+    /// imposes them: each constrained DOF a combination of the retained
+    /// node's DOFs (a fixed one contributing 0). The constrained nodes must
+    /// carry no mass along their tied DOFs (their inertia would need the
+    /// transformed, non-diagonal mass matrix).
     void
     Analysis::number_diaphragms()
     {
       combinations.clear();
       for (const Diaphragm &d : domain.diaphragms)
         {
-          const unsigned int a = (d.perpendicular + 1) % 3, b = (d.perpendicular + 2) % 3,
-                             r = 3 + d.perpendicular;
-          const Node        &retained = domain.node(d.retained);
-          // the diaphragm's own command named: the error surfaces at analyze
-          const std::string name = "rigidDiaphragm" + (d.where.empty() ? "" : " (" + d.where + ")");
-          for (const unsigned int k : {a, b, r})
+          const std::vector<unsigned int> dofs     = d.tied_dofs(domain.ndf);
+          const Node                     &retained = domain.node(d.retained);
+          // the tie's own command named: the error surfaces at analyze
+          const std::string name = d.name();
+          for (const unsigned int k : dofs)
             if (retained.equation[k] < -1)
               throw ScriptError(name + ": the retained node " + std::to_string(d.retained) +
                                 " is itself constrained along DOF " + std::to_string(k + 1));
-          const auto term = [&](const unsigned int k, const double c) {
-            return std::make_pair(retained.equation[k], c);
-          };
           for (const int c : d.constrained)
             {
               Node &node = domain.node(c);
-              const double da = node.coordinates[a] - retained.coordinates[a],
-                           db = node.coordinates[b] - retained.coordinates[b];
-              for (const unsigned int k : {a, b, r})
+              for (const unsigned int k : dofs)
                 {
                   if (node.fixed[k] || node.equation[k] != -1)
                     throw ScriptError(name + ": node " + std::to_string(c) + " DOF " +
@@ -428,18 +422,16 @@ namespace poundfe
                   if (node.mass[k] + node.element_mass[k] != 0)
                     throw ScriptError(name + ": node " + std::to_string(c) +
                                       " has mass along DOF " + std::to_string(k + 1) +
-                                      ": poundfe takes a diaphragm's mass at its retained node");
+                                      ": poundfe takes a " + (d.beam ? "rigid link's" : "diaphragm's") +
+                                      " mass at its retained node");
                 }
-              std::vector<std::vector<std::pair<int, double>>> rows = {
-                {term(a, 1.0), term(r, -db)}, {term(b, 1.0), term(r, da)}, {term(r, 1.0)}};
-              const std::array<unsigned int, 3> dofs{{a, b, r}};
-              for (unsigned int i = 0; i < 3; ++i)
+              for (const unsigned int k : dofs)
                 {
-                  auto &row = rows[i];
-                  row.erase(std::remove_if(row.begin(), row.end(),
-                                           [](const auto &t) { return t.first < 0; }),
-                            row.end());
-                  node.equation[dofs[i]] = first_combination - int(combinations.size());
+                  std::vector<std::pair<int, double>> row;
+                  for (const auto &[dof, factor] : domain.tie_row(d, c, k))
+                    if (retained.equation[dof] >= 0)
+                      row.emplace_back(retained.equation[dof], factor);
+                  node.equation[k] = first_combination - int(combinations.size());
                   combinations.push_back(row);
                 }
             }

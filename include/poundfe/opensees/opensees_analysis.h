@@ -341,11 +341,12 @@ namespace poundfe
         std::vector<unsigned int> dofs; // each row's DOF at its node
         const Matrix             *matrix = nullptr;
         double                    alpha_m = 0;
+        double                    n_ground_loads = 1; // ConsistentMass::ground_load_twice: 2
       };
       std::vector<CoupledMass> coupled_masses;
       Vector                   coupled_work; // the residual's local storage
       void                     number_coupled_masses();
-      /// r -= M_e (A + alpha_M v + r a_g) of the consistent masses.
+      /// r -= M_e (A + alpha_M v + n r a_g) of the consistent masses.
       void subtract_coupled_inertia(Vector &r, const Vector &v);
       /// (c_m + c_c alpha_M) M_e of the consistent masses into the tangent.
       void add_coupled_masses(double c_m, double c_c);
