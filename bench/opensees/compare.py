@@ -203,6 +203,9 @@ CASES = {
     # case without them)
     "handlers_penalty_mass": ("constraint_handlers.tcl",
                               ["-cornerMass", "5000.0", "Penalty", "1.0e13", "1.0e13"], 1e-9),
+    # halfway through the record a corner leaves the diaphragm and the
+    # neighbour's top its equalDOF (`remove mp`)
+    "handlers_release": ("constraint_handlers.tcl", ["-release", "Lagrange"], 1e-10),
     # reset halfway through a record (a yielded brace, time 0, an
     # EnvelopeNode's extremes), reactions -dynamic and -rayleigh, and the
     # force of members with mass under a record (with their ground-motion
