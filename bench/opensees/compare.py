@@ -264,6 +264,13 @@ CASES = {
     "rigid_beam_3d": ("rigid_beam.tcl", ["3d"], 1e-10),
     "rigid_beam_3d_lagrange": ("rigid_beam.tcl", ["3d", "Lagrange"], 1e-10),
     "rigid_beam_3d_penalty": ("rigid_beam.tcl", ["3d", "Penalty", "1.0e12", "1.0e12"], 1e-9),
+    # chains through rigid ties (an equalDOF retained by a rigidLink beam's or
+    # a rigidDiaphragm's constrained node, links on such nodes, a link on a
+    # link) under Lagrange, whose answer poundfe's Transformation gives too
+    # (OpenSees 3.8's Transformation handler mis-maps these chains)
+    "tie_chains_2d": ("tie_chains.tcl", ["2d", "Lagrange"], 1e-10),
+    "tie_chains_3d": ("tie_chains.tcl", ["3d", "Lagrange"], 1e-10),
+    "tie_chains_3d_penalty": ("tie_chains.tcl", ["3d", "Penalty", "1.0e12", "1.0e12"], 1e-9),
     # an elasticBeamColumn (PDelta) and a truss with -rho added on nodes
     # that have moved: measured from their displacements then
     "moved_nodes": ("moved_nodes.tcl", [], 1e-9),

@@ -220,7 +220,7 @@ namespace poundfe
       /// rigidLink bar|beam rNode cNode: OpenSees's RigidBar, the
       /// translations of cNode equal to rNode's (an identity constraint, as
       /// equalDOF 1..ndm), or RigidBeam, every DOF of cNode tied to rNode's
-      /// by the rigid offset (opensees::Diaphragm with beam set).
+      /// by the rigid offset (opensees::RigidTie with beam set).
       void
       rigid_link(Session &s, Words &w)
       {
@@ -242,12 +242,12 @@ namespace poundfe
           throw ScriptError("the retained and the constrained node are the same");
         if (type == "beam")
           {
-            opensees::Diaphragm tie;
+            opensees::RigidTie tie;
             tie.beam        = true;
             tie.retained    = retained;
             tie.constrained = {constrained};
             tie.where       = command_place(w.interp);
-            d.diaphragms.push_back(tie);
+            d.rigid_ties.push_back(tie);
           }
         else
           {
@@ -272,7 +272,7 @@ namespace poundfe
         const int perpendicular = w.integer("perpDirn");
         if (perpendicular < 1 || perpendicular > 3)
           throw ScriptError("perpDirn " + text_of(perpendicular) + " is not 1, 2 or 3");
-        opensees::Diaphragm diaphragm;
+        opensees::RigidTie diaphragm;
         diaphragm.perpendicular = perpendicular - 1;
         diaphragm.retained      = d.node(w.integer("the retained node")).tag;
         for (const int c : w.integers("a constrained node"))
@@ -284,7 +284,7 @@ namespace poundfe
         if (!w.done())
           throw ScriptError("'" + w.peek() + "' is not a node's tag");
         diaphragm.where = command_place(w.interp);
-        d.diaphragms.push_back(diaphragm);
+        d.rigid_ties.push_back(diaphragm);
         d.changed = true;
       }
 

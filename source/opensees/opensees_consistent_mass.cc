@@ -95,7 +95,7 @@ namespace poundfe
           c.matrix = &m.matrix;
           for (const int tag : m.nodes)
             {
-              for (const Diaphragm &d : domain.diaphragms)
+              for (const RigidTie &d : domain.rigid_ties)
                 if (std::find(d.constrained.begin(), d.constrained.end(), tag) !=
                     d.constrained.end())
                   throw ScriptError("element " + std::to_string(m.element) +
@@ -105,6 +105,12 @@ namespace poundfe
               const Node &node = domain.node(tag);
               for (unsigned int k = 0; k < node.equation.size(); ++k)
                 {
+                  if (node.equation[k] <= first_combination) // an equalDOF to a tie's node
+                    throw ScriptError("element " + std::to_string(m.element) +
+                                      ": a consistent mass (-cMass) on node " +
+                                      std::to_string(tag) + ", whose DOF " +
+                                      std::to_string(k + 1) +
+                                      " follows a rigid tie's constrained node");
                   c.equations.push_back(std::max(node.equation[k], -1));
                   c.dofs.push_back(k);
                 }

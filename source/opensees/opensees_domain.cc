@@ -430,14 +430,14 @@ namespace poundfe
     }
 
     std::string
-    Diaphragm::name() const
+    RigidTie::name() const
     {
       return (beam ? "rigidLink beam" : "rigidDiaphragm") +
              (where.empty() ? std::string() : " (" + where + ")");
     }
 
     std::vector<unsigned int>
-    Diaphragm::tied_dofs(const unsigned int ndf) const
+    RigidTie::tied_dofs(const unsigned int ndf) const
     {
       if (!beam)
         return {(perpendicular + 1) % 3, (perpendicular + 2) % 3, 3 + perpendicular};
@@ -448,7 +448,7 @@ namespace poundfe
     }
 
     std::vector<std::pair<unsigned int, double>>
-    Diaphragm::row(const unsigned int              k,
+    RigidTie::row(const unsigned int              k,
                    const unsigned int              ndm,
                    const unsigned int              ndf,
                    const std::vector<double>      &d) const
@@ -466,7 +466,7 @@ namespace poundfe
     }
 
     std::vector<std::pair<unsigned int, double>>
-    Domain::tie_row(const Diaphragm &tie, const int c, const unsigned int k) const
+    Domain::tie_row(const RigidTie &tie, const int c, const unsigned int k) const
     {
       const std::vector<double> &xc = node(c).coordinates, &xr = node(tie.retained).coordinates;
       std::vector<double>        d(xc.size());
@@ -483,16 +483,16 @@ namespace poundfe
                                       [&](const EqualDof &e) { return e.constrained == constrained; }),
                        equal_dofs.end());
       bool removed = equal_dofs.size() != before;
-      for (Diaphragm &d : diaphragms)
+      for (RigidTie &d : rigid_ties)
         {
           const auto n = d.constrained.size();
           d.constrained.erase(std::remove(d.constrained.begin(), d.constrained.end(), constrained),
                               d.constrained.end());
           removed = removed || d.constrained.size() != n;
         }
-      diaphragms.erase(std::remove_if(diaphragms.begin(), diaphragms.end(),
-                                      [](const Diaphragm &d) { return d.constrained.empty(); }),
-                       diaphragms.end());
+      rigid_ties.erase(std::remove_if(rigid_ties.begin(), rigid_ties.end(),
+                                      [](const RigidTie &d) { return d.constrained.empty(); }),
+                       rigid_ties.end());
       changed = changed || removed;
     }
 
@@ -509,7 +509,7 @@ namespace poundfe
       for (const EqualDof &e : equal_dofs)
         if (e.retained == tag || e.constrained == tag)
           throw ScriptError(name + " is tied by an equalDOF");
-      for (const Diaphragm &d : diaphragms)
+      for (const RigidTie &d : rigid_ties)
         if (d.retained == tag || std::count(d.constrained.begin(), d.constrained.end(), tag) > 0)
           throw ScriptError(name + " is in a " + d.name());
       for (const auto &[pattern_tag, pattern] : patterns)

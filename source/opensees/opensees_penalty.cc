@@ -39,7 +39,7 @@ namespace poundfe
           penalty_rows.push_back(
             {{{equation(e.constrained, k), -1.0}, {equation(e.retained, k), 1.0}},
              opts.alpha_mp});
-      for (const Diaphragm &d : domain.diaphragms)
+      for (const RigidTie &d : domain.rigid_ties)
         for (const int c : d.constrained)
           for (const unsigned int k : d.tied_dofs(domain.ndf))
             {

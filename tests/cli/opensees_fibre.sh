@@ -159,6 +159,14 @@ printf 'rigidLink beam 2\n' | bad rigid-link-beam-missing '6: rigidLink: missing
 printf 'rigidLink pin 1 2\n' | bad rigid-link-pin '6: rigidLink pin: poundfe does not support it'
 printf 'node 3 1.0 3.0 -mass 1.0 1.0 0.0\nrigidLink beam 2 3\nfix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 1\n' \
   | bad rigid-link-beam-mass '12: analyze: rigidLink beam (s.tcl:7): node 3 has mass along DOF 1: poundfe takes a rigid link'"'"'s mass at its retained node'
+# chains through a rigid tie: a loop is refused by name, and so is mass
+# (lumped or -cMass) on an equalDOF's node that follows a tie's node
+printf 'node 3 1.0 3.0\nrigidLink beam 2 3\nequalDOF 3 2 1\nfix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad tie-loop '13: analyze: rigidLink beam (s.tcl:7): the retained node 2 is constrained in a loop of constraints'
+printf 'node 3 1.0 3.0\nnode 4 2.0 3.0 -mass 1.0 1.0 0.0\nrigidLink beam 2 3\nequalDOF 3 4 1 2\nfix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nelement elasticBeamColumn 2 3 4 0.01 2.0e8 1.0e-4 1\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad tie-chain-mass "15: analyze: equalDOF 3 4: node 4 DOF 1 has mass and follows a rigid tie's constrained node: poundfe takes a tie's mass at its retained node"
+printf 'node 3 1.0 3.0\nnode 4 2.0 3.0\nnode 5 2.0 0.0\nrigidLink beam 2 3\nequalDOF 3 4 1 2\nfix 1 1 1 1\nfix 5 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nelement elasticBeamColumn 2 5 4 0.01 2.0e8 1.0e-4 1 -mass 5.0 -cMass\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad tie-chain-cmass "17: analyze: element 2: a consistent mass (-cMass) on node 4, whose DOF 1 follows a rigid tie's constrained node"
 printf 'geomTransf Corotational 2\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 2 -mass 5.0 -cMass\n' \
   | bad cmass-corotational '7: element 1 -cMass on geomTransf Corotational: poundfe does not support it'
 printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1 -mass 5.0 -cMass 1\n' \

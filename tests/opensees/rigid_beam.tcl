@@ -11,10 +11,8 @@
 set out [lindex $argv 0]
 set dim [lindex $argv 1]
 set handler [expr {[llength $argv] > 2 ? [lrange $argv 2 end] : "Transformation"}]
-# OpenSees 3.8's NormDispIncr counts Lagrange's multipliers (forces), which
-# stall above 1e-10: under Lagrange the (linear) model takes algorithm Linear
-set algorithm [expr {[lindex $handler 0] eq "Lagrange" ? "Linear" : "Newton"}]
 source [file join [file dirname [info script]] record.tcl]
+source [file join [file dirname [info script]] tie_analysis.tcl]
 wipe
 set h 3.0
 set m 8.0e3
@@ -86,32 +84,10 @@ eval recorder Node -file $out/rigid_beam_disp.out -time -precision 16 -node 2 4 
 eval recorder Node -file $out/rigid_beam_base.out -time -precision 16 -node 1 3 7 \
     -dof $dofs reaction
 recorder Element -file $out/rigid_beam_force.out -time -precision 16 -ele 3 4 localForce
-constraints {*}$handler
-numberer Plain
-system BandGeneral
-test NormDispIncr 1.0e-10 20
-algorithm $algorithm
-integrator LoadControl 0.25
-analysis Static
-analyze 4
-loadConst -time 0.0
-wipeAnalysis
-rayleigh 0.25 0.0 0.0 0.002
+tie_static $handler
 set dt 0.005
 set steps 600
-set tag 2
-foreach {direction scale} $excitations {
-    timeSeries Path $tag -dt $dt -values [synthetic_record $dt $steps $scale]
-    pattern UniformExcitation $tag $direction -accel $tag
-    incr tag
-}
-constraints {*}$handler
-numberer Plain
-system BandGeneral
-test NormDispIncr 1.0e-10 20
-algorithm $algorithm
-integrator Newmark 0.5 0.25
-analysis Transient
+tie_transient $handler $excitations $dt $steps
 set status [analyze [expr {$steps / 2}] $dt]
 remove mp 6
 remove mp 8

@@ -243,7 +243,7 @@ namespace poundfe
     /// ties every DOF of its one constrained node (in 2D, -ndf 3:
     /// u = u_r - d_y theta_r, v = v_r + d_x theta_r; with ndf = ndm, no
     /// rotations, u_c = u_r).
-    struct Diaphragm
+    struct RigidTie
     {
       unsigned int     perpendicular = 2; // 0-based axis
       bool             beam          = false; // rigidLink beam
@@ -307,7 +307,7 @@ namespace poundfe
       std::map<int, std::shared_ptr<TimeSeries>> series;
       std::map<int, Pattern>                  patterns;
       std::vector<EqualDof>                   equal_dofs;
-      std::vector<Diaphragm>                  diaphragms;
+      std::vector<RigidTie>                  rigid_ties;
       RayleighFactors                         rayleigh;
       /// region -rayleigh: the factors of its elements and the alpha_M of
       /// its nodes in place of `rayleigh`'s (OpenSees's MeshRegion sets
@@ -443,10 +443,10 @@ namespace poundfe
       /// there is none. ScriptError when a pattern's element load names it
       /// (OpenSees 3.8 keeps the load on the removed element).
       void remove_element(int tag);
-      /// Row k of tie's C_cr for its constrained node c (Diaphragm::row at
+      /// Row k of tie's C_cr for its constrained node c (RigidTie::row at
       /// c's offset from the retained node).
       std::vector<std::pair<unsigned int, double>>
-      tie_row(const Diaphragm &tie, int c, unsigned int k) const;
+      tie_row(const RigidTie &tie, int c, unsigned int k) const;
       /// `remove mp cNode` (OpenSees's Domain::removeMP_Constraints): every
       /// equalDOF, rigidLink and rigidDiaphragm tie of constrained node
       /// cNode; nothing when there is none.
