@@ -383,6 +383,33 @@ namespace poundfe
         }
     }
 
+    namespace
+    {
+      /// Marks every rigid tie's constrained DOFs with the equation
+      /// `waiting`, refusing a DOF fixed or constrained already and one with
+      /// mass (the tie's own command named: the error surfaces at analyze).
+      void
+      hold_tied_dofs(Domain &domain, const int waiting)
+      {
+        for (const RigidTie &tie : domain.rigid_ties)
+          for (const int c : tie.constrained)
+            for (const unsigned int k : tie.tied_dofs(domain.ndf))
+              {
+                Node &node = domain.node(c);
+                if (node.fixed[k] || node.equation[k] != -1)
+                  throw ScriptError(tie.name() + ": node " + std::to_string(c) + " DOF " +
+                                    std::to_string(k + 1) + " is fixed or constrained already");
+                if (node.mass[k] + node.element_mass[k] != 0)
+                  throw ScriptError(tie.name() + ": node " + std::to_string(c) +
+                                    " has mass along DOF " + std::to_string(k + 1) +
+                                    ": poundfe takes a " +
+                                    (tie.beam ? "rigid link's" : "diaphragm's") +
+                                    " mass at its retained node");
+                node.equation[k] = waiting;
+              }
+      }
+    } // namespace
+
     /// The equalDOFs and rigid ties (OpenSees's RigidDiaphragm and
     /// RigidBeam) as the Transformation handler imposes them, numbered in
     /// dependency order: a constrained DOF is numbered once its retained
@@ -401,23 +428,7 @@ namespace poundfe
       };
       for (const auto &[dof, retained] : retained_by)
         equation(dof) = waiting;
-      for (const RigidTie &tie : domain.rigid_ties)
-        for (const int c : tie.constrained)
-          for (const unsigned int k : tie.tied_dofs(domain.ndf))
-            {
-              Node &node = domain.node(c);
-              // the tie's own command named: the error surfaces at analyze
-              if (node.fixed[k] || node.equation[k] != -1)
-                throw ScriptError(tie.name() + ": node " + std::to_string(c) + " DOF " +
-                                  std::to_string(k + 1) + " is fixed or constrained already");
-              if (node.mass[k] + node.element_mass[k] != 0)
-                throw ScriptError(tie.name() + ": node " + std::to_string(c) +
-                                  " has mass along DOF " + std::to_string(k + 1) +
-                                  ": poundfe takes a " +
-                                  (tie.beam ? "rigid link's" : "diaphragm's") +
-                                  " mass at its retained node");
-              node.equation[k] = waiting;
-            }
+      hold_tied_dofs(domain, waiting);
       const auto retained_numbered = [&](const RigidTie &tie) {
         const std::vector<unsigned int> dofs = tie.tied_dofs(domain.ndf);
         return std::none_of(dofs.begin(), dofs.end(), [&](const unsigned int k) {
