@@ -177,6 +177,12 @@ CASES = {
     "beam_mass_elastic_3d": ("beam_mass.tcl", ["elasticBeamColumn", "3d"], 1e-10),
     "beam_mass_force_3d": ("beam_mass.tcl", ["forceBeamColumn", "3d"], 1e-10),
     "beam_mass_disp_3d": ("beam_mass.tcl", ["dispBeamColumn", "3d"], 1e-10),
+    # the same with -cMass (the consistent mass on every DOF of the
+    # members' ends; 3D with the roof's rotations free): eigenvalues, history
+    "beam_cmass_elastic": ("beam_mass.tcl", ["elasticBeamColumn", "2d", "-cMass"], 1e-10),
+    "beam_cmass_disp": ("beam_mass.tcl", ["dispBeamColumn", "2d", "-cMass"], 1e-10),
+    "beam_cmass_elastic_3d": ("beam_mass.tcl", ["elasticBeamColumn", "3d", "-cMass"], 1e-10),
+    "beam_cmass_disp_3d": ("beam_mass.tcl", ["dispBeamColumn", "3d", "-cMass"], 1e-10),
     # reactions at nodes with their own mass under two ground components:
     # a fixed support and a roller with mass, free nodes with mass (each
     # node's ground-motion load -m a_g is in its unbalanced load)
@@ -207,6 +213,9 @@ CASES = {
     # case without them)
     "handlers_penalty_mass": ("constraint_handlers.tcl",
                               ["-cornerMass", "5000.0", "Penalty", "1.0e13", "1.0e13"], 1e-9),
+    # halfway through the record a corner leaves the diaphragm and the
+    # neighbour's top its equalDOF (`remove mp`)
+    "handlers_release": ("constraint_handlers.tcl", ["-release", "Lagrange"], 1e-10),
     # reset halfway through a record (a yielded brace, time 0, an
     # EnvelopeNode's extremes), reactions -dynamic and -rayleigh, and the
     # force of members with mass under a record (with their ground-motion
@@ -256,6 +265,22 @@ CASES = {
     # history and reactions (measured 3.2e-14), a yielding tripod (9.6e-13)
     "cmass_truss": ("consistent_mass.tcl", ["truss"], 1e-9),
     "cmass_corot": ("consistent_mass.tcl", ["corot"], 1e-9),
+    # rigidLink beam (2D and 3D, offsets along every axis) under each
+    # handler, gravity then a record, `remove mp` halfway (Lagrange:
+    # algorithm Linear, as OpenSees's NormDispIncr counts its multipliers)
+    "rigid_beam_2d": ("rigid_beam.tcl", ["2d"], 1e-10),
+    "rigid_beam_2d_lagrange": ("rigid_beam.tcl", ["2d", "Lagrange"], 1e-10),
+    "rigid_beam_2d_penalty": ("rigid_beam.tcl", ["2d", "Penalty", "1.0e12", "1.0e12"], 1e-9),
+    "rigid_beam_3d": ("rigid_beam.tcl", ["3d"], 1e-10),
+    "rigid_beam_3d_lagrange": ("rigid_beam.tcl", ["3d", "Lagrange"], 1e-10),
+    "rigid_beam_3d_penalty": ("rigid_beam.tcl", ["3d", "Penalty", "1.0e12", "1.0e12"], 1e-9),
+    # chains through rigid ties (an equalDOF retained by a rigidLink beam's or
+    # a rigidDiaphragm's constrained node, links on such nodes, a link on a
+    # link) under Lagrange, whose answer poundfe's Transformation gives too
+    # (OpenSees 3.8's Transformation handler mis-maps these chains)
+    "tie_chains_2d": ("tie_chains.tcl", ["2d", "Lagrange"], 1e-10),
+    "tie_chains_3d": ("tie_chains.tcl", ["3d", "Lagrange"], 1e-10),
+    "tie_chains_3d_penalty": ("tie_chains.tcl", ["3d", "Penalty", "1.0e12", "1.0e12"], 1e-9),
     # an elasticBeamColumn (PDelta) and a truss with -rho added on nodes
     # that have moved: measured from their displacements then
     "moved_nodes": ("moved_nodes.tcl", [], 1e-9),

@@ -20,6 +20,7 @@
 #include <iosfwd>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -136,6 +137,16 @@ namespace poundfe
     /// translations (OpenSees's beam-columns and truss without -cMass), as
     /// the element's (opensees::Domain::LumpedMass), its ground-motion load
     /// in the reactions.
+    /// A beam-column's -cMass (opensees::beam_consistent_mass on geomTransf
+    /// transf's axes; none when rho is 0), its ground-motion load in the
+    /// reactions; refused on Corotational members and on nodes that have
+    /// moved. Made before the element, so that a refusal leaves none.
+    std::optional<opensees::Domain::ConsistentMass>
+    consistent_beam_mass(const opensees::Domain &d, int element, const std::array<int, 2> &nodes,
+                         double rho, double torsion_ratio, int transf, bool ground_load_twice);
+    /// The member's mass: `mass` when given, else rho lumped (add_lumped_mass).
+    void add_member_mass(opensees::Domain &d, int element, const std::array<int, 2> &nodes,
+                         double rho, const std::optional<opensees::Domain::ConsistentMass> &mass);
     void add_lumped_mass(opensees::Domain &d, int element, const std::array<int, 2> &nodes,
                          double rho);
     /// m on each translation of both nodes, as the element's.

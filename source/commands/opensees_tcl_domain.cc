@@ -2,7 +2,9 @@
 // resetModel in tcl/commands.cpp: Domain::revertToStart, which reverts
 // every node and element to its start, restarts the recorders and sets the
 // time to 0, and the transient integrator's revertToStart), and `remove`
-// of elements, nodes, fixities and time series (removeObject there).
+// of elements, nodes, fixities, multi-point constraints (Domain::
+// removeMP_Constraints: every tie of a constrained node) and time series
+// (removeObject there).
 #include "opensees_tcl.h"
 
 namespace poundfe
@@ -89,6 +91,16 @@ namespace poundfe
           if (w.left() == 1)
             unsupported("remove sp spTag (poundfe's sp have no tags: remove sp node dof)");
           remove_fixity(s, w);
+        }
+      else if (what == "mp" || what == "MPconstraint")
+        {
+          if (w.peek() == "-tag")
+            unsupported("remove mp -tag mpTag (poundfe's mp have no tags: remove mp cNode)");
+          const int tag = w.integer("the constrained node's tag");
+          if (!w.done()) // OpenSees 3.8 would ignore the whole command
+            throw ScriptError("'" + w.peek() + "' after the node: remove mp takes the constrained "
+                              "node only (OpenSees 3.8 removes all its constraints)");
+          s.domain.remove_ties_of(tag);
         }
       else if (what == "timeSeries" || what == "TimeSeries")
         {

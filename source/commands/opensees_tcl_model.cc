@@ -1,5 +1,5 @@
 // The model-building commands of OpenSees scripts, with OpenSees 3.8's
-// argument syntax: wipe, model, node, fix, mass, equalDOF, rigidLink bar, rigidDiaphragm, geomTransf,
+// argument syntax: wipe, model, node, fix, mass, equalDOF, rigidLink, rigidDiaphragm, geomTransf,
 // element, uniaxialMaterial, timeSeries, pattern, load, sp, eleLoad, loadConst, setTime,
 // rayleigh, recorder (Node, Element, Drift, EnvelopeNode, EnvelopeElement).
 // An option or type poundfe lacks is an error naming it.
@@ -207,31 +207,60 @@ namespace poundfe
         d.changed = true;
       }
 
-      /// rigidLink bar rNode cNode: OpenSees's RigidBar, the translations of
-      /// cNode equal to rNode's (an identity constraint, as equalDOF 1..ndm);
-      /// rigidLink beam couples them to the rotation and is not supported.
+      std::pair<std::string, int> calling_line(Tcl_Interp *interp);
+
+      /// The "file:line" of the command being run ("" outside a file).
+      std::string
+      command_place(Tcl_Interp *interp)
+      {
+        const auto [file, line] = calling_line(interp);
+        return line > 0 ? std::filesystem::path(file).filename().string() + ":" + text_of(line) :
+                          std::string();
+      }
+
+      /// rigidLink bar|beam rNode cNode: OpenSees's RigidBar, the
+      /// translations of cNode equal to rNode's (an identity constraint, as
+      /// equalDOF 1..ndm), or RigidBeam, every DOF of cNode tied to rNode's
+      /// by the rigid offset (opensees::RigidTie with beam set).
       void
       rigid_link(Session &s, Words &w)
       {
         opensees::Domain &d    = model_domain(s);
         const std::string type = w.word("the link's type");
-        if (type != "bar")
+        if (type != "bar" && type != "beam")
           unsupported("rigidLink " + type);
-        opensees::EqualDof e;
-        e.retained    = d.node(w.integer("the retained node")).tag;
-        e.constrained = d.node(w.integer("the constrained node")).tag;
+        const bool three = d.ndm == 3 && d.ndf == 6;
+        if (type == "beam" && d.ndf != d.ndm && !three && (d.ndm != 2 || d.ndf != 3))
+          throw ScriptError("rigidLink beam needs -ndf equal to -ndm, or -ndm 2 -ndf 3, or "
+                            "-ndm 3 -ndf 6 (this model: -ndm " + text_of(d.ndm) + " -ndf " +
+                            text_of(d.ndf) + ")");
+        const int retained    = d.node(w.integer("the retained node")).tag;
+        const int constrained = d.node(w.integer("the constrained node")).tag;
         if (!w.done())
-          throw ScriptError("'" + w.peek() +
-                            "' after the constrained node: rigidLink bar takes two nodes");
-        if (e.retained == e.constrained)
+          throw ScriptError("'" + w.peek() + "' after the constrained node: rigidLink " + type +
+                            " takes two nodes");
+        if (retained == constrained)
           throw ScriptError("the retained and the constrained node are the same");
-        for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
-          e.dofs.push_back(k);
-        d.equal_dofs.push_back(e);
+        if (type == "beam")
+          {
+            opensees::RigidTie tie;
+            tie.beam        = true;
+            tie.retained    = retained;
+            tie.constrained = {constrained};
+            tie.where       = command_place(w.interp);
+            d.rigid_ties.push_back(tie);
+          }
+        else
+          {
+            opensees::EqualDof e;
+            e.retained    = retained;
+            e.constrained = constrained;
+            for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
+              e.dofs.push_back(k);
+            d.equal_dofs.push_back(e);
+          }
         d.changed = true;
       }
-
-      std::pair<std::string, int> calling_line(Tcl_Interp *interp);
 
       /// rigidDiaphragm perpDirn rNode cNode1 cNode2 ... (3D, -ndf 6); its
       /// file and line kept for the errors its constraints meet at analyze.
@@ -244,7 +273,7 @@ namespace poundfe
         const int perpendicular = w.integer("perpDirn");
         if (perpendicular < 1 || perpendicular > 3)
           throw ScriptError("perpDirn " + text_of(perpendicular) + " is not 1, 2 or 3");
-        opensees::Diaphragm diaphragm;
+        opensees::RigidTie diaphragm;
         diaphragm.perpendicular = perpendicular - 1;
         diaphragm.retained      = d.node(w.integer("the retained node")).tag;
         for (const int c : w.integers("a constrained node"))
@@ -255,10 +284,8 @@ namespace poundfe
           }
         if (!w.done())
           throw ScriptError("'" + w.peek() + "' is not a node's tag");
-        const auto [file, line] = calling_line(w.interp);
-        if (line > 0)
-          diaphragm.where = std::filesystem::path(file).filename().string() + ":" + text_of(line);
-        d.diaphragms.push_back(diaphragm);
+        diaphragm.where = command_place(w.interp);
+        d.rigid_ties.push_back(diaphragm);
         d.changed = true;
       }
 
@@ -304,22 +331,33 @@ namespace poundfe
           }
         section.Iz         = w.real("Iz");
         const int transf   = w.integer("the transformation's tag");
-        double             rho    = 0; // mass per length, lumped (OpenSees's default)
-        while (w.peek() == "-mass" || w.peek() == "-lMass")
-          if (w.word("-mass") == "-mass") // -lMass: lumped, the default
-            rho = w.real("the mass per length");
+        double rho        = 0;     // mass per length
+        bool   consistent = false; // -cMass (the last of -lMass and -cMass)
+        while (w.peek() == "-mass" || w.peek() == "-lMass" || w.peek() == "-cMass")
+          {
+            const std::string option = w.word("an option");
+            if (option == "-mass")
+              rho = w.real("the mass per length");
+            else
+              consistent = option == "-cMass";
+          }
         if (!w.done())
           unsupported("element elasticBeamColumn option '" + w.peek() + "'");
         const auto t = d.transformations.find(transf);
         if (t == d.transformations.end())
           throw ScriptError("geomTransf " + text_of(transf) + " does not exist");
+        // ElasticBeam3d's twists take J/A of the axial mass
+        const auto mass = consistent ? consistent_beam_mass(d, tag, nodes, rho,
+                                                            three ? section.J / section.A : 0.0,
+                                                            transf, !three) :
+                                       std::nullopt;
         if (three)
           add_element(d, opensees::make_elastic_beam_3d(d, tag, nodes, section, t->second,
                                                         d.vecxz.at(transf)));
         else
           add_element(d, opensees::make_elastic_beam_2d(d, tag, nodes, section.A, section.E,
                                                         section.Iz, t->second));
-        add_lumped_mass(d, tag, nodes, rho);
+        add_member_mass(d, tag, nodes, rho, mass);
         for (auto &m : d.lumped_masses)
           m.ground_load_twice |= m.element == tag && !three;
       }
@@ -1608,6 +1646,43 @@ namespace poundfe
       // the reactions take it
       for (auto &m : d.lumped_masses)
         m.load_in_reaction |= m.element == element;
+    }
+
+    std::optional<opensees::Domain::ConsistentMass>
+    consistent_beam_mass(const opensees::Domain &d, const int element,
+                         const std::array<int, 2> &nodes, const double rho,
+                         const double torsion_ratio, const int transf,
+                         const bool ground_load_twice)
+    {
+      if (rho == 0)
+        return std::nullopt;
+      if (d.transformations.at(transf) == Transformation::corotational)
+        unsupported("element " + text_of(element) + " -cMass on geomTransf Corotational");
+      for (const int n : nodes)
+        for (const double u : d.node(n).disp)
+          if (u != 0)
+            unsupported("element " + text_of(element) + " -cMass on node " + text_of(n) +
+                        ", which has moved");
+      const bool three = d.ndm == 3;
+      opensees::Domain::ConsistentMass m;
+      m.element = element;
+      m.nodes   = {nodes[0], nodes[1]};
+      m.matrix  = opensees::beam_consistent_mass(d, element, nodes, rho, torsion_ratio,
+                                                 three ? &d.vecxz.at(transf) : nullptr);
+      // a member's getResistingForce subtracts its inertia load
+      m.load_in_reaction  = true;
+      m.ground_load_twice = ground_load_twice;
+      return m;
+    }
+
+    void
+    add_member_mass(opensees::Domain &d, const int element, const std::array<int, 2> &nodes,
+                    const double rho, const std::optional<opensees::Domain::ConsistentMass> &mass)
+    {
+      if (!mass)
+        return add_lumped_mass(d, element, nodes, rho);
+      d.consistent_masses.push_back(*mass);
+      d.changed = true;
     }
 
     void

@@ -372,10 +372,11 @@ namespace poundfe
           throw ScriptError("beamIntegration " + std::to_string(tag) + " exists already");
       }
 
-      /// The options after the element's tags: -mass rho and the old
-      /// syntax's -integration.
+      /// The options after the element's tags: -mass rho, -lMass and
+      /// -cMass (dispBeamColumn's consistent mass) and the old syntax's
+      /// -integration.
       void
-      beam_column_options(Words &w, const std::string &type, double &rho,
+      beam_column_options(Words &w, const std::string &type, double &rho, bool &consistent,
                           opensees::IntegrationSpec &rule, const bool old_syntax,
                           OpenSeesIteration &iteration)
       {
@@ -387,8 +388,8 @@ namespace poundfe
               rho = w.real("the mass per length");
             // OpenSees 3.8's ForceBeamColumn2d/3d read -cMass and keep their
             // mass lumped
-            else if (option == "-lMass" || (option == "-cMass" && type != "dispBeamColumn"))
-              continue;
+            else if (option == "-lMass" || option == "-cMass")
+              consistent = option == "-cMass" && type == "dispBeamColumn";
             else if (option == "-iter" && type != "dispBeamColumn")
               {
                 const int n         = w.integer("maxIter");
@@ -439,21 +440,25 @@ namespace poundfe
                               " does not exist");
           rule = it->second;
         }
-      double            rho = 0;
+      double            rho        = 0;
+      bool              consistent = false;
       OpenSeesIteration iteration;
-      beam_column_options(w, type, rho, rule, old_syntax, iteration);
+      beam_column_options(w, type, rho, consistent, rule, old_syntax, iteration);
       const auto t = d.transformations.find(transf);
       if (t == d.transformations.end())
         throw ScriptError("geomTransf " + std::to_string(transf) + " does not exist");
       const auto kind = type == "dispBeamColumn" ? opensees::BeamColumnKind::displacement_based :
                                                    opensees::BeamColumnKind::force_based;
+      // DispBeamColumn3d's consistent mass has no torsional part
+      const auto mass =
+        consistent ? consistent_beam_mass(d, tag, nodes, rho, 0.0, transf, false) : std::nullopt;
       if (d.ndm == 3)
         add_element(d, opensees::make_beam_column_3d(d, tag, nodes, kind, t->second,
                                                      d.vecxz.at(transf), rule, iteration));
       else
         add_element(d,
                     opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
-      add_lumped_mass(d, tag, nodes, rho);
+      add_member_mass(d, tag, nodes, rho, mass);
     }
 
     void

@@ -15,10 +15,11 @@
 // algorithm/equiSolnAlgo/NewtonRaphson.cpp, ModifiedNewton.cpp, Linear.cpp,
 // convergenceTest/CTest*.cpp, DirectIntegrationAnalysis.cpp and
 // StaticAnalysis.cpp (a failed step: the domain reverted, analyze < 0),
-// TransformationConstraintHandler.cpp with RigidDiaphragm.cpp (a
-// diaphragm's constrained DOFs leave the equations: u_c = C u_r, the
-// elements' forces and stiffness taken through C; nodal masses stay
-// diagonal because the constrained nodes may carry none in the plane).
+// TransformationConstraintHandler.cpp with RigidDiaphragm.cpp and
+// RigidBeam.cpp (a rigid tie's constrained DOFs leave the equations:
+// u_c = C u_r, the elements' forces and stiffness taken through C; nodal
+// masses stay diagonal because the constrained nodes may carry none along
+// their tied DOFs).
 #include <poundfe/base/thread_limit.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
@@ -42,8 +43,7 @@ namespace poundfe
   {
     namespace
     {
-      /// The equation of a diaphragm's j-th combination: first_combination - j.
-      constexpr int first_combination = -1000000;
+      constexpr int first_combination = Analysis::first_combination;
 
       /// The combination of a static analysis's components that poundfe
       /// refuses, named; empty if none. A line search, Krylov's acceleration
@@ -287,18 +287,17 @@ namespace poundfe
     Analysis::number()
     {
       const bool eliminating = !opts.penalty; // Penalty keeps every DOF an equation
-      std::map<std::pair<int, unsigned int>, std::pair<int, unsigned int>> retained_by;
+      DofMap     retained_by;
       for (const EqualDof &e : domain.equal_dofs)
         for (const unsigned int k : e.dofs)
           if (eliminating)
             retained_by[{e.constrained, k}] = {e.retained, k};
-      std::set<std::pair<int, unsigned int>> in_diaphragm; // numbered by number_diaphragms
-      for (const Diaphragm &d : domain.diaphragms)
+      std::set<std::pair<int, unsigned int>> in_tie; // numbered by number_ties
+      for (const RigidTie &d : domain.rigid_ties)
         for (const int c : d.constrained)
-          for (const unsigned int k :
-               {(d.perpendicular + 1) % 3, (d.perpendicular + 2) % 3, 3 + d.perpendicular})
+          for (const unsigned int k : d.tied_dofs(domain.ndf))
             if (eliminating)
-              in_diaphragm.insert({c, k});
+              in_tie.insert({c, k});
       imposed_dofs.clear();
       for (const auto &[dof, value] : domain.imposed_displacements(domain.time))
         if (eliminating)
@@ -309,7 +308,7 @@ namespace poundfe
           node.equation.assign(node.fixed.size(), -1);
           for (unsigned int k = 0; k < node.fixed.size(); ++k)
             if ((!node.fixed[k] || !eliminating) && retained_by.count({tag, k}) == 0 &&
-                in_diaphragm.count({tag, k}) == 0 &&
+                in_tie.count({tag, k}) == 0 &&
                 std::find(imposed_dofs.begin(), imposed_dofs.end(), std::make_pair(tag, k)) ==
                   imposed_dofs.end())
               node.equation[k] = n_equations++;
@@ -318,17 +317,10 @@ namespace poundfe
       for (unsigned int j = 0; j < imposed_dofs.size(); ++j)
         domain.node(imposed_dofs[j].first).equation[imposed_dofs[j].second] = -2 - int(j);
       imposed_u.setZero(imposed_dofs.size());
-      // a constrained DOF takes its retained DOF's equation (chains followed)
-      for (const auto &[dof, retained] : retained_by)
-        {
-          auto r = retained;
-          for (unsigned int hops = 0; retained_by.count(r) && hops < retained_by.size(); ++hops)
-            r = retained_by.at(r);
-          domain.node(dof.first).equation[dof.second] = domain.node(r.first).equation[r.second];
-        }
       penalty_rows.clear();
+      combinations.clear();
       if (eliminating)
-        number_diaphragms();
+        number_ties(retained_by);
       else
         number_penalty();
       number_inertia();
@@ -391,59 +383,118 @@ namespace poundfe
         }
     }
 
-    /// OpenSees's RigidDiaphragm as the Transformation handler imposes it:
-    /// each constrained DOF a combination of the retained node's two
-    /// in-plane translations and its rotation (a fixed one contributing 0).
-    /// The constrained nodes must carry no mass in the plane (their inertia
-    /// would need the transformed, non-diagonal mass matrix).
-    void
-    Analysis::number_diaphragms()
+    namespace
     {
-      combinations.clear();
-      for (const Diaphragm &d : domain.diaphragms)
+      /// Marks every rigid tie's constrained DOFs with the equation
+      /// `waiting`, refusing a DOF fixed or constrained already and one with
+      /// mass (the tie's own command named: the error surfaces at analyze).
+      void
+      hold_tied_dofs(Domain &domain, const int waiting)
+      {
+        for (const RigidTie &tie : domain.rigid_ties)
+          for (const int c : tie.constrained)
+            for (const unsigned int k : tie.tied_dofs(domain.ndf))
+              {
+                Node &node = domain.node(c);
+                if (node.fixed[k] || node.equation[k] != -1)
+                  throw ScriptError(tie.name() + ": node " + std::to_string(c) + " DOF " +
+                                    std::to_string(k + 1) + " is fixed or constrained already");
+                if (node.mass[k] + node.element_mass[k] != 0)
+                  throw ScriptError(tie.name() + ": node " + std::to_string(c) +
+                                    " has mass along DOF " + std::to_string(k + 1) +
+                                    ": poundfe takes a " +
+                                    (tie.beam ? "rigid link's" : "diaphragm's") +
+                                    " mass at its retained node");
+                node.equation[k] = waiting;
+              }
+      }
+    } // namespace
+
+    /// The equalDOFs and rigid ties (OpenSees's RigidDiaphragm and
+    /// RigidBeam) as the Transformation handler imposes them, numbered in
+    /// dependency order: a constrained DOF is numbered once its retained
+    /// DOFs are, an equalDOF's taking its retained DOF's equation (or
+    /// combination), a tie's the combination of its retained node's DOFs (a
+    /// combination substituted, a fixed DOF contributing 0). A chain through
+    /// a tie so gives OpenSees's Lagrange handler's displacements. The
+    /// constrained DOFs must carry no mass (their inertia would need the
+    /// transformed, non-diagonal mass matrix).
+    void
+    Analysis::number_ties(const DofMap &retained_by)
+    {
+      constexpr int waiting  = first_combination + 1; // not numbered yet
+      const auto    equation = [this](const std::pair<int, unsigned int> &dof) -> int & {
+        return domain.node(dof.first).equation[dof.second];
+      };
+      for (const auto &[dof, retained] : retained_by)
+        equation(dof) = waiting;
+      hold_tied_dofs(domain, waiting);
+      const auto retained_numbered = [&](const RigidTie &tie) {
+        const std::vector<unsigned int> dofs = tie.tied_dofs(domain.ndf);
+        return std::none_of(dofs.begin(), dofs.end(), [&](const unsigned int k) {
+          return equation({tie.retained, k}) == waiting;
+        });
+      };
+      std::vector<bool> tie_numbered(domain.rigid_ties.size(), false);
+      for (bool progress = true; progress;)
         {
-          const unsigned int a = (d.perpendicular + 1) % 3, b = (d.perpendicular + 2) % 3,
-                             r = 3 + d.perpendicular;
-          const Node        &retained = domain.node(d.retained);
-          // the diaphragm's own command named: the error surfaces at analyze
-          const std::string name = "rigidDiaphragm" + (d.where.empty() ? "" : " (" + d.where + ")");
-          for (const unsigned int k : {a, b, r})
-            if (retained.equation[k] < -1)
-              throw ScriptError(name + ": the retained node " + std::to_string(d.retained) +
-                                " is itself constrained along DOF " + std::to_string(k + 1));
-          const auto term = [&](const unsigned int k, const double c) {
-            return std::make_pair(retained.equation[k], c);
-          };
-          for (const int c : d.constrained)
-            {
-              Node &node = domain.node(c);
-              const double da = node.coordinates[a] - retained.coordinates[a],
-                           db = node.coordinates[b] - retained.coordinates[b];
-              for (const unsigned int k : {a, b, r})
-                {
-                  if (node.fixed[k] || node.equation[k] != -1)
-                    throw ScriptError(name + ": node " + std::to_string(c) + " DOF " +
-                                      std::to_string(k + 1) +
-                                      " is fixed or constrained already");
-                  if (node.mass[k] + node.element_mass[k] != 0)
-                    throw ScriptError(name + ": node " + std::to_string(c) +
-                                      " has mass along DOF " + std::to_string(k + 1) +
-                                      ": poundfe takes a diaphragm's mass at its retained node");
-                }
-              std::vector<std::vector<std::pair<int, double>>> rows = {
-                {term(a, 1.0), term(r, -db)}, {term(b, 1.0), term(r, da)}, {term(r, 1.0)}};
-              const std::array<unsigned int, 3> dofs{{a, b, r}};
-              for (unsigned int i = 0; i < 3; ++i)
-                {
-                  auto &row = rows[i];
-                  row.erase(std::remove_if(row.begin(), row.end(),
-                                           [](const auto &t) { return t.first < 0; }),
-                            row.end());
-                  node.equation[dofs[i]] = first_combination - int(combinations.size());
-                  combinations.push_back(row);
-                }
-            }
+          progress = false;
+          for (const auto &[dof, retained] : retained_by)
+            if (equation(dof) == waiting && equation(retained) != waiting)
+              equation(dof) = equation(retained), progress = true;
+          for (unsigned int t = 0; t < tie_numbered.size(); ++t)
+            if (!tie_numbered[t] && retained_numbered(domain.rigid_ties[t]))
+              {
+                number_tie(domain.rigid_ties[t]);
+                tie_numbered[t] = progress = true;
+              }
         }
+      for (unsigned int t = 0; t < tie_numbered.size(); ++t)
+        if (!tie_numbered[t])
+          throw ScriptError(domain.rigid_ties[t].name() + ": the retained node " +
+                            std::to_string(domain.rigid_ties[t].retained) +
+                            " is constrained in a loop of constraints");
+      for (const auto &[dof, retained] : retained_by)
+        {
+          const std::string where = "equalDOF " + std::to_string(retained.first) + " " +
+                                    std::to_string(dof.first) + ": node " +
+                                    std::to_string(dof.first) + " DOF " +
+                                    std::to_string(dof.second + 1);
+          const Node &node = domain.node(dof.first);
+          if (equation(dof) == waiting)
+            throw ScriptError(where + " is constrained in a loop of constraints");
+          if (equation(dof) <= first_combination &&
+              node.mass[dof.second] + node.element_mass[dof.second] != 0)
+            throw ScriptError(where + " has mass and follows a rigid tie's constrained node: "
+                                      "poundfe takes a tie's mass at its retained node");
+        }
+    }
+
+    /// One tie's combinations u_c = C_cr u_r, its retained DOFs numbered.
+    void
+    Analysis::number_tie(const RigidTie &tie)
+    {
+      const Node &retained = domain.node(tie.retained);
+      for (const unsigned int k : tie.tied_dofs(domain.ndf))
+        if (retained.equation[k] < -1 && retained.equation[k] > first_combination)
+          throw ScriptError(tie.name() + ": the retained node " + std::to_string(tie.retained) +
+                            " is imposed along DOF " + std::to_string(k + 1) + " (an sp)");
+      for (const int c : tie.constrained)
+        for (const unsigned int k : tie.tied_dofs(domain.ndf))
+          {
+            std::map<int, double> row;
+            for (const auto &[dof, factor] : domain.tie_row(tie, c, k))
+              {
+                const int eq = retained.equation[dof];
+                if (eq >= 0)
+                  row[eq] += factor;
+                else if (eq <= first_combination)
+                  for (const auto &[e, f] : combinations[first_combination - eq])
+                    row[e] += factor * f;
+              }
+            domain.node(c).equation[k] = first_combination - int(combinations.size());
+            combinations.emplace_back(row.begin(), row.end());
+          }
     }
 
     void

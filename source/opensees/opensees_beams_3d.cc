@@ -23,6 +23,31 @@ namespace poundfe
 {
   namespace opensees
   {
+    Eigen::Matrix3d
+    member_axes(const Domain                &domain,
+                const int                    tag,
+                const std::array<int, 2>    &nodes,
+                const std::array<double, 3> &vecxz,
+                double                      &L)
+    {
+      const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
+      Eigen::Vector3d x(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+      L = x.norm();
+      if (!(L > 0))
+        throw ScriptError("element " + std::to_string(tag) + " has zero length");
+      x /= L;
+      const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
+      Eigen::Vector3d       y = v.cross(x);
+      if (!(y.norm() > 0))
+        throw ScriptError("element " + std::to_string(tag) +
+                          ": the transformation's vecxz is parallel to its axis");
+      y /= y.norm();
+      const Eigen::Vector3d z = x.cross(y);
+      Eigen::Matrix3d       r;
+      r.row(0) = x, r.row(1) = y, r.row(2) = z;
+      return r;
+    }
+
     namespace
     {
       /// The local stiffness of a 3D Euler-Bernoulli member of length L.
@@ -64,21 +89,7 @@ namespace poundfe
           : Element(tag, {nodes[0], nodes[1]})
           , p_delta(p_delta)
         {
-          const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
-          Eigen::Vector3d x(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
-          L = x.norm();
-          if (!(L > 0))
-            throw ScriptError("element " + std::to_string(tag) + " has zero length");
-          x /= L;
-          const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
-          Eigen::Vector3d       y = v.cross(x);
-          if (!(y.norm() > 0))
-            throw ScriptError("element " + std::to_string(tag) +
-                              ": the transformation's vecxz is parallel to its axis");
-          y /= y.norm();
-          const Eigen::Vector3d z = x.cross(y);
-          Eigen::Matrix3d       r;
-          r.row(0) = x, r.row(1) = y, r.row(2) = z;
+          const Eigen::Matrix3d r = member_axes(domain, tag, nodes, vecxz, L);
           R.setZero(12, 12);
           for (unsigned int block = 0; block < 4; ++block)
             R.block<3, 3>(3 * block, 3 * block) = r;

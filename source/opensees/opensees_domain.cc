@@ -283,7 +283,7 @@ namespace poundfe
             }
       }
 
-      /// The element's consistent mass (-cMass) times x(i), x of the
+      /// The element's consistent mass (-cMass) times x(m, i), x of the
       /// element's DOF i (its node's DOF i % ndf), added to f.
       template <typename X>
       void
@@ -294,7 +294,7 @@ namespace poundfe
             {
               Vector values(m.matrix.rows());
               for (Eigen::Index i = 0; i < values.size(); ++i)
-                values[i] = x(i);
+                values[i] = x(m, i);
               f += m.matrix * values;
             }
       }
@@ -327,7 +327,7 @@ namespace poundfe
             for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
               f[offset + k] += c.alpha_m * m.mass * v[offset + k];
           });
-          add_consistent_mass_times(*this, element, [&](Eigen::Index i) { return c.alpha_m * v[i]; }, f);
+          add_consistent_mass_times(*this, element, [&](const ConsistentMass &, Eigen::Index i) { return c.alpha_m * v[i]; }, f);
         }
       return f;
     }
@@ -343,7 +343,7 @@ namespace poundfe
             f[offset + k] += m.mass * a_g[k];
       });
       if (has_consistent_ground_load(*this, element))
-        add_consistent_mass_times(*this, element, [&](Eigen::Index i) { return a_g[i % ndf]; }, f);
+        add_consistent_mass_times(*this, element, [&](const ConsistentMass &, Eigen::Index i) { return a_g[i % ndf]; }, f);
       return f;
     }
 
@@ -385,9 +385,14 @@ namespace poundfe
         for (unsigned int k = 0; k < std::min(ndm, ndf); ++k)
           f[offset + k] += m.mass * (loads * a_g[k] + a[offset + k]);
       });
-      // a consistent mass (-cMass: trusses) takes its ground load once
+      // a consistent mass (-cMass) takes its ground load once, a 2D
+      // elasticBeamColumn's twice
       add_consistent_mass_times(
-        *this, element, [&](Eigen::Index i) { return a[i] + a_g[i % ndf]; }, f);
+        *this, element,
+        [&](const ConsistentMass &m, Eigen::Index i) {
+          return a[i] + (m.ground_load_twice ? 2.0 : 1.0) * a_g[i % ndf];
+        },
+        f);
       if (element.rayleigh_damped())
         f += rayleigh_damping_forces(element);
       return f;
@@ -424,6 +429,73 @@ namespace poundfe
       changed = true;
     }
 
+    std::string
+    RigidTie::name() const
+    {
+      return (beam ? "rigidLink beam" : "rigidDiaphragm") +
+             (where.empty() ? std::string() : " (" + where + ")");
+    }
+
+    std::vector<unsigned int>
+    RigidTie::tied_dofs(const unsigned int ndf) const
+    {
+      if (!beam)
+        return {(perpendicular + 1) % 3, (perpendicular + 2) % 3, 3 + perpendicular};
+      std::vector<unsigned int> dofs(ndf);
+      for (unsigned int k = 0; k < ndf; ++k)
+        dofs[k] = k;
+      return dofs;
+    }
+
+    std::vector<std::pair<unsigned int, double>>
+    RigidTie::row(const unsigned int              k,
+                   const unsigned int              ndm,
+                   const unsigned int              ndf,
+                   const std::vector<double>      &d) const
+    {
+      std::vector<std::pair<unsigned int, double>> terms{{k, 1.0}};
+      if (k >= ndm || ndf == ndm) // a rotation, or a model without rotations
+        return terms;
+      if (ndm == 2)
+        terms.push_back({2, k == 0 ? -d[1] : d[0]});
+      else // (theta x d)_k = eps_kjm theta_j d_m, +1 when (k, j, m) is cyclic
+        for (unsigned int j = 0; j < 3; ++j)
+          if (j != k && (beam || j == perpendicular))
+            terms.push_back({3 + j, (j == (k + 1) % 3 ? 1.0 : -1.0) * d[3 - k - j]});
+      return terms;
+    }
+
+    std::vector<std::pair<unsigned int, double>>
+    Domain::tie_row(const RigidTie &tie, const int c, const unsigned int k) const
+    {
+      const std::vector<double> &xc = node(c).coordinates, &xr = node(tie.retained).coordinates;
+      std::vector<double>        d(xc.size());
+      for (unsigned int i = 0; i < d.size(); ++i)
+        d[i] = xc[i] - xr[i];
+      return tie.row(k, ndm, ndf, d);
+    }
+
+    void
+    Domain::remove_ties_of(const int constrained)
+    {
+      const auto before = equal_dofs.size();
+      equal_dofs.erase(std::remove_if(equal_dofs.begin(), equal_dofs.end(),
+                                      [&](const EqualDof &e) { return e.constrained == constrained; }),
+                       equal_dofs.end());
+      bool removed = equal_dofs.size() != before;
+      for (RigidTie &d : rigid_ties)
+        {
+          const auto n = d.constrained.size();
+          d.constrained.erase(std::remove(d.constrained.begin(), d.constrained.end(), constrained),
+                              d.constrained.end());
+          removed = removed || d.constrained.size() != n;
+        }
+      rigid_ties.erase(std::remove_if(rigid_ties.begin(), rigid_ties.end(),
+                                      [](const RigidTie &d) { return d.constrained.empty(); }),
+                       rigid_ties.end());
+      changed = changed || removed;
+    }
+
     void
     Domain::remove_node(const int tag)
     {
@@ -437,9 +509,9 @@ namespace poundfe
       for (const EqualDof &e : equal_dofs)
         if (e.retained == tag || e.constrained == tag)
           throw ScriptError(name + " is tied by an equalDOF");
-      for (const Diaphragm &d : diaphragms)
+      for (const RigidTie &d : rigid_ties)
         if (d.retained == tag || std::count(d.constrained.begin(), d.constrained.end(), tag) > 0)
-          throw ScriptError(name + " is in a rigidDiaphragm");
+          throw ScriptError(name + " is in a " + d.name());
       for (const auto &[pattern_tag, pattern] : patterns)
         {
           for (const NodalLoad &load : pattern.loads)

@@ -3,7 +3,7 @@
 // PenaltySP_FE.cpp and PenaltyMP_FE.cpp): no DOF leaves the equations; each
 // single-point constraint (fix, sp) is a spring of stiffness alphaSP to its
 // value g(t), and each multi-point constraint u_c = C_cr u_r (equalDOF,
-// rigidLink bar, rigidDiaphragm) adds, with C = [-I C_cr] on (u_c, u_r),
+// rigidLink bar|beam, rigidDiaphragm) adds, with C = [-I C_cr] on (u_c, u_r),
 //   K += alphaMP C^T C,   R -= alphaMP C^T C u,
 // row by row (C^T C is the sum of its rows' outer products). The tangent is
 // the penalty's own, unscaled by the integrator's K factor, as OpenSees's
@@ -39,26 +39,15 @@ namespace poundfe
           penalty_rows.push_back(
             {{{equation(e.constrained, k), -1.0}, {equation(e.retained, k), 1.0}},
              opts.alpha_mp});
-      for (const Diaphragm &d : domain.diaphragms)
-        {
-          const unsigned int a = (d.perpendicular + 1) % 3, b = (d.perpendicular + 2) % 3,
-                             r        = 3 + d.perpendicular;
-          const Node        &retained = domain.node(d.retained);
-          for (const int c : d.constrained)
+      for (const RigidTie &d : domain.rigid_ties)
+        for (const int c : d.constrained)
+          for (const unsigned int k : d.tied_dofs(domain.ndf))
             {
-              const Node  &node = domain.node(c);
-              const double da   = node.coordinates[a] - retained.coordinates[a],
-                           db   = node.coordinates[b] - retained.coordinates[b];
-              const auto   row  = [&](const unsigned int k,
-                                   std::vector<std::pair<int, double>> retained_terms) {
-                retained_terms.insert(retained_terms.begin(), {equation(c, k), -1.0});
-                penalty_rows.push_back({retained_terms, opts.alpha_mp});
-              };
-              row(a, {{equation(d.retained, a), 1.0}, {equation(d.retained, r), -db}});
-              row(b, {{equation(d.retained, b), 1.0}, {equation(d.retained, r), da}});
-              row(r, {{equation(d.retained, r), 1.0}});
+              std::vector<std::pair<int, double>> terms{{equation(c, k), -1.0}};
+              for (const auto &[dof, factor] : domain.tie_row(d, c, k))
+                terms.emplace_back(equation(d.retained, dof), factor);
+              penalty_rows.push_back({terms, opts.alpha_mp});
             }
-        }
     }
 
     void

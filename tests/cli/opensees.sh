@@ -86,7 +86,7 @@ set n 0
 foreach tag [getNodeTags] { incr n }
 while {$n > 3} { incr n -1 }
 puts "nodes $n elements [getEleTags]"
-if {[catch {remove mp 1} message]} { puts "caught: $message" }
+if {[catch {remove parameter 1} message]} { puts "caught: $message" }
 if {[catch {element zeroLength 9 0 1 -mat 1 -dir 1 -orient 1 0 0 0 1 0 -dampMats 1} message]} {
     puts "caught: $message"
 }
@@ -106,7 +106,7 @@ status=$?
 expect_line() { grep -qxF -- "$1" "$work/tcl/log" || { cat "$work/tcl/log"; fail "no line '$1'"; }; }
 expect_line "argc 4 argv $work/tcl -x --output y"
 expect_line "nodes 3 elements 1 2 3"
-expect_line "caught: remove mp: poundfe does not support it"
+expect_line "caught: remove parameter: poundfe does not support it"
 expect_line "caught: element zeroLength option '-dampMats': poundfe does not support it"
 expect_line "analyze 0 disp 0.06"
 grep -q "not reached" "$work/tcl/log" && fail "the script went on after exit"
@@ -617,7 +617,12 @@ echo "recorder EnvelopeElement -file $work/x.out -ele 5 force" \
 echo "remove recorder 7" | bad remove-recorder '5: remove: recorder 7 does not exist' || exit 1
 echo "remove recorders extra" \
   | bad remove-recorders "5: remove recorders word 'extra': poundfe does not support it" || exit 1
-echo "remove mp 1" | bad remove-mp '5: remove mp: poundfe does not support it' || exit 1
+echo "remove mp 1 2" | bad remove-mp-dof \
+  "5: remove: '2' after the node: remove mp takes the constrained node only (OpenSees 3.8 removes all its constraints)" || exit 1
+echo "remove mp" | bad remove-mp-missing "5: remove: missing the constrained node's tag" || exit 1
+echo "remove mp x" | bad remove-mp-word "5: remove: expected an integer for the constrained node's tag, got 'x'" || exit 1
+echo "remove mp -tag 3" | bad remove-mp-tag \
+  "5: remove mp -tag mpTag (poundfe's mp have no tags: remove mp cNode): poundfe does not support it" || exit 1
 echo "fixX 0.0 1 1" | bad fix-x '5: fixX: needs 1 to ndf = 1 fixities, got 2' || exit 1
 echo "fixY 0.0 1" | bad fix-y '5: fixY: the model has no axis 2 (-ndm 1)' || exit 1
 echo "fixX 0.0 1 -tol" | bad fix-tolerance '5: fixX: missing the tolerance' || exit 1

@@ -26,12 +26,14 @@
 #     NewtonLineSearch with -maxIter < 1 or -minEta > -maxEta or with
 #     DisplacementControl, KrylovNewton with a tangent other than the current
 #     one, -maxDim < 0 or DisplacementControl, eleLoad on a beam-column, of another type, or
-#     outside a pattern, rigidLink beam, BFGS -secant or -count 0, sp in a transient
+#     outside a pattern, BFGS -secant or -count 0, sp in a transient
 #     analysis, on a fixed DOF or outside a pattern, ArcLength or an adaptive
 #     DisplacementControl under constraints Lagrange; sp imposed (Transformation) and
 #     held at zero (Plain) on an elastic cantilever; a refused command caught
 #     by catch leaves the settings before it; constraints after analysis
-#     waits for the next analysis (OpenSees 3.8's line).
+#     waits for the next analysis (OpenSees 3.8's line); rigidLink beam's
+#     and remove mp's and -cMass's hostile words (extra, missing, unknown
+#     node, NaN, a tie's constrained node with mass, -cMass on Corotational).
 #  5. OpenSees's 3D RC frame script (bench/opensees/fibre_frame_3d/frame.tcl:
 #     rigidDiaphragm, 3D forceBeamColumns on fibre sections) against its peaks.
 #   opensees_fibre.sh POUNDFE CORPUS_DIR PYTHON3
@@ -148,8 +150,29 @@ printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\ntimeSeries Linear 1
   | bad element-load-point '8: pattern: eleLoad -type -beamPoint: poundfe does not support it'
 printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\neleLoad -ele 1 -type -beamUniform -1.0\n' \
   | bad element-load-outside '7: eleLoad: an eleLoad belongs in the body of a Plain pattern'
-printf 'node 3 1.0 3.0\nrigidLink beam 2 3\n' | bad rigid-link-beam \
-  '7: rigidLink beam: poundfe does not support it'
+printf 'node 3 1.0 3.0\nrigidLink beam 2 3 1\n' | bad rigid-link-beam-extra \
+  "7: rigidLink: '1' after the constrained node: rigidLink beam takes two nodes"
+printf 'rigidLink beam 2 9\n' | bad rigid-link-beam-node '6: rigidLink: node 9 does not exist'
+printf 'rigidLink beam 2 2\n' | bad rigid-link-beam-same \
+  '6: rigidLink: the retained and the constrained node are the same'
+printf 'rigidLink beam 2\n' | bad rigid-link-beam-missing '6: rigidLink: missing the constrained node'
+printf 'rigidLink pin 1 2\n' | bad rigid-link-pin '6: rigidLink pin: poundfe does not support it'
+printf 'node 3 1.0 3.0 -mass 1.0 1.0 0.0\nrigidLink beam 2 3\nfix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad rigid-link-beam-mass '12: analyze: rigidLink beam (s.tcl:7): node 3 has mass along DOF 1: poundfe takes a rigid link'"'"'s mass at its retained node'
+# chains through a rigid tie: a loop is refused by name, and so is mass
+# (lumped or -cMass) on an equalDOF's node that follows a tie's node
+printf 'node 3 1.0 3.0\nrigidLink beam 2 3\nequalDOF 3 2 1\nfix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad tie-loop '13: analyze: rigidLink beam (s.tcl:7): the retained node 2 is constrained in a loop of constraints'
+printf 'node 3 1.0 3.0\nnode 4 2.0 3.0 -mass 1.0 1.0 0.0\nrigidLink beam 2 3\nequalDOF 3 4 1 2\nfix 1 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nelement elasticBeamColumn 2 3 4 0.01 2.0e8 1.0e-4 1\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad tie-chain-mass "15: analyze: equalDOF 3 4: node 4 DOF 1 has mass and follows a rigid tie's constrained node: poundfe takes a tie's mass at its retained node"
+printf 'node 3 1.0 3.0\nnode 4 2.0 3.0\nnode 5 2.0 0.0\nrigidLink beam 2 3\nequalDOF 3 4 1 2\nfix 1 1 1 1\nfix 5 1 1 1\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1\nelement elasticBeamColumn 2 5 4 0.01 2.0e8 1.0e-4 1 -mass 5.0 -cMass\nintegrator LoadControl 1.0\nanalysis Static\nanalyze 1\n' \
+  | bad tie-chain-cmass "17: analyze: element 2: a consistent mass (-cMass) on node 4, whose DOF 1 follows a rigid tie's constrained node"
+printf 'geomTransf Corotational 2\nelement elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 2 -mass 5.0 -cMass\n' \
+  | bad cmass-corotational '7: element 1 -cMass on geomTransf Corotational: poundfe does not support it'
+printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1 -mass 5.0 -cMass 1\n' \
+  | bad cmass-value "6: element elasticBeamColumn option '1': poundfe does not support it"
+printf 'element elasticBeamColumn 1 1 2 0.01 2.0e8 1.0e-4 1 -mass nan -cMass\n' \
+  | bad cmass-nan "6: element: expected a number for the mass per length, got 'nan'"
 echo "integrator HHT 1.5" | bad hht-alpha '6: integrator: HHT needs 0 < alpha <= 1'
 echo "integrator HHT 0.9 inf 0.25" | bad hht-infinite "6: integrator: expected a finite number for gamma, got 'inf'"
 echo "constraints Penalty 1.0e12" | bad penalty-alpha '6: constraints: missing alphaMP'

@@ -6,14 +6,21 @@
 # of it along Y with mass-proportional Rayleigh damping. The constraints are
 # imposed by the handler of the script's argv: Transformation,
 # Lagrange <alphaSP alphaMP> or Penalty alphaSP alphaMP; with -cornerMass m
-# each corner carries m in the floor's plane, which only Penalty takes.
-# argv: the output directory <-cornerMass m> <handler words>.
+# each corner carries m in the floor's plane, which only Penalty takes;
+# with -release, halfway through the record `remove mp 11` takes a corner
+# out of the diaphragm and `remove mp 22` frees the neighbour's top.
+# argv: the output directory <-cornerMass m> <-release> <handler words>.
 set out [lindex $argv 0]
 set words [lrange $argv 1 end]
 set corner_mass 0.0
 if {[lindex $words 0] eq "-cornerMass"} {
     set corner_mass [lindex $words 1]
     set words [lrange $words 2 end]
+}
+set release 0
+if {[lindex $words 0] eq "-release"} {
+    set release 1
+    set words [lrange $words 1 end]
 }
 set handler [expr {[llength $words] > 0 ? $words : "Transformation"}]
 source [file join [file dirname [info script]] record.tcl]
@@ -88,5 +95,12 @@ test NormDispIncr 1.0e-8 50
 algorithm Newton
 integrator Newmark 0.5 0.25
 analysis Transient
-set status [analyze $steps $dt]
+if {$release} {
+    set status [analyze [expr {$steps / 2}] $dt]
+    remove mp 11
+    remove mp 22
+    incr status [analyze [expr {$steps / 2}] $dt]
+} else {
+    set status [analyze $steps $dt]
+}
 puts "constraint_handlers: status $status time [getTime] centre [nodeDisp 15 1]"

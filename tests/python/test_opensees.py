@@ -7,7 +7,8 @@ models, the commands made from the core's own list, a 3D fibre section
 with '-GJ' filled by later calls (a cantilever against its closed form),
 twoNodeLink, Series and ViscousDamper made with OpenSeesPy's words, and
 zeroLengthSection (OpenSeesPy's 2D -orient) and corotTruss against their
-closed forms."""
+closed forms, rigidLink beam and an elasticBeamColumn's -cMass against
+theirs."""
 
 import math
 import os
@@ -350,6 +351,43 @@ class ConventionsTest(TestCase):
         peak = max(abs(x) for x in rayleigh)
         self.assertLess(max(abs(a - b) for a, b in zip(modal, rayleigh)), 1e-13 * peak)
         self.assertGreater(max(abs(a - b) for a, b in zip(undamped, rayleigh)), 0.01 * peak)
+
+    def test_rigid_link_beam_and_consistent_mass(self):
+        # a cantilever column (L up Y) whose top carries, by rigidLink beam,
+        # node 3 at offset a along X; -V at node 3 reaches the top as -V
+        # and the moment -V a: theta = -V a L/EI, the top's
+        # u = V a L^2/(2 EI), and node 3's v = -V L/EA + a theta
+        E, A, I, L, a, V = 2.0e11, 0.01, 1.0e-4, 3.0, 0.8, 1.0e5
+        ops.wipe()
+        ops.model('basic', '-ndm', 2, '-ndf', 3)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, 0.0, L)
+        ops.node(3, a, L)
+        ops.fix(1, 1, 1, 1)
+        ops.geomTransf('Linear', 1)
+        ops.element('elasticBeamColumn', 1, 1, 2, A, E, I, 1, '-mass', 50.0, '-cMass')
+        ops.rigidLink('beam', 2, 3)
+        ops.timeSeries('Linear', 1)
+        ops.pattern('Plain', 1, 1)
+        ops.load(3, 0.0, -V, 0.0)
+        static_analysis()
+        ops.constraints('Transformation')
+        ops.analysis('Static')
+        self.assertEqual(ops.analyze(1), 0)
+        theta = -V * a * L / (E * I)
+        self.assertAlmostEqual(ops.nodeDisp(2, 3) / theta, 1.0, delta=1e-12)
+        self.assertAlmostEqual(ops.nodeDisp(2, 1) / (V * a * L**2 / (2 * E * I)), 1.0, delta=1e-12)
+        v = -V * L / (E * A) + a * theta
+        self.assertAlmostEqual(ops.nodeDisp(3, 2) / v, 1.0, delta=1e-12)
+        self.assertEqual(ops.nodeDisp(3, 3), ops.nodeDisp(2, 3))
+        # the column's consistent mass alone: its first eigenvalue is the
+        # least of the one-element cantilever's bending pair K phi =
+        # lambda M phi, K = EI/L^3 [12 -6L; -6L 4L^2], M = m L/420 [156
+        # -22L; -22L 4L^2] (the sway and the rotation of the top)
+        stiffness = E * I / L**3 * np.array([[12.0, -6 * L], [-6 * L, 4 * L * L]])
+        mass = 50.0 * L / 420.0 * np.array([[156.0, -22 * L], [-22 * L, 4 * L * L]])
+        expected = min(np.linalg.eigvals(np.linalg.solve(mass, stiffness)).real)
+        self.assertAlmostEqual(ops.eigen('-fullGenLapack', 1)[0] / expected, 1.0, delta=1e-10)
 
     def test_wipe_between_two_models(self):
         recorded = os.path.join(self.tmp, "first.out")

@@ -54,6 +54,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -162,6 +163,8 @@ namespace poundfe
       /// The largest system solved dense: at a few dozen equations LU on a
       /// dense matrix costs less than a sparse factorisation's bookkeeping.
       static constexpr unsigned int dense_equation_limit = 32;
+      /// The equation of a rigid tie's first combination (see combinations).
+      static constexpr int first_combination = -1000000;
 
       Analysis(Domain &domain, AnalysisOptions options);
       ~Analysis();
@@ -309,11 +312,16 @@ namespace poundfe
       /// The DOFs the sp commands impose (node, 0-based DOF) and their
       /// values at the trial time.
       std::vector<std::pair<int, unsigned int>> imposed_dofs;
-      /// A DOF a rigidDiaphragm constrains has the equation
-      /// -1000000 - j: the j-th combination, sum c_k x[e_k].
+      /// A DOF a rigid tie constrains (or an equalDOF ties to one) has the
+      /// equation first_combination - j: the j-th combination, sum c_k x[e_k].
       std::vector<std::vector<std::pair<int, double>>> combinations;
-      /// The combinations of the domain's diaphragms (in number()).
-      void number_diaphragms();
+      /// The equalDOFs' constrained DOFs and their retained DOFs.
+      using DofMap = std::map<std::pair<int, unsigned int>, std::pair<int, unsigned int>>;
+      /// The constrained DOFs of the equalDOFs and rigid ties (in number()),
+      /// in dependency order.
+      void number_ties(const DofMap &retained_by);
+      /// One rigid tie's combinations, its retained DOFs numbered.
+      void number_tie(const RigidTie &tie);
       /// Penalty's rows (in number(), every DOF an equation): a fix, an sp
       /// (its value by its node and DOF) or a row of a multi-point constraint.
       struct PenaltyRow
@@ -341,11 +349,12 @@ namespace poundfe
         std::vector<unsigned int> dofs; // each row's DOF at its node
         const Matrix             *matrix = nullptr;
         double                    alpha_m = 0;
+        double                    n_ground_loads = 1; // ConsistentMass::ground_load_twice: 2
       };
       std::vector<CoupledMass> coupled_masses;
       Vector                   coupled_work; // the residual's local storage
       void                     number_coupled_masses();
-      /// r -= M_e (A + alpha_M v + r a_g) of the consistent masses.
+      /// r -= M_e (A + alpha_M v + n r a_g) of the consistent masses.
       void subtract_coupled_inertia(Vector &r, const Vector &v);
       /// (c_m + c_c alpha_M) M_e of the consistent masses into the tangent.
       void add_coupled_masses(double c_m, double c_c);

@@ -232,17 +232,32 @@ namespace poundfe
       std::vector<unsigned int> dofs; // 0-based
     };
 
-    /// rigidDiaphragm perpDirn rNode cNodes (3D, -ndf 6): each constrained
-    /// node's in-plane translations and rotation about perpDirn follow the
-    /// retained node's as a rigid plane (OpenSees's RigidDiaphragm),
+    /// A rigid tie, u_c = C_cr u_r with C_cr the small-rotation rigid body
+    /// motion of the offset d = x_c - x_r,
+    ///   u_c = u_r + theta_r x d,  theta_c = theta_r:
+    /// rigidDiaphragm perpDirn rNode cNodes (3D, -ndf 6; OpenSees's
+    /// RigidDiaphragm) ties each constrained node's in-plane translations
+    /// and rotation about perpDirn, with theta_r's perpDirn component only,
     ///   u_a = u_a,r - d_b theta_r,  u_b = u_b,r + d_a theta_r,  theta = theta_r,
-    /// (a, b, perp) cyclic, d the constrained node's offset from the retained.
-    struct Diaphragm
+    /// (a, b, perp) cyclic; rigidLink beam rNode cNode (OpenSees's RigidBeam)
+    /// ties every DOF of its one constrained node (in 2D, -ndf 3:
+    /// u = u_r - d_y theta_r, v = v_r + d_x theta_r; with ndf = ndm, no
+    /// rotations, u_c = u_r).
+    struct RigidTie
     {
       unsigned int     perpendicular = 2; // 0-based axis
+      bool             beam          = false; // rigidLink beam
       int              retained      = 0;
       std::vector<int> constrained;
       std::string      where; // "file:line" of its command ("" outside a file)
+      /// The command's name, with its file and line when known.
+      std::string name() const;
+      /// The constrained DOFs of each constrained node.
+      std::vector<unsigned int> tied_dofs(unsigned int ndf) const;
+      /// Row k of C_cr for a constrained node at offset d: the retained
+      /// DOFs and their factors, the identity's first.
+      std::vector<std::pair<unsigned int, double>>
+      row(unsigned int k, unsigned int ndm, unsigned int ndf, const std::vector<double> &d) const;
     };
 
     /// `beamIntegration`: Lobatto or Legendre with n points on one section,
@@ -292,7 +307,7 @@ namespace poundfe
       std::map<int, std::shared_ptr<TimeSeries>> series;
       std::map<int, Pattern>                  patterns;
       std::vector<EqualDof>                   equal_dofs;
-      std::vector<Diaphragm>                  diaphragms;
+      std::vector<RigidTie>                  rigid_ties;
       RayleighFactors                         rayleigh;
       /// region -rayleigh: the factors of its elements and the alpha_M of
       /// its nodes in place of `rayleigh`'s (OpenSees's MeshRegion sets
@@ -332,6 +347,8 @@ namespace poundfe
         std::vector<int> nodes;
         Matrix           matrix;
         bool             load_in_reaction = false;
+        /// As LumpedMass's (a 2D elasticBeamColumn's -cMass).
+        bool ground_load_twice = false;
       };
       std::vector<ConsistentMass> consistent_masses;
       /// The modes of the last `eigen` (OpenSees's Domain eigenvalues and
@@ -426,6 +443,14 @@ namespace poundfe
       /// there is none. ScriptError when a pattern's element load names it
       /// (OpenSees 3.8 keeps the load on the removed element).
       void remove_element(int tag);
+      /// Row k of tie's C_cr for its constrained node c (RigidTie::row at
+      /// c's offset from the retained node).
+      std::vector<std::pair<unsigned int, double>>
+      tie_row(const RigidTie &tie, int c, unsigned int k) const;
+      /// `remove mp cNode` (OpenSees's Domain::removeMP_Constraints): every
+      /// equalDOF, rigidLink and rigidDiaphragm tie of constrained node
+      /// cNode; nothing when there is none.
+      void remove_ties_of(int constrained);
       /// `remove node tag`: ScriptError when an element, an equalDOF, a
       /// rigidDiaphragm or a pattern's load or sp names it (OpenSees 3.8
       /// removes it from under them); nothing when there is none.
@@ -462,6 +487,20 @@ namespace poundfe
     {
       double A = 0, E = 0, G = 0, J = 0, Iy = 0, Iz = 0;
     };
+    /// A 3D member's local axes as the rows of R (x = (X_j - X_i)/L,
+    /// y = vecxz × x / |vecxz × x|, z = x × y) and its length L;
+    /// ScriptError when L is 0 or vecxz is along x.
+    Eigen::Matrix3d member_axes(const Domain &domain, int tag, const std::array<int, 2> &nodes,
+                                const std::array<double, 3> &vecxz, double &L);
+    /// A beam-column's consistent mass (-cMass; OpenSees 3.8's
+    /// ElasticBeam2d/3d and DispBeamColumn2d/3d::getMass): the cubic
+    /// Hermitian mass rho L/420 [...] of each bending plane, rho L/6 [2 1;
+    /// 1 2] axially and, in 3D, torsion_ratio times that on the twists
+    /// (ElasticBeam3d: J/A; DispBeamColumn3d: 0), taken to the global DOFs
+    /// T^T m_l T (vecxz null in 2D).
+    Matrix beam_consistent_mass(const Domain &domain, int tag, const std::array<int, 2> &nodes,
+                                double rho, double torsion_ratio,
+                                const std::array<double, 3> *vecxz);
     std::unique_ptr<Element> make_elastic_beam_3d(const Domain &domain, int tag,
                                                   std::array<int, 2>   nodes,
                                                   const ElasticSection3d &section,
