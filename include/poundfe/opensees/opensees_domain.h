@@ -441,13 +441,14 @@ namespace poundfe
     /// OpenSees copies a material into every element that names it).
     std::unique_ptr<UniaxialLaw> make_domain_material(const Domain &domain, int tag);
 
-    /// Refuses `element` (its kind, for the message) made on nodes that
-    /// have moved: OpenSees measures its transformation from the nodes'
-    /// displacements then (nodeIInitialDisp, nodeJInitialDisp), which
-    /// poundfe does for the 2D elasticBeamColumn on a Linear or PDelta
-    /// transformation, a truss and a zeroLength only.
-    void refuse_on_moved_nodes(const Domain &domain, const std::string &element, int tag,
-                               const std::array<int, 2> &nodes);
+    /// The committed displacements of a member's two nodes when it is made,
+    /// `n_node_dofs` per node (zero past a node's own DOFs): OpenSees's
+    /// coordinate transformations (LinearCrdTransf2d/3d, PDeltaCrdTransf2d/
+    /// 3d, CorotCrdTransf2d::initialize: nodeIInitialDisp, nodeJInitialDisp)
+    /// take a member added on nodes that have moved along and as long as it
+    /// is then and measure its displacements from them.
+    Vector displacements_when_made(const Domain &domain, const std::array<int, 2> &nodes,
+                                   unsigned int n_node_dofs);
 
     /// elasticBeamColumn in 2D with a Linear or PDelta transformation,
     /// measured from the nodes' displacements when it is made.
