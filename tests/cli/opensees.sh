@@ -524,6 +524,8 @@ element elasticBeamColumn 1 1 2 0.1 2e8 1e-3 1
 section Elastic 1 2e8 0.1 1e-3
 beamIntegration Lobatto 1 1 3
 pattern Plain 1 Linear { load 2 1.0 0 0 }
+test NormDispIncr 1e-10 10
+algorithm Newton
 integrator LoadControl 1.0
 analysis Static
 analyze 1
@@ -538,7 +540,7 @@ for kind in "forceBeamColumn 2 2 3 1 1" "dispBeamColumn 2 3 2 2 1" \
   moved_script "$kind" > "$work/moved/s.tcl"
   "$poundfe" opensees "$work/moved/s.tcl" > "$work/moved/out" 2> "$work/moved/err"
   [ $? = 1 ] && [ "$(wc -l < "$work/moved/err")" = 1 ] \
-    && grep -qxF "poundfe: error: $work/moved/s.tcl:16: element 2 has zero length" "$work/moved/err" \
+    && grep -qxF "poundfe: error: $work/moved/s.tcl:18: element 2 has zero length" "$work/moved/err" \
     || { cat "$work/moved/err"; fail "moved: $kind of zero length is not refused"; }
 done
 for kind in "forceBeamColumn 2 2 4 1 1" "elasticBeamColumn 2 2 4 0.1 2e8 1e-3 1"; do
