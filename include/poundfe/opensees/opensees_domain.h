@@ -294,10 +294,10 @@ namespace poundfe
       std::vector<EqualDof>                   equal_dofs;
       std::vector<Diaphragm>                  diaphragms;
       RayleighFactors                         rayleigh;
-      /// region -rayleigh: the factors of its elements and the alpha_M of
-      /// its nodes in place of `rayleigh`'s (OpenSees's MeshRegion sets
-      /// them on each object); the `rayleigh` command, which sets every
-      /// object's, clears them.
+      /// Per-object factors in place of `rayleigh`'s: a region's (-rayleigh,
+      /// setElementRayleighDampingFactors) and the zeros of a node or element
+      /// made after the last `rayleigh` (OpenSees sets the factors of the
+      /// objects that exist then); the `rayleigh` command clears them.
       std::map<int, RayleighFactors> element_rayleigh;
       std::map<int, double>          node_alpha_m;
       /// The tags of the script's regions (a tag once only).
