@@ -284,6 +284,17 @@ CASES = {
     # an elasticBeamColumn (PDelta) and a truss with -rho added on nodes
     # that have moved: measured from their displacements then
     "moved_nodes": ("moved_nodes.tcl", [], 1e-9),
+    # fibre forceBeamColumn and dispBeamColumn members, an elasticBeamColumn
+    # (2d: Corotational; 3d: PDelta) made on nodes that have moved, after
+    # `remove element` and on a new apex: measured from their
+    # displacements then
+    "moved_members_2d": ("moved_members.tcl", ["2d"], 1e-9),
+    "moved_members_3d": ("moved_members.tcl", ["3d"], 1e-9),
+    # rayleigh before a gable is made (its node and member undamped), a
+    # beam removed and made again (undamped), a region's factors on the
+    # gable's member and nodes, and (2d) a truss -cMass on moved nodes
+    "rayleigh_later_2d": ("rayleigh_later.tcl", ["2d"], 1e-9),
+    "rayleigh_later_3d": ("rayleigh_later.tcl", ["3d"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -132,7 +132,17 @@ namespace poundfe
     void set_result(Tcl_Interp *interp, const std::vector<int> &values);
 
     /// Adds the element; ScriptError when its tag exists already.
+    ///
+    /// made_undamped: OpenSees's `rayleigh` sets the factors of the nodes
+    /// and elements that exist when it runs (Domain::setRayleighDampingFactors
+    /// loops over them); a node or element made later keeps its
+    /// constructor's zeros until the next `rayleigh` or `region -rayleigh`.
+    /// Domain::rayleigh holds the last command's factors, so a node or
+    /// element made after it gets zeros of its own (Domain::node_alpha_m,
+    /// Domain::element_rayleigh), as one made again after `remove`.
     void add_element(opensees::Domain &d, std::unique_ptr<opensees::Element> element);
+    /// Whether any of the four Rayleigh factors is nonzero.
+    bool has_factors(const opensees::RayleighFactors &f);
     /// A member's mass per length rho, lumped: rho L/2 on each node's
     /// translations (OpenSees's beam-columns and truss without -cMass), as
     /// the element's (opensees::Domain::LumpedMass), its ground-motion load

@@ -122,6 +122,8 @@ namespace poundfe
         n.vel = n.accel = n.disp;
         if (!d.nodes.emplace(n.tag, n).second)
           throw ScriptError("node " + text_of(n.tag) + " exists already");
+        if (d.rayleigh.alpha_m != 0)
+          d.node_alpha_m[n.tag] = 0.0; // undamped until the next rayleigh (made_undamped)
         d.changed = true;
       }
 
@@ -512,7 +514,8 @@ namespace poundfe
         add_node_masses(d, tag, data.nodes, 0.5 * data.mass); // TwoNodeLink::getMass
       }
 
-      /// The length of a member between its nodes' coordinates.
+      /// The length of a member between its nodes' coordinates (CorotTruss's
+      /// Lo, whatever the nodes' displacements).
       double
       member_length(const opensees::Domain &d, const std::array<int, 2> &nodes)
       {
@@ -523,16 +526,33 @@ namespace poundfe
         return std::sqrt(L2);
       }
 
+      /// The member's length when it is made, on nodes that may have moved
+      /// (the transformations' and Truss's initial displacements).
+      double
+      moved_member_length(const opensees::Domain &d, const std::array<int, 2> &nodes)
+      {
+        const opensees::Node &i = d.node(nodes[0]), &j = d.node(nodes[1]);
+        double                L2 = 0;
+        for (unsigned int k = 0; k < std::min(i.coordinates.size(), j.coordinates.size()); ++k)
+          {
+            const double moved =
+              k < std::min(i.disp.size(), j.disp.size()) ? j.disp[k] - i.disp[k] : 0;
+            L2 += std::pow(j.coordinates[k] - i.coordinates[k] + moved, 2);
+          }
+        return std::sqrt(L2);
+      }
+
       /// A truss's consistent mass (Truss and CorotTruss::getMass with
-      /// cMass): rho L/6 [2 1; 1 2] on each of its ends' ndm translations.
+      /// cMass): rho L/6 [2 1; 1 2] on each of its ends' ndm translations,
+      /// L the member's length (Truss's from its moved nodes, CorotTruss's Lo).
       void
       add_consistent_truss_mass(opensees::Domain &d, const int element,
                                 const std::array<int, 2> &nodes, const double rho,
-                                const bool load_in_reaction)
+                                const double length, const bool load_in_reaction)
       {
         if (rho == 0)
           return;
-        const double       m   = rho * member_length(d, nodes) / 6.0;
+        const double       m   = rho * length / 6.0;
         const unsigned int ndf = d.ndf;
         opensees::Matrix   M   = opensees::Matrix::Zero(2 * ndf, 2 * ndf);
         for (unsigned int i = 0; i < std::min(d.ndm, ndf); ++i)
@@ -599,7 +619,8 @@ namespace poundfe
         });
         add_element(d, opensees::make_truss(d, t.tag, t.nodes, t.area, t.material, t.rayleigh));
         if (d.ndm == 2 && t.consistent)
-          add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, true);
+          add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, moved_member_length(d, t.nodes),
+                                    true);
         else if (d.ndm == 2)
           add_lumped_mass(d, t.tag, t.nodes, t.rho);
         else if (t.rho != 0)
@@ -662,7 +683,7 @@ namespace poundfe
         // CorotTruss::getResistingForce does not subtract its inertia load:
         // the reactions leave it out (add_node_masses, not add_lumped_mass)
         if (t.consistent)
-          add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, false);
+          add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, member_length(d, t.nodes), false);
         else
           add_node_masses(d, t.tag, t.nodes, 0.5 * t.rho * member_length(d, t.nodes));
       }
@@ -1625,23 +1646,22 @@ namespace poundfe
                           ": nodes of differing dof at the element's ends");
       if (!d.elements.emplace(tag, std::move(element)).second)
         throw ScriptError("element " + text_of(tag) + " exists already");
+      if (has_factors(d.rayleigh))
+        d.element_rayleigh[tag] = opensees::RayleighFactors(); // see made_undamped
       d.changed = true;
+    }
+
+    bool
+    has_factors(const opensees::RayleighFactors &f)
+    {
+      return f.alpha_m != 0 || f.beta_k != 0 || f.beta_k_init != 0 || f.beta_k_committed != 0;
     }
 
     void
     add_lumped_mass(opensees::Domain &d, const int element, const std::array<int, 2> &nodes,
                     const double rho)
     {
-      // the member's length when it is made, on nodes that may have moved
-      // (the transformations' and Truss's initial displacements)
-      const opensees::Node &i = d.node(nodes[0]), &j = d.node(nodes[1]);
-      double                L2 = 0;
-      for (unsigned int k = 0; k < std::min(i.coordinates.size(), j.coordinates.size()); ++k)
-        {
-          const double moved = k < std::min(i.disp.size(), j.disp.size()) ? j.disp[k] - i.disp[k] : 0;
-          L2 += std::pow(j.coordinates[k] - i.coordinates[k] + moved, 2);
-        }
-      add_node_masses(d, element, nodes, 0.5 * rho * std::sqrt(L2));
+      add_node_masses(d, element, nodes, 0.5 * rho * moved_member_length(d, nodes));
       // a member's getResistingForce subtracts its inertia load (rho != 0):
       // the reactions take it
       for (auto &m : d.lumped_masses)

@@ -14,8 +14,9 @@
 // setRayleighDampingFactors, the factors of the region's elements,
 //   C_e = aM M_e + bK K_t + bK0 K_0 + bKc K_c   (Rayleigh-damped elements),
 // and the alpha_M of its nodes, C_n = aM M_n, at the time of the command
-// (all four zero: nothing, as OpenSees); a later `rayleigh` sets every
-// element's and node's again (opensees::Domain::element_rayleigh).
+// (all four zero: nothing, as OpenSees); a later `rayleigh` sets those of
+// every element and node then in the domain again (opensees::Domain::
+// element_rayleigh; a node or element made after it is undamped).
 #include <algorithm>
 #include <set>
 
@@ -166,8 +167,7 @@ namespace poundfe
           throw ScriptError("region " + std::to_string(tag) + " exists already");
         d.regions.push_back(tag);
         const auto &f = r.rayleigh;
-        if (!r.has_rayleigh ||
-            (f.alpha_m == 0 && f.beta_k == 0 && f.beta_k_init == 0 && f.beta_k_committed == 0))
+        if (!r.has_rayleigh || !has_factors(f))
           return; // OpenSees sets no factor then
         const auto [elements, nodes] = region_members(s, r, tag);
         for (const int e : elements)

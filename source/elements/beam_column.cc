@@ -149,8 +149,9 @@ namespace poundfe
   bool
   BeamColumn<dim>::set_trial(const GlobalVector &u)
   {
-    trial_u = u;
-    transf.update(u);
+    // measured from the nodes' displacements when the member was made
+    trial_u = u - transf.displacements_when_made();
+    transf.update(trial_u);
     why.clear();
     if (!basic_state(transf.basic_deformation(), trial.basic_force, trial.basic_stiffness))
       return false;

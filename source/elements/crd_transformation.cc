@@ -99,9 +99,12 @@ namespace poundfe
   CrdTransformation<dim>::CrdTransformation(const Transformation kind, const Point &node_i,
                                             const Point &node_j, const Point &offset_i,
                                             const Point &offset_j,
-                                            const Eigen::Vector3d &orientation)
+                                            const Eigen::Vector3d &orientation,
+                                            const GlobalVector    &made)
     : type(kind)
-    , chord0((node_j + offset_j) - (node_i + offset_i))
+    , u_made(made)
+    , chord0((node_j + offset_j) - (node_i + offset_i) +
+             made.template segment<dim>(n_node_dofs(dim)) - made.template segment<dim>(0))
     , length0(chord0.norm())
     , offsets(rigid_offset_matrix<dim>(offset_i, offset_j))
     , has_offsets(offset_i.norm() > 0 || offset_j.norm() > 0)

@@ -24,6 +24,10 @@
 // ForceBeamColumn2d/3d::computeSectionForces, the whole load in every
 // iteration), the basic reactions p0 enter the resisting force and
 // localForce as OpenSees's computeReactions gives them.
+// Made on nodes that have moved, a member is along and as long as it is
+// then and measured from the nodes' displacements then (the
+// transformations' initialize: nodeIInitialDisp, nodeJInitialDisp), which
+// its CrdTransformation keeps (u_made).
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/beam_column.h>
 #include <poundfe/opensees/opensees_domain.h>
@@ -310,26 +314,22 @@ namespace poundfe
         return shared.empty() ? Element::response(words) : shared;
       }
 
+      /// The member's transformation, made on nodes that may have moved
+      /// (displacements_when_made).
       CrdTransformation<2>
       transformation_of(const Domain &domain, const std::array<int, 2> nodes,
                         const Transformation kind, const int tag)
       {
         const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
-        if (a[0] == b[0] && a[1] == b[1])
+        const CrdTransformation<2>::GlobalVector made = displacements_when_made(domain, nodes, 3);
+        if (a[0] + made[0] == b[0] + made[3] && a[1] + made[1] == b[1] + made[4])
           throw ScriptError("element " + std::to_string(tag) + " has zero length");
-        CrdTransformation<2> transformation(kind, {a[0], a[1]}, {b[0], b[1]});
+        const Eigen::Vector2d zero = Eigen::Vector2d::Zero();
+        CrdTransformation<2>  transformation(kind, {a[0], a[1]}, {b[0], b[1]}, zero, zero,
+                                            Eigen::Vector3d::UnitZ(), made);
         // OpenSees's own tangent: a script's damping on K_t or K_c takes it
         transformation.use_opensees_tangent();
         return transformation;
-      }
-    } // namespace
-
-    namespace
-    {
-      std::string
-      beam_column_name(const BeamColumnKind kind)
-      {
-        return kind == BeamColumnKind::displacement_based ? "dispBeamColumn" : "forceBeamColumn";
       }
     } // namespace
 
@@ -338,7 +338,6 @@ namespace poundfe
                         const BeamColumnKind kind, const Transformation transformation,
                         const IntegrationSpec &integration, const OpenSeesIteration &iteration)
     {
-      refuse_on_moved_nodes(domain, beam_column_name(kind), tag, nodes);
       const CrdTransformation<2> transf = transformation_of(domain, nodes, transformation, tag);
       std::unique_ptr<BeamColumn<2>> beam =
         make_member<2>(domain, transf, kind, integration, iteration);
@@ -359,17 +358,19 @@ namespace poundfe
       if (transformation == Transformation::corotational)
         throw ScriptError("element " + std::to_string(tag) +
                           ": a Corotational transformation in 3D: poundfe does not support it");
-      refuse_on_moved_nodes(domain, beam_column_name(kind), tag, nodes);
+      // made on nodes that may have moved: the chord of the displaced nodes
       const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
+      const CrdTransformation<3>::GlobalVector made = displacements_when_made(domain, nodes, 6);
       const Eigen::Vector3d i(a[0], a[1], a[2]), j(b[0], b[1], b[2]);
-      if (i == j)
+      const Eigen::Vector3d chord = j + made.segment<3>(6) - i - made.segment<3>(0);
+      if (chord.isZero(0))
         throw ScriptError("element " + std::to_string(tag) + " has zero length");
       const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
-      if (!((j - i).cross(v).norm() > 0))
+      if (!(chord.cross(v).norm() > 0))
         throw ScriptError("element " + std::to_string(tag) +
                           ": the transformation's vecxz is parallel to its axis");
       CrdTransformation<3> transf(transformation, i, j, Eigen::Vector3d::Zero(),
-                                  Eigen::Vector3d::Zero(), v);
+                                  Eigen::Vector3d::Zero(), v, made);
       transf.use_opensees_tangent();
       return std::make_unique<BeamColumnElement3d>(
         tag, nodes, make_member<3>(domain, transf, kind, integration, iteration));

@@ -1,6 +1,9 @@
 // OpenSees's elasticBeamColumn in 3D: ElasticBeam3d on LinearCrdTransf3d or
 // PDeltaCrdTransf3d (OpenSees 3.8, SRC/element/elasticBeamColumn/ and
-// SRC/coordTransformation/), without offsets, releases or element loads.
+// SRC/coordTransformation/), without offsets, releases or element loads;
+// made on nodes that have moved, along and as long as it is then and u
+// measured from the nodes' displacements then (the transformations'
+// initialize: nodeIInitialDisp, nodeJInitialDisp).
 //
 // Local axes (LinearCrdTransf3d::getLocalAxes): x = (X_j - X_i)/L,
 // y = vecxz × x / |vecxz × x|, z = x × y; u_l = R u_g node by node and
@@ -28,10 +31,12 @@ namespace poundfe
                 const int                    tag,
                 const std::array<int, 2>    &nodes,
                 const std::array<double, 3> &vecxz,
-                double                      &L)
+                double                      &L,
+                const Eigen::Vector3d       &shift)
     {
       const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
       Eigen::Vector3d x(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+      x += shift;
       L = x.norm();
       if (!(L > 0))
         throw ScriptError("element " + std::to_string(tag) + " has zero length");
@@ -89,7 +94,11 @@ namespace poundfe
           : Element(tag, {nodes[0], nodes[1]})
           , p_delta(p_delta)
         {
-          const Eigen::Matrix3d r = member_axes(domain, tag, nodes, vecxz, L);
+          // made on nodes that may have moved: along and as long as the
+          // member is then, measured from then (displacements_when_made)
+          u_made                    = displacements_when_made(domain, nodes, 6);
+          const Eigen::Matrix3d r   = member_axes(domain, tag, nodes, vecxz, L,
+                                                u_made.segment<3>(6) - u_made.segment<3>(0));
           R.setZero(12, 12);
           for (unsigned int block = 0; block < 4; ++block)
             R.block<3, 3>(3 * block, 3 * block) = r;
@@ -104,7 +113,7 @@ namespace poundfe
         bool
         set_trial(const Vector &u, const Vector &) override
         {
-          ul = R * u;
+          ul = R * (u - u_made);
           return ul.allFinite();
         }
         Vector
@@ -155,7 +164,7 @@ namespace poundfe
         bool   p_delta;
         double L = 0, EA = 0;
         Matrix R, kl0;
-        Vector ul;
+        Vector ul, u_made;
       };
     } // namespace
 
@@ -168,7 +177,6 @@ namespace poundfe
         throw ScriptError("element " + std::to_string(tag) +
                           ": elasticBeamColumn on a Corotational transformation in 3D: poundfe "
                           "does not support it");
-      refuse_on_moved_nodes(domain, "elasticBeamColumn (3D)", tag, nodes);
       return std::make_unique<ElasticBeam3d>(domain, tag, nodes, section,
                                              transformation == Transformation::pdelta, vecxz);
     }

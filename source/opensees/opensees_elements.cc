@@ -69,12 +69,7 @@ namespace poundfe
           // is then, its displacements measured from then
           // (LinearCrdTransf2d::initialize's nodeIInitialDisp, nodeJInitialDisp)
           const Node &i = domain.node(nodes[0]), &j = domain.node(nodes[1]);
-          u_at_creation.setZero(6);
-          for (unsigned int k = 0; k < std::min({std::size_t(3), i.disp.size(), j.disp.size()}); ++k)
-            {
-              u_at_creation[k]     = i.disp[k];
-              u_at_creation[3 + k] = j.disp[k];
-            }
+          u_at_creation   = displacements_when_made(domain, nodes, 3);
           const double dx = j.coordinates[0] - i.coordinates[0] + u_at_creation[3] - u_at_creation[0];
           const double dy = j.coordinates[1] - i.coordinates[1] + u_at_creation[4] - u_at_creation[1];
           L               = std::hypot(dx, dy);
@@ -872,25 +867,24 @@ namespace poundfe
     {
       if (transformation == Transformation::corotational)
         {
-          refuse_on_moved_nodes(domain, "elasticBeamColumn with a Corotational geomTransf", tag,
-                                nodes);
           return make_elastic_corotational_2d(domain, tag, nodes, A, E, I);
         }
       return std::make_unique<ElasticBeam2d>(domain, tag, nodes, A, E, I,
                                              transformation == Transformation::pdelta);
     }
 
-    void
-    refuse_on_moved_nodes(const Domain &domain, const std::string &element, const int tag,
-                          const std::array<int, 2> &nodes)
+    Vector
+    displacements_when_made(const Domain &domain, const std::array<int, 2> &nodes,
+                            const unsigned int n_node_dofs)
     {
-      for (const int n : nodes)
-        for (const double u : domain.node(n).disp)
-          if (u != 0.0)
-            throw ScriptError(element + " " + std::to_string(tag) + ": node " +
-                              std::to_string(n) +
-                              " has moved; poundfe cannot yet measure this element from the "
-                              "nodes' displacements when it is made, as OpenSees does");
+      Vector made = Vector::Zero(2 * n_node_dofs);
+      for (unsigned int end = 0; end < 2; ++end)
+        {
+          const std::vector<double> &disp = domain.node(nodes[end]).disp;
+          for (unsigned int k = 0; k < std::min<std::size_t>(n_node_dofs, disp.size()); ++k)
+            made[end * n_node_dofs + k] = disp[k];
+        }
+      return made;
     }
 
     std::unique_ptr<Element>

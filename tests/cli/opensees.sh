@@ -508,12 +508,12 @@ TCL
 grep -qxF "analyze -3 time 0.41" "$work/variable-clip/out" \
   && grep -qF "the step of 0.01 to time 0.42 failed" "$work/variable-clip/out" \
   || { cat "$work/variable-clip/out"; fail "variable-clip: the failed first step is not tried at dtMax"; }
-# a beam-column on nodes that have moved, where poundfe does not yet measure
-# it from their displacements then, is refused by name
-for kind in "forceBeamColumn 2 2 3 3 1 1" "dispBeamColumn 2 2 3 3 1 1" \
-  "elasticBeamColumn 2 2 3 0.1 2e8 1e-3 2"; do
-  mkdir -p "$work/moved"
-  cat > "$work/moved/s.tcl" <<TCL
+# a member made on nodes that have moved is measured from them (the corpus's
+# moved_members); one that joins two nodes moved onto each other has zero
+# length, refused at its line (OpenSees 3.8: "0 length"), as a Corotational
+# transformation in 3D
+moved_script() { # ELEMENT-LINE (ndm 2, node 2 swayed, node 3 where node 2 now is)
+  cat <<TCL
 model basic -ndm 2 -ndf 3
 node 1 0 0
 node 2 0 3
@@ -522,17 +522,34 @@ geomTransf Linear 1
 geomTransf Corotational 2
 element elasticBeamColumn 1 1 2 0.1 2e8 1e-3 1
 section Elastic 1 2e8 0.1 1e-3
+beamIntegration Lobatto 1 1 3
 pattern Plain 1 Linear { load 2 1.0 0 0 }
+test NormDispIncr 1e-10 10
+algorithm Newton
 integrator LoadControl 1.0
 analysis Static
 analyze 1
-node 3 3 3
-element $kind
+node 3 [expr {0 + [nodeDisp 2 1]}] [expr {3 + [nodeDisp 2 2]}]
+node 4 3 3
+element $1
 TCL
+}
+for kind in "forceBeamColumn 2 2 3 1 1" "dispBeamColumn 2 3 2 2 1" \
+  "elasticBeamColumn 2 2 3 0.1 2e8 1e-3 1" "elasticBeamColumn 2 3 2 0.1 2e8 1e-3 2"; do
+  mkdir -p "$work/moved"
+  moved_script "$kind" > "$work/moved/s.tcl"
   "$poundfe" opensees "$work/moved/s.tcl" > "$work/moved/out" 2> "$work/moved/err"
-  [ $? = 1 ] && grep -qE "^poundfe: error: $work/moved/s.tcl:14: .* 2: node 2 has moved; poundfe cannot yet measure this element" \
-    "$work/moved/err" || { cat "$work/moved/err"; fail "moved: $kind is not refused"; }
+  [ $? = 1 ] && [ "$(wc -l < "$work/moved/err")" = 1 ] \
+    && grep -qxF "poundfe: error: $work/moved/s.tcl:18: element 2 has zero length" "$work/moved/err" \
+    || { cat "$work/moved/err"; fail "moved: $kind of zero length is not refused"; }
 done
+for kind in "forceBeamColumn 2 2 4 1 1" "elasticBeamColumn 2 2 4 0.1 2e8 1e-3 1"; do
+  moved_script "$kind" > "$work/moved/s.tcl"
+  "$poundfe" opensees "$work/moved/s.tcl" > "$work/moved/out" 2>&1 \
+    || { cat "$work/moved/out"; fail "moved: $kind on a moved node"; }
+done
+printf 'model basic -ndm 3 -ndf 6\nnode 3 0 0 0\nnode 4 0 0 3\ngeomTransf Corotational 1 1 0 0\nelement elasticBeamColumn 1 3 4 0.1 2e8 8e7 1e-3 1e-3 1e-3 1\n' \
+  | bad corot-3d "8: geomTransf Corotational in 3D: poundfe does not support it" || exit 1
 printf 'test NormDispIncr 1e-8 10\nalgorithm Newton\nintegrator HHT 0.8\nanalysis Transient\nreset\n' \
   | bad reset-hht "9: reset with integrator HHT: poundfe does not support it" || exit 1
 # an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused

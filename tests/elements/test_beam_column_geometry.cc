@@ -198,6 +198,40 @@ BOOST_AUTO_TEST_CASE(a_corotational_rigid_body_rotation_strains_nothing)
     }
 }
 
+// A member made on nodes that have moved (OpenSees's nodeIInitialDisp,
+// nodeJInitialDisp): its chord joins the displaced nodes, and the nodes'
+// displacements then, rotations included, are its zero. A rigid-body
+// rotation from there strains nothing (closed form: v = 0), which the
+// member measured from the undisplaced nodes would not.
+BOOST_AUTO_TEST_CASE(a_member_made_on_moved_nodes_is_measured_from_them)
+{
+  const ElasticSection        section(geo_EA, geo_EI);
+  const Eigen::Vector2d       xi(1, 2), xj(3, 2.5);
+  Eigen::Matrix<double, 6, 1> made;
+  made << 0.3, -0.1, 0.05, 0.2, 0.6, -0.04; // stretches, turns and bends the member
+  const Eigen::Vector2d chord = xj + made.segment<2>(3) - xi - made.segment<2>(0);
+  for (const auto kind : {Transformation::linear, Transformation::corotational})
+    {
+      ForceBeamColumn<2> element(CrdTransformation<2>(kind, xi, xj, Eigen::Vector2d::Zero(),
+                                                      Eigen::Vector2d::Zero(),
+                                                      Eigen::Vector3d::UnitZ(), made),
+                                 section, 4);
+      BOOST_TEST(std::abs(element.length() - chord.norm()) <= 1e-15 * chord.norm());
+      BOOST_REQUIRE(element.set_trial(made));
+      BOOST_TEST(element.basic_deformation().norm() == 0.0);
+      BOOST_TEST(element.resisting_force().norm() <= 1e-12 * geo_EA);
+      // a rigid rotation by `angle` about node I's displaced position
+      const double                angle = kind == Transformation::linear ? 1e-7 : 1.2;
+      const Eigen::Vector2d       turned = Eigen::Rotation2Dd(angle) * chord - chord;
+      Eigen::Matrix<double, 6, 1> u      = made;
+      u[2] += angle, u[5] += angle, u[3] += turned[0], u[4] += turned[1];
+      BOOST_REQUIRE(element.set_trial(u));
+      // linear: the chord's rotation to first order (angle^2 L of stretch)
+      const double allowed = kind == Transformation::linear ? 1e-13 : 1e-14;
+      BOOST_TEST(element.basic_deformation().norm() <= allowed);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(a_corotational_cantilever_rolls_into_a_circle)
 {
   // Euler's elastica under a tip moment: constant curvature M/EI, the tip

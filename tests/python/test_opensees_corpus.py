@@ -1,13 +1,14 @@
-"""poundfe.opensees against `poundfe opensees`: three scripts of the Tcl
-corpus (tests/opensees/) rewritten in OpenSeesPy's form
-(tests/opensees/python/, only the import line differs from an OpenSeesPy
-script) write the Tcl runs' recorder files byte for byte: a linear portal
-frame (gravity, eigen, Rayleigh damping, a record), a pounding pair through
-a zero-length gap (ElasticPPGap, ImpactMaterial), a fibre frame with gravity
-then a record (Fiber sections and a Plain pattern filled by the commands
-after them), a shallow arch followed past its limit point by ArcLength
-under constraints Plain and Penalty. The same command procedures run both: a difference would be
-in how the values reach them."""
+"""poundfe.opensees against `poundfe opensees`: scripts of the Tcl corpus
+(tests/opensees/) rewritten in OpenSeesPy's form (tests/opensees/python/,
+only the import line differs from an OpenSeesPy script) write the Tcl runs'
+recorder files byte for byte: a linear portal frame (gravity, eigen,
+Rayleigh damping, a record), a pounding pair through a zero-length gap
+(ElasticPPGap, ImpactMaterial), a fibre frame with gravity then a record
+(Fiber sections and a Plain pattern filled by the commands after them), a
+shallow arch followed past its limit point by ArcLength under constraints
+Plain and Penalty, an elastic portal whose nodes and members made after
+`rayleigh` are undamped (2D and 3D). The same command procedures run both:
+a difference would be in how the values reach them."""
 
 import os
 import subprocess
@@ -23,6 +24,7 @@ import arc_length_arch  # noqa: E402
 import fibre_frame_record  # noqa: E402
 import portal_frame  # noqa: E402
 import pounding_sticks  # noqa: E402
+import rayleigh_later  # noqa: E402
 
 
 class CorpusTest(TestCase):
@@ -68,6 +70,14 @@ class CorpusTest(TestCase):
             ["frame_disp.out", "frame_base.out", "frame_section.out", "frame_beam.out"])
         self.assertEqual(status, 0)
         self.assertIn(f"frame: status 0 roof {roof!r} ", stdout)
+
+    def test_objects_made_after_rayleigh(self):
+        for variant in ("2d", "3d"):
+            with self.subTest(variant=variant):
+                self.run_both("rayleigh_later.tcl", rayleigh_later.run,
+                              ["disp.out", "tip.out", "force.out"], variant)
+                for name in os.listdir(self.tmp):
+                    subprocess.run(["rm", "-rf", os.path.join(self.tmp, name)], check=True)
 
     def test_refused_command_keeps_settings(self):
         """A caught refusal leaves the settings before it: Transformation

@@ -143,7 +143,8 @@ namespace poundfe
                std::vector<std::unique_ptr<SectionLaw>> sections);
     virtual ~BeamColumn() = default;
 
-    /// The state at the global end displacements u; false when a section
+    /// The state at the global end displacements u (the nodes' totals:
+    /// the transformation's displacements_when_made are subtracted); false when a section
     /// refuses its deformation or the element's iteration fails (failure()
     /// says which): the trial state must then not be used.
     bool set_trial(const GlobalVector &u);
@@ -154,6 +155,7 @@ namespace poundfe
     const BasicVector  &basic_deformation() const { return transf.basic_deformation(); }
     /// The global tangent at the virgin state, u = 0.
     const GlobalMatrix &initial_tangent() const { return virgin_stiffness; }
+    /// u of the last set_trial, measured from when the member was made.
     const GlobalVector &trial_displacement() const { return trial_u; }
 
     /// A uniform load along the member (local axes, per unit length, at load

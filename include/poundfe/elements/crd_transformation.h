@@ -36,6 +36,11 @@
 //     added, not composed, and a consistent 3D corotational member needs
 //     the nodes' finite rotations (OpenSees's CorotCrdTransf3d keeps them in
 //     quaternions); constructing one is an InputError.
+//   A member made on nodes that have moved (OpenSees's LinearCrdTransf2d/3d,
+//     PDeltaCrdTransf2d/3d, CorotCrdTransf2d::initialize: nodeIInitialDisp,
+//     nodeJInitialDisp): its chord joins the ends displaced by the nodes'
+//     translations u_0 then, X_J + o_J + u_0J - (X_I + o_I + u_0I), and it
+//     is measured from then: update takes u - u_0 (BeamColumn::set_trial).
 //   Rigid end offsets (OpenSees's -jntOffset, global components o_I, o_J
 //     from each node to the member's flexible end) as OpenSees: by the
 //     linearised rigid link u_end = u_node + r x o, a constant matrix T_o:
@@ -88,12 +93,15 @@ namespace poundfe
 
     /// The member from node I to node J; `orientation` (3D only): the
     /// vector in the local x-z plane (elements/frame_element_3d.h);
-    /// offsets from each node to the flexible end. InputError for a member
-    /// of zero length, an orientation parallel to it, or a corotational
-    /// member in space.
+    /// offsets from each node to the flexible end; `u_made`: the nodes'
+    /// displacements when the member is made (OpenSees's initial
+    /// displacements: a member added on nodes that have moved). InputError
+    /// for a member of zero length, an orientation parallel to it, or a
+    /// corotational member in space.
     CrdTransformation(Transformation kind, const Point &node_i, const Point &node_j,
                       const Point &offset_i = Point::Zero(), const Point &offset_j = Point::Zero(),
-                      const Eigen::Vector3d &orientation = Eigen::Vector3d::UnitZ());
+                      const Eigen::Vector3d &orientation = Eigen::Vector3d::UnitZ(),
+                      const GlobalVector &u_made = GlobalVector::Zero());
 
     Transformation kind() const { return type; }
     /// The flexible length between the offset ends, undeformed.
@@ -101,7 +109,11 @@ namespace poundfe
     /// Rows: local x, y(, z) in global components (2D: 2 x 2).
     const Eigen::Matrix<double, dim, dim> &local_axes() const { return axes; }
 
-    /// Evaluate v and B at the global end displacements u.
+    /// The nodes' displacements when the member was made: u of update is
+    /// measured from them.
+    const GlobalVector &displacements_when_made() const { return u_made; }
+
+    /// Evaluate v and B at the global end displacements u (from u_made).
     void update(const GlobalVector &u);
     const BasicVector  &basic_deformation() const { return v; }
     /// B = dv/du at the last update (constant for linear and PDelta).
@@ -140,6 +152,7 @@ namespace poundfe
                     Eigen::Matrix<double, dim - 1, 1> &delta) const;
 
     Transformation                  type;
+    GlobalVector                    u_made; // see displacements_when_made
     Point                           chord0; // J - I between the flexible ends
     double                          length0;
     Eigen::Matrix<double, dim, dim> axes;

@@ -309,10 +309,10 @@ namespace poundfe
       std::vector<EqualDof>                   equal_dofs;
       std::vector<RigidTie>                  rigid_ties;
       RayleighFactors                         rayleigh;
-      /// region -rayleigh: the factors of its elements and the alpha_M of
-      /// its nodes in place of `rayleigh`'s (OpenSees's MeshRegion sets
-      /// them on each object); the `rayleigh` command, which sets every
-      /// object's, clears them.
+      /// Per-object factors in place of `rayleigh`'s: a region's (-rayleigh,
+      /// setElementRayleighDampingFactors) and the zeros of a node or element
+      /// made after the last `rayleigh` (OpenSees sets the factors of the
+      /// objects that exist then); the `rayleigh` command clears them.
       std::map<int, RayleighFactors> element_rayleigh;
       std::map<int, double>          node_alpha_m;
       /// The tags of the script's regions (a tag once only).
@@ -466,13 +466,14 @@ namespace poundfe
     /// OpenSees copies a material into every element that names it).
     std::unique_ptr<UniaxialLaw> make_domain_material(const Domain &domain, int tag);
 
-    /// Refuses `element` (its kind, for the message) made on nodes that
-    /// have moved: OpenSees measures its transformation from the nodes'
-    /// displacements then (nodeIInitialDisp, nodeJInitialDisp), which
-    /// poundfe does for the 2D elasticBeamColumn on a Linear or PDelta
-    /// transformation, a truss and a zeroLength only.
-    void refuse_on_moved_nodes(const Domain &domain, const std::string &element, int tag,
-                               const std::array<int, 2> &nodes);
+    /// The committed displacements of a member's two nodes when it is made,
+    /// `n_node_dofs` per node (zero past a node's own DOFs): OpenSees's
+    /// coordinate transformations (LinearCrdTransf2d/3d, PDeltaCrdTransf2d/
+    /// 3d, CorotCrdTransf2d::initialize: nodeIInitialDisp, nodeJInitialDisp)
+    /// take a member added on nodes that have moved along and as long as it
+    /// is then and measure its displacements from them.
+    Vector displacements_when_made(const Domain &domain, const std::array<int, 2> &nodes,
+                                   unsigned int n_node_dofs);
 
     /// elasticBeamColumn in 2D with a Linear or PDelta transformation,
     /// measured from the nodes' displacements when it is made.
@@ -487,11 +488,13 @@ namespace poundfe
     {
       double A = 0, E = 0, G = 0, J = 0, Iy = 0, Iz = 0;
     };
-    /// A 3D member's local axes as the rows of R (x = (X_j - X_i)/L,
-    /// y = vecxz × x / |vecxz × x|, z = x × y) and its length L;
+    /// A 3D member's local axes as the rows of R (x = (X_j - X_i + shift)/L,
+    /// y = vecxz × x / |vecxz × x|, z = x × y) and its length L; shift is
+    /// u_j - u_i of a member made on nodes that have moved (zero otherwise);
     /// ScriptError when L is 0 or vecxz is along x.
     Eigen::Matrix3d member_axes(const Domain &domain, int tag, const std::array<int, 2> &nodes,
-                                const std::array<double, 3> &vecxz, double &L);
+                                const std::array<double, 3> &vecxz, double &L,
+                                const Eigen::Vector3d &shift = Eigen::Vector3d::Zero());
     /// A beam-column's consistent mass (-cMass; OpenSees 3.8's
     /// ElasticBeam2d/3d and DispBeamColumn2d/3d::getMass): the cubic
     /// Hermitian mass rho L/420 [...] of each bending plane, rho L/6 [2 1;
