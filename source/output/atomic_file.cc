@@ -8,15 +8,47 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace poundfe
 {
+  namespace
+  {
+    /// Whether `path` names something other than a regular file that
+    /// exists (a device such as /dev/null or /dev/stdout, a FIFO): written
+    /// in place, never replaced by a renamed temporary nor removed (an
+    /// empty temporary_path says so), and not listed as an output that a
+    /// later run or a failed one removes.
+    bool
+    is_stream(const std::string &path)
+    {
+      struct stat status;
+      return ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode) &&
+             !S_ISDIR(status.st_mode);
+    }
+
+    /// Removes a file's temporary, if it has one (a device's has none).
+    void
+    remove_temporary(const std::string &temporary_path)
+    {
+      if (!temporary_path.empty())
+        std::remove(temporary_path.c_str());
+    }
+  } // namespace
+
   AtomicFile::AtomicFile(std::string path)
     : final_path(std::move(path))
-    , temporary_path(final_path + ".tmp")
+    , temporary_path(is_stream(final_path) ? std::string() : final_path + ".tmp")
   {
     throw_if_interrupted(); // a safe point: nothing of this file exists yet
+    if (temporary_path.empty())
+      {
+        descriptor = ::open(final_path.c_str(), O_WRONLY | O_CLOEXEC);
+        if (descriptor < 0)
+          throw OutputError("write", final_path, errno);
+        return;
+      }
     register_output(final_path); // listed before it exists (output_directory.h)
     descriptor = ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (descriptor < 0)
@@ -28,7 +60,7 @@ namespace poundfe
     if (descriptor >= 0)
       {
         ::close(descriptor);
-        std::remove(temporary_path.c_str());
+        remove_temporary(temporary_path);
       }
   }
 
@@ -38,7 +70,7 @@ namespace poundfe
     if (descriptor >= 0)
       {
         ::close(descriptor);
-        std::remove(temporary_path.c_str());
+        remove_temporary(temporary_path);
         descriptor = -1;
       }
     failed_with = error_number;
@@ -91,10 +123,11 @@ namespace poundfe
     throw_if_interrupted(); // before the rename: an interrupted file never appears
     const int closed = ::close(descriptor);
     descriptor       = -1;
-    if (closed != 0 || std::rename(temporary_path.c_str(), final_path.c_str()) != 0)
+    if (closed != 0 ||
+        (!temporary_path.empty() && std::rename(temporary_path.c_str(), final_path.c_str()) != 0))
       {
         const int error_number = errno; // before remove() may change it
-        std::remove(temporary_path.c_str());
+        remove_temporary(temporary_path);
         failed_with = error_number;
         throw OutputError("write", final_path, error_number);
       }
