@@ -11,6 +11,7 @@
 
 #include <poundfe/opensees/opensees_analysis.h>
 #include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/opensees/opensees_energy.h>
 #include <poundfe/opensees/opensees_recorder.h>
 
 #include <tcl.h>
@@ -69,6 +70,11 @@ namespace poundfe
       std::map<std::string, bool> commands;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
+      /// The -mat tags of each zeroLength and twoNodeLink (their gap rows).
+      std::map<int, std::vector<int>> link_materials;
+      /// poundfe::energy and poundfe::impacts: the transient analyses' balance and contacts.
+      opensees::EnergyBalance energy;
+      opensees::ScriptImpacts impacts;
       int            current_pattern = -1; // the Plain pattern whose body runs
       /// An error in a pattern's body where the file says it is (Tcl's
       /// errorInfo names the `pattern` line): its message, file and line.
@@ -156,6 +162,11 @@ namespace poundfe
     void define_region_commands(Tcl_Interp *interp, Session &session);
     /// reset (opensees_tcl_domain.cc).
     void define_domain_commands(Tcl_Interp *interp, Session &session);
+    void define_poundfe_commands(Tcl_Interp *interp, Session &session);
+    /// poundfe::energy's and poundfe::impacts's start of a transient
+    /// `analyze` and their committed step.
+    void begin_observing(Session &session);
+    void observe_step(Session &session);
     /// remove element | ele | node | sp | SPconstraint | timeSeries (after
     /// the word `what`); false for any other word.
     bool remove_model_object(Session &session, Words &words, const std::string &what);

@@ -1,0 +1,101 @@
+// poundfe's additions to an OpenSees script's transient analyses, read
+// from the domain after each committed step: the energy balance and the
+// impact log of its gap elements (the Tcl and Python commands
+// poundfe::energy and poundfe::impacts).
+//
+// Energy balance, in the ground's frame (Uang and Bertero 1990, "Evaluation
+// of seismic energy in structures", Earthq. Eng. Struct. Dyn. 19:77-90):
+//   E_input = int (P - M r a_g) . du        E_kinetic = 1/2 v^T M v
+//   E_elements = int f_e . du_e (strain, hysteresis, material damping)
+//   E_damping  = int (alpha_M M v + (beta_K K_t + beta_K0 K_0 + beta_Kc K_c)
+//                     v_e + modal damping W diag(c) W^T v) . du
+//   E_contact  = int f_e . du_e of the gap elements
+//   residual   = E_input - (E_kinetic - E_kinetic,0) - E_elements - E_damping - E_contact,
+// each integral by the trapezoidal rule over the committed steps. Under
+// Newmark's average acceleration the trapezoidal rule of the inertia's work
+// is exactly the change of E_kinetic, so the residual of a linear model
+// is the round-off of the equilibrium at each step.
+#ifndef poundfe_opensees_opensees_energy_h
+#define poundfe_opensees_opensees_energy_h
+
+#include <poundfe/integration/impact_log.h>
+#include <poundfe/opensees/opensees_domain.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace poundfe
+{
+  namespace opensees
+  {
+    struct EnergyTerms
+    {
+      double input = 0, kinetic = 0, elements = 0, damping = 0, contact = 0;
+      /// E_input - E_kinetic - E_elements - E_damping - E_contact.
+      double residual = 0;
+      /// |residual| over the largest |term| (0 while every term is 0).
+      double relative_residual = 0;
+    };
+
+    /// A gap row of an element: its law's index among the element's
+    /// uniaxial rows and the direction (+1 or -1) in which its deformation
+    /// closes the gap past `gap`.
+    struct GapRow
+    {
+      int          element = 0;
+      unsigned int row = 0;
+      double       gap = 0, direction = -1;
+    };
+
+    /// The energy balance of the transient analyses of a domain.
+    class EnergyBalance
+    {
+    public:
+      /// The state at the start of a transient `analyze` (the rule's first
+      /// end); `contact` names the gap elements.
+      void begin(const Domain &domain, const std::vector<int> &contact);
+      /// A committed step of that analysis.
+      void step(const Domain &domain);
+      EnergyTerms terms() const;
+
+    private:
+      struct State
+      {
+        Vector              u, p, c;  // by node and DOF: displacement, input and damping forces
+        std::vector<Vector> u_e, f_e; // by element
+      };
+      State  state(const Domain &domain) const;
+      double kinetic(const Domain &domain) const;
+
+      State            last;
+      bool             started = false;
+      std::vector<int> contact_elements;
+      double           input = 0, elements = 0, damping = 0, contact = 0, kinetic_0 = 0,
+             kinetic_now = 0;
+    };
+
+    /// poundfe's impact log (integration/impact_log.h) over the gap rows.
+    class ScriptImpacts
+    {
+    public:
+      void begin(const Domain &domain, const std::vector<GapRow> &rows);
+      void step(const Domain &domain);
+      const std::vector<GapRow> &rows() const { return gap_rows; }
+      const std::vector<Impact> &impacts() const { return log.impacts(); }
+      /// The log as CSV: element, start, end (-1: in contact at the end),
+      /// peak force, impulse, max penetration and its time.
+      std::string csv() const;
+
+    private:
+      std::vector<ImpactLog::GapState> states(const Domain &domain) const;
+
+      std::vector<GapRow>              gap_rows;
+      std::vector<ImpactLog::GapState> last;
+      double                           last_time = 0;
+      ImpactLog                        log;
+    };
+  } // namespace opensees
+} // namespace poundfe
+
+#endif

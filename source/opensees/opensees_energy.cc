@@ -1,0 +1,287 @@
+// The energy balance and impact log of an OpenSees script's transient
+// analyses (opensees_energy.h gives the equations). The forces are those
+// the analysis balances (opensees_analysis.cc): the nodes' lumped masses
+// with the elements' (Node::element_mass, Domain::LumpedMass's second
+// ground load of a 2D elasticBeamColumn), the consistent masses, alpha_M M
+// by Domain::mass_damping, the stiffness-proportional damping of the
+// Rayleigh-damped elements and OpenSees 3.8's modal damping C = W diag(c)
+// W^T, W's columns M phi_i, c_i = 2 zeta_i omega_i
+// (IncrementalIntegrator::addModalDampingForce).
+#include <poundfe/base/lean_assert.h>
+#include <poundfe/opensees/opensees_energy.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace poundfe
+{
+  namespace opensees
+  {
+    namespace
+    {
+      /// The offset of each node's first DOF in the vectors by node and DOF.
+      std::map<int, unsigned int>
+      offsets(const Domain &d, unsigned int &n)
+      {
+        std::map<int, unsigned int> offset;
+        n = 0;
+        for (const auto &[tag, node] : d.nodes)
+          {
+            offset[tag] = n;
+            n += node.disp.size();
+          }
+        return offset;
+      }
+
+      Vector
+      gathered(const Domain &d, const std::vector<double> Node::*response)
+      {
+        unsigned int n = 0;
+        offsets(d, n);
+        Vector       x(n);
+        unsigned int i = 0;
+        for (const auto &[tag, node] : d.nodes)
+          for (const double value : node.*response)
+            x[i++] = value;
+        return x;
+      }
+
+      /// M x by node and DOF: the lumped masses and the consistent ones.
+      Vector
+      mass_times(const Domain &d, const Vector &x)
+      {
+        unsigned int n      = 0;
+        const auto   offset = offsets(d, n);
+        Vector       y      = Vector::Zero(n);
+        for (const auto &[tag, node] : d.nodes)
+          for (unsigned int k = 0; k < node.disp.size(); ++k)
+            {
+              const unsigned int i = offset.at(tag) + k;
+              y[i] = (node.mass[k] + (k < node.element_mass.size() ? node.element_mass[k] : 0)) * x[i];
+            }
+        for (const Domain::ConsistentMass &m : d.consistent_masses)
+          {
+            std::vector<unsigned int> rows;
+            for (const int tag : m.nodes)
+              for (unsigned int k = 0; k < d.ndf; ++k)
+                rows.push_back(offset.at(tag) + k);
+            for (unsigned int i = 0; i < rows.size(); ++i)
+              for (unsigned int j = 0; j < rows.size(); ++j)
+                y[rows[i]] += m.matrix(i, j) * x[rows[j]];
+          }
+        return y;
+      }
+
+      /// The ground-motion load -M r a_g by node and DOF, with the second
+      /// load of the masses that take it twice.
+      Vector
+      ground_load(const Domain &d)
+      {
+        const std::vector<double> a_g = d.ground_acceleration(d.time);
+        unsigned int              n   = 0;
+        const auto                offset = offsets(d, n);
+        Vector                    r(n);
+        for (const auto &[tag, node] : d.nodes)
+          for (unsigned int k = 0; k < node.disp.size(); ++k)
+            r[offset.at(tag) + k] = k < a_g.size() ? a_g[k] : 0.0;
+        Vector load = -mass_times(d, r);
+        for (const Domain::LumpedMass &m : d.lumped_masses)
+          if (m.ground_load_twice)
+            for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
+              load[offset.at(m.node) + k] -= m.mass * r[offset.at(m.node) + k];
+        return load;
+      }
+
+      /// The modal damping force W diag(c) W^T v (0 without modalDamping).
+      Vector
+      modal_damping_force(const Domain &d, const Vector &v)
+      {
+        unsigned int n      = 0;
+        const auto   offset = offsets(d, n);
+        Vector       f      = Vector::Zero(n);
+        const auto  &modes  = d.modes;
+        for (std::size_t i = 0; i < d.modal_damping.size() && i < modes.shapes.size(); ++i)
+          {
+            Vector phi = Vector::Zero(n);
+            for (const auto &[tag, shape] : modes.shapes[i])
+              for (unsigned int k = 0; k < shape.size() && d.nodes.count(tag); ++k)
+                phi[offset.at(tag) + k] = shape[k];
+            const Vector w = mass_times(d, phi);
+            const double c = 2 * d.modal_damping[i] * std::sqrt(std::abs(modes.eigenvalues[i]));
+            f += c * w.dot(v) * w;
+          }
+        return f;
+      }
+    } // namespace
+
+    EnergyBalance::State
+    EnergyBalance::state(const Domain &d) const
+    {
+      State        s;
+      unsigned int n      = 0;
+      const auto   offset = offsets(d, n);
+      s.u               = gathered(d, &Node::disp);
+      const Vector v    = gathered(d, &Node::vel);
+      s.p               = ground_load(d);
+      for (const auto &[tag, load] : d.nodal_loads(d.time))
+        for (unsigned int k = 0; k < load.size(); ++k)
+          s.p[offset.at(tag) + k] += load[k];
+      s.c = modal_damping_force(d, v);
+      for (const auto &[tag, c] : d.mass_damping())
+        for (unsigned int k = 0; k < c.size(); ++k)
+          s.c[offset.at(tag) + k] += c[k] * v[offset.at(tag) + k];
+      for (const Domain::ConsistentMass &m : d.consistent_masses)
+        if (d.elements.at(m.element)->rayleigh_damped())
+          {
+            const double alpha = d.rayleigh_of(m.element).alpha_m;
+            const Vector v_e   = d.element_values(*d.elements.at(m.element), &Node::vel);
+            const Vector f     = alpha * (m.matrix * v_e);
+            unsigned int i     = 0;
+            for (const int tag : m.nodes)
+              for (unsigned int k = 0; k < d.ndf; ++k)
+                s.c[offset.at(tag) + k] += f[i++];
+          }
+      for (const auto &[tag, element] : d.elements)
+        {
+          s.u_e.push_back(d.element_values(*element, &Node::disp));
+          s.f_e.push_back(element->force());
+          if (!element->rayleigh_damped())
+            continue;
+          const RayleighFactors &r   = d.rayleigh_of(tag);
+          const Vector           v_e = d.element_values(*element, &Node::vel);
+          Vector                 f   = r.beta_k * (element->tangent() * v_e) +
+                         r.beta_k_init * (element->initial_tangent() * v_e);
+          if (r.beta_k_committed != 0 && element->committed_tangent.size() > 0)
+            f += r.beta_k_committed * (element->committed_tangent * v_e);
+          unsigned int i = 0;
+          for (const int node_tag : element->node_tags)
+            for (unsigned int k = 0; k < d.node(node_tag).disp.size(); ++k)
+              s.c[offset.at(node_tag) + k] += f[i++];
+        }
+      return s;
+    }
+
+    double
+    EnergyBalance::kinetic(const Domain &d) const
+    {
+      const Vector v = gathered(d, &Node::vel);
+      return 0.5 * v.dot(mass_times(d, v));
+    }
+
+    void
+    EnergyBalance::begin(const Domain &d, const std::vector<int> &contact)
+    {
+      contact_elements = contact;
+      last             = state(d);
+      kinetic_now      = kinetic(d);
+      if (!started)
+        kinetic_0 = kinetic_now;
+      started = true;
+    }
+
+    void
+    EnergyBalance::step(const Domain &d)
+    {
+      Assert(started, dealii::ExcMessage("begin() comes before the steps"));
+      State now = state(d);
+      if (now.u.size() != last.u.size() || now.f_e.size() != last.f_e.size())
+        {
+          last = std::move(now); // the domain changed: the rule starts again
+          return;
+        }
+      const Vector du = now.u - last.u;
+      input += 0.5 * (last.p + now.p).dot(du);
+      damping += 0.5 * (last.c + now.c).dot(du);
+      unsigned int e = 0;
+      for (const auto &[tag, element] : d.elements)
+        {
+          const double work = 0.5 * (last.f_e[e] + now.f_e[e]).dot(now.u_e[e] - last.u_e[e]);
+          const bool   gap  = std::find(contact_elements.begin(), contact_elements.end(), tag) !=
+                           contact_elements.end();
+          (gap ? contact : elements) += work;
+          ++e;
+        }
+      kinetic_now = kinetic(d);
+      last        = std::move(now);
+    }
+
+    EnergyTerms
+    EnergyBalance::terms() const
+    {
+      EnergyTerms t;
+      t.input    = input;
+      t.kinetic  = kinetic_now - kinetic_0;
+      t.elements = elements;
+      t.damping  = damping;
+      t.contact  = contact;
+      t.residual = t.input - t.kinetic - t.elements - t.damping - t.contact;
+      const double largest =
+        std::max({std::abs(t.input), std::abs(t.kinetic), std::abs(t.elements),
+                  std::abs(t.damping), std::abs(t.contact)});
+      t.relative_residual = largest > 0 ? std::abs(t.residual) / largest : 0.0;
+      return t;
+    }
+
+    std::vector<ImpactLog::GapState>
+    ScriptImpacts::states(const Domain &d) const
+    {
+      std::vector<ImpactLog::GapState> s(gap_rows.size());
+      for (std::size_t h = 0; h < gap_rows.size(); ++h)
+        {
+          const GapRow  &g    = gap_rows[h];
+          const auto     e    = d.elements.find(g.element);
+          UniaxialRows  *rows = e == d.elements.end() ? nullptr : e->second->uniaxial_rows();
+          if (!rows || g.row >= rows->laws.size() || g.row >= rows->strain.size())
+            continue;
+          // the force is the law's, whatever its sign convention
+          s[h].penetration = g.direction * (rows->strain[g.row] - g.gap);
+          s[h].rate        = g.direction * rows->rate[g.row];
+          s[h].force       = std::abs(rows->laws[g.row]->force());
+        }
+      return s;
+    }
+
+    void
+    ScriptImpacts::begin(const Domain &d, const std::vector<GapRow> &rows)
+    {
+      const bool same = rows.size() == gap_rows.size() &&
+                        std::equal(rows.begin(), rows.end(), gap_rows.begin(),
+                                   [](const GapRow &a, const GapRow &b) {
+                                     return a.element == b.element && a.row == b.row;
+                                   });
+      if (!same)
+        {
+          gap_rows = rows;
+          log.reset(rows.size());
+        }
+      last      = states(d);
+      last_time = d.time;
+    }
+
+    void
+    ScriptImpacts::step(const Domain &d)
+    {
+      const auto now = states(d);
+      for (std::size_t h = 0; h < gap_rows.size(); ++h)
+        log.record(h, last_time, d.time, last[h], now[h]);
+      last      = now;
+      last_time = d.time;
+    }
+
+    std::string
+    ScriptImpacts::csv() const
+    {
+      std::ostringstream out;
+      out << std::setprecision(17);
+      out << "element,start_time,end_time,peak_force,impulse,max_penetration,"
+             "max_penetration_time\n";
+      for (const Impact &i : log.impacts())
+        out << gap_rows[i.element].element << ',' << i.start_time << ',' << i.end_time << ','
+            << i.peak_force << ',' << i.impulse << ',' << i.max_penetration << ','
+            << i.max_penetration_time << '\n';
+      return out.str();
+    }
+  } // namespace opensees
+} // namespace poundfe
