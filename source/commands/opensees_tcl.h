@@ -75,6 +75,8 @@ namespace poundfe
       /// poundfe::energy and poundfe::impacts: the transient analyses' balance and contacts.
       opensees::EnergyBalance energy;
       opensees::ScriptImpacts impacts;
+      /// poundfe::stepCutting's most halvings of a failed step (0: off).
+      unsigned int max_cuts = 0;
       int            current_pattern = -1; // the Plain pattern whose body runs
       /// An error in a pattern's body where the file says it is (Tcl's
       /// errorInfo names the `pattern` line): its message, file and line.

@@ -452,6 +452,7 @@ namespace poundfe
           throw ScriptError("the number of steps must be >= 0");
         if (s.analysis->options().transient)
           s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper), the first step's
+        s.analysis->max_cuts = s.max_cuts;
         const bool transient = s.analysis->options().transient;
         if (transient)
           begin_observing(s);

@@ -63,6 +63,7 @@ namespace poundfe
         s.link_materials.clear();
         s.energy  = opensees::EnergyBalance();
         s.impacts = opensees::ScriptImpacts();
+        s.max_cuts = 0;
       }
 
       void

@@ -2,6 +2,8 @@
 // (poundfe::report is opensees_command.cc's):
 //   poundfe::energy                 the energy balance of the transient analyses
 //   poundfe::impacts ?-file F.csv?  the contact episodes of the gap elements
+//   poundfe::stepCutting on N | off a failed step of `analyze n dt` tried
+//                                   again in halved sub-steps, N halvings at most
 // (opensees/opensees_energy.h gives the equations). A gap element is a
 // zeroLength or twoNodeLink row whose material is a gap law (ElasticPPGap,
 // ImpactMaterial, Hertzdamp, JankowskiImpact, ViscoelasticGap, or a MinMax
@@ -128,6 +130,26 @@ namespace poundfe
         Tcl_ConvertToType(nullptr, list, Tcl_GetObjType("list"));
         Tcl_SetObjResult(w.interp, list);
       }
+
+      void
+      step_cutting(Session &s, Words &w)
+      {
+        const std::string state = w.word("on or off");
+        if (state == "off")
+          s.max_cuts = 0;
+        else if (state == "on")
+          {
+            const int cuts = w.integer("the most halvings");
+            if (cuts < 1 || cuts > 30)
+              throw opensees::ScriptError("the most halvings must be 1 to 30, got " +
+                                          std::to_string(cuts));
+            s.max_cuts = cuts;
+          }
+        else
+          throw opensees::ScriptError("'" + state + "' where on or off is due");
+        if (!w.done())
+          throw opensees::ScriptError("unknown word '" + w.peek() + "' after " + state);
+      }
     } // namespace
 
     void
@@ -154,6 +176,7 @@ namespace poundfe
     {
       define(interp, session, "poundfe::energy", energy);
       define(interp, session, "poundfe::impacts", impacts);
+      define(interp, session, "poundfe::stepCutting", step_cutting);
     }
   } // namespace opensees_tcl
 } // namespace poundfe

@@ -7,11 +7,16 @@
 #     ViscoelasticGap, Hertzdamp and a MinMax of ImpactMaterial;
 #  2. poundfe::impacts against the gap's force history (episodes, peak
 #     force, impulse) and its CSV file, one row an episode;
-#  3. an unknown poundfe:: command or option: one line with the file and
+#  3. poundfe::stepCutting (tests/opensees/step_cutting.tcl): a pounding
+#     pair whose step fails at 1.8 s under Newton (as under OpenSees 3.8)
+#     completes with it on; before the failure its rows are the failed run's
+#     byte for byte, after it its distance from a run at dt/16 at most twice
+#     that before (the step's own discretisation error; measured 1.3 times);
+#  4. an unknown poundfe:: command or option: one line with the file and
 #     line, exit 1.
-#   opensees_poundfe.sh POUNDFE CORPUS_DIR
+#   opensees_poundfe.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
-poundfe=$1 corpus=$2
+poundfe=$1 corpus=$2 python=$3
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -29,6 +34,37 @@ head -1 "$csv" | grep -qxF "element,start_time,end_time,peak_force,impulse,max_p
   || fail "impacts.csv's header"
 [ "$(tail -n +2 "$csv" | wc -l)" = "$n" ] || fail "impacts.csv: not $n rows"
 [ -z "$(tail -n +2 "$csv" | cut -d, -f1 | grep -vx 3)" ] || fail "impacts.csv: an element other than 3"
+# step cutting: off fails as OpenSees does, on completes and agrees
+mkdir -p "$work/cut"
+for mode in off on fine; do
+  "$poundfe" opensees "$corpus/step_cutting.tcl" "$work/cut" $mode > "$work/cut/$mode.log" 2>&1
+done
+grep -qxF "step_cutting off: status -3 time 1.798000" "$work/cut/off.log" \
+  || { cat "$work/cut/off.log"; fail "step cutting off: not the failure at 1.8 s"; }
+for mode in on fine; do
+  grep -qxF "step_cutting $mode: status 0 time 4.000000" "$work/cut/$mode.log" \
+    || { cat "$work/cut/$mode.log"; fail "step cutting $mode: did not complete"; }
+done
+n_off=$(wc -l < "$work/cut/cut_off.out")
+[ "$n_off" -gt 100 ] && head -n "$n_off" "$work/cut/cut_on.out" | cmp -s - "$work/cut/cut_off.out" \
+  || fail "step cutting on: rows before the failure differ from the run without it"
+"$python" - "$work/cut" <<'PY' || fail "step cutting on: off the fine run"
+import sys
+def rows(name):
+    with open(f"{sys.argv[1]}/cut_{name}.out") as f:
+        return {round(float(w[0]), 9): [float(x) for x in w[1:]] for w in map(str.split, f) if w}
+on, fine = rows("on"), rows("fine")
+before = after = 0.0
+for t, u in on.items():
+    if t in fine and abs(t / 0.002 - round(t / 0.002)) < 1e-6:
+        e = max(abs(a - b) for a, b in zip(u, fine[t]))
+        if t < 1.7985:
+            before = max(before, e)
+        else:
+            after = max(after, e)
+print(f"step cutting: distance from dt/16 before the failure {before:.3e}, after {after:.3e}")
+sys.exit(0 if 0 < before and after <= 2 * before else 1)
+PY
 # refusals, by name with the file and line
 bad() {
   local dir="$work/bad-$1"
@@ -44,6 +80,10 @@ echo "poundfe::energy -file e.out" | bad energy-option \
   "2: poundfe::energy: unknown option '-file' (poundfe::energy takes none)" || exit 1
 echo "poundfe::impacts -csv i.csv" | bad impacts-option \
   "2: poundfe::impacts: unknown option '-csv' (poundfe::impacts takes -file F)" || exit 1
+echo "poundfe::stepCutting on 0" | bad cuts-zero \
+  "2: poundfe::stepCutting: the most halvings must be 1 to 30, got 0" || exit 1
+echo "poundfe::stepCutting sometimes" | bad cuts-word \
+  "2: poundfe::stepCutting: 'sometimes' where on or off is due" || exit 1
 echo "poundfe::frobnicate" | bad unknown-command \
   '2: invalid command name "poundfe::frobnicate"' || exit 1
 echo "ok"
