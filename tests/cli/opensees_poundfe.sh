@@ -3,7 +3,8 @@
 #  1. poundfe::energy against the script's own trapezoidal sums, and the
 #     balance's residual within 1e-8 of the largest term
 #     (tests/opensees/energy_balance.tcl): a linear SDOF, a two-storey stick
-#     with a nodal load, two sticks pounding through ElasticPPGap,
+#     with a nodal load (Rayleigh, then modal damping, whose term closes the
+#     balance), two sticks pounding through ElasticPPGap,
 #     ViscoelasticGap, Hertzdamp and a MinMax of ImpactMaterial;
 #  2. poundfe::impacts against the gap's force history (episodes, peak
 #     force, impulse) and its CSV file, one row an episode;
@@ -21,7 +22,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 . "$here/helpers.sh"
-for case in sdof mdof ElasticPPGap ViscoelasticGap Hertzdamp MinMax; do
+for case in sdof mdof modal ElasticPPGap ViscoelasticGap Hertzdamp MinMax; do
   mkdir -p "$work/$case"
   "$poundfe" opensees "$corpus/energy_balance.tcl" "$case" "$work/$case" > "$work/$case/log" 2>&1 \
     || { cat "$work/$case/log"; fail "energy_balance $case"; }
