@@ -19,154 +19,95 @@ namespace poundfe
 {
   namespace opensees
   {
-    namespace
+    Vector
+    EnergyBalance::gathered(const Domain &d, const std::vector<double> Node::*response) const
     {
-      /// The offset of each node's first DOF in the vectors by node and DOF.
-      std::map<int, unsigned int>
-      offsets(const Domain &d, unsigned int &n)
-      {
-        std::map<int, unsigned int> offset;
-        n = 0;
-        for (const auto &[tag, node] : d.nodes)
-          {
-            offset[tag] = n;
-            n += node.disp.size();
-          }
-        return offset;
-      }
+      Vector       x(n_dofs);
+      unsigned int i = 0;
+      for (const auto &[tag, node] : d.nodes)
+        for (const double value : node.*response)
+          x[i++] = value;
+      return x;
+    }
 
-      Vector
-      gathered(const Domain &d, const std::vector<double> Node::*response)
-      {
-        unsigned int n = 0;
-        offsets(d, n);
-        Vector       x(n);
-        unsigned int i = 0;
-        for (const auto &[tag, node] : d.nodes)
-          for (const double value : node.*response)
-            x[i++] = value;
-        return x;
-      }
-
-      /// M x by node and DOF: the lumped masses and the consistent ones.
-      Vector
-      mass_times(const Domain &d, const Vector &x)
-      {
-        unsigned int n      = 0;
-        const auto   offset = offsets(d, n);
-        Vector       y      = Vector::Zero(n);
-        for (const auto &[tag, node] : d.nodes)
-          for (unsigned int k = 0; k < node.disp.size(); ++k)
-            {
-              const unsigned int i = offset.at(tag) + k;
-              y[i] = (node.mass[k] + (k < node.element_mass.size() ? node.element_mass[k] : 0)) * x[i];
-            }
-        for (const Domain::ConsistentMass &m : d.consistent_masses)
-          {
-            std::vector<unsigned int> rows;
-            for (const int tag : m.nodes)
-              for (unsigned int k = 0; k < d.ndf; ++k)
-                rows.push_back(offset.at(tag) + k);
-            for (unsigned int i = 0; i < rows.size(); ++i)
-              for (unsigned int j = 0; j < rows.size(); ++j)
-                y[rows[i]] += m.matrix(i, j) * x[rows[j]];
-          }
-        return y;
-      }
-
-      /// The ground-motion load -M r a_g by node and DOF, with the second
-      /// load of the masses that take it twice.
-      Vector
-      ground_load(const Domain &d)
-      {
-        const std::vector<double> a_g = d.ground_acceleration(d.time);
-        unsigned int              n   = 0;
-        const auto                offset = offsets(d, n);
-        Vector                    r(n);
-        for (const auto &[tag, node] : d.nodes)
-          for (unsigned int k = 0; k < node.disp.size(); ++k)
-            r[offset.at(tag) + k] = k < a_g.size() ? a_g[k] : 0.0;
-        Vector load = -mass_times(d, r);
-        for (const Domain::LumpedMass &m : d.lumped_masses)
-          if (m.ground_load_twice)
-            for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
-              load[offset.at(m.node) + k] -= m.mass * r[offset.at(m.node) + k];
-        return load;
-      }
-
-      /// The modal damping force W diag(c) W^T v (0 without modalDamping).
-      Vector
-      modal_damping_force(const Domain &d, const Vector &v)
-      {
-        unsigned int n      = 0;
-        const auto   offset = offsets(d, n);
-        Vector       f      = Vector::Zero(n);
-        const auto  &modes  = d.modes;
-        for (std::size_t i = 0; i < d.modal_damping.size() && i < modes.shapes.size(); ++i)
-          {
-            Vector phi = Vector::Zero(n);
-            for (const auto &[tag, shape] : modes.shapes[i])
-              for (unsigned int k = 0; k < shape.size() && d.nodes.count(tag); ++k)
-                phi[offset.at(tag) + k] = shape[k];
-            const Vector w = mass_times(d, phi);
-            const double c = 2 * d.modal_damping[i] * std::sqrt(std::abs(modes.eigenvalues[i]));
-            f += c * w.dot(v) * w;
-          }
-        return f;
-      }
-    } // namespace
+    Vector
+    EnergyBalance::mass_times(const Domain &d, const Vector &x) const
+    {
+      Vector y = mass.cwiseProduct(x);
+      for (const Domain::ConsistentMass &m : d.consistent_masses)
+        {
+          std::vector<unsigned int> rows;
+          for (const int tag : m.nodes)
+            for (unsigned int k = 0; k < d.ndf; ++k)
+              rows.push_back(offset.at(tag) + k);
+          for (unsigned int i = 0; i < rows.size(); ++i)
+            for (unsigned int j = 0; j < rows.size(); ++j)
+              y[rows[i]] += m.matrix(i, j) * x[rows[j]];
+        }
+      return y;
+    }
 
     EnergyBalance::State
     EnergyBalance::state(const Domain &d) const
     {
-      State        s;
-      unsigned int n      = 0;
-      const auto   offset = offsets(d, n);
-      s.u               = gathered(d, &Node::disp);
-      const Vector v    = gathered(d, &Node::vel);
-      s.p               = ground_load(d);
-      for (const auto &[tag, load] : d.nodal_loads(d.time))
-        for (unsigned int k = 0; k < load.size(); ++k)
-          s.p[offset.at(tag) + k] += load[k];
-      s.c = modal_damping_force(d, v);
-      for (const auto &[tag, c] : d.mass_damping())
-        for (unsigned int k = 0; k < c.size(); ++k)
-          s.c[offset.at(tag) + k] += c[k] * v[offset.at(tag) + k];
+      State s;
+      s.u            = gathered(d, &Node::disp);
+      const Vector v = gathered(d, &Node::vel);
+      // the ground-motion load -M r a_g (r: each node's DOFs along a_g's)
+      const std::vector<double> a_g = d.ground_acceleration(d.time);
+      Vector                    r(n_dofs);
+      for (const auto &[tag, node] : d.nodes)
+        for (unsigned int k = 0; k < node.disp.size(); ++k)
+          r[offset.at(tag) + k] = k < a_g.size() ? a_g[k] : 0.0;
+      s.p = -ground_mass.cwiseProduct(r);
+      if (!d.consistent_masses.empty())
+        s.p -= mass_times(d, r) - mass.cwiseProduct(r);
+      if (nodal_loads)
+        for (const auto &[tag, load] : d.nodal_loads(d.time))
+          for (unsigned int k = 0; k < load.size(); ++k)
+            s.p[offset.at(tag) + k] += load[k];
+      s.c = mass_damping.cwiseProduct(v);
+      for (std::size_t i = 0; i < modal_w.size(); ++i)
+        s.c += modal_c[i] * modal_w[i].dot(v) * modal_w[i];
       for (const Domain::ConsistentMass &m : d.consistent_masses)
         if (d.elements.at(m.element)->rayleigh_damped())
           {
             const double alpha = d.rayleigh_of(m.element).alpha_m;
-            const Vector v_e   = d.element_values(*d.elements.at(m.element), &Node::vel);
-            const Vector f     = alpha * (m.matrix * v_e);
-            unsigned int i     = 0;
+            const Vector f = alpha * (m.matrix * d.element_values(*d.elements.at(m.element), &Node::vel));
+            unsigned int i = 0;
             for (const int tag : m.nodes)
               for (unsigned int k = 0; k < d.ndf; ++k)
                 s.c[offset.at(tag) + k] += f[i++];
           }
+      s.u_e.reserve(d.elements.size());
+      s.f_e.reserve(d.elements.size());
       for (const auto &[tag, element] : d.elements)
         {
           s.u_e.push_back(d.element_values(*element, &Node::disp));
           s.f_e.push_back(element->force());
           if (!element->rayleigh_damped())
             continue;
-          const RayleighFactors &r   = d.rayleigh_of(tag);
+          // the stiffness-proportional terms (alpha_M M_e is in mass_damping)
+          const RayleighFactors &f   = d.rayleigh_of(tag);
           const Vector           v_e = d.element_values(*element, &Node::vel);
-          Vector                 f   = r.beta_k * (element->tangent() * v_e) +
-                         r.beta_k_init * (element->initial_tangent() * v_e);
-          if (r.beta_k_committed != 0 && element->committed_tangent.size() > 0)
-            f += r.beta_k_committed * (element->committed_tangent * v_e);
+          Vector                 c_e = Vector::Zero(v_e.size());
+          if (f.beta_k != 0)
+            c_e += f.beta_k * (element->tangent() * v_e);
+          if (f.beta_k_init != 0)
+            c_e += f.beta_k_init * (element->initial_tangent() * v_e);
+          if (f.beta_k_committed != 0 && element->committed_tangent.size() > 0)
+            c_e += f.beta_k_committed * (element->committed_tangent * v_e);
           unsigned int i = 0;
           for (const int node_tag : element->node_tags)
             for (unsigned int k = 0; k < d.node(node_tag).disp.size(); ++k)
-              s.c[offset.at(node_tag) + k] += f[i++];
+              s.c[offset.at(node_tag) + k] += c_e[i++];
         }
       return s;
     }
 
     double
-    EnergyBalance::kinetic(const Domain &d) const
+    EnergyBalance::kinetic(const Domain &d, const Vector &v) const
     {
-      const Vector v = gathered(d, &Node::vel);
       return 0.5 * v.dot(mass_times(d, v));
     }
 
@@ -174,8 +115,45 @@ namespace poundfe
     EnergyBalance::begin(const Domain &d, const std::vector<int> &contact)
     {
       contact_elements = contact;
-      last             = state(d);
-      kinetic_now      = kinetic(d);
+      offset.clear();
+      n_dofs = 0;
+      for (const auto &[tag, node] : d.nodes)
+        {
+          offset[tag] = n_dofs;
+          n_dofs += node.disp.size();
+        }
+      mass.setZero(n_dofs);
+      mass_damping.setZero(n_dofs);
+      for (const auto &[tag, node] : d.nodes)
+        for (unsigned int k = 0; k < node.disp.size(); ++k)
+          mass[offset[tag] + k] =
+            node.mass[k] + (k < node.element_mass.size() ? node.element_mass[k] : 0.0);
+      ground_mass = mass;
+      for (const Domain::LumpedMass &m : d.lumped_masses)
+        if (m.ground_load_twice)
+          for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
+            ground_mass[offset[m.node] + k] += m.mass;
+      for (const auto &[tag, c] : d.mass_damping())
+        for (unsigned int k = 0; k < c.size(); ++k)
+          mass_damping[offset[tag] + k] = c[k];
+      // OpenSees 3.8's modal damping: c_i = 2 zeta_i omega_i, W_i = M phi_i
+      modal_c.clear();
+      modal_w.clear();
+      for (std::size_t i = 0; i < d.modal_damping.size() && i < d.modes.shapes.size(); ++i)
+        {
+          Vector phi = Vector::Zero(n_dofs);
+          for (const auto &[tag, shape] : d.modes.shapes[i])
+            if (d.nodes.count(tag))
+              for (unsigned int k = 0; k < shape.size(); ++k)
+                phi[offset[tag] + k] = shape[k];
+          modal_w.push_back(mass_times(d, phi));
+          modal_c.push_back(2 * d.modal_damping[i] * std::sqrt(std::abs(d.modes.eigenvalues[i])));
+        }
+      nodal_loads = std::any_of(d.patterns.begin(), d.patterns.end(), [](const auto &p) {
+        return !p.second.uniform_excitation && !p.second.loads.empty();
+      });
+      last        = state(d);
+      kinetic_now = kinetic(d, gathered(d, &Node::vel));
       if (!started)
         kinetic_0 = kinetic_now;
       started = true;
@@ -186,7 +164,7 @@ namespace poundfe
     {
       Assert(started, dealii::ExcMessage("begin() comes before the steps"));
       State now = state(d);
-      if (now.u.size() != last.u.size() || now.f_e.size() != last.f_e.size())
+      if (now.f_e.size() != last.f_e.size())
         {
           last = std::move(now); // the domain changed: the rule starts again
           return;
@@ -203,7 +181,7 @@ namespace poundfe
           (gap ? contact : elements) += work;
           ++e;
         }
-      kinetic_now = kinetic(d);
+      kinetic_now = kinetic(d, gathered(d, &Node::vel));
       last        = std::move(now);
     }
 

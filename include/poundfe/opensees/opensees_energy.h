@@ -66,7 +66,21 @@ namespace poundfe
         std::vector<Vector> u_e, f_e; // by element
       };
       State  state(const Domain &domain) const;
-      double kinetic(const Domain &domain) const;
+      double kinetic(const Domain &domain, const Vector &v) const;
+      /// M x by node and DOF: the lumped and the consistent masses.
+      Vector mass_times(const Domain &domain, const Vector &x) const;
+      Vector gathered(const Domain &domain, const std::vector<double> Node::*response) const;
+
+      /// What an analysis keeps (set by begin): each node's first DOF in
+      /// the vectors by node and DOF, the lumped masses, those that take
+      /// the ground motion (with the second load of a 2D elasticBeamColumn's
+      /// -mass) and alpha_M M, the modal damping's c_i and M phi_i.
+      std::map<int, unsigned int> offset;
+      unsigned int                n_dofs = 0;
+      Vector                      mass, ground_mass, mass_damping;
+      std::vector<double>         modal_c;
+      std::vector<Vector>         modal_w;
+      bool                        nodal_loads = false;
 
       State            last;
       bool             started = false;
