@@ -92,6 +92,8 @@ class CorpusTest(TestCase):
                                delta=1e-12)
         with self.assertRaises(ops.OpenSeesError):
             ops.poundfe.impacts("-frobnicate")
+        self.assertIsNone(ops.poundfe.stepCutting("on", 4))
+        self.assertIsNone(ops.poundfe.stepCutting("off"))
 
     def test_fibre_frame_gravity_then_record(self):
         stdout, (status, roof) = self.run_both(

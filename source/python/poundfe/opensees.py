@@ -76,6 +76,8 @@ def _dict_of(words):
 def _poundfe_command(name):
     def command(*arguments):
         result = _call(name, arguments)
+        if result is None:  # a setting (stepCutting)
+            return None
         if name == "poundfe::impacts":
             return [_dict_of(episode) for episode in (result or [])]
         return _dict_of(result)
