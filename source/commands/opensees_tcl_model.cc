@@ -61,8 +61,7 @@ namespace poundfe
         s.open_fibres.reset();
         s.fibres = nullptr;
         s.link_materials.clear();
-        s.energy  = opensees::EnergyBalance();
-        s.impacts = opensees::ScriptImpacts();
+        stop_observers(s);
         s.max_cuts = 0;
       }
 

@@ -48,11 +48,12 @@ namespace poundfe
     }
 
     EnergyBalance::State
-    EnergyBalance::state(const Domain &d) const
+    EnergyBalance::state(const Domain &d, const State *previous) const
     {
       State s;
-      s.u            = gathered(d, &Node::disp);
-      const Vector v = gathered(d, &Node::vel);
+      s.time = d.time;
+      s.u    = gathered(d, &Node::disp);
+      s.v    = gathered(d, &Node::vel);
       // the ground-motion load -M r a_g (r: each node's DOFs along a_g's)
       const std::vector<double> a_g = d.ground_acceleration(d.time);
       Vector                    r(n_dofs);
@@ -66,43 +67,48 @@ namespace poundfe
         for (const auto &[tag, load] : d.nodal_loads(d.time))
           for (unsigned int k = 0; k < load.size(); ++k)
             s.p[offset.at(tag) + k] += load[k];
-      s.c = mass_damping.cwiseProduct(v);
-      for (std::size_t i = 0; i < modal_w.size(); ++i)
-        s.c += modal_c[i] * modal_w[i].dot(v) * modal_w[i];
-      for (const Domain::ConsistentMass &m : d.consistent_masses)
-        if (d.elements.at(m.element)->rayleigh_damped())
-          {
-            const double alpha = d.rayleigh_of(m.element).alpha_m;
-            const Vector f = alpha * (m.matrix * d.element_values(*d.elements.at(m.element), &Node::vel));
-            unsigned int i = 0;
-            for (const int tag : m.nodes)
-              for (unsigned int k = 0; k < d.ndf; ++k)
-                s.c[offset.at(tag) + k] += f[i++];
-          }
       s.u_e.reserve(d.elements.size());
       s.f_e.reserve(d.elements.size());
       for (const auto &[tag, element] : d.elements)
         {
           s.u_e.push_back(d.element_values(*element, &Node::disp));
           s.f_e.push_back(element->force());
+        }
+      add_damping_forces(d, previous, s);
+      return s;
+    }
+
+    void
+    EnergyBalance::add_damping_forces(const Domain &d, const State *previous, State &s) const
+    {
+      s.c = mass_damping.cwiseProduct(s.v);
+      for (std::size_t i = 0; i < modal_w.size(); ++i)
+        s.c += modal_c[i] * modal_w[i].dot(s.v) * modal_w[i];
+      const bool same_elements = previous && previous->k_c.size() == d.elements.size();
+      s.k_c.resize(d.elements.size());
+      unsigned int e = 0;
+      for (const auto &[tag, element] : d.elements)
+        {
+          const unsigned int this_element = e++;
           if (!element->rayleigh_damped())
             continue;
-          // the stiffness-proportional terms (alpha_M M_e is in mass_damping)
-          const RayleighFactors &f   = d.rayleigh_of(tag);
-          const Vector           v_e = d.element_values(*element, &Node::vel);
-          Vector                 c_e = Vector::Zero(v_e.size());
-          if (f.beta_k != 0)
-            c_e += f.beta_k * (element->tangent() * v_e);
-          if (f.beta_k_init != 0)
-            c_e += f.beta_k_init * (element->initial_tangent() * v_e);
-          if (f.beta_k_committed != 0 && element->committed_tangent.size() > 0)
-            c_e += f.beta_k_committed * (element->committed_tangent * v_e);
+          Vector       c_e     = d.rayleigh_damping_forces(*element);
+          const double beta_kc = d.rayleigh_of(tag).beta_k_committed;
+          if (beta_kc != 0)
+            {
+              // the step's equilibrium took the tangent committed before
+              // it (Analysis::commit renews committed_tangent after it)
+              s.k_c[this_element] = element->committed_tangent;
+              const Matrix &used  = same_elements ? previous->k_c[this_element] : Matrix();
+              if (used.rows() == c_e.size() && used.rows() == element->committed_tangent.rows())
+                c_e += beta_kc * ((used - element->committed_tangent) *
+                                  d.element_values(*element, &Node::vel));
+            }
           unsigned int i = 0;
           for (const int node_tag : element->node_tags)
             for (unsigned int k = 0; k < d.node(node_tag).disp.size(); ++k)
               s.c[offset.at(node_tag) + k] += c_e[i++];
         }
-      return s;
     }
 
     double
@@ -133,9 +139,11 @@ namespace poundfe
         if (m.ground_load_twice)
           for (unsigned int k = 0; k < std::min(d.ndm, d.ndf); ++k)
             ground_mass[offset[m.node] + k] += m.mass;
-      for (const auto &[tag, c] : d.mass_damping())
-        for (unsigned int k = 0; k < c.size(); ++k)
-          mass_damping[offset[tag] + k] = c[k];
+      // alpha_M of the nodes' own masses (the elements' are in their
+      // Domain::rayleigh_damping_forces)
+      for (const auto &[tag, node] : d.nodes)
+        for (unsigned int k = 0; k < node.mass.size(); ++k)
+          mass_damping[offset[tag] + k] = d.alpha_m_of(tag) * node.mass[k];
       // OpenSees 3.8's modal damping: c_i = 2 zeta_i omega_i, W_i = M phi_i
       modal_c.clear();
       modal_w.clear();
@@ -149,21 +157,35 @@ namespace poundfe
           modal_w.push_back(mass_times(d, phi));
           modal_c.push_back(2 * d.modal_damping[i] * std::sqrt(std::abs(d.modes.eigenvalues[i])));
         }
+      resume(d);
+    }
+
+    void
+    EnergyBalance::resume(const Domain &d)
+    {
       nodal_loads = std::any_of(d.patterns.begin(), d.patterns.end(), [](const auto &p) {
         return !p.second.uniform_excitation && !p.second.loads.empty();
       });
-      last        = state(d);
-      kinetic_now = kinetic(d, gathered(d, &Node::vel));
+      // the rule goes on from the last step when the domain is still at it:
+      // its forces are those of that step's equilibrium (the damping's too,
+      // should the script have changed it since)
+      if (has_last && last.time == d.time && last.u.size() == n_dofs &&
+          last.f_e.size() == d.elements.size() && last.u == gathered(d, &Node::disp) &&
+          last.v == gathered(d, &Node::vel))
+        return;
+      last        = state(d, nullptr);
+      kinetic_now = kinetic(d, last.v);
       if (!started)
         kinetic_0 = kinetic_now;
-      started = true;
+      started  = true;
+      has_last = true;
     }
 
     void
     EnergyBalance::step(const Domain &d)
     {
       Assert(started, dealii::ExcMessage("begin() comes before the steps"));
-      State now = state(d);
+      State now = state(d, &last);
       if (now.f_e.size() != last.f_e.size())
         {
           last = std::move(now); // the domain changed: the rule starts again
@@ -181,7 +203,7 @@ namespace poundfe
           (gap ? contact : elements) += work;
           ++e;
         }
-      kinetic_now = kinetic(d, gathered(d, &Node::vel));
+      kinetic_now = kinetic(d, now.v);
       last        = std::move(now);
     }
 
@@ -234,6 +256,12 @@ namespace poundfe
           gap_rows = rows;
           log.reset(rows.size());
         }
+      resume(d);
+    }
+
+    void
+    ScriptImpacts::resume(const Domain &d)
+    {
       last      = states(d);
       last_time = d.time;
     }

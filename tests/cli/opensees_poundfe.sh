@@ -4,8 +4,12 @@
 #     balance's residual within 1e-8 of the largest term
 #     (tests/opensees/energy_balance.tcl): a linear SDOF, a two-storey stick
 #     with a nodal load (Rayleigh, then modal damping, whose term closes the
-#     balance), two sticks pounding through ElasticPPGap,
-#     ViscoelasticGap, Hertzdamp and a MinMax of ImpactMaterial;
+#     balance), the stick yielding (Steel01, Rayleigh on the committed
+#     stiffness), two sticks pounding through ElasticPPGap,
+#     ViscoelasticGap, Hertzdamp and a MinMax of ImpactMaterial; across
+#     analyze calls (tests/opensees/energy_restart.tcl): `reset` starts the
+#     balance and the impact log again, and new Rayleigh factors between
+#     two analyze calls keep the balance closed;
 #  2. poundfe::impacts against the gap's force history (episodes, peak
 #     force, impulse) and its CSV file, one row an episode;
 #  3. poundfe::stepCutting (tests/opensees/step_cutting.tcl): a pounding
@@ -13,8 +17,9 @@
 #     completes with it on; before the failure its rows are the failed run's
 #     byte for byte, after it its distance from a run at dt/16 at most twice
 #     that before (the step's own discretisation error; measured 1.3 times);
-#  4. an unknown poundfe:: command or option: one line with the file and
-#     line, exit 1.
+#  4. an unknown poundfe:: command or option, a query of an observer the
+#     script has not turned on, an empty file name: one line with the file
+#     and line, exit 1.
 #   opensees_poundfe.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
 poundfe=$1 corpus=$2 python=$3
@@ -22,10 +27,14 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 . "$here/helpers.sh"
-for case in sdof mdof modal ElasticPPGap ViscoelasticGap Hertzdamp MinMax; do
+for case in sdof mdof modal steel01 ElasticPPGap ViscoelasticGap Hertzdamp MinMax; do
   mkdir -p "$work/$case"
   "$poundfe" opensees "$corpus/energy_balance.tcl" "$case" "$work/$case" > "$work/$case/log" 2>&1 \
     || { cat "$work/$case/log"; fail "energy_balance $case"; }
+done
+for case in reset rayleigh; do
+  "$poundfe" opensees "$corpus/energy_restart.tcl" "$case" > "$work/restart-$case.log" 2>&1 \
+    || { cat "$work/restart-$case.log"; fail "energy_restart $case"; }
 done
 # the CSV: its header and one row per episode the script counted
 log=$work/ElasticPPGap/log csv=$work/ElasticPPGap/impacts.csv
@@ -77,10 +86,18 @@ bad() {
   [ "$(wc -l < "$dir/err")" = 1 ] || { cat "$dir/err"; fail "$1: not one line"; }
   grep -qxF -- "poundfe: error: $dir/s.tcl:$2" "$dir/err" || { cat "$dir/err"; fail "$1: message"; }
 }
-echo "poundfe::energy -file e.out" | bad energy-option \
-  "2: poundfe::energy: unknown option '-file' (poundfe::energy takes none)" || exit 1
-echo "poundfe::impacts -csv i.csv" | bad impacts-option \
-  "2: poundfe::impacts: unknown option '-csv' (poundfe::impacts takes -file F)" || exit 1
+echo "poundfe::energy on; poundfe::energy -file e.out" | bad energy-option \
+  "2: poundfe::energy: unknown option '-file' (poundfe::energy takes none, or on or off)" || exit 1
+echo "poundfe::impacts on; poundfe::impacts -csv i.csv" | bad impacts-option \
+  "2: poundfe::impacts: unknown option '-csv' (poundfe::impacts takes -file F, or on or off)" || exit 1
+echo "poundfe::impacts on; poundfe::impacts -file {}" | bad impacts-empty-file \
+  "2: poundfe::impacts: an empty file name after -file" || exit 1
+echo "poundfe::energy on off" | bad energy-on-off \
+  "2: poundfe::energy: unknown word 'off' after on" || exit 1
+echo "poundfe::energy" | bad energy-off \
+  "2: poundfe::energy: it is off: 'poundfe::energy on' before the analysis turns it on" || exit 1
+printf 'poundfe::impacts on\nwipe\npoundfe::impacts\n' | bad impacts-wiped \
+  "4: poundfe::impacts: it is off: 'poundfe::impacts on' before the analysis turns it on" || exit 1
 echo "poundfe::stepCutting on 0" | bad cuts-zero \
   "2: poundfe::stepCutting: the most halvings must be 1 to 30, got 0" || exit 1
 echo "poundfe::stepCutting sometimes" | bad cuts-word \

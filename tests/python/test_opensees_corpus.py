@@ -87,7 +87,8 @@ class CorpusTest(TestCase):
         episodes = sum(1 for a, b in zip([0.0] + stress, stress) if a == 0 and b > 0)
         self.assertGreater(episodes, 0)
         self.assertEqual(len(impacts), episodes)
-        self.assertEqual({i["element"] for i in impacts}, {3.0})
+        self.assertEqual({i["element"] for i in impacts}, {3})
+        self.assertIsInstance(impacts[0]["element"], int)
         self.assertAlmostEqual(max(i["peak_force"] for i in impacts) / max(stress), 1.0,
                                delta=1e-12)
         with self.assertRaises(ops.OpenSeesError):

@@ -11,10 +11,13 @@
 //                     v_e + modal damping W diag(c) W^T v) . du
 //   E_contact  = int f_e . du_e of the gap elements
 //   residual   = E_input - (E_kinetic - E_kinetic,0) - E_elements - E_damping - E_contact,
-// each integral by the trapezoidal rule over the committed steps. Under
-// Newmark's average acceleration the trapezoidal rule of the inertia's work
-// is exactly the change of E_kinetic, so the residual of a linear model
-// is the round-off of the equilibrium at each step.
+// each integral by the trapezoidal rule over the committed steps, with the
+// forces of each step's equilibrium (beta_Kc: the tangent committed before
+// the step). Under Newmark's average acceleration the trapezoidal rule of
+// the inertia's work is exactly the change of E_kinetic, so the residual of
+// a linear model is the round-off of the equilibrium at each step (plus the
+// first step's, when the loads at the start are not zero: OpenSees starts
+// from zero acceleration).
 #ifndef poundfe_opensees_opensees_energy_h
 #define poundfe_opensees_opensees_energy_h
 
@@ -53,8 +56,13 @@ namespace poundfe
     {
     public:
       /// The state at the start of a transient `analyze` (the rule's first
-      /// end); `contact` names the gap elements.
+      /// end) of a model whose vectors are built anew; `contact` names the
+      /// gap elements.
       void begin(const Domain &domain, const std::vector<int> &contact);
+      /// The start of a later `analyze` of the same model (masses,
+      /// damping, modes and elements as at begin): the vectors are kept,
+      /// and so is the last state when the domain is still at it.
+      void resume(const Domain &domain);
       /// A committed step of that analysis.
       void step(const Domain &domain);
       EnergyTerms terms() const;
@@ -62,10 +70,16 @@ namespace poundfe
     private:
       struct State
       {
-        Vector              u, p, c;  // by node and DOF: displacement, input and damping forces
-        std::vector<Vector> u_e, f_e; // by element
+        double              time = 0;
+        Vector              u, v, p, c; // by node and DOF: displacement, velocity, input and damping forces
+        std::vector<Vector> u_e, f_e;   // by element
+        /// By element: its committed tangent, under beta_Kc (else empty).
+        std::vector<Matrix> k_c;
       };
-      State  state(const Domain &domain) const;
+      /// The state of the domain; `previous` the one before this step (its
+      /// k_c: the committed tangent this step's equilibrium used).
+      State  state(const Domain &domain, const State *previous) const;
+      void   add_damping_forces(const Domain &domain, const State *previous, State &s) const;
       double kinetic(const Domain &domain, const Vector &v) const;
       /// M x by node and DOF: the lumped and the consistent masses.
       Vector mass_times(const Domain &domain, const Vector &x) const;
@@ -74,7 +88,8 @@ namespace poundfe
       /// What an analysis keeps (set by begin): each node's first DOF in
       /// the vectors by node and DOF, the lumped masses, those that take
       /// the ground motion (with the second load of a 2D elasticBeamColumn's
-      /// -mass) and alpha_M M, the modal damping's c_i and M phi_i.
+      /// -mass) and alpha_M of the nodes' own masses, the modal damping's
+      /// c_i and M phi_i.
       std::map<int, unsigned int> offset;
       unsigned int                n_dofs = 0;
       Vector                      mass, ground_mass, mass_damping;
@@ -83,7 +98,7 @@ namespace poundfe
       bool                        nodal_loads = false;
 
       State            last;
-      bool             started = false;
+      bool             started = false, has_last = false;
       std::vector<int> contact_elements;
       double           input = 0, elements = 0, damping = 0, contact = 0, kinetic_0 = 0,
              kinetic_now = 0;
@@ -94,6 +109,8 @@ namespace poundfe
     {
     public:
       void begin(const Domain &domain, const std::vector<GapRow> &rows);
+      /// The start of a later `analyze` with the same gap rows.
+      void resume(const Domain &domain);
       void step(const Domain &domain);
       const std::vector<GapRow> &rows() const { return gap_rows; }
       const std::vector<Impact> &impacts() const { return log.impacts(); }

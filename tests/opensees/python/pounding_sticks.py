@@ -14,8 +14,9 @@ from record import synthetic_record
 
 def run(out, law, keep=False):
     """The recorders' files in `out`; analyze's status and the final time.
-    keep: the gap's stress recorded too, and the domain left for the
-    caller's queries (its `wipe` writes the files)."""
+    keep: the gap's stress recorded too, poundfe's energy balance and
+    impact log on, and the domain left for the caller's queries (its
+    `wipe` writes the files)."""
     ops.wipe()
     ops.model('basic', '-ndm', 1, '-ndf', 1)
     pi = 3.14159265358979
@@ -48,6 +49,8 @@ def run(out, law, keep=False):
     if keep:
         ops.recorder('Element', '-file', f'{out}/pounding_{law}_gap.out', '-time', '-precision',
                      16, '-ele', 3, 'material', 1, 'stress')
+        ops.poundfe.energy('on')
+        ops.poundfe.impacts('on')
     ops.constraints('Plain')
     ops.numberer('Plain')
     ops.system('BandGeneral')
