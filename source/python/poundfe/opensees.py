@@ -28,9 +28,10 @@ section that later `patch`, `layer` and `fiber` calls fill.
 
 poundfe's additions, Tcl's `poundfe::` commands, are the functions of
 `poundfe.opensees.poundfe`, their results as dicts: `ops.poundfe.energy()`
-(the energy balance of the transient analyses), `ops.poundfe.impacts()` (a
-list of dicts, one per contact episode; `ops.poundfe.impacts('-file',
-'impacts.csv')` writes them too) and `ops.poundfe.report()`.
+(the energy balance of the transient analyses since `ops.poundfe.energy('on')`),
+`ops.poundfe.impacts()` (a list of dicts, one per contact episode since
+`ops.poundfe.impacts('on')`; `ops.poundfe.impacts('-file', 'impacts.csv')`
+writes them too) and `ops.poundfe.report()`; a setting returns None.
 
 Recorders write their files at `wipe` and when Python exits.
 """
