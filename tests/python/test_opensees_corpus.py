@@ -93,6 +93,10 @@ class CorpusTest(TestCase):
                                delta=1e-12)
         with self.assertRaises(ops.OpenSeesError):
             ops.poundfe.impacts("-frobnicate")
+        with self.assertRaises(ops.OpenSeesError):  # wipe turned it off
+            ops.poundfe.energy()
+        self.assertIsNone(ops.poundfe.energy("on"))
+        self.assertIsNone(ops.poundfe.energy("off"))
         self.assertIsNone(ops.poundfe.stepCutting("on", 4))
         self.assertIsNone(ops.poundfe.stepCutting("off"))
 
