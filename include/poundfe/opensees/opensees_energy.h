@@ -79,6 +79,9 @@ namespace poundfe
       /// The state of the domain; `previous` the one before this step (its
       /// k_c: the committed tangent this step's equilibrium used).
       State  state(const Domain &domain, const State *previous) const;
+      /// s.c: alpha_M M v of the nodes' own masses, the modal damping, and
+      /// each Rayleigh-damped element's Domain::rayleigh_damping_forces
+      /// with its beta_Kc part on previous's k_c; s.k_c.
       void   add_damping_forces(const Domain &domain, const State *previous, State &s) const;
       double kinetic(const Domain &domain, const Vector &v) const;
       /// M x by node and DOF: the lumped and the consistent masses.
