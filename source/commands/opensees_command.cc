@@ -281,6 +281,7 @@ namespace poundfe
             std::to_string(c.failed_steps);
           Tcl_SetObjResult(words.interp, Tcl_NewStringObj(text.c_str(), -1));
         });
+        define_poundfe_commands(interp, session);
       }
 
       /// The file and line of a Tcl error: the innermost `(file "F" line N)`

@@ -87,12 +87,13 @@ namespace poundfe
       return value;
     }
 
-    /// Commands of a script only: `exit` ends a script, poundfe:: answers
-    /// a script that asks where it runs.
+    /// Commands of a script only: `exit` ends a script (poundfe::'s
+    /// commands are poundfe.opensees.poundfe's functions).
     bool
     script_only(const std::string &name)
     {
-      return name == "exit" || name.find("::") != std::string::npos;
+      return name == "exit" || (name.find("::") != std::string::npos &&
+                                name.compare(0, 9, "poundfe::") != 0);
     }
 
     /// The commands that fill an open Fiber section.

@@ -11,6 +11,7 @@
 
 #include <poundfe/opensees/opensees_analysis.h>
 #include <poundfe/opensees/opensees_domain.h>
+#include <poundfe/opensees/opensees_energy.h>
 #include <poundfe/opensees/opensees_recorder.h>
 
 #include <tcl.h>
@@ -70,6 +71,16 @@ namespace poundfe
       std::map<std::string, bool> commands;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
+      /// The -mat tags of each zeroLength and twoNodeLink (their gap rows).
+      std::map<int, std::vector<int>> link_materials;
+      /// poundfe::energy and poundfe::impacts: the transient analyses' balance and
+      /// contacts, while the script has them on (`poundfe::energy on`).
+      std::optional<opensees::EnergyBalance> energy;
+      std::optional<opensees::ScriptImpacts> impacts;
+      /// What the observers' cached vectors were built for (begin_observing).
+      std::vector<std::size_t> observed_model;
+      /// poundfe::stepCutting's most halvings of a failed step (0: off).
+      unsigned int max_cuts = 0;
       int            current_pattern = -1; // the Plain pattern whose body runs
       /// An error in a pattern's body where the file says it is (Tcl's
       /// errorInfo names the `pattern` line): its message, file and line.
@@ -181,6 +192,15 @@ namespace poundfe
     void define_region_commands(Tcl_Interp *interp, Session &session);
     /// reset (opensees_tcl_domain.cc).
     void define_domain_commands(Tcl_Interp *interp, Session &session);
+    void define_poundfe_commands(Tcl_Interp *interp, Session &session);
+    /// poundfe::energy's and poundfe::impacts's start of a transient
+    /// `analyze` and their committed step (nothing while both are off).
+    void begin_observing(Session &session);
+    void observe_step(Session &session);
+    /// The observers that are on, started again (`reset`), or turned off
+    /// (`wipe`).
+    void restart_observers(Session &session);
+    void stop_observers(Session &session);
     /// remove element | ele | node | sp | SPconstraint | timeSeries (after
     /// the word `what`); false for any other word.
     bool remove_model_object(Session &session, Words &words, const std::string &what);

@@ -454,7 +454,15 @@ namespace poundfe
           throw ScriptError("the number of steps must be >= 0");
         if (s.analysis->options().transient)
           s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper), the first step's
-        const auto record = [&]() { s.record(); };
+        s.analysis->max_cuts = s.max_cuts;
+        const bool transient = s.analysis->options().transient;
+        if (transient)
+          begin_observing(s);
+        const auto record = [&]() {
+          s.record();
+          if (transient)
+            observe_step(s);
+        };
         const auto warn   = [&](const std::string &why) {
           // the test's and the line search's own lines are not warnings
           const bool report = why.compare(0, 5, "CTest") == 0 ||

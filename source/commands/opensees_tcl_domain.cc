@@ -1,10 +1,10 @@
 // The domain's own commands of an OpenSees script: `reset` (OpenSees's
 // resetModel in tcl/commands.cpp: Domain::revertToStart, which reverts
 // every node and element to its start, restarts the recorders and sets the
-// time to 0, and the transient integrator's revertToStart), and `remove`
-// of elements, nodes, fixities, multi-point constraints (Domain::
-// removeMP_Constraints: every tie of a constrained node) and time series
-// (removeObject there).
+// time to 0, and the transient integrator's revertToStart; poundfe::energy
+// and poundfe::impacts start again too), and `remove` of elements, nodes,
+// fixities, multi-point constraints (Domain::removeMP_Constraints: every tie
+// of a constrained node) and time series (removeObject there).
 #include "opensees_tcl.h"
 
 namespace poundfe
@@ -28,6 +28,7 @@ namespace poundfe
         s.domain.revert_to_start();
         for (auto &recorder : s.recorders)
           recorder->restart();
+        restart_observers(s);
       }
 
       /// A word after the last one remove takes (as the other removes).

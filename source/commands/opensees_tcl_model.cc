@@ -61,6 +61,9 @@ namespace poundfe
         s.current_pattern = -1;
         s.open_fibres.reset();
         s.fibres = nullptr;
+        s.link_materials.clear();
+        stop_observers(s);
+        s.max_cuts = 0;
       }
 
       void
@@ -391,7 +394,8 @@ namespace poundfe
           unsupported("element zeroLength option '" + option + "'");
       }
 
-      void
+      /// zeroLength; its tag and -mat tags.
+      std::pair<int, std::vector<int>>
       zero_length(opensees::Domain &d, Words &w)
       {
         const int                tag = w.integer("the element's tag");
@@ -403,6 +407,7 @@ namespace poundfe
           throw ScriptError("zeroLength " + text_of(tag) +
                             " needs as many -dir directions as -mat materials, at least one");
         add_element(d, opensees::make_zero_length(d, tag, z));
+        return {tag, z.materials};
       }
 
       /// "'word'" for the word where something is due, or the line's end.
@@ -477,7 +482,8 @@ namespace poundfe
       /// yp1 yp2 yp3> <-pDelta ratios> <-shearDist ratios> <-doRayleigh> <-mass m>
       /// (OpenSees's order: -mat, then -dir, then the options). A bad word is
       /// named, as is the word where a missing value is due.
-      void
+      /// twoNodeLink; its tag and -mat tags.
+      std::pair<int, std::vector<int>>
       two_node_link(opensees::Domain &d, Words &w)
       {
         const int                 tag = w.integer("the element's tag");
@@ -512,6 +518,7 @@ namespace poundfe
           throw ScriptError(link + ": -mass must not be negative");
         add_element(d, opensees::make_two_node_link(d, tag, data));
         add_node_masses(d, tag, data.nodes, 0.5 * data.mass); // TwoNodeLink::getMass
+        return {tag, data.materials};
       }
 
       /// The length of a member between its nodes' coordinates (CorotTruss's
@@ -696,7 +703,10 @@ namespace poundfe
         if (type == "elasticBeamColumn")
           elastic_beam_column(d, w);
         else if (type == "zeroLength")
-          zero_length(d, w);
+          {
+            const auto [tag, materials] = zero_length(d, w);
+            s.link_materials[tag]       = materials;
+          }
         else if (type == "truss")
           truss(d, w);
         else if (type == "zeroLengthSection")
@@ -704,7 +714,10 @@ namespace poundfe
         else if (type == "corotTruss" || type == "CorotTruss")
           corot_truss(d, w);
         else if (type == "twoNodeLink")
-          two_node_link(d, w);
+          {
+            const auto [tag, materials] = two_node_link(d, w);
+            s.link_materials[tag]       = materials;
+          }
         else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
                  type == "dispBeamColumn")
           beam_column_element(s, w, type);

@@ -1412,7 +1412,12 @@ namespace poundfe
       for (unsigned int i = 0; i < n_steps; ++i)
         {
           std::string why;
-          if (!advance(dt, why))
+          if (advance(dt, why))
+            {
+              after_step();
+              continue;
+            }
+          if (!cut_step(dt, after_step, why)) // its sub-steps recorded as they converge
             {
               std::ostringstream text;
               text << "analyze: the step to time " << trial_time << " failed (" << why
@@ -1420,9 +1425,49 @@ namespace poundfe
               warn(text.str());
               return -3;
             }
-          after_step();
         }
       return 0;
+    }
+
+    bool
+    Analysis::cut_step(const double dt, const std::function<void()> &after_step, std::string &why)
+    {
+      if (max_cuts == 0)
+        return false;
+      // OpenSees's ops_Dt is each sub-step's, as a script's own loop of
+      // `analyze 1 h` would set it (a ViscousDamper integrates over it)
+      const double script_dt = domain.time_step;
+      const double end       = domain.time + dt;
+      double       h         = dt;
+      unsigned int cuts      = 0;
+      bool         done      = false;
+      while (!done)
+        {
+          if (++cuts > max_cuts)
+            break;
+          h *= 0.5;
+          // the sub-steps of this size up to the step's end (the last one
+          // lands on it); a failure halves them again from where it failed
+          for (bool failed = false; !failed && !done;)
+            {
+              const bool   last = domain.time + 1.5 * h >= end;
+              const double step = last ? end - domain.time : h;
+              domain.time_step  = step;
+              std::string sub_why;
+              failed = !advance(step, sub_why);
+              if (failed)
+                why = sub_why;
+              else
+                {
+                  after_step();
+                  done = last;
+                }
+            }
+        }
+      domain.time_step = script_dt;
+      if (done)
+        why.clear();
+      return done;
     }
 
     int

@@ -64,6 +64,44 @@ class CorpusTest(TestCase):
                 for name in os.listdir(self.tmp):
                     subprocess.run(["rm", "-rf", os.path.join(self.tmp, name)], check=True)
 
+    def test_poundfe_namespace(self):
+        """ops.poundfe: the pounding pair's energy balance closes (1e-8 of
+        the largest term: the Newton test's 1e-10 m left in each step's
+        equilibrium), its kinetic term is 1/2 m v^2 of nodeVel (to
+        round-off), and the impact log has the contact episodes of the
+        gap's recorded stress history (their number, the peak force)."""
+        import poundfe.opensees as ops
+        self.addCleanup(ops.wipe)
+        status, _ = pounding_sticks.run(self.tmp, "ElasticPPGap", keep=True)
+        self.assertEqual(status, 0)
+        energy = ops.poundfe.energy()
+        self.assertEqual(set(energy), {"input", "kinetic", "elements", "damping", "contact",
+                                       "residual", "relative_residual"})
+        self.assertLess(energy["relative_residual"], 1e-8)
+        kinetic = 0.5 * 1.0e5 * (ops.nodeVel(2, 1) ** 2 + ops.nodeVel(4, 1) ** 2)
+        self.assertAlmostEqual(energy["kinetic"] / kinetic, 1.0, delta=1e-12)
+        impacts = ops.poundfe.impacts()
+        report = ops.poundfe.report()
+        self.assertGreaterEqual(report["steps"], 4000)  # the process's analyses
+        ops.wipe()  # the recorders' files written
+        with open(os.path.join(self.tmp, "pounding_ElasticPPGap_gap.out")) as f:
+            stress = [abs(float(line.split()[1])) for line in f if line.strip()]
+        episodes = sum(1 for a, b in zip([0.0] + stress, stress) if a == 0 and b > 0)
+        self.assertGreater(episodes, 0)
+        self.assertEqual(len(impacts), episodes)
+        self.assertEqual({i["element"] for i in impacts}, {3})
+        self.assertIsInstance(impacts[0]["element"], int)
+        self.assertAlmostEqual(max(i["peak_force"] for i in impacts) / max(stress), 1.0,
+                               delta=1e-12)
+        with self.assertRaises(ops.OpenSeesError):
+            ops.poundfe.impacts("-frobnicate")
+        with self.assertRaises(ops.OpenSeesError):  # wipe turned it off
+            ops.poundfe.energy()
+        self.assertIsNone(ops.poundfe.energy("on"))
+        self.assertIsNone(ops.poundfe.energy("off"))
+        self.assertIsNone(ops.poundfe.stepCutting("on", 4))
+        self.assertIsNone(ops.poundfe.stepCutting("off"))
+
     def test_fibre_frame_gravity_then_record(self):
         stdout, (status, roof) = self.run_both(
             "fibre_frame_record.tcl", fibre_frame_record.run,

@@ -175,6 +175,11 @@ namespace poundfe
       /// each committed step (the recorders).
       int analyze(unsigned int n_steps, double dt, const std::function<void()> &after_step,
                   const std::function<void(const std::string &)> &warn);
+      /// poundfe::stepCutting: a step of `analyze n dt` that fails is
+      /// tried again from where it failed in sub-steps of dt/2, dt/4, ...
+      /// dt/2^max_cuts (each committed and recorded as it converges), before
+      /// analyze gives up; 0 (OpenSees's behaviour) by default.
+      unsigned int max_cuts = 0;
 
       /// `analyze n dt dtMin dtMax Jd` of a VariableTransient analysis
       /// (VariableTimeStepDirectIntegrationAnalysis::analyze): steps until
@@ -236,6 +241,9 @@ namespace poundfe
       /// One step of dt from the committed state, committed; false (why
       /// said, the elements reverted) when it failed.
       bool   advance(double dt, std::string &why);
+      /// The rest of a failed step of dt in ever halved sub-steps
+      /// (max_cuts); false, with why, when the finest fails.
+      bool   cut_step(double dt, const std::function<void()> &after_step, std::string &why);
       /// DisplacementControl's predictor (newStep).
       bool   displacement_step(std::string &why);
       /// DisplacementControl's corrector of a Newton iterate dx (update).

@@ -27,11 +27,19 @@ OpenSeesPy has no script bodies: `pattern('Plain', ...)` makes the pattern
 that later `load` and `eleLoad` calls fill, and `section('Fiber', tag)` the
 section that later `patch`, `layer` and `fiber` calls fill.
 
+poundfe's additions, Tcl's `poundfe::` commands, are the functions of
+`poundfe.opensees.poundfe`, their results as dicts: `ops.poundfe.energy()`
+(the energy balance of the transient analyses since `ops.poundfe.energy('on')`),
+`ops.poundfe.impacts()` (a list of dicts, one per contact episode since
+`ops.poundfe.impacts('on')`; `ops.poundfe.impacts('-file', 'impacts.csv')`
+writes them too) and `ops.poundfe.report()`; a setting returns None.
+
 Recorders write their files at `wipe` and when Python exits.
 """
 
 import atexit
 import sys
+import types
 
 from . import _opensees
 
@@ -60,8 +68,32 @@ def _command(name, supported):
     return command
 
 
-__all__ = ["OpenSeesError"]
+def _dict_of(words):
+    """A Tcl dict (names and numbers, a list or its text) as a dict."""
+    if isinstance(words, str):
+        words = [int(w) if w.isdigit() else w for w in words.split()]
+    return dict(zip(words[::2], words[1::2]))
+
+
+def _poundfe_command(name):
+    def command(*arguments):
+        result = _call(name, arguments)
+        if result is None:  # a setting (stepCutting)
+            return None
+        if name == "poundfe::impacts":
+            return [_dict_of(episode) for episode in (result or [])]
+        return _dict_of(result)
+    command.__name__ = command.__qualname__ = name.split("::")[1]
+    command.__doc__ = f"poundfe's `{name}`: its Tcl words as arguments, a dict as result."
+    return command
+
+
+__all__ = ["OpenSeesError", "poundfe"]
+poundfe = types.SimpleNamespace()
 for _name, _supported in _opensees.opensees_commands():
+    if _name.startswith("poundfe::"):
+        setattr(poundfe, _name.split("::")[1], _poundfe_command(_name))
+        continue
     globals()[_name] = _command(_name, _supported)
     __all__.append(_name)
 del _name, _supported

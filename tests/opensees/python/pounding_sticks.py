@@ -12,8 +12,11 @@ import poundfe.opensees as ops
 from record import synthetic_record
 
 
-def run(out, law):
-    """The recorders' files in `out`; analyze's status and the final time."""
+def run(out, law, keep=False):
+    """The recorders' files in `out`; analyze's status and the final time.
+    keep: the gap's stress recorded too, poundfe's energy balance and
+    impact log on, and the domain left for the caller's queries (its
+    `wipe` writes the files)."""
     ops.wipe()
     ops.model('basic', '-ndm', 1, '-ndf', 1)
     pi = 3.14159265358979
@@ -43,6 +46,11 @@ def run(out, law):
                  '-node', 2, 4, '-dof', 1, 'disp')
     ops.recorder('Node', '-file', f'{out}/pounding_{law}_vel.out', '-time', '-precision', 16,
                  '-node', 2, 4, '-dof', 1, 'vel')
+    if keep:
+        ops.recorder('Element', '-file', f'{out}/pounding_{law}_gap.out', '-time', '-precision',
+                     16, '-ele', 3, 'material', 1, 'stress')
+        ops.poundfe.energy('on')
+        ops.poundfe.impacts('on')
     ops.constraints('Plain')
     ops.numberer('Plain')
     ops.system('BandGeneral')
@@ -52,7 +60,8 @@ def run(out, law):
     ops.analysis('Transient')
     status = ops.analyze(n, dt)
     time = ops.getTime()
-    ops.wipe()
+    if not keep:
+        ops.wipe()
     return status, time
 
 
