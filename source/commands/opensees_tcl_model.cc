@@ -10,6 +10,8 @@
 
 #include "opensees_tcl.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -60,6 +62,8 @@ namespace poundfe
         s.current_pattern = -1;
         s.open_fibres.reset();
         s.fibres = nullptr;
+        s.printed_elements.clear();
+        s.printed_sections.clear();
       }
 
       void
@@ -286,7 +290,7 @@ namespace poundfe
       }
 
       void
-      elastic_beam_column(opensees::Domain &d, Words &w)
+      elastic_beam_column(opensees::Domain &d, Words &w, Printed &printed)
       {
         const bool three = d.ndm == 3 && d.ndf == 6;
         if ((d.ndm != 2 || d.ndf != 3) && !three)
@@ -321,6 +325,22 @@ namespace poundfe
         add_lumped_mass(d, tag, nodes, rho);
         for (auto &m : d.lumped_masses)
           m.ground_load_twice |= m.element == tag && !three;
+        // ElasticBeam2d and ElasticBeam3d::Print's fields (release: 0, both ends fixed)
+        printed.type = three ? "ElasticBeam3d" : "ElasticBeam2d";
+        printed.fields = {{"E", json_number(section.E)}};
+        if (three)
+          printed.fields.emplace_back("G", json_number(section.G));
+        printed.fields.emplace_back("A", json_number(section.A));
+        if (three)
+          printed.fields.insert(printed.fields.end(), {{"Jx", json_number(section.J)},
+                                                       {"Iy", json_number(section.Iy)}});
+        printed.fields.insert(printed.fields.end(), {{"Iz", json_number(section.Iz)},
+                                                     {"massperlength", json_number(rho)}});
+        if (three)
+          printed.fields.insert(printed.fields.end(), {{"releasez", "0"}, {"releasey", "0"}});
+        else
+          printed.fields.emplace_back("release", "0");
+        printed.fields.emplace_back("crdTransformation", json_tag(transf));
       }
 
       void
@@ -350,8 +370,32 @@ namespace poundfe
           unsupported("element zeroLength option '" + option + "'");
       }
 
+      /// ZeroLength::Print's fields: its materials, the names of their
+      /// directions, and the rows x, y = (x cross yp) cross x, x cross yp of
+      /// its transformation, each of unit length (ZeroLength::setUp).
+      std::vector<std::pair<std::string, std::string>>
+      zero_length_fields(const opensees::ZeroLengthData &z, const unsigned int ndm)
+      {
+        using V           = Eigen::Vector3d;
+        const V x         = V(z.x[0], z.x[1], z.x[2]);
+        const V zz        = x.cross(V(z.y[0], z.y[1], z.y[2]));
+        const V rows[3]   = {x.normalized(), zz.cross(x).normalized(), zz.normalized()};
+        std::string names = "[", matrix = "[";
+        for (std::size_t i = 0; i < z.directions.size(); ++i)
+          {
+            // OpenSees keeps direction 3 of a 2D model as 6 (Mz)
+            const int dof = z.directions[i] == 3 && ndm == 2 ? 6 : z.directions[i];
+            const char *const all[] = {"P", "Vy", "Vz", "T", "My", "Mz"};
+            names += (i ? ", \"" : "\"") + std::string(dof >= 1 && dof <= 6 ? all[dof - 1] : "") + "\"";
+          }
+        for (unsigned int i = 0; i < 3; ++i)
+          matrix += (i ? ", " : "") + json_numbers({rows[i][0], rows[i][1], rows[i][2]});
+        return {{"materials", json_tags(z.materials)}, {"dof", names + "]"},
+                {"transMatrix", matrix + "]"}};
+      }
+
       void
-      zero_length(opensees::Domain &d, Words &w)
+      zero_length(opensees::Domain &d, Words &w, Printed &printed)
       {
         const int                tag = w.integer("the element's tag");
         opensees::ZeroLengthData z;
@@ -362,6 +406,7 @@ namespace poundfe
           throw ScriptError("zeroLength " + text_of(tag) +
                             " needs as many -dir directions as -mat materials, at least one");
         add_element(d, opensees::make_zero_length(d, tag, z));
+        printed = {"ZeroLength", zero_length_fields(z, d.ndm)};
       }
 
       /// "'word'" for the word where something is due, or the line's end.
@@ -553,7 +598,7 @@ namespace poundfe
 
       /// truss tag i j A matTag <-rho rho> <-cMass 0|1> <-doRayleigh 0|1>
       void
-      truss(opensees::Domain &d, Words &w)
+      truss(opensees::Domain &d, Words &w, Printed &printed)
       {
         const TrussWords t = truss_words(w, "truss", [](const std::string &, const std::string &o) {
           unsupported("element truss option '" + o + "'");
@@ -565,6 +610,8 @@ namespace poundfe
           add_lumped_mass(d, t.tag, t.nodes, t.rho);
         else if (t.rho != 0)
           unsupported("element truss -rho outside -ndm 2");
+        printed = {"Truss", {{"A", json_number(t.area)}, {"massperlength", json_number(t.rho)},
+                             {"material", json_tag(t.material)}}};
       }
 
       /// zeroLengthSection tag i j secTag <-orient x1 x2 x3 yp1 yp2 yp3>
@@ -633,12 +680,22 @@ namespace poundfe
       {
         opensees::Domain &d    = model_domain(s);
         const std::string type = w.word("the element's type");
+        int               tag  = 0;
+        Tcl_GetInt(nullptr, w.peek().c_str(), &tag);
+        // the other kinds: OpenSees's class name alone (doc/user-guide.md)
+        const std::string dimension = d.ndm == 3 ? "3d" : "2d";
+        Printed printed{type == "corotTruss" || type == "CorotTruss" ? "CorotTruss" :
+                        type == "zeroLengthSection"                   ? "ZeroLengthSection" :
+                        type == "twoNodeLink"                         ? "TwoNodeLink" :
+                        type == "dispBeamColumn"                      ? "DispBeamColumn" + dimension :
+                                                                        "ForceBeamColumn" + dimension,
+                        {}};
         if (type == "elasticBeamColumn")
-          elastic_beam_column(d, w);
+          elastic_beam_column(d, w, printed);
         else if (type == "zeroLength")
-          zero_length(d, w);
+          zero_length(d, w, printed);
         else if (type == "truss")
-          truss(d, w);
+          truss(d, w, printed);
         else if (type == "zeroLengthSection")
           zero_length_section(d, w, s.without_bodies);
         else if (type == "corotTruss" || type == "CorotTruss")
@@ -650,6 +707,7 @@ namespace poundfe
           beam_column_element(s, w, type);
         else
           unsupported("element " + type);
+        s.printed_elements[tag] = printed;
       }
 
       /// A material's positional parameters in OpenSees's order, with the

@@ -203,6 +203,10 @@ namespace poundfe
             if (!(E > 0 && A > 0 && Iz > 0 && Iy > 0 && G > 0 && J > 0))
               throw ScriptError("section Elastic needs E, A, Iz, Iy, G, J > 0");
             add_section(d, tag, std::make_shared<ElasticSection>(E * A, E * Iz, E * Iy, G * J));
+            s.printed_sections[tag] = {"ElasticSection3d",
+                                       {{"E", json_number(E)}, {"G", json_number(G)},
+                                        {"A", json_number(A)}, {"Jx", json_number(J)},
+                                        {"Iy", json_number(Iy)}, {"Iz", json_number(Iz)}}};
           }
         else if (type == "Elastic")
           {
@@ -212,11 +216,20 @@ namespace poundfe
             if (!(E > 0 && A > 0 && I > 0))
               throw ScriptError("section Elastic needs E, A, Iz > 0");
             add_section(d, tag, std::make_shared<ElasticSection>(E * A, E * I));
+            s.printed_sections[tag] = {"ElasticSection2d", {{"E", json_number(E)},
+                                                            {"A", json_number(A)},
+                                                            {"Iz", json_number(I)}}};
           }
         else if (type == "Fiber" || type == "fiberSec")
-          fibre_section(s, d, w, tag);
+          {
+            fibre_section(s, d, w, tag);
+            s.printed_sections[tag] = {d.ndm == 3 ? "FiberSection3d" : "FiberSection2d", {}};
+          }
         else if (type == "Aggregator")
-          aggregator_section(d, w, tag);
+          {
+            aggregator_section(d, w, tag);
+            s.printed_sections[tag] = {"SectionAggregator", {}};
+          }
         else
           unsupported("section " + type);
       }
