@@ -370,17 +370,28 @@ namespace poundfe
           unsupported("element zeroLength option '" + option + "'");
       }
 
+      /// The transMatrix of ZeroLength and ZeroLengthSection::Print: the
+      /// rows x, y = (x cross yp) cross x, x cross yp, each of unit length
+      /// (their setUp).
+      std::string
+      trans_matrix(const std::array<double, 3> &x_given, const std::array<double, 3> &yp)
+      {
+        using V         = Eigen::Vector3d;
+        const V x       = V(x_given[0], x_given[1], x_given[2]);
+        const V z       = x.cross(V(yp[0], yp[1], yp[2]));
+        const V rows[3] = {x.normalized(), z.cross(x).normalized(), z.normalized()};
+        std::string matrix = "[";
+        for (unsigned int i = 0; i < 3; ++i)
+          matrix += (i ? ", " : "") + json_numbers({rows[i][0], rows[i][1], rows[i][2]});
+        return matrix + "]";
+      }
+
       /// ZeroLength::Print's fields: its materials, the names of their
-      /// directions, and the rows x, y = (x cross yp) cross x, x cross yp of
-      /// its transformation, each of unit length (ZeroLength::setUp).
+      /// directions and its transMatrix.
       std::vector<std::pair<std::string, std::string>>
       zero_length_fields(const opensees::ZeroLengthData &z, const unsigned int ndm)
       {
-        using V           = Eigen::Vector3d;
-        const V x         = V(z.x[0], z.x[1], z.x[2]);
-        const V zz        = x.cross(V(z.y[0], z.y[1], z.y[2]));
-        const V rows[3]   = {x.normalized(), zz.cross(x).normalized(), zz.normalized()};
-        std::string names = "[", matrix = "[";
+        std::string names = "[";
         for (std::size_t i = 0; i < z.directions.size(); ++i)
           {
             // OpenSees keeps direction 3 of a 2D model as 6 (Mz)
@@ -388,10 +399,8 @@ namespace poundfe
             const char *const all[] = {"P", "Vy", "Vz", "T", "My", "Mz"};
             names += (i ? ", \"" : "\"") + std::string(dof >= 1 && dof <= 6 ? all[dof - 1] : "") + "\"";
           }
-        for (unsigned int i = 0; i < 3; ++i)
-          matrix += (i ? ", " : "") + json_numbers({rows[i][0], rows[i][1], rows[i][2]});
         return {{"materials", json_tags(z.materials)}, {"dof", names + "]"},
-                {"transMatrix", matrix + "]"}};
+                {"transMatrix", trans_matrix(z.x, z.y)}};
       }
 
       void
@@ -596,6 +605,14 @@ namespace poundfe
         return t;
       }
 
+      /// Truss and CorotTruss::Print's fields.
+      std::vector<std::pair<std::string, std::string>>
+      truss_fields(const TrussWords &t)
+      {
+        return {{"A", json_number(t.area)}, {"massperlength", json_number(t.rho)},
+                {"material", json_tag(t.material)}};
+      }
+
       /// truss tag i j A matTag <-rho rho> <-cMass 0|1> <-doRayleigh 0|1>
       void
       truss(opensees::Domain &d, Words &w, Printed &printed)
@@ -610,8 +627,7 @@ namespace poundfe
           add_lumped_mass(d, t.tag, t.nodes, t.rho);
         else if (t.rho != 0)
           unsupported("element truss -rho outside -ndm 2");
-        printed = {"Truss", {{"A", json_number(t.area)}, {"massperlength", json_number(t.rho)},
-                             {"material", json_tag(t.material)}}};
+        printed = {"Truss", truss_fields(t)};
       }
 
       /// zeroLengthSection tag i j secTag <-orient x1 x2 x3 yp1 yp2 yp3>
@@ -619,7 +635,7 @@ namespace poundfe
       /// in 2D, OpenSeesPy's -orient x1 x2 x3 too (`python`: y across x);
       /// Tcl wants all six values, as OpenSees 3.8's Tcl command.
       void
-      zero_length_section(opensees::Domain &d, Words &w, const bool python)
+      zero_length_section(opensees::Domain &d, Words &w, const bool python, Printed &printed)
       {
         const int                       tag  = w.integer("the element's tag");
         const std::string               name = "zeroLengthSection " + text_of(tag);
@@ -652,12 +668,13 @@ namespace poundfe
               unsupported("element zeroLengthSection option '" + option + "'");
           }
         add_element(d, opensees::make_zero_length_section(d, tag, z));
+        printed.fields = {{"section", json_tag(z.section)}, {"transMatrix", trans_matrix(z.x, z.y)}};
       }
 
       /// corotTruss tag i j A matTag <-rho r> <-cMass 0|1> <-doRayleigh 0|1>:
       /// -rho lumped (rho L/2 on each end's translations) or consistent.
       void
-      corot_truss(opensees::Domain &d, Words &w)
+      corot_truss(opensees::Domain &d, Words &w, Printed &printed)
       {
         const TrussWords t =
           truss_words(w, "corotTruss", [](const std::string &name, const std::string &option) {
@@ -673,6 +690,7 @@ namespace poundfe
           add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, false);
         else
           add_node_masses(d, t.tag, t.nodes, 0.5 * t.rho * member_length(d, t.nodes));
+        printed.fields = truss_fields(t);
       }
 
       void
@@ -682,13 +700,10 @@ namespace poundfe
         const std::string type = w.word("the element's type");
         int               tag  = 0;
         Tcl_GetInt(nullptr, w.peek().c_str(), &tag);
-        // the other kinds: OpenSees's class name alone (doc/user-guide.md)
-        const std::string dimension = d.ndm == 3 ? "3d" : "2d";
+        // twoNodeLink: OpenSees's class name alone (doc/user-guide.md)
         Printed printed{type == "corotTruss" || type == "CorotTruss" ? "CorotTruss" :
                         type == "zeroLengthSection"                   ? "ZeroLengthSection" :
-                        type == "twoNodeLink"                         ? "TwoNodeLink" :
-                        type == "dispBeamColumn"                      ? "DispBeamColumn" + dimension :
-                                                                        "ForceBeamColumn" + dimension,
+                                                                        "TwoNodeLink",
                         {}};
         if (type == "elasticBeamColumn")
           elastic_beam_column(d, w, printed);
@@ -697,9 +712,9 @@ namespace poundfe
         else if (type == "truss")
           truss(d, w, printed);
         else if (type == "zeroLengthSection")
-          zero_length_section(d, w, s.without_bodies);
+          zero_length_section(d, w, s.without_bodies, printed);
         else if (type == "corotTruss" || type == "CorotTruss")
-          corot_truss(d, w);
+          corot_truss(d, w, printed);
         else if (type == "twoNodeLink")
           two_node_link(d, w);
         else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
@@ -707,7 +722,7 @@ namespace poundfe
           beam_column_element(s, w, type);
         else
           unsupported("element " + type);
-        s.printed_elements[tag] = printed;
+        s.printed_elements.emplace(tag, printed); // a beam-column's own already there
       }
 
       /// A material's positional parameters in OpenSees's order, with the

@@ -421,6 +421,33 @@ namespace poundfe
               unsupported("element " + type + " option '" + option + "'");
           }
       }
+      /// ForceBeamColumn2d/3d and DispBeamColumn2d/3d::Print's fields: the
+      /// section of each integration point (HingeRadau: I, the interior
+      /// four times, J, as OpenSees's), the integration's own Print.
+      Printed
+      beam_column_printed(const std::string &type, const unsigned int ndm,
+                          const opensees::IntegrationSpec &rule, const double rho,
+                          const int transf)
+      {
+        using Kind = opensees::IntegrationSpec::Kind;
+        std::vector<int> sections(rule.n_points, rule.section);
+        std::string integration = rule.kind == Kind::lobatto ? "{\"type\": \"Lobatto\"}" :
+                                                               "{\"type\": \"Legendre\"}";
+        if (rule.kind == Kind::hinge_radau)
+          {
+            sections = {rule.section_i, rule.section, rule.section,
+                        rule.section,   rule.section, rule.section_j};
+            integration = "{\"type\": \"HingeRadau\", \"lpI\": " +
+                          json_number(rule.hinge_length_i) +
+                          ", \"lpJ\": " + json_number(rule.hinge_length_j) + "}";
+          }
+        return {(type == "dispBeamColumn" ? "DispBeamColumn" : "ForceBeamColumn") +
+                  std::string(ndm == 3 ? "3d" : "2d"),
+                {{"sections", json_tags(sections)},
+                 {"integration", integration},
+                 {"massperlength", json_number(rho)},
+                 {"crdTransformation", json_tag(transf)}}};
+      }
     } // namespace
 
     void
@@ -467,6 +494,7 @@ namespace poundfe
         add_element(d,
                     opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
       add_lumped_mass(d, tag, nodes, rho);
+      s.printed_elements[tag] = beam_column_printed(type, d.ndm, rule, rho, transf);
     }
 
     void
