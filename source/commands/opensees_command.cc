@@ -233,7 +233,7 @@ namespace poundfe
       {
         for (const char *name :
              {"imposedMotion", "groundMotion",
-              "printA", "printB", "printModel", "print",
+              "printA", "printB",
               "basicDeformation", "basicForce", "localForce", "block2D", "block3D", "nDMaterial", "frictionModel",
               "database", "geomTransfPDelta", "mp", "domainChange", "remesh", "setNodeCoord",
               "setNodeDisp", "setNodeVel", "setNodeAccel", "getLoadFactor", "sectionForce",
@@ -350,6 +350,7 @@ namespace poundfe
       define_section_commands(interp, session);
       define_region_commands(interp, session);
       define_domain_commands(interp, session);
+      define_print_commands(interp, session);
       define_unsupported(interp, session);
       define_exit(interp, session);
       define_poundfe_namespace(interp, session);

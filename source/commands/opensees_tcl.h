@@ -5,7 +5,8 @@
 // procedures. The commands are in opensees_tcl_model.cc (model, loads,
 // recorders), opensees_tcl_sections.cc (sections, beam integrations,
 // beam-column elements), opensees_tcl_regions.cc (region, damping by
-// element) and opensees_tcl_analysis.cc (analysis and queries).
+// element), opensees_tcl_print.cc (print, printModel) and
+// opensees_tcl_analysis.cc (analysis and queries).
 #ifndef poundfe_commands_opensees_tcl_h
 #define poundfe_commands_opensees_tcl_h
 
@@ -31,6 +32,23 @@ namespace poundfe
 
   namespace opensees_tcl
   {
+    /// What `print` and `printModel -JSON` write of an element or a
+    /// section beyond its tag (opensees_tcl_print.cc): OpenSees's class
+    /// name and, in OpenSees's order, its fields as JSON texts.
+    struct Printed
+    {
+      std::string                                      type;
+      std::vector<std::pair<std::string, std::string>> fields;
+    };
+
+    /// A number, numbers, a tag and tags as OpenSees's JSON writes them (a
+    /// tag of a material, section or transformation as a string); the
+    /// numbers in the shortest text that reads back to them.
+    std::string json_number(double value);
+    std::string json_numbers(const std::vector<double> &values);
+    std::string json_tag(int tag);
+    std::string json_tags(const std::vector<int> &tags);
+
     /// What a script has built and asked for so far.
     struct Session
     {
@@ -69,6 +87,8 @@ namespace poundfe
       double                         open_torsion = 0; // its GJ (3D)
       /// Every command defined, and whether poundfe implements it.
       std::map<std::string, bool> commands;
+      /// What print writes of each element and section (by tag).
+      std::map<int, Printed> printed_elements, printed_sections;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
       /// The -mat tags of each zeroLength and twoNodeLink (their gap rows).
@@ -190,6 +210,8 @@ namespace poundfe
     void define_analysis_commands(Tcl_Interp *interp, Session &session);
     /// region (opensees_tcl_regions.cc).
     void define_region_commands(Tcl_Interp *interp, Session &session);
+    /// print and printModel (opensees_tcl_print.cc).
+    void define_print_commands(Tcl_Interp *interp, Session &session);
     /// reset (opensees_tcl_domain.cc).
     void define_domain_commands(Tcl_Interp *interp, Session &session);
     void define_poundfe_commands(Tcl_Interp *interp, Session &session);

@@ -78,6 +78,7 @@ namespace poundfe
           no_more_words(w, what);
           check_recorders(s, tag, false);
           s.domain.remove_element(tag);
+          s.printed_elements.erase(tag);
         }
       else if (what == "node")
         {

@@ -11,6 +11,8 @@
 
 #include "opensees_tcl.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -64,6 +66,8 @@ namespace poundfe
         s.link_materials.clear();
         stop_observers(s);
         s.max_cuts = 0;
+        s.printed_elements.clear();
+        s.printed_sections.clear();
       }
 
       void
@@ -319,7 +323,7 @@ namespace poundfe
       }
 
       void
-      elastic_beam_column(opensees::Domain &d, Words &w)
+      elastic_beam_column(opensees::Domain &d, Words &w, Printed &printed)
       {
         const bool three = d.ndm == 3 && d.ndf == 6;
         if ((d.ndm != 2 || d.ndf != 3) && !three)
@@ -365,6 +369,22 @@ namespace poundfe
         add_member_mass(d, tag, nodes, rho, mass);
         for (auto &m : d.lumped_masses)
           m.ground_load_twice |= m.element == tag && !three;
+        // ElasticBeam2d and ElasticBeam3d::Print's fields (release: 0, both ends fixed)
+        printed.type = three ? "ElasticBeam3d" : "ElasticBeam2d";
+        printed.fields = {{"E", json_number(section.E)}};
+        if (three)
+          printed.fields.emplace_back("G", json_number(section.G));
+        printed.fields.emplace_back("A", json_number(section.A));
+        if (three)
+          printed.fields.insert(printed.fields.end(), {{"Jx", json_number(section.J)},
+                                                       {"Iy", json_number(section.Iy)}});
+        printed.fields.insert(printed.fields.end(), {{"Iz", json_number(section.Iz)},
+                                                     {"massperlength", json_number(rho)}});
+        if (three)
+          printed.fields.insert(printed.fields.end(), {{"releasez", "0"}, {"releasey", "0"}});
+        else
+          printed.fields.emplace_back("release", "0");
+        printed.fields.emplace_back("crdTransformation", json_tag(transf));
       }
 
       void
@@ -394,9 +414,42 @@ namespace poundfe
           unsupported("element zeroLength option '" + option + "'");
       }
 
+      /// The transMatrix of ZeroLength and ZeroLengthSection::Print: the
+      /// rows x, y = (x cross yp) cross x, x cross yp, each of unit length
+      /// (their setUp).
+      std::string
+      trans_matrix(const std::array<double, 3> &x_given, const std::array<double, 3> &yp)
+      {
+        using V         = Eigen::Vector3d;
+        const V x       = V(x_given[0], x_given[1], x_given[2]);
+        const V z       = x.cross(V(yp[0], yp[1], yp[2]));
+        const V rows[3] = {x.normalized(), z.cross(x).normalized(), z.normalized()};
+        std::string matrix = "[";
+        for (unsigned int i = 0; i < 3; ++i)
+          matrix += (i ? ", " : "") + json_numbers({rows[i][0], rows[i][1], rows[i][2]});
+        return matrix + "]";
+      }
+
+      /// ZeroLength::Print's fields: its materials, the names of their
+      /// directions and its transMatrix.
+      std::vector<std::pair<std::string, std::string>>
+      zero_length_fields(const opensees::ZeroLengthData &z, const unsigned int ndm)
+      {
+        std::string names = "[";
+        for (std::size_t i = 0; i < z.directions.size(); ++i)
+          {
+            // OpenSees keeps direction 3 of a 2D model as 6 (Mz)
+            const int dof = z.directions[i] == 3 && ndm == 2 ? 6 : z.directions[i];
+            const char *const all[] = {"P", "Vy", "Vz", "T", "My", "Mz"};
+            names += (i ? ", \"" : "\"") + std::string(dof >= 1 && dof <= 6 ? all[dof - 1] : "") + "\"";
+          }
+        return {{"materials", json_tags(z.materials)}, {"dof", names + "]"},
+                {"transMatrix", trans_matrix(z.x, z.y)}};
+      }
+
       /// zeroLength; its tag and -mat tags.
       std::pair<int, std::vector<int>>
-      zero_length(opensees::Domain &d, Words &w)
+      zero_length(opensees::Domain &d, Words &w, Printed &printed)
       {
         const int                tag = w.integer("the element's tag");
         opensees::ZeroLengthData z;
@@ -407,6 +460,7 @@ namespace poundfe
           throw ScriptError("zeroLength " + text_of(tag) +
                             " needs as many -dir directions as -mat materials, at least one");
         add_element(d, opensees::make_zero_length(d, tag, z));
+        printed = {"ZeroLength", zero_length_fields(z, d.ndm)};
         return {tag, z.materials};
       }
 
@@ -617,9 +671,17 @@ namespace poundfe
         return t;
       }
 
+      /// Truss and CorotTruss::Print's fields.
+      std::vector<std::pair<std::string, std::string>>
+      truss_fields(const TrussWords &t)
+      {
+        return {{"A", json_number(t.area)}, {"massperlength", json_number(t.rho)},
+                {"material", json_tag(t.material)}};
+      }
+
       /// truss tag i j A matTag <-rho rho> <-cMass 0|1> <-doRayleigh 0|1>
       void
-      truss(opensees::Domain &d, Words &w)
+      truss(opensees::Domain &d, Words &w, Printed &printed)
       {
         const TrussWords t = truss_words(w, "truss", [](const std::string &, const std::string &o) {
           unsupported("element truss option '" + o + "'");
@@ -632,6 +694,7 @@ namespace poundfe
           add_lumped_mass(d, t.tag, t.nodes, t.rho);
         else if (t.rho != 0)
           unsupported("element truss -rho outside -ndm 2");
+        printed = {"Truss", truss_fields(t)};
       }
 
       /// zeroLengthSection tag i j secTag <-orient x1 x2 x3 yp1 yp2 yp3>
@@ -639,7 +702,7 @@ namespace poundfe
       /// in 2D, OpenSeesPy's -orient x1 x2 x3 too (`python`: y across x);
       /// Tcl wants all six values, as OpenSees 3.8's Tcl command.
       void
-      zero_length_section(opensees::Domain &d, Words &w, const bool python)
+      zero_length_section(opensees::Domain &d, Words &w, const bool python, Printed &printed)
       {
         const int                       tag  = w.integer("the element's tag");
         const std::string               name = "zeroLengthSection " + text_of(tag);
@@ -672,12 +735,13 @@ namespace poundfe
               unsupported("element zeroLengthSection option '" + option + "'");
           }
         add_element(d, opensees::make_zero_length_section(d, tag, z));
+        printed.fields = {{"section", json_tag(z.section)}, {"transMatrix", trans_matrix(z.x, z.y)}};
       }
 
       /// corotTruss tag i j A matTag <-rho r> <-cMass 0|1> <-doRayleigh 0|1>:
       /// -rho lumped (rho L/2 on each end's translations) or consistent.
       void
-      corot_truss(opensees::Domain &d, Words &w)
+      corot_truss(opensees::Domain &d, Words &w, Printed &printed)
       {
         const TrussWords t =
           truss_words(w, "corotTruss", [](const std::string &name, const std::string &option) {
@@ -693,6 +757,7 @@ namespace poundfe
           add_consistent_truss_mass(d, t.tag, t.nodes, t.rho, member_length(d, t.nodes), false);
         else
           add_node_masses(d, t.tag, t.nodes, 0.5 * t.rho * member_length(d, t.nodes));
+        printed.fields = truss_fields(t);
       }
 
       void
@@ -700,29 +765,37 @@ namespace poundfe
       {
         opensees::Domain &d    = model_domain(s);
         const std::string type = w.word("the element's type");
+        int               tag  = 0;
+        Tcl_GetInt(nullptr, w.peek().c_str(), &tag);
+        // twoNodeLink: OpenSees's class name alone (doc/user-guide.md)
+        Printed printed{type == "corotTruss" || type == "CorotTruss" ? "CorotTruss" :
+                        type == "zeroLengthSection"                   ? "ZeroLengthSection" :
+                                                                        "TwoNodeLink",
+                        {}};
         if (type == "elasticBeamColumn")
-          elastic_beam_column(d, w);
+          elastic_beam_column(d, w, printed);
         else if (type == "zeroLength")
           {
-            const auto [tag, materials] = zero_length(d, w);
-            s.link_materials[tag]       = materials;
+            const auto [link_tag, materials] = zero_length(d, w, printed);
+            s.link_materials[link_tag]       = materials;
           }
         else if (type == "truss")
-          truss(d, w);
+          truss(d, w, printed);
         else if (type == "zeroLengthSection")
-          zero_length_section(d, w, s.without_bodies);
+          zero_length_section(d, w, s.without_bodies, printed);
         else if (type == "corotTruss" || type == "CorotTruss")
-          corot_truss(d, w);
+          corot_truss(d, w, printed);
         else if (type == "twoNodeLink")
           {
-            const auto [tag, materials] = two_node_link(d, w);
-            s.link_materials[tag]       = materials;
+            const auto [link_tag, materials] = two_node_link(d, w);
+            s.link_materials[link_tag]       = materials;
           }
         else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
                  type == "dispBeamColumn")
           beam_column_element(s, w, type);
         else
           unsupported("element " + type);
+        s.printed_elements.emplace(tag, printed); // a beam-column's own already there
       }
 
       /// A material's positional parameters in OpenSees's order, with the

@@ -203,6 +203,10 @@ namespace poundfe
             if (!(E > 0 && A > 0 && Iz > 0 && Iy > 0 && G > 0 && J > 0))
               throw ScriptError("section Elastic needs E, A, Iz, Iy, G, J > 0");
             add_section(d, tag, std::make_shared<ElasticSection>(E * A, E * Iz, E * Iy, G * J));
+            s.printed_sections[tag] = {"ElasticSection3d",
+                                       {{"E", json_number(E)}, {"G", json_number(G)},
+                                        {"A", json_number(A)}, {"Jx", json_number(J)},
+                                        {"Iy", json_number(Iy)}, {"Iz", json_number(Iz)}}};
           }
         else if (type == "Elastic")
           {
@@ -212,11 +216,20 @@ namespace poundfe
             if (!(E > 0 && A > 0 && I > 0))
               throw ScriptError("section Elastic needs E, A, Iz > 0");
             add_section(d, tag, std::make_shared<ElasticSection>(E * A, E * I));
+            s.printed_sections[tag] = {"ElasticSection2d", {{"E", json_number(E)},
+                                                            {"A", json_number(A)},
+                                                            {"Iz", json_number(I)}}};
           }
         else if (type == "Fiber" || type == "fiberSec")
-          fibre_section(s, d, w, tag);
+          {
+            fibre_section(s, d, w, tag);
+            s.printed_sections[tag] = {d.ndm == 3 ? "FiberSection3d" : "FiberSection2d", {}};
+          }
         else if (type == "Aggregator")
-          aggregator_section(d, w, tag);
+          {
+            aggregator_section(d, w, tag);
+            s.printed_sections[tag] = {"SectionAggregator", {}};
+          }
         else
           unsupported("section " + type);
       }
@@ -409,6 +422,33 @@ namespace poundfe
               unsupported("element " + type + " option '" + option + "'");
           }
       }
+      /// ForceBeamColumn2d/3d and DispBeamColumn2d/3d::Print's fields: the
+      /// section of each integration point (HingeRadau: I, the interior
+      /// four times, J, as OpenSees's), the integration's own Print.
+      Printed
+      beam_column_printed(const std::string &type, const unsigned int ndm,
+                          const opensees::IntegrationSpec &rule, const double rho,
+                          const int transf)
+      {
+        using Kind = opensees::IntegrationSpec::Kind;
+        std::vector<int> sections(rule.n_points, rule.section);
+        std::string integration = rule.kind == Kind::lobatto ? "{\"type\": \"Lobatto\"}" :
+                                                               "{\"type\": \"Legendre\"}";
+        if (rule.kind == Kind::hinge_radau)
+          {
+            sections = {rule.section_i, rule.section, rule.section,
+                        rule.section,   rule.section, rule.section_j};
+            integration = "{\"type\": \"HingeRadau\", \"lpI\": " +
+                          json_number(rule.hinge_length_i) +
+                          ", \"lpJ\": " + json_number(rule.hinge_length_j) + "}";
+          }
+        return {(type == "dispBeamColumn" ? "DispBeamColumn" : "ForceBeamColumn") +
+                  std::string(ndm == 3 ? "3d" : "2d"),
+                {{"sections", json_tags(sections)},
+                 {"integration", integration},
+                 {"massperlength", json_number(rho)},
+                 {"crdTransformation", json_tag(transf)}}};
+      }
     } // namespace
 
     void
@@ -459,6 +499,7 @@ namespace poundfe
         add_element(d,
                     opensees::make_beam_column_2d(d, tag, nodes, kind, t->second, rule, iteration));
       add_member_mass(d, tag, nodes, rho, mass);
+      s.printed_elements[tag] = beam_column_printed(type, d.ndm, rule, rho, transf);
     }
 
     void

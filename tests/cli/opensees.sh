@@ -29,6 +29,8 @@
 #     a DOF the node lacks or of a pattern's sp: one line naming the file
 #     and line, exit 1, no
 #     recorder file left.
+#  4. printModel and print against OpenSees 3.8's files of the same script
+#     (tests/opensees/print_model.py), their files, their refusals.
 #   opensees.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
 poundfe=$1 corpus=$2 python=$3
@@ -829,4 +831,50 @@ analysis Static
 puts "analyze [analyze 1]"
 TCL
 step_fails "a load of 2e308" "element 1: its forces are not finite"
+# 4. printModel and print: tests/opensees/print_model.tcl against OpenSees
+#    3.8's files of the same script (tests/opensees/print_model.py: the JSON
+#    read with json, numbers to 1e-12; the node text the same bytes); the
+#    comparison fails on a value changed by one digit; a second
+#    printModel -JSON replaces the file, print appends; the element text;
+#    -file into a missing directory and a node that does not exist: one
+#    line naming the file and line, exit 1, nothing written.
+mkdir -p "$work/print"
+"$poundfe" opensees "$corpus/print_model.tcl" "$work/print" > "$work/print/log" 2>&1 \
+  || { cat "$work/print/log"; fail "print_model: poundfe opensees exited $?"; }
+"$python" "$corpus/print_model.py" "$work/print" "$corpus/print_model_opensees" \
+  || fail "print_model: differs from OpenSees's files"
+mkdir -p "$work/print_changed"
+cp "$work/print/"* "$work/print_changed/"
+sed -i 's/"Iz": 0.00025/"Iz": 0.00026/' "$work/print_changed/model_2d.json"
+grep -q '"Iz": 0.00026' "$work/print_changed/model_2d.json" || fail "print_model: no Iz to change"
+"$python" "$corpus/print_model.py" "$work/print_changed" "$corpus/print_model_opensees" \
+  > /dev/null 2>&1 && fail "print_model: a changed Iz passes"
+cat > "$work/print/again.tcl" <<TCL
+model basic -ndm 2 -ndf 3
+node 1 0.0 0.0
+node 2 0.0 3.0
+geomTransf Linear 1
+element elasticBeamColumn 1 1 2 0.01 2.0e11 1.0e-4 1
+printModel -JSON -file $work/print/again.json
+printModel -JSON -file $work/print/again.json
+print -file $work/print/ele.txt -ele 1
+print -file $work/print/ele.txt -ele 1
+TCL
+"$poundfe" opensees "$work/print/again.tcl" > "$work/print/again.log" 2>&1 \
+  || { cat "$work/print/again.log"; fail "printModel twice: exit $?"; }
+"$python" -c "import json, sys; json.load(open(sys.argv[1]))" "$work/print/again.json" \
+  || fail "printModel -JSON twice: not one JSON document"
+[ "$(grep -c '^Element: 1 ElasticBeam2d$' "$work/print/ele.txt")" = 2 ] \
+  && grep -q "$(printf '^\tIz: 1e-04$')" "$work/print/ele.txt" \
+  || { cat "$work/print/ele.txt"; fail "print -ele: not appended in its layout"; }
+for case in "printModel -JSON -file $work/print/none/m.json|the directory '$work/print/none' does not exist" \
+            "print -file $work/print/n.txt -node 9|print: node 9 does not exist"; do
+  printf 'model basic -ndm 2 -ndf 3\nnode 1 0.0 0.0\n%s\n' "${case%%|*}" > "$work/print/bad.tcl"
+  "$poundfe" opensees "$work/print/bad.tcl" > "$work/print/bad.out" 2> "$work/print/bad.err"
+  status=$?
+  [ $status = 1 ] && [ "$(wc -l < "$work/print/bad.err")" = 1 ] \
+    && grep -q "bad.tcl:3: .*${case#*|}" "$work/print/bad.err" \
+    || { cat "$work/print/bad.err"; fail "${case%%|*}: exit $status, not one line naming it"; }
+done
+[ ! -e "$work/print/none" ] && [ ! -e "$work/print/n.txt" ] || fail "print: a refused print wrote"
 echo "opensees: ok"

@@ -10,6 +10,7 @@ zeroLengthSection (OpenSeesPy's 2D -orient) and corotTruss against their
 closed forms, rigidLink beam and an elasticBeamColumn's -cMass against
 theirs."""
 
+import json
 import math
 import os
 import shutil
@@ -160,18 +161,58 @@ class ConventionsTest(TestCase):
         ops.fix(7, True, True, False)  # a bool is an integer, as OpenSeesPy takes it
 
     def test_unsupported_command(self):
-        self.assertIn("printModel", ops.__all__)
+        self.assertIn("printA", ops.__all__)
         with self.assertRaises(ops.OpenSeesError) as raised:
-            ops.printModel()  # the line named below
+            ops.printA()  # the line named below
         line = sys._getframe().f_lineno - 1
         error = raised.exception
-        self.assertEqual(str(error), f"printModel: poundfe does not support it ({__file__}, line {line})")
-        self.assertEqual((error.command, error.file, error.line), ("printModel", __file__, line))
+        self.assertEqual(str(error), f"printA: poundfe does not support it ({__file__}, line {line})")
+        self.assertEqual((error.command, error.file, error.line), ("printA", __file__, line))
         self.assertIs(ops.OpenSeesError, poundfe._opensees.OpenSeesError)
         self.assertFalse(issubclass(ops.OpenSeesError, ValueError))  # as OpenSeesPy's: an Exception
         with self.assertRaises(AttributeError):
             ops.notAnOpenSeesCommand  # noqa: B018
         self.assertNotIn("exit", ops.__all__)  # a script's commands only
+
+    def test_print_model_json(self):
+        """printModel -JSON as OpenSeesPy's: the model's numbers as given here,
+        in OpenSees's layout, read back with json (exact: shortest round-trip
+        text); print -node appends OpenSees's node text to its file."""
+        ops.wipe()
+        ops.model('basic', '-ndm', 2, '-ndf', 3)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, 0.3, 3.1, '-mass', 12.7, 12.7, 0.0)
+        ops.fix(1, 1, 1, 1)
+        ops.geomTransf('PDelta', 4)
+        ops.uniaxialMaterial('Steel02', 5, 355.1, 2.1e5, 0.013, 18.5, 0.9, 0.15)
+        ops.element('elasticBeamColumn', 3, 1, 2, 0.0123, 2.07e11, 2.5e-4, 4)
+        ops.element('truss', 6, 1, 2, 0.0051, 5)
+        with tempfile.TemporaryDirectory() as work:
+            path = os.path.join(work, "model.json")
+            ops.printModel('-JSON', '-file', path)
+            with open(path) as f:
+                model = json.load(f)["StructuralAnalysisModel"]
+            ops.print('-file', os.path.join(work, "nodes.txt"), '-node', 1)
+            ops.print('-file', os.path.join(work, "nodes.txt"), '-node', 1)
+            with open(os.path.join(work, "nodes.txt")) as f:
+                nodes = f.read()
+        self.assertEqual(model["geometry"]["nodes"],
+                         [{"name": 1, "ndf": 3, "crd": [0.0, 0.0]},
+                          {"name": 2, "ndf": 3, "crd": [0.3, 3.1], "mass": [12.7, 12.7, 0.0]}])
+        self.assertEqual(model["geometry"]["elements"],
+                         [{"name": 3, "type": "ElasticBeam2d", "nodes": [1, 2], "E": 2.07e11,
+                           "A": 0.0123, "Iz": 2.5e-4, "massperlength": 0, "release": 0,
+                           "crdTransformation": "4"},
+                          {"name": 6, "type": "Truss", "nodes": [1, 2], "A": 0.0051,
+                           "massperlength": 0, "material": "5"}])
+        self.assertEqual(model["properties"]["uniaxialMaterials"],
+                         [{"name": "5", "type": "Steel02", "E": 2.1e5, "fy": 355.1, "b": 0.013,
+                           "R0": 18.5, "cR1": 0.9, "cR2": 0.15, "a1": 0, "a2": 1, "a3": 0,
+                           "a4": 1, "sigini": 0}])
+        self.assertEqual(model["properties"]["crdTransformations"],
+                         [{"name": "4", "type": "PDeltaCrdTransf2d"}])
+        node_1 = "\n Node: 1\n\tCoordinates  : 0 0 \n\tDisps: 0 0 0 \n\tVelocities   : 0 0 0 \n\n"
+        self.assertEqual(nodes, node_1 * 2)
 
     def test_errors_name_command_and_line(self):
         sdof()

@@ -1,0 +1,45 @@
+#!/usr/bin/env python3
+"""printModel -JSON and print -node of tests/opensees/print_model.tcl
+against OpenSees 3.8's own files of the same script (print_model_opensees/).
+
+    print_model.py OUTPUT_DIR REFERENCE_DIR
+
+Each JSON file is read with Python's json: the same keys, lists of the same
+length, the same strings, and numbers equal to 1e-12 of their magnitude
+(OpenSees writes 6 significant digits; the script's values have fewer, so
+both files hold the same decimals, and 1e-12 leaves room for ElasticPP's
+eps_y, which OpenSees writes as (E eps_y)/E). The node text must be the
+same bytes. Exit 1 naming the first difference."""
+import json
+import os
+import sys
+
+
+def differences(a, b, where):
+    if isinstance(a, dict) and isinstance(b, dict):
+        if list(a) != list(b):
+            return [f"{where}: keys {list(a)} != {list(b)}"]
+        return [d for k in a for d in differences(a[k], b[k], f"{where}.{k}")]
+    if isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            return [f"{where}: {len(a)} items != {len(b)}"]
+        return [d for i, (x, y) in enumerate(zip(a, b)) for d in differences(x, y, f"{where}[{i}]")]
+    numbers = (int, float)
+    if isinstance(a, numbers) and isinstance(b, numbers) and not isinstance(a, bool):
+        return [] if abs(a - b) <= 1e-12 * max(abs(a), abs(b)) else [f"{where}: {a} != {b}"]
+    return [] if a == b else [f"{where}: {a!r} != {b!r}"]
+
+
+def main(output, reference):
+    for name in ("model_2d.json", "model_3d.json"):
+        with open(os.path.join(output, name)) as f, open(os.path.join(reference, name)) as g:
+            found = differences(json.load(f), json.load(g), name)
+        if found:
+            sys.exit("\n".join(found[:5]))
+    with open(os.path.join(output, "nodes.txt")) as f, open(os.path.join(reference, "nodes.txt")) as g:
+        if f.read() != g.read():
+            sys.exit("nodes.txt differs from OpenSees's")
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:3])
