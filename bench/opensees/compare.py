@@ -295,6 +295,15 @@ CASES = {
     # gable's member and nodes, and (2d) a truss -cMass on moved nodes
     "rayleigh_later_2d": ("rayleigh_later.tcl", ["2d"], 1e-9),
     "rayleigh_later_3d": ("rayleigh_later.tcl", ["3d"], 1e-9),
+    # `reset` after a fibre forceBeamColumn was made on a moved node, then
+    # the static stage again: the member's first update after the reset is
+    # the linear one (initialFlag = 0) and Newton comes back to the state
+    # before it
+    "moved_member_reset_2d_linear": ("moved_member_reset.tcl", ["2d", "Linear"], 1e-9),
+    "moved_member_reset_2d_pdelta": ("moved_member_reset.tcl", ["2d", "PDelta"], 1e-9),
+    "moved_member_reset_2d_corotational": ("moved_member_reset.tcl", ["2d", "Corotational"], 1e-9),
+    "moved_member_reset_3d_linear": ("moved_member_reset.tcl", ["3d", "Linear"], 1e-9),
+    "moved_member_reset_3d_pdelta": ("moved_member_reset.tcl", ["3d", "PDelta"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -199,10 +199,11 @@ namespace poundfe
     trial_u = committed_u = GlobalVector::Zero();
     transf.update(trial_u);
     // the virgin state: q = 0 and the initial tangent, from one evaluation
-    // at v = 0 that the sections forget
+    // at v = 0 that the sections and the basic state forget
     basic_state(transf.basic_deformation(), trial.basic_force, trial.basic_stiffness);
     for (const auto &s : sections)
       s->revert();
+    forget_reset_evaluation();
     trial.force      = transf.global_force(trial.basic_force);
     trial.stiffness  = transf.global_tangent(trial.basic_force, trial.basic_stiffness);
     virgin_stiffness = trial.stiffness;

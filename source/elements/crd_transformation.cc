@@ -2,6 +2,7 @@
 // global end displacements and its basic system (equations in the header).
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/crd_transformation.h>
+#include <poundfe/elements/displaced_chord.h>
 
 #include <Eigen/Geometry>
 
@@ -103,8 +104,7 @@ namespace poundfe
                                             const GlobalVector    &made)
     : type(kind)
     , u_made(made)
-    , chord0((node_j + offset_j) - (node_i + offset_i) +
-             made.template segment<dim>(n_node_dofs(dim)) - made.template segment<dim>(0))
+    , chord0(displaced_chord<dim>(node_i + offset_i, node_j + offset_j, made))
     , length0(chord0.norm())
     , offsets(rigid_offset_matrix<dim>(offset_i, offset_j))
     , has_offsets(offset_i.norm() > 0 || offset_j.norm() > 0)

@@ -30,6 +30,7 @@
 // its CrdTransformation keeps (u_made).
 #include <poundfe/base/exceptions.h>
 #include <poundfe/elements/beam_column.h>
+#include <poundfe/elements/displaced_chord.h>
 #include <poundfe/opensees/opensees_domain.h>
 #include <poundfe/opensees/opensees_section_links.h>
 #include <poundfe/sections/aggregator_section.h>
@@ -322,11 +323,12 @@ namespace poundfe
       {
         const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
         const CrdTransformation<2>::GlobalVector made = displacements_when_made(domain, nodes, 3);
-        if (a[0] + made[0] == b[0] + made[3] && a[1] + made[1] == b[1] + made[4])
+        const Eigen::Vector2d i(a[0], a[1]), j(b[0], b[1]);
+        // the transformation's own length and test (!(L > 0)), to the bit
+        if (!(displaced_chord<2>(i, j, made).norm() > 0))
           throw ScriptError("element " + std::to_string(tag) + " has zero length");
         const Eigen::Vector2d zero = Eigen::Vector2d::Zero();
-        CrdTransformation<2>  transformation(kind, {a[0], a[1]}, {b[0], b[1]}, zero, zero,
-                                            Eigen::Vector3d::UnitZ(), made);
+        CrdTransformation<2>  transformation(kind, i, j, zero, zero, Eigen::Vector3d::UnitZ(), made);
         // OpenSees's own tangent: a script's damping on K_t or K_c takes it
         transformation.use_opensees_tangent();
         return transformation;
@@ -362,8 +364,8 @@ namespace poundfe
       const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
       const CrdTransformation<3>::GlobalVector made = displacements_when_made(domain, nodes, 6);
       const Eigen::Vector3d i(a[0], a[1], a[2]), j(b[0], b[1], b[2]);
-      const Eigen::Vector3d chord = j + made.segment<3>(6) - i - made.segment<3>(0);
-      if (chord.isZero(0))
+      const Eigen::Vector3d chord = displaced_chord<3>(i, j, made);
+      if (!(chord.norm() > 0))
         throw ScriptError("element " + std::to_string(tag) + " has zero length");
       const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
       if (!(chord.cross(v).norm() > 0))

@@ -16,6 +16,7 @@
 // and -8, and N/L [[1, -1], [-1, 1]] on the DOFs (1, 7) and (2, 8) of the
 // stiffness (N without its variation, as OpenSees's); the response
 // localForce is k_l u_l without those shears (ElasticBeam3d::getResponse).
+#include <poundfe/elements/displaced_chord.h>
 #include <poundfe/opensees/opensees_domain.h>
 
 #include <Eigen/Geometry>
@@ -32,12 +33,12 @@ namespace poundfe
                 const std::array<int, 2>    &nodes,
                 const std::array<double, 3> &vecxz,
                 double                      &L,
-                const Eigen::Vector3d       &shift)
+                const Eigen::VectorXd       &u_made)
     {
       const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
-      Eigen::Vector3d x(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
-      x += shift;
-      L = x.norm();
+      Eigen::Vector3d x = displaced_chord<3>(Eigen::Vector3d(a[0], a[1], a[2]),
+                                             Eigen::Vector3d(b[0], b[1], b[2]), u_made);
+      L                 = x.norm();
       if (!(L > 0))
         throw ScriptError("element " + std::to_string(tag) + " has zero length");
       x /= L;
@@ -96,9 +97,8 @@ namespace poundfe
         {
           // made on nodes that may have moved: along and as long as the
           // member is then, measured from then (displacements_when_made)
-          u_made                    = displacements_when_made(domain, nodes, 6);
-          const Eigen::Matrix3d r   = member_axes(domain, tag, nodes, vecxz, L,
-                                                u_made.segment<3>(6) - u_made.segment<3>(0));
+          u_made                  = displacements_when_made(domain, nodes, 6);
+          const Eigen::Matrix3d r = member_axes(domain, tag, nodes, vecxz, L, u_made);
           R.setZero(12, 12);
           for (unsigned int block = 0; block < 4; ++block)
             R.block<3, 3>(3 * block, 3 * block) = r;

@@ -200,6 +200,9 @@ namespace poundfe
     virtual void commit_basic() {}
     virtual void revert_basic() {}
     virtual void reset_basic() {}
+    /// After reset's evaluation at v = 0: forget what it left in the basic
+    /// state, as the sections forget it (default: nothing to forget).
+    virtual void forget_reset_evaluation() {}
     /// Whether the sections carry the uniform load (force-based: s_p), or
     /// the fixed-end forces q0 are added to q (displacement-based).
     virtual bool sections_carry_load() const { return false; }
@@ -309,6 +312,15 @@ namespace poundfe
       initialised = false;
     }
     void reset_basic() override;
+    /// OpenSees's revertToStart leaves initialFlag = 0: the next update (the
+    /// domain's, at the nodes' zero displacements) is then the linear first
+    /// one, q = F_0^-1 v with the sections at zero, whatever v is (it is not
+    /// 0 for a member made on nodes that had moved).
+    void forget_reset_evaluation() override
+    {
+      if (opensees)
+        revert_basic();
+    }
     bool sections_carry_load() const override { return true; }
 
   private:

@@ -488,13 +488,14 @@ namespace poundfe
     {
       double A = 0, E = 0, G = 0, J = 0, Iy = 0, Iz = 0;
     };
-    /// A 3D member's local axes as the rows of R (x = (X_j - X_i + shift)/L,
-    /// y = vecxz × x / |vecxz × x|, z = x × y) and its length L; shift is
-    /// u_j - u_i of a member made on nodes that have moved (zero otherwise);
-    /// ScriptError when L is 0 or vecxz is along x.
+    /// A 3D member's local axes as the rows of R (x along its displaced
+    /// chord, elements/displaced_chord.h, of length L; y = vecxz × x /
+    /// |vecxz × x|, z = x × y); u_made: its nodes' 12 displacements when it
+    /// was made (zero on nodes that have not moved); ScriptError when L is 0
+    /// or vecxz is along x.
     Eigen::Matrix3d member_axes(const Domain &domain, int tag, const std::array<int, 2> &nodes,
                                 const std::array<double, 3> &vecxz, double &L,
-                                const Eigen::Vector3d &shift = Eigen::Vector3d::Zero());
+                                const Eigen::VectorXd &u_made = Eigen::VectorXd::Zero(12));
     /// A beam-column's consistent mass (-cMass; OpenSees 3.8's
     /// ElasticBeam2d/3d and DispBeamColumn2d/3d::getMass): the cubic
     /// Hermitian mass rho L/420 [...] of each bending plane, rho L/6 [2 1;
