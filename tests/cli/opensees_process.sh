@@ -6,7 +6,8 @@
 #     (143, 130), one message, and no recorder file, complete or temporary
 #     (*.out.tmp), left behind;
 #  2. under mpirun -np 2 each rank runs the script: getPID and getNP give
-#     each its file, and an error all ranks make is printed once (rank 0);
+#     each its file; an error is printed by every rank that has it, "rank 1: "
+#     before rank 1's (an error of rank 1 alone too);
 #  3. a recorder's write error (its temporary a link to /dev/full: every
 #     write fails with ENOSPC) found by the writer thread after the
 #     script's last record names the recorder, its file and the analysis
@@ -71,11 +72,23 @@ OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
   fail "mpirun: the script's error exited 0"
 [ "$(cat "$work/rank0.txt" 2> /dev/null)" = "0 of 2" ] || fail "mpirun: rank 0's file"
 [ "$(cat "$work/rank1.txt" 2> /dev/null)" = "1 of 2" ] || fail "mpirun: rank 1's file"
-n=$(grep -c "node: no model yet" "$work/ranks.log")
-[ "$n" -eq 1 ] || { cat "$work/ranks.log"; fail "mpirun: the error printed $n times, not once"; }
+n0=$(grep -c "^poundfe: error: .*node: no model yet" "$work/ranks.log")
+n1=$(grep -c "^rank 1: poundfe: error: .*node: no model yet" "$work/ranks.log")
+[ "$n0" -eq 1 ] && [ "$n1" -eq 1 ] ||
+  { cat "$work/ranks.log"; fail "mpirun: the error printed $n0 times by rank 0, $n1 by rank 1, not once each"; }
 "$poundfe" opensees "$work/ranks.tcl" "$work" > /dev/null 2>&1
 [ "$(cat "$work/rank0.txt")" = "0 of 1" ] || fail "alone: getPID 0, getNP 1"
-echo "ok   mpirun -np 2: one file per rank (getPID, getNP), the error printed once"
+# an error of rank 1 alone: printed by rank 1, with its rank
+cat > "$work/own.tcl" <<'TCL'
+if {[getPID] == 1} { node 1 0.0 }
+TCL
+OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+  "$mpirun" -np 2 "$poundfe" opensees "$work/own.tcl" > "$work/own.log" 2>&1 &&
+  fail "mpirun: rank 1's error exited 0"
+n1=$(grep -c "^rank 1: poundfe: error: .*own.tcl:1: node: no model yet" "$work/own.log")
+n=$(grep -c "node: no model yet" "$work/own.log")
+[ "$n1" -eq 1 ] && [ "$n" -eq 1 ] || { cat "$work/own.log"; fail "mpirun: rank 1's own error not printed once, by rank 1"; }
+echo "ok   mpirun -np 2: one file per rank (getPID, getNP), each rank's error printed by it"
 
 # 3. a write error met by the writer thread (--threads 2) after the last
 # record, and inline: 10 steps of 0.001 s, the last line at t = 0.01 s
