@@ -14,6 +14,8 @@
 #include "opensees_tcl.h"
 
 #include <cmath>
+#include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -25,29 +27,58 @@ namespace poundfe
 {
   namespace opensees_tcl
   {
-    void
-    Session::finish_recorders()
+    namespace
     {
-      for (std::size_t i = 0; i < recorders.size(); ++i)
-        finish_recorder(i);
-      recorders.clear();
-      recorder_tags.clear();
-    }
+      /// What `step` on recorder `tag` threw, if anything: a write error
+      /// as the script's error naming the recorder and its last line's time.
+      template <typename Step>
+      std::exception_ptr
+      recorder_failure(const opensees::Recorder &recorder, const int tag, const Step &step)
+      {
+        try
+          {
+            step();
+            return nullptr;
+          }
+        catch (const OutputError &e)
+          {
+            std::ostringstream message;
+            message << "recorder " << tag << ": " << e.what() << " (its lines up to time "
+                    << recorder.last_line_time() << ")";
+            return std::make_exception_ptr(opensees::ScriptError(message.str()));
+          }
+        catch (...)
+          {
+            return std::current_exception();
+          }
+      }
+    } // namespace
 
     void
-    Session::finish_recorder(const std::size_t i)
+    Session::finish_recorders(const std::size_t first, const std::size_t last)
     {
-      try
+      std::exception_ptr failure;
+      for (std::size_t i = first; i < last && !failure; ++i)
+        failure = recorder_failure(*recorders[i], recorder_tags[i], [&]() {
+          recorders[i]->write_out();
+        });
+      std::size_t placed = first; // recorders first to placed - 1 are in place
+      while (placed < last && !failure)
         {
-          recorders[i]->finish();
+          failure = recorder_failure(*recorders[placed], recorder_tags[placed], [&]() {
+            recorders[placed]->put_in_place();
+          });
+          if (!failure)
+            ++placed;
         }
-      catch (const OutputError &e)
-        {
-          std::ostringstream message;
-          message << "recorder " << recorder_tags[i] << ": " << e.what()
-                  << " (its lines up to time " << recorders[i]->last_line_time() << ")";
-          throw opensees::ScriptError(message.str());
-        }
+      if (failure) // all of the files or none
+        for (std::size_t i = first; i < placed; ++i)
+          if (const std::string path = recorders[i]->placed_path(); !path.empty())
+            std::remove(path.c_str());
+      recorders.erase(recorders.begin() + first, recorders.begin() + last);
+      recorder_tags.erase(recorder_tags.begin() + first, recorder_tags.begin() + last);
+      if (failure)
+        std::rethrow_exception(failure);
     }
 
     void

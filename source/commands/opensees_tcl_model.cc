@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -40,10 +41,20 @@ namespace poundfe
         return session.domain;
       }
 
+      /// The model and analysis wiped also when a recorder's file fails
+      /// (Session::finish_recorders), whose error then follows.
       void
       wipe(Session &s)
       {
-        s.finish_recorders();
+        std::exception_ptr failure;
+        try
+          {
+            s.finish_recorders();
+          }
+        catch (...)
+          {
+            failure = std::current_exception();
+          }
         if (s.analysis)
           {
             s.counts.steps += s.analysis->counts.steps;
@@ -60,6 +71,8 @@ namespace poundfe
         s.current_pattern = -1;
         s.open_fibres.reset();
         s.fibres = nullptr;
+        if (failure)
+          std::rethrow_exception(failure);
       }
 
       void
@@ -1540,10 +1553,8 @@ namespace poundfe
             const auto it = std::find(s.recorder_tags.begin(), s.recorder_tags.end(), tag);
             if (it == s.recorder_tags.end())
               throw ScriptError("recorder " + text_of(tag) + " does not exist");
-            const auto i = it - s.recorder_tags.begin();
-            s.finish_recorder(i);
-            s.recorders.erase(s.recorders.begin() + i);
-            s.recorder_tags.erase(it);
+            const std::size_t i = it - s.recorder_tags.begin();
+            s.finish_recorders(i, i + 1);
           }
         else if (what == "loadPattern" || what == "pattern")
           {

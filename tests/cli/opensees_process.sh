@@ -12,6 +12,12 @@
 #     write fails with ENOSPC) found by the writer thread after the
 #     script's last record names the recorder, its file and the analysis
 #     time of the failed lines, exit 1, no file left.
+#  4. the same error with two recorders, the failing one first or second:
+#     at the script's end and at `wipe`, no recorder file at all (each
+#     temporary is written out before any file is put in place); a `wipe`
+#     or `remove recorder` whose error the script catches is done all the
+#     same (the model wiped, the recorder gone) and its error, with the
+#     time of the failed lines, is not reported again at the script's end.
 #   opensees_process.sh POUNDFE MPIRUN
 set -u
 poundfe=$1 mpirun=$2
@@ -104,4 +110,65 @@ for threads in 2 1; do
   leftover=$(ls "$work" | grep '^disp\.out')
   [ -z "$leftover" ] || fail "write error (--threads $threads) left $leftover"
   echo "ok   a write error after the last record (--threads $threads): recorder 0, t = 0.01, exit 1"
+done
+
+# 4. two recorders, disp.out failing (7 steps of 0.02 s: its lines up to 0.14)
+cat > "$work/twin.tcl" <<'TCL'
+lassign $argv dir order mode
+proc build {dir names} {
+  model basic -ndm 1 -ndf 1
+  node 1 0.0; node 2 1.0; fix 1 1
+  mass 2 1.0
+  uniaxialMaterial Elastic 1 4.0
+  element zeroLength 1 1 2 -mat 1 -dir 1
+  timeSeries Linear 1
+  pattern Plain 1 1 { load 2 1.0 }
+  foreach name $names { recorder Node -file [file join $dir $name] -time -node 2 -dof 1 disp }
+  system BandGeneral; numberer Plain; constraints Plain; test NormUnbalance 1e-6 25
+  integrator Newmark 0.5 0.25; algorithm Linear; analysis Transient
+}
+build $dir $order
+analyze 7 0.02
+switch $mode {
+  wipe { wipe }
+  catchwipe {
+    if {![catch {wipe} message]} { error "wipe did not fail" }
+    puts "caught: $message"
+    puts "time after wipe: [getTime]"
+    build $dir again.out
+    analyze 2 0.02
+  }
+  catchremove {
+    if {![catch {remove recorder [lsearch $order disp.out]} message]} { error "remove did not fail" }
+    puts "caught: $message"
+    analyze 5 0.02
+  }
+}
+TCL
+for order in "ok.out disp.out" "disp.out ok.out"; do
+  [ "${order%% *}" = disp.out ] && tag=0 || tag=1
+  error="recorder $tag: disk full: cannot write $work/disp.out: No space left on device (its lines up to time 0.14)"
+  for mode in end wipe catchwipe catchremove; do
+    rm -f "$work"/*.out "$work"/*.out.tmp
+    ln -s /dev/full "$work/disp.out.tmp"
+    "$poundfe" opensees "$work/twin.tcl" "$work" "$order" $mode > "$work/twin.log" 2>&1
+    status=$?
+    files=$(cd "$work" && ls *.out 2> /dev/null | tr '\n' ' ')
+    case $mode in
+      end | wipe) expected_status=1 expected_files="" ;;
+      catchwipe) expected_status=0 expected_files="again.out " ;;
+      catchremove) expected_status=0 expected_files="ok.out " ;;
+    esac
+    what="write error, recorders $order, $mode"
+    [ "$status" -eq $expected_status ] || { cat "$work/twin.log"; fail "$what: exit $status"; }
+    [ "$files" = "$expected_files" ] || { cat "$work/twin.log"; fail "$what: files '$files', not '$expected_files'"; }
+    n=$(grep -cF "$error" "$work/twin.log")
+    [ "$n" -eq 1 ] || { cat "$work/twin.log"; fail "$what: '$error' $n times, not once"; }
+    case $mode in
+      catchwipe) grep -qx "time after wipe: 0.000000" "$work/twin.log" ||
+        { cat "$work/twin.log"; fail "$what: the model not wiped"; } ;;
+      catchremove) [ "$(wc -l < "$work/ok.out")" -eq 12 ] || fail "$what: ok.out not 7 + 5 lines" ;;
+    esac
+  done
+  echo "ok   a write error with recorders $order: at the end and at wipe no file; caught wipe, remove done, reported once"
 done
