@@ -11,9 +11,9 @@
 // (getPID and getNP say which and how many): rank 0 alone prints the
 // warnings, which all ranks give alike; a failure is printed by every rank
 // that has it (a script may differ per rank), "rank N: " before it on the
-// ranks other than 0. SIGINT or SIGTERM
-// stops the script at its next OpenSees command or analysis step: the
-// recorders' temporaries are removed (no file of an unfinished script
+// ranks other than 0. SIGINT or SIGTERM stops the script at its next
+// analysis step or Tcl's next safe point, through any `catch`
+// (opensees_command.cc, CancelOnSignal): the recorders' temporaries are removed (no file of an unfinished script
 // appears, as after an error) and the exit status is 128 + the signal.
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/launched_job.h>

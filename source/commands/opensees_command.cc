@@ -8,11 +8,13 @@
 // files in place. poundfe's additions live in the namespace poundfe::.
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/interruption_hook.h>
 #include <poundfe/base/lean_assert.h>
 #include <poundfe/commands/command.h>
 
 #include "opensees_tcl.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -185,6 +187,11 @@ namespace poundfe
               throw Interrupted();
             definition.procedure(*definition.session, words);
             return TCL_OK;
+          }
+        catch (const Interrupted &e) // uncaught by the script's `catch` (CancelOnSignal)
+          {
+            Tcl_CancelEval(interp, nullptr, nullptr, TCL_CANCEL_UNWIND);
+            message = e.what();
           }
         catch (const InputError &e) // a material's parameter
           {
@@ -370,6 +377,48 @@ namespace poundfe
           Tcl_DeleteInterp(interp);
         }
       };
+
+      /// SIGINT or SIGTERM also in a loop of Tcl's own commands (`while 1
+      /// {}`), which calls no OpenSees command to see the flag: the signal
+      /// handler marks a Tcl async handler (Tcl_AsyncMark, Tcl's call for
+      /// signal handlers), which Tcl runs at its next safe point and which
+      /// cancels the script with TCL_CANCEL_UNWIND, which no `catch` stops.
+      class CancelOnSignal
+      {
+      public:
+        explicit CancelOnSignal(Tcl_Interp *interp)
+          : handler(Tcl_AsyncCreate(cancel, interp))
+        {
+          marked.store(handler);
+          set_interruption_hook(mark);
+          if (interruption_requested()) // before the hook was set
+            Tcl_AsyncMark(handler);
+        }
+        ~CancelOnSignal()
+        {
+          set_interruption_hook(nullptr);
+          marked.store(nullptr);
+          Tcl_AsyncDelete(handler);
+        }
+        CancelOnSignal(const CancelOnSignal &)            = delete;
+        CancelOnSignal &operator=(const CancelOnSignal &) = delete;
+
+      private:
+        static int
+        cancel(ClientData interp, Tcl_Interp *, const int code)
+        {
+          Tcl_CancelEval(static_cast<Tcl_Interp *>(interp), nullptr, nullptr, TCL_CANCEL_UNWIND);
+          return code;
+        }
+        static void
+        mark()
+        {
+          if (const Tcl_AsyncHandler h = marked.load())
+            Tcl_AsyncMark(h);
+        }
+        static inline std::atomic<Tcl_AsyncHandler> marked{nullptr};
+        const Tcl_AsyncHandler                      handler;
+      };
     } // namespace
 
     void
@@ -405,7 +454,10 @@ namespace poundfe
       set_arguments(interp, run.arguments);
       Session session(run.err);
       define_commands(interp, session);
-      const int code = Tcl_EvalFile(interp, script.c_str());
+      const int code = [&]() {
+        const CancelOnSignal cancel_on_signal(interp);
+        return Tcl_EvalFile(interp, script.c_str());
+      }();
       if (interruption_requested()) // the recorders' temporaries go with the session
         throw Interrupted();
       if (code != TCL_OK && !session.exited)

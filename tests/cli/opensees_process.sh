@@ -18,6 +18,10 @@
 #     or `remove recorder` whose error the script catches is done all the
 #     same (the model wiped, the recorder gone) and its error, with the
 #     time of the failed lines, is not reported again at the script's end.
+#  5. a signal ends within a second a script that catches the analysis's
+#     error in a loop (`catch {analyze 1 0.001}`), a loop of Tcl's own
+#     commands (`while 1 {}`, also inside a `catch`) and a Tcl `after`:
+#     exit 143 or 130, no recorder file left.
 #   opensees_process.sh POUNDFE MPIRUN
 set -u
 poundfe=$1 mpirun=$2
@@ -171,4 +175,50 @@ for order in "ok.out disp.out" "disp.out ok.out"; do
     esac
   done
   echo "ok   a write error with recorders $order: at the end and at wipe no file; caught wipe, remove done, reported once"
+done
+
+# 5. signals in loops that catch, and in Tcl's own loops
+cat > "$work/loops.tcl" <<'TCL'
+model basic -ndm 1 -ndf 1
+node 1 0.0; node 2 1.0; fix 1 1
+mass 2 1.0
+uniaxialMaterial Elastic 1 4.0
+element zeroLength 1 1 2 -mat 1 -dir 1
+timeSeries Linear 1
+pattern Plain 1 1 { load 2 1.0 }
+recorder Node -file [lindex $argv 0] -time -node 2 -dof 1 disp
+system BandGeneral; numberer Plain; constraints Plain; test NormUnbalance 1e-6 25
+integrator Newmark 0.5 0.25; algorithm Linear; analysis Transient
+analyze 1 0.001
+switch [lindex $argv 1] {
+  catch { while 1 { if {[catch {analyze 1 0.001} message]} { puts "caught: $message" } } }
+  while { while 1 {} }
+  catchwhile { while 1 { catch { while 1 {} } } }
+  after { after 100000 }
+}
+TCL
+for case in "catch TERM" "catch INT" "while TERM" "catchwhile INT" "after TERM" "catch TERM 2" "while INT 2"; do
+  read -r loop signal threads <<< "$case"
+  threads_option=()
+  [ -z "$threads" ] || threads_option=(--threads "$threads")
+  rm -f "$work"/disp.out*
+  timeout -s KILL 60 "$poundfe" opensees "${threads_option[@]}" "$work/loops.tcl" "$work/disp.out" "$loop" \
+    > "$work/loop.log" 2>&1 &
+  pid=$!
+  for _ in $(seq 1 1500); do [ -e "$work/disp.out.tmp" ] && break; sleep 0.02; done
+  [ -e "$work/disp.out.tmp" ] || fail "$loop: the script did not start in 30 s"
+  sleep 0.3 # inside the loop
+  start=$(date +%s%N)
+  kill -s "$signal" "$(pgrep -P "$pid" -x poundfe || echo "$pid")"
+  wait "$pid"
+  status=$?
+  elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+  expected=$((128 + $(kill -l "$signal")))
+  what="SIG$signal in '$loop' (--threads ${threads:-1})"
+  [ "$status" -eq "$expected" ] || { cat "$work/loop.log"; fail "$what: exit $status, not $expected"; }
+  [ "$elapsed_ms" -lt 1000 ] || fail "$what: ended $elapsed_ms ms after the signal"
+  grep -q "^caught" "$work/loop.log" && { cat "$work/loop.log"; fail "$what: the script caught the interruption"; }
+  leftover=$(ls "$work" | grep '^disp\.out')
+  [ -z "$leftover" ] || fail "$what left $leftover"
+  echo "ok   $what: exit $status after $elapsed_ms ms, no recorder file left"
 done
