@@ -29,45 +29,66 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL $*"; exit 1; }
 
-# A spring and mass driven by a linear ramp, recorded at every step: long
-# enough (1e8 steps) that only a signal ends it.
+# A spring and mass driven by a linear ramp, its displacement recorded at
+# every step into each of the files named (the scripts below source it).
+cat > "$work/spring.tcl" <<'TCL'
+proc spring {files} {
+  model basic -ndm 1 -ndf 1
+  node 1 0.0; node 2 1.0; fix 1 1
+  mass 2 1.0
+  uniaxialMaterial Elastic 1 4.0
+  element zeroLength 1 1 2 -mat 1 -dir 1
+  timeSeries Linear 1
+  pattern Plain 1 1 { load 2 1.0 }
+  foreach file $files { recorder Node -file $file -time -node 2 -dof 1 disp }
+  system BandGeneral; numberer Plain; constraints Plain; test NormUnbalance 1e-6 25
+  integrator Newmark 0.5 0.25; algorithm Linear; analysis Transient
+}
+TCL
+# long enough (1e8 steps) that only a signal ends it
 cat > "$work/long.tcl" <<'TCL'
-model basic -ndm 1 -ndf 1
-node 1 0.0; node 2 1.0; fix 1 1
-mass 2 1.0
-uniaxialMaterial Elastic 1 4.0
-element zeroLength 1 1 2 -mat 1 -dir 1
-timeSeries Linear 1
-pattern Plain 1 1 { load 2 1.0 }
-recorder Node -file [lindex $argv 0] -time -node 2 -dof 1 disp
-system BandGeneral; numberer Plain; constraints Plain; test NormUnbalance 1e-6 25
-integrator Newmark 0.5 0.25; algorithm Linear; analysis Transient
+source [file join [file dirname [info script]] spring.tcl]
+spring [lindex $argv 0]
 analyze [lindex $argv 1] 0.001
 TCL
+
+# interrupted WHAT SIGNAL THREADS PAUSE SCRIPT ARGS...: runs the script,
+# sends the signal PAUSE s after the recorder's temporary disp.out.tmp
+# appears, and checks exit 128 + the signal, the one message, and no
+# disp.out or disp.out.tmp left; sets elapsed_ms (from the signal to the exit).
+interrupted() {
+  local what=$1 signal=$2 threads=$3 pause=$4
+  shift 4
+  rm -f "$work"/disp.out*
+  # --threads 2: the program's module (source/program.cc) runs the script
+  local threads_option=()
+  [ "$threads" = 1 ] || threads_option=(--threads "$threads")
+  timeout -s KILL 120 "$poundfe" opensees "${threads_option[@]}" "$@" > "$work/signal.log" 2>&1 &
+  local pid=$!
+  for _ in $(seq 1 1500); do [ -e "$work/disp.out.tmp" ] && break; sleep 0.02; done
+  [ -e "$work/disp.out.tmp" ] || fail "$what: the script did not start in 30 s"
+  sleep "$pause"
+  local start
+  start=$(date +%s%N)
+  # the timeout's child: poundfe itself
+  kill -s "$signal" "$(pgrep -P "$pid" -x poundfe || echo "$pid")"
+  wait "$pid"
+  local status=$?
+  elapsed_ms=$((($(date +%s%N) - start) / 1000000))
+  local expected=$((128 + $(kill -l "$signal")))
+  [ "$status" -eq "$expected" ] || { cat "$work/signal.log"; fail "$what: exit $status, not $expected"; }
+  grep -q "^poundfe: interrupted by a signal$" "$work/signal.log" ||
+    { cat "$work/signal.log"; fail "$what: no message"; }
+  local leftover
+  leftover=$(ls "$work" | grep '^disp\.out')
+  [ -z "$leftover" ] || fail "$what left $leftover"
+}
 
 # 1. signals: sent once the recorder's temporary exists (the analysis runs)
 for case in "TERM 1" "INT 1" "TERM 2"; do
   read -r signal threads <<< "$case"
-  rm -f "$work"/disp.out*
-  # --threads 2: the program's module (source/program.cc) runs the script
-  threads_option=()
-  [ "$threads" = 1 ] || threads_option=(--threads "$threads")
-  timeout -s KILL 120 "$poundfe" opensees "${threads_option[@]}" "$work/long.tcl" "$work/disp.out" 100000000 \
-    > "$work/signal.log" 2>&1 &
-  pid=$!
-  for _ in $(seq 1 1500); do [ -e "$work/disp.out.tmp" ] && break; sleep 0.02; done
-  [ -e "$work/disp.out.tmp" ] || fail "SIG$signal: the analysis did not start in 30 s"
-  # the timeout's child: poundfe itself
-  kill -s "$signal" "$(pgrep -P "$pid" -x poundfe || echo "$pid")"
-  wait "$pid"
-  status=$?
-  expected=$((128 + $(kill -l "$signal")))
-  [ "$status" -eq "$expected" ] || { cat "$work/signal.log"; fail "SIG$signal: exit $status, not $expected"; }
-  grep -q "^poundfe: interrupted by a signal$" "$work/signal.log" ||
-    { cat "$work/signal.log"; fail "SIG$signal: no message"; }
-  leftover=$(ls "$work" | grep '^disp\.out')
-  [ -z "$leftover" ] || fail "SIG$signal left $leftover"
-  echo "ok   SIG$signal during analyze (--threads $threads): exit $status, no recorder file left"
+  interrupted "SIG$signal" "$signal" "$threads" 0 "$work/long.tcl" "$work/disp.out" 100000000
+  echo "ok   SIG$signal during analyze (--threads $threads): exit 128 + the signal, no recorder file left"
 done
 
 # 2. mpirun -np 2: a file per rank, then one error message for both ranks
@@ -118,19 +139,9 @@ done
 
 # 4. two recorders, disp.out failing (7 steps of 0.02 s: its lines up to 0.14)
 cat > "$work/twin.tcl" <<'TCL'
+source [file join [file dirname [info script]] spring.tcl]
 lassign $argv dir order mode
-proc build {dir names} {
-  model basic -ndm 1 -ndf 1
-  node 1 0.0; node 2 1.0; fix 1 1
-  mass 2 1.0
-  uniaxialMaterial Elastic 1 4.0
-  element zeroLength 1 1 2 -mat 1 -dir 1
-  timeSeries Linear 1
-  pattern Plain 1 1 { load 2 1.0 }
-  foreach name $names { recorder Node -file [file join $dir $name] -time -node 2 -dof 1 disp }
-  system BandGeneral; numberer Plain; constraints Plain; test NormUnbalance 1e-6 25
-  integrator Newmark 0.5 0.25; algorithm Linear; analysis Transient
-}
+proc build {dir names} { spring [lmap name $names { file join $dir $name }] }
 build $dir $order
 analyze 7 0.02
 switch $mode {
@@ -179,16 +190,8 @@ done
 
 # 5. signals in loops that catch, and in Tcl's own loops
 cat > "$work/loops.tcl" <<'TCL'
-model basic -ndm 1 -ndf 1
-node 1 0.0; node 2 1.0; fix 1 1
-mass 2 1.0
-uniaxialMaterial Elastic 1 4.0
-element zeroLength 1 1 2 -mat 1 -dir 1
-timeSeries Linear 1
-pattern Plain 1 1 { load 2 1.0 }
-recorder Node -file [lindex $argv 0] -time -node 2 -dof 1 disp
-system BandGeneral; numberer Plain; constraints Plain; test NormUnbalance 1e-6 25
-integrator Newmark 0.5 0.25; algorithm Linear; analysis Transient
+source [file join [file dirname [info script]] spring.tcl]
+spring [lindex $argv 0]
 analyze 1 0.001
 switch [lindex $argv 1] {
   catch { while 1 { if {[catch {analyze 1 0.001} message]} { puts "caught: $message" } } }
@@ -199,26 +202,9 @@ switch [lindex $argv 1] {
 TCL
 for case in "catch TERM" "catch INT" "while TERM" "catchwhile INT" "after TERM" "catch TERM 2" "while INT 2"; do
   read -r loop signal threads <<< "$case"
-  threads_option=()
-  [ -z "$threads" ] || threads_option=(--threads "$threads")
-  rm -f "$work"/disp.out*
-  timeout -s KILL 60 "$poundfe" opensees "${threads_option[@]}" "$work/loops.tcl" "$work/disp.out" "$loop" \
-    > "$work/loop.log" 2>&1 &
-  pid=$!
-  for _ in $(seq 1 1500); do [ -e "$work/disp.out.tmp" ] && break; sleep 0.02; done
-  [ -e "$work/disp.out.tmp" ] || fail "$loop: the script did not start in 30 s"
-  sleep 0.3 # inside the loop
-  start=$(date +%s%N)
-  kill -s "$signal" "$(pgrep -P "$pid" -x poundfe || echo "$pid")"
-  wait "$pid"
-  status=$?
-  elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
-  expected=$((128 + $(kill -l "$signal")))
   what="SIG$signal in '$loop' (--threads ${threads:-1})"
-  [ "$status" -eq "$expected" ] || { cat "$work/loop.log"; fail "$what: exit $status, not $expected"; }
+  interrupted "$what" "$signal" "${threads:-1}" 0.3 "$work/loops.tcl" "$work/disp.out" "$loop"
   [ "$elapsed_ms" -lt 1000 ] || fail "$what: ended $elapsed_ms ms after the signal"
-  grep -q "^caught" "$work/loop.log" && { cat "$work/loop.log"; fail "$what: the script caught the interruption"; }
-  leftover=$(ls "$work" | grep '^disp\.out')
-  [ -z "$leftover" ] || fail "$what left $leftover"
-  echo "ok   $what: exit $status after $elapsed_ms ms, no recorder file left"
+  grep -q "^caught" "$work/signal.log" && { cat "$work/signal.log"; fail "$what: the script caught the interruption"; }
+  echo "ok   $what: exit 128 + the signal after $elapsed_ms ms, no recorder file left"
 done
