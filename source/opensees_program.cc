@@ -8,10 +8,12 @@
 // reads no parameter file (commands/dispatch.cc): the script and its
 // arguments, no output directory, messages and exit statuses alike
 // (commands/command_failure.cc). Under mpirun every rank runs the script
-// (getPID and getNP say which and how many), and rank 0 alone prints the
-// refusals all ranks make alike, as the program does. SIGINT or SIGTERM
-// stops the script at its next OpenSees command or analysis step: the
-// recorders' temporaries are removed (no file of an unfinished script
+// (getPID and getNP say which and how many): rank 0 alone prints the
+// warnings, which all ranks give alike; a failure is printed by every rank
+// that has it (a script may differ per rank), "rank N: " before it on the
+// ranks other than 0. SIGINT or SIGTERM stops the script at its next
+// analysis step or Tcl's next safe point, through any `catch`
+// (opensees_command.cc, CancelOnSignal): the recorders' temporaries are removed (no file of an unfinished script
 // appears, as after an error) and the exit status is 128 + the signal.
 #include <poundfe/base/interruption.h>
 #include <poundfe/base/launched_job.h>
@@ -51,7 +53,7 @@ poundfe_opensees_main(int argc, char **argv)
     {
       const CommandFailure failure = command_failure(std::current_exception());
       std::cout.flush();
-      (failure.any_rank ? std::cerr : err) << failure.message << std::flush;
+      std::cerr << from_this_rank(failure.message) << std::flush;
       return failure.status;
     }
 }

@@ -211,13 +211,22 @@ namespace
   /// `err`: 1 for a refused command line or bad input, 2 for a numerical
   /// failure. The message goes in one write after the report is flushed:
   /// mpirun forwards every write of a rank as it comes, and a message
-  /// written in pieces could be split by lines of the report.
+  /// written in pieces could be split by lines of the report. A script's
+  /// failure (`script` true: the OpenSees interpreter, whose ranks may run
+  /// differently) is printed by every rank that has it, as
+  /// opensees_program.cc does.
   int
-  exit_status_of(const std::exception_ptr &thrown, std::ostream &err, const bool several_ranks)
+  exit_status_of(const std::exception_ptr &thrown,
+                 std::ostream             &err,
+                 const bool                several_ranks,
+                 const bool                script)
   {
     const poundfe::CommandFailure failure = poundfe::command_failure(thrown);
     std::cout.flush();
-    (failure.any_rank ? std::cerr : err) << failure.message << std::flush;
+    if (script)
+      std::cerr << poundfe::from_this_rank(failure.message) << std::flush;
+    else
+      (failure.any_rank ? std::cerr : err) << failure.message << std::flush;
     if (failure.any_rank && several_ranks)
       MPI_Abort(MPI_COMM_WORLD, 1);
     return failure.status;
@@ -266,6 +275,7 @@ poundfe_program_main(int argc, char **argv)
   catch (...)
     {
       return exit_status_of(std::current_exception(), err,
-                            mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1);
+                            mpi && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1,
+                            command->has(CommandRule::script_arguments));
     }
 }

@@ -1,6 +1,8 @@
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/interruption_hook.h>
 #include <poundfe/base/interruption_scope.h>
 
+#include <atomic>
 #include <csignal>
 
 namespace poundfe
@@ -17,6 +19,9 @@ namespace poundfe
     bool stop_at_safe_points = false;
     /// request_stop: a stop without a signal
     volatile std::sig_atomic_t stop_requested = 0;
+    /// set_interruption_hook (a lock-free atomic: read in the handler)
+    std::atomic<void (*)()> hook{nullptr};
+    static_assert(std::atomic<void (*)()>::is_always_lock_free);
 
     extern "C" void
     on_signal(const int signal)
@@ -30,8 +35,16 @@ namespace poundfe
       for (int i = 0; i < 2; ++i)
         if (installed[i])
           sigaction(signals[i], &action, nullptr);
+      if (void (*const call)() = hook.load())
+        call();
     }
   } // namespace
+
+  void
+  set_interruption_hook(void (*const call)())
+  {
+    hook.store(call);
+  }
 
   void
   install_interruption_handlers()

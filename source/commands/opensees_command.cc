@@ -8,12 +8,16 @@
 // files in place. poundfe's additions live in the namespace poundfe::.
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/interruption.h>
+#include <poundfe/base/interruption_hook.h>
 #include <poundfe/base/lean_assert.h>
 #include <poundfe/commands/command.h>
 
 #include "opensees_tcl.h"
 
+#include <atomic>
 #include <cmath>
+#include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -25,29 +29,58 @@ namespace poundfe
 {
   namespace opensees_tcl
   {
-    void
-    Session::finish_recorders()
+    namespace
     {
-      for (std::size_t i = 0; i < recorders.size(); ++i)
-        finish_recorder(i);
-      recorders.clear();
-      recorder_tags.clear();
-    }
+      /// What `step` on recorder `tag` threw, if anything: a write error
+      /// as the script's error naming the recorder and its last line's time.
+      template <typename Step>
+      std::exception_ptr
+      recorder_failure(const opensees::Recorder &recorder, const int tag, const Step &step)
+      {
+        try
+          {
+            step();
+            return nullptr;
+          }
+        catch (const OutputError &e)
+          {
+            std::ostringstream message;
+            message << "recorder " << tag << ": " << e.what() << " (its lines up to time "
+                    << recorder.last_line_time() << ")";
+            return std::make_exception_ptr(opensees::ScriptError(message.str()));
+          }
+        catch (...)
+          {
+            return std::current_exception();
+          }
+      }
+    } // namespace
 
     void
-    Session::finish_recorder(const std::size_t i)
+    Session::finish_recorders(const std::size_t first, const std::size_t last)
     {
-      try
+      std::exception_ptr failure;
+      for (std::size_t i = first; i < last && !failure; ++i)
+        failure = recorder_failure(*recorders[i], recorder_tags[i], [&]() {
+          recorders[i]->write_out();
+        });
+      std::size_t placed = first; // recorders first to placed - 1 are in place
+      while (placed < last && !failure)
         {
-          recorders[i]->finish();
+          failure = recorder_failure(*recorders[placed], recorder_tags[placed], [&]() {
+            recorders[placed]->put_in_place();
+          });
+          if (!failure)
+            ++placed;
         }
-      catch (const OutputError &e)
-        {
-          std::ostringstream message;
-          message << "recorder " << recorder_tags[i] << ": " << e.what()
-                  << " (its lines up to time " << recorders[i]->last_line_time() << ")";
-          throw opensees::ScriptError(message.str());
-        }
+      if (failure) // all of the files or none
+        for (std::size_t i = first; i < placed; ++i)
+          if (const std::string path = recorders[i]->placed_path(); !path.empty())
+            std::remove(path.c_str());
+      recorders.erase(recorders.begin() + first, recorders.begin() + last);
+      recorder_tags.erase(recorder_tags.begin() + first, recorder_tags.begin() + last);
+      if (failure)
+        std::rethrow_exception(failure);
     }
 
     void
@@ -154,6 +187,11 @@ namespace poundfe
               throw Interrupted();
             definition.procedure(*definition.session, words);
             return TCL_OK;
+          }
+        catch (const Interrupted &e) // uncaught by the script's `catch` (CancelOnSignal)
+          {
+            Tcl_CancelEval(interp, nullptr, nullptr, TCL_CANCEL_UNWIND);
+            message = e.what();
           }
         catch (const InputError &e) // a material's parameter
           {
@@ -340,6 +378,48 @@ namespace poundfe
           Tcl_DeleteInterp(interp);
         }
       };
+
+      /// SIGINT or SIGTERM also in a loop of Tcl's own commands (`while 1
+      /// {}`), which calls no OpenSees command to see the flag: the signal
+      /// handler marks a Tcl async handler (Tcl_AsyncMark, Tcl's call for
+      /// signal handlers), which Tcl runs at its next safe point and which
+      /// cancels the script with TCL_CANCEL_UNWIND, which no `catch` stops.
+      class CancelOnSignal
+      {
+      public:
+        explicit CancelOnSignal(Tcl_Interp *interp)
+          : handler(Tcl_AsyncCreate(cancel, interp))
+        {
+          marked.store(handler);
+          set_interruption_hook(mark);
+          if (interruption_requested()) // before the hook was set
+            Tcl_AsyncMark(handler);
+        }
+        ~CancelOnSignal()
+        {
+          set_interruption_hook(nullptr);
+          marked.store(nullptr);
+          Tcl_AsyncDelete(handler);
+        }
+        CancelOnSignal(const CancelOnSignal &)            = delete;
+        CancelOnSignal &operator=(const CancelOnSignal &) = delete;
+
+      private:
+        static int
+        cancel(ClientData interp, Tcl_Interp *, const int code)
+        {
+          Tcl_CancelEval(static_cast<Tcl_Interp *>(interp), nullptr, nullptr, TCL_CANCEL_UNWIND);
+          return code;
+        }
+        static void
+        mark()
+        {
+          if (const Tcl_AsyncHandler h = marked.load())
+            Tcl_AsyncMark(h);
+        }
+        static inline std::atomic<Tcl_AsyncHandler> marked{nullptr};
+        const Tcl_AsyncHandler                      handler;
+      };
     } // namespace
 
     void
@@ -376,7 +456,10 @@ namespace poundfe
       set_arguments(interp, run.arguments);
       Session session(run.err);
       define_commands(interp, session);
-      const int code = Tcl_EvalFile(interp, script.c_str());
+      const int code = [&]() {
+        const CancelOnSignal cancel_on_signal(interp);
+        return Tcl_EvalFile(interp, script.c_str());
+      }();
       if (interruption_requested()) // the recorders' temporaries go with the session
         throw Interrupted();
       if (code != TCL_OK && !session.exited)

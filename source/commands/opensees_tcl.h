@@ -113,12 +113,17 @@ namespace poundfe
       int            exit_status     = 0;
       std::ostream  &warnings;
 
-      /// Every recorder's file written and closed (wipe, the script's end).
-      void finish_recorders();
-      /// Recorder i's file written and closed. A write error, which the
-      /// writer thread may have met after the script's last record, names
-      /// the recorder and the time of the last line the failed write held.
-      void finish_recorder(std::size_t i);
+      /// Every recorder's file written and put in place (wipe, the
+      /// script's end, remove recorders).
+      void finish_recorders() { finish_recorders(0, recorders.size()); }
+      /// Recorders first to last - 1 finished and removed, also when one
+      /// fails (its error is then reported once): every temporary file is
+      /// written out first, and the files are put in place only if none
+      /// failed (those already in place are removed if one then fails).
+      /// A write error, which the writer thread may have met after the
+      /// script's last record, names the recorder and the time of the
+      /// last line the failed write held.
+      void finish_recorders(std::size_t first, std::size_t last);
       /// Every recorder records the committed state.
       void record();
     };

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -43,10 +44,20 @@ namespace poundfe
         return session.domain;
       }
 
+      /// The model and analysis wiped also when a recorder's file fails
+      /// (Session::finish_recorders), whose error then follows.
       void
       wipe(Session &s)
       {
-        s.finish_recorders();
+        std::exception_ptr failure;
+        try
+          {
+            s.finish_recorders();
+          }
+        catch (...)
+          {
+            failure = std::current_exception();
+          }
         if (s.analysis)
           {
             s.counts.steps += s.analysis->counts.steps;
@@ -68,6 +79,8 @@ namespace poundfe
         s.max_cuts = 0;
         s.printed_elements.clear();
         s.printed_sections.clear();
+        if (failure)
+          std::rethrow_exception(failure);
       }
 
       void
@@ -1690,10 +1703,8 @@ namespace poundfe
             const auto it = std::find(s.recorder_tags.begin(), s.recorder_tags.end(), tag);
             if (it == s.recorder_tags.end())
               throw ScriptError("recorder " + text_of(tag) + " does not exist");
-            const auto i = it - s.recorder_tags.begin();
-            s.finish_recorder(i);
-            s.recorders.erase(s.recorders.begin() + i);
-            s.recorder_tags.erase(it);
+            const std::size_t i = it - s.recorder_tags.begin();
+            s.finish_recorders(i, i + 1);
           }
         else if (what == "loadPattern" || what == "pattern")
           {

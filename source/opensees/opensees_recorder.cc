@@ -294,9 +294,9 @@ namespace poundfe
     }
 
     void
-    Recorder::finish()
+    Recorder::write_out()
     {
-      if (!file)
+      if (written_out)
         return;
       if (queue)
         {
@@ -304,9 +304,23 @@ namespace poundfe
           OutputQueue::take_error(*this);
         }
       file->write(buffer.data(), used);
-      used = 0;
+      used        = 0;
+      written_out = true;
+    }
+
+    void
+    Recorder::put_in_place()
+    {
+      if (!written_out || placed)
+        return;
       file->commit();
-      file.reset();
+      placed = true;
+    }
+
+    std::string
+    Recorder::placed_path() const
+    {
+      return placed ? file->path() : std::string();
     }
 
     NodeRecorder::NodeRecorder(NodeRecorderSpec s)

@@ -49,10 +49,10 @@ namespace poundfe
     }
 
     void
-    DriftRecorder::finish()
+    DriftRecorder::write_out()
     {
       if (has_pairs())
-        Recorder::finish();
+        Recorder::write_out();
     }
 
     void
@@ -117,13 +117,13 @@ namespace poundfe
 
     template <typename Values>
     void
-    EnvelopeRecorder<Values>::finish()
+    EnvelopeRecorder<Values>::write_out()
     {
       if (!first)
         for (const auto &row : rows)
           this->write_line(this->recorded_time, row);
       first = true;
-      Values::finish();
+      Values::write_out();
     }
 
     template class EnvelopeRecorder<NodeRecorder>;

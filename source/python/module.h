@@ -27,13 +27,18 @@ namespace poundfe::python
   /// coefficients) and the equations' labels (the shapes' rows).
   pybind11::dict modes_of(const Analysis &analysis);
 
-  /// An exception type `name` of the module m (poundfe.NAME), derived
-  /// from `base`; the module keeps it alive (a handle: nothing is released
-  /// after Python has finalised).
+  /// An exception type `name` of the module m, derived from `base`, named
+  /// `python_module`.NAME, the module where Python finds it again (pickle
+  /// looks the type up by that name); the module m keeps it alive (a
+  /// handle: nothing is released after Python has finalised).
   inline pybind11::handle
-  exception_type(pybind11::module_ &m, const char *name, PyObject *base, const char *doc)
+  exception_type(pybind11::module_ &m,
+                 const char        *name,
+                 PyObject          *base,
+                 const char        *doc,
+                 const char        *python_module = "poundfe")
   {
-    const std::string qualified = std::string("poundfe.") + name;
+    const std::string qualified = std::string(python_module) + "." + name;
     pybind11::object  type      = pybind11::reinterpret_steal<pybind11::object>(
       PyErr_NewExceptionWithDoc(qualified.c_str(), doc, base, nullptr));
     if (!type)

@@ -9,7 +9,7 @@
 // int (or bool, or NumPy integer) an integer, a float (or NumPy float) a
 // real, a str a text, a list, tuple or NumPy array one list word; results
 // come back as float, int, lists of them or None, as OpenSeesPy returns
-// them. A refusal is poundfe.OpenSeesError with the command's message; the
+// them. A refusal is poundfe.opensees.OpenSeesError with the command's message; the
 // Python layer (poundfe/opensees.py) adds the caller's file and line.
 #include "module.h"
 
@@ -134,7 +134,8 @@ namespace poundfe::python
         exception_type(m, "OpenSeesError", PyExc_Exception,
                        "An OpenSees command refused (poundfe.opensees): the message starts with the "
                        "command's name and ends with the caller's file and line (attributes "
-                       "command, file, line).");
+                       "command, file, line).",
+                       "poundfe.opensees");
       m.def("opensees_call", &call, py::arg("name"), py::arg("arguments"),
             "Runs OpenSees command `name` with the tuple `arguments` (poundfe.opensees).");
       m.def(
@@ -156,10 +157,18 @@ namespace poundfe::python
       m.def(
         "opensees_finish",
         []() {
-          if (instance)
-            instance->finish_recorders();
+          try
+            {
+              if (instance)
+                instance->finish_recorders();
+            }
+          catch (const std::exception &e) // a recorder's write error
+            {
+              raise(OpenSeesCommandError("", e.what()));
+            }
         },
-        "Every OpenSees recorder's file written (at the interpreter's exit).");
+        "Every OpenSees recorder's file written (at the interpreter's exit); a "
+        "write error raises OpenSeesError.");
     }
   } // namespace
 } // namespace poundfe::python

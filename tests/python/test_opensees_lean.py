@@ -3,12 +3,16 @@ deal.II is mapped into the process (its /proc/self/maps), and the full
 module poundfe still works beside it, imported first or second, each
 extension with its own interpreter state (the same script's numbers through
 poundfe.opensees and through poundfe.command("opensees") agree exactly).
+poundfe.opensees.OpenSeesError pickles without loading deal.II, and a
+recorder's write error when Python exits is printed once as one.
 
 Each case runs in a fresh interpreter (a subprocess): what a process has
 mapped cannot be unloaded."""
 
 import json
 import os
+import shutil
+import tempfile
 import subprocess
 import sys
 import textwrap
@@ -35,11 +39,16 @@ SPRING = textwrap.dedent("""
 DEAL_II_MAPPED = "sum('libdeal' in line for line in open('/proc/self/maps'))"
 
 
+def python_process(code):
+    """Runs `code` in a fresh python3 with the package these tests import."""
+    environment = dict(os.environ, PYTHONPATH=PACKAGE_DIRECTORY)
+    return subprocess.run([sys.executable, "-c", code], cwd=ROOT, env=environment,
+                          capture_output=True, text=True, timeout=600)
+
+
 def run_python(code):
     """Runs `code` in a fresh python3 with the package these tests import: its stdout."""
-    environment = dict(os.environ, PYTHONPATH=PACKAGE_DIRECTORY)
-    done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, env=environment,
-                          capture_output=True, text=True, timeout=600)
+    done = python_process(code)
     if done.returncode != 0:
         raise AssertionError(f"python3 exited {done.returncode}:\n{done.stderr}")
     return done.stdout
@@ -108,3 +117,66 @@ class LeanImportTest(TestCase):
                 self.assertEqual(first, 2.5)
                 self.assertEqual(second, 5.0)  # LoadControl 1.0: load factor 2 at the second step
                 self.assertEqual([float(v) for v in recorded], [2.5])
+
+
+class OpenSeesErrorTest(TestCase):
+    def test_pickles_without_deal_ii(self):
+        code = textwrap.dedent(f"""
+            import json, pickle
+            import poundfe.opensees as ops
+            ops.wipe()
+            try:
+                ops.node(1, 0.0)
+            except ops.OpenSeesError as error:
+                copy = pickle.loads(pickle.dumps(error))
+                print(json.dumps([type(copy).__module__ + '.' + type(copy).__qualname__,
+                                  type(copy) is ops.OpenSeesError, str(copy) == str(error),
+                                  [copy.command, copy.file, copy.line] ==
+                                  [error.command, error.file, error.line],
+                                  {DEAL_II_MAPPED}]))
+            """)
+        name, same_type, same_message, same_attributes, mapped = json.loads(run_python(code))
+        self.assertEqual(name, "poundfe.opensees.OpenSeesError")
+        self.assertTrue(same_type and same_message and same_attributes)
+        self.assertEqual(mapped, 0, "pickling OpenSeesError mapped deal.II")
+
+    def exit_with_write_error(self, wipe):
+        """A recorder of the spring whose temporary is a link to /dev/full
+        (every write fails: ENOSPC), finished when Python exits or by a
+        wipe the script catches: (the process, the files left)."""
+        directory = tempfile.mkdtemp()
+        path = os.path.join(directory, "disp.out")
+        os.symlink("/dev/full", path + ".tmp")
+        spring = SPRING.replace("assert ops.analyze(1) == 0",
+                                f"ops.recorder('Node', '-file', {path!r}, '-node', 2, '-dof', 1, "
+                                "'disp')\nassert ops.analyze(1) == 0")
+        code = "import poundfe.opensees as ops\n" + spring + textwrap.dedent("""
+            if WIPE:
+                try:
+                    ops.wipe()
+                except ops.OpenSeesError as error:
+                    print('caught:', error)
+            """).replace("WIPE", str(wipe))
+        done = python_process(code)
+        # the analysis's warning (no `test` given) aside
+        done.stderr = "".join(line for line in done.stderr.splitlines(keepends=True)
+                              if not line.startswith("WARNING analysis Static"))
+        left = os.listdir(directory)  # the failed temporary (the link) is removed too
+        shutil.rmtree(directory)
+        return done, left, path
+
+    def test_write_error_at_exit_printed_once(self):
+        done, left, path = self.exit_with_write_error(wipe=False)
+        error = (f"recorder 0: disk full: cannot write {path}: No space left on device "
+                 "(its lines up to time 1)")
+        self.assertEqual(done.stderr, f"poundfe.opensees.OpenSeesError: {error}\n")
+        self.assertEqual(done.returncode, 0)  # Python's: an atexit function cannot change it
+        self.assertEqual(left, [])
+
+    def test_write_error_at_a_caught_wipe_not_again_at_exit(self):
+        done, left, path = self.exit_with_write_error(wipe=True)
+        self.assertRegex(done.stdout, r"^caught: wipe: recorder 0: disk full: cannot write "
+                         r".*\(its lines up to time 1\) \(<string>, line \d+\)\n$")
+        self.assertEqual(done.stderr, "")
+        self.assertEqual(done.returncode, 0)
+        self.assertEqual(left, [])

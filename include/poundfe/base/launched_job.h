@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <string>
 
 namespace poundfe
 {
@@ -29,6 +30,17 @@ namespace poundfe
       if (const char *size = std::getenv(name))
         return std::max(1, std::atoi(size));
     return 1;
+  }
+
+  /// A message as this rank prints it: prefixed "rank N: " on the ranks
+  /// other than 0 of a job of several ranks, so that a rank's own failure
+  /// (a script may differ per rank through getPID) says whose it is.
+  inline std::string
+  from_this_rank(const std::string &message)
+  {
+    const int rank = launched_rank();
+    return rank > 0 && launched_size() > 1 ? "rank " + std::to_string(rank) + ": " + message :
+                                             message;
   }
 } // namespace poundfe
 

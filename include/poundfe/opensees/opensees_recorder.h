@@ -90,8 +90,15 @@ namespace poundfe
       void set_queue(std::shared_ptr<OutputQueue> queue);
       /// One line of the domain's committed state, when it is due.
       virtual void record(const Domain &domain);
-      /// Writes the last lines and puts the file in place.
-      virtual void finish();
+      /// Writes the last lines into its temporary file: the first half of
+      /// finishing, where a write error is met before any file of the
+      /// script is put in place (opensees_tcl.h, Session::finish_recorders).
+      virtual void write_out();
+      /// The second half: the file written out put in place (none when
+      /// write_out wrote none, as a Drift recorder without pairs).
+      void put_in_place();
+      /// The path of its file once put in place, else empty.
+      std::string placed_path() const;
       /// `reset` (OpenSees's Recorder::restart): the Envelope recorders
       /// start their extremes again; the others go on.
       virtual void restart() {}
@@ -132,6 +139,7 @@ namespace poundfe
       int                         precision;
       double                      interval, interval_tolerance, next_time = 0;
       double                      text_time = 0; // last_line_time()
+      bool                        written_out = false, placed = false;
     };
 
     class NodeRecorder : public Recorder
@@ -200,7 +208,7 @@ namespace poundfe
       }
       /// With no pair kept, nothing: no file, as OpenSees's.
       void record(const Domain &domain) override;
-      void finish() override;
+      void write_out() override;
       bool has_pairs() const { return !pairs.empty(); }
 
     private:
@@ -224,7 +232,7 @@ namespace poundfe
     public:
       explicit EnvelopeRecorder(typename Values::Spec spec);
       void record(const Domain &domain) override;
-      void finish() override;
+      void write_out() override;
       void restart() override { first = true; }
 
     private:

@@ -34,7 +34,8 @@ poundfe's additions, Tcl's `poundfe::` commands, are the functions of
 `ops.poundfe.impacts('on')`; `ops.poundfe.impacts('-file', 'impacts.csv')`
 writes them too) and `ops.poundfe.report()`; a setting returns None.
 
-Recorders write their files at `wipe` and when Python exits.
+Recorders write their files at `wipe` and when Python exits (a write error
+then is printed; the exit status stays Python's, doc/python.md).
 """
 
 import atexit
@@ -98,4 +99,18 @@ for _name, _supported in _opensees.opensees_commands():
     __all__.append(_name)
 del _name, _supported
 
-atexit.register(_opensees.opensees_finish)
+
+
+def _finish():
+    """Every recorder's file written when Python exits. Python ignores what
+    an atexit function raises and keeps its exit status: a write error is
+    printed once, as the OpenSeesError it is, and no recorder file appears."""
+    try:
+        _opensees.opensees_finish()
+    except OpenSeesError as error:
+        # sys.stderr itself: `print` here is OpenSees's command
+        sys.stderr.write(f"poundfe.opensees.OpenSeesError: {error}\n")
+        sys.stderr.flush()
+
+
+atexit.register(_finish)
