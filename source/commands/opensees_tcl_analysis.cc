@@ -452,6 +452,9 @@ namespace poundfe
           throw ScriptError("the number of steps must be >= 0");
         if (s.analysis->options().transient)
           s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper), the first step's
+        s.node_vectors.analysed = s.node_vectors.analysed || steps > 0;
+        s.node_vectors.transient_analysed =
+          s.node_vectors.transient_analysed || (steps > 0 && s.analysis->options().transient);
         const auto record = [&]() { s.record(); };
         const auto warn   = [&](const std::string &why) {
           // the test's and the line search's own lines are not warnings
