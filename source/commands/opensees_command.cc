@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <ostream>
 #include <regex>
 #include <sstream>
@@ -133,11 +134,14 @@ namespace poundfe
     Words::integer(const char *what)
     {
       const std::string text = word(what);
-      int               value;
-      if (Tcl_GetIntFromObj(nullptr, objv[next - 1], &value) != TCL_OK)
+      Tcl_WideInt       value;
+      if (Tcl_GetWideIntFromObj(nullptr, objv[next - 1], &value) != TCL_OK)
         throw opensees::ScriptError("expected an integer for " + std::string(what) + ", got '" +
                                     text + "'");
-      return value;
+      // Tcl's int reading wraps 2147483648 to -2147483648: refuse it instead.
+      if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+        throw opensees::ScriptError(std::string(what) + " '" + text + "' is out of range");
+      return static_cast<int>(value);
     }
 
     std::vector<double>

@@ -23,6 +23,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,17 @@ namespace poundfe
       std::map<std::string, bool> commands;
       /// What print writes of each element and section (by tag).
       std::map<int, Printed> printed_elements, printed_sections;
+      /// Which of OpenSees's node vectors exist, since Node::Print writes
+      /// only those: displacements once an element held the node or an
+      /// analysis step ran; velocities once a truss, corotTruss,
+      /// zeroLength or twoNodeLink held it (they ask for them as they are
+      /// made) or a transient step ran, accelerations then too. Kept
+      /// through `remove element` and `wipeAnalysis`, as OpenSees's are.
+      struct NodeVectors
+      {
+        std::set<int> displacements, velocities;
+        bool          analysed = false, transient_analysed = false;
+      } node_vectors;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
       /// The -mat tags of each zeroLength and twoNodeLink (their gap rows).

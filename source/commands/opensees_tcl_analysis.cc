@@ -454,6 +454,9 @@ namespace poundfe
           throw ScriptError("the number of steps must be >= 0");
         if (s.analysis->options().transient)
           s.domain.time_step = dt; // OpenSees's ops_Dt (ViscousDamper), the first step's
+        s.node_vectors.analysed = s.node_vectors.analysed || steps > 0;
+        s.node_vectors.transient_analysed =
+          s.node_vectors.transient_analysed || (steps > 0 && s.analysis->options().transient);
         s.analysis->max_cuts = s.max_cuts;
         const bool transient = s.analysis->options().transient;
         if (transient)

@@ -79,6 +79,7 @@ namespace poundfe
         s.max_cuts = 0;
         s.printed_elements.clear();
         s.printed_sections.clear();
+        s.node_vectors = Session::NodeVectors();
         if (failure)
           std::rethrow_exception(failure);
       }
@@ -773,6 +774,18 @@ namespace poundfe
         printed.fields = truss_fields(t);
       }
 
+      /// The node vectors OpenSees's element makes as it is created.
+      void
+      note_node_vectors(Session &s, const int tag)
+      {
+        const std::vector<int> &nodes = s.domain.elements.at(tag)->node_tags;
+        const std::string      &type  = s.printed_elements.at(tag).type;
+        s.node_vectors.displacements.insert(nodes.begin(), nodes.end());
+        if (type == "Truss" || type == "CorotTruss" || type == "ZeroLength" ||
+            type == "TwoNodeLink")
+          s.node_vectors.velocities.insert(nodes.begin(), nodes.end());
+      }
+
       void
       element(Session &s, Words &w)
       {
@@ -809,6 +822,7 @@ namespace poundfe
         else
           unsupported("element " + type);
         s.printed_elements.emplace(tag, printed); // a beam-column's own already there
+        note_node_vectors(s, tag);
       }
 
       /// A material's positional parameters in OpenSees's order, with the

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -275,42 +276,50 @@ namespace poundfe
         out << '\n';
       }
 
-      /// Whether OpenSees's node holds velocities (Node::Print writes them
-      /// then): a truss, corotTruss, zeroLength or twoNodeLink on it asks
-      /// for them as it is made, a transient analysis for every node.
-      bool
-      holds_velocities(const Session &s, const int node)
+      /// The nodes of a fix, equalDOF or rigidDiaphragm: OpenSees's
+      /// constraints ask for their displacements as they are made. Found
+      /// once per print, so that printing every node stays linear.
+      std::set<int>
+      constrained_nodes(const Session &s)
       {
-        if (s.analysis && s.analysis->options().transient)
-          return true;
-        for (const auto &[tag, element] : s.domain.elements)
+        std::set<int> nodes;
+        for (const auto &[tag, node] : s.domain.nodes)
+          if (std::find(node.fixed.begin(), node.fixed.end(), true) != node.fixed.end())
+            nodes.insert(tag);
+        for (const opensees::EqualDof &e : s.domain.equal_dofs)
+          nodes.insert({e.retained, e.constrained});
+        for (const opensees::Diaphragm &d : s.domain.diaphragms)
           {
-            const std::string &type = s.printed_elements.at(tag).type;
-            const auto        &nodes = element->node_tags;
-            if ((type == "Truss" || type == "CorotTruss" || type == "ZeroLength" ||
-                 type == "TwoNodeLink") &&
-                std::find(nodes.begin(), nodes.end(), node) != nodes.end())
-              return true;
+            nodes.insert(d.retained);
+            nodes.insert(d.constrained.begin(), d.constrained.end());
           }
-        return false;
+        return nodes;
       }
 
       /// Node::Print(s, 0): OpenSees's lines before any analysis (after
       /// one OpenSees adds its DOF numbers, unbalanced load and
       /// reaction, which poundfe does not write: doc/user-guide.md).
       void
-      node_text(std::ostream &out, const Session &s, const opensees::Node &n)
+      node_text(std::ostream        &out,
+                const Session       &s,
+                const opensees::Node &n,
+                const std::set<int> &constrained)
       {
+        const Session::NodeVectors &made = s.node_vectors;
         out << "\n Node: " << n.tag << "\n\tCoordinates  : ";
         vector_text(out, n.coordinates);
-        out << "\tDisps: ";
-        vector_text(out, n.disp);
-        if (holds_velocities(s, n.tag))
+        if (made.analysed || made.displacements.count(n.tag) != 0 ||
+            constrained.count(n.tag) != 0)
+          {
+            out << "\tDisps: ";
+            vector_text(out, n.disp);
+          }
+        if (made.transient_analysed || made.velocities.count(n.tag) != 0)
           {
             out << "\tVelocities   : ";
             vector_text(out, n.vel);
           }
-        if (s.analysis && s.analysis->options().transient)
+        if (made.transient_analysed)
           {
             out << "\tcommitAccels: ";
             vector_text(out, n.accel);
@@ -328,7 +337,7 @@ namespace poundfe
             out << "\n\t Rayleigh Factor: alphaM: " << alpha << "\n\t Rayleigh Forces: ";
             std::vector<double> forces(n.mass.size());
             for (std::size_t i = 0; i < forces.size(); ++i)
-              forces[i] = alpha * n.mass[i] * n.vel[i];
+              forces[i] = 0.0 - alpha * n.mass[i] * n.vel[i]; // -alphaM M v, +0 for a zero mass
             vector_text(out, forces);
           }
         out << '\n';
@@ -396,6 +405,7 @@ namespace poundfe
         if (tags.empty() && r.elements)
           for (const auto &element : s.domain.elements)
             tags.push_back(element.first);
+        const std::set<int> constrained = r.nodes ? constrained_nodes(s) : std::set<int>();
         for (const int tag : tags)
           {
             if (r.nodes && s.domain.nodes.count(tag) == 0)
@@ -403,7 +413,7 @@ namespace poundfe
             if (r.elements && s.domain.elements.count(tag) == 0)
               throw ScriptError("element " + std::to_string(tag) + " does not exist");
             if (r.nodes)
-              node_text(out, s, s.domain.nodes.at(tag));
+              node_text(out, s, s.domain.nodes.at(tag), constrained);
             else
               element_text(out, s, tag);
           }

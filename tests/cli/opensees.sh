@@ -833,7 +833,9 @@ TCL
 step_fails "a load of 2e308" "element 1: its forces are not finite"
 # 4. printModel and print: tests/opensees/print_model.tcl against OpenSees
 #    3.8's files of the same script (tests/opensees/print_model.py: the JSON
-#    read with json, numbers to 1e-12; the node text the same bytes); the
+#    read with json, numbers to 1e-12; the node text the same bytes, also
+#    after a transient analysis with Rayleigh damping,
+#    print_model_rayleigh.tcl); a tag past the int range is refused; the
 #    comparison fails on a value changed by one digit; a second
 #    printModel -JSON replaces the file, print appends; the element text;
 #    -file into a missing directory and a node that does not exist: one
@@ -841,6 +843,10 @@ step_fails "a load of 2e308" "element 1: its forces are not finite"
 mkdir -p "$work/print"
 "$poundfe" opensees "$corpus/print_model.tcl" "$work/print" > "$work/print/log" 2>&1 \
   || { cat "$work/print/log"; fail "print_model: poundfe opensees exited $?"; }
+"$poundfe" opensees "$corpus/print_model_rayleigh.tcl" "$work/print" > "$work/print/log" 2>&1 \
+  || { cat "$work/print/log"; fail "print_model_rayleigh: poundfe opensees exited $?"; }
+grep -q 'Rayleigh Forces: 0.0473154 ' "$work/print/nodes_rayleigh.txt" \
+  || fail "print_model_rayleigh: node 2's Rayleigh force is not -alphaM m v"
 "$python" "$corpus/print_model.py" "$work/print" "$corpus/print_model_opensees" \
   || fail "print_model: differs from OpenSees's files"
 mkdir -p "$work/print_changed"
@@ -868,7 +874,8 @@ TCL
   && grep -q "$(printf '^\tIz: 1e-04$')" "$work/print/ele.txt" \
   || { cat "$work/print/ele.txt"; fail "print -ele: not appended in its layout"; }
 for case in "printModel -JSON -file $work/print/none/m.json|the directory '$work/print/none' does not exist" \
-            "print -file $work/print/n.txt -node 9|print: node 9 does not exist"; do
+            "print -file $work/print/n.txt -node 9|print: node 9 does not exist" \
+            "print -file $work/print/n.txt -node 2147483648|a tag '2147483648' is out of range"; do
   printf 'model basic -ndm 2 -ndf 3\nnode 1 0.0 0.0\n%s\n' "${case%%|*}" > "$work/print/bad.tcl"
   "$poundfe" opensees "$work/print/bad.tcl" > "$work/print/bad.out" 2> "$work/print/bad.err"
   status=$?

@@ -9,7 +9,11 @@ length, the same strings, and numbers equal to 1e-12 of their magnitude
 (OpenSees writes 6 significant digits; the script's values have fewer, so
 both files hold the same decimals, and 1e-12 leaves room for ElasticPP's
 eps_y, which OpenSees writes as (E eps_y)/E). The node text must be the
-same bytes. Exit 1 naming the first difference."""
+same bytes; after the transient analysis of print_model_rayleigh.tcl
+(nodes_rayleigh.txt: velocities, accelerations and Rayleigh forces, which
+OpenSees writes to 6 digits) too, once OpenSees's `unbalanced Load` and
+`ID` lines, which poundfe does not write, are dropped. Exit 1 naming the
+first difference."""
 import json
 import os
 import sys
@@ -39,6 +43,12 @@ def main(output, reference):
     with open(os.path.join(output, "nodes.txt")) as f, open(os.path.join(reference, "nodes.txt")) as g:
         if f.read() != g.read():
             sys.exit("nodes.txt differs from OpenSees's")
+    with open(os.path.join(output, "nodes_rayleigh.txt")) as f, \
+            open(os.path.join(reference, "nodes_rayleigh.txt")) as g:
+        theirs = [line for line in g.read().splitlines(True)
+                  if not line.startswith(("\t unbalanced Load:", "\tID :"))]
+        if f.read() != "".join(theirs):
+            sys.exit("nodes_rayleigh.txt differs from OpenSees's")
 
 
 if __name__ == "__main__":
