@@ -288,7 +288,7 @@ namespace poundfe
             nodes.insert(tag);
         for (const opensees::EqualDof &e : s.domain.equal_dofs)
           nodes.insert({e.retained, e.constrained});
-        for (const opensees::Diaphragm &d : s.domain.diaphragms)
+        for (const opensees::RigidTie &d : s.domain.rigid_ties)
           {
             nodes.insert(d.retained);
             nodes.insert(d.constrained.begin(), d.constrained.end());
