@@ -113,6 +113,10 @@ namespace poundfe
       std::vector<std::size_t> observed_model;
       /// poundfe::stepCutting's most halvings of a failed step (0: off).
       unsigned int max_cuts = 0;
+      /// poundfe::locateEvents's most halvings of a step with a contact
+      /// event (0: off) and the gaps it watches.
+      unsigned int            event_levels = 0;
+      opensees::ContactEvents contact_events;
       int            current_pattern = -1; // the Plain pattern whose body runs
       /// An error in a pattern's body where the file says it is (Tcl's
       /// errorInfo names the `pattern` line): its message, file and line.
@@ -235,6 +239,9 @@ namespace poundfe
     /// poundfe::energy's and poundfe::impacts's start of a transient
     /// `analyze` and their committed step (nothing while both are off).
     void begin_observing(Session &session);
+    /// poundfe::locateEvents's setting and gaps given to the analysis at
+    /// the start of an `analyze`.
+    void begin_locating(Session &session);
     void observe_step(Session &session);
     /// The observers that are on, started again (`reset`), or turned off
     /// (`wipe`).

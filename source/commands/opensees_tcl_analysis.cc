@@ -458,6 +458,8 @@ namespace poundfe
         s.node_vectors.transient_analysed =
           s.node_vectors.transient_analysed || (steps > 0 && s.analysis->options().transient);
         s.analysis->max_cuts = s.max_cuts;
+        if (s.event_levels > 0 || s.analysis->events) // nothing paid while it is off
+          begin_locating(s);
         const bool transient = s.analysis->options().transient;
         if (transient)
           begin_observing(s);

@@ -76,7 +76,8 @@ namespace poundfe
         s.fibres = nullptr;
         s.link_materials.clear();
         stop_observers(s);
-        s.max_cuts = 0;
+        s.max_cuts     = 0;
+        s.event_levels = 0;
         s.printed_elements.clear();
         s.printed_sections.clear();
         s.node_vectors = Session::NodeVectors();

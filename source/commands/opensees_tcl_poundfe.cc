@@ -6,6 +6,12 @@
 //   poundfe::impacts ?-file F.csv?  from the `on` (or the last reset) on
 //   poundfe::stepCutting on N | off a failed step of `analyze n dt` tried
 //                                   again in halved sub-steps, N halvings at most
+//   poundfe::locateEvents on ?R? | off | query
+//                                   a transient step of `analyze n dt` in which
+//                                   a gap's contact starts or ends redone in
+//                                   halves down to dt/2^R (R 1 to 12, 4 when
+//                                   not given: Contact/Event refinement's
+//                                   range and default); query: R, 0 when off
 // (opensees/opensees_energy.h gives the equations). A gap element is a
 // zeroLength or twoNodeLink row whose material is a gap law (ElasticPPGap,
 // ImpactMaterial, Hertzdamp, JankowskiImpact, ViscoelasticGap, or a MinMax
@@ -210,7 +216,45 @@ namespace poundfe
         if (!w.done())
           throw opensees::ScriptError("unknown word '" + w.peek() + "' after " + state);
       }
+
+      /// Contact/Event refinement's default and largest value
+      /// (integration/time_integration_parameters.cc), which `poundfe run`
+      /// applies to the same events.
+      constexpr int default_event_levels = 4, max_event_levels = 12;
+
+      void
+      locate_events(Session &s, Words &w)
+      {
+        const std::string state = w.word("on, off or query");
+        if (state == "query")
+          Tcl_SetObjResult(w.interp, Tcl_NewIntObj(static_cast<int>(s.event_levels)));
+        else if (state == "off")
+          s.event_levels = 0;
+        else if (state == "on")
+          {
+            const int levels = w.done() ? default_event_levels : w.integer("the most halvings");
+            if (levels < 1 || levels > max_event_levels)
+              throw opensees::ScriptError("the most halvings must be 1 to " +
+                                          std::to_string(max_event_levels) + ", got " +
+                                          std::to_string(levels));
+            s.event_levels = levels;
+          }
+        else
+          throw opensees::ScriptError("'" + state + "' where on, off or query is due");
+        if (!w.done())
+          throw opensees::ScriptError("unknown word '" + w.peek() + "' after " + state);
+      }
     } // namespace
+
+    void
+    begin_locating(Session &s)
+    {
+      const bool locate         = s.event_levels > 0 && s.analysis->options().transient;
+      s.analysis->event_levels = s.event_levels;
+      s.analysis->events       = locate ? &s.contact_events : nullptr;
+      if (locate) // the gaps anew: the model may have changed since the last analyze
+        s.contact_events.watch(s.domain, gap_rows(s));
+    }
 
     void
     begin_observing(Session &s)
@@ -271,6 +315,7 @@ namespace poundfe
       define(interp, session, "poundfe::energy", energy);
       define(interp, session, "poundfe::impacts", impacts);
       define(interp, session, "poundfe::stepCutting", step_cutting);
+      define(interp, session, "poundfe::locateEvents", locate_events);
     }
   } // namespace opensees_tcl
 } // namespace poundfe

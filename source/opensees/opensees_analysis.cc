@@ -25,6 +25,7 @@
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/parallel_refusal.h>
 #include <poundfe/opensees/opensees_analysis.h>
+#include <poundfe/opensees/opensees_energy.h>
 
 
 #include <Eigen/Dense>
@@ -1348,6 +1349,8 @@ namespace poundfe
           if (committed_stiffness)
             listed.element->committed_tangent = listed.element->tangent();
         }
+      if (events)
+        events->commit();
       domain.time = trial_time;
       scatter();
       ++counts.steps;
@@ -1380,7 +1383,7 @@ namespace poundfe
     }
 
     bool
-    Analysis::advance(const double dt, std::string &why)
+    Analysis::advance(const double dt, std::string &why, bool *event)
     {
       gather();
       bool converged = false;
@@ -1392,15 +1395,45 @@ namespace poundfe
         {
           why = e.what();
         }
-      if (!converged)
+      // poundfe::locateEvents: a contact that starts or ends in the step
+      const bool located = converged && event && events->changed();
+      if (!converged || located)
         {
           for (auto &[tag, element] : domain.elements)
             element->revert();
-          ++counts.failed_steps;
+          if (located)
+            *event = true;
+          else
+            ++counts.failed_steps;
           return false;
         }
       commit();
       return true;
+    }
+
+    bool
+    Analysis::advance_in_halves(const double dt, const unsigned int depth,
+                                const std::function<void()> &after_step, std::string &why)
+    {
+      // ops_Dt is each sub-step's, as for a cut step; the second half ends
+      // at the step's end exactly
+      const double script_dt = domain.time_step;
+      const double end       = domain.time + dt;
+      const bool   locate    = depth < event_levels;
+      bool         done      = true;
+      for (unsigned int half = 0; half < 2 && done; ++half)
+        {
+          const double h   = half == 0 ? 0.5 * dt : end - domain.time;
+          domain.time_step = h;
+          bool event       = false;
+          if (advance(h, why, locate ? &event : nullptr))
+            after_step();
+          else // an event or a failure: halved again, or at dt/2^R cut
+            done = locate ? advance_in_halves(h, depth + 1, after_step, why) :
+                            cut_step(h, after_step, why);
+        }
+      domain.time_step = script_dt;
+      return done;
     }
 
     int
@@ -1409,15 +1442,22 @@ namespace poundfe
                       const std::function<void(const std::string &)> &warn)
     {
       begin_analysis(warn);
+      // poundfe::locateEvents: a step with an event is redone in halves; so
+      // is a step that fails, which cannot tell whether a contact began in
+      // it (a Hertz law's Newton fails on an impact's step more often than not)
+      const bool locate = events && opts.transient; // events: event_levels > 0
       for (unsigned int i = 0; i < n_steps; ++i)
         {
           std::string why;
-          if (advance(dt, why))
+          bool        event = false;
+          if (advance(dt, why, locate ? &event : nullptr))
             {
               after_step();
               continue;
             }
-          if (!cut_step(dt, after_step, why)) // its sub-steps recorded as they converge
+          // the sub-steps recorded as they converge
+          if (!(locate ? advance_in_halves(dt, 1, after_step, why) :
+                         cut_step(dt, after_step, why)))
             {
               std::ostringstream text;
               text << "analyze: the step to time " << trial_time << " failed (" << why

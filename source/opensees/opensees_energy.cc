@@ -224,6 +224,38 @@ namespace poundfe
       return t;
     }
 
+    void
+    ContactEvents::watch(Domain &d, const std::vector<GapRow> &rows)
+    {
+      laws.clear();
+      committed_contact.clear();
+      for (const GapRow &g : rows)
+        {
+          const auto    e = d.elements.find(g.element);
+          UniaxialRows *r = e == d.elements.end() ? nullptr : e->second->uniaxial_rows();
+          if (!r || g.row >= r->laws.size())
+            continue;
+          laws.push_back(r->laws[g.row].get());
+          committed_contact.push_back(laws.back()->force() != 0);
+        }
+    }
+
+    bool
+    ContactEvents::changed() const
+    {
+      for (std::size_t h = 0; h < laws.size(); ++h)
+        if ((laws[h]->force() != 0) != static_cast<bool>(committed_contact[h]))
+          return true;
+      return false;
+    }
+
+    void
+    ContactEvents::commit()
+    {
+      for (std::size_t h = 0; h < laws.size(); ++h)
+        committed_contact[h] = laws[h]->force() != 0;
+    }
+
     std::vector<ImpactLog::GapState>
     ScriptImpacts::states(const Domain &d) const
     {

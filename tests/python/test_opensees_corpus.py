@@ -102,6 +102,42 @@ class CorpusTest(TestCase):
         self.assertIsNone(ops.poundfe.stepCutting("on", 4))
         self.assertIsNone(ops.poundfe.stepCutting("off"))
 
+    def test_locate_events(self):
+        """ops.poundfe.locateEvents: with it on (6 halvings) every contact
+        episode of the impact log starts and ends inside a recorded
+        sub-step of at most dt/64 (the run without it has none such:
+        its steps are dt's), the balance still closes to 1e-8; query gives
+        the halvings, 0 when off; a setting out of range raises."""
+        import poundfe.opensees as ops
+        self.addCleanup(ops.wipe)
+        self.assertEqual(ops.poundfe.locateEvents("query"), 0)
+        for levels in (0, 6):
+            status, _ = pounding_sticks.run(self.tmp, "ElasticPPGap", keep=True, locate=levels)
+            self.assertEqual(status, 0)
+            self.assertEqual(ops.poundfe.locateEvents("query"), levels)
+            self.assertLess(ops.poundfe.energy()["relative_residual"], 1e-8)
+            impacts = ops.poundfe.impacts()
+            ops.wipe()  # the recorders' files written
+            with open(os.path.join(self.tmp, "pounding_ElasticPPGap.out")) as f:
+                times = [float(line.split()[0]) for line in f if line.strip()]
+            events = [i["start_time"] for i in impacts] + \
+                     [i["end_time"] for i in impacts if i["end_time"] >= 0]
+            self.assertGreater(len(events), 2)
+            # the shortest recorded step that holds it (an episode of the
+            # damaged gap starts where the step whose force is its first begins)
+            finest = [min(b - a for a, b in zip(times, times[1:]) if a <= t <= b) for t in events]
+            if levels:
+                self.assertLessEqual(max(finest), 0.002 / 64 * (1 + 1e-9))
+            else:
+                self.assertGreater(min(finest), 0.002 * (1 - 1e-9))
+        self.assertEqual(ops.poundfe.locateEvents("query"), 0)  # wipe turned it off
+        self.assertIsNone(ops.poundfe.locateEvents("on"))
+        self.assertEqual(ops.poundfe.locateEvents("query"), 4)
+        self.assertIsNone(ops.poundfe.locateEvents("off"))
+        for hostile in (("on", -1), ("on", 99), ("on", "x"), ("sometimes",)):
+            with self.assertRaises(ops.OpenSeesError):
+                ops.poundfe.locateEvents(*hostile)
+
     def test_fibre_frame_gravity_then_record(self):
         stdout, (status, roof) = self.run_both(
             "fibre_frame_record.tcl", fibre_frame_record.run,

@@ -31,8 +31,15 @@
 // tests NormDispIncr (|dU|), NormUnbalance
 // (|R| after the update) and EnergyIncr (|dU . R| / 2), a failed step
 // reverted to the last commit and reported by the return value, as
-// `analyze` does. No step is cut and no event located: poundfe's own
-// integrator (integration/newmark.h) does that on request.
+// `analyze` does. No step is cut and no event located unless the script
+// asks (poundfe::stepCutting, poundfe::locateEvents; off by default).
+// poundfe::locateEvents applies `poundfe run`'s Event refinement
+// (integration/newmark.h) to `analyze n dt` of a transient analysis: a
+// converged step in which a gap's contact starts or ends is reverted and
+// redone as its two halves, each of which is treated so again, down to
+// dt/2^R, so that each event lies in a sub-step of dt/2^R and every other
+// sub-step is as long as it can be; a step that fails meanwhile is halved
+// the same way (it cannot tell whether a contact began in it).
 // Equations (OpenSees's, with c2 = gamma/(beta dt), c3 = 1/(beta dt^2)):
 //   R = P(t) - sum_e (f_e + C_e v_e) - M (a + r a_g(t)) - alpha_M M v,
 //   K_eff = sum_e (K_e + c2 C_e) + (c3 + c2 alpha_M) M,
@@ -156,6 +163,7 @@ namespace poundfe
     };
 
     class UniaxialLinks;
+    class ContactEvents;
 
     class Analysis
     {
@@ -180,6 +188,11 @@ namespace poundfe
       /// dt/2^max_cuts (each committed and recorded as it converges), before
       /// analyze gives up; 0 (OpenSees's behaviour) by default.
       unsigned int max_cuts = 0;
+      /// poundfe::locateEvents: the most halvings R of a transient step of
+      /// `analyze n dt` with a contact event, and the gaps watched (null
+      /// and 0, OpenSees's behaviour, by default; null while R is 0).
+      unsigned int   event_levels = 0;
+      ContactEvents *events       = nullptr;
 
       /// `analyze n dt dtMin dtMax Jd` of a VariableTransient analysis
       /// (VariableTimeStepDirectIntegrationAnalysis::analyze): steps until
@@ -239,8 +252,16 @@ namespace poundfe
       /// The checks and settings every `analyze` starts with.
       void   begin_analysis(const std::function<void(const std::string &)> &warn);
       /// One step of dt from the committed state, committed; false (why
-      /// said, the elements reverted) when it failed.
-      bool   advance(double dt, std::string &why);
+      /// said, the elements reverted) when it failed, or (`event` given
+      /// and set) when it converged with a contact event.
+      bool   advance(double dt, std::string &why, bool *event = nullptr);
+      /// The two halves, at `depth` halvings of the script's step, of a
+      /// step of dt that had an event or failed (poundfe::locateEvents):
+      /// each committed and recorded, or while depth < event_levels halved
+      /// again when it too has an event or fails, at event_levels cut
+      /// when it fails (max_cuts); false, with why, when that failed.
+      bool   advance_in_halves(double dt, unsigned int depth,
+                               const std::function<void()> &after_step, std::string &why);
       /// The rest of a failed step of dt in ever halved sub-steps
       /// (max_cuts); false, with why, when the finest fails.
       bool   cut_step(double dt, const std::function<void()> &after_step, std::string &why);

@@ -1,7 +1,8 @@
 // poundfe's additions to an OpenSees script's transient analyses, read
 // from the domain after each committed step: the energy balance and the
 // impact log of its gap elements (the Tcl and Python commands
-// poundfe::energy and poundfe::impacts).
+// poundfe::energy and poundfe::impacts), and the contact events that
+// poundfe::locateEvents has the analysis locate inside the step.
 //
 // Energy balance, in the ground's frame (Uang and Bertero 1990, "Evaluation
 // of seismic energy in structures", Earthq. Eng. Struct. Dyn. 19:77-90):
@@ -105,6 +106,32 @@ namespace poundfe
       std::vector<int> contact_elements;
       double           input = 0, elements = 0, damping = 0, contact = 0, kinetic_0 = 0,
              kinetic_now = 0;
+    };
+
+    /// poundfe::locateEvents's watch over the gap rows: a gap is in contact
+    /// while its law's force is not zero (ScriptImpacts's episodes); a step
+    /// at whose end a gap's contact differs from the committed one has an
+    /// event (a contact starts or ends in it). The laws' own phase() is not
+    /// asked: `poundfe run`'s event search reads it, and these laws keep
+    /// the default there. The laws' committed force is read at watch(),
+    /// when they hold their committed state (between analyses a failed
+    /// step has been reverted and `reset` has reset them).
+    class ContactEvents
+    {
+    public:
+      /// The gap rows of the domain's elements and their committed contact.
+      void watch(Domain &domain, const std::vector<GapRow> &rows);
+      /// Whether a gap's contact at the trial state differs from its
+      /// committed contact.
+      bool changed() const;
+      /// The trial contact committed with the step.
+      void commit();
+
+    private:
+      /// The gap rows' laws, valid while the analysis that watches runs
+      /// (the script cannot change the model inside `analyze`).
+      std::vector<const UniaxialLaw *> laws;
+      std::vector<char>                committed_contact;
     };
 
     /// poundfe's impact log (integration/impact_log.h) over the gap rows.

@@ -79,8 +79,10 @@ def _dict_of(words):
 def _poundfe_command(name):
     def command(*arguments):
         result = _call(name, arguments)
-        if result is None:  # a setting (stepCutting)
+        if result is None:  # a setting (stepCutting, locateEvents on|off)
             return None
+        if name == "poundfe::locateEvents":  # query: the most halvings, 0 when off
+            return result
         if name == "poundfe::impacts":
             return [_dict_of(episode) for episode in (result or [])]
         return _dict_of(result)

@@ -12,11 +12,12 @@ import poundfe.opensees as ops
 from record import synthetic_record
 
 
-def run(out, law, keep=False):
+def run(out, law, keep=False, locate=0):
     """The recorders' files in `out`; analyze's status and the final time.
     keep: the gap's stress recorded too, poundfe's energy balance and
     impact log on, and the domain left for the caller's queries (its
-    `wipe` writes the files)."""
+    `wipe` writes the files). locate: poundfe::locateEvents on with that
+    many halvings (0: off)."""
     ops.wipe()
     ops.model('basic', '-ndm', 1, '-ndf', 1)
     pi = 3.14159265358979
@@ -58,6 +59,8 @@ def run(out, law, keep=False):
     ops.algorithm('Newton')
     ops.integrator('Newmark', 0.5, 0.25)
     ops.analysis('Transient')
+    if locate:
+        ops.poundfe.locateEvents('on', locate)
     status = ops.analyze(n, dt)
     time = ops.getTime()
     if not keep:
