@@ -19,7 +19,7 @@
 #     completes, its first impact within dt/2^R of the reference's;
 #  6. the same on a pair the tolerances were not set on (other masses,
 #     periods, gap and ground motion);
-#  7. hostile settings: one line with the file and line, exit 1.
+# (its refusals and query: opensees_poundfe.sh).
 #   opensees_locate.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
 poundfe=$1 corpus=$2 python=$3
@@ -118,31 +118,4 @@ for model in ("tuned", "other"):
               f"(relative to the reference's {peak:.4e} N)")
 sys.exit(1 if failed else 0)
 PY
-# refusals, by name with the file and line
-bad() {
-  local dir="$work/bad-$1"
-  mkdir -p "$dir"
-  { echo "model basic -ndm 1 -ndf 1"; cat; } > "$dir/s.tcl"
-  "$poundfe" opensees "$dir/s.tcl" > "$dir/out" 2> "$dir/err"
-  local status=$?
-  [ "$status" = 1 ] || fail "$1: exit status $status"
-  [ "$(wc -l < "$dir/err")" = 1 ] || { cat "$dir/err"; fail "$1: not one line"; }
-  grep -qxF -- "poundfe: error: $dir/s.tcl:$2" "$dir/err" || { cat "$dir/err"; fail "$1: message"; }
-}
-echo "poundfe::locateEvents on -1" | bad locate-negative \
-  "2: poundfe::locateEvents: the most halvings must be 1 to 12, got -1" || exit 1
-echo "poundfe::locateEvents on 99" | bad locate-large \
-  "2: poundfe::locateEvents: the most halvings must be 1 to 12, got 99" || exit 1
-echo "poundfe::locateEvents on x" | bad locate-word \
-  "2: poundfe::locateEvents: expected an integer for the most halvings, got 'x'" || exit 1
-echo "poundfe::locateEvents sometimes" | bad locate-state \
-  "2: poundfe::locateEvents: 'sometimes' where on, off or query is due" || exit 1
-echo "poundfe::locateEvents off 3" | bad locate-extra \
-  "2: poundfe::locateEvents: unknown word '3' after off" || exit 1
-echo "poundfe::locateEvents" | bad locate-nothing \
-  "2: poundfe::locateEvents: missing on, off or query" || exit 1
-# query: R, 4 by default, 0 off
-printf 'puts [poundfe::locateEvents query]\npoundfe::locateEvents on\nputs [poundfe::locateEvents query]\npoundfe::locateEvents on 9\nputs [poundfe::locateEvents query]\nwipe\nputs [poundfe::locateEvents query]\n' \
-  > "$work/query.tcl"
-[ "$("$poundfe" opensees "$work/query.tcl" | tr '\n' ' ')" = "0 4 9 0 " ] || fail "locateEvents query"
 echo "ok"

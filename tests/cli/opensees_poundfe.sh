@@ -18,8 +18,11 @@
 #     byte for byte, after it its distance from a run at dt/16 at most twice
 #     that before (the step's own discretisation error; measured 1.3 times);
 #  4. an unknown poundfe:: command or option, a query of an observer the
-#     script has not turned on, an empty file name: one line with the file
-#     and line, exit 1.
+#     script has not turned on, an empty file name, poundfe::locateEvents
+#     with a number of halvings out of 1 to 12 or not a number: one line
+#     with the file and line, exit 1; poundfe::locateEvents query gives the
+#     halvings (4 by default, 0 off and after wipe). poundfe::locateEvents's
+#     numbers: opensees_locate.sh.
 #   opensees_poundfe.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
 poundfe=$1 corpus=$2 python=$3
@@ -104,4 +107,20 @@ echo "poundfe::stepCutting sometimes" | bad cuts-word \
   "2: poundfe::stepCutting: 'sometimes' where on or off is due" || exit 1
 echo "poundfe::frobnicate" | bad unknown-command \
   '2: invalid command name "poundfe::frobnicate"' || exit 1
+echo "poundfe::locateEvents on -1" | bad locate-negative \
+  "2: poundfe::locateEvents: the most halvings must be 1 to 12, got -1" || exit 1
+echo "poundfe::locateEvents on 99" | bad locate-large \
+  "2: poundfe::locateEvents: the most halvings must be 1 to 12, got 99" || exit 1
+echo "poundfe::locateEvents on x" | bad locate-word \
+  "2: poundfe::locateEvents: expected an integer for the most halvings, got 'x'" || exit 1
+echo "poundfe::locateEvents sometimes" | bad locate-state \
+  "2: poundfe::locateEvents: 'sometimes' where on, off or query is due" || exit 1
+echo "poundfe::locateEvents off 3" | bad locate-extra \
+  "2: poundfe::locateEvents: unknown word '3' after off" || exit 1
+echo "poundfe::locateEvents" | bad locate-nothing \
+  "2: poundfe::locateEvents: missing on, off or query" || exit 1
+# query: R, 4 by default, 0 off
+printf 'puts [poundfe::locateEvents query]\npoundfe::locateEvents on\nputs [poundfe::locateEvents query]\npoundfe::locateEvents on 9\nputs [poundfe::locateEvents query]\nwipe\nputs [poundfe::locateEvents query]\n' \
+  > "$work/query.tcl"
+[ "$("$poundfe" opensees "$work/query.tcl" | tr '\n' ' ')" = "0 4 9 0 " ] || fail "locateEvents query"
 echo "ok"

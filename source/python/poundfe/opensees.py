@@ -32,7 +32,9 @@ poundfe's additions, Tcl's `poundfe::` commands, are the functions of
 (the energy balance of the transient analyses since `ops.poundfe.energy('on')`),
 `ops.poundfe.impacts()` (a list of dicts, one per contact episode since
 `ops.poundfe.impacts('on')`; `ops.poundfe.impacts('-file', 'impacts.csv')`
-writes them too) and `ops.poundfe.report()`; a setting returns None.
+writes them too), `ops.poundfe.locateEvents('on', 6)` (impacts located inside
+the step; `ops.poundfe.locateEvents('query')` the halvings, an int) and
+`ops.poundfe.report()`; a setting returns None.
 
 Recorders write their files at `wipe` and when Python exits (a write error
 then is printed; the exit status stays Python's, doc/python.md).
