@@ -14,8 +14,10 @@
 //                                   range and default); query: R, 0 when off
 // (opensees/opensees_energy.h gives the equations). A gap element is a
 // zeroLength or twoNodeLink row whose material is a gap law (ElasticPPGap,
-// ImpactMaterial, Hertzdamp, JankowskiImpact, ViscoelasticGap, or a MinMax
-// or Parallel material of one); its penetration is its deformation past
+// ImpactMaterial, Hertzdamp, JankowskiImpact, ViscoelasticGap, or a MinMax,
+// Parallel or Series material of one, nested or not: its first such
+// component); it is in contact while that gap law's force is not zero, its
+// force then the row's; its penetration is the gap law's deformation past
 // `gap` along the gap's sign (ElasticPPGap with gap 0: Fy's; the others:
 // compression). Both are off until the script turns them on: nothing is
 // observed, and nothing paid, before; `reset` starts them again and `wipe`
@@ -56,11 +58,16 @@ namespace poundfe
             return true;
           }
         const auto c = d.combined_materials.find(tag);
-        if (c == d.combined_materials.end() || depth > 8 ||
-            (c->second.type != "MinMax" && c->second.type != "Parallel"))
+        if (c == d.combined_materials.end() || depth > 8)
           return false;
-        return std::any_of(c->second.components.begin(), c->second.components.end(),
-                           [&](const int part) { return gap_of(d, part, g, depth + 1); });
+        const std::vector<int> &parts = c->second.components;
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          if (gap_of(d, parts[i], g, depth + 1))
+            {
+              g.path.insert(g.path.begin(), i); // outermost first
+              return true;
+            }
+        return false;
       }
 
       std::vector<opensees::GapRow>
@@ -70,7 +77,7 @@ namespace poundfe
         for (const auto &[tag, materials] : s.link_materials)
           {
             const auto e = s.domain.elements.find(tag);
-            if (e == s.domain.elements.end() || !e->second->uniaxial_rows())
+            if (e == s.domain.elements.end() || !opensees::link_rows(*e->second))
               continue;
             for (unsigned int m = 0; m < materials.size(); ++m)
               {

@@ -411,6 +411,8 @@ namespace poundfe
         {
           return u_at_creation.size() + v_at_creation.size() > 0 ? nullptr : this;
         }
+        /// The rows whatever uniaxial_rows() says (link_rows).
+        UniaxialRows *rows() { return this; }
 
       protected:
         /// OpenSees's `material i stress|strain|tangent|stressStrain|
@@ -997,6 +999,13 @@ namespace poundfe
         return T;
       }
     } // namespace
+
+    UniaxialRows *
+    link_rows(Element &element)
+    {
+      auto *link = dynamic_cast<ZeroLength *>(&element);
+      return link ? link->rows() : nullptr;
+    }
 
     std::unique_ptr<Element>
     make_two_node_link(const Domain &domain, const int tag, const TwoNodeLinkData &data)

@@ -8,6 +8,7 @@
 // W^T, W's columns M phi_i, c_i = 2 zeta_i omega_i
 // (IncrementalIntegrator::addModalDampingForce).
 #include <poundfe/base/lean_assert.h>
+#include <poundfe/laws/combined_materials.h>
 #include <poundfe/opensees/opensees_energy.h>
 
 #include <algorithm>
@@ -224,27 +225,74 @@ namespace poundfe
       return t;
     }
 
-    void
-    ContactEvents::watch(Domain &d, const std::vector<GapRow> &rows)
+    namespace
     {
-      laws.clear();
-      committed_contact.clear();
-      for (const GapRow &g : rows)
-        {
-          const auto    e = d.elements.find(g.element);
-          UniaxialRows *r = e == d.elements.end() ? nullptr : e->second->uniaxial_rows();
-          if (!r || g.row >= r->laws.size())
-            continue;
-          laws.push_back(r->laws[g.row].get());
-          committed_contact.push_back(laws.back()->force() != 0);
-        }
+      /// The law `path` leads to from `law`, its deformation into `strain`
+      /// (a Series's component's own) and whether a MinMax on the way has
+      /// failed (its force is then 0 whatever its component's).
+      const UniaxialLaw *
+      gap_law(const UniaxialLaw *law, const std::vector<unsigned int> &path, double &strain,
+              bool &failed)
+      {
+        for (const unsigned int i : path)
+          if (const auto *minmax = dynamic_cast<const MinMaxUniaxial *>(law))
+            {
+              failed = failed || minmax->force() != minmax->component().force();
+              law    = &minmax->component();
+            }
+          else if (const auto *parallel = dynamic_cast<const ParallelUniaxial *>(law))
+            law = &parallel->part(i);
+          else if (const auto *series = dynamic_cast<const SeriesUniaxial *>(law))
+            {
+              strain = series->part_strain(i);
+              law    = &series->part(i);
+            }
+          else
+            Assert(false, dealii::ExcMessage("a gap path leads through MinMax, Parallel or Series"));
+        return law;
+      }
+    } // namespace
+
+    ImpactLog::GapState
+    gap_state(const Domain &d, const GapRow &g)
+    {
+      ImpactLog::GapState s;
+      const auto          e    = d.elements.find(g.element);
+      UniaxialRows       *rows = e == d.elements.end() ? nullptr : link_rows(*e->second);
+      if (!rows || g.row >= rows->laws.size() || g.row >= rows->strain.size())
+        return s;
+      const UniaxialLaw &row_law = *rows->laws[g.row];
+      double             strain  = rows->strain[g.row];
+      bool               failed  = false;
+      const UniaxialLaw *gap     = gap_law(&row_law, g.path, strain, failed);
+      s.penetration              = g.direction * (strain - g.gap);
+      s.rate                     = g.direction * rows->rate[g.row];
+      // the force is the law's, whatever its sign convention
+      s.force = failed || gap->force() == 0 ? 0.0 : std::abs(row_law.force());
+      return s;
+    }
+
+    void
+    ContactEvents::watch(const Domain &d, const std::vector<GapRow> &rows)
+    {
+      domain   = &d;
+      gap_rows = rows;
+      committed_contact.resize(rows.size());
+      for (std::size_t h = 0; h < rows.size(); ++h)
+        committed_contact[h] = in_contact(h);
+    }
+
+    bool
+    ContactEvents::in_contact(const std::size_t h) const
+    {
+      return gap_state(*domain, gap_rows[h]).force != 0;
     }
 
     bool
     ContactEvents::changed() const
     {
-      for (std::size_t h = 0; h < laws.size(); ++h)
-        if ((laws[h]->force() != 0) != static_cast<bool>(committed_contact[h]))
+      for (std::size_t h = 0; h < gap_rows.size(); ++h)
+        if (in_contact(h) != static_cast<bool>(committed_contact[h]))
           return true;
       return false;
     }
@@ -252,8 +300,8 @@ namespace poundfe
     void
     ContactEvents::commit()
     {
-      for (std::size_t h = 0; h < laws.size(); ++h)
-        committed_contact[h] = laws[h]->force() != 0;
+      for (std::size_t h = 0; h < gap_rows.size(); ++h)
+        committed_contact[h] = in_contact(h);
     }
 
     std::vector<ImpactLog::GapState>
@@ -261,17 +309,7 @@ namespace poundfe
     {
       std::vector<ImpactLog::GapState> s(gap_rows.size());
       for (std::size_t h = 0; h < gap_rows.size(); ++h)
-        {
-          const GapRow  &g    = gap_rows[h];
-          const auto     e    = d.elements.find(g.element);
-          UniaxialRows  *rows = e == d.elements.end() ? nullptr : e->second->uniaxial_rows();
-          if (!rows || g.row >= rows->laws.size() || g.row >= rows->strain.size())
-            continue;
-          // the force is the law's, whatever its sign convention
-          s[h].penetration = g.direction * (rows->strain[g.row] - g.gap);
-          s[h].rate        = g.direction * rows->rate[g.row];
-          s[h].force       = std::abs(rows->laws[g.row]->force());
-        }
+        s[h] = gap_state(d, gap_rows[h]);
       return s;
     }
 

@@ -19,6 +19,12 @@
 #     completes, its first impact within dt/2^R of the reference's;
 #  6. the same on a pair the tolerances were not set on (other masses,
 #     periods, gap and ground motion);
+#  7. the linear gap as a twoNodeLink along X (the zeroLength's deformation):
+#     with it on, the recorder's rows and the impact log those of the
+#     zeroLength's run to 1e-9 (its own elements, the same physics); and in
+#     Series with a stiff Elastic spring (a Series's force is ~1e-22 N out of
+#     contact: the gap's own force decides): located as in 3., the first
+#     impact within dt/2^R of its own reference's;
 # (its refusals and query: opensees_poundfe.sh).
 #   opensees_locate.sh POUNDFE CORPUS_DIR PYTHON3
 set -u
@@ -34,6 +40,12 @@ for model in tuned other; do
       "$poundfe" opensees "$corpus/locate_events.tcl" "$work" $law $mode $dt $levels $model \
         > "$work/${law}_${model}_$mode.log" 2>&1
     done
+  done
+done
+for link in twoNodeLink Series; do
+  for mode in off on fine; do
+    "$poundfe" opensees "$corpus/locate_events.tcl" "$work" linear $mode $dt $levels tuned $link \
+      > "$work/linear_tuned_${mode}_$link.log" 2>&1
   done
 done
 # off and on-then-off: the same bytes
@@ -116,6 +128,31 @@ for model in ("tuned", "other"):
         p_off = abs(max(e[2] for e in off) - peak) / peak
         check(p_on < p_off, f"{name}: peak contact force {p_on:.2e} on, {p_off:.2e} off "
               f"(relative to the reference's {peak:.4e} N)")
+
+def numbers(path):
+    with open(path) as f:
+        lines = f.read().splitlines()[path.endswith(".csv"):]  # a CSV's header
+    return [float(x) for line in lines for x in line.replace(",", " ").split()]
+
+for link in ("twoNodeLink", "Series"):
+    name = f"linear tuned, {link}"
+    on = episodes("linear", "tuned", f"on_{link}")
+    recorded = [float(r.split()[0]) for r in rows("linear", "tuned", f"on_{link}")]
+    check(status("linear", "tuned", f"on_{link}")[0] == 0 and len(on) > 0 and
+          len(episodes("linear", "tuned", f"off_{link}")) > 0,
+          f"{name}: completes and logs {len(on)} episodes with it on")
+    check(len(recorded) > int(round(4.0 / dt)) + 1,
+          f"{name}: {len(recorded)} recorded steps, sub-steps among them")
+    check(in_short_substeps([e[0] for e in on] + [e[1] for e in on if e[1] >= 0], recorded),
+          f"{name}: the log's starts and ends in sub-steps of <= dt/2^R")
+    ref = episodes("linear", "tuned", f"fine_{link}")
+    first = abs(on[0][0] - ref[0][0])
+    check(first <= finest, f"{name}: first impact {first:.2e} s from its reference's")
+link = [numbers(f"{work}/linear_tuned_on{s}.{ext}") for s in ("", "_twoNodeLink")
+        for ext in ("out", "csv")]
+same = all(len(a) == len(b) and all(abs(x - y) <= 1e-9 * max(1.0, abs(y)) for x, y in zip(a, b))
+           for a, b in ((link[0], link[2]), (link[1], link[3])))
+check(same, "twoNodeLink on: rows and impact log those of the zeroLength to 1e-9")
 sys.exit(1 if failed else 0)
 PY
 echo "ok"

@@ -6,7 +6,8 @@
 #     with a nodal load (Rayleigh, then modal damping, whose term closes the
 #     balance), the stick yielding (Steel01, Rayleigh on the committed
 #     stiffness), two sticks pounding through ElasticPPGap,
-#     ViscoelasticGap, Hertzdamp and a MinMax of ImpactMaterial; across
+#     ViscoelasticGap, Hertzdamp, a MinMax of ImpactMaterial, the
+#     ElasticPPGap as a twoNodeLink and in Series with an Elastic spring; across
 #     analyze calls (tests/opensees/energy_restart.tcl): `reset` starts the
 #     balance and the impact log again, and new Rayleigh factors between
 #     two analyze calls keep the balance closed;
@@ -30,7 +31,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 . "$here/helpers.sh"
-for case in sdof mdof modal steel01 ElasticPPGap ViscoelasticGap Hertzdamp MinMax; do
+for case in sdof mdof modal steel01 ElasticPPGap ViscoelasticGap Hertzdamp MinMax TwoNodeLink \
+    Series; do
   mkdir -p "$work/$case"
   "$poundfe" opensees "$corpus/energy_balance.tcl" "$case" "$work/$case" > "$work/$case/log" 2>&1 \
     || { cat "$work/$case/log"; fail "energy_balance $case"; }

@@ -10,7 +10,11 @@
 # same stick yielding, Steel01 springs, Rayleigh on the committed
 # stiffness: its elements' work the trapezoidal sum of eleResponse's force,
 # its damping what closes the balance) or one of pounding_sticks.tcl's gap
-# laws (two sticks pounding, Newton); optionally a directory for
+# laws (two sticks pounding, Newton), TwoNodeLink (its ElasticPPGap as a
+# twoNodeLink) or Series (its ElasticPPGap in series with an Elastic
+# spring: in contact while the gap's force is not zero, which the script
+# reads as the element's force above 1e-6 N, a Series's out of contact
+# being its iteration's residue, ~1e-22 N); optionally a directory for
 # impacts.csv. Runs where poundfe runs it (poundfe:: exists).
 set case [lindex $argv 0]
 source [file join [file dirname [info script]] record.tcl]
@@ -74,7 +78,14 @@ switch -- $case {
         element zeroLength 2 3 4 -mat 2 -dir 1 -doRayleigh 1
         set springs [list 1 [list 1 2 $k2] 2 [list 3 4 $k4]]
         switch -- $case {
-            ElasticPPGap { uniaxialMaterial ElasticPPGap 3 2.0e9 -4.0e6 -0.01 0.1 damage }
+            ElasticPPGap - TwoNodeLink {
+                uniaxialMaterial ElasticPPGap 3 2.0e9 -4.0e6 -0.01 0.1 damage
+            }
+            Series {
+                uniaxialMaterial ElasticPPGap 4 2.0e9 -4.0e6 -0.01 0.1 damage
+                uniaxialMaterial Elastic 5 2.0e10
+                uniaxialMaterial Series 3 4 5
+            }
             ImpactMaterial { uniaxialMaterial ImpactMaterial 3 2.0e9 6.0e8 -0.002 -0.01 }
             ViscoelasticGap { uniaxialMaterial ViscoelasticGap 3 2.0e9 4.0e6 -0.01 }
             Hertzdamp { uniaxialMaterial Hertzdamp 3 5.0e10 0.48 -0.01 }
@@ -84,7 +95,11 @@ switch -- $case {
             }
             default { error "energy_balance.tcl: no case '$case'" }
         }
-        element zeroLength 3 2 4 -mat 3 -dir 1
+        if {$case eq "TwoNodeLink"} {
+            element twoNodeLink 3 2 4 -mat 3 -dir 1 -orient 1 0 0
+        } else {
+            element zeroLength 3 2 4 -mat 3 -dir 1
+        }
         set gap 3
         set dt 0.002
         set n 4000
@@ -164,6 +179,7 @@ for {set step 0} {$step < $n} {incr step} {
     }
     if {[info exists gap]} {
         set force [expr {abs([lindex [eleResponse $gap force] 1])}]
+        if {$case eq "Series" && $force <= 1.0e-6} { set force 0.0 }
         if {$force > 0 && !$in_contact} { incr episodes }
         set in_contact [expr {$force > 0}]
         set peak [expr {max($peak, $force)}]

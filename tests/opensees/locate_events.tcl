@@ -6,10 +6,15 @@
 # one, whose impact steps Newton fails at dt = 0.01), the mode (off: OpenSees's steps; on:
 # poundfe::locateEvents on R; fine: off at dt/2^R), the step, R, and the
 # model (tuned: the pair the tolerances were set on; other: other masses,
-# periods, gap and ground motion). Writes LAW_MODEL_MODE.out (the tops'
-# displacements), LAW_MODEL_MODE.csv (poundfe::impacts) and prints the
-# energy balance's relative residual.
-lassign $argv out law mode dt levels model
+# periods, gap and ground motion); optionally the gap element (zeroLength,
+# the default; twoNodeLink: the same gap as a twoNodeLink along global X;
+# Series: the zeroLength's material in series with a stiff Elastic spring).
+# Writes LAW_MODEL_MODE.out (the tops' displacements), LAW_MODEL_MODE.csv
+# (poundfe::impacts), both with _ELEMENT before the suffix for another
+# element than zeroLength, and prints the energy balance's relative residual.
+lassign $argv out law mode dt levels model link
+if {$link eq ""} { set link zeroLength }
+set name ${law}_${model}_$mode[expr {$link eq "zeroLength" ? "" : "_$link"}]
 source [file join [file dirname [info script]] record.tcl]
 set pi 3.14159265358979
 if {$model eq "tuned"} {
@@ -49,11 +54,20 @@ switch -- $law {
     Hertzdamp { uniaxialMaterial Hertzdamp 3 5.0e10 0.48 [expr {-$gap}] }
     default { error "locate_events.tcl: no law '$law'" }
 }
-element zeroLength 3 2 4 -mat 3 -dir 1
+switch -- $link {
+    zeroLength { element zeroLength 3 2 4 -mat 3 -dir 1 }
+    twoNodeLink { element twoNodeLink 3 2 4 -mat 3 -dir 1 -orient 1 0 0 0 1 0 }
+    Series {
+        uniaxialMaterial Elastic 5 1.0e12
+        uniaxialMaterial Series 6 3 5
+        element zeroLength 3 2 4 -mat 6 -dir 1
+    }
+    default { error "locate_events.tcl: no gap element '$link'" }
+}
 timeSeries Path 1 -dt $record_dt -values $record
 pattern UniformExcitation 1 1 -accel 1
 rayleigh 0.4 0.0 0.0 0.0
-recorder Node -file $out/${law}_${model}_$mode.out -time -precision 16 -node 2 4 -dof 1 disp
+recorder Node -file $out/$name.out -time -precision 16 -node 2 4 -dof 1 disp
 constraints Plain
 numberer Plain
 system BandGeneral
@@ -70,7 +84,7 @@ switch -- $mode {
     default { error "locate_events.tcl: no mode '$mode'" }
 }
 set status [analyze [expr {int(round($n * $record_dt / $dt))}] $dt]
-poundfe::impacts -file $out/${law}_${model}_$mode.csv
+poundfe::impacts -file $out/$name.csv
 set energy [poundfe::energy]
-puts "locate_events $law $model $mode: status $status time [getTime] locate\
+puts "locate_events $law $model $mode $link: status $status time [getTime] locate\
       [poundfe::locateEvents query] relative_residual [dict get $energy relative_residual]"

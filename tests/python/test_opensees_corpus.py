@@ -107,7 +107,7 @@ class CorpusTest(TestCase):
         episode of the impact log starts and ends inside a recorded
         sub-step of at most dt/64 (the run without it has none such:
         its steps are dt's), the balance still closes to 1e-8; query gives
-        the halvings, 0 when off; a setting out of range raises."""
+        the halvings, 0 when off; a setting out of range, or True, raises."""
         import poundfe.opensees as ops
         self.addCleanup(ops.wipe)
         self.assertEqual(ops.poundfe.locateEvents("query"), 0)
@@ -134,9 +134,10 @@ class CorpusTest(TestCase):
         self.assertIsNone(ops.poundfe.locateEvents("on"))
         self.assertEqual(ops.poundfe.locateEvents("query"), 4)
         self.assertIsNone(ops.poundfe.locateEvents("off"))
-        for hostile in (("on", -1), ("on", 99), ("on", "x"), ("sometimes",)):
+        for hostile in (("on", -1), ("on", 99), ("on", "x"), ("sometimes",), ("on", True)):
             with self.assertRaises(ops.OpenSeesError):
                 ops.poundfe.locateEvents(*hostile)
+        self.assertEqual(ops.poundfe.locateEvents("query"), 0)  # True refused, not taken as 1
 
     def test_fibre_frame_gravity_then_record(self):
         stdout, (status, roof) = self.run_both(

@@ -48,6 +48,8 @@ namespace poundfe
     void        commit() override;
     void        revert() override;
     void        reset() override;
+    /// Component i (0-based), at the Parallel's strain and rate.
+    const UniaxialLaw &part(const unsigned int i) const { return *parts.at(i); }
 
   private:
     template <typename Value>
@@ -73,6 +75,9 @@ namespace poundfe
     void        commit() override;
     void        revert() override;
     void        reset() override;
+    /// Component i (0-based) and its strain at its last evaluation.
+    const UniaxialLaw &part(const unsigned int i) const { return *parts.at(i); }
+    double             part_strain(const unsigned int i) const { return strains.at(i); }
 
   private:
     /// One pass over the components at the trial stress; the residual strain.
@@ -107,6 +112,8 @@ namespace poundfe
     void        commit() override;
     void        revert() override;
     void        reset() override;
+    /// The component, at the MinMax's strain and rate.
+    const UniaxialLaw &component() const { return *part; }
 
   private:
     std::unique_ptr<UniaxialLaw> part;

@@ -584,6 +584,10 @@ namespace poundfe
     };
     std::unique_ptr<Element> make_two_node_link(const Domain &domain, int tag,
                                                 const TwoNodeLinkData &data);
+    /// The uniaxial rows of a zeroLength or twoNodeLink (also on moved
+    /// nodes, or with -pDelta, which the analysis's own loops leave to the
+    /// element), to read its materials' states; null for another element.
+    UniaxialRows *link_rows(Element &element);
     /// truss: a uniaxial material over the area A along the member, small
     /// strains (OpenSees's Truss); Rayleigh-damped only when asked.
     std::unique_ptr<Element> make_truss(const Domain &domain, int tag, std::array<int, 2> nodes,

@@ -43,14 +43,26 @@ namespace poundfe
     };
 
     /// A gap row of an element: its law's index among the element's
-    /// uniaxial rows and the direction (+1 or -1) in which its deformation
-    /// closes the gap past `gap`.
+    /// uniaxial rows, the path to the gap law inside it (the component's
+    /// index in each MinMax, Parallel or Series on the way; empty: the row's
+    /// law is the gap law) and the direction (+1 or -1) in which the gap
+    /// law's deformation closes the gap past `gap`.
     struct GapRow
     {
-      int          element = 0;
-      unsigned int row = 0;
-      double       gap = 0, direction = -1;
+      int                       element = 0;
+      unsigned int              row = 0;
+      std::vector<unsigned int> path;
+      double                    gap = 0, direction = -1;
     };
+
+    /// The gap's state in the domain now (the impact log's and
+    /// locateEvents's contact): in contact while the gap law's force is not
+    /// zero (a failed MinMax on the way: not in contact); then the force is
+    /// the row's (a Parallel's sum, a Series's stress), 0 out of contact;
+    /// the penetration is the gap law's deformation past `gap` (a Series's
+    /// component's own), the rate the row's. Zero when the element or row
+    /// is gone.
+    ImpactLog::GapState gap_state(const Domain &domain, const GapRow &row);
 
     /// The energy balance of the transient analyses of a domain.
     class EnergyBalance
@@ -109,7 +121,7 @@ namespace poundfe
     };
 
     /// poundfe::locateEvents's watch over the gap rows: a gap is in contact
-    /// while its law's force is not zero (ScriptImpacts's episodes); a step
+    /// while gap_state's force is not zero (ScriptImpacts's episodes); a step
     /// at whose end a gap's contact differs from the committed one has an
     /// event (a contact starts or ends in it). The laws' own phase() is not
     /// asked: `poundfe run`'s event search reads it, and these laws keep
@@ -120,7 +132,7 @@ namespace poundfe
     {
     public:
       /// The gap rows of the domain's elements and their committed contact.
-      void watch(Domain &domain, const std::vector<GapRow> &rows);
+      void watch(const Domain &domain, const std::vector<GapRow> &rows);
       /// Whether a gap's contact at the trial state differs from its
       /// committed contact.
       bool changed() const;
@@ -128,10 +140,14 @@ namespace poundfe
       void commit();
 
     private:
-      /// The gap rows' laws, valid while the analysis that watches runs
-      /// (the script cannot change the model inside `analyze`).
-      std::vector<const UniaxialLaw *> laws;
-      std::vector<char>                committed_contact;
+      /// In contact (gap_state's force not zero) at the trial state.
+      bool in_contact(std::size_t h) const;
+
+      /// The domain and its gap rows, valid while the analysis that
+      /// watches runs (the script cannot change the model inside `analyze`).
+      const Domain       *domain = nullptr;
+      std::vector<GapRow> gap_rows;
+      std::vector<char>   committed_contact;
     };
 
     /// poundfe's impact log (integration/impact_log.h) over the gap rows.

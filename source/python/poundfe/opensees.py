@@ -78,8 +78,21 @@ def _dict_of(words):
     return dict(zip(words[::2], words[1::2]))
 
 
+def _refuse_bools(name, arguments):
+    """poundfe's commands take words and numbers: True or False (an int to
+    Python) is refused with the caller's file and line."""
+    if any(isinstance(argument, bool) for argument in arguments):
+        caller = sys._getframe(2)
+        where = (caller.f_code.co_filename, caller.f_lineno)
+        refusal = OpenSeesError(f"{name}: True or False where a word or a number is due "
+                                f"({where[0]}, line {where[1]})")
+        refusal.command, refusal.file, refusal.line = name, where[0], where[1]
+        raise refusal
+
+
 def _poundfe_command(name):
     def command(*arguments):
+        _refuse_bools(name, arguments)
         result = _call(name, arguments)
         if result is None:  # a setting (stepCutting, locateEvents on|off)
             return None
