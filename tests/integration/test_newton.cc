@@ -434,7 +434,7 @@ BOOST_AUTO_TEST_CASE(newmark_steps_end_on_the_elements_last_evaluation)
         }
       BOOST_TEST_MESSAGE(file << ": " << checked << " element states checked, " << in_contact
                               << " of them gaps in contact, " << off_state << " off the state");
-      BOOST_TEST(checked > 4000u);
+      BOOST_TEST(checked >= 4000u); // every element at every step at least
       BOOST_TEST(off_state == 0u);
       if (std::string(file).find("two-buildings") != std::string::npos)
         BOOST_TEST(in_contact > 0u);
