@@ -198,14 +198,31 @@ namespace poundfe
         return true;
       }
 
-    // S = I + D_a G_aa and rhs = D_a B_a^T y. Row a is row i of its block
-    // D_e, whose columns are the active positions first, ..., first + r_e - 1.
-    // Each sum starts from its first term, so that for r_e = 1 the entries
-    // are d G and d b^T y exactly.
     for (unsigned int a = 0; a < k; ++a)
       bty[a] = column_dot(active[a], y);
     // one column: its elimination costs less than the comparison
     const bool reuse = k > 1 && reuses_capacitance(d);
+    form_capacitance(k, d, reuse);
+    if (!reuse)
+      {
+        factor_capacitance(k);
+        factored = k > 1; // what one column overwrote is no longer the LU noted
+      }
+    substitute_capacitance(k);
+    x = y;
+    for (unsigned int a = 0; a < k; ++a)
+      x.noalias() -= rhs_small[a] * W.col(slot_of[active[a]]);
+    return true;
+  }
+
+  void
+  LowRankUpdateSolver::form_capacitance(const unsigned int k, const std::vector<double> &d,
+                                        const bool reuse)
+  {
+    // S = I + D_a G_aa and rhs = D_a B_a^T y. Row a is row i of its block
+    // D_e, whose columns are the active positions first, ..., first + r_e - 1.
+    // Each sum starts from its first term, so that for r_e = 1 the entries
+    // are d G and d b^T y exactly.
     for (unsigned int a = 0; a < k; ++a)
       {
         const unsigned int c = active[a], e = column_block[c];
@@ -235,16 +252,6 @@ namespace poundfe
               S(a, b) = (a == b ? 1.0 : 0.0) + value;
             }
       }
-    if (!reuse)
-      {
-        factor_capacitance(k);
-        factored = k > 1; // what one column overwrote is no longer the LU noted
-      }
-    substitute_capacitance(k);
-    x = y;
-    for (unsigned int a = 0; a < k; ++a)
-      x.noalias() -= rhs_small[a] * W.col(slot_of[active[a]]);
-    return true;
   }
 
   bool

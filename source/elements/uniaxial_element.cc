@@ -67,7 +67,8 @@ namespace poundfe
   UniaxialElement::set_trial(const LocalVector &u, const LocalVector &v)
   {
     trial_deformation = local_deformation(u);
-    return law->set_trial(trial_deformation, local_deformation(v));
+    trial_rate        = local_deformation(v);
+    return law->set_trial(trial_deformation, trial_rate);
   }
 
   bool
@@ -93,6 +94,7 @@ namespace poundfe
           rate += signs[i] * v[equations[i]];
         }
     trial_deformation = deformation;
+    trial_rate        = rate;
     if (!law->set_trial(deformation, rate))
       return false;
     const double correction = law->force() - reference_stiffness * trial_deformation;
@@ -163,7 +165,7 @@ namespace poundfe
   UniaxialElement::reset()
   {
     law->reset();
-    committed_deformation = trial_deformation = 0;
+    committed_deformation = trial_deformation = trial_rate = 0;
     committed_force                           = law->force();
   }
 } // namespace poundfe

@@ -1,6 +1,10 @@
 // The elements' records across accepted steps (integration/element_records.h).
-#include <poundfe/elements/typed_element.h>
+#include <poundfe/elements/uniaxial_element.h>
 #include <poundfe/integration/element_records.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <typeinfo>
 
 namespace poundfe
 {
@@ -43,46 +47,70 @@ namespace poundfe
     held_work = 0;
     for (const unsigned int h : kept)
       work_done[h] = elements[h].stored_energy();
+    typed.assign(elements.size(), nullptr);
+    for (const unsigned int h : kept)
+      if (typeid(elements[h]) == typeid(UniaxialElement))
+        typed[h] = static_cast<UniaxialElement *>(const_cast<NonlinearElement *>(&elements[h]));
+  }
+
+  template <typename Element>
+  void
+  ElementRecords::accept_element(const unsigned int h, Element &e, const std::vector<char> *counted,
+                                 double &belt)
+  {
+    const double supplied = e.supplied_work_increment();
+    work_done[h] += e.work_increment();
+    work_supplied[h] += supplied;
+    if (!counted || (*counted)[h])
+      {
+        belt += supplied;
+        held_work += e.held_load_work_increment();
+      }
+    e.commit();
+    force[h]   = e.force();
+    history[h] = e.history_variable();
   }
 
   void
   ElementRecords::accept(NonlinearElements &elements, const double t0, const double t1,
                          const Vector &v_next, const std::vector<char> *counted, double &belt)
   {
-    // A gap's or friction element's rate at v_next is taken once: its log
-    // closes the entry with it, and it is the committed rate noted for the
-    // next step (their deformation() reads only the velocities and the
-    // trial state, which a commit keeps). Each element through its concrete
-    // class (elements/typed_element.h): the same calls, so the same bits.
+    // The elements hold the step's trial state, their last evaluation: a
+    // uniaxial element's rate at v_next is the one it was evaluated with
+    // (the same sums, so the same bits), read through the final class.
+    // Another class forms it as before: a gap's or friction element's
+    // before the commit (it closes their log entries), the others' after.
+    Assert(typed.size() == elements.size(), dealii::ExcMessage("accept() before start()"));
+    const auto on_element = [&](const unsigned int h, auto &&f) {
+      if (UniaxialElement *const e = typed[h])
+        f(*e, e->trial_rate_value());
+      else
+        f(elements[h], elements[h].deformation(v_next));
+    };
     for (const unsigned int h : gaps)
-      on_concrete_element(elements[h], [&](const auto &e) {
-        const double next = e.deformation(v_next);
+      on_element(h, [&](const auto &e, const double next) {
         impacts.record(h, t0, t1, {history[h], rate[h], force[h]},
                        {e.history_variable(), next, e.force(), e.contact_point(), e.phase()});
         rate[h] = next;
       });
     for (const unsigned int h : frictions)
-      on_concrete_element(elements[h], [&](const auto &e) {
-        const double next = e.deformation(v_next);
+      on_element(h, [&](const auto &e, const double next) {
         stick_slip.record(h, t0, t1, {e.was_active(), rate[h]}, {e.is_active(), next});
         rate[h] = next;
       });
     for (const unsigned int h : kept)
-      on_concrete_element(elements[h], [&](auto &e) {
-        const double supplied = e.supplied_work_increment();
-        work_done[h] += e.work_increment();
-        work_supplied[h] += supplied;
-        if (!counted || (*counted)[h])
-          {
-            belt += supplied;
-            held_work += e.held_load_work_increment();
-          }
-        e.commit();
-        force[h]   = e.force();
-        history[h] = e.history_variable();
-        if (e.kind != ElementKind::gap && e.kind != ElementKind::friction)
-          rate[h] = e.deformation(v_next);
-      });
+      if (UniaxialElement *const e = typed[h])
+        {
+          accept_element(h, *e, counted, belt);
+          rate[h] = e->trial_rate_value();
+        }
+      else
+        {
+          NonlinearElement &other = elements[h];
+          accept_element(h, other, counted, belt);
+          if (other.kind != ElementKind::gap && other.kind != ElementKind::friction)
+            rate[h] = other.deformation(v_next);
+        }
   }
 
   void

@@ -140,16 +140,27 @@ namespace poundfe
     /// gravity state.
     /// `uniaxial`: the elements listed by list_uniaxial since they were
     /// last replaced (the energies read through the final class), or null.
+    /// `noted` (not null): each counted element's stored energy, at [h].
     double
     add_element_energies(double start, const NonlinearElements *const elements,
                          const std::vector<UniaxialElement *> *const uniaxial,
                          const unsigned int n_elements, const RankOwnership *const distribution,
-                         const std::vector<char> &counted_here)
+                         const std::vector<char> &counted_here,
+                         std::vector<double> *const noted = nullptr)
     {
-      const auto energy = [](const auto &e) { return e.stored_energy() - e.reference_energy(); };
+      if (noted)
+        noted->resize(n_elements);
       for (unsigned int h = 0; h < n_elements; ++h)
         if (!distribution || counted_here[h])
-          start += uniaxial ? on_element(*elements, *uniaxial, h, energy) : energy((*elements)[h]);
+          {
+            const auto energy = [&](const auto &e) {
+              const double stored = e.stored_energy();
+              if (noted)
+                (*noted)[h] = stored;
+              return stored - e.reference_energy();
+            };
+            start += uniaxial ? on_element(*elements, *uniaxial, h, energy) : energy((*elements)[h]);
+          }
       return start;
     }
   } // namespace
@@ -1497,7 +1508,7 @@ namespace poundfe
   NewmarkIntegrator::update_energy_error()
   {
     balance.kinetic = kinetic_energy();
-    balance.strain  = strain_energy();
+    balance.strain  = strain_energy(&element_energies);
     if (elements)
       balance.constant_load = records.held_load_work();
     if (held_load.size() > 0)
@@ -1510,13 +1521,14 @@ namespace poundfe
     if (!distribution)
       {
         if (elements)
-          set_element_dissipation(balance, *elements, records.work(), records.supplied_work());
+          set_element_dissipation(balance, *elements, records.work(), records.supplied_work(),
+                                  element_energies, {});
         update_balance_error(balance, energy_scale, max_balance_error);
         return;
       }
     if (elements)
       set_element_dissipation(balance, *elements, records.work(), records.supplied_work(),
-                              counted_here);
+                              element_energies, counted_here);
     sum_balance_over_ranks();
     update_balance_error(total_balance, energy_scale, max_balance_error);
   }
@@ -1571,6 +1583,12 @@ namespace poundfe
   double
   NewmarkIntegrator::strain_energy() const
   {
+    return strain_energy(nullptr);
+  }
+
+  double
+  NewmarkIntegrator::strain_energy(std::vector<double> *const noted) const
+  {
     // this rank's part (the ranks' are summed with the other terms)
     const FixedSizeStep *const fixed = levels[0]->fixed.get();
     const Vector &stiffness_u = stiffness_times_u();
@@ -1578,7 +1596,7 @@ namespace poundfe
     // the elements' trial state is the committed state at u
     // at a step, the elements listed at initialize()
     energy = add_element_energies(energy, elements, &levels[0]->uniaxial, n_elements,
-                                  distribution, counted_here);
+                                  distribution, counted_here, noted);
     return held_load.size() > 0 ? energy - gravity_strain : energy;
   }
 

@@ -17,37 +17,62 @@ namespace poundfe
     return work - element.stored_energy() + supplied;
   }
 
+  namespace
+  {
+    /// set_element_dissipation with element h's stored energy stored(h).
+    template <typename StoredEnergy>
+    void
+    book_element_dissipation(EnergyBalance &balance, const NonlinearElements &elements,
+                             const std::vector<double> &work,
+                             const std::vector<double> &supplied_work,
+                             const std::vector<char> &counted, const StoredEnergy &stored)
+    {
+      balance.hysteretic = balance.contact = balance.friction = balance.links = 0;
+      balance.foundation = 0;
+      for (unsigned int h = 0; h < elements.size(); ++h)
+        {
+          if (!counted.empty() && !counted[h])
+            continue;
+          // as element_dissipation: work - stored energy + supplied
+          const double dissipated = work[h] - stored(h) + supplied_work[h];
+          switch (elements[h].kind)
+            {
+              case ElementKind::gap:
+                balance.contact += dissipated;
+                break;
+              case ElementKind::friction:
+                balance.friction += dissipated;
+                break;
+              case ElementKind::link:
+                balance.links += dissipated;
+                break;
+              case ElementKind::foundation:
+                balance.foundation += dissipated;
+                break;
+              default: // hinges, storeys; elastic springs dissipate nothing
+                balance.hysteretic += dissipated;
+            }
+        }
+    }
+  } // namespace
+
   void
   set_element_dissipation(EnergyBalance &balance, const NonlinearElements &elements,
                           const std::vector<double> &work, const std::vector<double> &supplied_work,
                           const std::vector<char> &counted)
   {
-    balance.hysteretic = balance.contact = balance.friction = balance.links = 0;
-    balance.foundation = 0;
-    for (unsigned int h = 0; h < elements.size(); ++h)
-      {
-        if (!counted.empty() && !counted[h])
-          continue;
-        const NonlinearElement &e          = elements[h];
-        const double dissipated = element_dissipation(e, work[h], supplied_work[h]);
-        switch (e.kind)
-          {
-            case ElementKind::gap:
-              balance.contact += dissipated;
-              break;
-            case ElementKind::friction:
-              balance.friction += dissipated;
-              break;
-            case ElementKind::link:
-              balance.links += dissipated;
-              break;
-            case ElementKind::foundation:
-              balance.foundation += dissipated;
-              break;
-            default: // hinges, storeys; elastic springs dissipate nothing
-              balance.hysteretic += dissipated;
-          }
-      }
+    book_element_dissipation(balance, elements, work, supplied_work, counted,
+                             [&](const unsigned int h) { return elements[h].stored_energy(); });
+  }
+
+  void
+  set_element_dissipation(EnergyBalance &balance, const NonlinearElements &elements,
+                          const std::vector<double> &work, const std::vector<double> &supplied_work,
+                          const std::vector<double> &stored, const std::vector<char> &counted)
+  {
+    AssertDimension(stored.size(), elements.size());
+    book_element_dissipation(balance, elements, work, supplied_work, counted,
+                             [&](const unsigned int h) { return stored[h]; });
   }
 
   void

@@ -1,10 +1,11 @@
 #include <poundfe/output/peak_response.h>
 
-#include <poundfe/elements/typed_element.h>
+#include <poundfe/elements/uniaxial_element.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <typeinfo>
 
 namespace poundfe
 {
@@ -40,11 +41,26 @@ namespace poundfe
     for (auto *v : {&peak_d, &peak_d_at, &peak_f, &peak_plastic})
       v->assign(elements.size(), 0.0);
     smallest_clearance = std::numeric_limits<double>::infinity();
-    observe_step(state);
+    // listed again at every run: the elements may have been replaced
+    observed.clear();
+    for (unsigned int h = 0; h < elements.size(); ++h)
+      if (state.observes_element(h))
+        observed.emplace_back(h, typeid(elements[h]) == typeid(UniaxialElement) ?
+                                   static_cast<const UniaxialElement *>(&elements[h]) :
+                                   nullptr);
+    observe_floors(state);
+    observe_elements(state, false); // the initial state: formed from u
   }
 
   void
   PeakResponse::observe_step(const ResponseView &state)
+  {
+    observe_floors(state);
+    observe_elements(state, state.elements_hold_state());
+  }
+
+  void
+  PeakResponse::observe_floors(const ResponseView &state)
   {
     const double t = state.time();
     floor_response.evaluate(t, state.displacement(), state.velocity(), state.acceleration(),
@@ -57,28 +73,43 @@ namespace poundfe
                                     state.acceleration(), 0.0); // the ground does not turn
         plan_response->observe_step(state);
       }
+  }
+
+  void
+  PeakResponse::observe_elements(const ResponseView &state, const bool from_trial)
+  {
+    const double  t = state.time();
     const Vector &u = state.displacement();
-    // each element through its concrete class (elements/typed_element.h): the same bits
-    const auto observe_element = [&](const unsigned int h, const auto &e) {
-      const double d = e.deformation(u);
-      if (std::abs(d) > peak_d[h])
-        {
-          peak_d[h]    = std::abs(d);
-          peak_d_at[h] = t;
-        }
-      const double f = e.force();
-      peak_f[h]      = std::max(peak_f[h], std::abs(f));
-      if (e.kind == ElementKind::gap) // its opening is minus its penetration
-        smallest_clearance = std::min(smallest_clearance, -e.history_variable());
-      // plastic part: the deformation left after elastic unloading
-      // (a fibre member's yields in its sections: no one k0 of its end)
-      const double k0 = e.initial_stiffness();
-      if (k0 > 0 && e.kind != ElementKind::member)
-        peak_plastic[h] = std::max(peak_plastic[h], std::abs(d - f / k0));
-    };
-    for (unsigned int h = 0; h < elements.size(); ++h)
-      if (state.observes_element(h))
-        on_concrete_element(elements[h], [&](const auto &e) { observe_element(h, e); });
+    // A uniaxial element through its final class (calls to its law only),
+    // its deformation from its last evaluation when that is this state:
+    // the same sums as deformation(u), so the same bits.
+    for (const auto &[h, typed] : observed)
+      if (!typed)
+        observe_element(h, elements[h], t, elements[h].deformation(u));
+      else
+        observe_element(h, *typed, t,
+                        from_trial ? typed->trial_deformation_value() : typed->deformation(u));
+  }
+
+  template <typename Element>
+  void
+  PeakResponse::observe_element(const unsigned int h, const Element &e, const double t,
+                                const double d)
+  {
+    if (std::abs(d) > peak_d[h])
+      {
+        peak_d[h]    = std::abs(d);
+        peak_d_at[h] = t;
+      }
+    const double f = e.force();
+    peak_f[h]      = std::max(peak_f[h], std::abs(f));
+    if (e.kind == ElementKind::gap) // its opening is minus its penetration
+      smallest_clearance = std::min(smallest_clearance, -e.history_variable());
+    // plastic part: the deformation left after elastic unloading
+    // (a fibre member's yields in its sections: no one k0 of its end)
+    const double k0 = e.initial_stiffness();
+    if (k0 > 0 && e.kind != ElementKind::member)
+      peak_plastic[h] = std::max(peak_plastic[h], std::abs(d - f / k0));
   }
 
   void

@@ -391,3 +391,52 @@ BOOST_AUTO_TEST_CASE(elastic_model_one_solve_per_step_is_the_newton_iteration)
   BOOST_TEST(max_abs(linear) > 0);
   BOOST_TEST(difference <= 1e-13);
 }
+
+BOOST_AUTO_TEST_CASE(newmark_steps_end_on_the_elements_last_evaluation)
+{
+  // NewmarkIntegrator::elements_hold_state: at every accepted step and
+  // sub-step the elements' last trial state is the accepted (u, v), so the
+  // records and the peaks read a uniaxial element's deformation and rate
+  // from it instead of forming them again. The second method is that
+  // forming: deformation(u) and deformation(v) of the accepted state, the
+  // same sums in the same order, so the tolerance is 0 (bit for bit). On
+  // the default example (hinges, gaps, contact sub-steps, the contact
+  // onset's extrapolated predictor) and the Bouc-Wen storey (its local
+  // Newton iteration).
+  for (const char *file : {"input/two-buildings.prm", "input/bouc-wen-sdof.prm"})
+    {
+      const InputParameters input      = read_parameters(file);
+      const Analysis        analysis   = prepare_analysis(input);
+      const Excitation      excitation = make_excitation(analysis, input);
+      NonlinearElements     elements   = make_nonlinear_elements(analysis.model);
+      NewmarkIntegrator integrator(analysis.system, "eigen-ldlt", input.time_integration.newmark,
+                                   &elements);
+      BOOST_TEST(integrator.elements_hold_state());
+      unsigned long checked = 0, off_state = 0, in_contact = 0;
+      const auto check = [&]() {
+        for (const NonlinearElement &element : elements)
+          if (const auto *e = dynamic_cast<const UniaxialElement *>(&element))
+            {
+              off_state += e->trial_deformation_value() != e->deformation(integrator.displacement());
+              off_state += e->trial_rate_value() != e->deformation(integrator.velocity());
+              in_contact += e->kind == ElementKind::gap && e->is_active();
+              ++checked;
+            }
+      };
+      integrator.set_substep_callback(check);
+      Vector load(analysis.system.n_equations());
+      excitation.load(0, load);
+      integrator.initialize(load);
+      for (unsigned int i = 1; i <= 4000; ++i)
+        {
+          integrator.advance([&](double t, Vector &p) { excitation.load(t, p); });
+          check();
+        }
+      BOOST_TEST_MESSAGE(file << ": " << checked << " element states checked, " << in_contact
+                              << " of them gaps in contact, " << off_state << " off the state");
+      BOOST_TEST(checked >= 4000u); // every element at every step at least
+      BOOST_TEST(off_state == 0u);
+      if (std::string(file).find("two-buildings") != std::string::npos)
+        BOOST_TEST(in_contact > 0u);
+    }
+}

@@ -73,6 +73,9 @@ namespace poundfe
     /// a linear law's tangent at every iteration); else notes them, and the
     /// caller sets `factored` once it has factorised S for them.
     bool   reuses_capacitance(const std::vector<double> &d);
+    /// rhs_small = D_a B_a^T y of the k active columns (bty holds B_a^T y)
+    /// and, unless `reuse`, S = I + D_a G_aa.
+    void   form_capacitance(unsigned int k, const std::vector<double> &d, bool reuse);
     /// Gaussian elimination with partial pivoting of the leading k x k
     /// block of S: the multipliers below its diagonal, the pivot rows in
     /// `pivot`.

@@ -79,6 +79,15 @@ namespace poundfe
     double yield_deformation() const override { return law->yield_deformation(); }
     double initial_stiffness() const override { return law->initial_stiffness(); }
 
+    /// The deformation and its rate at the last trial state (set_trial or
+    /// evaluate; after revert, the committed deformation): once Newton has
+    /// converged, deformation(u) and deformation(v) of the accepted state,
+    /// the same sums in the same order and so the same bits, not formed again.
+    double trial_deformation_value() const { return trial_deformation; }
+    double trial_rate_value() const { return trial_rate; }
+    /// The law through the final class: calls on it are the law's only.
+    const UniaxialLaw &uniaxial_law() const { return *law; }
+
   private:
     /// b^T x of a local vector (ground DOFs skipped, as in deformation()).
     double local_deformation(const LocalVector &x) const;
@@ -89,6 +98,7 @@ namespace poundfe
     std::vector<unsigned int>    free_dofs; // local DOFs whose equation >= 0, in order
     // For the work of a step: the committed deformation and force, the trial deformation.
     double committed_deformation = 0, committed_force = 0, trial_deformation = 0;
+    double trial_rate = 0; // of the last set_trial or evaluate
   };
 } // namespace poundfe
 

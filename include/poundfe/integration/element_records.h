@@ -8,6 +8,9 @@
 // entries in those logs. NewmarkIntegrator records its steps with it, and
 // rank 0 of a run partitioned by building replays its ranks' steps with it
 // (integration/replayed_stepper.h): both logs are made by the same code.
+// Both call accept() with the elements at the step's trial state, their
+// last evaluation: a uniaxial element's rate at v_next is read from it
+// (UniaxialElement::trial_rate_value), the same bits as forming it again.
 #ifndef poundfe_integration_element_records_h
 #define poundfe_integration_element_records_h
 
@@ -20,6 +23,8 @@
 
 namespace poundfe
 {
+  class UniaxialElement;
+
   class ElementRecords
   {
   public:
@@ -34,7 +39,8 @@ namespace poundfe
     /// state, or a restart): their force, history variable and rate.
     void note_committed(const NonlinearElements &elements, const Vector &v);
     /// From the initial state: empty logs, nothing supplied, each
-    /// element's work its stored energy there.
+    /// element's work its stored energy there. Lists the elements' classes
+    /// again (they may have been replaced since the last run).
     void start(const NonlinearElements &elements);
     /// The step [t0, t1], whose trial state (velocity `v_next`) the
     /// elements hold: log its impacts and stick-slip episodes, add each
@@ -64,7 +70,17 @@ namespace poundfe
     double committed_rate(const unsigned int h) const { return rate[h]; }
 
   private:
+    /// One kept element's work, supplied work and commit, and its
+    /// committed force and history variable noted.
+    template <typename Element>
+    void accept_element(unsigned int h, Element &e, const std::vector<char> *counted,
+                        double &belt);
+
     std::vector<unsigned int> kept, gaps, frictions;
+    /// Element h as the UniaxialElement it is, else null (listed at start()):
+    /// the per-step calls go through the final class, with no test of the
+    /// class per element and step.
+    std::vector<UniaxialElement *> typed;
     std::vector<double>       work_done, work_supplied, force, history, rate;
     double                    held_work = 0;
     ImpactLog                 impacts;

@@ -288,6 +288,10 @@ namespace poundfe
     const ImpactLog &impact_log() const override { return records.impact_log(); }
     /// Every stick and slip episode of the friction elements so far.
     const StickSlipLog &stick_slip_log() const override { return records.stick_slip_log(); }
+    /// Every step ends on the converged iterate, the elements evaluated at
+    /// it (try_step returns right after the evaluation that met the test),
+    /// and accept() commits that state.
+    bool elements_hold_state() const override { return true; }
     /// The update in use (never automatic).
     TangentUpdate tangent_update() const
     {
@@ -394,6 +398,9 @@ namespace poundfe
     /// x^T K x / 2 plus the elements' stored energy less their part in K,
     /// at their trial state (this rank's elements).
     double strain_energy_at(const Vector &x) const;
+    /// strain_energy(), each counted element's stored energy written to
+    /// (*noted)[h] on the way (not null: the step's dissipation reads them).
+    double strain_energy(std::vector<double> *noted) const;
     /// `ok` on every rank; else false, with `failure` set where it was not
     /// already (the cause is on another rank). Collective when distributed.
     bool   agreed(bool ok, const char *elsewhere);
@@ -455,6 +462,8 @@ namespace poundfe
     std::vector<unsigned int> event_elements;
     /// Per element: work, the impact and stick-slip logs.
     ElementRecords records;
+    /// Element h's stored energy at the last accepted step (update_energy_error).
+    std::vector<double> element_energies;
     double         last_step = 0; // of the last accepted (sub)step
     std::string failure;
     std::function<void()> substep_callback;

@@ -56,6 +56,12 @@ namespace poundfe
     virtual const ImpactLog           &impact_log() const     = 0;
     virtual const StickSlipLog        &stick_slip_log() const = 0;
     virtual const IterationStatistics &statistics() const     = 0;
+    /// Whether, at each accepted (sub)step it reports, the nonlinear
+    /// elements hold the trial state at displacement() and velocity() as
+    /// their last evaluation (the converged Newton iterate), so that an
+    /// observer may read a uniaxial element's deformation from it instead
+    /// of forming it again (UniaxialElement::trial_deformation_value).
+    virtual bool elements_hold_state() const { return false; }
   };
 
   /// What one element dissipated: its work minus its stored energy plus
@@ -71,6 +77,14 @@ namespace poundfe
                                const std::vector<double> &work,
                                const std::vector<double> &supplied_work,
                                const std::vector<char>   &counted = {});
+  /// The same with each element's stored energy given, stored[h] as
+  /// elements[h].stored_energy() (noted once a step with the strain
+  /// energy): the same sums, so the same bits, without a second call.
+  void set_element_dissipation(EnergyBalance &balance, const NonlinearElements &elements,
+                               const std::vector<double> &work,
+                               const std::vector<double> &supplied_work,
+                               const std::vector<double> &stored,
+                               const std::vector<char>   &counted);
 
   /// max_error = max(max_error, |supplied - stored and dissipated| / scale),
   /// scale the running maximum of both (so the start of the motion, where

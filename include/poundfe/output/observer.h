@@ -108,6 +108,9 @@ namespace poundfe
     const ImpactLog           &impact_log() const { return integrator.impact_log(); }
     const StickSlipLog        &stick_slip_log() const { return integrator.stick_slip_log(); }
     const IterationStatistics &statistics() const { return integrator.statistics(); }
+    /// At observe_step and observe_substep: whether the elements' last
+    /// trial state is this state (TimeStepper::elements_hold_state).
+    bool elements_hold_state() const { return integrator.elements_hold_state(); }
 
   private:
     const TimeStepper &integrator;

@@ -17,11 +17,13 @@
 
 #include <memory>
 #include <string>
-
+#include <utility>
 #include <vector>
 
 namespace poundfe
 {
+  class UniaxialElement;
+
   class PeakResponse : public StepObserver
   {
   public:
@@ -64,7 +66,20 @@ namespace poundfe
     double min_clearance() const { return smallest_clearance; }
 
   private:
+    /// One element's peaks at time t; `d` its deformation now.
+    template <typename Element>
+    void observe_element(unsigned int h, const Element &e, double t, double d);
+    /// The floors' (and in 3D the plan's) peaks at this state.
+    void observe_floors(const ResponseView &state);
+    /// Every observed element's peaks; `from_trial`: a uniaxial element's
+    /// deformation read from its last evaluation (ResponseView::elements_hold_state).
+    void observe_elements(const ResponseView &state, bool from_trial);
+
     const NonlinearElements &elements;
+    /// Element h as the UniaxialElement it is, else null, of the elements
+    /// observed (initialize()): the loop over them with no test of the
+    /// class or the observation per element and step.
+    std::vector<std::pair<unsigned int, const UniaxialElement *>> observed;
     FloorResponse           floor_response;
     std::unique_ptr<FloorResponse> floor_response_y;  // 3D models
     std::unique_ptr<FloorResponse> floor_response_rz; // 3D models
