@@ -654,11 +654,11 @@ namespace
 // The section's typed runs (Concrete02 and Steel02 fibres' states in one
 // array per run, evaluated in one call) against one law per fibre, written
 // in the test: the resultants, the tangent and every fibre's stress bit for
-// bit (tolerance 0: the same operations in the same order) over a walk of
-// loading, unloading and reloading with repeated trials, trials a few
-// round-offs from the committed state (inside OpenSees's dead bands), a
-// first strain of 1e-16, and every third step reverted, plane and space,
-// with and without the dead bands.
+// bit (tolerance 0: the same operations in the same order) after every
+// trial, commit and revert, over a walk of loading, unloading and reloading
+// with trials a few round-offs from the committed state and from the last
+// trial (inside OpenSees's dead bands), a first strain of 1e-16, and every
+// third step reverted, plane and space, with and without the dead bands.
 BOOST_AUTO_TEST_CASE(typed_runs_give_the_bits_of_one_law_per_fibre)
 {
   for (const bool dead_band : {false, true})
@@ -667,7 +667,11 @@ BOOST_AUTO_TEST_CASE(typed_runs_give_the_bits_of_one_law_per_fibre)
         const FibreGeometry g = mixed_runs(dead_band);
         FibreSection        section(g, n, n == 4 ? 1e6 : 0.0);
         OneLawPerFibre      reference(g, n);
-        SectionVector       e = SectionVector::Zero(n);
+        SectionVector       e = SectionVector::Zero(n), committed = e;
+        const auto same_stresses = [&]() {
+          for (unsigned int i = 0; i < g.fibres.size(); ++i)
+            BOOST_TEST(section.fibre_stress(i) == reference.laws[i]->force());
+        };
         for (unsigned int step = 0; step < 60; ++step)
           {
             const double t = 0.2 * step;
@@ -675,15 +679,20 @@ BOOST_AUTO_TEST_CASE(typed_runs_give_the_bits_of_one_law_per_fibre)
               {
                 if (step == 0)
                   e(0) = trial * 1e-16;
-                else if (trial < 2)
+                else if (trial == 0)
+                  {
+                    e = committed; // a few round-offs from the committed state
+                    e(1) += 1e-18;
+                  }
+                else if (trial < 3)
                   {
                     e(0) = 4e-4 * std::sin(t) - 2e-4 + 1e-4 * trial;
                     e(1) = 0.03 * std::sin(1.3 * t) * (1 + 0.1 * trial);
                     if (n == 4)
                       e(2) = 0.02 * std::cos(0.7 * t);
                   }
-                else if (trial == 2)
-                  e(1) += 1e-18; // a few round-offs of the strain
+                else
+                  e(1) += 1e-18; // a few round-offs from the last trial
                 const bool accepted = section.set_trial(e);
                 BOOST_TEST_REQUIRE(accepted == reference.set_trial(e));
                 for (unsigned int r = 0; r < reference.m; ++r)
@@ -692,8 +701,7 @@ BOOST_AUTO_TEST_CASE(typed_runs_give_the_bits_of_one_law_per_fibre)
                     for (unsigned int c = 0; c < reference.m; ++c)
                       BOOST_TEST(section.tangent()(r, c) == reference.k(r, c));
                   }
-                for (unsigned int i = 0; i < g.fibres.size(); ++i)
-                  BOOST_TEST(section.fibre_stress(i) == reference.laws[i]->force());
+                same_stresses();
               }
             if (step % 3 == 2)
               {
@@ -706,7 +714,9 @@ BOOST_AUTO_TEST_CASE(typed_runs_give_the_bits_of_one_law_per_fibre)
                 section.commit();
                 for (const auto &law : reference.laws)
                   law->commit();
+                committed = e;
               }
+            same_stresses();
           }
       }
 }

@@ -40,9 +40,9 @@
 // elements and the materials' damping tangents for the others.
 // K_eff is solved by LU with partial pivoting on a dense matrix up to
 // dense_equation_limit equations (as OpenSees's BandGeneral, LAPACK's
-// dgbsv), above by LAPACK's banded LU (a banded system) or UMFPACK, with
-// the numbering or symbolic analysis kept while the equations stay; the work vectors keep their storage between
-// iterations.
+// dgbsv), above by LAPACK's banded LU (a banded system) or UMFPACK, with the
+// numbering or symbolic analysis kept while the equations stay; the work
+// vectors keep their storage between iterations.
 #ifndef poundfe_opensees_opensees_analysis_h
 #define poundfe_opensees_opensees_analysis_h
 
