@@ -1,6 +1,7 @@
 // Banded LU with partial pivoting (LAPACK's dgbtrf/dgbtrs) after a
-// Cuthill–McKee numbering of the effective matrix's graph (deal.II's
-// SparsityTools::reorder_Cuthill_McKee; Cuthill & McKee 1969).
+// Cuthill–McKee numbering of the effective matrix's graph (the numbering
+// of deal.II's SparsityTools::reorder_Cuthill_McKee, without deal.II;
+// Cuthill & McKee 1969).
 //   P A P^T = L U, A of lower and upper bandwidths kl, ku once renumbered;
 //   the factorisation costs about n kl (kl + ku) multiply-adds and the
 //   storage (2 kl + ku + 1) n numbers (LAPACK's band layout: the pivoting
@@ -14,15 +15,15 @@
 // (analyze); factorize and solve allocate nothing. Sources: E. Anderson et
 // al. (1999), LAPACK Users' Guide, 3rd ed., SIAM, §2.4.2 and §5.3.3; E.
 // Cuthill & J. McKee (1969), Proc. 24th ACM National Conference, 157-172.
-#include <poundfe/assembly/linear_solver.h>
+#include <poundfe/assembly/band_lu_solver.h>
 #include <poundfe/base/exceptions.h>
-
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
+#include <poundfe/base/lean_assert.h>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 extern "C"
@@ -38,27 +39,92 @@ namespace poundfe
 {
   namespace
   {
-    /// new_index[i]: the place of equation i in the Cuthill–McKee numbering
-    /// of the symmetrised pattern of `matrix`.
-    std::vector<int>
-    cuthill_mckee_numbering(const SparseMatrix &matrix)
+    /// The symmetrised pattern of `matrix` with its diagonal: the sorted
+    /// neighbours of each equation (itself among them), as deal.II's
+    /// DynamicSparsityPattern holds it.
+    std::vector<std::vector<int>>
+    symmetric_neighbours(const SparseMatrix &matrix)
     {
-      const unsigned int              n = matrix.rows();
-      dealii::DynamicSparsityPattern pattern(n, n);
-      for (unsigned int j = 0; j < n; ++j)
+      std::vector<std::vector<int>> neighbours(matrix.rows());
+      for (int j = 0; j < matrix.outerSize(); ++j)
         {
-          pattern.add(j, j);
+          neighbours[j].push_back(j);
           for (SparseMatrix::InnerIterator it(matrix, j); it; ++it)
             {
-              pattern.add(it.row(), j);
-              pattern.add(j, it.row());
+              neighbours[it.row()].push_back(j);
+              neighbours[j].push_back(it.row());
             }
         }
-      std::vector<dealii::types::global_dof_index> new_index(n);
-      dealii::SparsityTools::reorder_Cuthill_McKee(pattern, new_index);
-      return std::vector<int>(new_index.begin(), new_index.end());
+      for (std::vector<int> &row : neighbours)
+        {
+          std::sort(row.begin(), row.end());
+          row.erase(std::unique(row.begin(), row.end()), row.end());
+        }
+      return neighbours;
     }
 
+    /// deal.II's find_unnumbered_starting_index: the first unnumbered
+    /// equation of fewest neighbours (itself counted), fewer than n; failing
+    /// that the first unnumbered one; -1 when all are numbered.
+    int
+    unnumbered_start(const std::vector<std::vector<int>> &neighbours,
+                     const std::vector<int>               &new_index)
+    {
+      const int n     = neighbours.size();
+      int       start = -1;
+      for (int i = 0, fewest = n; i < n; ++i)
+        if (new_index[i] < 0 && static_cast<int>(neighbours[i].size()) < fewest)
+          {
+            fewest = neighbours[i].size();
+            start  = i;
+          }
+      if (start < 0)
+        start = std::find(new_index.begin(), new_index.end(), -1) - new_index.begin();
+      return start < n ? start : -1;
+    }
+  } // namespace
+
+  std::vector<int>
+  cuthill_mckee_numbering(const SparseMatrix &matrix)
+  {
+    // the fronts of a breadth-first search from a start of fewest
+    // neighbours; each front numbered by its members' numbers of
+    // neighbours, ties by their index; a new start for each unconnected
+    // part (deal.II's reorder_Cuthill_McKee without starting indices)
+    const std::vector<std::vector<int>> neighbours = symmetric_neighbours(matrix);
+    std::vector<int>                    new_index(neighbours.size(), -1);
+    std::vector<int>                    front, next_front;
+    std::vector<std::pair<std::size_t, int>> by_neighbours;
+    int                                  next_number = 0;
+    for (int start = unnumbered_start(neighbours, new_index); start >= 0;
+         start     = unnumbered_start(neighbours, new_index))
+      {
+        new_index[start] = next_number++;
+        front            = {start};
+        while (!front.empty())
+          {
+            next_front.clear();
+            for (const int i : front)
+              for (const int j : neighbours[i])
+                if (new_index[j] < 0)
+                  {
+                    new_index[j] = 0; // in the front: not collected twice
+                    next_front.push_back(j);
+                  }
+            by_neighbours.clear();
+            for (const int j : next_front)
+              by_neighbours.emplace_back(neighbours[j].size(), j);
+            std::sort(by_neighbours.begin(), by_neighbours.end());
+            for (const auto &[count, j] : by_neighbours)
+              new_index[j] = next_number++;
+            front.swap(next_front);
+          }
+      }
+    return new_index;
+  }
+
+  namespace
+  {
     /// The largest band storage band-lu takes (2 GiB): beyond it the band is
     /// the wrong format (umfpack stores only the fill), and LAPACK's 32-bit
     /// indices stay far from overflow below it.
@@ -125,7 +191,8 @@ namespace poundfe
         dgbtrf_(&n, &n, &lower, &upper, band.data(), &leading, pivots.data(), &info);
         if (info > 0)
           throw_singular();
-        AssertThrow(info == 0, dealii::ExcMessage("dgbtrf refused its arguments"));
+        if (info != 0)
+          throw std::logic_error("dgbtrf refused its arguments");
         // U's diagonal: row kl + ku of the band
         for (int j = 0; j < n; ++j)
           if (!std::isfinite(band[lower + upper + static_cast<std::size_t>(j) * leading]))
@@ -143,7 +210,8 @@ namespace poundfe
         int       info = 0;
         dgbtrs_("N", &n, &lower, &upper, &one, band.data(), &leading, pivots.data(),
                 buffer.data(), &n, &info, 1);
-        AssertThrow(info == 0, dealii::ExcMessage("dgbtrs refused its arguments"));
+        if (info != 0)
+          throw std::logic_error("dgbtrs refused its arguments");
         for (int i = 0; i < n; ++i)
           x[i] = buffer[new_index[i]];
       }

@@ -1,3 +1,4 @@
+#include <poundfe/assembly/band_lu_solver.h>
 #include <poundfe/assembly/iterative_solver.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
@@ -77,9 +78,6 @@ namespace poundfe
   {
     return std::make_unique<EigenLdltSolver>();
   }
-
-  // LAPACK's banded LU after a Cuthill-McKee numbering (band_lu_solver.cc)
-  std::unique_ptr<LinearSolver> create_band_lu_solver();
 
   std::vector<std::string>
   linear_solver_names()

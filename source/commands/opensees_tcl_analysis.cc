@@ -51,13 +51,15 @@ namespace poundfe
           }
       }
 
-      void
+      /// The command's one word, one of `names`.
+      std::string
       accept_names(Words &w, const std::vector<std::string> &names)
       {
         const std::string name = w.word("the type");
         if (std::find(names.begin(), names.end(), name) == names.end())
           unsupported(w.name + " " + name);
         check_done(w);
+        return name;
       }
 
       void
@@ -703,11 +705,17 @@ namespace poundfe
       define(interp, session, "numberer", [](Session &, Words &w) {
         accept_names(w, {"Plain", "RCM", "AMD"});
       });
-      // every sparse or banded solver: UMFPACK (the same numbers to round-off)
-      define(interp, session, "system", [](Session &, Words &w) {
-        accept_names(w, {"BandGeneral", "BandGen", "BandSPD", "ProfileSPD", "SparseGeneral",
-                         "SparseGEN", "UmfPack", "Umfpack", "FullGeneral", "SparseSYM",
-                         "SparseSPD", "Mumps"});
+      // OpenSees's banded and profile systems: LAPACK's banded LU after a
+      // Cuthill-McKee numbering; every other one UMFPACK (the same numbers
+      // to round-off)
+      define(interp, session, "system", [](Session &s, Words &w) {
+        const std::string name =
+          accept_names(w, {"BandGeneral", "BandGen", "BandSPD", "ProfileSPD", "SparseGeneral",
+                           "SparseGEN", "UmfPack", "Umfpack", "FullGeneral", "SparseSYM",
+                           "SparseSPD", "Mumps"});
+        s.options.banded_system =
+          name == "BandGeneral" || name == "BandGen" || name == "BandSPD" || name == "ProfileSPD";
+        reconfigure(s);
       });
       define(interp, session, "test", test);
       define(interp, session, "algorithm", algorithm);

@@ -84,8 +84,23 @@ namespace poundfe
   Concrete02State
   Concrete02::respond(const Concrete02State &from, const double strain) const
   {
+    return trial_state(from, trial, strain);
+  }
+
+  void
+  Concrete02::set_trials(const std::size_t n, const double *strains,
+                         const Concrete02State *from, Concrete02State *to) const
+  {
+    for (std::size_t k = 0; k < n; ++k)
+      to[k] = trial_state(from[k], to[k], strains[k]);
+  }
+
+  Concrete02State
+  Concrete02::trial_state(const Concrete02State &from, const Concrete02State &last,
+                          const double strain) const
+  {
     if (opensees_dead_band && std::abs(strain - from.strain) < DBL_EPSILON)
-      return in_dead_band(from, strain);
+      return in_dead_band(from, last, strain);
     if (strain == from.strain)
       return from;
     if (strain < from.min_strain)
@@ -142,16 +157,17 @@ namespace poundfe
   }
 
   Concrete02State
-  Concrete02::in_dead_band(const Concrete02State &from, const double strain) const
+  Concrete02::in_dead_band(const Concrete02State &from, const Concrete02State &last,
+                           const double strain) const
   {
     // OpenSees's setTrialStrain restores ecmin and dept, sets eps and returns,
-    // leaving sig and e as its last trial set them: this->trial, which
-    // set_trial replaces only when respond returns (after a commit or a
-    // revert it is the committed state, as OpenSees's sig and e are then)
+    // leaving sig and e as its last trial set them: `last`, which set_trial
+    // replaces only when respond returns (after a commit or a revert it is
+    // the committed state, as OpenSees's sig and e are then)
     Concrete02State s = from;
     s.strain          = strain;
-    s.stress          = trial.stress;
-    s.tangent         = trial.tangent;
+    s.stress          = last.stress;
+    s.tangent         = last.tangent;
     return s;
   }
 

@@ -21,6 +21,7 @@
 // masses stay diagonal because the constrained nodes may carry none along
 // their tied DOFs).
 #include <poundfe/base/thread_limit.h>
+#include <poundfe/assembly/band_lu_solver.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/parallel_refusal.h>
@@ -281,6 +282,11 @@ namespace poundfe
         fresh_integrator = true;
       if (options.penalty != opts.penalty) // the equations differ
         numbered = false;
+      if (options.banded_system != opts.banded_system) // another solver
+        {
+          solver.reset();
+          analysed = false;
+        }
       opts = options;
     }
 
@@ -851,7 +857,7 @@ namespace poundfe
       if (!Eigen::Map<const Vector>(tangent_matrix.valuePtr(), tangent_matrix.nonZeros()).allFinite())
         throw NumericalError(not_finite);
       if (!solver)
-        solver = create_umfpack_solver(); // what every `system` of a script solves with
+        solver = opts.banded_system ? create_band_lu_solver() : create_umfpack_solver();
       if (!analysed)
         solver->analyze(tangent_matrix);
       analysed = true;

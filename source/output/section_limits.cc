@@ -46,7 +46,7 @@ namespace poundfe
     {
       for (unsigned int i = 0; i < kinds.size(); ++i)
         if (kinds[i] == FibreKind::steel)
-          return section.fibre_law(i).yield_deformation();
+          return section.fibre_material(i).yield_deformation();
       return 0;
     }
 
@@ -314,7 +314,7 @@ namespace poundfe
     const FibreGeometry &g  = section.geometry();
     double               ea = 0;
     for (unsigned int i = 0; i < g.fibres.size(); ++i)
-      ea += g.fibres[i].area * section.fibre_law(i).initial_stiffness();
+      ea += g.fibres[i].area * section.fibre_material(i).initial_stiffness();
     return ea;
   }
 

@@ -79,7 +79,7 @@ namespace poundfe
       section.reset();
       const FibreGeometry &g = section.geometry();
       for (unsigned int i = 0; i < g.fibres.size(); ++i)
-        force_scale += g.fibres[i].area * section.fibre_law(i).initial_stiffness() * 1e-3;
+        force_scale += g.fibres[i].area * section.fibre_material(i).initial_stiffness() * 1e-3;
       force_scale = std::max(force_scale, std::abs(settings.axial_force));
       add_watches();
     }
@@ -96,7 +96,7 @@ namespace poundfe
                                           [&](const Fibre &f) { return f.material == m; });
           if (fibre == g.fibres.end())
             continue;
-          const UniaxialLaw &law = section.fibre_law(fibre - g.fibres.begin());
+          const UniaxialLaw &law = section.fibre_material(fibre - g.fibres.begin());
           const double       ey  = law.yield_deformation();
           if (material.role() == MaterialRole::steel && ey > 0)
             watches.push_back({"first yield of " + material.name, m, -ey, ey, false});

@@ -11,9 +11,14 @@
 // reports only exact zero pivots), as UMFPACK refuses them. A 0 x 0 matrix
 // gives the empty solution; a band beyond band-lu's 2 GiB limit (an arrow
 // matrix of 20 000 equations: bandwidths about n, 9.6 GB of band) is
-// refused before it is allocated.
+// refused before it is allocated. The numbering is deal.II's Cuthill-McKee
+// numbering, checked against deal.II itself.
+#include <poundfe/assembly/band_lu_solver.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/base/exceptions.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -151,4 +156,81 @@ BOOST_AUTO_TEST_CASE(band_lu_refuses_a_band_beyond_its_limit)
   A.makeCompressed();
   auto solver = create_linear_solver("band-lu");
   BOOST_CHECK_THROW(solver->analyze(A), NumericalError);
+}
+
+namespace
+{
+  /// deal.II's Cuthill-McKee numbering of the symmetrised pattern of A with
+  /// its diagonal: the reference the deal.II-free numbering must equal.
+  std::vector<int>
+  deal_ii_numbering(const SparseMatrix &A)
+  {
+    const unsigned int             n = A.rows();
+    dealii::DynamicSparsityPattern pattern(n, n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        pattern.add(j, j);
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          {
+            pattern.add(it.row(), j);
+            pattern.add(j, it.row());
+          }
+      }
+    std::vector<dealii::types::global_dof_index> new_index(n);
+    dealii::SparsityTools::reorder_Cuthill_McKee(pattern, new_index);
+    return std::vector<int>(new_index.begin(), new_index.end());
+  }
+
+  /// n equations, each coupled to `per_row` others drawn at random (a
+  /// nonsymmetric pattern), and `isolated` equations coupled to none: some
+  /// draws leave the graph in several parts.
+  SparseMatrix
+  random_pattern(const int n, const int per_row, const int isolated, const unsigned int seed)
+  {
+    std::mt19937                        draw(seed);
+    std::uniform_int_distribution<int>  column(0, n - 1);
+    std::vector<Eigen::Triplet<double>> t;
+    for (int i = 0; i < n; ++i)
+      {
+        t.emplace_back(i, i, 1.0);
+        if (i >= n - isolated)
+          continue;
+        for (int k = 0; k < per_row; ++k)
+          {
+            const int j = column(draw);
+            if (j < n - isolated)
+              t.emplace_back(i, j, 1.0);
+          }
+      }
+    SparseMatrix A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    A.makeCompressed();
+    return A;
+  }
+} // namespace
+
+// The deal.II-free Cuthill-McKee numbering (band_lu_solver.cc) against
+// deal.II's SparsityTools::reorder_Cuthill_McKee, exactly (tolerance 0: a
+// numbering is integers): random patterns from 1 to 300 equations, sparse
+// ones in many parts, with isolated equations, dense ones (every equation
+// coupled to all: the starting rule's fallback), the shuffled chain.
+BOOST_AUTO_TEST_CASE(cuthill_mckee_numbers_as_deal_ii)
+{
+  unsigned int seed = 1;
+  for (const int n : {1, 2, 3, 7, 40, 300})
+    for (const int per_row : {0, 1, 2, 5})
+      for (const int isolated : {0, 1, 3})
+        if (isolated < n)
+          {
+            const SparseMatrix A = random_pattern(n, per_row, isolated, seed++);
+            BOOST_TEST(cuthill_mckee_numbering(A) == deal_ii_numbering(A),
+                       "n " << n << ", per row " << per_row << ", isolated " << isolated);
+          }
+  for (const int n : {1, 2, 6})
+    {
+      const SparseMatrix full = Eigen::MatrixXd::Ones(n, n).sparseView();
+      BOOST_TEST(cuthill_mckee_numbering(full) == deal_ii_numbering(full));
+    }
+  const SparseMatrix chain = shuffled_chain(60, 1.0);
+  BOOST_TEST(cuthill_mckee_numbering(chain) == deal_ii_numbering(chain));
 }

@@ -6,8 +6,10 @@
 // section tangent against central differences of the resultants; revert
 // and clone; a circular patch's area and second moment; a square bent at
 // 45 degrees; the plane and space sections about z; OpenSees's generators
-// and the refusals of bad geometry.
+// and the refusals of bad geometry; the typed runs of Concrete02 and Steel02
+// fibres against one law per fibre, bit for bit.
 #include <poundfe/base/exceptions.h>
+#include <poundfe/laws/opensees_dead_bands.h>
 #include <poundfe/sections/fibre_generators.h>
 #include <poundfe/sections/fibre_section.h>
 #include <poundfe/sections/moment_curvature.h>
@@ -17,7 +19,10 @@
 
 #include <cmath>
 #include <functional>
+#include <iterator>
+#include <memory>
 #include <string>
+#include <vector>
 
 using namespace poundfe;
 
@@ -558,4 +563,160 @@ BOOST_AUTO_TEST_CASE(rc_circle_with_concrete02_tension_bends_to_the_core_strain_
              boost::test_tools::tolerance(0.02));
   BOOST_TEST(with_tension.ultimate.moment == no_tension.ultimate.moment,
              boost::test_tools::tolerance(0.02));
+}
+
+namespace
+{
+  /// A section whose fibres run by material as the section groups them: two
+  /// runs of Concrete02 apart, Steel02 with isotropic hardening, Concrete01,
+  /// Steel01 and ElasticPP (one law per fibre), some fibres on the axes (a
+  /// change of curvature alone leaves their strain as it was); with
+  /// `dead_band` every material OpenSees's dead band where it has one (as
+  /// `poundfe opensees` makes them).
+  FibreGeometry
+  mixed_runs(const bool dead_band)
+  {
+    const std::vector<MaterialParameters> laws = {
+      {"Concrete02",
+       {{"fpc", -30e6}, {"epsc0", -0.002}, {"fpcu", -6e6}, {"epscu", -0.006}, {"lambda", 0.1},
+        {"ft", 3e6}, {"Ets", 1.5e9}}},
+      {"Steel02",
+       {{"fy", 420e6}, {"E0", 200e9}, {"b", 0.01}, {"R0", 20}, {"cR1", 0.925}, {"cR2", 0.15},
+        {"a1", 0.04}, {"a2", 1}, {"a3", 0.04}, {"a4", 1}}},
+      {"Concrete01", {{"fpc", -30e6}, {"epsc0", -0.002}, {"fpcu", -6e6}, {"epscu", -0.006}}},
+      {"Steel01", {{"fy", 420e6}, {"E0", 200e9}, {"b", 0.02}}},
+      {"ElasticPP", {{"E", 200e9}, {"epsyP", 0.002}}}};
+    FibreGeometry g;
+    for (unsigned int m = 0; m < laws.size(); ++m)
+      {
+        SectionMaterial material{"m" + std::to_string(m), laws[m]};
+        if (dead_band)
+          material.law.values[opensees_dead_band_entry] = 1;
+        g.add_material(material);
+      }
+    // runs: 0 0 0 0 0 0 1 1 1 1 2 2 2 3 3 4 4 0 0 0 0 0 1 1 ...
+    const unsigned int pattern[] = {0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 3, 3, 4, 4, 0, 0, 0,
+                                    0, 0, 1, 1, 3, 2, 0, 4};
+    for (unsigned int i = 0; i < std::size(pattern); ++i)
+      g.fibres.push_back({(i % 7) * 0.05 - 0.15, (i % 3) * 0.1 - 0.1, 1e-3 * (1 + i % 4),
+                          pattern[i]});
+    return g;
+  }
+
+  /// The section's state determination written again the plain way: one
+  /// law per fibre, each fibre's trial through the law's own set_trial, the
+  /// sums in the fibres' order (the section before its runs).
+  struct OneLawPerFibre
+  {
+    OneLawPerFibre(const FibreGeometry &g, const unsigned int n)
+      : g(g)
+      , m(n == 4 ? 3 : 2)
+      , y_ref(g.centroid_y())
+      , z_ref(g.centroid_z())
+    {
+      for (const Fibre &f : g.fibres)
+        laws.push_back(make_material(g.materials[f.material].law));
+    }
+    bool
+    set_trial(const SectionVector &e)
+    {
+      s = SectionVector::Zero(m);
+      k = SectionMatrix::Zero(m, m);
+      for (unsigned int i = 0; i < laws.size(); ++i)
+        {
+          const Fibre &f      = g.fibres[i];
+          const double a[3]   = {1, -(f.y - y_ref), f.z - z_ref};
+          double       strain = e(0) - (f.y - y_ref) * e(1);
+          if (m == 3)
+            strain += (f.z - z_ref) * e(2);
+          if (!laws[i]->set_trial(strain, 0))
+            return false;
+          const double force = laws[i]->force() * f.area, stiffness = laws[i]->tangent() * f.area;
+          for (unsigned int r = 0; r < m; ++r)
+            {
+              s(r) += force * a[r];
+              for (unsigned int c = 0; c < m; ++c)
+                k(r, c) += stiffness * a[r] * a[c];
+            }
+        }
+      return true;
+    }
+
+    const FibreGeometry                       &g;
+    const unsigned int                         m;
+    const double                               y_ref, z_ref;
+    std::vector<std::unique_ptr<UniaxialLaw>> laws;
+    SectionVector                              s;
+    SectionMatrix                              k;
+  };
+} // namespace
+
+// The section's typed runs (Concrete02 and Steel02 fibres' states in one
+// array per run, evaluated in one call) against one law per fibre, written
+// in the test: the resultants, the tangent and every fibre's stress bit for
+// bit (tolerance 0: the same operations in the same order) after every
+// trial, commit and revert, over a walk of loading, unloading and reloading
+// with trials a few round-offs from the committed state and from the last
+// trial (inside OpenSees's dead bands), a first strain of 1e-16, and every
+// third step reverted, plane and space, with and without the dead bands.
+BOOST_AUTO_TEST_CASE(typed_runs_give_the_bits_of_one_law_per_fibre)
+{
+  for (const bool dead_band : {false, true})
+    for (const unsigned int n : {2u, 4u})
+      {
+        const FibreGeometry g = mixed_runs(dead_band);
+        FibreSection        section(g, n, n == 4 ? 1e6 : 0.0);
+        OneLawPerFibre      reference(g, n);
+        SectionVector       e = SectionVector::Zero(n), committed = e;
+        const auto same_stresses = [&]() {
+          for (unsigned int i = 0; i < g.fibres.size(); ++i)
+            BOOST_TEST(section.fibre_stress(i) == reference.laws[i]->force());
+        };
+        for (unsigned int step = 0; step < 60; ++step)
+          {
+            const double t = 0.2 * step;
+            for (unsigned int trial = 0; trial < 4; ++trial)
+              {
+                if (step == 0)
+                  e(0) = trial * 1e-16;
+                else if (trial == 0)
+                  {
+                    e = committed; // a few round-offs from the committed state
+                    e(1) += 1e-18;
+                  }
+                else if (trial < 3)
+                  {
+                    e(0) = 4e-4 * std::sin(t) - 2e-4 + 1e-4 * trial;
+                    e(1) = 0.03 * std::sin(1.3 * t) * (1 + 0.1 * trial);
+                    if (n == 4)
+                      e(2) = 0.02 * std::cos(0.7 * t);
+                  }
+                else
+                  e(1) += 1e-18; // a few round-offs from the last trial
+                const bool accepted = section.set_trial(e);
+                BOOST_TEST_REQUIRE(accepted == reference.set_trial(e));
+                for (unsigned int r = 0; r < reference.m; ++r)
+                  {
+                    BOOST_TEST(section.resultant()(r) == reference.s(r));
+                    for (unsigned int c = 0; c < reference.m; ++c)
+                      BOOST_TEST(section.tangent()(r, c) == reference.k(r, c));
+                  }
+                same_stresses();
+              }
+            if (step % 3 == 2)
+              {
+                section.revert();
+                for (const auto &law : reference.laws)
+                  law->revert();
+              }
+            else
+              {
+                section.commit();
+                for (const auto &law : reference.laws)
+                  law->commit();
+                committed = e;
+              }
+            same_stresses();
+          }
+      }
 }

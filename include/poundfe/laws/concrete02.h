@@ -28,7 +28,7 @@ namespace poundfe
     double zero_strain = 0;    // eps_t, where the unloading curve reaches zero stress
   };
 
-  class Concrete02 : public UniaxialMaterial<Concrete02State>
+  class Concrete02 final : public UniaxialMaterial<Concrete02State>
   {
   public:
     /// With `opensees_dead_band`, OpenSees 3.8's: a strain within DBL_EPSILON
@@ -41,16 +41,27 @@ namespace poundfe
     /// The tension envelope: Ec0 eps to ft, then ft - Ets (eps - ft/Ec0) down to 0.
     StressPoint tension_envelope(double strain) const;
 
+    Concrete02State virgin() const override;
+    /// Each of n fibres' trial states at its strain, from its committed
+    /// state; trial[k] holds the last trial on entry (the dead band keeps its
+    /// stress and tangent). What set_trial does, for the fibres of a section
+    /// in one call (FibreSection).
+    void set_trials(std::size_t n, const double *strains, const Concrete02State *from,
+                    Concrete02State *to) const;
+
   private:
     Concrete02State respond(const Concrete02State &from, double strain) const override;
-    Concrete02State virgin() const override;
+    /// The trial state at `strain` from `from`, `last` the last trial.
+    Concrete02State trial_state(const Concrete02State &from, const Concrete02State &last,
+                                double strain) const;
     /// Between the largest compression and the tension side.
     Concrete02State unload_or_reload(const Concrete02State &from, double strain) const;
     /// Sets min_strain = strain on the envelope and what follows from it.
     void set_min_strain(Concrete02State &s, double strain, const StressPoint &on_envelope) const;
     /// The trial in the dead band (OpenSees's): the committed history at
     /// `strain` with the stress and tangent of the last trial.
-    Concrete02State in_dead_band(const Concrete02State &from, double strain) const;
+    Concrete02State in_dead_band(const Concrete02State &from, const Concrete02State &last,
+                                 double strain) const;
 
     KentScottParkEnvelope envelope;
     double                lambda, ft, Ets;

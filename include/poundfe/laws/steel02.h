@@ -36,7 +36,7 @@ namespace poundfe
     double R = 0, inverse_R = 0, secant = 0;
   };
 
-  class Steel02 : public UniaxialMaterial<Steel02State>
+  class Steel02 final : public UniaxialMaterial<Steel02State>
   {
   public:
     /// InputError naming the parameter unless fy, E0, R0, cR2, a2, a4 > 0,
@@ -49,9 +49,17 @@ namespace poundfe
     double yield_deformation() const override { return p.fy / p.E0; }
     const Steel02Parameters &parameters() const { return p; }
 
+    Steel02State virgin() const override;
+    /// Each of n fibres' trial states at its strain, from its committed
+    /// state: what set_trial does, for the fibres of a section in one call
+    /// (FibreSection).
+    void set_trials(std::size_t n, const double *strains, const Steel02State *from,
+                    Steel02State *to) const;
+
   private:
     Steel02State respond(const Steel02State &from, double strain) const override;
-    Steel02State virgin() const override;
+    /// The trial state at `strain` from `from` (respond and set_trials).
+    Steel02State trial_state(const Steel02State &from, double strain) const;
     /// R, 1/R and the secant of the branch that starts at (eps_r, sig_r).
     void set_branch(Steel02State &s) const;
     /// Whether a virgin state stays virgin after the change `d_strain`.

@@ -47,9 +47,9 @@
 // elements and the materials' damping tangents for the others.
 // K_eff is solved by LU with partial pivoting on a dense matrix up to
 // dense_equation_limit equations (as OpenSees's BandGeneral, LAPACK's
-// dgbsv), above by poundfe's sparse solver with its symbolic analysis kept
-// while the equations stay; the work vectors keep their storage between
-// iterations.
+// dgbsv), above by LAPACK's banded LU (a banded system) or UMFPACK, with the
+// numbering or symbolic analysis kept while the equations stay; the work
+// vectors keep their storage between iterations.
 #ifndef poundfe_opensees_opensees_analysis_h
 #define poundfe_opensees_opensees_analysis_h
 
@@ -154,6 +154,10 @@ namespace poundfe
       /// an adaptive DisplacementControl are refused with it (OpenSees's
       /// multipliers enter their norms).
       bool            lagrange = false;
+      /// system BandGeneral, BandSPD or ProfileSPD: LAPACK's banded LU after
+      /// a Cuthill-McKee numbering (assembly/band_lu_solver.h); any other
+      /// system: UMFPACK. Either above dense_equation_limit equations only.
+      bool            banded_system = false;
     };
 
     /// What the analyses of a script have done (poundfe::report).

@@ -8,7 +8,10 @@
 //   s     = sum_i sigma_i A_i a_i,      k_s = sum_i E_t,i A_i a_i a_i^T,
 // and in space the torque T = GJ theta is elastic and uncoupled (OpenSees's
 // FiberSection3d with -GJ). As OpenSees does unless told -noCentroid, the
-// reference axis is the fibres' area centroid.
+// reference axis is the fibres' area centroid. The fibres' states are kept
+// by runs of consecutive fibres of one material: a run of Concrete02 or
+// Steel02 holds its fibres' states in one array and evaluates them in one
+// call, any other material one law per fibre (fibre_section.cc).
 #ifndef poundfe_sections_fibre_section_h
 #define poundfe_sections_fibre_section_h
 
@@ -70,6 +73,12 @@ namespace poundfe
     double centroid_z() const;
   };
 
+  namespace internal
+  {
+    /// The fibres' states, by runs of one material (fibre_section.cc).
+    struct FibreStates;
+  } // namespace internal
+
   class FibreSection : public SectionLaw
   {
   public:
@@ -79,6 +88,8 @@ namespace poundfe
     /// with a fibre of area <= 0 is an InputError (parameter "Fibres").
     FibreSection(const FibreGeometry &geometry, unsigned int n_resultants,
                  double torsional_rigidity = 0, bool about_centroid = true);
+    FibreSection(FibreSection &&) noexcept;
+    ~FibreSection() override;
 
     unsigned int         n_resultants() const override { return n; }
     bool                 set_trial(const SectionVector &deformation) override;
@@ -98,10 +109,12 @@ namespace poundfe
     /// The reference axis (y, z) the fibre strains are measured from.
     double reference_y() const { return y_ref; }
     double reference_z() const { return z_ref; }
-    /// The trial strain, stress and law of fibre i.
-    double             fibre_strain(unsigned int i) const;
-    double             fibre_stress(unsigned int i) const { return laws[i]->force(); }
-    const UniaxialLaw &fibre_law(unsigned int i) const { return *laws[i]; }
+    /// The trial strain and stress of fibre i.
+    double fibre_strain(unsigned int i) const;
+    double fibre_stress(unsigned int i) const;
+    /// The law of fibre i's material, for its constants (initial stiffness,
+    /// yield strain): its state is not the fibre's.
+    const UniaxialLaw &fibre_material(unsigned int i) const;
 
   private:
     struct State
@@ -118,7 +131,7 @@ namespace poundfe
     unsigned int                              n;
     double                                    torsional_rigidity;
     double                                    y_ref = 0, z_ref = 0;
-    std::vector<std::unique_ptr<UniaxialLaw>> laws;
+    std::unique_ptr<internal::FibreStates>    states;
     State                                     trial, committed;
     SectionMatrix                             virgin_tangent;
     unsigned int                              failed_fibre = 0;
