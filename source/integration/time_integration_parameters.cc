@@ -336,6 +336,10 @@ namespace poundfe
                                         const std::string &end_path) const
   {
     const double n = end / newmark.time_step;
+    if (!(n >= 1)) // 1e200 s ran no step at all, with exit 0
+      input.fail("Time integration/Time step",
+                 "must not exceed the length of the run, " + number_text(end) + " s (" +
+                   end_path + "), got " + number_text(newmark.time_step) + " s");
     if (!(n <= max_steps))
       input.fail(end_path, "needs " + count_text(n) +
                              " steps of " +
