@@ -128,12 +128,15 @@ namespace poundfe
   void
   LowRankUpdateSolver::compute_column(const unsigned int c, const unsigned int slot)
   {
-    if (const int old = column_in[slot]; old >= 0)
-      slot_of[old] = -1;
     column_buffer.setZero();
     for (unsigned int q = column_start[c]; q < column_start[c + 1]; ++q)
       column_buffer[entry_row[q]] += entry_value[q];
+    // the slot changes hands only once its column is solved: a solve that
+    // throws leaves every slot, and the capacitance LU that counts them,
+    // as they were (its old column still listed in it and still found)
     base->solve(column_buffer, w_buffer);
+    if (const int old = column_in[slot]; old >= 0)
+      slot_of[old] = -1;
     W.col(slot)     = w_buffer;
     slot_of[c]      = slot;
     column_in[slot] = c;
@@ -205,6 +208,8 @@ namespace poundfe
     form_capacitance(k, d, reuse);
     if (!reuse)
       {
+        // reuses_capacitance has unmarked the LU: an elimination that
+        // throws (a zero pivot) leaves it to be formed again next time
         factor_capacitance(k);
         factored = k > 1; // what one column overwrote is no longer the LU noted
       }

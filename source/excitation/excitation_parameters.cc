@@ -121,6 +121,107 @@ namespace poundfe
                         "recorded). Unit: g.");
       prm.leave_subsection();
     }
+
+    /// Stochastic: the process (its filter and method) and its intensity.
+    void
+    declare_stochastic_process_entries(dealii::ParameterHandler &prm, GroundMotionParameters &p)
+    {
+      add_choice(prm, "Soil", p.soil,
+                 "Filter parameters preset (Der Kiureghian & Neuenhofer 1992): firm "
+                 "15 rad/s, 0.6; medium 10, 0.4; soft 5, 0.2; custom uses omega_g, "
+                 "zeta_g. Clough-Penzien presets use omega_f = omega_g/10, zeta_f 0.6. Unit: -.",
+                 soil_names());
+      prm.add_parameter("omega_g", p.omega_g, "Ground filter frequency (custom). Unit: rad/s.");
+      prm.add_parameter("zeta_g", p.zeta_g, "Ground filter damping ratio (custom). "
+                        "Unit: dimensionless.");
+      prm.add_parameter("omega_f", p.omega_f, "Clough-Penzien high-pass frequency (custom). "
+                        "Unit: rad/s.");
+      prm.add_parameter("zeta_f", p.zeta_f, "Clough-Penzien high-pass damping (custom). "
+                        "Unit: dimensionless.");
+      add_choice(prm, "Method", p.method,
+                 "Kanai-Tajimi/Clough-Penzien samples: white noise through the filter "
+                 "(exact over each held interval), or the spectral representation "
+                 "(sum of cosines with random phases). Unit: -.",
+                 stochastic_method_names());
+      prm.add_parameter("Cutoff frequency", p.cutoff_frequency,
+                        "Spectral representation: upper frequency w_u (0: min(pi/dt, "
+                        "25 omega_g)); needs dt <= pi/w_u. Unit: rad/s.");
+      prm.add_parameter("Number of frequencies", p.n_frequencies,
+                        "Spectral representation: N (0: w_u duration / pi, so the sample "
+                        "does not repeat within twice its duration), at most 10^6 (w_u "
+                        "duration / pi is 3e4 for 100 rad/s over 1000 s). Unit: count.",
+                        dealii::Patterns::Integer(0, 1000000));
+      prm.add_parameter("S0", p.spectral_intensity,
+                        "Two-sided PSD intensity of the white noise; 0: from D, or "
+                        "from the target PGA and peak factor. At most what gives 3 standard "
+                        "deviations of 10 g: of the filtered motion, or of a white noise below "
+                        "25 Hz, sqrt(2 S0 x 2 pi 25 rad/s), whatever the time step (S0 <= 3.4 for "
+                        "white noise). Unit: m^2/s^3.");
+      prm.add_parameter("D", p.noise_intensity_d,
+                        "White-noise intensity in the thesis's convention <w(t) w(t')> = "
+                        "2 D delta(t - t'), D = pi S0 (used when S0 = 0), bounded as S0. "
+                        "Unit: m^2/s^3.");
+      prm.add_parameter("Target PGA", p.target_pga,
+                        "Expected PGA (Peak factor x the stationary standard deviation) that "
+                        "sets S0 when S0 and D are 0; Scale factor then multiplies the sample: "
+                        "the PGA is Target PGA x Scale factor, in expectation. At most 10 g, and so is "
+                        "Target PGA x Scale factor, times Intensity ratio or Vertical ratio where one "
+                        "exceeds 1 (more than twice the largest ground acceleration recorded). "
+                        "Unit: g.");
+      prm.add_parameter("Peak factor", p.peak_factor, "PGA / standard deviation, with which Target PGA sets S0 (a given S0 "
+                        "or D does not use it). Unit: dimensionless.");
+    }
+
+    /// Stochastic: the sample (its length, seeds, components) and its envelope.
+    void
+    declare_stochastic_sample_entries(dealii::ParameterHandler &prm, GroundMotionParameters &p)
+    {
+      prm.add_parameter("Duration", p.duration, "Length of the sample. Unit: s.");
+      prm.add_parameter("Sample interval", p.sample_interval,
+                        "White-noise sample interval (0: the analysis time step). Unit: s.");
+      // explicit ranges: deal.II's pattern for unsigned int has none, and
+      // "-1" would be read as 4294967295
+      prm.add_parameter("Seed", p.seed, "Random seed. Unit: -.", dealii::Patterns::Integer(0));
+      prm.add_parameter("Second seed", p.second_seed,
+                        "Seed of the second horizontal component (Components = 2): an "
+                        "independent sample of the same process; 0: Seed + 1. Unit: -.",
+                        dealii::Patterns::Integer(0));
+      prm.add_parameter("Intensity ratio", p.intensity_ratio,
+                        "Components = 2: standard deviation of the second component over the "
+                        "first's, gamma (Penzien-Watabe 1975: about 0.5 to 1 along the principal "
+                        "axes). Unit: dimensionless.");
+      prm.add_parameter("Correlation", p.correlation,
+                        "Components = 2: correlation coefficient rho of the two components "
+                        "before the incidence rotation, in [-1, 1] (0: along their principal "
+                        "axes); g_2 = gamma (rho z_1 + sqrt(1 - rho^2) z_2) of two independent "
+                        "samples z_1 = g_1, z_2. Unit: dimensionless.");
+      prm.add_parameter("Vertical seed", p.vertical_seed,
+                        "Seed of the vertical component (Components = 3): an independent "
+                        "sample of the same process; 0: Seed + 2. Unit: -.",
+                        dealii::Patterns::Integer(0));
+      prm.add_parameter("Vertical ratio", p.vertical_ratio,
+                        "Components = 3: standard deviation of the vertical component over the "
+                        "first horizontal one's (2/3: Newmark, Blume & Kapur 1973; EC8 Table 3.4 "
+                        "gives a_vg/a_g = 0.90 for type 1 and 0.45 for type 2 spectra). "
+                        "Unit: dimensionless.");
+      // an explicit range: deal.II's pattern for unsigned int has none, and
+      // "-5" would be read as 4294967291
+      prm.add_parameter("Realization", p.realization,
+                        "Realization index: (seed, index) fixes the sample. Unit: -.",
+                        dealii::Patterns::Integer(0));
+      add_choice(prm, "Envelope", p.envelope,
+                 "Amplitude modulation: Jennings et al. (1968) trapezoid, Saragoni-Hart "
+                 "t^b e^(-ct), Shinozuka-Sato e^(-at) - e^(-bt), or none. Unit: -.",
+                 envelope_names());
+      prm.add_parameter("Rise end", p.jennings_rise_end, "Jennings: end of (t/t1)^2 rise. Unit: s.");
+      prm.add_parameter("Plateau end", p.jennings_plateau_end, "Jennings: end of plateau. Unit: s.");
+      prm.add_parameter("Decay rate", p.jennings_decay, "Jennings: exp(-c (t - t2)) rate. Unit: 1/s.");
+      prm.add_parameter("Saragoni b", p.saragoni_b, "Saragoni-Hart t^b e^(-ct): b. "
+                        "Unit: dimensionless.");
+      prm.add_parameter("Saragoni c", p.saragoni_c, "Saragoni-Hart t^b e^(-ct): c. Unit: 1/s.");
+      prm.add_parameter("Shinozuka alpha", p.shinozuka_alpha, "e^(-at)-e^(-bt): a. Unit: 1/s.");
+      prm.add_parameter("Shinozuka beta", p.shinozuka_beta, "e^(-at)-e^(-bt): b. Unit: 1/s.");
+    }
   } // namespace
 
   void
@@ -151,89 +252,8 @@ namespace poundfe
                       "Unit: degrees.");
     declare_record_entries(prm, *this);
     prm.enter_subsection("Stochastic");
-    add_choice(prm, "Soil", soil,
-               "Filter parameters preset (Der Kiureghian & Neuenhofer 1992): firm "
-               "15 rad/s, 0.6; medium 10, 0.4; soft 5, 0.2; custom uses omega_g, "
-               "zeta_g. Clough-Penzien presets use omega_f = omega_g/10, zeta_f 0.6. Unit: -.",
-               soil_names());
-    prm.add_parameter("omega_g", omega_g, "Ground filter frequency (custom). Unit: rad/s.");
-    prm.add_parameter("zeta_g", zeta_g, "Ground filter damping ratio (custom). "
-                      "Unit: dimensionless.");
-    prm.add_parameter("omega_f", omega_f, "Clough-Penzien high-pass frequency (custom). "
-                      "Unit: rad/s.");
-    prm.add_parameter("zeta_f", zeta_f, "Clough-Penzien high-pass damping (custom). "
-                      "Unit: dimensionless.");
-    add_choice(prm, "Method", method,
-               "Kanai-Tajimi/Clough-Penzien samples: white noise through the filter "
-               "(exact over each held interval), or the spectral representation "
-               "(sum of cosines with random phases). Unit: -.",
-               stochastic_method_names());
-    prm.add_parameter("Cutoff frequency", cutoff_frequency,
-                      "Spectral representation: upper frequency w_u (0: min(pi/dt, "
-                      "25 omega_g)); needs dt <= pi/w_u. Unit: rad/s.");
-    prm.add_parameter("Number of frequencies", n_frequencies,
-                      "Spectral representation: N (0: w_u duration / pi, so the sample "
-                      "does not repeat within twice its duration). Unit: count.");
-    prm.add_parameter("S0", spectral_intensity,
-                      "Two-sided PSD intensity of the white noise; 0: from D, or "
-                      "from the target PGA and peak factor. At most what gives 3 standard "
-                      "deviations of 10 g: of the filtered motion, or of a white noise below "
-                      "25 Hz, sqrt(2 S0 x 2 pi 25 rad/s), whatever the time step (S0 <= 3.4 for "
-                      "white noise). Unit: m^2/s^3.");
-    prm.add_parameter("D", noise_intensity_d,
-                      "White-noise intensity in the thesis's convention <w(t) w(t')> = "
-                      "2 D delta(t - t'), D = pi S0 (used when S0 = 0), bounded as S0. "
-                      "Unit: m^2/s^3.");
-    prm.add_parameter("Target PGA", target_pga,
-                      "Expected PGA (Peak factor x the stationary standard deviation) that "
-                      "sets S0 when S0 and D are 0; Scale factor then multiplies the sample: "
-                      "the PGA is Target PGA x Scale factor, in expectation. At most 10 g, and so is "
-                      "Target PGA x Scale factor, times Intensity ratio or Vertical ratio where one "
-                      "exceeds 1 (more than twice the largest ground acceleration recorded). "
-                      "Unit: g.");
-    prm.add_parameter("Peak factor", peak_factor, "PGA / standard deviation, with which Target PGA sets S0 (a given S0 "
-                      "or D does not use it). Unit: dimensionless.");
-    prm.add_parameter("Duration", duration, "Length of the sample. Unit: s.");
-    prm.add_parameter("Sample interval", sample_interval,
-                      "White-noise sample interval (0: the analysis time step). Unit: s.");
-    prm.add_parameter("Seed", seed, "Random seed. Unit: -.");
-    prm.add_parameter("Second seed", second_seed,
-                      "Seed of the second horizontal component (Components = 2): an "
-                      "independent sample of the same process; 0: Seed + 1. Unit: -.");
-    prm.add_parameter("Intensity ratio", intensity_ratio,
-                      "Components = 2: standard deviation of the second component over the "
-                      "first's, gamma (Penzien-Watabe 1975: about 0.5 to 1 along the principal "
-                      "axes). Unit: dimensionless.");
-    prm.add_parameter("Correlation", correlation,
-                      "Components = 2: correlation coefficient rho of the two components "
-                      "before the incidence rotation, in [-1, 1] (0: along their principal "
-                      "axes); g_2 = gamma (rho z_1 + sqrt(1 - rho^2) z_2) of two independent "
-                      "samples z_1 = g_1, z_2. Unit: dimensionless.");
-    prm.add_parameter("Vertical seed", vertical_seed,
-                      "Seed of the vertical component (Components = 3): an independent "
-                      "sample of the same process; 0: Seed + 2. Unit: -.");
-    prm.add_parameter("Vertical ratio", vertical_ratio,
-                      "Components = 3: standard deviation of the vertical component over the "
-                      "first horizontal one's (2/3: Newmark, Blume & Kapur 1973; EC8 Table 3.4 "
-                      "gives a_vg/a_g = 0.90 for type 1 and 0.45 for type 2 spectra). "
-                      "Unit: dimensionless.");
-    // an explicit range: deal.II's pattern for unsigned int has none, and
-    // "-5" would be read as 4294967291
-    prm.add_parameter("Realization", realization,
-                      "Realization index: (seed, index) fixes the sample. Unit: -.",
-                      dealii::Patterns::Integer(0));
-    add_choice(prm, "Envelope", envelope,
-               "Amplitude modulation: Jennings et al. (1968) trapezoid, Saragoni-Hart "
-               "t^b e^(-ct), Shinozuka-Sato e^(-at) - e^(-bt), or none. Unit: -.",
-               envelope_names());
-    prm.add_parameter("Rise end", jennings_rise_end, "Jennings: end of (t/t1)^2 rise. Unit: s.");
-    prm.add_parameter("Plateau end", jennings_plateau_end, "Jennings: end of plateau. Unit: s.");
-    prm.add_parameter("Decay rate", jennings_decay, "Jennings: exp(-c (t - t2)) rate. Unit: 1/s.");
-    prm.add_parameter("Saragoni b", saragoni_b, "Saragoni-Hart t^b e^(-ct): b. "
-                      "Unit: dimensionless.");
-    prm.add_parameter("Saragoni c", saragoni_c, "Saragoni-Hart t^b e^(-ct): c. Unit: 1/s.");
-    prm.add_parameter("Shinozuka alpha", shinozuka_alpha, "e^(-at)-e^(-bt): a. Unit: 1/s.");
-    prm.add_parameter("Shinozuka beta", shinozuka_beta, "e^(-at)-e^(-bt): b. Unit: 1/s.");
+    declare_stochastic_process_entries(prm, *this);
+    declare_stochastic_sample_entries(prm, *this);
     prm.leave_subsection();
     prm.leave_subsection();
   }

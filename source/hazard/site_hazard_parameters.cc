@@ -1,3 +1,5 @@
+#include <poundfe/base/numbers.h>
+#include <poundfe/excitation/ground_motion_bounds.h>
 #include <poundfe/hazard/site_hazard_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -8,6 +10,14 @@ namespace poundfe
 {
   namespace Patterns = dealii::Patterns;
 
+  namespace
+  {
+    /// The largest lognormal dispersion of a typed-in fragility: beyond it
+    /// the curve is flat over any range of PGA (1e200 gave P(F | a) = 1/2
+    /// at every a, with exit 0).
+    constexpr double largest_fragility_beta = 3;
+  } // namespace
+
   const NameTable<IntensityHazard::Model> &
   hazard_model_names()
   {
@@ -15,6 +25,30 @@ namespace poundfe
       {{IntensityHazard::Model::gumbel, "gumbel"}, {IntensityHazard::Model::poisson, "poisson"}});
     return table;
   }
+
+  namespace
+  {
+    /// Site hazard/Fragility: the fragility that the hazard is combined with.
+    void
+    declare_fragility_entries(dealii::ParameterHandler &prm, SiteHazardParameters &p)
+    {
+      prm.enter_subsection("Fragility");
+      prm.add_parameter("Median PGA", p.fragility_median,
+                        "theta of a lognormal fragility P(F | a) = Phi(ln(a/theta)/beta) "
+                        "(0: none, or the File's), at most 10 g. Unit: g.",
+                        Patterns::Double(0));
+      prm.add_parameter("Beta", p.fragility_beta,
+                        "beta of the typed-in fragility, at most 3. Unit: dimensionless.",
+                        Patterns::Double(0));
+      prm.add_parameter("File", p.fragility_file,
+                        "summary.json written by `poundfe fragility` (relative to this parameter "
+                        "file); its curve named Curve is used. Unit: -.");
+      prm.add_parameter("Curve", p.fragility_curve,
+                        "Name of the curve in File: pounding, or drift_<limit> (e.g. drift_0.01). "
+                        "Unit: -.");
+      prm.leave_subsection();
+    }
+  } // namespace
 
   void
   SiteHazardParameters::declare(dealii::ParameterHandler &prm)
@@ -66,21 +100,7 @@ namespace poundfe
                       "its acceleration and the fit (-1: not rounded; the thesis's Table 2.2 "
                       "rounds to 1 for some rows). Unit: count.",
                       Patterns::Integer(-1, 6));
-    prm.enter_subsection("Fragility");
-    prm.add_parameter("Median PGA", fragility_median,
-                      "theta of a lognormal fragility P(F | a) = Phi(ln(a/theta)/beta) "
-                      "(0: none, or the File's). Unit: g.",
-                      Patterns::Double(0));
-    prm.add_parameter("Beta", fragility_beta,
-                      "beta of the typed-in fragility. Unit: dimensionless.",
-                      Patterns::Double(0));
-    prm.add_parameter("File", fragility_file,
-                      "summary.json written by `poundfe fragility` (relative to this parameter "
-                      "file); its curve named Curve is used. Unit: -.");
-    prm.add_parameter("Curve", fragility_curve,
-                      "Name of the curve in File: pounding, or drift_<limit> (e.g. drift_0.01). "
-                      "Unit: -.");
-    prm.leave_subsection();
+    declare_fragility_entries(prm, *this);
     study.declare(prm);
     prm.leave_subsection();
   }
@@ -114,6 +134,15 @@ namespace poundfe
       input.fail("Site hazard/Fragility/Beta", "a typed-in fragility needs Beta > 0");
     if (!has_fragility() && fragility_beta > 0)
       input.fail("Site hazard/Fragility/Median PGA", "Beta is given without a Median PGA");
+    if (fragility_median > largest_ground_acceleration_g)
+      input.fail("Site hazard/Fragility/Median PGA",
+                 "must be at most " + number_text(largest_ground_acceleration_g) + " g (" +
+                   largest_ground_acceleration_why + "), got " + number_text(fragility_median));
+    if (fragility_beta > largest_fragility_beta)
+      input.fail("Site hazard/Fragility/Beta",
+                 "must be at most " + number_text(largest_fragility_beta) +
+                   " (the 16th and 84th percentiles then lie a factor e^6 = 403 apart; "
+                   "fragility dispersions lie below 1), got " + number_text(fragility_beta));
     study.check(input);
   }
 

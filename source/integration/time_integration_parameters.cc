@@ -139,6 +139,65 @@ namespace poundfe
                         "eta of Line search. Unit: dimensionless.",
                         Patterns::Double(0.01, 0.99));
     }
+
+    /// The integrator: Newmark's or Dormand-Prince's and their constants.
+    void
+    declare_method_entries(dealii::ParameterHandler &prm, TimeIntegrationParameters &p)
+    {
+      add_choice(prm, "Method", p.method,
+                 "newmark: Newmark-Newton with event refinement, every model; dopri: adaptive "
+                 "Dormand-Prince 5(4) with dense output and event location (each contact's "
+                 "g = 0 and, in contact, its penetration rate = 0), for models of up to "
+                 "200 equations, all with mass, whose nonlinear elements are contacts and "
+                 "elastic springs (theory §3.9a); Time step is then the output step. Unit: -.",
+                 time_integration_method_names());
+      prm.add_parameter("Relative tolerance", p.dopri.relative_tolerance,
+                        "dopri: the relative tolerance of each step's local error estimate "
+                        "(on every displacement and velocity). Unit: dimensionless.");
+      prm.add_parameter("Absolute tolerance", p.dopri.absolute_tolerance,
+                        "dopri: the absolute tolerance of the local error estimate (m on "
+                        "displacements, m/s on velocities). Unit: m or m/s (displacements, velocities).");
+      prm.add_parameter("Newmark gamma", p.newmark.gamma,
+                        "gamma >= 1/2 (1/2: no numerical damping). Unit: dimensionless.");
+      prm.add_parameter("Newmark beta", p.newmark.beta,
+                        "beta >= (1/2 + gamma)^2 / 4 (1/4 with gamma = 1/2: average "
+                        "acceleration). Unit: dimensionless.");
+    }
+
+    /// The linear solver and how a run is spread over its ranks.
+    void
+    declare_solver_entries(dealii::ParameterHandler &prm, TimeIntegrationParameters &p)
+    {
+      add_choice(prm, "Linear solver", p.linear_solver,
+                 "Solver of the effective matrix: direct (factorised once) or conjugate "
+                 "gradients with algebraic multigrid; band-lu is LAPACK's banded LU after a "
+                 "Cuthill-McKee numbering, for a refactorised nonsymmetric tangent of a few "
+                 "hundred equations (fibre frames on PDelta columns); petsc and trilinos need MPI; "
+                 "petsc-mumps (MUMPS through PETSc) splits the matrix and its factorisation "
+                 "over the ranks of mpirun -np P poundfe run (each rank keeps the whole "
+                 "state; rank 0 writes); petsc-cg-boomeramg (PETSc CG, hypre BoomerAMG) and "
+                 "trilinos-cg-ml (AztecOO CG, Trilinos ML) solve to a fraction of the Newton "
+                 "tolerance and keep their preconditioner across iterations and steps "
+                 "(Iterative solver; theory §3.5c); on P ranks each rank runs the whole "
+                 "analysis. Not given: eigen-ldlt, or umfpack when a nonsymmetric element "
+                 "tangent (3D plan contact) must be refactorised. Unit: -.",
+                 linear_solver_names());
+      add_choice(prm, "Partition", p.partition,
+                 "How mpirun -np P poundfe run spreads one run over its ranks: none (every "
+                 "rank runs the whole analysis; with petsc-mumps the matrix and its "
+                 "factorisation are split) or buildings (each rank sets up, factorises and "
+                 "steps only its own run of buildings, with its nonlinear elements and "
+                 "their history; the ranks exchange the far ends of the elements between "
+                 "them; every rank observes its own buildings and rank 0 writes every "
+                 "output, merged from the ranks; theory §3.5d). buildings needs Method = newmark, a one-process Linear "
+                 "solver (eigen-ldlt or umfpack) for each rank's block, a Nonlinear solver "
+                 "that reuses its factorisation (krylov-newton, modified-newton, bfgs, or auto, "
+                 "then krylov-newton; not the default newton), Tangent "
+                 "update = refactorize or auto (then refactorize), no friction "
+                 "surfaces and no initial conditions, and at least as many separable "
+                 "buildings as ranks; other commands than run refuse it. Unit: -.",
+                 run_partition_names());
+    }
   } // namespace
 
   void
@@ -178,53 +237,8 @@ namespace poundfe
                       "End time = 1e308 or a record's DT typed in ms); raise it for a "
                       "genuinely long run. Unit: count.",
                       Patterns::Integer(1));
-    add_choice(prm, "Method", method,
-               "newmark: Newmark-Newton with event refinement, every model; dopri: adaptive "
-               "Dormand-Prince 5(4) with dense output and event location (each contact's "
-               "g = 0 and, in contact, its penetration rate = 0), for models of up to "
-               "200 equations, all with mass, whose nonlinear elements are contacts and "
-               "elastic springs (theory §3.9a); Time step is then the output step. Unit: -.",
-               time_integration_method_names());
-    prm.add_parameter("Relative tolerance", dopri.relative_tolerance,
-                      "dopri: the relative tolerance of each step's local error estimate "
-                      "(on every displacement and velocity). Unit: dimensionless.");
-    prm.add_parameter("Absolute tolerance", dopri.absolute_tolerance,
-                      "dopri: the absolute tolerance of the local error estimate (m on "
-                      "displacements, m/s on velocities). Unit: m or m/s (displacements, velocities).");
-    prm.add_parameter("Newmark gamma", newmark.gamma,
-                      "gamma >= 1/2 (1/2: no numerical damping). Unit: dimensionless.");
-    prm.add_parameter("Newmark beta", newmark.beta,
-                      "beta >= (1/2 + gamma)^2 / 4 (1/4 with gamma = 1/2: average "
-                      "acceleration). Unit: dimensionless.");
-    add_choice(prm, "Linear solver", linear_solver,
-               "Solver of the effective matrix: direct (factorised once) or conjugate "
-               "gradients with algebraic multigrid; band-lu is LAPACK's banded LU after a "
-               "Cuthill-McKee numbering, for a refactorised nonsymmetric tangent of a few "
-               "hundred equations (fibre frames on PDelta columns); petsc and trilinos need MPI; "
-               "petsc-mumps (MUMPS through PETSc) splits the matrix and its factorisation "
-               "over the ranks of mpirun -np P poundfe run (each rank keeps the whole "
-               "state; rank 0 writes); petsc-cg-boomeramg (PETSc CG, hypre BoomerAMG) and "
-               "trilinos-cg-ml (AztecOO CG, Trilinos ML) solve to a fraction of the Newton "
-               "tolerance and keep their preconditioner across iterations and steps "
-               "(Iterative solver; theory §3.5c); on P ranks each rank runs the whole "
-               "analysis. Not given: eigen-ldlt, or umfpack when a nonsymmetric element "
-               "tangent (3D plan contact) must be refactorised. Unit: -.",
-               linear_solver_names());
-    add_choice(prm, "Partition", partition,
-               "How mpirun -np P poundfe run spreads one run over its ranks: none (every "
-               "rank runs the whole analysis; with petsc-mumps the matrix and its "
-               "factorisation are split) or buildings (each rank sets up, factorises and "
-               "steps only its own run of buildings, with its nonlinear elements and "
-               "their history; the ranks exchange the far ends of the elements between "
-               "them; every rank observes its own buildings and rank 0 writes every "
-               "output, merged from the ranks; theory §3.5d). buildings needs Method = newmark, a one-process Linear "
-               "solver (eigen-ldlt or umfpack) for each rank's block, a Nonlinear solver "
-               "that reuses its factorisation (krylov-newton, modified-newton, bfgs, or auto, "
-               "then krylov-newton; not the default newton), Tangent "
-               "update = refactorize or auto (then refactorize), no friction "
-               "surfaces and no initial conditions, and at least as many separable "
-               "buildings as ranks; other commands than run refuse it. Unit: -.",
-               run_partition_names());
+    declare_method_entries(prm, *this);
+    declare_solver_entries(prm, *this);
     declare_newton_entries(prm, newmark.newton);
     newmark.iterative.declare(prm);
     add_choice(prm, "Hysteresis integration", hysteresis_integration,
@@ -322,6 +336,10 @@ namespace poundfe
                                         const std::string &end_path) const
   {
     const double n = end / newmark.time_step;
+    if (!(n >= 1)) // 1e200 s ran no step at all, with exit 0
+      input.fail("Time integration/Time step",
+                 "must not exceed the length of the run, " + number_text(end) + " s (" +
+                   end_path + "), got " + number_text(newmark.time_step) + " s");
     if (!(n <= max_steps))
       input.fail(end_path, "needs " + count_text(n) +
                              " steps of " +

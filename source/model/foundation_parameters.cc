@@ -18,6 +18,37 @@ namespace poundfe
     return table;
   }
 
+  namespace
+  {
+    /// The springs, dashpots and inertias of a 3D building's foundation alone.
+    void
+    declare_3d_entries(dealii::ParameterHandler &prm, FoundationParameters &p)
+    {
+      prm.add_parameter("Horizontal stiffness y", p.given_3d.sway_stiffness[1],
+                        "[3D] Sway spring along the foundation's local y (given; "
+                        "Horizontal stiffness: along x). Unit: N/m.");
+      prm.add_parameter("Horizontal damping y", p.given_3d.sway_damping[1],
+                        "[3D] Sway dashpot along local y (given). Unit: N s/m.");
+      prm.add_parameter("Rocking stiffness x", p.given_3d.rocking_stiffness[0],
+                        "[3D] Rocking spring about local x (given; Rocking stiffness: "
+                        "about y). Unit: N m/rad.");
+      prm.add_parameter("Rocking damping x", p.given_3d.rocking_damping[0],
+                        "[3D] Rocking dashpot about local x (given). Unit: N m s/rad.");
+      prm.add_parameter("Torsional stiffness", p.given_3d.torsional_stiffness,
+                        "[3D] Torsion spring about the vertical (given). Unit: N m/rad.");
+      prm.add_parameter("Torsional damping", p.given_3d.torsional_damping,
+                        "[3D] Torsion dashpot about the vertical (given). Unit: "
+                        "N m s/rad.");
+      prm.add_parameter("Rotary inertia x", p.rotary_inertia_x,
+                        "[3D] Mass moment of inertia of the foundation about its local x "
+                        "axis through its base (Rotary inertia: about y; cone: Wolf's trapped "
+                        "soil is added). Unit: kg m^2.");
+      prm.add_parameter("Polar inertia", p.polar_inertia,
+                        "[3D] Mass moment of inertia of the foundation about the vertical "
+                        "through its centre. Unit: kg m^2.");
+    }
+  } // namespace
+
   void
   FoundationParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -58,28 +89,7 @@ namespace poundfe
                       "[frame, mesh] Vertical spring (given; frames and meshes only). Unit: N/m.");
     prm.add_parameter("Vertical damping", given.vertical_damping,
                       "[frame, mesh] Vertical dashpot (given; frames and meshes only). Unit: N s/m.");
-    prm.add_parameter("Horizontal stiffness y", given_3d.sway_stiffness[1],
-                      "[3D] Sway spring along the foundation's local y (given; "
-                      "Horizontal stiffness: along x). Unit: N/m.");
-    prm.add_parameter("Horizontal damping y", given_3d.sway_damping[1],
-                      "[3D] Sway dashpot along local y (given). Unit: N s/m.");
-    prm.add_parameter("Rocking stiffness x", given_3d.rocking_stiffness[0],
-                      "[3D] Rocking spring about local x (given; Rocking stiffness: "
-                      "about y). Unit: N m/rad.");
-    prm.add_parameter("Rocking damping x", given_3d.rocking_damping[0],
-                      "[3D] Rocking dashpot about local x (given). Unit: N m s/rad.");
-    prm.add_parameter("Torsional stiffness", given_3d.torsional_stiffness,
-                      "[3D] Torsion spring about the vertical (given). Unit: N m/rad.");
-    prm.add_parameter("Torsional damping", given_3d.torsional_damping,
-                      "[3D] Torsion dashpot about the vertical (given). Unit: "
-                      "N m s/rad.");
-    prm.add_parameter("Rotary inertia x", rotary_inertia_x,
-                      "[3D] Mass moment of inertia of the foundation about its local x "
-                      "axis through its base (Rotary inertia: about y; cone: Wolf's trapped "
-                      "soil is added). Unit: kg m^2.");
-    prm.add_parameter("Polar inertia", polar_inertia,
-                      "[3D] Mass moment of inertia of the foundation about the vertical "
-                      "through its centre. Unit: kg m^2.");
+    declare_3d_entries(prm, *this);
     prm.add_parameter("Mass", mass,
                       "Mass of the foundation (moves with the sway). Unit: kg.");
     prm.add_parameter("Rotary inertia", rotary_inertia,

@@ -250,7 +250,10 @@ namespace poundfe
     prm.add_parameter("Mesh file", mesh_file,
                       "[mesh] Gmsh .msh file (line elements; physical ids are member groups), "
                       "relative to this parameter file. Unit: -.");
-    prm.add_parameter("Group ids", group_ids, "[mesh] Mesh member group (physical) ids. Unit: -.");
+    // the lists of unsigned entries with explicit ranges: deal.II's pattern
+    // for unsigned int has none, and "-1" would be read as 4294967295
+    prm.add_parameter("Group ids", group_ids, "[mesh] Mesh member group (physical) ids. Unit: -.",
+                      Patterns::List(Patterns::Integer(0)));
     prm.add_parameter("Group E", group_youngs_modulus,
                       "[mesh] Young's modulus per group. Unit: Pa.");
     prm.add_parameter("Group A", group_area, "[mesh] Area per group. Unit: m^2.");
@@ -294,7 +297,8 @@ namespace poundfe
     prm.add_parameter("Groups", hinge_groups,
                       "[frame, mesh] Member groups that get hinges (empty: all). Generated "
                       "frames: group 2i-1 holds the columns of storey i, group 2i the beams "
-                      "of floor i; meshes: the physical ids. Unit: -.");
+                      "of floor i; meshes: the physical ids. Unit: -.",
+                      Patterns::List(Patterns::Integer(0)));
     prm.add_parameter("Yield moment", hinge_yield_moments,
                       "[frame, mesh] Yield moment M_y, one value or one per entry of Groups; "
                       "the yield rotation is M_y / k. Unit: N m.");
@@ -362,7 +366,8 @@ namespace poundfe
                       "Damping ratio at both modes (Type = modes). Unit: dimensionless.");
     prm.add_parameter("Modes", damping_modes,
                       "The two modes (1-based) of this building that get the ratio (Type = "
-                      "modes); two sway modes, not vertical ones. Unit: -.");
+                      "modes); two sway modes, not vertical ones. Unit: -.",
+                      Patterns::List(Patterns::Integer(0)));
     prm.add_parameter("a0", rayleigh_a0,
                       "Mass-proportional coefficient (Type = coefficients). Unit: 1/s.");
     prm.add_parameter("a1", rayleigh_a1,
@@ -378,7 +383,8 @@ namespace poundfe
                       dealii::Patterns::List(dealii::Patterns::Anything(), 0, 1000, ";"));
     prm.add_parameter("Damped modes", damped_modes,
                       "How many modes of this building the bands damp (Type = bands). "
-                      "Unit: -.");
+                      "Unit: -.",
+                      Patterns::Integer(0)); // not "-1" read as 4294967295
     prm.leave_subsection();
     plan.declare(prm);
     foundation.declare(prm);

@@ -22,11 +22,15 @@
 //                                      the value (its fibres and materials, Mander's
 //                                      core), each member clones it when the
 //                                      realization makes its elements (K: the
-//                                      members' virgin tangent changes)
+//                                      members' virgin tangent changes); Concrete
+//                                      strength and Yield stress at most 5e10 Pa,
+//                                      Elastic modulus at most 1e13 Pa, as typed ones
+//                                      (sections/material_bounds.h)
 #include <poundfe/base/exceptions.h>
 #include <poundfe/model/model_builder.h>
 #include <poundfe/model/parameter_registry.h>
 #include <poundfe/sections/fibre_section.h>
+#include <poundfe/sections/material_bounds.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -228,15 +232,19 @@ namespace poundfe::section_registration
       double (*get)(const SectionEntry &);
       void (*set)(SectionEntry &, double);
       bool steel_i; // also read by the steel I builder
+      /// the builders' bound (sections/material_bounds.h), held to by a
+      /// sampled or swept value as by a typed one
+      double largest = std::numeric_limits<double>::infinity();
     };
 
     const std::vector<MaterialField> material_fields = {
       {"Concrete strength", [](const SectionEntry &s) { return s.concrete.fc; },
-       [](SectionEntry &s, const double v) { s.concrete.fc = v; }, false},
+       [](SectionEntry &s, const double v) { s.concrete.fc = v; }, false,
+       largest_section_strength},
       {"Yield stress", [](const SectionEntry &s) { return s.steel.fy; },
-       [](SectionEntry &s, const double v) { s.steel.fy = v; }, true},
+       [](SectionEntry &s, const double v) { s.steel.fy = v; }, true, largest_section_strength},
       {"Elastic modulus", [](const SectionEntry &s) { return s.steel.E; },
-       [](SectionEntry &s, const double v) { s.steel.E = v; }, true},
+       [](SectionEntry &s, const double v) { s.steel.E = v; }, true, largest_section_modulus},
       {"Cover", [](const SectionEntry &s) { return s.cover; },
        [](SectionEntry &s, const double v) { s.cover = v; }, false},
       {"Bar diameter", [](const SectionEntry &s) { return s.bar_diameter; },
@@ -291,7 +299,7 @@ namespace poundfe::section_registration
           r.name    = std::string("Sections/Section k/") + f.name;
           r.family  = "Sections/Section k";
           r.label   = f.name;
-          r.range   = {0, false, std::numeric_limits<double>::infinity()};
+          r.range   = {0, false, f.largest};
           r.touches = ModelParameter::stiffness;
           r.resolve = [f](ModelParameter &p, const Model &model) { check_material(p, model, f); };
           r.get     = [f](const ModelParameter &p, const Model &) {

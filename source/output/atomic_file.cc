@@ -3,7 +3,9 @@
 #include <poundfe/output/atomic_file.h>
 #include <poundfe/output/output_directory.h>
 
+#include <atomic>
 #include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -28,6 +30,47 @@ namespace poundfe
              !S_ISDIR(status.st_mode);
     }
 
+    /// The file a commit replaces: `path`, or for a symbolic link to a
+    /// regular file the file it leads to, written through as cp does, so
+    /// that the link stays a link.
+    std::string
+    destination_of(const std::string &path)
+    {
+      struct stat status;
+      if (::lstat(path.c_str(), &status) != 0 || !S_ISLNK(status.st_mode) ||
+          ::stat(path.c_str(), &status) != 0 || !S_ISREG(status.st_mode))
+        return path;
+      std::error_code error;
+      const std::filesystem::path target = std::filesystem::canonical(path, error);
+      return error ? path : target.string();
+    }
+
+    /// Opens the temporary of `destination` in its directory (the rename
+    /// stays on one file system): "<name>.tmp", or, when that name would
+    /// exceed NAME_MAX, a short name unique to this process and call.
+    /// Returns the descriptor (< 0: errno says why); `temporary` its path.
+    int
+    open_temporary(const std::string &destination, std::string &temporary)
+    {
+      const std::filesystem::path path(destination);
+      if (path.filename().string().size() + std::strlen(".tmp") <= NAME_MAX)
+        {
+          temporary = destination + ".tmp";
+          return ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        }
+      static std::atomic<unsigned long> next{0};
+      const std::string directory = path.has_parent_path() ? path.parent_path().string() + "/" : "";
+      while (true)
+        {
+          temporary = directory + ".poundfe-" + std::to_string(::getpid()) + "-" +
+                      std::to_string(next++) + ".tmp";
+          const int descriptor =
+            ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+          if (descriptor >= 0 || errno != EEXIST)
+            return descriptor;
+        }
+    }
+
     /// Removes a file's temporary, if it has one (a device's has none).
     void
     remove_temporary(const std::string &temporary_path)
@@ -39,10 +82,9 @@ namespace poundfe
 
   AtomicFile::AtomicFile(std::string path)
     : final_path(std::move(path))
-    , temporary_path(is_stream(final_path) ? std::string() : final_path + ".tmp")
   {
     throw_if_interrupted(); // a safe point: nothing of this file exists yet
-    if (temporary_path.empty())
+    if (is_stream(final_path))
       {
         descriptor = ::open(final_path.c_str(), O_WRONLY | O_CLOEXEC);
         if (descriptor < 0)
@@ -50,9 +92,13 @@ namespace poundfe
         return;
       }
     register_output(final_path); // listed before it exists (output_directory.h)
-    descriptor = ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    descriptor = open_temporary(destination_of(final_path), temporary_path);
     if (descriptor < 0)
-      throw OutputError("write", temporary_path, errno);
+      {
+        const int error_number = errno;
+        temporary_path.clear(); // nothing of it to remove
+        throw OutputError("write", final_path, error_number);
+      }
   }
 
   AtomicFile::~AtomicFile()
@@ -124,7 +170,8 @@ namespace poundfe
     const int closed = ::close(descriptor);
     descriptor       = -1;
     if (closed != 0 ||
-        (!temporary_path.empty() && std::rename(temporary_path.c_str(), final_path.c_str()) != 0))
+        (!temporary_path.empty() &&
+         std::rename(temporary_path.c_str(), destination_of(final_path).c_str()) != 0))
       {
         const int error_number = errno; // before remove() may change it
         remove_temporary(temporary_path);

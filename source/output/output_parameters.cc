@@ -11,6 +11,30 @@ namespace poundfe
     return table;
   }
 
+  namespace
+  {
+    /// Output/Warnings: the run's warning thresholds.
+    void
+    declare_warning_entries(dealii::ParameterHandler &prm, OutputParameters &p)
+    {
+      prm.enter_subsection("Warnings");
+      prm.add_parameter("Drift ratio", p.drift_warning,
+                        "A run warns (console and summary.json 'warnings') when a storey's peak "
+                        "drift ratio, or a building's peak roof displacement over its height, "
+                        "exceeds this: 2.5 times the collapse-prevention drift of concrete "
+                        "frames (0.04, FEMA 356 Table C1-3), which the elastic members and the "
+                        "Bouc-Wen hinges (no strength loss) cannot represent. 0: no warning. "
+                        "Unit: dimensionless.",
+                        dealii::Patterns::Double(0));
+      prm.add_parameter("Rotation", p.rotation_warning,
+                        "A run warns when a node of a frame rotates more than this: the frame "
+                        "elements assume small displacements (at 0.1 rad sin(theta) differs from "
+                        "theta by 0.17 % and a chord shortens by 0.5 %). 0: no warning. Unit: rad.",
+                        dealii::Patterns::Double(0));
+      prm.leave_subsection();
+    }
+  } // namespace
+
   void
   OutputParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -69,21 +93,7 @@ namespace poundfe
     prm.enter_subsection("Recorders");
     recorders.declare(prm);
     prm.leave_subsection();
-    prm.enter_subsection("Warnings");
-    prm.add_parameter("Drift ratio", drift_warning,
-                      "A run warns (console and summary.json 'warnings') when a storey's peak "
-                      "drift ratio, or a building's peak roof displacement over its height, "
-                      "exceeds this: 2.5 times the collapse-prevention drift of concrete "
-                      "frames (0.04, FEMA 356 Table C1-3), which the elastic members and the "
-                      "Bouc-Wen hinges (no strength loss) cannot represent. 0: no warning. "
-                      "Unit: dimensionless.",
-                      dealii::Patterns::Double(0));
-    prm.add_parameter("Rotation", rotation_warning,
-                      "A run warns when a node of a frame rotates more than this: the frame "
-                      "elements assume small displacements (at 0.1 rad sin(theta) differs from "
-                      "theta by 0.17 % and a chord shortens by 0.5 %). 0: no warning. Unit: rad.",
-                      dealii::Patterns::Double(0));
-    prm.leave_subsection();
+    declare_warning_entries(prm, *this);
     prm.leave_subsection();
   }
 

@@ -26,8 +26,22 @@ namespace poundfe
   {
     const std::string section = "Random parameters/";
 
+    /// Whether `d`, a distribution unbounded above, reaches a finite `upper`:
+    /// its mean within ten standard deviations of it, the rule of 1e150
+    /// (samples_beyond_model_values). A bound far above any sensible value
+    /// (a section's f'c, fy or E: sections/material_bounds.h) then leaves a
+    /// lognormal of a realistic mean and spread its place; a sample beyond
+    /// it, as unlikely as a normal's beyond 10 sigma, is still refused by
+    /// ModelParameter::set.
+    bool
+    tail_reaches(const Distribution &d, const double upper)
+    {
+      return std::isfinite(upper) && !(d.mean() + 10 * d.standard_deviation() < upper);
+    }
+
     /// Whether `d` can sample a value outside [lower, upper] (lower itself
-    /// too when !lower_included).
+    /// too when !lower_included; above, a distribution unbounded there by
+    /// tail_reaches).
     bool
     samples_out_of_range(const Distribution &d, const ModelParameter::Range &range)
     {
@@ -38,10 +52,8 @@ namespace poundfe
         {
           case DistributionType::lognormal:
           case DistributionType::weibull:
-            lowest = 0; // support (0, inf): 0 itself is never sampled
-            if (!(range.lower <= 0) || std::isfinite(range.upper))
-              return true;
-            return false;
+            // support (0, inf): 0 itself is never sampled
+            return !(range.lower <= 0) || tail_reaches(d, range.upper);
           case DistributionType::uniform:
             lowest = p[0], highest = p[1];
             break;
@@ -52,8 +64,10 @@ namespace poundfe
           case DistributionType::gumbel:
             break;
         }
-      return (range.lower_included ? lowest < range.lower : lowest <= range.lower) ||
-             (range.upper_included ? highest > range.upper : highest >= range.upper);
+      const bool below = range.lower_included ? lowest < range.lower : lowest <= range.lower;
+      if (highest == infinity) // normal, Gumbel
+        return below || tail_reaches(d, range.upper);
+      return below || (range.upper_included ? highest > range.upper : highest >= range.upper);
     }
 
     /// Whether `d` can sample a value beyond 1e150 in size (largest_model_value),
@@ -360,7 +374,10 @@ namespace poundfe
                               distribution_name(p.distributions[i].type()) +
                               " distribution can sample values " + outside_text(range) +
                               ", which '" + p.paths[i] + "' cannot take (use " +
-                              (std::isfinite(range.upper) ? "" : "a lognormal or Weibull, or ") +
+                              (std::isfinite(range.upper) ?
+                                 "a distribution whose mean lies ten standard deviations "
+                                 "below " + number_text(range.upper) + ", or " :
+                                 "a lognormal or Weibull, or ") +
                               "a uniform or truncated normal with lower " + inside_text(range) +
                               ")");
         if (samples_beyond_model_values(p.distributions[i]))

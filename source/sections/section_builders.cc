@@ -11,6 +11,7 @@
 #include <poundfe/base/numbers.h>
 #include <poundfe/laws/mander_confinement.h>
 #include <poundfe/sections/fibre_generators.h>
+#include <poundfe/sections/material_bounds.h>
 #include <poundfe/sections/section_builders.h>
 
 #include <algorithm>
@@ -37,13 +38,9 @@ namespace poundfe
       throw InputError("", 0, parameter, problem);
     }
 
-    /// The largest elastic modulus taken: ten times diamond's (1.2e12 Pa),
-    /// the stiffest material; more is a typing error (1e200 Pa made the
-    /// section's stiffness overflow in the analysis, a numerical failure).
-    constexpr double largest_modulus = 1e13;
-    /// The largest strength taken (yield stress, concrete strength): ten
-    /// times the strongest steel wires' (about 5e9 Pa).
-    constexpr double largest_strength = 5e10;
+    // sections/material_bounds.h says why
+    constexpr double largest_modulus  = largest_section_modulus;
+    constexpr double largest_strength = largest_section_strength;
 
     void
     builder_at_most(const char *parameter, const double value, const double bound,

@@ -28,6 +28,35 @@ namespace poundfe
     return table;
   }
 
+  namespace
+  {
+    /// Where the rules' peak displacements come from, and the response spectrum's modes.
+    void
+    declare_response_spectrum_entries(dealii::ParameterHandler &prm, SeparationParameters &p)
+    {
+      add_choice(prm, "Peak displacements", p.peak_displacements,
+                 "Where u_1, u_2 of the rules come from: time history (the file's ground "
+                 "motion without contact: one run, or the Monte Carlo means of a random one), "
+                 "or response spectrum (no time history: each building's modes under the "
+                 "Spectrum section's Eurocode 8 target, Spectrum/Target, at each mode's own "
+                 "damping ratio, combined by Modal combination; the Ground motion section is "
+                 "not used). Unit: -.",
+                 peak_displacements_names());
+      add_choice(prm, "Modal combination", p.modal_combination,
+                 "Response spectrum: the modal combination of the displacements given to the "
+                 "rules (both are reported): CQC (Der Kiureghian 1981, EN 1998-1 "
+                 "§4.3.3.3.2(3)) or SRSS (eq. 4.16, for modes whose periods differ by more "
+                 "than 10 %). Unit: -.",
+                 modal_combination_names());
+      prm.add_parameter("Number of modes", p.n_spectrum_modes,
+                        "Response spectrum: the modes of each building combined; 0: the fewest "
+                        "whose effective masses sum to at least 90 % of the building's mass and "
+                        "that include every mode above 5 % (EN 1998-1 §4.3.3.3.1(3)). "
+                        "Unit: count.",
+                        Patterns::Integer(0, 10000));
+    }
+  } // namespace
+
   void
   SeparationParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -74,26 +103,7 @@ namespace poundfe
                       "Of the pointwise Wilson score band of the probability of pounding, "
                       "in (0, 1). Unit: dimensionless.",
                       Patterns::Double(0, 1));
-    add_choice(prm, "Peak displacements", peak_displacements,
-               "Where u_1, u_2 of the rules come from: time history (the file's ground "
-               "motion without contact: one run, or the Monte Carlo means of a random one), "
-               "or response spectrum (no time history: each building's modes under the "
-               "Spectrum section's Eurocode 8 target, Spectrum/Target, at each mode's own "
-               "damping ratio, combined by Modal combination; the Ground motion section is "
-               "not used). Unit: -.",
-               peak_displacements_names());
-    add_choice(prm, "Modal combination", modal_combination,
-               "Response spectrum: the modal combination of the displacements given to the "
-               "rules (both are reported): CQC (Der Kiureghian 1981, EN 1998-1 "
-               "§4.3.3.3.2(3)) or SRSS (eq. 4.16, for modes whose periods differ by more "
-               "than 10 %). Unit: -.",
-               modal_combination_names());
-    prm.add_parameter("Number of modes", n_spectrum_modes,
-                      "Response spectrum: the modes of each building combined; 0: the fewest "
-                      "whose effective masses sum to at least 90 % of the building's mass and "
-                      "that include every mode above 5 % (EN 1998-1 §4.3.3.3.1(3)). "
-                      "Unit: count.",
-                      Patterns::Integer(0, 10000));
+    declare_response_spectrum_entries(prm, *this);
     hazard.declare(prm);
     prm.leave_subsection();
   }

@@ -6,9 +6,12 @@
 #include <poundfe/dynamics/analysis.h>
 #include <poundfe/assembly/linear_solver.h>
 #include <poundfe/assembly/low_rank_update.h>
+#include <poundfe/base/exceptions.h>
 #include <poundfe/input/input_parameters.h>
 
 #include <Eigen/Dense>
+
+#include <cmath>
 
 #include <random>
 
@@ -232,5 +235,88 @@ BOOST_AUTO_TEST_CASE(woodbury_solve_with_one_active_column_is_sherman_morrison)
       const Vector dense =
         (Eigen::MatrixXd(A) + dk * b * b.transpose()).partialPivLu().solve(r);
       BOOST_TEST((x - dense).norm() / dense.norm() < 1e-8);
+    }
+}
+
+namespace
+{
+  /// A's factorisation that throws NumericalError at its `throw_at`-th
+  /// solve (counting from 1; 0: never): a base solver that fails while a
+  /// column of W is computed.
+  class FailingSolver : public LinearSolver
+  {
+  public:
+    explicit FailingSolver(LinearSolver &factorised) : factorised(factorised) {}
+    void analyze(const SparseMatrix &) override {}
+    void factorize(const SparseMatrix &) override {}
+    void
+    solve(const Vector &b, Vector &x) override
+    {
+      if (++n_solves == throw_at)
+        throw NumericalError("a solve that fails on purpose");
+      factorised.solve(b, x);
+    }
+    std::string name() const override { return "failing"; }
+
+    unsigned int throw_at = 0;
+    unsigned int n_solves = 0;
+
+  private:
+    LinearSolver &factorised;
+  };
+} // namespace
+
+BOOST_AUTO_TEST_CASE(woodbury_solve_after_a_throw_is_a_fresh_solve)
+{
+  // A throw inside the several-column path leaves nothing stale: the next
+  // solve is a fresh solver's to the bit. Two throws are forced: (1) a zero
+  // pivot of I + D_a G_aa (a NaN entry of D: no pivot is > 0) after the LU
+  // of `first` was stored, then `first` again; (2) with two slots of W for
+  // three columns, A's solve of a missing column throws while the slot it
+  // would take still holds a column of the stored LU, then `first` (the
+  // columns of that LU) again. Before (2) was made safe, the slot was
+  // listed as taken by a column noted as not kept, and the next search for
+  // room ran past the last slot.
+  const Analysis     analysis = prepare_analysis(read_parameters("input/two-buildings.prm"));
+  const SparseMatrix A        = analysis.system.stiffness + 1e4 * analysis.system.mass;
+  const unsigned int n        = A.rows();
+  const double       scale    = A.diagonal().maxCoeff();
+  const std::vector<SparseColumn> columns{{{3, 7}, {1.0, -1.0}}, {{5, -1}, {1.0, -1.0}},
+                                          {{2, 6}, {1.0, -1.0}}};
+  const std::vector<double> first{0.3 * scale, -0.2 * scale, 0.0};
+  const std::vector<double> singular{std::nan(""), -0.2 * scale, 0.0};
+  const std::vector<double> third{0.0, 0.0, 0.4 * scale};
+  auto solver = create_linear_solver("eigen-ldlt");
+  solver->analyze_and_factorize(A);
+  Vector r(n);
+  for (unsigned int i = 0; i < n; ++i)
+    r[i] = std::sin(1.0 + i);
+  const auto fresh_solve = [&](const std::vector<double> &d) {
+    LowRankUpdateSolver fresh;
+    fresh.initialize(*solver, columns, n);
+    Vector x;
+    BOOST_REQUIRE(fresh.solve(r, d, x));
+    return x;
+  };
+  const Vector expected = fresh_solve(first);
+  for (const unsigned int max_columns : {0u, 2u})
+    {
+      BOOST_TEST_INFO("max_columns " << max_columns);
+      FailingSolver failing(*solver);
+      LowRankUpdateSolver woodbury;
+      woodbury.initialize(failing, columns, n, {}, max_columns);
+      Vector x;
+      BOOST_REQUIRE(woodbury.solve(r, first, x)); // its LU stored
+      BOOST_CHECK_THROW(woodbury.solve(r, singular, x), NumericalError);
+      BOOST_REQUIRE(woodbury.solve(r, first, x));
+      BOOST_TEST((x.array() == expected.array()).all());
+      if (max_columns == 0) // every column computed at the start: no solve of one to fail
+        continue;
+      failing.throw_at = failing.n_solves + 1; // column 2's, before A^{-1} r
+      BOOST_CHECK_THROW(woodbury.solve(r, third, x), NumericalError);
+      BOOST_REQUIRE(woodbury.solve(r, first, x));
+      BOOST_TEST((x.array() == expected.array()).all());
+      BOOST_REQUIRE(woodbury.solve(r, third, x)); // column 2 computed now
+      BOOST_TEST((x.array() == fresh_solve(third).array()).all());
     }
 }

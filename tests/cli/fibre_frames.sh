@@ -15,8 +15,10 @@
 #     the damping fitted at modes of that gravity tangent; 1e-12 relative);
 #   - bad input (expect.sh): an unknown section name, a wrong count of
 #     per-storey names, a fibre building without Sections, hinges in a fibre
-#     building, a random Column E of a fibre building: exit 1, one line naming
-#     file, line and entry, nothing written.
+#     building, a random Column E of a fibre building, a random f'c, fy or
+#     steel E whose distribution can sample beyond the section's bounds, a
+#     swept steel E beyond them: exit 1, one line naming file, line and
+#     entry, nothing written.
 #   fibre_frames.sh POUNDFE EXAMPLE
 set -u
 poundfe=$1 example=$2
@@ -205,5 +207,33 @@ expect 1 "Column E': a fibre building" run unused.prm --output out
 sed '/^subsection Monte Carlo/,/^end/d' "$example" > random-e.prm
 printf 'subsection Random parameters\n  set Variables = e: Building 1/Column E ~ uniform lower 2e10 upper 3e10\nend\n' >> random-e.prm
 expect 1 "is made of fibre members" montecarlo random-e.prm --output out
+# a random or swept f'c, fy or steel E is held to the bounds of a typed one
+# (f'c, fy <= 5e10 Pa, E <= 1e13 Pa: sections/material_bounds.h), refused at
+# input: a distribution that can sample beyond them (a uniform beyond; a
+# lognormal whose mean lies within ten standard deviations of them), a sweep
+# value beyond
+random_section() { # $1: the Variables entry
+  sed '/^subsection Monte Carlo/,/^end/d' "$example"
+  printf 'subsection Monte Carlo\n  set Realizations = 2\nend\n'
+  printf 'subsection Random parameters\n  set Variables = %s\nend\n' "$1"
+}
+random_section "fc: Sections/Section 1/Concrete strength ~ uniform lower 15e6 upper 1e12" > random-fc.prm
+expect 1 "can sample values <= 0 or > 5e+10, which 'Sections/Section 1/Concrete strength' cannot" \
+  montecarlo random-fc.prm --output out
+random_section "fy: Sections/Section 1/Yield stress ~ lognormal mean 1e10 cov 0.5" > random-fy.prm
+expect 1 "can sample values <= 0 or > 5e+10, which 'Sections/Section 1/Yield stress' cannot" \
+  montecarlo random-fy.prm --output out
+# a lognormal of a realistic mean and spread keeps ten standard deviations
+# below the bound (the rule of 1e150 for every entry): it runs
+random_section "fc: Sections/Section 1/Concrete strength ~ lognormal mean 30e6 cov 0.15" > random-fc-lognormal.prm
+expect 0 "" montecarlo random-fc-lognormal.prm --set "Time integration/End time=0.05" --output lognormal
+random_section "e: Sections/Section 1/Elastic modulus ~ uniform lower 2e11 upper 2e13" > random-steel-e.prm
+expect 1 "> 1e+13, which 'Sections/Section 1/Elastic modulus' cannot" \
+  montecarlo random-steel-e.prm --output out
+{ sed '/^subsection Monte Carlo/,/^end/d' "$example"
+  printf 'subsection Sweep\n  set Parameter = Sections/Section 1/Elastic modulus\n'
+  printf '  set Values = 2e11, 1e14\nend\n'; } > sweep-steel-e.prm
+expect 1 "at Sweep value Sections/Section 1/Elastic modulus = 1e+14: must be at most 1e+13 Pa" \
+  sweep sweep-steel-e.prm --output out
 [ "$failures" -eq 0 ] || { echo "$failures checks failed"; exit 1; }
 echo "fibre frames: all checks passed"

@@ -4,9 +4,12 @@
 #include <poundfe/output/json_writer.h>
 #include <poundfe/output/plots.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <boost/test/unit_test.hpp>
 
@@ -143,4 +146,76 @@ BOOST_AUTO_TEST_CASE(plot_script_resets_each_panel)
     }
   BOOST_CHECK(panels[0].find("set boxwidth 0.8\n") != std::string::npos);
   BOOST_CHECK(panels[1].find("set boxwidth 0.8\n") == std::string::npos);
+}
+
+namespace
+{
+  /// The names in `directory`, sorted.
+  std::vector<std::string>
+  names_in(const std::string &directory)
+  {
+    std::vector<std::string> names;
+    for (const auto &entry : std::filesystem::directory_iterator(directory))
+      names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  std::string
+  contents_of(const std::string &path)
+  {
+    std::ifstream      in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(a_name_too_long_for_a_tmp_suffix_is_written_through_a_short_temporary)
+{
+  // NAME_MAX is 255: "<name>.tmp" of a 252-character name would be 256
+  // characters, refused (ENAMETOOLONG) were it the temporary's name.
+  const std::string directory = "/tmp/poundfe-test-long-name";
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  for (const std::size_t length : {251, 252, 255})
+    {
+      const std::string name = std::string(length - 4, 'n') + ".csv";
+      {
+        AtomicFile file(directory + "/" + name);
+        file.write("written\n");
+        BOOST_TEST(names_in(directory).size() == 1u); // its temporary alone
+        file.commit();
+      }
+      BOOST_TEST_INFO("name of " << length << " characters");
+      BOOST_TEST(names_in(directory) == std::vector<std::string>{name}); // no temporary left
+      BOOST_TEST(contents_of(directory + "/" + name) == "written\n");
+      {
+        AtomicFile file(directory + "/" + name); // uncommitted: its temporary removed
+        file.write("not committed\n");
+      }
+      BOOST_TEST(names_in(directory) == std::vector<std::string>{name});
+      BOOST_TEST(contents_of(directory + "/" + name) == "written\n");
+      std::filesystem::remove(directory + "/" + name);
+    }
+  std::filesystem::remove_all(directory);
+}
+
+BOOST_AUTO_TEST_CASE(a_link_to_a_regular_file_is_written_through_and_stays_a_link)
+{
+  // As cp does: the file the link leads to (in another directory, by a
+  // relative link) gets the new contents; the link stays a link to it.
+  const std::string directory = "/tmp/poundfe-test-link";
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory + "/out");
+  std::filesystem::create_directories(directory + "/kept");
+  std::ofstream(directory + "/kept/drift.csv") << "old\n";
+  std::filesystem::create_symlink("../kept/drift.csv", directory + "/out/drift.csv");
+  write_file_atomically(directory + "/out/drift.csv", "new\n");
+  BOOST_TEST(std::filesystem::is_symlink(directory + "/out/drift.csv"));
+  BOOST_TEST(std::filesystem::read_symlink(directory + "/out/drift.csv") == "../kept/drift.csv");
+  BOOST_TEST(contents_of(directory + "/kept/drift.csv") == "new\n");
+  BOOST_TEST(names_in(directory + "/out") == std::vector<std::string>{"drift.csv"});
+  BOOST_TEST(names_in(directory + "/kept") == std::vector<std::string>{"drift.csv"});
+  std::filesystem::remove_all(directory);
 }

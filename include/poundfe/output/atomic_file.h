@@ -1,12 +1,12 @@
-// Files appear complete or not at all: written to "<name>.tmp" and renamed
-// into place on commit. An uncommitted file is removed when destroyed, and
+// Files appear complete or not at all: written to a temporary beside them
+// (atomic_file.cc says which) and renamed into place on commit, a link to a
+// file written through. An uncommitted file is removed when destroyed, and
 // at once when a write fails (a full disk gets its space back for the
 // summary that reports it). Failures throw OutputError (base/exceptions.h)
 // with the operating system's reason. Each call is a safe point where a
 // command that stops at them (base/interruption.h) throws Interrupted.
-// Unbuffered: its writers (CsvWriter, NpyWriter) keep one buffer per file
-// and hand it over whole, so each block is one write(2) and no second
-// buffer copies it again.
+// Unbuffered: its writers (CsvWriter, NpyWriter) hand over one buffer per
+// file whole, so each block is one write(2) and no second buffer copies it.
 #ifndef poundfe_output_atomic_file_h
 #define poundfe_output_atomic_file_h
 
