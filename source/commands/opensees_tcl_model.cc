@@ -1033,7 +1033,8 @@ namespace poundfe
           }
         // OpenSees 3.8's laws skip strain changes below DBL_EPSILON: a
         // script's numbers are OpenSees's with them
-        if (type == "Concrete01" || type == "Concrete02" || type == "Steel02")
+        if (type == "Concrete01" || type == "Concrete02" || type == "Steel02" ||
+            type == "Hysteretic")
           p.values[opensees_dead_band_entry] = 1;
         // the law's own checks, now at the script's line
         if (type == "ViscousDamper")

@@ -19,6 +19,9 @@
 //   point -> (eps_max, s(eps_max)).
 //   A negative increment is the positive one of the mirrored state.
 //   Tangents of zero-stress branches are 1e-9 of a modulus, as in OpenSees.
+//   Under `poundfe opensees`, OpenSees 3.8's dead band (in_dead_band): a
+//   strain change below DBL_EPSILON from the committed strain keeps the
+//   committed history with the last trial's stress and tangent.
 // Sources: OpenSees HystereticMaterial (M. Scott, F. Filippou), whose
 // behaviour this reproduces, stress, tangent and history alike; its rules go
 // back to Y.J. Park, A.M. Reinhorn & S.K. Kunnath (1987), IDARC, NCEER-87-0008.
@@ -26,6 +29,7 @@
 #include <poundfe/laws/hysteretic.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace poundfe
@@ -134,8 +138,9 @@ namespace poundfe
     }
   } // namespace
 
-  Hysteretic::Hysteretic(const HystereticParameters &parameters)
+  Hysteretic::Hysteretic(const HystereticParameters &parameters, const bool opensees_dead_band)
     : p(parameters)
+    , opensees_dead_band(opensees_dead_band)
   {
     const HystereticEnvelope negative = hysteretic_flipped(p.negative);
     check_hysteretic_envelope(p.positive, "p");
@@ -165,10 +170,12 @@ namespace poundfe
   HystereticState
   Hysteretic::respond(const HystereticState &from, const double strain) const
   {
-    const double d_strain = strain - from.strain;
+    const double    d_strain = strain - from.strain;
+    HystereticState s;
+    if (in_dead_band(from, strain, s))
+      return s;
     if ((from.loading == 0 && strain == 0) || d_strain == 0)
       return from;
-    HystereticState s;
     if (strain >= from.max_strain) // on the positive envelope
       {
         s            = from;
@@ -192,6 +199,29 @@ namespace poundfe
     s.strain = strain;
     s.energy = from.energy + 0.5 * (from.stress + s.stress) * d_strain;
     return s;
+  }
+
+  bool
+  Hysteretic::in_dead_band(const HystereticState &from, const double strain,
+                           HystereticState &s) const
+  {
+    if (!opensees_dead_band)
+      return false;
+    // this->trial is OpenSees's T* (set_trial replaces it only when respond
+    // returns; after a commit or a revert it is the committed state)
+    if (trial.loading == 0 && strain == 0)
+      {
+        s = trial;
+        return true;
+      }
+    if (!(std::abs(strain - from.strain) < DBL_EPSILON))
+      return false;
+    s         = from;
+    s.strain  = strain;
+    s.stress  = trial.stress;
+    s.tangent = trial.tangent;
+    s.loading = trial.loading;
+    return true;
   }
 
   HystereticState
@@ -263,6 +293,31 @@ namespace poundfe
 
   namespace materials
   {
+    namespace
+    {
+      std::unique_ptr<UniaxialLaw>
+      make_hysteretic(const std::map<std::string, double> &v, const bool opensees_dead_band)
+      {
+        auto envelope = [&](const std::string &side) {
+          const double s1 = v.at("s1" + side), e1 = v.at("e1" + side);
+          const double s2 = v.at("s2" + side), e2 = v.at("e2" + side);
+          const double s3 = v.at("s3" + side), e3 = v.at("e3" + side);
+          if (s3 == 0 && e3 == 0) // two points: OpenSees puts the middle one halfway
+            return HystereticEnvelope{s1, e1, 0.5 * (s1 + s2), 0.5 * (e1 + e2), s2, e2};
+          return HystereticEnvelope{s1, e1, s2, e2, s3, e3};
+        };
+        HystereticParameters q;
+        q.positive = envelope("p");
+        q.negative = envelope("n");
+        q.pinchX   = v.at("pinchX");
+        q.pinchY   = v.at("pinchY");
+        q.damage1  = v.at("damage1");
+        q.damage2  = v.at("damage2");
+        q.beta     = v.at("beta");
+        return std::make_unique<Hysteretic>(q, opensees_dead_band);
+      }
+    } // namespace
+
     MaterialType
     hysteretic()
     {
@@ -282,25 +337,13 @@ namespace poundfe
       return {"Hysteretic",
               "trilinear envelopes with pinching and damage (OpenSees Hysteretic)",
               parameters,
-              [](const std::map<std::string, double> &v) -> std::unique_ptr<UniaxialLaw> {
-                auto envelope = [&](const std::string &side) {
-                  const double s1 = v.at("s1" + side), e1 = v.at("e1" + side);
-                  const double s2 = v.at("s2" + side), e2 = v.at("e2" + side);
-                  const double s3 = v.at("s3" + side), e3 = v.at("e3" + side);
-                  if (s3 == 0 && e3 == 0) // two points: OpenSees puts the middle one halfway
-                    return HystereticEnvelope{s1, e1, 0.5 * (s1 + s2), 0.5 * (e1 + e2), s2, e2};
-                  return HystereticEnvelope{s1, e1, s2, e2, s3, e3};
-                };
-                HystereticParameters q;
-                q.positive = envelope("p");
-                q.negative = envelope("n");
-                q.pinchX   = v.at("pinchX");
-                q.pinchY   = v.at("pinchY");
-                q.damage1  = v.at("damage1");
-                q.damage2  = v.at("damage2");
-                q.beta     = v.at("beta");
-                return std::make_unique<Hysteretic>(q);
-              }};
+              [](const std::map<std::string, double> &v) { return make_hysteretic(v, false); }};
+    }
+
+    std::unique_ptr<UniaxialLaw>
+    hysteretic_with_dead_band(const std::map<std::string, double> &values)
+    {
+      return make_hysteretic(values, true);
     }
   } // namespace materials
 } // namespace poundfe

@@ -39,8 +39,9 @@ namespace poundfe
   public:
     /// InputError naming the parameter unless each envelope's strains grow
     /// in magnitude with the right sign, pinchX and pinchY lie in [0, 1]
-    /// and damage1, damage2, beta >= 0.
-    explicit Hysteretic(const HystereticParameters &parameters);
+    /// and damage1, damage2, beta >= 0. With `opensees_dead_band`, OpenSees
+    /// 3.8's (in_dead_band).
+    explicit Hysteretic(const HystereticParameters &parameters, bool opensees_dead_band = false);
 
     double initial_stiffness() const override { return p.positive.s1 / p.positive.e1; }
     double yield_deformation() const override { return p.positive.e1; }
@@ -60,10 +61,17 @@ namespace poundfe
     HystereticState virgin() const override;
     HystereticState positive_increment(const HystereticState &from, double strain,
                                        const Sides &sides) const;
+    /// OpenSees 3.8's HystereticMaterial::setTrialStrain: at strain 0 with
+    /// the last trial still virgin, the last trial as it is; a change below
+    /// DBL_EPSILON from the committed strain keeps the committed history and
+    /// energy, takes the strain and keeps the last trial's stress, tangent
+    /// and loading direction. False outside the band (and without it).
+    bool in_dead_band(const HystereticState &from, double strain, HystereticState &s) const;
 
     HystereticParameters p;
     Sides                forward, mirrored;
     double               energy_A; // the envelopes' area to e3 (damage scale)
+    bool                 opensees_dead_band;
   };
 } // namespace poundfe
 
