@@ -101,6 +101,11 @@ namespace poundfe
         std::set<int> displacements, velocities;
         bool          analysed = false, transient_analysed = false;
       } node_vectors;
+      /// The files `print -file` has made in this run (device, inode): a
+      /// later print appends to such a file in place; any other file at
+      /// the path, an earlier run's, is replaced (opensees_tcl_print.cc).
+      /// Kept through `wipe`, as OpenSees keeps appending after it.
+      std::set<std::pair<unsigned long long, unsigned long long>> print_files;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
       /// The -mat tags of each zeroLength and twoNodeLink (their gap rows).

@@ -7,18 +7,27 @@
 // the text of Print(s, 0): a node's lines as Node::Print's, an element in
 // poundfe's layout of the same fields as its JSON (doc/user-guide.md).
 // -file: JSON replaces the file, text is appended to it (as OpenSees's
-// OVERWRITE and APPEND), both through a temporary renamed into place.
+// OVERWRITE and APPEND). A run's first print to a path (and every JSON)
+// writes a new file through a temporary renamed into place; a later text
+// print to the file this run made appends to it in place (one write of the
+// text: n appends cost what they write, not n^2), so a run never mixes its
+// file with an earlier run's.
+#include <poundfe/base/exceptions.h>
 #include <poundfe/base/lean_assert.h>
 #include <poundfe/laws/material_registry.h>
 #include <poundfe/output/atomic_file.h>
 
 #include "opensees_tcl.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <filesystem>
 #include <set>
-#include <fstream>
 #include <sstream>
 
 namespace poundfe
@@ -431,23 +440,57 @@ namespace poundfe
         objects_text(out, s, {"", false, false, true, {}});
       }
 
-      /// The text into the file, replacing it or after what it holds.
+      /// The device and inode of the file at `path`; nullopt when there is
+      /// none.
+      std::optional<std::pair<unsigned long long, unsigned long long>>
+      file_identity(const std::string &path)
+      {
+        struct stat status;
+        if (::stat(path.c_str(), &status) != 0)
+          return std::nullopt;
+        return std::pair<unsigned long long, unsigned long long>(status.st_dev, status.st_ino);
+      }
+
+      /// `text` after what the file holds, in one write(2).
       void
-      write_file(const std::string &file, const std::string &text, const bool append)
+      append_in_place(const std::string &path, const std::string &text)
+      {
+        const int descriptor = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+        if (descriptor < 0)
+          throw OutputError("open", path, errno);
+        std::size_t written = 0;
+        while (written < text.size())
+          {
+            const ssize_t n = ::write(descriptor, text.data() + written, text.size() - written);
+            if (n < 0 && errno == EINTR)
+              continue;
+            if (n < 0)
+              {
+                const int error = errno;
+                ::close(descriptor);
+                throw OutputError("write", path, error);
+              }
+            written += static_cast<std::size_t>(n);
+          }
+        if (::close(descriptor) != 0)
+          throw OutputError("close", path, errno);
+      }
+
+      /// The text into the file: appended to the file this run made there,
+      /// else (and for JSON) a new file in its place.
+      void
+      write_file(Session &s, const std::string &file, const std::string &text, const bool append)
       {
         const std::filesystem::path parent = std::filesystem::path(file).parent_path();
         if (!parent.empty() && !std::filesystem::is_directory(parent))
           throw ScriptError("cannot write '" + file + "': the directory '" + parent.string() +
                             "' does not exist");
-        std::string old;
-        if (append && std::filesystem::is_regular_file(file))
-          {
-            std::ifstream      in(file, std::ios::binary);
-            std::ostringstream all;
-            all << in.rdbuf();
-            old = all.str();
-          }
-        write_file_atomically(file, old + text);
+        const auto existing = file_identity(file);
+        if (append && existing && s.print_files.count(*existing) > 0)
+          return append_in_place(file, text);
+        write_file_atomically(file, text);
+        if (const auto made = file_identity(file))
+          s.print_files.insert(*made);
       }
 
       void
@@ -464,7 +507,7 @@ namespace poundfe
         if (r.file.empty())
           s.warnings << out.str();
         else
-          write_file(r.file, out.str(), !r.json);
+          write_file(s, r.file, out.str(), !r.json);
       }
     } // namespace
 

@@ -839,7 +839,8 @@ step_fails "a load of 2e308" "element 1: its forces are not finite"
 #    comparison fails on a value changed by one digit; a second
 #    printModel -JSON replaces the file, print appends; the element text;
 #    -file into a missing directory and a node that does not exist: one
-#    line naming the file and line, exit 1, nothing written.
+#    line naming the file and line, exit 1, nothing written; 2000 appends
+#    are OpenSees's file and write what they add.
 mkdir -p "$work/print"
 "$poundfe" opensees "$corpus/print_model.tcl" "$work/print" > "$work/print/log" 2>&1 \
   || { cat "$work/print/log"; fail "print_model: poundfe opensees exited $?"; }
@@ -884,4 +885,22 @@ for case in "printModel -JSON -file $work/print/none/m.json|the directory '$work
     || { cat "$work/print/bad.err"; fail "${case%%|*}: exit $status, not one line naming it"; }
 done
 [ ! -e "$work/print/none" ] && [ ! -e "$work/print/n.txt" ] || fail "print: a refused print wrote"
+# 2000 appends give OpenSees 3.8's file (its file of 2 appends, 1000 times)
+# and cost what they write: the process's bytes written (wchar) are the
+# file's size, and twice those of 1000 appends (each append rewriting the
+# file wrote 33 MB for 1000 and 132 MB for 2000); a second run replaces
+# the first run's file.
+appends() {
+  "$poundfe" opensees "$corpus/print_appends.tcl" "$work/print" "$1" 2> /dev/null \
+    | sed -n 's/^appends [0-9]* written \([0-9]*\)$/\1/p'
+}
+written_1000=$(appends 1000)
+written_2000=$(appends 2000)
+size=$(wc -c < "$work/print/appends.txt")
+for i in $(seq 1000); do cat "$corpus/print_model_opensees/appends_2.txt"; done > "$work/print/appends_opensees.txt"
+cmp -s "$work/print/appends.txt" "$work/print/appends_opensees.txt" \
+  || fail "print: 2000 appends are not OpenSees's file"
+[ -n "$written_1000" ] && [ "$written_2000" -le $((size + size / 100)) ] \
+  && [ "$written_2000" -le $((2 * written_1000 + written_1000 / 100)) ] \
+  || fail "print: 2000 appends wrote $written_2000 bytes for a file of $size (1000: $written_1000)"
 echo "opensees: ok"
