@@ -49,6 +49,7 @@ namespace poundfe
     std::string json_numbers(const std::vector<double> &values);
     std::string json_tag(int tag);
     std::string json_tags(const std::vector<int> &tags);
+    std::string json_strings(const std::vector<std::string> &texts); // each quoted
 
     /// What a script has built and asked for so far.
     struct Session

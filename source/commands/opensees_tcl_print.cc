@@ -73,6 +73,12 @@ namespace poundfe
       return json_array(tags, json_tag);
     }
 
+    std::string
+    json_strings(const std::vector<std::string> &texts)
+    {
+      return json_array(texts, [](const std::string &text) { return "\"" + text + "\""; });
+    }
+
     namespace
     {
       using opensees::ScriptError;
@@ -91,6 +97,46 @@ namespace poundfe
             return m.default_value;
         Assert(false, dealii::ExcMessage("no parameter " + name + " of " + p.material));
         return 0;
+      }
+
+      /// HystereticMaterial's Print fields: each envelope point with the
+      /// slope up to it, as its setEnvelope computes them (the two-point
+      /// form's middle point halfway, as its constructor puts it), the
+      /// damage's energyA as the constructor sums it.
+      Fields
+      hysteretic_fields(const MaterialParameters &p)
+      {
+        const bool two_points = p.values.count("s3p") == 0;
+        Fields     fields;
+        double     energy = 0;
+        for (const char *side : {"p", "n"})
+          {
+            const auto at = [&](const char *what, const char *point) {
+              return p.values.at(std::string(what) + point + side);
+            };
+            const double m1 = at("s", "1"), r1 = at("e", "1");
+            const double m3 = two_points ? at("s", "2") : at("s", "3");
+            const double r3 = two_points ? at("e", "2") : at("e", "3");
+            const double m2 = two_points ? 0.5 * (m1 + m3) : at("s", "2");
+            const double r2 = two_points ? 0.5 * (r1 + r3) : at("e", "2");
+            const double slopes[] = {m1 / r1, (m2 - m1) / (r2 - r1), (m3 - m2) / (r3 - r2)};
+            const double points[][2] = {{m1, r1}, {m2, r2}, {m3, r3}};
+            for (int i = 0; i < 3; ++i)
+              {
+                const std::string n = std::to_string(i + 1) + side;
+                fields.emplace_back("s" + n, json_number(points[i][0]));
+                fields.emplace_back("e" + n, json_number(points[i][1]));
+                fields.emplace_back("E" + n, json_number(slopes[i]));
+              }
+            energy += two_points ? r1 * m1 + (r3 - r1) * (m3 + m1) :
+                                   r1 * m1 + (r2 - r1) * (m2 + m1) + (r3 - r2) * (m3 + m2);
+          }
+        const auto value = [&](const char *name) { return json_number(parameter(p, name)); };
+        fields.insert(fields.end(), {{"pinchX", value("pinchX")}, {"pinchY", value("pinchY")},
+                                     {"damfc1", value("damage1")}, {"damfc2", value("damage2")},
+                                     {"energyA", json_number(0.5 * energy)},
+                                     {"beta", value("beta")}});
+        return fields;
       }
 
       /// OpenSees's class name and Print fields of a uniaxial material;
@@ -135,7 +181,9 @@ namespace poundfe
                    {"R0", value("R0")}, {"cR1", value("cR1")}, {"cR2", value("cR2")},
                    {"a1", value("a1")}, {"a2", value("a2")}, {"a3", value("a3")},
                    {"a4", value("a4")}, {"sigini", "0"}}};
-        return {type == "Hysteretic" ? "HystereticMaterial" : type, {}};
+        if (type == "Hysteretic")
+          return {"HystereticMaterial", hysteretic_fields(p)};
+        return {type, {}};
       }
 
       /// The same of Parallel, Series and MinMax (Parallel's factors as a

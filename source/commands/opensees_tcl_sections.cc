@@ -126,9 +126,12 @@ namespace poundfe
         return it->second;
       }
 
-      void
+      /// section Aggregator; its Print fields (SectionAggregator's: the
+      /// -section, the materials and their dof).
+      Printed
       aggregator_section(opensees::Domain &d, Words &w, const int tag)
       {
+        Printed printed{"SectionAggregator", {}};
         std::vector<std::pair<int, std::string>> laws;
         while (!w.done() && w.peek() != "-section")
           {
@@ -145,6 +148,7 @@ namespace poundfe
           {
             w.word("-section");
             const int  base = w.integer("the base section");
+            printed.fields.emplace_back("section", json_tag(base));
             const auto it   = d.sections.find(base);
             if (it == d.sections.end())
               throw ScriptError("section " + std::to_string(base) + " does not exist");
@@ -186,6 +190,16 @@ namespace poundfe
             unsupported("section Aggregator without " + names[r] +
                         " and without an Elastic -section");
         add_section(d, tag, section);
+        std::vector<int>         tags;
+        std::vector<std::string> dofs;
+        for (const auto &[mat, dof] : laws)
+          {
+            tags.push_back(mat);
+            dofs.push_back(dof);
+          }
+        printed.fields.emplace_back("materials", json_tags(tags));
+        printed.fields.emplace_back("dof", json_strings(dofs));
+        return printed;
       }
 
       void
@@ -227,8 +241,7 @@ namespace poundfe
           }
         else if (type == "Aggregator")
           {
-            aggregator_section(d, w, tag);
-            s.printed_sections[tag] = {"SectionAggregator", {}};
+            s.printed_sections[tag] = aggregator_section(d, w, tag);
           }
         else
           unsupported("section " + type);

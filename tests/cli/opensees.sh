@@ -846,6 +846,8 @@ mkdir -p "$work/print"
   || { cat "$work/print/log"; fail "print_model: poundfe opensees exited $?"; }
 "$poundfe" opensees "$corpus/print_model_rayleigh.tcl" "$work/print" > "$work/print/log" 2>&1 \
   || { cat "$work/print/log"; fail "print_model_rayleigh: poundfe opensees exited $?"; }
+"$poundfe" opensees "$corpus/print_model_links.tcl" "$work/print" > "$work/print/log" 2>&1 \
+  || { cat "$work/print/log"; fail "print_model_links: poundfe opensees exited $?"; }
 grep -q 'Rayleigh Forces: 0.0473154 ' "$work/print/nodes_rayleigh.txt" \
   || fail "print_model_rayleigh: node 2's Rayleigh force is not -alphaM m v"
 "$python" "$corpus/print_model.py" "$work/print" "$corpus/print_model_opensees" \
