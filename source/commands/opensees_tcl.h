@@ -89,6 +89,14 @@ namespace poundfe
       double                         open_torsion = 0; // its GJ (3D)
       /// Every command defined, and whether poundfe implements it.
       std::map<std::string, bool> commands;
+      /// What printModel writes of the section Fiber being filled: the
+      /// command that made each fibre (0 fiber, 1 patch, 2 layer) and each
+      /// command's sectionRepr object, by kind (opensees_tcl_sections.cc).
+      struct FibrePrint
+      {
+        std::vector<int>                        kinds;
+        std::array<std::vector<std::string>, 3> repr;
+      } fibre_print;
       /// What print writes of each element and section (by tag).
       std::map<int, Printed> printed_elements, printed_sections;
       /// Which of OpenSees's node vectors exist, since Node::Print writes
