@@ -71,6 +71,10 @@ CASES = {
     # reversal of 1e-17 at each peak, each exposed by one Linear step of load
     # (measured 5e-19)
     "hysteretic_dead_band": ("hysteretic_dead_band.tcl", [], 1e-12),
+    # failed steps reverted and retried: the elements updated at the
+    # committed state, Hysteretic's tangent left as the failed trial made it
+    # (the same failures and rows; measured 1.3e-13)
+    "failed_step_retry": ("failed_step_retry.tcl", [], 1e-9),
     # the fibre frame of dispBeamColumns, damping on the committed stiffness:
     # its beams' fibres sit at strains of ~1e-20 after gravity, inside
     # Concrete01's band (their tangent E_c, not 0, enters K_c)

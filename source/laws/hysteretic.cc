@@ -21,7 +21,8 @@
 //   Tangents of zero-stress branches are 1e-9 of a modulus, as in OpenSees.
 //   Under `poundfe opensees`, OpenSees 3.8's dead band (in_dead_band): a
 //   strain change below DBL_EPSILON from the committed strain keeps the
-//   committed history with the last trial's stress and tangent.
+//   committed history with the last trial's stress and tangent (the tangent
+//   also across a revert, as OpenSees's revertToLastCommit leaves it).
 // Sources: OpenSees HystereticMaterial (M. Scott, F. Filippou), whose
 // behaviour this reproduces, stress, tangent and history alike; its rules go
 // back to Y.J. Park, A.M. Reinhorn & S.K. Kunnath (1987), IDARC, NCEER-87-0008.
@@ -163,7 +164,8 @@ namespace poundfe
   Hysteretic::virgin() const
   {
     HystereticState s;
-    s.tangent = initial_stiffness();
+    s.tangent        = initial_stiffness();
+    opensees_tangent = s.tangent; // revertToStart sets Ttangent = E1p
     return s;
   }
 
@@ -176,6 +178,16 @@ namespace poundfe
       return s;
     if ((from.loading == 0 && strain == 0) || d_strain == 0)
       return from;
+    s                = respond_outside_band(from, strain);
+    opensees_tangent = s.tangent;
+    return s;
+  }
+
+  HystereticState
+  Hysteretic::respond_outside_band(const HystereticState &from, const double strain) const
+  {
+    const double    d_strain = strain - from.strain;
+    HystereticState s;
     if (strain >= from.max_strain) // on the positive envelope
       {
         s            = from;
@@ -208,10 +220,13 @@ namespace poundfe
     if (!opensees_dead_band)
       return false;
     // this->trial is OpenSees's T* (set_trial replaces it only when respond
-    // returns; after a commit or a revert it is the committed state)
+    // returns; after a commit or a revert it is the committed state), except
+    // for the tangent: OpenSees's revertToLastCommit leaves Ttangent as the
+    // last trial made it, and so does its band (opensees_tangent)
     if (trial.loading == 0 && strain == 0)
       {
-        s = trial;
+        s         = trial;
+        s.tangent = opensees_tangent;
         return true;
       }
     if (!(std::abs(strain - from.strain) < DBL_EPSILON))
@@ -219,7 +234,7 @@ namespace poundfe
     s         = from;
     s.strain  = strain;
     s.stress  = trial.stress;
-    s.tangent = trial.tangent;
+    s.tangent = opensees_tangent;
     s.loading = trial.loading;
     return true;
   }

@@ -885,6 +885,13 @@ BOOST_AUTO_TEST_CASE(hysteretic_opensees_dead_band_only_when_asked)
   banded.revert();
   BOOST_REQUIRE(banded.set_trial(0.02 - 1e-17, 0));
   BOOST_TEST(banded.force() == stress);
+  // but the tangent the reverted trial left: OpenSees's revertToLastCommit
+  // keeps Ttangent (a step retried after a failure starts from it)
+  BOOST_TEST(banded.tangent() == unloading);
+  // a reset forgets it: the virgin modulus
+  banded.reset();
+  BOOST_REQUIRE(banded.set_trial(1e-17, 0));
+  BOOST_TEST(banded.tangent() == banded.initial_stiffness());
   // from the virgin state: back at strain 0 after a trial at 0.001, the
   // stress of that trial stays (OpenSees's TloadIndicator is then 1)
   Hysteretic virgin(trilinear(), true);

@@ -58,6 +58,8 @@ namespace poundfe
       double             E_ahead, E_behind; // unloading moduli
     };
     HystereticState respond(const HystereticState &from, double strain) const override;
+    /// respond's rules once the dead band has let the strain through.
+    HystereticState respond_outside_band(const HystereticState &from, double strain) const;
     HystereticState virgin() const override;
     HystereticState positive_increment(const HystereticState &from, double strain,
                                        const Sides &sides) const;
@@ -65,13 +67,17 @@ namespace poundfe
     /// the last trial still virgin, the last trial as it is; a change below
     /// DBL_EPSILON from the committed strain keeps the committed history and
     /// energy, takes the strain and keeps the last trial's stress, tangent
-    /// and loading direction. False outside the band (and without it).
+    /// and loading direction, the tangent even after a revert. False outside
+    /// the band (and without it).
     bool in_dead_band(const HystereticState &from, double strain, HystereticState &s) const;
 
     HystereticParameters p;
     Sides                forward, mirrored;
     double               energy_A; // the envelopes' area to e3 (damage scale)
     bool                 opensees_dead_band;
+    /// OpenSees's Ttangent: the tangent of the last trial outside the band
+    /// (or the virgin one), which its revertToLastCommit leaves as it is.
+    mutable double opensees_tangent = 0;
   };
 } // namespace poundfe
 
