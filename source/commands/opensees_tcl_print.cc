@@ -14,6 +14,7 @@
 // file with an earlier run's.
 #include <poundfe/base/exceptions.h>
 #include <poundfe/base/lean_assert.h>
+#include <poundfe/laws/hysteretic.h>
 #include <poundfe/laws/material_registry.h>
 #include <poundfe/output/atomic_file.h>
 
@@ -111,14 +112,9 @@ namespace poundfe
         double     energy = 0;
         for (const char *side : {"p", "n"})
           {
-            const auto at = [&](const char *what, const char *point) {
-              return p.values.at(std::string(what) + point + side);
-            };
-            const double m1 = at("s", "1"), r1 = at("e", "1");
-            const double m3 = two_points ? at("s", "2") : at("s", "3");
-            const double r3 = two_points ? at("e", "2") : at("e", "3");
-            const double m2 = two_points ? 0.5 * (m1 + m3) : at("s", "2");
-            const double r2 = two_points ? 0.5 * (r1 + r3) : at("e", "2");
+            // the negative side as given (negative values), as OpenSees prints it
+            const HystereticEnvelope e = hysteretic_envelope(p.values, side);
+            const double m1 = e.s1, r1 = e.e1, m2 = e.s2, r2 = e.e2, m3 = e.s3, r3 = e.e3;
             const double slopes[] = {m1 / r1, (m2 - m1) / (r2 - r1), (m3 - m2) / (r3 - r2)};
             const double points[][2] = {{m1, r1}, {m2, r2}, {m3, r3}};
             for (int i = 0; i < 3; ++i)
@@ -524,8 +520,33 @@ namespace poundfe
           throw OutputError("close", path, errno);
       }
 
-      /// The text into the file: appended to the file this run made there,
-      /// else (and for JSON) a new file in its place.
+      /// The path a print writes for `file`: a symbolic link's target
+      /// (OpenSees writes through the link; a renamed temporary would
+      /// replace the link itself), followed link by link, also when the
+      /// last one dangles. A path that names a device or a FIFO, through
+      /// links or not, stays as it is: AtomicFile writes it in place.
+      std::string
+      print_target(const std::string &file)
+      {
+        namespace fs = std::filesystem;
+        std::error_code error;
+        const fs::file_status followed = fs::status(file, error);
+        if (fs::exists(followed) && !fs::is_regular_file(followed))
+          return file;
+        fs::path path = file;
+        for (int links = 0; links < 40 && fs::is_symlink(path, error); ++links) // ELOOP's 40
+          {
+            const fs::path target = fs::read_symlink(path, error);
+            if (error)
+              break;
+            path = target.is_relative() ? path.parent_path() / target : target;
+          }
+        return path.string();
+      }
+
+      /// The text into the file (through a link: its target): appended to
+      /// the file this run made there, else (and for JSON) a new file in its
+      /// place.
       void
       write_file(Session &s, const std::string &file, const std::string &text, const bool append)
       {
@@ -533,11 +554,12 @@ namespace poundfe
         if (!parent.empty() && !std::filesystem::is_directory(parent))
           throw ScriptError("cannot write '" + file + "': the directory '" + parent.string() +
                             "' does not exist");
-        const auto existing = file_identity(file);
+        const std::string target   = print_target(file);
+        const auto        existing = file_identity(target);
         if (append && existing && s.print_files.count(*existing) > 0)
-          return append_in_place(file, text);
-        write_file_atomically(file, text);
-        if (const auto made = file_identity(file))
+          return append_in_place(target, text);
+        write_file_atomically(target, text);
+        if (const auto made = file_identity(target))
           s.print_files.insert(*made);
       }
 

@@ -306,6 +306,20 @@ namespace poundfe
     return s;
   }
 
+  HystereticEnvelope
+  hysteretic_envelope(const std::map<std::string, double> &values, const std::string &side)
+  {
+    const auto at = [&](const char *name) {
+      const auto it = values.find(name + side);
+      return it == values.end() ? 0.0 : it->second;
+    };
+    const double s1 = at("s1"), e1 = at("e1"), s2 = at("s2"), e2 = at("e2");
+    const double s3 = at("s3"), e3 = at("e3");
+    if (s3 == 0 && e3 == 0) // two points: OpenSees puts the middle one halfway
+      return HystereticEnvelope{s1, e1, 0.5 * (s1 + s2), 0.5 * (e1 + e2), s2, e2};
+    return HystereticEnvelope{s1, e1, s2, e2, s3, e3};
+  }
+
   namespace materials
   {
     namespace
@@ -313,17 +327,9 @@ namespace poundfe
       std::unique_ptr<UniaxialLaw>
       make_hysteretic(const std::map<std::string, double> &v, const bool opensees_dead_band)
       {
-        auto envelope = [&](const std::string &side) {
-          const double s1 = v.at("s1" + side), e1 = v.at("e1" + side);
-          const double s2 = v.at("s2" + side), e2 = v.at("e2" + side);
-          const double s3 = v.at("s3" + side), e3 = v.at("e3" + side);
-          if (s3 == 0 && e3 == 0) // two points: OpenSees puts the middle one halfway
-            return HystereticEnvelope{s1, e1, 0.5 * (s1 + s2), 0.5 * (e1 + e2), s2, e2};
-          return HystereticEnvelope{s1, e1, s2, e2, s3, e3};
-        };
         HystereticParameters q;
-        q.positive = envelope("p");
-        q.negative = envelope("n");
+        q.positive = hysteretic_envelope(v, "p");
+        q.negative = hysteretic_envelope(v, "n");
         q.pinchX   = v.at("pinchX");
         q.pinchY   = v.at("pinchY");
         q.damage1  = v.at("damage1");

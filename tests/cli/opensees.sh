@@ -905,4 +905,31 @@ cmp -s "$work/print/appends.txt" "$work/print/appends_opensees.txt" \
 [ -n "$written_1000" ] && [ "$written_2000" -le $((size + size / 100)) ] \
   && [ "$written_2000" -le $((2 * written_1000 + written_1000 / 100)) ] \
   || fail "print: 2000 appends wrote $written_2000 bytes for a file of $size (1000: $written_1000)"
+# print -file through a symbolic link writes its target, as OpenSees does
+# (a renamed temporary would replace the link); a dangling link's target is
+# made; a FIFO is written in place, each print as the reader gets it
+mkdir -p "$work/links/sub"
+printf 'set d [lindex $argv 0]\nmodel basic -ndm 2 -ndf 3\nnode 1 0.0 0.0\nnode 2 1.0 0.0\nprint -file $d/%s -node 2\nprint -file $d/%s -node 1\nprintModel -JSON -file $d/%s\n' \
+  link.txt link.txt json.link > "$work/links/links.tcl"
+echo "an earlier run" > "$work/links/real.txt"
+ln -s real.txt "$work/links/link.txt"
+ln -s sub/made.json "$work/links/json.link"
+"$poundfe" opensees "$work/links/links.tcl" "$work/links" > "$work/links/out.txt" 2>&1 \
+  || { cat "$work/links/out.txt"; fail "print through a link"; }
+[ -L "$work/links/link.txt" ] && [ -L "$work/links/json.link" ] || fail "print replaced a link: $(ls -l "$work/links")"
+[ "$(grep -c 'Node: ' "$work/links/real.txt")" = 2 ] && ! grep -q "earlier run" "$work/links/real.txt" \
+  || fail "print through a link: the target holds $(cat "$work/links/real.txt")"
+grep -q StructuralAnalysisModel "$work/links/sub/made.json" || fail "printModel through a dangling link"
+sed 's/link.txt/fifo/g; s/json.link/fifo/' "$work/links/links.tcl" > "$work/links/fifo.tcl"
+mkfifo "$work/links/fifo" || fail "mkfifo"
+# each print opens and closes the FIFO: one reader each
+(for i in 1 2 3; do timeout 60 cat "$work/links/fifo"; done > "$work/links/read.txt") &
+reader=$!
+timeout 60 "$poundfe" opensees "$work/links/fifo.tcl" "$work/links" > "$work/links/out.txt" 2>&1
+status=$?
+[ -p "$work/links/fifo" ] || { kill $reader 2>/dev/null; fail "print replaced the FIFO"; }
+wait $reader
+[ $status = 0 ] && [ "$(grep -c 'Node: ' "$work/links/read.txt")" = 2 ] \
+  && grep -q StructuralAnalysisModel "$work/links/read.txt" && [ ! -e "$work/links/fifo.tmp" ] \
+  || { cat "$work/links/out.txt"; fail "print to a FIFO: exit $status, read $(wc -c < "$work/links/read.txt") bytes"; }
 echo "opensees: ok"

@@ -6,6 +6,9 @@
 
 #include <poundfe/laws/material_registry.h>
 
+#include <map>
+#include <string>
+
 namespace poundfe
 {
   /// One direction's envelope: (e1, s1), (e2, s2), (e3, s3), strains
@@ -14,6 +17,13 @@ namespace poundfe
   {
     double s1 = 0, e1 = 0, s2 = 0, e2 = 0, s3 = 0, e3 = 0;
   };
+
+  /// The envelope of one side ("p" or "n") from Hysteretic's parameters by
+  /// OpenSees's names (s1p, e1p, ...). Two points (s3, e3 absent or both 0):
+  /// the second becomes the third and the middle one lies halfway, as
+  /// OpenSees's two-point constructor puts it.
+  HystereticEnvelope hysteretic_envelope(const std::map<std::string, double> &values,
+                                         const std::string                   &side);
 
   struct HystereticParameters
   {
