@@ -353,13 +353,7 @@ namespace poundfe
     ResultantMatrix k = this->sections[i]->tangent();
     for (int r = 0; r < k.rows(); ++r)
       {
-        // OpenSees inverts the tangent as it is (a Hysteretic past its
-        // softening envelope's end has 1e-9 of its modulus), and
-        // SectionAggregator takes a tangent of exactly 0 as a flexibility
-        // of 1e14; poundfe's own iteration raises a small one
-        const double floor =
-          opensees ? (k(r, r) == 0 ? 1e-14 : 0.0) :
-                     1e-8 * std::abs(initial_section_stiffness[i](r, r));
+        const double floor = 1e-8 * std::abs(initial_section_stiffness[i](r, r));
         if (std::abs(k(r, r)) < floor)
           k(r, r) = floor;
       }
