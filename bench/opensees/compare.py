@@ -62,6 +62,19 @@ CASES = {
     # curvature steps of 5e-16 at each peak, one Linear step of moment after
     # the first
     "dead_bands_section": ("dead_bands_section.tcl", [], 1e-9),
+    # a force-based RC cantilever reversed by 4e-16 (two steps, each inside
+    # the element's DBL_EPSILON band, together outside it) at each peak, one
+    # Linear step of load after each: the increment is the one since the
+    # element's last update, skipped or not (measured 1e-13)
+    "force_reversals": ("force_reversals.tcl", [], 1e-9),
+    # Hysteretic's dead band: a virgin step of 1e-17 and back to 0, and a
+    # reversal of 1e-17 at each peak, each exposed by one Linear step of load
+    # (measured 5e-19)
+    "hysteretic_dead_band": ("hysteretic_dead_band.tcl", [], 1e-12),
+    # failed steps reverted and retried: the elements updated at the
+    # committed state, Hysteretic's tangent left as the failed trial made it
+    # (the same failures and rows; measured 1.3e-13)
+    "failed_step_retry": ("failed_step_retry.tcl", [], 1e-9),
     # the fibre frame of dispBeamColumns, damping on the committed stiffness:
     # its beams' fibres sit at strains of ~1e-20 after gravity, inside
     # Concrete01's band (their tangent E_c, not 0, enters K_c)

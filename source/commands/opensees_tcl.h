@@ -49,6 +49,7 @@ namespace poundfe
     std::string json_numbers(const std::vector<double> &values);
     std::string json_tag(int tag);
     std::string json_tags(const std::vector<int> &tags);
+    std::string json_strings(const std::vector<std::string> &texts); // each quoted
 
     /// What a script has built and asked for so far.
     struct Session
@@ -88,6 +89,14 @@ namespace poundfe
       double                         open_torsion = 0; // its GJ (3D)
       /// Every command defined, and whether poundfe implements it.
       std::map<std::string, bool> commands;
+      /// What printModel writes of the section Fiber being filled: the
+      /// command that made each fibre (0 fiber, 1 patch, 2 layer) and each
+      /// command's sectionRepr object, by kind (opensees_tcl_sections.cc).
+      struct FibrePrint
+      {
+        std::vector<int>                        kinds;
+        std::array<std::vector<std::string>, 3> repr;
+      } fibre_print;
       /// What print writes of each element and section (by tag).
       std::map<int, Printed> printed_elements, printed_sections;
       /// Which of OpenSees's node vectors exist, since Node::Print writes
@@ -101,6 +110,11 @@ namespace poundfe
         std::set<int> displacements, velocities;
         bool          analysed = false, transient_analysed = false;
       } node_vectors;
+      /// The files `print -file` has made in this run (device, inode): a
+      /// later print appends to such a file in place; any other file at
+      /// the path, an earlier run's, is replaced (opensees_tcl_print.cc).
+      /// Kept through `wipe`, as OpenSees keeps appending after it.
+      std::set<std::pair<unsigned long long, unsigned long long>> print_files;
       std::map<int, std::vector<double>>                   reactions; // of `reactions`
       opensees::AnalysisCounts                             counts;    // of earlier analyses
       /// The -mat tags of each zeroLength and twoNodeLink (their gap rows).

@@ -429,20 +429,29 @@ namespace poundfe
           unsupported("element zeroLength option '" + option + "'");
       }
 
+      /// [[row 0], [row 1], [row 2]].
+      std::string
+      json_rows(const Eigen::Matrix3d &rows)
+      {
+        std::string matrix = "[";
+        for (int i = 0; i < 3; ++i)
+          matrix += (i ? ", " : "") + json_numbers({rows(i, 0), rows(i, 1), rows(i, 2)});
+        return matrix + "]";
+      }
+
       /// The transMatrix of ZeroLength and ZeroLengthSection::Print: the
       /// rows x, y = (x cross yp) cross x, x cross yp, each of unit length
       /// (their setUp).
       std::string
       trans_matrix(const std::array<double, 3> &x_given, const std::array<double, 3> &yp)
       {
-        using V         = Eigen::Vector3d;
-        const V x       = V(x_given[0], x_given[1], x_given[2]);
-        const V z       = x.cross(V(yp[0], yp[1], yp[2]));
-        const V rows[3] = {x.normalized(), z.cross(x).normalized(), z.normalized()};
-        std::string matrix = "[";
-        for (unsigned int i = 0; i < 3; ++i)
-          matrix += (i ? ", " : "") + json_numbers({rows[i][0], rows[i][1], rows[i][2]});
-        return matrix + "]";
+        using V   = Eigen::Vector3d;
+        const V x = V(x_given[0], x_given[1], x_given[2]);
+        const V z = x.cross(V(yp[0], yp[1], yp[2]));
+        Eigen::Matrix3d rows;
+        rows << x.normalized().transpose(), z.cross(x).normalized().transpose(),
+          z.normalized().transpose();
+        return json_rows(rows);
       }
 
       /// ZeroLength::Print's fields: its materials, the names of their
@@ -551,9 +560,35 @@ namespace poundfe
       /// yp1 yp2 yp3> <-pDelta ratios> <-shearDist ratios> <-doRayleigh> <-mass m>
       /// (OpenSees's order: -mat, then -dir, then the options). A bad word is
       /// named, as is the word where a missing value is due.
-      /// twoNodeLink; its tag and -mat tags.
+      /// TwoNodeLink::Print's fields (OPS_PRINT_PRINTMODEL_JSON).
+      std::vector<std::pair<std::string, std::string>>
+      two_node_link_fields(const opensees::Domain &d, const int tag,
+                           const opensees::TwoNodeLinkData &data)
+      {
+        static const char *const names[] = {"P", "Vy", "Vz", "T", "My", "Mz"};
+        std::vector<std::string> dofs;
+        for (const int direction : data.directions)
+          dofs.push_back(names[direction - 1]);
+        std::vector<double> shear{0.5, 0.5}, ratios(4, 0.0);
+        std::copy(data.shear_distance.begin(), data.shear_distance.end(), shear.begin());
+        std::copy(data.p_delta.begin(), data.p_delta.end(), ratios.end() - data.p_delta.size());
+        double                                           length = 0;
+        std::vector<std::pair<std::string, std::string>> fields{
+          {"materials", json_tags(data.materials)},
+          {"dof", json_strings(dofs)},
+          {"sDratios", json_numbers(shear)}};
+        if (!data.p_delta.empty())
+          fields.emplace_back("Mratios", json_numbers(ratios));
+        fields.insert(fields.end(),
+                      {{"transMatrix", json_rows(opensees::two_node_link_axes(d, tag, data, length))},
+                       {"addRayleigh", data.rayleigh ? "1" : "0"},
+                       {"mass", json_number(data.mass)}});
+        return fields;
+      }
+
+      /// twoNodeLink; its tag and -mat tags, its Print fields into `printed`.
       std::pair<int, std::vector<int>>
-      two_node_link(opensees::Domain &d, Words &w)
+      two_node_link(opensees::Domain &d, Words &w, Printed &printed)
       {
         const int                 tag = w.integer("the element's tag");
         const std::string         link = "twoNodeLink " + text_of(tag);
@@ -587,6 +622,7 @@ namespace poundfe
           throw ScriptError(link + ": -mass must not be negative");
         add_element(d, opensees::make_two_node_link(d, tag, data));
         add_node_masses(d, tag, data.nodes, 0.5 * data.mass); // TwoNodeLink::getMass
+        printed.fields = two_node_link_fields(d, tag, data);
         return {tag, data.materials};
       }
 
@@ -794,7 +830,6 @@ namespace poundfe
         const std::string type = w.word("the element's type");
         int               tag  = 0;
         Tcl_GetInt(nullptr, w.peek().c_str(), &tag);
-        // twoNodeLink: OpenSees's class name alone (doc/user-guide.md)
         Printed printed{type == "corotTruss" || type == "CorotTruss" ? "CorotTruss" :
                         type == "zeroLengthSection"                   ? "ZeroLengthSection" :
                                                                         "TwoNodeLink",
@@ -814,7 +849,7 @@ namespace poundfe
           corot_truss(d, w, printed);
         else if (type == "twoNodeLink")
           {
-            const auto [link_tag, materials] = two_node_link(d, w);
+            const auto [link_tag, materials] = two_node_link(d, w, printed);
             s.link_materials[link_tag]       = materials;
           }
         else if (type == "forceBeamColumn" || type == "nonlinearBeamColumn" ||
@@ -1034,7 +1069,8 @@ namespace poundfe
           }
         // OpenSees 3.8's laws skip strain changes below DBL_EPSILON: a
         // script's numbers are OpenSees's with them
-        if (type == "Concrete01" || type == "Concrete02" || type == "Steel02")
+        if (type == "Concrete01" || type == "Concrete02" || type == "Steel02" ||
+            type == "Hysteretic")
           p.values[opensees_dead_band_entry] = 1;
         // the law's own checks, now at the script's line
         if (type == "ViscousDamper")

@@ -7,18 +7,28 @@
 // the text of Print(s, 0): a node's lines as Node::Print's, an element in
 // poundfe's layout of the same fields as its JSON (doc/user-guide.md).
 // -file: JSON replaces the file, text is appended to it (as OpenSees's
-// OVERWRITE and APPEND), both through a temporary renamed into place.
+// OVERWRITE and APPEND). A run's first print to a path (and every JSON)
+// writes a new file through a temporary renamed into place; a later text
+// print to the file this run made appends to it in place (one write of the
+// text: n appends cost what they write, not n^2), so a run never mixes its
+// file with an earlier run's.
+#include <poundfe/base/exceptions.h>
 #include <poundfe/base/lean_assert.h>
+#include <poundfe/laws/hysteretic.h>
 #include <poundfe/laws/material_registry.h>
 #include <poundfe/output/atomic_file.h>
 
 #include "opensees_tcl.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <filesystem>
 #include <set>
-#include <fstream>
 #include <sstream>
 
 namespace poundfe
@@ -64,6 +74,12 @@ namespace poundfe
       return json_array(tags, json_tag);
     }
 
+    std::string
+    json_strings(const std::vector<std::string> &texts)
+    {
+      return json_array(texts, [](const std::string &text) { return "\"" + text + "\""; });
+    }
+
     namespace
     {
       using opensees::ScriptError;
@@ -82,6 +98,41 @@ namespace poundfe
             return m.default_value;
         Assert(false, dealii::ExcMessage("no parameter " + name + " of " + p.material));
         return 0;
+      }
+
+      /// HystereticMaterial's Print fields: each envelope point with the
+      /// slope up to it, as its setEnvelope computes them (the two-point
+      /// form's middle point halfway, as its constructor puts it), the
+      /// damage's energyA as the constructor sums it.
+      Fields
+      hysteretic_fields(const MaterialParameters &p)
+      {
+        const bool two_points = p.values.count("s3p") == 0;
+        Fields     fields;
+        double     energy = 0;
+        for (const char *side : {"p", "n"})
+          {
+            // the negative side as given (negative values), as OpenSees prints it
+            const HystereticEnvelope e = hysteretic_envelope(p.values, side);
+            const double m1 = e.s1, r1 = e.e1, m2 = e.s2, r2 = e.e2, m3 = e.s3, r3 = e.e3;
+            const double slopes[] = {m1 / r1, (m2 - m1) / (r2 - r1), (m3 - m2) / (r3 - r2)};
+            const double points[][2] = {{m1, r1}, {m2, r2}, {m3, r3}};
+            for (int i = 0; i < 3; ++i)
+              {
+                const std::string n = std::to_string(i + 1) + side;
+                fields.emplace_back("s" + n, json_number(points[i][0]));
+                fields.emplace_back("e" + n, json_number(points[i][1]));
+                fields.emplace_back("E" + n, json_number(slopes[i]));
+              }
+            energy += two_points ? r1 * m1 + (r3 - r1) * (m3 + m1) :
+                                   r1 * m1 + (r2 - r1) * (m2 + m1) + (r3 - r2) * (m3 + m2);
+          }
+        const auto value = [&](const char *name) { return json_number(parameter(p, name)); };
+        fields.insert(fields.end(), {{"pinchX", value("pinchX")}, {"pinchY", value("pinchY")},
+                                     {"damfc1", value("damage1")}, {"damfc2", value("damage2")},
+                                     {"energyA", json_number(0.5 * energy)},
+                                     {"beta", value("beta")}});
+        return fields;
       }
 
       /// OpenSees's class name and Print fields of a uniaxial material;
@@ -126,7 +177,9 @@ namespace poundfe
                    {"R0", value("R0")}, {"cR1", value("cR1")}, {"cR2", value("cR2")},
                    {"a1", value("a1")}, {"a2", value("a2")}, {"a3", value("a3")},
                    {"a4", value("a4")}, {"sigini", "0"}}};
-        return {type == "Hysteretic" ? "HystereticMaterial" : type, {}};
+        if (type == "Hysteretic")
+          return {"HystereticMaterial", hysteretic_fields(p)};
+        return {type, {}};
       }
 
       /// The same of Parallel, Series and MinMax (Parallel's factors as a
@@ -431,23 +484,83 @@ namespace poundfe
         objects_text(out, s, {"", false, false, true, {}});
       }
 
-      /// The text into the file, replacing it or after what it holds.
+      /// The device and inode of the file at `path`; nullopt when there is
+      /// none.
+      std::optional<std::pair<unsigned long long, unsigned long long>>
+      file_identity(const std::string &path)
+      {
+        struct stat status;
+        if (::stat(path.c_str(), &status) != 0)
+          return std::nullopt;
+        return std::pair<unsigned long long, unsigned long long>(status.st_dev, status.st_ino);
+      }
+
+      /// `text` after what the file holds, in one write(2).
       void
-      write_file(const std::string &file, const std::string &text, const bool append)
+      append_in_place(const std::string &path, const std::string &text)
+      {
+        const int descriptor = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+        if (descriptor < 0)
+          throw OutputError("open", path, errno);
+        std::size_t written = 0;
+        while (written < text.size())
+          {
+            const ssize_t n = ::write(descriptor, text.data() + written, text.size() - written);
+            if (n < 0 && errno == EINTR)
+              continue;
+            if (n < 0)
+              {
+                const int error = errno;
+                ::close(descriptor);
+                throw OutputError("write", path, error);
+              }
+            written += static_cast<std::size_t>(n);
+          }
+        if (::close(descriptor) != 0)
+          throw OutputError("close", path, errno);
+      }
+
+      /// The path a print writes for `file`: a symbolic link's target
+      /// (OpenSees writes through the link; a renamed temporary would
+      /// replace the link itself), followed link by link, also when the
+      /// last one dangles. A path that names a device or a FIFO, through
+      /// links or not, stays as it is: AtomicFile writes it in place.
+      std::string
+      print_target(const std::string &file)
+      {
+        namespace fs = std::filesystem;
+        std::error_code error;
+        const fs::file_status followed = fs::status(file, error);
+        if (fs::exists(followed) && !fs::is_regular_file(followed))
+          return file;
+        fs::path path = file;
+        for (int links = 0; links < 40 && fs::is_symlink(path, error); ++links) // ELOOP's 40
+          {
+            const fs::path target = fs::read_symlink(path, error);
+            if (error)
+              break;
+            path = target.is_relative() ? path.parent_path() / target : target;
+          }
+        return path.string();
+      }
+
+      /// The text into the file (through a link: its target): appended to
+      /// the file this run made there, else (and for JSON) a new file in its
+      /// place.
+      void
+      write_file(Session &s, const std::string &file, const std::string &text, const bool append)
       {
         const std::filesystem::path parent = std::filesystem::path(file).parent_path();
         if (!parent.empty() && !std::filesystem::is_directory(parent))
           throw ScriptError("cannot write '" + file + "': the directory '" + parent.string() +
                             "' does not exist");
-        std::string old;
-        if (append && std::filesystem::is_regular_file(file))
-          {
-            std::ifstream      in(file, std::ios::binary);
-            std::ostringstream all;
-            all << in.rdbuf();
-            old = all.str();
-          }
-        write_file_atomically(file, old + text);
+        const std::string target   = print_target(file);
+        const auto        existing = file_identity(target);
+        if (append && existing && s.print_files.count(*existing) > 0)
+          return append_in_place(target, text);
+        write_file_atomically(target, text);
+        if (const auto made = file_identity(target))
+          s.print_files.insert(*made);
       }
 
       void
@@ -464,7 +577,7 @@ namespace poundfe
         if (r.file.empty())
           s.warnings << out.str();
         else
-          write_file(r.file, out.str(), !r.json);
+          write_file(s, r.file, out.str(), !r.json);
       }
     } // namespace
 

@@ -62,13 +62,53 @@ namespace poundfe
       }
 
       /// In 3D the section's torsional rigidity GJ (FiberSection3d's -GJ).
+      /// FiberSection2d/3d::Print's fields: its fibres in OpenSees's order
+      /// (the fiber commands', then the patches', then the layers'), each
+      /// at (y, z) (z 0 in the plane) with its area and material, and the
+      /// sectionRepr of the commands (FiberSectionRepr::Print: patches,
+      /// layers, then fibres at (-y, z), as UniaxialFiber2d/3d keep them).
+      Printed
+      fibre_section_printed(Session &s, const FibreGeometry &geometry, const double torsion)
+      {
+        const bool space = s.domain.ndm == 3;
+        Printed    printed{space ? "FiberSection3d" : "FiberSection2d", {}};
+        if (space)
+          printed.fields.emplace_back("torsion", json_number(torsion));
+        const auto lines = [](const std::vector<std::string> &objects) {
+          std::string text = "[\n";
+          for (std::size_t i = 0; i < objects.size(); ++i)
+            text += (i ? ",\n" : "") + objects[i];
+          return text + "\n\t\t\t]";
+        };
+        const Session::FibrePrint &record = s.fibre_print;
+        std::vector<std::string>   fibres;
+        for (const int kind : {0, 1, 2})
+          for (std::size_t i = 0; i < geometry.fibres.size(); ++i)
+            if (record.kinds.at(i) == kind)
+              {
+                const Fibre &f = geometry.fibres[i];
+                fibres.push_back("\t\t\t\t{\"coord\": " + json_numbers({f.y, space ? f.z : 0.0}) +
+                                 ", \"area\": " + json_number(f.area) + ", \"material\": \"" +
+                                 geometry.materials[f.material].name + "\"}");
+              }
+        std::vector<std::string> repr = record.repr[1];
+        repr.insert(repr.end(), record.repr[2].begin(), record.repr[2].end());
+        repr.insert(repr.end(), record.repr[0].begin(), record.repr[0].end());
+        printed.fields.emplace_back("fibers", lines(fibres));
+        printed.fields.emplace_back("sectionRepr", lines(repr));
+        return printed;
+      }
+
       void
-      add_fibre_section(opensees::Domain &d, const int tag, const FibreGeometry &geometry,
+      add_fibre_section(Session &s, const int tag, const FibreGeometry &geometry,
                         const double torsion)
       {
+        opensees::Domain &d = s.domain;
         if (geometry.fibres.empty())
           throw ScriptError("section Fiber " + std::to_string(tag) + " has no fibre");
         add_section(d, tag, std::make_shared<FibreSection>(geometry, d.ndm == 3 ? 4 : 2, torsion));
+        s.printed_sections[tag] = fibre_section_printed(s, geometry, torsion);
+        s.fibre_print           = Session::FibrePrint();
       }
 
       void
@@ -89,6 +129,7 @@ namespace poundfe
             if (d.sections.count(tag))
               throw ScriptError("section " + std::to_string(tag) + " exists already");
             s.open_fibres  = std::make_shared<FibreGeometry>();
+            s.fibre_print  = Session::FibrePrint();
             s.open_section = tag;
             s.open_torsion = torsion;
             s.fibres       = s.open_fibres.get();
@@ -98,12 +139,13 @@ namespace poundfe
         if (!w.done())
           unsupported("section Fiber option '" + w.peek() + "'");
         FibreGeometry geometry;
+        s.fibre_print  = Session::FibrePrint();
         s.fibres       = &geometry;
         const int code = Tcl_Eval(w.interp, body.c_str());
         s.fibres       = nullptr;
         if (code != TCL_OK)
           throw ScriptError(Tcl_GetStringResult(w.interp));
-        add_fibre_section(d, tag, geometry, torsion);
+        add_fibre_section(s, tag, geometry, torsion);
       }
 
       /// Aggregator: mat dof pairs (P, Mz), then -section base.
@@ -126,9 +168,12 @@ namespace poundfe
         return it->second;
       }
 
-      void
+      /// section Aggregator; its Print fields (SectionAggregator's: the
+      /// -section, the materials and their dof).
+      Printed
       aggregator_section(opensees::Domain &d, Words &w, const int tag)
       {
+        Printed printed{"SectionAggregator", {}};
         std::vector<std::pair<int, std::string>> laws;
         while (!w.done() && w.peek() != "-section")
           {
@@ -145,6 +190,7 @@ namespace poundfe
           {
             w.word("-section");
             const int  base = w.integer("the base section");
+            printed.fields.emplace_back("section", json_tag(base));
             const auto it   = d.sections.find(base);
             if (it == d.sections.end())
               throw ScriptError("section " + std::to_string(base) + " does not exist");
@@ -186,6 +232,16 @@ namespace poundfe
             unsupported("section Aggregator without " + names[r] +
                         " and without an Elastic -section");
         add_section(d, tag, section);
+        std::vector<int>         tags;
+        std::vector<std::string> dofs;
+        for (const auto &[mat, dof] : laws)
+          {
+            tags.push_back(mat);
+            dofs.push_back(dof);
+          }
+        printed.fields.emplace_back("materials", json_tags(tags));
+        printed.fields.emplace_back("dof", json_strings(dofs));
+        return printed;
       }
 
       void
@@ -223,12 +279,10 @@ namespace poundfe
         else if (type == "Fiber" || type == "fiberSec")
           {
             fibre_section(s, d, w, tag);
-            s.printed_sections[tag] = {d.ndm == 3 ? "FiberSection3d" : "FiberSection2d", {}};
           }
         else if (type == "Aggregator")
           {
-            aggregator_section(d, w, tag);
-            s.printed_sections[tag] = {"SectionAggregator", {}};
+            s.printed_sections[tag] = aggregator_section(d, w, tag);
           }
         else
           unsupported("section " + type);
@@ -267,27 +321,52 @@ namespace poundfe
         return p;
       }
 
+      /// The fibres a command has just added, and its sectionRepr object
+      /// (kind: 0 fiber, 1 patch, 2 layer; FibrePrint).
+      void
+      note_fibres(Session &s, const FibreGeometry &g, const int kind, const std::string &fields)
+      {
+        s.fibre_print.kinds.resize(g.fibres.size(), kind);
+        s.fibre_print.repr[kind].push_back("\t\t\t\t{" + fields + "}");
+      }
+
+      std::string
+      repr_point(const SectionPoint &p)
+      {
+        return json_numbers({p.y, p.z});
+      }
+
       void
       patch(Session &s, Words &w)
       {
         FibreGeometry    &g    = open_section(s, w);
         const std::string type = w.word("the patch's type");
-        const unsigned int m   = fibre_material(s, w.integer("the material's tag"));
+        const int          tag = w.integer("the material's tag");
+        const unsigned int m   = fibre_material(s, tag);
         const int          n1 = w.integer("the first number of cells"),
                   n2          = w.integer("the second number of cells");
         if (n1 < 1 || n2 < 1)
           throw ScriptError("the numbers of cells must be >= 1");
-        if (type == "rect" || type == "rectangular")
-          {
-            const SectionPoint i = point(w), j = point(w);
-            add_rect_patch(g, m, n1, n2, i, j);
-          }
-        else if (type == "quad" || type == "quadr")
+        // QuadPatch::Print and CircPatch::Print (a rect is a quad there)
+        const std::string head = "\"material\": " + std::to_string(tag) + ", \"divisions\": ";
+        std::string       repr;
+        if (type == "rect" || type == "rectangular" || type == "quad" || type == "quadr")
           {
             std::array<SectionPoint, 4> v;
-            for (SectionPoint &p : v)
-              p = point(w);
-            add_quad_patch(g, m, n1, n2, v);
+            const bool                  rect = type == "rect" || type == "rectangular";
+            for (unsigned int k = 0; k < (rect ? 2u : 4u); ++k)
+              v[rect ? 2 * k : k] = point(w);
+            if (rect)
+              {
+                v[1] = {v[2].y, v[0].z};
+                v[3] = {v[0].y, v[2].z};
+                add_rect_patch(g, m, n1, n2, v[0], v[2]);
+              }
+            else
+              add_quad_patch(g, m, n1, n2, v);
+            repr = "\"type\": \"quad\", " + head + json_numbers({1.0 * n1, 1.0 * n2}) +
+                   ", \"vertices\": [" + repr_point(v[0]) + ", " + repr_point(v[1]) + ", " +
+                   repr_point(v[2]) + ", " + repr_point(v[3]) + "]";
           }
         else if (type == "circ")
           {
@@ -300,11 +379,15 @@ namespace poundfe
                 a1 = w.real("the end angle");
               }
             add_circ_patch(g, m, n1, n2, c, r_i, r_e, a0, a1);
+            repr = "\"type\": \"circ\", " + head + json_numbers({1.0 * n2, 1.0 * n1}) +
+                   ", \"center\": " + repr_point(c) + ", \"radii\": " + json_numbers({r_i, r_e}) +
+                   ", \"angles\": " + json_numbers({a0, a1});
           }
         else
           unsupported("patch " + type);
         if (!w.done())
           unsupported("patch " + type + " option '" + w.peek() + "'");
+        note_fibres(s, g, 1, repr);
       }
 
       void
@@ -312,15 +395,24 @@ namespace poundfe
       {
         FibreGeometry     &g    = open_section(s, w);
         const std::string  type = w.word("the layer's type");
-        const unsigned int m    = fibre_material(s, w.integer("the material's tag"));
+        const int          tag  = w.integer("the material's tag");
+        const unsigned int m    = fibre_material(s, tag);
         const int          n    = w.integer("the number of bars");
         const double       area = w.real("the bar's area");
         if (n < 1)
           throw ScriptError("the number of bars must be >= 1");
+        // StraightReinfLayer::Print and CircReinfLayer::Print (whose stray
+        // comma before "area" OpenSees 3.8 writes is left out)
+        const std::string head = "\"material\": " + std::to_string(tag) +
+                                 ", \"area\": " + json_number(area) +
+                                 ", \"nReinfBars\": " + std::to_string(n) + ", ";
         if (type == "straight")
           {
             const SectionPoint a = point(w), b = point(w);
             add_straight_layer(g, m, n, area, a, b);
+            note_fibres(s, g, 2,
+                        "\"type\": \"layerStraight\", " + head + "\"start\": " + repr_point(a) +
+                          ", \"end\": " + repr_point(b));
           }
         else if (type == "circ")
           {
@@ -333,6 +425,12 @@ namespace poundfe
                 a1 = w.real("the end angle");
               }
             add_circ_layer(g, m, n, area, c, r, a0, a1);
+            // CircReinfLayer's constructor: a full circle ends a bar short of it
+            const double end = a1 - a0 >= 360 ? a0 + 360.0 - 360.0 / n : a1;
+            note_fibres(s, g, 2,
+                        "\"type\": \"layerCirc\", " + head + "\"center\": " + repr_point(c) +
+                          ", \"radius\": " + json_number(r) + ", \"angles\": " +
+                          json_numbers({a0, end}));
           }
         else
           unsupported("layer " + type);
@@ -346,9 +444,15 @@ namespace poundfe
         FibreGeometry     &g    = open_section(s, w);
         const SectionPoint p    = point(w);
         const double       area = w.real("the area");
-        add_fibre(g, fibre_material(s, w.integer("the material's tag")), p, area);
+        const int          tag  = w.integer("the material's tag");
+        add_fibre(g, fibre_material(s, tag), p, area);
         if (!w.done())
           unsupported("fiber option '" + w.peek() + "'");
+        // UniaxialFiber2d/3d::Print: they keep -y
+        note_fibres(s, g, 0,
+                    "\"type\": \"fiber\", \"material\": " + std::to_string(tag) +
+                      ", \"area\": " + json_number(area) + ", \"coord\": " +
+                      json_numbers({-p.y, s.domain.ndm == 3 ? p.z : 0.0}));
       }
 
       void
@@ -510,7 +614,7 @@ namespace poundfe
       const std::shared_ptr<FibreGeometry> geometry = std::move(s.open_fibres);
       s.open_fibres.reset();
       s.fibres = nullptr;
-      add_fibre_section(s.domain, s.open_section, *geometry, s.open_torsion);
+      add_fibre_section(s, s.open_section, *geometry, s.open_torsion);
     }
 
     void

@@ -446,10 +446,16 @@ namespace poundfe
   ForceBeamColumn<dim>::opensees_state(const BasicVector &v)
   {
     iterations = pieces = 0;
+    // current.v: the last trial's v, skipped or not, so that dv is the
+    // increment since the last update (OpenSees: getBasicIncrDeltaDisp, and
+    // vin = v - dv), not since the last one the element took
     BasicVector to_do = v - current.v;
     // a loaded member iterates at every update (OpenSees: numEleLoads > 0)
     if (initialised && to_do.norm() <= std::numeric_limits<double>::epsilon() && !this->has_load)
-      return true;
+      {
+        current.v = v;
+        return true;
+      }
     BasicVector  dv           = to_do;
     unsigned int subdivisions = 1;
     while (subdivisions <= opensees_controls.max_subdivisions)

@@ -19,6 +19,10 @@
 //   point -> (eps_max, s(eps_max)).
 //   A negative increment is the positive one of the mirrored state.
 //   Tangents of zero-stress branches are 1e-9 of a modulus, as in OpenSees.
+//   Under `poundfe opensees`, OpenSees 3.8's dead band (in_dead_band): a
+//   strain change below DBL_EPSILON from the committed strain keeps the
+//   committed history with the last trial's stress and tangent (the tangent
+//   also across a revert, as OpenSees's revertToLastCommit leaves it).
 // Sources: OpenSees HystereticMaterial (M. Scott, F. Filippou), whose
 // behaviour this reproduces, stress, tangent and history alike; its rules go
 // back to Y.J. Park, A.M. Reinhorn & S.K. Kunnath (1987), IDARC, NCEER-87-0008.
@@ -26,6 +30,7 @@
 #include <poundfe/laws/hysteretic.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace poundfe
@@ -134,8 +139,9 @@ namespace poundfe
     }
   } // namespace
 
-  Hysteretic::Hysteretic(const HystereticParameters &parameters)
+  Hysteretic::Hysteretic(const HystereticParameters &parameters, const bool opensees_dead_band)
     : p(parameters)
+    , opensees_dead_band(opensees_dead_band)
   {
     const HystereticEnvelope negative = hysteretic_flipped(p.negative);
     check_hysteretic_envelope(p.positive, "p");
@@ -158,16 +164,29 @@ namespace poundfe
   Hysteretic::virgin() const
   {
     HystereticState s;
-    s.tangent = initial_stiffness();
+    s.tangent        = initial_stiffness();
+    opensees_tangent = s.tangent; // revertToStart sets Ttangent = E1p
     return s;
   }
 
   HystereticState
   Hysteretic::respond(const HystereticState &from, const double strain) const
   {
-    const double d_strain = strain - from.strain;
+    const double    d_strain = strain - from.strain;
+    HystereticState s;
+    if (in_dead_band(from, strain, s))
+      return s;
     if ((from.loading == 0 && strain == 0) || d_strain == 0)
       return from;
+    s                = respond_outside_band(from, strain);
+    opensees_tangent = s.tangent;
+    return s;
+  }
+
+  HystereticState
+  Hysteretic::respond_outside_band(const HystereticState &from, const double strain) const
+  {
+    const double    d_strain = strain - from.strain;
     HystereticState s;
     if (strain >= from.max_strain) // on the positive envelope
       {
@@ -192,6 +211,32 @@ namespace poundfe
     s.strain = strain;
     s.energy = from.energy + 0.5 * (from.stress + s.stress) * d_strain;
     return s;
+  }
+
+  bool
+  Hysteretic::in_dead_band(const HystereticState &from, const double strain,
+                           HystereticState &s) const
+  {
+    if (!opensees_dead_band)
+      return false;
+    // this->trial is OpenSees's T* (set_trial replaces it only when respond
+    // returns; after a commit or a revert it is the committed state), except
+    // for the tangent: OpenSees's revertToLastCommit leaves Ttangent as the
+    // last trial made it, and so does its band (opensees_tangent)
+    if (trial.loading == 0 && strain == 0)
+      {
+        s         = trial;
+        s.tangent = opensees_tangent;
+        return true;
+      }
+    if (!(std::abs(strain - from.strain) < DBL_EPSILON))
+      return false;
+    s         = from;
+    s.strain  = strain;
+    s.stress  = trial.stress;
+    s.tangent = opensees_tangent;
+    s.loading = trial.loading;
+    return true;
   }
 
   HystereticState
@@ -261,8 +306,39 @@ namespace poundfe
     return s;
   }
 
+  HystereticEnvelope
+  hysteretic_envelope(const std::map<std::string, double> &values, const std::string &side)
+  {
+    const auto at = [&](const char *name) {
+      const auto it = values.find(name + side);
+      return it == values.end() ? 0.0 : it->second;
+    };
+    const double s1 = at("s1"), e1 = at("e1"), s2 = at("s2"), e2 = at("e2");
+    const double s3 = at("s3"), e3 = at("e3");
+    if (s3 == 0 && e3 == 0) // two points: OpenSees puts the middle one halfway
+      return HystereticEnvelope{s1, e1, 0.5 * (s1 + s2), 0.5 * (e1 + e2), s2, e2};
+    return HystereticEnvelope{s1, e1, s2, e2, s3, e3};
+  }
+
   namespace materials
   {
+    namespace
+    {
+      std::unique_ptr<UniaxialLaw>
+      make_hysteretic(const std::map<std::string, double> &v, const bool opensees_dead_band)
+      {
+        HystereticParameters q;
+        q.positive = hysteretic_envelope(v, "p");
+        q.negative = hysteretic_envelope(v, "n");
+        q.pinchX   = v.at("pinchX");
+        q.pinchY   = v.at("pinchY");
+        q.damage1  = v.at("damage1");
+        q.damage2  = v.at("damage2");
+        q.beta     = v.at("beta");
+        return std::make_unique<Hysteretic>(q, opensees_dead_band);
+      }
+    } // namespace
+
     MaterialType
     hysteretic()
     {
@@ -282,25 +358,13 @@ namespace poundfe
       return {"Hysteretic",
               "trilinear envelopes with pinching and damage (OpenSees Hysteretic)",
               parameters,
-              [](const std::map<std::string, double> &v) -> std::unique_ptr<UniaxialLaw> {
-                auto envelope = [&](const std::string &side) {
-                  const double s1 = v.at("s1" + side), e1 = v.at("e1" + side);
-                  const double s2 = v.at("s2" + side), e2 = v.at("e2" + side);
-                  const double s3 = v.at("s3" + side), e3 = v.at("e3" + side);
-                  if (s3 == 0 && e3 == 0) // two points: OpenSees puts the middle one halfway
-                    return HystereticEnvelope{s1, e1, 0.5 * (s1 + s2), 0.5 * (e1 + e2), s2, e2};
-                  return HystereticEnvelope{s1, e1, s2, e2, s3, e3};
-                };
-                HystereticParameters q;
-                q.positive = envelope("p");
-                q.negative = envelope("n");
-                q.pinchX   = v.at("pinchX");
-                q.pinchY   = v.at("pinchY");
-                q.damage1  = v.at("damage1");
-                q.damage2  = v.at("damage2");
-                q.beta     = v.at("beta");
-                return std::make_unique<Hysteretic>(q);
-              }};
+              [](const std::map<std::string, double> &v) { return make_hysteretic(v, false); }};
+    }
+
+    std::unique_ptr<UniaxialLaw>
+    hysteretic_with_dead_band(const std::map<std::string, double> &values)
+    {
+      return make_hysteretic(values, true);
     }
   } // namespace materials
 } // namespace poundfe

@@ -31,6 +31,7 @@ namespace poundfe
     std::unique_ptr<UniaxialLaw> concrete01_with_dead_band(const std::map<std::string, double> &);
     std::unique_ptr<UniaxialLaw> concrete02_with_dead_band(const std::map<std::string, double> &);
     std::unique_ptr<UniaxialLaw> steel02_with_dead_band(const std::map<std::string, double> &);
+    std::unique_ptr<UniaxialLaw> hysteretic_with_dead_band(const std::map<std::string, double> &);
   } // namespace materials
 
   namespace
@@ -115,6 +116,8 @@ namespace poundfe
       return materials::concrete02_with_dead_band(values);
     if (name == "Steel02")
       return materials::steel02_with_dead_band(values);
+    if (name == "Hysteretic")
+      return materials::hysteretic_with_dead_band(values);
     return nullptr;
   }
 

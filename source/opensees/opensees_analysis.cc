@@ -1405,8 +1405,7 @@ namespace poundfe
       const bool located = converged && event && events->changed();
       if (!converged || located)
         {
-          for (auto &[tag, element] : domain.elements)
-            element->revert();
+          revert_to_last_commit();
           if (located)
             *event = true;
           else
@@ -1440,6 +1439,25 @@ namespace poundfe
         }
       domain.time_step = script_dt;
       return done;
+    }
+
+    void
+    Analysis::revert_to_last_commit()
+    {
+      // OpenSees's Domain::revertToLastCommit: every element reverts, the
+      // loads go back to the committed time, then update(): every element's
+      // state at the committed displacements. A force-based member iterates
+      // there once more with its sections held (its revert leaves initialFlag
+      // 0), so the next step starts from its q corrected to compatibility.
+      for (auto &[tag, element] : domain.elements)
+        element->revert();
+      const double failed_time = trial_time; // for the caller's message
+      gather();
+      if (beam_loads_taken)
+        domain.apply_element_loads(trial_time);
+      std::string ignored; // OpenSees goes on when this update fails
+      set_trial(ignored);
+      trial_time = failed_time;
     }
 
     int

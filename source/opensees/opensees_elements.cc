@@ -899,6 +899,46 @@ namespace poundfe
       return element;
     }
 
+    /// TwoNodeLink::setUp: x along the nodes (or -orient's), yp global Y
+    /// (global -X or X when x is along +Y or -Y; or -orient's), in 2D
+    /// y across x in the plane; the rows of direction cosines x, y, z.
+    Eigen::Matrix3d
+    two_node_link_axes(const Domain &domain, const int tag, const TwoNodeLinkData &data,
+                       double &L)
+    {
+      const auto &a = domain.node(data.nodes[0]).coordinates,
+                 &b = domain.node(data.nodes[1]).coordinates;
+      Eigen::Vector3d x = Eigen::Vector3d::Zero(), y(0, 1, 0);
+      for (unsigned int i = 0; i < domain.ndm; ++i)
+        x[i] = b[i] - a[i];
+      L = x.norm();
+      if (L > 0 && x[0] == 0.0 && x[2] == 0.0)
+        y = Eigen::Vector3d(x[1] > 0 ? -1 : 1, 0, 0);
+      const std::vector<double> &o = data.orient;
+      if (o.size() == 6 || (o.size() == 3 && domain.ndm < 3))
+        x = Eigen::Vector3d(o[0], o[1], o[2]);
+      if (o.size() == 6 || (o.size() == 3 && domain.ndm == 3))
+        y = Eigen::Vector3d(o[o.size() - 3], o[o.size() - 2], o[o.size() - 1]);
+      if (domain.ndm == 1)
+        x = Eigen::Vector3d(1, 0, 0), y = Eigen::Vector3d(0, 1, 0);
+      if (!(x.norm() > 0))
+        throw ScriptError("twoNodeLink " + std::to_string(tag) +
+                          ": its nodes coincide; -orient must give its local x");
+      x /= x.norm();
+      if (domain.ndm == 2)
+        y = Eigen::Vector3d(-x[1], x[0], 0);
+      const Eigen::Vector3d z = x.cross(y);
+      y                       = z.cross(x);
+      if (!(y.norm() > 0) || !(z.norm() > 0))
+        throw ScriptError("twoNodeLink " + std::to_string(tag) +
+                          ": -orient vectors are zero or parallel");
+      Eigen::Matrix3d trans;
+      trans.row(0) = x / x.norm();
+      trans.row(1) = y / y.norm();
+      trans.row(2) = z / z.norm();
+      return trans;
+    }
+
     namespace
     {
       LinkKind
@@ -914,45 +954,6 @@ namespace poundfe
         throw ScriptError("twoNodeLink " + std::to_string(tag) + ": -ndm " +
                           std::to_string(ndm) + " -ndf " + std::to_string(ndf) +
                           " is not a model OpenSees's twoNodeLink takes");
-      }
-
-      /// TwoNodeLink::setUp: x along the nodes (or -orient's), yp global Y
-      /// (global -X or X when x is along +Y or -Y; or -orient's), in 2D
-      /// y across x in the plane; the rows of direction cosines x, y, z.
-      Eigen::Matrix3d
-      link_axes(const Domain &domain, const int tag, const TwoNodeLinkData &data, double &L)
-      {
-        const auto &a = domain.node(data.nodes[0]).coordinates,
-                   &b = domain.node(data.nodes[1]).coordinates;
-        Eigen::Vector3d x = Eigen::Vector3d::Zero(), y(0, 1, 0);
-        for (unsigned int i = 0; i < domain.ndm; ++i)
-          x[i] = b[i] - a[i];
-        L = x.norm();
-        if (L > 0 && x[0] == 0.0 && x[2] == 0.0)
-          y = Eigen::Vector3d(x[1] > 0 ? -1 : 1, 0, 0);
-        const std::vector<double> &o = data.orient;
-        if (o.size() == 6 || (o.size() == 3 && domain.ndm < 3))
-          x = Eigen::Vector3d(o[0], o[1], o[2]);
-        if (o.size() == 6 || (o.size() == 3 && domain.ndm == 3))
-          y = Eigen::Vector3d(o[o.size() - 3], o[o.size() - 2], o[o.size() - 1]);
-        if (domain.ndm == 1)
-          x = Eigen::Vector3d(1, 0, 0), y = Eigen::Vector3d(0, 1, 0);
-        if (!(x.norm() > 0))
-          throw ScriptError("twoNodeLink " + std::to_string(tag) +
-                            ": its nodes coincide; -orient must give its local x");
-        x /= x.norm();
-        if (domain.ndm == 2)
-          y = Eigen::Vector3d(-x[1], x[0], 0);
-        const Eigen::Vector3d z = x.cross(y);
-        y                       = z.cross(x);
-        if (!(y.norm() > 0) || !(z.norm() > 0))
-          throw ScriptError("twoNodeLink " + std::to_string(tag) +
-                            ": -orient vectors are zero or parallel");
-        Eigen::Matrix3d trans;
-        trans.row(0) = x / x.norm();
-        trans.row(1) = y / y.norm();
-        trans.row(2) = z / z.norm();
-        return trans;
       }
 
       /// TwoNodeLink::setTranGlobalLocal: the direction cosines on each
@@ -1014,7 +1015,7 @@ namespace poundfe
       const LinkKind    kind = link_kind(domain, tag);
       const int         n_dofs = 2 * domain.ndf;
       LinkPDelta        p{kind, 0.0, {}, {{0, 0, 0, 0}}};
-      const Eigen::Matrix3d trans = link_axes(domain, tag, data, p.L);
+      const Eigen::Matrix3d trans = two_node_link_axes(domain, tag, data, p.L);
       for (const int d : data.directions)
         {
           if (d < 1 || d > static_cast<int>(domain.ndf))

@@ -839,12 +839,15 @@ step_fails "a load of 2e308" "element 1: its forces are not finite"
 #    comparison fails on a value changed by one digit; a second
 #    printModel -JSON replaces the file, print appends; the element text;
 #    -file into a missing directory and a node that does not exist: one
-#    line naming the file and line, exit 1, nothing written.
+#    line naming the file and line, exit 1, nothing written; 2000 appends
+#    are OpenSees's file and write what they add.
 mkdir -p "$work/print"
 "$poundfe" opensees "$corpus/print_model.tcl" "$work/print" > "$work/print/log" 2>&1 \
   || { cat "$work/print/log"; fail "print_model: poundfe opensees exited $?"; }
 "$poundfe" opensees "$corpus/print_model_rayleigh.tcl" "$work/print" > "$work/print/log" 2>&1 \
   || { cat "$work/print/log"; fail "print_model_rayleigh: poundfe opensees exited $?"; }
+"$poundfe" opensees "$corpus/print_model_links.tcl" "$work/print" > "$work/print/log" 2>&1 \
+  || { cat "$work/print/log"; fail "print_model_links: poundfe opensees exited $?"; }
 grep -q 'Rayleigh Forces: 0.0473154 ' "$work/print/nodes_rayleigh.txt" \
   || fail "print_model_rayleigh: node 2's Rayleigh force is not -alphaM m v"
 "$python" "$corpus/print_model.py" "$work/print" "$corpus/print_model_opensees" \
@@ -884,4 +887,49 @@ for case in "printModel -JSON -file $work/print/none/m.json|the directory '$work
     || { cat "$work/print/bad.err"; fail "${case%%|*}: exit $status, not one line naming it"; }
 done
 [ ! -e "$work/print/none" ] && [ ! -e "$work/print/n.txt" ] || fail "print: a refused print wrote"
+# 2000 appends give OpenSees 3.8's file (its file of 2 appends, 1000 times)
+# and cost what they write: the process's bytes written (wchar) are the
+# file's size, and twice those of 1000 appends (each append rewriting the
+# file wrote 33 MB for 1000 and 132 MB for 2000); a second run replaces
+# the first run's file.
+appends() {
+  "$poundfe" opensees "$corpus/print_appends.tcl" "$work/print" "$1" 2> /dev/null \
+    | sed -n 's/^appends [0-9]* written \([0-9]*\)$/\1/p'
+}
+written_1000=$(appends 1000)
+written_2000=$(appends 2000)
+size=$(wc -c < "$work/print/appends.txt")
+for i in $(seq 1000); do cat "$corpus/print_model_opensees/appends_2.txt"; done > "$work/print/appends_opensees.txt"
+cmp -s "$work/print/appends.txt" "$work/print/appends_opensees.txt" \
+  || fail "print: 2000 appends are not OpenSees's file"
+[ -n "$written_1000" ] && [ "$written_2000" -le $((size + size / 100)) ] \
+  && [ "$written_2000" -le $((2 * written_1000 + written_1000 / 100)) ] \
+  || fail "print: 2000 appends wrote $written_2000 bytes for a file of $size (1000: $written_1000)"
+# print -file through a symbolic link writes its target, as OpenSees does
+# (a renamed temporary would replace the link); a dangling link's target is
+# made; a FIFO is written in place, each print as the reader gets it
+mkdir -p "$work/links/sub"
+printf 'set d [lindex $argv 0]\nmodel basic -ndm 2 -ndf 3\nnode 1 0.0 0.0\nnode 2 1.0 0.0\nprint -file $d/%s -node 2\nprint -file $d/%s -node 1\nprintModel -JSON -file $d/%s\n' \
+  link.txt link.txt json.link > "$work/links/links.tcl"
+echo "an earlier run" > "$work/links/real.txt"
+ln -s real.txt "$work/links/link.txt"
+ln -s sub/made.json "$work/links/json.link"
+"$poundfe" opensees "$work/links/links.tcl" "$work/links" > "$work/links/out.txt" 2>&1 \
+  || { cat "$work/links/out.txt"; fail "print through a link"; }
+[ -L "$work/links/link.txt" ] && [ -L "$work/links/json.link" ] || fail "print replaced a link: $(ls -l "$work/links")"
+[ "$(grep -c 'Node: ' "$work/links/real.txt")" = 2 ] && ! grep -q "earlier run" "$work/links/real.txt" \
+  || fail "print through a link: the target holds $(cat "$work/links/real.txt")"
+grep -q StructuralAnalysisModel "$work/links/sub/made.json" || fail "printModel through a dangling link"
+sed 's/link.txt/fifo/g; s/json.link/fifo/' "$work/links/links.tcl" > "$work/links/fifo.tcl"
+mkfifo "$work/links/fifo" || fail "mkfifo"
+# each print opens and closes the FIFO: one reader each
+(for i in 1 2 3; do timeout 60 cat "$work/links/fifo"; done > "$work/links/read.txt") &
+reader=$!
+timeout 60 "$poundfe" opensees "$work/links/fifo.tcl" "$work/links" > "$work/links/out.txt" 2>&1
+status=$?
+[ -p "$work/links/fifo" ] || { kill $reader 2>/dev/null; fail "print replaced the FIFO"; }
+wait $reader
+[ $status = 0 ] && [ "$(grep -c 'Node: ' "$work/links/read.txt")" = 2 ] \
+  && grep -q StructuralAnalysisModel "$work/links/read.txt" && [ ! -e "$work/links/fifo.tmp" ] \
+  || { cat "$work/links/out.txt"; fail "print to a FIFO: exit $status, read $(wc -c < "$work/links/read.txt") bytes"; }
 echo "opensees: ok"

@@ -858,3 +858,46 @@ BOOST_AUTO_TEST_CASE(opensees_dead_bands_only_when_asked)
   BOOST_TEST(steel->tangent() == 2e11);
   BOOST_TEST(plain_steel->force() == 2e11 * 1e-15, boost::test_tools::tolerance(1e-9));
 }
+
+BOOST_AUTO_TEST_CASE(hysteretic_opensees_dead_band_only_when_asked)
+{
+  // OpenSees 3.8's HystereticMaterial::setTrialStrain: a change below
+  // DBL_EPSILON from the committed strain keeps the committed history with
+  // the last trial's stress and tangent; poundfe's law without the entry
+  // takes it as a step
+  Hysteretic banded(trilinear(), true), plain(trilinear());
+  for (Hysteretic *h : {&banded, &plain})
+    {
+      BOOST_REQUIRE(h->set_trial(0.02, 0)); // on the hardening branch
+      h->commit();
+    }
+  const double hardening = banded.tangent(), stress = banded.force();
+  BOOST_REQUIRE(banded.set_trial(0.02 - 1e-17, 0) && plain.set_trial(0.02 - 1e-17, 0));
+  BOOST_TEST(banded.tangent() == hardening);
+  BOOST_TEST(banded.force() == stress);
+  BOOST_TEST(plain.tangent() > 2 * hardening); // unloading
+  // the last trial's stress and tangent, not the committed ones
+  BOOST_REQUIRE(banded.set_trial(0.015, 0));
+  const double unloaded = banded.force(), unloading = banded.tangent();
+  BOOST_REQUIRE(banded.set_trial(0.02 - 1e-17, 0));
+  BOOST_TEST(banded.force() == unloaded);
+  BOOST_TEST(banded.tangent() == unloading);
+  banded.revert();
+  BOOST_REQUIRE(banded.set_trial(0.02 - 1e-17, 0));
+  BOOST_TEST(banded.force() == stress);
+  // but the tangent the reverted trial left: OpenSees's revertToLastCommit
+  // keeps Ttangent (a step retried after a failure starts from it)
+  BOOST_TEST(banded.tangent() == unloading);
+  // a reset forgets it: the virgin modulus
+  banded.reset();
+  BOOST_REQUIRE(banded.set_trial(1e-17, 0));
+  BOOST_TEST(banded.tangent() == banded.initial_stiffness());
+  // from the virgin state: back at strain 0 after a trial at 0.001, the
+  // stress of that trial stays (OpenSees's TloadIndicator is then 1)
+  Hysteretic virgin(trilinear(), true);
+  BOOST_REQUIRE(virgin.set_trial(0.001, 0));
+  const double first = virgin.force();
+  BOOST_REQUIRE(virgin.set_trial(0, 0));
+  BOOST_TEST(virgin.force() == first);
+  BOOST_TEST(first > 0);
+}

@@ -6,6 +6,9 @@
 
 #include <poundfe/laws/material_registry.h>
 
+#include <map>
+#include <string>
+
 namespace poundfe
 {
   /// One direction's envelope: (e1, s1), (e2, s2), (e3, s3), strains
@@ -14,6 +17,13 @@ namespace poundfe
   {
     double s1 = 0, e1 = 0, s2 = 0, e2 = 0, s3 = 0, e3 = 0;
   };
+
+  /// The envelope of one side ("p" or "n") from Hysteretic's parameters by
+  /// OpenSees's names (s1p, e1p, ...). Two points (s3, e3 absent or both 0):
+  /// the second becomes the third and the middle one lies halfway, as
+  /// OpenSees's two-point constructor puts it.
+  HystereticEnvelope hysteretic_envelope(const std::map<std::string, double> &values,
+                                         const std::string                   &side);
 
   struct HystereticParameters
   {
@@ -39,8 +49,9 @@ namespace poundfe
   public:
     /// InputError naming the parameter unless each envelope's strains grow
     /// in magnitude with the right sign, pinchX and pinchY lie in [0, 1]
-    /// and damage1, damage2, beta >= 0.
-    explicit Hysteretic(const HystereticParameters &parameters);
+    /// and damage1, damage2, beta >= 0. With `opensees_dead_band`, OpenSees
+    /// 3.8's (in_dead_band).
+    explicit Hysteretic(const HystereticParameters &parameters, bool opensees_dead_band = false);
 
     double initial_stiffness() const override { return p.positive.s1 / p.positive.e1; }
     double yield_deformation() const override { return p.positive.e1; }
@@ -57,13 +68,26 @@ namespace poundfe
       double             E_ahead, E_behind; // unloading moduli
     };
     HystereticState respond(const HystereticState &from, double strain) const override;
+    /// respond's rules once the dead band has let the strain through.
+    HystereticState respond_outside_band(const HystereticState &from, double strain) const;
     HystereticState virgin() const override;
     HystereticState positive_increment(const HystereticState &from, double strain,
                                        const Sides &sides) const;
+    /// OpenSees 3.8's HystereticMaterial::setTrialStrain: at strain 0 with
+    /// the last trial still virgin, the last trial as it is; a change below
+    /// DBL_EPSILON from the committed strain keeps the committed history and
+    /// energy, takes the strain and keeps the last trial's stress, tangent
+    /// and loading direction, the tangent even after a revert. False outside
+    /// the band (and without it).
+    bool in_dead_band(const HystereticState &from, double strain, HystereticState &s) const;
 
     HystereticParameters p;
     Sides                forward, mirrored;
     double               energy_A; // the envelopes' area to e3 (damage scale)
+    bool                 opensees_dead_band;
+    /// OpenSees's Ttangent: the tangent of the last trial outside the band
+    /// (or the virgin one), which its revertToLastCommit leaves as it is.
+    mutable double opensees_tangent = 0;
   };
 } // namespace poundfe
 

@@ -1,6 +1,7 @@
-// OpenSees 3.8's dead bands: its Concrete01, Concrete02 and Steel02 skip a
-// strain change below DBL_EPSILON from the committed strain (Steel02: below
-// 10 DBL_EPSILON, from a virgin state only); each law's file says how.
+// OpenSees 3.8's dead bands: its Concrete01, Concrete02, Steel02 and
+// Hysteretic skip a strain change below DBL_EPSILON from the committed
+// strain (Steel02: below 10 DBL_EPSILON, from a virgin state only); each
+// law's file says how.
 // `poundfe opensees` asks for them, so that a script gives OpenSees's
 // numbers; poundfe's own fibre members do without them (a band can stall a
 // member's iteration).

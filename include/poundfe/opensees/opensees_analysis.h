@@ -306,6 +306,9 @@ namespace poundfe
       /// The test's line of print flag 1 (each iteration) or 2 (convergence).
       void   print_iteration(unsigned int iteration, double norm) const;
       void   commit();
+      /// After a failed step: the elements reverted and updated at the
+      /// committed displacements (OpenSees's Domain::revertToLastCommit).
+      void   revert_to_last_commit();
 
       Domain         &domain;
       AnalysisOptions opts;

@@ -588,6 +588,11 @@ namespace poundfe
     /// nodes, or with -pDelta, which the analysis's own loops leave to the
     /// element), to read its materials' states; null for another element.
     UniaxialRows *link_rows(Element &element);
+
+    /// The twoNodeLink's local axes, the rows x, y, z (TwoNodeLink::setUp's
+    /// trans), and its length L.
+    Eigen::Matrix3d two_node_link_axes(const Domain &domain, int tag, const TwoNodeLinkData &data,
+                                       double &L);
     /// truss: a uniaxial material over the area A along the member, small
     /// strains (OpenSees's Truss); Rayleigh-damped only when asked.
     std::unique_ptr<Element> make_truss(const Domain &domain, int tag, std::array<int, 2> nodes,
