@@ -4,7 +4,7 @@
 // Vz, T, MyJ, MzJ)): forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn on the
 // sections of a `beamIntegration` (elements/beam_column.h: OpenSees's
 // ForceBeamColumn2d and DispBeamColumn2d state determinations), and
-// elasticBeamColumn on a Corotational transformation; the force-based one
+// elasticBeamColumn on a Corotational transformation (plane and space); the force-based one
 // iterates as OpenSees's (OpenSeesIteration). Their responses as
 // OpenSees's ForceBeamColumn2d::getResponse gives them:
 //   force       the global resisting force (6 values, node I then J);
@@ -250,16 +250,19 @@ namespace poundfe
       class BeamColumnElement3d : public Element
       {
       public:
+        /// `loads`: whether it takes element loads (not on a corotational
+        /// member, BeamColumn's).
         BeamColumnElement3d(const int tag, const std::array<int, 2> nodes,
-                            std::unique_ptr<BeamColumn<3>> beam)
+                            std::unique_ptr<BeamColumn<3>> beam, const bool loads = true)
           : Element(tag, {nodes[0], nodes[1]})
           , member(std::move(beam))
+          , takes_loads(loads)
         {
           w.setZero();
           committed_tangent = tangent();
         }
 
-        bool takes_beam_loads() const override { return true; }
+        bool takes_beam_loads() const override { return takes_loads; }
         void
         zero_loads() override
         {
@@ -295,6 +298,7 @@ namespace poundfe
 
       private:
         std::unique_ptr<BeamColumn<3>> member;
+        bool                           takes_loads;
         MemberLoad<3>                  w; // the member's load (w_x, w_y, w_z)
       };
 
@@ -333,6 +337,30 @@ namespace poundfe
         transformation.use_opensees_tangent();
         return transformation;
       }
+
+      /// The member's transformation in space with the geomTransf's vecxz,
+      /// made on nodes that may have moved (the chord of the displaced
+      /// nodes); ScriptError for a member of zero length or a vecxz along it.
+      CrdTransformation<3>
+      transformation_3d(const Domain &domain, const std::array<int, 2> nodes,
+                        const Transformation kind, const std::array<double, 3> &vecxz,
+                        const int tag)
+      {
+        const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
+        const CrdTransformation<3>::GlobalVector made = displacements_when_made(domain, nodes, 6);
+        const Eigen::Vector3d i(a[0], a[1], a[2]), j(b[0], b[1], b[2]);
+        const Eigen::Vector3d chord = displaced_chord<3>(i, j, made);
+        if (!(chord.norm() > 0))
+          throw ScriptError("element " + std::to_string(tag) + " has zero length");
+        const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
+        if (!(chord.cross(v).norm() > 0))
+          throw ScriptError("element " + std::to_string(tag) +
+                            ": the transformation's vecxz is parallel to its axis");
+        CrdTransformation<3> transf(kind, i, j, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                    v, made);
+        transf.use_opensees_tangent();
+        return transf;
+      }
     } // namespace
 
     std::unique_ptr<Element>
@@ -357,25 +385,11 @@ namespace poundfe
                         const std::array<double, 3> &vecxz, const IntegrationSpec &integration,
                         const OpenSeesIteration &iteration)
     {
-      if (transformation == Transformation::corotational)
-        throw ScriptError("element " + std::to_string(tag) +
-                          ": a Corotational transformation in 3D: poundfe does not support it");
-      // made on nodes that may have moved: the chord of the displaced nodes
-      const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
-      const CrdTransformation<3>::GlobalVector made = displacements_when_made(domain, nodes, 6);
-      const Eigen::Vector3d i(a[0], a[1], a[2]), j(b[0], b[1], b[2]);
-      const Eigen::Vector3d chord = displaced_chord<3>(i, j, made);
-      if (!(chord.norm() > 0))
-        throw ScriptError("element " + std::to_string(tag) + " has zero length");
-      const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
-      if (!(chord.cross(v).norm() > 0))
-        throw ScriptError("element " + std::to_string(tag) +
-                          ": the transformation's vecxz is parallel to its axis");
-      CrdTransformation<3> transf(transformation, i, j, Eigen::Vector3d::Zero(),
-                                  Eigen::Vector3d::Zero(), v, made);
-      transf.use_opensees_tangent();
+      const CrdTransformation<3> transf =
+        transformation_3d(domain, nodes, transformation, vecxz, tag);
       return std::make_unique<BeamColumnElement3d>(
-        tag, nodes, make_member<3>(domain, transf, kind, integration, iteration));
+        tag, nodes, make_member<3>(domain, transf, kind, integration, iteration),
+        transformation != Transformation::corotational);
     }
 
     std::unique_ptr<Element>
@@ -389,6 +403,19 @@ namespace poundfe
       return std::make_unique<BeamColumnElement>(
         tag, nodes, std::make_unique<DispBeamColumn<2>>(transf, section, 2));
     }
+    std::unique_ptr<Element>
+    make_elastic_corotational_3d(const Domain &domain, const int tag,
+                                 const std::array<int, 2> nodes, const ElasticSection3d &section,
+                                 const std::array<double, 3> &vecxz)
+    {
+      const CrdTransformation<3> transf =
+        transformation_3d(domain, nodes, Transformation::corotational, vecxz, tag);
+      const ElasticSection elastic(section.E * section.A, section.E * section.Iz,
+                                   section.E * section.Iy, section.G * section.J);
+      return std::make_unique<BeamColumnElement3d>(
+        tag, nodes, std::make_unique<DispBeamColumn<3>>(transf, elastic, 2), false);
+    }
+
     std::vector<double>
     section_values(const SectionLaw &section, const SectionVector &v)
     {
