@@ -1,6 +1,6 @@
 // The distributed-plasticity beam-columns of an OpenSees script in the
-// plane and in space (BeamColumn<2>, BeamColumn<3>; in space on a Linear or
-// PDelta transformation with the geomTransf's vecxz, the localForce of ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI, MzI, N, -Vy,
+// plane and in space (BeamColumn<2>, BeamColumn<3>; in space on a Linear,
+// PDelta or Corotational transformation with the geomTransf's vecxz, the localForce of ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI, MzI, N, -Vy,
 // Vz, T, MyJ, MzJ)): forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn on the
 // sections of a `beamIntegration` (elements/beam_column.h: OpenSees's
 // ForceBeamColumn2d and DispBeamColumn2d state determinations), and

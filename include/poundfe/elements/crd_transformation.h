@@ -38,7 +38,7 @@
 //     and restart the triads. No rigid end offsets (OpenSees 3.8 drops
 //     them with a warning).
 //   A member made on nodes that have moved (OpenSees's LinearCrdTransf2d/3d,
-//     PDeltaCrdTransf2d/3d, CorotCrdTransf2d::initialize: nodeIInitialDisp,
+//     PDeltaCrdTransf2d/3d, CorotCrdTransf2d/3d::initialize: nodeIInitialDisp,
 //     nodeJInitialDisp): its chord joins the ends displaced by the nodes'
 //     translations u_0 then, X_J + o_J + u_0J - (X_I + o_I + u_0I), and it
 //     is measured from then: update takes u - u_0 (BeamColumn::set_trial).
