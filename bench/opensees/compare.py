@@ -315,6 +315,16 @@ CASES = {
     "corot3d_column_force": ("corotational_3d.tcl", ["column", "forceBeamColumn"], 1e-6),
     "corot3d_column_disp": ("corotational_3d.tcl", ["column", "dispBeamColumn"], 1e-6),
     "corot3d_frame": ("corotational_3d.tcl", ["frame"], 1e-6),
+    # the same with columns of each kind and Rayleigh damping on the initial
+    # stiffness (B^T k_b0 B at the current geometry: each step for
+    # dispBeamColumn and elasticBeamColumn, the first for forceBeamColumn)
+    "corot3d_frame_initial": ("corotational_3d.tcl", ["frame", "initial"], 1e-6),
+    # eigen -fullGenLapack on a bent skew cantilever: the corotational
+    # tangent is not symmetric there, so the generalized problem is solved
+    # whole (as dggev); before the load it is symmetric
+    "corot3d_modes_elastic": ("corotational_3d.tcl", ["modes", "elasticBeamColumn"], 1e-9),
+    "corot3d_modes_force": ("corotational_3d.tcl", ["modes", "forceBeamColumn"], 1e-9),
+    "corot3d_modes_disp": ("corotational_3d.tcl", ["modes", "dispBeamColumn"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

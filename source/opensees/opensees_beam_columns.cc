@@ -38,6 +38,8 @@
 
 #include <Eigen/Geometry>
 
+#include <optional>
+
 namespace poundfe
 {
   namespace opensees
@@ -250,13 +252,29 @@ namespace poundfe
       class BeamColumnElement3d : public Element
       {
       public:
+        /// Which of OpenSees's 3D elements it stands for: their initial
+        /// stiffness on CorotCrdTransf3d, whose getInitialGlobalStiffMatrix
+        /// takes the initial basic stiffness k_b0 through the transformation's
+        /// current T: ElasticBeam3d and DispBeamColumn3d at each call,
+        /// ForceBeamColumn3d once, at its first call (Ki); their responses
+        /// (ElasticBeam3d: no basicDeformation, no sections).
+        enum class Kind
+        {
+          elastic,
+          displacement_based,
+          force_based
+        };
+
         /// `loads`: whether it takes element loads (not on a corotational
         /// member, BeamColumn's).
         BeamColumnElement3d(const int tag, const std::array<int, 2> nodes,
-                            std::unique_ptr<BeamColumn<3>> beam, const bool loads = true)
+                            std::unique_ptr<BeamColumn<3>> beam, const Kind element_kind,
+                            const bool loads = true)
           : Element(tag, {nodes[0], nodes[1]})
           , member(std::move(beam))
+          , kind(element_kind)
           , takes_loads(loads)
+          , virgin_basic_tangent(member->basic_tangent())
         {
           w.setZero();
           committed_tangent = tangent();
@@ -289,7 +307,7 @@ namespace poundfe
         }
         Vector      force() const override { return member->resisting_force(); }
         Matrix      tangent() const override { return member->tangent(); }
-        Matrix      initial_tangent() const override { return member->initial_tangent(); }
+        Matrix      initial_tangent() const override;
         void        commit() override { member->commit(); }
         void        revert() override { member->revert(); }
         void        reset() override { member->reset(); }
@@ -298,9 +316,30 @@ namespace poundfe
 
       private:
         std::unique_ptr<BeamColumn<3>> member;
+        Kind                           kind;
         bool                           takes_loads;
         MemberLoad<3>                  w; // the member's load (w_x, w_y, w_z)
+        /// k_b0: the basic tangent of the virgin member (as made)
+        BeamColumn<3>::BasicMatrix virgin_basic_tangent;
+        /// ForceBeamColumn3d's Ki on CorotCrdTransf3d, from its first use on
+        /// (a reset keeps it, as OpenSees's revertToStart does)
+        mutable std::optional<Matrix> first_initial_tangent;
       };
+
+      Matrix
+      BeamColumnElement3d::initial_tangent() const
+      {
+        const CrdTransformation<3> &t = member->transformation();
+        if (t.kind() != Transformation::corotational)
+          return member->initial_tangent();
+        if (kind == Kind::force_based && first_initial_tangent)
+          return *first_initial_tangent;
+        // B^T k_b0 B at the current geometry (no geometric part at q = 0)
+        const Matrix k0 = t.global_tangent(BeamColumn<3>::BasicVector::Zero(), virgin_basic_tangent);
+        if (kind == Kind::force_based)
+          first_initial_tangent = k0;
+        return k0;
+      }
 
       std::vector<double>
       BeamColumnElement3d::response(const std::vector<std::string> &words) const
@@ -315,6 +354,10 @@ namespace poundfe
             return {-q[0] + p0[0], vy + p0[1], -vz + p0[3], -q[5], q[3], q[1],
                     q[0],          -vy + p0[2], vz + p0[4], q[5],  q[4], q[2]};
           }
+        if (kind == Kind::elastic) // ElasticBeam3d: basicForce, no deformations nor sections
+          return words.size() == 1 && (what == "basicForce" || what == "basicForces") ?
+                   std::vector<double>(q.data(), q.data() + q.size()) :
+                   Element::response(words);
         const std::vector<double> shared = member_response(*member, tag, words, q);
         return shared.empty() ? Element::response(words) : shared;
       }
@@ -387,8 +430,11 @@ namespace poundfe
     {
       const CrdTransformation<3> transf =
         transformation_3d(domain, nodes, transformation, vecxz, tag);
+      using Kind3d = BeamColumnElement3d::Kind;
       return std::make_unique<BeamColumnElement3d>(
         tag, nodes, make_member<3>(domain, transf, kind, integration, iteration),
+        kind == BeamColumnKind::displacement_based ? Kind3d::displacement_based :
+                                                     Kind3d::force_based,
         transformation != Transformation::corotational);
     }
 
@@ -413,7 +459,8 @@ namespace poundfe
       const ElasticSection elastic(section.E * section.A, section.E * section.Iz,
                                    section.E * section.Iy, section.G * section.J);
       return std::make_unique<BeamColumnElement3d>(
-        tag, nodes, std::make_unique<DispBeamColumn<3>>(transf, elastic, 2), false);
+        tag, nodes, std::make_unique<DispBeamColumn<3>>(transf, elastic, 2),
+        BeamColumnElement3d::Kind::elastic, false);
     }
 
     std::vector<double>

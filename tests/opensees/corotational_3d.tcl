@@ -16,7 +16,16 @@
 #            elasticBeamColumn beams, the floors' mass at the joints, gravity
 #            then 3 s of the synthetic record along X and 0.7 of it along Y,
 #            Newmark average acceleration at 0.01 s, Rayleigh damping on the
-#            mass and the committed stiffness.
+#            mass and the committed stiffness;
+#   frame initial  the same with columns of each kind (forceBeamColumn,
+#            dispBeamColumn, elasticBeamColumn) and Rayleigh damping on the
+#            initial stiffness: OpenSees takes it through CorotCrdTransf3d's
+#            current T, at each step for the displacement-based and elastic
+#            members, at the first step for the force-based ones;
+#   modes ELEMENT  a skew cantilever of four members of ELEMENT with -mass
+#            and a tip mass, and a second (elastic) post, under a tip load
+#            that bends it: `eigen -fullGenLapack 3` before the load and
+#            after it, when the members' tangent is no longer symmetric.
 set out [lindex $argv 0]
 set variant [lindex $argv 1]
 source [file join [file dirname [info script]] record.tcl]
@@ -89,6 +98,41 @@ if {$variant eq "circle"} {
     integrator LoadControl [expr {1.0 / 30}]
     set status [analyze 30]
     puts "corotational_3d column $element: status $status top [nodeDisp 5 1] [nodeDisp 5 2] [nodeDisp 5 3]"
+} elseif {$variant eq "modes"} {
+    set element [lindex $argv 2]
+    for {set i 0} {$i <= 4} {incr i} { node [expr {$i + 1}] [expr {0.3 * $i}] [expr {-0.2 * $i}] [expr {1.0 * $i}] }
+    node 10 2.0 0.0 0.0
+    node 11 2.0 -0.5 3.0
+    fix 1 1 1 1 1 1 1
+    fix 10 1 1 1 1 1 1
+    section Elastic 1 2.0e8 0.01 8.0e-5 5.0e-5 8.0e7 6.0e-5
+    geomTransf Corotational 1 0.2 1.0 0.3
+    beamIntegration Lobatto 1 1 4
+    beamIntegration Legendre 2 1 2
+    for {set i 1} {$i <= 4} {incr i} {
+        switch $element {
+            elasticBeamColumn { element elasticBeamColumn $i $i [expr {$i + 1}] 0.01 2.0e8 8.0e7 6.0e-5 5.0e-5 8.0e-5 1 -mass 40.0 }
+            forceBeamColumn { element forceBeamColumn $i $i [expr {$i + 1}] 1 1 -mass 40.0 }
+            dispBeamColumn { element dispBeamColumn $i $i [expr {$i + 1}] 1 2 -mass 40.0 }
+        }
+    }
+    element elasticBeamColumn 9 10 11 0.01 2.0e8 8.0e7 6.0e-5 5.0e-5 8.0e-5 1 -mass 30.0
+    mass 5 200.0 200.0 200.0 2.0 2.0 2.0
+    set file [open $out/modes_eigen.out w]
+    puts $file "0.0 [eigen -fullGenLapack 3]"
+    timeSeries Linear 1
+    pattern Plain 1 1 { load 5 0.0 0.0 -2000.0 0.0 0.0 0.0 }
+    constraints Plain
+    numberer Plain
+    system UmfPack
+    test NormDispIncr 1.0e-11 40
+    algorithm Newton
+    integrator LoadControl 0.25
+    analysis Static
+    set status [analyze 4]
+    puts $file "1.0 [eigen -fullGenLapack 3]"
+    close $file
+    puts "corotational_3d modes $element: status $status tip [nodeDisp 5 1] [nodeDisp 5 2] [nodeDisp 5 3]"
 } elseif {$variant eq "frame"} {
     set Lx 5.0; set Ly 4.0; set H 3.0; set m 16000.0; set g 9.81
     set c 1
@@ -107,9 +151,19 @@ if {$variant eq "circle"} {
     geomTransf Corotational 1 1.0 0.0 0.0
     geomTransf Linear 2 0.0 0.0 1.0
     beamIntegration Lobatto 1 1 4
+    set damping [lindex $argv 2]
+    set kinds {force force force force force force force force}
+    if {$damping eq "initial"} {
+        set kinds {force disp elastic force disp elastic force disp}
+        beamIntegration Legendre 3 1 3
+    }
     set e 1
     foreach {i j} {1 11 2 12 3 13 4 14 11 21 12 22 13 23 14 24} {
-        element forceBeamColumn $e $i $j 1 1
+        switch [lindex $kinds [expr {$e - 1}]] {
+            force { element forceBeamColumn $e $i $j 1 1 }
+            disp { element dispBeamColumn $e $i $j 1 3 }
+            elastic { element elasticBeamColumn $e $i $j 6.8e-3 2.0e11 8.0e10 1.25e-5 3.3e-5 3.3e-5 1 }
+        }
         incr e
     }
     foreach {i j} {11 12 13 14 11 13 12 14 21 22 23 24 21 23 22 24} {
@@ -134,7 +188,12 @@ if {$variant eq "circle"} {
     analyze 10
     loadConst -time 0.0
     wipeAnalysis
-    rayleigh 0.3 0.0 0.0 0.003
+    if {$damping eq "initial"} {
+        rayleigh 0.3 0.0 0.003 0.0
+        recorder Element -file $out/frame_members.out -time -precision 16 -ele 2 3 6 localForce
+    } else {
+        rayleigh 0.3 0.0 0.0 0.003
+    }
     set dt 0.01
     set n 300
     timeSeries Path 2 -dt $dt -values [synthetic_record $dt $n 6.0]
