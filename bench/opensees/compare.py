@@ -317,6 +317,27 @@ CASES = {
     "moved_member_reset_2d_corotational": ("moved_member_reset.tcl", ["2d", "Corotational"], 1e-9),
     "moved_member_reset_3d_linear": ("moved_member_reset.tcl", ["3d", "Linear"], 1e-9),
     "moved_member_reset_3d_pdelta": ("moved_member_reset.tcl", ["3d", "PDelta"], 1e-9),
+    # geomTransf Corotational in space (CorotCrdTransf3d: nodal triads turned
+    # by the iterations' rotation increments, so the path of Newton's
+    # iterates enters the state): a skew cantilever rolled into a circle; a
+    # column under axial and biaxial loads and a torque pushed to a third of
+    # its height, of each member type; a two-storey frame of fibre columns
+    # (yielding) under two components
+    "corot3d_circle": ("corotational_3d.tcl", ["circle"], 1e-6),
+    "corot3d_column_elastic": ("corotational_3d.tcl", ["column", "elasticBeamColumn"], 1e-6),
+    "corot3d_column_force": ("corotational_3d.tcl", ["column", "forceBeamColumn"], 1e-6),
+    "corot3d_column_disp": ("corotational_3d.tcl", ["column", "dispBeamColumn"], 1e-6),
+    "corot3d_frame": ("corotational_3d.tcl", ["frame"], 1e-6),
+    # the same with columns of each kind and Rayleigh damping on the initial
+    # stiffness (B^T k_b0 B at the current geometry: each step for
+    # dispBeamColumn and elasticBeamColumn, the first for forceBeamColumn)
+    "corot3d_frame_initial": ("corotational_3d.tcl", ["frame", "initial"], 1e-6),
+    # eigen -fullGenLapack on a bent skew cantilever: the corotational
+    # tangent is not symmetric there, so the generalized problem is solved
+    # whole (as dggev); before the load it is symmetric
+    "corot3d_modes_elastic": ("corotational_3d.tcl", ["modes", "elasticBeamColumn"], 1e-9),
+    "corot3d_modes_force": ("corotational_3d.tcl", ["modes", "forceBeamColumn"], 1e-9),
+    "corot3d_modes_disp": ("corotational_3d.tcl", ["modes", "dispBeamColumn"], 1e-9),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

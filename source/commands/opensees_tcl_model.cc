@@ -331,8 +331,6 @@ namespace poundfe
         const Transformation kind = type == "PDelta"       ? Transformation::pdelta :
                                     type == "Corotational" ? Transformation::corotational :
                                                              Transformation::linear;
-        if (kind == Transformation::corotational && d.ndm != 2)
-          unsupported("geomTransf Corotational in 3D");
         if (!d.transformations.emplace(tag, kind).second)
           throw ScriptError("geomTransf " + text_of(tag) + " exists already");
       }

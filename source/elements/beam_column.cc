@@ -171,6 +171,7 @@ namespace poundfe
     for (const auto &s : sections)
       s->commit();
     commit_basic();
+    transf.commit();
     committed   = trial;
     committed_u = trial_u;
   }
@@ -184,6 +185,7 @@ namespace poundfe
     revert_basic();
     trial   = committed;
     trial_u = committed_u;
+    transf.revert();
     transf.update(trial_u);
     why.clear();
   }
@@ -197,6 +199,7 @@ namespace poundfe
       s->reset();
     reset_basic();
     trial_u = committed_u = GlobalVector::Zero();
+    transf.reset();
     transf.update(trial_u);
     // the virgin state: q = 0 and the initial tangent, from one evaluation
     // at v = 0 that the sections and the basic state forget

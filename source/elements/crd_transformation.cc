@@ -111,10 +111,13 @@ namespace poundfe
   {
     if (!(length0 > 0))
       throw InputError("", 0, "Coordinates", "a member of zero length between its offset ends");
-    if (dim == 3 && kind == Transformation::corotational)
-      throw InputError("", 0, "Transformation",
-                       "the corotational transformation is available for plane members only");
+    if (dim == 3 && kind == Transformation::corotational && has_offsets)
+      throw InputError("", 0, "Offsets",
+                       "rigid end offsets on a corotational member in space");
     set_axes(orientation);
+    if constexpr (dim == 3)
+      if (kind == Transformation::corotational)
+        triads = Corotational3d(axes, chord0);
     b_linear = local_compatibility<dim>(length0) * dof_rotation<dim>(axes);
     update(GlobalVector::Zero());
   }
@@ -154,10 +157,40 @@ namespace poundfe
       {
         if constexpr (dim == 2)
           update_corotational(u_end);
+        else
+          {
+            triads.update(u_end);
+            v = triads.basic_deformation();
+            b = triads.compatibility();
+          }
         return;
       }
     v = b_linear * u_end;
     b = has_offsets ? Compatibility(b_linear * offsets) : b_linear;
+  }
+
+  template <int dim>
+  void
+  CrdTransformation<dim>::commit()
+  {
+    if (dim == 3 && type == Transformation::corotational)
+      triads.commit();
+  }
+
+  template <int dim>
+  void
+  CrdTransformation<dim>::revert()
+  {
+    if (dim == 3 && type == Transformation::corotational)
+      triads.revert();
+  }
+
+  template <int dim>
+  void
+  CrdTransformation<dim>::reset()
+  {
+    if (dim == 3 && type == Transformation::corotational)
+      triads.reset();
   }
 
   template <int dim>
@@ -260,7 +293,8 @@ namespace poundfe
           k_g = offsets.transpose() * k_g * offsets;
         return k + k_g;
       }
-    return k;
+    else
+      return k + triads.geometric_tangent(q);
   }
 
   template class CrdTransformation<2>;

@@ -1576,6 +1576,74 @@ namespace poundfe
       return 0;
     }
 
+    namespace
+    {
+      /// True when K equals its transpose up to round-off (1e-12 of its
+      /// largest entry): a 3D Corotational member's tangent after it has
+      /// moved is not (CorotCrdTransf3d), nor are some links'.
+      bool
+      is_symmetric(const Matrix &K)
+      {
+        const double largest = K.cwiseAbs().maxCoeff();
+        return (K - K.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * largest;
+      }
+
+      /// K phi = lambda M phi for a symmetric K, solved as M phi = (1/lambda)
+      /// K phi: M may be singular (massless rotations), K is positive
+      /// definite for a stable structure. The positive lambda, smallest
+      /// first, at most shapes.cols() of them.
+      void
+      symmetric_modes(const Matrix &K, const Matrix &M, Matrix &shapes,
+                      std::vector<double> &lambda)
+      {
+        Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solution(M, K);
+        if (solution.info() != Eigen::Success)
+          throw ScriptError("eigen: the stiffness matrix is not positive definite");
+        for (int i = solution.eigenvalues().size() - 1; i >= 0 &&
+                                                   lambda.size() < static_cast<std::size_t>(shapes.cols());
+             --i)
+          if (solution.eigenvalues()[i] > 0)
+            {
+              shapes.col(lambda.size()) = solution.eigenvectors().col(i);
+              lambda.push_back(1 / solution.eigenvalues()[i]);
+            }
+      }
+
+      /// K phi = lambda M phi for a nonsymmetric K, as OpenSees's
+      /// FullGenEigenSolver (LAPACK dggev): the QZ pairs (alpha, beta),
+      /// lambda = Re(alpha) / beta, a complex pair -|alpha| / beta, a
+      /// vanishing beta (a massless DOF) infinite; the positive finite
+      /// lambda, smallest first, with the real parts of their vectors.
+      void
+      general_modes(const Matrix &K, const Matrix &M, Matrix &shapes, std::vector<double> &lambda)
+      {
+        Eigen::GeneralizedEigenSolver<Matrix> solution(K, M);
+        if (solution.info() != Eigen::Success)
+          throw ScriptError("eigen: the generalized eigenproblem did not converge");
+        const auto &alpha = solution.alphas();
+        const auto &beta  = solution.betas();
+        std::vector<std::pair<double, Eigen::Index>> order;
+        for (Eigen::Index i = 0; i < beta.size(); ++i)
+          {
+            const double magnitude = std::abs(alpha[i]);
+            if (!(magnitude * std::numeric_limits<double>::epsilon() < std::abs(beta[i])))
+              continue;
+            const double value =
+              alpha[i].imag() == 0 ? alpha[i].real() / beta[i] : -magnitude / beta[i];
+            if (value > 0)
+              order.emplace_back(value, i);
+          }
+        std::sort(order.begin(), order.end());
+        const Eigen::MatrixXcd vectors = solution.eigenvectors();
+        for (const auto &[value, i] : order)
+          if (lambda.size() < static_cast<std::size_t>(shapes.cols()))
+            {
+              shapes.col(lambda.size()) = vectors.col(i).real();
+              lambda.push_back(value);
+            }
+      }
+    } // namespace
+
     std::vector<double>
     Analysis::eigenvalues(const unsigned int n)
     {
@@ -1595,19 +1663,12 @@ namespace poundfe
       Matrix M = mass_of_equation.asDiagonal();
       for (Eigen::Index j = 0; j < M.cols() && !coupled_masses.empty(); ++j)
         M.col(j) = mass_times(Matrix::Identity(n_equations, n_equations).col(j));
-      // K phi = lambda M phi as M phi = (1/lambda) K phi: M may be singular
-      // (massless rotations), K is positive definite for a stable structure
-      Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solution(M, K);
-      if (solution.info() != Eigen::Success)
-        throw ScriptError("eigen: the stiffness matrix is not positive definite");
       std::vector<double> lambda;
       Matrix              shapes(n_equations, n);
-      for (int i = solution.eigenvalues().size() - 1; i >= 0 && lambda.size() < n; --i)
-        if (solution.eigenvalues()[i] > 0)
-          {
-            shapes.col(lambda.size()) = solution.eigenvectors().col(i);
-            lambda.push_back(1 / solution.eigenvalues()[i]);
-          }
+      if (is_symmetric(K))
+        symmetric_modes(K, M, shapes, lambda);
+      else
+        general_modes(K, M, shapes, lambda);
       if (lambda.size() < n)
         throw ScriptError("eigen: " + std::to_string(n) + " modes asked for, the model has " +
                           std::to_string(lambda.size()) + " with mass");

@@ -1,10 +1,10 @@
 // The distributed-plasticity beam-columns of an OpenSees script in the
-// plane and in space (BeamColumn<2>, BeamColumn<3>; in space on a Linear or
-// PDelta transformation with the geomTransf's vecxz, the localForce of ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI, MzI, N, -Vy,
+// plane and in space (BeamColumn<2>, BeamColumn<3>; in space on a Linear,
+// PDelta or Corotational transformation with the geomTransf's vecxz, the localForce of ForceBeamColumn3d: (-N, Vy, -Vz, -T, MyI, MzI, N, -Vy,
 // Vz, T, MyJ, MzJ)): forceBeamColumn (nonlinearBeamColumn) and dispBeamColumn on the
 // sections of a `beamIntegration` (elements/beam_column.h: OpenSees's
 // ForceBeamColumn2d and DispBeamColumn2d state determinations), and
-// elasticBeamColumn on a Corotational transformation; the force-based one
+// elasticBeamColumn on a Corotational transformation (plane and space); the force-based one
 // iterates as OpenSees's (OpenSeesIteration). Their responses as
 // OpenSees's ForceBeamColumn2d::getResponse gives them:
 //   force       the global resisting force (6 values, node I then J);
@@ -37,6 +37,8 @@
 #include <poundfe/sections/elastic_section.h>
 
 #include <Eigen/Geometry>
+
+#include <optional>
 
 namespace poundfe
 {
@@ -250,16 +252,35 @@ namespace poundfe
       class BeamColumnElement3d : public Element
       {
       public:
+        /// Which of OpenSees's 3D elements it stands for: their initial
+        /// stiffness on CorotCrdTransf3d, whose getInitialGlobalStiffMatrix
+        /// takes the initial basic stiffness k_b0 through the transformation's
+        /// current T: ElasticBeam3d and DispBeamColumn3d at each call,
+        /// ForceBeamColumn3d once, at its first call (Ki); their responses
+        /// (ElasticBeam3d: no basicDeformation, no sections).
+        enum class Kind
+        {
+          elastic,
+          displacement_based,
+          force_based
+        };
+
+        /// `loads`: whether it takes element loads (not on a corotational
+        /// member, BeamColumn's).
         BeamColumnElement3d(const int tag, const std::array<int, 2> nodes,
-                            std::unique_ptr<BeamColumn<3>> beam)
+                            std::unique_ptr<BeamColumn<3>> beam, const Kind element_kind,
+                            const bool loads = true)
           : Element(tag, {nodes[0], nodes[1]})
           , member(std::move(beam))
+          , kind(element_kind)
+          , takes_loads(loads)
+          , virgin_basic_tangent(member->basic_tangent())
         {
           w.setZero();
           committed_tangent = tangent();
         }
 
-        bool takes_beam_loads() const override { return true; }
+        bool takes_beam_loads() const override { return takes_loads; }
         void
         zero_loads() override
         {
@@ -286,7 +307,7 @@ namespace poundfe
         }
         Vector      force() const override { return member->resisting_force(); }
         Matrix      tangent() const override { return member->tangent(); }
-        Matrix      initial_tangent() const override { return member->initial_tangent(); }
+        Matrix      initial_tangent() const override;
         void        commit() override { member->commit(); }
         void        revert() override { member->revert(); }
         void        reset() override { member->reset(); }
@@ -295,8 +316,30 @@ namespace poundfe
 
       private:
         std::unique_ptr<BeamColumn<3>> member;
+        Kind                           kind;
+        bool                           takes_loads;
         MemberLoad<3>                  w; // the member's load (w_x, w_y, w_z)
+        /// k_b0: the basic tangent of the virgin member (as made)
+        BeamColumn<3>::BasicMatrix virgin_basic_tangent;
+        /// ForceBeamColumn3d's Ki on CorotCrdTransf3d, from its first use on
+        /// (a reset keeps it, as OpenSees's revertToStart does)
+        mutable std::optional<Matrix> first_initial_tangent;
       };
+
+      Matrix
+      BeamColumnElement3d::initial_tangent() const
+      {
+        const CrdTransformation<3> &t = member->transformation();
+        if (t.kind() != Transformation::corotational)
+          return member->initial_tangent();
+        if (kind == Kind::force_based && first_initial_tangent)
+          return *first_initial_tangent;
+        // B^T k_b0 B at the current geometry (no geometric part at q = 0)
+        const Matrix k0 = t.global_tangent(BeamColumn<3>::BasicVector::Zero(), virgin_basic_tangent);
+        if (kind == Kind::force_based)
+          first_initial_tangent = k0;
+        return k0;
+      }
 
       std::vector<double>
       BeamColumnElement3d::response(const std::vector<std::string> &words) const
@@ -311,6 +354,10 @@ namespace poundfe
             return {-q[0] + p0[0], vy + p0[1], -vz + p0[3], -q[5], q[3], q[1],
                     q[0],          -vy + p0[2], vz + p0[4], q[5],  q[4], q[2]};
           }
+        if (kind == Kind::elastic) // ElasticBeam3d: basicForce, no deformations nor sections
+          return words.size() == 1 && (what == "basicForce" || what == "basicForces") ?
+                   std::vector<double>(q.data(), q.data() + q.size()) :
+                   Element::response(words);
         const std::vector<double> shared = member_response(*member, tag, words, q);
         return shared.empty() ? Element::response(words) : shared;
       }
@@ -332,6 +379,30 @@ namespace poundfe
         // OpenSees's own tangent: a script's damping on K_t or K_c takes it
         transformation.use_opensees_tangent();
         return transformation;
+      }
+
+      /// The member's transformation in space with the geomTransf's vecxz,
+      /// made on nodes that may have moved (the chord of the displaced
+      /// nodes); ScriptError for a member of zero length or a vecxz along it.
+      CrdTransformation<3>
+      transformation_3d(const Domain &domain, const std::array<int, 2> nodes,
+                        const Transformation kind, const std::array<double, 3> &vecxz,
+                        const int tag)
+      {
+        const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
+        const CrdTransformation<3>::GlobalVector made = displacements_when_made(domain, nodes, 6);
+        const Eigen::Vector3d i(a[0], a[1], a[2]), j(b[0], b[1], b[2]);
+        const Eigen::Vector3d chord = displaced_chord<3>(i, j, made);
+        if (!(chord.norm() > 0))
+          throw ScriptError("element " + std::to_string(tag) + " has zero length");
+        const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
+        if (!(chord.cross(v).norm() > 0))
+          throw ScriptError("element " + std::to_string(tag) +
+                            ": the transformation's vecxz is parallel to its axis");
+        CrdTransformation<3> transf(kind, i, j, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                    v, made);
+        transf.use_opensees_tangent();
+        return transf;
       }
     } // namespace
 
@@ -357,25 +428,14 @@ namespace poundfe
                         const std::array<double, 3> &vecxz, const IntegrationSpec &integration,
                         const OpenSeesIteration &iteration)
     {
-      if (transformation == Transformation::corotational)
-        throw ScriptError("element " + std::to_string(tag) +
-                          ": a Corotational transformation in 3D: poundfe does not support it");
-      // made on nodes that may have moved: the chord of the displaced nodes
-      const auto &a = domain.node(nodes[0]).coordinates, &b = domain.node(nodes[1]).coordinates;
-      const CrdTransformation<3>::GlobalVector made = displacements_when_made(domain, nodes, 6);
-      const Eigen::Vector3d i(a[0], a[1], a[2]), j(b[0], b[1], b[2]);
-      const Eigen::Vector3d chord = displaced_chord<3>(i, j, made);
-      if (!(chord.norm() > 0))
-        throw ScriptError("element " + std::to_string(tag) + " has zero length");
-      const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
-      if (!(chord.cross(v).norm() > 0))
-        throw ScriptError("element " + std::to_string(tag) +
-                          ": the transformation's vecxz is parallel to its axis");
-      CrdTransformation<3> transf(transformation, i, j, Eigen::Vector3d::Zero(),
-                                  Eigen::Vector3d::Zero(), v, made);
-      transf.use_opensees_tangent();
+      const CrdTransformation<3> transf =
+        transformation_3d(domain, nodes, transformation, vecxz, tag);
+      using Kind3d = BeamColumnElement3d::Kind;
       return std::make_unique<BeamColumnElement3d>(
-        tag, nodes, make_member<3>(domain, transf, kind, integration, iteration));
+        tag, nodes, make_member<3>(domain, transf, kind, integration, iteration),
+        kind == BeamColumnKind::displacement_based ? Kind3d::displacement_based :
+                                                     Kind3d::force_based,
+        transformation != Transformation::corotational);
     }
 
     std::unique_ptr<Element>
@@ -389,6 +449,20 @@ namespace poundfe
       return std::make_unique<BeamColumnElement>(
         tag, nodes, std::make_unique<DispBeamColumn<2>>(transf, section, 2));
     }
+    std::unique_ptr<Element>
+    make_elastic_corotational_3d(const Domain &domain, const int tag,
+                                 const std::array<int, 2> nodes, const ElasticSection3d &section,
+                                 const std::array<double, 3> &vecxz)
+    {
+      const CrdTransformation<3> transf =
+        transformation_3d(domain, nodes, Transformation::corotational, vecxz, tag);
+      const ElasticSection elastic(section.E * section.A, section.E * section.Iz,
+                                   section.E * section.Iy, section.G * section.J);
+      return std::make_unique<BeamColumnElement3d>(
+        tag, nodes, std::make_unique<DispBeamColumn<3>>(transf, elastic, 2),
+        BeamColumnElement3d::Kind::elastic, false);
+    }
+
     std::vector<double>
     section_values(const SectionLaw &section, const SectionVector &v)
     {

@@ -1,5 +1,6 @@
 // OpenSees's elasticBeamColumn in 3D: ElasticBeam3d on LinearCrdTransf3d or
-// PDeltaCrdTransf3d (OpenSees 3.8, SRC/element/elasticBeamColumn/ and
+// PDeltaCrdTransf3d (on CorotCrdTransf3d: make_elastic_corotational_3d,
+// opensees_beam_columns.cc) (OpenSees 3.8, SRC/element/elasticBeamColumn/ and
 // SRC/coordTransformation/), without offsets, releases or element loads;
 // made on nodes that have moved, along and as long as it is then and u
 // measured from the nodes' displacements then (the transformations'
@@ -174,9 +175,7 @@ namespace poundfe
                          const std::array<double, 3> &vecxz)
     {
       if (transformation == Transformation::corotational)
-        throw ScriptError("element " + std::to_string(tag) +
-                          ": elasticBeamColumn on a Corotational transformation in 3D: poundfe "
-                          "does not support it");
+        return make_elastic_corotational_3d(domain, tag, nodes, section, vecxz);
       return std::make_unique<ElasticBeam3d>(domain, tag, nodes, section,
                                              transformation == Transformation::pdelta, vecxz);
     }

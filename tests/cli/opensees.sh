@@ -512,8 +512,7 @@ grep -qxF "analyze -3 time 0.41" "$work/variable-clip/out" \
   || { cat "$work/variable-clip/out"; fail "variable-clip: the failed first step is not tried at dtMax"; }
 # a member made on nodes that have moved is measured from them (the corpus's
 # moved_members); one that joins two nodes moved onto each other has zero
-# length, refused at its line (OpenSees 3.8: "0 length"), as a Corotational
-# transformation in 3D
+# length, refused at its line (OpenSees 3.8: "0 length")
 moved_script() { # ELEMENT-LINE (ndm 2, node 2 swayed, node 3 where node 2 now is)
   cat <<TCL
 model basic -ndm 2 -ndf 3
@@ -550,8 +549,15 @@ for kind in "forceBeamColumn 2 2 4 1 1" "elasticBeamColumn 2 2 4 0.1 2e8 1e-3 1"
   "$poundfe" opensees "$work/moved/s.tcl" > "$work/moved/out" 2>&1 \
     || { cat "$work/moved/out"; fail "moved: $kind on a moved node"; }
 done
-printf 'model basic -ndm 3 -ndf 6\nnode 3 0 0 0\nnode 4 0 0 3\ngeomTransf Corotational 1 1 0 0\nelement elasticBeamColumn 1 3 4 0.1 2e8 8e7 1e-3 1e-3 1e-3 1\n' \
-  | bad corot-3d "8: geomTransf Corotational in 3D: poundfe does not support it" || exit 1
+# a Corotational member in space: vecxz along it, zero length, and element
+# loads, each refused at its line
+corot_3d='model basic -ndm 3 -ndf 6\nnode 3 0 0 0\nnode 4 0 0 3\nnode 5 0 0 0\nsection Elastic 1 2e8 0.1 1e-3 1e-3 8e7 1e-3\nbeamIntegration Lobatto 1 1 3\n'
+printf "$corot_3d"'geomTransf Corotational 1 0 0 2\nelement elasticBeamColumn 1 3 4 0.1 2e8 8e7 1e-3 1e-3 1e-3 1\n' \
+  | bad corot-3d-vecxz "12: element 1: the transformation's vecxz is parallel to its axis" || exit 1
+printf "$corot_3d"'geomTransf Corotational 1 1 0 0\nelement forceBeamColumn 1 3 5 1 1\n' \
+  | bad corot-3d-zero "12: element 1 has zero length" || exit 1
+printf "$corot_3d"'geomTransf Corotational 1 1 0 0\nelement dispBeamColumn 1 3 4 1 1\npattern Plain 1 Linear { eleLoad -ele 1 -type -beamUniform 1.0 0.0 }\n' \
+  | bad corot-3d-load "13: pattern: eleLoad on element 1 (only elasticBeamColumn in the plane, and forceBeamColumn and dispBeamColumn, on a Linear or PDelta transformation take it): poundfe does not support it" || exit 1
 printf 'test NormDispIncr 1e-8 10\nalgorithm Newton\nintegrator HHT 0.8\nanalysis Transient\nreset\n' \
   | bad reset-hht "9: reset with integrator HHT: poundfe does not support it" || exit 1
 # an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused

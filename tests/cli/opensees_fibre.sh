@@ -18,8 +18,9 @@
 #     (whose searches' etas are compared too), KrylovNewton, BFGS, element
 #     loads and a beam's end displacements imposed by sp; ViscousDamper,
 #     Series, twoNodeLink and the 3D beam-columns; ArcLength, constraints
-#     Lagrange and Penalty); a kept value moved by ten times its case's
-#     tolerance must fail that check (five cases);
+#     Lagrange and Penalty; geomTransf Corotational in space, and its
+#     circle against the elastica); a kept value moved by ten times its
+#     case's tolerance must fail that check (six cases);
 #  4. refusals by name: an unsupported option, a patch outside a section, a
 #     section without fibres, a missing integration, a line search other than
 #     InitialInterpolated, HHT's alpha outside (0, 1] or an infinite number,
@@ -261,6 +262,32 @@ worst = abs(2 * support[:, 2] - lam).max() / abs(lam).max()
 print(f"ArcLength: 2 R_y - lambda {worst:.1e} of the peak, lambda from {lam.max():.4g} to {lam.min():.4g}")
 sys.exit(0 if worst <= 1e-10 and lam.max() > 80 and lam.min() < -50 else 1)
 PY
+# geomTransf Corotational in space: the skew cantilever under the tip moment
+# M = 2 pi EI/L about n (its local z) rolls into a circle, Euler's elastica in
+# the plane normal to n. Each chord keeps its length l and turns by M l/EI,
+# so the nodes lie on the circle of radius l/(2 sin(pi/n)) about the base
+# moved by that radius along n x d, the tip back at the base (the continuum's
+# radius EI/M = L/2 pi within 0.7 %, about (pi/n)^2/6); the tip's rotation DOFs add up to
+# 2 pi n (increments about one axis). 1e-8 of L and 1e-9 of 2 pi: Newton's
+# tolerance (NormDispIncr 1e-12 over 40 steps)
+"$python" - "$work/vs/corot3d_circle" <<'PY' || fail "Corotational 3D: the circle"
+import math
+import sys
+import numpy as np
+nodes = np.loadtxt(sys.argv[1] + "/circle_nodes.out")[-1, 1:].reshape(-1, 3)
+rotation = np.loadtxt(sys.argv[1] + "/circle_tip_rotation.out")[-1, 1:]
+count, length = len(nodes) - 1, 4.0
+d, n = np.array([1.0, 2.0, 2.0]) / 3, np.array([2.0, 1.0, -2.0]) / 3
+x = np.outer(np.arange(count + 1) * length / count, d) + nodes
+radius = length / count / (2 * math.sin(math.pi / count))
+centre = radius * np.cross(n, d)
+radii = np.abs(np.linalg.norm(x - centre, axis=1) - radius).max() / length
+tip = np.linalg.norm(x[-1]) / length
+turn = np.abs(rotation - 2 * math.pi * n).max() / (2 * math.pi)
+polygon = radius / (length / (2 * math.pi)) - 1
+print(f"circle: radii {radii:.1e} L, tip {tip:.1e} L, rotation {turn:.1e}, polygon {polygon:.2e}")
+sys.exit(0 if radii < 1e-8 and tip < 1e-8 and turn < 1e-9 and polygon < 0.007 else 1)
+PY
 # the check can fail: one of OpenSees's kept values (a file's largest, past
 # the time column) moved by ten times its case's tolerance of its column's
 # peak is reported by name: the pounding pair's displacement with Viscous
@@ -288,6 +315,7 @@ perturbed_fails frame_3d_elastic frame3d_column.out 1e-8
 perturbed_fails links_3d links_3d_gap.out 1e-5
 perturbed_fails frame_3d_fibre frame3d_section.out 1e-5
 perturbed_fails handlers_penalty handler_disp.out 1e-8
+perturbed_fails corot3d_frame frame_roof.out 1e-5
 
 # 5. OpenSees's script of a 3D RC frame (bench/opensees/fibre_frame_3d/frame.tcl:
 #    rigidDiaphragm, forceBeamColumn on 3D fibre sections, PDelta with vecxz) against

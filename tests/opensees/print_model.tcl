@@ -64,10 +64,11 @@ node 4 4.0 0.0 3.5
 fix 1 1 1 1 1 1 1
 geomTransf Linear 1 1.0 0.0 0.0
 geomTransf PDelta 2 0.0 2.0 2.0
+geomTransf Corotational 3 0.0 1.0 0.0
 uniaxialMaterial Elastic 1 2.5e5
 section Elastic 1 2.1e11 0.0125 2.5e-4 1.25e-4 8.0e10 3.75e-4
 element elasticBeamColumn 1 1 2 0.0125 2.1e11 8.0e10 3.75e-4 1.25e-4 2.5e-4 1
-element elasticBeamColumn 2 2 3 0.0125 2.1e11 8.0e10 3.75e-4 1.25e-4 2.5e-4 2
+element elasticBeamColumn 2 2 3 0.0125 2.1e11 8.0e10 3.75e-4 1.25e-4 2.5e-4 3
 element zeroLength 3 3 4 -mat 1 1 1 -dir 1 3 5 -orient 0 1 0 -1 0 0
 beamIntegration Legendre 1 1 3
 element forceBeamColumn 4 1 3 2 1 -mass 0.75

@@ -32,12 +32,13 @@
 //       K_g = N/Ln w w^T + (MI + MJ)/Ln^2 (r w^T + w r^T)   (symmetric).
 //     alpha is taken within pi of the mean end rotation (rzI + rzJ)/2, so a
 //     member may turn through any number of turns (a circle).
-//   Corotational 3D is not provided: the program's rotational DOFs are
-//     added, not composed, and a consistent 3D corotational member needs
-//     the nodes' finite rotations (OpenSees's CorotCrdTransf3d keeps them in
-//     quaternions); constructing one is an InputError.
+//   Corotational 3D (Crisfield 1990, 1997; OpenSees's CorotCrdTransf3d):
+//     the nodal triads turned by the rotation increments between updates,
+//     elements/corotational_3d.h; commit, revert and reset keep, restore
+//     and restart the triads. No rigid end offsets (OpenSees 3.8 drops
+//     them with a warning).
 //   A member made on nodes that have moved (OpenSees's LinearCrdTransf2d/3d,
-//     PDeltaCrdTransf2d/3d, CorotCrdTransf2d::initialize: nodeIInitialDisp,
+//     PDeltaCrdTransf2d/3d, CorotCrdTransf2d/3d::initialize: nodeIInitialDisp,
 //     nodeJInitialDisp): its chord joins the ends displaced by the nodes'
 //     translations u_0 then, X_J + o_J + u_0J - (X_I + o_I + u_0I), and it
 //     is measured from then: update takes u - u_0 (BeamColumn::set_trial).
@@ -52,6 +53,8 @@
 // CrdTransf classes for the basic system and its signs.
 #ifndef poundfe_elements_crd_transformation_h
 #define poundfe_elements_crd_transformation_h
+
+#include <poundfe/elements/corotational_3d.h>
 
 #include <Eigen/Core>
 
@@ -97,7 +100,7 @@ namespace poundfe
     /// displacements when the member is made (OpenSees's initial
     /// displacements: a member added on nodes that have moved). InputError
     /// for a member of zero length, an orientation parallel to it, or a
-    /// corotational member in space.
+    /// corotational member in space with offsets.
     CrdTransformation(Transformation kind, const Point &node_i, const Point &node_j,
                       const Point &offset_i = Point::Zero(), const Point &offset_j = Point::Zero(),
                       const Eigen::Vector3d &orientation = Eigen::Vector3d::UnitZ(),
@@ -114,7 +117,15 @@ namespace poundfe
     const GlobalVector &displacements_when_made() const { return u_made; }
 
     /// Evaluate v and B at the global end displacements u (from u_made).
+    /// Corotational in space, the rotations' change since the last update
+    /// turns the nodal triads: updates follow the path of the trials.
     void update(const GlobalVector &u);
+    /// Corotational in space: keep the nodal triads, go back to the kept
+    /// ones (the next update turns them from the committed rotations), or
+    /// to the initial ones; nothing for the others.
+    void commit();
+    void revert();
+    void reset();
     const BasicVector  &basic_deformation() const { return v; }
     /// B = dv/du at the last update (constant for linear and PDelta).
     const Compatibility &compatibility() const { return b; }
@@ -137,6 +148,8 @@ namespace poundfe
     /// Whether K is symmetric whenever k_b is (PDelta's consistent one is not).
     bool has_symmetric_tangent() const
     {
+      if (type == Transformation::corotational)
+        return dim == 2;
       return type != Transformation::pdelta || opensees_tangent;
     }
 
@@ -164,6 +177,7 @@ namespace poundfe
     GlobalVector                    u_end; // u' of the last update
     double                          length = 0;      // corotational: Ln
     Eigen::Matrix<double, 2, 1>     direction;       // corotational: (c, s)
+    Corotational3d                  triads;          // corotational in space
   };
 } // namespace poundfe
 

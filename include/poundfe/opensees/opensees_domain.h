@@ -528,9 +528,10 @@ namespace poundfe
                                                  const IntegrationSpec   &integration,
                                                  const OpenSeesIteration &iteration);
     /// forceBeamColumn and dispBeamColumn in 3D (BeamColumn<3>: OpenSees's
-    /// ForceBeamColumn3d, DispBeamColumn3d) on a Linear or PDelta
-    /// transformation with the geomTransf's vecxz; uniform element loads
-    /// as the member's own (BeamColumn::set_uniform_load).
+    /// ForceBeamColumn3d, DispBeamColumn3d) on a Linear, PDelta or
+    /// Corotational transformation with the geomTransf's vecxz; uniform
+    /// element loads as the member's own (BeamColumn::set_uniform_load),
+    /// except on a Corotational one.
     std::unique_ptr<Element> make_beam_column_3d(const Domain &domain, int tag,
                                                  std::array<int, 2> nodes, BeamColumnKind kind,
                                                  Transformation               transformation,
@@ -550,6 +551,12 @@ namespace poundfe
     std::unique_ptr<Element> make_elastic_corotational_2d(const Domain &domain, int tag,
                                                           std::array<int, 2> nodes, double A,
                                                           double E, double I);
+    /// The same in space (ElasticBeam3d with CorotCrdTransf3d), with the
+    /// geomTransf's vecxz; no element loads.
+    std::unique_ptr<Element> make_elastic_corotational_3d(const Domain &domain, int tag,
+                                                          std::array<int, 2>      nodes,
+                                                          const ElasticSection3d &section,
+                                                          const std::array<double, 3> &vecxz);
 
     /// zeroLength: uniaxial materials along local directions (1-based as in
     /// OpenSees: 1-3 translations, 4-6 rotations) of the local axes x, y.
