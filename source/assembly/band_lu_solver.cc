@@ -133,6 +133,9 @@ namespace poundfe
     class BandLuSolver : public LinearSolver
     {
     public:
+      explicit BandLuSolver(const std::string &remedy)
+        : remedy(remedy)
+      {}
       void
       analyze(const SparseMatrix &matrix) override
       {
@@ -238,9 +241,10 @@ namespace poundfe
             "band-lu: the band of " + std::to_string(n) + " equations, bandwidths " +
             std::to_string(lower) + " and " + std::to_string(upper) + ", would take " +
             std::to_string(bytes / double(std::size_t(1) << 30)) +
-            " GiB, more than its limit of 2 GiB; set Linear solver = umfpack");
+            " GiB, more than its limit of 2 GiB; " + remedy);
       }
 
+      std::string              remedy; // the caller's words for UMFPACK instead
       int                      n = 0, lower = 0, upper = 0, leading = 1;
       std::vector<int>         new_index; // equation -> its place in the band
       std::vector<std::size_t> place;     // stored entry k -> its index in `band`
@@ -251,8 +255,8 @@ namespace poundfe
   } // namespace
 
   std::unique_ptr<LinearSolver>
-  create_band_lu_solver()
+  create_band_lu_solver(const std::string &remedy)
   {
-    return std::make_unique<BandLuSolver>();
+    return std::make_unique<BandLuSolver>(remedy);
   }
 } // namespace poundfe

@@ -110,7 +110,7 @@ namespace poundfe
     if (name == "umfpack")
       return create_umfpack_solver();
     if (name == "band-lu")
-      return create_band_lu_solver();
+      return create_band_lu_solver("set Linear solver = umfpack");
     if (name == "petsc")
       return create_petsc_solver();
     if (name == "trilinos")

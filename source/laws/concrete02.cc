@@ -87,14 +87,6 @@ namespace poundfe
     return trial_state(from, trial, strain);
   }
 
-  void
-  Concrete02::set_trials(const std::size_t n, const double *strains,
-                         const Concrete02State *from, Concrete02State *to) const
-  {
-    for (std::size_t k = 0; k < n; ++k)
-      to[k] = trial_state(from[k], to[k], strains[k]);
-  }
-
   Concrete02State
   Concrete02::trial_state(const Concrete02State &from, const Concrete02State &last,
                           const double strain) const

@@ -69,19 +69,12 @@ namespace poundfe
   Steel02State
   Steel02::respond(const Steel02State &from, const double strain) const
   {
-    return trial_state(from, strain);
-  }
-
-  void
-  Steel02::set_trials(const std::size_t n, const double *strains, const Steel02State *from,
-                      Steel02State *to) const
-  {
-    for (std::size_t k = 0; k < n; ++k)
-      to[k] = trial_state(from[k], strains[k]);
+    return trial_state(from, trial, strain);
   }
 
   Steel02State
-  Steel02::trial_state(const Steel02State &from, const double strain) const
+  Steel02::trial_state(const Steel02State &from, const Steel02State & /*last*/,
+                       const double strain) const
   {
     const double d_strain = strain - from.strain;
     Steel02State s        = from;

@@ -857,7 +857,8 @@ namespace poundfe
       if (!Eigen::Map<const Vector>(tangent_matrix.valuePtr(), tangent_matrix.nonZeros()).allFinite())
         throw NumericalError(not_finite);
       if (!solver)
-        solver = opts.banded_system ? create_band_lu_solver() : create_umfpack_solver();
+        solver = opts.banded_system ? create_band_lu_solver("give system UmfPack")
+                                     : create_umfpack_solver();
       if (!analysed)
         solver->analyze(tangent_matrix);
       analysed = true;

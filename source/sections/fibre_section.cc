@@ -139,8 +139,10 @@ namespace poundfe
     };
 
     /// A run of a material whose fibres' states are one typed array each
-    /// (committed, trial), evaluated by the material's set_trials: no
+    /// (committed, trial), evaluated by the material's trial_state: no
     /// virtual call per fibre. The material's one law holds its constants.
+    /// Material: a UniaxialMaterial<State> whose trial_state(from, last,
+    /// strain) is what its set_trial computes, and which befriends the run.
     template <class Material, class State>
     class TypedFibreRun final : public FibreRun
     {
@@ -155,9 +157,10 @@ namespace poundfe
       }
       void set_trials(const double *strains, double *stresses, double *tangents) override
       {
-        typed.set_trials(n, strains, committed.data(), trial.data());
         for (unsigned int k = 0; k < n; ++k)
           {
+            // trial[k] is the last trial until replaced (Concrete02's dead band)
+            trial[k]    = typed.trial_state(committed[k], trial[k], strains[k]);
             stresses[k] = trial[k].stress;
             tangents[k] = trial[k].tangent;
           }
@@ -168,9 +171,10 @@ namespace poundfe
       double stress(const unsigned int k) const override { return trial[k].stress; }
       std::string failure(const unsigned int k) const override
       {
-        return "stress-strain material: strain " + std::to_string(trial[k].strain) +
-               ", stress " + std::to_string(trial[k].stress) + ", tangent " +
-               std::to_string(trial[k].tangent) + " (not all finite)";
+        // the material's own words, of a law in fibre k's trial state
+        Material fibre = typed;
+        fibre.trial    = trial[k];
+        return fibre.failure();
       }
       const UniaxialLaw &material(unsigned int) const override { return *law; }
 

@@ -8,12 +8,15 @@
 #include <poundfe/assembly/linear_solver.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace poundfe
 {
-  /// The band-lu solver (create_linear_solver("band-lu")).
-  std::unique_ptr<LinearSolver> create_band_lu_solver();
+  /// The band-lu solver. A band beyond its storage limit is a NumericalError
+  /// ending in `remedy`: how the caller's input asks for UMFPACK instead
+  /// ("set Linear solver = umfpack", "give system UmfPack").
+  std::unique_ptr<LinearSolver> create_band_lu_solver(const std::string &remedy);
 
   /// new_index[i]: the place of equation i in the Cuthill–McKee numbering
   /// of the symmetrised pattern of `matrix` with its diagonal: the numbering

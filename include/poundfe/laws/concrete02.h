@@ -8,6 +8,12 @@
 
 namespace poundfe
 {
+  namespace internal
+  {
+    template <class Material, class State>
+    class TypedFibreRun;
+  } // namespace internal
+
   struct Concrete02Parameters
   {
     Concrete01Parameters compression;
@@ -42,16 +48,17 @@ namespace poundfe
     StressPoint tension_envelope(double strain) const;
 
     Concrete02State virgin() const override;
-    /// Each of n fibres' trial states at its strain, from its committed
-    /// state; trial[k] holds the last trial on entry (the dead band keeps its
-    /// stress and tangent). What set_trial does, for the fibres of a section
-    /// in one call (FibreSection).
-    void set_trials(std::size_t n, const double *strains, const Concrete02State *from,
-                    Concrete02State *to) const;
 
   private:
+    // a section's run of Concrete02 fibres (fibre_section.cc) keeps their
+    // states itself: it evaluates them by trial_state and words a refused
+    // one by failure()
+    template <class Material, class State>
+    friend class internal::TypedFibreRun;
+
     Concrete02State respond(const Concrete02State &from, double strain) const override;
-    /// The trial state at `strain` from `from`, `last` the last trial.
+    /// The trial state at `strain` from `from`, `last` the last trial (the
+    /// dead band keeps its stress and tangent).
     Concrete02State trial_state(const Concrete02State &from, const Concrete02State &last,
                                 double strain) const;
     /// Between the largest compression and the tension side.

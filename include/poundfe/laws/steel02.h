@@ -8,6 +8,12 @@
 
 namespace poundfe
 {
+  namespace internal
+  {
+    template <class Material, class State>
+    class TypedFibreRun;
+  } // namespace internal
+
   struct Steel02Parameters
   {
     double fy  = 0;     // yield stress (Pa), > 0
@@ -50,16 +56,19 @@ namespace poundfe
     const Steel02Parameters &parameters() const { return p; }
 
     Steel02State virgin() const override;
-    /// Each of n fibres' trial states at its strain, from its committed
-    /// state: what set_trial does, for the fibres of a section in one call
-    /// (FibreSection).
-    void set_trials(std::size_t n, const double *strains, const Steel02State *from,
-                    Steel02State *to) const;
 
   private:
+    // a section's run of Steel02 fibres (fibre_section.cc) keeps their
+    // states itself: it evaluates them by trial_state and words a refused
+    // one by failure()
+    template <class Material, class State>
+    friend class internal::TypedFibreRun;
+
     Steel02State respond(const Steel02State &from, double strain) const override;
-    /// The trial state at `strain` from `from` (respond and set_trials).
-    Steel02State trial_state(const Steel02State &from, double strain) const;
+    /// The trial state at `strain` from `from`; the last trial is not read
+    /// (Concrete02's signature, for the typed runs).
+    Steel02State trial_state(const Steel02State &from, const Steel02State &last,
+                             double strain) const;
     /// R, 1/R and the secant of the branch that starts at (eps_r, sig_r).
     void set_branch(Steel02State &s) const;
     /// Whether a virgin state stays virgin after the change `d_strain`.
