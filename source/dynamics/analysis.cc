@@ -11,8 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
-#include <tuple>
 
 namespace poundfe
 {
@@ -83,35 +83,79 @@ namespace poundfe
         }
     }
 
-    /// Every entry of each building's K and M finite and at most 1e150 in
-    /// size: an absurd stiffness, modulus, section property or mass (1e308)
-    /// made K infinite and the eigensolver lose modes, reported as a
-    /// damping-modes problem. The eigensolvers square entries (norms), so
-    /// 1e150 is where they stop being safe; no structure comes near it.
+    /// The entry named for an out-of-range entry (global row and column)
+    /// of building b's matrix: for K and M the building, their sources
+    /// being many; for C the largest of its terms a0 M, a1 K and the storey
+    /// dashpots (the rest).
+    using BlameOfEntry = std::function<std::string(unsigned int b, int row, int column)>;
+
+    /// Every entry of building b's part of `matrix` (K, M or C) finite and at
+    /// most 1e150 in size: an absurd stiffness, modulus, section property or
+    /// mass (1e308) made K infinite and the eigensolver lose modes, reported
+    /// as a damping-modes problem; an absurd C (a0 = 1e149) ran with exit 0.
+    /// The eigensolvers and Newton square entries (norms), so 1e150 is where
+    /// they stop being safe; no structure comes near it.
+    void
+    check_matrix_in_range(const InputFile &input, const Model &model,
+                          const std::array<unsigned int, 2> buildings, const SparseMatrix &matrix,
+                          const std::string &name, const std::string &sources,
+                          const BlameOfEntry &blame)
+    {
+      for (unsigned int b = buildings[0]; b < buildings[1]; ++b)
+        {
+          const unsigned int first = model.equation_range(b)[0];
+          const SparseMatrix part  = block(matrix, model.equation_range(b));
+          for (int k = 0; k < part.outerSize(); ++k)
+            for (SparseMatrix::InnerIterator entry(part, k); entry; ++entry)
+              if (!(std::abs(entry.value()) <= largest_model_value))
+                {
+                  std::ostringstream value;
+                  value << entry.value();
+                  const std::string path = blame(b, first + entry.row(), first + entry.col());
+                  throw InputError(input.file, input.line_of(path), path,
+                                   "building '" + model.buildings[b].name + "' has a " + name +
+                                     " matrix entry of " + value.str() + " (at most 1e150): " +
+                                     sources + " is out of any physical range");
+                }
+        }
+    }
+
+    /// K and M in range (check_matrix_in_range).
     void
     check_matrices_in_range(const InputFile &input, const Model &model,
                             const std::array<unsigned int, 2> buildings,
                             const LinearSystem &system)
     {
-      constexpr double largest = largest_model_value;
-      for (unsigned int b = buildings[0]; b < buildings[1]; ++b)
-        for (const auto &[matrix, name, sources] :
-             {std::tuple{&system.stiffness, "stiffness", "a stiffness, modulus or section property"},
-              std::tuple{&system.mass, "mass", "a mass or density"}})
-          {
-            const SparseMatrix part = block(*matrix, model.equation_range(b));
-            for (int k = 0; k < part.outerSize(); ++k)
-              for (SparseMatrix::InnerIterator entry(part, k); entry; ++entry)
-                if (!(std::abs(entry.value()) <= largest))
-                  {
-                    std::ostringstream value;
-                    value << entry.value();
-                    throw InputError(input.file, 0, "Building " + std::to_string(b + 1),
-                                     "building '" + model.buildings[b].name + "' has a " + name +
-                                       " matrix entry of " + value.str() + " (at most 1e150): " +
-                                       sources + " is out of any physical range");
-                  }
-          }
+      const BlameOfEntry building = [](const unsigned int b, int, int) {
+        return "Building " + std::to_string(b + 1);
+      };
+      check_matrix_in_range(input, model, buildings, system.stiffness, "stiffness",
+                            "a stiffness, modulus or section property", building);
+      check_matrix_in_range(input, model, buildings, system.mass, "mass", "a mass or density",
+                            building);
+    }
+
+    /// C in range (check_matrix_in_range), once assembled: the Rayleigh
+    /// terms of M and K (the superstructure's, as assemble_damping takes).
+    void
+    check_damping_in_range(const InputFile &input, const Model &model,
+                           const std::array<unsigned int, 2> buildings, const LinearSystem &system)
+    {
+      const bool          structure = system.structure_mass.rows() > 0;
+      const SparseMatrix &mass      = structure ? system.structure_mass : system.mass;
+      const SparseMatrix &stiffness = structure ? system.structure_stiffness : system.stiffness;
+      const BlameOfEntry  term      = [&](const unsigned int b, const int row, const int column) {
+        const std::string s = "Building " + std::to_string(b + 1) + "/";
+        const double mass_term      = system.rayleigh[b][0] * std::abs(mass.coeff(row, column));
+        const double stiffness_term = system.rayleigh[b][1] * std::abs(stiffness.coeff(row, column));
+        const double dashpots       = std::abs(system.damping.coeff(row, column)) -
+                                mass_term - stiffness_term;
+        if (dashpots > std::max(mass_term, stiffness_term)) // NaN (inf - inf): a Rayleigh term
+          return s + "Storey damping";
+        return s + "Damping/" + (mass_term >= stiffness_term ? "a0" : "a1");
+      };
+      check_matrix_in_range(input, model, buildings, system.damping, "damping",
+                            "a storey dashpot or Rayleigh coefficient (C = a0 M + a1 K)", term);
     }
 
     /// The modes of one building (`what`) or of the whole model, by the
@@ -360,6 +404,7 @@ namespace poundfe
                    std::array<double, 2>{{0, 0}});
         }
       assemble_damping(model, coefficients, system);
+      check_damping_in_range(input, model, buildings, system);
       assemble_modal_damping(analysis);
       if (n_model_modes > 0)
         analysis.modes = modes_of(input, modal, system.mass, modal_stiffness, system.influence,

@@ -178,7 +178,8 @@ namespace poundfe
     {
       prm.add_parameter("Duration", p.duration, "Length of the sample. Unit: s.");
       prm.add_parameter("Sample interval", p.sample_interval,
-                        "White-noise sample interval (0: the analysis time step). Unit: s.");
+                        "White-noise sample interval (0: the analysis time step); this or the time "
+                        "step at most Duration. Unit: s.");
       // explicit ranges: deal.II's pattern for unsigned int has none, and
       // "-1" would be read as 4294967295
       prm.add_parameter("Seed", p.seed, "Random seed. Unit: -.", dealii::Patterns::Integer(0));
@@ -478,6 +479,12 @@ namespace poundfe
         input.positive(st + "Peak factor", peak_factor);
         input.positive(st + "Duration", duration);
         input.non_negative(st + "Sample interval", sample_interval);
+        // one sample for the whole motion: a Time step of 1e200 s gave the
+        // spectrum of nothing with exit 0
+        if (!(held_interval(time_step) <= duration))
+          input.fail(sample_interval > 0 ? st + "Sample interval" : "Time integration/Time step",
+                     "must not exceed the motion's length, " + number_text(duration) + " s (" +
+                       st + "Duration), got " + number_text(held_interval(time_step)) + " s");
         input.positive(st + "Rise end", jennings_rise_end);
         if (jennings_plateau_end < jennings_rise_end)
           input.fail(st + "Plateau end", "must not be before the rise end");

@@ -272,7 +272,7 @@ namespace poundfe
                       "hold the floor (the SD or Duffing oscillator). Unit: N/m.");
     prm.add_parameter("Storey damping", storey_damping,
                       "[shear] Storey dashpot, one or per storey (added to the Rayleigh "
-                      "damping). Unit: N s/m.");
+                      "damping); at most 1e150, the largest value of a model. Unit: N s/m.");
     prm.add_parameter("Storey yield drifts", storey_yield_drifts,
                       "[shear] Yield drift u_y of a Bouc-Wen storey (force k u_y at yield), "
                       "one value or one per storey; empty or 0: elastic; at most 1e4 m (beyond any "
@@ -369,9 +369,11 @@ namespace poundfe
                       "modes); two sway modes, not vertical ones. Unit: -.",
                       Patterns::List(Patterns::Integer(0)));
     prm.add_parameter("a0", rayleigh_a0,
-                      "Mass-proportional coefficient (Type = coefficients). Unit: 1/s.");
+                      "Mass-proportional coefficient (Type = coefficients); at most 1e150, as every "
+                      "entry of C = a0 M + a1 K. Unit: 1/s.");
     prm.add_parameter("a1", rayleigh_a1,
-                      "Stiffness-proportional coefficient (Type = coefficients). Unit: s.");
+                      "Stiffness-proportional coefficient (Type = coefficients); at most 1e150, as "
+                      "every entry of C = a0 M + a1 K. Unit: s.");
     prm.add_parameter("Modal ratios", modal_damping_ratios,
                       "Damping ratio of modes 1, 2, ... of this building (Type = modal); "
                       "the modes beyond the list are undamped. Unit: dimensionless.");
@@ -464,6 +466,9 @@ namespace poundfe
           input.list(s + "Storey stiffnesses", b.storey_stiffnesses, n, true, "one per storey");
           check_lower_bounds(input, s + "Storey stiffnesses", b.storey_stiffnesses, "N/m");
           input.list(s + "Storey damping", b.storey_damping, n, true, "one per storey");
+          for (const double c : b.storey_damping) // 1e200 ran with exit 0
+            input.at_most(s + "Storey damping", c, largest_model_value, "N s/m",
+                          "the largest value of a model");
           input.non_negative(s + "Drawing width", b.drawing_width);
         }
       if (b.type == BuildingType::mesh)
@@ -543,6 +548,12 @@ namespace poundfe
         {
           input.non_negative(s + "Damping/a0", b.rayleigh_a0);
           input.non_negative(s + "Damping/a1", b.rayleigh_a1);
+          // C = a0 M + a1 K, whose entries are held to the same bound
+          // (dynamics/analysis.cc): a coefficient beyond it cannot meet it
+          input.at_most(s + "Damping/a0", b.rayleigh_a0, largest_model_value, "1/s",
+                        "the largest value of a model");
+          input.at_most(s + "Damping/a1", b.rayleigh_a1, largest_model_value, "s",
+                        "the largest value of a model");
         }
     }
 
@@ -672,7 +683,8 @@ namespace poundfe
                       "Acceleration of gravity for the P-Delta loads. Unit: m/s^2.");
     prm.add_parameter("Separations", separations,
                       "Clear distance between building i and i+1 (one value for "
-                      "all pairs or one per pair). Unit: m.");
+                      "all pairs or one per pair); at most 1e7, the bound of site "
+                      "coordinates (Plan/Position). Unit: m.");
     declare_gravity_analysis(prm);
     prm.leave_subsection();
     for (unsigned int b = 0; b < buildings.size(); ++b)
@@ -740,5 +752,9 @@ namespace poundfe
     if (buildings.size() > 1)
       input.list("Model/Separations", separations, buildings.size() - 1, true,
                  "one per neighbouring pair");
+    for (const double gap : separations) // 1e200 ran with exit 0 (no contact ever)
+      input.at_most("Model/Separations", gap, largest_site_coordinate, "m",
+                    "the bound of site coordinates, Plan/Position: buildings that far apart "
+                    "are on no common site");
   }
 } // namespace poundfe
