@@ -338,6 +338,8 @@ CASES = {
     "corot3d_modes_elastic": ("corotational_3d.tcl", ["modes", "elasticBeamColumn"], 1e-9),
     "corot3d_modes_force": ("corotational_3d.tcl", ["modes", "forceBeamColumn"], 1e-9),
     "corot3d_modes_disp": ("corotational_3d.tcl", ["modes", "dispBeamColumn"], 1e-9),
+    # modalDamping on those modes under a record
+    "corot3d_modal": ("corotational_3d.tcl", ["modes", "dispBeamColumn", "modal"], 1e-6),
 }
 # Each line search iteration a program prints (-pFlag 0), kept as a table
 # "iteration eta |s/s0|" in SEARCH_FILE: both print 6 significant digits,

@@ -21,6 +21,20 @@
 
 namespace poundfe
 {
+  namespace
+  {
+    /// Why section i refused its trial deformation: its own reason, or (a
+    /// section that gives none, such as an elastic one) that the deformation
+    /// or its resultants are not finite.
+    std::string
+    section_failure(const unsigned int i, const SectionLaw &section)
+    {
+      const std::string why = section.failure();
+      return "section " + std::to_string(i) + ": " +
+             (why.empty() ? "its deformation or resultants are not finite" : why);
+    }
+  } // namespace
+
   std::vector<std::unique_ptr<SectionLaw>>
   sections_along(const BeamIntegration &integration, const SectionLaw &section)
   {
@@ -295,7 +309,7 @@ namespace poundfe
         SectionLaw         &s = *this->sections[i];
         if (!s.set_trial(SectionVector(a * v)))
           {
-            this->why = "section " + std::to_string(i) + ": " + s.failure();
+            this->why = section_failure(i, s);
             return false;
           }
         const double wl = this->rule.weights[i] * L;
@@ -423,7 +437,7 @@ namespace poundfe
             SectionLaw &section = *this->sections[i];
             if (!section.set_trial(SectionVector(start.e[i])))
               {
-                this->why = "section " + std::to_string(i) + ": " + section.failure();
+                this->why = section_failure(i, section);
                 return -1;
               }
             start.s[i]      = section.resultant();
@@ -638,7 +652,7 @@ namespace poundfe
             SectionLaw &section = *this->sections[i];
             if (!section.set_trial(SectionVector(current.e[i])))
               {
-                this->why = "section " + std::to_string(i) + ": " + section.failure();
+                this->why = section_failure(i, section);
                 return false;
               }
             current.s[i]    = section.resultant();

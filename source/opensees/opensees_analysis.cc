@@ -1600,9 +1600,8 @@ namespace poundfe
         Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solution(M, K);
         if (solution.info() != Eigen::Success)
           throw ScriptError("eigen: the stiffness matrix is not positive definite");
-        for (int i = solution.eigenvalues().size() - 1; i >= 0 &&
-                                                   lambda.size() < static_cast<std::size_t>(shapes.cols());
-             --i)
+        const std::size_t n_modes = shapes.cols();
+        for (int i = solution.eigenvalues().size() - 1; i >= 0 && lambda.size() < n_modes; --i)
           if (solution.eigenvalues()[i] > 0)
             {
               shapes.col(lambda.size()) = solution.eigenvectors().col(i);
@@ -1612,7 +1611,8 @@ namespace poundfe
 
       /// K phi = lambda M phi for a nonsymmetric K, as OpenSees's
       /// FullGenEigenSolver (LAPACK dggev): the QZ pairs (alpha, beta),
-      /// lambda = Re(alpha) / beta, a complex pair -|alpha| / beta, a
+      /// lambda = alpha / beta for a real alpha, -|alpha| / beta for a
+      /// complex one (so left out, as negative), a
       /// vanishing beta (a massless DOF) infinite; the positive finite
       /// lambda, smallest first, with the real parts of their vectors.
       void

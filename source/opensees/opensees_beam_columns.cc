@@ -38,6 +38,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <optional>
 
 namespace poundfe
@@ -335,7 +336,8 @@ namespace poundfe
         if (kind == Kind::force_based && first_initial_tangent)
           return *first_initial_tangent;
         // B^T k_b0 B at the current geometry (no geometric part at q = 0)
-        const Matrix k0 = t.global_tangent(BeamColumn<3>::BasicVector::Zero(), virgin_basic_tangent);
+        const Matrix k0 =
+          t.global_tangent(BeamColumn<3>::BasicVector::Zero(), virgin_basic_tangent);
         if (kind == Kind::force_based)
           first_initial_tangent = k0;
         return k0;
@@ -396,6 +398,11 @@ namespace poundfe
         if (!(chord.norm() > 0))
           throw ScriptError("element " + std::to_string(tag) + " has zero length");
         const Eigen::Vector3d v(vecxz[0], vecxz[1], vecxz[2]);
+        // huge coordinates or vecxz overflow the length or the local z axis
+        if (!std::isfinite(chord.norm()) || !std::isfinite(chord.cross(v).norm()))
+          throw ScriptError("element " + std::to_string(tag) +
+                            ": its geometry is not finite in double precision (the length or "
+                            "the product of the axis and the transformation's vecxz overflows)");
         if (!(chord.cross(v).norm() > 0))
           throw ScriptError("element " + std::to_string(tag) +
                             ": the transformation's vecxz is parallel to its axis");

@@ -558,6 +558,19 @@ printf "$corot_3d"'geomTransf Corotational 1 1 0 0\nelement forceBeamColumn 1 3 
   | bad corot-3d-zero "12: element 1 has zero length" || exit 1
 printf "$corot_3d"'geomTransf Corotational 1 1 0 0\nelement dispBeamColumn 1 3 4 1 1\npattern Plain 1 Linear { eleLoad -ele 1 -type -beamUniform 1.0 0.0 }\n' \
   | bad corot-3d-load "13: pattern: eleLoad on element 1 (only elasticBeamColumn in the plane, and forceBeamColumn and dispBeamColumn, on a Linear or PDelta transformation take it): poundfe does not support it" || exit 1
+# a vecxz whose product with the axis overflows; an elasticBeamColumn's
+# basicDeformation (ElasticBeam3d has none, as on Linear)
+printf "$corot_3d"'geomTransf Corotational 1 1e308 1e308 0\nelement forceBeamColumn 1 3 4 1 1\n' \
+  | bad corot-3d-overflow "12: element 1: its geometry is not finite in double precision (the length or the product of the axis and the transformation's vecxz overflows)" || exit 1
+printf "$corot_3d"'geomTransf Corotational 1 1 0 0\nelement elasticBeamColumn 1 3 4 0.1 2e8 8e7 1e-3 1e-3 1e-3 1\nrecorder Element -file r2.out -ele 1 basicDeformation\n' \
+  | bad corot-3d-elastic-basic "13: recorder: element 1 has no response 'basicDeformation' in poundfe" || exit 1
+# a load that overflows an elastic section: the failed step names why
+mkdir -p "$work/corot-3d-huge"
+printf "$corot_3d"'fix 3 1 1 1 1 1 1\nfix 5 1 1 1 1 1 1\ngeomTransf Corotational 1 1 0 0\nelement forceBeamColumn 1 3 4 1 1\npattern Plain 1 Linear { load 4 1e300 0 0 0 0 0 }\nintegrator LoadControl 1.0\nanalysis Static\nputs [analyze 1]\n' \
+  > "$work/corot-3d-huge/s.tcl"
+"$poundfe" opensees "$work/corot-3d-huge/s.tcl" > "$work/corot-3d-huge/out" 2>&1
+grep -qF "(element 1: section 0: its deformation or resultants are not finite)" "$work/corot-3d-huge/out" \
+  || { cat "$work/corot-3d-huge/out"; fail "corot-3d-huge: the failed step's reason"; }
 printf 'test NormDispIncr 1e-8 10\nalgorithm Newton\nintegrator HHT 0.8\nanalysis Transient\nreset\n' \
   | bad reset-hht "9: reset with integrator HHT: poundfe does not support it" || exit 1
 # an element between nodes of differing -ndf (OpenSees: "differing dof at ends"), refused

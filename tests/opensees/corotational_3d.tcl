@@ -25,7 +25,11 @@
 #   modes ELEMENT  a skew cantilever of four members of ELEMENT with -mass
 #            and a tip mass, and a second (elastic) post, under a tip load
 #            that bends it: `eigen -fullGenLapack 3` before the load and
-#            after it, when the members' tangent is no longer symmetric.
+#            after it, when the members' tangent is no longer symmetric;
+#            `modes ELEMENT modal`: then modalDamping 0.05 on those modes
+#            and 1.5 s of the synthetic record (FullGeneral, in which
+#            OpenSees keeps the whole modal matrix in the tangent: the
+#            triads follow Newton's iterates).
 set out [lindex $argv 0]
 set variant [lindex $argv 1]
 source [file join [file dirname [info script]] record.tcl]
@@ -132,6 +136,17 @@ if {$variant eq "circle"} {
     set status [analyze 4]
     puts $file "1.0 [eigen -fullGenLapack 3]"
     close $file
+    if {[lindex $argv 3] eq "modal"} {
+        modalDamping 0.05
+        recorder Node -file $out/modes_tip.out -time -precision 16 -node 5 11 -dof 1 2 3 4 5 6 disp
+        timeSeries Path 2 -dt 0.01 -values [synthetic_record 0.01 150 3.0]
+        pattern UniformExcitation 2 1 -accel 2
+        system FullGeneral
+        test NormDispIncr 1.0e-11 60
+        integrator Newmark 0.5 0.25
+        analysis Transient
+        set status [analyze 150 0.01]
+    }
     puts "corotational_3d modes $element: status $status tip [nodeDisp 5 1] [nodeDisp 5 2] [nodeDisp 5 3]"
 } elseif {$variant eq "frame"} {
     set Lx 5.0; set Ly 4.0; set H 3.0; set m 16000.0; set g 9.81
