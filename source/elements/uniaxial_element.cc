@@ -152,6 +152,7 @@ namespace poundfe
     law->commit();
     committed_deformation = trial_deformation;
     committed_force       = law->force();
+    committed_rate        = trial_rate;
   }
 
   void
@@ -159,13 +160,14 @@ namespace poundfe
   {
     law->revert();
     trial_deformation = committed_deformation;
+    trial_rate        = committed_rate;
   }
 
   void
   UniaxialElement::reset()
   {
     law->reset();
-    committed_deformation = trial_deformation = trial_rate = 0;
+    committed_deformation = trial_deformation = trial_rate = committed_rate = 0;
     committed_force                           = law->force();
   }
 } // namespace poundfe

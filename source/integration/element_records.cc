@@ -4,8 +4,6 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <typeinfo>
-
 namespace poundfe
 {
   ElementRecords::ElementRecords(const NonlinearElements *elements,
@@ -47,10 +45,12 @@ namespace poundfe
     held_work = 0;
     for (const unsigned int h : kept)
       work_done[h] = elements[h].stored_energy();
+    // accept() commits these through the pointers: it must be given the
+    // elements given here, as both callers do (the integrator's own). The
+    // const_cast goes with start()'s const argument in the header.
     typed.assign(elements.size(), nullptr);
     for (const unsigned int h : kept)
-      if (typeid(elements[h]) == typeid(UniaxialElement))
-        typed[h] = static_cast<UniaxialElement *>(const_cast<NonlinearElement *>(&elements[h]));
+      typed[h] = const_cast<UniaxialElement *>(as_uniaxial(elements[h]));
   }
 
   template <typename Element>
@@ -101,6 +101,7 @@ namespace poundfe
     for (const unsigned int h : kept)
       if (UniaxialElement *const e = typed[h])
         {
+          Assert(e == &elements[h], dealii::ExcMessage("accept() without start()'s elements"));
           accept_element(h, *e, counted, belt);
           rate[h] = e->trial_rate_value();
         }

@@ -116,7 +116,7 @@ namespace poundfe
     {
       uniaxial.assign(n_elements, nullptr);
       for (unsigned int h = 0; h < n_elements; ++h)
-        uniaxial[h] = dynamic_cast<UniaxialElement *>(&(*elements)[h]);
+        uniaxial[h] = as_uniaxial((*elements)[h]);
       return std::count(uniaxial.begin(), uniaxial.end(), nullptr) == 0;
     }
 

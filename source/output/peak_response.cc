@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <typeinfo>
 
 namespace poundfe
 {
@@ -45,9 +44,7 @@ namespace poundfe
     observed.clear();
     for (unsigned int h = 0; h < elements.size(); ++h)
       if (state.observes_element(h))
-        observed.emplace_back(h, typeid(elements[h]) == typeid(UniaxialElement) ?
-                                   static_cast<const UniaxialElement *>(&elements[h]) :
-                                   nullptr);
+        observed.emplace_back(h, as_uniaxial(elements[h]));
     observe_floors(state);
     observe_elements(state, false); // the initial state: formed from u
   }

@@ -440,3 +440,39 @@ BOOST_AUTO_TEST_CASE(newmark_steps_end_on_the_elements_last_evaluation)
         BOOST_TEST(in_contact > 0u);
     }
 }
+
+BOOST_AUTO_TEST_CASE(uniaxial_element_revert_restores_the_committed_deformation_and_rate)
+{
+  // A rejected step restores the committed state exactly: after revert the
+  // trial deformation and rate read back are those of the last commit, not
+  // of the refused trial. The second method is the committed values
+  // themselves (a linear spring, d = u0 - u1 and its rate): tolerance 0,
+  // they are copied, not formed again. Also as_uniaxial: the element as
+  // its final class, const kept (its null for another class is exercised
+  // by accept_asks_each_element_once, through ElementRecords::start).
+  SpringLawParameters linear;
+  linear.kind      = SpringKind::cubic;
+  linear.stiffness = 3;
+  linear.cubic     = 0;
+  NonlinearElements elements;
+  elements.emplace_back<UniaxialElement>(ElementKind::spring, 0, "spring",
+                                         std::array<int, 2>{{0, 1}},
+                                         std::make_unique<ElasticSpring>(linear));
+  UniaxialElement *const e = as_uniaxial(elements[0]);
+  BOOST_REQUIRE(e != nullptr);
+  const NonlinearElements &read_only = elements;
+  BOOST_TEST(as_uniaxial(read_only[0]) == e);
+
+  const Eigen::Vector2d u_committed(0.5, 0.25), v_committed(2.0, -1.0);
+  BOOST_TEST(e->set_trial(u_committed, v_committed));
+  e->commit();
+  const Eigen::Vector2d u_refused(1.5, -0.5), v_refused(-4.0, 3.0);
+  BOOST_TEST(e->set_trial(u_refused, v_refused));
+  BOOST_TEST(e->trial_rate_value() == -7.0); // the refused trial's, before revert
+  e->revert();
+  BOOST_TEST(e->trial_deformation_value() == 0.25);
+  BOOST_TEST(e->trial_rate_value() == 3.0);
+  e->reset();
+  BOOST_TEST(e->trial_deformation_value() == 0.0);
+  BOOST_TEST(e->trial_rate_value() == 0.0);
+}

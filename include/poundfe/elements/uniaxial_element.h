@@ -18,6 +18,8 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <typeinfo>
 #include <vector>
 
 namespace poundfe
@@ -80,9 +82,9 @@ namespace poundfe
     double initial_stiffness() const override { return law->initial_stiffness(); }
 
     /// The deformation and its rate at the last trial state (set_trial or
-    /// evaluate; after revert, the committed deformation): once Newton has
-    /// converged, deformation(u) and deformation(v) of the accepted state,
-    /// the same sums in the same order and so the same bits, not formed again.
+    /// evaluate; after revert, the committed deformation and rate): once
+    /// Newton has converged, deformation(u) and deformation(v) of the accepted
+    /// state, the same sums in the same order and so the same bits, not formed again.
     double trial_deformation_value() const { return trial_deformation; }
     double trial_rate_value() const { return trial_rate; }
     /// The law through the final class: calls on it are the law's only.
@@ -98,8 +100,26 @@ namespace poundfe
     std::vector<unsigned int>    free_dofs; // local DOFs whose equation >= 0, in order
     // For the work of a step: the committed deformation and force, the trial deformation.
     double committed_deformation = 0, committed_force = 0, trial_deformation = 0;
-    double trial_rate = 0; // of the last set_trial or evaluate
+    // of the last set_trial or evaluate, and of the last commit (revert restores it)
+    double trial_rate = 0, committed_rate = 0;
   };
+
+  /// `element` as the UniaxialElement it is, else null (const kept): a
+  /// comparison of type_info, cheaper than a dynamic_cast and the same answer,
+  /// the class being final. For the lists of the per-step and per-iteration
+  /// loops, which then call through the final class: the law's virtual call
+  /// only, not the element's and then the law's; the same functions, so the
+  /// same bits.
+  template <typename Element>
+  auto *
+  as_uniaxial(Element &element)
+  {
+    static_assert(std::is_base_of_v<NonlinearElement, std::remove_const_t<Element>>);
+    using Uniaxial =
+      std::conditional_t<std::is_const_v<Element>, const UniaxialElement, UniaxialElement>;
+    return typeid(element) == typeid(UniaxialElement) ? static_cast<Uniaxial *>(&element) :
+                                                        nullptr;
+  }
 } // namespace poundfe
 
 #endif
