@@ -45,20 +45,14 @@ namespace poundfe
       return error ? path : target.string();
     }
 
-    /// Opens the temporary of `destination` in its directory (the rename
-    /// stays on one file system): "<name>.tmp", or, when that name would
-    /// exceed NAME_MAX, a short name unique to this process and call.
-    /// Returns the descriptor (< 0: errno says why); `temporary` its path.
+    /// Opens a temporary in `destination`'s directory (the rename stays on
+    /// one file system) with O_EXCL, so that no other writer shares it:
+    /// ".poundfe-<pid>-<n>.tmp", unique to this process and call.
     int
-    open_temporary(const std::string &destination, std::string &temporary)
+    open_unique_temporary(const std::string &destination, std::string &temporary)
     {
-      const std::filesystem::path path(destination);
-      if (path.filename().string().size() + std::strlen(".tmp") <= NAME_MAX)
-        {
-          temporary = destination + ".tmp";
-          return ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-        }
       static std::atomic<unsigned long> next{0};
+      const std::filesystem::path path(destination);
       const std::string directory = path.has_parent_path() ? path.parent_path().string() + "/" : "";
       while (true)
         {
@@ -69,6 +63,28 @@ namespace poundfe
           if (descriptor >= 0 || errno != EEXIST)
             return descriptor;
         }
+    }
+
+    /// Opens the temporary of `path`, which a commit renames onto
+    /// `destination`: "<path>.tmp", which a later run's cleanup knows by
+    /// its name (output_directory.cc), when `path` is the destination itself
+    /// and the name fits NAME_MAX; otherwise a unique temporary. A link's
+    /// destination may be reached by several outputs of one run (two links
+    /// to one file, or a link to another output): each writes its own
+    /// temporary, whole, and the last commit's file is the one that stays.
+    /// Returns the descriptor (< 0: errno says why); `temporary` its path.
+    int
+    open_temporary(const std::string &path,
+                   const std::string &destination,
+                   std::string       &temporary)
+    {
+      const bool plain = destination == path &&
+                         std::filesystem::path(path).filename().string().size() +
+                             std::strlen(".tmp") <= NAME_MAX;
+      if (!plain)
+        return open_unique_temporary(destination, temporary);
+      temporary = path + ".tmp";
+      return ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     }
 
     /// Removes a file's temporary, if it has one (a device's has none).
@@ -92,7 +108,7 @@ namespace poundfe
         return;
       }
     register_output(final_path); // listed before it exists (output_directory.h)
-    descriptor = open_temporary(destination_of(final_path), temporary_path);
+    descriptor = open_temporary(final_path, destination_of(final_path), temporary_path);
     if (descriptor < 0)
       {
         const int error_number = errno;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -134,6 +135,42 @@ namespace poundfe
             !fs::remove(file, error) && error && error != std::errc::no_such_file_or_directory)
           failed = error;
       return failed;
+    }
+
+    /// Whether `name` is a unique temporary of AtomicFile
+    /// (".poundfe-<pid>-<n>.tmp", atomic_file.cc) whose process is gone:
+    /// left by a kill -9. A live process's, this one's included, stays.
+    bool
+    is_stale_temporary(const std::string &name)
+    {
+      const std::string prefix = ".poundfe-", suffix = ".tmp";
+      if (name.size() <= prefix.size() + suffix.size() || name.rfind(prefix, 0) != 0 ||
+          name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+      const std::string middle =
+        name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+      const std::size_t dash = middle.find('-');
+      const auto digits = [](const std::string &t) {
+        return !t.empty() && t.size() < 10 &&
+               std::all_of(t.begin(), t.end(), [](const char c) { return c >= '0' && c <= '9'; });
+      };
+      if (dash == std::string::npos || !digits(middle.substr(0, dash)) ||
+          !digits(middle.substr(dash + 1)))
+        return false;
+      const pid_t pid = std::stoi(middle.substr(0, dash));
+      return pid > 0 && pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH;
+    }
+
+    /// Removes the stale unique temporaries directly in `directory`.
+    void
+    remove_stale_temporaries(const fs::path &directory)
+    {
+      std::error_code error;
+      for (fs::directory_iterator entry(directory, error), end; !error && entry != end;
+           entry.increment(error))
+        if (std::error_code failed; is_stale_temporary(entry->path().filename().string()) &&
+                                    fs::is_regular_file(entry->symlink_status(failed)))
+          fs::remove(entry->path(), failed); // what cannot go stays
     }
   } // namespace
 
@@ -268,6 +305,11 @@ namespace poundfe
         if (const std::error_code failed = remove_listed(root, entry))
           throw OutputError("remove the earlier run's file", path.string(), failed.value());
       }
+    // a long name's unique temporary (atomic_file.cc) left by a kill -9:
+    // in the directory or one it listed, reached without links
+    remove_stale_temporaries(root);
+    for (const std::string &entry : directories)
+      remove_stale_temporaries(root / entry);
     std::sort(directories.begin(), directories.end(),
               [](const std::string &a, const std::string &b) { return a.size() > b.size(); });
     for (const std::string &entry : directories)

@@ -39,35 +39,53 @@ namespace poundfe
       return std::isfinite(upper) && !(d.mean() + 10 * d.standard_deviation() < upper);
     }
 
-    /// Whether `d` can sample a value outside [lower, upper] (lower itself
-    /// too when !lower_included; above, a distribution unbounded there by
-    /// tail_reaches).
+    /// Whether `d` can sample a value below range.lower (lower itself too
+    /// when !lower_included).
     bool
-    samples_out_of_range(const Distribution &d, const ModelParameter::Range &range)
+    samples_below(const Distribution &d, const ModelParameter::Range &range)
     {
-      const std::vector<double> &p       = d.parameters();
-      const double               infinity = std::numeric_limits<double>::infinity();
-      double                     lowest = -infinity, highest = infinity;
+      const std::vector<double> &p = d.parameters();
+      double lowest = -std::numeric_limits<double>::infinity(); // normal, Gumbel
       switch (d.type())
         {
           case DistributionType::lognormal:
           case DistributionType::weibull:
-            // support (0, inf): 0 itself is never sampled
-            return !(range.lower <= 0) || tail_reaches(d, range.upper);
+            return !(range.lower <= 0); // support (0, inf): 0 itself is never sampled
           case DistributionType::uniform:
-            lowest = p[0], highest = p[1];
+            lowest = p[0];
             break;
           case DistributionType::truncated_normal:
-            lowest = p[2], highest = p[3];
+            lowest = p[2];
             break;
           case DistributionType::normal:
           case DistributionType::gumbel:
             break;
         }
-      const bool below = range.lower_included ? lowest < range.lower : lowest <= range.lower;
-      if (highest == infinity) // normal, Gumbel
-        return below || tail_reaches(d, range.upper);
-      return below || (range.upper_included ? highest > range.upper : highest >= range.upper);
+      return range.lower_included ? lowest < range.lower : lowest <= range.lower;
+    }
+
+    /// Whether `d` can sample a value above range.upper (upper itself too
+    /// when !upper_included; a distribution unbounded above by tail_reaches).
+    bool
+    samples_above(const Distribution &d, const ModelParameter::Range &range)
+    {
+      const std::vector<double> &p = d.parameters();
+      switch (d.type())
+        {
+          case DistributionType::uniform:
+            return range.upper_included ? p[1] > range.upper : p[1] >= range.upper;
+          case DistributionType::truncated_normal:
+            return range.upper_included ? p[3] > range.upper : p[3] >= range.upper;
+          default: // lognormal, Weibull, normal, Gumbel: unbounded above
+            return tail_reaches(d, range.upper);
+        }
+    }
+
+    /// Whether `d` can sample a value outside [lower, upper].
+    bool
+    samples_out_of_range(const Distribution &d, const ModelParameter::Range &range)
+    {
+      return samples_below(d, range) || samples_above(d, range);
     }
 
     /// Whether `d` can sample a value beyond 1e150 in size (largest_model_value),
@@ -128,14 +146,16 @@ namespace poundfe
         }
     }
 
-    /// "<= 0", "< 1", "< 0 or > 1": the values outside the range.
+    /// "<= 0", "> 5e+10", "< 0 or > 1": the values outside the range that
+    /// `d` can sample.
     std::string
-    outside_text(const ModelParameter::Range &range)
+    outside_text(const Distribution &d, const ModelParameter::Range &range)
     {
-      const std::string text = (range.lower_included ? "< " : "<= ") + number_text(range.lower);
-      return std::isfinite(range.upper) ?
-               text + (range.upper_included ? " or > " : " or >= ") + number_text(range.upper) :
-               text;
+      const std::string below = (range.lower_included ? "< " : "<= ") + number_text(range.lower);
+      const std::string above = (range.upper_included ? "> " : ">= ") + number_text(range.upper);
+      if (!samples_above(d, range))
+        return below;
+      return samples_below(d, range) ? below + " or " + above : above;
     }
 
     /// ">= 0", "> 0", "and <= 1": the bounds a distribution's support must keep.
@@ -147,6 +167,22 @@ namespace poundfe
                text + (range.upper_included ? " and upper <= " : " and upper < ") +
                  number_text(range.upper) :
                text;
+    }
+
+    /// The distributions to use instead: a lognormal or Weibull when their
+    /// support (0, inf) keeps above the lower bound (with their mean ten
+    /// standard deviations below a finite upper one, tail_reaches), and a
+    /// uniform or truncated normal inside the range.
+    std::string
+    remedy_text(const ModelParameter::Range &range)
+    {
+      std::string text = "use ";
+      if (range.lower <= 0)
+        text += std::isfinite(range.upper) ?
+                  "a lognormal or Weibull whose mean lies more than ten standard deviations "
+                  "below " + number_text(range.upper) + ", or " :
+                  "a lognormal or Weibull, or ";
+      return text + "a uniform or truncated normal with lower " + inside_text(range);
     }
   } // namespace
 
@@ -372,14 +408,9 @@ namespace poundfe
         if (samples_out_of_range(p.distributions[i], range))
           input.fail(entry, "variable '" + p.names[i] + "': a " +
                               distribution_name(p.distributions[i].type()) +
-                              " distribution can sample values " + outside_text(range) +
-                              ", which '" + p.paths[i] + "' cannot take (use " +
-                              (std::isfinite(range.upper) ?
-                                 "a distribution whose mean lies ten standard deviations "
-                                 "below " + number_text(range.upper) + ", or " :
-                                 "a lognormal or Weibull, or ") +
-                              "a uniform or truncated normal with lower " + inside_text(range) +
-                              ")");
+                              " distribution can sample values " +
+                              outside_text(p.distributions[i], range) + ", which '" + p.paths[i] +
+                              "' cannot take (" + remedy_text(range) + ")");
         if (samples_beyond_model_values(p.distributions[i]))
           input.fail(entry, "variable '" + p.names[i] + "': a " +
                               distribution_name(p.distributions[i].type()) +

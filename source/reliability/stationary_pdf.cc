@@ -83,11 +83,6 @@ namespace poundfe
       if (s.first >= s.last)
         input.fail("Stationary PDF/Burn-in time",
                    "the runs end at " + number(s.last * dt) + " s, before the burn-in ends");
-      if (p.sample_interval > (s.last - s.first) * dt) // 1e200 s gave no sample, exit 0
-        input.fail("Stationary PDF/Sample interval",
-                   "must not exceed the sampled time, " + number((s.last - s.first) * dt) +
-                     " s from the burn-in to the end of the runs (got " +
-                     number(p.sample_interval) + " s)");
       if (g.is_stochastic() && g.duration < s.last * dt * (1 - 1e-12))
         input.fail(p.sampling_time > 0 ? "Stationary PDF/Sampling time" :
                                          "Time integration/End time",

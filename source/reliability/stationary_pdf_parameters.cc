@@ -18,6 +18,15 @@ namespace poundfe
 
   namespace Patterns = dealii::Patterns;
 
+  namespace
+  {
+    /// The most time steps between samples: exact in a double and far within
+    /// an unsigned long (interval_steps). Any interval longer than the
+    /// sampled time takes one sample per realization; this bound only keeps
+    /// absurd values (1e200 s) from overflowing the count.
+    constexpr double max_interval_steps = 1e15;
+  } // namespace
+
   void
   StationaryPdfParameters::declare(dealii::ParameterHandler &prm)
   {
@@ -34,8 +43,9 @@ namespace poundfe
                       "time or the ground motion's length). Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Sample interval", sample_interval,
-                      "Time between samples (a whole number of time steps; 0: every step). "
-                      "Unit: s.",
+                      "Time between samples (a whole number of time steps, at most 1e15 of "
+                      "them; 0: every step). Longer than the sampled time: one sample per "
+                      "realization, at the end of the burn-in. Unit: s.",
                       Patterns::Double(0));
     prm.add_parameter("Number of realizations", realizations,
                       "Independent runs (noise of seed and realization 0..N-1). Unit: count.",
@@ -107,6 +117,9 @@ namespace poundfe
     if (sample_interval > 0 && (steps < 0.5 || std::abs(steps - std::round(steps)) > 1e-6 * steps))
       input.fail(s + "Sample interval", "must be a whole number of time steps (" +
                                           number_text(time_step) + " s)");
+    if (steps > max_interval_steps) // its step count would overflow interval_steps
+      input.fail(s + "Sample interval", "must be at most 1e15 time steps (" +
+                                          number_text(time_step) + " s each)");
   }
 
   unsigned long

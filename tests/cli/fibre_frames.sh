@@ -218,11 +218,16 @@ random_section() { # $1: the Variables entry
   printf 'subsection Random parameters\n  set Variables = %s\nend\n' "$1"
 }
 random_section "fc: Sections/Section 1/Concrete strength ~ uniform lower 15e6 upper 1e12" > random-fc.prm
-expect 1 "can sample values <= 0 or > 5e+10, which 'Sections/Section 1/Concrete strength' cannot" \
+expect 1 "can sample values > 5e+10, which 'Sections/Section 1/Concrete strength' cannot" \
   montecarlo random-fc.prm --output out
 random_section "fy: Sections/Section 1/Yield stress ~ lognormal mean 1e10 cov 0.5" > random-fy.prm
-expect 1 "can sample values <= 0 or > 5e+10, which 'Sections/Section 1/Yield stress' cannot" \
+expect 1 "can sample values > 5e+10, which 'Sections/Section 1/Yield stress' cannot" \
   montecarlo random-fy.prm --output out
+# a normal f'c far below the bound is refused for the side it can cross, 0,
+# and a lognormal or Weibull suggested, as for an entry with no upper bound
+random_section "fc: Sections/Section 1/Concrete strength ~ normal mean 30e6 sd 4e6" > random-fc-normal.prm
+expect 1 "can sample values <= 0, which 'Sections/Section 1/Concrete strength' cannot take (use a lognormal or Weibull whose mean" \
+  montecarlo random-fc-normal.prm --output out
 # a lognormal of a realistic mean and spread keeps ten standard deviations
 # below the bound (the rule of 1e150 for every entry): it runs
 random_section "fc: Sections/Section 1/Concrete strength ~ lognormal mean 30e6 cov 0.15" > random-fc-lognormal.prm

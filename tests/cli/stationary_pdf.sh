@@ -121,3 +121,17 @@ expect_bad "must be a whole number of time steps" \
 expect_bad "needs random loading" "$(bad none 's/set Type = white-noise/set Type = none/')"
 expect_bad "a P-bifurcation needs at least 2 values" \
   "$(bad one-value 's/set Bins                   = 40/set Parameter = Ground motion\/Stochastic\/D\n  set Values = 0.1/')"
+expect_bad "must be at most 1e15 time steps" \
+  "$(bad huge-interval 's/set Sample interval        = 0.1/set Sample interval = 1e200/')"
+# an interval longer than the sampled time (20 s after 10 s sampled) is
+# workable: one sample per realization, at the end of the burn-in
+"$poundfe" stationary-pdf "$input" --output "$work/long-interval" --set Output/Plots=false \
+  --set "Stationary PDF/Sampling time=10" --set "Stationary PDF/Sample interval=20" \
+  --set "Stationary PDF/Number of realizations=3" > /dev/null 2> "$work/stderr" ||
+  fail "Sample interval longer than the sampled time refused: $(cat "$work/stderr")"
+python3 - "$work/long-interval/summary.json" <<'PY' || fail "long interval: not one sample per realization"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["samples"] == 3 and s["sample_interval_s"] == 20, (s["samples"], s["sample_interval_s"])
+PY
+echo "ok   a Sample interval longer than the sampled time: one sample per realization"

@@ -219,3 +219,32 @@ BOOST_AUTO_TEST_CASE(a_link_to_a_regular_file_is_written_through_and_stays_a_lin
   BOOST_TEST(names_in(directory + "/kept") == std::vector<std::string>{"drift.csv"});
   std::filesystem::remove_all(directory);
 }
+
+BOOST_AUTO_TEST_CASE(two_outputs_linked_to_one_file_leave_it_whole)
+{
+  // Two outputs of one run linked to one file, open at once: each writes
+  // its own temporary, so the file is the last commit's contents, whole,
+  // and no commit fails; both links stay links and no temporary is left.
+  const std::string directory = "/tmp/poundfe-test-two-links";
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory + "/out");
+  std::filesystem::create_directories(directory + "/kept");
+  std::ofstream(directory + "/kept/shared.csv") << "old\n";
+  for (const std::string name : {"drift.csv", "energy.csv"})
+    std::filesystem::create_symlink("../kept/shared.csv", directory + "/out/" + name);
+  {
+    AtomicFile drift(directory + "/out/drift.csv");
+    AtomicFile energy(directory + "/out/energy.csv");
+    drift.write("time_s,drift\n0,1\n");
+    energy.write("time_s,input_J\n0,2\n");
+    BOOST_CHECK_NO_THROW(drift.commit());
+    BOOST_TEST(contents_of(directory + "/kept/shared.csv") == "time_s,drift\n0,1\n");
+    BOOST_CHECK_NO_THROW(energy.commit());
+  }
+  BOOST_TEST(contents_of(directory + "/kept/shared.csv") == "time_s,input_J\n0,2\n");
+  for (const std::string name : {"drift.csv", "energy.csv"})
+    BOOST_TEST(std::filesystem::is_symlink(directory + "/out/" + name));
+  BOOST_TEST(names_in(directory + "/out") == (std::vector<std::string>{"drift.csv", "energy.csv"}));
+  BOOST_TEST(names_in(directory + "/kept") == std::vector<std::string>{"shared.csv"});
+  std::filesystem::remove_all(directory);
+}

@@ -16,6 +16,8 @@
 
 #include "output_test_files.h"
 
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
 
 #include <filesystem>
@@ -88,6 +90,50 @@ BOOST_AUTO_TEST_CASE(a_second_command_removes_what_the_first_wrote_and_nothing_e
   const std::set<std::string> left{".poundfe-files", "modal", "modal/summary.json", "notes.txt"};
   BOOST_TEST(tree(dir) == left, boost::test_tools::per_element());
   fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(the_next_command_removes_unique_temporaries_a_kill_left)
+{
+  // AtomicFile's ".poundfe-<pid>-<n>.tmp" (a name too long for "<name>.tmp")
+  // left by a process killed with -9: removed by the next command, in the
+  // directory and in one it listed, when their process is gone (no pid is
+  // 999999999: above any pid_max). This process's, and other names, stay.
+  const std::string dir = fresh_directory("stale-temporaries");
+  prepare_output_directory(dir);
+  write_file_atomically(dir + "/summary.json", "{}");
+  create_directories(dir + "/solution");
+  write_file_atomically(dir + "/solution/solution-00000.vtu", "<VTKFile/>");
+  const std::string live = ".poundfe-" + std::to_string(::getpid()) + "-0.tmp";
+  touch(dir + "/.poundfe-999999999-0.tmp");
+  touch(dir + "/solution/.poundfe-999999999-7.tmp");
+  touch(dir + "/" + live);
+  touch(dir + "/.poundfe-notes-0.tmp"); // not a pid: the user's
+  prepare_output_directory(dir);
+  const std::set<std::string> expected{".poundfe-files", ".poundfe-notes-0.tmp", live};
+  BOOST_TEST(tree(dir) == expected, boost::test_tools::per_element());
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(a_link_is_written_through_by_one_command_and_replaced_by_the_next)
+{
+  // The link is a listed output: the next command's cleaning removes it and
+  // writes a regular file; the file it led to keeps the first results.
+  const std::string parent = fresh_directory("link-one-command");
+  const std::string dir    = parent + "/out";
+  fs::create_directories(parent + "/kept");
+  touch(parent + "/kept/drift.csv", "old\n");
+  fs::create_directories(dir);
+  fs::create_symlink("../kept/drift.csv", dir + "/drift.csv");
+  prepare_output_directory(dir);
+  write_file_atomically(dir + "/drift.csv", "first\n");
+  BOOST_TEST(fs::is_symlink(dir + "/drift.csv"));
+  BOOST_TEST(poundfe_test::read_bytes(parent + "/kept/drift.csv") == "first\n");
+  prepare_output_directory(dir);
+  write_file_atomically(dir + "/drift.csv", "second\n");
+  BOOST_TEST(!fs::is_symlink(dir + "/drift.csv"));
+  BOOST_TEST(poundfe_test::read_bytes(dir + "/drift.csv") == "second\n");
+  BOOST_TEST(poundfe_test::read_bytes(parent + "/kept/drift.csv") == "first\n");
+  fs::remove_all(parent);
 }
 
 BOOST_AUTO_TEST_CASE(a_damaged_manifest_cannot_reach_outside_the_directory)
