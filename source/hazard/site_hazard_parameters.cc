@@ -12,10 +12,11 @@ namespace poundfe
 
   namespace
   {
-    /// The largest lognormal dispersion of a typed-in fragility: beyond it
-    /// the curve is flat over any range of PGA (1e200 gave P(F | a) = 1/2
-    /// at every a, with exit 0).
-    constexpr double largest_fragility_beta = 3;
+    /// The largest lognormal dispersion of a typed-in fragility, only against
+    /// absurd values (1e200 ran with exit 0): `poundfe fragility` fits curves
+    /// that are flat over their intensities with dispersions of 1e14 and more,
+    /// and such a curve typed in must run.
+    constexpr double largest_fragility_beta = largest_model_value;
   } // namespace
 
   const NameTable<IntensityHazard::Model> &
@@ -38,7 +39,7 @@ namespace poundfe
                         "(0: none, or the File's), at most 10 g. Unit: g.",
                         Patterns::Double(0));
       prm.add_parameter("Beta", p.fragility_beta,
-                        "beta of the typed-in fragility, at most 3. Unit: dimensionless.",
+                        "beta of the typed-in fragility, at most 1e150. Unit: dimensionless.",
                         Patterns::Double(0));
       prm.add_parameter("File", p.fragility_file,
                         "summary.json written by `poundfe fragility` (relative to this parameter "
@@ -141,8 +142,9 @@ namespace poundfe
     if (fragility_beta > largest_fragility_beta)
       input.fail("Site hazard/Fragility/Beta",
                  "must be at most " + number_text(largest_fragility_beta) +
-                   " (the 16th and 84th percentiles then lie a factor e^6 = 403 apart; "
-                   "fragility dispersions lie below 1), got " + number_text(fragility_beta));
+                   " (the largest value of a model: `poundfe fragility` fits a curve that "
+                   "is flat over its intensities with dispersions of 1e14 and more, and "
+                   "such a curve typed in must run), got " + number_text(fragility_beta));
     study.check(input);
   }
 
